@@ -1,0 +1,41 @@
+"""Robots: URDF models, typed robot descriptions, built-in robots and interface facts."""
+
+from robocram.robots.description import (
+    ArmDescription,
+    BoxSpec,
+    CameraDescription,
+    FrameSpec,
+    PanTiltDescription,
+    RobotDescription,
+)
+from robocram.robots.errors import (
+    DescriptionCheckError,
+    DescriptionError,
+    JointValueError,
+    MissingMeshWarning,
+    PackageNotFoundError,
+    UrdfError,
+)
+from robocram.robots.robot_model import RobotModel
+from robocram.robots.urdf_elements import Geometry, Inertial, Joint, Link, Mimic
+
+__all__ = [
+    "ArmDescription",
+    "BoxSpec",
+    "CameraDescription",
+    "DescriptionCheckError",
+    "DescriptionError",
+    "FrameSpec",
+    "Geometry",
+    "Inertial",
+    "Joint",
+    "JointValueError",
+    "Link",
+    "Mimic",
+    "MissingMeshWarning",
+    "PackageNotFoundError",
+    "PanTiltDescription",
+    "RobotDescription",
+    "RobotModel",
+    "UrdfError",
+]

@@ -1,0 +1,98 @@
+"""Errors of the robots layer: one root, :class:`DescriptionError`, with data-carrying subclasses.
+
+Every message names the culprit (a joint, a link, a file, a URI) and says how to fix it.
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Iterable
+from dataclasses import dataclass
+from pathlib import Path
+
+
+class DescriptionError(Exception):
+    """Root of the robots layer: a robot description or its URDF cannot be used."""
+
+
+class UrdfError(DescriptionError):
+    """A URDF is malformed: not well-formed XML, unsafe XML, or an inconsistent model."""
+
+    def __init__(self, source: str | Path, problem: str, line: int | None = None) -> None:
+        self.source = str(source)
+        self.problem = problem
+        self.line = line
+        where = f"{self.source}:{line}" if line is not None else self.source
+        super().__init__(f"{where}: {problem}")
+
+
+class PackageNotFoundError(DescriptionError):
+    """A ``package://`` URI names a package found in none of the searched folders."""
+
+    def __init__(self, uri: str, package: str, searched: Iterable[Path]) -> None:
+        self.uri = uri
+        self.package = package
+        self.searched = tuple(searched)
+        folders = ", ".join(str(p) for p in self.searched) or "(none)"
+        super().__init__(
+            f"cannot resolve {uri!r}: package {package!r} not found in {folders}; "
+            "pass package_paths=[<folder holding the package>] or add it to ROS_PACKAGE_PATH"
+        )
+
+
+@dataclass(frozen=True)
+class NameProblem:
+    """One name of a description that the robot model does not have."""
+
+    kind: str  # "joint", "link", "frame", "movable joint", "arm"
+    name: str
+    where: str  # which description field named it, e.g. "arms['right'].joints"
+    suggestions: tuple[str, ...]
+
+    def message(self, model_name: str) -> str:
+        """Say what is missing and which existing names come closest."""
+        text = f"{self.kind} {self.name!r} (in {self.where}) not in {model_name}"
+        if self.suggestions:
+            options = " or ".join(repr(s) for s in self.suggestions)
+            return f"{text}; did you mean {options}?"
+        return text
+
+
+class DescriptionCheckError(DescriptionError):
+    """A description names joints, links or frames its robot model does not have."""
+
+    def __init__(self, robot: str, model_name: str, problems: Iterable[NameProblem]) -> None:
+        self.robot = robot
+        self.model_name = model_name
+        self.problems = tuple(problems)
+        lines = [p.message(model_name) for p in self.problems]
+        super().__init__(f"description {robot!r} does not match its URDF: " + "; ".join(lines))
+
+
+class JointValueError(DescriptionError):
+    """A joint value given in a description lies outside the joint's limits."""
+
+    def __init__(self, robot: str, joint: str, value: float, lower: float, upper: float) -> None:
+        self.robot = robot
+        self.joint = joint
+        self.value = value
+        self.lower = lower
+        self.upper = upper
+        super().__init__(
+            f"{robot}: value {value} for joint {joint!r} is outside its limits "
+            f"[{lower}, {upper}]; pick a value within them"
+        )
+
+
+def closest_names(name: str, candidates: Iterable[str], n: int = 3) -> tuple[str, ...]:
+    """Names among ``candidates`` closest to ``name``: typos first, then substring matches."""
+    pool = list(candidates)
+    close = difflib.get_close_matches(name, pool, n=n, cutoff=0.6)
+    if len(close) < n:
+        contained = sorted((c for c in pool if name and name in c and c not in close), key=len)
+        close.extend(contained[: n - len(close)])
+    return tuple(close)
+
+
+class MissingMeshWarning(UserWarning):
+    """Mesh files of a URDF were not found and boxes stand in for them."""

@@ -1,0 +1,95 @@
+"""Resolve ``package://pkg/path`` URIs to files, like ROS does, without ROS.
+
+Packages are searched in this order: folders the caller gives, ``ROS_PACKAGE_PATH``, then
+the ``share/`` folders of installed prefixes (the Python environment's own and the
+``cmeel.prefix`` that pip packages such as ``example-robot-data`` install into). A folder
+counts as package ``pkg`` when it is named ``pkg`` and lies at most three levels below a
+search root.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+import sysconfig
+from collections.abc import Iterable
+from dataclasses import dataclass
+from functools import lru_cache
+from pathlib import Path
+
+from robocram.robots.errors import PackageNotFoundError
+
+_MAX_DEPTH = 3
+
+
+def installed_share_folders() -> tuple[Path, ...]:
+    """``share/`` folders of the running environment's prefixes that exist."""
+    candidates = [Path(sys.prefix) / "share"]
+    for key in ("purelib", "platlib"):
+        candidates.append(Path(sysconfig.get_paths()[key]) / "cmeel.prefix" / "share")
+    seen: list[Path] = []
+    for folder in candidates:
+        if folder.is_dir() and folder not in seen:
+            seen.append(folder)
+    return tuple(seen)
+
+
+def ros_package_path() -> tuple[Path, ...]:
+    """Folders listed in the ``ROS_PACKAGE_PATH`` environment variable."""
+    raw = os.environ.get("ROS_PACKAGE_PATH", "")
+    return tuple(Path(p) for p in raw.split(os.pathsep) if p)
+
+
+@lru_cache(maxsize=256)
+def _find_package(root: Path, package: str) -> Path | None:
+    """Breadth-first search for a folder named ``package`` under ``root``."""
+    if root.name == package and root.is_dir():
+        return root
+    level = [root]
+    for _ in range(_MAX_DEPTH):
+        next_level: list[Path] = []
+        for folder in level:
+            direct = folder / package
+            if direct.is_dir():
+                return direct
+            try:
+                next_level.extend(sorted(p for p in folder.iterdir() if p.is_dir()))
+            except OSError:
+                continue
+        level = next_level
+    return None
+
+
+@dataclass(frozen=True)
+class PackageResolver:
+    """Turns ``package://`` URIs into absolute paths, searching ``search_roots`` in order."""
+
+    search_roots: tuple[Path, ...]
+
+    @classmethod
+    def default(cls, package_paths: Iterable[str | Path] = ()) -> PackageResolver:
+        """Resolver over user folders, then ``ROS_PACKAGE_PATH``, then installed prefixes."""
+        roots = [Path(p).expanduser().resolve() for p in package_paths]
+        roots += [p.expanduser() for p in ros_package_path()]
+        roots += list(installed_share_folders())
+        return cls(tuple(dict.fromkeys(roots)))
+
+    def package_folder(self, package: str, uri: str = "") -> Path:
+        """Folder of ``package``; :class:`PackageNotFoundError` names the searched roots."""
+        for root in self.search_roots:
+            found = _find_package(root, package)
+            if found is not None:
+                return found
+        raise PackageNotFoundError(uri or f"package://{package}", package, self.search_roots)
+
+    def resolve(self, uri: str, base_dir: Path | None = None) -> Path:
+        """Absolute path of a ``package://``, ``file://``, absolute or relative reference."""
+        if uri.startswith("package://"):
+            package, _, rest = uri[len("package://") :].partition("/")
+            return self.package_folder(package, uri) / rest
+        if uri.startswith("file://"):
+            return Path(uri[len("file://") :])
+        path = Path(uri)
+        if not path.is_absolute() and base_dir is not None:
+            path = base_dir / path
+        return path.resolve()

@@ -1,0 +1,185 @@
+"""A parsed robot model: the URDF's links and joints as a checked tree of frozen values.
+
+Models are treated as immutable: ``with_frame`` and ``with_box`` return new models, so
+frames and collision boxes are added in code and the URDF text is never edited.
+"""
+
+from __future__ import annotations
+
+import warnings
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from robocram.robots.description import BoxSpec, FrameSpec
+from robocram.robots.errors import DescriptionError, MissingMeshWarning, UrdfError, closest_names
+from robocram.robots.package_resolver import PackageResolver
+from robocram.robots.safe_xml import parse_xml
+from robocram.robots.urdf_elements import Collision, Geometry, Joint, Link
+from robocram.robots.urdf_reader import read_urdf
+from robocram.robots.urdf_writer import write_urdf
+
+
+@dataclass(frozen=True, eq=False)
+class RobotModel:
+    """Links and joints of one robot, forming a tree below ``root_link``.
+
+    ``source`` names where the model came from (a file name), for messages.
+    """
+
+    name: str
+    links: dict[str, Link]
+    joints: dict[str, Joint]
+    source: str = "<string>"
+    _parent_joint: dict[str, Joint] = field(init=False, repr=False)
+
+    def __post_init__(self) -> None:
+        parent_joint: dict[str, Joint] = {}
+        for joint in self.joints.values():
+            for link in (joint.parent, joint.child):
+                if link not in self.links:
+                    raise self._unknown("link", link, self.links, f"joint {joint.name!r}")
+            if joint.child in parent_joint:
+                other = parent_joint[joint.child].name
+                raise UrdfError(
+                    self.source,
+                    f"link {joint.child!r} is the child of joints {other!r} and {joint.name!r}; "
+                    "a URDF must be a tree",
+                )
+            parent_joint[joint.child] = joint
+        object.__setattr__(self, "_parent_joint", parent_joint)
+        roots = [name for name in self.links if name not in parent_joint]
+        if len(roots) != 1:
+            raise UrdfError(self.source, f"a URDF needs exactly one root link, found {roots}")
+        for joint in self.joints.values():
+            if joint.mimic is not None and joint.mimic.joint not in self.joints:
+                raise self._unknown(
+                    "joint", joint.mimic.joint, self.joints, f"mimic of {joint.name!r}"
+                )
+
+    def _unknown(self, kind: str, name: str, pool: Iterable[str], where: str) -> UrdfError:
+        close = closest_names(name, pool)
+        hint = f"; did you mean {' or '.join(repr(c) for c in close)}?" if close else ""
+        return UrdfError(self.source, f"{kind} {name!r} (named by {where}) is not defined{hint}")
+
+    @property
+    def root_link(self) -> str:
+        """The one link that is no joint's child."""
+        return next(name for name in self.links if name not in self._parent_joint)
+
+    def parent_joint(self, link: str) -> Joint | None:
+        """The joint whose child is ``link``; ``None`` for the root."""
+        self.link(link)
+        return self._parent_joint.get(link)
+
+    def link(self, name: str) -> Link:
+        """The link ``name``; a :class:`DescriptionError` suggests close names if it is absent."""
+        if name not in self.links:
+            raise DescriptionError(self._missing_message("link", name, self.links))
+        return self.links[name]
+
+    def joint(self, name: str) -> Joint:
+        """The joint ``name``; a :class:`DescriptionError` suggests close names if it is absent."""
+        if name not in self.joints:
+            raise DescriptionError(self._missing_message("joint", name, self.joints))
+        return self.joints[name]
+
+    def _missing_message(self, kind: str, name: str, pool: Iterable[str]) -> str:
+        close = closest_names(name, pool)
+        hint = f"; did you mean {' or '.join(repr(c) for c in close)}?" if close else ""
+        return f"{kind} {name!r} not in {self.source}{hint}"
+
+    def chain(self, base_link: str, tip_link: str) -> list[Joint]:
+        """Joints (fixed ones too) from ``base_link`` down to ``tip_link``, base first."""
+        self.link(base_link)
+        joints: list[Joint] = []
+        link = tip_link
+        while link != base_link:
+            joint = self.parent_joint(link)
+            if joint is None:
+                raise DescriptionError(
+                    f"link {tip_link!r} does not hang below {base_link!r} in {self.source}; "
+                    "give a base_link that is an ancestor of the tip"
+                )
+            joints.append(joint)
+            link = joint.parent
+        return joints[::-1]
+
+    def movable_joints(self) -> list[Joint]:
+        """Joints with one degree of freedom (revolute, continuous, prismatic), in file order."""
+        return [j for j in self.joints.values() if j.movable]
+
+    def with_frame(self, spec: FrameSpec) -> RobotModel:
+        """A copy with frame ``spec.name`` fixed to ``spec.parent`` at ``spec.pose``."""
+        self._check_new_link(spec.name, spec.parent)
+        joint = Joint(f"{spec.name}_joint", "fixed", spec.parent, spec.name, spec.pose)
+        return self._extended(Link(spec.name), joint)
+
+    def with_box(self, spec: BoxSpec) -> RobotModel:
+        """A copy with a collision box on a new link ``spec.name`` fixed to ``spec.parent``."""
+        self._check_new_link(spec.name, spec.parent)
+        if any(s <= 0 for s in spec.size):
+            raise DescriptionError(f"box {spec.name!r} needs positive sizes [m], got {spec.size}")
+        box = Collision(Geometry("box", size=spec.size), name=spec.name)
+        joint = Joint(f"{spec.name}_joint", "fixed", spec.parent, spec.name, spec.pose)
+        return self._extended(Link(spec.name, collisions=(box,)), joint)
+
+    def _check_new_link(self, name: str, parent: str) -> None:
+        self.link(parent)
+        if name in self.links:
+            raise DescriptionError(
+                f"cannot add {name!r} to {self.source}: a link of that name exists"
+            )
+        if f"{name}_joint" in self.joints:
+            raise DescriptionError(
+                f"cannot add {name!r}: joint '{name}_joint' exists in {self.source}"
+            )
+
+    def _extended(self, link: Link, joint: Joint) -> RobotModel:
+        links = {**self.links, link.name: link}
+        joints = {**self.joints, joint.name: joint}
+        return RobotModel(self.name, links, joints, self.source)
+
+    def to_urdf(self, path: Path | None = None) -> str:
+        """URDF XML of this model (absolute mesh paths); also written to ``path`` if given."""
+        text = write_urdf(self.name, self.links.values(), self.joints.values())
+        if path is not None:
+            Path(path).write_text(text, encoding="utf-8")
+        return text
+
+    @classmethod
+    def from_file(cls, path: str | Path, package_paths: Iterable[str | Path] = ()) -> RobotModel:
+        """Parse a URDF file; ``package_paths`` are searched first for ``package://`` URIs."""
+        file = Path(path).expanduser()
+        try:
+            text = file.read_text(encoding="utf-8")
+        except OSError as err:
+            raise UrdfError(file, f"cannot read the URDF: {err.strerror}") from err
+        return cls.from_string(text, file.resolve().parent, package_paths, source=str(file))
+
+    @classmethod
+    def from_string(
+        cls,
+        xml: str,
+        base_dir: str | Path | None = None,
+        package_paths: Iterable[str | Path] = (),
+        source: str = "<string>",
+    ) -> RobotModel:
+        """Parse URDF text; relative mesh paths are taken from ``base_dir``."""
+        resolver = PackageResolver.default(package_paths)
+        base = None if base_dir is None else Path(base_dir)
+        parts = read_urdf(parse_xml(xml, source), source, base, resolver)
+        if parts.missing_meshes:
+            listed = ", ".join(sorted(set(parts.missing_meshes)))
+            warnings.warn(
+                f"{source}: {len(parts.missing_meshes)} mesh file(s) missing, boxes stand in: "
+                f"{listed}",
+                MissingMeshWarning,
+                stacklevel=2,
+            )
+        return cls(
+            parts.name,
+            parts.links,
+            parts.joints,
+            Path(source).name if source != "<string>" else source,
+        )

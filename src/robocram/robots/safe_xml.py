@@ -1,0 +1,79 @@
+"""A small, safe XML reader for URDF: no DOCTYPE, no entities, line numbers kept.
+
+URDFs come from many places; a DOCTYPE with ENTITY declarations can expand without bound
+("billion laughs") or pull in external files. URDF needs neither, so both are refused.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+from xml.parsers import expat
+
+from robocram.robots.errors import UrdfError
+
+
+@dataclass
+class XmlNode:
+    """One XML element with its attributes, children and the line it starts on."""
+
+    tag: str
+    attrib: dict[str, str]
+    line: int
+    children: list[XmlNode] = field(default_factory=list)
+
+    def find(self, tag: str) -> XmlNode | None:
+        """First child with this tag, or ``None``."""
+        return next((c for c in self.children if c.tag == tag), None)
+
+    def findall(self, tag: str) -> list[XmlNode]:
+        """All children with this tag, in document order."""
+        return [c for c in self.children if c.tag == tag]
+
+
+class _Builder:
+    """Builds the node tree from expat callbacks and refuses DTDs."""
+
+    def __init__(self, parser: Any, source: str | Path) -> None:
+        self.parser = parser
+        self.source = source
+        self.stack: list[XmlNode] = []
+        self.root: XmlNode | None = None
+
+    def start(self, tag: str, attrib: dict[str, str]) -> None:
+        node = XmlNode(tag, dict(attrib), self.parser.CurrentLineNumber)
+        if self.stack:
+            self.stack[-1].children.append(node)
+        else:
+            self.root = node
+        self.stack.append(node)
+
+    def end(self, tag: str) -> None:
+        self.stack.pop()
+
+    def refuse_dtd(self, *args: object) -> int:
+        raise UrdfError(
+            self.source,
+            "DOCTYPE/ENTITY declarations are refused (unsafe XML); remove the DOCTYPE",
+            self.parser.CurrentLineNumber,
+        )
+
+
+def parse_xml(text: str, source: str | Path) -> XmlNode:
+    """Parse ``text`` into nodes; malformed or unsafe XML raises :class:`UrdfError`."""
+    parser = expat.ParserCreate()
+    builder = _Builder(parser, source)
+    parser.StartElementHandler = builder.start
+    parser.EndElementHandler = builder.end
+    parser.StartDoctypeDeclHandler = builder.refuse_dtd
+    parser.EntityDeclHandler = builder.refuse_dtd
+    parser.ExternalEntityRefHandler = builder.refuse_dtd
+    try:
+        parser.Parse(text, True)
+    except expat.ExpatError as err:
+        message = expat.errors.messages[err.code]
+        raise UrdfError(source, f"not well-formed XML: {message}", err.lineno) from err
+    if builder.root is None:
+        raise UrdfError(source, "no XML element found")
+    return builder.root

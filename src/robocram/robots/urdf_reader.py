@@ -1,0 +1,246 @@
+"""Read URDF XML into links and joints, resolving mesh URIs to absolute paths.
+
+A mesh whose package resolves but whose file is missing becomes a box the size of the
+link (from its inertia, else from its other shapes); the caller warns once per model.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from robocram.robots.errors import UrdfError, closest_names
+from robocram.robots.package_resolver import PackageResolver
+from robocram.robots.safe_xml import XmlNode
+from robocram.robots.urdf_elements import (
+    JOINT_TYPES,
+    Collision,
+    Geometry,
+    Inertial,
+    Joint,
+    Link,
+    Mimic,
+    Visual,
+)
+from robocram.tf import Pose
+
+_DEFAULT_BOX = 0.05  # [m] edge of a stand-in box when nothing tells the link's size
+
+
+@dataclass
+class UrdfParts:
+    """What one URDF document holds, before it becomes a ``RobotModel``."""
+
+    name: str
+    links: dict[str, Link]
+    joints: dict[str, Joint]
+    missing_meshes: list[str] = field(default_factory=list)
+
+
+@dataclass
+class _Reader:
+    source: str
+    base_dir: Path | None
+    resolver: PackageResolver
+    missing_meshes: list[str] = field(default_factory=list)
+
+    def fail(self, node: XmlNode, problem: str) -> UrdfError:
+        return UrdfError(self.source, problem, node.line)
+
+    def attr(self, node: XmlNode, key: str) -> str:
+        if key not in node.attrib:
+            raise self.fail(node, f"<{node.tag}> lacks the required attribute {key!r}")
+        return node.attrib[key]
+
+    def floats(
+        self, node: XmlNode | None, key: str, default: tuple[float, ...]
+    ) -> tuple[float, ...]:
+        if node is None or key not in node.attrib:
+            return default
+        try:
+            values = tuple(float(v) for v in node.attrib[key].split())
+        except ValueError as err:
+            raise self.fail(node, f"{key}={node.attrib[key]!r} is not numbers") from err
+        if len(values) != len(default):
+            raise self.fail(node, f"{key}={node.attrib[key]!r} needs {len(default)} numbers")
+        return values
+
+    def number(self, node: XmlNode | None, key: str, default: float | None) -> float | None:
+        if node is None or key not in node.attrib:
+            return default
+        return self.floats(node, key, (0.0,))[0]
+
+    def origin(self, node: XmlNode) -> Pose:
+        origin = node.find("origin")
+        xyz = self.floats(origin, "xyz", (0.0, 0.0, 0.0))
+        rpy = self.floats(origin, "rpy", (0.0, 0.0, 0.0))
+        return Pose.from_xyz_rpy(xyz, rpy)
+
+    def geometry(self, node: XmlNode, stand_in: Callable[[], Geometry]) -> Geometry:
+        geom = node.find("geometry")
+        shape = geom.children[0] if geom is not None and geom.children else None
+        if shape is None:
+            raise self.fail(node, f"<{node.tag}> has no <geometry> shape")
+        if shape.tag == "box":
+            return Geometry("box", size=self.floats(shape, "size", (0.0, 0.0, 0.0)))  # type: ignore[arg-type]
+        if shape.tag == "cylinder":
+            radius, length = self.number(shape, "radius", 0.0), self.number(shape, "length", 0.0)
+            return Geometry("cylinder", radius=radius or 0.0, length=length or 0.0)
+        if shape.tag == "sphere":
+            return Geometry("sphere", radius=self.number(shape, "radius", 0.0) or 0.0)
+        if shape.tag == "mesh":
+            return self.mesh(shape, stand_in)
+        raise self.fail(shape, f"unknown geometry <{shape.tag}>; use box, cylinder, sphere or mesh")
+
+    def mesh(self, shape: XmlNode, stand_in: Callable[[], Geometry]) -> Geometry:
+        uri = self.attr(shape, "filename")
+        path = self.resolver.resolve(uri, self.base_dir)
+        if not path.is_file():
+            self.missing_meshes.append(uri)
+            return stand_in()
+        scale = self.floats(shape, "scale", (1.0, 1.0, 1.0))
+        return Geometry("mesh", filename=str(path), scale=scale)  # type: ignore[arg-type]
+
+    def inertial(self, node: XmlNode) -> Inertial | None:
+        inertial = node.find("inertial")
+        if inertial is None:
+            return None
+        mass = self.number(inertial.find("mass"), "value", 0.0) or 0.0
+        tensor = inertial.find("inertia")
+        keys = ("ixx", "ixy", "ixz", "iyy", "iyz", "izz")
+        values = tuple(self.number(tensor, k, 0.0) or 0.0 for k in keys)
+        return Inertial(mass, values, self.origin(inertial))  # type: ignore[arg-type]
+
+    def link(self, node: XmlNode) -> Link:
+        inertial = self.inertial(node)
+        shapes = [
+            self.primitive_extents(n) for n in node.findall("visual") + node.findall("collision")
+        ]
+        extents = inertia_box(inertial) or next((e for e in shapes if e), None)
+
+        def stand_in() -> Geometry:
+            return Geometry("box", size=extents or (_DEFAULT_BOX,) * 3)
+
+        visuals = tuple(self.visual(v, stand_in) for v in node.findall("visual"))
+        collisions = tuple(
+            Collision(self.geometry(c, stand_in), self.origin(c), c.attrib.get("name"))
+            for c in node.findall("collision")
+        )
+        return Link(self.attr(node, "name"), visuals, collisions, inertial)
+
+    def primitive_extents(self, node: XmlNode) -> tuple[float, float, float] | None:
+        geom = node.find("geometry")
+        if geom is None or not geom.children or geom.children[0].tag == "mesh":
+            return None
+        return self.geometry(node, lambda: Geometry("box")).extents()
+
+    def visual(self, node: XmlNode, stand_in: Callable[[], Geometry]) -> Visual:
+        material = node.find("material")
+        name = material.attrib.get("name") if material is not None else None
+        color = material.find("color") if material is not None else None
+        rgba = self.floats(color, "rgba", (0.0,) * 4) if color is not None else None
+        geometry = self.geometry(node, stand_in)
+        return Visual(geometry, self.origin(node), node.attrib.get("name"), name, rgba)  # type: ignore[arg-type]
+
+    def joint(self, node: XmlNode) -> Joint:
+        name, kind = self.attr(node, "name"), self.attr(node, "type")
+        if kind not in JOINT_TYPES:
+            raise self.fail(
+                node, f"joint {name!r} has unknown type {kind!r}; use one of {JOINT_TYPES}"
+            )
+        parent, child = node.find("parent"), node.find("child")
+        if parent is None or child is None:
+            raise self.fail(
+                node, f"joint {name!r} needs a <parent link=...> and a <child link=...>"
+            )
+        limit, dynamics, mimic = node.find("limit"), node.find("dynamics"), node.find("mimic")
+        lower, upper = joint_limits(
+            kind, self.number(limit, "lower", 0.0), self.number(limit, "upper", 0.0)
+        )
+        if kind in ("revolute", "prismatic") and limit is None:
+            raise self.fail(node, f"{kind} joint {name!r} needs a <limit lower=... upper=...>")
+        axis = self.floats(node.find("axis"), "xyz", (1.0, 0.0, 0.0))
+        return Joint(
+            name=name,
+            type=kind,  # type: ignore[arg-type]
+            parent=self.attr(parent, "link"),
+            child=self.attr(child, "link"),
+            origin=self.origin(node),
+            axis=axis,  # type: ignore[arg-type]
+            lower=lower,
+            upper=upper,
+            velocity=self.number(limit, "velocity", None),
+            effort=self.number(limit, "effort", None),
+            mimic=None if mimic is None else self.mimic(mimic),
+            damping=self.number(dynamics, "damping", 0.0) or 0.0,
+            friction=self.number(dynamics, "friction", 0.0) or 0.0,
+        )
+
+    def mimic(self, node: XmlNode) -> Mimic:
+        return Mimic(
+            self.attr(node, "joint"),
+            self.number(node, "multiplier", 1.0) or 0.0,
+            self.number(node, "offset", 0.0) or 0.0,
+        )
+
+
+def joint_limits(
+    kind: str, lower: float | None, upper: float | None
+) -> tuple[float | None, float | None]:
+    """Limits as the model keeps them: -inf/inf for continuous, ``None`` for multi-DOF/fixed."""
+    if kind == "continuous":
+        return -math.inf, math.inf
+    if kind in ("revolute", "prismatic"):
+        return lower, upper
+    return None, None
+
+
+def inertia_box(inertial: Inertial | None) -> tuple[float, float, float] | None:
+    """Extents [m] of the solid box with the same mass and principal inertia, if positive."""
+    if inertial is None or inertial.mass <= 0:
+        return None
+    ixx, _, _, iyy, _, izz = inertial.inertia
+    squares = (iyy + izz - ixx, ixx + izz - iyy, ixx + iyy - izz)
+    if any(s <= 0 for s in squares):
+        return None
+    return tuple(math.sqrt(6.0 * s / inertial.mass) for s in squares)  # type: ignore[return-value]
+
+
+def read_urdf(
+    root: XmlNode, source: str, base_dir: Path | None, resolver: PackageResolver
+) -> UrdfParts:
+    """Links and joints of a ``<robot>`` element; duplicate names raise :class:`UrdfError`."""
+    if root.tag != "robot":
+        raise UrdfError(source, f"root element is <{root.tag}>, a URDF needs <robot>", root.line)
+    reader = _Reader(source, base_dir, resolver)
+    links: dict[str, Link] = {}
+    joints: dict[str, Joint] = {}
+    for node in root.findall("link"):
+        link = reader.link(node)
+        if link.name in links:
+            raise reader.fail(node, f"link {link.name!r} is defined twice")
+        links[link.name] = link
+    for node in root.findall("joint"):
+        joint = reader.joint(node)
+        if joint.name in joints:
+            raise reader.fail(node, f"joint {joint.name!r} is defined twice")
+        joints[joint.name] = joint
+    for node in root.findall("joint"):
+        joint = joints[node.attrib["name"]]
+        for role, link_name in (("parent", joint.parent), ("child", joint.child)):
+            if link_name not in links:
+                hint = _did_you_mean(link_name, links)
+                raise reader.fail(
+                    node,
+                    f"joint {joint.name!r} has {role} link {link_name!r}, "
+                    f"which the URDF does not define{hint}",
+                )
+    name = reader.attr(root, "name")
+    return UrdfParts(name, links, joints, reader.missing_meshes)
+
+
+def _did_you_mean(name: str, candidates: dict[str, Link]) -> str:
+    close = closest_names(name, candidates)
+    return f"; did you mean {' or '.join(repr(c) for c in close)}?" if close else ""
