@@ -16,6 +16,8 @@ from robocram.robots.errors import (
     PackageNotFoundError,
     UrdfError,
 )
+from robocram.robots.loading import load_description
+from robocram.robots.mimic import mimic_followers
 from robocram.robots.robot_model import RobotModel
 from robocram.robots.urdf_elements import Geometry, Inertial, Joint, Link, Mimic
 
@@ -37,5 +39,7 @@ __all__ = [
     "PanTiltDescription",
     "RobotDescription",
     "RobotModel",
+    "load_description",
+    "mimic_followers",
     "UrdfError",
 ]

@@ -1,0 +1,58 @@
+"""Load a robot description: parse its URDF, add its frames and boxes, check every name.
+
+``load_description("pr2")`` returns the built-in PR2 with ``model`` set; a user's own
+``RobotDescription`` goes through the same checks.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import replace
+from pathlib import Path
+
+from robocram.robots.builtin import builtin_description
+from robocram.robots.description import RobotDescription
+from robocram.robots.description_check import check_names, check_values, infer_arm
+from robocram.robots.package_resolver import PackageResolver
+from robocram.robots.robot_model import RobotModel
+
+
+def load_description(
+    name_or_desc: str | RobotDescription, package_paths: Iterable[str | Path] = ()
+) -> RobotDescription:
+    """The checked description with ``model`` set and arm chains inferred.
+
+    Raises:
+        DescriptionCheckError: a joint, link or frame it names is not in the model.
+        JointValueError: a parking, carrying or neck value lies outside its joint limits.
+        UrdfError, PackageNotFoundError: the URDF cannot be read.
+    """
+    if isinstance(name_or_desc, str):
+        desc = builtin_description(name_or_desc)
+    elif isinstance(name_or_desc, RobotDescription):
+        desc = name_or_desc
+    else:
+        raise TypeError(
+            f"load_description takes a robot name or a RobotDescription, got {name_or_desc!r}"
+        )
+    paths = tuple(dict.fromkeys([*desc.package_paths, *(Path(p) for p in package_paths)]))
+    model = desc.model or _read_model(desc.urdf, paths)
+    for frame in desc.extra_frames:
+        if frame.name not in model.links:
+            model = model.with_frame(frame)
+    for box in desc.extra_boxes:
+        if box.name not in model.links:
+            model = model.with_box(box)
+    check_names(desc, model)
+    arms = {key: infer_arm(arm, model) for key, arm in desc.arms.items()}
+    for arm in arms.values():
+        check_values(desc.name, model, arm.parking)
+        check_values(desc.name, model, arm.carrying)
+    check_values(desc.name, model, desc.neck_parking)
+    return replace(desc, arms=arms, package_paths=paths, model=model)
+
+
+def _read_model(urdf: str | Path, package_paths: tuple[Path, ...]) -> RobotModel:
+    if isinstance(urdf, str) and urdf.startswith("package://"):
+        urdf = PackageResolver.default(package_paths).resolve(urdf)
+    return RobotModel.from_file(urdf, package_paths)
