@@ -39,7 +39,7 @@ __all__ = [
     "PanTiltDescription",
     "RobotDescription",
     "RobotModel",
+    "UrdfError",
     "load_description",
     "mimic_followers",
-    "UrdfError",
 ]

@@ -62,31 +62,44 @@ def _find_package(root: Path, package: str) -> Path | None:
 
 @dataclass(frozen=True)
 class PackageResolver:
-    """Turns ``package://`` URIs into absolute paths, searching ``search_roots`` in order."""
+    """Turns ``package://`` URIs into absolute paths.
+
+    Search order: ``search_roots`` (user folders, ``ROS_PACKAGE_PATH``), then the folders
+    around the URDF (so a URDF finds the package it lives in), then ``installed`` prefixes.
+    """
 
     search_roots: tuple[Path, ...]
+    installed: tuple[Path, ...] = ()
 
     @classmethod
     def default(cls, package_paths: Iterable[str | Path] = ()) -> PackageResolver:
         """Resolver over user folders, then ``ROS_PACKAGE_PATH``, then installed prefixes."""
         roots = [Path(p).expanduser().resolve() for p in package_paths]
         roots += [p.expanduser() for p in ros_package_path()]
-        roots += list(installed_share_folders())
-        return cls(tuple(dict.fromkeys(roots)))
+        return cls(tuple(dict.fromkeys(roots)), installed_share_folders())
 
-    def package_folder(self, package: str, uri: str = "") -> Path:
-        """Folder of ``package``; :class:`PackageNotFoundError` names the searched roots."""
+    def package_folder(self, package: str, uri: str = "", near: Path | None = None) -> Path:
+        """Folder of ``package``; :class:`PackageNotFoundError` names the searched folders."""
         for root in self.search_roots:
             found = _find_package(root, package)
             if found is not None:
                 return found
-        raise PackageNotFoundError(uri or f"package://{package}", package, self.search_roots)
+        if near is not None:
+            own = next((p for p in (near, *near.parents) if p.name == package), None)
+            if own is not None and own.is_dir():
+                return own
+        for root in self.installed:
+            found = _find_package(root, package)
+            if found is not None:
+                return found
+        searched = (*self.search_roots, *([near] if near else []), *self.installed)
+        raise PackageNotFoundError(uri or f"package://{package}", package, searched)
 
     def resolve(self, uri: str, base_dir: Path | None = None) -> Path:
         """Absolute path of a ``package://``, ``file://``, absolute or relative reference."""
         if uri.startswith("package://"):
             package, _, rest = uri[len("package://") :].partition("/")
-            return self.package_folder(package, uri) / rest
+            return self.package_folder(package, uri, base_dir) / rest
         if uri.startswith("file://"):
             return Path(uri[len("file://") :])
         path = Path(uri)
