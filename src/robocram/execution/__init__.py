@@ -1,0 +1,66 @@
+"""The executive: tasks, the plan language, failures, failure handling and fluents.
+
+Plans are Python functions run under ``top_level``; plan forms (``seq``, ``par``,
+``pursue``, ``try_all``, ``try_in_order``, ``partial_order``, ``with_tags``) take thunks
+and build the task tree as they run. Stopping is cooperative at stop points
+(``checkpoint``, ``sleep``, fluent waits, PERFORM). Failure classes live in
+``robocram.execution.failures``.
+"""
+
+from robocram.execution.failure_handling import (
+    FailureControl,
+    RetryCounter,
+    failure_handled,
+    retry,
+    with_failure_handling,
+)
+from robocram.execution.failures import NotInTopLevel, PlanFailure
+from robocram.execution.fluent import Fluent, derive, fl_and, fl_not, fl_or
+from robocram.execution.par import par
+from robocram.execution.partial_order import partial_order
+from robocram.execution.pursue import pursue
+from robocram.execution.seq import seq
+from robocram.execution.tags import tag, tagged, with_tags
+from robocram.execution.task import Task, TaskStatus, TaskStopped
+from robocram.execution.task_context import checkpoint, current_task, sleep, sub_task
+from robocram.execution.task_tree import TaskSnapshot, TaskTree
+from robocram.execution.top_level import TopLevel, run_top_level, top_level
+from robocram.execution.try_forms import try_all, try_in_order
+from robocram.execution.whenever import whenever
+
+__all__ = [
+    "FailureControl",
+    "Fluent",
+    "NotInTopLevel",
+    "PlanFailure",
+    "RetryCounter",
+    "Task",
+    "TaskSnapshot",
+    "TaskStatus",
+    "TaskStopped",
+    "TaskTree",
+    "TopLevel",
+    "checkpoint",
+    "current_task",
+    "derive",
+    "failure_handled",
+    "fl_and",
+    "fl_not",
+    "fl_or",
+    "par",
+    "partial_order",
+    "pursue",
+    "retry",
+    "run_top_level",
+    "seq",
+    "sleep",
+    "sub_task",
+    "tag",
+    "tagged",
+    "top_level",
+    "try_all",
+    "try_in_order",
+    "whenever",
+    "with_failure_handling",
+    "with_tags",
+]

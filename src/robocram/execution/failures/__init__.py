@@ -1,0 +1,110 @@
+"""Plan failures by area, importable by their CRAM names in CamelCase.
+
+``PlanFailure`` is the root; ``LowLevelFailure`` and ``HighLevelFailure`` group CRAM's
+taxonomy; ``failure_class("torso-goal-not-reached")`` finds a class by its CRAM name.
+``NotInTopLevel`` and ``RetryOutsideHandler`` are programming errors, not plan failures.
+"""
+
+from robocram.execution.failures.environment import (
+    EnvironmentManipulationImpossible,
+    EnvironmentUnreachable,
+)
+from robocram.execution.failures.executive import (
+    DesignatorFailure,
+    DesignatorGoalParsingFailure,
+    DesignatorReferenceFailure,
+    NoMatchingProcessModule,
+    ProcessModuleFailure,
+)
+from robocram.execution.failures.flying import (
+    FlyingGoalInCollision,
+    FlyingGoalNotReached,
+    FlyingLowLevelFailure,
+)
+from robocram.execution.failures.high_level import HighLevelFailure
+from robocram.execution.failures.low_level import ActionlibActionTimedOut, LowLevelFailure
+from robocram.execution.failures.manipulation import (
+    GripperClosedCompletely,
+    GripperGoalNotReached,
+    GripperLowLevelFailure,
+    ManipulationGoalInCollision,
+    ManipulationGoalNotReached,
+    ManipulationLowLevelFailure,
+    ManipulationPoseUnreachable,
+    ObjectUndeliverable,
+    ObjectUnfetchable,
+    ObjectUnreachable,
+)
+from robocram.execution.failures.navigation import (
+    NavigationGoalInCollision,
+    NavigationGoalNotReached,
+    NavigationLowLevelFailure,
+    NavigationPoseUnreachable,
+)
+from robocram.execution.failures.perception import (
+    LookingHighLevelFailure,
+    ObjectNowhereToBeFound,
+    PerceptionLowLevelFailure,
+    PerceptionObjectNotFound,
+    PtuGoalNotReached,
+    PtuGoalUnreachable,
+    PtuLowLevelFailure,
+)
+from robocram.execution.failures.plan_failure import PlanFailure, failure_class
+from robocram.execution.failures.plan_language import (
+    CompositeFailure,
+    FluentWaitTimeout,
+    NotInTopLevel,
+    RetryOutsideHandler,
+)
+from robocram.execution.failures.torso import (
+    TorsoGoalNotReached,
+    TorsoGoalUnreachable,
+    TorsoLowLevelFailure,
+)
+
+__all__ = [
+    "ActionlibActionTimedOut",
+    "CompositeFailure",
+    "DesignatorFailure",
+    "DesignatorGoalParsingFailure",
+    "DesignatorReferenceFailure",
+    "EnvironmentManipulationImpossible",
+    "EnvironmentUnreachable",
+    "FluentWaitTimeout",
+    "FlyingGoalInCollision",
+    "FlyingGoalNotReached",
+    "FlyingLowLevelFailure",
+    "GripperClosedCompletely",
+    "GripperGoalNotReached",
+    "GripperLowLevelFailure",
+    "HighLevelFailure",
+    "LookingHighLevelFailure",
+    "LowLevelFailure",
+    "ManipulationGoalInCollision",
+    "ManipulationGoalNotReached",
+    "ManipulationLowLevelFailure",
+    "ManipulationPoseUnreachable",
+    "NavigationGoalInCollision",
+    "NavigationGoalNotReached",
+    "NavigationLowLevelFailure",
+    "NavigationPoseUnreachable",
+    "NoMatchingProcessModule",
+    "NotInTopLevel",
+    "ObjectNowhereToBeFound",
+    "ObjectUndeliverable",
+    "ObjectUnfetchable",
+    "ObjectUnreachable",
+    "PerceptionLowLevelFailure",
+    "PerceptionObjectNotFound",
+    "PlanFailure",
+    "ProcessModuleFailure",
+    "PtuGoalNotReached",
+    "PtuGoalUnreachable",
+    "PtuLowLevelFailure",
+    "RetryOutsideHandler",
+    "TorsoGoalNotReached",
+    "TorsoGoalUnreachable",
+    "TorsoLowLevelFailure",
+    "failure_class",
+]

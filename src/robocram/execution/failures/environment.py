@@ -1,0 +1,21 @@
+"""Environment failures: articulated furniture (drawers, doors) and its surroundings."""
+
+from __future__ import annotations
+
+from robocram.execution.failures.high_level import HighLevelFailure
+
+
+class EnvironmentUnreachable(HighLevelFailure):
+    """The robot cannot get to the part of the environment it must manipulate."""
+
+    fields = ("environment_part",)
+    summary = "the environment part is unreachable"
+    hint = "try other base poses near the part"
+
+
+class EnvironmentManipulationImpossible(HighLevelFailure):
+    """Opening or closing the container failed."""
+
+    fields = ("environment_part", "action")
+    summary = "the environment manipulation is impossible"
+    hint = "check the handle and the joint of the container"

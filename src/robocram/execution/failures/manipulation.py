@@ -1,0 +1,86 @@
+"""Manipulation failures: arms and grippers, low level and high level."""
+
+from __future__ import annotations
+
+from typing import ClassVar
+
+from robocram.execution.failures.high_level import HighLevelFailure
+from robocram.execution.failures.low_level import LowLevelFailure
+
+
+class ManipulationLowLevelFailure(LowLevelFailure):
+    """An arm motion failed."""
+
+    fields: ClassVar[tuple[str, ...]] = ("arm",)
+    summary = "the arm motion failed"
+
+
+class ManipulationGoalNotReached(ManipulationLowLevelFailure):
+    """The arm moved but stopped away from its goal."""
+
+    fields = ("target", "reached", "error")
+    summary = "the arm did not reach its goal"
+    hint = "retry, or loosen the tolerance if the remaining error is small"
+
+
+class ManipulationPoseUnreachable(ManipulationLowLevelFailure):
+    """No arm configuration reaches the target (IK found no solution)."""
+
+    fields = ("target",)
+    summary = "the target pose is out of the arm's reach"
+    hint = "move the base closer or use the other arm"
+
+
+class GripperLowLevelFailure(LowLevelFailure):
+    """A gripper motion failed."""
+
+    fields: ClassVar[tuple[str, ...]] = ("gripper",)
+    summary = "the gripper motion failed"
+
+
+class GripperClosedCompletely(GripperLowLevelFailure):
+    """The gripper closed all the way: nothing is between the fingers."""
+
+    fields = ("position",)
+    summary = "the gripper closed completely, so it holds nothing"
+    hint = "perceive the object again and regrasp"
+
+
+class GripperGoalNotReached(GripperLowLevelFailure):
+    """The gripper stopped away from the commanded opening."""
+
+    fields = ("goal", "reached")
+    summary = "the gripper did not reach its goal"
+    hint = "check for an obstacle between the fingers and retry"
+
+
+class ManipulationGoalInCollision(HighLevelFailure):
+    """The planned arm motion would collide with the environment."""
+
+    fields = ("arm", "target", "colliding")
+    summary = "the manipulation goal is in collision"
+    hint = "choose another grasp or approach pose"
+
+
+class ObjectUnreachable(HighLevelFailure):
+    """No base pose and arm combination reaches the object."""
+
+    fields = ("object_designator",)
+    summary = "the object is unreachable"
+    hint = "try other base locations or clear the way"
+
+
+class ObjectUnfetchable(HighLevelFailure):
+    """Fetching the object failed after all retries."""
+
+    fields = ("object_designator",)
+    summary = "the object could not be fetched"
+    hint = "search for another instance of the object"
+
+
+class ObjectUndeliverable(HighLevelFailure):
+    """Delivering the object to its target failed after all retries."""
+
+    fields = ("object_designator", "target")
+    summary = "the object could not be delivered"
+    hint = "pick another target location"

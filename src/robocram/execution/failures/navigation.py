@@ -1,0 +1,36 @@
+"""Navigation failures: moving the robot base."""
+
+from __future__ import annotations
+
+from robocram.execution.failures.high_level import HighLevelFailure
+from robocram.execution.failures.low_level import LowLevelFailure
+
+
+class NavigationLowLevelFailure(LowLevelFailure):
+    """A base motion failed."""
+
+    summary = "the base motion failed"
+
+
+class NavigationPoseUnreachable(NavigationLowLevelFailure):
+    """The base cannot get to the target pose, e.g. it is in collision."""
+
+    fields = ("target", "colliding")
+    summary = "the navigation target is unreachable"
+    hint = "sample another base pose from the location designator"
+
+
+class NavigationGoalNotReached(NavigationLowLevelFailure):
+    """The base moved but stopped away from its target."""
+
+    fields = ("target", "reached", "error")
+    summary = "the base did not reach its goal"
+    hint = "retry, or check the path for obstacles"
+
+
+class NavigationGoalInCollision(HighLevelFailure):
+    """The navigation goal puts the robot into collision."""
+
+    fields = ("target", "colliding")
+    summary = "the navigation goal is in collision"
+    hint = "take the next solution of the location designator"

@@ -1,0 +1,58 @@
+"""Perception and looking failures: the camera, the pan-tilt unit and searching."""
+
+from __future__ import annotations
+
+from robocram.execution.failures.high_level import HighLevelFailure
+from robocram.execution.failures.low_level import LowLevelFailure
+
+
+class PerceptionLowLevelFailure(LowLevelFailure):
+    """A perception request failed."""
+
+    summary = "perception failed"
+
+
+class PerceptionObjectNotFound(PerceptionLowLevelFailure):
+    """No object in view matches the designator."""
+
+    fields = ("object_designator",)
+    summary = "no object matching the designator was seen"
+    hint = "look somewhere else or relax the object description"
+
+
+class PtuLowLevelFailure(LowLevelFailure):
+    """A pan-tilt unit (neck) motion failed."""
+
+    summary = "the pan-tilt motion failed"
+
+
+class PtuGoalUnreachable(PtuLowLevelFailure):
+    """The look target needs pan/tilt angles outside the joint limits."""
+
+    fields = ("target", "limits")
+    summary = "the pan-tilt goal is outside the joint limits"
+    hint = "turn the base towards the target first"
+
+
+class PtuGoalNotReached(PtuLowLevelFailure):
+    """The pan-tilt unit stopped away from its goal."""
+
+    fields = ("target", "reached")
+    summary = "the pan-tilt unit did not reach its goal"
+    hint = "retry the look"
+
+
+class LookingHighLevelFailure(HighLevelFailure):
+    """Looking at a target failed after all retries."""
+
+    fields = ("target",)
+    summary = "looking at the target failed"
+    hint = "move the base so the target is in front of the robot"
+
+
+class ObjectNowhereToBeFound(HighLevelFailure):
+    """Searching all candidate locations did not find the object."""
+
+    fields = ("object_designator", "searched")
+    summary = "the object is nowhere to be found"
+    hint = "extend the search locations or check the object description"

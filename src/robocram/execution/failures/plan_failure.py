@@ -1,0 +1,100 @@
+"""The root of all plan failures and the mechanism that keeps its ~40 subclasses short.
+
+A failure class declares the data it carries (``fields``), a one-line ``summary`` and a
+``hint`` saying what to try. Instances take the fields as keywords; ``str(failure)``
+names what happened, the data, any context added on the way up (process module,
+command) and the hint. Fields left out are ``None`` and are not printed.
+"""
+
+from __future__ import annotations
+
+import difflib
+import re
+from typing import Any, ClassVar, Self
+
+
+def cram_name(class_name: str) -> str:
+    """Turn ``TorsoGoalNotReached`` into CRAM's ``torso-goal-not-reached``."""
+    return re.sub(r"(?<!^)(?=[A-Z])", "-", class_name).lower()
+
+
+class PlanFailure(Exception):
+    """A plan step did not achieve its goal; handlers may retry or recover."""
+
+    fields: ClassVar[tuple[str, ...]] = ()
+    summary: ClassVar[str] = "the plan failed"
+    hint: ClassVar[str] = ""
+    cram_name: ClassVar[str] = "plan-failure"
+    _all_fields: ClassVar[tuple[str, ...]] = ()
+
+    def __init_subclass__(cls, **kwargs: Any) -> None:
+        super().__init_subclass__(**kwargs)
+        own = cls.__dict__.get("fields", ())
+        inherited = tuple(f for base in cls.__mro__[1:] for f in getattr(base, "_all_fields", ()))
+        cls._all_fields = tuple(dict.fromkeys(inherited + tuple(own)))
+        cls.cram_name = cram_name(cls.__name__)
+
+    def __init__(self, message: str | None = None, **data: Any) -> None:
+        unknown = [key for key in data if key not in self._all_fields]
+        if unknown:
+            raise TypeError(self._unknown_field_message(unknown[0]))
+        self.message = message
+        self.data: dict[str, Any] = {name: data.get(name) for name in self._all_fields}
+        self.context: dict[str, Any] = {}
+        super().__init__(message or self.summary)
+
+    @classmethod
+    def _unknown_field_message(cls, key: str) -> str:
+        allowed = ", ".join(cls._all_fields) or "none"
+        close = difflib.get_close_matches(key, cls._all_fields, n=1)
+        guess = f"; did you mean {close[0]!r}?" if close else ""
+        return f"{cls.__name__} has no field {key!r} (fields: {allowed}){guess}"
+
+    def __getattr__(self, name: str) -> Any:
+        data = self.__dict__.get("data")
+        if data is not None and name in data:
+            return data[name]
+        raise AttributeError(f"{type(self).__name__!s} has no attribute {name!r}")
+
+    def add_context(self, **context: Any) -> Self:
+        """Record where the failure passed (e.g. process module and command); returns self."""
+        self.context.update(context)
+        return self
+
+    def __str__(self) -> str:
+        parts = [self.message or self.summary]
+        shown = ", ".join(f"{k}={v!r}" for k, v in self.data.items() if v is not None)
+        if shown:
+            parts.append(f"({shown})")
+        if self.context:
+            parts.append("[" + ", ".join(f"{k}={v!r}" for k, v in self.context.items()) + "]")
+        text = " ".join(parts)
+        return f"{text}; {self.hint}" if self.hint else text
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        return (_rebuild, (type(self), self.message, self.data, self.context))
+
+
+def _rebuild(
+    cls: type[PlanFailure], message: str | None, data: dict[str, Any], context: dict[str, Any]
+) -> PlanFailure:
+    failure = cls(message, **{k: v for k, v in data.items() if v is not None})
+    return failure.add_context(**context)
+
+
+def failure_class(name: str) -> type[PlanFailure]:
+    """Find a failure class by CRAM name (``torso-goal-not-reached``) or class name."""
+    classes = _all_subclasses(PlanFailure)
+    by_name = {c.cram_name: c for c in classes} | {c.__name__: c for c in classes}
+    if name in by_name:
+        return by_name[name]
+    close = difflib.get_close_matches(name, list(by_name), n=1)
+    guess = f"; did you mean {close[0]!r}?" if close else ""
+    raise KeyError(f"no plan failure named {name!r}{guess}")
+
+
+def _all_subclasses(cls: type[PlanFailure]) -> list[type[PlanFailure]]:
+    found = [cls]
+    for sub in cls.__subclasses__():
+        found.extend(_all_subclasses(sub))
+    return found

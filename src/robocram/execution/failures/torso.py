@@ -1,0 +1,27 @@
+"""Torso failures: the prismatic lift joint of the robot."""
+
+from __future__ import annotations
+
+from robocram.execution.failures.low_level import LowLevelFailure
+
+
+class TorsoLowLevelFailure(LowLevelFailure):
+    """A torso motion failed."""
+
+    summary = "the torso motion failed"
+
+
+class TorsoGoalUnreachable(TorsoLowLevelFailure):
+    """The torso goal lies outside the joint limits."""
+
+    fields = ("goal", "limits")
+    summary = "the torso goal is outside the joint limits"
+    hint = "pick a goal [m] within the limits"
+
+
+class TorsoGoalNotReached(TorsoLowLevelFailure):
+    """The torso stopped away from its goal."""
+
+    fields = ("goal", "limits", "reached")
+    summary = "the torso did not reach its goal"
+    hint = "check the goal against the joint limits or retry"

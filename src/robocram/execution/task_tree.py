@@ -1,0 +1,146 @@
+"""The task tree of a top level: a frozen snapshot, rendered as text or exported as JSON.
+
+Display is kept apart from the model: ``render`` and ``to_json`` read one consistent
+:class:`TaskSnapshot`, never the live tasks.
+"""
+
+from __future__ import annotations
+
+import reprlib
+from collections.abc import Iterator
+from dataclasses import dataclass
+from typing import Any
+
+from robocram.execution.task import Task, TaskStatus
+
+_repr = reprlib.Repr()
+_repr.maxstring = 60
+_repr.maxother = 60
+
+_MARKS = {
+    TaskStatus.CREATED: "·",
+    TaskStatus.RUNNING: "…",
+    TaskStatus.SUSPENDED: "‖",
+    TaskStatus.SUCCEEDED: "✓",
+    TaskStatus.FAILED: "✗",
+    TaskStatus.EVAPORATED: "○",
+}
+
+
+@dataclass(frozen=True)
+class TaskSnapshot:
+    """A task and its subtree as they were at one moment."""
+
+    name: str
+    path: str
+    status: TaskStatus
+    start_time: float | None  # [s] since the epoch
+    end_time: float | None  # [s] since the epoch
+    result: str | None  # repr, shortened
+    failure_type: str | None
+    failure_message: str | None
+    tags: tuple[str, ...]
+    children: tuple[TaskSnapshot, ...]
+
+    @classmethod
+    def of(cls, task: Task) -> TaskSnapshot:
+        """Snapshot ``task`` and its descendants."""
+        failure = task.failure
+        return cls(
+            name=task.name,
+            path=task.path,
+            status=task.status,
+            start_time=task.start_time,
+            end_time=task.end_time,
+            result=_repr.repr(task.result) if task.status is TaskStatus.SUCCEEDED else None,
+            failure_type=type(failure).__name__ if failure is not None else None,
+            failure_message=str(failure) if failure is not None else None,
+            tags=tuple(sorted(task.tags)),
+            children=tuple(cls.of(child) for child in list(task.children)),
+        )
+
+    @property
+    def duration(self) -> float | None:
+        """Run time [s]; None unless started and finished."""
+        if self.start_time is None or self.end_time is None:
+            return None
+        return self.end_time - self.start_time
+
+    def walk(self) -> Iterator[TaskSnapshot]:
+        """This snapshot and all below it, depth first."""
+        yield self
+        for child in self.children:
+            yield from child.walk()
+
+    def to_json(self) -> dict[str, Any]:
+        """A JSON-able dict with the same fields; children nested."""
+        return {
+            "name": self.name,
+            "path": self.path,
+            "status": self.status.value,
+            "start": self.start_time,
+            "end": self.end_time,
+            "duration": self.duration,
+            "result": self.result,
+            "failure": None
+            if self.failure_type is None
+            else {"type": self.failure_type, "message": self.failure_message},
+            "tags": list(self.tags),
+            "children": [child.to_json() for child in self.children],
+        }
+
+    def label(self) -> str:
+        """One line: mark, name, status, duration [ms], then the value or failure."""
+        text = f"{_MARKS[self.status]} {self.name} {self.status.value}"
+        if self.duration is not None:
+            text += f" {self.duration * 1000:.1f} ms"
+        if self.tags:
+            text += " #" + " #".join(self.tags)
+        if self.result is not None and self.result != "None":
+            text += f" → {self.result}"
+        if self.failure_type is not None:
+            text += f" ✗ {self.failure_type}: {self.failure_message}"
+        return text
+
+
+class TaskTree:
+    """The tasks of one top-level run, rooted at its top-level task."""
+
+    def __init__(self, root: Task) -> None:
+        self.root = root
+
+    def snapshot(self) -> TaskSnapshot:
+        """Freeze the tree as it is now."""
+        return TaskSnapshot.of(self.root)
+
+    def render(self) -> str:
+        """The tree as unicode text, one task per line."""
+        snapshot = self.snapshot()
+        return "\n".join([snapshot.label(), *_branches(snapshot.children, "")])
+
+    def to_json(self) -> dict[str, Any]:
+        """The tree as nested JSON-able dicts."""
+        return self.snapshot().to_json()
+
+    def tasks(self) -> list[Task]:
+        """All live tasks, depth first."""
+        return list(self.root.descendants())
+
+    def find(self, path: str) -> Task:
+        """The task at ``path`` (e.g. ``"plan/par/fetch"``); KeyError names close paths."""
+        tasks = {task.path: task for task in self.root.descendants()}
+        if path in tasks:
+            return tasks[path]
+        near = [p for p in tasks if p.endswith(path.rsplit("/", 1)[-1])][:3]
+        raise KeyError(f"no task at {path!r}; paths ending alike: {near or 'none'}")
+
+    def find_tag(self, tag: str) -> list[Task]:
+        """Every task tagged ``tag``, depth first."""
+        return [task for task in self.root.descendants() if tag in task.tags]
+
+
+def _branches(children: tuple[TaskSnapshot, ...], indent: str) -> Iterator[str]:
+    for i, child in enumerate(children):
+        last = i == len(children) - 1
+        yield f"{indent}{'└── ' if last else '├── '}{child.label()}"
+        yield from _branches(child.children, indent + ("    " if last else "│   "))
