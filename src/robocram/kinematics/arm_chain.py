@@ -1,0 +1,132 @@
+"""The part of a robot that moves a tool frame: a reduced pinocchio model plus couplings.
+
+IK works on *variables*: the arm's joints (and the torso joint when it may move), with a
+mimic joint replaced by its master. Every movable joint on the path from the root to the
+tool frame is then a linear function of the variables, ``value = A @ x + b``: a variable
+(row of the identity), a mimic follower (``multiplier``, ``offset``) or a joint held at its
+seed value (row of zeros, ``b`` = seed). The Jacobian with respect to the variables is the
+pinocchio Jacobian times ``A``, which is how mimic columns get combined into their master.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Mapping
+
+import numpy as np
+import pinocchio as pin
+from numpy.typing import NDArray
+
+from robocram.kinematics.robot_kinematics import RobotKinematics
+from robocram.robots.mimic import mimic_followers
+
+FloatArray = NDArray[np.float64]
+
+
+class ArmChain:
+    """Variables, limits and the reduced model for moving ``tip_frame`` with ``joints``."""
+
+    def __init__(self, kin: RobotKinematics, joints: Iterable[str], tip_frame: str) -> None:
+        self.kin = kin
+        self.tip_frame = tip_frame
+        tip_id = kin.frame_id(tip_frame)
+        self.variables: tuple[str, ...] = self._variables(joints)
+        parent = kin.model.frames[tip_id].parentJoint
+        path_ids = {int(j) for j in kin.model.supports[parent] if j != 0}
+        lock = [j for j in range(1, kin.model.njoints) if j not in path_ids]
+        self.model: pin.Model = pin.buildReducedModel(kin.model, lock, pin.neutral(kin.model))
+        self.data: pin.Data = self.model.createData()
+        # the reduced model holds only the path joints, root to tip, velocity index = order
+        self.path: tuple[str, ...] = tuple(self.model.names[1:])
+        self.frame_id = int(self.model.getFrameId(tip_frame))
+        self._build_maps()
+        self.lower, self.upper = self._limits()
+
+    def _variables(self, joints: Iterable[str]) -> tuple[str, ...]:
+        out: list[str] = []
+        for name in joints:
+            self.kin.joint(name)
+            mimic = self.kin.robot_model.joints[name].mimic
+            master = mimic.joint if mimic is not None else name
+            if master not in out:
+                out.append(master)
+        return tuple(out)
+
+    def _build_maps(self) -> None:
+        n, p = len(self.variables), len(self.path)
+        self.a = np.zeros((p, n))
+        self.b_fixed = np.zeros(p)
+        self.held: list[int] = []  # path rows held at their seed value
+        index = {v: k for k, v in enumerate(self.variables)}
+        for row, name in enumerate(self.path):
+            mimic = self.kin.robot_model.joints[name].mimic
+            if name in index:
+                self.a[row, index[name]] = 1.0
+            elif mimic is not None and mimic.joint in index:
+                self.a[row, index[mimic.joint]] = mimic.multiplier
+                self.b_fixed[row] = mimic.offset
+            else:
+                self.held.append(row)
+        self.identity_map = n == p and not self.held and np.array_equal(self.a, np.eye(n))
+        ids = [self.model.getJointId(name) for name in self.path]
+        cont = [self.model.joints[j].nq == 2 for j in ids]
+        idx_q = np.array([self.model.joints[j].idx_q for j in ids], dtype=int)
+        self.rev_rows = np.array([r for r in range(p) if not cont[r]], dtype=int)
+        self.cont_rows = np.array([r for r in range(p) if cont[r]], dtype=int)
+        self.rev_q = idx_q[self.rev_rows]
+        self.cos_q = idx_q[self.cont_rows]
+        self.sin_q = self.cos_q + 1
+
+    def _limits(self) -> tuple[FloatArray, FloatArray]:
+        """Variable bounds, narrowed so that every mimic follower stays in its own limits."""
+        lower = np.array([self.kin.joints[v].lower for v in self.variables])
+        upper = np.array([self.kin.joints[v].upper for v in self.variables])
+        index = {v: k for k, v in enumerate(self.variables)}
+        for joint in self.kin.robot_model.joints.values():
+            m = joint.mimic
+            if m is None or m.joint not in index or joint.name not in self.kin.joints:
+                continue
+            info, k = self.kin.joints[joint.name], index[m.joint]
+            if m.multiplier == 0 or info.continuous:
+                continue
+            lo, hi = sorted(
+                ((info.lower - m.offset) / m.multiplier, (info.upper - m.offset) / m.multiplier)
+            )
+            lower[k], upper[k] = max(lower[k], lo), min(upper[k], hi)
+        return lower, upper
+
+    def offsets(self, seed: Mapping[str, float]) -> FloatArray:
+        """``b`` of ``value = A @ x + b``: held joints at their seed value (else default)."""
+        b = self.b_fixed.copy()
+        for row in self.held:
+            name = self.path[row]
+            b[row] = float(seed[name]) if name in seed else self.kin.default_value(name)
+        return b
+
+    def configuration(self, x: FloatArray, b: FloatArray) -> FloatArray:
+        """Reduced-model configuration of variable values ``x``."""
+        values = x if self.identity_map else self.a @ x + b
+        q = np.empty(self.model.nq)
+        q[self.rev_q] = values[self.rev_rows]
+        c = values[self.cont_rows]
+        q[self.cos_q] = np.cos(c)
+        q[self.sin_q] = np.sin(c)
+        return q
+
+    def tip_pose(self, x: FloatArray, b: FloatArray) -> pin.SE3:
+        """Pose of the tip frame in the root link for variable values ``x``."""
+        pin.framesForwardKinematics(self.model, self.data, self.configuration(x, b))
+        return self.data.oMf[self.frame_id].copy()
+
+    def joint_positions(self, x: FloatArray) -> dict[str, float]:
+        """Variable values by name, plus every mimic follower of them (whole robot)."""
+        values = {name: float(v) for name, v in zip(self.variables, x, strict=True)}
+        return mimic_followers(self.kin.robot_model, values)
+
+    def wrap_continuous(self, x: FloatArray, reference: FloatArray) -> FloatArray:
+        """Shift continuous variables by whole turns to lie within pi of ``reference``."""
+        out = x.copy()
+        for k, name in enumerate(self.variables):
+            if self.kin.joints[name].continuous:
+                out[k] = reference[k] + math.remainder(x[k] - reference[k], 2 * math.pi)
+        return out

@@ -1,0 +1,55 @@
+"""Errors of the kinematics layer: one root, :class:`KinematicsError`.
+
+An unreachable target is no error: :func:`~robocram.kinematics.solve_ik` reports it with
+``IKResult.success == False`` so that plans can raise their own failure from it.
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Iterable
+
+
+class KinematicsError(Exception):
+    """Root of every error raised by :mod:`robocram.kinematics`."""
+
+
+class UnknownNameError(KinematicsError, KeyError):
+    """An arm, joint or frame name the robot does not have.
+
+    Attributes:
+        kind: "arm", "joint" or "frame".
+        name: the culprit name.
+        robot: the robot's name.
+        suggestions: the closest existing names.
+    """
+
+    def __init__(self, kind: str, name: str, robot: str, known: Iterable[str]) -> None:
+        pool = list(known)
+        close = difflib.get_close_matches(name, pool, n=3, cutoff=0.5)
+        if not close:
+            close = sorted((c for c in pool if name and name in c), key=len)[:3]
+        self.kind = kind
+        self.name = name
+        self.robot = robot
+        self.suggestions = tuple(close)
+        hint = f"; did you mean {' or '.join(repr(c) for c in close)}?" if close else ""
+        if not close and len(pool) <= 8:
+            hint = f"; known {kind}s: {', '.join(repr(p) for p in sorted(pool)) or 'none'}"
+        super().__init__(f"{kind} {name!r} not in {robot}{hint}")
+
+    def __str__(self) -> str:
+        return str(self.args[0])
+
+
+class TargetFrameError(KinematicsError):
+    """A target pose is given in a frame that is not part of the robot."""
+
+    def __init__(self, frame: str, robot: str, root: str) -> None:
+        self.frame = frame
+        self.robot = robot
+        self.root = root
+        super().__init__(
+            f"target frame {frame!r} is no frame of {robot}; transform the target into "
+            f"{root!r} first (robocram.tf.transform_pose(target, {root!r}))"
+        )

@@ -1,0 +1,77 @@
+"""IK and FK for the arms of robot descriptions: the layer's public entry points.
+
+Targets and results are in the robot's URDF root link (``base_footprint`` for the PR2 and
+HSR), i.e. relative to the robot base, not the map: transform map poses first.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Mapping
+
+import numpy as np
+
+from robocram.kinematics.arm_selection import loaded
+from robocram.kinematics.ik_result import IKResult
+from robocram.kinematics.ik_solver import CollisionCheck, IKSettings, IKSolver
+from robocram.kinematics.robot_kinematics import robot_kinematics
+from robocram.robots import RobotDescription
+from robocram.tf import Pose, PoseStamped
+
+
+def solve_ik(
+    description: RobotDescription | str,
+    arm: str,
+    target: Pose | PoseStamped,
+    *,
+    seed: Mapping[str, float] | None = None,
+    frame: str | None = None,
+    use_torso: bool = False,
+    max_restarts: int = 100,
+    timeout: float = 0.1,
+    collision_check: CollisionCheck | None = None,
+    position_tolerance: float = 1e-3,
+    orientation_tolerance: float = 1e-2,
+    random_seed: int = 0,
+) -> IKResult:
+    """Joint values that put ``frame`` (default: the arm's tool frame) at ``target``.
+
+    Args:
+        description: a loaded description, or a built-in robot's name ("pr2", "hsrb", ...).
+        arm: a key of ``description.arms`` ("left", "right", "arm", "neck").
+        target: a Pose in the URDF root link (``base_footprint``), or a PoseStamped in the
+            root link or any other link/frame of the robot (placed by FK of ``seed``).
+        seed: current joint values [rad | m]; the start of the search, and the value of
+            every joint IK does not move (the torso when ``use_torso`` is False).
+        use_torso: also move ``description.torso_joint``.
+        max_restarts: random restarts after the first descent from the seed.
+        timeout: wall-clock budget [s]; the query returns by then, failed if unsolved.
+        collision_check: called with each converged solution; True rejects it (restart).
+        position_tolerance: [m]. orientation_tolerance: [rad].
+        random_seed: seeds the restarts, so results are reproducible.
+
+    Returns:
+        An IKResult; ``success`` False when no solution was found within the budget.
+    """
+    start = time.perf_counter()
+    seed = dict(seed or {})
+    solver = IKSolver.cached(description, arm, use_torso, frame)
+    settings = IKSettings(
+        position_tolerance=position_tolerance,
+        orientation_tolerance=orientation_tolerance,
+        max_restarts=max_restarts,
+        timeout=max(0.0, timeout - (time.perf_counter() - start)),
+    )
+    rng = np.random.default_rng(random_seed)
+    return solver.solve(target, seed, settings, collision_check, rng)
+
+
+def forward_kinematics(
+    description: RobotDescription | str, joint_positions: Mapping[str, float], frame: str
+) -> Pose:
+    """Pose of ``frame`` in the URDF root link for the given joint values [rad | m].
+
+    Joints not given sit at the value nearest 0 within their limits; mimic joints follow
+    their masters.
+    """
+    return robot_kinematics(loaded(description)[1]).frame_pose(frame, joint_positions)
