@@ -16,6 +16,7 @@ from robocram.robots.errors import (
     PackageNotFoundError,
     UrdfError,
 )
+from robocram.robots.interface_facts import install_description
 from robocram.robots.loading import load_description
 from robocram.robots.mimic import mimic_followers
 from robocram.robots.robot_model import RobotModel
@@ -40,6 +41,7 @@ __all__ = [
     "RobotDescription",
     "RobotModel",
     "UrdfError",
+    "install_description",
     "load_description",
     "mimic_followers",
 ]
