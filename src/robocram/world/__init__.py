@@ -1,0 +1,49 @@
+"""The projection world: PyBullet scenes of objects and robots, reasoning and predicates."""
+
+from robocram.world.attachment import Attachment
+from robocram.world.body_spec import MeshSpec, ShapeSpec, UrdfSpec
+from robocram.world.camera import Camera
+from robocram.world.catalogue import catalogue_names
+from robocram.world.errors import (
+    DuplicateObjectError,
+    NoCameraError,
+    NotARobotError,
+    UnknownItemError,
+    UnknownJointError,
+    UnknownLinkError,
+    UnknownObjectError,
+    WorldClosedError,
+    WorldError,
+)
+from robocram.world.joint_state import ClampedJoint, JointLimits
+from robocram.world.ray_hit import RayHit
+from robocram.world.visibility import Visibility
+from robocram.world.world import World
+from robocram.world.world_object import RobotObject, WorldObject
+from robocram.world.world_state import WorldState
+
+__all__ = [
+    "Attachment",
+    "Camera",
+    "ClampedJoint",
+    "DuplicateObjectError",
+    "JointLimits",
+    "MeshSpec",
+    "NoCameraError",
+    "NotARobotError",
+    "RayHit",
+    "RobotObject",
+    "ShapeSpec",
+    "UnknownItemError",
+    "UnknownJointError",
+    "UnknownLinkError",
+    "UnknownObjectError",
+    "UrdfSpec",
+    "Visibility",
+    "World",
+    "WorldClosedError",
+    "WorldError",
+    "WorldObject",
+    "WorldState",
+    "catalogue_names",
+]

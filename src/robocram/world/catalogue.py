@@ -1,0 +1,46 @@
+"""Household items by name: pybullet's own mug and simple shapes of our own for the rest.
+
+Sizes [m] and masses [kg] are those of ordinary kitchen things; an item's type is its
+catalogue name.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from pathlib import Path
+from types import MappingProxyType
+
+import pybullet_data
+
+from robocram.world.body_spec import BodySpec, ShapeSpec, UrdfSpec
+from robocram.world.errors import UnknownItemError
+
+MUG_URDF = Path(pybullet_data.getDataPath()) / "objects" / "mug.urdf"
+
+_ITEMS: Mapping[str, BodySpec] = MappingProxyType(
+    {
+        "mug": UrdfSpec(MUG_URDF, mass=0.3),
+        "pot": ShapeSpec("cylinder", (0.2, 0.2, 0.15), mass=1.2, color=(0.35, 0.35, 0.4, 1)),
+        "bottle": ShapeSpec("cylinder", (0.07, 0.07, 0.25), mass=0.6, color=(0.1, 0.6, 0.2, 1)),
+        "bowl": ShapeSpec("cylinder", (0.16, 0.16, 0.06), mass=0.3, color=(0.95, 0.95, 0.9, 1)),
+        "plate": ShapeSpec("cylinder", (0.24, 0.24, 0.02), mass=0.4, color=(0.9, 0.9, 1.0, 1)),
+        "cup": ShapeSpec("cylinder", (0.08, 0.08, 0.09), mass=0.15, color=(0.2, 0.3, 0.8, 1)),
+        "cereal_box": ShapeSpec("box", (0.07, 0.19, 0.28), mass=0.45, color=(0.95, 0.7, 0.1, 1)),
+        "milk": ShapeSpec("box", (0.07, 0.07, 0.2), mass=1.05, color=(1.0, 1.0, 1.0, 1)),
+    }
+)
+_ALIASES: Mapping[str, str] = MappingProxyType({"cereal": "cereal_box", "cereal box": "cereal_box"})
+
+
+def catalogue_names() -> list[str]:
+    """The item types :func:`catalogue_item` knows, sorted."""
+    return sorted(_ITEMS)
+
+
+def catalogue_item(kind: str) -> tuple[str, BodySpec]:
+    """The canonical type name and body spec of catalogue item ``kind``."""
+    name = _ALIASES.get(kind, kind)
+    spec = _ITEMS.get(name)
+    if spec is None:
+        raise UnknownItemError(kind, _ITEMS)
+    return name, spec

@@ -1,0 +1,96 @@
+"""The world's exceptions: one root, each subclass carries the data that explains it."""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Iterable
+
+
+def did_you_mean(name: str, known: Iterable[str]) -> str:
+    """A "; did you mean ...?" hint naming the closest known names, or a list of them."""
+    names = sorted(known)
+    close = difflib.get_close_matches(name, names, n=3, cutoff=0.5)
+    if close:
+        return "; did you mean " + " or ".join(repr(c) for c in close) + "?"
+    shown = ", ".join(repr(n) for n in names[:8]) + (", ..." if len(names) > 8 else "")
+    return f"; known: {shown}" if names else "; there are none"
+
+
+class WorldError(Exception):
+    """Root of every error raised by :mod:`robocram.world`."""
+
+
+class UnknownObjectError(WorldError):
+    """No object of that name is in the world."""
+
+    def __init__(self, name: str, known: Iterable[str]) -> None:
+        self.name = name
+        self.known = tuple(sorted(known))
+        super().__init__(f"no object {name!r} in the world{did_you_mean(name, self.known)}")
+
+
+class DuplicateObjectError(WorldError):
+    """An object of that name already exists."""
+
+    def __init__(self, name: str) -> None:
+        self.name = name
+        super().__init__(
+            f"an object named {name!r} is already in the world; pick another name "
+            "or remove the old one first"
+        )
+
+
+class UnknownJointError(WorldError):
+    """A joint name that the robot's model does not have (or that cannot move)."""
+
+    def __init__(self, robot: str, joint: str, known: Iterable[str], why: str = "") -> None:
+        self.robot = robot
+        self.joint = joint
+        self.known = tuple(sorted(known))
+        reason = why or f"joint {joint!r} not in {robot}'s model"
+        super().__init__(f"{reason}{did_you_mean(joint, self.known)}")
+
+
+class UnknownLinkError(WorldError):
+    """A link or frame name that the robot's model does not have."""
+
+    def __init__(self, robot: str, link: str, known: Iterable[str]) -> None:
+        self.robot = robot
+        self.link = link
+        self.known = tuple(sorted(known))
+        super().__init__(f"link {link!r} not in {robot}'s model{did_you_mean(link, self.known)}")
+
+
+class UnknownItemError(WorldError):
+    """A catalogue item type that does not exist."""
+
+    def __init__(self, kind: str, known: Iterable[str]) -> None:
+        self.kind = kind
+        self.known = tuple(sorted(known))
+        super().__init__(f"no catalogue item {kind!r}{did_you_mean(kind, self.known)}")
+
+
+class NoCameraError(WorldError):
+    """A robot without a camera was asked what it sees."""
+
+    def __init__(self, robot: str) -> None:
+        self.robot = robot
+        super().__init__(
+            f"robot {robot!r} has no camera in its description; pass camera=Camera(...) "
+            "or use World.visible_from(camera, obj)"
+        )
+
+
+class NotARobotError(WorldError):
+    """A robot operation on an object that is not a robot."""
+
+    def __init__(self, name: str) -> None:
+        self.name = name
+        super().__init__(f"{name!r} is not a robot; add it with World.add_robot(...)")
+
+
+class WorldClosedError(WorldError):
+    """The world's physics client was closed."""
+
+    def __init__(self) -> None:
+        super().__init__("this World was closed; create a new World() or use world.copy() first")

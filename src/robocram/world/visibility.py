@@ -1,0 +1,150 @@
+"""How much of an object a camera sees, by batched ray casts or by a small render.
+
+Both methods compare the object as the camera sees it in the scene with the object alone.
+"Alone" is cheap: the object and the camera are both shifted far up, out of everyone's
+way (:data:`ISOLATION_OFFSET`), looked at, and put back exactly. The fraction counts parts
+outside the field of view as unseen, so an object half out of the image is half visible.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from contextlib import contextmanager
+from dataclasses import dataclass
+
+import numpy as np
+import pybullet
+from numpy.typing import NDArray
+
+from robocram.world.camera import Camera
+from robocram.world.world_core import WorldCore
+from robocram.world.world_object import WorldObject
+
+ISOLATION_OFFSET = (0.0, 0.0, 1000.0)  # [m] far above any scene, beyond every camera's far
+
+
+@dataclass(frozen=True)
+class Visibility:
+    """Seen share of an object and who hides the rest.
+
+    ``samples`` counts the rays (or pixels) that hit the object when it is alone.
+    """
+
+    fraction: float
+    occluders: tuple[str, ...]
+    samples: int
+
+
+def aabb(world: WorldCore, obj: WorldObject) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """World axis-aligned bounds ``(lower, upper)`` [m] over all of ``obj``'s links."""
+    cid = world.client
+    boxes = [pybullet.getAABB(obj.body_id, -1, physicsClientId=cid)]
+    for i in range(pybullet.getNumJoints(obj.body_id, physicsClientId=cid)):
+        boxes.append(pybullet.getAABB(obj.body_id, i, physicsClientId=cid))
+    lows = np.array([b[0] for b in boxes])
+    highs = np.array([b[1] for b in boxes])
+    return lows.min(axis=0), highs.max(axis=0)
+
+
+@contextmanager
+def isolated(world: WorldCore, obj: WorldObject) -> Iterator[None]:
+    """Shift ``obj`` by :data:`ISOLATION_OFFSET`; put it back exactly afterwards."""
+    cid = world.client
+    pos, orn = pybullet.getBasePositionAndOrientation(obj.body_id, physicsClientId=cid)
+    lin, ang = pybullet.getBaseVelocity(obj.body_id, physicsClientId=cid)
+    moved = [p + o for p, o in zip(pos, ISOLATION_OFFSET, strict=True)]
+    pybullet.resetBasePositionAndOrientation(obj.body_id, moved, orn, physicsClientId=cid)
+    try:
+        yield
+    finally:
+        pybullet.resetBasePositionAndOrientation(obj.body_id, pos, orn, physicsClientId=cid)
+        pybullet.resetBaseVelocity(obj.body_id, lin, ang, physicsClientId=cid)
+
+
+def _tangent_grid(
+    world: WorldCore, camera: Camera, obj: WorldObject, grid: int
+) -> NDArray[np.float64] | None:
+    """Image tangents ``(x/z, y/z)`` of a grid over the projection of ``obj``'s bounds."""
+    low, high = aabb(world, obj)
+    corners = np.array([[x, y, z] for x in (low[0], high[0]) for y in (low[1], high[1])
+                        for z in (low[2], high[2])])  # fmt: skip
+    optical = camera.to_optical(corners)
+    front = optical[optical[:, 2] > camera.near]
+    if len(front) == 0:
+        return None
+    tangents = front[:, :2] / front[:, 2:3]
+    lo, hi = tangents.min(axis=0), tangents.max(axis=0)
+    steps = (np.arange(grid) + 0.5) / grid
+    tx = lo[0] + steps * (hi[0] - lo[0])
+    ty = lo[1] + steps * (hi[1] - lo[1])
+    return np.array([[x, y] for y in ty for x in tx])
+
+
+def _first_hits(world: WorldCore, camera: Camera, tangents: NDArray[np.float64]) -> list[int]:
+    starts, ends = camera.ray_ends(tangents)
+    hits = pybullet.rayTestBatch(starts.tolist(), ends.tolist(), physicsClientId=world.client)
+    return [int(h[0]) for h in hits]
+
+
+def ray_visibility(
+    world: WorldCore, camera: Camera, obj: WorldObject, grid: int = 24
+) -> Visibility:
+    """Visibility of ``obj`` from ``camera`` by ``grid`` x ``grid`` rays over its outline."""
+    tangents = _tangent_grid(world, camera, obj, grid)
+    if tangents is None:
+        return Visibility(0.0, (), 0)
+    with isolated(world, obj):
+        alone = _first_hits(world, camera.shifted(ISOLATION_OFFSET), tangents)
+    on_object = tangents[np.array(alone) == obj.body_id]
+    if len(on_object) == 0:
+        return Visibility(0.0, (), 0)
+    th, tv = camera.tan_half
+    in_view = (np.abs(on_object[:, 0]) <= th) & (np.abs(on_object[:, 1]) <= tv)
+    scene = np.array(_first_hits(world, camera, on_object))
+    seen = int(np.count_nonzero((scene == obj.body_id) & in_view))
+    blockers = set(scene[in_view & (scene != obj.body_id) & (scene >= 0)].tolist())
+    return Visibility(seen / len(on_object), _names(world, blockers), len(on_object))
+
+
+def segmentation(world: WorldCore, camera: Camera, width: int, height: int) -> NDArray[np.int64]:
+    """Per-pixel body ids (-1 for nothing) of a TINY-renderer image of ``camera``."""
+    _, _, _, _, seg = pybullet.getCameraImage(
+        width,
+        height,
+        camera.view_matrix(),
+        camera.projection_matrix(),
+        renderer=pybullet.ER_TINY_RENDERER,
+        physicsClientId=world.client,
+    )
+    return np.reshape(np.asarray(seg, dtype=np.int64), (height, width))
+
+
+def render_visibility(
+    world: WorldCore, camera: Camera, obj: WorldObject, height: int = 120
+) -> Visibility:
+    """Visibility of ``obj`` from ``camera`` by comparing segmentation renders.
+
+    The lone object is rendered at twice the image extent (same pixel size), so the part of
+    it outside the camera's view is counted too; the centre of that image lines up
+    pixel for pixel with the scene render.
+    """
+    width, height = camera.image_size(height + height % 2)
+    width += width % 2
+    camera = camera.with_aspect(width / height)
+    scene = segmentation(world, camera, width, height)
+    with isolated(world, obj):
+        lone = camera.shifted(ISOLATION_OFFSET).widened(2.0)
+        alone = segmentation(world, lone, 2 * width, 2 * height)
+    total = int(np.count_nonzero(alone == obj.body_id))
+    if total == 0:
+        return Visibility(0.0, (), 0)
+    rows, cols = height // 2, width // 2
+    centre = alone[rows : rows + height, cols : cols + width] == obj.body_id
+    seen = int(np.count_nonzero(scene == obj.body_id))
+    blockers = set(scene[centre & (scene != obj.body_id) & (scene >= 0)].tolist())
+    return Visibility(min(1.0, seen / total), _names(world, blockers), total)
+
+
+def _names(world: WorldCore, bodies: set[int]) -> tuple[str, ...]:
+    by_body = {o.body_id: o.name for o in world.objects()}
+    return tuple(sorted(by_body[b] for b in bodies if b in by_body))

@@ -1,0 +1,334 @@
+"""The projection world: a PyBullet scene of objects and robots, and reasoning over it.
+
+Each :class:`World` is its own headless physics client (a GUI window on request); there is
+no global "current world". Close a world (or use it as a context manager) when done.
+"""
+
+from __future__ import annotations
+
+import contextlib
+from collections.abc import Iterable, Iterator, Sequence
+from pathlib import Path
+from typing import TYPE_CHECKING, Literal
+
+import numpy as np
+import pybullet
+from numpy.typing import NDArray
+
+from robocram.robots import RobotDescription, install_description, load_description
+from robocram.tf import Pose, PoseLike, Vector3
+from robocram.world import contacts, spatial_relations, visibility
+from robocram.world.body_spec import GREY, BodySpec, MeshSpec, Rgba, ShapeSpec, UrdfSpec
+from robocram.world.camera import Camera
+from robocram.world.catalogue import catalogue_item
+from robocram.world.errors import NoCameraError
+from robocram.world.png import write_png
+from robocram.world.ray_hit import RayHit
+from robocram.world.robot_urdf import robot_urdf_file
+from robocram.world.visibility import Visibility
+from robocram.world.world_core import ORIGIN, ObjectRef, WorldCore
+from robocram.world.world_object import RobotObject, WorldObject
+from robocram.world.world_state import WorldState
+
+if TYPE_CHECKING:
+    from robocram.logic import KnowledgeBase
+
+VisibilityMethod = Literal["ray", "render"]
+DEFAULT_VISIBILITY: VisibilityMethod = "ray"
+
+
+class World(WorldCore):
+    """A scene of named objects and robots in one PyBullet client, with reasoning."""
+
+    def __init__(self, gui: bool = False, gravity: float = -9.81, time_step: float = 1 / 240):
+        super().__init__(gui, gravity, time_step)
+        self._gui = gui
+        self._kb: KnowledgeBase | None = None
+
+    def __enter__(self) -> World:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    def __del__(self) -> None:
+        with contextlib.suppress(Exception):
+            self.close()
+
+    def add_object(
+        self, name: str, type: str, spec: BodySpec, pose: PoseLike = ORIGIN
+    ) -> WorldObject:  # noqa: A002
+        """Add a body made from ``spec``, called ``name``, of type ``type``, at ``pose``."""
+        handle = WorldObject(name, type, -1, spec)
+        self._insert(handle, pose)
+        return handle
+
+    def add_floor(self, name: str = "floor") -> WorldObject:
+        """Add the static ground plane z = 0 (type ``floor``)."""
+        return self.add_object(name, "floor", ShapeSpec("plane"))
+
+    def add_box(
+        self,
+        name: str,
+        size: Vector3,
+        pose: PoseLike = ORIGIN,
+        mass: float = 0.0,
+        color: Rgba = GREY,
+    ) -> WorldObject:
+        """Add a box of extents ``size`` [m] centred at ``pose``; ``mass`` [kg] 0 is static."""
+        return self.add_object(name, "box", ShapeSpec("box", size, mass, color), pose)
+
+    def add_cylinder(
+        self,
+        name: str,
+        radius: float,
+        height: float,
+        pose: PoseLike = ORIGIN,
+        mass: float = 0.0,
+        color: Rgba = GREY,
+    ) -> WorldObject:
+        """Add an upright cylinder [m] centred at ``pose``."""
+        spec = ShapeSpec("cylinder", (2 * radius, 2 * radius, height), mass, color)
+        return self.add_object(name, "cylinder", spec, pose)
+
+    def add_sphere(
+        self,
+        name: str,
+        radius: float,
+        pose: PoseLike = ORIGIN,
+        mass: float = 0.0,
+        color: Rgba = GREY,
+    ) -> WorldObject:
+        """Add a sphere of ``radius`` [m] centred at ``pose``."""
+        spec = ShapeSpec("sphere", (2 * radius, 2 * radius, 2 * radius), mass, color)
+        return self.add_object(name, "sphere", spec, pose)
+
+    def add_mesh(
+        self,
+        name: str,
+        path: str | Path,
+        pose: PoseLike = ORIGIN,
+        mass: float = 0.0,
+        scale: float = 1.0,
+        color: Rgba = GREY,
+        type: str = "mesh",  # noqa: A002
+    ) -> WorldObject:
+        """Add a body from an OBJ/STL mesh file."""
+        return self.add_object(name, type, MeshSpec(Path(path), scale, mass, color), pose)
+
+    def add_urdf(
+        self,
+        name: str,
+        path: str | Path,
+        pose: PoseLike = ORIGIN,
+        fixed_base: bool = True,
+        type: str = "urdf",  # noqa: A002
+    ) -> WorldObject:
+        """Add an articulated or rigid object (a kitchen, a drawer) from a URDF file."""
+        return self.add_object(name, type, UrdfSpec(Path(path), fixed_base), pose)
+
+    def add_item(self, name: str, kind: str, pose: PoseLike = ORIGIN) -> WorldObject:
+        """Add a household item from the catalogue (mug, pot, bottle, ...); type = ``kind``."""
+        canonical, spec = catalogue_item(kind)
+        return self.add_object(name, canonical, spec, pose)
+
+    def add_robot(
+        self, robot: str | RobotDescription, pose: PoseLike = ORIGIN, name: str | None = None
+    ) -> RobotObject:
+        """Add a robot (fixed base, joints held) by built-in name or description."""
+        desc = load_description(robot)
+        spec = UrdfSpec(robot_urdf_file(desc), fixed_base=True)
+        handle = RobotObject(name or desc.name, "robot", -1, spec, description=desc)
+        self._insert(handle, pose)
+        held = self._holds[handle.name]
+        for joint in self.joint_states(handle):
+            held[handle.joint_index[joint]] = 0.0
+        if self._kb is not None:
+            self._install_description(desc)
+        return handle
+
+    def _install_description(self, desc: RobotDescription) -> None:
+        install_description(self.kb, desc)
+
+    @contextlib.contextmanager
+    def stored_state(self) -> Iterator[WorldState]:
+        """Restore the world exactly on leaving the block (objects added/removed included)."""
+        state = WorldState.capture(self)
+        try:
+            yield state
+        finally:
+            state.restore(self)
+
+    def copy(self, gui: bool = False) -> World:
+        """An independent world (its own client) with the same objects and state."""
+        other = World(gui=gui, gravity=self.gravity, time_step=self.time_step)
+        WorldState.capture(self).recreate(other)
+        return other
+
+    def aabb(self, obj: ObjectRef) -> tuple[Vector3, Vector3]:
+        """World-aligned bounds ``(lower, upper)`` [m] of ``obj`` (all links)."""
+        low, high = visibility.aabb(self, self.object(obj))
+        return (float(low[0]), float(low[1]), float(low[2])), (
+            float(high[0]),
+            float(high[1]),
+            float(high[2]),
+        )
+
+    def collisions(
+        self, obj: ObjectRef, ignore: Iterable[ObjectRef] = (), distance: float = 0.002
+    ) -> list[WorldObject]:
+        """Objects touching or penetrating ``obj`` within ``distance`` [m].
+
+        A robot and the objects attached to it never collide with each other.
+        """
+        skip = [self.object(o) for o in ignore]
+        return contacts.collisions(self, self.object(obj), skip, distance)
+
+    def in_collision(self, obj: ObjectRef, ignore: Iterable[ObjectRef] = ()) -> bool:
+        """Whether ``obj`` touches anything but ``ignore`` (the floor counts; ignore it)."""
+        return bool(self.collisions(obj, ignore))
+
+    def contact(self, a: ObjectRef, b: ObjectRef) -> bool:
+        """Whether ``a`` and ``b`` touch (within 2 mm)."""
+        return contacts.contact(self, self.object(a), self.object(b))
+
+    def stable(self, obj: ObjectRef | Sequence[ObjectRef] | None = None) -> bool:
+        """Whether ``obj`` (default: all free objects) stays within 5 mm / 0.15 rad."""
+        if obj is None:
+            return spatial_relations.stable(self)
+        refs = [obj] if isinstance(obj, str | WorldObject) else list(obj)
+        return spatial_relations.stable(self, [self.object(o) for o in refs])
+
+    def supported_by(self, obj: ObjectRef, support: ObjectRef) -> bool:
+        """Whether ``obj`` touches ``support`` and is above it."""
+        return spatial_relations.supported_by(self, self.object(obj), self.object(support))
+
+    def above(self, a: ObjectRef, b: ObjectRef) -> bool:
+        """Whether ``a`` is over ``b`` (x-y overlap, a's centre above b's top)."""
+        return spatial_relations.above(self, self.object(a), self.object(b))
+
+    def below(self, a: ObjectRef, b: ObjectRef) -> bool:
+        """Whether ``a`` is under ``b``."""
+        return spatial_relations.below(self, self.object(a), self.object(b))
+
+    def camera(self, robot: ObjectRef, camera: str | None = None) -> Camera:
+        """The robot's camera (by name; default the first) at its current pose."""
+        handle = self.robot(robot)
+        cams = handle.description.cameras
+        chosen = [c for c in cams if camera is None or c.name == camera]
+        if not chosen:
+            raise NoCameraError(handle.name)
+        c = chosen[0]
+        return Camera(self.link_pose(handle, c.frame), c.horizontal_fov, c.vertical_fov)
+
+    def visibility_from(
+        self, camera: Camera, obj: ObjectRef, method: VisibilityMethod = DEFAULT_VISIBILITY
+    ) -> Visibility:
+        """Seen fraction and occluders of ``obj`` from ``camera`` by rays or by a render."""
+        handle = self.object(obj)
+        if method == "ray":
+            return visibility.ray_visibility(self, camera, handle)
+        if method == "render":
+            return visibility.render_visibility(self, camera, handle)
+        raise ValueError(f"unknown visibility method {method!r}; use 'ray' or 'render'")
+
+    def visibility_fraction(
+        self,
+        robot: ObjectRef,
+        obj: ObjectRef,
+        camera: str | None = None,
+        method: VisibilityMethod = DEFAULT_VISIBILITY,
+    ) -> float:
+        """Share (0..1) of ``obj`` the robot's camera sees, occlusion and image edges counted."""
+        return self.visibility_from(self.camera(robot, camera), obj, method).fraction
+
+    def visible(
+        self,
+        robot: ObjectRef,
+        obj: ObjectRef,
+        camera: str | None = None,
+        threshold: float = 0.9,
+        method: VisibilityMethod = DEFAULT_VISIBILITY,
+    ) -> bool:
+        """Whether the robot's camera sees at least ``threshold`` of ``obj``."""
+        return self.visibility_fraction(robot, obj, camera, method) >= threshold
+
+    def visible_from(
+        self,
+        camera: Camera | PoseLike,
+        obj: ObjectRef,
+        threshold: float = 0.9,
+        method: VisibilityMethod = DEFAULT_VISIBILITY,
+    ) -> bool:
+        """Whether a camera (a :class:`Camera`, or an optical-frame pose) sees ``obj``."""
+        cam = camera if isinstance(camera, Camera) else Camera(Pose.coerce(camera))
+        return self.visibility_from(cam, obj, method).fraction >= threshold
+
+    def occluding_objects(
+        self,
+        robot: ObjectRef,
+        obj: ObjectRef,
+        camera: str | None = None,
+        method: VisibilityMethod = DEFAULT_VISIBILITY,
+    ) -> list[WorldObject]:
+        """Objects between the robot's camera and ``obj`` (the robot itself may be one)."""
+        names = self.visibility_from(self.camera(robot, camera), obj, method).occluders
+        return [self.object(n) for n in names]
+
+    def render(
+        self, camera: Camera | PoseLike, width: int = 640, height: int = 480
+    ) -> NDArray[np.uint8]:
+        """An ``height x width x 3`` RGB image from ``camera`` (TINY renderer, no window)."""
+        cam = camera if isinstance(camera, Camera) else Camera(Pose.coerce(camera))
+        cam = cam.with_aspect(width / height)
+        _, _, rgba, _, _ = pybullet.getCameraImage(
+            width, height, cam.view_matrix(), cam.projection_matrix(),
+            renderer=pybullet.ER_TINY_RENDERER, physicsClientId=self._cid(),
+        )  # fmt: skip
+        return np.reshape(np.asarray(rgba, dtype=np.uint8), (height, width, 4))[:, :, :3].copy()
+
+    def save_png(
+        self, path: str | Path, camera: Camera | PoseLike, width: int = 640, height: int = 480
+    ) -> Path:
+        """Render from ``camera`` and write the image to ``path`` as PNG."""
+        return write_png(path, self.render(camera, width, height))
+
+    def ray_cast(self, start: Vector3, end: Vector3) -> RayHit | None:
+        """The first object on the segment ``start``..``end`` [m], or None."""
+        return self.ray_cast_batch([start], [end])[0]
+
+    def ray_cast_batch(
+        self, starts: Sequence[Vector3], ends: Sequence[Vector3]
+    ) -> list[RayHit | None]:
+        """:meth:`ray_cast` for many rays in one pybullet call."""
+        if len(starts) != len(ends):
+            raise ValueError(f"{len(starts)} ray starts but {len(ends)} ends")
+        by_body = {o.body_id: o for o in self.objects()}
+        hits = pybullet.rayTestBatch(
+            [list(s) for s in starts], [list(e) for e in ends], physicsClientId=self._cid()
+        )
+        out: list[RayHit | None] = []
+        for start, end, hit in zip(starts, ends, hits, strict=True):
+            obj = by_body.get(hit[0])
+            if obj is None:
+                out.append(None)
+                continue
+            link = next((n for n, i in obj.link_index.items() if i == hit[1]), None)
+            length = float(np.linalg.norm(np.subtract(end, start)))
+            out.append(RayHit(obj, link, tuple(hit[3]), tuple(hit[4]), hit[2] * length))
+        return out
+
+    @property
+    def kb(self) -> KnowledgeBase:
+        """This world's knowledge base: world predicates and the robots' descriptions."""
+        if self._kb is None:
+            from robocram.world.predicates import world_knowledge_base
+
+            self._kb = world_knowledge_base(self)
+            for robot in self.robots():
+                self._install_description(robot.description)
+        return self._kb
+
+    def __repr__(self) -> str:
+        names = ", ".join(o.name for o in self.objects())
+        return f"World(client={self.client}, objects=[{names}])"

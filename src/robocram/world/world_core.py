@@ -1,0 +1,309 @@
+"""The physics client of a world and its bodies: creation, removal, poses and joints.
+
+:class:`WorldCore` owns one pybullet client and the name-to-handle table. The public
+:class:`~robocram.world.world.World` adds reasoning, visibility and the knowledge base.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator, Mapping
+
+import pybullet
+
+from robocram.robots import mimic_followers
+from robocram.tf import Pose, PoseLike
+from robocram.world.attachment import Attachment
+from robocram.world.errors import (
+    DuplicateObjectError,
+    NotARobotError,
+    UnknownJointError,
+    UnknownLinkError,
+    UnknownObjectError,
+    WorldClosedError,
+)
+from robocram.world.joint_state import ClampedJoint, JointLimits, clamp_values
+from robocram.world.world_object import RobotObject, WorldObject
+
+ObjectRef = WorldObject | str
+ORIGIN = Pose()
+_MOVABLE_TYPES = (pybullet.JOINT_REVOLUTE, pybullet.JOINT_PRISMATIC)
+
+
+class WorldCore:
+    """One pybullet client, its named bodies, attachments and the joints robots hold."""
+
+    def __init__(self, gui: bool = False, gravity: float = -9.81, time_step: float = 1 / 240):
+        self.client: int = pybullet.connect(pybullet.GUI if gui else pybullet.DIRECT)
+        if self.client < 0:
+            raise WorldClosedError()
+        self.gravity = gravity  # [m/s^2] along z
+        self.time_step = time_step  # [s] per physics step
+        self.time = 0.0  # [s] simulated so far
+        pybullet.setGravity(0, 0, gravity, physicsClientId=self.client)
+        pybullet.setTimeStep(time_step, physicsClientId=self.client)
+        self._objects: dict[str, WorldObject] = {}
+        self._inertial: dict[str, Pose] = {}  # base link frame -> pybullet base (COM) frame
+        self._attachments: dict[str, Attachment] = {}  # by attached object name
+        self._holds: dict[str, dict[int, float]] = {}  # robot -> joint index -> held value
+
+    def close(self) -> None:
+        """Disconnect the physics client; the world is unusable afterwards."""
+        if self.client >= 0:
+            pybullet.disconnect(physicsClientId=self.client)
+            self.client = -1
+
+    @property
+    def closed(self) -> bool:
+        """Whether :meth:`close` was called."""
+        return self.client < 0
+
+    def _cid(self) -> int:
+        if self.client < 0:
+            raise WorldClosedError()
+        return self.client
+
+    def _insert(self, handle: WorldObject, pose: PoseLike = ORIGIN) -> None:
+        """Create ``handle``'s body from its spec, index it and place it at ``pose``."""
+        if handle.name in self._objects:
+            raise DuplicateObjectError(handle.name)
+        cid = self._cid()
+        handle.body_id = handle.spec.create(cid)
+        dyn = pybullet.getDynamicsInfo(handle.body_id, -1, physicsClientId=cid)
+        self._inertial[handle.name] = Pose(dyn[3], dyn[4])
+        handle.joint_index.clear()
+        handle.link_index.clear()
+        base_name = pybullet.getBodyInfo(handle.body_id, physicsClientId=cid)[0].decode()
+        handle.link_index[base_name] = -1
+        for i in range(pybullet.getNumJoints(handle.body_id, physicsClientId=cid)):
+            info = pybullet.getJointInfo(handle.body_id, i, physicsClientId=cid)
+            handle.joint_index[info[1].decode()] = i
+            handle.link_index[info[12].decode()] = i
+        self._objects[handle.name] = handle
+        if handle.joint_index:
+            self._holds[handle.name] = {}
+        self.set_pose(handle, pose)
+
+    def object(self, name: ObjectRef) -> WorldObject:
+        """The object called ``name`` (a handle is checked to still belong to this world)."""
+        key = name.name if isinstance(name, WorldObject) else name
+        found = self._objects.get(key)
+        if found is None:
+            raise UnknownObjectError(key, self._objects)
+        return found
+
+    def robot(self, name: ObjectRef) -> RobotObject:
+        """The robot called ``name``."""
+        obj = self.object(name)
+        if not isinstance(obj, RobotObject):
+            raise NotARobotError(obj.name)
+        return obj
+
+    def objects(self, type: str | None = None) -> list[WorldObject]:  # noqa: A002
+        """All objects in creation order, or those of one ``type``."""
+        return [o for o in self._objects.values() if type is None or o.type == type]
+
+    def robots(self) -> list[RobotObject]:
+        """All robots in creation order."""
+        return [o for o in self._objects.values() if isinstance(o, RobotObject)]
+
+    def __contains__(self, name: ObjectRef) -> bool:
+        key = name.name if isinstance(name, WorldObject) else name
+        return key in self._objects
+
+    def __iter__(self) -> Iterator[WorldObject]:
+        return iter(list(self._objects.values()))
+
+    def remove(self, obj: ObjectRef) -> None:
+        """Take ``obj`` out of the world, with its attachments (either end)."""
+        handle = self.object(obj)
+        for name, att in list(self._attachments.items()):
+            if handle.name in (name, att.robot):
+                del self._attachments[name]
+        pybullet.removeBody(handle.body_id, physicsClientId=self._cid())
+        del self._objects[handle.name]
+        self._inertial.pop(handle.name, None)
+        self._holds.pop(handle.name, None)
+
+    def pose(self, obj: ObjectRef) -> Pose:
+        """Pose of the object's root link frame in the world."""
+        handle = self.object(obj)
+        pos, orn = pybullet.getBasePositionAndOrientation(
+            handle.body_id, physicsClientId=self._cid()
+        )
+        return Pose(pos, orn) * self._inertial[handle.name].inverse()
+
+    def set_pose(self, obj: ObjectRef, pose: PoseLike) -> None:
+        """Teleport ``obj`` (at rest) to ``pose``; its attached objects follow.
+
+        Placing an attached object moves it relative to its link; it stays attached.
+        """
+        handle = self.object(obj)
+        base = Pose.coerce(pose) * self._inertial[handle.name]
+        cid = self._cid()
+        pybullet.resetBasePositionAndOrientation(
+            handle.body_id, base.position, base.orientation, physicsClientId=cid
+        )
+        pybullet.resetBaseVelocity(handle.body_id, (0, 0, 0), (0, 0, 0), physicsClientId=cid)
+        att = self._attachments.get(handle.name)
+        if att is not None:
+            link_pose = self.link_pose(att.robot, att.link)
+            self._attachments[handle.name] = Attachment(
+                att.obj, att.robot, att.link, link_pose.inverse() * Pose.coerce(pose)
+            )
+        self._follow(handle.name)
+
+    def link_pose(self, obj: ObjectRef, link: str) -> Pose:
+        """Pose of ``link`` (a URDF link or a frame added in code) in the world."""
+        handle = self.object(obj)
+        index = self._link_index(handle, link)
+        if index < 0:
+            return self.pose(handle)
+        state = pybullet.getLinkState(
+            handle.body_id, index, computeForwardKinematics=True, physicsClientId=self._cid()
+        )
+        return Pose(state[4], state[5])
+
+    def link_names(self, obj: ObjectRef) -> list[str]:
+        """Names of all links and frames of ``obj``, the root first."""
+        return list(self.object(obj).link_index)
+
+    def _link_index(self, handle: WorldObject, link: str) -> int:
+        index = handle.link_index.get(link)
+        if index is None:
+            raise UnknownLinkError(handle.name, link, handle.link_index)
+        return index
+
+    def joint_limits(self, obj: ObjectRef, joint: str) -> JointLimits:
+        """Position limits [rad | m] of a movable joint; continuous ones are -inf/inf."""
+        handle = self.object(obj)
+        index = self._movable_index(handle, joint)
+        if isinstance(handle, RobotObject) and handle.description.model is not None:
+            spec = handle.description.model.joints[joint]
+            lower = -math.inf if spec.lower is None else spec.lower
+            upper = math.inf if spec.upper is None else spec.upper
+            return JointLimits(lower, upper)
+        info = pybullet.getJointInfo(handle.body_id, index, physicsClientId=self._cid())
+        if info[8] > info[9]:  # pybullet marks unlimited joints with lower > upper
+            return JointLimits(-math.inf, math.inf)
+        return JointLimits(info[8], info[9])
+
+    def _movable_index(self, handle: WorldObject, joint: str) -> int:
+        index = handle.joint_index.get(joint)
+        movable = self._movable_names(handle)
+        if index is None:
+            raise UnknownJointError(handle.name, joint, movable)
+        if joint not in movable:
+            why = f"joint {joint!r} of {handle.name} is fixed and has no state"
+            raise UnknownJointError(handle.name, joint, movable, why)
+        return index
+
+    def _movable_names(self, handle: WorldObject) -> list[str]:
+        cid = self._cid()
+        return [
+            name
+            for name, i in handle.joint_index.items()
+            if pybullet.getJointInfo(handle.body_id, i, physicsClientId=cid)[2] in _MOVABLE_TYPES
+        ]
+
+    def joint_states(self, obj: ObjectRef) -> dict[str, float]:
+        """Every movable joint's value [rad | m] by name."""
+        handle = self.object(obj)
+        names = self._movable_names(handle)
+        indices = [handle.joint_index[n] for n in names]
+        states = pybullet.getJointStates(handle.body_id, indices, physicsClientId=self._cid())
+        return {n: float(s[0]) for n, s in zip(names, states or (), strict=True)}
+
+    def set_joint_states(self, obj: ObjectRef, values: Mapping[str, float]) -> list[ClampedJoint]:
+        """Set joints by name, clamped to their limits; mimic joints follow their masters.
+
+        Returns the joints whose requested value was outside the limits (empty if none).
+        The values are held during simulation; attached objects follow.
+        """
+        handle = self.object(obj)
+        limits = {name: self.joint_limits(handle, name) for name in values}
+        applied, clamped = clamp_values(values, limits)
+        applied.update(self._mimic_values(handle, applied))
+        cid = self._cid()
+        for name, value in applied.items():
+            index = handle.joint_index[name]
+            pybullet.resetJointState(handle.body_id, index, value, 0.0, physicsClientId=cid)
+            self._holds[handle.name][index] = value
+        self._follow(handle.name)
+        return clamped
+
+    def _mimic_values(self, handle: WorldObject, applied: dict[str, float]) -> dict[str, float]:
+        if not isinstance(handle, RobotObject):
+            return {}
+        model = handle.description.model
+        if model is None:
+            return {}
+        followers = mimic_followers(model, applied)
+        out: dict[str, float] = {}
+        for name, value in followers.items():
+            if name in applied or name not in handle.joint_index:
+                continue
+            out[name] = self.joint_limits(handle, name).clamp(float(value))
+        return out
+
+    def attach(self, obj: ObjectRef, robot: ObjectRef, link: str) -> None:
+        """Fix ``obj`` to ``link`` of ``robot`` at their current relative pose."""
+        handle = self.object(obj)
+        carrier = self.object(robot)
+        if handle is carrier:
+            raise ValueError(f"cannot attach {handle.name!r} to itself")
+        link_pose = self.link_pose(carrier, link)
+        rel = link_pose.inverse() * self.pose(handle)
+        self._attachments[handle.name] = Attachment(handle.name, carrier.name, link, rel)
+
+    def detach(self, obj: ObjectRef) -> None:
+        """Let ``obj`` go; it stays where it is. Detaching a free object is an error."""
+        handle = self.object(obj)
+        if self._attachments.pop(handle.name, None) is None:
+            raise ValueError(f"{handle.name!r} is not attached to anything")
+
+    def attachments(self, robot: ObjectRef) -> dict[str, str]:
+        """Objects attached to ``robot``: object name -> link name."""
+        name = self.object(robot).name
+        return {a.obj: a.link for a in self._attachments.values() if a.robot == name}
+
+    def attached_to(self, obj: ObjectRef) -> Attachment | None:
+        """The attachment holding ``obj``, if any."""
+        return self._attachments.get(self.object(obj).name)
+
+    def _follow(self, carrier: str) -> None:
+        """Re-place the objects attached to ``carrier`` (and theirs, recursively)."""
+        cid = self._cid()
+        for att in list(self._attachments.values()):
+            if att.robot != carrier:
+                continue
+            target = self._objects[att.obj]
+            pose = self.link_pose(carrier, att.link) * att.link_T_obj
+            base = pose * self._inertial[att.obj]
+            pybullet.resetBasePositionAndOrientation(
+                target.body_id, base.position, base.orientation, physicsClientId=cid
+            )
+            pybullet.resetBaseVelocity(target.body_id, (0, 0, 0), (0, 0, 0), physicsClientId=cid)
+            self._follow(att.obj)
+
+    def step(self) -> None:
+        """Advance physics one time step; robots hold their joints, attachments follow."""
+        cid = self._cid()
+        pybullet.stepSimulation(physicsClientId=cid)
+        self.time += self.time_step
+        for name, held in self._holds.items():
+            if held and isinstance(self._objects[name], RobotObject):
+                body = self._objects[name].body_id
+                for index, value in held.items():
+                    pybullet.resetJointState(body, index, value, 0.0, physicsClientId=cid)
+        for carrier in {a.robot for a in self._attachments.values()}:
+            self._follow(carrier)
+
+    def simulate(self, seconds: float) -> int:
+        """Run physics for ``seconds`` [s] of simulated time; return the number of steps."""
+        if not (seconds >= 0 and math.isfinite(seconds)):
+            raise ValueError(f"simulate needs a finite duration >= 0 [s], got {seconds!r}")
+        steps = round(seconds / self.time_step)
+        for _ in range(steps):
+            self.step()
+        return steps

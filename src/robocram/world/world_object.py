@@ -1,0 +1,44 @@
+"""Handles to the bodies of a world: plain objects and robots.
+
+A handle outlives its pybullet body: when a stored state brings back a removed object, the
+same handle gets the new body id, so code holding it keeps working.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from robocram.robots import RobotDescription
+from robocram.world.body_spec import BodySpec
+
+
+@dataclass(eq=False)
+class WorldObject:
+    """A named, typed body of one world; compared by identity.
+
+    ``joint_index`` maps every joint name (fixed ones too) to pybullet's joint index and
+    ``link_index`` every link name to its index, the root link mapping to -1 (the base).
+    Both are empty for single-shape bodies.
+    """
+
+    name: str
+    type: str
+    body_id: int
+    spec: BodySpec
+    joint_index: dict[str, int] = field(default_factory=dict, kw_only=True)
+    link_index: dict[str, int] = field(default_factory=dict, kw_only=True)
+
+    @property
+    def is_static(self) -> bool:
+        """Whether the body never moves in simulation (no mass or a fixed base)."""
+        return self.spec.is_static
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}({self.name!r}, type={self.type!r}, body={self.body_id})"
+
+
+@dataclass(eq=False, repr=False)
+class RobotObject(WorldObject):
+    """A robot body with its checked description (``description.model`` is its URDF)."""
+
+    description: RobotDescription = field(kw_only=True)

@@ -1,0 +1,98 @@
+"""Snapshots of a world: the set of objects, their poses, velocities, joints and attachments.
+
+Restoring a snapshot removes objects added since, re-creates removed ones from their specs
+(the same handles get the new bodies) and puts every body back exactly. A snapshot also
+seeds a copy of the world in another physics client.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import pybullet
+
+from robocram.world.attachment import Attachment
+from robocram.world.world_core import WorldCore
+from robocram.world.world_object import RobotObject, WorldObject
+
+
+@dataclass(frozen=True)
+class BodyState:
+    """One body's base pose (pybullet's COM frame), velocities and joint positions/speeds."""
+
+    base: tuple[tuple[float, ...], tuple[float, ...]]
+    velocity: tuple[tuple[float, ...], tuple[float, ...]]
+    joints: tuple[tuple[int, float, float], ...]  # (index, position, velocity)
+
+
+@dataclass(frozen=True)
+class WorldState:
+    """Everything :meth:`restore` needs to put a world back as it was."""
+
+    handles: tuple[WorldObject, ...]
+    bodies: tuple[BodyState, ...]
+    attachments: tuple[Attachment, ...]
+    holds: tuple[tuple[str, tuple[tuple[int, float], ...]], ...]
+    time: float
+
+    @classmethod
+    def capture(cls, world: WorldCore) -> WorldState:
+        """Snapshot ``world`` now."""
+        handles = tuple(world.objects())
+        return cls(
+            handles=handles,
+            bodies=tuple(_body_state(world.client, h.body_id) for h in handles),
+            attachments=tuple(world._attachments.values()),
+            holds=tuple((name, tuple(held.items())) for name, held in world._holds.items()),
+            time=world.time,
+        )
+
+    def restore(self, world: WorldCore) -> None:
+        """Put ``world`` (the one captured) back: objects, poses, joints, attachments."""
+        keep = {h.name for h in self.handles}
+        for obj in world.objects():
+            if obj.name not in keep:
+                world.remove(obj)
+        for handle in self.handles:
+            if handle.name not in world:
+                world._insert(handle)
+        self._apply(world)
+
+    def recreate(self, world: WorldCore) -> None:
+        """Fill an empty ``world`` (another client) with new handles in this state."""
+        for handle in self.handles:
+            world._insert(_clone(handle))
+        self._apply(world)
+
+    def _apply(self, world: WorldCore) -> None:
+        cid = world.client
+        for handle, body in zip(self.handles, self.bodies, strict=True):
+            target = world.object(handle.name).body_id
+            pybullet.resetBasePositionAndOrientation(target, *body.base, physicsClientId=cid)
+            pybullet.resetBaseVelocity(target, *body.velocity, physicsClientId=cid)
+            for index, position, velocity in body.joints:
+                pybullet.resetJointState(target, index, position, velocity, physicsClientId=cid)
+        world._attachments = {a.obj: a for a in self.attachments}
+        world._holds = {name: dict(held) for name, held in self.holds}
+        world.time = self.time
+
+
+def _body_state(cid: int, body: int) -> BodyState:
+    pos, orn = pybullet.getBasePositionAndOrientation(body, physicsClientId=cid)
+    lin, ang = pybullet.getBaseVelocity(body, physicsClientId=cid)
+    indices = [
+        i
+        for i in range(pybullet.getNumJoints(body, physicsClientId=cid))
+        if pybullet.getJointInfo(body, i, physicsClientId=cid)[2] != pybullet.JOINT_FIXED
+    ]
+    states = pybullet.getJointStates(body, indices, physicsClientId=cid) if indices else []
+    joints = tuple((i, float(s[0]), float(s[1])) for i, s in zip(indices, states, strict=True))
+    return BodyState((tuple(pos), tuple(orn)), (tuple(lin), tuple(ang)), joints)
+
+
+def _clone(handle: WorldObject) -> WorldObject:
+    if isinstance(handle, RobotObject):
+        return RobotObject(
+            handle.name, handle.type, -1, handle.spec, description=handle.description
+        )
+    return WorldObject(handle.name, handle.type, -1, handle.spec)
