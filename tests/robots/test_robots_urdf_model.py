@@ -152,3 +152,12 @@ def test_round_trip_keeps_the_model(tiny_package: Path) -> None:
     again = RobotModel.from_string(model.to_urdf())
     assert again.joints == model.joints
     assert again.links == model.links
+
+
+def test_named_materials_give_visual_colours() -> None:
+    xml = """<robot name="r"><material name="Red"><color rgba="1 0 0 1"/></material>
+      <link name="a"><visual><geometry><sphere radius="0.1"/></geometry>
+      <material name="Red"/></visual></link></robot>"""
+    visual = RobotModel.from_string(xml).links["a"].visuals[0]
+    assert (visual.material, visual.rgba) == ("Red", (1.0, 0.0, 0.0, 1.0))
+    assert 'rgba="1.0 0.0 0.0 1.0"' in RobotModel.from_string(xml).to_urdf()

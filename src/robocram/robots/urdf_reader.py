@@ -45,6 +45,7 @@ class _Reader:
     base_dir: Path | None
     resolver: PackageResolver
     missing_meshes: list[str] = field(default_factory=list)
+    colors: dict[str, tuple[float, ...]] = field(default_factory=dict)  # named materials
 
     def fail(self, node: XmlNode, problem: str) -> UrdfError:
         return UrdfError(self.source, problem, node.line)
@@ -141,6 +142,8 @@ class _Reader:
         name = material.attrib.get("name") if material is not None else None
         color = material.find("color") if material is not None else None
         rgba = self.floats(color, "rgba", (0.0,) * 4) if color is not None else None
+        if rgba is None and name is not None:
+            rgba = self.colors.get(name)
         geometry = self.geometry(node, stand_in)
         return Visual(geometry, self.origin(node), node.attrib.get("name"), name, rgba)  # type: ignore[arg-type]
 
@@ -215,6 +218,10 @@ def read_urdf(
     if root.tag != "robot":
         raise UrdfError(source, f"root element is <{root.tag}>, a URDF needs <robot>", root.line)
     reader = _Reader(source, base_dir, resolver)
+    for material in root.findall("material"):
+        color = material.find("color")
+        if color is not None and "name" in material.attrib:
+            reader.colors[material.attrib["name"]] = reader.floats(color, "rgba", (0.0,) * 4)
     links: dict[str, Link] = {}
     joints: dict[str, Joint] = {}
     for node in root.findall("link"):
