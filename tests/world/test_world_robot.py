@@ -1,0 +1,102 @@
+"""Robots in the world: joint limits, mimic joints, names, link frames and attachments."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator
+
+import pytest
+
+from robocram.tf import Pose
+from robocram.world import (
+    ClampedJoint,
+    NotARobotError,
+    RobotObject,
+    UnknownJointError,
+    UnknownLinkError,
+    World,
+)
+
+
+@pytest.fixture(scope="module")
+def world() -> Iterator[World]:
+    with World() as w:
+        w.add_floor()
+        w.add_robot("pr2")
+        yield w
+
+
+@pytest.fixture
+def pr2(world: World) -> Iterator[RobotObject]:
+    with world.stored_state():
+        yield world.robot("pr2")
+
+
+def test_robot_is_indexed_by_name(world: World, pr2: RobotObject) -> None:
+    assert pr2.type == "robot" and pr2.is_static
+    assert pr2.link_index["base_footprint"] == -1
+    assert "r_gripper_tool_frame" in world.link_names(pr2)
+    assert len(world.joint_states(pr2)) == 30  # movable joints of the example-robot-data PR2
+    assert world.collisions(pr2) == []  # standing on the floor is not touching it
+
+
+def test_out_of_range_torso_is_clamped_and_reported(world: World, pr2: RobotObject) -> None:
+    clamped = world.set_joint_states(pr2, {"torso_lift_joint": 1.0, "head_pan_joint": 0.2})
+    assert clamped == [ClampedJoint("torso_lift_joint", 1.0, 0.31, 0.0, 0.31)]
+    states = world.joint_states(pr2)
+    assert states["torso_lift_joint"] == pytest.approx(0.31, abs=1e-9)
+    assert states["head_pan_joint"] == pytest.approx(0.2, abs=1e-9)
+    assert world.joint_limits(pr2, "torso_lift_joint").upper == pytest.approx(0.31)
+
+
+def test_continuous_joints_are_never_clamped(world: World, pr2: RobotObject) -> None:
+    limits = world.joint_limits(pr2, "r_wrist_roll_joint")
+    assert limits.lower == -math.inf and limits.upper == math.inf
+    assert world.set_joint_states(pr2, {"r_wrist_roll_joint": 7.5}) == []
+    assert world.joint_states(pr2)["r_wrist_roll_joint"] == pytest.approx(7.5)
+
+
+def test_gripper_mimic_joints_follow_their_master(world: World, pr2: RobotObject) -> None:
+    world.set_joint_states(pr2, {"l_gripper_l_finger_joint": 0.4})
+    states = world.joint_states(pr2)
+    for follower in ("r_finger", "l_finger_tip", "r_finger_tip"):
+        assert states[f"l_gripper_{follower}_joint"] == pytest.approx(0.4, abs=1e-9)
+    assert states["r_gripper_r_finger_joint"] == pytest.approx(0.0)  # the other hand stays
+
+
+def test_torso_moves_the_camera_link_up(world: World, pr2: RobotObject) -> None:
+    low = world.link_pose(pr2, "wide_stereo_optical_frame").position[2]
+    world.set_joint_states(pr2, {"torso_lift_joint": 0.3})
+    high = world.link_pose(pr2, "wide_stereo_optical_frame").position[2]
+    assert high - low == pytest.approx(0.3, abs=1e-6)
+
+
+def test_unknown_names_raise_with_suggestions(world: World, pr2: RobotObject) -> None:
+    with pytest.raises(UnknownJointError, match="did you mean 'torso_lift_joint'"):
+        world.set_joint_states(pr2, {"torso_lift": 0.1})
+    with pytest.raises(UnknownJointError, match="fixed"):
+        world.set_joint_states(pr2, {"head_plate_frame_joint": 0.1})
+    with pytest.raises(UnknownLinkError, match="did you mean 'r_gripper_tool_frame'"):
+        world.link_pose(pr2, "r_gripper_tool")
+    with pytest.raises(ValueError, match="finite"):
+        world.set_joint_states(pr2, {"torso_lift_joint": math.nan})
+    with pytest.raises(NotARobotError):
+        world.robot("floor")
+
+
+def test_attached_object_follows_joints_base_and_simulation(world: World, pr2: RobotObject) -> None:
+    tool = world.link_pose(pr2, "r_gripper_tool_frame")
+    cup = world.add_item("cup", "cup", tool * Pose((0.02, 0, 0)))
+    world.attach(cup, pr2, "r_gripper_tool_frame")
+    assert world.attachments(pr2) == {"cup": "r_gripper_tool_frame"}
+    assert world.collisions(pr2) == [] and not world.contact(cup, pr2)
+    world.set_joint_states(pr2, {"r_shoulder_pan_joint": -0.8, "torso_lift_joint": 0.2})
+    world.set_pose(pr2, Pose((1.0, 0.5, 0), (0, 0, math.sin(0.3), math.cos(0.3))))
+    world.simulate(0.5)
+    expected = world.link_pose(pr2, "r_gripper_tool_frame") * Pose((0.02, 0, 0))
+    assert world.pose(cup).distance_to(expected) < 1e-6
+    assert world.pose(cup).angle_to(expected) < 1e-6
+    world.detach(cup)
+    world.simulate(0.5)
+    assert world.pose(cup).position[2] < expected.position[2] - 0.05  # now it falls
+    assert world.attachments(pr2) == {}
