@@ -88,7 +88,7 @@ class RetryCounter:
             retry()
 
 
-def with_failure_handling(body: Callable[[], T], handlers: Mapping[type, Handler]) -> T:
+def with_failure_handling(body: Callable[[], T], handlers: Mapping[Any, Handler]) -> T:
     """Run ``body``; on a failure, call the first handler whose type matches (dict order)."""
     _check_handlers(handlers)
     retries = dict.fromkeys(handlers, 0)
@@ -126,7 +126,7 @@ def _decide(handler: Handler, control: FailureControl) -> tuple[str, Any]:
     return "propagate", None
 
 
-def _check_handlers(handlers: Mapping[type, Handler]) -> None:
+def _check_handlers(handlers: Mapping[Any, Handler]) -> None:
     for kind, handler in handlers.items():
         if not (isinstance(kind, type) and issubclass(kind, BaseException)):
             raise TypeError(f"handler key {kind!r} is not an exception type")
@@ -140,7 +140,7 @@ def _check_handlers(handlers: Mapping[type, Handler]) -> None:
 
 
 def failure_handled(
-    handlers: Mapping[type, Handler],
+    handlers: Mapping[Any, Handler],
 ) -> Callable[[Callable[..., T]], Callable[..., T]]:
     """Decorator form: each call of the function runs under ``with_failure_handling``."""
 
