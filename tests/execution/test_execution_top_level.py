@@ -112,10 +112,9 @@ def test_render_shows_statuses_durations_values_and_failures() -> None:
     assert lines[0].startswith("✗ plan failed ")
     assert lines[1].startswith("└── ✗ par failed")
     assert lines[2].startswith("    ├── ✓ ok succeeded") and lines[2].endswith("→ 42")
-    assert (
-        "✗ TorsoGoalNotReached: the torso did not reach its goal (goal=0.5, reached=0.3)"
-        in lines[3]
-    )
+    assert lines[3].startswith("    ├── ✗ lift failed")
+    assert lines[3].endswith(": TorsoGoalNotReached: " + str(failure))
+    assert lines[0].endswith(" ms: TorsoGoalNotReached from par/lift")
     assert lines[4].startswith("    └── ○ wait evaporated")
     assert " ms" in lines[0]
 

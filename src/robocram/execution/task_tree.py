@@ -39,6 +39,7 @@ class TaskSnapshot:
     result: str | None  # repr, shortened
     failure_type: str | None
     failure_message: str | None
+    failure_source: str | None  # path of the task where the failure was first raised
     tags: tuple[str, ...]
     children: tuple[TaskSnapshot, ...]
 
@@ -46,6 +47,11 @@ class TaskSnapshot:
     def of(cls, task: Task) -> TaskSnapshot:
         """Snapshot ``task`` and its descendants."""
         failure = task.failure
+        children = tuple(cls.of(child) for child in list(task.children))
+        source = task.path if failure is not None else None
+        for live, snap in zip(list(task.children), children, strict=False):
+            if failure is not None and live.failure is failure:
+                source = snap.failure_source
         return cls(
             name=task.name,
             path=task.path,
@@ -55,8 +61,9 @@ class TaskSnapshot:
             result=_repr.repr(task.result) if task.status is TaskStatus.SUCCEEDED else None,
             failure_type=type(failure).__name__ if failure is not None else None,
             failure_message=str(failure) if failure is not None else None,
+            failure_source=source,
             tags=tuple(sorted(task.tags)),
-            children=tuple(cls.of(child) for child in list(task.children)),
+            children=children,
         )
 
     @property
@@ -84,7 +91,11 @@ class TaskSnapshot:
             "result": self.result,
             "failure": None
             if self.failure_type is None
-            else {"type": self.failure_type, "message": self.failure_message},
+            else {
+                "type": self.failure_type,
+                "message": self.failure_message,
+                "source": self.failure_source,
+            },
             "tags": list(self.tags),
             "children": [child.to_json() for child in self.children],
         }
@@ -98,8 +109,10 @@ class TaskSnapshot:
             text += " #" + " #".join(self.tags)
         if self.result is not None and self.result != "None":
             text += f" → {self.result}"
-        if self.failure_type is not None:
-            text += f" ✗ {self.failure_type}: {self.failure_message}"
+        if self.failure_source is not None and self.failure_source != self.path:
+            text += f": {self.failure_type} from {self.failure_source[len(self.path) + 1 :]}"
+        elif self.failure_type is not None:
+            text += f": {self.failure_type}: {self.failure_message}"
         return text
 
 
