@@ -31,6 +31,8 @@ from robocram.tf import Pose
 
 ARM, FRAME = "right", "r_gripper_tool_frame"
 POSITION_OK, ORIENTATION_OK = 0.01, 0.05  # [m], [rad]
+HEADER = "{:<28} {:>10} {:>9} {:>9} {:>9} {:>9} {:>11}"
+ROW = "{:<28} {:>10} {:9.3f} {:9.3f} {:9.3f} {:9.3f} {:>11}"
 Solver = Callable[[Pose], Mapping[str, float]]
 
 
@@ -58,9 +60,17 @@ def run(name: str, desc: RobotDescription, poses: list[Pose], solve: Solver) -> 
         inside += all(lo - 1e-9 <= joints[j] <= hi + 1e-9 for j, (lo, hi) in limits.items())  # type: ignore[operator]
     n = len(poses)
     q = statistics.quantiles(times, n=20)
+    mean, median = statistics.fmean(times), statistics.median(times)
     print(
-        f"{name:<28} {100 * ok / n:8.2f} % {statistics.fmean(times):9.3f} {statistics.median(times):9.3f}"
-        f" {q[-1]:9.3f} {max(times):9.3f} {100 * inside / n:9.2f} %"
+        ROW.format(
+            name,
+            f"{100 * ok / n:.2f} %",
+            mean,
+            median,
+            q[-1],
+            max(times),
+            f"{100 * inside / n:.2f} %",
+        )
     )
 
 
@@ -144,15 +154,11 @@ def main(count: int, seed: int) -> None:
     start = dict(zip(solver.variables, solver.start({}), strict=True))
     poses = targets(desc, solver, count, seed)
     print(f"PR2 {ARM} arm, {FRAME}: {count} FK targets (seed {seed}), start = mid-range config")
-    print(
-        f"{'solver':<28} {'success':>10} {'mean ms':>9} {'median':>9} {'p95':>9} {'max':>9} {'in limits':>11}"
-    )
+    print(HEADER.format("solver", "success", "mean ms", "median", "p95", "max", "in limits"))
     run("robocram (pinocchio LM)", desc, poses, ours(desc, start))
     run("pybullet calculateIK", desc, poses, pybullet_ik(desc, start, null_space=False))
     run("pybullet IK, null space", desc, poses, pybullet_ik(desc, start, null_space=True))
-    print(
-        f"{'TRAC-IK (published)':<28} {99.95:8.2f} % {0.38:9.3f} {'-':>9} {'-':>9} {'-':>9} {'-':>11}"
-    )
+    print(HEADER.format("TRAC-IK (published)", "99.95 %", "0.380", "-", "-", "-", "-"))
 
 
 if __name__ == "__main__":
