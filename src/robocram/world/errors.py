@@ -73,12 +73,18 @@ class UnknownItemError(WorldError):
 class NoCameraError(WorldError):
     """A robot without a camera was asked what it sees."""
 
-    def __init__(self, robot: str) -> None:
+    def __init__(self, robot: str, camera: str | None = None, known: Iterable[str] = ()) -> None:
         self.robot = robot
-        super().__init__(
-            f"robot {robot!r} has no camera in its description; pass camera=Camera(...) "
-            "or use World.visible_from(camera, obj)"
-        )
+        self.camera = camera
+        self.known = tuple(sorted(known))
+        if camera is not None and self.known:
+            msg = f"robot {robot!r} has no camera {camera!r}{did_you_mean(camera, self.known)}"
+        else:
+            msg = (
+                f"robot {robot!r} has no camera in its description; "
+                "use World.visible_from(Camera(pose, ...), obj) instead"
+            )
+        super().__init__(msg)
 
 
 class NotARobotError(WorldError):

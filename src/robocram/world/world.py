@@ -217,7 +217,7 @@ class World(WorldCore):
         cams = handle.description.cameras
         chosen = [c for c in cams if camera is None or c.name == camera]
         if not chosen:
-            raise NoCameraError(handle.name)
+            raise NoCameraError(handle.name, camera, [c.name for c in cams])
         c = chosen[0]
         return Camera(self.link_pose(handle, c.frame), c.horizontal_fov, c.vertical_fov)
 
