@@ -83,5 +83,5 @@ def test_robot_camera_sees_through_its_description() -> None:
         assert [o.name for o in world.occluding_objects(pr2, "shelf")] == ["screen"]
         world.remove("screen")
         assert world.visible(pr2, "shelf") and world.visible(pr2, "shelf", method="render")
-        with pytest.raises(NoCameraError, match="no camera .thermal.; did you mean"):
+        with pytest.raises(NoCameraError, match="no camera 'thermal'; known: 'wide_stereo'"):
             world.camera(pr2, camera="thermal")
