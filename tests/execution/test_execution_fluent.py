@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import gc
 import threading
 import time
 from typing import TypeVar
@@ -165,3 +166,25 @@ def test_concurrent_setters_leave_derived_fluents_consistent() -> None:
     for thread in threads:
         thread.join()
     assert total.get() == 800
+
+
+def test_pulse_reaches_derived_fluents_and_set_during_pulse_is_kept() -> None:
+    level = Fluent(3, name="level")
+    high = level > 2
+    start = high.generation
+    level.pulse()
+    assert high.generation == start + 1 and high.get() is True
+    level.set(1)
+    level.pulse()
+    assert (level.get(), high.get()) == (1, False)
+
+
+def test_collected_derived_fluents_are_dropped() -> None:
+    source = Fluent(0, name="src")
+    for _ in range(100):
+        source < 1  # noqa: B015 - built and dropped on purpose
+    gc.collect()
+    keep = source + 1
+    assert len(source._dependents) == 1
+    source.set(4)
+    assert keep.get() == 5

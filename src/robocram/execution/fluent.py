@@ -82,7 +82,13 @@ class Fluent:
 
     def pulse(self) -> None:
         """Wake waiters and ``whenever`` loops without changing the value."""
-        self._assign(self.get() if self._compute is None else self._compute(), pulse=True)
+        if self._compute is not None:
+            self._recompute(pulse=True)
+            return
+        with self._cond:
+            self._generation += 1
+            self._cond.notify_all()
+        self._notify_dependents(pulse=True)
 
     def _assign(self, value: Any, pulse: bool) -> None:
         with self._cond:
@@ -92,10 +98,13 @@ class Fluent:
                 self._generation += 1
                 self._cond.notify_all()
         if changed or pulse:
-            for ref in list(self._dependents):
-                dependent = ref()
-                if dependent is not None:
-                    dependent._recompute(pulse and not changed)
+            self._notify_dependents(pulse and not changed)
+
+    def _notify_dependents(self, pulse: bool) -> None:
+        for ref in list(self._dependents):
+            dependent = ref()
+            if dependent is not None:
+                dependent._recompute(pulse)
 
     def _recompute(self, pulse: bool) -> None:
         if self._compute is None:
@@ -196,8 +205,9 @@ def derive(fn: Callable[..., Any], *sources: Any, name: str | None = None) -> Fl
     derived._compute = compute
     for source in sources:
         if isinstance(source, Fluent):
-            with source._cond:
-                source._dependents.append(weakref.ref(derived))
+            with source._cond:  # drop fluents derived earlier and since collected
+                live = [ref for ref in source._dependents if ref() is not None]
+                source._dependents = [*live, weakref.ref(derived)]
     derived._recompute(False)  # catch a source change between compute() and registration
     return derived
 
