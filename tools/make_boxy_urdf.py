@@ -44,7 +44,9 @@ def base_and_torso(b: UrdfBuilder) -> None:
     """Omni base, torso column and the prismatic triangle that carries both arms."""
     b.link("base_footprint")
     b.joint("base_footprint_joint", "fixed", "base_footprint", "base_link", (0.36, 0.25, 0.16))
-    b.link("base_link", (box(0.885, 0.557, 0.54, (-0.252, -0.228, 0.14)),), mass=70.0, color="grey")
+    b.link(
+        "base_link", (box(0.885, 0.557, 0.57, (-0.252, -0.228, 0.125)),), mass=70.0, color="grey"
+    )
     b.joint("torso_joint", "fixed", "base_link", "torso_base_link", (0.0, 0.065, 0.41))
     column = box(0.12, 0.5, 1.08, (0.0, -0.285, 0.54))
     b.link("torso_base_link", (column,), mass=3.83, color="white")
