@@ -31,7 +31,7 @@ class ProcessModuleFailure(PlanFailure):
 
     fields = ("module", "command", "error")
     summary = "the process module failed"
-    hint = "see the cause below; a bug in a low-level function is not recoverable by retrying"
+    hint = "a wrapped Python error (the cause) is a bug in the module, not fixed by retrying"
 
 
 class NoMatchingProcessModule(PlanFailure):
