@@ -100,3 +100,17 @@ def test_attached_object_follows_joints_base_and_simulation(world: World, pr2: R
     world.simulate(0.5)
     assert world.pose(cup).position[2] < expected.position[2] - 0.05  # now it falls
     assert world.attachments(pr2) == {}
+
+
+@pytest.mark.parametrize("name", ["hsrb", "boxy", "quadrotor"])
+def test_other_builtin_robots_spawn_and_hold_still(name: str) -> None:
+    with World() as world:
+        world.add_floor()
+        robot = world.add_robot(name, Pose((0, 0, 1.0 if name == "quadrotor" else 0.0)))
+        before = world.joint_states(robot)
+        world.simulate(0.2)
+        assert world.joint_states(robot) == pytest.approx(before, abs=1e-9)
+        assert world.pose(robot).position == pytest.approx((0, 0, world.pose(robot).position[2]))
+        assert not world.in_collision(robot)  # standing on the floor does not count
+        for cam in robot.description.cameras:
+            assert world.camera(robot, cam.name).pose.position[2] > 0.1

@@ -140,7 +140,7 @@ class World(WorldCore):
         spec = UrdfSpec(robot_urdf_file(desc), fixed_base=True)
         handle = RobotObject(name or desc.name, "robot", -1, spec, description=desc)
         self._insert(handle, pose)
-        held = self._holds[handle.name]
+        held = self._holds.setdefault(handle.name, {})
         for joint in self.joint_states(handle):
             held[handle.joint_index[joint]] = 0.0
         if self._kb is not None:
@@ -184,9 +184,16 @@ class World(WorldCore):
         skip = [self.object(o) for o in ignore]
         return contacts.collisions(self, self.object(obj), skip, distance)
 
-    def in_collision(self, obj: ObjectRef, ignore: Iterable[ObjectRef] = ()) -> bool:
-        """Whether ``obj`` touches anything but ``ignore`` (the floor counts; ignore it)."""
-        return bool(self.collisions(obj, ignore))
+    def in_collision(
+        self, obj: ObjectRef, ignore: Iterable[ObjectRef] = (), ignore_floor: bool = True
+    ) -> bool:
+        """Whether ``obj`` touches anything but ``ignore`` and what it carries.
+
+        Objects of type ``floor`` are ignored unless ``ignore_floor`` is False: robot bases
+        (HSR, Boxy) stand on it.
+        """
+        skip = list(ignore) + (self.objects(type="floor") if ignore_floor else [])
+        return bool(self.collisions(obj, skip))
 
     def contact(self, a: ObjectRef, b: ObjectRef) -> bool:
         """Whether ``a`` and ``b`` touch (within 2 mm)."""

@@ -228,7 +228,7 @@ class WorldCore:
         for name, value in applied.items():
             index = handle.joint_index[name]
             pybullet.resetJointState(handle.body_id, index, value, 0.0, physicsClientId=cid)
-            self._holds[handle.name][index] = value
+            self._holds.setdefault(handle.name, {})[index] = value
         self._follow(handle.name)
         return clamped
 
