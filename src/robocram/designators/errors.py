@@ -1,0 +1,49 @@
+"""Errors of the designators layer: one root, :class:`DesignatorError`, with data-carrying kinds.
+
+The execution layer turns a :class:`DesignatorError` met during PERFORM into its
+``DesignatorReferenceFailure``; here the errors only say which designator failed and why.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from typing import Any
+
+
+class DesignatorError(Exception):
+    """Root of every error raised by :mod:`robocram.designators`.
+
+    Attributes:
+        designator: the culprit designator (or None when the error is about a property).
+    """
+
+    def __init__(self, message: str, designator: Any = None) -> None:
+        super().__init__(message)
+        self.designator = designator
+
+
+class DesignatorPropertyError(DesignatorError, ValueError):
+    """A designator was written with a malformed property (bad key, missing type...).
+
+    Attributes:
+        key: the culprit property key.
+    """
+
+    def __init__(self, message: str, key: str, designator: Any = None) -> None:
+        super().__init__(message, designator)
+        self.key = key
+
+
+class GroundingError(DesignatorError):
+    """A designator has no (more) solution: no grounding rule, no pose, no perceived data.
+
+    Attributes:
+        grounded_types: the ``type`` values that do have grounding rules for this kind,
+            when the knowledge base could tell (empty otherwise).
+    """
+
+    def __init__(
+        self, message: str, designator: Any = None, grounded_types: Iterable[str] = ()
+    ) -> None:
+        super().__init__(message, designator)
+        self.grounded_types = tuple(sorted(set(grounded_types)))

@@ -1,0 +1,106 @@
+"""Motion and action designators: grounded by Prolog rules in a knowledge base.
+
+``motion_grounding(Desig, Command)`` turns a motion designator into a command term such
+as ``move_base(Pose)``; ``action_grounding(Desig, Plan)`` turns an action designator into
+a plan. The knowledge base is the one given to ``reference(kb=...)`` or else the current
+one (``robocram.logic.current_kb()``, bound by an environment). Solutions are the lazy
+answers of that query, one per grounding.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import Any, ClassVar
+
+from robocram.designators.designator import Designator, Kind
+from robocram.designators.errors import DesignatorPropertyError, GroundingError
+from robocram.logic import KnowledgeBase, PrologError, current_kb
+
+
+def bound_kb() -> KnowledgeBase | None:
+    """Return the current knowledge base, or None when no ``using_kb`` block is active."""
+    try:
+        return current_kb()
+    except PrologError:
+        return None
+
+
+class GroundedDesignator(Designator):
+    """A designator whose solutions are the answers of ``<predicate>(Desig, Solution)``."""
+
+    grounding_predicate: ClassVar[str]
+
+    def _check(self) -> None:
+        if not isinstance(self.type, str):
+            raise DesignatorPropertyError(
+                f"{self.description} needs a string 'type' property, got {self.type!r}; "
+                f'write e.g. a.{self.kind.value}(type="going", ...)',
+                key="type",
+                designator=self,
+            )
+
+    def _resolution_context(self, kb: Any) -> object:
+        if kb is not None:
+            if not isinstance(kb, KnowledgeBase):
+                raise TypeError(f"kb must be a robocram.logic.KnowledgeBase, got {kb!r}")
+            return kb
+        bound = bound_kb()
+        if bound is None:
+            raise GroundingError(
+                f"cannot ground {self.description}: no knowledge base given and none is "
+                "current; pass reference(kb=...) or run inside an environment (with env: ...)",
+                self,
+            )
+        return bound
+
+    def _solutions(self, context: Any) -> Iterator[Any]:
+        kb: KnowledgeBase = context
+        for answer in kb.query(f"{self.grounding_predicate}(D, G)", D=self):
+            yield answer["G"]
+
+    def _no_solution_error(self, context: Any) -> GroundingError:
+        known = grounded_types(context, self.kind)
+        if self.type in known:
+            why = (
+                f"the rules for type {self.type!r} did not match its other properties "
+                f"{[k for k, _ in self.properties if k != 'type']}"
+            )
+        else:
+            why = f"no {self.grounding_predicate} rule knows type {self.type!r}"
+        return GroundingError(
+            f"cannot ground {self.description}: {why}; types with {self.grounding_predicate} "
+            f"rules: {list(known) or 'none (install a robot or environment)'}",
+            self,
+            grounded_types=known,
+        )
+
+
+class MotionDesignator(GroundedDesignator):
+    """A low-level motion, e.g. ``(a motion (type looking) (target ...))``; grounds to a command."""
+
+    kind = Kind.MOTION
+    grounding_predicate = "motion_grounding"
+
+
+class ActionDesignator(GroundedDesignator):
+    """A high-level action, e.g. ``(an action (type drawing) (shape house))``; grounds to a plan."""
+
+    kind = Kind.ACTION
+    grounding_predicate = "action_grounding"
+
+
+def grounded_types(kb: KnowledgeBase, kind: Kind) -> tuple[str, ...]:
+    """Return the ``type`` values that ``<kind>_grounding/2`` rules in ``kb`` test for.
+
+    Found by running the grounding query on a probe designator whose ``desig_prop`` records
+    every type a rule asks about and then fails, so no rule needs to list its types twice.
+    """
+    cls = {Kind.MOTION: MotionDesignator, Kind.ACTION: ActionDesignator}.get(kind)
+    if cls is None:
+        return ()
+    probe = cls(type="grounded-types-probe")
+    seen: list[str] = []
+    probe.__dict__["_type_probe"] = seen
+    for _ in kb.query(f"{cls.grounding_predicate}(D, G)", D=probe):
+        pass
+    return tuple(sorted(set(seen)))
