@@ -69,7 +69,7 @@ def test_two_arms_and_a_neck_arm_with_the_camera(boxy: RobotDescription) -> None
     for side in ("left", "right"):
         arm = boxy.arms[side]
         assert arm.joints == tuple(f"{side}_arm_{i}_joint" for i in range(7))
-        assert arm.tool_frame == f"{side}_gripper_tool_frame"
+        assert arm.tool_frame == f"{side}_standard_gripper_tool_frame"
         assert arm.gripper_joints == (f"{side}_gripper_joint",)
     assert len(boxy.arms["neck"].joints) == 6
     assert boxy.torso_joint == "triangle_base_joint" and boxy.base_frame == "base_footprint"
@@ -206,3 +206,11 @@ def test_pybullet_and_pinocchio_agree(sim: Sim, boxy: RobotDescription) -> None:
     ]
     assert min(masses) > 0.0
     assert set(sim.links) | {"base_footprint"} == set(boxy.model.links)
+
+
+@pytest.mark.parametrize("side", ["left", "right"])
+def test_standard_tool_frame_has_x_approach_and_y_opening(sim: Sim, side: str) -> None:
+    _, boxy_tool = sim.frame(f"{side}_gripper_tool_frame")
+    _, standard = sim.frame(f"{side}_standard_gripper_tool_frame")
+    assert np.allclose(standard[:, 0], boxy_tool[:, 2], atol=1e-6)  # approach
+    assert np.allclose(standard[:, 1], boxy_tool[:, 0], atol=1e-6)  # opening

@@ -99,11 +99,23 @@ def from_euler(roll: float, pitch: float, yaw: float) -> Quaternion:
 
 
 def to_euler(q: Quaternion) -> tuple[float, float, float]:
-    """Roll, pitch, yaw [rad] of a unit quaternion (inverse of :func:`from_euler`)."""
-    x, y, z, w = q
-    roll = math.atan2(2 * (w * x + y * z), 1 - 2 * (x * x + y * y))
-    pitch = math.asin(max(-1.0, min(1.0, 2 * (w * y - z * x))))
-    yaw = math.atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z))
+    """Roll, pitch, yaw [rad] of a unit quaternion (inverse of :func:`from_euler`).
+
+    At pitch = +-pi/2 only roll - yaw (or roll + yaw) is defined; roll is then set to 0,
+    so the angles still rebuild the same rotation.
+
+    >>> [round(a, 6) for a in to_euler(from_euler(0.3, -1.5707963267948966, 0.2))]
+    [0.0, -1.570796, 0.5]
+    """
+    m = to_matrix(q)
+    cos_pitch = math.hypot(float(m[0, 0]), float(m[1, 0]))
+    pitch = math.atan2(-float(m[2, 0]), cos_pitch)
+    if cos_pitch > 1e-9:
+        roll = math.atan2(float(m[2, 1]), float(m[2, 2]))
+        yaw = math.atan2(float(m[1, 0]), float(m[0, 0]))
+    else:
+        roll = 0.0
+        yaw = math.atan2(-float(m[0, 1]), float(m[1, 1]))
     return (roll, pitch, yaw)
 
 

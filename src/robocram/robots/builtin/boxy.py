@@ -6,8 +6,10 @@ ends in a WSG-50 gripper whose master joint ``<side>_gripper_joint`` is the fing
 [m]; the other finger joint mimics it. The camera is a Kinect2 on a UR3 neck, described as a
 third arm ``neck`` (``neck_arm``), so looking is reaching with the camera's optical frame.
 
-Tool frames are the robot's own ``<side>_gripper_tool_frame``: z along the approach
-direction, x along which the fingers open (the PR2 convention is x approach, y opening).
+The robot's own ``<side>_gripper_tool_frame`` has z along the approach direction and x along
+which the fingers open. Plans are robot-independent only if every tool frame follows one
+convention (PR2's: x approach, y opening, CRAM's "standard gripper"), so the arms' tool frame
+is ``<side>_standard_gripper_tool_frame``, added in code on top of the real one.
 """
 
 from __future__ import annotations
@@ -15,7 +17,13 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
-from robocram.robots.description import ArmDescription, CameraDescription, RobotDescription
+from robocram.robots.description import (
+    ArmDescription,
+    CameraDescription,
+    FrameSpec,
+    RobotDescription,
+)
+from robocram.tf import Pose
 
 URDF = Path(__file__).resolve().parents[1] / "data" / "boxy.urdf"
 CAMERA_FRAME = "head_mount_kinect2_rgb_optical_frame"
@@ -43,6 +51,17 @@ _KINECT2_VFOV = math.radians(53.8)  # [rad]
 # near the workspace (x = 0.62 m); the neck is fixed to the base, the torso does not move it.
 _CAMERA_LOWEST = 1.45  # [m]
 _CAMERA_HIGHEST = 2.0  # [m]
+# Axes of the standard gripper frame in Boxy's tool frame: x' = z (approach), y' = x (opening).
+_STANDARD_FROM_BOXY_TOOL = Pose((0.0, 0.0, 0.0), (0.5, 0.5, 0.5, -0.5))
+
+
+def standard_tool_frame(side: str) -> FrameSpec:
+    """The PR2-convention tool frame of one arm, on top of Boxy's own tool frame."""
+    return FrameSpec(
+        name=f"{side}_standard_gripper_tool_frame",
+        parent=f"{side}_gripper_tool_frame",
+        pose=_STANDARD_FROM_BOXY_TOOL,
+    )
 
 
 def _arm(side: str) -> ArmDescription:
@@ -55,7 +74,7 @@ def _arm(side: str) -> ArmDescription:
     return ArmDescription(
         name=side,
         end_effector_link=f"{side}_arm_7_link",
-        tool_frame=f"{gripper}_tool_frame",
+        tool_frame=f"{side}_standard_gripper_tool_frame",
         base_link=f"calib_{side}_arm_base_link",
         joints=joints,
         gripper_joints=(f"{gripper}_joint",),
@@ -97,5 +116,6 @@ def description() -> RobotDescription:
             ),
         ),
         neck_arm="neck",
+        extra_frames=(standard_tool_frame("left"), standard_tool_frame("right")),
         neck_parking=dict(zip(_NECK_JOINTS, _NECK_PARKING, strict=True)),
     )
