@@ -23,7 +23,7 @@ Solutions = Iterator[tuple[Any, ...] | None]
 def world_knowledge_base(world: World) -> KnowledgeBase:
     """A new knowledge base with the predicates of ``world``."""
     kb = KnowledgeBase()
-    for install in (_install_objects, _install_robots, _install_reasoning):
+    for install in (_install_objects, _install_robots, _install_attachments, _install_reasoning):
         install(kb, world)
     return kb
 
@@ -127,6 +127,8 @@ def _install_robots(kb: KnowledgeBase, world: World) -> None:
             links = world.link_names(name) if isinstance(link, Var) else [link]
             yield from ((world, name, k, world.link_pose(name, k)) for k in links)
 
+
+def _install_attachments(kb: KnowledgeBase, world: World) -> None:
     @kb.predicate("attached", 4)
     def attached(w: Any, rob: Any, link: Any, obj: Any) -> Solutions:
         if not _ours(world, w):
