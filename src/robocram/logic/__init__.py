@@ -1,0 +1,37 @@
+"""An embedded Prolog that lives with Python objects: knowledge bases, fact groups, queries."""
+
+from robocram.logic.context import current_kb, using_kb
+from robocram.logic.errors import (
+    FactGroupError,
+    PrologDomainError,
+    PrologError,
+    PrologEvaluationError,
+    PrologExistenceError,
+    PrologInstantiationError,
+    PrologPermissionError,
+    PrologSyntaxError,
+    PrologThrow,
+    PrologTypeError,
+    UnknownPredicateError,
+)
+from robocram.logic.knowledge_base import KnowledgeBase
+from robocram.logic.terms import Term, Var
+
+__all__ = [
+    "FactGroupError",
+    "KnowledgeBase",
+    "PrologDomainError",
+    "PrologError",
+    "PrologEvaluationError",
+    "PrologExistenceError",
+    "PrologInstantiationError",
+    "PrologPermissionError",
+    "PrologSyntaxError",
+    "PrologThrow",
+    "PrologTypeError",
+    "Term",
+    "UnknownPredicateError",
+    "Var",
+    "current_kb",
+    "using_kb",
+]

@@ -1,0 +1,152 @@
+"""Database built-ins: assert/asserta/assertz, retract, retractall, clause, dynamic, op."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import TYPE_CHECKING, Any
+
+from robocram.logic.builtin_terms import need_int
+from robocram.logic.errors import PrologInstantiationError, PrologPermissionError, PrologTypeError
+from robocram.logic.loader import parse_indicator
+from robocram.logic.registry import det, nondet
+from robocram.logic.terms import Term, Var, deref
+from robocram.logic.unify import copy_resolved
+
+if TYPE_CHECKING:
+    from robocram.logic.machine import Machine
+    from robocram.logic.predicate import Pred
+
+__all__: list[str] = []
+
+Args = tuple[Any, ...]
+
+
+@det("assertz", 1)
+@det("assert", 1)
+def _assertz(m: Machine, a: Args) -> bool:
+    m.kb.assert_clause(copy_resolved(a[0]))
+    return True
+
+
+@det("asserta", 1)
+def _asserta(m: Machine, a: Args) -> bool:
+    m.kb.assert_clause(copy_resolved(a[0]), front=True)
+    return True
+
+
+def _split(clause: Any) -> tuple[Any, Any]:
+    clause = deref(clause)
+    if type(clause) is Term and clause[0] == ":-" and len(clause[1]) == 2:
+        return deref(clause[1][0]), clause[1][1]
+    return clause, "true"
+
+
+def _pred_of(m: Machine, head: Any, what: str) -> Pred | None:
+    if type(head) is Var:
+        raise PrologInstantiationError(f"{what}: the clause head is unbound")
+    if type(head) is str:
+        key = (head, 0)
+    elif type(head) is Term:
+        key = (head[0], len(head[1]))
+    else:
+        raise PrologTypeError("callable", head, f"{what}: {head!r} is not a callable head")
+    pred = m.kb._preds.get(key)
+    if pred is not None and (pred.system or pred.kind != 0):
+        raise PrologPermissionError(
+            "access", "private_procedure", Term("/", key), f"{what}: {pred.indicator} is a built-in"
+        )
+    return pred
+
+
+def _stored(clause: Any) -> tuple[Any, Any]:
+    return _split(copy_resolved(clause.source))
+
+
+@nondet("retract", 1)
+def _retract(m: Machine, a: Args) -> Iterator[bool]:
+    head, body = _split(a[0])
+    pred = _pred_of(m, head, "retract/1")
+    if pred is None:
+        return
+    for clause in list(pred.clauses):
+        h, b = _stored(clause)
+        mark = len(m.trail)
+        if m.unify(head, h) and m.unify(body, b):
+            with m.kb._lock:
+                if clause in pred.clauses:
+                    if not pred.dynamic:
+                        raise PrologPermissionError(
+                            "modify", "static_procedure", Term("/", (pred.name, pred.arity)),
+                            f"retract/1: {pred.indicator} is static; declare it dynamic",
+                        )
+                    pred.set_clauses([c for c in pred.clauses if c is not clause])
+                    yield True
+                    continue
+        m.undo_to(mark)
+
+
+@det("retractall", 1)
+def _retractall(m: Machine, a: Args) -> bool:
+    head = deref(a[0])
+    pred = _pred_of(m, head, "retractall/1")
+    if pred is None:
+        m.kb.declare_dynamic((head, 0) if type(head) is str else (head[0], len(head[1])))
+        return True
+    keep = []
+    for clause in pred.clauses:
+        mark = len(m.trail)
+        if not m.unify(head, _stored(clause)[0]):
+            keep.append(clause)
+        m.undo_to(mark)
+    with m.kb._lock:
+        pred.set_clauses(keep)
+    return True
+
+
+@nondet("clause", 2)
+def _clause(m: Machine, a: Args) -> Iterator[bool]:
+    head = deref(a[0])
+    pred = _pred_of(m, head, "clause/2")
+    if pred is None:
+        return
+    for clause in list(pred.clauses):
+        h, b = _stored(clause)
+        mark = len(m.trail)
+        if m.unify(head, h) and m.unify(a[1], b):
+            yield True
+        m.undo_to(mark)
+
+
+@det("dynamic", 1)
+def _dynamic(m: Machine, a: Args) -> bool:
+    spec = deref(a[0])
+    while type(spec) is Term and spec[0] in (",", ".") and len(spec[1]) == 2:
+        m.kb.declare_dynamic(parse_indicator(spec[1][0]))
+        spec = deref(spec[1][1])
+    if spec != "[]":
+        m.kb.declare_dynamic(parse_indicator(spec))
+    return True
+
+
+@det("op", 3)
+def _op(m: Machine, a: Args) -> bool:
+    priority = need_int(a[0], "op/3")
+    kind = deref(a[1])
+    names = deref(a[2])
+    todo = [names] if type(names) is str else []
+    while type(names) is Term and names[0] == ".":
+        todo.append(deref(names[1][0]))
+        names = deref(names[1][1])
+    for name in todo:
+        try:
+            m.kb._ops.add(priority, kind, name)
+        except ValueError as err:
+            raise PrologTypeError("operator_specifier", kind, f"op/3: {err}") from err
+    return True
+
+
+@det("current_op", 3)
+def _current_op(m: Machine, a: Args) -> bool:
+    name = deref(a[2])
+    spec = m.kb._ops.infix.get(name) or m.kb._ops.prefix.get(name)
+    return spec is not None and m.unify(a[0], spec[0]) and m.unify(a[1], spec[1])

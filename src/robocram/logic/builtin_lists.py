@@ -1,0 +1,144 @@
+"""List built-ins written in Python for speed: length, sorting, sums and extremes."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import TYPE_CHECKING, Any
+
+from robocram.logic.arith import evaluate
+from robocram.logic.builtin_terms import list_items, need_int
+from robocram.logic.errors import PrologDomainError, PrologInstantiationError, PrologTypeError
+from robocram.logic.registry import det, nondet
+from robocram.logic.terms import NIL, Term, Var, deref, make_list
+from robocram.logic.unify import order_key
+
+if TYPE_CHECKING:
+    from robocram.logic.machine import Machine
+
+__all__: list[str] = []
+
+Args = tuple[Any, ...]
+
+
+@nondet("length", 2)
+def _length(m: Machine, a: Args) -> Iterator[bool]:
+    n = 0
+    t = deref(a[0])
+    while type(t) is Term and t[0] == "." and len(t[1]) == 2:
+        n += 1
+        t = deref(t[1][1])
+    if type(t) is not Var:
+        if t != NIL or type(t) is not str:
+            raise PrologTypeError("list", t, f"length/2: expected a list, got {t!r}")
+        if m.unify(a[1], n):
+            yield True
+        return
+    want = deref(a[1])
+    if type(want) is not Var:
+        k = need_int(want, "length/2")
+        if k < 0:
+            raise PrologDomainError("not_less_than_zero", k, f"length/2: length {k} is negative")
+        if k >= n and m.unify(t, make_list([Var() for _ in range(k - n)])):
+            yield True
+        return
+    extra = 0
+    while True:
+        mark = len(m.trail)
+        if m.unify(t, make_list([Var() for _ in range(extra)])) and m.unify(want, n + extra):
+            yield True
+        m.undo_to(mark)
+        extra += 1
+
+
+@det("msort", 2)
+def _msort(m: Machine, a: Args) -> bool:
+    return m.unify(a[1], make_list(sorted(list_items(a[0], "msort/2"), key=order_key)))
+
+
+@det("sort", 2)
+def _sort(m: Machine, a: Args) -> bool:
+    return m.unify(a[1], make_list(_dedup(sorted(list_items(a[0], "sort/2"), key=order_key))))
+
+
+def _dedup(items: list[Any]) -> list[Any]:
+    out: list[Any] = []
+    last: Any = None
+    for item in items:
+        key = order_key(item)
+        if not out or key != last:
+            out.append(item)
+            last = key
+    return out
+
+
+@det("sort", 4)
+def _sort4(m: Machine, a: Args) -> bool:
+    key_index = need_int(a[0], "sort/4")
+    order = deref(a[1])
+    if order not in ("@<", "@>", "@=<", "@>="):
+        raise PrologDomainError("order", order, f"sort/4: order {order!r} is not @<, @>, @=< or @>=")
+    items = list_items(a[2], "sort/4")
+
+    def key(item: Any) -> Any:
+        if key_index == 0:
+            return order_key(item)
+        t = deref(item)
+        if type(t) is not Term or len(t[1]) < key_index:
+            raise PrologTypeError("compound", t, f"sort/4: {t!r} has no argument {key_index}")
+        return order_key(t[1][key_index - 1])
+
+    ordered = sorted(items, key=key, reverse=order in ("@>", "@>="))
+    if order in ("@<", "@>"):
+        unique: list[Any] = []
+        for item in ordered:
+            if not unique or key(unique[-1]) != key(item):
+                unique.append(item)
+        ordered = unique
+    return m.unify(a[3], make_list(ordered))
+
+
+@det("keysort", 2)
+def _keysort(m: Machine, a: Args) -> bool:
+    items = list_items(a[0], "keysort/2")
+    for item in items:
+        t = deref(item)
+        if type(t) is Var:
+            raise PrologInstantiationError("keysort/2: an element is unbound; expected Key-Value")
+        if type(t) is not Term or t[0] != "-" or len(t[1]) != 2:
+            raise PrologTypeError("pair", t, f"keysort/2: {t!r} is not a Key-Value pair")
+    return m.unify(a[1], make_list(sorted(items, key=lambda p: order_key(deref(p)[1][0]))))
+
+
+@det("sum_list", 2)
+def _sum_list(m: Machine, a: Args) -> bool:
+    return m.unify(a[1], sum((evaluate(x) for x in list_items(a[0], "sum_list/2")), 0))
+
+
+def _extreme(name: str, pick: Any) -> None:
+    def run(m: Machine, a: Args) -> bool:
+        values = [evaluate(x) for x in list_items(a[0], f"{name}/2")]
+        return bool(values) and m.unify(a[1], pick(values))
+
+    det(name, 2)(run)
+
+
+_extreme("max_list", max)
+_extreme("min_list", min)
+
+
+@det("numlist", 3)
+def _numlist(m: Machine, a: Args) -> bool:
+    low, high = need_int(a[0], "numlist/3"), need_int(a[1], "numlist/3")
+    return low <= high and m.unify(a[2], make_list(range(low, high + 1)))
+
+
+@det("max_member", 2)
+def _max_member(m: Machine, a: Args) -> bool:
+    items = list_items(a[1], "max_member/2")
+    return bool(items) and m.unify(a[0], max(items, key=order_key))
+
+
+@det("min_member", 2)
+def _min_member(m: Machine, a: Args) -> bool:
+    items = list_items(a[1], "min_member/2")
+    return bool(items) and m.unify(a[0], min(items, key=order_key))

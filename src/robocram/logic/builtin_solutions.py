@@ -1,0 +1,154 @@
+"""All-solutions built-ins: findall, bagof and setof (with `^`), aggregate_all."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import TYPE_CHECKING, Any
+
+from robocram.logic.arith import evaluate
+from robocram.logic.errors import PrologDomainError, PrologInstantiationError
+from robocram.logic.registry import det, nondet
+from robocram.logic.terms import Term, Var, deref, make_list
+from robocram.logic.unify import copy_resolved, order_key, variant_key
+
+if TYPE_CHECKING:
+    from robocram.logic.machine import Machine
+
+__all__ = ["term_variables"]
+
+Args = tuple[Any, ...]
+
+
+def term_variables(t: Any, seen: dict[Var, None] | None = None) -> list[Var]:
+    """Return the unbound variables of a term in depth-first, left-to-right order."""
+    found: dict[Var, None] = {} if seen is None else seen
+    stack = [t]
+    while stack:
+        t = deref(stack.pop())
+        if type(t) is Var:
+            found.setdefault(t, None)
+        elif type(t) is Term:
+            stack.extend(reversed(t[1]))
+    return list(found)
+
+
+@det("term_variables", 2)
+def _term_variables(m: Machine, a: Args) -> bool:
+    return m.unify(a[1], make_list(term_variables(a[0])))
+
+
+def collect(m: Machine, template: Any, goal: Any) -> list[Any]:
+    """Copy `template` for every solution of `goal`, leaving no bindings behind."""
+    mark = len(m.trail)
+    try:
+        return [copy_resolved(template) for _ in m.solve(goal, sub=True)]
+    finally:
+        m.undo_to(mark)
+
+
+@det("findall", 3)
+def _findall(m: Machine, a: Args) -> bool:
+    return m.unify(a[2], make_list(collect(m, a[0], a[1])))
+
+
+@det("findall", 4)
+def _findall4(m: Machine, a: Args) -> bool:
+    return m.unify(a[2], make_list(collect(m, a[0], a[1]), a[3]))
+
+
+def _strip_carets(goal: Any) -> tuple[Any, list[Any]]:
+    bound: list[Any] = []
+    goal = deref(goal)
+    while type(goal) is Term and goal[0] == "^" and len(goal[1]) == 2:
+        bound.append(goal[1][0])
+        goal = deref(goal[1][1])
+    return goal, bound
+
+
+def _grouped(m: Machine, a: Args, to_set: bool) -> Iterator[bool]:
+    goal, bound = _strip_carets(a[1])
+    if type(goal) is Var:
+        raise PrologInstantiationError("bagof/setof: the goal is unbound")
+    excluded: dict[Var, None] = {}
+    term_variables(a[0], excluded)
+    for b in bound:
+        term_variables(b, excluded)
+    witness = make_list([v for v in term_variables(goal) if v not in excluded])
+    pairs = collect(m, Term("-", (witness, a[0])), goal)
+    if not pairs:
+        return
+    groups: dict[Any, tuple[Any, list[Any]]] = {}
+    for pair in pairs:
+        w, t = pair[1]
+        key = variant_key(w)
+        if key not in groups:
+            groups[key] = (w, [])
+        groups[key][1].append(t)
+    entries = list(groups.values())
+    if len(entries) > 1:
+        entries.sort(key=lambda e: order_key(e[0]))
+    for w, items in entries:
+        if to_set:
+            items = _sorted_unique(items)
+        mark = len(m.trail)
+        if m.unify(witness, w) and m.unify(a[2], make_list(items)):
+            yield True
+        m.undo_to(mark)
+
+
+def _sorted_unique(items: list[Any]) -> list[Any]:
+    out: list[Any] = []
+    keys: list[Any] = []
+    for item in sorted(items, key=order_key):
+        key = order_key(item)
+        if not keys or keys[-1] != key:
+            out.append(item)
+            keys.append(key)
+    return out
+
+
+@nondet("bagof", 3)
+def _bagof(m: Machine, a: Args) -> Iterator[bool]:
+    return _grouped(m, a, False)
+
+
+@nondet("setof", 3)
+def _setof(m: Machine, a: Args) -> Iterator[bool]:
+    return _grouped(m, a, True)
+
+
+@det("aggregate_all", 3)
+def _aggregate_all(m: Machine, a: Args) -> bool:
+    spec = deref(a[0])
+    if spec == "count":
+        mark = len(m.trail)
+        count = sum(1 for _ in m.solve(a[1], sub=True))
+        m.undo_to(mark)
+        return m.unify(a[2], count)
+    if type(spec) is not Term or len(spec[1]) not in (1, 2):
+        raise PrologDomainError(
+            "aggregate_spec", spec, f"aggregate_all/3: {spec!r} is not count, sum/1, max/1, min/1, bag/1 or set/1"
+        )
+    kind, inner = spec[0], spec[1]
+    if kind in ("max", "min") and len(inner) == 2:
+        found = collect(m, Term("-", inner), a[1])
+        if not found:
+            return False
+        scored = [(evaluate(p[1][0]), p[1][1]) for p in found]
+        best = max(scored, key=lambda s: s[0]) if kind == "max" else min(scored, key=lambda s: s[0])
+        return m.unify(a[2], Term(kind, best))
+    values = collect(m, inner[0], a[1])
+    if kind == "count":
+        return m.unify(a[2], len(values))
+    if kind == "bag":
+        return m.unify(a[2], make_list(values))
+    if kind == "set":
+        return m.unify(a[2], make_list(_sorted_unique(values)))
+    if kind == "sum":
+        return m.unify(a[2], sum((evaluate(v) for v in values), 0))
+    if kind in ("max", "min"):
+        if not values:
+            return False
+        numbers = [evaluate(v) for v in values]
+        return m.unify(a[2], max(numbers) if kind == "max" else min(numbers))
+    raise PrologDomainError("aggregate_spec", spec, f"aggregate_all/3: unknown aggregate {kind!r}")

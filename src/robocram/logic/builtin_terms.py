@@ -1,0 +1,227 @@
+"""Built-ins on terms: unification, comparison, type tests, construction, throw, counting."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import TYPE_CHECKING, Any
+
+from robocram.logic.convert import NONE
+from robocram.logic.errors import (
+    PrologDomainError,
+    PrologInstantiationError,
+    PrologTypeError,
+    error_from_ball,
+)
+from robocram.logic.registry import det, nondet
+from robocram.logic.terms import NIL, PString, Term, Var, deref, make_list
+from robocram.logic.unify import copy_resolved, order_key
+
+if TYPE_CHECKING:
+    from robocram.logic.machine import Machine
+
+__all__ = ["list_items", "need_int"]
+
+Args = tuple[Any, ...]
+
+
+def need_int(t: Any, what: str) -> int:
+    """Dereference `t` and insist on an integer."""
+    t = deref(t)
+    if type(t) is Var:
+        raise PrologInstantiationError(f"{what}: argument is unbound; bind it to an integer")
+    if type(t) is not int:
+        raise PrologTypeError("integer", t, f"{what}: {t!r} is not an integer")
+    return t
+
+
+def list_items(t: Any, what: str) -> list[Any]:
+    """Return the elements of a proper list; raise for partial or non-lists."""
+    items = []
+    t = deref(t)
+    while type(t) is Term and t[0] == "." and len(t[1]) == 2:
+        items.append(t[1][0])
+        t = deref(t[1][1])
+    if type(t) is Var:
+        raise PrologInstantiationError(f"{what}: the list is partial (ends in a variable)")
+    if t != NIL or type(t) is not str:
+        raise PrologTypeError("list", t, f"{what}: expected a list, got {t!r}")
+    return items
+
+
+@det("=", 2)
+def _unify(m: Machine, a: Args) -> bool:
+    return m.unify(a[0], a[1])
+
+
+@det("\\=", 2)
+def _not_unify(m: Machine, a: Args) -> bool:
+    mark = len(m.trail)
+    ok = m.unify(a[0], a[1])
+    m.undo_to(mark)
+    return not ok
+
+
+def _compare_terms(a: Any, b: Any) -> int:
+    ka, kb = order_key(a), order_key(b)
+    return (ka > kb) - (ka < kb)
+
+
+for _name, _test in (
+    ("==", lambda c: c == 0),
+    ("\\==", lambda c: c != 0),
+    ("@<", lambda c: c < 0),
+    ("@>", lambda c: c > 0),
+    ("@=<", lambda c: c <= 0),
+    ("@>=", lambda c: c >= 0),
+):
+    det(_name, 2)(lambda m, a, _t=_test: _t(_compare_terms(a[0], a[1])))
+
+
+@det("compare", 3)
+def _compare(m: Machine, a: Args) -> bool:
+    c = _compare_terms(a[1], a[2])
+    return m.unify(a[0], "<" if c < 0 else ">" if c > 0 else "=")
+
+
+def _type_test(name: str, test: Any) -> None:
+    det(name, 1)(lambda m, a: bool(test(deref(a[0]))))
+
+
+_OPAQUE_EXCLUDED = (str, int, float, Term, Var, PString)
+_type_test("var", lambda t: type(t) is Var)
+_type_test("nonvar", lambda t: type(t) is not Var)
+_type_test("bound", lambda t: type(t) is not Var)
+_type_test("atom", lambda t: type(t) is str)
+_type_test("number", lambda t: type(t) in (int, float))
+_type_test("integer", lambda t: type(t) is int)
+_type_test("float", lambda t: type(t) is float)
+_type_test("atomic", lambda t: type(t) is not Var and type(t) is not Term)
+_type_test("compound", lambda t: type(t) is Term)
+_type_test("callable", lambda t: type(t) in (str, Term))
+_type_test("string", lambda t: type(t) is PString)
+_type_test("is_list", lambda t: _is_list(t))
+_type_test("ground", lambda t: _is_ground(t))
+_type_test("python_object", lambda t: type(t) not in _OPAQUE_EXCLUDED or t is NONE)
+
+
+def _is_list(t: Any) -> bool:
+    while type(t) is Term and t[0] == "." and len(t[1]) == 2:
+        t = deref(t[1][1])
+    return type(t) is str and t == NIL
+
+
+def _is_ground(t: Any) -> bool:
+    stack = [t]
+    while stack:
+        t = deref(stack.pop())
+        if type(t) is Var:
+            return False
+        if type(t) is Term:
+            stack.extend(t[1])
+    return True
+
+
+@det("functor", 3)
+def _functor(m: Machine, a: Args) -> bool:
+    t = deref(a[0])
+    if type(t) is Term:
+        return m.unify(a[1], t[0]) and m.unify(a[2], len(t[1]))
+    if type(t) is not Var:
+        return m.unify(a[1], t) and m.unify(a[2], 0)
+    name = deref(a[1])
+    arity = need_int(a[2], "functor/3")
+    if type(name) is Var:
+        raise PrologInstantiationError("functor/3: both the term and the name are unbound")
+    if arity == 0:
+        return m.unify(t, name)
+    if type(name) is not str:
+        raise PrologTypeError("atom", name, f"functor/3: {name!r} cannot name a compound")
+    return m.unify(t, Term(name, [Var() for _ in range(arity)]))
+
+
+@det("arg", 3)
+def _arg(m: Machine, a: Args) -> bool:
+    n = need_int(a[0], "arg/3")
+    t = deref(a[1])
+    if type(t) is not Term:
+        raise PrologTypeError("compound", t, f"arg/3: {t!r} is not a compound term")
+    return 1 <= n <= len(t[1]) and m.unify(a[2], t[1][n - 1])
+
+
+@det("=..", 2)
+def _univ(m: Machine, a: Args) -> bool:
+    t = deref(a[0])
+    if type(t) is Term:
+        return m.unify(a[1], make_list([t[0], *t[1]]))
+    if type(t) is not Var:
+        return m.unify(a[1], make_list([t]))
+    items = list_items(a[1], "=../2")
+    if not items:
+        raise PrologDomainError("non_empty_list", NIL, "=../2: the list is empty")
+    head = deref(items[0])
+    if len(items) == 1:
+        return m.unify(t, head)
+    if type(head) is not str:
+        raise PrologTypeError("atom", head, f"=../2: {head!r} cannot name a compound")
+    return m.unify(t, Term(head, items[1:]))
+
+
+@det("copy_term", 2)
+def _copy_term(m: Machine, a: Args) -> bool:
+    return m.unify(a[1], copy_resolved(a[0]))
+
+
+@det("throw", 1)
+def _throw(m: Machine, a: Args) -> bool:
+    ball = copy_resolved(a[0])
+    if type(ball) is Var:
+        raise PrologInstantiationError("throw/1: the ball is unbound")
+    raise error_from_ball(ball)
+
+
+@nondet("between", 3)
+def _between(m: Machine, a: Args) -> Iterator[bool]:
+    low = need_int(a[0], "between/3")
+    high_t = deref(a[1])
+    high = high_t if high_t in ("inf", "infinite") else need_int(high_t, "between/3")
+    x = deref(a[2])
+    if type(x) is not Var:
+        if need_int(x, "between/3") >= low and (high in ("inf", "infinite") or x <= high):
+            yield True
+        return
+    i = low
+    while high in ("inf", "infinite") or i <= high:  # type: ignore[operator]
+        mark = len(m.trail)
+        if m.unify(x, i):
+            yield True
+        m.undo_to(mark)
+        i += 1
+
+
+@det("succ", 2)
+def _succ(m: Machine, a: Args) -> bool:
+    x = deref(a[0])
+    if type(x) is not Var:
+        n = need_int(x, "succ/2")
+        if n < 0:
+            raise PrologTypeError("not_less_than_zero", n, f"succ/2: {n} is negative")
+        return m.unify(a[1], n + 1)
+    y = need_int(a[1], "succ/2")
+    if y < 0:
+        raise PrologTypeError("not_less_than_zero", y, f"succ/2: {y} is negative")
+    return y > 0 and m.unify(x, y - 1)
+
+
+@det("plus", 3)
+def _plus(m: Machine, a: Args) -> bool:
+    x, y, z = deref(a[0]), deref(a[1]), deref(a[2])
+    if type(z) is Var:
+        return m.unify(z, need_int(x, "plus/3") + need_int(y, "plus/3"))
+    if type(y) is Var:
+        return m.unify(y, need_int(z, "plus/3") - need_int(x, "plus/3"))
+    return m.unify(x, need_int(z, "plus/3") - need_int(y, "plus/3"))
+
+
+@det("halt", 0, 1)
+def _halt(m: Machine, a: Args) -> bool:
+    raise PrologDomainError("embedded", "halt", "halt/0: not allowed in an embedded knowledge base")

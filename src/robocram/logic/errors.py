@@ -1,0 +1,161 @@
+"""The engine's exception hierarchy: one root, `PrologError`, carrying the Prolog error term.
+
+Errors raised by built-ins are ISO error terms `error(Formal, Context)`; inside a query they
+can be caught with `catch/3`, and when they escape they surface as the matching subclass.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from robocram.logic.terms import Term
+
+__all__ = [
+    "FactGroupError",
+    "PrologDomainError",
+    "PrologError",
+    "PrologEvaluationError",
+    "PrologExistenceError",
+    "PrologInstantiationError",
+    "PrologPermissionError",
+    "PrologSyntaxError",
+    "PrologThrow",
+    "PrologTypeError",
+    "UnknownPredicateError",
+    "error_from_ball",
+]
+
+
+class PrologError(Exception):
+    """Root of all engine errors; `ball` is the Prolog term thrown (engine form)."""
+
+    def __init__(self, message: str, ball: Any = None) -> None:
+        super().__init__(message)
+        self.message = message
+        self.ball: Any = ball if ball is not None else Term("error", (Term("system_error", (message,)), message))
+
+    @property
+    def term(self) -> Any:
+        """The thrown term as a Python value (lists as lists, atoms as str)."""
+        from robocram.logic.convert import to_python
+
+        return to_python(self.ball)
+
+
+def _iso(formal: Any, message: str) -> Term:
+    return Term("error", (formal, message))
+
+
+class PrologThrow(PrologError):
+    """A term thrown with `throw/1` that no `catch/3` caught."""
+
+    def __init__(self, ball: Any) -> None:
+        from robocram.logic.writer import format_term
+
+        super().__init__(f"uncaught exception in query: {format_term(ball, quoted=True)}", ball)
+
+
+class PrologInstantiationError(PrologError):
+    """An argument was unbound where a value is needed."""
+
+    def __init__(self, message: str) -> None:
+        super().__init__(message, _iso("instantiation_error", message))
+
+
+class PrologTypeError(PrologError):
+    """An argument had the wrong type (`type_error(Expected, Culprit)`)."""
+
+    def __init__(self, expected: str, culprit: Any, message: str) -> None:
+        super().__init__(message, _iso(Term("type_error", (expected, culprit)), message))
+        self.expected = expected
+        self.culprit = culprit
+
+
+class PrologDomainError(PrologError):
+    """An argument had the right type but an invalid value."""
+
+    def __init__(self, domain: str, culprit: Any, message: str) -> None:
+        super().__init__(message, _iso(Term("domain_error", (domain, culprit)), message))
+
+
+class PrologEvaluationError(PrologError):
+    """Arithmetic failed (`evaluation_error(zero_divisor)` and friends)."""
+
+    def __init__(self, what: str, message: str) -> None:
+        super().__init__(message, _iso(Term("evaluation_error", (what,)), message))
+
+
+class PrologExistenceError(PrologError):
+    """Something named does not exist (`existence_error(Kind, Name)`)."""
+
+    def __init__(self, kind: str, culprit: Any, message: str) -> None:
+        super().__init__(message, _iso(Term("existence_error", (kind, culprit)), message))
+
+
+class UnknownPredicateError(PrologExistenceError):
+    """A goal called a predicate with no definition; `similar` lists near names."""
+
+    def __init__(self, name: str, arity: int, similar: list[str]) -> None:
+        hint = f"; did you mean {', '.join(similar)}?" if similar else ""
+        msg = f"unknown predicate {name}/{arity}{hint}"
+        super().__init__("procedure", Term("/", (name, arity)), msg)
+        self.name = name
+        self.arity = arity
+        self.similar = similar
+
+
+class PrologPermissionError(PrologError):
+    """An operation is not allowed on the object (e.g. modifying a static predicate)."""
+
+    def __init__(self, action: str, kind: str, culprit: Any, message: str) -> None:
+        super().__init__(message, _iso(Term("permission_error", (action, kind, culprit)), message))
+
+
+class FactGroupError(PrologPermissionError):
+    """A fact group added clauses to a predicate another group owns and did not share."""
+
+    def __init__(self, indicator: str, owner: str, group: str) -> None:
+        msg = (
+            f"fact group '{group}' adds clauses to {indicator}, which fact group '{owner}' owns;"
+            f" declare it extendable (extendable=['{indicator}']) in '{group}' or '{owner}'"
+        )
+        super().__init__("modify", "fact_group_predicate", indicator, msg)
+        self.indicator = indicator
+        self.owner = owner
+        self.group = group
+
+
+class PrologSyntaxError(PrologError):
+    """Prolog text could not be read; names the line, column and offending text."""
+
+    def __init__(self, reason: str, line: int, column: int, text: str) -> None:
+        msg = f"syntax error at line {line}, column {column}: {reason}: {text!r}"
+        super().__init__(msg, _iso(Term("syntax_error", (reason,)), msg))
+        self.reason = reason
+        self.line = line
+        self.column = column
+        self.text = text
+
+
+def error_from_ball(ball: Any) -> PrologError:
+    """Wrap a thrown term that escaped a query in the matching Python exception."""
+    from robocram.logic.writer import format_term
+
+    if type(ball) is Term and ball[0] == "error" and len(ball[1]) == 2:
+        formal, context = ball[1]
+        msg = context if isinstance(context, str) else format_term(ball, quoted=True)
+        classes: dict[str, type[PrologError]] = {
+            "type_error": PrologTypeError,
+            "instantiation_error": PrologInstantiationError,
+            "domain_error": PrologDomainError,
+            "evaluation_error": PrologEvaluationError,
+            "existence_error": PrologExistenceError,
+            "permission_error": PrologPermissionError,
+        }
+        key = formal[0] if type(formal) is Term else formal
+        cls = classes.get(key) if isinstance(key, str) else None
+        if cls is not None:
+            err = cls.__new__(cls)
+            PrologError.__init__(err, msg, ball)
+            return err
+    return PrologThrow(ball)

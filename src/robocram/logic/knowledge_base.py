@@ -1,0 +1,305 @@
+"""A knowledge base: predicates loaded in named fact groups, Python predicates, queries.
+
+Fact groups follow CRAM: loading a group again replaces its clauses, and a group may only
+add clauses to a predicate owned by another group when one of the two declares it
+extendable. Queries are lazy: each answer is computed when the iterator is advanced.
+"""
+
+from __future__ import annotations
+
+import difflib
+import threading
+from collections.abc import Callable, Iterable, Iterator
+from functools import cache
+from typing import Any
+
+from robocram.logic import arith, builtin_atoms, builtin_lists, builtin_solutions  # noqa: F401
+from robocram.logic import builtin_terms, python_predicates  # noqa: F401
+from robocram.logic.clause import Slot, build, compile_term
+from robocram.logic.convert import to_prolog, to_python
+from robocram.logic.errors import FactGroupError, PrologError, PrologPermissionError
+from robocram.logic.loader import compile_clause, parse_indicator
+from robocram.logic.machine import Machine
+from robocram.logic.operators import OperatorTable
+from robocram.logic.predicate import USER, Pred
+from robocram.logic.reader import read_query, read_terms
+from robocram.logic.registry import BUILTINS
+from robocram.logic.terms import Term, Var, deref
+
+__all__ = ["KnowledgeBase"]
+
+Key = tuple[str, int]
+PyPredicate = Callable[..., Iterator[Any]]
+_CACHE_SIZE = 1024
+
+
+@cache
+def _system_predicates() -> dict[Key, Pred]:
+    """Built-ins plus the Prolog-defined library, compiled once and shared read-only."""
+    from robocram.logic import builtin_database  # noqa: F401
+    from robocram.logic.library import LIBRARY
+
+    preds = dict(BUILTINS)
+    for term, _ in read_terms(LIBRARY):
+        key, clause = compile_clause(term, "system")
+        pred = preds.get(key)
+        if pred is None:
+            pred = preds[key] = Pred(key[0], key[1])
+            pred.system = True
+            pred.owner = "system"
+        pred.clauses.append(clause)
+    return preds
+
+
+class KnowledgeBase:
+    """Predicates, fact groups and Python functions, queried with Prolog text.
+
+    >>> kb = KnowledgeBase()
+    >>> kb.consult("parent(tom, bob). parent(bob, ann). anc(X, Y) :- parent(X, Y).")
+    >>> [a["Y"] for a in kb.query("anc(tom, Y)")]
+    ['bob']
+    """
+
+    def __init__(self) -> None:
+        self._preds: dict[Key, Pred] = dict(_system_predicates())
+        self._ops = OperatorTable()
+        self._functions: dict[str, Callable[..., Any]] = {}
+        self._groups: dict[str, tuple[set[Key], set[Key]]] = {}
+        self._lock = threading.RLock()
+        self._queries: dict[str, tuple[Any, dict[str, int]]] = {}
+
+    def consult(self, text: str, group: str | None = None, extendable: Iterable[Any] = ()) -> None:
+        """Load Prolog text as fact group `group` (replacing it); None appends to 'user'."""
+        terms = []
+        directives = []
+        for term, _ in read_terms(text, self._ops):
+            if type(term) is Term and term[0] == ":-" and len(term[1]) == 1:
+                if self._declaration(deref(term[1][0]), group):
+                    continue
+                directives.append(term[1][0])
+            else:
+                terms.append(term)
+        self.add_fact_group(group, terms, extendable)
+        for goal in directives:
+            if not self.holds_term(goal):
+                raise PrologError(f"directive failed: {goal!r} (in fact group {group or 'user'!r})")
+
+    def add_fact_group(self, group: str | None, clauses: Iterable[Any], extendable: Iterable[Any] = ()) -> None:
+        """Define fact group `group` from clause texts or terms (see `consult`)."""
+        compiled = []
+        for clause in clauses:
+            if isinstance(clause, str):
+                compiled.extend(compile_clause(t, group or "user") for t, _ in read_terms(clause, self._ops))
+            else:
+                compiled.append(compile_clause(to_prolog(clause), group or "user"))
+        shared = {parse_indicator(to_prolog(e)) for e in extendable}
+        with self._lock:
+            name = group or "user"
+            if group is not None:
+                self._drop_group(name)
+            keys, ext = self._groups.setdefault(name, (set(), set()))
+            ext.update(shared)
+            for key, _ in compiled:
+                self._check_owner(key, name)
+            for key, clause in compiled:
+                pred = self._user_pred(key)
+                if pred.owner is None:
+                    pred.owner = name
+                pred.add_last(clause)
+                keys.add(key)
+
+    def _drop_group(self, name: str) -> None:
+        keys, _ = self._groups.pop(name, (set(), set()))
+        for key in keys:
+            pred = self._preds[key]
+            pred.set_clauses([c for c in pred.clauses if c.group != name])
+            if pred.owner == name:
+                others = [c.group for c in pred.clauses if c.group is not None]
+                pred.owner = others[0] if others else None
+
+    def _check_owner(self, key: Key, group: str) -> None:
+        pred = self._preds.get(key)
+        if pred is None or pred.owner is None or pred.owner == group:
+            if pred is not None and pred.system:
+                self._refuse_system(pred)
+            return
+        if pred.system:
+            self._refuse_system(pred)
+        owner_ext = self._groups.get(pred.owner, (set(), set()))[1]
+        mine = self._groups.get(group, (set(), set()))[1]
+        if key not in owner_ext and key not in mine:
+            raise FactGroupError(pred.indicator, pred.owner, group)
+
+    @staticmethod
+    def _refuse_system(pred: Pred) -> None:
+        raise PrologPermissionError(
+            "modify",
+            "static_procedure",
+            Term("/", (pred.name, pred.arity)),
+            f"{pred.indicator} is a built-in predicate and cannot be redefined; choose another name",
+        )
+
+    def _user_pred(self, key: Key) -> Pred:
+        pred = self._preds.get(key)
+        if pred is None:
+            pred = self._preds[key] = Pred(key[0], key[1])
+        elif pred.system or pred.kind != USER:
+            self._refuse_system(pred)
+        return pred
+
+    def _declaration(self, goal: Any, group: str | None) -> bool:
+        """Handle dynamic/discontiguous/op directives; False for goals to run."""
+        if type(goal) is not Term or len(goal[1]) != 1 or goal[0] not in ("dynamic", "discontiguous"):
+            if type(goal) is Term and goal[0] == "op" and len(goal[1]) == 3:
+                self.holds_term(goal)
+                return True
+            return False
+        if goal[0] == "dynamic":
+            for spec in _comma_items(goal[1][0]):
+                self.declare_dynamic(parse_indicator(spec))
+        return True
+
+    def declare_dynamic(self, key: Key) -> None:
+        """Make name/arity a dynamic predicate (defined, modifiable by assert/retract)."""
+        with self._lock:
+            self._user_pred(key).dynamic = True
+
+    def assert_clause(self, clause: Any, front: bool = False) -> None:
+        """Add a clause to a dynamic (or new) predicate, as assertz/asserta do."""
+        key, compiled = compile_clause(to_prolog(clause), None)
+        with self._lock:
+            pred = self._preds.get(key)
+            if pred is not None and not pred.dynamic and (pred.clauses or pred.system or pred.kind != USER):
+                raise PrologPermissionError(
+                    "modify",
+                    "static_procedure",
+                    Term("/", key),
+                    f"{pred.indicator} is static (loaded from fact group '{pred.owner}'); declare it"
+                    f" with ':- dynamic {pred.indicator}.' to assert into it",
+                )
+            pred = self._user_pred(key)
+            pred.dynamic = True
+            if front:
+                pred.set_clauses([compiled, *pred.clauses])
+            else:
+                pred.add_last(compiled)
+
+    def assertz(self, clause: Any) -> None:
+        """Append a clause (Prolog text or term) to a dynamic predicate."""
+        for term in self._clause_terms(clause):
+            self.assert_clause(term)
+
+    def asserta(self, clause: Any) -> None:
+        """Prepend a clause (Prolog text or term) to a dynamic predicate."""
+        for term in self._clause_terms(clause):
+            self.assert_clause(term, front=True)
+
+    def retract(self, clause: Any) -> bool:
+        """Remove the first clause unifying with `clause`; return whether one was removed."""
+        term = read_query(clause, self._ops)[0] if isinstance(clause, str) else to_prolog(clause)
+        return self.holds_term(Term("retract", (term,)))
+
+    def _clause_terms(self, clause: Any) -> list[Any]:
+        if isinstance(clause, str):
+            return [t for t, _ in read_terms(clause if clause.rstrip().endswith(".") else clause + ".", self._ops)]
+        return [clause]
+
+    def predicate(self, name: str, arity: int) -> Callable[[PyPredicate], PyPredicate]:
+        """Decorator registering a Python generator as predicate name/arity."""
+
+        def decorate(fn: PyPredicate) -> PyPredicate:
+            self.add_predicate(name, arity, fn)
+            return fn
+
+        return decorate
+
+    def add_predicate(self, name: str, arity: int, fn: PyPredicate) -> None:
+        """Register `fn(*args)` yielding tuples of `arity` values (or None) as name/arity."""
+        if not callable(fn):
+            raise TypeError(f"add_predicate({name!r}, {arity}): {fn!r} is not callable")
+        with self._lock:
+            self._user_pred((name, arity)).pyfn = fn
+
+    def register_function(self, name: str, fn: Callable[..., Any]) -> None:
+        """Make `fn` callable by name from py_fun/N and py_pred/N."""
+        if not callable(fn):
+            raise TypeError(f"register_function({name!r}): {fn!r} is not callable")
+        self._functions[name] = fn
+
+    def predicates(self, include_builtins: bool = False) -> list[str]:
+        """Sorted `name/arity` of the defined predicates (user ones unless asked)."""
+        return sorted(
+            p.indicator
+            for p in list(self._preds.values())
+            if include_builtins or not p.system and p.kind == USER
+        )
+
+    def similar_predicates(self, name: str, arity: int) -> list[str]:
+        """Defined predicates whose name or arity is close to name/arity."""
+        preds = list(self._preds.values())
+        same = [p.indicator for p in preds if p.name == name and p.arity != arity]
+        names = {p.name for p in preds}
+        close = difflib.get_close_matches(name, names, n=3, cutoff=0.75)
+        near = [p.indicator for p in preds if p.name in close and p.name != name]
+        return sorted(set(same))[:3] + sorted(set(near), key=lambda s: s.split("/")[0] not in close[:1])[:3]
+
+    def query(self, text: str, **bindings: Any) -> Iterator[dict[str, Any]]:
+        """Lazily yield one dict per answer, mapping the query's free variable names to values."""
+        template, names = self._compile_query(text)
+        regs: list[Any] = [None] * (max(names.values(), default=-1) + 1)
+        for name, value in bindings.items():
+            if name not in names:
+                raise PrologError(
+                    f"binding {name}= names no variable of query {text!r}; its variables are"
+                    f" {', '.join(sorted(names)) or 'none'}"
+                )
+            regs[names[name]] = to_prolog(value)
+        goal = build(template, regs)
+        shown = [(n, i) for n, i in names.items() if n not in bindings and not n.startswith("_")]
+        return self._answers(goal, regs, shown)
+
+    def _answers(self, goal: Any, regs: list[Any], shown: list[tuple[str, int]]) -> Iterator[dict[str, Any]]:
+        for _ in Machine(self).solve(goal):
+            yield {name: to_python(regs[i]) for name, i in shown}
+
+    def _compile_query(self, text: str) -> tuple[Any, dict[str, int]]:
+        cached = self._queries.get(text)
+        if cached is None:
+            term, varmap = read_query(text, self._ops)
+            slots: dict[Var, Slot] = {}
+            for var in varmap.values():
+                slots[var] = Slot(len(slots))
+            template = compile_term(term, slots)
+            cached = (template, {name: slots[v].i for name, v in varmap.items()})
+            if len(self._queries) >= _CACHE_SIZE:
+                self._queries.clear()
+            self._queries[text] = cached
+        return cached
+
+    def holds(self, text: str, **bindings: Any) -> bool:
+        """True when the query has at least one answer."""
+        return next(self.query(text, **bindings), None) is not None
+
+    def first(self, text: str, **bindings: Any) -> dict[str, Any] | None:
+        """The first answer of the query, or None when it has none."""
+        return next(self.query(text, **bindings), None)
+
+    def holds_term(self, goal: Any) -> bool:
+        """Run an engine term as a goal; True when it has a solution."""
+        return next(Machine(self).solve(to_prolog(goal)), False) is None
+
+    def __repr__(self) -> str:
+        return f"KnowledgeBase({len(self.predicates())} predicates, groups={sorted(self._groups)})"
+
+
+def _comma_items(t: Any) -> list[Any]:
+    """Items of `a, b, c` or of a list `[a, b, c]` (as in `:- dynamic`)."""
+    t = deref(t)
+    items = []
+    sep = "." if type(t) is Term and t[0] == "." else ","
+    while type(t) is Term and t[0] == sep and len(t[1]) == 2:
+        items.append(t[1][0])
+        t = deref(t[1][1])
+    if sep == ",":
+        items.append(t)
+    return items

@@ -1,0 +1,224 @@
+"""The resolution machine: a goal continuation list, a choicepoint stack and a trail.
+
+No Python recursion per call: a continuation is a linked tuple (goal, cut_barrier, next),
+and the last goal of a clause body continues with the parent's continuation, so deep
+deterministic recursion runs in constant stack space. Cut removes the choicepoints above
+the barrier recorded when the clause was entered.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import TYPE_CHECKING, Any
+
+from robocram.logic.clause import build, unify_head
+from robocram.logic.control import ALT, BARRIER, CATCH, CLAUSES, FAIL, GEN, REACT, run_control
+from robocram.logic.errors import (
+    PrologError,
+    PrologInstantiationError,
+    PrologTypeError,
+    UnknownPredicateError,
+)
+from robocram.logic.predicate import DET, NONDET, USER, Pred
+from robocram.logic.terms import Term, Var
+from robocram.logic.unify import copy_resolved, undo, unify
+
+if TYPE_CHECKING:
+    from robocram.logic.knowledge_base import KnowledgeBase
+
+__all__ = ["Machine"]
+
+class Machine:
+    """Per-query solver state: the trail shared by nested solves, and the knowledge base."""
+
+    def __init__(self, kb: KnowledgeBase) -> None:
+        self.kb = kb
+        self.preds = kb._preds
+        self.trail: list[Var] = []
+
+    def unify(self, a: Any, b: Any) -> bool:
+        """Unify two terms, trailing the bindings (for built-ins)."""
+        return unify(a, b, self.trail)
+
+    def undo_to(self, mark: int) -> None:
+        """Undo bindings made since the trail had length `mark`."""
+        undo(self.trail, mark)
+
+    def unknown(self, name: str, arity: int) -> UnknownPredicateError:
+        """Build the error for a call to an undefined predicate."""
+        return UnknownPredicateError(name, arity, self.kb.similar_predicates(name, arity))
+
+    def solve(self, goal: Any, sub: bool = False) -> Iterator[None]:
+        """Yield once per solution of `goal`, with its bindings in place while suspended."""
+        trail = self.trail
+        cps: list[list[Any]] = [[BARRIER, len(trail)]] if sub else []
+        cont: Any = (goal, len(cps), None)
+        fail = False
+        while True:
+            try:
+                yield from self._run(cps, cont, fail)
+                return
+            except PrologError as err:
+                cont = self._handle(err, cps)
+                fail = False
+
+    def _handle(self, err: PrologError, cps: list[list[Any]]) -> Any:
+        """Find the innermost active catch/3 whose catcher unifies with the ball."""
+        ball = copy_resolved(err.ball)
+        err.ball = ball
+        trail = self.trail
+        while cps:
+            cp = cps.pop()
+            if cp[0] == BARRIER:
+                break
+            if cp[0] == CATCH and cp[6]:
+                undo(trail, cp[1])
+                if unify(cp[2], ball, trail):
+                    return (cp[3], len(cps), cp[4])
+                undo(trail, cp[1])
+        raise err
+
+    def _run(self, cps: list[list[Any]], cont: Any, fail: bool) -> Iterator[None]:
+        trail = self.trail
+        preds = self.preds
+        cl = None
+        args: Any = ()
+        nxt: Any = None
+        cb = 0
+        while True:
+            if fail:
+                fail = False
+                while True:
+                    if not cps:
+                        return
+                    cp = cps[-1]
+                    mark = cp[1]
+                    while len(trail) > mark:
+                        trail.pop().ref = None
+                    kind = cp[0]
+                    if kind == CLAUSES:
+                        i = cp[5]
+                        cl = cp[4][i]
+                        args = cp[2]
+                        nxt = cp[3]
+                        cb = len(cps) - 1
+                        i += 1
+                        if i >= cp[6]:
+                            cps.pop()
+                        else:
+                            cp[5] = i
+                        break
+                    if kind == GEN:
+                        if next(cp[2], None) is not None:
+                            cont = cp[3]
+                            break
+                        cps.pop()
+                    elif kind == ALT:
+                        cps.pop()
+                        cont = cp[2]
+                        break
+                    elif kind == BARRIER:
+                        return
+                    else:
+                        if kind == REACT:
+                            cp[2][6] = True
+                        cps.pop()
+            if cl is not None:
+                regs: list[Any] = [None] * cl.nvars
+                head = cl.head
+                for i in range(len(head)):
+                    if not unify_head(head[i], args[i], regs, trail):
+                        fail = True
+                        break
+                else:
+                    cont = nxt
+                    for g in cl.body_rev:
+                        cont = (build(g, regs), cb, cont)
+                cl = None
+                if fail:
+                    continue
+            if cont is None:
+                yield None
+                fail = True
+                continue
+            goal, cutb, nxt = cont
+            tg = type(goal)
+            if tg is Term:
+                name = goal[0]
+                args = goal[1]
+                p = preds.get((name, len(args)))
+            elif tg is str:
+                name = goal
+                args = ()
+                p = preds.get((name, 0))
+            else:
+                cont = self._call_other(goal, len(cps), nxt)
+                continue
+            if p is None:
+                raise self.unknown(name, len(args))
+            k = p.kind
+            if k == USER:
+                if not cps and trail:
+                    del trail[:]
+                if p.pyfn is not None:
+                    self._push_python(p, args, nxt, cps)
+                    fail = True
+                    continue
+                cands = p.clauses if not args or len(p.clauses) < 2 else p.candidates(deref1(args[0]))
+                n = len(cands)
+                if n == 0:
+                    fail = True
+                    continue
+                cl = cands[0]
+                cb = len(cps)
+                if n > 1:
+                    cps.append([CLAUSES, len(trail), args, nxt, cands, 1, n])
+            elif k == DET:
+                if p.fn(self, args):
+                    cont = nxt
+                else:
+                    fail = True
+            elif k == NONDET:
+                cps.append([GEN, len(trail), p.fn(self, args), nxt])
+                fail = True
+            elif name == ",":
+                cont = (args[0], cutb, (args[1], cutb, nxt))
+            elif name == "!":
+                del cps[cutb:]
+                cont = nxt
+            else:
+                cont = run_control(self, name, args, cutb, nxt, cps)
+                if cont is FAIL:
+                    fail = True
+
+    def _call_other(self, goal: Any, cutb: int, nxt: Any) -> Any:
+        """Dispatch a goal that is a bound variable; raise for unbound or non-callable."""
+        while type(goal) is Var:
+            if goal.ref is None:
+                raise PrologInstantiationError("a goal is an unbound variable; bind it before calling")
+            goal = goal.ref
+        if type(goal) in (Term, str):
+            return (goal, cutb, nxt)
+        raise PrologTypeError("callable", goal, f"{goal!r} is not a callable goal")
+
+    def _push_python(self, p: Pred, args: tuple[Any, ...], nxt: Any, cps: list[list[Any]]) -> None:
+        """Try the Python predicate's solutions first, then the ordinary clauses."""
+        from robocram.logic.python_predicates import python_solutions
+
+        trail = self.trail
+        cands = p.clauses if not args or len(p.clauses) < 2 else p.candidates(deref1(args[0]))
+        if cands:
+            cps.append([CLAUSES, len(trail), args, nxt, cands, 0, len(cands)])
+        assert p.pyfn is not None
+        cps.append([GEN, len(trail), python_solutions(self, p, args), nxt])
+
+
+
+def deref1(t: Any) -> Any:
+    """Dereference (module-level for speed in the machine)."""
+    while type(t) is Var:
+        r = t.ref
+        if r is None:
+            return t
+        t = r
+    return t

@@ -1,0 +1,113 @@
+"""A predicate's definition: clauses with a lazy first-argument index, or built-in code."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator
+from typing import TYPE_CHECKING, Any
+
+from robocram.logic.clause import Clause
+from robocram.logic.terms import Term, Var
+
+if TYPE_CHECKING:
+    from robocram.logic.machine import Machine
+
+__all__ = ["CONTROL", "DET", "NONDET", "USER", "DetFn", "NondetFn", "Pred"]
+
+USER, DET, NONDET, CONTROL = 0, 1, 2, 3
+
+DetFn = Callable[["Machine", tuple[Any, ...]], bool]
+NondetFn = Callable[["Machine", tuple[Any, ...]], Iterator[Any]]
+
+
+class Pred:
+    """One name/arity: user clauses (plus an optional Python predicate) or a built-in."""
+
+    __slots__ = (
+        "arity",
+        "clauses",
+        "dynamic",
+        "extendable",
+        "fn",
+        "index",
+        "kind",
+        "name",
+        "owner",
+        "pyfn",
+        "system",
+        "varclauses",
+    )
+
+    def __init__(self, name: str, arity: int, kind: int = USER, fn: Any = None) -> None:
+        self.name = name
+        self.arity = arity
+        self.kind = kind
+        self.fn = fn
+        self.clauses: list[Clause] = []
+        self.index: dict[Any, list[Clause]] | None = None
+        self.varclauses: list[Clause] = []
+        self.pyfn: Callable[..., Iterator[Any]] | None = None
+        self.dynamic = False
+        self.system = False
+        self.owner: str | None = None
+        self.extendable: set[str] = set()
+
+    @property
+    def indicator(self) -> str:
+        """The `name/arity` text."""
+        return f"{self.name}/{self.arity}"
+
+    def set_clauses(self, clauses: list[Clause]) -> None:
+        """Replace all clauses (a new list, so running queries keep their snapshot)."""
+        self.clauses = clauses
+        self.index = None
+
+    def add_last(self, clause: Clause) -> None:
+        """Append a clause in place, keeping any built index up to date."""
+        self.clauses.append(clause)
+        index = self.index
+        if index is None:
+            return
+        if clause.key is None:
+            self.varclauses.append(clause)
+            for bucket in index.values():
+                bucket.append(clause)
+        else:
+            bucket = index.get(clause.key)
+            if bucket is None:
+                bucket = index[clause.key] = list(self.varclauses)
+            bucket.append(clause)
+
+    def build_index(self) -> dict[Any, list[Clause]]:
+        """Group clauses by first-argument key; variable-first clauses join every bucket."""
+        index: dict[Any, list[Clause]] = {}
+        varclauses: list[Clause] = []
+        for clause in self.clauses:
+            if clause.key is None:
+                varclauses.append(clause)
+                for bucket in index.values():
+                    bucket.append(clause)
+            else:
+                bucket = index.get(clause.key)
+                if bucket is None:
+                    bucket = index[clause.key] = list(varclauses)
+                bucket.append(clause)
+        self.varclauses = varclauses
+        self.index = index
+        return index
+
+    def candidates(self, first: Any) -> list[Clause]:
+        """Clauses whose first argument can match the dereferenced call argument `first`."""
+        t = type(first)
+        if t is Var:
+            return self.clauses
+        index = self.index
+        if index is None:
+            index = self.build_index()
+        if t is Term:
+            bucket = index.get((first[0], len(first[1])))
+        else:
+            try:
+                bucket = index.get(first)
+            except TypeError:
+                return self.clauses
+        return self.varclauses if bucket is None else bucket

@@ -1,0 +1,69 @@
+"""Python code called from Prolog: registered generator predicates, py_fun and py_pred."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator
+from typing import TYPE_CHECKING, Any
+
+from robocram.logic.convert import to_prolog, to_python
+from robocram.logic.errors import PrologError, PrologExistenceError, PrologInstantiationError
+from robocram.logic.registry import det
+from robocram.logic.terms import Var, deref
+
+if TYPE_CHECKING:
+    from robocram.logic.machine import Machine
+    from robocram.logic.predicate import Pred
+
+__all__ = ["python_solutions"]
+
+
+def python_solutions(m: Machine, p: Pred, args: tuple[Any, ...]) -> Iterator[bool]:
+    """Run a Python predicate; unify each yielded tuple with the call's arguments."""
+    assert p.pyfn is not None
+    py_args = [to_python(a) for a in args]
+    trail = m.trail
+    for solution in p.pyfn(*py_args):
+        if solution is None:
+            yield True
+            continue
+        if not isinstance(solution, tuple | list) or len(solution) != p.arity:
+            raise PrologError(
+                f"Python predicate {p.indicator} yielded {solution!r}; yield a tuple of"
+                f" {p.arity} values (one per argument) or None"
+            )
+        mark = len(trail)
+        if all(m.unify(a, to_prolog(v)) for a, v in zip(args, solution, strict=True)):
+            yield True
+        else:
+            m.undo_to(mark)
+
+
+def _resolve_callable(m: Machine, f: Any, what: str) -> Callable[..., Any]:
+    f = deref(f)
+    if type(f) is Var:
+        raise PrologInstantiationError(f"{what}: the function is unbound; pass a callable or a name")
+    if callable(f) and not isinstance(f, str):
+        return f  # type: ignore[no-any-return]
+    fn = m.kb._functions.get(f) if isinstance(f, str) else None
+    if fn is None:
+        known = ", ".join(sorted(m.kb._functions)) or "none registered"
+        raise PrologExistenceError(
+            "python_function",
+            f,
+            f"{what}: no Python function named {f!r}; register it with"
+            f" kb.register_function({f!r}, fn) (known: {known})",
+        )
+    return fn
+
+
+@det("py_fun", *range(2, 10))
+def _py_fun(m: Machine, args: tuple[Any, ...]) -> bool:
+    fn = _resolve_callable(m, args[0], "py_fun")
+    result = fn(*[to_python(a) for a in args[1:-1]])
+    return m.unify(args[-1], to_prolog(result))
+
+
+@det("py_pred", *range(1, 9))
+def _py_pred(m: Machine, args: tuple[Any, ...]) -> bool:
+    fn = _resolve_callable(m, args[0], "py_pred")
+    return bool(fn(*[to_python(a) for a in args[1:]]))

@@ -1,0 +1,132 @@
+"""Unification with a trail, standard order of terms, and copying terms out of bindings."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from robocram.logic.terms import PString, Term, Var, new_term
+
+__all__ = ["copy_resolved", "order_key", "undo", "unify", "variant_key"]
+
+_PRIMITIVE = frozenset([str, int, float, PString])
+
+
+def unify(a: Any, b: Any, trail: list[Var]) -> bool:
+    """Unify two terms, recording each bound variable on `trail`.
+
+    >>> x = Var(); unify(Term("f", (x,)), Term("f", (1,)), []), x.ref
+    (True, 1)
+    """
+    while True:
+        while type(a) is Var:
+            r = a.ref
+            if r is None:
+                break
+            a = r
+        while type(b) is Var:
+            r = b.ref
+            if r is None:
+                break
+            b = r
+        if a is b:
+            return True
+        ta = type(a)
+        tb = type(b)
+        if ta is Var:
+            a.ref = b
+            trail.append(a)
+            return True
+        if tb is Var:
+            b.ref = a
+            trail.append(b)
+            return True
+        if ta is Term:
+            if tb is not Term or a[0] != b[0]:
+                return False
+            aa = a[1]
+            ab = b[1]
+            n = len(aa) - 1
+            if n != len(ab) - 1:
+                return False
+            for i in range(n):
+                if not unify(aa[i], ab[i], trail):
+                    return False
+            a = aa[n]
+            b = ab[n]
+            continue
+        if ta is tb:
+            return bool(a == b)
+        if ta in _PRIMITIVE or tb in _PRIMITIVE or tb is Term:
+            return False
+        return bool(a == b)
+
+
+def undo(trail: list[Var], mark: int) -> None:
+    """Unbind every variable bound since the trail had length `mark`."""
+    while len(trail) > mark:
+        trail.pop().ref = None
+
+
+def copy_resolved(term: Any, mapping: dict[Var, Var] | None = None) -> Any:
+    """Copy a term with bindings applied and fresh variables for unbound ones."""
+    if mapping is None:
+        mapping = {}
+    while type(term) is Var:
+        if term.ref is None:
+            fresh = mapping.get(term)
+            if fresh is None:
+                fresh = mapping[term] = Var()
+            return fresh
+        term = term.ref
+    if type(term) is not Term:
+        return term
+    if term[0] == "." and len(term[1]) == 2:
+        items = []
+        while type(term) is Term and term[0] == "." and len(term[1]) == 2:
+            items.append(copy_resolved(term[1][0], mapping))
+            term = term[1][1]
+            while type(term) is Var and term.ref is not None:
+                term = term.ref
+        tail = copy_resolved(term, mapping)
+        for item in reversed(items):
+            tail = new_term(Term, (".", (item, tail)))
+        return tail
+    return new_term(Term, (term[0], tuple([copy_resolved(a, mapping) for a in term[1]])))
+
+
+def order_key(term: Any) -> tuple[Any, ...]:
+    """Key giving the standard order: Var < Number < Atom < String < Compound < other.
+
+    >>> sorted([Term("f", (1,)), "b", 2, 1.0, "a"], key=order_key)
+    [1.0, 2, 'a', 'b', f(1)]
+    """
+    while type(term) is Var:
+        if term.ref is None:
+            return (0, id(term))
+        term = term.ref
+    t = type(term)
+    if t is int or t is float:
+        return (1, term, 0 if t is float else 1)
+    if t is str:
+        return (3, term)
+    if t is PString:
+        return (4, term.text)
+    if t is Term:
+        return (5, len(term[1]), term[0], tuple([order_key(a) for a in term[1]]))
+    return (6, type(term).__name__, id(term))
+
+
+def variant_key(term: Any) -> tuple[Any, ...]:
+    """Key equal for terms that are variants (equal up to renaming variables)."""
+    names: dict[int, int] = {}
+
+    def walk(t: Any) -> Any:
+        while type(t) is Var:
+            if t.ref is None:
+                return ("$VAR", names.setdefault(id(t), len(names)))
+            t = t.ref
+        if type(t) is Term:
+            return (t[0], tuple([walk(a) for a in t[1]]))
+        return (type(t).__name__, t if type(t) in _PRIMITIVE else id(t))
+
+    return (walk(term),)
