@@ -21,6 +21,7 @@ from robocram.world.errors import (
     UnknownLinkError,
     UnknownObjectError,
     WorldClosedError,
+    WorldError,
 )
 from robocram.world.joint_state import ClampedJoint, JointLimits, clamp_values
 from robocram.world.world_object import RobotObject, WorldObject
@@ -34,9 +35,17 @@ class WorldCore:
     """One pybullet client, its named bodies, attachments and the joints robots hold."""
 
     def __init__(self, gui: bool = False, gravity: float = -9.81, time_step: float = 1 / 240):
-        self.client: int = pybullet.connect(pybullet.GUI if gui else pybullet.DIRECT)
+        try:
+            self.client: int = pybullet.connect(pybullet.GUI if gui else pybullet.DIRECT)
+        except pybullet.error as err:
+            raise WorldError(f"pybullet could not connect: {err}") from err
         if self.client < 0:
-            raise WorldClosedError()
+            raise WorldError(
+                "pybullet could not open a GUI (it allows one per process and needs a "
+                "display); use World() for a headless world"
+                if gui
+                else "pybullet could not start a physics client"
+            )
         self.gravity = gravity  # [m/s^2] along z
         self.time_step = time_step  # [s] per physics step
         self.time = 0.0  # [s] simulated so far
