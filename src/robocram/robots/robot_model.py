@@ -15,9 +15,12 @@ from robocram.robots.description import BoxSpec, FrameSpec
 from robocram.robots.errors import DescriptionError, MissingMeshWarning, UrdfError, closest_names
 from robocram.robots.package_resolver import PackageResolver
 from robocram.robots.safe_xml import parse_xml
-from robocram.robots.urdf_elements import Collision, Geometry, Joint, Link
+from robocram.robots.urdf_elements import Collision, Geometry, Inertial, Joint, Link
 from robocram.robots.urdf_reader import read_urdf
 from robocram.robots.urdf_writer import write_urdf
+
+# A frame added in code weighs 1 g: PyBullet would otherwise give it 1 kg and unit inertia.
+_FRAME_INERTIA = Inertial(0.001, (1e-9, 0.0, 0.0, 1e-9, 0.0, 1e-9))
 
 
 @dataclass(frozen=True, eq=False)
@@ -113,7 +116,7 @@ class RobotModel:
         """A copy with frame ``spec.name`` fixed to ``spec.parent`` at ``spec.pose``."""
         self._check_new_link(spec.name, spec.parent)
         joint = Joint(f"{spec.name}_joint", "fixed", spec.parent, spec.name, spec.pose)
-        return self._extended(Link(spec.name), joint)
+        return self._extended(Link(spec.name, inertial=_FRAME_INERTIA), joint)
 
     def with_box(self, spec: BoxSpec) -> RobotModel:
         """A copy with a collision box on a new link ``spec.name`` fixed to ``spec.parent``."""
@@ -122,7 +125,7 @@ class RobotModel:
             raise DescriptionError(f"box {spec.name!r} needs positive sizes [m], got {spec.size}")
         box = Collision(Geometry("box", size=spec.size), name=spec.name)
         joint = Joint(f"{spec.name}_joint", "fixed", spec.parent, spec.name, spec.pose)
-        return self._extended(Link(spec.name, collisions=(box,)), joint)
+        return self._extended(Link(spec.name, collisions=(box,), inertial=_FRAME_INERTIA), joint)
 
     def _check_new_link(self, name: str, parent: str) -> None:
         self.link(parent)
