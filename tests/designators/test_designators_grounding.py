@@ -46,20 +46,34 @@ def test_interface_predicates_fail_until_extended() -> None:
         (a.motion(type="moving-torso", joint_angle=0.3), Term("move_torso", (0.3,))),
         (a.motion(type="looking", frame="r_gripper"), Term("move_head", ("frame", "r_gripper"))),
         (a.motion(type="looking", direction="down"), Term("move_head", ("direction", "down"))),
-        (a.motion(type="opening", gripper="left"),
-         Term("move_gripper_joint", ("left", "open", "none"))),
-        (a.motion(type="gripping", gripper="right", effort=30),
-         Term("move_gripper_joint", ("right", "grip", 30))),
-        (a.motion(type="moving-gripper-joint", gripper="left", joint_angle=0.04),
-         Term("move_gripper_joint", ("left", 0.04, "none"))),
-        (a.motion(type="moving-tcp", left_target=(1, 0, 1)),
-         Term("move_tcp", ("left", (1, 0, 1), "avoid_all"))),
-        (a.motion(type="moving-tcp", arm="right", target=(1, 0, 1), collision_mode="allow_all"),
-         Term("move_tcp", ("right", (1, 0, 1), "allow_all"))),
-        (a.motion(type="moving-tcp", left_target=(1, 0, 1), right_target=(2, 0, 1)),
-         Term("move_tcp_both", ((1, 0, 1), (2, 0, 1), "avoid_all"))),
-        (a.motion(type="moving-arm-joints", right_configuration=[0.1, 0.2]),
-         Term("move_joints", ("right", [0.1, 0.2]))),
+        (
+            a.motion(type="opening", gripper="left"),
+            Term("move_gripper_joint", ("left", "open", "none")),
+        ),
+        (
+            a.motion(type="gripping", gripper="right", effort=30),
+            Term("move_gripper_joint", ("right", "grip", 30)),
+        ),
+        (
+            a.motion(type="moving-gripper-joint", gripper="left", joint_angle=0.04),
+            Term("move_gripper_joint", ("left", 0.04, "none")),
+        ),
+        (
+            a.motion(type="moving-tcp", left_target=(1, 0, 1)),
+            Term("move_tcp", ("left", (1, 0, 1), "avoid_all")),
+        ),
+        (
+            a.motion(type="moving-tcp", arm="right", target=(1, 0, 1), collision_mode="allow_all"),
+            Term("move_tcp", ("right", (1, 0, 1), "allow_all")),
+        ),
+        (
+            a.motion(type="moving-tcp", left_target=(1, 0, 1), right_target=(2, 0, 1)),
+            Term("move_tcp_both", ((1, 0, 1), (2, 0, 1), "avoid_all")),
+        ),
+        (
+            a.motion(type="moving-arm-joints", right_configuration=[0.1, 0.2]),
+            Term("move_joints", ("right", [0.1, 0.2])),
+        ),
     ],
 )
 def test_common_motions_ground_to_documented_commands(

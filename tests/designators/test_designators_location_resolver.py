@@ -89,7 +89,9 @@ def test_solutions_are_lazy_and_cached_per_designator() -> None:
 
 
 def test_removal_and_replacement_by_name() -> None:
-    resolver = LocationResolver().with_generator("g", lambda d: [1]).with_generator("g", lambda d: [2])
+    resolver = (
+        LocationResolver().with_generator("g", lambda d: [1]).with_generator("g", lambda d: [2])
+    )
     assert [g.name for g in resolver.generators] == ["pose_property", "g"]
     assert list(resolver.solutions(a.location())) == [2]
     assert list(resolver.without_generator("g").solutions(a.location())) == []
@@ -100,8 +102,9 @@ def test_removal_and_replacement_by_name() -> None:
 def test_scoped_generators_and_validators_end_with_their_block() -> None:
     with using_location_resolver(LocationResolver()):
         with scoped_location_generator("ten", lambda d: [10, 11]):
-            with scoped_location_validator("no_ten", lambda d, c: Verdict(
-                "reject" if c == 10 else "unknown")):
+            with scoped_location_validator(
+                "no_ten", lambda d, c: Verdict("reject" if c == 10 else "unknown")
+            ):
                 assert a.location().reference() == 11
             assert a.location().reference() == 10
         assert [g.name for g in current_location_resolver().generators] == ["pose_property"]

@@ -96,7 +96,10 @@ def test_first_failure_tries_the_next_module(kb: KnowledgeBase) -> None:
 
 
 def test_ungroundable_designator_is_a_reference_failure(kb: KnowledgeBase) -> None:
-    with using_kb(kb), pytest.raises(DesignatorReferenceFailure, match="types with motion_grounding"):
+    with (
+        using_kb(kb),
+        pytest.raises(DesignatorReferenceFailure, match="types with motion_grounding"),
+    ):
         top_level(lambda: perform(a.motion(type="moving-torso", angle=0.1)))
 
 
@@ -143,11 +146,13 @@ def test_many_parallel_performs_none_lost_none_doubled(kb: KnowledgeBase) -> Non
 def test_cancelled_performs_leave_nothing_running(kb: KnowledgeBase) -> None:
     pm = TorsoPM(hold=5.0)
     with using_kb(kb), process_modules_running(pm):
-        top_level(lambda: pursue(
-            lambda: sleep(0.05),
-            lambda: perform(torso(0.1)),
-            lambda: perform(torso(0.2)),
-        ))
+        top_level(
+            lambda: pursue(
+                lambda: sleep(0.05),
+                lambda: perform(torso(0.1)),
+                lambda: perform(torso(0.2)),
+            )
+        )
         assert not pm.busy and pm.waiting == 0 and pm.commands == []
     assert not pm.running
 
@@ -158,9 +163,9 @@ def test_process_modules_are_shared_by_nested_blocks(kb: KnowledgeBase) -> None:
         with process_modules_running(pm) as inner:
             assert outer == inner == (pm,)
         assert pm.running
-        with pytest.raises(ValueError, match="already taken"):
-            with process_modules_running(type("Other", (TorsoPM,), {})()):
-                pass
+        impostor = type("Other", (TorsoPM,), {})()
+        with pytest.raises(ValueError, match="already taken"), process_modules_running(impostor):
+            pass
     assert not pm.running
 
 

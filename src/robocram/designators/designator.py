@@ -226,7 +226,7 @@ class Designator:
         with _CHAIN_LOCK:
             out = [self.first_desig()]
             while out[-1]._successor is not None:
-                out.append(out[-1]._successor)  # type: ignore[arg-type]
+                out.append(out[-1]._successor)
             return out
 
 

@@ -33,7 +33,7 @@ class LocationDesignator(Designator):
         return kb if isinstance(kb, LocationResolver) else current_location_resolver()
 
     def _solutions(self, context: Any) -> Iterator[Any]:
-        return context.solutions(self)  # type: ignore[no-any-return]
+        return context.solutions(self)
 
     def _no_solution_error(self, context: Any) -> GroundingError:
         resolver: LocationResolver = context

@@ -24,7 +24,7 @@ from robocram.execution.task_context import checkpoint, wait_until
 
 
 class ProcessModule:
-    """Base class: set ``name`` (the atom used in ``matching_process_module/2``), implement ``execute``."""
+    """Base of process modules: set ``name`` (its atom in Prolog facts), implement ``execute``."""
 
     name: ClassVar[str] = ""
 
@@ -88,7 +88,7 @@ class ProcessModule:
             self._running = True
 
     def stop(self, timeout: float = 10.0) -> None:
-        """Refuse new commands, release waiting callers, let the current one end (<= ``timeout`` [s])."""
+        """Refuse new commands, release waiters, let the current one end (in ``timeout`` [s])."""
         with self._cond:
             self._running = False
             self._cond.notify_all()
