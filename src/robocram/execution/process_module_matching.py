@@ -53,7 +53,9 @@ def process_modules_running(*modules: ProcessModule) -> Iterator[tuple[ProcessMo
     outer = _RUNNING.get()
     for module in modules:
         if not isinstance(module, ProcessModule):
-            raise TypeError(f"process_modules_running takes ProcessModule instances, got {module!r}")
+            raise TypeError(
+                f"process_modules_running takes ProcessModule instances, got {module!r}"
+            )
         clash = next((m for m in outer if m.name == module.name and m is not module), None)
         if clash is not None:
             raise ValueError(
