@@ -7,6 +7,7 @@ and build the task tree as they run. Stopping is cooperative at stop points
 ``robocram.execution.failures``.
 """
 
+from robocram.execution.environment import Environment
 from robocram.execution.failure_handling import (
     FailureControl,
     RetryCounter,
@@ -18,6 +19,14 @@ from robocram.execution.failures import NotInTopLevel, PlanFailure
 from robocram.execution.fluent import Fluent, derive, fl_and, fl_not, fl_or
 from robocram.execution.par import par
 from robocram.execution.partial_order import partial_order
+from robocram.execution.perform import perform, register_plan
+from robocram.execution.process_module import ProcessModule
+from robocram.execution.process_module_matching import (
+    install_process_module_interface,
+    matching_process_modules,
+    process_modules_running,
+    running_process_modules,
+)
 from robocram.execution.pursue import pursue
 from robocram.execution.seq import seq
 from robocram.execution.tags import tag, tagged, with_tags
@@ -29,10 +38,12 @@ from robocram.execution.try_forms import try_all, try_in_order
 from robocram.execution.whenever import whenever
 
 __all__ = [
+    "Environment",
     "FailureControl",
     "Fluent",
     "NotInTopLevel",
     "PlanFailure",
+    "ProcessModule",
     "RetryCounter",
     "Task",
     "TaskSnapshot",
@@ -47,11 +58,17 @@ __all__ = [
     "fl_and",
     "fl_not",
     "fl_or",
+    "install_process_module_interface",
+    "matching_process_modules",
     "par",
     "partial_order",
+    "perform",
+    "process_modules_running",
     "pursue",
+    "register_plan",
     "retry",
     "run_top_level",
+    "running_process_modules",
     "seq",
     "sleep",
     "sub_task",
