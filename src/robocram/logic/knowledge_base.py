@@ -66,7 +66,7 @@ class KnowledgeBase:
         self._functions: dict[str, Callable[..., Any]] = {}
         self._groups: dict[str, tuple[set[Key], set[Key]]] = {}
         self._lock = threading.RLock()
-        self._queries: dict[str, tuple[Any, dict[str, int]]] = {}
+        self._queries: dict[str, tuple[Any, dict[str, int], int]] = {}
 
     def consult(self, text: str, group: str | None = None, extendable: Iterable[Any] = ()) -> None:
         """Load Prolog text as fact group `group` (replacing it); None appends to 'user'."""
@@ -245,8 +245,8 @@ class KnowledgeBase:
 
     def query(self, text: str, **bindings: Any) -> Iterator[dict[str, Any]]:
         """Lazily yield one dict per answer, mapping the query's free variable names to values."""
-        template, names = self._compile_query(text)
-        regs: list[Any] = [None] * (max(names.values(), default=-1) + 1)
+        template, names, nslots = self._compile_query(text)
+        regs: list[Any] = [None] * nslots
         for name, value in bindings.items():
             if name not in names:
                 raise PrologError(
@@ -262,7 +262,7 @@ class KnowledgeBase:
         for _ in Machine(self).solve(goal):
             yield {name: to_python(regs[i]) for name, i in shown}
 
-    def _compile_query(self, text: str) -> tuple[Any, dict[str, int]]:
+    def _compile_query(self, text: str) -> tuple[Any, dict[str, int], int]:
         cached = self._queries.get(text)
         if cached is None:
             term, varmap = read_query(text, self._ops)
@@ -270,7 +270,7 @@ class KnowledgeBase:
             for var in varmap.values():
                 slots[var] = Slot(len(slots))
             template = compile_term(term, slots)
-            cached = (template, {name: slots[v].i for name, v in varmap.items()})
+            cached = (template, {name: slots[v].i for name, v in varmap.items()}, len(slots))
             if len(self._queries) >= _CACHE_SIZE:
                 self._queries.clear()
             self._queries[text] = cached

@@ -1,0 +1,108 @@
+"""Control constructs: cut in its classic places, if-then-else, soft-cut, negation, catch."""
+
+from __future__ import annotations
+
+import pytest
+
+from robocram.logic import KnowledgeBase, PrologThrow, PrologTypeError
+
+
+@pytest.fixture()
+def kb() -> KnowledgeBase:
+    kb = KnowledgeBase()
+    kb.consult(
+        """
+        p(1). p(2). p(3).
+        first(X) :- p(X), !.
+        body_cut(X, Y) :- p(X), !, p(Y).
+        body_cut(9, 9).
+        ite(X, R) :- ( X > 1 -> R = big ; R = small ).
+        cut_in_then(X) :- ( true -> p(X), ! ; true ).
+        cut_in_cond(X) :- ( p(X), ! -> true ; true ).
+        cut_in_call(X) :- call((p(X), !)).
+        cut_in_call_all(X) :- call((p(X), !)) ; X = 4.
+        cut_in_naf(X) :- p(X), \\+ (p(Y), !, Y > 1).
+        transparent(X) :- ( p(X), X > 1, ! ; X = 0 ).
+        soft(X, Y) :- ( p(X) *-> Y = yes ; Y = no ).
+        soft_none(Y) :- ( fail *-> Y = yes ; Y = no ).
+        """
+    )
+    return kb
+
+
+def values(kb: KnowledgeBase, query: str, var: str = "X") -> list[object]:
+    return [a[var] for a in kb.query(query)]
+
+
+def test_cut_in_body_commits_to_first_solution(kb: KnowledgeBase) -> None:
+    assert values(kb, "first(X)") == [1]
+    assert [(a["X"], a["Y"]) for a in kb.query("body_cut(X, Y)")] == [(1, 1), (1, 2), (1, 3)]
+
+
+def test_if_then_else_and_cut_barriers(kb: KnowledgeBase) -> None:
+    assert values(kb, "ite(3, R)", "R") == ["big"]
+    assert values(kb, "ite(0, R)", "R") == ["small"]
+    assert values(kb, "cut_in_then(X)") == [1]
+    assert values(kb, "cut_in_cond(X)") == [1]
+    assert values(kb, "(p(X) -> true ; true)") == [1]
+    assert values(kb, "transparent(X)") == [2]
+
+
+def test_cut_inside_call_is_local(kb: KnowledgeBase) -> None:
+    assert values(kb, "cut_in_call(X)") == [1]
+    assert values(kb, "cut_in_call_all(X)") == [1, 4]
+    assert values(kb, "call((p(X), !)) ; X = 5") == [1, 5]
+
+
+def test_cut_inside_negation_is_local(kb: KnowledgeBase) -> None:
+    assert values(kb, "cut_in_naf(X)") == [1, 2, 3]
+    assert values(kb, "p(X), \\+ X = 2") == [1, 3]
+    assert kb.holds("\\+ fail") and not kb.holds("\\+ true")
+
+
+def test_soft_cut_keeps_condition_choicepoints(kb: KnowledgeBase) -> None:
+    assert [(a["X"], a["Y"]) for a in kb.query("soft(X, Y)")] == [(1, "yes"), (2, "yes"), (3, "yes")]
+    assert values(kb, "soft_none(Y)", "Y") == ["no"]
+
+
+def test_once_ignore_disjunction(kb: KnowledgeBase) -> None:
+    assert values(kb, "once(p(X))") == [1]
+    assert values(kb, "ignore(p(X))") == [1]
+    assert kb.first("ignore(fail)") == {}
+    assert values(kb, "(X = a ; X = b)") == ["a", "b"]
+    assert kb.holds("not(fail)") and not kb.holds("false")
+
+
+def test_call_n_adds_arguments(kb: KnowledgeBase) -> None:
+    assert values(kb, "G = p, call(G, X)") == [1, 2, 3]
+    assert kb.first("call(format(atom(A)), '~w-~w', [x, y])") == {"A": "x-y"}
+    assert kb.first("call(plus(1), 2, Z)") == {"Z": 3}
+
+
+def test_catch_and_throw(kb: KnowledgeBase) -> None:
+    assert kb.first("catch(throw(oops), E, true)") == {"E": "oops"}
+    answer = kb.first("catch(X is foo + 1, error(type_error(T, C), _), true)")
+    assert answer is not None and answer["T"] == "evaluable"
+    assert answer["C"].name == "/" and answer["C"].args == ("foo", 0)
+    assert kb.first("catch(X is 1 / 0, error(evaluation_error(E), _), true)")["E"] == "zero_divisor"  # type: ignore[index]
+    with pytest.raises(PrologThrow) as info:
+        kb.holds("catch(throw(a), b, true)")
+    assert info.value.term == "a"
+    assert kb.first("catch(catch(throw(in), out, R = 1), in, R = 2)") == {"R": 2}
+
+
+def test_catch_undoes_bindings_and_only_protects_its_goal(kb: KnowledgeBase) -> None:
+    assert kb.first("catch((X = 1, throw(e)), e, true)") is not None
+    answer = kb.first("catch((X = 1, throw(e)), e, Y = caught)")
+    assert answer is not None and answer["Y"] == "caught" and not isinstance(answer["X"], int)
+    with pytest.raises(PrologThrow):
+        kb.holds("catch(p(X), _, true), X > 1, throw(late)")
+    assert values(kb, "catch(p(X), _, true), X > 1") == [2, 3]
+
+
+def test_uncaught_iso_error_surfaces_as_python_exception(kb: KnowledgeBase) -> None:
+    with pytest.raises(PrologTypeError) as info:
+        kb.holds("X is a + 1")
+    assert info.value.term.args[0].name == "type_error"
+    with pytest.raises(PrologTypeError):
+        kb.holds("throw(error(type_error(integer, x), ctx))")
