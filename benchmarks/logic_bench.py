@@ -25,7 +25,8 @@ app([H|T], L, [H|R]) :- app(T, L, R).
 nrev([], []).
 nrev([H|T], R) :- nrev(T, RT), app(RT, [H], R).
 nrev_loop(0) :- !.
-nrev_loop(K) :- nrev([1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17,18,19,20,21,22,23,24,25,26,27,28,29,30], _),
+nrev_loop(K) :-
+    nrev([1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17,18,19,20,21,22,23,24,25,26,27,28,29,30], _),
     K1 is K - 1, nrev_loop(K1).
 queens(N, Qs) :- numlist(1, N, Ns), permutation_(Ns, Qs), safe(Qs).
 permutation_([], []).
@@ -74,12 +75,16 @@ def swi(nrev_runs: int, depth: int) -> dict[str, float] | None:
         return None
     driver = f"""
 :- initialization(main, main).
-time_goal(G, T) :- statistics(cputime, T0), (call(G) -> true ; true), statistics(cputime, T1), T is T1 - T0.
+time_goal(G, T) :-
+    statistics(cputime, T0), (call(G) -> true ; true), statistics(cputime, T1), T is T1 - T0.
 main :-
-    time_goal(nrev_loop({nrev_runs}), T1), L is {nrev_runs} * {NREV_LI} / max(T1, 1.0e-9),
+    time_goal(nrev_loop({nrev_runs}), T1),
+    L is {nrev_runs} * {NREV_LI} / max(T1, 1.0e-9),
     format("nrev_lips ~w~n", [L]),
-    time_goal((findall(Q, queens(8, Q), Qs), length(Qs, 92)), T2), format("queens_s ~w~n", [T2]),
-    time_goal(lookup_loop({LOOKUPS}), T3), U is T3 / {LOOKUPS} * 1.0e6, format("lookup_us ~w~n", [U]),
+    time_goal((findall(Q, queens(8, Q), Qs), length(Qs, 92)), T2),
+    format("queens_s ~w~n", [T2]),
+    time_goal(lookup_loop({LOOKUPS}), T3), U is T3 / {LOOKUPS} * 1.0e6,
+    format("lookup_us ~w~n", [U]),
     time_goal(count({depth}), T4), format("deep_s ~w~n", [T4]),
     statistics(globalused, G), statistics(localused, Lo), M is (G + Lo) / 1048576,
     format("deep_mib ~w~n", [M]).
@@ -87,7 +92,9 @@ main :-
     with tempfile.TemporaryDirectory() as tmp:
         path = Path(tmp) / "bench.pl"
         path.write_text(PROGRAM + FACTS + "\n" + driver)
-        out = subprocess.run(["swipl", str(path)], capture_output=True, text=True, timeout=600).stdout
+        out = subprocess.run(
+            ["swipl", str(path)], capture_output=True, text=True, timeout=600
+        ).stdout
     return {m.group(1): float(m.group(2)) for m in re.finditer(r"(\w+) ([\d.e+-]+)", out)}
 
 

@@ -61,7 +61,11 @@ def test_cut_inside_negation_is_local(kb: KnowledgeBase) -> None:
 
 
 def test_soft_cut_keeps_condition_choicepoints(kb: KnowledgeBase) -> None:
-    assert [(a["X"], a["Y"]) for a in kb.query("soft(X, Y)")] == [(1, "yes"), (2, "yes"), (3, "yes")]
+    assert [(a["X"], a["Y"]) for a in kb.query("soft(X, Y)")] == [
+        (1, "yes"),
+        (2, "yes"),
+        (3, "yes"),
+    ]
     assert values(kb, "soft_none(Y)", "Y") == ["no"]
 
 

@@ -36,8 +36,12 @@ def test_foreign_group_needs_extendable_declaration() -> None:
     with pytest.raises(FactGroupError) as info:
         kb.consult("robot_tool_frame(pr2, left, l_tool).", group="pr2_facts")
     assert "robot_tool_frame/3" in str(info.value) and "interface" in str(info.value)
-    kb.consult("robot_tool_frame(pr2, left, l_tool).", group="pr2", extendable=["robot_tool_frame/3"])
-    kb.consult("robot_tool_frame(hsrb, arm, hand).", group="hsrb", extendable=["robot_tool_frame/3"])
+    kb.consult(
+        "robot_tool_frame(pr2, left, l_tool).", group="pr2", extendable=["robot_tool_frame/3"]
+    )
+    kb.consult(
+        "robot_tool_frame(hsrb, arm, hand).", group="hsrb", extendable=["robot_tool_frame/3"]
+    )
     assert kb.first("robot_tool_frame(hsrb, A, F)") == {"A": "arm", "F": "hand"}
     kb.consult("", group="pr2")
     assert kb.first("robot_tool_frame(pr2, _, F)") is None
@@ -76,7 +80,7 @@ def test_query_bindings_are_python_objects_unified_by_identity_or_eq() -> None:
     assert kb.holds("visible(W, R, O)", W=world, O=mug)
     assert kb.first("visible(W, R, O)", W=world, O=mug) == {"R": "camera"}
     assert kb.first("X = Y", Y=mug)["X"] is mug  # type: ignore[index]
-    assert kb.first("X = [1, f(a, 2.5), \"str\", true]") == {
+    assert kb.first('X = [1, f(a, 2.5), "str", true]') == {
         "X": [1, Term("f", ("a", 2.5)), "str", "true"]
     }
     assert kb.holds("X == true", X=True) and kb.holds("X == 3", X=3)

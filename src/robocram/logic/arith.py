@@ -119,7 +119,7 @@ _UNARY: dict[str, Callable[[Any], Number]] = {
     "ceiling": math.ceil,
     "float_integer_part": lambda a: float(math.trunc(a)),
     "float_fractional_part": lambda a: a - math.trunc(a),
-    "\\": _int_only("\\", lambda a, b: ~a),
+    "\\": lambda a: ~int(_int_only("\\", lambda x, y: x)(a, 0)),
     "msb": lambda a: int(a).bit_length() - 1,
     "succ": lambda a: a + 1,
 }
@@ -143,7 +143,7 @@ def evaluate(t: Any) -> Number:
         t = t.ref
     tt = type(t)
     if tt is int or tt is float:
-        return t  # type: ignore[no-any-return]
+        return t
     if tt is Term:
         name, args = t[0], t[1]
         try:
@@ -152,7 +152,7 @@ def evaluate(t: Any) -> Number:
             if len(args) == 1 and name in _UNARY:
                 fn = _UNARY[name]
                 value = evaluate(args[0])
-                return fn(value, 0) if name == "\\" else fn(value)  # type: ignore[call-arg]
+                return fn(value)
         except ZeroDivisionError as err:
             raise PrologEvaluationError("zero_divisor", f"{name}: division by zero") from err
         except (ValueError, OverflowError) as err:
@@ -160,7 +160,9 @@ def evaluate(t: Any) -> Number:
         if name == "." and len(args) == 2 and args[1] == "[]":
             return evaluate(args[0])
         culprit = Term("/", (name, len(args)))
-        raise PrologTypeError("evaluable", culprit, f"{name}/{len(args)} is not an arithmetic function")
+        raise PrologTypeError(
+            "evaluable", culprit, f"{name}/{len(args)} is not an arithmetic function"
+        )
     if tt is str and t in _CONSTANTS:
         return _CONSTANTS[t]
     if tt is PString and len(t.text) == 1:

@@ -126,7 +126,9 @@ def _atom_string(m: Machine, a: Args) -> bool:
 
 @det("string_concat", 3)
 def _string_concat(m: Machine, a: Args) -> bool:
-    return m.unify(a[2], PString(text_of(a[0], "string_concat/3") + text_of(a[1], "string_concat/3")))
+    return m.unify(
+        a[2], PString(text_of(a[0], "string_concat/3") + text_of(a[1], "string_concat/3"))
+    )
 
 
 @det("upcase_atom", 2)
@@ -154,7 +156,9 @@ def _atomic_list_concat3(m: Machine, a: Args) -> Iterator[bool]:
     sep = text_of(a[1], "atomic_list_concat/3")
     items = deref(a[0])
     try:
-        parts = [text_of(x, "atomic_list_concat/3") for x in list_items(items, "atomic_list_concat/3")]
+        parts = [
+            text_of(x, "atomic_list_concat/3") for x in list_items(items, "atomic_list_concat/3")
+        ]
     except PrologInstantiationError:
         if not sep:
             raise
@@ -234,7 +238,11 @@ def _expand(d: str, num: str | None, take: Any, fmt: str) -> str:
         return chr(take(d)) * (int(num) if num else 1)
     if d == "s":
         value = take(d)
-        return value.text if type(value) is PString else "".join(_char(deref(x)) for x in list_items(value, "~s"))
+        return (
+            value.text
+            if type(value) is PString
+            else "".join(_char(deref(x)) for x in list_items(value, "~s"))
+        )
     if d == "~":
         return "~"
     if d == "i":
@@ -265,7 +273,9 @@ def _emit(m: Machine, sink: Any, text: str) -> bool:
     if sink in ("user_output", "user_error"):
         (sys.stdout if sink == "user_output" else sys.stderr).write(text)
         return True
-    raise PrologTypeError("output_sink", sink, f"format/3: {sink!r} is not atom(A), string(S) or user_output")
+    raise PrologTypeError(
+        "output_sink", sink, f"format/3: {sink!r} is not atom(A), string(S) or user_output"
+    )
 
 
 @det("format", 1, 2, 3)

@@ -76,7 +76,9 @@ def _retract(m: Machine, a: Args) -> Iterator[bool]:
                 if clause in pred.clauses:
                     if not pred.dynamic:
                         raise PrologPermissionError(
-                            "modify", "static_procedure", Term("/", (pred.name, pred.arity)),
+                            "modify",
+                            "static_procedure",
+                            Term("/", (pred.name, pred.arity)),
                             f"retract/1: {pred.indicator} is static; declare it dynamic",
                         )
                     pred.set_clauses([c for c in pred.clauses if c is not clause])

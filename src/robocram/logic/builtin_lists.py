@@ -76,7 +76,9 @@ def _sort4(m: Machine, a: Args) -> bool:
     key_index = need_int(a[0], "sort/4")
     order = deref(a[1])
     if order not in ("@<", "@>", "@=<", "@>="):
-        raise PrologDomainError("order", order, f"sort/4: order {order!r} is not @<, @>, @=< or @>=")
+        raise PrologDomainError(
+            "order", order, f"sort/4: order {order!r} is not @<, @>, @=< or @>="
+        )
     items = list_items(a[2], "sort/4")
 
     def key(item: Any) -> Any:

@@ -127,7 +127,9 @@ def _aggregate_all(m: Machine, a: Args) -> bool:
         return m.unify(a[2], count)
     if type(spec) is not Term or len(spec[1]) not in (1, 2):
         raise PrologDomainError(
-            "aggregate_spec", spec, f"aggregate_all/3: {spec!r} is not count, sum/1, max/1, min/1, bag/1 or set/1"
+            "aggregate_spec",
+            spec,
+            f"aggregate_all/3: {spec!r} is not count, sum/1, max/1, min/1, bag/1 or set/1",
         )
     kind, inner = spec[0], spec[1]
     if kind in ("max", "min") and len(inner) == 2:

@@ -66,6 +66,13 @@ def _compare_terms(a: Any, b: Any) -> int:
     return (ka > kb) - (ka < kb)
 
 
+def _ordering(test: Any) -> Any:
+    def run(m: Machine, a: Args) -> bool:
+        return bool(test(_compare_terms(a[0], a[1])))
+
+    return run
+
+
 for _name, _test in (
     ("==", lambda c: c == 0),
     ("\\==", lambda c: c != 0),
@@ -74,7 +81,7 @@ for _name, _test in (
     ("@=<", lambda c: c <= 0),
     ("@>=", lambda c: c >= 0),
 ):
-    det(_name, 2)(lambda m, a, _t=_test: _t(_compare_terms(a[0], a[1])))
+    det(_name, 2)(_ordering(_test))
 
 
 @det("compare", 3)
@@ -190,7 +197,7 @@ def _between(m: Machine, a: Args) -> Iterator[bool]:
             yield True
         return
     i = low
-    while high in ("inf", "infinite") or i <= high:  # type: ignore[operator]
+    while high in ("inf", "infinite") or i <= high:
         mark = len(m.trail)
         if m.unify(x, i):
             yield True

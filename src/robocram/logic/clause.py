@@ -39,7 +39,12 @@ class Clause:
     __slots__ = ("body_rev", "group", "head", "key", "nvars", "source")
 
     def __init__(
-        self, head: tuple[Any, ...], body_rev: tuple[Any, ...], nvars: int, group: str | None, source: Any
+        self,
+        head: tuple[Any, ...],
+        body_rev: tuple[Any, ...],
+        nvars: int,
+        group: str | None,
+        source: Any,
     ) -> None:
         self.head = head
         self.body_rev = body_rev
@@ -117,10 +122,7 @@ def unify_head(p: Any, t: Any, regs: list[Any], trail: list[Var]) -> bool:
         pargs = p.args
         if len(targs) != len(pargs):
             return False
-        for i in range(len(pargs)):
-            if not unify_head(pargs[i], targs[i], regs, trail):
-                return False
-        return True
+        return all(unify_head(pargs[i], targs[i], regs, trail) for i in range(len(pargs)))
     if type(t) is type(p) and type(p) is not Term:
         return bool(t == p)
     return unify(p, t, trail)

@@ -45,7 +45,9 @@ def add_args(goal: Any, extra: tuple[Any, ...]) -> Any:
     """Append arguments to a callable term, as call/N does."""
     while type(goal) is Var:
         if goal.ref is None:
-            raise PrologInstantiationError("call/N: the goal is unbound; bind it to a callable term")
+            raise PrologInstantiationError(
+                "call/N: the goal is unbound; bind it to a callable term"
+            )
         goal = goal.ref
     if type(goal) is str:
         return new_term(Term, (goal, extra)) if extra else goal
@@ -64,7 +66,9 @@ def _cut(b: int) -> Term:
     return new_term(Term, ("$cut", (b,)))
 
 
-def run_control(m: Machine, name: str, args: tuple[Any, ...], cutb: int, nxt: Any, cps: list[list[Any]]) -> Any:
+def run_control(
+    m: Machine, name: str, args: tuple[Any, ...], cutb: int, nxt: Any, cps: list[list[Any]]
+) -> Any:
     """Execute one control construct; return the next continuation or FAIL."""
     trail = m.trail
     if name == ";":

@@ -30,7 +30,7 @@ def to_prolog(value: Any) -> Any:
     """Convert a Python value to an engine term.
 
     >>> to_prolog([1, "a"])
-    [1, a]
+    [1,a]
     """
     t = type(value)
     if t is str or t is int or t is float or t is Var or t is PString:

@@ -32,7 +32,9 @@ class PrologError(Exception):
     def __init__(self, message: str, ball: Any = None) -> None:
         super().__init__(message)
         self.message = message
-        self.ball: Any = ball if ball is not None else Term("error", (Term("system_error", (message,)), message))
+        self.ball: Any = (
+            ball if ball is not None else Term("error", (Term("system_error", (message,)), message))
+        )
 
     @property
     def term(self) -> Any:

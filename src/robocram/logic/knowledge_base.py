@@ -13,8 +13,14 @@ from collections.abc import Callable, Iterable, Iterator
 from functools import cache
 from typing import Any
 
-from robocram.logic import arith, builtin_atoms, builtin_lists, builtin_solutions  # noqa: F401
-from robocram.logic import builtin_terms, python_predicates  # noqa: F401
+from robocram.logic import (  # noqa: F401  # noqa: F401
+    arith,
+    builtin_atoms,
+    builtin_lists,
+    builtin_solutions,
+    builtin_terms,
+    python_predicates,
+)
 from robocram.logic.clause import Slot, build, compile_term
 from robocram.logic.convert import to_prolog, to_python
 from robocram.logic.errors import FactGroupError, PrologError, PrologPermissionError
@@ -84,12 +90,16 @@ class KnowledgeBase:
             if not self.holds_term(goal):
                 raise PrologError(f"directive failed: {goal!r} (in fact group {group or 'user'!r})")
 
-    def add_fact_group(self, group: str | None, clauses: Iterable[Any], extendable: Iterable[Any] = ()) -> None:
+    def add_fact_group(
+        self, group: str | None, clauses: Iterable[Any], extendable: Iterable[Any] = ()
+    ) -> None:
         """Define fact group `group` from clause texts or terms (see `consult`)."""
-        compiled = []
+        compiled: list[tuple[Key, Any]] = []
         for clause in clauses:
             if isinstance(clause, str):
-                compiled.extend(compile_clause(t, group or "user") for t, _ in read_terms(clause, self._ops))
+                compiled.extend(
+                    compile_clause(t, group or "user") for t, _ in read_terms(clause, self._ops)
+                )
             else:
                 compiled.append(compile_clause(to_prolog(clause), group or "user"))
         shared = {parse_indicator(to_prolog(e)) for e in extendable}
@@ -136,7 +146,8 @@ class KnowledgeBase:
             "modify",
             "static_procedure",
             Term("/", (pred.name, pred.arity)),
-            f"{pred.indicator} is a built-in predicate and cannot be redefined; choose another name",
+            f"{pred.indicator} is a built-in predicate and cannot be redefined;"
+            " choose another name",
         )
 
     def _user_pred(self, key: Key) -> Pred:
@@ -149,7 +160,11 @@ class KnowledgeBase:
 
     def _declaration(self, goal: Any, group: str | None) -> bool:
         """Handle dynamic/discontiguous/op directives; False for goals to run."""
-        if type(goal) is not Term or len(goal[1]) != 1 or goal[0] not in ("dynamic", "discontiguous"):
+        if (
+            type(goal) is not Term
+            or len(goal[1]) != 1
+            or goal[0] not in ("dynamic", "discontiguous")
+        ):
             if type(goal) is Term and goal[0] == "op" and len(goal[1]) == 3:
                 self.holds_term(goal)
                 return True
@@ -169,12 +184,17 @@ class KnowledgeBase:
         key, compiled = compile_clause(to_prolog(clause), None)
         with self._lock:
             pred = self._preds.get(key)
-            if pred is not None and not pred.dynamic and (pred.clauses or pred.system or pred.kind != USER):
+            if (
+                pred is not None
+                and not pred.dynamic
+                and (pred.clauses or pred.system or pred.kind != USER)
+            ):
                 raise PrologPermissionError(
                     "modify",
                     "static_procedure",
                     Term("/", key),
-                    f"{pred.indicator} is static (loaded from fact group '{pred.owner}'); declare it"
+                    f"{pred.indicator} is static (loaded from fact group '{pred.owner}');"
+                    " declare it"
                     f" with ':- dynamic {pred.indicator}.' to assert into it",
                 )
             pred = self._user_pred(key)
@@ -201,7 +221,12 @@ class KnowledgeBase:
 
     def _clause_terms(self, clause: Any) -> list[Any]:
         if isinstance(clause, str):
-            return [t for t, _ in read_terms(clause if clause.rstrip().endswith(".") else clause + ".", self._ops)]
+            return [
+                t
+                for t, _ in read_terms(
+                    clause if clause.rstrip().endswith(".") else clause + ".", self._ops
+                )
+            ]
         return [clause]
 
     def predicate(self, name: str, arity: int) -> Callable[[PyPredicate], PyPredicate]:
@@ -241,7 +266,10 @@ class KnowledgeBase:
         names = {p.name for p in preds}
         close = difflib.get_close_matches(name, names, n=3, cutoff=0.75)
         near = [p.indicator for p in preds if p.name in close and p.name != name]
-        return sorted(set(same))[:3] + sorted(set(near), key=lambda s: s.split("/")[0] not in close[:1])[:3]
+        return (
+            sorted(set(same))[:3]
+            + sorted(set(near), key=lambda s: s.split("/")[0] not in close[:1])[:3]
+        )
 
     def query(self, text: str, **bindings: Any) -> Iterator[dict[str, Any]]:
         """Lazily yield one dict per answer, mapping the query's free variable names to values."""
@@ -258,7 +286,9 @@ class KnowledgeBase:
         shown = [(n, i) for n, i in names.items() if n not in bindings and not n.startswith("_")]
         return self._answers(goal, regs, shown)
 
-    def _answers(self, goal: Any, regs: list[Any], shown: list[tuple[str, int]]) -> Iterator[dict[str, Any]]:
+    def _answers(
+        self, goal: Any, regs: list[Any], shown: list[tuple[str, int]]
+    ) -> Iterator[dict[str, Any]]:
         for _ in Machine(self).solve(goal):
             yield {name: to_python(regs[i]) for name, i in shown}
 

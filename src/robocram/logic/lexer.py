@@ -115,7 +115,11 @@ def _read_number(text: str, i: int) -> tuple[int | float, int]:
             return ord("'"), j + 2
         if j < n:
             return ord(text[j]), j + 1
-    for prefix, base, digits in (("0x", 16, "0123456789abcdefABCDEF"), ("0o", 8, "01234567"), ("0b", 2, "01")):
+    for prefix, base, digits in (
+        ("0x", 16, "0123456789abcdefABCDEF"),
+        ("0o", 8, "01234567"),
+        ("0b", 2, "01"),
+    ):
         if text.startswith(prefix, i) and i + 2 < n and text[i + 2] in digits:
             j = i + 2
             while j < n and text[j] in digits:
@@ -169,14 +173,14 @@ def tokenize(text: str) -> list[Token]:
                 i += 1
             tokens.append(Token("atom", text[start:i], start, layout))
         elif c == "'":
-            value, i = _read_quoted(text, i + 1, "'")
-            tokens.append(Token("qatom", value, start, layout))
+            quoted, i = _read_quoted(text, i + 1, "'")
+            tokens.append(Token("qatom", quoted, start, layout))
         elif c == '"':
-            value, i = _read_quoted(text, i + 1, '"')
-            tokens.append(Token("str", value, start, layout))
+            quoted, i = _read_quoted(text, i + 1, '"')
+            tokens.append(Token("str", quoted, start, layout))
         elif c == "`":
-            value, i = _read_quoted(text, i + 1, "`")
-            tokens.append(Token("bq", value, start, layout))
+            quoted, i = _read_quoted(text, i + 1, "`")
+            tokens.append(Token("bq", quoted, start, layout))
         elif c == "." and (i + 1 >= n or text[i + 1].isspace() or text[i + 1] == "%"):
             tokens.append(Token("end", ".", start, layout))
             i += 1

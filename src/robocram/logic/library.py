@@ -45,7 +45,9 @@ exclude(P, [H|T], R) :- ( call(P, H) -> R = R1 ; R = [H|R1] ), exclude(P, T, R1)
 include(_, [], []).
 include(P, [H|T], R) :- ( call(P, H) -> R = [H|R1] ; R = R1 ), include(P, T, R1).
 partition(_, [], [], []).
-partition(P, [H|T], I, E) :- ( call(P, H) -> I = [H|I1], E = E1 ; I = I1, E = [H|E1] ), partition(P, T, I1, E1).
+partition(P, [H|T], I, E) :-
+    ( call(P, H) -> I = [H|I1], E = E1 ; I = I1, E = [H|E1] ),
+    partition(P, T, I1, E1).
 maplist(_, []).
 maplist(P, [A|As]) :- call(P, A), maplist(P, As).
 maplist(_, [], []).
@@ -62,7 +64,13 @@ foldl(G, L1, L2, A0, A) :- '$foldl'(L1, L2, G, A0, A).
 '$foldl'([X|Xs], [Y|Ys], G, A0, A) :- call(G, X, Y, A0, A1), '$foldl'(Xs, Ys, G, A1, A).
 sumlist(L, S) :- sum_list(L, S).
 forall(C, A) :- \+ (C, \+ A).
-predsort(P, L, Sorted) :- length(L, N), ( N < 2 -> '$predsort_small'(P, L, Sorted) ; H is N // 2, length(F, H), append(F, B, L), predsort(P, F, S1), predsort(P, B, S2), '$predmerge'(P, S1, S2, Sorted) ).
+predsort(P, L, Sorted) :-
+    length(L, N),
+    (   N < 2
+    ->  '$predsort_small'(P, L, Sorted)
+    ;   H is N // 2, length(F, H), append(F, B, L),
+        predsort(P, F, S1), predsort(P, B, S2), '$predmerge'(P, S1, S2, Sorted)
+    ).
 '$predsort_small'(_, [], []).
 '$predsort_small'(_, [X], [X]).
 '$predmerge'(_, [], L, L) :- !.

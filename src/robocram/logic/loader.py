@@ -45,12 +45,15 @@ def compile_clause(term: Any, group: str | None) -> tuple[tuple[str, int], Claus
         head, body = term, "true"
     if type(head) is Var:
         raise PrologInstantiationError("clause head is an unbound variable; write name(Args...)")
+    args: tuple[Any, ...]
     if type(head) is str:
         name, args = head, ()
     elif type(head) is Term:
         name, args = head[0], head[1]
     else:
-        raise PrologTypeError("callable", head, f"clause head {head!r} is not an atom or compound term")
+        raise PrologTypeError(
+            "callable", head, f"clause head {head!r} is not an atom or compound term"
+        )
     slots: dict[Var, Slot] = {}
     head_t = tuple([compile_term(a, slots) for a in args])
     body_t = [compile_term(g, slots) for g in conjuncts(body)]
@@ -68,4 +71,6 @@ def parse_indicator(spec: Any) -> tuple[str, int]:
         name, arity = deref(spec[1][0]), deref(spec[1][1])
         if type(name) is str and type(arity) is int:
             return name, arity
-    raise PrologTypeError("predicate_indicator", spec, f"{spec!r} is not a predicate indicator name/arity")
+    raise PrologTypeError(
+        "predicate_indicator", spec, f"{spec!r} is not a predicate indicator name/arity"
+    )

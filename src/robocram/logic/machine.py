@@ -28,6 +28,7 @@ if TYPE_CHECKING:
 
 __all__ = ["Machine"]
 
+
 class Machine:
     """Per-query solver state: the trail shared by nested solves, and the knowledge base."""
 
@@ -164,7 +165,9 @@ class Machine:
                     self._push_python(p, args, nxt, cps)
                     fail = True
                     continue
-                cands = p.clauses if not args or len(p.clauses) < 2 else p.candidates(deref1(args[0]))
+                cands = (
+                    p.clauses if not args or len(p.clauses) < 2 else p.candidates(deref1(args[0]))
+                )
                 n = len(cands)
                 if n == 0:
                     fail = True
@@ -195,7 +198,9 @@ class Machine:
         """Dispatch a goal that is a bound variable; raise for unbound or non-callable."""
         while type(goal) is Var:
             if goal.ref is None:
-                raise PrologInstantiationError("a goal is an unbound variable; bind it before calling")
+                raise PrologInstantiationError(
+                    "a goal is an unbound variable; bind it before calling"
+                )
             goal = goal.ref
         if type(goal) in (Term, str):
             return (goal, cutb, nxt)
@@ -211,7 +216,6 @@ class Machine:
             cps.append([CLAUSES, len(trail), args, nxt, cands, 0, len(cands)])
         assert p.pyfn is not None
         cps.append([GEN, len(trail), python_solutions(self, p, args), nxt])
-
 
 
 def deref1(t: Any) -> Any:

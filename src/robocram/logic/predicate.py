@@ -72,10 +72,10 @@ class Pred:
             for bucket in index.values():
                 bucket.append(clause)
         else:
-            bucket = index.get(clause.key)
-            if bucket is None:
-                bucket = index[clause.key] = list(self.varclauses)
-            bucket.append(clause)
+            found = index.get(clause.key)
+            if found is None:
+                found = index[clause.key] = list(self.varclauses)
+            found.append(clause)
 
     def build_index(self) -> dict[Any, list[Clause]]:
         """Group clauses by first-argument key; variable-first clauses join every bucket."""
@@ -87,10 +87,10 @@ class Pred:
                 for bucket in index.values():
                     bucket.append(clause)
             else:
-                bucket = index.get(clause.key)
-                if bucket is None:
-                    bucket = index[clause.key] = list(varclauses)
-                bucket.append(clause)
+                found = index.get(clause.key)
+                if found is None:
+                    found = index[clause.key] = list(varclauses)
+                found.append(clause)
         self.varclauses = varclauses
         self.index = index
         return index

@@ -41,9 +41,11 @@ def python_solutions(m: Machine, p: Pred, args: tuple[Any, ...]) -> Iterator[boo
 def _resolve_callable(m: Machine, f: Any, what: str) -> Callable[..., Any]:
     f = deref(f)
     if type(f) is Var:
-        raise PrologInstantiationError(f"{what}: the function is unbound; pass a callable or a name")
+        raise PrologInstantiationError(
+            f"{what}: the function is unbound; pass a callable or a name"
+        )
     if callable(f) and not isinstance(f, str):
-        return f  # type: ignore[no-any-return]
+        return f
     fn = m.kb._functions.get(f) if isinstance(f, str) else None
     if fn is None:
         known = ", ".join(sorted(m.kb._functions)) or "none registered"

@@ -170,7 +170,7 @@ def read_terms(text: str, ops: OperatorTable | None = None) -> Iterator[tuple[An
     """Yield each clause of `text` with its variable names.
 
     >>> [t for t, _ in read_terms("a. b :- c.")]
-    [a, (b:-c)]
+    ['a', b :- c]
     """
     parser = _Parser(text, ops or OperatorTable())
     while parser.peek().kind != "eof":

@@ -107,7 +107,7 @@ def make_list(items: Iterable[Any], tail: Any = NIL) -> Any:
     """Build a Prolog list (`'.'/2` cells) from engine terms.
 
     >>> make_list([1, 2])
-    [1, 2]
+    [1,2]
     """
     result = tail
     for item in reversed(list(items)):

@@ -66,8 +66,11 @@ def _compound(term: Term, quoted: bool, max_prec: int) -> str:
         sep = " " if name[0].isalpha() or name in ("->", ":-", "*->", "-->") else ""
         text = f"{left}{sep}{op}{sep}{right}"
         return f"({text})" if prec > max_prec else text
-    if len(args) == 1 and name in _OPS.prefix and name not in ("-", "+") or (
-        len(args) == 1 and name in ("-", "+") and type(args[0]) not in (int, float)
+    if (
+        len(args) == 1
+        and name in _OPS.prefix
+        and name not in ("-", "+")
+        or (len(args) == 1 and name in ("-", "+") and type(args[0]) not in (int, float))
     ):
         prec, kind = _OPS.prefix[name]
         ap = prec if kind == "fy" else prec - 1
