@@ -1,0 +1,112 @@
+"""Arms in projection: move the tool frame by IK, or set the arm joints directly.
+
+``move_tcp`` transforms the target into the robot's root link and solves IK seeded with
+the current joints, first with the torso held, then (as CRAM's projection resamples the
+torso) with the torso free. The solution is applied and the reached tool pose checked
+against the target within 1 cm / 0.05 rad, so a silent miss is impossible.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+from robocram.execution.failures import (
+    ManipulationGoalNotReached,
+    ManipulationPoseUnreachable,
+)
+from robocram.kinematics import IKResult, solve_ik
+from robocram.projection.errors import unknown_name
+from robocram.projection.projected_robot import ProjectedRobot
+from robocram.tf import Pose, PoseLike, PoseStamped
+
+POSITION_TOLERANCE = 0.01  # [m] between the reached tool frame and the target
+ORIENTATION_TOLERANCE = 0.05  # [rad]
+IK_TIMEOUT = 0.15  # [s] per attempt
+
+
+def _solve(robot: ProjectedRobot, arm: str, target_in_base: Pose) -> IKResult:
+    desc = robot.description
+    seed = robot.world.joint_states(robot.name)
+    attempts = [False, True] if desc.torso_joint is not None else [False]
+    result = IKResult(False)
+    with robot.ik_lock:
+        for use_torso in attempts:
+            result = solve_ik(
+                desc, arm, target_in_base, seed=seed, use_torso=use_torso, timeout=IK_TIMEOUT
+            )
+            if result.success:
+                break
+    return result
+
+
+def move_tcp(robot: ProjectedRobot, arm: str, target: PoseStamped | PoseLike) -> Pose:
+    """Put ``arm``'s tool frame at ``target`` (map unless stamped); return it in ``map``.
+
+    Raises:
+        ManipulationPoseUnreachable: IK found no solution; the arm does not move.
+        ManipulationGoalNotReached: the applied joints miss the target (limits clamped).
+    """
+    spec = robot.arm(arm)
+    target_in_map = robot.in_map(target)
+    result = _solve(robot, arm, robot.base_pose().inverse() * target_in_map)
+    if not result.success:
+        raise ManipulationPoseUnreachable(
+            f"{robot.name}'s {arm} arm cannot reach {target_in_map} (map); best IK "
+            f"configuration misses by {result.position_error:.3f} m, "
+            f"{result.orientation_error:.3f} rad",
+            arm=arm,
+            target=target,
+        )
+    robot.world.set_joint_states(robot.name, dict(result.joint_positions))
+    reached = robot.world.link_pose(robot.name, spec.tool_frame)
+    error = (reached.distance_to(target_in_map), reached.angle_to(target_in_map))
+    if error[0] > POSITION_TOLERANCE or error[1] > ORIENTATION_TOLERANCE:
+        raise ManipulationGoalNotReached(
+            f"{robot.name}'s {arm} tool frame stopped {error[0]:.3f} m / {error[1]:.3f} rad "
+            "from its target",
+            arm=arm,
+            target=target,
+            reached=reached,
+            error=error,
+        )
+    return reached
+
+
+def move_joints(robot: ProjectedRobot, arm: str, configuration: object) -> dict[str, float]:
+    """Set ``arm``'s joints from a mapping or ``[[joint, value], ...]``; return what was set.
+
+    Raises:
+        ManipulationGoalNotReached: a value was outside its limits (the clamped one is set).
+    """
+    spec = robot.arm(arm)
+    values = joint_values(configuration)
+    allowed = set(spec.joints)
+    for joint in values:
+        if joint not in allowed:
+            raise unknown_name("joint", joint, f"{robot.name}'s {arm} arm", allowed)
+    clamped = robot.world.set_joint_states(robot.name, values)
+    reached = {j: robot.world.joint_states(robot.name)[j] for j in values}
+    if clamped:
+        culprits = {c.name: (c.requested, c.lower, c.upper) for c in clamped}
+        raise ManipulationGoalNotReached(
+            f"joint goals (value, lower, upper) {culprits} of {robot.name}'s {arm} arm are "
+            "outside the limits; clamped values applied",
+            arm=arm,
+            target=values,
+            reached=reached,
+        )
+    return reached
+
+
+def joint_values(configuration: object) -> dict[str, float]:
+    """Read ``{joint: value}`` from a mapping or a list of ``[joint, value]`` pairs."""
+    if isinstance(configuration, Mapping):
+        return {str(k): float(v) for k, v in configuration.items()}
+    if isinstance(configuration, list | tuple) and all(
+        isinstance(p, list | tuple) and len(p) == 2 for p in configuration
+    ):
+        return {str(k): float(v) for k, v in configuration}
+    raise ValueError(
+        f"an arm configuration is a {{joint: value}} mapping or [[joint, value], ...], "
+        f"got {configuration!r}"
+    )

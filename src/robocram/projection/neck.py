@@ -1,0 +1,137 @@
+"""Looking in projection: turn the head so the camera's optical axis points at a target.
+
+Pan-tilt heads (PR2, HSR) are aimed joint by joint: each joint turns by the angle between
+the optical axis and the direction to the target, both projected onto the plane normal to
+the joint axis; a few rounds absorb the camera's offset from the axes. Angles outside the
+limits are clamped and applied, then ``PtuGoalNotReached`` is raised (CRAM's semantics).
+A neck that is an arm (Boxy) is aimed by IK: the camera keeps its position and turns to
+face the target; ``PtuGoalUnreachable`` if IK finds no solution.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from robocram.execution.failures import PtuGoalNotReached, PtuGoalUnreachable
+from robocram.kinematics import solve_ik
+from robocram.projection.errors import ProjectionError
+from robocram.projection.projected_robot import ProjectedRobot
+from robocram.tf import Pose, Vector3
+from robocram.tf import quaternion as quat
+from robocram.world import JointLimits
+
+AIM_ROUNDS = 6
+AIM_TOLERANCE = 1e-4  # [rad] a round changing the joints less than this ends the aiming
+
+
+def look_at(robot: ProjectedRobot, target_in_map: Vector3) -> dict[str, float]:
+    """Point the robot's first camera at ``target_in_map`` [m]; return the neck joints set."""
+    desc = robot.description
+    if not desc.cameras:
+        raise ProjectionError(f"{robot.name} has no camera to look with")
+    if desc.pan_tilt is not None:
+        return _aim_pan_tilt(robot, target_in_map)
+    if desc.neck_arm is not None:
+        return _aim_neck_arm(robot, target_in_map)
+    raise ProjectionError(
+        f"{robot.name} has neither a pan-tilt unit nor a neck arm; it cannot look around"
+    )
+
+
+def _signed_angle(a: np.ndarray, b: np.ndarray, axis: np.ndarray) -> float:
+    """Angle [rad] turning ``a`` onto ``b`` about ``axis``, both projected normal to it."""
+    pa = a - axis * float(a @ axis)
+    pb = b - axis * float(b @ axis)
+    if np.linalg.norm(pa) < 1e-9 or np.linalg.norm(pb) < 1e-9:
+        return 0.0
+    return math.atan2(float(np.cross(pa, pb) @ axis), float(pa @ pb))
+
+
+def _nearest_in_limits(value: float, limits: JointLimits) -> float:
+    """``value`` or a 2*pi turn of it that lies within ``limits``, else ``value``."""
+    for candidate in (value, value - 2 * math.pi, value + 2 * math.pi):
+        if limits.lower <= candidate <= limits.upper:
+            return candidate
+    return value
+
+
+def _aim_joint(robot: ProjectedRobot, joint: str, child_link: str, target: np.ndarray) -> float:
+    """The value of ``joint`` that turns the optical axis towards ``target``, unclamped."""
+    world, desc = robot.world, robot.description
+    assert desc.model is not None  # a robot in a world always has its model
+    spec = desc.model.joints[joint]
+    link = world.link_pose(robot.name, child_link).matrix()
+    axis = link[:3, :3] @ np.asarray(spec.axis, float)
+    axis /= np.linalg.norm(axis)
+    camera = world.link_pose(robot.name, desc.cameras[0].frame).matrix()
+    optical = camera[:3, 2]
+    wanted = target - camera[:3, 3]
+    current = world.joint_states(robot.name)[joint]
+    turn = _signed_angle(optical, wanted, axis)
+    return _nearest_in_limits(current + turn, world.joint_limits(robot.name, joint))
+
+
+def _aim_pan_tilt(robot: ProjectedRobot, target_in_map: Vector3) -> dict[str, float]:
+    pt = robot.description.pan_tilt
+    assert pt is not None  # checked by look_at
+    world, target = robot.world, np.asarray(target_in_map, float)
+    wanted: dict[str, float] = {}
+    for _ in range(AIM_ROUNDS):
+        before = world.joint_states(robot.name)
+        for joint, link in ((pt.pan_joint, pt.pan_link), (pt.tilt_joint, pt.tilt_link)):
+            wanted[joint] = _aim_joint(robot, joint, link, target)
+            world.set_joint_states(robot.name, {joint: wanted[joint]})
+        after = world.joint_states(robot.name)
+        if max(abs(after[j] - before[j]) for j in wanted) < AIM_TOLERANCE:
+            break
+    clamped = world.set_joint_states(robot.name, wanted)
+    reached = {j: world.joint_states(robot.name)[j] for j in wanted}
+    if clamped:
+        limits = {c.name: (c.lower, c.upper) for c in clamped}
+        raise PtuGoalNotReached(
+            f"looking at {tuple(target_in_map)} needs {wanted}, outside the limits {limits} "
+            f"of {robot.name}'s head; turned to {reached} instead",
+            target=tuple(target_in_map),
+            reached=reached,
+        )
+    return reached
+
+
+def looking_orientation(camera_position: Vector3, target: Vector3) -> quat.Quaternion:
+    """Optical-frame orientation (z forward, x right, y down) facing ``target`` from the camera."""
+    z = np.subtract(target, camera_position).astype(float)
+    if np.linalg.norm(z) < 1e-6:
+        raise ProjectionError(f"look target {target} is at the camera; look somewhere else")
+    z /= np.linalg.norm(z)
+    x = np.cross((0.0, 0.0, -1.0), z)
+    if np.linalg.norm(x) < 1e-6:  # looking straight up or down: any right-hand axis works
+        x = np.array((0.0, -1.0, 0.0))
+    x /= np.linalg.norm(x)
+    y = np.cross(z, x)
+    m = np.eye(4)
+    m[:3, :3] = np.column_stack((x, y, z))
+    return Pose.from_matrix(m).orientation
+
+
+def _aim_neck_arm(robot: ProjectedRobot, target_in_map: Vector3) -> dict[str, float]:
+    desc, world = robot.description, robot.world
+    neck = desc.neck_arm
+    assert neck is not None  # checked by look_at
+    frame = desc.cameras[0].frame
+    camera_now = world.link_pose(robot.name, frame).position
+    view = Pose(camera_now, looking_orientation(camera_now, target_in_map))
+    target_in_base = robot.base_pose().inverse() * view
+    seed = world.joint_states(robot.name)
+    with robot.ik_lock:
+        result = solve_ik(desc, neck, target_in_base, seed=seed, frame=frame, timeout=0.3)
+    if not result.success:
+        raise PtuGoalUnreachable(
+            f"{robot.name}'s neck cannot point {frame} at {tuple(target_in_map)} from "
+            f"{camera_now} (IK error {result.position_error:.3f} m, "
+            f"{result.orientation_error:.3f} rad)",
+            target=tuple(target_in_map),
+        )
+    world.set_joint_states(robot.name, dict(result.joint_positions))
+    return {j: world.joint_states(robot.name)[j] for j in result.joint_positions}

@@ -1,0 +1,93 @@
+"""One robot of a world as the process modules see it: its body, description and frames.
+
+Low-level functions take a :class:`ProjectedRobot`. It resolves stamped poses against
+the world as it is now (``map``, any link of the robot, any object name), so process
+modules never act on a stale transform snapshot, and it owns the lock that serialises
+IK queries for this robot (the kinematics layer is not thread-safe).
+"""
+
+from __future__ import annotations
+
+import threading
+from dataclasses import dataclass, field
+
+from robocram.projection.errors import ProjectionError, unknown_name
+from robocram.robots import ArmDescription, RobotDescription
+from robocram.tf import Pose, PoseLike, PoseStamped
+from robocram.world import RobotObject, World
+
+MAP_FRAME = "map"
+
+
+@dataclass(frozen=True)
+class ProjectedRobot:
+    """A robot in a projection world, with a lock guarding its IK solvers."""
+
+    world: World
+    name: str
+    ik_lock: threading.Lock = field(default_factory=threading.Lock, compare=False)
+
+    @classmethod
+    def of(cls, world: World, robot: str | RobotObject | None = None) -> ProjectedRobot:
+        """The robot ``robot`` of ``world`` (default: its only robot)."""
+        robots = world.robots()
+        if robot is None:
+            if len(robots) != 1:
+                names = [r.name for r in robots]
+                raise ProjectionError(
+                    f"the world has {len(robots)} robots {names}; name the one to project"
+                )
+            return cls(world, robots[0].name)
+        name = robot.name if isinstance(robot, RobotObject) else robot
+        if name not in world or not any(r.name == name for r in robots):
+            raise unknown_name("robot", name, "the world", [r.name for r in robots])
+        return cls(world, name)
+
+    @property
+    def body(self) -> RobotObject:
+        """The robot's handle in the world."""
+        return self.world.robot(self.name)
+
+    @property
+    def description(self) -> RobotDescription:
+        """The robot's checked description."""
+        return self.body.description
+
+    @property
+    def base_frame(self) -> str:
+        """The URDF root link, the frame IK targets and perceived poses are given in."""
+        model = self.description.model
+        return model.root_link if model is not None else self.description.base_frame
+
+    def arm(self, arm: str) -> ArmDescription:
+        """The arm called ``arm``, or an error naming the robot's arms."""
+        spec = self.description.arms.get(arm)
+        if spec is None or arm == self.description.neck_arm:
+            arms = [a for a in self.description.arms if a != self.description.neck_arm]
+            raise unknown_name("arm", arm, self.name, arms)
+        return spec
+
+    def base_pose(self) -> Pose:
+        """The pose of the robot's root link in ``map``."""
+        return self.world.pose(self.name)
+
+    def frame_pose(self, frame: str) -> Pose:
+        """Pose of ``frame`` (``map``, a link of this robot, or an object) in ``map``."""
+        if frame == MAP_FRAME:
+            return Pose()
+        if frame in self.body.link_index:
+            return self.world.link_pose(self.name, frame)
+        if frame in self.world:
+            return self.world.pose(frame)
+        known = [MAP_FRAME, *self.body.link_index, *(o.name for o in self.world.objects())]
+        raise unknown_name("frame", frame, f"the world of {self.name}", known)
+
+    def in_map(self, pose: PoseStamped | PoseLike) -> Pose:
+        """A stamped pose (any known frame) or a plain pose (taken as ``map``) in ``map``."""
+        if isinstance(pose, PoseStamped):
+            return self.frame_pose(pose.frame_id) * pose.pose
+        return Pose.coerce(pose)
+
+    def in_base(self, pose: PoseStamped | PoseLike) -> Pose:
+        """The same pose relative to the robot's root link."""
+        return self.base_pose().inverse() * self.in_map(pose)
