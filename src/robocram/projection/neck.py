@@ -4,8 +4,9 @@ Pan-tilt heads (PR2, HSR) are aimed joint by joint: each joint turns by the angl
 the optical axis and the direction to the target, both projected onto the plane normal to
 the joint axis; a few rounds absorb the camera's offset from the axes. Angles outside the
 limits are clamped and applied, then ``PtuGoalNotReached`` is raised (CRAM's semantics).
-A neck that is an arm (Boxy) is aimed by IK: the camera keeps its position and turns to
-face the target; ``PtuGoalUnreachable`` if IK finds no solution.
+A neck that is an arm (Boxy) is aimed by IK: the camera turns to face the target from
+its current place, else from the neck's parking place or a step away from the current
+one; ``PtuGoalUnreachable`` if IK finds no solution for any of them.
 """
 
 from __future__ import annotations
@@ -15,7 +16,7 @@ import math
 import numpy as np
 
 from robocram.execution.failures import PtuGoalNotReached, PtuGoalUnreachable
-from robocram.kinematics import solve_ik
+from robocram.kinematics import forward_kinematics, solve_ik
 from robocram.projection.errors import ProjectionError
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.tf import Pose, Vector3
@@ -24,6 +25,7 @@ from robocram.world import JointLimits
 
 AIM_ROUNDS = 6
 AIM_TOLERANCE = 1e-4  # [rad] a round changing the joints less than this ends the aiming
+NECK_STEP = 0.15  # [m] how far from its current place a neck arm may move the camera
 
 
 def look_at(robot: ProjectedRobot, target_in_map: Vector3) -> dict[str, float]:
@@ -115,23 +117,40 @@ def looking_orientation(camera_position: Vector3, target: Vector3) -> quat.Quate
     return Pose.from_matrix(m).orientation
 
 
+def _camera_positions(robot: ProjectedRobot, frame: str) -> list[Vector3]:
+    """Where the neck may hold the camera: now, at the neck's parking pose, and nearby."""
+    desc, world = robot.description, robot.world
+    now = world.link_pose(robot.name, frame).position
+    places = [now]
+    if desc.neck_parking:
+        parked = forward_kinematics(desc, dict(desc.neck_parking), frame)
+        places.append((robot.base_pose() * parked).position)
+    for axis in range(3):
+        for sign in (1.0, -1.0):
+            offset = [0.0, 0.0, 0.0]
+            offset[axis] = sign * NECK_STEP
+            places.append(tuple(p + o for p, o in zip(now, offset, strict=True)))  # type: ignore[misc]
+    return places
+
+
 def _aim_neck_arm(robot: ProjectedRobot, target_in_map: Vector3) -> dict[str, float]:
     desc, world = robot.description, robot.world
     neck = desc.neck_arm
     assert neck is not None  # checked by look_at
     frame = desc.cameras[0].frame
-    camera_now = world.link_pose(robot.name, frame).position
-    view = Pose(camera_now, looking_orientation(camera_now, target_in_map))
-    target_in_base = robot.base_pose().inverse() * view
     seed = world.joint_states(robot.name)
-    with robot.ik_lock:
-        result = solve_ik(desc, neck, target_in_base, seed=seed, frame=frame, timeout=0.3)
-    if not result.success:
-        raise PtuGoalUnreachable(
-            f"{robot.name}'s neck cannot point {frame} at {tuple(target_in_map)} from "
-            f"{camera_now} (IK error {result.position_error:.3f} m, "
-            f"{result.orientation_error:.3f} rad)",
-            target=tuple(target_in_map),
-        )
-    world.set_joint_states(robot.name, dict(result.joint_positions))
-    return {j: world.joint_states(robot.name)[j] for j in result.joint_positions}
+    errors = []
+    for place in _camera_positions(robot, frame):
+        view = Pose(place, looking_orientation(place, target_in_map))
+        target_in_base = robot.base_pose().inverse() * view
+        with robot.ik_lock:
+            result = solve_ik(desc, neck, target_in_base, seed=seed, frame=frame, timeout=0.1)
+        if result.success:
+            world.set_joint_states(robot.name, dict(result.joint_positions))
+            return {j: world.joint_states(robot.name)[j] for j in result.joint_positions}
+        errors.append(result.position_error)
+    raise PtuGoalUnreachable(
+        f"{robot.name}'s neck cannot point {frame} at {tuple(target_in_map)} from any of "
+        f"{len(errors)} camera positions tried (best IK miss {min(errors):.3f} m)",
+        target=tuple(target_in_map),
+    )

@@ -22,14 +22,14 @@ import numpy as np
 from robocram.execution import ProcessModule
 from robocram.logic import Term
 from robocram.projection.arm import move_joints, move_tcp
+from robocram.projection.errors import ProjectionError
 from robocram.projection.flying import fly, sense_distance
 from robocram.projection.gripper import close_gripper, grip, open_gripper, set_gripper
 from robocram.projection.navigation import drive
 from robocram.projection.neck import look_at
 from robocram.projection.perception import detect
-from robocram.projection.torso import move_torso
-from robocram.projection.errors import ProjectionError
 from robocram.projection.projected_robot import ProjectedRobot
+from robocram.projection.torso import move_torso
 from robocram.tf import PoseStamped, Vector3
 
 Handler = Callable[..., Any]
