@@ -2,13 +2,19 @@
 
 ``with simulated_robot(world, "pr2"):`` starts the projected robot's process modules
 (base, torso, head, perception, grippers, arms; flight and range sensing for flying
-robots) and PERFORM sends motions to them. ``recording_environment`` runs the same plans
-without physics, only logging commands.
+robots) and PERFORM sends motions to them. ``with recorded_robot("pr2", objects=...):``
+runs the same plans without physics, only logging commands.
 """
 
 from robocram.projection.errors import ProjectionError
 from robocram.projection.perception import PerceivedObject
 from robocram.projection.projected_robot import ProjectedRobot
+from robocram.projection.recording import (
+    RecordedState,
+    RecordingRun,
+    recorded_robot,
+    recording_environment,
+)
 from robocram.projection.robot_environment import projection_environment
 from robocram.projection.simulated_robot import SimulatedRun, simulated_robot
 from robocram.projection.world_frames import LiveTransformTree, WorldFrames
@@ -18,8 +24,12 @@ __all__ = [
     "PerceivedObject",
     "ProjectedRobot",
     "ProjectionError",
+    "RecordedState",
+    "RecordingRun",
     "SimulatedRun",
     "WorldFrames",
     "projection_environment",
+    "recorded_robot",
+    "recording_environment",
     "simulated_robot",
 ]

@@ -25,12 +25,13 @@ MAX_RANGE = 20.0  # [m] of the distance sensor
 
 
 def _interpolate(start: Pose, goal: Pose, t: float) -> Pose:
-    position = tuple(a + t * (b - a) for a, b in zip(start.position, goal.position, strict=True))
+    p = (1 - t) * np.asarray(start.position) + t * np.asarray(goal.position)
     q0, q1 = np.asarray(start.orientation), np.asarray(goal.orientation)
     if float(q0 @ q1) < 0:
         q1 = -q1
     q = (1 - t) * q0 + t * q1
-    return Pose(position, tuple(float(v) for v in q / np.linalg.norm(q)))
+    q /= np.linalg.norm(q)
+    return Pose((p[0], p[1], p[2]), (q[0], q[1], q[2], q[3]))
 
 
 def fly(robot: ProjectedRobot, target: PoseStamped | PoseLike) -> Pose:

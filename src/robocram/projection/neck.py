@@ -127,9 +127,9 @@ def _camera_positions(robot: ProjectedRobot, frame: str) -> list[Vector3]:
         places.append((robot.base_pose() * parked).position)
     for axis in range(3):
         for sign in (1.0, -1.0):
-            offset = [0.0, 0.0, 0.0]
-            offset[axis] = sign * NECK_STEP
-            places.append(tuple(p + o for p, o in zip(now, offset, strict=True)))  # type: ignore[misc]
+            moved = list(now)
+            moved[axis] += sign * NECK_STEP
+            places.append((moved[0], moved[1], moved[2]))
     return places
 
 

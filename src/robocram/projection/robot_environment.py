@@ -59,15 +59,19 @@ def module_classes(desc: RobotDescription) -> list[type[ProjectionProcessModule]
     return classes
 
 
-def matching_facts(classes: list[type[ProjectionProcessModule]]) -> str:
+def module_name(cls: type[ProjectionProcessModule], prefix: str = "projection") -> str:
+    """The module atom for ``cls``'s resource: ``projection_arms``, ``recorded_arms``, ..."""
+    return f"{prefix}_{cls.name.removeprefix('projection_')}"
+
+
+def matching_facts(classes: list[type[ProjectionProcessModule]], prefix: str = "projection") -> str:
     """Prolog facts sending each motion type to its module, and marking modules available."""
     lines = []
     for cls in classes:
+        pm = module_name(cls, prefix)
         for motion in MOTION_TYPES[cls]:
-            lines.append(
-                f"matching_process_module(D, {cls.name}) :- desig_prop(D, type, '{motion}')."
-            )
-        lines.append(f"available_process_module({cls.name}).")
+            lines.append(f"matching_process_module(D, {pm}) :- desig_prop(D, type, '{motion}').")
+        lines.append(f"available_process_module({pm}).")
     return "\n".join(lines) + "\n"
 
 
