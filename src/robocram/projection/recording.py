@@ -150,8 +150,9 @@ def recording_environment(
     install_description(kb, desc)
     install_motions(kb, desc)
     classes = module_classes(desc)
-    modules = [RecordingPM(cls.name, state) for cls in classes if cls in MOTION_TYPES]
-    env = Environment(f"recording_{desc.name}", modules, facts=matching_facts(classes), kb=kb)
+    modules = [RecordingPM(module_name(cls, PREFIX), state) for cls in classes]
+    facts = matching_facts(classes, PREFIX)
+    env = Environment(f"recording_{desc.name}", modules, facts=facts, kb=kb)
     return env, state
 
 
