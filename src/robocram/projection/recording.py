@@ -37,6 +37,7 @@ from robocram.projection.robot_environment import (
     install_motions,
     matching_facts,
     module_classes,
+    module_name,
 )
 from robocram.projection.world_frames import LiveTransformTree
 from robocram.robots import RobotDescription, install_description, load_description
