@@ -147,6 +147,16 @@ def pick_mug(look_target: PoseStamped, object_type: str = "mug") -> PickResult:
     return PickResult(arm, tool, seen.get("name"), grasp, lifted, seen)
 
 
+def _within_limits(world: World, robot: str) -> None:
+    """Move joints that start outside their limits (World starts every joint at 0) inside."""
+    model = world.robot(robot).description.model
+    assert model is not None
+    joints = world.joint_states(robot)
+    masters = {j: v for j, v in joints.items() if model.joints[j].mimic is None}
+    inside = {j: world.joint_limits(robot, j).clamp(v) for j, v in masters.items()}
+    world.set_joint_states(robot, {j: v for j, v in inside.items() if v != joints[j]})
+
+
 def make_scene(robot: str) -> Scene:
     """A floor, a table and a mug placed where ``robot``'s arm can pick it from above."""
     table_height, mug_xy, robot_xy = {
@@ -157,6 +167,7 @@ def make_scene(robot: str) -> Scene:
     world = World()
     world.add_floor()
     world.add_robot(robot, pose=Pose((*robot_xy, 0.0)))
+    _within_limits(world, robot)
     tx = mug_xy[0] + 0.2
     world.add_box("table", (0.6, 1.0, table_height), pose=Pose((tx, 0.0, table_height / 2)))
     world.add_item("mug-1", "mug", pose=Pose((*mug_xy, table_height)))
