@@ -8,10 +8,10 @@ from typing import Any
 
 import pytest
 
+from robocram.logic import KnowledgeBase
 from robocram.logic.terms import NIL, Term
 from robocram.robots import RobotDescription, install_description, load_description
 from robocram.robots.interface_facts import (
-    INTERFACE_GROUP,
     INTERFACE_PREDICATES,
     description_facts,
 )
@@ -99,20 +99,16 @@ def test_quadrotor_facts_have_no_arms() -> None:
     assert "arm/2" not in facts and "joint_type/3" not in facts
 
 
-class _RecordingKb:
-    """Records fact groups the way a knowledge base receives them."""
-
-    def __init__(self) -> None:
-        self.groups: dict[str, tuple[list[Any], list[str]]] = {}
-
-    def add_fact_group(self, group: str, clauses: Any, extendable: Any = ()) -> None:
-        self.groups[group] = (list(clauses), list(extendable))
-
-
-def test_install_declares_the_interface_and_a_group_per_robot() -> None:
-    kb = _RecordingKb()
-    loaded = install_description(kb, "quadrotor")
-    assert loaded.model is not None
-    clauses, extendable = kb.groups[INTERFACE_GROUP]
-    assert clauses == [] and set(extendable) == set(INTERFACE_PREDICATES)
-    assert kb.groups["quadrotor_description"][0] == description_facts(loaded)
+def test_install_puts_several_robots_in_one_knowledge_base() -> None:
+    kb = KnowledgeBase()
+    for name in ("pr2", "hsrb", "quadrotor"):
+        assert install_description(kb, name).model is not None
+    assert sorted(a["R"] for a in kb.query("robot(R)")) == ["hsrb", "pr2", "quadrotor"]
+    assert kb.first("arm_joints(hsrb, arm, J)") == {
+        "J": ["arm_flex_joint", "arm_roll_joint", "wrist_flex_joint", "wrist_roll_joint"]
+    }
+    assert kb.holds("flying_robot(quadrotor)") and not kb.holds("arm(quadrotor, A)")
+    upper = kb.first("joint_upper_limit(pr2, torso_lift_joint, U)")
+    assert upper is not None and upper["U"] == pytest.approx(0.31, abs=1e-6)
+    install_description(kb, "pr2")  # reloading replaces the group, no duplicates
+    assert len(list(kb.query("robot(pr2)"))) == 1

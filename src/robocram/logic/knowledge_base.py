@@ -109,6 +109,7 @@ class KnowledgeBase:
                 self._drop_group(name)
             keys, ext = self._groups.setdefault(name, (set(), set()))
             ext.update(shared)
+            self._declare_interface(shared, name)
             for key, _ in compiled:
                 self._check_owner(key, name)
             for key, clause in compiled:
@@ -117,6 +118,20 @@ class KnowledgeBase:
                     pred.owner = name
                 pred.add_last(clause)
                 keys.add(key)
+
+    def _declare_interface(self, keys: set[Key], group: str) -> None:
+        """A group that lists a predicate as extendable declares it (CRAM's interface idiom).
+
+        The predicate then exists (a call fails instead of raising "unknown predicate") and
+        the declaring group owns it, so any number of other groups may add clauses.
+        """
+        for key in keys:
+            pred = self._preds.get(key)
+            if pred is not None and pred.kind != USER:
+                continue  # a Python predicate or built-in: nothing to declare
+            pred = self._user_pred(key)
+            if pred.owner is None or not pred.clauses:
+                pred.owner = group
 
     def _drop_group(self, name: str) -> None:
         keys, _ = self._groups.pop(name, (set(), set()))
