@@ -33,6 +33,7 @@ from robocram.projection.torso import move_torso
 from robocram.tf import PoseStamped, Vector3
 
 Handler = Callable[..., Any]
+DIRECTION_REACH = 100.0  # [m] looking along a direction aims at a point this far away
 
 
 class ProjectionProcessModule(ProcessModule):
@@ -107,7 +108,8 @@ class PtuPM(ProjectionProcessModule):
         base = self.robot.base_pose()
         camera = self.robot.world.camera(self.robot.name).pose.position
         rotated = base.matrix()[:3, :3] @ (d / np.linalg.norm(d))
-        return tuple(float(v) for v in np.asarray(camera) + rotated)  # type: ignore[return-value]
+        far = np.asarray(camera) + DIRECTION_REACH * rotated
+        return (float(far[0]), float(far[1]), float(far[2]))
 
 
 class PerceptionPM(ProjectionProcessModule):
