@@ -53,7 +53,8 @@ def test_imports_point_down(package: str, path: Path) -> None:
     used = _imported_packages(path) - {package}
     upward = used - ALLOWED[package]
     assert not upward, (
-        f"{path.relative_to(SRC)} imports {sorted(upward)}: layer {package!r} may use {sorted(ALLOWED[package])}"
+        f"{path.relative_to(SRC)} imports {sorted(upward)}: "
+        f"layer {package!r} may use {sorted(ALLOWED[package])}"
     )
 
 
