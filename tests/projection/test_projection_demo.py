@@ -1,0 +1,30 @@
+"""The demo (``make demo``) and the example script run end to end, headless and fast."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from types import ModuleType
+
+import pytest
+
+from robocram import demo
+
+
+def test_demo_writes_the_scene_png(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    png = demo.main(tmp_path)
+    assert png == tmp_path / "demo.png"
+    data = png.read_bytes()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n"
+    width, height = int.from_bytes(data[16:20], "big"), int.from_bytes(data[20:24], "big")
+    assert (width, height) == (800, 600)
+    printed = capsys.readouterr().out
+    assert "✓ pick-mug succeeded" in printed
+    assert "perform gripping succeeded" in printed
+    assert "the right arm holds mug-1" in printed
+
+
+def test_example_main_runs(
+    pick_mug_example: ModuleType, capsys: pytest.CaptureFixture[str]
+) -> None:
+    pick_mug_example.main("hsrb")
+    assert "hsrb: arm arm holds mug-1" in capsys.readouterr().out
