@@ -119,6 +119,23 @@ def test_gripping_nothing_closes_completely(world: World) -> None:
     assert world.attachments("pr2") == {}
 
 
+def test_gripping_beside_the_mug_closes_completely(world: World) -> None:
+    down = (0.0, 0.7071068, 0.0, 0.7071068)  # tool x axis pointing down
+    beside = PoseStamped("base_footprint", (0.7, -0.15, 0.75), down)
+    with simulated_robot(world, "pr2"):
+        perform(a.motion(type="moving-torso", joint_angle=0.3))
+        perform(a.motion(type="opening", gripper="right"))
+        perform(a.motion(type="moving-tcp", arm="right", target=a.location(pose=beside)))
+        with pytest.raises(GripperClosedCompletely):
+            perform(a.motion(type="gripping", gripper="right"))
+        assert world.attachments("pr2") == {}
+        perform(a.motion(type="opening", gripper="right"))
+        above = PoseStamped("base_footprint", (0.7, 0.0, 0.75), down)
+        perform(a.motion(type="moving-tcp", arm="right", target=a.location(pose=above)))
+        assert perform(a.motion(type="gripping", gripper="right")) == "mug-1"
+    assert world.attachments("pr2") == {"mug-1": "r_wrist_roll_link"}
+
+
 def test_opening_releases_the_held_object(world: World) -> None:
     world.attach("mug-1", "pr2", "r_wrist_roll_link")
     with simulated_robot(world, "pr2"):
