@@ -114,3 +114,14 @@ def test_other_builtin_robots_spawn_and_hold_still(name: str) -> None:
         assert not world.in_collision(robot)  # standing on the floor does not count
         for cam in robot.description.cameras:
             assert world.camera(robot, cam.name).pose.position[2] > 0.1
+
+
+def test_robots_start_with_every_joint_within_its_limits() -> None:
+    with World() as world:
+        boxy = world.add_robot("boxy")
+        states = world.joint_states(boxy)
+        for name, value in states.items():
+            limits = world.joint_limits(boxy, name)
+            assert limits.lower - 1e-9 <= value <= limits.upper + 1e-9, name
+        assert states["left_gripper_joint"] == pytest.approx(0.0065, abs=1e-9)  # 0 is outside
+        assert states["left_gripper_base_gripper_left_joint"] == pytest.approx(-0.00325, abs=1e-9)

@@ -143,9 +143,21 @@ class World(WorldCore):
         held = self._holds.setdefault(handle.name, {})
         for joint in self.joint_states(handle):
             held[handle.joint_index[joint]] = 0.0
+        self._start_within_limits(handle)
         if self._kb is not None:
             self._install_description(desc)
         return handle
+
+    def _start_within_limits(self, robot: RobotObject) -> None:
+        """Put every joint at its in-limit value nearest 0 (some grippers exclude 0)."""
+        model = robot.description.model
+        assert model is not None  # load_description fills it
+        start = {
+            name: self.joint_limits(robot, name).clamp(0.0)
+            for name in self.joint_states(robot)
+            if model.joints[name].mimic is None
+        }
+        self.set_joint_states(robot, {name: v for name, v in start.items() if v != 0.0})
 
     def _install_description(self, desc: RobotDescription) -> None:
         install_description(self.kb, desc)
