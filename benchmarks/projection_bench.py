@@ -1,59 +1,77 @@
-"""Projection figures: scene build and the pick-mug plan per robot, and the recording run.
+"""Projection figures: scene build and the pick-up plan per robot, plan variants per second
+in one world restored between runs, and the recording (non-physics) run.
 
 Prints wall-clock medians [ms] over a few runs; no reference system is installable here.
+Usage: ``python benchmarks/projection_bench.py [runs] [variants]``.
 """
 
 from __future__ import annotations
 
-import importlib.util
 import statistics
 import sys
 import time
-from pathlib import Path
-from types import ModuleType
 
+from robocram.plans import pick_up
 from robocram.projection import recorded_robot, simulated_robot
-from robocram.tf import PoseStamped
-
-RUNS = 5
-EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "pick_mug.py"
+from robocram.tf import Pose, PoseStamped
+from robocram.world.tabletop_scene import tabletop_scene
 
 
-def _example() -> ModuleType:
-    spec = importlib.util.spec_from_file_location("pick_mug_example", EXAMPLE)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = module
-    spec.loader.exec_module(module)
-    return module
-
-
-def main() -> None:
-    """Print build and plan times per robot."""
-    example = _example()
+def per_robot(runs: int) -> None:
+    """Scene build and plan time per robot, each in a fresh world."""
     print(f"{'robot':8} {'scene [ms]':>11} {'plan [ms]':>10}")
     for robot in ("pr2", "hsrb", "boxy"):
         build, plan = [], []
-        for _ in range(RUNS):
+        for _ in range(runs):
             t0 = time.perf_counter()
-            scene = example.make_scene(robot)
+            scene = tabletop_scene(robot)
             t1 = time.perf_counter()
             with simulated_robot(scene.world, robot):
-                example.pick_mug(scene.look_target)
+                pick_up(scene.look_target)
             plan.append(time.perf_counter() - t1)
             build.append(t1 - t0)
             scene.world.close()
         build_ms, plan_ms = 1e3 * statistics.median(build), 1e3 * statistics.median(plan)
         print(f"{robot:8} {build_ms:11.1f} {plan_ms:10.1f}")
+
+
+def variants(count: int) -> None:
+    """Project ``count`` variants of the PR2 plan (mug shifted along y) in one world."""
+    scene = tabletop_scene("pr2")
+    world, mug = scene.world, scene.world.object("mug-1")
+    base = world.pose(mug)
+    t0 = time.perf_counter()
+    succeeded = 0
+    for i in range(count):
+        with world.stored_state():
+            dy = 0.1 * ((i % 5) - 2) / 2  # [m] -0.1 .. 0.1
+            world.set_pose(mug, Pose((base.position[0], base.position[1] + dy, base.position[2])))
+            look = PoseStamped("map", (base.position[0], base.position[1] + dy, base.position[2]))
+            with simulated_robot(world, "pr2"):
+                pick_up(look)
+            succeeded += 1
+    elapsed = time.perf_counter() - t0
+    print(
+        f"{count} pr2 plan variants in one world: {elapsed:.2f} s, "
+        f"{count / elapsed:.1f} variants/s, {succeeded} succeeded"
+    )
+    world.close()
+
+
+def recording(runs: int) -> None:
+    """The same plan in the recording environment (no physics)."""
     times = []
-    for _ in range(RUNS):
+    for _ in range(runs):
         t0 = time.perf_counter()
         mug = PoseStamped("base_footprint", (0.62, -0.15, 0.7))
         with recorded_robot("pr2", objects={"mug": mug}):
-            example.pick_mug(PoseStamped("map", (0.6, -0.15, 0.7)))
+            pick_up(PoseStamped("map", (0.6, -0.15, 0.7)))
         times.append(time.perf_counter() - t0)
     print(f"recording pr2 plan: {1e3 * statistics.median(times):.1f} ms")
 
 
 if __name__ == "__main__":
-    main()
+    runs = int(sys.argv[1]) if len(sys.argv) > 1 else 5
+    per_robot(runs)
+    variants(int(sys.argv[2]) if len(sys.argv) > 2 else 100)
+    recording(runs)

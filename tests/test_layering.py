@@ -20,6 +20,7 @@ ALLOWED: dict[str, set[str]] = {
     "kinematics": {"robots", "tf"},
     "projection": {"world", "kinematics", "execution", "designators", "robots", "logic", "tf"},
     "turtlesim": {"execution", "designators", "logic", "tf"},
+    "plans": {"execution", "designators", "logic", "tf"},
 }
 
 

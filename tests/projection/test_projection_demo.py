@@ -2,8 +2,9 @@
 
 from __future__ import annotations
 
+import runpy
+import sys
 from pathlib import Path
-from types import ModuleType
 
 import pytest
 
@@ -23,8 +24,10 @@ def test_demo_writes_the_scene_png(tmp_path: Path, capsys: pytest.CaptureFixture
     assert "the right arm holds mug-1" in printed
 
 
-def test_example_main_runs(
-    pick_mug_example: ModuleType, capsys: pytest.CaptureFixture[str]
+def test_example_script_runs(
+    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    pick_mug_example.main("hsrb")
+    example = Path(__file__).resolve().parents[2] / "examples" / "pick_mug.py"
+    monkeypatch.setattr(sys, "argv", [str(example), "hsrb"])
+    runpy.run_path(str(example), run_name="__main__")
     assert "hsrb: arm arm holds mug-1" in capsys.readouterr().out

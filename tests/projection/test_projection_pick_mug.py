@@ -4,14 +4,16 @@ and runs again in the recording environment."""
 from __future__ import annotations
 
 import math
-from types import ModuleType
 
 import pytest
 
 from robocram.designators import desig_equal
+from robocram.plans import pick_up
+from robocram.plans.pick_up import LIFT
 from robocram.projection import recorded_robot, simulated_robot
 from robocram.tf import Pose, PoseStamped
 from robocram.world import World
+from robocram.world.tabletop_scene import tabletop_scene
 
 POSITION_TOL = 0.01  # [m]
 ANGLE_TOL = 0.05  # [rad]
@@ -29,12 +31,12 @@ def _in_map(world: World, robot: str, pose: PoseStamped) -> Pose:
 
 
 @pytest.mark.parametrize("robot", ["pr2", "hsrb", "boxy"])
-def test_the_same_plan_picks_the_mug(pick_mug_example: ModuleType, robot: str) -> None:
-    scene = pick_mug_example.make_scene(robot)
+def test_the_same_plan_picks_the_mug(robot: str) -> None:
+    scene = tabletop_scene(robot)
     world = scene.world
     mug_before = world.pose("mug-1")
     with simulated_robot(world, robot) as run:
-        result = pick_mug_example.pick_mug(scene.look_target)
+        result = pick_up(scene.look_target)
     assert run.tree.root.status.name == "SUCCEEDED"
     tool = world.link_pose(robot, result.tool_frame)
     lifted = _in_map(world, robot, result.lifted)
@@ -48,20 +50,20 @@ def test_the_same_plan_picks_the_mug(pick_mug_example: ModuleType, robot: str) -
     mug_after = world.pose("mug-1")
     grasp = _in_map(world, robot, result.grasp)
     dz_tool = lifted.position[2] - grasp.position[2]
-    assert dz_tool == pytest.approx(pick_mug_example.LIFT, abs=1e-6)
+    assert dz_tool == pytest.approx(LIFT, abs=1e-6)
     assert mug_after.position[2] - mug_before.position[2] == pytest.approx(dz_tool, abs=0.01)
     assert math.dist(mug_after.position[:2], mug_before.position[:2]) < POSITION_TOL
     fingers = world.joint_states(robot)[arm.gripper_joints[0]]
     assert fingers > world.joint_limits(robot, arm.gripper_joints[0]).lower + 1e-3  # holds it
 
 
-def test_detection_is_equated_and_in_the_base_frame(pick_mug_example: ModuleType) -> None:
-    scene = pick_mug_example.make_scene("pr2")
+def test_detection_is_equated_and_in_the_base_frame() -> None:
+    scene = tabletop_scene("pr2")
     world = scene.world
     world.set_pose("pr2", Pose((0.05, -0.02, 0.0), (0.0, 0.0, 0.0499792, 0.9987503)))
     mug = world.pose("mug-1")
     with simulated_robot(world, "pr2"):
-        result = pick_mug_example.pick_mug(scene.look_target)
+        result = pick_up(scene.look_target)
     seen = result.detected
     assert desig_equal(seen, seen.first_desig())
     assert seen.first_desig() is not seen
@@ -72,10 +74,10 @@ def test_detection_is_equated_and_in_the_base_frame(pick_mug_example: ModuleType
     assert math.dist(pose.position, expected.position) < 1e-6
 
 
-def test_the_same_plan_runs_in_the_recording_environment(pick_mug_example: ModuleType) -> None:
+def test_the_same_plan_runs_in_the_recording_environment() -> None:
     mug = PoseStamped("base_footprint", (0.62, -0.15, 0.70))
     with recorded_robot("pr2", objects={"mug": mug}) as run:
-        result = pick_mug_example.pick_mug(PoseStamped("map", (0.6, -0.15, 0.7)))
+        result = pick_up(PoseStamped("map", (0.6, -0.15, 0.7)))
     commands = [(module, term.name) for module, term in run.log]
     assert commands == [
         ("recorded_arms", "move_joints"),
