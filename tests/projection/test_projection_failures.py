@@ -125,15 +125,38 @@ def test_gripping_beside_the_mug_closes_completely(world: World) -> None:
     with simulated_robot(world, "pr2"):
         perform(a.motion(type="moving-torso", joint_angle=0.3))
         perform(a.motion(type="opening", gripper="right"))
-        perform(a.motion(type="moving-tcp", arm="right", target=a.location(pose=beside)))
+        grasping = {"collision_mode": "allow_hand"}
+        perform(
+            a.motion(type="moving-tcp", arm="right", target=a.location(pose=beside), **grasping)
+        )
         with pytest.raises(GripperClosedCompletely):
             perform(a.motion(type="gripping", gripper="right"))
         assert world.attachments("pr2") == {}
         perform(a.motion(type="opening", gripper="right"))
         above = PoseStamped("base_footprint", (0.7, 0.0, 0.75), down)
-        perform(a.motion(type="moving-tcp", arm="right", target=a.location(pose=above)))
+        perform(a.motion(type="moving-tcp", arm="right", target=a.location(pose=above), **grasping))
         assert perform(a.motion(type="gripping", gripper="right")) == "mug-1"
     assert world.attachments("pr2") == {"mug-1": "r_wrist_roll_link"}
+
+
+def test_avoid_all_refuses_a_grasp_pose_that_allow_hand_accepts(world: World) -> None:
+    down = (0.0, 0.7071068, 0.0, 0.7071068)  # tool x axis pointing down
+    at_mug = PoseStamped("base_footprint", (0.7, 0.0, 0.75), down)
+    before = world.joint_states("pr2")
+    with simulated_robot(world, "pr2"):
+        perform(a.motion(type="moving-torso", joint_angle=0.3))
+        perform(a.motion(type="opening", gripper="right"))
+        opened = world.joint_states("pr2")
+        with pytest.raises(ManipulationPoseUnreachable, match="rejected in collision") as info:
+            perform(a.motion(type="moving-tcp", arm="right", target=a.location(pose=at_mug)))
+        assert info.value.arm == "right"
+        assert world.joint_states("pr2") == pytest.approx(opened)  # IK trials left no trace
+        target = a.location(pose=at_mug)
+        reached = perform(
+            a.motion(type="moving-tcp", arm="right", target=target, collision_mode="allow_hand")
+        )
+    assert reached.distance_to(world.pose("pr2") * at_mug.pose) < 0.01
+    assert before != world.joint_states("pr2")
 
 
 def test_opening_releases_the_held_object(world: World) -> None:
@@ -169,6 +192,15 @@ def test_unknown_arm_is_a_clear_error(world: World) -> None:
         perform(a.motion(type="moving-tcp", arm="rigth", target=a.location(pose=target)))
     assert isinstance(info.value.error, ProjectionError)
     assert "did you mean 'right'" in str(info.value)
+
+
+def test_unknown_collision_mode_is_a_clear_error(world: World) -> None:
+    target = a.location(pose=PoseStamped("base_footprint", (0.6, -0.2, 0.9)))
+    motion = a.motion(type="moving-tcp", arm="right", target=target, collision_mode="sometimes")
+    with simulated_robot(world, "pr2"), pytest.raises(ProcessModuleFailure) as info:
+        perform(motion)
+    assert isinstance(info.value.error, ProjectionError)
+    assert "allow_hand" in str(info.value)
 
 
 def test_unknown_robot_is_a_clear_error(world: World) -> None:

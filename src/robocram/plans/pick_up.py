@@ -127,8 +127,9 @@ def pick_up(look_target: PoseStamped, object_type: str = "mug") -> PickResult:
     tool, axis = _approach_axis(robot, arm)
     perform(a.motion(type="opening", gripper=arm))
     grasp = _reach_from_above(arm, _shifted(pose.with_frame(pose.frame_id), GRASP_HEIGHT), axis)
-    perform(a.motion(type="moving-tcp", arm=arm, target=a.location(pose=grasp)))
+    grasping = {"collision_mode": "allow_hand"}  # the fingers close around the object
+    perform(a.motion(type="moving-tcp", arm=arm, target=a.location(pose=grasp), **grasping))
     perform(a.motion(type="gripping", gripper=arm))
     lifted = _shifted(grasp, LIFT)
-    perform(a.motion(type="moving-tcp", arm=arm, target=a.location(pose=lifted)))
+    perform(a.motion(type="moving-tcp", arm=arm, target=a.location(pose=lifted), **grasping))
     return PickResult(arm, tool, seen.get("name"), grasp, lifted, seen)

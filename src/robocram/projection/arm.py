@@ -2,8 +2,9 @@
 
 ``move_tcp`` transforms the target into the robot's root link and solves IK seeded with
 the current joints, first with the torso held, then (as CRAM's projection resamples the
-torso) with the torso free. The solution is applied and the reached tool pose checked
-against the target within 1 cm / 0.05 rad, so a silent miss is impossible.
+torso) with the torso free, rejecting solutions that collide as the motion's collision
+mode says (``collision_mode.py``). The solution is applied and the reached tool pose
+checked against the target within 1 cm / 0.05 rad, so a silent miss is impossible.
 """
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ from robocram.execution.failures import (
     ManipulationPoseUnreachable,
 )
 from robocram.kinematics import IKResult, solve_ik
+from robocram.projection.collision_mode import collision_check
 from robocram.projection.errors import unknown_name
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.tf import Pose, PoseLike, PoseStamped
@@ -24,36 +26,55 @@ ORIENTATION_TOLERANCE = 0.05  # [rad]
 IK_TIMEOUT = 0.15  # [s] per attempt
 
 
-def _solve(robot: ProjectedRobot, arm: str, target_in_base: Pose) -> IKResult:
+def _solve(robot: ProjectedRobot, arm: str, target_in_base: Pose, mode: str) -> IKResult:
     desc = robot.description
+    check = collision_check(robot, arm, mode)
     seed = robot.world.joint_states(robot.name)
     attempts = [False, True] if desc.torso_joint is not None else [False]
     result = IKResult(False)
     with robot.ik_lock:
         for use_torso in attempts:
             result = solve_ik(
-                desc, arm, target_in_base, seed=seed, use_torso=use_torso, timeout=IK_TIMEOUT
+                desc,
+                arm,
+                target_in_base,
+                seed=seed,
+                use_torso=use_torso,
+                timeout=IK_TIMEOUT,
+                collision_check=check,
             )
             if result.success:
                 break
     return result
 
 
-def move_tcp(robot: ProjectedRobot, arm: str, target: PoseStamped | PoseLike) -> Pose:
+def move_tcp(
+    robot: ProjectedRobot,
+    arm: str,
+    target: PoseStamped | PoseLike,
+    collision_mode: str = "avoid_all",
+) -> Pose:
     """Put ``arm``'s tool frame at ``target`` (map unless stamped); return it in ``map``.
 
+    ``collision_mode`` is CRAM's: ``avoid_all``, ``allow_hand`` (grasping) or ``allow_all``.
+
     Raises:
-        ManipulationPoseUnreachable: IK found no solution; the arm does not move.
+        ManipulationPoseUnreachable: IK found no collision-free solution; the arm stays.
         ManipulationGoalNotReached: the applied joints miss the target (limits clamped).
     """
     spec = robot.arm(arm)
     target_in_map = robot.in_map(target)
-    result = _solve(robot, arm, robot.base_pose().inverse() * target_in_map)
+    result = _solve(robot, arm, robot.base_pose().inverse() * target_in_map, collision_mode)
     if not result.success:
         raise ManipulationPoseUnreachable(
-            f"{robot.name}'s {arm} arm cannot reach {target_in_map} (map); best IK "
-            f"configuration misses by {result.position_error:.3f} m, "
-            f"{result.orientation_error:.3f} rad",
+            f"{robot.name}'s {arm} arm cannot reach {target_in_map} (map) with collision "
+            f"mode {collision_mode}; best IK configuration misses by "
+            f"{result.position_error:.3f} m, {result.orientation_error:.3f} rad"
+            + (
+                f", {result.rejected_in_collision} solutions rejected in collision"
+                if result.rejected_in_collision
+                else ""
+            ),
             arm=arm,
             target=target,
         )

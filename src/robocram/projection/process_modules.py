@@ -154,10 +154,10 @@ class ArmPM(ProjectionProcessModule):
         """Command table."""
         r = self.robot
         return {
-            "move_tcp/3": lambda a, pose, mode: move_tcp(r, a, pose),
+            "move_tcp/3": lambda a, pose, mode: move_tcp(r, a, pose, mode),
             "move_tcp_both/3": lambda left, right, mode: (
-                move_tcp(r, "left", left),
-                move_tcp(r, "right", right),
+                move_tcp(r, "left", left, mode),
+                move_tcp(r, "right", right, mode),
             ),
             "move_joints/2": lambda a, config: move_joints(r, a, config),
             "move_joints_both/2": lambda left, right: (

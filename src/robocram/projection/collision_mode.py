@@ -1,0 +1,71 @@
+"""CRAM's collision modes for arm motions, as IK collision checks on the projected world.
+
+``avoid_all``: no link of the robot may touch anything (the floor and objects the robot
+holds excepted). ``allow_hand``: the moving arm's hand and gripper links may touch (for
+grasping). ``allow_all``: no check. A candidate configuration is tried on the world and the
+joints are put back before the check returns, so IK never leaves the robot moved.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+
+import pybullet
+
+from robocram.projection.errors import ProjectionError
+from robocram.projection.projected_robot import ProjectedRobot
+
+COLLISION_MODES = ("avoid_all", "allow_hand", "allow_all")
+CONTACT_DISTANCE = 0.0  # [m] closer than this is a collision (touching counts)
+
+
+def collision_check(
+    robot: ProjectedRobot, arm: str, mode: str
+) -> Callable[[Mapping[str, float]], bool] | None:
+    """An IK ``collision_check`` for ``mode`` (None for ``allow_all``)."""
+    mode = mode.replace("-", "_")
+    if mode not in COLLISION_MODES:
+        raise ProjectionError(
+            f"unknown collision mode {mode!r} for the {arm} arm; use one of {COLLISION_MODES}"
+        )
+    if mode == "allow_all":
+        return None
+    spec = robot.arm(arm)
+    allowed = set(spec.hand_links) | set(spec.gripper_links) if mode == "allow_hand" else set()
+    if mode == "allow_hand":
+        allowed |= {spec.end_effector_link, spec.tool_frame}
+
+    def collides(candidate: Mapping[str, float]) -> bool:
+        return bool(colliding_objects(robot, candidate, allowed))
+
+    return collides
+
+
+def colliding_objects(
+    robot: ProjectedRobot, joints: Mapping[str, float], allowed_links: set[str]
+) -> list[str]:
+    """Objects the robot would touch at ``joints`` with links other than ``allowed_links``."""
+    world, body = robot.world, robot.body
+    model = robot.description.model
+    assert model is not None  # loaded descriptions carry their model
+    before = {
+        joint: value
+        for joint, value in world.joint_states(robot.name).items()
+        if model.joints[joint].mimic is None  # followers come back with their masters
+    }
+    world.set_joint_states(robot.name, dict(joints))
+    try:
+        held = set(world.attachments(robot.name))
+        allowed = {body.link_index[link] for link in allowed_links if link in body.link_index}
+        hits = []
+        for obj in world.objects():
+            if obj is body or obj.name in held or obj.type == "floor":
+                continue
+            points = pybullet.getClosestPoints(
+                body.body_id, obj.body_id, CONTACT_DISTANCE, physicsClientId=world.client
+            )
+            if any(point[3] not in allowed for point in points):
+                hits.append(obj.name)
+        return hits
+    finally:
+        world.set_joint_states(robot.name, before)
