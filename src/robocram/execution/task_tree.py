@@ -15,7 +15,15 @@ from robocram.execution.task import Task, TaskStatus
 
 _repr = reprlib.Repr()
 _repr.maxstring = 60
-_repr.maxother = 60
+_repr.maxother = 400
+_RESULT_WIDTH = 72  # [characters] of a result shown in the tree
+
+
+def _result_text(value: Any) -> str:
+    """A bounded repr that keeps the start of the value (its type and first fields)."""
+    text = _repr.repr(value)
+    return text if len(text) <= _RESULT_WIDTH else text[: _RESULT_WIDTH - 1] + "…"
+
 
 _MARKS = {
     TaskStatus.CREATED: "·",
@@ -58,7 +66,7 @@ class TaskSnapshot:
             status=task.status,
             start_time=task.start_time,
             end_time=task.end_time,
-            result=_repr.repr(task.result) if task.status is TaskStatus.SUCCEEDED else None,
+            result=_result_text(task.result) if task.status is TaskStatus.SUCCEEDED else None,
             failure_type=type(failure).__name__ if failure is not None else None,
             failure_message=str(failure) if failure is not None else None,
             failure_source=source,
