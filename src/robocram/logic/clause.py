@@ -13,6 +13,8 @@ from robocram.logic.unify import unify
 
 __all__ = ["Clause", "Slot", "Tmpl", "build", "compile_term", "unify_head"]
 
+_COMPILE_AFTER = 2
+
 
 class Slot:
     """The i-th variable of a clause template."""
@@ -34,9 +36,13 @@ class Tmpl:
 
 
 class Clause:
-    """A stored clause: head argument templates, body goal templates (reversed), var count."""
+    """A stored clause: head argument templates, body goal templates (reversed), var count.
 
-    __slots__ = ("body_rev", "group", "head", "key", "nvars", "source")
+    `run` is the clause's specialised function (see codegen), made on the second call so
+    that facts looked up once (a big fact table) never pay for code generation.
+    """
+
+    __slots__ = ("body_rev", "calls", "group", "head", "key", "nvars", "run", "source")
 
     def __init__(
         self,
@@ -52,6 +58,32 @@ class Clause:
         self.group = group
         self.source = source
         self.key = index_key_of_template(head[0]) if head else None
+        self.run: Any = None
+        self.calls = 0
+
+    def prepare(self) -> Any:
+        """Return the function to run this clause with: interpreted first, then compiled."""
+        self.calls += 1
+        if self.calls < _COMPILE_AFTER:
+            return self.interpret
+        from robocram.logic.codegen import compile_clause_fn
+
+        self.run = compile_clause_fn(self)
+        return self.run
+
+    def interpret(
+        self, args: tuple[Any, ...], trail: list[Var], cb: int, nxt: Any, cps: list[list[Any]]
+    ) -> Any:
+        """Unify the head with `args` and return the body's continuation (False on failure)."""
+        regs: list[Any] = [None] * self.nvars
+        head = self.head
+        for i in range(len(head)):
+            if not unify_head(head[i], args[i], regs, trail):
+                return False
+        cont = nxt
+        for g in self.body_rev:
+            cont = (build(g, regs), cb, cont)
+        return cont
 
 
 def index_key_of_template(t: Any) -> Any:

@@ -11,7 +11,6 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
 
-from robocram.logic.clause import build, unify_head
 from robocram.logic.control import ALT, BARRIER, CATCH, CLAUSES, FAIL, GEN, REACT, run_control
 from robocram.logic.errors import (
     PrologError,
@@ -125,18 +124,13 @@ class Machine:
                             cp[2][6] = True
                         cps.pop()
             if cl is not None:
-                regs: list[Any] = [None] * cl.nvars
-                head = cl.head
-                for i in range(len(head)):
-                    if not unify_head(head[i], args[i], regs, trail):
-                        fail = True
-                        break
-                else:
-                    cont = nxt
-                    for g in cl.body_rev:
-                        cont = (build(g, regs), cb, cont)
+                run = cl.run
+                if run is None:
+                    run = cl.prepare()
+                cont = run(args, trail, cb, nxt, cps)
                 cl = None
-                if fail:
+                if cont is False:
+                    fail = True
                     continue
             if cont is None:
                 yield None

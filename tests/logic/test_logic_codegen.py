@@ -1,0 +1,139 @@
+"""Compiled clauses answer exactly like interpreted ones (clauses compile on their 2nd call)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+
+from robocram.logic import (
+    KnowledgeBase,
+    PrologError,
+    PrologInstantiationError,
+    PrologTypeError,
+    Term,
+)
+from robocram.logic.codegen import compile_clause_fn
+
+PROGRAM = """
+app([], L, L).
+app([H|T], L, [H|R]) :- app(T, L, R).
+deep(f(g(X, [a, Y|T]), X), Y, T).
+kind(1, int). kind(1.0, float). kind(one, atom). kind("one", string). kind(f(_), compound).
+pick(X, Y) :- X > 2, !, Y = big.
+pick(_, small).
+step(N, M) :- M is N * 2 + 1 - 3.
+same(X, Y) :- X = Y.
+selfref :- X = f(X), X = f(Y), Y = f(_).
+cmp(A, B, lt) :- A < B.
+cmp(A, B, ge) :- A >= B.
+neg(X, Y) :- Y is -X.
+fl(X, Y) :- Y is X / 2.
+"""
+
+
+def run_twice(kb: KnowledgeBase, text: str, **b: Any) -> list[dict[str, Any]]:
+    """Run a query three times (interpreted, compiling, compiled); answers must agree."""
+    answers = [list(kb.query(text, **b)) for _ in range(3)]
+    assert answers[0] == answers[1] == answers[2]
+    return answers[0]
+
+
+@pytest.fixture()
+def kb() -> KnowledgeBase:
+    k = KnowledgeBase()
+    k.consult(PROGRAM)
+    return k
+
+
+def test_codegen_append_modes(kb: KnowledgeBase) -> None:
+    assert run_twice(kb, "app([1, 2], [3], L)") == [{"L": [1, 2, 3]}]
+    splits = run_twice(kb, "app(X, Y, [1, 2])")
+    assert splits == [
+        {"X": [], "Y": [1, 2]},
+        {"X": [1], "Y": [2]},
+        {"X": [1, 2], "Y": []},
+    ]
+    assert run_twice(kb, "app([1|T], [9], [1, 2, 9])") == [{"T": [2]}]
+    assert run_twice(kb, "app([1], [2], [1, 3])") == []
+
+
+def test_codegen_nested_head_read_and_write(kb: KnowledgeBase) -> None:
+    assert run_twice(kb, "deep(f(g(1, [a, b, c]), 1), Y, T)") == [{"Y": "b", "T": ["c"]}]
+    assert run_twice(kb, "deep(f(g(1, [a, b]), 2), Y, T)") == []
+    for _ in range(3):
+        written = kb.first("deep(D, 7, [8]), D = f(g(X, L), Z), X == Z")
+        assert written is not None
+        assert written["L"] == ["a", 7, 8]
+        assert written["D"] == Term("f", (Term("g", (written["X"], ["a", 7, 8])), written["X"]))
+
+
+def test_codegen_constants_match_exact_types(kb: KnowledgeBase) -> None:
+    assert run_twice(kb, "kind(1, K)") == [{"K": "int"}]
+    assert run_twice(kb, "kind(1.0, K)") == [{"K": "float"}]
+    assert run_twice(kb, "kind(one, K)") == [{"K": "atom"}]
+    assert run_twice(kb, 'kind("one", K)') == [{"K": "string"}]
+    assert run_twice(kb, "kind(f(2), K)") == [{"K": "compound"}]
+    assert [a["K"] for a in run_twice(kb, "kind(_, K)")] == [
+        "int",
+        "float",
+        "atom",
+        "string",
+        "compound",
+    ]
+
+
+def test_codegen_inline_cut_and_arithmetic(kb: KnowledgeBase) -> None:
+    assert run_twice(kb, "pick(5, Y)") == [{"Y": "big"}]
+    assert run_twice(kb, "pick(1, Y)") == [{"Y": "small"}]
+    assert run_twice(kb, "step(4, M)") == [{"M": 6}]
+    assert run_twice(kb, "step(2.5, M)") == [{"M": pytest.approx(3.0)}]
+    assert run_twice(kb, "step(4, 6)") == [{}]
+    assert run_twice(kb, "step(4, 7)") == []
+    assert run_twice(kb, "neg(3, Y)") == [{"Y": -3}]
+    assert run_twice(kb, "fl(3, Y)") == [{"Y": pytest.approx(1.5)}]
+    assert [a["R"] for a in run_twice(kb, "cmp(1, 2.0, R)")] == ["lt"]
+    assert [a["R"] for a in run_twice(kb, "cmp(2, 2, R)")] == ["ge"]
+
+
+def test_codegen_inline_unify(kb: KnowledgeBase) -> None:
+    assert run_twice(kb, "same(f(A), f(1))") == [{"A": 1}]
+    for _ in range(3):
+        assert kb.holds("same(X, Y), X == Y")
+    assert run_twice(kb, "same(1, 2)") == []
+    for _ in range(3):
+        assert kb.holds("selfref")
+
+
+@pytest.mark.parametrize("query", ["step(_, M)", "cmp(_, 1, R)"])
+def test_codegen_inline_arith_unbound_raises(kb: KnowledgeBase, query: str) -> None:
+    for _ in range(3):
+        with pytest.raises(PrologInstantiationError):
+            list(kb.query(query))
+
+
+def test_codegen_inline_arith_type_error_names_culprit(kb: KnowledgeBase) -> None:
+    for _ in range(3):
+        with pytest.raises(PrologTypeError, match="foo/0"):
+            list(kb.query("step(foo, M)"))
+    for _ in range(3):
+        answer = kb.first("catch(step(foo, _), error(type_error(T, C), _), true)")
+        assert answer == {"T": "evaluable", "C": Term("/", ("foo", 0))}
+
+
+def test_codegen_factories_shared_by_shape() -> None:
+    kb = KnowledgeBase()
+    kb.consult("\n".join(f"fact({i}, v{i})." for i in range(50)))
+    clauses = kb._preds[("fact", 2)].clauses
+    fns = [compile_clause_fn(c) for c in clauses[:3]]
+    assert fns[0].__code__ is fns[1].__code__ is fns[2].__code__
+    assert [a["V"] for a in kb.query("fact(7, V)")] == ["v7"]
+    assert kb.first("fact(K, v42)") == {"K": 42}
+
+
+def test_codegen_deep_recursion_bounded() -> None:
+    kb = KnowledgeBase()
+    kb.consult("count(0). count(N) :- N > 0, M is N - 1, count(M).")
+    assert kb.holds("count(200000)")
+    with pytest.raises(PrologError):
+        kb.holds("count(foo)")
