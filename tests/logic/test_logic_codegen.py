@@ -137,3 +137,24 @@ def test_codegen_deep_recursion_bounded() -> None:
     assert kb.holds("count(200000)")
     with pytest.raises(PrologError):
         kb.holds("count(foo)")
+
+
+def test_codegen_self_tail_call_after_backtracking() -> None:
+    kb = KnowledgeBase()
+    kb.consult("cnt(N, N) :- N >= 3. cnt(N, M) :- N < 3, N1 is N + 1, cnt(N1, M).")
+    for _ in range(3):
+        assert [a["L"] for a in kb.query("findall(M, cnt(0, M), L)")] == [[3]]
+        assert [a["L"] for a in kb.query("findall(M, cnt(5, M), L)")] == [[5]]
+
+
+def test_codegen_self_tail_call_reaches_python_predicate() -> None:
+    kb = KnowledgeBase()
+    kb.consult("walk(N, R) :- N > 0, M is N - 1, walk(M, R).")
+
+    @kb.predicate("walk", 2)
+    def walk(n: Any, r: Any) -> Any:
+        if n == 0:
+            yield (0, "bottom")
+
+    for _ in range(3):
+        assert [a["R"] for a in kb.query("walk(4, R)")] == ["bottom"]

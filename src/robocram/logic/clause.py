@@ -42,7 +42,7 @@ class Clause:
     that facts looked up once (a big fact table) never pay for code generation.
     """
 
-    __slots__ = ("body_rev", "calls", "group", "head", "key", "nvars", "run", "source")
+    __slots__ = ("body_rev", "calls", "group", "head", "key", "name", "nvars", "run", "source")
 
     def __init__(
         self,
@@ -51,12 +51,14 @@ class Clause:
         nvars: int,
         group: str | None,
         source: Any,
+        name: str = "",
     ) -> None:
         self.head = head
         self.body_rev = body_rev
         self.nvars = nvars
         self.group = group
         self.source = source
+        self.name = name
         self.key = index_key_of_template(head[0]) if head else None
         self.run: Any = None
         self.calls = 0

@@ -9,6 +9,10 @@ and `=/2` inline, and returns the continuation with the remaining body goals:
 
     run(args, trail, cb, nxt, cps) -> continuation, or False when the clause fails
 
+A clause whose whole remaining body is a call to its own predicate returns that call's
+arguments as a `list` instead, and the machine loops on the predicate without building
+the goal term or a continuation cell (the common shape of a deterministic recursion).
+
 Constants are passed to a factory instead of being written into the source, so clauses
 of the same shape (for example 100,000 `fact(N, vN)` facts) share one compiled factory.
 """
@@ -72,6 +76,12 @@ def _parts(t: Any) -> tuple[str, tuple[Any, ...]] | None:
     return None
 
 
+def _is_self_call(goal: Any, clause: Clause) -> bool:
+    """True when `goal` calls the clause's own predicate (same name and arity)."""
+    parts = _parts(goal)
+    return parts is not None and parts[0] == clause.name and len(parts[1]) == len(clause.head)
+
+
 class _Generator:
     """Emits the Python source of one clause function, tracking which slots hold values."""
 
@@ -94,10 +104,14 @@ class _Generator:
         while body and self.inline_goal(body[0]):
             body.pop(0)
         self.fresh(body, 1)
-        cont = "nxt"
-        for g in reversed(body):
-            cont = f"({self.build(g)}, cb, {cont})"
-        self.emit(f"return {cont}", 1)
+        if len(body) == 1 and _is_self_call(body[0], clause):
+            args = "".join(f"{self.build(a)}, " for a in _parts(body[0])[1])  # type: ignore[index]
+            self.emit(f"return [{args}]", 1)
+        else:
+            cont = "nxt"
+            for g in reversed(body):
+                cont = f"({self.build(g)}, cb, {cont})"
+            self.emit(f"return {cont}", 1)
         params = ", ".join(f"k{i}" for i in range(len(self.consts)))
         return "\n".join(
             [f"def make({params}):", "  def run(args, trail, cb, nxt, cps):", *self.lines]

@@ -57,7 +57,7 @@ def compile_clause(term: Any, group: str | None) -> tuple[tuple[str, int], Claus
     slots: dict[Var, Slot] = {}
     head_t = tuple([compile_term(a, slots) for a in args])
     body_t = [compile_term(g, slots) for g in conjuncts(body)]
-    return (name, len(args)), Clause(head_t, tuple(reversed(body_t)), len(slots), group, term)
+    return (name, len(args)), Clause(head_t, tuple(reversed(body_t)), len(slots), group, term, name)
 
 
 def parse_indicator(spec: Any) -> tuple[str, int]:

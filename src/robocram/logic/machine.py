@@ -19,7 +19,7 @@ from robocram.logic.errors import (
     UnknownPredicateError,
 )
 from robocram.logic.predicate import DET, NONDET, USER, Pred
-from robocram.logic.terms import Term, Var
+from robocram.logic.terms import Term, Var, new_term
 from robocram.logic.unify import copy_resolved, undo, unify
 
 if TYPE_CHECKING:
@@ -79,63 +79,20 @@ class Machine:
         raise err
 
     def _run(self, cps: list[list[Any]], cont: Any, fail: bool) -> Iterator[None]:
+        # The hot loop: one iteration per goal. It is written flat on purpose (locals cached,
+        # `type(x) is` tests, first-argument indexing inlined) because every helper call
+        # here costs a measurable share of an inference; the cold paths are methods.
         trail = self.trail
         preds = self.preds
-        cl = None
-        args: Any = ()
-        nxt: Any = None
-        cb = 0
+        backtrack = self._backtrack
+        if fail:
+            cont = backtrack(cps)
         while True:
-            if fail:
-                fail = False
-                while True:
-                    if not cps:
-                        return
-                    cp = cps[-1]
-                    mark = cp[1]
-                    while len(trail) > mark:
-                        trail.pop().ref = None
-                    kind = cp[0]
-                    if kind == CLAUSES:
-                        i = cp[5]
-                        cl = cp[4][i]
-                        args = cp[2]
-                        nxt = cp[3]
-                        cb = len(cps) - 1
-                        i += 1
-                        if i >= cp[6]:
-                            cps.pop()
-                        else:
-                            cp[5] = i
-                        break
-                    if kind == GEN:
-                        if next(cp[2], None) is not None:
-                            cont = cp[3]
-                            break
-                        cps.pop()
-                    elif kind == ALT:
-                        cps.pop()
-                        cont = cp[2]
-                        break
-                    elif kind == BARRIER:
-                        return
-                    else:
-                        if kind == REACT:
-                            cp[2][6] = True
-                        cps.pop()
-            if cl is not None:
-                run = cl.run
-                if run is None:
-                    run = cl.prepare()
-                cont = run(args, trail, cb, nxt, cps)
-                cl = None
-                if cont is False:
-                    fail = True
-                    continue
-            if cont is None:
+            while cont is None:
                 yield None
-                fail = True
-                continue
+                cont = backtrack(cps)
+            if cont is False:
+                return
             goal, cutb, nxt = cont
             tg = type(goal)
             if tg is Term:
@@ -153,31 +110,47 @@ class Machine:
                 raise self.unknown(name, len(args))
             k = p.kind
             if k == USER:
-                if not cps and trail:
-                    del trail[:]
                 if p.pyfn is not None:
+                    if not cps and trail:
+                        del trail[:]
                     self._push_python(p, args, nxt, cps)
-                    fail = True
+                    cont = backtrack(cps)
                     continue
-                cands = (
-                    p.clauses if not args or len(p.clauses) < 2 else p.candidates(deref1(args[0]))
-                )
-                n = len(cands)
-                if n == 0:
-                    fail = True
-                    continue
-                cl = cands[0]
-                cb = len(cps)
-                if n > 1:
-                    cps.append([CLAUSES, len(trail), args, nxt, cands, 1, n])
+                # A clause ending in a call to its own predicate returns that call's
+                # arguments as a list: loop here instead of going round the goal dispatch.
+                while True:
+                    if not cps and trail:
+                        del trail[:]
+                    clauses = p.clauses
+                    if len(clauses) < 2 or not args:
+                        cands = clauses
+                    else:
+                        first = args[0]
+                        while type(first) is Var and first.ref is not None:
+                            first = first.ref
+                        cands = clauses if type(first) is Var else p.candidates(first)
+                    n = len(cands)
+                    if n == 0:
+                        cont = False
+                        break
+                    cl = cands[0]
+                    cb = len(cps)
+                    if n > 1:
+                        cps.append([CLAUSES, len(trail), args, nxt, cands, 1, n, p])
+                    run = cl.run
+                    if run is None:
+                        run = cl.prepare()
+                    cont = run(args, trail, cb, nxt, cps)
+                    if type(cont) is not list:
+                        break
+                    args = cont
+                if cont is False:
+                    cont = backtrack(cps)
             elif k == DET:
-                if p.fn(self, args):
-                    cont = nxt
-                else:
-                    fail = True
+                cont = nxt if p.fn(self, args) else backtrack(cps)
             elif k == NONDET:
                 cps.append([GEN, len(trail), p.fn(self, args), nxt])
-                fail = True
+                cont = backtrack(cps)
             elif name == ",":
                 cont = (args[0], cutb, (args[1], cutb, nxt))
             elif name == "!":
@@ -186,7 +159,53 @@ class Machine:
             else:
                 cont = run_control(self, name, args, cutb, nxt, cps)
                 if cont is FAIL:
-                    fail = True
+                    cont = backtrack(cps)
+
+    def _backtrack(self, cps: list[list[Any]]) -> Any:
+        """Resume the newest choicepoint; return its continuation, or False when none is left."""
+        trail = self.trail
+        while cps:
+            cp = cps[-1]
+            mark = cp[1]
+            while len(trail) > mark:
+                trail.pop().ref = None
+            kind = cp[0]
+            if kind == CLAUSES:
+                cont = self._next_clause(cp, cps)
+                if cont is not False:
+                    return cont
+            elif kind == GEN:
+                if next(cp[2], None) is not None:
+                    return cp[3]
+                cps.pop()
+            elif kind == ALT:
+                cps.pop()
+                return cp[2]
+            elif kind == BARRIER:
+                return False
+            else:
+                if kind == REACT:
+                    cp[2][6] = True
+                cps.pop()
+        return False
+
+    def _next_clause(self, cp: list[Any], cps: list[list[Any]]) -> Any:
+        """Try the next candidate clause of a CLAUSES choicepoint (popping it at the last)."""
+        i = cp[5]
+        cl = cp[4][i]
+        cb = len(cps) - 1
+        i += 1
+        if i >= cp[6]:
+            cps.pop()
+        else:
+            cp[5] = i
+        run = cl.run
+        if run is None:
+            run = cl.prepare()
+        cont = run(cp[2], self.trail, cb, cp[3], cps)
+        if type(cont) is list:
+            return (new_term(Term, (cp[7].name, tuple(cont))), 0, cp[3])
+        return cont
 
     def _call_other(self, goal: Any, cutb: int, nxt: Any) -> Any:
         """Dispatch a goal that is a bound variable; raise for unbound or non-callable."""
@@ -207,7 +226,7 @@ class Machine:
         trail = self.trail
         cands = p.clauses if not args or len(p.clauses) < 2 else p.candidates(deref1(args[0]))
         if cands:
-            cps.append([CLAUSES, len(trail), args, nxt, cands, 0, len(cands)])
+            cps.append([CLAUSES, len(trail), args, nxt, cands, 0, len(cands), p])
         assert p.pyfn is not None
         cps.append([GEN, len(trail), python_solutions(self, p, args), nxt])
 
