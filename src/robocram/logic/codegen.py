@@ -27,7 +27,7 @@ from robocram.logic.clause import Clause, Slot, Tmpl
 from robocram.logic.terms import Term, Var, new_term
 from robocram.logic.unify import unify
 
-__all__ = ["ClauseFn", "compile_clause_fn"]
+__all__ = ["ClauseFn", "ClauseWriter", "compile_clause_fn", "make_factory"]
 
 ClauseFn = Callable[[tuple[Any, ...], list[Var], int, Any, list[list[Any]]], Any]
 
@@ -46,14 +46,19 @@ _EXACT_TYPES = (str, int, float)
 
 def compile_clause_fn(clause: Clause) -> ClauseFn:
     """Return the specialised function for `clause` (factories are cached by source)."""
-    gen = _Generator()
+    gen = ClauseWriter()
     source = gen.clause_source(clause)
+    return make_factory(source)(*gen.consts)
+
+
+def make_factory(source: str) -> Callable[..., Any]:
+    """Execute generated source defining `make(...)`, once per distinct source text."""
     factory = _FACTORIES.get(source)
     if factory is None:
         namespace = dict(_NAMESPACE)
         exec(compile(source, "<robocram clause>", "exec"), namespace)  # noqa: S102
         factory = _FACTORIES[source] = namespace["make"]
-    return factory(*gen.consts)
+    return factory
 
 
 def _slots_in(t: Any, out: list[int]) -> list[int]:
@@ -65,6 +70,11 @@ def _slots_in(t: Any, out: list[int]) -> list[int]:
         for a in t.args:
             _slots_in(a, out)
     return out
+
+
+def _arg_names(arity: int) -> str:
+    """`a0, a1, ` : the locals holding the call's arguments (a tuple target)."""
+    return "".join(f"a{i}, " for i in range(arity))
 
 
 def _parts(t: Any) -> tuple[str, tuple[Any, ...]] | None:
@@ -82,44 +92,61 @@ def _is_self_call(goal: Any, clause: Clause) -> bool:
     return parts is not None and parts[0] == clause.name and len(parts[1]) == len(clause.head)
 
 
-class _Generator:
-    """Emits the Python source of one clause function, tracking which slots hold values."""
+class ClauseWriter:
+    """Emits the Python source of clause code, tracking which slots hold values."""
 
     def __init__(self) -> None:
         self.lines: list[str] = []
         self.consts: list[Any] = []
         self.known: set[int] = set()
         self.temps = 0
+        self.base = 0
 
     def clause_source(self, clause: Clause) -> str:
         """Generate `make(k0, k1, ...)` returning the clause function."""
-        head = clause.head
-        if len(head) == 1:
-            self.emit("a0 = args[0]", 1)
-        elif head:
-            self.emit(", ".join(f"a{i}" for i in range(len(head))) + " = args", 1)
-        for i, p in enumerate(head):
-            self.unify_arg(p, f"a{i}", 1)
-        body = list(reversed(clause.body_rev))
-        while body and self.inline_goal(body[0]):
-            body.pop(0)
-        self.fresh(body, 1)
-        if len(body) == 1 and _is_self_call(body[0], clause):
-            args = "".join(f"{self.build(a)}, " for a in _parts(body[0])[1])  # type: ignore[index]
-            self.emit(f"return [{args}]", 1)
-        else:
-            cont = "nxt"
-            for g in reversed(body):
-                cont = f"({self.build(g)}, cb, {cont})"
-            self.emit(f"return {cont}", 1)
+        arity = len(clause.head)
+        if arity:
+            self.emit(f"{_arg_names(arity)} = args", 1)
+        self.clause_code(clause, loop=False)
         params = ", ".join(f"k{i}" for i in range(len(self.consts)))
         return "\n".join(
             [f"def make({params}):", "  def run(args, trail, cb, nxt, cps):", *self.lines]
             + ["  return run", ""]
         )
 
+    def clause_code(self, clause: Clause, loop: bool, switched: int = -1) -> None:
+        """Emit head unification, the inline built-ins and the exit of one clause.
+
+        The exit returns the continuation; a call to the clause's own predicate returns its
+        argument list instead, or with `loop` reassigns the argument locals and continues.
+        Argument `switched` is already dereferenced and known to have the head's constant
+        or functor (a procedure switched on it), so only its subterms are unified.
+        """
+        self.known = set()
+        for i, p in enumerate(clause.head):
+            if i != switched or type(p) is Term:
+                self.unify_arg(p, f"a{i}", 1)
+            elif type(p) is Tmpl:
+                self.read_args(p.args, f"a{i}[1]", 1)
+        body = list(reversed(clause.body_rev))
+        while body and self.inline_goal(body[0]):
+            body.pop(0)
+        self.fresh(body, 1)
+        if len(body) == 1 and _is_self_call(body[0], clause):
+            args = "".join(f"{self.build(a)}, " for a in _parts(body[0])[1])  # type: ignore[index]
+            if loop:
+                self.emit(f"{_arg_names(len(clause.head))} = {args}", 1)
+                self.emit("continue", 1)
+            else:
+                self.emit(f"return [{args}]", 1)
+            return
+        cont = "nxt"
+        for g in reversed(body):
+            cont = f"({self.build(g)}, cb, {cont})"
+        self.emit(f"return {cont}", 1)
+
     def emit(self, line: str, depth: int) -> None:
-        self.lines.append("  " * (depth + 1) + line)
+        self.lines.append("  " * (depth + self.base + 1) + line)
 
     def const(self, value: Any) -> str:
         self.consts.append(value)

@@ -18,7 +18,7 @@ from robocram.logic.errors import (
     PrologTypeError,
     UnknownPredicateError,
 )
-from robocram.logic.predicate import DET, NONDET, USER, Pred
+from robocram.logic.predicate import DET, NONDET, USER, WARM_CALLS, Pred
 from robocram.logic.terms import Term, Var, new_term
 from robocram.logic.unify import copy_resolved, undo, unify
 
@@ -116,19 +116,33 @@ class Machine:
                     self._push_python(p, args, nxt, cps)
                     cont = backtrack(cps)
                     continue
+                proc = p.proc
+                if proc is not None:
+                    cont = proc(args, trail, nxt, cps)
+                    if type(cont) is not list:
+                        if cont is False:
+                            cont = backtrack(cps)
+                        continue
+                    args = cont
+                elif p.warm < WARM_CALLS:
+                    p.warm_up()
                 # A clause ending in a call to its own predicate returns that call's
                 # arguments as a list: loop here instead of going round the goal dispatch.
                 while True:
                     if not cps and trail:
                         del trail[:]
-                    clauses = p.clauses
-                    if len(clauses) < 2 or not args:
-                        cands = clauses
-                    else:
+                    cands = p.clauses
+                    if len(cands) > 1 and args:
                         first = args[0]
                         while type(first) is Var and first.ref is not None:
                             first = first.ref
-                        cands = clauses if type(first) is Var else p.candidates(first)
+                        if type(first) is Term:
+                            index = p.index
+                            if index is None:
+                                index = p.build_index()
+                            cands = index.get((first[0], len(first[1])), p.varclauses)
+                        elif type(first) is not Var:
+                            cands = p.candidates(first)
                     n = len(cands)
                     if n == 0:
                         cont = False

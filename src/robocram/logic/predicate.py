@@ -11,9 +11,10 @@ from robocram.logic.terms import Term, Var
 if TYPE_CHECKING:
     from robocram.logic.machine import Machine
 
-__all__ = ["CONTROL", "DET", "NONDET", "USER", "DetFn", "NondetFn", "Pred"]
+__all__ = ["CONTROL", "DET", "NONDET", "USER", "WARM_CALLS", "DetFn", "NondetFn", "Pred"]
 
 USER, DET, NONDET, CONTROL = 0, 1, 2, 3
+WARM_CALLS = 3
 
 DetFn = Callable[["Machine", tuple[Any, ...]], bool]
 NondetFn = Callable[["Machine", tuple[Any, ...]], Iterator[Any]]
@@ -32,9 +33,11 @@ class Pred:
         "kind",
         "name",
         "owner",
+        "proc",
         "pyfn",
         "system",
         "varclauses",
+        "warm",
     )
 
     def __init__(self, name: str, arity: int, kind: int = USER, fn: Any = None) -> None:
@@ -50,6 +53,16 @@ class Pred:
         self.system = False
         self.owner: str | None = None
         self.extendable: set[str] = set()
+        self.proc: Any = None
+        self.warm = 0
+
+    def warm_up(self) -> None:
+        """Count a call; on the third, compile the switching procedure if it qualifies."""
+        self.warm += 1
+        if self.warm == WARM_CALLS:
+            from robocram.logic.procedure import compile_procedure
+
+            self.proc = compile_procedure(self)
 
     @property
     def indicator(self) -> str:
@@ -60,10 +73,14 @@ class Pred:
         """Replace all clauses (a new list, so running queries keep their snapshot)."""
         self.clauses = clauses
         self.index = None
+        self.proc = None
+        self.warm = 0
 
     def add_last(self, clause: Clause) -> None:
         """Append a clause in place, keeping any built index up to date."""
         self.clauses.append(clause)
+        self.proc = None
+        self.warm = 0
         index = self.index
         if index is None:
             return

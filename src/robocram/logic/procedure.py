@@ -1,0 +1,108 @@
+"""Compile a small deterministic predicate into one switching Python function.
+
+When every clause of a predicate has a distinct constant or functor in the same argument
+position, at most one clause can match a call that binds that argument, so no choicepoint
+is needed. The generated procedure switches on that argument, runs the matching clause's
+code inline, and runs a call to the predicate itself (the recursive clause of `app/3`,
+`no_attack/3` of 8-queens) as a loop in the same Python frame:
+
+    proc(args, trail, nxt, cps) -> continuation, False (no clause matches or it fails),
+                                   or the argument list when the switch argument is
+                                   unbound (the machine then tries the clauses in order)
+
+Skipping the clauses that cannot match changes no answer: they would fail in their head.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
+
+from robocram.logic.clause import Clause, Tmpl
+from robocram.logic.codegen import ClauseWriter, make_factory
+from robocram.logic.terms import Term
+
+if TYPE_CHECKING:
+    from robocram.logic.predicate import Pred
+
+__all__ = ["MAX_CLAUSES", "Procedure", "compile_procedure"]
+
+Procedure = Callable[[tuple[Any, ...], list[Any], Any, list[list[Any]]], Any]
+MAX_CLAUSES = 8
+_ATOMIC = (str, int, float)
+
+
+def compile_procedure(pred: Pred) -> Procedure | None:
+    """Return the switching procedure of `pred`, or None when it does not qualify."""
+    clauses = list(pred.clauses)
+    if pred.dynamic or pred.pyfn is not None or not 2 <= len(clauses) <= MAX_CLAUSES:
+        return None
+    position = _switch_position(clauses)
+    if position is None:
+        return None
+    writer = ClauseWriter()
+    arity = len(clauses[0].head)
+    a = f"a{position}"
+    writer.emit("".join(f"a{i}, " for i in range(arity)) + "= args", 1)
+    writer.emit("while True:", 1)
+    writer.emit("if not cps and trail: del trail[:]", 2)
+    writer.emit("cb = len(cps)", 2)
+    writer.emit(f"while type({a}) is Var and {a}.ref is not None: {a} = {a}.ref", 2)
+    writer.emit(f"ta = type({a})", 2)
+    writer.emit(f"if ta is Var: return [{''.join(f'a{i}, ' for i in range(arity))}]", 2)
+    compound = [c for c in clauses if _is_compound(c.head[position])]
+    if compound:
+        writer.emit("if ta is Term:", 2)
+        writer.emit(f"fn = {a}[0]; fa = len({a}[1])", 3)
+        for c in compound:
+            name, args = _functor(c.head[position])
+            writer.emit(f"if fn == {writer.const(name)} and fa == {len(args)}:", 3)
+            _clause_at(writer, c, 4, position)
+        writer.emit("return False", 3)
+    for c in clauses:
+        key = c.head[position]
+        if not _is_compound(key):
+            test = f"ta is {type(key).__name__} and {a} == {writer.const(key)}"
+            writer.emit(f"if {test}:", 2)
+            _clause_at(writer, c, 3, position)
+    writer.emit("return False", 2)
+    params = ", ".join(f"k{i}" for i in range(len(writer.consts)))
+    source = "\n".join(
+        [f"def make({params}):", "  def proc(args, trail, nxt, cps):", *writer.lines]
+        + ["  return proc", ""]
+    )
+    proc: Procedure = make_factory(source)(*writer.consts)
+    return proc
+
+
+def _clause_at(writer: ClauseWriter, clause: Clause, depth: int, position: int) -> None:
+    writer.base = depth - 1
+    writer.clause_code(clause, loop=True, switched=position)
+    writer.base = 0
+
+
+def _is_compound(t: Any) -> bool:
+    return type(t) is Tmpl or type(t) is Term
+
+
+def _functor(t: Any) -> tuple[str, tuple[Any, ...]]:
+    return (t.name, t.args) if type(t) is Tmpl else (t[0], t[1])
+
+
+def _switch_position(clauses: list[Clause]) -> int | None:
+    """The first argument where every clause has a distinct constant or functor."""
+    for i in range(len(clauses[0].head)):
+        keys: list[Any] = []
+        for c in clauses:
+            t = c.head[i]
+            if _is_compound(t):
+                name, args = _functor(t)
+                keys.append(("$functor", name, len(args)))
+            elif type(t) in _ATOMIC and t == t:
+                keys.append(t)
+            else:
+                break
+        else:
+            if len(set(keys)) == len(keys):
+                return i
+    return None

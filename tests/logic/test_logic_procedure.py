@@ -1,0 +1,108 @@
+"""Switching procedures (compiled after a few calls) answer like the clauses run in order."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+
+from robocram.logic import KnowledgeBase, PrologInstantiationError, PrologTypeError
+from robocram.logic.procedure import compile_procedure
+
+PROGRAM = """
+len([], 0).
+len([_|T], N) :- len(T, M), N is M + 1.
+walk(_, [], done).
+walk(K, [X|Xs], R) :- X > K, !, walk(K, Xs, R).
+walk(_, [_|_], stopped).
+shape(f(a), fa).
+shape(g(X), X).
+shape(h, atom_h).
+shape(3, int3).
+shape(3.0, float3).
+ground_f(f(a), yes).
+ground_f(g(b), no).
+count(0) :- !.
+count(N) :- N > 0, M is N - 1, count(M).
+"""
+
+
+def answers(kb: KnowledgeBase, text: str, key: str, times: int = 5) -> list[Any]:
+    """Answers for `key`, asked enough times for the procedure to be compiled."""
+    runs = [[a[key] for a in kb.query(text)] for _ in range(times)]
+    assert all(r == runs[0] for r in runs)
+    return runs[0]
+
+
+@pytest.fixture()
+def kb() -> KnowledgeBase:
+    k = KnowledgeBase()
+    k.consult(PROGRAM)
+    return k
+
+
+def test_procedure_compiled_only_for_distinct_keys(kb: KnowledgeBase) -> None:
+    assert compile_procedure(kb._preds[("len", 2)]) is not None
+    assert compile_procedure(kb._preds[("count", 1)]) is None  # count(N) matches any key
+    assert compile_procedure(kb._preds[("walk", 3)]) is None  # [_|_] twice, no other position
+    assert compile_procedure(kb._preds[("shape", 2)]) is None  # 3 and 3.0 share a key
+
+
+def test_procedure_recursion_and_unbound_switch(kb: KnowledgeBase) -> None:
+    assert answers(kb, "len([a, b, c], N)", "N") == [3]
+    for _ in range(5):
+        first = kb.first("len(L, 2)")
+        assert first is not None and len(first["L"]) == 2
+    assert answers(kb, "len(foo, N)", "N") == []
+
+
+def test_procedure_switch_on_later_argument() -> None:
+    kb = KnowledgeBase()
+    kb.consult("na(_, [], _). na(Q, [Q1|Qs], D) :- Q =\\= Q1 + D, D1 is D + 1, na(Q, Qs, D1).")
+    assert compile_procedure(kb._preds[("na", 3)]) is not None
+    for _ in range(5):
+        assert kb.holds("na(1, [3, 5, 7], 1)")
+        assert not kb.holds("na(5, [1, 3], 1)")
+        assert kb.holds("na(1, [], 1)")
+        with pytest.raises(PrologInstantiationError):
+            kb.holds("na(1, [2], _)")
+
+
+def test_procedure_ground_compound_key_checks_arguments(kb: KnowledgeBase) -> None:
+    assert compile_procedure(kb._preds[("ground_f", 2)]) is not None
+    assert answers(kb, "ground_f(f(a), R)", "R") == ["yes"]
+    assert answers(kb, "ground_f(f(b), R)", "R") == []
+    assert answers(kb, "ground_f(g(b), R)", "R") == ["no"]
+    assert answers(kb, "ground_f(X, R)", "R") == ["yes", "no"]
+
+
+def test_procedure_deep_count_and_bad_input(kb: KnowledgeBase) -> None:
+    for _ in range(4):
+        assert kb.holds("count(100000)")
+        assert not kb.holds("count(-1)")
+    for _ in range(3):
+        with pytest.raises(PrologTypeError, match="foo/0"):
+            kb.holds("count(foo)")
+
+
+def test_procedure_recompiled_when_group_reloads() -> None:
+    kb = KnowledgeBase()
+    kb.consult("color(red, warm). color(blue, cold).", group="colors")
+    assert [kb.first("color(red, T)") for _ in range(5)][-1] == {"T": "warm"}
+    assert kb._preds[("color", 2)].proc is not None
+    kb.consult("color(red, hot). color(green, fresh).", group="colors")
+    assert kb._preds[("color", 2)].proc is None
+    for _ in range(5):
+        assert kb.first("color(red, T)") == {"T": "hot"}
+        assert kb.first("color(blue, T)") is None
+        assert kb.first("color(green, T)") == {"T": "fresh"}
+
+
+def test_procedure_skipped_for_dynamic_and_python(kb: KnowledgeBase) -> None:
+    kb.consult(":- dynamic(seen/1).\nseen(a). seen(b).", group="d")
+    assert compile_procedure(kb._preds[("seen", 1)]) is None
+    for _ in range(4):
+        assert kb.holds("seen(b)")
+    kb.assertz("seen(c)")
+    assert kb.holds("seen(c)")
+    assert [a["X"] for a in kb.query("seen(X)")] == ["a", "b", "c"]
