@@ -21,6 +21,7 @@ from robocram.logic import (  # noqa: F401  # noqa: F401
     builtin_terms,
     python_predicates,
 )
+from robocram.logic.bulk import paused_gc
 from robocram.logic.clause import Slot, build, compile_term
 from robocram.logic.convert import to_prolog, to_python
 from robocram.logic.errors import FactGroupError, PrologError, PrologPermissionError
@@ -78,14 +79,15 @@ class KnowledgeBase:
         """Load Prolog text as fact group `group` (replacing it); None appends to 'user'."""
         terms = []
         directives = []
-        for term, _ in read_terms(text, self._ops):
-            if type(term) is Term and term[0] == ":-" and len(term[1]) == 1:
-                if self._declaration(deref(term[1][0]), group):
-                    continue
-                directives.append(term[1][0])
-            else:
-                terms.append(term)
-        self.add_fact_group(group, terms, extendable)
+        with paused_gc():
+            for term, _ in read_terms(text, self._ops):
+                if type(term) is Term and term[0] == ":-" and len(term[1]) == 1:
+                    if self._declaration(deref(term[1][0]), group):
+                        continue
+                    directives.append(term[1][0])
+                else:
+                    terms.append(term)
+            self.add_fact_group(group, terms, extendable)
         for goal in directives:
             if not self.holds_term(goal):
                 raise PrologError(f"directive failed: {goal!r} (in fact group {group or 'user'!r})")

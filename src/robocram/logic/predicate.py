@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING, Any
 
+from robocram.logic.bulk import paused_gc
 from robocram.logic.clause import Clause
 from robocram.logic.terms import Term, Var
 
@@ -98,16 +99,17 @@ class Pred:
         """Group clauses by first-argument key; variable-first clauses join every bucket."""
         index: dict[Any, list[Clause]] = {}
         varclauses: list[Clause] = []
-        for clause in self.clauses:
-            if clause.key is None:
-                varclauses.append(clause)
-                for bucket in index.values():
-                    bucket.append(clause)
-            else:
-                found = index.get(clause.key)
-                if found is None:
-                    found = index[clause.key] = list(varclauses)
-                found.append(clause)
+        with paused_gc():
+            for clause in self.clauses:
+                if clause.key is None:
+                    varclauses.append(clause)
+                    for bucket in index.values():
+                        bucket.append(clause)
+                else:
+                    found = index.get(clause.key)
+                    if found is None:
+                        found = index[clause.key] = list(varclauses)
+                    found.append(clause)
         self.varclauses = varclauses
         self.index = index
         return index
