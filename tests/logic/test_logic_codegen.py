@@ -158,3 +158,16 @@ def test_codegen_self_tail_call_reaches_python_predicate() -> None:
 
     for _ in range(3):
         assert [a["R"] for a in kb.query("walk(4, R)")] == ["bottom"]
+
+
+def test_codegen_arithmetic_on_variable_chains(kb: KnowledgeBase) -> None:
+    for _ in range(3):
+        assert kb.first(
+            "X = Y, Y = Z, Z = 4, step(X, M)",
+        ) == {
+            "X": 4,
+            "Y": 4,
+            "Z": 4,
+            "M": 6,
+        }
+        assert [a["R"] for a in kb.query("A = B, B = 1.5, cmp(A, 2, R)")] == ["lt"]

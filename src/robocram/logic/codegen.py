@@ -99,6 +99,7 @@ class ClauseWriter:
         self.lines: list[str] = []
         self.consts: list[Any] = []
         self.known: set[int] = set()
+        self.dereffed: set[int] = set()
         self.temps = 0
         self.base = 0
 
@@ -123,6 +124,7 @@ class ClauseWriter:
         or functor (a procedure switched on it), so only its subterms are unified.
         """
         self.known = set()
+        self.dereffed = set()
         for i, p in enumerate(clause.head):
             if i != switched or type(p) is Term:
                 self.unify_arg(p, f"a{i}", 1)
@@ -275,6 +277,11 @@ class ClauseWriter:
             if t.i not in self.known:
                 return None
             v = f"v{t.i}"
+            if t.i not in self.dereffed:
+                # A slot read from a call argument is often a bound variable: dereference
+                # it once so every later use takes the int fast path.
+                self.emit(f"while type({v}) is Var and {v}.ref is not None: {v} = {v}.ref", 1)
+                self.dereffed.add(t.i)
             return f"({v} if type({v}) is int else ev({v}))"
         if type(t) is int:
             return self.const(t)
