@@ -171,3 +171,17 @@ def test_codegen_arithmetic_on_variable_chains(kb: KnowledgeBase) -> None:
             "M": 6,
         }
         assert [a["R"] for a in kb.query("A = B, B = 1.5, cmp(A, 2, R)")] == ["lt"]
+
+
+def test_codegen_compiled_binary_functions_keep_iso_errors() -> None:
+    kb = KnowledgeBase()
+    kb.consult("f(A, B, R) :- R is (A * 3) mod B + max(A, B) // 2 + 2 ** B.")
+    for _ in range(3):
+        assert kb.first("f(7, 4, R)") == {"R": 1 + 3 + 16}
+        assert kb.first("f(-7, 4, R)") == {"R": 3 + 2 + 16}
+        caught = kb.first("catch(f(7, 0, _), error(E, _), true)")
+        assert caught == {"E": Term("evaluation_error", ("zero_divisor",))}
+        caught = kb.first("catch(f(7, 2.0, _), error(E, _), true)")
+        assert caught == {"E": Term("type_error", ("integer", 2.0))}
+        with pytest.raises(PrologInstantiationError):
+            kb.holds("f(7, _, _)")

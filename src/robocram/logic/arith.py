@@ -18,7 +18,7 @@ from robocram.logic.terms import PString, Term, Var
 if TYPE_CHECKING:
     from robocram.logic.machine import Machine
 
-__all__ = ["evaluate"]
+__all__ = ["BINARY_FUNCTIONS", "apply_binary", "evaluate"]
 
 Number = int | float
 
@@ -133,6 +133,20 @@ _CONSTANTS: dict[str, Number] = {
     "epsilon": 2.220446049250313e-16,
     "max_tagged_integer": (1 << 60) - 1,
 }
+
+
+BINARY_FUNCTIONS = frozenset(_BINARY)
+
+
+def apply_binary(name: str, a: Number, b: Number) -> Number:
+    """Apply binary function `name` to evaluated operands (for compiled clauses), as
+    `evaluate` does, with the same ISO errors."""
+    try:
+        return _BINARY[name](a, b)
+    except ZeroDivisionError as err:
+        raise PrologEvaluationError("zero_divisor", f"{name}: division by zero") from err
+    except (ValueError, OverflowError) as err:
+        raise PrologEvaluationError("undefined", f"{name}/2: {err}") from err
 
 
 def evaluate(t: Any) -> Number:

@@ -22,7 +22,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
-from robocram.logic.arith import evaluate
+from robocram.logic.arith import BINARY_FUNCTIONS, apply_binary, evaluate
 from robocram.logic.clause import Clause, Slot, Tmpl
 from robocram.logic.terms import Term, Var, new_term
 from robocram.logic.unify import unify
@@ -37,6 +37,7 @@ _NAMESPACE: dict[str, Any] = {
     "new_term": new_term,
     "unify": unify,
     "ev": evaluate,
+    "ap2": apply_binary,
 }
 _FACTORIES: dict[str, Callable[..., ClauseFn]] = {}
 _ARITH_OPS = {"+": "+", "-": "-", "*": "*"}
@@ -288,11 +289,13 @@ class ClauseWriter:
         parts = _parts(t)
         if parts is not None:
             name, args = parts
-            if len(args) == 2 and name in _ARITH_OPS:
+            if len(args) == 2 and name in BINARY_FUNCTIONS:
                 a, b = self.expr(args[0]), self.expr(args[1])
                 if a is None or b is None:
                     return None
-                return f"({a} {_ARITH_OPS[name]} {b})"
+                if name in _ARITH_OPS:
+                    return f"({a} {_ARITH_OPS[name]} {b})"
+                return f"ap2({self.const(name)}, {a}, {b})"
             if any(i not in self.known for i in _slots_in(t, [])):
                 return None
         return f"ev({self.build(t)})"
