@@ -126,38 +126,7 @@ class Machine:
                     args = cont
                 elif p.warm < WARM_CALLS:
                     p.warm_up()
-                # A clause ending in a call to its own predicate returns that call's
-                # arguments as a list: loop here instead of going round the goal dispatch.
-                while True:
-                    if not cps and trail:
-                        del trail[:]
-                    cands = p.clauses
-                    if len(cands) > 1 and args:
-                        first = args[0]
-                        while type(first) is Var and first.ref is not None:
-                            first = first.ref
-                        if type(first) is Term:
-                            index = p.index
-                            if index is None:
-                                index = p.build_index()
-                            cands = index.get((first[0], len(first[1])), p.varclauses)
-                        elif type(first) is not Var:
-                            cands = p.candidates(first)
-                    n = len(cands)
-                    if n == 0:
-                        cont = False
-                        break
-                    cl = cands[0]
-                    cb = len(cps)
-                    if n > 1:
-                        cps.append([CLAUSES, len(trail), args, nxt, cands, 1, n, p])
-                    run = cl.run
-                    if run is None:
-                        run = cl.prepare()
-                    cont = run(args, trail, cb, nxt, cps)
-                    if type(cont) is not list:
-                        break
-                    args = cont
+                cont = self._call_clauses(p, args, nxt, cps)
                 if cont is False:
                     cont = backtrack(cps)
             elif k == DET:
@@ -174,6 +143,43 @@ class Machine:
                 cont = run_control(self, name, args, cutb, nxt, cps)
                 if cont is FAIL:
                     cont = backtrack(cps)
+
+    def _call_clauses(self, p: Pred, args: Any, nxt: Any, cps: list[list[Any]]) -> Any:
+        """Try the clauses of `p` that the first argument selects; False when none runs.
+
+        A clause ending in a call to its own predicate returns that call's arguments as a
+        list: loop here instead of going round the goal dispatch.
+        """
+        trail = self.trail
+        while True:
+            if not cps and trail:
+                del trail[:]
+            cands = p.clauses
+            if len(cands) > 1 and args:
+                first = args[0]
+                while type(first) is Var and first.ref is not None:
+                    first = first.ref
+                if type(first) is Term:
+                    index = p.index
+                    if index is None:
+                        index = p.build_index()
+                    cands = index.get((first[0], len(first[1])), p.varclauses)
+                elif type(first) is not Var:
+                    cands = p.candidates(first)
+            n = len(cands)
+            if n == 0:
+                return False
+            cl = cands[0]
+            cb = len(cps)
+            if n > 1:
+                cps.append([CLAUSES, len(trail), args, nxt, cands, 1, n, p])
+            run = cl.run
+            if run is None:
+                run = cl.prepare()
+            cont = run(args, trail, cb, nxt, cps)
+            if type(cont) is not list:
+                return cont
+            args = cont
 
     def _backtrack(self, cps: list[list[Any]]) -> Any:
         """Resume the newest choicepoint; return its continuation, or False when none is left."""
