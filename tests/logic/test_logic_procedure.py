@@ -106,3 +106,14 @@ def test_procedure_skipped_for_dynamic_and_python(kb: KnowledgeBase) -> None:
     kb.assertz("seen(c)")
     assert kb.holds("seen(c)")
     assert [a["X"] for a in kb.query("seen(X)")] == ["a", "b", "c"]
+
+
+def test_procedure_and_clause_too_deep_to_compile_still_answer() -> None:
+    kb = KnowledgeBase()
+    n = 150
+    names = ", ".join(f"X{i}" for i in range(n))
+    kb.consult(f"p([{names}], X{n - 1}). p(foo, bar).")
+    assert compile_procedure(kb._preds[("p", 2)]) is None
+    for _ in range(4):
+        assert kb.first("p(L, Y)", L=list(range(n))) == {"Y": n - 1}
+        assert kb.first("p(foo, Y)") == {"Y": "bar"}

@@ -70,7 +70,12 @@ class Clause:
             return self.interpret
         from robocram.logic.codegen import compile_clause_fn
 
-        self.run = compile_clause_fn(self)
+        try:
+            self.run = compile_clause_fn(self)
+        except (SyntaxError, RecursionError, MemoryError):
+            # Too deeply nested for Python's compiler (e.g. a head with a 150-element
+            # list): interpreting it is correct, only slower.
+            self.run = self.interpret
         return self.run
 
     def interpret(

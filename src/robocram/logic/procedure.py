@@ -40,6 +40,21 @@ def compile_procedure(pred: Pred) -> Procedure | None:
     position = _switch_position(clauses)
     if position is None:
         return None
+    try:
+        writer = _write_switch(clauses, position)
+        params = ", ".join(f"k{i}" for i in range(len(writer.consts)))
+        source = "\n".join(
+            [f"def make({params}):", "  def proc(args, trail, nxt, cps):", *writer.lines]
+            + ["  return proc", ""]
+        )
+        proc: Procedure = make_factory(source)(*writer.consts)
+    except (SyntaxError, RecursionError, MemoryError):
+        return None  # too deeply nested to compile; the clauses run one by one instead
+    return proc
+
+
+def _write_switch(clauses: list[Clause], position: int) -> ClauseWriter:
+    """Emit the loop that switches on argument `position` into each clause's code."""
     writer = ClauseWriter()
     arity = len(clauses[0].head)
     a = f"a{position}"
@@ -66,13 +81,7 @@ def compile_procedure(pred: Pred) -> Procedure | None:
             writer.emit(f"if {test}:", 2)
             _clause_at(writer, c, 3, position)
     writer.emit("return False", 2)
-    params = ", ".join(f"k{i}" for i in range(len(writer.consts)))
-    source = "\n".join(
-        [f"def make({params}):", "  def proc(args, trail, nxt, cps):", *writer.lines]
-        + ["  return proc", ""]
-    )
-    proc: Procedure = make_factory(source)(*writer.consts)
-    return proc
+    return writer
 
 
 def _clause_at(writer: ClauseWriter, clause: Clause, depth: int, position: int) -> None:
