@@ -2,9 +2,14 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterator, Mapping
 from pathlib import Path
 
+import numpy as np
+import pybullet as p
 import pytest
+
+from robocram.robots import RobotDescription
 
 TINY_URDF = """<?xml version="1.0"?>
 <robot name="tiny">
@@ -57,3 +62,45 @@ def tiny_package(tmp_path: Path) -> Path:
     (package / "meshes" / "body.stl").write_text(TINY_STL)
     (package / "urdf" / "tiny.urdf").write_text(TINY_URDF)
     return tmp_path / "ws"
+
+
+class Sim:
+    """The model in a headless PyBullet, with joints and links by name."""
+
+    def __init__(self, urdf: Path) -> None:
+        self.client = p.connect(p.DIRECT)
+        self.body = p.loadURDF(str(urdf), useFixedBase=True, physicsClientId=self.client)
+        infos = [
+            p.getJointInfo(self.body, i, physicsClientId=self.client)
+            for i in range(p.getNumJoints(self.body, physicsClientId=self.client))
+        ]
+        self.joints = {info[1].decode(): info[0] for info in infos}
+        self.links = {info[12].decode(): info[0] for info in infos}
+
+    def set(self, values: Mapping[str, float]) -> None:
+        """Set ``values``; every other joint goes to 0."""
+        for name, index in self.joints.items():
+            value = values.get(name, 0.0)
+            p.resetJointState(self.body, index, value, physicsClientId=self.client)
+
+    def frame(self, link: str) -> tuple[np.ndarray, np.ndarray]:
+        """Position [m] and rotation matrix of ``link`` in the world (= base_footprint)."""
+        state = p.getLinkState(
+            self.body, self.links[link], computeForwardKinematics=True, physicsClientId=self.client
+        )
+        rotation = np.array(p.getMatrixFromQuaternion(state[5])).reshape(3, 3)
+        return np.array(state[4]), rotation
+
+
+@pytest.fixture(scope="module")
+def robot_in_pybullet(
+    request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory
+) -> Iterator[Sim]:
+    """The module's ``robot`` description, written by ``to_urdf`` and loaded in PyBullet."""
+    desc: RobotDescription = request.getfixturevalue("robot")
+    assert desc.model is not None
+    path = tmp_path_factory.mktemp(desc.name) / f"{desc.name}.urdf"
+    desc.model.to_urdf(path)
+    sim = Sim(path)
+    yield sim
+    p.disconnect(sim.client)

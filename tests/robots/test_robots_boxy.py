@@ -4,8 +4,7 @@ loads in PyBullet and pinocchio. Expected numbers are facts of Boxy's published 
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator, Mapping
-from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 import pinocchio as pin
@@ -13,6 +12,9 @@ import pybullet as p
 import pytest
 
 from robocram.robots import RobotDescription, load_description, mimic_followers
+
+if TYPE_CHECKING:
+    from conftest import Sim
 
 TOL = 1e-6
 MIDDLE_Y = 0.045  # [m] over base_footprint: halfway between the two arm mounts
@@ -24,41 +26,13 @@ def boxy() -> RobotDescription:
 
 
 @pytest.fixture(scope="module")
-def sim(boxy: RobotDescription, tmp_path_factory: pytest.TempPathFactory) -> Iterator[Sim]:
-    assert boxy.model is not None
-    path = tmp_path_factory.mktemp("boxy") / "boxy.urdf"
-    boxy.model.to_urdf(path)
-    sim = Sim(path)
-    yield sim
-    p.disconnect(sim.client)
+def robot(boxy: RobotDescription) -> RobotDescription:
+    return boxy
 
 
-class Sim:
-    """The model in a headless PyBullet, with joints and links by name."""
-
-    def __init__(self, urdf: Path) -> None:
-        self.client = p.connect(p.DIRECT)
-        self.body = p.loadURDF(str(urdf), useFixedBase=True, physicsClientId=self.client)
-        infos = [
-            p.getJointInfo(self.body, i, physicsClientId=self.client)
-            for i in range(p.getNumJoints(self.body, physicsClientId=self.client))
-        ]
-        self.joints = {info[1].decode(): info[0] for info in infos}
-        self.links = {info[12].decode(): info[0] for info in infos}
-
-    def set(self, values: Mapping[str, float]) -> None:
-        """Set ``values``; every other joint goes to 0."""
-        for name, index in self.joints.items():
-            value = values.get(name, 0.0)
-            p.resetJointState(self.body, index, value, physicsClientId=self.client)
-
-    def frame(self, link: str) -> tuple[np.ndarray, np.ndarray]:
-        """Position [m] and rotation matrix of ``link`` in the world (= base_footprint)."""
-        state = p.getLinkState(
-            self.body, self.links[link], computeForwardKinematics=True, physicsClientId=self.client
-        )
-        rotation = np.array(p.getMatrixFromQuaternion(state[5])).reshape(3, 3)
-        return np.array(state[4]), rotation
+@pytest.fixture(scope="module")
+def sim(robot_in_pybullet: Sim) -> Sim:
+    return robot_in_pybullet
 
 
 def test_two_arms_and_a_neck_arm_with_the_camera(boxy: RobotDescription) -> None:

@@ -4,9 +4,9 @@ pinocchio. Expected numbers are facts of the published HSR-B description."""
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator, Mapping
 from dataclasses import replace
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 import pinocchio as pin
@@ -21,6 +21,9 @@ from robocram.robots import (
 )
 from robocram.robots.builtin.hsrb import description
 
+if TYPE_CHECKING:
+    from conftest import Sim
+
 TOL = 1e-6
 
 
@@ -30,41 +33,13 @@ def hsrb() -> RobotDescription:
 
 
 @pytest.fixture(scope="module")
-def sim(hsrb: RobotDescription, tmp_path_factory: pytest.TempPathFactory) -> Iterator[Sim]:
-    assert hsrb.model is not None
-    path = tmp_path_factory.mktemp("hsrb") / "hsrb_with_tool_frame.urdf"
-    hsrb.model.to_urdf(path)
-    sim = Sim(path)
-    yield sim
-    p.disconnect(sim.client)
+def robot(hsrb: RobotDescription) -> RobotDescription:
+    return hsrb
 
 
-class Sim:
-    """The model in a headless PyBullet, with joints and links by name."""
-
-    def __init__(self, urdf: Path) -> None:
-        self.client = p.connect(p.DIRECT)
-        self.body = p.loadURDF(str(urdf), useFixedBase=True, physicsClientId=self.client)
-        infos = [
-            p.getJointInfo(self.body, i, physicsClientId=self.client)
-            for i in range(p.getNumJoints(self.body, physicsClientId=self.client))
-        ]
-        self.joints = {info[1].decode(): info[0] for info in infos}
-        self.links = {info[12].decode(): info[0] for info in infos}
-
-    def set(self, values: Mapping[str, float]) -> None:
-        """Set ``values``; every other joint goes to 0."""
-        for name, index in self.joints.items():
-            value = values.get(name, 0.0)
-            p.resetJointState(self.body, index, value, physicsClientId=self.client)
-
-    def frame(self, link: str) -> tuple[np.ndarray, np.ndarray]:
-        """Position [m] and rotation matrix of ``link`` in the world (= base_footprint)."""
-        state = p.getLinkState(
-            self.body, self.links[link], computeForwardKinematics=True, physicsClientId=self.client
-        )
-        rotation = np.array(p.getMatrixFromQuaternion(state[5])).reshape(3, 3)
-        return np.array(state[4]), rotation
+@pytest.fixture(scope="module")
+def sim(robot_in_pybullet: Sim) -> Sim:
+    return robot_in_pybullet
 
 
 def test_hsr_alias_and_the_single_arm(hsrb: RobotDescription) -> None:
