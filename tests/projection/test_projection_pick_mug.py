@@ -8,7 +8,9 @@ import math
 import pytest
 
 from robocram.designators import desig_equal
-from robocram.plans import pick_up
+from robocram.execution import top_level
+from robocram.logic import KnowledgeBase, using_kb
+from robocram.plans import PlanSetupError, pick_up
 from robocram.plans.pick_up import LIFT
 from robocram.projection import recorded_robot, simulated_robot
 from robocram.tf import Pose, PoseStamped
@@ -97,3 +99,10 @@ def test_the_same_plan_runs_in_the_recording_environment() -> None:
     assert result.arm == "right"  # the nearer arm to a mug on the right
     assert result.grasp.position == pytest.approx((0.62, -0.15, 0.75))
     assert result.lifted.position == pytest.approx((0.62, -0.15, 0.85))
+
+
+def test_pick_up_in_an_environment_without_a_robot_says_how_to_run_it() -> None:
+    kb = KnowledgeBase()
+    with using_kb(kb), top_level(name="no-robot") as _, pytest.raises(PlanSetupError) as info:
+        pick_up(PoseStamped("map", (0.6, -0.15, 0.7)))
+    assert "simulated_robot" in str(info.value)

@@ -16,7 +16,8 @@ import numpy as np
 from robocram.designators import ObjectDesignator, a, an
 from robocram.execution import perform
 from robocram.execution.failures import ManipulationPoseUnreachable
-from robocram.logic import current_kb
+from robocram.logic import UnknownPredicateError, current_kb
+from robocram.plans.errors import PlanSetupError
 from robocram.tf import Pose, PoseStamped, transform_pose
 from robocram.tf import quaternion as quat
 
@@ -39,10 +40,16 @@ class PickResult:
 
 
 def _robot_facts() -> dict[str, object]:
-    kb = current_kb()
-    answer = kb.first("robot(R), robot_base_frame(R, Base)")
+    hint = (
+        "pick_up found no robot/1 with robot_base_frame/2 in the current knowledge base; "
+        "run it inside an environment such as simulated_robot(world, 'pr2')"
+    )
+    try:
+        answer = current_kb().first("robot(R), robot_base_frame(R, Base)")
+    except UnknownPredicateError as err:
+        raise PlanSetupError(hint) from err
     if answer is None:
-        raise RuntimeError("no robot/1 fact in the current knowledge base; run in an environment")
+        raise PlanSetupError(hint)
     return answer
 
 
