@@ -32,6 +32,7 @@ from robocram.execution.seq import seq
 from robocram.execution.tags import tag, tagged, with_tags
 from robocram.execution.task import Task, TaskStatus, TaskStopped
 from robocram.execution.task_context import checkpoint, current_task, sleep, sub_task
+from robocram.execution.task_listeners import TaskListener, listening, task_listeners
 from robocram.execution.task_tree import TaskSnapshot, TaskTree
 from robocram.execution.top_level import TopLevel, run_top_level, top_level
 from robocram.execution.try_forms import try_all, try_in_order
@@ -48,6 +49,7 @@ __all__ = [
     "Task",
     "TaskSnapshot",
     "TaskStatus",
+    "TaskListener",
     "TaskStopped",
     "TaskTree",
     "TopLevel",
@@ -59,6 +61,7 @@ __all__ = [
     "fl_not",
     "fl_or",
     "install_process_module_interface",
+    "listening",
     "matching_process_modules",
     "par",
     "partial_order",
@@ -74,6 +77,7 @@ __all__ = [
     "sub_task",
     "tag",
     "tagged",
+    "task_listeners",
     "top_level",
     "try_all",
     "try_in_order",

@@ -31,6 +31,7 @@ from robocram.execution.process_module_matching import (
     running_process_modules,
 )
 from robocram.execution.task_context import checkpoint, sub_task
+from robocram.execution.task_listeners import notify_performing
 from robocram.logic import KnowledgeBase, Term
 
 PLAN_INTERFACE_GROUP = "plan_interface"
@@ -51,6 +52,7 @@ def perform(designator: Designator, kb: KnowledgeBase | None = None) -> Any:
             designator=designator,
         )
     with sub_task(f"perform {designator.type}") as task:
+        notify_performing(task, designator)
         checkpoint()
         knowledge = _knowledge_base(designator, kb)
         grounding = _reference(designator, knowledge)

@@ -15,6 +15,8 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import Any
 
+from robocram.execution.task_listeners import notify_finished, notify_started
+
 
 class TaskStatus(enum.Enum):
     """Lifecycle of a task (CRAM's names)."""
@@ -191,6 +193,7 @@ class Task:
         """Mark the task running from now."""
         self.start_time = time.time()
         self.status = TaskStatus.RUNNING
+        notify_started(self)
 
     def finish(
         self, status: TaskStatus, result: Any = None, failure: BaseException | None = None
@@ -199,3 +202,4 @@ class Task:
         self.result, self.failure = result, failure
         self.end_time = time.time()
         self.status = status
+        notify_finished(self)
