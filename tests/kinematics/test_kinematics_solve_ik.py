@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import math
-import time
 
 import numpy as np
 import pytest
@@ -68,11 +67,10 @@ def test_known_pose_of_the_tool_frame(pr2: RobotDescription) -> None:
     assert pose.angle_to(Pose()) < 1e-9
 
 
-def test_unreachable_target_fails_in_bounded_time(pr2: RobotDescription) -> None:
-    start = time.perf_counter()
-    result = solve_ik(pr2, "right", Pose((5.0, 0.0, 1.0)), timeout=0.2)
+def test_unreachable_target_fails_within_its_budget(pr2: RobotDescription) -> None:
+    result = solve_ik(pr2, "right", Pose((5.0, 0.0, 1.0)), max_restarts=20, max_iterations=30)
     assert not result.success and not result
-    assert time.perf_counter() - start < 0.5
+    assert result.restarts <= 20 and result.iterations <= 21 * 30
     assert result.position_error > 3.5  # the arm reaches about 1.2 m from the base
     assert _within_limits(pr2, dict(result.joint_positions))
 
@@ -80,7 +78,7 @@ def test_unreachable_target_fails_in_bounded_time(pr2: RobotDescription) -> None
 def test_torso_moves_when_the_target_is_too_high(pr2: RobotDescription) -> None:
     seed = {"torso_lift_joint": 0.0}
     high = forward_kinematics(pr2, {"torso_lift_joint": 0.3, "r_shoulder_lift_joint": -0.3}, TOOL)
-    assert not solve_ik(pr2, "right", high, seed=seed, timeout=0.2)
+    assert not solve_ik(pr2, "right", high, seed=seed)
     result = solve_ik(pr2, "right", high, seed=seed, use_torso=True)
     assert result.success
     assert result.joint_positions["torso_lift_joint"] > 0.1
@@ -118,7 +116,7 @@ def test_collision_check_rejections_force_restarts(pr2: RobotDescription) -> Non
         seen.append(joints)
         return joints["r_upper_arm_roll_joint"] > -1.0  # pretend only rolled elbows are free
 
-    result = solve_ik(pr2, "right", target, collision_check=elbow_up_collides, timeout=0.5)
+    result = solve_ik(pr2, "right", target, collision_check=elbow_up_collides)
     assert result.success
     assert result.rejected_in_collision >= 1 and result.restarts >= 1
     assert len(seen) == result.rejected_in_collision + 1
@@ -204,7 +202,7 @@ def test_mimic_follower_on_the_chain(mimic_arm: RobotDescription) -> None:
 def test_mimic_target_only_reachable_beyond_follower_limit(mimic_arm: RobotDescription) -> None:
     # j1 = 0.5 would put j2 at 1.1, past its limit: the solver must not go there.
     target = forward_kinematics(mimic_arm, {"j1": 0.5, "j2": 1.1, "j3": 0.0}, "tip")
-    result = solve_ik(mimic_arm, "arm", target, timeout=0.05)
+    result = solve_ik(mimic_arm, "arm", target, max_restarts=10)
     assert not result.success
     assert result.joint_positions["j2"] <= 1.0 + 1e-9
 
@@ -224,3 +222,12 @@ def test_continuous_joints_wrap_near_the_seed(pr2: RobotDescription) -> None:
         )
         < 1e-2
     )
+
+
+def test_same_random_seed_same_answer(pr2: RobotDescription) -> None:
+    # an unreachable target spends the whole budget on random restarts
+    target = Pose((0.2, -0.1, 0.3), quat.from_euler(math.pi, 0.0, 0.0))
+    runs = [solve_ik(pr2, "right", target, max_restarts=8, random_seed=s) for s in (3, 3, 4)]
+    assert runs[0].joint_positions == runs[1].joint_positions
+    assert runs[0].iterations == runs[1].iterations
+    assert runs[0].joint_positions != runs[2].joint_positions

@@ -6,7 +6,6 @@ HSR), i.e. relative to the robot base, not the map: transform map poses first.
 
 from __future__ import annotations
 
-import time
 from collections.abc import Mapping
 
 import numpy as np
@@ -28,7 +27,7 @@ def solve_ik(
     frame: str | None = None,
     use_torso: bool = False,
     max_restarts: int = 100,
-    timeout: float = 0.1,
+    max_iterations: int = 60,
     collision_check: CollisionCheck | None = None,
     position_tolerance: float = 1e-3,
     orientation_tolerance: float = 1e-2,
@@ -44,23 +43,24 @@ def solve_ik(
         seed: current joint values [rad | m]; the start of the search, and the value of
             every joint IK does not move (the torso when ``use_torso`` is False).
         use_torso: also move ``description.torso_joint``.
-        max_restarts: random restarts after the first descent from the seed.
-        timeout: wall-clock budget [s]; the query returns by then, failed if unsolved.
+        max_restarts: descents after the first one (from the seed); with
+            ``max_iterations`` steps per descent, the whole budget. It is counted, not
+            timed, so the answer does not depend on the machine's load.
         collision_check: called with each converged solution; True rejects it (restart).
         position_tolerance: [m]. orientation_tolerance: [rad].
-        random_seed: seeds the restarts, so results are reproducible.
+        random_seed: seeds the random restarts (default 0): the same query and seed
+            give bit-identical joint values.
 
     Returns:
         An IKResult; ``success`` False when no solution was found within the budget.
     """
-    start = time.perf_counter()
     seed = dict(seed or {})
     solver = IKSolver.cached(description, arm, use_torso, frame)
     settings = IKSettings(
         position_tolerance=position_tolerance,
         orientation_tolerance=orientation_tolerance,
         max_restarts=max_restarts,
-        timeout=max(0.0, timeout - (time.perf_counter() - start)),
+        max_iterations=max_iterations,
     )
     rng = np.random.default_rng(random_seed)
     return solver.solve(target, seed, settings, collision_check, rng)

@@ -5,6 +5,9 @@ the current joints, first with the torso held, then (as CRAM's projection resamp
 torso) with the torso free, rejecting solutions that collide as the motion's collision
 mode says (``collision_mode.py``). The solution is applied and the reached tool pose
 checked against the target within 1 cm / 0.05 rad, so a silent miss is impossible.
+
+IK is bounded by counted descents and seeded (``IK_RANDOM_SEED`` unless the caller gives
+one), so a projection gives bit-identical joints on an idle and a loaded machine.
 """
 
 from __future__ import annotations
@@ -23,10 +26,12 @@ from robocram.tf import Pose, PoseLike, PoseStamped
 
 POSITION_TOLERANCE = 0.01  # [m] between the reached tool frame and the target
 ORIENTATION_TOLERANCE = 0.05  # [rad]
-IK_TIMEOUT = 0.15  # [s] per attempt
+IK_RANDOM_SEED = 0  # seeds IK's random restarts in every move_tcp without its own seed
 
 
-def _solve(robot: ProjectedRobot, arm: str, target_in_base: Pose, mode: str) -> IKResult:
+def _solve(
+    robot: ProjectedRobot, arm: str, target_in_base: Pose, mode: str, random_seed: int
+) -> IKResult:
     desc = robot.description
     check = collision_check(robot, arm, mode)
     seed = robot.world.joint_states(robot.name)
@@ -40,8 +45,8 @@ def _solve(robot: ProjectedRobot, arm: str, target_in_base: Pose, mode: str) -> 
                 target_in_base,
                 seed=seed,
                 use_torso=use_torso,
-                timeout=IK_TIMEOUT,
                 collision_check=check,
+                random_seed=random_seed,
             )
             if result.success:
                 break
@@ -53,10 +58,12 @@ def move_tcp(
     arm: str,
     target: PoseStamped | PoseLike,
     collision_mode: str = "avoid_all",
+    random_seed: int = IK_RANDOM_SEED,
 ) -> Pose:
     """Put ``arm``'s tool frame at ``target`` (map unless stamped); return it in ``map``.
 
     ``collision_mode`` is CRAM's: ``avoid_all``, ``allow_hand`` (grasping) or ``allow_all``.
+    ``random_seed`` seeds IK's restarts: the same world, target and seed give the same joints.
 
     Raises:
         ManipulationPoseUnreachable: IK found no collision-free solution; the arm stays.
@@ -64,7 +71,8 @@ def move_tcp(
     """
     spec = robot.arm(arm)
     target_in_map = robot.in_map(target)
-    result = _solve(robot, arm, robot.base_pose().inverse() * target_in_map, collision_mode)
+    target_in_base = robot.base_pose().inverse() * target_in_map
+    result = _solve(robot, arm, target_in_base, collision_mode, random_seed)
     if not result.success:
         raise ManipulationPoseUnreachable(
             f"{robot.name}'s {arm} arm cannot reach {target_in_map} (map) with collision "

@@ -144,7 +144,7 @@ def _aim_neck_arm(robot: ProjectedRobot, target_in_map: Vector3) -> dict[str, fl
         view = Pose(place, looking_orientation(place, target_in_map))
         target_in_base = robot.base_pose().inverse() * view
         with robot.ik_lock:
-            result = solve_ik(desc, neck, target_in_base, seed=seed, frame=frame, timeout=0.1)
+            result = solve_ik(desc, neck, target_in_base, seed=seed, frame=frame)
         if result.success:
             world.set_joint_states(robot.name, dict(result.joint_positions))
             return {j: world.joint_states(robot.name)[j] for j in result.joint_positions}
