@@ -7,9 +7,14 @@ generators and validators, objects by perception. ``reference()`` takes the firs
 solution and caches it; ``next_solution()`` returns a designator for the next one.
 """
 
-from robocram.designators.common_motions import install_common_motions
+from robocram.designators.common_motions import install_common_motions, install_motion_family
 from robocram.designators.designator import Designator, Kind, Quantifier, desig_equal
-from robocram.designators.errors import DesignatorError, DesignatorPropertyError, GroundingError
+from robocram.designators.errors import (
+    DesignatorError,
+    DesignatorPropertyError,
+    GroundingError,
+    MotionPropertyError,
+)
 from robocram.designators.grounded_designator import (
     ActionDesignator,
     MotionDesignator,
@@ -25,12 +30,26 @@ from robocram.designators.location_resolver import (
     scoped_location_validator,
     using_location_resolver,
 )
+from robocram.designators.motion_table import MOTION_TYPES, SIDES, motion_types
+from robocram.designators.motion_type import (
+    Answer,
+    Atom,
+    Command,
+    MotionProperty,
+    MotionType,
+    commands_of,
+)
 from robocram.designators.object_designator import HumanDesignator, ObjectDesignator
 from robocram.designators.prolog_access import install_designator_predicates
 from robocram.designators.quantifiers import a, all_, an
 
 __all__ = [
+    "MOTION_TYPES",
+    "SIDES",
     "ActionDesignator",
+    "Answer",
+    "Atom",
+    "Command",
     "Designator",
     "DesignatorError",
     "DesignatorPropertyError",
@@ -40,6 +59,9 @@ __all__ = [
     "LocationDesignator",
     "LocationResolver",
     "MotionDesignator",
+    "MotionProperty",
+    "MotionPropertyError",
+    "MotionType",
     "ObjectDesignator",
     "Quantifier",
     "Verdict",
@@ -47,11 +69,14 @@ __all__ = [
     "all_",
     "an",
     "bound_kb",
+    "commands_of",
     "current_location_resolver",
     "desig_equal",
     "grounded_types",
     "install_common_motions",
     "install_designator_predicates",
+    "install_motion_family",
+    "motion_types",
     "scoped_location_generator",
     "scoped_location_validator",
     "using_location_resolver",

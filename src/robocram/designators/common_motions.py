@@ -1,48 +1,71 @@
-"""Motions every robot understands (CRAM's ``cram_common_designators``).
+"""Motions every robot understands (CRAM's ``cram_common_designators``), as one typed table.
 
-``install_common_motions(kb)`` loads ``common_motions.pl`` as fact group
-``common_motions``. Process modules receive these command terms (``command.name``,
-``command.args``); a target given as a location designator yields one command per
-solution of the location, a raw pose yields one command.
+:data:`MOTION_TYPES` holds one :class:`MotionType` per motion ``type``: its properties with
+their types, the command terms it grounds to, the process module resource executing them
+and what a recording module answers. ``install_common_motions(kb)`` loads the
+``motion_grounding/2`` rules generated from it (fact group ``common_motions``);
+``install_motion_family(kb, "flying")`` adds the motions of flying robots.
 
-Motion ``type`` (properties) -> command:
+Motion ``type`` (properties) -> command, resource:
 
-- going (target: location or pose) -> ``move_base(Pose)``
-- moving-torso (joint_angle) -> ``move_torso(Angle)``
-- looking (target / frame / direction) -> ``move_head(pose, P)``, ``move_head(frame, F)``
-  or ``move_head(direction, D)``
-- detecting (object) -> ``detect(ObjectDesig)``; inspecting (object) -> ``inspect(ObjectDesig)``
+- going (target) -> ``move_base(Pose)``, navigation
+- moving-torso (joint_angle) -> ``move_torso(Angle)``, torso
+- looking (target / frame / direction) -> ``move_head(pose | frame | direction, X)``, ptu
+- detecting (object) -> ``detect(ObjectDesig)``; inspecting (object) ->
+  ``inspect(ObjectDesig)``, perception (inspecting looks at one object for all it shows)
 - opening / closing / gripping (gripper[, effort]) ->
-  ``move_gripper_joint(Gripper, open | close | grip, Effort)``
+  ``move_gripper_joint(Gripper, open | close | grip, Effort)``, grippers
 - moving-gripper-joint (gripper, joint_angle[, effort]) ->
-  ``move_gripper_joint(Gripper, Position, Effort)``
+  ``move_gripper_joint(Gripper, Position, Effort)``, grippers
 - moving-tcp (left_target / right_target / arm + target[, collision_mode]) ->
-  ``move_tcp(Arm, Pose, Mode)``; with both arm targets ``move_tcp_both(LeftPose, RightPose, Mode)``
+  ``move_tcp(Arm, Pose, Mode)``; with both side targets ``move_tcp_both(Left, Right, Mode)``
 - moving-arm-joints (left_configuration / right_configuration / arm + configuration) ->
-  ``move_joints(Arm, Config)``; with both ``move_joints_both(LeftConfig, RightConfig)``
+  ``move_joints(Arm, Config)``; with both ``move_joints_both(Left, Right)``, arms
+- flying (target) -> ``fly(Pose)``, flying; distance-sensing (direction) ->
+  ``sense_distance(Direction)``, distance_sensor (family ``flying``)
 
-``Effort`` is the ``effort`` property [N] or the atom ``none``; ``Mode`` is the
-``collision_mode`` property or ``avoid_all``. Repeated ``gripper`` properties give one
+A ``target`` is a pose, a ``PoseStamped`` or a location designator (one command per
+solution). ``Effort`` is the ``effort`` property [N] or ``none``; ``Mode`` the
+``collision_mode`` or ``avoid_all``. ``left``/``right`` name the sides of a two-armed
+robot; its process modules map them to its arms. Repeated ``gripper`` properties give one
 command per gripper, in order.
 """
 
 from __future__ import annotations
 
-from importlib import resources
-
+from robocram.designators.motion_table import motion_types
+from robocram.designators.motion_type import grounding_rules
 from robocram.designators.prolog_access import install_designator_predicates
 from robocram.logic import KnowledgeBase
 
 COMMON_MOTIONS_GROUP = "common_motions"
+FAMILY_GROUPS = {"common": COMMON_MOTIONS_GROUP, "flying": "flying_motions"}
+
+_HELPERS = """
+common_target_pose(Target, Pose) :- loc_desig(Target), !, designator_grounding(Target, Pose).
+common_target_pose(Pose, Pose).
+common_prop_or_default(D, Key, _, Value) :- desig_prop(D, Key, Value), !.
+common_prop_or_default(_, _, Default, Default).
+"""
 
 
-def common_motions_text() -> str:
-    """Return the Prolog text of the common motion grounding rules."""
-    return resources.files("robocram.designators").joinpath("common_motions.pl").read_text()
+def common_motions_text(family: str = "common") -> str:
+    """Return the Prolog text of the grounding rules of ``family`` (with the helpers)."""
+    helpers = _HELPERS if family == "common" else ""
+    return helpers + grounding_rules(motion_types(family))
+
+
+def install_motion_family(kb: KnowledgeBase, family: str) -> KnowledgeBase:
+    """Install the designator predicates and the groundings of ``family`` in ``kb``."""
+    if family not in FAMILY_GROUPS:
+        raise ValueError(f"motion family {family!r} is none of {sorted(FAMILY_GROUPS)}")
+    install_designator_predicates(kb)
+    if family != "common" and "common_target_pose/2" not in kb.predicates():
+        install_motion_family(kb, "common")
+    kb.consult(common_motions_text(family), group=FAMILY_GROUPS[family])
+    return kb
 
 
 def install_common_motions(kb: KnowledgeBase) -> KnowledgeBase:
     """Install the designator predicates and the common motion groundings in ``kb``."""
-    install_designator_predicates(kb)
-    kb.consult(common_motions_text(), group=COMMON_MOTIONS_GROUP)
-    return kb
+    return install_motion_family(kb, "common")

@@ -47,3 +47,28 @@ class GroundingError(DesignatorError):
     ) -> None:
         super().__init__(message, designator)
         self.grounded_types = tuple(sorted(set(grounded_types)))
+
+
+class MotionPropertyError(DesignatorPropertyError, GroundingError):
+    """A motion designator lacks a property its type needs, or has one of the wrong type.
+
+    Attributes:
+        motion: the motion ``type`` (``moving-tcp``).
+        key: the culprit property key.
+        expected: the accepted values in words.
+    """
+
+    def __init__(
+        self,
+        message: str,
+        motion: str,
+        key: str,
+        expected: str,
+        designator: Any = None,
+        grounded_types: Iterable[str] = (),
+    ) -> None:
+        DesignatorError.__init__(self, message, designator)
+        self.key = key
+        self.grounded_types = tuple(sorted(set(grounded_types)))
+        self.motion = motion
+        self.expected = expected

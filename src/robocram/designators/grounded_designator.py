@@ -14,6 +14,8 @@ from typing import Any, ClassVar
 
 from robocram.designators.designator import Designator, Kind
 from robocram.designators.errors import DesignatorPropertyError, GroundingError
+from robocram.designators.motion_table import MOTION_TYPES
+from robocram.designators.motion_type import check_property_types, missing_property_error
 from robocram.logic import KnowledgeBase, PrologError, current_kb
 
 
@@ -76,10 +78,29 @@ class GroundedDesignator(Designator):
 
 
 class MotionDesignator(GroundedDesignator):
-    """A low-level motion, e.g. ``(a motion (type looking) (target ...))``; grounds to a command."""
+    """A low-level motion, e.g. ``(a motion (type looking) (target ...))``; grounds to a command.
+
+    Motion types of the motion table (``MOTION_TYPES``) have their property types checked
+    before grounding, and a missing property is named when no rule matched.
+    """
 
     kind = Kind.MOTION
     grounding_predicate = "motion_grounding"
+
+    def _solutions(self, context: Any) -> Iterator[Any]:
+        motion = MOTION_TYPES.get(self.type)
+        if motion is not None:
+            check_property_types(motion, self)
+        yield from super()._solutions(context)
+
+    def _no_solution_error(self, context: Any) -> GroundingError:
+        motion = MOTION_TYPES.get(self.type)
+        known = grounded_types(context, self.kind)
+        if motion is not None and self.type in known:
+            missing = missing_property_error(motion, self, known)
+            if missing is not None:
+                return missing
+        return super()._no_solution_error(context)
 
 
 class ActionDesignator(GroundedDesignator):
@@ -98,9 +119,32 @@ def grounded_types(kb: KnowledgeBase, kind: Kind) -> tuple[str, ...]:
     cls = {Kind.MOTION: MotionDesignator, Kind.ACTION: ActionDesignator}.get(kind)
     if cls is None:
         return ()
-    probe = cls(type="grounded-types-probe")
-    seen: list[str] = []
-    probe.__dict__["_type_probe"] = seen
+    probe = _MotionTypeProbe() if kind is Kind.MOTION else _ActionTypeProbe()
     for _ in kb.query(f"{cls.grounding_predicate}(D, G)", D=probe):
         pass
-    return tuple(sorted(set(seen)))
+    return tuple(sorted(set(probe.asked_types)))
+
+
+class TypeProbe(Designator):
+    """A designator without properties that notes the types grounding rules ask for.
+
+    ``desig_prop(Probe, type, T)`` records ``T`` and fails, so running a grounding query
+    on a probe lists every type its rules test, without any rule naming its types twice.
+    """
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.asked_types: list[str] = []
+
+    def note(self, key: object, value: object) -> None:
+        """Record the type a rule asked about."""
+        if key == "type" and isinstance(value, str):
+            self.asked_types.append(value)
+
+
+class _MotionTypeProbe(TypeProbe):
+    kind = Kind.MOTION
+
+
+class _ActionTypeProbe(TypeProbe):
+    kind = Kind.ACTION

@@ -21,6 +21,7 @@ from collections.abc import Iterator
 from typing import Any
 
 from robocram.designators.designator import Designator, Kind
+from robocram.designators.grounded_designator import TypeProbe
 from robocram.logic import KnowledgeBase, Var
 
 GROUNDINGS_LIMIT = 100  # Prolog lists are finite; designator_grounding/2 streams them all
@@ -56,10 +57,8 @@ def _install_python_predicates(kb: KnowledgeBase) -> None:
         if not isinstance(d, Designator):
             _require_bound(d, "desig_prop/3")
             return
-        probe = d.__dict__.get("_type_probe")
-        if probe is not None:
-            if key == "type" and isinstance(value, str):
-                probe.append(value)
+        if isinstance(d, TypeProbe):
+            d.note(key, value)
             return
         for k, v in d.properties:
             if isinstance(key, Var) or k == key:

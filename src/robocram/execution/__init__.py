@@ -17,6 +17,12 @@ from robocram.execution.failure_handling import (
 )
 from robocram.execution.failures import NotInTopLevel, PlanFailure
 from robocram.execution.fluent import Fluent, derive, fl_and, fl_not, fl_or
+from robocram.execution.motion_process_module import (
+    MotionProcessModule,
+    matching_facts,
+    module_atom,
+    motion_types_of,
+)
 from robocram.execution.par import par
 from robocram.execution.partial_order import partial_order
 from robocram.execution.perform import perform, register_plan
@@ -42,6 +48,7 @@ __all__ = [
     "Environment",
     "FailureControl",
     "Fluent",
+    "MotionProcessModule",
     "NotInTopLevel",
     "PlanFailure",
     "ProcessModule",
@@ -62,7 +69,10 @@ __all__ = [
     "fl_or",
     "install_process_module_interface",
     "listening",
+    "matching_facts",
     "matching_process_modules",
+    "module_atom",
+    "motion_types_of",
     "par",
     "partial_order",
     "perform",

@@ -1,26 +1,32 @@
-"""The projected robot's process modules: one per resource, each calling low-level functions.
+"""The projected robot's process modules: one per motion table resource.
 
-Commands are the terms of ``common_motions.pl`` (and ``flying.pl`` for flying robots):
+Each module executes the commands the motion table (``robocram.designators.MOTION_TYPES``)
+grounds for its resource, one method per command, dispatched by
+:class:`~robocram.execution.MotionProcessModule`:
 
 - navigation: ``move_base(Pose)``; torso: ``move_torso(Value)``
 - ptu: ``move_head(pose, P)``, ``move_head(frame, F)``, ``move_head(direction, D)`` where
   ``D`` is a vector in the robot's base frame (or a PoseStamped whose position is one)
-- perception: ``detect(ObjectDesig)`` -> the perceived designator
+- perception: ``detect(ObjectDesig)`` and ``inspect(ObjectDesig)`` -> the perceived
+  designator (the simulated camera reports all it knows of an object at once, so
+  inspecting answers what detecting does)
 - grippers: ``move_gripper_joint(Arm, open | close | grip | Position, Effort)``
 - arms: ``move_tcp(Arm, Pose, Mode)``, ``move_tcp_both(Left, Right, Mode)``,
   ``move_joints(Arm, Config)``, ``move_joints_both(Left, Right)``
 - flying: ``fly(Pose)``; distance sensor: ``sense_distance(Direction)`` [body frame]
+
+Arm and gripper words are the robot's arm names or the sides ``left``/``right``
+(``RobotDescription.arm_called``), so the modules serve any robot's arms.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from typing import Any, ClassVar
 
 import numpy as np
 
-from robocram.execution import ProcessModule
-from robocram.logic import Term
+from robocram.designators import SIDES, ObjectDesignator
+from robocram.execution import MotionProcessModule
 from robocram.projection.arm import move_joints, move_tcp
 from robocram.projection.errors import ProjectionError
 from robocram.projection.flying import fly, sense_distance
@@ -30,14 +36,13 @@ from robocram.projection.neck import look_at
 from robocram.projection.perception import detect
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.projection.torso import move_torso
-from robocram.tf import PoseStamped, Vector3
+from robocram.tf import Pose, PoseStamped, Vector3
 
-Handler = Callable[..., Any]
 DIRECTION_REACH = 100.0  # [m] looking along a direction aims at a point this far away
 
 
-class ProjectionProcessModule(ProcessModule):
-    """A process module of a projected robot: dispatches command terms to handlers."""
+class ProjectionProcessModule(MotionProcessModule):
+    """A process module of a projected robot, for one resource of the motion table."""
 
     name: ClassVar[str] = ""
 
@@ -45,50 +50,37 @@ class ProjectionProcessModule(ProcessModule):
         super().__init__()
         self.robot = robot
 
-    def handlers(self) -> dict[str, Handler]:
-        """Map ``name/arity`` of each command this module executes to its handler."""
-        raise NotImplementedError
-
-    def execute(self, command: Any) -> Any:
-        """Run the low-level function matching ``command``."""
-        table = self.handlers()
-        if isinstance(command, Term):
-            handler = table.get(f"{command.name}/{command.arity}")
-            if handler is not None:
-                return handler(*command.args)
-        raise self.unsupported(command, table)
-
 
 class NavigationPM(ProjectionProcessModule):
     """The base: ``move_base(Pose)``."""
 
     name = "projection_navigation"
+    resource = "navigation"
 
-    def handlers(self) -> dict[str, Handler]:
-        """Command table."""
-        return {"move_base/1": lambda pose: drive(self.robot, pose)}
+    def move_base(self, pose: Any) -> Pose:
+        """Drive the base to ``pose``."""
+        return drive(self.robot, pose)
 
 
 class TorsoPM(ProjectionProcessModule):
     """The torso: ``move_torso(Value)``."""
 
     name = "projection_torso"
+    resource = "torso"
 
-    def handlers(self) -> dict[str, Handler]:
-        """Command table."""
-        return {"move_torso/1": lambda value: move_torso(self.robot, value)}
+    def move_torso(self, value: float) -> float:
+        """Set the torso joint to ``value`` [m | rad]."""
+        return move_torso(self.robot, value)
 
 
 class PtuPM(ProjectionProcessModule):
     """The head (pan-tilt unit or neck arm): ``move_head(pose | frame | direction, X)``."""
 
     name = "projection_ptu"
+    resource = "ptu"
 
-    def handlers(self) -> dict[str, Handler]:
-        """Command table."""
-        return {"move_head/2": self._move_head}
-
-    def _move_head(self, mode: str, goal: Any) -> dict[str, float]:
+    def move_head(self, mode: str, goal: Any) -> dict[str, float]:
+        """Point the camera at a pose, a frame, or along a direction."""
         robot = self.robot
         if mode == "pose":
             point = robot.in_map(goal).position
@@ -113,25 +105,29 @@ class PtuPM(ProjectionProcessModule):
 
 
 class PerceptionPM(ProjectionProcessModule):
-    """The camera: ``detect(ObjectDesig)``."""
+    """The camera: ``detect(ObjectDesig)`` and ``inspect(ObjectDesig)``."""
 
     name = "projection_perception"
+    resource = "perception"
 
-    def handlers(self) -> dict[str, Handler]:
-        """Command table."""
-        return {"detect/1": lambda desig: detect(self.robot, desig)}
+    def detect(self, desig: ObjectDesignator) -> Any:
+        """The perceived designator(s) fitting ``desig``."""
+        return detect(self.robot, desig)
+
+    def inspect(self, desig: ObjectDesignator) -> Any:
+        """Inspect one object: the simulated camera sees all there is when it detects."""
+        return detect(self.robot, desig)
 
 
 class GripperPM(ProjectionProcessModule):
     """The grippers: ``move_gripper_joint(Arm, open | close | grip | Position, Effort)``."""
 
     name = "projection_grippers"
+    resource = "grippers"
 
-    def handlers(self) -> dict[str, Handler]:
-        """Command table."""
-        return {"move_gripper_joint/3": self._move}
-
-    def _move(self, arm_name: str, action: Any, effort: Any) -> Any:
+    def move_gripper_joint(self, gripper: str, action: Any, effort: Any) -> Any:
+        """Open, close or grip with ``gripper``'s hand, or set it to a position [rad | m]."""
+        arm_name = self.robot.description.arm_called(gripper)
         if action == "open":
             return open_gripper(self.robot, arm_name)
         if action == "close":
@@ -146,42 +142,65 @@ class GripperPM(ProjectionProcessModule):
 
 
 class ArmPM(ProjectionProcessModule):
-    """The arms: ``move_tcp`` and ``move_joints``, one arm or both."""
+    """The arms: ``move_tcp`` and ``move_joints``, one arm or both sides."""
 
     name = "projection_arms"
+    resource = "arms"
 
-    def handlers(self) -> dict[str, Handler]:
-        """Command table."""
-        r = self.robot
-        return {
-            "move_tcp/3": lambda a, pose, mode: move_tcp(r, a, pose, mode),
-            "move_tcp_both/3": lambda left, right, mode: (
-                move_tcp(r, "left", left, mode),
-                move_tcp(r, "right", right, mode),
-            ),
-            "move_joints/2": lambda a, config: move_joints(r, a, config),
-            "move_joints_both/2": lambda left, right: (
-                move_joints(r, "left", left),
-                move_joints(r, "right", right),
-            ),
-        }
+    def _arm(self, word: str) -> str:
+        return self.robot.description.arm_called(word)
+
+    def move_tcp(self, arm: str, pose: Any, mode: str) -> Pose:
+        """Put ``arm``'s tool frame at ``pose``, avoiding collisions as ``mode`` says."""
+        return move_tcp(self.robot, self._arm(arm), pose, mode)
+
+    def move_tcp_both(self, left: Any, right: Any, mode: str) -> tuple[Pose, ...]:
+        """Move the tool frames of the arms on the left and the right side."""
+        goals = zip(SIDES, (left, right), strict=True)
+        return tuple(move_tcp(self.robot, self._arm(side), pose, mode) for side, pose in goals)
+
+    def move_joints(self, arm: str, configuration: Any) -> dict[str, float]:
+        """Set ``arm``'s joints."""
+        return move_joints(self.robot, self._arm(arm), configuration)
+
+    def move_joints_both(self, left: Any, right: Any) -> tuple[dict[str, float], ...]:
+        """Set the joints of the arms on the left and the right side."""
+        goals = zip(SIDES, (left, right), strict=True)
+        return tuple(move_joints(self.robot, self._arm(side), config) for side, config in goals)
 
 
 class FlyingPM(ProjectionProcessModule):
     """The body of a flying robot: ``fly(Pose)``."""
 
     name = "projection_flying"
+    resource = "flying"
 
-    def handlers(self) -> dict[str, Handler]:
-        """Command table."""
-        return {"fly/1": lambda pose: fly(self.robot, pose)}
+    def fly(self, pose: Any) -> Pose:
+        """Fly straight to ``pose``."""
+        return fly(self.robot, pose)
 
 
 class DistanceSensorPM(ProjectionProcessModule):
     """The range sensor of a flying robot: ``sense_distance(Direction)``."""
 
     name = "projection_distance_sensor"
+    resource = "distance_sensor"
 
-    def handlers(self) -> dict[str, Handler]:
-        """Command table."""
-        return {"sense_distance/1": lambda d: sense_distance(self.robot, tuple(d))}
+    def sense_distance(self, direction: Any) -> float:
+        """The range [m] along ``direction`` (body frame)."""
+        return sense_distance(self.robot, tuple(direction))
+
+
+PROJECTION_MODULES: dict[str, type[ProjectionProcessModule]] = {
+    cls.resource: cls
+    for cls in (
+        NavigationPM,
+        TorsoPM,
+        PtuPM,
+        PerceptionPM,
+        GripperPM,
+        ArmPM,
+        FlyingPM,
+        DistanceSensorPM,
+    )
+}

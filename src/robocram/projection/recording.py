@@ -2,14 +2,15 @@
 
 ``recorded_robot("pr2", objects={...})`` grounds motions exactly as the projection does
 (common motions, flying motions, the robot's description facts) but its process modules
-only append ``(module, command)`` to a log and answer with plausible values:
+only append ``(module, command)`` to a log and answer with plausible values, as the
+motion table's ``answer`` of each motion type says:
 
 - going, flying, moving-tcp, looking: the target they were given
 - moving-torso: the value asked; opening/closing/gripping: the gripper action (``grip``
   answers the name of the object detected last, or None)
 - moving-arm-joints: the configuration, which also moves the robot's joints in the
   recorded kinematic state, so ``transform_pose`` in plans sees the arms where they went
-- detecting: a designator equated with the one asked for, carrying the pose given in
+- detecting, inspecting: a designator equated with the one asked for, carrying the pose given in
   ``objects`` for its type or name (in the robot's base frame); none known ->
   ``PerceptionObjectNotFound``
 - distance-sensing: ``inf`` (there is no world to measure)
@@ -21,24 +22,27 @@ from __future__ import annotations
 
 import math
 import threading
-from collections.abc import Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from contextlib import contextmanager
 from dataclasses import dataclass
 from typing import Any
 
-from robocram.designators import ObjectDesignator
-from robocram.execution import Environment, ProcessModule, TaskTree, TopLevel, top_level
+from robocram.designators import MOTION_TYPES, Answer, Command, ObjectDesignator
+from robocram.execution import (
+    Environment,
+    MotionProcessModule,
+    TaskTree,
+    TopLevel,
+    matching_facts,
+    module_atom,
+    top_level,
+)
 from robocram.execution.failures import PerceptionObjectNotFound
 from robocram.kinematics import forward_kinematics
 from robocram.logic import KnowledgeBase, Term
 from robocram.projection.arm import joint_values
 from robocram.projection.perception import PerceivedObject
-from robocram.projection.robot_environment import (
-    install_motions,
-    matching_facts,
-    module_classes,
-    module_name,
-)
+from robocram.projection.robot_environment import install_motions
 from robocram.projection.world_frames import LiveTransformTree
 from robocram.robots import RobotDescription, install_description, load_description
 from robocram.tf import Pose, PoseStamped, using_transform_tree
@@ -72,39 +76,53 @@ class RecordedState:
         return {link: forward_kinematics(self.description, joints, link) for link in model.links}
 
 
-class RecordingPM(ProcessModule):
-    """Logs its commands and answers with a plausible value; the name is set per instance."""
+class RecordingPM(MotionProcessModule):
+    """Logs the table commands of one resource and answers as the table's ``answer`` says."""
 
-    def __init__(self, name: str, state: RecordedState) -> None:
-        self.name = name  # type: ignore[misc]  # one class serves every resource
+    def __init__(self, resource: str, state: RecordedState) -> None:
+        self.name = module_atom(PREFIX, resource)  # type: ignore[misc]  # one class, all resources
+        self.resource = resource
         super().__init__()
         self.state = state
 
-    def execute(self, command: Any) -> Any:
+    def run_command(self, spec: Command, command: Term) -> Any:
         """Log ``command`` and return what a real module would plausibly answer."""
-        if not isinstance(command, Term):
-            raise self.unsupported(command, ["a command term"])
         self.state.record(self.name, command)
-        return _answer(self.state, command)
+        return _ANSWERS[_ANSWER_OF[spec]](self.state, spec, command.args)
 
 
-def _answer(state: RecordedState, command: Term) -> Any:
-    args = command.args
-    if command.name in ("move_base", "move_torso", "fly", "move_tcp_both", "move_joints_both"):
-        return args[0] if len(args) == 1 else args
-    if command.name == "move_head" or command.name == "move_tcp":
-        return args[1]
-    if command.name == "move_joints":
-        values = joint_values(args[1])
-        state.joints.update(values)
-        return values
-    if command.name == "move_gripper_joint":
-        return state.last_detected if args[1] == "grip" else args[1]
-    if command.name == "detect":
-        return _detect(state, args[0])
-    if command.name == "sense_distance":
-        return math.inf
-    return None
+def _goal(state: RecordedState, spec: Command, args: tuple[Any, ...]) -> Any:
+    goals = tuple(args[i] for i in spec.goal)
+    return goals[0] if len(goals) == 1 else goals
+
+
+def _joints(state: RecordedState, spec: Command, args: tuple[Any, ...]) -> Any:
+    values = joint_values(args[1])
+    state.joints.update(values)
+    return values
+
+
+def _gripper(state: RecordedState, spec: Command, args: tuple[Any, ...]) -> Any:
+    return state.last_detected if args[1] == "grip" else args[1]
+
+
+def _perceived(state: RecordedState, spec: Command, args: tuple[Any, ...]) -> Any:
+    return _detect(state, args[0])
+
+
+def _no_range(state: RecordedState, spec: Command, args: tuple[Any, ...]) -> float:
+    return math.inf
+
+
+_ANSWERS: dict[Answer, Callable[[RecordedState, Command, tuple[Any, ...]], Any]] = {
+    Answer.GOAL: _goal,
+    Answer.JOINTS: _joints,
+    Answer.GRIPPER: _gripper,
+    Answer.PERCEIVED: _perceived,
+    Answer.NO_RANGE: _no_range,
+}
+
+_ANSWER_OF = {c: m.answer for m in MOTION_TYPES.values() for c in m.commands}
 
 
 def _detect(state: RecordedState, asked: ObjectDesignator) -> ObjectDesignator:
@@ -150,9 +168,9 @@ def recording_environment(
     kb = KnowledgeBase()
     install_description(kb, desc)
     install_motions(kb, desc)
-    classes = module_classes(desc)
-    modules = [RecordingPM(module_name(cls, PREFIX), state) for cls in classes]
-    facts = matching_facts(classes, PREFIX)
+    resources = desc.resources()
+    modules = [RecordingPM(resource, state) for resource in resources]
+    facts = matching_facts(PREFIX, resources)
     env = Environment(f"recording_{desc.name}", modules, facts=facts, kb=kb)
     return env, state
 

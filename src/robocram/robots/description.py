@@ -38,6 +38,7 @@ class ArmDescription:
     hand_links: tuple[str, ...] = ()
     parking: Mapping[str, float] = field(default_factory=dict)
     carrying: Mapping[str, float] = field(default_factory=dict)
+    side: str | None = None  # "left" | "right": the side CRAM's two-armed motions call it
 
 
 @dataclass(frozen=True)
@@ -106,3 +107,29 @@ class RobotDescription:
     package_paths: tuple[Path, ...] = ()
     flying: bool = False
     model: RobotModel | None = None
+
+    def arm_called(self, word: str) -> str:
+        """The key of the arm ``word`` names: its own name, or the ``side`` it is on.
+
+        Motions say ``left_target`` or ``gripper="left"`` for two-armed robots whatever
+        their arms are called; a word naming no arm comes back unchanged, for the caller
+        to report with the arms it knows.
+        """
+        if word in self.arms:
+            return word
+        return next((key for key, arm in self.arms.items() if arm.side == word), word)
+
+    def resources(self) -> tuple[str, ...]:
+        """The motion table resources this robot has a process module for, in start order."""
+        if self.flying:
+            return ("flying", "distance_sensor", *(("perception",) if self.cameras else ()))
+        found = ["navigation"]
+        if self.torso_joint is not None:
+            found.append("torso")
+        if self.cameras:
+            found.append("perception")
+            if self.pan_tilt is not None or self.neck_arm is not None:
+                found.append("ptu")
+        if any(name != self.neck_arm for name in self.arms):
+            found += ["grippers", "arms"]
+        return tuple(found)

@@ -1,0 +1,175 @@
+"""The motion table: one :class:`MotionType` per motion type robocram knows.
+
+The vocabulary is written once here; ``common_motions.py`` generates the grounding rules
+from it, environments their ``matching_process_module/2`` facts and process modules their
+dispatch. It needs no physics: a ROS environment uses it as it is. See
+``common_motions.py`` for the motions in words.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from types import MappingProxyType
+
+from robocram.designators.location_designator import LocationDesignator
+from robocram.designators.motion_type import (
+    Answer,
+    Atom,
+    Command,
+    MotionProperty,
+    MotionType,
+)
+from robocram.designators.object_designator import ObjectDesignator
+from robocram.tf import Pose, PoseStamped
+
+SIDES = ("left", "right")  # the arm words of CRAM's two-armed motions
+
+_TARGET = (LocationDesignator, Pose, PoseStamped, tuple, list)
+_TARGET_TEXT = "a pose, a PoseStamped or a location designator"
+_NUMBER = (int, float)
+
+
+def _target(key: str) -> MotionProperty:
+    return MotionProperty(key, _TARGET, _TARGET_TEXT, target=True)
+
+
+def _atom(key: str, default: str | None = None) -> MotionProperty:
+    return MotionProperty(key, (str,), "an atom (str)", default=default)
+
+
+def _number(key: str, unit: str, default: str | None = None) -> MotionProperty:
+    return MotionProperty(key, _NUMBER, f"a number {unit}", default=default)
+
+
+def _configuration(key: str) -> MotionProperty:
+    return MotionProperty(key, (Mapping, list, tuple), "{joint: value} or [[joint, value], ...]")
+
+
+_EFFORT = _number("effort", "[N]", default="none")
+_MODE = _atom("collision_mode", default="avoid_all")
+_OBJECT = MotionProperty("object", (ObjectDesignator,), "an object designator")
+_DIRECTION = MotionProperty("direction", (tuple, list, PoseStamped, str), "a 3-D vector")
+
+
+def _gripper_action(type_: str, action: str) -> MotionType:
+    command = Command("move_gripper_joint", ("gripper", Atom(action), "effort"), goal=(1,))
+    return MotionType(type_, (_atom("gripper"), _EFFORT), (command,), "grippers", Answer.GRIPPER)
+
+
+def _moving_tcp() -> MotionType:
+    both = ("left_target", "right_target")
+    one = [
+        Command("move_tcp", (Atom(side), f"{side}_target", "collision_mode"), (1,), both)
+        for side in SIDES
+    ]
+    return MotionType(
+        "moving-tcp",
+        (_target("left_target"), _target("right_target"), _atom("arm"), _target("target"), _MODE),
+        (
+            Command("move_tcp_both", ("left_target", "right_target", "collision_mode"), (0, 1, 2)),
+            *one,
+            Command("move_tcp", ("arm", "target", "collision_mode"), (1,), both),
+        ),
+        "arms",
+        Answer.GOAL,
+    )
+
+
+def _moving_arm_joints() -> MotionType:
+    both = ("left_configuration", "right_configuration")
+    configs = [_configuration(k) for k in (*both, "configuration")]
+    one = [Command("move_joints", (Atom(s), f"{s}_configuration"), (1,), both) for s in SIDES]
+    return MotionType(
+        "moving-arm-joints",
+        (configs[0], configs[1], _atom("arm"), configs[2]),
+        (
+            Command("move_joints_both", both, (0, 1)),
+            *one,
+            Command("move_joints", ("arm", "configuration"), (1,), both),
+        ),
+        "arms",
+        Answer.JOINTS,
+    )
+
+
+def _looking() -> MotionType:
+    return MotionType(
+        "looking",
+        (_target("target"), _atom("frame"), _DIRECTION),
+        tuple(
+            Command("move_head", (Atom(mode), key), goal=(1,))
+            for mode, key in (("pose", "target"), ("frame", "frame"), ("direction", "direction"))
+        ),
+        "ptu",
+        Answer.GOAL,
+    )
+
+
+def _table() -> tuple[MotionType, ...]:
+    return (
+        MotionType(
+            "going",
+            (_target("target"),),
+            (Command("move_base", ("target",)),),
+            "navigation",
+            Answer.GOAL,
+        ),
+        MotionType(
+            "moving-torso",
+            (_number("joint_angle", "[m | rad]"),),
+            (Command("move_torso", ("joint_angle",)),),
+            "torso",
+            Answer.GOAL,
+        ),
+        _looking(),
+        MotionType(
+            "detecting",
+            (_OBJECT,),
+            (Command("detect", ("object",)),),
+            "perception",
+            Answer.PERCEIVED,
+        ),
+        MotionType(
+            "inspecting",
+            (_OBJECT,),
+            (Command("inspect", ("object",)),),
+            "perception",
+            Answer.PERCEIVED,
+        ),
+        _gripper_action("opening", "open"),
+        _gripper_action("closing", "close"),
+        _gripper_action("gripping", "grip"),
+        MotionType(
+            "moving-gripper-joint",
+            (_atom("gripper"), _number("joint_angle", "[m | rad]"), _EFFORT),
+            (Command("move_gripper_joint", ("gripper", "joint_angle", "effort"), goal=(1,)),),
+            "grippers",
+            Answer.GRIPPER,
+        ),
+        _moving_tcp(),
+        _moving_arm_joints(),
+        MotionType(
+            "flying",
+            (_target("target"),),
+            (Command("fly", ("target",)),),
+            "flying",
+            Answer.GOAL,
+            family="flying",
+        ),
+        MotionType(
+            "distance-sensing",
+            (_DIRECTION,),
+            (Command("sense_distance", ("direction",)),),
+            "distance_sensor",
+            Answer.NO_RANGE,
+            family="flying",
+        ),
+    )
+
+
+MOTION_TYPES: Mapping[str, MotionType] = MappingProxyType({m.type: m for m in _table()})
+
+
+def motion_types(family: str | None = None) -> tuple[MotionType, ...]:
+    """The motion types of ``family`` (all of them for None), in table order."""
+    return tuple(m for m in MOTION_TYPES.values() if family is None or m.family == family)
