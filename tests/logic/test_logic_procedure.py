@@ -42,10 +42,11 @@ def kb() -> KnowledgeBase:
 
 
 def test_procedure_compiled_only_for_distinct_keys(kb: KnowledgeBase) -> None:
-    assert compile_procedure(kb._preds[("len", 2)]) is not None
-    assert compile_procedure(kb._preds[("count", 1)]) is None  # count(N) matches any key
-    assert compile_procedure(kb._preds[("walk", 3)]) is None  # [_|_] twice, no other position
-    assert compile_procedure(kb._preds[("shape", 2)]) is None  # 3 and 3.0 share a key
+    assert compile_procedure(kb._preds[("len", 2)].clauses) is not None
+    assert compile_procedure(kb._preds[("count", 1)].clauses) is None  # count(N) matches any key
+    # walk/3 has [_|_] twice and no other distinct position
+    assert compile_procedure(kb._preds[("walk", 3)].clauses) is None
+    assert compile_procedure(kb._preds[("shape", 2)].clauses) is None  # 3 and 3.0 share a key
 
 
 def test_procedure_recursion_and_unbound_switch(kb: KnowledgeBase) -> None:
@@ -59,7 +60,7 @@ def test_procedure_recursion_and_unbound_switch(kb: KnowledgeBase) -> None:
 def test_procedure_switch_on_later_argument() -> None:
     kb = KnowledgeBase()
     kb.consult("na(_, [], _). na(Q, [Q1|Qs], D) :- Q =\\= Q1 + D, D1 is D + 1, na(Q, Qs, D1).")
-    assert compile_procedure(kb._preds[("na", 3)]) is not None
+    assert compile_procedure(kb._preds[("na", 3)].clauses) is not None
     for _ in range(5):
         assert kb.holds("na(1, [3, 5, 7], 1)")
         assert not kb.holds("na(5, [1, 3], 1)")
@@ -69,7 +70,7 @@ def test_procedure_switch_on_later_argument() -> None:
 
 
 def test_procedure_ground_compound_key_checks_arguments(kb: KnowledgeBase) -> None:
-    assert compile_procedure(kb._preds[("ground_f", 2)]) is not None
+    assert compile_procedure(kb._preds[("ground_f", 2)].clauses) is not None
     assert answers(kb, "ground_f(f(a), R)", "R") == ["yes"]
     assert answers(kb, "ground_f(f(b), R)", "R") == []
     assert answers(kb, "ground_f(g(b), R)", "R") == ["no"]
@@ -100,9 +101,9 @@ def test_procedure_recompiled_when_group_reloads() -> None:
 
 def test_procedure_skipped_for_dynamic_and_python(kb: KnowledgeBase) -> None:
     kb.consult(":- dynamic(seen/1).\nseen(a). seen(b).", group="d")
-    assert compile_procedure(kb._preds[("seen", 1)]) is None
     for _ in range(4):
         assert kb.holds("seen(b)")
+    assert kb._preds[("seen", 1)].proc is None  # dynamic: never switched
     kb.assertz("seen(c)")
     assert kb.holds("seen(c)")
     assert [a["X"] for a in kb.query("seen(X)")] == ["a", "b", "c"]
@@ -113,7 +114,7 @@ def test_procedure_and_clause_too_deep_to_compile_still_answer() -> None:
     n = 150
     names = ", ".join(f"X{i}" for i in range(n))
     kb.consult(f"p([{names}], X{n - 1}). p(foo, bar).")
-    assert compile_procedure(kb._preds[("p", 2)]) is None
+    assert compile_procedure(kb._preds[("p", 2)].clauses) is None
     for _ in range(4):
         assert kb.first("p(L, Y)", L=list(range(n))) == {"Y": n - 1}
         assert kb.first("p(foo, Y)") == {"Y": "bar"}

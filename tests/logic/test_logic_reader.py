@@ -6,8 +6,7 @@ import pytest
 
 from robocram.logic import PrologSyntaxError, Term
 from robocram.logic.reader import read_query, read_terms
-from robocram.logic.terms import PString
-from robocram.logic.writer import format_term
+from robocram.logic.terms import PString, format_term
 
 
 def text(source: str) -> str:

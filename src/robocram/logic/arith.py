@@ -1,4 +1,4 @@
-"""Arithmetic: `is/2` and the comparison predicates, with ISO error terms.
+"""Arithmetic evaluation with ISO error terms (the built-ins are in builtin_arith).
 
 >>> from robocram.logic.reader import read_query
 >>> evaluate(read_query("2 ** 3 + 7 // 2 - max(1, 4.0)")[0])
@@ -9,14 +9,10 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from robocram.logic.errors import PrologEvaluationError, PrologInstantiationError, PrologTypeError
-from robocram.logic.registry import det
 from robocram.logic.terms import PString, Term, Var
-
-if TYPE_CHECKING:
-    from robocram.logic.machine import Machine
 
 __all__ = ["BINARY_FUNCTIONS", "apply_binary", "evaluate"]
 
@@ -185,26 +181,3 @@ def evaluate(t: Any) -> Number:
         culprit = Term("/", (t, 0))
         raise PrologTypeError("evaluable", culprit, f"{t}/0 is not an arithmetic function")
     raise PrologTypeError("evaluable", t, f"{t!r} is not a number or arithmetic expression")
-
-
-@det("is", 2)
-def _is(m: Machine, args: tuple[Any, ...]) -> bool:
-    return m.unify(args[0], evaluate(args[1]))
-
-
-def _compare(op: Callable[[Number, Number], bool]) -> Callable[[Machine, tuple[Any, ...]], bool]:
-    def run(m: Machine, args: tuple[Any, ...]) -> bool:
-        return op(evaluate(args[0]), evaluate(args[1]))
-
-    return run
-
-
-for _name, _op in (
-    ("<", lambda a, b: a < b),
-    (">", lambda a, b: a > b),
-    ("=<", lambda a, b: a <= b),
-    (">=", lambda a, b: a >= b),
-    ("=:=", lambda a, b: a == b),
-    ("=\\=", lambda a, b: a != b),
-):
-    det(_name, 2)(_compare(_op))

@@ -6,14 +6,14 @@ import sys
 from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
 
+from robocram.logic.builtin_spec import Builtin, det, nondet
 from robocram.logic.builtin_terms import list_items
 from robocram.logic.errors import PrologError, PrologInstantiationError, PrologTypeError
-from robocram.logic.registry import det, nondet
-from robocram.logic.terms import PString, Term, Var, deref, make_list
-from robocram.logic.writer import format_term
+from robocram.logic.reader import read_query
+from robocram.logic.terms import PString, Term, Var, deref, format_term, make_list
 
 if TYPE_CHECKING:
-    from robocram.logic.machine import Machine
+    from robocram.logic.engine import Engine
 
 __all__ = ["format_text", "text_of"]
 
@@ -38,8 +38,7 @@ def _bound(t: Any) -> bool:
     return type(deref(t)) is not Var
 
 
-@nondet("atom_concat", 3)
-def _atom_concat(m: Machine, a: Args) -> Iterator[bool]:
+def _atom_concat(m: Engine, a: Args) -> Iterator[bool]:
     if _bound(a[0]) and _bound(a[1]):
         if m.unify(a[2], text_of(a[0], "atom_concat/3") + text_of(a[1], "atom_concat/3")):
             yield True
@@ -52,13 +51,11 @@ def _atom_concat(m: Machine, a: Args) -> Iterator[bool]:
         m.undo_to(mark)
 
 
-@det("atom_length", 2)
-def _atom_length(m: Machine, a: Args) -> bool:
+def _atom_length(m: Engine, a: Args) -> bool:
     return m.unify(a[1], len(text_of(a[0], "atom_length/2")))
 
 
-@det("string_length", 2)
-def _string_length(m: Machine, a: Args) -> bool:
+def _string_length(m: Engine, a: Args) -> bool:
     return m.unify(a[1], len(text_of(a[0], "string_length/2")))
 
 
@@ -73,14 +70,14 @@ def _parse_number(text: str) -> int | float | None:
         return None
 
 
-def _chars_like(name: str, to_item: Any, from_items: Any, result: Any) -> None:
-    def run(m: Machine, a: Args) -> bool:
+def _chars_like(name: str, to_item: Any, from_items: Any, result: Any) -> Builtin:
+    def run(m: Engine, a: Args) -> bool:
         if _bound(a[0]):
             return m.unify(a[1], make_list([to_item(c) for c in text_of(a[0], name)]))
         text = "".join(from_items(deref(x)) for x in list_items(a[1], name))
         return m.unify(a[0], result(text))
 
-    det(name, 2)(run)
+    return det(name, run, 2)
 
 
 def _char(x: Any) -> str:
@@ -94,65 +91,50 @@ def _number_from(text: str) -> int | float:
     return value
 
 
-_chars_like("atom_chars", lambda c: c, _char, lambda s: s)
-_chars_like("atom_codes", ord, _char, lambda s: s)
-_chars_like("string_chars", lambda c: c, _char, PString)
-_chars_like("string_codes", ord, _char, PString)
-_chars_like("number_codes", ord, _char, _number_from)
 _chars_like("number_chars", lambda c: c, _char, _number_from)
 
 
-@det("char_code", 2)
-def _char_code(m: Machine, a: Args) -> bool:
+def _char_code(m: Engine, a: Args) -> bool:
     if _bound(a[0]):
         return m.unify(a[1], ord(text_of(a[0], "char_code/2")))
     return m.unify(a[0], chr(deref(a[1])))
 
 
-@det("atom_number", 2)
-def _atom_number(m: Machine, a: Args) -> bool:
+def _atom_number(m: Engine, a: Args) -> bool:
     if _bound(a[0]):
         value = _parse_number(text_of(a[0], "atom_number/2"))
         return value is not None and m.unify(a[1], value)
     return m.unify(a[0], text_of(a[1], "atom_number/2"))
 
 
-@det("atom_string", 2)
-def _atom_string(m: Machine, a: Args) -> bool:
+def _atom_string(m: Engine, a: Args) -> bool:
     if _bound(a[0]):
         return m.unify(a[1], PString(text_of(a[0], "atom_string/2")))
     return m.unify(a[0], text_of(a[1], "atom_string/2"))
 
 
-@det("string_concat", 3)
-def _string_concat(m: Machine, a: Args) -> bool:
+def _string_concat(m: Engine, a: Args) -> bool:
     return m.unify(
         a[2], PString(text_of(a[0], "string_concat/3") + text_of(a[1], "string_concat/3"))
     )
 
 
-@det("upcase_atom", 2)
-def _upcase(m: Machine, a: Args) -> bool:
+def _upcase(m: Engine, a: Args) -> bool:
     return m.unify(a[1], text_of(a[0], "upcase_atom/2").upper())
 
 
-@det("downcase_atom", 2)
-def _downcase(m: Machine, a: Args) -> bool:
+def _downcase(m: Engine, a: Args) -> bool:
     return m.unify(a[1], text_of(a[0], "downcase_atom/2").lower())
 
 
-@det("term_to_atom", 2)
-def _term_to_atom(m: Machine, a: Args) -> bool:
+def _term_to_atom(m: Engine, a: Args) -> bool:
     if _bound(a[0]):
         return m.unify(a[1], format_term(a[0], quoted=True))
-    from robocram.logic.reader import read_query
-
     term, _ = read_query(text_of(a[1], "term_to_atom/2"), m.kb._ops)
     return m.unify(a[0], term)
 
 
-@nondet("atomic_list_concat", 3)
-def _atomic_list_concat3(m: Machine, a: Args) -> Iterator[bool]:
+def _atomic_list_concat3(m: Engine, a: Args) -> Iterator[bool]:
     sep = text_of(a[1], "atomic_list_concat/3")
     items = deref(a[0])
     try:
@@ -170,8 +152,7 @@ def _atomic_list_concat3(m: Machine, a: Args) -> Iterator[bool]:
         yield True
 
 
-@det("atomic_list_concat", 2)
-def _atomic_list_concat2(m: Machine, a: Args) -> bool:
+def _atomic_list_concat2(m: Engine, a: Args) -> bool:
     parts = [text_of(x, "atomic_list_concat/2") for x in list_items(a[0], "atomic_list_concat/2")]
     return m.unify(a[1], "".join(parts))
 
@@ -260,7 +241,7 @@ def _format_args(t: Any) -> list[Any]:
     return [t]
 
 
-def _emit(m: Machine, sink: Any, text: str) -> bool:
+def _emit(m: Engine, sink: Any, text: str) -> bool:
     sink = deref(sink)
     if type(sink) is Term and len(sink[1]) == 1 and sink[0] in ("atom", "string", "codes", "chars"):
         kind = sink[0]
@@ -278,8 +259,7 @@ def _emit(m: Machine, sink: Any, text: str) -> bool:
     )
 
 
-@det("format", 1, 2, 3)
-def _format(m: Machine, a: Args) -> bool:
+def _format(m: Engine, a: Args) -> bool:
     if len(a) == 3:
         return _emit(m, a[0], format_text(text_of(a[1], "format/3"), _format_args(a[2])))
     args = _format_args(a[1]) if len(a) == 2 else []
@@ -287,25 +267,47 @@ def _format(m: Machine, a: Args) -> bool:
     return True
 
 
-@det("write", 1)
-def _write(m: Machine, a: Args) -> bool:
+def _write(m: Engine, a: Args) -> bool:
     sys.stdout.write(format_term(a[0]))
     return True
 
 
-@det("print", 1)
-def _print(m: Machine, a: Args) -> bool:
+def _print(m: Engine, a: Args) -> bool:
     sys.stdout.write(format_term(a[0], quoted=True))
     return True
 
 
-@det("writeln", 1)
-def _writeln(m: Machine, a: Args) -> bool:
+def _writeln(m: Engine, a: Args) -> bool:
     sys.stdout.write(format_term(a[0]) + "\n")
     return True
 
 
-@det("nl", 0)
-def _nl(m: Machine, a: Args) -> bool:
+def _nl(m: Engine, a: Args) -> bool:
     sys.stdout.write("\n")
     return True
+
+
+BUILTINS: tuple[Builtin, ...] = (
+    _chars_like("atom_chars", lambda c: c, _char, lambda s: s),
+    _chars_like("atom_codes", ord, _char, lambda s: s),
+    _chars_like("string_chars", lambda c: c, _char, PString),
+    _chars_like("string_codes", ord, _char, PString),
+    _chars_like("number_codes", ord, _char, _number_from),
+    nondet("atom_concat", _atom_concat, 3),
+    det("atom_length", _atom_length, 2),
+    det("string_length", _string_length, 2),
+    det("char_code", _char_code, 2),
+    det("atom_number", _atom_number, 2),
+    det("atom_string", _atom_string, 2),
+    det("string_concat", _string_concat, 3),
+    det("upcase_atom", _upcase, 2),
+    det("downcase_atom", _downcase, 2),
+    det("term_to_atom", _term_to_atom, 2),
+    nondet("atomic_list_concat", _atomic_list_concat3, 3),
+    det("atomic_list_concat", _atomic_list_concat2, 2),
+    det("format", _format, 1, 2, 3),
+    det("write", _write, 1),
+    det("print", _print, 1),
+    det("writeln", _writeln, 1),
+    det("nl", _nl, 0),
+)

@@ -5,15 +5,15 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
 
+from robocram.logic.builtin_spec import Builtin, det, nondet
 from robocram.logic.builtin_terms import need_int
 from robocram.logic.errors import PrologInstantiationError, PrologPermissionError, PrologTypeError
 from robocram.logic.loader import parse_indicator
-from robocram.logic.registry import det, nondet
 from robocram.logic.terms import Term, Var, deref
 from robocram.logic.unify import copy_resolved
 
 if TYPE_CHECKING:
-    from robocram.logic.machine import Machine
+    from robocram.logic.engine import Engine
     from robocram.logic.predicate import Pred
 
 __all__: list[str] = []
@@ -21,15 +21,12 @@ __all__: list[str] = []
 Args = tuple[Any, ...]
 
 
-@det("assertz", 1)
-@det("assert", 1)
-def _assertz(m: Machine, a: Args) -> bool:
+def _assertz(m: Engine, a: Args) -> bool:
     m.kb.assert_clause(copy_resolved(a[0]))
     return True
 
 
-@det("asserta", 1)
-def _asserta(m: Machine, a: Args) -> bool:
+def _asserta(m: Engine, a: Args) -> bool:
     m.kb.assert_clause(copy_resolved(a[0]), front=True)
     return True
 
@@ -41,7 +38,7 @@ def _split(clause: Any) -> tuple[Any, Any]:
     return clause, "true"
 
 
-def _pred_of(m: Machine, head: Any, what: str) -> Pred | None:
+def _pred_of(m: Engine, head: Any, what: str) -> Pred | None:
     if type(head) is Var:
         raise PrologInstantiationError(f"{what}: the clause head is unbound")
     if type(head) is str:
@@ -62,8 +59,7 @@ def _stored(clause: Any) -> tuple[Any, Any]:
     return _split(copy_resolved(clause.source))
 
 
-@nondet("retract", 1)
-def _retract(m: Machine, a: Args) -> Iterator[bool]:
+def _retract(m: Engine, a: Args) -> Iterator[bool]:
     head, body = _split(a[0])
     pred = _pred_of(m, head, "retract/1")
     if pred is None:
@@ -87,8 +83,7 @@ def _retract(m: Machine, a: Args) -> Iterator[bool]:
         m.undo_to(mark)
 
 
-@det("retractall", 1)
-def _retractall(m: Machine, a: Args) -> bool:
+def _retractall(m: Engine, a: Args) -> bool:
     head = deref(a[0])
     pred = _pred_of(m, head, "retractall/1")
     if pred is None:
@@ -105,8 +100,7 @@ def _retractall(m: Machine, a: Args) -> bool:
     return True
 
 
-@nondet("clause", 2)
-def _clause(m: Machine, a: Args) -> Iterator[bool]:
+def _clause(m: Engine, a: Args) -> Iterator[bool]:
     head = deref(a[0])
     pred = _pred_of(m, head, "clause/2")
     if pred is None:
@@ -119,8 +113,7 @@ def _clause(m: Machine, a: Args) -> Iterator[bool]:
         m.undo_to(mark)
 
 
-@det("dynamic", 1)
-def _dynamic(m: Machine, a: Args) -> bool:
+def _dynamic(m: Engine, a: Args) -> bool:
     spec = deref(a[0])
     while type(spec) is Term and spec[0] in (",", ".") and len(spec[1]) == 2:
         m.kb.declare_dynamic(parse_indicator(spec[1][0]))
@@ -130,8 +123,7 @@ def _dynamic(m: Machine, a: Args) -> bool:
     return True
 
 
-@det("op", 3)
-def _op(m: Machine, a: Args) -> bool:
+def _op(m: Engine, a: Args) -> bool:
     priority = need_int(a[0], "op/3")
     kind = deref(a[1])
     names = deref(a[2])
@@ -147,8 +139,20 @@ def _op(m: Machine, a: Args) -> bool:
     return True
 
 
-@det("current_op", 3)
-def _current_op(m: Machine, a: Args) -> bool:
+def _current_op(m: Engine, a: Args) -> bool:
     name = deref(a[2])
     spec = m.kb._ops.infix.get(name) or m.kb._ops.prefix.get(name)
     return spec is not None and m.unify(a[0], spec[0]) and m.unify(a[1], spec[1])
+
+
+BUILTINS: tuple[Builtin, ...] = (
+    det("assert", _assertz, 1),
+    det("assertz", _assertz, 1),
+    det("asserta", _asserta, 1),
+    nondet("retract", _retract, 1),
+    det("retractall", _retractall, 1),
+    nondet("clause", _clause, 2),
+    det("dynamic", _dynamic, 1),
+    det("op", _op, 3),
+    det("current_op", _current_op, 3),
+)

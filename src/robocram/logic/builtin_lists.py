@@ -6,22 +6,21 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
 
 from robocram.logic.arith import evaluate
+from robocram.logic.builtin_spec import Builtin, det, nondet
 from robocram.logic.builtin_terms import list_items, need_int
 from robocram.logic.errors import PrologDomainError, PrologInstantiationError, PrologTypeError
-from robocram.logic.registry import det, nondet
 from robocram.logic.terms import NIL, Term, Var, deref, make_list
 from robocram.logic.unify import order_key
 
 if TYPE_CHECKING:
-    from robocram.logic.machine import Machine
+    from robocram.logic.engine import Engine
 
 __all__: list[str] = []
 
 Args = tuple[Any, ...]
 
 
-@nondet("length", 2)
-def _length(m: Machine, a: Args) -> Iterator[bool]:
+def _length(m: Engine, a: Args) -> Iterator[bool]:
     n = 0
     t = deref(a[0])
     while type(t) is Term and t[0] == "." and len(t[1]) == 2:
@@ -50,13 +49,11 @@ def _length(m: Machine, a: Args) -> Iterator[bool]:
         extra += 1
 
 
-@det("msort", 2)
-def _msort(m: Machine, a: Args) -> bool:
+def _msort(m: Engine, a: Args) -> bool:
     return m.unify(a[1], make_list(sorted(list_items(a[0], "msort/2"), key=order_key)))
 
 
-@det("sort", 2)
-def _sort(m: Machine, a: Args) -> bool:
+def _sort(m: Engine, a: Args) -> bool:
     return m.unify(a[1], make_list(_dedup(sorted(list_items(a[0], "sort/2"), key=order_key))))
 
 
@@ -71,8 +68,7 @@ def _dedup(items: list[Any]) -> list[Any]:
     return out
 
 
-@det("sort", 4)
-def _sort4(m: Machine, a: Args) -> bool:
+def _sort4(m: Engine, a: Args) -> bool:
     key_index = need_int(a[0], "sort/4")
     order = deref(a[1])
     if order not in ("@<", "@>", "@=<", "@>="):
@@ -99,8 +95,7 @@ def _sort4(m: Machine, a: Args) -> bool:
     return m.unify(a[3], make_list(ordered))
 
 
-@det("keysort", 2)
-def _keysort(m: Machine, a: Args) -> bool:
+def _keysort(m: Engine, a: Args) -> bool:
     items = list_items(a[0], "keysort/2")
     for item in items:
         t = deref(item)
@@ -111,36 +106,43 @@ def _keysort(m: Machine, a: Args) -> bool:
     return m.unify(a[1], make_list(sorted(items, key=lambda p: order_key(deref(p)[1][0]))))
 
 
-@det("sum_list", 2)
-def _sum_list(m: Machine, a: Args) -> bool:
+def _sum_list(m: Engine, a: Args) -> bool:
     return m.unify(a[1], sum((evaluate(x) for x in list_items(a[0], "sum_list/2")), 0))
 
 
-def _extreme(name: str, pick: Any) -> None:
-    def run(m: Machine, a: Args) -> bool:
+def _extreme(name: str, pick: Any) -> Builtin:
+    def run(m: Engine, a: Args) -> bool:
         values = [evaluate(x) for x in list_items(a[0], f"{name}/2")]
         return bool(values) and m.unify(a[1], pick(values))
 
-    det(name, 2)(run)
+    return det(name, run, 2)
 
 
-_extreme("max_list", max)
-_extreme("min_list", min)
-
-
-@det("numlist", 3)
-def _numlist(m: Machine, a: Args) -> bool:
+def _numlist(m: Engine, a: Args) -> bool:
     low, high = need_int(a[0], "numlist/3"), need_int(a[1], "numlist/3")
     return low <= high and m.unify(a[2], make_list(range(low, high + 1)))
 
 
-@det("max_member", 2)
-def _max_member(m: Machine, a: Args) -> bool:
+def _max_member(m: Engine, a: Args) -> bool:
     items = list_items(a[1], "max_member/2")
     return bool(items) and m.unify(a[0], max(items, key=order_key))
 
 
-@det("min_member", 2)
-def _min_member(m: Machine, a: Args) -> bool:
+def _min_member(m: Engine, a: Args) -> bool:
     items = list_items(a[1], "min_member/2")
     return bool(items) and m.unify(a[0], min(items, key=order_key))
+
+
+BUILTINS: tuple[Builtin, ...] = (
+    _extreme("max_list", max),
+    _extreme("min_list", min),
+    nondet("length", _length, 2),
+    det("msort", _msort, 2),
+    det("sort", _sort, 2),
+    det("sort", _sort4, 4),
+    det("keysort", _keysort, 2),
+    det("sum_list", _sum_list, 2),
+    det("numlist", _numlist, 3),
+    det("max_member", _max_member, 2),
+    det("min_member", _min_member, 2),
+)

@@ -6,13 +6,13 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
 
 from robocram.logic.arith import evaluate
+from robocram.logic.builtin_spec import Builtin, det, nondet
 from robocram.logic.errors import PrologDomainError, PrologInstantiationError
-from robocram.logic.registry import det, nondet
 from robocram.logic.terms import Term, Var, deref, make_list
 from robocram.logic.unify import copy_resolved, order_key, variant_key
 
 if TYPE_CHECKING:
-    from robocram.logic.machine import Machine
+    from robocram.logic.engine import Engine
 
 __all__ = ["term_variables"]
 
@@ -32,12 +32,11 @@ def term_variables(t: Any, seen: dict[Var, None] | None = None) -> list[Var]:
     return list(found)
 
 
-@det("term_variables", 2)
-def _term_variables(m: Machine, a: Args) -> bool:
+def _term_variables(m: Engine, a: Args) -> bool:
     return m.unify(a[1], make_list(term_variables(a[0])))
 
 
-def collect(m: Machine, template: Any, goal: Any) -> list[Any]:
+def collect(m: Engine, template: Any, goal: Any) -> list[Any]:
     """Copy `template` for every solution of `goal`, leaving no bindings behind."""
     mark = len(m.trail)
     try:
@@ -46,13 +45,11 @@ def collect(m: Machine, template: Any, goal: Any) -> list[Any]:
         m.undo_to(mark)
 
 
-@det("findall", 3)
-def _findall(m: Machine, a: Args) -> bool:
+def _findall(m: Engine, a: Args) -> bool:
     return m.unify(a[2], make_list(collect(m, a[0], a[1])))
 
 
-@det("findall", 4)
-def _findall4(m: Machine, a: Args) -> bool:
+def _findall4(m: Engine, a: Args) -> bool:
     return m.unify(a[2], make_list(collect(m, a[0], a[1]), a[3]))
 
 
@@ -65,7 +62,7 @@ def _strip_carets(goal: Any) -> tuple[Any, list[Any]]:
     return goal, bound
 
 
-def _grouped(m: Machine, a: Args, to_set: bool) -> Iterator[bool]:
+def _grouped(m: Engine, a: Args, to_set: bool) -> Iterator[bool]:
     goal, bound = _strip_carets(a[1])
     if type(goal) is Var:
         raise PrologInstantiationError("bagof/setof: the goal is unbound")
@@ -107,18 +104,15 @@ def _sorted_unique(items: list[Any]) -> list[Any]:
     return out
 
 
-@nondet("bagof", 3)
-def _bagof(m: Machine, a: Args) -> Iterator[bool]:
+def _bagof(m: Engine, a: Args) -> Iterator[bool]:
     return _grouped(m, a, False)
 
 
-@nondet("setof", 3)
-def _setof(m: Machine, a: Args) -> Iterator[bool]:
+def _setof(m: Engine, a: Args) -> Iterator[bool]:
     return _grouped(m, a, True)
 
 
-@det("aggregate_all", 3)
-def _aggregate_all(m: Machine, a: Args) -> bool:
+def _aggregate_all(m: Engine, a: Args) -> bool:
     spec = deref(a[0])
     if spec == "count":
         mark = len(m.trail)
@@ -154,3 +148,13 @@ def _aggregate_all(m: Machine, a: Args) -> bool:
         numbers = [evaluate(v) for v in values]
         return m.unify(a[2], max(numbers) if kind == "max" else min(numbers))
     raise PrologDomainError("aggregate_spec", spec, f"aggregate_all/3: unknown aggregate {kind!r}")
+
+
+BUILTINS: tuple[Builtin, ...] = (
+    det("term_variables", _term_variables, 2),
+    det("findall", _findall, 3),
+    det("findall", _findall4, 4),
+    nondet("bagof", _bagof, 3),
+    nondet("setof", _setof, 3),
+    det("aggregate_all", _aggregate_all, 3),
+)

@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
 
+from robocram.logic.builtin_spec import Builtin, det, nondet
 from robocram.logic.convert import NONE
 from robocram.logic.errors import (
     PrologDomainError,
@@ -12,12 +13,11 @@ from robocram.logic.errors import (
     PrologTypeError,
     error_from_ball,
 )
-from robocram.logic.registry import det, nondet
 from robocram.logic.terms import NIL, PString, Term, Var, deref, make_list
 from robocram.logic.unify import copy_resolved, order_key
 
 if TYPE_CHECKING:
-    from robocram.logic.machine import Machine
+    from robocram.logic.engine import Engine
 
 __all__ = ["list_items", "need_int"]
 
@@ -48,13 +48,11 @@ def list_items(t: Any, what: str) -> list[Any]:
     return items
 
 
-@det("=", 2)
-def _unify(m: Machine, a: Args) -> bool:
+def _unify(m: Engine, a: Args) -> bool:
     return m.unify(a[0], a[1])
 
 
-@det("\\=", 2)
-def _not_unify(m: Machine, a: Args) -> bool:
+def _not_unify(m: Engine, a: Args) -> bool:
     mark = len(m.trail)
     ok = m.unify(a[0], a[1])
     m.undo_to(mark)
@@ -67,48 +65,22 @@ def _compare_terms(a: Any, b: Any) -> int:
 
 
 def _ordering(test: Any) -> Any:
-    def run(m: Machine, a: Args) -> bool:
+    def run(m: Engine, a: Args) -> bool:
         return bool(test(_compare_terms(a[0], a[1])))
 
     return run
 
 
-for _name, _test in (
-    ("==", lambda c: c == 0),
-    ("\\==", lambda c: c != 0),
-    ("@<", lambda c: c < 0),
-    ("@>", lambda c: c > 0),
-    ("@=<", lambda c: c <= 0),
-    ("@>=", lambda c: c >= 0),
-):
-    det(_name, 2)(_ordering(_test))
-
-
-@det("compare", 3)
-def _compare(m: Machine, a: Args) -> bool:
+def _compare(m: Engine, a: Args) -> bool:
     c = _compare_terms(a[1], a[2])
     return m.unify(a[0], "<" if c < 0 else ">" if c > 0 else "=")
 
 
-def _type_test(name: str, test: Any) -> None:
-    det(name, 1)(lambda m, a: bool(test(deref(a[0]))))
+def _type_test(name: str, test: Any) -> Builtin:
+    return det(name, lambda m, a: bool(test(deref(a[0]))), 1)
 
 
 _OPAQUE_EXCLUDED = (str, int, float, Term, Var, PString)
-_type_test("var", lambda t: type(t) is Var)
-_type_test("nonvar", lambda t: type(t) is not Var)
-_type_test("bound", lambda t: type(t) is not Var)
-_type_test("atom", lambda t: type(t) is str)
-_type_test("number", lambda t: type(t) in (int, float))
-_type_test("integer", lambda t: type(t) is int)
-_type_test("float", lambda t: type(t) is float)
-_type_test("atomic", lambda t: type(t) is not Var and type(t) is not Term)
-_type_test("compound", lambda t: type(t) is Term)
-_type_test("callable", lambda t: type(t) in (str, Term))
-_type_test("string", lambda t: type(t) is PString)
-_type_test("is_list", lambda t: _is_list(t))
-_type_test("ground", lambda t: _is_ground(t))
-_type_test("python_object", lambda t: type(t) not in _OPAQUE_EXCLUDED or t is NONE)
 
 
 def _is_list(t: Any) -> bool:
@@ -128,8 +100,7 @@ def _is_ground(t: Any) -> bool:
     return True
 
 
-@det("functor", 3)
-def _functor(m: Machine, a: Args) -> bool:
+def _functor(m: Engine, a: Args) -> bool:
     t = deref(a[0])
     if type(t) is Term:
         return m.unify(a[1], t[0]) and m.unify(a[2], len(t[1]))
@@ -146,8 +117,7 @@ def _functor(m: Machine, a: Args) -> bool:
     return m.unify(t, Term(name, [Var() for _ in range(arity)]))
 
 
-@det("arg", 3)
-def _arg(m: Machine, a: Args) -> bool:
+def _arg(m: Engine, a: Args) -> bool:
     n = need_int(a[0], "arg/3")
     t = deref(a[1])
     if type(t) is not Term:
@@ -155,8 +125,7 @@ def _arg(m: Machine, a: Args) -> bool:
     return 1 <= n <= len(t[1]) and m.unify(a[2], t[1][n - 1])
 
 
-@det("=..", 2)
-def _univ(m: Machine, a: Args) -> bool:
+def _univ(m: Engine, a: Args) -> bool:
     t = deref(a[0])
     if type(t) is Term:
         return m.unify(a[1], make_list([t[0], *t[1]]))
@@ -173,21 +142,18 @@ def _univ(m: Machine, a: Args) -> bool:
     return m.unify(t, Term(head, items[1:]))
 
 
-@det("copy_term", 2)
-def _copy_term(m: Machine, a: Args) -> bool:
+def _copy_term(m: Engine, a: Args) -> bool:
     return m.unify(a[1], copy_resolved(a[0]))
 
 
-@det("throw", 1)
-def _throw(m: Machine, a: Args) -> bool:
+def _throw(m: Engine, a: Args) -> bool:
     ball = copy_resolved(a[0])
     if type(ball) is Var:
         raise PrologInstantiationError("throw/1: the ball is unbound")
     raise error_from_ball(ball)
 
 
-@nondet("between", 3)
-def _between(m: Machine, a: Args) -> Iterator[bool]:
+def _between(m: Engine, a: Args) -> Iterator[bool]:
     low = need_int(a[0], "between/3")
     high_t = deref(a[1])
     high = high_t if high_t in ("inf", "infinite") else need_int(high_t, "between/3")
@@ -205,8 +171,7 @@ def _between(m: Machine, a: Args) -> Iterator[bool]:
         i += 1
 
 
-@det("succ", 2)
-def _succ(m: Machine, a: Args) -> bool:
+def _succ(m: Engine, a: Args) -> bool:
     x = deref(a[0])
     if type(x) is not Var:
         n = need_int(x, "succ/2")
@@ -219,8 +184,7 @@ def _succ(m: Machine, a: Args) -> bool:
     return y > 0 and m.unify(x, y - 1)
 
 
-@det("plus", 3)
-def _plus(m: Machine, a: Args) -> bool:
+def _plus(m: Engine, a: Args) -> bool:
     x, y, z = deref(a[0]), deref(a[1]), deref(a[2])
     if type(z) is Var:
         return m.unify(z, need_int(x, "plus/3") + need_int(y, "plus/3"))
@@ -229,6 +193,41 @@ def _plus(m: Machine, a: Args) -> bool:
     return m.unify(x, need_int(z, "plus/3") - need_int(y, "plus/3"))
 
 
-@det("halt", 0, 1)
-def _halt(m: Machine, a: Args) -> bool:
+def _halt(m: Engine, a: Args) -> bool:
     raise PrologDomainError("embedded", "halt", "halt/0: not allowed in an embedded knowledge base")
+
+
+BUILTINS: tuple[Builtin, ...] = (
+    det("==", _ordering(lambda c: c == 0), 2),
+    det("\\==", _ordering(lambda c: c != 0), 2),
+    det("@<", _ordering(lambda c: c < 0), 2),
+    det("@>", _ordering(lambda c: c > 0), 2),
+    det("@=<", _ordering(lambda c: c <= 0), 2),
+    det("@>=", _ordering(lambda c: c >= 0), 2),
+    _type_test("var", lambda t: type(t) is Var),
+    _type_test("nonvar", lambda t: type(t) is not Var),
+    _type_test("bound", lambda t: type(t) is not Var),
+    _type_test("atom", lambda t: type(t) is str),
+    _type_test("number", lambda t: type(t) in (int, float)),
+    _type_test("integer", lambda t: type(t) is int),
+    _type_test("float", lambda t: type(t) is float),
+    _type_test("atomic", lambda t: type(t) is not Var and type(t) is not Term),
+    _type_test("compound", lambda t: type(t) is Term),
+    _type_test("callable", lambda t: type(t) in (str, Term)),
+    _type_test("string", lambda t: type(t) is PString),
+    _type_test("is_list", lambda t: _is_list(t)),
+    _type_test("ground", lambda t: _is_ground(t)),
+    _type_test("python_object", lambda t: type(t) not in _OPAQUE_EXCLUDED or t is NONE),
+    det("=", _unify, 2),
+    det("\\=", _not_unify, 2),
+    det("compare", _compare, 3),
+    det("functor", _functor, 3),
+    det("arg", _arg, 3),
+    det("=..", _univ, 2),
+    det("copy_term", _copy_term, 2),
+    det("throw", _throw, 1),
+    nondet("between", _between, 3),
+    det("succ", _succ, 2),
+    det("plus", _plus, 3),
+    det("halt", _halt, 0, 1),
+)

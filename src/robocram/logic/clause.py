@@ -1,4 +1,4 @@
-"""Compiled clauses: head and body templates whose variables are numbered slots.
+"""Compiled clauses: head and body templates, interpreted first and then generated code.
 
 A clause is renamed apart by building its templates against a fresh register list, so the
 stored clause is never mutated and can be shared by concurrent queries.
@@ -8,31 +8,13 @@ from __future__ import annotations
 
 from typing import Any
 
-from robocram.logic.terms import Term, Var, new_term
-from robocram.logic.unify import unify
+from robocram.logic.codegen import compile_clause_fn
+from robocram.logic.template import build, index_key_of_template, unify_head
+from robocram.logic.terms import Var
 
-__all__ = ["Clause", "Slot", "Tmpl", "build", "compile_term", "unify_head"]
+__all__ = ["Clause"]
 
 _COMPILE_AFTER = 2
-
-
-class Slot:
-    """The i-th variable of a clause template."""
-
-    __slots__ = ("i",)
-
-    def __init__(self, i: int) -> None:
-        self.i = i
-
-
-class Tmpl:
-    """A compound template that contains at least one Slot."""
-
-    __slots__ = ("args", "name")
-
-    def __init__(self, name: str, args: tuple[Any, ...]) -> None:
-        self.name = name
-        self.args = args
 
 
 class Clause:
@@ -68,8 +50,6 @@ class Clause:
         self.calls += 1
         if self.calls < _COMPILE_AFTER:
             return self.interpret
-        from robocram.logic.codegen import compile_clause_fn
-
         try:
             self.run = compile_clause_fn(self)
         except (SyntaxError, RecursionError, MemoryError):
@@ -91,77 +71,3 @@ class Clause:
         for g in self.body_rev:
             cont = (build(g, regs), cb, cont)
         return cont
-
-
-def index_key_of_template(t: Any) -> Any:
-    """Return the first-argument index key of a template (None for a variable)."""
-    if type(t) is Slot:
-        return None
-    if type(t) is Tmpl:
-        return (t.name, len(t.args))
-    if type(t) is Term:
-        return (t[0], len(t[1]))
-    try:
-        hash(t)
-    except TypeError:
-        return None
-    return t
-
-
-def compile_term(term: Any, slots: dict[Var, Slot]) -> Any:
-    """Turn a term into a template, numbering its unbound variables in `slots`."""
-    while type(term) is Var:
-        if term.ref is None:
-            slot = slots.get(term)
-            if slot is None:
-                slot = slots[term] = Slot(len(slots))
-            return slot
-        term = term.ref
-    if type(term) is not Term:
-        return term
-    args = tuple([compile_term(a, slots) for a in term[1]])
-    if any(type(a) is Slot or type(a) is Tmpl for a in args):
-        return Tmpl(term[0], args)
-    return new_term(Term, (term[0], args))
-
-
-def build(t: Any, regs: list[Any]) -> Any:
-    """Instantiate a template against the registers, creating fresh Vars on first use."""
-    tt = type(t)
-    if tt is Slot:
-        v = regs[t.i]
-        if v is None:
-            v = regs[t.i] = Var()
-        return v
-    if tt is Tmpl:
-        return new_term(Term, (t.name, tuple([build(a, regs) for a in t.args])))
-    return t
-
-
-def unify_head(p: Any, t: Any, regs: list[Any], trail: list[Var]) -> bool:
-    """Unify head template `p` with call argument `t` without building the head first."""
-    tp = type(p)
-    if tp is Slot:
-        v = regs[p.i]
-        if v is None:
-            regs[p.i] = t
-            return True
-        return unify(v, t, trail)
-    while type(t) is Var:
-        r = t.ref
-        if r is None:
-            t.ref = build(p, regs)
-            trail.append(t)
-            return True
-        t = r
-    if tp is Tmpl:
-        if type(t) is not Term or t[0] != p.name:
-            return False
-        targs = t[1]
-        pargs = p.args
-        if len(targs) != len(pargs):
-            return False
-        return all(unify_head(pargs[i], targs[i], regs, trail) for i in range(len(pargs)))
-    if type(t) is type(p) and type(p) is not Term:
-        return bool(t == p)
-    return unify(p, t, trail)

@@ -20,14 +20,31 @@ of the same shape (for example 100,000 `fact(N, vN)` facts) share one compiled f
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any
+from typing import Any, Protocol
 
 from robocram.logic.arith import BINARY_FUNCTIONS, apply_binary, evaluate
-from robocram.logic.clause import Clause, Slot, Tmpl
+from robocram.logic.lru import LRUCache
+from robocram.logic.template import Slot, Tmpl
 from robocram.logic.terms import Term, Var, new_term
 from robocram.logic.unify import unify
 
-__all__ = ["ClauseFn", "ClauseWriter", "compile_clause_fn", "make_factory"]
+__all__ = [
+    "FACTORY_CACHE_SIZE",
+    "ClauseCode",
+    "ClauseFn",
+    "ClauseWriter",
+    "compile_clause_fn",
+    "make_factory",
+]
+
+
+class ClauseCode(Protocol):
+    """What code generation reads from a stored clause (see clause.Clause)."""
+
+    head: tuple[Any, ...]
+    body_rev: tuple[Any, ...]
+    name: str
+
 
 ClauseFn = Callable[[tuple[Any, ...], list[Var], int, Any, list[list[Any]]], Any]
 
@@ -39,13 +56,16 @@ _NAMESPACE: dict[str, Any] = {
     "ev": evaluate,
     "ap2": apply_binary,
 }
-_FACTORIES: dict[str, Callable[..., ClauseFn]] = {}
+# Generated factories are pure functions of their source text (constants are parameters),
+# so one bounded memo serves every knowledge base without sharing any resolved state.
+FACTORY_CACHE_SIZE = 4096
+_FACTORIES: LRUCache[str, Callable[..., Any]] = LRUCache(FACTORY_CACHE_SIZE)
 _ARITH_OPS = {"+": "+", "-": "-", "*": "*"}
 _COMPARE_OPS = {"<": "<", ">": ">", "=<": "<=", ">=": ">=", "=:=": "==", "=\\=": "!="}
 _EXACT_TYPES = (str, int, float)
 
 
-def compile_clause_fn(clause: Clause) -> ClauseFn:
+def compile_clause_fn(clause: ClauseCode) -> ClauseFn:
     """Return the specialised function for `clause` (factories are cached by source)."""
     gen = ClauseWriter()
     source = gen.clause_source(clause)
@@ -58,7 +78,8 @@ def make_factory(source: str) -> Callable[..., Any]:
     if factory is None:
         namespace = dict(_NAMESPACE)
         exec(compile(source, "<robocram clause>", "exec"), namespace)  # noqa: S102
-        factory = _FACTORIES[source] = namespace["make"]
+        factory = namespace["make"]
+        _FACTORIES.put(source, factory)
     return factory
 
 
@@ -87,7 +108,7 @@ def _parts(t: Any) -> tuple[str, tuple[Any, ...]] | None:
     return None
 
 
-def _is_self_call(goal: Any, clause: Clause) -> bool:
+def _is_self_call(goal: Any, clause: ClauseCode) -> bool:
     """True when `goal` calls the clause's own predicate (same name and arity)."""
     parts = _parts(goal)
     return parts is not None and parts[0] == clause.name and len(parts[1]) == len(clause.head)
@@ -104,7 +125,7 @@ class ClauseWriter:
         self.temps = 0
         self.base = 0
 
-    def clause_source(self, clause: Clause) -> str:
+    def clause_source(self, clause: ClauseCode) -> str:
         """Generate `make(k0, k1, ...)` returning the clause function."""
         arity = len(clause.head)
         if arity:
@@ -116,7 +137,7 @@ class ClauseWriter:
             + ["  return run", ""]
         )
 
-    def clause_code(self, clause: Clause, loop: bool, switched: int = -1) -> None:
+    def clause_code(self, clause: ClauseCode, loop: bool, switched: int = -1) -> None:
         """Emit head unification, the inline built-ins and the exit of one clause.
 
         The exit returns the continuation; a call to the clause's own predicate returns its

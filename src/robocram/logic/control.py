@@ -13,7 +13,7 @@ from robocram.logic.errors import PrologInstantiationError, PrologTypeError
 from robocram.logic.terms import Term, Var, new_term
 
 if TYPE_CHECKING:
-    from robocram.logic.machine import Machine
+    from robocram.logic.engine import Engine
 
 __all__ = ["ALT", "BARRIER", "CATCH", "CLAUSES", "CONTROL_NAMES", "DEAD", "FAIL", "GEN", "REACT"]
 __all__ += ["add_args", "run_control"]
@@ -67,7 +67,7 @@ def _cut(b: int) -> Term:
 
 
 def run_control(
-    m: Machine, name: str, args: tuple[Any, ...], cutb: int, nxt: Any, cps: list[list[Any]]
+    m: Engine, name: str, args: tuple[Any, ...], cutb: int, nxt: Any, cps: list[list[Any]]
 ) -> Any:
     """Execute one control construct; return the next continuation or FAIL."""
     trail = m.trail

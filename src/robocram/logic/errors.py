@@ -8,7 +8,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from robocram.logic.terms import Term
+from robocram.logic.convert import to_python
+from robocram.logic.terms import Term, format_term
 
 __all__ = [
     "FactGroupError",
@@ -39,8 +40,6 @@ class PrologError(Exception):
     @property
     def term(self) -> Any:
         """The thrown term as a Python value (lists as lists, atoms as str)."""
-        from robocram.logic.convert import to_python
-
         return to_python(self.ball)
 
 
@@ -52,8 +51,6 @@ class PrologThrow(PrologError):
     """A term thrown with `throw/1` that no `catch/3` caught."""
 
     def __init__(self, ball: Any) -> None:
-        from robocram.logic.writer import format_term
-
         super().__init__(f"uncaught exception in query: {format_term(ball, quoted=True)}", ball)
 
 
@@ -141,8 +138,6 @@ class PrologSyntaxError(PrologError):
 
 def error_from_ball(ball: Any) -> PrologError:
     """Wrap a thrown term that escaped a query in the matching Python exception."""
-    from robocram.logic.writer import format_term
-
     if type(ball) is Term and ball[0] == "error" and len(ball[1]) == 2:
         formal, context = ball[1]
         msg = context if isinstance(context, str) else format_term(ball, quoted=True)

@@ -10,52 +10,25 @@ from __future__ import annotations
 import difflib
 import threading
 from collections.abc import Callable, Iterable, Iterator
-from functools import cache
 from typing import Any
 
-from robocram.logic import (  # noqa: F401  # noqa: F401
-    arith,
-    builtin_atoms,
-    builtin_lists,
-    builtin_solutions,
-    builtin_terms,
-    python_predicates,
-)
 from robocram.logic.bulk import paused_gc
-from robocram.logic.clause import Slot, build, compile_term
 from robocram.logic.convert import to_prolog, to_python
 from robocram.logic.errors import FactGroupError, PrologError, PrologPermissionError
 from robocram.logic.loader import compile_clause, parse_indicator
+from robocram.logic.lru import LRUCache
 from robocram.logic.machine import Machine
 from robocram.logic.operators import OperatorTable
-from robocram.logic.predicate import USER, Pred
+from robocram.logic.predicate import USER, Key, Pred
 from robocram.logic.reader import read_query, read_terms
-from robocram.logic.registry import BUILTINS
+from robocram.logic.system import library_predicates, system_predicates
+from robocram.logic.template import Slot, build, compile_term
 from robocram.logic.terms import Term, Var, deref
 
 __all__ = ["KnowledgeBase"]
 
-Key = tuple[str, int]
 PyPredicate = Callable[..., Iterator[Any]]
-_CACHE_SIZE = 1024
-
-
-@cache
-def _system_predicates() -> dict[Key, Pred]:
-    """Built-ins plus the Prolog-defined library, compiled once and shared read-only."""
-    from robocram.logic import builtin_database  # noqa: F401
-    from robocram.logic.library import LIBRARY
-
-    preds = dict(BUILTINS)
-    for term, _ in read_terms(LIBRARY):
-        key, clause = compile_clause(term, "system")
-        pred = preds.get(key)
-        if pred is None:
-            pred = preds[key] = Pred(key[0], key[1])
-            pred.system = True
-            pred.owner = "system"
-        pred.clauses.append(clause)
-    return preds
+QUERY_CACHE_SIZE = 1024
 
 
 class KnowledgeBase:
@@ -68,12 +41,15 @@ class KnowledgeBase:
     """
 
     def __init__(self) -> None:
-        self._preds: dict[Key, Pred] = dict(_system_predicates())
+        # One dict for the machine's lookup: the shared, frozen system predicates plus this
+        # KB's own library and user predicates.
+        self._preds: dict[Key, Pred] = dict(system_predicates())
+        self._preds.update(library_predicates())
         self._ops = OperatorTable()
         self._functions: dict[str, Callable[..., Any]] = {}
         self._groups: dict[str, tuple[set[Key], set[Key]]] = {}
         self._lock = threading.RLock()
-        self._queries: dict[str, tuple[Any, dict[str, int], int]] = {}
+        self._queries: LRUCache[str, tuple[Any, dict[str, int], int]] = LRUCache(QUERY_CACHE_SIZE)
 
     def consult(self, text: str, group: str | None = None, extendable: Iterable[Any] = ()) -> None:
         """Load Prolog text as fact group `group` (replacing it); None appends to 'user'."""
@@ -318,9 +294,7 @@ class KnowledgeBase:
                 slots[var] = Slot(len(slots))
             template = compile_term(term, slots)
             cached = (template, {name: slots[v].i for name, v in varmap.items()}, len(slots))
-            if len(self._queries) >= _CACHE_SIZE:
-                self._queries.clear()
-            self._queries[text] = cached
+            self._queries.put(text, cached)
         return cached
 
     def holds(self, text: str, **bindings: Any) -> bool:

@@ -4,8 +4,9 @@ from __future__ import annotations
 
 from typing import Any
 
-from robocram.logic.clause import Clause, Slot, compile_term
+from robocram.logic.clause import Clause
 from robocram.logic.errors import PrologInstantiationError, PrologTypeError
+from robocram.logic.template import Slot, compile_term
 from robocram.logic.terms import Term, Var, deref
 from robocram.logic.unify import copy_resolved
 

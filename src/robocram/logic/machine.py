@@ -9,9 +9,10 @@ the barrier recorded when the clause was entered.
 from __future__ import annotations
 
 from collections.abc import Iterator
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from robocram.logic.control import ALT, BARRIER, CATCH, CLAUSES, FAIL, GEN, REACT, run_control
+from robocram.logic.engine import Database
 from robocram.logic.errors import (
     PrologError,
     PrologInstantiationError,
@@ -19,11 +20,9 @@ from robocram.logic.errors import (
     UnknownPredicateError,
 )
 from robocram.logic.predicate import DET, NONDET, USER, WARM_CALLS, Pred
+from robocram.logic.python_predicates import python_solutions
 from robocram.logic.terms import Term, Var, new_term
 from robocram.logic.unify import copy_resolved, undo, unify
-
-if TYPE_CHECKING:
-    from robocram.logic.knowledge_base import KnowledgeBase
 
 __all__ = ["Machine"]
 
@@ -31,7 +30,7 @@ __all__ = ["Machine"]
 class Machine:
     """Per-query solver state: the trail shared by nested solves, and the knowledge base."""
 
-    def __init__(self, kb: KnowledgeBase) -> None:
+    def __init__(self, kb: Database) -> None:
         self.kb = kb
         self.preds = kb._preds
         self.trail: list[Var] = []
@@ -241,8 +240,6 @@ class Machine:
 
     def _push_python(self, p: Pred, args: tuple[Any, ...], nxt: Any, cps: list[list[Any]]) -> None:
         """Try the Python predicate's solutions first, then the ordinary clauses."""
-        from robocram.logic.python_predicates import python_solutions
-
         trail = self.trail
         cands = p.clauses if not args or len(p.clauses) < 2 else p.candidates(deref1(args[0]))
         if cands:

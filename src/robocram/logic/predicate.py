@@ -3,22 +3,18 @@
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from robocram.logic.bulk import paused_gc
 from robocram.logic.clause import Clause
+from robocram.logic.procedure import compile_procedure
 from robocram.logic.terms import Term, Var
 
-if TYPE_CHECKING:
-    from robocram.logic.machine import Machine
-
-__all__ = ["CONTROL", "DET", "NONDET", "USER", "WARM_CALLS", "DetFn", "NondetFn", "Pred"]
+__all__ = ["CONTROL", "DET", "NONDET", "USER", "WARM_CALLS", "FrozenPred", "Key", "Pred"]
 
 USER, DET, NONDET, CONTROL = 0, 1, 2, 3
 WARM_CALLS = 3
-
-DetFn = Callable[["Machine", tuple[Any, ...]], bool]
-NondetFn = Callable[["Machine", tuple[Any, ...]], Iterator[Any]]
+Key = tuple[str, int]
 
 
 class Pred:
@@ -60,10 +56,8 @@ class Pred:
     def warm_up(self) -> None:
         """Count a call; on the third, compile the switching procedure if it qualifies."""
         self.warm += 1
-        if self.warm == WARM_CALLS:
-            from robocram.logic.procedure import compile_procedure
-
-            self.proc = compile_procedure(self)
+        if self.warm == WARM_CALLS and not self.dynamic and self.pyfn is None:
+            self.proc = compile_procedure(self.clauses)
 
     @property
     def indicator(self) -> str:
@@ -130,3 +124,22 @@ class Pred:
             except TypeError:
                 return self.clauses
         return self.varclauses if bucket is None else bucket
+
+
+class FrozenPred(Pred):
+    """A system predicate: built once, shared read-only by every knowledge base."""
+
+    __slots__ = ()
+
+    def __init__(self, name: str, arity: int, kind: int, fn: Any = None) -> None:
+        super().__init__(name, arity, kind, fn)
+        self.owner = "system"
+        self.system = True  # from here on, every attribute is read-only
+
+    def __setattr__(self, attr: str, value: Any) -> None:
+        if getattr(self, "system", False):
+            raise AttributeError(
+                f"{self.name}/{self.arity} is a system predicate shared by every knowledge"
+                f" base; it cannot be changed (tried to set {attr!r})"
+            )
+        super().__setattr__(attr, value)

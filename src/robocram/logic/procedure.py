@@ -15,15 +15,12 @@ Skipping the clauses that cannot match changes no answer: they would fail in the
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from typing import TYPE_CHECKING, Any
+from collections.abc import Callable, Sequence
+from typing import Any
 
-from robocram.logic.clause import Clause, Tmpl
-from robocram.logic.codegen import ClauseWriter, make_factory
+from robocram.logic.codegen import ClauseCode, ClauseWriter, make_factory
+from robocram.logic.template import Tmpl
 from robocram.logic.terms import Term
-
-if TYPE_CHECKING:
-    from robocram.logic.predicate import Pred
 
 __all__ = ["MAX_CLAUSES", "Procedure", "compile_procedure"]
 
@@ -32,10 +29,10 @@ MAX_CLAUSES = 8
 _ATOMIC = (str, int, float)
 
 
-def compile_procedure(pred: Pred) -> Procedure | None:
-    """Return the switching procedure of `pred`, or None when it does not qualify."""
-    clauses = list(pred.clauses)
-    if pred.dynamic or pred.pyfn is not None or not 2 <= len(clauses) <= MAX_CLAUSES:
+def compile_procedure(stored: Sequence[ClauseCode]) -> Procedure | None:
+    """Return the switching procedure of a static predicate's clauses, or None."""
+    clauses = list(stored)
+    if not 2 <= len(clauses) <= MAX_CLAUSES:
         return None
     position = _switch_position(clauses)
     if position is None:
@@ -53,7 +50,7 @@ def compile_procedure(pred: Pred) -> Procedure | None:
     return proc
 
 
-def _write_switch(clauses: list[Clause], position: int) -> ClauseWriter:
+def _write_switch(clauses: list[ClauseCode], position: int) -> ClauseWriter:
     """Emit the loop that switches on argument `position` into each clause's code."""
     writer = ClauseWriter()
     arity = len(clauses[0].head)
@@ -84,7 +81,7 @@ def _write_switch(clauses: list[Clause], position: int) -> ClauseWriter:
     return writer
 
 
-def _clause_at(writer: ClauseWriter, clause: Clause, depth: int, position: int) -> None:
+def _clause_at(writer: ClauseWriter, clause: ClauseCode, depth: int, position: int) -> None:
     writer.base = depth - 1
     writer.clause_code(clause, loop=True, switched=position)
     writer.base = 0
@@ -98,7 +95,7 @@ def _functor(t: Any) -> tuple[str, tuple[Any, ...]]:
     return (t.name, t.args) if type(t) is Tmpl else (t[0], t[1])
 
 
-def _switch_position(clauses: list[Clause]) -> int | None:
+def _switch_position(clauses: list[ClauseCode]) -> int | None:
     """The first argument where every clause has a distinct constant or functor."""
     for i in range(len(clauses[0].head)):
         keys: list[Any] = []

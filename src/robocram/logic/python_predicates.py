@@ -5,19 +5,19 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING, Any
 
+from robocram.logic.builtin_spec import Builtin, det
 from robocram.logic.convert import to_prolog, to_python
 from robocram.logic.errors import PrologError, PrologExistenceError, PrologInstantiationError
-from robocram.logic.registry import det
 from robocram.logic.terms import Var, deref
 
 if TYPE_CHECKING:
-    from robocram.logic.machine import Machine
+    from robocram.logic.engine import Engine
     from robocram.logic.predicate import Pred
 
 __all__ = ["python_solutions"]
 
 
-def python_solutions(m: Machine, p: Pred, args: tuple[Any, ...]) -> Iterator[bool]:
+def python_solutions(m: Engine, p: Pred, args: tuple[Any, ...]) -> Iterator[bool]:
     """Run a Python predicate; unify each yielded tuple with the call's arguments."""
     assert p.pyfn is not None
     py_args = [to_python(a) for a in args]
@@ -38,7 +38,7 @@ def python_solutions(m: Machine, p: Pred, args: tuple[Any, ...]) -> Iterator[boo
             m.undo_to(mark)
 
 
-def _resolve_callable(m: Machine, f: Any, what: str) -> Callable[..., Any]:
+def _resolve_callable(m: Engine, f: Any, what: str) -> Callable[..., Any]:
     f = deref(f)
     if type(f) is Var:
         raise PrologInstantiationError(
@@ -58,14 +58,18 @@ def _resolve_callable(m: Machine, f: Any, what: str) -> Callable[..., Any]:
     return fn
 
 
-@det("py_fun", *range(2, 10))
-def _py_fun(m: Machine, args: tuple[Any, ...]) -> bool:
+def _py_fun(m: Engine, args: tuple[Any, ...]) -> bool:
     fn = _resolve_callable(m, args[0], "py_fun")
     result = fn(*[to_python(a) for a in args[1:-1]])
     return m.unify(args[-1], to_prolog(result))
 
 
-@det("py_pred", *range(1, 9))
-def _py_pred(m: Machine, args: tuple[Any, ...]) -> bool:
+def _py_pred(m: Engine, args: tuple[Any, ...]) -> bool:
     fn = _resolve_callable(m, args[0], "py_pred")
     return bool(fn(*[to_python(a) for a in args[1:]]))
+
+
+BUILTINS: tuple[Builtin, ...] = (
+    det("py_fun", _py_fun, *range(2, 10)),
+    det("py_pred", _py_pred, *range(1, 9)),
+)

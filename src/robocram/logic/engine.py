@@ -1,0 +1,50 @@
+"""What built-ins and control constructs need from the solver and its knowledge base.
+
+Built-ins are called with the running machine, and the machine runs against a knowledge
+base; both are described here as `Protocol`s so that the built-in modules, the control
+constructs and the machine import this file instead of each other (no import cycles).
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Callable, Iterator
+from typing import Any, Protocol
+
+from robocram.logic.operators import OperatorTable
+from robocram.logic.predicate import Key, Pred
+from robocram.logic.terms import Var
+
+__all__ = ["Database", "DetFn", "Engine", "NondetFn"]
+
+
+class Database(Protocol):
+    """The knowledge base as the machine and the database built-ins see it."""
+
+    _preds: dict[Key, Pred]
+    _ops: OperatorTable
+    _functions: dict[str, Callable[..., Any]]
+    _lock: threading.RLock
+
+    def assert_clause(self, clause: Any, front: bool = False) -> None: ...
+
+    def declare_dynamic(self, key: Key) -> None: ...
+
+    def similar_predicates(self, name: str, arity: int) -> list[str]: ...
+
+
+class Engine(Protocol):
+    """The running solver: its trail, unification, and nested solving."""
+
+    kb: Database
+    trail: list[Var]
+
+    def unify(self, a: Any, b: Any) -> bool: ...
+
+    def undo_to(self, mark: int) -> None: ...
+
+    def solve(self, goal: Any, sub: bool = False) -> Iterator[None]: ...
+
+
+DetFn = Callable[[Engine, tuple[Any, ...]], bool]
+NondetFn = Callable[[Engine, tuple[Any, ...]], Iterator[Any]]

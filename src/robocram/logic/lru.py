@@ -1,0 +1,58 @@
+"""A bounded least-recently-used cache, for generated code and compiled query texts.
+
+Caches keyed by program text grow with every distinct query or clause shape a long-lived
+process sees; the bound keeps memory flat while the working set stays hot.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections import OrderedDict
+from typing import Generic, TypeVar
+
+__all__ = ["LRUCache"]
+
+K = TypeVar("K")
+V = TypeVar("V")
+
+
+class LRUCache(Generic[K, V]):
+    """Keep at most `size` entries, dropping the least recently used first.
+
+    >>> c: LRUCache[str, int] = LRUCache(2)
+    >>> c.put("a", 1); c.put("b", 2); _ = c.get("a"); c.put("c", 3)
+    >>> sorted(c.keys())
+    ['a', 'c']
+    """
+
+    def __init__(self, size: int) -> None:
+        if size < 1:
+            raise ValueError(f"LRUCache size must be at least 1, got {size}")
+        self.size = size
+        self._items: OrderedDict[K, V] = OrderedDict()
+        self._lock = threading.Lock()  # queries on one KB may run in several threads
+
+    def get(self, key: K) -> V | None:
+        """The value for `key` (marking it recently used), or None."""
+        with self._lock:
+            items = self._items
+            value = items.get(key)
+            if value is not None:
+                items.move_to_end(key)
+            return value
+
+    def put(self, key: K, value: V) -> None:
+        """Store `value`, evicting the least recently used entry when full."""
+        with self._lock:
+            items = self._items
+            items[key] = value
+            items.move_to_end(key)
+            if len(items) > self.size:
+                items.popitem(last=False)
+
+    def keys(self) -> list[K]:
+        """The keys, least recently used first."""
+        return list(self._items)
+
+    def __len__(self) -> int:
+        return len(self._items)
