@@ -79,6 +79,8 @@ KNOWN_CYCLES: list[frozenset[str]] = [
     # World.knowledge_base imports world.predicates inside a function; predicates imports
     # World for typing (owner: world).
     frozenset({"robocram.world.predicates", "robocram.world.world"}),
+    # task imports task_listeners; task_listeners imports Task for typing (owner: execution).
+    frozenset({"robocram.execution.task", "robocram.execution.task_listeners"}),
     # robot_model imports description; description imports RobotModel for typing
     # (owner: robots).
     frozenset({"robocram.robots.description", "robocram.robots.robot_model"}),
