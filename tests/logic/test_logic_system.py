@@ -79,3 +79,10 @@ def test_generated_code_cache_is_bounded() -> None:
         assert make() == i
     assert len(_FACTORIES) == FACTORY_CACHE_SIZE
     assert _FACTORIES.get("def make():\n  return 0\n") is None  # the oldest went first
+
+
+def test_every_listed_builtin_module_table_is_installed() -> None:
+    kb = KnowledgeBase()
+    assert kb.first("number_chars(X, ['1', '2'])") == {"X": 12}
+    assert kb.first("number_codes(X, \"7\")") == {"X": 7}
+    assert len(system_predicates()) > 120  # every table counted (control + ~60 built-ins)

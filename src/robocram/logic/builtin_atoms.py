@@ -91,7 +91,6 @@ def _number_from(text: str) -> int | float:
     return value
 
 
-_chars_like("number_chars", lambda c: c, _char, _number_from)
 
 
 def _char_code(m: Engine, a: Args) -> bool:
@@ -293,6 +292,7 @@ BUILTINS: tuple[Builtin, ...] = (
     _chars_like("string_chars", lambda c: c, _char, PString),
     _chars_like("string_codes", ord, _char, PString),
     _chars_like("number_codes", ord, _char, _number_from),
+    _chars_like("number_chars", lambda c: c, _char, _number_from),
     nondet("atom_concat", _atom_concat, 3),
     det("atom_length", _atom_length, 2),
     det("string_length", _string_length, 2),
