@@ -13,8 +13,8 @@ import time
 
 from robocram.plans import pick_up
 from robocram.projection import recorded_robot, simulated_robot
+from robocram.scenes import tabletop_scene
 from robocram.tf import Pose, PoseStamped
-from robocram.world.tabletop_scene import tabletop_scene
 
 
 def per_robot(runs: int) -> None:

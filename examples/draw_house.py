@@ -8,8 +8,7 @@ navigation process module executes by stepping the simulator.
 from __future__ import annotations
 
 from robocram.designators import an
-from robocram.execution.perform import perform
-from robocram.execution.top_level import run_top_level
+from robocram.execution import perform, run_top_level
 from robocram.turtlesim import TurtleWorld, turtle_environment
 
 

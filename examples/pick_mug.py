@@ -13,7 +13,7 @@ import numpy as np
 
 from robocram.plans import pick_up
 from robocram.projection import simulated_robot
-from robocram.world.tabletop_scene import tabletop_scene
+from robocram.scenes import tabletop_scene
 
 
 def main(robot: str = "pr2") -> None:

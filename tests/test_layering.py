@@ -18,6 +18,7 @@ ALLOWED: dict[str, set[str]] = {
     "execution": {"designators", "logic", "tf"},
     "world": {"robots", "logic", "tf"},
     "kinematics": {"robots", "tf"},
+    "scenes": {"world", "kinematics", "robots", "tf"},
     "projection": {"world", "kinematics", "execution", "designators", "robots", "logic", "tf"},
     "turtlesim": {"execution", "designators", "logic", "tf"},
     "plans": {"execution", "designators", "logic", "tf"},

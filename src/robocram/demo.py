@@ -11,10 +11,9 @@ import time
 from pathlib import Path
 
 from robocram.plans import pick_up
-from robocram.projection import simulated_robot
-from robocram.projection.neck import looking_orientation
+from robocram.projection import looking_orientation, simulated_robot
+from robocram.scenes import tabletop_scene
 from robocram.tf import Pose
-from robocram.world.tabletop_scene import tabletop_scene
 
 VIEW_FROM = (2.3, 1.7, 1.9)  # [m] in map, where the picture is taken from
 VIEW_AT = (0.5, -0.1, 0.7)  # [m] in map, what it looks at

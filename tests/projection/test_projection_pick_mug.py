@@ -13,9 +13,9 @@ from robocram.logic import KnowledgeBase, using_kb
 from robocram.plans import PlanSetupError, pick_up
 from robocram.plans.pick_up import LIFT
 from robocram.projection import recorded_robot, simulated_robot
+from robocram.scenes import tabletop_scene
 from robocram.tf import Pose, PoseStamped
 from robocram.world import World
-from robocram.world.tabletop_scene import tabletop_scene
 
 POSITION_TOL = 0.01  # [m]
 ANGLE_TOL = 0.05  # [rad]

@@ -7,6 +7,7 @@ runs the same plans without physics, only logging commands.
 """
 
 from robocram.projection.errors import ProjectionError
+from robocram.projection.neck import looking_orientation
 from robocram.projection.perception import PerceivedObject
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.projection.recording import (
@@ -28,6 +29,7 @@ __all__ = [
     "RecordingRun",
     "SimulatedRun",
     "WorldFrames",
+    "looking_orientation",
     "projection_environment",
     "recorded_robot",
     "recording_environment",

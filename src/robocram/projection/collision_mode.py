@@ -10,8 +10,6 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 
-import pybullet
-
 from robocram.projection.errors import ProjectionError
 from robocram.projection.projected_robot import ProjectedRobot
 
@@ -45,7 +43,7 @@ def colliding_objects(
     robot: ProjectedRobot, joints: Mapping[str, float], allowed_links: set[str]
 ) -> list[str]:
     """Objects the robot would touch at ``joints`` with links other than ``allowed_links``."""
-    world, body = robot.world, robot.body
+    world = robot.world
     model = robot.description.model
     assert model is not None  # loaded descriptions carry their model
     before = {
@@ -56,15 +54,12 @@ def colliding_objects(
     world.set_joint_states(robot.name, dict(joints))
     try:
         held = set(world.attachments(robot.name))
-        allowed = {body.link_index[link] for link in allowed_links if link in body.link_index}
         hits = []
         for obj in world.objects():
-            if obj is body or obj.name in held or obj.type == "floor":
+            if obj.name == robot.name or obj.name in held or obj.type == "floor":
                 continue
-            points = pybullet.getClosestPoints(
-                body.body_id, obj.body_id, CONTACT_DISTANCE, physicsClientId=world.client
-            )
-            if any(point[3] not in allowed for point in points):
+            points = world.contact_points(robot.name, obj, distance=CONTACT_DISTANCE)
+            if any(point.link_a not in allowed_links for point in points):
                 hits.append(obj.name)
         return hits
     finally:

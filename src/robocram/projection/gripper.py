@@ -13,8 +13,6 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-import pybullet
-
 from robocram.execution.failures import GripperClosedCompletely, GripperGoalNotReached
 from robocram.projection.errors import ProjectionError
 from robocram.projection.projected_robot import ProjectedRobot
@@ -93,14 +91,10 @@ def release(robot: ProjectedRobot, arm: str) -> list[str]:
 
 def _penetration(robot: ProjectedRobot, links: Iterable[str], obj: WorldObject) -> float:
     """Smallest signed distance [m] between ``links`` and ``obj`` (< 0: penetrating)."""
-    world, body = robot.world, robot.body
     best = GRIP_DEPTH
     for link in links:
-        points = pybullet.getClosestPoints(
-            body.body_id, obj.body_id, GRIP_DEPTH, linkIndexA=body.link_index[link],
-            physicsClientId=world.client,
-        )  # fmt: skip
-        best = min([best, *(p[8] for p in points)])
+        points = robot.world.contact_points(robot.name, obj, link_a=link, distance=GRIP_DEPTH)
+        best = min([best, *(p.distance for p in points)])
     return best
 
 

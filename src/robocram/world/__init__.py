@@ -4,6 +4,7 @@ from robocram.world.attachment import Attachment
 from robocram.world.body_spec import MeshSpec, ShapeSpec, UrdfSpec
 from robocram.world.camera import Camera
 from robocram.world.catalogue import catalogue_names
+from robocram.world.contact_point import ContactPoint
 from robocram.world.errors import (
     DuplicateObjectError,
     NoCameraError,
@@ -26,6 +27,7 @@ __all__ = [
     "Attachment",
     "Camera",
     "ClampedJoint",
+    "ContactPoint",
     "DuplicateObjectError",
     "JointLimits",
     "MeshSpec",

@@ -10,6 +10,8 @@ from collections.abc import Iterable
 
 import pybullet
 
+from robocram.world.contact_point import ContactPoint
+from robocram.world.errors import UnknownLinkError
 from robocram.world.world_core import WorldCore
 from robocram.world.world_object import WorldObject
 
@@ -22,17 +24,65 @@ def _carried_with(world: WorldCore, obj: WorldObject) -> set[str]:
     changed = True
     while changed:
         changed = False
-        for att in world._attachments.values():
+        for att in world.all_attachments():
             if (att.obj in group) != (att.robot in group):
                 group |= {att.obj, att.robot}
                 changed = True
     return group
 
 
+def _link_names(obj: WorldObject) -> dict[int, str]:
+    """pybullet link index -> link name (the first name of each index)."""
+    names: dict[int, str] = {}
+    for name, index in obj.link_index.items():
+        names.setdefault(index, name)
+    names.setdefault(-1, obj.name)  # single-shape bodies: the base is the object itself
+    return names
+
+
+def _index(obj: WorldObject, link: str) -> int:
+    index = obj.link_index.get(link)
+    if index is None:
+        raise UnknownLinkError(obj.name, link, obj.link_index)
+    return index
+
+
+def closest_points(
+    world: WorldCore,
+    a: WorldObject,
+    b: WorldObject,
+    distance: float,
+    link_a: str | None = None,
+    link_b: str | None = None,
+) -> list[ContactPoint]:
+    """Closest points of ``a`` and ``b`` (or of the given links) nearer than ``distance``."""
+    filters: dict[str, int] = {}
+    if link_a is not None:
+        filters["linkIndexA"] = _index(a, link_a)
+    if link_b is not None:
+        filters["linkIndexB"] = _index(b, link_b)
+    points = pybullet.getClosestPoints(
+        a.body_id, b.body_id, distance, physicsClientId=world.client, **filters
+    )
+    names_a, names_b = _link_names(a), _link_names(b)
+    return [
+        ContactPoint(
+            a.name,
+            b.name,
+            names_a[p[3]],
+            names_b[p[4]],
+            tuple(p[5]),
+            tuple(p[6]),
+            tuple(p[7]),
+            float(p[8]),
+        )  # fmt: skip
+        for p in points or ()
+    ]
+
+
 def touching(world: WorldCore, a: WorldObject, b: WorldObject, distance: float) -> bool:
     """Whether the closest points of ``a`` and ``b`` are nearer than ``distance`` [m]."""
-    points = pybullet.getClosestPoints(a.body_id, b.body_id, distance, physicsClientId=world.client)
-    return bool(points)
+    return bool(closest_points(world, a, b, distance))
 
 
 def collisions(

@@ -16,6 +16,7 @@ import numpy as np
 import pybullet
 from numpy.typing import NDArray
 
+from robocram.tf import Vector3
 from robocram.world.camera import Camera
 from robocram.world.world_core import WorldCore
 from robocram.world.world_object import WorldObject
@@ -44,6 +45,16 @@ def aabb(world: WorldCore, obj: WorldObject) -> tuple[NDArray[np.float64], NDArr
     lows = np.array([b[0] for b in boxes])
     highs = np.array([b[1] for b in boxes])
     return lows.min(axis=0), highs.max(axis=0)
+
+
+def link_aabb(world: WorldCore, obj: WorldObject, index: int) -> tuple[Vector3, Vector3]:
+    """World axis-aligned bounds ``(lower, upper)`` [m] of link ``index`` of ``obj``."""
+    low, high = pybullet.getAABB(obj.body_id, index, physicsClientId=world.client)
+    return (float(low[0]), float(low[1]), float(low[2])), (
+        float(high[0]),
+        float(high[1]),
+        float(high[2]),
+    )
 
 
 @contextmanager

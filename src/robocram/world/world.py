@@ -21,6 +21,7 @@ from robocram.world import contacts, spatial_relations, visibility
 from robocram.world.body_spec import GREY, BodySpec, MeshSpec, Rgba, ShapeSpec, UrdfSpec
 from robocram.world.camera import Camera
 from robocram.world.catalogue import catalogue_item
+from robocram.world.contact_point import ContactPoint
 from robocram.world.errors import NoCameraError
 from robocram.world.png import write_png
 from robocram.world.ray_hit import RayHit
@@ -60,7 +61,7 @@ class World(WorldCore):
     ) -> WorldObject:  # noqa: A002
         """Add a body made from ``spec``, called ``name``, of type ``type``, at ``pose``."""
         handle = WorldObject(name, type, -1, spec)
-        self._insert(handle, pose)
+        self.insert(handle, pose)
         return handle
 
     def add_floor(self, name: str = "floor") -> WorldObject:
@@ -139,10 +140,8 @@ class World(WorldCore):
         desc = load_description(robot)
         spec = UrdfSpec(robot_urdf_file(desc), fixed_base=True)
         handle = RobotObject(name or desc.name, "robot", -1, spec, description=desc)
-        self._insert(handle, pose)
-        held = self._holds.setdefault(handle.name, {})
-        for joint in self.joint_states(handle):
-            held[handle.joint_index[joint]] = 0.0
+        self.insert(handle, pose)
+        self.set_held_joints(handle, dict.fromkeys(self.joint_states(handle), 0.0))
         self._start_within_limits(handle)
         if self._kb is not None:
             self._install_description(desc)
@@ -186,6 +185,12 @@ class World(WorldCore):
             float(high[2]),
         )
 
+    def link_aabb(self, obj: ObjectRef, link: str) -> tuple[Vector3, Vector3]:
+        """World-aligned bounds ``(lower, upper)`` [m] of one link of ``obj``."""
+        handle = self.object(obj)
+        low, high = visibility.link_aabb(self, handle, self._link_index(handle, link))
+        return (low[0], low[1], low[2]), (high[0], high[1], high[2])
+
     def collisions(
         self, obj: ObjectRef, ignore: Iterable[ObjectRef] = (), distance: float = 0.002
     ) -> list[WorldObject]:
@@ -206,6 +211,28 @@ class World(WorldCore):
         """
         skip = list(ignore) + (self.objects(type="floor") if ignore_floor else [])
         return bool(self.collisions(obj, skip))
+
+    def contact_points(
+        self,
+        a: ObjectRef,
+        b: ObjectRef | None = None,
+        link_a: str | None = None,
+        link_b: str | None = None,
+        distance: float = 0.0,
+    ) -> list[ContactPoint]:
+        """Points where ``a`` (or its ``link_a``) comes within ``distance`` [m] of ``b``.
+
+        ``b`` None means every other object. ``distance`` 0 gives touching and penetrating
+        points; a larger one also gives near misses (``ContactPoint.distance`` > 0).
+        Attachments are not skipped here: this is the raw geometry.
+        """
+        first = self.object(a)
+        others = [self.object(b)] if b is not None else [o for o in self if o is not first]
+        return [
+            point
+            for other in others
+            for point in contacts.closest_points(self, first, other, distance, link_a, link_b)
+        ]
 
     def contact(self, a: ObjectRef, b: ObjectRef) -> bool:
         """Whether ``a`` and ``b`` touch (within 2 mm)."""

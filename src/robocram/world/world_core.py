@@ -7,7 +7,7 @@
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterable, Iterator, Mapping
 
 import pybullet
 
@@ -72,8 +72,11 @@ class WorldCore:
             raise WorldClosedError()
         return self.client
 
-    def _insert(self, handle: WorldObject, pose: PoseLike = ORIGIN) -> None:
-        """Create ``handle``'s body from its spec, index it and place it at ``pose``."""
+    def insert(self, handle: WorldObject, pose: PoseLike = ORIGIN) -> WorldObject:
+        """Create ``handle``'s body from its spec, index it, place it at ``pose``; return it.
+
+        The handle may be one removed earlier: it gets a new body and keeps its identity.
+        """
         if handle.name in self._objects:
             raise DuplicateObjectError(handle.name)
         cid = self._cid()
@@ -92,6 +95,7 @@ class WorldCore:
         if handle.joint_index:
             self._holds[handle.name] = {}
         self.set_pose(handle, pose)
+        return handle
 
     def object(self, name: ObjectRef) -> WorldObject:
         """The object called ``name`` (a handle is checked to still belong to this world)."""
@@ -270,6 +274,33 @@ class WorldCore:
         handle = self.object(obj)
         if self._attachments.pop(handle.name, None) is None:
             raise ValueError(f"{handle.name!r} is not attached to anything")
+
+    def all_attachments(self) -> list[Attachment]:
+        """Every attachment of the world, in the order they were made."""
+        return list(self._attachments.values())
+
+    def set_attachments(self, attachments: Iterable[Attachment]) -> None:
+        """Replace every attachment by ``attachments`` (kept relative poses, nothing moves)."""
+        new: dict[str, Attachment] = {}
+        for att in attachments:
+            self._link_index(self.object(att.robot), att.link)
+            new[self.object(att.obj).name] = att
+        self._attachments = new
+
+    def held_joints(self, obj: ObjectRef) -> dict[str, float]:
+        """The joint values [rad | m] that simulation holds ``obj``'s joints at, by name."""
+        handle = self.object(obj)
+        names = {i: n for n, i in handle.joint_index.items()}
+        return {names[i]: v for i, v in self._holds.get(handle.name, {}).items()}
+
+    def set_held_joints(self, obj: ObjectRef, values: Mapping[str, float]) -> None:
+        """Hold exactly ``values`` (joint name -> [rad | m]) from now on; nothing moves now."""
+        handle = self.object(obj)
+        movable = set(self._movable_names(handle))
+        for name in values:
+            if name not in movable:
+                self._movable_index(handle, name)  # raises the typed error naming it
+        self._holds[handle.name] = {handle.joint_index[n]: float(v) for n, v in values.items()}
 
     def attachments(self, robot: ObjectRef) -> dict[str, str]:
         """Objects attached to ``robot``: object name -> link name."""

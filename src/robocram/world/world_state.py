@@ -32,7 +32,7 @@ class WorldState:
     handles: tuple[WorldObject, ...]
     bodies: tuple[BodyState, ...]
     attachments: tuple[Attachment, ...]
-    holds: tuple[tuple[str, tuple[tuple[int, float], ...]], ...]
+    holds: tuple[tuple[str, tuple[tuple[str, float], ...]], ...]  # object -> held joints
     time: float
 
     @classmethod
@@ -42,8 +42,8 @@ class WorldState:
         return cls(
             handles=handles,
             bodies=tuple(_body_state(world.client, h.body_id) for h in handles),
-            attachments=tuple(world._attachments.values()),
-            holds=tuple((name, tuple(held.items())) for name, held in world._holds.items()),
+            attachments=tuple(world.all_attachments()),
+            holds=tuple((h.name, tuple(world.held_joints(h).items())) for h in handles),
             time=world.time,
         )
 
@@ -55,13 +55,13 @@ class WorldState:
                 world.remove(obj)
         for handle in self.handles:
             if handle.name not in world:
-                world._insert(handle)
+                world.insert(handle)
         self._apply(world)
 
     def recreate(self, world: WorldCore) -> None:
         """Fill an empty ``world`` (another client) with new handles in this state."""
         for handle in self.handles:
-            world._insert(_clone(handle))
+            world.insert(_clone(handle))
         self._apply(world)
 
     def _apply(self, world: WorldCore) -> None:
@@ -72,8 +72,9 @@ class WorldState:
             pybullet.resetBaseVelocity(target, *body.velocity, physicsClientId=cid)
             for index, position, velocity in body.joints:
                 pybullet.resetJointState(target, index, position, velocity, physicsClientId=cid)
-        world._attachments = {a.obj: a for a in self.attachments}
-        world._holds = {name: dict(held) for name, held in self.holds}
+        world.set_attachments(self.attachments)
+        for name, held in self.holds:
+            world.set_held_joints(name, dict(held))
         world.time = self.time
 
 

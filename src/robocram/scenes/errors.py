@@ -1,0 +1,16 @@
+"""The scenes' exceptions: one root, each naming the robot and what it lacks."""
+
+from __future__ import annotations
+
+
+class SceneError(Exception):
+    """Root of every error raised by :mod:`robocram.scenes`."""
+
+
+class UnfitRobotError(SceneError):
+    """The robot's description lacks what the scene needs (a gripper arm, enough reach)."""
+
+    def __init__(self, robot: str, why: str) -> None:
+        self.robot = robot
+        self.why = why
+        super().__init__(f"cannot build the scene for {robot!r}: {why}")

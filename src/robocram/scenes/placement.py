@@ -1,0 +1,130 @@
+"""Where a table and a mug go for a robot, worked out from its description alone.
+
+Nothing is keyed on robot names, so a new robot gets a scene too. The rules:
+
+- the arm is the right-most arm with a gripper (smallest shoulder y);
+- the mug lies ahead of that arm's shoulder; if the arm pans (its first joint turns about
+  the vertical), only :data:`SIDE_SHARE` of the shoulder's y out from the robot's
+  mid-plane, so it is not hidden under an arm stretched forward; else in the arm's plane;
+- the table top sits so that, with the torso half raised, the wrist is
+  :data:`WRIST_BELOW_SHOULDER` below the shoulder when the hand grasps the mug from above;
+- the mug lies :data:`REACH_SHARE` of the arm's stretched length ahead of the shoulder,
+  or further if needed for the table's front edge to clear the robot's base footprint
+  (its links fixed to the root) by :data:`TABLE_GAP`, the mug :data:`MUG_INSET` behind it;
+- the shoulder must reach the wrist's grasp position, else the robot is unfit.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from robocram.kinematics import forward_kinematics
+from robocram.robots import ArmDescription, RobotDescription
+from robocram.scenes.errors import UnfitRobotError
+from robocram.tf import Pose, Vector3
+from robocram.world import World
+
+GRASP_HEIGHT = 0.05  # [m] above the mug's bottom, where a top grasp holds it
+WRIST_BELOW_SHOULDER = 0.10  # [m] at the grasp, with the torso half raised
+TABLE_GAP = 0.15  # [m] between the base footprint and the table's front edge
+MUG_INSET = 0.10  # [m] from the table's front edge to the mug
+REACH_SHARE = 0.65  # of the arm's stretched length: the mug's x distance from the shoulder
+TABLE_DEPTH = 0.6  # [m] along x
+SIDE_SHARE = 0.8  # of the shoulder's y: the mug's y, a little inside the arm's line
+PAN_VERTICAL = 0.9  # |z| of a first joint's unit axis above which the arm can pan
+
+
+@dataclass(frozen=True)
+class TabletopPlacement:
+    """The table's height and the mug's position for one robot standing at the origin."""
+
+    arm: str
+    table_height: float  # [m]
+    mug_xy: tuple[float, float]  # [m] in map
+
+    @property
+    def table_x(self) -> float:
+        """The table centre's x [m] in map."""
+        return self.mug_xy[0] - MUG_INSET + TABLE_DEPTH / 2
+
+
+def _joints_for_torso(desc: RobotDescription) -> dict[str, float]:
+    model = desc.model
+    if desc.torso_joint is None or model is None:
+        return {}
+    joint = model.joints[desc.torso_joint]
+    if joint.lower is None or joint.upper is None or not math.isfinite(joint.upper - joint.lower):
+        return {}
+    return {desc.torso_joint: (joint.lower + joint.upper) / 2}
+
+
+def _shoulder(desc: RobotDescription, arm: ArmDescription, torso: dict[str, float]) -> Vector3:
+    assert desc.model is not None  # loaded descriptions carry their model
+    first = desc.model.joints[arm.joints[0]]
+    return forward_kinematics(desc, torso, first.child).position
+
+
+def _pans(desc: RobotDescription, arm: ArmDescription, torso: dict[str, float]) -> bool:
+    """Whether the arm's first joint turns about the vertical (it can swing sideways)."""
+    assert desc.model is not None
+    first = desc.model.joints[arm.joints[0]]
+    frame = forward_kinematics(desc, torso, first.child)
+    axis = (Pose(orientation=frame.orientation) * Pose(first.axis)).position
+    return abs(axis[2]) > PAN_VERTICAL
+
+
+def _arm_length(desc: RobotDescription, arm: ArmDescription, torso: dict[str, float]) -> float:
+    """Shoulder-to-wrist length [m] along the chain, stretched out (joints at zero)."""
+    assert desc.model is not None
+    links = [desc.model.joints[j].child for j in arm.joints] + [arm.end_effector_link]
+    points = [forward_kinematics(desc, torso, link).position for link in links]
+    return sum(math.dist(p, q) for p, q in zip(points, points[1:], strict=False))
+
+
+def _hand_length(desc: RobotDescription, arm: ArmDescription) -> float:
+    """Wrist-to-tool-frame distance [m]: how far above the grasp the wrist stays."""
+    wrist = forward_kinematics(desc, {}, arm.end_effector_link)
+    tool = forward_kinematics(desc, {}, arm.tool_frame)
+    return math.dist((0.0, 0.0, 0.0), (wrist.inverse() * tool).position)
+
+
+def _footprint_front(world: World, robot: str, below: float) -> float:
+    """Foremost x [m] of the robot's links fixed to its root and reaching below ``below``."""
+    desc = world.robot(robot).description
+    assert desc.model is not None
+    fixed = {desc.model.root_link}
+    for joint in desc.model.joints.values():  # URDF order lists parents before children
+        if joint.type == "fixed" and joint.parent in fixed:
+            fixed.add(joint.child)
+    front = 0.0
+    for link in sorted(fixed & set(world.link_names(robot))):
+        low, high = world.link_aabb(robot, link)
+        if low[0] <= high[0] and low[2] < below:
+            front = max(front, high[0])
+    return front
+
+
+def tabletop_placement(world: World, robot: str) -> TabletopPlacement:
+    """The table and mug placement for ``robot`` (already in ``world`` at the origin)."""
+    desc = world.robot(robot).description
+    arms = [a for a in desc.arms.values() if a.gripper_joints and a.joints]
+    if not arms:
+        raise UnfitRobotError(robot, "it has no arm with gripper joints to pick the mug with")
+    torso = _joints_for_torso(desc)
+    arm = min(arms, key=lambda a: (_shoulder(desc, a, torso)[1], a.name))
+    shoulder = _shoulder(desc, arm, torso)
+    wrist_z = shoulder[2] - WRIST_BELOW_SHOULDER
+    table_height = wrist_z - _hand_length(desc, arm) - GRASP_HEIGHT
+    reach = _arm_length(desc, arm, torso)
+    past_base = _footprint_front(world, robot, table_height) + TABLE_GAP + MUG_INSET
+    mug_x = max(past_base, shoulder[0] + REACH_SHARE * reach)
+    needed = math.dist(shoulder, (mug_x, shoulder[1], wrist_z))
+    if table_height <= 0 or needed > reach:
+        raise UnfitRobotError(
+            robot,
+            f"its {arm.name} arm reaches {reach:.2f} m but the mug in front of its base "
+            f"is {needed:.2f} m from the shoulder (table height {table_height:.2f} m)",
+        )
+    side = SIDE_SHARE if _pans(desc, arm, torso) else 1.0
+    return TabletopPlacement(arm.name, table_height, (mug_x, side * shoulder[1]))

@@ -1,0 +1,42 @@
+"""A small tabletop scene: a robot, a table with a mug it can pick from above, a bottle.
+
+Used by the demo, the pick-up example and the projection tests. The placement is worked
+out from the robot's description (:mod:`robocram.scenes.placement`), so any robot with a
+gripper arm gets a scene; the plan that runs in it is the same for all.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from robocram.robots import RobotDescription, load_description
+from robocram.scenes.placement import TABLE_DEPTH, tabletop_placement
+from robocram.tf import Pose, PoseStamped
+from robocram.world import World
+
+
+@dataclass(frozen=True)
+class TabletopScene:
+    """A robot and a table with a mug, and the point on the table to look at (map)."""
+
+    world: World
+    robot: str
+    look_target: PoseStamped
+
+
+def tabletop_scene(robot: str | RobotDescription, world: World | None = None) -> TabletopScene:
+    """Floor, ``robot`` at the origin, a table with a mug and a bottle in front of it.
+
+    Raises:
+        UnfitRobotError: the robot has no gripper arm, or it cannot reach past its base.
+    """
+    desc = load_description(robot)
+    world = world if world is not None else World()
+    world.add_floor()
+    name = world.add_robot(desc, pose=Pose((0.0, 0.0, 0.0))).name
+    place = tabletop_placement(world, name)
+    height, (mug_x, mug_y), table_x = place.table_height, place.mug_xy, place.table_x
+    world.add_box("table", (TABLE_DEPTH, 1.0, height), pose=Pose((table_x, 0.0, height / 2)))
+    world.add_item("mug-1", "mug", pose=Pose((mug_x, mug_y, height)))
+    world.add_item("bottle-1", "bottle", pose=Pose((table_x + 0.15, 0.3, height + 0.125)))
+    return TabletopScene(world, name, PoseStamped("map", (mug_x, mug_y, height)))
