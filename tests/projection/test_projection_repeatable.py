@@ -13,7 +13,7 @@ import pytest
 from robocram.kinematics import IKResult, forward_kinematics, solve_ik
 from robocram.plans import pick_up
 from robocram.projection import simulated_robot
-from robocram.world.tabletop_scene import tabletop_scene
+from robocram.scenes import tabletop_scene
 
 BUSY_SECONDS = 120  # [s] a burner's own bound, should the test be interrupted before its kill
 BURNER = f"import time\nend = time.monotonic() + {BUSY_SECONDS}\nwhile time.monotonic() < end: pass"
