@@ -91,8 +91,6 @@ def _number_from(text: str) -> int | float:
     return value
 
 
-
-
 def _char_code(m: Engine, a: Args) -> bool:
     if _bound(a[0]):
         return m.unify(a[1], ord(text_of(a[0], "char_code/2")))
