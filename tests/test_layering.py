@@ -22,6 +22,7 @@ ALLOWED: dict[str, set[str]] = {
     "projection": {"world", "kinematics", "execution", "designators", "robots", "logic", "tf"},
     "turtlesim": {"execution", "designators", "logic", "tf"},
     "plans": {"execution", "designators", "logic", "tf"},
+    "traces": {"world", "execution", "designators", "robots", "logic", "tf"},
 }
 
 

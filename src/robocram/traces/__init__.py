@@ -1,0 +1,63 @@
+"""Execution traces: every top-level run's task tree and world states, kept in SQLite.
+
+``with trace_to("runs.db", world=world):`` writes each task as it starts and ends, and the
+world's state after every motion, so a run can be queried, exported and replayed later.
+Several processes may append to one file (WAL mode, one writer at a time).
+"""
+
+from robocram.traces.database import TraceDatabase
+from robocram.traces.errors import (
+    NotATraceDatabase,
+    NoWorldState,
+    SchemaVersionMismatch,
+    TraceError,
+    UnknownRun,
+)
+from robocram.traces.queries import (
+    DurationStats,
+    FailureRecord,
+    RunSummary,
+    designator_properties,
+    durations,
+    failure_counts,
+    failures,
+    require_run,
+    run_ids,
+    runs,
+    task_tree,
+    world_state_at,
+    world_state_times,
+)
+from robocram.traces.schema import SCHEMA_VERSION
+from robocram.traces.tracer import TRACE_ENV, Tracer, trace_from_environment, trace_to
+from robocram.traces.world_record import StoredWorldState, build_scene, scene_of
+
+__all__ = [
+    "SCHEMA_VERSION",
+    "TRACE_ENV",
+    "DurationStats",
+    "FailureRecord",
+    "NoWorldState",
+    "NotATraceDatabase",
+    "RunSummary",
+    "SchemaVersionMismatch",
+    "StoredWorldState",
+    "TraceDatabase",
+    "TraceError",
+    "Tracer",
+    "UnknownRun",
+    "build_scene",
+    "designator_properties",
+    "durations",
+    "failure_counts",
+    "failures",
+    "require_run",
+    "run_ids",
+    "runs",
+    "scene_of",
+    "task_tree",
+    "trace_from_environment",
+    "trace_to",
+    "world_state_at",
+    "world_state_times",
+]

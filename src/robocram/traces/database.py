@@ -1,0 +1,104 @@
+"""Opening a trace database: SQLite in WAL mode, one writer at a time, schema checked.
+
+WAL lets readers (a viewer, ``robocram runs``) read while a plan writes, and lets several
+processes append runs to one file: each write transaction starts with ``BEGIN IMMEDIATE``,
+so writers queue on SQLite's lock (``busy_timeout``) instead of failing half-way.
+Within a process one lock serialises the writers of all threads.
+"""
+
+from __future__ import annotations
+
+import sqlite3
+import threading
+from collections.abc import Iterator
+from contextlib import contextmanager
+from pathlib import Path
+from typing import Any
+
+from sqlalchemy import create_engine, event, inspect, select
+from sqlalchemy.exc import DatabaseError, OperationalError
+from sqlalchemy.orm import Session
+
+from robocram.traces.errors import NotATraceDatabase, SchemaVersionMismatch, TraceError
+from robocram.traces.schema import SCHEMA_VERSION, Base, SchemaInfo
+
+BUSY_TIMEOUT = 60_000  # [ms] a writer waits this long for another process's transaction
+_WRITE = "robocram_write"
+
+
+class TraceDatabase:
+    """An open trace database file; thread-safe; ``close()`` it (or use ``with``)."""
+
+    def __init__(self, path: str | Path, create: bool = True) -> None:
+        self.path = Path(path)
+        if not create and not self.path.exists():
+            raise TraceError(f"no trace database at {self.path}; record one with trace_to(path)")
+        self.path.parent.mkdir(parents=True, exist_ok=True)
+        self.engine = create_engine(f"sqlite:///{self.path}")
+        event.listen(self.engine, "connect", _configure_connection)
+        event.listen(self.engine, "begin", _begin)
+        self._writer = self.engine.execution_options(**{_WRITE: True})
+        self._lock = threading.Lock()
+        try:
+            self._check_schema(create)
+        except BaseException:
+            self.engine.dispose()
+            raise
+
+    def _check_schema(self, create: bool) -> None:
+        try:
+            with self.write() as session:
+                tables = set(inspect(session.connection()).get_table_names())
+                if not tables and create:
+                    Base.metadata.create_all(session.connection())
+                    session.add(SchemaInfo(version=SCHEMA_VERSION))
+                    return
+                version = (
+                    session.scalar(select(SchemaInfo.version)) if "schema_info" in tables else None
+                )
+        except DatabaseError as err:
+            if isinstance(err, OperationalError) and "locked" in str(err):
+                raise TraceError(f"{self.path} stayed locked by another writer") from err
+            raise NotATraceDatabase(self.path, str(err.orig)) from err
+        if version != SCHEMA_VERSION:
+            raise SchemaVersionMismatch(self.path, version, SCHEMA_VERSION)
+
+    @contextmanager
+    def write(self) -> Iterator[Session]:
+        """One write transaction (committed on leaving, rolled back on an error)."""
+        with self._lock, Session(self._writer, expire_on_commit=False) as session, session.begin():
+            yield session
+
+    @contextmanager
+    def read(self) -> Iterator[Session]:
+        """A read-only session seeing one consistent snapshot of the file."""
+        with Session(self.engine, expire_on_commit=False) as session, session.begin():
+            yield session
+
+    def close(self) -> None:
+        """Release the file's connections."""
+        self.engine.dispose()
+
+    def __enter__(self) -> TraceDatabase:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    def __repr__(self) -> str:
+        return f"TraceDatabase({str(self.path)!r})"
+
+
+def _configure_connection(dbapi_connection: sqlite3.Connection, _record: Any) -> None:
+    dbapi_connection.isolation_level = None  # transactions are begun in _begin, explicitly
+    cursor = dbapi_connection.cursor()
+    cursor.execute(f"PRAGMA busy_timeout = {BUSY_TIMEOUT}")
+    cursor.execute("PRAGMA journal_mode = WAL")
+    cursor.execute("PRAGMA synchronous = NORMAL")  # WAL + NORMAL: commits survive a crash
+    cursor.execute("PRAGMA foreign_keys = ON")
+    cursor.close()
+
+
+def _begin(connection: Any) -> None:
+    writing = connection.get_execution_options().get(_WRITE, False)
+    connection.exec_driver_sql("BEGIN IMMEDIATE" if writing else "BEGIN")

@@ -1,0 +1,56 @@
+"""Errors of the trace store: one root, each naming the culprit and the fix."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from pathlib import Path
+
+
+class TraceError(Exception):
+    """Root of every trace-store error."""
+
+
+class NotATraceDatabase(TraceError):  # noqa: N818 - reads as what the file is
+    """The file exists but is not an SQLite database (or is damaged)."""
+
+    def __init__(self, path: Path, reason: str) -> None:
+        super().__init__(
+            f"{path} is not an SQLite trace database ({reason}); pass a file written by "
+            "trace_to(...) or a new path to create one"
+        )
+        self.path = path
+
+
+class SchemaVersionMismatch(TraceError):  # noqa: N818
+    """The database was written with another trace schema version."""
+
+    def __init__(self, path: Path, found: int | None, expected: int) -> None:
+        what = "no robocram trace schema" if found is None else f"schema version {found}"
+        super().__init__(
+            f"{path} has {what}, this robocram reads version {expected}; "
+            "record the run again with this version or use a new database file"
+        )
+        self.path, self.found, self.expected = path, found, expected
+
+
+class UnknownRun(TraceError):  # noqa: N818
+    """A run id that the database does not hold."""
+
+    def __init__(self, path: Path, run: int, known: Sequence[int]) -> None:
+        shown = ", ".join(map(str, known[:20])) + (" ..." if len(known) > 20 else "")
+        super().__init__(
+            f"{path} has no run {run}; runs stored: {shown or 'none'} "
+            "(list them with `robocram runs list DB`)"
+        )
+        self.path, self.run, self.known = path, run, list(known)
+
+
+class NoWorldState(TraceError):  # noqa: N818
+    """A run with no world state stored at or before the time asked for."""
+
+    def __init__(self, run: int, time: float) -> None:
+        super().__init__(
+            f"run {run} has no world state at or before t={time:.6f} s; trace with "
+            "trace_to(db, world=world) to store world states at motion boundaries"
+        )
+        self.run, self.time = run, time

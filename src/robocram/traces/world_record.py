@@ -1,0 +1,170 @@
+"""World states and scenes as the trace store keeps them, and back again.
+
+A :class:`StoredWorldState` is what a motion leaves behind: every object's root pose, the
+joint positions of articulated bodies and the attachments. A scene is the list of body
+recipes (robots by description name, shapes, meshes, URDFs) from which a replay rebuilds
+the world in a fresh physics client.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from sqlalchemy import insert, select
+from sqlalchemy.orm import Session
+
+from robocram.tf import Pose
+from robocram.traces.errors import TraceError
+from robocram.traces.schema import AttachmentRow, JointPositionRow, ObjectPoseRow, WorldStateRow
+from robocram.world import Attachment, MeshSpec, RobotObject, ShapeSpec, UrdfSpec, World
+
+
+@dataclass(frozen=True)
+class StoredWorldState:
+    """Object poses (map), joint positions and attachments of a world at one moment."""
+
+    time: float  # [s] since the epoch
+    sim_time: float  # [s] simulated
+    poses: dict[str, Pose]
+    joints: dict[str, dict[str, float]]  # object -> joint -> [rad] or [m]
+    attachments: tuple[Attachment, ...]
+
+    @classmethod
+    def capture(cls, world: World, time: float) -> StoredWorldState:
+        """Read the state of ``world`` now; ``time`` [s since the epoch] stamps it."""
+        objects = world.objects()
+        attached = (world.attached_to(obj) for obj in objects)
+        return cls(
+            time=time,
+            sim_time=world.time,
+            poses={obj.name: world.pose(obj) for obj in objects},
+            joints={obj.name: js for obj in objects if (js := world.joint_states(obj))},
+            attachments=tuple(a for a in attached if a is not None),
+        )
+
+    def apply(self, world: World) -> None:
+        """Put ``world`` (holding the same objects) into this state."""
+        missing = sorted(set(self.poses) - {obj.name for obj in world.objects()})
+        if missing:
+            raise TraceError(f"the world has no objects {missing}; replay into the run's scene")
+        for obj in world.objects():
+            if world.attached_to(obj) is not None:
+                world.detach(obj)
+        for name, pose in self.poses.items():
+            world.set_pose(name, pose)
+        for name, joints in self.joints.items():
+            _set_joints(world, name, joints)
+        for att in self.attachments:
+            world.attach(att.obj, att.robot, att.link)
+
+
+def _set_joints(world: World, name: str, joints: dict[str, float]) -> None:
+    """Set masters first, then mimic followers alone, so both keep their stored values."""
+    handle = world.object(name)
+    model = handle.description.model if isinstance(handle, RobotObject) else None
+    followers = {
+        j for j in joints if model is not None and j in model.joints and model.joints[j].mimic
+    }
+    world.set_joint_states(name, {j: v for j, v in joints.items() if j not in followers})
+    if followers:
+        world.set_joint_states(name, {j: joints[j] for j in followers})
+
+
+def insert_world_state(
+    session: Session, run_id: int, task_id: int | None, state: StoredWorldState
+) -> int:
+    """Add ``state`` to the run; return the new state's id."""
+    row = WorldStateRow(run_id=run_id, task_id=task_id, time=state.time, sim_time=state.sim_time)
+    session.add(row)
+    session.flush()
+    poses = [{"state_id": row.id, "object": n, **_pose_fields(p)} for n, p in state.poses.items()]
+    session.execute(insert(ObjectPoseRow), poses)
+    joints = [
+        {"state_id": row.id, "object": obj, "joint": joint, "position": value}
+        for obj, values in state.joints.items()
+        for joint, value in values.items()
+    ]
+    if joints:
+        session.execute(insert(JointPositionRow), joints)
+    if state.attachments:
+        session.execute(
+            insert(AttachmentRow),
+            [
+                {"state_id": row.id, "object": a.obj, "robot": a.robot, "link": a.link}
+                | _pose_fields(a.link_T_obj)
+                for a in state.attachments
+            ],
+        )
+    return row.id
+
+
+def load_world_state(session: Session, state_id: int) -> StoredWorldState:
+    """Read the stored state ``state_id``."""
+    row = session.get_one(WorldStateRow, state_id)
+    poses = session.scalars(select(ObjectPoseRow).where(ObjectPoseRow.state_id == state_id))
+    joints: dict[str, dict[str, float]] = {}
+    for j in session.scalars(select(JointPositionRow).where(JointPositionRow.state_id == state_id)):
+        joints.setdefault(j.object, {})[j.joint] = j.position
+    attachments = session.scalars(select(AttachmentRow).where(AttachmentRow.state_id == state_id))
+    return StoredWorldState(
+        time=row.time,
+        sim_time=row.sim_time,
+        poses={p.object: _pose_of(p) for p in poses},
+        joints=joints,
+        attachments=tuple(Attachment(a.object, a.robot, a.link, _pose_of(a)) for a in attachments),
+    )
+
+
+def _pose_fields(pose: Pose) -> dict[str, float]:
+    (x, y, z), (qx, qy, qz, qw) = pose.position, pose.orientation
+    return {"x": x, "y": y, "z": z, "qx": qx, "qy": qy, "qz": qz, "qw": qw}
+
+
+def _pose_of(row: ObjectPoseRow | AttachmentRow) -> Pose:
+    return Pose((row.x, row.y, row.z), (row.qx, row.qy, row.qz, row.qw))
+
+
+def scene_of(world: World) -> str:
+    """The recipes of the world's bodies as JSON text, in insertion order."""
+    return json.dumps([_body_recipe(obj) for obj in world.objects()])
+
+
+def _body_recipe(obj: Any) -> dict[str, Any]:
+    recipe: dict[str, Any] = {"name": obj.name, "type": obj.type}
+    spec = obj.spec
+    if isinstance(obj, RobotObject):
+        recipe["robot"] = obj.description.name
+    elif isinstance(spec, ShapeSpec):
+        recipe["shape"] = {"shape": spec.shape, "size": spec.size, "mass": spec.mass}
+        recipe["shape"]["color"] = spec.color
+    elif isinstance(spec, MeshSpec):
+        recipe["mesh"] = {"path": str(spec.path), "scale": spec.scale, "mass": spec.mass}
+        recipe["mesh"]["color"] = spec.color
+    elif isinstance(spec, UrdfSpec):
+        recipe["urdf"] = {"path": str(spec.path), "fixed_base": spec.fixed_base}
+    return recipe
+
+
+def build_scene(scene: str, world: World | None = None) -> World:
+    """Re-create the bodies of a stored scene (JSON from :func:`scene_of`) in a world."""
+    world = world if world is not None else World()
+    for recipe in json.loads(scene):
+        name, kind = recipe["name"], recipe["type"]
+        if "robot" in recipe:
+            world.add_robot(recipe["robot"], name=name)
+        elif "shape" in recipe:
+            s = recipe["shape"]
+            spec = ShapeSpec(s["shape"], tuple(s["size"]), s["mass"], tuple(s["color"]))
+            world.add_object(name, kind, spec)
+        elif "mesh" in recipe:
+            m = recipe["mesh"]
+            world.add_object(
+                name, kind, MeshSpec(Path(m["path"]), m["scale"], m["mass"], tuple(m["color"]))
+            )
+        elif "urdf" in recipe:
+            u = recipe["urdf"]
+            world.add_object(name, kind, UrdfSpec(Path(u["path"]), u["fixed_base"]))
+    return world
