@@ -12,9 +12,9 @@ from robocram.designators import a
 from robocram.execution import TaskSnapshot, perform, try_in_order
 from robocram.plans import pick_up
 from robocram.projection import simulated_robot
+from robocram.scenes import tabletop_scene
 from robocram.traces import StoredWorldState, trace_to
 from robocram.world import World
-from robocram.scenes import tabletop_scene
 
 TORSO_TOO_HIGH = 5.0  # [m] far above the PR2's torso limit: the first branch fails
 
