@@ -14,6 +14,7 @@ from robocram.robots.errors import (
     JointValueError,
     MissingMeshWarning,
     PackageNotFoundError,
+    PackagePathError,
     UrdfError,
 )
 from robocram.robots.interface_facts import install_description
@@ -37,6 +38,7 @@ __all__ = [
     "Mimic",
     "MissingMeshWarning",
     "PackageNotFoundError",
+    "PackagePathError",
     "PanTiltDescription",
     "RobotDescription",
     "RobotModel",

@@ -40,6 +40,18 @@ class PackageNotFoundError(DescriptionError):
         )
 
 
+class PackagePathError(DescriptionError):
+    """A ``package://`` URI that is no package name, or whose path leaves the package."""
+
+    def __init__(self, uri: str, package: str, why: str) -> None:
+        self.uri = uri
+        self.package = package
+        super().__init__(
+            f"refusing {uri!r}: {why}; a package:// path must name a package and stay "
+            f"inside its folder (package://<name>/<path below it>)"
+        )
+
+
 @dataclass(frozen=True)
 class NameProblem:
     """One name of a description that the robot model does not have."""

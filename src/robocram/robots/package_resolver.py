@@ -17,7 +17,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 
-from robocram.robots.errors import PackageNotFoundError
+from robocram.robots.errors import PackageNotFoundError, PackagePathError
 
 _MAX_DEPTH = 3
 
@@ -60,6 +60,15 @@ def _find_package(root: Path, package: str) -> Path | None:
     return None
 
 
+def _check_inside(uri: str, package: str, rest: str) -> None:
+    """Refuse package names that are paths and paths that climb out of the package."""
+    if package in ("", ".", "..") or os.sep in package or "\\" in package:
+        raise PackagePathError(uri, package, f"{package!r} is not a package name")
+    norm = os.path.normpath(rest) if rest else "."
+    if os.path.isabs(rest) or norm == ".." or norm.startswith(".." + os.sep):
+        raise PackagePathError(uri, package, f"{rest!r} leaves the folder of {package!r}")
+
+
 @dataclass(frozen=True)
 class PackageResolver:
     """Turns ``package://`` URIs into absolute paths.
@@ -99,6 +108,7 @@ class PackageResolver:
         """Absolute path of a ``package://``, ``file://``, absolute or relative reference."""
         if uri.startswith("package://"):
             package, _, rest = uri[len("package://") :].partition("/")
+            _check_inside(uri, package, rest)
             return self.package_folder(package, uri, base_dir) / rest
         if uri.startswith("file://"):
             return Path(uri[len("file://") :])

@@ -14,13 +14,34 @@ from pathlib import Path
 from robocram.robots.description import BoxSpec, FrameSpec
 from robocram.robots.errors import DescriptionError, MissingMeshWarning, UrdfError, closest_names
 from robocram.robots.package_resolver import PackageResolver
-from robocram.robots.safe_xml import parse_xml
+from robocram.robots.safe_xml import decode_xml, parse_xml
 from robocram.robots.urdf_elements import Collision, Geometry, Inertial, Joint, Link
 from robocram.robots.urdf_reader import read_urdf
 from robocram.robots.urdf_writer import write_urdf
 
 # A frame added in code weighs 1 g: PyBullet would otherwise give it 1 kg and unit inertia.
 _FRAME_INERTIA = Inertial(0.001, (1e-9, 0.0, 0.0, 1e-9, 0.0, 1e-9))
+
+
+def kinematic_loop(links: Iterable[str], parent_joint: dict[str, Joint]) -> list[Joint]:
+    """The joints of one loop of parent links (each link's parent first), or ``[]``.
+
+    Following parents from any link either ends at a root or comes back to a link seen on
+    the way: that link's loop is the kinematic cycle.
+    """
+    done: set[str] = set()  # links known to hang below a root
+    for start in links:
+        path: list[str] = []
+        link: str | None = start
+        while link is not None and link not in done:
+            if link in path:
+                cycle = path[path.index(link) :]
+                return [parent_joint[name] for name in reversed(cycle)]
+            path.append(link)
+            joint = parent_joint.get(link)
+            link = None if joint is None else joint.parent
+        done.update(path)
+    return []
 
 
 @dataclass(frozen=True, eq=False)
@@ -51,6 +72,15 @@ class RobotModel:
                 )
             parent_joint[joint.child] = joint
         object.__setattr__(self, "_parent_joint", parent_joint)
+        loop = kinematic_loop(self.links, parent_joint)
+        if loop:
+            names = ", ".join(repr(j.name) for j in loop)
+            path = " -> ".join([loop[0].parent, *(j.child for j in loop)])
+            raise UrdfError(
+                self.source,
+                f"joints {names} close a kinematic loop ({path}); a URDF must be a tree: "
+                "remove one of them or give it another parent",
+            )
         roots = [name for name in self.links if name not in parent_joint]
         if len(roots) != 1:
             raise UrdfError(self.source, f"a URDF needs exactly one root link, found {roots}")
@@ -155,9 +185,10 @@ class RobotModel:
         """Parse a URDF file; ``package_paths`` are searched first for ``package://`` URIs."""
         file = Path(path).expanduser()
         try:
-            text = file.read_text(encoding="utf-8")
+            data = file.read_bytes()
         except OSError as err:
             raise UrdfError(file, f"cannot read the URDF: {err.strerror}") from err
+        text = decode_xml(data, file)
         return cls.from_string(text, file.resolve().parent, package_paths, source=str(file))
 
     @classmethod

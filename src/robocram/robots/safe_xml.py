@@ -6,6 +6,8 @@ URDFs come from many places; a DOCTYPE with ENTITY declarations can expand witho
 
 from __future__ import annotations
 
+import codecs
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -58,6 +60,32 @@ class _Builder:
             "DOCTYPE/ENTITY declarations are refused (unsafe XML); remove the DOCTYPE",
             self.parser.CurrentLineNumber,
         )
+
+
+_DECLARED_ENCODING = re.compile(rb"""^<\?xml[^>]*?encoding\s*=\s*["']([A-Za-z0-9._-]+)["']""")
+
+
+def decode_xml(data: bytes, source: str | Path) -> str:
+    """Text of an XML file in the encoding its declaration (or BOM) names, else UTF-8."""
+    if data.startswith(codecs.BOM_UTF8):
+        encoding, data = "utf-8", data[len(codecs.BOM_UTF8) :]
+    elif data.startswith((codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)):
+        encoding = "utf-16"
+    else:
+        declared = _DECLARED_ENCODING.match(data.lstrip())
+        encoding = declared.group(1).decode("ascii") if declared else "utf-8"
+    try:
+        return data.decode(encoding)
+    except LookupError as err:
+        raise UrdfError(source, f"unknown encoding {encoding!r} in the XML declaration", 1) from err
+    except UnicodeDecodeError as err:
+        line = data.count(b"\n", 0, err.start) + 1
+        raise UrdfError(
+            source,
+            f"byte {data[err.start]:#04x} is not {encoding}; declare the file's encoding "
+            f'(<?xml version="1.0" encoding="...">) or save it as UTF-8',
+            line,
+        ) from err
 
 
 def parse_xml(text: str, source: str | Path) -> XmlNode:

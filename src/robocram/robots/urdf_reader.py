@@ -27,6 +27,7 @@ from robocram.robots.urdf_elements import (
 from robocram.tf import Pose
 
 _DEFAULT_BOX = 0.05  # [m] edge of a stand-in box when nothing tells the link's size
+_MIN_AXIS = 1e-9  # a joint axis shorter than this has no direction
 
 
 @dataclass
@@ -66,6 +67,8 @@ class _Reader:
             raise self.fail(node, f"{key}={node.attrib[key]!r} is not numbers") from err
         if len(values) != len(default):
             raise self.fail(node, f"{key}={node.attrib[key]!r} needs {len(default)} numbers")
+        if not all(math.isfinite(v) for v in values):
+            raise self.fail(node, f"{key}={node.attrib[key]!r} is not finite; give real numbers")
         return values
 
     def number(self, node: XmlNode | None, key: str, default: float | None) -> float | None:
@@ -164,7 +167,12 @@ class _Reader:
         )
         if kind in ("revolute", "prismatic") and limit is None:
             raise self.fail(node, f"{kind} joint {name!r} needs a <limit lower=... upper=...>")
+        self.check_limits(limit, name, lower, upper)
         axis = self.floats(node.find("axis"), "xyz", (1.0, 0.0, 0.0))
+        if kind not in ("fixed", "floating") and math.hypot(*axis) < _MIN_AXIS:
+            raise self.fail(
+                node.find("axis") or node, f"joint {name!r} has a zero axis; give a direction"
+            )
         return Joint(
             name=name,
             type=kind,  # type: ignore[arg-type]
@@ -180,6 +188,19 @@ class _Reader:
             damping=self.number(dynamics, "damping", 0.0) or 0.0,
             friction=self.number(dynamics, "friction", 0.0) or 0.0,
         )
+
+    def check_limits(
+        self, limit: XmlNode | None, name: str, lower: float | None, upper: float | None
+    ) -> None:
+        """Refuse crossed limits and negative speed or effort, naming the line."""
+        if limit is None:
+            return
+        if lower is not None and upper is not None and lower > upper:
+            raise self.fail(limit, f"joint {name!r} has lower limit {lower} > upper {upper}")
+        for key in ("velocity", "effort"):
+            value = self.number(limit, key, None)
+            if value is not None and value < 0:
+                raise self.fail(limit, f"joint {name!r} has negative {key} {value}; use >= 0")
 
     def mimic(self, node: XmlNode) -> Mimic:
         return Mimic(
