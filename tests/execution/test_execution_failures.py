@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import pickle
+import typing
 
 import pytest
 
@@ -105,3 +106,13 @@ def test_unknown_failure_name_suggests_the_close_one() -> None:
 def test_missing_attribute_is_an_attribute_error() -> None:
     with pytest.raises(AttributeError, match="no attribute 'goall'"):
         _ = F.TorsoGoalNotReached(goal=1.0).goall
+
+
+def test_fields_are_typed_attributes_mypy_can_see() -> None:
+    hints = typing.get_type_hints(F.TorsoGoalNotReached)
+    assert F.TorsoGoalNotReached.fields == ("goal", "limits", "reached")
+    assert hints["goal"] == float | None
+    assert hints["limits"] == tuple[float, float] | None
+    assert typing.get_type_hints(F.ManipulationPoseUnreachable)["arm"] == str | None
+    assert F.ManipulationPoseUnreachable.fields == ("arm", "target")
+    assert "fields" not in F.ManipulationPoseUnreachable.__dict__.get("__annotations__", {})

@@ -9,7 +9,11 @@ from typing import Any
 import pytest
 
 from robocram.execution import PlanFailure, pursue, sleep, top_level
-from robocram.execution.failures import NavigationGoalNotReached, ProcessModuleFailure
+from robocram.execution.failures import (
+    NavigationGoalNotReached,
+    ProcessModuleFailure,
+    SetupFailure,
+)
 from robocram.execution.process_module import ProcessModule
 
 
@@ -165,3 +169,27 @@ def test_cancelled_callers_leave_nothing_running() -> None:
     assert not pm.busy and pm.waiting == 0 and pm.log == []
     pm.stop(timeout=1.0)
     assert pm.lifecycle == ["initialise", "terminate"]
+
+
+class BadName(SetupFailure):
+    """A caller's mistake raised inside a module."""
+
+
+class PickyPM(ProcessModule):
+    name = "picky"
+
+    def execute(self, command: Any) -> Any:
+        raise BadName(f"no joint {command!r}; did you mean 'torso'?")
+
+
+def test_a_setup_failure_in_a_module_is_wrapped_naming_module_and_command() -> None:
+    pm = PickyPM()
+    pm.start()
+    try:
+        with pytest.raises(ProcessModuleFailure) as info:
+            pm.call("torsoo")
+    finally:
+        pm.stop()
+    assert isinstance(info.value.error, BadName)
+    assert (info.value.module, info.value.command) == ("picky", "torsoo")
+    assert "did you mean 'torso'" in str(info.value)

@@ -8,7 +8,8 @@ Callers are served one at a time in arrival order: a second caller waits, it is 
 lost. A waiting caller whose task is stopped leaves the queue. The command runs in the
 caller's thread, so ``checkpoint()`` inside ``execute`` stops it with the caller's task.
 Failures re-raise in the caller with the module and command named (plan failures keep
-their type and gain context; other errors are wrapped in ``ProcessModuleFailure``).
+their type and gain context; set-up failures and other errors are wrapped in
+``ProcessModuleFailure``, the cause kept as its ``error``).
 """
 
 from __future__ import annotations
@@ -19,7 +20,7 @@ from collections import deque
 from collections.abc import Iterable
 from typing import Any, ClassVar
 
-from robocram.execution.failures import PlanFailure, ProcessModuleFailure
+from robocram.execution.failures import PlanFailure, ProcessModuleFailure, SetupFailure
 from robocram.execution.task_context import checkpoint, wait_until
 
 
@@ -151,16 +152,21 @@ class ProcessModule:
     def _execute_named(self, command: Any) -> Any:
         try:
             return self.execute(command)
+        except SetupFailure as err:
+            raise self._wrapped(command, err) from err
         except PlanFailure as failure:
             failure.add_context(process_module=self.name, command=command)
             raise
         except Exception as err:
-            raise ProcessModuleFailure(
-                f"process module {self.name!r} failed on {command}: {type(err).__name__}: {err}",
-                module=self.name,
-                command=command,
-                error=err,
-            ) from err
+            raise self._wrapped(command, err) from err
+
+    def _wrapped(self, command: Any, err: Exception) -> ProcessModuleFailure:
+        return ProcessModuleFailure(
+            f"process module {self.name!r} failed on {command}: {type(err).__name__}: {err}",
+            module=self.name,
+            command=command,
+            error=err,
+        )
 
     def unsupported(self, command: Any, supported: Iterable[str]) -> ProcessModuleFailure:
         """Build the failure for a command this module does not handle (for ``execute``)."""

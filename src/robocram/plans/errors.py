@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from robocram.execution.failures import SetupFailure
 
-class PlanSetupError(RuntimeError):
+
+class PlanSetupError(SetupFailure, RuntimeError):
     """A plan needs knowledge the current environment does not give (no robot, say)."""

@@ -75,7 +75,11 @@ def _approach_axis(robot: str, arm: str) -> tuple[str, np.ndarray]:
     facts = current_kb().first(
         "robot_tool_frame(R, A, T), end_effector_link(R, A, E)", R=robot, A=arm
     )
-    assert facts is not None  # every arm has both facts
+    if facts is None:
+        raise PlanSetupError(
+            f"pick_up found no robot_tool_frame/3 and end_effector_link/3 for arm {arm!r} of "
+            f"{robot!r}; give the arm a tool frame and an end effector in its description"
+        )
     wrist = transform_pose(PoseStamped(facts["E"]), facts["T"]).position
     axis = -np.asarray(wrist, float)
     return facts["T"], axis / np.linalg.norm(axis)
@@ -103,7 +107,7 @@ def _nearest_arm(robot: str, arms: list[str], target: PoseStamped) -> str:
 
 def _reach_from_above(arm: str, spot: PoseStamped, axis: np.ndarray) -> PoseStamped:
     """Move the tool above ``spot`` with the first reachable grasp turn; return the grasp."""
-    last: ManipulationPoseUnreachable | None = None
+    failures: list[ManipulationPoseUnreachable] = []
     for yaw in YAWS:
         grasp = spot.with_frame(spot.frame_id, Pose(spot.position, _top_down(axis, yaw)))
         above = _shifted(grasp, APPROACH)
@@ -111,9 +115,8 @@ def _reach_from_above(arm: str, spot: PoseStamped, axis: np.ndarray) -> PoseStam
             perform(a.motion(type="moving-tcp", arm=arm, target=a.location(pose=above)))
             return grasp
         except ManipulationPoseUnreachable as failure:
-            last = failure
-    assert last is not None
-    raise last
+            failures.append(failure)
+    raise failures[-1]
 
 
 def _shifted(pose: PoseStamped, dz: float) -> PoseStamped:

@@ -1,8 +1,9 @@
 """Errors of the projection layer that are programming mistakes, not plan failures.
 
 A bad arm name or an unknown frame is the caller's bug, so it raises
-:class:`ProjectionError` with the culprit named and a fix suggested; a goal the robot
-cannot achieve raises a typed plan failure from ``robocram.execution.failures``.
+:class:`ProjectionError` (a ``SetupFailure``, so still a plan failure, and a
+``ValueError``) with the culprit named and a fix suggested; a goal the robot cannot
+achieve raises a typed plan failure from ``robocram.execution.failures``.
 """
 
 from __future__ import annotations
@@ -10,8 +11,10 @@ from __future__ import annotations
 import difflib
 from collections.abc import Iterable
 
+from robocram.execution.failures import SetupFailure
 
-class ProjectionError(ValueError):
+
+class ProjectionError(SetupFailure, ValueError):
     """Root of the projection layer's input errors."""
 
 

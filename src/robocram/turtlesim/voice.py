@@ -33,7 +33,7 @@ _POLL = 0.05  # [s] how often a listening robot checks whether it was stopped
 class NothingHeard(PlanFailure):
     """The robot listened and nobody spoke within the timeout."""
 
-    fields = ("timeout",)
+    timeout: float | None = None
     summary = "nothing was heard"
     hint = "ask again, or listen longer"
 

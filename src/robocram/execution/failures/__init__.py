@@ -2,7 +2,9 @@
 
 ``PlanFailure`` is the root; ``LowLevelFailure`` and ``HighLevelFailure`` group CRAM's
 taxonomy; ``failure_class("torso-goal-not-reached")`` finds a class by its CRAM name.
-``NotInTopLevel`` and ``RetryOutsideHandler`` are programming errors, not plan failures.
+``SetupFailure`` roots the errors of plans and modules used wrongly (``PlanSetupError``,
+``ProjectionError``). ``NotInTopLevel`` and ``RetryOutsideHandler`` are errors of the plan
+language's own use, raised outside any handler's reach, so they are not plan failures.
 """
 
 from robocram.execution.failures.environment import (
@@ -57,6 +59,7 @@ from robocram.execution.failures.plan_language import (
     NotInTopLevel,
     RetryOutsideHandler,
 )
+from robocram.execution.failures.setup import SetupFailure
 from robocram.execution.failures.torso import (
     TorsoGoalNotReached,
     TorsoGoalUnreachable,
@@ -103,6 +106,7 @@ __all__ = [
     "PtuGoalUnreachable",
     "PtuLowLevelFailure",
     "RetryOutsideHandler",
+    "SetupFailure",
     "TorsoGoalNotReached",
     "TorsoGoalUnreachable",
     "TorsoLowLevelFailure",

@@ -8,7 +8,7 @@ from robocram.execution.failures.high_level import HighLevelFailure
 class EnvironmentUnreachable(HighLevelFailure):
     """The robot cannot get to the part of the environment it must manipulate."""
 
-    fields = ("environment_part",)
+    environment_part: str | None = None
     summary = "the environment part is unreachable"
     hint = "try other base poses near the part"
 
@@ -16,6 +16,7 @@ class EnvironmentUnreachable(HighLevelFailure):
 class EnvironmentManipulationImpossible(HighLevelFailure):
     """Opening or closing the container failed."""
 
-    fields = ("environment_part", "action")
+    environment_part: str | None = None
+    action: str | None = None
     summary = "the environment manipulation is impossible"
     hint = "check the handle and the joint of the container"

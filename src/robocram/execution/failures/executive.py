@@ -2,13 +2,14 @@
 
 from __future__ import annotations
 
+from robocram.designators import Designator
 from robocram.execution.failures.plan_failure import PlanFailure
 
 
 class DesignatorFailure(PlanFailure):
     """A designator could not be used."""
 
-    fields = ("designator",)
+    designator: Designator | None = None
     summary = "the designator could not be used"
 
 
@@ -29,7 +30,9 @@ class DesignatorGoalParsingFailure(DesignatorFailure):
 class ProcessModuleFailure(PlanFailure):
     """A process module raised an error that is not a plan failure (wrapped, cause kept)."""
 
-    fields = ("module", "command", "error")
+    module: str | None = None
+    command: object | None = None
+    error: BaseException | None = None
     summary = "the process module failed"
     hint = "a wrapped Python error (the cause) is a bug in the module, not fixed by retrying"
 
@@ -37,6 +40,7 @@ class ProcessModuleFailure(PlanFailure):
 class NoMatchingProcessModule(PlanFailure):
     """PERFORM found no running process module that handles the designator."""
 
-    fields = ("designator", "running")
+    designator: Designator | None = None
+    running: list[str] | None = None
     summary = "no running process module matches the designator"
     hint = "start one with process_modules_running(...) or check matching_process_module/2"

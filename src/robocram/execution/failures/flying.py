@@ -15,7 +15,9 @@ class FlyingLowLevelFailure(LowLevelFailure):
 class FlyingGoalNotReached(FlyingLowLevelFailure):
     """The quadrotor stopped away from its target."""
 
-    fields = ("target", "reached", "error")
+    target: object | None = None
+    reached: object | None = None
+    error: float | None = None
     summary = "the quadrotor did not reach its goal"
     hint = "retry, or check for wind and obstacles"
 
@@ -23,6 +25,7 @@ class FlyingGoalNotReached(FlyingLowLevelFailure):
 class FlyingGoalInCollision(HighLevelFailure):
     """The flight target or the straight path to it hits an obstacle."""
 
-    fields = ("target", "colliding")
+    target: object | None = None
+    colliding: list[str] | None = None
     summary = "the flying goal is in collision"
     hint = "pick a target in free space, or fly around the obstacle"

@@ -15,6 +15,7 @@ class LowLevelFailure(PlanFailure):
 class ActionlibActionTimedOut(LowLevelFailure):
     """A low-level action ran longer than its time budget."""
 
-    fields = ("action", "timeout")
+    action: str | None = None
+    timeout: float | None = None
     summary = "the low-level action timed out"
     hint = "raise the timeout [s] or check that the action server is running"

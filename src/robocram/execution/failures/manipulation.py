@@ -2,8 +2,7 @@
 
 from __future__ import annotations
 
-from typing import ClassVar
-
+from robocram.designators import ObjectDesignator
 from robocram.execution.failures.high_level import HighLevelFailure
 from robocram.execution.failures.low_level import LowLevelFailure
 
@@ -11,14 +10,16 @@ from robocram.execution.failures.low_level import LowLevelFailure
 class ManipulationLowLevelFailure(LowLevelFailure):
     """An arm motion failed."""
 
-    fields: ClassVar[tuple[str, ...]] = ("arm",)
+    arm: str | None = None
     summary = "the arm motion failed"
 
 
 class ManipulationGoalNotReached(ManipulationLowLevelFailure):
     """The arm moved but stopped away from its goal."""
 
-    fields = ("target", "reached", "error")
+    target: object | None = None
+    reached: object | None = None
+    error: tuple[float, float] | None = None
     summary = "the arm did not reach its goal"
     hint = "retry, or loosen the tolerance if the remaining error is small"
 
@@ -26,7 +27,7 @@ class ManipulationGoalNotReached(ManipulationLowLevelFailure):
 class ManipulationPoseUnreachable(ManipulationLowLevelFailure):
     """No arm configuration reaches the target (IK found no solution)."""
 
-    fields = ("target",)
+    target: object | None = None
     summary = "the target pose is out of the arm's reach"
     hint = "move the base closer or use the other arm"
 
@@ -34,14 +35,14 @@ class ManipulationPoseUnreachable(ManipulationLowLevelFailure):
 class GripperLowLevelFailure(LowLevelFailure):
     """A gripper motion failed."""
 
-    fields: ClassVar[tuple[str, ...]] = ("gripper",)
+    gripper: str | None = None
     summary = "the gripper motion failed"
 
 
 class GripperClosedCompletely(GripperLowLevelFailure):
     """The gripper closed all the way: nothing is between the fingers."""
 
-    fields = ("position",)
+    position: float | None = None
     summary = "the gripper closed completely, so it holds nothing"
     hint = "perceive the object again and regrasp"
 
@@ -49,7 +50,8 @@ class GripperClosedCompletely(GripperLowLevelFailure):
 class GripperGoalNotReached(GripperLowLevelFailure):
     """The gripper stopped away from the commanded opening."""
 
-    fields = ("goal", "reached")
+    goal: float | None = None
+    reached: object | None = None
     summary = "the gripper did not reach its goal"
     hint = "check for an obstacle between the fingers and retry"
 
@@ -57,7 +59,9 @@ class GripperGoalNotReached(GripperLowLevelFailure):
 class ManipulationGoalInCollision(HighLevelFailure):
     """The planned arm motion would collide with the environment."""
 
-    fields = ("arm", "target", "colliding")
+    arm: str | None = None
+    target: object | None = None
+    colliding: list[str] | None = None
     summary = "the manipulation goal is in collision"
     hint = "choose another grasp or approach pose"
 
@@ -65,7 +69,7 @@ class ManipulationGoalInCollision(HighLevelFailure):
 class ObjectUnreachable(HighLevelFailure):
     """No base pose and arm combination reaches the object."""
 
-    fields = ("object_designator",)
+    object_designator: ObjectDesignator | None = None
     summary = "the object is unreachable"
     hint = "try other base locations or clear the way"
 
@@ -73,7 +77,7 @@ class ObjectUnreachable(HighLevelFailure):
 class ObjectUnfetchable(HighLevelFailure):
     """Fetching the object failed after all retries."""
 
-    fields = ("object_designator",)
+    object_designator: ObjectDesignator | None = None
     summary = "the object could not be fetched"
     hint = "search for another instance of the object"
 
@@ -81,6 +85,7 @@ class ObjectUnfetchable(HighLevelFailure):
 class ObjectUndeliverable(HighLevelFailure):
     """Delivering the object to its target failed after all retries."""
 
-    fields = ("object_designator", "target")
+    object_designator: ObjectDesignator | None = None
+    target: object | None = None
     summary = "the object could not be delivered"
     hint = "pick another target location"

@@ -15,7 +15,8 @@ class NavigationLowLevelFailure(LowLevelFailure):
 class NavigationPoseUnreachable(NavigationLowLevelFailure):
     """The base cannot get to the target pose, e.g. it is in collision."""
 
-    fields = ("target", "colliding")
+    target: object | None = None
+    colliding: list[str] | None = None
     summary = "the navigation target is unreachable"
     hint = "sample another base pose from the location designator"
 
@@ -23,7 +24,9 @@ class NavigationPoseUnreachable(NavigationLowLevelFailure):
 class NavigationGoalNotReached(NavigationLowLevelFailure):
     """The base moved but stopped away from its target."""
 
-    fields = ("target", "reached", "error")
+    target: object | None = None
+    reached: object | None = None
+    error: float | None = None
     summary = "the base did not reach its goal"
     hint = "retry, or check the path for obstacles"
 
@@ -31,6 +34,7 @@ class NavigationGoalNotReached(NavigationLowLevelFailure):
 class NavigationGoalInCollision(HighLevelFailure):
     """The navigation goal puts the robot into collision."""
 
-    fields = ("target", "colliding")
+    target: object | None = None
+    colliding: list[str] | None = None
     summary = "the navigation goal is in collision"
     hint = "take the next solution of the location designator"

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from robocram.designators import ObjectDesignator
 from robocram.execution.failures.high_level import HighLevelFailure
 from robocram.execution.failures.low_level import LowLevelFailure
 
@@ -15,7 +16,7 @@ class PerceptionLowLevelFailure(LowLevelFailure):
 class PerceptionObjectNotFound(PerceptionLowLevelFailure):
     """No object in view matches the designator."""
 
-    fields = ("object_designator",)
+    object_designator: ObjectDesignator | None = None
     summary = "no object matching the designator was seen"
     hint = "look somewhere else or relax the object description"
 
@@ -29,7 +30,8 @@ class PtuLowLevelFailure(LowLevelFailure):
 class PtuGoalUnreachable(PtuLowLevelFailure):
     """The look target needs pan/tilt angles outside the joint limits."""
 
-    fields = ("target", "limits")
+    target: object | None = None
+    limits: object | None = None
     summary = "the pan-tilt goal is outside the joint limits"
     hint = "turn the base towards the target first"
 
@@ -37,7 +39,8 @@ class PtuGoalUnreachable(PtuLowLevelFailure):
 class PtuGoalNotReached(PtuLowLevelFailure):
     """The pan-tilt unit stopped away from its goal."""
 
-    fields = ("target", "reached")
+    target: object | None = None
+    reached: object | None = None
     summary = "the pan-tilt unit did not reach its goal"
     hint = "retry the look"
 
@@ -45,7 +48,7 @@ class PtuGoalNotReached(PtuLowLevelFailure):
 class LookingHighLevelFailure(HighLevelFailure):
     """Looking at a target failed after all retries."""
 
-    fields = ("target",)
+    target: object | None = None
     summary = "looking at the target failed"
     hint = "move the base so the target is in front of the robot"
 
@@ -53,6 +56,7 @@ class LookingHighLevelFailure(HighLevelFailure):
 class ObjectNowhereToBeFound(HighLevelFailure):
     """Searching all candidate locations did not find the object."""
 
-    fields = ("object_designator", "searched")
+    object_designator: ObjectDesignator | None = None
+    searched: list[object] | None = None
     summary = "the object is nowhere to be found"
     hint = "extend the search locations or check the object description"

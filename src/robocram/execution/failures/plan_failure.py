@@ -1,9 +1,10 @@
 """The root of all plan failures and the mechanism that keeps its ~40 subclasses short.
 
-A failure class declares the data it carries (``fields``), a one-line ``summary`` and a
-``hint`` saying what to try. Instances take the fields as keywords; ``str(failure)``
-names what happened, the data, any context added on the way up (process module,
-command) and the hint. Fields left out are ``None`` and are not printed.
+A failure class declares the data it carries as typed attributes defaulting to None
+(``goal: float | None = None``), a one-line ``summary`` and a ``hint`` saying what to try.
+Instances take the fields as keywords; ``str(failure)`` names what happened, the data,
+any context added on the way up (process module, command) and the hint. Fields left out
+are ``None`` and are not printed. ``fields`` lists a class's fields, inherited ones first.
 """
 
 from __future__ import annotations
@@ -25,38 +26,40 @@ class PlanFailure(Exception):
     summary: ClassVar[str] = "the plan failed"
     hint: ClassVar[str] = ""
     cram_name: ClassVar[str] = "plan-failure"
-    _all_fields: ClassVar[tuple[str, ...]] = ()
 
     def __init_subclass__(cls, **kwargs: Any) -> None:
         super().__init_subclass__(**kwargs)
-        own = cls.__dict__.get("fields", ())
-        inherited = tuple(f for base in cls.__mro__[1:] for f in getattr(base, "_all_fields", ()))
-        cls._all_fields = tuple(dict.fromkeys(inherited + tuple(own)))
+        own = [
+            name
+            for name, annotation in cls.__dict__.get("__annotations__", {}).items()
+            if "ClassVar" not in str(annotation)
+        ]
+        cls.fields = tuple(dict.fromkeys(cls.fields + tuple(own)))
         cls.cram_name = cram_name(cls.__name__)
 
-    def __init__(self, message: str | None = None, **data: Any) -> None:
-        unknown = [key for key in data if key not in self._all_fields]
+    def __init__(self, message: str | None = None, **data: object) -> None:
+        unknown = [key for key in data if key not in self.fields]
         if unknown:
             raise TypeError(self._unknown_field_message(unknown[0]))
         self.message = message
-        self.data: dict[str, Any] = {name: data.get(name) for name in self._all_fields}
-        self.context: dict[str, Any] = {}
+        for name in self.fields:
+            setattr(self, name, data.get(name))
+        self.context: dict[str, object] = {}
         super().__init__(message or self.summary)
 
     @classmethod
     def _unknown_field_message(cls, key: str) -> str:
-        allowed = ", ".join(cls._all_fields) or "none"
-        close = difflib.get_close_matches(key, cls._all_fields, n=1)
+        allowed = ", ".join(cls.fields) or "none"
+        close = difflib.get_close_matches(key, cls.fields, n=1)
         guess = f"; did you mean {close[0]!r}?" if close else ""
         return f"{cls.__name__} has no field {key!r} (fields: {allowed}){guess}"
 
-    def __getattr__(self, name: str) -> Any:
-        data = self.__dict__.get("data")
-        if data is not None and name in data:
-            return data[name]
-        raise AttributeError(f"{type(self).__name__!s} has no attribute {name!r}")
+    @property
+    def data(self) -> dict[str, object]:
+        """The fields and their values, in declaration order (inherited first)."""
+        return {name: getattr(self, name) for name in self.fields}
 
-    def add_context(self, **context: Any) -> Self:
+    def add_context(self, **context: object) -> Self:
         """Record where the failure passed (e.g. process module and command); returns self."""
         self.context.update(context)
         return self
@@ -76,7 +79,10 @@ class PlanFailure(Exception):
 
 
 def _rebuild(
-    cls: type[PlanFailure], message: str | None, data: dict[str, Any], context: dict[str, Any]
+    cls: type[PlanFailure],
+    message: str | None,
+    data: dict[str, object],
+    context: dict[str, object],
 ) -> PlanFailure:
     failure = cls(message, **{k: v for k, v in data.items() if v is not None})
     return failure.add_context(**context)

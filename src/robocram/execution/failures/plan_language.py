@@ -8,7 +8,8 @@ from robocram.execution.failures.plan_failure import PlanFailure
 class CompositeFailure(PlanFailure):
     """Every alternative of try_all / try_in_order failed; ``failures`` lists them in order."""
 
-    fields = ("form", "failures")
+    form: str | None = None
+    failures: list[PlanFailure] | None = None
     summary = "all alternatives failed"
     hint = "see `failures` for each alternative's reason"
 
@@ -16,7 +17,9 @@ class CompositeFailure(PlanFailure):
 class FluentWaitTimeout(PlanFailure):
     """A wait on a fluent ran out of time before the condition held."""
 
-    fields = ("fluent", "timeout", "value")
+    fluent: object | None = None
+    timeout: float | None = None
+    value: object | None = None
     summary = "the fluent condition did not hold in time"
     hint = "raise the timeout [s] or check what should set the fluent"
 

@@ -14,7 +14,8 @@ class TorsoLowLevelFailure(LowLevelFailure):
 class TorsoGoalUnreachable(TorsoLowLevelFailure):
     """The torso goal lies outside the joint limits."""
 
-    fields = ("goal", "limits")
+    goal: float | None = None
+    limits: tuple[float, float] | None = None
     summary = "the torso goal is outside the joint limits"
     hint = "pick a goal [m] within the limits"
 
@@ -22,6 +23,8 @@ class TorsoGoalUnreachable(TorsoLowLevelFailure):
 class TorsoGoalNotReached(TorsoLowLevelFailure):
     """The torso stopped away from its goal."""
 
-    fields = ("goal", "limits", "reached")
+    goal: float | None = None
+    limits: tuple[float, float] | None = None
+    reached: object | None = None
     summary = "the torso did not reach its goal"
     hint = "check the goal against the joint limits or retry"
