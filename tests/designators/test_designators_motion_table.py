@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import typing
+
 import pytest
 
 from robocram.designators import (
@@ -105,3 +107,10 @@ def test_a_user_type_outside_the_table_is_not_checked() -> None:
         group="waving",
     )
     assert a.motion(type="waving", hand=3).reference(kb) == Term("wave", (3,))
+
+
+def test_designators_are_generic_over_what_they_resolve_to() -> None:
+    from robocram.designators import ActionDesignator, MotionDesignator
+
+    assert typing.get_args(MotionDesignator.__orig_bases__[0]) == (Term,)  # type: ignore[attr-defined]
+    assert typing.get_args(ActionDesignator.__orig_bases__[0]) == (object,)  # type: ignore[attr-defined]

@@ -2,7 +2,8 @@
 
 A designator holds ordered ``(key, value)`` properties. Each kind resolves them its own way
 (motions and actions by Prolog grounding rules, locations by generators and validators,
-objects by perception). ``reference()`` returns the first solution and caches it;
+objects by perception). ``Designator[S]`` resolves to values of type ``S`` (a motion to a
+command ``Term``). ``reference()`` returns the first solution and caches it;
 ``next_solution()`` gives a new designator, equated with this one, for the next solution.
 Designators equated together form a chain (CRAM's ``first-desig``/``current-desig``).
 """
@@ -12,11 +13,16 @@ from __future__ import annotations
 import threading
 from collections.abc import Callable, Iterator
 from enum import Enum
-from typing import Any, ClassVar
+from typing import TYPE_CHECKING, Any, ClassVar, Generic, TypeVar
 
 from robocram.designators.errors import DesignatorError, GroundingError
 from robocram.designators.properties import PropertyPair, format_value, normalize_properties
 from robocram.designators.solution_stream import SolutionStream
+
+if TYPE_CHECKING:
+    from robocram.logic import KnowledgeBase
+
+S = TypeVar("S")  # what a designator resolves to
 
 _CHAIN_LOCK = threading.RLock()  # guards the parent/successor links of every chain
 
@@ -38,7 +44,7 @@ class Quantifier(Enum):
     ALL = "all"
 
 
-class _StreamTable:
+class _StreamTable(Generic[S]):
     """Solution streams of one designator family, one per resolution context (a KB, a resolver).
 
     Keyed by context so the same designator referenced under two environments never hands
@@ -46,10 +52,10 @@ class _StreamTable:
     """
 
     def __init__(self) -> None:
-        self._streams: dict[int, tuple[object, SolutionStream]] = {}
+        self._streams: dict[int, tuple[object, SolutionStream[S]]] = {}
         self._lock = threading.Lock()
 
-    def stream(self, context: object, source: Callable[[], Iterator[Any]]) -> SolutionStream:
+    def stream(self, context: object, source: Callable[[], Iterator[S]]) -> SolutionStream[S]:
         with self._lock:
             entry = self._streams.get(id(context))
             if entry is None or entry[0] is not context:
@@ -58,8 +64,8 @@ class _StreamTable:
             return entry[1]
 
 
-class Designator:
-    """Base of all designator kinds; subclasses say how solutions are produced."""
+class Designator(Generic[S]):
+    """Base of all designator kinds, resolving to ``S``; subclasses say how solutions come."""
 
     kind: ClassVar[Kind]
 
@@ -71,10 +77,10 @@ class Designator:
     ) -> None:
         self._properties = normalize_properties(pairs, properties)
         self.quantifier = quantifier
-        self._streams = _StreamTable()
+        self._streams: _StreamTable[S] = _StreamTable()
         self._index = 0
-        self._parent: Designator | None = None
-        self._successor: Designator | None = None
+        self._parent: Designator[Any] | None = None
+        self._successor: Designator[Any] | None = None
         self._check()
 
     def _check(self) -> None:
@@ -114,23 +120,26 @@ class Designator:
     def __repr__(self) -> str:
         return f"<{type(self).__name__} {self.description}>"
 
-    def reference(self, kb: Any = None) -> Any:
+    def reference(self, kb: KnowledgeBase | None = None) -> S:
         """Return this designator's solution (computed on first use, then cached).
 
         Raises:
             GroundingError: the designator has no solution in this context.
         """
-        context = self._resolution_context(kb)
-        present, value = self._solution(context, self._index)
-        if not present:
-            raise self._no_solution_error(context)
-        return value
+        return self._reference_in(self._resolution_context(kb))
 
-    def next_solution(self, kb: Any = None) -> Designator | None:
+    def _reference_in(self, context: object) -> S:
+        found = self._solution(context, self._index)
+        if found is None:
+            raise self._no_solution_error(context)
+        return found[0]
+
+    def next_solution(self, kb: KnowledgeBase | None = None) -> Designator[S] | None:
         """Return a designator for the next solution, equated with this one; None when exhausted."""
-        context = self._resolution_context(kb)
-        present, _ = self._solution(context, self._index + 1)
-        if not present:
+        return self._next_in(self._resolution_context(kb))
+
+    def _next_in(self, context: object) -> Designator[S] | None:
+        if self._solution(context, self._index + 1) is None:
             return None
         with _CHAIN_LOCK:
             successor = self._successor
@@ -142,18 +151,20 @@ class Designator:
             self.equate(sibling)
             return sibling
 
-    def solutions(self, kb: Any = None) -> Iterator[Any]:
+    def solutions(self, kb: KnowledgeBase | None = None) -> Iterator[S]:
         """Yield this designator's solutions lazily, from its own onwards (shared cache)."""
-        context = self._resolution_context(kb)
+        yield from self._solutions_in(self._resolution_context(kb))
+
+    def _solutions_in(self, context: object) -> Iterator[S]:
         index = self._index
         while True:
-            present, value = self._solution(context, index)
-            if not present:
+            found = self._solution(context, index)
+            if found is None:
                 return
-            yield value
+            yield found[0]
             index += 1
 
-    def _solution(self, context: object, index: int) -> tuple[bool, Any]:
+    def _solution(self, context: object, index: int) -> tuple[S] | None:
         stream = self._streams.stream(context, lambda: self._solutions(context))
         try:
             return stream.get(index)
@@ -164,7 +175,7 @@ class Designator:
                 f"resolving {self.description} failed: {type(err).__name__}: {err}", self
             ) from err
 
-    def _copy(self) -> Designator:
+    def _copy(self) -> Designator[S]:
         twin = object.__new__(type(self))
         twin.__dict__.update(self.__dict__)
         twin._parent = None
@@ -173,18 +184,18 @@ class Designator:
         twin._index = 0
         return twin
 
-    def _resolution_context(self, kb: Any) -> object:
+    def _resolution_context(self, kb: KnowledgeBase | None) -> object:
         """Return the object solutions depend on (a KB, a location resolver...)."""
         raise NotImplementedError
 
-    def _solutions(self, context: Any) -> Iterator[Any]:
+    def _solutions(self, context: Any) -> Iterator[S]:
         """Yield this designator's solutions lazily in ``context``."""
         raise NotImplementedError
 
     def _no_solution_error(self, context: Any) -> GroundingError:
         return GroundingError(f"{self.description} has no solution", self)
 
-    def equate(self, successor: Designator) -> None:
+    def equate(self, successor: Designator[Any]) -> None:
         """Declare that ``successor`` describes the same entity, appending it to this chain."""
         if successor.kind is not self.kind:
             raise DesignatorError(
@@ -205,23 +216,23 @@ class Designator:
             last._successor = successor
             successor._parent = last
 
-    def first_desig(self) -> Designator:
+    def first_desig(self) -> Designator[Any]:
         """Return the oldest designator of this chain."""
         with _CHAIN_LOCK:
-            desig = self
+            desig: Designator[Any] = self
             while desig._parent is not None:
                 desig = desig._parent
             return desig
 
-    def current_desig(self) -> Designator:
+    def current_desig(self) -> Designator[Any]:
         """Return the newest designator of this chain (the best-informed description)."""
         with _CHAIN_LOCK:
-            desig = self
+            desig: Designator[Any] = self
             while desig._successor is not None:
                 desig = desig._successor
             return desig
 
-    def chain(self) -> list[Designator]:
+    def chain(self) -> list[Designator[Any]]:
         """Return the whole chain, oldest first."""
         with _CHAIN_LOCK:
             out = [self.first_desig()]
@@ -230,6 +241,6 @@ class Designator:
             return out
 
 
-def desig_equal(a: Designator, b: Designator) -> bool:
+def desig_equal(a: Designator[Any], b: Designator[Any]) -> bool:
     """Return whether ``a`` and ``b`` belong to the same chain (describe the same entity)."""
     return a.first_desig() is b.first_desig()

@@ -10,13 +10,13 @@ answers of that query, one per grounding.
 from __future__ import annotations
 
 from collections.abc import Iterator
-from typing import Any, ClassVar
+from typing import ClassVar
 
-from robocram.designators.designator import Designator, Kind
+from robocram.designators.designator import Designator, Kind, S
 from robocram.designators.errors import DesignatorPropertyError, GroundingError
 from robocram.designators.motion_table import MOTION_TYPES
 from robocram.designators.motion_type import check_property_types, missing_property_error
-from robocram.logic import KnowledgeBase, PrologError, current_kb
+from robocram.logic import KnowledgeBase, PrologError, Term, current_kb
 
 
 def bound_kb() -> KnowledgeBase | None:
@@ -27,7 +27,7 @@ def bound_kb() -> KnowledgeBase | None:
         return None
 
 
-class GroundedDesignator(Designator):
+class GroundedDesignator(Designator[S]):
     """A designator whose solutions are the answers of ``<predicate>(Desig, Solution)``."""
 
     grounding_predicate: ClassVar[str]
@@ -41,7 +41,7 @@ class GroundedDesignator(Designator):
                 designator=self,
             )
 
-    def _resolution_context(self, kb: Any) -> object:
+    def _resolution_context(self, kb: KnowledgeBase | None) -> KnowledgeBase:
         if kb is not None:
             if not isinstance(kb, KnowledgeBase):
                 raise TypeError(f"kb must be a robocram.logic.KnowledgeBase, got {kb!r}")
@@ -55,12 +55,11 @@ class GroundedDesignator(Designator):
             )
         return bound
 
-    def _solutions(self, context: Any) -> Iterator[Any]:
-        kb: KnowledgeBase = context
-        for answer in kb.query(f"{self.grounding_predicate}(D, G)", D=self):
+    def _solutions(self, context: KnowledgeBase) -> Iterator[S]:
+        for answer in context.query(f"{self.grounding_predicate}(D, G)", D=self):
             yield answer["G"]
 
-    def _no_solution_error(self, context: Any) -> GroundingError:
+    def _no_solution_error(self, context: KnowledgeBase) -> GroundingError:
         known = grounded_types(context, self.kind)
         if self.type in known:
             why = (
@@ -77,7 +76,7 @@ class GroundedDesignator(Designator):
         )
 
 
-class MotionDesignator(GroundedDesignator):
+class MotionDesignator(GroundedDesignator[Term]):
     """A low-level motion, e.g. ``(a motion (type looking) (target ...))``; grounds to a command.
 
     Motion types of the motion table (``MOTION_TYPES``) have their property types checked
@@ -87,13 +86,13 @@ class MotionDesignator(GroundedDesignator):
     kind = Kind.MOTION
     grounding_predicate = "motion_grounding"
 
-    def _solutions(self, context: Any) -> Iterator[Any]:
+    def _solutions(self, context: KnowledgeBase) -> Iterator[Term]:
         motion = MOTION_TYPES.get(self.type)
         if motion is not None:
             check_property_types(motion, self)
         yield from super()._solutions(context)
 
-    def _no_solution_error(self, context: Any) -> GroundingError:
+    def _no_solution_error(self, context: KnowledgeBase) -> GroundingError:
         motion = MOTION_TYPES.get(self.type)
         known = grounded_types(context, self.kind)
         if motion is not None and self.type in known:
@@ -103,7 +102,7 @@ class MotionDesignator(GroundedDesignator):
         return super()._no_solution_error(context)
 
 
-class ActionDesignator(GroundedDesignator):
+class ActionDesignator(GroundedDesignator[object]):
     """A high-level action, e.g. ``(an action (type drawing) (shape house))``; grounds to a plan."""
 
     kind = Kind.ACTION
@@ -116,16 +115,20 @@ def grounded_types(kb: KnowledgeBase, kind: Kind) -> tuple[str, ...]:
     Found by running the grounding query on a probe designator whose ``desig_prop`` records
     every type a rule asks about and then fails, so no rule needs to list its types twice.
     """
-    cls = {Kind.MOTION: MotionDesignator, Kind.ACTION: ActionDesignator}.get(kind)
-    if cls is None:
+    probes: dict[Kind, tuple[str, type[TypeProbe]]] = {
+        Kind.MOTION: (MotionDesignator.grounding_predicate, _MotionTypeProbe),
+        Kind.ACTION: (ActionDesignator.grounding_predicate, _ActionTypeProbe),
+    }
+    if kind not in probes:
         return ()
-    probe = _MotionTypeProbe() if kind is Kind.MOTION else _ActionTypeProbe()
-    for _ in kb.query(f"{cls.grounding_predicate}(D, G)", D=probe):
+    predicate, probe_class = probes[kind]
+    probe = probe_class()
+    for _ in kb.query(f"{predicate}(D, G)", D=probe):
         pass
     return tuple(sorted(set(probe.asked_types)))
 
 
-class TypeProbe(Designator):
+class TypeProbe(Designator[None]):
     """A designator without properties that notes the types grounding rules ask for.
 
     ``desig_prop(Probe, type, T)`` records ``T`` and fails, so running a grounding query

@@ -8,14 +8,17 @@ perceived data (pose, name, ...) and is equated with the one asked for:
 from __future__ import annotations
 
 from collections.abc import Iterator
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from robocram.designators.designator import Designator, Kind, Quantifier
 from robocram.designators.errors import GroundingError
 from robocram.designators.properties import PropertyPair
 
+if TYPE_CHECKING:
+    from robocram.logic import KnowledgeBase
 
-class ObjectDesignator(Designator):
+
+class ObjectDesignator(Designator[object]):
     """A description of a thing; its solution is the data perception attached to it."""
 
     kind = Kind.OBJECT
@@ -52,7 +55,7 @@ class ObjectDesignator(Designator):
         self.current_desig().equate(successor)
         return successor
 
-    def reference(self, kb: Any = None) -> Any:
+    def reference(self, kb: KnowledgeBase | None = None) -> object:
         """Return the perceived data of this designator.
 
         Raises:
@@ -62,16 +65,16 @@ class ObjectDesignator(Designator):
             raise self._no_solution_error(None)
         return self._data
 
-    def solutions(self, kb: Any = None) -> Iterator[Any]:
+    def solutions(self, kb: KnowledgeBase | None = None) -> Iterator[object]:
         """Yield the perceived data, if any."""
         if self._data is not None:
             yield self._data
 
-    def next_solution(self, kb: Any = None) -> Designator | None:
+    def next_solution(self, kb: KnowledgeBase | None = None) -> Designator[object] | None:
         """Return None: perceived data has exactly one solution, the data itself."""
         return None
 
-    def _no_solution_error(self, context: Any) -> GroundingError:
+    def _no_solution_error(self, context: object) -> GroundingError:
         newest = self.current_desig()
         hint = (
             f"; its newest equated designator {newest.description} has data: use current_desig()"

@@ -8,25 +8,28 @@ from __future__ import annotations
 
 import threading
 from collections.abc import Iterator
-from typing import Any
+from typing import Generic, TypeVar
+
+S = TypeVar("S")
 
 
-class SolutionStream:
+class SolutionStream(Generic[S]):
     """Pull solutions from an iterator on demand and remember them.
 
     >>> s = SolutionStream(iter("ab"))
     >>> s.get(1), s.get(2)
-    ((True, 'b'), (False, None))
+    (('b',), None)
     """
 
-    def __init__(self, source: Iterator[Any]) -> None:
+    def __init__(self, source: Iterator[S]) -> None:
         self._source = source
-        self._cache: list[Any] = []
+        self._cache: list[S] = []
         self._exhausted = False
         self._lock = threading.Lock()
 
-    def get(self, index: int) -> tuple[bool, Any]:
-        """Return ``(True, solution)`` for solution ``index``, or ``(False, None)`` past the end."""
+    def get(self, index: int) -> tuple[S] | None:
+        """Return ``(solution,)`` for solution ``index`` (boxed: None is a solution too), or
+        None past the end."""
         if index < 0:
             raise IndexError(f"solution index must be >= 0, got {index}")
         with self._lock:
@@ -36,8 +39,8 @@ class SolutionStream:
                 except StopIteration:
                     self._exhausted = True
             if index < len(self._cache):
-                return True, self._cache[index]
-            return False, None
+                return (self._cache[index],)
+            return None
 
     @property
     def computed(self) -> int:
