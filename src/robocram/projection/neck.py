@@ -62,7 +62,6 @@ def _nearest_in_limits(value: float, limits: JointLimits) -> float:
 def _aim_joint(robot: ProjectedRobot, joint: str, child_link: str, target: np.ndarray) -> float:
     """The value of ``joint`` that turns the optical axis towards ``target``, unclamped."""
     world, desc = robot.world, robot.description
-    assert desc.model is not None  # a robot in a world always has its model
     spec = desc.model.joints[joint]
     link = world.link_pose(robot.name, child_link).matrix()
     axis = link[:3, :3] @ np.asarray(spec.axis, float)

@@ -12,7 +12,7 @@ import threading
 from dataclasses import dataclass, field
 
 from robocram.projection.errors import ProjectionError, unknown_name
-from robocram.robots import ArmDescription, RobotDescription
+from robocram.robots import ArmDescription, LoadedDescription
 from robocram.tf import Pose, PoseLike, PoseStamped
 from robocram.world import RobotObject, World
 
@@ -49,15 +49,20 @@ class ProjectedRobot:
         return self.world.robot(self.name)
 
     @property
-    def description(self) -> RobotDescription:
-        """The robot's checked description."""
-        return self.body.description
+    def description(self) -> LoadedDescription:
+        """The robot's checked description (its model set)."""
+        desc = self.body.description
+        if not isinstance(desc, LoadedDescription):
+            raise ProjectionError(
+                f"robot {self.name!r} carries an unchecked description; add robots to the "
+                "world with world.add_robot, which loads and checks it"
+            )
+        return desc
 
     @property
     def base_frame(self) -> str:
         """The URDF root link, the frame IK targets and perceived poses are given in."""
-        model = self.description.model
-        return model.root_link if model is not None else self.description.base_frame
+        return self.description.model.root_link
 
     def arm(self, arm: str) -> ArmDescription:
         """The arm called ``arm``, or an error naming the robot's arms."""

@@ -44,7 +44,12 @@ from robocram.projection.arm import joint_values
 from robocram.projection.perception import PerceivedObject
 from robocram.projection.robot_environment import install_motions
 from robocram.projection.world_frames import LiveTransformTree
-from robocram.robots import RobotDescription, install_description, load_description
+from robocram.robots import (
+    LoadedDescription,
+    RobotDescription,
+    install_description,
+    load_description,
+)
 from robocram.tf import Pose, PoseStamped, using_transform_tree
 
 LogEntry = tuple[str, Term]
@@ -54,7 +59,7 @@ PREFIX = "recorded"  # module atoms: recorded_arms, recorded_perception, ...
 class RecordedState:
     """The recorded robot: its joint values, the log and what it last detected."""
 
-    def __init__(self, description: RobotDescription, objects: Mapping[str, PoseStamped]):
+    def __init__(self, description: LoadedDescription, objects: Mapping[str, PoseStamped]):
         self.description = description
         self.objects = dict(objects)
         self.joints: dict[str, float] = {}
@@ -70,7 +75,6 @@ class RecordedState:
     def frame_poses(self) -> Mapping[str, Pose]:
         """Every link's pose in ``map`` by FK of the recorded joints (the base at the origin)."""
         model = self.description.model
-        assert model is not None  # descriptions are loaded on construction
         with self._lock:
             joints = dict(self.joints)
         return {link: forward_kinematics(self.description, joints, link) for link in model.links}

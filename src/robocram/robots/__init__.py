@@ -5,6 +5,7 @@ from robocram.robots.description import (
     BoxSpec,
     CameraDescription,
     FrameSpec,
+    LoadedDescription,
     PanTiltDescription,
     RobotDescription,
 )
@@ -35,6 +36,7 @@ __all__ = [
     "Joint",
     "JointValueError",
     "Link",
+    "LoadedDescription",
     "Mimic",
     "MissingMeshWarning",
     "PackageNotFoundError",

@@ -9,9 +9,9 @@ and fills ``model``.
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from robocram.tf import Pose
 
@@ -87,8 +87,9 @@ class RobotDescription:
     """What plans need to know about one robot, beside its URDF.
 
     ``urdf`` is a file path or a ``package://pkg/path`` URI; ``package_paths`` are extra
-    folders searched for ``package://`` URIs. ``model`` is ``None`` until
-    ``load_description`` has parsed the URDF and checked every name against it.
+    folders searched for ``package://`` URIs. ``model`` is ``None`` (or a model to use
+    instead of reading ``urdf``) until ``load_description`` has parsed the URDF and
+    checked every name against it, which gives a :class:`LoadedDescription`.
     """
 
     name: str
@@ -133,3 +134,23 @@ class RobotDescription:
         if any(name != self.neck_arm for name in self.arms):
             found += ["grippers", "arms"]
         return tuple(found)
+
+
+@dataclass(frozen=True)
+class LoadedDescription(RobotDescription):
+    """A description checked against its URDF: ``model`` is always the parsed model.
+
+    Only ``load_description`` makes one; code that needs the model takes this type, so
+    it never has to test ``model`` for None.
+    """
+
+    model: RobotModel = field(kw_only=True)
+
+    @classmethod
+    def checked(
+        cls, desc: RobotDescription, model: RobotModel, **changes: Any
+    ) -> LoadedDescription:
+        """``desc`` with ``model`` and ``changes`` applied (for ``load_description``)."""
+        values = {f.name: getattr(desc, f.name) for f in fields(RobotDescription)}
+        values.update(changes, model=model)
+        return cls(**values)

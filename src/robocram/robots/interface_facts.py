@@ -14,7 +14,7 @@ from collections.abc import Iterator, Mapping, Sequence
 from typing import Any, Protocol
 
 from robocram.logic.terms import Term, make_list
-from robocram.robots.description import ArmDescription, RobotDescription
+from robocram.robots.description import ArmDescription, LoadedDescription, RobotDescription
 from robocram.robots.loading import load_description
 from robocram.robots.robot_model import RobotModel
 
@@ -137,10 +137,8 @@ def _urdf_facts(r: str, model: RobotModel) -> Iterator[Term]:
             yield _fact("joint_mimic", r, j, m.joint, m.multiplier, m.offset)
 
 
-def description_facts(desc: RobotDescription) -> list[Term]:
-    """All facts of a loaded description (``desc.model`` set), robot facts first."""
-    if desc.model is None:
-        raise ValueError(f"description {desc.name!r} has no model; load_description it first")
+def description_facts(desc: LoadedDescription) -> list[Term]:
+    """All facts of a loaded description, robot facts first."""
     facts = list(_robot_facts(desc))
     for arm in desc.arms.values():
         facts.extend(_arm_facts(desc.name, arm, arm.name == desc.neck_arm))
@@ -149,13 +147,13 @@ def description_facts(desc: RobotDescription) -> list[Term]:
     return facts
 
 
-def install_description(kb: FactGroupSink, desc: RobotDescription | str) -> RobotDescription:
+def install_description(kb: FactGroupSink, desc: RobotDescription | str) -> LoadedDescription:
     """Load ``desc`` (checking it if needed) as fact group ``<name>_description`` of ``kb``.
 
     Returns the loaded description, so ``install_description(kb, "pr2")`` also hands back
     the checked PR2.
     """
-    loaded = desc if isinstance(desc, RobotDescription) and desc.model else load_description(desc)
+    loaded = desc if isinstance(desc, LoadedDescription) else load_description(desc)
     kb.add_fact_group(INTERFACE_GROUP, [], extendable=list(INTERFACE_PREDICATES))
     kb.add_fact_group(f"{loaded.name}_description", description_facts(loaded))
     return loaded

@@ -1,17 +1,16 @@
 """Load a robot description: parse its URDF, add its frames and boxes, check every name.
 
-``load_description("pr2")`` returns the built-in PR2 with ``model`` set; a user's own
-``RobotDescription`` goes through the same checks.
+``load_description("pr2")`` returns the built-in PR2 as a :class:`LoadedDescription`
+(``model`` set); a user's own ``RobotDescription`` goes through the same checks.
 """
 
 from __future__ import annotations
 
 from collections.abc import Iterable
-from dataclasses import replace
 from pathlib import Path
 
 from robocram.robots.builtin import builtin_description
-from robocram.robots.description import RobotDescription
+from robocram.robots.description import LoadedDescription, RobotDescription
 from robocram.robots.description_check import check_names, check_values, infer_arm
 from robocram.robots.package_resolver import PackageResolver
 from robocram.robots.robot_model import RobotModel
@@ -19,7 +18,7 @@ from robocram.robots.robot_model import RobotModel
 
 def load_description(
     name_or_desc: str | RobotDescription, package_paths: Iterable[str | Path] = ()
-) -> RobotDescription:
+) -> LoadedDescription:
     """The checked description with ``model`` set and arm chains inferred.
 
     Raises:
@@ -49,7 +48,7 @@ def load_description(
         check_values(desc.name, model, arm.parking)
         check_values(desc.name, model, arm.carrying)
     check_values(desc.name, model, desc.neck_parking)
-    return replace(desc, arms=arms, package_paths=paths, model=model)
+    return LoadedDescription.checked(desc, model, arms=arms, package_paths=paths)
 
 
 def _read_model(urdf: str | Path, package_paths: tuple[Path, ...]) -> RobotModel:
