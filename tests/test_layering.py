@@ -19,6 +19,7 @@ ALLOWED: dict[str, set[str]] = {
     "world": {"robots", "logic", "tf"},
     "kinematics": {"robots", "tf"},
     "scenes": {"world", "kinematics", "robots", "tf"},
+    "costmaps": {"world", "kinematics", "designators", "robots", "logic", "tf"},
     "projection": {"world", "kinematics", "execution", "designators", "robots", "logic", "tf"},
     "turtlesim": {"execution", "designators", "logic", "tf"},
     "plans": {"execution", "designators", "logic", "tf"},

@@ -1,0 +1,46 @@
+"""Costmaps: where to stand to see, to reach, and where to put things.
+
+A location designator such as ``a.location(visible_for="boxy", object=pot)`` is resolved
+by :class:`CostmapLocations`: rules in the knowledge base map its keys to cost functions,
+whose normalised product (a :class:`Costmap`) is sampled lazily into poses that
+validators check in the world. Bind it with ``using_location_resolver(locs.resolver())``.
+"""
+
+from robocram.costmaps.cost_layer import CostFunction, CostLayer, LocationQuery
+from robocram.costmaps.costmap import Costmap, CostmapGrid
+from robocram.costmaps.costmap_locations import CostmapLocations
+from robocram.costmaps.distance_costs import gaussian, ring
+from robocram.costmaps.errors import (
+    CostmapError,
+    CostmapInputError,
+    LocationKeyError,
+    LocationNotFound,
+)
+from robocram.costmaps.reachability_map import (
+    ReachabilityMap,
+    ReachabilityMaps,
+    build_reachability_map,
+    cache_dir,
+)
+from robocram.costmaps.validators import Reach, reach_object
+
+__all__ = [
+    "CostFunction",
+    "CostLayer",
+    "Costmap",
+    "CostmapError",
+    "CostmapGrid",
+    "CostmapInputError",
+    "CostmapLocations",
+    "LocationKeyError",
+    "LocationNotFound",
+    "LocationQuery",
+    "Reach",
+    "ReachabilityMap",
+    "ReachabilityMaps",
+    "build_reachability_map",
+    "cache_dir",
+    "gaussian",
+    "reach_object",
+    "ring",
+]

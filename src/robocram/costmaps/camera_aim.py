@@ -1,0 +1,57 @@
+"""A robot's camera as it would be with the neck aimed at a point: same place, turned."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from robocram.costmaps.errors import CostmapInputError
+from robocram.tf import Pose, Vector3
+from robocram.world import Camera, RobotObject, World
+
+
+def facing(camera_position: Vector3, target: Vector3) -> Pose:
+    """Optical-frame pose (z forward, x right, y down) at ``camera_position`` facing ``target``."""
+    z = np.subtract(target, camera_position).astype(float)
+    if np.linalg.norm(z) < 1e-6:
+        raise CostmapInputError(f"camera and target coincide at {tuple(target)}", target)
+    z /= np.linalg.norm(z)
+    x = np.cross((0.0, 0.0, -1.0), z)
+    if np.linalg.norm(x) < 1e-6:  # straight up or down: any right-hand x axis will do
+        x = np.array((0.0, -1.0, 0.0))
+    x /= np.linalg.norm(x)
+    m = np.eye(4)
+    m[:3, :3] = np.column_stack((x, np.cross(z, x), z))
+    m[:3, 3] = camera_position
+    return Pose.from_matrix(m)
+
+
+def camera_description(world: World, robot: RobotObject, key: str = "visible_for") -> Camera:
+    """The robot's first camera where it is now; a typed error if the robot has none."""
+    cameras = robot.description.cameras
+    if not cameras:
+        raise CostmapInputError(
+            f"location key {key!r} names robot {robot.name!r}, which has no camera in its "
+            "description; use a robot with a camera or another key",
+            robot.name,
+        )
+    return world.camera(robot)
+
+
+def aimed_camera(world: World, robot: RobotObject, target: Vector3) -> Camera:
+    """The robot's first camera turned in place to look at ``target`` (map, [m])."""
+    camera = camera_description(world, robot)
+    return Camera(
+        facing(camera.pose.position, target),
+        camera.horizontal_fov,
+        camera.vertical_fov,
+        camera.near,
+        camera.far,
+    )
+
+
+def pitch_to(camera_position: Vector3, target: Vector3) -> float:
+    """Angle [rad] below the horizontal at which the camera sees ``target``."""
+    dx = math.hypot(target[0] - camera_position[0], target[1] - camera_position[1])
+    return math.atan2(camera_position[2] - target[2], dx)

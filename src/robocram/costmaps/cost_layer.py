@@ -1,0 +1,90 @@
+"""What a cost function gets (a :class:`LocationQuery`) and gives back (a :class:`CostLayer`).
+
+A cost function is ``fn(query, value, alive) -> CostLayer``: ``value`` is the designator
+key's value, ``alive`` the cells earlier layers left possible (cells outside it may be
+given anything, so expensive functions evaluate only those). A layer may also set the
+height of a pose (a table top) and its yaw (turn the base so an arm faces the target).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from robocram.costmaps.costmap import BoolGrid, CostmapGrid, FloatGrid
+from robocram.costmaps.errors import CostmapInputError
+from robocram.costmaps.reachability_map import ReachabilityMaps
+from robocram.designators import ObjectDesignator
+from robocram.tf import Pose, PoseStamped
+from robocram.world import RobotObject, World, WorldObject
+
+
+@dataclass(frozen=True, eq=False)
+class CostLayer:
+    """Weights (>= 0) over the grid, and optionally heights [m] and yaws [rad] of poses."""
+
+    weights: FloatGrid
+    heights: FloatGrid | None = None
+    yaws: FloatGrid | None = None
+
+
+@dataclass(frozen=True, eq=False)
+class LocationQuery:
+    """The world, the designator being resolved, its grid and the robot it is for."""
+
+    world: World
+    designator: Any
+    grid: CostmapGrid
+    robot: RobotObject | None
+    reach_maps: ReachabilityMaps = field(default_factory=ReachabilityMaps)
+
+    def centres(self) -> tuple[FloatGrid, FloatGrid]:
+        """Map x and y [m] of the cell centres."""
+        return self.grid.centres()
+
+    def object(self, value: Any, key: str) -> WorldObject:
+        """The world object ``value`` names (a name, an object, an object designator)."""
+        return resolve_object(self.world, value, key)
+
+    def point(self, value: Any, key: str) -> tuple[float, float, float]:
+        """Map (x, y, z) [m] of a pose, a point, or the centre of an object's bounds."""
+        if isinstance(value, Pose | PoseStamped):
+            return Pose.coerce(value.pose if isinstance(value, PoseStamped) else value).position
+        if isinstance(value, tuple) and len(value) == 3:
+            return (float(value[0]), float(value[1]), float(value[2]))
+        low, high = self.world.aabb(self.object(value, key))
+        return tuple((lo + hi) / 2 for lo, hi in zip(low, high, strict=True))  # type: ignore[return-value]
+
+
+def resolve_object(world: World, value: Any, key: str) -> WorldObject:
+    """The world object ``value`` stands for; a typed error naming ``key`` otherwise."""
+    name = value
+    if isinstance(value, ObjectDesignator):
+        name = value.get("name")
+    if isinstance(value, WorldObject):
+        name = value.name
+    if not isinstance(name, str):
+        raise CostmapInputError(
+            f"location key {key!r} needs an object in the world (a name or a WorldObject), "
+            f"got {value!r}",
+            value,
+        )
+    if name not in world:
+        known = ", ".join(o.name for o in world.objects())
+        raise CostmapInputError(
+            f"location key {key!r} names object {name!r}, which is not in the world "
+            f"(objects: {known}); add it first or fix the name",
+            name,
+        )
+    return world.object(name)
+
+
+CostFunction = Callable[[LocationQuery, Any, BoolGrid], CostLayer]
+
+
+def ones(query: LocationQuery) -> FloatGrid:
+    """A layer that rules nothing out."""
+    return np.ones(query.grid.shape)

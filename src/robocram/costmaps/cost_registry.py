@@ -1,0 +1,34 @@
+"""The cost functions ``location_keys.pl`` names, by name (copied into each locator)."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from types import MappingProxyType
+
+from robocram.costmaps.cost_layer import CostFunction
+from robocram.costmaps.distance_costs import near_cost
+from robocram.costmaps.occupancy import occupancy_cost
+from robocram.costmaps.reachability_cost import reachability_cost
+from robocram.costmaps.relation_costs import (
+    behind_cost,
+    in_front_of_cost,
+    left_of_cost,
+    right_of_cost,
+)
+from robocram.costmaps.surface_costs import in_cost, on_cost
+from robocram.costmaps.visibility_cost import visibility_cost
+
+BUILTIN_COST_FUNCTIONS: Mapping[str, CostFunction] = MappingProxyType(
+    {
+        "behind": behind_cost,
+        "in_front_of": in_front_of_cost,
+        "inside": in_cost,
+        "left_of": left_of_cost,
+        "near": near_cost,
+        "occupancy": occupancy_cost,
+        "on": on_cost,
+        "reachability": reachability_cost,
+        "right_of": right_of_cost,
+        "visibility": visibility_cost,
+    }
+)

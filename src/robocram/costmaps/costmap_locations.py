@@ -1,0 +1,192 @@
+"""Location designators resolved by costmaps: the generator the location resolver runs.
+
+:class:`CostmapLocations` reads a designator's keys through the rules of
+``location_keys.pl``, multiplies the cost layers they name into a :class:`Costmap`,
+samples it lazily (seeded), turns each cell into a pose and shows it to the validators
+the rules name. After ``max_rejections`` rejections in a row (CRAM's 30), or when the
+costmap runs out before any pose was taken, it raises :class:`LocationNotFound`.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import Counter
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+from typing import Any, Literal
+
+import numpy as np
+
+from robocram.costmaps.cost_layer import CostFunction, CostLayer, LocationQuery
+from robocram.costmaps.cost_registry import BUILTIN_COST_FUNCTIONS
+from robocram.costmaps.costmap import Costmap, CostmapGrid
+from robocram.costmaps.errors import CostmapInputError, LocationNotFound
+from robocram.costmaps.location_keys import LocationPlan, install_location_keys, plan_location
+from robocram.costmaps.reachability_map import ReachabilityMaps
+from robocram.costmaps.validators import BUILTIN_VALIDATORS, Validator
+from robocram.designators import LocationResolver
+from robocram.tf import Pose
+from robocram.tf import quaternion as quat
+from robocram.world import RobotObject, World
+
+Sampling = Literal["random", "best"]
+ANCHOR_KEYS = ("object", "target", "on", "in_", "near", "left_of", "right_of",
+               "in_front_of", "behind")  # fmt: skip
+
+
+@dataclass
+class CostmapLocations:
+    """Turns location designators into poses in ``world`` with costmaps and validators."""
+
+    world: World
+    seed: int = 0
+    size: float = 4.0  # [m] side of the square searched around the designator's anchor
+    resolution: float = 0.05  # [m]
+    sampling: Sampling = "random"
+    max_rejections: int = 30
+    reach_maps: ReachabilityMaps = field(default_factory=ReachabilityMaps)
+    cost_functions: dict[str, CostFunction] = field(
+        default_factory=lambda: dict(BUILTIN_COST_FUNCTIONS)
+    )
+    validators: dict[str, Validator] = field(default_factory=lambda: dict(BUILTIN_VALIDATORS))
+
+    def __post_init__(self) -> None:
+        install_location_keys(self.world.kb)
+        CostmapGrid.around((0.0, 0.0), self.size, self.resolution)  # checks both
+
+    def add_cost_function(self, name: str, function: CostFunction) -> None:
+        """Register the Python side of a ``location_cost(Key, name)`` rule."""
+        self.cost_functions[name] = function
+
+    def add_validator(self, name: str, function: Validator) -> None:
+        """Register the Python side of a ``location_validator(Key, name)`` rule."""
+        self.validators[name] = function
+
+    def resolver(self, base: LocationResolver | None = None) -> LocationResolver:
+        """``base`` (default: pose properties only) that also runs this generator."""
+        return (base or LocationResolver()).with_generator("costmap", self.poses, priority=1)
+
+    def plan(self, designator: Any) -> LocationPlan:
+        """The layers and validators the rules give ``designator``."""
+        return plan_location(self.world.kb, designator)
+
+    def query(self, designator: Any) -> LocationQuery:
+        """The grid and robot the designator's costmap is built for."""
+        plan = self.plan(designator)
+        robot = self._robot(designator, plan)
+        resolution = designator.get("resolution", self.resolution)
+        size = designator.get("size", self.size)
+        anchor = next((designator.get(k) for k in ANCHOR_KEYS if designator.get(k) is not None),
+                      None)  # fmt: skip
+        if anchor is None:
+            raise CostmapInputError(
+                f"{designator.description} says nothing to search around; give one of "
+                f"{', '.join(ANCHOR_KEYS)}",
+                designator,
+            )
+        probe = LocationQuery(self.world, designator, CostmapGrid((0, 0), 1.0, (1, 1)), robot)
+        centre = probe.point(anchor, next(k for k in ANCHOR_KEYS if designator.get(k) is anchor))
+        grid = CostmapGrid.around(centre[:2], size, resolution)
+        return LocationQuery(self.world, designator, grid, robot, self.reach_maps)
+
+    def costmap(self, designator: Any) -> Costmap:
+        """The normalised product of the layers the designator's keys name."""
+        query = self.query(designator)
+        return self._costmap(query, self.plan(designator))[0]
+
+    def poses(self, designator: Any) -> Iterator[Pose]:
+        """Accepted poses for ``designator``, lazily; nothing if no key asks for a costmap."""
+        plan = self.plan(designator)
+        if plan.empty:
+            return
+        query = self.query(designator)
+        costmap, yaws = self._costmap(query, plan)
+        validators = [(name, self._validator(name)) for name in plan.validators]
+        rejected: Counter[str] = Counter()
+        accepted = in_a_row = 0
+        for pose in self._candidates(query, costmap, yaws):
+            culprit = next((name for name, check in validators if not check(query, pose)), None)
+            if culprit is None:
+                accepted, in_a_row = accepted + 1, 0
+                yield pose
+                continue
+            rejected[culprit] += 1
+            in_a_row += 1
+            if in_a_row >= self.max_rejections:
+                raise LocationNotFound(designator, rejected, accepted, in_a_row)
+        if accepted == 0:
+            raise LocationNotFound(designator, rejected, accepted, in_a_row)
+
+    def _robot(self, designator: Any, plan: LocationPlan) -> RobotObject | None:
+        if plan.robot_key is None:
+            robots = self.world.robots()
+            return robots[0] if robots else None
+        name = designator.get(plan.robot_key)
+        if name not in self.world or not isinstance(self.world.object(name), RobotObject):
+            known = ", ".join(r.name for r in self.world.robots()) or "none"
+            raise CostmapInputError(
+                f"{designator.description}: {plan.robot_key}={name!r} is not a robot in the "
+                f"world (robots: {known}); add it with world.add_robot or fix the name",
+                name,
+            )
+        return self.world.robot(name)
+
+    def _validator(self, name: str) -> Validator:
+        found = self.validators.get(name)
+        if found is None:
+            raise CostmapInputError(
+                f"a location_validator rule names {name!r}, which has no Python function; "
+                "register one with add_validator",
+                name,
+            )
+        return found
+
+    def _costmap(
+        self, query: LocationQuery, plan: LocationPlan
+    ) -> tuple[Costmap, np.ndarray | None]:
+        alive = np.ones(query.grid.shape, dtype=bool)
+        weights, heights, yaws = [], None, None
+        for key, name in plan.cost_functions:
+            function = self.cost_functions.get(name)
+            if function is None:
+                raise CostmapInputError(
+                    f"rule location_cost({key}, {name}) names a cost function with no Python "
+                    "side; register it with add_cost_function",
+                    name,
+                )
+            layer: CostLayer = function(query, query.designator.get(key), alive)
+            weights.append(np.where(alive, layer.weights, 0.0))
+            alive &= weights[-1] > 0
+            heights = layer.heights if layer.heights is not None else heights
+            yaws = layer.yaws if layer.yaws is not None else yaws
+        return Costmap.from_layers(query.grid, weights, heights), yaws
+
+    def _candidates(
+        self, query: LocationQuery, costmap: Costmap, yaws: np.ndarray | None
+    ) -> Iterator[Pose]:
+        seed = query.designator.get("seed", self.seed)
+        rng = np.random.default_rng(seed)
+        cells = costmap.best_first() if self.sampling == "best" else costmap.weighted_random(rng)
+        facing = _facing_point(query)
+        placed = query.designator.get("for_")
+        heading = self.world.pose(query.object(placed, "for_")).orientation if placed else None
+        for cell in cells:
+            x, y, z = costmap.position(cell, rng)
+            if heading is not None:
+                yield Pose((x, y, z), heading)
+                continue
+            if yaws is not None:
+                yaw = float(yaws[cell])
+            elif facing is not None:
+                yaw = math.atan2(facing[1] - y, facing[0] - x)
+            else:
+                yaw = 0.0
+            yield Pose((x, y, z), quat.from_euler(0.0, 0.0, yaw))
+
+
+def _facing_point(query: LocationQuery) -> tuple[float, float, float] | None:
+    """Robots face the target; placed objects keep their heading (None)."""
+    if query.robot is None or query.designator.get("for_") is not None:
+        return None
+    key = next(k for k in ANCHOR_KEYS if query.designator.get(k) is not None)
+    return query.point(query.designator.get(key), key)

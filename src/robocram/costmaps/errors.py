@@ -1,0 +1,56 @@
+"""Errors of the costmaps layer: one root, :class:`CostmapError`, with data-carrying kinds."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+from robocram.designators import GroundingError
+
+
+class CostmapError(Exception):
+    """Root of every error raised by :mod:`robocram.costmaps`."""
+
+
+class CostmapInputError(CostmapError, ValueError):
+    """A costmap or a location designator was given a value it cannot use.
+
+    Attributes:
+        culprit: the offending key, object name or value.
+    """
+
+    def __init__(self, message: str, culprit: Any) -> None:
+        super().__init__(message)
+        self.culprit = culprit
+
+
+class LocationKeyError(CostmapInputError):
+    """A location designator uses a key no rule knows, or two keys that exclude each other."""
+
+    def __init__(self, message: str, key: str, designator: Any = None) -> None:
+        super().__init__(message, key)
+        self.key = key
+        self.designator = designator
+
+
+class LocationNotFound(CostmapError, GroundingError):
+    """CRAM's 30 candidates in a row were rejected: the designator has no (more) pose.
+
+    Attributes:
+        rejections: how many candidates each validator rejected in all, by validator name.
+        accepted: how many poses the designator had yielded before.
+    """
+
+    def __init__(
+        self, designator: Any, rejections: Mapping[str, int], accepted: int, in_a_row: int
+    ) -> None:
+        self.rejections = dict(rejections)
+        self.accepted = accepted
+        counts = ", ".join(f"{name} rejected {n}" for name, n in sorted(self.rejections.items()))
+        GroundingError.__init__(
+            self,
+            f"{designator.description}: no location found after {in_a_row} "
+            f"rejections in a row ({counts or 'no candidates at all'}; {accepted} accepted "
+            "before); widen the search area, loosen the keys or clear the obstacles",
+            designator,
+        )

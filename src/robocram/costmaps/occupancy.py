@@ -1,0 +1,95 @@
+"""Occupancy: cells where the robot's base would overlap something in its height band.
+
+The footprint radius comes from the robot itself: the links fixed to its root link (the
+mobile base) as loaded from its URDF, measured in the world. Every other object whose
+bounds reach into the robot's height band blocks the cells within that radius of it.
+Articulated objects (a kitchen) block link by link, so a counter does not block the room.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from robocram.costmaps.cost_layer import CostLayer, LocationQuery
+from robocram.costmaps.costmap import BoolGrid, FloatGrid
+from robocram.costmaps.errors import CostmapInputError
+from robocram.tf import Vector3
+from robocram.world import RobotObject, World, link_aabbs
+
+FLOOR_CLEARANCE = 0.02  # [m] bounds lower than this are the floor, not obstacles
+
+Box = tuple[Vector3, Vector3]
+
+
+def base_links(robot: RobotObject) -> list[str]:
+    """The root link and every link fixed to it: the part that is the mobile base."""
+    model = robot.description.model
+    if model is None:
+        raise CostmapInputError(f"robot {robot.name!r} has no loaded model", robot.name)
+    found = [model.root_link]
+    for link in found:
+        found.extend(
+            j.child for j in model.joints.values() if j.parent == link and j.type == "fixed"
+        )
+    return found
+
+
+def footprint_radius(world: World, robot: RobotObject) -> float:
+    """Radius [m] around the base origin that holds the base links' x-y extents."""
+    base = world.pose(robot)
+    inverse = base.inverse().matrix()
+    bounds = link_aabbs(world, robot)
+    radius = 0.0
+    for link in base_links(robot):
+        low, high = bounds[link]
+        if high[2] - low[2] <= 0 or high[0] - low[0] > 5:  # frames without geometry
+            continue
+        for x in (low[0], high[0]):
+            for y in (low[1], high[1]):
+                local = inverse[:2, :2] @ np.array([x, y]) + inverse[:2, 3]
+                radius = max(radius, float(math.hypot(local[0], local[1])))
+    return radius
+
+
+def robot_height(world: World, robot: RobotObject) -> float:
+    """Top [m] of the robot's bounds over its base origin."""
+    low, high = world.aabb(robot)
+    return high[2] - world.pose(robot).position[2]
+
+
+def obstacle_boxes(world: World, robot: RobotObject | None, top: float) -> list[Box]:
+    """Bounds of every object (link by link) reaching into the band ``FLOOR_CLEARANCE..top``."""
+    carried = set(world.attachments(robot)) if robot is not None else set()
+    boxes: list[Box] = []
+    for obj in world.objects():
+        if obj is robot or obj.type == "floor" or obj.name in carried:
+            continue
+        parts = list(link_aabbs(world, obj).values()) if len(obj.link_index) > 1 else []
+        for low, high in parts or [world.aabb(obj)]:
+            if high[2] > FLOOR_CLEARANCE and low[2] < top and high[0] - low[0] < 1e3:
+                boxes.append((low, high))
+    return boxes
+
+
+def free_cells(query: LocationQuery, boxes: list[Box], radius: float) -> FloatGrid:
+    """1 in cells farther than ``radius`` [m] from every box, 0 elsewhere."""
+    x, y = query.centres()
+    free = np.ones(query.grid.shape)
+    for low, high in boxes:
+        dx = np.maximum(np.maximum(low[0] - x, x - high[0]), 0.0)
+        dy = np.maximum(np.maximum(low[1] - y, y - high[1]), 0.0)
+        free[np.hypot(dx, dy) < radius] = 0.0
+    return free
+
+
+def occupancy_cost(query: LocationQuery, value: Any, alive: BoolGrid) -> CostLayer:
+    """Rule out cells where the robot's base (radius from its URDF) would hit an obstacle."""
+    robot = query.robot
+    if robot is None:
+        return CostLayer(np.ones(query.grid.shape))
+    radius = footprint_radius(query.world, robot)
+    boxes = obstacle_boxes(query.world, robot, robot_height(query.world, robot))
+    return CostLayer(free_cells(query, boxes, radius))

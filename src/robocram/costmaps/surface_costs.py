@@ -1,0 +1,104 @@
+"""``on`` and ``in_``: where an object fits on a supporting surface or inside a container.
+
+Rays cast straight down over the grid find the support's top (or the container's inner
+bottom) cell by cell; cells where something else is hit first are taken. The free cells
+are then shrunk by the margin plus the placed object's footprint radius, so the object
+fits, and each cell's height is set so the object's bottom rests on the surface.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator
+from contextlib import contextmanager
+from typing import Any
+
+import numpy as np
+
+from robocram.costmaps.cost_layer import CostLayer, LocationQuery
+from robocram.costmaps.costmap import BoolGrid
+from robocram.costmaps.rays import cast_rays
+from robocram.tf import Pose
+from robocram.world import World, WorldObject
+
+SURFACE_MARGIN = 0.03  # [m] kept free between the placed object and the support's edges
+INNER_DEPTH = 0.02  # [m] an inside bottom lies at least this far below a container's rim
+FLAT = 0.9  # a hit counts as a surface if its normal's z is at least this
+RESTING_GAP = 0.002  # [m] the object is put this far above the surface
+_AWAY = (0.0, 0.0, 500.0)  # [m] where the placed object waits while the rays are cast
+
+
+def erode(mask: BoolGrid, radius_cells: float) -> BoolGrid:
+    """Cells of ``mask`` with every cell within ``radius_cells`` also in ``mask``."""
+    reach = math.floor(radius_cells)
+    out = mask.copy()
+    rows, cols = mask.shape
+    padded = np.zeros((rows + 2 * reach, cols + 2 * reach), dtype=bool)
+    padded[reach : reach + rows, reach : reach + cols] = mask
+    for dr in range(-reach, reach + 1):
+        for dc in range(-reach, reach + 1):
+            if dr * dr + dc * dc <= radius_cells * radius_cells:
+                out &= padded[reach + dr : reach + dr + rows, reach + dc : reach + dc + cols]
+    return out
+
+
+@contextmanager
+def _out_of_the_way(world: World, obj: WorldObject | None) -> Iterator[None]:
+    """Move ``obj`` far up so rays do not hit it; put it back exactly."""
+    if obj is None:
+        yield
+        return
+    pose = world.pose(obj)
+    x, y, z = pose.position
+    world.set_pose(obj, Pose((x + _AWAY[0], y + _AWAY[1], z + _AWAY[2]), pose.orientation))
+    try:
+        yield
+    finally:
+        world.set_pose(obj, pose)
+
+
+def _placed(query: LocationQuery) -> tuple[WorldObject | None, float, float]:
+    """The ``for_`` object, its footprint radius [m] and its frame's height over its bottom."""
+    value = query.designator.get("for_")
+    if value is None:
+        return None, 0.0, 0.0
+    obj = query.object(value, "for_")
+    low, high = query.world.aabb(obj)
+    radius = math.hypot(high[0] - low[0], high[1] - low[1]) / 2
+    return obj, radius, query.world.pose(obj).position[2] - low[2]
+
+
+def _surface(
+    query: LocationQuery, support: WorldObject, alive: BoolGrid, inside: bool
+) -> CostLayer:
+    world = query.world
+    low, high = world.aabb(support)
+    placed, radius, lift = _placed(query)
+    x, y = query.centres()
+    cells = np.argwhere(alive)
+    top = high[2] - 0.01 if inside else high[2] + 0.5
+    starts = [(float(x[r, c]), float(y[r, c]), top) for r, c in cells]
+    ends = [(sx, sy, low[2] - 0.01) for sx, sy, _ in starts]
+    heights = np.zeros(query.grid.shape)
+    free = np.zeros(query.grid.shape, dtype=bool)
+    with _out_of_the_way(world, placed):
+        hits = cast_rays(world, starts, ends)
+    for (r, c), hit in zip(cells, hits, strict=True):
+        if hit is None or hit.obj is not support or hit.normal[2] < FLAT:
+            continue
+        if inside and hit.position[2] > high[2] - INNER_DEPTH:
+            continue
+        free[r, c] = True
+        heights[r, c] = hit.position[2] + lift + RESTING_GAP
+    fits = erode(free, (SURFACE_MARGIN + radius) / query.grid.resolution)
+    return CostLayer(fits.astype(float), heights=heights)
+
+
+def on_cost(query: LocationQuery, value: Any, alive: BoolGrid) -> CostLayer:
+    """``on=support``: cells of the support's top face where the ``for_`` object fits."""
+    return _surface(query, query.object(value, "on"), alive, inside=False)
+
+
+def in_cost(query: LocationQuery, value: Any, alive: BoolGrid) -> CostLayer:
+    """``in_=container``: cells of the container's inner bottom where the object fits."""
+    return _surface(query, query.object(value, "in_"), alive, inside=True)

@@ -1,0 +1,121 @@
+"""Validators: a candidate pose is taken only if the world agrees it works.
+
+Each is ``fn(query, pose) -> bool``. They place the robot (or the object) at the pose,
+ask the world, and put everything back exactly as it was.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator, Mapping
+from contextlib import contextmanager
+from dataclasses import dataclass
+from types import MappingProxyType
+
+from robocram.costmaps.camera_aim import aimed_camera
+from robocram.costmaps.cost_layer import LocationQuery
+from robocram.costmaps.errors import CostmapInputError
+from robocram.costmaps.grasps import grasp_poses
+from robocram.kinematics import solve_ik
+from robocram.tf import Pose
+from robocram.world import RobotObject, World, WorldObject
+
+Validator = Callable[[LocationQuery, Pose], bool]
+VISIBLE_FRACTION = 0.9  # share of the object the aimed camera must see
+IK_RESTARTS = 30  # random restarts per grasp; bounded so a miss costs the same everywhere
+
+
+@contextmanager
+def placed(world: World, obj: WorldObject, pose: Pose) -> Iterator[None]:
+    """Put ``obj`` at ``pose`` for the block; restore its pose afterwards."""
+    before = world.pose(obj)
+    world.set_pose(obj, pose)
+    try:
+        yield
+    finally:
+        world.set_pose(obj, before)
+
+
+def _robot(query: LocationQuery) -> RobotObject:
+    if query.robot is None:
+        raise CostmapInputError(f"{query.designator.description} names no robot", None)
+    return query.robot
+
+
+def robot_collision_free(query: LocationQuery, pose: Pose) -> bool:
+    """Whether the robot standing at ``pose`` touches nothing but the floor."""
+    robot = _robot(query)
+    with placed(query.world, robot, pose):
+        return not query.world.in_collision(robot)
+
+
+def object_collision_free(query: LocationQuery, pose: Pose) -> bool:
+    """Whether the ``for_`` object at ``pose`` touches nothing but its support."""
+    obj = query.object(query.designator.get("for_"), "for_")
+    support = [query.designator.get(k) for k in ("on", "in_")]
+    ignore = [query.object(s, "on") for s in support if s is not None]
+    with placed(query.world, obj, pose):
+        return not query.world.collisions(obj, ignore)
+
+
+def visible(query: LocationQuery, pose: Pose) -> bool:
+    """Whether the robot at ``pose``, camera aimed at the target, sees it (90 % of it)."""
+    robot, world = _robot(query), query.world
+    target = query.designator.get("object")
+    with placed(world, robot, pose):
+        if target is None:
+            point = query.point(query.designator.get("target"), "target")
+            camera = aimed_camera(world, robot, point)
+            hit = world.ray_cast(camera.pose.position, point)
+            gap = Pose(point).distance_to(camera.pose) - (hit.distance if hit else 1e9)
+            return gap < 0.02
+        obj = query.object(target, "object")
+        camera = aimed_camera(world, robot, query.point(obj, "object"))
+        return world.visibility_from(camera, obj).fraction >= VISIBLE_FRACTION
+
+
+@dataclass(frozen=True)
+class Reach:
+    """How a robot standing at a base pose grasps an object."""
+
+    arm: str
+    joint_positions: dict[str, float]  # [rad | m] torso included
+    tool_in_base: Pose  # the grasp, in the robot's root link
+
+
+def reach_object(
+    world: World, robot: RobotObject, obj: WorldObject, base: Pose, arm: str | None = None
+) -> Reach | None:
+    """An IK solution (torso free) grasping ``obj`` from above from ``base``, or None."""
+    desc = robot.description
+    arms = [arm] if arm is not None else [a for a in desc.arms if a != desc.neck_arm]
+    seed = world.joint_states(robot)
+    use_torso = desc.torso_joint is not None
+    for name in arms:
+        if name not in desc.arms:
+            raise CostmapInputError(
+                f"robot {robot.name!r} has no arm {name!r}; it has {sorted(desc.arms)}", name
+            )
+        for grasp in grasp_poses(world, obj, desc, name):
+            target = base.inverse() * grasp
+            result = solve_ik(desc, name, target, seed=seed, use_torso=use_torso,
+                              max_restarts=IK_RESTARTS, timeout=10.0)  # fmt: skip
+            if result.success:
+                return Reach(name, dict(result.joint_positions), target)
+    return None
+
+
+def reachable(query: LocationQuery, pose: Pose) -> bool:
+    """Whether the robot at ``pose`` reaches a grasp of the object with IK, torso free."""
+    robot = _robot(query)
+    obj = query.object(query.designator.get("object"), "object")
+    return reach_object(query.world, robot, obj, pose, query.designator.get("arm")) is not None
+
+
+BUILTIN_VALIDATORS: Mapping[str, Validator] = MappingProxyType(
+    {
+        "object_collision_free": object_collision_free,
+        "reachable": reachable,
+        "robot_collision_free": robot_collision_free,
+        "visible": visible,
+    }
+)
