@@ -21,7 +21,7 @@ from robocram.world import RobotObject, World, WorldObject
 
 Validator = Callable[[LocationQuery, Pose], bool]
 VISIBLE_FRACTION = 0.9  # share of the object the aimed camera must see
-IK_RESTARTS = 30  # random restarts per grasp; bounded so a miss costs the same everywhere
+IK_RESTARTS = 30  # random restarts per grasp: a miss costs a bounded, counted budget
 
 
 @contextmanager
@@ -97,8 +97,9 @@ def reach_object(
             )
         for grasp in grasp_poses(world, obj, desc, name):
             target = base.inverse() * grasp
-            result = solve_ik(desc, name, target, seed=seed, use_torso=use_torso,
-                              max_restarts=IK_RESTARTS, timeout=10.0)  # fmt: skip
+            result = solve_ik(
+                desc, name, target, seed=seed, use_torso=use_torso, max_restarts=IK_RESTARTS
+            )
             if result.success:
                 return Reach(name, dict(result.joint_positions), target)
     return None
