@@ -17,7 +17,7 @@ from robocram.costmaps.cost_layer import CostLayer, LocationQuery
 from robocram.costmaps.costmap import BoolGrid, FloatGrid
 from robocram.costmaps.errors import CostmapInputError
 from robocram.tf import Vector3
-from robocram.world import RobotObject, World, link_aabbs
+from robocram.world import RobotObject, World
 
 FLOOR_CLEARANCE = 0.02  # [m] bounds lower than this are the floor, not obstacles
 
@@ -41,10 +41,9 @@ def footprint_radius(world: World, robot: RobotObject) -> float:
     """Radius [m] around the base origin that holds the base links' x-y extents."""
     base = world.pose(robot)
     inverse = base.inverse().matrix()
-    bounds = link_aabbs(world, robot)
     radius = 0.0
     for link in base_links(robot):
-        low, high = bounds[link]
+        low, high = world.link_aabb(robot, link)
         if high[2] - low[2] <= 0 or high[0] - low[0] > 5:  # frames without geometry
             continue
         for x in (low[0], high[0]):
@@ -67,7 +66,8 @@ def obstacle_boxes(world: World, robot: RobotObject | None, top: float) -> list[
     for obj in world.objects():
         if obj is robot or obj.type == "floor" or obj.name in carried:
             continue
-        parts = list(link_aabbs(world, obj).values()) if len(obj.link_index) > 1 else []
+        links = world.link_names(obj) if len(obj.link_index) > 1 else []
+        parts = [world.link_aabb(obj, link) for link in links]
         for low, high in parts or [world.aabb(obj)]:
             if high[2] > FLOOR_CLEARANCE and low[2] < top and high[0] - low[0] < 1e3:
                 boxes.append((low, high))

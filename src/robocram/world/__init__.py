@@ -17,7 +17,6 @@ from robocram.world.errors import (
     WorldError,
 )
 from robocram.world.joint_state import ClampedJoint, JointLimits
-from robocram.world.link_bounds import link_aabb, link_aabbs
 from robocram.world.ray_hit import RayHit
 from robocram.world.visibility import Visibility
 from robocram.world.world import World
@@ -49,6 +48,4 @@ __all__ = [
     "WorldObject",
     "WorldState",
     "catalogue_names",
-    "link_aabb",
-    "link_aabbs",
 ]
