@@ -7,7 +7,7 @@ validators check in the world. Bind it with ``using_location_resolver(locs.resol
 """
 
 from robocram.costmaps.cost_layer import CostFunction, CostLayer, LocationQuery
-from robocram.costmaps.costmap import Costmap, CostmapGrid
+from robocram.costmaps.costmap import Costmap
 from robocram.costmaps.costmap_locations import CostmapLocations
 from robocram.costmaps.distance_costs import gaussian, ring
 from robocram.costmaps.errors import (
@@ -16,6 +16,7 @@ from robocram.costmaps.errors import (
     LocationKeyError,
     LocationNotFound,
 )
+from robocram.costmaps.grid import CostmapGrid
 from robocram.costmaps.reachability_map import (
     ReachabilityMap,
     ReachabilityMaps,

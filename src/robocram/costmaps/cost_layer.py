@@ -14,8 +14,8 @@ from typing import Any
 
 import numpy as np
 
-from robocram.costmaps.costmap import BoolGrid, CostmapGrid, FloatGrid
 from robocram.costmaps.errors import CostmapInputError
+from robocram.costmaps.grid import BoolGrid, CostmapGrid, FloatGrid
 from robocram.costmaps.reachability_map import ReachabilityMaps
 from robocram.designators import ObjectDesignator
 from robocram.tf import Pose, PoseStamped

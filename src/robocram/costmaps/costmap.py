@@ -9,86 +9,21 @@ generator (Efraimidis-Spirakis keys), so the same seed gives the same cells.
 
 from __future__ import annotations
 
-import math
+import itertools
 from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
-from numpy.typing import NDArray
 
 from robocram.costmaps.errors import CostmapInputError
+from robocram.costmaps.grid import CostmapGrid, FloatGrid
+from robocram.costmaps.picture import draw_costmap
 
 if TYPE_CHECKING:
     from pathlib import Path
 
     from robocram.world import World
-
-FloatGrid = NDArray[np.float64]
-BoolGrid = NDArray[np.bool_]
-
-
-@dataclass(frozen=True)
-class CostmapGrid:
-    """Where the cells are: ``origin`` is the map (x, y) [m] of cell (0, 0)'s centre.
-
-    Arrays over the grid are indexed ``[row, column]`` = ``[y index, x index]``.
-    """
-
-    origin: tuple[float, float]  # [m]
-    resolution: float  # [m] cell side
-    shape: tuple[int, int]  # (rows along y, columns along x)
-
-    def __post_init__(self) -> None:
-        if not (isinstance(self.resolution, int | float) and self.resolution > 0):
-            raise CostmapInputError(
-                f"costmap resolution must be a number > 0 [m], got {self.resolution!r}; try 0.05",
-                self.resolution,
-            )
-        if min(self.shape) < 1:
-            raise CostmapInputError(f"costmap shape {self.shape} has no cells", self.shape)
-
-    @classmethod
-    def around(cls, centre: tuple[float, float], size: float, resolution: float) -> CostmapGrid:
-        """A square grid of side ``size`` [m] centred on ``centre`` (map x, y)."""
-        if not (isinstance(resolution, int | float) and resolution > 0):
-            raise CostmapInputError(
-                f"costmap resolution must be a number > 0 [m], got {resolution!r}; try 0.05",
-                resolution,
-            )
-        if not size > 0:
-            raise CostmapInputError(f"costmap size must be > 0 [m], got {size!r}", size)
-        cells = max(1, math.ceil(size / resolution))
-        half = (cells - 1) * resolution / 2
-        return cls((centre[0] - half, centre[1] - half), float(resolution), (cells, cells))
-
-    def centres(self) -> tuple[FloatGrid, FloatGrid]:
-        """Map x and y [m] of every cell centre, each an array of :attr:`shape`."""
-        rows, cols = self.shape
-        xs = self.origin[0] + self.resolution * np.arange(cols)
-        ys = self.origin[1] + self.resolution * np.arange(rows)
-        x, y = np.meshgrid(xs, ys)
-        return x, y
-
-    def cell_of(self, x: float, y: float) -> tuple[int, int] | None:
-        """``(row, column)`` of the cell holding map point (x, y), or None outside."""
-        col = round((x - self.origin[0]) / self.resolution)
-        row = round((y - self.origin[1]) / self.resolution)
-        if 0 <= row < self.shape[0] and 0 <= col < self.shape[1]:
-            return row, col
-        return None
-
-    def extent(self) -> tuple[float, float, float, float]:
-        """``(x_min, x_max, y_min, y_max)`` [m] of the grid's outer edges."""
-        half = self.resolution / 2
-        rows, cols = self.shape
-        x0, y0 = self.origin
-        return (
-            x0 - half,
-            x0 + (cols - 1) * self.resolution + half,
-            y0 - half,
-            y0 + (rows - 1) * self.resolution + half,
-        )
 
 
 @dataclass(frozen=True, eq=False)
@@ -159,6 +94,5 @@ class Costmap:
         pixels_per_cell: int = 4,
     ) -> Path:
         """Draw the weights over a top-down render of ``world``; mark the ``marks`` best cells."""
-        from robocram.costmaps.picture import draw_costmap
-
-        return draw_costmap(self, path, world, marks, pixels_per_cell)
+        best = list(itertools.islice(self.best_first(), marks))
+        return draw_costmap(self.grid, self.weights, best, path, world, pixels_per_cell)

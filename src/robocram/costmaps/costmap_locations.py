@@ -19,8 +19,9 @@ import numpy as np
 
 from robocram.costmaps.cost_layer import CostFunction, CostLayer, LocationQuery
 from robocram.costmaps.cost_registry import BUILTIN_COST_FUNCTIONS
-from robocram.costmaps.costmap import Costmap, CostmapGrid
+from robocram.costmaps.costmap import Costmap
 from robocram.costmaps.errors import CostmapInputError, LocationNotFound
+from robocram.costmaps.grid import CostmapGrid
 from robocram.costmaps.location_keys import LocationPlan, install_location_keys, plan_location
 from robocram.costmaps.reachability_map import ReachabilityMaps
 from robocram.costmaps.validators import BUILTIN_VALIDATORS, Validator

@@ -7,8 +7,8 @@ from typing import Any
 import numpy as np
 
 from robocram.costmaps.cost_layer import CostLayer, LocationQuery
-from robocram.costmaps.costmap import BoolGrid, CostmapGrid, FloatGrid
 from robocram.costmaps.errors import CostmapInputError
+from robocram.costmaps.grid import BoolGrid, CostmapGrid, FloatGrid
 
 NEAR_DISTANCE = 1.0  # [m] beyond this from the reference object's bounds nothing is "near"
 

@@ -14,8 +14,8 @@ from typing import Any
 import numpy as np
 
 from robocram.costmaps.cost_layer import CostLayer, LocationQuery
-from robocram.costmaps.costmap import BoolGrid, FloatGrid
 from robocram.costmaps.errors import CostmapInputError
+from robocram.costmaps.grid import BoolGrid, FloatGrid
 from robocram.tf import Vector3
 from robocram.world import RobotObject, World
 

@@ -2,20 +2,16 @@
 
 from __future__ import annotations
 
-import itertools
 import math
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import NDArray
 from PIL import Image, ImageDraw
 
+from robocram.costmaps.grid import CostmapGrid, FloatGrid
 from robocram.tf import Pose
 from robocram.world import Camera, World
-
-if TYPE_CHECKING:
-    from robocram.costmaps.costmap import Costmap
 
 VIEW_HEIGHT = 30.0  # [m] the top-down camera's height: far enough to look almost orthographic
 HEAT = np.array((255.0, 40.0, 0.0))  # colour of the highest weight
@@ -39,24 +35,29 @@ def top_down(
 
 
 def draw_costmap(
-    costmap: Costmap, path: str | Path, world: World | None, marks: int, pixels_per_cell: int
+    grid: CostmapGrid,
+    weights: FloatGrid,
+    marks: list[tuple[int, int]],
+    path: str | Path,
+    world: World | None,
+    pixels_per_cell: int,
 ) -> Path:
-    """Write ``costmap`` as a PNG at ``path`` (see :meth:`Costmap.to_png`)."""
-    rows, cols = costmap.grid.shape
+    """Write ``weights`` as a PNG at ``path``, circling the cells ``marks`` (``Costmap.to_png``)."""
+    rows, cols = grid.shape
     size = (cols * pixels_per_cell, rows * pixels_per_cell)
     if world is not None:
-        background = top_down(world, costmap.grid.extent(), size).astype(float)
+        background = top_down(world, grid.extent(), size).astype(float)
     else:
         background = np.full((size[1], size[0], 3), 255.0)
-    peak = float(costmap.weights.max())
-    share = costmap.weights / peak if peak > 0 else costmap.weights
+    peak = float(weights.max())
+    share = weights / peak if peak > 0 else weights
     alpha = np.kron(share[::-1], np.ones((pixels_per_cell, pixels_per_cell)))[..., None]
     blended = np.where(alpha > 0, (1 - 0.75 * alpha) * background + 0.75 * alpha * HEAT,
                        background)  # fmt: skip
     image = Image.fromarray(blended.clip(0, 255).astype(np.uint8))
     draw = ImageDraw.Draw(image)
     radius = max(2, pixels_per_cell)
-    for row, col in itertools.islice(costmap.best_first(), marks):
+    for row, col in marks:
         cx = (col + 0.5) * pixels_per_cell
         cy = (rows - row - 0.5) * pixels_per_cell
         draw.ellipse((cx - radius, cy - radius, cx + radius, cy + radius), outline=MARK, width=2)

@@ -12,9 +12,9 @@ from typing import Any
 import numpy as np
 
 from robocram.costmaps.cost_layer import CostLayer, LocationQuery
-from robocram.costmaps.costmap import BoolGrid
 from robocram.costmaps.errors import CostmapInputError
 from robocram.costmaps.grasps import grasp_point
+from robocram.costmaps.grid import BoolGrid
 
 
 def reachability_cost(query: LocationQuery, value: Any, alive: BoolGrid) -> CostLayer:

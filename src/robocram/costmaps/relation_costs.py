@@ -14,8 +14,8 @@ from typing import Any
 import numpy as np
 
 from robocram.costmaps.cost_layer import CostLayer, LocationQuery
-from robocram.costmaps.costmap import BoolGrid
 from robocram.costmaps.distance_costs import near_cost
+from robocram.costmaps.grid import BoolGrid
 
 # side -> (forward component, left component) of the wanted direction from the reference
 _SIDES: dict[str, tuple[float, float]] = {

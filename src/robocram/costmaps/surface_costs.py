@@ -16,7 +16,7 @@ from typing import Any
 import numpy as np
 
 from robocram.costmaps.cost_layer import CostLayer, LocationQuery
-from robocram.costmaps.costmap import BoolGrid
+from robocram.costmaps.grid import BoolGrid
 from robocram.costmaps.rays import cast_rays
 from robocram.tf import Pose
 from robocram.world import World, WorldObject

@@ -16,9 +16,9 @@ import numpy as np
 
 from robocram.costmaps.camera_aim import camera_description
 from robocram.costmaps.cost_layer import CostLayer, LocationQuery
-from robocram.costmaps.costmap import BoolGrid
 from robocram.costmaps.distance_costs import ring
 from robocram.costmaps.errors import CostmapInputError
+from robocram.costmaps.grid import BoolGrid
 from robocram.costmaps.rays import cast_rays
 from robocram.tf import Pose
 from robocram.world import World, WorldObject
