@@ -6,15 +6,19 @@ from robocram.world.camera import Camera
 from robocram.world.catalogue import catalogue_names
 from robocram.world.contact_point import ContactPoint
 from robocram.world.errors import (
+    AttachmentCycleError,
+    BodyLoadError,
     DuplicateObjectError,
     NoCameraError,
     NotARobotError,
+    TooManyLinksError,
     UnknownItemError,
     UnknownJointError,
     UnknownLinkError,
     UnknownObjectError,
     WorldClosedError,
     WorldError,
+    WorldValueError,
 )
 from robocram.world.joint_state import ClampedJoint, JointLimits
 from robocram.world.ray_hit import RayHit
@@ -25,6 +29,8 @@ from robocram.world.world_state import WorldState
 
 __all__ = [
     "Attachment",
+    "AttachmentCycleError",
+    "BodyLoadError",
     "Camera",
     "ClampedJoint",
     "ContactPoint",
@@ -36,6 +42,7 @@ __all__ = [
     "RayHit",
     "RobotObject",
     "ShapeSpec",
+    "TooManyLinksError",
     "UnknownItemError",
     "UnknownJointError",
     "UnknownLinkError",
@@ -45,6 +52,7 @@ __all__ = [
     "World",
     "WorldClosedError",
     "WorldError",
+    "WorldValueError",
     "WorldObject",
     "WorldState",
     "catalogue_names",

@@ -100,3 +100,45 @@ class WorldClosedError(WorldError):
 
     def __init__(self) -> None:
         super().__init__("this World was closed; create a new World() or use world.copy() first")
+
+
+class WorldValueError(WorldError, ValueError):
+    """An argument out of its range (a time step, a duration); the message names it."""
+
+
+class BodyLoadError(WorldError):
+    """PyBullet could not make a body from a file; the world is left as it was."""
+
+    def __init__(self, name: str, source: str, why: str) -> None:
+        self.name = name
+        self.source = source
+        self.why = why
+        super().__init__(f"cannot add {name!r} from {source}: {why}")
+
+
+class TooManyLinksError(BodyLoadError):
+    """A body with more moving or fixed links than PyBullet can hold."""
+
+    def __init__(self, name: str, source: str, links: int, limit: int) -> None:
+        self.links = links
+        self.limit = limit
+        super().__init__(
+            name,
+            source,
+            f"it has {links} links below its root and PyBullet holds at most {limit}; drop "
+            "links the projection does not need or merge chains of fixed joints in the URDF",
+        )
+
+
+class AttachmentCycleError(WorldError):
+    """An attachment that would make an object carry itself (A on B, B on A)."""
+
+    def __init__(self, obj: str, carrier: str, chain: list[str]) -> None:
+        self.obj = obj
+        self.carrier = carrier
+        self.chain = tuple(chain)
+        loop = " hangs from ".join(repr(name) for name in [*chain, obj])
+        super().__init__(
+            f"cannot attach {obj!r} to {carrier!r}: {carrier!r} already hangs from {obj!r}, "
+            f"so {loop}; detach one of them first"
+        )

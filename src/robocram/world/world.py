@@ -18,13 +18,14 @@ from numpy.typing import NDArray
 from robocram.robots import RobotDescription, install_description, load_description
 from robocram.tf import Pose, PoseLike, Vector3
 from robocram.world import contacts, spatial_relations, visibility
+from robocram.world.body_loading import MAX_LINKS
 from robocram.world.body_spec import GREY, BodySpec, MeshSpec, Rgba, ShapeSpec, UrdfSpec
 from robocram.world.camera import Camera
 from robocram.world.catalogue import catalogue_item
 from robocram.world.contact_point import ContactPoint
-from robocram.world.errors import NoCameraError
+from robocram.world.errors import NoCameraError, TooManyLinksError, WorldValueError
 from robocram.world.png import write_png
-from robocram.world.ray_hit import RayHit
+from robocram.world.ray_hit import RayHit, cast_rays
 from robocram.world.robot_urdf import robot_urdf_file
 from robocram.world.visibility import Visibility
 from robocram.world.world_core import ORIGIN, ObjectRef, WorldCore
@@ -136,16 +137,38 @@ class World(WorldCore):
     def add_robot(
         self, robot: str | RobotDescription, pose: PoseLike = ORIGIN, name: str | None = None
     ) -> RobotObject:
-        """Add a robot (fixed base, joints held) by built-in name or description."""
+        """Add a robot (fixed base, joints held) by built-in name or description.
+
+        Raises:
+            TooManyLinksError: the model has more links than PyBullet holds (before loading).
+        """
         desc = load_description(robot)
+        model = desc.model
+        assert model is not None  # load_description fills it
+        if len(model.joints) > MAX_LINKS:
+            raise TooManyLinksError(name or desc.name, str(desc.urdf), len(model.joints), MAX_LINKS)
         spec = UrdfSpec(robot_urdf_file(desc), fixed_base=True)
         handle = RobotObject(name or desc.name, "robot", -1, spec, description=desc)
         self.insert(handle, pose)
         self.set_held_joints(handle, dict.fromkeys(self.joint_states(handle), 0.0))
         self._start_within_limits(handle)
-        if self._kb is not None:
-            self._install_description(desc)
         return handle
+
+    def insert(self, handle: WorldObject, pose: PoseLike = ORIGIN) -> WorldObject:
+        """Add ``handle``'s body (see :meth:`WorldCore.insert`); a robot's facts join the KB."""
+        super().insert(handle, pose)
+        if isinstance(handle, RobotObject) and self._kb is not None:
+            self._install_description(handle.description)
+        return handle
+
+    def remove(self, obj: ObjectRef) -> None:
+        """Take ``obj`` out (see :meth:`WorldCore.remove`); a robot's facts leave the KB."""
+        handle = self.object(obj)
+        super().remove(handle)
+        if isinstance(handle, RobotObject) and self._kb is not None:
+            name = handle.description.name
+            if not any(r.description.name == name for r in self.robots()):
+                self._kb.add_fact_group(f"{name}_description", [])
 
     def _start_within_limits(self, robot: RobotObject) -> None:
         """Put every joint at its in-limit value nearest 0 (some grippers exclude 0)."""
@@ -172,8 +195,9 @@ class World(WorldCore):
 
     def copy(self, gui: bool = False) -> World:
         """An independent world (its own client) with the same objects and state."""
+        state = WorldState.capture(self)  # a closed world raises WorldClosedError here
         other = World(gui=gui, gravity=self.gravity, time_step=self.time_step)
-        WorldState.capture(self).recreate(other)
+        state.recreate(other)
         return other
 
     def aabb(self, obj: ObjectRef) -> tuple[Vector3, Vector3]:
@@ -348,21 +372,8 @@ class World(WorldCore):
     ) -> list[RayHit | None]:
         """:meth:`ray_cast` for many rays in one pybullet call."""
         if len(starts) != len(ends):
-            raise ValueError(f"{len(starts)} ray starts but {len(ends)} ends")
-        by_body = {o.body_id: o for o in self.objects()}
-        hits = pybullet.rayTestBatch(
-            [list(s) for s in starts], [list(e) for e in ends], physicsClientId=self._cid()
-        )
-        out: list[RayHit | None] = []
-        for start, end, hit in zip(starts, ends, hits, strict=True):
-            obj = by_body.get(hit[0])
-            if obj is None:
-                out.append(None)
-                continue
-            link = next((n for n, i in obj.link_index.items() if i == hit[1]), None)
-            length = float(np.linalg.norm(np.subtract(end, start)))
-            out.append(RayHit(obj, link, tuple(hit[3]), tuple(hit[4]), hit[2] * length))
-        return out
+            raise WorldValueError(f"{len(starts)} ray starts but {len(ends)} ends")
+        return cast_rays(self, starts, ends)
 
     @property
     def kb(self) -> KnowledgeBase:

@@ -13,7 +13,8 @@ import pybullet
 
 from robocram.robots import mimic_followers
 from robocram.tf import Pose, PoseLike
-from robocram.world.attachment import Attachment
+from robocram.world.attachment import Attachment, check_acyclic
+from robocram.world.body_loading import create_body
 from robocram.world.errors import (
     DuplicateObjectError,
     NotARobotError,
@@ -22,6 +23,7 @@ from robocram.world.errors import (
     UnknownObjectError,
     WorldClosedError,
     WorldError,
+    WorldValueError,
 )
 from robocram.world.joint_state import ClampedJoint, JointLimits, clamp_values
 from robocram.world.world_object import RobotObject, WorldObject
@@ -35,6 +37,9 @@ class WorldCore:
     """One pybullet client, its named bodies, attachments and the joints robots hold."""
 
     def __init__(self, gui: bool = False, gravity: float = -9.81, time_step: float = 1 / 240):
+        _check_time_step(time_step)
+        if not math.isfinite(gravity):
+            raise WorldValueError(f"gravity must be a finite number [m/s^2], got {gravity!r}")
         try:
             self.client: int = pybullet.connect(pybullet.GUI if gui else pybullet.DIRECT)
         except pybullet.error as err:
@@ -80,7 +85,7 @@ class WorldCore:
         if handle.name in self._objects:
             raise DuplicateObjectError(handle.name)
         cid = self._cid()
-        handle.body_id = handle.spec.create(cid)
+        handle.body_id = create_body(handle.name, handle.spec, cid)
         dyn = pybullet.getDynamicsInfo(handle.body_id, -1, physicsClientId=cid)
         self._inertial[handle.name] = Pose(dyn[3], dyn[4])
         handle.joint_index.clear()
@@ -265,6 +270,7 @@ class WorldCore:
         carrier = self.object(robot)
         if handle is carrier:
             raise ValueError(f"cannot attach {handle.name!r} to itself")
+        check_acyclic(self._attachments, handle.name, carrier.name)
         link_pose = self.link_pose(carrier, link)
         rel = link_pose.inverse() * self.pose(handle)
         self._attachments[handle.name] = Attachment(handle.name, carrier.name, link, rel)
@@ -284,7 +290,8 @@ class WorldCore:
         new: dict[str, Attachment] = {}
         for att in attachments:
             self._link_index(self.object(att.robot), att.link)
-            new[self.object(att.obj).name] = att
+            check_acyclic(new, self.object(att.obj).name, att.robot)
+            new[att.obj] = att
         self._attachments = new
 
     def held_joints(self, obj: ObjectRef) -> dict[str, float]:
@@ -342,8 +349,16 @@ class WorldCore:
     def simulate(self, seconds: float) -> int:
         """Run physics for ``seconds`` [s] of simulated time; return the number of steps."""
         if not (seconds >= 0 and math.isfinite(seconds)):
-            raise ValueError(f"simulate needs a finite duration >= 0 [s], got {seconds!r}")
+            raise WorldValueError(f"simulate needs a finite duration >= 0 [s], got {seconds!r}")
+        _check_time_step(self.time_step)
         steps = round(seconds / self.time_step)
         for _ in range(steps):
             self.step()
         return steps
+
+
+def _check_time_step(time_step: float) -> None:
+    if not (time_step > 0 and math.isfinite(time_step)):
+        raise WorldValueError(
+            f"time_step must be a finite number of seconds > 0 (e.g. 1/240), got {time_step!r}"
+        )

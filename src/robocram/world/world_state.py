@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import pybullet
 
 from robocram.world.attachment import Attachment
+from robocram.world.errors import WorldClosedError
 from robocram.world.world_core import WorldCore
 from robocram.world.world_object import RobotObject, WorldObject
 
@@ -38,6 +39,8 @@ class WorldState:
     @classmethod
     def capture(cls, world: WorldCore) -> WorldState:
         """Snapshot ``world`` now."""
+        if world.closed:
+            raise WorldClosedError()
         handles = tuple(world.objects())
         return cls(
             handles=handles,
@@ -48,10 +51,14 @@ class WorldState:
         )
 
     def restore(self, world: WorldCore) -> None:
-        """Put ``world`` (the one captured) back: objects, poses, joints, attachments."""
-        keep = {h.name for h in self.handles}
+        """Put ``world`` (the one captured) back: objects, poses, joints, attachments.
+
+        Objects are matched by identity: one added under a name that an object had when
+        the state was captured is removed, and the captured handle comes back.
+        """
+        keep = {id(h) for h in self.handles}
         for obj in world.objects():
-            if obj.name not in keep:
+            if id(obj) not in keep:
                 world.remove(obj)
         for handle in self.handles:
             if handle.name not in world:

@@ -1,0 +1,129 @@
+"""Bad input to the world ends in a typed error and an unchanged world (issue 11).
+
+Before: a 129-link robot failed with a raw ``pybullet.error`` and left a half-made body;
+a broken URDF gave ``pybullet.error``; a restore kept a box named ``mug``; a robot added
+inside ``stored_state`` left its facts; A on B on A recursed without end; a zero time step
+divided by zero and a negative one simulated nothing; copying a closed world crashed.
+"""
+
+from __future__ import annotations
+
+import warnings
+from collections.abc import Iterator
+from pathlib import Path
+
+import pybullet
+import pytest
+
+from robocram.robots import RobotDescription
+from robocram.robots.example_robot_data import example_robot_data_folder
+from robocram.tf import Pose
+from robocram.world import (
+    AttachmentCycleError,
+    BodyLoadError,
+    TooManyLinksError,
+    World,
+    WorldClosedError,
+    WorldValueError,
+)
+
+
+@pytest.fixture
+def world() -> Iterator[World]:
+    with World() as w:
+        w.add_floor()
+        w.add_item("mug", "mug", Pose((1, -0.2, 0.7)))
+        yield w
+
+
+def _bodies(world: World) -> int:
+    return int(pybullet.getNumBodies(physicsClientId=world.client))
+
+
+def _tiago_dual() -> Path:
+    return next(example_robot_data_folder().rglob("tiago_dual.urdf"))
+
+
+def test_a_body_with_too_many_links_is_refused_and_leaves_nothing(world: World) -> None:
+    with pytest.raises(TooManyLinksError, match=r"129 links .* at most 128") as info:
+        world.add_urdf("tiago", _tiago_dual())
+    assert info.value.source.endswith("tiago_dual.urdf")
+    assert [o.name for o in world.objects()] == ["floor", "mug"] and _bodies(world) == 2
+
+
+def test_a_robot_with_too_many_links_is_refused_before_loading(world: World) -> None:
+    desc = RobotDescription("tiago_dual", _tiago_dual(), base_frame="base_footprint")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # its missing meshes
+        with pytest.raises(TooManyLinksError, match="merge chains of fixed joints"):
+            world.add_robot(desc)
+    assert "tiago_dual" not in world and _bodies(world) == 2
+
+
+def test_a_failed_load_names_the_file_and_leaves_the_world(world: World, tmp_path: Path) -> None:
+    broken = tmp_path / "broken.urdf"
+    broken.write_text("<robot name='r'><link name='a'>", encoding="utf-8")
+    with pytest.raises(BodyLoadError, match=r"cannot add 'thing' from .*broken\.urdf"):
+        world.add_urdf("thing", broken)
+    with pytest.raises(BodyLoadError, match="does not exist"):
+        world.add_urdf("thing", tmp_path / "nowhere.urdf")
+    assert "thing" not in world and _bodies(world) == 2
+    world.add_box("thing", (0.1, 0.1, 0.1))  # the name is still free
+
+
+def test_restore_brings_back_the_object_not_a_namesake(world: World) -> None:
+    mug = world.object("mug")
+    with world.stored_state():
+        world.remove("mug")
+        world.add_box("mug", (0.1, 0.1, 0.1), Pose((0, 0, 2)))
+    assert world.object("mug") is mug and world.object("mug").type == "mug"
+    assert world.pose("mug").position == pytest.approx((1, -0.2, 0.7), abs=1e-9)
+    assert _bodies(world) == 2
+
+
+def test_restore_takes_the_facts_of_a_robot_added_inside(world: World) -> None:
+    with world.stored_state():
+        world.add_robot("hsrb")
+        assert world.kb.first("robot(R)") == {"R": "hsrb"}
+    assert "hsrb" not in world
+    assert world.kb.first("robot(R)") is None
+
+
+def test_a_robot_removed_inside_comes_back_with_its_facts() -> None:
+    with World() as world:
+        world.add_robot("hsrb")
+        assert world.kb.first("robot(R)") == {"R": "hsrb"}
+        with world.stored_state():
+            world.remove("hsrb")
+            assert world.kb.first("robot(R)") is None
+        assert world.kb.first("robot(R)") == {"R": "hsrb"}
+
+
+def test_an_attachment_cycle_is_refused(world: World) -> None:
+    world.add_box("tray", (0.3, 0.3, 0.02), Pose((1, 0, 0.7)))
+    world.add_box("lid", (0.1, 0.1, 0.01), Pose((1, 0, 0.8)))
+    root = {name: world.link_names(name)[0] for name in ("tray", "mug", "lid")}
+    world.attach("mug", "tray", root["tray"])
+    world.attach("lid", "mug", root["mug"])
+    with pytest.raises(
+        AttachmentCycleError, match="so 'tray' hangs from 'lid' hangs from 'mug' hangs from 'tray'"
+    ):
+        world.attach("tray", "lid", root["lid"])
+    with pytest.raises(AttachmentCycleError):
+        world.attach("tray", "mug", root["mug"])
+    world.set_pose("tray", Pose((2, 0, 0.7)))  # no RecursionError: the chain is intact
+    assert world.pose("lid").position == pytest.approx((2, 0, 0.8), abs=1e-6)
+
+
+@pytest.mark.parametrize("step", [0.0, -0.01, float("nan"), float("inf")])
+def test_a_time_step_must_be_positive_and_finite(step: float) -> None:
+    with pytest.raises(WorldValueError, match="time_step must be a finite number"):
+        World(time_step=step)
+
+
+def test_copying_a_closed_world_says_it_is_closed(world: World) -> None:
+    world.close()
+    with pytest.raises(WorldClosedError):
+        world.copy()
+    with pytest.raises(WorldClosedError):
+        world.ray_cast((0, 0, 1), (0, 0, -1))
