@@ -1,0 +1,212 @@
+"""``robocram``: run the demo, look into stored runs, export, view and replay them.
+
+Exit codes: 0 done; 1 the plan failed or the robot check found problems; 2 wrong usage;
+3 bad input (a file that is not a trace database, an unknown run, an unreadable URDF, a
+port in use, a missing optional package).
+"""
+
+from __future__ import annotations
+
+import argparse
+import datetime
+import os
+import sys
+from collections.abc import Callable, Iterator, Sequence
+from pathlib import Path
+
+from robocram.execution import PlanFailure, TaskSnapshot
+from robocram.robots import DescriptionError, RobotModel, load_description
+from robocram.traces import (
+    TRACE_ENV,
+    TraceDatabase,
+    TraceError,
+    durations,
+    failures,
+    require_run,
+    runs,
+    task_tree,
+)
+
+EXIT_OK, EXIT_FAILED, EXIT_USAGE, EXIT_INPUT = 0, 1, 2, 3
+
+
+class CliInputError(Exception):
+    """Input the command cannot work with; the message says what to do instead."""
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run the command line ``argv`` (default: ``sys.argv[1:]``); return the exit code."""
+    args = _parser().parse_args(argv)
+    try:
+        return int(args.handler(args))
+    except (TraceError, DescriptionError, CliInputError) as err:
+        print(f"robocram: error: {err}", file=sys.stderr)
+        return EXIT_INPUT
+
+
+def _parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="robocram",
+        description="CRAM in Python: run plans in projection, keep and inspect their traces.",
+        epilog="exit codes: 0 done, 1 plan failed / robot check found problems, "
+        "2 usage error, 3 bad input (database, run id, URDF, port, missing package)",
+    )
+    commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    demo = commands.add_parser("demo", help="a robot picks up a mug in projection")
+    demo.add_argument("--robot", default="pr2", help="built-in robot (pr2, hsrb, boxy)")
+    demo.add_argument(
+        "--db", type=Path, help=f"trace the run into this SQLite file (or ${TRACE_ENV})"
+    )
+    demo.set_defaults(handler=_demo)
+    _add_runs_commands(commands)
+    check = commands.add_parser("check-robot", help="read a URDF (or built-in robot) and report")
+    check.add_argument("urdf", help="a URDF file, or a built-in robot name such as pr2")
+    check.set_defaults(handler=_check_robot)
+    return parser
+
+
+def _add_runs_commands(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    runs_parser = commands.add_parser("runs", help="list, show and query stored runs")
+    sub = runs_parser.add_subparsers(dest="runs_command", required=True, metavar="ACTION")
+    listing = sub.add_parser("list", help="one line per run: id, name, status, counts")
+    listing.add_argument("db", type=Path, help="trace database (SQLite)")
+    listing.set_defaults(handler=_runs_list)
+    show = sub.add_parser("show", help="a run's task tree and its durations per motion")
+    show.add_argument("db", type=Path, help="trace database (SQLite)")
+    show.add_argument("--run", type=int, help="run id (default: the last run)")
+    show.set_defaults(handler=_runs_show)
+    fails = sub.add_parser("failures", help="failures where they were raised, by type")
+    fails.add_argument("db", type=Path, help="trace database (SQLite)")
+    fails.add_argument("--type", dest="failure_type", help="only this failure type")
+    fails.add_argument("--run", type=int, help="only this run")
+    fails.set_defaults(handler=_runs_failures)
+
+
+def _open(path: Path) -> TraceDatabase:
+    return TraceDatabase(path, create=False)
+
+
+def _demo(args: argparse.Namespace) -> int:
+    from robocram.plans import pick_up
+    from robocram.projection import simulated_robot
+    from robocram.scenes import tabletop_scene
+    from robocram.traces import trace_from_environment, trace_to
+
+    scene = tabletop_scene(args.robot)
+    tracing = trace_to(args.db, scene.world) if args.db else trace_from_environment(scene.world)
+    try:
+        with tracing as tracer, simulated_robot(scene.world, scene.robot, name="pick-mug") as run:
+            pick_up(scene.look_target)
+    except PlanFailure as failure:
+        print(f"the plan failed: {type(failure).__name__}: {failure}", file=sys.stderr)
+        return EXIT_FAILED
+    finally:
+        scene.world.close()
+    print(run.tree.render())
+    if tracer is not None:
+        print(f"\ntraced as run {tracer.runs[-1]} in {tracer.db.path}")
+    return EXIT_OK
+
+
+def _when(stamp: float | None) -> str:
+    if stamp is None:
+        return "-"
+    return datetime.datetime.fromtimestamp(stamp, datetime.UTC).strftime("%Y-%m-%d %H:%M:%S")
+
+
+def _runs_list(args: argparse.Namespace) -> int:
+    with _open(args.db) as db:
+        stored = runs(db)
+    print(f"{'run':>5}  {'name':<20} {'status':<10} {'started (UTC)':<19} tasks failed states")
+    for r in stored:
+        print(
+            f"{r.id:>5}  {r.name[:20]:<20} {r.status:<10} {_when(r.start):<19} "
+            f"{r.tasks:>5} {r.failed_tasks:>6} {r.world_states:>6}"
+        )
+    return EXIT_OK
+
+
+def _last_run(db: TraceDatabase, run: int | None) -> int:
+    if run is not None:
+        return require_run(db, run).id
+    stored = runs(db)
+    if not stored:
+        raise CliInputError(f"{db.path} holds no runs yet; record one with `robocram demo --db`")
+    return stored[-1].id
+
+
+def _runs_show(args: argparse.Namespace) -> int:
+    with _open(args.db) as db:
+        run = _last_run(db, args.run)
+        tree = task_tree(db, run)
+        stats = durations(db, run)
+    print(f"run {run}:")
+    print("\n".join(render_tree(tree)))
+    if stats:
+        print("\nduration per performed designator type:")
+        for name, s in sorted(stats.items()):
+            print(
+                f"  {name:<32} n={s.count:<3} "
+                f"mean {s.mean * 1e3:8.1f} ms  max {s.max * 1e3:8.1f} ms"
+            )
+    return EXIT_OK
+
+
+def render_tree(snapshot: TaskSnapshot, indent: str = "") -> Iterator[str]:
+    """A stored task tree as text lines, like the live tree's ``render()``."""
+    if not indent:
+        yield snapshot.label()
+    for i, child in enumerate(snapshot.children):
+        last = i == len(snapshot.children) - 1
+        yield f"{indent}{'└── ' if last else '├── '}{child.label()}"
+        yield from (
+            render_tree(child, indent + ("    " if last else "│   ")) if child.children else ()
+        )
+
+
+def _runs_failures(args: argparse.Namespace) -> int:
+    with _open(args.db) as db:
+        found = failures(db, args.failure_type, args.run)
+    counts: dict[str, int] = {}
+    for f in found:
+        counts[f.type] = counts.get(f.type, 0) + 1
+    for name, n in sorted(counts.items(), key=lambda kv: (-kv[1], kv[0])):
+        print(f"{n:>5}  {name}")
+    for f in found:
+        print(f"run {f.run}  {f.path}\n       {f.type}: {f.message}")
+    return EXIT_OK
+
+
+def _check_robot(args: argparse.Namespace) -> int:
+    path = Path(args.urdf)
+    if path.suffix != ".urdf" and not path.exists():
+        desc = load_description(args.urdf)
+        model = desc.model
+        assert model is not None  # load_description reads it
+    elif not path.is_file():
+        raise CliInputError(f"no URDF file at {path}; give a .urdf path or a built-in robot name")
+    else:
+        model = RobotModel.from_file(path)
+    movable = [j for j in model.joints.values() if j.type != "fixed"]
+    print(
+        f"{model.name}: {len(model.links)} links, {len(model.joints)} joints "
+        f"({len(movable)} movable)"
+    )
+    bad = [
+        j.name
+        for j in movable
+        if j.lower is not None and j.upper is not None and not j.lower < j.upper
+    ]
+    for name in bad:
+        print(f"  joint {name!r} has an empty range [lower, upper]; fix its <limit>")
+    return EXIT_FAILED if bad else EXIT_OK
+
+
+def run(fn: Callable[[Sequence[str] | None], int] = main) -> None:
+    """Console-script entry point: exit with the command's code."""
+    sys.exit(fn(sys.argv[1:]))
+
+
+if __name__ == "__main__":
+    os.environ.setdefault("PYTHONUNBUFFERED", "1")
+    run()
