@@ -1,8 +1,8 @@
 """``robocram``: run the demo, look into stored runs, export, view and replay them.
 
-Exit codes: 0 done; 1 the plan failed or the robot check found problems; 2 wrong usage;
-3 bad input (a file that is not a trace database, an unknown run, an unreadable URDF, a
-port in use, a missing optional package).
+Exit codes: 0 done; 1 the plan failed or the robot check found problems (missing meshes);
+2 wrong usage; 3 bad input (a file that is not a trace database, an unknown run, an
+unreadable URDF, a port in use, a missing optional package).
 """
 
 from __future__ import annotations
@@ -11,11 +11,12 @@ import argparse
 import datetime
 import os
 import sys
+import warnings
 from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
 
 from robocram.execution import PlanFailure, TaskSnapshot
-from robocram.robots import DescriptionError, RobotModel, load_description
+from robocram.robots import DescriptionError, MissingMeshWarning, RobotModel, load_description
 from robocram.traces import (
     TRACE_ENV,
     TraceDatabase,
@@ -179,27 +180,24 @@ def _runs_failures(args: argparse.Namespace) -> int:
 
 def _check_robot(args: argparse.Namespace) -> int:
     path = Path(args.urdf)
-    if path.suffix != ".urdf" and not path.exists():
-        desc = load_description(args.urdf)
-        model = desc.model
-        assert model is not None  # load_description reads it
-    elif not path.is_file():
-        raise CliInputError(f"no URDF file at {path}; give a .urdf path or a built-in robot name")
-    else:
-        model = RobotModel.from_file(path)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", MissingMeshWarning)
+        if path.suffix != ".urdf" and not path.exists():
+            model = load_description(args.urdf).model
+            assert model is not None  # load_description reads it
+        elif not path.is_file():
+            raise CliInputError(f"no URDF file at {path}; give a .urdf path or a built-in robot")
+        else:
+            model = RobotModel.from_file(path)
     movable = [j for j in model.joints.values() if j.type != "fixed"]
     print(
         f"{model.name}: {len(model.links)} links, {len(model.joints)} joints "
         f"({len(movable)} movable)"
     )
-    bad = [
-        j.name
-        for j in movable
-        if j.lower is not None and j.upper is not None and not j.lower < j.upper
-    ]
-    for name in bad:
-        print(f"  joint {name!r} has an empty range [lower, upper]; fix its <limit>")
-    return EXIT_FAILED if bad else EXIT_OK
+    problems = [str(w.message) for w in caught if issubclass(w.category, MissingMeshWarning)]
+    for problem in problems:
+        print(f"  {problem}")
+    return EXIT_FAILED if problems else EXIT_OK
 
 
 def run(fn: Callable[[Sequence[str] | None], int] = main) -> None:

@@ -52,11 +52,20 @@ def test_check_robot(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None
     urdf.write_text(
         '<robot name="arm"><link name="base"/><link name="tip"/>'
         '<joint name="j" type="revolute"><parent link="base"/><child link="tip"/>'
-        '<axis xyz="0 0 1"/><limit lower="1" upper="-1" effort="1" velocity="1"/></joint>'
+        '<axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>'
         "</robot>"
     )
+    assert main(["check-robot", str(urdf)]) == EXIT_OK
+    assert capsys.readouterr().out.startswith("arm: 2 links, 1 joints (1 movable)")
+    urdf.write_text(
+        urdf.read_text().replace(
+            '<link name="tip"/>',
+            '<link name="tip"><visual><geometry><mesh filename="gone.stl"/></geometry>'
+            "</visual></link>",
+        )
+    )
     assert main(["check-robot", str(urdf)]) == EXIT_FAILED
-    assert "joint 'j' has an empty range" in capsys.readouterr().out
+    assert "gone.stl" in capsys.readouterr().out
     urdf.write_text("<robot name='x'><joint name='j' type='fixed'/></robot>")
     assert main(["check-robot", str(urdf)]) == EXIT_INPUT
     assert main(["check-robot", str(tmp_path / "missing.urdf")]) == EXIT_INPUT
