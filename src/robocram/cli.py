@@ -27,6 +27,7 @@ from robocram.traces import (
     runs,
     task_tree,
 )
+from robocram.traces.mcap_export import export_mcap
 
 EXIT_OK, EXIT_FAILED, EXIT_USAGE, EXIT_INPUT = 0, 1, 2, 3
 
@@ -81,6 +82,11 @@ def _add_runs_commands(commands: argparse._SubParsersAction[argparse.ArgumentPar
     fails.add_argument("--type", dest="failure_type", help="only this failure type")
     fails.add_argument("--run", type=int, help="only this run")
     fails.set_defaults(handler=_runs_failures)
+    export = sub.add_parser("export", help="write a run as ROS 2 messages (TF, joints, poses)")
+    export.add_argument("db", type=Path, help="trace database (SQLite)")
+    export.add_argument("--run", type=int, help="run id (default: the last run)")
+    export.add_argument("--mcap", type=Path, required=True, help="the MCAP file to write")
+    export.set_defaults(handler=_runs_export)
 
 
 def _open(path: Path) -> TraceDatabase:
@@ -175,6 +181,14 @@ def _runs_failures(args: argparse.Namespace) -> int:
         print(f"{n:>5}  {name}")
     for f in found:
         print(f"run {f.run}  {f.path}\n       {f.type}: {f.message}")
+    return EXIT_OK
+
+
+def _runs_export(args: argparse.Namespace) -> int:
+    with _open(args.db) as db:
+        run = _last_run(db, args.run)
+        count = export_mcap(db, run, args.mcap)
+    print(f"wrote {count} messages of run {run} to {args.mcap} (/tf, /joint_states, /object_poses)")
     return EXIT_OK
 
 
