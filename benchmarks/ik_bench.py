@@ -1,10 +1,21 @@
-"""IK benchmark: PR2 right arm, random reachable targets, ours beside pybullet's IK.
+"""IK benchmark: PR2 right arm, reachable and unreachable targets, ours beside pybullet's IK.
 
-Targets: forward kinematics of ``r_gripper_tool_frame`` for uniformly random in-limit arm
-configurations (continuous joints in [-pi, pi]; torso and everything else at 0). Every
-query starts from the same configuration, the middle of the arm's joint ranges (0 for
-continuous joints), which differs from the one that made the target. Success: position
-error < 1 cm and orientation error < 0.05 rad, checked by our FK of the returned joints.
+Reachable targets: forward kinematics of ``r_gripper_tool_frame`` for uniformly random
+in-limit arm configurations (continuous joints in [-pi, pi]; torso and everything else at
+0). Every query starts from the same configuration, the middle of the arm's joint ranges
+(0 for continuous joints), which differs from the one that made the target. Success:
+position error < 1 cm and orientation error < 0.05 rad, checked by our FK of the returned
+joints. Times are wall clock and CPU time of this process (the CPU column is the one to
+trust on a shared machine).
+
+Unreachable targets, which must fail fast:
+- PR2 beyond reach: reachable targets pushed away from the shoulder until they are 5 to
+  50 cm beyond the sum of the arm's link lengths;
+- HSR arm without its lift (four joints), at poses of random configurations that raise
+  the lift: a four-joint arm reaches a four-dimensional set of tool poses, so random
+  six-dimensional targets are out of its reach.
+
+Last, the descents IK spends in the HSR's pick-up plan in the tabletop scene.
 
 Usage: ``python benchmarks/ik_bench.py [count=1000] [random_seed=0]``
 """
@@ -25,42 +36,84 @@ from pathlib import Path
 import numpy as np
 import pybullet as pb
 
-from robocram.kinematics import IKSolver, forward_kinematics, solve_ik
+from robocram.kinematics import IKResult, IKSolver, forward_kinematics, solve_ik
 from robocram.robots import RobotDescription, RobotModel, load_description
 from robocram.tf import Pose
 
 ARM, FRAME = "right", "r_gripper_tool_frame"
 POSITION_OK, ORIENTATION_OK = 0.01, 0.05  # [m], [rad]
-HEADER = "{:<28} {:>10} {:>9} {:>9} {:>9} {:>9} {:>11}"
-ROW = "{:<28} {:>10} {:9.3f} {:9.3f} {:9.3f} {:9.3f} {:>11}"
+HEADER = "{:<30} {:>9} {:>8} {:>8} {:>8} {:>8} {:>9} {:>9} {:>9}"
+ROW = "{:<30} {:>9} {:8.3f} {:8.3f} {:8.3f} {:8.3f} {:9.2f} {:>9} {:>9}"
 Solver = Callable[[Pose], Mapping[str, float]]
 
 
-def targets(desc: RobotDescription, solver: IKSolver, count: int, seed: int) -> list[Pose]:
-    rng = np.random.default_rng(seed)
+def random_configs(solver: IKSolver, count: int, rng: np.random.Generator) -> list[dict]:
     lo = np.where(np.isfinite(solver.chain.lower), solver.chain.lower, -math.pi)
     hi = np.where(np.isfinite(solver.chain.upper), solver.chain.upper, math.pi)
-    configs = (dict(zip(solver.variables, rng.uniform(lo, hi), strict=True)) for _ in range(count))
+    return [dict(zip(solver.variables, rng.uniform(lo, hi), strict=True)) for _ in range(count)]
+
+
+def targets(desc: RobotDescription, solver: IKSolver, count: int, seed: int) -> list[Pose]:
+    configs = random_configs(solver, count, np.random.default_rng(seed))
     return [forward_kinematics(desc, c, FRAME) for c in configs]
 
 
-def run(name: str, desc: RobotDescription, poses: list[Pose], solve: Solver) -> None:
+def beyond_reach(desc: RobotDescription, poses: list[Pose], seed: int) -> list[Pose]:
+    """``poses`` pushed radially from the shoulder to 5-50 cm beyond the arm's length."""
+    rng = np.random.default_rng(seed + 1)
+    shoulder = np.array(forward_kinematics(desc, {}, "r_shoulder_pan_link").position)
+    reach = IKSolver.cached(desc, ARM).reach.radius
+    out = []
+    for pose in poses:
+        away = np.array(pose.position) - shoulder
+        away /= np.linalg.norm(away)
+        position = shoulder + away * (reach + rng.uniform(0.05, 0.5))
+        out.append(Pose(tuple(position), pose.orientation))
+    return out
+
+
+def header(title: str) -> None:
+    print(f"\n{title}")
+    print(
+        HEADER.format(
+            "solver",
+            "success",
+            "mean ms",
+            "median",
+            "p95",
+            "max",
+            "cpu ms",
+            "in limits",
+            "descents",
+        )
+    )
+
+
+def run(name: str, desc: RobotDescription, arm: str, poses: list[Pose], solve: Solver) -> None:
+    frame = desc.arms[arm].tool_frame
     limits = {
-        j: (desc.model.joints[j].lower, desc.model.joints[j].upper) for j in desc.arms[ARM].joints
+        j: (desc.model.joints[j].lower, desc.model.joints[j].upper) for j in desc.arms[arm].joints
     }  # type: ignore[union-attr]
-    times, ok, inside = [], 0, 0
+    times, ok, inside, descents = [], 0, 0, []
+    cpu0 = time.process_time()
     for target in poses:
         t0 = time.perf_counter()
         joints = solve(target)
         times.append((time.perf_counter() - t0) * 1e3)
-        reached = forward_kinematics(desc, joints, FRAME)
+        if isinstance(joints, IKResult):
+            descents.append(joints.restarts + 1 if joints.iterations else 0)
+            joints = joints.joint_positions
+        reached = forward_kinematics(desc, joints, frame)
         ok += (
             reached.distance_to(target) < POSITION_OK and reached.angle_to(target) < ORIENTATION_OK
         )
-        inside += all(lo - 1e-9 <= joints[j] <= hi + 1e-9 for j, (lo, hi) in limits.items())  # type: ignore[operator]
-    n = len(poses)
-    q = statistics.quantiles(times, n=20)
+        inside += all(
+            lo - 1e-9 <= joints[j] <= hi + 1e-9 for j, (lo, hi) in limits.items() if j in joints
+        )  # type: ignore[operator]
+    cpu = (time.process_time() - cpu0) * 1e3 / len(poses)  # includes the FK checks (~0.02 ms)
+    n, q = len(poses), statistics.quantiles(times, n=20)
     mean, median = statistics.fmean(times), statistics.median(times)
+    mean_descents = f"{statistics.fmean(descents):.2f}" if descents else "-"
     print(
         ROW.format(
             name,
@@ -69,13 +122,17 @@ def run(name: str, desc: RobotDescription, poses: list[Pose], solve: Solver) -> 
             median,
             q[-1],
             max(times),
+            cpu,
             f"{100 * inside / n:.2f} %",
+            mean_descents,
         )
     )
 
 
-def ours(desc: RobotDescription, start: dict[str, float]) -> Solver:
-    return lambda target: solve_ik(desc, ARM, target, seed=start).joint_positions
+def ours(
+    desc: RobotDescription, arm: str, start: dict[str, float], use_torso: bool = False
+) -> Callable[[Pose], IKResult]:
+    return lambda target: solve_ik(desc, arm, target, seed=start, use_torso=use_torso)
 
 
 def arm_only_urdf(desc: RobotDescription, folder: str) -> Path:
@@ -148,17 +205,81 @@ def quiet_stdout() -> Iterator[None]:
             os.close(saved)
 
 
+def hsr_without_lift(count: int, seed: int) -> None:
+    hsr = load_description("hsrb")
+    with_lift = IKSolver.cached(hsr, "arm", use_torso=True)
+    configs = random_configs(with_lift, count, np.random.default_rng(seed + 2))
+    poses = [forward_kinematics(hsr, c, "hand_tool_frame") for c in configs]
+    start = {"arm_lift_joint": 0.0}
+    solve_ik(hsr, "arm", poses[0], seed=start)  # samples the start table
+    run("robocram, HSR arm w/o lift", hsr, "arm", poses, ours(hsr, "arm", start))
+
+
+def hsr_pick_up_descents() -> None:
+    """Count the descents of every IK query the HSR's pick-up plan makes (a measuring
+    wrapper around the real solver)."""
+    from robocram.plans import pick_up
+    from robocram.projection import simulated_robot
+    from robocram.world.tabletop_scene import tabletop_scene
+
+    answers: list[IKResult] = []
+    solve = IKSolver.solve
+
+    def counted(self: IKSolver, *args: object, **kwargs: object) -> IKResult:
+        answers.append(solve(self, *args, **kwargs))  # type: ignore[arg-type]
+        return answers[-1]
+
+    IKSolver.solve = counted  # type: ignore[method-assign]
+    try:
+        scene = tabletop_scene("hsrb")
+        with simulated_robot(scene.world, "hsrb"):
+            pick_up(scene.look_target)
+    finally:
+        IKSolver.solve = solve  # type: ignore[method-assign]
+    counts = [a.restarts + 1 if a.iterations else 0 for a in answers]
+    per_query = ", ".join(
+        f"{n}{'' if a.success else ' (failed)'}" for n, a in zip(counts, answers, strict=True)
+    )
+    total = sum(counts)
+    print(f"\nHSR pick-up plan: {len(answers)} IK queries, {total} descents [{per_query}]")
+
+
+def timed(work: Callable[[], object]) -> tuple[float, float]:
+    """Wall and CPU time of ``work()`` [ms]."""
+    t0, c0 = time.perf_counter(), time.process_time()
+    work()
+    return (time.perf_counter() - t0) * 1e3, (time.process_time() - c0) * 1e3
+
+
+def machine_speed() -> str:
+    """How busy this machine is: a fixed piece of Python work, timed."""
+    wall, cpu = timed(lambda: [sum(range(1_000_000)) for _ in range(10)])
+    return (
+        f"machine: sum(range(1e6)) takes {wall / 10:.1f} ms wall, {cpu / 10:.1f} ms cpu "
+        "(about 10 ms on an idle desktop core); load average "
+        + " ".join(f"{x:.1f}" for x in os.getloadavg())
+    )
+
+
 def main(count: int, seed: int) -> None:
     desc = load_description("pr2")
     solver = IKSolver.cached(desc, ARM)
     start = dict(zip(solver.variables, solver.start({}), strict=True))
     poses = targets(desc, solver, count, seed)
-    print(f"PR2 {ARM} arm, {FRAME}: {count} FK targets (seed {seed}), start = mid-range config")
-    print(HEADER.format("solver", "success", "mean ms", "median", "p95", "max", "in limits"))
-    run("robocram (pinocchio LM)", desc, poses, ours(desc, start))
-    run("pybullet calculateIK", desc, poses, pybullet_ik(desc, start, null_space=False))
-    run("pybullet IK, null space", desc, poses, pybullet_ik(desc, start, null_space=True))
-    print(HEADER.format("TRAC-IK (published)", "99.95 %", "0.380", "-", "-", "-", "-"))
+    print(machine_speed())
+    wall, cpu = timed(lambda: solve_ik(desc, ARM, poses[0], seed=start))
+    print(f"first query (samples the start table): {wall:.0f} ms wall, {cpu:.0f} ms cpu")
+    header(f"PR2 {ARM} arm, {FRAME}: {count} reachable FK targets (seed {seed}), start = mid-range")
+    run("robocram (pinocchio LM)", desc, ARM, poses, ours(desc, ARM, start))
+    run("pybullet calculateIK", desc, ARM, poses, pybullet_ik(desc, start, null_space=False))
+    run("pybullet IK, null space", desc, ARM, poses, pybullet_ik(desc, start, null_space=True))
+    print(HEADER.format("TRAC-IK (published)", "99.95 %", "0.380", "-", "-", "-", "-", "-", "-"))
+    far = beyond_reach(desc, poses[: max(count // 5, 20)], seed)
+    header(f"unreachable: {len(far)} PR2 targets beyond reach; {len(far)} HSR targets w/o lift")
+    run("robocram, PR2 beyond reach", desc, ARM, far, ours(desc, ARM, start))
+    run("pybullet calculateIK", desc, ARM, far, pybullet_ik(desc, start, null_space=False))
+    hsr_without_lift(len(far), seed)
+    hsr_pick_up_descents()
 
 
 if __name__ == "__main__":

@@ -41,6 +41,8 @@ class ArmChain:
         self.frame_id = int(self.model.getFrameId(tip_frame))
         self._build_maps()
         self.lower, self.upper = self._limits()
+        self.continuous = np.array([kin.joints[v].continuous for v in self.variables], bool)
+        self._followers = self._mimic_followers()
 
     def _variables(self, joints: Iterable[str]) -> tuple[str, ...]:
         out: list[str] = []
@@ -68,6 +70,9 @@ class ArmChain:
             else:
                 self.held.append(row)
         self.identity_map = n == p and not self.held and np.array_equal(self.a, np.eye(n))
+        moved = np.flatnonzero(np.any(self.a != 0.0, axis=1))
+        # the first path row a variable moves; the rows before it are held
+        self.first_row = int(moved[0]) if moved.size else p
         ids = [self.model.getJointId(name) for name in self.path]
         cont = [self.model.joints[j].nq == 2 for j in ids]
         idx_q = np.array([self.model.joints[j].idx_q for j in ids], dtype=int)
@@ -118,15 +123,30 @@ class ArmChain:
         pin.framesForwardKinematics(self.model, self.data, self.configuration(x, b))
         return self.data.oMf[self.frame_id].copy()
 
+    def _mimic_followers(self) -> tuple[tuple[str, str, float, float], ...]:
+        """(follower, master, multiplier, offset) of every joint following a variable,
+        transitively, in an order where masters come first (whole robot)."""
+        probe = mimic_followers(self.kin.robot_model, dict.fromkeys(self.variables, 0.0))
+        ordered: list[tuple[str, str, float, float]] = []
+        known = set(self.variables)
+        while len(known) < len(probe):
+            for joint in self.kin.robot_model.joints.values():
+                m = joint.mimic
+                if joint.name in probe and joint.name not in known and m and m.joint in known:
+                    ordered.append((joint.name, m.joint, m.multiplier, m.offset))
+                    known.add(joint.name)
+        return tuple(ordered)
+
     def joint_positions(self, x: FloatArray) -> dict[str, float]:
         """Variable values by name, plus every mimic follower of them (whole robot)."""
-        values = {name: float(v) for name, v in zip(self.variables, x, strict=True)}
-        return mimic_followers(self.kin.robot_model, values)
+        values = dict(zip(self.variables, x.tolist(), strict=True))
+        for name, master, multiplier, offset in self._followers:
+            values[name] = multiplier * values[master] + offset
+        return values
 
     def wrap_continuous(self, x: FloatArray, reference: FloatArray) -> FloatArray:
         """Shift continuous variables by whole turns to lie within pi of ``reference``."""
-        out = x.copy()
-        for k, name in enumerate(self.variables):
-            if self.kin.joints[name].continuous:
-                out[k] = reference[k] + math.remainder(x[k] - reference[k], 2 * math.pi)
-        return out
+        if not self.continuous.any():
+            return x
+        turns = np.round((x - reference) / (2 * math.pi))
+        return np.where(self.continuous, x - turns * 2 * math.pi, x)

@@ -1,14 +1,17 @@
-"""Damped least-squares IK on pinocchio, within joint limits, with random restarts.
+"""IK for one arm: a reach check, then descents from the best starts until one converges.
 
-Each step solves ``(J^T J + (e^T e + damping) I) dx = J^T e`` (Levenberg-Marquardt with
-the error-dependent damping of Sugihara 2011), ``e = log6(current^-1 * target)`` in the tool
-frame and ``J`` the matching Jacobian (``Jlog6 * frame Jacobian * A``, see
-:mod:`~robocram.kinematics.arm_chain`), then clamps ``x`` into the joint limits. A descent
-that stops improving restarts from a random configuration within limits.
+A target beyond the arm's reach (:mod:`~robocram.kinematics.reach`) gets no descent: the
+answer is a failure reporting the seed and its errors. Otherwise the
+descents (:mod:`~robocram.kinematics.descent`) start from the seed and from the samples of
+the start table nearest the target (:mod:`~robocram.kinematics.seed_table`), nearest
+first, then from seeded random configurations. Restarts stop early when they cannot help:
+after ``fruitless_descents`` descents in a row stall without lowering the best minimum by
+1 %, the target is taken as out of reach of this arm (an orientation a short arm cannot
+take, a limit in the way).
 
-Budgets are counted, never timed: ``max_restarts`` descents of at most ``max_iterations``
-steps each, so the same query and random seed give bit-identical answers on an idle and
-on a loaded machine.
+Budgets are counted, never timed: at most ``max_restarts + 1`` descents of at most
+``max_iterations`` steps, so the same query and random seed give bit-identical answers on
+an idle and on a loaded machine.
 """
 
 from __future__ import annotations
@@ -16,45 +19,32 @@ from __future__ import annotations
 import math
 import time
 import weakref
-from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from collections.abc import Callable, Iterator, Mapping
+from dataclasses import replace
 
 import numpy as np
 import pinocchio as pin
 
 from robocram.kinematics.arm_chain import ArmChain, FloatArray
 from robocram.kinematics.arm_selection import arm_description, arm_joints, loaded
+from robocram.kinematics.chain_sweep import chain_base
+from robocram.kinematics.descent import Best, IKSettings, descend
 from robocram.kinematics.ik_result import IKResult
+from robocram.kinematics.reach import ReachBound
 from robocram.kinematics.robot_kinematics import pose_to_se3, robot_kinematics
+from robocram.kinematics.seed_table import (
+    ROTATION_WEIGHT,
+    SeedTable,
+    random_configurations,
+)
 from robocram.robots import RobotDescription, RobotModel
 from robocram.tf import Pose, PoseStamped
 
 CollisionCheck = Callable[[dict[str, float]], bool]
 """Called with a candidate's joint values; returns True when that configuration collides."""
 
-
-@dataclass(frozen=True)
-class IKSettings:
-    """Tolerances and budgets of one IK query."""
-
-    position_tolerance: float = 1e-3  # [m]
-    orientation_tolerance: float = 1e-2  # [rad]
-    max_restarts: int = 100  # descents after the first one
-    max_iterations: int = 60  # steps per descent
-    stall_iterations: int = 8  # steps without 0.1 % improvement that end a descent
-    damping: float = 1e-4
-
-
-@dataclass
-class _Best:
-    """The configuration closest to the target so far."""
-
-    x: FloatArray
-    cost: float = math.inf
-    position_error: float = math.inf
-    orientation_error: float = math.inf
-
-
+TABLE_SIZE = 20_000  # sampled configurations in an arm's start table
+_DEFAULT = IKSettings()
 _SOLVERS: weakref.WeakKeyDictionary[RobotModel, dict[tuple[str, bool, str | None], IKSolver]] = (
     weakref.WeakKeyDictionary()
 )
@@ -72,6 +62,7 @@ class IKSolver:
         arm: str,
         use_torso: bool = False,
         frame: str | None = None,
+        table_size: int = TABLE_SIZE,
     ) -> None:
         desc, model = loaded(description)
         self.description = desc
@@ -80,14 +71,13 @@ class IKSolver:
         joints = arm_joints(desc, arm, use_torso)
         self.frame = frame or arm_description(desc, arm).tool_frame
         self.chain = ArmChain(robot_kinematics(model), joints, self.frame)
-        n = len(self.chain.variables)
-        self._eye = np.eye(n)
+        self.reach = ReachBound.of(self.chain)
+        self._table_size = table_size
+        self._table: SeedTable | None = None
         finite = np.isfinite(self.chain.lower) & np.isfinite(self.chain.upper)
-        self._finite = finite
-        middle = (
+        self._middle = (
             np.where(finite, self.chain.lower, 0.0) + np.where(finite, self.chain.upper, 0.0)
         ) / 2
-        self._middle = middle
 
     @classmethod
     def cached(
@@ -112,6 +102,13 @@ class IKSolver:
         """The joints IK sets (mimic joints replaced by their masters)."""
         return self.chain.variables
 
+    @property
+    def table(self) -> SeedTable:
+        """The start table, sampled on first use (tens of milliseconds)."""
+        if self._table is None:
+            self._table = SeedTable(self.chain, self._table_size, self.reach.radius)
+        return self._table
+
     def start(self, seed: Mapping[str, float]) -> FloatArray:
         """Start configuration: the seed's values, else mid-range (0 for continuous joints)."""
         x = np.array(
@@ -119,10 +116,29 @@ class IKSolver:
         )
         return np.clip(x, self.chain.lower, self.chain.upper)
 
-    def _random(self, rng: np.random.Generator, reference: FloatArray) -> FloatArray:
-        lo = np.where(self._finite, self.chain.lower, reference - math.pi)
-        hi = np.where(self._finite, self.chain.upper, reference + math.pi)
-        return rng.uniform(lo, hi)
+    def locate(
+        self,
+        target: Pose | PoseStamped,
+        seed: Mapping[str, float],
+        start: FloatArray | None = None,
+        b: FloatArray | None = None,
+    ) -> tuple[pin.SE3, pin.SE3, float]:
+        """The target in the root link and in the chain base (placed by the seed's FK),
+        and the pose distance [m] of the seed's tool from it, as the start table measures.
+
+        ``start`` and ``b`` are the seed's variables and offsets, if already known.
+        """
+        in_root = pose_to_se3(self.chain.kin.pose_in_root(target, seed))
+        start = self.start(seed) if start is None else start
+        b = self.chain.offsets(seed) if b is None else b
+        tip = self.chain.tip_pose(start, b)
+        base = chain_base(self.chain)
+        in_base = base.actInv(in_root)
+        return in_root, in_base, _pose_distance(base.actInv(tip), in_base)
+
+    def reachable(self, target: Pose | PoseStamped, seed: Mapping[str, float]) -> bool:
+        """False when ``target`` is certainly beyond reach; True says only "maybe"."""
+        return not self.reach.excludes(self.locate(target, seed)[1], 0.0)
 
     def solve(
         self,
@@ -130,70 +146,68 @@ class IKSolver:
         seed: Mapping[str, float] | None = None,
         settings: IKSettings | None = None,
         collision_check: CollisionCheck | None = None,
-        rng: np.random.Generator | None = None,
+        random_seed: int = 0,
     ) -> IKResult:
         """Joint values putting the tip frame at ``target`` (see :func:`solve_ik`)."""
         t0 = time.perf_counter()
-        s = settings or IKSettings()
+        s = settings or _DEFAULT
         seed = seed or {}
-        rng = rng or np.random.default_rng(0)
-        target_se3 = pose_to_se3(self.chain.kin.pose_in_root(target, seed))
         b = self.chain.offsets(seed)
         reference = self.start(seed)
-        x, best = reference.copy(), _Best(reference.copy())
-        iterations = restarts = rejected = 0
-        while True:
-            converged, x, used = self._descend(x, target_se3, b, s, best)
-            iterations += used
-            if converged:
-                values = self.chain.joint_positions(self.chain.wrap_continuous(x, reference))
+        target_se3, in_base, seed_distance = self.locate(target, seed, reference, b)
+        best = Best(reference)
+        descents = iterations = rejected = fruitless = 0
+        for x in self._starts(reference, in_base, seed_distance, s, random_seed):
+            if descents > s.max_restarts:
+                break
+            descents += 1
+            before = best.cost
+            run = descend(self.chain, x, target_se3, b, s, best)
+            iterations += run.iterations
+            if run.converged:
+                values = self.chain.joint_positions(self.chain.wrap_continuous(run.x, reference))
                 if collision_check is None or not collision_check(values):
-                    return self._result(True, values, best, iterations, restarts, rejected, t0)
+                    return self._result(True, values, best, iterations, descents, rejected, t0)
                 rejected += 1
-            if restarts >= s.max_restarts:
-                values = self.chain.joint_positions(self.chain.wrap_continuous(best.x, reference))
-                return self._result(False, values, best, iterations, restarts, rejected, t0)
-            restarts += 1
-            x = self._random(rng, reference)
+            elif run.stalled:
+                fruitless = fruitless + 1 if run.minimum > before * 0.99 else 1
+                if fruitless >= s.fruitless_descents:
+                    break
+        if descents == 0:  # beyond reach: report the seed
+            descend(self.chain, reference, target_se3, b, replace(s, max_iterations=1), best)
+        values = self.chain.joint_positions(self.chain.wrap_continuous(best.x, reference))
+        return self._result(False, values, best, iterations, descents, rejected, t0)
 
-    def _descend(
-        self, x: FloatArray, target: pin.SE3, b: FloatArray, s: IKSettings, best: _Best
-    ) -> tuple[bool, FloatArray, int]:
-        chain, model, data, fid = self.chain, self.chain.model, self.chain.data, self.chain.frame_id
-        lower, upper, eye = chain.lower, chain.upper, self._eye
-        last_cost, stall = math.inf, 0
-        for it in range(1, s.max_iterations + 1):
-            pin.computeJointJacobians(model, data, chain.configuration(x, b))
-            current = pin.updateFramePlacement(model, data, fid)
-            delta = current.actInv(target)
-            err = pin.log6(delta).vector
-            pos_err = float(np.linalg.norm(target.translation - current.translation))
-            rot_err = float(np.linalg.norm(err[3:]))
-            cost = float(err @ err)
-            if cost < best.cost:
-                best.x, best.cost = x, cost
-                best.position_error, best.orientation_error = pos_err, rot_err
-            if pos_err < s.position_tolerance and rot_err < s.orientation_tolerance:
-                best.x, best.position_error, best.orientation_error = x, pos_err, rot_err
-                return True, x, it
-            stall = stall + 1 if cost > last_cost * 0.999 else 0
-            if stall >= s.stall_iterations:
-                return False, x, it
-            last_cost = min(last_cost, cost)
-            jac = pin.Jlog6(delta) @ pin.getFrameJacobian(model, data, fid, pin.LOCAL)
-            if not chain.identity_map:
-                jac = jac @ chain.a
-            hessian = jac.T @ jac + (cost + s.damping) * eye
-            x = np.clip(x + np.linalg.solve(hessian, jac.T @ err), lower, upper)
-        return False, x, s.max_iterations
+    def _starts(
+        self,
+        reference: FloatArray,
+        in_base: pin.SE3,
+        seed_distance: float,
+        s: IKSettings,
+        random_seed: int,
+    ) -> Iterator[FloatArray]:
+        """Start configurations: seed and nearest table samples, nearest first, then random.
+
+        None beyond the reach bound: no descent can get there.
+        """
+        if self.reach.excludes(in_base, s.position_tolerance):
+            return
+        near, distance = self.table.nearest(in_base, s.table_starts)
+        ahead = int(np.searchsorted(distance, seed_distance))
+        yield from near[:ahead]
+        yield reference
+        yield from near[ahead:]
+        rng = np.random.default_rng(random_seed)
+        while True:
+            yield from random_configurations(self.chain, rng, 16, reference)
 
     def _result(
         self,
         success: bool,
         values: dict[str, float],
-        best: _Best,
+        best: Best,
         iterations: int,
-        restarts: int,
+        descents: int,
         rejected: int,
         t0: float,
     ) -> IKResult:
@@ -203,7 +217,14 @@ class IKSolver:
             position_error=best.position_error,
             orientation_error=best.orientation_error,
             iterations=iterations,
-            restarts=restarts,
+            restarts=max(descents - 1, 0),
             elapsed=time.perf_counter() - t0,
             rejected_in_collision=rejected,
         )
+
+
+def _pose_distance(a: pin.SE3, b: pin.SE3) -> float:
+    """Pose distance [m] between two poses, as the start table measures it."""
+    shift = a.translation - b.translation
+    turn = ROTATION_WEIGHT * (a.rotation - b.rotation).ravel()
+    return math.sqrt(float(shift @ shift) + float(turn @ turn))

@@ -8,8 +8,6 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 
-import numpy as np
-
 from robocram.kinematics.arm_selection import loaded
 from robocram.kinematics.ik_result import IKResult
 from robocram.kinematics.ik_solver import CollisionCheck, IKSettings, IKSolver
@@ -62,8 +60,7 @@ def solve_ik(
         max_restarts=max_restarts,
         max_iterations=max_iterations,
     )
-    rng = np.random.default_rng(random_seed)
-    return solver.solve(target, seed, settings, collision_check, rng)
+    return solver.solve(target, seed, settings, collision_check, random_seed)
 
 
 def forward_kinematics(
@@ -75,3 +72,24 @@ def forward_kinematics(
     their masters.
     """
     return robot_kinematics(loaded(description)[1]).frame_pose(frame, joint_positions)
+
+
+def reachable(
+    description: RobotDescription | str,
+    arm: str,
+    target: Pose | PoseStamped,
+    *,
+    seed: Mapping[str, float] | None = None,
+    frame: str | None = None,
+    use_torso: bool = False,
+) -> bool:
+    """Whether ``target`` may be reachable: False only when it is certainly out of reach.
+
+    A cheap pre-check (tens of microseconds, no descent) for callers that try many
+    targets, such as a costmap looking for where to stand: the target position lies
+    beyond the sum of the arm's link lengths (plus the torso's travel when ``use_torso``)
+    from its first joint. True says only "maybe": :func:`solve_ik` decides. Arguments are
+    those of :func:`solve_ik`.
+    """
+    solver = IKSolver.cached(description, arm, use_torso, frame)
+    return solver.reachable(target, dict(seed or {}))

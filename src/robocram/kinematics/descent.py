@@ -1,0 +1,121 @@
+"""One damped least-squares descent towards a tool target, within joint limits.
+
+Each step solves ``(J^T J + (w e^T e + damping) I) dx = J^T e`` (Levenberg-Marquardt with
+the error-dependent damping of Sugihara 2011), ``e = log6(current^-1 * target)`` in the tool
+frame and ``J`` the matching Jacobian (``Jlog6 * frame Jacobian * A``, see
+:mod:`~robocram.kinematics.arm_chain`). A step that would leave the limits is not just
+clamped, which stalls the descent against the limit: the variables it pushes out are held
+at their limit and the step is solved again for the others, which can still move the tool
+(the active-set idea of bounded least squares).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import NamedTuple
+
+import numpy as np
+import pinocchio as pin
+
+from robocram.kinematics.arm_chain import ArmChain, FloatArray
+
+
+@dataclass(frozen=True)
+class IKSettings:
+    """Tolerances and budgets of one IK query; every budget is a count, none a time."""
+
+    position_tolerance: float = 1e-3  # [m]
+    orientation_tolerance: float = 1e-2  # [rad]
+    max_restarts: int = 100  # descents after the first one
+    max_iterations: int = 60  # steps per descent
+    stall_iterations: int = 4  # steps without 0.1 % improvement that end a descent
+    damping: float = 1e-4  # constant part of the damping
+    error_damping: float = 0.01  # weight of e^T e in the damping
+    table_starts: int = 4  # descents from the nearest table samples before random ones
+    fruitless_descents: int = 6  # stalls in a row without a 1 % lower minimum end the search
+
+
+@dataclass
+class Best:
+    """The configuration closest to the target so far, and its errors."""
+
+    x: FloatArray
+    cost: float = math.inf
+    position_error: float = math.inf  # [m]
+    orientation_error: float = math.inf  # [rad]
+
+
+class Descent(NamedTuple):
+    """How a descent ended: converged, stalled in a minimum, or out of steps."""
+
+    converged: bool
+    x: FloatArray
+    iterations: int
+    stalled: bool
+    minimum: float  # lowest e^T e of this descent
+
+
+def _bounded_step(
+    chain: ArmChain, x: FloatArray, jac: FloatArray, err: FloatArray, damping: float
+) -> FloatArray:
+    """The damped step from ``x``, with the variables it pushes past a limit held there.
+
+    Holding some variables can push others out, so the step is solved again until none
+    leaves its limits (at most once per variable).
+    """
+    lower, upper = chain.lower, chain.upper
+    free = np.ones(x.size, dtype=bool)
+    moved = x.copy()
+    rest = err
+    for _ in range(x.size):
+        jf = jac[:, free] if not free.all() else jac
+        hessian = jf.T @ jf
+        hessian.flat[:: hessian.shape[0] + 1] += damping
+        moved[free] = x[free] + np.linalg.solve(hessian, jf.T @ rest)
+        out = (moved < lower) | (moved > upper)
+        if not out.any():
+            return moved
+        clamped = np.minimum(np.maximum(moved, lower), upper)
+        rest = rest - jac[:, out] @ (clamped[out] - x[out])
+        moved[out] = clamped[out]
+        x = np.where(out, clamped, x)
+        free &= ~out
+        if not free.any():
+            break
+    return np.minimum(np.maximum(moved, lower), upper)
+
+
+def descend(
+    chain: ArmChain, x: FloatArray, target: pin.SE3, b: FloatArray, s: IKSettings, best: Best
+) -> Descent:
+    """Descend from ``x`` until the tool is within tolerance, stalls, or runs out of steps."""
+    model, data, fid = chain.model, chain.data, chain.frame_id
+    position_tol2, orientation_tol2 = s.position_tolerance**2, s.orientation_tolerance**2
+    last, minimum, stall = math.inf, math.inf, 0
+    for it in range(1, s.max_iterations + 1):
+        pin.computeJointJacobians(model, data, chain.configuration(x, b))
+        delta = pin.updateFramePlacement(model, data, fid).actInv(target)
+        err = pin.log6(delta).vector
+        cost = float(err @ err)
+        shift, turn = delta.translation, err[3:]
+        position2, orientation2 = float(shift @ shift), float(turn @ turn)
+        minimum = min(minimum, cost)
+        done = position2 < position_tol2 and orientation2 < orientation_tol2
+        if cost < best.cost or done:
+            best.x, best.cost = x, cost
+            best.position_error, best.orientation_error = (
+                math.sqrt(position2),
+                math.sqrt(orientation2),
+            )
+        if done:
+            return Descent(True, x, it, False, minimum)
+        stall = stall + 1 if cost > last * 0.999 else 0
+        if stall >= s.stall_iterations:
+            return Descent(False, x, it, True, minimum)
+        last = min(last, cost)
+        jac = pin.Jlog6(delta) @ pin.getFrameJacobian(model, data, fid, pin.LOCAL)
+        if not chain.identity_map:
+            jac = jac @ chain.a
+        x = _bounded_step(chain, x, jac, err, cost * s.error_damping + s.damping)
+    return Descent(False, x, s.max_iterations, False, minimum)

@@ -1,0 +1,106 @@
+"""A table of sampled arm configurations and their tool poses: where IK starts.
+
+Damped least squares converges in a few steps from a configuration whose tool pose is
+near the target, and wanders or stalls from a far one. The table holds ``size``
+configurations drawn uniformly within the limits by a seeded generator (so every solve is
+repeatable), with their tool poses in the chain base (:mod:`chain_sweep`). A grid on the
+tool positions finds the samples around a target; the nearest of them by position and
+orientation (rotation matrices, weighted by ``ROTATION_WEIGHT`` [m]) start the descents.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+import pinocchio as pin
+
+from robocram.kinematics.arm_chain import ArmChain, FloatArray
+from robocram.kinematics.chain_sweep import sweep_tip_poses
+
+ROTATION_WEIGHT = 0.1  # [m] per unit of rotation-matrix difference
+TABLE_SEED = 0  # seeds the sampled configurations; fixed, so IK answers are repeatable
+CELLS_ACROSS_REACH = 8  # grid cells along the arm's reach
+_AROUND = np.array([(x, y, z) for x in (-1, 0, 1) for y in (-1, 0, 1) for z in (-1, 0, 1)])
+
+
+def random_configurations(
+    chain: ArmChain, rng: np.random.Generator, count: int, reference: FloatArray
+) -> FloatArray:
+    """``count`` uniform configurations within limits; continuous joints within pi of
+    ``reference``."""
+    finite = np.isfinite(chain.lower) & np.isfinite(chain.upper)
+    lo = np.where(finite, chain.lower, reference - math.pi)
+    hi = np.where(finite, chain.upper, reference + math.pi)
+    return rng.uniform(lo, hi, size=(count, len(lo)))
+
+
+class SeedTable:
+    """Sampled configurations of a chain, found by how close their tool pose is to a target.
+
+    Samples are sorted by grid cell, so the samples of one cell are one slice.
+    """
+
+    def __init__(self, chain: ArmChain, size: int, reach: float) -> None:
+        rng = np.random.default_rng(TABLE_SEED)
+        configurations = random_configurations(chain, rng, size, np.zeros(len(chain.variables)))
+        position, rotation = sweep_tip_poses(chain, configurations @ chain.a.T + chain.offsets({}))
+        self.cell = max(reach, 1e-3) / CELLS_ACROSS_REACH  # [m]
+        cells = np.floor(position / self.cell).astype(np.int64)
+        self._low = cells.min(axis=0) - 1
+        self._shape = cells.max(axis=0) - self._low + 2
+        keys = self._keys(cells)
+        order = np.argsort(keys, kind="stable")
+        self.configurations = configurations[order]
+        features = np.hstack((position, ROTATION_WEIGHT * rotation.reshape(size, 9)))
+        self.features = features[order]
+        self._keys_sorted = keys[order]
+        self._around: dict[tuple[int, int, int], _Block] = {}
+
+    def _keys(self, cells: np.ndarray) -> np.ndarray:
+        """One integer per grid cell (cells outside the sampled box map to -1)."""
+        local = cells - self._low
+        inside = np.all((local >= 0) & (local < self._shape), axis=-1)
+        key = (local[..., 0] * self._shape[1] + local[..., 1]) * self._shape[2] + local[..., 2]
+        return np.where(inside, key, -1)
+
+    def _neighbourhood(self, cell: tuple[int, int, int]) -> _Block:
+        """The samples in ``cell`` and the 26 cells around it (cached per cell)."""
+        found = self._around.get(cell)
+        if found is None:
+            keys = self._keys(np.array(cell) + _AROUND)
+            keys = keys[keys >= 0]
+            first = np.searchsorted(self._keys_sorted, keys, side="left")
+            last = np.searchsorted(self._keys_sorted, keys, side="right")
+            spans = [np.arange(f, t) for f, t in zip(first, last, strict=True)]
+            rows = np.concatenate([np.empty(0, np.int64), *spans])
+            features = self.features[rows]
+            found = _Block(rows, features, np.einsum("ij,ij->i", features, features))
+            self._around[cell] = found
+        return found
+
+    def nearest(self, target_in_base: pin.SE3, count: int) -> tuple[FloatArray, FloatArray]:
+        """Up to ``count`` configurations nearest ``target_in_base``, best first, with their
+        pose distances [m]; none when no sample lies within a cell of the target."""
+        position = target_in_base.translation
+        x, y, z = (math.floor(v / self.cell) for v in position.tolist())
+        block = self._neighbourhood((x, y, z))
+        if block.rows.size == 0:
+            return np.empty((0, self.configurations.shape[1])), np.empty(0)
+        goal = np.concatenate((position, ROTATION_WEIGHT * target_in_base.rotation.ravel()))
+        distance = block.squares - 2.0 * (block.features @ goal) + float(goal @ goal)
+        if block.rows.size > count:
+            pick = np.argpartition(distance, count)[:count]
+            pick = pick[np.argsort(distance[pick])]
+        else:
+            pick = np.argsort(distance)
+        return self.configurations[block.rows[pick]], np.sqrt(np.maximum(distance[pick], 0.0))
+
+
+class _Block(NamedTuple):
+    """The samples around one grid cell: table rows, pose features and their squares."""
+
+    rows: np.ndarray
+    features: FloatArray
+    squares: FloatArray
