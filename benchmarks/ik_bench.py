@@ -220,7 +220,7 @@ def hsr_pick_up_descents() -> None:
     wrapper around the real solver)."""
     from robocram.plans import pick_up
     from robocram.projection import simulated_robot
-    from robocram.world.tabletop_scene import tabletop_scene
+    from robocram.scenes import tabletop_scene
 
     answers: list[IKResult] = []
     solve = IKSolver.solve
