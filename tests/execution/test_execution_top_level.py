@@ -148,3 +148,25 @@ def test_no_thread_outlives_a_top_level() -> None:
     with pytest.raises(ZeroDivisionError):
         top_level(plan)
     assert threading.active_count() == before
+
+
+def test_a_bare_top_level_decorator_makes_each_call_a_top_level_run() -> None:
+    calls: list[int] = []
+
+    @top_level
+    def plan(x: int) -> int:
+        calls.append(x)
+        return current_task().path  # type: ignore[union-attr,return-value]
+
+    assert calls == []  # decorating did not run the plan
+    assert plan(3) == "plan" and plan(4) == "plan"  # type: ignore[operator]
+    assert calls == [3, 4]
+
+
+def test_top_level_of_an_existing_function_still_runs_it_at_once() -> None:
+    def plan() -> int:
+        return 5
+
+    assert top_level(plan) == 5
+    one_liner = top_level(lambda: 6)
+    assert one_liner == 6

@@ -2,15 +2,21 @@
 
 Three forms, one object. ``top_level(plan, *args)`` runs and returns the value (or
 raises the failure); ``with top_level(name="demo") as tl:`` runs the block as the root
-task; ``@top_level(name="demo")`` makes every call a top-level run. ``tl.tree`` is the
-TaskTree of the last run, also after a failure; ``run_top_level(plan)`` returns
-``(value, tree)``. Bare ``@top_level`` (no parentheses) would run the function at once:
-write ``@top_level()``. Inside another top level, a top level becomes a child task.
+task; ``@top_level(name="demo")`` or a bare ``@top_level`` makes every call a top-level
+run. ``tl.tree`` is the TaskTree of the last run, also after a failure;
+``run_top_level(plan)`` returns ``(value, tree)``. Inside another top level, a top level
+becomes a child task.
+
+A bare ``@top_level`` and ``top_level(plan)`` are the same call; they are told apart by
+where the call comes from: a decorator is called from the lines of the decorated
+function's own definition (its decorators and ``def`` header), a plan run from anywhere
+else.
 """
 
 from __future__ import annotations
 
 import functools
+import sys
 from collections.abc import Callable
 from types import TracebackType
 from typing import Any, TypeVar, overload
@@ -107,7 +113,24 @@ def top_level(
         if args or kwargs:
             raise TypeError("top_level() got plan arguments but no plan; pass the plan first")
         return TopLevel(name or "top-level")
-    return TopLevel(name or _name_of(fn)).run(fn, *args, **kwargs)
+    runner = TopLevel(name or _name_of(fn))
+    if not args and not kwargs and _decorating(fn, sys._getframe(1).f_lineno):
+        return runner(fn)
+    return runner.run(fn, *args, **kwargs)
+
+
+def _decorating(fn: Callable[..., Any], caller_line: int) -> bool:
+    """Whether ``fn`` is being decorated: called from its own decorator or ``def`` lines.
+
+    A function's code starts at its first decorator; its body starts after the ``def``
+    header, so a call from a line in between comes from a decorator of this very function.
+    """
+    code = getattr(fn, "__code__", None)
+    if code is None:
+        return False
+    first = code.co_firstlineno
+    body = min((line for _, _, line in code.co_lines() if line and line > first), default=first)
+    return first <= caller_line < body
 
 
 def run_top_level(
