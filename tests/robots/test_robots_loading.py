@@ -151,3 +151,26 @@ def test_arm_without_joints_or_base_link_says_what_to_give() -> None:
 def test_not_a_description_is_a_type_error() -> None:
     with pytest.raises(TypeError, match="robot name or a RobotDescription"):
         load_description(42)  # type: ignore[arg-type]
+
+
+def test_loading_gives_a_loaded_description_whose_model_is_set() -> None:
+    from robocram.robots import LoadedDescription
+
+    spec = builtin_description("pr2")
+    assert not isinstance(spec, LoadedDescription) and spec.model is None
+    loaded = load_description(spec)
+    assert isinstance(loaded, LoadedDescription)
+    assert loaded.model.root_link == "base_footprint"
+    assert loaded.arms["left"].joints[0] == "l_shoulder_pan_joint"
+    again = load_description(replace(loaded, name="pr2-copy"))
+    assert isinstance(again, LoadedDescription) and again.model is loaded.model
+
+
+def test_sides_name_the_arms_of_two_armed_robots_whatever_they_are_called() -> None:
+    pr2 = builtin_description("pr2")
+    port = replace(pr2.arms["left"], name="port", side="left")
+    desc = replace(pr2, arms={"port": port, "right": pr2.arms["right"]})
+    assert desc.arm_called("left") == "port" and desc.arm_called("port") == "port"
+    assert desc.arm_called("right") == "right" and desc.arm_called("lefty") == "lefty"
+    assert desc.resources() == ("navigation", "torso", "perception", "ptu", "grippers", "arms")
+    assert load_description("quadrotor").resources() == ("flying", "distance_sensor")

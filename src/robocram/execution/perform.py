@@ -92,14 +92,13 @@ def _send(designator: Designator, command: Any, kb: KnowledgeBase) -> Any:
             designator=designator,
             running=running,
         )
-    first_failure: PlanFailure | None = None
+    failures: list[PlanFailure] = []
     for module in modules:
         try:
             return module.call(command)
         except PlanFailure as failure:
-            first_failure = first_failure or failure
-    assert first_failure is not None  # modules was not empty, every one failed
-    raise first_failure
+            failures.append(failure)
+    raise failures[0]  # every matching module failed: the first one's reason
 
 
 def _run_plan(designator: Designator, plan: Any, kb: KnowledgeBase) -> Any:

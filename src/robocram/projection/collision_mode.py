@@ -45,7 +45,6 @@ def colliding_objects(
     """Objects the robot would touch at ``joints`` with links other than ``allowed_links``."""
     world = robot.world
     model = robot.description.model
-    assert model is not None  # loaded descriptions carry their model
     before = {
         joint: value
         for joint, value in world.joint_states(robot.name).items()

@@ -19,6 +19,7 @@ from robocram.execution.failures import PtuGoalNotReached, PtuGoalUnreachable
 from robocram.kinematics import forward_kinematics, solve_ik
 from robocram.projection.errors import ProjectionError
 from robocram.projection.projected_robot import ProjectedRobot
+from robocram.robots import PanTiltDescription
 from robocram.tf import Pose, Vector3
 from robocram.tf import quaternion as quat
 from robocram.world import JointLimits
@@ -34,9 +35,9 @@ def look_at(robot: ProjectedRobot, target_in_map: Vector3) -> dict[str, float]:
     if not desc.cameras:
         raise ProjectionError(f"{robot.name} has no camera to look with")
     if desc.pan_tilt is not None:
-        return _aim_pan_tilt(robot, target_in_map)
+        return _aim_pan_tilt(robot, desc.pan_tilt, target_in_map)
     if desc.neck_arm is not None:
-        return _aim_neck_arm(robot, target_in_map)
+        return _aim_neck_arm(robot, desc.neck_arm, target_in_map)
     raise ProjectionError(
         f"{robot.name} has neither a pan-tilt unit nor a neck arm; it cannot look around"
     )
@@ -74,9 +75,9 @@ def _aim_joint(robot: ProjectedRobot, joint: str, child_link: str, target: np.nd
     return _nearest_in_limits(current + turn, world.joint_limits(robot.name, joint))
 
 
-def _aim_pan_tilt(robot: ProjectedRobot, target_in_map: Vector3) -> dict[str, float]:
-    pt = robot.description.pan_tilt
-    assert pt is not None  # checked by look_at
+def _aim_pan_tilt(
+    robot: ProjectedRobot, pt: PanTiltDescription, target_in_map: Vector3
+) -> dict[str, float]:
     world, target = robot.world, np.asarray(target_in_map, float)
     wanted: dict[str, float] = {}
     for _ in range(AIM_ROUNDS):
@@ -132,10 +133,8 @@ def _camera_positions(robot: ProjectedRobot, frame: str) -> list[Vector3]:
     return places
 
 
-def _aim_neck_arm(robot: ProjectedRobot, target_in_map: Vector3) -> dict[str, float]:
+def _aim_neck_arm(robot: ProjectedRobot, neck: str, target_in_map: Vector3) -> dict[str, float]:
     desc, world = robot.description, robot.world
-    neck = desc.neck_arm
-    assert neck is not None  # checked by look_at
     frame = desc.cameras[0].frame
     seed = world.joint_states(robot.name)
     errors = []

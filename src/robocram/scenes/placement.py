@@ -20,7 +20,7 @@ import math
 from dataclasses import dataclass
 
 from robocram.kinematics import forward_kinematics
-from robocram.robots import ArmDescription, RobotDescription
+from robocram.robots import ArmDescription, LoadedDescription
 from robocram.scenes.errors import UnfitRobotError
 from robocram.tf import Pose, Vector3
 from robocram.world import World
@@ -49,7 +49,7 @@ class TabletopPlacement:
         return self.mug_xy[0] - MUG_INSET + TABLE_DEPTH / 2
 
 
-def _joints_for_torso(desc: RobotDescription) -> dict[str, float]:
+def _joints_for_torso(desc: LoadedDescription) -> dict[str, float]:
     model = desc.model
     if desc.torso_joint is None or model is None:
         return {}
@@ -59,30 +59,27 @@ def _joints_for_torso(desc: RobotDescription) -> dict[str, float]:
     return {desc.torso_joint: (joint.lower + joint.upper) / 2}
 
 
-def _shoulder(desc: RobotDescription, arm: ArmDescription, torso: dict[str, float]) -> Vector3:
-    assert desc.model is not None  # loaded descriptions carry their model
+def _shoulder(desc: LoadedDescription, arm: ArmDescription, torso: dict[str, float]) -> Vector3:
     first = desc.model.joints[arm.joints[0]]
     return forward_kinematics(desc, torso, first.child).position
 
 
-def _pans(desc: RobotDescription, arm: ArmDescription, torso: dict[str, float]) -> bool:
+def _pans(desc: LoadedDescription, arm: ArmDescription, torso: dict[str, float]) -> bool:
     """Whether the arm's first joint turns about the vertical (it can swing sideways)."""
-    assert desc.model is not None
     first = desc.model.joints[arm.joints[0]]
     frame = forward_kinematics(desc, torso, first.child)
     axis = (Pose(orientation=frame.orientation) * Pose(first.axis)).position
     return abs(axis[2]) > PAN_VERTICAL
 
 
-def _arm_length(desc: RobotDescription, arm: ArmDescription, torso: dict[str, float]) -> float:
+def _arm_length(desc: LoadedDescription, arm: ArmDescription, torso: dict[str, float]) -> float:
     """Shoulder-to-wrist length [m] along the chain, stretched out (joints at zero)."""
-    assert desc.model is not None
     links = [desc.model.joints[j].child for j in arm.joints] + [arm.end_effector_link]
     points = [forward_kinematics(desc, torso, link).position for link in links]
     return sum(math.dist(p, q) for p, q in zip(points, points[1:], strict=False))
 
 
-def _hand_length(desc: RobotDescription, arm: ArmDescription) -> float:
+def _hand_length(desc: LoadedDescription, arm: ArmDescription) -> float:
     """Wrist-to-tool-frame distance [m]: how far above the grasp the wrist stays."""
     wrist = forward_kinematics(desc, {}, arm.end_effector_link)
     tool = forward_kinematics(desc, {}, arm.tool_frame)
@@ -92,7 +89,6 @@ def _hand_length(desc: RobotDescription, arm: ArmDescription) -> float:
 def _footprint_front(world: World, robot: str, below: float) -> float:
     """Foremost x [m] of the robot's links fixed to its root and reaching below ``below``."""
     desc = world.robot(robot).description
-    assert desc.model is not None
     fixed = {desc.model.root_link}
     for joint in desc.model.joints.values():  # URDF order lists parents before children
         if joint.type == "fixed" and joint.parent in fixed:

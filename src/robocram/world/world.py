@@ -173,7 +173,6 @@ class World(WorldCore):
     def _start_within_limits(self, robot: RobotObject) -> None:
         """Put every joint at its in-limit value nearest 0 (some grippers exclude 0)."""
         model = robot.description.model
-        assert model is not None  # load_description fills it
         start = {
             name: self.joint_limits(robot, name).clamp(0.0)
             for name in self.joint_states(robot)

@@ -196,7 +196,7 @@ class WorldCore:
         """Position limits [rad | m] of a movable joint; continuous ones are -inf/inf."""
         handle = self.object(obj)
         index = self._movable_index(handle, joint)
-        if isinstance(handle, RobotObject) and handle.description.model is not None:
+        if isinstance(handle, RobotObject):
             spec = handle.description.model.joints[joint]
             lower = -math.inf if spec.lower is None else spec.lower
             upper = math.inf if spec.upper is None else spec.upper

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from robocram.robots import RobotDescription
+from robocram.robots import LoadedDescription
 from robocram.world.body_spec import BodySpec
 
 
@@ -41,4 +41,4 @@ class WorldObject:
 class RobotObject(WorldObject):
     """A robot body with its checked description (``description.model`` is its URDF)."""
 
-    description: RobotDescription = field(kw_only=True)
+    description: LoadedDescription = field(kw_only=True)
