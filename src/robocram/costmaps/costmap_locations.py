@@ -172,7 +172,7 @@ class CostmapLocations:
         placed = query.designator.get("for_")
         heading = self.world.pose(query.object(placed, "for_")).orientation if placed else None
         for cell in cells:
-            x, y, z = costmap.position(cell, rng)
+            x, y, z = costmap.position(cell, rng if yaws is None else None)  # yaws fit centres
             if heading is not None:
                 yield Pose((x, y, z), heading)
                 continue

@@ -2,7 +2,7 @@
 
 The approach axis runs from the wrist (the arm's end-effector link) to the tool frame;
 a grasp from above points it straight down over the object's centre, turned about the
-vertical by one of :data:`GRASP_YAWS`.
+vertical (in the robot's base frame) by one of :data:`GRASP_YAWS`.
 """
 
 from __future__ import annotations
@@ -13,7 +13,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from robocram.kinematics import forward_kinematics
-from robocram.robots import RobotDescription
+from robocram.robots import RobotDescription, load_description
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
 from robocram.world import World, WorldObject
@@ -51,8 +51,23 @@ def grasp_point(world: World, obj: WorldObject) -> tuple[float, float, float]:
     return ((low[0] + high[0]) / 2, (low[1] + high[1]) / 2, z)
 
 
-def grasp_poses(world: World, obj: WorldObject, desc: RobotDescription, arm: str) -> list[Pose]:
-    """Map poses of ``arm``'s tool frame that grasp ``obj`` from above, one per yaw."""
+def grasp_poses(
+    world: World, obj: WorldObject, desc: RobotDescription, arm: str, base: Pose
+) -> list[Pose]:
+    """Poses in the base frame of ``arm``'s tool grasping ``obj`` from above, one per yaw.
+
+    The yaws turn the hand relative to the base, not the map: a five-joint arm such as
+    the HSR's reaches a grasp from above only in a few headings relative to its base.
+    """
     axis = approach_axis(desc, arm)
-    point = grasp_point(world, obj)
+    point = base.inverse().transform_point(grasp_point(world, obj))
     return [Pose(point, top_down(axis, yaw)) for yaw in GRASP_YAWS]
+
+
+def shoulder_offset(desc: RobotDescription, arm: str) -> float:
+    """Sideways offset [m] (base y) of the arm's first joint: the line it reaches along."""
+    model = load_description(desc).model
+    first = model.joints[desc.arms[arm].joints[0]] if desc.arms[arm].joints else None
+    if first is None:
+        return 0.0
+    return forward_kinematics(desc, {}, first.child).position[1]

@@ -1,8 +1,10 @@
 """Reachability: cells from which an arm reaches the object, by the inverse reachability map.
 
-For a target at horizontal distance ``d`` and height ``z`` over a cell, each arm's map
-gives how well it reaches and at which bearing in the base the target should lie. A cell
-takes its best arm's score, and its yaw turns the base so that arm faces the target.
+Each arm reaches best straight ahead of its shoulder, so a cell's yaw turns the base until
+the target lies on the line ahead of the shoulder (the arm faces the target; for an arm
+of five joints such as the HSR's this is the only line it reaches from above). The arm's
+reachability map then scores the target's place in the base frame; a cell takes the
+score of its best arm, squared so that likely cells are drawn first.
 """
 
 from __future__ import annotations
@@ -13,8 +15,9 @@ import numpy as np
 
 from robocram.costmaps.cost_layer import CostLayer, LocationQuery
 from robocram.costmaps.errors import CostmapInputError
-from robocram.costmaps.grasps import grasp_point
+from robocram.costmaps.grasps import grasp_point, shoulder_offset
 from robocram.costmaps.grid import BoolGrid
+from robocram.costmaps.validators import robot_arms
 
 
 def reachability_cost(query: LocationQuery, value: Any, alive: BoolGrid) -> CostLayer:
@@ -23,13 +26,7 @@ def reachability_cost(query: LocationQuery, value: Any, alive: BoolGrid) -> Cost
     if robot is None:
         raise CostmapInputError(f"{query.designator.description} names no robot", None)
     desc = robot.description
-    arm = query.designator.get("arm")
-    arms = [arm] if arm is not None else [a for a in desc.arms if a != desc.neck_arm]
-    for name in arms:
-        if name not in desc.arms:
-            raise CostmapInputError(
-                f"robot {robot.name!r} has no arm {name!r}; it has {sorted(desc.arms)}", name
-            )
+    arms = robot_arms(robot, query.designator.get("arm"))
     obj = query.designator.get("object")
     if obj is not None:
         target = grasp_point(query.world, query.object(obj, "object"))
@@ -37,13 +34,22 @@ def reachability_cost(query: LocationQuery, value: Any, alive: BoolGrid) -> Cost
         target = query.point(query.designator.get("target"), "target")
     height = target[2] - query.world.pose(robot).position[2]
     x, y = query.centres()
-    distance = np.hypot(target[0] - x, target[1] - y)
-    towards = np.arctan2(target[1] - y, target[0] - x)
-    score = np.zeros(query.grid.shape)
-    yaws = np.zeros(query.grid.shape)
+    distance = np.hypot(target[0] - x, target[1] - y).ravel()
+    towards = np.arctan2(target[1] - y, target[0] - x).ravel()
+    score = np.zeros(distance.shape)
+    yaws = np.zeros(distance.shape)
     for name in arms:
-        arm_score, bearing = query.reach_maps.get(desc, name).best(distance, height)
+        side = shoulder_offset(desc, name)
+        ahead = np.sqrt(np.maximum(distance**2 - side**2, 0.0))
+        points = np.column_stack([ahead, np.full_like(ahead, side), np.full_like(ahead, height)])
+        arm_score = np.where(
+            distance > abs(side), query.reach_maps.get(desc, name).scores_at(points), 0.0
+        )
         better = arm_score > score
         score = np.where(better, arm_score, score)
-        yaws = np.where(better, towards - bearing, yaws)
-    return CostLayer(score, yaws=yaws)
+        turn = np.arcsin(np.clip(side / np.maximum(distance, 1e-9), -1.0, 1.0))
+        yaws = np.where(better, towards - turn, yaws)
+    shape = query.grid.shape
+    return CostLayer(
+        (score**2).reshape(shape), yaws=yaws.reshape(shape)
+    )  # squared: likeliest first

@@ -1,10 +1,10 @@
 """Reachability maps: where around its base an arm's tool gets, from sampled FK.
 
 Built once per robot arm from the URDF: joint values (the torso's too) are drawn from a
-seeded generator, FK places the tool, and samples whose approach axis points down (a
-grasp from above) are counted in polar bins around the base: horizontal distance,
-bearing and height. Used inverted, the map says for a target at distance ``d`` and
-height ``z`` how well the arm reaches it and at which bearing the base should hold it.
+seeded generator, batched FK places the tool, and samples whose approach axis points
+down (a grasp from above) are counted in polar bins around the base: horizontal
+distance, bearing and height. Used inverted around a target, the map scores the base
+poses from which the target falls into well-filled bins.
 Maps are cached on disk under :func:`cache_dir`, keyed by the URDF's content.
 """
 
@@ -19,22 +19,22 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
-import pinocchio as pin
 from numpy.typing import NDArray
 
+from robocram.costmaps.batch_fk import batch_frame_poses
 from robocram.costmaps.grasps import approach_axis
 from robocram.kinematics import arm_joints
 from robocram.kinematics.robot_kinematics import robot_kinematics
 from robocram.robots import RobotDescription, load_description
 
-SAMPLES = 24000  # FK samples per arm
+SAMPLES = 100_000  # FK samples per arm
 RADIUS_STEP = 0.05  # [m]
 RADIUS_MAX = 1.6  # [m]
 BEARINGS = 24  # bins over a full turn
 HEIGHT_STEP = 0.05  # [m]
 HEIGHT_MAX = 2.4  # [m]
-MAX_TILT = math.radians(45)  # approach axis within this of straight down counts as a grasp
-FORMAT = 2  # bump when the map's meaning changes: old cache files are then ignored
+MAX_TILT = math.radians(30)  # approach axis within this of straight down counts as a grasp
+FORMAT = 3  # bump when the map's meaning changes: old cache files are then ignored
 
 
 def cache_dir() -> Path:
@@ -54,48 +54,36 @@ class ReachabilityMap:
     arm: str
     scores: NDArray[np.float64]
 
-    def best(
-        self, distance: NDArray[np.float64], height: float
-    ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-        """Best score and the bearing [rad] (of the target in the base) giving it, per distance."""
-        r = np.clip((distance / RADIUS_STEP).astype(int), 0, self.scores.shape[0] - 1)
-        h = int(np.clip(height / HEIGHT_STEP, 0, self.scores.shape[2] - 1))
-        column = self.scores[:, :, h]
-        best_bin = np.argmax(column, axis=1)
-        bearing = (best_bin + 0.5) * (2 * math.pi / BEARINGS) - math.pi
-        score = column[np.arange(column.shape[0]), best_bin]
-        outside = distance >= RADIUS_MAX
-        return np.where(outside, 0.0, score[r]), bearing[r]
+    def score_at(self, point_in_base: tuple[float, float, float]) -> float:
+        """Score of a tool position given in the robot's base frame [m]."""
+        return float(self.scores_at(np.array([point_in_base]))[0])
+
+    def scores_at(self, points_in_base: NDArray[np.float64]) -> NDArray[np.float64]:
+        """Scores of tool positions (N x 3, base frame [m]); 0 outside the map."""
+        x, y, z = points_in_base[:, 0], points_in_base[:, 1], points_in_base[:, 2]
+        r = (np.hypot(x, y) / RADIUS_STEP).astype(int)
+        b = ((np.arctan2(y, x) + math.pi) / (2 * math.pi) * BEARINGS).astype(int) % BEARINGS
+        h = np.floor(z / HEIGHT_STEP).astype(int)
+        inside = (r < self.scores.shape[0]) & (h >= 0) & (h < self.scores.shape[2])
+        out = np.zeros(len(points_in_base))
+        out[inside] = self.scores[r[inside], b[inside], h[inside]]
+        return out
 
 
 def _sample_tool_points(desc: RobotDescription, arm: str, samples: int) -> NDArray[np.float64]:
-    """Tool positions (N x 3, base frame) of seeded random configurations grasping from above.
-
-    Runs pinocchio's FK directly on configuration vectors (mimic joints stay put: they are
-    fingers, not on the way to the tool frame), some 40x faster than one query at a time.
-    """
-    model = desc.model
-    assert model is not None  # loaded by the caller
-    kin = robot_kinematics(model)
+    """Tool positions (N x 3, base frame) of seeded random configurations grasping from above."""
+    kin = robot_kinematics(load_description(desc).model)
     joints = [kin.joint(name) for name in arm_joints(desc, arm, desc.torso_joint is not None)]
-    lows = [-math.pi if j.continuous else j.lower for j in joints]
-    highs = [math.pi if j.continuous else j.upper for j in joints]
-    values = np.random.default_rng(0).uniform(lows, highs, size=(samples, len(joints)))
-    axis = approach_axis(desc, arm)
-    frame = kin.frame_id(desc.arms[arm].tool_frame)
-    q = kin.configuration({})
-    points = []
-    for row in values:
-        for joint, value in zip(joints, row, strict=True):
-            if joint.continuous:
-                q[joint.idx_q : joint.idx_q + 2] = (math.cos(value), math.sin(value))
-            else:
-                q[joint.idx_q] = value
-        pin.framesForwardKinematics(kin.model, kin.data, q)
-        tool = kin.data.oMf[frame]
-        if (tool.rotation @ axis)[2] <= -math.cos(MAX_TILT):
-            points.append(tool.translation.copy())
-    return np.asarray(points, dtype=float).reshape(-1, 3)
+    rng = np.random.default_rng(0)
+    values = {
+        j.name: rng.uniform(-math.pi, math.pi, samples)
+        if j.continuous
+        else rng.uniform(j.lower, j.upper, samples)
+        for j in joints
+    }
+    rotations, positions = batch_frame_poses(kin, desc.arms[arm].tool_frame, values)
+    approach = rotations @ approach_axis(desc, arm)
+    return positions[approach[:, 2] <= -math.cos(MAX_TILT)]
 
 
 def build_reachability_map(

@@ -14,7 +14,8 @@ from types import MappingProxyType
 from robocram.costmaps.camera_aim import aimed_camera
 from robocram.costmaps.cost_layer import LocationQuery
 from robocram.costmaps.errors import CostmapInputError
-from robocram.costmaps.grasps import grasp_poses
+from robocram.costmaps.grasps import grasp_point, grasp_poses
+from robocram.costmaps.reachability_map import ReachabilityMaps
 from robocram.kinematics import solve_ik
 from robocram.tf import Pose
 from robocram.world import RobotObject, World, WorldObject
@@ -82,21 +83,41 @@ class Reach:
     tool_in_base: Pose  # the grasp, in the robot's root link
 
 
-def reach_object(
-    world: World, robot: RobotObject, obj: WorldObject, base: Pose, arm: str | None = None
-) -> Reach | None:
-    """An IK solution (torso free) grasping ``obj`` from above from ``base``, or None."""
+def robot_arms(robot: RobotObject, arm: str | None) -> list[str]:
+    """``[arm]`` if given and the robot has it, else all of the robot's arms but the neck."""
     desc = robot.description
-    arms = [arm] if arm is not None else [a for a in desc.arms if a != desc.neck_arm]
+    if arm is None:
+        return [a for a in desc.arms if a != desc.neck_arm]
+    if arm not in desc.arms:
+        raise CostmapInputError(
+            f"robot {robot.name!r} has no arm {arm!r}; it has {sorted(desc.arms)}", arm
+        )
+    return [arm]
+
+
+def reach_object(
+    world: World,
+    robot: RobotObject,
+    obj: WorldObject,
+    base: Pose,
+    arm: str | None = None,
+    maps: ReachabilityMaps | None = None,
+) -> Reach | None:
+    """An IK solution (torso free) grasping ``obj`` from above from ``base``, or None.
+
+    With reachability ``maps``, arms are tried best first and those the map says cannot
+    get there are skipped: IK on a hopeless target only burns its whole budget.
+    """
+    desc = robot.description
+    arms = robot_arms(robot, arm)
+    if maps is not None:
+        point = base.inverse().transform_point(grasp_point(world, obj))
+        scores = {a: maps.get(desc, a).score_at(point) for a in arms}
+        arms = sorted((a for a in arms if scores[a] > 0), key=lambda a: -scores[a])
     seed = world.joint_states(robot)
     use_torso = desc.torso_joint is not None
     for name in arms:
-        if name not in desc.arms:
-            raise CostmapInputError(
-                f"robot {robot.name!r} has no arm {name!r}; it has {sorted(desc.arms)}", name
-            )
-        for grasp in grasp_poses(world, obj, desc, name):
-            target = base.inverse() * grasp
+        for target in grasp_poses(world, obj, desc, name, base):
             result = solve_ik(
                 desc, name, target, seed=seed, use_torso=use_torso, max_restarts=IK_RESTARTS
             )
@@ -109,7 +130,8 @@ def reachable(query: LocationQuery, pose: Pose) -> bool:
     """Whether the robot at ``pose`` reaches a grasp of the object with IK, torso free."""
     robot = _robot(query)
     obj = query.object(query.designator.get("object"), "object")
-    return reach_object(query.world, robot, obj, pose, query.designator.get("arm")) is not None
+    arm = query.designator.get("arm")
+    return reach_object(query.world, robot, obj, pose, arm, query.reach_maps) is not None
 
 
 BUILTIN_VALIDATORS: Mapping[str, Validator] = MappingProxyType(
