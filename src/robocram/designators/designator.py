@@ -22,7 +22,8 @@ from robocram.designators.solution_stream import SolutionStream
 if TYPE_CHECKING:
     from robocram.logic import KnowledgeBase
 
-S = TypeVar("S")  # what a designator resolves to
+S = TypeVar("S")  # a solution, in the stream tables
+S_co = TypeVar("S_co", covariant=True)  # what a designator resolves to
 
 _CHAIN_LOCK = threading.RLock()  # guards the parent/successor links of every chain
 
@@ -64,7 +65,7 @@ class _StreamTable(Generic[S]):
             return entry[1]
 
 
-class Designator(Generic[S]):
+class Designator(Generic[S_co]):
     """Base of all designator kinds, resolving to ``S``; subclasses say how solutions come."""
 
     kind: ClassVar[Kind]
@@ -77,7 +78,7 @@ class Designator(Generic[S]):
     ) -> None:
         self._properties = normalize_properties(pairs, properties)
         self.quantifier = quantifier
-        self._streams: _StreamTable[S] = _StreamTable()
+        self._streams: _StreamTable[S_co] = _StreamTable()
         self._index = 0
         self._parent: Designator[Any] | None = None
         self._successor: Designator[Any] | None = None
@@ -120,7 +121,7 @@ class Designator(Generic[S]):
     def __repr__(self) -> str:
         return f"<{type(self).__name__} {self.description}>"
 
-    def reference(self, kb: KnowledgeBase | None = None) -> S:
+    def reference(self, kb: KnowledgeBase | None = None) -> S_co:
         """Return this designator's solution (computed on first use, then cached).
 
         Raises:
@@ -128,17 +129,17 @@ class Designator(Generic[S]):
         """
         return self._reference_in(self._resolution_context(kb))
 
-    def _reference_in(self, context: object) -> S:
+    def _reference_in(self, context: object) -> S_co:
         found = self._solution(context, self._index)
         if found is None:
             raise self._no_solution_error(context)
         return found[0]
 
-    def next_solution(self, kb: KnowledgeBase | None = None) -> Designator[S] | None:
+    def next_solution(self, kb: KnowledgeBase | None = None) -> Designator[S_co] | None:
         """Return a designator for the next solution, equated with this one; None when exhausted."""
         return self._next_in(self._resolution_context(kb))
 
-    def _next_in(self, context: object) -> Designator[S] | None:
+    def _next_in(self, context: object) -> Designator[S_co] | None:
         if self._solution(context, self._index + 1) is None:
             return None
         with _CHAIN_LOCK:
@@ -151,11 +152,11 @@ class Designator(Generic[S]):
             self.equate(sibling)
             return sibling
 
-    def solutions(self, kb: KnowledgeBase | None = None) -> Iterator[S]:
+    def solutions(self, kb: KnowledgeBase | None = None) -> Iterator[S_co]:
         """Yield this designator's solutions lazily, from its own onwards (shared cache)."""
         yield from self._solutions_in(self._resolution_context(kb))
 
-    def _solutions_in(self, context: object) -> Iterator[S]:
+    def _solutions_in(self, context: object) -> Iterator[S_co]:
         index = self._index
         while True:
             found = self._solution(context, index)
@@ -164,7 +165,7 @@ class Designator(Generic[S]):
             yield found[0]
             index += 1
 
-    def _solution(self, context: object, index: int) -> tuple[S] | None:
+    def _solution(self, context: object, index: int) -> tuple[S_co] | None:
         stream = self._streams.stream(context, lambda: self._solutions(context))
         try:
             return stream.get(index)
@@ -175,7 +176,7 @@ class Designator(Generic[S]):
                 f"resolving {self.description} failed: {type(err).__name__}: {err}", self
             ) from err
 
-    def _copy(self) -> Designator[S]:
+    def _copy(self) -> Designator[S_co]:
         twin = object.__new__(type(self))
         twin.__dict__.update(self.__dict__)
         twin._parent = None
@@ -188,7 +189,7 @@ class Designator(Generic[S]):
         """Return the object solutions depend on (a KB, a location resolver...)."""
         raise NotImplementedError
 
-    def _solutions(self, context: Any) -> Iterator[S]:
+    def _solutions(self, context: Any) -> Iterator[S_co]:
         """Yield this designator's solutions lazily in ``context``."""
         raise NotImplementedError
 

@@ -7,7 +7,10 @@ The execution layer turns a :class:`DesignatorError` met during PERFORM into its
 from __future__ import annotations
 
 from collections.abc import Iterable
-from typing import Any
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from robocram.designators.designator import Designator
 
 
 class DesignatorError(Exception):
@@ -17,7 +20,7 @@ class DesignatorError(Exception):
         designator: the culprit designator (or None when the error is about a property).
     """
 
-    def __init__(self, message: str, designator: Any = None) -> None:
+    def __init__(self, message: str, designator: Designator[object] | None = None) -> None:
         super().__init__(message)
         self.designator = designator
 
@@ -29,7 +32,9 @@ class DesignatorPropertyError(DesignatorError, ValueError):
         key: the culprit property key.
     """
 
-    def __init__(self, message: str, key: str, designator: Any = None) -> None:
+    def __init__(
+        self, message: str, key: str, designator: Designator[object] | None = None
+    ) -> None:
         super().__init__(message, designator)
         self.key = key
 
@@ -43,7 +48,10 @@ class GroundingError(DesignatorError):
     """
 
     def __init__(
-        self, message: str, designator: Any = None, grounded_types: Iterable[str] = ()
+        self,
+        message: str,
+        designator: Designator[object] | None = None,
+        grounded_types: Iterable[str] = (),
     ) -> None:
         super().__init__(message, designator)
         self.grounded_types = tuple(sorted(set(grounded_types)))
@@ -64,7 +72,7 @@ class MotionPropertyError(DesignatorPropertyError, GroundingError):
         motion: str,
         key: str,
         expected: str,
-        designator: Any = None,
+        designator: Designator[object] | None = None,
         grounded_types: Iterable[str] = (),
     ) -> None:
         DesignatorError.__init__(self, message, designator)

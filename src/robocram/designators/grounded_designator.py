@@ -12,7 +12,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import ClassVar
 
-from robocram.designators.designator import Designator, Kind, S
+from robocram.designators.designator import Designator, Kind, S_co
 from robocram.designators.errors import DesignatorPropertyError, GroundingError
 from robocram.designators.motion_table import MOTION_TYPES
 from robocram.designators.motion_type import check_property_types, missing_property_error
@@ -27,7 +27,7 @@ def bound_kb() -> KnowledgeBase | None:
         return None
 
 
-class GroundedDesignator(Designator[S]):
+class GroundedDesignator(Designator[S_co]):
     """A designator whose solutions are the answers of ``<predicate>(Desig, Solution)``."""
 
     grounding_predicate: ClassVar[str]
@@ -55,7 +55,7 @@ class GroundedDesignator(Designator[S]):
             )
         return bound
 
-    def _solutions(self, context: KnowledgeBase) -> Iterator[S]:
+    def _solutions(self, context: KnowledgeBase) -> Iterator[S_co]:
         for answer in context.query(f"{self.grounding_predicate}(D, G)", D=self):
             yield answer["G"]
 

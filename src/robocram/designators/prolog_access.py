@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import itertools
 from collections.abc import Iterator
-from typing import Any
 
 from robocram.designators.designator import Designator, Kind
 from robocram.designators.grounded_designator import TypeProbe
@@ -53,7 +52,7 @@ def install_designator_predicates(kb: KnowledgeBase) -> KnowledgeBase:
 
 def _install_python_predicates(kb: KnowledgeBase) -> None:
     @kb.predicate("desig_prop", 3)
-    def desig_prop(d: Any, key: Any, value: Any) -> Iterator[tuple[Any, Any, Any]]:
+    def desig_prop(d: object, key: object, value: object) -> Iterator[tuple[object, ...]]:
         if not isinstance(d, Designator):
             _require_bound(d, "desig_prop/3")
             return
@@ -65,17 +64,17 @@ def _install_python_predicates(kb: KnowledgeBase) -> None:
                 yield d, k, v
 
     @kb.predicate("designator_grounding", 2)
-    def designator_grounding(d: Any, solution: Any) -> Iterator[tuple[Any, Any]]:
+    def designator_grounding(d: object, solution: object) -> Iterator[tuple[object, ...]]:
         for current in _solutions(kb, d, "designator_grounding/2"):
             yield d, current
 
     @kb.predicate("designator_groundings", 2)
-    def designator_groundings(d: Any, solutions: Any) -> Iterator[tuple[Any, Any]]:
+    def designator_groundings(d: object, solutions: object) -> Iterator[tuple[object, ...]]:
         found = _solutions(kb, d, "designator_groundings/2")
         yield d, list(itertools.islice(found, GROUNDINGS_LIMIT))
 
     @kb.predicate("desig_kind", 2)
-    def desig_kind(d: Any, kind: Any) -> Iterator[tuple[Any, Any]]:
+    def desig_kind(d: object, kind: object) -> Iterator[tuple[object, ...]]:
         if isinstance(d, Designator):
             yield d, d.kind.value
         else:
@@ -87,21 +86,21 @@ def _install_python_predicates(kb: KnowledgeBase) -> None:
 
 def _install_kind_test(kb: KnowledgeBase, name: str, kind: Kind) -> None:
     @kb.predicate(name, 1)
-    def kind_test(d: Any) -> Iterator[None]:
+    def kind_test(d: object) -> Iterator[None]:
         if isinstance(d, Designator) and d.kind is kind:
             yield None
         elif not isinstance(d, Designator):
             _require_bound(d, f"{name}/1")
 
 
-def _require_bound(d: Any, predicate: str) -> None:
+def _require_bound(d: object, predicate: str) -> None:
     if isinstance(d, Var):
         raise ValueError(
             f"{predicate} needs a designator as first argument, got an unbound variable"
         )
 
 
-def _solutions(kb: KnowledgeBase, d: Any, predicate: str) -> Iterator[Any]:
+def _solutions(kb: KnowledgeBase, d: object, predicate: str) -> Iterator[object]:
     """Yield the solutions of designator ``d`` lazily, grounded in ``kb`` where it matters."""
     if not isinstance(d, Designator):
         _require_bound(d, predicate)

@@ -73,11 +73,11 @@ class MotionProcessModule(ProcessModule):
         """The commands this module executes, keyed by ``(name, arity)`` (built once)."""
         return commands_of(MOTION_TYPES, self.resource)
 
-    def execute(self, command: Any) -> Any:
+    def execute(self, command: object) -> Any:
         """Run a table command of this module's resource (anything else is refused)."""
         table = self.commands
         spec = table.get((command.name, command.arity)) if isinstance(command, Term) else None
-        if spec is None:
+        if spec is None or not isinstance(command, Term):
             raise self.unsupported(command, [f"{n}/{a}" for n, a in table])
         return self.run_command(spec, command)
 

@@ -82,7 +82,7 @@ def _reference(designator: Designator, kb: KnowledgeBase) -> Any:
         raise DesignatorReferenceFailure(str(err), designator=designator) from err
 
 
-def _send(designator: Designator, command: Any, kb: KnowledgeBase) -> Any:
+def _send(designator: Designator, command: object, kb: KnowledgeBase) -> Any:
     modules = matching_process_modules(designator, kb)
     if not modules:
         running = [m.name for m in running_process_modules()]
@@ -101,7 +101,7 @@ def _send(designator: Designator, command: Any, kb: KnowledgeBase) -> Any:
     raise failures[0]  # every matching module failed: the first one's reason
 
 
-def _run_plan(designator: Designator, plan: Any, kb: KnowledgeBase) -> Any:
+def _run_plan(designator: Designator, plan: object, kb: KnowledgeBase) -> Any:
     if callable(plan) and not isinstance(plan, Term):
         return plan()
     if isinstance(plan, Term):

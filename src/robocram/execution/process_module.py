@@ -45,7 +45,7 @@ class ProcessModule:
         state = "running" if self.running else "stopped"
         return f"<{type(self).__name__} {self.name!r} {state}>"
 
-    def execute(self, command: Any) -> Any:
+    def execute(self, command: object) -> Any:
         """Run one referenced command (a ``robocram.logic.Term``) on the resource; the one hook."""
         raise NotImplementedError(f"{type(self).__name__} must implement execute(command)")
 
@@ -104,7 +104,7 @@ class ProcessModule:
                 self._cond.wait(remaining)
         self.terminate()
 
-    def call(self, command: Any) -> Any:
+    def call(self, command: object) -> Any:
         """Execute ``command`` once the module is free; callers are served in arrival order."""
         self._acquire(command)
         try:
@@ -118,7 +118,7 @@ class ProcessModule:
                 self._executed += 1
                 self._cond.notify_all()
 
-    def _acquire(self, command: Any) -> None:
+    def _acquire(self, command: object) -> None:
         ticket = object()
         with self._cond:
             self._require_running(command)
@@ -140,7 +140,7 @@ class ProcessModule:
     def _free_for(self, ticket: object) -> bool:
         return not self._running or (not self._busy and self._waiting[0] is ticket)
 
-    def _require_running(self, command: Any) -> None:
+    def _require_running(self, command: object) -> None:
         if not self._running:
             raise ProcessModuleFailure(
                 f"process module {self.name!r} is not running, so it cannot execute {command}; "
@@ -149,7 +149,7 @@ class ProcessModule:
                 command=command,
             )
 
-    def _execute_named(self, command: Any) -> Any:
+    def _execute_named(self, command: object) -> Any:
         try:
             return self.execute(command)
         except SetupFailure as err:
@@ -160,7 +160,7 @@ class ProcessModule:
         except Exception as err:
             raise self._wrapped(command, err) from err
 
-    def _wrapped(self, command: Any, err: Exception) -> ProcessModuleFailure:
+    def _wrapped(self, command: object, err: Exception) -> ProcessModuleFailure:
         return ProcessModuleFailure(
             f"process module {self.name!r} failed on {command}: {type(err).__name__}: {err}",
             module=self.name,
@@ -168,7 +168,7 @@ class ProcessModule:
             error=err,
         )
 
-    def unsupported(self, command: Any, supported: Iterable[str]) -> ProcessModuleFailure:
+    def unsupported(self, command: object, supported: Iterable[str]) -> ProcessModuleFailure:
         """Build the failure for a command this module does not handle (for ``execute``)."""
         return ProcessModuleFailure(
             f"process module {self.name!r} cannot execute {command}; it handles "

@@ -10,13 +10,14 @@ on the way or at the goal leaves it where it was and raises ``FlyingGoalInCollis
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 
 import numpy as np
 
 from robocram.execution.failures import FlyingGoalInCollision
 from robocram.projection.errors import ProjectionError
 from robocram.projection.projected_robot import ProjectedRobot
-from robocram.tf import Pose, PoseLike, PoseStamped, Vector3
+from robocram.tf import Pose, PoseLike, PoseStamped
 from robocram.tf import quaternion as quat
 
 PATH_STEP = 0.05  # [m] between collision checks along a flight
@@ -62,7 +63,7 @@ def fly(robot: ProjectedRobot, target: PoseStamped | PoseLike) -> Pose:
     return goal
 
 
-def sense_distance(robot: ProjectedRobot, direction: Vector3) -> float:
+def sense_distance(robot: ProjectedRobot, direction: Sequence[float]) -> float:
     """Range [m] from the body origin to the first other thing along ``direction`` (body frame).
 
     Returns ``inf`` when nothing is within ``MAX_RANGE``.

@@ -21,7 +21,8 @@ Arm and gripper words are the robot's arm names or the sides ``left``/``right``
 
 from __future__ import annotations
 
-from typing import Any, ClassVar
+from collections.abc import Sequence
+from typing import ClassVar
 
 import numpy as np
 
@@ -36,8 +37,10 @@ from robocram.projection.neck import look_at
 from robocram.projection.perception import detect
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.projection.torso import move_torso
-from robocram.tf import Pose, PoseStamped, Vector3
+from robocram.tf import Pose, PoseLike, PoseStamped, Vector3
 
+Target = PoseStamped | PoseLike  # a goal pose: stamped (any known frame) or in map
+Perceived = ObjectDesignator | list[ObjectDesignator]
 DIRECTION_REACH = 100.0  # [m] looking along a direction aims at a point this far away
 
 
@@ -57,7 +60,7 @@ class NavigationPM(ProjectionProcessModule):
     name = "projection_navigation"
     resource = "navigation"
 
-    def move_base(self, pose: Any) -> Pose:
+    def move_base(self, pose: Target) -> Pose:
         """Drive the base to ``pose``."""
         return drive(self.robot, pose)
 
@@ -79,10 +82,12 @@ class PtuPM(ProjectionProcessModule):
     name = "projection_ptu"
     resource = "ptu"
 
-    def move_head(self, mode: str, goal: Any) -> dict[str, float]:
+    def move_head(self, mode: str, goal: Target | str) -> dict[str, float]:
         """Point the camera at a pose, a frame, or along a direction."""
         robot = self.robot
         if mode == "pose":
+            if isinstance(goal, str):
+                raise ProjectionError(f"looking at a pose needs a pose, got {goal!r}")
             point = robot.in_map(goal).position
         elif mode == "frame":
             point = robot.frame_pose(str(goal)).position
@@ -92,7 +97,7 @@ class PtuPM(ProjectionProcessModule):
             raise ProjectionError(f"move_head mode {mode!r} is none of pose, frame, direction")
         return look_at(robot, point)
 
-    def _along(self, direction: Any) -> Vector3:
+    def _along(self, direction: object) -> Vector3:
         vector = direction.position if isinstance(direction, PoseStamped) else direction
         d = np.asarray(vector, float)
         if d.shape != (3,) or np.linalg.norm(d) < 1e-9:
@@ -110,11 +115,11 @@ class PerceptionPM(ProjectionProcessModule):
     name = "projection_perception"
     resource = "perception"
 
-    def detect(self, desig: ObjectDesignator) -> Any:
+    def detect(self, desig: ObjectDesignator) -> Perceived:
         """The perceived designator(s) fitting ``desig``."""
         return detect(self.robot, desig)
 
-    def inspect(self, desig: ObjectDesignator) -> Any:
+    def inspect(self, desig: ObjectDesignator) -> Perceived:
         """Inspect one object: the simulated camera sees all there is when it detects."""
         return detect(self.robot, desig)
 
@@ -125,7 +130,9 @@ class GripperPM(ProjectionProcessModule):
     name = "projection_grippers"
     resource = "grippers"
 
-    def move_gripper_joint(self, gripper: str, action: Any, effort: Any) -> Any:
+    def move_gripper_joint(
+        self, gripper: str, action: str | float, effort: float | str
+    ) -> dict[str, float] | str:
         """Open, close or grip with ``gripper``'s hand, or set it to a position [rad | m]."""
         arm_name = self.robot.description.arm_called(gripper)
         if action == "open":
@@ -150,20 +157,20 @@ class ArmPM(ProjectionProcessModule):
     def _arm(self, word: str) -> str:
         return self.robot.description.arm_called(word)
 
-    def move_tcp(self, arm: str, pose: Any, mode: str) -> Pose:
+    def move_tcp(self, arm: str, pose: Target, mode: str) -> Pose:
         """Put ``arm``'s tool frame at ``pose``, avoiding collisions as ``mode`` says."""
         return move_tcp(self.robot, self._arm(arm), pose, mode)
 
-    def move_tcp_both(self, left: Any, right: Any, mode: str) -> tuple[Pose, ...]:
+    def move_tcp_both(self, left: Target, right: Target, mode: str) -> tuple[Pose, ...]:
         """Move the tool frames of the arms on the left and the right side."""
         goals = zip(SIDES, (left, right), strict=True)
         return tuple(move_tcp(self.robot, self._arm(side), pose, mode) for side, pose in goals)
 
-    def move_joints(self, arm: str, configuration: Any) -> dict[str, float]:
+    def move_joints(self, arm: str, configuration: object) -> dict[str, float]:
         """Set ``arm``'s joints."""
         return move_joints(self.robot, self._arm(arm), configuration)
 
-    def move_joints_both(self, left: Any, right: Any) -> tuple[dict[str, float], ...]:
+    def move_joints_both(self, left: object, right: object) -> tuple[dict[str, float], ...]:
         """Set the joints of the arms on the left and the right side."""
         goals = zip(SIDES, (left, right), strict=True)
         return tuple(move_joints(self.robot, self._arm(side), config) for side, config in goals)
@@ -175,7 +182,7 @@ class FlyingPM(ProjectionProcessModule):
     name = "projection_flying"
     resource = "flying"
 
-    def fly(self, pose: Any) -> Pose:
+    def fly(self, pose: Target) -> Pose:
         """Fly straight to ``pose``."""
         return fly(self.robot, pose)
 
@@ -186,9 +193,9 @@ class DistanceSensorPM(ProjectionProcessModule):
     name = "projection_distance_sensor"
     resource = "distance_sensor"
 
-    def sense_distance(self, direction: Any) -> float:
+    def sense_distance(self, direction: Sequence[float]) -> float:
         """The range [m] along ``direction`` (body frame)."""
-        return sense_distance(self.robot, tuple(direction))
+        return sense_distance(self.robot, direction)
 
 
 PROJECTION_MODULES: dict[str, type[ProjectionProcessModule]] = {

@@ -25,7 +25,6 @@ import threading
 from collections.abc import Callable, Iterator, Mapping
 from contextlib import contextmanager
 from dataclasses import dataclass
-from typing import Any
 
 from robocram.designators import MOTION_TYPES, Answer, Command, ObjectDesignator
 from robocram.execution import (
@@ -41,6 +40,7 @@ from robocram.execution.failures import PerceptionObjectNotFound
 from robocram.kinematics import forward_kinematics
 from robocram.logic import KnowledgeBase, Term
 from robocram.projection.arm import joint_values
+from robocram.projection.errors import ProjectionError
 from robocram.projection.perception import PerceivedObject
 from robocram.projection.robot_environment import install_motions
 from robocram.projection.world_frames import LiveTransformTree
@@ -89,36 +89,39 @@ class RecordingPM(MotionProcessModule):
         super().__init__()
         self.state = state
 
-    def run_command(self, spec: Command, command: Term) -> Any:
+    def run_command(self, spec: Command, command: Term) -> object:
         """Log ``command`` and return what a real module would plausibly answer."""
         self.state.record(self.name, command)
         return _ANSWERS[_ANSWER_OF[spec]](self.state, spec, command.args)
 
 
-def _goal(state: RecordedState, spec: Command, args: tuple[Any, ...]) -> Any:
+def _goal(state: RecordedState, spec: Command, args: tuple[object, ...]) -> object:
     goals = tuple(args[i] for i in spec.goal)
     return goals[0] if len(goals) == 1 else goals
 
 
-def _joints(state: RecordedState, spec: Command, args: tuple[Any, ...]) -> Any:
+def _joints(state: RecordedState, spec: Command, args: tuple[object, ...]) -> dict[str, float]:
     values = joint_values(args[1])
     state.joints.update(values)
     return values
 
 
-def _gripper(state: RecordedState, spec: Command, args: tuple[Any, ...]) -> Any:
+def _gripper(state: RecordedState, spec: Command, args: tuple[object, ...]) -> object:
     return state.last_detected if args[1] == "grip" else args[1]
 
 
-def _perceived(state: RecordedState, spec: Command, args: tuple[Any, ...]) -> Any:
-    return _detect(state, args[0])
+def _perceived(state: RecordedState, spec: Command, args: tuple[object, ...]) -> object:
+    asked = args[0]
+    if not isinstance(asked, ObjectDesignator):
+        raise ProjectionError(f"perceiving needs an object designator, got {asked!r}")
+    return _detect(state, asked)
 
 
-def _no_range(state: RecordedState, spec: Command, args: tuple[Any, ...]) -> float:
+def _no_range(state: RecordedState, spec: Command, args: tuple[object, ...]) -> float:
     return math.inf
 
 
-_ANSWERS: dict[Answer, Callable[[RecordedState, Command, tuple[Any, ...]], Any]] = {
+_ANSWERS: dict[Answer, Callable[[RecordedState, Command, tuple[object, ...]], object]] = {
     Answer.GOAL: _goal,
     Answer.JOINTS: _joints,
     Answer.GRIPPER: _gripper,
