@@ -7,10 +7,15 @@ The execution layer turns a :class:`DesignatorError` met during PERFORM into its
 from __future__ import annotations
 
 from collections.abc import Iterable
-from typing import TYPE_CHECKING
+from typing import Protocol
 
-if TYPE_CHECKING:
-    from robocram.designators.designator import Designator
+
+class Described(Protocol):
+    """What an error needs of its culprit designator (designator.py imports this module)."""
+
+    @property
+    def description(self) -> str:
+        """The designator written the CRAM way."""
 
 
 class DesignatorError(Exception):
@@ -20,7 +25,7 @@ class DesignatorError(Exception):
         designator: the culprit designator (or None when the error is about a property).
     """
 
-    def __init__(self, message: str, designator: Designator[object] | None = None) -> None:
+    def __init__(self, message: str, designator: Described | None = None) -> None:
         super().__init__(message)
         self.designator = designator
 
@@ -32,9 +37,7 @@ class DesignatorPropertyError(DesignatorError, ValueError):
         key: the culprit property key.
     """
 
-    def __init__(
-        self, message: str, key: str, designator: Designator[object] | None = None
-    ) -> None:
+    def __init__(self, message: str, key: str, designator: Described | None = None) -> None:
         super().__init__(message, designator)
         self.key = key
 
@@ -50,7 +53,7 @@ class GroundingError(DesignatorError):
     def __init__(
         self,
         message: str,
-        designator: Designator[object] | None = None,
+        designator: Described | None = None,
         grounded_types: Iterable[str] = (),
     ) -> None:
         super().__init__(message, designator)
@@ -72,7 +75,7 @@ class MotionPropertyError(DesignatorPropertyError, GroundingError):
         motion: str,
         key: str,
         expected: str,
-        designator: Designator[object] | None = None,
+        designator: Described | None = None,
         grounded_types: Iterable[str] = (),
     ) -> None:
         DesignatorError.__init__(self, message, designator)
