@@ -1,0 +1,207 @@
+"""Opening and closing articulated parts (drawers, doors) in projection.
+
+The gripper takes the handle from the front (its approach axis along the handle frame's
+-x, which points out of the front), closes, and the part's joint is then moved in small
+steps; at each step the tool is put, by IK, where the handle has gone, so the tool
+follows the drawer's line or the door's arc. A step the arm cannot follow ends the motion
+with the part where the arm last held it. Whatever rests in the moving link (a bowl in a
+drawer) is attached to it for the motion, so it moves along.
+
+The grasp's roll about the approach axis is not known in advance (a bar handle wants the
+fingers across it, and robots' hands differ), so the rolls in :data:`ROLLS` are tried in
+order, each with the whole path, from the same start.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from robocram.execution.failures import (
+    EnvironmentManipulationImpossible,
+    ManipulationGoalNotReached,
+    ManipulationPoseUnreachable,
+)
+from robocram.kinematics import forward_kinematics
+from robocram.projection.arm import move_tcp
+from robocram.projection.errors import ProjectionError
+from robocram.projection.gripper import close_gripper, open_gripper
+from robocram.projection.projected_robot import ProjectedRobot
+from robocram.tf import Pose
+from robocram.tf import quaternion as quat
+
+LINEAR_STEP = 0.02  # [m] of a prismatic joint between IK checks
+ANGULAR_STEP = math.radians(5.0)  # [rad] of a revolute joint between IK checks
+PRE_GRASP = 0.10  # [m] in front of the handle before and after holding it
+ROLLS = (math.pi / 2, -math.pi / 2, 0.0, math.pi)  # [rad] about the approach axis
+RESTING = 0.005  # [m] objects this close to the moving link move with it
+HOLD_MODE = "allow_hand"  # the fingers close around the handle
+
+
+@dataclass(frozen=True)
+class ArticulationResult:
+    """What moved: the part's joint from ``start`` to ``reached`` [m | rad], what rode along."""
+
+    joint: str
+    start: float
+    reached: float
+    roll: float  # [rad] the grasp roll about the approach axis that held the path
+    carried: tuple[str, ...]
+
+
+def approach_axis(robot: ProjectedRobot, arm: str) -> np.ndarray:
+    """The unit axis, in the tool frame, from the wrist towards the tool frame."""
+    spec = robot.arm(arm)
+    wrist = forward_kinematics(robot.description, {}, spec.end_effector_link)
+    tool = forward_kinematics(robot.description, {}, spec.tool_frame)
+    axis = -np.asarray((tool.inverse() * wrist).position, float)
+    norm = float(np.linalg.norm(axis))
+    if norm < 1e-6:
+        raise ProjectionError(
+            f"{robot.name}'s {arm} tool frame sits on its wrist; give the arm a tool frame "
+            "in front of its end effector link so the approach axis is known"
+        )
+    return axis / norm
+
+
+def grasp_in_handle(axis_in_tool: np.ndarray, roll: float) -> Pose:
+    """The tool pose in the handle frame: approach axis along the handle's -x, rolled."""
+    into = np.array((-1.0, 0.0, 0.0))
+    turn = np.cross(axis_in_tool, into)
+    angle = math.atan2(float(np.linalg.norm(turn)), float(axis_in_tool @ into))
+    if np.linalg.norm(turn) < 1e-9:
+        turn = np.array((0.0, 0.0, 1.0))
+    aligned = quat.from_axis_angle(tuple(turn / np.linalg.norm(turn)), angle)
+    return Pose(orientation=quat.multiply(quat.from_axis_angle((1.0, 0.0, 0.0), roll), aligned))
+
+
+def _path(start: float, goal: float, step: float) -> list[float]:
+    """Joint values from after ``start`` to ``goal`` inclusive, at most ``step`` apart."""
+    count = max(1, math.ceil(abs(goal - start) / step))
+    return [start + (goal - start) * (i + 1) / count for i in range(count)]
+
+
+def _riders(robot: ProjectedRobot, part: str, link: str) -> list[str]:
+    """Free objects resting in or on ``link`` of ``part`` (not held by anything)."""
+    world = robot.world
+    out = []
+    for obj in world.objects():
+        if obj.is_static or obj.name in (part, robot.name) or world.attached_to(obj):
+            continue
+        if world.contact_points(obj, part, link_b=link, distance=RESTING):
+            out.append(obj.name)
+    return out
+
+
+def _follow(
+    robot: ProjectedRobot,
+    arm: str,
+    part: str,
+    joint: str,
+    handle: str,
+    grasp: Pose,
+    path: list[float],
+) -> float:
+    """Move the joint along ``path`` with the tool on the handle; return the last value held."""
+    world = robot.world
+    held = world.joint_states(part)[joint]
+    for value in path:
+        world.set_joint_states(part, {joint: value})
+        try:
+            move_tcp(robot, arm, world.link_pose(part, handle) * grasp, HOLD_MODE)
+        except (ManipulationPoseUnreachable, ManipulationGoalNotReached):
+            world.set_joint_states(part, {joint: held})
+            return held
+        held = value
+    return held
+
+
+def _moving_link(robot: ProjectedRobot, part: str, joint: str) -> str:
+    """The link ``joint`` of ``part`` moves (its child)."""
+    body = robot.world.object(part)
+    index = body.joint_index[joint]
+    return next(name for name, i in body.link_index.items() if i == index)
+
+
+def _handle_speed(robot: ProjectedRobot, part: str, joint: str, handle: str) -> float:
+    """How far [m] the handle moves per unit of the joint [m | rad] near its current value."""
+    world = robot.world
+    start = world.joint_states(part)[joint]
+    limits = world.joint_limits(part, joint)
+    probe = 1e-3 if start + 1e-3 <= limits.upper else -1e-3
+    before = world.link_pose(part, handle).position
+    world.set_joint_states(part, {joint: start + probe})
+    moved = math.dist(before, world.link_pose(part, handle).position) / abs(probe)
+    world.set_joint_states(part, {joint: start})
+    return max(moved, 1e-3)
+
+
+def _take_handle(robot: ProjectedRobot, arm: str, part: str, handle: str, grasp: Pose) -> bool:
+    """Open the gripper, come from the front, close it on the handle; False if unreachable."""
+    world = robot.world
+    at_handle = world.link_pose(part, handle) * grasp
+    in_front = world.link_pose(part, handle) * Pose((PRE_GRASP, 0.0, 0.0)) * grasp
+    open_gripper(robot, arm)
+    try:
+        move_tcp(robot, arm, in_front)
+        move_tcp(robot, arm, at_handle, HOLD_MODE)
+    except (ManipulationPoseUnreachable, ManipulationGoalNotReached):
+        return False
+    close_gripper(robot, arm)
+    return True
+
+
+def move_part(
+    robot: ProjectedRobot, arm: str, part: str, joint: str, handle: str, goal: float
+) -> ArticulationResult:
+    """Hold ``handle`` with ``arm`` and move ``joint`` of ``part`` to ``goal`` [m | rad].
+
+    Raises:
+        ProjectionError: ``goal`` is outside the joint's limits.
+        EnvironmentManipulationImpossible: no grasp roll lets the arm follow the handle all
+            the way; the robot and the part are back where they started.
+    """
+    world = robot.world
+    limits = world.joint_limits(part, joint)
+    if not limits.lower - 1e-9 <= goal <= limits.upper + 1e-9:
+        raise ProjectionError(
+            f"goal {goal:.3f} of {part}'s joint {joint!r} is outside its limits "
+            f"[{limits.lower:.3f}, {limits.upper:.3f}]; ask for a value within them"
+        )
+    start = world.joint_states(part)[joint]
+    step = LINEAR_STEP / _handle_speed(robot, part, joint, handle)
+    axis = approach_axis(robot, arm)
+    robot_start = world.joint_states(robot.name)
+    riders = _riders(robot, part, _moving_link(robot, part, joint))
+    for name in riders:
+        world.attach(name, part, _moving_link(robot, part, joint))
+    try:
+        for roll in ROLLS:
+            grasp = grasp_in_handle(axis, roll)
+            if _take_handle(robot, arm, part, handle, grasp):
+                reached = _follow(robot, arm, part, joint, handle, grasp, _path(start, goal, step))
+                if abs(reached - goal) <= 1e-9:
+                    _let_go(robot, arm, part, handle, grasp)
+                    return ArticulationResult(joint, start, reached, roll, tuple(riders))
+            world.set_joint_states(part, {joint: start})
+            world.set_joint_states(robot.name, robot_start)
+    finally:
+        for name in riders:
+            world.detach(name)
+    raise EnvironmentManipulationImpossible(
+        f"{robot.name}'s {arm} arm cannot hold {handle!r} while {joint!r} moves from "
+        f"{start:.3f} to {goal:.3f} with any grasp roll",
+        environment_part=joint,
+        action="opening" if goal > start else "closing",
+    )
+
+
+def _let_go(robot: ProjectedRobot, arm: str, part: str, handle: str, grasp: Pose) -> None:
+    """Open the gripper and back the tool off the handle along its approach axis."""
+    open_gripper(robot, arm)
+    world = robot.world
+    move_tcp(
+        robot, arm, world.link_pose(part, handle) * Pose((PRE_GRASP, 0.0, 0.0)) * grasp, HOLD_MODE
+    )

@@ -1,0 +1,78 @@
+"""Opening and closing a drawer: the tool follows the handle, the bowl inside rides along."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator
+
+import pytest
+
+from robocram.execution.failures import EnvironmentManipulationImpossible
+from robocram.projection import ProjectedRobot, ProjectionError
+from robocram.projection.articulation import move_part
+from robocram.scenes import KitchenScene, kitchen_scene
+from robocram.tf import Pose
+from robocram.tf import quaternion as quat
+
+DRAWER = "drawer_unit_drawer_3"  # the top drawer of the unit whose front is at y = 1.9 m
+FACING_NORTH = quat.from_euler(0.0, 0.0, math.pi / 2)
+
+
+@pytest.fixture()
+def pr2_at_drawer() -> Iterator[tuple[KitchenScene, ProjectedRobot]]:
+    scene = kitchen_scene("pr2")
+    world = scene.world
+    desc = world.robot(scene.robot).description
+    world.set_joint_states(
+        scene.robot, {j: v for a in desc.arms.values() for j, v in a.parking.items()}
+    )
+    handle_x = world.link_pose("kitchen", f"{DRAWER}_handle").position[0]
+    world.set_pose(scene.robot, Pose((handle_x - 0.19, 0.95, 0.0), FACING_NORTH))  # right arm
+    yield scene, ProjectedRobot.of(world, scene.robot)
+    world.close()
+
+
+def test_opening_moves_the_drawer_and_the_bowl_in_it(
+    pr2_at_drawer: tuple[KitchenScene, ProjectedRobot],
+) -> None:
+    scene, robot = pr2_at_drawer
+    world = scene.world
+    joint, handle = f"{DRAWER}_joint", f"{DRAWER}_handle"
+    bowl_before = world.pose("bowl-1").position
+    result = move_part(robot, "right", "kitchen", joint, handle, 0.30)
+    assert world.joint_states("kitchen")[joint] == pytest.approx(0.30, abs=0.01)
+    assert result.carried == ("bowl-1",)
+    bowl = world.pose("bowl-1").position
+    assert bowl[1] == pytest.approx(bowl_before[1] - 0.30, abs=0.01)  # the front faces -y
+    assert bowl[0] == pytest.approx(bowl_before[0], abs=1e-3)
+    assert bowl[2] == pytest.approx(bowl_before[2], abs=1e-3)
+    assert world.attached_to("bowl-1") is None  # it lies in the drawer again, free
+    tool = world.link_pose(robot.name, robot.arm("right").tool_frame).position
+    in_front = world.link_pose("kitchen", handle).position
+    assert tool[1] < in_front[1] - 0.05  # the gripper let go and backed off
+    move_part(robot, "right", "kitchen", joint, handle, 0.0)
+    assert world.joint_states("kitchen")[joint] == pytest.approx(0.0, abs=0.01)
+    assert world.pose("bowl-1").position == pytest.approx(bowl_before, abs=0.01)
+
+
+def test_a_goal_beyond_the_joint_limit_is_refused(
+    pr2_at_drawer: tuple[KitchenScene, ProjectedRobot],
+) -> None:
+    _, robot = pr2_at_drawer
+    with pytest.raises(ProjectionError, match=rf"{DRAWER}_joint.*limits \[0.000, 0.450\]"):
+        move_part(robot, "right", "kitchen", f"{DRAWER}_joint", f"{DRAWER}_handle", 0.8)
+
+
+def test_a_drawer_out_of_reach_fails_and_leaves_everything_as_it_was(
+    pr2_at_drawer: tuple[KitchenScene, ProjectedRobot],
+) -> None:
+    scene, robot = pr2_at_drawer
+    world = scene.world
+    world.set_pose(robot.name, Pose((-1.6, -0.5, 0.0), FACING_NORTH))  # 2.4 m away
+    arm_before = world.joint_states(robot.name)
+    with pytest.raises(EnvironmentManipulationImpossible) as caught:
+        move_part(robot, "right", "kitchen", f"{DRAWER}_joint", f"{DRAWER}_handle", 0.3)
+    assert caught.value.environment_part == f"{DRAWER}_joint"
+    assert caught.value.action == "opening"
+    assert world.joint_states("kitchen")[f"{DRAWER}_joint"] == 0.0
+    assert world.joint_states(robot.name) == pytest.approx(arm_before, abs=1e-9)
