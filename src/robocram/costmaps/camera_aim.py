@@ -10,6 +10,8 @@ from robocram.costmaps.errors import CostmapInputError
 from robocram.tf import Pose, Vector3
 from robocram.world import Camera, RobotObject, World
 
+FAR_MARGIN = 1.0  # [m] the aimed camera sees this far behind its target
+
 
 def facing(camera_position: Vector3, target: Vector3) -> Pose:
     """Optical-frame pose (z forward, x right, y down) at ``camera_position`` facing ``target``."""
@@ -40,14 +42,18 @@ def camera_description(world: World, robot: RobotObject, key: str = "visible_for
 
 
 def aimed_camera(world: World, robot: RobotObject, target: Vector3) -> Camera:
-    """The robot's first camera turned in place to look at ``target`` (map, [m])."""
+    """The robot's first camera turned in place to look at ``target`` (map, [m]).
+
+    Its far plane sits just behind the target: rays that need not go further are cheaper.
+    """
     camera = camera_description(world, robot)
+    beyond = math.dist(camera.pose.position, target) + FAR_MARGIN
     return Camera(
         facing(camera.pose.position, target),
         camera.horizontal_fov,
         camera.vertical_fov,
         camera.near,
-        camera.far,
+        max(camera.near * 2, min(camera.far, beyond)),
     )
 
 

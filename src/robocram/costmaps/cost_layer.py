@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+from numpy.typing import NDArray
 
 from robocram.costmaps.errors import CostmapInputError
 from robocram.costmaps.grid import BoolGrid, CostmapGrid, FloatGrid
@@ -21,14 +22,23 @@ from robocram.designators import ObjectDesignator
 from robocram.tf import Pose, PoseStamped
 from robocram.world import RobotObject, World, WorldObject
 
+CellRefiner = Callable[[NDArray[np.int64]], FloatGrid]
+
 
 @dataclass(frozen=True, eq=False)
 class CostLayer:
-    """Weights (>= 0) over the grid, and optionally heights [m] and yaws [rad] of poses."""
+    """Weights (>= 0) over the grid, and optionally heights [m] and yaws [rad] of poses.
+
+    An expensive layer may leave part of its work for later: ``refine`` maps cells
+    (K x 2 ``[row, column]``) to factors in 0..1 that multiply ``weights``. A whole costmap
+    (for a picture) applies it everywhere; a pose stream applies it only to the cells it
+    draws, keeping each with that probability, which samples the same product lazily.
+    """
 
     weights: FloatGrid
     heights: FloatGrid | None = None
     yaws: FloatGrid | None = None
+    refine: CellRefiner | None = None
 
 
 @dataclass(frozen=True, eq=False)

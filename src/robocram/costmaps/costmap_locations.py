@@ -9,6 +9,7 @@ costmap runs out before any pose was taken, it raises :class:`LocationNotFound`.
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections import Counter
 from collections.abc import Iterator
@@ -17,7 +18,7 @@ from typing import Any, Literal
 
 import numpy as np
 
-from robocram.costmaps.cost_layer import CostFunction, CostLayer, LocationQuery
+from robocram.costmaps.cost_layer import CellRefiner, CostFunction, CostLayer, LocationQuery
 from robocram.costmaps.cost_registry import BUILTIN_COST_FUNCTIONS
 from robocram.costmaps.costmap import Costmap
 from robocram.costmaps.errors import CostmapInputError, LocationNotFound
@@ -31,6 +32,7 @@ from robocram.tf import quaternion as quat
 from robocram.world import RobotObject, World
 
 Sampling = Literal["random", "best"]
+REFINE_CHUNK = 8  # cells whose lazy factors are computed together
 ANCHOR_KEYS = ("object", "target", "on", "in_", "near", "left_of", "right_of",
                "in_front_of", "behind")  # fmt: skip
 
@@ -93,7 +95,7 @@ class CostmapLocations:
     def costmap(self, designator: Any) -> Costmap:
         """The normalised product of the layers the designator's keys name."""
         query = self.query(designator)
-        return self._costmap(query, self.plan(designator))[0]
+        return self._costmap(query, self.plan(designator), lazy=False).costmap
 
     def poses(self, designator: Any) -> Iterator[Pose]:
         """Accepted poses for ``designator``, lazily; nothing if no key asks for a costmap."""
@@ -101,11 +103,11 @@ class CostmapLocations:
         if plan.empty:
             return
         query = self.query(designator)
-        costmap, yaws = self._costmap(query, plan)
+        layers = self._costmap(query, plan, lazy=True)
         validators = [(name, self._validator(name)) for name in plan.validators]
         rejected: Counter[str] = Counter()
         accepted = in_a_row = 0
-        for pose in self._candidates(query, costmap, yaws):
+        for pose in self._candidates(query, layers):
             culprit = next((name for name, check in validators if not check(query, pose)), None)
             if culprit is None:
                 accepted, in_a_row = accepted + 1, 0
@@ -142,11 +144,9 @@ class CostmapLocations:
             )
         return found
 
-    def _costmap(
-        self, query: LocationQuery, plan: LocationPlan
-    ) -> tuple[Costmap, np.ndarray | None]:
+    def _costmap(self, query: LocationQuery, plan: LocationPlan, lazy: bool) -> _Layers:
         alive = np.ones(query.grid.shape, dtype=bool)
-        weights, heights, yaws = [], None, None
+        weights, refiners, heights, yaws = [], [], None, None
         for key, name in plan.cost_functions:
             function = self.cost_functions.get(name)
             if function is None:
@@ -157,22 +157,37 @@ class CostmapLocations:
                 )
             layer: CostLayer = function(query, query.designator.get(key), alive)
             weights.append(np.where(alive, layer.weights, 0.0))
+            if layer.refine is not None and lazy:
+                refiners.append(layer.refine)
+            elif layer.refine is not None:
+                cells = np.argwhere(weights[-1] > 0)
+                weights[-1][cells[:, 0], cells[:, 1]] *= layer.refine(cells)
             alive &= weights[-1] > 0
             heights = layer.heights if layer.heights is not None else heights
             yaws = layer.yaws if layer.yaws is not None else yaws
-        return Costmap.from_layers(query.grid, weights, heights), yaws
+        return _Layers(Costmap.from_layers(query.grid, weights, heights), yaws, refiners)
 
-    def _candidates(
-        self, query: LocationQuery, costmap: Costmap, yaws: np.ndarray | None
-    ) -> Iterator[Pose]:
-        seed = query.designator.get("seed", self.seed)
-        rng = np.random.default_rng(seed)
-        cells = costmap.best_first() if self.sampling == "best" else costmap.weighted_random(rng)
+    def _cells(self, layers: _Layers, rng: np.random.Generator) -> Iterator[tuple[int, int]]:
+        """Cells drawn from the costmap, thinned by the lazy factors (rejection sampling)."""
+        costmap = layers.costmap
+        drawn = costmap.best_first() if self.sampling == "best" else costmap.weighted_random(rng)
+        while chunk := list(itertools.islice(drawn, REFINE_CHUNK)):
+            factors = np.ones(len(chunk))
+            for refine in layers.refiners:
+                factors *= refine(np.array(chunk, dtype=np.int64))
+            for cell, factor in zip(chunk, factors, strict=True):
+                keep = factor > 0 if self.sampling == "best" else rng.random() < factor
+                if keep:
+                    yield cell
+
+    def _candidates(self, query: LocationQuery, layers: _Layers) -> Iterator[Pose]:
+        rng = np.random.default_rng(query.designator.get("seed", self.seed))
         facing = _facing_point(query)
         placed = query.designator.get("for_")
         heading = self.world.pose(query.object(placed, "for_")).orientation if placed else None
-        for cell in cells:
-            x, y, z = costmap.position(cell, rng if yaws is None else None)  # yaws fit centres
+        yaws = layers.yaws
+        for cell in self._cells(layers, rng):
+            x, y, z = layers.costmap.position(cell, rng if yaws is None else None)  # yaws: centres
             if heading is not None:
                 yield Pose((x, y, z), heading)
                 continue
@@ -183,6 +198,15 @@ class CostmapLocations:
             else:
                 yaw = 0.0
             yield Pose((x, y, z), quat.from_euler(0.0, 0.0, yaw))
+
+
+@dataclass(frozen=True, eq=False)
+class _Layers:
+    """A costmap of the eager layers, the yaws, and the lazy factors still to apply."""
+
+    costmap: Costmap
+    yaws: np.ndarray | None
+    refiners: list[CellRefiner]
 
 
 def _facing_point(query: LocationQuery) -> tuple[float, float, float] | None:

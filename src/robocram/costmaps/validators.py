@@ -19,9 +19,11 @@ from robocram.costmaps.reachability_map import ReachabilityMaps
 from robocram.kinematics import solve_ik
 from robocram.tf import Pose
 from robocram.world import RobotObject, World, WorldObject
+from robocram.world.visibility import ray_visibility
 
 Validator = Callable[[LocationQuery, Pose], bool]
 VISIBLE_FRACTION = 0.9  # share of the object the aimed camera must see
+VISIBILITY_RAYS = 12  # rays per side of the grid over the object's outline (world: 24)
 IK_RESTARTS = 30  # random restarts per grasp: a miss costs a bounded, counted budget
 
 
@@ -71,7 +73,7 @@ def visible(query: LocationQuery, pose: Pose) -> bool:
             return gap < 0.02
         obj = query.object(target, "object")
         camera = aimed_camera(world, robot, query.point(obj, "object"))
-        return world.visibility_from(camera, obj).fraction >= VISIBLE_FRACTION
+        return ray_visibility(world, camera, obj, VISIBILITY_RAYS).fraction >= VISIBLE_FRACTION
 
 
 @dataclass(frozen=True)

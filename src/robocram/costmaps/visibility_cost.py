@@ -1,9 +1,10 @@
 """Visibility: cells from which a camera at the robot's camera heights sees the target.
 
 Computed from the target outwards: with the target and the robot moved out of the way,
-one batch of rays fans out from the target's centre to a camera point over every cell
-still possible, at a few heights between the description's camera minimum and maximum
-(and the camera's height now). A cell's weight is the share of its rays nothing stops.
+rays fan out from the target's centre to a camera point over each cell, at a few heights
+between the description's camera minimum and maximum (and the camera's height now). A
+cell's weight is the share of its rays nothing stops. The rays are cast lazily, only for
+the cells a pose stream draws (the whole grid only for a picture).
 """
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ from contextlib import ExitStack, contextmanager
 from typing import Any
 
 import numpy as np
+from numpy.typing import NDArray
 
 from robocram.costmaps.camera_aim import camera_description
 from robocram.costmaps.cost_layer import CostLayer, LocationQuery
@@ -53,24 +55,30 @@ def camera_heights(query: LocationQuery) -> list[float]:
 
 
 def visibility_cost(query: LocationQuery, value: Any, alive: BoolGrid) -> CostLayer:
-    """Share of camera heights over each cell with a free line of sight to the target."""
+    """Cells in viewing range; the share of free lines of sight is computed lazily."""
     heights = camera_heights(query)
-    target_value = query.designator.get("object") or query.designator.get("target")
-    target = query.point(target_value, "object")
+    target = query.point(query.designator.get("object") or query.designator.get("target"), "object")
     near, far = VIEW_DISTANCE
-    alive = alive & (ring(query.grid, target[:2], near, far) > 0)
-    cells = np.argwhere(alive)
+    in_range = ring(query.grid, target[:2], near, far)
     x, y = query.centres()
-    ends = [(float(x[r, c]), float(y[r, c]), h) for r, c in cells for h in heights]
+
+    def free_share(cells: NDArray[np.int64]) -> NDArray[np.float64]:
+        ends = [(float(x[r, c]), float(y[r, c]), h) for r, c in cells for h in heights]
+        with _out_of_sight(query):
+            hits = cast_rays(query.world, [target] * len(ends), ends)
+        free = np.array([hit is None for hit in hits], dtype=float)
+        return np.asarray(free.reshape(len(cells), len(heights)).mean(axis=1), dtype=np.float64)
+
+    return CostLayer(in_range, refine=free_share)
+
+
+@contextmanager
+def _out_of_sight(query: LocationQuery) -> Iterator[None]:
+    """Lift the robot and the target object out of the rays' way for the block."""
     movers: list[WorldObject] = [query.robot] if query.robot is not None else []
     if query.designator.get("object") is not None:
         movers.append(query.object(query.designator.get("object"), "object"))
     with ExitStack() as stack:
         for index, obj in enumerate(movers):
             stack.enter_context(_lifted(query.world, obj, index + 1))
-        hits = cast_rays(query.world, [target] * len(ends), ends)
-    free = np.array([hit is None for hit in hits], dtype=float).reshape(len(cells), len(heights))
-    weights = np.zeros(query.grid.shape)
-    if len(cells):
-        weights[cells[:, 0], cells[:, 1]] = free.mean(axis=1)
-    return CostLayer(weights)
+        yield
