@@ -17,6 +17,12 @@ from robocram.costmaps.errors import (
     LocationNotFound,
 )
 from robocram.costmaps.grid import CostmapGrid
+from robocram.costmaps.reach_reasoning import (
+    blocking,
+    install_reach_predicates,
+    pose_reachable,
+    reachable,
+)
 from robocram.costmaps.reachability_map import (
     ReachabilityMap,
     ReachabilityMaps,
@@ -39,9 +45,13 @@ __all__ = [
     "Reach",
     "ReachabilityMap",
     "ReachabilityMaps",
+    "blocking",
     "build_reachability_map",
     "cache_dir",
     "gaussian",
+    "install_reach_predicates",
+    "pose_reachable",
     "reach_object",
+    "reachable",
     "ring",
 ]

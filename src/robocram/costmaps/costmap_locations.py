@@ -24,6 +24,7 @@ from robocram.costmaps.costmap import Costmap
 from robocram.costmaps.errors import CostmapInputError, LocationNotFound
 from robocram.costmaps.grid import CostmapGrid
 from robocram.costmaps.location_keys import LocationPlan, install_location_keys, plan_location
+from robocram.costmaps.reach_reasoning import install_reach_predicates
 from robocram.costmaps.reachability_map import ReachabilityMaps
 from robocram.costmaps.validators import BUILTIN_VALIDATORS, Validator
 from robocram.designators import LocationResolver
@@ -55,6 +56,7 @@ class CostmapLocations:
 
     def __post_init__(self) -> None:
         install_location_keys(self.world.kb)
+        install_reach_predicates(self.world.kb, self.world)
         CostmapGrid.around((0.0, 0.0), self.size, self.resolution)  # checks both
 
     def add_cost_function(self, name: str, function: CostFunction) -> None:

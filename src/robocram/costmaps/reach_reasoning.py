@@ -1,0 +1,105 @@
+"""CRAM's reach reasoning: ``reachable/2``, ``pose_reachable/2`` and ``blocking/4``.
+
+In Python and as predicates of the world's knowledge base. Robots stay where they stand;
+IK decides (torso free, grasps from above), and ``blocking`` puts the arm at the grasp to
+see what it would hit, then restores the joints.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import Any
+
+from robocram.costmaps.errors import CostmapInputError
+from robocram.costmaps.validators import IK_RESTARTS, reach_object, robot_arms
+from robocram.kinematics import solve_ik
+from robocram.logic import KnowledgeBase, Var
+from robocram.tf import Pose, PoseStamped
+from robocram.world import RobotObject, World, WorldObject
+
+Solutions = Iterator[tuple[Any, ...] | None]
+
+
+def _pose_in_map(pose: Pose | PoseStamped | Any) -> Pose:
+    if isinstance(pose, PoseStamped):
+        if pose.frame_id != "map":
+            raise CostmapInputError(
+                f"pose_reachable needs a pose in 'map', got frame {pose.frame_id!r}; "
+                "transform it first",
+                pose.frame_id,
+            )
+        return pose.pose
+    return Pose.coerce(pose)
+
+
+def pose_reachable(
+    world: World, robot: str | RobotObject, pose: Pose | PoseStamped, arm: str | None = None
+) -> bool:
+    """Whether an arm of ``robot``, standing where it is, brings its tool to ``pose`` (map)."""
+    body = world.robot(robot)
+    desc = body.description
+    target = world.pose(body).inverse() * _pose_in_map(pose)
+    seed = world.joint_states(body)
+    use_torso = desc.torso_joint is not None
+    return any(
+        solve_ik(desc, name, target, seed=seed, use_torso=use_torso, max_restarts=IK_RESTARTS)
+        for name in robot_arms(body, arm)
+    )
+
+
+def reachable(
+    world: World, robot: str | RobotObject, obj: str | WorldObject, arm: str | None = None
+) -> bool:
+    """Whether ``robot``, standing where it is, reaches a grasp of ``obj`` from above."""
+    body = world.robot(robot)
+    return reach_object(world, body, world.object(obj), world.pose(body), arm) is not None
+
+
+def blocking(
+    world: World, robot: str | RobotObject, arm: str, obj: str | WorldObject
+) -> list[str] | None:
+    """Objects ``arm`` would hit grasping ``obj`` (sorted names), None if it cannot reach it."""
+    body, target = world.robot(robot), world.object(obj)
+    reach = reach_object(world, body, target, world.pose(body), arm)
+    if reach is None:
+        return None
+    before = world.joint_states(body)
+    try:
+        world.set_joint_states(body, reach.joint_positions)
+        skip = [target, *world.objects(type="floor")]
+        return sorted(o.name for o in world.collisions(body, skip))
+    finally:
+        world.set_joint_states(body, before)
+
+
+def _names(world: World, arg: Any, robots: bool) -> list[str]:
+    if isinstance(arg, Var):
+        pool = world.robots() if robots else [o for o in world.objects() if o.type != "floor"]
+        return [o.name for o in pool if robots or not isinstance(o, RobotObject)]
+    return [arg] if isinstance(arg, str) and arg in world else []
+
+
+def install_reach_predicates(kb: KnowledgeBase, world: World) -> None:
+    """Add ``reachable/2``, ``pose_reachable/2`` and ``blocking/4`` about ``world`` to ``kb``."""
+
+    @kb.predicate("reachable", 2)
+    def reachable_(rob: Any, obj: Any) -> Solutions:
+        for r in _names(world, rob, robots=True):
+            yield from ((r, o) for o in _names(world, obj, robots=False) if reachable(world, r, o))
+
+    @kb.predicate("pose_reachable", 2)
+    def pose_reachable_(rob: Any, pose: Any) -> Solutions:
+        if not isinstance(pose, Var):
+            yield from (
+                (r, pose) for r in _names(world, rob, True) if pose_reachable(world, r, pose)
+            )
+
+    @kb.predicate("blocking", 4)
+    def blocking_(rob: Any, arm: Any, obj: Any, blockers: Any) -> Solutions:
+        for r in _names(world, rob, robots=True):
+            arms = robot_arms(world.robot(r), None) if isinstance(arm, Var) else [arm]
+            for a in arms:
+                for o in _names(world, obj, robots=False):
+                    found = blocking(world, r, a, o)
+                    if found is not None:
+                        yield (r, a, o, found)

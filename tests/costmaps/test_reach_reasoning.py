@@ -1,0 +1,51 @@
+"""reachable/2, pose_reachable/2 and blocking/4, in Python and in the world's knowledge base."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+import pytest
+
+from robocram.costmaps import CostmapLocations, blocking, pose_reachable, reachable
+from robocram.scenes import TabletopScene, tabletop_scene
+from robocram.tf import Pose, PoseStamped
+
+
+@pytest.fixture(scope="module")
+def scene() -> Iterator[TabletopScene]:
+    made = tabletop_scene("pr2")
+    CostmapLocations(made.world)  # installs the predicates in world.kb
+    yield made
+    made.world.close()
+
+
+def test_the_pr2_reaches_the_mug_not_the_far_bottle(scene: TabletopScene) -> None:
+    world = scene.world
+    assert reachable(world, "pr2", "mug-1")
+    bottle_distance = world.pose("bottle-1").distance_to(world.pose("pr2"))
+    assert not reachable(world, "pr2", "bottle-1"), bottle_distance
+    assert [a["O"] for a in world.kb.query("reachable(pr2, O)")] == ["mug-1"]
+
+
+def test_pose_reachable_near_and_far(scene: TabletopScene) -> None:
+    world = scene.world
+    x, y, z = world.pose("mug-1").position
+    over_the_mug = Pose((x, y, z + 0.2))
+    assert pose_reachable(world, "pr2", over_the_mug)
+    assert world.kb.holds("pose_reachable(pr2, P)", P=PoseStamped.from_pose("map", over_the_mug))
+    assert not pose_reachable(world, "pr2", Pose((3.0, 0.0, 1.0)))
+    assert not world.kb.holds("pose_reachable(pr2, P)", P=Pose((3.0, 0.0, 1.0)))
+
+
+def test_blocking_names_what_the_arm_would_hit(scene: TabletopScene) -> None:
+    world = scene.world
+    joints = world.joint_states("pr2")
+    assert blocking(world, "pr2", "right", "mug-1") == []
+    x, y, z = world.pose("mug-1").position
+    with world.stored_state():
+        world.add_box("obstacle", (0.1, 0.1, 0.1), Pose((x - 0.1, y, z + 0.3)))
+        assert blocking(world, "pr2", "right", "mug-1") == ["obstacle"]
+        answer = world.kb.first("blocking(pr2, right, 'mug-1', B)")
+        assert answer == {"B": ["obstacle"]}
+    assert world.joint_states("pr2") == pytest.approx(joints)  # the arm is put back
+    assert blocking(world, "pr2", "right", "bottle-1") is None  # out of reach
