@@ -269,7 +269,7 @@ class WorldCore:
         handle = self.object(obj)
         carrier = self.object(robot)
         if handle is carrier:
-            raise ValueError(f"cannot attach {handle.name!r} to itself")
+            raise WorldValueError(f"cannot attach {handle.name!r} to itself")
         check_acyclic(self._attachments, handle.name, carrier.name)
         link_pose = self.link_pose(carrier, link)
         rel = link_pose.inverse() * self.pose(handle)
@@ -279,7 +279,7 @@ class WorldCore:
         """Let ``obj`` go; it stays where it is. Detaching a free object is an error."""
         handle = self.object(obj)
         if self._attachments.pop(handle.name, None) is None:
-            raise ValueError(f"{handle.name!r} is not attached to anything")
+            raise WorldValueError(f"{handle.name!r} is not attached to anything; nothing to detach")
 
     def all_attachments(self) -> list[Attachment]:
         """Every attachment of the world, in the order they were made."""
