@@ -1,6 +1,7 @@
 """Bad input to the world ends in a typed error and an unchanged world (issue 11).
 
-Before: a 129-link robot failed with a raw ``pybullet.error`` and left a half-made body;
+Before: a 129-link robot failed with a raw ``pybullet.error`` and left a half-made body
+(now it loads with its fixed links folded into their parents, kept as frames);
 a broken URDF gave ``pybullet.error``; a restore kept a box named ``mug``; a robot added
 inside ``stored_state`` left its facts; A on B on A recursed without end; a zero time step
 divided by zero and a negative one simulated nothing; copying a closed world crashed.
@@ -15,6 +16,7 @@ from pathlib import Path
 import pybullet
 import pytest
 
+from robocram.kinematics import forward_kinematics
 from robocram.robots import RobotDescription
 from robocram.robots.example_robot_data import example_robot_data_folder
 from robocram.tf import Pose
@@ -51,13 +53,41 @@ def test_a_body_with_too_many_links_is_refused_and_leaves_nothing(world: World) 
     assert [o.name for o in world.objects()] == ["floor", "mug"] and _bodies(world) == 2
 
 
-def test_a_robot_with_too_many_links_is_refused_before_loading(world: World) -> None:
+def test_a_robot_with_too_many_links_loads_with_its_fixed_links_folded(world: World) -> None:
     desc = RobotDescription("tiago_dual", _tiago_dual(), base_frame="base_footprint")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # its missing meshes
-        with pytest.raises(TooManyLinksError, match="merge chains of fixed joints"):
-            world.add_robot(desc)
-    assert "tiago_dual" not in world and _bodies(world) == 2
+        robot = world.add_robot(desc)
+    model = robot.description.model
+    assert len(model.joints) == 129  # one more than PyBullet holds
+    assert set(world.joint_states(robot)) == {j.name for j in model.movable_joints()}
+    assert set(world.link_names(robot)) == set(model.links)  # folded links stay as frames
+    world.set_joint_states(robot, {"arm_left_2_joint": 0.7, "torso_lift_joint": 0.2})
+    joints = world.joint_states(robot)
+    for link in model.links:
+        expected = forward_kinematics(robot.description, joints, link)
+        assert world.link_pose(robot, link).distance_to(expected) < 1e-6, link
+        assert world.link_pose(robot, link).angle_to(expected) < 1e-5, link
+    copy = world.copy()  # the folded frames travel with the body's spec
+    frame = next(iter(robot.link_offset))
+    assert copy.link_pose("tiago_dual", frame).distance_to(world.link_pose(robot, frame)) < 1e-9
+    copy.close()
+
+
+def test_a_robot_too_big_even_folded_is_refused_before_loading(
+    world: World, tmp_path: Path
+) -> None:
+    links = "".join(f'<link name="l{i}"/>' for i in range(131))
+    joints = "".join(
+        f'<joint name="j{i}" type="revolute"><parent link="l{i}"/><child link="l{i + 1}"/>'
+        '<limit lower="-1" upper="1"/></joint>'
+        for i in range(130)
+    )
+    urdf = tmp_path / "snake.urdf"
+    urdf.write_text(f'<robot name="snake">{links}{joints}</robot>', encoding="utf-8")
+    with pytest.raises(TooManyLinksError, match=r"130 links .* at most 128"):
+        world.add_robot(RobotDescription("snake", urdf, base_frame="l0"))
+    assert "snake" not in world and _bodies(world) == 2
 
 
 def test_a_failed_load_names_the_file_and_leaves_the_world(world: World, tmp_path: Path) -> None:

@@ -18,6 +18,7 @@ from robocram.robots.errors import (
     PackagePathError,
     UrdfError,
 )
+from robocram.robots.fixed_merge import MergedModel, merge_fixed_links
 from robocram.robots.interface_facts import install_description
 from robocram.robots.loading import load_description
 from robocram.robots.mimic import mimic_followers
@@ -37,6 +38,7 @@ __all__ = [
     "JointValueError",
     "Link",
     "LoadedDescription",
+    "MergedModel",
     "Mimic",
     "MissingMeshWarning",
     "PackageNotFoundError",
@@ -47,5 +49,6 @@ __all__ = [
     "UrdfError",
     "install_description",
     "load_description",
+    "merge_fixed_links",
     "mimic_followers",
 ]

@@ -16,7 +16,7 @@ from typing import Literal
 
 import pybullet
 
-from robocram.tf import Vector3
+from robocram.tf import Pose, Vector3
 
 Rgba = tuple[float, float, float, float]
 ShapeKind = Literal["box", "cylinder", "sphere", "plane"]
@@ -120,12 +120,17 @@ class MeshSpec:
 
 @dataclass(frozen=True)
 class UrdfSpec:
-    """A body from a URDF file; ``mass`` [kg], if given, overrides the base link's mass."""
+    """A body from a URDF file; ``mass`` [kg], if given, overrides the base link's mass.
+
+    ``frames`` name links folded into a host link before loading: they stay usable as
+    frames (``World.link_pose``) at a fixed pose in their host.
+    """
 
     path: Path
     fixed_base: bool = False
     scale: float = 1.0
     mass: float | None = None
+    frames: tuple[tuple[str, str, Pose], ...] = ()  # (frame, host link, pose in host)
 
     def create(self, client: int) -> int:
         """Load the URDF into ``client`` at the origin; return its body id."""

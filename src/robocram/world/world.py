@@ -18,15 +18,14 @@ from numpy.typing import NDArray
 from robocram.robots import RobotDescription, install_description, load_description
 from robocram.tf import Pose, PoseLike, Vector3
 from robocram.world import contacts, spatial_relations, visibility
-from robocram.world.body_loading import MAX_LINKS
 from robocram.world.body_spec import GREY, BodySpec, MeshSpec, Rgba, ShapeSpec, UrdfSpec
 from robocram.world.camera import Camera
 from robocram.world.catalogue import catalogue_item
 from robocram.world.contact_point import ContactPoint
-from robocram.world.errors import NoCameraError, TooManyLinksError, WorldValueError
+from robocram.world.errors import NoCameraError, WorldValueError
 from robocram.world.png import write_png
 from robocram.world.ray_hit import RayHit, cast_rays
-from robocram.world.robot_urdf import robot_urdf_file
+from robocram.world.robot_urdf import robot_body_spec
 from robocram.world.visibility import Visibility
 from robocram.world.world_core import ORIGIN, ObjectRef, WorldCore
 from robocram.world.world_object import RobotObject, WorldObject
@@ -139,15 +138,14 @@ class World(WorldCore):
     ) -> RobotObject:
         """Add a robot (fixed base, joints held) by built-in name or description.
 
+        A model with more links than PyBullet holds is loaded with its fixed links folded
+        into their parents; they stay usable as frames (``link_pose``, ``link_names``).
+
         Raises:
-            TooManyLinksError: the model has more links than PyBullet holds (before loading).
+            TooManyLinksError: even folded, the model has too many links (before loading).
         """
         desc = load_description(robot)
-        model = desc.model
-        assert model is not None  # load_description fills it
-        if len(model.joints) > MAX_LINKS:
-            raise TooManyLinksError(name or desc.name, str(desc.urdf), len(model.joints), MAX_LINKS)
-        spec = UrdfSpec(robot_urdf_file(desc), fixed_base=True)
+        spec = robot_body_spec(name or desc.name, desc)
         handle = RobotObject(name or desc.name, "robot", -1, spec, description=desc)
         self.insert(handle, pose)
         self.set_held_joints(handle, dict.fromkeys(self.joint_states(handle), 0.0))

@@ -96,6 +96,10 @@ class WorldCore:
             info = pybullet.getJointInfo(handle.body_id, i, physicsClientId=cid)
             handle.joint_index[info[1].decode()] = i
             handle.link_index[info[12].decode()] = i
+        handle.link_offset.clear()
+        for frame, host, host_T_frame in getattr(handle.spec, "frames", ()):
+            handle.link_index[frame] = handle.link_index[host]
+            handle.link_offset[frame] = host_T_frame
         self._objects[handle.name] = handle
         if handle.joint_index:
             self._holds[handle.name] = {}
@@ -175,12 +179,13 @@ class WorldCore:
         """Pose of ``link`` (a URDF link or a frame added in code) in the world."""
         handle = self.object(obj)
         index = self._link_index(handle, link)
+        offset = handle.link_offset.get(link, ORIGIN)
         if index < 0:
-            return self.pose(handle)
+            return self.pose(handle) * offset
         state = pybullet.getLinkState(
             handle.body_id, index, computeForwardKinematics=True, physicsClientId=self._cid()
         )
-        return Pose(state[4], state[5])
+        return Pose(state[4], state[5]) * offset
 
     def link_names(self, obj: ObjectRef) -> list[str]:
         """Names of all links and frames of ``obj``, the root first."""

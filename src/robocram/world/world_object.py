@@ -9,6 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from robocram.robots import LoadedDescription
+from robocram.tf import Pose
 from robocram.world.body_spec import BodySpec
 
 
@@ -18,7 +19,9 @@ class WorldObject:
 
     ``joint_index`` maps every joint name (fixed ones too) to pybullet's joint index and
     ``link_index`` every link name to its index, the root link mapping to -1 (the base).
-    Both are empty for single-shape bodies.
+    Both are empty for single-shape bodies. A link folded into a host link before loading
+    (see :class:`~robocram.world.body_spec.UrdfSpec`) maps to its host's index and keeps
+    its pose in the host in ``link_offset``.
     """
 
     name: str
@@ -27,6 +30,7 @@ class WorldObject:
     spec: BodySpec
     joint_index: dict[str, int] = field(default_factory=dict, kw_only=True)
     link_index: dict[str, int] = field(default_factory=dict, kw_only=True)
+    link_offset: dict[str, Pose] = field(default_factory=dict, kw_only=True)
 
     @property
     def is_static(self) -> bool:
