@@ -20,7 +20,12 @@ from collections import deque
 from collections.abc import Iterable
 from typing import Any, ClassVar
 
-from robocram.execution.failures import PlanFailure, ProcessModuleFailure, SetupFailure
+from robocram.execution.failures import (
+    PlanFailure,
+    ProcessModuleFailure,
+    ProcessModuleInputError,
+    SetupFailure,
+)
 from robocram.execution.task_context import checkpoint, wait_until
 
 
@@ -152,8 +157,13 @@ class ProcessModule:
     def _execute_named(self, command: object) -> Any:
         try:
             return self.execute(command)
-        except SetupFailure as err:
-            raise self._wrapped(command, err) from err
+        except SetupFailure as err:  # the command is wrong: the caller's mistake
+            raise ProcessModuleInputError(
+                f"process module {self.name!r} refused {command}: {err}",
+                module=self.name,
+                command=command,
+                error=err,
+            ) from err
         except PlanFailure as failure:
             failure.add_context(process_module=self.name, command=command)
             raise

@@ -69,7 +69,10 @@ class ProjectedRobot:
         spec = self.description.arms.get(arm)
         if spec is None or arm == self.description.neck_arm:
             arms = [a for a in self.description.arms if a != self.description.neck_arm]
-            raise unknown_name("arm", arm, self.name, arms)
+            listed = ", ".join(repr(a) for a in arms) or "none"
+            raise ProjectionError(
+                f"{unknown_name('arm', arm, self.name, arms)}; its arms: {listed}"
+            )
         return spec
 
     def base_pose(self) -> Pose:

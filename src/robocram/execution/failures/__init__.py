@@ -17,6 +17,7 @@ from robocram.execution.failures.executive import (
     DesignatorReferenceFailure,
     NoMatchingProcessModule,
     ProcessModuleFailure,
+    ProcessModuleInputError,
 )
 from robocram.execution.failures.flying import (
     FlyingGoalInCollision,
@@ -102,6 +103,7 @@ __all__ = [
     "PerceptionObjectNotFound",
     "PlanFailure",
     "ProcessModuleFailure",
+    "ProcessModuleInputError",
     "PtuGoalNotReached",
     "PtuGoalUnreachable",
     "PtuLowLevelFailure",

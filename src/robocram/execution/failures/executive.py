@@ -37,6 +37,16 @@ class ProcessModuleFailure(PlanFailure):
     hint = "a wrapped Python error (the cause) is a bug in the module, not fixed by retrying"
 
 
+class ProcessModuleInputError(ProcessModuleFailure):
+    """A process module refused its command: a name or value in it is wrong (cause kept)."""
+
+    summary = "the process module was given a command it cannot take"
+    hint = (
+        "the caller's mistake, not the module's: fix the name or value in the designator "
+        "or plan that made the command"
+    )
+
+
 class NoMatchingProcessModule(PlanFailure):
     """PERFORM found no running process module that handles the designator."""
 
