@@ -50,7 +50,7 @@ def draw_costmap(
     else:
         background = np.full((size[1], size[0], 3), 255.0)
     peak = float(weights.max())
-    share = weights / peak if peak > 0 else weights
+    share = np.sqrt(weights / peak) if peak > 0 else weights  # weak cells stay visible
     alpha = np.kron(share[::-1], np.ones((pixels_per_cell, pixels_per_cell)))[..., None]
     blended = np.where(alpha > 0, (1 - 0.75 * alpha) * background + 0.75 * alpha * HEAT,
                        background)  # fmt: skip
