@@ -28,6 +28,7 @@ DEPTH = 0.6  # [m] base units
 WIDTH = 0.6  # [m] every unit
 DRAWER_TRAVEL = 0.45  # [m]
 DOOR_SWING = 1.6  # [rad]
+OPENED = {"drawer": 0.4, "door": 1.4}  # [m | rad] the joint goal that opens a container
 NORTH_FRONT = ROOM[1] / 2 - DEPTH  # [m] y of the north run's fronts
 EAST_FRONT = ROOM[0] / 2 - DEPTH  # [m] x of the east run's fronts
 FACING_SOUTH = -PI / 2  # unit yaw: its front (+x) faces -y
@@ -110,6 +111,8 @@ class Facts:
             *(f"container(kitchen, {c}, {j}, {h})." for c, j, h, _ in self.containers),
             "% container_kind(Env, Link, Kind): drawer (prismatic) or door (revolute).",
             *(f"container_kind(kitchen, {c}, {k})." for c, _, _, k in self.containers),
+            "% container_opening(Env, Link, Goal): the joint value [m | rad] that opens it.",
+            *(f"container_opening(kitchen, {c}, {OPENED[k]})." for c, _, _, k in self.containers),
         ]
         return "\n".join(lines) + "\n"
 

@@ -61,7 +61,7 @@ def test_every_table_command_is_grounded_from_its_required_properties(
 
 def test_the_table_has_one_entry_per_type_and_flying_is_its_own_family() -> None:
     assert [m.type for m in motion_types("flying")] == ["flying", "distance-sensing"]
-    assert len(motion_types()) == len(MOTION_TYPES) == 13
+    assert len(motion_types()) == len(MOTION_TYPES) == 14
     assert set(commands_of(MOTION_TYPES, "arms")) == {
         ("move_tcp", 3),
         ("move_tcp_both", 3),

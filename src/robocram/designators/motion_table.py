@@ -149,6 +149,16 @@ def _table() -> tuple[MotionType, ...]:
         _moving_tcp(),
         _moving_arm_joints(),
         MotionType(
+            "moving-articulation",
+            (
+                *(_atom(k) for k in ("arm", "part", "joint", "handle")),
+                _number("joint_angle", "[m | rad]"),
+            ),
+            (Command("move_part", ("arm", "part", "joint", "handle", "joint_angle"), goal=(4,)),),
+            "arms",
+            Answer.GOAL,
+        ),
+        MotionType(
             "flying",
             (_target("target"),),
             (Command("fly", ("target",)),),

@@ -1,6 +1,21 @@
 """Robot-independent plans: they ask the knowledge base about the robot and PERFORM designators."""
 
+from robocram.plans.action_table import ACTION_TYPES, install_actions, perform_action
+from robocram.plans.action_type import ActionType
+from robocram.plans.containers import Container, close_container, container, open_container
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.pick_up import PickResult, pick_up
 
-__all__ = ["PickResult", "PlanSetupError", "pick_up"]
+__all__ = [
+    "ACTION_TYPES",
+    "ActionType",
+    "Container",
+    "PickResult",
+    "PlanSetupError",
+    "close_container",
+    "container",
+    "install_actions",
+    "open_container",
+    "perform_action",
+    "pick_up",
+]

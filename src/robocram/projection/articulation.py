@@ -173,7 +173,10 @@ def move_part(
     start = world.joint_states(part)[joint]
     step = LINEAR_STEP / _handle_speed(robot, part, joint, handle)
     axis = approach_axis(robot, arm)
-    robot_start = world.joint_states(robot.name)
+    model = robot.description.model
+    robot_start = {  # mimic joints follow their masters when those are set back
+        j: v for j, v in world.joint_states(robot.name).items() if model.joints[j].mimic is None
+    }
     riders = _riders(robot, part, _moving_link(robot, part, joint))
     for name in riders:
         world.attach(name, part, _moving_link(robot, part, joint))

@@ -12,7 +12,8 @@ grounds for its resource, one method per command, dispatched by
   inspecting answers what detecting does)
 - grippers: ``move_gripper_joint(Arm, open | close | grip | Position, Effort)``
 - arms: ``move_tcp(Arm, Pose, Mode)``, ``move_tcp_both(Left, Right, Mode)``,
-  ``move_joints(Arm, Config)``, ``move_joints_both(Left, Right)``
+  ``move_joints(Arm, Config)``, ``move_joints_both(Left, Right)``,
+  ``move_part(Arm, Part, Joint, Handle, Goal)`` (open or close a drawer or door)
 - flying: ``fly(Pose)``; distance sensor: ``sense_distance(Direction)`` [body frame]
 
 Arm and gripper words are the robot's arm names or the sides ``left``/``right``
@@ -29,6 +30,7 @@ import numpy as np
 from robocram.designators import SIDES, ObjectDesignator
 from robocram.execution import MotionProcessModule
 from robocram.projection.arm import move_joints, move_tcp
+from robocram.projection.articulation import move_part
 from robocram.projection.errors import ProjectionError
 from robocram.projection.flying import fly, sense_distance
 from robocram.projection.gripper import close_gripper, grip, open_gripper, set_gripper
@@ -174,6 +176,10 @@ class ArmPM(ProjectionProcessModule):
         """Set the joints of the arms on the left and the right side."""
         goals = zip(SIDES, (left, right), strict=True)
         return tuple(move_joints(self.robot, self._arm(side), config) for side, config in goals)
+
+    def move_part(self, arm: str, part: str, joint: str, handle: str, goal: float) -> float:
+        """Hold ``handle`` of ``part`` and move its ``joint`` to ``goal`` (a drawer, a door)."""
+        return move_part(self.robot, self._arm(arm), part, joint, handle, float(goal)).reached
 
 
 class FlyingPM(ProjectionProcessModule):

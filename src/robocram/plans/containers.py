@@ -1,0 +1,93 @@
+"""Opening and closing containers (drawers, doors), robot-independently.
+
+The container is named by its link or its handle link; the knowledge base says which
+environment it belongs to, which joint opens it, which handle to pull and how far opening
+goes (``container/4``, ``container_opening/3``), so no link name is hard-coded here. The
+arms are tried in the KB's order unless one is given; the first that can hold the handle
+all the way does it.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from robocram.designators import a
+from robocram.execution import perform
+from robocram.execution.failures import EnvironmentManipulationImpossible, PlanFailure
+from robocram.logic import current_kb
+from robocram.plans.errors import PlanSetupError
+from robocram.plans.robot_facts import current_robot, robot_arms
+
+CONTAINER_QUERY = (
+    "container(Env, Link, Joint, Handle), (Link == C ; Handle == C), "
+    "container_opening(Env, Link, Opened)"
+)
+
+
+@dataclass(frozen=True)
+class Container:
+    """A container as the KB describes it."""
+
+    environment: str
+    link: str
+    joint: str
+    handle: str
+    opened: float  # [m | rad] the joint value that opens it
+
+
+def container(name: str) -> Container:
+    """The container whose link or handle is ``name``."""
+    answer = current_kb().first(CONTAINER_QUERY, C=name)
+    if answer is None:
+        known = sorted({str(c["L"]) for c in current_kb().query("container(_, L, _, _)")})
+        raise PlanSetupError(
+            f"{name!r} is no container or handle in the knowledge base; containers: "
+            f"{', '.join(known) or 'none (load a scene with container/4 facts)'}"
+        )
+    return Container(
+        answer["Env"], answer["Link"], answer["Joint"], answer["Handle"], float(answer["Opened"])
+    )
+
+
+def move_container(name: str, goal: float, arm: str | None, action: str) -> float:
+    """Move the container's joint to ``goal`` with ``arm`` or the first arm that can."""
+    part = container(name)
+    arms = [arm] if arm is not None else robot_arms(current_robot())
+    failures: list[PlanFailure] = []
+    for choice in arms:
+        motion = a.motion(
+            type="moving-articulation",
+            arm=choice,
+            part=part.environment,
+            joint=part.joint,
+            handle=part.handle,
+            joint_angle=goal,
+        )
+        try:
+            return float(perform(motion))
+        except EnvironmentManipulationImpossible as failure:
+            failures.append(failure)
+    raise EnvironmentManipulationImpossible(
+        f"no arm of {arms} could {action[:-3]} {part.link!r}: "
+        + "; ".join(str(f) for f in failures),
+        environment_part=part.link,
+        action=action,
+    )
+
+
+def open_container(
+    object: str,  # noqa: A002 - CRAM's key
+    distance: float | None = None,
+    angle: float | None = None,
+    arm: str | None = None,
+) -> float:
+    """Open a drawer (by ``distance`` [m]) or a door (by ``angle`` [rad]), default fully."""
+    goal = distance if distance is not None else angle
+    return move_container(
+        object, goal if goal is not None else container(object).opened, arm, "opening"
+    )
+
+
+def close_container(object: str, arm: str | None = None) -> float:  # noqa: A002
+    """Close a drawer or a door."""
+    return move_container(object, 0.0, arm, "closing")
