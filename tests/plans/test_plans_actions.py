@@ -74,13 +74,17 @@ def test_opening_without_a_distance_opens_as_far_as_the_kb_says(
 def test_a_wrong_or_missing_key_names_itself_and_the_valid_keys(
     pr2_kitchen: KitchenScene, properties: dict[str, object], culprit: str
 ) -> None:
-    with simulated_robot(pr2_kitchen.world, pr2_kitchen.robot):
-        with pytest.raises(DesignatorPropertyError, match="valid keys") as caught:
-            perform(an.action(**properties))
+    with (
+        simulated_robot(pr2_kitchen.world, pr2_kitchen.robot),
+        pytest.raises(DesignatorPropertyError, match="valid keys") as caught,
+    ):
+        perform(an.action(**properties))
     assert caught.value.key == culprit
 
 
 def test_a_name_that_is_no_container_lists_the_containers(pr2_kitchen: KitchenScene) -> None:
-    with simulated_robot(pr2_kitchen.world, pr2_kitchen.robot):
-        with pytest.raises(PlanSetupError, match="'oven'.*drawer_unit_drawer_3"):
-            perform(an.action(type="opening", object="oven"))
+    with (
+        simulated_robot(pr2_kitchen.world, pr2_kitchen.robot),
+        pytest.raises(PlanSetupError, match="'oven'.*drawer_unit_drawer_3"),
+    ):
+        perform(an.action(type="opening", object="oven"))
