@@ -33,6 +33,9 @@ SAMPLES: dict[str, object] = {
     "configuration": [["j1", 0.1]],
     "left_configuration": [["l1", 0.1]],
     "right_configuration": [["r1", 0.2]],
+    "part": "kitchen",
+    "joint": "drawer_1_joint",
+    "handle": "drawer_1_handle",
 }
 
 
@@ -67,6 +70,7 @@ def test_the_table_has_one_entry_per_type_and_flying_is_its_own_family() -> None
         ("move_tcp_both", 3),
         ("move_joints", 2),
         ("move_joints_both", 2),
+        ("move_part", 5),
     }
     assert set(commands_of(MOTION_TYPES, "perception")) == {("detect", 1), ("inspect", 1)}
 
