@@ -10,6 +10,7 @@ recording, ROS) handles exactly the commands the table lists for its resource.
 
 from __future__ import annotations
 
+import difflib
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from enum import Enum
@@ -119,7 +120,8 @@ class MotionType:
 
 
 def check_property_types(motion: MotionType, designator: Designator) -> None:
-    """Raise :class:`MotionPropertyError` for a property of ``designator`` of the wrong type."""
+    """Raise :class:`MotionPropertyError` for an unknown property or one of the wrong type."""
+    _check_known_keys(motion, designator)
     for prop in motion.properties:
         for value in designator.get_all(prop.key):
             if not isinstance(value, prop.types) or isinstance(value, bool):
@@ -131,6 +133,24 @@ def check_property_types(motion: MotionType, designator: Designator) -> None:
                     expected=prop.expected,
                     designator=designator,
                 )
+
+
+def _check_known_keys(motion: MotionType, designator: Designator) -> None:
+    """A key no grounding reads (a typo such as ``efort``) is an error, not ignored."""
+    known = sorted({"type", *(p.key for p in motion.properties)})
+    for key, _ in designator.properties:
+        if key in known:
+            continue
+        close = difflib.get_close_matches(key, known, n=1, cutoff=0.6)
+        hint = f"did you mean {close[0]!r}? " if close else ""
+        raise MotionPropertyError(
+            f"motion {motion.type!r} has no property {key!r} in {designator.description}; "
+            f"{hint}it takes {', '.join(map(repr, known))}",
+            motion=motion.type,
+            key=key,
+            expected="one of " + ", ".join(known),
+            designator=designator,
+        )
 
 
 def missing_property_error(
