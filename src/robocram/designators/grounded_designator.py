@@ -15,7 +15,11 @@ from typing import ClassVar
 from robocram.designators.designator import Designator, Kind, S_co
 from robocram.designators.errors import DesignatorPropertyError, GroundingError
 from robocram.designators.motion_table import MOTION_TYPES
-from robocram.designators.motion_type import check_property_types, missing_property_error
+from robocram.designators.motion_type import (
+    check_known_keys,
+    check_property_types,
+    missing_property_error,
+)
 from robocram.logic import KnowledgeBase, PrologError, Term, current_kb
 
 
@@ -90,7 +94,12 @@ class MotionDesignator(GroundedDesignator[Term]):
         motion = MOTION_TYPES.get(self.type)
         if motion is not None:
             check_property_types(motion, self)
-        yield from super()._solutions(context)
+        checked = motion is None
+        for solution in super()._solutions(context):
+            if not checked and motion is not None:
+                check_known_keys(motion, self)
+                checked = True
+            yield solution
 
     def _no_solution_error(self, context: KnowledgeBase) -> GroundingError:
         motion = MOTION_TYPES.get(self.type)

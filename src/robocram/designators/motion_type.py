@@ -120,8 +120,7 @@ class MotionType:
 
 
 def check_property_types(motion: MotionType, designator: Designator) -> None:
-    """Raise :class:`MotionPropertyError` for an unknown property or one of the wrong type."""
-    _check_known_keys(motion, designator)
+    """Raise :class:`MotionPropertyError` for a property of ``designator`` of the wrong type."""
     for prop in motion.properties:
         for value in designator.get_all(prop.key):
             if not isinstance(value, prop.types) or isinstance(value, bool):
@@ -135,8 +134,12 @@ def check_property_types(motion: MotionType, designator: Designator) -> None:
                 )
 
 
-def _check_known_keys(motion: MotionType, designator: Designator) -> None:
-    """A key no grounding reads (a typo such as ``efort``) is an error, not ignored."""
+def check_known_keys(motion: MotionType, designator: Designator) -> None:
+    """Raise :class:`MotionPropertyError` for a key no grounding reads (``efort``).
+
+    Called once a grounding matched: a misspelt optional property would otherwise be
+    ignored silently. (Without a match the missing property is the better message.)
+    """
     known = sorted({"type", *(p.key for p in motion.properties)})
     for key, _ in designator.properties:
         if key in known:
