@@ -40,6 +40,9 @@ def test_first_five_poses_reach_a_grasp_of_the_mug(robot: str) -> None:
         assert low[0] <= x <= high[0] and low[1] <= y <= high[1]  # over the mug
         with world.stored_state():
             world.set_pose(body, pose)
+            for name, arm in desc.arms.items():  # it arrives with its arms parked
+                if name != desc.neck_arm:
+                    world.set_joint_states(body, dict(arm.parking))
             assert not world.in_collision(body)
     world.close()
 

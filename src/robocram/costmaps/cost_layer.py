@@ -19,7 +19,7 @@ from robocram.costmaps.errors import CostmapInputError
 from robocram.costmaps.grid import BoolGrid, CostmapGrid, FloatGrid
 from robocram.costmaps.reachability_map import ReachabilityMaps
 from robocram.designators import ObjectDesignator
-from robocram.tf import Pose, PoseStamped
+from robocram.tf import Pose, PoseStamped, Vector3
 from robocram.world import RobotObject, World, WorldObject
 
 CellRefiner = Callable[[NDArray[np.int64]], FloatGrid]
@@ -59,14 +59,33 @@ class LocationQuery:
         """The world object ``value`` names (a name, an object, an object designator)."""
         return resolve_object(self.world, value, key)
 
+    def part(self, value: Any, key: str) -> tuple[WorldObject, str | None]:
+        """The object and link ``value`` names: an object, or ``(object, link)`` for a part
+        of an articulated one such as ``("kitchen", "drawer_unit_drawer_3")``."""
+        if isinstance(value, tuple) and len(value) == 2 and isinstance(value[1], str):
+            obj = self.object(value[0], key)
+            if value[1] not in self.world.link_names(obj):
+                raise CostmapInputError(
+                    f"location key {key!r} names link {value[1]!r}, which {obj.name!r} does "
+                    f"not have; its links: {', '.join(self.world.link_names(obj)[:12])}...",
+                    value[1],
+                )
+            return obj, value[1]
+        return self.object(value, key), None
+
+    def bounds(self, value: Any, key: str) -> tuple[Vector3, Vector3]:
+        """World-aligned bounds [m] of the object or ``(object, link)`` ``value`` names."""
+        obj, link = self.part(value, key)
+        return self.world.aabb(obj) if link is None else self.world.link_aabb(obj, link)
+
     def point(self, value: Any, key: str) -> tuple[float, float, float]:
-        """Map (x, y, z) [m] of a pose, a point, or the centre of an object's bounds."""
+        """Map (x, y, z) [m] of a pose, a point, or the centre of an object's (link's) bounds."""
         if isinstance(value, Pose | PoseStamped):
             return Pose.coerce(value.pose if isinstance(value, PoseStamped) else value).position
         if isinstance(value, tuple) and len(value) == 3:
             return (float(value[0]), float(value[1]), float(value[2]))
-        low, high = self.world.aabb(self.object(value, key))
-        return tuple((lo + hi) / 2 for lo, hi in zip(low, high, strict=True))  # type: ignore[return-value]
+        low, high = self.bounds(value, key)
+        return ((low[0] + high[0]) / 2, (low[1] + high[1]) / 2, (low[2] + high[2]) / 2)
 
 
 def resolve_object(world: World, value: Any, key: str) -> WorldObject:

@@ -75,3 +75,20 @@ class CostmapGrid:
             y0 - half,
             y0 + (rows - 1) * self.resolution + half,
         )
+
+
+def erode(mask: BoolGrid, radius_cells: float, outside: bool = False) -> BoolGrid:
+    """Cells of ``mask`` with every cell within ``radius_cells`` also in ``mask``.
+
+    ``outside`` is what cells beyond the grid count as.
+    """
+    reach = math.floor(radius_cells)
+    out = mask.copy()
+    rows, cols = mask.shape
+    padded = np.full((rows + 2 * reach, cols + 2 * reach), outside, dtype=bool)
+    padded[reach : reach + rows, reach : reach + cols] = mask
+    for dr in range(-reach, reach + 1):
+        for dc in range(-reach, reach + 1):
+            if dr * dr + dc * dc <= radius_cells * radius_cells:
+                out &= padded[reach + dr : reach + dr + rows, reach + dc : reach + dc + cols]
+    return out

@@ -3,7 +3,9 @@
 The footprint radius comes from the robot itself: the links fixed to its root link (the
 mobile base) as loaded from its URDF, measured in the world. Every other object whose
 bounds reach into the robot's height band blocks the cells within that radius of it.
-Articulated objects (a kitchen) block link by link, so a counter does not block the room.
+Articulated objects (a kitchen) block link by link, so a counter does not block the room;
+a part wider than :data:`LARGE_PART` (the walls around it) is probed instead, one ray
+down each cell.
 """
 
 from __future__ import annotations
@@ -15,11 +17,14 @@ import numpy as np
 
 from robocram.costmaps.cost_layer import CostLayer, LocationQuery
 from robocram.costmaps.errors import CostmapInputError
-from robocram.costmaps.grid import BoolGrid, FloatGrid
+from robocram.costmaps.grid import BoolGrid, FloatGrid, erode
+from robocram.costmaps.out_of_the_way import out_of_the_way
+from robocram.costmaps.rays import cast_rays
 from robocram.tf import Vector3
 from robocram.world import RobotObject, World
 
 FLOOR_CLEARANCE = 0.02  # [m] bounds lower than this are the floor, not obstacles
+LARGE_PART = 1.5  # [m] parts wider than this (walls around a room) are probed by rays
 
 Box = tuple[Vector3, Vector3]
 
@@ -59,19 +64,36 @@ def robot_height(world: World, robot: RobotObject) -> float:
     return high[2] - world.pose(robot).position[2]
 
 
-def obstacle_boxes(world: World, robot: RobotObject | None, top: float) -> list[Box]:
-    """Bounds of every object (link by link) reaching into the band ``FLOOR_CLEARANCE..top``."""
+def obstacle_boxes(world: World, robot: RobotObject | None, top: float) -> tuple[list[Box], bool]:
+    """Bounds of every object (link by link) reaching into the band ``FLOOR_CLEARANCE..top``,
+    and whether some part is too large for its bounds to stand for it (a room's walls)."""
     carried = set(world.attachments(robot)) if robot is not None else set()
     boxes: list[Box] = []
+    large = False
     for obj in world.objects():
         if obj is robot or obj.type == "floor" or obj.name in carried:
             continue
         links = world.link_names(obj) if len(obj.link_index) > 1 else []
         parts = [world.link_aabb(obj, link) for link in links]
         for low, high in parts or [world.aabb(obj)]:
-            if high[2] > FLOOR_CLEARANCE and low[2] < top and high[0] - low[0] < 1e3:
+            if not (high[2] > FLOOR_CLEARANCE and low[2] < top):
+                continue
+            if max(high[0] - low[0], high[1] - low[1]) > LARGE_PART:
+                large = True
+            else:
                 boxes.append((low, high))
-    return boxes
+    return boxes, large
+
+
+def probed_free(query: LocationQuery, robot: RobotObject, top: float) -> BoolGrid:
+    """Cells whose column ``FLOOR_CLEARANCE..top`` holds nothing, by one ray down each."""
+    x, y = query.centres()
+    starts = [(float(a), float(b), top) for a, b in zip(x.ravel(), y.ravel(), strict=True)]
+    ends = [(a, b, FLOOR_CLEARANCE) for a, b, _ in starts]
+    carried = [query.world.object(name) for name in query.world.attachments(robot)]
+    with out_of_the_way(query.world, [robot, *carried]):
+        hits = cast_rays(query.world, starts, ends)
+    return np.array([hit is None for hit in hits], dtype=bool).reshape(query.grid.shape)
 
 
 def free_cells(query: LocationQuery, boxes: list[Box], radius: float) -> FloatGrid:
@@ -91,5 +113,10 @@ def occupancy_cost(query: LocationQuery, value: Any, alive: BoolGrid) -> CostLay
     if robot is None:
         return CostLayer(np.ones(query.grid.shape))
     radius = footprint_radius(query.world, robot)
-    boxes = obstacle_boxes(query.world, robot, robot_height(query.world, robot))
-    return CostLayer(free_cells(query, boxes, radius))
+    top = robot_height(query.world, robot)
+    boxes, large = obstacle_boxes(query.world, robot, top)
+    free = free_cells(query, boxes, radius)
+    if large:  # parts whose bounds would cover the room are probed cell by cell
+        probed = erode(probed_free(query, robot, top), radius / query.grid.resolution, True)
+        free = free * probed
+    return CostLayer(free)

@@ -9,52 +9,20 @@ fits, and each cell's height is set so the object's bottom rests on the surface.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator
-from contextlib import contextmanager
 from typing import Any
 
 import numpy as np
 
 from robocram.costmaps.cost_layer import CostLayer, LocationQuery
-from robocram.costmaps.grid import BoolGrid
+from robocram.costmaps.grid import BoolGrid, erode
+from robocram.costmaps.out_of_the_way import out_of_the_way
 from robocram.costmaps.rays import cast_rays
-from robocram.tf import Pose
-from robocram.world import World, WorldObject
+from robocram.world import WorldObject
 
 SURFACE_MARGIN = 0.03  # [m] kept free between the placed object and the support's edges
 INNER_DEPTH = 0.02  # [m] an inside bottom lies at least this far below a container's rim
 FLAT = 0.9  # a hit counts as a surface if its normal's z is at least this
 RESTING_GAP = 0.002  # [m] the object is put this far above the surface
-_AWAY = (0.0, 0.0, 500.0)  # [m] where the placed object waits while the rays are cast
-
-
-def erode(mask: BoolGrid, radius_cells: float) -> BoolGrid:
-    """Cells of ``mask`` with every cell within ``radius_cells`` also in ``mask``."""
-    reach = math.floor(radius_cells)
-    out = mask.copy()
-    rows, cols = mask.shape
-    padded = np.zeros((rows + 2 * reach, cols + 2 * reach), dtype=bool)
-    padded[reach : reach + rows, reach : reach + cols] = mask
-    for dr in range(-reach, reach + 1):
-        for dc in range(-reach, reach + 1):
-            if dr * dr + dc * dc <= radius_cells * radius_cells:
-                out &= padded[reach + dr : reach + dr + rows, reach + dc : reach + dc + cols]
-    return out
-
-
-@contextmanager
-def _out_of_the_way(world: World, obj: WorldObject | None) -> Iterator[None]:
-    """Move ``obj`` far up so rays do not hit it; put it back exactly."""
-    if obj is None:
-        yield
-        return
-    pose = world.pose(obj)
-    x, y, z = pose.position
-    world.set_pose(obj, Pose((x + _AWAY[0], y + _AWAY[1], z + _AWAY[2]), pose.orientation))
-    try:
-        yield
-    finally:
-        world.set_pose(obj, pose)
 
 
 def _placed(query: LocationQuery) -> tuple[WorldObject | None, float, float]:
@@ -68,11 +36,10 @@ def _placed(query: LocationQuery) -> tuple[WorldObject | None, float, float]:
     return obj, radius, query.world.pose(obj).position[2] - low[2]
 
 
-def _surface(
-    query: LocationQuery, support: WorldObject, alive: BoolGrid, inside: bool
-) -> CostLayer:
-    world = query.world
-    low, high = world.aabb(support)
+def _surface(query: LocationQuery, value: Any, key: str, alive: BoolGrid) -> CostLayer:
+    world, inside = query.world, key == "in_"
+    support, link = query.part(value, key)
+    low, high = query.bounds(value, key)
     placed, radius, lift = _placed(query)
     x, y = query.centres()
     cells = np.argwhere(alive)
@@ -81,10 +48,12 @@ def _surface(
     ends = [(sx, sy, low[2] - 0.01) for sx, sy, _ in starts]
     heights = np.zeros(query.grid.shape)
     free = np.zeros(query.grid.shape, dtype=bool)
-    with _out_of_the_way(world, placed):
+    with out_of_the_way(world, [placed]):
         hits = cast_rays(world, starts, ends)
     for (r, c), hit in zip(cells, hits, strict=True):
         if hit is None or hit.obj is not support or hit.normal[2] < FLAT:
+            continue
+        if link is not None and hit.link != link:
             continue
         if inside and hit.position[2] > high[2] - INNER_DEPTH:
             continue
@@ -95,10 +64,10 @@ def _surface(
 
 
 def on_cost(query: LocationQuery, value: Any, alive: BoolGrid) -> CostLayer:
-    """``on=support``: cells of the support's top face where the ``for_`` object fits."""
-    return _surface(query, query.object(value, "on"), alive, inside=False)
+    """``on=support`` (an object or ``(object, link)``): where the ``for_`` object fits."""
+    return _surface(query, value, "on", alive)
 
 
 def in_cost(query: LocationQuery, value: Any, alive: BoolGrid) -> CostLayer:
-    """``in_=container``: cells of the container's inner bottom where the object fits."""
-    return _surface(query, query.object(value, "in_"), alive, inside=True)
+    """``in_=container`` (e.g. ``(kitchen, drawer link)``): its inner bottom, where it fits."""
+    return _surface(query, value, "in_", alive)

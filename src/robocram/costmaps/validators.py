@@ -1,7 +1,8 @@
 """Validators: a candidate pose is taken only if the world agrees it works.
 
 Each is ``fn(query, pose) -> bool``. They place the robot (or the object) at the pose,
-ask the world, and put everything back exactly as it was.
+ask the world, and put everything back exactly as it was. A robot stands there as it
+arrives, with its arms parked (CRAM parks them before driving).
 """
 
 from __future__ import annotations
@@ -38,6 +39,24 @@ def placed(world: World, obj: WorldObject, pose: Pose) -> Iterator[None]:
         world.set_pose(obj, before)
 
 
+@contextmanager
+def parked(world: World, robot: RobotObject) -> Iterator[None]:
+    """Arms (not the neck) at their parking joint values for the block, as when driving."""
+    desc = robot.description
+    parking = {
+        joint: value
+        for name, arm in desc.arms.items()
+        if name != desc.neck_arm
+        for joint, value in arm.parking.items()
+    }
+    before = world.joint_states(robot)
+    world.set_joint_states(robot, parking)
+    try:
+        yield
+    finally:
+        world.set_joint_states(robot, {j: before[j] for j in parking})
+
+
 def _robot(query: LocationQuery) -> RobotObject:
     if query.robot is None:
         raise CostmapInputError(f"{query.designator.description} names no robot", None)
@@ -45,26 +64,26 @@ def _robot(query: LocationQuery) -> RobotObject:
 
 
 def robot_collision_free(query: LocationQuery, pose: Pose) -> bool:
-    """Whether the robot standing at ``pose`` touches nothing but the floor."""
+    """Whether the robot standing at ``pose``, arms parked, touches nothing but the floor."""
     robot = _robot(query)
-    with placed(query.world, robot, pose):
+    with placed(query.world, robot, pose), parked(query.world, robot):
         return not query.world.in_collision(robot)
 
 
 def object_collision_free(query: LocationQuery, pose: Pose) -> bool:
     """Whether the ``for_`` object at ``pose`` touches nothing but its support."""
     obj = query.object(query.designator.get("for_"), "for_")
-    support = [query.designator.get(k) for k in ("on", "in_")]
-    ignore = [query.object(s, "on") for s in support if s is not None]
+    supports = [(k, query.designator.get(k)) for k in ("on", "in_")]
+    ignore = [query.part(value, key)[0] for key, value in supports if value is not None]
     with placed(query.world, obj, pose):
         return not query.world.collisions(obj, ignore)
 
 
 def visible(query: LocationQuery, pose: Pose) -> bool:
-    """Whether the robot at ``pose``, camera aimed at the target, sees it (90 % of it)."""
+    """Whether the robot at ``pose``, arms parked, camera aimed at the target, sees 90 % of it."""
     robot, world = _robot(query), query.world
     target = query.designator.get("object")
-    with placed(world, robot, pose):
+    with placed(world, robot, pose), parked(world, robot):
         if target is None:
             point = query.point(query.designator.get("target"), "target")
             camera = aimed_camera(world, robot, point)

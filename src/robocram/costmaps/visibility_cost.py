@@ -9,8 +9,7 @@ the cells a pose stream draws (the whole grid only for a picture).
 
 from __future__ import annotations
 
-from collections.abc import Iterator
-from contextlib import ExitStack, contextmanager
+from contextlib import AbstractContextManager
 from typing import Any
 
 import numpy as np
@@ -21,25 +20,11 @@ from robocram.costmaps.cost_layer import CostLayer, LocationQuery
 from robocram.costmaps.distance_costs import ring
 from robocram.costmaps.errors import CostmapInputError
 from robocram.costmaps.grid import BoolGrid
+from robocram.costmaps.out_of_the_way import out_of_the_way
 from robocram.costmaps.rays import cast_rays
-from robocram.tf import Pose
-from robocram.world import World, WorldObject
 
 VIEW_DISTANCE = (0.4, 2.5)  # [m] nearest and farthest horizontal distance to look from
 HEIGHTS = 3  # camera heights sampled between the description's minimum and maximum
-_AWAY = 1000.0  # [m] how far up the target and the robot wait while the rays are cast
-
-
-@contextmanager
-def _lifted(world: World, obj: WorldObject, index: int) -> Iterator[None]:
-    """Move ``obj`` far up (``index`` keeps several apart) and back exactly."""
-    pose = world.pose(obj)
-    x, y, z = pose.position
-    world.set_pose(obj, Pose((x + 10.0 * index, y, z + _AWAY), pose.orientation))
-    try:
-        yield
-    finally:
-        world.set_pose(obj, pose)
 
 
 def camera_heights(query: LocationQuery) -> list[float]:
@@ -72,13 +57,8 @@ def visibility_cost(query: LocationQuery, value: Any, alive: BoolGrid) -> CostLa
     return CostLayer(in_range, refine=free_share)
 
 
-@contextmanager
-def _out_of_sight(query: LocationQuery) -> Iterator[None]:
+def _out_of_sight(query: LocationQuery) -> AbstractContextManager[None]:
     """Lift the robot and the target object out of the rays' way for the block."""
-    movers: list[WorldObject] = [query.robot] if query.robot is not None else []
-    if query.designator.get("object") is not None:
-        movers.append(query.object(query.designator.get("object"), "object"))
-    with ExitStack() as stack:
-        for index, obj in enumerate(movers):
-            stack.enter_context(_lifted(query.world, obj, index + 1))
-        yield
+    target = query.designator.get("object")
+    obj = query.object(target, "object") if target is not None else None
+    return out_of_the_way(query.world, [query.robot, obj])
