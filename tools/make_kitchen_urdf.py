@@ -225,16 +225,18 @@ def counters(b: UrdfBuilder, facts: Facts) -> None:
 
 
 def walls(b: UrdfBuilder) -> None:
-    """Four walls around the room, their inner faces on its edges."""
+    """Four walls around the room, their inner faces on its edges; a link each, so each
+    one's bounds are its own (one link's bounds would cover the whole room)."""
     (x, y), (t, h) = ROOM, WALL
-    shapes = (
-        box(x + 2 * t, t, h, (0, y / 2 + t / 2, h / 2)),
-        box(x + 2 * t, t, h, (0, -y / 2 - t / 2, h / 2)),
-        box(t, y, h, (x / 2 + t / 2, 0, h / 2)),
-        box(t, y, h, (-x / 2 - t / 2, 0, h / 2)),
-    )
-    b.joint("walls_joint", "fixed", "kitchen_root", "walls")
-    b.link("walls", shapes, color="white")
+    shapes = {
+        "wall_north": box(x + 2 * t, t, h, (0, y / 2 + t / 2, h / 2)),
+        "wall_south": box(x + 2 * t, t, h, (0, -y / 2 - t / 2, h / 2)),
+        "wall_east": box(t, y, h, (x / 2 + t / 2, 0, h / 2)),
+        "wall_west": box(t, y, h, (-x / 2 - t / 2, 0, h / 2)),
+    }
+    for name, shape in shapes.items():
+        b.joint(f"{name}_joint", "fixed", "kitchen_root", name)
+        b.link(name, (shape,), color="white")
 
 
 def table(b: UrdfBuilder, facts: Facts) -> None:

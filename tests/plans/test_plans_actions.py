@@ -7,7 +7,8 @@ from collections.abc import Iterator
 
 import pytest
 
-from robocram.designators import DesignatorPropertyError, an
+from robocram.costmaps import CostmapLocations
+from robocram.designators import DesignatorPropertyError, an, using_location_resolver
 from robocram.execution import perform
 from robocram.plans import PlanSetupError, install_actions
 from robocram.projection import simulated_robot
@@ -88,3 +89,14 @@ def test_a_name_that_is_no_container_lists_the_containers(pr2_kitchen: KitchenSc
         pytest.raises(PlanSetupError, match="'oven'.*drawer_unit_drawer_3"),
     ):
         perform(an.action(type="opening", object="oven"))
+
+
+def test_searching_is_an_action_too(pr2_kitchen: KitchenScene) -> None:
+    locations = CostmapLocations(pr2_kitchen.world, seed=0)
+    with (
+        simulated_robot(pr2_kitchen.world, pr2_kitchen.robot),
+        using_location_resolver(locations.resolver()),
+    ):
+        seen = perform(an.action(type="searching", object=an.object(type="cereal_box")))
+    assert seen.get("name") == "cereal-1"
+    assert pr2_kitchen.world.visible(pr2_kitchen.robot, "cereal-1")

@@ -55,7 +55,11 @@ def pr2_kitchen() -> Iterator[World]:
 
 
 def test_the_room_is_six_by_five_metres(pr2_kitchen: World) -> None:
-    low, high = pr2_kitchen.link_aabb("kitchen", "walls")
+    walls = [
+        pr2_kitchen.link_aabb("kitchen", f"wall_{s}") for s in ("north", "south", "east", "west")
+    ]
+    low = [min(w[0][i] for w in walls) for i in range(3)]
+    high = [max(w[1][i] for w in walls) for i in range(3)]
     assert high[0] - low[0] == pytest.approx(6.2, abs=0.01)  # 6 m inside, 0.1 m walls
     assert high[1] - low[1] == pytest.approx(5.2, abs=0.01)
 

@@ -20,6 +20,7 @@ from robocram.logic import KnowledgeBase
 from robocram.plans.action_type import ActionType
 from robocram.plans.basic_actions import detect, look, move_torso, navigate, park_arms
 from robocram.plans.containers import close_container, open_container
+from robocram.plans.search import search
 
 ACTIONS_GROUP = "robocram_actions"
 ACTION_TYPES: Mapping[str, ActionType] = MappingProxyType(
@@ -29,6 +30,7 @@ ACTION_TYPES: Mapping[str, ActionType] = MappingProxyType(
             ActionType("navigating", ("target",), (), navigate),
             ActionType("looking", ("target",), (), look),
             ActionType("detecting", ("object",), (), detect),
+            ActionType("searching", ("object",), ("poses_per_place",), search),
             ActionType("parking-arms", (), ("arm",), park_arms),
             ActionType("moving-torso", ("joint_angle",), (), move_torso),
             ActionType("opening", ("object",), ("arm", "distance", "angle"), open_container),

@@ -1,0 +1,112 @@
+"""Searching for an object: go where each candidate place is visible, look, detect.
+
+The candidate places come from the knowledge base: first the object type's usual places
+(``usual_location(Type, Env, Link)``), then every other supporting surface
+(``supporting_surface(Env, Link)``). For each place the plan asks for a location from
+which the robot sees it (``visible_for``, a location designator resolved by whatever
+resolver the environment has, e.g. costmaps), tries up to ``poses_per_place`` of its
+solutions, looks and detects. When every place is exhausted it raises
+:class:`SearchExhausted`, a ``PerceptionObjectNotFound`` that lists the places searched.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from robocram.designators import LocationDesignator, ObjectDesignator, a, an
+from robocram.designators.errors import DesignatorError
+from robocram.execution import perform
+from robocram.execution.failures import PlanFailure
+from robocram.logic import current_kb
+from robocram.plans.basic_actions import park_arms
+from robocram.plans.errors import PlanSetupError, SearchExhausted
+from robocram.plans.robot_facts import current_robot
+from robocram.tf import PoseStamped
+
+POSES_PER_PLACE = 2  # CRAM retries a search location a couple of times
+LOOK_ABOVE = 0.10  # [m] the point looked at is this far above a place's link frame
+
+
+@dataclass(frozen=True)
+class Place:
+    """A link of an environment where objects may be."""
+
+    environment: str
+    link: str
+
+
+@dataclass
+class SearchLog:
+    """What the search did: the places looked at and the failures met, in order."""
+
+    searched: list[Place] = field(default_factory=list)
+    failures: list[PlanFailure | DesignatorError] = field(default_factory=list)
+
+
+def candidate_places(object_type: str) -> list[Place]:
+    """The usual places of ``object_type`` first, then every other supporting surface."""
+    kb = current_kb()
+    usual = [Place(a_["E"], a_["L"]) for a_ in kb.query("usual_location(T, E, L)", T=object_type)]
+    others = [Place(a_["E"], a_["L"]) for a_ in kb.query("supporting_surface(E, L)")]
+    return list(dict.fromkeys([*usual, *others]))
+
+
+def _place_point(place: Place) -> PoseStamped:
+    answer = current_kb().first(
+        "world(W), link_pose(W, E, L, P)", E=place.environment, L=place.link
+    )
+    if answer is None:
+        raise PlanSetupError(
+            f"the KB names {place.link!r} of {place.environment!r} as a place, but the world "
+            "has no such link; regenerate the scene's facts"
+        )
+    x, y, z = answer["P"].position
+    return PoseStamped("map", (x, y, z + LOOK_ABOVE))
+
+
+def _look_from_places(
+    robot: str, target: PoseStamped, wanted: ObjectDesignator, poses: int, log: SearchLog
+) -> ObjectDesignator | None:
+    stand = a.location(visible_for=robot, target=target.position)
+    for _ in range(poses):
+        try:
+            perform(a.motion(type="going", target=stand))
+            perform(a.motion(type="looking", target=target))
+            return perform(a.motion(type="detecting", object=wanted))
+        except (PlanFailure, DesignatorError) as failure:
+            log.failures.append(failure)
+            if isinstance(failure, DesignatorError):
+                return None  # no (more) location to see the place from
+        following = stand.next_solution()
+        if not isinstance(following, LocationDesignator):
+            return None
+        stand = following
+    return None
+
+
+def search(
+    object: ObjectDesignator | str,  # noqa: A002 - CRAM's key
+    poses_per_place: int = POSES_PER_PLACE,
+    log: SearchLog | None = None,
+) -> ObjectDesignator:
+    """Find the object (a designator with a ``type``, or a type); the perceived designator.
+
+    Raises:
+        SearchExhausted: no candidate place shows the object.
+    """
+    robot = current_robot()
+    log = log if log is not None else SearchLog()
+    wanted = object if isinstance(object, ObjectDesignator) else an.object(type=object)
+    object_type = str(wanted.get("type"))
+    park_arms()
+    for place in candidate_places(object_type):
+        log.searched.append(place)
+        seen = _look_from_places(robot, _place_point(place), wanted, poses_per_place, log)
+        if seen is not None:
+            return seen
+    names = tuple(p.link for p in log.searched)
+    raise SearchExhausted(
+        f"no {object_type} seen from any place searched: {', '.join(names) or 'none'}",
+        object_designator=wanted,
+        searched=names,
+    )
