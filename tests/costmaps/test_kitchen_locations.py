@@ -43,7 +43,11 @@ def test_a_cup_put_in_the_drawer_rests_inside_it(kitchen: KitchenScene) -> None:
 def test_standing_places_in_the_room_avoid_the_walls(kitchen: KitchenScene) -> None:
     world = kitchen.world
     locations = CostmapLocations(world)
-    walls_low, walls_high = world.link_aabb("kitchen", "walls")
+    walls = [
+        world.link_aabb("kitchen", f"wall_{side}") for side in ("north", "south", "east", "west")
+    ]
+    walls_low = [min(w[0][i] for w in walls) for i in range(2)]  # the room's outer bounds
+    walls_high = [max(w[1][i] for w in walls) for i in range(2)]
     for key in ("visible_for", "reachable_for"):
         designator = a.location(**{key: "pr2"}, object="mug-1")
         for pose in itertools.islice(locations.poses(designator), 3):
