@@ -36,6 +36,7 @@ from robocram.kinematics.seed_table import (
     ROTATION_WEIGHT,
     SeedTable,
     random_configurations,
+    seed_table,
 )
 from robocram.robots import RobotDescription, RobotModel
 from robocram.tf import Pose, PoseStamped
@@ -106,7 +107,7 @@ class IKSolver:
     def table(self) -> SeedTable:
         """The start table, sampled on first use (tens of milliseconds)."""
         if self._table is None:
-            self._table = SeedTable(self.chain, self._table_size, self.reach.radius)
+            self._table = seed_table(self.chain, self._table_size, self.reach.radius)
         return self._table
 
     def start(self, seed: Mapping[str, float]) -> FloatArray:

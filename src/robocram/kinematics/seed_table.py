@@ -11,7 +11,6 @@ orientation (rotation matrices, weighted by ``ROTATION_WEIGHT`` [m]) start the d
 from __future__ import annotations
 
 import math
-from typing import NamedTuple
 
 import numpy as np
 import pinocchio as pin
@@ -36,6 +35,40 @@ def random_configurations(
     return rng.uniform(lo, hi, size=(count, len(lo)))
 
 
+def geometry_key(chain: ArmChain) -> tuple[object, ...]:
+    """Everything a chain's start table depends on: equal keys, equal tables."""
+    placements = [chain.model.jointPlacements[row + 1] for row in range(len(chain.path))]
+    placements.append(chain.model.frames[chain.frame_id].placement)
+    joints = [chain.kin.robot_model.joints[name] for name in chain.path]
+    return (
+        tuple((j.type, tuple(j.axis)) for j in joints),
+        b"".join(m.homogeneous.tobytes() for m in placements),
+        chain.a.tobytes(),
+        chain.offsets({}).tobytes(),
+        chain.lower.tobytes(),
+        chain.upper.tobytes(),
+        chain.first_row,
+    )
+
+
+_TABLES: dict[tuple[object, ...], SeedTable] = {}
+_TABLES_KEPT = 32  # tables of different chains kept (a few MB each)
+
+
+def seed_table(chain: ArmChain, size: int, reach: float) -> SeedTable:
+    """The start table of ``chain``, shared by every chain of the same geometry.
+
+    Tests and batch projection load the same robot many times; sampling is then done once.
+    """
+    key = (geometry_key(chain), size, reach)
+    table = _TABLES.get(key)
+    if table is None:
+        if len(_TABLES) >= _TABLES_KEPT:
+            _TABLES.pop(next(iter(_TABLES)))
+        table = _TABLES[key] = SeedTable(chain, size, reach)
+    return table
+
+
 class SeedTable:
     """Sampled configurations of a chain, found by how close their tool pose is to a target.
 
@@ -56,7 +89,8 @@ class SeedTable:
         features = np.hstack((position, ROTATION_WEIGHT * rotation.reshape(size, 9)))
         self.features = features[order]
         self._keys_sorted = keys[order]
-        self._around: dict[tuple[int, int, int], _Block] = {}
+        self._squares = np.einsum("ij,ij->i", self.features, self.features)
+        self._around: dict[tuple[int, int, int], np.ndarray] = {}  # cell -> table rows
 
     def _keys(self, cells: np.ndarray) -> np.ndarray:
         """One integer per grid cell (cells outside the sampled box map to -1)."""
@@ -65,7 +99,7 @@ class SeedTable:
         key = (local[..., 0] * self._shape[1] + local[..., 1]) * self._shape[2] + local[..., 2]
         return np.where(inside, key, -1)
 
-    def _neighbourhood(self, cell: tuple[int, int, int]) -> _Block:
+    def _neighbourhood(self, cell: tuple[int, int, int]) -> np.ndarray:
         """The samples in ``cell`` and the 26 cells around it (cached per cell)."""
         found = self._around.get(cell)
         if found is None:
@@ -74,9 +108,7 @@ class SeedTable:
             first = np.searchsorted(self._keys_sorted, keys, side="left")
             last = np.searchsorted(self._keys_sorted, keys, side="right")
             spans = [np.arange(f, t) for f, t in zip(first, last, strict=True)]
-            rows = np.concatenate([np.empty(0, np.int64), *spans])
-            features = self.features[rows]
-            found = _Block(rows, features, np.einsum("ij,ij->i", features, features))
+            found = np.concatenate([np.empty(0, np.int64), *spans])
             self._around[cell] = found
         return found
 
@@ -85,22 +117,14 @@ class SeedTable:
         pose distances [m]; none when no sample lies within a cell of the target."""
         position = target_in_base.translation
         x, y, z = (math.floor(v / self.cell) for v in position.tolist())
-        block = self._neighbourhood((x, y, z))
-        if block.rows.size == 0:
+        rows = self._neighbourhood((x, y, z))
+        if rows.size == 0:
             return np.empty((0, self.configurations.shape[1])), np.empty(0)
         goal = np.concatenate((position, ROTATION_WEIGHT * target_in_base.rotation.ravel()))
-        distance = block.squares - 2.0 * (block.features @ goal) + float(goal @ goal)
-        if block.rows.size > count:
+        distance = self._squares[rows] - 2.0 * (self.features[rows] @ goal) + float(goal @ goal)
+        if rows.size > count:
             pick = np.argpartition(distance, count)[:count]
             pick = pick[np.argsort(distance[pick])]
         else:
             pick = np.argsort(distance)
-        return self.configurations[block.rows[pick]], np.sqrt(np.maximum(distance[pick], 0.0))
-
-
-class _Block(NamedTuple):
-    """The samples around one grid cell: table rows, pose features and their squares."""
-
-    rows: np.ndarray
-    features: FloatArray
-    squares: FloatArray
+        return self.configurations[rows[pick]], np.sqrt(np.maximum(distance[pick], 0.0))
