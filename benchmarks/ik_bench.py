@@ -244,6 +244,13 @@ def hsr_pick_up_descents() -> None:
     print(f"\nHSR pick-up plan: {len(answers)} IK queries, {total} descents [{per_query}]")
 
 
+def reaches(desc: RobotDescription, result: IKResult, target: Pose) -> bool:
+    """Success, confirmed by our FK of the returned joints."""
+    tool = forward_kinematics(desc, result.joint_positions, FRAME)
+    close = tool.distance_to(target) < POSITION_OK and tool.angle_to(target) < ORIENTATION_OK
+    return result.success and close
+
+
 def timed(work: Callable[[], object]) -> tuple[float, float]:
     """Wall and CPU time of ``work()`` [ms]."""
     t0, c0 = time.perf_counter(), time.process_time()
@@ -274,6 +281,9 @@ def main(count: int, seed: int) -> None:
     run("pybullet calculateIK", desc, ARM, poses, pybullet_ik(desc, start, null_space=False))
     run("pybullet IK, null space", desc, ARM, poses, pybullet_ik(desc, start, null_space=True))
     print(HEADER.format("TRAC-IK (published)", "99.95 %", "0.380", "-", "-", "-", "-", "-", "-"))
+    many = targets(desc, solver, 10 * count, seed + 100)
+    solved = sum(reaches(desc, solve_ik(desc, ARM, t, seed=start), t) for t in many)
+    print(f"robocram on {len(many)} more targets: {100 * solved / len(many):.3f} % success")
     far = beyond_reach(desc, poses[: max(count // 5, 20)], seed)
     header(f"unreachable: {len(far)} PR2 targets beyond reach; {len(far)} HSR targets w/o lift")
     run("robocram, PR2 beyond reach", desc, ARM, far, ours(desc, ARM, start))
