@@ -112,10 +112,9 @@ class IKSolver:
 
     def start(self, seed: Mapping[str, float]) -> FloatArray:
         """Start configuration: the seed's values, else mid-range (0 for continuous joints)."""
-        x = np.array(
-            [seed.get(v, self._middle[k]) for k, v in enumerate(self.chain.variables)], float
-        )
-        return np.clip(x, self.chain.lower, self.chain.upper)
+        middle = self._middle.tolist()
+        x = np.array([seed.get(v, middle[k]) for k, v in enumerate(self.chain.variables)], float)
+        return np.minimum(np.maximum(x, self.chain.lower), self.chain.upper)
 
     def locate(
         self,

@@ -6,6 +6,7 @@ HSR), i.e. relative to the robot base, not the map: transform map poses first.
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Mapping
 
 from robocram.kinematics.arm_selection import loaded
@@ -52,15 +53,22 @@ def solve_ik(
     Returns:
         An IKResult; ``success`` False when no solution was found within the budget.
     """
-    seed = dict(seed or {})
     solver = IKSolver.cached(description, arm, use_torso, frame)
-    settings = IKSettings(
+    settings = _settings(position_tolerance, orientation_tolerance, max_restarts, max_iterations)
+    return solver.solve(target, dict(seed or {}), settings, collision_check, random_seed)
+
+
+@functools.lru_cache(maxsize=64)
+def _settings(
+    position_tolerance: float, orientation_tolerance: float, max_restarts: int, max_iterations: int
+) -> IKSettings:
+    """Settings for these budgets (callers that query many targets reuse one object)."""
+    return IKSettings(
         position_tolerance=position_tolerance,
         orientation_tolerance=orientation_tolerance,
         max_restarts=max_restarts,
         max_iterations=max_iterations,
     )
-    return solver.solve(target, seed, settings, collision_check, random_seed)
 
 
 def forward_kinematics(
