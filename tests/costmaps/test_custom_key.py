@@ -8,9 +8,10 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+import pytest
 from PIL import Image
 
-from robocram.costmaps import CostLayer, CostmapLocations, LocationQuery
+from robocram.costmaps import CostLayer, CostmapInputError, CostmapLocations, LocationQuery
 from robocram.designators import a
 from robocram.tf import Pose
 from robocram.world import World
@@ -59,3 +60,13 @@ def test_the_example_draws_both_pictures(tmp_path: Path) -> None:
         heat = image[:, :, 0] - image[:, :, 1] > 40  # tinted red by the weights
         assert image.shape[0] == image.shape[1] >= 200
         assert 0.01 < heat.mean() < 0.9, (path, heat.mean())  # weights drawn, not everywhere
+
+
+def test_a_rule_without_its_python_function_is_named() -> None:
+    with World() as world:
+        world.add_floor()
+        world.add_box("table", (0.6, 1.0, 0.7), Pose((1.5, 0.0, 0.35)))
+        world.kb.consult("location_cost(under, under_cost).", group="half_done")
+        with pytest.raises(CostmapInputError, match="add_cost_function") as caught:
+            next(CostmapLocations(world).poses(a.location(under="table")))
+        assert caught.value.culprit == "under_cost"

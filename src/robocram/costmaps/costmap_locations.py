@@ -14,7 +14,7 @@ import math
 from collections import Counter
 from collections.abc import Iterator
 from dataclasses import dataclass, field
-from typing import Any, Literal
+from typing import Any, Literal, TypeVar
 
 import numpy as np
 
@@ -33,6 +33,7 @@ from robocram.tf import quaternion as quat
 from robocram.world import RobotObject, World
 
 Sampling = Literal["random", "best"]
+_Function = TypeVar("_Function")
 REFINE_CHUNK = 8  # cells whose lazy factors are computed together
 ANCHOR_KEYS = ("object", "target", "on", "in_", "near", "left_of", "right_of",
                "in_front_of", "behind")  # fmt: skip
@@ -81,16 +82,8 @@ class CostmapLocations:
         robot = self._robot(designator, plan)
         resolution = designator.get("resolution", self.resolution)
         size = designator.get("size", self.size)
-        anchor = next((designator.get(k) for k in ANCHOR_KEYS if designator.get(k) is not None),
-                      None)  # fmt: skip
-        if anchor is None:
-            raise CostmapInputError(
-                f"{designator.description} says nothing to search around; give one of "
-                f"{', '.join(ANCHOR_KEYS)}",
-                designator,
-            )
         probe = LocationQuery(self.world, designator, CostmapGrid((0, 0), 1.0, (1, 1)), robot)
-        centre = probe.point(anchor, next(k for k in ANCHOR_KEYS if designator.get(k) is anchor))
+        centre = _anchor(probe, plan)
         grid = CostmapGrid.around(centre[:2], size, resolution)
         return LocationQuery(self.world, designator, grid, robot, self.reach_maps)
 
@@ -137,26 +130,13 @@ class CostmapLocations:
         return self.world.robot(name)
 
     def _validator(self, name: str) -> Validator:
-        found = self.validators.get(name)
-        if found is None:
-            raise CostmapInputError(
-                f"a location_validator rule names {name!r}, which has no Python function; "
-                "register one with add_validator",
-                name,
-            )
-        return found
+        return _registered(self.validators, name, "location_validator", "add_validator")
 
     def _costmap(self, query: LocationQuery, plan: LocationPlan, lazy: bool) -> _Layers:
         alive = np.ones(query.grid.shape, dtype=bool)
         weights, refiners, heights, yaws = [], [], None, None
         for key, name in plan.cost_functions:
-            function = self.cost_functions.get(name)
-            if function is None:
-                raise CostmapInputError(
-                    f"rule location_cost({key}, {name}) names a cost function with no Python "
-                    "side; register it with add_cost_function",
-                    name,
-                )
+            function = _registered(self.cost_functions, name, "location_cost", "add_cost_function")
             layer: CostLayer = function(query, query.designator.get(key), alive)
             weights.append(np.where(alive, layer.weights, 0.0))
             if layer.refine is not None and lazy:
@@ -167,7 +147,7 @@ class CostmapLocations:
             alive &= weights[-1] > 0
             heights = layer.heights if layer.heights is not None else heights
             yaws = layer.yaws if layer.yaws is not None else yaws
-        return _Layers(Costmap.from_layers(query.grid, weights, heights), yaws, refiners)
+        return _Layers(Costmap.from_layers(query.grid, weights, heights), yaws, refiners, plan)
 
     def _cells(self, layers: _Layers, rng: np.random.Generator) -> Iterator[tuple[int, int]]:
         """Cells drawn from the costmap, thinned by the lazy factors (rejection sampling)."""
@@ -184,7 +164,7 @@ class CostmapLocations:
 
     def _candidates(self, query: LocationQuery, layers: _Layers) -> Iterator[Pose]:
         rng = np.random.default_rng(query.designator.get("seed", self.seed))
-        facing = _facing_point(query)
+        facing = _facing_point(query, layers.plan)
         placed = query.designator.get("for_")
         heading = self.world.pose(query.object(placed, "for_")).orientation if placed else None
         yaws = layers.yaws
@@ -204,16 +184,43 @@ class CostmapLocations:
 
 @dataclass(frozen=True, eq=False)
 class _Layers:
-    """A costmap of the eager layers, the yaws, and the lazy factors still to apply."""
+    """A costmap of the eager layers, the yaws, the lazy factors still to apply, the plan."""
 
     costmap: Costmap
     yaws: np.ndarray | None
     refiners: list[CellRefiner]
+    plan: LocationPlan
 
 
-def _facing_point(query: LocationQuery) -> tuple[float, float, float] | None:
-    """Robots face the target; placed objects keep their heading (None)."""
+def _registered(registry: dict[str, _Function], name: str, rule: str, adder: str) -> _Function:
+    """``registry[name]``, or an error saying the ``rule`` names a function nobody added."""
+    found = registry.get(name)
+    if found is None:
+        raise CostmapInputError(
+            f"a {rule} rule names {name!r}, which has no Python function; register one with "
+            f"{adder}",
+            name,
+        )
+    return found
+
+
+def _anchor(query: LocationQuery, plan: LocationPlan) -> tuple[float, float, float]:
+    """The point the search is centred on: the first of :data:`ANCHOR_KEYS` given, else the
+    value of the first key that makes a layer (a user's own key)."""
+    designator = query.designator
+    keys = [*ANCHOR_KEYS, *(key for key, _ in plan.cost_functions if key not in ANCHOR_KEYS)]
+    key = next((k for k in keys if designator.get(k) is not None and k != plan.robot_key), None)
+    if key is None:
+        raise CostmapInputError(
+            f"{designator.description} says nothing to search around; give one of "
+            f"{', '.join(ANCHOR_KEYS)}",
+            designator,
+        )
+    return query.point(designator.get(key), key)
+
+
+def _facing_point(query: LocationQuery, plan: LocationPlan) -> tuple[float, float, float] | None:
+    """Robots face the anchor; placed objects keep their heading (None)."""
     if query.robot is None or query.designator.get("for_") is not None:
         return None
-    key = next(k for k in ANCHOR_KEYS if query.designator.get(k) is not None)
-    return query.point(query.designator.get(key), key)
+    return _anchor(query, plan)
