@@ -50,8 +50,11 @@ def test_foreign_group_needs_extendable_declaration() -> None:
 
 def test_builtins_cannot_be_redefined() -> None:
     kb = KnowledgeBase()
+    with pytest.raises(PrologPermissionError, match="atom_length/2 is a built-in"):
+        kb.consult("atom_length(a, b).")
     with pytest.raises(PrologPermissionError):
-        kb.consult("append(a, b, c).")
+        kb.assertz("atom_length(a, b)")
+    assert kb.first("atom_length(abc, N)") == {"N": 3}
 
 
 def test_dynamic_assert_retract() -> None:

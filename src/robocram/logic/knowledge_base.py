@@ -14,14 +14,15 @@ from typing import Any
 
 from robocram.logic.bulk import paused_gc
 from robocram.logic.convert import to_prolog, to_python
-from robocram.logic.errors import FactGroupError, PrologError, PrologPermissionError
+from robocram.logic.errors import PrologError, PrologPermissionError
+from robocram.logic.fact_groups import LIBRARY_OWNER, GroupEdit, Groups, refuse_system
 from robocram.logic.loader import compile_clause, parse_indicator
 from robocram.logic.lru import LRUCache
 from robocram.logic.machine import Machine
 from robocram.logic.operators import OperatorTable
 from robocram.logic.predicate import USER, Key, Pred
 from robocram.logic.reader import read_query, read_terms
-from robocram.logic.system import library_predicates, system_predicates
+from robocram.logic.system import PRIVATE_PREFIX, library_predicates, system_predicates
 from robocram.logic.template import Slot, build, compile_term
 from robocram.logic.terms import Term, Var, deref
 
@@ -47,111 +48,69 @@ class KnowledgeBase:
         self._preds.update(library_predicates())
         self._ops = OperatorTable()
         self._functions: dict[str, Callable[..., Any]] = {}
-        self._groups: dict[str, tuple[set[Key], set[Key]]] = {}
+        self._groups: Groups = {}
         self._lock = threading.RLock()
         self._queries: LRUCache[str, tuple[Any, dict[str, int], int]] = LRUCache(QUERY_CACHE_SIZE)
 
     def consult(self, text: str, group: str | None = None, extendable: Iterable[Any] = ()) -> None:
-        """Load Prolog text as fact group `group` (replacing it); None appends to 'user'."""
-        terms = []
-        directives = []
+        """Load Prolog text as fact group `group` (replacing it); None appends to 'user'.
+
+        All or nothing: when a clause is refused or a directive fails or raises, the
+        knowledge base is left as it was, and a concurrent query sees the old group or the
+        new one, never a mix.
+        """
+        terms: list[Any] = []
+        directives: list[Any] = []
+        dynamic: list[Key] = []
         with paused_gc():
             for term, _ in read_terms(text, self._ops):
                 if type(term) is Term and term[0] == ":-" and len(term[1]) == 1:
-                    if self._declaration(deref(term[1][0]), group):
-                        continue
-                    directives.append(term[1][0])
+                    if not self._declaration(deref(term[1][0]), dynamic):
+                        directives.append(term[1][0])
                 else:
                     terms.append(term)
-            self.add_fact_group(group, terms, extendable)
-        for goal in directives:
-            if not self.holds_term(goal):
-                raise PrologError(f"directive failed: {goal!r} (in fact group {group or 'user'!r})")
+            name = group or "user"
+            compiled = [compile_clause(t, name) for t in terms]
+        with self._lock:
+            before = (self._preds, self._groups)
+            self._commit(name, group is not None, compiled, extendable, dynamic)
+            try:
+                for goal in directives:
+                    if not self.holds_term(goal):
+                        raise PrologError(f"directive failed: {goal!r} (in fact group {name!r})")
+            except BaseException:
+                self._preds, self._groups = before
+                raise
 
     def add_fact_group(
         self, group: str | None, clauses: Iterable[Any], extendable: Iterable[Any] = ()
     ) -> None:
         """Define fact group `group` from clause texts or terms (see `consult`)."""
+        name = group or "user"
         compiled: list[tuple[Key, Any]] = []
         for clause in clauses:
             if isinstance(clause, str):
-                compiled.extend(
-                    compile_clause(t, group or "user") for t, _ in read_terms(clause, self._ops)
-                )
+                compiled.extend(compile_clause(t, name) for t, _ in read_terms(clause, self._ops))
             else:
-                compiled.append(compile_clause(to_prolog(clause), group or "user"))
-        shared = {parse_indicator(to_prolog(e)) for e in extendable}
+                compiled.append(compile_clause(to_prolog(clause), name))
         with self._lock:
-            name = group or "user"
-            if group is not None:
-                self._drop_group(name)
-            keys, ext = self._groups.setdefault(name, (set(), set()))
-            ext.update(shared)
-            self._declare_interface(shared, name)
-            for key, _ in compiled:
-                self._check_owner(key, name)
-            for key, clause in compiled:
-                pred = self._user_pred(key)
-                if pred.owner is None:
-                    pred.owner = name
-                pred.add_last(clause)
-                keys.add(key)
+            self._commit(name, group is not None, compiled, extendable, ())
 
-    def _declare_interface(self, keys: set[Key], group: str) -> None:
-        """A group that lists a predicate as extendable declares it (CRAM's interface idiom).
+    def _commit(
+        self,
+        name: str,
+        replace: bool,
+        compiled: list[tuple[Key, Any]],
+        extendable: Iterable[Any],
+        dynamic: Iterable[Key],
+    ) -> None:
+        """Stage the group on copies and install them in one step (hold the lock)."""
+        shared = {parse_indicator(to_prolog(e)) for e in extendable}
+        edit = GroupEdit(self._preds, self._groups)
+        edit.load(name, replace, compiled, shared, dynamic)
+        self._preds, self._groups = edit.preds, edit.groups
 
-        The predicate then exists (a call fails instead of raising "unknown predicate") and
-        the declaring group owns it, so any number of other groups may add clauses.
-        """
-        for key in keys:
-            pred = self._preds.get(key)
-            if pred is not None and pred.kind != USER:
-                continue  # a Python predicate or built-in: nothing to declare
-            pred = self._user_pred(key)
-            if pred.owner is None or not pred.clauses:
-                pred.owner = group
-
-    def _drop_group(self, name: str) -> None:
-        keys, _ = self._groups.pop(name, (set(), set()))
-        for key in keys:
-            pred = self._preds[key]
-            pred.set_clauses([c for c in pred.clauses if c.group != name])
-            if pred.owner == name:
-                others = [c.group for c in pred.clauses if c.group is not None]
-                pred.owner = others[0] if others else None
-
-    def _check_owner(self, key: Key, group: str) -> None:
-        pred = self._preds.get(key)
-        if pred is None or pred.owner is None or pred.owner == group:
-            if pred is not None and pred.system:
-                self._refuse_system(pred)
-            return
-        if pred.system:
-            self._refuse_system(pred)
-        owner_ext = self._groups.get(pred.owner, (set(), set()))[1]
-        mine = self._groups.get(group, (set(), set()))[1]
-        if key not in owner_ext and key not in mine:
-            raise FactGroupError(pred.indicator, pred.owner, group)
-
-    @staticmethod
-    def _refuse_system(pred: Pred) -> None:
-        raise PrologPermissionError(
-            "modify",
-            "static_procedure",
-            Term("/", (pred.name, pred.arity)),
-            f"{pred.indicator} is a built-in predicate and cannot be redefined;"
-            " choose another name",
-        )
-
-    def _user_pred(self, key: Key) -> Pred:
-        pred = self._preds.get(key)
-        if pred is None:
-            pred = self._preds[key] = Pred(key[0], key[1])
-        elif pred.system or pred.kind != USER:
-            self._refuse_system(pred)
-        return pred
-
-    def _declaration(self, goal: Any, group: str | None) -> bool:
+    def _declaration(self, goal: Any, dynamic: list[Key]) -> bool:
         """Handle dynamic/discontiguous/op directives; False for goals to run."""
         if (
             type(goal) is not Term
@@ -163,14 +122,22 @@ class KnowledgeBase:
                 return True
             return False
         if goal[0] == "dynamic":
-            for spec in _comma_items(goal[1][0]):
-                self.declare_dynamic(parse_indicator(spec))
+            dynamic.extend(parse_indicator(spec) for spec in _comma_items(goal[1][0]))
         return True
 
     def declare_dynamic(self, key: Key) -> None:
         """Make name/arity a dynamic predicate (defined, modifiable by assert/retract)."""
         with self._lock:
             self._user_pred(key).dynamic = True
+
+    def _user_pred(self, key: Key) -> Pred:
+        """The user predicate `key` in place (created, or taken over from the library)."""
+        pred = self._preds.get(key)
+        if pred is None or pred.owner == LIBRARY_OWNER:
+            pred = self._preds[key] = Pred(key[0], key[1])
+        elif pred.system or pred.kind != USER:
+            raise refuse_system(pred)
+        return pred
 
     def assert_clause(self, clause: Any, front: bool = False) -> None:
         """Add a clause to a dynamic (or new) predicate, as assertz/asserta do."""
@@ -180,6 +147,7 @@ class KnowledgeBase:
             if (
                 pred is not None
                 and not pred.dynamic
+                and pred.owner != LIBRARY_OWNER
                 and (pred.clauses or pred.system or pred.kind != USER)
             ):
                 raise PrologPermissionError(
@@ -249,7 +217,8 @@ class KnowledgeBase:
         return sorted(
             p.indicator
             for p in list(self._preds.values())
-            if include_builtins or not p.system and p.kind == USER
+            if not p.name.startswith(PRIVATE_PREFIX)
+            and (include_builtins or not p.system and p.kind == USER and p.owner != LIBRARY_OWNER)
         )
 
     def similar_predicates(self, name: str, arity: int) -> list[str]:

@@ -59,6 +59,16 @@ class Pred:
         if self.warm == WARM_CALLS and not self.dynamic and self.pyfn is None:
             self.proc = compile_procedure(self.clauses)
 
+    def copy(self) -> Pred:
+        """A new predicate with the same definition (its own clause list and no code)."""
+        twin = Pred(self.name, self.arity, self.kind, self.fn)
+        twin.clauses = list(self.clauses)
+        twin.pyfn = self.pyfn
+        twin.dynamic = self.dynamic
+        twin.owner = self.owner
+        twin.extendable = set(self.extendable)
+        return twin
+
     @property
     def indicator(self) -> str:
         """The `name/arity` text."""

@@ -4,7 +4,8 @@ The table is built from the `BUILTINS` tuples the built-in modules list, named h
 by one, so what is built in is visible in one place and no import fills a registry.
 Library predicates (written in Prolog) are not in it: each knowledge base compiles its
 own copies (`library_predicates`), so the code generated for one KB's `append/3` is never
-run by another.
+run by another. A user program may redefine a library predicate; the library's own calls
+go to private twins (`'$lib:append'/3`), so other library predicates keep working.
 """
 
 from __future__ import annotations
@@ -12,6 +13,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from functools import cache
 from types import MappingProxyType
+from typing import Any
 
 from robocram.logic import (
     builtin_arith,
@@ -25,14 +27,17 @@ from robocram.logic import (
 from robocram.logic.builtin_spec import Builtin
 from robocram.logic.clause import Clause
 from robocram.logic.control import CONTROL_NAMES
+from robocram.logic.fact_groups import LIBRARY_OWNER
 from robocram.logic.library import LIBRARY
 from robocram.logic.loader import compile_clause
 from robocram.logic.predicate import CONTROL, FrozenPred, Key, Pred
 from robocram.logic.reader import read_terms
+from robocram.logic.terms import Term
 
-__all__ = ["LIBRARY_OWNER", "library_predicates", "system_predicates"]
+__all__ = ["PRIVATE_PREFIX", "library_predicates", "system_predicates"]
 
-LIBRARY_OWNER = "library"
+PRIVATE_PREFIX = "$lib:"
+_CONTROL_ARGS = {(",", 2), (";", 2), ("->", 2), ("*->", 2), ("\\+", 1)}
 _TABLES: tuple[tuple[Builtin, ...], ...] = (
     builtin_arith.BUILTINS,
     builtin_atoms.BUILTINS,
@@ -61,8 +66,44 @@ def system_predicates() -> Mapping[Key, Pred]:
 
 @cache
 def _library_clauses() -> tuple[tuple[Key, Clause], ...]:
-    """The library text, read and compiled once; only its templates are shared."""
-    return tuple(compile_clause(term, LIBRARY_OWNER) for term, _ in read_terms(LIBRARY))
+    """The library, read and compiled once: each predicate and its private twin."""
+    terms = [term for term, _ in read_terms(LIBRARY)]
+    names = {_key(_head(t)) for t in terms}
+    out: list[tuple[Key, Clause]] = []
+    for term in terms:
+        head = _head(term)
+        body = _private_calls(term[1][1], names) if _is_rule(term) else "true"
+        for name in (head if type(head) is str else head[0], None):
+            if name is None:
+                name = PRIVATE_PREFIX + _key(head)[0]
+            renamed = Term(name, head[1]) if type(head) is Term else name
+            out.append(compile_clause(Term(":-", (renamed, body)), LIBRARY_OWNER))
+    return tuple(out)
+
+
+def _is_rule(t: Any) -> bool:
+    return type(t) is Term and t[0] == ":-" and len(t[1]) == 2
+
+
+def _head(t: Any) -> Any:
+    return t[1][0] if _is_rule(t) else t
+
+
+def _key(t: Any) -> Key:
+    return (t, 0) if type(t) is str else (t[0], len(t[1]))
+
+
+def _private_calls(goal: Any, names: set[Key]) -> Any:
+    """Point the body's calls of library predicates at their private twins."""
+    if type(goal) not in (str, Term):
+        return goal
+    key = _key(goal)
+    if key in _CONTROL_ARGS:
+        return Term(goal[0], tuple(_private_calls(g, names) for g in goal[1]))
+    if key not in names:
+        return goal
+    name = PRIVATE_PREFIX + key[0]
+    return Term(name, goal[1]) if type(goal) is Term else name
 
 
 def library_predicates() -> dict[Key, Pred]:
@@ -72,7 +113,6 @@ def library_predicates() -> dict[Key, Pred]:
         pred = preds.get(key)
         if pred is None:
             pred = preds[key] = Pred(key[0], key[1])
-            pred.system = True
             pred.owner = LIBRARY_OWNER
         pred.clauses.append(Clause(c.head, c.body_rev, c.nvars, c.group, c.source, c.name))
     return preds
