@@ -122,9 +122,11 @@ def test_python_predicate_exception_propagates_unchanged() -> None:
         yield None
 
     with pytest.raises(RuntimeError) as info:
-        kb.holds("catch(sensor(X), _, true)")
+        kb.holds("sensor(X)")  # nothing catches it: the caller gets its own exception
     assert info.value is boom
     assert any(frame.name == "sensor" for frame in info.traceback)
+    # Inside the query it is a Prolog error that catch/3 can catch (issue 10).
+    assert kb.holds("catch(sensor(X), error(python_error('RuntimeError', _), _), true)")
 
 
 def test_py_fun_and_py_pred() -> None:

@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING, Any
 
 from robocram.logic.builtin_spec import Builtin, det, nondet
 from robocram.logic.builtin_terms import list_items
+from robocram.logic.builtin_text import char_of, char_of_code, parse_number
 from robocram.logic.errors import PrologError, PrologInstantiationError, PrologTypeError
 from robocram.logic.reader import read_query
 from robocram.logic.terms import PString, Term, Var, deref, format_term, make_list
@@ -32,6 +33,10 @@ def text_of(t: Any, what: str) -> str:
     if type(t) is Var:
         raise PrologInstantiationError(f"{what}: argument is unbound; bind it to an atom")
     raise PrologTypeError("atomic", t, f"{what}: {t!r} is not an atom, string or number")
+
+
+def _char(x: Any) -> str:
+    return char_of(x, "format ~s") if type(x) is str else char_of_code(x, "format ~s")
 
 
 def _bound(t: Any) -> bool:
@@ -59,47 +64,9 @@ def _string_length(m: Engine, a: Args) -> bool:
     return m.unify(a[1], len(text_of(a[0], "string_length/2")))
 
 
-def _parse_number(text: str) -> int | float | None:
-    try:
-        return int(text)
-    except ValueError:
-        pass
-    try:
-        return float(text)
-    except ValueError:
-        return None
-
-
-def _chars_like(name: str, to_item: Any, from_items: Any, result: Any) -> Builtin:
-    def run(m: Engine, a: Args) -> bool:
-        if _bound(a[0]):
-            return m.unify(a[1], make_list([to_item(c) for c in text_of(a[0], name)]))
-        text = "".join(from_items(deref(x)) for x in list_items(a[1], name))
-        return m.unify(a[0], result(text))
-
-    return det(name, run, 2)
-
-
-def _char(x: Any) -> str:
-    return x if type(x) is str else chr(x)
-
-
-def _number_from(text: str) -> int | float:
-    value = _parse_number(text)
-    if value is None:
-        raise PrologError(f"number_codes/chars: {text!r} is not a number")
-    return value
-
-
-def _char_code(m: Engine, a: Args) -> bool:
-    if _bound(a[0]):
-        return m.unify(a[1], ord(text_of(a[0], "char_code/2")))
-    return m.unify(a[0], chr(deref(a[1])))
-
-
 def _atom_number(m: Engine, a: Args) -> bool:
     if _bound(a[0]):
-        value = _parse_number(text_of(a[0], "atom_number/2"))
+        value = parse_number(text_of(a[0], "atom_number/2"))
         return value is not None and m.unify(a[1], value)
     return m.unify(a[0], text_of(a[1], "atom_number/2"))
 
@@ -285,16 +252,9 @@ def _nl(m: Engine, a: Args) -> bool:
 
 
 BUILTINS: tuple[Builtin, ...] = (
-    _chars_like("atom_chars", lambda c: c, _char, lambda s: s),
-    _chars_like("atom_codes", ord, _char, lambda s: s),
-    _chars_like("string_chars", lambda c: c, _char, PString),
-    _chars_like("string_codes", ord, _char, PString),
-    _chars_like("number_codes", ord, _char, _number_from),
-    _chars_like("number_chars", lambda c: c, _char, _number_from),
     nondet("atom_concat", _atom_concat, 3),
     det("atom_length", _atom_length, 2),
     det("string_length", _string_length, 2),
-    det("char_code", _char_code, 2),
     det("atom_number", _atom_number, 2),
     det("atom_string", _atom_string, 2),
     det("string_concat", _string_concat, 3),

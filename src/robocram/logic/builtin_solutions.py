@@ -74,22 +74,24 @@ def _grouped(m: Engine, a: Args, to_set: bool) -> Iterator[bool]:
     pairs = collect(m, Term("-", (witness, a[0])), goal)
     if not pairs:
         return
-    groups: dict[Any, tuple[Any, list[Any]]] = {}
+    groups: dict[Any, list[tuple[Any, Any]]] = {}
     for pair in pairs:
         w, t = pair[1]
-        key = variant_key(w)
-        if key not in groups:
-            groups[key] = (w, [])
-        groups[key][1].append(t)
+        groups.setdefault(variant_key(w), []).append((w, t))
     entries = list(groups.values())
     if len(entries) > 1:
-        entries.sort(key=lambda e: order_key(e[0]))
-    for w, items in entries:
-        if to_set:
-            items = _sorted_unique(items)
+        entries.sort(key=lambda e: order_key(e[0][0]))
+    for members in entries:
         mark = len(m.trail)
-        if m.unify(witness, w) and m.unify(a[2], make_list(items)):
-            yield True
+        # ISO: every witness of the group is unified with the first, so variables that
+        # differ only by renaming across solutions become the same variable.
+        first = members[0][0]
+        if all(m.unify(w, first) for w, _ in members[1:]):
+            items = [t for _, t in members]
+            if to_set:
+                items = _sorted_unique(items)
+            if m.unify(witness, first) and m.unify(a[2], make_list(items)):
+                yield True
         m.undo_to(mark)
 
 

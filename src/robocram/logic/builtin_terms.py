@@ -91,12 +91,36 @@ def _is_list(t: Any) -> bool:
 
 def _is_ground(t: Any) -> bool:
     stack = [t]
+    seen: set[int] = set()  # a cyclic term revisits its compounds
     while stack:
         t = deref(stack.pop())
         if type(t) is Var:
             return False
-        if type(t) is Term:
+        if type(t) is Term and id(t) not in seen:
+            seen.add(id(t))
             stack.extend(t[1])
+    return True
+
+
+def is_acyclic(t: Any) -> bool:
+    """True unless following bindings from `t` leads back into a compound on the path."""
+    on_path: set[int] = set()
+    done: set[int] = set()
+    stack: list[tuple[Any, bool]] = [(t, False)]
+    while stack:
+        t, leaving = stack.pop()
+        if leaving:
+            on_path.discard(id(t))
+            done.add(id(t))
+            continue
+        t = deref(t)
+        if type(t) is not Term or id(t) in done:
+            continue
+        if id(t) in on_path:
+            return False
+        on_path.add(id(t))
+        stack.append((t, True))
+        stack.extend((arg, False) for arg in t[1])
     return True
 
 
@@ -107,9 +131,13 @@ def _functor(m: Engine, a: Args) -> bool:
     if type(t) is not Var:
         return m.unify(a[1], t) and m.unify(a[2], 0)
     name = deref(a[1])
-    arity = need_int(a[2], "functor/3")
     if type(name) is Var:
         raise PrologInstantiationError("functor/3: both the term and the name are unbound")
+    arity = need_int(a[2], "functor/3")
+    if arity < 0:
+        raise PrologDomainError("not_less_than_zero", arity, f"functor/3: arity {arity} < 0")
+    if type(name) is Term:
+        raise PrologTypeError("atomic", name, f"functor/3: {name!r} is not atomic")
     if arity == 0:
         return m.unify(t, name)
     if type(name) is not str:
@@ -120,8 +148,12 @@ def _functor(m: Engine, a: Args) -> bool:
 def _arg(m: Engine, a: Args) -> bool:
     n = need_int(a[0], "arg/3")
     t = deref(a[1])
+    if type(t) is Var:
+        raise PrologInstantiationError("arg/3: the term is unbound")
     if type(t) is not Term:
         raise PrologTypeError("compound", t, f"arg/3: {t!r} is not a compound term")
+    if n < 0:
+        raise PrologDomainError("not_less_than_zero", n, f"arg/3: position {n} < 0")
     return 1 <= n <= len(t[1]) and m.unify(a[2], t[1][n - 1])
 
 
@@ -217,6 +249,7 @@ BUILTINS: tuple[Builtin, ...] = (
     _type_test("string", lambda t: type(t) is PString),
     _type_test("is_list", lambda t: _is_list(t)),
     _type_test("ground", lambda t: _is_ground(t)),
+    _type_test("acyclic_term", is_acyclic),
     _type_test("python_object", lambda t: type(t) not in _OPAQUE_EXCLUDED or t is NONE),
     det("=", _unify, 2),
     det("\\=", _not_unify, 2),

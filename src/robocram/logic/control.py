@@ -56,6 +56,25 @@ def add_args(goal: Any, extra: tuple[Any, ...]) -> Any:
     raise PrologTypeError("callable", goal, f"call/N: {goal!r} is not a callable term")
 
 
+def callable_body(goal: Any) -> Any:
+    """Return `goal` after checking, as ISO's call/1 does, that its control tree is callable.
+
+    `call((fail, 1))` raises `type_error(callable, (fail, 1))` before running anything.
+    """
+    stack = [goal]
+    while stack:
+        g = _deref(stack.pop())
+        if type(g) is Term:
+            if g[0] in _BODY_CONTROL and len(g[1]) == 2:
+                stack.extend(g[1])
+        elif type(g) is not str and type(g) is not Var:
+            raise PrologTypeError("callable", goal, f"call/N: {goal!r} is not a callable goal")
+    return goal
+
+
+_BODY_CONTROL = frozenset([",", ";", "->", "*->"])
+
+
 def _deref(t: Any) -> Any:
     while type(t) is Var and t.ref is not None:
         t = t.ref
@@ -85,7 +104,7 @@ def run_control(
         del cps[args[0] :]
         return nxt
     if name == "call":
-        return (add_args(args[0], args[1:]), len(cps), nxt)
+        return (callable_body(add_args(args[0], args[1:])), len(cps), nxt)
     if name == "->":
         b = len(cps)
         return (args[0], b, (_cut(b), 0, (args[1], cutb, nxt)))

@@ -18,7 +18,9 @@ __all__ = [
     "PrologEvaluationError",
     "PrologExistenceError",
     "PrologInstantiationError",
+    "PrologHostError",
     "PrologPermissionError",
+    "PrologResourceError",
     "PrologSyntaxError",
     "PrologThrow",
     "PrologTypeError",
@@ -136,6 +138,30 @@ class PrologSyntaxError(PrologError):
         self.text = text
 
 
+class PrologResourceError(PrologError):
+    """A resource ran out: term depth, integer size, inferences, time (`resource_error(R)`)."""
+
+    def __init__(self, resource: str, message: str) -> None:
+        super().__init__(message, _iso(Term("resource_error", (resource,)), message))
+        self.resource = resource
+
+
+class PrologHostError(PrologError):
+    """A Python exception raised inside a built-in or a Python predicate called by `goal`.
+
+    Inside the query it is the catchable `error(python_error(Class, Message), Context)`;
+    when nothing catches it, the query re-raises `original` itself.
+    """
+
+    def __init__(self, original: Exception, goal: str) -> None:
+        kind = type(original).__name__
+        msg = f"{goal} raised {kind}: {original}"
+        formal = Term("python_error", (kind, str(original)))
+        super().__init__(msg, _iso(formal, msg))
+        self.original = original
+        self.goal = goal
+
+
 def error_from_ball(ball: Any) -> PrologError:
     """Wrap a thrown term that escaped a query in the matching Python exception."""
     if type(ball) is Term and ball[0] == "error" and len(ball[1]) == 2:
@@ -148,6 +174,7 @@ def error_from_ball(ball: Any) -> PrologError:
             "evaluation_error": PrologEvaluationError,
             "existence_error": PrologExistenceError,
             "permission_error": PrologPermissionError,
+            "resource_error": PrologResourceError,
         }
         key = formal[0] if type(formal) is Term else formal
         cls = classes.get(key) if isinstance(key, str) else None

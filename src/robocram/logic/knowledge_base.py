@@ -14,7 +14,7 @@ from typing import Any
 
 from robocram.logic.bulk import paused_gc
 from robocram.logic.convert import to_prolog, to_python
-from robocram.logic.errors import PrologError, PrologPermissionError
+from robocram.logic.errors import PrologError, PrologPermissionError, PrologResourceError
 from robocram.logic.fact_groups import LIBRARY_OWNER, GroupEdit, Groups, refuse_system
 from robocram.logic.loader import compile_clause, parse_indicator
 from robocram.logic.lru import LRUCache
@@ -252,7 +252,15 @@ class KnowledgeBase:
         self, goal: Any, regs: list[Any], shown: list[tuple[str, int]]
     ) -> Iterator[dict[str, Any]]:
         for _ in Machine(self).solve(goal):
-            yield {name: to_python(regs[i]) for name, i in shown}
+            try:
+                answer = {name: to_python(regs[i]) for name, i in shown}
+            except RecursionError as err:  # a cyclic or very deeply nested answer
+                raise PrologResourceError(
+                    "term_depth",
+                    "an answer is cyclic or nested too deeply to convert to Python values;"
+                    " return a smaller term or test it with acyclic_term/1",
+                ) from err
+            yield answer
 
     def _compile_query(self, text: str) -> tuple[Any, dict[str, int], int]:
         cached = self._queries.get(text)

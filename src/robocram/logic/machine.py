@@ -15,7 +15,9 @@ from robocram.logic.control import ALT, BARRIER, CATCH, CLAUSES, FAIL, GEN, REAC
 from robocram.logic.engine import Database
 from robocram.logic.errors import (
     PrologError,
+    PrologHostError,
     PrologInstantiationError,
+    PrologResourceError,
     PrologTypeError,
     UnknownPredicateError,
 )
@@ -58,10 +60,10 @@ class Machine:
                 yield from self._run(cps, cont, fail)
                 return
             except PrologError as err:
-                cont = self._handle(err, cps)
+                cont = self._handle(err, cps, sub)
                 fail = False
 
-    def _handle(self, err: PrologError, cps: list[list[Any]]) -> Any:
+    def _handle(self, err: PrologError, cps: list[list[Any]], sub: bool) -> Any:
         """Find the innermost active catch/3 whose catcher unifies with the ball."""
         ball = copy_resolved(err.ball)
         err.ball = ball
@@ -75,6 +77,8 @@ class Machine:
                 if unify(cp[2], ball, trail):
                     return (cp[3], len(cps), cp[4])
                 undo(trail, cp[1])
+        if isinstance(err, PrologHostError) and not sub:
+            raise err.original  # nothing caught it: the caller sees its own exception
         raise err
 
     def _run(self, cps: list[list[Any]], cont: Any, fail: bool) -> Iterator[None]:
@@ -86,62 +90,68 @@ class Machine:
         backtrack = self._backtrack
         if fail:
             cont = backtrack(cps)
-        while True:
-            while cont is None:
-                yield None
-                cont = backtrack(cps)
-            if cont is False:
-                return
-            goal, cutb, nxt = cont
-            tg = type(goal)
-            if tg is Term:
-                name = goal[0]
-                args = goal[1]
-                p = preds.get((name, len(args)))
-            elif tg is str:
-                name = goal
-                args = ()
-                p = preds.get((name, 0))
-            else:
-                cont = self._call_other(goal, len(cps), nxt)
-                continue
-            if p is None:
-                raise self.unknown(name, len(args))
-            k = p.kind
-            if k == USER:
-                if p.pyfn is not None:
-                    if not cps and trail:
-                        del trail[:]
-                    self._push_python(p, args, nxt, cps)
+        goal: Any = None
+        try:
+            while True:
+                while cont is None:
+                    yield None
                     cont = backtrack(cps)
-                    continue
-                proc = p.proc
-                if proc is not None:
-                    cont = proc(args, trail, nxt, cps)
-                    if type(cont) is not list:
-                        if cont is False:
-                            cont = backtrack(cps)
-                        continue
-                    args = cont
-                elif p.warm < WARM_CALLS:
-                    p.warm_up()
-                cont = self._call_clauses(p, args, nxt, cps)
                 if cont is False:
+                    return
+                goal, cutb, nxt = cont
+                tg = type(goal)
+                if tg is Term:
+                    name = goal[0]
+                    args = goal[1]
+                    p = preds.get((name, len(args)))
+                elif tg is str:
+                    name = goal
+                    args = ()
+                    p = preds.get((name, 0))
+                else:
+                    cont = self._call_other(goal, len(cps), nxt)
+                    continue
+                if p is None:
+                    raise self.unknown(name, len(args))
+                k = p.kind
+                if k == USER:
+                    if p.pyfn is not None:
+                        if not cps and trail:
+                            del trail[:]
+                        self._push_python(p, args, nxt, cps)
+                        cont = backtrack(cps)
+                        continue
+                    proc = p.proc
+                    if proc is not None:
+                        cont = proc(args, trail, nxt, cps)
+                        if type(cont) is not list:
+                            if cont is False:
+                                cont = backtrack(cps)
+                            continue
+                        args = cont
+                    elif p.warm < WARM_CALLS:
+                        p.warm_up()
+                    cont = self._call_clauses(p, args, nxt, cps)
+                    if cont is False:
+                        cont = backtrack(cps)
+                elif k == DET:
+                    cont = nxt if p.fn(self, args) else backtrack(cps)
+                elif k == NONDET:
+                    cps.append([GEN, len(trail), p.fn(self, args), nxt])
                     cont = backtrack(cps)
-            elif k == DET:
-                cont = nxt if p.fn(self, args) else backtrack(cps)
-            elif k == NONDET:
-                cps.append([GEN, len(trail), p.fn(self, args), nxt])
-                cont = backtrack(cps)
-            elif name == ",":
-                cont = (args[0], cutb, (args[1], cutb, nxt))
-            elif name == "!":
-                del cps[cutb:]
-                cont = nxt
-            else:
-                cont = run_control(self, name, args, cutb, nxt, cps)
-                if cont is FAIL:
-                    cont = backtrack(cps)
+                elif name == ",":
+                    cont = (args[0], cutb, (args[1], cutb, nxt))
+                elif name == "!":
+                    del cps[cutb:]
+                    cont = nxt
+                else:
+                    cont = run_control(self, name, args, cutb, nxt, cps)
+                    if cont is FAIL:
+                        cont = backtrack(cps)
+        except PrologError:
+            raise
+        except Exception as err:  # a built-in's own failure: make it a Prolog error
+            raise host_error(err, goal) from err
 
     def _call_clauses(self, p: Pred, args: Any, nxt: Any, cps: list[list[Any]]) -> Any:
         """Try the clauses of `p` that the first argument selects; False when none runs.
@@ -246,6 +256,23 @@ class Machine:
             cps.append([CLAUSES, len(trail), args, nxt, cands, 0, len(cands), p])
         assert p.pyfn is not None
         cps.append([GEN, len(trail), python_solutions(self, p, args), nxt])
+
+
+def host_error(err: Exception, goal: Any) -> PrologError:
+    """The Prolog error for a Python exception raised while running `goal`."""
+    while type(goal) is Var and goal.ref is not None:
+        goal = goal.ref
+    if type(goal) is Term:
+        where = f"{goal[0]}/{len(goal[1])}"
+    else:
+        where = f"{goal}/0" if type(goal) is str else "the engine"
+    if isinstance(err, RecursionError):
+        return PrologResourceError(
+            "term_depth", f"{where}: a term is nested too deeply for the engine ({err})"
+        )
+    if isinstance(err, MemoryError):
+        return PrologResourceError("memory", f"{where}: out of memory")
+    return PrologHostError(err, where)
 
 
 def deref1(t: Any) -> Any:

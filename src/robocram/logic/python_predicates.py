@@ -7,7 +7,12 @@ from typing import TYPE_CHECKING, Any
 
 from robocram.logic.builtin_spec import Builtin, det
 from robocram.logic.convert import to_prolog, to_python
-from robocram.logic.errors import PrologError, PrologExistenceError, PrologInstantiationError
+from robocram.logic.errors import (
+    PrologError,
+    PrologExistenceError,
+    PrologHostError,
+    PrologInstantiationError,
+)
 from robocram.logic.terms import Var, deref
 
 if TYPE_CHECKING:
@@ -22,7 +27,7 @@ def python_solutions(m: Engine, p: Pred, args: tuple[Any, ...]) -> Iterator[bool
     assert p.pyfn is not None
     py_args = [to_python(a) for a in args]
     trail = m.trail
-    for solution in p.pyfn(*py_args):
+    for solution in _guarded(p.pyfn, py_args, p.indicator):
         if solution is None:
             yield True
             continue
@@ -36,6 +41,30 @@ def python_solutions(m: Engine, p: Pred, args: tuple[Any, ...]) -> Iterator[bool
             yield True
         else:
             m.undo_to(mark)
+
+
+def _guarded(fn: Callable[..., Any], args: list[Any], where: str) -> Iterator[Any]:
+    """Yield `fn(*args)`'s solutions; a Python exception becomes a `PrologHostError`."""
+    solutions = iter(_host_call(fn, args, where))
+    while True:
+        try:
+            solution = next(solutions)
+        except StopIteration:
+            return
+        except PrologError:
+            raise
+        except Exception as err:
+            raise PrologHostError(err, where) from err
+        yield solution
+
+
+def _host_call(fn: Callable[..., Any], args: list[Any], where: str) -> Any:
+    try:
+        return fn(*args)
+    except PrologError:
+        raise
+    except Exception as err:
+        raise PrologHostError(err, where) from err
 
 
 def _resolve_callable(m: Engine, f: Any, what: str) -> Callable[..., Any]:
@@ -60,13 +89,13 @@ def _resolve_callable(m: Engine, f: Any, what: str) -> Callable[..., Any]:
 
 def _py_fun(m: Engine, args: tuple[Any, ...]) -> bool:
     fn = _resolve_callable(m, args[0], "py_fun")
-    result = fn(*[to_python(a) for a in args[1:-1]])
+    result = _host_call(fn, [to_python(a) for a in args[1:-1]], f"py_fun({args[0]!r})")
     return m.unify(args[-1], to_prolog(result))
 
 
 def _py_pred(m: Engine, args: tuple[Any, ...]) -> bool:
     fn = _resolve_callable(m, args[0], "py_pred")
-    return bool(fn(*[to_python(a) for a in args[1:]]))
+    return bool(_host_call(fn, [to_python(a) for a in args[1:]], f"py_pred({args[0]!r})"))
 
 
 BUILTINS: tuple[Builtin, ...] = (

@@ -22,6 +22,7 @@ from robocram.logic import (
     builtin_lists,
     builtin_solutions,
     builtin_terms,
+    builtin_text,
     python_predicates,
 )
 from robocram.logic.builtin_spec import Builtin
@@ -45,6 +46,7 @@ _TABLES: tuple[tuple[Builtin, ...], ...] = (
     builtin_lists.BUILTINS,
     builtin_solutions.BUILTINS,
     builtin_terms.BUILTINS,
+    builtin_text.BUILTINS,
     python_predicates.BUILTINS,
 )
 

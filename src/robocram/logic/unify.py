@@ -6,9 +6,10 @@ from typing import Any
 
 from robocram.logic.terms import PString, Term, Var, new_term
 
-__all__ = ["copy_resolved", "order_key", "undo", "unify", "variant_key"]
+__all__ = ["copy_resolved", "order_key", "undo", "unify", "unify_rational", "variant_key"]
 
 _PRIMITIVE = frozenset([str, int, float, PString])
+_FAST_STEPS = 100_000
 
 
 def unify(a: Any, b: Any, trail: list[Var]) -> bool:
@@ -16,7 +17,11 @@ def unify(a: Any, b: Any, trail: list[Var]) -> bool:
 
     >>> x = Var(); unify(Term("f", (x,)), Term("f", (1,)), []), x.ref
     (True, 1)
+
+    Cyclic (rational) terms such as `X = f(X)` take the slower `unify_rational` once a
+    pair of terms needs more than `_FAST_STEPS` compound steps or Python's stack runs out.
     """
+    steps = 0
     while True:
         while type(a) is Var:
             r = a.ref
@@ -48,9 +53,15 @@ def unify(a: Any, b: Any, trail: list[Var]) -> bool:
             n = len(aa) - 1
             if n != len(ab) - 1:
                 return False
-            for i in range(n):
-                if not unify(aa[i], ab[i], trail):
-                    return False
+            steps += 1
+            if steps > _FAST_STEPS:
+                return unify_rational(a, b, trail)
+            try:
+                for i in range(n):
+                    if not unify(aa[i], ab[i], trail):
+                        return False
+            except RecursionError:
+                return unify_rational(a, b, trail)
             a = aa[n]
             b = ab[n]
             continue
@@ -59,6 +70,41 @@ def unify(a: Any, b: Any, trail: list[Var]) -> bool:
         if ta in _PRIMITIVE or tb in _PRIMITIVE or tb is Term:
             return False
         return bool(a == b)
+
+
+def unify_rational(a: Any, b: Any, trail: list[Var]) -> bool:
+    """Unify without recursion, terminating on cyclic terms (pairs already met are equal).
+
+    >>> x, y = Var(), Var(); t = []
+    >>> unify(x, Term("f", (x,)), t) and unify(y, Term("f", (y,)), t) and unify(x, y, t)
+    True
+    """
+    seen: set[tuple[int, int]] = set()
+    stack = [(a, b)]
+    while stack:
+        a, b = stack.pop()
+        while type(a) is Var and a.ref is not None:
+            a = a.ref
+        while type(b) is Var and b.ref is not None:
+            b = b.ref
+        if a is b:
+            continue
+        if type(a) is Var:
+            a.ref = b
+            trail.append(a)
+        elif type(b) is Var:
+            b.ref = a
+            trail.append(b)
+        elif type(a) is Term and type(b) is Term:
+            if a[0] != b[0] or len(a[1]) != len(b[1]):
+                return False
+            pair = (id(a), id(b))
+            if pair not in seen:
+                seen.add(pair)
+                stack.extend(zip(a[1], b[1], strict=True))
+        elif not unify(a, b, trail):
+            return False
+    return True
 
 
 def undo(trail: list[Var], mark: int) -> None:
