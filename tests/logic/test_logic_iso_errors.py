@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+
 import pytest
 
 from robocram.logic import KnowledgeBase, PrologResourceError
@@ -86,8 +88,9 @@ def test_host_exceptions_are_catchable_and_reraised_when_uncaught() -> None:
     kb = KnowledgeBase()
 
     @kb.predicate("boom", 1)
-    def boom(x: object) -> object:
+    def boom(x: object) -> Iterator[None]:
         raise KeyError(x)
+        yield None
 
     kb.register_function("div", lambda a, b: a / b)
     answer = kb.first("catch(boom(1), error(python_error(C, _), _), true)")

@@ -69,8 +69,8 @@ def test_query_cache_is_bounded() -> None:
     for i in range(QUERY_CACHE_SIZE + 50):
         assert kb.first(f"X = {i}") == {"X": i}
     assert len(kb._queries) == QUERY_CACHE_SIZE
-    assert kb._queries.get("X = 0") is None
-    assert kb._queries.get(f"X = {QUERY_CACHE_SIZE + 49}") is not None
+    assert kb._queries.get(("string", "X = 0")) is None
+    assert kb._queries.get(("string", f"X = {QUERY_CACHE_SIZE + 49}")) is not None
 
 
 def test_generated_code_cache_is_bounded() -> None:

@@ -11,12 +11,37 @@ import math
 from collections.abc import Callable
 from typing import Any
 
-from robocram.logic.errors import PrologEvaluationError, PrologInstantiationError, PrologTypeError
+from robocram.logic.errors import (
+    PrologEvaluationError,
+    PrologInstantiationError,
+    PrologResourceError,
+    PrologTypeError,
+)
 from robocram.logic.terms import PString, Term, Var
 
-__all__ = ["BINARY_FUNCTIONS", "apply_binary", "evaluate"]
+__all__ = ["BINARY_FUNCTIONS", "MAX_INTEGER_BITS", "apply_binary", "evaluate"]
 
 Number = int | float
+
+# The largest integer an operation that can explode in one step (`**`, `^`, `<<`) may
+# produce: 2**20 bits (about 315,000 decimal digits). Bigger results raise
+# resource_error(memory) instead of allocating gigabytes. The current_prolog_flag
+# max_integer_bits reports it.
+MAX_INTEGER_BITS = 1 << 20
+
+
+def _too_big(name: str, bits: int) -> PrologResourceError:
+    return PrologResourceError(
+        "memory",
+        f"{name}: the result would have about {bits} bits, over the engine's limit of"
+        f" {MAX_INTEGER_BITS} bits (arith.MAX_INTEGER_BITS)",
+    )
+
+
+def _shift_left(a: int, b: int) -> int:
+    if b > 0 and a and a.bit_length() + b > MAX_INTEGER_BITS:
+        raise _too_big("<<", a.bit_length() + b)
+    return a << b if b >= 0 else a >> -b
 
 
 def _int_only(name: str, fn: Callable[[int, int], int]) -> Callable[[Number, Number], Number]:
@@ -45,6 +70,8 @@ def _power(a: Number, b: Number) -> Number:
     if type(a) is int and type(b) is int:
         if b < 0 and a not in (1, -1):
             raise PrologTypeError("float", a, f"{a} ^ {b}: negative integer power; use a float")
+        if b > 0 and abs(a) > 1 and (abs(a).bit_length() - 1) * b > MAX_INTEGER_BITS:
+            raise _too_big("**", (abs(a).bit_length() - 1) * b)
         return int(a**b) if b >= 0 else int(a**b)
     return float(a) ** float(b)
 
@@ -80,8 +107,8 @@ _BINARY: dict[str, Callable[[Any, Any], Number]] = {
     "atan": lambda a, b: math.atan2(a, b),
     "copysign": lambda a, b: math.copysign(a, b),
     "log": lambda a, b: math.log(b) / math.log(a),
-    ">>": _int_only(">>", lambda a, b: a >> b),
-    "<<": _int_only("<<", lambda a, b: a << b),
+    ">>": _int_only(">>", lambda a, b: a >> b if b >= 0 else _shift_left(a, -b)),
+    "<<": _int_only("<<", _shift_left),
     "/\\": _int_only("/\\", lambda a, b: a & b),
     "\\/": _int_only("\\/", lambda a, b: a | b),
     "xor": _int_only("xor", lambda a, b: a ^ b),

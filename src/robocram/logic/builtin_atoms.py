@@ -1,4 +1,4 @@
-"""Atom and string built-ins, `format/1,2,3` and term output."""
+"""Atom and string built-ins and `format/1,2,3`."""
 
 from __future__ import annotations
 
@@ -6,6 +6,7 @@ import sys
 from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
 
+from robocram.logic.bigint import int_text
 from robocram.logic.builtin_spec import Builtin, det, nondet
 from robocram.logic.builtin_terms import list_items
 from robocram.logic.builtin_text import char_of, char_of_code, parse_number
@@ -28,7 +29,9 @@ def text_of(t: Any, what: str) -> str:
         return t
     if type(t) is PString:
         return t.text
-    if type(t) in (int, float):
+    if type(t) is int:
+        return int_text(t)
+    if type(t) is float:
         return repr(t)
     if type(t) is Var:
         raise PrologInstantiationError(f"{what}: argument is unbound; bind it to an atom")
@@ -94,7 +97,7 @@ def _downcase(m: Engine, a: Args) -> bool:
 def _term_to_atom(m: Engine, a: Args) -> bool:
     if _bound(a[0]):
         return m.unify(a[1], format_term(a[0], quoted=True))
-    term, _ = read_query(text_of(a[1], "term_to_atom/2"), m.kb._ops)
+    term, _ = read_query(text_of(a[1], "term_to_atom/2"), m.kb._ops, m.kb._flags)
     return m.unify(a[0], term)
 
 
@@ -169,9 +172,9 @@ def _expand(d: str, num: str | None, take: Any, fmt: str) -> str:
         if type(value) is not int:
             raise PrologTypeError("integer", value, f"format ~d: {value!r} is not an integer")
         if num and int(num) > 0:
-            text = str(abs(value)).rjust(int(num) + 1, "0")
+            text = int_text(abs(value)).rjust(int(num) + 1, "0")
             return ("-" if value < 0 else "") + text[: -int(num)] + "." + text[-int(num) :]
-        return str(value)
+        return int_text(value)
     if d in "feg":
         value = take(d)
         if type(value) not in (int, float):
@@ -231,26 +234,6 @@ def _format(m: Engine, a: Args) -> bool:
     return True
 
 
-def _write(m: Engine, a: Args) -> bool:
-    sys.stdout.write(format_term(a[0]))
-    return True
-
-
-def _print(m: Engine, a: Args) -> bool:
-    sys.stdout.write(format_term(a[0], quoted=True))
-    return True
-
-
-def _writeln(m: Engine, a: Args) -> bool:
-    sys.stdout.write(format_term(a[0]) + "\n")
-    return True
-
-
-def _nl(m: Engine, a: Args) -> bool:
-    sys.stdout.write("\n")
-    return True
-
-
 BUILTINS: tuple[Builtin, ...] = (
     nondet("atom_concat", _atom_concat, 3),
     det("atom_length", _atom_length, 2),
@@ -264,8 +247,4 @@ BUILTINS: tuple[Builtin, ...] = (
     nondet("atomic_list_concat", _atomic_list_concat3, 3),
     det("atomic_list_concat", _atomic_list_concat2, 2),
     det("format", _format, 1, 2, 3),
-    det("write", _write, 1),
-    det("print", _print, 1),
-    det("writeln", _writeln, 1),
-    det("nl", _nl, 0),
 )

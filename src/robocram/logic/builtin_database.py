@@ -145,7 +145,53 @@ def _current_op(m: Engine, a: Args) -> bool:
     return spec is not None and m.unify(a[0], spec[0]) and m.unify(a[1], spec[1])
 
 
+def _current_predicate(m: Engine, a: Args) -> Iterator[bool]:
+    spec = deref(a[0])
+    if type(spec) is not Var and not (type(spec) is Term and spec[0] == "/" and len(spec[1]) == 2):
+        raise PrologTypeError(
+            "predicate_indicator", spec, f"current_predicate/1: {spec!r} is not Name/Arity"
+        )
+    # Visible user and library predicates with a definition; built-ins are not listed (ISO).
+    for pred in list(m.kb._preds.values()):
+        if pred.system or pred.name.startswith("$") or pred.kind != 0:
+            continue
+        if not (pred.clauses or pred.dynamic or pred.pyfn is not None):
+            continue
+        mark = len(m.trail)
+        if m.unify(spec, Term("/", (pred.name, pred.arity))):
+            yield True
+        m.undo_to(mark)
+
+
+def _abolish(m: Engine, a: Args) -> bool:
+    spec = deref(a[0])
+    if type(spec) is Var:
+        raise PrologInstantiationError("abolish/1: the predicate indicator is unbound")
+    key = parse_indicator(spec)
+    with m.kb._lock:
+        pred = m.kb._preds.get(key)
+        if pred is None:
+            return True
+        if not pred.dynamic:
+            raise PrologPermissionError(
+                "modify",
+                "static_procedure",
+                Term("/", key),
+                f"abolish/1: {pred.indicator} is static; only dynamic predicates can be abolished",
+            )
+        del m.kb._preds[key]
+    return True
+
+
+def _repeat(m: Engine, a: Args) -> Iterator[bool]:
+    while True:
+        yield True
+
+
 BUILTINS: tuple[Builtin, ...] = (
+    nondet("current_predicate", _current_predicate, 1),
+    det("abolish", _abolish, 1),
+    nondet("repeat", _repeat, 0),
     det("assert", _assertz, 1),
     det("assertz", _assertz, 1),
     det("asserta", _asserta, 1),

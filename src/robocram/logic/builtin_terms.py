@@ -229,7 +229,44 @@ def _halt(m: Engine, a: Args) -> bool:
     raise PrologDomainError("embedded", "halt", "halt/0: not allowed in an embedded knowledge base")
 
 
+def _unify_with_occurs_check(m: Engine, a: Args) -> bool:
+    mark = len(m.trail)
+    if m.unify(a[0], a[1]) and is_acyclic(a[0]):
+        return True
+    m.undo_to(mark)  # the only way plain unification differs: it built a cyclic term
+    return False
+
+
+def _subsumes_term(m: Engine, a: Args) -> bool:
+    """General subsumes Specific: they unify without binding any variable of Specific."""
+    specific_vars = _variables(a[1])
+    mark = len(m.trail)
+    try:
+        if not m.unify(a[0], a[1]):
+            return False
+        after = [deref(v) for v in specific_vars]
+        return all(type(v) is Var for v in after) and len({id(v) for v in after}) == len(after)
+    finally:
+        m.undo_to(mark)
+
+
+def _variables(t: Any) -> list[Var]:
+    found: dict[int, Var] = {}
+    stack = [t]
+    seen: set[int] = set()
+    while stack:
+        t = deref(stack.pop())
+        if type(t) is Var:
+            found.setdefault(id(t), t)
+        elif type(t) is Term and id(t) not in seen:
+            seen.add(id(t))
+            stack.extend(t[1])
+    return list(found.values())
+
+
 BUILTINS: tuple[Builtin, ...] = (
+    det("unify_with_occurs_check", _unify_with_occurs_check, 2),
+    det("subsumes_term", _subsumes_term, 2),
     det("==", _ordering(lambda c: c == 0), 2),
     det("\\==", _ordering(lambda c: c != 0), 2),
     det("@<", _ordering(lambda c: c < 0), 2),

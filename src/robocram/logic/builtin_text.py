@@ -11,6 +11,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 from typing import Any
 
+from robocram.logic.bigint import int_text
 from robocram.logic.builtin_spec import Builtin, det, nondet
 from robocram.logic.builtin_terms import need_int
 from robocram.logic.engine import Engine
@@ -99,9 +100,9 @@ def _source_text(t: Any, what: str, number: bool) -> str | None:
     if number:
         if type(t) not in (int, float):
             raise PrologTypeError("number", t, f"{what}: {t!r} is not a number")
-        return repr(t)
+        return int_text(t) if type(t) is int else repr(t)
     if type(t) in (str, int, float):
-        return t if type(t) is str else repr(t)
+        return t if type(t) is str else int_text(t) if type(t) is int else repr(t)
     if type(t) is PString:
         return t.text
     raise PrologTypeError("atom", t, f"{what}: {t!r} is not an atom")

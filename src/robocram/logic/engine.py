@@ -25,6 +25,7 @@ class Database(Protocol):
     _ops: OperatorTable
     _functions: dict[str, Callable[..., Any]]
     _lock: threading.RLock
+    _flags: dict[str, Any]
 
     def assert_clause(self, clause: Any, front: bool = False) -> None: ...
 

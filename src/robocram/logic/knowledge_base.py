@@ -12,6 +12,8 @@ import threading
 from collections.abc import Callable, Iterable, Iterator
 from typing import Any
 
+from robocram.logic.arith import MAX_INTEGER_BITS
+from robocram.logic.builtin_flags import default_flags
 from robocram.logic.bulk import paused_gc
 from robocram.logic.convert import to_prolog, to_python
 from robocram.logic.errors import PrologError, PrologPermissionError, PrologResourceError
@@ -48,9 +50,12 @@ class KnowledgeBase:
         self._preds.update(library_predicates())
         self._ops = OperatorTable()
         self._functions: dict[str, Callable[..., Any]] = {}
+        self._flags: dict[str, Any] = default_flags(MAX_INTEGER_BITS)
         self._groups: Groups = {}
         self._lock = threading.RLock()
-        self._queries: LRUCache[str, tuple[Any, dict[str, int], int]] = LRUCache(QUERY_CACHE_SIZE)
+        self._queries: LRUCache[tuple[str, str], tuple[Any, dict[str, int], int]] = LRUCache(
+            QUERY_CACHE_SIZE
+        )
 
     def consult(self, text: str, group: str | None = None, extendable: Iterable[Any] = ()) -> None:
         """Load Prolog text as fact group `group` (replacing it); None appends to 'user'.
@@ -63,7 +68,7 @@ class KnowledgeBase:
         directives: list[Any] = []
         dynamic: list[Key] = []
         with paused_gc():
-            for term, _ in read_terms(text, self._ops):
+            for term, _ in read_terms(text, self._ops, self._flags):
                 if type(term) is Term and term[0] == ":-" and len(term[1]) == 1:
                     if not self._declaration(deref(term[1][0]), dynamic):
                         directives.append(term[1][0])
@@ -90,7 +95,9 @@ class KnowledgeBase:
         compiled: list[tuple[Key, Any]] = []
         for clause in clauses:
             if isinstance(clause, str):
-                compiled.extend(compile_clause(t, name) for t, _ in read_terms(clause, self._ops))
+                compiled.extend(
+                    compile_clause(t, name) for t, _ in read_terms(clause, self._ops, self._flags)
+                )
             else:
                 compiled.append(compile_clause(to_prolog(clause), name))
         with self._lock:
@@ -117,7 +124,7 @@ class KnowledgeBase:
             or len(goal[1]) != 1
             or goal[0] not in ("dynamic", "discontiguous")
         ):
-            if type(goal) is Term and goal[0] == "op" and len(goal[1]) == 3:
+            if type(goal) is Term and (goal[0], len(goal[1])) in _READER_DIRECTIVES:
                 self.holds_term(goal)
                 return True
             return False
@@ -177,7 +184,11 @@ class KnowledgeBase:
 
     def retract(self, clause: Any) -> bool:
         """Remove the first clause unifying with `clause`; return whether one was removed."""
-        term = read_query(clause, self._ops)[0] if isinstance(clause, str) else to_prolog(clause)
+        term = (
+            read_query(clause, self._ops, self._flags)[0]
+            if isinstance(clause, str)
+            else to_prolog(clause)
+        )
         return self.holds_term(Term("retract", (term,)))
 
     def _clause_terms(self, clause: Any) -> list[Any]:
@@ -263,15 +274,16 @@ class KnowledgeBase:
             yield answer
 
     def _compile_query(self, text: str) -> tuple[Any, dict[str, int], int]:
-        cached = self._queries.get(text)
+        key = (self._flags["double_quotes"], text)  # the flag changes what "..." reads as
+        cached = self._queries.get(key)
         if cached is None:
-            term, varmap = read_query(text, self._ops)
+            term, varmap = read_query(text, self._ops, self._flags)
             slots: dict[Var, Slot] = {}
             for var in varmap.values():
                 slots[var] = Slot(len(slots))
             template = compile_term(term, slots)
             cached = (template, {name: slots[v].i for name, v in varmap.items()}, len(slots))
-            self._queries.put(text, cached)
+            self._queries.put(key, cached)
         return cached
 
     def holds(self, text: str, **bindings: Any) -> bool:
@@ -288,6 +300,10 @@ class KnowledgeBase:
 
     def __repr__(self) -> str:
         return f"KnowledgeBase({len(self.predicates())} predicates, groups={sorted(self._groups)})"
+
+
+# Directives that change how the rest of the text reads: run as soon as they are read.
+_READER_DIRECTIVES = frozenset([("op", 3), ("set_prolog_flag", 2)])
 
 
 def _comma_items(t: Any) -> list[Any]:

@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
+from robocram.logic.bigint import text_int
 from robocram.logic.errors import PrologSyntaxError
 
 __all__ = ["Token", "line_col", "tokenize"]
@@ -144,7 +145,7 @@ def _read_number(text: str, i: int) -> tuple[int | float, int]:
             while j < n and text[j].isdigit():
                 j += 1
     literal = text[i:j].replace("_", "")
-    return (float(literal) if is_float else int(literal)), j
+    return (float(literal) if is_float else text_int(literal)), j
 
 
 def tokenize(text: str) -> list[Token]:

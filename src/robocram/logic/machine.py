@@ -11,6 +11,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import Any
 
+from robocram.logic.builtin_flags import warn_unknown
 from robocram.logic.control import ALT, BARRIER, CATCH, CLAUSES, FAIL, GEN, REACT, run_control
 from robocram.logic.engine import Database
 from robocram.logic.errors import (
@@ -48,6 +49,14 @@ class Machine:
     def unknown(self, name: str, arity: int) -> UnknownPredicateError:
         """Build the error for a call to an undefined predicate."""
         return UnknownPredicateError(name, arity, self.kb.similar_predicates(name, arity))
+
+    def _undefined(self, name: str, arity: int) -> None:
+        """Raise for a call to an undefined predicate, unless the `unknown` flag says fail."""
+        mode = self.kb._flags["unknown"]
+        if mode == "error":
+            raise self.unknown(name, arity)
+        if mode == "warning":
+            warn_unknown(name, arity)
 
     def solve(self, goal: Any, sub: bool = False) -> Iterator[None]:
         """Yield once per solution of `goal`, with its bindings in place while suspended."""
@@ -112,7 +121,9 @@ class Machine:
                     cont = self._call_other(goal, len(cps), nxt)
                     continue
                 if p is None:
-                    raise self.unknown(name, len(args))
+                    self._undefined(name, len(args))
+                    cont = backtrack(cps)
+                    continue
                 k = p.kind
                 if k == USER:
                     if p.pyfn is not None:

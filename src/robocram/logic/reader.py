@@ -17,9 +17,10 @@ _STOP = frozenset([")", "]", "}", ",", "|"])
 class _Parser:
     """Parse a token list; `varmap` maps variable names of the current clause to Vars."""
 
-    def __init__(self, text: str, ops: OperatorTable) -> None:
+    def __init__(self, text: str, ops: OperatorTable, double_quotes: str = "string") -> None:
         self.text = text
         self.ops = ops
+        self.double_quotes = double_quotes
         self.tokens = tokenize(text)
         self.i = 0
         self.varmap: dict[str, Var] = {}
@@ -80,8 +81,10 @@ class _Parser:
             if var is None:
                 var = self.varmap[tok.value] = Var()
             return var, 0
-        if kind in ("str", "bq"):
-            return PString(tok.value), 0
+        if kind == "str":
+            return self.quoted_text(tok.value), 0
+        if kind == "bq":
+            return make_list([ord(c) for c in tok.value]), 0
         if kind == "punct":
             return self.punct(tok)
         if kind in ("atom", "qatom"):
@@ -89,6 +92,17 @@ class _Parser:
         if kind == "end":
             raise self.fail(tok, "unexpected end of clause")
         raise self.fail(tok, "unexpected end of text")
+
+    def quoted_text(self, text: str) -> Any:
+        """A double-quoted text as the `double_quotes` flag says: string, codes, chars, atom."""
+        mode = self.double_quotes
+        if mode == "codes":
+            return make_list([ord(c) for c in text])
+        if mode == "chars":
+            return make_list(list(text))
+        if mode == "atom":
+            return text
+        return PString(text)
 
     def punct(self, tok: Token) -> tuple[Any, int]:
         if tok.value == "(":
@@ -166,19 +180,28 @@ class _Parser:
         return term
 
 
-def read_terms(text: str, ops: OperatorTable | None = None) -> Iterator[tuple[Any, dict[str, Var]]]:
+def read_terms(
+    text: str, ops: OperatorTable | None = None, flags: dict[str, Any] | None = None
+) -> Iterator[tuple[Any, dict[str, Var]]]:
     """Yield each clause of `text` with its variable names.
+
+    The parser reads `flags` (a knowledge base's Prolog flags) before each clause, so a
+    `:- set_prolog_flag(double_quotes, codes).` directive applies to the clauses after it.
 
     >>> [t for t, _ in read_terms("a. b :- c.")]
     ['a', b :- c]
     """
     parser = _Parser(text, ops or OperatorTable())
     while parser.peek().kind != "eof":
+        if flags is not None:
+            parser.double_quotes = flags.get("double_quotes", "string")
         term = parser.clause()
         yield term, parser.varmap
 
 
-def read_query(text: str, ops: OperatorTable | None = None) -> tuple[Any, dict[str, Var]]:
+def read_query(
+    text: str, ops: OperatorTable | None = None, flags: dict[str, Any] | None = None
+) -> tuple[Any, dict[str, Var]]:
     """Read one term (the final '.' is optional) and its variables by name.
 
     >>> read_query("X = f(Y)")[0].name
@@ -187,7 +210,8 @@ def read_query(text: str, ops: OperatorTable | None = None) -> tuple[Any, dict[s
     stripped = text.rstrip()
     if not stripped.endswith(".") or stripped.endswith(".."):
         text = text + " ."
-    parser = _Parser(text, ops or OperatorTable())
+    quotes = "string" if flags is None else flags.get("double_quotes", "string")
+    parser = _Parser(text, ops or OperatorTable(), quotes)
     if parser.peek().kind == "eof":
         raise parser.fail(parser.peek(), "empty query")
     term = parser.clause()

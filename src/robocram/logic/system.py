@@ -19,10 +19,12 @@ from robocram.logic import (
     builtin_arith,
     builtin_atoms,
     builtin_database,
+    builtin_flags,
     builtin_lists,
     builtin_solutions,
     builtin_terms,
     builtin_text,
+    builtin_write,
     python_predicates,
 )
 from robocram.logic.builtin_spec import Builtin
@@ -43,10 +45,12 @@ _TABLES: tuple[tuple[Builtin, ...], ...] = (
     builtin_arith.BUILTINS,
     builtin_atoms.BUILTINS,
     builtin_database.BUILTINS,
+    builtin_flags.BUILTINS,
     builtin_lists.BUILTINS,
     builtin_solutions.BUILTINS,
     builtin_terms.BUILTINS,
     builtin_text.BUILTINS,
+    builtin_write.BUILTINS,
     python_predicates.BUILTINS,
 )
 

@@ -11,6 +11,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from typing import Any
 
+from robocram.logic.bigint import int_text
 from robocram.logic.operators import OperatorTable
 
 __all__ = ["NIL", "PString", "Term", "Var", "deref", "format_term", "make_list", "quote_atom"]
@@ -135,40 +136,74 @@ def quote_atom(name: str) -> str:
     return f"'{escaped}'"
 
 
-def format_term(term: Any, quoted: bool = False, max_prec: int = 1200) -> str:
+def format_term(
+    term: Any,
+    quoted: bool = False,
+    max_prec: int = 1200,
+    *,
+    ignore_ops: bool = False,
+    numbervars: bool = False,
+) -> str:
     """Render a term as text; `quoted` quotes atoms and strings so they read back.
+
+    `ignore_ops` writes operators in functional notation; `numbervars` writes
+    `'$VAR'(N)` as a variable name (A, B, ..., Z, A1, ...).
 
     >>> format_term(Term("+", (1, Term("*", (2, "x")))))
     '1+2*x'
+    >>> format_term(Term("+", (1, Term("$VAR", (27,)))), ignore_ops=True, numbervars=True)
+    '+(1,B1)'
     """
+    return _write(term, (quoted, ignore_ops, numbervars), max_prec)
+
+
+Style = tuple[bool, bool, bool]  # quoted, ignore_ops, numbervars
+
+
+def _write(term: Any, style: Style, max_prec: int) -> str:
     while type(term) is Var and term.ref is not None:
         term = term.ref
     t = type(term)
+    quoted = style[0]
     if t is str:
         return quote_atom(term) if quoted else term
-    if t is int or t is float:
-        return repr(term)
-    if t is Var:
+    if t is int:
+        return int_text(term)
+    if t is float or t is Var:
         return repr(term)
     if t is PString:
         return '"' + term.text.replace('"', '\\"') + '"' if quoted else term.text
     if t is Term:
-        return _compound(term, quoted, max_prec)
+        return _compound(term, style, max_prec)
     return repr(term)
 
 
-def _compound(term: Term, quoted: bool, max_prec: int) -> str:
+def _var_name(n: int) -> str:
+    return chr(ord("A") + n % 26) + (str(n // 26) if n >= 26 else "")
+
+
+def _compound(term: Term, style: Style, max_prec: int) -> str:
     name, args = term[0], term[1]
+    quoted, ignore_ops, numbervars = style
     if name == "." and len(args) == 2:
-        return _list(term, quoted)
+        return _list(term, style)
+    if numbervars and name == "$VAR" and len(args) == 1:
+        n = args[0]
+        while type(n) is Var and n.ref is not None:
+            n = n.ref
+        if type(n) is int and n >= 0:
+            return _var_name(n)
+    if ignore_ops:
+        inner = ",".join(_write(a, style, 999) for a in args)
+        return f"{quote_atom(name) if quoted else name}({inner})"
     if name == "{}" and len(args) == 1:
-        return "{" + format_term(args[0], quoted) + "}"
+        return "{" + _write(args[0], style, 1200) + "}"
     if len(args) == 2 and name in _OPS.infix:
         prec, kind = _OPS.infix[name]
         lp = prec if kind == "yfx" else prec - 1
         rp = prec if kind == "xfy" else prec - 1
-        left = format_term(args[0], quoted, lp)
-        right = format_term(args[1], quoted, rp)
+        left = _write(args[0], style, lp)
+        right = _write(args[1], style, rp)
         op = quote_atom(name) if quoted and name != "," else name
         sep = " " if name[0].isalpha() or name in ("->", ":-", "*->", "-->") else ""
         text = f"{left}{sep}{op}{sep}{right}"
@@ -181,22 +216,22 @@ def _compound(term: Term, quoted: bool, max_prec: int) -> str:
     ):
         prec, kind = _OPS.prefix[name]
         ap = prec if kind == "fy" else prec - 1
-        arg = format_term(args[0], quoted, ap)
+        arg = _write(args[0], style, ap)
         op = quote_atom(name) if quoted else name
         sep = " " if name[0].isalpha() or (arg and arg[0] in _SYMBOLS) else ""
         text = f"{op}{sep}{arg}"
         return f"({text})" if prec > max_prec else text
-    inner = ",".join(format_term(a, quoted, 999) for a in args)
+    inner = ",".join(_write(a, style, 999) for a in args)
     return f"{quote_atom(name) if quoted else name}({inner})"
 
 
-def _list(term: Any, quoted: bool) -> str:
+def _list(term: Any, style: Style) -> str:
     items: list[str] = []
     while type(term) is Term and term[0] == "." and len(term[1]) == 2:
-        items.append(format_term(term[1][0], quoted, 999))
+        items.append(_write(term[1][0], style, 999))
         term = term[1][1]
         while type(term) is Var and term.ref is not None:
             term = term.ref
     if term == NIL and type(term) is str:
         return "[" + ",".join(items) + "]"
-    return "[" + ",".join(items) + "|" + format_term(term, quoted, 999) + "]"
+    return "[" + ",".join(items) + "|" + _write(term, style, 999) + "]"

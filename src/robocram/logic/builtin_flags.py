@@ -1,0 +1,99 @@
+"""Prolog flags: set_prolog_flag/2 and current_prolog_flag/2, per knowledge base.
+
+`double_quotes` (codes, chars, atom, string) decides what "text" reads as, from the next
+clause or query on; `unknown` (error, fail, warning) what a call to an undefined
+predicate does. `occurs_check` is always false: the engine unifies without it (use
+unify_with_occurs_check/2), so asking for more is refused rather than ignored.
+"""
+
+from __future__ import annotations
+
+import sys
+from collections.abc import Iterator
+from typing import Any
+
+from robocram.logic.builtin_spec import Builtin, det, nondet
+from robocram.logic.engine import Engine
+from robocram.logic.errors import (
+    PrologDomainError,
+    PrologInstantiationError,
+    PrologPermissionError,
+    PrologTypeError,
+)
+from robocram.logic.terms import Term, Var, deref
+
+__all__ = ["BUILTINS", "default_flags"]
+
+Args = tuple[Any, ...]
+
+# flag -> the values it may be set to (empty: read-only)
+_CHANGEABLE: dict[str, tuple[str, ...]] = {
+    "double_quotes": ("codes", "chars", "atom", "string"),
+    "unknown": ("error", "fail", "warning"),
+    "occurs_check": ("false",),
+    "debug": ("false", "true"),
+}
+_READ_ONLY: dict[str, Any] = {
+    "bounded": "false",
+    "max_arity": "unbounded",
+    "integer_rounding_function": "toward_zero",
+    "char_conversion": "false",
+    "max_integer_bits": 0,  # set by default_flags
+}
+
+
+def default_flags(max_integer_bits: int) -> dict[str, Any]:
+    """A new knowledge base's flags (SWI-Prolog's defaults for the changeable ones)."""
+    flags: dict[str, Any] = {"double_quotes": "string", "unknown": "error"}
+    flags.update(occurs_check="false", debug="false")
+    flags.update(_READ_ONLY, max_integer_bits=max_integer_bits)
+    return flags
+
+
+def _set_flag(m: Engine, a: Args) -> bool:
+    flag, value = deref(a[0]), deref(a[1])
+    if type(flag) is Var or type(value) is Var:
+        raise PrologInstantiationError("set_prolog_flag/2: the flag and its value must be bound")
+    if type(flag) is not str:
+        raise PrologTypeError("atom", flag, f"set_prolog_flag/2: {flag!r} is not an atom")
+    if flag in _READ_ONLY:
+        raise PrologPermissionError(
+            "modify", "flag", flag, f"set_prolog_flag/2: flag {flag} is read-only"
+        )
+    allowed = _CHANGEABLE.get(flag)
+    if allowed is None:
+        known = ", ".join(sorted([*_CHANGEABLE, *_READ_ONLY]))
+        raise PrologDomainError(
+            "prolog_flag", flag, f"set_prolog_flag/2: no flag {flag!r} (known: {known})"
+        )
+    if value not in allowed:
+        raise PrologDomainError(
+            "flag_value",
+            Term("+", (flag, value)),
+            f"set_prolog_flag/2: {flag} may be {', '.join(allowed)}, not {value!r}",
+        )
+    with m.kb._lock:
+        m.kb._flags[flag] = value
+    return True
+
+
+def _current_flag(m: Engine, a: Args) -> Iterator[bool]:
+    flag = deref(a[0])
+    if type(flag) is not Var and type(flag) is not str:
+        raise PrologTypeError("atom", flag, f"current_prolog_flag/2: {flag!r} is not an atom")
+    for name, value in list(m.kb._flags.items()):
+        mark = len(m.trail)
+        if m.unify(a[0], name) and m.unify(a[1], value):
+            yield True
+        m.undo_to(mark)
+
+
+def warn_unknown(name: str, arity: int) -> None:
+    """What `unknown = warning` prints before failing."""
+    sys.stderr.write(f"Warning: unknown procedure {name}/{arity}\n")
+
+
+BUILTINS: tuple[Builtin, ...] = (
+    det("set_prolog_flag", _set_flag, 2),
+    nondet("current_prolog_flag", _current_flag, 2),
+)
