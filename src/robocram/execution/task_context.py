@@ -16,6 +16,7 @@ from typing import Any
 
 from robocram.execution.failures import NotInTopLevel
 from robocram.execution.task import Task, TaskStatus, TaskStopped
+from robocram.logic.limits import checking_stop
 
 _CURRENT_TASK: contextvars.ContextVar[Task | None] = contextvars.ContextVar(
     "robocram_current_task", default=None
@@ -37,10 +38,11 @@ def require_task(form: str) -> Task:
 
 @contextmanager
 def binding_task(task: Task) -> Iterator[Task]:
-    """Make ``task`` the current task inside the block."""
+    """Make ``task`` the current task inside the block (queries in it check its stop)."""
     token = _CURRENT_TASK.set(task)
     try:
-        yield task
+        with checking_stop(checkpoint):
+            yield task
     finally:
         _CURRENT_TASK.reset(token)
 

@@ -23,8 +23,14 @@ from typing import Any, TypeVar, overload
 
 from robocram.execution.par import raise_failure_of
 from robocram.execution.task import Task, TaskStatus, TaskStopped
-from robocram.execution.task_context import _CURRENT_TASK, binding_task, current_task
+from robocram.execution.task_context import (
+    _CURRENT_TASK,
+    binding_task,
+    checkpoint,
+    current_task,
+)
 from robocram.execution.task_tree import TaskTree
+from robocram.logic.limits import checking_stop
 
 T = TypeVar("T")
 
@@ -36,6 +42,7 @@ class TopLevel:
         self.name = name
         self._task: Task | None = None
         self._token: Any = None
+        self._stop_check: Any = None
 
     @property
     def task(self) -> Task:
@@ -73,6 +80,8 @@ class TopLevel:
         task = self._task = self._new_root()
         task.begin()
         self._token = _CURRENT_TASK.set(task)
+        self._stop_check = checking_stop(checkpoint)  # a looping query stops with the task
+        self._stop_check.__enter__()
         return self
 
     def __exit__(
@@ -81,6 +90,7 @@ class TopLevel:
         exc: BaseException | None,
         traceback: TracebackType | None,
     ) -> None:
+        self._stop_check.__exit__(None, None, None)
         _CURRENT_TASK.reset(self._token)
         self._token = None
         task = self.task

@@ -3,6 +3,7 @@
 from robocram.logic.context import current_kb, using_kb
 from robocram.logic.errors import (
     FactGroupError,
+    InferenceLimitExceeded,
     PrologDomainError,
     PrologError,
     PrologEvaluationError,
@@ -14,6 +15,7 @@ from robocram.logic.errors import (
     PrologSyntaxError,
     PrologThrow,
     PrologTypeError,
+    TimeLimitExceeded,
     UnknownPredicateError,
 )
 from robocram.logic.knowledge_base import KnowledgeBase
@@ -21,6 +23,7 @@ from robocram.logic.terms import Term, Var
 
 __all__ = [
     "FactGroupError",
+    "InferenceLimitExceeded",
     "KnowledgeBase",
     "PrologDomainError",
     "PrologError",
@@ -34,6 +37,7 @@ __all__ = [
     "PrologThrow",
     "PrologTypeError",
     "Term",
+    "TimeLimitExceeded",
     "UnknownPredicateError",
     "Var",
     "current_kb",

@@ -13,6 +13,7 @@ from robocram.logic.terms import Term, format_term
 
 __all__ = [
     "FactGroupError",
+    "InferenceLimitExceeded",
     "PrologDomainError",
     "PrologError",
     "PrologEvaluationError",
@@ -24,6 +25,7 @@ __all__ = [
     "PrologSyntaxError",
     "PrologThrow",
     "PrologTypeError",
+    "TimeLimitExceeded",
     "UnknownPredicateError",
     "error_from_ball",
 ]
@@ -144,6 +146,24 @@ class PrologResourceError(PrologError):
     def __init__(self, resource: str, message: str) -> None:
         super().__init__(message, _iso(Term("resource_error", (resource,)), message))
         self.resource = resource
+
+
+class InferenceLimitExceeded(PrologResourceError):
+    """A query ran more inferences than its `max_inferences`."""
+
+    def __init__(self, limit: int) -> None:
+        super().__init__(
+            "inferences", f"query exceeded its limit of {limit} inferences (max_inferences)"
+        )
+        self.limit = limit
+
+
+class TimeLimitExceeded(PrologResourceError):
+    """A query ran longer than its `time_limit` [s]."""
+
+    def __init__(self, limit: float) -> None:
+        super().__init__("time", f"query exceeded its time limit of {limit} s (time_limit)")
+        self.limit = limit
 
 
 class PrologHostError(PrologError):

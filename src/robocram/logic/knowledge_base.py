@@ -18,6 +18,7 @@ from robocram.logic.bulk import paused_gc
 from robocram.logic.convert import to_prolog, to_python
 from robocram.logic.errors import PrologError, PrologPermissionError, PrologResourceError
 from robocram.logic.fact_groups import LIBRARY_OWNER, GroupEdit, Groups, refuse_system
+from robocram.logic.limits import Budget, QueryStopped
 from robocram.logic.loader import compile_clause, parse_indicator
 from robocram.logic.lru import LRUCache
 from robocram.logic.machine import Machine
@@ -244,8 +245,22 @@ class KnowledgeBase:
             + sorted(set(near), key=lambda s: s.split("/")[0] not in close[:1])[:3]
         )
 
-    def query(self, text: str, **bindings: Any) -> Iterator[dict[str, Any]]:
-        """Lazily yield one dict per answer, mapping the query's free variable names to values."""
+    def query(
+        self,
+        text: str,
+        *,
+        max_inferences: int | None = None,
+        time_limit: float | None = None,
+        **bindings: Any,
+    ) -> Iterator[dict[str, Any]]:
+        """Lazily yield one dict per answer, mapping the query's free variable names to values.
+
+        `max_inferences` and `time_limit` [s, counted from the first answer asked for] stop
+        a runaway query with InferenceLimitExceeded / TimeLimitExceeded (catchable in the
+        query as resource_error(inferences) / resource_error(time)).
+        """
+        limits = (max_inferences, time_limit)
+        Budget(*limits)  # check the limits now, not at the first answer
         template, names, nslots = self._compile_query(text)
         regs: list[Any] = [None] * nslots
         for name, value in bindings.items():
@@ -257,12 +272,23 @@ class KnowledgeBase:
             regs[names[name]] = to_prolog(value)
         goal = build(template, regs)
         shown = [(n, i) for n, i in names.items() if n not in bindings and not n.startswith("_")]
-        return self._answers(goal, regs, shown)
+        return self._answers(goal, regs, shown, limits)
 
     def _answers(
-        self, goal: Any, regs: list[Any], shown: list[tuple[str, int]]
+        self,
+        goal: Any,
+        regs: list[Any],
+        shown: list[tuple[str, int]],
+        limits: tuple[int | None, float | None],
     ) -> Iterator[dict[str, Any]]:
-        for _ in Machine(self).solve(goal):
+        solutions = Machine(self, Budget(*limits)).solve(goal)
+        while True:
+            try:
+                next(solutions)
+            except StopIteration:
+                return
+            except QueryStopped as stop:  # the stop hook (a task's checkpoint) said stop
+                raise stop.original from None
             try:
                 answer = {name: to_python(regs[i]) for name, i in shown}
             except RecursionError as err:  # a cyclic or very deeply nested answer
@@ -296,7 +322,10 @@ class KnowledgeBase:
 
     def holds_term(self, goal: Any) -> bool:
         """Run an engine term as a goal; True when it has a solution."""
-        return next(Machine(self).solve(to_prolog(goal)), False) is None
+        try:
+            return next(Machine(self).solve(to_prolog(goal)), False) is None
+        except QueryStopped as stop:
+            raise stop.original from None
 
     def __repr__(self) -> str:
         return f"KnowledgeBase({len(self.predicates())} predicates, groups={sorted(self._groups)})"

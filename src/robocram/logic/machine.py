@@ -22,6 +22,7 @@ from robocram.logic.errors import (
     PrologTypeError,
     UnknownPredicateError,
 )
+from robocram.logic.limits import CHECK_EVERY, Budget
 from robocram.logic.predicate import DET, NONDET, USER, WARM_CALLS, Pred
 from robocram.logic.python_predicates import python_solutions
 from robocram.logic.terms import Term, Var, new_term
@@ -33,10 +34,11 @@ __all__ = ["Machine"]
 class Machine:
     """Per-query solver state: the trail shared by nested solves, and the knowledge base."""
 
-    def __init__(self, kb: Database) -> None:
+    def __init__(self, kb: Database, budget: Budget | None = None) -> None:
         self.kb = kb
         self.preds = kb._preds
         self.trail: list[Var] = []
+        self.budget = budget if budget is not None else Budget(None, None)
 
     def unify(self, a: Any, b: Any) -> bool:
         """Unify two terms, trailing the bindings (for built-ins)."""
@@ -100,6 +102,8 @@ class Machine:
         if fail:
             cont = backtrack(cps)
         goal: Any = None
+        ticks = 0
+        spend = self.budget.spend
         try:
             while True:
                 while cont is None:
@@ -107,6 +111,10 @@ class Machine:
                     cont = backtrack(cps)
                 if cont is False:
                     return
+                ticks += 1
+                if ticks >= CHECK_EVERY:
+                    spend(ticks)
+                    ticks = 0
                 goal, cutb, nxt = cont
                 tg = type(goal)
                 if tg is Term:
@@ -139,6 +147,9 @@ class Machine:
                             if cont is False:
                                 cont = backtrack(cps)
                             continue
+                        if len(cont) != len(args):  # the procedure looped CHECK_EVERY times
+                            cont.pop()
+                            spend(CHECK_EVERY)
                         args = cont
                     elif p.warm < WARM_CALLS:
                         p.warm_up()
@@ -171,9 +182,14 @@ class Machine:
         list: loop here instead of going round the goal dispatch.
         """
         trail = self.trail
+        loops = 0
         while True:
             if not cps and trail:
                 del trail[:]
+            loops += 1
+            if loops >= CHECK_EVERY:  # a deterministic self-recursion loops here
+                self.budget.spend(loops)
+                loops = 0
             cands = p.clauses
             if len(cands) > 1 and args:
                 first = args[0]

@@ -8,7 +8,9 @@ code inline, and runs a call to the predicate itself (the recursive clause of `a
 
     proc(args, trail, nxt, cps) -> continuation, False (no clause matches or it fails),
                                    or the argument list when the switch argument is
-                                   unbound (the machine then tries the clauses in order)
+                                   unbound (the machine then tries the clauses in order);
+                                   the list has one extra item after CHECK_EVERY loops,
+                                   so that the machine counts them
 
 Skipping the clauses that cannot match changes no answer: they would fail in their head.
 """
@@ -19,6 +21,7 @@ from collections.abc import Callable, Sequence
 from typing import Any
 
 from robocram.logic.codegen import ClauseCode, ClauseWriter, make_factory
+from robocram.logic.limits import CHECK_EVERY
 from robocram.logic.template import Tmpl
 from robocram.logic.terms import Term
 
@@ -56,8 +59,14 @@ def _write_switch(clauses: list[ClauseCode], position: int) -> ClauseWriter:
     arity = len(clauses[0].head)
     a = f"a{position}"
     writer.emit("".join(f"a{i}, " for i in range(arity)) + "= args", 1)
+    writer.emit("steps = 0", 1)
     writer.emit("while True:", 1)
     writer.emit("if not cps and trail: del trail[:]", 2)
+    # Hand a long self-recursion back to the machine now and then, so that it counts the
+    # inferences (limits, stop requests); the machine then runs the clauses itself.
+    writer.emit("steps += 1", 2)
+    bail = "".join(f"a{i}, " for i in range(arity)) + "None"
+    writer.emit(f"if steps >= {CHECK_EVERY}: return [{bail}]", 2)
     writer.emit("cb = len(cps)", 2)
     writer.emit(f"while type({a}) is Var and {a}.ref is not None: {a} = {a}.ref", 2)
     writer.emit(f"ta = type({a})", 2)
