@@ -64,23 +64,32 @@ def _retract(m: Engine, a: Args) -> Iterator[bool]:
     pred = _pred_of(m, head, "retract/1")
     if pred is None:
         return
-    for clause in list(pred.clauses):
+    for clause in _candidates(pred, head):
+        if clause.erased:
+            continue  # retracted meanwhile (by this or another query)
         h, b = _stored(clause)
         mark = len(m.trail)
         if m.unify(head, h) and m.unify(body, b):
+            if not pred.dynamic:
+                raise PrologPermissionError(
+                    "modify",
+                    "static_procedure",
+                    Term("/", (pred.name, pred.arity)),
+                    f"retract/1: {pred.indicator} is static; declare it dynamic",
+                )
             with m.kb._lock:
-                if clause in pred.clauses:
-                    if not pred.dynamic:
-                        raise PrologPermissionError(
-                            "modify",
-                            "static_procedure",
-                            Term("/", (pred.name, pred.arity)),
-                            f"retract/1: {pred.indicator} is static; declare it dynamic",
-                        )
-                    pred.set_clauses([c for c in pred.clauses if c is not clause])
+                if not clause.erased:
+                    pred.erase(clause)
                     yield True
                     continue
         m.undo_to(mark)
+
+
+def _candidates(pred: Pred, head: Any) -> list[Any]:
+    """The live clauses that can match `head` by its first argument (a snapshot)."""
+    if type(head) is Term and head[1]:
+        return pred.live(list(pred.candidates(deref(head[1][0]))))
+    return pred.live(list(pred.clauses))
 
 
 def _retractall(m: Engine, a: Args) -> bool:
@@ -90,7 +99,7 @@ def _retractall(m: Engine, a: Args) -> bool:
         m.kb.declare_dynamic((head, 0) if type(head) is str else (head[0], len(head[1])))
         return True
     keep = []
-    for clause in pred.clauses:
+    for clause in pred.live(pred.clauses):
         mark = len(m.trail)
         if not m.unify(head, _stored(clause)[0]):
             keep.append(clause)
@@ -105,7 +114,7 @@ def _clause(m: Engine, a: Args) -> Iterator[bool]:
     pred = _pred_of(m, head, "clause/2")
     if pred is None:
         return
-    for clause in list(pred.clauses):
+    for clause in _candidates(pred, head):
         h, b = _stored(clause)
         mark = len(m.trail)
         if m.unify(head, h) and m.unify(a[1], b):

@@ -24,7 +24,18 @@ class Clause:
     that facts looked up once (a big fact table) never pay for code generation.
     """
 
-    __slots__ = ("body_rev", "calls", "group", "head", "key", "name", "nvars", "run", "source")
+    __slots__ = (
+        "body_rev",
+        "calls",
+        "erased",
+        "group",
+        "head",
+        "key",
+        "name",
+        "nvars",
+        "run",
+        "source",
+    )
 
     def __init__(
         self,
@@ -44,6 +55,7 @@ class Clause:
         self.key = index_key_of_template(head[0]) if head else None
         self.run: Any = None
         self.calls = 0
+        self.erased = False  # retracted; calls that started before still see it
 
     def prepare(self) -> Any:
         """Return the function to run this clause with: interpreted first, then compiled."""

@@ -95,7 +95,7 @@ class GroupEdit:
             pred = self.writable(key)
             if pred is None:
                 continue
-            pred.set_clauses([c for c in pred.clauses if c.group != name])
+            pred.set_clauses([c for c in pred.live(pred.clauses) if c.group != name])
             if pred.owner == name:
                 others = [c.group for c in pred.clauses if c.group is not None]
                 pred.owner = others[0] if others else None

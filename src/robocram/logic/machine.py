@@ -202,6 +202,8 @@ class Machine:
                     cands = index.get((first[0], len(first[1])), p.varclauses)
                 elif type(first) is not Var:
                     cands = p.candidates(first)
+            if p.erased:
+                cands = p.live(cands)
             n = len(cands)
             if n == 0:
                 return False
@@ -279,6 +281,7 @@ class Machine:
         """Try the Python predicate's solutions first, then the ordinary clauses."""
         trail = self.trail
         cands = p.clauses if not args or len(p.clauses) < 2 else p.candidates(deref1(args[0]))
+        cands = p.live(cands)
         if cands:
             cps.append([CLAUSES, len(trail), args, nxt, cands, 0, len(cands), p])
         assert p.pyfn is not None

@@ -24,6 +24,7 @@ class Pred:
         "arity",
         "clauses",
         "dynamic",
+        "erased",
         "extendable",
         "fn",
         "index",
@@ -52,6 +53,7 @@ class Pred:
         self.extendable: set[str] = set()
         self.proc: Any = None
         self.warm = 0
+        self.erased = 0  # retracted clauses still in `clauses` (dropped in batches)
 
     def warm_up(self) -> None:
         """Count a call; on the third, compile the switching procedure if it qualifies."""
@@ -62,7 +64,7 @@ class Pred:
     def copy(self) -> Pred:
         """A new predicate with the same definition (its own clause list and no code)."""
         twin = Pred(self.name, self.arity, self.kind, self.fn)
-        twin.clauses = list(self.clauses)
+        twin.clauses = self.live(self.clauses)
         twin.pyfn = self.pyfn
         twin.dynamic = self.dynamic
         twin.owner = self.owner
@@ -74,9 +76,25 @@ class Pred:
         """The `name/arity` text."""
         return f"{self.name}/{self.arity}"
 
+    def live(self, clauses: list[Clause]) -> list[Clause]:
+        """`clauses` without the retracted ones (the same list when none is retracted)."""
+        return [c for c in clauses if not c.erased] if self.erased else clauses
+
+    def erase(self, clause: Clause) -> None:
+        """Retract `clause` in O(1) amortised: mark it; drop marked ones in batches.
+
+        Calls already running hold their own list of candidates (taken when they
+        started), so they still see the clause: ISO's logical update view.
+        """
+        clause.erased = True
+        self.erased += 1
+        if self.erased > 8 and 2 * self.erased > len(self.clauses):
+            self.set_clauses([c for c in self.clauses if not c.erased])
+
     def set_clauses(self, clauses: list[Clause]) -> None:
         """Replace all clauses (a new list, so running queries keep their snapshot)."""
         self.clauses = clauses
+        self.erased = 0
         self.index = None
         self.proc = None
         self.warm = 0
