@@ -10,7 +10,12 @@ from robocram.logic.bigint import int_text
 from robocram.logic.builtin_spec import Builtin, det, nondet
 from robocram.logic.builtin_terms import list_items
 from robocram.logic.builtin_text import char_of, char_of_code, parse_number
-from robocram.logic.errors import PrologError, PrologInstantiationError, PrologTypeError
+from robocram.logic.errors import (
+    PrologDomainError,
+    PrologError,
+    PrologInstantiationError,
+    PrologTypeError,
+)
 from robocram.logic.reader import read_query
 from robocram.logic.terms import PString, Term, Var, deref, format_term, make_list
 
@@ -60,7 +65,17 @@ def _atom_concat(m: Engine, a: Args) -> Iterator[bool]:
 
 
 def _atom_length(m: Engine, a: Args) -> bool:
-    return m.unify(a[1], len(text_of(a[0], "atom_length/2")))
+    t = deref(a[0])
+    if type(t) is Term:
+        raise PrologTypeError("atom", t, f"atom_length/2: {t!r} is not an atom")
+    text = text_of(t, "atom_length/2")
+    n = deref(a[1])
+    if type(n) is not Var:
+        if type(n) is not int:
+            raise PrologTypeError("integer", n, f"atom_length/2: {n!r} is not an integer")
+        if n < 0:
+            raise PrologDomainError("not_less_than_zero", n, f"atom_length/2: {n} < 0")
+    return m.unify(n, len(text))
 
 
 def _string_length(m: Engine, a: Args) -> bool:
