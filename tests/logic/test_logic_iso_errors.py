@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 import pytest
 
-from robocram.logic import KnowledgeBase, PrologResourceError
+from robocram.logic import KnowledgeBase, PrologResourceError, Term
 from robocram.logic.terms import format_term
 
 # goal -> the formal error term ISO specifies (caught with catch/3)
@@ -101,3 +101,19 @@ def test_host_exceptions_are_catchable_and_reraised_when_uncaught() -> None:
         kb.first("boom(2)")
     with pytest.raises(ZeroDivisionError):
         kb.first("findall(R, py_fun(div, 1, 0, R), _)")
+
+
+def test_deep_terms_copy_and_other_limits_are_resource_errors() -> None:
+    kb = KnowledgeBase()
+    kb.consult(
+        "nest(0, z) :- !.\nnest(N, f(T)) :- M is N - 1, nest(M, T).\n"
+        "depth(z, 0).\ndepth(f(T), N) :- depth(T, M), N is M + 1."
+    )
+    deep = "nest(5000, _T), nest(5000, _T2)"
+    # copy_term and findall copy a term of any depth.
+    assert kb.first(f"{deep}, copy_term(_T, _C), findall(_T, true, [_F]), depth(_F, N)") == {
+        "N": 5000
+    }
+    # What still recurses in Python ends in a catchable resource error, never a crash.
+    answer = kb.first(f"{deep}, catch(compare(_, _T, _T2), error(E, _), true)")
+    assert answer == {"E": Term("resource_error", ("term_depth",))}

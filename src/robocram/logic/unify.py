@@ -114,9 +114,19 @@ def undo(trail: list[Var], mark: int) -> None:
 
 
 def copy_resolved(term: Any, mapping: dict[Var, Var] | None = None) -> Any:
-    """Copy a term with bindings applied and fresh variables for unbound ones."""
+    """Copy a term with bindings applied and fresh variables for unbound ones.
+
+    Terms nested deeper than Python's stack allows are copied by `_copy_deep` instead.
+    """
     if mapping is None:
         mapping = {}
+    try:
+        return _copy(term, mapping)
+    except RecursionError:
+        return _copy_deep(term, mapping)
+
+
+def _copy(term: Any, mapping: dict[Var, Var]) -> Any:
     while type(term) is Var:
         if term.ref is None:
             fresh = mapping.get(term)
@@ -129,15 +139,42 @@ def copy_resolved(term: Any, mapping: dict[Var, Var] | None = None) -> Any:
     if term[0] == "." and len(term[1]) == 2:
         items = []
         while type(term) is Term and term[0] == "." and len(term[1]) == 2:
-            items.append(copy_resolved(term[1][0], mapping))
+            items.append(_copy(term[1][0], mapping))
             term = term[1][1]
             while type(term) is Var and term.ref is not None:
                 term = term.ref
-        tail = copy_resolved(term, mapping)
+        tail = _copy(term, mapping)
         for item in reversed(items):
             tail = new_term(Term, (".", (item, tail)))
         return tail
-    return new_term(Term, (term[0], tuple([copy_resolved(a, mapping) for a in term[1]])))
+    return new_term(Term, (term[0], tuple([_copy(a, mapping) for a in term[1]])))
+
+
+def _copy_deep(term: Any, mapping: dict[Var, Var]) -> Any:
+    """`copy_resolved` with an explicit stack: any depth (a cyclic term never ends)."""
+    out: list[Any] = []
+    stack: list[tuple[bool, Any]] = [(False, term)]
+    while stack:
+        built, t = stack.pop()
+        if built:  # all arguments of compound t are on `out`: assemble it
+            n = len(t[1])
+            args = tuple(out[len(out) - n :])
+            del out[len(out) - n :]
+            out.append(new_term(Term, (t[0], args)))
+            continue
+        while type(t) is Var and t.ref is not None:
+            t = t.ref
+        if type(t) is Var:
+            fresh = mapping.get(t)
+            if fresh is None:
+                fresh = mapping[t] = Var()
+            out.append(fresh)
+        elif type(t) is Term:
+            stack.append((True, t))
+            stack.extend((False, a) for a in reversed(t[1]))
+        else:
+            out.append(t)
+    return out[0]
 
 
 def order_key(term: Any) -> tuple[Any, ...]:
