@@ -69,14 +69,10 @@ def char_of(x: Any, what: str) -> str:
 
 def char_of_code(x: Any, what: str) -> str:
     """The character of a code list element (ISO errors otherwise)."""
-    x = deref(x)
-    if type(x) is Var:
-        raise PrologInstantiationError(f"{what}: a list element is unbound")
-    if type(x) is not int:
-        raise PrologTypeError("integer", x, f"{what}: {x!r} is not a character code")
-    if not 0 <= x <= _MAX_CODE:
-        raise _representation(x)
-    return chr(x)
+    code = need_int(x, what)
+    if not 0 <= code <= _MAX_CODE:
+        raise _representation(code)
+    return chr(code)
 
 
 def text_items(t: Any, what: str, item: Callable[[Any, str], str]) -> str | None:
