@@ -201,7 +201,15 @@ class Machine:
                         index = p.build_index()
                     cands = index.get((first[0], len(first[1])), p.varclauses)
                 elif type(first) is not Var:
-                    cands = p.candidates(first)
+                    index = p.index
+                    if index is None:
+                        index = p.build_index()
+                    if index:  # some clause has a constant first argument
+                        t = type(first)
+                        if t is int or t is str:
+                            cands = index.get(first, p.varclauses)
+                        else:
+                            cands = p.candidates(first)
             if p.erased:
                 cands = p.live(cands)
             n = len(cands)
