@@ -2,7 +2,8 @@
 
 Prints naive reverse of 30 elements (LIPS), 8-queens all solutions (s), a first-argument
 lookup in 100,000 facts (µs per query) and a million-deep recursion (s, peak MiB), with
-our/SWI ratios when `swipl` is installed (benchmarks/setup_swipl.sh installs it).
+our/SWI ratios when `swipl` is installed (benchmarks/setup_swipl.sh installs it). Times
+are CPU seconds on both sides (SWI's statistics(cputime)), so a loaded machine skews less.
 Usage: python benchmarks/logic_bench.py [--nrev-runs N] [--depth N]
 """
 
@@ -50,19 +51,19 @@ def ours(nrev_runs: int, depth: int) -> dict[str, float]:
     kb.consult(PROGRAM)
     kb.consult(FACTS, group="facts")
     res: dict[str, float] = {}
-    t = time.perf_counter()
+    t = time.process_time()
     kb.holds("nrev_loop(N)", N=nrev_runs)
-    res["nrev_lips"] = nrev_runs * NREV_LI / (time.perf_counter() - t)
-    t = time.perf_counter()
+    res["nrev_lips"] = nrev_runs * NREV_LI / (time.process_time() - t)
+    t = time.process_time()
     n = kb.first("findall(Q, queens(8, Q), L), length(L, N)")["N"]  # type: ignore[index]
-    res["queens_s"] = time.perf_counter() - t
+    res["queens_s"] = time.process_time() - t
     assert n == 92, n
-    t = time.perf_counter()
+    t = time.process_time()
     kb.holds("lookup_loop(N)", N=LOOKUPS)
-    res["lookup_us"] = (time.perf_counter() - t) / LOOKUPS * 1e6
-    t = time.perf_counter()
+    res["lookup_us"] = (time.process_time() - t) / LOOKUPS * 1e6
+    t = time.process_time()
     kb.holds("count(N)", N=depth)
-    res["deep_s"] = time.perf_counter() - t
+    res["deep_s"] = time.process_time() - t
     tracemalloc.start()
     kb.holds("count(N)", N=depth)
     res["deep_mib"] = tracemalloc.get_traced_memory()[1] / 2**20
