@@ -117,3 +117,15 @@ def test_deep_terms_copy_and_other_limits_are_resource_errors() -> None:
     # What still recurses in Python ends in a catchable resource error, never a crash.
     answer = kb.first(f"{deep}, catch(compare(_, _T, _T2), error(E, _), true)")
     assert answer == {"E": Term("resource_error", ("term_depth",))}
+
+
+def test_deep_answers_convert_and_cyclic_ones_raise() -> None:
+    kb = KnowledgeBase()
+    kb.consult("nest(0, z) :- !.\nnest(N, f(T)) :- M is N - 1, nest(M, T).")
+    term = kb.first("nest(3000, T)")["T"]  # type: ignore[index]
+    depth = 0
+    while isinstance(term, Term):
+        term, depth = term.args[0], depth + 1
+    assert (depth, term) == (3000, "z")
+    with pytest.raises(PrologResourceError):
+        kb.first("X = f(X, Y), Y = g(X)")

@@ -14,7 +14,7 @@ from robocram.logic.errors import (
     error_from_ball,
 )
 from robocram.logic.terms import NIL, PString, Term, Var, deref, make_list
-from robocram.logic.unify import copy_resolved, order_key
+from robocram.logic.unify import copy_resolved, is_acyclic, order_key
 
 if TYPE_CHECKING:
     from robocram.logic.engine import Engine
@@ -99,28 +99,6 @@ def _is_ground(t: Any) -> bool:
         if type(t) is Term and id(t) not in seen:
             seen.add(id(t))
             stack.extend(t[1])
-    return True
-
-
-def is_acyclic(t: Any) -> bool:
-    """True unless following bindings from `t` leads back into a compound on the path."""
-    on_path: set[int] = set()
-    done: set[int] = set()
-    stack: list[tuple[Any, bool]] = [(t, False)]
-    while stack:
-        t, leaving = stack.pop()
-        if leaving:
-            on_path.discard(id(t))
-            done.add(id(t))
-            continue
-        t = deref(t)
-        if type(t) is not Term or id(t) in done:
-            continue
-        if id(t) in on_path:
-            return False
-        on_path.add(id(t))
-        stack.append((t, True))
-        stack.extend((arg, False) for arg in t[1])
     return True
 
 

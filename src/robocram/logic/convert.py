@@ -10,6 +10,7 @@ from __future__ import annotations
 from typing import Any
 
 from robocram.logic.terms import NIL, PString, Term, Var, new_term
+from robocram.logic.unify import is_acyclic
 
 __all__ = ["NONE", "to_prolog", "to_python"]
 
@@ -58,9 +59,49 @@ def to_prolog(value: Any) -> Any:
 def to_python(term: Any) -> Any:
     """Convert an engine term (following bindings) to a Python value.
 
+    Terms nested deeper than Python's stack allows are converted by `_to_python_deep`.
+
     >>> to_python(to_prolog([1, [2, "x"]]))
     [1, [2, 'x']]
     """
+    try:
+        return _to_python(term)
+    except RecursionError:
+        if not is_acyclic(term):
+            raise  # a cyclic term has no finite Python value
+        return _to_python_deep(term)
+
+
+def _to_python_deep(term: Any) -> Any:
+    """`to_python` with an explicit stack, for an acyclic term of any depth."""
+    out: list[Any] = []
+    stack: list[tuple[bool, Any]] = [(False, term)]
+    while stack:
+        built, t = stack.pop()
+        if built:
+            n = len(t[1])
+            args = out[len(out) - n :]
+            del out[len(out) - n :]
+            out.append(_assemble(t[0], args))
+            continue
+        while type(t) is Var and t.ref is not None:
+            t = t.ref
+        if type(t) is Term:
+            stack.append((True, t))
+            stack.extend((False, a) for a in reversed(t[1]))
+        else:
+            out.append(_to_python(t))
+    return out[0]
+
+
+def _assemble(name: str, args: list[Any]) -> Any:
+    """A converted compound: `'.'(H, T)` with a Python list tail becomes a list."""
+    if name == "." and len(args) == 2 and type(args[1]) is list:
+        return [args[0], *args[1]]
+    return Term(name, tuple(args))
+
+
+def _to_python(term: Any) -> Any:
     while type(term) is Var:
         if term.ref is None:
             return term
@@ -70,17 +111,17 @@ def to_python(term: Any) -> Any:
         if term[0] == "." and len(term[1]) == 2:
             items = []
             while type(term) is Term and term[0] == "." and len(term[1]) == 2:
-                items.append(to_python(term[1][0]))
+                items.append(_to_python(term[1][0]))
                 term = term[1][1]
                 while type(term) is Var and term.ref is not None:
                     term = term.ref
             if term == NIL:
                 return items
-            tail = to_python(term)
+            tail = _to_python(term)
             for item in reversed(items):
                 tail = Term(".", (item, tail))
             return tail
-        return Term(term[0], tuple([to_python(a) for a in term[1]]))
+        return Term(term[0], tuple([_to_python(a) for a in term[1]]))
     if t is PString:
         return term.text
     if term is NONE:

@@ -4,9 +4,17 @@ from __future__ import annotations
 
 from typing import Any
 
-from robocram.logic.terms import PString, Term, Var, new_term
+from robocram.logic.terms import PString, Term, Var, deref, new_term
 
-__all__ = ["copy_resolved", "order_key", "undo", "unify", "unify_rational", "variant_key"]
+__all__ = [
+    "copy_resolved",
+    "is_acyclic",
+    "order_key",
+    "undo",
+    "unify",
+    "unify_rational",
+    "variant_key",
+]
 
 _PRIMITIVE = frozenset([str, int, float, PString])
 _FAST_STEPS = 100_000
@@ -104,6 +112,28 @@ def unify_rational(a: Any, b: Any, trail: list[Var]) -> bool:
                 stack.extend(zip(a[1], b[1], strict=True))
         elif not unify(a, b, trail):
             return False
+    return True
+
+
+def is_acyclic(t: Any) -> bool:
+    """True unless following bindings from `t` leads back into a compound on the path."""
+    on_path: set[int] = set()
+    done: set[int] = set()
+    stack: list[tuple[Any, bool]] = [(t, False)]
+    while stack:
+        t, leaving = stack.pop()
+        if leaving:
+            on_path.discard(id(t))
+            done.add(id(t))
+            continue
+        t = deref(t)
+        if type(t) is not Term or id(t) in done:
+            continue
+        if id(t) in on_path:
+            return False
+        on_path.add(id(t))
+        stack.append((t, True))
+        stack.extend((arg, False) for arg in t[1])
     return True
 
 
