@@ -16,8 +16,9 @@ import numpy as np
 from robocram.designators import ObjectDesignator, a, an
 from robocram.execution import perform
 from robocram.execution.failures import ManipulationPoseUnreachable
-from robocram.logic import UnknownPredicateError, current_kb
+from robocram.logic import current_kb
 from robocram.plans.errors import PlanSetupError
+from robocram.plans.robot_facts import current_robot
 from robocram.tf import Pose, PoseStamped, transform_pose
 from robocram.tf import quaternion as quat
 
@@ -37,20 +38,6 @@ class PickResult:
     grasp: PoseStamped
     lifted: PoseStamped
     detected: ObjectDesignator
-
-
-def _robot_facts() -> dict[str, object]:
-    hint = (
-        "pick_up found no robot/1 with robot_base_frame/2 in the current knowledge base; "
-        "run it inside an environment such as simulated_robot(world, 'pr2')"
-    )
-    try:
-        answer = current_kb().first("robot(R), robot_base_frame(R, Base)")
-    except UnknownPredicateError as err:
-        raise PlanSetupError(hint) from err
-    if answer is None:
-        raise PlanSetupError(hint)
-    return answer
 
 
 def _raise_torso(robot: str) -> None:
@@ -126,7 +113,7 @@ def _shifted(pose: PoseStamped, dz: float) -> PoseStamped:
 
 def pick_up(look_target: PoseStamped, object_type: str = "mug") -> PickResult:
     """Look, raise the torso, open, detect, grasp from above, grip and lift an object."""
-    robot = str(_robot_facts()["R"])
+    robot = current_robot()
     arms = _park_arms(robot)
     perform(a.motion(type="looking", target=a.location(pose=look_target)))
     _raise_torso(robot)
