@@ -76,3 +76,20 @@ def test_a_drawer_out_of_reach_fails_and_leaves_everything_as_it_was(
     assert caught.value.action == "opening"
     assert world.joint_states("kitchen")[f"{DRAWER}_joint"] == 0.0
     assert world.joint_states(robot.name) == pytest.approx(arm_before, abs=1e-9)
+
+
+def test_boxy_opens_the_same_drawer_with_the_same_call() -> None:
+    scene = kitchen_scene("boxy")
+    world = scene.world
+    desc = world.robot(scene.robot).description
+    world.set_joint_states(
+        scene.robot, {j: v for a in desc.arms.values() for j, v in a.parking.items()}
+    )
+    handle_x = world.link_pose("kitchen", f"{DRAWER}_handle").position[0]
+    world.set_pose(scene.robot, Pose((handle_x - 0.3, 1.0, 0.0), FACING_NORTH))
+    bowl_y = world.pose("bowl-1").position[1]
+    robot = ProjectedRobot.of(world, scene.robot)
+    move_part(robot, "right", "kitchen", f"{DRAWER}_joint", f"{DRAWER}_handle", 0.3)
+    assert world.joint_states("kitchen")[f"{DRAWER}_joint"] == pytest.approx(0.3, abs=0.01)
+    assert world.pose("bowl-1").position[1] == pytest.approx(bowl_y - 0.3, abs=0.01)
+    world.close()
