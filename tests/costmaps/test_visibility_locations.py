@@ -82,3 +82,12 @@ def test_a_wall_between_removes_the_poses_behind_it(world: World) -> None:
         poses = list(itertools.islice(locs.poses(_visible_for_boxy()), 10))
     assert len(poses) == 10
     assert not any(_in_shadow(p.position[0], p.position[1]) for p in poses)
+
+
+def test_same_seed_same_poses(world: World) -> None:
+    def first_five(seed: int) -> list[tuple[float, float, float]]:
+        poses = CostmapLocations(world, seed=seed).poses(_visible_for_boxy())
+        return [p.position for p in itertools.islice(poses, 5)]
+
+    assert first_five(11) == first_five(11)
+    assert first_five(11) != first_five(12)

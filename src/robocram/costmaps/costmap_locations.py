@@ -13,6 +13,7 @@ import itertools
 import math
 from collections import Counter
 from collections.abc import Iterator
+from contextlib import nullcontext
 from dataclasses import dataclass, field
 from typing import Any, Literal, TypeVar
 
@@ -26,7 +27,7 @@ from robocram.costmaps.grid import CostmapGrid
 from robocram.costmaps.location_keys import LocationPlan, install_location_keys, plan_location
 from robocram.costmaps.reach_reasoning import install_reach_predicates
 from robocram.costmaps.reachability_map import ReachabilityMaps
-from robocram.costmaps.validators import BUILTIN_VALIDATORS, Validator
+from robocram.costmaps.validators import BUILTIN_VALIDATORS, Validator, parked
 from robocram.designators import LocationResolver
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
@@ -76,9 +77,9 @@ class CostmapLocations:
         """The layers and validators the rules give ``designator``."""
         return plan_location(self.world.kb, designator)
 
-    def query(self, designator: Any) -> LocationQuery:
+    def query(self, designator: Any, plan: LocationPlan | None = None) -> LocationQuery:
         """The grid and robot the designator's costmap is built for."""
-        plan = self.plan(designator)
+        plan = plan or self.plan(designator)
         robot = self._robot(designator, plan)
         resolution = designator.get("resolution", self.resolution)
         size = designator.get("size", self.size)
@@ -97,13 +98,14 @@ class CostmapLocations:
         plan = self.plan(designator)
         if plan.empty:
             return
-        query = self.query(designator)
+        query = self.query(designator, plan)
         layers = self._costmap(query, plan, lazy=True)
         validators = [(name, self._validator(name)) for name in plan.validators]
         rejected: Counter[str] = Counter()
         accepted = in_a_row = 0
         for pose in self._candidates(query, layers):
-            culprit = next((name for name, check in validators if not check(query, pose)), None)
+            with parked(self.world, query.robot) if query.robot else nullcontext():
+                culprit = next((n for n, check in validators if not check(query, pose)), None)
             if culprit is None:
                 accepted, in_a_row = accepted + 1, 0
                 yield pose

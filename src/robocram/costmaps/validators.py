@@ -50,6 +50,9 @@ def parked(world: World, robot: RobotObject) -> Iterator[None]:
         for joint, value in arm.parking.items()
     }
     before = world.joint_states(robot)
+    if all(abs(before[j] - v) < 1e-9 for j, v in parking.items()):
+        yield  # already parked (an enclosing block parked them): nothing to set or undo
+        return
     world.set_joint_states(robot, parking)
     try:
         yield
