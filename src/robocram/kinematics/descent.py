@@ -33,7 +33,7 @@ class IKSettings:
     damping: float = 1e-4  # constant part of the damping
     error_damping: float = 0.01  # weight of e^T e in the damping
     table_starts: int = 4  # descents from the nearest table samples before random ones
-    fruitless_descents: int = 6  # stalls in a row without a 1 % lower minimum end the search
+    fruitless_descents: int = 8  # stalls in a row without a 1 % lower minimum end the search
 
 
 @dataclass
