@@ -24,6 +24,7 @@ ALLOWED: dict[str, set[str]] = {
     "turtlesim": {"execution", "designators", "logic", "tf"},
     "plans": {"execution", "designators", "logic", "tf"},
     "traces": {"world", "execution", "designators", "robots", "logic", "tf"},
+    "viewer": {"traces", "world", "execution", "designators", "robots", "logic", "tf"},
 }
 
 

@@ -8,12 +8,15 @@ unreadable URDF, a port in use, a missing optional package).
 from __future__ import annotations
 
 import argparse
+import contextlib
 import datetime
 import os
 import sys
+import time
 import warnings
 from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
+from typing import Any
 
 from robocram.execution import PlanFailure, TaskSnapshot
 from robocram.robots import DescriptionError, MissingMeshWarning, RobotModel, load_description
@@ -31,6 +34,13 @@ from robocram.traces.mcap_export import export_mcap
 
 EXIT_OK, EXIT_FAILED, EXIT_USAGE, EXIT_INPUT = 0, 1, 2, 3
 
+try:
+    from robocram.viewer.errors import ViewerError as _ViewerError
+except ImportError:  # the viewer extra is not installed; its commands say so
+
+    class _ViewerError(Exception):  # type: ignore[no-redef]
+        """Stands in for robocram.viewer's root error."""
+
 
 class CliInputError(Exception):
     """Input the command cannot work with; the message says what to do instead."""
@@ -41,7 +51,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     try:
         return int(args.handler(args))
-    except (TraceError, DescriptionError, CliInputError) as err:
+    except (TraceError, DescriptionError, CliInputError, _ViewerError) as err:
         print(f"robocram: error: {err}", file=sys.stderr)
         return EXIT_INPUT
 
@@ -61,6 +71,7 @@ def _parser() -> argparse.ArgumentParser:
     )
     demo.set_defaults(handler=_demo)
     _add_runs_commands(commands)
+    _add_viewer_commands(commands)
     check = commands.add_parser("check-robot", help="read a URDF (or built-in robot) and report")
     check.add_argument("urdf", help="a URDF file, or a built-in robot name such as pr2")
     check.set_defaults(handler=_check_robot)
@@ -87,6 +98,79 @@ def _add_runs_commands(commands: argparse._SubParsersAction[argparse.ArgumentPar
     export.add_argument("--run", type=int, help="run id (default: the last run)")
     export.add_argument("--mcap", type=Path, required=True, help="the MCAP file to write")
     export.set_defaults(handler=_runs_export)
+
+
+def _add_viewer_commands(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    view = commands.add_parser("view", help="live demo: watch a pick-up in the browser viewer")
+    view.add_argument("--robot", default="pr2", help="built-in robot (pr2, hsrb, boxy)")
+    replay = commands.add_parser("replay", help="a stored run in the browser viewer")
+    replay.add_argument("db", type=Path, help="trace database (SQLite)")
+    replay.add_argument("--run", type=int, help="run id (default: the last run)")
+    for command, handler in ((view, _view), (replay, _replay)):
+        command.add_argument(
+            "--host", default="127.0.0.1", help="address to bind (default: %(default)s)"
+        )
+        command.add_argument("--port", type=int, default=8080, help="port (default: %(default)s)")
+        command.add_argument(
+            "--screenshot", type=Path, help="save a PNG from headless Chromium, exit"
+        )
+        command.add_argument("--seconds", type=float, help="serve this long [s], then exit")
+        command.set_defaults(handler=handler)
+
+
+def _view(args: argparse.Namespace) -> int:
+    from robocram.execution import listening
+    from robocram.plans import pick_up
+    from robocram.projection import simulated_robot
+    from robocram.scenes import tabletop_scene
+
+    viewer_module = _viewer_module()
+    scene = tabletop_scene(args.robot)
+    try:
+        with viewer_module.Viewer(scene.world, args.host, args.port, "robocram view") as viewer:
+            print(f"viewer at {viewer.url}", flush=True)
+            feed = viewer_module.LiveFeed(viewer, scene.world)
+            try:
+                with listening(feed), simulated_robot(scene.world, scene.robot, name="pick-mug"):
+                    pick_up(scene.look_target)
+            except PlanFailure as failure:
+                print(f"the plan failed: {type(failure).__name__}: {failure}", file=sys.stderr)
+            return _serve(viewer, args)
+    finally:
+        scene.world.close()
+
+
+def _replay(args: argparse.Namespace) -> int:
+    viewer_module = _viewer_module()
+    with _open(args.db) as db:
+        run = _last_run(db, args.run)
+        viewer = viewer_module.replay_viewer(db, run, args.host, args.port)
+    with viewer:
+        print(f"run {run} at {viewer.url}", flush=True)
+        return _serve(viewer, args)
+
+
+def _viewer_module() -> Any:
+    try:
+        import robocram.viewer as viewer_module
+    except ImportError as err:
+        raise CliInputError(
+            f"the viewer needs {err.name!r}: pip install 'robocram[viewer]'"
+        ) from err
+    return viewer_module
+
+
+def _serve(viewer: Any, args: argparse.Namespace) -> int:
+    if args.screenshot is not None:
+        from robocram.viewer.page_picture import take_picture
+
+        take_picture(viewer, args.screenshot)
+        print(f"wrote {args.screenshot}")
+        return EXIT_OK
+    print("serving; press Ctrl-C to stop", flush=True)
+    with contextlib.suppress(KeyboardInterrupt):
+        time.sleep(args.seconds if args.seconds is not None else 10**9)
+    return EXIT_OK
 
 
 def _open(path: Path) -> TraceDatabase:

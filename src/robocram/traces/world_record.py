@@ -145,6 +145,7 @@ def _body_recipe(obj: Any) -> dict[str, Any]:
         recipe["mesh"]["color"] = spec.color
     elif isinstance(spec, UrdfSpec):
         recipe["urdf"] = {"path": str(spec.path), "fixed_base": spec.fixed_base}
+        recipe["urdf"] |= {"scale": spec.scale, "mass": spec.mass}
     return recipe
 
 
@@ -166,5 +167,6 @@ def build_scene(scene: str, world: World | None = None) -> World:
             )
         elif "urdf" in recipe:
             u = recipe["urdf"]
-            world.add_object(name, kind, UrdfSpec(Path(u["path"]), u["fixed_base"]))
+            urdf = UrdfSpec(Path(u["path"]), u["fixed_base"], u["scale"], u["mass"])
+            world.add_object(name, kind, urdf)
     return world

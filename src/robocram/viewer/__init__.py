@@ -1,0 +1,26 @@
+"""The browser viewer: a run's 3-D world and task tree in one page, live or replayed.
+
+Needs the ``viewer`` extra (viser). ``Viewer(world)`` serves on 127.0.0.1:8080;
+``with listening(LiveFeed(viewer, world)):`` feeds it from a running plan;
+``replay_viewer(db, run)`` shows a stored run with a slider over its world states.
+"""
+
+from robocram.viewer.errors import NoWorld, PortInUse, ViewerError, ViewerUnavailable
+from robocram.viewer.live_listener import LiveFeed
+from robocram.viewer.timeline import Moment, Timeline
+from robocram.viewer.viewer import DEFAULT_HOST, DEFAULT_PORT, Viewer, check_port, replay_viewer
+
+__all__ = [
+    "DEFAULT_HOST",
+    "DEFAULT_PORT",
+    "LiveFeed",
+    "Moment",
+    "NoWorld",
+    "PortInUse",
+    "Timeline",
+    "Viewer",
+    "ViewerError",
+    "ViewerUnavailable",
+    "check_port",
+    "replay_viewer",
+]

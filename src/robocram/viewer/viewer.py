@@ -1,0 +1,147 @@
+"""The browser viewer: the 3-D world and the task tree of a run in one page, live or replayed.
+
+Built on viser (three.js in the browser, a Python server pushing scene updates over a
+websocket), made for robotics: meshes, frames and GUI controls without our own JavaScript.
+The viewer draws its own copy of the world, so scrubbing back never disturbs a running
+plan; it binds 127.0.0.1 unless another host is asked for explicitly.
+"""
+
+from __future__ import annotations
+
+import errno
+import socket
+import threading
+from typing import Any
+
+import viser
+
+from robocram.execution import TaskSnapshot
+from robocram.traces import TraceDatabase, build_scene, require_run, task_tree
+from robocram.viewer.errors import NoWorld, PortInUse
+from robocram.viewer.task_panel import TaskPanel
+from robocram.viewer.timeline import Moment, Timeline
+from robocram.viewer.world_view import WorldView
+from robocram.world import World
+
+DEFAULT_HOST = "127.0.0.1"
+DEFAULT_PORT = 8080
+
+
+def check_port(host: str, port: int) -> None:
+    """Raise PortInUse if ``host:port`` cannot be bound now."""
+    with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as probe:
+        try:
+            probe.bind((host, port))
+        except OSError as err:
+            if err.errno in (errno.EADDRINUSE, errno.EACCES):
+                raise PortInUse(host, port) from err
+            raise
+
+
+class Viewer:
+    """A viser server showing ``world`` (drawn from a private copy) and a task tree."""
+
+    def __init__(
+        self,
+        world: World | None,
+        host: str = DEFAULT_HOST,
+        port: int = DEFAULT_PORT,
+        title: str = "robocram",
+    ) -> None:
+        if world is None:
+            raise NoWorld()
+        check_port(host, port)
+        self.server = viser.ViserServer(host=host, port=port, label=title, verbose=False)
+        self.server.scene.set_up_direction("+z")
+        self.display = world.copy()
+        self.view = WorldView(self.server, self.display)
+        self.timeline = Timeline()
+        self._lock = threading.Lock()
+        gui = self.server.gui
+        self.caption = gui.add_markdown(f"**{title}**: waiting for a run")
+        self.follow = gui.add_checkbox("Follow live", initial_value=True)
+        self.slider = gui.add_slider("World state", min=0, max=1, step=1, initial_value=0)
+        self.slider.on_update(lambda _event: self._slider_moved())
+        self.tasks = TaskPanel(gui, self.show_task)
+        self.shown = -1  # index of the moment on screen
+
+    @property
+    def url(self) -> str:
+        """Where a browser finds the page."""
+        return f"http://{self.server.get_host()}:{self.server.get_port()}"
+
+    def add_moment(self, moment: Moment) -> None:
+        """Add a world state; when following, show it at once."""
+        index = self.timeline.add(moment)
+        self.slider.max = max(len(self.timeline) - 1, 1)
+        if self.follow.value:
+            _set_value(self.slider, index)
+            self.show(index)
+
+    def show(self, index: int) -> None:
+        """Draw the world of moment ``index``."""
+        with self._lock:
+            if not 0 <= index < len(self.timeline):
+                return
+            moment = self.timeline[index]
+            moment.state.apply(self.display)
+            self.view.show(self.display)
+            self.shown = index
+        where = moment.task_path or "the start"
+        self.caption.content = f"**state {index}**: after {where}"
+
+    def _slider_moved(self) -> None:
+        index = int(self.slider.value)
+        if index != self.shown:
+            self.show(index)
+
+    def show_task(self, task: TaskSnapshot) -> None:
+        """Show the world when ``task`` ended (the latest state if it is still running)."""
+        time = task.end_time if task.end_time is not None else float("inf")
+        _set_value(self.follow, False)
+        index = self.timeline.index_at(time)
+        _set_value(self.slider, index)
+        self.show(index)
+
+    def set_tree(self, tree: TaskSnapshot) -> None:
+        """Show (or update) the task tree."""
+        self.tasks.update(tree)
+
+    def load_run(self, db: TraceDatabase, run: int) -> None:
+        """Show stored run ``run`` of ``db``: its tree and all its world states."""
+        _set_value(self.follow, False)
+        self.set_tree(task_tree(db, run))
+        stored = Timeline.of_run(db, run)
+        for index in range(len(stored)):
+            self.add_moment(stored[index])
+        _set_value(self.slider, len(self.timeline) - 1)
+        self.show(len(self.timeline) - 1)
+
+    def close(self) -> None:
+        """Stop serving and free the display world."""
+        self.server.stop()
+        self.display.close()
+
+    def __enter__(self) -> Viewer:
+        return self
+
+    def __exit__(self, *exc: Any) -> None:
+        self.close()
+
+
+def _set_value(handle: Any, value: Any) -> None:
+    """Set a GUI input's value (viser's stubs call it read-only; it is a synced property)."""
+    setattr(handle, "value", value)  # noqa: B010
+
+
+def replay_viewer(
+    db: TraceDatabase, run: int, host: str = DEFAULT_HOST, port: int = DEFAULT_PORT
+) -> Viewer:
+    """A viewer showing stored run ``run``, its world rebuilt from the stored scene."""
+    row = require_run(db, run)
+    if row.scene is None:
+        raise NoWorld()
+    with build_scene(row.scene) as world:
+        viewer = Viewer(world, host, port, title=f"run {run}: {row.name}")
+    viewer.load_run(db, run)
+    return viewer
