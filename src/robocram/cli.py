@@ -129,9 +129,12 @@ def _view(args: argparse.Namespace) -> int:
     try:
         with viewer_module.Viewer(scene.world, args.host, args.port, "robocram view") as viewer:
             print(f"viewer at {viewer.url}", flush=True)
-            feed = viewer_module.LiveFeed(viewer, scene.world)
             try:
-                with listening(feed), simulated_robot(scene.world, scene.robot, name="pick-mug"):
+                with (
+                    viewer_module.LiveFeed(viewer, scene.world) as feed,
+                    listening(feed),
+                    simulated_robot(scene.world, scene.robot, name="pick-mug"),
+                ):
                     pick_up(scene.look_target)
             except PlanFailure as failure:
                 print(f"the plan failed: {type(failure).__name__}: {failure}", file=sys.stderr)

@@ -44,7 +44,8 @@ def live_run(tmp_path_factory: pytest.TempPathFactory) -> Iterator[LiveRun]:
     viewer = Viewer(scene.world, port=free_port())
     with (
         trace_to(db_path, world=scene.world) as tracer,
-        listening(LiveFeed(viewer, scene.world)),
+        LiveFeed(viewer, scene.world) as feed,
+        listening(feed),
         simulated_robot(scene.world, "pr2", name="pick-mug") as run,
     ):
         try_in_order(

@@ -15,7 +15,7 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
-from sqlalchemy import create_engine, event, inspect, select
+from sqlalchemy import Connection, create_engine, event, inspect, select
 from sqlalchemy.exc import DatabaseError, OperationalError
 from sqlalchemy.orm import Session
 
@@ -39,6 +39,7 @@ class TraceDatabase:
         event.listen(self.engine, "begin", _begin)
         self._writer = self.engine.execution_options(**{_WRITE: True})
         self._lock = threading.Lock()
+        self._connection: Connection | None = None
         try:
             self._check_schema(create)
         except BaseException:
@@ -70,6 +71,15 @@ class TraceDatabase:
             yield session
 
     @contextmanager
+    def append(self) -> Iterator[Connection]:
+        """One write transaction on the writer's own long-lived connection (fast, Core)."""
+        with self._lock:
+            if self._connection is None:
+                self._connection = self._writer.connect()
+            with self._connection.begin():
+                yield self._connection
+
+    @contextmanager
     def read(self) -> Iterator[Session]:
         """A read-only session seeing one consistent snapshot of the file."""
         with Session(self.engine, expire_on_commit=False) as session, session.begin():
@@ -77,6 +87,10 @@ class TraceDatabase:
 
     def close(self) -> None:
         """Release the file's connections."""
+        with self._lock:
+            if self._connection is not None:
+                self._connection.close()
+                self._connection = None
         self.engine.dispose()
 
     def __enter__(self) -> TraceDatabase:

@@ -8,7 +8,9 @@ positions and attachments. ``SCHEMA_VERSION`` changes whenever a table does.
 
 from __future__ import annotations
 
-from sqlalchemy import Float, ForeignKey, Index, Integer, String, Text
+from typing import Any, cast
+
+from sqlalchemy import CursorResult, Float, ForeignKey, Index, Integer, String, Table, Text
 from sqlalchemy.orm import DeclarativeBase, Mapped, mapped_column
 
 SCHEMA_VERSION = 1
@@ -125,3 +127,16 @@ class AttachmentRow(Base):
     qy: Mapped[float] = mapped_column(Float)
     qz: Mapped[float] = mapped_column(Float)
     qw: Mapped[float] = mapped_column(Float)
+
+
+def table(model: type[Base]) -> Table:
+    """The Core table of an ORM model: executemany inserts on the tracer's hot path."""
+    return cast(Table, model.__table__)
+
+
+def new_id(result: CursorResult[Any]) -> int:
+    """The primary key an INSERT just made."""
+    key = result.inserted_primary_key
+    if key is None:
+        raise ValueError("the statement inserted no row")
+    return int(key[0])

@@ -16,18 +16,19 @@ from contextlib import contextmanager, nullcontext
 from pathlib import Path
 from typing import Any
 
-from sqlalchemy import insert, update
-from sqlalchemy.orm import Session
+from sqlalchemy import Connection, insert, update
 
 from robocram.designators import ActionDesignator, Designator, MotionDesignator
 from robocram.execution import Task, TaskListener, TaskSnapshot, listening
 from robocram.traces.database import TraceDatabase
 from robocram.traces.json_values import dumps
-from robocram.traces.schema import DesignatorPropertyRow, RunRow, TaskRow
+from robocram.traces.schema import DesignatorPropertyRow, RunRow, TaskRow, new_id, table
 from robocram.traces.world_record import StoredWorldState, insert_world_state, scene_of
 from robocram.world import World
 
-TRACE_ENV = "ROBOCRAM_TRACE"  # environment option: trace top levels to this database file
+TRACE_ENV = "ROBOCRAM_TRACE"
+_TASKS = table(TaskRow)  # Core tables: the hot path
+_RUNS = table(RunRow)  # environment option: trace top levels to this database file
 
 
 class Tracer(TaskListener):
@@ -45,36 +46,32 @@ class Tracer(TaskListener):
         """Insert the task (and, for a new top level, its run and first world state)."""
         with self._lock:
             parent = self._rows.get(id(task.parent)) if task.parent is not None else None
-        with self.db.write() as session:
-            run_id = self._new_run(session, task) if parent is None else parent[2]
-            row = TaskRow(
-                run_id=run_id,
-                parent_id=None if parent is None else parent[1],
-                position=_position(task) if parent is not None else 0,
-                name=task.name,
-                path=task.path,
-                status=task.status.value,
-                start=task.start_time,
-                tags=json.dumps(sorted(task.tags)),
-            )
-            session.add(row)
-            session.flush()
+        with self.db.append() as connection:
+            run_id = self._new_run(connection, task) if parent is None else parent[2]
+            row = {
+                "run_id": run_id,
+                "parent_id": None if parent is None else parent[1],
+                "position": _position(task) if parent is not None else 0,
+                "name": task.name,
+                "path": task.path,
+                "status": task.status.value,
+                "start": task.start_time,
+                "tags": json.dumps(sorted(task.tags)),
+            }
+            inserted = connection.execute(insert(_TASKS).values(**row))
         with self._lock:
-            self._rows[id(task)] = (task, row.id, run_id)
+            self._rows[id(task)] = (task, new_id(inserted), run_id)
 
-    def _new_run(self, session: Session, task: Task) -> int:
+    def _new_run(self, connection: Connection, task: Task) -> int:
         scene = scene_of(self.world) if self.world is not None else None
-        run = RunRow(
-            name=task.name, status=task.status.value, start=task.start_time, pid=os.getpid()
-        )
-        run.scene = scene
-        session.add(run)
-        session.flush()
+        row = {"name": task.name, "status": task.status.value, "start": task.start_time}
+        inserted = connection.execute(insert(_RUNS).values(**row, pid=os.getpid(), scene=scene))
+        run_id = new_id(inserted)
         if self.world is not None:
             state = StoredWorldState.capture(self.world, task.start_time or 0.0)
-            insert_world_state(session, run.id, None, state)
-        self.runs.append(run.id)
-        return run.id
+            insert_world_state(connection, run_id, None, state)
+        self.runs.append(run_id)
+        return run_id
 
     def performing(self, task: Task, designator: Any) -> None:
         """Remember the designator; it is written with the task's end."""
@@ -91,18 +88,19 @@ class Tracer(TaskListener):
             return
         _, row_id, run_id = known
         snap = TaskSnapshot.of(task)
-        with self.db.write() as session:
-            session.execute(
-                update(TaskRow).where(TaskRow.id == row_id).values(**_outcome(snap, designator))
-            )
+        state = None
+        if isinstance(designator, MotionDesignator) and self.world is not None:
+            state = StoredWorldState.capture(self.world, task.end_time or 0.0)
+        with self.db.append() as connection:
+            outcome = _outcome(snap, designator)
+            connection.execute(update(_TASKS).where(_TASKS.c.id == row_id).values(**outcome))
             if designator is not None:
-                _write_properties(session, row_id, designator)
-            if isinstance(designator, MotionDesignator) and self.world is not None:
-                state = StoredWorldState.capture(self.world, task.end_time or 0.0)
-                insert_world_state(session, run_id, row_id, state)
+                _write_properties(connection, row_id, designator)
+            if state is not None:
+                insert_world_state(connection, run_id, row_id, state)
             if task.parent is None or run_id != self._run_of(task.parent):
                 values = {"status": snap.status.value, "end": snap.end_time}
-                session.execute(update(RunRow).where(RunRow.id == run_id).values(**values))
+                connection.execute(update(_RUNS).where(_RUNS.c.id == run_id).values(**values))
 
     def _run_of(self, task: Task) -> int | None:
         with self._lock:
@@ -131,13 +129,13 @@ def _outcome(snap: TaskSnapshot, designator: Designator | None) -> dict[str, Any
     }
 
 
-def _write_properties(session: Session, task_id: int, designator: Designator) -> None:
+def _write_properties(connection: Connection, task_id: int, designator: Designator) -> None:
     rows = [
         {"task_id": task_id, "position": i, "key": str(key), "value": dumps(value)}
         for i, (key, value) in enumerate(designator.properties)
     ]
     if rows:
-        session.execute(insert(DesignatorPropertyRow), rows)
+        connection.execute(insert(table(DesignatorPropertyRow)), rows)
 
 
 @contextmanager

@@ -13,12 +13,19 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from sqlalchemy import insert, select
+from sqlalchemy import Connection, insert, select
 from sqlalchemy.orm import Session
 
 from robocram.tf import Pose
 from robocram.traces.errors import TraceError
-from robocram.traces.schema import AttachmentRow, JointPositionRow, ObjectPoseRow, WorldStateRow
+from robocram.traces.schema import (
+    AttachmentRow,
+    JointPositionRow,
+    ObjectPoseRow,
+    WorldStateRow,
+    new_id,
+    table,
+)
 from robocram.world import Attachment, MeshSpec, RobotObject, ShapeSpec, UrdfSpec, World
 
 
@@ -74,31 +81,33 @@ def _set_joints(world: World, name: str, joints: dict[str, float]) -> None:
 
 
 def insert_world_state(
-    session: Session, run_id: int, task_id: int | None, state: StoredWorldState
+    connection: Connection, run_id: int, task_id: int | None, state: StoredWorldState
 ) -> int:
-    """Add ``state`` to the run; return the new state's id."""
-    row = WorldStateRow(run_id=run_id, task_id=task_id, time=state.time, sim_time=state.sim_time)
-    session.add(row)
-    session.flush()
-    poses = [{"state_id": row.id, "object": n, **_pose_fields(p)} for n, p in state.poses.items()]
-    session.execute(insert(ObjectPoseRow), poses)
+    """Add ``state`` to the run (Core executemany: the tracer's hot path); return its id."""
+    values = {"run_id": run_id, "task_id": task_id, "time": state.time}
+    inserted = connection.execute(
+        insert(table(WorldStateRow)).values(**values, sim_time=state.sim_time)
+    )
+    state_id = new_id(inserted)
+    poses = [{"state_id": state_id, "object": n, **_pose_fields(p)} for n, p in state.poses.items()]
+    connection.execute(insert(table(ObjectPoseRow)), poses)
     joints = [
-        {"state_id": row.id, "object": obj, "joint": joint, "position": value}
+        {"state_id": state_id, "object": obj, "joint": joint, "position": value}
         for obj, values in state.joints.items()
         for joint, value in values.items()
     ]
     if joints:
-        session.execute(insert(JointPositionRow), joints)
+        connection.execute(insert(table(JointPositionRow)), joints)
     if state.attachments:
-        session.execute(
-            insert(AttachmentRow),
+        connection.execute(
+            insert(table(AttachmentRow)),
             [
-                {"state_id": row.id, "object": a.obj, "robot": a.robot, "link": a.link}
+                {"state_id": state_id, "object": a.obj, "robot": a.robot, "link": a.link}
                 | _pose_fields(a.link_T_obj)
                 for a in state.attachments
             ],
         )
-    return row.id
+    return state_id
 
 
 def load_world_state(session: Session, state_id: int) -> StoredWorldState:

@@ -1,8 +1,15 @@
-"""Feeding a viewer live: a task listener that sends tree updates and world states."""
+"""Feeding a viewer live: a task listener that sends tree updates and world states.
+
+The plan's thread only captures the world after each motion (it changes next) and marks
+the tree changed; a feeder thread does the slow part, drawing and sending to browsers,
+and skips to the newest state when it falls behind, so the viewer barely slows a plan.
+Use it as ``with LiveFeed(viewer, world) as feed, listening(feed): ...``.
+"""
 
 from __future__ import annotations
 
 import threading
+from types import TracebackType
 from typing import Any
 
 from robocram.designators import MotionDesignator
@@ -11,6 +18,8 @@ from robocram.traces import StoredWorldState
 from robocram.viewer.timeline import Moment
 from robocram.viewer.viewer import Viewer
 from robocram.world import World
+
+FLUSH_TIMEOUT = 120.0  # [s] for the feeder to send what is queued when the block ends
 
 
 class LiveFeed(TaskListener):
@@ -21,34 +30,82 @@ class LiveFeed(TaskListener):
         self.world = world
         self._root: Task | None = None
         self._motions: set[int] = set()
-        self._lock = threading.Lock()
+        self._queued: list[Moment] = []
+        self._tree_changed = False
+        self._stopping = False
+        self._busy = False
+        self._wake = threading.Condition()
+        self._thread: threading.Thread | None = None
+
+    def __enter__(self) -> LiveFeed:
+        self._stopping = False
+        self._thread = threading.Thread(target=self._feed, name="robocram:live-feed", daemon=True)
+        self._thread.start()
+        return self
+
+    def __exit__(
+        self,
+        exc_type: type[BaseException] | None,
+        exc: BaseException | None,
+        tb: TracebackType | None,
+    ) -> None:
+        self.flush()
+        with self._wake:
+            self._stopping = True
+            self._wake.notify_all()
+        if self._thread is not None:
+            self._thread.join(FLUSH_TIMEOUT)
+
+    def flush(self) -> None:
+        """Wait until everything queued has been sent to the viewer."""
+        with self._wake:
+            self._wake.wait_for(
+                lambda: not (self._queued or self._tree_changed or self._busy), FLUSH_TIMEOUT
+            )
 
     def task_started(self, task: Task) -> None:
-        """A new top level resets the tree; every start refreshes it."""
-        with self._lock:
+        """A new top level: capture the world at its start; every start changes the tree."""
+        with self._wake:
             if self._root is None or task.root is not self._root:
                 self._root = task.root
                 state = StoredWorldState.capture(self.world, task.start_time or 0.0)
-                self.viewer.add_moment(Moment(state, None))
-        self._refresh()
+                self._queued.append(Moment(state, None))
+            self._tree_changed = True
+            self._wake.notify_all()
 
     def performing(self, task: Task, designator: Any) -> None:
         """Remember which tasks are motions."""
         if isinstance(designator, MotionDesignator):
-            with self._lock:
+            with self._wake:
                 self._motions.add(id(task))
 
     def task_finished(self, task: Task) -> None:
-        """After a motion, send the world's state; always refresh the tree."""
-        with self._lock:
+        """After a motion, capture the world's state; always mark the tree changed."""
+        with self._wake:
             motion = id(task) in self._motions
             self._motions.discard(id(task))
-        if motion:
-            state = StoredWorldState.capture(self.world, task.end_time or 0.0)
-            self.viewer.add_moment(Moment(state, task.path))
-        self._refresh()
+        state = StoredWorldState.capture(self.world, task.end_time or 0.0) if motion else None
+        with self._wake:
+            if state is not None:
+                self._queued.append(Moment(state, task.path))
+            self._tree_changed = True
+            self._wake.notify_all()
 
-    def _refresh(self) -> None:
-        root = self._root
-        if root is not None:
-            self.viewer.set_tree(TaskSnapshot.of(root))
+    def _feed(self) -> None:
+        while True:
+            with self._wake:
+                self._wake.wait_for(lambda: self._queued or self._tree_changed or self._stopping)
+                if self._stopping and not (self._queued or self._tree_changed):
+                    return
+                moments, self._queued = self._queued, []
+                tree_changed, self._tree_changed = self._tree_changed, False
+                root, self._busy = self._root, True
+            try:
+                if moments:
+                    self.viewer.add_moments(moments)
+                if tree_changed and root is not None:
+                    self.viewer.set_tree(TaskSnapshot.of(root))
+            finally:
+                with self._wake:
+                    self._busy = False
+                    self._wake.notify_all()

@@ -70,9 +70,9 @@ class Viewer:
         """Where a browser finds the page."""
         return f"http://{self.server.get_host()}:{self.server.get_port()}"
 
-    def add_moment(self, moment: Moment) -> None:
-        """Add a world state; when following, show it at once."""
-        index = self.timeline.add(moment)
+    def add_moments(self, moments: list[Moment]) -> None:
+        """Add world states; when following, show the newest at once."""
+        index = max(self.timeline.add(moment) for moment in moments)
         self.slider.max = max(len(self.timeline) - 1, 1)
         if self.follow.value:
             _set_value(self.slider, index)
@@ -112,8 +112,7 @@ class Viewer:
         _set_value(self.follow, False)
         self.set_tree(task_tree(db, run))
         stored = Timeline.of_run(db, run)
-        for index in range(len(stored)):
-            self.add_moment(stored[index])
+        self.add_moments([stored[index] for index in range(len(stored))])
         _set_value(self.slider, len(self.timeline) - 1)
         self.show(len(self.timeline) - 1)
 

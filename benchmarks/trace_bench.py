@@ -1,0 +1,113 @@
+"""Trace and viewer figures: tracing overhead on the PR2 pick-up (traced against untraced,
+interleaved in one run and one world) and the browser viewer's update rate.
+
+Prints medians over ``runs`` plans; no reference system is installable here (PyCRAM's
+ORM logging needs PyCRAM and ROS). Usage: ``python benchmarks/trace_bench.py [runs]``.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import socket
+import statistics
+import sys
+import tempfile
+import time
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+from robocram.execution import listening
+from robocram.plans import pick_up
+from robocram.projection import simulated_robot
+from robocram.scenes import TabletopScene, tabletop_scene
+from robocram.traces import TraceDatabase, Tracer, runs
+
+
+def _plan_time(scene: TabletopScene, around: Callable[[], Any]) -> float:
+    """Seconds [s] for one pick-up inside the context ``around()``, world restored after."""
+    with scene.world.stored_state():
+        start = time.perf_counter()
+        with around(), simulated_robot(scene.world, scene.robot, name="pick-mug"):
+            pick_up(scene.look_target)
+        return time.perf_counter() - start
+
+
+def tracing_overhead(count: int, db: Path) -> None:
+    """Untraced, traced (tree only) and traced with world states, interleaved.
+
+    The database is opened once, as a batch of projections would; each traced plan writes
+    its tasks (two transactions each) and, with a world, a state after every motion.
+    """
+    scene = tabletop_scene("pr2")
+    store = TraceDatabase(db)
+    tree_only, with_world = Tracer(store), Tracer(store, scene.world)
+    modes: dict[str, Callable[[], Any]] = {
+        "untraced": contextlib.nullcontext,
+        "traced, task tree": lambda: listening(tree_only),
+        "traced, tree + world states": lambda: listening(with_world),
+    }
+    times: dict[str, list[float]] = {name: [] for name in modes}
+    _plan_time(scene, contextlib.nullcontext)  # warm caches (IK, meshes, KB)
+    for _ in range(count):
+        for name, around in modes.items():
+            times[name].append(_plan_time(scene, around))
+    base = statistics.median(times["untraced"])
+    print(f"pick-up plan on the PR2, median of {count} interleaved runs each:")
+    for name, values in times.items():
+        median = statistics.median(values)
+        print(f"  {name:30} {median * 1e3:8.1f} ms  overhead {100 * (median / base - 1):+6.1f} %")
+    stored = runs(store)
+    store.close()
+    tasks = statistics.median(r.tasks for r in stored)
+    print(f"  ({len(stored)} runs stored, {tasks:.0f} tasks per run; goal: overhead < 10 %)")
+    scene.world.close()
+
+
+def _free_port() -> int:
+    with socket.socket() as probe:
+        probe.bind(("127.0.0.1", 0))
+        return int(probe.getsockname()[1])
+
+
+def viewer_rates(count: int) -> None:
+    """Live plan time with the viewer fed, and state updates per second when scrubbing."""
+    try:
+        from robocram.viewer import LiveFeed, Viewer
+    except ImportError as err:
+        print(f"viewer: skipped, {err.name} missing (pip install 'robocram[viewer]')")
+        return
+    scene = tabletop_scene("pr2")
+    viewer = Viewer(scene.world, port=_free_port())
+    plain, live = [], []
+    for _ in range(count):
+        plain.append(_plan_time(scene, contextlib.nullcontext))
+        with LiveFeed(viewer, scene.world) as feed:
+            live.append(_plan_time(scene, lambda: listening(feed)))
+            feed.flush()
+    states = len(viewer.timeline) // count
+    live_s, plain_s = statistics.median(live), statistics.median(plain)
+    print(
+        f"viewer, live: plan {live_s * 1e3:.1f} ms fed vs {plain_s * 1e3:.1f} ms unfed "
+        f"({100 * (live_s / plain_s - 1):+.1f} %), {states} world states per run, "
+        f"{states / live_s:.1f} states/s while the plan runs"
+    )
+    frames = len(viewer.view.frames)
+    shows = 5 * len(viewer.timeline)
+    start = time.perf_counter()
+    for i in range(shows):
+        viewer.show(i % len(viewer.timeline))
+    elapsed = time.perf_counter() - start
+    print(
+        f"viewer, scrubbing: {shows / elapsed:.1f} world states/s pushed "
+        f"({frames} link frames each, {1e3 * elapsed / shows:.2f} ms per state)"
+    )
+    viewer.close()
+    scene.world.close()
+
+
+if __name__ == "__main__":
+    count = int(sys.argv[1]) if len(sys.argv) > 1 else 7
+    with tempfile.TemporaryDirectory() as tmp:
+        tracing_overhead(count, Path(tmp) / "bench.db")
+    viewer_rates(max(count // 2, 2))
