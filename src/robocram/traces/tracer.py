@@ -16,7 +16,7 @@ from contextlib import contextmanager, nullcontext
 from pathlib import Path
 from typing import Any
 
-from sqlalchemy import Connection, insert, update
+from sqlalchemy import Connection, bindparam, insert, update
 
 from robocram.designators import ActionDesignator, Designator, MotionDesignator
 from robocram.execution import Task, TaskListener, TaskSnapshot, listening
@@ -27,8 +27,32 @@ from robocram.traces.world_record import StoredWorldState, insert_world_state, s
 from robocram.world import World
 
 TRACE_ENV = "ROBOCRAM_TRACE"
-_TASKS = table(TaskRow)  # Core tables: the hot path
-_RUNS = table(RunRow)  # environment option: trace top levels to this database file
+_TASKS = table(TaskRow)
+_RUNS = table(RunRow)
+_OUTCOME = (
+    "status",
+    "end",
+    "result",
+    "failure_type",
+    "failure_message",
+    "failure_source",
+    "designator_kind",
+    "designator_type",
+)
+# Statements built once: building one per call cost ten times the SQLite work.
+_INSERT_TASK = insert(_TASKS)
+_INSERT_RUN = insert(_RUNS)
+_INSERT_PROPERTY = insert(table(DesignatorPropertyRow))
+_FINISH_TASK = (
+    update(_TASKS)
+    .where(_TASKS.c.id == bindparam("row_id"))
+    .values({name: bindparam(f"new_{name}") for name in _OUTCOME})
+)
+_FINISH_RUN = (
+    update(_RUNS)
+    .where(_RUNS.c.id == bindparam("run_id"))
+    .values(status=bindparam("new_status"), end=bindparam("new_end"))
+)  # environment option: trace top levels to this database file
 
 
 class Tracer(TaskListener):
@@ -58,14 +82,14 @@ class Tracer(TaskListener):
                 "start": task.start_time,
                 "tags": json.dumps(sorted(task.tags)),
             }
-            inserted = connection.execute(insert(_TASKS).values(**row))
+            inserted = connection.execute(_INSERT_TASK, row)
         with self._lock:
             self._rows[id(task)] = (task, new_id(inserted), run_id)
 
     def _new_run(self, connection: Connection, task: Task) -> int:
         scene = scene_of(self.world) if self.world is not None else None
         row = {"name": task.name, "status": task.status.value, "start": task.start_time}
-        inserted = connection.execute(insert(_RUNS).values(**row, pid=os.getpid(), scene=scene))
+        inserted = connection.execute(_INSERT_RUN, {**row, "pid": os.getpid(), "scene": scene})
         run_id = new_id(inserted)
         if self.world is not None:
             state = StoredWorldState.capture(self.world, task.start_time or 0.0)
@@ -92,15 +116,15 @@ class Tracer(TaskListener):
         if isinstance(designator, MotionDesignator) and self.world is not None:
             state = StoredWorldState.capture(self.world, task.end_time or 0.0)
         with self.db.append() as connection:
-            outcome = _outcome(snap, designator)
-            connection.execute(update(_TASKS).where(_TASKS.c.id == row_id).values(**outcome))
+            outcome = {f"new_{k}": v for k, v in _outcome(snap, designator).items()}
+            connection.execute(_FINISH_TASK, {"row_id": row_id, **outcome})
             if designator is not None:
                 _write_properties(connection, row_id, designator)
             if state is not None:
                 insert_world_state(connection, run_id, row_id, state)
             if task.parent is None or run_id != self._run_of(task.parent):
-                values = {"status": snap.status.value, "end": snap.end_time}
-                connection.execute(update(_RUNS).where(_RUNS.c.id == run_id).values(**values))
+                values = {"new_status": snap.status.value, "new_end": snap.end_time}
+                connection.execute(_FINISH_RUN, {"run_id": run_id, **values})
 
     def _run_of(self, task: Task) -> int | None:
         with self._lock:
@@ -135,7 +159,7 @@ def _write_properties(connection: Connection, task_id: int, designator: Designat
         for i, (key, value) in enumerate(designator.properties)
     ]
     if rows:
-        connection.execute(insert(table(DesignatorPropertyRow)), rows)
+        connection.execute(_INSERT_PROPERTY, rows)
 
 
 @contextmanager

@@ -80,27 +80,31 @@ def _set_joints(world: World, name: str, joints: dict[str, float]) -> None:
         world.set_joint_states(name, {j: joints[j] for j in followers})
 
 
+_INSERT_STATE = insert(table(WorldStateRow))  # built once: the tracer's hot path
+_INSERT_POSES = insert(table(ObjectPoseRow))
+_INSERT_JOINTS = insert(table(JointPositionRow))
+_INSERT_ATTACHMENTS = insert(table(AttachmentRow))
+
+
 def insert_world_state(
     connection: Connection, run_id: int, task_id: int | None, state: StoredWorldState
 ) -> int:
     """Add ``state`` to the run (Core executemany: the tracer's hot path); return its id."""
     values = {"run_id": run_id, "task_id": task_id, "time": state.time}
-    inserted = connection.execute(
-        insert(table(WorldStateRow)).values(**values, sim_time=state.sim_time)
-    )
+    inserted = connection.execute(_INSERT_STATE, {**values, "sim_time": state.sim_time})
     state_id = new_id(inserted)
     poses = [{"state_id": state_id, "object": n, **_pose_fields(p)} for n, p in state.poses.items()]
-    connection.execute(insert(table(ObjectPoseRow)), poses)
+    connection.execute(_INSERT_POSES, poses)
     joints = [
         {"state_id": state_id, "object": obj, "joint": joint, "position": value}
         for obj, values in state.joints.items()
         for joint, value in values.items()
     ]
     if joints:
-        connection.execute(insert(table(JointPositionRow)), joints)
+        connection.execute(_INSERT_JOINTS, joints)
     if state.attachments:
         connection.execute(
-            insert(table(AttachmentRow)),
+            _INSERT_ATTACHMENTS,
             [
                 {"state_id": state_id, "object": a.obj, "robot": a.robot, "link": a.link}
                 | _pose_fields(a.link_T_obj)
