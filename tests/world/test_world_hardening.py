@@ -157,3 +157,19 @@ def test_copying_a_closed_world_says_it_is_closed(world: World) -> None:
         world.copy()
     with pytest.raises(WorldClosedError):
         world.ray_cast((0, 0, 1), (0, 0, -1))
+
+
+def test_every_query_on_a_closed_world_says_it_is_closed(world: World) -> None:
+    world.close()
+    queries = [
+        lambda: world.aabb("mug"),
+        lambda: world.link_aabb("mug", world.link_names("mug")[0]),
+        lambda: world.contact_points("mug"),
+        lambda: world.collisions("mug"),
+        lambda: world.visible_from(Pose((0, 0, 2)), "mug"),
+        lambda: world.stable(),
+        lambda: world.pose("mug"),
+    ]
+    for query in queries:
+        with pytest.raises(WorldClosedError):
+            query()

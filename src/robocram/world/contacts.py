@@ -62,7 +62,7 @@ def closest_points(
     if link_b is not None:
         filters["linkIndexB"] = _index(b, link_b)
     points = pybullet.getClosestPoints(
-        a.body_id, b.body_id, distance, physicsClientId=world.client, **filters
+        a.body_id, b.body_id, distance, physicsClientId=world.physics_client(), **filters
     )
     names_a, names_b = _link_names(a), _link_names(b)
     return [

@@ -9,7 +9,6 @@ from dataclasses import dataclass
 import pybullet
 
 from robocram.tf import Vector3
-from robocram.world.errors import WorldClosedError
 from robocram.world.world_core import WorldCore
 from robocram.world.world_object import WorldObject
 
@@ -29,11 +28,9 @@ def cast_rays(
     world: WorldCore, starts: Sequence[Vector3], ends: Sequence[Vector3]
 ) -> list[RayHit | None]:
     """The first hit of each segment ``starts[i]``..``ends[i]`` [m], in one pybullet call."""
-    if world.closed:
-        raise WorldClosedError()
     by_body = {o.body_id: o for o in world.objects()}
     hits = pybullet.rayTestBatch(
-        [list(s) for s in starts], [list(e) for e in ends], physicsClientId=world.client
+        [list(s) for s in starts], [list(e) for e in ends], physicsClientId=world.physics_client()
     )
     out: list[RayHit | None] = []
     for start, end, hit in zip(starts, ends, hits, strict=True):

@@ -38,7 +38,7 @@ class Visibility:
 
 def aabb(world: WorldCore, obj: WorldObject) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """World axis-aligned bounds ``(lower, upper)`` [m] over all of ``obj``'s links."""
-    cid = world.client
+    cid = world.physics_client()
     boxes = [pybullet.getAABB(obj.body_id, -1, physicsClientId=cid)]
     for i in range(pybullet.getNumJoints(obj.body_id, physicsClientId=cid)):
         boxes.append(pybullet.getAABB(obj.body_id, i, physicsClientId=cid))
@@ -49,7 +49,7 @@ def aabb(world: WorldCore, obj: WorldObject) -> tuple[NDArray[np.float64], NDArr
 
 def link_aabb(world: WorldCore, obj: WorldObject, index: int) -> tuple[Vector3, Vector3]:
     """World axis-aligned bounds ``(lower, upper)`` [m] of link ``index`` of ``obj``."""
-    low, high = pybullet.getAABB(obj.body_id, index, physicsClientId=world.client)
+    low, high = pybullet.getAABB(obj.body_id, index, physicsClientId=world.physics_client())
     return (float(low[0]), float(low[1]), float(low[2])), (
         float(high[0]),
         float(high[1]),
@@ -60,7 +60,7 @@ def link_aabb(world: WorldCore, obj: WorldObject, index: int) -> tuple[Vector3, 
 @contextmanager
 def isolated(world: WorldCore, obj: WorldObject) -> Iterator[None]:
     """Shift ``obj`` by :data:`ISOLATION_OFFSET`; put it back exactly afterwards."""
-    cid = world.client
+    cid = world.physics_client()
     pos, orn = pybullet.getBasePositionAndOrientation(obj.body_id, physicsClientId=cid)
     lin, ang = pybullet.getBaseVelocity(obj.body_id, physicsClientId=cid)
     moved = [p + o for p, o in zip(pos, ISOLATION_OFFSET, strict=True)]
@@ -93,7 +93,9 @@ def _tangent_grid(
 
 def _first_hits(world: WorldCore, camera: Camera, tangents: NDArray[np.float64]) -> list[int]:
     starts, ends = camera.ray_ends(tangents)
-    hits = pybullet.rayTestBatch(starts.tolist(), ends.tolist(), physicsClientId=world.client)
+    hits = pybullet.rayTestBatch(
+        starts.tolist(), ends.tolist(), physicsClientId=world.physics_client()
+    )
     return [int(h[0]) for h in hits]
 
 
@@ -125,7 +127,7 @@ def segmentation(world: WorldCore, camera: Camera, width: int, height: int) -> N
         camera.view_matrix(),
         camera.projection_matrix(),
         renderer=pybullet.ER_TINY_RENDERER,
-        physicsClientId=world.client,
+        physicsClientId=world.physics_client(),
     )
     return np.reshape(np.asarray(seg, dtype=np.int64), (height, width))
 

@@ -350,7 +350,7 @@ class World(WorldCore):
         cam = cam.with_aspect(width / height)
         _, _, rgba, _, _ = pybullet.getCameraImage(
             width, height, cam.view_matrix(), cam.projection_matrix(),
-            renderer=pybullet.ER_TINY_RENDERER, physicsClientId=self._cid(),
+            renderer=pybullet.ER_TINY_RENDERER, physicsClientId=self.physics_client(),
         )  # fmt: skip
         return np.reshape(np.asarray(rgba, dtype=np.uint8), (height, width, 4))[:, :, :3].copy()
 

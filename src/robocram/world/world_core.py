@@ -72,7 +72,8 @@ class WorldCore:
         """Whether :meth:`close` was called."""
         return self.client < 0
 
-    def _cid(self) -> int:
+    def physics_client(self) -> int:
+        """The pybullet client id, for the world's own helper modules; closed: an error."""
         if self.client < 0:
             raise WorldClosedError()
         return self.client
@@ -84,7 +85,7 @@ class WorldCore:
         """
         if handle.name in self._objects:
             raise DuplicateObjectError(handle.name)
-        cid = self._cid()
+        cid = self.physics_client()
         handle.body_id = create_body(handle.name, handle.spec, cid)
         dyn = pybullet.getDynamicsInfo(handle.body_id, -1, physicsClientId=cid)
         self._inertial[handle.name] = Pose(dyn[3], dyn[4])
@@ -142,7 +143,7 @@ class WorldCore:
         for name, att in list(self._attachments.items()):
             if handle.name in (name, att.robot):
                 del self._attachments[name]
-        pybullet.removeBody(handle.body_id, physicsClientId=self._cid())
+        pybullet.removeBody(handle.body_id, physicsClientId=self.physics_client())
         del self._objects[handle.name]
         self._inertial.pop(handle.name, None)
         self._holds.pop(handle.name, None)
@@ -151,7 +152,7 @@ class WorldCore:
         """Pose of the object's root link frame in the world."""
         handle = self.object(obj)
         pos, orn = pybullet.getBasePositionAndOrientation(
-            handle.body_id, physicsClientId=self._cid()
+            handle.body_id, physicsClientId=self.physics_client()
         )
         return Pose(pos, orn) * self._inertial[handle.name].inverse()
 
@@ -162,7 +163,7 @@ class WorldCore:
         """
         handle = self.object(obj)
         base = Pose.coerce(pose) * self._inertial[handle.name]
-        cid = self._cid()
+        cid = self.physics_client()
         pybullet.resetBasePositionAndOrientation(
             handle.body_id, base.position, base.orientation, physicsClientId=cid
         )
@@ -183,7 +184,10 @@ class WorldCore:
         if index < 0:
             return self.pose(handle) * offset
         state = pybullet.getLinkState(
-            handle.body_id, index, computeForwardKinematics=True, physicsClientId=self._cid()
+            handle.body_id,
+            index,
+            computeForwardKinematics=True,
+            physicsClientId=self.physics_client(),
         )
         return Pose(state[4], state[5]) * offset
 
@@ -206,7 +210,7 @@ class WorldCore:
             lower = -math.inf if spec.lower is None else spec.lower
             upper = math.inf if spec.upper is None else spec.upper
             return JointLimits(lower, upper)
-        info = pybullet.getJointInfo(handle.body_id, index, physicsClientId=self._cid())
+        info = pybullet.getJointInfo(handle.body_id, index, physicsClientId=self.physics_client())
         if info[8] > info[9]:  # pybullet marks unlimited joints with lower > upper
             return JointLimits(-math.inf, math.inf)
         return JointLimits(info[8], info[9])
@@ -222,7 +226,7 @@ class WorldCore:
         return index
 
     def _movable_names(self, handle: WorldObject) -> list[str]:
-        cid = self._cid()
+        cid = self.physics_client()
         return [
             name
             for name, i in handle.joint_index.items()
@@ -234,7 +238,9 @@ class WorldCore:
         handle = self.object(obj)
         names = self._movable_names(handle)
         indices = [handle.joint_index[n] for n in names]
-        states = pybullet.getJointStates(handle.body_id, indices, physicsClientId=self._cid())
+        states = pybullet.getJointStates(
+            handle.body_id, indices, physicsClientId=self.physics_client()
+        )
         return {n: float(s[0]) for n, s in zip(names, states or (), strict=True)}
 
     def set_joint_states(self, obj: ObjectRef, values: Mapping[str, float]) -> list[ClampedJoint]:
@@ -247,7 +253,7 @@ class WorldCore:
         limits = {name: self.joint_limits(handle, name) for name in values}
         applied, clamped = clamp_values(values, limits)
         applied.update(self._mimic_values(handle, applied))
-        cid = self._cid()
+        cid = self.physics_client()
         for name, value in applied.items():
             index = handle.joint_index[name]
             pybullet.resetJointState(handle.body_id, index, value, 0.0, physicsClientId=cid)
@@ -325,7 +331,7 @@ class WorldCore:
 
     def _follow(self, carrier: str) -> None:
         """Re-place the objects attached to ``carrier`` (and theirs, recursively)."""
-        cid = self._cid()
+        cid = self.physics_client()
         for att in list(self._attachments.values()):
             if att.robot != carrier:
                 continue
@@ -340,7 +346,7 @@ class WorldCore:
 
     def step(self) -> None:
         """Advance physics one time step; robots hold their joints, attachments follow."""
-        cid = self._cid()
+        cid = self.physics_client()
         pybullet.stepSimulation(physicsClientId=cid)
         self.time += self.time_step
         for name, held in self._holds.items():

@@ -44,7 +44,7 @@ class WorldState:
         handles = tuple(world.objects())
         return cls(
             handles=handles,
-            bodies=tuple(_body_state(world.client, h.body_id) for h in handles),
+            bodies=tuple(_body_state(world.physics_client(), h.body_id) for h in handles),
             attachments=tuple(world.all_attachments()),
             holds=tuple((h.name, tuple(world.held_joints(h).items())) for h in handles),
             time=world.time,
@@ -72,7 +72,7 @@ class WorldState:
         self._apply(world)
 
     def _apply(self, world: WorldCore) -> None:
-        cid = world.client
+        cid = world.physics_client()
         for handle, body in zip(self.handles, self.bodies, strict=True):
             target = world.object(handle.name).body_id
             pybullet.resetBasePositionAndOrientation(target, *body.base, physicsClientId=cid)
