@@ -87,12 +87,9 @@ class WorldStateRow(Base):
     __table_args__ = (Index("ix_world_states_run_time", "run_id", "time"),)
 
 
-class ObjectPoseRow(Base):
-    """An object's root-link pose in map [m, quaternion xyzw] in one world state."""
+class PoseColumns:
+    """A pose as seven columns: position [m] and quaternion (x, y, z, w)."""
 
-    __tablename__ = "object_poses"
-    state_id: Mapped[int] = mapped_column(ForeignKey("world_states.id"), primary_key=True)
-    object: Mapped[str] = mapped_column(String, primary_key=True)
     x: Mapped[float] = mapped_column(Float)
     y: Mapped[float] = mapped_column(Float)
     z: Mapped[float] = mapped_column(Float)
@@ -100,6 +97,14 @@ class ObjectPoseRow(Base):
     qy: Mapped[float] = mapped_column(Float)
     qz: Mapped[float] = mapped_column(Float)
     qw: Mapped[float] = mapped_column(Float)
+
+
+class ObjectPoseRow(PoseColumns, Base):
+    """An object's root-link pose in map [m, quaternion xyzw] in one world state."""
+
+    __tablename__ = "object_poses"
+    state_id: Mapped[int] = mapped_column(ForeignKey("world_states.id"), primary_key=True)
+    object: Mapped[str] = mapped_column(String, primary_key=True)
 
 
 class JointPositionRow(Base):
@@ -112,7 +117,7 @@ class JointPositionRow(Base):
     position: Mapped[float] = mapped_column(Float)
 
 
-class AttachmentRow(Base):
+class AttachmentRow(PoseColumns, Base):
     """An object fixed to a robot link at ``link_T_obj`` [m, quaternion] in one state."""
 
     __tablename__ = "attachments"
@@ -120,13 +125,6 @@ class AttachmentRow(Base):
     object: Mapped[str] = mapped_column(String, primary_key=True)
     robot: Mapped[str] = mapped_column(String)
     link: Mapped[str] = mapped_column(String)
-    x: Mapped[float] = mapped_column(Float)
-    y: Mapped[float] = mapped_column(Float)
-    z: Mapped[float] = mapped_column(Float)
-    qx: Mapped[float] = mapped_column(Float)
-    qy: Mapped[float] = mapped_column(Float)
-    qz: Mapped[float] = mapped_column(Float)
-    qw: Mapped[float] = mapped_column(Float)
 
 
 def table(model: type[Base]) -> Table:
