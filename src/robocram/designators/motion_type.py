@@ -119,19 +119,33 @@ class MotionType:
         return tuple(p for p in map(self.prop, command.uses) if p.default is None)
 
 
+def _error(
+    motion: MotionType,
+    prop: MotionProperty,
+    designator: Designator,
+    why: str,
+    grounded_types: tuple[str, ...] = (),
+) -> MotionPropertyError:
+    return MotionPropertyError(
+        why,
+        motion=motion.type,
+        key=prop.key,
+        expected=prop.expected,
+        designator=designator,
+        grounded_types=grounded_types,
+    )
+
+
 def check_property_types(motion: MotionType, designator: Designator) -> None:
     """Raise :class:`MotionPropertyError` for a property of ``designator`` of the wrong type."""
     for prop in motion.properties:
         for value in designator.get_all(prop.key):
             if not isinstance(value, prop.types) or isinstance(value, bool):
-                raise MotionPropertyError(
+                why = (
                     f"motion {motion.type!r} needs property {prop.key!r} to be "
-                    f"{prop.expected}, got {value!r} in {designator.description}",
-                    motion=motion.type,
-                    key=prop.key,
-                    expected=prop.expected,
-                    designator=designator,
+                    f"{prop.expected}, got {value!r} in {designator.description}"
                 )
+                raise _error(motion, prop, designator, why)
 
 
 def check_known_keys(motion: MotionType, designator: Designator) -> None:
@@ -170,16 +184,12 @@ def missing_property_error(
         return None
     first = next(p for p in options[0] if p.key not in present)
     alternatives = " or ".join("+".join(p.key for p in needed) for needed in options)
-    return MotionPropertyError(
+    why = (
         f"the rules for type {motion.type!r} did not match {designator.description}: "
         f"it needs property {first.key!r} ({first.expected}); the motion takes "
-        f"{alternatives}; types with motion_grounding rules: {list(grounded_types)}",
-        motion=motion.type,
-        key=first.key,
-        expected=first.expected,
-        designator=designator,
-        grounded_types=grounded_types,
+        f"{alternatives}; types with motion_grounding rules: {list(grounded_types)}"
     )
+    return _error(motion, first, designator, why, grounded_types)
 
 
 def _var(key: str, suffix: str = "") -> str:
