@@ -218,12 +218,12 @@ def _rule(motion: MotionType, command: Command) -> str:
         reads.append(f"desig_prop(D, {arg}, {value})")
         if prop.target:
             resolves.append(f"common_target_pose({value}, {_var(arg)})")
-    body = ["motion_desig(D)", f"desig_prop(D, type, {_atom(motion.type)})"]
-    if command.unless_all:
+    body = ["motion_desig(D)", f"desig_prop(D, type, {_atom(motion.type)})", *reads]
+    if command.unless_all:  # after the reads, so other forms fail before testing it
         both = ", ".join(f"desig_prop(D, {key}, _)" for key in command.unless_all)
         body.append(f"\\+ ({both})")
     head = f"motion_grounding(D, {command.name}({', '.join(args)}))"
-    return head + " :-\n    " + ",\n    ".join(body + reads + resolves) + "."
+    return head + " :-\n    " + ",\n    ".join(body + resolves) + "."
 
 
 def grounding_rules(motions: Iterator[MotionType] | tuple[MotionType, ...]) -> str:
