@@ -49,9 +49,11 @@ def tracing_overhead(count: int, db: Path) -> None:
     }
     times: dict[str, list[float]] = {name: [] for name in modes}
     _plan_time(scene, contextlib.nullcontext)  # warm caches (IK, meshes, KB)
-    for _ in range(count):
-        for name, around in modes.items():
-            times[name].append(_plan_time(scene, around))
+    order = list(modes)
+    for round_ in range(count):
+        shift = round_ % len(order)  # rotate who goes first: no mode always pays a warm-up
+        for name in order[shift:] + order[:shift]:
+            times[name].append(_plan_time(scene, modes[name]))
     base = statistics.median(times["untraced"])
     print(f"pick-up plan on the PR2, median of {count} interleaved runs each:")
     for name, values in times.items():
