@@ -3,6 +3,8 @@ PY ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
+ROS_STAMP := $(VENV)/.ros_installed
+ROS_DEFINITIONS := $(wildcard src/robocram/ros/definitions/*/*/*)
 
 .PHONY: demo test setup lint typecheck unit bench clean
 
@@ -13,7 +15,12 @@ $(STAMP): pyproject.toml
 	bash tools/setup_chromium.sh
 	touch $(STAMP)
 
-setup: $(STAMP)
+# robocram.ros: ROS 1 from Debian, generated control_msgs, a .pth into the venv
+$(ROS_STAMP): $(STAMP) tools/setup_ros.sh tools/generate_ros_messages.py $(ROS_DEFINITIONS)
+	bash tools/setup_ros.sh $(VENV)
+	touch $(ROS_STAMP)
+
+setup: $(STAMP) $(ROS_STAMP)
 
 demo: $(STAMP)
 	$(BIN)/python -m robocram.demo
@@ -22,10 +29,10 @@ lint: $(STAMP)
 	$(BIN)/ruff check src tests benchmarks examples tools
 	$(BIN)/ruff format --check src tests benchmarks examples tools
 
-typecheck: $(STAMP)
+typecheck: $(STAMP) $(ROS_STAMP)
 	$(BIN)/mypy
 
-unit: $(STAMP)
+unit: $(STAMP) $(ROS_STAMP)
 	$(BIN)/pytest
 
 test: lint typecheck unit

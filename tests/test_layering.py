@@ -25,6 +25,16 @@ ALLOWED: dict[str, set[str]] = {
     "plans": {"execution", "designators", "logic", "tf"},
     "traces": {"world", "execution", "designators", "robots", "logic", "tf"},
     "viewer": {"traces", "world", "execution", "designators", "robots", "logic", "tf"},
+    "ros": {
+        "projection",
+        "world",
+        "kinematics",
+        "execution",
+        "designators",
+        "robots",
+        "logic",
+        "tf",
+    },
 }
 
 

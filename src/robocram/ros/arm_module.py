@@ -1,0 +1,114 @@
+"""The arms of a robot behind ROS: IK on the plan side, ``FollowJointTrajectory`` goals.
+
+``move_tcp`` reads the joint states and the base pose from ROS, solves IK (pinocchio,
+seeded with the current joints, first with the torso held, then free) and sends the torso
+and arm trajectories; the reached tool frame is then read from tf and checked against the
+target (1 cm / 0.05 rad, as in projection). Collision avoidance is the robot's motion
+planner's job on a real robot (CRAM hands this to giskard or MoveIt), so the collision
+mode is passed on but not checked here.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from robocram.execution.failures import ManipulationGoalNotReached, ManipulationPoseUnreachable
+from robocram.kinematics import IKResult, solve_ik
+from robocram.projection.arm import (
+    IK_TIMEOUT,
+    ORIENTATION_TOLERANCE,
+    POSITION_TOLERANCE,
+    joint_values,
+)
+from robocram.ros.process_modules import Handler, RosProcessModule
+from robocram.tf import Pose, PoseStamped
+
+TORSO_MOVE = 1e-4  # [m | rad] IK torso changes smaller than this are not sent
+
+
+class ArmPM(RosProcessModule):
+    """The arms: ``move_tcp`` and ``move_joints``, one arm or both."""
+
+    name = "ros_arms"
+
+    def handlers(self) -> dict[str, Handler]:
+        """Command table."""
+        return {
+            "move_tcp/3": self.move_tcp,
+            "move_tcp_both/3": lambda left, right, mode: (
+                self.move_tcp("left", left, mode),
+                self.move_tcp("right", right, mode),
+            ),
+            "move_joints/2": self.move_joints,
+            "move_joints_both/2": lambda left, right: (
+                self.move_joints("left", left),
+                self.move_joints("right", right),
+            ),
+        }
+
+    def _solve(self, arm: str, target_in_base: Pose) -> IKResult:
+        desc = self.client.desc
+        seed = self.client.actuated_joint_states()
+        result = IKResult(False)
+        for use_torso in [False, True] if desc.torso_joint is not None else [False]:
+            result = solve_ik(
+                desc, arm, target_in_base, seed=seed, use_torso=use_torso, timeout=IK_TIMEOUT
+            )
+            if result.success:
+                break
+        return result
+
+    def move_tcp(
+        self, arm: str, target: PoseStamped | Any, collision_mode: str = "avoid_all"
+    ) -> Pose:
+        """Put ``arm``'s tool frame at ``target``; return the reached pose in the fixed frame."""
+        client = self.client
+        spec = client.desc.arms[arm]
+        target_in_map = client.in_map(target)
+        result = self._solve(arm, client.base_pose().inverse() * target_in_map)
+        if not result.success:
+            raise ManipulationPoseUnreachable(
+                f"{client.name}'s {arm} arm cannot reach {target_in_map} (map); best IK "
+                f"configuration misses by {result.position_error:.3f} m",
+                arm=arm,
+                target=target,
+            )
+        solution = dict(result.joint_positions)
+        torso = client.desc.torso_joint
+        if torso in solution:
+            value = solution.pop(torso)
+            if abs(value - client.joint_states()[torso]) > TORSO_MOVE:
+                self._send("torso", {torso: value}, arm, target)
+        self._send(f"arm({arm})", {j: solution[j] for j in spec.joints}, arm, target)
+        reached = client.frame_pose(spec.tool_frame)
+        error = (reached.distance_to(target_in_map), reached.angle_to(target_in_map))
+        if error[0] > POSITION_TOLERANCE or error[1] > ORIENTATION_TOLERANCE:
+            raise ManipulationGoalNotReached(
+                f"{client.name}'s {arm} tool frame stopped {error[0]:.3f} m / {error[1]:.3f} rad "
+                "from its target",
+                arm=arm,
+                target=target,
+                reached=reached,
+                error=error,
+            )
+        return reached
+
+    def move_joints(self, arm: str, configuration: object) -> dict[str, float]:
+        """Move ``arm``'s joints to a ``{joint: value}`` or ``[[joint, value], ...]`` config."""
+        values = joint_values(configuration)
+        allowed = set(self.client.desc.arms[arm].joints)
+        unknown = sorted(set(values) - allowed)
+        if unknown:
+            raise ValueError(
+                f"joints {unknown} are not in {self.client.name}'s {arm} arm {sorted(allowed)}"
+            )
+        self._send(f"arm({arm})", values, arm, values)
+        joints = self.client.joint_states()
+        return {j: joints[j] for j in values}
+
+    def _send(self, resource: str, goal: dict[str, float], arm: str, target: Any) -> None:
+        self.client.follow_joints(
+            resource,
+            goal,
+            lambda text: ManipulationGoalNotReached(text, arm=arm, target=target),
+        )

@@ -1,0 +1,34 @@
+"""Is the ROS extra installed? Checked when robocram.ros is imported, so the error says how.
+
+The plan-side code never imports rospy itself (our ROS node runs in a child process), but
+without the Debian packages and the generated messages nothing here can work, so the
+package refuses to import with :class:`RosExtraMissing` naming the missing module.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+
+from robocram.ros.errors import INSTALL_HINT, RosExtraMissing
+
+REQUIRED = (
+    "rospy",
+    "actionlib",
+    "tf2_ros",
+    "move_base_msgs",
+    "sensor_msgs",
+    "control_msgs",
+    "robocram_msgs",
+)
+
+
+def missing_modules() -> list[str]:
+    """The modules of the ROS extra that cannot be found."""
+    return [name for name in REQUIRED if importlib.util.find_spec(name) is None]
+
+
+def require_ros_extra() -> None:
+    """Raise :class:`RosExtraMissing` unless every module of the extra is importable."""
+    missing = missing_modules()
+    if missing:
+        raise RosExtraMissing(f"robocram.ros needs {', '.join(missing)}; {INSTALL_HINT}")

@@ -1,0 +1,96 @@
+"""Start the projection driver node as a process and stop it by its PID (tests, demos, benchmarks).
+
+``with DriverProcess(master_uri, robot="pr2", time_scale=0.0) as driver:`` waits until
+the node printed ``ready``; ``driver.kill()`` ends it at once (a robot dying mid-goal);
+leaving the block stops it if it still runs. Its output goes to a log file, never a pipe
+that could fill up and block it.
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+from types import TracebackType
+
+from robocram.ros.errors import RosNodeError
+
+START_TIMEOUT = 60.0  # [s]
+STOP_TIMEOUT = 10.0  # [s]
+
+
+class DriverProcess:
+    """``python -m robocram.ros.driver`` with the given options, as a context manager."""
+
+    def __init__(
+        self,
+        master_uri: str,
+        robot: str = "pr2",
+        base_speed: float = 0.0,
+        time_scale: float = 0.0,
+        fault: str = "none",
+        ros_facts: Path | None = None,
+    ) -> None:
+        self.args = [
+            sys.executable, "-m", "robocram.ros.driver", "--robot", robot,
+            "--master-uri", master_uri, "--base-speed", str(base_speed),
+            "--time-scale", str(time_scale), "--fault", fault,
+        ]  # fmt: skip
+        if ros_facts is not None:
+            self.args += ["--ros-facts", str(ros_facts)]
+        self.master_uri = master_uri
+        self.process: subprocess.Popen[bytes] | None = None
+        self._log = tempfile.NamedTemporaryFile(  # noqa: SIM115 - closed by stop()
+            prefix="robocram-driver-", suffix=".log"
+        )
+
+    @property
+    def log(self) -> str:
+        """What the driver printed so far."""
+        return Path(self._log.name).read_text(errors="replace")
+
+    def start(self) -> DriverProcess:
+        """Start the node and wait for its ``ready`` line."""
+        env = dict(os.environ, ROS_MASTER_URI=self.master_uri)
+        self.process = subprocess.Popen(
+            self.args, stdout=self._log, stderr=subprocess.STDOUT, env=env
+        )
+        deadline = time.monotonic() + START_TIMEOUT
+        while "ready" not in self.log:
+            if self.process.poll() is not None or time.monotonic() > deadline:
+                self.stop()
+                raise RosNodeError(f"the driver did not start ({' '.join(self.args)}):\n{self.log}")
+            time.sleep(0.05)
+        return self
+
+    def kill(self) -> None:
+        """End the driver at once (SIGKILL), as a crash would."""
+        if self.process is not None and self.process.poll() is None:
+            self.process.kill()
+            self.process.wait()
+
+    def stop(self) -> None:
+        """Ask the driver to end (SIGTERM), kill it if it does not, and wait for it."""
+        process = self.process
+        if process is not None and process.poll() is None:
+            process.terminate()
+            try:
+                process.wait(STOP_TIMEOUT)
+            except subprocess.TimeoutExpired:
+                process.kill()
+                process.wait()
+        self._log.close()
+
+    def __enter__(self) -> DriverProcess:
+        return self.start()
+
+    def __exit__(
+        self,
+        exc_type: type[BaseException] | None,
+        exc: BaseException | None,
+        traceback: TracebackType | None,
+    ) -> None:
+        self.stop()

@@ -1,0 +1,168 @@
+"""What the driver does with each kind of goal, on the projected robot of its world.
+
+Each function takes the goal message and a :class:`GoalContext` and returns
+``(succeeded, result fields, status text)``; ``None`` means the goal was preempted. They
+reuse projection's low-level functions, so a robot behind ROS behaves as in projection.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from robocram.designators import ObjectDesignator
+from robocram.execution.failures import GripperClosedCompletely, PlanFailure
+from robocram.projection import ProjectedRobot
+from robocram.projection.gripper import grip, gripper_joints, open_gripper, set_gripper
+from robocram.projection.navigation import drive
+from robocram.projection.neck import look_at
+from robocram.projection.perception import visible_matches
+from robocram.ros.driver.motion import MotionOptions, Stepper, base_motion, joint_motion
+from robocram.tf import Pose, PoseStamped, pose_stamped_to_ros
+
+Outcome = tuple[bool, dict[str, Any], str] | None
+INVALID_JOINTS = -2
+GOAL_TOLERANCE_VIOLATED = -5
+GRIP_TOLERANCE = 1e-6  # [rad | m] a command this close to the lower limit closes fully
+
+
+@dataclass
+class GoalContext:
+    """The robot, its motion options and the stepper watching the goal's preemption."""
+
+    robot: ProjectedRobot
+    options: MotionOptions
+    stepper: Stepper
+
+
+def _pose(msg: Any) -> Pose:
+    p, q = msg.position, msg.orientation
+    return Pose((p.x, p.y, p.z), (q.x, q.y, q.z, q.w))
+
+
+def _stamped_in_map(robot: ProjectedRobot, frame: str, pose: Pose) -> Pose:
+    return robot.in_map(PoseStamped.from_pose(frame or "map", pose))
+
+
+def move_base(goal: Any, ctx: GoalContext) -> Outcome:
+    """``move_base_msgs/MoveBase``: refuse a goal in collision, else drive straight there."""
+    target = goal.target_pose
+    robot = ctx.robot
+    with ctx.stepper.lock:
+        in_map = _stamped_in_map(robot, target.header.frame_id, _pose(target.pose))
+        start = robot.base_pose()
+        try:
+            drive(robot, in_map)  # checks the goal pose; leaves the robot where it was if bad
+        except PlanFailure as failure:
+            return False, {}, str(failure)
+        robot.world.set_pose(robot.name, start)
+        duration, step = base_motion(robot, in_map, ctx.options)
+    if not ctx.stepper.run(duration, step):
+        return None
+    with ctx.stepper.lock:
+        try:
+            reached = drive(robot, in_map)
+        except PlanFailure as failure:  # something moved into the way meanwhile
+            return False, {}, str(failure)
+    return True, {}, f"reached {reached.position}"
+
+
+def follow_joint_trajectory(goal: Any, ctx: GoalContext) -> Outcome:
+    """``control_msgs/FollowJointTrajectory``: play the points, fail on limits or bad joints."""
+    names = list(goal.trajectory.joint_names)
+    with ctx.stepper.lock:
+        known = ctx.robot.world.joint_states(ctx.robot.name)
+    unknown = [n for n in names if n not in known]
+    if unknown or not goal.trajectory.points:
+        text = f"unknown joints {unknown}" if unknown else "the trajectory has no points"
+        return False, {"error_code": INVALID_JOINTS, "error_string": text}, text
+    elapsed = 0.0
+    for point in goal.trajectory.points:
+        target = dict(zip(names, map(float, point.positions), strict=True))
+        seconds = point.time_from_start.to_sec() - elapsed
+        elapsed = point.time_from_start.to_sec()
+        with ctx.stepper.lock:
+            duration, step = joint_motion(ctx.robot, target, seconds, ctx.options)
+        if not ctx.stepper.run(duration, step):
+            return None
+        with ctx.stepper.lock:
+            clamped = ctx.robot.world.set_joint_states(ctx.robot.name, target)
+        if clamped:
+            text = "joint goals outside the limits, clamped: " + ", ".join(
+                f"{c.name}={c.requested} not in [{c.lower}, {c.upper}]" for c in clamped
+            )
+            return False, {"error_code": GOAL_TOLERANCE_VIOLATED, "error_string": text}, text
+    return True, {"error_code": 0}, ""
+
+
+def point_head(goal: Any, ctx: GoalContext) -> Outcome:
+    """``control_msgs/PointHead``: aim the camera at the target point."""
+    point = goal.target.point
+    with ctx.stepper.lock:
+        robot = ctx.robot
+        target = _stamped_in_map(
+            robot, goal.target.header.frame_id, Pose((point.x, point.y, point.z))
+        )
+        try:
+            look_at(robot, target.position)
+        except PlanFailure as failure:
+            return False, {}, str(failure)
+        camera = robot.world.camera(robot.name).pose.matrix()
+    wanted = np.subtract(target.position, camera[:3, 3])
+    cos = float(camera[:3, 2] @ wanted) / max(float(np.linalg.norm(wanted)), 1e-9)
+    return True, {}, f"pointing angle error {math.acos(max(-1.0, min(1.0, cos))):.4f} rad"
+
+
+def gripper_command(goal: Any, ctx: GoalContext, arm: str) -> Outcome:
+    """``control_msgs/GripperCommand`` on ``arm``'s gripper joint; closing grips what is there.
+
+    Positions are the gripper joint's value [rad | m]. Closing fully grips: with an object
+    between the fingers they stop on it (``stalled``) and it is held; opening lets go.
+    """
+    robot, position = ctx.robot, float(goal.command.position)
+    with ctx.stepper.lock:
+        joint = gripper_joints(robot, arm)[0]
+        limits = robot.world.joint_limits(robot.name, joint)
+        stalled = False
+        try:
+            if position <= limits.lower + GRIP_TOLERANCE:
+                stalled = bool(grip(robot, arm))
+            elif position >= limits.upper - GRIP_TOLERANCE:
+                open_gripper(robot, arm)
+            else:
+                set_gripper(robot, arm, position)
+        except GripperClosedCompletely:
+            stalled = False
+        except PlanFailure as failure:
+            return False, {}, str(failure)
+        reached = robot.world.joint_states(robot.name)[joint]
+    effort = float(goal.command.max_effort) if stalled else 0.0
+    result = {
+        "position": reached,
+        "effort": effort,
+        "stalled": stalled,
+        "reached_goal": abs(reached - position) < 1e-3,
+    }
+    return True, result, "holding an object" if stalled else ""
+
+
+def detect_objects(goal: Any, ctx: GoalContext) -> Outcome:
+    """``robocram_msgs/DetectObjects``: the visible objects matching type and name."""
+    wanted = {k: v for k, v in (("type", goal.object_type), ("name", goal.object_name)) if v}
+    robot = ctx.robot
+    with ctx.stepper.lock:
+        seen = visible_matches(robot, ObjectDesignator(**wanted))
+        objects = [
+            {
+                "name": obj.name,
+                "type": obj.type,
+                "pose": pose_stamped_to_ros(
+                    PoseStamped.from_pose(robot.base_frame, robot.in_base(robot.world.pose(obj)))
+                ),
+            }
+            for obj in seen
+        ]
+    return True, {"objects": objects}, f"{len(objects)} objects seen"

@@ -1,0 +1,149 @@
+"""A ROS driver of ours: serves a robot's ROS interfaces by driving a projection world.
+
+For tests and demos the robot behind real ROS is then a simulated one: the action
+servers named by the robot's ``ros_action/4`` facts move the projected robot (as
+``goals.py`` says per action type), and ``/joint_states`` plus ``/tf`` (every robot link
+and object in ``map``) are published at ``PUBLISH_RATE`` and after every goal, before its
+result. ``fault`` makes every goal end badly on purpose, to exercise clients:
+``"silent"`` never answers (until cancelled), ``"abort"`` aborts with a status text.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Callable
+from functools import partial
+from typing import Any
+
+from robocram.projection import ProjectedRobot, WorldFrames
+from robocram.ros.driver import goals
+from robocram.ros.driver.motion import MotionOptions, Stepper
+from robocram.ros.message_dicts import message_class, to_message
+from robocram.ros.ros_config import RosConfig
+from robocram.world import World
+
+PUBLISH_RATE = 30.0  # [Hz]
+FAULTS = ("none", "silent", "abort")
+Handler = Callable[[Any, goals.GoalContext], goals.Outcome]
+
+
+def _handler(resource: str, action_type: str) -> Handler:
+    if action_type == "control_msgs/GripperCommand":
+        arm = resource.removeprefix("gripper(").removesuffix(")")
+        return partial(goals.gripper_command, arm=arm)
+    return {
+        "move_base_msgs/MoveBase": goals.move_base,
+        "control_msgs/FollowJointTrajectory": goals.follow_joint_trajectory,
+        "control_msgs/PointHead": goals.point_head,
+        "robocram_msgs/DetectObjects": goals.detect_objects,
+    }[action_type]
+
+
+class ProjectionDriver:
+    """The action servers and state publishers of one projected robot (call ``start``)."""
+
+    def __init__(
+        self,
+        world: World,
+        config: RosConfig,
+        options: MotionOptions | None = None,
+        fault: str = "none",
+    ) -> None:
+        if fault not in FAULTS:
+            raise ValueError(f"driver fault {fault!r} is none of {FAULTS}")
+        self.world = world
+        self.robot = ProjectedRobot.of(world, config.robot)
+        self.config = config
+        self.options = options or MotionOptions()
+        self.fault = fault
+        self.lock = threading.Lock()
+        self.frames = WorldFrames(world)
+        self._servers: list[Any] = []
+        self._publishers: dict[str, Any] = {}
+
+    def start(self) -> None:
+        """Advertise the state topics and start one action server per configured server."""
+        import actionlib
+        import rospy
+        from sensor_msgs.msg import JointState
+        from tf2_msgs.msg import TFMessage
+
+        self._publishers = {
+            "joints": rospy.Publisher(self.config.joint_states_topic, JointState, queue_size=10),
+            "tf": rospy.Publisher("/tf", TFMessage, queue_size=10),
+        }
+        served: dict[str, tuple[str, str]] = {}
+        for interface in self.config.actions.values():
+            served.setdefault(interface.server, (interface.resource, interface.action_type))
+        for server, (resource, action_type) in served.items():
+            action = actionlib.SimpleActionServer(
+                server, message_class(f"{action_type}Action"), auto_start=False
+            )
+            handler = _handler(resource, action_type)
+            action.register_goal_callback(partial(self._on_goal, action, action_type, handler))
+            action.start()
+            self._servers.append(action)
+        rospy.Timer(rospy.Duration(1.0 / PUBLISH_RATE), lambda _: self.publish_state())
+
+    def _on_goal(self, server: Any, action_type: str, handler: Handler) -> None:
+        goal = server.accept_new_goal()
+        threading.Thread(
+            target=self._execute, args=(server, action_type, handler, goal), daemon=True
+        ).start()
+
+    def _execute(self, server: Any, action_type: str, handler: Handler, goal: Any) -> None:
+        import rospy
+
+        stepper = Stepper(self.lock, server.is_preempt_requested)
+        result_type = f"{action_type}Result"
+        if self.fault == "silent":
+            while not server.is_preempt_requested() and not rospy.is_shutdown():
+                rospy.sleep(0.02)
+            outcome: goals.Outcome = None
+        elif self.fault == "abort":
+            outcome = (False, {}, "the driver aborts every goal (fault='abort')")
+        else:
+            outcome = self._handle(handler, goal, stepper)
+        self.publish_state()
+        if outcome is None:
+            server.set_preempted(to_message(result_type, {}), "cancelled; stopped where it was")
+            return
+        succeeded, result, text = outcome
+        message = to_message(result_type, result)
+        if succeeded:
+            server.set_succeeded(message, text)
+        else:
+            server.set_aborted(message, text)
+
+    def _handle(self, handler: Handler, goal: Any, stepper: Stepper) -> goals.Outcome:
+        """Run the handler; an error in it aborts the goal with the error as status text."""
+        try:
+            return handler(goal, goals.GoalContext(self.robot, self.options, stepper))
+        except Exception as err:  # reported to the client, never a goal left hanging
+            return False, {}, f"driver error: {type(err).__name__}: {err}"
+
+    def publish_state(self) -> None:
+        """Publish the joint states and every frame of the world in ``map`` now."""
+        import rospy
+        from geometry_msgs.msg import TransformStamped
+        from sensor_msgs.msg import JointState
+        from tf2_msgs.msg import TFMessage
+
+        with self.lock:
+            joints = self.world.joint_states(self.robot.name)
+            poses = self.frames.frame_poses()
+        stamp = rospy.Time.now()
+        state = JointState(name=list(joints), position=list(joints.values()))
+        state.header.stamp = stamp
+        transforms = []
+        for frame, pose in poses.items():
+            t = TransformStamped()
+            t.header.stamp, t.header.frame_id, t.child_frame_id = stamp, "map", frame
+            t.transform.translation.x, t.transform.translation.y, t.transform.translation.z = (
+                pose.position
+            )
+            r = t.transform.rotation
+            r.x, r.y, r.z, r.w = pose.orientation
+            transforms.append(t)
+        self._publishers["tf"].publish(TFMessage(transforms=transforms))
+        self._publishers["joints"].publish(state)

@@ -1,0 +1,41 @@
+"""Errors of robocram.ros: set-up and configuration errors, and the lost-connection failure.
+
+``RosError`` is the root of what goes wrong before or around a plan (the extra is not
+installed, facts are missing, the ROS node cannot start). What goes wrong while a plan
+runs is a plan failure: a resource's own failure class for ABORTED and REJECTED goals,
+``ActionlibActionTimedOut`` for goals that exceed their time, ``RosConnectionLost`` when
+the action server or our ROS node goes away mid-goal.
+"""
+
+from __future__ import annotations
+
+from robocram.execution.failures import LowLevelFailure
+
+INSTALL_HINT = (
+    "install it with `make setup` (or `bash tools/setup_ros.sh .venv` as root): it "
+    "apt-get installs ROS 1 from Debian, generates control_msgs and puts both on the venv's path"
+)
+
+
+class RosError(Exception):
+    """Root of robocram.ros's set-up and configuration errors."""
+
+
+class RosExtraMissing(RosError, ImportError):
+    """The ROS 1 Python packages robocram.ros needs are not importable."""
+
+
+class RosConfigError(RosError):
+    """A robot's ROS facts (action servers, topics, timeouts) are missing or wrong."""
+
+
+class RosNodeError(RosError):
+    """Our ROS node could not start or answer (no master, node process died)."""
+
+
+class RosConnectionLost(LowLevelFailure):
+    """The action server (or our ROS node) went away while a goal was running."""
+
+    fields = ("server", "reason")
+    summary = "the connection to the ROS action server was lost"
+    hint = "check that the robot's driver and the ROS master are running, then retry"

@@ -1,0 +1,234 @@
+"""The process modules of a robot behind ROS: one per resource, each sending action goals.
+
+They execute the same command terms as projection's modules (``common_motions.pl``):
+``move_base(Pose)``, ``move_torso(Value)``, ``move_head(pose | frame | direction, X)``,
+``detect(ObjectDesig)``, ``move_gripper_joint(Arm, open | close | grip | Position,
+Effort)``, ``move_tcp(Arm, Pose, Mode)``, ``move_tcp_both``, ``move_joints(Arm, Config)``,
+``move_joints_both``. Which server serves a resource comes from the robot's ROS facts.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any, ClassVar
+
+import numpy as np
+
+from robocram.designators import ObjectDesignator, Quantifier
+from robocram.execution import ProcessModule
+from robocram.execution.failures import (
+    GripperClosedCompletely,
+    GripperGoalNotReached,
+    NavigationGoalNotReached,
+    PerceptionObjectNotFound,
+    PtuGoalNotReached,
+    TorsoGoalNotReached,
+)
+from robocram.logic import Term
+from robocram.projection import PerceivedObject
+from robocram.ros.errors import RosConfigError
+from robocram.ros.head_aim import pan_tilt_towards
+from robocram.ros.ros_robot_client import RosRobotClient
+from robocram.tf import Pose, PoseStamped, pose_stamped_from_ros, pose_to_ros
+
+Handler = Callable[..., Any]
+DIRECTION_REACH = 100.0  # [m] looking along a direction aims at a point this far away
+POINTING_AXIS = {"x": 0.0, "y": 0.0, "z": 1.0}  # the optical axis of camera frames
+
+
+class RosProcessModule(ProcessModule):
+    """A process module of a robot behind ROS: dispatches command terms to handlers."""
+
+    name: ClassVar[str] = ""
+
+    def __init__(self, client: RosRobotClient) -> None:
+        super().__init__()
+        self.client = client
+
+    def handlers(self) -> dict[str, Handler]:
+        """Map ``name/arity`` of each command this module executes to its handler."""
+        raise NotImplementedError
+
+    def execute(self, command: Any) -> Any:
+        """Send the goals that carry out ``command``."""
+        table = self.handlers()
+        if isinstance(command, Term):
+            handler = table.get(f"{command.name}/{command.arity}")
+            if handler is not None:
+                return handler(*command.args)
+        raise self.unsupported(command, table)
+
+
+class NavigationPM(RosProcessModule):
+    """The base over ``move_base_msgs/MoveBase``: ``move_base(Pose)``."""
+
+    name = "ros_navigation"
+
+    def handlers(self) -> dict[str, Handler]:
+        """Command table."""
+        return {"move_base/1": self._move_base}
+
+    def _move_base(self, target: PoseStamped | Any) -> Pose:
+        goal_in_map = self.client.in_map(target)
+        goal = {
+            "target_pose": {
+                "header": {"frame_id": self.client.fixed_frame},
+                "pose": pose_to_ros(goal_in_map),
+            }
+        }
+        self.client.run(
+            "navigation",
+            goal,
+            lambda text: NavigationGoalNotReached(text, target=goal_in_map),
+        )
+        return self.client.base_pose()
+
+
+class TorsoPM(RosProcessModule):
+    """The torso over ``FollowJointTrajectory``: ``move_torso(Value)``."""
+
+    name = "ros_torso"
+
+    def handlers(self) -> dict[str, Handler]:
+        """Command table."""
+        return {"move_torso/1": self._move_torso}
+
+    def _move_torso(self, value: float) -> float:
+        joint = self.client.desc.torso_joint
+        if joint is None:
+            raise RosConfigError(f"{self.client.name} has no torso joint; it cannot move one")
+        goal = float(value)
+        self.client.follow_joints(
+            "torso", {joint: goal}, lambda text: TorsoGoalNotReached(text, goal=goal)
+        )
+        return self.client.joint_states()[joint]
+
+
+class PtuPM(RosProcessModule):
+    """The head: ``move_head(pose | frame | direction, X)`` over PointHead or pan/tilt joints."""
+
+    name = "ros_ptu"
+
+    def handlers(self) -> dict[str, Handler]:
+        """Command table."""
+        return {"move_head/2": self._move_head}
+
+    def _target(self, mode: str, goal: Any) -> tuple[float, float, float]:
+        client = self.client
+        if mode == "pose":
+            return client.in_map(goal).position
+        if mode == "frame":
+            return client.frame_pose(str(goal)).position
+        if mode == "direction":
+            vector = goal.position if isinstance(goal, PoseStamped) else goal
+            d = np.asarray(vector, float)
+            if d.shape != (3,) or np.linalg.norm(d) < 1e-9:
+                raise ValueError(f"looking direction must be a non-zero 3-D vector, got {vector}")
+            base = client.base_pose().matrix()[:3, :3]
+            camera = np.asarray(client.frame_pose(client.desc.cameras[0].frame).position)
+            far = camera + DIRECTION_REACH * (base @ (d / np.linalg.norm(d)))
+            return (float(far[0]), float(far[1]), float(far[2]))
+        raise ValueError(f"move_head mode {mode!r} is none of pose, frame, direction")
+
+    def _move_head(self, mode: str, goal: Any) -> dict[str, float]:
+        client = self.client
+        target = self._target(mode, goal)
+        failure = lambda text: PtuGoalNotReached(text, target=target)  # noqa: E731
+        interface = client.config.action("head")
+        if interface.action_type == "control_msgs/PointHead":
+            x, y, z = target
+            camera = client.desc.cameras[0].frame
+            point_head = {
+                "target": {
+                    "header": {"frame_id": client.fixed_frame},
+                    "point": {"x": x, "y": y, "z": z},
+                },
+                "pointing_axis": POINTING_AXIS,
+                "pointing_frame": camera,
+            }
+            client.run("head", point_head, failure)
+        else:
+            joints = client.actuated_joint_states()
+            angles = pan_tilt_towards(client.desc, joints, client.base_pose(), target)
+            client.follow_joints("head", angles, failure)
+        pt = client.desc.pan_tilt
+        joints = client.joint_states()
+        return {j: joints[j] for j in ((pt.pan_joint, pt.tilt_joint) if pt else ())}
+
+
+class PerceptionPM(RosProcessModule):
+    """The camera over ``robocram_msgs/DetectObjects``: ``detect(ObjectDesig)``."""
+
+    name = "ros_perception"
+
+    def handlers(self) -> dict[str, Handler]:
+        """Command table."""
+        return {"detect/1": self._detect}
+
+    def _detect(self, designator: Any) -> ObjectDesignator | list[ObjectDesignator]:
+        if not isinstance(designator, ObjectDesignator):
+            raise TypeError(
+                f"detecting needs an object designator (an.object(type=...)), got {designator!r}"
+            )
+        goal = {
+            "object_type": str(designator.get("type") or ""),
+            "object_name": str(designator.get("name") or ""),
+        }
+        notfound = lambda text: PerceptionObjectNotFound(text, object_designator=designator)  # noqa: E731
+        outcome = self.client.run("perception", goal, notfound)
+        objects = outcome.result.get("objects", [])
+        if not objects:
+            raise notfound(f"{self.client.name} sees no object fitting {designator.description}")
+        seen = [
+            PerceivedObject(str(o["name"]), str(o["type"]), pose_stamped_from_ros(o["pose"]))
+            for o in objects
+        ]
+        if designator.quantifier is Quantifier.ALL:
+            return [ObjectDesignator(type=s.type, name=s.name, pose=s.pose, data=s) for s in seen]
+        first = seen[0]
+        return designator.make_effective(first, type=first.type, name=first.name, pose=first.pose)
+
+
+class GripperPM(RosProcessModule):
+    """The grippers over ``GripperCommand``: ``move_gripper_joint(Arm, Action, Effort)``."""
+
+    name = "ros_grippers"
+
+    def handlers(self) -> dict[str, Handler]:
+        """Command table."""
+        return {"move_gripper_joint/3": self._move}
+
+    def _limits(self, arm: str) -> tuple[float, float]:
+        spec = self.client.desc.arms[arm]
+        model = self.client.desc.model
+        joint = model.joints[spec.gripper_joints[0]] if model and spec.gripper_joints else None
+        if joint is None or joint.lower is None or joint.upper is None:
+            raise RosConfigError(f"{self.client.name}'s {arm} arm has no bounded gripper joint")
+        return joint.lower, joint.upper
+
+    def _move(self, arm: str, action: Any, effort: Any) -> float:
+        lower, upper = self._limits(str(arm))
+        positions = {"open": upper, "close": lower, "grip": lower}
+        if action in positions:
+            position = positions[action]
+        elif isinstance(action, int | float):
+            position = float(action)
+        else:
+            raise ValueError(f"gripper goal {action!r} is none of open, close, grip or a position")
+        force = (
+            float(effort) if isinstance(effort, int | float) else self.client.config.gripper_effort
+        )
+        goal = {"command": {"position": position, "max_effort": force}}
+        outcome = self.client.run(
+            f"gripper({arm})",
+            goal,
+            lambda text: GripperGoalNotReached(text, gripper=arm, goal=position),
+        )
+        reached = float(outcome.result.get("position", position))
+        if action == "grip" and not outcome.result.get("stalled", False):
+            raise GripperClosedCompletely(
+                f"{self.client.name}'s {arm} gripper closed on nothing (not stalled)",
+                gripper=arm,
+                position=reached,
+            )
+        return reached

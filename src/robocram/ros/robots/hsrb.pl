@@ -1,0 +1,21 @@
+% The HSR's ROS interfaces (Toyota's hsrb controllers). The torso (arm_lift_joint) is part
+% of the arm trajectory controller, the head is a pan/tilt trajectory controller.
+ros_action(hsrb, navigation, '/move_base/move', 'move_base_msgs/MoveBase').
+ros_action(hsrb, torso, '/hsrb/arm_trajectory_controller/follow_joint_trajectory',
+           'control_msgs/FollowJointTrajectory').
+ros_action(hsrb, arm(arm), '/hsrb/arm_trajectory_controller/follow_joint_trajectory',
+           'control_msgs/FollowJointTrajectory').
+ros_action(hsrb, head, '/hsrb/head_trajectory_controller/follow_joint_trajectory',
+           'control_msgs/FollowJointTrajectory').
+ros_action(hsrb, gripper(arm), '/hsrb/gripper_controller/gripper_action',
+           'control_msgs/GripperCommand').
+ros_action(hsrb, perception, '/robocram/detect_objects', 'robocram_msgs/DetectObjects').
+
+ros_topic(hsrb, joint_states, '/hsrb/joint_states').
+
+ros_action_timeout(hsrb, navigation, 120.0).
+ros_action_timeout(hsrb, Resource, 30.0) :- Resource \== navigation.
+
+ros_connection_timeout(hsrb, 2.0).
+ros_server_timeout(hsrb, 5.0).
+ros_gripper_effort(hsrb, 30.0).

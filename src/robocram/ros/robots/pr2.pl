@@ -1,0 +1,30 @@
+% The PR2's ROS interfaces, as CRAM's cram_pr2_process_modules uses them.
+% ros_action(Robot, Resource, Server, ActionType): the action server of a resource.
+% Resources: navigation, torso, head, perception, arm(Arm), gripper(Arm).
+ros_action(pr2, navigation, '/move_base', 'move_base_msgs/MoveBase').
+ros_action(pr2, torso, '/torso_controller/follow_joint_trajectory',
+           'control_msgs/FollowJointTrajectory').
+ros_action(pr2, arm(left), '/l_arm_controller/follow_joint_trajectory',
+           'control_msgs/FollowJointTrajectory').
+ros_action(pr2, arm(right), '/r_arm_controller/follow_joint_trajectory',
+           'control_msgs/FollowJointTrajectory').
+ros_action(pr2, head, '/head_traj_controller/point_head_action', 'control_msgs/PointHead').
+ros_action(pr2, gripper(left), '/l_gripper_controller/gripper_action',
+           'control_msgs/GripperCommand').
+ros_action(pr2, gripper(right), '/r_gripper_controller/gripper_action',
+           'control_msgs/GripperCommand').
+ros_action(pr2, perception, '/robocram/detect_objects', 'robocram_msgs/DetectObjects').
+
+ros_topic(pr2, joint_states, '/joint_states').
+
+% ros_action_timeout(Robot, Resource, Seconds): a goal running longer fails and is cancelled.
+ros_action_timeout(pr2, navigation, 120.0).
+ros_action_timeout(pr2, torso, 60.0).
+ros_action_timeout(pr2, Resource, 30.0) :- Resource \== navigation, Resource \== torso.
+
+% Seconds of silence (no action status) after which a running goal's connection is lost.
+ros_connection_timeout(pr2, 2.0).
+% Seconds to wait for an action server to appear before a goal fails.
+ros_server_timeout(pr2, 5.0).
+% Effort [N] the grippers grip with.
+ros_gripper_effort(pr2, 50.0).

@@ -1,0 +1,214 @@
+"""Our ROS 1 node: runs in a child process and serves the plan process over a pipe.
+
+rospy allows one node per process for the life of the process, with threads that never
+end. Running it in a child process started by :class:`Ros1Transport` keeps the plan
+process clean: when the environment exits the child leaves ROS and ends, so no thread or
+subscriber remains. The node keeps one actionlib client per configured action server,
+the latest ``/joint_states`` and a tf2 buffer fed from ``/tf``.
+
+Pipe protocol (tuples of plain values): requests ``(request_id, op, args)``; replies
+``("reply", request_id, ok, payload)``; goal ends ``("goal", goal_id, state, text, result,
+stamp)``. A goal whose server publishes no status for ``lost_after`` seconds ends LOST.
+"""
+
+from __future__ import annotations
+
+import os
+import threading
+import time
+from dataclasses import dataclass
+from multiprocessing.connection import Connection
+from typing import Any
+
+from robocram.ros.message_dicts import message_class, to_dict, to_message
+from robocram.ros.transport import GoalState
+
+MONITOR_PERIOD = 0.05  # [s] how often running goals are checked for a silent server
+TERMINAL = frozenset(state.value for state in GoalState)
+
+
+@dataclass(frozen=True)
+class NodeConfig:
+    """What the node connects to: servers -> action types, the state topic, timeouts."""
+
+    master_uri: str
+    node_name: str
+    servers: dict[str, str]  # server name -> action type, e.g. "control_msgs/PointHead"
+    joint_states_topic: str
+    base_frame: str  # the robot's base frame, waited for in tf after each motion
+    connect_timeout: float  # [s] to wait for an action server to appear
+    lost_after: float  # [s] of status silence that count as a lost connection
+
+
+class _Server:
+    """One action server: its actionlib client and when its status was last heard."""
+
+    def __init__(self, name: str, action_type: str) -> None:
+        import actionlib
+        import rospy
+        from actionlib_msgs.msg import GoalStatusArray
+
+        self.name = name
+        self.action_type = action_type
+        self.client = actionlib.SimpleActionClient(name, message_class(f"{action_type}Action"))
+        self.heard = 0.0  # monotonic [s]
+        self.goal_id: int | None = None
+        self._status = rospy.Subscriber(f"{name}/status", GoalStatusArray, self._on_status)
+
+    def _on_status(self, _: Any) -> None:
+        self.heard = time.monotonic()
+
+
+class RosNode:
+    """The node's state and request handlers; one instance per child process."""
+
+    def __init__(self, conn: Connection, config: NodeConfig) -> None:
+        import rospy
+        import tf2_ros
+        from sensor_msgs.msg import JointState
+
+        self.conn = conn
+        self.config = config
+        self._send_lock = threading.Lock()
+        self._state = threading.Condition()
+        self._joints: dict[str, float] = {}
+        self._joints_stamp = 0.0
+        self.buffer = tf2_ros.Buffer(cache_time=rospy.Duration(10.0))
+        self.listener = tf2_ros.TransformListener(self.buffer)
+        self._joint_sub = rospy.Subscriber(config.joint_states_topic, JointState, self._on_joints)
+        self.servers = {name: _Server(name, kind) for name, kind in config.servers.items()}
+        self.running = True
+
+    def send(self, message: tuple[Any, ...]) -> None:
+        """Write one message to the plan process (from any thread)."""
+        with self._send_lock:
+            self.conn.send(message)
+
+    def _on_joints(self, msg: Any) -> None:
+        with self._state:
+            self._joints.update(zip(msg.name, map(float, msg.position), strict=False))
+            self._joints_stamp = msg.header.stamp.to_sec()
+            self._state.notify_all()
+
+    def op_send_goal(self, goal_id: int, server: str, goal: dict[str, Any]) -> None:
+        """Send a goal once the server is there; its end arrives as a ``goal`` message."""
+        import rospy
+
+        entry = self.servers.get(server)
+        if entry is None:
+            raise KeyError(f"no action server {server!r} configured; have {sorted(self.servers)}")
+        if not entry.client.wait_for_server(rospy.Duration(self.config.connect_timeout)):
+            raise ConnectionError(
+                f"no action server {server!r} answered within {self.config.connect_timeout} s"
+            )
+        message = to_message(f"{entry.action_type}Goal", goal)
+        entry.heard = time.monotonic()
+        entry.goal_id = goal_id
+        entry.client.send_goal(message, done_cb=lambda state, result: self._done(entry, goal_id))
+
+    def _done(self, entry: _Server, goal_id: int) -> None:
+        import rospy
+
+        if entry.goal_id != goal_id:
+            return
+        entry.goal_id = None
+        code = entry.client.get_state()
+        state = code if code in TERMINAL else GoalState.LOST.value
+        result = entry.client.get_result()
+        payload = to_dict(result) if result is not None else {}
+        text = entry.client.get_goal_status_text()
+        self.send(("goal", goal_id, state, text, payload, rospy.get_time()))
+
+    def op_cancel(self, goal_id: int) -> None:
+        """Cancel the goal if it still runs."""
+        for entry in self.servers.values():
+            if entry.goal_id == goal_id:
+                entry.client.cancel_goal()
+
+    def op_joint_states(self) -> dict[str, float]:
+        """The latest joint positions."""
+        with self._state:
+            return dict(self._joints)
+
+    def op_wait_for_state(self, after: float, fixed: str, frame: str, timeout: float) -> bool:
+        """Wait for joint states stamped after ``after`` and for ``frame`` in ``fixed`` then."""
+        import rospy
+
+        deadline = time.monotonic() + timeout
+        with self._state:
+            while self._joints_stamp <= after:
+                if not self._state.wait(deadline - time.monotonic()):
+                    return False
+        remaining = max(0.0, deadline - time.monotonic())
+        stamp = rospy.Time.from_sec(after)
+        return bool(self.buffer.can_transform(fixed, frame, stamp, rospy.Duration(remaining)))
+
+    def op_lookup(self, target: str, source: str) -> tuple[tuple[float, ...], tuple[float, ...]]:
+        """The latest pose of ``source`` in ``target`` as (position, quaternion)."""
+        import rospy
+
+        t = self.buffer.lookup_transform(target, source, rospy.Time(0)).transform
+        return (
+            (t.translation.x, t.translation.y, t.translation.z),
+            (t.rotation.x, t.rotation.y, t.rotation.z, t.rotation.w),
+        )
+
+    def op_frames(self) -> list[str]:
+        """Every frame in the tf buffer."""
+        return sorted(self.buffer._getFrameStrings())
+
+    def op_shutdown(self) -> None:
+        """Leave ROS; the serve loop ends after the reply."""
+        self.running = False
+
+    def monitor(self) -> None:
+        """End goals whose server has gone silent with LOST (a lost connection)."""
+        import rospy
+
+        while self.running and not rospy.is_shutdown():
+            now = time.monotonic()
+            for entry in self.servers.values():
+                goal_id = entry.goal_id
+                if goal_id is not None and now - entry.heard > self.config.lost_after:
+                    entry.goal_id = None
+                    reason = f"no status from {entry.name} for {self.config.lost_after} s"
+                    lost = GoalState.LOST.value
+                    self.send(("goal", goal_id, lost, reason, {}, rospy.get_time()))
+            time.sleep(MONITOR_PERIOD)
+
+
+def _handle(node: RosNode, request_id: int, op: str, args: tuple[Any, ...]) -> None:
+    try:
+        payload = getattr(node, f"op_{op}")(*args)
+    except Exception as err:  # the reply carries it to the plan process
+        node.send(("reply", request_id, False, f"{type(err).__name__}: {err}"))
+    else:
+        node.send(("reply", request_id, True, payload))
+
+
+BLOCKING_OPS = frozenset({"send_goal", "wait_for_state"})
+
+
+def node_main(conn: Connection, config: NodeConfig) -> None:
+    """The child process: join ROS, report ready, serve requests until shutdown."""
+    os.environ["ROS_MASTER_URI"] = config.master_uri
+    try:
+        import rospy
+
+        rospy.init_node(config.node_name, anonymous=True, disable_signals=True)
+        node = RosNode(conn, config)
+    except Exception as err:
+        conn.send(("failed", f"{type(err).__name__}: {err}"))
+        return
+    conn.send(("ready", rospy.get_name()))
+    threading.Thread(target=node.monitor, daemon=True).start()
+    while node.running:
+        try:
+            request_id, op, args = conn.recv()
+        except (EOFError, OSError):
+            break
+        if op in BLOCKING_OPS:
+            threading.Thread(target=_handle, args=(node, request_id, op, args), daemon=True).start()
+        else:
+            _handle(node, request_id, op, args)
+    rospy.signal_shutdown("robocram environment exited")

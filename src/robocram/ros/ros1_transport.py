@@ -1,0 +1,202 @@
+"""The ROS 1 transport: our node in a child process, spoken to over a pipe.
+
+``Ros1Transport.open(config)`` starts the child (``ros1_node.node_main``) and one reader
+thread that routes replies to the waiting callers and goal ends to their handles.
+``close()`` cancels running goals, asks the node to leave ROS, joins the reader thread
+and the process (killing it by PID if it does not end), so nothing keeps running. If the
+child dies, every running goal ends LOST and every request raises, never hangs.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import itertools
+import multiprocessing
+import threading
+from multiprocessing.connection import Connection
+from typing import Any
+
+from robocram.ros.errors import RosConnectionLost, RosNodeError
+from robocram.ros.ros1_node import NodeConfig, node_main
+from robocram.ros.transport import GoalHandle, GoalOutcome, GoalState, RosDict
+from robocram.tf import Pose
+
+START_TIMEOUT = 30.0  # [s] for the child to import rospy and join the master
+REPLY_TIMEOUT = 10.0  # [s] for a request that does not wait on the robot
+STOP_TIMEOUT = 5.0  # [s] for the child to leave ROS before it is killed
+
+
+class Ros1Transport:
+    """rospy + actionlib + tf2 in a child process; see :class:`~robocram.ros.Transport`."""
+
+    def __init__(self, config: NodeConfig, fixed_frame: str = "map") -> None:
+        self.config = config
+        self.fixed_frame = fixed_frame
+        self._ids = itertools.count(1)
+        self._cond = threading.Condition()
+        self._replies: dict[int, tuple[bool, Any]] = {}
+        self._goals: dict[int, GoalHandle] = {}
+        self._send_lock = threading.Lock()
+        self._dead: str | None = None
+        self._conn: Connection | None = None
+        self._process: multiprocessing.process.BaseProcess | None = None
+        self._reader: threading.Thread | None = None
+        self.node_name = ""
+
+    @classmethod
+    def open(cls, config: NodeConfig, fixed_frame: str = "map") -> Ros1Transport:
+        """Start the node process and wait until it has joined the ROS master."""
+        transport = cls(config, fixed_frame)
+        transport._start()
+        return transport
+
+    def _start(self) -> None:
+        context = multiprocessing.get_context("spawn")
+        parent, child = context.Pipe()
+        self._process = context.Process(
+            target=node_main, args=(child, self.config), name="robocram-ros-node"
+        )
+        self._process.start()
+        child.close()
+        self._conn = parent
+        if not parent.poll(START_TIMEOUT):
+            self._kill()
+            raise RosNodeError(
+                f"our ROS node did not join the master {self.config.master_uri} within "
+                f"{START_TIMEOUT} s; is roscore running there?"
+            )
+        status, detail = parent.recv()
+        if status != "ready":
+            self._kill()
+            raise RosNodeError(f"our ROS node failed to start: {detail}")
+        self.node_name = str(detail)
+        self._reader = threading.Thread(target=self._read, name="robocram-ros-reader")
+        self._reader.start()
+
+    def _read(self) -> None:
+        assert self._conn is not None
+        while True:
+            try:
+                message = self._conn.recv()
+            except (EOFError, OSError):
+                break
+            if message[0] == "reply":
+                _, request_id, ok, payload = message
+                with self._cond:
+                    self._replies[request_id] = (ok, payload)
+                    self._cond.notify_all()
+            elif message[0] == "goal":
+                _, goal_id, state, text, result, stamp = message
+                with self._cond:
+                    handle = self._goals.pop(goal_id, None)
+                if handle is not None:
+                    handle.finish(GoalOutcome(GoalState(state), text, result, stamp))
+        self._die("our ROS node process ended")
+
+    def _die(self, reason: str) -> None:
+        with self._cond:
+            self._dead = self._dead or reason
+            goals, self._goals = list(self._goals.values()), {}
+            self._cond.notify_all()
+        for handle in goals:
+            handle.finish(GoalOutcome(GoalState.LOST, reason, {}, 0.0))
+
+    def request(self, op: str, *args: Any, timeout: float = REPLY_TIMEOUT) -> Any:
+        """Run ``op`` in the node; return its payload or raise what it reported."""
+        request_id = next(self._ids)
+        self._write((request_id, op, args))
+        with self._cond:
+            if not self._cond.wait_for(
+                lambda: request_id in self._replies or self._dead is not None, timeout
+            ):
+                raise RosNodeError(f"our ROS node did not answer {op!r} within {timeout} s")
+            if request_id not in self._replies:
+                raise RosNodeError(f"our ROS node cannot answer {op!r}: {self._dead}")
+            ok, payload = self._replies.pop(request_id)
+        if not ok:
+            raise RosNodeError(f"ROS {op} failed: {payload}")
+        return payload
+
+    def _write(self, message: tuple[Any, ...]) -> None:
+        if self._conn is None or self._dead is not None:
+            raise RosNodeError(f"our ROS node is not running ({self._dead or 'not started'})")
+        try:
+            with self._send_lock:
+                self._conn.send(message)
+        except OSError as err:
+            self._die(f"pipe to our ROS node broke: {err}")
+            raise RosNodeError(f"our ROS node is gone: {err}") from err
+
+    def send_goal(self, server: str, goal: RosDict) -> GoalHandle:
+        """Send ``goal`` to ``server``; RosConnectionLost if the server is not there."""
+        handle = GoalHandle(next(self._ids), server)
+        with self._cond:
+            self._goals[handle.goal_id] = handle
+        wait = self.config.connect_timeout + REPLY_TIMEOUT
+        try:
+            self.request("send_goal", handle.goal_id, server, goal, timeout=wait)
+        except RosNodeError as err:
+            with self._cond:
+                self._goals.pop(handle.goal_id, None)
+            raise RosConnectionLost(
+                f"cannot send a goal to {server}: {err}", server=server, reason=str(err)
+            ) from err
+        return handle
+
+    def cancel_goal(self, handle: GoalHandle) -> None:
+        """Ask the server to cancel ``handle``'s goal."""
+        if self._dead is None:
+            self.request("cancel", handle.goal_id)
+
+    def wait_for_state(self, after: float, timeout: float) -> bool:
+        """Wait for joint states and the base frame's transform stamped after ``after`` [s]."""
+        base = self.config.base_frame
+        return bool(
+            self.request(
+                "wait_for_state",
+                after,
+                self.fixed_frame,
+                base,
+                timeout,
+                timeout=timeout + REPLY_TIMEOUT,
+            )
+        )
+
+    def joint_states(self) -> dict[str, float]:
+        """The latest ``/joint_states`` positions by joint name."""
+        return dict(self.request("joint_states"))
+
+    def lookup_transform(self, target_frame: str, source_frame: str) -> Pose:
+        """The latest pose of ``source_frame`` in ``target_frame`` from tf2."""
+        position, orientation = self.request("lookup", target_frame, source_frame)
+        return Pose(tuple(position), tuple(orientation))
+
+    def frames(self) -> tuple[str, ...]:
+        """Every frame in the node's tf2 buffer."""
+        return tuple(self.request("frames"))
+
+    def close(self) -> None:
+        """Cancel running goals, stop the node process and the reader thread."""
+        with self._cond:
+            running = list(self._goals.values())
+        for handle in running:
+            try:
+                self.cancel_goal(handle)
+            except RosNodeError:
+                break
+        if self._dead is None:
+            with contextlib.suppress(RosNodeError):
+                self.request("shutdown")
+        self._kill()
+
+    def _kill(self) -> None:
+        process = self._process
+        if process is not None:
+            process.join(STOP_TIMEOUT)
+            if process.is_alive():
+                process.kill()
+                process.join()
+        if self._conn is not None:
+            self._conn.close()
+        if self._reader is not None and self._reader is not threading.current_thread():
+            self._reader.join()

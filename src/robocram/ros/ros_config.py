@@ -1,0 +1,137 @@
+"""A robot's ROS interfaces, read from knowledge-base facts so new robots need no code.
+
+``robots/<robot>.pl`` holds the defaults (PR2 as in CRAM, HSR); pass other fact text to
+use other controllers. :func:`read_ros_config` asks the knowledge base and checks that
+every resource the robot's description has is served, naming the missing fact.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from importlib import resources
+from typing import Any
+
+from robocram.logic import KnowledgeBase, Term, UnknownPredicateError
+from robocram.robots import RobotDescription
+from robocram.ros.errors import RosConfigError
+
+ROS_FACTS_GROUP = "ros_interfaces"
+ACTION_TYPES = (
+    "move_base_msgs/MoveBase",
+    "control_msgs/FollowJointTrajectory",
+    "control_msgs/PointHead",
+    "control_msgs/GripperCommand",
+    "robocram_msgs/DetectObjects",
+)
+
+
+@dataclass(frozen=True)
+class ActionInterface:
+    """One resource's action server, its action type and its time budget."""
+
+    resource: str  # "navigation", "torso", "head", "perception", "arm(left)", "gripper(left)"
+    server: str
+    action_type: str
+    timeout: float  # [s]
+
+
+@dataclass(frozen=True)
+class RosConfig:
+    """Everything robocram.ros needs to know about a robot's ROS side."""
+
+    robot: str
+    actions: dict[str, ActionInterface]
+    joint_states_topic: str
+    connection_timeout: float  # [s] of status silence that count as a lost connection
+    server_timeout: float  # [s] to wait for an action server to appear
+    gripper_effort: float  # [N]
+
+    def action(self, resource: str) -> ActionInterface:
+        """The interface of ``resource``, or a RosConfigError naming the missing fact."""
+        if resource not in self.actions:
+            raise RosConfigError(
+                f"{self.robot} has no ros_action({self.robot}, {resource}, Server, Type) fact; "
+                f"add one (it serves {sorted(self.actions)})"
+            )
+        return self.actions[resource]
+
+    def servers(self) -> dict[str, str]:
+        """Every action server and its action type."""
+        return {a.server: a.action_type for a in self.actions.values()}
+
+
+def default_facts(robot: str) -> str:
+    """The packaged ROS facts of a built-in robot (``robots/<robot>.pl``)."""
+    path = resources.files("robocram.ros").joinpath("robots", f"{robot}.pl")
+    if not path.is_file():
+        raise RosConfigError(
+            f"robocram.ros ships no ROS facts for {robot!r} (have pr2, hsrb); pass ros_facts="
+            "with ros_action/4, ros_topic/3, ros_action_timeout/3 facts for it"
+        )
+    return path.read_text()
+
+
+def resource_key(term: Any) -> str:
+    """``arm(left)`` -> ``"arm(left)"``; an atom stays as it is."""
+    if isinstance(term, Term):
+        return f"{term.name}({', '.join(str(a) for a in term.args)})"
+    return str(term)
+
+
+def _first(kb: KnowledgeBase, goal: str, **bindings: Any) -> dict[str, Any] | None:
+    """The first answer, or None also when no clause of the predicate exists at all."""
+    try:
+        return kb.first(goal, **bindings)
+    except UnknownPredicateError:
+        return None
+
+
+def _number(kb: KnowledgeBase, predicate: str, robot: str, unit: str) -> float:
+    answer = _first(kb, f"{predicate}(R, S)", R=robot)
+    if answer is None:
+        raise RosConfigError(f"{robot} lacks the fact {predicate}({robot}, Value) [{unit}]")
+    return float(answer["S"])
+
+
+def _interface(kb: KnowledgeBase, robot: str, answer: dict[str, Any]) -> ActionInterface:
+    resource, server, kind = answer["Res"], str(answer["Server"]), str(answer["Type"])
+    if kind not in ACTION_TYPES:
+        raise RosConfigError(
+            f"ros_action({robot}, {resource_key(resource)}, {server}, {kind}): unknown action "
+            f"type; use one of {list(ACTION_TYPES)}"
+        )
+    timeout = _first(kb, "ros_action_timeout(R, Res, S)", R=robot, Res=resource)
+    if timeout is None:
+        raise RosConfigError(
+            f"{robot} lacks ros_action_timeout({robot}, {resource_key(resource)}, Seconds)"
+        )
+    return ActionInterface(resource_key(resource), server, kind, float(timeout["S"]))
+
+
+def read_ros_config(kb: KnowledgeBase, desc: RobotDescription) -> RosConfig:
+    """The ROS interfaces of ``desc``'s robot from the facts in ``kb``."""
+    robot = desc.name
+    actions: dict[str, ActionInterface] = {}
+    try:
+        answers = list(kb.query("ros_action(R, Res, Server, Type)", R=robot))
+    except UnknownPredicateError:
+        answers = []
+    for answer in answers:
+        interface = _interface(kb, robot, answer)
+        actions[interface.resource] = interface
+    topic = _first(kb, "ros_topic(R, joint_states, T)", R=robot)
+    if topic is None:
+        raise RosConfigError(f"{robot} lacks the fact ros_topic({robot}, joint_states, Topic)")
+    return RosConfig(
+        robot=robot,
+        actions=actions,
+        joint_states_topic=str(topic["T"]),
+        connection_timeout=_number(kb, "ros_connection_timeout", robot, "s"),
+        server_timeout=_number(kb, "ros_server_timeout", robot, "s"),
+        gripper_effort=_number(kb, "ros_gripper_effort", robot, "N"),
+    )
+
+
+def install_ros_facts(kb: KnowledgeBase, robot: str, facts: str | None = None) -> None:
+    """Load ``facts`` (default: the robot's packaged ROS facts) into ``kb``."""
+    kb.consult(facts if facts is not None else default_facts(robot), group=ROS_FACTS_GROUP)

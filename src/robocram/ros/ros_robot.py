@@ -1,0 +1,138 @@
+"""``with ros_robot("pr2", master_uri=...):`` — CRAM's ``on-real-pr2`` for any robot behind ROS.
+
+The block is a top level whose PERFORM goes to the robot's ROS process modules. Entering
+starts our ROS node (a child process) and binds a transform tree answered by tf2; leaving
+cancels what runs and stops the node, so no thread, node or subscriber is left. The
+knowledge base holds the robot's description facts, the common motion groundings, its
+ROS facts (``robots/<robot>.pl`` unless ``ros_facts`` is given) and the matching facts.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterator
+from contextlib import contextmanager
+from dataclasses import dataclass
+
+from robocram.designators import install_common_motions
+from robocram.execution import Environment, TaskTree, TopLevel, top_level
+from robocram.logic import KnowledgeBase
+from robocram.robots import RobotDescription, install_description, load_description
+from robocram.ros.arm_module import ArmPM
+from robocram.ros.errors import RosConfigError
+from robocram.ros.process_modules import (
+    GripperPM,
+    NavigationPM,
+    PerceptionPM,
+    PtuPM,
+    RosProcessModule,
+    TorsoPM,
+)
+from robocram.ros.ros_config import install_ros_facts, read_ros_config
+from robocram.ros.ros_robot_client import RosRobotClient
+from robocram.ros.ros_transform_tree import RosTransformTree
+from robocram.tf import using_transform_tree
+
+MOTION_TYPES: dict[type[RosProcessModule], tuple[str, ...]] = {
+    NavigationPM: ("going",),
+    TorsoPM: ("moving-torso",),
+    PtuPM: ("looking",),
+    PerceptionPM: ("detecting",),
+    GripperPM: ("opening", "closing", "gripping", "moving-gripper-joint"),
+    ArmPM: ("moving-tcp", "moving-arm-joints"),
+}
+RESOURCES: dict[type[RosProcessModule], str] = {
+    NavigationPM: "navigation",
+    TorsoPM: "torso",
+    PtuPM: "head",
+    PerceptionPM: "perception",
+    GripperPM: "gripper(",
+    ArmPM: "arm(",
+}
+
+
+class RosEnvironment(Environment):
+    """An environment whose process modules talk to one robot through our ROS node."""
+
+    def __init__(self, client: RosRobotClient, kb: KnowledgeBase) -> None:
+        classes = [
+            cls
+            for cls, resource in RESOURCES.items()
+            if any(key.startswith(resource) for key in client.config.actions)
+        ]
+        facts = "".join(
+            f"matching_process_module(D, {cls.name}) :- desig_prop(D, type, '{motion}').\n"
+            for cls in classes
+            for motion in MOTION_TYPES[cls]
+        ) + "".join(f"available_process_module({cls.name}).\n" for cls in classes)
+        super().__init__(
+            f"ros_{client.name}",
+            process_modules=[cls(client) for cls in classes],
+            facts=facts,
+            kb=kb,
+        )
+        self.client = client
+
+    @contextmanager
+    def running(self) -> Iterator[Environment]:
+        """Start our ROS node, then the environment; stop both on leaving."""
+        self.client.connect()
+        try:
+            with super().running() as environment:
+                yield environment
+        finally:
+            self.client.disconnect()
+
+
+def ros_environment(
+    robot: str | RobotDescription = "pr2",
+    master_uri: str | None = None,
+    ros_facts: str | None = None,
+    node_name: str = "robocram",
+) -> RosEnvironment:
+    """The environment of ``robot`` behind the ROS master at ``master_uri``.
+
+    Args:
+        master_uri: default ``$ROS_MASTER_URI``.
+        ros_facts: Prolog text with the robot's ``ros_action/4`` ... facts (docs/ros.md);
+            default: the packaged ones of a built-in robot.
+    """
+    uri = master_uri or os.environ.get("ROS_MASTER_URI")
+    if not uri:
+        raise RosConfigError("no ROS master: pass master_uri= or set ROS_MASTER_URI")
+    desc = load_description(robot)
+    kb = KnowledgeBase()
+    install_description(kb, desc)
+    install_common_motions(kb)
+    install_ros_facts(kb, desc.name, ros_facts)
+    client = RosRobotClient(desc, read_ros_config(kb, desc), uri, node_name)
+    return RosEnvironment(client, kb)
+
+
+@dataclass(frozen=True)
+class RosRun:
+    """What a ``ros_robot`` block yields: its environment, top level and frames."""
+
+    environment: RosEnvironment
+    top_level: TopLevel
+    transforms: RosTransformTree
+
+    @property
+    def tree(self) -> TaskTree:
+        """The task tree of the block (complete once the block has ended)."""
+        return self.top_level.tree
+
+
+@contextmanager
+def ros_robot(
+    robot: str | RobotDescription = "pr2",
+    master_uri: str | None = None,
+    ros_facts: str | None = None,
+    name: str = "ros-robot",
+) -> Iterator[RosRun]:
+    """Run the block as a top level on ``robot`` behind ROS (see :func:`ros_environment`)."""
+    environment = ros_environment(robot, master_uri, ros_facts)
+    transforms = RosTransformTree(lambda: environment.client.transport)
+    runner = top_level(name=name)
+    with environment, using_transform_tree(transforms), runner:
+        yield RosRun(environment, runner, transforms)

@@ -1,0 +1,138 @@
+"""The plan side of one robot behind ROS: its description, ROS facts and transport.
+
+Process modules ask it to run goals on resources and to read the robot's state. After a
+goal ends it waits for the first joint states and transforms published after the
+result, so what a plan reads next (tool poses, joint values) shows the end of the motion.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+
+from robocram.robots import RobotDescription
+from robocram.ros.errors import RosConnectionLost, RosNodeError
+from robocram.ros.goal_runner import FailureFactory, run_goal
+from robocram.ros.ros1_node import NodeConfig
+from robocram.ros.ros1_transport import Ros1Transport
+from robocram.ros.ros_config import RosConfig
+from robocram.ros.transport import GoalOutcome, RosDict, Transport
+from robocram.tf import Pose, PoseLike, PoseStamped
+
+STATE_TIMEOUT = 5.0  # [s] for the state after a goal to arrive
+DEFAULT_VELOCITY = 0.5  # [rad/s | m/s] for joints whose URDF gives no velocity limit
+MIN_DURATION = 0.1  # [s] of any trajectory
+TransportFactory = Callable[[NodeConfig], Transport]
+
+
+class RosRobotClient:
+    """One robot's ROS connection for process modules; ``connect`` / ``disconnect``."""
+
+    def __init__(
+        self,
+        desc: RobotDescription,
+        config: RosConfig,
+        master_uri: str,
+        node_name: str = "robocram",
+        fixed_frame: str = "map",
+        transport_factory: TransportFactory = Ros1Transport.open,
+    ) -> None:
+        self.desc = desc
+        self.config = config
+        self.fixed_frame = fixed_frame
+        self.node_config = NodeConfig(
+            master_uri=master_uri,
+            node_name=node_name,
+            servers=config.servers(),
+            joint_states_topic=config.joint_states_topic,
+            base_frame=desc.base_frame,
+            connect_timeout=config.server_timeout,
+            lost_after=config.connection_timeout,
+        )
+        self._factory = transport_factory
+        self._transport: Transport | None = None
+
+    @property
+    def name(self) -> str:
+        """The robot's name."""
+        return self.desc.name
+
+    def connect(self) -> None:
+        """Start the transport (our ROS node)."""
+        if self._transport is not None:
+            raise RosNodeError(f"{self.name}'s ROS connection is already open")
+        self._transport = self._factory(self.node_config)
+
+    def disconnect(self) -> None:
+        """Stop the transport; nothing of it keeps running."""
+        transport, self._transport = self._transport, None
+        if transport is not None:
+            transport.close()
+
+    @property
+    def transport(self) -> Transport:
+        """The open transport, or a RosNodeError saying where to run."""
+        if self._transport is None:
+            raise RosNodeError(
+                f"{self.name}'s ROS connection is not open; perform inside ros_robot(...)"
+            )
+        return self._transport
+
+    def run(self, resource: str, goal: RosDict, failure: FailureFactory) -> GoalOutcome:
+        """Run ``goal`` on ``resource``'s action server, then wait for the state after it."""
+        interface = self.config.action(resource)
+        outcome = run_goal(self.transport, interface, goal, failure)
+        if not self.transport.wait_for_state(outcome.stamp, STATE_TIMEOUT):
+            raise RosConnectionLost(
+                f"no joint states or transforms of {self.name} arrived within {STATE_TIMEOUT} s "
+                f"after {interface.server} finished",
+                server=interface.server,
+                reason="state not published",
+            )
+        return outcome
+
+    def follow_joints(
+        self, resource: str, goal: Mapping[str, float], failure: FailureFactory
+    ) -> GoalOutcome:
+        """Move joints to ``goal`` [rad | m] by a one-point trajectory at their velocity limits."""
+        current = self.joint_states()
+        seconds = MIN_DURATION
+        for joint, value in goal.items():
+            spec = self.desc.model.joints[joint] if self.desc.model is not None else None
+            velocity = (spec.velocity if spec is not None else None) or DEFAULT_VELOCITY
+            seconds = max(seconds, abs(value - current.get(joint, value)) / velocity)
+        secs = int(seconds)
+        point = {
+            "positions": [float(v) for v in goal.values()],
+            "time_from_start": {"secs": secs, "nsecs": int((seconds - secs) * 1e9)},
+        }
+        trajectory = {"trajectory": {"joint_names": list(goal), "points": [point]}}
+        return self.run(resource, trajectory, failure)
+
+    def joint_states(self) -> dict[str, float]:
+        """The latest joint positions [rad | m]."""
+        return self.transport.joint_states()
+
+    def actuated_joint_states(self) -> dict[str, float]:
+        """The latest positions of the joints that are not mimic joints (IK and FK seeds)."""
+        model = self.desc.model
+        return {
+            joint: value
+            for joint, value in self.joint_states().items()
+            if model is None or (joint in model.joints and model.joints[joint].mimic is None)
+        }
+
+    def frame_pose(self, frame: str) -> Pose:
+        """The latest pose of ``frame`` in the fixed frame."""
+        if frame == self.fixed_frame:
+            return Pose()
+        return self.transport.lookup_transform(self.fixed_frame, frame)
+
+    def base_pose(self) -> Pose:
+        """The robot base's pose in the fixed frame."""
+        return self.frame_pose(self.desc.base_frame)
+
+    def in_map(self, pose: PoseStamped | PoseLike) -> Pose:
+        """A stamped pose (any tf frame) or a plain pose (the fixed frame) in the fixed frame."""
+        if isinstance(pose, PoseStamped):
+            return self.frame_pose(pose.frame_id) * pose.pose
+        return Pose.coerce(pose)

@@ -1,0 +1,88 @@
+"""The one small interface between the ROS process modules and a ROS implementation.
+
+Process modules speak plain dictionaries in the layout of the ROS messages (as rosbridge
+does) and never import rospy. :class:`Ros1Transport` implements this with rospy and
+actionlib in a child process; a ROS 2 (rclpy or rosbridge) transport would implement the
+same methods (docs/ros.md).
+"""
+
+from __future__ import annotations
+
+import threading
+from dataclasses import dataclass, field
+from enum import Enum
+from typing import Any, Protocol
+
+from robocram.tf import Pose
+
+RosDict = dict[str, Any]
+
+
+class GoalState(Enum):
+    """Terminal states of an action goal (actionlib's GoalStatus numbers) and LOST."""
+
+    PREEMPTED = 2
+    SUCCEEDED = 3
+    ABORTED = 4
+    REJECTED = 5
+    RECALLED = 8
+    LOST = 100
+
+
+@dataclass(frozen=True)
+class GoalOutcome:
+    """How a goal ended: its state, the server's status text, the result, when it arrived."""
+
+    state: GoalState
+    status_text: str
+    result: RosDict
+    stamp: float  # [s] ROS time the outcome arrived
+
+
+@dataclass
+class GoalHandle:
+    """A goal sent to ``server``; ``outcome`` is set (and ``done`` notified) when it ends."""
+
+    goal_id: int
+    server: str
+    done: threading.Condition = field(default_factory=threading.Condition)
+    outcome: GoalOutcome | None = None
+
+    def finish(self, outcome: GoalOutcome) -> None:
+        """Record the outcome once (later ones are ignored) and wake the waiters."""
+        with self.done:
+            if self.outcome is None:
+                self.outcome = outcome
+            self.done.notify_all()
+
+
+class Transport(Protocol):
+    """What the process modules need from ROS: actions, joint states and transforms."""
+
+    def send_goal(self, server: str, goal: RosDict) -> GoalHandle:
+        """Send ``goal`` to the action ``server``; raises RosConnectionLost if none answers."""
+        ...
+
+    def cancel_goal(self, handle: GoalHandle) -> None:
+        """Ask the server to cancel the goal (its outcome arrives as PREEMPTED or RECALLED)."""
+        ...
+
+    def wait_for_state(self, after: float, timeout: float) -> bool:
+        """Wait until joint states and transforms stamped after ``after`` [s] arrived."""
+        ...
+
+    def joint_states(self) -> dict[str, float]:
+        """The latest joint positions [rad | m] by joint name."""
+        ...
+
+    def lookup_transform(self, target_frame: str, source_frame: str) -> Pose:
+        """The latest pose of ``source_frame`` in ``target_frame``."""
+        ...
+
+    def frames(self) -> tuple[str, ...]:
+        """Every frame the transforms name, sorted."""
+        ...
+
+    def close(self) -> None:
+        """Cancel what runs, leave ROS and stop every thread and process of the transport."""
+        ...

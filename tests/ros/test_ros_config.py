@@ -1,0 +1,86 @@
+"""ROS facts per robot, set-up errors and the optional extra (no ROS master needed)."""
+
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+
+import pytest
+
+from robocram.logic import KnowledgeBase
+from robocram.robots import load_description
+from robocram.ros import (
+    RosConfig,
+    RosConfigError,
+    RosExtraMissing,
+    availability,
+    install_ros_facts,
+    read_ros_config,
+    ros_environment,
+)
+from robocram.ros.ros_config import default_facts
+
+
+def _config(robot: str, facts: str | None = None) -> RosConfig:
+    kb = KnowledgeBase()
+    install_ros_facts(kb, robot, facts)
+    return read_ros_config(kb, load_description(robot))
+
+
+def test_pr2_defaults_name_cram_s_controllers() -> None:
+    config = _config("pr2")
+    assert config.action("arm(left)").server == "/l_arm_controller/follow_joint_trajectory"
+    assert config.action("gripper(right)").action_type == "control_msgs/GripperCommand"
+    assert config.action("head").action_type == "control_msgs/PointHead"
+    assert config.action("navigation").timeout == 120.0
+    assert config.action("arm(right)").timeout == 30.0
+    assert config.joint_states_topic == "/joint_states"
+
+
+def test_hsr_is_configured_by_facts_only() -> None:
+    config = _config("hsrb")
+    assert config.joint_states_topic == "/hsrb/joint_states"
+    assert config.action("head").action_type == "control_msgs/FollowJointTrajectory"
+    assert config.action("torso").server == config.action("arm(arm)").server
+
+
+def test_a_missing_fact_is_named() -> None:
+    facts = default_facts("pr2").replace("ros_topic(pr2, joint_states, '/joint_states').", "")
+    with pytest.raises(RosConfigError, match=r"ros_topic\(pr2, joint_states, Topic\)"):
+        _config("pr2", facts)
+    no_torso = re.sub(r"ros_action\(pr2, torso,[^.]*\.", "", default_facts("pr2"))
+    with pytest.raises(RosConfigError, match=r"no ros_action\(pr2, torso, Server, Type\) fact"):
+        _config("pr2", no_torso).action("torso")
+
+
+def test_an_unknown_action_type_says_which_are_known() -> None:
+    facts = default_facts("pr2").replace("'control_msgs/PointHead'", "'pr2_msgs/PointHead'")
+    with pytest.raises(RosConfigError, match="unknown action type; use one of"):
+        _config("pr2", facts)
+
+
+def test_robots_without_packaged_facts_need_them_passed() -> None:
+    with pytest.raises(RosConfigError, match="ships no ROS facts for 'boxy'"):
+        default_facts("boxy")
+
+
+def test_no_master_uri_says_how_to_give_one(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.delenv("ROS_MASTER_URI", raising=False)
+    with pytest.raises(RosConfigError, match="pass master_uri= or set ROS_MASTER_URI"):
+        ros_environment("pr2")
+
+
+def test_a_missing_extra_says_how_to_install_it(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(availability, "REQUIRED", (*availability.REQUIRED, "no_such_ros_pkg"))
+    with pytest.raises(RosExtraMissing, match="no_such_ros_pkg.*tools/setup_ros.sh"):
+        availability.require_ros_extra()
+    assert availability.missing_modules() == ["no_such_ros_pkg"]
+
+
+def test_the_core_imports_without_ros() -> None:
+    code = (
+        "import sys, robocram.plans, robocram.projection, robocram.execution\n"
+        "assert not {'rospy', 'actionlib', 'robocram.ros'} & set(sys.modules), sys.modules"
+    )
+    subprocess.run([sys.executable, "-c", code], check=True)

@@ -1,0 +1,58 @@
+"""Acceptance: the pick-up plan runs unchanged through ROS and agrees with projection."""
+
+from __future__ import annotations
+
+import multiprocessing
+import threading
+from collections.abc import Callable
+
+import pytest
+
+from robocram.plans import pick_up
+from robocram.projection import simulated_robot
+from robocram.ros import Roscore, ros_robot
+from robocram.ros.driver.driver_process import DriverProcess
+from robocram.tf import Pose, PoseStamped, transform_pose
+from robocram.world.tabletop_scene import tabletop_scene
+
+AGREE = 0.01  # [m] ROS and direct projection agree this closely
+
+
+def _direct(robot: str) -> tuple[Pose, Pose, Pose, str]:
+    """Tool at grasp, tool lifted, lifted mug, arm: all in map, by direct projection."""
+    scene = tabletop_scene(robot)
+    world = scene.world
+    with simulated_robot(world, robot):
+        result = pick_up(scene.look_target)
+    base = world.pose(robot)
+    return (
+        base * result.grasp.pose,
+        world.link_pose(robot, result.tool_frame),
+        world.pose("mug-1"),
+        result.arm,
+    )
+
+
+@pytest.mark.parametrize("robot", ["pr2", "hsrb"])
+def test_pick_up_through_ros_agrees_with_projection(
+    roscore: Roscore, master_nodes: Callable[[], set[str]], robot: str
+) -> None:
+    grasp, tool, mug, arm = _direct(robot)
+    look = tabletop_scene(robot).look_target
+    threads = set(threading.enumerate())
+    with DriverProcess(roscore.uri, robot), ros_robot(robot, roscore.uri) as run:
+        result = pick_up(look)
+        ros_tool = transform_pose(PoseStamped(result.tool_frame), "map").pose
+        ros_mug = run.transforms.lookup("map", "mug-1")
+        ros_grasp = transform_pose(result.grasp, "map").pose
+        node = run.environment.client.transport.node_name  # type: ignore[attr-defined]
+        assert node in master_nodes()
+    assert run.tree.root.status.name == "SUCCEEDED"
+    assert result.arm == arm
+    assert ros_tool.distance_to(tool) < AGREE
+    assert ros_mug.distance_to(mug) < AGREE
+    assert ros_mug.position[2] > 0.09 + tabletop_scene(robot).look_target.position[2]  # lifted
+    assert ros_grasp.distance_to(grasp) < AGREE
+    assert set(threading.enumerate()) == threads
+    assert multiprocessing.active_children() == []
+    assert node not in master_nodes()
