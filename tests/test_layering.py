@@ -27,6 +27,7 @@ ALLOWED: dict[str, set[str]] = {
     "viewer": {"traces", "world", "execution", "designators", "robots", "logic", "tf"},
     "ros": {
         "projection",
+        "scenes",
         "world",
         "kinematics",
         "execution",

@@ -12,8 +12,8 @@ from robocram.plans import pick_up
 from robocram.projection import simulated_robot
 from robocram.ros import Roscore, ros_robot
 from robocram.ros.driver.driver_process import DriverProcess
+from robocram.scenes import tabletop_scene
 from robocram.tf import Pose, PoseStamped, transform_pose
-from robocram.world.tabletop_scene import tabletop_scene
 
 AGREE = 0.01  # [m] ROS and direct projection agree this closely
 

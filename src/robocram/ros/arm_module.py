@@ -15,7 +15,7 @@ from typing import Any
 from robocram.execution.failures import ManipulationGoalNotReached, ManipulationPoseUnreachable
 from robocram.kinematics import IKResult, solve_ik
 from robocram.projection.arm import (
-    IK_TIMEOUT,
+    IK_RANDOM_SEED,
     ORIENTATION_TOLERANCE,
     POSITION_TOLERANCE,
     joint_values,
@@ -52,7 +52,12 @@ class ArmPM(RosProcessModule):
         result = IKResult(False)
         for use_torso in [False, True] if desc.torso_joint is not None else [False]:
             result = solve_ik(
-                desc, arm, target_in_base, seed=seed, use_torso=use_torso, timeout=IK_TIMEOUT
+                desc,
+                arm,
+                target_in_base,
+                seed=seed,
+                use_torso=use_torso,
+                random_seed=IK_RANDOM_SEED,
             )
             if result.success:
                 break

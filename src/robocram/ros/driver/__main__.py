@@ -15,8 +15,8 @@ from robocram.robots import load_description
 from robocram.ros.driver.motion import MotionOptions
 from robocram.ros.driver.projection_driver import FAULTS, ProjectionDriver
 from robocram.ros.ros_config import install_ros_facts, read_ros_config
+from robocram.scenes import tabletop_scene
 from robocram.world import World
-from robocram.world.tabletop_scene import tabletop_scene
 
 
 def _arguments() -> argparse.Namespace:
