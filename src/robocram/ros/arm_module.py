@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from robocram.designators import SIDES
 from robocram.execution.failures import ManipulationGoalNotReached, ManipulationPoseUnreachable
 from robocram.kinematics import IKResult, solve_ik
 from robocram.projection.arm import (
@@ -20,7 +21,8 @@ from robocram.projection.arm import (
     POSITION_TOLERANCE,
     joint_values,
 )
-from robocram.ros.process_modules import Handler, RosProcessModule
+from robocram.ros.errors import RosCommandError
+from robocram.ros.process_modules import RosProcessModule
 from robocram.tf import Pose, PoseStamped
 
 TORSO_MOVE = 1e-4  # [m | rad] IK torso changes smaller than this are not sent
@@ -30,21 +32,24 @@ class ArmPM(RosProcessModule):
     """The arms: ``move_tcp`` and ``move_joints``, one arm or both."""
 
     name = "ros_arms"
+    resource = "arms"
 
-    def handlers(self) -> dict[str, Handler]:
-        """Command table."""
-        return {
-            "move_tcp/3": self.move_tcp,
-            "move_tcp_both/3": lambda left, right, mode: (
-                self.move_tcp("left", left, mode),
-                self.move_tcp("right", right, mode),
-            ),
-            "move_joints/2": self.move_joints,
-            "move_joints_both/2": lambda left, right: (
-                self.move_joints("left", left),
-                self.move_joints("right", right),
-            ),
-        }
+    def move_tcp_both(self, left: Any, right: Any, mode: str) -> tuple[Pose, ...]:
+        """Move the tool frames of the arms on the left and the right side."""
+        return tuple(
+            self.move_tcp(side, pose, mode) for side, pose in zip(SIDES, (left, right), strict=True)
+        )
+
+    def move_joints_both(self, left: object, right: object) -> tuple[dict[str, float], ...]:
+        """Move the joints of the arms on the left and the right side."""
+        return tuple(self.move_joints(s, c) for s, c in zip(SIDES, (left, right), strict=True))
+
+    def move_part(self, arm: str, part: str, joint: str, handle: str, goal: float) -> float:
+        """Not over ROS yet: articulated parts need a whole-body controller (CRAM: giskard)."""
+        raise RosCommandError(
+            f"robocram.ros has no ROS interface for moving-articulation ({part}.{joint} with "
+            f"{arm}'s hand); run it in projection, or add a controller interface for it"
+        )
 
     def _solve(self, arm: str, target_in_base: Pose) -> IKResult:
         desc = self.client.desc
@@ -68,7 +73,8 @@ class ArmPM(RosProcessModule):
     ) -> Pose:
         """Put ``arm``'s tool frame at ``target``; return the reached pose in the fixed frame."""
         client = self.client
-        spec = client.desc.arms[arm]
+        arm = client.desc.arm_called(arm)
+        spec = client.arm(arm)
         target_in_map = client.in_map(target)
         result = self._solve(arm, client.base_pose().inverse() * target_in_map)
         if not result.success:
@@ -100,11 +106,12 @@ class ArmPM(RosProcessModule):
 
     def move_joints(self, arm: str, configuration: object) -> dict[str, float]:
         """Move ``arm``'s joints to a ``{joint: value}`` or ``[[joint, value], ...]`` config."""
+        arm = self.client.desc.arm_called(arm)
         values = joint_values(configuration)
-        allowed = set(self.client.desc.arms[arm].joints)
+        allowed = set(self.client.arm(arm).joints)
         unknown = sorted(set(values) - allowed)
         if unknown:
-            raise ValueError(
+            raise RosCommandError(
                 f"joints {unknown} are not in {self.client.name}'s {arm} arm {sorted(allowed)}"
             )
         self._send(f"arm({arm})", values, arm, values)

@@ -9,7 +9,7 @@ the action server or our ROS node goes away mid-goal.
 
 from __future__ import annotations
 
-from robocram.execution.failures import LowLevelFailure
+from robocram.execution.failures import LowLevelFailure, SetupFailure
 
 INSTALL_HINT = (
     "install it with `make setup` (or `bash tools/setup_ros.sh .venv` as root): it "
@@ -39,3 +39,10 @@ class RosConnectionLost(LowLevelFailure):
     fields = ("server", "reason")
     summary = "the connection to the ROS action server was lost"
     hint = "check that the robot's driver and the ROS master are running, then retry"
+
+
+class RosCommandError(SetupFailure):
+    """A command names what the robot's ROS side does not have (an arm, a joint, a motion)."""
+
+    summary = "the command does not fit the robot behind ROS"
+    hint = "fix the name or value in the motion designator"

@@ -21,16 +21,24 @@ from robocram.ros.transport import GoalHandle, GoalOutcome, GoalState, RosDict, 
 
 CANCEL_TIMEOUT = 5.0  # [s] to wait for the server to confirm a cancel
 FailureFactory = Callable[[str], PlanFailure]
+Settle = Callable[[GoalOutcome], None]
 
 
 def _wait(handle: GoalHandle, timeout: float | None) -> bool:
     return wait_until(handle.done, lambda: handle.outcome is not None, timeout)
 
 
-def _cancel_and_wait(transport: Transport, handle: GoalHandle) -> None:
+def _cancel_and_wait(transport: Transport, handle: GoalHandle, settle: Settle) -> None:
+    """Cancel, wait for the server's confirmation, then for the state after it."""
     transport.cancel_goal(handle)
     with handle.done:
         handle.done.wait_for(lambda: handle.outcome is not None, CANCEL_TIMEOUT)
+    if handle.outcome is not None and handle.outcome.state is not GoalState.LOST:
+        settle(handle.outcome)
+
+
+def _no_settling(_: GoalOutcome) -> None:
+    """Goals whose caller reads no state afterwards need not wait for it."""
 
 
 def run_goal(
@@ -49,14 +57,25 @@ def run_goal(
         RosConnectionLost: the server or our ROS node went away.
         TaskStopped: the task was stopped; the goal was cancelled first.
     """
+    return checked(interface, finish_goal(transport, interface, goal, _no_settling), failure)
+
+
+def finish_goal(
+    transport: Transport, interface: ActionInterface, goal: RosDict, settle: Settle
+) -> GoalOutcome:
+    """Send ``goal``; return how it ended, after ``settle`` (timeouts raise, see run_goal).
+
+    ``settle(outcome)`` runs once the goal has ended, also when it was cancelled, unless
+    the connection was lost: the process module waits there for the state after it.
+    """
     handle = transport.send_goal(interface.server, goal)
     try:
         finished = _wait(handle, interface.timeout)
     except TaskStopped:
-        _cancel_and_wait(transport, handle)
+        _cancel_and_wait(transport, handle, settle)
         raise
     if not finished:
-        _cancel_and_wait(transport, handle)
+        _cancel_and_wait(transport, handle, settle)
         raise ActionlibActionTimedOut(
             f"the goal to {interface.server} ({interface.resource}) did not finish within "
             f"{interface.timeout} s; it was cancelled",
@@ -65,12 +84,15 @@ def run_goal(
         )
     outcome = handle.outcome
     assert outcome is not None  # _wait returned True
-    return _checked(interface, outcome, failure)
+    if outcome.state is not GoalState.LOST:
+        settle(outcome)
+    return outcome
 
 
-def _checked(
+def checked(
     interface: ActionInterface, outcome: GoalOutcome, failure: FailureFactory
 ) -> GoalOutcome:
+    """``outcome`` if it SUCCEEDED, else the typed failure it stands for (raised)."""
     state = outcome.state
     if state is GoalState.SUCCEEDED:
         return outcome

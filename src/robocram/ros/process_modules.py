@@ -1,21 +1,19 @@
-"""The process modules of a robot behind ROS: one per resource, each sending action goals.
+"""The process modules of a robot behind ROS: one per motion table resource, sending goals.
 
-They execute the same command terms as projection's modules (``common_motions.pl``):
-``move_base(Pose)``, ``move_torso(Value)``, ``move_head(pose | frame | direction, X)``,
-``detect(ObjectDesig)``, ``move_gripper_joint(Arm, open | close | grip | Position,
-Effort)``, ``move_tcp(Arm, Pose, Mode)``, ``move_tcp_both``, ``move_joints(Arm, Config)``,
-``move_joints_both``. Which server serves a resource comes from the robot's ROS facts.
+Each executes the motion table's commands of its resource (one method per command, as
+projection's modules do): ``move_base``, ``move_torso``, ``move_head``, ``detect`` and
+``inspect``, ``move_gripper_joint``; the arms are in ``arm_module.py``. Which action
+server serves a resource comes from the robot's ROS facts (``ros_config.py``).
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from typing import Any, ClassVar
+from typing import Any
 
 import numpy as np
 
 from robocram.designators import ObjectDesignator, Quantifier
-from robocram.execution import ProcessModule
+from robocram.execution import MotionProcessModule
 from robocram.execution.failures import (
     GripperClosedCompletely,
     GripperGoalNotReached,
@@ -24,51 +22,32 @@ from robocram.execution.failures import (
     PtuGoalNotReached,
     TorsoGoalNotReached,
 )
-from robocram.logic import Term
 from robocram.projection import PerceivedObject
-from robocram.ros.errors import RosConfigError
+from robocram.ros.errors import RosCommandError
 from robocram.ros.head_aim import pan_tilt_towards
 from robocram.ros.ros_robot_client import RosRobotClient
 from robocram.tf import Pose, PoseStamped, pose_stamped_from_ros, pose_to_ros
 
-Handler = Callable[..., Any]
 DIRECTION_REACH = 100.0  # [m] looking along a direction aims at a point this far away
 POINTING_AXIS = {"x": 0.0, "y": 0.0, "z": 1.0}  # the optical axis of camera frames
 
 
-class RosProcessModule(ProcessModule):
-    """A process module of a robot behind ROS: dispatches command terms to handlers."""
-
-    name: ClassVar[str] = ""
+class RosProcessModule(MotionProcessModule):
+    """A process module of a robot behind ROS, for one resource of the motion table."""
 
     def __init__(self, client: RosRobotClient) -> None:
         super().__init__()
         self.client = client
-
-    def handlers(self) -> dict[str, Handler]:
-        """Map ``name/arity`` of each command this module executes to its handler."""
-        raise NotImplementedError
-
-    def execute(self, command: Any) -> Any:
-        """Send the goals that carry out ``command``."""
-        table = self.handlers()
-        if isinstance(command, Term):
-            handler = table.get(f"{command.name}/{command.arity}")
-            if handler is not None:
-                return handler(*command.args)
-        raise self.unsupported(command, table)
 
 
 class NavigationPM(RosProcessModule):
     """The base over ``move_base_msgs/MoveBase``: ``move_base(Pose)``."""
 
     name = "ros_navigation"
+    resource = "navigation"
 
-    def handlers(self) -> dict[str, Handler]:
-        """Command table."""
-        return {"move_base/1": self._move_base}
-
-    def _move_base(self, target: PoseStamped | Any) -> Pose:
+    def move_base(self, target: PoseStamped | Any) -> Pose:
+        """Send a MoveBase goal; return the base pose reached."""
         goal_in_map = self.client.in_map(target)
         goal = {
             "target_pose": {
@@ -88,15 +67,13 @@ class TorsoPM(RosProcessModule):
     """The torso over ``FollowJointTrajectory``: ``move_torso(Value)``."""
 
     name = "ros_torso"
+    resource = "torso"
 
-    def handlers(self) -> dict[str, Handler]:
-        """Command table."""
-        return {"move_torso/1": self._move_torso}
-
-    def _move_torso(self, value: float) -> float:
+    def move_torso(self, value: float) -> float:
+        """Send the torso joint's trajectory; return the value reached."""
         joint = self.client.desc.torso_joint
         if joint is None:
-            raise RosConfigError(f"{self.client.name} has no torso joint; it cannot move one")
+            raise RosCommandError(f"{self.client.name} has no torso joint; it cannot move one")
         goal = float(value)
         self.client.follow_joints(
             "torso", {joint: goal}, lambda text: TorsoGoalNotReached(text, goal=goal)
@@ -108,10 +85,7 @@ class PtuPM(RosProcessModule):
     """The head: ``move_head(pose | frame | direction, X)`` over PointHead or pan/tilt joints."""
 
     name = "ros_ptu"
-
-    def handlers(self) -> dict[str, Handler]:
-        """Command table."""
-        return {"move_head/2": self._move_head}
+    resource = "ptu"
 
     def _target(self, mode: str, goal: Any) -> tuple[float, float, float]:
         client = self.client
@@ -123,14 +97,17 @@ class PtuPM(RosProcessModule):
             vector = goal.position if isinstance(goal, PoseStamped) else goal
             d = np.asarray(vector, float)
             if d.shape != (3,) or np.linalg.norm(d) < 1e-9:
-                raise ValueError(f"looking direction must be a non-zero 3-D vector, got {vector}")
+                raise RosCommandError(
+                    f"looking direction must be a non-zero 3-D vector, got {vector}"
+                )
             base = client.base_pose().matrix()[:3, :3]
             camera = np.asarray(client.frame_pose(client.desc.cameras[0].frame).position)
             far = camera + DIRECTION_REACH * (base @ (d / np.linalg.norm(d)))
             return (float(far[0]), float(far[1]), float(far[2]))
-        raise ValueError(f"move_head mode {mode!r} is none of pose, frame, direction")
+        raise RosCommandError(f"move_head mode {mode!r} is none of pose, frame, direction")
 
-    def _move_head(self, mode: str, goal: Any) -> dict[str, float]:
+    def move_head(self, mode: str, goal: Any) -> dict[str, float]:
+        """Point the camera at a pose, a frame or along a direction; return pan and tilt."""
         client = self.client
         target = self._target(mode, goal)
         failure = lambda text: PtuGoalNotReached(text, target=target)  # noqa: E731
@@ -160,12 +137,14 @@ class PerceptionPM(RosProcessModule):
     """The camera over ``robocram_msgs/DetectObjects``: ``detect(ObjectDesig)``."""
 
     name = "ros_perception"
+    resource = "perception"
 
-    def handlers(self) -> dict[str, Handler]:
-        """Command table."""
-        return {"detect/1": self._detect}
+    def inspect(self, designator: Any) -> ObjectDesignator | list[ObjectDesignator]:
+        """Inspect one object: our perception action reports all it sees when detecting."""
+        return self.detect(designator)
 
-    def _detect(self, designator: Any) -> ObjectDesignator | list[ObjectDesignator]:
+    def detect(self, designator: Any) -> ObjectDesignator | list[ObjectDesignator]:
+        """Ask the perception server for the objects fitting ``designator``."""
         if not isinstance(designator, ObjectDesignator):
             raise TypeError(
                 f"detecting needs an object designator (an.object(type=...)), got {designator!r}"
@@ -193,28 +172,29 @@ class GripperPM(RosProcessModule):
     """The grippers over ``GripperCommand``: ``move_gripper_joint(Arm, Action, Effort)``."""
 
     name = "ros_grippers"
-
-    def handlers(self) -> dict[str, Handler]:
-        """Command table."""
-        return {"move_gripper_joint/3": self._move}
+    resource = "grippers"
 
     def _limits(self, arm: str) -> tuple[float, float]:
-        spec = self.client.desc.arms[arm]
+        spec = self.client.arm(arm)
         model = self.client.desc.model
         joint = model.joints[spec.gripper_joints[0]] if model and spec.gripper_joints else None
         if joint is None or joint.lower is None or joint.upper is None:
-            raise RosConfigError(f"{self.client.name}'s {arm} arm has no bounded gripper joint")
+            raise RosCommandError(f"{self.client.name}'s {arm} arm has no bounded gripper joint")
         return joint.lower, joint.upper
 
-    def _move(self, arm: str, action: Any, effort: Any) -> float:
-        lower, upper = self._limits(str(arm))
+    def move_gripper_joint(self, gripper: str, action: Any, effort: Any) -> float:
+        """Open, close or grip with ``gripper``'s hand, or move it to a position [rad | m]."""
+        arm = self.client.desc.arm_called(str(gripper))
+        lower, upper = self._limits(arm)
         positions = {"open": upper, "close": lower, "grip": lower}
         if action in positions:
             position = positions[action]
         elif isinstance(action, int | float):
             position = float(action)
         else:
-            raise ValueError(f"gripper goal {action!r} is none of open, close, grip or a position")
+            raise RosCommandError(
+                f"gripper goal {action!r} is none of open, close, grip or a position"
+            )
         force = (
             float(effort) if isinstance(effort, int | float) else self.client.config.gripper_effort
         )

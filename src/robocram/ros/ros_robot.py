@@ -15,7 +15,7 @@ from contextlib import contextmanager
 from dataclasses import dataclass
 
 from robocram.designators import install_common_motions
-from robocram.execution import Environment, TaskTree, TopLevel, top_level
+from robocram.execution import Environment, TaskTree, TopLevel, matching_facts, top_level
 from robocram.logic import KnowledgeBase
 from robocram.robots import RobotDescription, install_description, load_description
 from robocram.ros.arm_module import ArmPM
@@ -33,21 +33,14 @@ from robocram.ros.ros_robot_client import RosRobotClient
 from robocram.ros.ros_transform_tree import RosTransformTree
 from robocram.tf import using_transform_tree
 
-MOTION_TYPES: dict[type[RosProcessModule], tuple[str, ...]] = {
-    NavigationPM: ("going",),
-    TorsoPM: ("moving-torso",),
-    PtuPM: ("looking",),
-    PerceptionPM: ("detecting",),
-    GripperPM: ("opening", "closing", "gripping", "moving-gripper-joint"),
-    ArmPM: ("moving-tcp", "moving-arm-joints"),
-}
-RESOURCES: dict[type[RosProcessModule], str] = {
-    NavigationPM: "navigation",
-    TorsoPM: "torso",
-    PtuPM: "head",
-    PerceptionPM: "perception",
-    GripperPM: "gripper(",
-    ArmPM: "arm(",
+# motion table resource -> the ros_action/4 resources that serve it
+MODULES: dict[str, tuple[type[RosProcessModule], str]] = {
+    "navigation": (NavigationPM, "navigation"),
+    "torso": (TorsoPM, "torso"),
+    "ptu": (PtuPM, "head"),
+    "perception": (PerceptionPM, "perception"),
+    "grippers": (GripperPM, "gripper("),
+    "arms": (ArmPM, "arm("),
 }
 
 
@@ -55,20 +48,15 @@ class RosEnvironment(Environment):
     """An environment whose process modules talk to one robot through our ROS node."""
 
     def __init__(self, client: RosRobotClient, kb: KnowledgeBase) -> None:
-        classes = [
-            cls
-            for cls, resource in RESOURCES.items()
-            if any(key.startswith(resource) for key in client.config.actions)
+        served = [
+            resource
+            for resource, (_, prefix) in MODULES.items()
+            if any(key.startswith(prefix) for key in client.config.actions)
         ]
-        facts = "".join(
-            f"matching_process_module(D, {cls.name}) :- desig_prop(D, type, '{motion}').\n"
-            for cls in classes
-            for motion in MOTION_TYPES[cls]
-        ) + "".join(f"available_process_module({cls.name}).\n" for cls in classes)
         super().__init__(
             f"ros_{client.name}",
-            process_modules=[cls(client) for cls in classes],
-            facts=facts,
+            process_modules=[MODULES[resource][0](client) for resource in served],
+            facts=matching_facts("ros", served),
             kb=kb,
         )
         self.client = client

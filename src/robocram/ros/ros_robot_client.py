@@ -9,9 +9,9 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 
-from robocram.robots import RobotDescription
-from robocram.ros.errors import RosConnectionLost, RosNodeError
-from robocram.ros.goal_runner import FailureFactory, run_goal
+from robocram.robots import ArmDescription, RobotDescription
+from robocram.ros.errors import RosCommandError, RosConnectionLost, RosNodeError
+from robocram.ros.goal_runner import FailureFactory, checked, finish_goal
 from robocram.ros.ros1_node import NodeConfig
 from robocram.ros.ros1_transport import Ros1Transport
 from robocram.ros.ros_config import RosConfig
@@ -80,15 +80,20 @@ class RosRobotClient:
     def run(self, resource: str, goal: RosDict, failure: FailureFactory) -> GoalOutcome:
         """Run ``goal`` on ``resource``'s action server, then wait for the state after it."""
         interface = self.config.action(resource)
-        outcome = run_goal(self.transport, interface, goal, failure)
-        if not self.transport.wait_for_state(outcome.stamp, STATE_TIMEOUT):
+        outcome = finish_goal(
+            self.transport, interface, goal, lambda end: self._settle(interface.server, end)
+        )
+        return checked(interface, outcome, failure)
+
+    def _settle(self, server: str, end: GoalOutcome) -> None:
+        """Wait for the state published after ``end`` (failed goals moved the robot too)."""
+        if not self.transport.wait_for_state(end.stamp, STATE_TIMEOUT):
             raise RosConnectionLost(
                 f"no joint states or transforms of {self.name} arrived within {STATE_TIMEOUT} s "
-                f"after {interface.server} finished",
-                server=interface.server,
+                f"after {server} finished",
+                server=server,
                 reason="state not published",
             )
-        return outcome
 
     def follow_joints(
         self, resource: str, goal: Mapping[str, float], failure: FailureFactory
@@ -120,6 +125,14 @@ class RosRobotClient:
             for joint, value in self.joint_states().items()
             if model is None or (joint in model.joints and model.joints[joint].mimic is None)
         }
+
+    def arm(self, arm: str) -> ArmDescription:
+        """The arm called ``arm`` (or on that side), or a RosCommandError naming the arms."""
+        spec = self.desc.arms.get(self.desc.arm_called(arm))
+        if spec is None or arm == self.desc.neck_arm:
+            arms = sorted(a for a in self.desc.arms if a != self.desc.neck_arm)
+            raise RosCommandError(f"{self.name} has no arm {arm!r}; its arms are {arms}")
+        return spec
 
     def frame_pose(self, frame: str) -> Pose:
         """The latest pose of ``frame`` in the fixed frame."""

@@ -1,0 +1,130 @@
+"""ROS figures: PERFORM per motion type over ROS 1 against direct projection, and the
+latency of one round trip (our node's pipe, a goal and the state after it, a PERFORM).
+
+A real roscore on a free port and our projection driver (motions as jumps, like
+projection) serve the PR2 of the tabletop scene; the same motions run in projection in
+the same scene. Prints medians [ms] over ``runs`` repetitions; CRAM's ROS process
+modules (the reference) are not installable here. Usage:
+``python benchmarks/ros_bench.py [runs]``.
+"""
+
+from __future__ import annotations
+
+import statistics
+import sys
+import time
+from collections.abc import Callable
+
+from robocram.designators import a, an
+from robocram.execution import perform
+from robocram.execution.failures import TorsoGoalNotReached
+from robocram.logic import current_kb
+from robocram.projection import simulated_robot
+from robocram.ros import Roscore, ros_robot
+from robocram.ros.driver.driver_process import DriverProcess
+from robocram.scenes import tabletop_scene
+from robocram.tf import Pose, PoseStamped
+
+DOWN = (0.0, 0.7071068, 0.0, 0.7071068)  # the PR2's tool pointing down
+PARKED = {"r_shoulder_lift_joint": 0.3, "r_elbow_flex_joint": -1.0}
+UNPARKED = {"r_shoulder_lift_joint": 0.1, "r_elbow_flex_joint": -0.6}
+
+
+def motions(look: PoseStamped) -> dict[str, Callable[[int], object]]:
+    """One PERFORM per motion type; ``i`` alternates goals so every call moves."""
+
+    def tcp(i: int) -> PoseStamped:
+        return PoseStamped("base_footprint", (0.55, -0.2, 0.85 + 0.05 * (i % 2)), DOWN)
+
+    return {
+        "going": lambda i: perform(
+            a.motion(type="going", target=a.location(pose=Pose((-0.1 * (i % 2), 0.0, 0.0))))
+        ),
+        "moving-torso": lambda i: perform(
+            a.motion(type="moving-torso", joint_angle=0.1 + 0.1 * (i % 2))
+        ),
+        "looking": lambda i: perform(a.motion(type="looking", target=a.location(pose=look))),
+        "detecting": lambda i: perform(a.motion(type="detecting", object=an.object(type="mug"))),
+        "opening/closing": lambda i: perform(
+            a.motion(type=("opening", "closing")[i % 2], gripper="left")
+        ),
+        "moving-arm-joints": lambda i: perform(
+            a.motion(
+                type="moving-arm-joints",
+                arm="right",
+                configuration=(PARKED, UNPARKED)[i % 2],
+            )
+        ),
+        "moving-tcp": lambda i: perform(
+            a.motion(type="moving-tcp", arm="right", target=a.location(pose=tcp(i)))
+        ),
+    }
+
+
+def park_and_look(look: PoseStamped) -> None:
+    """Park both arms (out of the camera's view) and look at the table."""
+    for side in ("left", "right"):
+        parking = current_kb().first("robot_arms_parking_joint_states(pr2, A, S)", A=side)
+        assert parking is not None  # the PR2 has parking states
+        perform(a.motion(type="moving-arm-joints", arm=side, configuration=parking["S"]))
+    perform(a.motion(type="looking", target=a.location(pose=look)))
+
+
+def _median_ms(step: Callable[[int], object], runs: int) -> float:
+    times = []
+    step(runs)  # warm up (IK caches, connections)
+    for i in range(runs):
+        t0 = time.perf_counter()
+        step(i)
+        times.append(time.perf_counter() - t0)
+    return 1e3 * statistics.median(times)
+
+
+def direct(runs: int) -> dict[str, float]:
+    """Median [ms] per motion type in projection."""
+    scene = tabletop_scene("pr2")
+    with simulated_robot(scene.world, "pr2"):
+        park_and_look(scene.look_target)
+        return {name: _median_ms(step, runs) for name, step in motions(scene.look_target).items()}
+
+
+def over_ros(core: Roscore, runs: int) -> tuple[dict[str, float], dict[str, float]]:
+    """Median [ms] per motion type over ROS, and the round-trip latencies."""
+    look = tabletop_scene("pr2").look_target
+    with DriverProcess(core.uri, "pr2"), ros_robot("pr2", core.uri) as run:
+        park_and_look(look)
+        per_motion = {name: _median_ms(step, runs) for name, step in motions(look).items()}
+        client = run.environment.client
+        transport = client.transport
+        torso = {"trajectory": {"joint_names": ["torso_lift_joint"], "points": [
+            {"positions": [0.1], "time_from_start": {"secs": 0, "nsecs": 0}}]}}  # fmt: skip
+
+        def goal(_: int) -> object:
+            return client.run("torso", torso, TorsoGoalNotReached)
+
+        latency = {
+            "pipe request to our node": _median_ms(lambda _: transport.joint_states(), runs),
+            "goal + state after it": _median_ms(goal, runs),
+            "PERFORM torso, no motion": _median_ms(
+                lambda _: perform(a.motion(type="moving-torso", joint_angle=0.1)), runs
+            ),
+        }
+    return per_motion, latency
+
+
+def main(runs: int) -> None:
+    """Print the per-motion table and the round-trip latencies."""
+    projected = direct(runs)
+    with Roscore() as core:
+        ros, latency = over_ros(core, runs)
+    print(f"PR2, median of {runs} PERFORMs [ms]")
+    print(f"{'motion':20} {'projection':>11} {'ROS':>9} {'overhead':>9}")
+    for name, value in projected.items():
+        print(f"{name:20} {value:11.2f} {ros[name]:9.2f} {ros[name] - value:9.2f}")
+    print("round trips [ms]")
+    for name, value in latency.items():
+        print(f"  {name:32} {value:7.2f}")
+
+
+if __name__ == "__main__":
+    main(int(sys.argv[1]) if len(sys.argv) > 1 else 10)
