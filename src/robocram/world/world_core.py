@@ -91,12 +91,15 @@ class WorldCore:
         self._inertial[handle.name] = Pose(dyn[3], dyn[4])
         handle.joint_index.clear()
         handle.link_index.clear()
+        handle.movable_joints.clear()
         base_name = pybullet.getBodyInfo(handle.body_id, physicsClientId=cid)[0].decode()
         handle.link_index[base_name] = -1
         for i in range(pybullet.getNumJoints(handle.body_id, physicsClientId=cid)):
             info = pybullet.getJointInfo(handle.body_id, i, physicsClientId=cid)
             handle.joint_index[info[1].decode()] = i
             handle.link_index[info[12].decode()] = i
+            if info[2] in _MOVABLE_TYPES:
+                handle.movable_joints.append(info[1].decode())
         handle.link_offset.clear()
         for frame, host, host_T_frame in getattr(handle.spec, "frames", ()):
             handle.link_index[frame] = handle.link_index[host]
@@ -226,12 +229,8 @@ class WorldCore:
         return index
 
     def _movable_names(self, handle: WorldObject) -> list[str]:
-        cid = self.physics_client()
-        return [
-            name
-            for name, i in handle.joint_index.items()
-            if pybullet.getJointInfo(handle.body_id, i, physicsClientId=cid)[2] in _MOVABLE_TYPES
-        ]
+        self.physics_client()  # a closed world answers with its typed error
+        return list(handle.movable_joints)
 
     def joint_states(self, obj: ObjectRef) -> dict[str, float]:
         """Every movable joint's value [rad | m] by name."""

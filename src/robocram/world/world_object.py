@@ -21,7 +21,9 @@ class WorldObject:
     ``link_index`` every link name to its index, the root link mapping to -1 (the base).
     Both are empty for single-shape bodies. A link folded into a host link before loading
     (see :class:`~robocram.world.body_spec.UrdfSpec`) maps to its host's index and keeps
-    its pose in the host in ``link_offset``.
+    its pose in the host in ``link_offset``. ``movable_joints`` lists the joints that have
+    a state, in index order, read once at load so joint queries need no backend round trip
+    per joint.
     """
 
     name: str
@@ -31,6 +33,7 @@ class WorldObject:
     joint_index: dict[str, int] = field(default_factory=dict, kw_only=True)
     link_index: dict[str, int] = field(default_factory=dict, kw_only=True)
     link_offset: dict[str, Pose] = field(default_factory=dict, kw_only=True)
+    movable_joints: list[str] = field(default_factory=list, kw_only=True)
 
     @property
     def is_static(self) -> bool:
