@@ -3,7 +3,8 @@
 A location designator such as ``a.location(visible_for="boxy", object=pot)`` is resolved
 by :class:`CostmapLocations`: rules in the knowledge base map its keys to cost functions,
 whose normalised product (a :class:`Costmap`) is sampled lazily into poses that
-validators check in the world. Bind it with ``using_location_resolver(locs.resolver())``.
+validators check in the world. Bind it with ``using_location_resolver(locs.resolver())``;
+``simulated_robot`` binds one by default.
 """
 
 from robocram.costmaps.cost_layer import CostFunction, CostLayer, LocationQuery

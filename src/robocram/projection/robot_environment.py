@@ -5,11 +5,14 @@ knowledge base (world predicates and the robot's description facts are already t
 adds the motion groundings of the motion table (common ones, and flying ones for flying
 robots) and one process module per resource the robot has
 (``RobotDescription.resources()``), with the ``matching_process_module/2`` facts the
-table gives for those resources.
+table gives for those resources. Location designators resolve through costmaps
+(:class:`~robocram.costmaps.CostmapLocations` on the same world), so ``visible_for``,
+``reachable_for``, ``on`` and the other keys work in any projected plan.
 """
 
 from __future__ import annotations
 
+from robocram.costmaps import CostmapLocations
 from robocram.designators import install_motion_family
 from robocram.execution import Environment, matching_facts
 from robocram.logic import KnowledgeBase
@@ -29,8 +32,15 @@ def install_motions(kb: KnowledgeBase, desc: RobotDescription) -> KnowledgeBase:
     return kb
 
 
-def projection_environment(world: World, robot: str | RobotObject | None = None) -> Environment:
-    """The environment whose process modules act on ``robot`` (default: the only robot)."""
+def projection_environment(
+    world: World,
+    robot: str | RobotObject | None = None,
+    locations: CostmapLocations | None = None,
+) -> Environment:
+    """The environment whose process modules act on ``robot`` (default: the only robot).
+
+    ``locations`` resolves location designators (default: costmaps on ``world``, seed 0).
+    """
     projected = ProjectedRobot.of(world, robot)
     desc = projected.description
     resources = desc.resources()
@@ -40,4 +50,5 @@ def projection_environment(world: World, robot: str | RobotObject | None = None)
         process_modules=[PROJECTION_MODULES[r](projected) for r in resources],
         facts=matching_facts(PREFIX, resources),
         kb=kb,
+        location_resolver=(locations or CostmapLocations(world)).resolver(),
     )

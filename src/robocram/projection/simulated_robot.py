@@ -12,6 +12,7 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
 
+from robocram.costmaps import CostmapLocations
 from robocram.execution import Environment, TaskTree, TopLevel, top_level
 from robocram.projection.robot_environment import projection_environment
 from robocram.projection.world_frames import LiveTransformTree, WorldFrames
@@ -35,10 +36,16 @@ class SimulatedRun:
 
 @contextmanager
 def simulated_robot(
-    world: World, robot: str | RobotObject | None = None, name: str = "simulated-robot"
+    world: World,
+    robot: str | RobotObject | None = None,
+    name: str = "simulated-robot",
+    locations: CostmapLocations | None = None,
 ) -> Iterator[SimulatedRun]:
-    """Run the block as a top level on the projected ``robot`` of ``world``."""
-    environment = projection_environment(world, robot)
+    """Run the block as a top level on the projected ``robot`` of ``world``.
+
+    Location designators resolve through ``locations`` (default: costmaps on ``world``).
+    """
+    environment = projection_environment(world, robot, locations)
     transforms = LiveTransformTree(WorldFrames(world))
     runner = top_level(name=name)
     with using_transform_tree(transforms), environment, runner:
