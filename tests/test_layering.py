@@ -46,6 +46,7 @@ ALLOWED: dict[str, set[str]] = {
         "logic",
         "tf",
     },
+    "batch": {"traces", "scenes", "plans", "projection", "world", "execution", "tf"},
 }
 
 

@@ -1,0 +1,24 @@
+"""Errors of batch projection: one root, subclasses that name the culprit and the fix."""
+
+from __future__ import annotations
+
+
+class BatchError(Exception):
+    """Root of every error raised by :mod:`robocram.batch`."""
+
+
+class BadVariant(BatchError):
+    """A variant cannot be run as given (the field and what to write instead)."""
+
+    def __init__(self, field: str, value: object, fix: str) -> None:
+        super().__init__(f"variant {field}={value!r}: {fix}")
+        self.field = field
+        self.value = value
+
+
+class UnknownBackend(BatchError):
+    """``backend`` names no batch backend."""
+
+    def __init__(self, backend: str, known: tuple[str, ...]) -> None:
+        super().__init__(f"no batch backend {backend!r}; use one of {', '.join(known)}")
+        self.backend = backend

@@ -1,0 +1,135 @@
+"""The ``"processes"`` backend: spawned workers, one variant in flight per worker.
+
+Each worker talks to the parent over its own pipe, so the parent always knows which variant
+a worker holds: when a worker dies (a crash, ``kill -9``) its variant is reported lost and a
+new worker takes its place. Leaving the stream early (cancel, Ctrl-C, an error) terminates
+every worker before control returns.
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+from collections import deque
+from collections.abc import Generator, Iterator, Sequence
+from dataclasses import dataclass
+from multiprocessing.connection import Connection, wait
+from multiprocessing.process import BaseProcess
+
+from robocram.batch.result import VariantResult, VariantStatus
+from robocram.batch.variant import Variant
+from robocram.batch.worker import WorkerConfig, worker_main
+
+POLL = 0.5  # [s] the parent wakes this often, so a pending Ctrl-C is handled promptly
+STOP_GRACE = 2.0  # [s] a terminated worker gets this long before it is killed
+
+
+@dataclass
+class _Worker:
+    process: BaseProcess
+    conn: Connection
+    job: int | None = None  # index of the variant it holds
+
+
+class ProcessPool:
+    """Spawned workers running the variants of one batch; iterate :meth:`results`."""
+
+    def __init__(self, config: WorkerConfig, workers: int) -> None:
+        self.config = config
+        self.size = workers
+        self._context = multiprocessing.get_context("spawn")
+        self._workers: list[_Worker] = []
+        self._names: dict[int, str] = {}
+
+    def pids(self) -> list[int]:
+        """Process ids of the live workers (for monitoring, and the fault tests)."""
+        return [w.process.pid for w in self._workers if w.process.pid is not None]
+
+    def _start_worker(self) -> _Worker:
+        parent, child = self._context.Pipe()
+        process = self._context.Process(
+            target=worker_main, args=(self.config, child), name="robocram-batch", daemon=True
+        )
+        process.start()
+        child.close()
+        worker = _Worker(process, parent)
+        self._workers.append(worker)
+        return worker
+
+    def results(self, variants: Sequence[Variant]) -> Generator[VariantResult, None, None]:
+        """Yield each variant's result as it finishes; stop every worker on leaving."""
+        pending = deque(enumerate(variants))
+        self._names = {i: v.name for i, v in pending}
+        try:
+            for _ in range(min(self.size, len(pending))):
+                self._start_worker()
+            for worker in self._workers:
+                self._assign(worker, pending)
+            while any(w.job is not None for w in self._workers):
+                yield from self._collect(pending)
+        finally:
+            self.close()
+
+    def _assign(self, worker: _Worker, pending: deque[tuple[int, Variant]]) -> None:
+        if pending:
+            index, variant = pending.popleft()
+            worker.job = index
+            worker.conn.send((index, variant))
+
+    def _collect(self, pending: deque[tuple[int, Variant]]) -> Iterator[VariantResult]:
+        busy = {w.conn: w for w in self._workers if w.job is not None}
+        deaths = {w.process.sentinel: w for w in busy.values()}
+        for ready in wait([*busy, *deaths], timeout=POLL):
+            if isinstance(ready, Connection) and ready in busy:
+                worker = busy[ready]
+                try:
+                    result: VariantResult = ready.recv()
+                except (EOFError, OSError):
+                    continue  # it died mid-answer; its sentinel reports the loss
+                worker.job = None
+                self._assign(worker, pending)
+                yield result
+            elif isinstance(ready, int) and ready in deaths:
+                lost = self._replace(deaths[ready], pending)
+                if lost is not None:
+                    yield lost
+
+    def _replace(self, dead: _Worker, pending: deque[tuple[int, Variant]]) -> VariantResult | None:
+        """Report a dead worker's variant lost and start a worker in its place."""
+        if dead.job is None or dead.process.is_alive():
+            return None
+        index = dead.job
+        answered = _last_answer(dead.conn)
+        dead.process.join()
+        dead.conn.close()
+        self._workers.remove(dead)
+        if pending:
+            self._assign(self._start_worker(), pending)
+        if answered is not None:
+            return answered
+        code = dead.process.exitcode
+        return VariantResult(
+            index, self._names.get(index, ""), VariantStatus.LOST, "WorkerDied",
+            f"worker {dead.process.pid} died (exit code {code}) running this variant",
+            worker=dead.process.pid or -1,
+        )  # fmt: skip
+
+    def close(self) -> None:
+        """Terminate every worker and wait until each is gone (killing stragglers)."""
+        for worker in self._workers:
+            if worker.process.is_alive():
+                worker.process.terminate()
+        for worker in self._workers:
+            worker.process.join(STOP_GRACE)
+            if worker.process.is_alive():
+                worker.process.kill()
+                worker.process.join()
+            worker.conn.close()
+        self._workers.clear()
+
+
+def _last_answer(conn: Connection) -> VariantResult | None:
+    """The result a worker sent just before it died, if it got that far."""
+    try:
+        return conn.recv() if conn.poll() else None
+    except (EOFError, OSError):
+        return None

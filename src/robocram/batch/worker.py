@@ -1,0 +1,145 @@
+"""The worker side of batch projection: one world per robot, restored between variants.
+
+A worker builds each robot's scene the first time a variant asks for it and captures its
+state; every variant starts from that state, so a variant's result depends only on the
+variant, never on which worker ran it or what that worker ran before.
+"""
+
+from __future__ import annotations
+
+import os
+import random
+import signal
+import time
+from collections.abc import Callable
+from contextlib import AbstractContextManager, nullcontext
+from dataclasses import dataclass, replace
+from multiprocessing.connection import Connection
+from pathlib import Path
+from typing import Any, Protocol
+
+import numpy as np
+
+from robocram.batch.result import VariantResult, VariantStatus
+from robocram.batch.variant import Variant
+from robocram.projection import simulated_robot
+from robocram.tf import Pose, PoseStamped
+from robocram.traces import Tracer, trace_to
+from robocram.world import World
+
+
+class Scene(Protocol):
+    """What a scene factory returns (e.g. :class:`robocram.scenes.TabletopScene`)."""
+
+    @property
+    def world(self) -> World: ...
+
+    @property
+    def robot(self) -> str: ...
+
+    @property
+    def look_target(self) -> PoseStamped: ...
+
+
+SceneFactory = Callable[[str], Scene]
+Plan = Callable[..., Any]  # plan(look_target, **parameters), run inside simulated_robot
+
+
+@dataclass(frozen=True)
+class WorkerConfig:
+    """What every worker of one batch shares (pickled to each spawned process)."""
+
+    plan: Plan
+    scene: SceneFactory
+    robot: str
+    traces: Path | None = None
+
+
+class VariantRunner:
+    """Runs variants in worlds it builds once per robot and restores before each variant."""
+
+    def __init__(self, config: WorkerConfig) -> None:
+        self.config = config
+        self._scenes: dict[str, Scene] = {}
+
+    def _scene(self, robot: str) -> Scene:
+        if robot not in self._scenes:
+            self._scenes[robot] = self.config.scene(robot)
+        return self._scenes[robot]
+
+    def run(self, index: int, variant: Variant) -> VariantResult:
+        """Run one variant from its robot's initial world; exceptions become the result."""
+        start = time.perf_counter()
+        runs: list[int] = []  # the tracer's run ids, filled as the run starts
+        try:
+            scene = self._scene(variant.robot or self.config.robot)
+            with scene.world.stored_state():  # the next variant starts from the scene as built
+                look_target = _place_objects(scene, variant)
+                _seed_everything(variant.seed)
+                with self._tracing(scene.world) as tracer:
+                    runs = tracer.runs if tracer is not None else runs
+                    with simulated_robot(scene.world, scene.robot):
+                        chosen = self.config.plan(look_target, **variant.parameter_dict())
+        except Exception as err:  # a variant's failure is data, the batch goes on
+            return VariantResult(
+                index, variant.name, VariantStatus.FAILED, type(err).__name__, str(err),
+                time.perf_counter() - start, run_id=runs[-1] if runs else None,
+            )  # fmt: skip
+        return _success(index, variant, chosen, time.perf_counter() - start, runs)
+
+    def _tracing(self, world: World) -> AbstractContextManager[Tracer | None]:
+        if self.config.traces is None:
+            return nullcontext(None)
+        return trace_to(self.config.traces, world=world)
+
+
+def _place_objects(scene: Scene, variant: Variant) -> PoseStamped:
+    """Shift (and jitter) the variant's objects; return where the plan should look."""
+    world = scene.world
+    rng = np.random.default_rng(variant.seed)
+    for name, (dx, dy, dz) in variant.object_shifts:
+        if name not in world:
+            raise KeyError(f"variant {variant.name!r} shifts {name!r}, not in the scene")
+        jx, jy = rng.normal(0.0, variant.jitter, 2) if variant.jitter > 0 else (0.0, 0.0)
+        pose = world.pose(name)
+        x, y, z = pose.position
+        world.set_pose(name, Pose((x + dx + jx, y + dy + jy, z + dz), pose.orientation))
+    if variant.look_at is None:
+        return scene.look_target
+    if variant.look_at not in world:
+        raise KeyError(f"variant {variant.name!r} looks at {variant.look_at!r}, not in the scene")
+    return PoseStamped("map", world.pose(variant.look_at).position)
+
+
+def _seed_everything(seed: int) -> None:
+    """Seed the global generators a plan might use, so reruns match."""
+    random.seed(seed)
+    np.random.seed(seed)
+
+
+def _success(
+    index: int, variant: Variant, chosen: object, duration: float, runs: list[int]
+) -> VariantResult:
+    grasp = getattr(chosen, "grasp", None)
+    return VariantResult(
+        index, variant.name, VariantStatus.SUCCEEDED, duration=duration,
+        arm=getattr(chosen, "arm", None),
+        grasp=None if grasp is None else (*grasp.position, *grasp.orientation),
+        grasp_frame=getattr(grasp, "frame_id", None),
+        run_id=runs[-1] if runs else None,
+    )  # fmt: skip
+
+
+def worker_main(config: WorkerConfig, conn: Connection) -> None:
+    """Entry point of a spawned worker: answer each ``(index, variant)`` until ``None``."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's to handle
+    runner = VariantRunner(config)
+    while True:
+        try:
+            job = conn.recv()
+        except EOFError:  # the parent went away
+            return
+        if job is None:
+            return
+        index, variant = job
+        conn.send(replace(runner.run(index, variant), worker=os.getpid()))

@@ -1,0 +1,164 @@
+"""Batch projection on spawned processes: repeatable across worker counts, failures kept
+as data, a killed worker loses only its variant, cancelling leaves no process behind."""
+
+from __future__ import annotations
+
+import os
+import signal
+import threading
+import time
+from pathlib import Path
+from types import ModuleType
+
+import psutil
+import pytest
+
+from robocram.batch import (
+    BadVariant,
+    BatchError,
+    UnknownBackend,
+    Variant,
+    VariantStatus,
+    project_variants,
+)
+from robocram.traces import TraceDatabase, runs
+
+
+def _variants() -> list[Variant]:
+    """18 mug placements (some jittered by their seed) and two that must fail."""
+    shifted = [
+        Variant(
+            f"mug{i}",
+            object_shifts={"mug-1": (0.03 * (i % 3) - 0.03, 0.05 * (i // 3) - 0.15, 0.0)},
+            jitter=0.01 if i % 2 else 0.0,
+            look_at="mug-1",
+            seed=i,
+        )
+        for i in range(18)
+    ]
+    return [
+        *shifted,
+        Variant("toaster", parameters={"object_type": "toaster"}),
+        Variant("typo", parameters={"objec": "mug"}),
+    ]
+
+
+def _children() -> set[int]:
+    return {p.pid for p in psutil.Process().children(recursive=True) if p.is_running()}
+
+
+def test_one_and_two_workers_give_equal_results() -> None:
+    variants = _variants()
+    one = project_variants(variants, robot="pr2", workers=1).collect()
+    two = project_variants(variants, robot="pr2", workers=2).collect()
+    assert [r.outcome() for r in one] == [r.outcome() for r in two]
+    assert len({r.worker for r in two}) == 2  # both workers did some of the work
+    by_name = {r.name: r for r in one}
+    assert by_name["toaster"].status is VariantStatus.FAILED
+    assert by_name["toaster"].failure_type == "PerceptionObjectNotFound"
+    assert by_name["typo"].failure_type == "TypeError" and "objec" in by_name["typo"].message
+    picked = [r for r in one if r.succeeded]
+    assert len(picked) >= 12 and all(r.arm in ("left", "right") for r in picked)
+    # the grasp follows the mug: each variant's own placement, not the scene's
+    ys = {round(r.grasp[1], 2) for r in picked if r.grasp is not None}
+    assert len(ys) >= 6
+
+
+def _kill_when_written(path: Path, killed: list[int]) -> None:
+    end = time.monotonic() + 120.0
+    while not path.exists() or not path.read_text(encoding="utf-8"):
+        if time.monotonic() > end:
+            return
+        time.sleep(0.02)
+    pid = int(path.read_text(encoding="utf-8"))
+    os.kill(pid, signal.SIGKILL)
+    killed.append(pid)
+
+
+def test_a_killed_worker_loses_only_its_variant(batch_plans: ModuleType, tmp_path: Path) -> None:
+    pid_file = tmp_path / "blocked.pid"
+    variants = [
+        Variant("blocked", parameters={"block_in": str(pid_file)}),
+        Variant("after-1", object_shifts={"mug-1": (0.0, 0.05, 0.0)}, look_at="mug-1"),
+        Variant("after-2"),
+    ]
+    killed: list[int] = []
+    killer = threading.Thread(target=_kill_when_written, args=(pid_file, killed))
+    killer.start()
+    results = project_variants(variants, plan=batch_plans.pick_or_block, workers=1).collect()
+    killer.join()
+    assert [r.status for r in results] == [
+        VariantStatus.LOST,
+        VariantStatus.SUCCEEDED,
+        VariantStatus.SUCCEEDED,
+    ]
+    assert results[0].worker == killed[0] and results[0].name == "blocked"
+    assert f"exit code {-signal.SIGKILL}" in results[0].message
+    assert {results[1].worker, results[2].worker} - {killed[0]}  # the replacement ran them
+
+
+def _wait_for(paths: list[Path]) -> None:
+    end = time.monotonic() + 120.0
+    while not all(p.exists() for p in paths) and time.monotonic() < end:
+        time.sleep(0.02)
+
+
+def test_cancel_leaves_no_process(batch_plans: ModuleType, tmp_path: Path) -> None:
+    before = _children()
+    blocks = [tmp_path / "a.pid", tmp_path / "b.pid"]
+    variants = [
+        Variant("picked"),
+        *(Variant(p.stem, parameters={"block_in": str(p)}) for p in blocks),
+    ]
+    run = project_variants(variants, plan=batch_plans.pick_or_block, workers=2)
+    first = next(run)
+    assert first.name == "picked" and first.succeeded
+    _wait_for(blocks)  # both workers are now busy in a variant that never ends
+    workers = run.worker_pids()
+    assert len(workers) == 2 and set(workers) <= _children()
+    run.cancel()
+    assert _children() <= before
+    assert list(run) == []
+
+
+def test_ctrl_c_leaves_no_process(batch_plans: ModuleType, tmp_path: Path) -> None:
+    before = _children()
+    blocks = [tmp_path / "a.pid", tmp_path / "b.pid"]
+    variants = [Variant(p.stem, parameters={"block_in": str(p)}) for p in blocks]
+
+    def interrupt() -> None:
+        _wait_for(blocks)
+        os.kill(os.getpid(), signal.SIGINT)
+
+    interrupter = threading.Thread(target=interrupt)
+    interrupter.start()
+    with pytest.raises(KeyboardInterrupt):
+        list(project_variants(variants, plan=batch_plans.pick_or_block, workers=2))
+    interrupter.join()
+    assert _children() <= before
+
+
+def test_results_land_in_the_trace_store(tmp_path: Path) -> None:
+    path = tmp_path / "batch.db"
+    variants = [Variant("ok"), Variant("toaster", parameters={"object_type": "toaster"})]
+    results = project_variants(variants, workers=2, traces=path).collect()
+    assert [r.status for r in results] == [VariantStatus.SUCCEEDED, VariantStatus.FAILED]
+    with TraceDatabase(path, create=False) as db:
+        stored = {run.id: run for run in runs(db)}
+    ok, toaster = (stored[r.run_id] for r in results if r.run_id is not None)
+    assert (ok.status, toaster.status) == ("succeeded", "failed")
+    assert ok.world_states > 3 and toaster.failed_tasks >= 1
+
+
+def test_bad_input_names_the_culprit() -> None:
+    with pytest.raises(UnknownBackend, match="'dask'.*processes"):
+        project_variants([Variant("a")], backend="dask")
+    with pytest.raises(BatchError, match="workers=0"):
+        project_variants([Variant("a")], workers=0)
+    with pytest.raises(BatchError, match="not a Variant"):
+        project_variants([{"name": "a"}])  # type: ignore[list-item]
+    with pytest.raises(BadVariant, match="jitter=-0.1"):
+        Variant("a", jitter=-0.1)
+    with pytest.raises(BadVariant, match=r"object_shifts\['mug-1'\]"):
+        Variant("a", object_shifts={"mug-1": (0.0, 1.0)})
+    assert Variant("a", parameters={"b": 1, "a": 2}).parameters == (("a", 2), ("b", 1))
