@@ -157,6 +157,8 @@ def test_bad_input_names_the_culprit() -> None:
         project_variants([Variant("a")], workers=0)
     with pytest.raises(BatchError, match="not a Variant"):
         project_variants([{"name": "a"}])  # type: ignore[list-item]
+    with pytest.raises(BatchError, match="cannot be sent to a worker.*top level"):
+        project_variants([Variant("a")], plan=lambda target: target)
     with pytest.raises(BadVariant, match="jitter=-0.1"):
         Variant("a", jitter=-0.1)
     with pytest.raises(BadVariant, match=r"object_shifts\['mug-1'\]"):

@@ -8,6 +8,7 @@ every worker before control returns.
 
 from __future__ import annotations
 
+import contextlib
 import multiprocessing
 from collections import deque
 from collections.abc import Generator, Iterator, Sequence
@@ -73,7 +74,9 @@ class ProcessPool:
         if pending:
             index, variant = pending.popleft()
             worker.job = index
-            worker.conn.send((index, variant))
+            # if it died since its last answer, its sentinel reports this variant lost
+            with contextlib.suppress(OSError):
+                worker.conn.send((index, variant))
 
     def _collect(self, pending: deque[tuple[int, Variant]]) -> Iterator[VariantResult]:
         busy = {w.conn: w for w in self._workers if w.job is not None}

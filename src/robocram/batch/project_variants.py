@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import pickle
 from collections.abc import Iterable, Iterator
 from pathlib import Path
 from types import TracebackType
@@ -74,7 +75,8 @@ def project_variants(
 
     Raises:
         UnknownBackend: ``backend`` is not one of :data:`BACKENDS`.
-        BatchError: ``workers`` is not a positive integer, or a variant is not a Variant.
+        BatchError: ``workers`` is not a positive integer, a variant is not a Variant, or
+            ``plan`` or ``scene`` cannot be pickled (a lambda, a local function).
     """
     if backend not in BACKENDS:
         raise UnknownBackend(backend, BACKENDS)
@@ -85,4 +87,16 @@ def project_variants(
         if not isinstance(item, Variant):
             raise BatchError(f"{item!r} is not a Variant; build one with Variant(name, ...)")
     config = WorkerConfig(plan, scene, robot, None if traces is None else Path(traces))
+    _check_picklable(config)
     return BatchRun(ProcessPool(config, workers), batch)
+
+
+def _check_picklable(config: WorkerConfig) -> None:
+    """Fail here, naming the culprit, rather than in the first worker's start."""
+    try:
+        pickle.dumps(config)
+    except (pickle.PicklingError, AttributeError, TypeError) as err:
+        raise BatchError(
+            f"plan {config.plan!r} or scene {config.scene!r} cannot be sent to a worker "
+            f"({err}); pass functions defined at the top level of an importable module"
+        ) from err
