@@ -88,10 +88,24 @@ def move_tcp(
         )
     robot.world.set_joint_states(robot.name, dict(result.joint_positions))
     reached = robot.world.link_pose(robot.name, spec.tool_frame)
+    return ensure_reached(robot.name, arm, reached, target, target_in_map)
+
+
+def ensure_reached(
+    robot: str, arm: str, reached: Pose, target: object, target_in_map: Pose
+) -> Pose:
+    """Return ``reached`` if it is within tolerance of ``target_in_map``, else raise.
+
+    Shared by every environment that moves a tool (projection, ROS), so "reached" means the
+    same everywhere.
+
+    Raises:
+        ManipulationGoalNotReached: the tool frame stopped too far from the target.
+    """
     error = (reached.distance_to(target_in_map), reached.angle_to(target_in_map))
     if error[0] > POSITION_TOLERANCE or error[1] > ORIENTATION_TOLERANCE:
         raise ManipulationGoalNotReached(
-            f"{robot.name}'s {arm} tool frame stopped {error[0]:.3f} m / {error[1]:.3f} rad "
+            f"{robot}'s {arm} tool frame stopped {error[0]:.3f} m / {error[1]:.3f} rad "
             "from its target",
             arm=arm,
             target=target,

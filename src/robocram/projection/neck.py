@@ -22,6 +22,7 @@ from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robots import PanTiltDescription
 from robocram.tf import Pose, Vector3
 from robocram.tf import quaternion as quat
+from robocram.tf.signed_angle import signed_angle
 from robocram.world import JointLimits
 
 AIM_ROUNDS = 6
@@ -43,15 +44,6 @@ def look_at(robot: ProjectedRobot, target_in_map: Vector3) -> dict[str, float]:
     )
 
 
-def _signed_angle(a: np.ndarray, b: np.ndarray, axis: np.ndarray) -> float:
-    """Angle [rad] turning ``a`` onto ``b`` about ``axis``, both projected normal to it."""
-    pa = a - axis * float(a @ axis)
-    pb = b - axis * float(b @ axis)
-    if np.linalg.norm(pa) < 1e-9 or np.linalg.norm(pb) < 1e-9:
-        return 0.0
-    return math.atan2(float(np.cross(pa, pb) @ axis), float(pa @ pb))
-
-
 def _nearest_in_limits(value: float, limits: JointLimits) -> float:
     """``value`` or a 2*pi turn of it that lies within ``limits``, else ``value``."""
     for candidate in (value, value - 2 * math.pi, value + 2 * math.pi):
@@ -71,7 +63,7 @@ def _aim_joint(robot: ProjectedRobot, joint: str, child_link: str, target: np.nd
     optical = camera[:3, 2]
     wanted = target - camera[:3, 3]
     current = world.joint_states(robot.name)[joint]
-    turn = _signed_angle(optical, wanted, axis)
+    turn = signed_angle(optical, wanted, axis)
     return _nearest_in_limits(current + turn, world.joint_limits(robot.name, joint))
 
 

@@ -15,12 +15,7 @@ from typing import Any
 from robocram.designators import SIDES
 from robocram.execution.failures import ManipulationGoalNotReached, ManipulationPoseUnreachable
 from robocram.kinematics import IKResult, solve_ik
-from robocram.projection.arm import (
-    IK_RANDOM_SEED,
-    ORIENTATION_TOLERANCE,
-    POSITION_TOLERANCE,
-    joint_values,
-)
+from robocram.projection.arm import IK_RANDOM_SEED, ensure_reached, joint_values
 from robocram.ros.errors import RosCommandError
 from robocram.ros.process_modules import RosProcessModule
 from robocram.tf import Pose, PoseStamped
@@ -92,17 +87,7 @@ class ArmPM(RosProcessModule):
                 self._send("torso", {torso: value}, arm, target)
         self._send(f"arm({arm})", {j: solution[j] for j in spec.joints}, arm, target)
         reached = client.frame_pose(spec.tool_frame)
-        error = (reached.distance_to(target_in_map), reached.angle_to(target_in_map))
-        if error[0] > POSITION_TOLERANCE or error[1] > ORIENTATION_TOLERANCE:
-            raise ManipulationGoalNotReached(
-                f"{client.name}'s {arm} tool frame stopped {error[0]:.3f} m / {error[1]:.3f} rad "
-                "from its target",
-                arm=arm,
-                target=target,
-                reached=reached,
-                error=error,
-            )
-        return reached
+        return ensure_reached(client.name, arm, reached, target, target_in_map)
 
     def move_joints(self, arm: str, configuration: object) -> dict[str, float]:
         """Move ``arm``'s joints to a ``{joint: value}`` or ``[[joint, value], ...]`` config."""

@@ -9,7 +9,6 @@ controller rejects or clamps, and the process module reports that as the typed f
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
 
 import numpy as np
@@ -18,17 +17,10 @@ from robocram.kinematics import forward_kinematics
 from robocram.robots import RobotDescription
 from robocram.ros.errors import RosConfigError
 from robocram.tf import Pose, Vector3
+from robocram.tf.signed_angle import signed_angle
 
 ROUNDS = 6
 TOLERANCE = 1e-4  # [rad] a round changing the angles less than this ends the aiming
-
-
-def _signed_angle(a: np.ndarray, b: np.ndarray, axis: np.ndarray) -> float:
-    pa = a - axis * float(a @ axis)
-    pb = b - axis * float(b @ axis)
-    if np.linalg.norm(pa) < 1e-9 or np.linalg.norm(pb) < 1e-9:
-        return 0.0
-    return math.atan2(float(np.cross(pa, pb) @ axis), float(pa @ pb))
 
 
 def pan_tilt_towards(
@@ -53,7 +45,7 @@ def pan_tilt_towards(
             link_pose = (base_in_map * forward_kinematics(desc, values, link)).matrix()
             axis = link_pose[:3, :3] @ np.asarray(desc.model.joints[joint].axis, float)
             camera = (base_in_map * forward_kinematics(desc, values, camera_frame)).matrix()
-            turn = _signed_angle(camera[:3, 2], target - camera[:3, 3], axis / np.linalg.norm(axis))
+            turn = signed_angle(camera[:3, 2], target - camera[:3, 3], axis / np.linalg.norm(axis))
             values[joint] = values.get(joint, 0.0) + turn
             change = max(change, abs(turn))
         if change < TOLERANCE:
