@@ -7,7 +7,9 @@ from collections.abc import Iterator
 
 import pytest
 
+from robocram.execution import Task, TaskStopped
 from robocram.execution.failures import EnvironmentManipulationImpossible
+from robocram.execution.task_context import binding_task
 from robocram.projection import ProjectedRobot, ProjectionError
 from robocram.projection.articulation import move_part
 from robocram.scenes import KitchenScene, kitchen_scene
@@ -93,3 +95,17 @@ def test_boxy_opens_the_same_drawer_with_the_same_call() -> None:
     assert world.joint_states("kitchen")[f"{DRAWER}_joint"] == pytest.approx(0.3, abs=0.01)
     assert world.pose("bowl-1").position[1] == pytest.approx(bowl_y - 0.3, abs=0.01)
     world.close()
+
+
+def test_a_stopped_task_ends_the_opening_at_its_next_step(
+    pr2_at_drawer: tuple[KitchenScene, ProjectedRobot],
+) -> None:
+    scene, robot = pr2_at_drawer
+    world = scene.world
+    joint, handle = f"{DRAWER}_joint", f"{DRAWER}_handle"
+    task = Task("open-drawer")
+    task.stop()  # asked to stop before the first step along the drawer's line
+    with binding_task(task), pytest.raises(TaskStopped):
+        move_part(robot, "right", "kitchen", joint, handle, 0.30)
+    assert world.joint_states("kitchen")[joint] == pytest.approx(0.0, abs=1e-9)
+    assert world.attached_to("bowl-1") is None  # the bowl no longer rides on the drawer

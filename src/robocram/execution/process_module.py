@@ -7,6 +7,9 @@ optional ``initialise`` hook), any number of serialised ``call(command)``, ``sto
 Callers are served one at a time in arrival order: a second caller waits, it is not
 lost. A waiting caller whose task is stopped leaves the queue. The command runs in the
 caller's thread, so ``checkpoint()`` inside ``execute`` stops it with the caller's task.
+The contract: a command that runs longer than ~100 ms (a trajectory, a drawer opened in
+steps, a simulation) calls ``checkpoint()`` between its steps, so stopping its task ends
+it within one step, and leaves the resource in a consistent state on ``TaskStopped``.
 Failures re-raise in the caller with the module and command named (plan failures keep
 their type and gain context; set-up failures and other errors are wrapped in
 ``ProcessModuleFailure``, the cause kept as its ``error``).

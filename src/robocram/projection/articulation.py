@@ -19,6 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from robocram.execution import checkpoint
 from robocram.execution.failures import (
     EnvironmentManipulationImpossible,
     ManipulationGoalNotReached,
@@ -108,6 +109,7 @@ def _follow(
     world = robot.world
     held = world.joint_states(part)[joint]
     for value in path:
+        checkpoint()  # a stopped task ends here, holding the handle at the last step
         world.set_joint_states(part, {joint: value})
         try:
             move_tcp(robot, arm, world.link_pose(part, handle) * grasp, HOLD_MODE)
@@ -146,6 +148,7 @@ def _take_handle(robot: ProjectedRobot, arm: str, part: str, handle: str, grasp:
     open_gripper(robot, arm)
     try:
         move_tcp(robot, arm, in_front)
+        checkpoint()
         move_tcp(robot, arm, at_handle, HOLD_MODE)
     except (ManipulationPoseUnreachable, ManipulationGoalNotReached):
         return False
@@ -162,6 +165,8 @@ def move_part(
         ProjectionError: ``goal`` is outside the joint's limits.
         EnvironmentManipulationImpossible: no grasp roll lets the arm follow the handle all
             the way; the robot and the part are back where they started.
+        TaskStopped: the caller's task was stopped; the joint stays at the last step
+            reached and nothing rides along any more.
     """
     world = robot.world
     limits = world.joint_limits(part, joint)
@@ -182,6 +187,7 @@ def move_part(
         world.attach(name, part, _moving_link(robot, part, joint))
     try:
         for roll in ROLLS:
+            checkpoint()
             grasp = grasp_in_handle(axis, roll)
             if _take_handle(robot, arm, part, handle, grasp):
                 reached = _follow(robot, arm, part, joint, handle, grasp, _path(start, goal, step))
