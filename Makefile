@@ -6,7 +6,7 @@ STAMP := $(VENV)/.installed
 ROS_STAMP := $(VENV)/.ros_installed
 ROS_DEFINITIONS := $(wildcard src/robocram/ros/definitions/*/*/*)
 
-.PHONY: demo test setup lint typecheck unit bench clean
+.PHONY: demo test setup installed lint typecheck unit bench clean
 
 $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PY) -m venv $(VENV)
@@ -15,6 +15,12 @@ $(STAMP): pyproject.toml
 	bash tools/setup_chromium.sh
 	touch $(STAMP)
 
+# A venv whose editable install points at another checkout (a moved or copied tree, a git
+# worktree that shared it) would test that other tree: reinstall it from this one.
+installed: $(STAMP)
+	@$(BIN)/python -c "import pathlib, robocram; raise SystemExit(pathlib.Path(robocram.__file__).resolve().parents[1] != pathlib.Path('src').resolve())" 2>/dev/null \
+		|| $(BIN)/python -m pip install --quiet -e '.[dev]'
+
 # robocram.ros: ROS 1 from Debian, generated control_msgs, a .pth into the venv
 $(ROS_STAMP): $(STAMP) tools/setup_ros.sh tools/generate_ros_messages.py $(ROS_DEFINITIONS)
 	bash tools/setup_ros.sh $(VENV)
@@ -22,22 +28,22 @@ $(ROS_STAMP): $(STAMP) tools/setup_ros.sh tools/generate_ros_messages.py $(ROS_D
 
 setup: $(STAMP) $(ROS_STAMP)
 
-demo: $(STAMP)
+demo: installed
 	$(BIN)/python -m robocram.demo
 
-lint: $(STAMP)
+lint: installed
 	$(BIN)/ruff check src tests benchmarks examples tools
 	$(BIN)/ruff format --check src tests benchmarks examples tools
 
-typecheck: $(STAMP) $(ROS_STAMP)
+typecheck: installed $(ROS_STAMP)
 	$(BIN)/mypy
 
-unit: $(STAMP) $(ROS_STAMP)
+unit: installed $(ROS_STAMP)
 	$(BIN)/pytest
 
 test: lint typecheck unit
 
-bench: $(STAMP)
+bench: installed
 	for f in benchmarks/*_bench.py; do $(BIN)/python $$f || exit 1; done
 
 clean:

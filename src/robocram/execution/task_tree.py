@@ -25,7 +25,7 @@ def _result_text(value: Any) -> str:
     return text if len(text) <= _RESULT_WIDTH else text[: _RESULT_WIDTH - 1] + "…"
 
 
-_MARKS = {
+STATUS_MARKS: dict[TaskStatus, str] = {  # one glyph per status, for every view of a tree
     TaskStatus.CREATED: "·",
     TaskStatus.RUNNING: "…",
     TaskStatus.SUSPENDED: "‖",
@@ -110,7 +110,7 @@ class TaskSnapshot:
 
     def label(self) -> str:
         """One line: mark, name, status, duration [ms], then the value or failure."""
-        text = f"{_MARKS[self.status]} {self.name} {self.status.value}"
+        text = f"{STATUS_MARKS[self.status]} {self.name} {self.status.value}"
         if self.duration is not None:
             text += f" {self.duration * 1000:.1f} ms"
         if self.tags:

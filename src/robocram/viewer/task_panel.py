@@ -12,16 +12,8 @@ from typing import Any
 
 import viser
 
-from robocram.execution import TaskSnapshot, TaskStatus
+from robocram.execution import STATUS_MARKS, TaskSnapshot, TaskStatus
 
-MARKS = {
-    TaskStatus.CREATED: "·",
-    TaskStatus.RUNNING: "…",
-    TaskStatus.SUSPENDED: "‖",
-    TaskStatus.SUCCEEDED: "✓",
-    TaskStatus.FAILED: "✗",
-    TaskStatus.EVAPORATED: "○",
-}
 COLORS: dict[TaskStatus, Any] = {
     TaskStatus.FAILED: "red",
     TaskStatus.SUCCEEDED: "teal",
@@ -31,7 +23,7 @@ COLORS: dict[TaskStatus, Any] = {
 
 def task_label(task: TaskSnapshot) -> str:
     """Mark, name and status of a task, e.g. ``✓ perform looking succeeded``."""
-    return f"{MARKS[task.status]} {task.name} {task.status.value}"
+    return f"{STATUS_MARKS[task.status]} {task.name} {task.status.value}"
 
 
 def task_hint(task: TaskSnapshot) -> str:
