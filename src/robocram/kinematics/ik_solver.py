@@ -147,6 +147,7 @@ class IKSolver:
         settings: IKSettings | None = None,
         collision_check: CollisionCheck | None = None,
         random_seed: int = 0,
+        stop_check: Callable[[], None] | None = None,
     ) -> IKResult:
         """Joint values putting the tip frame at ``target`` (see :func:`solve_ik`)."""
         t0 = time.perf_counter()
@@ -160,6 +161,8 @@ class IKSolver:
         for x in self._starts(reference, in_base, seed_distance, s, random_seed):
             if descents > s.max_restarts:
                 break
+            if stop_check is not None:
+                stop_check()
             descents += 1
             before = best.cost
             run = descend(self.chain, x, target_se3, b, s, best)

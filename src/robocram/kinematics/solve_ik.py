@@ -7,7 +7,7 @@ HSR), i.e. relative to the robot base, not the map: transform map poses first.
 from __future__ import annotations
 
 import functools
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 
 from robocram.kinematics.arm_selection import loaded
 from robocram.kinematics.ik_result import IKResult
@@ -31,6 +31,7 @@ def solve_ik(
     position_tolerance: float = 1e-3,
     orientation_tolerance: float = 1e-2,
     random_seed: int = 0,
+    stop_check: Callable[[], None] | None = None,
 ) -> IKResult:
     """Joint values that put ``frame`` (default: the arm's tool frame) at ``target``.
 
@@ -49,13 +50,17 @@ def solve_ik(
         position_tolerance: [m]. orientation_tolerance: [rad].
         random_seed: seeds the random restarts (default 0): the same query and seed
             give bit-identical joint values.
+        stop_check: called before every descent (a few milliseconds apart); it ends the
+            search by raising, e.g. a task's ``checkpoint``. It never changes the answer.
 
     Returns:
         An IKResult; ``success`` False when no solution was found within the budget.
     """
     solver = IKSolver.cached(description, arm, use_torso, frame)
     settings = _settings(position_tolerance, orientation_tolerance, max_restarts, max_iterations)
-    return solver.solve(target, dict(seed or {}), settings, collision_check, random_seed)
+    return solver.solve(
+        target, dict(seed or {}), settings, collision_check, random_seed, stop_check
+    )
 
 
 @functools.lru_cache(maxsize=64)

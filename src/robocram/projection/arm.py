@@ -14,6 +14,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 
+from robocram.execution import checkpoint
 from robocram.execution.failures import (
     ManipulationGoalNotReached,
     ManipulationPoseUnreachable,
@@ -47,6 +48,7 @@ def _solve(
                 use_torso=use_torso,
                 collision_check=check,
                 random_seed=random_seed,
+                stop_check=checkpoint,  # a stopped task ends the search within one descent
             )
             if result.success:
                 break

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from robocram.execution import checkpoint
+from robocram.execution import TaskStopped, checkpoint
 from robocram.execution.failures import (
     EnvironmentManipulationImpossible,
     ManipulationGoalNotReached,
@@ -116,6 +116,9 @@ def _follow(
         except (ManipulationPoseUnreachable, ManipulationGoalNotReached):
             world.set_joint_states(part, {joint: held})
             return held
+        except TaskStopped:  # stopped inside IK: the hand did not follow, undo the step
+            world.set_joint_states(part, {joint: held})
+            raise
         held = value
     return held
 

@@ -12,6 +12,7 @@ from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING, Any
 
 from robocram.logic import KnowledgeBase, Var
+from robocram.logic.limits import current_stop_check
 from robocram.tf import Pose
 
 if TYPE_CHECKING:
@@ -85,7 +86,7 @@ def _install_objects(kb: KnowledgeBase, world: World) -> None:
     @kb.predicate("simulate", 2)
     def simulate(w: Any, seconds: Any) -> Solutions:
         if _ours(world, w):
-            world.simulate(float(seconds))
+            world.simulate(float(seconds), stop_check=current_stop_check())  # a task's stop
             yield (world, seconds)
 
 

@@ -7,7 +7,7 @@
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Iterator, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping
 
 import pybullet
 
@@ -356,13 +356,19 @@ class WorldCore:
         for carrier in {a.robot for a in self._attachments.values()}:
             self._follow(carrier)
 
-    def simulate(self, seconds: float) -> int:
-        """Run physics for ``seconds`` [s] of simulated time; return the number of steps."""
+    def simulate(self, seconds: float, stop_check: Callable[[], None] | None = None) -> int:
+        """Run physics for ``seconds`` [s] of simulated time; return the number of steps.
+
+        ``stop_check`` (e.g. a task's ``checkpoint``) is called before every step; it ends
+        the simulation by raising, leaving the world after the last whole step.
+        """
         if not (seconds >= 0 and math.isfinite(seconds)):
             raise WorldValueError(f"simulate needs a finite duration >= 0 [s], got {seconds!r}")
         _check_time_step(self.time_step)
         steps = round(seconds / self.time_step)
         for _ in range(steps):
+            if stop_check is not None:
+                stop_check()
             self.step()
         return steps
 

@@ -1,0 +1,146 @@
+"""Stopping a task inside projection's long commands: it ends there and the world stays whole.
+
+A task that asks itself to stop at its n-th stop point makes "a stop arrives in the middle
+of the command" exact and repeatable, with no timing in the test: the commands are called
+directly (not through ``perform``), so every stop point counted is one inside the command.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator
+
+import pytest
+
+from robocram.designators import a
+from robocram.execution import Task, TaskStopped, checkpoint, perform
+from robocram.execution.task_context import binding_task
+from robocram.projection import ProjectedRobot, simulated_robot
+from robocram.projection.arm import POSITION_TOLERANCE, move_tcp
+from robocram.projection.articulation import move_part
+from robocram.scenes import KitchenScene, kitchen_scene
+from robocram.tf import Pose, PoseStamped
+from robocram.tf import quaternion as quat
+
+DRAWER = "drawer_unit_drawer_3"
+FACING_NORTH = quat.from_euler(0.0, 0.0, math.pi / 2)
+INSIDE_TORSO = Pose((0.0, 0.0, 0.8), quat.from_euler(0.0, math.pi / 2, 0.0))  # IK fails here
+
+
+class StopAtPoint(Task):
+    """A task that asks itself to stop when it reaches its ``n``-th stop point."""
+
+    def __init__(self, n: int) -> None:
+        super().__init__("stopping")
+        self.n = n
+        self.reached = 0
+
+    def check_stop(self) -> None:
+        self.reached += 1
+        if self.reached >= self.n:
+            self.stop()
+        super().check_stop()
+
+
+@pytest.fixture(scope="module")
+def kitchen() -> Iterator[tuple[KitchenScene, ProjectedRobot]]:
+    """The PR2 with parked arms in front of the drawer that holds the bowl."""
+    scene = kitchen_scene("pr2")
+    world = scene.world
+    desc = world.robot(scene.robot).description
+    world.set_joint_states(
+        scene.robot, {j: v for a in desc.arms.values() for j, v in a.parking.items()}
+    )
+    handle_x = world.link_pose("kitchen", f"{DRAWER}_handle").position[0]
+    world.set_pose(scene.robot, Pose((handle_x - 0.3, 1.0, 0.0), FACING_NORTH))
+    yield scene, ProjectedRobot.of(world, scene.robot)
+    world.close()
+
+
+def test_a_stop_ends_a_failing_ik_search_between_descents_and_the_arm_stays(
+    kitchen: tuple[KitchenScene, ProjectedRobot],
+) -> None:
+    scene, robot = kitchen
+    world = scene.world
+    target = robot.base_pose() * INSIDE_TORSO
+    unstopped = StopAtPoint(10**9)
+    with world.stored_state(), binding_task(unstopped), pytest.raises(Exception) as failed:
+        move_tcp(robot, "right", target)
+    assert type(failed.value).__name__ == "ManipulationPoseUnreachable"
+    assert unstopped.reached > 10  # the search passed many stop points: one per descent
+    before = world.joint_states(robot.name)
+    for n in (1, 5, unstopped.reached // 2):
+        task = StopAtPoint(n)
+        with binding_task(task), pytest.raises(TaskStopped):
+            move_tcp(robot, "right", target)
+        assert task.reached == n  # it ended at the very stop point it was stopped at
+        assert world.joint_states(robot.name) == pytest.approx(before, abs=1e-12)
+
+
+@pytest.mark.parametrize("n", [3, 12, 13, 25, 40])
+def test_a_stop_while_a_drawer_opens_leaves_no_attachment_and_the_bowl_in_the_drawer(
+    kitchen: tuple[KitchenScene, ProjectedRobot], n: int
+) -> None:
+    scene, robot = kitchen
+    world = scene.world
+    joint, handle = f"{DRAWER}_joint", f"{DRAWER}_handle"
+    with world.stored_state():
+        bowl_before = world.pose("bowl-1").position
+        task = StopAtPoint(n)
+        with binding_task(task), pytest.raises(TaskStopped):
+            move_part(robot, "right", "kitchen", joint, handle, 0.30)
+        assert task.reached == n
+        opened = world.joint_states("kitchen")[joint]
+        assert 0.0 <= opened <= 0.30 + 1e-9
+        if 0.0 < opened < 0.30:  # the hand holds the handle where the drawer stopped
+            tool = world.link_pose(robot.name, robot.arm("right").tool_frame)
+            assert tool.distance_to(world.link_pose("kitchen", handle)) < POSITION_TOLERANCE
+        assert world.attached_to("bowl-1") is None
+        assert all(att.obj != "bowl-1" for att in world.all_attachments())
+        bowl = world.pose("bowl-1").position
+        assert bowl[1] == pytest.approx(bowl_before[1] - opened, abs=1e-6)  # rode along
+        assert bowl[0] == pytest.approx(bowl_before[0], abs=1e-6)
+
+
+def test_a_stop_ends_a_simulation_after_a_whole_step(
+    kitchen: tuple[KitchenScene, ProjectedRobot],
+) -> None:
+    world = kitchen[0].world
+    with world.stored_state():
+        start = world.time
+        task = StopAtPoint(10)
+        with binding_task(task), pytest.raises(TaskStopped):
+            world.simulate(2.0, stop_check=checkpoint)
+        assert task.reached == 10
+        assert world.time - start == pytest.approx(9 * world.time_step, abs=1e-12)
+
+
+def test_a_stop_ends_the_prolog_simulate_predicate_of_a_task(
+    kitchen: tuple[KitchenScene, ProjectedRobot],
+) -> None:
+    world = kitchen[0].world
+    with world.stored_state():
+        start = world.time
+        task = StopAtPoint(4)
+        with binding_task(task), pytest.raises(TaskStopped):
+            world.kb.holds("world(W), simulate(W, 2.0)")
+        assert world.time - start < 4 * world.time_step + 1e-12
+
+
+def test_a_stopped_plan_does_not_drive_and_a_stopped_drive_is_whole(
+    kitchen: tuple[KitchenScene, ProjectedRobot],
+) -> None:
+    scene, robot = kitchen
+    world = scene.world
+    goal = PoseStamped("base_footprint", (0.3, 0.0, 0.0))
+    with world.stored_state():
+        before = world.pose(robot.name)
+        with pytest.raises(TaskStopped), simulated_robot(world, robot.name) as run:
+            run.top_level.stop()
+            perform(a.motion(type="going", target=goal))
+        assert world.pose(robot.name).distance_to(before) < 1e-12
+        with pytest.raises(TaskStopped), simulated_robot(world, robot.name) as run:
+            perform(a.motion(type="going", target=goal))
+            run.top_level.stop()  # after the drive: the plan ends, the base stays at the goal
+            checkpoint()
+        assert world.pose(robot.name).distance_to(before) == pytest.approx(0.3, abs=1e-9)
