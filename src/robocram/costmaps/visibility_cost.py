@@ -35,7 +35,7 @@ def camera_heights(query: LocationQuery) -> list[float]:
     camera = camera_description(query.world, robot)
     spec = robot.description.cameras[0]
     base_z = query.world.pose(robot).position[2]
-    heights = np.linspace(spec.minimal_height, spec.maximal_height, HEIGHTS).tolist()
+    heights = np.linspace(*spec.height_range(), HEIGHTS).tolist()
     return [*heights, camera.pose.position[2] - base_z]
 
 

@@ -12,16 +12,20 @@ from robocram.robots.description import (
 from robocram.robots.errors import (
     DescriptionCheckError,
     DescriptionError,
+    GripperDescriptionError,
     JointValueError,
     MissingMeshWarning,
     PackageNotFoundError,
     PackagePathError,
     UrdfError,
 )
+from robocram.robots.findings import DescriptionWarning, Finding
 from robocram.robots.fixed_merge import MergedModel, merge_fixed_links
+from robocram.robots.gripper import GripperDescription, GripperJoint
 from robocram.robots.interface_facts import install_description
 from robocram.robots.loading import load_description
 from robocram.robots.mimic import mimic_followers
+from robocram.robots.model_pose import link_pose
 from robocram.robots.robot_model import RobotModel
 from robocram.robots.urdf_elements import Geometry, Inertial, Joint, Link, Mimic
 
@@ -31,8 +35,13 @@ __all__ = [
     "CameraDescription",
     "DescriptionCheckError",
     "DescriptionError",
+    "DescriptionWarning",
+    "Finding",
     "FrameSpec",
     "Geometry",
+    "GripperDescription",
+    "GripperDescriptionError",
+    "GripperJoint",
     "Inertial",
     "Joint",
     "JointValueError",
@@ -48,6 +57,7 @@ __all__ = [
     "RobotModel",
     "UrdfError",
     "install_description",
+    "link_pose",
     "load_description",
     "merge_fixed_links",
     "mimic_followers",

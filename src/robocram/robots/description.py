@@ -13,6 +13,9 @@ from dataclasses import dataclass, field, fields
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from robocram.robots.errors import DescriptionError
+from robocram.robots.findings import Finding
+from robocram.robots.gripper import GripperDescription
 from robocram.tf import Pose
 
 if TYPE_CHECKING:
@@ -24,7 +27,23 @@ class ArmDescription:
     """One kinematic chain that ends in a tool frame: an arm, or a neck that points a camera.
 
     Leave ``joints`` (and ``links``) empty to infer them from ``base_link`` to
-    ``end_effector_link``. Joint values in ``parking`` and ``carrying`` are [rad] or [m].
+    ``end_effector_link`` (the wrist). Joint values in ``parking`` and ``carrying`` are
+    [rad] or [m].
+
+    The tool frame follows one convention on every robot, so plans need not know the hand:
+    its origin between the finger tips, x the approach direction (out of the palm), y the
+    direction the fingers open in.
+
+    The hand, defaults derived from the URDF at load when left empty:
+
+    - ``gripper``: per joint, the open and closed positions, and the widest opening
+      (:class:`~robocram.robots.gripper.GripperDescription`); by default from
+      ``gripper_joints``, open at the upper limits and closed at the lower ones;
+    - ``gripper_joints``: the joints that open and close it (the ``gripper``'s joints);
+    - ``gripper_links``: the links those joints move (the fingers); gripping holds an
+      object when they touch it;
+    - ``hand_links``: every link that may touch the object being grasped (collision mode
+      ``allow_hand``); by default the wrist and everything below it.
     """
 
     name: str
@@ -39,18 +58,32 @@ class ArmDescription:
     parking: Mapping[str, float] = field(default_factory=dict)
     carrying: Mapping[str, float] = field(default_factory=dict)
     side: str | None = None  # "left" | "right": the side CRAM's two-armed motions call it
+    gripper: GripperDescription | None = None
 
 
 @dataclass(frozen=True)
 class CameraDescription:
-    """A camera: its optical frame (z forward, x right, y down) and where the torso can hold it."""
+    """A camera: its optical frame (z forward, x right, y down) and where the torso can hold it.
+
+    Heights left ``None`` are derived at load: the frame's height over the root link with
+    the torso at its lower and upper limit (the neck parked).
+    """
 
     frame: str
-    minimal_height: float  # [m] over the floor
-    maximal_height: float  # [m] over the floor
-    horizontal_fov: float  # [rad]
-    vertical_fov: float  # [rad]
+    minimal_height: float | None = None  # [m] over the floor
+    maximal_height: float | None = None  # [m] over the floor
+    horizontal_fov: float = field(kw_only=True)  # [rad]
+    vertical_fov: float = field(kw_only=True)  # [rad]
     name: str = "camera"
+
+    def height_range(self) -> tuple[float, float]:
+        """``(minimal_height, maximal_height)`` [m]; set on every loaded description."""
+        if self.minimal_height is None or self.maximal_height is None:
+            raise DescriptionError(
+                f"camera {self.frame!r} has no height range yet; load the description "
+                "(load_description) to derive it from the torso's limits"
+            )
+        return self.minimal_height, self.maximal_height
 
 
 @dataclass(frozen=True)
@@ -141,10 +174,12 @@ class LoadedDescription(RobotDescription):
     """A description checked against its URDF: ``model`` is always the parsed model.
 
     Only ``load_description`` makes one; code that needs the model takes this type, so
-    it never has to test ``model`` for None.
+    it never has to test ``model`` for None. ``findings`` are the checker's warnings
+    (things plans need that were left out, doubtful frames).
     """
 
     model: RobotModel = field(kw_only=True)
+    findings: tuple[Finding, ...] = field(default=(), kw_only=True, compare=False)
 
     @classmethod
     def checked(

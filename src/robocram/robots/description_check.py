@@ -1,22 +1,33 @@
-"""Check a robot description against its model: every named joint, link and frame must exist.
+"""Check a robot description against its model: names first, then what the values mean.
 
-All problems are collected and reported together, each with the closest existing names.
+Every named joint, link and frame must exist; all such problems are reported together,
+each with the closest existing names. The semantic checks then look at the loaded model:
+where the tool frame points, where the camera looks, what the torso lifts, and what was
+left empty that plans need.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import replace
 
-from robocram.robots.description import ArmDescription, RobotDescription
+from robocram.robots.description import (
+    ArmDescription,
+    CameraDescription,
+    LoadedDescription,
+    RobotDescription,
+)
 from robocram.robots.errors import (
     DescriptionCheckError,
     JointValueError,
     NameProblem,
     closest_names,
 )
+from robocram.robots.findings import Finding
+from robocram.robots.model_pose import finite_limits, link_pose
 from robocram.robots.robot_model import RobotModel
+from robocram.tf.quaternion import rotate
 
 _LIMIT_SLACK = 1e-6  # [rad | m] tolerance on description values at a limit
 
@@ -57,6 +68,7 @@ class _Checker:
         self.links(arm.hand_links, f"{where}.hand_links")
         self.joints(arm.joints, f"{where}.joints")
         self.joints(arm.gripper_joints, f"{where}.gripper_joints")
+        self.joints(arm.gripper.names if arm.gripper else (), f"{where}.gripper.joints")
         self.joints(arm.parking, f"{where}.parking")
         self.joints(arm.carrying, f"{where}.carrying")
 
@@ -123,3 +135,189 @@ def check_values(robot: str, model: RobotModel, states: Mapping[str, float]) -> 
         upper = math.inf if joint.upper is None else joint.upper
         if not lower - _LIMIT_SLACK <= value <= upper + _LIMIT_SLACK:
             raise JointValueError(robot, name, value, lower, upper)
+
+
+def semantic_findings(desc: LoadedDescription) -> tuple[Finding, ...]:
+    """What a loaded description gets wrong or leaves doubtful beyond its names.
+
+    Faults: a tool frame whose x (approach) points back at the wrist, a camera looking
+    backwards, minimal above maximal camera height, a torso joint that does not lift the
+    arms' bases. Warnings: a camera frame that is not optical (z forward), and anything
+    left empty that plans need (a gripper, a parking pose, a camera, its widest opening).
+    """
+    found: list[Finding] = []
+    for key, arm in desc.arms.items():
+        if key != desc.neck_arm:
+            found += _tool_frame_findings(desc.model, key, arm)
+    for i, camera in enumerate(desc.cameras):
+        found += _camera_findings(desc, i, camera)
+    found += _torso_findings(desc)
+    found += _gap_findings(desc)
+    return tuple(found)
+
+
+_AXES = {"+x": (1, 0, 0), "-x": (-1, 0, 0), "+y": (0, 1, 0), "-y": (0, -1, 0), "+z": (0, 0, 1)}
+_AXES["-z"] = (0, 0, -1)
+_CAN_JUDGE = 1e-3  # [m] closer frames have no direction between them
+_AWAY = 0.5  # cos of the largest angle [rad] between tool x and wrist-to-tool (60 degrees)
+
+
+def _direction(a: Sequence[float], b: Sequence[float]) -> tuple[float, float, float] | None:
+    """Unit vector from ``a`` to ``b``, None when they (nearly) coincide."""
+    d = [q - p for p, q in zip(a, b, strict=True)]
+    norm = math.sqrt(sum(c * c for c in d))
+    return None if norm < _CAN_JUDGE else (d[0] / norm, d[1] / norm, d[2] / norm)
+
+
+def _nearest_axis(direction: Sequence[float]) -> str:
+    return max(_AXES, key=lambda k: sum(a * b for a, b in zip(_AXES[k], direction, strict=True)))
+
+
+def _tool_frame_findings(model: RobotModel, key: str, arm: ArmDescription) -> list[Finding]:
+    """The tool frame's x must point away from the wrist (the approach direction)."""
+    wrist_in_tool = link_pose(model, arm.tool_frame).inverse() * link_pose(
+        model, arm.end_effector_link
+    )
+    away = _direction(wrist_in_tool.position, (0.0, 0.0, 0.0))
+    if away is None or away[0] >= _AWAY:
+        return []
+    axis = _nearest_axis(away)
+    return [
+        Finding(
+            "fault",
+            f"arms[{key!r}].tool_frame",
+            f"{arm.tool_frame!r} has x pointing {_degrees(away[0])} deg off the direction "
+            f"away from the wrist {arm.end_effector_link!r}, which is its {axis} axis",
+            f"turn the tool frame so that its x is that {axis} axis (x = approach, "
+            "y = opening; add a FrameSpec on top of it)",
+        )
+    ]
+
+
+def _degrees(cosine: float) -> int:
+    return round(math.degrees(math.acos(max(-1.0, min(1.0, cosine)))))
+
+
+def _camera_findings(desc: LoadedDescription, i: int, camera: CameraDescription) -> list[Finding]:
+    """Heights in order; the optical z looking forward (x forward: a body frame, warned)."""
+    where = f"cameras[{i}]"
+    found = []
+    low, high = camera.height_range()
+    if low > high:
+        found.append(
+            Finding(
+                "fault",
+                where,
+                f"minimal_height {low} m is above maximal_height {high} m",
+                "swap them, or leave both None to derive them from the torso's limits",
+            )
+        )
+    rotation = link_pose(desc.model, camera.frame, desc.neck_parking).orientation
+    z_forward = rotate(rotation, (0.0, 0.0, 1.0))[0]
+    x_forward = rotate(rotation, (1.0, 0.0, 0.0))[0]
+    if z_forward > _CAMERA_FORWARD:
+        return found
+    if x_forward > _AWAY:
+        found.append(
+            Finding(
+                "warning",
+                f"{where}.frame",
+                f"{camera.frame!r} looks along its x, not its z: not an optical frame",
+                "name the camera's optical frame (z forward, x right, y down), often "
+                "'<camera>_optical_frame', or add one with a FrameSpec",
+            )
+        )
+        return found
+    found.append(
+        Finding(
+            "fault",
+            f"{where}.frame",
+            f"{camera.frame!r} looks {_degrees(z_forward)} deg away from the robot's forward "
+            f"x (its z in {desc.base_frame!r} at the neck's parking pose)",
+            "name the camera's optical frame (z forward), or fix neck_parking to face ahead",
+        )
+    )
+    return found
+
+
+_CAMERA_FORWARD = 0.1  # cos: the optical z at most ~84 deg off the base's x (looking down)
+_VERTICAL = 0.9  # cos of the largest angle between a torso's lift and the vertical
+_LIFTS = 1e-3  # [m] an arm base moving less than this is not moved by the torso
+
+
+def _torso_findings(desc: LoadedDescription) -> list[Finding]:
+    """The torso joint must move every arm's base, and vertically."""
+    torso = desc.torso_joint
+    if torso is None:
+        return []
+    limits = finite_limits(desc.model.joints[torso])
+    if limits is None:
+        return []
+    moves = []
+    for key, arm in desc.arms.items():
+        if key == desc.neck_arm or not arm.joints:
+            continue
+        base = desc.model.joints[arm.joints[0]].parent
+        a, b = (link_pose(desc.model, base, {torso: v}).position for v in limits)
+        moves.append((key, math.dist(a, b), abs(b[2] - a[2])))
+    bad = [(k, d, dz) for k, d, dz in moves if d < _LIFTS or dz < _VERTICAL * d]
+    if not bad:
+        return []
+    key, d, dz = bad[0]
+    how = "does not move" if d < _LIFTS else f"moves it {d:.3f} m but only {dz:.3f} m up"
+    return [
+        Finding(
+            "fault",
+            "torso_joint",
+            f"{torso!r} {how} the base of arm {key!r} over its limits",
+            "name the prismatic joint that lifts the arms (not a head or finger joint), "
+            "or None if the robot has no torso",
+        )
+    ]
+
+
+def _gap_findings(desc: LoadedDescription) -> list[Finding]:
+    """Warnings for what plans need that the description leaves empty."""
+    if desc.flying:
+        return []
+    found = []
+    arms = {k: a for k, a in desc.arms.items() if k != desc.neck_arm}
+    for key, arm in arms.items():
+        where = f"arms[{key!r}]"
+        if arm.gripper is None:
+            found.append(
+                Finding(
+                    "warning",
+                    where,
+                    "no gripper: picking up with it fails",
+                    "give gripper_joints (or gripper=GripperDescription(...))",
+                )
+            )
+        elif arm.gripper.max_opening is None:
+            found.append(
+                Finding(
+                    "warning",
+                    f"{where}.gripper",
+                    "its widest opening cannot be derived (no two finger links move apart)",
+                    "give GripperDescription(max_opening=<metres>)",
+                )
+            )
+        if not arm.parking:
+            found.append(
+                Finding(
+                    "warning",
+                    f"{where}.parking",
+                    "empty: parking the arms leaves this arm where it is",
+                    "give joint values to park it",
+                )
+            )
+    if arms and not desc.cameras:
+        found.append(
+            Finding(
+                "warning",
+                "cameras",
+                "none: looking and detecting fail",
+                "give a CameraDescription for the camera's optical frame",
+            )
+        )
+    return found

@@ -9,6 +9,7 @@ import difflib
 from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Protocol
 
 
 class DescriptionError(Exception):
@@ -70,15 +71,26 @@ class NameProblem:
         return text
 
 
-class DescriptionCheckError(DescriptionError):
-    """A description names joints, links or frames its robot model does not have."""
+class Problem(Protocol):
+    """A problem of a description that can say what is wrong and how to fix it."""
 
-    def __init__(self, robot: str, model_name: str, problems: Iterable[NameProblem]) -> None:
+    def message(self, model_name: str) -> str:
+        """One line naming the culprit and the fix."""
+
+
+class DescriptionCheckError(DescriptionError):
+    """A description names what its model does not have, or a value that cannot work.
+
+    ``problems`` lists them all: :class:`NameProblem` for names, ``Finding`` (faults of
+    the semantic checks) for values.
+    """
+
+    def __init__(self, robot: str, model_name: str, problems: Iterable[Problem]) -> None:
         self.robot = robot
         self.model_name = model_name
         self.problems = tuple(problems)
         lines = [p.message(model_name) for p in self.problems]
-        super().__init__(f"description {robot!r} does not match its URDF: " + "; ".join(lines))
+        super().__init__(f"description {robot!r} fails its check: " + "; ".join(lines))
 
 
 class JointValueError(DescriptionError):
@@ -108,3 +120,13 @@ def closest_names(name: str, candidates: Iterable[str], n: int = 3) -> tuple[str
 
 class MissingMeshWarning(UserWarning):
     """Mesh files of a URDF were not found and boxes stand in for them."""
+
+
+class GripperDescriptionError(DescriptionError):
+    """A gripper description that cannot open or close: a value that makes no sense."""
+
+    def __init__(self, robot: str, arm: str, problem: str, fix: str) -> None:
+        self.robot = robot
+        self.arm = arm
+        self.problem = problem
+        super().__init__(f"{robot}: gripper of arm {arm!r}: {problem}; {fix}")

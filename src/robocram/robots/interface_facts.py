@@ -3,7 +3,9 @@
 The predicates are declared (extendable, without clauses) in the fact group
 ``robot_interface``; each robot's facts live in its own group ``<name>_description``, so
 several robots share one knowledge base and users add their own rules in further groups.
-Lists are Prolog lists; joint states are lists of ``[Joint, Value]`` pairs [rad | m].
+``gripper_max_opening(R, Arm, Metres)`` is the widest gap between the fingers, for grasp
+models that compare it with an object. Lists are Prolog lists; joint states are lists of
+``[Joint, Value]`` pairs [rad | m].
 The neck arm of a robot (``neck_arm``) answers ``arm_joints/3`` and the like, but not
 ``arm/2``: plans that pick with "any arm" must not pick with the neck.
 """
@@ -32,6 +34,7 @@ INTERFACE_PREDICATES: tuple[str, ...] = (
     "flying_robot/1",
     "gripper_joint/3",
     "gripper_link/3",
+    "gripper_max_opening/3",
     "hand_links/3",
     "joint_axis/3",
     "joint_child/3",
@@ -101,6 +104,8 @@ def _arm_facts(r: str, arm: ArmDescription, is_neck: bool) -> Iterator[Term]:
     yield _fact("robot_tool_frame", r, a, arm.tool_frame)
     yield from (_fact("gripper_joint", r, a, j) for j in arm.gripper_joints)
     yield from (_fact("gripper_link", r, a, link) for link in arm.gripper_links)
+    if arm.gripper is not None and arm.gripper.max_opening is not None:
+        yield _fact("gripper_max_opening", r, a, arm.gripper.max_opening)
     yield _fact("robot_arms_parking_joint_states", r, a, _states(arm.parking))
     yield _fact("robot_arms_carrying_joint_states", r, a, _states(arm.carrying))
 

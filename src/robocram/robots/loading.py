@@ -7,11 +7,20 @@
 from __future__ import annotations
 
 from collections.abc import Iterable
+from dataclasses import replace
 from pathlib import Path
 
 from robocram.robots.builtin import builtin_description
+from robocram.robots.derived_values import derive_arm, derive_camera
 from robocram.robots.description import LoadedDescription, RobotDescription
-from robocram.robots.description_check import check_names, check_values, infer_arm
+from robocram.robots.description_check import (
+    check_names,
+    check_values,
+    infer_arm,
+    semantic_findings,
+)
+from robocram.robots.errors import DescriptionCheckError
+from robocram.robots.findings import warn
 from robocram.robots.package_resolver import PackageResolver
 from robocram.robots.robot_model import RobotModel
 
@@ -19,10 +28,16 @@ from robocram.robots.robot_model import RobotModel
 def load_description(
     name_or_desc: str | RobotDescription, package_paths: Iterable[str | Path] = ()
 ) -> LoadedDescription:
-    """The checked description with ``model`` set and arm chains inferred.
+    """The checked description with ``model`` set and left-out values derived.
+
+    Arm chains, grippers, hand links and camera heights come from the URDF where the
+    description leaves them empty (:mod:`~robocram.robots.derived_values`); warnings of
+    the checker are logged, issued as ``DescriptionWarning`` and kept in ``findings``.
 
     Raises:
-        DescriptionCheckError: a joint, link or frame it names is not in the model.
+        DescriptionCheckError: a joint, link or frame it names is not in the model, or a
+            fault of the semantic checks (a tool frame pointing back, swapped heights, ...).
+        GripperDescriptionError: a gripper that cannot open or close.
         JointValueError: a parking, carrying or neck value lies outside its joint limits.
         UrdfError, PackageNotFoundError: the URDF cannot be read.
     """
@@ -32,7 +47,8 @@ def load_description(
         desc = name_or_desc
     else:
         raise TypeError(
-            f"load_description takes a robot name or a RobotDescription, got {name_or_desc!r}"
+            "load_description takes a robot name or a RobotDescription, got a "
+            f"{type(name_or_desc).__name__}"
         )
     paths = tuple(dict.fromkeys([*desc.package_paths, *(Path(p) for p in package_paths)]))
     model = desc.model or _read_model(desc.urdf, paths)
@@ -43,12 +59,21 @@ def load_description(
         if box.name not in model.links:
             model = model.with_box(box)
     check_names(desc, model)
-    arms = {key: infer_arm(arm, model) for key, arm in desc.arms.items()}
+    arms = {
+        key: derive_arm(desc.name, infer_arm(arm, model), model) for key, arm in desc.arms.items()
+    }
     for arm in arms.values():
         check_values(desc.name, model, arm.parking)
         check_values(desc.name, model, arm.carrying)
     check_values(desc.name, model, desc.neck_parking)
-    return LoadedDescription.checked(desc, model, arms=arms, package_paths=paths)
+    cameras = tuple(derive_camera(desc, model, camera) for camera in desc.cameras)
+    loaded = LoadedDescription.checked(desc, model, arms=arms, cameras=cameras, package_paths=paths)
+    findings = semantic_findings(loaded)
+    faults = [f for f in findings if f.severity == "fault"]
+    if faults:
+        raise DescriptionCheckError(desc.name, model.source, faults)
+    warn(desc.name, findings)
+    return replace(loaded, findings=findings)
 
 
 def _read_model(urdf: str | Path, package_paths: tuple[Path, ...]) -> RobotModel:

@@ -1,0 +1,147 @@
+"""Values a description may leave out, derived from its URDF at load.
+
+- a gripper's open and closed positions: its joints' upper and lower limits;
+- its fingers (``gripper_links``): the links its joints (and their mimic followers) move;
+- its widest opening [m]: the largest growth of a distance between two finger links from
+  closed to open;
+- the hand (``hand_links``): the wrist and every link below it;
+- a camera's minimal and maximal height: its frame's height with the torso at its lower
+  and upper limit, the neck parked.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from dataclasses import replace
+
+from robocram.robots.description import ArmDescription, CameraDescription, RobotDescription
+from robocram.robots.description_check import check_values
+from robocram.robots.errors import GripperDescriptionError
+from robocram.robots.gripper import GripperDescription, GripperJoint
+from robocram.robots.model_pose import finite_limits, link_pose, subtree_links
+from robocram.robots.robot_model import RobotModel
+
+MIN_OPENING = 1e-4  # [m] a smaller growth of the finger gap means no opening was found
+
+
+def derive_arm(robot: str, arm: ArmDescription, model: RobotModel) -> ArmDescription:
+    """``arm`` with its gripper, fingers and hand filled in from the model where empty."""
+    gripper = _gripper(robot, arm, model)
+    hand = arm.hand_links or subtree_links(model, arm.end_effector_link)
+    if gripper is None:
+        return replace(arm, hand_links=hand)
+    fingers = arm.gripper_links or moved_links(model, gripper.names)
+    if gripper.max_opening is None:
+        gripper = replace(gripper, max_opening=widest_opening(model, gripper, fingers))
+    return replace(
+        arm,
+        gripper=gripper,
+        gripper_joints=gripper.names,
+        gripper_links=fingers,
+        hand_links=hand,
+    )
+
+
+def _gripper(robot: str, arm: ArmDescription, model: RobotModel) -> GripperDescription | None:
+    """The arm's gripper as given, or the parallel default from its gripper joints' limits."""
+    gripper = arm.gripper
+    if gripper is None:
+        if not arm.gripper_joints:
+            return None
+        gripper = GripperDescription(
+            tuple(_from_limits(robot, arm.name, model, j) for j in arm.gripper_joints)
+        )
+    elif arm.gripper_joints and tuple(arm.gripper_joints) != gripper.names:
+        raise GripperDescriptionError(
+            robot,
+            arm.name,
+            f"gripper_joints {arm.gripper_joints} differ from the gripper's {gripper.names}",
+            "give only ArmDescription.gripper (gripper_joints follow from it)",
+        )
+    _check_gripper(robot, arm.name, model, gripper)
+    return gripper
+
+
+def _from_limits(robot: str, arm: str, model: RobotModel, name: str) -> GripperJoint:
+    limits = finite_limits(model.joints[name])
+    if limits is None:
+        raise GripperDescriptionError(
+            robot,
+            arm,
+            f"joint {name!r} has no finite limits to open and close between",
+            f"give ArmDescription.gripper=GripperDescription((GripperJoint({name!r}, "
+            "open=..., closed=...),))",
+        )
+    return GripperJoint(name, open=limits[1], closed=limits[0])
+
+
+def _check_gripper(robot: str, arm: str, model: RobotModel, gripper: GripperDescription) -> None:
+    if not gripper.joints:
+        raise GripperDescriptionError(
+            robot, arm, "the gripper has no joints", "list at least one GripperJoint"
+        )
+    for joint in gripper.joints:
+        if joint.open == joint.closed:
+            raise GripperDescriptionError(
+                robot,
+                arm,
+                f"joint {joint.name!r} is open and closed at the same value {joint.open}",
+                "give different open and closed values (within the joint's limits)",
+            )
+        check_values(robot, model, {joint.name: joint.open})
+        check_values(robot, model, {joint.name: joint.closed})
+    opening = gripper.max_opening
+    if opening is not None and not (math.isfinite(opening) and opening > 0):
+        raise GripperDescriptionError(
+            robot,
+            arm,
+            f"max_opening {opening} is no positive distance",
+            "give the widest gap between the fingers in metres, or None to derive it",
+        )
+
+
+def moved_links(model: RobotModel, joints: tuple[str, ...]) -> tuple[str, ...]:
+    """Links below ``joints`` and below the mimic joints that follow them."""
+    movers = set(joints)
+    for joint in model.joints.values():
+        if joint.mimic is not None and joint.mimic.joint in movers:
+            movers.add(joint.name)
+    links = (subtree_links(model, model.joints[j].child) for j in sorted(movers))
+    return tuple(dict.fromkeys(itertools.chain.from_iterable(links)))
+
+
+def widest_opening(
+    model: RobotModel, gripper: GripperDescription, fingers: tuple[str, ...]
+) -> float | None:
+    """Largest growth [m] of the distance between two finger links from closed to open.
+
+    With fingers that touch when closed this is the widest gap between them; ``None``
+    when no two fingers move apart (a single finger, or links the joints do not move).
+    """
+    closed = [link_pose(model, f, gripper.at(0.0)).position for f in fingers]
+    opened = [link_pose(model, f, gripper.at(1.0)).position for f in fingers]
+    pairs = itertools.combinations(range(len(fingers)), 2)
+    growth = max(
+        (math.dist(opened[i], opened[j]) - math.dist(closed[i], closed[j]) for i, j in pairs),
+        default=0.0,
+    )
+    return growth if growth > MIN_OPENING else None
+
+
+def derive_camera(
+    desc: RobotDescription, model: RobotModel, cam: CameraDescription
+) -> CameraDescription:
+    """``cam`` with missing heights taken at the torso's limits, the neck parked."""
+    if cam.minimal_height is not None and cam.maximal_height is not None:
+        return cam
+    base = dict(desc.neck_parking)
+    torso = desc.torso_joint
+    limits = finite_limits(model.joints[torso]) if torso is not None else None
+    stops = [base] if limits is None else [{**base, torso: value} for value in limits]
+    heights = [link_pose(model, cam.frame, joints).position[2] for joints in stops]
+    return replace(
+        cam,
+        minimal_height=min(heights) if cam.minimal_height is None else cam.minimal_height,
+        maximal_height=max(heights) if cam.maximal_height is None else cam.maximal_height,
+    )

@@ -1,0 +1,59 @@
+"""How a gripper or hand opens and closes: per joint, its open and closed positions.
+
+A parallel gripper needs nothing written: its ``gripper_joints`` open at their upper
+limits and close at their lower ones, and URDF ``<mimic>`` followers move with them. A hand
+whose fingers the URDF does not couple (a simulator plugin does on the real robot) lists
+every finger joint with its open and closed value: all of them move together, each
+linearly from closed to open, which is the coupling declared in the description. The first
+joint is the master: a ``setting-gripper`` position is a value of that joint.
+``max_opening`` [m] is the widest gap between the fingers, what a grasp model compares with
+an object's size; left ``None`` it is derived from the URDF at load.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class GripperJoint:
+    """One joint of a gripper or hand and where it stands open and closed [rad | m]."""
+
+    name: str
+    open: float
+    closed: float
+
+
+@dataclass(frozen=True)
+class GripperDescription:
+    """The joints of a gripper or hand, moving together from closed to open.
+
+    Attributes:
+        joints: the commanded joints, master first; their URDF mimic followers follow.
+        max_opening: [m] widest gap between the fingers; ``None``: derived at load.
+    """
+
+    joints: tuple[GripperJoint, ...]
+    max_opening: float | None = None
+
+    @property
+    def names(self) -> tuple[str, ...]:
+        """The joints' names, master first."""
+        return tuple(j.name for j in self.joints)
+
+    def at(self, fraction: float) -> dict[str, float]:
+        """Joint values [rad | m] at ``fraction`` of the way from closed (0) to open (1)."""
+        return {j.name: j.closed + fraction * (j.open - j.closed) for j in self.joints}
+
+    def fraction_of(self, master_value: float) -> float:
+        """How far open (0 closed, 1 open) the gripper is with its master at ``master_value``."""
+        master = self.joints[0]
+        return (master_value - master.closed) / (master.open - master.closed)
+
+    @classmethod
+    def parallel(cls, joints: tuple[tuple[str, float, float], ...]) -> GripperDescription:
+        """A gripper opening at each joint's upper limit and closing at its lower one.
+
+        ``joints`` holds ``(name, lower, upper)`` per joint.
+        """
+        return cls(tuple(GripperJoint(name, upper, lower) for name, lower, upper in joints))
