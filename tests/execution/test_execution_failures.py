@@ -114,5 +114,10 @@ def test_fields_are_typed_attributes_mypy_can_see() -> None:
     assert hints["goal"] == float | None
     assert hints["limits"] == tuple[float, float] | None
     assert typing.get_type_hints(F.ManipulationPoseUnreachable)["arm"] == str | None
-    assert F.ManipulationPoseUnreachable.fields == ("arm", "target")
+    assert F.ManipulationPoseUnreachable.fields == (
+        "arm",
+        "target",
+        "colliding_pairs",
+        "beyond_reach",
+    )
     assert "fields" not in F.ManipulationPoseUnreachable.__dict__.get("__annotations__", {})

@@ -14,6 +14,11 @@ class IKResult:
     and every mimic joint following them, [rad | m]. On failure it holds the best
     configuration found (closest to the target), still within limits. Errors are those of
     that configuration: ``position_error`` [m], ``orientation_error`` [rad].
+
+    Why it failed, for messages that advise only what applies: ``colliding_pairs`` are the
+    ``(robot link, other)`` pairs the collision check reported for the rejected solutions
+    (most frequent first), ``beyond_reach`` [m] how far the target lies outside the arm's
+    reach bound (0 when it may be reachable).
     """
 
     success: bool
@@ -24,6 +29,8 @@ class IKResult:
     restarts: int = 0
     elapsed: float = 0.0  # [s]
     rejected_in_collision: int = 0  # converged solutions the collision check refused
+    colliding_pairs: tuple[tuple[str, str], ...] = ()
+    beyond_reach: float = 0.0  # [m]
 
     def __bool__(self) -> bool:
         return self.success

@@ -19,7 +19,8 @@ from __future__ import annotations
 import math
 import time
 import weakref
-from collections.abc import Callable, Iterator, Mapping
+from collections import Counter
+from collections.abc import Callable, Collection, Iterator, Mapping
 from dataclasses import replace
 
 import numpy as np
@@ -41,8 +42,10 @@ from robocram.kinematics.seed_table import (
 from robocram.robots import RobotDescription, RobotModel
 from robocram.tf import Pose, PoseStamped
 
-CollisionCheck = Callable[[dict[str, float]], bool]
-"""Called with a candidate's joint values; returns True when that configuration collides."""
+LinkPair = tuple[str, str]
+CollisionCheck = Callable[[dict[str, float]], bool | Collection[LinkPair]]
+"""Called with a candidate's joint values; returns True, or the colliding ``(robot link,
+other)`` pairs, when that configuration collides (False or empty when it is free)."""
 
 TABLE_SIZE = 20_000  # sampled configurations in an arm's start table
 _DEFAULT = IKSettings()
@@ -157,7 +160,8 @@ class IKSolver:
         reference = self.start(seed)
         target_se3, in_base, seed_distance = self.locate(target, seed, reference, b)
         best = Best(reference)
-        descents = iterations = rejected = fruitless = 0
+        descents = iterations = fruitless = 0
+        hits = _Hits()
         for x in self._starts(reference, in_base, seed_distance, s, random_seed):
             if descents > s.max_restarts:
                 break
@@ -169,9 +173,10 @@ class IKSolver:
             iterations += run.iterations
             if run.converged:
                 values = self.chain.joint_positions(self.chain.wrap_continuous(run.x, reference))
-                if collision_check is None or not collision_check(values):
-                    return self._result(True, values, best, iterations, descents, rejected, t0)
-                rejected += 1
+                hit = collision_check(values) if collision_check is not None else False
+                if not hit:
+                    return self._result(True, values, best, iterations, descents, hits, t0)
+                hits.add(hit)
             elif run.stalled:
                 fruitless = fruitless + 1 if run.minimum > before * 0.99 else 1
                 if fruitless >= s.fruitless_descents:
@@ -179,7 +184,10 @@ class IKSolver:
         if descents == 0:  # beyond reach: report the seed
             descend(self.chain, reference, target_se3, b, replace(s, max_iterations=1), best)
         values = self.chain.joint_positions(self.chain.wrap_continuous(best.x, reference))
-        return self._result(False, values, best, iterations, descents, rejected, t0)
+        result = self._result(False, values, best, iterations, descents, hits, t0)
+        return replace(
+            result, beyond_reach=max(self.reach.distance_outside(in_base.translation), 0.0)
+        )
 
     def _starts(
         self,
@@ -211,7 +219,7 @@ class IKSolver:
         best: Best,
         iterations: int,
         descents: int,
-        rejected: int,
+        hits: _Hits,
         t0: float,
     ) -> IKResult:
         return IKResult(
@@ -222,8 +230,22 @@ class IKSolver:
             iterations=iterations,
             restarts=max(descents - 1, 0),
             elapsed=time.perf_counter() - t0,
-            rejected_in_collision=rejected,
+            rejected_in_collision=hits.rejected,
+            colliding_pairs=tuple(pair for pair, _ in hits.pairs.most_common()),
         )
+
+
+class _Hits:
+    """What the collision check refused: how many solutions, and which pairs how often."""
+
+    def __init__(self) -> None:
+        self.rejected = 0
+        self.pairs: Counter[LinkPair] = Counter()
+
+    def add(self, hit: bool | Collection[LinkPair]) -> None:
+        self.rejected += 1
+        if not isinstance(hit, bool):
+            self.pairs.update(hit)
 
 
 def _pose_distance(a: pin.SE3, b: pin.SE3) -> float:

@@ -15,14 +15,12 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 from robocram.execution import checkpoint
-from robocram.execution.failures import (
-    ManipulationGoalNotReached,
-    ManipulationPoseUnreachable,
-)
+from robocram.execution.failures import ManipulationGoalNotReached
 from robocram.kinematics import IKResult, solve_ik
 from robocram.projection.collision_mode import collision_check
 from robocram.projection.errors import unknown_name
 from robocram.projection.projected_robot import ProjectedRobot
+from robocram.projection.reach_failure import unreachable
 from robocram.tf import Pose, PoseLike, PoseStamped
 
 POSITION_TOLERANCE = 0.01  # [m] between the reached tool frame and the target
@@ -69,6 +67,8 @@ def move_tcp(
 
     Raises:
         ManipulationPoseUnreachable: IK found no collision-free solution; the arm stays.
+            The message names the colliding link pairs and advises what applies
+            (``reach_failure``).
         ManipulationGoalNotReached: the applied joints miss the target (limits clamped).
     """
     spec = robot.arm(arm)
@@ -76,18 +76,8 @@ def move_tcp(
     target_in_base = robot.base_pose().inverse() * target_in_map
     result = _solve(robot, arm, target_in_base, collision_mode, random_seed)
     if not result.success:
-        raise ManipulationPoseUnreachable(
-            f"{robot.name}'s {arm} arm cannot reach {target_in_map} (map) with collision "
-            f"mode {collision_mode}; best IK configuration misses by "
-            f"{result.position_error:.3f} m, {result.orientation_error:.3f} rad"
-            + (
-                f", {result.rejected_in_collision} solutions rejected in collision"
-                if result.rejected_in_collision
-                else ""
-            ),
-            arm=arm,
-            target=target,
-        )
+        desc = robot.description
+        raise unreachable(desc, arm, target, target_in_map, collision_mode, result)
     robot.world.set_joint_states(robot.name, dict(result.joint_positions))
     reached = robot.world.link_pose(robot.name, spec.tool_frame)
     return ensure_reached(robot.name, arm, reached, target, target_in_map)

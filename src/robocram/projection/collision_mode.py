@@ -19,8 +19,11 @@ CONTACT_DISTANCE = 0.0  # [m] closer than this is a collision (touching counts)
 
 def collision_check(
     robot: ProjectedRobot, arm: str, mode: str
-) -> Callable[[Mapping[str, float]], bool] | None:
-    """An IK ``collision_check`` for ``mode`` (None for ``allow_all``)."""
+) -> Callable[[Mapping[str, float]], list[tuple[str, str]]] | None:
+    """An IK ``collision_check`` for ``mode`` (None for ``allow_all``).
+
+    It returns the colliding ``(robot link, object)`` pairs, so a failure can name them.
+    """
     mode = mode.replace("-", "_")
     if mode not in COLLISION_MODES:
         raise ProjectionError(
@@ -33,16 +36,19 @@ def collision_check(
     if mode == "allow_hand":
         allowed |= {spec.end_effector_link, spec.tool_frame}
 
-    def collides(candidate: Mapping[str, float]) -> bool:
-        return bool(colliding_objects(robot, candidate, allowed))
+    def collides(candidate: Mapping[str, float]) -> list[tuple[str, str]]:
+        return colliding_pairs(robot, candidate, allowed)
 
     return collides
 
 
-def colliding_objects(
+def colliding_pairs(
     robot: ProjectedRobot, joints: Mapping[str, float], allowed_links: set[str]
-) -> list[str]:
-    """Objects the robot would touch at ``joints`` with links other than ``allowed_links``."""
+) -> list[tuple[str, str]]:
+    """``(robot link, object)`` pairs in contact at ``joints``, ``allowed_links`` excepted.
+
+    The object is named by itself, or as ``object/link`` when it has several links.
+    """
     world = robot.world
     model = robot.description.model
     before = {
@@ -53,13 +59,15 @@ def colliding_objects(
     world.set_joint_states(robot.name, dict(joints))
     try:
         held = set(world.attachments(robot.name))
-        hits = []
+        hits: dict[tuple[str, str], None] = {}
         for obj in world.objects():
             if obj.name == robot.name or obj.name in held or obj.type == "floor":
                 continue
-            points = world.contact_points(robot.name, obj, distance=CONTACT_DISTANCE)
-            if any(point.link_a not in allowed_links for point in points):
-                hits.append(obj.name)
-        return hits
+            several = len(world.link_names(obj)) > 1
+            for point in world.contact_points(robot.name, obj, distance=CONTACT_DISTANCE):
+                if point.link_a not in allowed_links:
+                    other = f"{obj.name}/{point.link_b}" if several else obj.name
+                    hits[(point.link_a, other)] = None
+        return list(hits)
     finally:
         world.set_joint_states(robot.name, before)

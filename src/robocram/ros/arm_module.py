@@ -13,9 +13,10 @@ from __future__ import annotations
 from typing import Any
 
 from robocram.designators import SIDES
-from robocram.execution.failures import ManipulationGoalNotReached, ManipulationPoseUnreachable
+from robocram.execution.failures import ManipulationGoalNotReached
 from robocram.kinematics import IKResult, solve_ik
 from robocram.projection.arm import IK_RANDOM_SEED, ensure_reached, joint_values
+from robocram.projection.reach_failure import unreachable
 from robocram.ros.errors import RosCommandError
 from robocram.ros.process_modules import RosProcessModule
 from robocram.tf import Pose, PoseStamped
@@ -73,12 +74,7 @@ class ArmPM(RosProcessModule):
         target_in_map = client.in_map(target)
         result = self._solve(arm, client.base_pose().inverse() * target_in_map)
         if not result.success:
-            raise ManipulationPoseUnreachable(
-                f"{client.name}'s {arm} arm cannot reach {target_in_map} (map); best IK "
-                f"configuration misses by {result.position_error:.3f} m",
-                arm=arm,
-                target=target,
-            )
+            raise unreachable(client.desc, arm, target, target_in_map, "allow_all", result)
         solution = dict(result.joint_positions)
         torso = client.desc.torso_joint
         if torso in solution:

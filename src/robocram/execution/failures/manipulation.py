@@ -28,8 +28,10 @@ class ManipulationPoseUnreachable(ManipulationLowLevelFailure):
     """No arm configuration reaches the target (IK found no solution)."""
 
     target: object | None = None
+    colliding_pairs: tuple[tuple[str, str], ...] | None = None  # (robot link, object)
+    beyond_reach: float | None = None  # [m] the target's distance beyond the arm's reach
     summary = "the target pose is out of the arm's reach"
-    hint = "move the base closer or use the other arm"
+    hint = ""  # the advice depends on the robot and the cause: the raiser's message has it
 
 
 class GripperLowLevelFailure(LowLevelFailure):

@@ -1,0 +1,92 @@
+"""Why an arm cannot reach a pose, said so that the advice fits the robot and the cause.
+
+The IK result says what collided (``colliding_pairs``) and how far the target lies beyond
+the arm's reach (``beyond_reach``). The message names the colliding link pairs and advises
+only what applies: moving the base closer only when the target is out of reach (and by how
+much), the other arm only when the robot has one, letting the hand touch only when the
+hand hit an object while every contact was forbidden, adding links to ``hand_links`` only
+when a link below the wrist that is not listed hit the object being grasped.
+"""
+
+from __future__ import annotations
+
+from robocram.execution.failures import ManipulationPoseUnreachable
+from robocram.kinematics import IKResult
+from robocram.robots import ArmDescription, RobotDescription
+from robocram.robots.model_pose import subtree_links
+from robocram.tf import Pose
+
+SHOWN_PAIRS = 4  # colliding pairs named in a message, most frequent first
+
+
+def unreachable(
+    desc: RobotDescription,
+    arm: str,
+    target: object,
+    target_in_map: Pose,
+    mode: str,
+    result: IKResult,
+) -> ManipulationPoseUnreachable:
+    """The failure for ``arm`` missing ``target`` (``result`` is the failed IK answer)."""
+    spec = desc.arms[arm]
+    pairs = result.colliding_pairs
+    text = (
+        f"{desc.name}'s {arm} arm cannot reach {_position(target_in_map)} (map) with "
+        f"collision mode {mode}: "
+    )
+    if pairs:
+        shown = ", ".join(f"{link}-{other}" for link, other in pairs[:SHOWN_PAIRS])
+        more = f" and {len(pairs) - SHOWN_PAIRS} more" if len(pairs) > SHOWN_PAIRS else ""
+        text += (
+            f"{result.rejected_in_collision} solutions rejected in collision "
+            f"(robot link-object: {shown}{more})"
+        )
+    elif result.beyond_reach > 0:
+        text += f"the target lies {result.beyond_reach:.3f} m beyond the arm's reach"
+    else:
+        text += (
+            f"best IK configuration misses by {result.position_error:.3f} m, "
+            f"{result.orientation_error:.3f} rad"
+        )
+    advice = _advice(desc, spec, mode, result)
+    return ManipulationPoseUnreachable(
+        text + ("; " + "; ".join(advice) if advice else ""),
+        arm=arm,
+        target=target,
+        colliding_pairs=pairs or None,
+        beyond_reach=result.beyond_reach or None,
+    )
+
+
+def _position(pose: Pose) -> str:
+    return "(" + ", ".join(f"{c:.3f}" for c in pose.position) + ")"
+
+
+def _advice(desc: RobotDescription, spec: ArmDescription, mode: str, result: IKResult) -> list[str]:
+    advice = []
+    if result.beyond_reach > 0:
+        advice.append(f"move the base at least {result.beyond_reach:.3f} m closer")
+    hand = set(spec.hand_links) | set(spec.gripper_links)
+    hand |= {spec.end_effector_link, spec.tool_frame}
+    links = {link for link, _ in result.colliding_pairs}
+    if mode == "avoid_all" and links & hand:
+        touched = sorted({other for link, other in result.colliding_pairs if link in hand})
+        advice.append(
+            f"if the hand is to touch {', '.join(touched)} (grasping), allow it with "
+            "collision_mode='allow_hand'"
+        )
+    below = subtree_links(desc.model, spec.end_effector_link) if desc.model else ()
+    unlisted = sorted((links - hand) & set(below))
+    if mode == "allow_hand" and unlisted:
+        advice.append(
+            f"{', '.join(unlisted)} hang below the wrist but are not in the {spec.name} arm's "
+            "hand_links; add them if they are part of the hand"
+        )
+    if links - hand - set(unlisted):
+        advice.append("approach from another side, or place the base so the arm clears it")
+    if result.beyond_reach <= 0 and not result.colliding_pairs:
+        advice.append("the joint limits allow no such pose: try another grasp orientation")
+    others = [k for k in desc.arms if k not in (spec.name, desc.neck_arm)]
+    if others and (result.beyond_reach > 0 or not result.colliding_pairs):
+        advice.append(f"or use the other arm ({', '.join(others)})")
+    return advice
