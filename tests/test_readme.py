@@ -1,4 +1,4 @@
-"""The README's example runs as written and detects the mug where the scene put it."""
+"""The README's example runs as written on every robot it names and finds the scene's mug."""
 
 from __future__ import annotations
 
@@ -8,17 +8,35 @@ from pathlib import Path
 import pytest
 
 README = Path(__file__).resolve().parents[1] / "README.md"
+ROBOT_LINE = re.compile(r'^robot = "(\w+)" +# or ((?:"\w+"(?:, )?)+).*$', re.M)
 
 
-def test_readme_example_runs(capsys: pytest.CaptureFixture[str]) -> None:
+def example() -> str:
     code = re.search(r"```python\n(.*?)```", README.read_text(encoding="utf-8"), re.S)
     assert code is not None, "the README lost its example"
+    return code.group(1)
+
+
+def named_robots() -> list[str]:
+    line = ROBOT_LINE.search(example())
+    assert line is not None, 'the example lost its line robot = "..."  # or "...", "..."'
+    return [line.group(1), *re.findall(r'"(\w+)"', line.group(2))]
+
+
+def test_the_example_names_the_three_built_in_manipulators() -> None:
+    assert named_robots() == ["pr2", "hsrb", "boxy"]
+
+
+@pytest.mark.parametrize("robot", named_robots())
+def test_readme_example_runs_on_each_robot_it_names(robot: str) -> None:
+    code = ROBOT_LINE.sub(f'robot = "{robot}"', example(), count=1)
     namespace: dict[str, object] = {}
-    exec(compile(code.group(1), str(README), "exec"), namespace)
+    exec(compile(code, str(README), "exec"), namespace)
     pose = namespace["mug"].get("pose")  # type: ignore[attr-defined]
     assert pose.frame_id == "base_footprint"
     world = namespace["scene"].world  # type: ignore[attr-defined]
-    placed = world.pose("pr2").inverse() * world.pose("mug-1")  # the robot stands at the origin
+    placed = world.pose(robot).inverse() * world.pose("mug-1")
     assert pose.position == pytest.approx(placed.position, abs=1e-3)
-    assert placed.position == pytest.approx((0.587, -0.150, 0.616), abs=1e-3)  # see scenes
+    torso = world.robot(robot).description.torso_joint
+    assert world.joint_states(robot)[torso] == pytest.approx(namespace["top"]["Top"], abs=1e-6)  # type: ignore[index]
     world.close()
