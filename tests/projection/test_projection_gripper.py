@@ -1,0 +1,151 @@
+"""Grippers follow their description: a three-finger hand without mimics opens, closes and
+grips by contact; parallel grippers hold an object with their fingers on it, not closed."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+
+from robocram.execution.failures import GripperClosedCompletely, GripperGoalNotReached
+from robocram.projection import ProjectedRobot
+from robocram.projection.gripper import close_gripper, grip, open_gripper, set_gripper
+from robocram.robots import (
+    ArmDescription,
+    GripperDescription,
+    GripperJoint,
+    RobotDescription,
+)
+from robocram.world import World
+
+pytestmark = pytest.mark.filterwarnings("ignore::robocram.robots.DescriptionWarning")
+PALM_HEIGHT = 0.5  # [m] over the floor with the lift at 0
+OPEN = {"proximal": -0.3, "distal": 0.0}  # [rad] fingers spread
+CLOSED = {"proximal": 0.7, "distal": 0.7}  # [rad] fingers curled in to the centre
+
+
+def _finger(i: int) -> str:
+    angle = 2 * math.pi * i / 3
+    x, y = 0.04 * math.cos(angle), 0.04 * math.sin(angle)
+    box = '<collision><origin xyz="0 0 -0.025"/><geometry><box size="0.012 0.012 0.05"/></geometry></collision>'
+    limit = '<limit lower="-0.5" upper="1.2" velocity="1" effort="1"/>'
+    return f"""
+  <link name="f{i}_proximal">{box}</link>
+  <link name="f{i}_distal">{box}</link>
+  <joint name="f{i}_proximal_joint" type="revolute">
+    <origin xyz="{x} {y} -0.01" rpy="0 0 {angle}"/><parent link="palm"/>
+    <child link="f{i}_proximal"/><axis xyz="0 1 0"/>{limit}
+  </joint>
+  <joint name="f{i}_distal_joint" type="revolute">
+    <origin xyz="0 0 -0.05"/><parent link="f{i}_proximal"/>
+    <child link="f{i}_distal"/><axis xyz="0 1 0"/>{limit}
+  </joint>"""
+
+
+HAND_URDF = f"""<?xml version="1.0"?>
+<robot name="claw">
+  <link name="base_footprint"/>
+  <link name="palm">
+    <collision><geometry><box size="0.1 0.1 0.02"/></geometry></collision>
+  </link>
+  <link name="tool"/>
+  <joint name="lift_joint" type="prismatic">
+    <origin xyz="0 0 {PALM_HEIGHT}"/><parent link="base_footprint"/><child link="palm"/>
+    <axis xyz="0 0 1"/><limit lower="0" upper="0.2" velocity="1" effort="1"/>
+  </joint>
+  <joint name="tool_joint" type="fixed">
+    <origin xyz="0 0 -0.08" rpy="0 1.5707963267948966 0"/><parent link="palm"/>
+    <child link="tool"/>
+  </joint>
+  {"".join(_finger(i) for i in range(3))}
+</robot>
+"""
+
+
+def claw(tmp_path: Path) -> RobotDescription:
+    """A one-"arm" lift with a three-finger hand whose fingers no URDF mimic couples."""
+    path = tmp_path / "claw.urdf"
+    path.write_text(HAND_URDF, encoding="utf-8")
+    joints = tuple(
+        GripperJoint(f"f{i}_{part}_joint", open=OPEN[part], closed=CLOSED[part])
+        for i in range(3)
+        for part in ("proximal", "distal")
+    )
+    hand = ArmDescription(
+        name="hand",
+        end_effector_link="palm",
+        tool_frame="tool",
+        base_link="base_footprint",
+        gripper=GripperDescription(joints),
+        parking={"lift_joint": 0.0},
+    )
+    return RobotDescription("claw", path, base_frame="base_footprint", arms={"hand": hand})
+
+
+@pytest.fixture
+def world() -> Iterator[World]:
+    with World() as world:
+        world.add_floor()
+        yield world
+
+
+def test_opening_and_closing_move_every_declared_finger_joint(world: World, tmp_path: Path) -> None:
+    world.add_robot(claw(tmp_path))
+    robot = ProjectedRobot.of(world, "claw")
+    opened = open_gripper(robot, "hand")
+    assert opened == pytest.approx({f"f{i}_{p}_joint": OPEN[p] for i in range(3) for p in OPEN})
+    closed = close_gripper(robot, "hand")
+    assert closed == pytest.approx({f"f{i}_{p}_joint": CLOSED[p] for i in range(3) for p in OPEN})
+    half = set_gripper(robot, "hand", 0.2)  # the master f0_proximal_joint half way
+    assert half["f2_distal_joint"] == pytest.approx(0.35)
+
+
+def test_the_hand_grips_a_can_between_its_fingers_by_contact(world: World, tmp_path: Path) -> None:
+    world.add_robot(claw(tmp_path))
+    can = world.add_cylinder("can", 0.025, 0.06, pose=(0.0, 0.0, PALM_HEIGHT - 0.06), mass=0.1)
+    robot = ProjectedRobot.of(world, "claw")
+    open_gripper(robot, "hand")
+    assert grip(robot, "hand") == "can"
+    assert world.attachments("claw") == {"can": "palm"}
+    states = world.joint_states("claw")
+    assert OPEN["proximal"] < states["f1_proximal_joint"] < CLOSED["proximal"] - 0.1  # on it
+    for i in range(3):  # every finger touches the can, none sinks into it
+        points = world.contact_points("claw", can, distance=0.005)
+        gaps = [p.distance for p in points if p.link_a.startswith(f"f{i}_")]
+        assert gaps and -0.002 < min(gaps) < 0.002
+
+
+def test_closing_on_nothing_ends_fully_closed(world: World, tmp_path: Path) -> None:
+    world.add_robot(claw(tmp_path))
+    world.add_cylinder("can", 0.025, 0.06, pose=(0.3, 0.0, PALM_HEIGHT - 0.06), mass=0.1)
+    robot = ProjectedRobot.of(world, "claw")
+    open_gripper(robot, "hand")
+    with pytest.raises(GripperClosedCompletely, match="closed on nothing") as info:
+        grip(robot, "hand")
+    assert info.value.position == pytest.approx(CLOSED["proximal"])
+    assert world.attachments("claw") == {}
+
+
+def test_a_position_beyond_open_is_clamped_and_reported(world: World, tmp_path: Path) -> None:
+    world.add_robot(claw(tmp_path))
+    robot = ProjectedRobot.of(world, "claw")
+    with pytest.raises(GripperGoalNotReached, match=r"outside \[-0.3, 0.7\]") as info:
+        set_gripper(robot, "hand", -0.45)
+    assert info.value.reached == pytest.approx(-0.3)
+    assert world.joint_states("claw")["f2_proximal_joint"] == pytest.approx(-0.3)
+
+
+def test_the_pr2_holds_a_can_with_both_finger_tips_on_it(world: World) -> None:
+    world.add_robot("pr2")
+    robot = ProjectedRobot.of(world, "pr2")
+    open_gripper(robot, "right")
+    tool = world.link_pose("pr2", "r_gripper_tool_frame").position
+    world.add_cylinder("can", 0.02, 0.1, pose=tool, mass=0.1)  # 4 cm across, fingers 9.4 cm
+    assert grip(robot, "right") == "can"
+    finger = world.joint_states("pr2")["r_gripper_l_finger_joint"]
+    assert 0.05 < finger < 0.4  # stopped on the can, neither open (0.548) nor closed (0)
+    for tip in ("r_gripper_l_finger_tip_link", "r_gripper_r_finger_tip_link"):
+        points = world.contact_points("pr2", "can", link_a=tip, distance=0.005)
+        assert points and -0.002 < min(p.distance for p in points) < 0.002
