@@ -29,7 +29,10 @@ CLOSED = {"proximal": 0.7, "distal": 0.7}  # [rad] fingers curled in to the cent
 def _finger(i: int) -> str:
     angle = 2 * math.pi * i / 3
     x, y = 0.04 * math.cos(angle), 0.04 * math.sin(angle)
-    box = '<collision><origin xyz="0 0 -0.025"/><geometry><box size="0.012 0.012 0.05"/></geometry></collision>'
+    box = (
+        '<collision><origin xyz="0 0 -0.025"/>'
+        '<geometry><box size="0.012 0.012 0.05"/></geometry></collision>'
+    )
     limit = '<limit lower="-0.5" upper="1.2" velocity="1" effort="1"/>'
     return f"""
   <link name="f{i}_proximal">{box}</link>
