@@ -15,6 +15,8 @@ from robocram.robots.builtin import builtin_description
 from robocram.scenes import TabletopScene, tabletop_scene
 from robocram.tf import PoseStamped
 
+pytestmark = pytest.mark.filterwarnings("ignore::robocram.robots.DescriptionWarning")
+
 DOWN = (0.0, 0.7071068, 0.0, 0.7071068)  # tool x axis (approach) pointing down
 
 

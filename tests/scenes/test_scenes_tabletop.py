@@ -60,4 +60,4 @@ def test_a_robot_without_a_gripper_arm_is_unfit() -> None:
     with World() as world, pytest.raises(UnfitRobotError) as info:
         tabletop_scene("quadrotor", world)
     assert info.value.robot == "quadrotor"
-    assert "no arm with gripper joints" in str(info.value)
+    assert "no arm with joints and a gripper" in str(info.value)

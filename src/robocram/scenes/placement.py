@@ -21,6 +21,7 @@ from dataclasses import dataclass
 
 from robocram.kinematics import forward_kinematics
 from robocram.robots import ArmDescription, LoadedDescription
+from robocram.robots.model_pose import finite_limits
 from robocram.scenes.errors import UnfitRobotError
 from robocram.tf import Pose, Vector3
 from robocram.world import World
@@ -50,13 +51,10 @@ class TabletopPlacement:
 
 
 def _joints_for_torso(desc: LoadedDescription) -> dict[str, float]:
-    model = desc.model
-    if desc.torso_joint is None or model is None:
+    limits = finite_limits(desc.model.joints[desc.torso_joint]) if desc.torso_joint else None
+    if desc.torso_joint is None or limits is None:
         return {}
-    joint = model.joints[desc.torso_joint]
-    if joint.lower is None or joint.upper is None or not math.isfinite(joint.upper - joint.lower):
-        return {}
-    return {desc.torso_joint: (joint.lower + joint.upper) / 2}
+    return {desc.torso_joint: sum(limits) / 2}
 
 
 def _shoulder(desc: LoadedDescription, arm: ArmDescription, torso: dict[str, float]) -> Vector3:
@@ -106,7 +104,11 @@ def tabletop_placement(world: World, robot: str) -> TabletopPlacement:
     desc = world.robot(robot).description
     arms = [a for a in desc.arms.values() if a.gripper_joints and a.joints]
     if not arms:
-        raise UnfitRobotError(robot, "it has no arm with gripper joints to pick the mug with")
+        raise UnfitRobotError(
+            robot,
+            "it has no arm with joints and a gripper to pick the mug with; give an "
+            "ArmDescription joints (or a base_link) and gripper_joints (or gripper=...)",
+        )
     torso = _joints_for_torso(desc)
     arm = min(arms, key=lambda a: (_shoulder(desc, a, torso)[1], a.name))
     shoulder = _shoulder(desc, arm, torso)
