@@ -19,6 +19,7 @@ from robocram.robots.errors import (
     PackagePathError,
     UrdfError,
 )
+from robocram.robots.example_robot_data import example_robot_data_folder
 from robocram.robots.findings import DescriptionWarning, Finding
 from robocram.robots.fixed_merge import MergedModel, merge_fixed_links
 from robocram.robots.gripper import GripperDescription, GripperJoint
@@ -56,6 +57,7 @@ __all__ = [
     "RobotDescription",
     "RobotModel",
     "UrdfError",
+    "example_robot_data_folder",
     "install_description",
     "link_pose",
     "load_description",
