@@ -38,11 +38,6 @@ _FINGER_LINKS = tuple(
 _PARKING = (0.0, -1.57, -1.57, 0.0)
 # Forearm forward and level (arm_flex + wrist_flex = -pi/2): holds an object while driving.
 _CARRYING = (-0.5, 0.0, -1.07, 0.0)
-# The RGB-D sensor's optical frame over the floor at head tilt 0: torso_lift_joint origin
-# (0.752 m) plus the sensor's height on the tilt link (0.215172 m), plus the torso lift,
-# which is half the arm lift (0.69 m): 0.967172 m to 1.312172 m.
-_CAMERA_LOWEST = 0.752 + 0.215172  # [m]
-_CAMERA_HIGHEST = _CAMERA_LOWEST + 0.5 * 0.69  # [m]
 _XTION_HFOV = math.radians(58.0)  # [rad] the Xtion PRO LIVE's RGB field of view
 _XTION_VFOV = math.radians(45.0)  # [rad]
 
@@ -73,10 +68,8 @@ def description() -> RobotDescription:
         torso_joint="arm_lift_joint",
         arms={"arm": _arm()},
         cameras=(
-            CameraDescription(
+            CameraDescription(  # heights derived: 0.967 m to 1.312 m as the torso lifts it
                 frame="head_rgbd_sensor_link",
-                minimal_height=_CAMERA_LOWEST,
-                maximal_height=_CAMERA_HIGHEST,
                 horizontal_fov=_XTION_HFOV,
                 vertical_fov=_XTION_VFOV,
                 name="head_rgbd_sensor",
