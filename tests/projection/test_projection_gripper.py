@@ -18,6 +18,7 @@ from robocram.robots import (
     GripperJoint,
     RobotDescription,
 )
+from robocram.robots.example_robot_data import example_robot_data_folder
 from robocram.world import World
 
 pytestmark = pytest.mark.filterwarnings("ignore::robocram.robots.DescriptionWarning")
@@ -152,3 +153,20 @@ def test_the_pr2_holds_a_can_with_both_finger_tips_on_it(world: World) -> None:
     for tip in ("r_gripper_l_finger_tip_link", "r_gripper_r_finger_tip_link"):
         points = world.contact_points("pr2", "can", link_a=tip, distance=0.005)
         assert points and -0.002 < min(p.distance for p in points) < 0.002
+
+
+def test_the_allegro_hand_opens_and_closes_every_finger_it_declares(world: World) -> None:
+    urdf = example_robot_data_folder() / "allegro_hand_description/urdf/allegro_right_hand.urdf"
+    curls = [f"joint_{i}.0" for i in (1, 2, 3, 5, 6, 7, 9, 10, 11, 13, 14, 15)]
+    gripper = GripperDescription(tuple(GripperJoint(j, open=0.0, closed=1.1) for j in curls))
+    hand = ArmDescription(
+        "hand", "palm_link", "palm_link", base_link="palm_link", gripper=gripper, parking={}
+    )
+    world.add_robot(RobotDescription("allegro", urdf, "palm_link", arms={"hand": hand}))
+    robot = ProjectedRobot.of(world, "allegro")
+    thumb_turn = world.joint_states("allegro")["joint_12.0"]
+    close_gripper(robot, "hand")
+    assert all(world.joint_states("allegro")[j] == pytest.approx(1.1) for j in curls)
+    open_gripper(robot, "hand")  # no finger curls while "opening"
+    assert all(world.joint_states("allegro")[j] == pytest.approx(0.0) for j in curls)
+    assert world.joint_states("allegro")["joint_12.0"] == thumb_turn  # not declared: stays
