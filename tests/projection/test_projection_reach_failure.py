@@ -82,3 +82,17 @@ def test_a_finger_left_out_of_hand_links_is_named_in_allow_hand_mode() -> None:
     assert "hang below the wrist but are not in the arm arm's hand_links" in text
     assert "hand_l_distal_link" in text or "hand_r_distal_link" in text
     scene.world.close()
+
+
+def test_a_target_behind_the_arm_advises_turning_the_base_and_the_other_arm() -> None:
+    scene = tabletop_scene("pr2")
+    behind = PoseStamped("base_footprint", (-0.45, -0.2, 0.9))
+    text = failure(scene, "right", behind, collision_mode="allow_all")
+    assert "best IK configuration misses by 0.2" in text
+    assert "the joint limits keep the tool 0.2" in text and "turn or move the base" in text
+    assert (
+        "turn or move the base so that the target lies in front of the arm; or use the other arm (left)"
+        in text
+    )
+    assert "move the base at least" not in text and "rejected" not in text
+    scene.world.close()

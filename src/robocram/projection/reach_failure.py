@@ -17,6 +17,7 @@ from robocram.robots.model_pose import subtree_links
 from robocram.tf import Pose
 
 SHOWN_PAIRS = 4  # colliding pairs named in a message, most frequent first
+POSITION_MISS = 0.01  # [m] a best configuration missing by more is off in position
 
 
 def unreachable(
@@ -62,6 +63,19 @@ def _position(pose: Pose) -> str:
     return "(" + ", ".join(f"{c:.3f}" for c in pose.position) + ")"
 
 
+def _within_length_advice(result: IKResult) -> str:
+    """What to try when the target is within the arm's length but no pose reaches it."""
+    if result.position_error > POSITION_MISS:
+        return (
+            f"the joint limits keep the tool {result.position_error:.3f} m off: turn or move "
+            "the base so that the target lies in front of the arm"
+        )
+    return (
+        f"the position is reachable, its orientation is {result.orientation_error:.2f} rad "
+        "off: try another grasp orientation"
+    )
+
+
 def _advice(desc: RobotDescription, spec: ArmDescription, mode: str, result: IKResult) -> list[str]:
     advice = []
     if result.beyond_reach > 0:
@@ -85,7 +99,7 @@ def _advice(desc: RobotDescription, spec: ArmDescription, mode: str, result: IKR
     if links - hand - set(unlisted):
         advice.append("approach from another side, or place the base so the arm clears it")
     if result.beyond_reach <= 0 and not result.colliding_pairs:
-        advice.append("the joint limits allow no such pose: try another grasp orientation")
+        advice.append(_within_length_advice(result))
     others = [k for k in desc.arms if k not in (spec.name, desc.neck_arm)]
     if others and (result.beyond_reach > 0 or not result.colliding_pairs):
         advice.append(f"or use the other arm ({', '.join(others)})")
