@@ -121,3 +121,13 @@ def test_what_plans_need_and_is_left_empty_is_warned_about_and_listed() -> None:
     assert subjects == ["arms['right']", "arms['right'].parking", "cameras"]
     assert len(caught) == 3
     assert "no gripper: picking up with it fails; give gripper_joints" in str(caught[0].message)
+
+
+def test_a_loaded_description_passed_on_is_not_warned_about_again() -> None:
+    desc = replace(pr2(), cameras=())
+    with pytest.warns(DescriptionWarning):
+        loaded = load_description(desc)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", DescriptionWarning)
+        again = load_description(loaded)  # what a scene does before World.add_robot
+    assert again.findings == loaded.findings and len(again.findings) == 1

@@ -72,7 +72,8 @@ def load_description(
     faults = [f for f in findings if f.severity == "fault"]
     if faults:
         raise DescriptionCheckError(desc.name, model.source, faults)
-    warn(desc.name, findings)
+    if not (isinstance(desc, LoadedDescription) and desc.findings == findings):
+        warn(desc.name, findings)  # once per description, not again each time it is passed on
     return replace(loaded, findings=findings)
 
 
