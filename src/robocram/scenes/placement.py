@@ -11,6 +11,9 @@ Nothing is keyed on robot names, so a new robot gets a scene too. The rules:
 - the mug lies :data:`REACH_SHARE` of the arm's stretched length ahead of the shoulder,
   or further if needed for the table's front edge to clear the robot's base footprint
   (its links fixed to the root) by :data:`TABLE_GAP`, the mug :data:`MUG_INSET` behind it;
+- with a pan-tilt head, the mug lies at least as far out as the camera's optical axis,
+  tilted down as far as it goes with the torso up, meets the table: looking aims that
+  axis at the target, and a camera close above a low table cannot look that steeply;
 - the shoulder must reach the wrist's grasp position, else the robot is unfit.
 """
 
@@ -34,6 +37,7 @@ REACH_SHARE = 0.65  # of the arm's stretched length: the mug's x distance from t
 TABLE_DEPTH = 0.6  # [m] along x
 SIDE_SHARE = 0.8  # of the shoulder's y: the mug's y, a little inside the arm's line
 PAN_VERTICAL = 0.9  # |z| of a first joint's unit axis above which the arm can pan
+LOOK_MARGIN = 0.05  # [rad] kept from the tilt's limit when looking down at the mug
 
 
 @dataclass(frozen=True)
@@ -84,6 +88,33 @@ def _hand_length(desc: LoadedDescription, arm: ArmDescription) -> float:
     return math.dist((0.0, 0.0, 0.0), (wrist.inverse() * tool).position)
 
 
+def _look_down(pose: Pose) -> float:
+    """Sine of the angle below the horizon that a camera frame's optical z points at."""
+    return -(Pose(orientation=pose.orientation) * Pose((0.0, 0.0, 1.0))).position[2]
+
+
+def _nearest_in_view(desc: LoadedDescription, height: float) -> float:
+    """Nearest x [m] at which the pan-tilt camera sees a point ``height`` [m] high.
+
+    The camera is tilted down as far as its limits allow, with the torso up (where the
+    pick-up plan looks from); -inf without a pan-tilt head, inf if it cannot look down.
+    """
+    pt = desc.pan_tilt
+    tilt = finite_limits(desc.model.joints[pt.tilt_joint]) if pt is not None else None
+    if pt is None or tilt is None or not desc.cameras:
+        return -math.inf
+    up = finite_limits(desc.model.joints[desc.torso_joint]) if desc.torso_joint else None
+    joints = {pt.pan_joint: 0.0, **({desc.torso_joint: up[1]} if desc.torso_joint and up else {})}
+    frame = desc.cameras[0].frame
+    views = [forward_kinematics(desc, {**joints, pt.tilt_joint: v}, frame) for v in tilt]
+    view = max(views, key=_look_down)
+    angle = math.asin(min(_look_down(view), 1.0)) - LOOK_MARGIN
+    if angle <= 0.0:
+        return math.inf
+    x, _, z = view.position
+    return x + (z - height) / math.tan(angle) if angle < math.pi / 2 else -math.inf
+
+
 def _footprint_front(world: World, robot: str, below: float) -> float:
     """Foremost x [m] of the robot's links fixed to its root and reaching below ``below``."""
     desc = world.robot(robot).description
@@ -116,13 +147,15 @@ def tabletop_placement(world: World, robot: str) -> TabletopPlacement:
     table_height = wrist_z - _hand_length(desc, arm) - GRASP_HEIGHT
     reach = _arm_length(desc, arm, torso)
     past_base = _footprint_front(world, robot, table_height) + TABLE_GAP + MUG_INSET
-    mug_x = max(past_base, shoulder[0] + REACH_SHARE * reach)
+    seen = _nearest_in_view(desc, table_height)
+    mug_x = max(past_base, shoulder[0] + REACH_SHARE * reach, seen)
     needed = math.dist(shoulder, (mug_x, shoulder[1], wrist_z))
     if table_height <= 0 or needed > reach:
         raise UnfitRobotError(
             robot,
             f"its {arm.name} arm reaches {reach:.2f} m but the mug in front of its base "
-            f"is {needed:.2f} m from the shoulder (table height {table_height:.2f} m)",
+            f"and in its camera's view (from x = {seen:.2f} m) is {needed:.2f} m from the "
+            f"shoulder (table height {table_height:.2f} m)",
         )
     side = SIDE_SHARE if _pans(desc, arm, torso) else 1.0
     return TabletopPlacement(arm.name, table_height, (mug_x, side * shoulder[1]))
