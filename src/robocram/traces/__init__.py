@@ -1,7 +1,8 @@
 """Execution traces: every top-level run's task tree and world states, kept in SQLite.
 
-``with trace_to("runs.db", world=world):`` writes each task as it starts and ends, and the
-world's state after every motion, so a run can be queried, exported and replayed later.
+``with trace_to("runs.db", world=world):`` writes each run's tasks, and the world's state
+after every motion, in one transaction per motion, so a run can be queried, exported and
+replayed later, and a run killed half-way keeps what it finished.
 Several processes may append to one file (WAL mode, one writer at a time).
 """
 

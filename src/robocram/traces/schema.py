@@ -1,9 +1,10 @@
 """The trace database's tables as typed SQLAlchemy 2.0 ORM models.
 
-One run is one top-level task tree. Tasks are rows keyed by a database-wide id (so several
-processes can append runs to one file) with their parent and their position among its
-children. World states are stored at motion boundaries as rows of object poses, joint
-positions and attachments. ``SCHEMA_VERSION`` changes whenever a table does.
+One run is one top-level task tree. Tasks are rows keyed by a database-wide id made of the
+run's id and the task's start order in the run (:func:`task_key`), so a tracer knows every
+id before it writes and several processes can append runs to one file; each row names its
+parent and its position among the parent's children. World states are stored at motion
+boundaries, one row each. ``SCHEMA_VERSION`` changes whenever a table does.
 """
 
 from __future__ import annotations
@@ -13,7 +14,7 @@ from typing import Any, cast
 from sqlalchemy import CursorResult, Float, ForeignKey, Index, Integer, String, Table, Text
 from sqlalchemy.orm import DeclarativeBase, Mapped, mapped_column
 
-SCHEMA_VERSION = 1
+SCHEMA_VERSION = 2  # 2: world states in one row each; task ids allocated per run
 
 
 class Base(DeclarativeBase):
@@ -75,7 +76,11 @@ class DesignatorPropertyRow(Base):
 
 
 class WorldStateRow(Base):
-    """The world at one moment of a run: after a motion, or at the run's start."""
+    """The world at one moment of a run: after a motion, or at the run's start.
+
+    Stored compactly, one row per state: poses, joints and attachments as JSON text
+    (Python's float text round-trips exactly, so a restored state is bit-identical).
+    """
 
     __tablename__ = "world_states"
     id: Mapped[int] = mapped_column(Integer, primary_key=True)
@@ -83,48 +88,21 @@ class WorldStateRow(Base):
     task_id: Mapped[int | None] = mapped_column(ForeignKey("tasks.id"))
     time: Mapped[float] = mapped_column(Float)  # [s] since the epoch (wall clock)
     sim_time: Mapped[float] = mapped_column(Float)  # [s] of simulated time in the world
+    poses: Mapped[str] = mapped_column(Text)  # {object: [x, y, z, qx, qy, qz, qw]} in map
+    joints: Mapped[str] = mapped_column(Text)  # {object: {joint: [rad] or [m]}}
+    attachments: Mapped[str] = mapped_column(Text)  # [[object, robot, link, pose], ...]
 
     __table_args__ = (Index("ix_world_states_run_time", "run_id", "time"),)
 
 
-class PoseColumns:
-    """A pose as seven columns: position [m] and quaternion (x, y, z, w)."""
-
-    x: Mapped[float] = mapped_column(Float)
-    y: Mapped[float] = mapped_column(Float)
-    z: Mapped[float] = mapped_column(Float)
-    qx: Mapped[float] = mapped_column(Float)
-    qy: Mapped[float] = mapped_column(Float)
-    qz: Mapped[float] = mapped_column(Float)
-    qw: Mapped[float] = mapped_column(Float)
+TASKS_PER_RUN = 1 << 32  # task keys of one run: run id * TASKS_PER_RUN + start order
 
 
-class ObjectPoseRow(PoseColumns, Base):
-    """An object's root-link pose in map [m, quaternion xyzw] in one world state."""
-
-    __tablename__ = "object_poses"
-    state_id: Mapped[int] = mapped_column(ForeignKey("world_states.id"), primary_key=True)
-    object: Mapped[str] = mapped_column(String, primary_key=True)
-
-
-class JointPositionRow(Base):
-    """One movable joint's position [rad or m] in one world state."""
-
-    __tablename__ = "joint_positions"
-    state_id: Mapped[int] = mapped_column(ForeignKey("world_states.id"), primary_key=True)
-    object: Mapped[str] = mapped_column(String, primary_key=True)
-    joint: Mapped[str] = mapped_column(String, primary_key=True)
-    position: Mapped[float] = mapped_column(Float)
-
-
-class AttachmentRow(PoseColumns, Base):
-    """An object fixed to a robot link at ``link_T_obj`` [m, quaternion] in one state."""
-
-    __tablename__ = "attachments"
-    state_id: Mapped[int] = mapped_column(ForeignKey("world_states.id"), primary_key=True)
-    object: Mapped[str] = mapped_column(String, primary_key=True)
-    robot: Mapped[str] = mapped_column(String)
-    link: Mapped[str] = mapped_column(String)
+def task_key(run_id: int, order: int) -> int:
+    """The database-wide id of the ``order``-th task (0: the top level) of run ``run_id``."""
+    if not 0 <= order < TASKS_PER_RUN:
+        raise ValueError(f"a run holds at most {TASKS_PER_RUN} tasks, got task {order}")
+    return run_id * TASKS_PER_RUN + order
 
 
 def table(model: type[Base]) -> Table:

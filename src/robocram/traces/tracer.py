@@ -1,9 +1,11 @@
-"""The tracer: a task listener that writes each run's tasks and world states as they happen.
+"""The tracer: a task listener that writes each run's tasks and world states in batches.
 
-Every task start and every task end is its own committed transaction, so a run that dies
-half-way leaves all it finished (and what was running, marked running) readable. After
-each motion the world's state is stored in the transaction of the motion's end; the run's
-first state is stored when it starts.
+Rows are kept in memory, with every task's id known up front, and written in one
+transaction (one executemany per table) when a task starts after a motion has ended (so
+at every motion boundary), when ``FLUSH_CPU`` seconds of CPU time have passed since the
+last write, and at the run's end. A run killed half-way thus leaves readable every task
+that ended before the last motion did, and the tasks running then, marked running. World
+states are captured after each motion and at the run's start.
 """
 
 from __future__ import annotations
@@ -11,48 +13,22 @@ from __future__ import annotations
 import json
 import os
 import threading
+import time
 from collections.abc import Iterator
 from contextlib import contextmanager, nullcontext
 from pathlib import Path
 from typing import Any
 
-from sqlalchemy import Connection, bindparam, insert, update
-
 from robocram.designators import ActionDesignator, Designator, MotionDesignator
 from robocram.execution import Task, TaskListener, TaskSnapshot, listening
 from robocram.traces.database import TraceDatabase
 from robocram.traces.json_values import dumps
-from robocram.traces.schema import DesignatorPropertyRow, RunRow, TaskRow, new_id, table
-from robocram.traces.world_record import StoredWorldState, insert_world_state, scene_of
+from robocram.traces.trace_buffer import Pending, RunBuffer, TaskEntry, write
+from robocram.traces.world_record import StoredWorldState, scene_of
 from robocram.world import World
 
-TRACE_ENV = "ROBOCRAM_TRACE"
-_TASKS = table(TaskRow)
-_RUNS = table(RunRow)
-_OUTCOME = (
-    "status",
-    "end",
-    "result",
-    "failure_type",
-    "failure_message",
-    "failure_source",
-    "designator_kind",
-    "designator_type",
-)
-# Statements built once: building one per call cost ten times the SQLite work.
-_INSERT_TASK = insert(_TASKS)
-_INSERT_RUN = insert(_RUNS)
-_INSERT_PROPERTY = insert(table(DesignatorPropertyRow))
-_FINISH_TASK = (
-    update(_TASKS)
-    .where(_TASKS.c.id == bindparam("row_id"))
-    .values({name: bindparam(f"new_{name}") for name in _OUTCOME})
-)
-_FINISH_RUN = (
-    update(_RUNS)
-    .where(_RUNS.c.id == bindparam("run_id"))
-    .values(status=bindparam("new_status"), end=bindparam("new_end"))
-)  # environment option: trace top levels to this database file
+TRACE_ENV = "ROBOCRAM_TRACE"  # environment option: trace top levels to this database file
+FLUSH_CPU = 0.5  # [s] of process CPU time after which pending rows are written anyway
 
 
 class Tracer(TaskListener):
@@ -62,40 +38,44 @@ class Tracer(TaskListener):
         self.db = db
         self.world = world
         self.runs: list[int] = []  # ids of the runs written, in start order
-        self._rows: dict[int, tuple[Task, int, int]] = {}  # id(task) -> (task, row, run)
+        self._entries: dict[int, TaskEntry] = {}  # id(task) -> entry, while it runs
         self._designators: dict[int, Designator] = {}
-        self._lock = threading.Lock()
+        self._pending = Pending()
+        self._motion_ended = False  # since the last write
+        self._lock = threading.Lock()  # guards the entries and the pending rows; writes
+        self._last_flush = time.process_time()
 
     def task_started(self, task: Task) -> None:
-        """Insert the task (and, for a new top level, its run and first world state)."""
+        """Give the task its id (its run's start order); a new top level starts a run."""
+        parent = task.parent
         with self._lock:
-            parent = self._rows.get(id(task.parent)) if task.parent is not None else None
-        with self.db.append() as connection:
-            run_id = self._new_run(connection, task) if parent is None else parent[2]
-            row = {
-                "run_id": run_id,
-                "parent_id": None if parent is None else parent[1],
-                "position": _position(task) if parent is not None else 0,
+            above = self._entries.get(id(parent)) if parent is not None else None
+            run = self._new_run(task) if above is None else above.run
+            start = {
+                "position": _position(task) if above is not None else 0,
                 "name": task.name,
                 "path": task.path,
                 "status": task.status.value,
                 "start": task.start_time,
                 "tags": json.dumps(sorted(task.tags)),
             }
-            inserted = connection.execute(_INSERT_TASK, row)
-        with self._lock:
-            self._rows[id(task)] = (task, new_id(inserted), run_id)
+            entry = TaskEntry(run, run.started, None if above is None else above.order, start)
+            run.started += 1
+            self._entries[id(task)] = entry
+            self._pending.tasks.append(entry)
+            due = self._motion_ended or time.process_time() - self._last_flush >= FLUSH_CPU
+        if due:
+            self.flush()
 
-    def _new_run(self, connection: Connection, task: Task) -> int:
+    def _new_run(self, task: Task) -> RunBuffer:
         scene = scene_of(self.world) if self.world is not None else None
         row = {"name": task.name, "status": task.status.value, "start": task.start_time}
-        inserted = connection.execute(_INSERT_RUN, {**row, "pid": os.getpid(), "scene": scene})
-        run_id = new_id(inserted)
+        run = RunBuffer({**row, "pid": os.getpid(), "scene": scene})
+        self._pending.runs.append(run)
         if self.world is not None:
             state = StoredWorldState.capture(self.world, task.start_time or 0.0)
-            insert_world_state(connection, run_id, None, state)
-        self.runs.append(run_id)
-        return run_id
+            self._pending.states.append((None, run, state))
+        return run
 
     def performing(self, task: Task, designator: Any) -> None:
         """Remember the designator; it is written with the task's end."""
@@ -104,32 +84,41 @@ class Tracer(TaskListener):
                 self._designators[id(task)] = designator
 
     def task_finished(self, task: Task) -> None:
-        """Write the outcome; after a motion, also the world's state."""
+        """Keep the outcome (and after a motion the world's state); a run's end writes."""
         with self._lock:
-            known = self._rows.pop(id(task), None)
+            entry = self._entries.pop(id(task), None)
             designator = self._designators.pop(id(task), None)
-        if known is None:
+        if entry is None:
             return
-        _, row_id, run_id = known
-        snap = TaskSnapshot.of(task)
         state = None
         if isinstance(designator, MotionDesignator) and self.world is not None:
             state = StoredWorldState.capture(self.world, task.end_time or 0.0)
-        with self.db.append() as connection:
-            outcome = {f"new_{k}": v for k, v in _outcome(snap, designator).items()}
-            connection.execute(_FINISH_TASK, {"row_id": row_id, **outcome})
-            if designator is not None:
-                _write_properties(connection, row_id, designator)
-            if state is not None:
-                insert_world_state(connection, run_id, row_id, state)
-            if task.parent is None or run_id != self._run_of(task.parent):
-                values = {"new_status": snap.status.value, "new_end": snap.end_time}
-                connection.execute(_FINISH_RUN, {"run_id": run_id, **values})
-
-    def _run_of(self, task: Task) -> int | None:
+        snap = TaskSnapshot.of(task)
+        properties = [] if designator is None else _properties(designator)
+        top = entry.parent is None
         with self._lock:
-            known = self._rows.get(id(task))
-        return None if known is None else known[2]
+            entry.outcome = _outcome(snap, designator)
+            entry.properties = properties
+            self._pending.tasks.append(entry)
+            if state is not None:
+                self._pending.states.append((entry, entry.run, state))
+                self._motion_ended = True
+            if top:
+                entry.run.ended = (snap.status.value, snap.end_time)
+                self._pending.ended_runs.append(entry.run)
+        if top:
+            self.flush()
+
+    def flush(self) -> None:
+        """Write every pending row now, in one transaction."""
+        with self._lock:
+            pending, self._pending = self._pending, Pending()
+            self._motion_ended = False
+            if pending:
+                with self.db.append() as connection:
+                    write(connection, pending)
+                self.runs.extend(r.run_id for r in pending.runs if r.run_id is not None)
+            self._last_flush = time.process_time()
 
 
 def _position(task: Task) -> int:
@@ -153,13 +142,8 @@ def _outcome(snap: TaskSnapshot, designator: Designator | None) -> dict[str, Any
     }
 
 
-def _write_properties(connection: Connection, task_id: int, designator: Designator) -> None:
-    rows = [
-        {"task_id": task_id, "position": i, "key": str(key), "value": dumps(value)}
-        for i, (key, value) in enumerate(designator.properties)
-    ]
-    if rows:
-        connection.execute(_INSERT_PROPERTY, rows)
+def _properties(designator: Designator) -> list[tuple[str, str]]:
+    return [(str(key), dumps(value)) for key, value in designator.properties]
 
 
 @contextmanager
@@ -170,7 +154,10 @@ def trace_to(path: str | Path, world: World | None = None) -> Iterator[Tracer]:
     """
     with TraceDatabase(path) as db, listening(Tracer(db, world)) as tracer:
         assert isinstance(tracer, Tracer)
-        yield tracer
+        try:
+            yield tracer
+        finally:
+            tracer.flush()  # what a block left running (a stopped thread) is kept too
 
 
 def trace_from_environment(world: World | None = None) -> Any:

@@ -13,19 +13,11 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from sqlalchemy import Connection, insert, select
 from sqlalchemy.orm import Session
 
 from robocram.tf import Pose
 from robocram.traces.errors import TraceError
-from robocram.traces.schema import (
-    AttachmentRow,
-    JointPositionRow,
-    ObjectPoseRow,
-    WorldStateRow,
-    new_id,
-    table,
-)
+from robocram.traces.schema import WorldStateRow
 from robocram.world import Attachment, MeshSpec, RobotObject, ShapeSpec, UrdfSpec, World
 
 
@@ -80,64 +72,40 @@ def _set_joints(world: World, name: str, joints: dict[str, float]) -> None:
         world.set_joint_states(name, {j: joints[j] for j in followers})
 
 
-_INSERT_STATE = insert(table(WorldStateRow))  # built once: the tracer's hot path
-_INSERT_POSES = insert(table(ObjectPoseRow))
-_INSERT_JOINTS = insert(table(JointPositionRow))
-_INSERT_ATTACHMENTS = insert(table(AttachmentRow))
-
-
-def insert_world_state(
-    connection: Connection, run_id: int, task_id: int | None, state: StoredWorldState
-) -> int:
-    """Add ``state`` to the run (Core executemany: the tracer's hot path); return its id."""
-    values = {"run_id": run_id, "task_id": task_id, "time": state.time}
-    inserted = connection.execute(_INSERT_STATE, {**values, "sim_time": state.sim_time})
-    state_id = new_id(inserted)
-    poses = [{"state_id": state_id, "object": n, **_pose_fields(p)} for n, p in state.poses.items()]
-    connection.execute(_INSERT_POSES, poses)
-    joints = [
-        {"state_id": state_id, "object": obj, "joint": joint, "position": value}
-        for obj, values in state.joints.items()
-        for joint, value in values.items()
-    ]
-    if joints:
-        connection.execute(_INSERT_JOINTS, joints)
-    if state.attachments:
-        connection.execute(
-            _INSERT_ATTACHMENTS,
-            [
-                {"state_id": state_id, "object": a.obj, "robot": a.robot, "link": a.link}
-                | _pose_fields(a.link_T_obj)
-                for a in state.attachments
-            ],
-        )
-    return state_id
+def state_row(run_id: int, task_id: int | None, state: StoredWorldState) -> dict[str, Any]:
+    """The ``world_states`` row of ``state`` (Core executemany on the tracer's hot path)."""
+    attachments = [[a.obj, a.robot, a.link, _pose_list(a.link_T_obj)] for a in state.attachments]
+    return {
+        "run_id": run_id,
+        "task_id": task_id,
+        "time": state.time,
+        "sim_time": state.sim_time,
+        "poses": json.dumps({n: _pose_list(p) for n, p in state.poses.items()}),
+        "joints": json.dumps(state.joints),
+        "attachments": json.dumps(attachments),
+    }
 
 
 def load_world_state(session: Session, state_id: int) -> StoredWorldState:
     """Read the stored state ``state_id``."""
     row = session.get_one(WorldStateRow, state_id)
-    poses = session.scalars(select(ObjectPoseRow).where(ObjectPoseRow.state_id == state_id))
-    joints: dict[str, dict[str, float]] = {}
-    for j in session.scalars(select(JointPositionRow).where(JointPositionRow.state_id == state_id)):
-        joints.setdefault(j.object, {})[j.joint] = j.position
-    attachments = session.scalars(select(AttachmentRow).where(AttachmentRow.state_id == state_id))
+    attachments = json.loads(row.attachments)
     return StoredWorldState(
         time=row.time,
         sim_time=row.sim_time,
-        poses={p.object: _pose_of(p) for p in poses},
-        joints=joints,
-        attachments=tuple(Attachment(a.object, a.robot, a.link, _pose_of(a)) for a in attachments),
+        poses={n: _pose_of(p) for n, p in json.loads(row.poses).items()},
+        joints=json.loads(row.joints),
+        attachments=tuple(Attachment(o, r, link, _pose_of(p)) for o, r, link, p in attachments),
     )
 
 
-def _pose_fields(pose: Pose) -> dict[str, float]:
-    (x, y, z), (qx, qy, qz, qw) = pose.position, pose.orientation
-    return {"x": x, "y": y, "z": z, "qx": qx, "qy": qy, "qz": qz, "qw": qw}
+def _pose_list(pose: Pose) -> list[float]:
+    return [*pose.position, *pose.orientation]
 
 
-def _pose_of(row: ObjectPoseRow | AttachmentRow) -> Pose:
-    return Pose((row.x, row.y, row.z), (row.qx, row.qy, row.qz, row.qw))
+def _pose_of(values: list[float]) -> Pose:
+    x, y, z, qx, qy, qz, qw = values
+    return Pose((x, y, z), (qx, qy, qz, qw))
 
 
 def scene_of(world: World) -> str:
