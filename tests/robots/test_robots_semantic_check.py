@@ -131,3 +131,12 @@ def test_a_loaded_description_passed_on_is_not_warned_about_again() -> None:
         warnings.simplefilter("error", DescriptionWarning)
         again = load_description(loaded)  # what a scene does before World.add_robot
     assert again.findings == loaded.findings and len(again.findings) == 1
+
+
+def test_warnings_are_logged_too(caplog: pytest.LogCaptureFixture) -> None:
+    with pytest.warns(DescriptionWarning), caplog.at_level("WARNING", logger="robocram.robots"):
+        load_description(replace(pr2(), cameras=()))
+    assert [r.getMessage() for r in caplog.records] == [
+        "robot 'pr2': cameras: none: looking and detecting fail; give a CameraDescription "
+        "for the camera's optical frame"
+    ]
