@@ -280,44 +280,44 @@ def _gap_findings(desc: LoadedDescription) -> list[Finding]:
     """Warnings for what plans need that the description leaves empty."""
     if desc.flying:
         return []
-    found = []
     arms = {k: a for k, a in desc.arms.items() if k != desc.neck_arm}
-    for key, arm in arms.items():
-        where = f"arms[{key!r}]"
-        if arm.gripper is None:
-            found.append(
-                Finding(
-                    "warning",
-                    where,
-                    "no gripper: picking up with it fails",
-                    "give gripper_joints (or gripper=GripperDescription(...))",
-                )
-            )
-        elif arm.gripper.max_opening is None:
-            found.append(
-                Finding(
-                    "warning",
-                    f"{where}.gripper",
-                    "its widest opening cannot be derived (no two finger links move apart)",
-                    "give GripperDescription(max_opening=<metres>)",
-                )
-            )
-        if not arm.parking:
-            found.append(
-                Finding(
-                    "warning",
-                    f"{where}.parking",
-                    "empty: parking the arms leaves this arm where it is",
-                    "give joint values to park it",
-                )
-            )
+    found = [gap for key, arm in arms.items() for gap in _arm_gaps(f"arms[{key!r}]", arm)]
     if arms and not desc.cameras:
+        found.append(_gap("cameras", "none: looking and detecting fail", _CAMERA_FIX))
+    return found
+
+
+_CAMERA_FIX = "give a CameraDescription for the camera's optical frame"
+
+
+def _gap(subject: str, problem: str, fix: str) -> Finding:
+    return Finding("warning", subject, problem, fix)
+
+
+def _arm_gaps(where: str, arm: ArmDescription) -> list[Finding]:
+    found = []
+    if arm.gripper is None:
         found.append(
-            Finding(
-                "warning",
-                "cameras",
-                "none: looking and detecting fail",
-                "give a CameraDescription for the camera's optical frame",
+            _gap(
+                where,
+                "no gripper: picking up with it fails",
+                "give gripper_joints (or gripper=GripperDescription(...))",
+            )
+        )
+    elif arm.gripper.max_opening is None:
+        found.append(
+            _gap(
+                f"{where}.gripper",
+                "its widest opening cannot be derived (no two finger links move apart)",
+                "give GripperDescription(max_opening=<metres>)",
+            )
+        )
+    if not arm.parking:
+        found.append(
+            _gap(
+                f"{where}.parking",
+                "empty: parking the arms leaves this arm where it is",
+                "give joint values to park it",
             )
         )
     return found
