@@ -88,6 +88,7 @@ def viewer_rates(count: int) -> None:
     """Live plan time with the viewer fed, and state updates per second when scrubbing."""
     try:
         from robocram.viewer import LiveFeed, Viewer
+        from robocram.viewer.live_listener import MAX_PUSH_RATE
     except ImportError as err:
         print(f"viewer: skipped, {err.name} missing (pip install 'robocram[viewer]')")
         return
@@ -95,16 +96,19 @@ def viewer_rates(count: int) -> None:
     viewer = Viewer(scene.world, port=_free_port())
     plain, live = [], []
     for _ in range(count):
-        plain.append(_plan_time(scene, contextlib.nullcontext))
+        plain.append(_plan_times(scene, contextlib.nullcontext))
         with LiveFeed(viewer, scene.world) as feed:
-            live.append(_plan_time(scene, lambda: listening(feed)))
+            live.append(_plan_times(scene, lambda: listening(feed)))
             feed.flush()
     states = len(viewer.timeline) // count
-    live_s, plain_s = statistics.median(live), statistics.median(plain)
+    (live_s, live_cpu), (plain_s, plain_cpu) = (
+        tuple(statistics.median(t[i] for t in times) for i in (0, 1)) for times in (live, plain)
+    )
     print(
         f"viewer, live: plan {live_s * 1e3:.1f} ms fed vs {plain_s * 1e3:.1f} ms unfed "
-        f"({100 * (live_s / plain_s - 1):+.1f} %), {states} world states per run, "
-        f"{states / live_s:.1f} states/s while the plan runs"
+        f"({100 * (live_s / plain_s - 1):+.1f} %; CPU {100 * (live_cpu / plain_cpu - 1):+.1f} %), "
+        f"{states} world states per run, {states / live_s:.1f} states/s while the plan runs "
+        f"(browsers get at most {MAX_PUSH_RATE:.0f} pushes/s)"
     )
     frames = len(viewer.view.frames)
     shows = 5 * len(viewer.timeline)

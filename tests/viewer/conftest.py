@@ -1,4 +1,5 @@
-"""A PR2 pick-up (first branch failing) shown live in a viewer and traced to a database."""
+"""A PR2 pick-up (first branch failing, after asking a costmap where to stand) shown live
+in a viewer and traced to a database."""
 
 from __future__ import annotations
 
@@ -48,6 +49,7 @@ def live_run(tmp_path_factory: pytest.TempPathFactory) -> Iterator[LiveRun]:
         listening(feed),
         simulated_robot(scene.world, "pr2", name="pick-mug") as run,
     ):
+        a.location(reachable_for="pr2", object="mug-1").reference()  # through a costmap
         try_in_order(
             ("too-high", lambda: perform(a.motion(type="moving-torso", joint_angle=5.0))),
             ("pick", lambda: pick_up(scene.look_target)),

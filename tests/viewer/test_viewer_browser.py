@@ -24,15 +24,20 @@ WIDTH, HEIGHT = 1024, 640  # [px] of the page
 FOV = math.radians(75.0)  # viser's default vertical field of view
 CHANGED = 40  # a pixel changed if a channel moved by more than this (of 255)
 MARGIN = 12  # [px] around the robot's projected box
+OVERHEAD_FROM, OVERHEAD_AT = (0.6, -2.6, 3.4), (0.6, 0.0, 0.0)  # [m] in map: sees the floor
 
 
 def _pixels(png: bytes) -> np.ndarray:
     return np.asarray(Image.open(io.BytesIO(png)).convert("RGB"), dtype=np.int16)
 
 
-def _project(points: np.ndarray) -> np.ndarray:
+def _project(
+    points: np.ndarray,
+    eye_at: tuple[float, float, float] = CAMERA_FROM,
+    looking_at: tuple[float, float, float] = CAMERA_AT,
+) -> np.ndarray:
     """Pixel (column, row) of map points seen by the page's initial camera."""
-    eye, target = np.asarray(CAMERA_FROM), np.asarray(CAMERA_AT)
+    eye, target = np.asarray(eye_at), np.asarray(looking_at)
     forward = (target - eye) / np.linalg.norm(target - eye)
     right = np.cross(forward, (0.0, 0.0, 1.0))
     right /= np.linalg.norm(right)
@@ -80,3 +85,34 @@ def test_browser_shows_tree_and_draws_the_robot(live_run: Any) -> None:
     box_area = (right - left) * (bottom - top)
     assert len(rows) > 0.1 * box_area  # the robot covers a good part of its box
     assert inside.mean() > 0.97  # and nothing changed elsewhere
+
+
+def test_browser_draws_the_costmap_where_its_cells_are(live_run: Any) -> None:
+    viewer = live_run.viewer
+    (costmap,) = viewer.costmaps  # where to stand to reach the mug, from the live feed
+    viewer.show(len(viewer.timeline) - 1)
+    assert viewer.overlay.shown is costmap
+    viewer.server.initial_camera.position = OVERHEAD_FROM
+    viewer.server.initial_camera.look_at = OVERHEAD_AT
+    try:
+        with HeadlessChromium(WIDTH, HEIGHT) as browser:
+            open_viewer(browser, viewer)
+            with_overlay = settled_screenshot(browser)
+            viewer.overlay.set_visible(False)
+            without_overlay = settled_screenshot(browser)
+    finally:
+        viewer.overlay.set_visible(True)
+        aim_camera(viewer)
+    OUT.mkdir(exist_ok=True)
+    (OUT / "viewer_costmap.png").write_bytes(with_overlay)
+    changed = (np.abs(_pixels(with_overlay) - _pixels(without_overlay)) > CHANGED).any(axis=2)
+    rows, cols = np.nonzero(changed)
+    points, _ = costmap.cells()
+    px = _project(points, OVERHEAD_FROM, OVERHEAD_AT)
+    on_screen = (px[:, 0] >= 0) & (px[:, 0] < WIDTH) & (px[:, 1] >= 0) & (px[:, 1] < HEIGHT)
+    assert on_screen.sum() > 50  # the camera sees a good part of the costmap
+    left, top = px[on_screen].min(axis=0) - MARGIN
+    right, bottom = px[on_screen].max(axis=0) + MARGIN
+    inside = (cols >= left) & (cols <= right) & (rows >= top) & (rows <= bottom)
+    assert len(rows) > 1500  # the cells the robot leaves in sight: ~60 px each from here
+    assert inside.mean() > 0.97  # and nothing changed away from the cells

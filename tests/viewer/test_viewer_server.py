@@ -54,6 +54,10 @@ def test_replay_shows_the_stored_run(live_run: Any) -> None:
         assert viewer.tasks.labels() == live_run.viewer.tasks.labels()
         mug = viewer.display.pose("mug-1").position
         assert np.allclose(mug, live_run.world.pose("mug-1").position, atol=1e-9)
+        ((stored, live),) = zip(viewer.costmaps, live_run.viewer.costmaps, strict=True)
+        assert np.array_equal(stored.weights, live.weights)  # the traced costmap is the fed one
+        assert stored.task_path == live.task_path == "pick-mug"
+        assert viewer.overlay.shown is stored  # drawn with the last world state
 
 
 def _free_port() -> int:

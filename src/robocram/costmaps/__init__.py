@@ -10,6 +10,7 @@ validators check in the world. Bind it with ``using_location_resolver(locs.resol
 from robocram.costmaps.cost_layer import CostFunction, CostLayer, LocationQuery
 from robocram.costmaps.costmap import Costmap
 from robocram.costmaps.costmap_locations import CostmapLocations
+from robocram.costmaps.costmap_observers import CostmapObserver, notify_costmap, observing_costmaps
 from robocram.costmaps.distance_costs import gaussian, ring
 from robocram.costmaps.errors import (
     CostmapError,
@@ -40,6 +41,7 @@ __all__ = [
     "CostmapGrid",
     "CostmapInputError",
     "CostmapLocations",
+    "CostmapObserver",
     "LocationKeyError",
     "LocationNotFound",
     "LocationQuery",
@@ -51,6 +53,8 @@ __all__ = [
     "cache_dir",
     "gaussian",
     "install_reach_predicates",
+    "notify_costmap",
+    "observing_costmaps",
     "pose_reachable",
     "reach_object",
     "reachable",

@@ -22,6 +22,7 @@ import numpy as np
 from robocram.costmaps.cost_layer import CellRefiner, CostFunction, CostLayer, LocationQuery
 from robocram.costmaps.cost_registry import BUILTIN_COST_FUNCTIONS
 from robocram.costmaps.costmap import Costmap
+from robocram.costmaps.costmap_observers import notify_costmap
 from robocram.costmaps.errors import CostmapInputError, LocationNotFound
 from robocram.costmaps.grid import CostmapGrid
 from robocram.costmaps.location_keys import LocationPlan, install_location_keys, plan_location
@@ -100,6 +101,7 @@ class CostmapLocations:
             return
         query = self.query(designator, plan)
         layers = self._costmap(query, plan, lazy=True)
+        notify_costmap(designator, layers.costmap)  # traces and viewers show it
         validators = [(name, self._validator(name)) for name in plan.validators]
         rejected: Counter[str] = Counter()
         accepted = in_a_row = 0

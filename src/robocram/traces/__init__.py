@@ -6,6 +6,7 @@ replayed later, and a run killed half-way keeps what it finished.
 Several processes may append to one file (WAL mode, one writer at a time).
 """
 
+from robocram.traces.costmap_record import StoredCostmap, run_costmaps
 from robocram.traces.database import TraceDatabase
 from robocram.traces.errors import (
     NotATraceDatabase,
@@ -42,6 +43,7 @@ __all__ = [
     "NotATraceDatabase",
     "RunSummary",
     "SchemaVersionMismatch",
+    "StoredCostmap",
     "StoredWorldState",
     "TraceDatabase",
     "TraceError",
@@ -53,6 +55,7 @@ __all__ = [
     "failure_counts",
     "failures",
     "require_run",
+    "run_costmaps",
     "run_ids",
     "runs",
     "scene_of",

@@ -11,10 +11,20 @@ from __future__ import annotations
 
 from typing import Any, cast
 
-from sqlalchemy import CursorResult, Float, ForeignKey, Index, Integer, String, Table, Text
+from sqlalchemy import (
+    CursorResult,
+    Float,
+    ForeignKey,
+    Index,
+    Integer,
+    LargeBinary,
+    String,
+    Table,
+    Text,
+)
 from sqlalchemy.orm import DeclarativeBase, Mapped, mapped_column
 
-SCHEMA_VERSION = 2  # 2: world states in one row each; task ids allocated per run
+SCHEMA_VERSION = 3  # 2: one row per world state, task ids per run; 3: costmaps
 
 
 class Base(DeclarativeBase):
@@ -93,6 +103,29 @@ class WorldStateRow(Base):
     attachments: Mapped[str] = mapped_column(Text)  # [[object, robot, link, pose], ...]
 
     __table_args__ = (Index("ix_world_states_run_time", "run_id", "time"),)
+
+
+class CostmapRow(Base):
+    """A costmap a location designator was resolved through, while a task of the run ran.
+
+    The grid's weights and heights are float64 arrays, row-major, zlib-compressed.
+    """
+
+    __tablename__ = "costmaps"
+    id: Mapped[int] = mapped_column(Integer, primary_key=True)
+    run_id: Mapped[int] = mapped_column(ForeignKey("runs.id"))
+    task_id: Mapped[int | None] = mapped_column(ForeignKey("tasks.id"))
+    time: Mapped[float] = mapped_column(Float)  # [s] since the epoch, when it was built
+    designator: Mapped[str] = mapped_column(Text)  # the location designator's description
+    origin_x: Mapped[float] = mapped_column(Float)  # [m] map x of cell (0, 0)'s centre
+    origin_y: Mapped[float] = mapped_column(Float)  # [m] map y of cell (0, 0)'s centre
+    resolution: Mapped[float] = mapped_column(Float)  # [m] cell side
+    rows: Mapped[int] = mapped_column(Integer)  # cells along y
+    columns: Mapped[int] = mapped_column(Integer)  # cells along x
+    weights: Mapped[bytes] = mapped_column(LargeBinary)
+    heights: Mapped[bytes] = mapped_column(LargeBinary)  # [m] map z of each cell
+
+    __table_args__ = (Index("ix_costmaps_run_time", "run_id", "time"),)
 
 
 TASKS_PER_RUN = 1 << 32  # task keys of one run: run id * TASKS_PER_RUN + start order

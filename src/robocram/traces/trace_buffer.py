@@ -13,8 +13,11 @@ from typing import Any
 
 from sqlalchemy import Connection, insert
 
+from robocram.costmaps import Costmap
+from robocram.traces.costmap_record import costmap_row
 from robocram.traces.schema import (
     Base,
+    CostmapRow,
     DesignatorPropertyRow,
     RunRow,
     TaskRow,
@@ -49,6 +52,7 @@ def _insert_sql(model: type[Base], generated: str | None = None) -> str:
 _INSERT_TASKS = _insert_sql(TaskRow)
 _INSERT_PROPERTIES = _insert_sql(DesignatorPropertyRow)
 _INSERT_STATES = _insert_sql(WorldStateRow, generated="id")
+_INSERT_COSTMAPS = _insert_sql(CostmapRow, generated="id")
 _FINISH_TASKS = (
     f"UPDATE {TaskRow.__tablename__} SET "
     + ", ".join(f'"{name}" = :{name}' for name in OUTCOME)
@@ -95,9 +99,10 @@ class Pending:
     tasks: list[TaskEntry] = field(default_factory=list)  # started or ended since
     states: list[tuple[TaskEntry | None, RunBuffer, StoredWorldState]] = field(default_factory=list)
     ended_runs: list[RunBuffer] = field(default_factory=list)
+    costmaps: list[tuple[TaskEntry, float, Any, Costmap]] = field(default_factory=list)
 
     def __bool__(self) -> bool:
-        return bool(self.runs or self.tasks or self.states or self.ended_runs)
+        return bool(self.runs or self.tasks or self.states or self.ended_runs or self.costmaps)
 
 
 def write(connection: Connection, pending: Pending) -> None:
@@ -123,12 +128,17 @@ def write(connection: Connection, pending: Pending) -> None:
         for e, run, state in pending.states
     ]
     ends = [{"id": _run_id(r), "status": r.ended[0], "end": r.ended[1]} for r in pending.ended_runs]
+    costmaps = [
+        costmap_row(_run_id(e.run), e.run.key(e.order), time, designator, costmap)
+        for e, time, designator, costmap in pending.costmaps
+    ]
     for sql, rows in (
         (_INSERT_TASKS, fresh),
         (_FINISH_TASKS, ended),
         (_INSERT_PROPERTIES, properties),
         (_INSERT_STATES, states),
         (_FINISH_RUN, ends),
+        (_INSERT_COSTMAPS, costmaps),
     ):
         if rows:
             cursor.executemany(sql, rows)

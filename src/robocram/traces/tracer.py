@@ -19,8 +19,9 @@ from contextlib import contextmanager, nullcontext
 from pathlib import Path
 from typing import Any
 
+from robocram.costmaps import Costmap, observing_costmaps
 from robocram.designators import ActionDesignator, Designator, MotionDesignator
-from robocram.execution import Task, TaskListener, TaskSnapshot, listening
+from robocram.execution import Task, TaskListener, TaskSnapshot, current_task, listening
 from robocram.traces.database import TraceDatabase
 from robocram.traces.json_values import dumps
 from robocram.traces.trace_buffer import Pending, RunBuffer, TaskEntry, write
@@ -109,6 +110,14 @@ class Tracer(TaskListener):
         if top:
             self.flush()
 
+    def costmap_built(self, designator: Any, costmap: Costmap) -> None:
+        """Keep a costmap a location was resolved through, with the task that asked."""
+        task = current_task()
+        with self._lock:
+            entry = self._entries.get(id(task)) if task is not None else None
+            if entry is not None:
+                self._pending.costmaps.append((entry, time.time(), designator, costmap))
+
     def flush(self) -> None:
         """Write every pending row now, in one transaction."""
         with self._lock:
@@ -151,11 +160,13 @@ def trace_to(path: str | Path, world: World | None = None) -> Iterator[Tracer]:
     """Trace every top level run inside the block to the SQLite file ``path``.
 
     With ``world``, its state is stored at the start of each run and after each motion.
+    The costmaps location designators are resolved through are stored too.
     """
     with TraceDatabase(path) as db, listening(Tracer(db, world)) as tracer:
         assert isinstance(tracer, Tracer)
         try:
-            yield tracer
+            with observing_costmaps(tracer.costmap_built):
+                yield tracer
         finally:
             tracer.flush()  # what a block left running (a stopped thread) is kept too
 

@@ -1,25 +1,31 @@
-"""Feeding a viewer live: a task listener that sends tree updates and world states.
+"""Feeding a viewer live: a task listener that sends tree updates, world states, costmaps.
 
-The plan's thread only captures the world after each motion (it changes next) and marks
-the tree changed; a feeder thread does the slow part, drawing and sending to browsers,
-and skips to the newest state when it falls behind, so the viewer barely slows a plan.
-Use it as ``with LiveFeed(viewer, world) as feed, listening(feed): ...``.
+The plan's thread only captures the world after each motion (it changes next), keeps the
+costmaps locations are resolved through, and marks the tree changed; a feeder thread does
+the slow part, drawing and sending to browsers, at most ``MAX_PUSH_RATE`` times a second:
+it skips to the newest state, so the viewer barely slows a plan (the feeder's Python work
+would otherwise take the plan's turns at the interpreter). Use it as
+``with LiveFeed(viewer, world) as feed, listening(feed): ...``.
 """
 
 from __future__ import annotations
 
 import threading
+import time
+from contextlib import AbstractContextManager
 from types import TracebackType
 from typing import Any
 
+from robocram.costmaps import Costmap, observing_costmaps
 from robocram.designators import MotionDesignator
-from robocram.execution import Task, TaskListener, TaskSnapshot
-from robocram.traces import StoredWorldState
+from robocram.execution import Task, TaskListener, TaskSnapshot, current_task
+from robocram.traces import StoredCostmap, StoredWorldState
 from robocram.viewer.timeline import Moment
 from robocram.viewer.viewer import Viewer
 from robocram.world import World
 
 FLUSH_TIMEOUT = 120.0  # [s] for the feeder to send what is queued when the block ends
+MAX_PUSH_RATE = 5.0  # [Hz] pushes to the browsers while a plan runs; every state is kept
 
 
 class LiveFeed(TaskListener):
@@ -31,6 +37,8 @@ class LiveFeed(TaskListener):
         self._root: Task | None = None
         self._motions: set[int] = set()
         self._queued: list[Moment] = []
+        self._costmaps: list[StoredCostmap] = []
+        self._observing: AbstractContextManager[Any] | None = None
         self._tree_changed = False
         self._stopping = False
         self._busy = False
@@ -39,6 +47,8 @@ class LiveFeed(TaskListener):
 
     def __enter__(self) -> LiveFeed:
         self._stopping = False
+        self._observing = observing_costmaps(self.costmap_built)
+        self._observing.__enter__()
         self._thread = threading.Thread(target=self._feed, name="robocram:live-feed", daemon=True)
         self._thread.start()
         return self
@@ -49,6 +59,8 @@ class LiveFeed(TaskListener):
         exc: BaseException | None,
         tb: TracebackType | None,
     ) -> None:
+        if self._observing is not None:
+            self._observing.__exit__(None, None, None)
         self.flush()
         with self._wake:
             self._stopping = True
@@ -60,7 +72,8 @@ class LiveFeed(TaskListener):
         """Wait until everything queued has been sent to the viewer."""
         with self._wake:
             self._wake.wait_for(
-                lambda: not (self._queued or self._tree_changed or self._busy), FLUSH_TIMEOUT
+                lambda: not (self._queued or self._costmaps or self._tree_changed or self._busy),
+                FLUSH_TIMEOUT,
             )
 
     def task_started(self, task: Task) -> None:
@@ -91,16 +104,29 @@ class LiveFeed(TaskListener):
             self._tree_changed = True
             self._wake.notify_all()
 
+    def costmap_built(self, designator: Any, costmap: Costmap) -> None:
+        """Keep a costmap a location was resolved through, for the feeder to draw."""
+        task = current_task()
+        path = None if task is None else task.path
+        stored = StoredCostmap.of(costmap, designator, time.time(), path)
+        with self._wake:
+            self._costmaps.append(stored)
+            self._wake.notify_all()
+
     def _feed(self) -> None:
+        pause = 1.0 / MAX_PUSH_RATE
         while True:
             with self._wake:
-                self._wake.wait_for(lambda: self._queued or self._tree_changed or self._stopping)
-                if self._stopping and not (self._queued or self._tree_changed):
+                self._wake.wait_for(self._has_work)
+                if self._stopping and not self._has_work(stopping=False):
                     return
                 moments, self._queued = self._queued, []
+                costmaps, self._costmaps = self._costmaps, []
                 tree_changed, self._tree_changed = self._tree_changed, False
                 root, self._busy = self._root, True
             try:
+                for costmap in costmaps:
+                    self.viewer.add_costmap(costmap)
                 if moments:
                     self.viewer.add_moments(moments)
                 if tree_changed and root is not None:
@@ -109,3 +135,8 @@ class LiveFeed(TaskListener):
                 with self._wake:
                     self._busy = False
                     self._wake.notify_all()
+                    self._wake.wait_for(lambda: self._stopping, pause)  # the rate bound
+
+    def _has_work(self, stopping: bool = True) -> bool:
+        queued = self._queued or self._costmaps or self._tree_changed
+        return bool(queued or (stopping and self._stopping))

@@ -8,6 +8,7 @@ plan; it binds 127.0.0.1 unless another host is asked for explicitly.
 
 from __future__ import annotations
 
+import bisect
 import errno
 import socket
 import threading
@@ -16,7 +17,15 @@ from typing import Any
 import viser
 
 from robocram.execution import TaskSnapshot
-from robocram.traces import TraceDatabase, build_scene, require_run, task_tree
+from robocram.traces import (
+    StoredCostmap,
+    TraceDatabase,
+    build_scene,
+    require_run,
+    run_costmaps,
+    task_tree,
+)
+from robocram.viewer.costmap_overlay import CostmapOverlay
 from robocram.viewer.errors import NoWorld, PortInUse
 from robocram.viewer.task_panel import TaskPanel
 from robocram.viewer.timeline import Moment, Timeline
@@ -62,6 +71,10 @@ class Viewer:
         self.follow = gui.add_checkbox("Follow live", initial_value=True)
         self.slider = gui.add_slider("World state", min=0, max=1, step=1, initial_value=0)
         self.slider.on_update(lambda _event: self._slider_moved())
+        self.costmaps: list[StoredCostmap] = []  # in time order
+        self.overlay = CostmapOverlay(self.server)
+        toggle = gui.add_checkbox("Costmaps", initial_value=True)
+        toggle.on_update(lambda _event: self.overlay.set_visible(bool(toggle.value)))
         self.tasks = TaskPanel(gui, self.show_task)
         self.shown = -1  # index of the moment on screen
 
@@ -86,9 +99,24 @@ class Viewer:
             moment = self.timeline[index]
             moment.state.apply(self.display)
             self.view.show(self.display)
+            self.overlay.show(self.costmap_at(moment.time))
             self.shown = index
         where = moment.task_path or "the start"
         self.caption.content = f"**state {index}**: after {where}"
+
+    def add_costmap(self, costmap: StoredCostmap) -> None:
+        """Add a costmap; it is drawn with the world states after it was built."""
+        with self._lock:
+            times = [c.time for c in self.costmaps]
+            self.costmaps.insert(bisect.bisect_right(times, costmap.time), costmap)
+        if self.shown >= 0:
+            self.show(self.shown)
+
+    def costmap_at(self, time: float) -> StoredCostmap | None:
+        """The last costmap built at or before ``time`` [s since the epoch], if any."""
+        times = [c.time for c in self.costmaps]
+        index = bisect.bisect_right(times, time) - 1
+        return self.costmaps[index] if index >= 0 else None
 
     def _slider_moved(self) -> None:
         index = int(self.slider.value)
@@ -111,6 +139,8 @@ class Viewer:
         """Show stored run ``run`` of ``db``: its tree and all its world states."""
         _set_value(self.follow, False)
         self.set_tree(task_tree(db, run))
+        for costmap in run_costmaps(db, run):
+            self.add_costmap(costmap)
         stored = Timeline.of_run(db, run)
         self.add_moments([stored[index] for index in range(len(stored))])
         _set_value(self.slider, len(self.timeline) - 1)
