@@ -42,6 +42,17 @@ def _plan_times(scene: TabletopScene, around: Callable[[], Any]) -> tuple[float,
         return time.perf_counter() - start, time.process_time() - cpu
 
 
+def _print_medians(times: dict[str, list[tuple[float, float]]], base_name: str) -> None:
+    """One line per mode: median wall and CPU time [ms] and the change from ``base_name``."""
+    base = [statistics.median(t[i] for t in times[base_name]) for i in (0, 1)]
+    for name, values in times.items():
+        wall, cpu = (statistics.median(t[i] for t in values) for i in (0, 1))
+        print(
+            f"  {name:30} {wall * 1e3:7.1f} ms {100 * (wall / base[0] - 1):+6.1f} %"
+            f"  | {cpu * 1e3:7.1f} ms {100 * (cpu / base[1] - 1):+6.1f} %"
+        )
+
+
 def tracing_overhead(count: int, db: Path) -> None:
     """Untraced, traced (tree only) and traced with world states, interleaved.
 
@@ -63,14 +74,8 @@ def tracing_overhead(count: int, db: Path) -> None:
         shift = round_ % len(order)  # rotate who goes first: no mode always pays a warm-up
         for name in order[shift:] + order[:shift]:
             times[name].append(_plan_times(scene, modes[name]))
-    base = [statistics.median(t[i] for t in times["untraced"]) for i in (0, 1)]
     print(f"pick-up plan on the PR2, median of {count} interleaved runs each (wall | CPU):")
-    for name, values in times.items():
-        wall, cpu = (statistics.median(t[i] for t in values) for i in (0, 1))
-        print(
-            f"  {name:30} {wall * 1e3:7.1f} ms {100 * (wall / base[0] - 1):+6.1f} %"
-            f"  | {cpu * 1e3:7.1f} ms {100 * (cpu / base[1] - 1):+6.1f} %"
-        )
+    _print_medians(times, "untraced")
     stored = runs(store)
     store.close()
     tasks = statistics.median(r.tasks for r in stored)
@@ -85,31 +90,28 @@ def _free_port() -> int:
 
 
 def viewer_rates(count: int) -> None:
-    """Live plan time with the viewer fed, and state updates per second when scrubbing."""
+    """Live plan time with the viewer fed (pushes bounded or not), and scrubbing speed."""
     try:
-        from robocram.viewer import LiveFeed, Viewer
-        from robocram.viewer.live_listener import MAX_PUSH_RATE
+        from robocram.viewer import LiveFeed, Viewer, live_listener
     except ImportError as err:
         print(f"viewer: skipped, {err.name} missing (pip install 'robocram[viewer]')")
         return
     scene = tabletop_scene("pr2")
     viewer = Viewer(scene.world, port=_free_port())
-    plain, live = [], []
+    bounded = live_listener.MAX_PUSH_RATE
+    rates = {"unfed": 0.0, "fed, pushes unbounded": 1e9, f"fed, <= {bounded:.0f} pushes/s": bounded}
+    times: dict[str, list[tuple[float, float]]] = {name: [] for name in rates}
     for _ in range(count):
-        plain.append(_plan_times(scene, contextlib.nullcontext))
-        with LiveFeed(viewer, scene.world) as feed:
-            live.append(_plan_times(scene, lambda: listening(feed)))
-            feed.flush()
-    states = len(viewer.timeline) // count
-    (live_s, live_cpu), (plain_s, plain_cpu) = (
-        tuple(statistics.median(t[i] for t in times) for i in (0, 1)) for times in (live, plain)
-    )
-    print(
-        f"viewer, live: plan {live_s * 1e3:.1f} ms fed vs {plain_s * 1e3:.1f} ms unfed "
-        f"({100 * (live_s / plain_s - 1):+.1f} %; CPU {100 * (live_cpu / plain_cpu - 1):+.1f} %), "
-        f"{states} world states per run, {states / live_s:.1f} states/s while the plan runs "
-        f"(browsers get at most {MAX_PUSH_RATE:.0f} pushes/s)"
-    )
+        times["unfed"].append(_plan_times(scene, contextlib.nullcontext))
+        for name, rate in list(rates.items())[1:]:
+            live_listener.MAX_PUSH_RATE = rate  # read when the feeder starts
+            with LiveFeed(viewer, scene.world) as feed:
+                times[name].append(_plan_times(scene, lambda: listening(feed)))
+                feed.flush()
+    live_listener.MAX_PUSH_RATE = bounded
+    states = len(viewer.timeline) // (2 * count)
+    print(f"viewer, live pick-up ({states} world states per run), median of {count} (wall | CPU):")
+    _print_medians(times, "unfed")
     frames = len(viewer.view.frames)
     shows = 5 * len(viewer.timeline)
     start = time.perf_counter()
