@@ -18,39 +18,22 @@ from robocram.batch import (
     BatchError,
     UnknownBackend,
     Variant,
+    VariantResult,
     VariantStatus,
     project_variants,
 )
 from robocram.traces import TraceDatabase, runs
 
 
-def _variants() -> list[Variant]:
-    """18 mug placements (some jittered by their seed) and two that must fail."""
-    shifted = [
-        Variant(
-            f"mug{i}",
-            object_shifts={"mug-1": (0.03 * (i % 3) - 0.03, 0.05 * (i // 3) - 0.15, 0.0)},
-            jitter=0.01 if i % 2 else 0.0,
-            look_at="mug-1",
-            seed=i,
-        )
-        for i in range(18)
-    ]
-    return [
-        *shifted,
-        Variant("toaster", parameters={"object_type": "toaster"}),
-        Variant("typo", parameters={"objec": "mug"}),
-    ]
-
-
 def _children() -> set[int]:
     return {p.pid for p in psutil.Process().children(recursive=True) if p.is_running()}
 
 
-def test_one_and_two_workers_give_equal_results() -> None:
-    variants = _variants()
-    one = project_variants(variants, robot="pr2", workers=1).collect()
-    two = project_variants(variants, robot="pr2", workers=2).collect()
+def test_one_and_two_workers_give_equal_results(
+    reference_variants: list[Variant], reference_results: list[VariantResult]
+) -> None:
+    one = reference_results
+    two = project_variants(reference_variants, robot="pr2", workers=2).collect()
     assert [r.outcome() for r in one] == [r.outcome() for r in two]
     assert len({r.worker for r in two}) == 2  # both workers did some of the work
     by_name = {r.name: r for r in one}
@@ -62,6 +45,10 @@ def test_one_and_two_workers_give_equal_results() -> None:
     # the grasp follows the mug: each variant's own placement, not the scene's
     ys = {round(r.grasp[1], 2) for r in picked if r.grasp is not None}
     assert len(ys) >= 6
+    posed = [by_name[f"posed{i}"] for i in range(4)]
+    for result, y in zip(posed, (-0.25, -0.1, 0.0, 0.12), strict=True):
+        if result.succeeded and result.grasp is not None:  # grasped where the variant put it
+            assert result.grasp[0:2] == pytest.approx((0.6, y), abs=0.02)
 
 
 def _kill_when_written(path: Path, killed: list[int]) -> None:

@@ -6,13 +6,15 @@ changed), each variant in a world restored between runs, across worker processes
 plan chose. A variant is plain data with a seed, so its result does not depend on the worker.
 """
 
-from robocram.batch.errors import BadVariant, BatchError, UnknownBackend
-from robocram.batch.project_variants import BACKENDS, BatchRun, project_variants
+from robocram.batch.batch_run import BatchRun
+from robocram.batch.errors import BackendMissing, BadVariant, BatchError, UnknownBackend
+from robocram.batch.project_variants import BACKENDS, project_variants
 from robocram.batch.result import VariantResult, VariantStatus
 from robocram.batch.variant import Variant
 
 __all__ = [
     "BACKENDS",
+    "BackendMissing",
     "BadVariant",
     "BatchError",
     "BatchRun",

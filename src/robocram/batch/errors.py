@@ -22,3 +22,11 @@ class UnknownBackend(BatchError):
     def __init__(self, backend: str, known: tuple[str, ...]) -> None:
         super().__init__(f"no batch backend {backend!r}; use one of {', '.join(known)}")
         self.backend = backend
+
+
+class BackendMissing(BatchError):
+    """The backend's optional package is not installed (the message says how to install it)."""
+
+    def __init__(self, package: str, install: str) -> None:
+        super().__init__(f"the batch backend needs {package!r}: {install}")
+        self.package = package

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import contextlib
 import multiprocessing
+import threading
 from collections import deque
 from collections.abc import Generator, Iterator, Sequence
 from dataclasses import dataclass
@@ -40,6 +41,11 @@ class ProcessPool:
         self._context = multiprocessing.get_context("spawn")
         self._workers: list[_Worker] = []
         self._names: dict[int, str] = {}
+        self._stopping = threading.Event()
+
+    def request_stop(self) -> None:
+        """Make :meth:`results` return at its next wake-up (safe from any thread)."""
+        self._stopping.set()
 
     def pids(self) -> list[int]:
         """Process ids of the live workers (for monitoring, and the fault tests)."""
@@ -65,7 +71,7 @@ class ProcessPool:
                 self._start_worker()
             for worker in self._workers:
                 self._assign(worker, pending)
-            while any(w.job is not None for w in self._workers):
+            while not self._stopping.is_set() and any(w.job is not None for w in self._workers):
                 yield from self._collect(pending)
         finally:
             self.close()

@@ -3,58 +3,20 @@
 from __future__ import annotations
 
 import pickle
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterable
 from pathlib import Path
-from types import TracebackType
+from typing import TextIO
 
+from robocram.batch.batch_run import BatchRun, WorkerPool
 from robocram.batch.errors import BatchError, UnknownBackend
 from robocram.batch.process_pool import ProcessPool
-from robocram.batch.result import VariantResult
+from robocram.batch.progress import ProgressBar
 from robocram.batch.variant import Variant
 from robocram.batch.worker import Plan, SceneFactory, WorkerConfig
 from robocram.plans import pick_up
 from robocram.scenes import tabletop_scene
 
-BACKENDS = ("processes",)
-
-
-class BatchRun:
-    """The running batch: iterate it for results as they finish; ``cancel()`` stops it.
-
-    Also a context manager: leaving the block cancels whatever has not finished.
-    """
-
-    def __init__(self, pool: ProcessPool, variants: list[Variant]) -> None:
-        self._pool = pool
-        self._stream = pool.results(variants)
-        self.count = len(variants)
-
-    def __iter__(self) -> Iterator[VariantResult]:
-        return self
-
-    def __next__(self) -> VariantResult:
-        return next(self._stream)
-
-    def __enter__(self) -> BatchRun:
-        return self
-
-    def __exit__(
-        self, kind: type[BaseException] | None, err: BaseException | None, tb: TracebackType | None
-    ) -> None:
-        self.cancel()
-
-    def worker_pids(self) -> list[int]:
-        """Process ids of the live workers."""
-        return self._pool.pids()
-
-    def cancel(self) -> None:
-        """Stop every worker now; the results not yet yielded are dropped."""
-        self._stream.close()
-        self._pool.close()
-
-    def collect(self) -> list[VariantResult]:
-        """Wait for every result; return them in the order of the variants."""
-        return sorted(self, key=lambda r: r.index)
+BACKENDS = ("processes", "ray")
 
 
 def project_variants(
@@ -65,22 +27,28 @@ def project_variants(
     workers: int = 2,
     backend: str = "processes",
     traces: str | Path | None = None,
+    progress: bool | None = None,
+    progress_stream: TextIO | None = None,
 ) -> BatchRun:
-    """Start running ``plan`` once per variant on ``workers`` spawned processes.
+    """Start running ``plan`` once per variant on ``workers`` worker processes.
 
     ``plan(look_target, **variant.parameters)`` runs inside ``simulated_robot`` in the
     world ``scene(robot)``, which each worker builds once per robot and restores after
     every variant. ``plan`` and ``scene`` must be importable functions (they are pickled to
-    the workers). With ``traces``, each variant's run is written to that trace database.
+    the workers). With ``traces``, each variant's run is written to that trace database
+    (a file every worker can reach). ``backend="ray"`` runs the workers as Ray actors (the
+    ``robocram[ray]`` extra). ``progress`` shows a bar on ``progress_stream`` (standard
+    output): ``None`` shows it when that stream is a terminal.
 
     Raises:
         UnknownBackend: ``backend`` is not one of :data:`BACKENDS`.
+        BackendMissing: the backend's package is not installed.
         BatchError: ``workers`` is not a positive integer, a variant is not a Variant, or
             ``plan`` or ``scene`` cannot be pickled (a lambda, a local function).
     """
     if backend not in BACKENDS:
         raise UnknownBackend(backend, BACKENDS)
-    if not isinstance(workers, int) or workers < 1:
+    if not isinstance(workers, int) or isinstance(workers, bool) or workers < 1:
         raise BatchError(f"workers={workers!r}: give a positive number of processes")
     batch = list(variants)
     for item in batch:
@@ -88,7 +56,14 @@ def project_variants(
             raise BatchError(f"{item!r} is not a Variant; build one with Variant(name, ...)")
     config = WorkerConfig(plan, scene, robot, None if traces is None else Path(traces))
     _check_picklable(config)
-    return BatchRun(ProcessPool(config, workers), batch)
+    pool: WorkerPool
+    if backend == "ray":
+        from robocram.batch.ray_pool import RayPool  # Ray is an optional extra
+
+        pool = RayPool(config, workers)
+    else:
+        pool = ProcessPool(config, workers)
+    return BatchRun(pool, batch, ProgressBar(len(batch), progress, progress_stream))
 
 
 def _check_picklable(config: WorkerConfig) -> None:

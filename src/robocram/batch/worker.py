@@ -20,10 +20,12 @@ from typing import Any, Protocol
 
 import numpy as np
 
+from robocram.batch.errors import BadVariant
+from robocram.batch.object_placement import place_objects
 from robocram.batch.result import VariantResult, VariantStatus
 from robocram.batch.variant import Variant
 from robocram.projection import simulated_robot
-from robocram.tf import Pose, PoseStamped
+from robocram.tf import PoseStamped
 from robocram.traces import Tracer, trace_to
 from robocram.world import World
 
@@ -94,20 +96,16 @@ class VariantRunner:
 
 
 def _place_objects(scene: Scene, variant: Variant) -> PoseStamped:
-    """Shift (and jitter) the variant's objects; return where the plan should look."""
+    """Move (and jitter) the variant's objects; return where the plan should look."""
     world = scene.world
-    rng = np.random.default_rng(variant.seed)
-    for name, (dx, dy, dz) in variant.object_shifts:
-        if name not in world:
-            raise KeyError(f"variant {variant.name!r} shifts {name!r}, not in the scene")
-        jx, jy = rng.normal(0.0, variant.jitter, 2) if variant.jitter > 0 else (0.0, 0.0)
-        pose = world.pose(name)
-        x, y, z = pose.position
-        world.set_pose(name, Pose((x + dx + jx, y + dy + jy, z + dz), pose.orientation))
+    place_objects(
+        world, variant.name, variant.object_shifts, variant.object_poses, variant.jitter,
+        variant.seed,
+    )  # fmt: skip
     if variant.look_at is None:
         return scene.look_target
     if variant.look_at not in world:
-        raise KeyError(f"variant {variant.name!r} looks at {variant.look_at!r}, not in the scene")
+        raise BadVariant("look_at", variant.look_at, f"variant {variant.name!r}: not in the scene")
     return PoseStamped("map", world.pose(variant.look_at).position)
 
 
