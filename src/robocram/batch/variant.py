@@ -42,9 +42,7 @@ class Variant:
         object.__setattr__(self, "object_poses", coerce_poses(self.object_poses))
         both = {n for n, _ in self.object_shifts} & {n for n, _ in self.object_poses}
         if both:
-            raise BadVariant(
-                "object_poses", sorted(both), "an object is shifted or posed, not both"
-            )
+            raise BadVariant("object_poses", sorted(both), "shift an object or pose it, not both")
         object.__setattr__(self, "parameters", _parameters(self.parameters))
         jitter = self.jitter
         if not (isinstance(jitter, int | float) and math.isfinite(jitter) and jitter >= 0.0):
