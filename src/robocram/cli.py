@@ -1,8 +1,9 @@
 """``robocram``: run the demo, look into stored runs, export, view and replay them.
 
-Exit codes: 0 done; 1 the plan failed or the robot check found problems (missing meshes);
-2 wrong usage; 3 bad input (a file that is not a trace database, an unknown run, an
-unreadable URDF, a port in use, a missing optional package).
+Exit codes: 0 done; 1 the plan failed, a batch had variants that failed, or the robot check
+found problems (missing meshes); 2 wrong usage; 3 bad input (a file that is not a trace
+database, an unknown run, an unreadable URDF, a port in use, a missing optional package, a
+bad batch spec).
 """
 
 from __future__ import annotations
@@ -18,6 +19,7 @@ from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
 from typing import Any
 
+from robocram.batch.cli_batch import add_batch_command
 from robocram.execution import PlanFailure, TaskSnapshot
 from robocram.robots import DescriptionError, MissingMeshWarning, RobotModel, load_description
 from robocram.traces import (
@@ -60,8 +62,9 @@ def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="robocram",
         description="CRAM in Python: run plans in projection, keep and inspect their traces.",
-        epilog="exit codes: 0 done, 1 plan failed / robot check found problems, "
-        "2 usage error, 3 bad input (database, run id, URDF, port, missing package)",
+        epilog="exit codes: 0 done, 1 plan failed / batch variants failed / robot check found "
+        "problems, 2 usage error, 3 bad input (database, run id, URDF, port, missing package, "
+        "batch spec)",
     )
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     demo = commands.add_parser("demo", help="a robot picks up a mug in projection")
@@ -72,6 +75,7 @@ def _parser() -> argparse.ArgumentParser:
     demo.set_defaults(handler=_demo)
     _add_runs_commands(commands)
     _add_viewer_commands(commands)
+    add_batch_command(commands)
     check = commands.add_parser("check-robot", help="read a URDF (or built-in robot) and report")
     check.add_argument("urdf", help="a URDF file, or a built-in robot name such as pr2")
     check.set_defaults(handler=_check_robot)

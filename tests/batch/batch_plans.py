@@ -1,11 +1,15 @@
-"""Plans for the batch fault tests, imported by name in the spawned workers."""
+"""Plans for the batch fault tests, imported by name in the spawned workers, and the
+helpers that kill a blocked worker or wait for blocked workers."""
 
 from __future__ import annotations
 
 import os
+import signal
+import threading
 import time
 from pathlib import Path
 
+from robocram.batch import Variant, VariantResult, VariantStatus, project_variants
 from robocram.plans import pick_up
 from robocram.tf import PoseStamped
 
@@ -21,3 +25,46 @@ def pick_or_block(look_target: PoseStamped, block_in: str = "") -> object:
     while time.monotonic() < end:
         time.sleep(0.05)
     raise TimeoutError(f"nobody killed worker {os.getpid()} within {BLOCK_LIMIT} s")
+
+
+def kill_when_written(path: Path, killed: list[int]) -> None:
+    """SIGKILL the process whose pid a blocked plan writes to ``path``; note its pid."""
+    wait_for([path])
+    if path.exists():
+        pid = int(path.read_text(encoding="utf-8"))
+        os.kill(pid, signal.SIGKILL)
+        killed.append(pid)
+
+
+def wait_for(paths: list[Path]) -> None:
+    """Wait until blocked plans wrote every file of ``paths`` (or the limit passed)."""
+    end = time.monotonic() + BLOCK_LIMIT
+    while not all(p.exists() and p.read_text(encoding="utf-8") for p in paths):
+        if time.monotonic() > end:
+            return
+        time.sleep(0.02)
+
+
+def run_killing_the_first(backend: str, pid_file: Path) -> tuple[list[VariantResult], int]:
+    """Three variants on one worker; the first blocks and its worker is SIGKILLed.
+
+    Checks what both backends must do: only that variant is lost, a new worker runs the
+    others. Returns the results and the killed pid.
+    """
+    variants = [
+        Variant("blocked", parameters={"block_in": str(pid_file)}),
+        Variant("after-1", object_shifts={"mug-1": (0.0, 0.05, 0.0)}, look_at="mug-1"),
+        Variant("after-2"),
+    ]
+    killed: list[int] = []
+    killer = threading.Thread(target=kill_when_written, args=(pid_file, killed))
+    killer.start()
+    results = project_variants(variants, plan=pick_or_block, workers=1, backend=backend).collect()
+    killer.join()
+    statuses = [r.status for r in results]
+    lost, done = VariantStatus.LOST, VariantStatus.SUCCEEDED
+    if statuses != [lost, done, done] or results[0].worker != killed[0]:
+        raise AssertionError(f"expected only 'blocked' lost, by worker {killed}: {results}")
+    if killed[0] in (results[1].worker, results[2].worker):
+        raise AssertionError(f"the killed worker {killed[0]} answered later: {results}")
+    return results, killed[0]

@@ -6,7 +6,6 @@ from __future__ import annotations
 import os
 import signal
 import threading
-import time
 from pathlib import Path
 from types import ModuleType
 
@@ -51,43 +50,10 @@ def test_one_and_two_workers_give_equal_results(
             assert result.grasp[0:2] == pytest.approx((0.6, y), abs=0.02)
 
 
-def _kill_when_written(path: Path, killed: list[int]) -> None:
-    end = time.monotonic() + 120.0
-    while not path.exists() or not path.read_text(encoding="utf-8"):
-        if time.monotonic() > end:
-            return
-        time.sleep(0.02)
-    pid = int(path.read_text(encoding="utf-8"))
-    os.kill(pid, signal.SIGKILL)
-    killed.append(pid)
-
-
 def test_a_killed_worker_loses_only_its_variant(batch_plans: ModuleType, tmp_path: Path) -> None:
-    pid_file = tmp_path / "blocked.pid"
-    variants = [
-        Variant("blocked", parameters={"block_in": str(pid_file)}),
-        Variant("after-1", object_shifts={"mug-1": (0.0, 0.05, 0.0)}, look_at="mug-1"),
-        Variant("after-2"),
-    ]
-    killed: list[int] = []
-    killer = threading.Thread(target=_kill_when_written, args=(pid_file, killed))
-    killer.start()
-    results = project_variants(variants, plan=batch_plans.pick_or_block, workers=1).collect()
-    killer.join()
-    assert [r.status for r in results] == [
-        VariantStatus.LOST,
-        VariantStatus.SUCCEEDED,
-        VariantStatus.SUCCEEDED,
-    ]
-    assert results[0].worker == killed[0] and results[0].name == "blocked"
-    assert f"exit code {-signal.SIGKILL}" in results[0].message
-    assert {results[1].worker, results[2].worker} - {killed[0]}  # the replacement ran them
-
-
-def _wait_for(paths: list[Path]) -> None:
-    end = time.monotonic() + 120.0
-    while not all(p.exists() for p in paths) and time.monotonic() < end:
-        time.sleep(0.02)
+    results, killed = batch_plans.run_killing_the_first("processes", tmp_path / "blocked.pid")
+    assert results[0].failure_type == "WorkerDied" and results[0].name == "blocked"
+    assert f"worker {killed} died (exit code {-signal.SIGKILL})" in results[0].message
 
 
 def test_cancel_leaves_no_process(batch_plans: ModuleType, tmp_path: Path) -> None:
@@ -100,7 +66,7 @@ def test_cancel_leaves_no_process(batch_plans: ModuleType, tmp_path: Path) -> No
     run = project_variants(variants, plan=batch_plans.pick_or_block, workers=2)
     first = next(run)
     assert first.name == "picked" and first.succeeded
-    _wait_for(blocks)  # both workers are now busy in a variant that never ends
+    batch_plans.wait_for(blocks)  # both workers are now busy in a variant that never ends
     workers = run.worker_pids()
     assert len(workers) == 2 and set(workers) <= _children()
     run.cancel()
@@ -114,7 +80,7 @@ def test_ctrl_c_leaves_no_process(batch_plans: ModuleType, tmp_path: Path) -> No
     variants = [Variant(p.stem, parameters={"block_in": str(p)}) for p in blocks]
 
     def interrupt() -> None:
-        _wait_for(blocks)
+        batch_plans.wait_for(blocks)
         os.kill(os.getpid(), signal.SIGINT)
 
     interrupter = threading.Thread(target=interrupt)

@@ -7,9 +7,7 @@ One Ray for the whole module: starting one takes seconds.
 from __future__ import annotations
 
 import os
-import signal
 import threading
-import time
 from collections.abc import Iterator
 from pathlib import Path
 from types import ModuleType
@@ -18,7 +16,7 @@ import psutil
 import pytest
 import ray
 
-from robocram.batch import Variant, VariantResult, VariantStatus, project_variants
+from robocram.batch import Variant, VariantResult, project_variants
 from robocram.batch.ray_pool import LOCAL_OBJECT_STORE
 
 
@@ -45,38 +43,10 @@ def test_ray_gives_the_results_of_the_process_workers(
     assert ray.is_initialized()  # a Ray the caller started stays up
 
 
-def _kill_when_written(path: Path, killed: list[int]) -> None:
-    end = time.monotonic() + 120.0
-    while not path.exists() or not path.read_text(encoding="utf-8"):
-        if time.monotonic() > end:
-            return
-        time.sleep(0.02)
-    pid = int(path.read_text(encoding="utf-8"))
-    os.kill(pid, signal.SIGKILL)
-    killed.append(pid)
-
-
 def test_a_killed_actor_loses_only_its_variant(batch_plans: ModuleType, tmp_path: Path) -> None:
-    pid_file = tmp_path / "blocked.pid"
-    variants = [
-        Variant("blocked", parameters={"block_in": str(pid_file)}),
-        Variant("after-1", object_shifts={"mug-1": (0.0, 0.05, 0.0)}, look_at="mug-1"),
-        Variant("after-2"),
-    ]
-    killed: list[int] = []
-    killer = threading.Thread(target=_kill_when_written, args=(pid_file, killed))
-    killer.start()
-    run = project_variants(variants, plan=batch_plans.pick_or_block, backend="ray", workers=1)
-    results = run.collect()
-    killer.join()
-    assert [r.status for r in results] == [
-        VariantStatus.LOST,
-        VariantStatus.SUCCEEDED,
-        VariantStatus.SUCCEEDED,
-    ]
-    assert results[0].worker == killed[0] and results[0].failure_type == "WorkerDied"
-    assert f"process {killed[0]} died" in results[0].message
-    assert {results[1].worker, results[2].worker} - {killed[0]}  # the replacement ran them
+    results, killed = batch_plans.run_killing_the_first("ray", tmp_path / "blocked.pid")
+    assert results[0].failure_type == "WorkerDied" and results[0].name == "blocked"
+    assert f"Ray actor in process {killed} died" in results[0].message
 
 
 def test_cancel_leaves_no_actor_process(batch_plans: ModuleType, tmp_path: Path) -> None:
@@ -86,9 +56,7 @@ def test_cancel_leaves_no_actor_process(batch_plans: ModuleType, tmp_path: Path)
     first: list[VariantResult] = []
     reader = threading.Thread(target=lambda: first.extend(run))  # blocks: nothing finishes
     reader.start()
-    end = time.monotonic() + 120.0
-    while not all(p.exists() for p in blocks) and time.monotonic() < end:
-        time.sleep(0.02)
+    batch_plans.wait_for(blocks)
     actors = [int(p.read_text(encoding="utf-8")) for p in blocks]
     assert sorted(run.worker_pids()) == sorted(actors)
     run.cancel()

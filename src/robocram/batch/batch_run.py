@@ -1,36 +1,16 @@
-"""The running batch: results as they finish, a progress bar, cancel; one class for every
-backend, which only has to stream results and stop its workers (:class:`WorkerPool`)."""
+"""The running batch: results as they finish, a progress bar, cancel; the same for every
+backend (a :class:`~robocram.batch.worker_pool.WorkerPool`)."""
 
 from __future__ import annotations
 
 import threading
-from collections.abc import Generator, Iterator, Sequence
+from collections.abc import Iterator
 from types import TracebackType
-from typing import Protocol
 
 from robocram.batch.progress import ProgressBar
 from robocram.batch.result import VariantResult
 from robocram.batch.variant import Variant
-
-
-class WorkerPool(Protocol):
-    """What a backend provides: a result stream that stops its workers when left."""
-
-    def results(self, variants: Sequence[Variant]) -> Generator[VariantResult, None, None]:
-        """Yield each variant's result as it finishes; stop every worker on leaving."""
-        ...
-
-    def pids(self) -> list[int]:
-        """Process ids of the live workers."""
-        ...
-
-    def request_stop(self) -> None:
-        """Make :meth:`results` return at its next wake-up (safe from any thread)."""
-        ...
-
-    def close(self) -> None:
-        """Stop every worker and wait until it is gone."""
-        ...
+from robocram.batch.worker_pool import WorkerPool
 
 
 class BatchRun:

@@ -30,3 +30,13 @@ class BackendMissing(BatchError):
     def __init__(self, package: str, install: str) -> None:
         super().__init__(f"the batch backend needs {package!r}: {install}")
         self.package = package
+
+
+class BadSpec(BatchError):
+    """A batch spec file cannot be used as written (the file, the key and the fix)."""
+
+    def __init__(self, path: object, key: str, value: object, fix: str) -> None:
+        super().__init__(f"batch spec {path}: {key}={value!r}: {fix}")
+        self.path = path
+        self.key = key
+        self.value = value

@@ -2,15 +2,16 @@
 
 A shift is ``(dx, dy, dz)`` [m] or ``(dx, dy, dz, dyaw)`` [m, rad] from where the scene put
 the object; an absolute pose (in ``map``) is ``(x, y, z, yaw)``, ``(x, y, z)`` (upright,
-yaw 0), ``((x, y, z), (qx, qy, qz, qw))`` or a :class:`~robocram.tf.Pose`. Both are stored as
+yaw 0), ``((x, y, z), (qx, qy, qz, qw))``, ``(x, y, z, qx, qy, qz, qw)`` or a
+:class:`~robocram.tf.Pose`. Both are stored as
 plain tuples so a variant pickles anywhere and compares by value.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Mapping
-from typing import Any
+from collections.abc import Callable, Iterable, Mapping
+from typing import Any, TypeVar
 
 import numpy as np
 
@@ -21,8 +22,12 @@ from robocram.world import World
 Shift = tuple[float, float, float, float]  # dx, dy, dz [m], dyaw [rad]
 Pose7 = tuple[float, float, float, float, float, float, float]  # x, y, z [m], qx, qy, qz, qw
 Placements = Mapping[str, Any] | Iterable[tuple[str, Any]]  # object name -> placement
+T = TypeVar("T")
 
-POSE_FORMS = "(x, y, z, yaw), (x, y, z), ((x, y, z), (qx, qy, qz, qw)) or a Pose [m, rad]"
+POSE_FORMS = (
+    "(x, y, z, yaw), (x, y, z), ((x, y, z), (qx, qy, qz, qw)), (x, y, z, qx, qy, qz, qw) "
+    "or a Pose [m, rad]"
+)
 
 
 def _items(value: Placements, field: str) -> list[Any]:
@@ -46,26 +51,18 @@ def _finite(value: object, size: tuple[int, ...]) -> tuple[float, ...] | None:
     return out
 
 
-def coerce_shifts(
-    value: Mapping[str, Any] | Iterable[tuple[str, Any]],
-) -> tuple[tuple[str, Shift], ...]:
-    """Object shifts as sorted ``(name, (dx, dy, dz, dyaw))`` pairs, or :class:`BadVariant`."""
-    out: dict[str, Shift] = {}
-    for name, shift in _items(value, "object_shifts"):
-        v = _finite(shift, (3, 4))
-        if v is None:
-            raise BadVariant(
-                f"object_shifts[{name!r}]", shift, "give a finite (dx, dy, dz[, dyaw]) [m, rad]"
-            )
-        out[name] = (v[0], v[1], v[2], v[3] if len(v) == 4 else 0.0)
-    return tuple(sorted(out.items()))
+def _shift(value: object) -> Shift | None:
+    v = _finite(value, (3, 4))
+    return None if v is None else (v[0], v[1], v[2], v[3] if len(v) == 4 else 0.0)
 
 
 def _pose7(value: object) -> Pose7 | None:
     if isinstance(value, Pose):
         return (*value.position, *value.orientation)
-    flat = _finite(value, (3, 4))
-    if flat is not None:
+    flat = _finite(value, (3, 4, 7))
+    if flat is not None and len(flat) == 7 and any(flat[3:]):  # the stored form
+        return (flat[0], flat[1], flat[2], *quaternion.normalized(flat[3:]))
+    if flat is not None and len(flat) in (3, 4):
         yaw = flat[3] if len(flat) == 4 else 0.0
         return (flat[0], flat[1], flat[2], *quaternion.from_euler(0.0, 0.0, yaw))
     if isinstance(value, tuple | list) and len(value) == 2:
@@ -75,17 +72,26 @@ def _pose7(value: object) -> Pose7 | None:
     return None
 
 
-def coerce_poses(
-    value: Mapping[str, Any] | Iterable[tuple[str, Any]],
-) -> tuple[tuple[str, Pose7], ...]:
-    """Absolute object poses (map) as sorted ``(name, pose7)`` pairs, or :class:`BadVariant`."""
-    out: dict[str, Pose7] = {}
-    for name, pose in _items(value, "object_poses"):
-        p = _pose7(pose)
-        if p is None:
-            raise BadVariant(f"object_poses[{name!r}]", pose, f"give {POSE_FORMS}")
-        out[name] = p
+def _coerce(
+    value: Placements, field: str, read: Callable[[object], T | None], fix: str
+) -> tuple[tuple[str, T], ...]:
+    out: dict[str, T] = {}
+    for name, given in _items(value, field):
+        placement = read(given)
+        if placement is None:
+            raise BadVariant(f"{field}[{name!r}]", given, fix)
+        out[name] = placement
     return tuple(sorted(out.items()))
+
+
+def coerce_shifts(value: Placements) -> tuple[tuple[str, Shift], ...]:
+    """Object shifts as sorted ``(name, (dx, dy, dz, dyaw))`` pairs, or :class:`BadVariant`."""
+    return _coerce(value, "object_shifts", _shift, "give a finite (dx, dy, dz[, dyaw]) [m, rad]")
+
+
+def coerce_poses(value: Placements) -> tuple[tuple[str, Pose7], ...]:
+    """Absolute object poses (map) as sorted ``(name, pose7)`` pairs, or :class:`BadVariant`."""
+    return _coerce(value, "object_poses", _pose7, f"give {POSE_FORMS}")
 
 
 def place_objects(

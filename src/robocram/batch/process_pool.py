@@ -10,16 +10,14 @@ from __future__ import annotations
 
 import contextlib
 import multiprocessing
-import threading
-from collections import deque
-from collections.abc import Generator, Iterator, Sequence
+from collections.abc import Iterator
 from dataclasses import dataclass
 from multiprocessing.connection import Connection, wait
 from multiprocessing.process import BaseProcess
 
-from robocram.batch.result import VariantResult, VariantStatus
-from robocram.batch.variant import Variant
+from robocram.batch.result import VariantResult
 from robocram.batch.worker import WorkerConfig, worker_main
+from robocram.batch.worker_pool import Pending, WorkerPool
 
 POLL = 0.5  # [s] the parent wakes this often, so a pending Ctrl-C is handled promptly
 STOP_GRACE = 2.0  # [s] a terminated worker gets this long before it is killed
@@ -32,20 +30,14 @@ class _Worker:
     job: int | None = None  # index of the variant it holds
 
 
-class ProcessPool:
+class ProcessPool(WorkerPool):
     """Spawned workers running the variants of one batch; iterate :meth:`results`."""
 
     def __init__(self, config: WorkerConfig, workers: int) -> None:
+        super().__init__(workers)
         self.config = config
-        self.size = workers
         self._context = multiprocessing.get_context("spawn")
         self._workers: list[_Worker] = []
-        self._names: dict[int, str] = {}
-        self._stopping = threading.Event()
-
-    def request_stop(self) -> None:
-        """Make :meth:`results` return at its next wake-up (safe from any thread)."""
-        self._stopping.set()
 
     def pids(self) -> list[int]:
         """Process ids of the live workers (for monitoring, and the fault tests)."""
@@ -62,21 +54,16 @@ class ProcessPool:
         self._workers.append(worker)
         return worker
 
-    def results(self, variants: Sequence[Variant]) -> Generator[VariantResult, None, None]:
-        """Yield each variant's result as it finishes; stop every worker on leaving."""
-        pending = deque(enumerate(variants))
-        self._names = {i: v.name for i, v in pending}
-        try:
-            for _ in range(min(self.size, len(pending))):
-                self._start_worker()
-            for worker in self._workers:
-                self._assign(worker, pending)
-            while not self._stopping.is_set() and any(w.job is not None for w in self._workers):
-                yield from self._collect(pending)
-        finally:
-            self.close()
+    def _start(self, count: int, pending: Pending) -> None:
+        for _ in range(count):
+            self._start_worker()
+        for worker in self._workers:
+            self._assign(worker, pending)
 
-    def _assign(self, worker: _Worker, pending: deque[tuple[int, Variant]]) -> None:
+    def _busy(self) -> bool:
+        return any(w.job is not None for w in self._workers)
+
+    def _assign(self, worker: _Worker, pending: Pending) -> None:
         if pending:
             index, variant = pending.popleft()
             worker.job = index
@@ -84,7 +71,7 @@ class ProcessPool:
             with contextlib.suppress(OSError):
                 worker.conn.send((index, variant))
 
-    def _collect(self, pending: deque[tuple[int, Variant]]) -> Iterator[VariantResult]:
+    def _collect(self, pending: Pending) -> Iterator[VariantResult]:
         busy = {w.conn: w for w in self._workers if w.job is not None}
         deaths = {w.process.sentinel: w for w in busy.values()}
         for ready in wait([*busy, *deaths], timeout=POLL):
@@ -102,7 +89,7 @@ class ProcessPool:
                 if lost is not None:
                     yield lost
 
-    def _replace(self, dead: _Worker, pending: deque[tuple[int, Variant]]) -> VariantResult | None:
+    def _replace(self, dead: _Worker, pending: Pending) -> VariantResult | None:
         """Report a dead worker's variant lost and start a worker in its place."""
         if dead.job is None or dead.process.is_alive():
             return None
@@ -115,12 +102,8 @@ class ProcessPool:
             self._assign(self._start_worker(), pending)
         if answered is not None:
             return answered
-        code = dead.process.exitcode
-        return VariantResult(
-            index, self._names.get(index, ""), VariantStatus.LOST, "WorkerDied",
-            f"worker {dead.process.pid} died (exit code {code}) running this variant",
-            worker=dead.process.pid or -1,
-        )  # fmt: skip
+        pid, code = dead.process.pid or -1, dead.process.exitcode
+        return self._lost(index, pid, f"worker {pid} died (exit code {code}) running this variant")
 
     def close(self) -> None:
         """Terminate every worker and wait until each is gone (killing stragglers)."""

@@ -19,18 +19,17 @@ import os
 import pickle
 import signal
 import sys
-import threading
-from collections import deque
-from collections.abc import Generator, Iterator, Sequence
+from collections.abc import Iterator
 from dataclasses import dataclass, replace
 from typing import Any
 
 import psutil
 
 from robocram.batch.errors import BackendMissing, BatchError
-from robocram.batch.result import VariantResult, VariantStatus
+from robocram.batch.result import VariantResult
 from robocram.batch.variant import Variant
 from robocram.batch.worker import VariantRunner, WorkerConfig
+from robocram.batch.worker_pool import Pending, WorkerPool
 
 POLL = 0.5  # [s] the parent wakes this often, so a pending Ctrl-C is handled promptly
 STOP_GRACE = 5.0  # [s] a killed actor's process gets this long to exit before SIGKILL
@@ -74,22 +73,16 @@ def _ray() -> Any:
     return ray
 
 
-class RayPool:
+class RayPool(WorkerPool):
     """Ray actors running the variants of one batch; iterate :meth:`results`."""
 
     def __init__(self, config: WorkerConfig, workers: int) -> None:
+        super().__init__(workers)
         self._ray = _ray()
         self._config = pickle.dumps(config)
-        self.size = workers
         self._actors: list[_Actor] = []
-        self._names: dict[int, str] = {}
-        self._stopping = threading.Event()
         self._owns_ray = False
         self._node = ""
-
-    def request_stop(self) -> None:
-        """Make :meth:`results` return at its next wake-up (safe from any thread)."""
-        self._stopping.set()
 
     def pids(self) -> list[int]:
         """Process ids of the live actors (on their nodes)."""
@@ -121,25 +114,20 @@ class RayPool:
         self._actors.append(actor)
         return actor
 
-    def results(self, variants: Sequence[Variant]) -> Generator[VariantResult, None, None]:
-        """Yield each variant's result as it finishes; kill every actor on leaving."""
-        pending = deque(enumerate(variants))
-        self._names = {i: v.name for i, v in pending}
-        try:
-            self._connect()
-            for _ in range(min(self.size, len(pending))):
-                self._assign(self._start_actor(), pending)
-            while not self._stopping.is_set() and any(a.job is not None for a in self._actors):
-                yield from self._collect(pending)
-        finally:
-            self.close()
+    def _start(self, count: int, pending: Pending) -> None:
+        self._connect()
+        for _ in range(count):
+            self._assign(self._start_actor(), pending)
 
-    def _assign(self, actor: _Actor, pending: deque[tuple[int, Variant]]) -> None:
+    def _busy(self) -> bool:
+        return any(a.job is not None for a in self._actors)
+
+    def _assign(self, actor: _Actor, pending: Pending) -> None:
         if pending:
             index, variant = pending.popleft()
             actor.job = (index, actor.handle.run.remote(index, variant))
 
-    def _collect(self, pending: deque[tuple[int, Variant]]) -> Iterator[VariantResult]:
+    def _collect(self, pending: Pending) -> Iterator[VariantResult]:
         busy = {a.job[1]: (a, a.job[0]) for a in self._actors if a.job is not None}
         ready, _ = self._ray.wait(list(busy), num_returns=1, timeout=POLL)
         for ref in ready:
@@ -153,19 +141,14 @@ class RayPool:
             self._assign(actor, pending)
             yield result
 
-    def _replace(
-        self, dead: _Actor, index: int, err: Exception, pending: deque[tuple[int, Variant]]
-    ) -> VariantResult:
+    def _replace(self, dead: _Actor, index: int, err: Exception, pending: Pending) -> VariantResult:
         """Report a dead actor's variant ``index`` lost and start an actor in its place."""
         self._stop([dead])
         if pending:
             self._assign(self._start_actor(), pending)
         cause = str(err).strip().splitlines()[0] if str(err).strip() else type(err).__name__
-        return VariantResult(
-            index, self._names.get(index, ""), VariantStatus.LOST, "WorkerDied",
-            f"Ray actor in process {dead.pid} died running this variant ({cause})",
-            worker=dead.pid,
-        )  # fmt: skip
+        why = f"Ray actor in process {dead.pid} died running this variant ({cause})"
+        return self._lost(index, dead.pid, why)
 
     def _stop(self, actors: list[_Actor]) -> None:
         """Kill ``actors`` and wait for those on this machine to exit."""
