@@ -7,6 +7,7 @@ One Ray for the whole module: starting one takes seconds.
 from __future__ import annotations
 
 import os
+import sys
 import threading
 from collections.abc import Iterator
 from pathlib import Path
@@ -16,7 +17,7 @@ import psutil
 import pytest
 import ray
 
-from robocram.batch import Variant, VariantResult, project_variants
+from robocram.batch import BackendMissing, Variant, VariantResult, project_variants
 from robocram.batch.ray_pool import LOCAL_OBJECT_STORE
 
 
@@ -63,3 +64,9 @@ def test_cancel_leaves_no_actor_process(batch_plans: ModuleType, tmp_path: Path)
     reader.join(timeout=30.0)
     assert not reader.is_alive() and first == []
     assert not [pid for pid in actors if psutil.pid_exists(pid)]
+
+
+def test_without_ray_installed_the_error_says_how(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setitem(sys.modules, "ray", None)  # what `import ray` meets when it is missing
+    with pytest.raises(BackendMissing, match=r"needs 'ray': pip install 'robocram\[ray\]'"):
+        project_variants([Variant("a")], backend="ray")

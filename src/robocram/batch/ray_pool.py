@@ -98,26 +98,29 @@ class RayPool(WorkerPool):
         self._node = ray.get_runtime_context().get_node_id()
         self._remote = ray.remote(num_cpus=1, max_restarts=0, max_task_retries=0)(VariantActor)
 
-    def _start_actor(self) -> _Actor:
-        handle = self._remote.remote(self._config, list(sys.path))
+    def _start_actors(self, count: int) -> list[_Actor]:
+        """Start ``count`` actors at once (each imports robocram: seconds) and wait for all."""
+        handles = [self._remote.remote(self._config, list(sys.path)) for _ in range(count)]
+        errors = self._ray.exceptions
         try:
-            pid, node = self._ray.get(handle.where.remote(), timeout=START_TIMEOUT)
-        except self._ray.exceptions.GetTimeoutError as err:
-            self._ray.kill(handle)
-            raise BatchError(
-                f"no Ray node started a batch actor within {START_TIMEOUT:.0f} s; the cluster "
-                f"needs a free CPU per worker ({self.size}): use fewer workers or more nodes"
-            ) from err
-        except self._ray.exceptions.RayError as err:
+            places = self._ray.get([h.where.remote() for h in handles], timeout=START_TIMEOUT)
+        except (errors.GetTimeoutError, errors.RayError) as err:
+            for handle in handles:
+                self._ray.kill(handle, no_restart=True)
+            if isinstance(err, errors.GetTimeoutError):
+                raise BatchError(
+                    f"no Ray node started a batch actor within {START_TIMEOUT:.0f} s; the "
+                    f"cluster needs a free CPU per worker ({self.size}): use fewer workers"
+                ) from err
             raise BatchError(f"a Ray batch actor could not start: {err}") from err
-        actor = _Actor(handle, pid, node)
-        self._actors.append(actor)
-        return actor
+        actors = [_Actor(h, pid, node) for h, (pid, node) in zip(handles, places, strict=True)]
+        self._actors.extend(actors)
+        return actors
 
     def _start(self, count: int, pending: Pending) -> None:
         self._connect()
-        for _ in range(count):
-            self._assign(self._start_actor(), pending)
+        for actor in self._start_actors(count):
+            self._assign(actor, pending)
 
     def _busy(self) -> bool:
         return any(a.job is not None for a in self._actors)
@@ -145,7 +148,7 @@ class RayPool(WorkerPool):
         """Report a dead actor's variant ``index`` lost and start an actor in its place."""
         self._stop([dead])
         if pending:
-            self._assign(self._start_actor(), pending)
+            self._assign(self._start_actors(1)[0], pending)
         cause = str(err).strip().splitlines()[0] if str(err).strip() else type(err).__name__
         why = f"Ray actor in process {dead.pid} died running this variant ({cause})"
         return self._lost(index, dead.pid, why)
