@@ -21,6 +21,7 @@ from typing import Any
 
 from robocram.batch.cli_batch import add_batch_command
 from robocram.execution import PlanFailure, TaskSnapshot
+from robocram.robot_commands import add_robot_commands
 from robocram.robots import DescriptionError, MissingMeshWarning, RobotModel, load_description
 from robocram.traces import (
     TRACE_ENV,
@@ -79,6 +80,7 @@ def _parser() -> argparse.ArgumentParser:
     check = commands.add_parser("check-robot", help="read a URDF (or built-in robot) and report")
     check.add_argument("urdf", help="a URDF file, or a built-in robot name such as pr2")
     check.set_defaults(handler=_check_robot)
+    add_robot_commands(commands)
     return parser
 
 

@@ -9,6 +9,7 @@ from robocram.robots.description import (
     PanTiltDescription,
     RobotDescription,
 )
+from robocram.robots.draft import DraftDescription, draft_description
 from robocram.robots.errors import (
     DescriptionCheckError,
     DescriptionError,
@@ -37,6 +38,7 @@ __all__ = [
     "DescriptionCheckError",
     "DescriptionError",
     "DescriptionWarning",
+    "DraftDescription",
     "Finding",
     "FrameSpec",
     "Geometry",
@@ -57,6 +59,7 @@ __all__ = [
     "RobotDescription",
     "RobotModel",
     "UrdfError",
+    "draft_description",
     "example_robot_data_folder",
     "install_description",
     "link_pose",

@@ -1,0 +1,80 @@
+"""The arms of a drafted robot: chains from the torso (or root) to each hand, named by side.
+
+Two alike arms (as many joints of the same types) side by side are ``left`` (larger y)
+and ``right``; one hand is ``arm``; other layouts are ``arm_1``, ``arm_2``, ... with a doubt.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from robocram.robots.description import ArmDescription, FrameSpec
+from robocram.robots.draft.hands import Hand
+from robocram.robots.draft.link_poses import link_poses
+from robocram.robots.draft.model_tree import ModelTree
+from robocram.robots.draft.parking import parking_pose
+from robocram.robots.draft.tool_frames import tool_frame
+
+SIDE_GAP = 0.1  # [m] between two alike hands' y for one to be left of the other
+
+
+@dataclass(frozen=True)
+class DraftedArm:
+    """One arm's description, the frame it adds, and why per field (``doubts`` to check)."""
+
+    arm: ArmDescription
+    added: FrameSpec | None
+    why: dict[str, str] = field(default_factory=dict)
+    doubts: dict[str, str] = field(default_factory=dict)
+
+
+def arm_names(tree: ModelTree, hands: list[Hand]) -> tuple[list[str], str, str | None]:
+    """Names for ``hands`` in order, why, and a doubt if the layout is unclear."""
+    if len(hands) == 1:
+        return ["arm"], "one gripper-like end", None
+    poses = link_poses(tree.model)
+    ys = [poses[h.end_effector_link].position[1] for h in hands]
+    shapes = [[j.type for j in tree.movable_ancestors(h.end_effector_link)] for h in hands]
+    if len(hands) == 2 and shapes[0] == shapes[1] and abs(ys[0] - ys[1]) > SIDE_GAP:
+        names = ["left", "right"] if ys[0] > ys[1] else ["right", "left"]
+        return names, f"two alike arms {abs(ys[0] - ys[1]):.3f} m apart (left: larger y)", None
+    names = [f"arm_{i + 1}" for i in range(len(hands))]
+    return names, f"{len(hands)} gripper-like ends", "name the arms and give their sides"
+
+
+def draft_arm(tree: ModelTree, hand: Hand, name: str, torso: str | None) -> DraftedArm:
+    """The arm ending in ``hand``: chain joints after the torso, tool frame, parking."""
+    chain = tree.movable_ancestors(hand.end_effector_link)
+    names = [j.name for j in chain]
+    if torso in names:
+        chain = chain[names.index(torso) + 1 :]
+    joints = tuple(j.name for j in chain if j.mimic is None)
+    base = tree.model.joints[joints[0]].parent
+    tool = tool_frame(tree, hand, name)
+    parking = parking_pose(tree.model, joints, hand.end_effector_link)
+    arm = ArmDescription(
+        name=name,
+        end_effector_link=hand.end_effector_link,
+        tool_frame=tool.name,
+        base_link=base,
+        joints=joints,
+        gripper_joints=hand.gripper_joints,
+        gripper_links=hand.gripper_links,
+        hand_links=hand.hand_links,
+        parking=parking,
+        side=name if name in ("left", "right") else None,
+    )
+    why = {
+        "end_effector_link": f"child of {hand.wrist_joint}, the last joint before the fingers",
+        "base_link": "parent of the first arm joint" + (" after the torso" if torso else ""),
+        "tool_frame": tool.why,
+        "gripper_joints": hand.why_gripper,
+        "hand_links": "every link below the wrist: may touch what the hand grasps",
+        "parking": "sampled in limits (seed 0): wrist low beside the shoulder, out of view",
+    }
+    doubts = {"parking": "no collision check here: `robocram robot check` drives it"}
+    if hand.doubt_gripper:
+        doubts["gripper_joints"] = hand.doubt_gripper
+    if tool.doubt:
+        doubts["tool_frame"] = tool.doubt
+    return DraftedArm(arm, tool.added, why, doubts)

@@ -1,0 +1,123 @@
+"""The camera and neck of a drafted robot: a camera frame, its heights and how it turns.
+
+Camera frames are found by name (optical, camera, rgb, kinect, xtion, ...), scored: an
+optical frame (z forward) first, then one on the head, then colour over depth. A frame
+with x forward (ROS body convention) gets an optical frame added in code. Two joints
+between the torso and the camera are a pan-tilt unit; more are a neck arm.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from robocram.robots.description import FrameSpec, PanTiltDescription
+from robocram.robots.draft.link_poses import axis_in_root, link_poses
+from robocram.robots.draft.model_tree import ModelTree
+from robocram.tf import Pose
+
+CAMERA_WORDS = ("optical", "camera", "rgb", "kinect", "xtion", "realsense", "stereo")
+NOT_CAMERAS = ("depth", "infra", "_ir", "projector", "laser", "imu", "gazebo", "info")
+FORWARD = 0.7  # x share in the root link of an axis that looks forward
+OPTICAL_FROM_BODY = Pose.from_xyz_rpy((0.0, 0.0, 0.0), (-math.pi / 2, 0.0, -math.pi / 2))
+DEFAULT_HFOV = math.radians(60.0)  # [rad] a common RGB-D camera; URDF links carry no FOV
+DEFAULT_VFOV = math.radians(45.0)  # [rad]
+
+
+@dataclass(frozen=True)
+class Camera:
+    """The drafted camera: its frame (maybe added), heights over the root link, and notes."""
+
+    frame: str
+    added: FrameSpec | None
+    minimal_height: float  # [m]
+    maximal_height: float  # [m]
+    why: str
+    others: tuple[str, ...]
+    doubt: str | None = None
+
+
+def _score(tree: ModelTree, link: str, hands: list[str]) -> float:
+    name = link.lower()
+    score = 4.0 * ("optical" in name) + 1.0 * ("rgb" in name or "color" in name)
+    score += 1.0 * ("wide" in name) + 1.0 * ("head" in name)
+    score -= 5.0 * any(tree.below(hand, link) for hand in hands)
+    return score - 0.01 * len(name)
+
+
+def camera_frames(tree: ModelTree, hands: list[str]) -> list[str]:
+    """Frames that look like cameras, best first; hand cameras last."""
+    found = [
+        link
+        for link in tree.model.links
+        if any(w in link.lower() for w in CAMERA_WORDS)
+        and not any(w in link.lower() for w in NOT_CAMERAS)
+    ]
+    return sorted(found, key=lambda link: -_score(tree, link, hands))
+
+
+def find_camera(tree: ModelTree, hands: list[str], torso: str | None) -> Camera | None:
+    """The robot's main camera with heights at the torso's limits, or None."""
+    frames = camera_frames(tree, hands)
+    if not frames:
+        return None
+    frame, others = frames[0], tuple(frames[1:4])
+    poses = link_poses(tree.model)
+    axes = poses[frame].matrix()[:3, :3]
+    added, why, doubt = None, f"camera frame by name ({len(frames)} found, best first)", None
+    if axes[0, 2] >= FORWARD:
+        why += "; optical: z looks forward"
+    elif axes[0, 0] >= FORWARD:
+        added = FrameSpec(f"{frame}_optical", frame, OPTICAL_FROM_BODY)
+        why += "; its x looks forward (body convention): optical frame added, z forward"
+    else:
+        doubt = "neither its z nor its x looks forward at zero joints; add an optical frame"
+    low, high = _heights(tree, frame, torso)
+    camera_frame = added.name if added is not None else frame
+    return Camera(camera_frame, added, low, high, why, others, doubt)
+
+
+def _heights(tree: ModelTree, frame: str, torso: str | None) -> tuple[float, float]:
+    if torso is None:
+        height = link_poses(tree.model)[frame].position[2]
+        return round(height, 3), round(height, 3)
+    joint = tree.model.joints[torso]
+    ends = [v if v is not None and math.isfinite(v) else 0.0 for v in (joint.lower, joint.upper)]
+    heights = [link_poses(tree.model, {torso: v})[frame].position[2] for v in ends]
+    return round(min(heights), 3), round(max(heights), 3)
+
+
+@dataclass(frozen=True)
+class Neck:
+    """How the camera turns: a pan-tilt unit, a neck arm's joints, or neither."""
+
+    pan_tilt: PanTiltDescription | None
+    arm_joints: tuple[str, ...]
+    why: str
+    doubt: str | None = None
+
+
+def find_neck(tree: ModelTree, camera: str, torso: str | None) -> Neck:
+    """The joints between the torso (or root) and ``camera`` that turn it."""
+    chain = tree.movable_ancestors(camera)
+    names = [j.name for j in chain]
+    if torso in names:
+        chain = chain[names.index(torso) + 1 :]
+    joints = [j for j in chain if j.mimic is None]
+    if not joints:
+        return Neck(None, (), "no joint turns the camera", "the robot cannot look around")
+    if len(joints) >= 3:
+        return Neck(None, tuple(j.name for j in joints), f"{len(joints)} joints turn the camera")
+    poses = link_poses(tree.model)
+    axes = [axis_in_root(tree.model, j.name, poses) for j in joints]
+    if len(joints) == 1:
+        return Neck(None, (joints[0].name,), "one joint turns the camera", "a neck of one joint")
+    pan, tilt = joints
+    why = "two joints turn the camera: the first pans, the second tilts"
+    doubt = None
+    if abs(axes[0][2]) < 0.9 or abs(float(np.asarray(axes[1])[2])) > 0.1:
+        doubt = "the first axis is not vertical or the second not horizontal"
+    unit = PanTiltDescription(pan.child, tilt.child, pan.name, tilt.name)
+    return Neck(unit, (), why, doubt)

@@ -1,0 +1,156 @@
+"""Draft a robot description from a URDF: every guess with its reason, doubts marked.
+
+``draft_description(urdf)`` reads the URDF's structure only (no physics, no IK) and
+returns a :class:`DraftDescription`: the ``RobotDescription`` it guessed, why it guessed
+each part, and where the URDF left doubt. ``source()`` prints it as ready-to-edit Python.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+
+from robocram.robots.description import (
+    ArmDescription,
+    CameraDescription,
+    FrameSpec,
+    RobotDescription,
+)
+from robocram.robots.draft.arms import arm_names, draft_arm
+from robocram.robots.draft.cameras import DEFAULT_HFOV, DEFAULT_VFOV, find_camera, find_neck
+from robocram.robots.draft.draft_source import draft_source
+from robocram.robots.draft.hands import find_hands
+from robocram.robots.draft.link_poses import within_limits
+from robocram.robots.draft.model_tree import ModelTree
+from robocram.robots.draft.torso import find_torso
+from robocram.robots.robot_model import RobotModel
+
+
+@dataclass(frozen=True)
+class DraftDescription:
+    """A drafted description with a reason per guessed field and the doubts left.
+
+    ``why`` and ``doubts`` are keyed by the field's path (``"torso_joint"``,
+    ``"arms.left.tool_frame"``, ``"cameras.0"``).
+    """
+
+    description: RobotDescription
+    urdf: Path
+    why: Mapping[str, str] = field(default_factory=dict)
+    doubts: Mapping[str, str] = field(default_factory=dict)
+
+    def source(self, module_file: Path | None = None) -> str:
+        """The description as a Python module defining ``description()``.
+
+        With ``module_file`` (where the text will be saved) the URDF path is written
+        relative to it, so the folder can move; else absolute.
+        """
+        return draft_source(self.description, self.why, self.doubts, module_file)
+
+
+def draft_description(urdf: str | Path, name: str | None = None) -> DraftDescription:
+    """Guess a description of the robot in ``urdf`` (its name from the URDF unless given).
+
+    Raises:
+        UrdfError: the URDF cannot be read or is not a tree.
+    """
+    path = Path(urdf).expanduser().resolve()
+    model = RobotModel.from_file(path)
+    tree = ModelTree(model)
+    why: dict[str, str] = {"base_frame": "the URDF's root link: the robot's base"}
+    doubts: dict[str, str] = {}
+    hands = find_hands(tree)
+    cameras = [c for c in _camera_guess(tree, [h.end_effector_link for h in hands])]
+    torso = find_torso(tree, [h.end_effector_link for h in hands] + cameras)
+    _note(why, doubts, "torso_joint", torso.why, torso.doubt)
+    names, names_why, names_doubt = arm_names(tree, hands) if hands else ([], "", None)
+    arms: dict[str, ArmDescription] = {}
+    frames: list[FrameSpec] = []
+    for hand, arm_name in zip(hands, names, strict=True):
+        drafted = draft_arm(tree, hand, arm_name, torso.joint)
+        arms[arm_name] = drafted.arm
+        frames += [drafted.added] if drafted.added is not None else []
+        for key, text in drafted.why.items():
+            why[f"arms.{arm_name}.{key}"] = text
+        for key, text in drafted.doubts.items():
+            doubts[f"arms.{arm_name}.{key}"] = text
+    _note(why, doubts, "arms", names_why or "no gripper-like end found", names_doubt)
+    if not hands:
+        doubts["arms"] = "no chain ends in fingers (prismatic, mimic or leaf joints): add arms"
+    desc = RobotDescription(
+        name=name or model.name,
+        urdf=path,
+        base_frame=model.root_link,
+        torso_link=torso.link,
+        torso_joint=torso.joint,
+        arms=arms,
+        extra_frames=tuple(frames),
+    )
+    desc = _with_camera(tree, desc, why, doubts)
+    return DraftDescription(desc, path, why, doubts)
+
+
+def _camera_guess(tree: ModelTree, hands: list[str]) -> list[str]:
+    camera = find_camera(tree, hands, None)
+    return [] if camera is None else [camera.added.parent if camera.added else camera.frame]
+
+
+def _note(
+    why: dict[str, str], doubts: dict[str, str], key: str, text: str, doubt: str | None
+) -> None:
+    why[key] = text
+    if doubt:
+        doubts[key] = doubt
+
+
+def _with_camera(
+    tree: ModelTree, desc: RobotDescription, why: dict[str, str], doubts: dict[str, str]
+) -> RobotDescription:
+    """``desc`` with its camera, heights at the torso limits, and pan-tilt or neck arm."""
+    hands = [arm.end_effector_link for arm in desc.arms.values()]
+    camera = find_camera(tree, hands, desc.torso_joint)
+    if camera is None:
+        doubts["cameras"] = "no camera frame found by name: add one to detect objects"
+        return desc
+    others = f"; others: {', '.join(camera.others)}" if camera.others else ""
+    _note(why, doubts, "cameras.0", camera.why + others, camera.doubt)
+    why["cameras.0.minimal_height"] = "camera height over the base at the torso's limits"
+    doubts["cameras.0.horizontal_fov"] = "the URDF gives no field of view: take the sensor's"
+    frames = desc.extra_frames + ((camera.added,) if camera.added else ())
+    spec = CameraDescription(
+        frame=camera.frame,
+        minimal_height=camera.minimal_height,
+        maximal_height=camera.maximal_height,
+        horizontal_fov=DEFAULT_HFOV,
+        vertical_fov=DEFAULT_VFOV,
+    )
+    looked_from = camera.added.parent if camera.added else camera.frame
+    neck = find_neck(tree, looked_from, desc.torso_joint)
+    _note(why, doubts, "pan_tilt", neck.why, neck.doubt)
+    parking = {j: within_limits(tree.model, j, 0.0) for j in neck.arm_joints}
+    if neck.pan_tilt is not None:
+        pt = neck.pan_tilt
+        parking = {j: within_limits(tree.model, j, 0.0) for j in (pt.pan_joint, pt.tilt_joint)}
+        why["neck_parking"] = "head at zero: straight ahead"
+    arms = dict(desc.arms)
+    if neck.arm_joints:
+        arms["neck"] = ArmDescription(
+            name="neck",
+            end_effector_link=tree.model.joints[neck.arm_joints[-1]].child,
+            tool_frame=camera.frame,
+            base_link=tree.model.joints[neck.arm_joints[0]].parent,
+            joints=neck.arm_joints,
+            parking=parking,
+        )
+        why["arms.neck"] = "the joints between torso and camera form an arm that aims it"
+        doubts["neck_parking"] = "zero joints: choose a pose where the camera looks ahead, down"
+    return replace(
+        desc,
+        arms=arms,
+        cameras=(spec,),
+        pan_tilt=neck.pan_tilt,
+        neck_arm="neck" if neck.arm_joints else None,
+        neck_parking=parking,
+        extra_frames=frames,
+    )

@@ -1,0 +1,184 @@
+"""Print a drafted description as a Python module: ``description()`` with its reasons.
+
+Each guessed field carries a ``# why:`` comment and, where the URDF left doubt, a
+``# TODO doubt:`` comment. The text is laid out as ``ruff format`` would, so an edited
+draft diffs cleanly against a fresh one.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from collections.abc import Mapping
+from pathlib import Path
+
+from robocram.robots.description import (
+    ArmDescription,
+    CameraDescription,
+    FrameSpec,
+    PanTiltDescription,
+    RobotDescription,
+)
+from robocram.robots.draft.source_writer import WIDTH, Call, Code, Item, call, quoted, render
+from robocram.robots.errors import DescriptionError
+from robocram.robots.example_robot_data import example_robot_data_folder
+from robocram.tf import Pose
+
+_HEADER = '''"""{name}: a robot description drafted by `robocram robot draft` from {urdf}.
+
+Check it with `robocram robot check {module}`; look at each `TODO doubt`.
+"""
+
+from __future__ import annotations
+
+'''
+
+
+class _Notes:
+    def __init__(self, why: Mapping[str, str], doubts: Mapping[str, str]) -> None:
+        self.why, self.doubts = why, doubts
+
+    def item(self, path: str, key: str, value: object) -> Item:
+        comments = []
+        if path in self.why:
+            comments.append(f"why: {self.why[path]}")
+        if path in self.doubts:
+            comments.append(f"TODO doubt: {self.doubts[path]}")
+        return Item(key, value, tuple(comments))
+
+
+def _pose(pose: Pose) -> Code:
+    position = tuple(round(v, 6) + 0.0 for v in pose.position)
+    orientation = tuple(round(v, 6) + 0.0 for v in pose.orientation)
+    if orientation == (0.0, 0.0, 0.0, 1.0):
+        return Code(f"Pose({position!r})")
+    return Code(f"Pose({position!r}, {orientation!r})")
+
+
+def _frame(spec: FrameSpec) -> object:
+    return call("FrameSpec", name=spec.name, parent=spec.parent, pose=_pose(spec.pose))
+
+
+def _arm(arm: ArmDescription, notes: _Notes) -> object:
+    path = f"arms.{arm.name}"
+    fields: list[Item] = [Item("name", arm.name)]
+    for key in ("end_effector_link", "tool_frame", "base_link"):
+        fields.append(notes.item(f"{path}.{key}", key, getattr(arm, key)))
+    fields.append(Item("joints", arm.joints))
+    for key in ("gripper_joints", "gripper_links", "hand_links"):
+        if getattr(arm, key):
+            fields.append(notes.item(f"{path}.{key}", key, getattr(arm, key)))
+    fields.append(notes.item(f"{path}.parking", "parking", dict(arm.parking)))
+    if arm.side is not None:
+        fields.append(Item("side", arm.side))
+    return call("ArmDescription", *fields)
+
+
+def _camera(camera: CameraDescription, notes: _Notes) -> object:
+    degrees = (round(math.degrees(camera.horizontal_fov)), round(math.degrees(camera.vertical_fov)))
+    return call(
+        "CameraDescription",
+        frame=camera.frame,
+        minimal_height=notes.item(
+            "cameras.0.minimal_height", "minimal_height", camera.minimal_height
+        ),
+        maximal_height=camera.maximal_height,
+        horizontal_fov=notes.item(
+            "cameras.0.horizontal_fov", "horizontal_fov", Code(f"math.radians({degrees[0]})")
+        ),
+        vertical_fov=Code(f"math.radians({degrees[1]})"),
+    )
+
+
+def _pan_tilt(unit: PanTiltDescription) -> object:
+    return call(
+        "PanTiltDescription",
+        pan_link=unit.pan_link,
+        tilt_link=unit.tilt_link,
+        pan_joint=unit.pan_joint,
+        tilt_joint=unit.tilt_joint,
+    )
+
+
+def _urdf_code(urdf: Path, module_file: Path | None) -> tuple[str, str]:
+    """The ``URDF = ...`` expression and the import it needs."""
+    try:
+        inside = urdf.relative_to(example_robot_data_folder())
+    except (ValueError, DescriptionError):
+        inside = None
+    if inside is not None:
+        return (
+            f"example_robot_data_folder() / {quoted(inside.as_posix())}",
+            "from robocram.robots.example_robot_data import example_robot_data_folder\n",
+        )
+    if module_file is not None:
+        relative = os.path.relpath(urdf, Path(module_file).resolve().parent)
+        return f"Path(__file__).resolve().parent / {quoted(Path(relative).as_posix())}", ""
+    return f"Path({quoted(urdf.as_posix())})", ""
+
+
+def _body(desc: RobotDescription, notes: _Notes) -> object:
+    fields = [Item("name", desc.name), Item("urdf", Code("URDF"))]
+    fields.append(notes.item("base_frame", "base_frame", desc.base_frame))
+    if desc.torso_joint is not None:
+        fields.append(notes.item("torso_joint", "torso_joint", desc.torso_joint))
+        fields.append(Item("torso_link", desc.torso_link))
+    arms = [
+        notes.item(f"arms.{key}", quoted(key), _arm(arm, notes)) for key, arm in desc.arms.items()
+    ]
+    keyed = [Item(a.key, a.value, a.comments, dict_key=True) for a in arms]
+    fields.append(notes.item("arms", "arms", Call("{", keyed, "}")))
+    if desc.cameras:
+        fields.append(notes.item("cameras.0", "cameras", (_camera(desc.cameras[0], notes),)))
+    if desc.pan_tilt is not None:
+        fields.append(notes.item("pan_tilt", "pan_tilt", _pan_tilt(desc.pan_tilt)))
+    if desc.neck_arm is not None:
+        fields.append(notes.item("pan_tilt", "neck_arm", desc.neck_arm))
+    if desc.neck_parking:
+        fields.append(notes.item("neck_parking", "neck_parking", dict(desc.neck_parking)))
+    if desc.extra_frames:
+        fields.append(Item("extra_frames", tuple(_frame(f) for f in desc.extra_frames)))
+    return call("RobotDescription", *fields)
+
+
+def _import_line(module: str, names: list[str]) -> str:
+    flat = f"from {module} import {', '.join(names)}"
+    if len(flat) <= WIDTH:
+        return flat + "\n"
+    return f"from {module} import (\n" + "".join(f"    {n},\n" for n in names) + ")\n"
+
+
+def draft_source(
+    desc: RobotDescription,
+    why: Mapping[str, str],
+    doubts: Mapping[str, str],
+    module_file: Path | None = None,
+) -> str:
+    """The module text for ``desc`` with ``why`` and ``doubts`` as comments."""
+    notes = _Notes(why, doubts)
+    urdf, extra_import = _urdf_code(Path(desc.urdf), module_file)
+    body = _body(desc, notes)
+    names = [
+        name
+        for name, used in (
+            ("ArmDescription", bool(desc.arms)),
+            ("CameraDescription", bool(desc.cameras)),
+            ("FrameSpec", bool(desc.extra_frames)),
+            ("PanTiltDescription", desc.pan_tilt is not None),
+            ("RobotDescription", True),
+        )
+        if used
+    ]
+    module = module_file.name if module_file is not None else "THIS_FILE.py"
+    text = _HEADER.format(name=desc.name, urdf=Path(desc.urdf).name, module=module)
+    standard = ["import math"] if desc.cameras else []
+    standard += ["from pathlib import Path"] if urdf.startswith("Path(") else []
+    text += "".join(f"{line}\n" for line in standard) + ("\n" if standard else "")
+    text += _import_line("robocram.robots", names)
+    text += extra_import
+    text += _import_line("robocram.tf", ["Pose"]) if desc.extra_frames else ""
+    text += f"\nURDF = {urdf}\n\n\n"
+    text += "def description() -> RobotDescription:\n"
+    text += f'    """The {desc.name} description (unchecked; load_description checks it)."""\n'
+    text += f"    return {render(body, '    ', len('return '))}\n"
+    return text

@@ -1,0 +1,113 @@
+"""Find the hands of a URDF: gripper-like ends of joint chains, their fingers and grippers.
+
+A hand hangs below the last joint of an arm (at least :data:`MIN_ARM_JOINTS` movable joints
+from the root) and is where finger joints start: the first movable joints below the wrist
+link include a finger, which is prismatic, coupled by ``<mimic>``, or a leaf. The gripper
+joints are the masters the most other hand joints mimic; without mimics, the finger joints.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from robocram.robots.draft.model_tree import ModelTree
+from robocram.robots.urdf_elements import Joint
+
+MIN_ARM_JOINTS = 4  # movable joints from the root to the wrist: fewer is no arm
+
+
+@dataclass(frozen=True)
+class Hand:
+    """One gripper-like end: the wrist link, its hand joints and the gripper joints."""
+
+    wrist_joint: str  # the last arm joint
+    end_effector_link: str  # its child: the link the hand is fixed to
+    hand_joints: tuple[str, ...]  # every movable joint below the wrist link
+    gripper_joints: tuple[str, ...]  # the ones a plan commands
+    gripper_links: tuple[str, ...]  # links the gripper joints move
+    hand_links: tuple[str, ...]  # every link below the wrist link
+    why_gripper: str
+    doubt_gripper: str | None = None
+
+
+FINGER_WORDS = ("finger", "gripper", "jaw", "thumb", "hand")  # in a lone leaf joint's name
+
+
+def _leaf(tree: ModelTree, joint: Joint) -> bool:
+    return not any(j.movable for j in tree.subtree_joints(joint.child))
+
+
+def _finger_like(tree: ModelTree, joint: Joint, siblings: int) -> bool:
+    """Prismatic, coupled by a mimic, or a leaf beside other fingers (or named like one).
+
+    A lone revolute leaf is a wrist's last joint (UR, xArm) unless its name says gripper.
+    """
+    if joint.type == "prismatic" or joint.mimic is not None or tree.is_mimicked(joint.name):
+        return True
+    if not _leaf(tree, joint):
+        return False
+    return siblings >= 2 or any(word in joint.name.lower() for word in FINGER_WORDS)
+
+
+def _fingers(tree: ModelTree, link: str) -> list[Joint]:
+    """The finger joints among the first movable joints below ``link``."""
+    roots = tree.movable_roots(link)
+    return [root for root in roots if _finger_like(tree, root, len(roots))]
+
+
+def _is_hand(tree: ModelTree, joint: Joint) -> bool:
+    if not joint.movable or joint.mimic is not None or tree.is_mimicked(joint.name):
+        return False
+    if len(tree.movable_ancestors(joint.child)) < MIN_ARM_JOINTS:
+        return False
+    return bool(_fingers(tree, joint.child))
+
+
+def find_hands(tree: ModelTree) -> list[Hand]:
+    """The hands of the model, in file order; a hand below another hand's wrist is a finger."""
+    wrists = [j for j in tree.model.joints.values() if _is_hand(tree, j)]
+    highest = [
+        w for w in wrists if not any(o is not w and tree.below(o.child, w.child) for o in wrists)
+    ]
+    return [_hand(tree, wrist) for wrist in highest]
+
+
+def _gripper_joints(
+    tree: ModelTree, link: str, hand_joints: list[Joint]
+) -> tuple[tuple[str, ...], str]:
+    masters = [j.name for j in hand_joints if j.mimic is None and tree.is_mimicked(j.name)]
+    if masters:
+        most = max(len(tree.followers(m)) for m in masters)
+        chosen = tuple(m for m in masters if len(tree.followers(m)) == most)
+        return chosen, f"mimicked by {most} hand joint(s) (<mimic> in the URDF)"
+    fingers = tuple(j.name for j in _fingers(tree, link) if j.mimic is None)
+    return fingers, "the finger joints (prismatic, or leaves) right below the wrist"
+
+
+def _hand(tree: ModelTree, wrist: Joint) -> Hand:
+    link = wrist.child
+    hand_joints = [j for j in tree.subtree_joints(link) if j.movable]
+    gripper, why = _gripper_joints(tree, link, hand_joints)
+    moving = [*gripper, *(f for g in gripper for f in tree.followers(g))]
+    children = [tree.model.joints[joint].child for joint in moving]
+    gripper_links = tuple(
+        dict.fromkeys(name for child in children for name in (child, *tree.subtree_links(child)))
+    )
+    others = [j.name for j in hand_joints if j.name not in moving]
+    doubt = None
+    if others:
+        doubt = (
+            f"{len(others)} more hand joint(s) move with no gripper joint: "
+            f"{', '.join(others[:6])}{', ...' if len(others) > 6 else ''}; couple them "
+            "(<mimic> or the gripper model) if they are fingers"
+        )
+    return Hand(
+        wrist_joint=wrist.name,
+        end_effector_link=link,
+        hand_joints=tuple(j.name for j in hand_joints),
+        gripper_joints=gripper,
+        gripper_links=gripper_links,
+        hand_links=tuple(tree.subtree_links(link)),
+        why_gripper=why,
+        doubt_gripper=doubt,
+    )

@@ -1,0 +1,102 @@
+"""A parking pose for a drafted arm: within the joint limits, hand low beside the shoulder.
+
+Parked arms must stay out of the camera's view and off the table in front: the pose puts
+the wrist :data:`BELOW` under and :data:`OUTWARD` beside its shoulder, links above the
+floor and outside the body's middle. It is a seeded sampled search over the joint limits
+(no collision check: ``robocram robot check`` drives the arm there and reports).
+"""
+
+from __future__ import annotations
+
+import math
+import random
+from collections.abc import Sequence
+
+import numpy as np
+
+from robocram.robots.draft.link_poses import joint_motion, link_poses
+from robocram.robots.robot_model import RobotModel
+
+BELOW = 0.35  # [m] from the shoulder down to the parked wrist
+OUTWARD = 0.15  # [m] from the shoulder outwards (away from the body's middle)
+SAMPLES = 1500
+REFINE_ROUNDS = 4
+FLOOR_CLEARANCE = 0.05  # [m] every arm link stays this high over the root link
+
+
+def _limits(model: RobotModel, joint: str) -> tuple[float, float]:
+    spec = model.joints[joint]
+    lower = -math.pi if spec.lower is None or not math.isfinite(spec.lower) else spec.lower
+    upper = math.pi if spec.upper is None or not math.isfinite(spec.upper) else spec.upper
+    return lower, upper
+
+
+class _ArmChain:
+    """Forward kinematics of one arm chain only, for a fast search."""
+
+    def __init__(self, model: RobotModel, joints: Sequence[str], wrist: str) -> None:
+        self.model = model
+        self.joints = tuple(joints)
+        self.base = link_poses(model)[model.joints[joints[0]].parent]
+        self.chain = model.chain(model.joints[joints[0]].parent, wrist)
+
+    def points(self, values: Sequence[float]) -> list[np.ndarray]:
+        by_name = dict(zip(self.joints, values, strict=True))
+        pose, found = self.base, []
+        for joint in self.chain:
+            pose = pose * joint.origin
+            value = by_name.get(joint.name, 0.0)
+            if joint.movable and value:
+                pose = pose * joint_motion(joint.axis, joint.type, value)
+            found.append(np.asarray(pose.position))
+        return found
+
+
+def _cost(chain: _ArmChain, values: Sequence[float], goal: np.ndarray, side: float) -> float:
+    points = chain.points(values)
+    cost = float(np.linalg.norm(points[-1] - goal))
+    for point in points:
+        cost += 2.0 * max(0.0, FLOOR_CLEARANCE - float(point[2]))
+        if side:
+            cost += max(0.0, float(abs(chain.base.position[1]) - side * point[1]))
+    return cost
+
+
+def parking_pose(
+    model: RobotModel, joints: Sequence[str], wrist: str, seed: int = 0
+) -> dict[str, float]:
+    """Joint values [rad | m] within limits that park the arm; ``seed`` fixes the search."""
+    chain = _ArmChain(model, joints, wrist)
+    shoulder = chain.points([0.0] * len(joints))[0]
+    side = float(np.sign(shoulder[1])) if abs(shoulder[1]) > 0.05 else 0.0
+    goal = shoulder + np.array((0.0, side * OUTWARD, -BELOW))
+    limits = [_limits(model, j) for j in joints]
+    rng = random.Random(seed)
+    best = [min(max(0.0, lo), hi) for lo, hi in limits]
+    best_cost = _cost(chain, best, goal, side)
+    for _ in range(SAMPLES):
+        values = [rng.uniform(lo, hi) for lo, hi in limits]
+        cost = _cost(chain, values, goal, side)
+        if cost < best_cost:
+            best, best_cost = values, cost
+    step = 0.2
+    for _ in range(REFINE_ROUNDS):
+        for i, (lo, hi) in enumerate(limits):
+            for delta in (-step, step):
+                trial = list(best)
+                trial[i] = min(max(trial[i] + delta, lo), hi)
+                cost = _cost(chain, trial, goal, side)
+                if cost < best_cost:
+                    best, best_cost = trial, cost
+        step /= 2
+    return {j: _rounded_inside(v, lim) for j, v, lim in zip(joints, best, limits, strict=True)}
+
+
+def _rounded_inside(value: float, limits: tuple[float, float]) -> float:
+    """``value`` to 3 decimals, rounded towards the inside of ``limits``."""
+    rounded = round(value, 3)
+    if rounded > limits[1]:
+        return math.floor(limits[1] * 1000) / 1000
+    if rounded < limits[0]:
+        return math.ceil(limits[0] * 1000) / 1000
+    return rounded

@@ -1,0 +1,139 @@
+"""The tool frame of a drafted arm, in robocram's convention: x = approach, y = opening.
+
+The approach is the direction from the wrist link to the middle of the hand's links; the
+opening is how the finger that moves most moves when the gripper opens (the joints'
+upper limits). An existing frame rigid with the wrist, named like a tool frame and reaching
+the fingers, is kept when its axes agree; otherwise a frame is added in code.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from robocram.robots.description import FrameSpec
+from robocram.robots.draft.hands import Hand
+from robocram.robots.draft.link_poses import link_poses
+from robocram.robots.draft.model_tree import ModelTree
+from robocram.tf import Pose
+
+TOOL_WORDS = ("tool", "tcp", "grasp", "endpoint", "end_effector", "gripper")
+AXIS_AGREEMENT = math.cos(math.radians(20.0))  # an axis within 20 degrees of the wanted one
+SNAP = math.cos(math.radians(15.0))  # a measured direction this close to a link axis is it
+REACH_SHARE = 0.9  # of the fingers' reach past the wrist a kept tool frame must reach
+
+
+@dataclass(frozen=True)
+class ToolFrame:
+    """The arm's tool frame: a URDF frame, or one to add (``added``), and why."""
+
+    name: str
+    added: FrameSpec | None
+    why: str
+    doubt: str | None = None
+
+
+def _snapped(direction: np.ndarray) -> np.ndarray:
+    unit = direction / np.linalg.norm(direction)
+    best = int(np.argmax(np.abs(unit)))
+    if abs(unit[best]) >= SNAP:
+        snapped = np.zeros(3)
+        snapped[best] = math.copysign(1.0, unit[best])
+        return snapped
+    return unit
+
+
+def _in_wrist(tree: ModelTree, hand: Hand, values: dict[str, float]) -> dict[str, np.ndarray]:
+    """Positions [m] of the hand's links in the wrist link, with the joints at ``values``."""
+    poses = link_poses(tree.model, values)
+    wrist = poses[hand.end_effector_link].inverse()
+    return {link: np.asarray((wrist * poses[link]).position) for link in hand.hand_links}
+
+
+def _gripper_at(tree: ModelTree, hand: Hand, where: str) -> dict[str, float]:
+    values = {}
+    for name in hand.gripper_joints:
+        joint = tree.model.joints[name]
+        limit = joint.upper if where == "open" else joint.lower
+        values[name] = limit if limit is not None and math.isfinite(limit) else 0.0
+    return values
+
+
+def approach_and_opening(tree: ModelTree, hand: Hand) -> tuple[np.ndarray, np.ndarray | None]:
+    """Unit approach and opening directions in the wrist link (opening None if unseen)."""
+    opened = _in_wrist(tree, hand, _gripper_at(tree, hand, "open"))
+    closed = _in_wrist(tree, hand, _gripper_at(tree, hand, "closed"))
+    approach = _snapped(np.mean(list(opened.values()), axis=0))
+    moves = {link: opened[link] - closed[link] for link in hand.gripper_links}
+    if not moves:
+        return approach, None
+    link = max(moves, key=lambda name: float(np.linalg.norm(moves[name])))
+    sideways = moves[link] - (moves[link] @ approach) * approach
+    if np.linalg.norm(sideways) < 1e-4:
+        return approach, None
+    return approach, _snapped(sideways)
+
+
+def _reach(tree: ModelTree, hand: Hand, approach: np.ndarray) -> float:
+    """How far [m] past the wrist along the approach the gripper links reach, closed."""
+    closed = _in_wrist(tree, hand, _gripper_at(tree, hand, "closed"))
+    reach = [float(closed[link] @ approach) for link in hand.gripper_links] or [0.0]
+    return max(reach)
+
+
+def _candidates(tree: ModelTree, hand: Hand) -> list[str]:
+    rigid = tree.fixed_closure(hand.end_effector_link)[1:]
+    return [
+        link
+        for link in rigid
+        if any(word in link.lower() for word in TOOL_WORDS) and "finger" not in link.lower()
+    ]
+
+
+def _orientation(x_axis: np.ndarray, y_axis: np.ndarray) -> Pose:
+    y = y_axis - (y_axis @ x_axis) * x_axis
+    y /= np.linalg.norm(y)
+    matrix = np.eye(4)
+    matrix[:3, :3] = np.column_stack((x_axis, y, np.cross(x_axis, y)))
+    return Pose.from_matrix(matrix)
+
+
+def _fallback_opening(approach: np.ndarray) -> np.ndarray:
+    axis = int(np.argmin(np.abs(approach)))
+    return np.eye(3)[axis]
+
+
+def tool_frame(tree: ModelTree, hand: Hand, arm: str) -> ToolFrame:
+    """An existing tool frame that follows the convention, or one to add and why."""
+    approach, opening = approach_and_opening(tree, hand)
+    doubt = None
+    if opening is None:
+        opening = _fallback_opening(approach)
+        doubt = "the fingers did not move apart between the joint limits; check y = opening"
+    reach = _reach(tree, hand, approach)
+    at_rest = _in_wrist(tree, hand, {})
+    poses = link_poses(tree.model)
+    wrist = poses[hand.end_effector_link]
+    for name in sorted(_candidates(tree, hand), key=lambda n: -float(at_rest[n] @ approach)):
+        if float(at_rest[name] @ approach) < REACH_SHARE * reach:
+            continue
+        frame = wrist.inverse() * poses[name]
+        axes = frame.matrix()[:3, :3]
+        if axes[:, 0] @ approach >= AXIS_AGREEMENT and abs(axes[:, 1] @ opening) >= AXIS_AGREEMENT:
+            return ToolFrame(name, None, "the URDF's frame at the fingers, x = approach", doubt)
+        turn = frame.inverse() * Pose(frame.position, _orientation(approach, opening).orientation)
+        spec = FrameSpec(f"{arm}_standard_tool_frame", name, Pose(orientation=turn.orientation))
+        why = f"{name} is at the fingers but its axes differ: turned to x = approach, y = opening"
+        return ToolFrame(spec.name, spec, why, doubt)
+    closed = _in_wrist(tree, hand, _gripper_at(tree, hand, "closed"))
+    middle = np.mean([closed[link] for link in hand.gripper_links] or [approach * reach], axis=0)
+    centre = middle + (reach - float(middle @ approach)) * approach
+    spec = FrameSpec(
+        f"{arm}_standard_tool_frame",
+        hand.end_effector_link,
+        Pose(tuple(float(v) for v in centre), _orientation(approach, opening).orientation),  # type: ignore[arg-type]
+    )
+    why = f"no frame of the URDF reaches the fingers: added {reach:.3f} m out along the approach"
+    return ToolFrame(spec.name, spec, why, doubt)
