@@ -56,6 +56,15 @@ ALLOWED: dict[str, set[str]] = {
         "tf",
     },
     "batch": {"traces", "scenes", "plans", "projection", "world", "execution", "tf"},
+    "robot_check": {
+        "projection",
+        "world",
+        "kinematics",
+        "execution",
+        "designators",
+        "robots",
+        "tf",
+    },
 }
 
 

@@ -1,6 +1,8 @@
-"""``robocram robot draft``: draft a description from a URDF.
+"""``robocram robot draft|check``: draft a description from a URDF, and its report card.
 
-``draft URDF [-o FILE]`` prints (or writes) ready-to-edit Python.
+``draft URDF [-o FILE]`` prints (or writes) ready-to-edit Python; ``check DESCRIPTION``
+(``pkg.mod:NAME``, a ``.py`` file, or a built-in robot) drives every part of the robot
+once in projection and prints one line per check. Exit code 0 only if all pass.
 """
 
 from __future__ import annotations
@@ -11,18 +13,23 @@ from pathlib import Path
 
 from robocram.robots import draft_description
 
-EXIT_OK = 0
+EXIT_OK, EXIT_FAILED = 0, 1
 
 
 def add_robot_commands(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     """Add ``robot draft`` and ``robot check`` to the ``robocram`` parser."""
-    robot = commands.add_parser("robot", help="bring a new robot in: draft its description")
+    robot = commands.add_parser("robot", help="bring a new robot in: draft and check")
     sub = robot.add_subparsers(dest="robot_command", required=True, metavar="ACTION")
     draft = sub.add_parser("draft", help="print a description drafted from a URDF")
     draft.add_argument("urdf", type=Path, help="the robot's URDF file")
     draft.add_argument("-o", "--output", type=Path, help="write the Python module here")
     draft.add_argument("--name", help="the robot's name (default: the URDF's)")
     draft.set_defaults(handler=_draft)
+    check = sub.add_parser("check", help="drive every part of a description once: report card")
+    check.add_argument(
+        "description", help="pkg.module:NAME, a .py file defining description(), or a built-in"
+    )
+    check.set_defaults(handler=_check)
 
 
 def _draft(args: argparse.Namespace) -> int:
@@ -33,3 +40,11 @@ def _draft(args: argparse.Namespace) -> int:
     args.output.write_text(draft.source(args.output), encoding="utf-8")
     print(f"wrote {args.output}: edit each TODO doubt, then `robocram robot check {args.output}`")
     return EXIT_OK
+
+
+def _check(args: argparse.Namespace) -> int:
+    from robocram.robot_check import check_robot, description_from
+
+    card = check_robot(description_from(args.description))
+    print(card.render())
+    return EXIT_OK if card.passed else EXIT_FAILED

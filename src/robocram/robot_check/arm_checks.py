@@ -1,0 +1,163 @@
+"""Drive each arm once: parking, the tool frame's convention, the gripper, a reach and a grip.
+
+The reach goes to a point ahead of the shoulder, tool pointing down as the pick-up plan
+holds it; a small box then appears between the fingers and the gripper must close on it,
+which fails if the tool frame is not between the fingertips.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from robocram.execution import PlanFailure
+from robocram.projection.arm import move_joints, move_tcp
+from robocram.projection.gripper import close_gripper, grip, open_gripper, release
+from robocram.projection.projected_robot import ProjectedRobot
+from robocram.robot_check.report_card import CheckResult
+from robocram.robots import ArmDescription
+from robocram.tf import Pose
+from robocram.tf import quaternion as quat
+
+APPROACH_AGREEMENT = math.cos(math.radians(30.0))  # tool x vs the wrist-to-tool direction
+MIN_OPENING = 0.005  # [m] the fingers must move apart at least this much when opening
+REACH_AHEAD = 0.65  # of the shoulder-to-wrist length: the wrist's distance ahead
+WRIST_BELOW = 0.10  # [m] the wrist below the shoulder, the tool a hand's length lower
+PROBE_SIZE = (0.06, 0.06, 0.08)  # [m] mug-sized: grips are judged with the fingers closed
+YAWS = (0.0, math.pi / 2, math.pi, -math.pi / 2)  # [rad] tool turns about the vertical
+
+
+def _check(name: str, passed: bool, detail: str, fix: str) -> CheckResult:
+    return CheckResult(name, passed, detail, fix)
+
+
+def parking(robot: ProjectedRobot, key: str, arm: ArmDescription) -> CheckResult:
+    """The arm reaches its parking pose without touching the floor."""
+    name = f"{key} arm: parking"
+    try:
+        move_joints(robot, key, dict(arm.parking))
+    except PlanFailure as failure:
+        return _check(name, False, str(failure), f"parking values of arms[{key!r}] in limits")
+    floors = [o for o in robot.world.objects() if o.type == "floor"]
+    low = [
+        p.link_a
+        for floor in floors
+        for p in robot.world.contact_points(robot.name, floor)
+        if p.link_a in arm.links or p.link_a in arm.hand_links
+    ]
+    if low:
+        return _check(name, False, f"{sorted(set(low))} touch the floor", "park the arm higher")
+    return _check(name, True, f"{len(arm.parking)} joints set", "")
+
+
+def tool_frame(robot: ProjectedRobot, key: str, arm: ArmDescription) -> CheckResult:
+    """The tool frame's x points from the wrist towards the tool (the approach)."""
+    name = f"{key} arm: tool frame"
+    wrist = robot.world.link_pose(robot.name, arm.end_effector_link)
+    tool = robot.world.link_pose(robot.name, arm.tool_frame)
+    out = np.subtract(tool.position, wrist.position)
+    if np.linalg.norm(out) < 0.02:
+        return _check(
+            name,
+            False,
+            f"{arm.tool_frame} is {np.linalg.norm(out):.3f} m from the wrist",
+            "put the tool frame between the fingertips (x = approach, y = opening)",
+        )
+    x_axis = tool.matrix()[:3, 0]
+    agreement = float(x_axis @ out / np.linalg.norm(out))
+    if agreement < APPROACH_AGREEMENT:
+        angle = math.degrees(math.acos(max(-1.0, min(1.0, agreement))))
+        return _check(
+            name,
+            False,
+            f"{arm.tool_frame}'s x is {angle:.0f} deg off the wrist-to-tool direction",
+            "turn the tool frame (a FrameSpec) so that x points out of the hand",
+        )
+    return _check(name, True, f"{arm.tool_frame}: x points out of the hand", "")
+
+
+def _finger_span(robot: ProjectedRobot, arm: ArmDescription) -> float:
+    """How far apart [m] the gripper links lie along the tool frame's y (the opening)."""
+    opening = robot.world.link_pose(robot.name, arm.tool_frame).matrix()[:3, 1]
+    links = [link for link in arm.gripper_links if link in robot.body.link_index]
+    along = [float(opening @ robot.world.link_pose(robot.name, link).position) for link in links]
+    return max(along, default=0.0) - min(along, default=0.0)
+
+
+def gripper(robot: ProjectedRobot, key: str, arm: ArmDescription) -> CheckResult:
+    """Opening moves the fingers apart, closing brings them together."""
+    name = f"{key} arm: gripper"
+    try:
+        opened = (open_gripper(robot, key), _finger_span(robot, arm))[1]
+        closed = (close_gripper(robot, key), _finger_span(robot, arm))[1]
+        open_gripper(robot, key)
+    except PlanFailure as failure:
+        return _check(name, False, str(failure), f"check gripper_joints of arms[{key!r}]")
+    if opened - closed < MIN_OPENING:
+        return _check(
+            name,
+            False,
+            f"the fingers span {opened:.3f} m open and {closed:.3f} m closed",
+            "list the joints that move the fingers (open at the upper limit) in gripper_joints",
+        )
+    return _check(name, True, f"fingers span {opened:.3f} m open, {closed:.3f} m closed", "")
+
+
+def _down(robot: ProjectedRobot, arm: ArmDescription, yaw: float) -> quat.Quaternion:
+    """A tool orientation with its approach axis (x) pointing down, turned by ``yaw``."""
+    del robot, arm
+    pitch = quat.from_euler(0.0, math.pi / 2, 0.0)
+    return quat.multiply(quat.from_euler(0.0, 0.0, yaw), pitch)
+
+
+def reach_target(robot: ProjectedRobot, arm: ArmDescription) -> tuple[float, float, float]:
+    """A point [m, map] ahead of the shoulder where the tool, pointing down, can be.
+
+    As the tabletop scene places its mug: the wrist a share of the arm's length ahead of
+    the shoulder and a little below it, the tool a hand's length under the wrist.
+    """
+    world = robot.world
+    links = [*dict.fromkeys((*arm.links, arm.end_effector_link))]
+    points = [world.link_pose(robot.name, link).position for link in links]
+    length = sum(math.dist(p, q) for p, q in zip(points, points[1:], strict=False))
+    hand = math.dist(points[-1], world.link_pose(robot.name, arm.tool_frame).position)
+    x, y, z = points[0]
+    return (x + REACH_AHEAD * length, y, z - WRIST_BELOW - hand)
+
+
+def reach_and_grip(robot: ProjectedRobot, key: str, arm: ArmDescription) -> list[CheckResult]:
+    """Reach ahead, tool down; then close the gripper on a box put at the tool frame."""
+    target = reach_target(robot, arm)
+    errors = []
+    for yaw in YAWS:
+        try:
+            reached = move_tcp(robot, key, Pose(target, _down(robot, arm, yaw)))
+            break
+        except PlanFailure as failure:
+            errors.append(str(failure))
+    else:
+        fix = "check the arm's joints and base_link, and that the tool frame is at the fingers"
+        return [_check(f"{key} arm: reach", False, errors[-1], fix)]
+    results = [_check(f"{key} arm: reach", True, f"tool at {_fmt(reached.position)} (map)", "")]
+    return results + [_grip(robot, key, reached)]
+
+
+def _grip(robot: ProjectedRobot, key: str, tool: Pose) -> CheckResult:
+    name = f"{key} arm: grip"
+    probe = robot.world.add_box("robot_check_probe", PROBE_SIZE, pose=tool, mass=0.1)
+    try:
+        open_gripper(robot, key)
+        held = grip(robot, key)
+        return _check(name, True, f"closed on {held} at the tool frame", "")
+    except PlanFailure as failure:
+        fix = "put the tool frame between the fingertips (where an object is held)"
+        return _check(name, False, str(failure), fix)
+    finally:
+        release(robot, key)
+        robot.world.remove(probe)
+        open_gripper(robot, key)
+
+
+def _fmt(point: tuple[float, float, float]) -> str:
+    return "(" + ", ".join(f"{v:.2f}" for v in point) + ")"

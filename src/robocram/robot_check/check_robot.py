@@ -1,0 +1,51 @@
+"""Check a robot description by driving it: the report card of ``robocram robot check``.
+
+The names and values are checked against the URDF first; then the robot is loaded alone
+in a world and each part moves once. Every check runs even when an earlier one failed
+(where it can), so one run names every fault.
+"""
+
+from __future__ import annotations
+
+from robocram.projection.projected_robot import ProjectedRobot
+from robocram.robot_check import arm_checks, head_checks
+from robocram.robot_check.loading_check import load_for_check
+from robocram.robot_check.report_card import CheckResult, ReportCard
+from robocram.robots import RobotDescription
+from robocram.world import World
+
+
+def check_robot(desc: RobotDescription) -> ReportCard:
+    """Run every check on ``desc``; the card says what passed and how to fix what failed."""
+    results: list[CheckResult] = []
+    loaded = load_for_check(desc, results)
+    if loaded is None:
+        return ReportCard(desc.name, tuple(results))
+    world = World()
+    try:
+        world.add_floor()
+        robot = ProjectedRobot.of(world, world.add_robot(loaded).name)
+        results += _drive(robot)
+    finally:
+        world.close()
+    return ReportCard(desc.name, tuple(results))
+
+
+def _drive(robot: ProjectedRobot) -> list[CheckResult]:
+    desc = robot.description
+    results: list[CheckResult] = []
+    if desc.cameras:
+        results.append(head_checks.camera_forward(robot))
+    results += head_checks.torso(robot)
+    for key, arm in desc.arms.items():
+        if key == desc.neck_arm:
+            continue
+        results.append(arm_checks.parking(robot, key, arm))
+        results.append(arm_checks.tool_frame(robot, key, arm))
+        if arm.gripper_joints:
+            results.append(arm_checks.gripper(robot, key, arm))
+        results += arm_checks.reach_and_grip(robot, key, arm)
+        arm_checks.parking(robot, key, arm)
+    if desc.cameras and (desc.pan_tilt is not None or desc.neck_arm is not None):
+        results += head_checks.look_and_detect(robot)
+    return results

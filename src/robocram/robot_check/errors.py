@@ -1,0 +1,9 @@
+"""The robot checker's errors: a description it cannot find or import."""
+
+from __future__ import annotations
+
+from robocram.robots import DescriptionError
+
+
+class RobotCheckError(DescriptionError):
+    """The description to check cannot be found or built; the message says how to name it."""

@@ -1,0 +1,148 @@
+"""Drive the torso and the head once: up and down, look ahead, look at a point, detect.
+
+The torso must lift the arms' bases and its range must match the camera heights the
+description gives; the camera's optical axis (z) must look forward with the neck parked,
+turn onto a point when looking at it, and see a mug put there.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from robocram.designators import an
+from robocram.execution import PlanFailure
+from robocram.projection.neck import look_at
+from robocram.projection.perception import detect
+from robocram.projection.projected_robot import ProjectedRobot
+from robocram.projection.torso import move_torso
+from robocram.robot_check.report_card import CheckResult
+
+HEIGHT_TOLERANCE = 0.05  # [m] between a camera height given and one measured
+LIFT_SHARE = 0.5  # of the torso's range the arms' bases must rise at least
+LOOK_TOLERANCE = math.radians(5.0)  # [rad] between the optical axis and the look target
+FORWARD = 0.5  # x share in the base frame of an optical axis that looks ahead
+LOOK_AHEAD = 1.0  # [m] ahead of the camera to look and detect at, at least
+LOOK_DOWN = math.radians(20.0)  # [rad] at most: a neck arm's own links hide steeper views
+LOOK_HEIGHT = 0.75  # [m] over the floor: a table top
+
+
+def torso(robot: ProjectedRobot) -> list[CheckResult]:
+    """Torso down, then up: the arms rise with it; the camera heights match both ends."""
+    desc, world = robot.description, robot.world
+    joint = desc.torso_joint
+    if joint is None:
+        return []
+    limits = world.joint_limits(robot.name, joint)
+    bases = [arm.links[0] for key, arm in desc.arms.items() if key != desc.neck_arm and arm.links]
+    heights = {}
+    try:
+        for end in (limits.lower, limits.upper):
+            move_torso(robot, end)
+            heights[end] = (
+                [world.link_pose(robot.name, link).position[2] for link in bases],
+                [world.link_pose(robot.name, c.frame).position[2] for c in desc.cameras],
+            )
+    except PlanFailure as failure:
+        return [CheckResult("torso", False, str(failure), f"check torso_joint {joint!r}")]
+    rise = [
+        high - low
+        for low, high in zip(*(heights[e][0] for e in (limits.lower, limits.upper)), strict=True)
+    ]
+    span = limits.upper - limits.lower
+    results = []
+    if rise and min(rise) < LIFT_SHARE * span:
+        results.append(
+            CheckResult(
+                "torso",
+                False,
+                f"{joint} moves the arms' bases by {min(rise):.3f} m over its {span:.3f} m range",
+                "name the vertical joint that lifts the arms as torso_joint",
+            )
+        )
+    else:
+        results.append(
+            CheckResult("torso", True, f"{joint} moves over [{limits.lower}, {limits.upper}]")
+        )
+    return results + _camera_heights(robot, heights[limits.lower][1], heights[limits.upper][1])
+
+
+def _camera_heights(
+    robot: ProjectedRobot, at_lower: list[float], at_upper: list[float]
+) -> list[CheckResult]:
+    results = []
+    for camera, low, high in zip(robot.description.cameras, at_lower, at_upper, strict=True):
+        measured = (min(low, high), max(low, high))
+        given = (camera.minimal_height, camera.maximal_height)
+        if measured[1] - measured[0] < HEIGHT_TOLERANCE:  # the torso does not carry it
+            ok = given[0] - HEIGHT_TOLERANCE <= measured[0] <= given[1] + HEIGHT_TOLERANCE
+        else:
+            ok = given[0] <= given[1] and all(
+                abs(m - g) <= HEIGHT_TOLERANCE for m, g in zip(measured, given, strict=True)
+            )
+        detail = (
+            f"given [{given[0]:.3f}, {given[1]:.3f}] m, "
+            f"at the torso's limits [{measured[0]:.3f}, {measured[1]:.3f}] m"
+        )
+        fix = f"minimal_height={measured[0]:.3f}, maximal_height={measured[1]:.3f}"
+        results.append(CheckResult(f"camera {camera.frame}: heights", ok, detail, fix))
+    return results
+
+
+def camera_forward(robot: ProjectedRobot) -> CheckResult:
+    """With the neck parked, the camera's optical axis (z) looks ahead of the robot."""
+    desc = robot.description
+    camera = desc.cameras[0]
+    name = f"camera {camera.frame}: looks ahead"
+    if desc.neck_parking:
+        robot.world.set_joint_states(robot.name, dict(desc.neck_parking))
+    axes = (robot.base_pose().inverse() * robot.world.link_pose(robot.name, camera.frame)).matrix()
+    forward = float(axes[0, 2])
+    if forward < FORWARD:
+        seen = "backwards" if forward < -FORWARD else "sideways, up or down"
+        return CheckResult(
+            name,
+            False,
+            f"its z axis looks {seen} (x share {forward:.2f}) with the neck parked",
+            "use the optical frame (z forward, x right, y down), or add one with a FrameSpec",
+        )
+    return CheckResult(name, True, f"z looks ahead (x share {forward:.2f})")
+
+
+def look_and_detect(robot: ProjectedRobot) -> list[CheckResult]:
+    """Look at a point ahead of the camera, then detect a mug put there."""
+    world, camera = robot.world, robot.description.cameras[0]
+    eye = world.link_pose(robot.name, camera.frame).position
+    base = robot.base_pose()
+    distance = max(LOOK_AHEAD, (eye[2] - LOOK_HEIGHT) / math.tan(LOOK_DOWN))
+    ahead = base.transform_point((distance, 0.0, 0.0))
+    target = (
+        ahead[0] + eye[0] - base.position[0],
+        ahead[1] + eye[1] - base.position[1],
+        LOOK_HEIGHT,
+    )
+    try:
+        look_at(robot, target)
+    except PlanFailure as failure:
+        return [CheckResult("look", False, str(failure), "check pan_tilt or neck_arm joints")]
+    pose = world.link_pose(robot.name, camera.frame)
+    wanted = np.subtract(target, pose.position)
+    off = math.acos(min(1.0, float(pose.matrix()[:3, 2] @ wanted / np.linalg.norm(wanted))))
+    look = CheckResult(
+        "look",
+        off <= LOOK_TOLERANCE,
+        f"optical axis {math.degrees(off):.1f} deg off the target",
+        "the camera frame must be optical (z forward) and turned by the pan-tilt or neck",
+    )
+    mug = world.add_item("robot_check_mug", "mug", pose=target)
+    try:
+        seen = detect(robot, an.object(type="mug"))
+        found = CheckResult("detect", True, f"saw {seen.get('name')} {distance:.2f} m ahead")  # type: ignore[union-attr]
+    except PlanFailure as failure:
+        found = CheckResult(
+            "detect", False, str(failure), "check the camera frame and its fields of view"
+        )
+    finally:
+        world.remove(mug)
+    return [look, found]
