@@ -78,10 +78,15 @@ def tool_frame(robot: ProjectedRobot, key: str, arm: ArmDescription) -> CheckRes
 
 
 def _finger_span(robot: ProjectedRobot, arm: ArmDescription) -> float:
-    """How far apart [m] the gripper links lie along the tool frame's y (the opening)."""
-    opening = robot.world.link_pose(robot.name, arm.tool_frame).matrix()[:3, 1]
+    """How far apart [m] the fingers and the tool frame lie along its y (the opening).
+
+    The tool frame counts as a point too, so a single jaw closing on a fixed one is seen.
+    """
+    tool = robot.world.link_pose(robot.name, arm.tool_frame)
+    opening = tool.matrix()[:3, 1]
     links = [link for link in arm.gripper_links if link in robot.body.link_index]
-    along = [float(opening @ robot.world.link_pose(robot.name, link).position) for link in links]
+    points = [tool.position, *(robot.world.link_pose(robot.name, link).position for link in links)]
+    along = [float(opening @ point) for point in points]
     return max(along, default=0.0) - min(along, default=0.0)
 
 

@@ -7,11 +7,13 @@ in a world and each part moves once. Every check runs even when an earlier one f
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robot_check import arm_checks, head_checks
 from robocram.robot_check.loading_check import load_for_check
 from robocram.robot_check.report_card import CheckResult, ReportCard
-from robocram.robots import RobotDescription
+from robocram.robots import ArmDescription, RobotDescription
 from robocram.world import World
 
 
@@ -31,21 +33,35 @@ def check_robot(desc: RobotDescription) -> ReportCard:
     return ReportCard(desc.name, tuple(results))
 
 
+def _guarded(name: str, check: Callable[[], CheckResult | list[CheckResult]]) -> list[CheckResult]:
+    """The check's results; an error it did not expect fails it, naming the error."""
+    try:
+        found = check()
+    except Exception as err:  # noqa: BLE001 - a checker reports what breaks, it does not crash
+        detail = f"stopped by {type(err).__name__}: {err}"
+        return [CheckResult(name, False, detail, "report this with the description")]
+    return found if isinstance(found, list) else [found]
+
+
 def _drive(robot: ProjectedRobot) -> list[CheckResult]:
     desc = robot.description
     results: list[CheckResult] = []
     if desc.cameras:
-        results.append(head_checks.camera_forward(robot))
-    results += head_checks.torso(robot)
+        results += _guarded("camera", lambda: head_checks.camera_forward(robot))
+    results += _guarded("torso", lambda: head_checks.torso(robot))
     for key, arm in desc.arms.items():
-        if key == desc.neck_arm:
-            continue
-        results.append(arm_checks.parking(robot, key, arm))
-        results.append(arm_checks.tool_frame(robot, key, arm))
-        if arm.gripper_joints:
-            results.append(arm_checks.gripper(robot, key, arm))
-        results += arm_checks.reach_and_grip(robot, key, arm)
-        arm_checks.parking(robot, key, arm)
-    if desc.cameras and (desc.pan_tilt is not None or desc.neck_arm is not None):
-        results += head_checks.look_and_detect(robot)
+        if key != desc.neck_arm:
+            results += _arm(robot, key, arm)
+    if desc.cameras:
+        results += _guarded("look", lambda: head_checks.look_and_detect(robot))
+    return results
+
+
+def _arm(robot: ProjectedRobot, key: str, arm: ArmDescription) -> list[CheckResult]:
+    results = _guarded(f"{key} arm: parking", lambda: arm_checks.parking(robot, key, arm))
+    results += _guarded(f"{key} arm: tool frame", lambda: arm_checks.tool_frame(robot, key, arm))
+    if arm.gripper_joints:
+        results += _guarded(f"{key} arm: gripper", lambda: arm_checks.gripper(robot, key, arm))
+    results += _guarded(f"{key} arm: reach", lambda: arm_checks.reach_and_grip(robot, key, arm))
+    _guarded(f"{key} arm: parking", lambda: arm_checks.parking(robot, key, arm))
     return results

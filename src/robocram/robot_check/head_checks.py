@@ -111,17 +111,21 @@ def camera_forward(robot: ProjectedRobot) -> CheckResult:
 
 
 def look_and_detect(robot: ProjectedRobot) -> list[CheckResult]:
-    """Look at a point ahead of the camera, then detect a mug put there."""
-    world, camera = robot.world, robot.description.cameras[0]
-    eye = world.link_pose(robot.name, camera.frame).position
+    """Look at a point ahead of the camera, then detect a mug put there.
+
+    A camera that cannot turn (no pan-tilt, no neck arm) gets the mug on its optical axis.
+    """
+    world, desc = robot.world, robot.description
+    camera = desc.cameras[0]
+    eye = world.link_pose(robot.name, camera.frame)
+    if desc.pan_tilt is None and desc.neck_arm is None:
+        target = eye.transform_point((0.0, 0.0, LOOK_AHEAD))
+        return [_detect(robot, target, LOOK_AHEAD)]
     base = robot.base_pose()
-    distance = max(LOOK_AHEAD, (eye[2] - LOOK_HEIGHT) / math.tan(LOOK_DOWN))
+    distance = max(LOOK_AHEAD, (eye.position[2] - LOOK_HEIGHT) / math.tan(LOOK_DOWN))
     ahead = base.transform_point((distance, 0.0, 0.0))
-    target = (
-        ahead[0] + eye[0] - base.position[0],
-        ahead[1] + eye[1] - base.position[1],
-        LOOK_HEIGHT,
-    )
+    shift = np.subtract(eye.position, base.position)
+    target = (ahead[0] + shift[0], ahead[1] + shift[1], LOOK_HEIGHT)
     try:
         look_at(robot, target)
     except PlanFailure as failure:
@@ -135,14 +139,20 @@ def look_and_detect(robot: ProjectedRobot) -> list[CheckResult]:
         f"optical axis {math.degrees(off):.1f} deg off the target",
         "the camera frame must be optical (z forward) and turned by the pan-tilt or neck",
     )
-    mug = world.add_item("robot_check_mug", "mug", pose=target)
+    return [look, _detect(robot, target, distance)]
+
+
+def _detect(
+    robot: ProjectedRobot, target: tuple[float, float, float], distance: float
+) -> CheckResult:
+    """Put a mug at ``target`` [m, map] and detect it."""
+    mug = robot.world.add_item("robot_check_mug", "mug", pose=target)
     try:
         seen = detect(robot, an.object(type="mug"))
-        found = CheckResult("detect", True, f"saw {seen.get('name')} {distance:.2f} m ahead")  # type: ignore[union-attr]
+        name = seen.get("name") if not isinstance(seen, list) else seen[0].get("name")
+        return CheckResult("detect", True, f"saw {name} {distance:.2f} m ahead")
     except PlanFailure as failure:
-        found = CheckResult(
-            "detect", False, str(failure), "check the camera frame and its fields of view"
-        )
+        fix = "check the camera frame and its fields of view"
+        return CheckResult("detect", False, str(failure), fix)
     finally:
-        world.remove(mug)
-    return [look, found]
+        robot.world.remove(mug)

@@ -113,7 +113,8 @@ def find_neck(tree: ModelTree, camera: str, torso: str | None) -> Neck:
     poses = link_poses(tree.model)
     axes = [axis_in_root(tree.model, j.name, poses) for j in joints]
     if len(joints) == 1:
-        return Neck(None, (joints[0].name,), "one joint turns the camera", "a neck of one joint")
+        only = f"only {joints[0].name} turns the camera: no pan-tilt, the camera looks ahead"
+        return Neck(None, (), "one joint cannot aim a camera at a point", only)
     pan, tilt = joints
     why = "two joints turn the camera: the first pans, the second tilts"
     doubt = None

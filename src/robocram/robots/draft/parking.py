@@ -21,7 +21,7 @@ BELOW = 0.35  # [m] from the shoulder down to the parked wrist
 OUTWARD = 0.15  # [m] from the shoulder outwards (away from the body's middle)
 SAMPLES = 1500
 REFINE_ROUNDS = 4
-FLOOR_CLEARANCE = 0.05  # [m] every arm link stays this high over the root link
+FLOOR_CLEARANCE = 0.15  # [m] every arm joint stays this high over the root link (the floor)
 
 
 def _limits(model: RobotModel, joint: str) -> tuple[float, float]:
@@ -70,6 +70,7 @@ def parking_pose(
     shoulder = chain.points([0.0] * len(joints))[0]
     side = float(np.sign(shoulder[1])) if abs(shoulder[1]) > 0.05 else 0.0
     goal = shoulder + np.array((0.0, side * OUTWARD, -BELOW))
+    goal[2] = max(goal[2], 2 * FLOOR_CLEARANCE)  # an arm mounted low parks above the floor
     limits = [_limits(model, j) for j in joints]
     rng = random.Random(seed)
     best = [min(max(0.0, lo), hi) for lo, hi in limits]

@@ -1,0 +1,158 @@
+"""baxter: a robot description drafted by `robocram robot draft` from baxter.urdf.
+
+Check it with `robocram robot check baxter.py`; look at each `TODO doubt`.
+"""
+
+from __future__ import annotations
+
+import math
+
+from robocram.robots import ArmDescription, CameraDescription, FrameSpec, RobotDescription
+from robocram.robots.example_robot_data import example_robot_data_folder
+from robocram.tf import Pose
+
+URDF = example_robot_data_folder() / "baxter_description/urdf/baxter.urdf"
+
+
+def description() -> RobotDescription:
+    """The baxter description (unchecked; load_description checks it)."""
+    return RobotDescription(
+        name="baxter",
+        urdf=URDF,
+        # why: the URDF's root link: the robot's base
+        base_frame="base",
+        # why: two alike arms 1.824 m apart (left: larger y)
+        arms={
+            "right": ArmDescription(
+                name="right",
+                # why: child of right_w2, the last joint before the fingers
+                end_effector_link="right_wrist",
+                # why: right_gripper is at the fingers but its axes differ: turned to x = approach,
+                #   y = opening
+                tool_frame="right_standard_tool_frame",
+                # why: parent of the first arm joint
+                base_link="right_arm_mount",
+                joints=(
+                    "right_s0",
+                    "right_s1",
+                    "right_e0",
+                    "right_e1",
+                    "right_w0",
+                    "right_w1",
+                    "right_w2",
+                ),
+                # why: mimicked by 1 hand joint(s) (<mimic> in the URDF)
+                gripper_joints=("r_gripper_l_finger_joint",),
+                gripper_links=(
+                    "r_gripper_l_finger",
+                    "r_gripper_l_finger_tip",
+                    "r_gripper_r_finger",
+                    "r_gripper_r_finger_tip",
+                ),
+                # why: every link below the wrist: may touch what the hand grasps
+                hand_links=(
+                    "right_hand_link",
+                    "right_hand_camera_link",
+                    "right_hand_camera_axis_link",
+                    "right_hand_range_link",
+                    "right_hand_accelerometer_link",
+                    "right_gripper_base_link",
+                    "right_gripper",
+                    "r_gripper_l_finger",
+                    "r_gripper_l_finger_tip",
+                    "r_gripper_r_finger",
+                    "r_gripper_r_finger_tip",
+                ),
+                # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
+                # TODO doubt: no collision check here: `robocram robot check` drives it
+                parking={
+                    "right_s0": -1.177,
+                    "right_s1": -0.397,
+                    "right_e0": 0.413,
+                    "right_e1": 2.618,
+                    "right_w0": 0.034,
+                    "right_w1": 2.015,
+                    "right_w2": -1.109,
+                },
+                side="right",
+            ),
+            "left": ArmDescription(
+                name="left",
+                # why: child of left_w2, the last joint before the fingers
+                end_effector_link="left_wrist",
+                # why: left_gripper is at the fingers but its axes differ: turned to x = approach, y
+                #   = opening
+                tool_frame="left_standard_tool_frame",
+                # why: parent of the first arm joint
+                base_link="left_arm_mount",
+                joints=(
+                    "left_s0",
+                    "left_s1",
+                    "left_e0",
+                    "left_e1",
+                    "left_w0",
+                    "left_w1",
+                    "left_w2",
+                ),
+                # why: mimicked by 1 hand joint(s) (<mimic> in the URDF)
+                gripper_joints=("l_gripper_l_finger_joint",),
+                gripper_links=(
+                    "l_gripper_l_finger",
+                    "l_gripper_l_finger_tip",
+                    "l_gripper_r_finger",
+                    "l_gripper_r_finger_tip",
+                ),
+                # why: every link below the wrist: may touch what the hand grasps
+                hand_links=(
+                    "left_hand_link",
+                    "left_hand_camera_link",
+                    "left_hand_camera_axis_link",
+                    "left_hand_range_link",
+                    "left_hand_accelerometer_link",
+                    "left_gripper_base_link",
+                    "left_gripper",
+                    "l_gripper_l_finger",
+                    "l_gripper_l_finger_tip",
+                    "l_gripper_r_finger",
+                    "l_gripper_r_finger_tip",
+                ),
+                # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
+                # TODO doubt: no collision check here: `robocram robot check` drives it
+                parking={
+                    "left_s0": -1.195,
+                    "left_s1": -1.972,
+                    "left_e0": 2.214,
+                    "left_e1": 2.618,
+                    "left_w0": -2.677,
+                    "left_w1": -1.157,
+                    "left_w2": 2.329,
+                },
+                side="left",
+            ),
+        },
+        # why: camera frame by name (5 found, best first); optical: z looks forward; others:
+        #   left_hand_camera_link, right_hand_camera_link, left_hand_camera_axis_link
+        cameras=(
+            CameraDescription(
+                frame="head_camera_link",
+                # why: camera height over the base at the torso's limits
+                minimal_height=0.75,
+                maximal_height=0.75,
+                # TODO doubt: the URDF gives no field of view: take the sensor's
+                horizontal_fov=math.radians(60),
+                vertical_fov=math.radians(45),
+            ),
+        ),
+        extra_frames=(
+            FrameSpec(
+                name="right_standard_tool_frame",
+                parent="right_gripper",
+                pose=Pose((0.0, 0.0, 0.0), (0.0, -0.707107, 0.0, 0.707107)),
+            ),
+            FrameSpec(
+                name="left_standard_tool_frame",
+                parent="left_gripper",
+                pose=Pose((0.0, 0.0, 0.0), (0.707107, 0.0, 0.707107, 0.0)),
+            ),
+        ),
+    )

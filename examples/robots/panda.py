@@ -1,0 +1,73 @@
+"""panda: a robot description drafted by `robocram robot draft` from panda.urdf.
+
+Check it with `robocram robot check panda.py`; look at each `TODO doubt`.
+"""
+
+from __future__ import annotations
+
+from robocram.robots import ArmDescription, FrameSpec, RobotDescription
+from robocram.robots.example_robot_data import example_robot_data_folder
+from robocram.tf import Pose
+
+URDF = example_robot_data_folder() / "panda_description/urdf/panda.urdf"
+
+
+def description() -> RobotDescription:
+    """The panda description (unchecked; load_description checks it)."""
+    return RobotDescription(
+        name="panda",
+        urdf=URDF,
+        # why: the URDF's root link: the robot's base
+        base_frame="panda_link0",
+        # why: one gripper-like end
+        arms={
+            "arm": ArmDescription(
+                name="arm",
+                # why: child of panda_joint7, the last joint before the fingers
+                end_effector_link="panda_link7",
+                # why: panda_hand_tcp is at the fingers but its axes differ: turned to x = approach,
+                #   y = opening
+                tool_frame="arm_standard_tool_frame",
+                # why: parent of the first arm joint
+                base_link="panda_link0",
+                joints=(
+                    "panda_joint1",
+                    "panda_joint2",
+                    "panda_joint3",
+                    "panda_joint4",
+                    "panda_joint5",
+                    "panda_joint6",
+                    "panda_joint7",
+                ),
+                # why: mimicked by 1 hand joint(s) (<mimic> in the URDF)
+                gripper_joints=("panda_finger_joint1",),
+                gripper_links=("panda_leftfinger", "panda_rightfinger"),
+                # why: every link below the wrist: may touch what the hand grasps
+                hand_links=(
+                    "panda_link8",
+                    "panda_hand",
+                    "panda_hand_tcp",
+                    "panda_leftfinger",
+                    "panda_rightfinger",
+                ),
+                # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
+                # TODO doubt: no collision check here: `robocram robot check` drives it
+                parking={
+                    "panda_joint1": 1.732,
+                    "panda_joint2": -1.178,
+                    "panda_joint3": -2.618,
+                    "panda_joint4": -3.071,
+                    "panda_joint5": -2.897,
+                    "panda_joint6": 3.511,
+                    "panda_joint7": 2.569,
+                },
+            ),
+        },
+        extra_frames=(
+            FrameSpec(
+                name="arm_standard_tool_frame",
+                parent="panda_hand_tcp",
+                pose=Pose((0.0, 0.0, 0.0), (0.0, -0.707107, 0.0, 0.707107)),
+            ),
+        ),
+    )
