@@ -30,17 +30,8 @@ def description() -> RobotDescription:
                 # why: right_gripper is at the fingers but its axes differ: turned to x = approach,
                 #   y = opening
                 tool_frame="right_standard_tool_frame",
-                # why: parent of the first arm joint
+                # why: parent of the first arm joint; its joints down to the wrist are found at load
                 base_link="right_arm_mount",
-                joints=(
-                    "right_s0",
-                    "right_s1",
-                    "right_e0",
-                    "right_e1",
-                    "right_w0",
-                    "right_w1",
-                    "right_w2",
-                ),
                 # why: mimicked by 1 hand joint(s) (<mimic> in the URDF)
                 gripper_joints=("r_gripper_l_finger_joint",),
                 gripper_links=(
@@ -83,17 +74,8 @@ def description() -> RobotDescription:
                 # why: left_gripper is at the fingers but its axes differ: turned to x = approach, y
                 #   = opening
                 tool_frame="left_standard_tool_frame",
-                # why: parent of the first arm joint
+                # why: parent of the first arm joint; its joints down to the wrist are found at load
                 base_link="left_arm_mount",
-                joints=(
-                    "left_s0",
-                    "left_s1",
-                    "left_e0",
-                    "left_e1",
-                    "left_w0",
-                    "left_w1",
-                    "left_w2",
-                ),
                 # why: mimicked by 1 hand joint(s) (<mimic> in the URDF)
                 gripper_joints=("l_gripper_l_finger_joint",),
                 gripper_links=(

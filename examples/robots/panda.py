@@ -28,17 +28,8 @@ def description() -> RobotDescription:
                 # why: panda_hand_tcp is at the fingers but its axes differ: turned to x = approach,
                 #   y = opening
                 tool_frame="arm_standard_tool_frame",
-                # why: parent of the first arm joint
+                # why: parent of the first arm joint; its joints down to the wrist are found at load
                 base_link="panda_link0",
-                joints=(
-                    "panda_joint1",
-                    "panda_joint2",
-                    "panda_joint3",
-                    "panda_joint4",
-                    "panda_joint5",
-                    "panda_joint6",
-                    "panda_joint7",
-                ),
                 # why: mimicked by 1 hand joint(s) (<mimic> in the URDF)
                 gripper_joints=("panda_finger_joint1",),
                 gripper_links=("panda_leftfinger", "panda_rightfinger"),

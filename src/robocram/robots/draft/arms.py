@@ -9,11 +9,12 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from robocram.robots.description import ArmDescription, FrameSpec
+from robocram.robots.draft.finger_spread import opens_at_upper
 from robocram.robots.draft.hands import Hand
 from robocram.robots.draft.link_poses import link_poses
 from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.draft.parking import parking_pose
-from robocram.robots.draft.tool_frames import tool_frame
+from robocram.robots.draft.tool_frames import approach_and_opening, tool_frame
 
 SIDE_GAP = 0.1  # [m] between two alike hands' y for one to be left of the other
 
@@ -42,6 +43,12 @@ def arm_names(tree: ModelTree, hands: list[Hand]) -> tuple[list[str], str, str |
     return names, f"{len(hands)} gripper-like ends", "name the arms and give their sides"
 
 
+def _closing_upwards(tree: ModelTree, hand: Hand) -> list[str]:
+    """The gripper joints whose fingers stand closer together at the upper limit."""
+    approach, _ = approach_and_opening(tree, hand)
+    return [j for j in hand.gripper_joints if opens_at_upper(tree, hand, j, approach) is False]
+
+
 def draft_arm(tree: ModelTree, hand: Hand, name: str, torso: str | None) -> DraftedArm:
     """The arm ending in ``hand``: chain joints after the torso, tool frame, parking."""
     chain = tree.movable_ancestors(hand.end_effector_link)
@@ -66,7 +73,9 @@ def draft_arm(tree: ModelTree, hand: Hand, name: str, torso: str | None) -> Draf
     )
     why = {
         "end_effector_link": f"child of {hand.wrist_joint}, the last joint before the fingers",
-        "base_link": "parent of the first arm joint" + (" after the torso" if torso else ""),
+        "base_link": "parent of the first arm joint"
+        + (" after the torso" if torso else "")
+        + "; its joints down to the wrist are found at load",
         "tool_frame": tool.why,
         "gripper_joints": hand.why_gripper,
         "hand_links": "every link below the wrist: may touch what the hand grasps",
@@ -75,6 +84,11 @@ def draft_arm(tree: ModelTree, hand: Hand, name: str, torso: str | None) -> Draf
     doubts = {"parking": "no collision check here: `robocram robot check` drives it"}
     if hand.doubt_gripper:
         doubts["gripper_joints"] = hand.doubt_gripper
+    reversed_joints = _closing_upwards(tree, hand)
+    if reversed_joints:
+        doubts["gripper_joints"] = (
+            f"{', '.join(reversed_joints)} close(s) at the upper limit: open it at the lower one"
+        )
     if tool.doubt:
         doubts["tool_frame"] = tool.doubt
     return DraftedArm(arm, tool.added, why, doubts)

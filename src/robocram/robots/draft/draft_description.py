@@ -17,6 +17,7 @@ from robocram.robots.description import (
     FrameSpec,
     RobotDescription,
 )
+from robocram.robots.description_check import infer_arm
 from robocram.robots.draft.arms import arm_names, draft_arm
 from robocram.robots.draft.cameras import DEFAULT_HFOV, DEFAULT_VFOV, find_camera, find_neck
 from robocram.robots.draft.draft_source import draft_source
@@ -39,6 +40,7 @@ class DraftDescription:
     urdf: Path
     why: Mapping[str, str] = field(default_factory=dict)
     doubts: Mapping[str, str] = field(default_factory=dict)
+    inferred_joints: frozenset[str] = frozenset()  # arms whose joints loading infers alike
 
     def source(self, module_file: Path | None = None) -> str:
         """The description as a Python module defining ``description()``.
@@ -46,7 +48,9 @@ class DraftDescription:
         With ``module_file`` (where the text will be saved) the URDF path is written
         relative to it, so the folder can move; else absolute.
         """
-        return draft_source(self.description, self.why, self.doubts, module_file)
+        return draft_source(
+            self.description, self.why, self.doubts, module_file, self.inferred_joints
+        )
 
 
 def draft_description(urdf: str | Path, name: str | None = None) -> DraftDescription:
@@ -88,7 +92,12 @@ def draft_description(urdf: str | Path, name: str | None = None) -> DraftDescrip
         extra_frames=tuple(frames),
     )
     desc = _with_camera(tree, desc, why, doubts)
-    return DraftDescription(desc, path, why, doubts)
+    inferred = frozenset(
+        key
+        for key, arm in desc.arms.items()
+        if infer_arm(replace(arm, joints=(), links=()), model).joints == arm.joints
+    )
+    return DraftDescription(desc, path, why, doubts, inferred)
 
 
 def _camera_guess(tree: ModelTree, hands: list[str]) -> list[str]:

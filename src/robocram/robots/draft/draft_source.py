@@ -35,8 +35,10 @@ from __future__ import annotations
 
 
 class _Notes:
-    def __init__(self, why: Mapping[str, str], doubts: Mapping[str, str]) -> None:
-        self.why, self.doubts = why, doubts
+    def __init__(
+        self, why: Mapping[str, str], doubts: Mapping[str, str], inferred: frozenset[str]
+    ) -> None:
+        self.why, self.doubts, self.inferred = why, doubts, inferred
 
     def item(self, path: str, key: str, value: object) -> Item:
         comments = []
@@ -64,7 +66,8 @@ def _arm(arm: ArmDescription, notes: _Notes) -> object:
     fields: list[Item] = [Item("name", arm.name)]
     for key in ("end_effector_link", "tool_frame", "base_link"):
         fields.append(notes.item(f"{path}.{key}", key, getattr(arm, key)))
-    fields.append(Item("joints", arm.joints))
+    if arm.name not in notes.inferred:
+        fields.append(Item("joints", arm.joints))
     for key in ("gripper_joints", "gripper_links", "hand_links"):
         if getattr(arm, key):
             fields.append(notes.item(f"{path}.{key}", key, getattr(arm, key)))
@@ -153,9 +156,13 @@ def draft_source(
     why: Mapping[str, str],
     doubts: Mapping[str, str],
     module_file: Path | None = None,
+    inferred: frozenset[str] = frozenset(),
 ) -> str:
-    """The module text for ``desc`` with ``why`` and ``doubts`` as comments."""
-    notes = _Notes(why, doubts)
+    """The module text for ``desc`` with ``why`` and ``doubts`` as comments.
+
+    Arms named in ``inferred`` get no ``joints``: loading infers the same from the chain.
+    """
+    notes = _Notes(why, doubts, inferred)
     urdf, extra_import = _urdf_code(Path(desc.urdf), module_file)
     body = _body(desc, notes)
     names = [

@@ -1,0 +1,167 @@
+"""tiago_pro: a robot description drafted by `robocram robot draft` from tiago_pro.urdf.
+
+Check it with `robocram robot check tiago_pro.py`; look at each `TODO doubt`.
+"""
+
+from __future__ import annotations
+
+import math
+
+from robocram.robots import (
+    ArmDescription,
+    CameraDescription,
+    FrameSpec,
+    PanTiltDescription,
+    RobotDescription,
+)
+from robocram.robots.example_robot_data import example_robot_data_folder
+from robocram.tf import Pose
+
+URDF = example_robot_data_folder() / "tiago_pro_description/robots/tiago_pro.urdf"
+
+
+def description() -> RobotDescription:
+    """The tiago_pro description (unchecked; load_description checks it)."""
+    return RobotDescription(
+        name="tiago_pro",
+        urdf=URDF,
+        # why: the URDF's root link: the robot's base
+        base_frame="base_footprint",
+        # why: vertical prismatic joint carrying 3 of the arms and cameras
+        torso_joint="torso_lift_joint",
+        torso_link="torso_lift_link",
+        # why: two alike arms 0.882 m apart (left: larger y)
+        arms={
+            "left": ArmDescription(
+                name="left",
+                # why: child of arm_left_7_joint, the last joint before the fingers
+                end_effector_link="arm_left_7_link",
+                # why: no frame of the URDF reaches the fingers: added 0.129 m out along the
+                #   approach
+                tool_frame="left_standard_tool_frame",
+                # why: parent of the first arm joint after the torso; its joints down to the wrist
+                #   are found at load
+                base_link="torso_lift_link",
+                # why: mimicked by 5 hand joint(s) (<mimic> in the URDF)
+                # TODO doubt: gripper_left_finger_joint close(s) at the upper limit: open it at the
+                #   lower one
+                gripper_joints=("gripper_left_finger_joint",),
+                gripper_links=(
+                    "gripper_left_outer_finger_left_link",
+                    "gripper_left_inner_finger_left_link",
+                    "gripper_left_fingertip_left_link",
+                    "gripper_left_inner_finger_right_link",
+                    "gripper_left_fingertip_right_link",
+                    "gripper_left_outer_finger_right_link",
+                ),
+                # why: every link below the wrist: may touch what the hand grasps
+                hand_links=(
+                    "arm_left_tool_link",
+                    "gripper_left_base_link",
+                    "gripper_left_inner_finger_left_link",
+                    "gripper_left_fingertip_left_link",
+                    "gripper_left_outer_finger_left_link",
+                    "gripper_left_inner_finger_right_link",
+                    "gripper_left_fingertip_right_link",
+                    "gripper_left_outer_finger_right_link",
+                ),
+                # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
+                # TODO doubt: no collision check here: `robocram robot check` drives it
+                parking={
+                    "arm_left_1_joint": -0.112,
+                    "arm_left_2_joint": -2.192,
+                    "arm_left_3_joint": -0.737,
+                    "arm_left_4_joint": -2.338,
+                    "arm_left_5_joint": -2.094,
+                    "arm_left_6_joint": -1.86,
+                    "arm_left_7_joint": 2.484,
+                },
+                side="left",
+            ),
+            "right": ArmDescription(
+                name="right",
+                # why: child of arm_right_7_joint, the last joint before the fingers
+                end_effector_link="arm_right_7_link",
+                # why: no frame of the URDF reaches the fingers: added 0.129 m out along the
+                #   approach
+                tool_frame="right_standard_tool_frame",
+                # why: parent of the first arm joint after the torso; its joints down to the wrist
+                #   are found at load
+                base_link="torso_lift_link",
+                # why: mimicked by 5 hand joint(s) (<mimic> in the URDF)
+                # TODO doubt: gripper_right_finger_joint close(s) at the upper limit: open it at the
+                #   lower one
+                gripper_joints=("gripper_right_finger_joint",),
+                gripper_links=(
+                    "gripper_right_outer_finger_left_link",
+                    "gripper_right_inner_finger_left_link",
+                    "gripper_right_fingertip_left_link",
+                    "gripper_right_inner_finger_right_link",
+                    "gripper_right_fingertip_right_link",
+                    "gripper_right_outer_finger_right_link",
+                ),
+                # why: every link below the wrist: may touch what the hand grasps
+                hand_links=(
+                    "arm_right_tool_link",
+                    "gripper_right_base_link",
+                    "gripper_right_inner_finger_left_link",
+                    "gripper_right_fingertip_left_link",
+                    "gripper_right_outer_finger_left_link",
+                    "gripper_right_inner_finger_right_link",
+                    "gripper_right_fingertip_right_link",
+                    "gripper_right_outer_finger_right_link",
+                ),
+                # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
+                # TODO doubt: no collision check here: `robocram robot check` drives it
+                parking={
+                    "arm_right_1_joint": -1.42,
+                    "arm_right_2_joint": -0.516,
+                    "arm_right_3_joint": -2.031,
+                    "arm_right_4_joint": -2.072,
+                    "arm_right_5_joint": -0.175,
+                    "arm_right_6_joint": -0.496,
+                    "arm_right_7_joint": -1.656,
+                },
+                side="right",
+            ),
+        },
+        # why: camera frame by name (2 found, best first); its x looks forward (body convention):
+        #   optical frame added, z forward; others: head_front_camera_bottom_screw_frame
+        cameras=(
+            CameraDescription(
+                frame="head_front_camera_link_optical",
+                # why: camera height over the base at the torso's limits
+                minimal_height=1.16,
+                maximal_height=1.51,
+                # the head camera's Gazebo sensor: 1.211 rad wide at 640 x 480 pixels
+                horizontal_fov=1.211,
+                vertical_fov=2 * math.atan(math.tan(1.211 / 2) * 480 / 640),
+            ),
+        ),
+        # why: two joints turn the camera: the first pans, the second tilts
+        pan_tilt=PanTiltDescription(
+            pan_link="head_1_link",
+            tilt_link="head_2_link",
+            pan_joint="head_1_joint",
+            tilt_joint="head_2_joint",
+        ),
+        # why: head at zero: straight ahead
+        neck_parking={"head_1_joint": 0.0, "head_2_joint": 0.0},
+        extra_frames=(
+            FrameSpec(
+                name="left_standard_tool_frame",
+                parent="arm_left_7_link",
+                pose=Pose((0.0, 0.0, 0.129288), (0.0, -0.707107, 0.0, 0.707107)),
+            ),
+            FrameSpec(
+                name="right_standard_tool_frame",
+                parent="arm_right_7_link",
+                pose=Pose((0.0, 0.0, 0.129288), (0.707107, 0.0, 0.707107, 0.0)),
+            ),
+            FrameSpec(
+                name="head_front_camera_link_optical",
+                parent="head_front_camera_link",
+                pose=Pose((0.0, 0.0, 0.0), (-0.5, 0.5, -0.5, 0.5)),
+            ),
+        ),
+    )
