@@ -7,8 +7,13 @@ from __future__ import annotations
 
 import math
 
-from robocram.robots import ArmDescription, CameraDescription, FrameSpec, RobotDescription
-from robocram.robots.example_robot_data import example_robot_data_folder
+from robocram.robots import (
+    ArmDescription,
+    CameraDescription,
+    FrameSpec,
+    RobotDescription,
+    example_robot_data_folder,
+)
 from robocram.tf import Pose
 
 URDF = example_robot_data_folder() / "baxter_description/urdf/baxter.urdf"
@@ -32,28 +37,9 @@ def description() -> RobotDescription:
                 tool_frame="right_standard_tool_frame",
                 # why: parent of the first arm joint; its joints down to the wrist are found at load
                 base_link="right_arm_mount",
-                # why: mimicked by 1 hand joint(s) (<mimic> in the URDF)
+                # why: mimicked by 1 hand joint(s) (<mimic> in the URDF); fingers and hand links are
+                #   found at load
                 gripper_joints=("r_gripper_l_finger_joint",),
-                gripper_links=(
-                    "r_gripper_l_finger",
-                    "r_gripper_l_finger_tip",
-                    "r_gripper_r_finger",
-                    "r_gripper_r_finger_tip",
-                ),
-                # why: every link below the wrist: may touch what the hand grasps
-                hand_links=(
-                    "right_hand_link",
-                    "right_hand_camera_link",
-                    "right_hand_camera_axis_link",
-                    "right_hand_range_link",
-                    "right_hand_accelerometer_link",
-                    "right_gripper_base_link",
-                    "right_gripper",
-                    "r_gripper_l_finger",
-                    "r_gripper_l_finger_tip",
-                    "r_gripper_r_finger",
-                    "r_gripper_r_finger_tip",
-                ),
                 # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
                 # TODO doubt: no collision check here: `robocram robot check` drives it
                 parking={
@@ -76,28 +62,9 @@ def description() -> RobotDescription:
                 tool_frame="left_standard_tool_frame",
                 # why: parent of the first arm joint; its joints down to the wrist are found at load
                 base_link="left_arm_mount",
-                # why: mimicked by 1 hand joint(s) (<mimic> in the URDF)
+                # why: mimicked by 1 hand joint(s) (<mimic> in the URDF); fingers and hand links are
+                #   found at load
                 gripper_joints=("l_gripper_l_finger_joint",),
-                gripper_links=(
-                    "l_gripper_l_finger",
-                    "l_gripper_l_finger_tip",
-                    "l_gripper_r_finger",
-                    "l_gripper_r_finger_tip",
-                ),
-                # why: every link below the wrist: may touch what the hand grasps
-                hand_links=(
-                    "left_hand_link",
-                    "left_hand_camera_link",
-                    "left_hand_camera_axis_link",
-                    "left_hand_range_link",
-                    "left_hand_accelerometer_link",
-                    "left_gripper_base_link",
-                    "left_gripper",
-                    "l_gripper_l_finger",
-                    "l_gripper_l_finger_tip",
-                    "l_gripper_r_finger",
-                    "l_gripper_r_finger_tip",
-                ),
                 # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
                 # TODO doubt: no collision check here: `robocram robot check` drives it
                 parking={

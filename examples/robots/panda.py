@@ -5,8 +5,7 @@ Check it with `robocram robot check panda.py`; look at each `TODO doubt`.
 
 from __future__ import annotations
 
-from robocram.robots import ArmDescription, FrameSpec, RobotDescription
-from robocram.robots.example_robot_data import example_robot_data_folder
+from robocram.robots import ArmDescription, FrameSpec, RobotDescription, example_robot_data_folder
 from robocram.tf import Pose
 
 URDF = example_robot_data_folder() / "panda_description/urdf/panda.urdf"
@@ -30,17 +29,9 @@ def description() -> RobotDescription:
                 tool_frame="arm_standard_tool_frame",
                 # why: parent of the first arm joint; its joints down to the wrist are found at load
                 base_link="panda_link0",
-                # why: mimicked by 1 hand joint(s) (<mimic> in the URDF)
+                # why: mimicked by 1 hand joint(s) (<mimic> in the URDF); fingers and hand links are
+                #   found at load
                 gripper_joints=("panda_finger_joint1",),
-                gripper_links=("panda_leftfinger", "panda_rightfinger"),
-                # why: every link below the wrist: may touch what the hand grasps
-                hand_links=(
-                    "panda_link8",
-                    "panda_hand",
-                    "panda_hand_tcp",
-                    "panda_leftfinger",
-                    "panda_rightfinger",
-                ),
                 # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
                 # TODO doubt: no collision check here: `robocram robot check` drives it
                 parking={

@@ -11,10 +11,12 @@ from robocram.robots import (
     ArmDescription,
     CameraDescription,
     FrameSpec,
+    GripperDescription,
+    GripperJoint,
     PanTiltDescription,
     RobotDescription,
+    example_robot_data_folder,
 )
-from robocram.robots.example_robot_data import example_robot_data_folder
 from robocram.tf import Pose
 
 URDF = example_robot_data_folder() / "tiago_pro_description/robots/tiago_pro.urdf"
@@ -42,29 +44,6 @@ def description() -> RobotDescription:
                 # why: parent of the first arm joint after the torso; its joints down to the wrist
                 #   are found at load
                 base_link="torso_lift_link",
-                # why: mimicked by 5 hand joint(s) (<mimic> in the URDF)
-                # TODO doubt: gripper_left_finger_joint close(s) at the upper limit: open it at the
-                #   lower one
-                gripper_joints=("gripper_left_finger_joint",),
-                gripper_links=(
-                    "gripper_left_outer_finger_left_link",
-                    "gripper_left_inner_finger_left_link",
-                    "gripper_left_fingertip_left_link",
-                    "gripper_left_inner_finger_right_link",
-                    "gripper_left_fingertip_right_link",
-                    "gripper_left_outer_finger_right_link",
-                ),
-                # why: every link below the wrist: may touch what the hand grasps
-                hand_links=(
-                    "arm_left_tool_link",
-                    "gripper_left_base_link",
-                    "gripper_left_inner_finger_left_link",
-                    "gripper_left_fingertip_left_link",
-                    "gripper_left_outer_finger_left_link",
-                    "gripper_left_inner_finger_right_link",
-                    "gripper_left_fingertip_right_link",
-                    "gripper_left_outer_finger_right_link",
-                ),
                 # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
                 # TODO doubt: no collision check here: `robocram robot check` drives it
                 parking={
@@ -77,6 +56,11 @@ def description() -> RobotDescription:
                     "arm_left_7_joint": 2.484,
                 },
                 side="left",
+                # why: mimicked by 5 hand joint(s) (<mimic> in the URDF); its fingers stand wider at
+                #   the lower limit
+                gripper=GripperDescription(
+                    (GripperJoint("gripper_left_finger_joint", open=0.0, closed=0.802851),)
+                ),
             ),
             "right": ArmDescription(
                 name="right",
@@ -88,29 +72,6 @@ def description() -> RobotDescription:
                 # why: parent of the first arm joint after the torso; its joints down to the wrist
                 #   are found at load
                 base_link="torso_lift_link",
-                # why: mimicked by 5 hand joint(s) (<mimic> in the URDF)
-                # TODO doubt: gripper_right_finger_joint close(s) at the upper limit: open it at the
-                #   lower one
-                gripper_joints=("gripper_right_finger_joint",),
-                gripper_links=(
-                    "gripper_right_outer_finger_left_link",
-                    "gripper_right_inner_finger_left_link",
-                    "gripper_right_fingertip_left_link",
-                    "gripper_right_inner_finger_right_link",
-                    "gripper_right_fingertip_right_link",
-                    "gripper_right_outer_finger_right_link",
-                ),
-                # why: every link below the wrist: may touch what the hand grasps
-                hand_links=(
-                    "arm_right_tool_link",
-                    "gripper_right_base_link",
-                    "gripper_right_inner_finger_left_link",
-                    "gripper_right_fingertip_left_link",
-                    "gripper_right_outer_finger_left_link",
-                    "gripper_right_inner_finger_right_link",
-                    "gripper_right_fingertip_right_link",
-                    "gripper_right_outer_finger_right_link",
-                ),
                 # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
                 # TODO doubt: no collision check here: `robocram robot check` drives it
                 parking={
@@ -123,6 +84,11 @@ def description() -> RobotDescription:
                     "arm_right_7_joint": -1.656,
                 },
                 side="right",
+                # why: mimicked by 5 hand joint(s) (<mimic> in the URDF); its fingers stand wider at
+                #   the lower limit
+                gripper=GripperDescription(
+                    (GripperJoint("gripper_right_finger_joint", open=0.0, closed=0.802851),)
+                ),
             ),
         },
         # why: camera frame by name (2 found, best first); its x looks forward (body convention):

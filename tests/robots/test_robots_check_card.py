@@ -49,16 +49,27 @@ def test_card_names_each_fault_of_a_broken_description() -> None:
         card = check_robot(_broken_pr2())
     assert not card.passed
     failed = {r.name: r for r in card.failures()}
+    assert len(failed) == 3, card.render()
     parking = failed["arms['left'].parking: l_elbow_flex_joint"]
     assert "1.0 is outside the limits" in parking.detail and "within" in parking.fix
-    tool = failed["right arm: tool frame"]
-    assert "180 deg off" in tool.detail and "x points out of the hand" in tool.fix
-    camera = failed["camera backwards_optical_frame: looks ahead"]
-    assert "looks backwards" in camera.detail and "optical frame" in camera.fix
-    # the right parts still work: the left tool frame and the torso pass
-    assert card.result("left arm: tool frame").passed
-    assert card.result("torso").passed
-    assert "FAIL right arm: tool frame" in card.render()
+    tool = failed["description: arms['right'].tool_frame"]
+    assert "r_backwards_tool_frame" in tool.detail
+    camera = failed["description: cameras[0].frame"]
+    assert "backwards_optical_frame" in camera.detail and "optical frame" in camera.fix
+    assert "FAIL description: arms['right'].tool_frame" in card.render()
+
+
+def test_card_drives_what_the_checker_cannot_see() -> None:
+    """A tool frame 10 cm beside the fingers passes the checker; the grip finds it."""
+    pr2 = builtin_description("pr2")
+    aside = FrameSpec("r_aside_tool_frame", "r_gripper_tool_frame", Pose((0.0, 0.0, 0.1)))
+    arms = {"right": replace(pr2.arms["right"], tool_frame="r_aside_tool_frame")}
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        card = check_robot(replace(pr2, arms=arms, extra_frames=(aside,)))
+    assert [r.name for r in card.failures()] == ["right arm: grip"], card.render()
+    assert "between the fingertips" in card.result("right arm: grip").fix
+    assert card.result("right arm: reach").passed
 
 
 @pytest.mark.parametrize("robot", ["pr2", "hsrb", "boxy"])

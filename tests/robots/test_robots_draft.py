@@ -17,6 +17,7 @@ import numpy as np
 import pytest
 
 from robocram.cli import main
+from robocram.robot_check import check_robot
 from robocram.robots import (
     DraftDescription,
     LoadedDescription,
@@ -214,3 +215,12 @@ def test_cli_writes_a_draft_that_runs(tmp_path: Path, capsys: pytest.CaptureFixt
     desc = load_description(_run_source(out.read_text(encoding="utf-8"), out))
     assert desc.arms["arm"].gripper_joints == ("panda_finger_joint1",)
     assert desc.cameras == ()  # the Panda has no camera
+
+
+@pytest.mark.parametrize("robot", ["pr2", "hsrb", "boxy"])
+def test_builtin_robots_drafts_check_clean(robot: str) -> None:
+    """The drafts work as they are: every part drives, nothing was edited."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        card = check_robot(_draft(Path(builtin_description(robot).urdf)).description)
+    assert card.passed, card.render()

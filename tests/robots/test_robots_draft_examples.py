@@ -15,13 +15,16 @@ from types import ModuleType
 
 import pytest
 
+from robocram.plans import pick_up
+from robocram.projection import simulated_robot
 from robocram.robot_check import check_robot, description_from
 from robocram.robots import draft_description
+from robocram.scenes import tabletop_scene
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "robots"
 MAX_EDITS = 10  # lines a user may change in a draft (the promise)
 EDITS = {"baxter": 0, "panda": 0, "tiago_pro": 3}  # lines each example changed
-CHECKED_CLEAN = ("baxter", "panda")
+CHECKED_CLEAN = ("baxter", "panda", "tiago_pro")
 
 
 def _module(path: Path) -> ModuleType:
@@ -62,3 +65,19 @@ def test_example_checks_clean(name: str) -> None:
         card = check_robot(description_from(str(EXAMPLES / f"{name}.py")))
     assert card.passed, card.render()
     assert len(card.results) >= 6
+
+
+def test_pick_up_runs_unchanged_on_the_drafted_tiago_pro() -> None:
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        scene = tabletop_scene(description_from(str(EXAMPLES / "tiago_pro.py")))
+        try:
+            with simulated_robot(scene.world, scene.robot):
+                result = pick_up(scene.look_target)
+            lifted = scene.world.pose("mug-1").position[2]
+        finally:
+            scene.world.close()
+    assert result.object_name == "mug-1"
+    assert result.arm == "right"  # the right-most arm with a gripper: the scene's choice
+    # lifted by the plan's 10 cm with the gripper holding it
+    assert lifted == pytest.approx(scene.look_target.position[2] + 0.10, abs=0.02)

@@ -17,13 +17,13 @@ from robocram.projection.gripper import close_gripper, grip, open_gripper, relea
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robot_check.report_card import CheckResult
 from robocram.robots import ArmDescription
-from robocram.tf import Pose
+from robocram.tf import Pose, Vector3
 from robocram.tf import quaternion as quat
 
 APPROACH_AGREEMENT = math.cos(math.radians(30.0))  # tool x vs the wrist-to-tool direction
 MIN_OPENING = 0.005  # [m] the fingers must move apart at least this much when opening
-REACH_AHEAD = 0.65  # of the shoulder-to-wrist length: the wrist's distance ahead
-WRIST_BELOW = 0.10  # [m] the wrist below the shoulder, the tool a hand's length lower
+REACH_SHARES = (0.65, 0.5, 0.8, 0.95)  # of the shoulder-to-wrist length: the wrist ahead
+WRISTS_BELOW = (0.10, -0.10)  # [m] the wrist below the shoulder, the tool a hand lower
 PROBE_SIZE = (0.06, 0.06, 0.08)  # [m] mug-sized: grips are judged with the fingers closed
 YAWS = (0.0, math.pi / 2, math.pi, -math.pi / 2)  # [rad] tool turns about the vertical
 
@@ -109,18 +109,18 @@ def gripper(robot: ProjectedRobot, key: str, arm: ArmDescription) -> CheckResult
     return _check(name, True, f"fingers span {opened:.3f} m open, {closed:.3f} m closed", "")
 
 
-def _down(robot: ProjectedRobot, arm: ArmDescription, yaw: float) -> quat.Quaternion:
+def _down(yaw: float) -> quat.Quaternion:
     """A tool orientation with its approach axis (x) pointing down, turned by ``yaw``."""
-    del robot, arm
     pitch = quat.from_euler(0.0, math.pi / 2, 0.0)
     return quat.multiply(quat.from_euler(0.0, 0.0, yaw), pitch)
 
 
-def reach_target(robot: ProjectedRobot, arm: ArmDescription) -> tuple[float, float, float]:
-    """A point [m, map] ahead of the shoulder where the tool, pointing down, can be.
+def reach_targets(robot: ProjectedRobot, arm: ArmDescription) -> list[Vector3]:
+    """Points [m, map] ahead of the shoulder where the tool, pointing down, may be.
 
     As the tabletop scene places its mug: the wrist a share of the arm's length ahead of
-    the shoulder and a little below it, the tool a hand's length under the wrist.
+    the shoulder and a little below it, the tool a hand's length under the wrist; a few
+    shares and heights, since arms with few joints reach only some of them.
     """
     world = robot.world
     links = [*dict.fromkeys((*arm.links, arm.end_effector_link))]
@@ -128,24 +128,27 @@ def reach_target(robot: ProjectedRobot, arm: ArmDescription) -> tuple[float, flo
     length = sum(math.dist(p, q) for p, q in zip(points, points[1:], strict=False))
     hand = math.dist(points[-1], world.link_pose(robot.name, arm.tool_frame).position)
     x, y, z = points[0]
-    return (x + REACH_AHEAD * length, y, z - WRIST_BELOW - hand)
+    return [
+        (x + share * length, y, z - below - hand)
+        for below in WRISTS_BELOW
+        for share in REACH_SHARES
+    ]
 
 
 def reach_and_grip(robot: ProjectedRobot, key: str, arm: ArmDescription) -> list[CheckResult]:
     """Reach ahead, tool down; then close the gripper on a box put at the tool frame."""
-    target = reach_target(robot, arm)
     errors = []
-    for yaw in YAWS:
-        try:
-            reached = move_tcp(robot, key, Pose(target, _down(robot, arm, yaw)))
-            break
-        except PlanFailure as failure:
-            errors.append(str(failure))
-    else:
-        fix = "check the arm's joints and base_link, and that the tool frame is at the fingers"
-        return [_check(f"{key} arm: reach", False, errors[-1], fix)]
-    results = [_check(f"{key} arm: reach", True, f"tool at {_fmt(reached.position)} (map)", "")]
-    return results + [_grip(robot, key, reached)]
+    for target in reach_targets(robot, arm):
+        for yaw in YAWS:
+            try:
+                reached = move_tcp(robot, key, Pose(target, _down(yaw)))
+            except PlanFailure as failure:
+                errors.append(str(failure))
+                continue
+            detail = f"tool at {_fmt(reached.position)} (map)"
+            return [_check(f"{key} arm: reach", True, detail, ""), _grip(robot, key, reached)]
+    fix = "check the arm's joints and base_link, and that the tool frame is at the fingers"
+    return [_check(f"{key} arm: reach", False, errors[0], fix)]
 
 
 def _grip(robot: ProjectedRobot, key: str, tool: Pose) -> CheckResult:

@@ -74,7 +74,7 @@ def _camera_heights(
     results = []
     for camera, low, high in zip(robot.description.cameras, at_lower, at_upper, strict=True):
         measured = (min(low, high), max(low, high))
-        given = (camera.minimal_height, camera.maximal_height)
+        given = camera.height_range()
         if measured[1] - measured[0] < HEIGHT_TOLERANCE:  # the torso does not carry it
             ok = given[0] - HEIGHT_TOLERANCE <= measured[0] <= given[1] + HEIGHT_TOLERANCE
         else:

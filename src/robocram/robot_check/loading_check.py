@@ -11,11 +11,13 @@ from dataclasses import replace
 from robocram.robot_check.report_card import CheckResult
 from robocram.robots import (
     DescriptionCheckError,
+    Finding,
     JointValueError,
     LoadedDescription,
     RobotDescription,
     load_description,
 )
+from robocram.robots.errors import NameProblem, Problem
 
 MAX_FIXES = 50  # one per joint value out of limits; a description has fewer
 
@@ -37,15 +39,22 @@ def _clamped(desc: RobotDescription, err: JointValueError) -> tuple[RobotDescrip
     return replace(desc, arms=arms, neck_parking=neck), where
 
 
+def _problem(problem: Problem, model_name: str) -> CheckResult:
+    """One problem of the checker as a failed check: its field, what is wrong, the fix."""
+    if isinstance(problem, Finding):
+        return CheckResult(f"description: {problem.subject}", False, problem.problem, problem.fix)
+    where = problem.where if isinstance(problem, NameProblem) else "names"
+    text = problem.message(model_name)
+    return CheckResult(f"description: {where}", False, text, "use the names the URDF has")
+
+
 def load_for_check(desc: RobotDescription, results: list[CheckResult]) -> LoadedDescription | None:
     """The loaded description (values clamped into limits), or None if names are wrong."""
     for _ in range(MAX_FIXES):
         try:
             loaded = load_description(desc)
         except DescriptionCheckError as err:
-            results.append(
-                CheckResult("description", False, str(err), "use the names the URDF has")
-            )
+            results += [_problem(problem, err.model_name) for problem in err.problems]
             return None
         except JointValueError as err:
             desc, where = _clamped(desc, err)

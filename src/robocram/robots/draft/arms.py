@@ -15,6 +15,7 @@ from robocram.robots.draft.link_poses import link_poses
 from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.draft.parking import parking_pose
 from robocram.robots.draft.tool_frames import approach_and_opening, tool_frame
+from robocram.robots.gripper import GripperDescription, GripperJoint
 
 SIDE_GAP = 0.1  # [m] between two alike hands' y for one to be left of the other
 
@@ -49,6 +50,17 @@ def _closing_upwards(tree: ModelTree, hand: Hand) -> list[str]:
     return [j for j in hand.gripper_joints if opens_at_upper(tree, hand, j, approach) is False]
 
 
+def _gripper(tree: ModelTree, hand: Hand, reversed_joints: list[str]) -> GripperDescription:
+    """The gripper opening each joint at the limit where its fingers stand wider."""
+    joints = []
+    for name in hand.gripper_joints:
+        spec = tree.model.joints[name]
+        lower, upper = spec.lower or 0.0, spec.upper or 0.0
+        opened, closed = (lower, upper) if name in reversed_joints else (upper, lower)
+        joints.append(GripperJoint(name, open=opened, closed=closed))
+    return GripperDescription(tuple(joints))
+
+
 def draft_arm(tree: ModelTree, hand: Hand, name: str, torso: str | None) -> DraftedArm:
     """The arm ending in ``hand``: chain joints after the torso, tool frame, parking."""
     chain = tree.movable_ancestors(hand.end_effector_link)
@@ -59,17 +71,18 @@ def draft_arm(tree: ModelTree, hand: Hand, name: str, torso: str | None) -> Draf
     base = tree.model.joints[joints[0]].parent
     tool = tool_frame(tree, hand, name)
     parking = parking_pose(tree.model, joints, hand.end_effector_link)
+    reversed_joints = _closing_upwards(tree, hand)
+    gripper = _gripper(tree, hand, reversed_joints) if reversed_joints else None
     arm = ArmDescription(
         name=name,
         end_effector_link=hand.end_effector_link,
         tool_frame=tool.name,
         base_link=base,
         joints=joints,
-        gripper_joints=hand.gripper_joints,
-        gripper_links=hand.gripper_links,
-        hand_links=hand.hand_links,
+        gripper_joints=() if gripper else hand.gripper_joints,
         parking=parking,
         side=name if name in ("left", "right") else None,
+        gripper=gripper,
     )
     why = {
         "end_effector_link": f"child of {hand.wrist_joint}, the last joint before the fingers",
@@ -77,18 +90,13 @@ def draft_arm(tree: ModelTree, hand: Hand, name: str, torso: str | None) -> Draf
         + (" after the torso" if torso else "")
         + "; its joints down to the wrist are found at load",
         "tool_frame": tool.why,
-        "gripper_joints": hand.why_gripper,
-        "hand_links": "every link below the wrist: may touch what the hand grasps",
+        "gripper_joints": hand.why_gripper + "; fingers and hand links are found at load",
+        "gripper": f"{hand.why_gripper}; its fingers stand wider at the lower limit",
         "parking": "sampled in limits (seed 0): wrist low beside the shoulder, out of view",
     }
     doubts = {"parking": "no collision check here: `robocram robot check` drives it"}
     if hand.doubt_gripper:
         doubts["gripper_joints"] = hand.doubt_gripper
-    reversed_joints = _closing_upwards(tree, hand)
-    if reversed_joints:
-        doubts["gripper_joints"] = (
-            f"{', '.join(reversed_joints)} close(s) at the upper limit: open it at the lower one"
-        )
     if tool.doubt:
         doubts["tool_frame"] = tool.doubt
     return DraftedArm(arm, tool.added, why, doubts)

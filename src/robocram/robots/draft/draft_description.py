@@ -24,8 +24,10 @@ from robocram.robots.draft.draft_source import draft_source
 from robocram.robots.draft.hands import find_hands
 from robocram.robots.draft.link_poses import within_limits
 from robocram.robots.draft.model_tree import ModelTree
+from robocram.robots.draft.parking import neck_pose
 from robocram.robots.draft.torso import find_torso
 from robocram.robots.robot_model import RobotModel
+from robocram.tf import Pose
 
 
 @dataclass(frozen=True)
@@ -137,7 +139,8 @@ def _with_camera(
     looked_from = camera.added.parent if camera.added else camera.frame
     neck = find_neck(tree, looked_from, desc.torso_joint)
     _note(why, doubts, "pan_tilt", neck.why, neck.doubt)
-    parking = {j: within_limits(tree.model, j, 0.0) for j in neck.arm_joints}
+    offset = camera.added.pose if camera.added else Pose()
+    parking = neck_pose(tree.model, neck.arm_joints, looked_from, offset) if neck.arm_joints else {}
     if neck.pan_tilt is not None:
         pt = neck.pan_tilt
         parking = {j: within_limits(tree.model, j, 0.0) for j in (pt.pan_joint, pt.tilt_joint)}
@@ -153,7 +156,7 @@ def _with_camera(
             parking=parking,
         )
         why["arms.neck"] = "the joints between torso and camera form an arm that aims it"
-        doubts["neck_parking"] = "zero joints: choose a pose where the camera looks ahead, down"
+        why["neck_parking"] = "sampled in limits (seed 0): the camera looks ahead, 30 deg down"
     return replace(
         desc,
         arms=arms,

@@ -22,6 +22,7 @@ from robocram.robots.description import (
 from robocram.robots.draft.source_writer import WIDTH, Call, Code, Item, call, quoted, render
 from robocram.robots.errors import DescriptionError
 from robocram.robots.example_robot_data import example_robot_data_folder
+from robocram.robots.gripper import GripperDescription
 from robocram.tf import Pose
 
 _HEADER = '''"""{name}: a robot description drafted by `robocram robot draft` from {urdf}.
@@ -68,13 +69,22 @@ def _arm(arm: ArmDescription, notes: _Notes) -> object:
         fields.append(notes.item(f"{path}.{key}", key, getattr(arm, key)))
     if arm.name not in notes.inferred:
         fields.append(Item("joints", arm.joints))
-    for key in ("gripper_joints", "gripper_links", "hand_links"):
-        if getattr(arm, key):
-            fields.append(notes.item(f"{path}.{key}", key, getattr(arm, key)))
+    if arm.gripper_joints:
+        fields.append(notes.item(f"{path}.gripper_joints", "gripper_joints", arm.gripper_joints))
     fields.append(notes.item(f"{path}.parking", "parking", dict(arm.parking)))
     if arm.side is not None:
         fields.append(Item("side", arm.side))
+    if arm.gripper is not None:
+        fields.append(notes.item(f"{path}.gripper", "gripper", _gripper(arm.gripper)))
     return call("ArmDescription", *fields)
+
+
+def _gripper(gripper: GripperDescription) -> object:
+    joints = tuple(
+        call("GripperJoint", j.name, open=round(j.open, 6), closed=round(j.closed, 6))
+        for j in gripper.joints
+    )
+    return call("GripperDescription", joints)
 
 
 def _camera(camera: CameraDescription, notes: _Notes) -> object:
@@ -103,21 +113,18 @@ def _pan_tilt(unit: PanTiltDescription) -> object:
     )
 
 
-def _urdf_code(urdf: Path, module_file: Path | None) -> tuple[str, str]:
-    """The ``URDF = ...`` expression and the import it needs."""
+def _urdf_code(urdf: Path, module_file: Path | None) -> str:
+    """The ``URDF = ...`` expression."""
     try:
         inside = urdf.relative_to(example_robot_data_folder())
     except (ValueError, DescriptionError):
         inside = None
     if inside is not None:
-        return (
-            f"example_robot_data_folder() / {quoted(inside.as_posix())}",
-            "from robocram.robots.example_robot_data import example_robot_data_folder\n",
-        )
+        return f"example_robot_data_folder() / {quoted(inside.as_posix())}"
     if module_file is not None:
         relative = os.path.relpath(urdf, Path(module_file).resolve().parent)
-        return f"Path(__file__).resolve().parent / {quoted(Path(relative).as_posix())}", ""
-    return f"Path({quoted(urdf.as_posix())})", ""
+        return f"Path(__file__).resolve().parent / {quoted(Path(relative).as_posix())}"
+    return f"Path({quoted(urdf.as_posix())})"
 
 
 def _body(desc: RobotDescription, notes: _Notes) -> object:
@@ -163,7 +170,8 @@ def draft_source(
     Arms named in ``inferred`` get no ``joints``: loading infers the same from the chain.
     """
     notes = _Notes(why, doubts, inferred)
-    urdf, extra_import = _urdf_code(Path(desc.urdf), module_file)
+    urdf = _urdf_code(Path(desc.urdf), module_file)
+    data_folder = urdf.startswith("example_robot_data_folder")
     body = _body(desc, notes)
     names = [
         name
@@ -171,8 +179,11 @@ def draft_source(
             ("ArmDescription", bool(desc.arms)),
             ("CameraDescription", bool(desc.cameras)),
             ("FrameSpec", bool(desc.extra_frames)),
+            ("GripperDescription", any(a.gripper for a in desc.arms.values())),
+            ("GripperJoint", any(a.gripper for a in desc.arms.values())),
             ("PanTiltDescription", desc.pan_tilt is not None),
             ("RobotDescription", True),
+            ("example_robot_data_folder", data_folder),
         )
         if used
     ]
@@ -182,7 +193,6 @@ def draft_source(
     standard += ["from pathlib import Path"] if urdf.startswith("Path(") else []
     text += "".join(f"{line}\n" for line in standard) + ("\n" if standard else "")
     text += _import_line("robocram.robots", names)
-    text += extra_import
     text += _import_line("robocram.tf", ["Pose"]) if desc.extra_frames else ""
     text += f"\nURDF = {urdf}\n\n\n"
     text += "def description() -> RobotDescription:\n"

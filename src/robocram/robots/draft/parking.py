@@ -10,17 +10,19 @@ from __future__ import annotations
 
 import math
 import random
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 import numpy as np
 
 from robocram.robots.draft.link_poses import joint_motion, link_poses
 from robocram.robots.robot_model import RobotModel
+from robocram.tf import Pose
 
 BELOW = 0.35  # [m] from the shoulder down to the parked wrist
 OUTWARD = 0.15  # [m] from the shoulder outwards (away from the body's middle)
 SAMPLES = 1500
 REFINE_ROUNDS = 4
+LOOK_DOWN = math.radians(30.0)  # [rad] a parked neck holds the camera looking this far down
 FLOOR_CLEARANCE = 0.15  # [m] every arm joint stays this high over the root link (the floor)
 
 
@@ -40,7 +42,8 @@ class _ArmChain:
         self.base = link_poses(model)[model.joints[joints[0]].parent]
         self.chain = model.chain(model.joints[joints[0]].parent, wrist)
 
-    def points(self, values: Sequence[float]) -> list[np.ndarray]:
+    def poses(self, values: Sequence[float]) -> list[Pose]:
+        """The pose of each link along the chain in the root link, for ``values``."""
         by_name = dict(zip(self.joints, values, strict=True))
         pose, found = self.base, []
         for joint in self.chain:
@@ -48,8 +51,12 @@ class _ArmChain:
             value = by_name.get(joint.name, 0.0)
             if joint.movable and value:
                 pose = pose * joint_motion(joint.axis, joint.type, value)
-            found.append(np.asarray(pose.position))
+            found.append(pose)
         return found
+
+    def points(self, values: Sequence[float]) -> list[np.ndarray]:
+        """The position of each link along the chain [m]."""
+        return [np.asarray(pose.position) for pose in self.poses(values)]
 
 
 def _cost(chain: _ArmChain, values: Sequence[float], goal: np.ndarray, side: float) -> float:
@@ -71,24 +78,56 @@ def parking_pose(
     side = float(np.sign(shoulder[1])) if abs(shoulder[1]) > 0.05 else 0.0
     goal = shoulder + np.array((0.0, side * OUTWARD, -BELOW))
     goal[2] = max(goal[2], 2 * FLOOR_CLEARANCE)  # an arm mounted low parks above the floor
+    return _search(model, joints, lambda values: _cost(chain, values, goal, side), seed)
+
+
+def neck_pose(
+    model: RobotModel,
+    joints: Sequence[str],
+    camera: str,
+    offset: Pose | None = None,
+    seed: int = 0,
+) -> dict[str, float]:
+    """Neck joint values [rad] within limits that hold the optical frame looking ahead.
+
+    Ahead is :data:`LOOK_DOWN` below the root link's x, with the image's x to the right;
+    ``offset`` is the optical frame's pose in ``camera`` (one added in code).
+    """
+    chain = _ArmChain(model, joints, camera)
+    wanted = np.array((math.cos(LOOK_DOWN), 0.0, -math.sin(LOOK_DOWN)))
+
+    def cost(values: Sequence[float]) -> float:
+        axes = (chain.poses(values)[-1] * (offset or Pose())).matrix()[:3, :3]
+        return float(2.0 - axes[:, 2] @ wanted - 0.5 * (axes[:, 0] @ (0.0, -1.0, 0.0)))
+
+    return _search(model, joints, cost, seed)
+
+
+def _search(
+    model: RobotModel,
+    joints: Sequence[str],
+    cost: Callable[[Sequence[float]], float],
+    seed: int,
+) -> dict[str, float]:
+    """Seeded sampling within the limits, then coordinate descent on ``cost``."""
     limits = [_limits(model, j) for j in joints]
     rng = random.Random(seed)
     best = [min(max(0.0, lo), hi) for lo, hi in limits]
-    best_cost = _cost(chain, best, goal, side)
+    best_cost = cost(best)
     for _ in range(SAMPLES):
         values = [rng.uniform(lo, hi) for lo, hi in limits]
-        cost = _cost(chain, values, goal, side)
-        if cost < best_cost:
-            best, best_cost = values, cost
+        value = cost(values)
+        if value < best_cost:
+            best, best_cost = values, value
     step = 0.2
     for _ in range(REFINE_ROUNDS):
         for i, (lo, hi) in enumerate(limits):
             for delta in (-step, step):
                 trial = list(best)
                 trial[i] = min(max(trial[i] + delta, lo), hi)
-                cost = _cost(chain, trial, goal, side)
-                if cost < best_cost:
-                    best, best_cost = trial, cost
+                value = cost(trial)
+                if value < best_cost:
+                    best, best_cost = trial, value
         step /= 2
     return {j: _rounded_inside(v, lim) for j, v, lim in zip(joints, best, limits, strict=True)}
 
