@@ -28,17 +28,13 @@ PROBE_SIZE = (0.06, 0.06, 0.08)  # [m] mug-sized: grips are judged with the fing
 YAWS = (0.0, math.pi / 2, math.pi, -math.pi / 2)  # [rad] tool turns about the vertical
 
 
-def _check(name: str, passed: bool, detail: str, fix: str) -> CheckResult:
-    return CheckResult(name, passed, detail, fix)
-
-
 def parking(robot: ProjectedRobot, key: str, arm: ArmDescription) -> CheckResult:
     """The arm reaches its parking pose without touching the floor."""
     name = f"{key} arm: parking"
     try:
         move_joints(robot, key, dict(arm.parking))
     except PlanFailure as failure:
-        return _check(name, False, str(failure), f"parking values of arms[{key!r}] in limits")
+        return CheckResult(name, False, str(failure), f"parking values of arms[{key!r}] in limits")
     floors = [o for o in robot.world.objects() if o.type == "floor"]
     low = [
         p.link_a
@@ -47,8 +43,10 @@ def parking(robot: ProjectedRobot, key: str, arm: ArmDescription) -> CheckResult
         if p.link_a in arm.links or p.link_a in arm.hand_links
     ]
     if low:
-        return _check(name, False, f"{sorted(set(low))} touch the floor", "park the arm higher")
-    return _check(name, True, f"{len(arm.parking)} joints set", "")
+        return CheckResult(
+            name, False, f"{sorted(set(low))} touch the floor", "park the arm higher"
+        )
+    return CheckResult(name, True, f"{len(arm.parking)} joints set", "")
 
 
 def tool_frame(robot: ProjectedRobot, key: str, arm: ArmDescription) -> CheckResult:
@@ -58,7 +56,7 @@ def tool_frame(robot: ProjectedRobot, key: str, arm: ArmDescription) -> CheckRes
     tool = robot.world.link_pose(robot.name, arm.tool_frame)
     out = np.subtract(tool.position, wrist.position)
     if np.linalg.norm(out) < 0.02:
-        return _check(
+        return CheckResult(
             name,
             False,
             f"{arm.tool_frame} is {np.linalg.norm(out):.3f} m from the wrist",
@@ -68,13 +66,13 @@ def tool_frame(robot: ProjectedRobot, key: str, arm: ArmDescription) -> CheckRes
     agreement = float(x_axis @ out / np.linalg.norm(out))
     if agreement < APPROACH_AGREEMENT:
         angle = math.degrees(math.acos(max(-1.0, min(1.0, agreement))))
-        return _check(
+        return CheckResult(
             name,
             False,
             f"{arm.tool_frame}'s x is {angle:.0f} deg off the wrist-to-tool direction",
             "turn the tool frame (a FrameSpec) so that x points out of the hand",
         )
-    return _check(name, True, f"{arm.tool_frame}: x points out of the hand", "")
+    return CheckResult(name, True, f"{arm.tool_frame}: x points out of the hand", "")
 
 
 def _finger_span(robot: ProjectedRobot, arm: ArmDescription) -> float:
@@ -98,15 +96,16 @@ def gripper(robot: ProjectedRobot, key: str, arm: ArmDescription) -> CheckResult
         closed = (close_gripper(robot, key), _finger_span(robot, arm))[1]
         open_gripper(robot, key)
     except PlanFailure as failure:
-        return _check(name, False, str(failure), f"check gripper_joints of arms[{key!r}]")
+        return CheckResult(name, False, str(failure), f"check gripper_joints of arms[{key!r}]")
     if opened - closed < MIN_OPENING:
-        return _check(
+        return CheckResult(
             name,
             False,
             f"the fingers span {opened:.3f} m open and {closed:.3f} m closed",
-            "list the joints that move the fingers (open at the upper limit) in gripper_joints",
+            "give the arm a gripper (GripperDescription) opening its joints where the fingers "
+            "part, or list the finger joints in gripper_joints",
         )
-    return _check(name, True, f"fingers span {opened:.3f} m open, {closed:.3f} m closed", "")
+    return CheckResult(name, True, f"fingers span {opened:.3f} m open, {closed:.3f} m closed", "")
 
 
 def _down(yaw: float) -> quat.Quaternion:
@@ -146,9 +145,9 @@ def reach_and_grip(robot: ProjectedRobot, key: str, arm: ArmDescription) -> list
                 errors.append(str(failure))
                 continue
             detail = f"tool at {_fmt(reached.position)} (map)"
-            return [_check(f"{key} arm: reach", True, detail, ""), _grip(robot, key, reached)]
+            return [CheckResult(f"{key} arm: reach", True, detail, ""), _grip(robot, key, reached)]
     fix = "check the arm's joints and base_link, and that the tool frame is at the fingers"
-    return [_check(f"{key} arm: reach", False, errors[0], fix)]
+    return [CheckResult(f"{key} arm: reach", False, errors[0], fix)]
 
 
 def _grip(robot: ProjectedRobot, key: str, tool: Pose) -> CheckResult:
@@ -157,10 +156,10 @@ def _grip(robot: ProjectedRobot, key: str, tool: Pose) -> CheckResult:
     try:
         open_gripper(robot, key)
         held = grip(robot, key)
-        return _check(name, True, f"closed on {held} at the tool frame", "")
+        return CheckResult(name, True, f"closed on {held} at the tool frame", "")
     except PlanFailure as failure:
         fix = "put the tool frame between the fingertips (where an object is held)"
-        return _check(name, False, str(failure), fix)
+        return CheckResult(name, False, str(failure), fix)
     finally:
         release(robot, key)
         robot.world.remove(probe)
