@@ -5,8 +5,6 @@ Check it with `robocram robot check tiago_pro.py`; look at each `TODO doubt`.
 
 from __future__ import annotations
 
-import math
-
 from robocram.robots import (
     ArmDescription,
     CameraDescription,
@@ -99,9 +97,10 @@ def description() -> RobotDescription:
                 # why: camera height over the base at the torso's limits
                 minimal_height=1.16,
                 maximal_height=1.51,
-                # the head camera's Gazebo sensor: 1.211 rad wide at 640 x 480 pixels
-                horizontal_fov=1.211,
-                vertical_fov=2 * math.atan(math.tan(1.211 / 2) * 480 / 640),
+                # why: the URDF's Gazebo sensor 'head_front_cameracolor' on head_front_camera_link
+                #   at 640 x 480 pixels
+                horizontal_fov=1.2113,
+                vertical_fov=0.958,
             ),
         ),
         # why: two joints turn the camera: the first pans, the second tilts

@@ -126,6 +126,11 @@ def test_pr2_draft_is_the_builtin_description() -> None:
     assert drafted.torso_joint == builtin.torso_joint == "torso_lift_joint"
     assert drafted.pan_tilt == builtin.pan_tilt
     assert drafted.cameras[0].frame == builtin.cameras[0].frame == "wide_stereo_optical_frame"
+    # fields of view from the URDF's Gazebo sensor: 90 degrees at 640 x 480 pixels
+    for field in ("horizontal_fov", "vertical_fov"):
+        assert getattr(drafted.cameras[0], field) == pytest.approx(
+            getattr(builtin.cameras[0], field), abs=1e-4
+        )
     for field in ("minimal_height", "maximal_height"):
         assert getattr(drafted.cameras[0], field) == pytest.approx(
             getattr(builtin.cameras[0], field), abs=5e-3

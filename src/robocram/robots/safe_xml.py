@@ -18,12 +18,13 @@ from robocram.robots.errors import UrdfError
 
 @dataclass
 class XmlNode:
-    """One XML element with its attributes, children and the line it starts on."""
+    """One XML element with its attributes, children, text and the line it starts on."""
 
     tag: str
     attrib: dict[str, str]
     line: int
     children: list[XmlNode] = field(default_factory=list)
+    text: str = ""  # the character data directly inside the element
 
     def find(self, tag: str) -> XmlNode | None:
         """First child with this tag, or ``None``."""
@@ -53,6 +54,10 @@ class _Builder:
 
     def end(self, tag: str) -> None:
         self.stack.pop()
+
+    def chars(self, data: str) -> None:
+        if self.stack:
+            self.stack[-1].text += data
 
     def refuse_dtd(self, *args: object) -> int:
         raise UrdfError(
@@ -94,6 +99,7 @@ def parse_xml(text: str, source: str | Path) -> XmlNode:
     builder = _Builder(parser, source)
     parser.StartElementHandler = builder.start
     parser.EndElementHandler = builder.end
+    parser.CharacterDataHandler = builder.chars
     parser.StartDoctypeDeclHandler = builder.refuse_dtd
     parser.EntityDeclHandler = builder.refuse_dtd
     parser.ExternalEntityRefHandler = builder.refuse_dtd

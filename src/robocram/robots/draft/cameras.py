@@ -9,11 +9,13 @@ between the torso and the camera are a pan-tilt unit; more are a neck arm.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
 
 from robocram.robots.description import FrameSpec, PanTiltDescription
+from robocram.robots.draft.camera_sensors import CameraSensor, sensor_for
 from robocram.robots.draft.link_poses import axis_in_root, link_poses
 from robocram.robots.draft.model_tree import ModelTree
 from robocram.tf import Pose
@@ -37,6 +39,7 @@ class Camera:
     why: str
     others: tuple[str, ...]
     doubt: str | None = None
+    sensor: CameraSensor | None = None  # the Gazebo sensor giving its fields of view
 
 
 def _score(tree: ModelTree, link: str, hands: list[str]) -> float:
@@ -58,8 +61,13 @@ def camera_frames(tree: ModelTree, hands: list[str]) -> list[str]:
     return sorted(found, key=lambda link: -_score(tree, link, hands))
 
 
-def find_camera(tree: ModelTree, hands: list[str], torso: str | None) -> Camera | None:
-    """The robot's main camera with heights at the torso's limits, or None."""
+def find_camera(
+    tree: ModelTree, hands: list[str], torso: str | None, sensors: Sequence[CameraSensor] = ()
+) -> Camera | None:
+    """The robot's main camera with heights at the torso's limits, or None.
+
+    ``sensors`` (the URDF's Gazebo cameras) give its fields of view where one images it.
+    """
     frames = camera_frames(tree, hands)
     if not frames:
         return None
@@ -76,7 +84,8 @@ def find_camera(tree: ModelTree, hands: list[str], torso: str | None) -> Camera 
         doubt = "neither its z nor its x looks forward at zero joints; add an optical frame"
     low, high = _heights(tree, frame, torso)
     camera_frame = added.name if added is not None else frame
-    return Camera(camera_frame, added, low, high, why, others, doubt)
+    sensor = sensor_for(frame, tree.rigid_group(frame), sensors)
+    return Camera(camera_frame, added, low, high, why, others, doubt, sensor)
 
 
 def _heights(tree: ModelTree, frame: str, torso: str | None) -> tuple[float, float]:

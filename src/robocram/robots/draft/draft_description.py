@@ -19,6 +19,7 @@ from robocram.robots.description import (
 )
 from robocram.robots.description_check import infer_arm
 from robocram.robots.draft.arms import arm_names, draft_arm
+from robocram.robots.draft.camera_sensors import camera_sensors
 from robocram.robots.draft.cameras import DEFAULT_HFOV, DEFAULT_VFOV, find_camera, find_neck
 from robocram.robots.draft.draft_source import draft_source
 from robocram.robots.draft.hands import find_hands
@@ -120,21 +121,28 @@ def _with_camera(
 ) -> RobotDescription:
     """``desc`` with its camera, heights at the torso limits, and pan-tilt or neck arm."""
     hands = [arm.end_effector_link for arm in desc.arms.values()]
-    camera = find_camera(tree, hands, desc.torso_joint)
+    camera = find_camera(tree, hands, desc.torso_joint, camera_sensors(Path(desc.urdf)))
     if camera is None:
         doubts["cameras"] = "no camera frame found by name: add one to detect objects"
         return desc
     others = f"; others: {', '.join(camera.others)}" if camera.others else ""
     _note(why, doubts, "cameras.0", camera.why + others, camera.doubt)
     why["cameras.0.minimal_height"] = "camera height over the base at the torso's limits"
-    doubts["cameras.0.horizontal_fov"] = "the URDF gives no field of view: take the sensor's"
+    sensor = camera.sensor
+    if sensor is None:
+        doubts["cameras.0.horizontal_fov"] = "the URDF gives no field of view: take the sensor's"
+    else:
+        pixels = f" at {sensor.size[0]} x {sensor.size[1]} pixels" if sensor.size else ""
+        why["cameras.0.horizontal_fov"] = (
+            f"the URDF's Gazebo sensor {sensor.name!r} on {sensor.reference}{pixels}"
+        )
     frames = desc.extra_frames + ((camera.added,) if camera.added else ())
     spec = CameraDescription(
         frame=camera.frame,
         minimal_height=camera.minimal_height,
         maximal_height=camera.maximal_height,
-        horizontal_fov=DEFAULT_HFOV,
-        vertical_fov=DEFAULT_VFOV,
+        horizontal_fov=DEFAULT_HFOV if sensor is None else round(sensor.horizontal_fov, 4),
+        vertical_fov=DEFAULT_VFOV if sensor is None else round(sensor.vertical_fov, 4),
     )
     looked_from = camera.added.parent if camera.added else camera.frame
     neck = find_neck(tree, looked_from, desc.torso_joint)

@@ -87,8 +87,15 @@ def _gripper(gripper: GripperDescription) -> object:
     return call("GripperDescription", joints)
 
 
+def _fov(value: float) -> object:
+    """A field of view [rad]: whole degrees read as ``math.radians(d)``, else the number."""
+    degrees = math.degrees(value)
+    return (
+        Code(f"math.radians({round(degrees)})") if abs(degrees - round(degrees)) < 1e-9 else value
+    )
+
+
 def _camera(camera: CameraDescription, notes: _Notes) -> object:
-    degrees = (round(math.degrees(camera.horizontal_fov)), round(math.degrees(camera.vertical_fov)))
     return call(
         "CameraDescription",
         frame=camera.frame,
@@ -97,9 +104,9 @@ def _camera(camera: CameraDescription, notes: _Notes) -> object:
         ),
         maximal_height=camera.maximal_height,
         horizontal_fov=notes.item(
-            "cameras.0.horizontal_fov", "horizontal_fov", Code(f"math.radians({degrees[0]})")
+            "cameras.0.horizontal_fov", "horizontal_fov", _fov(camera.horizontal_fov)
         ),
-        vertical_fov=Code(f"math.radians({degrees[1]})"),
+        vertical_fov=_fov(camera.vertical_fov),
     )
 
 
@@ -189,7 +196,8 @@ def draft_source(
     ]
     module = module_file.name if module_file is not None else "THIS_FILE.py"
     text = _HEADER.format(name=desc.name, urdf=Path(desc.urdf).name, module=module)
-    standard = ["import math"] if desc.cameras else []
+    uses_math = any("math." in repr(_fov(c.horizontal_fov)) for c in desc.cameras[:1])
+    standard = ["import math"] if uses_math else []
     standard += ["from pathlib import Path"] if urdf.startswith("Path(") else []
     text += "".join(f"{line}\n" for line in standard) + ("\n" if standard else "")
     text += _import_line("robocram.robots", names)

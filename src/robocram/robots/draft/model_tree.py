@@ -48,6 +48,15 @@ class ModelTree:
                 found += self.fixed_closure(joint.child)
         return found
 
+    def rigid_group(self, link: str) -> set[str]:
+        """Every link fixed to ``link`` (above or below it) through fixed joints only."""
+        top = link
+        joint = self.model.parent_joint(top)
+        while joint is not None and joint.type == "fixed":
+            top = joint.parent
+            joint = self.model.parent_joint(top)
+        return set(self.fixed_closure(top))
+
     def movable_roots(self, link: str) -> list[Joint]:
         """The first movable joints below ``link``: those reached through fixed joints only."""
         return [
