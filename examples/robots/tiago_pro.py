@@ -54,8 +54,8 @@ def description() -> RobotDescription:
                     "arm_left_7_joint": 2.484,
                 },
                 side="left",
-                # why: mimicked by 5 hand joint(s) (<mimic> in the URDF); its fingers stand wider at
-                #   the lower limit
+                # why: mimicked by 5 hand joint(s) (<mimic> in the URDF); open at the lower limit,
+                #   where the fingers part
                 gripper=GripperDescription(
                     (GripperJoint("gripper_left_finger_joint", open=0.0, closed=0.802851),)
                 ),
@@ -82,8 +82,8 @@ def description() -> RobotDescription:
                     "arm_right_7_joint": -1.656,
                 },
                 side="right",
-                # why: mimicked by 5 hand joint(s) (<mimic> in the URDF); its fingers stand wider at
-                #   the lower limit
+                # why: mimicked by 5 hand joint(s) (<mimic> in the URDF); open at the lower limit,
+                #   where the fingers part
                 gripper=GripperDescription(
                     (GripperJoint("gripper_right_finger_joint", open=0.0, closed=0.802851),)
                 ),

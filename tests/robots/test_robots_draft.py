@@ -96,14 +96,13 @@ def test_every_guess_says_why_and_doubts_are_marked() -> None:
     draft = _draft(ROBOTS / "tiago_description" / "robots" / "tiago.urdf")
     text = draft.source()
     assert text.count("# why:") >= 10
-    # the Hey5 hand has no <mimic>: 33 hand joints move with none of the 3 finger motors
-    assert draft.doubts["arms.arm.gripper_joints"].startswith("33 more hand joint(s)")
-    assert "# TODO doubt: 33 more hand joint(s)" in text
-    assert draft.description.arms["arm"].gripper_joints == (
-        "hand_thumb_joint",
-        "hand_index_joint",
-        "hand_mrl_joint",
-    )
+    # The Hey5 hand has no <mimic>: its 29 joints straight at 0 that curl to their upper
+    # limit are the gripper, opening at 0; the 3 motors and 4 spreading joints are doubts.
+    gripper = draft.description.arms["arm"].gripper
+    assert gripper is not None and len(gripper.joints) == 29
+    assert all(j.open == 0.0 < j.closed for j in gripper.joints)
+    assert draft.doubts["arms.arm.gripper"].startswith("7 more hand joint(s)")
+    assert "# TODO doubt: 7 more hand joint(s)" in text
 
 
 def test_draft_is_laid_out_as_ruff_formats_it(tmp_path: Path) -> None:

@@ -23,8 +23,8 @@ from robocram.scenes import tabletop_scene
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "robots"
 MAX_EDITS = 10  # lines a user may change in a draft (the issue's promise)
-EDITS = {"baxter": 0, "panda": 0, "tiago_pro": 0}  # lines each example changed
-CHECKED_CLEAN = ("baxter", "panda", "tiago_pro")
+EDITS = {"baxter": 0, "panda": 0, "tiago": 0, "tiago_pro": 0}  # lines each example changed
+CHECKED_CLEAN = ("baxter", "panda", "tiago", "tiago_pro")
 
 
 def _module(path: Path) -> ModuleType:
@@ -67,17 +67,18 @@ def test_example_checks_clean(name: str) -> None:
     assert len(card.results) >= 6
 
 
-def test_pick_up_runs_unchanged_on_the_drafted_tiago_pro() -> None:
+@pytest.mark.parametrize(("name", "arm"), [("tiago_pro", "right"), ("tiago", "arm")])
+def test_pick_up_runs_unchanged_on_drafted_robots(name: str, arm: str) -> None:
+    """The right-most arm with a gripper picks: the tabletop scene puts the mug before it."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        scene = tabletop_scene(description_from(str(EXAMPLES / "tiago_pro.py")))
+        scene = tabletop_scene(description_from(str(EXAMPLES / f"{name}.py")))
         try:
             with simulated_robot(scene.world, scene.robot):
                 result = pick_up(scene.look_target)
             lifted = scene.world.pose("mug-1").position[2]
         finally:
             scene.world.close()
-    assert result.object_name == "mug-1"
-    assert result.arm == "right"  # the right-most arm with a gripper: the scene's choice
+    assert (result.object_name, result.arm) == ("mug-1", arm)
     # lifted by the plan's 10 cm with the gripper holding it
     assert lifted == pytest.approx(scene.look_target.position[2] + 0.10, abs=0.02)

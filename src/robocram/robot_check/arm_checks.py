@@ -24,7 +24,7 @@ APPROACH_AGREEMENT = math.cos(math.radians(30.0))  # tool x vs the wrist-to-tool
 MIN_OPENING = 0.005  # [m] the fingers must move apart at least this much when opening
 REACH_SHARES = (0.65, 0.5, 0.8, 0.95)  # of the shoulder-to-wrist length: the wrist ahead
 WRISTS_BELOW = (0.10, -0.10)  # [m] the wrist below the shoulder, the tool a hand lower
-PROBE_SIZE = (0.06, 0.06, 0.08)  # [m] mug-sized: grips are judged with the fingers closed
+GRASP_HEIGHT = 0.05  # [m] above a mug's bottom, where the pick-up plan grasps it
 YAWS = (0.0, math.pi / 2, math.pi, -math.pi / 2)  # [rad] tool turns about the vertical
 
 
@@ -135,7 +135,7 @@ def reach_targets(robot: ProjectedRobot, arm: ArmDescription) -> list[Vector3]:
 
 
 def reach_and_grip(robot: ProjectedRobot, key: str, arm: ArmDescription) -> list[CheckResult]:
-    """Reach ahead, tool down; then close the gripper on a box put at the tool frame."""
+    """Reach ahead, tool down; then close the gripper on a mug put where plans grasp one."""
     errors = []
     for target in reach_targets(robot, arm):
         for yaw in YAWS:
@@ -152,7 +152,8 @@ def reach_and_grip(robot: ProjectedRobot, key: str, arm: ArmDescription) -> list
 
 def _grip(robot: ProjectedRobot, key: str, tool: Pose) -> CheckResult:
     name = f"{key} arm: grip"
-    probe = robot.world.add_box("robot_check_probe", PROBE_SIZE, pose=tool, mass=0.1)
+    x, y, z = tool.position
+    probe = robot.world.add_item("robot_check_mug", "mug", pose=(x, y, z - GRASP_HEIGHT))
     try:
         open_gripper(robot, key)
         held = grip(robot, key)

@@ -71,7 +71,9 @@ def draft_arm(tree: ModelTree, hand: Hand, name: str, torso: str | None) -> Draf
     base = tree.model.joints[joints[0]].parent
     tool = tool_frame(tree, hand, name)
     parking = parking_pose(tree.model, joints, hand.end_effector_link)
-    reversed_joints = _closing_upwards(tree, hand)
+    reversed_joints = (
+        list(hand.gripper_joints) if hand.opens_at_lower else _closing_upwards(tree, hand)
+    )
     gripper = _gripper(tree, hand, reversed_joints) if reversed_joints else None
     arm = ArmDescription(
         name=name,
@@ -91,7 +93,7 @@ def draft_arm(tree: ModelTree, hand: Hand, name: str, torso: str | None) -> Draf
         + "; its joints down to the wrist are found at load",
         "tool_frame": tool.why,
         "gripper_joints": hand.why_gripper + "; fingers and hand links are found at load",
-        "gripper": f"{hand.why_gripper}; its fingers stand wider at the lower limit",
+        "gripper": f"{hand.why_gripper}; open at the lower limit, where the fingers part",
         "parking": "sampled in limits (seed 0): wrist low beside the shoulder, out of view",
     }
     doubts = {"parking": "no collision check here: `robocram robot check` drives it"}
@@ -99,4 +101,6 @@ def draft_arm(tree: ModelTree, hand: Hand, name: str, torso: str | None) -> Draf
         doubts["gripper_joints"] = hand.doubt_gripper
     if tool.doubt:
         doubts["tool_frame"] = tool.doubt
+    if gripper is not None and "gripper_joints" in doubts:
+        doubts["gripper"] = doubts.pop("gripper_joints")  # printed with the gripper
     return DraftedArm(arm, tool.added, why, doubts)

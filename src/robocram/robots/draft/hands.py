@@ -28,6 +28,7 @@ class Hand:
     hand_links: tuple[str, ...]  # every link below the wrist link
     why_gripper: str
     doubt_gripper: str | None = None
+    opens_at_lower: bool = False  # curling fingers: open straight (0), closed curled
 
 
 FINGER_WORDS = ("finger", "gripper", "jaw", "thumb", "hand")  # in a lone leaf joint's name
@@ -81,7 +82,28 @@ def _gripper_joints(
         chosen = tuple(m for m in masters if len(tree.followers(m)) == most)
         return chosen, f"mimicked by {most} hand joint(s) (<mimic> in the URDF)"
     fingers = tuple(j.name for j in _fingers(tree, link) if j.mimic is None)
+    curls = _curls(hand_joints)
+    if len(curls) > len(fingers):
+        why = f"no <mimic> couples the hand: its {len(curls)} curling joints move together"
+        return curls, why
     return fingers, "the finger joints (prismatic, or leaves) right below the wrist"
+
+
+def _curls(hand_joints: list[Joint]) -> tuple[str, ...]:
+    """Revolute joints straight at 0 that bend one way, to their upper limit.
+
+    A hand whose URDF does not couple its fingers (a simulator plugin does) curls them so:
+    the description opens them at 0 and closes them at the upper limit, all together.
+    """
+    return tuple(
+        j.name
+        for j in hand_joints
+        if j.type == "revolute"
+        and j.mimic is None
+        and j.lower == 0.0
+        and j.upper is not None
+        and j.upper > 0.0
+    )
 
 
 def _hand(tree: ModelTree, wrist: Joint) -> Hand:
@@ -110,4 +132,5 @@ def _hand(tree: ModelTree, wrist: Joint) -> Hand:
         hand_links=tuple(tree.subtree_links(link)),
         why_gripper=why,
         doubt_gripper=doubt,
+        opens_at_lower=why.startswith("no <mimic> couples"),
     )
