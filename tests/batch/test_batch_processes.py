@@ -69,6 +69,10 @@ def test_cancel_leaves_no_process(batch_plans: ModuleType, tmp_path: Path) -> No
     batch_plans.wait_for(blocks)  # both workers are now busy in a variant that never ends
     workers = run.worker_pids()
     assert len(workers) == 2 and set(workers) <= _children()
+    for pid in workers:  # one BLAS thread each: the workers share the cores
+        assert psutil.Process(pid).environ().get("OPENBLAS_NUM_THREADS") == os.environ.get(
+            "OPENBLAS_NUM_THREADS", "1"
+        )
     run.cancel()
     assert _children() <= before
     assert list(run) == []

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import contextlib
 import multiprocessing
+import os
 from collections.abc import Iterator
 from dataclasses import dataclass
 from multiprocessing.connection import Connection, wait
@@ -20,6 +21,9 @@ from robocram.batch.worker import WorkerConfig, worker_main
 from robocram.batch.worker_pool import Pending, WorkerPool
 
 POLL = 0.5  # [s] the parent wakes this often, so a pending Ctrl-C is handled promptly
+# One core per worker: BLAS threads of one worker would take the cores of the others (on 2
+# cores, 2 workers with threaded OpenBLAS ran slower than 1). A value the user set is kept.
+ONE_THREAD = {"OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1", "MKL_NUM_THREADS": "1"}
 STOP_GRACE = 2.0  # [s] a terminated worker gets this long before it is killed
 
 
@@ -48,7 +52,8 @@ class ProcessPool(WorkerPool):
         process = self._context.Process(
             target=worker_main, args=(self.config, child), name="robocram-batch", daemon=True
         )
-        process.start()
+        with _one_thread_each():
+            process.start()
         child.close()
         worker = _Worker(process, parent)
         self._workers.append(worker)
@@ -125,3 +130,15 @@ def _last_answer(conn: Connection) -> VariantResult | None:
         return conn.recv() if conn.poll() else None
     except (EOFError, OSError):
         return None
+
+
+@contextlib.contextmanager
+def _one_thread_each() -> Iterator[None]:
+    """Start a worker with :data:`ONE_THREAD` in its environment (read as BLAS loads)."""
+    added = {k: v for k, v in ONE_THREAD.items() if k not in os.environ}
+    os.environ.update(added)
+    try:
+        yield
+    finally:
+        for key in added:
+            os.environ.pop(key, None)
