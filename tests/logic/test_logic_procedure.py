@@ -7,7 +7,7 @@ from typing import Any
 import pytest
 
 from robocram.logic import KnowledgeBase, PrologInstantiationError, PrologTypeError
-from robocram.logic.procedure import compile_procedure
+from robocram.logic.procedure import MAX_CLAUSES, compile_procedure
 
 PROGRAM = """
 len([], 0).
@@ -41,12 +41,45 @@ def kb() -> KnowledgeBase:
     return k
 
 
-def test_procedure_compiled_only_for_distinct_keys(kb: KnowledgeBase) -> None:
-    assert compile_procedure(kb._preds[("len", 2)].clauses) is not None
-    assert compile_procedure(kb._preds[("count", 1)].clauses) is None  # count(N) matches any key
-    # walk/3 has [_|_] twice and no other distinct position
-    assert compile_procedure(kb._preds[("walk", 3)].clauses) is None
-    assert compile_procedure(kb._preds[("shape", 2)].clauses) is None  # 3 and 3.0 share a key
+def test_procedure_compiled_for_every_small_static_predicate(kb: KnowledgeBase) -> None:
+    for key in [("len", 2), ("count", 1), ("walk", 3), ("shape", 2)]:
+        assert compile_procedure(kb._preds[key].clauses) is not None
+    big = KnowledgeBase()
+    big.consult(" ".join(f"f({i})." for i in range(MAX_CLAUSES + 1)))
+    assert compile_procedure(big._preds[("f", 1)].clauses) is None  # indexed clause by clause
+
+
+def test_procedure_keeps_clause_order_around_variable_heads() -> None:
+    kb = KnowledgeBase()
+    kb.consult("m(a, 1). m(X, 2) :- X \\== b. m(b, 3). m(f(_), 5). m(_, 4).")
+    assert answers(kb, "m(a, R)", "R") == [1, 2, 4]
+    assert answers(kb, "m(b, R)", "R") == [3, 4]
+    assert answers(kb, "m(c, R)", "R") == [2, 4]
+    assert answers(kb, "m(f(1), R)", "R") == [2, 5, 4]
+    assert answers(kb, "m(1.0, R)", "R") == [2, 4]
+    assert answers(kb, "m(X, R)", "R") == [1, 2, 3, 5, 4]
+
+
+def test_procedure_cut_after_guard_commits() -> None:
+    kb = KnowledgeBase()
+    kb.consult("g(X, R) :- X > 0, !, X < 5, R = small. g(_, other).")
+    assert answers(kb, "g(3, R)", "R") == ["small"]
+    assert answers(kb, "g(10, R)", "R") == []  # committed by the cut, then X < 5 fails
+    assert answers(kb, "g(-1, R)", "R") == ["other"]
+
+
+def test_compiled_arithmetic_in_body_keeps_iso_errors() -> None:
+    kb = KnowledgeBase()
+    kb.consult("h(X, Y, Z) :- atom(a), Z is X * Y + 1, Z > X - 1.5.")
+    assert answers(kb, "h(2, 3, Z)", "Z") == [7]
+    assert answers(kb, "h(2.5, 2, Z)", "Z") == [6.0]
+    assert answers(kb, "h(-1, 3, Z)", "Z") == [-2]
+    assert answers(kb, "h(-2, 3, Z)", "Z") == []  # -5 > -3.5 fails
+    for _ in range(3):
+        with pytest.raises(PrologInstantiationError):
+            kb.holds("h(2, _, _)")
+        with pytest.raises(PrologTypeError):
+            kb.holds("h(2, foo, _)")
 
 
 def test_procedure_recursion_and_unbound_switch(kb: KnowledgeBase) -> None:

@@ -63,6 +63,7 @@ _FACTORIES: LRUCache[str, Callable[..., Any]] = LRUCache(FACTORY_CACHE_SIZE)
 _ARITH_OPS = {"+": "+", "-": "-", "*": "*"}
 _COMPARE_OPS = {"<": "<", ">": ">", "=<": "<=", ">=": ">=", "=:=": "==", "=\\=": "!="}
 _EXACT_TYPES = (str, int, float)
+_CONTROL = {(",", 2), (";", 2), ("->", 2), ("*->", 2), ("\\+", 1)}
 
 
 def compile_clause_fn(clause: ClauseCode) -> ClauseFn:
@@ -114,6 +115,28 @@ def _is_self_call(goal: Any, clause: ClauseCode) -> bool:
     return parts is not None and parts[0] == clause.name and len(parts[1]) == len(clause.head)
 
 
+def arith_function(name: str, args: tuple[Any, ...], slots: list[int]) -> Any:
+    """Compile comparison or `is/2` goal `name(args)` to a function of its slots' values.
+
+    The function returns the comparison's truth, or the value of `is/2`'s expression;
+    None when the expression has a part that must be evaluated at run time as a term.
+    """
+    writer = ClauseWriter()
+    writer.known = set(slots)
+    if name == "is":
+        code = writer.expr(args[1])
+    else:
+        left, right = writer.expr(args[0]), writer.expr(args[1])
+        code = None if left is None or right is None else f"{left} {_COMPARE_OPS[name]} {right}"
+    if code is None:
+        return None
+    params = ", ".join(f"k{i}" for i in range(len(writer.consts)))
+    values = ", ".join(f"v{i}" for i in slots)
+    head = [f"def make({params}):", f"  def fn({values}):"]
+    source = "\n".join([*head, *writer.lines, f"    return {code}", "  return fn", ""])
+    return make_factory(source)(*writer.consts)
+
+
 class ClauseWriter:
     """Emits the Python source of clause code, tracking which slots hold values."""
 
@@ -124,50 +147,54 @@ class ClauseWriter:
         self.dereffed: set[int] = set()
         self.temps = 0
         self.base = 0
+        self.fail = "return False"  # the statement a failing head or inline goal runs
 
     def clause_source(self, clause: ClauseCode) -> str:
         """Generate `make(k0, k1, ...)` returning the clause function."""
         arity = len(clause.head)
         if arity:
             self.emit(f"{_arg_names(arity)} = args", 1)
-        self.clause_code(clause, loop=False)
+        self.clause_code(clause)
         params = ", ".join(f"k{i}" for i in range(len(self.consts)))
         return "\n".join(
             [f"def make({params}):", "  def run(args, trail, cb, nxt, cps):", *self.lines]
             + ["  return run", ""]
         )
 
-    def clause_code(self, clause: ClauseCode, loop: bool, switched: int = -1) -> None:
-        """Emit head unification, the inline built-ins and the exit of one clause.
-
-        The exit returns the continuation; a call to the clause's own predicate returns its
-        argument list instead, or with `loop` reassigns the argument locals and continues.
-        Argument `switched` is already dereferenced and known to have the head's constant
-        or functor (a procedure switched on it), so only its subterms are unified.
-        """
+    def clause_code(self, clause: ClauseCode) -> None:
+        """Emit head unification, the inline built-ins and the exit of one clause."""
         self.known = set()
         self.dereffed = set()
         for i, p in enumerate(clause.head):
-            if i != switched or type(p) is Term:
-                self.unify_arg(p, f"a{i}", 1)
-            elif type(p) is Tmpl:
-                self.read_args(p.args, f"a{i}[1]", 1)
+            self.unify_arg(p, f"a{i}", 1)
         body = list(reversed(clause.body_rev))
         while body and self.inline_goal(body[0]):
             body.pop(0)
         self.fresh(body, 1)
         if len(body) == 1 and _is_self_call(body[0], clause):
             args = "".join(f"{self.build(a)}, " for a in _parts(body[0])[1])  # type: ignore[index]
-            if loop:
-                self.emit(f"{_arg_names(len(clause.head))} = {args}", 1)
-                self.emit("continue", 1)
-            else:
-                self.emit(f"return [{args}]", 1)
+            self.self_call(args)
             return
         cont = "nxt"
         for g in reversed(body):
-            cont = f"({self.build(g)}, cb, {cont})"
+            cont = f"({self.goal(g)}, cb, {cont})"
+        self.exit(cont)
+
+    def self_call(self, args: str) -> None:
+        """Exit by a call to the clause's own predicate: return its argument list.
+
+        The machine loops on the predicate without building the goal term or a
+        continuation cell (the common shape of a deterministic recursion).
+        """
+        self.emit(f"return [{args}]", 1)
+
+    def exit(self, cont: str) -> None:
+        """Exit with the continuation expression `cont` (the remaining body goals)."""
         self.emit(f"return {cont}", 1)
+
+    def cut(self) -> None:
+        """Emit a cut at the neck: drop the choicepoints made since the clause began."""
+        self.emit("del cps[cb:]", 1)
 
     def emit(self, line: str, depth: int) -> None:
         self.lines.append("  " * (depth + self.base + 1) + line)
@@ -199,24 +226,50 @@ class ClauseWriter:
             return f"new_term(Term, ({self.const(t.name)}, ({args})))"
         return self.const(t)
 
+    def goal(self, g: Any) -> str:
+        """Python expression building body goal `g`, arithmetic compiled to a function.
+
+        `X > Y + 1` later in a body becomes `'$test'(Fn, Values)`, and `X is E` becomes
+        `'$is'(Fn, X, Values)`, so that the machine runs Python arithmetic instead of
+        walking the expression; control constructs are compiled goal by goal.
+        """
+        parts = _parts(g)
+        if parts is None:
+            return self.build(g)
+        name, args = parts
+        if (name, len(args)) in _CONTROL:
+            inner = "".join(f"{self.goal(a)}, " for a in args)
+            return f"new_term(Term, ({self.const(name)}, ({inner})))"
+        if len(args) != 2 or not (name in _COMPARE_OPS or name == "is"):
+            return self.build(g)
+        slots = _slots_in(g, [])
+        fn = arith_function(name, args, slots)
+        if fn is None or not slots:
+            return self.build(g)
+        values = "".join(f"v{i}, " for i in slots)
+        if name == "is":
+            target = self.build(args[0])
+            return f"new_term(Term, ('$is', ({self.const(fn)}, {target}, ({values}))))"
+        return f"new_term(Term, ('$test', ({self.const(fn)}, ({values}))))"
+
     def unify_arg(self, p: Any, x: str, depth: int) -> None:
         """Emit code unifying template `p` with the (un-dereferenced) value in local `x`."""
         if type(p) is Slot:
             if p.i in self.known:
-                self.emit(f"if not unify(v{p.i}, {x}, trail): return False", depth)
+                self.emit(f"if not unify(v{p.i}, {x}, trail): {self.fail}", depth)
             else:
                 self.emit(f"v{p.i} = {x}", depth)
                 self.known.add(p.i)
             return
         if type(p) is not Tmpl and type(p) not in _EXACT_TYPES:
-            self.emit(f"if not unify({self.const(p)}, {x}, trail): return False", depth)
+            self.emit(f"if not unify({self.const(p)}, {x}, trail): {self.fail}", depth)
             return
         self.emit(f"while type({x}) is Var and {x}.ref is not None: {x} = {x}.ref", depth)
         if type(p) is not Tmpl:
             k = self.const(p)
             self.emit(f"if type({x}) is Var: {x}.ref = {k}; trail.append({x})", depth)
             self.emit(
-                f"elif type({x}) is not {type(p).__name__} or {x} != {k}: return False", depth
+                f"elif type({x}) is not {type(p).__name__} or {x} != {k}: {self.fail}", depth
             )
             return
         before = set(self.known)
@@ -228,7 +281,7 @@ class ClauseWriter:
         n = len(p.args)
         self.emit(f"elif type({x}) is Term and {x}[0] == {name} and len({x}[1]) == {n}:", depth)
         self.read_args(p.args, f"{x}[1]", depth + 1)
-        self.emit("else: return False", depth)
+        self.emit(f"else: {self.fail}", depth)
 
     def read_args(self, pargs: tuple[Any, ...], src: str, depth: int) -> None:
         """Read mode: unpack the call's subterms, then unify each with its template."""
@@ -249,7 +302,7 @@ class ClauseWriter:
     def inline_goal(self, g: Any) -> bool:
         """Emit a leading deterministic built-in inline; False when `g` is not one."""
         if g == "!":
-            self.emit("del cps[cb:]", 1)
+            self.cut()
             return True
         parts = _parts(g)
         if parts is None or len(parts[1]) != 2:
@@ -259,7 +312,7 @@ class ClauseWriter:
             a, b = self.expr(left), self.expr(right)
             if a is None or b is None:
                 return False
-            self.emit(f"if not ({a} {_COMPARE_OPS[name]} {b}): return False", 1)
+            self.emit(f"if not ({a} {_COMPARE_OPS[name]} {b}): {self.fail}", 1)
             return True
         if name == "is":
             value = self.expr(right)
@@ -278,9 +331,8 @@ class ClauseWriter:
                 self.known.add(left.i)
                 return True
             self.fresh([left, right], 1)
-            self.emit(
-                f"if not unify({self.build(left)}, {self.build(right)}, trail): return False", 1
-            )
+            left_code, right_code = self.build(left), self.build(right)
+            self.emit(f"if not unify({left_code}, {right_code}, trail): {self.fail}", 1)
             return True
         return False
 
@@ -291,7 +343,7 @@ class ClauseWriter:
             self.known.add(target.i)
             return
         self.fresh([target], 1)
-        self.emit(f"if not unify({self.build(target)}, {value}, trail): return False", 1)
+        self.emit(f"if not unify({self.build(target)}, {value}, trail): {self.fail}", 1)
 
     def expr(self, t: Any) -> str | None:
         """Python expression evaluating arithmetic template `t`; None if a slot is unset."""

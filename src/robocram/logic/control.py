@@ -15,10 +15,12 @@ from robocram.logic.terms import Term, Var, new_term
 if TYPE_CHECKING:
     from robocram.logic.engine import Engine
 
-__all__ = ["ALT", "BARRIER", "CATCH", "CLAUSES", "CONTROL_NAMES", "DEAD", "FAIL", "GEN", "REACT"]
-__all__ += ["add_args", "run_control"]
+__all__ = ["ALT", "BARRIER", "CATCH", "CLAUSES", "CONTROL_NAMES", "DEAD", "FAIL", "GEN", "PROC"]
+__all__ += ["REACT", "add_args", "run_control"]
 
-CLAUSES, ALT, GEN, BARRIER, CATCH, REACT, DEAD = range(7)
+# Choicepoint kinds (the first item of a choicepoint list); PROC resumes a compiled
+# procedure at a later clause (see procedure.py).
+CLAUSES, ALT, GEN, BARRIER, CATCH, REACT, DEAD, PROC = range(8)
 FAIL = ("fail", 0, None)
 
 CONTROL_NAMES: list[tuple[str, int]] = [

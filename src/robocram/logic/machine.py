@@ -12,7 +12,7 @@ from collections.abc import Iterator
 from typing import Any
 
 from robocram.logic.builtin_flags import warn_unknown
-from robocram.logic.control import ALT, BARRIER, CATCH, CLAUSES, FAIL, GEN, REACT, run_control
+from robocram.logic.control import ALT, BARRIER, CATCH, CLAUSES, FAIL, GEN, PROC, REACT, run_control
 from robocram.logic.engine import Database
 from robocram.logic.errors import (
     PrologError,
@@ -134,24 +134,21 @@ class Machine:
                     continue
                 k = p.kind
                 if k == USER:
+                    proc = p.proc
+                    if proc is not None:
+                        cont = proc(args, trail, nxt, cps, 0)
+                        if cont is False:
+                            cont = backtrack(cps)
+                        elif type(cont) is list:
+                            cont = self._again(proc, cont, nxt, cps)
+                        continue
                     if p.pyfn is not None:
                         if not cps and trail:
                             del trail[:]
                         self._push_python(p, args, nxt, cps)
                         cont = backtrack(cps)
                         continue
-                    proc = p.proc
-                    if proc is not None:
-                        cont = proc(args, trail, nxt, cps)
-                        if type(cont) is not list:
-                            if cont is False:
-                                cont = backtrack(cps)
-                            continue
-                        if len(cont) != len(args):  # the procedure looped CHECK_EVERY times
-                            cont.pop()
-                            spend(CHECK_EVERY)
-                        args = cont
-                    elif p.warm < WARM_CALLS:
+                    if p.warm < WARM_CALLS:
                         p.warm_up()
                     cont = self._call_clauses(p, args, nxt, cps)
                     if cont is False:
@@ -240,6 +237,13 @@ class Machine:
                 cont = self._next_clause(cp, cps)
                 if cont is not False:
                     return cont
+            elif kind == PROC:
+                cps.pop()
+                cont = cp[4](cp[2], trail, cp[3], cps, cp[5])
+                if type(cont) is list:
+                    cont = self._again(cp[4], cont, cp[3], cps)
+                if cont is not False:
+                    return cont
             elif kind == GEN:
                 if next(cp[2], None) is not None:
                     return cp[3]
@@ -254,6 +258,14 @@ class Machine:
                     cp[2][6] = True
                 cps.pop()
         return False
+
+    def _again(self, proc: Any, args: list[Any], nxt: Any, cps: list[list[Any]]) -> Any:
+        """Count the CHECK_EVERY loops a procedure handed back, and call it again."""
+        while type(args) is list:
+            args.pop()
+            self.budget.spend(CHECK_EVERY)
+            args = proc(args, self.trail, nxt, cps, 0)
+        return args
 
     def _next_clause(self, cp: list[Any], cps: list[list[Any]]) -> Any:
         """Try the next candidate clause of a CLAUSES choicepoint (popping it at the last)."""
