@@ -268,9 +268,7 @@ class ClauseWriter:
         if type(p) is not Tmpl:
             k = self.const(p)
             self.emit(f"if type({x}) is Var: {x}.ref = {k}; trail.append({x})", depth)
-            self.emit(
-                f"elif type({x}) is not {type(p).__name__} or {x} != {k}: {self.fail}", depth
-            )
+            self.emit(f"elif type({x}) is not {type(p).__name__} or {x} != {k}: {self.fail}", depth)
             return
         before = set(self.known)
         self.emit(f"if type({x}) is Var:", depth)

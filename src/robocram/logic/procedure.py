@@ -35,6 +35,7 @@ __all__ = ["MAX_CLAUSES", "Procedure", "compile_procedure"]
 
 Procedure = Callable[[Any, list[Any], Any, list[list[Any]], int], Any]
 MAX_CLAUSES = 64
+Tables = tuple[dict[Any, int], dict[Any, int]]  # first and last clause per key
 _CHAIN_KEYS = 4  # up to this many keys, switch by comparisons; beyond, by dictionaries
 
 
@@ -78,7 +79,7 @@ def switch_key(t: Any) -> Any:
     return MAYBE  # a variable, a float (1.0 = 1 in Python) or an opaque constant
 
 
-def switch_tables(clauses: list[ClauseCode]) -> tuple[dict[Any, int], dict[Any, int]]:
+def switch_tables(clauses: list[ClauseCode]) -> Tables:
     """First and last clause index that each key can match (MAYBE: all of them)."""
     keys = [switch_key(c.head[0]) for c in clauses]
     open_at = [i for i, k in enumerate(keys) if k is MAYBE]
@@ -161,14 +162,15 @@ class _ProcWriter(ClauseWriter):
             atomic = {h for h in heads if type(h) is str or type(h) is int}
             self.emit("if t is Term:", 2)
             self.emit("x = x[0]", 3)
-            self.chain(compound, first, last, unknown)
+            self.chain(compound, (first, last), unknown)
             self.emit("elif t is str or t is int:", 2)
-            self.chain(atomic, first, last, unknown)
+            self.chain(atomic, (first, last), unknown)
             self.emit(f"else: i, last = {every[0]}, {every[1]}", 2)
         self.emit("if start < i: start = i", 2)
 
-    def chain(self, keys: set[Any], first: dict[Any, int], last: dict[Any, int], unknown: Any) -> None:
+    def chain(self, keys: set[Any], tables: Tables, unknown: tuple[int, int]) -> None:
         """Emit comparisons of `x` with each key, setting `i` and `last`."""
+        first, last = tables
         branch = "if"
         for k in first:
             if k in keys:
@@ -199,4 +201,3 @@ class _ProcWriter(ClauseWriter):
         self.alternatives()
         self.emit(f"{''.join(f'a{i}, ' for i in range(self.arity))}= {args}", 1)
         self.emit("start = -1; break", 1)
-
