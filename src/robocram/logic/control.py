@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
+from robocram.logic.choicepoints import ALT, BARRIER, CATCH, CLAUSES, DEAD, GEN, PROC, REACT
 from robocram.logic.errors import PrologInstantiationError, PrologTypeError
 from robocram.logic.terms import Term, Var, new_term
 
@@ -18,9 +19,6 @@ if TYPE_CHECKING:
 __all__ = ["ALT", "BARRIER", "CATCH", "CLAUSES", "CONTROL_NAMES", "DEAD", "FAIL", "GEN", "PROC"]
 __all__ += ["REACT", "add_args", "run_control"]
 
-# Choicepoint kinds (the first item of a choicepoint list); PROC resumes a compiled
-# procedure at a later clause (see procedure.py).
-CLAUSES, ALT, GEN, BARRIER, CATCH, REACT, DEAD, PROC = range(8)
 FAIL = ("fail", 0, None)
 
 CONTROL_NAMES: list[tuple[str, int]] = [

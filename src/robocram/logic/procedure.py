@@ -25,8 +25,8 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from typing import Any
 
+from robocram.logic.choicepoints import PROC
 from robocram.logic.codegen import ClauseCode, ClauseWriter, make_factory
-from robocram.logic.control import PROC
 from robocram.logic.limits import CHECK_EVERY
 from robocram.logic.template import Tmpl
 from robocram.logic.terms import Term
