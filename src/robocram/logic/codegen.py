@@ -161,12 +161,20 @@ class ClauseWriter:
             + ["  return run", ""]
         )
 
-    def clause_code(self, clause: ClauseCode) -> None:
-        """Emit head unification, the inline built-ins and the exit of one clause."""
+    def clause_code(self, clause: ClauseCode, switched: bool = False) -> None:
+        """Emit head unification, the inline built-ins and the exit of one clause.
+
+        `switched`: the first argument is dereferenced and already known to have the
+        head's functor or constant (a procedure switched on it): only its subterms are
+        unified.
+        """
         self.known = set()
         self.dereffed = set()
         for i, p in enumerate(clause.head):
-            self.unify_arg(p, f"a{i}", 1)
+            if i == 0 and switched and type(p) is Tmpl:
+                self.read_args(p.args, "a0[1]", 1)
+            elif not (i == 0 and switched and type(p) in (str, int)):
+                self.unify_arg(p, f"a{i}", 1)
         body = list(reversed(clause.body_rev))
         while body and self.inline_goal(body[0]):
             body.pop(0)

@@ -14,14 +14,16 @@ loops in the same frame.
         `start` on gets past its inline goals; or the argument list plus one extra item
         after CHECK_EVERY loops, so that the machine counts them and calls again
 
-The first argument is switched on before any clause runs: two dictionaries give the
-first and the last clause whose first argument can match its principal functor or
-constant, so clauses before the first are skipped and no choicepoint is left after
-the last.
+The first argument is switched on before any clause runs: for each principal functor
+or constant in the clause heads, a branch holds the code of just the clauses that can
+match it (in order, the variable ones included), with the first argument's functor
+already known; a call with it unbound runs every clause. The last clause of a branch
+leaves no choicepoint and runs without the try-next wrapper.
 """
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable, Sequence
 from typing import Any
 
@@ -35,8 +37,7 @@ __all__ = ["MAX_CLAUSES", "Procedure", "compile_procedure"]
 
 Procedure = Callable[[Any, list[Any], Any, list[list[Any]], int], Any]
 MAX_CLAUSES = 64
-Tables = tuple[dict[Any, int], dict[Any, int]]  # first and last clause per key
-_CHAIN_KEYS = 4  # up to this many keys, switch by comparisons; beyond, by dictionaries
+MAX_KEYS = 16  # distinct first-argument keys switched on by comparisons, one by one
 
 
 class _Maybe:
@@ -54,9 +55,12 @@ def compile_procedure(stored: Sequence[ClauseCode]) -> Procedure | None:
     clauses = list(stored)
     if not 1 <= len(clauses) <= MAX_CLAUSES:
         return None
+    branches = _branches(clauses)
+    if branches is None:
+        return None
     try:
-        writer = _ProcWriter(len(clauses[0].head))
-        writer.procedure(clauses)
+        writer = _ProcWriter(clauses)
+        writer.procedure(branches)
         params = ", ".join(f"k{i}" for i in range(len(writer.consts)))
         source = "\n".join(
             [f"def make({params}):", "  def proc(args, trail, nxt, cps, start):", *writer.lines]
@@ -68,116 +72,146 @@ def compile_procedure(stored: Sequence[ClauseCode]) -> Procedure | None:
     return proc
 
 
-def switch_key(t: Any) -> Any:
-    """The key a head argument is switched on: a functor's name, a constant, or MAYBE."""
+Key = tuple[str, int] | str | int
+
+
+class _Branches:
+    """Which clauses each kind of first argument can match, in clause order."""
+
+    def __init__(self) -> None:
+        self.compound: dict[tuple[str, int], list[int]] = {}
+        self.atomic: dict[str | int, list[int]] = {}
+        self.open: list[int] = []  # clauses with a variable (or float, ...) there
+        self.every: list[int] = []
+
+
+def _branches(clauses: list[ClauseCode]) -> _Branches | None:
+    """Group the clauses by first-argument key; None when too many keys or copies."""
+    b = _Branches()
+    b.every = list(range(len(clauses)))
+    if not clauses[0].head:
+        return b
+    keys = [_key(c.head[0]) for c in clauses]
+    for k in keys:
+        if type(k) is tuple:
+            b.compound.setdefault(k, [])
+        elif k is not None:
+            b.atomic.setdefault(k, [])  # type: ignore[arg-type]
+    if len(b.compound) + len(b.atomic) > MAX_KEYS:
+        return None
+    for i, k in enumerate(keys):
+        if k is None:
+            b.open.append(i)
+        for table in (b.compound, b.atomic):
+            for key, members in table.items():
+                if k is None or k == key and type(k) is type(key):
+                    members.append(i)
+    copies = sum(len(m) for m in [*b.compound.values(), *b.atomic.values()])
+    return b if copies <= 4 * len(clauses) + 32 else None
+
+
+def _key(t: Any) -> Key | None:
+    """The switch key of a head's first argument; None when any call argument can match."""
     if type(t) is Tmpl:
-        return t.name
+        return (t.name, len(t.args))
     if type(t) is Term:
-        return t[0]
+        return (t[0], len(t[1]))
     if type(t) is str or type(t) is int:
         return t
-    return MAYBE  # a variable, a float (1.0 = 1 in Python) or an opaque constant
-
-
-def switch_tables(clauses: list[ClauseCode]) -> Tables:
-    """First and last clause index that each key can match (MAYBE: all of them)."""
-    keys = [switch_key(c.head[0]) for c in clauses]
-    open_at = [i for i, k in enumerate(keys) if k is MAYBE]
-    first: dict[Any, int] = {MAYBE: 0}
-    last: dict[Any, int] = {MAYBE: len(clauses) - 1}
-    for i, k in enumerate(keys):
-        if k is not MAYBE:
-            first.setdefault(k, min([i, *open_at]))
-            last[k] = max([i, *open_at])
-    # a key no clause names: only the clauses with a variable there can match
-    first[None] = open_at[0] if open_at else len(clauses)
-    last[None] = open_at[-1] if open_at else -1
-    return first, last
-
-
-def _name(t: Any) -> str | None:
-    """The functor name of a compound head argument; None for anything else."""
-    if type(t) is Tmpl:
-        return t.name
-    return t[0] if type(t) is Term else None
+    return None  # a variable, a float (1.0 = 1 in Python) or an opaque constant
 
 
 class _ProcWriter(ClauseWriter):
-    """Writes the clause-by-clause procedure; failing inline goals fall to the next clause."""
+    """Writes the switch and, per branch, each clause; a failing clause falls through."""
 
-    def __init__(self, arity: int) -> None:
+    def __init__(self, clauses: list[ClauseCode]) -> None:
         super().__init__()
-        self.arity = arity
-        self.index = 0
+        self.clauses = clauses
+        self.arity = len(clauses[0].head)
+        self.names = "".join(f"a{i}, " for i in range(self.arity))
         self.committed = False
+        self.next_start: int | None = None
 
-    def procedure(self, clauses: list[ClauseCode]) -> None:
-        names = "".join(f"a{i}, " for i in range(self.arity))
+    def procedure(self, b: _Branches) -> None:
+        self.switch(b)
+        body = "\n".join(self.lines)
+        self.lines = []
         if self.arity:
-            self.emit(f"{names}= args", 1)
-        self.emit("steps = 0", 1)
+            self.emit(f"{self.names}= args", 1)
+        loops = "continue" in body
+        # The trail only serves choicepoints: with none, drop it on entry, and again
+        # every CHECK_EVERY loops, when a long self-recursion is handed to the machine
+        # so that it counts the inferences (limits, stop requests) and calls again.
+        self.emit("if not cps and trail: del trail[:]", 1)
+        if loops:
+            self.emit("steps = 0", 1)
         self.emit("while True:", 1)
-        self.emit("if not cps and trail: del trail[:]", 2)
-        # Hand a long self-recursion back to the machine now and then, so that it counts
-        # the inferences (limits, stop requests), and it calls the procedure again.
-        self.emit("steps += 1", 2)
-        self.emit(f"if steps >= {CHECK_EVERY}: return [{names}None]", 2)
-        self.emit("cb = len(cps)", 2)
-        self.emit("mark = len(trail)", 2)
-        self.switch(clauses)
-        for i, clause in enumerate(clauses):
-            self.index = i
-            self.committed = False
-            self.fail = "break"
-            self.emit(f"if start <= {i} <= last:", 2)
-            self.emit("while True:", 3)
-            self.base = 3
-            self.clause_code(clause)
-            self.base = 0
-            self.emit("if start < 0: start = 0; continue", 3)
-            self.emit("while len(trail) > mark: trail.pop().ref = None", 3)
-        self.emit("return False", 2)
+        if loops:
+            self.emit("steps += 1", 2)
+            self.emit(f"if steps >= {CHECK_EVERY}: return [{self.names}None]", 2)
+        if re.search(r"\bcb\b", body):
+            self.emit("cb = len(cps)", 2)
+        self.lines.append(body)
 
-    def switch(self, clauses: list[ClauseCode]) -> None:
-        """Emit the first-argument switch setting `start` and `last`."""
+    def switch(self, b: _Branches) -> None:
+        """Emit the switch on the first argument into each branch's clauses."""
         if not self.arity:
-            self.emit(f"last = {len(clauses) - 1}", 2)
+            self.branch(b.every, 2, switched=False)
             return
-        first, last = switch_tables(clauses)
-        unknown = (first.pop(None), last.pop(None))
-        every = (first.pop(MAYBE), last.pop(MAYBE))
         self.emit("x = a0", 2)
         self.emit("while type(x) is Var and x.ref is not None: x = x.ref", 2)
         self.emit("a0 = x", 2)
         self.emit("t = type(x)", 2)
-        if len(first) > _CHAIN_KEYS:
-            self.emit("if t is Term: x = x[0]", 2)
-            self.emit("elif t is not str and t is not int: x = None", 2)
-            self.emit(f"if x is None: i, last = {every[0]}, {every[1]}", 2)
-            self.emit(f"else: i, last = {self.const(first)}.get(x, {unknown[0]}), ", 2)
-            self.lines[-1] += f"{self.const(last)}.get(x, {unknown[1]})"
-        else:
-            heads = [c.head[0] for c in clauses]
-            compound = {_name(h) for h in heads} - {None}
-            atomic = {h for h in heads if type(h) is str or type(h) is int}
-            self.emit("if t is Term:", 2)
-            self.emit("x = x[0]", 3)
-            self.chain(compound, (first, last), unknown)
-            self.emit("elif t is str or t is int:", 2)
-            self.chain(atomic, (first, last), unknown)
-            self.emit(f"else: i, last = {every[0]}, {every[1]}", 2)
-        self.emit("if start < i: start = i", 2)
+        self.emit("if t is Term:", 2)
+        if b.compound:
+            self.emit("f = x[0]; n = len(x[1])", 3)
+        for j, ((name, arity), members) in enumerate(b.compound.items()):
+            test = f"f == {self.const(name)} and n == {arity}"
+            self.emit(f"{'el' if j else ''}if {test}:", 3)
+            self.branch(members, 4, switched=True)
+        self.other(b.open, 3, bool(b.compound))
+        self.emit("elif t is str or t is int:", 2)
+        for j, (key, members) in enumerate(b.atomic.items()):
+            test = f"type(x) is {type(key).__name__} and x == {self.const(key)}"
+            self.emit(f"{'el' if j else ''}if {test}:", 3)
+            self.branch(members, 4, switched=True)
+        self.other(b.open, 3, bool(b.atomic))
+        self.emit("else:", 2)
+        self.branch(b.every, 3, switched=False)
 
-    def chain(self, keys: set[Any], tables: Tables, unknown: tuple[int, int]) -> None:
-        """Emit comparisons of `x` with each key, setting `i` and `last`."""
-        first, last = tables
-        branch = "if"
-        for k in first:
-            if k in keys:
-                self.emit(f"{branch} x == {self.const(k)}: i, last = {first[k]}, {last[k]}", 3)
-                branch = "elif"
-        otherwise = "else: " if branch == "elif" else ""
-        self.emit(f"{otherwise}i, last = {unknown[0]}, {unknown[1]}", 3)
+    def other(self, members: list[int], depth: int, chained: bool) -> None:
+        """The branch for a key no clause names: the clauses open to any argument."""
+        if chained:
+            self.emit("else:", depth)
+            depth += 1
+        self.branch(members, depth, switched=False)
+
+    def branch(self, members: list[int], depth: int, switched: bool) -> None:
+        """Emit the clauses `members` in order; all but the last fall through on failure."""
+        if not members:
+            self.emit("return False", depth)
+            return
+        if len(members) > 1:
+            self.emit("mark = len(trail)", depth)
+        for pos, i in enumerate(members):
+            self.base = 0
+            self.committed = False
+            last = pos == len(members) - 1
+            self.next_start = None if last else members[pos + 1]
+            if last:
+                self.fail = "return False"
+                self.base = depth - 1
+                self.clause_code(self.clauses[i], switched)
+                continue
+            self.fail = "break"
+            self.emit(f"if start <= {i}:", depth)
+            self.emit("while True:", depth + 1)
+            self.base = depth + 1
+            self.clause_code(self.clauses[i], switched)
+            self.base = 0
+            self.emit("if start < 0: start = 0; continue", depth + 1)
+            self.emit("while len(trail) > mark: trail.pop().ref = None", depth + 1)
+        self.base = 0
 
     def cut(self) -> None:
         # No choicepoint was made since the clause began: committing means pushing none
@@ -186,12 +220,11 @@ class _ProcWriter(ClauseWriter):
         self.fail = "return False"
 
     def alternatives(self) -> None:
-        """Emit the choicepoint for the later clauses, unless cut or none can match."""
-        if self.committed:
+        """Emit the choicepoint for the branch's later clauses, unless cut."""
+        if self.committed or self.next_start is None:
             return
-        names = "".join(f"a{i}, " for i in range(self.arity))
-        i = self.index
-        self.emit(f"if last > {i}: cps.append([{PROC}, mark, ({names}), nxt, proc, {i + 1}])", 1)
+        state = f"[{PROC}, mark, ({self.names}), nxt, proc, {self.next_start}]"
+        self.emit(f"cps.append({state})", 1)
 
     def exit(self, cont: str) -> None:
         self.alternatives()
@@ -199,5 +232,8 @@ class _ProcWriter(ClauseWriter):
 
     def self_call(self, args: str) -> None:
         self.alternatives()
-        self.emit(f"{''.join(f'a{i}, ' for i in range(self.arity))}= {args}", 1)
-        self.emit("start = -1; break", 1)
+        self.emit(f"{self.names}= {args}", 1)
+        if self.next_start is None:
+            self.emit("start = 0; continue", 1)
+        else:
+            self.emit("start = -1; break", 1)
