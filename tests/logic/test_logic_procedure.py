@@ -151,3 +151,29 @@ def test_procedure_and_clause_too_deep_to_compile_still_answer() -> None:
     for _ in range(4):
         assert kb.first("p(L, Y)", L=list(range(n))) == {"Y": n - 1}
         assert kb.first("p(foo, Y)") == {"Y": "bar"}
+
+
+def test_leading_if_then_else_on_tests_runs_inline() -> None:
+    kb = KnowledgeBase()
+    kb.consult(
+        """
+        kind(X, K) :- ( var(X) -> K = var ; integer(X), X > 10 -> K = big ; atom(X) -> K = atom
+                      ; K = other ).
+        pick(X, R) :- ( X > 0 -> !, R = pos ; R = nonpos ).
+        pick(_, late).
+        only(X, R) :- ( atom(X) -> R = yes ), true.
+        only(_, second).
+        """
+    )
+    assert answers(kb, "kind(_, K)", "K") == ["var"]
+    assert answers(kb, "kind(42, K)", "K") == ["big"]
+    assert answers(kb, "kind(7, K)", "K") == ["other"]
+    assert answers(kb, "kind(a, K)", "K") == ["atom"]
+    assert answers(kb, "kind(f(x), K)", "K") == ["other"]
+    assert answers(kb, "pick(3, R)", "R") == ["pos"]  # the cut in Then cuts pick/2
+    assert answers(kb, "pick(-3, R)", "R") == ["nonpos", "late"]
+    assert answers(kb, "only(a, R)", "R") == ["yes", "second"]
+    assert answers(kb, "only(1, R)", "R") == ["second"]  # no else: the first clause fails
+    for _ in range(3):
+        with pytest.raises(PrologTypeError):
+            kb.holds("pick(foo, _)")

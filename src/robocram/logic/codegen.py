@@ -63,6 +63,18 @@ _FACTORIES: LRUCache[str, Callable[..., Any]] = LRUCache(FACTORY_CACHE_SIZE)
 _ARITH_OPS = {"+": "+", "-": "-", "*": "*"}
 _COMPARE_OPS = {"<": "<", ">": ">", "=<": "<=", ">=": ">=", "=:=": "==", "=\\=": "!="}
 _EXACT_TYPES = (str, int, float)
+# ISO type tests inlined at the head of a clause body: the condition on the dereferenced value
+_TYPE_TESTS = {
+    "var": "type({0}) is Var",
+    "nonvar": "type({0}) is not Var",
+    "atom": "type({0}) is str",
+    "number": "type({0}) is int or type({0}) is float",
+    "integer": "type({0}) is int",
+    "float": "type({0}) is float",
+    "atomic": "type({0}) is not Var and type({0}) is not Term",
+    "compound": "type({0}) is Term",
+    "callable": "type({0}) is str or type({0}) is Term",
+}
 _CONTROL = {(",", 2), (";", 2), ("->", 2), ("*->", 2), ("\\+", 1)}
 
 
@@ -113,6 +125,14 @@ def _is_self_call(goal: Any, clause: ClauseCode) -> bool:
     """True when `goal` calls the clause's own predicate (same name and arity)."""
     parts = _parts(goal)
     return parts is not None and parts[0] == clause.name and len(parts[1]) == len(clause.head)
+
+
+def _conjuncts(g: Any) -> list[Any]:
+    """The goals of a conjunction `(A, B, ...)`, in order."""
+    parts = _parts(g)
+    if parts is not None and parts[0] == "," and len(parts[1]) == 2:
+        return [*_conjuncts(parts[1][0]), *_conjuncts(parts[1][1])]
+    return [g]
 
 
 def arith_function(name: str, args: tuple[Any, ...], slots: list[int]) -> Any:
@@ -175,9 +195,14 @@ class ClauseWriter:
                 self.read_args(p.args, "a0[1]", 1)
             elif not (i == 0 and switched and type(p) in (str, int)):
                 self.unify_arg(p, f"a{i}", 1)
-        body = list(reversed(clause.body_rev))
+        self.body_code(clause, list(reversed(clause.body_rev)))
+
+    def body_code(self, clause: ClauseCode, body: list[Any]) -> None:
+        """Emit the leading inline goals of `body`, then its exit."""
         while body and self.inline_goal(body[0]):
             body.pop(0)
+        if body and self.inline_if(clause, body):
+            return
         self.fresh(body, 1)
         if len(body) == 1 and _is_self_call(body[0], clause):
             args = "".join(f"{self.build(a)}, " for a in _parts(body[0])[1])  # type: ignore[index]
@@ -310,7 +335,11 @@ class ClauseWriter:
         if g == "!":
             self.cut()
             return True
+        if g == "true":
+            return True
         parts = _parts(g)
+        if parts is not None and len(parts[1]) == 1 and parts[0] in _TYPE_TESTS:
+            return self.type_test(parts[0], parts[1][0])
         if parts is None or len(parts[1]) != 2:
             return False
         name, (left, right) = parts
@@ -341,6 +370,80 @@ class ClauseWriter:
             self.emit(f"if not unify({left_code}, {right_code}, trail): {self.fail}", 1)
             return True
         return False
+
+    def inline_if(self, clause: ClauseCode, body: list[Any]) -> bool:
+        """`(Cond -> Then ; Else)` first in `body`, Cond a test: a Python `if` instead.
+
+        Each branch continues with its goals and the rest of the body, so no choicepoint
+        or control goal is made; a cut in either branch cuts the clause, as it would.
+        """
+        parts = _parts(body[0])
+        if parts is None or len(parts[1]) != 2 or parts[0] not in (";", "->"):
+            return False
+        cond_then, other = (parts[1][0], parts[1][1]) if parts[0] == ";" else (body[0], "fail")
+        inner = _parts(cond_then)
+        if inner is None or inner[0] != "->" or len(inner[1]) != 2:
+            return False
+        test = self.test(inner[1][0])
+        if test is None:
+            return False
+        saved = (set(self.known), set(self.dereffed), self.fail, self.base, self.state())
+        for branch, goals in ((f"if {test}:", inner[1][1]), ("else:", other)):
+            self.emit(branch, 1)
+            self.base += 1
+            self.body_code(clause, [*_conjuncts(goals), *body[1:]])
+            self.known, self.dereffed, self.fail, self.base = (
+                set(saved[0]),
+                set(saved[1]),
+                *saved[2:4],
+            )
+            self.restore(saved[4])
+        return True
+
+    def state(self) -> Any:
+        """What a branch of an inline if-then-else may change besides the slots."""
+        return None
+
+    def restore(self, state: Any) -> None:
+        """Undo a branch's changes to `state()`."""
+
+    def test(self, g: Any) -> str | None:
+        """A Python condition for test goal `g` (type tests, comparisons, `\\+`, `,`)."""
+        if g in ("true", "fail", "false"):
+            return "True" if g == "true" else "False"
+        parts = _parts(g)
+        if parts is None:
+            return None
+        name, args = parts
+        if name == "," and len(args) == 2 or name == "\\+" and len(args) == 1:
+            tests = [self.test(a) for a in args]
+            if None in tests:
+                return None
+            return f"not ({tests[0]})" if name == "\\+" else f"({tests[0]}) and ({tests[1]})"
+        if len(args) == 1 and name in _TYPE_TESTS:
+            slot = args[0]
+            if type(slot) is not Slot or slot.i not in self.known:
+                return None
+            self.deref_slot(slot.i)
+            return _TYPE_TESTS[name].format(f"v{slot.i}")
+        if len(args) == 2 and name in _COMPARE_OPS:
+            a, b = self.expr(args[0]), self.expr(args[1])
+            return None if a is None or b is None else f"{a} {_COMPARE_OPS[name]} {b}"
+        return None
+
+    def deref_slot(self, i: int) -> None:
+        """Dereference slot `i` in place, once."""
+        if i not in self.dereffed:
+            self.emit(f"while type(v{i}) is Var and v{i}.ref is not None: v{i} = v{i}.ref", 1)
+            self.dereffed.add(i)
+
+    def type_test(self, name: str, arg: Any) -> bool:
+        """Emit a type test (`number(X)`, `var(X)`, ...) of a slot holding a value."""
+        if type(arg) is not Slot or arg.i not in self.known:
+            return False
+        self.deref_slot(arg.i)
+        self.emit(f"if not ({_TYPE_TESTS[name].format(f'v{arg.i}')}): {self.fail}", 1)
+        return True
 
     def assign_or_unify(self, target: Any, value: str) -> None:
         """Bind a fresh slot to `value` directly, or unify `target` with it."""

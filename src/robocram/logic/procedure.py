@@ -37,7 +37,8 @@ __all__ = ["MAX_CLAUSES", "Procedure", "compile_procedure"]
 
 Procedure = Callable[[Any, list[Any], Any, list[list[Any]], int], Any]
 MAX_CLAUSES = 64
-MAX_KEYS = 16  # distinct first-argument keys switched on by comparisons, one by one
+MAX_KEYS = MAX_CLAUSES  # distinct first-argument keys in one procedure
+_CHAIN = 6  # up to this many keys of a kind, compare in turn; beyond, a dictionary
 
 
 class _Maybe:
@@ -165,19 +166,45 @@ class _ProcWriter(ClauseWriter):
         self.emit("if t is Term:", 2)
         if b.compound:
             self.emit("f = x[0]; n = len(x[1])", 3)
-        for j, ((name, arity), members) in enumerate(b.compound.items()):
-            test = f"f == {self.const(name)} and n == {arity}"
-            self.emit(f"{'el' if j else ''}if {test}:", 3)
-            self.branch(members, 4, switched=True)
-        self.other(b.open, 3, bool(b.compound))
+        tests = [f"f == {self.const(k[0])} and n == {k[1]}" for k in b.compound]
+        self.dispatch(list(b.compound.items()), tests, "(f, n)", b.open)
         self.emit("elif t is str or t is int:", 2)
-        for j, (key, members) in enumerate(b.atomic.items()):
-            test = f"type(x) is {type(key).__name__} and x == {self.const(key)}"
-            self.emit(f"{'el' if j else ''}if {test}:", 3)
-            self.branch(members, 4, switched=True)
-        self.other(b.open, 3, bool(b.atomic))
+        tests = [f"type(x) is {type(k).__name__} and x == {self.const(k)}" for k in b.atomic]
+        self.dispatch(list(b.atomic.items()), tests, "x", b.open)
         self.emit("else:", 2)
         self.branch(b.every, 3, switched=False)
+
+    def dispatch(
+        self, entries: list[tuple[Any, list[int]]], tests: list[str], key: str, open_: list[int]
+    ) -> None:
+        """Emit the branches of one kind of key: compared in turn, or by a dictionary.
+
+        Past `_CHAIN` keys, a dictionary gives the branch number and a binary tree of
+        comparisons on it leads to the branch, so a call costs log2(keys) comparisons.
+        """
+        if len(entries) <= _CHAIN:
+            for j, (_, members) in enumerate(entries):
+                self.emit(f"{'el' if j else ''}if {tests[j]}:", 3)
+                self.branch(members, 4, switched=True)
+            self.other(open_, 3, bool(entries))
+            return
+        table = self.const({k: j for j, (k, _) in enumerate(entries)})
+        self.emit(f"bn = {table}.get({key}, -1)", 3)
+        self.emit("if bn < 0:", 3)
+        self.branch(open_, 4, switched=False)
+        self.emit("else:", 3)
+        self.tree([m for _, m in entries], 0, len(entries), 4)
+
+    def tree(self, branches: list[list[int]], lo: int, hi: int, depth: int) -> None:
+        """Emit a binary search on `bn` over branches lo..hi-1."""
+        if hi - lo == 1:
+            self.branch(branches[lo], depth, switched=True)
+            return
+        mid = (lo + hi) // 2
+        self.emit(f"if bn < {mid}:", depth)
+        self.tree(branches, lo, mid, depth + 1)
+        self.emit("else:", depth)
+        self.tree(branches, mid, hi, depth + 1)
 
     def other(self, members: list[int], depth: int, chained: bool) -> None:
         """The branch for a key no clause names: the clauses open to any argument."""
@@ -212,6 +239,12 @@ class _ProcWriter(ClauseWriter):
             self.emit("if start < 0: start = 0; continue", depth + 1)
             self.emit("while len(trail) > mark: trail.pop().ref = None", depth + 1)
         self.base = 0
+
+    def state(self) -> Any:
+        return self.committed
+
+    def restore(self, state: Any) -> None:
+        self.committed = state
 
     def cut(self) -> None:
         # No choicepoint was made since the clause began: committing means pushing none
