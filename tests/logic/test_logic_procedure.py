@@ -7,7 +7,7 @@ from typing import Any
 import pytest
 
 from robocram.logic import KnowledgeBase, PrologInstantiationError, PrologTypeError
-from robocram.logic.procedure import MAX_CLAUSES, compile_procedure
+from robocram.logic.procedure import MAX_CLAUSES, SCAN_AFTER, compile_procedure
 
 PROGRAM = """
 len([], 0).
@@ -177,3 +177,20 @@ def test_leading_if_then_else_on_tests_runs_inline() -> None:
     for _ in range(3):
         with pytest.raises(PrologTypeError):
             kb.holds("pick(foo, _)")
+
+
+def test_long_self_recursion_that_fails_backtracks_into_alternatives() -> None:
+    kb = KnowledgeBase()
+    kb.consult("down(N) :- N > 0, M is N - 1, down(M).\ntry(X) :- ( down(5000) ; X = alt ).")
+    for _ in range(4):  # loops past CHECK_EVERY in the procedure, then fails at 0
+        assert kb.first("try(X)") == {"X": "alt"}
+
+
+def test_unbound_first_argument_of_a_long_predicate_runs_clause_by_clause() -> None:
+    kb = KnowledgeBase()
+    n = SCAN_AFTER + 5
+    kb.consult(" ".join(f"pop(c{i}, {i})." for i in range(n)) + " pop(X, -1) :- atom(X).")
+    for _ in range(4):
+        assert [a["P"] for a in kb.query("pop(C, P)")] == list(range(n))
+        assert [a["P"] for a in kb.query("pop(c3, P)")] == [3, -1]
+        assert [a["C"] for a in kb.query("pop(C, 4)")] == ["c4"]

@@ -153,6 +153,8 @@ class Machine:
                             cont = backtrack(cps)
                         elif type(cont) is list:
                             cont = self._again(proc, cont, nxt, cps)
+                            if cont is False:
+                                cont = backtrack(cps)
                         continue
                     if p.pyfn is not None:
                         if not cps and trail:
@@ -276,9 +278,15 @@ class Machine:
         return False
 
     def _again(self, proc: Any, args: list[Any], nxt: Any, cps: list[list[Any]]) -> Any:
-        """Count the CHECK_EVERY loops a procedure handed back, and call it again."""
+        """Finish a call that a procedure handed back (see procedure.py).
+
+        After CHECK_EVERY loops: count them and call the procedure again. With a Scan:
+        run the clauses one by one here (an unbound first argument of a long predicate).
+        """
         while type(args) is list:
-            args.pop()
+            scan = args.pop()
+            if scan is not None:
+                return self._call_clauses(scan.pred, args, nxt, cps)
             self.budget.spend(CHECK_EVERY)
             args = proc(args, self.trail, nxt, cps, 0)
         return args

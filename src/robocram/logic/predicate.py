@@ -61,7 +61,7 @@ class Pred:
         """Count a call; on the third, compile the switching procedure if it qualifies."""
         self.warm += 1
         if self.warm == WARM_CALLS and not self.dynamic and self.pyfn is None:
-            self.proc = compile_procedure(self.clauses)
+            self.proc = compile_procedure(self.clauses, self)
 
     def copy(self) -> Pred:
         """A new predicate with the same definition (its own clause list and no code)."""

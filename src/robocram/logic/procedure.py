@@ -11,8 +11,9 @@ or `d/3` of deriv never make one. A clause ending in a call to the predicate its
 loops in the same frame.
 
     proc(args, trail, nxt, cps, start) -> continuation, or False when no clause from
-        `start` on gets past its inline goals; or the argument list plus one extra item
-        after CHECK_EVERY loops, so that the machine counts them and calls again
+        `start` on gets past its inline goals; or the argument list plus one extra item:
+        None after CHECK_EVERY loops, so that the machine counts them and calls again,
+        or a Scan to have the machine run the clauses one by one
 
 The first argument is switched on before any clause runs: for each principal functor
 or constant in the clause heads, a branch holds the code of just the clauses that can
@@ -33,11 +34,12 @@ from robocram.logic.limits import CHECK_EVERY
 from robocram.logic.template import Tmpl
 from robocram.logic.terms import Term
 
-__all__ = ["MAX_CLAUSES", "Procedure", "compile_procedure"]
+__all__ = ["MAX_CLAUSES", "SCAN_AFTER", "Procedure", "Scan", "compile_procedure"]
 
 Procedure = Callable[[Any, list[Any], Any, list[list[Any]], int], Any]
 MAX_CLAUSES = 64
 MAX_KEYS = MAX_CLAUSES  # distinct first-argument keys in one procedure
+SCAN_AFTER = 8  # clauses a call with an unbound first argument tries in the procedure
 _CHAIN = 6  # up to this many keys of a kind, compare in turn; beyond, a dictionary
 
 
@@ -51,8 +53,22 @@ class _Maybe:
 MAYBE = _Maybe()
 
 
-def compile_procedure(stored: Sequence[ClauseCode]) -> Procedure | None:
-    """Return the procedure of a static predicate's clauses, or None when not worth it."""
+class Scan:
+    """Handed back (last in the argument list) to have the machine run `pred` clause by clause."""
+
+    __slots__ = ("pred",)
+
+    def __init__(self, pred: Any) -> None:
+        self.pred = pred
+
+
+def compile_procedure(stored: Sequence[ClauseCode], owner: Any = None) -> Procedure | None:
+    """Return the procedure of a static predicate's clauses, or None when not worth it.
+
+    With `owner` (the predicate), a call with the first argument unbound that would try
+    more than SCAN_AFTER clauses is handed back to the machine, which resumes each clause
+    in O(1) instead of re-entering the procedure.
+    """
     clauses = list(stored)
     if not 1 <= len(clauses) <= MAX_CLAUSES:
         return None
@@ -60,7 +76,7 @@ def compile_procedure(stored: Sequence[ClauseCode]) -> Procedure | None:
     if branches is None:
         return None
     try:
-        writer = _ProcWriter(clauses)
+        writer = _ProcWriter(clauses, owner)
         writer.procedure(branches)
         params = ", ".join(f"k{i}" for i in range(len(writer.consts)))
         source = "\n".join(
@@ -125,9 +141,10 @@ def _key(t: Any) -> Key | None:
 class _ProcWriter(ClauseWriter):
     """Writes the switch and, per branch, each clause; a failing clause falls through."""
 
-    def __init__(self, clauses: list[ClauseCode]) -> None:
+    def __init__(self, clauses: list[ClauseCode], owner: Any = None) -> None:
         super().__init__()
         self.clauses = clauses
+        self.owner = owner
         self.arity = len(clauses[0].head)
         self.names = "".join(f"a{i}, " for i in range(self.arity))
         self.committed = False
@@ -172,7 +189,10 @@ class _ProcWriter(ClauseWriter):
         tests = [f"type(x) is {type(k).__name__} and x == {self.const(k)}" for k in b.atomic]
         self.dispatch(list(b.atomic.items()), tests, "x", b.open)
         self.emit("else:", 2)
-        self.branch(b.every, 3, switched=False)
+        if self.owner is not None and len(b.every) > SCAN_AFTER:
+            self.emit(f"return [{self.names}{self.const(Scan(self.owner))}]", 3)
+        else:
+            self.branch(b.every, 3, switched=False)
 
     def dispatch(
         self, entries: list[tuple[Any, list[int]]], tests: list[str], key: str, open_: list[int]
