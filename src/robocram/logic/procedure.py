@@ -176,18 +176,18 @@ class _ProcWriter(ClauseWriter):
         if not self.arity:
             self.branch(b.every, 2, switched=False)
             return
-        self.emit("x = a0", 2)
-        self.emit("while type(x) is Var and x.ref is not None: x = x.ref", 2)
-        self.emit("a0 = x", 2)
-        self.emit("t = type(x)", 2)
+        self.emit("while type(a0) is Var and a0.ref is not None: a0 = a0.ref", 2)
+        self.emit("t = type(a0)", 2)
         self.emit("if t is Term:", 2)
-        if b.compound:
-            self.emit("f = x[0]; n = len(x[1])", 3)
-        tests = [f"f == {self.const(k[0])} and n == {k[1]}" for k in b.compound]
+        if len(b.compound) > 1:
+            self.emit("f = a0[0]; n = len(a0[1])", 3)
+            tests = [f"f == {self.const(k[0])} and n == {k[1]}" for k in b.compound]
+        else:  # one functor: test it in place
+            tests = [f"a0[0] == {self.const(k[0])} and len(a0[1]) == {k[1]}" for k in b.compound]
         self.dispatch(list(b.compound.items()), tests, "(f, n)", b.open)
         self.emit("elif t is str or t is int:", 2)
-        tests = [f"type(x) is {type(k).__name__} and x == {self.const(k)}" for k in b.atomic]
-        self.dispatch(list(b.atomic.items()), tests, "x", b.open)
+        tests = [f"t is {type(k).__name__} and a0 == {self.const(k)}" for k in b.atomic]
+        self.dispatch(list(b.atomic.items()), tests, "a0", b.open)
         self.emit("else:", 2)
         if self.owner is not None and len(b.every) > SCAN_AFTER:
             self.emit(f"return [{self.names}{self.const(Scan(self.owner))}]", 3)
