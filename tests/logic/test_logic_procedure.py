@@ -194,3 +194,14 @@ def test_unbound_first_argument_of_a_long_predicate_runs_clause_by_clause() -> N
         assert [a["P"] for a in kb.query("pop(C, P)")] == list(range(n))
         assert [a["P"] for a in kb.query("pop(c3, P)")] == [3, -1]
         assert [a["C"] for a in kb.query("pop(C, 4)")] == ["c4"]
+
+
+def test_identity_tests_inline_and_as_builtins_agree() -> None:
+    kb = KnowledgeBase()
+    kb.consult("in(X, [Y|Ys]) :- ( X == Y -> true ; in(X, Ys) ).\nother(X, Y) :- X \\== Y.\n")
+    for _ in range(4):
+        assert kb.holds("in(f(A, 1), [g, f(B, 1), f(A, 1)])")
+        assert not kb.holds("in(f(_, 1), [f(_, 1)])")  # different variables
+        assert not kb.holds("in(1, [1.0])")
+        assert kb.holds("other(1, 1.0), \\+ other(a, a), X = Y, \\+ other(X, Y)")
+    assert kb.holds("_X = f(_X), _Y = f(_Y), _X == _Y")  # cyclic terms end

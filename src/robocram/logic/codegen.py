@@ -26,7 +26,7 @@ from robocram.logic.arith import BINARY_FUNCTIONS, apply_binary, evaluate
 from robocram.logic.lru import LRUCache
 from robocram.logic.template import Slot, Tmpl
 from robocram.logic.terms import Term, Var, new_term
-from robocram.logic.unify import unify
+from robocram.logic.unify import identical, unify
 
 __all__ = [
     "FACTORY_CACHE_SIZE",
@@ -53,6 +53,7 @@ _NAMESPACE: dict[str, Any] = {
     "Term": Term,
     "new_term": new_term,
     "unify": unify,
+    "identical": identical,
     "ev": evaluate,
     "ap2": apply_binary,
 }
@@ -340,6 +341,11 @@ class ClauseWriter:
         parts = _parts(g)
         if parts is not None and len(parts[1]) == 1 and parts[0] in _TYPE_TESTS:
             return self.type_test(parts[0], parts[1][0])
+        if parts is not None and len(parts[1]) == 2 and parts[0] in ("==", "\\=="):
+            test = self.test(g)
+            if test is not None:
+                self.emit(f"if not ({test}): {self.fail}", 1)
+            return test is not None
         if parts is None or len(parts[1]) != 2:
             return False
         name, (left, right) = parts
@@ -429,6 +435,11 @@ class ClauseWriter:
         if len(args) == 2 and name in _COMPARE_OPS:
             a, b = self.expr(args[0]), self.expr(args[1])
             return None if a is None or b is None else f"{a} {_COMPARE_OPS[name]} {b}"
+        if len(args) == 2 and name in ("==", "\\=="):
+            if any(i not in self.known for i in _slots_in(g, [])):
+                return None
+            same = f"identical({self.build(args[0])}, {self.build(args[1])})"
+            return same if name == "==" else f"not {same}"
         return None
 
     def deref_slot(self, i: int) -> None:

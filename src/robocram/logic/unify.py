@@ -8,6 +8,7 @@ from robocram.logic.terms import PString, Term, Var, deref, new_term
 
 __all__ = [
     "copy_resolved",
+    "identical",
     "is_acyclic",
     "order_key",
     "undo",
@@ -205,6 +206,44 @@ def _copy_deep(term: Any, mapping: dict[Var, Var]) -> Any:
         else:
             out.append(t)
     return out[0]
+
+
+def identical(a: Any, b: Any) -> bool:
+    """`a == b` in Prolog: the same term, variables included, without building order keys.
+
+    >>> x = Var(); identical(Term("f", (x, 1)), Term("f", (x, 1))), identical(1, 1.0)
+    (True, False)
+    """
+    stack = [(a, b)]
+    seen: set[tuple[int, int]] | None = None
+    steps = 0
+    while stack:
+        a, b = stack.pop()
+        while type(a) is Var and a.ref is not None:
+            a = a.ref
+        while type(b) is Var and b.ref is not None:
+            b = b.ref
+        if a is b:
+            continue
+        ta = type(a)
+        if ta is not type(b) or ta is Var:
+            return False
+        if ta is Term:
+            if a[0] != b[0] or len(a[1]) != len(b[1]):
+                return False
+            steps += 1
+            if steps > _FAST_STEPS:  # perhaps cyclic: compare each pair of compounds once
+                seen = set() if seen is None else seen
+                if (id(a), id(b)) in seen:
+                    continue
+                seen.add((id(a), id(b)))
+            stack.extend(zip(a[1], b[1], strict=True))
+        elif ta in _PRIMITIVE:
+            if a != b:
+                return False
+        else:
+            return False  # opaque objects: identical only when the same object
+    return True
 
 
 def order_key(term: Any) -> tuple[Any, ...]:
