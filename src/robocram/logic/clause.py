@@ -80,6 +80,10 @@ class Clause:
         for i in range(len(head)):
             if not unify_head(head[i], args[i], regs, trail):
                 return False
+        return self.body(regs, cb, nxt)
+
+    def body(self, regs: list[Any], cb: int, nxt: Any) -> Any:
+        """The continuation running the body goals built against `regs`, then `nxt`."""
         cont = nxt
         for g in self.body_rev:
             cont = (build(g, regs), cb, cont)
@@ -100,10 +104,7 @@ class Clause:
         for i in range(len(head)):
             if not unify_checked(build(head[i], regs), args[i], trail, error):
                 return False
-        cont = nxt
-        for g in self.body_rev:
-            cont = (build(g, regs), cb, cont)
-        return cont
+        return self.body(regs, cb, nxt)
 
     def interpret_error(
         self, args: tuple[Any, ...], trail: list[Var], cb: int, nxt: Any, cps: list[list[Any]]

@@ -14,7 +14,7 @@ from typing import Any
 
 from robocram.logic.errors import PrologOccursCheckError
 from robocram.logic.terms import Term, Var
-from robocram.logic.unify import unify
+from robocram.logic.unify import unify_iterative
 
 __all__ = ["occurs_in", "unify_checked"]
 
@@ -37,28 +37,12 @@ def occurs_in(v: Var, t: Any) -> bool:
 
 def unify_checked(a: Any, b: Any, trail: list[Var], error: bool) -> bool:
     """Unify `a` and `b` without making cyclic terms; `error` raises instead of failing."""
-    stack = [(a, b)]
-    while stack:
-        a, b = stack.pop()
-        while type(a) is Var and a.ref is not None:
-            a = a.ref
-        while type(b) is Var and b.ref is not None:
-            b = b.ref
-        if a is b:
-            continue
-        if type(a) is not Var and type(b) is Var:
-            a, b = b, a
-        if type(a) is Var:
-            if type(b) is Term and occurs_in(a, b):
-                if error:
-                    raise PrologOccursCheckError(a, b)
-                return False
-            a.ref = b
-            trail.append(a)
-        elif type(a) is Term:
-            if type(b) is not Term or a[0] != b[0] or len(a[1]) != len(b[1]):
-                return False
-            stack.extend(zip(a[1], b[1], strict=True))
-        elif not unify(a, b, trail):  # two constants
-            return False
-    return True
+
+    def may_bind(v: Var, t: Any) -> bool:
+        if not occurs_in(v, t):
+            return True
+        if error:
+            raise PrologOccursCheckError(v, t)
+        return False
+
+    return unify_iterative(a, b, trail, may_bind)

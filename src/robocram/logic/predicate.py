@@ -107,11 +107,15 @@ class Pred:
         self.proc = None
         self.warm = 0
 
+    def changed(self) -> None:
+        """Forget the compiled procedure: the clauses changed."""
+        self.proc = None
+        self.warm = 0
+
     def add_last(self, clause: Clause) -> None:
         """Append a clause in place, keeping any built index up to date."""
         self.store.append(clause)
-        self.proc = None
-        self.warm = 0
+        self.changed()
         index = self.index
         if index is None:
             return
@@ -140,8 +144,7 @@ class Pred:
             self.head = room
         self.head -= 1
         self.store[self.head] = clause
-        self.proc = None
-        self.warm = 0
+        self.changed()
         index = self.index
         if index is None:
             return

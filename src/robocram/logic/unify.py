@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 from robocram.logic.terms import PString, Term, Var, deref, new_term
@@ -13,11 +14,13 @@ __all__ = [
     "order_key",
     "undo",
     "unify",
+    "unify_iterative",
     "unify_rational",
     "variant_key",
 ]
 
 _PRIMITIVE = frozenset([str, int, float, PString])
+BindCheck = Callable[[Var, Any], bool]
 _FAST_STEPS = 100_000
 
 
@@ -88,6 +91,14 @@ def unify_rational(a: Any, b: Any, trail: list[Var]) -> bool:
     >>> unify(x, Term("f", (x,)), t) and unify(y, Term("f", (y,)), t) and unify(x, y, t)
     True
     """
+    return unify_iterative(a, b, trail, None)
+
+
+def unify_iterative(a: Any, b: Any, trail: list[Var], may_bind: BindCheck | None) -> bool:
+    """Unify with an explicit stack; compound pairs met before count as equal (so cyclic
+    terms end), and `may_bind(var, value)` vets each binding of a variable to a compound
+    (the occurs check).
+    """
     seen: set[tuple[int, int]] = set()
     stack = [(a, b)]
     while stack:
@@ -98,12 +109,13 @@ def unify_rational(a: Any, b: Any, trail: list[Var]) -> bool:
             b = b.ref
         if a is b:
             continue
+        if type(a) is not Var and type(b) is Var:
+            a, b = b, a
         if type(a) is Var:
+            if may_bind is not None and type(b) is Term and not may_bind(a, b):
+                return False
             a.ref = b
             trail.append(a)
-        elif type(b) is Var:
-            b.ref = a
-            trail.append(b)
         elif type(a) is Term and type(b) is Term:
             if a[0] != b[0] or len(a[1]) != len(b[1]):
                 return False
