@@ -69,8 +69,25 @@ def unify(a: Any, b: Any, trail: list[Var]) -> bool:
             if steps > _FAST_STEPS:
                 return unify_rational(a, b, trail)
             try:
-                for i in range(n):
-                    if not unify(aa[i], ab[i], trail):
+                for i in range(n):  # variables and constants here, compounds recursively
+                    x = aa[i]
+                    y = ab[i]
+                    while type(x) is Var and x.ref is not None:
+                        x = x.ref
+                    while type(y) is Var and y.ref is not None:
+                        y = y.ref
+                    if x is y:
+                        continue
+                    if type(x) is Var:
+                        x.ref = y
+                        trail.append(x)
+                    elif type(y) is Var:
+                        y.ref = x
+                        trail.append(y)
+                    elif type(x) is type(y) and type(x) is not Term:
+                        if x != y:
+                            return False
+                    elif not unify(x, y, trail):
                         return False
             except RecursionError:
                 return unify_rational(a, b, trail)
