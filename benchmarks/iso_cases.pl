@@ -118,6 +118,52 @@ case(118, (upcase_atom(abc, X), X == 'ABC'), true).
 case(119, (term_variables(f(X, g(Y, X)), L), L == [X, Y]), true).
 case(120, (repeat, !), true).
 
+case(121, (set_prolog_flag(occurs_check, true), (X = f(X) -> R = yes ; R = no),
+           set_prolog_flag(occurs_check, false), R == no), true).
+case(122, (set_prolog_flag(occurs_check, error), catch(X = f(X), error(E, _), true),
+           set_prolog_flag(occurs_check, false), nonvar(E), E = occurs_check(_, _)), true).
+case(123, (current_prolog_flag(occurs_check, F), F == false), true).
+case(124, (set_prolog_flag(occurs_check, true), (iso_same(Y, g(Y)) -> R = yes ; R = no),
+           set_prolog_flag(occurs_check, false), R == no), true).
+case(125, (set_prolog_flag(occurs_check, false), asserta(iso_a(1)), asserta(iso_a(2)),
+           findall(X, iso_a(X), L), retractall(iso_a(_)), L == [2, 1]), true).
+case(126, (assertz(iso_b(1)), asserta(iso_b(0)), assertz(iso_b(2)), findall(X, iso_b(X), L),
+           retractall(iso_b(_)), L == [0, 1, 2]), true).
+case(127, (assertz(iso_c(1)), findall(X, (iso_c(X), Y is X + 1, asserta(iso_c(Y))), L),
+           retractall(iso_c(_)), L == [1]), true).
+case(128, (X = 1, (var(X) -> R = v ; integer(X) -> R = i ; R = o), R == i), true).
+case(129, (atom_length(abc, N), N == 3), true).
+case(130, atom_length(_, _), instantiation_error).
+case(131, (sub_atom(abcde, 1, 3, A, S), S == bcd, A == 1), true).
+case(132, atom_chars(_, [a|_]), instantiation_error).
+case(133, (X is 7 // -2, X == -3), true).
+case(134, (X is 7 mod -2, X == -1), true).
+case(135, (X is -7 rem 2, X == -1), true).
+case(136, _ is 1 / 0, evaluation_error(zero_divisor)).
+case(137, _ is foo + 1, type_error(evaluable, foo/0)).
+case(138, (X is max(1, 2.0), X == 2.0), true).
+case(139, (X is truncate(-2.5), X == -2), true).
+case(140, atom_codes(_, _), instantiation_error).
+case(141, (copy_term(f(X, Y, X), C), C = f(A, B, D), A == D, A \== B), true).
+case(142, (msort([b, a, c, a], L), L == [a, a, b, c]), true).
+case(143, (keysort([b-1, a-2, b-0], L), L == [a-2, b-1, b-0]), true).
+case(144, (setof(X, member(X, [c, a, b, a]), L), L == [a, b, c]), true).
+case(145, bagof(X, member(X, []), _), false).
+case(146, (catch(throw(my), B, true), B == my), true).
+case(147, call(1), type_error(callable, 1)).
+case(148, (char_code(C, 0'a), C == a), true).
+case(149, char_code(_, _), instantiation_error).
+case(150, (atom_chars(A, [a, b]), A == ab), true).
+case(151, (number_chars(N, ['1', '2']), N == 12), true).
+case(152, number_chars(_, [a]), syntax_error(_)).
+case(153, (iso_kind(f(x), K), K == compound), true).
+case(154, (iso_kind(_, K), K == var), true).
+case(155, (findall(K, iso_kind(3, K), L), L == [small]), true).
+
+iso_same(X, X).
+iso_kind(X, K) :- ( var(X) -> K = var ; integer(X), X < 10 -> K = small ; compound(X) -> K = compound
+                  ; K = other ).
+
 % The driver: one line per case, "Id pass|fail Result".
 iso_result(G, R) :- catch((call(G) -> R = true ; R = false), Ball, iso_ball(Ball, R)).
 iso_ball(error(F, _), F) :- !.

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import itertools
+
 from robocram.logic import KnowledgeBase
 
 
@@ -46,3 +48,30 @@ def test_retract_uses_first_argument_index() -> None:
     assert kb.first("kv(250, V)") is None
     assert kb.first("kv(251, V)") == {"V": "v251"}
     assert kb.first("clause(kv(10, V), true)") == {"V": "v10"}
+
+
+def test_asserta_100k_in_a_loop_keeps_order_and_count() -> None:
+    kb = KnowledgeBase()
+    kb.consult(":- dynamic(front/1).")
+    n = 100_000
+    assert kb.holds("between(1, N, I), asserta(front(I)), fail ; true", N=n)
+    assert kb.first("aggregate_all(count, front(_), C)") == {"C": n}
+    first = [a["X"] for a in itertools.islice(kb.query("front(X)"), 3)]
+    assert first == [n, n - 1, n - 2]
+    assert kb.first("findall(X, front(X), L), last(L, Last)")["Last"] == 1  # type: ignore[index]
+    pred = kb._preds[("front", 1)]
+    assert pred.head < n  # the room at the front is reused, not reallocated per clause
+
+
+def test_asserta_during_a_running_call_is_not_seen_by_it() -> None:
+    kb = KnowledgeBase()
+    kb.consult(":- dynamic(s/1).\ns(1). s(2).")
+    goal = "findall(X, (s(X), Y is X + 10, asserta(s(Y))), L)"
+    goal = goal.replace("X", "_X").replace("Y", "_Y")
+    assert kb.first(goal) == {"L": [1, 2]}
+    assert [a["X"] for a in kb.query("s(X)")] == [12, 11, 1, 2]
+    # the index keeps the new clauses in front: keyed and variable first arguments
+    assert kb.first("s(11)") == {}
+    kb.asserta("s(_)")
+    assert len(list(kb.query("s(1)"))) == 2  # s(_) first, then s(1)
+    assert len([a for a in kb.query("s(X)")]) == 5

@@ -7,7 +7,7 @@ from typing import Any
 import pytest
 
 from robocram.logic import KnowledgeBase, PrologInstantiationError, PrologTypeError
-from robocram.logic.procedure import compile_procedure
+from robocram.logic.procedure import MAX_CLAUSES, SCAN_AFTER, compile_procedure
 
 PROGRAM = """
 len([], 0).
@@ -41,12 +41,45 @@ def kb() -> KnowledgeBase:
     return k
 
 
-def test_procedure_compiled_only_for_distinct_keys(kb: KnowledgeBase) -> None:
-    assert compile_procedure(kb._preds[("len", 2)].clauses) is not None
-    assert compile_procedure(kb._preds[("count", 1)].clauses) is None  # count(N) matches any key
-    # walk/3 has [_|_] twice and no other distinct position
-    assert compile_procedure(kb._preds[("walk", 3)].clauses) is None
-    assert compile_procedure(kb._preds[("shape", 2)].clauses) is None  # 3 and 3.0 share a key
+def test_procedure_compiled_for_every_small_static_predicate(kb: KnowledgeBase) -> None:
+    for key in [("len", 2), ("count", 1), ("walk", 3), ("shape", 2)]:
+        assert compile_procedure(kb._preds[key].clauses) is not None
+    big = KnowledgeBase()
+    big.consult(" ".join(f"f({i})." for i in range(MAX_CLAUSES + 1)))
+    assert compile_procedure(big._preds[("f", 1)].clauses) is None  # indexed clause by clause
+
+
+def test_procedure_keeps_clause_order_around_variable_heads() -> None:
+    kb = KnowledgeBase()
+    kb.consult("m(a, 1). m(X, 2) :- X \\== b. m(b, 3). m(f(_), 5). m(_, 4).")
+    assert answers(kb, "m(a, R)", "R") == [1, 2, 4]
+    assert answers(kb, "m(b, R)", "R") == [3, 4]
+    assert answers(kb, "m(c, R)", "R") == [2, 4]
+    assert answers(kb, "m(f(1), R)", "R") == [2, 5, 4]
+    assert answers(kb, "m(1.0, R)", "R") == [2, 4]
+    assert answers(kb, "m(X, R)", "R") == [1, 2, 3, 5, 4]
+
+
+def test_procedure_cut_after_guard_commits() -> None:
+    kb = KnowledgeBase()
+    kb.consult("g(X, R) :- X > 0, !, X < 5, R = small. g(_, other).")
+    assert answers(kb, "g(3, R)", "R") == ["small"]
+    assert answers(kb, "g(10, R)", "R") == []  # committed by the cut, then X < 5 fails
+    assert answers(kb, "g(-1, R)", "R") == ["other"]
+
+
+def test_compiled_arithmetic_in_body_keeps_iso_errors() -> None:
+    kb = KnowledgeBase()
+    kb.consult("h(X, Y, Z) :- atom(a), Z is X * Y + 1, Z > X - 1.5.")
+    assert answers(kb, "h(2, 3, Z)", "Z") == [7]
+    assert answers(kb, "h(2.5, 2, Z)", "Z") == [6.0]
+    assert answers(kb, "h(-1, 3, Z)", "Z") == [-2]
+    assert answers(kb, "h(-2, 3, Z)", "Z") == []  # -5 > -3.5 fails
+    for _ in range(3):
+        with pytest.raises(PrologInstantiationError):
+            kb.holds("h(2, _, _)")
+        with pytest.raises(PrologTypeError):
+            kb.holds("h(2, foo, _)")
 
 
 def test_procedure_recursion_and_unbound_switch(kb: KnowledgeBase) -> None:
@@ -118,3 +151,57 @@ def test_procedure_and_clause_too_deep_to_compile_still_answer() -> None:
     for _ in range(4):
         assert kb.first("p(L, Y)", L=list(range(n))) == {"Y": n - 1}
         assert kb.first("p(foo, Y)") == {"Y": "bar"}
+
+
+def test_leading_if_then_else_on_tests_runs_inline() -> None:
+    kb = KnowledgeBase()
+    kb.consult(
+        """
+        kind(X, K) :- ( var(X) -> K = var ; integer(X), X > 10 -> K = big ; atom(X) -> K = atom
+                      ; K = other ).
+        pick(X, R) :- ( X > 0 -> !, R = pos ; R = nonpos ).
+        pick(_, late).
+        only(X, R) :- ( atom(X) -> R = yes ), true.
+        only(_, second).
+        """
+    )
+    assert answers(kb, "kind(_, K)", "K") == ["var"]
+    assert answers(kb, "kind(42, K)", "K") == ["big"]
+    assert answers(kb, "kind(7, K)", "K") == ["other"]
+    assert answers(kb, "kind(a, K)", "K") == ["atom"]
+    assert answers(kb, "kind(f(x), K)", "K") == ["other"]
+    assert answers(kb, "pick(3, R)", "R") == ["pos"]  # the cut in Then cuts pick/2
+    assert answers(kb, "pick(-3, R)", "R") == ["nonpos", "late"]
+    assert answers(kb, "only(a, R)", "R") == ["yes", "second"]
+    assert answers(kb, "only(1, R)", "R") == ["second"]  # no else: the first clause fails
+    for _ in range(3):
+        with pytest.raises(PrologTypeError):
+            kb.holds("pick(foo, _)")
+
+
+def test_long_self_recursion_that_fails_backtracks_into_alternatives() -> None:
+    kb = KnowledgeBase()
+    kb.consult("down(N) :- N > 0, M is N - 1, down(M).\ntry(X) :- ( down(5000) ; X = alt ).")
+    for _ in range(4):  # loops past CHECK_EVERY in the procedure, then fails at 0
+        assert kb.first("try(X)") == {"X": "alt"}
+
+
+def test_unbound_first_argument_of_a_long_predicate_runs_clause_by_clause() -> None:
+    kb = KnowledgeBase()
+    n = SCAN_AFTER + 5
+    kb.consult(" ".join(f"pop(c{i}, {i})." for i in range(n)) + " pop(X, -1) :- atom(X).")
+    for _ in range(4):
+        assert [a["P"] for a in kb.query("pop(C, P)")] == list(range(n))
+        assert [a["P"] for a in kb.query("pop(c3, P)")] == [3, -1]
+        assert [a["C"] for a in kb.query("pop(C, 4)")] == ["c4"]
+
+
+def test_identity_tests_inline_and_as_builtins_agree() -> None:
+    kb = KnowledgeBase()
+    kb.consult("in(X, [Y|Ys]) :- ( X == Y -> true ; in(X, Ys) ).\nother(X, Y) :- X \\== Y.\n")
+    for _ in range(4):
+        assert kb.holds("in(f(A, 1), [g, f(B, 1), f(A, 1)])")
+        assert not kb.holds("in(f(_, 1), [f(_, 1)])")  # different variables
+        assert not kb.holds("in(1, [1.0])")
+        assert kb.holds("other(1, 1.0), \\+ other(a, a), X = Y, \\+ other(X, Y)")
+    assert kb.holds("_X = f(_X), _Y = f(_Y), _X == _Y")  # cyclic terms end

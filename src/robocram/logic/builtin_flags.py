@@ -2,8 +2,8 @@
 
 `double_quotes` (codes, chars, atom, string) decides what "text" reads as, from the next
 clause or query on; `unknown` (error, fail, warning) what a call to an undefined
-predicate does. `occurs_check` is always false: the engine unifies without it (use
-unify_with_occurs_check/2), so asking for more is refused rather than ignored.
+predicate does; `occurs_check` (false, true, error) whether unification may make cyclic
+terms, fails instead, or raises `occurs_check(Var, Term)` (see occurs.py).
 """
 
 from __future__ import annotations
@@ -30,7 +30,7 @@ Args = tuple[Any, ...]
 _CHANGEABLE: dict[str, tuple[str, ...]] = {
     "double_quotes": ("codes", "chars", "atom", "string"),
     "unknown": ("error", "fail", "warning"),
-    "occurs_check": ("false",),
+    "occurs_check": ("false", "true", "error"),
     "debug": ("false", "true"),
 }
 _READ_ONLY: dict[str, Any] = {
@@ -74,6 +74,8 @@ def _set_flag(m: Engine, a: Args) -> bool:
         )
     with m.kb._lock:
         m.kb._flags[flag] = value
+    if flag == "occurs_check":
+        m.occurs_check = value  # the running query unifies the new way from here on
     return True
 
 

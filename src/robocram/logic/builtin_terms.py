@@ -14,7 +14,7 @@ from robocram.logic.errors import (
     error_from_ball,
 )
 from robocram.logic.terms import NIL, PString, Term, Var, deref, make_list
-from robocram.logic.unify import copy_resolved, is_acyclic, order_key
+from robocram.logic.unify import copy_resolved, identical, is_acyclic, order_key
 
 if TYPE_CHECKING:
     from robocram.logic.engine import Engine
@@ -245,8 +245,8 @@ def _variables(t: Any) -> list[Var]:
 BUILTINS: tuple[Builtin, ...] = (
     det("unify_with_occurs_check", _unify_with_occurs_check, 2),
     det("subsumes_term", _subsumes_term, 2),
-    det("==", _ordering(lambda c: c == 0), 2),
-    det("\\==", _ordering(lambda c: c != 0), 2),
+    det("==", lambda m, a: identical(a[0], a[1]), 2),
+    det("\\==", lambda m, a: not identical(a[0], a[1]), 2),
     det("@<", _ordering(lambda c: c < 0), 2),
     det("@>", _ordering(lambda c: c > 0), 2),
     det("@=<", _ordering(lambda c: c <= 0), 2),

@@ -9,6 +9,7 @@ from __future__ import annotations
 from typing import Any
 
 from robocram.logic.codegen import compile_clause_fn
+from robocram.logic.occurs import unify_checked
 from robocram.logic.template import build, index_key_of_template, unify_head
 from robocram.logic.terms import Var
 
@@ -79,7 +80,34 @@ class Clause:
         for i in range(len(head)):
             if not unify_head(head[i], args[i], regs, trail):
                 return False
+        return self.body(regs, cb, nxt)
+
+    def body(self, regs: list[Any], cb: int, nxt: Any) -> Any:
+        """The continuation running the body goals built against `regs`, then `nxt`."""
         cont = nxt
         for g in self.body_rev:
             cont = (build(g, regs), cb, cont)
         return cont
+
+    def interpret_checked(
+        self,
+        args: tuple[Any, ...],
+        trail: list[Var],
+        cb: int,
+        nxt: Any,
+        cps: list[list[Any]],
+        error: bool = False,
+    ) -> Any:
+        """`interpret` with the occurs check in head unification (flag true or error)."""
+        regs: list[Any] = [None] * self.nvars
+        head = self.head
+        for i in range(len(head)):
+            if not unify_checked(build(head[i], regs), args[i], trail, error):
+                return False
+        return self.body(regs, cb, nxt)
+
+    def interpret_error(
+        self, args: tuple[Any, ...], trail: list[Var], cb: int, nxt: Any, cps: list[list[Any]]
+    ) -> Any:
+        """`interpret_checked` raising on a cyclic binding (flag error)."""
+        return self.interpret_checked(args, trail, cb, nxt, cps, error=True)

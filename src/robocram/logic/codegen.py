@@ -26,7 +26,7 @@ from robocram.logic.arith import BINARY_FUNCTIONS, apply_binary, evaluate
 from robocram.logic.lru import LRUCache
 from robocram.logic.template import Slot, Tmpl
 from robocram.logic.terms import Term, Var, new_term
-from robocram.logic.unify import unify
+from robocram.logic.unify import identical, unify
 
 __all__ = [
     "FACTORY_CACHE_SIZE",
@@ -53,6 +53,7 @@ _NAMESPACE: dict[str, Any] = {
     "Term": Term,
     "new_term": new_term,
     "unify": unify,
+    "identical": identical,
     "ev": evaluate,
     "ap2": apply_binary,
 }
@@ -63,6 +64,19 @@ _FACTORIES: LRUCache[str, Callable[..., Any]] = LRUCache(FACTORY_CACHE_SIZE)
 _ARITH_OPS = {"+": "+", "-": "-", "*": "*"}
 _COMPARE_OPS = {"<": "<", ">": ">", "=<": "<=", ">=": ">=", "=:=": "==", "=\\=": "!="}
 _EXACT_TYPES = (str, int, float)
+# ISO type tests inlined at the head of a clause body: the condition on the dereferenced value
+_TYPE_TESTS = {
+    "var": "type({0}) is Var",
+    "nonvar": "type({0}) is not Var",
+    "atom": "type({0}) is str",
+    "number": "type({0}) is int or type({0}) is float",
+    "integer": "type({0}) is int",
+    "float": "type({0}) is float",
+    "atomic": "type({0}) is not Var and type({0}) is not Term",
+    "compound": "type({0}) is Term",
+    "callable": "type({0}) is str or type({0}) is Term",
+}
+_CONTROL = {(",", 2), (";", 2), ("->", 2), ("*->", 2), ("\\+", 1)}
 
 
 def compile_clause_fn(clause: ClauseCode) -> ClauseFn:
@@ -114,6 +128,36 @@ def _is_self_call(goal: Any, clause: ClauseCode) -> bool:
     return parts is not None and parts[0] == clause.name and len(parts[1]) == len(clause.head)
 
 
+def _conjuncts(g: Any) -> list[Any]:
+    """The goals of a conjunction `(A, B, ...)`, in order."""
+    parts = _parts(g)
+    if parts is not None and parts[0] == "," and len(parts[1]) == 2:
+        return [*_conjuncts(parts[1][0]), *_conjuncts(parts[1][1])]
+    return [g]
+
+
+def arith_function(name: str, args: tuple[Any, ...], slots: list[int]) -> Any:
+    """Compile comparison or `is/2` goal `name(args)` to a function of its slots' values.
+
+    The function returns the comparison's truth, or the value of `is/2`'s expression;
+    None when the expression has a part that must be evaluated at run time as a term.
+    """
+    writer = ClauseWriter()
+    writer.known = set(slots)
+    if name == "is":
+        code = writer.expr(args[1])
+    else:
+        left, right = writer.expr(args[0]), writer.expr(args[1])
+        code = None if left is None or right is None else f"{left} {_COMPARE_OPS[name]} {right}"
+    if code is None:
+        return None
+    params = ", ".join(f"k{i}" for i in range(len(writer.consts)))
+    values = ", ".join(f"v{i}" for i in slots)
+    head = [f"def make({params}):", f"  def fn({values}):"]
+    source = "\n".join([*head, *writer.lines, f"    return {code}", "  return fn", ""])
+    return make_factory(source)(*writer.consts)
+
+
 class ClauseWriter:
     """Emits the Python source of clause code, tracking which slots hold values."""
 
@@ -124,50 +168,67 @@ class ClauseWriter:
         self.dereffed: set[int] = set()
         self.temps = 0
         self.base = 0
+        self.fail = "return False"  # the statement a failing head or inline goal runs
 
     def clause_source(self, clause: ClauseCode) -> str:
         """Generate `make(k0, k1, ...)` returning the clause function."""
         arity = len(clause.head)
         if arity:
             self.emit(f"{_arg_names(arity)} = args", 1)
-        self.clause_code(clause, loop=False)
+        self.clause_code(clause)
         params = ", ".join(f"k{i}" for i in range(len(self.consts)))
         return "\n".join(
             [f"def make({params}):", "  def run(args, trail, cb, nxt, cps):", *self.lines]
             + ["  return run", ""]
         )
 
-    def clause_code(self, clause: ClauseCode, loop: bool, switched: int = -1) -> None:
+    def clause_code(self, clause: ClauseCode, switched: bool = False) -> None:
         """Emit head unification, the inline built-ins and the exit of one clause.
 
-        The exit returns the continuation; a call to the clause's own predicate returns its
-        argument list instead, or with `loop` reassigns the argument locals and continues.
-        Argument `switched` is already dereferenced and known to have the head's constant
-        or functor (a procedure switched on it), so only its subterms are unified.
+        `switched`: the first argument is dereferenced and already known to have the
+        head's functor or constant (a procedure switched on it): only its subterms are
+        unified.
         """
         self.known = set()
         self.dereffed = set()
         for i, p in enumerate(clause.head):
-            if i != switched or type(p) is Term:
+            if i == 0 and switched and type(p) is Tmpl:
+                self.read_args(p.args, "a0[1]", 1)
+            elif not (i == 0 and switched and type(p) in (str, int)):
                 self.unify_arg(p, f"a{i}", 1)
-            elif type(p) is Tmpl:
-                self.read_args(p.args, f"a{i}[1]", 1)
-        body = list(reversed(clause.body_rev))
+        self.body_code(clause, list(reversed(clause.body_rev)))
+
+    def body_code(self, clause: ClauseCode, body: list[Any]) -> None:
+        """Emit the leading inline goals of `body`, then its exit."""
         while body and self.inline_goal(body[0]):
             body.pop(0)
+        if body and self.inline_if(clause, body):
+            return
         self.fresh(body, 1)
         if len(body) == 1 and _is_self_call(body[0], clause):
             args = "".join(f"{self.build(a)}, " for a in _parts(body[0])[1])  # type: ignore[index]
-            if loop:
-                self.emit(f"{_arg_names(len(clause.head))} = {args}", 1)
-                self.emit("continue", 1)
-            else:
-                self.emit(f"return [{args}]", 1)
+            self.self_call(args)
             return
         cont = "nxt"
         for g in reversed(body):
-            cont = f"({self.build(g)}, cb, {cont})"
+            cont = f"({self.goal(g)}, cb, {cont})"
+        self.exit(cont)
+
+    def self_call(self, args: str) -> None:
+        """Exit by a call to the clause's own predicate: return its argument list.
+
+        The machine loops on the predicate without building the goal term or a
+        continuation cell (the common shape of a deterministic recursion).
+        """
+        self.emit(f"return [{args}]", 1)
+
+    def exit(self, cont: str) -> None:
+        """Exit with the continuation expression `cont` (the remaining body goals)."""
         self.emit(f"return {cont}", 1)
+
+    def cut(self) -> None:
+        """Emit a cut at the neck: drop the choicepoints made since the clause began."""
+        self.emit("del cps[cb:]", 1)
 
     def emit(self, line: str, depth: int) -> None:
         self.lines.append("  " * (depth + self.base + 1) + line)
@@ -199,25 +260,49 @@ class ClauseWriter:
             return f"new_term(Term, ({self.const(t.name)}, ({args})))"
         return self.const(t)
 
+    def goal(self, g: Any) -> str:
+        """Python expression building body goal `g`, arithmetic compiled to a function.
+
+        `X > Y + 1` later in a body becomes `'$test'(Fn, Values)`, and `X is E` becomes
+        `'$is'(Fn, X, Values)`, so that the machine runs Python arithmetic instead of
+        walking the expression; control constructs are compiled goal by goal.
+        """
+        parts = _parts(g)
+        if parts is None:
+            return self.build(g)
+        name, args = parts
+        if (name, len(args)) in _CONTROL:
+            inner = "".join(f"{self.goal(a)}, " for a in args)
+            return f"new_term(Term, ({self.const(name)}, ({inner})))"
+        if len(args) != 2 or not (name in _COMPARE_OPS or name == "is"):
+            return self.build(g)
+        slots = _slots_in(g, [])
+        fn = arith_function(name, args, slots)
+        if fn is None or not slots:
+            return self.build(g)
+        values = "".join(f"v{i}, " for i in slots)
+        if name == "is":
+            target = self.build(args[0])
+            return f"new_term(Term, ('$is', ({self.const(fn)}, {target}, ({values}))))"
+        return f"new_term(Term, ('$test', ({self.const(fn)}, ({values}))))"
+
     def unify_arg(self, p: Any, x: str, depth: int) -> None:
         """Emit code unifying template `p` with the (un-dereferenced) value in local `x`."""
         if type(p) is Slot:
             if p.i in self.known:
-                self.emit(f"if not unify(v{p.i}, {x}, trail): return False", depth)
+                self.emit(f"if not unify(v{p.i}, {x}, trail): {self.fail}", depth)
             else:
                 self.emit(f"v{p.i} = {x}", depth)
                 self.known.add(p.i)
             return
         if type(p) is not Tmpl and type(p) not in _EXACT_TYPES:
-            self.emit(f"if not unify({self.const(p)}, {x}, trail): return False", depth)
+            self.emit(f"if not unify({self.const(p)}, {x}, trail): {self.fail}", depth)
             return
         self.emit(f"while type({x}) is Var and {x}.ref is not None: {x} = {x}.ref", depth)
         if type(p) is not Tmpl:
             k = self.const(p)
             self.emit(f"if type({x}) is Var: {x}.ref = {k}; trail.append({x})", depth)
-            self.emit(
-                f"elif type({x}) is not {type(p).__name__} or {x} != {k}: return False", depth
-            )
+            self.emit(f"elif type({x}) is not {type(p).__name__} or {x} != {k}: {self.fail}", depth)
             return
         before = set(self.known)
         self.emit(f"if type({x}) is Var:", depth)
@@ -228,7 +313,7 @@ class ClauseWriter:
         n = len(p.args)
         self.emit(f"elif type({x}) is Term and {x}[0] == {name} and len({x}[1]) == {n}:", depth)
         self.read_args(p.args, f"{x}[1]", depth + 1)
-        self.emit("else: return False", depth)
+        self.emit(f"else: {self.fail}", depth)
 
     def read_args(self, pargs: tuple[Any, ...], src: str, depth: int) -> None:
         """Read mode: unpack the call's subterms, then unify each with its template."""
@@ -249,9 +334,18 @@ class ClauseWriter:
     def inline_goal(self, g: Any) -> bool:
         """Emit a leading deterministic built-in inline; False when `g` is not one."""
         if g == "!":
-            self.emit("del cps[cb:]", 1)
+            self.cut()
+            return True
+        if g == "true":
             return True
         parts = _parts(g)
+        if parts is not None and len(parts[1]) == 1 and parts[0] in _TYPE_TESTS:
+            return self.type_test(parts[0], parts[1][0])
+        if parts is not None and len(parts[1]) == 2 and parts[0] in ("==", "\\=="):
+            test = self.test(g)
+            if test is not None:
+                self.emit(f"if not ({test}): {self.fail}", 1)
+            return test is not None
         if parts is None or len(parts[1]) != 2:
             return False
         name, (left, right) = parts
@@ -259,7 +353,7 @@ class ClauseWriter:
             a, b = self.expr(left), self.expr(right)
             if a is None or b is None:
                 return False
-            self.emit(f"if not ({a} {_COMPARE_OPS[name]} {b}): return False", 1)
+            self.emit(f"if not ({a} {_COMPARE_OPS[name]} {b}): {self.fail}", 1)
             return True
         if name == "is":
             value = self.expr(right)
@@ -278,11 +372,89 @@ class ClauseWriter:
                 self.known.add(left.i)
                 return True
             self.fresh([left, right], 1)
-            self.emit(
-                f"if not unify({self.build(left)}, {self.build(right)}, trail): return False", 1
-            )
+            left_code, right_code = self.build(left), self.build(right)
+            self.emit(f"if not unify({left_code}, {right_code}, trail): {self.fail}", 1)
             return True
         return False
+
+    def inline_if(self, clause: ClauseCode, body: list[Any]) -> bool:
+        """`(Cond -> Then ; Else)` first in `body`, Cond a test: a Python `if` instead.
+
+        Each branch continues with its goals and the rest of the body, so no choicepoint
+        or control goal is made; a cut in either branch cuts the clause, as it would.
+        """
+        parts = _parts(body[0])
+        if parts is None or len(parts[1]) != 2 or parts[0] not in (";", "->"):
+            return False
+        cond_then, other = (parts[1][0], parts[1][1]) if parts[0] == ";" else (body[0], "fail")
+        inner = _parts(cond_then)
+        if inner is None or inner[0] != "->" or len(inner[1]) != 2:
+            return False
+        test = self.test(inner[1][0])
+        if test is None:
+            return False
+        saved = (set(self.known), set(self.dereffed), self.fail, self.base, self.state())
+        for branch, goals in ((f"if {test}:", inner[1][1]), ("else:", other)):
+            self.emit(branch, 1)
+            self.base += 1
+            self.body_code(clause, [*_conjuncts(goals), *body[1:]])
+            self.known, self.dereffed, self.fail, self.base = (
+                set(saved[0]),
+                set(saved[1]),
+                *saved[2:4],
+            )
+            self.restore(saved[4])
+        return True
+
+    def state(self) -> Any:
+        """What a branch of an inline if-then-else may change besides the slots."""
+        return None
+
+    def restore(self, state: Any) -> None:
+        """Undo a branch's changes to `state()`."""
+
+    def test(self, g: Any) -> str | None:
+        """A Python condition for test goal `g` (type tests, comparisons, `\\+`, `,`)."""
+        if g in ("true", "fail", "false"):
+            return "True" if g == "true" else "False"
+        parts = _parts(g)
+        if parts is None:
+            return None
+        name, args = parts
+        if name == "," and len(args) == 2 or name == "\\+" and len(args) == 1:
+            tests = [self.test(a) for a in args]
+            if None in tests:
+                return None
+            return f"not ({tests[0]})" if name == "\\+" else f"({tests[0]}) and ({tests[1]})"
+        if len(args) == 1 and name in _TYPE_TESTS:
+            slot = args[0]
+            if type(slot) is not Slot or slot.i not in self.known:
+                return None
+            self.deref_slot(slot.i)
+            return _TYPE_TESTS[name].format(f"v{slot.i}")
+        if len(args) == 2 and name in _COMPARE_OPS:
+            a, b = self.expr(args[0]), self.expr(args[1])
+            return None if a is None or b is None else f"{a} {_COMPARE_OPS[name]} {b}"
+        if len(args) == 2 and name in ("==", "\\=="):
+            if any(i not in self.known for i in _slots_in(g, [])):
+                return None
+            same = f"identical({self.build(args[0])}, {self.build(args[1])})"
+            return same if name == "==" else f"not {same}"
+        return None
+
+    def deref_slot(self, i: int) -> None:
+        """Dereference slot `i` in place, once."""
+        if i not in self.dereffed:
+            self.emit(f"while type(v{i}) is Var and v{i}.ref is not None: v{i} = v{i}.ref", 1)
+            self.dereffed.add(i)
+
+    def type_test(self, name: str, arg: Any) -> bool:
+        """Emit a type test (`number(X)`, `var(X)`, ...) of a slot holding a value."""
+        if type(arg) is not Slot or arg.i not in self.known:
+            return False
+        self.deref_slot(arg.i)
+        self.emit(f"if not ({_TYPE_TESTS[name].format(f'v{arg.i}')}): {self.fail}", 1)
+        return True
 
     def assign_or_unify(self, target: Any, value: str) -> None:
         """Bind a fresh slot to `value` directly, or unify `target` with it."""
@@ -291,7 +463,7 @@ class ClauseWriter:
             self.known.add(target.i)
             return
         self.fresh([target], 1)
-        self.emit(f"if not unify({self.build(target)}, {value}, trail): return False", 1)
+        self.emit(f"if not unify({self.build(target)}, {value}, trail): {self.fail}", 1)
 
     def expr(self, t: Any) -> str | None:
         """Python expression evaluating arithmetic template `t`; None if a slot is unset."""

@@ -9,16 +9,16 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
+from robocram.logic.choicepoints import ALT, BARRIER, CATCH, CLAUSES, DEAD, GEN, PROC, REACT
 from robocram.logic.errors import PrologInstantiationError, PrologTypeError
 from robocram.logic.terms import Term, Var, new_term
 
 if TYPE_CHECKING:
     from robocram.logic.engine import Engine
 
-__all__ = ["ALT", "BARRIER", "CATCH", "CLAUSES", "CONTROL_NAMES", "DEAD", "FAIL", "GEN", "REACT"]
-__all__ += ["add_args", "run_control"]
+__all__ = ["ALT", "BARRIER", "CATCH", "CLAUSES", "CONTROL_NAMES", "DEAD", "FAIL", "GEN", "PROC"]
+__all__ += ["REACT", "add_args", "run_control"]
 
-CLAUSES, ALT, GEN, BARRIER, CATCH, REACT, DEAD = range(7)
 FAIL = ("fail", 0, None)
 
 CONTROL_NAMES: list[tuple[str, int]] = [

@@ -39,6 +39,7 @@ class Engine(Protocol):
 
     kb: Database
     trail: list[Var]
+    occurs_check: str  # the flag's value: false, true or error
 
     def unify(self, a: Any, b: Any) -> bool: ...
 

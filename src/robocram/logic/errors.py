@@ -20,6 +20,7 @@ __all__ = [
     "PrologExistenceError",
     "PrologInstantiationError",
     "PrologHostError",
+    "PrologOccursCheckError",
     "PrologPermissionError",
     "PrologResourceError",
     "PrologSyntaxError",
@@ -138,6 +139,17 @@ class PrologSyntaxError(PrologError):
         self.line = line
         self.column = column
         self.text = text
+
+
+class PrologOccursCheckError(PrologError):
+    """With the flag `occurs_check = error`: a unification would make a cyclic term."""
+
+    def __init__(self, var: Any, term: Any) -> None:
+        message = (
+            f"unifying {var!r} with {term!r} would make a cyclic term (occurs_check is error);"
+            " set it to false or true to unify or fail instead"
+        )
+        super().__init__(message, _iso(Term("occurs_check", (var, term)), message))
 
 
 class PrologResourceError(PrologError):

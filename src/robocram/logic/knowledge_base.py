@@ -169,7 +169,7 @@ class KnowledgeBase:
             pred = self._user_pred(key)
             pred.dynamic = True
             if front:
-                pred.set_clauses([compiled, *pred.live(pred.clauses)])
+                pred.add_first(compiled)
             else:
                 pred.add_last(compiled)
 

@@ -12,7 +12,9 @@ from collections.abc import Iterator
 from typing import Any
 
 from robocram.logic.builtin_flags import warn_unknown
-from robocram.logic.control import ALT, BARRIER, CATCH, CLAUSES, FAIL, GEN, REACT, run_control
+from robocram.logic.choicepoints import ALT, BARRIER, CATCH, CLAUSES, GEN, PROC, REACT
+from robocram.logic.clause import Clause
+from robocram.logic.control import FAIL, run_control
 from robocram.logic.engine import Database
 from robocram.logic.errors import (
     PrologError,
@@ -23,6 +25,7 @@ from robocram.logic.errors import (
     UnknownPredicateError,
 )
 from robocram.logic.limits import CHECK_EVERY, Budget
+from robocram.logic.occurs import unify_checked
 from robocram.logic.predicate import DET, NONDET, USER, WARM_CALLS, Pred
 from robocram.logic.python_predicates import python_solutions
 from robocram.logic.terms import Term, Var, new_term
@@ -39,10 +42,19 @@ class Machine:
         self.preds = kb._preds
         self.trail: list[Var] = []
         self.budget = budget if budget is not None else Budget(None, None)
+        self.occurs_check: str = kb._flags["occurs_check"]
 
     def unify(self, a: Any, b: Any) -> bool:
         """Unify two terms, trailing the bindings (for built-ins)."""
+        if self.occurs_check != "false":
+            return unify_checked(a, b, self.trail, self.occurs_check == "error")
         return unify(a, b, self.trail)
+
+    def clause_runner(self, cl: Clause) -> Any:
+        """The function to run clause `cl` with: compiled, or checked for the occurs check."""
+        if self.occurs_check == "false":
+            return cl.run if cl.run is not None else cl.prepare()
+        return cl.interpret_checked if self.occurs_check == "true" else cl.interpret_error
 
     def undo_to(self, mark: int) -> None:
         """Undo bindings made since the trail had length `mark`."""
@@ -134,24 +146,23 @@ class Machine:
                     continue
                 k = p.kind
                 if k == USER:
+                    proc = p.proc
+                    if proc is not None and self.occurs_check == "false":
+                        cont = proc(args, trail, nxt, cps, 0)
+                        if cont is False:
+                            cont = backtrack(cps)
+                        elif type(cont) is list:
+                            cont = self._again(proc, cont, nxt, cps)
+                            if cont is False:
+                                cont = backtrack(cps)
+                        continue
                     if p.pyfn is not None:
                         if not cps and trail:
                             del trail[:]
                         self._push_python(p, args, nxt, cps)
                         cont = backtrack(cps)
                         continue
-                    proc = p.proc
-                    if proc is not None:
-                        cont = proc(args, trail, nxt, cps)
-                        if type(cont) is not list:
-                            if cont is False:
-                                cont = backtrack(cps)
-                            continue
-                        if len(cont) != len(args):  # the procedure looped CHECK_EVERY times
-                            cont.pop()
-                            spend(CHECK_EVERY)
-                        args = cont
-                    elif p.warm < WARM_CALLS:
+                    if p.warm < WARM_CALLS:
                         p.warm_up()
                     cont = self._call_clauses(p, args, nxt, cps)
                     if cont is False:
@@ -190,8 +201,9 @@ class Machine:
             if loops >= CHECK_EVERY:  # a deterministic self-recursion loops here
                 self.budget.spend(loops)
                 loops = 0
-            cands = p.clauses
-            if len(cands) > 1 and args:
+            cands = p.store
+            lo = p.head
+            if len(cands) - lo > 1 and args:
                 first = args[0]
                 while type(first) is Var and first.ref is not None:
                     first = first.ref
@@ -200,6 +212,7 @@ class Machine:
                     if index is None:
                         index = p.build_index()
                     cands = index.get((first[0], len(first[1])), p.varclauses)
+                    lo = 0
                 elif type(first) is not Var:
                     index = p.index
                     if index is None:
@@ -210,18 +223,20 @@ class Machine:
                             cands = index.get(first, p.varclauses)
                         else:
                             cands = p.candidates(first)
+                        lo = 0
             if p.erased:
-                cands = p.live(cands)
+                cands = p.live(cands[lo:])
+                lo = 0
             n = len(cands)
-            if n == 0:
+            if n == lo:
                 return False
-            cl = cands[0]
+            cl = cands[lo]
             cb = len(cps)
-            if n > 1:
-                cps.append([CLAUSES, len(trail), args, nxt, cands, 1, n, p])
+            if n - lo > 1:
+                cps.append([CLAUSES, len(trail), args, nxt, cands, lo + 1, n, p])
             run = cl.run
-            if run is None:
-                run = cl.prepare()
+            if run is None or self.occurs_check != "false":
+                run = self.clause_runner(cl)
             cont = run(args, trail, cb, nxt, cps)
             if type(cont) is not list:
                 return cont
@@ -240,6 +255,13 @@ class Machine:
                 cont = self._next_clause(cp, cps)
                 if cont is not False:
                     return cont
+            elif kind == PROC:
+                cps.pop()
+                cont = cp[4](cp[2], trail, cp[3], cps, cp[5])
+                if type(cont) is list:
+                    cont = self._again(cp[4], cont, cp[3], cps)
+                if cont is not False:
+                    return cont
             elif kind == GEN:
                 if next(cp[2], None) is not None:
                     return cp[3]
@@ -255,6 +277,20 @@ class Machine:
                 cps.pop()
         return False
 
+    def _again(self, proc: Any, args: list[Any], nxt: Any, cps: list[list[Any]]) -> Any:
+        """Finish a call that a procedure handed back (see procedure.py).
+
+        After CHECK_EVERY loops: count them and call the procedure again. With a Scan:
+        run the clauses one by one here (an unbound first argument of a long predicate).
+        """
+        while type(args) is list:
+            scan = args.pop()
+            if scan is not None:
+                return self._call_clauses(scan.pred, args, nxt, cps)
+            self.budget.spend(CHECK_EVERY)
+            args = proc(args, self.trail, nxt, cps, 0)
+        return args
+
     def _next_clause(self, cp: list[Any], cps: list[list[Any]]) -> Any:
         """Try the next candidate clause of a CLAUSES choicepoint (popping it at the last)."""
         i = cp[5]
@@ -266,8 +302,8 @@ class Machine:
         else:
             cp[5] = i
         run = cl.run
-        if run is None:
-            run = cl.prepare()
+        if run is None or self.occurs_check != "false":
+            run = self.clause_runner(cl)
         cont = run(cp[2], self.trail, cb, cp[3], cps)
         if type(cont) is list:
             return (new_term(Term, (cp[7].name, tuple(cont))), 0, cp[3])

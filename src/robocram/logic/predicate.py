@@ -22,17 +22,18 @@ class Pred:
 
     __slots__ = (
         "arity",
-        "clauses",
         "dynamic",
         "erased",
         "extendable",
         "fn",
+        "head",
         "index",
         "kind",
         "name",
         "owner",
         "proc",
         "pyfn",
+        "store",
         "system",
         "varclauses",
         "warm",
@@ -43,7 +44,8 @@ class Pred:
         self.arity = arity
         self.kind = kind
         self.fn = fn
-        self.clauses: list[Clause] = []
+        self.store: list[Any] = []  # the clauses are store[head:]; before head: room
+        self.head = 0
         self.index: dict[Any, list[Clause]] | None = None
         self.varclauses: list[Clause] = []
         self.pyfn: Callable[..., Iterator[Any]] | None = None
@@ -59,17 +61,22 @@ class Pred:
         """Count a call; on the third, compile the switching procedure if it qualifies."""
         self.warm += 1
         if self.warm == WARM_CALLS and not self.dynamic and self.pyfn is None:
-            self.proc = compile_procedure(self.clauses)
+            self.proc = compile_procedure(self.clauses, self)
 
     def copy(self) -> Pred:
         """A new predicate with the same definition (its own clause list and no code)."""
         twin = Pred(self.name, self.arity, self.kind, self.fn)
-        twin.clauses = self.live(self.clauses)
+        twin.store = [c for c in self.clauses if not c.erased]
         twin.pyfn = self.pyfn
         twin.dynamic = self.dynamic
         twin.owner = self.owner
         twin.extendable = set(self.extendable)
         return twin
+
+    @property
+    def clauses(self) -> list[Clause]:
+        """The clauses in order (a copy once asserta/1 has used the room at the front)."""
+        return self.store[self.head :] if self.head else self.store
 
     @property
     def indicator(self) -> str:
@@ -88,22 +95,27 @@ class Pred:
         """
         clause.erased = True
         self.erased += 1
-        if self.erased > 8 and 2 * self.erased > len(self.clauses):
+        if self.erased > 8 and 2 * self.erased > len(self.store) - self.head:
             self.set_clauses([c for c in self.clauses if not c.erased])
 
     def set_clauses(self, clauses: list[Clause]) -> None:
         """Replace all clauses (a new list, so running queries keep their snapshot)."""
-        self.clauses = clauses
+        self.store = clauses
+        self.head = 0
         self.erased = 0
         self.index = None
         self.proc = None
         self.warm = 0
 
-    def add_last(self, clause: Clause) -> None:
-        """Append a clause in place, keeping any built index up to date."""
-        self.clauses.append(clause)
+    def changed(self) -> None:
+        """Forget the compiled procedure: the clauses changed."""
         self.proc = None
         self.warm = 0
+
+    def add_last(self, clause: Clause) -> None:
+        """Append a clause in place, keeping any built index up to date."""
+        self.store.append(clause)
+        self.changed()
         index = self.index
         if index is None:
             return
@@ -116,6 +128,31 @@ class Pred:
             if found is None:
                 found = index[clause.key] = list(self.varclauses)
             found.append(clause)
+
+    def add_first(self, clause: Clause) -> None:
+        """Prepend a clause in O(1) amortised (asserta/1), keeping the logical update view.
+
+        The store keeps free room before `head`. A running call reads the clauses it
+        started with as `store[lo:n]` with `lo >= head`, so writing at `head - 1` changes
+        nothing it sees; when the room is used up, a new store gets as much room again
+        as it has clauses. A built index gets the clause at the front of its bucket
+        (a copy of that bucket), or is dropped for a clause with a variable there.
+        """
+        if self.head == 0:
+            room = max(8, len(self.store))
+            self.store = [None] * room + self.store
+            self.head = room
+        self.head -= 1
+        self.store[self.head] = clause
+        self.changed()
+        index = self.index
+        if index is None:
+            return
+        if clause.key is None:
+            self.index = None  # rebuilt by the next call that needs it
+        else:
+            bucket = index.get(clause.key)
+            index[clause.key] = [clause, *(self.varclauses if bucket is None else bucket)]
 
     def build_index(self) -> dict[Any, list[Clause]]:
         """Group clauses by first-argument key; variable-first clauses join every bucket."""

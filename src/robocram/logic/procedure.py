@@ -1,50 +1,86 @@
-"""Compile a small deterministic predicate into one switching Python function.
+"""Compile a static predicate into one Python function that tries its clauses in order.
 
-When every clause of a predicate has a distinct constant or functor in the same argument
-position, at most one clause can match a call that binds that argument, so no choicepoint
-is needed. The generated procedure switches on that argument, runs the matching clause's
-code inline, and runs a call to the predicate itself (the recursive clause of `app/3`,
-`no_attack/3` of 8-queens) as a loop in the same Python frame:
+Running clause by clause through the machine costs a choicepoint per call of a predicate
+with two or more clauses, and a trip round the goal dispatch per clause tried. The
+generated procedure instead runs each clause's head unification and leading inline
+built-ins (comparisons, `is/2`, `=/2`, cut) in one frame, undoing the trail and falling
+through to the next clause when one fails there ("shallow backtracking"). It pushes a
+choicepoint only when a clause has got past those and a later clause can still match
+the first argument; a cut among them commits to the clause, so `tak/4`, `p_remove/3`
+or `d/3` of deriv never make one. A clause ending in a call to the predicate itself
+loops in the same frame.
 
-    proc(args, trail, nxt, cps) -> continuation, False (no clause matches or it fails),
-                                   or the argument list when the switch argument is
-                                   unbound (the machine then tries the clauses in order);
-                                   the list has one extra item after CHECK_EVERY loops,
-                                   so that the machine counts them
+    proc(args, trail, nxt, cps, start) -> continuation, or False when no clause from
+        `start` on gets past its inline goals; or the argument list plus one extra item:
+        None after CHECK_EVERY loops, so that the machine counts them and calls again,
+        or a Scan to have the machine run the clauses one by one
 
-Skipping the clauses that cannot match changes no answer: they would fail in their head.
+The first argument is switched on before any clause runs: for each principal functor
+or constant in the clause heads, a branch holds the code of just the clauses that can
+match it (in order, the variable ones included), with the first argument's functor
+already known; a call with it unbound runs every clause. The last clause of a branch
+leaves no choicepoint and runs without the try-next wrapper.
 """
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable, Sequence
 from typing import Any
 
+from robocram.logic.choicepoints import PROC
 from robocram.logic.codegen import ClauseCode, ClauseWriter, make_factory
 from robocram.logic.limits import CHECK_EVERY
 from robocram.logic.template import Tmpl
 from robocram.logic.terms import Term
 
-__all__ = ["MAX_CLAUSES", "Procedure", "compile_procedure"]
+__all__ = ["MAX_CLAUSES", "SCAN_AFTER", "Procedure", "Scan", "compile_procedure"]
 
-Procedure = Callable[[tuple[Any, ...], list[Any], Any, list[list[Any]]], Any]
-MAX_CLAUSES = 8
-_ATOMIC = (str, int, float)
+Procedure = Callable[[Any, list[Any], Any, list[list[Any]], int], Any]
+MAX_CLAUSES = 64
+MAX_KEYS = MAX_CLAUSES  # distinct first-argument keys in one procedure
+SCAN_AFTER = 8  # clauses a call with an unbound first argument tries in the procedure
+_CHAIN = 6  # up to this many keys of a kind, compare in turn; beyond, a dictionary
 
 
-def compile_procedure(stored: Sequence[ClauseCode]) -> Procedure | None:
-    """Return the switching procedure of a static predicate's clauses, or None."""
+class _Maybe:
+    """The switch key of a call whose first argument is unbound or not indexable."""
+
+    def __repr__(self) -> str:
+        return "MAYBE"
+
+
+MAYBE = _Maybe()
+
+
+class Scan:
+    """Handed back (last in the argument list) to have the machine run `pred` clause by clause."""
+
+    __slots__ = ("pred",)
+
+    def __init__(self, pred: Any) -> None:
+        self.pred = pred
+
+
+def compile_procedure(stored: Sequence[ClauseCode], owner: Any = None) -> Procedure | None:
+    """Return the procedure of a static predicate's clauses, or None when not worth it.
+
+    With `owner` (the predicate), a call with the first argument unbound that would try
+    more than SCAN_AFTER clauses is handed back to the machine, which resumes each clause
+    in O(1) instead of re-entering the procedure.
+    """
     clauses = list(stored)
-    if not 2 <= len(clauses) <= MAX_CLAUSES:
+    if not 1 <= len(clauses) <= MAX_CLAUSES:
         return None
-    position = _switch_position(clauses)
-    if position is None:
+    branches = _branches(clauses)
+    if branches is None:
         return None
     try:
-        writer = _write_switch(clauses, position)
+        writer = _ProcWriter(clauses, owner)
+        writer.procedure(branches)
         params = ", ".join(f"k{i}" for i in range(len(writer.consts)))
         source = "\n".join(
-            [f"def make({params}):", "  def proc(args, trail, nxt, cps):", *writer.lines]
+            [f"def make({params}):", "  def proc(args, trail, nxt, cps, start):", *writer.lines]
             + ["  return proc", ""]
         )
         proc: Procedure = make_factory(source)(*writer.consts)
@@ -53,71 +89,204 @@ def compile_procedure(stored: Sequence[ClauseCode]) -> Procedure | None:
     return proc
 
 
-def _write_switch(clauses: list[ClauseCode], position: int) -> ClauseWriter:
-    """Emit the loop that switches on argument `position` into each clause's code."""
-    writer = ClauseWriter()
-    arity = len(clauses[0].head)
-    a = f"a{position}"
-    writer.emit("".join(f"a{i}, " for i in range(arity)) + "= args", 1)
-    writer.emit("steps = 0", 1)
-    writer.emit("while True:", 1)
-    writer.emit("if not cps and trail: del trail[:]", 2)
-    # Hand a long self-recursion back to the machine now and then, so that it counts the
-    # inferences (limits, stop requests); the machine then runs the clauses itself.
-    writer.emit("steps += 1", 2)
-    bail = "".join(f"a{i}, " for i in range(arity)) + "None"
-    writer.emit(f"if steps >= {CHECK_EVERY}: return [{bail}]", 2)
-    writer.emit("cb = len(cps)", 2)
-    writer.emit(f"while type({a}) is Var and {a}.ref is not None: {a} = {a}.ref", 2)
-    writer.emit(f"ta = type({a})", 2)
-    writer.emit(f"if ta is Var: return [{''.join(f'a{i}, ' for i in range(arity))}]", 2)
-    compound = [c for c in clauses if _is_compound(c.head[position])]
-    if compound:
-        writer.emit("if ta is Term:", 2)
-        writer.emit(f"fn = {a}[0]; fa = len({a}[1])", 3)
-        for c in compound:
-            name, args = _functor(c.head[position])
-            writer.emit(f"if fn == {writer.const(name)} and fa == {len(args)}:", 3)
-            _clause_at(writer, c, 4, position)
-        writer.emit("return False", 3)
-    for c in clauses:
-        key = c.head[position]
-        if not _is_compound(key):
-            test = f"ta is {type(key).__name__} and {a} == {writer.const(key)}"
-            writer.emit(f"if {test}:", 2)
-            _clause_at(writer, c, 3, position)
-    writer.emit("return False", 2)
-    return writer
+Key = tuple[str, int] | str | int
 
 
-def _clause_at(writer: ClauseWriter, clause: ClauseCode, depth: int, position: int) -> None:
-    writer.base = depth - 1
-    writer.clause_code(clause, loop=True, switched=position)
-    writer.base = 0
+class _Branches:
+    """Which clauses each kind of first argument can match, in clause order."""
+
+    def __init__(self) -> None:
+        self.compound: dict[tuple[str, int], list[int]] = {}
+        self.atomic: dict[str | int, list[int]] = {}
+        self.open: list[int] = []  # clauses with a variable (or float, ...) there
+        self.every: list[int] = []
 
 
-def _is_compound(t: Any) -> bool:
-    return type(t) is Tmpl or type(t) is Term
+def _branches(clauses: list[ClauseCode]) -> _Branches | None:
+    """Group the clauses by first-argument key; None when too many keys or copies."""
+    b = _Branches()
+    b.every = list(range(len(clauses)))
+    if not clauses[0].head:
+        return b
+    keys = [_key(c.head[0]) for c in clauses]
+    for k in keys:
+        if type(k) is tuple:
+            b.compound.setdefault(k, [])
+        elif k is not None:
+            b.atomic.setdefault(k, [])  # type: ignore[arg-type]
+    if len(b.compound) + len(b.atomic) > MAX_KEYS:
+        return None
+    for i, k in enumerate(keys):
+        if k is None:
+            b.open.append(i)
+        for table in (b.compound, b.atomic):
+            for key, members in table.items():
+                if k is None or k == key and type(k) is type(key):
+                    members.append(i)
+    copies = sum(len(m) for m in [*b.compound.values(), *b.atomic.values()])
+    return b if copies <= 4 * len(clauses) + 32 else None
 
 
-def _functor(t: Any) -> tuple[str, tuple[Any, ...]]:
-    return (t.name, t.args) if type(t) is Tmpl else (t[0], t[1])
+def _key(t: Any) -> Key | None:
+    """The switch key of a head's first argument; None when any call argument can match."""
+    if type(t) is Tmpl:
+        return (t.name, len(t.args))
+    if type(t) is Term:
+        return (t[0], len(t[1]))
+    if type(t) is str or type(t) is int:
+        return t
+    return None  # a variable, a float (1.0 = 1 in Python) or an opaque constant
 
 
-def _switch_position(clauses: list[ClauseCode]) -> int | None:
-    """The first argument where every clause has a distinct constant or functor."""
-    for i in range(len(clauses[0].head)):
-        keys: list[Any] = []
-        for c in clauses:
-            t = c.head[i]
-            if _is_compound(t):
-                name, args = _functor(t)
-                keys.append(("$functor", name, len(args)))
-            elif type(t) in _ATOMIC and t == t:
-                keys.append(t)
-            else:
-                break
+class _ProcWriter(ClauseWriter):
+    """Writes the switch and, per branch, each clause; a failing clause falls through."""
+
+    def __init__(self, clauses: list[ClauseCode], owner: Any = None) -> None:
+        super().__init__()
+        self.clauses = clauses
+        self.owner = owner
+        self.arity = len(clauses[0].head)
+        self.names = "".join(f"a{i}, " for i in range(self.arity))
+        self.committed = False
+        self.next_start: int | None = None
+
+    def procedure(self, b: _Branches) -> None:
+        self.switch(b)
+        body = "\n".join(self.lines)
+        self.lines = []
+        if self.arity:
+            self.emit(f"{self.names}= args", 1)
+        loops = "continue" in body
+        # The trail only serves choicepoints: with none, drop it on entry, and again
+        # every CHECK_EVERY loops, when a long self-recursion is handed to the machine
+        # so that it counts the inferences (limits, stop requests) and calls again.
+        self.emit("if not cps and trail: del trail[:]", 1)
+        if loops:
+            self.emit("steps = 0", 1)
+        self.emit("while True:", 1)
+        if loops:
+            self.emit("steps += 1", 2)
+            self.emit(f"if steps >= {CHECK_EVERY}: return [{self.names}None]", 2)
+        if re.search(r"\bcb\b", body):
+            self.emit("cb = len(cps)", 2)
+        self.lines.append(body)
+
+    def switch(self, b: _Branches) -> None:
+        """Emit the switch on the first argument into each branch's clauses."""
+        if not self.arity:
+            self.branch(b.every, 2, switched=False)
+            return
+        self.emit("while type(a0) is Var and a0.ref is not None: a0 = a0.ref", 2)
+        self.emit("t = type(a0)", 2)
+        self.emit("if t is Term:", 2)
+        if len(b.compound) > 1:
+            self.emit("f = a0[0]; n = len(a0[1])", 3)
+            tests = [f"f == {self.const(k[0])} and n == {k[1]}" for k in b.compound]
+        else:  # one functor: test it in place
+            tests = [f"a0[0] == {self.const(k[0])} and len(a0[1]) == {k[1]}" for k in b.compound]
+        self.dispatch(list(b.compound.items()), tests, "(f, n)", b.open)
+        self.emit("elif t is str or t is int:", 2)
+        tests = [f"t is {type(k).__name__} and a0 == {self.const(k)}" for k in b.atomic]
+        self.dispatch(list(b.atomic.items()), tests, "a0", b.open)
+        self.emit("else:", 2)
+        if self.owner is not None and len(b.every) > SCAN_AFTER:
+            self.emit(f"return [{self.names}{self.const(Scan(self.owner))}]", 3)
         else:
-            if len(set(keys)) == len(keys):
-                return i
-    return None
+            self.branch(b.every, 3, switched=False)
+
+    def dispatch(
+        self, entries: list[tuple[Any, list[int]]], tests: list[str], key: str, open_: list[int]
+    ) -> None:
+        """Emit the branches of one kind of key: compared in turn, or by a dictionary.
+
+        Past `_CHAIN` keys, a dictionary gives the branch number and a binary tree of
+        comparisons on it leads to the branch, so a call costs log2(keys) comparisons.
+        """
+        if len(entries) <= _CHAIN:
+            for j, (_, members) in enumerate(entries):
+                self.emit(f"{'el' if j else ''}if {tests[j]}:", 3)
+                self.branch(members, 4, switched=True)
+            self.other(open_, 3, bool(entries))
+            return
+        table = self.const({k: j for j, (k, _) in enumerate(entries)})
+        self.emit(f"bn = {table}.get({key}, -1)", 3)
+        self.emit("if bn < 0:", 3)
+        self.branch(open_, 4, switched=False)
+        self.emit("else:", 3)
+        self.tree([m for _, m in entries], 0, len(entries), 4)
+
+    def tree(self, branches: list[list[int]], lo: int, hi: int, depth: int) -> None:
+        """Emit a binary search on `bn` over branches lo..hi-1."""
+        if hi - lo == 1:
+            self.branch(branches[lo], depth, switched=True)
+            return
+        mid = (lo + hi) // 2
+        self.emit(f"if bn < {mid}:", depth)
+        self.tree(branches, lo, mid, depth + 1)
+        self.emit("else:", depth)
+        self.tree(branches, mid, hi, depth + 1)
+
+    def other(self, members: list[int], depth: int, chained: bool) -> None:
+        """The branch for a key no clause names: the clauses open to any argument."""
+        if chained:
+            self.emit("else:", depth)
+            depth += 1
+        self.branch(members, depth, switched=False)
+
+    def branch(self, members: list[int], depth: int, switched: bool) -> None:
+        """Emit the clauses `members` in order; all but the last fall through on failure."""
+        if not members:
+            self.emit("return False", depth)
+            return
+        if len(members) > 1:
+            self.emit("mark = len(trail)", depth)
+        for pos, i in enumerate(members):
+            self.base = 0
+            self.committed = False
+            last = pos == len(members) - 1
+            self.next_start = None if last else members[pos + 1]
+            if last:
+                self.fail = "return False"
+                self.base = depth - 1
+                self.clause_code(self.clauses[i], switched)
+                continue
+            self.fail = "break"
+            self.emit(f"if start <= {i}:", depth)
+            self.emit("while True:", depth + 1)
+            self.base = depth + 1
+            self.clause_code(self.clauses[i], switched)
+            self.base = 0
+            self.emit("if start < 0: start = 0; continue", depth + 1)
+            self.emit("while len(trail) > mark: trail.pop().ref = None", depth + 1)
+        self.base = 0
+
+    def state(self) -> Any:
+        return self.committed
+
+    def restore(self, state: Any) -> None:
+        self.committed = state
+
+    def cut(self) -> None:
+        # No choicepoint was made since the clause began: committing means pushing none
+        # for the later clauses, and failing from here on fails the whole call.
+        self.committed = True
+        self.fail = "return False"
+
+    def alternatives(self) -> None:
+        """Emit the choicepoint for the branch's later clauses, unless cut."""
+        if self.committed or self.next_start is None:
+            return
+        state = f"[{PROC}, mark, ({self.names}), nxt, proc, {self.next_start}]"
+        self.emit(f"cps.append({state})", 1)
+
+    def exit(self, cont: str) -> None:
+        self.alternatives()
+        self.emit(f"return {cont}", 1)
+
+    def self_call(self, args: str) -> None:
+        self.alternatives()
+        self.emit(f"{self.names}= {args}", 1)
+        if self.next_start is None:
+            self.emit("start = 0; continue", 1)
+        else:
+            self.emit("start = -1; break", 1)

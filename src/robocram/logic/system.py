@@ -120,5 +120,5 @@ def library_predicates() -> dict[Key, Pred]:
         if pred is None:
             pred = preds[key] = Pred(key[0], key[1])
             pred.owner = LIBRARY_OWNER
-        pred.clauses.append(Clause(c.head, c.body_rev, c.nvars, c.group, c.source, c.name))
+        pred.add_last(Clause(c.head, c.body_rev, c.nvars, c.group, c.source, c.name))
     return preds

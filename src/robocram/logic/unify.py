@@ -2,21 +2,25 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 from robocram.logic.terms import PString, Term, Var, deref, new_term
 
 __all__ = [
     "copy_resolved",
+    "identical",
     "is_acyclic",
     "order_key",
     "undo",
     "unify",
+    "unify_iterative",
     "unify_rational",
     "variant_key",
 ]
 
 _PRIMITIVE = frozenset([str, int, float, PString])
+BindCheck = Callable[[Var, Any], bool]
 _FAST_STEPS = 100_000
 
 
@@ -65,8 +69,25 @@ def unify(a: Any, b: Any, trail: list[Var]) -> bool:
             if steps > _FAST_STEPS:
                 return unify_rational(a, b, trail)
             try:
-                for i in range(n):
-                    if not unify(aa[i], ab[i], trail):
+                for i in range(n):  # variables and constants here, compounds recursively
+                    x = aa[i]
+                    y = ab[i]
+                    while type(x) is Var and x.ref is not None:
+                        x = x.ref
+                    while type(y) is Var and y.ref is not None:
+                        y = y.ref
+                    if x is y:
+                        continue
+                    if type(x) is Var:
+                        x.ref = y
+                        trail.append(x)
+                    elif type(y) is Var:
+                        y.ref = x
+                        trail.append(y)
+                    elif type(x) is type(y) and type(x) is not Term:
+                        if x != y:
+                            return False
+                    elif not unify(x, y, trail):
                         return False
             except RecursionError:
                 return unify_rational(a, b, trail)
@@ -87,6 +108,14 @@ def unify_rational(a: Any, b: Any, trail: list[Var]) -> bool:
     >>> unify(x, Term("f", (x,)), t) and unify(y, Term("f", (y,)), t) and unify(x, y, t)
     True
     """
+    return unify_iterative(a, b, trail, None)
+
+
+def unify_iterative(a: Any, b: Any, trail: list[Var], may_bind: BindCheck | None) -> bool:
+    """Unify with an explicit stack; compound pairs met before count as equal (so cyclic
+    terms end), and `may_bind(var, value)` vets each binding of a variable to a compound
+    (the occurs check).
+    """
     seen: set[tuple[int, int]] = set()
     stack = [(a, b)]
     while stack:
@@ -97,12 +126,13 @@ def unify_rational(a: Any, b: Any, trail: list[Var]) -> bool:
             b = b.ref
         if a is b:
             continue
+        if type(a) is not Var and type(b) is Var:
+            a, b = b, a
         if type(a) is Var:
+            if may_bind is not None and type(b) is Term and not may_bind(a, b):
+                return False
             a.ref = b
             trail.append(a)
-        elif type(b) is Var:
-            b.ref = a
-            trail.append(b)
         elif type(a) is Term and type(b) is Term:
             if a[0] != b[0] or len(a[1]) != len(b[1]):
                 return False
@@ -205,6 +235,44 @@ def _copy_deep(term: Any, mapping: dict[Var, Var]) -> Any:
         else:
             out.append(t)
     return out[0]
+
+
+def identical(a: Any, b: Any) -> bool:
+    """`a == b` in Prolog: the same term, variables included, without building order keys.
+
+    >>> x = Var(); identical(Term("f", (x, 1)), Term("f", (x, 1))), identical(1, 1.0)
+    (True, False)
+    """
+    stack = [(a, b)]
+    seen: set[tuple[int, int]] | None = None
+    steps = 0
+    while stack:
+        a, b = stack.pop()
+        while type(a) is Var and a.ref is not None:
+            a = a.ref
+        while type(b) is Var and b.ref is not None:
+            b = b.ref
+        if a is b:
+            continue
+        ta = type(a)
+        if ta is not type(b) or ta is Var:
+            return False
+        if ta is Term:
+            if a[0] != b[0] or len(a[1]) != len(b[1]):
+                return False
+            steps += 1
+            if steps > _FAST_STEPS:  # perhaps cyclic: compare each pair of compounds once
+                seen = set() if seen is None else seen
+                if (id(a), id(b)) in seen:
+                    continue
+                seen.add((id(a), id(b)))
+            stack.extend(zip(a[1], b[1], strict=True))
+        elif ta in _PRIMITIVE:
+            if a != b:
+                return False
+        else:
+            return False  # opaque objects: identical only when the same object
+    return True
 
 
 def order_key(term: Any) -> tuple[Any, ...]:
