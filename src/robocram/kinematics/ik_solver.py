@@ -74,7 +74,7 @@ class IKSolver:
         self.use_torso = use_torso
         joints = arm_joints(desc, arm, use_torso)
         self.frame = frame or arm_description(desc, arm).tool_frame
-        self.chain = ArmChain(robot_kinematics(model), joints, self.frame)
+        self.chain = self._chain(model, joints)
         self.reach = ReachBound.of(self.chain)
         self._table_size = table_size
         self._table: SeedTable | None = None
@@ -82,6 +82,10 @@ class IKSolver:
         self._middle = (
             np.where(finite, self.chain.lower, 0.0) + np.where(finite, self.chain.upper, 0.0)
         ) / 2
+
+    def _chain(self, model: RobotModel, joints: tuple[str, ...]) -> ArmChain:
+        """The chain IK moves: ``joints`` of ``model`` up to ``self.frame``."""
+        return ArmChain(robot_kinematics(model), joints, self.frame)
 
     @classmethod
     def cached(
