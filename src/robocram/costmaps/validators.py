@@ -7,10 +7,13 @@ arrives, with its arms parked (CRAM parks them before driving).
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Iterator, Mapping
 from contextlib import contextmanager
 from dataclasses import dataclass
 from types import MappingProxyType
+
+import numpy as np
 
 from robocram.costmaps.camera_aim import aimed_camera
 from robocram.costmaps.cost_layer import LocationQuery
@@ -18,13 +21,14 @@ from robocram.costmaps.errors import CostmapInputError
 from robocram.costmaps.grasps import grasp_point, grasp_poses
 from robocram.costmaps.reachability_map import ReachabilityMaps
 from robocram.kinematics import solve_ik
-from robocram.tf import Pose
-from robocram.world import RobotObject, World, WorldObject
+from robocram.tf import Pose, Vector3
+from robocram.world import Camera, RobotObject, World, WorldObject
 from robocram.world.visibility import ray_visibility
 
 Validator = Callable[[LocationQuery, Pose], bool]
 VISIBLE_FRACTION = 0.9  # share of the object the aimed camera must see
 VISIBILITY_RAYS = 12  # rays per side of the grid over the object's outline (world: 24)
+SEEN_WITHIN = 0.02  # [m] a ray to a target point stopping this close to it sees it
 IK_RESTARTS = 30  # random restarts per grasp: a miss costs a bounded, counted budget
 
 
@@ -89,13 +93,26 @@ def visible(query: LocationQuery, pose: Pose) -> bool:
     with placed(world, robot, pose), parked(world, robot):
         if target is None:
             point = query.point(query.designator.get("target"), "target")
-            camera = aimed_camera(world, robot, point)
-            hit = world.ray_cast(camera.pose.position, point)
-            gap = Pose(point).distance_to(camera.pose) - (hit.distance if hit else 1e9)
-            return gap < 0.02
+            return sees_point(world, aimed_camera(world, robot, point), point)
         obj = query.object(target, "object")
         camera = aimed_camera(world, robot, query.point(obj, "object"))
         return ray_visibility(world, camera, obj, VISIBILITY_RAYS).fraction >= VISIBLE_FRACTION
+
+
+def sees_point(world: World, camera: Camera, point: Vector3) -> bool:
+    """Whether nothing stands between ``camera`` and ``point`` (within 2 cm of it).
+
+    The ray starts at the camera's near plane, as the world's visibility rays do: a camera
+    inside its own housing (Boxy's Kinect link) sees nothing closer than that.
+    """
+    origin = np.asarray(camera.pose.position, float)
+    ahead = np.asarray(point, float) - origin
+    length = float(np.linalg.norm(ahead))
+    if length <= camera.near:
+        return True
+    start = origin + ahead * (camera.near / length)
+    hit = world.ray_cast(tuple(start.tolist()), point)
+    return hit is None or math.dist(hit.position, point) < SEEN_WITHIN
 
 
 @dataclass(frozen=True)

@@ -38,6 +38,7 @@ from robocram.tf import Pose, PoseStamped
 
 PLANAR_STARTS = 32  # fitted table samples tried before random configurations
 STILL_RESTARTS = 7  # restarts of the arm alone before the base may move (8 descents)
+STILL_ITERATIONS = 20  # steps per descent of the arm alone (a near miss creeps for long)
 _SOLVERS: weakref.WeakKeyDictionary[
     RobotModel, dict[tuple[str, bool, str | None, PlanarBase], BaseIKSolver]
 ] = weakref.WeakKeyDictionary()
@@ -98,7 +99,11 @@ class BaseIKSolver(IKSolver):
     ) -> IKResult:
         """The arm alone first, briefly (no base motion is the smallest); else arm and base."""
         s = settings or IKSettings()
-        quick = replace(s, max_restarts=min(s.max_restarts, STILL_RESTARTS))
+        quick = replace(
+            s,
+            max_restarts=min(s.max_restarts, STILL_RESTARTS),
+            max_iterations=min(s.max_iterations, STILL_ITERATIONS),
+        )
         still = self.arm_solver.solve(target, seed, quick, collision_check, random_seed, stop_check)
         if still.success:
             return replace(still, base_motion=BaseMotion())

@@ -22,6 +22,7 @@ from robocram.kinematics.seed_table import ROTATION_WEIGHT, SeedTable
 
 MOTION_WEIGHT = 0.1  # cost per metre of base travel, against metres of misfit
 TURN_WEIGHT = 0.3  # [m/rad] a turn of the base counts like this much travel per radian
+_ENTRIES = ((0, 0), (0, 1), (1, 0), (1, 1), (2, 2))  # of R_target R_sample^T the fit uses
 
 
 class PlanarFits(NamedTuple):
@@ -39,18 +40,21 @@ def planar_fits(
     ``arm_base`` is the pose, in the root link, of the frame the table's tool poses are
     given in. Moves beyond ``base``'s travel are left out.
     """
-    n = table.features.shape[0]
-    rotation = table.features[:, 3:].reshape(n, 3, 3) / ROTATION_WEIGHT
     rb, tb = arm_base.rotation, arm_base.translation
     position = table.features[:, :3] @ rb.T + tb
-    rotation = np.einsum("ij,njk->nik", rb, rotation)
-    m = np.einsum("ij,nkj->nik", target.rotation, rotation)  # R_target R_sample^T
-    yaw = np.arctan2(m[:, 1, 0] - m[:, 0, 1], m[:, 0, 0] + m[:, 1, 1])
+    # m = R_target (Rb R_sample)^T = A R_sample^T B with A = R_target, B = Rb^T, so each
+    # entry m[i, k] = sum over (l, j) of R_sample[l, j] A[i, j] B[l, k]: one product with
+    # the table's flattened rotations gives the five entries the fit needs
+    a, b = target.rotation, rb.T
+    weights = np.column_stack([np.outer(b[:, k], a[i]).ravel() for i, k in _ENTRIES])
+    m = table.features[:, 3:] @ (weights / ROTATION_WEIGHT)
+    m00, m01, m10, m11, m22 = m.T
+    yaw = np.arctan2(m10 - m01, m00 + m11)
     c, s = np.cos(yaw), np.sin(yaw)
     goal = target.translation
     x = goal[0] - (c * position[:, 0] - s * position[:, 1])
     y = goal[1] - (s * position[:, 0] + c * position[:, 1])
-    trace = c * (m[:, 0, 0] + m[:, 1, 1]) + s * (m[:, 1, 0] - m[:, 0, 1]) + m[:, 2, 2]
+    trace = c * (m00 + m11) + s * (m10 - m01) + m22
     tilt2 = np.maximum(6.0 - 2.0 * trace, 0.0)  # |Rz R_sample - R_target|_F^2
     misfit = np.sqrt((goal[2] - position[:, 2]) ** 2 + ROTATION_WEIGHT**2 * tilt2)
     motion = np.hypot(x, y) + TURN_WEIGHT * np.abs(yaw)

@@ -36,16 +36,16 @@ IKQuery = tuple[bool, PlanarBase | None]  # use_torso, base travel (None: the ba
 
 
 def _attempts(robot: ProjectedRobot, arm: str, move_base: bool | None) -> list[IKQuery]:
-    """(use_torso, base) of each IK query, in order: the arm, the torso, then the base."""
+    """(use_torso, base) of each IK query, in order: the arm, the torso, the base.
+
+    The base solver tries the arm and torso alone first, from the current joints, so with
+    the base there is one query.
+    """
     desc = robot.description
     torso = desc.torso_joint is not None
-    attempts: list[IKQuery] = [(False, None)]
-    with_base = base_in_ik(desc, arm) if move_base is None else move_base
-    if torso and not with_base:
-        attempts.append((True, None))
-    if with_base:  # the base solver tries the arm (and torso) alone first
-        attempts.append((torso, BASE_TRAVEL))
-    return attempts
+    if base_in_ik(desc, arm) if move_base is None else move_base:
+        return [(torso, BASE_TRAVEL)]
+    return [(False, None), (True, None)] if torso else [(False, None)]
 
 
 def _solve(
