@@ -114,6 +114,7 @@ class BaseIKSolver(IKSolver):
             joint_positions=joints,
             base_motion=motion,
             colliding_pairs=tuple(dict.fromkeys(moving.colliding_pairs + still.colliding_pairs)),
+            beyond_reach=still.beyond_reach,  # how far the base must move: the arm's figure
             iterations=still.iterations + moving.iterations,
             restarts=still.restarts + moving.restarts + (1 if still.iterations else 0),
             elapsed=still.elapsed + moving.elapsed,
