@@ -15,7 +15,6 @@ import weakref
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import replace
 
-import numpy as np
 import pinocchio as pin
 
 from robocram.kinematics.arm_chain import ArmChain, FloatArray
@@ -32,7 +31,6 @@ from robocram.kinematics.planar_base import (
 )
 from robocram.kinematics.planar_fit import planar_fits
 from robocram.kinematics.robot_kinematics import robot_kinematics
-from robocram.kinematics.seed_table import random_configurations
 from robocram.robots import RobotDescription, RobotModel
 from robocram.tf import Pose, PoseStamped
 
@@ -137,10 +135,4 @@ class BaseIKSolver(IKSolver):
         # last FK of the chain, made by ``locate``), in the virtual origin = the root link
         arm_base = self.chain.data.oMi[self.arm_solver.chain.first_row + len(BASE_JOINTS)]
         fits = planar_fits(self.arm_solver.table, arm_base, in_base, self.base, PLANAR_STARTS)
-        ahead = int(np.searchsorted(fits.cost, seed_distance))
-        yield from fits.starts[:ahead]
-        yield reference
-        yield from fits.starts[ahead:]
-        rng = np.random.default_rng(random_seed)
-        while True:
-            yield from random_configurations(self.chain, rng, 16, reference)
+        yield from self._with_seed(fits.starts, fits.cost, reference, seed_distance, random_seed)

@@ -208,10 +208,22 @@ class IKSolver:
         if self.reach.excludes(in_base, s.position_tolerance):
             return
         near, distance = self.table.nearest(in_base, s.table_starts)
-        ahead = int(np.searchsorted(distance, seed_distance))
-        yield from near[:ahead]
+        yield from self._with_seed(near, distance, reference, seed_distance, random_seed)
+
+    def _with_seed(
+        self,
+        starts: FloatArray,
+        costs: FloatArray,
+        reference: FloatArray,
+        seed_distance: float,
+        random_seed: int,
+    ) -> Iterator[FloatArray]:
+        """``starts`` (sorted by ``costs``) with the seed among them by its own distance,
+        then seeded random configurations without end."""
+        ahead = int(np.searchsorted(costs, seed_distance))
+        yield from starts[:ahead]
         yield reference
-        yield from near[ahead:]
+        yield from starts[ahead:]
         rng = np.random.default_rng(random_seed)
         while True:
             yield from random_configurations(self.chain, rng, 16, reference)
