@@ -20,7 +20,7 @@ from robocram.costmaps.cost_layer import LocationQuery
 from robocram.costmaps.errors import CostmapInputError
 from robocram.costmaps.grasps import grasp_point, grasp_poses
 from robocram.costmaps.reachability_map import ReachabilityMaps
-from robocram.kinematics import solve_ik
+from robocram.kinematics import BaseMotion, PlanarBase, base_in_ik, solve_ik
 from robocram.tf import Pose, Vector3
 from robocram.world import Camera, RobotObject, World, WorldObject
 from robocram.world.visibility import ray_visibility
@@ -29,6 +29,7 @@ Validator = Callable[[LocationQuery, Pose], bool]
 VISIBLE_FRACTION = 0.9  # share of the object the aimed camera must see
 VISIBILITY_RAYS = 12  # rays per side of the grid over the object's outline (world: 24)
 SEEN_WITHIN = 0.02  # [m] a ray to a target point stopping this close to it sees it
+STAND_TRAVEL = PlanarBase(0.25, 0.25, math.pi / 4)  # a base-in-IK arm's adjustment at a stand
 IK_RESTARTS = 30  # random restarts per grasp: a miss costs a bounded, counted budget
 
 
@@ -122,6 +123,7 @@ class Reach:
     arm: str
     joint_positions: dict[str, float]  # [rad | m] torso included
     tool_in_base: Pose  # the grasp, in the robot's root link
+    base_motion: BaseMotion | None = None  # the base's own adjustment (arms < 6 joints)
 
 
 def robot_arms(robot: RobotObject, arm: str | None) -> list[str]:
@@ -146,6 +148,9 @@ def reach_object(
 ) -> Reach | None:
     """An IK solution (torso free) grasping ``obj`` from above from ``base``, or None.
 
+    An arm that reaches with the base (``kinematics.base_in_ik``, the HSR's) may adjust
+    the base by up to :data:`STAND_TRAVEL` from ``base``, as it will when it grasps.
+
     With reachability ``maps``, arms are tried best first and those the map says cannot
     get there are skipped: IK on a hopeless target only burns its whole budget.
     """
@@ -158,12 +163,19 @@ def reach_object(
     seed = world.joint_states(robot)
     use_torso = desc.torso_joint is not None
     for name in arms:
+        travel = STAND_TRAVEL if base_in_ik(desc, name) else None
         for target in grasp_poses(world, obj, desc, name, base):
             result = solve_ik(
-                desc, name, target, seed=seed, use_torso=use_torso, max_restarts=IK_RESTARTS
+                desc,
+                name,
+                target,
+                seed=seed,
+                use_torso=use_torso,
+                max_restarts=IK_RESTARTS,
+                base=travel,
             )
             if result.success:
-                return Reach(name, dict(result.joint_positions), target)
+                return Reach(name, dict(result.joint_positions), target, result.base_motion)
     return None
 
 
