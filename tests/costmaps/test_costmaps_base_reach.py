@@ -1,4 +1,4 @@
-"""Where the HSR stands to grasp: its five-joint arm may adjust the base, as it will when it grasps."""
+"""Where the HSR stands to grasp: its five-joint arm may adjust the base, as when grasping."""
 
 from __future__ import annotations
 
