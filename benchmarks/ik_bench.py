@@ -15,9 +15,14 @@ Unreachable targets, which must fail fast:
   the lift: a four-joint arm reaches a four-dimensional set of tool poses, so random
   six-dimensional targets are out of its reach.
 
-Last, the descents IK spends in the HSR's pick-up plan in the tabletop scene.
+Then the descents IK spends in the HSR's pick-up plan in the tabletop scene.
 
-Usage: ``python benchmarks/ik_bench.py [count=1000] [random_seed=0]``
+Last, "HSR base-in-IK": the pick-up plan's success rate on the HSR over seeded mug
+placements on the tabletop scene's table (the half nearest the robot), with the arm alone
+(``ArmDescription.base_in_ik=False``, as before) and reaching with the base (the default
+for its five-joint arm), and top grasps at random turns the five-joint arm misses alone.
+
+Usage: ``python benchmarks/ik_bench.py [count=1000] [random_seed=0] [placements=20]``
 """
 
 from __future__ import annotations
@@ -244,6 +249,80 @@ def hsr_pick_up_descents() -> None:
     print(f"\nHSR pick-up plan: {len(answers)} IK queries, {total} descents [{per_query}]")
 
 
+def hsr_variant(base_in_ik: bool | None) -> RobotDescription:
+    """The HSR with its arm's ``base_in_ik`` flag set (None: the default)."""
+    hsr = load_description("hsrb")
+    arm = replace(hsr.arms["arm"], base_in_ik=base_in_ik)
+    return replace(hsr, arms={"arm": arm})
+
+
+def hsr_pick_success(count: int, seed: int, base_in_ik: bool | None) -> None:
+    """Pick up a mug placed at ``count`` seeded spots of the table's near half."""
+    from robocram.execution.failures import PlanFailure
+    from robocram.plans import pick_up
+    from robocram.projection import simulated_robot
+    from robocram.scenes import tabletop_scene
+    from robocram.scenes.placement import TABLE_DEPTH
+    from robocram.tf import PoseStamped
+
+    scene = tabletop_scene(hsr_variant(base_in_ik))
+    world = scene.world
+    height = world.pose("mug-1").position[2]
+    front = world.pose("table").position[0] - TABLE_DEPTH / 2
+    rng = np.random.default_rng(seed + 3)
+    held, moves, times = 0, [], []
+    for _ in range(count):
+        x, y = rng.uniform(front + 0.05, front + TABLE_DEPTH / 2), rng.uniform(-0.4, 0.4)
+        with world.stored_state():
+            world.set_pose("mug-1", Pose((x, y, height)))
+            t0 = time.perf_counter()
+            with contextlib.suppress(PlanFailure), simulated_robot(world, scene.robot):
+                pick_up(PoseStamped("map", (x, y, height)))
+            times.append((time.perf_counter() - t0) * 1e3)
+            if world.attached_to("mug-1") is not None:
+                held += 1
+                moves.append(math.hypot(*world.pose(scene.robot).position[:2]))
+    label = "arm alone (base_in_ik=False)" if base_in_ik is False else "arm and base (default)"
+    moved = f"{statistics.median(moves):.3f} m" if moves else "-"
+    median = statistics.median(times)
+    print(f"{label:<30} {100 * held / count:6.1f} % picked   median plan {median:7.0f} ms", end="")
+    print(f"   median base move {moved}")
+    world.close()
+
+
+def hsr_top_grasps(count: int, seed: int) -> None:
+    """Top grasps at random positions and turns: the arm alone against arm and base."""
+    from robocram.kinematics import PlanarBase
+    from robocram.tf import quaternion as quat
+
+    hsr = load_description("hsrb")
+    rng = np.random.default_rng(seed + 4)
+    down = quat.from_euler(0.0, math.pi / 2, 0.0)
+    poses = [
+        Pose(
+            (rng.uniform(0.3, 0.7), rng.uniform(-0.4, 0.4), rng.uniform(0.4, 1.0)),
+            quat.multiply(quat.from_euler(0.0, 0.0, rng.uniform(-math.pi, math.pi)), down),
+        )
+        for _ in range(count)
+    ]
+    for base in (None, PlanarBase()):
+        answers, cpu = [], time.process_time()
+        for target in poses:
+            answers.append(solve_ik(hsr, "arm", target, use_torso=True, base=base))
+        cpu = (time.process_time() - cpu) * 1e3 / count
+        ok = sum(a.success for a in answers)
+        label = "arm alone" if base is None else "arm and base (+-0.5 m, +-pi)"
+        print(f"{label:<30} {100 * ok / count:6.1f} % reached   {cpu:6.2f} ms cpu per query")
+
+
+def hsr_base_in_ik(placements: int, seed: int) -> None:
+    print(f"\nHSR base-in-IK: {5 * placements} top grasps at random turns (torso free)")
+    hsr_top_grasps(5 * placements, seed)
+    print(f"HSR base-in-IK: pick-up plan over {placements} seeded mug placements (tabletop)")
+    for flag in (False, None):
+        hsr_pick_success(placements, seed, flag)
+
+
 def reaches(desc: RobotDescription, result: IKResult, target: Pose) -> bool:
     """Success, confirmed by our FK of the returned joints."""
     tool = forward_kinematics(desc, result.joint_positions, FRAME)
@@ -268,7 +347,7 @@ def machine_speed() -> str:
     )
 
 
-def main(count: int, seed: int) -> None:
+def main(count: int, seed: int, placements: int) -> None:
     desc = load_description("pr2")
     solver = IKSolver.cached(desc, ARM)
     start = dict(zip(solver.variables, solver.start({}), strict=True))
@@ -290,10 +369,12 @@ def main(count: int, seed: int) -> None:
     run("pybullet calculateIK", desc, ARM, far, pybullet_ik(desc, start, null_space=False))
     hsr_without_lift(len(far), seed)
     hsr_pick_up_descents()
+    hsr_base_in_ik(placements, seed)
 
 
 if __name__ == "__main__":
     main(
         int(sys.argv[1]) if len(sys.argv) > 1 else 1000,
         int(sys.argv[2]) if len(sys.argv) > 2 else 0,
+        int(sys.argv[3]) if len(sys.argv) > 3 else 20,
     )

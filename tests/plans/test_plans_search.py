@@ -17,13 +17,6 @@ from robocram.scenes import KitchenScene, kitchen_scene
 SURFACES = ["counter_top_north", "counter_top_east", "sink", "stove", "table_top"]
 
 
-BOXY_UNSEEN = pytest.mark.xfail(
-    strict=True,
-    reason="the visible_for costmap rejects every pose from which Boxy's high camera would "
-    "see a point over the north counter (issue 15 note)",
-)
-
-
 @pytest.fixture(scope="module", params=["pr2", "hsrb", "boxy"])
 def kitchen(request: pytest.FixtureRequest) -> Iterator[KitchenScene]:
     scene = kitchen_scene(request.param)
@@ -37,9 +30,6 @@ def _search(scene: KitchenScene, object_type: str, log: SearchLog, poses: int = 
         return search(object_type, poses_per_place=poses, log=log)
 
 
-@pytest.mark.parametrize(
-    "kitchen", ["pr2", "hsrb", pytest.param("boxy", marks=BOXY_UNSEEN)], indirect=True
-)
 def test_the_mug_is_found_at_its_usual_place_first(kitchen: KitchenScene) -> None:
     log = SearchLog()
     with kitchen.world.stored_state():

@@ -109,3 +109,29 @@ def test_a_stopped_task_ends_the_opening_at_its_next_step(
         move_part(robot, "right", "kitchen", joint, handle, 0.30)
     assert world.joint_states("kitchen")[joint] == pytest.approx(0.0, abs=1e-9)
     assert world.attached_to("bowl-1") is None  # the bowl no longer rides on the drawer
+
+
+@pytest.mark.parametrize(
+    ("robot", "arm", "aside"),
+    [("pr2", "right", -0.19), ("hsrb", "arm", -0.08)],  # the arm's shoulder before the handle
+)
+@pytest.mark.parametrize("door", ["cupboard", "fridge"])
+def test_doors_open_wide_with_the_base_following_the_arc(
+    robot: str, arm: str, aside: float, door: str
+) -> None:
+    scene = kitchen_scene(robot)
+    world = scene.world
+    desc = world.robot(scene.robot).description
+    world.set_joint_states(scene.robot, dict(desc.arms[arm].parking))
+    joint, handle = f"{door}_door_joint", f"{door}_door_handle"
+    x, y, _ = world.link_pose("kitchen", handle).position
+    standing = Pose((x + aside, y - 0.75, 0.0), FACING_NORTH)
+    world.set_pose(scene.robot, standing)
+    result = move_part(ProjectedRobot.of(world, scene.robot), arm, "kitchen", joint, handle, 1.2)
+    assert result.reached == pytest.approx(1.2, abs=1e-9)
+    assert world.joint_states("kitchen")[joint] == pytest.approx(1.2, abs=0.03)
+    assert world.pose(scene.robot).distance_to(standing) > 0.05  # the arm alone stops early
+    touching = {p.link_a for p in world.contact_points(scene.robot, "kitchen")}
+    hand = {*desc.arms[arm].hand_links, *desc.arms[arm].gripper_links}
+    assert touching <= hand  # at most the open hand still at the handle of a wide door
+    world.close()

@@ -77,7 +77,7 @@ def test_a_stop_ends_a_failing_ik_search_between_descents_and_the_arm_stays(
         assert world.joint_states(robot.name) == pytest.approx(before, abs=1e-12)
 
 
-@pytest.mark.parametrize("n", [3, 12, 13, 25, 40])
+@pytest.mark.parametrize("n", [3, 12, 13, 25, 33])  # the opening passes 37 stop points
 def test_a_stop_while_a_drawer_opens_leaves_no_attachment_and_the_bowl_in_the_drawer(
     kitchen: tuple[KitchenScene, ProjectedRobot], n: int
 ) -> None:

@@ -24,9 +24,9 @@ def _direct(robot: str) -> tuple[Pose, Pose, Pose, str]:
     world = scene.world
     with simulated_robot(world, robot):
         result = pick_up(scene.look_target)
-    base = world.pose(robot)
+    assert result.grasp.frame_id == "map"
     return (
-        base * result.grasp.pose,
+        result.grasp.pose,
         world.link_pose(robot, result.tool_frame),
         world.pose("mug-1"),
         result.arm,

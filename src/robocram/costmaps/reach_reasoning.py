@@ -1,6 +1,7 @@
 """CRAM's reach reasoning: ``reachable/2``, ``pose_reachable/2`` and ``blocking/4``.
 
-In Python and as predicates of the world's knowledge base. Robots stay where they stand;
+In Python and as predicates of the world's knowledge base. Robots stay where they stand
+(an arm that reaches with the base adjusts it a little, ``validators.STAND_TRAVEL``);
 IK decides (torso free, grasps from above), and ``blocking`` puts the arm at the grasp to
 see what it would hit, then restores the joints.
 """
@@ -11,8 +12,14 @@ from collections.abc import Iterator
 from typing import Any
 
 from robocram.costmaps.errors import CostmapInputError
-from robocram.costmaps.validators import IK_RESTARTS, reach_object, robot_arms
-from robocram.kinematics import solve_ik
+from robocram.costmaps.validators import (
+    IK_RESTARTS,
+    STAND_TRAVEL,
+    placed,
+    reach_object,
+    robot_arms,
+)
+from robocram.kinematics import base_in_ik, solve_ik
 from robocram.logic import KnowledgeBase, Var
 from robocram.tf import Pose, PoseStamped
 from robocram.world import RobotObject, World, WorldObject
@@ -42,7 +49,15 @@ def pose_reachable(
     seed = world.joint_states(body)
     use_torso = desc.torso_joint is not None
     return any(
-        solve_ik(desc, name, target, seed=seed, use_torso=use_torso, max_restarts=IK_RESTARTS)
+        solve_ik(
+            desc,
+            name,
+            target,
+            seed=seed,
+            use_torso=use_torso,
+            max_restarts=IK_RESTARTS,
+            base=STAND_TRAVEL if base_in_ik(desc, name) else None,
+        )
         for name in robot_arms(body, arm)
     )
 
@@ -63,11 +78,17 @@ def blocking(
     reach = reach_object(world, body, target, world.pose(body), arm)
     if reach is None:
         return None
-    before = world.joint_states(body)
+    model = body.description.model
+    before = {  # followers come back with their masters
+        j: v for j, v in world.joint_states(body).items() if model.joints[j].mimic is None
+    }
+    stand = world.pose(body)
+    moved = stand * reach.base_motion.pose() if reach.base_motion is not None else stand
     try:
-        world.set_joint_states(body, reach.joint_positions)
-        skip = [target, *world.objects(type="floor")]
-        return sorted(o.name for o in world.collisions(body, skip))
+        with placed(world, body, moved):  # as the arm would adjust its base to grasp
+            world.set_joint_states(body, reach.joint_positions)
+            skip = [target, *world.objects(type="floor")]
+            return sorted(o.name for o in world.collisions(body, skip))
     finally:
         world.set_joint_states(body, before)
 

@@ -7,24 +7,29 @@ arrives, with its arms parked (CRAM parks them before driving).
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Iterator, Mapping
 from contextlib import contextmanager
 from dataclasses import dataclass
 from types import MappingProxyType
+
+import numpy as np
 
 from robocram.costmaps.camera_aim import aimed_camera
 from robocram.costmaps.cost_layer import LocationQuery
 from robocram.costmaps.errors import CostmapInputError
 from robocram.costmaps.grasps import grasp_point, grasp_poses
 from robocram.costmaps.reachability_map import ReachabilityMaps
-from robocram.kinematics import solve_ik
-from robocram.tf import Pose
-from robocram.world import RobotObject, World, WorldObject
+from robocram.kinematics import BaseMotion, PlanarBase, base_in_ik, solve_ik
+from robocram.tf import Pose, Vector3
+from robocram.world import Camera, RobotObject, World, WorldObject
 from robocram.world.visibility import ray_visibility
 
 Validator = Callable[[LocationQuery, Pose], bool]
 VISIBLE_FRACTION = 0.9  # share of the object the aimed camera must see
 VISIBILITY_RAYS = 12  # rays per side of the grid over the object's outline (world: 24)
+SEEN_WITHIN = 0.02  # [m] a ray to a target point stopping this close to it sees it
+STAND_TRAVEL = PlanarBase(0.25, 0.25, math.pi / 4)  # a base-in-IK arm's adjustment at a stand
 IK_RESTARTS = 30  # random restarts per grasp: a miss costs a bounded, counted budget
 
 
@@ -89,13 +94,26 @@ def visible(query: LocationQuery, pose: Pose) -> bool:
     with placed(world, robot, pose), parked(world, robot):
         if target is None:
             point = query.point(query.designator.get("target"), "target")
-            camera = aimed_camera(world, robot, point)
-            hit = world.ray_cast(camera.pose.position, point)
-            gap = Pose(point).distance_to(camera.pose) - (hit.distance if hit else 1e9)
-            return gap < 0.02
+            return sees_point(world, aimed_camera(world, robot, point), point)
         obj = query.object(target, "object")
         camera = aimed_camera(world, robot, query.point(obj, "object"))
         return ray_visibility(world, camera, obj, VISIBILITY_RAYS).fraction >= VISIBLE_FRACTION
+
+
+def sees_point(world: World, camera: Camera, point: Vector3) -> bool:
+    """Whether nothing stands between ``camera`` and ``point`` (within 2 cm of it).
+
+    The ray starts at the camera's near plane, as the world's visibility rays do: a camera
+    inside its own housing (Boxy's Kinect link) sees nothing closer than that.
+    """
+    origin = np.asarray(camera.pose.position, float)
+    ahead = np.asarray(point, float) - origin
+    length = float(np.linalg.norm(ahead))
+    if length <= camera.near:
+        return True
+    start = origin + ahead * (camera.near / length)
+    hit = world.ray_cast(tuple(start.tolist()), point)
+    return hit is None or math.dist(hit.position, point) < SEEN_WITHIN
 
 
 @dataclass(frozen=True)
@@ -105,6 +123,7 @@ class Reach:
     arm: str
     joint_positions: dict[str, float]  # [rad | m] torso included
     tool_in_base: Pose  # the grasp, in the robot's root link
+    base_motion: BaseMotion | None = None  # the base's own adjustment (arms < 6 joints)
 
 
 def robot_arms(robot: RobotObject, arm: str | None) -> list[str]:
@@ -129,6 +148,9 @@ def reach_object(
 ) -> Reach | None:
     """An IK solution (torso free) grasping ``obj`` from above from ``base``, or None.
 
+    An arm that reaches with the base (``kinematics.base_in_ik``, the HSR's) may adjust
+    the base by up to :data:`STAND_TRAVEL` from ``base``, as it will when it grasps.
+
     With reachability ``maps``, arms are tried best first and those the map says cannot
     get there are skipped: IK on a hopeless target only burns its whole budget.
     """
@@ -141,12 +163,19 @@ def reach_object(
     seed = world.joint_states(robot)
     use_torso = desc.torso_joint is not None
     for name in arms:
+        travel = STAND_TRAVEL if base_in_ik(desc, name) else None
         for target in grasp_poses(world, obj, desc, name, base):
             result = solve_ik(
-                desc, name, target, seed=seed, use_torso=use_torso, max_restarts=IK_RESTARTS
+                desc,
+                name,
+                target,
+                seed=seed,
+                use_torso=use_torso,
+                max_restarts=IK_RESTARTS,
+                base=travel,
             )
             if result.success:
-                return Reach(name, dict(result.joint_positions), target)
+                return Reach(name, dict(result.joint_positions), target, result.base_motion)
     return None
 
 

@@ -5,13 +5,16 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
+from robocram.kinematics.planar_base import BaseMotion
+
 
 @dataclass(frozen=True)
 class IKResult:
     """Outcome of :func:`~robocram.kinematics.solve_ik`; truthy when it succeeded.
 
     ``joint_positions`` holds the arm joints, the torso joint when it was allowed to move,
-    and every mimic joint following them, [rad | m]. On failure it holds the best
+    and every mimic joint following them, [rad | m]; ``base_motion`` the base's move when
+    IK could move the base (``solve_ik(..., base=PlanarBase())``). On failure it holds the best
     configuration found (closest to the target), still within limits. Errors are those of
     that configuration: ``position_error`` [m], ``orientation_error`` [rad].
 
@@ -31,6 +34,7 @@ class IKResult:
     rejected_in_collision: int = 0  # converged solutions the collision check refused
     colliding_pairs: tuple[tuple[str, str], ...] = ()
     beyond_reach: float = 0.0  # [m]
+    base_motion: BaseMotion | None = None  # None when the base was not part of the query
 
     def __bool__(self) -> bool:
         return self.success

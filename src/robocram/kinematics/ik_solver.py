@@ -74,7 +74,7 @@ class IKSolver:
         self.use_torso = use_torso
         joints = arm_joints(desc, arm, use_torso)
         self.frame = frame or arm_description(desc, arm).tool_frame
-        self.chain = ArmChain(robot_kinematics(model), joints, self.frame)
+        self.chain = self._chain(model, joints)
         self.reach = ReachBound.of(self.chain)
         self._table_size = table_size
         self._table: SeedTable | None = None
@@ -82,6 +82,10 @@ class IKSolver:
         self._middle = (
             np.where(finite, self.chain.lower, 0.0) + np.where(finite, self.chain.upper, 0.0)
         ) / 2
+
+    def _chain(self, model: RobotModel, joints: tuple[str, ...]) -> ArmChain:
+        """The chain IK moves: ``joints`` of ``model`` up to ``self.frame``."""
+        return ArmChain(robot_kinematics(model), joints, self.frame)
 
     @classmethod
     def cached(
@@ -204,10 +208,22 @@ class IKSolver:
         if self.reach.excludes(in_base, s.position_tolerance):
             return
         near, distance = self.table.nearest(in_base, s.table_starts)
-        ahead = int(np.searchsorted(distance, seed_distance))
-        yield from near[:ahead]
+        yield from self._with_seed(near, distance, reference, seed_distance, random_seed)
+
+    def _with_seed(
+        self,
+        starts: FloatArray,
+        costs: FloatArray,
+        reference: FloatArray,
+        seed_distance: float,
+        random_seed: int,
+    ) -> Iterator[FloatArray]:
+        """``starts`` (sorted by ``costs``) with the seed among them by its own distance,
+        then seeded random configurations without end."""
+        ahead = int(np.searchsorted(costs, seed_distance))
+        yield from starts[:ahead]
         yield reference
-        yield from near[ahead:]
+        yield from starts[ahead:]
         rng = np.random.default_rng(random_seed)
         while True:
             yield from random_configurations(self.chain, rng, 16, reference)

@@ -10,8 +10,10 @@ import functools
 from collections.abc import Callable, Mapping
 
 from robocram.kinematics.arm_selection import loaded
+from robocram.kinematics.base_ik_solver import BaseIKSolver
 from robocram.kinematics.ik_result import IKResult
 from robocram.kinematics.ik_solver import CollisionCheck, IKSettings, IKSolver
+from robocram.kinematics.planar_base import PlanarBase
 from robocram.kinematics.robot_kinematics import robot_kinematics
 from robocram.robots import RobotDescription
 from robocram.tf import Pose, PoseStamped
@@ -32,6 +34,7 @@ def solve_ik(
     orientation_tolerance: float = 1e-2,
     random_seed: int = 0,
     stop_check: Callable[[], None] | None = None,
+    base: PlanarBase | None = None,
 ) -> IKResult:
     """Joint values that put ``frame`` (default: the arm's tool frame) at ``target``.
 
@@ -52,11 +55,14 @@ def solve_ik(
             give bit-identical joint values.
         stop_check: called before every descent (a few milliseconds apart); it ends the
             search by raising, e.g. a task's ``checkpoint``. It never changes the answer.
+        base: also move the base within this travel (planar x, y, yaw before the root
+            link); the move comes back in ``IKResult.base_motion``. None keeps it still;
+            :func:`~robocram.kinematics.base_in_ik` says whether the description wants it.
 
     Returns:
         An IKResult; ``success`` False when no solution was found within the budget.
     """
-    solver = IKSolver.cached(description, arm, use_torso, frame)
+    solver = _solver(description, arm, use_torso, frame, base)
     settings = _settings(position_tolerance, orientation_tolerance, max_restarts, max_iterations)
     return solver.solve(
         target, dict(seed or {}), settings, collision_check, random_seed, stop_check
@@ -95,6 +101,7 @@ def reachable(
     seed: Mapping[str, float] | None = None,
     frame: str | None = None,
     use_torso: bool = False,
+    base: PlanarBase | None = None,
 ) -> bool:
     """Whether ``target`` may be reachable: False only when it is certainly out of reach.
 
@@ -104,5 +111,18 @@ def reachable(
     from its first joint. True says only "maybe": :func:`solve_ik` decides. Arguments are
     those of :func:`solve_ik`.
     """
-    solver = IKSolver.cached(description, arm, use_torso, frame)
+    solver = _solver(description, arm, use_torso, frame, base)
     return solver.reachable(target, dict(seed or {}))
+
+
+def _solver(
+    description: RobotDescription | str,
+    arm: str,
+    use_torso: bool,
+    frame: str | None,
+    base: PlanarBase | None,
+) -> IKSolver:
+    """The cached solver for a query, with the base in the chain when ``base`` is given."""
+    if base is None:
+        return IKSolver.cached(description, arm, use_torso, frame)
+    return BaseIKSolver.cached(description, arm, use_torso, frame, base)

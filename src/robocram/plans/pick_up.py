@@ -26,6 +26,7 @@ APPROACH = 0.10  # [m] the pre-grasp pose is this far above the grasp
 LIFT = 0.10  # [m] the mug is lifted by this much
 GRASP_HEIGHT = 0.05  # [m] above the mug's bottom (its frame origin)
 YAWS = (0.0, math.pi, math.pi / 2, -math.pi / 2)  # [rad] grasp turns tried in order
+FIXED_FRAME = "map"  # targets are kept here, since the base may move while reaching
 
 
 @dataclass(frozen=True)
@@ -119,7 +120,8 @@ def pick_up(look_target: PoseStamped, object_type: str = "mug") -> PickResult:
     _raise_torso(robot)
     perform(a.motion(type="looking", target=a.location(pose=look_target)))
     seen = perform(a.motion(type="detecting", object=an.object(type=object_type)))
-    pose = seen.get("pose")
+    # in the fixed frame: an arm that reaches with the base moves the base frame
+    pose = transform_pose(seen.get("pose"), FIXED_FRAME)
     arm = _nearest_arm(robot, arms, pose)
     tool, axis = _approach_axis(robot, arm)
     perform(a.motion(type="opening", gripper=arm))

@@ -3,8 +3,11 @@
 ``move_tcp`` transforms the target into the robot's root link and solves IK seeded with
 the current joints, first with the torso held, then (as CRAM's projection resamples the
 torso) with the torso free, rejecting solutions that collide as the motion's collision
-mode says (``collision_mode.py``). The solution is applied and the reached tool pose
-checked against the target within 1 cm / 0.05 rad, so a silent miss is impossible.
+mode says (``collision_mode.py``). An arm with fewer than six joints (the HSR's) then
+reaches with the base too, as CRAM does for the HSR: a solution with a base part moves the
+base first, the way driving does (what the robot holds rides along), then the arm. The
+reached tool pose is checked against the target within 1 cm / 0.05 rad, so a silent miss
+is impossible.
 
 IK is bounded by counted descents and seeded (``IK_RANDOM_SEED`` unless the caller gives
 one), so a projection gives bit-identical joints on an idle and a loaded machine.
@@ -16,9 +19,10 @@ from collections.abc import Mapping
 
 from robocram.execution import checkpoint
 from robocram.execution.failures import ManipulationGoalNotReached
-from robocram.kinematics import IKResult, solve_ik
+from robocram.kinematics import BaseMotion, IKResult, PlanarBase, base_in_ik, solve_ik
 from robocram.projection.collision_mode import collision_check
 from robocram.projection.errors import unknown_name
+from robocram.projection.navigation import moved_base, place_base
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.projection.reach_failure import unreachable
 from robocram.tf import Pose, PoseLike, PoseStamped
@@ -26,20 +30,40 @@ from robocram.tf import Pose, PoseLike, PoseStamped
 POSITION_TOLERANCE = 0.01  # [m] between the reached tool frame and the target
 ORIENTATION_TOLERANCE = 0.05  # [rad]
 IK_RANDOM_SEED = 0  # seeds IK's random restarts in every move_tcp without its own seed
+IK_RESTARTS = 100  # descents after the first in each IK query of a move_tcp
+BASE_TRAVEL = PlanarBase()  # how far IK may move the base: +-0.5 m in x and y, +-pi in yaw
+IKQuery = tuple[bool, PlanarBase | None]  # use_torso, base travel (None: the base stays)
+
+
+def _attempts(robot: ProjectedRobot, arm: str, move_base: bool | None) -> list[IKQuery]:
+    """(use_torso, base) of each IK query, in order: the arm, the torso, the base.
+
+    The base solver tries the arm and torso alone first, from the current joints, so with
+    the base there is one query.
+    """
+    desc = robot.description
+    torso = desc.torso_joint is not None
+    if base_in_ik(desc, arm) if move_base is None else move_base:
+        return [(torso, BASE_TRAVEL)]
+    return [(False, None), (True, None)] if torso else [(False, None)]
 
 
 def _solve(
-    robot: ProjectedRobot, arm: str, target_in_base: Pose, mode: str, random_seed: int
+    robot: ProjectedRobot,
+    arm: str,
+    target_in_base: Pose,
+    mode: str,
+    random_seed: int,
+    move_base: bool | None = None,
+    max_restarts: int = IK_RESTARTS,
 ) -> IKResult:
-    desc = robot.description
     check = collision_check(robot, arm, mode)
     seed = robot.world.joint_states(robot.name)
-    attempts = [False, True] if desc.torso_joint is not None else [False]
     result = IKResult(False)
     with robot.ik_lock:
-        for use_torso in attempts:
+        for use_torso, base in _attempts(robot, arm, move_base):
             result = solve_ik(
-                desc,
+                robot.description,
                 arm,
                 target_in_base,
                 seed=seed,
@@ -47,6 +71,8 @@ def _solve(
                 collision_check=check,
                 random_seed=random_seed,
                 stop_check=checkpoint,  # a stopped task ends the search within one descent
+                base=base,
+                max_restarts=max_restarts,
             )
             if result.success:
                 break
@@ -59,11 +85,17 @@ def move_tcp(
     target: PoseStamped | PoseLike,
     collision_mode: str = "avoid_all",
     random_seed: int = IK_RANDOM_SEED,
+    move_base: bool | None = None,
+    max_restarts: int = IK_RESTARTS,
 ) -> Pose:
     """Put ``arm``'s tool frame at ``target`` (map unless stamped); return it in ``map``.
 
     ``collision_mode`` is CRAM's: ``avoid_all``, ``allow_hand`` (grasping) or ``allow_all``.
     ``random_seed`` seeds IK's restarts: the same world, target and seed give the same joints.
+    ``move_base``: whether IK may move the base (within :data:`BASE_TRAVEL`) when the arm
+    alone cannot reach; None lets the description decide (``kinematics.base_in_ik``). A
+    solution with a base part drives the base first, then moves the arm. ``max_restarts``
+    bounds each IK query (a best-effort motion may ask for fewer).
 
     Raises:
         ManipulationPoseUnreachable: IK found no collision-free solution; the arm stays.
@@ -74,10 +106,15 @@ def move_tcp(
     spec = robot.arm(arm)
     target_in_map = robot.in_map(target)
     target_in_base = robot.base_pose().inverse() * target_in_map
-    result = _solve(robot, arm, target_in_base, collision_mode, random_seed)
+    result = _solve(
+        robot, arm, target_in_base, collision_mode, random_seed, move_base, max_restarts
+    )
     if not result.success:
         desc = robot.description
         raise unreachable(desc, arm, target, target_in_map, collision_mode, result)
+    motion = result.base_motion
+    if motion is not None and motion != BaseMotion():
+        place_base(robot, moved_base(robot, motion))
     robot.world.set_joint_states(robot.name, dict(result.joint_positions))
     reached = robot.world.link_pose(robot.name, spec.tool_frame)
     return ensure_reached(robot.name, arm, reached, target, target_in_map)

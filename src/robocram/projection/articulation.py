@@ -29,6 +29,7 @@ from robocram.kinematics import forward_kinematics
 from robocram.projection.arm import move_tcp
 from robocram.projection.errors import ProjectionError
 from robocram.projection.gripper import close_gripper, open_gripper
+from robocram.projection.navigation import place_base
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
@@ -36,6 +37,8 @@ from robocram.tf import quaternion as quat
 LINEAR_STEP = 0.02  # [m] of a prismatic joint between IK checks
 ANGULAR_STEP = math.radians(5.0)  # [rad] of a revolute joint between IK checks
 PRE_GRASP = 0.10  # [m] in front of the handle before and after holding it
+BACK_OFF = (PRE_GRASP, PRE_GRASP / 2)  # [m] tried in turn when letting go of the handle
+LET_GO_RESTARTS = 8  # IK restarts per backing-off try: it is best effort
 ROLLS = (math.pi / 2, -math.pi / 2, 0.0, math.pi)  # [rad] about the approach axis
 RESTING = 0.005  # [m] objects this close to the moving link move with it
 HOLD_MODE = "allow_hand"  # the fingers close around the handle
@@ -112,7 +115,7 @@ def _follow(
         checkpoint()  # a stopped task ends here, holding the handle at the last step
         world.set_joint_states(part, {joint: value})
         try:
-            move_tcp(robot, arm, world.link_pose(part, handle) * grasp, HOLD_MODE)
+            move_tcp(robot, arm, world.link_pose(part, handle) * grasp, HOLD_MODE, move_base=True)
         except (ManipulationPoseUnreachable, ManipulationGoalNotReached):
             world.set_joint_states(part, {joint: held})
             return held
@@ -150,9 +153,9 @@ def _take_handle(robot: ProjectedRobot, arm: str, part: str, handle: str, grasp:
     in_front = world.link_pose(part, handle) * Pose((PRE_GRASP, 0.0, 0.0)) * grasp
     open_gripper(robot, arm)
     try:
-        move_tcp(robot, arm, in_front)
+        move_tcp(robot, arm, in_front, move_base=True)
         checkpoint()
-        move_tcp(robot, arm, at_handle, HOLD_MODE)
+        move_tcp(robot, arm, at_handle, HOLD_MODE, move_base=True)
     except (ManipulationPoseUnreachable, ManipulationGoalNotReached):
         return False
     close_gripper(robot, arm)
@@ -185,6 +188,7 @@ def move_part(
     robot_start = {  # mimic joints follow their masters when those are set back
         j: v for j, v in world.joint_states(robot.name).items() if model.joints[j].mimic is None
     }
+    base_start = robot.base_pose()
     riders = _riders(robot, part, _moving_link(robot, part, joint))
     for name in riders:
         world.attach(name, part, _moving_link(robot, part, joint))
@@ -198,6 +202,7 @@ def move_part(
                     _let_go(robot, arm, part, handle, grasp)
                     return ArticulationResult(joint, start, reached, roll, tuple(riders))
             world.set_joint_states(part, {joint: start})
+            place_base(robot, base_start)
             world.set_joint_states(robot.name, robot_start)
     finally:
         for name in riders:
@@ -211,9 +216,17 @@ def move_part(
 
 
 def _let_go(robot: ProjectedRobot, arm: str, part: str, handle: str, grasp: Pose) -> None:
-    """Open the gripper and back the tool off the handle along its approach axis."""
+    """Open the gripper and back the tool off the handle along its approach axis.
+
+    A wide-open door can leave no room to back off the whole way: shorter moves are
+    tried, and if none fits the open hand stays at the handle (the part is where asked).
+    """
     open_gripper(robot, arm)
     world = robot.world
-    move_tcp(
-        robot, arm, world.link_pose(part, handle) * Pose((PRE_GRASP, 0.0, 0.0)) * grasp, HOLD_MODE
-    )
+    for distance in BACK_OFF:
+        back = world.link_pose(part, handle) * Pose((distance, 0.0, 0.0)) * grasp
+        try:
+            move_tcp(robot, arm, back, HOLD_MODE, move_base=True, max_restarts=LET_GO_RESTARTS)
+            return
+        except (ManipulationPoseUnreachable, ManipulationGoalNotReached):
+            continue

@@ -10,7 +10,9 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 
+from robocram.kinematics import split_base_motion
 from robocram.projection.errors import ProjectionError
+from robocram.projection.navigation import base_moved_by
 from robocram.projection.projected_robot import ProjectedRobot
 
 COLLISION_MODES = ("avoid_all", "allow_hand", "allow_all")
@@ -37,7 +39,9 @@ def collision_check(
         allowed |= {spec.end_effector_link, spec.tool_frame}
 
     def collides(candidate: Mapping[str, float]) -> list[tuple[str, str]]:
-        return colliding_pairs(robot, candidate, allowed)
+        joints, motion = split_base_motion(candidate)  # IK that moves the base too
+        with base_moved_by(robot, motion):
+            return colliding_pairs(robot, joints, allowed)
 
     return collides
 
