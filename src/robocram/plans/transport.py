@@ -1,0 +1,76 @@
+"""Transporting: search for the object, fetch it, deliver it, close what was opened.
+
+CRAM's transport plan, robot-independently: the search opens a container when the KB
+says the object is usually inside one; fetching and delivering each retry with the next
+solution of their location designators, within their bounds; the containers opened are
+closed again once the object is delivered, and the arms are parked. Every attempt is in
+the :class:`AttemptLog`, so callers (and tests) see what it took.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+from robocram.designators import ObjectDesignator
+from robocram.plans.attempt_log import AttemptLog
+from robocram.plans.basic_actions import park_arms
+from robocram.plans.container_access import OpenedContainer, close_again
+from robocram.plans.deliver import PLACE_RETRIES, deliver
+from robocram.plans.deliver import STAND_RETRIES as PLACING_STANDS
+from robocram.plans.fetch import STAND_RETRIES, fetch
+from robocram.plans.pick_object import Held
+from robocram.plans.search import POSES_PER_PLACE, SearchLog, search
+from robocram.tf import Pose
+
+
+@dataclass
+class TransportResult:
+    """What a transport did: the object, how it was held, where it went, its attempts."""
+
+    object_name: str
+    held: Held
+    spot: Pose  # [m] where the object was put down, in map
+    search: SearchLog = field(default_factory=SearchLog)
+    log: AttemptLog = field(default_factory=AttemptLog)
+
+    @property
+    def opened(self) -> list[OpenedContainer]:
+        """The containers the search opened (closed again by the transport)."""
+        return self.search.opened
+
+
+def transport(
+    object: ObjectDesignator | str,  # noqa: A002 - CRAM's key
+    target: Any,
+    arm: str | None = None,
+    grasp: str | None = None,
+    stand_retries: int = STAND_RETRIES,
+    place_retries: int = PLACE_RETRIES,
+    placing_stands: int = PLACING_STANDS,
+    poses_per_place: int = POSES_PER_PLACE,
+    log: AttemptLog | None = None,
+) -> TransportResult:
+    """Search the object, fetch it, deliver it to ``target``, close what was opened, park.
+
+    Raises:
+        SearchExhausted: the object is in no candidate place (PerceptionObjectNotFound).
+        FetchExhausted: it was seen but no stand let the robot pick it up.
+        DeliveryExhausted: it was held but could not be put down at ``target``.
+    """
+    log = log if log is not None else AttemptLog()
+    searched = SearchLog(attempts=log)
+    seen = search(object, poses_per_place=poses_per_place, log=searched)
+    held = fetch(seen, arm=arm, grasp=grasp, stand_retries=stand_retries, log=log)
+    spot = deliver(
+        held,
+        target,
+        arm=held.arm,
+        stand_retries=placing_stands,
+        place_retries=place_retries,
+        log=log,
+    )
+    for opened in reversed(searched.opened):
+        close_again(opened, log)
+    park_arms()
+    return TransportResult(held.object_name, held, spot, searched, log)

@@ -1,0 +1,90 @@
+"""Transport's failures: each with its type, its causes and its retries within bounds."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+import pytest
+
+from robocram.designators import a
+from robocram.execution.failures import (
+    ManipulationLowLevelFailure,
+    NavigationPoseUnreachable,
+    ObjectUndeliverable,
+    ObjectUnfetchable,
+    PerceptionObjectNotFound,
+)
+from robocram.plans.attempt_log import AttemptLog
+from robocram.plans.deliver import deliver
+from robocram.plans.grasp_failures import PlacingFailed
+from robocram.plans.errors import DeliveryExhausted, FetchExhausted, SearchExhausted
+from robocram.plans.fetch import fetch
+from robocram.plans.search import search
+from robocram.plans.stands import STAND_TURNS
+from robocram.plans.transport import transport
+from robocram.projection import simulated_robot
+from robocram.scenes import KitchenScene, kitchen_scene
+
+SURFACES = ("counter_top_north", "counter_top_east", "sink", "stove", "table_top")
+FRIDGE_TOP = ("kitchen", "fridge_body")  # 1.8 m up: no arm of the PR2 gets there
+
+
+@pytest.fixture()
+def pr2_kitchen() -> Iterator[KitchenScene]:
+    scene = kitchen_scene("pr2")
+    yield scene
+    scene.world.close()
+
+
+def test_an_unreachable_target_surface_makes_the_mug_undeliverable(
+    pr2_kitchen: KitchenScene,
+) -> None:
+    log = AttemptLog()
+    target = a.location(on=FRIDGE_TOP, for_="mug-1")
+    with simulated_robot(pr2_kitchen.world, pr2_kitchen.robot):
+        held = fetch("mug", log=log)
+        with pytest.raises(DeliveryExhausted) as caught:
+            deliver(held, target, stand_retries=2, place_retries=2, log=log)
+    failure = caught.value
+    assert isinstance(failure, ObjectUndeliverable)
+    assert failure.causes
+    placing = [c for c in failure.causes if not isinstance(c, NavigationPoseUnreachable)]
+    assert placing, "some stand was free, so placing was tried and failed"
+    assert all(isinstance(c, ManipulationLowLevelFailure | PlacingFailed) for c in placing)
+    tries = log.of("deliver")
+    assert failure.attempts == len(tries)
+    assert len(tries) <= 2 * STAND_TURNS  # two spots, at most every turn about each
+    assert len(placing) <= 2 * 2  # at most stand_retries placings per spot
+    assert pr2_kitchen.world.attached_to("mug-1") is not None  # still in the hand
+
+
+def test_an_absent_object_is_not_found_after_every_place_was_visited(
+    pr2_kitchen: KitchenScene,
+) -> None:
+    log = AttemptLog()
+    target = a.location(on=("kitchen", "table_top"), for_="mug-1")
+    with (
+        simulated_robot(pr2_kitchen.world, pr2_kitchen.robot),
+        pytest.raises(SearchExhausted) as caught,
+    ):
+        transport("pot", target, poses_per_place=1, log=log)
+    assert isinstance(caught.value, PerceptionObjectNotFound)
+    assert caught.value.searched == SURFACES  # every candidate place, in the KB's order
+    assert log.of("fetch") == [] and log.of("deliver") == []  # it never got further
+
+
+def test_fetching_stops_after_its_bound_with_every_cause(pr2_kitchen: KitchenScene) -> None:
+    """A grasp no hand can make fails at every stand: exactly ``stand_retries`` tries."""
+    log = AttemptLog()
+    with simulated_robot(pr2_kitchen.world, pr2_kitchen.robot):
+        seen = search("mug")
+        with pytest.raises(FetchExhausted) as caught:
+            fetch(seen, grasp="no-such-grasp", stand_retries=2, log=log)
+    assert isinstance(caught.value, ObjectUnfetchable)
+    assert len(log.of("fetch")) == 2
+    assert caught.value.attempts == 2
+    assert len(caught.value.causes or ()) == 2
+    assert all(not attempt.succeeded for attempt in log.of("fetch"))
+    stands = [attempt.stand for attempt in log.of("fetch")]
+    assert stands[0] != stands[1]  # the second try took the next solution
+
