@@ -8,17 +8,20 @@ bounded (``stand_retries``). When all fail, :class:`FetchExhausted` (an
 
 from __future__ import annotations
 
+import contextlib
+import math
 from typing import Any
 
 from robocram.designators import ObjectDesignator, a, an
-from robocram.execution.failures import PlanFailure
+from robocram.execution.failures import NavigationPoseUnreachable, PlanFailure
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import detect, look, navigate, park_arms
 from robocram.plans.errors import FetchExhausted
 from robocram.plans.location_poses import location_poses, next_pose
 from robocram.plans.pick_object import Held, pick_up_object
 from robocram.plans.robot_facts import current_robot
-from robocram.tf import Pose, transform_pose
+from robocram.plans.stands import base_frame, map_pose, planar_pose, yaw_of
+from robocram.tf import Pose, PoseStamped, transform_pose
 
 STAND_RETRIES = 3  # stands tried before fetching gives up
 
@@ -31,15 +34,31 @@ def perceived(object: ObjectDesignator | str) -> ObjectDesignator:  # noqa: A002
 
 
 def _pick_from(
-    stand: Pose, seen: ObjectDesignator, arm: str | None, grasp: str | None
+    stand: Pose, seen: ObjectDesignator, where: PoseStamped, arm: str | None, grasp: str | None
 ) -> Held:
-    """Drive to ``stand``, look at the object, detect it again and pick it up."""
-    where = transform_pose(seen.get("pose"), "map")
+    """Drive to ``stand``, look at the object (``where``, map), detect it again, pick it up."""
     park_arms()
     navigate(stand)
     look(where)
     again = detect(an.object(type=seen.get("type"), name=seen.get("name")))
     return pick_up_object(again, arm=arm, grasp=grasp)
+
+
+def square_up(robot: str) -> None:
+    """Turn the base in place to the nearest quarter turn (a costmaps workaround).
+
+    The occupancy layer measures the base's footprint from world-aligned bounds, which
+    grow when the base is turned (requests-transport.md, 12:22): squared up, the
+    ``reachable_for`` costmap keeps the cells near a counter. A turn that would collide is
+    skipped; the stand is then resolved from where the robot stands.
+    """
+    here = map_pose(base_frame(robot))
+    yaw = yaw_of(here)
+    squared = round(yaw / (math.pi / 2)) * (math.pi / 2)
+    if abs(squared - yaw) < 1e-3:
+        return
+    with contextlib.suppress(NavigationPoseUnreachable):
+        navigate(planar_pose(here.position[0], here.position[1], squared))
 
 
 def fetch(
@@ -58,6 +77,8 @@ def fetch(
         raise ValueError(f"stand_retries must be at least 1, got {stand_retries}")
     log = log if log is not None else AttemptLog()
     seen = perceived(object)
+    where = transform_pose(seen.get("pose"), "map")  # before the base moves: its frame moves
+    square_up(current_robot())
     keys: dict[str, Any] = {"arm": arm} if arm is not None else {}
     stand = a.location(reachable_for=current_robot(), object=seen.get("name"), **keys)
     causes: list[Exception] = []
@@ -67,7 +88,7 @@ def fetch(
         if pose is None:
             break
         try:
-            held = _pick_from(pose, seen, arm, grasp)
+            held = _pick_from(pose, seen, where, arm, grasp)
         except PlanFailure as failure:
             causes.append(failure)
             log.record("fetch", pose, failure)
