@@ -18,7 +18,6 @@ from robocram.scenes import KitchenScene, kitchen_scene
 from robocram.world import World
 
 TABLE = ("kitchen", "table_top")
-TABLE_TOP_Z = 0.751  # [m] the table's top face in map
 DRAWER_JOINT = "drawer_unit_drawer_3_joint"
 
 
@@ -35,14 +34,23 @@ def _transport(scene: KitchenScene, object_type: str, item: str) -> TransportRes
 
 
 def _on_the_table(world: World, item: str) -> None:
-    """The KB says ``item`` rests on the kitchen, touching the table top, and stays put."""
-    assert world.kb.holds("world(W), supported_by(W, O, kitchen)", O=item)
+    """``item`` is supported by the table top: it touches the kitchen there and nowhere
+    else, rests on the top face within its outline, is held by nobody, and the KB says it
+    stays put when simulated.
+
+    ``supported_by/3`` relates whole objects and the kitchen's bounds reach the ceiling,
+    so the table top (a link) is checked by its contacts and bounds.
+    """
+    assert world.kb.holds("world(W), contact(W, O, kitchen)", O=item)
     assert world.kb.holds("world(W), stable(W, O)", O=item)
     touching = {p.link_b for p in world.contact_points(item, "kitchen")}
     assert touching == {"table_top"}
-    low, _ = world.aabb(item)
-    assert low[2] == pytest.approx(TABLE_TOP_Z, abs=0.01)
-    assert not world.all_attachments()
+    low, high = world.aabb(item)
+    table_low, table_high = world.link_aabb("kitchen", "table_top")
+    assert low[2] == pytest.approx(table_high[2], abs=0.01)
+    centre = ((low[0] + high[0]) / 2, (low[1] + high[1]) / 2)
+    assert table_low[0] < centre[0] < table_high[0] and table_low[1] < centre[1] < table_high[1]
+    assert world.attached_to(item) is None
 
 
 def _arms_parked(world: World, robot: str) -> None:

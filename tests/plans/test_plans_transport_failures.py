@@ -16,7 +16,7 @@ from robocram.execution.failures import (
 )
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.deliver import deliver
-from robocram.plans.grasp_failures import PlacingFailed
+from robocram.plans.grasp_failures import PickUpFailed, PlacingFailed
 from robocram.plans.errors import DeliveryExhausted, FetchExhausted, SearchExhausted
 from robocram.plans.fetch import fetch
 from robocram.plans.search import search
@@ -48,9 +48,11 @@ def test_an_unreachable_target_surface_makes_the_mug_undeliverable(
     failure = caught.value
     assert isinstance(failure, ObjectUndeliverable)
     assert failure.causes
+    # a stand beside the fridge puts the held mug (at counter height) into the fridge's
+    # body, so driving there fails; where it does not, the arm cannot put it up there
     placing = [c for c in failure.causes if not isinstance(c, NavigationPoseUnreachable)]
-    assert placing, "some stand was free, so placing was tried and failed"
     assert all(isinstance(c, ManipulationLowLevelFailure | PlacingFailed) for c in placing)
+    assert any("kitchen" in str(c) for c in failure.causes)
     tries = log.of("deliver")
     assert failure.attempts == len(tries)
     assert len(tries) <= 2 * STAND_TURNS  # two spots, at most every turn about each
@@ -74,16 +76,17 @@ def test_an_absent_object_is_not_found_after_every_place_was_visited(
 
 
 def test_fetching_stops_after_its_bound_with_every_cause(pr2_kitchen: KitchenScene) -> None:
-    """A grasp no hand can make fails at every stand: exactly ``stand_retries`` tries."""
+    """A grasp the mug does not offer (a rim: it is no bowl) fails at every stand: exactly
+    ``stand_retries`` tries, each with its own cause."""
     log = AttemptLog()
     with simulated_robot(pr2_kitchen.world, pr2_kitchen.robot):
         seen = search("mug")
         with pytest.raises(FetchExhausted) as caught:
-            fetch(seen, grasp="no-such-grasp", stand_retries=2, log=log)
+            fetch(seen, grasp="rim", stand_retries=2, log=log)
     assert isinstance(caught.value, ObjectUnfetchable)
     assert len(log.of("fetch")) == 2
     assert caught.value.attempts == 2
-    assert len(caught.value.causes or ()) == 2
+    assert [type(c) for c in caught.value.causes or ()] == [PickUpFailed, PickUpFailed]
     assert all(not attempt.succeeded for attempt in log.of("fetch"))
     stands = [attempt.stand for attempt in log.of("fetch")]
     assert stands[0] != stands[1]  # the second try took the next solution

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from robocram.designators import ObjectDesignator
 from robocram.execution.failures import NavigationPoseUnreachable, PlanFailure
 from robocram.logic import current_kb
 from robocram.plans.attempt_log import AttemptLog
@@ -19,7 +20,7 @@ from robocram.plans.basic_actions import navigate
 from robocram.plans.errors import DeliveryExhausted
 from robocram.plans.location_poses import location_poses, next_pose
 from robocram.plans.pick_object import Held
-from robocram.plans.place_object import place_object
+from robocram.plans.place_object import held_object, place_object
 from robocram.plans.robot_facts import current_robot
 from robocram.plans.stands import map_pose, placing_stands
 from robocram.tf import Pose, PoseStamped
@@ -71,7 +72,7 @@ def _try_spot(
 
 
 def deliver(
-    held: Held,
+    object: Held | ObjectDesignator | str,  # noqa: A002 - CRAM's key
     target: Any,
     arm: str | None = None,
     stand_retries: int = STAND_RETRIES,
@@ -79,6 +80,8 @@ def deliver(
     log: AttemptLog | None = None,
 ) -> Pose:
     """Place the held object at ``target`` (a location designator or a pose); the spot.
+
+    ``object`` is what fetching returned (a :class:`Held`), or the held object's name.
 
     Raises:
         DeliveryExhausted: no spot within ``place_retries`` and no stand within
@@ -90,6 +93,7 @@ def deliver(
             f"and {place_retries}"
         )
     log = log if log is not None else AttemptLog()
+    held = held_object(object, arm)
     causes: list[Exception] = []
     spots = location_poses(target)
     for _ in range(place_retries):
