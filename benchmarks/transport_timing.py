@@ -149,8 +149,9 @@ def transport_times(robot: str, runs: int) -> TransportTimes:
             z = world.pose("mug-1").position[2]
             world.set_pose("mug-1", Pose((*spot.position[:2], z), spot.orientation))
             target = a.location(on=("kitchen", "table_top"), for_="mug-1")
-            with simulated_robot(world, scene.robot, locations=locations), listening(
-                MotionTimer(split)
+            with (
+                simulated_robot(world, scene.robot, locations=locations),
+                listening(MotionTimer(split)),
             ):
                 start = time.process_time()
                 split.mark = start

@@ -16,9 +16,9 @@ from robocram.execution.failures import (
 )
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.deliver import deliver
-from robocram.plans.grasp_failures import PickUpFailed, PlacingFailed
 from robocram.plans.errors import DeliveryExhausted, FetchExhausted, SearchExhausted
 from robocram.plans.fetch import fetch
+from robocram.plans.grasp_failures import PickUpFailed, PlacingFailed
 from robocram.plans.search import search
 from robocram.plans.stands import STAND_TURNS
 from robocram.plans.transport import transport
@@ -90,4 +90,3 @@ def test_fetching_stops_after_its_bound_with_every_cause(pr2_kitchen: KitchenSce
     assert all(not attempt.succeeded for attempt in log.of("fetch"))
     stands = [attempt.stand for attempt in log.of("fetch")]
     assert stands[0] != stands[1]  # the second try took the next solution
-

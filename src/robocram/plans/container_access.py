@@ -18,6 +18,7 @@ from robocram.plans.containers import Container, close_container, container, ope
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.robot_facts import current_robot, robot_arms
 from robocram.plans.stands import HandleStand, handle_stands
+from robocram.tf import Pose
 
 OPEN_RETRIES = 6  # stands tried before opening gives up
 
@@ -35,7 +36,7 @@ def is_container(environment: str, link: str) -> bool:
     return current_kb().holds("container(E, L, _, _)", E=environment, L=link)
 
 
-def _handle_pose(part: Container) -> object:
+def _handle_pose(part: Container) -> Pose:
     answer = current_kb().first(
         "world(W), link_pose(W, E, L, P)", E=part.environment, L=part.handle
     )
@@ -44,13 +45,11 @@ def _handle_pose(part: Container) -> object:
             f"the KB names handle {part.handle!r} of {part.environment!r}, but the world has "
             "no such link; regenerate the scene's facts"
         )
-    return answer["P"]
+    return Pose.coerce(answer["P"])
 
 
 def _is_drawer(part: Container) -> bool:
-    return current_kb().holds(
-        "container_kind(E, L, drawer)", E=part.environment, L=part.link
-    )
+    return current_kb().holds("container_kind(E, L, drawer)", E=part.environment, L=part.link)
 
 
 def open_from_front(

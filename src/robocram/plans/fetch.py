@@ -10,17 +10,26 @@ from __future__ import annotations
 
 import contextlib
 import math
+from collections.abc import Iterator
 from typing import Any
 
 from robocram.designators import ObjectDesignator, a, an
 from robocram.execution.failures import NavigationPoseUnreachable, PlanFailure
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import detect, look, navigate, park_arms
+from robocram.plans.container_access import OpenedContainer
 from robocram.plans.errors import FetchExhausted
 from robocram.plans.location_poses import location_poses, next_pose
 from robocram.plans.pick_object import Held, pick_up_object
-from robocram.plans.robot_facts import current_robot
-from robocram.plans.stands import base_frame, map_pose, planar_pose, yaw_of
+from robocram.plans.robot_facts import current_robot, robot_arms
+from robocram.plans.stands import (
+    REACH_DISTANCES,
+    base_frame,
+    front_stands,
+    map_pose,
+    planar_pose,
+    yaw_of,
+)
 from robocram.tf import Pose, PoseStamped, transform_pose
 
 STAND_RETRIES = 3  # stands tried before fetching gives up
@@ -61,14 +70,39 @@ def square_up(robot: str) -> None:
         navigate(planar_pose(here.position[0], here.position[1], squared))
 
 
+def _stands(
+    seen: ObjectDesignator,
+    where: PoseStamped,
+    arm: str | None,
+    opened: OpenedContainer | None,
+    causes: list[Exception],
+) -> Iterator[tuple[Pose, str | None]]:
+    """Stands (map) and the arm to use there: in front of an opened container first (the
+    costmap keeps a whole base radius off its open drawer), then ``reachable_for``'s."""
+    robot = current_robot()
+    if opened is not None:
+        arms = [arm] if arm is not None else robot_arms(robot)
+        out = yaw_of(opened.stand.pose) + math.pi  # the container's front faces the stand
+        for stand in front_stands(robot, arms, where.pose, out, REACH_DISTANCES):
+            yield stand.pose, stand.arm
+    square_up(robot)
+    keys: dict[str, Any] = {"arm": arm} if arm is not None else {}
+    poses = location_poses(a.location(reachable_for=robot, object=seen.get("name"), **keys))
+    while (pose := next_pose(poses, causes)) is not None:
+        yield pose, arm
+
+
 def fetch(
     object: ObjectDesignator | str,  # noqa: A002 - CRAM's key
     arm: str | None = None,
     grasp: str | None = None,
     stand_retries: int = STAND_RETRIES,
     log: AttemptLog | None = None,
+    opened: OpenedContainer | None = None,
 ) -> Held:
     """Pick up the (perceived) object from a stand that reaches it; what the hand holds.
+
+    ``opened`` is the container the object lies in, if a search opened one.
 
     Raises:
         FetchExhausted: no stand within ``stand_retries`` led to the object being held.
@@ -78,17 +112,11 @@ def fetch(
     log = log if log is not None else AttemptLog()
     seen = perceived(object)
     where = transform_pose(seen.get("pose"), "map")  # before the base moves: its frame moves
-    square_up(current_robot())
-    keys: dict[str, Any] = {"arm": arm} if arm is not None else {}
-    stand = a.location(reachable_for=current_robot(), object=seen.get("name"), **keys)
     causes: list[Exception] = []
-    poses = location_poses(stand)
-    for _ in range(stand_retries):
-        pose = next_pose(poses, causes)
-        if pose is None:
-            break
+    stands = _stands(seen, where, arm, opened, causes)
+    for _, (pose, use_arm) in zip(range(stand_retries), stands, strict=False):
         try:
-            held = _pick_from(pose, seen, where, arm, grasp)
+            held = _pick_from(pose, seen, where, use_arm, grasp)
         except PlanFailure as failure:
             causes.append(failure)
             log.record("fetch", pose, failure)
@@ -96,10 +124,9 @@ def fetch(
         log.record("fetch", pose, None)
         return held
     raise FetchExhausted(
-        f"could not fetch {seen.get('name')} from {len(causes)} stands: "
+        f"could not fetch {seen.get('name')} from {len(log.of('fetch'))} stands: "
         + "; ".join(type(c).__name__ for c in causes),
         object_designator=seen,
         causes=tuple(causes),
         attempts=len(causes),
     )
-

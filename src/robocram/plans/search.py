@@ -4,8 +4,8 @@ The candidate places come from the knowledge base: first the object type's usual
 (``usual_location(Type, Env, Link)``), then every other supporting surface
 (``supporting_surface(Env, Link)``). A place the KB names a container (a drawer, a door)
 is opened first, as CRAM does, and looked into from where it was opened; the containers
-opened are in the log, so a caller closes them again. For each place the plan asks for a location from
-which the robot sees it (``visible_for``, a location designator resolved by whatever
+opened are in the log, so a caller closes them again. For each place the plan asks for a
+location from which the robot sees it (``visible_for``, a location designator resolved by whatever
 resolver the environment has, e.g. costmaps), tries up to ``poses_per_place`` of its
 solutions, looks and detects. When every place is exhausted it raises
 :class:`SearchExhausted`, a ``PerceptionObjectNotFound`` that lists the places searched.

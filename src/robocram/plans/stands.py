@@ -13,7 +13,7 @@ with the handle. Everything comes from the KB and the transform tree: no link na
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 
 from robocram.logic import current_kb
@@ -23,6 +23,7 @@ from robocram.tf import quaternion as quat
 
 STAND_TURNS = 12  # placing stands per spot: turns about it, 30 degrees apart
 HANDLE_CLEARANCES = (0.5, 0.6, 0.4)  # [m] base centre to an opened drawer's handle
+REACH_DISTANCES = (0.55, 0.65, 0.45)  # [m] base centre to an object in an opened container
 DOOR_DISTANCES = (0.8, 0.9, 0.7)  # [m] base centre to a closed door's handle
 
 
@@ -95,11 +96,20 @@ def handle_stands(
     robot: str, arms: list[str], handle_pose: Pose, opening: float, drawer: bool
 ) -> Iterator[HandleStand]:
     """Stands facing the handle at ``handle_pose`` (map; x out of its unit's front)."""
-    yaw = yaw_of(handle_pose) + math.pi  # face the unit
-    out = (math.cos(yaw_of(handle_pose)), math.sin(yaw_of(handle_pose)))
-    left = (-math.sin(yaw), math.cos(yaw))  # the base's +y in map
     distances = [opening + c for c in HANDLE_CLEARANCES] if drawer else list(DOOR_DISTANCES)
-    hx, hy = handle_pose.position[0], handle_pose.position[1]
+    return front_stands(robot, arms, handle_pose, yaw_of(handle_pose), distances)
+
+
+def front_stands(
+    robot: str, arms: list[str], point: Pose, out_yaw: float, distances: Iterable[float]
+) -> Iterator[HandleStand]:
+    """Stands facing ``point`` from the direction ``out_yaw`` [rad] (a unit's front), each
+    arm's shoulder in line with it, ``distances`` [m] away, per arm in order."""
+    yaw = out_yaw + math.pi  # face the unit
+    out = (math.cos(out_yaw), math.sin(out_yaw))
+    left = (-math.sin(yaw), math.cos(yaw))  # the base's +y in map
+    hx, hy = point.position[0], point.position[1]
+    distances = list(distances)
     for arm in arms:
         side = shoulder_offset(robot, arm)
         for distance in distances:

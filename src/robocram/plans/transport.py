@@ -40,6 +40,15 @@ class TransportResult:
         return self.search.opened
 
 
+def _container_it_was_in(searched: SearchLog) -> OpenedContainer | None:
+    """The container the search opened where it found the object, if it found it in one."""
+    if searched.opened and searched.searched:
+        last = searched.opened[-1]
+        if last.container.link == searched.searched[-1].link:
+            return last
+    return None
+
+
 def transport(
     object: ObjectDesignator | str,  # noqa: A002 - CRAM's key
     target: Any,
@@ -61,7 +70,8 @@ def transport(
     log = log if log is not None else AttemptLog()
     searched = SearchLog(attempts=log)
     seen = search(object, poses_per_place=poses_per_place, log=searched)
-    held = fetch(seen, arm=arm, grasp=grasp, stand_retries=stand_retries, log=log)
+    inside = _container_it_was_in(searched)
+    held = fetch(seen, arm, grasp, stand_retries, log, opened=inside)
     spot = deliver(
         held,
         target,

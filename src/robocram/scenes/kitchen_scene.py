@@ -39,7 +39,7 @@ PLACES = (
     ItemPlace("mug-1", "mug", "counter_top_north", (0.15, -0.08)),
     ItemPlace("cereal-1", "cereal_box", "counter_top_east", (0.0, 0.3)),
     ItemPlace("milk-1", "milk", "counter_top_east", (0.0, -0.3)),
-    ItemPlace("bowl-1", "bowl", "drawer_unit_drawer_3", (-0.16, 0.0)),
+    ItemPlace("bowl-1", "bowl", "drawer_unit_drawer_3", (-0.26, 0.0)),  # seen over the front
     ItemPlace("cup-1", "cup", "cutlery_unit_drawer_4", (-0.14, 0.0)),
 )
 
