@@ -5,7 +5,8 @@ the sink and the stove, and transports it to the table with a costmap resolver o
 seed. CPU time (this process; pybullet runs in it) is split by the innermost of: location
 resolution (the costmap generator, its validators' IK included), IK of arm motions,
 perception (``detecting``), other motions (driving, looking, gripper, torso, the arm's
-own stepping) and the rest (the plans, the KB). The world is restored after each run.
+own stepping), settling (physics simulated after letting go, to check the object rests)
+and the rest (the plans, the KB, the grasp model). The world is restored after each run.
 """
 
 from __future__ import annotations
@@ -31,11 +32,12 @@ from robocram.projection import simulated_robot
 from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
+from robocram.world import World
 
 COUNTER_X = (-1.7, -1.15)  # [m] map x between the sink and the stove
-COUNTER_Y = (1.98, 2.2)  # [m] map y from the counter's front edge inwards
+COUNTER_Y = (1.96, 2.14)  # [m] map y: 8 to 26 cm in from the counter's front edge
 GOALS = {"pr2": (0.95, 115.0), "hsrb": (0.90, None), "boxy": (0.90, None)}
-CATEGORIES = ("location", "ik", "motion", "perception", "rest")
+CATEGORIES = ("location", "ik", "motion", "perception", "settling", "rest")
 
 
 class Split:
@@ -91,7 +93,8 @@ class TimedLocations(CostmapLocations):
     def poses(self, designator: Any) -> Iterator[Pose]:
         stream = super().poses(designator)
         while True:
-            assert self.split is not None
+            if self.split is None:
+                raise RuntimeError("TimedLocations needs its split set")
             self.split.enter("location")
             try:
                 pose = next(stream)
@@ -102,17 +105,17 @@ class TimedLocations(CostmapLocations):
             yield pose
 
 
-def timed_ik(split: Split, solve: Callable[..., Any]) -> Callable[..., Any]:
-    """``solve`` counted as IK."""
+def timed(split: Split, category: str, function: Callable[..., Any]) -> Callable[..., Any]:
+    """``function`` counted as ``category``."""
 
-    def solve_timed(*args: Any, **kwargs: Any) -> Any:
-        split.enter("ik")
+    def counted(*args: Any, **kwargs: Any) -> Any:
+        split.enter(category)
         try:
-            return solve(*args, **kwargs)
+            return function(*args, **kwargs)
         finally:
             split.leave()
 
-    return solve_timed
+    return counted
 
 
 @dataclass
@@ -138,13 +141,14 @@ def transport_times(robot: str, runs: int) -> TransportTimes:
     world = scene.world
     maps = ReachabilityMaps()
     out = TransportTimes(runs=runs)
-    solve_ik = projected_arm.solve_ik
+    solve_ik, simulate = projected_arm.solve_ik, World.simulate
     for seed in range(runs):
         spot = _mug_spot(seed)
         split = Split()
         locations = TimedLocations(world, seed=seed, reach_maps=maps)
         locations.split = split
-        projected_arm.solve_ik = timed_ik(split, solve_ik)
+        projected_arm.solve_ik = timed(split, "ik", solve_ik)
+        World.simulate = timed(split, "settling", simulate)  # type: ignore[method-assign]
         with world.stored_state():
             z = world.pose("mug-1").position[2]
             world.set_pose("mug-1", Pose((*spot.position[:2], z), spot.orientation))
@@ -163,6 +167,7 @@ def transport_times(robot: str, runs: int) -> TransportTimes:
                 out.totals.append((time.process_time() - start) * 1e3)
                 out.splits.append(split.finish())
         projected_arm.solve_ik = solve_ik
+        World.simulate = simulate  # type: ignore[method-assign]
     world.close()
     return out
 
@@ -182,9 +187,12 @@ def print_transports(robot: str, times: TransportTimes) -> None:
         f"(goal >= {rate_goal:.0%})  median {statistics.median(times.totals):7.1f} ms  "
         f"p95 {_p95(times.totals):7.1f} ms   ({goal})"
     )
+    total = sum(times.totals) or 1.0
     split = "  ".join(
-        f"{c} {statistics.median(s[c] for s in times.splits):6.1f}" for c in CATEGORIES
+        f"{c} {statistics.median(s[c] for s in times.splits):5.1f} "
+        f"({sum(s[c] for s in times.splits) / total:4.0%})"
+        for c in CATEGORIES
     )
-    print(f"{robot:5s}   median split [ms]:   {split}")
+    print(f"{robot:5s}   median ms (share of all): {split}")
     if times.failures:
         print(f"{robot:5s}   failures: {dict(times.failures)}")

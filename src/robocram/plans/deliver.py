@@ -26,7 +26,7 @@ from robocram.plans.stands import map_pose, placing_stands
 from robocram.tf import Pose, PoseStamped
 
 STAND_RETRIES = 3  # stands per placing spot where placing is tried
-PLACE_RETRIES = 3  # placing spots tried
+PLACE_RETRIES = 6  # placing spots tried (a spot in the middle of a table has no stand)
 RESTING_GAP = 0.002  # [m] a location designator's spot holds the object this far up
 
 

@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from robocram.designators import ObjectDesignator
+from robocram.execution import sub_task
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import park_arms
 from robocram.plans.container_access import OpenedContainer, close_again
@@ -69,18 +70,15 @@ def transport(
     """
     log = log if log is not None else AttemptLog()
     searched = SearchLog(attempts=log)
-    seen = search(object, poses_per_place=poses_per_place, log=searched)
-    inside = _container_it_was_in(searched)
-    held = fetch(seen, arm, grasp, stand_retries, log, opened=inside)
-    spot = deliver(
-        held,
-        target,
-        arm=held.arm,
-        stand_retries=placing_stands,
-        place_retries=place_retries,
-        log=log,
-    )
-    for opened in reversed(searched.opened):
-        close_again(opened, log)
-    park_arms()
+    with sub_task("searching"):
+        seen = search(object, poses_per_place=poses_per_place, log=searched)
+    with sub_task("fetching"):
+        inside = _container_it_was_in(searched)
+        held = fetch(seen, arm, grasp, stand_retries, log, opened=inside)
+    with sub_task("delivering"):
+        spot = deliver(held, target, held.arm, placing_stands, place_retries, log)
+    with sub_task("closing"):
+        for opened in reversed(searched.opened):
+            close_again(opened, log)
+        park_arms()
     return TransportResult(held.object_name, held, spot, searched, log)
