@@ -20,8 +20,8 @@ from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
 from robocram.world import World
 
-VIEW_FROM = (1.6, -2.9, 3.0)  # [m] in map, where the pictures are taken from
-VIEW_AT = (-0.6, 0.4, 0.5)  # [m] in map, what they look at
+VIEW_FROM = (2.4, -2.2, 3.3)  # [m] in map, where the pictures are taken from
+VIEW_AT = (-0.7, 0.3, 0.4)  # [m] in map, what they look at
 TABLE = ("kitchen", "table_top")
 ITEMS = (("mug", "mug-1"), ("bowl", "bowl-1"))  # (type searched for, item placed for)
 
@@ -47,8 +47,8 @@ def main(out_dir: Path = Path("out")) -> list[Path]:
     print(run.tree.render())
     for _, item in ITEMS:
         x, y, z = world.pose(item).position
-        resting = world.supported_by(item, "kitchen")
-        print(f"{item} at ({x:.2f}, {y:.2f}, {z:.2f}) m in map, resting: {resting}")
+        links = sorted({p.link_b for p in world.contact_points(item, "kitchen")})
+        print(f"{item} rests on {', '.join(links)} at ({x:.2f}, {y:.2f}, {z:.2f}) m in map")
     pictures.append(picture(world, out_dir / "demo_after.png"))
     world.close()
     print(f"wrote {', '.join(str(p) for p in pictures)} in {time.perf_counter() - start:.2f} s")
