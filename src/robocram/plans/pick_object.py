@@ -155,8 +155,9 @@ def pick_up_object(
     raise PickUpFailed(
         f"no arm of {arms} picked up {name!r}"
         + (f" with grasp {grasp!r}" if grasp else "")
-        + f" after {len(causes)} tries: "
-        + "; ".join(f"{type(c).__name__}: {c}" for c in causes[-3:]),
+        + f" in {len(causes)} tries (causes: "
+        + ", ".join(sorted({type(c).__name__ for c in causes}))
+        + ")",
         object_name=name,
         causes=causes,
     )
