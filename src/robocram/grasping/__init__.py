@@ -13,12 +13,13 @@ from robocram.grasping.grasp_predicates import install_grasp_predicates
 from robocram.grasping.hand import Hand, hand_of
 from robocram.grasping.object_grasps import (
     GraspCandidate,
+    candidates_at,
     grasp_candidates,
     grasp_names,
     install_grasp_facts,
     object_shape,
 )
-from robocram.grasping.object_shape import ObjectShape, shape_of
+from robocram.grasping.object_shape import ObjectShape, catalogue_shape, shape_of
 
 __all__ = [
     "CLEARANCE",
@@ -30,6 +31,8 @@ __all__ = [
     "ObjectShape",
     "ObjectUngraspable",
     "UnknownGraspError",
+    "candidates_at",
+    "catalogue_shape",
     "grasp_candidates",
     "grasp_names",
     "grasps",

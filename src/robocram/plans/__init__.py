@@ -4,7 +4,12 @@ from robocram.plans.action_table import ACTION_TYPES, install_actions, perform_a
 from robocram.plans.action_type import ActionType
 from robocram.plans.containers import Container, close_container, container, open_container
 from robocram.plans.errors import PlanSetupError
-from robocram.plans.grasp_failures import ObjectUngraspable, PickUpFailed, PlacingFailed
+from robocram.plans.grasp_failures import (
+    ObjectUngraspable,
+    PickUpFailed,
+    PickUpUnreachable,
+    PlacingFailed,
+)
 from robocram.plans.pick_object import Held, pick_up_object
 from robocram.plans.pick_up import PickResult, pick_up
 from robocram.plans.place_object import place_object
@@ -17,6 +22,7 @@ __all__ = [
     "ObjectUngraspable",
     "PickResult",
     "PickUpFailed",
+    "PickUpUnreachable",
     "PlacingFailed",
     "PlanSetupError",
     "close_container",
