@@ -10,15 +10,16 @@ from robocram.grasping.errors import GraspingError, ObjectUngraspable, UnknownGr
 from robocram.grasping.grasp import Grasp
 from robocram.grasping.grasp_model import CLEARANCE, GRASP_NAMES, grasps, tool_orientation
 from robocram.grasping.grasp_predicates import install_grasp_predicates
-from robocram.grasping.hand import Hand, hand_of
+from robocram.grasping.hand import Hand, approach_axis, hand_of
 from robocram.grasping.object_grasps import (
     GraspCandidate,
+    candidates_at,
     grasp_candidates,
     grasp_names,
     install_grasp_facts,
     object_shape,
 )
-from robocram.grasping.object_shape import ObjectShape, shape_of
+from robocram.grasping.object_shape import ObjectShape, catalogue_shape, shape_of
 
 __all__ = [
     "CLEARANCE",
@@ -30,6 +31,9 @@ __all__ = [
     "ObjectShape",
     "ObjectUngraspable",
     "UnknownGraspError",
+    "approach_axis",
+    "candidates_at",
+    "catalogue_shape",
     "grasp_candidates",
     "grasp_names",
     "grasps",

@@ -55,6 +55,14 @@ def _opening_axis(desc: RobotDescription, arm: str, approach: np.ndarray) -> Axi
     return _unit(spread, (0.0, 1.0, 0.0))
 
 
+def approach_axis(desc: RobotDescription, arm: str) -> Axis:
+    """The unit approach axis of ``arm``'s tool (tool frame): from the wrist to the tool."""
+    spec = desc.arms[arm]
+    tool = forward_kinematics(desc, {}, spec.tool_frame)
+    wrist = forward_kinematics(desc, {}, spec.end_effector_link)
+    return _unit(-np.asarray((tool.inverse() * wrist).position), (0.0, 0.0, 1.0))
+
+
 def hand_of(desc: RobotDescription, arm: str) -> Hand:
     """The hand of ``desc``'s ``arm``.
 
@@ -69,9 +77,7 @@ def hand_of(desc: RobotDescription, arm: str) -> Hand:
             f"arm {arm!r} of {desc.name} has no gripper with a known max_opening; give its "
             "ArmDescription gripper_joints (max_opening is derived at load)"
         )
-    tool = forward_kinematics(desc, {}, spec.tool_frame)
-    wrist = forward_kinematics(desc, {}, spec.end_effector_link)
-    approach = np.asarray(_unit(-np.asarray((tool.inverse() * wrist).position), (0.0, 0.0, 1.0)))
+    approach = np.asarray(approach_axis(desc, arm))
     return Hand(
         (float(approach[0]), float(approach[1]), float(approach[2])),
         _opening_axis(desc, arm, approach),

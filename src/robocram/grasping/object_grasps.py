@@ -19,6 +19,7 @@ from robocram.grasping.grasp_model import GRASP_NAMES, grasps
 from robocram.grasping.hand import hand_of
 from robocram.grasping.object_shape import ObjectShape, shape_of
 from robocram.logic import KnowledgeBase
+from robocram.robots import RobotDescription
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
 from robocram.world import RobotObject, World, WorldObject
@@ -58,13 +59,15 @@ def grasp_names(kb: KnowledgeBase, kind: str) -> tuple[str, ...]:
     return GRASP_NAMES if answer is None else tuple(str(n) for n in answer["N"])
 
 
+def type_facts(kb: KnowledgeBase, kind: str) -> tuple[float | None, float | None]:
+    """The wall thickness and handle width [m] of type ``kind`` (None: not said)."""
+    install_grasp_facts(kb)
+    return _first_number(kb, "object_wall", kind), _first_number(kb, "object_handle", kind)
+
+
 def object_shape(world: World, obj: WorldObject) -> ObjectShape:
     """The shape of ``obj`` with its wall and handle as the world's KB says."""
-    kb = world.kb
-    install_grasp_facts(kb)
-    wall = _first_number(kb, "object_wall", obj.type)
-    handle = _first_number(kb, "object_handle", obj.type)
-    return shape_of(world, obj, wall, handle)
+    return shape_of(world, obj, *type_facts(world.kb, obj.type))
 
 
 def _preference(robot_in_map: Pose, object_in_map: Pose, grasp: Grasp) -> float:
@@ -72,6 +75,26 @@ def _preference(robot_in_map: Pose, object_in_map: Pose, grasp: Grasp) -> float:
     base_y = np.asarray(quat.rotate(robot_in_map.orientation, (0.0, 1.0, 0.0)))
     across = np.asarray(quat.rotate(object_in_map.orientation, grasp.across))
     return -abs(float(base_y @ across))
+
+
+def candidates_at(
+    shape: ObjectShape,
+    object_in_map: Pose,
+    desc: RobotDescription,
+    arm: str,
+    base_in_map: Pose,
+    names: Sequence[str],
+) -> list[GraspCandidate]:
+    """The grasps of ``shape`` at ``object_in_map`` that ``arm``'s hand fits, best first.
+
+    Raises:
+        ObjectUngraspable: no grasp fits the hand.
+        GraspingError: the arm has no gripper.
+    """
+    found = grasps(shape, hand_of(desc, arm), names)
+    order = {name: k for k, name in enumerate(names)}
+    found.sort(key=lambda g: (order[g.name], _preference(base_in_map, object_in_map, g)))
+    return [GraspCandidate(g, *g.in_map(object_in_map)) for g in found]
 
 
 def grasp_candidates(
@@ -83,16 +106,12 @@ def grasp_candidates(
 ) -> list[GraspCandidate]:
     """Every grasp of ``obj`` the hand of ``robot``'s ``arm`` fits, best first, in the map.
 
+    ``names`` restricts the grasps (default: the type's ``object_grasps/2``, else all).
+
     Raises:
         ObjectUngraspable: no grasp fits the hand.
         GraspingError: the arm has no gripper.
     """
-    shape = object_shape(world, obj)
     allowed = grasp_names(world.kb, obj.type) if names is None else tuple(names)
-    hand = hand_of(robot.description, arm)
-    found = grasps(shape, hand, allowed)
-    here = world.pose(obj)
-    base = world.pose(robot)
-    order = {name: k for k, name in enumerate(allowed)}
-    found.sort(key=lambda g: (order[g.name], _preference(base, here, g)))
-    return [GraspCandidate(g, *g.in_map(here)) for g in found]
+    shape = object_shape(world, obj)
+    return candidates_at(shape, world.pose(obj), robot.description, arm, world.pose(robot), allowed)

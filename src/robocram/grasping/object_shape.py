@@ -3,13 +3,14 @@
 The box is the object's axis-aligned bounding box in the object's own frame (read with the
 object turned upright in place, then put back), so a turned object keeps its sizes. Whether
 it is hollow (a wall the fingers may straddle at the rim) or has a handle (a bar the
-fingers may close on) the knowledge base says: ``object_wall(Type, Thickness)`` and
-``object_handle(Type, Width)``, both in metres.
+fingers may close on) the knowledge base says (``object_grasps.py``):
+``object_wall(Type, Thickness)`` and ``object_handle(Type, Width)``, both in metres.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from functools import lru_cache
 
 from robocram.tf import Pose, Vector3
 from robocram.world import World, WorldObject
@@ -77,3 +78,23 @@ def shape_of(
         wall,
         handle,
     )
+
+
+@lru_cache(maxsize=64)
+def _measured(kind: str) -> ObjectShape:
+    with World() as world:
+        return shape_of(world, world.add_item(kind, kind))
+
+
+def catalogue_shape(
+    kind: str, name: str, wall: float | None = None, handle: float | None = None
+) -> ObjectShape:
+    """The shape of a catalogue item of type ``kind`` (measured once per process).
+
+    For environments without a world (recording, a real robot): the object's type says
+    its size.
+
+    Raises:
+        UnknownItemError: ``kind`` is not in the catalogue.
+    """
+    return replace(_measured(kind), name=name, wall=wall, handle=handle)

@@ -7,7 +7,12 @@ from robocram.plans.containers import Container, close_container, container, ope
 from robocram.plans.deliver import deliver
 from robocram.plans.errors import DeliveryExhausted, FetchExhausted, PlanSetupError, SearchExhausted
 from robocram.plans.fetch import fetch
-from robocram.plans.grasp_failures import ObjectUngraspable, PickUpFailed, PlacingFailed
+from robocram.plans.grasp_failures import (
+    ObjectUngraspable,
+    PickUpFailed,
+    PickUpUnreachable,
+    PlacingFailed,
+)
 from robocram.plans.pick_object import Held, pick_up_object
 from robocram.plans.pick_up import PickResult, pick_up
 from robocram.plans.place_object import place_object
@@ -25,6 +30,7 @@ __all__ = [
     "ObjectUngraspable",
     "PickResult",
     "PickUpFailed",
+    "PickUpUnreachable",
     "PlacingFailed",
     "PlanSetupError",
     "SearchExhausted",

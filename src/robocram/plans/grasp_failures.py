@@ -2,7 +2,11 @@
 
 from __future__ import annotations
 
-from robocram.execution.failures import HighLevelFailure, ObjectUnreachable
+from robocram.execution.failures import (
+    HighLevelFailure,
+    ManipulationPoseUnreachable,
+    ObjectUnreachable,
+)
 
 
 class ObjectUngraspable(ObjectUnreachable):
@@ -23,6 +27,16 @@ class PickUpFailed(ObjectUnreachable):
     causes: list[Exception] | None = None
     summary = "the object could not be picked up"
     hint = "stand elsewhere (a reachable_for location) or clear the way to the object"
+
+
+class PickUpUnreachable(PickUpFailed, ManipulationPoseUnreachable):
+    """Every pre-grasp or grasp pose tried was out of the arms' reach (IK found none).
+
+    Also a :class:`ManipulationPoseUnreachable`, so a handler of the low-level failure
+    catches a pick-up whose every try was out of reach.
+    """
+
+    summary = "no grasp of the object was within the arms' reach"
 
 
 class PlacingFailed(HighLevelFailure):

@@ -17,14 +17,19 @@ from robocram.execution import perform
 from robocram.execution.failures import (
     GripperLowLevelFailure,
     ManipulationLowLevelFailure,
+    ManipulationPoseUnreachable,
 )
-from robocram.logic import current_kb
+from robocram.logic import Term, UnknownPredicateError, current_kb
 from robocram.plans.errors import PlanSetupError
-from robocram.plans.grasp_failures import ObjectUngraspable, PickUpFailed
+from robocram.plans.grasp_failures import ObjectUngraspable, PickUpFailed, PickUpUnreachable
 from robocram.plans.robot_facts import current_robot
-from robocram.tf import Pose, PoseStamped, transform_pose
+from robocram.tf import Pose, PoseStamped, TfError, transform_pose
 
 GRASPING = {"collision_mode": "allow_hand"}  # the fingers may touch what they close on
+NO_DOOR = (
+    "the knowledge base has no grasp predicates (object_grasp/7); run the plan in an "
+    "environment that installs them, such as simulated_robot(world, robot)"
+)
 TRIES = (ManipulationLowLevelFailure, GripperLowLevelFailure)  # a try ends, the next starts
 
 
@@ -39,6 +44,22 @@ class Held:
     grasp_pose: PoseStamped
     lifted: PoseStamped
     object_in_tool: Pose  # the object's pose in the tool frame while held
+
+
+def object_spec(obj: ObjectDesignator | str) -> tuple[str, Any, Pose | None]:
+    """The object's name, how the grasp predicates name it, and its pose in ``map``.
+
+    A perceived designator with a type and a pose is ``object(Name, Type, Pose)``, so the
+    grasps come from its type where no world knows it; a name is looked up in the world.
+    """
+    name = object_name(obj)
+    if isinstance(obj, ObjectDesignator) and obj.get("pose") is not None and obj.get("type"):
+        pose = transform_pose(obj.get("pose"), "map")
+        return name, Term("object", (name, str(obj.get("type")), pose)), pose.pose
+    try:
+        return name, name, transform_pose(PoseStamped(name), "map").pose
+    except TfError:
+        return name, name, None
 
 
 def object_name(obj: ObjectDesignator | str) -> str:
@@ -61,24 +82,27 @@ def tool_frame(robot: str, arm: str) -> str:
     return str(answer["T"])
 
 
-def arms_nearest_first(robot: str, name: str, arm: str | None) -> list[str]:
+def arms_nearest_first(robot: str, target: Pose | None, arm: str | None) -> list[str]:
     """``[arm]``, or the robot's arms with a gripper, their tool frames nearest first."""
     if arm is not None:
         return [arm]
-    arms = [str(x["A"]) for x in current_kb().query("grasping_arm(R, A)", R=robot)]
+    try:
+        arms = [str(x["A"]) for x in current_kb().query("grasping_arm(R, A)", R=robot)]
+    except UnknownPredicateError as err:
+        raise PlanSetupError(NO_DOOR) from err
     if not arms:
         raise PlanSetupError(f"{robot} has no arm with a gripper (grasping_arm/2)")
-    target = transform_pose(PoseStamped(name), "map").pose
+    if target is None:
+        return arms
 
     def distance(choice: str) -> float:
-        return transform_pose(PoseStamped(tool_frame(robot, choice)), "map").pose.distance_to(
-            target
-        )
+        tool = transform_pose(PoseStamped(tool_frame(robot, choice)), "map").pose
+        return tool.distance_to(target)
 
     return sorted(arms, key=distance)
 
 
-def grasp_choices(robot: str, name: str, arm: str, grasp: str | None) -> list[dict[str, Any]]:
+def grasp_choices(robot: str, spec: Any, arm: str, grasp: str | None) -> list[dict[str, Any]]:
     """The KB's grasps of ``name`` by ``arm`` (only ``grasp`` if given), best first.
 
     Raises:
@@ -86,12 +110,13 @@ def grasp_choices(robot: str, name: str, arm: str, grasp: str | None) -> list[di
     """
     kb = current_kb()
     query = "object_grasp(O, R, A, N, G, P, L)"
-    bindings: dict[str, Any] = {"O": name, "R": robot, "A": arm}
+    name = str(spec.args[0]) if isinstance(spec, Term) else str(spec)
+    bindings: dict[str, Any] = {"O": spec, "R": robot, "A": arm}
     if grasp is not None:
         bindings["N"] = grasp
     found = [{"N": grasp, **answer} for answer in kb.query(query, **bindings)]
     if not found:
-        refusal = kb.first("object_ungraspable(O, R, A, H, W)", O=name, R=robot, A=arm)
+        refusal = kb.first("object_ungraspable(O, R, A, H, W)", O=spec, R=robot, A=arm)
         if refusal is not None:
             raise ObjectUngraspable(
                 f"no grasp of {name!r} fits the {arm} hand of {robot}: it opens "
@@ -108,7 +133,9 @@ def _move(arm: str, pose: PoseStamped, **mode: str) -> None:
     perform(a.motion(type="moving-tcp", arm=arm, target=a.location(pose=pose), **mode))
 
 
-def _try_grasp(robot: str, name: str, arm: str, choice: dict[str, Any]) -> Held:
+def _try_grasp(
+    robot: str, name: str, arm: str, choice: dict[str, Any], object_in_map: Pose | None
+) -> Held:
     perform(a.motion(type="opening", gripper=arm))
     _move(arm, choice["P"])
     _move(arm, choice["G"], **GRASPING)
@@ -118,7 +145,9 @@ def _try_grasp(robot: str, name: str, arm: str, choice: dict[str, Any]) -> Held:
         raise PickUpFailed(f"the {arm} hand gripped {gripped!r}, not {name!r}", object_name=name)
     _move(arm, choice["L"], **GRASPING)
     frame = tool_frame(robot, arm)
-    held = transform_pose(PoseStamped(name), frame).pose
+    if object_in_map is None:
+        object_in_map = transform_pose(PoseStamped(name), "map").pose
+    held = choice["G"].pose.inverse() * object_in_map  # as gripped: the grasp keeps it
     return Held(arm, str(choice["N"]), name, frame, choice["G"], choice["L"], held)
 
 
@@ -132,14 +161,16 @@ def pick_up_object(
     Raises:
         ObjectUngraspable: the only arm asked for is too narrow for every grasp.
         PickUpFailed: no arm and grasp picked it up; ``causes`` holds each try's failure.
+            :class:`PickUpUnreachable` (also a ``ManipulationPoseUnreachable``) when every
+            try was out of reach.
     """
     robot = current_robot()
-    name = object_name(object)
+    name, spec, pose = object_spec(object)
     causes: list[Exception] = []
-    arms = arms_nearest_first(robot, name, arm)
+    arms = arms_nearest_first(robot, pose, arm)
     for choice_arm in arms:
         try:
-            choices = grasp_choices(robot, name, choice_arm, grasp)
+            choices = grasp_choices(robot, spec, choice_arm, grasp)
         except ObjectUngraspable as failure:
             if arm is not None:
                 raise
@@ -147,16 +178,18 @@ def pick_up_object(
             continue
         for choice in choices:
             try:
-                return _try_grasp(robot, name, choice_arm, choice)
+                return _try_grasp(robot, name, choice_arm, choice, pose)
             except TRIES as failure:
                 causes.append(failure)
             except PickUpFailed as failure:
                 causes.append(failure)
-    raise PickUpFailed(
+    unreachable = bool(causes) and all(isinstance(c, ManipulationPoseUnreachable) for c in causes)
+    raise (PickUpUnreachable if unreachable else PickUpFailed)(
         f"no arm of {arms} picked up {name!r}"
         + (f" with grasp {grasp!r}" if grasp else "")
-        + f" after {len(causes)} tries: "
-        + "; ".join(f"{type(c).__name__}: {c}" for c in causes[-3:]),
+        + f" in {len(causes)} tries (causes: "
+        + ", ".join(sorted({type(c).__name__ for c in causes}))
+        + ")",
         object_name=name,
         causes=causes,
     )

@@ -149,7 +149,9 @@ def place_object(
         return transform_pose(PoseStamped(held.object_name), "map")
     raise PlacingFailed(
         f"{robot} could not put {held.object_name!r} down at {target} in any of "
-        f"{len(TURNS)} turns: " + "; ".join(f"{type(c).__name__}: {c}" for c in causes[-2:]),
+        f"{len(TURNS)} turns (causes: "
+        + ", ".join(sorted({type(c).__name__ for c in causes}))
+        + ")",
         object_name=held.object_name,
         target=target,
         causes=causes,

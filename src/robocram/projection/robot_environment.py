@@ -48,7 +48,7 @@ def projection_environment(
     desc = projected.description
     resources = desc.resources()
     kb = install_motions(world.kb, desc)
-    install_grasp_predicates(world)
+    install_grasp_predicates(kb, world)
     return Environment(
         f"{PREFIX}_{projected.name}",
         process_modules=[PROJECTION_MODULES[r](projected) for r in resources],
