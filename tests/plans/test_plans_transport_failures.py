@@ -6,7 +6,8 @@ from collections.abc import Iterator
 
 import pytest
 
-from robocram.designators import a
+from robocram.designators import DesignatorPropertyError, a, an
+from robocram.execution import perform
 from robocram.execution.failures import (
     ManipulationLowLevelFailure,
     NavigationPoseUnreachable,
@@ -14,6 +15,7 @@ from robocram.execution.failures import (
     ObjectUnfetchable,
     PerceptionObjectNotFound,
 )
+from robocram.plans import install_actions
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.deliver import deliver
 from robocram.plans.errors import DeliveryExhausted, FetchExhausted, SearchExhausted
@@ -90,3 +92,25 @@ def test_fetching_stops_after_its_bound_with_every_cause(pr2_kitchen: KitchenSce
     assert all(not attempt.succeeded for attempt in log.of("fetch"))
     stands = [attempt.stand for attempt in log.of("fetch")]
     assert stands[0] != stands[1]  # the second try took the next solution
+
+
+@pytest.mark.parametrize(
+    ("properties", "culprit"),
+    [
+        ({"type": "transporting", "object": "mug", "targett": (0.0, 0.0, 0.8)}, "targett"),
+        ({"type": "transporting", "object": "mug"}, "target"),
+        ({"type": "fetching", "object": "mug", "stand_retires": 2}, "stand_retires"),
+        ({"type": "delivering", "target": (0.0, 0.0, 0.8)}, "object"),
+    ],
+)
+def test_transport_actions_check_their_keys(
+    pr2_kitchen: KitchenScene, properties: dict[str, object], culprit: str
+) -> None:
+    install_actions(pr2_kitchen.world.kb)
+    with (
+        simulated_robot(pr2_kitchen.world, pr2_kitchen.robot),
+        pytest.raises(DesignatorPropertyError, match="valid keys") as caught,
+    ):
+        perform(an.action(**properties))
+    assert caught.value.key == culprit
+    assert "stand_retries" in str(caught.value)
