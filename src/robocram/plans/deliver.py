@@ -12,14 +12,19 @@ from __future__ import annotations
 
 from typing import Any
 
-from robocram.designators import ObjectDesignator
-from robocram.execution.failures import NavigationPoseUnreachable, PlanFailure
+from robocram.designators import ObjectDesignator, a
+from robocram.execution import perform
+from robocram.execution.failures import (
+    ManipulationLowLevelFailure,
+    NavigationPoseUnreachable,
+    PlanFailure,
+)
 from robocram.logic import current_kb
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import navigate
 from robocram.plans.errors import DeliveryExhausted
 from robocram.plans.location_poses import location_poses, next_pose
-from robocram.plans.pick_object import Held
+from robocram.plans.pick_object import GRASPING, Held
 from robocram.plans.place_object import held_object, place_object
 from robocram.plans.robot_facts import current_robot
 from robocram.plans.stands import map_pose, placing_stands
@@ -27,6 +32,7 @@ from robocram.tf import Pose, PoseStamped
 
 STAND_RETRIES = 3  # stands per placing spot where placing is tried
 PLACE_RETRIES = 6  # placing spots tried (a spot in the middle of a table has no stand)
+CARRY_CLEARANCE = 0.08  # [m] the held object's frame is carried this far over the spot
 RESTING_GAP = 0.002  # [m] a location designator's spot holds the object this far up
 
 
@@ -44,11 +50,31 @@ def _place_at(held: Held, spot: Pose, arm: str | None) -> Any:
     return place_object(held, PoseStamped.from_pose("map", surface), arm=arm)
 
 
+def _carry_above(held: Held, spot: Pose) -> None:
+    """Lift the held object over ``spot``'s height (plus a margin) if it hangs lower.
+
+    An object taken out of a drawer is held below a table's top; driving up to the table
+    with it would run the hand into the table.
+    """
+    low = map_pose(held.object_name).position[2]
+    rise = spot.position[2] + CARRY_CLEARANCE - low
+    if rise <= 0.0:
+        return
+    tool = map_pose(held.tool_frame)
+    x, y, z = tool.position
+    lifted = PoseStamped.from_pose("map", Pose((x, y, z + rise), tool.orientation))
+    perform(a.motion(type="moving-tcp", arm=held.arm, target=a.location(pose=lifted), **GRASPING))
+
+
 def _try_spot(
     held: Held, spot: Pose, arm: str | None, stand_retries: int, log: AttemptLog
 ) -> list[Exception]:
     """Try the stands of one spot; the failures met (empty: the object was placed)."""
     causes: list[Exception] = []
+    try:
+        _carry_above(held, spot)
+    except ManipulationLowLevelFailure as failure:  # carried low: some stands will collide
+        causes.append(failure)
     tried = 0
     for stand in placing_stands(current_robot(), held.object_name, spot):
         try:
