@@ -2,7 +2,8 @@
 
 As CRAM's fetch plan does, each try takes the next solution of a ``reachable_for``
 location designator, so a stand whose grasp fails gives way to another one; the tries are
-bounded (``stand_retries``). When all fail, :class:`FetchExhausted` (an
+bounded (``stand_retries``). An object in a container the search opened is tried first
+from in front of the container, arm by arm. When all fail, :class:`FetchExhausted` (an
 ``ObjectUnfetchable``) carries every cause in order.
 """
 
@@ -57,7 +58,7 @@ def square_up(robot: str) -> None:
     """Turn the base in place to the nearest quarter turn (a costmaps workaround).
 
     The occupancy layer measures the base's footprint from world-aligned bounds, which
-    grow when the base is turned (requests-transport.md, 12:22): squared up, the
+    grow when the base is turned (docs/transport.md, known limits): squared up, the
     ``reachable_for`` costmap keeps the cells near a counter. A turn that would collide is
     skipped; the stand is then resolved from where the robot stands.
     """
