@@ -41,7 +41,7 @@ def held_object(obj: Held | ObjectDesignator | str, arm: str | None) -> Held:
     for answer in kb.query("grasping_arm(R, A), end_effector_link(R, A, L)", R=robot):
         if arm is not None and answer["A"] != arm:
             continue
-        if kb.holds("world(W), attached(W, O, R, L)", O=name, R=robot, L=answer["L"]):
+        if kb.holds("world(W), attached(W, R, L, O)", O=name, R=robot, L=answer["L"]):
             choice = str(answer["A"])
             frame = tool_frame(robot, choice)
             here = transform_pose(PoseStamped(frame), "map")
