@@ -8,7 +8,9 @@ the mug down on ``table_top``, where it must rest after simulating.
 from __future__ import annotations
 
 import math
+import warnings
 from collections.abc import Iterator
+from pathlib import Path
 
 import pytest
 
@@ -27,11 +29,13 @@ from robocram.plans import (
 )
 from robocram.plans.basic_actions import navigate, park_arms
 from robocram.projection import simulated_robot
-from robocram.scenes import KitchenScene, kitchen_scene
+from robocram.robot_check import description_from
+from robocram.scenes import KitchenScene, kitchen_scene, tabletop_scene
 from robocram.tf import Pose, PoseStamped
 from robocram.tf import quaternion as quat
 from robocram.world import World
 
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "robots"
 COUNTER_FRONT = 1.88  # [m] y of the north counter's front edge
 TABLE_EDGE = -0.95  # [m] y of the table's north edge
 TABLE_TOP = 0.751  # [m] height of the table's top
@@ -104,6 +108,53 @@ def test_the_pr2_takes_the_bowl_out_of_the_open_drawer_by_its_rim(scene: Kitchen
     lifted = world.pose("bowl-1")
     assert lifted.position[2] - in_drawer.position[2] == pytest.approx(0.10, abs=0.01)
     assert lifted.angle_to(in_drawer) < 0.05  # held level by its rim
+
+
+@pytest.mark.parametrize(
+    ("scene", "surface"),
+    [("pr2", "counter"), ("hsrb", "table"), ("boxy", "counter")],
+    indirect=["scene"],
+)
+def test_each_robot_holds_the_hollow_bowl_by_its_rim(scene: KitchenScene, surface: str) -> None:
+    """On the counter where the mug was (the HSR's arm cannot come from above that high:
+    on the table)."""
+    world = scene.world
+    if surface == "counter":
+        spot, stand = world.pose("mug-1").position[:2], _before_the_counter(scene)
+        world.remove("mug-1")
+        height = 0.85
+    else:
+        spot, stand, height = TARGET, _before_the_table(scene), TABLE_TOP
+    world.set_pose("bowl-1", Pose((*spot, height + 0.003)))
+    world.simulate(0.2)
+    resting = world.pose("bowl-1")
+    with simulated_robot(world, scene.robot):
+        park_arms()
+        navigate(stand)
+        held = pick_up_object("bowl-1")
+    assert held.grasp == "rim"
+    lifted = world.pose("bowl-1")
+    assert lifted.position[2] - resting.position[2] == pytest.approx(0.10, abs=0.01)
+    assert lifted.angle_to(resting) < 0.05
+
+
+def test_the_tiago_pros_narrow_hand_takes_the_bowl_by_its_rim() -> None:
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the drafted description's notes
+        scene = tabletop_scene(description_from(str(EXAMPLES / "tiago_pro.py")))
+    world = scene.world
+    mug = world.pose("mug-1").position
+    world.remove("mug-1")
+    world.add_item("bowl-1", "bowl", Pose((mug[0], mug[1], mug[2] + 0.005)))
+    world.simulate(0.2)
+    try:
+        with simulated_robot(world, scene.robot):
+            park_arms()
+            held = pick_up_object("bowl-1")
+        assert held.grasp == "rim"  # 7.1 cm of opening: the rim, not the 16 cm bowl
+        assert world.attached_to("bowl-1") is not None
+    finally:
+        world.close()
 
 
 def test_the_action_designators_pick_and_place(scene: KitchenScene) -> None:
