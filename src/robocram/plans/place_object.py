@@ -1,7 +1,8 @@
 """Put a held object down: over the target keeping the grasp, lower, open, retreat, check.
 
-The target is where the object goes on a surface: its x, y and the surface height z (the
-object's bottom comes to rest there, its frame turned as the target's). The tool targets
+The target is the pose the object's frame is to have, resting on a surface (what an ``on``
+location designator with ``for_`` the object gives; for a mug, whose frame is at its
+bottom, the surface point itself); the object is let go :data:`PLACE_GAP` above it. The tool targets
 follow from the grasp the object is held with (the object's pose in the tool frame), so
 any grasp places the same way. The object comes down from 10 cm above (5 cm, or straight
 to its place, at the edge of the arm's reach). If the arm cannot put it down turned as
@@ -15,7 +16,7 @@ from __future__ import annotations
 
 import math
 
-from robocram.designators import ObjectDesignator, a
+from robocram.designators import LocationDesignator, ObjectDesignator, a
 from robocram.execution import perform
 from robocram.execution.failures import ManipulationLowLevelFailure
 from robocram.logic import UnknownPredicateError, current_kb
@@ -58,16 +59,19 @@ def _shifted(pose: Pose, dx: float, dy: float, dz: float) -> Pose:
     return Pose((x + dx, y + dy, z + dz), pose.orientation)
 
 
-def _object_targets(name: str, target: PoseStamped) -> list[Pose]:
-    """Poses of the object's frame (map) resting on the target, one per turn."""
-    spot = transform_pose(target, "map").pose
-    extent = current_kb().first("object_extent(O, L, H)", O=name)
-    bottom = -float(extent["L"][2]) if extent is not None else 0.0
-    base = _shifted(spot, 0.0, 0.0, bottom + PLACE_GAP)
+def _object_targets(target: PoseStamped | LocationDesignator) -> list[Pose]:
+    """Poses of the object's frame (map) just above the target, one per turn."""
+    if isinstance(target, LocationDesignator):
+        target = target.reference()
+    if not isinstance(target, PoseStamped):
+        raise PlanSetupError(
+            f"place_object's target is a PoseStamped or a location designator, got {target!r}"
+        )
+    spot = _shifted(transform_pose(target, "map").pose, 0.0, 0.0, PLACE_GAP)
     turned = []
     for turn in TURNS:
-        q = quat.multiply(quat.from_euler(0.0, 0.0, turn), base.orientation)
-        turned.append(Pose(base.position, q))
+        q = quat.multiply(quat.from_euler(0.0, 0.0, turn), spot.orientation)
+        turned.append(Pose(spot.position, q))
     return turned
 
 
@@ -133,10 +137,13 @@ def _put_down(robot: str, held: Held, put: Pose) -> None:
 
 def place_object(
     object: Held | ObjectDesignator | str,  # noqa: A002 - CRAM's key
-    target: PoseStamped,
+    target: PoseStamped | LocationDesignator,
     arm: str | None = None,
 ) -> PoseStamped:
-    """Put the held ``object`` down at ``target``; return where it rests (``map``).
+    """Put the held ``object`` down with its frame at ``target``; return where it rests.
+
+    ``target`` may be a location designator (its first pose is taken). The returned pose
+    is in ``map``.
 
     Raises:
         PlacingFailed: no turn of the object could be put down there, or it did not rest
@@ -146,7 +153,7 @@ def place_object(
     robot = current_robot()
     held = held_object(object, arm)
     causes: list[Exception] = []
-    for put in _object_targets(held.object_name, target):
+    for put in _object_targets(target):
         try:
             _put_down(robot, held, put)
         except ManipulationLowLevelFailure as failure:
