@@ -37,6 +37,7 @@ from robocram.world import World
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "robots"
 COUNTER_FRONT = 1.88  # [m] y of the north counter's front edge
+EAST_FRONT = 2.4  # [m] x of the east counter's front edge
 TABLE_EDGE = -0.95  # [m] y of the table's north edge
 TABLE_TOP = 0.751  # [m] height of the table's top
 STANDOFF = {"pr2": (0.45, 0.45), "hsrb": (0.45, 0.45), "boxy": (0.65, 0.55)}  # [m] counter, table
@@ -155,6 +156,22 @@ def test_the_tiago_pros_narrow_hand_takes_the_bowl_by_its_rim() -> None:
         assert world.attached_to("bowl-1") is not None
     finally:
         world.close()
+
+
+@pytest.mark.parametrize("scene", ["pr2", "hsrb"], indirect=True)
+def test_the_milk_box_is_put_down_by_its_frame_pose(scene: KitchenScene) -> None:
+    """The box's frame is at its centre: the target is where the frame goes, 10 cm up."""
+    world = scene.world
+    x, y, z = world.pose("milk-1").position
+    with simulated_robot(world, scene.robot):
+        park_arms()
+        navigate(PoseStamped("map", (EAST_FRONT - 0.45, y, 0.0)))  # facing the east counter
+        held = pick_up_object("milk-1")
+        rests = place_object(held, PoseStamped("map", (x, y - 0.15, z)))
+    assert held.grasp in ("top", "front")  # 7 cm across: any hand; 20 cm tall
+    assert rests.position == pytest.approx((x, y - 0.15, z), abs=0.01)
+    assert world.contact_points("milk-1", "kitchen", link_b="counter_top_east")
+    assert world.stable("milk-1") and world.attached_to("milk-1") is None
 
 
 def test_the_action_designators_pick_and_place(scene: KitchenScene) -> None:
