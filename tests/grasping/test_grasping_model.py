@@ -108,7 +108,7 @@ def test_a_too_narrow_hand_gets_no_grasp_and_the_error_names_both_widths() -> No
     err = info.value
     assert (err.object, err.hand_width) == ("milk-1", 0.05)
     assert err.needed_width == pytest.approx(0.07 + CLEARANCE)
-    assert "0.050 m" in str(err) and "0.074 m" in str(err) and "milk-1" in str(err)
+    assert "0.050 m" in str(err) and "0.072 m" in str(err) and "milk-1" in str(err)
 
 
 def test_an_unknown_grasp_name_lists_the_known_ones() -> None:

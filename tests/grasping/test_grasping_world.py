@@ -95,7 +95,7 @@ def test_the_kb_door_says_why_an_object_is_ungraspable(kitchen: KitchenScene) ->
         answers = list(world.kb.query("object_ungraspable('pot-1', pr2, A, H, W)"))
         assert [a["A"] for a in answers] == ["left", "right"]
         assert answers[0]["H"] == pytest.approx(0.0938, abs=1e-4)
-        assert answers[0]["W"] == pytest.approx(0.2 + 0.004)
+        assert answers[0]["W"] == pytest.approx(0.2 + 0.002)
     finally:
         world.remove("pot-1")
 

@@ -33,7 +33,7 @@ from robocram.tf import Pose, Vector3
 from robocram.tf import quaternion as quat
 
 GRASP_NAMES = ("top", "front", "left", "right", "rim", "handle")
-CLEARANCE = 0.004  # [m] added to an object's width: the hand must open this much wider
+CLEARANCE = 0.002  # [m] added to an object's width: the hand must open this much wider
 GRASP_HEIGHT = 0.05  # [m] a top grasp's tool frame over the object's bottom
 RIM_DEPTH = 0.02  # [m] a rim grasp's tool frame below the rim
 PRE_GRASP = 0.10  # [m] the tool starts this far back along its approach
