@@ -61,13 +61,12 @@ def _shifted(pose: Pose, dx: float, dy: float, dz: float) -> Pose:
 
 def _object_targets(target: PoseStamped | LocationDesignator) -> list[Pose]:
     """Poses of the object's frame (map) just above the target, one per turn."""
-    if isinstance(target, LocationDesignator):
-        target = target.reference()
-    if not isinstance(target, PoseStamped):
+    where = target.reference() if isinstance(target, LocationDesignator) else target
+    if not isinstance(where, PoseStamped):
         raise PlanSetupError(
-            f"place_object's target is a PoseStamped or a location designator, got {target!r}"
+            f"place_object's target is a PoseStamped or a location designator, got {where!r}"
         )
-    spot = _shifted(transform_pose(target, "map").pose, 0.0, 0.0, PLACE_GAP)
+    spot = _shifted(transform_pose(where, "map").pose, 0.0, 0.0, PLACE_GAP)
     turned = []
     for turn in TURNS:
         q = quat.multiply(quat.from_euler(0.0, 0.0, turn), spot.orientation)
