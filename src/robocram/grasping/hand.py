@@ -63,12 +63,41 @@ def approach_axis(desc: RobotDescription, arm: str) -> Axis:
     return _unit(-np.asarray((tool.inverse() * wrist).position), (0.0, 0.0, 1.0))
 
 
+class HandCache:
+    """The hands of recently asked descriptions, by identity (a description is immutable).
+
+    Each entry holds its description, so an ``id`` is never reused while it is cached.
+    """
+
+    def __init__(self, size: int = 16) -> None:
+        self.size = size
+        self.entries: dict[tuple[int, str], tuple[RobotDescription, Hand]] = {}
+
+    def get(self, desc: RobotDescription, arm: str) -> Hand:
+        """The hand of ``desc``'s ``arm``, read from the kinematics the first time."""
+        entry = self.entries.get((id(desc), arm))
+        if entry is not None and entry[0] is desc:
+            return entry[1]
+        hand = _read_hand(desc, arm)
+        if len(self.entries) >= self.size:
+            self.entries.pop(next(iter(self.entries)))
+        self.entries[(id(desc), arm)] = (desc, hand)
+        return hand
+
+
+HANDS = HandCache()  # a memo of pure results; descriptions are frozen
+
+
 def hand_of(desc: RobotDescription, arm: str) -> Hand:
-    """The hand of ``desc``'s ``arm``.
+    """The hand of ``desc``'s ``arm`` (remembered per description).
 
     Raises:
         GraspingError: the arm has no gripper (nothing to grasp with).
     """
+    return HANDS.get(desc, arm)
+
+
+def _read_hand(desc: RobotDescription, arm: str) -> Hand:
     spec = desc.arms.get(arm)
     if spec is None:
         raise GraspingError(f"{desc.name} has no arm {arm!r}; arms: {sorted(desc.arms)}")

@@ -19,7 +19,6 @@ from robocram.execution.failures import (
     NavigationPoseUnreachable,
     PlanFailure,
 )
-from robocram.logic import current_kb
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import navigate
 from robocram.plans.errors import DeliveryExhausted
@@ -33,21 +32,13 @@ from robocram.tf import Pose, PoseStamped
 STAND_RETRIES = 3  # stands per placing spot where placing is tried
 PLACE_RETRIES = 6  # placing spots tried (a spot in the middle of a table has no stand)
 CARRY_CLEARANCE = 0.08  # [m] the held object's frame is carried this far over the spot
-RESTING_GAP = 0.002  # [m] a location designator's spot holds the object this far up
 
 
 def _place_at(held: Held, spot: Pose, arm: str | None) -> Any:
-    """Put the held object down at ``spot``, keeping the heading it has in the hand now.
-
-    ``spot`` is where the object's frame goes (a location designator's pose);
-    :func:`place_object` wants the surface under it: the object's bottom, from its extent.
-    """
-    extent = current_kb().first("object_extent(O, L, H)", O=held.object_name)
-    below = float(extent["L"][2]) if extent is not None else 0.0  # [m] bottom, object frame
-    x, y, z = spot.position
+    """Put the held object's frame at ``spot``, keeping the heading it has in the hand now."""
     heading = map_pose(held.object_name).orientation
-    surface = Pose((x, y, z + below - RESTING_GAP), heading)
-    return place_object(held, PoseStamped.from_pose("map", surface), arm=arm)
+    put = PoseStamped.from_pose("map", Pose(spot.position, heading))
+    return place_object(held, put, arm=arm)
 
 
 def _carry_above(held: Held, spot: Pose) -> None:
