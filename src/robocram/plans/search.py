@@ -57,7 +57,8 @@ def candidate_places(object_type: str) -> list[Place]:
     return list(dict.fromkeys([*usual, *others]))
 
 
-def _place_point(place: Place) -> PoseStamped:
+def place_point(place: Place) -> PoseStamped:
+    """The point a robot looks at to see ``place``: a little above its link frame (map)."""
     answer = current_kb().first(
         "world(W), link_pose(W, E, L, P)", E=place.environment, L=place.link
     )
@@ -96,7 +97,7 @@ def _look_into(place: Place, wanted: ObjectDesignator, log: SearchLog) -> Object
         log.opened.append(open_from_front(place.link, log.attempts))
         if current_kb().holds("robot_torso_link_joint(R, _, _)", R=current_robot()):
             move_torso("upper")  # see over the drawer's front, into it
-        look(_place_point(place))
+        look(place_point(place))
         return detect(wanted)
     except PlanFailure as failure:
         log.failures.append(failure)
@@ -125,7 +126,7 @@ def search(
             seen = _look_into(place, wanted, log)
             if seen is not None:
                 return seen
-        seen = _look_from_places(robot, _place_point(place), wanted, poses_per_place, log)
+        seen = _look_from_places(robot, place_point(place), wanted, poses_per_place, log)
         if seen is not None:
             return seen
     names = tuple(p.link for p in log.searched)

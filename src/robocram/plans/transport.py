@@ -1,5 +1,7 @@
 """Transporting: search for the object, fetch it, deliver it, close what was opened.
 
+The object is searched for only if the robot does not already see it at its usual place.
+
 CRAM's transport plan, robot-independently: the search opens a container when the KB
 says the object is usually inside one; fetching and delivering each retry with the next
 solution of their location designators, within their bounds; the containers opened are
@@ -12,16 +14,23 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
-from robocram.designators import ObjectDesignator
+from robocram.designators import ObjectDesignator, an
 from robocram.execution import sub_task
+from robocram.execution.failures import PerceptionObjectNotFound
 from robocram.plans.attempt_log import AttemptLog
-from robocram.plans.basic_actions import park_arms
-from robocram.plans.container_access import OpenedContainer, close_again
+from robocram.plans.basic_actions import detect, look, park_arms
+from robocram.plans.container_access import OpenedContainer, close_again, is_container
 from robocram.plans.deliver import PLACE_RETRIES, deliver
 from robocram.plans.deliver import STAND_RETRIES as PLACING_STANDS
 from robocram.plans.fetch import STAND_RETRIES, fetch
 from robocram.plans.pick_object import Held
-from robocram.plans.search import POSES_PER_PLACE, SearchLog, search
+from robocram.plans.search import (
+    POSES_PER_PLACE,
+    SearchLog,
+    candidate_places,
+    place_point,
+    search,
+)
 from robocram.tf import Pose
 
 
@@ -50,6 +59,23 @@ def _container_it_was_in(searched: SearchLog) -> OpenedContainer | None:
     return None
 
 
+def seen_from_here(object: ObjectDesignator | str) -> ObjectDesignator | None:  # noqa: A002
+    """The object, if the robot sees it at its usual place without moving; else None.
+
+    A robot that already sees the object does not walk to a place to look at it; a usual
+    place that is a container needs opening, so it is left to the search.
+    """
+    wanted = object if isinstance(object, ObjectDesignator) else an.object(type=object)
+    places = candidate_places(str(wanted.get("type")))
+    if not places or is_container(places[0].environment, places[0].link):
+        return None
+    try:
+        look(place_point(places[0]))
+        return detect(wanted)
+    except PerceptionObjectNotFound:
+        return None
+
+
 def transport(
     object: ObjectDesignator | str,  # noqa: A002 - CRAM's key
     target: Any,
@@ -71,7 +97,9 @@ def transport(
     log = log if log is not None else AttemptLog()
     searched = SearchLog(attempts=log)
     with sub_task("searching"):
-        seen = search(object, poses_per_place=poses_per_place, log=searched)
+        seen = seen_from_here(object) or search(
+            object, poses_per_place=poses_per_place, log=searched
+        )
     with sub_task("fetching"):
         inside = _container_it_was_in(searched)
         held = fetch(seen, arm, grasp, stand_retries, log, opened=inside)
