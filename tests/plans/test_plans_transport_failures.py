@@ -7,7 +7,7 @@ from collections.abc import Iterator
 import pytest
 
 from robocram.designators import DesignatorPropertyError, a, an
-from robocram.execution import perform
+from robocram.execution import TaskListener, listening, perform
 from robocram.execution.failures import (
     ManipulationLowLevelFailure,
     NavigationPoseUnreachable,
@@ -26,6 +26,19 @@ from robocram.plans.stands import STAND_TURNS
 from robocram.plans.transport import transport
 from robocram.projection import simulated_robot
 from robocram.scenes import KitchenScene, kitchen_scene
+
+
+class MotionCounter(TaskListener):
+    """Counts the PERFORMs of one motion type."""
+
+    def __init__(self, motion_type: str) -> None:
+        self.motion_type = motion_type
+        self.count = 0
+
+    def performing(self, task: object, designator: object) -> None:
+        if getattr(designator, "get", lambda _: None)("type") == self.motion_type:
+            self.count += 1
+
 
 SURFACES = ("counter_top_north", "counter_top_east", "sink", "stove", "table_top")
 FRIDGE_TOP = ("kitchen", "fridge_body")  # 1.8 m up: no arm of the PR2 gets there
@@ -66,14 +79,17 @@ def test_an_absent_object_is_not_found_after_every_place_was_visited(
     pr2_kitchen: KitchenScene,
 ) -> None:
     log = AttemptLog()
+    drives = MotionCounter("going")
     target = a.location(on=("kitchen", "table_top"), for_="mug-1")
     with (
         simulated_robot(pr2_kitchen.world, pr2_kitchen.robot),
+        listening(drives),
         pytest.raises(SearchExhausted) as caught,
     ):
         transport("pot", target, poses_per_place=1, log=log)
     assert isinstance(caught.value, PerceptionObjectNotFound)
     assert caught.value.searched == SURFACES  # every candidate place, in the KB's order
+    assert 1 <= drives.count <= len(SURFACES)  # at most one stand per place (poses_per_place)
     assert log.of("fetch") == [] and log.of("deliver") == []  # it never got further
 
 
