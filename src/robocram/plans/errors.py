@@ -25,7 +25,7 @@ class FetchExhausted(ObjectUnfetchable):
     """Every stand tried (within the retry bound) failed to pick the object up."""
 
     causes: tuple[Exception, ...] | None = None  # one failure per attempt, in order
-    attempts: int | None = None  # stands tried
+    attempts: int | None = None  # stands where picking up was tried
     hint = "raise stand_retries, give another arm or grasp, or clear the object's surroundings"
 
 

@@ -2,14 +2,16 @@
 
 As CRAM's fetch plan does, each try takes the next solution of a ``reachable_for``
 location designator, so a stand whose grasp fails gives way to another one; the tries are
-bounded (``stand_retries``). An object in a container the search opened is tried first
-from in front of the container, arm by arm. When all fail, :class:`FetchExhausted` (an
+bounded (``stand_retries``; a stand where the robot would collide is skipped without
+counting, at most ``MAX_BLOCKED`` of them). An object in a container the search opened is
+tried first from in front of the container, arm by arm. When all fail, :class:`FetchExhausted` (an
 ``ObjectUnfetchable``) carries every cause in order.
 """
 
 from __future__ import annotations
 
 import contextlib
+import itertools
 import math
 from collections.abc import Iterator
 from typing import Any
@@ -33,7 +35,8 @@ from robocram.plans.stands import (
 )
 from robocram.tf import Pose, PoseStamped, transform_pose
 
-STAND_RETRIES = 3  # stands tried before fetching gives up
+STAND_RETRIES = 3  # stands where picking up is tried before fetching gives up
+MAX_BLOCKED = 8  # stands where the robot would collide, skipped without a try
 
 
 def perceived(object: ObjectDesignator | str) -> ObjectDesignator:  # noqa: A002 - CRAM's key
@@ -114,20 +117,28 @@ def fetch(
     seen = perceived(object)
     where = transform_pose(seen.get("pose"), "map")  # before the base moves: its frame moves
     causes: list[Exception] = []
+    tries = 0
     stands = _stands(seen, where, arm, opened, causes)
-    for _, (pose, use_arm) in zip(range(stand_retries), stands, strict=False):
+    for pose, use_arm in itertools.islice(stands, stand_retries + MAX_BLOCKED):
         try:
             held = _pick_from(pose, seen, where, use_arm, grasp)
+        except NavigationPoseUnreachable as failure:  # in the way: the next stand, no try
+            causes.append(failure)
+            log.record("fetch", pose, failure)
+            continue
         except PlanFailure as failure:
             causes.append(failure)
             log.record("fetch", pose, failure)
+            tries += 1
+            if tries >= stand_retries:
+                break
             continue
         log.record("fetch", pose, None)
         return held
     raise FetchExhausted(
-        f"could not fetch {seen.get('name')} from {len(log.of('fetch'))} stands: "
-        + "; ".join(type(c).__name__ for c in causes),
+        f"could not fetch {seen.get('name')} in {tries} tries: "
+        + "; ".join(type(c).__name__ for c in causes[-5:]),
         object_designator=seen,
         causes=tuple(causes),
-        attempts=len(causes),
+        attempts=tries,
     )

@@ -23,7 +23,7 @@ from robocram.tf import quaternion as quat
 
 STAND_TURNS = 12  # placing stands per spot: turns about it, 30 degrees apart
 HANDLE_CLEARANCES = (0.5, 0.6, 0.4)  # [m] base centre to an opened drawer's handle
-REACH_DISTANCES = (0.55, 0.65, 0.45)  # [m] base centre to an object in an opened container
+REACH_DISTANCES = (0.55, 0.65, 0.45, 0.75, 0.85)  # [m] base to an object in an open container
 DOOR_DISTANCES = (0.8, 0.9, 0.7)  # [m] base centre to a closed door's handle
 
 
