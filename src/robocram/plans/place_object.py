@@ -59,12 +59,15 @@ def _shifted(pose: Pose, dx: float, dy: float, dz: float) -> Pose:
     return Pose((x + dx, y + dy, z + dz), pose.orientation)
 
 
-def _object_targets(target: PoseStamped | LocationDesignator) -> list[Pose]:
+def _object_targets(target: PoseStamped | Pose | LocationDesignator) -> list[Pose]:
     """Poses of the object's frame (map) just above the target, one per turn."""
     where = target.reference() if isinstance(target, LocationDesignator) else target
+    if isinstance(where, Pose):
+        where = PoseStamped.from_pose("map", where)  # a location's pose is in the map
     if not isinstance(where, PoseStamped):
         raise PlanSetupError(
-            f"place_object's target is a PoseStamped or a location designator, got {where!r}"
+            f"place_object's target is a PoseStamped, a Pose (map) or a location designator, "
+            f"got {where!r}"
         )
     spot = _shifted(transform_pose(where, "map").pose, 0.0, 0.0, PLACE_GAP)
     turned = []
@@ -136,12 +139,12 @@ def _put_down(robot: str, held: Held, put: Pose) -> None:
 
 def place_object(
     object: Held | ObjectDesignator | str,  # noqa: A002 - CRAM's key
-    target: PoseStamped | LocationDesignator,
+    target: PoseStamped | Pose | LocationDesignator,
     arm: str | None = None,
 ) -> PoseStamped:
     """Put the held ``object`` down with its frame at ``target``; return where it rests.
 
-    ``target`` may be a location designator (its first pose is taken). The returned pose
+    ``target`` may be a location designator (its first pose is taken) or a map pose. The returned pose
     is in ``map``.
 
     Raises:
