@@ -144,8 +144,8 @@ def place_object(
 ) -> PoseStamped:
     """Put the held ``object`` down with its frame at ``target``; return where it rests.
 
-    ``target`` may be a location designator (its first pose is taken) or a map pose. The returned pose
-    is in ``map``.
+    ``target`` may be a location designator (its first pose is taken) or a map pose. The
+    returned pose is in ``map``.
 
     Raises:
         PlacingFailed: no turn of the object could be put down there, or it did not rest
