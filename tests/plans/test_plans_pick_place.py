@@ -187,6 +187,17 @@ def test_a_location_designator_says_where_to_put_it(scene: KitchenScene) -> None
     assert world.contact_points("mug-1", "kitchen", link_b="counter_top_north")
 
 
+def test_letting_go_in_the_air_is_no_placing(scene: KitchenScene) -> None:
+    world = scene.world
+    x, y, z = world.pose("mug-1").position
+    with simulated_robot(world, scene.robot), pytest.raises(PlacingFailed, match="moved 0.0"):
+        park_arms()
+        navigate(_before_the_counter(scene))
+        held = pick_up_object("mug-1")
+        place_object(held, PoseStamped("map", (x + 0.1, y, z + 0.06)))  # 6 cm over the top
+    assert world.attached_to("mug-1") is None
+
+
 def test_the_action_designators_pick_and_place(scene: KitchenScene) -> None:
     world = scene.world
     with simulated_robot(world, scene.robot):

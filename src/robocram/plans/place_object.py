@@ -101,11 +101,13 @@ def _retreat(robot: str, held: Held) -> None:
     park_arms(held.arm)
 
 
-def _settled(name: str, put: Pose) -> str | None:
-    """Why the object does not rest where it was put after :data:`SETTLE`, or None."""
+def _settled(name: str, put: Pose, seconds: float) -> str | None:
+    """Why the object does not rest where it was put after ``seconds`` [s], or None."""
+    if seconds <= 0.0:
+        return None
     kb = current_kb()
     try:
-        if not kb.holds(f"world(W), simulate(W, {SETTLE})"):
+        if not kb.holds("world(W), simulate(W, S)", S=float(seconds)):
             return None
     except UnknownPredicateError:
         return None  # no simulated world to ask (a real robot)
@@ -141,11 +143,13 @@ def place_object(
     object: Held | ObjectDesignator | str,  # noqa: A002 - CRAM's key
     target: PoseStamped | Pose | LocationDesignator,
     arm: str | None = None,
+    settle: float = SETTLE,
 ) -> PoseStamped:
     """Put the held ``object`` down with its frame at ``target``; return where it rests.
 
     ``target`` may be a location designator (its first pose is taken) or a map pose. The
-    returned pose is in ``map``.
+    returned pose is in ``map``. ``settle`` [s] is simulated after letting go to check the
+    object rests (0: no check).
 
     Raises:
         PlacingFailed: no turn of the object could be put down there, or it did not rest
@@ -161,7 +165,7 @@ def place_object(
         except ManipulationLowLevelFailure as failure:
             causes.append(failure)
             continue
-        problem = _settled(held.object_name, put)
+        problem = _settled(held.object_name, put, settle)
         if problem is not None:
             raise PlacingFailed(
                 f"{held.object_name!r} was let go at {target} but {problem}",
