@@ -8,6 +8,7 @@ from collections.abc import Iterator
 import pytest
 
 from robocram.grasping import (
+    GraspingError,
     catalogue_shape,
     grasp_candidates,
     hand_of,
@@ -114,3 +115,8 @@ def test_without_a_world_objects_are_named_by_type_and_pose() -> None:
         )
     assert answer is not None
     assert answer["G"].position == pytest.approx((0.6, 0.0, 0.747))  # 5 cm over the box's bottom
+
+
+def test_a_type_outside_the_catalogue_has_no_shape_without_a_world() -> None:
+    with pytest.raises(GraspingError, match="'teapot' is not in the catalogue.*bowl"):
+        catalogue_shape("teapot", "teapot-1")
