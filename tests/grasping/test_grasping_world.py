@@ -120,3 +120,19 @@ def test_without_a_world_objects_are_named_by_type_and_pose() -> None:
 def test_a_type_outside_the_catalogue_has_no_shape_without_a_world() -> None:
     with pytest.raises(GraspingError, match="'teapot' is not in the catalogue.*bowl"):
         catalogue_shape("teapot", "teapot-1")
+
+
+def test_the_reachability_costmap_checks_the_plans_grasps(kitchen: KitchenScene) -> None:
+    from robocram.costmaps.grasps import grasp_point, grasp_poses
+
+    world = kitchen.world
+    pr2, mug = world.robot(kitchen.robot), world.object("mug-1")
+    base = world.pose(pr2)
+    plans = grasp_candidates(world, mug, pr2, "right")
+    costmap = grasp_poses(world, mug, pr2.description, "right", base)
+    assert len(costmap) == len(plans) > 0
+    for seen_from_base, candidate in zip(costmap, plans, strict=True):
+        assert (base * seen_from_base).distance_to(candidate.tool) < 1e-9
+        assert (base * seen_from_base).angle_to(candidate.tool) < 1e-9
+    top = next(c for c in plans if c.grasp.name == "top")
+    assert grasp_point(world, mug) == pytest.approx(top.tool.position)
