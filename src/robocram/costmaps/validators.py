@@ -18,7 +18,7 @@ import numpy as np
 from robocram.costmaps.camera_aim import aimed_camera
 from robocram.costmaps.cost_layer import LocationQuery
 from robocram.costmaps.errors import CostmapInputError
-from robocram.costmaps.grasps import grasp_point, grasp_poses
+from robocram.costmaps.grasps import GRASP_YAWS, approach_axis, grasp_point, grasp_poses, top_down
 from robocram.costmaps.reachability_map import ReachabilityMaps
 from robocram.kinematics import BaseMotion, PlanarBase, base_in_ik, solve_ik
 from robocram.tf import Pose, Vector3
@@ -154,17 +154,64 @@ def reach_object(
     With reachability ``maps``, arms are tried best first and those the map says cannot
     get there are skipped: IK on a hopeless target only burns its whole budget.
     """
+    return _reach(
+        world,
+        robot,
+        grasp_point(world, obj),
+        lambda name: grasp_poses(world, obj, robot.description, name, base),
+        base,
+        arm,
+        maps,
+    )
+
+
+def reach_point(
+    world: World,
+    robot: RobotObject,
+    point: Vector3,
+    base: Pose,
+    arm: str | None = None,
+    maps: ReachabilityMaps | None = None,
+) -> Reach | None:
+    """An IK solution (torso free) putting the tool over map ``point`` from above, or None.
+
+    For a location reaching a place rather than an object (CRAM's ``(reachable-for ?robot)
+    (location ?target)``): the spot an object is to be put down at, a point to touch.
+    """
+    desc = robot.description
+    in_base = base.inverse().transform_point(point)
+    return _reach(
+        world,
+        robot,
+        point,
+        lambda name: [Pose(in_base, top_down(approach_axis(desc, name), y)) for y in GRASP_YAWS],
+        base,
+        arm,
+        maps,
+    )
+
+
+def _reach(
+    world: World,
+    robot: RobotObject,
+    point: Vector3,
+    targets: Callable[[str], list[Pose]],
+    base: Pose,
+    arm: str | None,
+    maps: ReachabilityMaps | None,
+) -> Reach | None:
+    """The first IK solution for an arm's tool ``targets`` (base frame) around map ``point``."""
     desc = robot.description
     arms = robot_arms(robot, arm)
     if maps is not None:
-        point = base.inverse().transform_point(grasp_point(world, obj))
-        scores = {a: maps.get(desc, a).score_at(point) for a in arms}
+        in_base = base.inverse().transform_point(point)
+        scores = {a: maps.get(desc, a).score_at(in_base) for a in arms}
         arms = sorted((a for a in arms if scores[a] > 0), key=lambda a: -scores[a])
     seed = world.joint_states(robot)
     use_torso = desc.torso_joint is not None
     for name in arms:
         travel = STAND_TRAVEL if base_in_ik(desc, name) else None
-        for target in grasp_poses(world, obj, desc, name, base):
+        for target in targets(name):
             result = solve_ik(
                 desc,
                 name,
@@ -180,10 +227,15 @@ def reach_object(
 
 
 def reachable(query: LocationQuery, pose: Pose) -> bool:
-    """Whether the robot at ``pose`` reaches a grasp of the object with IK, torso free."""
+    """Whether the robot at ``pose`` reaches the object (a grasp of it) or the ``target``
+    (the tool over it from above) with IK, torso free."""
     robot = _robot(query)
-    obj = query.object(query.designator.get("object"), "object")
     arm = query.designator.get("arm")
+    wanted = query.designator.get("object")
+    if wanted is None and query.designator.get("target") is not None:
+        point = query.point(query.designator.get("target"), "target")
+        return reach_point(query.world, robot, point, pose, arm, query.reach_maps) is not None
+    obj = query.object(wanted, "object")
     return reach_object(query.world, robot, obj, pose, arm, query.reach_maps) is not None
 
 
