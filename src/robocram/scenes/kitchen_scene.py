@@ -16,7 +16,7 @@ from pathlib import Path
 
 from robocram.robots import RobotDescription, load_description
 from robocram.scenes.errors import SceneError
-from robocram.tf import Pose
+from robocram.tf import Pose, PoseStamped
 from robocram.world import World, WorldObject
 
 KITCHEN = "kitchen"  # the kitchen's object name, the Env of its facts
@@ -52,6 +52,13 @@ class KitchenScene:
     robot: str
     kitchen: str
     items: dict[str, WorldObject]
+
+    @property
+    def look_target(self) -> PoseStamped:
+        """Where the first item (the mug on the counter) is now: what a plan that starts by
+        looking looks at, as on the tabletop."""
+        first = next(iter(self.items.values()))
+        return PoseStamped("map", self.world.pose(first).position)
 
 
 def kitchen_urdf() -> Path:
