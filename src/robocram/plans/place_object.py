@@ -33,8 +33,8 @@ CARRY_HEIGHTS = (0.10, 0.05)  # [m] the object comes in from this far above, fir
 RETREATS = (0.10, 0.05)  # [m] the open hand backs off this far towards the wrist, or less
 SETTLE = 0.15  # [s] simulated at most after letting go: the 5 mm drop takes 0.03 s
 SETTLE_STEP = 0.04  # [s] simulated between two looks at the object
-AT_REST = 0.0005  # [m] an object moving less than this over one step rests
-AT_REST_TURN = 0.005  # [rad] ... and turning less than this (a box starting to tip)
+AT_REST = 0.001  # [m] an object moving less than this over one step rests
+AT_REST_TURN = 0.02  # [rad] ... and turning less than this (a mug rocks on its rim a little)
 MAX_SETTLE_DROP = 0.03  # [m] it may sink this much (the gap, contact) and still rest
 TURNS = (0.0, math.pi / 2, -math.pi / 2, math.pi)  # [rad] object turns tried in order
 
