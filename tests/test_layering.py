@@ -58,7 +58,7 @@ ALLOWED: dict[str, set[str]] = {
         "logic",
         "tf",
     },
-    "batch": {"traces", "scenes", "plans", "projection", "world", "execution", "tf"},
+    "batch": {"traces", "scenes", "plans", "projection", "world", "execution", "designators", "tf"},
     "robot_check": {
         "projection",
         "world",
