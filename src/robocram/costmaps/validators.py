@@ -18,7 +18,7 @@ import numpy as np
 from robocram.costmaps.camera_aim import aimed_camera
 from robocram.costmaps.cost_layer import LocationQuery
 from robocram.costmaps.errors import CostmapInputError
-from robocram.costmaps.grasps import grasp_point, grasp_poses
+from robocram.costmaps.grasps import GRASP_YAWS, approach_axis, grasp_point, grasp_poses, top_down
 from robocram.costmaps.reachability_map import ReachabilityMaps
 from robocram.kinematics import BaseMotion, PlanarBase, base_in_ik, solve_ik
 from robocram.tf import Pose, Vector3
@@ -155,16 +155,58 @@ def reach_object(
     get there are skipped: IK on a hopeless target only burns its whole budget.
     """
     desc = robot.description
+    arms = _hopeful_arms(robot, grasp_point(world, obj), base, arm, maps)
+    return _first_reach(
+        world, robot, {name: grasp_poses(world, obj, desc, name, base) for name in arms}
+    )
+
+
+def reach_point(
+    world: World,
+    robot: RobotObject,
+    point: Vector3,
+    base: Pose,
+    arm: str | None = None,
+    maps: ReachabilityMaps | None = None,
+) -> Reach | None:
+    """An IK solution (torso free) bringing the tool from above to map ``point`` [m], or None.
+
+    The tool poses are the top-down grasps at the point (one per ``GRASP_YAWS``): where
+    the hand goes to put something down there, or to take it.
+    """
+    arms = _hopeful_arms(robot, point, base, arm, maps)
+    in_base = base.inverse().transform_point(point)
+    desc = robot.description
+    return _first_reach(
+        world,
+        robot,
+        {
+            name: [Pose(in_base, top_down(approach_axis(desc, name), yaw)) for yaw in GRASP_YAWS]
+            for name in arms
+        },
+    )
+
+
+def _hopeful_arms(
+    robot: RobotObject, point: Vector3, base: Pose, arm: str | None, maps: ReachabilityMaps | None
+) -> list[str]:
+    """The arms to try for map ``point``: best first by the maps, hopeless ones dropped."""
     arms = robot_arms(robot, arm)
-    if maps is not None:
-        point = base.inverse().transform_point(grasp_point(world, obj))
-        scores = {a: maps.get(desc, a).score_at(point) for a in arms}
-        arms = sorted((a for a in arms if scores[a] > 0), key=lambda a: -scores[a])
+    if maps is None:
+        return arms
+    local = base.inverse().transform_point(point)
+    scores = {a: maps.get(robot.description, a).score_at(local) for a in arms}
+    return sorted((a for a in arms if scores[a] > 0), key=lambda a: -scores[a])
+
+
+def _first_reach(world: World, robot: RobotObject, targets: dict[str, list[Pose]]) -> Reach | None:
+    """The first IK solution over the arms (in order) and their tool poses in the base frame."""
+    desc = robot.description
     seed = world.joint_states(robot)
     use_torso = desc.torso_joint is not None
-    for name in arms:
+    for name, poses in targets.items():
         travel = STAND_TRAVEL if base_in_ik(desc, name) else None
-        for target in grasp_poses(world, obj, desc, name, base):
+        for target in poses:
             result = solve_ik(
                 desc,
                 name,
@@ -180,10 +222,15 @@ def reach_object(
 
 
 def reachable(query: LocationQuery, pose: Pose) -> bool:
-    """Whether the robot at ``pose`` reaches a grasp of the object with IK, torso free."""
+    """Whether the robot at ``pose`` reaches a grasp of the object (or, with a ``target``
+    and no ``object``, the target point from above) with IK, torso free."""
     robot = _robot(query)
-    obj = query.object(query.designator.get("object"), "object")
     arm = query.designator.get("arm")
+    value = query.designator.get("object")
+    if value is None:
+        point = query.point(query.designator.get("target"), "target")
+        return reach_point(query.world, robot, point, pose, arm, query.reach_maps) is not None
+    obj = query.object(value, "object")
     return reach_object(query.world, robot, obj, pose, arm, query.reach_maps) is not None
 
 
