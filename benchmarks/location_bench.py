@@ -146,9 +146,7 @@ def bench_robot(robot: str, runs: int, sampling: Sampling) -> None:
             following = f"{statistics.median(nexts):6.1f}" if nexts else "   n/a"
             print(
                 f"{robot:5s} {label:20s} first {statistics.median(firsts):6.1f} ms  "
-                f"next {following} ms  [{shares}]"
-                + (f"  {failed} failed" if failed else "")
-                + goal
+                f"next {following} ms  [{shares}]" + (f"  {failed} failed" if failed else "") + goal
             )
     scene.world.close()
 
