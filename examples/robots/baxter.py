@@ -83,10 +83,9 @@ def description() -> RobotDescription:
         #   left_hand_camera_link, right_hand_camera_link, left_hand_camera_axis_link
         cameras=(
             CameraDescription(
+                # why: heights 0.750 to 0.750 m over the base (torso at its limits) are derived at
+                #   load; give minimal_height and maximal_height to override
                 frame="head_camera_link",
-                # why: camera height over the base at the torso's limits
-                minimal_height=0.75,
-                maximal_height=0.75,
                 # TODO doubt: the URDF gives no field of view: take the sensor's
                 horizontal_fov=math.radians(60),
                 vertical_fov=math.radians(45),

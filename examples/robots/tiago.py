@@ -29,7 +29,6 @@ def description() -> RobotDescription:
         base_frame="base_footprint",
         # why: vertical prismatic joint carrying 2 of the arms and cameras
         torso_joint="torso_lift_joint",
-        torso_link="torso_lift_link",
         # why: one gripper-like end
         arms={
             "arm": ArmDescription(
@@ -98,10 +97,9 @@ def description() -> RobotDescription:
         #   xtion_optical_frame, xtion_rgb_frame, xtion_link
         cameras=(
             CameraDescription(
+                # why: heights 1.067 to 1.417 m over the base (torso at its limits) are derived at
+                #   load; give minimal_height and maximal_height to override
                 frame="xtion_rgb_optical_frame",
-                # why: camera height over the base at the torso's limits
-                minimal_height=1.067,
-                maximal_height=1.417,
                 # why: the URDF's Gazebo sensor 'xtion_frame_sensor' on xtion_rgb_frame at 640 x 480
                 #   pixels
                 horizontal_fov=1.0996,
@@ -109,12 +107,7 @@ def description() -> RobotDescription:
             ),
         ),
         # why: two joints turn the camera: the first pans, the second tilts
-        pan_tilt=PanTiltDescription(
-            pan_link="head_1_link",
-            tilt_link="head_2_link",
-            pan_joint="head_1_joint",
-            tilt_joint="head_2_joint",
-        ),
+        pan_tilt=PanTiltDescription(pan_joint="head_1_joint", tilt_joint="head_2_joint"),
         # why: head at zero: straight ahead
         neck_parking={"head_1_joint": 0.0, "head_2_joint": 0.0},
         extra_frames=(

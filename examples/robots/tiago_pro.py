@@ -29,7 +29,6 @@ def description() -> RobotDescription:
         base_frame="base_footprint",
         # why: vertical prismatic joint carrying 3 of the arms and cameras
         torso_joint="torso_lift_joint",
-        torso_link="torso_lift_link",
         # why: two alike arms 0.882 m apart (left: larger y)
         arms={
             "left": ArmDescription(
@@ -93,10 +92,9 @@ def description() -> RobotDescription:
         #   optical frame added, z forward; others: head_front_camera_bottom_screw_frame
         cameras=(
             CameraDescription(
+                # why: heights 1.160 to 1.510 m over the base (torso at its limits) are derived at
+                #   load; give minimal_height and maximal_height to override
                 frame="head_front_camera_link_optical",
-                # why: camera height over the base at the torso's limits
-                minimal_height=1.16,
-                maximal_height=1.51,
                 # why: the URDF's Gazebo sensor 'head_front_cameracolor' on head_front_camera_link
                 #   at 640 x 480 pixels
                 horizontal_fov=1.2113,
@@ -104,12 +102,7 @@ def description() -> RobotDescription:
             ),
         ),
         # why: two joints turn the camera: the first pans, the second tilts
-        pan_tilt=PanTiltDescription(
-            pan_link="head_1_link",
-            tilt_link="head_2_link",
-            pan_joint="head_1_joint",
-            tilt_joint="head_2_joint",
-        ),
+        pan_tilt=PanTiltDescription(pan_joint="head_1_joint", tilt_joint="head_2_joint"),
         # why: head at zero: straight ahead
         neck_parking={"head_1_joint": 0.0, "head_2_joint": 0.0},
         extra_frames=(

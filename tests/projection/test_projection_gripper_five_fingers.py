@@ -62,7 +62,7 @@ def tiago() -> RobotDescription:
         cameras=(
             CameraDescription("xtion_rgb_optical_frame", horizontal_fov=1.01, vertical_fov=0.79),
         ),
-        pan_tilt=PanTiltDescription("head_1_link", "head_2_link", "head_1_joint", "head_2_joint"),
+        pan_tilt=PanTiltDescription(pan_joint="head_1_joint", tilt_joint="head_2_joint"),
         neck_parking={"head_1_joint": 0.0, "head_2_joint": 0.0},
         extra_frames=(tool,),
         package_paths=(folder,),

@@ -158,10 +158,16 @@ def reach_object(
     With reachability ``maps``, arms are tried best first and those the map says cannot
     get there are skipped: IK on a hopeless target only burns its whole budget.
     """
-    desc = robot.description
-    arms = _hopeful_arms(robot, grasp_point(world, obj), base, arm, maps)
-    targets = {name: grasp_poses(world, obj, desc, name, base) for name in arms}
-    return _first_reach(world, robot, targets, restarts)
+    return _reach(
+        world,
+        robot,
+        grasp_point(world, obj),
+        lambda name: grasp_poses(world, obj, robot.description, name, base),
+        base,
+        arm,
+        maps,
+        restarts,
+    )
 
 
 def reach_point(
@@ -173,50 +179,50 @@ def reach_point(
     maps: ReachabilityMaps | None = None,
     restarts: int = IK_RESTARTS,
 ) -> Reach | None:
-    """An IK solution (torso free) bringing the tool from above to map ``point`` [m], or None.
+    """An IK solution (torso free) putting the tool over map ``point`` from above, or None.
 
-    The tool poses are the top-down grasps at the point (one per ``GRASP_YAWS``): where
-    the hand goes to put something down there, or to take it.
+    For a location reaching a place rather than an object (CRAM's ``(reachable-for ?robot)
+    (location ?target)``): the spot an object is to be put down at, a point to touch.
     """
-    arms = _hopeful_arms(robot, point, base, arm, maps)
-    in_base = base.inverse().transform_point(point)
     desc = robot.description
-    return _first_reach(
+    in_base = base.inverse().transform_point(point)
+    return _reach(
         world,
         robot,
-        {
-            name: [Pose(in_base, top_down(approach_axis(desc, name), yaw)) for yaw in GRASP_YAWS]
-            for name in arms
-        },
+        point,
+        lambda name: [Pose(in_base, top_down(approach_axis(desc, name), y)) for y in GRASP_YAWS],
+        base,
+        arm,
+        maps,
         restarts,
     )
 
 
-def _hopeful_arms(
-    robot: RobotObject, point: Vector3, base: Pose, arm: str | None, maps: ReachabilityMaps | None
-) -> list[str]:
-    """The arms to try for map ``point``: best first by the maps, hopeless ones dropped."""
-    arms = robot_arms(robot, arm)
-    if maps is None:
-        return arms
-    local = base.inverse().transform_point(point)
-    scores = {a: maps.get(robot.description, a).score_at(local) for a in arms}
-    return sorted((a for a in arms if scores[a] > 0), key=lambda a: -scores[a])
-
-
-def _first_reach(
-    world: World, robot: RobotObject, targets: dict[str, list[Pose]], restarts: int
+def _reach(
+    world: World,
+    robot: RobotObject,
+    point: Vector3,
+    targets: Callable[[str], list[Pose]],
+    base: Pose,
+    arm: str | None,
+    maps: ReachabilityMaps | None,
+    restarts: int,
 ) -> Reach | None:
-    """The first IK solution over the arms (in order) and their tool poses in the base frame.
+    """The first IK solution for an arm's tool ``targets`` (base frame) around map ``point``.
 
     An arm reaching with its base keeps :data:`IK_RESTARTS` at least: its solver needs them.
     """
     desc = robot.description
+    arms = robot_arms(robot, arm)
+    if maps is not None:
+        in_base = base.inverse().transform_point(point)
+        scores = {a: maps.get(desc, a).score_at(in_base) for a in arms}
+        arms = sorted((a for a in arms if scores[a] > 0), key=lambda a: -scores[a])
     seed = world.joint_states(robot)
     use_torso = desc.torso_joint is not None
-    for name, poses in targets.items():
+    for name in arms:
         travel = STAND_TRAVEL if base_in_ik(desc, name) else None
-        for target in poses:
+        for target in targets(name):
             result = solve_ik(
                 desc,
                 name,
@@ -232,16 +238,16 @@ def _first_reach(
 
 
 def reachable(query: LocationQuery, pose: Pose) -> bool:
-    """Whether the robot at ``pose`` reaches a grasp of the object (or, with a ``target``
-    and no ``object``, the target point from above) with IK, torso free."""
+    """Whether the robot at ``pose`` reaches the object (a grasp of it) or the ``target``
+    (the tool over it from above) with IK, torso free."""
     robot = _robot(query)
     arm = query.designator.get("arm")
-    value = query.designator.get("object")
-    if value is None:
+    wanted = query.designator.get("object")
+    if wanted is None and query.designator.get("target") is not None:
         point = query.point(query.designator.get("target"), "target")
         maps, budget = query.reach_maps, STAND_IK_RESTARTS
         return reach_point(query.world, robot, point, pose, arm, maps, budget) is not None
-    obj = query.object(value, "object")
+    obj = query.object(wanted, "object")
     found = reach_object(query.world, robot, obj, pose, arm, query.reach_maps, STAND_IK_RESTARTS)
     return found is not None
 

@@ -74,7 +74,7 @@ def _aim_pan_tilt(
     wanted: dict[str, float] = {}
     for _ in range(AIM_ROUNDS):
         before = world.joint_states(robot.name)
-        for joint, link in ((pt.pan_joint, pt.pan_link), (pt.tilt_joint, pt.tilt_link)):
+        for joint, link in pt.axes():
             wanted[joint] = _aim_joint(robot, joint, link, target)
             world.set_joint_states(robot.name, {joint: wanted[joint]})
         after = world.joint_states(robot.name)

@@ -145,3 +145,23 @@ def derive_camera(
         minimal_height=min(heights) if cam.minimal_height is None else cam.minimal_height,
         maximal_height=max(heights) if cam.maximal_height is None else cam.maximal_height,
     )
+
+
+def derive_links(desc: RobotDescription, model: RobotModel) -> dict[str, object]:
+    """The torso link and the pan-tilt links, where left out: the joints' child links.
+
+    Returns the changed fields only (for ``LoadedDescription.checked``). Without this a
+    torso given by its joint alone would yield no ``robot_torso_link_joint/3`` fact, and
+    plans would think the robot has no torso.
+    """
+    changes: dict[str, object] = {}
+    if desc.torso_link is None and desc.torso_joint is not None:
+        changes["torso_link"] = model.joints[desc.torso_joint].child
+    pt = desc.pan_tilt
+    if pt is not None and (pt.pan_link is None or pt.tilt_link is None):
+        changes["pan_tilt"] = replace(
+            pt,
+            pan_link=pt.pan_link or model.joints[pt.pan_joint].child,
+            tilt_link=pt.tilt_link or model.joints[pt.tilt_joint].child,
+        )
+    return changes

@@ -88,14 +88,27 @@ class CameraDescription:
         return self.minimal_height, self.maximal_height
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class PanTiltDescription:
-    """The links and joints of a pan-tilt head."""
+    """The joints of a pan-tilt head and the links they turn.
 
-    pan_link: str
-    tilt_link: str
+    Links left ``None`` are the joints' child links, filled in at load. Keyword-only, so a
+    joint is never taken for a link by position.
+    """
+
     pan_joint: str
     tilt_joint: str
+    pan_link: str | None = None
+    tilt_link: str | None = None
+
+    def axes(self) -> tuple[tuple[str, str], tuple[str, str]]:
+        """``((pan_joint, pan_link), (tilt_joint, tilt_link))``, pan first, of a loaded head."""
+        if self.pan_link is None or self.tilt_link is None:
+            raise DescriptionError(
+                f"pan-tilt head {self.pan_joint!r}/{self.tilt_joint!r} has no links yet; "
+                "load the description (load_description fills them in)"
+            )
+        return (self.pan_joint, self.pan_link), (self.tilt_joint, self.tilt_link)
 
 
 @dataclass(frozen=True)
@@ -131,7 +144,7 @@ class RobotDescription:
     urdf: str | Path
     base_frame: str
     odom_frame: str = "odom"
-    torso_link: str | None = None
+    torso_link: str | None = None  # None: the torso joint's child link, set at load
     torso_joint: str | None = None
     arms: Mapping[str, ArmDescription] = field(default_factory=dict)
     cameras: tuple[CameraDescription, ...] = ()

@@ -11,7 +11,7 @@ from dataclasses import replace
 from pathlib import Path
 
 from robocram.robots.builtin import builtin_description
-from robocram.robots.derived_values import derive_arm, derive_camera
+from robocram.robots.derived_values import derive_arm, derive_camera, derive_links
 from robocram.robots.description import LoadedDescription, RobotDescription
 from robocram.robots.description_check import (
     check_names,
@@ -30,9 +30,10 @@ def load_description(
 ) -> LoadedDescription:
     """The checked description with ``model`` set and left-out values derived.
 
-    Arm chains, grippers, hand links and camera heights come from the URDF where the
-    description leaves them empty (:mod:`~robocram.robots.derived_values`); warnings of
-    the checker are logged, issued as ``DescriptionWarning`` and kept in ``findings``.
+    Arm chains, grippers, hand links, camera heights, the torso link and the pan-tilt links
+    come from the URDF where the description leaves them empty
+    (:mod:`~robocram.robots.derived_values`); warnings of the checker are logged, issued
+    as ``DescriptionWarning`` and kept in ``findings``.
 
     Raises:
         DescriptionCheckError: a joint, link or frame it names is not in the model, or a
@@ -67,7 +68,9 @@ def load_description(
         check_values(desc.name, model, arm.carrying)
     check_values(desc.name, model, desc.neck_parking)
     cameras = tuple(derive_camera(desc, model, camera) for camera in desc.cameras)
-    loaded = LoadedDescription.checked(desc, model, arms=arms, cameras=cameras, package_paths=paths)
+    loaded = LoadedDescription.checked(
+        desc, model, arms=arms, cameras=cameras, package_paths=paths, **derive_links(desc, model)
+    )
     findings = semantic_findings(loaded)
     faults = [f for f in findings if f.severity == "fault"]
     if faults:

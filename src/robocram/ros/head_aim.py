@@ -41,7 +41,7 @@ def pan_tilt_towards(
     camera_frame = desc.cameras[0].frame
     for _ in range(ROUNDS):
         change = 0.0
-        for joint, link in ((pt.pan_joint, pt.pan_link), (pt.tilt_joint, pt.tilt_link)):
+        for joint, link in pt.axes():
             link_pose = (base_in_map * forward_kinematics(desc, values, link)).matrix()
             axis = link_pose[:3, :3] @ np.asarray(desc.model.joints[joint].axis, float)
             camera = (base_in_map * forward_kinematics(desc, values, camera_frame)).matrix()

@@ -129,5 +129,5 @@ def find_neck(tree: ModelTree, camera: str, torso: str | None) -> Neck:
     doubt = None
     if abs(axes[0][2]) < 0.9 or abs(float(np.asarray(axes[1])[2])) > 0.1:
         doubt = "the first axis is not vertical or the second not horizontal"
-    unit = PanTiltDescription(pan.child, tilt.child, pan.name, tilt.name)
+    unit = PanTiltDescription(pan_joint=pan.name, tilt_joint=tilt.name)
     return Neck(unit, (), why, doubt)

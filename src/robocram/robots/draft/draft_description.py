@@ -127,7 +127,6 @@ def _with_camera(
         return desc
     others = f"; others: {', '.join(camera.others)}" if camera.others else ""
     _note(why, doubts, "cameras.0", camera.why + others, camera.doubt)
-    why["cameras.0.minimal_height"] = "camera height over the base at the torso's limits"
     sensor = camera.sensor
     if sensor is None:
         doubts["cameras.0.horizontal_fov"] = "the URDF gives no field of view: take the sensor's"

@@ -96,13 +96,20 @@ def _fov(value: float) -> object:
 
 
 def _camera(camera: CameraDescription, notes: _Notes) -> object:
+    """The camera without its heights: loading derives them from the URDF (said in a note)."""
+    heights = ""
+    if camera.minimal_height is not None and camera.maximal_height is not None:
+        heights = (
+            f"heights {camera.minimal_height:.3f} to {camera.maximal_height:.3f} m over the "
+            "base (torso at its limits) are derived at load; give minimal_height and "
+            "maximal_height to override"
+        )
+    frame = notes.item("cameras.0.frame", "frame", camera.frame)
+    if heights:
+        frame = Item(frame.key, frame.value, (*frame.comments, f"why: {heights}"))
     return call(
         "CameraDescription",
-        frame=camera.frame,
-        minimal_height=notes.item(
-            "cameras.0.minimal_height", "minimal_height", camera.minimal_height
-        ),
-        maximal_height=camera.maximal_height,
+        frame,
         horizontal_fov=notes.item(
             "cameras.0.horizontal_fov", "horizontal_fov", _fov(camera.horizontal_fov)
         ),
@@ -111,13 +118,7 @@ def _camera(camera: CameraDescription, notes: _Notes) -> object:
 
 
 def _pan_tilt(unit: PanTiltDescription) -> object:
-    return call(
-        "PanTiltDescription",
-        pan_link=unit.pan_link,
-        tilt_link=unit.tilt_link,
-        pan_joint=unit.pan_joint,
-        tilt_joint=unit.tilt_joint,
-    )
+    return call("PanTiltDescription", pan_joint=unit.pan_joint, tilt_joint=unit.tilt_joint)
 
 
 def _urdf_code(urdf: Path, module_file: Path | None) -> str:
@@ -138,8 +139,8 @@ def _body(desc: RobotDescription, notes: _Notes) -> object:
     fields = [Item("name", desc.name), Item("urdf", Code("URDF"))]
     fields.append(notes.item("base_frame", "base_frame", desc.base_frame))
     if desc.torso_joint is not None:
+        # its link, the joint's child, is derived at load
         fields.append(notes.item("torso_joint", "torso_joint", desc.torso_joint))
-        fields.append(Item("torso_link", desc.torso_link))
     arms = [
         notes.item(f"arms.{key}", quoted(key), _arm(arm, notes)) for key, arm in desc.arms.items()
     ]
