@@ -19,8 +19,10 @@ ALLOWED: dict[str, set[str]] = {
     "world": {"robots", "logic", "tf"},
     "kinematics": {"robots", "tf"},
     "scenes": {"world", "kinematics", "robots", "tf"},
-    "costmaps": {"world", "kinematics", "designators", "robots", "logic", "tf"},
+    "grasping": {"world", "kinematics", "robots", "logic", "tf"},
+    "costmaps": {"grasping", "world", "kinematics", "designators", "robots", "logic", "tf"},
     "projection": {
+        "grasping",
         "costmaps",
         "world",
         "kinematics",

@@ -20,6 +20,8 @@ from robocram.logic import KnowledgeBase
 from robocram.plans.action_type import ActionType
 from robocram.plans.basic_actions import detect, look, move_torso, navigate, park_arms
 from robocram.plans.containers import close_container, open_container
+from robocram.plans.pick_object import pick_up_object
+from robocram.plans.place_object import place_object
 from robocram.plans.search import search
 
 ACTIONS_GROUP = "robocram_actions"
@@ -35,6 +37,8 @@ ACTION_TYPES: Mapping[str, ActionType] = MappingProxyType(
             ActionType("moving-torso", ("joint_angle",), (), move_torso),
             ActionType("opening", ("object",), ("arm", "distance", "angle"), open_container),
             ActionType("closing", ("object",), ("arm",), close_container),
+            ActionType("picking-up", ("object",), ("arm", "grasp"), pick_up_object),
+            ActionType("placing", ("object", "target"), ("arm",), place_object),
         )
     }
 )

@@ -37,6 +37,7 @@ from robocram.execution import (
     top_level,
 )
 from robocram.execution.failures import PerceptionObjectNotFound
+from robocram.grasping import install_grasp_predicates
 from robocram.kinematics import forward_kinematics
 from robocram.logic import KnowledgeBase, Term
 from robocram.projection.arm import joint_values
@@ -175,6 +176,7 @@ def recording_environment(
     kb = KnowledgeBase()
     install_description(kb, desc)
     install_motions(kb, desc)
+    install_grasp_predicates(kb, description=desc)  # objects by type and pose
     resources = desc.resources()
     modules = [RecordingPM(resource, state) for resource in resources]
     facts = matching_facts(PREFIX, resources)

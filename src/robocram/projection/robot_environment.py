@@ -5,7 +5,9 @@ knowledge base (world predicates and the robot's description facts are already t
 adds the motion groundings of the motion table (common ones, and flying ones for flying
 robots) and one process module per resource the robot has
 (``RobotDescription.resources()``), with the ``matching_process_module/2`` facts the
-table gives for those resources. Location designators resolve through costmaps
+table gives for those resources. The grasp model answers ``object_grasp/7`` and its
+siblings (``robocram.grasping``, docs/grasping.md) so plans reach grasps through the KB.
+Location designators resolve through costmaps
 (:class:`~robocram.costmaps.CostmapLocations` on the same world), so ``visible_for``,
 ``reachable_for``, ``on`` and the other keys work in any projected plan.
 """
@@ -15,6 +17,7 @@ from __future__ import annotations
 from robocram.costmaps import CostmapLocations
 from robocram.designators import install_motion_family
 from robocram.execution import Environment, matching_facts
+from robocram.grasping import install_grasp_predicates
 from robocram.logic import KnowledgeBase
 from robocram.projection.process_modules import PROJECTION_MODULES
 from robocram.projection.projected_robot import ProjectedRobot
@@ -45,6 +48,7 @@ def projection_environment(
     desc = projected.description
     resources = desc.resources()
     kb = install_motions(world.kb, desc)
+    install_grasp_predicates(kb, world)
     return Environment(
         f"{PREFIX}_{projected.name}",
         process_modules=[PROJECTION_MODULES[r](projected) for r in resources],

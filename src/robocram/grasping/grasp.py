@@ -1,0 +1,51 @@
+"""One grasp: where the tool goes relative to the object, how it comes in and lifts.
+
+A grasp is robot-independent in what it asks (a side to come from, an opening) and
+robot-specific only in the tool orientation, which maps the hand's approach and opening
+axes (:class:`~robocram.grasping.hand.Hand`) onto the grasp's.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from robocram.tf import Pose, Vector3
+
+
+@dataclass(frozen=True)
+class Grasp:
+    """A grasp of an object by one hand, in the object's frame.
+
+    Attributes:
+        name: CRAM's name of the side it grasps from: top, front, left, right, rim, handle.
+        turn: [rad] the hand's turn about its approach axis (candidates of one grasp).
+        tool: the tool frame's pose in the object's frame when grasping.
+        approach: unit direction [object frame] the tool moves in to grasp.
+        pre_grasp: [m] the tool starts this far back along ``approach``.
+        lift: [m] the object is lifted this far up after gripping.
+        opening: [m] the opening the hand needs (object width plus clearance).
+        across: unit direction [object frame] the fingers spread along.
+    """
+
+    name: str
+    turn: float
+    tool: Pose
+    approach: Vector3
+    pre_grasp: float
+    lift: float
+    opening: float
+    across: Vector3
+
+    def pre_grasp_tool(self) -> Pose:
+        """The tool's pose [object frame] before it moves in."""
+        x, y, z = self.tool.position
+        ax, ay, az = self.approach
+        d = self.pre_grasp
+        return Pose((x - ax * d, y - ay * d, z - az * d), self.tool.orientation)
+
+    def in_map(self, object_in_map: Pose) -> tuple[Pose, Pose, Pose]:
+        """Grasp, pre-grasp and lifted tool poses in the map for the object there."""
+        grasp = object_in_map * self.tool
+        x, y, z = grasp.position
+        lifted = Pose((x, y, z + self.lift), grasp.orientation)
+        return grasp, object_in_map * self.pre_grasp_tool(), lifted

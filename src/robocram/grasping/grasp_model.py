@@ -1,0 +1,164 @@
+"""The grasp model: every grasp of an object a hand can take, from geometry alone.
+
+Grasps (CRAM's names), in the object's frame (x forward, z up):
+
+- ``top``: from above, over the body's axis; the fingertips go ``GRASP_HEIGHT`` above the
+  bottom (at most half the height), but no deeper than the hand's finger depth below the
+  top. Four turns: the opening along the object's x (width: its x size) or y.
+- ``front``, ``left``, ``right``: sideways at half height, from the -x, +y and -y side
+  (not through a handle); the opening is horizontal, the width the object's size across.
+- ``rim`` (a hollow object, ``object_wall/2``): from above on the wall, the fingers
+  straddling it ``RIM_DEPTH`` below the rim; one place per side the box shows no handle.
+  Width: the wall's thickness.
+- ``handle`` (``object_handle/2``): sideways onto the bar that sticks out of the body,
+  at half height; width: the bar's.
+
+Each needs its width plus :data:`CLEARANCE`; a grasp needing more than the hand opens is
+not offered, and when none is left :class:`ObjectUngraspable` names both widths.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator, Sequence
+
+import numpy as np
+
+from robocram.grasping.errors import ObjectUngraspable, UnknownGraspError
+from robocram.grasping.grasp import Grasp
+from robocram.grasping.hand import Hand
+from robocram.grasping.object_shape import ObjectShape
+from robocram.tf import Pose, Vector3
+from robocram.tf import quaternion as quat
+
+GRASP_NAMES = ("top", "front", "left", "right", "rim", "handle")
+CLEARANCE = 0.004  # [m] added to an object's width: the hand must open this much wider
+GRASP_HEIGHT = 0.05  # [m] a top grasp's tool frame over the object's bottom
+RIM_DEPTH = 0.02  # [m] a rim grasp's tool frame below the rim
+PRE_GRASP = 0.10  # [m] the tool starts this far back along its approach
+LIFT = 0.10  # [m] the object is lifted this far
+HANDLE_MARGIN = 0.005  # [m] the box sticking out this far past the body is a handle
+DOWN: Vector3 = (0.0, 0.0, -1.0)
+SIDES: tuple[Vector3, ...] = ((1.0, 0.0, 0.0), (-1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, -1.0, 0.0))
+
+
+def tool_orientation(hand: Hand, approach: Vector3, opening: Vector3) -> quat.Quaternion:
+    """Tool orientation putting the hand's approach and opening axes onto the given ones."""
+    a, o = np.asarray(hand.approach), np.asarray(hand.opening)
+    ga, go = np.asarray(approach, dtype=float), np.asarray(opening, dtype=float)
+    grasp_axes = np.column_stack([ga, go, np.cross(ga, go)])
+    hand_axes = np.column_stack([a, o, np.cross(a, o)])
+    return quat.from_matrix(grasp_axes @ hand_axes.T)
+
+
+def _grasp(
+    hand: Hand,
+    name: str,
+    turn: float,
+    at: Vector3,
+    approach: Vector3,
+    opening: Vector3,
+    width: float,
+) -> Grasp:
+    pose = Pose(at, tool_orientation(hand, approach, opening))
+    return Grasp(name, turn, pose, approach, PRE_GRASP, LIFT, width + CLEARANCE, opening)
+
+
+def _top(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
+    cx, cy = shape.centre
+    sx, sy, height = shape.size
+    z = max(shape.low[2] + min(GRASP_HEIGHT, height / 2), shape.high[2] - hand.finger_depth)
+    for turn in (0.0, math.pi, math.pi / 2, -math.pi / 2):
+        opening = (round(math.cos(turn), 12), round(math.sin(turn), 12), 0.0)
+        width = sx if abs(opening[0]) > 0.5 else sy
+        yield _grasp(hand, "top", turn, (cx, cy, z), DOWN, opening, width)
+
+
+def _side(shape: ObjectShape, hand: Hand, name: str) -> Iterator[Grasp]:
+    facing = {"front": SIDES[1], "left": SIDES[2], "right": SIDES[3]}[name]
+    if shape.handle is not None and _reach(shape, facing) > shape.radius + HANDLE_MARGIN:
+        return  # the hand would come in through the handle
+    cx, cy = shape.centre
+    sx, sy, height = shape.size
+    z = shape.low[2] + height / 2
+    if name == "front":
+        approach: Vector3 = (1.0, 0.0, 0.0)
+        at: Vector3 = (shape.low[0] + min(cx - shape.low[0], hand.finger_depth), cy, z)
+        across, width = (0.0, 1.0, 0.0), sy
+    else:
+        sign = -1.0 if name == "left" else 1.0
+        edge = shape.high[1] if name == "left" else shape.low[1]
+        approach = (0.0, sign, 0.0)
+        at = (cx, edge + sign * min(abs(edge - cy), hand.finger_depth), z)
+        across, width = (1.0, 0.0, 0.0), sx
+    for turn in (0.0, math.pi):
+        opening = across if turn == 0.0 else (-across[0], -across[1], 0.0)
+        yield _grasp(hand, name, turn, at, approach, opening, width)
+
+
+def _reach(shape: ObjectShape, side: Vector3) -> float:
+    """[m] from the body's axis to the box's side in direction ``side``."""
+    cx, cy = shape.centre
+    if side[0]:
+        return shape.high[0] - cx if side[0] > 0 else cx - shape.low[0]
+    return shape.high[1] - cy if side[1] > 0 else cy - shape.low[1]
+
+
+def _rim(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
+    if shape.wall is None:
+        return
+    cx, cy = shape.centre
+    r = shape.radius
+    for side in SIDES:
+        if _reach(shape, side) > r + HANDLE_MARGIN:
+            continue  # a handle on this side
+        d = r - shape.wall / 2
+        at = (cx + side[0] * d, cy + side[1] * d, shape.high[2] - RIM_DEPTH)
+        for turn in (0.0, math.pi):
+            opening = side if turn == 0.0 else (-side[0], -side[1], 0.0)
+            yield _grasp(hand, "rim", turn, at, DOWN, opening, shape.wall)
+
+
+def _handle(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
+    if shape.handle is None:
+        return
+    r = shape.radius
+    side = max(SIDES, key=lambda s: _reach(shape, s))
+    out = _reach(shape, side)
+    if out <= r + HANDLE_MARGIN:
+        return
+    cx, cy = shape.centre
+    d = out - min((out - r) / 2, hand.finger_depth)
+    at = (cx + side[0] * d, cy + side[1] * d, shape.low[2] + shape.size[2] / 2)
+    approach = (-side[0], -side[1], 0.0)
+    across = (-side[1], side[0], 0.0)
+    for turn in (0.0, math.pi):
+        opening = across if turn == 0.0 else (-across[0], -across[1], 0.0)
+        yield _grasp(hand, "handle", turn, at, approach, opening, shape.handle)
+
+
+def _of_name(shape: ObjectShape, hand: Hand, name: str) -> Iterator[Grasp]:
+    if name == "top":
+        return _top(shape, hand)
+    if name in ("front", "left", "right"):
+        return _side(shape, hand, name)
+    if name == "rim":
+        return _rim(shape, hand)
+    if name == "handle":
+        return _handle(shape, hand)
+    raise UnknownGraspError(name, GRASP_NAMES)
+
+
+def grasps(shape: ObjectShape, hand: Hand, names: Sequence[str] = GRASP_NAMES) -> list[Grasp]:
+    """The grasps of ``shape`` that ``hand`` opens wide enough for, in ``names``' order.
+
+    Raises:
+        ObjectUngraspable: none of them fits the hand (the error names both widths).
+        UnknownGraspError: a name is not one of :data:`GRASP_NAMES`.
+    """
+    every = [g for name in names for g in _of_name(shape, hand, name)]
+    fitting = [g for g in every if g.opening <= hand.max_opening]
+    if not fitting:
+        needed = min((g.opening for g in every), default=math.inf)
+        raise ObjectUngraspable(shape.name, hand.max_opening, needed)
+    return fitting

@@ -1,0 +1,79 @@
+"""A hand as the grasp model sees it: its approach and opening axes and how wide it opens.
+
+The axes are read from the robot's kinematics, not assumed: the approach axis runs from
+the wrist (the arm's end-effector link) to the tool frame, the opening axis joins the two
+fingers farthest apart with the gripper open (made perpendicular to the approach). Our
+convention (x approach, y opening) is what every built-in robot gives.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from itertools import combinations
+
+import numpy as np
+
+from robocram.grasping.errors import GraspingError
+from robocram.kinematics import forward_kinematics
+from robocram.robots import RobotDescription
+
+FINGER_DEPTH = 0.06  # [m] how far past an object's edge the fingertips may reach
+Axis = tuple[float, float, float]
+
+
+@dataclass(frozen=True)
+class Hand:
+    """Approach and opening axes (unit, tool frame), widest opening and finger depth [m]."""
+
+    approach: Axis = (1.0, 0.0, 0.0)
+    opening: Axis = (0.0, 1.0, 0.0)
+    max_opening: float = 0.1
+    finger_depth: float = FINGER_DEPTH
+
+
+def _unit(v: np.ndarray, fallback: Axis) -> Axis:
+    norm = float(np.linalg.norm(v))
+    if norm < 1e-9:
+        return fallback
+    u = v / norm
+    return (float(u[0]), float(u[1]), float(u[2]))
+
+
+def _opening_axis(desc: RobotDescription, arm: str, approach: np.ndarray) -> Axis:
+    spec = desc.arms[arm]
+    if spec.gripper is None or len(spec.gripper_links) < 2:
+        return _unit(np.cross(approach, (0.0, 0.0, 1.0)), (0.0, 1.0, 0.0))
+    tool = forward_kinematics(desc, {}, spec.tool_frame).inverse()
+    opened = spec.gripper.at(1.0)
+    points = [
+        np.asarray((tool * forward_kinematics(desc, opened, link)).position)
+        for link in spec.gripper_links
+    ]
+    a, b = max(combinations(points, 2), key=lambda p: float(np.linalg.norm(p[0] - p[1])))
+    spread = (a - b) - float((a - b) @ approach) * approach
+    spread = spread if spread[int(np.argmax(np.abs(spread)))] > 0 else -spread
+    return _unit(spread, (0.0, 1.0, 0.0))
+
+
+def hand_of(desc: RobotDescription, arm: str) -> Hand:
+    """The hand of ``desc``'s ``arm``.
+
+    Raises:
+        GraspingError: the arm has no gripper (nothing to grasp with).
+    """
+    spec = desc.arms.get(arm)
+    if spec is None:
+        raise GraspingError(f"{desc.name} has no arm {arm!r}; arms: {sorted(desc.arms)}")
+    if spec.gripper is None or spec.gripper.max_opening is None:
+        raise GraspingError(
+            f"arm {arm!r} of {desc.name} has no gripper with a known max_opening; give its "
+            "ArmDescription gripper_joints (max_opening is derived at load)"
+        )
+    tool = forward_kinematics(desc, {}, spec.tool_frame)
+    wrist = forward_kinematics(desc, {}, spec.end_effector_link)
+    approach = np.asarray(_unit(-np.asarray((tool.inverse() * wrist).position), (0.0, 0.0, 1.0)))
+    return Hand(
+        (float(approach[0]), float(approach[1]), float(approach[2])),
+        _opening_axis(desc, arm, approach),
+        float(spec.gripper.max_opening),
+    )

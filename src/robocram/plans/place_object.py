@@ -1,0 +1,158 @@
+"""Put a held object down: over the target keeping the grasp, lower, open, retreat, check.
+
+The target is where the object goes on a surface: its x, y and the surface height z (the
+object's bottom comes to rest there, its frame turned as the target's). The tool targets
+follow from the grasp the object is held with (the object's pose in the tool frame), so
+any grasp places the same way. If the arm cannot put it down turned as asked, the object
+is turned about the vertical by a quarter, a half and three quarters in turn. After the
+retreat the world is simulated briefly (where the KB has one) and the object must rest
+where it was put.
+"""
+
+from __future__ import annotations
+
+import math
+
+from robocram.designators import ObjectDesignator, a
+from robocram.execution import perform
+from robocram.execution.failures import ManipulationLowLevelFailure
+from robocram.logic import UnknownPredicateError, current_kb
+from robocram.plans.errors import PlanSetupError
+from robocram.plans.grasp_failures import PlacingFailed
+from robocram.plans.pick_object import GRASPING, Held, object_name, tool_frame
+from robocram.plans.robot_facts import current_robot
+from robocram.tf import Pose, PoseStamped, transform_pose
+from robocram.tf import quaternion as quat
+
+PLACE_GAP = 0.005  # [m] the object is let go this far above the surface
+CARRY_HEIGHT = 0.10  # [m] the object comes in this far above where it is put
+RETREAT = 0.10  # [m] the open hand backs off this far towards the wrist
+SETTLE = 0.5  # [s] simulated after letting go
+MAX_SETTLE_DROP = 0.03  # [m] it may sink this much (the gap, contact) and still rest
+TURNS = (0.0, math.pi / 2, -math.pi / 2, math.pi)  # [rad] object turns tried in order
+
+
+def held_object(obj: Held | ObjectDesignator | str, arm: str | None) -> Held:
+    """``obj`` if already a :class:`Held`, else the grasp it is held with now."""
+    if isinstance(obj, Held):
+        return obj
+    robot, name = current_robot(), object_name(obj)
+    kb = current_kb()
+    for answer in kb.query("grasping_arm(R, A), end_effector_link(R, A, L)", R=robot):
+        if arm is not None and answer["A"] != arm:
+            continue
+        if kb.holds("world(W), attached(W, O, R, L)", O=name, R=robot, L=answer["L"]):
+            choice = str(answer["A"])
+            frame = tool_frame(robot, choice)
+            here = transform_pose(PoseStamped(frame), "map")
+            held = transform_pose(PoseStamped(name), frame).pose
+            return Held(choice, "unknown", name, frame, here, here, held)
+    raise PlanSetupError(f"{robot} holds no {name!r}" + (f" in its {arm} hand" if arm else ""))
+
+
+def _shifted(pose: Pose, dx: float, dy: float, dz: float) -> Pose:
+    x, y, z = pose.position
+    return Pose((x + dx, y + dy, z + dz), pose.orientation)
+
+
+def _object_targets(name: str, target: PoseStamped) -> list[Pose]:
+    """Poses of the object's frame (map) resting on the target, one per turn."""
+    spot = transform_pose(target, "map").pose
+    extent = current_kb().first("object_extent(O, L, H)", O=name)
+    bottom = -float(extent["L"][2]) if extent is not None else 0.0
+    base = _shifted(spot, 0.0, 0.0, bottom + PLACE_GAP)
+    turned = []
+    for turn in TURNS:
+        q = quat.multiply(quat.from_euler(0.0, 0.0, turn), base.orientation)
+        turned.append(Pose(base.position, q))
+    return turned
+
+
+def _move(arm: str, pose: Pose, **mode: str) -> None:
+    target = PoseStamped.from_pose("map", pose)
+    perform(a.motion(type="moving-tcp", arm=arm, target=a.location(pose=target), **mode))
+
+
+def _retreat(robot: str, held: Held) -> None:
+    answer = current_kb().first("end_effector_link(R, A, L)", R=robot, A=held.arm)
+    tool = transform_pose(PoseStamped(held.tool_frame), "map").pose
+    if answer is None:
+        _move(held.arm, _shifted(tool, 0.0, 0.0, RETREAT), **GRASPING)
+        return
+    wrist = transform_pose(PoseStamped(str(answer["L"])), "map").pose.position
+    d = [w - t for w, t in zip(wrist, tool.position, strict=True)]
+    norm = math.sqrt(sum(c * c for c in d)) or 1.0
+    back = [RETREAT * c / norm for c in d]
+    _move(held.arm, _shifted(tool, back[0], back[1], back[2]), **GRASPING)
+
+
+def _settled(name: str, put: Pose) -> str | None:
+    """Why the object does not rest where it was put after :data:`SETTLE`, or None."""
+    kb = current_kb()
+    try:
+        if not kb.holds(f"world(W), simulate(W, {SETTLE})"):
+            return None
+    except UnknownPredicateError:
+        return None  # no simulated world to ask (a real robot)
+    now = transform_pose(PoseStamped(name), "map").pose
+    drop = put.position[2] - now.position[2]
+    if drop > MAX_SETTLE_DROP or now.distance_to(put) > MAX_SETTLE_DROP + 0.02:
+        return f"it moved {now.distance_to(put):.3f} m after letting go (fell or slid)"
+    return None
+
+
+def _put_down(robot: str, held: Held, put: Pose) -> None:
+    tool = put * held.object_in_tool.inverse()
+    _move(held.arm, _shifted(tool, 0.0, 0.0, CARRY_HEIGHT), **GRASPING)
+    _move(held.arm, tool, **GRASPING)
+    perform(a.motion(type="opening", gripper=held.arm))
+    try:
+        _retreat(robot, held)
+    except ManipulationLowLevelFailure as failure:  # let go already: no other turn to try
+        raise PlacingFailed(
+            f"{held.object_name!r} was let go but the {held.arm} hand could not back off",
+            object_name=held.object_name,
+            target=put,
+            causes=[failure],
+        ) from failure
+
+
+def place_object(
+    object: Held | ObjectDesignator | str,  # noqa: A002 - CRAM's key
+    target: PoseStamped,
+    arm: str | None = None,
+) -> PoseStamped:
+    """Put the held ``object`` down at ``target``; return where it rests (``map``).
+
+    Raises:
+        PlacingFailed: no turn of the object could be put down there, or it did not rest
+            (``causes`` holds each try's failure).
+        PlanSetupError: the robot does not hold the object.
+    """
+    robot = current_robot()
+    held = held_object(object, arm)
+    causes: list[Exception] = []
+    for put in _object_targets(held.object_name, target):
+        try:
+            _put_down(robot, held, put)
+        except ManipulationLowLevelFailure as failure:
+            causes.append(failure)
+            continue
+        problem = _settled(held.object_name, put)
+        if problem is not None:
+            raise PlacingFailed(
+                f"{held.object_name!r} was let go at {target} but {problem}",
+                object_name=held.object_name,
+                target=target,
+                causes=causes,
+            )
+        return transform_pose(PoseStamped(held.object_name), "map")
+    raise PlacingFailed(
+        f"{robot} could not put {held.object_name!r} down at {target} in any of "
+        f"{len(TURNS)} turns (causes: "
+        + ", ".join(sorted({type(c).__name__ for c in causes}))
+        + ")",
+        object_name=held.object_name,
+        target=target,
+        causes=causes,
+    )
