@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterator, Mapping
 from contextlib import contextmanager
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from types import MappingProxyType
 
 import numpy as np
@@ -19,10 +19,13 @@ from robocram.costmaps.camera_aim import aimed_camera
 from robocram.costmaps.cost_layer import LocationQuery
 from robocram.costmaps.errors import CostmapInputError
 from robocram.costmaps.grasps import GRASP_YAWS, approach_axis, grasp_point, grasp_poses, top_down
+from robocram.costmaps.pick_reach import collides, pick_targets
 from robocram.costmaps.reachability_map import ReachabilityMaps
-from robocram.kinematics import BaseMotion, PlanarBase, base_in_ik, solve_ik
+from robocram.kinematics import BaseMotion, IKResult, PlanarBase, base_in_ik, solve_ik
+from robocram.robots import RobotDescription
 from robocram.tf import Pose, Vector3
 from robocram.world import Camera, RobotObject, World, WorldObject
+from robocram.world.link_contacts import link_contacts
 from robocram.world.visibility import ray_visibility
 
 Validator = Callable[[LocationQuery, Pose], bool]
@@ -31,8 +34,8 @@ VISIBILITY_RAYS = 12  # rays per side of the grid over the object's outline (wor
 SEEN_WITHIN = 0.02  # [m] a ray to a target point stopping this close to it sees it
 STAND_TRAVEL = PlanarBase(0.25, 0.25, math.pi / 4)  # a base-in-IK arm's adjustment at a stand
 IK_RESTARTS = 30  # random restarts per grasp: a miss costs a bounded, counted budget
-STAND_IK_RESTARTS = 3  # per grasp when judging a candidate stand (arms on a fixed base):
-# a reachable grasp converges in the first descents, and a miss at 30 costs ~7 ms a grasp;
+STAND_IK_RESTARTS = 3  # per grasp when judging a candidate stand: a reachable grasp
+# converges in the first descents (kitchen, PR2/HSR/Boxy), a miss at 30 costs ~7 ms a grasp;
 # a stand rejected wrongly only costs the next candidate, a stand accepted is still sound
 
 
@@ -76,9 +79,9 @@ def _robot(query: LocationQuery) -> RobotObject:
 
 def robot_collision_free(query: LocationQuery, pose: Pose) -> bool:
     """Whether the robot standing at ``pose``, arms parked, touches nothing but the floor."""
-    robot = _robot(query)
-    with placed(query.world, robot, pose), parked(query.world, robot):
-        return not query.world.in_collision(robot)
+    robot, world = _robot(query), query.world
+    with placed(world, robot, pose), parked(world, robot):
+        return not link_contacts(world, robot, ignore=world.objects(type="floor"))
 
 
 def object_collision_free(query: LocationQuery, pose: Pose) -> bool:
@@ -208,38 +211,107 @@ def _reach(
     maps: ReachabilityMaps | None,
     restarts: int,
 ) -> Reach | None:
-    """The first IK solution for an arm's tool ``targets`` (base frame) around map ``point``.
-
-    An arm reaching with its base keeps :data:`IK_RESTARTS` at least: its solver needs them.
-    """
+    """The first IK solution for an arm's tool ``targets`` (base frame) around map ``point``."""
     desc = robot.description
-    arms = robot_arms(robot, arm)
-    if maps is not None:
-        in_base = base.inverse().transform_point(point)
-        scores = {a: maps.get(desc, a).score_at(in_base) for a in arms}
-        arms = sorted((a for a in arms if scores[a] > 0), key=lambda a: -scores[a])
     seed = world.joint_states(robot)
-    use_torso = desc.torso_joint is not None
-    for name in arms:
-        travel = STAND_TRAVEL if base_in_ik(desc, name) else None
+    for name in _hopeful_arms(robot, point, base, arm, maps):
         for target in targets(name):
-            result = solve_ik(
-                desc,
-                name,
-                target,
-                seed=seed,
-                use_torso=use_torso,
-                max_restarts=restarts if travel is None else max(restarts, IK_RESTARTS),
-                base=travel,
-            )
+            result = _solve(desc, name, target, seed, restarts)
             if result.success:
                 return Reach(name, dict(result.joint_positions), target, result.base_motion)
     return None
 
 
+def _hopeful_arms(
+    robot: RobotObject, point: Vector3, base: Pose, arm: str | None, maps: ReachabilityMaps | None
+) -> list[str]:
+    """The arms to try for map ``point``: best first by the maps, hopeless ones dropped."""
+    arms = robot_arms(robot, arm)
+    if maps is None:
+        return arms
+    in_base = base.inverse().transform_point(point)
+    scores = {a: maps.get(robot.description, a).score_at(in_base) for a in arms}
+    return sorted((a for a in arms if scores[a] > 0), key=lambda a: -scores[a])
+
+
+def _solve(
+    desc: RobotDescription, arm: str, target: Pose, seed: Mapping[str, float], restarts: int
+) -> IKResult:
+    """IK for ``arm``'s tool at ``target`` (base frame), torso free; an arm that reaches with
+    the base may move it within :data:`STAND_TRAVEL`."""
+    return solve_ik(
+        desc,
+        arm,
+        target,
+        seed=seed,
+        use_torso=desc.torso_joint is not None,
+        max_restarts=restarts,
+        base=STAND_TRAVEL if base_in_ik(desc, arm) else None,
+    )
+
+
+def reach_to_pick(
+    world: World,
+    robot: RobotObject,
+    obj: WorldObject,
+    base: Pose,
+    arm: str | None = None,
+    maps: ReachabilityMaps | None = None,
+    restarts: int = IK_RESTARTS,
+) -> Reach | None:
+    """The first grasp the pick plan will try that works from ``base``, or None.
+
+    The grasps are the grasp model's (``pick_reach.pick_targets``), in the pick's order;
+    one works if IK reaches its grasp and its pre-grasp, nothing but the floor touches the
+    robot at the pre-grasp, and only the hand touches at the grasp.
+    """
+    desc = robot.description
+    seed = world.joint_states(robot)
+    for name in _hopeful_arms(robot, grasp_point(world, obj), base, arm, maps):
+        for target in pick_targets(world, robot, obj, name, base):
+            grasp = _solve(desc, name, target.grasp_in_base, seed, restarts)
+            if not grasp.success:
+                continue
+            pre = _solve_near(desc, name, target.pre_grasp_in_base, grasp, seed, restarts)
+            if not pre.success or collides(
+                world, robot, name, _moved(base, pre.base_motion), pre.joint_positions
+            ):
+                continue
+            at = _moved(base, grasp.base_motion)
+            if not collides(world, robot, name, at, grasp.joint_positions, obj):
+                joints = dict(grasp.joint_positions)
+                return Reach(name, joints, target.grasp_in_base, grasp.base_motion)
+    return None
+
+
+def _solve_near(
+    desc: RobotDescription,
+    arm: str,
+    target: Pose,
+    near: IKResult,
+    seed: Mapping[str, float],
+    restarts: int,
+) -> IKResult:
+    """IK for ``target`` (base frame) starting from the solution ``near``: first the arm alone
+    from where ``near`` put the base (a pre-grasp is a short way off), then with the base."""
+    start = {**seed, **near.joint_positions}
+    motion = near.base_motion
+    here = target if motion is None else motion.pose().inverse() * target
+    still = solve_ik(
+        desc, arm, here, seed=start, use_torso=desc.torso_joint is not None, max_restarts=restarts
+    )
+    if still.success:
+        return replace(still, base_motion=motion)
+    return _solve(desc, arm, target, start, restarts) if motion is not None else still
+
+
+def _moved(base: Pose, motion: BaseMotion | None) -> Pose:
+    return base if motion is None else base * motion.pose()
+
+
 def reachable(query: LocationQuery, pose: Pose) -> bool:
-    """Whether the robot at ``pose`` reaches the object (a grasp of it) or the ``target``
-    (the tool over it from above) with IK, torso free."""
+    """Whether the robot at ``pose`` can pick the object up (:func:`reach_to_pick`) or
+    reaches the ``target`` (the tool over it from above), with IK, torso free."""
     robot = _robot(query)
     arm = query.designator.get("arm")
     wanted = query.designator.get("object")
@@ -248,7 +320,7 @@ def reachable(query: LocationQuery, pose: Pose) -> bool:
         maps, budget = query.reach_maps, STAND_IK_RESTARTS
         return reach_point(query.world, robot, point, pose, arm, maps, budget) is not None
     obj = query.object(wanted, "object")
-    found = reach_object(query.world, robot, obj, pose, arm, query.reach_maps, STAND_IK_RESTARTS)
+    found = reach_to_pick(query.world, robot, obj, pose, arm, query.reach_maps, STAND_IK_RESTARTS)
     return found is not None
 
 
