@@ -9,9 +9,9 @@ import pytest
 
 from robocram.designators import desig_equal
 from robocram.execution import top_level
+from robocram.grasping.grasp_model import LIFT
 from robocram.logic import KnowledgeBase, using_kb
 from robocram.plans import PlanSetupError, pick_up
-from robocram.grasping.grasp_model import LIFT
 from robocram.projection import recorded_robot, simulated_robot
 from robocram.scenes import tabletop_scene
 from robocram.tf import Pose, PoseStamped
