@@ -34,13 +34,13 @@ class Piece:
     part (``radius`` [m] about the z axis for a cylinder, about the origin for a sphere).
 
     ``kind`` is ``"planes"``, ``"sphere"`` or ``"cylinder"`` (planes then hold the caps).
-    ``bound`` [m] is the radius of a sphere about the frame's origin holding the piece.
+    ``box`` [m] holds the piece: its lower and upper corner (2 x 3) in the piece's frame.
     """
 
     kind: str
     planes: FloatArray
     radius: float
-    bound: float
+    box: FloatArray
 
     def entry(self, origins: FloatArray, dirs: FloatArray) -> FloatArray:
         """Distance along each ray (unit ``dirs``, piece frame) where it enters; inf if never."""
@@ -88,15 +88,26 @@ class LoneBody:
             m = pose.matrix()
             rot, centre = m[:3, :3], m[:3, 3]
             rel = origins - centre
-            ahead = -np.einsum("ij,ij->i", rel, dirs)  # ray distance closest to the centre
-            miss = np.einsum("ij,ij->i", rel, rel) - ahead**2 > piece.bound**2
-            near = np.flatnonzero(~miss & (ahead + piece.bound >= 0))
+            local_origins, local_dirs = rel @ rot, dirs @ rot
+            near = np.flatnonzero(_box_hits(piece.box, local_origins, local_dirs, length))
             if len(near) == 0:
                 continue
-            t = piece.entry(rel[near] @ rot, dirs[near] @ rot)
+            t = piece.entry(local_origins[near], local_dirs[near])
             best[near] = np.minimum(best[near], t)
         best[best > length] = np.inf
         return best
+
+
+def _box_hits(
+    box: FloatArray, origins: FloatArray, dirs: FloatArray, length: FloatArray
+) -> NDArray[np.bool_]:
+    """Which rays pass through the axis-aligned ``box`` within their ``length`` (slabs)."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        inverse = 1.0 / dirs
+        low, high = (box[0] - origins) * inverse, (box[1] - origins) * inverse
+    enter = np.nanmax(np.minimum(low, high), axis=1)
+    leave = np.nanmin(np.maximum(low, high), axis=1)
+    return np.asarray((enter <= leave) & (leave >= 0) & (enter <= length))
 
 
 def lone_body(world: WorldCore, obj: WorldObject) -> LoneBody | None:
@@ -132,7 +143,8 @@ def _pieces(geometry: int, size: tuple[float, ...], filename: bytes) -> tuple[Pi
     if geometry == pybullet.GEOM_BOX:
         return (_box(np.asarray(size[:3], dtype=float) / 2),)
     if geometry == pybullet.GEOM_SPHERE:
-        return (Piece("sphere", np.zeros((0, 4)), size[0], size[0]),)
+        r = size[0]
+        return (Piece("sphere", np.zeros((0, 4)), r, np.array([[-r, -r, -r], [r, r, r]])),)
     if geometry == pybullet.GEOM_CYLINDER:
         return (_cylinder(size[1], size[0] / 2),)
     if geometry == pybullet.GEOM_MESH and filename.lower().endswith(b".obj"):
@@ -143,12 +155,14 @@ def _pieces(geometry: int, size: tuple[float, ...], filename: bytes) -> tuple[Pi
 def _box(half: FloatArray) -> Piece:
     normals = np.vstack([np.eye(3), -np.eye(3)])
     planes = np.column_stack([normals, np.concatenate([half, half])])
-    return Piece("planes", planes, 0.0, float(np.linalg.norm(half)))
+    return Piece("planes", planes, 0.0, np.array([-half, half]))
 
 
 def _cylinder(radius: float, half: float) -> Piece:
     caps = np.array([[0.0, 0.0, 1.0, half], [0.0, 0.0, -1.0, half]])
-    return Piece("cylinder", caps, radius, float(np.hypot(radius, half)))
+    return Piece(
+        "cylinder", caps, radius, np.array([[-radius, -radius, -half], [radius, radius, half]])
+    )
 
 
 @functools.lru_cache(maxsize=64)
@@ -199,8 +213,8 @@ def _hull(points: FloatArray) -> Piece:
         faces.extend((a, b, index) for a, b in horizon)
     planes = np.unique(np.round(_face_planes(points, faces), 6), axis=0)  # coplanar: once
     planes[:, 3] += HULL_MARGIN
-    bound = float(np.linalg.norm(points, axis=1).max()) + HULL_MARGIN
-    return Piece("planes", planes, 0.0, bound)
+    box = np.array([points.min(axis=0) - HULL_MARGIN, points.max(axis=0) + HULL_MARGIN])
+    return Piece("planes", planes, 0.0, box)
 
 
 def _tetrahedron(points: FloatArray) -> list[tuple[int, int, int]]:
