@@ -12,6 +12,7 @@ from collections.abc import Callable, Iterator, Mapping
 from contextlib import contextmanager
 from dataclasses import dataclass, replace
 from types import MappingProxyType
+from typing import Any
 
 import numpy as np
 
@@ -34,7 +35,7 @@ VISIBILITY_RAYS = 12  # rays per side of the grid over the object's outline (wor
 SEEN_WITHIN = 0.02  # [m] a ray to a target point stopping this close to it sees it
 STAND_TRAVEL = PlanarBase(0.25, 0.25, math.pi / 4)  # a base-in-IK arm's adjustment at a stand
 IK_RESTARTS = 30  # random restarts per grasp: a miss costs a bounded, counted budget
-STAND_IK_RESTARTS = 3  # per grasp when judging a candidate stand: a reachable grasp
+STAND_IK_RESTARTS = 2  # per grasp when judging a candidate stand: a reachable grasp
 # converges in the first descents (kitchen, PR2/HSR/Boxy), a miss at 30 costs ~7 ms a grasp;
 # a stand rejected wrongly only costs the next candidate, a stand accepted is still sound
 
@@ -258,6 +259,7 @@ def reach_to_pick(
     arm: str | None = None,
     maps: ReachabilityMaps | None = None,
     restarts: int = IK_RESTARTS,
+    memo: dict[Any, Any] | None = None,
 ) -> Reach | None:
     """The first grasp the pick plan will try that works from ``base``, or None.
 
@@ -268,17 +270,18 @@ def reach_to_pick(
     desc = robot.description
     seed = world.joint_states(robot)
     for name in _hopeful_arms(robot, grasp_point(world, obj), base, arm, maps):
-        for target in pick_targets(world, robot, obj, name, base):
-            grasp = _solve(desc, name, target.grasp_in_base, seed, restarts)
+        for target in pick_targets(world, robot, obj, name, base, memo):
+            pre = _solve(desc, name, target.pre_grasp_in_base, seed, restarts)  # as the pick:
+            if not pre.success:  # the pre-grasp first, then in to the grasp
+                continue
+            grasp = _solve_near(desc, name, target.grasp_in_base, pre, seed, restarts)
             if not grasp.success:
                 continue
-            pre = _solve_near(desc, name, target.pre_grasp_in_base, grasp, seed, restarts)
-            if not pre.success or collides(
-                world, robot, name, _moved(base, pre.base_motion), pre.joint_positions
-            ):
-                continue
             at = _moved(base, grasp.base_motion)
-            if not collides(world, robot, name, at, grasp.joint_positions, obj):
+            if collides(world, robot, name, at, grasp.joint_positions, obj):
+                continue
+            at = _moved(base, pre.base_motion)
+            if not collides(world, robot, name, at, pre.joint_positions):
                 joints = dict(grasp.joint_positions)
                 return Reach(name, joints, target.grasp_in_base, grasp.base_motion)
     return None
@@ -293,7 +296,8 @@ def _solve_near(
     restarts: int,
 ) -> IKResult:
     """IK for ``target`` (base frame) starting from the solution ``near``: first the arm alone
-    from where ``near`` put the base (a pre-grasp is a short way off), then with the base."""
+    from where ``near`` put the base (a grasp is a short way from its pre-grasp), then with
+    the base."""
     start = {**seed, **near.joint_positions}
     motion = near.base_motion
     here = target if motion is None else motion.pose().inverse() * target
@@ -319,8 +323,11 @@ def reachable(query: LocationQuery, pose: Pose) -> bool:
         point = query.point(query.designator.get("target"), "target")
         maps, budget = query.reach_maps, STAND_IK_RESTARTS
         return reach_point(query.world, robot, point, pose, arm, maps, budget) is not None
-    obj = query.object(wanted, "object")
-    found = reach_to_pick(query.world, robot, obj, pose, arm, query.reach_maps, STAND_IK_RESTARTS)
+    obj, world = query.object(wanted, "object"), query.world
+    with placed(world, robot, pose):  # standing there: the pick's checks move only the arm
+        found = reach_to_pick(
+            world, robot, obj, pose, arm, query.reach_maps, STAND_IK_RESTARTS, query.memo
+        )
     return found is not None
 
 
