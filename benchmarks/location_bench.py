@@ -13,7 +13,7 @@ Goal (issue 15): each first solution <= 20 ms on the PR2, next solutions cheaper
 PR2 transport (two location resolutions included) <= 115 ms. PyCRAM 1.0.4 takes 208 ms
 (reachable) and 438 ms (visible) per location.
 
-Usage: ``python benchmarks/location_bench.py [runs=7] [robots...]``
+Usage: ``python benchmarks/location_bench.py [runs=15] [robots...]``
 """
 
 from __future__ import annotations
@@ -153,7 +153,7 @@ def bench_robot(robot: str, runs: int, sampling: Sampling) -> None:
 
 def main() -> None:
     """Print the figures."""
-    runs = int(sys.argv[1]) if len(sys.argv) > 1 else 7
+    runs = int(sys.argv[1]) if len(sys.argv) > 1 else 15
     robots = tuple(sys.argv[2:]) or ROBOTS
     print(f"location_bench: kitchen, median of {runs} seeds, CPU time of this process")
     for robot in robots:
