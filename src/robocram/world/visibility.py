@@ -98,9 +98,7 @@ def _tangent_grid(
 
 def _first_hits(world: WorldCore, camera: Camera, tangents: NDArray[np.float64]) -> list[int]:
     starts, ends = camera.ray_ends(tangents)
-    hits = pybullet.rayTestBatch(
-        starts.tolist(), ends.tolist(), physicsClientId=world.physics_client()
-    )
+    hits = pybullet.rayTestBatch(starts, ends, physicsClientId=world.physics_client())
     return [int(h[0]) for h in hits]
 
 
