@@ -2,19 +2,21 @@
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator
 
 import pytest
 
 from robocram.costmaps import CostmapLocations, reach_object
-from robocram.costmaps.validators import STAND_IK_RESTARTS, parked, reach_to_pick
+from robocram.costmaps.stand_reach import reach_to_pick
+from robocram.costmaps.validators import STAND_IK_RESTARTS, parked
 from robocram.designators import a, an
 from robocram.execution import perform
-from robocram.plans import install_actions, pick_up_object
+from robocram.plans import install_actions, pick_up_object, place_object
 from robocram.projection import simulated_robot
 from robocram.scenes import KitchenScene, kitchen_scene
-from robocram.tf import Pose
-from robocram.world import RobotObject
+from robocram.tf import Pose, PoseStamped
+from robocram.world import RobotObject, World
 from robocram.world.link_contacts import link_contacts
 
 
@@ -77,3 +79,36 @@ def test_broadphase_contacts_agree_with_closest_points(scene: KitchenScene) -> N
 
 def world_robot(scene: KitchenScene) -> RobotObject:
     return scene.world.robot(scene.robot)
+
+
+def test_the_place_works_from_the_stands_given(scene: KitchenScene) -> None:
+    world, robot = scene.world, scene.robot
+    with world.stored_state(), simulated_robot(world, robot):
+        spot = _near_the_edge(world)
+        lift = world.pose("mug-1").position[2] - world.aabb("mug-1")[0][2]
+        stand = a.location(reachable_for=robot, object="mug-1").reference()
+        perform(an.action(type="parking-arms"))
+        perform(an.action(type="navigating", target=stand))
+        held = pick_up_object("mug-1")
+        for seed in range(2):
+            with world.stored_state():
+                locations = CostmapLocations(world, seed=seed)
+                there = next(locations.poses(a.location(reachable_for=robot, target=spot.position)))
+                perform(an.action(type="navigating", target=there))
+                put = place_object(held, PoseStamped.from_pose("map", _surface(spot, lift)))
+                assert math.dist(put.pose.position[:2], spot.position[:2]) < 0.03  # [m]
+                table_top = world.link_aabb("kitchen", "table_top")[1][2]
+                assert world.aabb("mug-1")[0][2] == pytest.approx(table_top, abs=0.01)
+
+
+def _surface(spot: Pose, lift: float) -> Pose:
+    """The place plan's target: the table top under the mug's frame (``lift`` [m] above)."""
+    x, y, z = spot.position
+    return Pose((x, y, z - lift - 0.002), spot.orientation)
+
+
+def _near_the_edge(world: World) -> Pose:
+    """A place for the mug on the table near its north edge, where robots stand."""
+    edge = world.link_aabb("kitchen", "table_top")[1][1]
+    places = CostmapLocations(world).poses(a.location(on=("kitchen", "table_top"), for_="mug-1"))
+    return next(p for p in places if p.position[1] > edge - 0.2)

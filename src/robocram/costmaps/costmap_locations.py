@@ -20,7 +20,7 @@ from typing import Any, Literal, TypeVar
 import numpy as np
 
 from robocram.costmaps.cost_layer import CellRefiner, CostFunction, CostLayer, LocationQuery
-from robocram.costmaps.cost_registry import BUILTIN_COST_FUNCTIONS
+from robocram.costmaps.cost_registry import BUILTIN_COST_FUNCTIONS, BUILTIN_VALIDATORS
 from robocram.costmaps.costmap import Costmap
 from robocram.costmaps.costmap_observers import notify_costmap
 from robocram.costmaps.errors import CostmapInputError, LocationNotFound
@@ -28,7 +28,7 @@ from robocram.costmaps.grid import CostmapGrid
 from robocram.costmaps.location_keys import LocationPlan, install_location_keys, plan_location
 from robocram.costmaps.reach_reasoning import install_reach_predicates
 from robocram.costmaps.reachability_map import ReachabilityMaps
-from robocram.costmaps.validators import BUILTIN_VALIDATORS, Validator, parked
+from robocram.costmaps.validators import Validator, parked
 from robocram.designators import LocationResolver
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat

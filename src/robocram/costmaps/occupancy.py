@@ -4,13 +4,17 @@ The footprint radius comes from the robot itself: the links fixed to its root li
 mobile base) as loaded from its URDF, measured in the world. Every other object whose
 bounds reach into the robot's height band blocks the cells within that radius of it.
 Articulated objects (a kitchen) block link by link, so a counter does not block the room;
-a part wider than :data:`LARGE_PART` (the walls around it) is probed instead, one ray
-down each cell.
+a part wider than :data:`LARGE_PART` both ways (all of a room's walls in one link, whose
+bounds would cover the room) is probed instead, one ray down each cell. A long, thin part
+(one wall, a counter top) blocks by its bounds: a probe ray starting inside a wall taller
+than the robot would not see it.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
+from contextlib import contextmanager
 from typing import Any
 
 import numpy as np
@@ -19,12 +23,12 @@ from robocram.costmaps.cost_layer import CostLayer, LocationQuery
 from robocram.costmaps.errors import CostmapInputError
 from robocram.costmaps.grid import BoolGrid, FloatGrid, dilate, erode
 from robocram.costmaps.out_of_the_way import out_of_the_way
-from robocram.tf import Vector3
+from robocram.tf import Pose, Vector3
 from robocram.world import RobotObject, World
 from robocram.world.ray_hit import first_hit_bodies
 
 FLOOR_CLEARANCE = 0.02  # [m] bounds lower than this are the floor, not obstacles
-LARGE_PART = 1.5  # [m] parts wider than this (walls around a room) are probed by rays
+LARGE_PART = 1.5  # [m] parts wider than this both ways (a room's walls) are probed by rays
 
 Box = tuple[Vector3, Vector3]
 
@@ -43,19 +47,38 @@ def base_links(robot: RobotObject) -> list[str]:
 
 
 def footprint_radius(world: World, robot: RobotObject) -> float:
-    """Radius [m] around the base origin that holds the base links' x-y extents."""
+    """Radius [m] around the base origin that holds the base links' x-y extents.
+
+    Measured with the base turned to the map's axes for a moment (bounds are axis-aligned:
+    a base turned by 45 degrees would seem 1.4 times as wide), then put back exactly.
+    """
     base = world.pose(robot)
-    inverse = base.inverse().matrix()
+    upright = Pose(base.position)
     radius = 0.0
-    for link in base_links(robot):
-        low, high = world.link_aabb(robot, link)
-        if high[2] - low[2] <= 0 or high[0] - low[0] > 5:  # frames without geometry
-            continue
-        for x in (low[0], high[0]):
-            for y in (low[1], high[1]):
-                local = inverse[:2, :2] @ np.array([x, y]) + inverse[:2, 3]
-                radius = max(radius, float(math.hypot(local[0], local[1])))
+    with placed_for_a_moment(world, robot, upright):
+        for link in base_links(robot):
+            low, high = world.link_aabb(robot, link)
+            if high[2] - low[2] <= 0 or high[0] - low[0] > 5:  # frames without geometry
+                continue
+            for x in (low[0], high[0]):
+                for y in (low[1], high[1]):
+                    dx, dy = x - upright.position[0], y - upright.position[1]
+                    radius = max(radius, float(math.hypot(dx, dy)))
     return radius
+
+
+@contextmanager
+def placed_for_a_moment(world: World, robot: RobotObject, pose: Pose) -> Iterator[None]:
+    """``robot`` (and what it carries) at ``pose`` for the block; back where it was after."""
+    before = world.pose(robot)
+    if before == pose:
+        yield
+        return
+    world.set_pose(robot, pose)
+    try:
+        yield
+    finally:
+        world.set_pose(robot, before)
 
 
 def robot_height(world: World, robot: RobotObject) -> float:
@@ -78,7 +101,7 @@ def obstacle_boxes(world: World, robot: RobotObject | None, top: float) -> tuple
         for low, high in parts or [world.aabb(obj)]:
             if not (high[2] > FLOOR_CLEARANCE and low[2] < top):
                 continue
-            if max(high[0] - low[0], high[1] - low[1]) > LARGE_PART:
+            if min(high[0] - low[0], high[1] - low[1]) > LARGE_PART:
                 large = True
             else:
                 boxes.append((low, high))

@@ -10,9 +10,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterator, Mapping
 from contextlib import contextmanager
-from dataclasses import dataclass, replace
-from types import MappingProxyType
-from typing import Any
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -20,7 +18,6 @@ from robocram.costmaps.camera_aim import aimed_camera
 from robocram.costmaps.cost_layer import LocationQuery
 from robocram.costmaps.errors import CostmapInputError
 from robocram.costmaps.grasps import GRASP_YAWS, approach_axis, grasp_point, grasp_poses, top_down
-from robocram.costmaps.pick_reach import collides, pick_targets
 from robocram.costmaps.reachability_map import ReachabilityMaps
 from robocram.kinematics import BaseMotion, IKResult, PlanarBase, base_in_ik, solve_ik
 from robocram.robots import RobotDescription
@@ -72,7 +69,7 @@ def parked(world: World, robot: RobotObject) -> Iterator[None]:
         world.set_joint_states(robot, {j: before[j] for j in parking})
 
 
-def _robot(query: LocationQuery) -> RobotObject:
+def query_robot(query: LocationQuery) -> RobotObject:
     if query.robot is None:
         raise CostmapInputError(f"{query.designator.description} names no robot", None)
     return query.robot
@@ -80,7 +77,7 @@ def _robot(query: LocationQuery) -> RobotObject:
 
 def robot_collision_free(query: LocationQuery, pose: Pose) -> bool:
     """Whether the robot standing at ``pose``, arms parked, touches nothing but the floor."""
-    robot, world = _robot(query), query.world
+    robot, world = query_robot(query), query.world
     with placed(world, robot, pose), parked(world, robot):
         return not link_contacts(world, robot, ignore=world.objects(type="floor"))
 
@@ -96,7 +93,7 @@ def object_collision_free(query: LocationQuery, pose: Pose) -> bool:
 
 def visible(query: LocationQuery, pose: Pose) -> bool:
     """Whether the robot at ``pose``, arms parked, camera aimed at the target, sees 90 % of it."""
-    robot, world = _robot(query), query.world
+    robot, world = query_robot(query), query.world
     target = query.designator.get("object")
     with placed(world, robot, pose), parked(world, robot):
         if target is None:
@@ -215,15 +212,15 @@ def _reach(
     """The first IK solution for an arm's tool ``targets`` (base frame) around map ``point``."""
     desc = robot.description
     seed = world.joint_states(robot)
-    for name in _hopeful_arms(robot, point, base, arm, maps):
+    for name in hopeful_arms(robot, point, base, arm, maps):
         for target in targets(name):
-            result = _solve(desc, name, target, seed, restarts)
+            result = solve_at_stand(desc, name, target, seed, restarts)
             if result.success:
                 return Reach(name, dict(result.joint_positions), target, result.base_motion)
     return None
 
 
-def _hopeful_arms(
+def hopeful_arms(
     robot: RobotObject, point: Vector3, base: Pose, arm: str | None, maps: ReachabilityMaps | None
 ) -> list[str]:
     """The arms to try for map ``point``: best first by the maps, hopeless ones dropped."""
@@ -235,7 +232,7 @@ def _hopeful_arms(
     return sorted((a for a in arms if scores[a] > 0), key=lambda a: -scores[a])
 
 
-def _solve(
+def solve_at_stand(
     desc: RobotDescription, arm: str, target: Pose, seed: Mapping[str, float], restarts: int
 ) -> IKResult:
     """IK for ``arm``'s tool at ``target`` (base frame), torso free; an arm that reaches with
@@ -249,93 +246,3 @@ def _solve(
         max_restarts=restarts,
         base=STAND_TRAVEL if base_in_ik(desc, arm) else None,
     )
-
-
-def reach_to_pick(
-    world: World,
-    robot: RobotObject,
-    obj: WorldObject,
-    base: Pose,
-    arm: str | None = None,
-    maps: ReachabilityMaps | None = None,
-    restarts: int = IK_RESTARTS,
-    memo: dict[Any, Any] | None = None,
-) -> Reach | None:
-    """The first grasp the pick plan will try that works from ``base``, or None.
-
-    The grasps are the grasp model's (``pick_reach.pick_targets``), in the pick's order;
-    one works if IK reaches its grasp and its pre-grasp, nothing but the floor touches the
-    robot at the pre-grasp, and only the hand touches at the grasp.
-    """
-    desc = robot.description
-    seed = world.joint_states(robot)
-    for name in _hopeful_arms(robot, grasp_point(world, obj), base, arm, maps):
-        for target in pick_targets(world, robot, obj, name, base, memo):
-            pre = _solve(desc, name, target.pre_grasp_in_base, seed, restarts)  # as the pick:
-            if not pre.success:  # the pre-grasp first, then in to the grasp
-                continue
-            grasp = _solve_near(desc, name, target.grasp_in_base, pre, seed, restarts)
-            if not grasp.success:
-                continue
-            at = _moved(base, grasp.base_motion)
-            if collides(world, robot, name, at, grasp.joint_positions, obj):
-                continue
-            at = _moved(base, pre.base_motion)
-            if not collides(world, robot, name, at, pre.joint_positions):
-                joints = dict(grasp.joint_positions)
-                return Reach(name, joints, target.grasp_in_base, grasp.base_motion)
-    return None
-
-
-def _solve_near(
-    desc: RobotDescription,
-    arm: str,
-    target: Pose,
-    near: IKResult,
-    seed: Mapping[str, float],
-    restarts: int,
-) -> IKResult:
-    """IK for ``target`` (base frame) starting from the solution ``near``: first the arm alone
-    from where ``near`` put the base (a grasp is a short way from its pre-grasp), then with
-    the base."""
-    start = {**seed, **near.joint_positions}
-    motion = near.base_motion
-    here = target if motion is None else motion.pose().inverse() * target
-    still = solve_ik(
-        desc, arm, here, seed=start, use_torso=desc.torso_joint is not None, max_restarts=restarts
-    )
-    if still.success:
-        return replace(still, base_motion=motion)
-    return _solve(desc, arm, target, start, restarts) if motion is not None else still
-
-
-def _moved(base: Pose, motion: BaseMotion | None) -> Pose:
-    return base if motion is None else base * motion.pose()
-
-
-def reachable(query: LocationQuery, pose: Pose) -> bool:
-    """Whether the robot at ``pose`` can pick the object up (:func:`reach_to_pick`) or
-    reaches the ``target`` (the tool over it from above), with IK, torso free."""
-    robot = _robot(query)
-    arm = query.designator.get("arm")
-    wanted = query.designator.get("object")
-    if wanted is None and query.designator.get("target") is not None:
-        point = query.point(query.designator.get("target"), "target")
-        maps, budget = query.reach_maps, STAND_IK_RESTARTS
-        return reach_point(query.world, robot, point, pose, arm, maps, budget) is not None
-    obj, world = query.object(wanted, "object"), query.world
-    with placed(world, robot, pose):  # standing there: the pick's checks move only the arm
-        found = reach_to_pick(
-            world, robot, obj, pose, arm, query.reach_maps, STAND_IK_RESTARTS, query.memo
-        )
-    return found is not None
-
-
-BUILTIN_VALIDATORS: Mapping[str, Validator] = MappingProxyType(
-    {
-        "object_collision_free": object_collision_free,
-        "reachable": reachable,
-        "robot_collision_free": robot_collision_free,
-        "visible": visible,
-    }
-)

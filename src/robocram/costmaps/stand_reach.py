@@ -1,0 +1,154 @@
+"""The ``reachable`` validator: a stand is taken if the task there will work from it.
+
+To pick an object up, the pick plan's grasps must work (:func:`reach_to_pick`); to put
+what the robot holds down at a target, the place plan's tool poses must
+(:func:`reach_to_place`); a robot with empty hands reaching a target point only needs
+the tool over it from above (``validators.reach_point``).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import replace
+from typing import Any
+
+from robocram.costmaps.cost_layer import LocationQuery
+from robocram.costmaps.grasps import grasp_point
+from robocram.costmaps.pick_reach import collides, pick_targets
+from robocram.costmaps.place_reach import held_objects, place_targets
+from robocram.costmaps.reachability_map import ReachabilityMaps
+from robocram.costmaps.validators import (
+    IK_RESTARTS,
+    STAND_IK_RESTARTS,
+    Reach,
+    hopeful_arms,
+    placed,
+    query_robot,
+    reach_point,
+    solve_at_stand,
+)
+from robocram.kinematics import BaseMotion, IKResult, solve_ik
+from robocram.robots import RobotDescription
+from robocram.tf import Pose, PoseStamped, Vector3
+from robocram.world import RobotObject, World, WorldObject
+
+
+def reach_to_pick(
+    world: World,
+    robot: RobotObject,
+    obj: WorldObject,
+    base: Pose,
+    arm: str | None = None,
+    maps: ReachabilityMaps | None = None,
+    restarts: int = IK_RESTARTS,
+    memo: dict[Any, Any] | None = None,
+) -> Reach | None:
+    """The first grasp the pick plan will try that works from ``base``, or None.
+
+    The grasps are the grasp model's (``pick_reach.pick_targets``), in the pick's order;
+    one works if IK reaches its grasp and its pre-grasp, nothing but the floor touches the
+    robot at the pre-grasp, and only the hand touches at the grasp.
+    """
+    desc = robot.description
+    seed = world.joint_states(robot)
+    for name in hopeful_arms(robot, grasp_point(world, obj), base, arm, maps):
+        for target in pick_targets(world, robot, obj, name, base, memo):
+            pre = solve_at_stand(
+                desc, name, target.pre_grasp_in_base, seed, restarts
+            )  # as the pick:
+            if not pre.success:  # the pre-grasp first, then in to the grasp
+                continue
+            grasp = _solve_near(desc, name, target.grasp_in_base, pre, seed, restarts)
+            if not grasp.success:
+                continue
+            at = _moved(base, grasp.base_motion)
+            if collides(world, robot, name, at, grasp.joint_positions, obj):
+                continue
+            at = _moved(base, pre.base_motion)
+            if not collides(world, robot, name, at, pre.joint_positions):
+                joints = dict(grasp.joint_positions)
+                return Reach(name, joints, target.grasp_in_base, grasp.base_motion)
+    return None
+
+
+def _solve_near(
+    desc: RobotDescription,
+    arm: str,
+    target: Pose,
+    near: IKResult,
+    seed: Mapping[str, float],
+    restarts: int,
+) -> IKResult:
+    """IK for ``target`` (base frame) starting from the solution ``near``: first the arm alone
+    from where ``near`` put the base (a grasp is a short way from its pre-grasp), then with
+    the base."""
+    start = {**seed, **near.joint_positions}
+    motion = near.base_motion
+    here = target if motion is None else motion.pose().inverse() * target
+    still = solve_ik(
+        desc, arm, here, seed=start, use_torso=desc.torso_joint is not None, max_restarts=restarts
+    )
+    if still.success:
+        return replace(still, base_motion=motion)
+    return solve_at_stand(desc, arm, target, start, restarts) if motion is not None else still
+
+
+def _moved(base: Pose, motion: BaseMotion | None) -> Pose:
+    return base if motion is None else base * motion.pose()
+
+
+def reach_to_place(
+    world: World,
+    robot: RobotObject,
+    target: Pose,
+    base: Pose,
+    arm: str | None = None,
+    restarts: int = IK_RESTARTS,
+) -> Reach | None:
+    """The first way the place plan will try that works from ``base``, or None.
+
+    ``target`` is where the held object's frame goes (map). One works if IK reaches the
+    tool's pose above the spot and then down at it, and nothing but the hand (and what it
+    holds) touches the robot above the spot. None when the robot holds nothing.
+    """
+    desc = robot.description
+    seed = world.joint_states(robot)
+    for way in place_targets(world, robot, target, base, arm):
+        above = solve_at_stand(desc, way.arm, way.above_in_base, seed, restarts)
+        if not above.success:
+            continue
+        down = _solve_near(desc, way.arm, way.place_in_base, above, seed, restarts)
+        if not down.success:
+            continue
+        if not collides(
+            world, robot, way.arm, _moved(base, above.base_motion), above.joint_positions
+        ):
+            return Reach(way.arm, dict(down.joint_positions), way.place_in_base, down.base_motion)
+    return None
+
+
+def reachable(query: LocationQuery, pose: Pose) -> bool:
+    """Whether the robot at ``pose`` can pick the object up (:func:`reach_to_pick`), put
+    what it holds down at the ``target`` (:func:`reach_to_place`), or, hands empty, reach
+    the ``target`` with the tool from above; IK with the torso free."""
+    robot, world = query_robot(query), query.world
+    arm = query.designator.get("arm")
+    wanted = query.designator.get("object")
+    maps, budget = query.reach_maps, STAND_IK_RESTARTS
+    with placed(world, robot, pose):  # standing there: the checks move only the arm
+        if wanted is not None:
+            obj = query.object(wanted, "object")
+            found = reach_to_pick(world, robot, obj, pose, arm, maps, budget, query.memo)
+            return found is not None
+        value = query.designator.get("target")
+        point = query.point(value, "target")
+        if held_objects(world, robot):
+            return reach_to_place(world, robot, _spot(value, point), pose, arm, budget) is not None
+        return reach_point(world, robot, point, pose, arm, maps, budget) is not None
+
+
+def _spot(value: Any, point: Vector3) -> Pose:
+    """Where the held object's frame goes: the target's pose, or the point unturned."""
+    if isinstance(value, PoseStamped):
+        return Pose(point, value.pose.orientation)
+    return Pose(point, value.orientation) if isinstance(value, Pose) else Pose(point)
