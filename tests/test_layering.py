@@ -47,6 +47,7 @@ ALLOWED: dict[str, set[str]] = {
     },
     "ros": {
         "projection",
+        "grasping",
         "costmaps",
         "scenes",
         "world",

@@ -1,67 +1,68 @@
-"""Grasps from above: the tool's approach axis and the tool poses that grasp an object.
+"""The grasps the reachability costmap checks: the grasp model's, seen from a base pose.
 
-The approach axis runs from the wrist (the arm's end-effector link) to the tool frame;
-a grasp from above points it straight down over the object's centre, turned about the
-vertical (in the robot's base frame) by one of :data:`GRASP_YAWS`.
+The costmap and the plans use one grasp model (``robocram.grasping``, docs/grasping.md):
+the validator tries the same grasps, best first, that ``pick_up_object`` will, so a pose
+it accepts is one the plan can grasp from.
 """
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 from numpy.typing import NDArray
 
+from robocram.grasping import (
+    GraspingError,
+    Hand,
+    ObjectUngraspable,
+    candidates_at,
+    grasp_names,
+    grasps,
+    object_shape,
+)
+from robocram.grasping import (
+    approach_axis as tool_approach_axis,
+)
 from robocram.kinematics import forward_kinematics
 from robocram.robots import RobotDescription, load_description
 from robocram.tf import Pose
-from robocram.tf import quaternion as quat
 from robocram.world import World, WorldObject
 
-GRASP_HEIGHT = 0.05  # [m] over the object's bottom (at most half its height)
-GRASP_YAWS = (0.0, math.pi / 2, math.pi, -math.pi / 2)  # [rad] turns tried in order
+ANY_HAND = Hand(max_opening=float("inf"))  # where a grasp from above closes, whatever the hand
 
 
 def approach_axis(desc: RobotDescription, arm: str) -> NDArray[np.float64]:
     """The unit approach axis of ``arm``'s tool, in the tool frame."""
-    spec = desc.arms[arm]
-    tool = forward_kinematics(desc, {}, spec.tool_frame)
-    wrist = forward_kinematics(desc, {}, spec.end_effector_link)
-    axis = -np.asarray((tool.inverse() * wrist).position, dtype=float)
-    norm = float(np.linalg.norm(axis))
-    return axis / norm if norm > 1e-9 else np.array((0.0, 0.0, 1.0))
-
-
-def top_down(axis_in_tool: NDArray[np.float64], yaw: float) -> quat.Quaternion:
-    """Tool orientation that points ``axis_in_tool`` straight down, turned by ``yaw``."""
-    down = np.array((0.0, 0.0, -1.0))
-    turn = np.cross(axis_in_tool, down)
-    angle = math.atan2(float(np.linalg.norm(turn)), float(axis_in_tool @ down))
-    if np.linalg.norm(turn) < 1e-9:
-        turn = np.array((1.0, 0.0, 0.0))
-    unit = turn / np.linalg.norm(turn)
-    aligned = quat.from_axis_angle((float(unit[0]), float(unit[1]), float(unit[2])), angle)
-    return quat.multiply(quat.from_euler(0.0, 0.0, yaw), aligned)
+    return np.asarray(tool_approach_axis(desc, arm), dtype=float)
 
 
 def grasp_point(world: World, obj: WorldObject) -> tuple[float, float, float]:
-    """Map point [m] a grasp from above closes on: over the centre, near the bottom."""
-    low, high = world.aabb(obj)
-    z = low[2] + min(GRASP_HEIGHT, (high[2] - low[2]) / 2)
-    return ((low[0] + high[0]) / 2, (low[1] + high[1]) / 2, z)
+    """Map point [m] where a grasp from above closes on ``obj`` (the model's top grasp)."""
+    top = grasps(object_shape(world, obj), ANY_HAND, ("top",))[0]
+    x, y, z = (world.pose(obj) * top.tool).position
+    return (x, y, z)
 
 
 def grasp_poses(
     world: World, obj: WorldObject, desc: RobotDescription, arm: str, base: Pose
 ) -> list[Pose]:
-    """Poses in the base frame of ``arm``'s tool grasping ``obj`` from above, one per yaw.
+    """Tool poses in the base frame of ``arm`` grasping ``obj``, best first.
 
-    The yaws turn the hand relative to the base, not the map: a five-joint arm such as
-    the HSR's reaches a grasp from above only in a few headings relative to its base.
+    The grasps and their order are those the pick-up plan tries (the type's
+    ``object_grasps/2``, the hand's width); none when the hand fits no grasp.
     """
-    axis = approach_axis(desc, arm)
-    point = base.inverse().transform_point(grasp_point(world, obj))
-    return [Pose(point, top_down(axis, yaw)) for yaw in GRASP_YAWS]
+    try:
+        found = candidates_at(
+            object_shape(world, obj),
+            world.pose(obj),
+            desc,
+            arm,
+            base,
+            grasp_names(world.kb, obj.type),
+        )
+    except (ObjectUngraspable, GraspingError):
+        return []
+    inverse = base.inverse()
+    return [inverse * c.tool for c in found]
 
 
 def shoulder_offset(desc: RobotDescription, arm: str) -> float:

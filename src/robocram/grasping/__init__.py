@@ -10,7 +10,7 @@ from robocram.grasping.errors import GraspingError, ObjectUngraspable, UnknownGr
 from robocram.grasping.grasp import Grasp
 from robocram.grasping.grasp_model import CLEARANCE, GRASP_NAMES, grasps, tool_orientation
 from robocram.grasping.grasp_predicates import install_grasp_predicates
-from robocram.grasping.hand import Hand, hand_of
+from robocram.grasping.hand import Hand, approach_axis, hand_of
 from robocram.grasping.object_grasps import (
     GraspCandidate,
     candidates_at,
@@ -31,6 +31,7 @@ __all__ = [
     "ObjectShape",
     "ObjectUngraspable",
     "UnknownGraspError",
+    "approach_axis",
     "candidates_at",
     "catalogue_shape",
     "grasp_candidates",

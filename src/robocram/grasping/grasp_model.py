@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator, Sequence
+from functools import lru_cache
 
 import numpy as np
 
@@ -32,7 +33,7 @@ from robocram.tf import Pose, Vector3
 from robocram.tf import quaternion as quat
 
 GRASP_NAMES = ("top", "front", "left", "right", "rim", "handle")
-CLEARANCE = 0.004  # [m] added to an object's width: the hand must open this much wider
+CLEARANCE = 0.002  # [m] added to an object's width: the hand must open this much wider
 GRASP_HEIGHT = 0.05  # [m] a top grasp's tool frame over the object's bottom
 RIM_DEPTH = 0.02  # [m] a rim grasp's tool frame below the rim
 PRE_GRASP = 0.10  # [m] the tool starts this far back along its approach
@@ -42,13 +43,20 @@ DOWN: Vector3 = (0.0, 0.0, -1.0)
 SIDES: tuple[Vector3, ...] = ((1.0, 0.0, 0.0), (-1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, -1.0, 0.0))
 
 
+def _cross(a: Vector3, b: Vector3) -> Vector3:
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+@lru_cache(maxsize=64)
+def _hand_axes(hand: Hand) -> np.ndarray:
+    """The hand's approach, opening and third axis as the columns of a matrix."""
+    return np.column_stack([hand.approach, hand.opening, _cross(hand.approach, hand.opening)])
+
+
 def tool_orientation(hand: Hand, approach: Vector3, opening: Vector3) -> quat.Quaternion:
     """Tool orientation putting the hand's approach and opening axes onto the given ones."""
-    a, o = np.asarray(hand.approach), np.asarray(hand.opening)
-    ga, go = np.asarray(approach, dtype=float), np.asarray(opening, dtype=float)
-    grasp_axes = np.column_stack([ga, go, np.cross(ga, go)])
-    hand_axes = np.column_stack([a, o, np.cross(a, o)])
-    return quat.from_matrix(grasp_axes @ hand_axes.T)
+    grasp_axes = np.column_stack([approach, opening, _cross(approach, opening)])
+    return quat.from_matrix(grasp_axes @ _hand_axes(hand).T)
 
 
 def _grasp(

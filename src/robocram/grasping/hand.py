@@ -55,12 +55,49 @@ def _opening_axis(desc: RobotDescription, arm: str, approach: np.ndarray) -> Axi
     return _unit(spread, (0.0, 1.0, 0.0))
 
 
+def approach_axis(desc: RobotDescription, arm: str) -> Axis:
+    """The unit approach axis of ``arm``'s tool (tool frame): from the wrist to the tool."""
+    spec = desc.arms[arm]
+    tool = forward_kinematics(desc, {}, spec.tool_frame)
+    wrist = forward_kinematics(desc, {}, spec.end_effector_link)
+    return _unit(-np.asarray((tool.inverse() * wrist).position), (0.0, 0.0, 1.0))
+
+
+class HandCache:
+    """The hands of recently asked descriptions, by identity (a description is immutable).
+
+    Each entry holds its description, so an ``id`` is never reused while it is cached.
+    """
+
+    def __init__(self, size: int = 16) -> None:
+        self.size = size
+        self.entries: dict[tuple[int, str], tuple[RobotDescription, Hand]] = {}
+
+    def get(self, desc: RobotDescription, arm: str) -> Hand:
+        """The hand of ``desc``'s ``arm``, read from the kinematics the first time."""
+        entry = self.entries.get((id(desc), arm))
+        if entry is not None and entry[0] is desc:
+            return entry[1]
+        hand = _read_hand(desc, arm)
+        if len(self.entries) >= self.size:
+            self.entries.pop(next(iter(self.entries)))
+        self.entries[(id(desc), arm)] = (desc, hand)
+        return hand
+
+
+HANDS = HandCache()  # a memo of pure results; descriptions are frozen
+
+
 def hand_of(desc: RobotDescription, arm: str) -> Hand:
-    """The hand of ``desc``'s ``arm``.
+    """The hand of ``desc``'s ``arm`` (remembered per description).
 
     Raises:
         GraspingError: the arm has no gripper (nothing to grasp with).
     """
+    return HANDS.get(desc, arm)
+
+
+def _read_hand(desc: RobotDescription, arm: str) -> Hand:
     spec = desc.arms.get(arm)
     if spec is None:
         raise GraspingError(f"{desc.name} has no arm {arm!r}; arms: {sorted(desc.arms)}")
@@ -69,9 +106,7 @@ def hand_of(desc: RobotDescription, arm: str) -> Hand:
             f"arm {arm!r} of {desc.name} has no gripper with a known max_opening; give its "
             "ArmDescription gripper_joints (max_opening is derived at load)"
         )
-    tool = forward_kinematics(desc, {}, spec.tool_frame)
-    wrist = forward_kinematics(desc, {}, spec.end_effector_link)
-    approach = np.asarray(_unit(-np.asarray((tool.inverse() * wrist).position), (0.0, 0.0, 1.0)))
+    approach = np.asarray(approach_axis(desc, arm))
     return Hand(
         (float(approach[0]), float(approach[1]), float(approach[2])),
         _opening_axis(desc, arm, approach),

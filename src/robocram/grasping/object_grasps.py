@@ -18,13 +18,14 @@ from robocram.grasping.grasp import Grasp
 from robocram.grasping.grasp_model import GRASP_NAMES, grasps
 from robocram.grasping.hand import hand_of
 from robocram.grasping.object_shape import ObjectShape, shape_of
-from robocram.logic import KnowledgeBase
+from robocram.logic import KnowledgeBase, UnknownPredicateError
 from robocram.robots import RobotDescription
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
 from robocram.world import RobotObject, World, WorldObject
 
 DEFAULT_FACTS = """
+:- dynamic(object_grasps/2).
 object_wall(bowl, 0.006).
 object_handle(mug, 0.012).
 """
@@ -43,19 +44,22 @@ class GraspCandidate:
 
 
 def install_grasp_facts(kb: KnowledgeBase) -> None:
-    """Add the default per-type grasp facts (hollow bowl, mug handle) to ``kb``."""
-    if not kb.holds("current_predicate(object_wall/2)"):
+    """Add the default per-type grasp facts (hollow bowl, mug handle) to ``kb``, once."""
+    try:
+        kb.holds("object_wall(_, _)")
+    except UnknownPredicateError:
         kb.consult(DEFAULT_FACTS, group=FACTS_GROUP, extendable=EXTENDABLE)
 
 
 def _first_number(kb: KnowledgeBase, predicate: str, kind: str) -> float | None:
-    answer = kb.first(f"current_predicate({predicate}/2), {predicate}(T, V)", T=kind)
+    answer = kb.first(f"{predicate}(T, V)", T=kind)
     return None if answer is None else float(answer["V"])
 
 
 def grasp_names(kb: KnowledgeBase, kind: str) -> tuple[str, ...]:
     """The grasps type ``kind`` allows, in order (``object_grasps/2``, else all)."""
-    answer = kb.first("current_predicate(object_grasps/2), object_grasps(T, N)", T=kind)
+    install_grasp_facts(kb)
+    answer = kb.first("object_grasps(T, N)", T=kind)
     return GRASP_NAMES if answer is None else tuple(str(n) for n in answer["N"])
 
 

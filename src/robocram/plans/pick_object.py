@@ -140,7 +140,7 @@ def _try_grasp(
     _move(arm, choice["P"])
     _move(arm, choice["G"], **GRASPING)
     gripped = perform(a.motion(type="gripping", gripper=arm))
-    if gripped is not None and str(gripped) != name:
+    if isinstance(gripped, str) and gripped != name:  # projection names what it holds
         perform(a.motion(type="opening", gripper=arm))
         raise PickUpFailed(f"the {arm} hand gripped {gripped!r}, not {name!r}", object_name=name)
     _move(arm, choice["L"], **GRASPING)

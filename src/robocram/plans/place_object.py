@@ -1,22 +1,26 @@
 """Put a held object down: over the target keeping the grasp, lower, open, retreat, check.
 
-The target is where the object goes on a surface: its x, y and the surface height z (the
-object's bottom comes to rest there, its frame turned as the target's). The tool targets
+The target is the pose the object's frame is to have, resting on a surface (what an ``on``
+location designator with ``for_`` the object gives; for a mug, whose frame is at its
+bottom, the surface point itself); the object is let go :data:`PLACE_GAP` above it. The tool targets
 follow from the grasp the object is held with (the object's pose in the tool frame), so
-any grasp places the same way. If the arm cannot put it down turned as asked, the object
-is turned about the vertical by a quarter, a half and three quarters in turn. After the
-retreat the world is simulated briefly (where the KB has one) and the object must rest
-where it was put.
+any grasp places the same way. The object comes down from 10 cm above (5 cm, or straight
+to its place, at the edge of the arm's reach). If the arm cannot put it down turned as
+asked, the object is turned about the vertical by a quarter, a half and three quarters in
+turn. Let go, the hand backs off towards the wrist (10 cm, or 5), or else the arm parks.
+Then the world is simulated briefly (where the KB has one) and the object must rest where
+it was put.
 """
 
 from __future__ import annotations
 
 import math
 
-from robocram.designators import ObjectDesignator, a
+from robocram.designators import LocationDesignator, ObjectDesignator, a
 from robocram.execution import perform
 from robocram.execution.failures import ManipulationLowLevelFailure
 from robocram.logic import UnknownPredicateError, current_kb
+from robocram.plans.basic_actions import park_arms
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.grasp_failures import PlacingFailed
 from robocram.plans.pick_object import GRASPING, Held, object_name, tool_frame
@@ -25,9 +29,9 @@ from robocram.tf import Pose, PoseStamped, transform_pose
 from robocram.tf import quaternion as quat
 
 PLACE_GAP = 0.005  # [m] the object is let go this far above the surface
-CARRY_HEIGHT = 0.10  # [m] the object comes in this far above where it is put
-RETREAT = 0.10  # [m] the open hand backs off this far towards the wrist
-SETTLE = 0.5  # [s] simulated after letting go
+CARRY_HEIGHTS = (0.10, 0.05)  # [m] the object comes in from this far above, first that works
+RETREATS = (0.10, 0.05)  # [m] the open hand backs off this far towards the wrist, or less
+SETTLE = 0.15  # [s] simulated after letting go: the 5 mm drop takes 0.03 s
 MAX_SETTLE_DROP = 0.03  # [m] it may sink this much (the gap, contact) and still rest
 TURNS = (0.0, math.pi / 2, -math.pi / 2, math.pi)  # [rad] object turns tried in order
 
@@ -41,7 +45,7 @@ def held_object(obj: Held | ObjectDesignator | str, arm: str | None) -> Held:
     for answer in kb.query("grasping_arm(R, A), end_effector_link(R, A, L)", R=robot):
         if arm is not None and answer["A"] != arm:
             continue
-        if kb.holds("world(W), attached(W, O, R, L)", O=name, R=robot, L=answer["L"]):
+        if kb.holds("world(W), attached(W, R, L, O)", O=name, R=robot, L=answer["L"]):
             choice = str(answer["A"])
             frame = tool_frame(robot, choice)
             here = transform_pose(PoseStamped(frame), "map")
@@ -55,16 +59,19 @@ def _shifted(pose: Pose, dx: float, dy: float, dz: float) -> Pose:
     return Pose((x + dx, y + dy, z + dz), pose.orientation)
 
 
-def _object_targets(name: str, target: PoseStamped) -> list[Pose]:
-    """Poses of the object's frame (map) resting on the target, one per turn."""
-    spot = transform_pose(target, "map").pose
-    extent = current_kb().first("object_extent(O, L, H)", O=name)
-    bottom = -float(extent["L"][2]) if extent is not None else 0.0
-    base = _shifted(spot, 0.0, 0.0, bottom + PLACE_GAP)
+def _object_targets(target: PoseStamped | LocationDesignator) -> list[Pose]:
+    """Poses of the object's frame (map) just above the target, one per turn."""
+    if isinstance(target, LocationDesignator):
+        target = target.reference()
+    if not isinstance(target, PoseStamped):
+        raise PlanSetupError(
+            f"place_object's target is a PoseStamped or a location designator, got {target!r}"
+        )
+    spot = _shifted(transform_pose(target, "map").pose, 0.0, 0.0, PLACE_GAP)
     turned = []
     for turn in TURNS:
-        q = quat.multiply(quat.from_euler(0.0, 0.0, turn), base.orientation)
-        turned.append(Pose(base.position, q))
+        q = quat.multiply(quat.from_euler(0.0, 0.0, turn), spot.orientation)
+        turned.append(Pose(spot.position, q))
     return turned
 
 
@@ -74,16 +81,22 @@ def _move(arm: str, pose: Pose, **mode: str) -> None:
 
 
 def _retreat(robot: str, held: Held) -> None:
+    """Back the open hand off towards the wrist; park the arm if it cannot."""
     answer = current_kb().first("end_effector_link(R, A, L)", R=robot, A=held.arm)
     tool = transform_pose(PoseStamped(held.tool_frame), "map").pose
-    if answer is None:
-        _move(held.arm, _shifted(tool, 0.0, 0.0, RETREAT), **GRASPING)
-        return
-    wrist = transform_pose(PoseStamped(str(answer["L"])), "map").pose.position
-    d = [w - t for w, t in zip(wrist, tool.position, strict=True)]
-    norm = math.sqrt(sum(c * c for c in d)) or 1.0
-    back = [RETREAT * c / norm for c in d]
-    _move(held.arm, _shifted(tool, back[0], back[1], back[2]), **GRASPING)
+    back = (0.0, 0.0, 1.0)
+    if answer is not None:
+        wrist = transform_pose(PoseStamped(str(answer["L"])), "map").pose.position
+        d = [w - t for w, t in zip(wrist, tool.position, strict=True)]
+        norm = math.sqrt(sum(c * c for c in d)) or 1.0
+        back = (d[0] / norm, d[1] / norm, d[2] / norm)
+    for distance in RETREATS:
+        try:
+            _move(held.arm, _shifted(tool, *(distance * c for c in back)), **GRASPING)
+            return
+        except ManipulationLowLevelFailure:
+            continue
+    park_arms(held.arm)
 
 
 def _settled(name: str, put: Pose) -> str | None:
@@ -103,7 +116,12 @@ def _settled(name: str, put: Pose) -> str | None:
 
 def _put_down(robot: str, held: Held, put: Pose) -> None:
     tool = put * held.object_in_tool.inverse()
-    _move(held.arm, _shifted(tool, 0.0, 0.0, CARRY_HEIGHT), **GRASPING)
+    for height in CARRY_HEIGHTS:
+        try:
+            _move(held.arm, _shifted(tool, 0.0, 0.0, height), **GRASPING)
+            break
+        except ManipulationLowLevelFailure:
+            continue  # at the edge of its reach the arm comes in lower
     _move(held.arm, tool, **GRASPING)
     perform(a.motion(type="opening", gripper=held.arm))
     try:
@@ -119,10 +137,13 @@ def _put_down(robot: str, held: Held, put: Pose) -> None:
 
 def place_object(
     object: Held | ObjectDesignator | str,  # noqa: A002 - CRAM's key
-    target: PoseStamped,
+    target: PoseStamped | LocationDesignator,
     arm: str | None = None,
 ) -> PoseStamped:
-    """Put the held ``object`` down at ``target``; return where it rests (``map``).
+    """Put the held ``object`` down with its frame at ``target``; return where it rests.
+
+    ``target`` may be a location designator (its first pose is taken). The returned pose
+    is in ``map``.
 
     Raises:
         PlacingFailed: no turn of the object could be put down there, or it did not rest
@@ -132,7 +153,7 @@ def place_object(
     robot = current_robot()
     held = held_object(object, arm)
     causes: list[Exception] = []
-    for put in _object_targets(held.object_name, target):
+    for put in _object_targets(target):
         try:
             _put_down(robot, held, put)
         except ManipulationLowLevelFailure as failure:

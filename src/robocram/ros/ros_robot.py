@@ -16,6 +16,7 @@ from dataclasses import dataclass
 
 from robocram.designators import install_common_motions
 from robocram.execution import Environment, TaskTree, TopLevel, matching_facts, top_level
+from robocram.grasping import install_grasp_predicates
 from robocram.logic import KnowledgeBase
 from robocram.robots import RobotDescription, install_description, load_description
 from robocram.ros.arm_module import ArmPM
@@ -93,6 +94,7 @@ def ros_environment(
     install_description(kb, desc)
     install_common_motions(kb)
     install_ros_facts(kb, desc.name, ros_facts)
+    install_grasp_predicates(kb, description=desc)  # grasps by the perceived type and pose
     client = RosRobotClient(desc, read_ros_config(kb, desc), uri, node_name)
     return RosEnvironment(client, kb)
 

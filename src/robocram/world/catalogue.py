@@ -1,7 +1,8 @@
-"""Household items by name: pybullet's own mug and simple shapes of our own for the rest.
+"""Household items by name: pybullet's own mug, our hollow bowl and simple shapes.
 
 Sizes [m] and masses [kg] are those of ordinary kitchen things; an item's type is its
-catalogue name.
+catalogue name. The bowl is hollow (``tools/make_bowl_urdf.py``: a bottom disk and a ring
+of wall segments), so a hand can hold it by its rim.
 """
 
 from __future__ import annotations
@@ -16,13 +17,14 @@ from robocram.world.body_spec import BodySpec, ShapeSpec, UrdfSpec
 from robocram.world.errors import UnknownItemError
 
 MUG_URDF = Path(pybullet_data.getDataPath()) / "objects" / "mug.urdf"
+BOWL_URDF = Path(__file__).resolve().parent / "data" / "bowl.urdf"
 
 _ITEMS: Mapping[str, BodySpec] = MappingProxyType(
     {
         "mug": UrdfSpec(MUG_URDF, mass=0.3),
         "pot": ShapeSpec("cylinder", (0.2, 0.2, 0.15), mass=1.2, color=(0.35, 0.35, 0.4, 1)),
         "bottle": ShapeSpec("cylinder", (0.07, 0.07, 0.25), mass=0.6, color=(0.1, 0.6, 0.2, 1)),
-        "bowl": ShapeSpec("cylinder", (0.16, 0.16, 0.06), mass=0.3, color=(0.95, 0.95, 0.9, 1)),
+        "bowl": UrdfSpec(BOWL_URDF, mass=0.3),  # 0.16 m across, 0.06 m high, 6 mm wall
         "plate": ShapeSpec("cylinder", (0.24, 0.24, 0.02), mass=0.4, color=(0.9, 0.9, 1.0, 1)),
         "cup": ShapeSpec("cylinder", (0.08, 0.08, 0.09), mass=0.15, color=(0.2, 0.3, 0.8, 1)),
         "cereal_box": ShapeSpec("box", (0.07, 0.19, 0.28), mass=0.45, color=(0.95, 0.7, 0.1, 1)),

@@ -3,10 +3,10 @@
 Visibility asks where rays would meet an object if nothing else were there. Bullet answers
 that slowly for meshes (a GJK cast per ray and convex part, ~20 us each: the catalogue mug
 has six parts), so the lone test is done here in numpy: each collision piece is a convex
-solid (box, sphere, cylinder, or a convex hull per part of an OBJ mesh, as
-pybullet builds it), placed by the link's pose now, and a ray's entry is the largest
+solid (box, sphere, cylinder, a convex hull per part of an OBJ mesh as pybullet builds
+them, or the hull pybullet makes of a URDF cylinder), placed by the link's pose now, and a ray's entry is the largest
 entering and smallest leaving distance over the piece's faces. Shapes we do not model
-(planes, capsules, height fields, STL or DAE meshes) give None, and callers ask Bullet instead.
+(planes, capsules, height fields, STL or DAE files) give None, and callers ask Bullet instead.
 """
 
 from __future__ import annotations
@@ -120,8 +120,14 @@ def lone_body(world: WorldCore, obj: WorldObject) -> LoneBody | None:
         if not shapes:
             continue
         inertial = _inertial_pose(obj.body_id, link, cid)
-        for shape in shapes:
+        for index, shape in enumerate(shapes):
             pieces = _pieces(shape[2], tuple(shape[3]), shape[4])
+            if pieces is None and shape[2] == pybullet.GEOM_MESH and shape[4] == b"unknown_file":
+                # a URDF cylinder pybullet made a convex mesh of: its vertices, from Bullet
+                data = pybullet.getMeshData(
+                    obj.body_id, link, collisionShapeIndex=index, physicsClientId=cid
+                )
+                pieces = (_vertex_hull(tuple(map(tuple, data[1]))),) if data[0] >= 4 else None
             if pieces is None:
                 return None
             frame = inertial * Pose(tuple(shape[5]), tuple(shape[6]))
@@ -172,6 +178,12 @@ def _mesh_hulls(path: str, scale: tuple[float, float, float]) -> tuple[Piece, ..
     if not groups:
         return None
     return tuple(_hull(points * np.asarray(scale)) for points in groups)
+
+
+@functools.lru_cache(maxsize=256)
+def _vertex_hull(vertices: tuple[tuple[float, ...], ...]) -> Piece:
+    """The convex hull of a mesh pybullet built itself (no file to read)."""
+    return _hull(np.asarray(vertices, dtype=float))
 
 
 def _obj_groups(path: Path) -> list[FloatArray]:
