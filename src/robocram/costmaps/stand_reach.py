@@ -46,17 +46,16 @@ def reach_to_pick(
     """The first grasp the pick plan will try that works from ``base``, or None.
 
     The grasps are the grasp model's (``pick_reach.pick_targets``), in the pick's order;
-    one works if IK reaches its grasp and its pre-grasp, nothing but the floor touches the
-    robot at the pre-grasp, and only the hand touches at the grasp.
+    one works if IK reaches its pre-grasp and then, from there, its grasp (as the pick
+    moves), nothing but the floor touches the robot at the pre-grasp, and only the hand
+    touches at the grasp.
     """
     desc = robot.description
     seed = world.joint_states(robot)
     for name in hopeful_arms(robot, grasp_point(world, obj), base, arm, maps):
         for target in pick_targets(world, robot, obj, name, base, memo):
-            pre = solve_at_stand(
-                desc, name, target.pre_grasp_in_base, seed, restarts
-            )  # as the pick:
-            if not pre.success:  # the pre-grasp first, then in to the grasp
+            pre = solve_at_stand(desc, name, target.pre_grasp_in_base, seed, restarts)
+            if not pre.success:
                 continue
             grasp = _solve_near(desc, name, target.grasp_in_base, pre, seed, restarts)
             if not grasp.success:
