@@ -2,11 +2,12 @@
 
 Visibility asks where rays would meet an object if nothing else were there. Bullet answers
 that slowly for meshes (a GJK cast per ray and convex part, ~20 us each: the catalogue mug
-has six parts), so the lone test is done here in numpy: each collision piece is a convex
-solid (box, sphere, cylinder, a convex hull per part of an OBJ mesh as pybullet builds
-them, or the hull pybullet makes of a URDF cylinder), placed by the link's pose now, and a ray's entry is the largest
-entering and smallest leaving distance over the piece's faces. Shapes we do not model
-(planes, capsules, height fields, STL or DAE files) give None, and callers ask Bullet instead.
+has six parts), so the lone test is done here in numpy. Each collision piece is a convex
+solid: a box, sphere or cylinder, a convex hull per part of an OBJ mesh (as pybullet
+builds them), or the hull pybullet makes of a URDF cylinder. It is placed by its link's
+pose now, and a ray enters it at the largest entering and leaves at the smallest leaving
+distance over its faces. Shapes not modelled here (planes, capsules, height fields, STL
+or DAE files) give None, and callers ask Bullet instead.
 """
 
 from __future__ import annotations
