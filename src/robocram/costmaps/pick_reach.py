@@ -62,19 +62,20 @@ def collides(
     arm: str,
     stand: Pose,
     joints: Mapping[str, float],
-    touching: WorldObject | None = None,
+    allow_hand: bool = False,
 ) -> bool:
     """Whether a link the motion moves touches anything but the floor.
 
     The robot stands at ``stand`` and takes ``joints``; the links checked are those the
     changed joints move, all of them if the robot stands elsewhere than now (the robot
     standing there, parked, is the ``robot_collision_free`` validator's check). With
-    ``touching`` (the object grasped) the arm's hand and gripper links may touch, as the
-    pick's ``allow_hand`` mode lets them. Joints and pose are restored afterwards.
+    ``allow_hand`` the arm's hand and gripper links may touch (the object grasped, the
+    surface a held object is put on), as the plans' ``allow_hand`` mode lets them. Joints
+    and pose are restored afterwards.
     """
     spec = robot.description.arms[arm]
     allowed: set[str] = set()
-    if touching is not None:
+    if allow_hand:
         allowed = {*spec.hand_links, *spec.gripper_links, spec.end_effector_link, spec.tool_frame}
     model = robot.description.model
     assert model is not None

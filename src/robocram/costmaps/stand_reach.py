@@ -61,7 +61,7 @@ def reach_to_pick(
             if not grasp.success:
                 continue
             at = _moved(base, grasp.base_motion)
-            if collides(world, robot, name, at, grasp.joint_positions, obj):
+            if collides(world, robot, name, at, grasp.joint_positions, allow_hand=True):
                 continue
             at = _moved(base, pre.base_motion)
             if not collides(world, robot, name, at, pre.joint_positions):
@@ -107,22 +107,21 @@ def reach_to_place(
     """The first way the place plan will try that works from ``base``, or None.
 
     ``target`` is where the held object's frame goes (map). One works if IK reaches the
-    tool's pose above the spot and then down at it, and nothing but the hand (and what it
-    holds) touches the robot above the spot. None when the robot holds nothing.
+    tool's pose there, then the hand's retreat towards the wrist, and at the put only the
+    hand (and what it holds) touches anything. None when the robot holds nothing.
     """
     desc = robot.description
     seed = world.joint_states(robot)
     for way in place_targets(world, robot, target, base, arm):
-        above = solve_at_stand(desc, way.arm, way.above_in_base, seed, restarts)
-        if not above.success:
+        put = solve_at_stand(desc, way.arm, way.place_in_base, seed, restarts)
+        if not put.success:
             continue
-        down = _solve_near(desc, way.arm, way.place_in_base, above, seed, restarts)
-        if not down.success:
+        back = _solve_near(desc, way.arm, way.retreat_in_base, put, seed, restarts)
+        if not back.success:
             continue
-        if not collides(
-            world, robot, way.arm, _moved(base, above.base_motion), above.joint_positions
-        ):
-            return Reach(way.arm, dict(down.joint_positions), way.place_in_base, down.base_motion)
+        at = _moved(base, put.base_motion)
+        if not collides(world, robot, way.arm, at, put.joint_positions, allow_hand=True):
+            return Reach(way.arm, dict(put.joint_positions), way.place_in_base, put.base_motion)
     return None
 
 
