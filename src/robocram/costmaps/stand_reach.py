@@ -14,7 +14,7 @@ from typing import Any
 
 from robocram.costmaps.cost_layer import LocationQuery
 from robocram.costmaps.grasps import grasp_point
-from robocram.costmaps.pick_reach import collides, pick_targets
+from robocram.costmaps.pick_reach import PickTarget, collides, pick_targets
 from robocram.costmaps.place_reach import held_objects, place_targets
 from robocram.costmaps.reachability_map import ReachabilityMaps
 from robocram.costmaps.validators import (
@@ -49,25 +49,54 @@ def reach_to_pick(
     one works if IK reaches its pre-grasp and then, from there, its grasp (as the pick
     moves), nothing but the floor touches the robot at the pre-grasp, and only the hand
     touches at the grasp.
+
+    Which grasp is tried first does not change the answer (the pick tries them all), so
+    with a ``memo`` (one resolution: stand after stand) grasps that worked before go first
+    and those that failed last.
     """
-    desc = robot.description
     seed = world.joint_states(robot)
+    memo = {} if memo is None else memo
     for name in hopeful_arms(robot, grasp_point(world, obj), base, arm, maps):
-        for target in pick_targets(world, robot, obj, name, base, memo):
-            pre = solve_at_stand(desc, name, target.pre_grasp_in_base, seed, restarts)
-            if not pre.success:
-                continue
-            grasp = _solve_near(desc, name, target.grasp_in_base, pre, seed, restarts)
-            if not grasp.success:
-                continue
-            at = _moved(base, grasp.base_motion)
-            if collides(world, robot, name, at, grasp.joint_positions, allow_hand=True):
-                continue
-            at = _moved(base, pre.base_motion)
-            if not collides(world, robot, name, at, pre.joint_positions):
-                joints = dict(grasp.joint_positions)
-                return Reach(name, joints, target.grasp_in_base, grasp.base_motion)
+        record: dict[str, list[int]] = memo.setdefault(("grasp_record", obj.name, name), {})
+        targets = pick_targets(world, robot, obj, name, base, memo)
+        targets.sort(key=lambda t: _rank(record, t.grasp))
+        for target in targets:
+            tally = record.setdefault(target.grasp, [0, 0])  # [worked, failed]
+            reach = _pick_at(world, robot, name, base, target, seed, restarts)
+            if reach is not None:
+                tally[0] += 1
+                return reach
+            tally[1] += 1
     return None
+
+
+def _rank(record: dict[str, list[int]], grasp: str) -> tuple[int, int]:
+    worked, failed = record.get(grasp, (0, 0))
+    return (-worked, failed)
+
+
+def _pick_at(
+    world: World,
+    robot: RobotObject,
+    arm: str,
+    base: Pose,
+    target: PickTarget,
+    seed: Mapping[str, float],
+    restarts: int,
+) -> Reach | None:
+    """The pick's motions for one grasp from ``base``: pre-grasp, grasp, collisions."""
+    desc = robot.description
+    pre = solve_at_stand(desc, arm, target.pre_grasp_in_base, seed, restarts)
+    if not pre.success:
+        return None
+    grasp = _solve_near(desc, arm, target.grasp_in_base, pre, seed, restarts)
+    if not grasp.success:
+        return None
+    if collides(world, robot, arm, _moved(base, grasp.base_motion), grasp.joint_positions, True):
+        return None
+    if collides(world, robot, arm, _moved(base, pre.base_motion), pre.joint_positions):
+        return None
+    return Reach(arm, dict(grasp.joint_positions), target.grasp_in_base, grasp.base_motion)
 
 
 def _solve_near(
