@@ -1,13 +1,15 @@
-"""Timings in the kitchen: building the scene, detecting, searching, opening a drawer.
+"""Timings in the kitchen: building the scene, detecting, searching, opening a drawer, transport.
 
-Run: ``.venv/bin/python benchmarks/kitchen_bench.py [runs]`` (default 10). Per robot it
-prints the scene build (cold: description parsed; warm: a loaded description passed in),
-one ``detecting`` motion with the mug in view, and a seeded search for the mug (success
-rate, median, p95 over ``runs`` costmap seeds); for the PR2 also opening and closing the
-top drawer with the bowl in it. PyCRAM 1.0.4's figures for comparison (PR2, its kitchen,
-headless, this class of machine): world and robot 1,296 ms, detecting 107 ms, a
-pick-and-place with two location resolutions 1,150 ms. Transport is not built yet, so
-there is no transport figure.
+Run: ``.venv/bin/python benchmarks/kitchen_bench.py [runs] [transports]`` (defaults 10
+and 50). Per robot it prints the scene build (cold: description parsed; warm: a loaded
+description passed in), one ``detecting`` motion with the mug in view, and a seeded
+search for the mug (success rate, median, p95 over ``runs`` costmap seeds); for the PR2
+also opening and closing the top drawer with the bowl in it. Then, per robot,
+``transports`` seeded transports of the mug from a random spot on the north counter to
+the table (success rate, median, p95, and the CPU time split into location resolution,
+IK of arm motions, other motions, perception and the rest). PyCRAM 1.0.4's figures for
+comparison (PR2, its kitchen, headless, this class of machine): world and robot
+1,296 ms, detecting 107 ms, a pick-and-place with two location resolutions 1,150 ms.
 """
 
 from __future__ import annotations
@@ -17,6 +19,8 @@ import statistics
 import sys
 import time
 from collections.abc import Callable
+
+from transport_timing import print_transports, transport_times
 
 from robocram.costmaps import CostmapLocations
 from robocram.designators import a, an, using_location_resolver
@@ -108,6 +112,7 @@ def drawer_times(runs: int) -> tuple[float, float]:
 def main() -> None:
     """Print the figures."""
     runs = int(sys.argv[1]) if len(sys.argv) > 1 else 10
+    transports = int(sys.argv[2]) if len(sys.argv) > 2 else 50
     print(f"kitchen_bench: {runs} runs per figure; CPU time of this process")
     for robot in ROBOTS:
         cold, warm = build_times(robot, max(3, runs // 3))
@@ -127,6 +132,8 @@ def main() -> None:
             )
     opened, closed = drawer_times(max(3, runs // 3))
     print(f"pr2   drawer 0.3 m        open {opened:7.1f} ms  close {closed:7.1f} ms")
+    for robot in ROBOTS:
+        print_transports(robot, transport_times(robot, transports))
 
 
 if __name__ == "__main__":

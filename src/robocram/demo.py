@@ -1,8 +1,10 @@
-"""``make demo``: a PR2 in projection picks up a mug, headless, in a few seconds.
+"""``make demo``: in the kitchen, a PR2 in projection carries a mug and a bowl to the table.
 
-Builds the tabletop scene, performs the robot-independent plan ``robocram.plans.pick_up``
-inside ``simulated_robot``, prints the task tree and writes ``out/demo.png`` rendered from
-a camera looking at the table.
+Builds the kitchen scene, performs two ``transporting`` action designators inside
+``simulated_robot`` (the mug from the north counter; the bowl out of the top drawer, which
+the search opens and the transport closes again), prints the task tree and writes
+``out/demo_before.png`` and ``out/demo_after.png``. The tabletop pick-up demo lives on as
+``examples/pick_mug.py``.
 """
 
 from __future__ import annotations
@@ -10,33 +12,47 @@ from __future__ import annotations
 import time
 from pathlib import Path
 
-from robocram.plans import pick_up
+from robocram.designators import a, an
+from robocram.execution import perform
+from robocram.plans import install_actions
 from robocram.projection import looking_orientation, simulated_robot
-from robocram.scenes import tabletop_scene
+from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
+from robocram.world import World
 
-VIEW_FROM = (2.3, 1.7, 1.9)  # [m] in map, where the picture is taken from
-VIEW_AT = (0.5, -0.1, 0.7)  # [m] in map, what it looks at
+VIEW_FROM = (2.4, -2.2, 3.3)  # [m] in map, where the pictures are taken from
+VIEW_AT = (-0.7, 0.3, 0.4)  # [m] in map, what they look at
+TABLE = ("kitchen", "table_top")
+ITEMS = (("mug", "mug-1"), ("bowl", "bowl-1"))  # (type searched for, item placed for)
 
 
-def main(out_dir: Path = Path("out")) -> Path:
-    """Run the PR2 pick-up, print the task tree, write and return the PNG's path."""
-    start = time.perf_counter()
-    scene = tabletop_scene("pr2")
-    with simulated_robot(scene.world, "pr2", name="pick-mug") as run:
-        result = pick_up(scene.look_target)
-    print(run.tree.render())
-    mug = scene.world.pose(result.object_name).position
-    print(
-        f"\nthe {result.arm} arm holds {result.object_name} at "
-        f"({mug[0]:.3f}, {mug[1]:.3f}, {mug[2]:.3f}) m in map"
-    )
-    out_dir.mkdir(parents=True, exist_ok=True)
+def picture(world: World, path: Path) -> Path:
+    """Render the kitchen from :data:`VIEW_FROM` into ``path``."""
     camera = Pose(VIEW_FROM, looking_orientation(VIEW_FROM, VIEW_AT))
-    png = scene.world.save_png(out_dir / "demo.png", camera, width=800, height=600)
-    scene.world.close()
-    print(f"wrote {png.resolve()} in {time.perf_counter() - start:.2f} s total")
-    return png
+    return world.save_png(path, camera, width=800, height=600)
+
+
+def main(out_dir: Path = Path("out")) -> list[Path]:
+    """Run both transports, print the task tree, write and return the two pictures."""
+    start = time.perf_counter()
+    scene = kitchen_scene("pr2")
+    world = scene.world
+    install_actions(world.kb)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    pictures = [picture(world, out_dir / "demo_before.png")]
+    with simulated_robot(world, scene.robot, name="kitchen-transport") as run:
+        for kind, item in ITEMS:
+            target = a.location(on=TABLE, for_=item)
+            perform(an.action(type="transporting", object=kind, target=target))
+    print(run.tree.render())
+    for _, item in ITEMS:
+        x, y, z = world.pose(item).position
+        links = sorted({p.link_b for p in world.contact_points(item, "kitchen")})
+        print(f"{item} rests on {', '.join(links)} at ({x:.2f}, {y:.2f}, {z:.2f}) m in map")
+    pictures.append(picture(world, out_dir / "demo_after.png"))
+    world.close()
+    print(f"wrote {', '.join(str(p) for p in pictures)} in {time.perf_counter() - start:.2f} s")
+    return pictures
 
 
 if __name__ == "__main__":

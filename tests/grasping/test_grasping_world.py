@@ -8,6 +8,7 @@ from collections.abc import Iterator
 import pytest
 
 from robocram.grasping import (
+    GraspingError,
     catalogue_shape,
     grasp_candidates,
     hand_of,
@@ -114,3 +115,24 @@ def test_without_a_world_objects_are_named_by_type_and_pose() -> None:
         )
     assert answer is not None
     assert answer["G"].position == pytest.approx((0.6, 0.0, 0.747))  # 5 cm over the box's bottom
+
+
+def test_a_type_outside_the_catalogue_has_no_shape_without_a_world() -> None:
+    with pytest.raises(GraspingError, match="'teapot' is not in the catalogue.*bowl"):
+        catalogue_shape("teapot", "teapot-1")
+
+
+def test_the_reachability_costmap_checks_the_plans_grasps(kitchen: KitchenScene) -> None:
+    from robocram.costmaps.grasps import grasp_point, grasp_poses
+
+    world = kitchen.world
+    pr2, mug = world.robot(kitchen.robot), world.object("mug-1")
+    base = world.pose(pr2)
+    plans = grasp_candidates(world, mug, pr2, "right")
+    costmap = grasp_poses(world, mug, pr2.description, "right", base)
+    assert len(costmap) == len(plans) > 0
+    for seen_from_base, candidate in zip(costmap, plans, strict=True):
+        assert (base * seen_from_base).distance_to(candidate.tool) < 1e-9
+        assert (base * seen_from_base).angle_to(candidate.tool) < 1e-9
+    top = next(c for c in plans if c.grasp.name == "top")
+    assert grasp_point(world, mug) == pytest.approx(top.tool.position)

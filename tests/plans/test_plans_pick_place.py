@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from robocram.designators import DesignatorPropertyError, an
+from robocram.designators import DesignatorPropertyError, a, an
 from robocram.execution import perform
 from robocram.plans import (
     Held,
@@ -172,6 +172,30 @@ def test_the_milk_box_is_put_down_by_its_frame_pose(scene: KitchenScene) -> None
     assert rests.position == pytest.approx((x, y - 0.15, z), abs=0.01)
     assert world.contact_points("milk-1", "kitchen", link_b="counter_top_east")
     assert world.stable("milk-1") and world.attached_to("milk-1") is None
+
+
+def test_a_location_designator_says_where_to_put_it(scene: KitchenScene) -> None:
+    world = scene.world
+    x, y, z = world.pose("mug-1").position
+    spot = a.location(pose=PoseStamped("map", (x + 0.12, y - 0.05, z)))
+    with simulated_robot(world, scene.robot):
+        park_arms()
+        navigate(_before_the_counter(scene))
+        held = pick_up_object("mug-1")
+        rests = place_object(held, spot)
+    assert rests.position == pytest.approx((x + 0.12, y - 0.05, z), abs=0.01)
+    assert world.contact_points("mug-1", "kitchen", link_b="counter_top_north")
+
+
+def test_letting_go_in_the_air_is_no_placing(scene: KitchenScene) -> None:
+    world = scene.world
+    x, y, z = world.pose("mug-1").position
+    with simulated_robot(world, scene.robot), pytest.raises(PlacingFailed, match="moved 0.0"):
+        park_arms()
+        navigate(_before_the_counter(scene))
+        held = pick_up_object("mug-1")
+        place_object(held, PoseStamped("map", (x + 0.1, y, z + 0.06)))  # 6 cm over the top
+    assert world.attached_to("mug-1") is None
 
 
 def test_the_action_designators_pick_and_place(scene: KitchenScene) -> None:

@@ -11,17 +11,21 @@ import pytest
 from robocram import demo
 
 
-def test_demo_writes_the_scene_png(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    png = demo.main(tmp_path)
-    assert png == tmp_path / "demo.png"
-    data = png.read_bytes()
-    assert data[:8] == b"\x89PNG\r\n\x1a\n"
-    width, height = int.from_bytes(data[16:20], "big"), int.from_bytes(data[20:24], "big")
-    assert (width, height) == (800, 600)
+def test_demo_transports_both_items_and_writes_two_pictures(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    pictures = demo.main(tmp_path)
+    assert pictures == [tmp_path / "demo_before.png", tmp_path / "demo_after.png"]
+    for png in pictures:
+        data = png.read_bytes()
+        assert data[:8] == b"\x89PNG\r\n\x1a\n"
+        width, height = int.from_bytes(data[16:20], "big"), int.from_bytes(data[20:24], "big")
+        assert (width, height) == (800, 600)
     printed = capsys.readouterr().out
-    assert "✓ pick-mug succeeded" in printed
-    assert "perform gripping succeeded" in printed
-    assert "the right arm holds mug-1" in printed
+    assert "✓ kitchen-transport succeeded" in printed
+    assert printed.count("✓ perform transporting") == 2
+    assert "mug-1 rests on table_top" in printed
+    assert "bowl-1 rests on table_top" in printed
 
 
 def test_example_script_runs(

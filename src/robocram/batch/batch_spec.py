@@ -4,7 +4,8 @@ The variants are either listed (each one a :meth:`Variant.from_mapping` entry) o
 ``variants: N`` with ``place`` giving, per object, a number or a ``[low, high]`` range per
 axis (``x``, ``y``, ``z`` [m], ``yaw`` [rad]), sampled uniformly from ``seed``. Placements
 shift the object from the scene's pose, or put it at an absolute pose in ``map`` with
-``frame: map`` (then ``x``, ``y`` and ``z`` are required). See examples/batch_tabletop.yaml.
+``frame: map`` (then ``x``, ``y`` and ``z`` are required). See examples/batch_tabletop.yaml
+and examples/batch_kitchen.yaml.
 """
 
 from __future__ import annotations
@@ -22,11 +23,12 @@ import numpy as np
 import yaml
 
 from robocram.batch.errors import BadSpec, BatchError
+from robocram.batch.kitchen_transport import transport_item
 from robocram.batch.object_placement import coerce_poses, coerce_shifts
 from robocram.batch.variant import Variant
 from robocram.batch.worker import Plan, SceneFactory
 from robocram.plans import pick_up
-from robocram.scenes import tabletop_scene
+from robocram.scenes import kitchen_scene, tabletop_scene
 
 SPEC_KEYS = (
     "scene", "robot", "plan", "seed", "variants", "place", "look_at", "parameters", "jitter",
@@ -34,8 +36,8 @@ SPEC_KEYS = (
 )  # fmt: skip
 PLACE_KEYS = ("frame", "x", "y", "z", "yaw")
 FRAMES = ("scene", "map")  # shift from the scene's pose, or an absolute pose
-SCENES: dict[str, SceneFactory] = {"tabletop": tabletop_scene}
-PLANS: dict[str, Plan] = {"pick_up": pick_up}
+SCENES: dict[str, SceneFactory] = {"tabletop": tabletop_scene, "kitchen": kitchen_scene}
+PLANS: dict[str, Plan] = {"pick_up": pick_up, "transport": transport_item}
 
 
 @dataclass(frozen=True)

@@ -29,6 +29,8 @@ class VariantResult:
     arm: str | None = None  # what the plan chose (None when it did not get that far)
     grasp: Pose7 | None = None  # the grasp pose it reached, in its frame
     grasp_frame: str | None = None
+    grasp_name: str | None = None  # the grasp model's name of it: "top", "front", "rim", ...
+    locations: tuple[tuple[str, Pose7], ...] = ()  # (what for, map pose): stands, spots
     worker: int = -1  # process id of the worker that ran it
     run_id: int | None = None  # its run in the trace store, when one was given
 

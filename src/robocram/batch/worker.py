@@ -22,6 +22,7 @@ import numpy as np
 
 from robocram.batch.errors import BadVariant
 from robocram.batch.object_placement import place_objects
+from robocram.batch.plan_choices import choices_of
 from robocram.batch.result import VariantResult, VariantStatus
 from robocram.batch.variant import Variant
 from robocram.projection import simulated_robot
@@ -118,12 +119,11 @@ def _seed_everything(seed: int) -> None:
 def _success(
     index: int, variant: Variant, chosen: object, duration: float, runs: list[int]
 ) -> VariantResult:
-    grasp = getattr(chosen, "grasp", None)
+    picked = choices_of(chosen)
     return VariantResult(
         index, variant.name, VariantStatus.SUCCEEDED, duration=duration,
-        arm=getattr(chosen, "arm", None),
-        grasp=None if grasp is None else (*grasp.position, *grasp.orientation),
-        grasp_frame=getattr(grasp, "frame_id", None),
+        arm=picked.arm, grasp=picked.grasp, grasp_frame=picked.grasp_frame,
+        grasp_name=picked.grasp_name, locations=picked.locations,
         run_id=runs[-1] if runs else None,
     )  # fmt: skip
 

@@ -7,6 +7,8 @@ it accepts is one the plan can grasp from.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numpy.typing import NDArray
 
@@ -25,14 +27,32 @@ from robocram.grasping import (
 from robocram.kinematics import forward_kinematics
 from robocram.robots import RobotDescription, load_description
 from robocram.tf import Pose
+from robocram.tf import quaternion as quat
 from robocram.world import World, WorldObject
 
 ANY_HAND = Hand(max_opening=float("inf"))  # where a grasp from above closes, whatever the hand
+GRASP_YAWS = (0.0, math.pi / 2, math.pi, -math.pi / 2)  # [rad] turns of a tool over a point
 
 
 def approach_axis(desc: RobotDescription, arm: str) -> NDArray[np.float64]:
     """The unit approach axis of ``arm``'s tool, in the tool frame."""
     return np.asarray(tool_approach_axis(desc, arm), dtype=float)
+
+
+def top_down(axis_in_tool: NDArray[np.float64], yaw: float) -> quat.Quaternion:
+    """Tool orientation that points ``axis_in_tool`` straight down, turned by ``yaw``.
+
+    For a tool over a point rather than an object (``reach_point``): with no object there
+    is no grasp, only the approach from above of the model's ``top`` grasps.
+    """
+    down = np.array((0.0, 0.0, -1.0))
+    turn = np.cross(axis_in_tool, down)
+    angle = math.atan2(float(np.linalg.norm(turn)), float(axis_in_tool @ down))
+    if np.linalg.norm(turn) < 1e-9:
+        turn = np.array((1.0, 0.0, 0.0))
+    unit = turn / np.linalg.norm(turn)
+    aligned = quat.from_axis_angle((float(unit[0]), float(unit[1]), float(unit[2])), angle)
+    return quat.multiply(quat.from_euler(0.0, 0.0, yaw), aligned)
 
 
 def grasp_point(world: World, obj: WorldObject) -> tuple[float, float, float]:

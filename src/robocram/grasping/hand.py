@@ -8,6 +8,7 @@ convention (x approach, y opening) is what every built-in robot gives.
 
 from __future__ import annotations
 
+import threading
 from dataclasses import dataclass
 from itertools import combinations
 
@@ -72,16 +73,19 @@ class HandCache:
     def __init__(self, size: int = 16) -> None:
         self.size = size
         self.entries: dict[tuple[int, str], tuple[RobotDescription, Hand]] = {}
+        self.lock = threading.Lock()
 
     def get(self, desc: RobotDescription, arm: str) -> Hand:
         """The hand of ``desc``'s ``arm``, read from the kinematics the first time."""
-        entry = self.entries.get((id(desc), arm))
+        with self.lock:
+            entry = self.entries.get((id(desc), arm))
         if entry is not None and entry[0] is desc:
             return entry[1]
         hand = _read_hand(desc, arm)
-        if len(self.entries) >= self.size:
-            self.entries.pop(next(iter(self.entries)))
-        self.entries[(id(desc), arm)] = (desc, hand)
+        with self.lock:
+            if len(self.entries) >= self.size:
+                self.entries.pop(next(iter(self.entries)))
+            self.entries[(id(desc), arm)] = (desc, hand)
         return hand
 
 

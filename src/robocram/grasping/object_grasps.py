@@ -3,8 +3,10 @@
 The object's type chooses the grasps through the knowledge base: ``object_grasps(Type,
 Names)`` restricts and orders them (default: :data:`GRASP_NAMES`), ``object_wall(Type,
 Thickness)`` makes a type hollow (rim grasps), ``object_handle(Type, Width)`` gives it a
-handle bar. Among the turns of one grasp, the one whose opening lies along the robot's
-base y axis (its "left") comes first: the hand as the arm holds it when parked ahead.
+handle bar. The side grasps (front, left, right) share the place of the first of them in
+that order, the one coming in most directly from the robot first. Among the turns of one
+grasp, the one whose fingers spread along the robot's base y axis comes first: the hand as
+the arm holds it reaching ahead.
 """
 
 from __future__ import annotations
@@ -30,6 +32,7 @@ object_wall(bowl, 0.006).
 object_handle(mug, 0.012).
 """
 FACTS_GROUP = "object_grasp_facts"
+SIDE_GRASPS = ("front", "left", "right")  # tried in the order they face the robot
 EXTENDABLE = ["object_grasps/2", "object_wall/2", "object_handle/2"]
 
 
@@ -74,11 +77,25 @@ def object_shape(world: World, obj: WorldObject) -> ObjectShape:
     return shape_of(world, obj, *type_facts(world.kb, obj.type))
 
 
-def _preference(robot_in_map: Pose, object_in_map: Pose, grasp: Grasp) -> float:
-    """Smaller first: the fingers spread along the base's y axis."""
+def _preference(robot_in_map: Pose, object_in_map: Pose, grasp: Grasp) -> tuple[float, float]:
+    """Smaller first: a side grasp coming in from the robot, then fingers along base y."""
+    towards = np.subtract(object_in_map.position, robot_in_map.position)[:2]
+    norm = float(np.linalg.norm(towards))
+    approach = np.asarray(quat.rotate(object_in_map.orientation, grasp.approach))[:2]
+    facing = float(approach @ towards) / norm if norm > 1e-9 else 0.0
     base_y = np.asarray(quat.rotate(robot_in_map.orientation, (0.0, 1.0, 0.0)))
     across = np.asarray(quat.rotate(object_in_map.orientation, grasp.across))
-    return -abs(float(base_y @ across))
+    return -facing, -abs(float(base_y @ across))
+
+
+def _rank(names: Sequence[str]) -> dict[str, int]:
+    """Each grasp's place in ``names``; the side grasps share the place of the first one."""
+    order = {name: k for k, name in enumerate(names)}
+    sides = [order[n] for n in SIDE_GRASPS if n in order]
+    for name in SIDE_GRASPS:
+        if name in order:
+            order[name] = min(sides)
+    return order
 
 
 def candidates_at(
@@ -96,7 +113,7 @@ def candidates_at(
         GraspingError: the arm has no gripper.
     """
     found = grasps(shape, hand_of(desc, arm), names)
-    order = {name: k for k, name in enumerate(names)}
+    order = _rank(names)
     found.sort(key=lambda g: (order[g.name], _preference(base_in_map, object_in_map, g)))
     return [GraspCandidate(g, *g.in_map(object_in_map)) for g in found]
 

@@ -12,8 +12,9 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 from functools import lru_cache
 
+from robocram.grasping.errors import GraspingError
 from robocram.tf import Pose, Vector3
-from robocram.world import World, WorldObject
+from robocram.world import UnknownItemError, World, WorldObject, catalogue_names
 
 
 @dataclass(frozen=True)
@@ -95,6 +96,13 @@ def catalogue_shape(
     its size.
 
     Raises:
-        UnknownItemError: ``kind`` is not in the catalogue.
+        GraspingError: ``kind`` is not in the catalogue, so its size is unknown.
     """
-    return replace(_measured(kind), name=name, wall=wall, handle=handle)
+    try:
+        measured = _measured(kind)
+    except UnknownItemError as err:
+        raise GraspingError(
+            f"no shape for {name!r}: its type {kind!r} is not in the catalogue "
+            f"({', '.join(catalogue_names())}); grasp it in a world that holds it"
+        ) from err
+    return replace(measured, name=name, wall=wall, handle=handle)

@@ -2,8 +2,11 @@
 
 from robocram.plans.action_table import ACTION_TYPES, install_actions, perform_action
 from robocram.plans.action_type import ActionType
+from robocram.plans.attempt_log import Attempt, AttemptLog
 from robocram.plans.containers import Container, close_container, container, open_container
-from robocram.plans.errors import PlanSetupError
+from robocram.plans.deliver import deliver
+from robocram.plans.errors import DeliveryExhausted, FetchExhausted, PlanSetupError, SearchExhausted
+from robocram.plans.fetch import fetch
 from robocram.plans.grasp_failures import (
     ObjectUngraspable,
     PickUpFailed,
@@ -13,11 +16,16 @@ from robocram.plans.grasp_failures import (
 from robocram.plans.pick_object import Held, pick_up_object
 from robocram.plans.pick_up import PickResult, pick_up
 from robocram.plans.place_object import place_object
+from robocram.plans.transport import TransportResult, transport
 
 __all__ = [
     "ACTION_TYPES",
     "ActionType",
+    "Attempt",
+    "AttemptLog",
     "Container",
+    "DeliveryExhausted",
+    "FetchExhausted",
     "Held",
     "ObjectUngraspable",
     "PickResult",
@@ -25,12 +33,17 @@ __all__ = [
     "PickUpUnreachable",
     "PlacingFailed",
     "PlanSetupError",
+    "SearchExhausted",
+    "TransportResult",
     "close_container",
     "container",
+    "deliver",
+    "fetch",
     "install_actions",
     "open_container",
     "perform_action",
     "pick_up",
     "pick_up_object",
     "place_object",
+    "transport",
 ]

@@ -20,9 +20,12 @@ from robocram.logic import KnowledgeBase
 from robocram.plans.action_type import ActionType
 from robocram.plans.basic_actions import detect, look, move_torso, navigate, park_arms
 from robocram.plans.containers import close_container, open_container
+from robocram.plans.deliver import deliver
+from robocram.plans.fetch import fetch
 from robocram.plans.pick_object import pick_up_object
 from robocram.plans.place_object import place_object
 from robocram.plans.search import search
+from robocram.plans.transport import transport
 
 ACTIONS_GROUP = "robocram_actions"
 ACTION_TYPES: Mapping[str, ActionType] = MappingProxyType(
@@ -39,6 +42,19 @@ ACTION_TYPES: Mapping[str, ActionType] = MappingProxyType(
             ActionType("closing", ("object",), ("arm",), close_container),
             ActionType("picking-up", ("object",), ("arm", "grasp"), pick_up_object),
             ActionType("placing", ("object", "target"), ("arm",), place_object),
+            ActionType("fetching", ("object",), ("arm", "grasp", "stand_retries"), fetch),
+            ActionType(
+                "delivering",
+                ("object", "target"),
+                ("arm", "stand_retries", "place_retries"),
+                deliver,
+            ),
+            ActionType(
+                "transporting",
+                ("object", "target"),
+                ("arm", "grasp", "stand_retries", "place_retries", "placing_stands"),
+                transport,
+            ),
         )
     }
 )

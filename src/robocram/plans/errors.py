@@ -1,8 +1,13 @@
-"""Errors of robot-independent plans started where they cannot run (a setup mistake)."""
+"""Errors of robot-independent plans: setup mistakes and stages that ran out of retries."""
 
 from __future__ import annotations
 
-from robocram.execution.failures import PerceptionObjectNotFound, SetupFailure
+from robocram.execution.failures import (
+    ObjectUndeliverable,
+    ObjectUnfetchable,
+    PerceptionObjectNotFound,
+    SetupFailure,
+)
 
 
 class PlanSetupError(SetupFailure, RuntimeError):
@@ -14,3 +19,19 @@ class SearchExhausted(PerceptionObjectNotFound):
 
     searched: tuple[str, ...] | None = None  # the places looked at, in order
     hint = "put the object's usual place into the KB (usual_location/3) or search elsewhere"
+
+
+class FetchExhausted(ObjectUnfetchable):
+    """Every stand tried (within the retry bound) failed to pick the object up."""
+
+    causes: tuple[Exception, ...] | None = None  # one failure per attempt, in order
+    attempts: int | None = None  # stands where picking up was tried
+    hint = "raise stand_retries, give another arm or grasp, or clear the object's surroundings"
+
+
+class DeliveryExhausted(ObjectUndeliverable):
+    """Every placing spot and stand tried (within the retry bounds) failed to place it."""
+
+    causes: tuple[Exception, ...] | None = None  # one failure per attempt, in order
+    attempts: int | None = None  # stands tried
+    hint = "give a target the robot can stand beside, or raise place_retries / stand_retries"

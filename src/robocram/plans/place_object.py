@@ -59,15 +59,17 @@ def _shifted(pose: Pose, dx: float, dy: float, dz: float) -> Pose:
     return Pose((x + dx, y + dy, z + dz), pose.orientation)
 
 
-def _object_targets(target: PoseStamped | LocationDesignator) -> list[Pose]:
+def _object_targets(target: PoseStamped | Pose | LocationDesignator) -> list[Pose]:
     """Poses of the object's frame (map) just above the target, one per turn."""
-    if isinstance(target, LocationDesignator):
-        target = target.reference()
-    if not isinstance(target, PoseStamped):
+    where = target.reference() if isinstance(target, LocationDesignator) else target
+    if isinstance(where, Pose):
+        where = PoseStamped.from_pose("map", where)  # a location's pose is in the map
+    if not isinstance(where, PoseStamped):
         raise PlanSetupError(
-            f"place_object's target is a PoseStamped or a location designator, got {target!r}"
+            f"place_object's target is a PoseStamped, a Pose (map) or a location designator, "
+            f"got {where!r}"
         )
-    spot = _shifted(transform_pose(target, "map").pose, 0.0, 0.0, PLACE_GAP)
+    spot = _shifted(transform_pose(where, "map").pose, 0.0, 0.0, PLACE_GAP)
     turned = []
     for turn in TURNS:
         q = quat.multiply(quat.from_euler(0.0, 0.0, turn), spot.orientation)
@@ -99,11 +101,13 @@ def _retreat(robot: str, held: Held) -> None:
     park_arms(held.arm)
 
 
-def _settled(name: str, put: Pose) -> str | None:
-    """Why the object does not rest where it was put after :data:`SETTLE`, or None."""
+def _settled(name: str, put: Pose, seconds: float) -> str | None:
+    """Why the object does not rest where it was put after ``seconds`` [s], or None."""
+    if seconds <= 0.0:
+        return None
     kb = current_kb()
     try:
-        if not kb.holds(f"world(W), simulate(W, {SETTLE})"):
+        if not kb.holds("world(W), simulate(W, S)", S=float(seconds)):
             return None
     except UnknownPredicateError:
         return None  # no simulated world to ask (a real robot)
@@ -137,13 +141,15 @@ def _put_down(robot: str, held: Held, put: Pose) -> None:
 
 def place_object(
     object: Held | ObjectDesignator | str,  # noqa: A002 - CRAM's key
-    target: PoseStamped | LocationDesignator,
+    target: PoseStamped | Pose | LocationDesignator,
     arm: str | None = None,
+    settle: float = SETTLE,
 ) -> PoseStamped:
     """Put the held ``object`` down with its frame at ``target``; return where it rests.
 
-    ``target`` may be a location designator (its first pose is taken). The returned pose
-    is in ``map``.
+    ``target`` may be a location designator (its first pose is taken) or a map pose. The
+    returned pose is in ``map``. ``settle`` [s] is simulated after letting go to check the
+    object rests (0: no check).
 
     Raises:
         PlacingFailed: no turn of the object could be put down there, or it did not rest
@@ -159,7 +165,7 @@ def place_object(
         except ManipulationLowLevelFailure as failure:
             causes.append(failure)
             continue
-        problem = _settled(held.object_name, put)
+        problem = _settled(held.object_name, put, settle)
         if problem is not None:
             raise PlacingFailed(
                 f"{held.object_name!r} was let go at {target} but {problem}",

@@ -2,8 +2,10 @@
 
 The candidate places come from the knowledge base: first the object type's usual places
 (``usual_location(Type, Env, Link)``), then every other supporting surface
-(``supporting_surface(Env, Link)``). For each place the plan asks for a location from
-which the robot sees it (``visible_for``, a location designator resolved by whatever
+(``supporting_surface(Env, Link)``). A place the KB names a container (a drawer, a door)
+is opened first, as CRAM does, and looked into from where it was opened; the containers
+opened are in the log, so a caller closes them again. For each place the plan asks for a
+location from which the robot sees it (``visible_for``, a location designator resolved by whatever
 resolver the environment has, e.g. costmaps), tries up to ``poses_per_place`` of its
 solutions, looks and detects. When every place is exhausted it raises
 :class:`SearchExhausted`, a ``PerceptionObjectNotFound`` that lists the places searched.
@@ -18,7 +20,9 @@ from robocram.designators.errors import DesignatorError
 from robocram.execution import perform
 from robocram.execution.failures import PlanFailure
 from robocram.logic import current_kb
-from robocram.plans.basic_actions import park_arms
+from robocram.plans.attempt_log import AttemptLog
+from robocram.plans.basic_actions import detect, look, move_torso, park_arms
+from robocram.plans.container_access import OpenedContainer, is_container, open_from_front
 from robocram.plans.errors import PlanSetupError, SearchExhausted
 from robocram.plans.robot_facts import current_robot
 from robocram.tf import PoseStamped
@@ -37,10 +41,12 @@ class Place:
 
 @dataclass
 class SearchLog:
-    """What the search did: the places looked at and the failures met, in order."""
+    """What the search did: the places looked at, the failures met, the containers opened."""
 
     searched: list[Place] = field(default_factory=list)
     failures: list[PlanFailure | DesignatorError] = field(default_factory=list)
+    opened: list[OpenedContainer] = field(default_factory=list)
+    attempts: AttemptLog = field(default_factory=AttemptLog)
 
 
 def candidate_places(object_type: str) -> list[Place]:
@@ -51,7 +57,8 @@ def candidate_places(object_type: str) -> list[Place]:
     return list(dict.fromkeys([*usual, *others]))
 
 
-def _place_point(place: Place) -> PoseStamped:
+def place_point(place: Place) -> PoseStamped:
+    """The point a robot looks at to see ``place``: a little above its link frame (map)."""
     answer = current_kb().first(
         "world(W), link_pose(W, E, L, P)", E=place.environment, L=place.link
     )
@@ -84,10 +91,24 @@ def _look_from_places(
     return None
 
 
+def _look_into(place: Place, wanted: ObjectDesignator, log: SearchLog) -> ObjectDesignator | None:
+    """Open the container ``place`` and look into it from where it was opened."""
+    try:
+        log.opened.append(open_from_front(place.link, log.attempts))
+        if current_kb().holds("robot_torso_link_joint(R, _, _)", R=current_robot()):
+            move_torso("upper")  # see over the drawer's front, into it
+        look(place_point(place))
+        return detect(wanted)
+    except PlanFailure as failure:
+        log.failures.append(failure)
+        return None
+
+
 def search(
     object: ObjectDesignator | str,  # noqa: A002 - CRAM's key
     poses_per_place: int = POSES_PER_PLACE,
     log: SearchLog | None = None,
+    open_containers: bool = True,
 ) -> ObjectDesignator:
     """Find the object (a designator with a ``type``, or a type); the perceived designator.
 
@@ -101,7 +122,11 @@ def search(
     park_arms()
     for place in candidate_places(object_type):
         log.searched.append(place)
-        seen = _look_from_places(robot, _place_point(place), wanted, poses_per_place, log)
+        if open_containers and is_container(place.environment, place.link):
+            seen = _look_into(place, wanted, log)
+            if seen is not None:
+                return seen
+        seen = _look_from_places(robot, place_point(place), wanted, poses_per_place, log)
         if seen is not None:
             return seen
     names = tuple(p.link for p in log.searched)

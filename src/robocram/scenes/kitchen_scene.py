@@ -16,7 +16,7 @@ from pathlib import Path
 
 from robocram.robots import RobotDescription, load_description
 from robocram.scenes.errors import SceneError
-from robocram.tf import Pose
+from robocram.tf import Pose, PoseStamped
 from robocram.world import World, WorldObject
 
 KITCHEN = "kitchen"  # the kitchen's object name, the Env of its facts
@@ -39,7 +39,7 @@ PLACES = (
     ItemPlace("mug-1", "mug", "counter_top_north", (0.15, -0.08)),
     ItemPlace("cereal-1", "cereal_box", "counter_top_east", (0.0, 0.3)),
     ItemPlace("milk-1", "milk", "counter_top_east", (0.0, -0.3)),
-    ItemPlace("bowl-1", "bowl", "drawer_unit_drawer_3", (-0.16, 0.0)),
+    ItemPlace("bowl-1", "bowl", "drawer_unit_drawer_3", (-0.26, 0.0)),  # seen over the front
     ItemPlace("cup-1", "cup", "cutlery_unit_drawer_4", (-0.14, 0.0)),
 )
 
@@ -52,6 +52,13 @@ class KitchenScene:
     robot: str
     kitchen: str
     items: dict[str, WorldObject]
+
+    @property
+    def look_target(self) -> PoseStamped:
+        """Where the first item (the mug on the counter) is now: what a plan that starts by
+        looking looks at, as on the tabletop."""
+        first = next(iter(self.items.values()))
+        return PoseStamped("map", self.world.pose(first).position)
 
 
 def kitchen_urdf() -> Path:

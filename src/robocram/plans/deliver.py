@@ -1,0 +1,130 @@
+"""Delivering: stand beside the placing spot with the object over it, put it down.
+
+The target is a location designator (``a.location(on=..., for_=...)``) or a pose. For
+each placing spot (bounded by ``place_retries``) the robot tries stands that hold the
+object over the spot as the arm holds it now (:func:`placing_stands`): a stand where it
+would collide is skipped at once; a stand where placing fails gives the next one, at most
+``stand_retries`` per spot. When all fail, :class:`DeliveryExhausted` (an
+``ObjectUndeliverable``) carries every cause in order.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from robocram.designators import ObjectDesignator, a
+from robocram.execution import perform
+from robocram.execution.failures import (
+    ManipulationLowLevelFailure,
+    NavigationPoseUnreachable,
+    PlanFailure,
+)
+from robocram.plans.attempt_log import AttemptLog
+from robocram.plans.basic_actions import navigate
+from robocram.plans.errors import DeliveryExhausted
+from robocram.plans.location_poses import location_poses, next_pose
+from robocram.plans.pick_object import GRASPING, Held
+from robocram.plans.place_object import held_object, place_object
+from robocram.plans.robot_facts import current_robot
+from robocram.plans.stands import map_pose, placing_stands
+from robocram.tf import Pose, PoseStamped
+
+STAND_RETRIES = 3  # stands per placing spot where placing is tried
+PLACE_RETRIES = 6  # placing spots tried (a spot in the middle of a table has no stand)
+CARRY_CLEARANCE = 0.08  # [m] the held object's frame is carried this far over the spot
+
+
+def _place_at(held: Held, spot: Pose, arm: str | None) -> Any:
+    """Put the held object's frame at ``spot``, keeping the heading it has in the hand now."""
+    heading = map_pose(held.object_name).orientation
+    put = PoseStamped.from_pose("map", Pose(spot.position, heading))
+    return place_object(held, put, arm=arm)
+
+
+def _carry_above(held: Held, spot: Pose) -> None:
+    """Lift the held object over ``spot``'s height (plus a margin) if it hangs lower.
+
+    An object taken out of a drawer is held below a table's top; driving up to the table
+    with it would run the hand into the table.
+    """
+    low = map_pose(held.object_name).position[2]
+    rise = spot.position[2] + CARRY_CLEARANCE - low
+    if rise <= 0.0:
+        return
+    tool = map_pose(held.tool_frame)
+    x, y, z = tool.position
+    lifted = PoseStamped.from_pose("map", Pose((x, y, z + rise), tool.orientation))
+    perform(a.motion(type="moving-tcp", arm=held.arm, target=a.location(pose=lifted), **GRASPING))
+
+
+def _try_spot(
+    held: Held, spot: Pose, arm: str | None, stand_retries: int, log: AttemptLog
+) -> list[Exception]:
+    """Try the stands of one spot; the failures met (empty: the object was placed)."""
+    causes: list[Exception] = []
+    try:
+        _carry_above(held, spot)
+    except ManipulationLowLevelFailure as failure:  # carried low: some stands will collide
+        causes.append(failure)
+    tried = 0
+    for stand in placing_stands(current_robot(), held.object_name, spot):
+        try:
+            navigate(stand)
+        except NavigationPoseUnreachable as failure:  # a stand in the way: the next turn
+            log.record("deliver", stand, failure)
+            causes.append(failure)
+            continue
+        tried += 1
+        try:
+            _place_at(held, spot, arm)
+        except PlanFailure as failure:
+            log.record("deliver", stand, failure)
+            causes.append(failure)
+            if tried >= stand_retries:
+                return causes
+            continue
+        log.record("deliver", stand, None)
+        return []
+    return causes
+
+
+def deliver(
+    object: Held | ObjectDesignator | str,  # noqa: A002 - CRAM's key
+    target: Any,
+    arm: str | None = None,
+    stand_retries: int = STAND_RETRIES,
+    place_retries: int = PLACE_RETRIES,
+    log: AttemptLog | None = None,
+) -> Pose:
+    """Place the held object at ``target`` (a location designator or a pose); the spot.
+
+    ``object`` is what fetching returned (a :class:`Held`), or the held object's name.
+
+    Raises:
+        DeliveryExhausted: no spot within ``place_retries`` and no stand within
+            ``stand_retries`` per spot let the robot put the object down.
+    """
+    if stand_retries < 1 or place_retries < 1:
+        raise ValueError(
+            f"stand_retries and place_retries must be at least 1, got {stand_retries} "
+            f"and {place_retries}"
+        )
+    log = log if log is not None else AttemptLog()
+    held = held_object(object, arm)
+    causes: list[Exception] = []
+    spots = location_poses(target)
+    for _ in range(place_retries):
+        spot = next_pose(spots, causes)
+        if spot is None:
+            break
+        failures = _try_spot(held, spot, arm, stand_retries, log)
+        if not failures:
+            return spot
+        causes.extend(failures)
+    raise DeliveryExhausted(
+        f"could not deliver {held.object_name} to {target!r}: "
+        + "; ".join(type(c).__name__ for c in causes[-5:]),
+        target=target,
+        causes=tuple(causes),
+        attempts=len(log.of("deliver")),
+    )

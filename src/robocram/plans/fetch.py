@@ -1,0 +1,144 @@
+"""Fetching: stand where the object is reachable, look, detect it again, pick it up.
+
+As CRAM's fetch plan does, each try takes the next solution of a ``reachable_for``
+location designator, so a stand whose grasp fails gives way to another one; the tries are
+bounded (``stand_retries``; a stand where the robot would collide is skipped without
+counting, at most ``MAX_BLOCKED`` of them). An object in a container the search opened is
+tried first from in front of the container, arm by arm. When all fail, :class:`FetchExhausted` (an
+``ObjectUnfetchable``) carries every cause in order.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import itertools
+import math
+from collections.abc import Iterator
+from typing import Any
+
+from robocram.designators import ObjectDesignator, a, an
+from robocram.execution.failures import NavigationPoseUnreachable, PlanFailure
+from robocram.plans.attempt_log import AttemptLog
+from robocram.plans.basic_actions import detect, look, navigate, park_arms
+from robocram.plans.container_access import OpenedContainer
+from robocram.plans.errors import FetchExhausted
+from robocram.plans.location_poses import location_poses, next_pose
+from robocram.plans.pick_object import Held, pick_up_object
+from robocram.plans.robot_facts import current_robot, robot_arms
+from robocram.plans.stands import (
+    REACH_DISTANCES,
+    base_frame,
+    front_stands,
+    map_pose,
+    planar_pose,
+    yaw_of,
+)
+from robocram.tf import Pose, PoseStamped, transform_pose
+
+STAND_RETRIES = 3  # stands where picking up is tried before fetching gives up
+MAX_BLOCKED = 8  # stands where the robot would collide, skipped without a try
+
+
+def perceived(object: ObjectDesignator | str) -> ObjectDesignator:  # noqa: A002 - CRAM's key
+    """``object`` if perception already filled it in, else what detecting it now gives."""
+    if isinstance(object, ObjectDesignator) and object.get("pose") is not None:
+        return object
+    return detect(object)
+
+
+def _pick_from(
+    stand: Pose, seen: ObjectDesignator, where: PoseStamped, arm: str | None, grasp: str | None
+) -> Held:
+    """Drive to ``stand``, look at the object (``where``, map), detect it again, pick it up."""
+    park_arms()
+    navigate(stand)
+    look(where)
+    again = detect(an.object(type=seen.get("type"), name=seen.get("name")))
+    return pick_up_object(again, arm=arm, grasp=grasp)
+
+
+def square_up(robot: str) -> None:
+    """Turn the base in place to the nearest quarter turn (a costmaps workaround).
+
+    The occupancy layer measures the base's footprint from world-aligned bounds, which
+    grow when the base is turned (docs/transport.md, known limits): squared up, the
+    ``reachable_for`` costmap keeps the cells near a counter. A turn that would collide is
+    skipped; the stand is then resolved from where the robot stands.
+    """
+    here = map_pose(base_frame(robot))
+    yaw = yaw_of(here)
+    squared = round(yaw / (math.pi / 2)) * (math.pi / 2)
+    if abs(squared - yaw) < 1e-3:
+        return
+    with contextlib.suppress(NavigationPoseUnreachable):
+        navigate(planar_pose(here.position[0], here.position[1], squared))
+
+
+def _stands(
+    seen: ObjectDesignator,
+    where: PoseStamped,
+    arm: str | None,
+    opened: OpenedContainer | None,
+    causes: list[Exception],
+) -> Iterator[tuple[Pose, str | None]]:
+    """Stands (map) and the arm to use there: in front of an opened container first (the
+    costmap keeps a whole base radius off its open drawer), then ``reachable_for``'s."""
+    robot = current_robot()
+    if opened is not None:
+        arms = [arm] if arm is not None else robot_arms(robot)
+        out = yaw_of(opened.stand.pose) + math.pi  # the container's front faces the stand
+        for stand in front_stands(robot, arms, where.pose, out, REACH_DISTANCES):
+            yield stand.pose, stand.arm
+    square_up(robot)
+    keys: dict[str, Any] = {"arm": arm} if arm is not None else {}
+    poses = location_poses(a.location(reachable_for=robot, object=seen.get("name"), **keys))
+    while (pose := next_pose(poses, causes)) is not None:
+        yield pose, arm
+
+
+def fetch(
+    object: ObjectDesignator | str,  # noqa: A002 - CRAM's key
+    arm: str | None = None,
+    grasp: str | None = None,
+    stand_retries: int = STAND_RETRIES,
+    log: AttemptLog | None = None,
+    opened: OpenedContainer | None = None,
+) -> Held:
+    """Pick up the (perceived) object from a stand that reaches it; what the hand holds.
+
+    ``opened`` is the container the object lies in, if a search opened one.
+
+    Raises:
+        FetchExhausted: no stand within ``stand_retries`` led to the object being held.
+    """
+    if stand_retries < 1:
+        raise ValueError(f"stand_retries must be at least 1, got {stand_retries}")
+    log = log if log is not None else AttemptLog()
+    seen = perceived(object)
+    where = transform_pose(seen.get("pose"), "map")  # before the base moves: its frame moves
+    causes: list[Exception] = []
+    tries = 0
+    stands = _stands(seen, where, arm, opened, causes)
+    for pose, use_arm in itertools.islice(stands, stand_retries + MAX_BLOCKED):
+        try:
+            held = _pick_from(pose, seen, where, use_arm, grasp)
+        except NavigationPoseUnreachable as failure:  # in the way: the next stand, no try
+            causes.append(failure)
+            log.record("fetch", pose, failure)
+            continue
+        except PlanFailure as failure:
+            causes.append(failure)
+            log.record("fetch", pose, failure)
+            tries += 1
+            if tries >= stand_retries:
+                break
+            continue
+        log.record("fetch", pose, None)
+        return held
+    raise FetchExhausted(
+        f"could not fetch {seen.get('name')} in {tries} tries: "
+        + "; ".join(type(c).__name__ for c in causes[-5:]),
+        object_designator=seen,
+        causes=tuple(causes),
+        attempts=tries,
+    )

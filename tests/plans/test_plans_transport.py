@@ -1,0 +1,91 @@
+"""Transport in the kitchen: one plan, unchanged, on the PR2, the HSR and Boxy.
+
+The mug goes from the north counter to the table; afterwards the KB says it rests on the
+kitchen's table top and stays put when simulated, the arms are parked and any drawer the
+search opened is closed again. On the PR2 the bowl comes out of the top drawer too.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+import pytest
+
+from robocram.designators import a
+from robocram.plans.transport import TransportResult, transport
+from robocram.projection import simulated_robot
+from robocram.scenes import KitchenScene, kitchen_scene
+from robocram.world import World
+
+TABLE = ("kitchen", "table_top")
+DRAWER_JOINT = "drawer_unit_drawer_3_joint"
+
+
+@pytest.fixture(params=["pr2", "hsrb", "boxy"])
+def kitchen(request: pytest.FixtureRequest) -> Iterator[KitchenScene]:
+    scene = kitchen_scene(request.param)
+    yield scene
+    scene.world.close()
+
+
+def _transport(scene: KitchenScene, object_type: str, item: str) -> TransportResult:
+    with simulated_robot(scene.world, scene.robot):
+        return transport(object_type, a.location(on=TABLE, for_=item))
+
+
+def _on_the_table(world: World, item: str) -> None:
+    """``item`` is supported by the table top: it touches the kitchen there and nowhere
+    else, rests on the top face within its outline, is held by nobody, and the KB says it
+    stays put when simulated.
+
+    ``supported_by/3`` relates whole objects and the kitchen's bounds reach the ceiling,
+    so the table top (a link) is checked by its contacts and bounds.
+    """
+    assert world.kb.holds("world(W), contact(W, O, kitchen)", O=item)
+    assert world.kb.holds("world(W), stable(W, O)", O=item)
+    touching = {p.link_b for p in world.contact_points(item, "kitchen")}
+    assert touching == {"table_top"}
+    low, high = world.aabb(item)
+    table_low, table_high = world.link_aabb("kitchen", "table_top")
+    assert low[2] == pytest.approx(table_high[2], abs=0.01)
+    centre = ((low[0] + high[0]) / 2, (low[1] + high[1]) / 2)
+    assert table_low[0] < centre[0] < table_high[0] and table_low[1] < centre[1] < table_high[1]
+    assert world.attached_to(item) is None
+
+
+def _arms_parked(world: World, robot: str) -> None:
+    desc = world.robot(robot).description
+    joints = world.joint_states(robot)
+    for name, arm in desc.arms.items():
+        if name == desc.neck_arm:
+            continue
+        for joint, value in arm.parking.items():
+            assert joints[joint] == pytest.approx(value, abs=0.01), (name, joint)
+
+
+def test_the_mug_goes_from_the_counter_to_the_table(kitchen: KitchenScene) -> None:
+    world = kitchen.world
+    result = _transport(kitchen, "mug", "mug-1")
+    assert result.object_name == "mug-1"
+    _on_the_table(world, "mug-1")
+    assert world.pose("mug-1").position[:2] == pytest.approx(result.spot.position[:2], abs=0.03)
+    _arms_parked(world, kitchen.robot)
+    assert result.opened == []  # the mug stands on a counter: nothing to open
+    assert world.joint_states("kitchen")[DRAWER_JOINT] == pytest.approx(0.0, abs=0.01)
+
+
+def test_the_pr2_takes_the_bowl_out_of_the_drawer_to_the_table() -> None:
+    scene = kitchen_scene("pr2")
+    world = scene.world
+    result = _transport(scene, "bowl", "bowl-1")
+    assert [o.container.link for o in result.opened] == ["drawer_unit_drawer_3"]
+    assert [a.stage for a in result.log.attempts if a.succeeded] == [
+        "open",
+        "fetch",
+        "deliver",
+        "close",
+    ]
+    _on_the_table(world, "bowl-1")
+    assert world.joint_states("kitchen")[DRAWER_JOINT] == pytest.approx(0.0, abs=0.01)
+    _arms_parked(world, scene.robot)
+    world.close()
