@@ -13,17 +13,15 @@ from contextlib import contextmanager
 from dataclasses import dataclass
 
 import numpy as np
-from numpy.typing import NDArray
 
 from robocram.costmaps.camera_aim import aimed_camera
 from robocram.costmaps.cost_layer import LocationQuery
 from robocram.costmaps.errors import CostmapInputError
-from robocram.costmaps.grasps import approach_axis, grasp_point, grasp_poses
+from robocram.costmaps.grasps import GRASP_YAWS, approach_axis, grasp_point, grasp_poses, top_down
 from robocram.costmaps.reachability_map import ReachabilityMaps
 from robocram.kinematics import BaseMotion, IKResult, PlanarBase, base_in_ik, solve_ik
 from robocram.robots import RobotDescription
 from robocram.tf import Pose, Vector3
-from robocram.tf import quaternion as quat
 from robocram.world import Camera, RobotObject, World, WorldObject
 from robocram.world.link_contacts import link_contacts
 from robocram.world.visibility import ray_visibility
@@ -33,7 +31,6 @@ VISIBLE_FRACTION = 0.9  # share of the object the aimed camera must see
 VISIBILITY_RAYS = 12  # rays per side of the grid over the object's outline (world: 24)
 SEEN_WITHIN = 0.02  # [m] a ray to a target point stopping this close to it sees it
 STAND_TRAVEL = PlanarBase(0.25, 0.25, math.pi / 4)  # a base-in-IK arm's adjustment at a stand
-POINT_YAWS = (0.0, math.pi / 2, math.pi, -math.pi / 2)  # [rad] tool turns over a target point
 IK_RESTARTS = 30  # random restarts per grasp: a miss costs a bounded, counted budget
 STAND_IK_RESTARTS = 2  # per grasp when judging a candidate stand: a reachable grasp
 # converges in the first descents (kitchen, PR2/HSR/Boxy), a miss at 30 costs ~7 ms a grasp;
@@ -194,7 +191,7 @@ def reach_point(
         world,
         robot,
         point,
-        lambda name: [Pose(in_base, top_down(approach_axis(desc, name), y)) for y in POINT_YAWS],
+        lambda name: [Pose(in_base, top_down(approach_axis(desc, name), y)) for y in GRASP_YAWS],
         base,
         arm,
         maps,
@@ -221,18 +218,6 @@ def _reach(
             if result.success:
                 return Reach(name, dict(result.joint_positions), target, result.base_motion)
     return None
-
-
-def top_down(axis_in_tool: NDArray[np.float64], yaw: float) -> quat.Quaternion:
-    """Tool orientation that points ``axis_in_tool`` straight down, turned by ``yaw``."""
-    down = np.array((0.0, 0.0, -1.0))
-    turn = np.cross(axis_in_tool, down)
-    angle = math.atan2(float(np.linalg.norm(turn)), float(axis_in_tool @ down))
-    if np.linalg.norm(turn) < 1e-9:
-        turn = np.array((1.0, 0.0, 0.0))
-    unit = turn / np.linalg.norm(turn)
-    aligned = quat.from_axis_angle((float(unit[0]), float(unit[1]), float(unit[2])), angle)
-    return quat.multiply(quat.from_euler(0.0, 0.0, yaw), aligned)
 
 
 def hopeful_arms(
