@@ -31,6 +31,7 @@ from robocram.costmaps.reachability_map import (
     build_reachability_map,
     cache_dir,
 )
+from robocram.costmaps.stand_reach import reach_to_pick, reach_to_place
 from robocram.costmaps.validators import Reach, reach_object
 
 __all__ = [
@@ -57,6 +58,8 @@ __all__ = [
     "observing_costmaps",
     "pose_reachable",
     "reach_object",
+    "reach_to_pick",
+    "reach_to_place",
     "reachable",
     "ring",
 ]

@@ -50,6 +50,8 @@ class LocationQuery:
     grid: CostmapGrid
     robot: RobotObject | None
     reach_maps: ReachabilityMaps = field(default_factory=ReachabilityMaps)
+    memo: dict[Any, Any] = field(default_factory=dict, repr=False)  # per resolution: what
+    # validators work out once for all candidates (an object's shape, its grasp names)
 
     def centres(self) -> tuple[FloatGrid, FloatGrid]:
         """Map x and y [m] of the cell centres."""

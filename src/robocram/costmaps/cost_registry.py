@@ -1,4 +1,5 @@
-"""The cost functions ``location_keys.pl`` names, by name (copied into each locator)."""
+"""The cost functions and validators ``location_keys.pl`` names, by name (copied into each
+locator)."""
 
 from __future__ import annotations
 
@@ -15,7 +16,14 @@ from robocram.costmaps.relation_costs import (
     left_of_cost,
     right_of_cost,
 )
+from robocram.costmaps.stand_reach import reachable
 from robocram.costmaps.surface_costs import in_cost, on_cost
+from robocram.costmaps.validators import (
+    Validator,
+    object_collision_free,
+    robot_collision_free,
+    visible,
+)
 from robocram.costmaps.visibility_cost import visibility_cost
 
 BUILTIN_COST_FUNCTIONS: Mapping[str, CostFunction] = MappingProxyType(
@@ -30,5 +38,14 @@ BUILTIN_COST_FUNCTIONS: Mapping[str, CostFunction] = MappingProxyType(
         "reachability": reachability_cost,
         "right_of": right_of_cost,
         "visibility": visibility_cost,
+    }
+)
+
+BUILTIN_VALIDATORS: Mapping[str, Validator] = MappingProxyType(
+    {
+        "object_collision_free": object_collision_free,
+        "reachable": reachable,
+        "robot_collision_free": robot_collision_free,
+        "visible": visible,
     }
 )

@@ -20,16 +20,17 @@ from typing import Any, Literal, TypeVar
 import numpy as np
 
 from robocram.costmaps.cost_layer import CellRefiner, CostFunction, CostLayer, LocationQuery
-from robocram.costmaps.cost_registry import BUILTIN_COST_FUNCTIONS
+from robocram.costmaps.cost_registry import BUILTIN_COST_FUNCTIONS, BUILTIN_VALIDATORS
 from robocram.costmaps.costmap import Costmap
 from robocram.costmaps.costmap_observers import notify_costmap
 from robocram.costmaps.errors import CostmapInputError, LocationNotFound
 from robocram.costmaps.grid import CostmapGrid
 from robocram.costmaps.location_keys import LocationPlan, install_location_keys, plan_location
+from robocram.costmaps.place_reach import held_objects
 from robocram.costmaps.reach_reasoning import install_reach_predicates
 from robocram.costmaps.reachability_map import ReachabilityMaps
-from robocram.costmaps.validators import BUILTIN_VALIDATORS, Validator, parked
-from robocram.designators import LocationResolver
+from robocram.costmaps.validators import Validator, parked
+from robocram.designators import LocationDesignator, LocationResolver
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
 from robocram.world import RobotObject, World
@@ -82,6 +83,7 @@ class CostmapLocations:
         """The grid and robot the designator's costmap is built for."""
         plan = plan or self.plan(designator)
         robot = self._robot(designator, plan)
+        designator = _with_holding_arm(self.world, designator, plan, robot)
         resolution = designator.get("resolution", self.resolution)
         size = designator.get("size", self.size)
         probe = LocationQuery(self.world, designator, CostmapGrid((0, 0), 1.0, (1, 1)), robot)
@@ -206,6 +208,21 @@ def _registered(registry: dict[str, _Function], name: str, rule: str, adder: str
             name,
         )
     return found
+
+
+def _with_holding_arm(
+    world: World, designator: Any, plan: LocationPlan, robot: RobotObject | None
+) -> Any:
+    """A ``reachable_for`` target for a robot holding something in one hand is where that
+    hand puts it down: the designator with ``arm`` set to it (unless it names an arm)."""
+    if robot is None or plan.robot_key != "reachable_for" or designator.get("object") is not None:
+        return designator
+    if designator.get("arm") is not None or designator.get("target") is None:
+        return designator
+    arms = {arm for arm, _ in held_objects(world, robot)}
+    if len(arms) != 1:
+        return designator
+    return LocationDesignator(*designator.properties, ("arm", arms.pop()))
 
 
 def _anchor(query: LocationQuery, plan: LocationPlan) -> tuple[float, float, float]:

@@ -92,3 +92,8 @@ def erode(mask: BoolGrid, radius_cells: float, outside: bool = False) -> BoolGri
             if dr * dr + dc * dc <= radius_cells * radius_cells:
                 out &= padded[reach + dr : reach + dr + rows, reach + dc : reach + dc + cols]
     return out
+
+
+def dilate(mask: BoolGrid, radius_cells: float) -> BoolGrid:
+    """Cells within ``radius_cells`` of a cell of ``mask``."""
+    return ~erode(~mask, radius_cells, outside=True)

@@ -2,10 +2,12 @@
 % Fact group "location_costmaps"; every predicate here is extendable from other groups.
 
 % location_cost(Key, Function): the key adds the layer of the Python cost function Function.
-location_cost(visible_for, occupancy).
+% Layers are built in this order, each only over the cells the ones before left possible:
+% cheap layers that rule out most cells come first.
 location_cost(visible_for, visibility).
-location_cost(reachable_for, occupancy).
+location_cost(visible_for, occupancy).
 location_cost(reachable_for, reachability).
+location_cost(reachable_for, occupancy).
 location_cost(on, on).
 location_cost(in_, inside).
 location_cost(near, near).

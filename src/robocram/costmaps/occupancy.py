@@ -4,27 +4,31 @@ The footprint radius comes from the robot itself: the links fixed to its root li
 mobile base) as loaded from its URDF, measured in the world. Every other object whose
 bounds reach into the robot's height band blocks the cells within that radius of it.
 Articulated objects (a kitchen) block link by link, so a counter does not block the room;
-a part wider than :data:`LARGE_PART` (the walls around it) is probed instead, one ray
-down each cell.
+a part wider than :data:`LARGE_PART` both ways (all of a room's walls in one link, whose
+bounds would cover the room) is probed instead, one ray down each cell. A long, thin part
+(one wall, a counter top) blocks by its bounds: a probe ray starting inside a wall taller
+than the robot would not see it.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
+from contextlib import contextmanager
 from typing import Any
 
 import numpy as np
 
 from robocram.costmaps.cost_layer import CostLayer, LocationQuery
 from robocram.costmaps.errors import CostmapInputError
-from robocram.costmaps.grid import BoolGrid, FloatGrid, erode
+from robocram.costmaps.grid import BoolGrid, FloatGrid, dilate, erode
 from robocram.costmaps.out_of_the_way import out_of_the_way
-from robocram.costmaps.rays import cast_rays
-from robocram.tf import Vector3
+from robocram.tf import Pose, Vector3
 from robocram.world import RobotObject, World
+from robocram.world.ray_hit import first_hit_bodies
 
 FLOOR_CLEARANCE = 0.02  # [m] bounds lower than this are the floor, not obstacles
-LARGE_PART = 1.5  # [m] parts wider than this (walls around a room) are probed by rays
+LARGE_PART = 1.5  # [m] parts wider than this both ways (a room's walls) are probed by rays
 
 Box = tuple[Vector3, Vector3]
 
@@ -43,19 +47,38 @@ def base_links(robot: RobotObject) -> list[str]:
 
 
 def footprint_radius(world: World, robot: RobotObject) -> float:
-    """Radius [m] around the base origin that holds the base links' x-y extents."""
+    """Radius [m] around the base origin that holds the base links' x-y extents.
+
+    Measured with the base turned to the map's axes for a moment (bounds are axis-aligned:
+    a base turned by 45 degrees would seem 1.4 times as wide), then put back exactly.
+    """
     base = world.pose(robot)
-    inverse = base.inverse().matrix()
+    upright = Pose(base.position)
     radius = 0.0
-    for link in base_links(robot):
-        low, high = world.link_aabb(robot, link)
-        if high[2] - low[2] <= 0 or high[0] - low[0] > 5:  # frames without geometry
-            continue
-        for x in (low[0], high[0]):
-            for y in (low[1], high[1]):
-                local = inverse[:2, :2] @ np.array([x, y]) + inverse[:2, 3]
-                radius = max(radius, float(math.hypot(local[0], local[1])))
+    with placed_for_a_moment(world, robot, upright):
+        for link in base_links(robot):
+            low, high = world.link_aabb(robot, link)
+            if high[2] - low[2] <= 0 or high[0] - low[0] > 5:  # frames without geometry
+                continue
+            for x in (low[0], high[0]):
+                for y in (low[1], high[1]):
+                    dx, dy = x - upright.position[0], y - upright.position[1]
+                    radius = max(radius, float(math.hypot(dx, dy)))
     return radius
+
+
+@contextmanager
+def placed_for_a_moment(world: World, robot: RobotObject, pose: Pose) -> Iterator[None]:
+    """``robot`` (and what it carries) at ``pose`` for the block; back where it was after."""
+    before = world.pose(robot)
+    if before == pose:
+        yield
+        return
+    world.set_pose(robot, pose)
+    try:
+        yield
+    finally:
+        world.set_pose(robot, before)
 
 
 def robot_height(world: World, robot: RobotObject) -> float:
@@ -78,45 +101,77 @@ def obstacle_boxes(world: World, robot: RobotObject | None, top: float) -> tuple
         for low, high in parts or [world.aabb(obj)]:
             if not (high[2] > FLOOR_CLEARANCE and low[2] < top):
                 continue
-            if max(high[0] - low[0], high[1] - low[1]) > LARGE_PART:
+            if min(high[0] - low[0], high[1] - low[1]) > LARGE_PART:
                 large = True
             else:
                 boxes.append((low, high))
     return boxes, large
 
 
-def probed_free(query: LocationQuery, robot: RobotObject, top: float) -> BoolGrid:
-    """Cells whose column ``FLOOR_CLEARANCE..top`` holds nothing, by one ray down each."""
+def probed_free(
+    query: LocationQuery, robot: RobotObject, top: float, where: BoolGrid | None = None
+) -> BoolGrid:
+    """Cells whose column ``FLOOR_CLEARANCE..top`` holds nothing, by one ray down each.
+
+    Only the cells of ``where`` (default all) are probed; the others count as free.
+    """
     x, y = query.centres()
-    starts = [(float(a), float(b), top) for a, b in zip(x.ravel(), y.ravel(), strict=True)]
-    ends = [(a, b, FLOOR_CLEARANCE) for a, b, _ in starts]
+    cells = np.ones(query.grid.shape, dtype=bool) if where is None else where
+    xs, ys = x[cells], y[cells]
+    starts = np.column_stack([xs, ys, np.full(len(xs), top)])
+    ends = np.column_stack([xs, ys, np.full(len(xs), FLOOR_CLEARANCE)])
     carried = [query.world.object(name) for name in query.world.attachments(robot)]
     with out_of_the_way(query.world, [robot, *carried]):
-        hits = cast_rays(query.world, starts, ends)
-    return np.array([hit is None for hit in hits], dtype=bool).reshape(query.grid.shape)
+        bodies = first_hit_bodies(query.world, starts, ends)
+    free = np.ones(query.grid.shape, dtype=bool)
+    free[cells] = bodies < 0
+    return free
 
 
-def free_cells(query: LocationQuery, boxes: list[Box], radius: float) -> FloatGrid:
-    """1 in cells farther than ``radius`` [m] from every box, 0 elsewhere."""
-    x, y = query.centres()
-    free = np.ones(query.grid.shape)
+def free_cells(
+    query: LocationQuery, boxes: list[Box], radius: float, where: BoolGrid | None = None
+) -> FloatGrid:
+    """1 in cells farther than ``radius`` [m] from every box, 0 elsewhere.
+
+    Each box is only measured against the window of cells its ``radius`` reaches, and
+    only boxes whose window holds a cell of ``where`` (default all) are measured.
+    """
+    grid = query.grid
+    x0, y0 = grid.origin
+    res, (rows, cols) = grid.resolution, grid.shape
+    free = np.ones(grid.shape)
     for low, high in boxes:
-        dx = np.maximum(np.maximum(low[0] - x, x - high[0]), 0.0)
-        dy = np.maximum(np.maximum(low[1] - y, y - high[1]), 0.0)
-        free[np.hypot(dx, dy) < radius] = 0.0
+        c0 = max(0, math.floor((low[0] - radius - x0) / res))
+        c1 = min(cols, math.ceil((high[0] + radius - x0) / res) + 1)
+        r0 = max(0, math.floor((low[1] - radius - y0) / res))
+        r1 = min(rows, math.ceil((high[1] + radius - y0) / res) + 1)
+        if c0 >= c1 or r0 >= r1 or (where is not None and not where[r0:r1, c0:c1].any()):
+            continue
+        xs = x0 + res * np.arange(c0, c1)
+        ys = y0 + res * np.arange(r0, r1)
+        dx = np.maximum(np.maximum(low[0] - xs, xs - high[0]), 0.0)
+        dy = np.maximum(np.maximum(low[1] - ys, ys - high[1]), 0.0)
+        near = np.hypot(dx[None, :], dy[:, None]) < radius
+        free[r0:r1, c0:c1][near] = 0.0
     return free
 
 
 def occupancy_cost(query: LocationQuery, value: Any, alive: BoolGrid) -> CostLayer:
-    """Rule out cells where the robot's base (radius from its URDF) would hit an obstacle."""
+    """Rule out cells where the robot's base (radius from its URDF) would hit an obstacle.
+
+    Only the cells earlier layers left ``alive`` are decided (the probes reach the cells
+    around them that the base would cover).
+    """
     robot = query.robot
     if robot is None:
         return CostLayer(np.ones(query.grid.shape))
     radius = footprint_radius(query.world, robot)
     top = robot_height(query.world, robot)
     boxes, large = obstacle_boxes(query.world, robot, top)
-    free = free_cells(query, boxes, radius)
+    free = free_cells(query, boxes, radius, alive)
     if large:  # parts whose bounds would cover the room are probed cell by cell
-        probed = erode(probed_free(query, robot, top), radius / query.grid.resolution, True)
+        reach = radius / query.grid.resolution
+        around = dilate(alive & (free > 0), reach)
+        probed = erode(probed_free(query, robot, top, around), reach, True)
         free = free * probed
     return CostLayer(free)

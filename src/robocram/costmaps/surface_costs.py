@@ -42,7 +42,8 @@ def _surface(query: LocationQuery, value: Any, key: str, alive: BoolGrid) -> Cos
     low, high = query.bounds(value, key)
     placed, radius, lift = _placed(query)
     x, y = query.centres()
-    cells = np.argwhere(alive)
+    over = (x >= low[0]) & (x <= high[0]) & (y >= low[1]) & (y <= high[1])
+    cells = np.argwhere(alive & over)  # a ray straight down elsewhere cannot meet the support
     top = high[2] - 0.01 if inside else high[2] + 0.5
     starts = [(float(x[r, c]), float(y[r, c]), top) for r, c in cells]
     ends = [(sx, sy, low[2] - 0.01) for sx, sy, _ in starts]

@@ -1,8 +1,10 @@
 """How much of an object a camera sees, by batched ray casts or by a small render.
 
 Both methods compare the object as the camera sees it in the scene with the object alone.
-"Alone" is cheap: the object and the camera are both shifted far up, out of everyone's
-way (:data:`ISOLATION_OFFSET`), looked at, and put back exactly. The fraction counts parts
+For rays, "alone" is computed from the object's collision shapes in numpy (Bullet's ray
+tests against mesh parts are slow); for renders, and for shapes not modelled there, the
+object and the camera are both shifted far up, out of everyone's way
+(:data:`ISOLATION_OFFSET`), looked at, and put back exactly. The fraction counts parts
 outside the field of view as unseen, so an object half out of the image is half visible.
 """
 
@@ -18,10 +20,13 @@ from numpy.typing import NDArray
 
 from robocram.tf import Vector3
 from robocram.world.camera import Camera
+from robocram.world.ray_hit import first_hit_bodies
+from robocram.world.shape_rays import lone_body
 from robocram.world.world_core import WorldCore
 from robocram.world.world_object import WorldObject
 
 ISOLATION_OFFSET = (0.0, 0.0, 1000.0)  # [m] far above any scene, beyond every camera's far
+SURFACE_GAP = 1e-3  # [m] scene rays stop this short of the object's surface
 
 
 @dataclass(frozen=True)
@@ -93,26 +98,57 @@ def _tangent_grid(
 
 def _first_hits(world: WorldCore, camera: Camera, tangents: NDArray[np.float64]) -> list[int]:
     starts, ends = camera.ray_ends(tangents)
-    hits = pybullet.rayTestBatch(
-        starts.tolist(), ends.tolist(), physicsClientId=world.physics_client()
-    )
+    hits = pybullet.rayTestBatch(starts, ends, physicsClientId=world.physics_client())
     return [int(h[0]) for h in hits]
 
 
 def ray_visibility(
     world: WorldCore, camera: Camera, obj: WorldObject, grid: int = 24
 ) -> Visibility:
-    """Visibility of ``obj`` from ``camera`` by ``grid`` x ``grid`` rays over its outline."""
+    """Visibility of ``obj`` from ``camera`` by ``grid`` x ``grid`` rays over its outline.
+
+    Where each ray would meet the object alone comes from its collision shapes
+    (:mod:`~robocram.world.shape_rays`); Bullet then casts only the rays that meet it and
+    lie in view, each up to just short of the object (moved out of their way), so whatever
+    such a ray hits hides that part of the object.
+    """
     tangents = _tangent_grid(world, camera, obj, grid)
     if tangents is None:
         return Visibility(0.0, (), 0)
+    lone = lone_body(world, obj)
+    if lone is None:  # a shape we do not model: Bullet casts against the object alone
+        return _bullet_ray_visibility(world, camera, obj, tangents)
+    starts, ends = camera.ray_ends(tangents)
+    length = np.linalg.norm(ends - starts, axis=1)
+    dirs = (ends - starts) / length[:, None]
+    depth = lone.first_hit(starts, dirs, length)
+    on_object = np.isfinite(depth)
+    total = int(np.count_nonzero(on_object))
+    if total == 0:
+        return Visibility(0.0, (), 0)
+    look = on_object & _in_view(camera, tangents)
+    short = np.maximum(depth[look] - SURFACE_GAP, 0.0)[:, None]
+    with isolated(world, obj):
+        scene = first_hit_bodies(world, starts[look], starts[look] + dirs[look] * short)
+    seen = int(np.count_nonzero(scene < 0))
+    return Visibility(seen / total, _names(world, set(scene[scene >= 0].tolist())), total)
+
+
+def _in_view(camera: Camera, tangents: NDArray[np.float64]) -> NDArray[np.bool_]:
+    th, tv = camera.tan_half
+    return np.asarray((np.abs(tangents[:, 0]) <= th) & (np.abs(tangents[:, 1]) <= tv))
+
+
+def _bullet_ray_visibility(
+    world: WorldCore, camera: Camera, obj: WorldObject, tangents: NDArray[np.float64]
+) -> Visibility:
+    """:func:`ray_visibility` with Bullet casting against the object alone too (slower)."""
     with isolated(world, obj):
         alone = _first_hits(world, camera.shifted(ISOLATION_OFFSET), tangents)
     on_object = tangents[np.array(alone) == obj.body_id]
     if len(on_object) == 0:
         return Visibility(0.0, (), 0)
-    th, tv = camera.tan_half
-    in_view = (np.abs(on_object[:, 0]) <= th) & (np.abs(on_object[:, 1]) <= tv)
+    in_view = _in_view(camera, on_object)
     scene = np.array(_first_hits(world, camera, on_object))
     seen = int(np.count_nonzero((scene == obj.body_id) & in_view))
     blockers = set(scene[in_view & (scene != obj.body_id) & (scene >= 0)].tolist())
