@@ -33,6 +33,8 @@ command per gripper, in order.
 
 from __future__ import annotations
 
+import weakref
+
 from robocram.designators.motion_table import motion_types
 from robocram.designators.motion_type import grounding_rules
 from robocram.designators.prolog_access import install_designator_predicates
@@ -40,6 +42,9 @@ from robocram.logic import KnowledgeBase
 
 COMMON_MOTIONS_GROUP = "common_motions"
 FAMILY_GROUPS = {"common": COMMON_MOTIONS_GROUP, "flying": "flying_motions"}
+# the text last consulted per knowledge base and family: entering projection again with
+# the same motion table (every ``simulated_robot`` does) need not parse it again
+_INSTALLED: weakref.WeakKeyDictionary[KnowledgeBase, dict[str, str]] = weakref.WeakKeyDictionary()
 
 _HELPERS = """
 common_target_pose(Target, Pose) :- loc_desig(Target), !, designator_grounding(Target, Pose).
@@ -62,8 +67,17 @@ def install_motion_family(kb: KnowledgeBase, family: str) -> KnowledgeBase:
     install_designator_predicates(kb)
     if family != "common" and "common_target_pose/2" not in kb.predicates():
         install_motion_family(kb, "common")
-    kb.consult(common_motions_text(family), group=FAMILY_GROUPS[family])
+    text = common_motions_text(family)
+    installed = _INSTALLED.setdefault(kb, {})
+    if installed.get(family) != text or not _still_there(kb, family):
+        kb.consult(text, group=FAMILY_GROUPS[family])
+        installed[family] = text
     return kb
+
+
+def _still_there(kb: KnowledgeBase, family: str) -> bool:
+    """Whether the family's groundings are (still) in ``kb``: its first rule's predicate."""
+    return f"{family}_target_pose/2" in kb.predicates() if family == "common" else True
 
 
 def install_common_motions(kb: KnowledgeBase) -> KnowledgeBase:

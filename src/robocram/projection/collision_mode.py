@@ -63,15 +63,14 @@ def colliding_pairs(
     world.set_joint_states(robot.name, dict(joints))
     try:
         held = set(world.attachments(robot.name))
+        ignore = [o for o in world.objects() if o.name in held or o.type == "floor"]
         hits: dict[tuple[str, str], None] = {}
-        for obj in world.objects():
-            if obj.name == robot.name or obj.name in held or obj.type == "floor":
-                continue
-            several = len(world.link_names(obj)) > 1
-            for point in world.contact_points(robot.name, obj, distance=CONTACT_DISTANCE):
-                if point.link_a not in allowed_links:
-                    other = f"{obj.name}/{point.link_b}" if several else obj.name
-                    hits[(point.link_a, other)] = None
+        for link, obj, other_link in world.link_pairs_in_contact(
+            robot.name, ignore, CONTACT_DISTANCE
+        ):
+            if link not in allowed_links:
+                several = len(world.link_names(obj)) > 1
+                hits[(link, f"{obj.name}/{other_link}" if several else obj.name)] = None
         return list(hits)
     finally:
         world.set_joint_states(robot.name, before)

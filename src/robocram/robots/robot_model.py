@@ -174,8 +174,15 @@ class RobotModel:
         return RobotModel(self.name, links, joints, self.source)
 
     def to_urdf(self, path: Path | None = None) -> str:
-        """URDF XML of this model (absolute mesh paths); also written to ``path`` if given."""
-        text = write_urdf(self.name, self.links.values(), self.joints.values())
+        """URDF XML of this model (absolute mesh paths); also written to ``path`` if given.
+
+        Written once per model (a model is never changed: ``with_frame`` makes a new one),
+        since caches key on it and a PR2's text takes milliseconds to write.
+        """
+        text = self.__dict__.get("_urdf_text")
+        if text is None:
+            text = write_urdf(self.name, self.links.values(), self.joints.values())
+            object.__setattr__(self, "_urdf_text", text)
         if path is not None:
             Path(path).write_text(text, encoding="utf-8")
         return text

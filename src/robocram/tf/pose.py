@@ -24,10 +24,10 @@ PoseLike = Union["Pose", Sequence[float], tuple[Sequence[float], Sequence[float]
 def _vector3(v: Sequence[float], what: str) -> Vector3:
     if len(v) != 3:
         raise ValueError(f"{what} needs 3 components (x, y, z) [m], got {len(v)}: {v!r}")
-    out = (float(v[0]), float(v[1]), float(v[2]))
-    if not all(math.isfinite(c) for c in out):
+    x, y, z = float(v[0]), float(v[1]), float(v[2])
+    if not (math.isfinite(x) and math.isfinite(y) and math.isfinite(z)):  # poses are hot
         raise ValueError(f"{what} {v!r} has a non-finite component")
-    return out
+    return (x, y, z)
 
 
 @dataclass(frozen=True)

@@ -18,10 +18,11 @@ def normalized(q: tuple[float, ...] | list[float]) -> Quaternion:
     """Return ``q`` scaled to unit length; raise on a zero or non-4 vector."""
     if len(q) != 4:
         raise ValueError(f"a quaternion has 4 components (x, y, z, w), got {len(q)}: {q!r}")
-    n = math.sqrt(sum(float(c) * float(c) for c in q))
+    x, y, z, w = float(q[0]), float(q[1]), float(q[2]), float(q[3])
+    n = math.sqrt(x * x + y * y + z * z + w * w)  # the same sum, bit for bit, as ever
     if n < 1e-12 or not math.isfinite(n):
         raise ValueError(f"quaternion {q!r} has no direction; use (0, 0, 0, 1) for no rotation")
-    return (float(q[0]) / n, float(q[1]) / n, float(q[2]) / n, float(q[3]) / n)
+    return (x / n, y / n, z / n, w / n)
 
 
 def multiply(a: Quaternion, b: Quaternion) -> Quaternion:

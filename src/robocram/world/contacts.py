@@ -6,8 +6,6 @@ count as colliding with each other; a robot's self-collisions are not checked ei
 
 from __future__ import annotations
 
-from collections.abc import Iterable
-
 import pybullet
 
 from robocram.world.contact_point import ContactPoint
@@ -80,24 +78,8 @@ def closest_points(
     ]
 
 
-def touching(world: WorldCore, a: WorldObject, b: WorldObject, distance: float) -> bool:
-    """Whether the closest points of ``a`` and ``b`` are nearer than ``distance`` [m]."""
-    return bool(closest_points(world, a, b, distance))
-
-
-def collisions(
-    world: WorldCore,
-    obj: WorldObject,
-    ignore: Iterable[WorldObject] = (),
-    distance: float = CONTACT_DISTANCE,
-) -> list[WorldObject]:
-    """Objects in contact with or penetrating ``obj``, except attached ones and ``ignore``."""
-    skip = _carried_with(world, obj) | {o.name for o in ignore}
-    return [o for o in world.objects() if o.name not in skip and touching(world, obj, o, distance)]
-
-
 def contact(world: WorldCore, a: WorldObject, b: WorldObject) -> bool:
     """Whether ``a`` and ``b`` touch; never for a robot and what it carries."""
     if a is b or b.name in _carried_with(world, a):
         return False
-    return touching(world, a, b, CONTACT_DISTANCE)
+    return bool(closest_points(world, a, b, CONTACT_DISTANCE))

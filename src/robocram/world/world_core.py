@@ -252,11 +252,9 @@ class WorldCore:
         limits = {name: self.joint_limits(handle, name) for name in values}
         applied, clamped = clamp_values(values, limits)
         applied.update(self._mimic_values(handle, applied))
-        cid = self.physics_client()
-        for name, value in applied.items():
-            index = handle.joint_index[name]
-            pybullet.resetJointState(handle.body_id, index, value, 0.0, physicsClientId=cid)
-            self._holds.setdefault(handle.name, {})[index] = value
+        by_index = {handle.joint_index[name]: value for name, value in applied.items()}
+        _reset_joints(handle.body_id, by_index, self.physics_client())
+        self._holds.setdefault(handle.name, {}).update(by_index)
         self._follow(handle.name)
         return clamped
 
@@ -350,9 +348,7 @@ class WorldCore:
         self.time += self.time_step
         for name, held in self._holds.items():
             if held and isinstance(self._objects[name], RobotObject):
-                body = self._objects[name].body_id
-                for index, value in held.items():
-                    pybullet.resetJointState(body, index, value, 0.0, physicsClientId=cid)
+                _reset_joints(self._objects[name].body_id, held, cid)
         for carrier in {a.robot for a in self._attachments.values()}:
             self._follow(carrier)
 
@@ -371,6 +367,18 @@ class WorldCore:
                 stop_check()
             self.step()
         return steps
+
+
+def _reset_joints(body: int, values: Mapping[int, float], cid: int) -> None:
+    """Put one-DoF joints (by index) at ``values`` [rad | m] at rest, in one call."""
+    if values:
+        pybullet.resetJointStatesMultiDof(
+            body,
+            list(values),
+            targetValues=[[v] for v in values.values()],
+            targetVelocities=[[0.0]] * len(values),
+            physicsClientId=cid,
+        )
 
 
 def _check_time_step(time_step: float) -> None:
