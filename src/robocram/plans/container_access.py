@@ -15,6 +15,7 @@ from robocram.logic import current_kb
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import navigate, park_arms
 from robocram.plans.containers import Container, close_container, container, open_container
+from robocram.plans.environment_links import environment_link_pose
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.robot_facts import current_robot, robot_arms
 from robocram.plans.stands import HandleStand, handle_stands
@@ -37,15 +38,7 @@ def is_container(environment: str, link: str) -> bool:
 
 
 def _handle_pose(part: Container) -> Pose:
-    answer = current_kb().first(
-        "world(W), link_pose(W, E, L, P)", E=part.environment, L=part.handle
-    )
-    if answer is None:
-        raise PlanSetupError(
-            f"the KB names handle {part.handle!r} of {part.environment!r}, but the world has "
-            "no such link; regenerate the scene's facts"
-        )
-    return Pose.coerce(answer["P"])
+    return environment_link_pose(part.environment, part.handle, "a handle")
 
 
 def _is_drawer(part: Container) -> bool:

@@ -23,7 +23,8 @@ from robocram.logic import current_kb
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import detect, look, move_torso, park_arms
 from robocram.plans.container_access import OpenedContainer, is_container, open_from_front
-from robocram.plans.errors import PlanSetupError, SearchExhausted
+from robocram.plans.environment_links import environment_link_pose
+from robocram.plans.errors import SearchExhausted
 from robocram.plans.robot_facts import current_robot
 from robocram.tf import PoseStamped
 
@@ -59,15 +60,8 @@ def candidate_places(object_type: str) -> list[Place]:
 
 def place_point(place: Place) -> PoseStamped:
     """The point a robot looks at to see ``place``: a little above its link frame (map)."""
-    answer = current_kb().first(
-        "world(W), link_pose(W, E, L, P)", E=place.environment, L=place.link
-    )
-    if answer is None:
-        raise PlanSetupError(
-            f"the KB names {place.link!r} of {place.environment!r} as a place, but the world "
-            "has no such link; regenerate the scene's facts"
-        )
-    x, y, z = answer["P"].position
+    pose = environment_link_pose(place.environment, place.link, "a place")
+    x, y, z = pose.position
     return PoseStamped("map", (x, y, z + LOOK_ABOVE))
 
 
