@@ -205,3 +205,12 @@ def test_identity_tests_inline_and_as_builtins_agree() -> None:
         assert not kb.holds("in(1, [1.0])")
         assert kb.holds("other(1, 1.0), \\+ other(a, a), X = Y, \\+ other(X, Y)")
     assert kb.holds("_X = f(_X), _Y = f(_Y), _X == _Y")  # cyclic terms end
+
+
+def test_later_clauses_see_arguments_as_called_after_a_shared_variable_was_bound() -> None:
+    kb = KnowledgeBase()
+    kb.consult("q([], []). q([a], [a]).\nr([], b). r([x], [x]).")
+    # q(X, X): binding X for the first argument must not leak into the second argument
+    # that the next clause (or the choicepoint) reads after the binding is undone.
+    assert answers(kb, "q(X, X)", "X", times=6) == [[], ["a"]]
+    assert answers(kb, "r(X, X)", "X", times=6) == [["x"]]

@@ -195,8 +195,12 @@ class ClauseWriter:
             if i == 0 and switched and type(p) is Tmpl:
                 self.read_args(p.args, "a0[1]", 1)
             elif not (i == 0 and switched and type(p) in (str, int)):
-                self.unify_arg(p, f"a{i}", 1)
+                self.unify_arg(p, self.arg_local(i, p), 1)
         self.body_code(clause, list(reversed(clause.body_rev)))
+
+    def arg_local(self, i: int, p: Any) -> str:
+        """The local to unify head argument `i` (template `p`) with; unify_arg derefs it."""
+        return f"a{i}"
 
     def body_code(self, clause: ClauseCode, body: list[Any]) -> None:
         """Emit the leading inline goals of `body`, then its exit."""

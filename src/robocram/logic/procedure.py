@@ -31,7 +31,7 @@ from typing import Any
 from robocram.logic.choicepoints import PROC
 from robocram.logic.codegen import ClauseCode, ClauseWriter, make_factory
 from robocram.logic.limits import CHECK_EVERY
-from robocram.logic.template import Tmpl
+from robocram.logic.template import Slot, Tmpl
 from robocram.logic.terms import Term
 
 __all__ = ["MAX_CLAUSES", "SCAN_AFTER", "Procedure", "Scan", "compile_procedure"]
@@ -259,6 +259,20 @@ class _ProcWriter(ClauseWriter):
             self.emit("if start < 0: start = 0; continue", depth + 1)
             self.emit("while len(trail) > mark: trail.pop().ref = None", depth + 1)
         self.base = 0
+
+    def arg_local(self, i: int, p: Any) -> str:
+        """A copy of argument `i` when a later clause of the branch may still read it.
+
+        Unifying a head argument dereferences its local in place; past the first
+        argument, an earlier argument's binding may be followed there, which undoing the
+        trail does not reverse, so the later clauses and the choicepoint must see the
+        argument as called.
+        """
+        if i == 0 or self.next_start is None or type(p) is Slot:
+            return f"a{i}"
+        local = self.temp()
+        self.emit(f"{local} = a{i}", 1)
+        return local
 
     def state(self) -> Any:
         return self.committed
