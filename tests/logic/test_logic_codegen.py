@@ -185,3 +185,21 @@ def test_codegen_compiled_binary_functions_keep_iso_errors() -> None:
         assert caught == {"E": Term("type_error", ("integer", 2.0))}
         with pytest.raises(PrologInstantiationError):
             kb.holds("f(7, _, _)")
+
+
+def test_type_test_after_binding_a_tested_variable_sees_the_binding() -> None:
+    kb = KnowledgeBase()
+    kb.consult(
+        """
+        p(X) :- var(X), X = a, atom(X).
+        q(X, Y) :- var(X), X = Y, integer(X).
+        m(P, R) :- nonvar(P), P = star(S), !, R = S.
+        m(P, P).
+        """
+    )
+    assert run_twice(kb, "p(X)") == [{"X": "a"}]
+    assert run_twice(kb, "q(X, 3)") == [{"X": 3}]
+    assert run_twice(kb, "q(X, a)") == []
+    assert run_twice(kb, "m(star(1), R)") == [{"R": 1}]
+    assert run_twice(kb, "m(plain, R)") == [{"R": "plain"}]
+    assert run_twice(kb, "m(star, R)") == [{"R": "star"}]

@@ -294,7 +294,8 @@ class ClauseWriter:
         """Emit code unifying template `p` with the (un-dereferenced) value in local `x`."""
         if type(p) is Slot:
             if p.i in self.known:
-                self.emit(f"if not unify(v{p.i}, {x}, trail): {self.fail}", depth)
+                self.unify_locals(f"v{p.i}", x, depth)
+                self.dereffed.discard(p.i)
             else:
                 self.emit(f"v{p.i} = {x}", depth)
                 self.known.add(p.i)
@@ -318,6 +319,18 @@ class ClauseWriter:
         self.emit(f"elif type({x}) is Term and {x}[0] == {name} and len({x}[1]) == {n}:", depth)
         self.read_args(p.args, f"{x}[1]", depth + 1)
         self.emit(f"else: {self.fail}", depth)
+
+    def unify_locals(self, a: str, b: str, depth: int) -> None:
+        """Emit unification of the values in locals `a` and `b` (both dereferenced in place).
+
+        Binding an unbound side is done here; only two non-variables call `unify`.
+        """
+        self.emit(f"while type({a}) is Var and {a}.ref is not None: {a} = {a}.ref", depth)
+        self.emit(f"while type({b}) is Var and {b}.ref is not None: {b} = {b}.ref", depth)
+        self.emit(f"if {a} is not {b}:", depth)
+        self.emit(f"if type({a}) is Var: {a}.ref = {b}; trail.append({a})", depth + 1)
+        self.emit(f"elif type({b}) is Var: {b}.ref = {a}; trail.append({b})", depth + 1)
+        self.emit(f"elif not unify({a}, {b}, trail): {self.fail}", depth + 1)
 
     def read_args(self, pargs: tuple[Any, ...], src: str, depth: int) -> None:
         """Read mode: unpack the call's subterms, then unify each with its template."""
@@ -374,6 +387,12 @@ class ClauseWriter:
                 self.fresh([right], 1)
                 self.emit(f"v{left.i} = {self.build(right)}", 1)
                 self.known.add(left.i)
+                return True
+            if type(right) is Slot:
+                left, right = right, left
+            if type(left) is Slot:  # a value against a template: head-style read/write code
+                self.unify_arg(right, f"v{left.i}", 1)
+                self.dereffed.discard(left.i)
                 return True
             self.fresh([left, right], 1)
             left_code, right_code = self.build(left), self.build(right)
@@ -468,6 +487,8 @@ class ClauseWriter:
             return
         self.fresh([target], 1)
         self.emit(f"if not unify({self.build(target)}, {value}, trail): {self.fail}", 1)
+        if type(target) is Slot:
+            self.dereffed.discard(target.i)
 
     def expr(self, t: Any) -> str | None:
         """Python expression evaluating arithmetic template `t`; None if a slot is unset."""

@@ -268,7 +268,7 @@ class _ProcWriter(ClauseWriter):
         trail does not reverse, so the later clauses and the choicepoint must see the
         argument as called.
         """
-        if i == 0 or self.next_start is None or type(p) is Slot:
+        if i == 0 or self.next_start is None or type(p) is Slot and p.i not in self.known:
             return f"a{i}"
         local = self.temp()
         self.emit(f"{local} = a{i}", 1)
