@@ -203,3 +203,27 @@ def test_type_test_after_binding_a_tested_variable_sees_the_binding() -> None:
     assert run_twice(kb, "m(star(1), R)") == [{"R": 1}]
     assert run_twice(kb, "m(plain, R)") == [{"R": "plain"}]
     assert run_twice(kb, "m(star, R)") == [{"R": "star"}]
+
+
+def test_inline_goals_after_a_call_run_as_one_step_with_iso_errors() -> None:
+    kb = KnowledgeBase()
+    kb.consult(
+        """
+        val(3). val(4). val(a).
+        sq(X, Y) :- val(X), integer(X), Y is X * X, Y > 9, Z = X, Z == X.
+        even(X) :- val(X), integer(X), 0 is X mod 2.
+        half(X, H) :- val(X), H is X // 2.
+        bad(Y) :- val(_), Y is foo + 1.
+        unb(Y) :- val(_), Y > 1.
+        """
+    )
+    assert run_twice(kb, "sq(X, Y)") == [{"X": 4, "Y": 16}]
+    assert run_twice(kb, "even(X)") == [{"X": 4}]
+    assert [a["H"] for a in run_twice(kb, "half(3, H)")] == [1]
+    for _ in range(3):
+        with pytest.raises(PrologTypeError):
+            kb.holds("bad(_)")
+        with pytest.raises(PrologInstantiationError):
+            kb.holds("unb(_)")
+        with pytest.raises(PrologTypeError):
+            kb.holds("X = a, half(X, _)")

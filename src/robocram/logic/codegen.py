@@ -23,6 +23,7 @@ from collections.abc import Callable
 from typing import Any, Protocol
 
 from robocram.logic.arith import BINARY_FUNCTIONS, apply_binary, evaluate
+from robocram.logic.inline_goal import InlineGoal
 from robocram.logic.lru import LRUCache
 from robocram.logic.template import Slot, Tmpl
 from robocram.logic.terms import Term, Var, new_term
@@ -51,6 +52,7 @@ ClauseFn = Callable[[tuple[Any, ...], list[Var], int, Any, list[list[Any]]], Any
 _NAMESPACE: dict[str, Any] = {
     "Var": Var,
     "Term": Term,
+    "InlineGoal": InlineGoal,
     "new_term": new_term,
     "unify": unify,
     "identical": identical,
@@ -136,25 +138,34 @@ def _conjuncts(g: Any) -> list[Any]:
     return [g]
 
 
-def arith_function(name: str, args: tuple[Any, ...], slots: list[int]) -> Any:
-    """Compile comparison or `is/2` goal `name(args)` to a function of its slots' values.
+def _inlinable(g: Any) -> bool:
+    """True for a goal that runs inline once its slots hold values (tests, is/2, =/2)."""
+    parts = _parts(g)
+    if parts is None:
+        return g == "true"
+    name, args = parts
+    if len(args) == 1:
+        return name in _TYPE_TESTS
+    return len(args) == 2 and (name in _COMPARE_OPS or name in _INLINE_BINARY)
 
-    The function returns the comparison's truth, or the value of `is/2`'s expression;
-    None when the expression has a part that must be evaluated at run time as a term.
+
+_INLINE_BINARY = frozenset(["is", "=", "==", "\\=="])
+
+
+def inline_function(goals: list[Any], slots: list[int]) -> Any:
+    """Compile inline goals to `fn(trail, *values of slots)`: true when all succeed.
+
+    None when one of them cannot run inline after all.
     """
     writer = ClauseWriter()
     writer.known = set(slots)
-    if name == "is":
-        code = writer.expr(args[1])
-    else:
-        left, right = writer.expr(args[0]), writer.expr(args[1])
-        code = None if left is None or right is None else f"{left} {_COMPARE_OPS[name]} {right}"
-    if code is None:
-        return None
+    for g in goals:
+        if not writer.inline_goal(g):
+            return None
     params = ", ".join(f"k{i}" for i in range(len(writer.consts)))
-    values = ", ".join(f"v{i}" for i in slots)
-    head = [f"def make({params}):", f"  def fn({values}):"]
-    source = "\n".join([*head, *writer.lines, f"    return {code}", "  return fn", ""])
+    values = "".join(f", v{i}" for i in slots)
+    head = [f"def make({params}):", f"  def fn(trail{values}):"]
+    source = "\n".join([*head, *writer.lines, "    return True", "  return fn", ""])
     return make_factory(source)(*writer.consts)
 
 
@@ -214,8 +225,8 @@ class ClauseWriter:
             self.self_call(args)
             return
         cont = "nxt"
-        for g in reversed(body):
-            cont = f"({self.goal(g)}, cb, {cont})"
+        for g in reversed(self.goals(body)):
+            cont = f"({g}, cb, {cont})"
         self.exit(cont)
 
     def self_call(self, args: str) -> None:
@@ -265,12 +276,14 @@ class ClauseWriter:
         return self.const(t)
 
     def goal(self, g: Any) -> str:
-        """Python expression building body goal `g`, arithmetic compiled to a function.
+        """Python expression building body goal `g`; control constructs goal by goal.
 
-        `X > Y + 1` later in a body becomes `'$test'(Fn, Values)`, and `X is E` becomes
-        `'$is'(Fn, X, Values)`, so that the machine runs Python arithmetic instead of
-        walking the expression; control constructs are compiled goal by goal.
+        A test, `is/2` or `=/2` becomes an `InlineGoal` (see inline_goal.py), so that the
+        machine runs Python code instead of looking up and walking the built-in.
         """
+        run = self.inline_run([g]) if _inlinable(g) else None
+        if run is not None:
+            return run
         parts = _parts(g)
         if parts is None:
             return self.build(g)
@@ -278,17 +291,35 @@ class ClauseWriter:
         if (name, len(args)) in _CONTROL:
             inner = "".join(f"{self.goal(a)}, " for a in args)
             return f"new_term(Term, ({self.const(name)}, ({inner})))"
-        if len(args) != 2 or not (name in _COMPARE_OPS or name == "is"):
-            return self.build(g)
-        slots = _slots_in(g, [])
-        fn = arith_function(name, args, slots)
-        if fn is None or not slots:
-            return self.build(g)
+        return self.build(g)
+
+    def goals(self, body: list[Any]) -> list[str]:
+        """Expressions of the continuation's goals: each run of inline goals is one goal."""
+        out: list[str] = []
+        i = 0
+        while i < len(body):
+            j = i
+            while j < len(body) and _inlinable(body[j]):
+                j += 1
+            run = self.inline_run(body[i:j]) if j > i else None
+            if run is not None:
+                out.append(run)
+                i = j
+            else:
+                out.append(self.goal(body[i]) if j == i else self.build(body[i]))
+                i += 1
+        return out
+
+    def inline_run(self, goals: list[Any]) -> str | None:
+        """Expression of one InlineGoal running `goals` (their slots all hold values)."""
+        slots: list[int] = []
+        for g in goals:
+            _slots_in(g, slots)
+        fn = inline_function(goals, slots)
+        if fn is None:
+            return None
         values = "".join(f"v{i}, " for i in slots)
-        if name == "is":
-            target = self.build(args[0])
-            return f"new_term(Term, ('$is', ({self.const(fn)}, {target}, ({values}))))"
-        return f"new_term(Term, ('$test', ({self.const(fn)}, ({values}))))"
+        return f"new_term(InlineGoal, ({self.const(fn)}, ({values})))"
 
     def unify_arg(self, p: Any, x: str, depth: int) -> None:
         """Emit code unifying template `p` with the (un-dereferenced) value in local `x`."""
@@ -484,11 +515,11 @@ class ClauseWriter:
         if type(target) is Slot and target.i not in self.known:
             self.emit(f"v{target.i} = {value}", 1)
             self.known.add(target.i)
+            self.dereffed.add(target.i)  # a number
             return
-        self.fresh([target], 1)
-        self.emit(f"if not unify({self.build(target)}, {value}, trail): {self.fail}", 1)
-        if type(target) is Slot:
-            self.dereffed.discard(target.i)
+        result = self.temp()
+        self.emit(f"{result} = {value}", 1)
+        self.unify_arg(target, result, 1)
 
     def expr(self, t: Any) -> str | None:
         """Python expression evaluating arithmetic template `t`; None if a slot is unset."""

@@ -24,6 +24,7 @@ from robocram.logic.errors import (
     PrologTypeError,
     UnknownPredicateError,
 )
+from robocram.logic.inline_goal import InlineGoal
 from robocram.logic.limits import CHECK_EVERY, Budget
 from robocram.logic.occurs import unify_checked
 from robocram.logic.predicate import DET, NONDET, USER, WARM_CALLS, Pred
@@ -116,6 +117,7 @@ class Machine:
         goal: Any = None
         ticks = 0
         spend = self.budget.spend
+        plain = self.occurs_check == "false"  # procedures skip the occurs check
         try:
             while True:
                 while cont is None:
@@ -137,6 +139,9 @@ class Machine:
                     name = goal
                     args = ()
                     p = preds.get((name, 0))
+                elif tg is InlineGoal:
+                    cont = nxt if goal[0](trail, *goal[1]) else backtrack(cps)
+                    continue
                 else:
                     cont = self._call_other(goal, len(cps), nxt)
                     continue
@@ -144,18 +149,18 @@ class Machine:
                     self._undefined(name, len(args))
                     cont = backtrack(cps)
                     continue
-                k = p.kind
-                if k == USER:
-                    proc = p.proc
-                    if proc is not None and self.occurs_check == "false":
-                        cont = proc(args, trail, nxt, cps, 0)
+                proc = p.proc  # only user predicates have one
+                if proc is not None and plain:
+                    cont = proc(args, trail, nxt, cps, 0)
+                    if cont is False:
+                        cont = backtrack(cps)
+                    elif type(cont) is list:
+                        cont = self._again(proc, cont, nxt, cps)
                         if cont is False:
                             cont = backtrack(cps)
-                        elif type(cont) is list:
-                            cont = self._again(proc, cont, nxt, cps)
-                            if cont is False:
-                                cont = backtrack(cps)
-                        continue
+                    continue
+                k = p.kind
+                if k == USER:
                     if p.pyfn is not None:
                         if not cps and trail:
                             del trail[:]
