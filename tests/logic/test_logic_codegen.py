@@ -227,3 +227,33 @@ def test_inline_goals_after_a_call_run_as_one_step_with_iso_errors() -> None:
             kb.holds("unb(_)")
         with pytest.raises(PrologTypeError):
             kb.holds("X = a, half(X, _)")
+
+
+def test_univ_in_clause_code_both_ways_leading_and_after_a_call() -> None:
+    kb = KnowledgeBase()
+    kb.consult(
+        """
+        dec(T, F, As) :- T =.. [F|As].
+        com(F, As, T) :- T =.. [F|As].
+        later(T, F, As) :- atom_length(abc, _), T =.. [F|As], atom(F).
+        whole(T, L) :- T =.. L.
+        """
+    )
+    assert run_twice(kb, "dec(f(a, B), F, As), As == [a, B]", B=1) == [{"F": "f", "As": ["a", 1]}]
+    assert run_twice(kb, "dec(f(a, b), F, As)") == [{"F": "f", "As": ["a", "b"]}]
+    assert run_twice(kb, "dec(foo, F, As)") == [{"F": "foo", "As": []}]
+    assert run_twice(kb, "dec(3, F, As)") == [{"F": 3, "As": []}]
+    assert run_twice(kb, "dec(T, g, [1, 2])") == [{"T": Term("g", (1, 2))}]
+    assert run_twice(kb, "com(g, [1, 2], T)") == [{"T": Term("g", (1, 2))}]
+    assert run_twice(kb, "com(x, [], T)") == [{"T": "x"}]
+    assert run_twice(kb, "later(T, h, [z])") == [{"T": Term("h", ("z",))}]
+    assert run_twice(kb, "later(h(z), F, As)") == [{"F": "h", "As": ["z"]}]
+    assert run_twice(kb, "later(7, F, As)") == []
+    assert run_twice(kb, "whole(f(1), [f, 2])") == []
+    for _ in range(3):
+        with pytest.raises(PrologInstantiationError):
+            kb.holds("com(_, _, _)")
+        with pytest.raises(PrologTypeError):
+            kb.holds("com(1, [a], _)")
+        caught = kb.first("catch(whole(_, []), error(E, _), true)")
+        assert caught is not None and caught["E"] == Term("domain_error", ("non_empty_list", []))

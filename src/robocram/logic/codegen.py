@@ -28,6 +28,7 @@ from robocram.logic.lru import LRUCache
 from robocram.logic.template import Slot, Tmpl
 from robocram.logic.terms import Term, Var, new_term
 from robocram.logic.unify import identical, unify
+from robocram.logic.univ import univ_compose, univ_list
 
 __all__ = [
     "FACTORY_CACHE_SIZE",
@@ -53,6 +54,8 @@ _NAMESPACE: dict[str, Any] = {
     "Var": Var,
     "Term": Term,
     "InlineGoal": InlineGoal,
+    "univ_list": univ_list,
+    "univ_compose": univ_compose,
     "new_term": new_term,
     "unify": unify,
     "identical": identical,
@@ -146,6 +149,8 @@ def _inlinable(g: Any) -> bool:
     name, args = parts
     if len(args) == 1:
         return name in _TYPE_TESTS
+    if name == "=.." and len(args) == 2:
+        return type(args[0]) is Slot
     return len(args) == 2 and (name in _COMPARE_OPS or name in _INLINE_BINARY)
 
 
@@ -409,6 +414,8 @@ class ClauseWriter:
                 return False
             self.assign_or_unify(left, value)
             return True
+        if name == "=..":
+            return self.univ(left, right)
         if name == "=":
             if type(right) is Slot and right.i not in self.known:
                 left, right = right, left
@@ -430,6 +437,30 @@ class ClauseWriter:
             self.emit(f"if not unify({left_code}, {right_code}, trail): {self.fail}", 1)
             return True
         return False
+
+    def univ(self, term: Any, items: Any) -> bool:
+        """Emit `Term =.. Items` for a slot `Term`: taken apart, or built when unbound."""
+        if type(term) is not Slot or term.i in _slots_in(items, []):
+            return False
+        v = f"v{term.i}"
+        if term.i not in self.known:
+            self.fresh([items], 1)
+            self.emit(f"{v} = univ_compose({self.build(items)})", 1)
+            self.known.add(term.i)
+            return True
+        parts = self.temp()
+        self.emit(f"{parts} = univ_list({v})", 1)
+        self.emit(f"if {parts} is None:", 1)
+        known, dereffed = set(self.known), set(self.dereffed)
+        self.fresh([items], 2)
+        built = self.temp()
+        self.emit(f"{built} = univ_compose({self.build(items)})", 2)
+        self.unify_locals(v, built, 2)
+        self.known = known
+        self.emit("else:", 1)
+        self.unify_arg(items, parts, 2)
+        self.dereffed = dereffed - {term.i, *_slots_in(items, [])}
+        return True
 
     def inline_if(self, clause: ClauseCode, body: list[Any]) -> bool:
         """`(Cond -> Then ; Else)` first in `body`, Cond a test: a Python `if` instead.
