@@ -257,3 +257,29 @@ def test_univ_in_clause_code_both_ways_leading_and_after_a_call() -> None:
             kb.holds("com(1, [a], _)")
         caught = kb.first("catch(whole(_, []), error(E, _), true)")
         assert caught is not None and caught["E"] == Term("domain_error", ("non_empty_list", []))
+
+
+def test_guards_checked_early_keep_prolog_order_of_failure_and_errors() -> None:
+    kb = KnowledgeBase()
+    kb.consult(
+        """
+        p([X|_], Y, [X]) :- X < Y.
+        r(X, Y, f(X)) :- X < Y + 0.
+        c(X, [_]) :- !, X > 1.
+        c(_, _).
+        t(X, g(X)) :- atom(X).
+        t(_, other).
+        """
+    )
+    assert run_twice(kb, "p([1], 2, Z)") == [{"Z": [1]}]
+    assert run_twice(kb, "p([3], 2, Z)") == []
+    assert run_twice(kb, "p([a], 1, [b])") == []  # the head fails before the guard
+    assert run_twice(kb, "r(A, 2, f(1))") == [{"A": 1}]  # bound by a later argument
+    assert run_twice(kb, "c(0, [a])") == []  # the cut comes first
+    assert run_twice(kb, "t(1, R)") == [{"R": "other"}]
+    assert run_twice(kb, "t(a, R)") == [{"R": Term("g", ("a",))}, {"R": "other"}]
+    for _ in range(3):
+        with pytest.raises(PrologTypeError):
+            kb.holds("p([a], 1, _)")
+        with pytest.raises(PrologInstantiationError):
+            kb.holds("r(_, 2, _)")

@@ -23,6 +23,7 @@ from collections.abc import Callable
 from typing import Any, Protocol
 
 from robocram.logic.arith import BINARY_FUNCTIONS, apply_binary, evaluate
+from robocram.logic.early_guards import guard_goals, rejection
 from robocram.logic.inline_goal import InlineGoal
 from robocram.logic.lru import LRUCache
 from robocram.logic.template import Slot, Tmpl
@@ -100,6 +101,11 @@ def make_factory(source: str) -> Callable[..., Any]:
         factory = namespace["make"]
         _FACTORIES.put(source, factory)
     return factory
+
+
+def deref_line(x: str) -> str:
+    """The statement dereferencing local `x` in place."""
+    return f"while type({x}) is Var and {x}.ref is not None: {x} = {x}.ref"
 
 
 def _slots_in(t: Any, out: list[int]) -> list[int]:
@@ -207,12 +213,29 @@ class ClauseWriter:
         """
         self.known = set()
         self.dereffed = set()
+        body = list(reversed(clause.body_rev))
+        early = [r for r in map(rejection, guard_goals(body)) if r is not None]
         for i, p in enumerate(clause.head):
             if i == 0 and switched and type(p) is Tmpl:
                 self.read_args(p.args, "a0[1]", 1)
             elif not (i == 0 and switched and type(p) in (str, int)):
                 self.unify_arg(p, self.arg_local(i, p), 1)
-        self.body_code(clause, list(reversed(clause.body_rev)))
+            if early and any(type(q) is Tmpl for q in clause.head[i + 1 :]):
+                early = self.reject_early(early)
+        self.body_code(clause, body)
+
+    def reject_early(self, guards: list[tuple[list[int], str]]) -> list[tuple[list[int], str]]:
+        """Emit the guards whose values are all known (see early_guards); return the rest."""
+        later = []
+        for slots, condition in guards:
+            if any(i not in self.known for i in slots):
+                later.append((slots, condition))
+                continue
+            for i in slots:
+                if i not in self.dereffed:
+                    self.emit(deref_line(f"v{i}"), 1)
+            self.emit(f"if {condition}: {self.fail}", 1)
+        return later
 
     def arg_local(self, i: int, p: Any) -> str:
         """The local to unify head argument `i` (template `p`) with; unify_arg derefs it."""
@@ -339,7 +362,7 @@ class ClauseWriter:
         if type(p) is not Tmpl and type(p) not in _EXACT_TYPES:
             self.emit(f"if not unify({self.const(p)}, {x}, trail): {self.fail}", depth)
             return
-        self.emit(f"while type({x}) is Var and {x}.ref is not None: {x} = {x}.ref", depth)
+        self.emit(deref_line(x), depth)
         if type(p) is not Tmpl:
             k = self.const(p)
             self.emit(f"if type({x}) is Var: {x}.ref = {k}; trail.append({x})", depth)
@@ -361,8 +384,8 @@ class ClauseWriter:
 
         Binding an unbound side is done here; only two non-variables call `unify`.
         """
-        self.emit(f"while type({a}) is Var and {a}.ref is not None: {a} = {a}.ref", depth)
-        self.emit(f"while type({b}) is Var and {b}.ref is not None: {b} = {b}.ref", depth)
+        self.emit(deref_line(a), depth)
+        self.emit(deref_line(b), depth)
         self.emit(f"if {a} is not {b}:", depth)
         self.emit(f"if type({a}) is Var: {a}.ref = {b}; trail.append({a})", depth + 1)
         self.emit(f"elif type({b}) is Var: {b}.ref = {a}; trail.append({b})", depth + 1)
@@ -530,7 +553,7 @@ class ClauseWriter:
     def deref_slot(self, i: int) -> None:
         """Dereference slot `i` in place, once."""
         if i not in self.dereffed:
-            self.emit(f"while type(v{i}) is Var and v{i}.ref is not None: v{i} = v{i}.ref", 1)
+            self.emit(deref_line(f"v{i}"), 1)
             self.dereffed.add(i)
 
     def type_test(self, name: str, arg: Any) -> bool:
@@ -561,7 +584,7 @@ class ClauseWriter:
             if t.i not in self.dereffed:
                 # A slot read from a call argument is often a bound variable: dereference
                 # it once so every later use takes the int fast path.
-                self.emit(f"while type({v}) is Var and {v}.ref is not None: {v} = {v}.ref", 1)
+                self.emit(deref_line(v), 1)
                 self.dereffed.add(t.i)
             return f"({v} if type({v}) is int else ev({v}))"
         if type(t) is int:
