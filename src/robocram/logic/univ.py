@@ -25,7 +25,7 @@ def univ_list(t: Any) -> Any:
         t = r
     if type(t) is not Term:
         return new_term(Term, (".", (t, NIL)))
-    items = NIL
+    items: Any = NIL
     args = t[1]
     for i in range(len(args) - 1, -1, -1):
         items = new_term(Term, (".", (args[i], items)))
