@@ -11,6 +11,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import Any
 
+from robocram.logic import gc_pacing
 from robocram.logic.builtin_flags import warn_unknown
 from robocram.logic.choicepoints import ALT, BARRIER, CATCH, CLAUSES, GEN, PROC, REACT
 from robocram.logic.clause import Clause
@@ -118,10 +119,16 @@ class Machine:
         ticks = 0
         spend = self.budget.spend
         plain = self.occurs_check == "false"  # procedures skip the occurs check
+        gc_pacing.enter()
+        running = True
         try:
             while True:
                 while cont is None:
+                    gc_pacing.leave()
+                    running = False
                     yield None
+                    gc_pacing.enter()
+                    running = True
                     cont = backtrack(cps)
                 if cont is False:
                     return
@@ -190,6 +197,9 @@ class Machine:
             raise
         except Exception as err:  # a built-in's own failure: make it a Prolog error
             raise host_error(err, goal) from err
+        finally:
+            if running:
+                gc_pacing.leave()
 
     def _call_clauses(self, p: Pred, args: Any, nxt: Any, cps: list[list[Any]]) -> Any:
         """Try the clauses of `p` that the first argument selects; False when none runs.
