@@ -143,6 +143,10 @@ class Machine:
                     args = goal[1]
                     p = preds.get((name, len(args)))
                 elif tg is str:
+                    if goal == "!":  # the commonest atom goal: no lookup
+                        del cps[cutb:]
+                        cont = nxt
+                        continue
                     name = goal
                     args = ()
                     p = preds.get((name, 0))
