@@ -190,8 +190,8 @@ class Machine:
                     cont = backtrack(cps)
                 elif name == ",":
                     cont = (args[0], cutb, (args[1], cutb, nxt))
-                elif name == "!":
-                    del cps[cutb:]
+                elif name == "$cut":  # the end of an if-then-else's condition
+                    del cps[args[0] :]
                     cont = nxt
                 else:
                     cont = run_control(self, name, args, cutb, nxt, cps)
