@@ -270,15 +270,15 @@ class Machine:
             while len(trail) > mark:
                 trail.pop().ref = None
             kind = cp[0]
-            if kind == CLAUSES:
-                cont = self._next_clause(cp, cps)
-                if cont is not False:
-                    return cont
-            elif kind == PROC:
+            if kind == PROC:  # the commonest: a compiled procedure's later clauses
                 cps.pop()
                 cont = cp[4](cp[2], trail, cp[3], cps, cp[5])
                 if type(cont) is list:
                     cont = self._again(cp[4], cont, cp[3], cps)
+                if cont is not False:
+                    return cont
+            elif kind == CLAUSES:
+                cont = self._next_clause(cp, cps)
                 if cont is not False:
                     return cont
             elif kind == GEN:
