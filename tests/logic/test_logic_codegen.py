@@ -283,3 +283,35 @@ def test_guards_checked_early_keep_prolog_order_of_failure_and_errors() -> None:
             kb.holds("p([a], 1, _)")
         with pytest.raises(PrologInstantiationError):
             kb.holds("r(_, 2, _)")
+
+
+def test_python_tuples_called_as_goals_are_type_errors_never_calls() -> None:
+    kb = KnowledgeBase()
+    kb.consult("foo. call_it(G) :- true, G.\nboth(G) :- member(X, [G]), X, true.")
+    for goal in [("foo", ()), ("foo", (), None), (1, 2), ()]:
+        for query in ["call_it(G)", "both(G)", "G", "(true, G)"]:
+            for _ in range(3):
+                with pytest.raises(PrologTypeError, match="callable"):
+                    kb.holds(query, G=goal)
+    spelled = Term(",", ("true", ("foo", ())))
+    for _ in range(3):
+        with pytest.raises(PrologTypeError, match="callable"):
+            kb.holds("call_it(G)", G=spelled)
+    assert kb.holds("call_it(foo), both(foo)")
+
+
+def test_calls_from_compiled_clauses_name_their_predicate_in_errors() -> None:
+    kb = KnowledgeBase()
+    kb.consult("go(X) :- atom(X), missing_pred(X, 1).\nboom(X) :- atom(X), py_fail(X).")
+
+    @kb.predicate("py_fail", 1)
+    def py_fail(x: object) -> Any:
+        raise ValueError("no")
+        yield None
+
+    for _ in range(4):
+        caught = kb.first("catch(go(a), error(E, _), true)")
+        assert caught is not None
+        assert caught["E"] == Term("existence_error", ("procedure", Term("/", ("missing_pred", 2))))
+        with pytest.raises(ValueError, match="no"):
+            kb.holds("boom(a)")

@@ -181,6 +181,9 @@ class ClauseWriter(GoalWriter):
         if (name, len(args)) in _CONTROL:
             inner = "".join(f"{self.goal(a)}, " for a in args)
             return f"new_term(Term, ({self.const(name)}, ({inner})))"
+        if type(g) is Tmpl:  # a call: a plain tuple the machine recognises by CALL
+            inner = "".join(f"{self.build(a)}, " for a in args)
+            return f"({self.const(name)}, ({inner}), CALL)"
         return self.build(g)
 
     def goals(self, body: list[Any]) -> list[str]:

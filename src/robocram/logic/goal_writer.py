@@ -15,7 +15,7 @@ from collections.abc import Callable
 from typing import Any
 
 from robocram.logic.arith import BINARY_FUNCTIONS, apply_binary, evaluate
-from robocram.logic.inline_goal import InlineGoal
+from robocram.logic.inline_goal import CALL, InlineGoal
 from robocram.logic.lru import LRUCache
 from robocram.logic.template import Slot, Tmpl
 from robocram.logic.terms import Term, Var, new_term
@@ -37,6 +37,7 @@ _NAMESPACE: dict[str, Any] = {
     "Var": Var,
     "Term": Term,
     "InlineGoal": InlineGoal,
+    "CALL": CALL,
     "univ_list": univ_list,
     "univ_compose": univ_compose,
     "new_term": new_term,

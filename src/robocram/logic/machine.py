@@ -25,7 +25,7 @@ from robocram.logic.errors import (
     PrologTypeError,
     UnknownPredicateError,
 )
-from robocram.logic.inline_goal import InlineGoal
+from robocram.logic.inline_goal import CALL, InlineGoal
 from robocram.logic.limits import CHECK_EVERY, Budget
 from robocram.logic.occurs import unify_checked
 from robocram.logic.predicate import DET, NONDET, USER, WARM_CALLS, Pred
@@ -138,7 +138,13 @@ class Machine:
                     ticks = 0
                 goal, cutb, nxt = cont
                 tg = type(goal)
-                if tg is Term:
+                if tg is tuple:  # a call built by clause code (see inline_goal.py)
+                    name, args, mark = goal
+                    if mark is not CALL:
+                        cont = self._call_other(goal, len(cps), nxt)
+                        continue
+                    p = preds.get((name, len(args)))
+                elif tg is Term:
                     name = goal[0]
                     args = goal[1]
                     p = preds.get((name, len(args)))
@@ -355,7 +361,11 @@ def host_error(err: Exception, goal: Any) -> PrologError:
     """The Prolog error for a Python exception raised while running `goal`."""
     while type(goal) is Var and goal.ref is not None:
         goal = goal.ref
-    if type(goal) is Term:
+    if type(goal) is tuple:
+        if len(goal) != 3 or goal[2] is not CALL:  # a Python tuple called as a goal
+            return PrologTypeError("callable", goal, f"{goal!r} is not a callable goal")
+        where = f"{goal[0]}/{len(goal[1])}"
+    elif type(goal) is Term:
         where = f"{goal[0]}/{len(goal[1])}"
     else:
         where = f"{goal}/0" if type(goal) is str else "the engine"
