@@ -168,7 +168,7 @@ class ClauseWriter(GoalWriter):
     def goal(self, g: Any) -> str:
         """Python expression building body goal `g`; control constructs goal by goal.
 
-        A test, `is/2` or `=/2` becomes an `InlineGoal` (see inline_goal.py), so that the
+        A test, `is/2` or `=/2` becomes an inline goal (see inline_goal.py), so that the
         machine runs Python code instead of looking up and walking the built-in.
         """
         run = self.inline_run([g]) if inlinable(g) else None
@@ -204,7 +204,7 @@ class ClauseWriter(GoalWriter):
         return out
 
     def inline_run(self, goals: list[Any]) -> str | None:
-        """Expression of one InlineGoal running `goals` (their slots all hold values)."""
+        """Expression of one inline goal running `goals` (their slots all hold values)."""
         slots: list[int] = []
         for g in goals:
             slots_in(g, slots)
@@ -212,7 +212,7 @@ class ClauseWriter(GoalWriter):
         if fn is None:
             return None
         values = "".join(f"v{i}, " for i in slots)
-        return f"new_term(InlineGoal, ({self.const(fn)}, ({values})))"
+        return f"({self.const(fn)}, ({values}), INLINE)"
 
     def inline_if(self, clause: ClauseCode, body: list[Any]) -> bool:
         """`(Cond -> Then ; Else)` first in `body`, Cond a test: a Python `if` instead.

@@ -15,7 +15,7 @@ from collections.abc import Callable
 from typing import Any
 
 from robocram.logic.arith import BINARY_FUNCTIONS, apply_binary, evaluate
-from robocram.logic.inline_goal import CALL, InlineGoal
+from robocram.logic.inline_goal import CALL, INLINE
 from robocram.logic.lru import LRUCache
 from robocram.logic.template import Slot, Tmpl
 from robocram.logic.terms import Term, Var, new_term
@@ -36,7 +36,7 @@ __all__ = [
 _NAMESPACE: dict[str, Any] = {
     "Var": Var,
     "Term": Term,
-    "InlineGoal": InlineGoal,
+    "INLINE": INLINE,
     "CALL": CALL,
     "univ_list": univ_list,
     "univ_compose": univ_compose,

@@ -1,44 +1,34 @@
-"""A run of inline goals later in a clause body, compiled to one Python function.
+"""The goals clause code puts in a continuation for the machine alone: calls and inline runs.
 
 Clause code runs the tests, `is/2` and `=/2` goals that lead a body in its own frame.
 Those that follow a call cannot: the call runs first, in the machine. Each run of them
-becomes one `InlineGoal(fn, values)` in the continuation, and the machine calls
-`fn(trail, *values)` (true to go on, false to fail) without looking up a predicate.
-It is a goal only the machine sees: it never appears in a term a program can read.
+becomes one goal `(fn, values, INLINE)`, and the machine calls `fn(trail, *values)`
+(true to go on, false to fail) without looking up a predicate. Calls are built the same
+way, as `(name, args, CALL)` instead of `Term`s: a plain tuple costs a third of a `Term`
+to make. The private markers tell these from any Python tuple a program passed as a goal
+(that stays a type error); they never appear in a term a program can read.
 
-Calls in the continuation are built the same way, as plain tuples `(name, args, CALL)`
-instead of `Term`s: a tuple costs a third of a `Term` to make, and the private `CALL`
-marker tells the machine's tuple from any Python tuple a program passed as a goal.
+>>> goal = (lambda trail, x: x > 1, (2,), INLINE)
+>>> goal[2] is INLINE and goal[0]([], *goal[1])
+True
 """
 
 from __future__ import annotations
 
-from typing import Any
-
-__all__ = ["CALL", "InlineGoal"]
+__all__ = ["CALL", "INLINE", "GoalMark"]
 
 
-class _CallMark:
-    """The type of CALL: the last item of a call goal that clause code built."""
+class GoalMark:
+    """The last item of a goal tuple that clause code built: CALL or INLINE."""
 
-    __slots__ = ()
+    __slots__ = ("name",)
 
-    def __repr__(self) -> str:
-        return "CALL"
-
-
-CALL = _CallMark()
-
-
-class InlineGoal(tuple[Any, tuple[Any, ...]]):
-    """`(fn, values)`: the compiled goals and the clause values they read.
-
-    >>> goal = tuple.__new__(InlineGoal, (lambda trail, x: x > 1, (2,)))
-    >>> goal[0]([], *goal[1])
-    True
-    """
-
-    __slots__ = ()
+    def __init__(self, name: str) -> None:
+        self.name = name
 
     def __repr__(self) -> str:
-        return f"<inline goals of {len(self[1])} values>"
+        return self.name
+
+
+CALL = GoalMark("CALL")
+INLINE = GoalMark("INLINE")

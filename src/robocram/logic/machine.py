@@ -25,7 +25,7 @@ from robocram.logic.errors import (
     PrologTypeError,
     UnknownPredicateError,
 )
-from robocram.logic.inline_goal import CALL, InlineGoal
+from robocram.logic.inline_goal import CALL, INLINE
 from robocram.logic.limits import CHECK_EVERY, Budget
 from robocram.logic.occurs import unify_checked
 from robocram.logic.predicate import DET, NONDET, USER, WARM_CALLS, Pred
@@ -138,10 +138,13 @@ class Machine:
                     ticks = 0
                 goal, cutb, nxt = cont
                 tg = type(goal)
-                if tg is tuple:  # a call built by clause code (see inline_goal.py)
+                if tg is tuple:  # built by clause code (see inline_goal.py)
                     name, args, mark = goal
                     if mark is not CALL:
-                        cont = self._call_other(goal, len(cps), nxt)
+                        if mark is INLINE:
+                            cont = nxt if name(trail, *args) else backtrack(cps)
+                        else:
+                            cont = self._call_other(goal, len(cps), nxt)
                         continue
                     p = preds.get((name, len(args)))
                 elif tg is Term:
@@ -156,9 +159,6 @@ class Machine:
                     name = goal
                     args = ()
                     p = preds.get((name, 0))
-                elif tg is InlineGoal:
-                    cont = nxt if goal[0](trail, *goal[1]) else backtrack(cps)
-                    continue
                 else:
                     cont = self._call_other(goal, len(cps), nxt)
                     continue
@@ -362,9 +362,9 @@ def host_error(err: Exception, goal: Any) -> PrologError:
     while type(goal) is Var and goal.ref is not None:
         goal = goal.ref
     if type(goal) is tuple:
-        if len(goal) != 3 or goal[2] is not CALL:  # a Python tuple called as a goal
+        if len(goal) != 3 or goal[2] not in (CALL, INLINE):  # a Python tuple as a goal
             return PrologTypeError("callable", goal, f"{goal!r} is not a callable goal")
-        where = f"{goal[0]}/{len(goal[1])}"
+        where = f"{goal[0]}/{len(goal[1])}" if goal[2] is CALL else "an inline goal"
     elif type(goal) is Term:
         where = f"{goal[0]}/{len(goal[1])}"
     else:
