@@ -315,3 +315,31 @@ def test_calls_from_compiled_clauses_name_their_predicate_in_errors() -> None:
         assert caught["E"] == Term("existence_error", ("procedure", Term("/", ("missing_pred", 2))))
         with pytest.raises(ValueError, match="no"):
             kb.holds("boom(a)")
+
+
+def test_control_constructs_in_clause_code_after_a_call() -> None:
+    kb = KnowledgeBase()
+    kb.consult(
+        """
+        v(1). v(2). v(3).
+        ite(X, R) :- v(X), ( v(2), X > 1 -> R = big ; X =:= 1 -> R = one ; R = other ).
+        soft(X, R) :- v(X), ( v(Y), Y > X *-> R = Y ; R = none ).
+        neg(X) :- v(X), \\+ ( v(Y), Y > X ).
+        pyt(T) :- v(_), ( T ; true ).
+        """
+    )
+    assert run_twice(kb, "ite(X, R)") == [
+        {"X": 1, "R": "one"},
+        {"X": 2, "R": "big"},
+        {"X": 3, "R": "big"},
+    ]
+    assert [(a["X"], a["R"]) for a in run_twice(kb, "soft(X, R)")] == [
+        (1, 2),
+        (1, 3),
+        (2, 3),
+        (3, "none"),
+    ]
+    assert run_twice(kb, "neg(X)") == [{"X": 3}]
+    for _ in range(3):
+        with pytest.raises(PrologTypeError, match="callable"):
+            kb.holds("pyt(T)", T=("a", (), None))
