@@ -5,8 +5,8 @@ of them alive until the query backtracks or ends. CPython's cyclic collector run
 youngest generation every 700 container allocations, and each run traverses the young
 objects still alive: on the van Roy programs that costs 10-20% of the time. While at
 least one query runs in the process, the youngest generation's threshold is raised to
-`QUERY_GEN0_THRESHOLD` (a collection every 50,000 allocations, a few MB of young objects
-at most); when the last running query ends or suspends at an answer, the previous
+`QUERY_GEN0_THRESHOLD` (a collection every 100,000 net allocations, a few MB of young
+objects); when the last running query ends or suspends at an answer, the previous
 thresholds come back. The collector is process-wide, so the count of running queries is
 too (guarded by a lock for queries in several threads).
 
@@ -25,7 +25,7 @@ import threading
 
 __all__ = ["QUERY_GEN0_THRESHOLD", "enter", "leave"]
 
-QUERY_GEN0_THRESHOLD = 50_000
+QUERY_GEN0_THRESHOLD = 100_000
 
 _lock = threading.Lock()
 _running = 0
