@@ -185,3 +185,161 @@ def test_codegen_compiled_binary_functions_keep_iso_errors() -> None:
         assert caught == {"E": Term("type_error", ("integer", 2.0))}
         with pytest.raises(PrologInstantiationError):
             kb.holds("f(7, _, _)")
+
+
+def test_type_test_after_binding_a_tested_variable_sees_the_binding() -> None:
+    kb = KnowledgeBase()
+    kb.consult(
+        """
+        p(X) :- var(X), X = a, atom(X).
+        q(X, Y) :- var(X), X = Y, integer(X).
+        m(P, R) :- nonvar(P), P = star(S), !, R = S.
+        m(P, P).
+        """
+    )
+    assert run_twice(kb, "p(X)") == [{"X": "a"}]
+    assert run_twice(kb, "q(X, 3)") == [{"X": 3}]
+    assert run_twice(kb, "q(X, a)") == []
+    assert run_twice(kb, "m(star(1), R)") == [{"R": 1}]
+    assert run_twice(kb, "m(plain, R)") == [{"R": "plain"}]
+    assert run_twice(kb, "m(star, R)") == [{"R": "star"}]
+
+
+def test_inline_goals_after_a_call_run_as_one_step_with_iso_errors() -> None:
+    kb = KnowledgeBase()
+    kb.consult(
+        """
+        val(3). val(4). val(a).
+        sq(X, Y) :- val(X), integer(X), Y is X * X, Y > 9, Z = X, Z == X.
+        even(X) :- val(X), integer(X), 0 is X mod 2.
+        half(X, H) :- val(X), H is X // 2.
+        bad(Y) :- val(_), Y is foo + 1.
+        unb(Y) :- val(_), Y > 1.
+        """
+    )
+    assert run_twice(kb, "sq(X, Y)") == [{"X": 4, "Y": 16}]
+    assert run_twice(kb, "even(X)") == [{"X": 4}]
+    assert [a["H"] for a in run_twice(kb, "half(3, H)")] == [1]
+    for _ in range(3):
+        with pytest.raises(PrologTypeError):
+            kb.holds("bad(_)")
+        with pytest.raises(PrologInstantiationError):
+            kb.holds("unb(_)")
+        with pytest.raises(PrologTypeError):
+            kb.holds("X = a, half(X, _)")
+
+
+def test_univ_in_clause_code_both_ways_leading_and_after_a_call() -> None:
+    kb = KnowledgeBase()
+    kb.consult(
+        """
+        dec(T, F, As) :- T =.. [F|As].
+        com(F, As, T) :- T =.. [F|As].
+        later(T, F, As) :- atom_length(abc, _), T =.. [F|As], atom(F).
+        whole(T, L) :- T =.. L.
+        """
+    )
+    assert run_twice(kb, "dec(f(a, B), F, As), As == [a, B]", B=1) == [{"F": "f", "As": ["a", 1]}]
+    assert run_twice(kb, "dec(f(a, b), F, As)") == [{"F": "f", "As": ["a", "b"]}]
+    assert run_twice(kb, "dec(foo, F, As)") == [{"F": "foo", "As": []}]
+    assert run_twice(kb, "dec(3, F, As)") == [{"F": 3, "As": []}]
+    assert run_twice(kb, "dec(T, g, [1, 2])") == [{"T": Term("g", (1, 2))}]
+    assert run_twice(kb, "com(g, [1, 2], T)") == [{"T": Term("g", (1, 2))}]
+    assert run_twice(kb, "com(x, [], T)") == [{"T": "x"}]
+    assert run_twice(kb, "later(T, h, [z])") == [{"T": Term("h", ("z",))}]
+    assert run_twice(kb, "later(h(z), F, As)") == [{"F": "h", "As": ["z"]}]
+    assert run_twice(kb, "later(7, F, As)") == []
+    assert run_twice(kb, "whole(f(1), [f, 2])") == []
+    for _ in range(3):
+        with pytest.raises(PrologInstantiationError):
+            kb.holds("com(_, _, _)")
+        with pytest.raises(PrologTypeError):
+            kb.holds("com(1, [a], _)")
+        caught = kb.first("catch(whole(_, []), error(E, _), true)")
+        assert caught is not None and caught["E"] == Term("domain_error", ("non_empty_list", []))
+
+
+def test_guards_checked_early_keep_prolog_order_of_failure_and_errors() -> None:
+    kb = KnowledgeBase()
+    kb.consult(
+        """
+        p([X|_], Y, [X]) :- X < Y.
+        r(X, Y, f(X)) :- X < Y + 0.
+        c(X, [_]) :- !, X > 1.
+        c(_, _).
+        t(X, g(X)) :- atom(X).
+        t(_, other).
+        """
+    )
+    assert run_twice(kb, "p([1], 2, Z)") == [{"Z": [1]}]
+    assert run_twice(kb, "p([3], 2, Z)") == []
+    assert run_twice(kb, "p([a], 1, [b])") == []  # the head fails before the guard
+    assert run_twice(kb, "r(A, 2, f(1))") == [{"A": 1}]  # bound by a later argument
+    assert run_twice(kb, "c(0, [a])") == []  # the cut comes first
+    assert run_twice(kb, "t(1, R)") == [{"R": "other"}]
+    assert run_twice(kb, "t(a, R)") == [{"R": Term("g", ("a",))}, {"R": "other"}]
+    for _ in range(3):
+        with pytest.raises(PrologTypeError):
+            kb.holds("p([a], 1, _)")
+        with pytest.raises(PrologInstantiationError):
+            kb.holds("r(_, 2, _)")
+
+
+def test_python_tuples_called_as_goals_are_type_errors_never_calls() -> None:
+    kb = KnowledgeBase()
+    kb.consult("foo. call_it(G) :- true, G.\nboth(G) :- member(X, [G]), X, true.")
+    for goal in [("foo", ()), ("foo", (), None), (1, 2), ()]:
+        for query in ["call_it(G)", "both(G)", "G", "(true, G)"]:
+            for _ in range(3):
+                with pytest.raises(PrologTypeError, match="callable"):
+                    kb.holds(query, G=goal)
+    spelled = Term(",", ("true", ("foo", ())))
+    for _ in range(3):
+        with pytest.raises(PrologTypeError, match="callable"):
+            kb.holds("call_it(G)", G=spelled)
+    assert kb.holds("call_it(foo), both(foo)")
+
+
+def test_calls_from_compiled_clauses_name_their_predicate_in_errors() -> None:
+    kb = KnowledgeBase()
+    kb.consult("go(X) :- atom(X), missing_pred(X, 1).\nboom(X) :- atom(X), py_fail(X).")
+
+    @kb.predicate("py_fail", 1)
+    def py_fail(x: object) -> Any:
+        raise ValueError("no")
+        yield None
+
+    for _ in range(4):
+        caught = kb.first("catch(go(a), error(E, _), true)")
+        assert caught is not None
+        assert caught["E"] == Term("existence_error", ("procedure", Term("/", ("missing_pred", 2))))
+        with pytest.raises(ValueError, match="no"):
+            kb.holds("boom(a)")
+
+
+def test_control_constructs_in_clause_code_after_a_call() -> None:
+    kb = KnowledgeBase()
+    kb.consult(
+        """
+        v(1). v(2). v(3).
+        ite(X, R) :- v(X), ( v(2), X > 1 -> R = big ; X =:= 1 -> R = one ; R = other ).
+        soft(X, R) :- v(X), ( v(Y), Y > X *-> R = Y ; R = none ).
+        neg(X) :- v(X), \\+ ( v(Y), Y > X ).
+        pyt(T) :- v(_), ( T ; true ).
+        """
+    )
+    assert run_twice(kb, "ite(X, R)") == [
+        {"X": 1, "R": "one"},
+        {"X": 2, "R": "big"},
+        {"X": 3, "R": "big"},
+    ]
+    assert [(a["X"], a["R"]) for a in run_twice(kb, "soft(X, R)")] == [
+        (1, 2),
+        (1, 3),
+        (2, 3),
+        (3, "none"),
+    ]
+    assert run_twice(kb, "neg(X)") == [{"X": 3}]
+    for _ in range(3):
+        with pytest.raises(PrologTypeError, match="callable"):
+            kb.holds("pyt(T)", T=("a", (), None))

@@ -205,3 +205,34 @@ def test_identity_tests_inline_and_as_builtins_agree() -> None:
         assert not kb.holds("in(1, [1.0])")
         assert kb.holds("other(1, 1.0), \\+ other(a, a), X = Y, \\+ other(X, Y)")
     assert kb.holds("_X = f(_X), _Y = f(_Y), _X == _Y")  # cyclic terms end
+
+
+def test_later_clauses_see_arguments_as_called_after_a_shared_variable_was_bound() -> None:
+    kb = KnowledgeBase()
+    kb.consult("q([], []). q([a], [a]).\nr([], b). r([x], [x]).")
+    # q(X, X): binding X for the first argument must not leak into the second argument
+    # that the next clause (or the choicepoint) reads after the binding is undone.
+    assert answers(kb, "q(X, X)", "X", times=6) == [[], ["a"]]
+    assert answers(kb, "r(X, X)", "X", times=6) == [["x"]]
+
+
+def test_clauses_whose_leading_type_test_refuses_the_switched_argument_are_skipped() -> None:
+    kb = KnowledgeBase()
+    kb.consult(
+        """
+        k(X, R) :- atomic(X), !, R = atomic.
+        k(X, R) :- X \\== z, var(X), R = var.
+        k(f(_), f).
+        k(X, R) :- integer(X), R = int.
+        k(_, other).
+        c(X, R) :- !, atom(X), R = yes.
+        c(_, no).
+        """
+    )
+    assert answers(kb, "k(f(1), R)", "R") == ["f", "other"]
+    assert answers(kb, "k(g, R)", "R") == ["atomic"]
+    assert answers(kb, "k(7, R)", "R") == ["atomic"]
+    assert answers(kb, "k(X, R)", "R") == ["var", "f", "other"]
+    assert answers(kb, "k(2.5, R)", "R") == ["atomic"]
+    assert answers(kb, "c(f(1), R)", "R") == []  # the cut commits before the test fails
+    assert answers(kb, "c(a, R)", "R") == ["yes"]

@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from robocram.logic import KnowledgeBase, builtin_terms, python_predicates
-from robocram.logic.codegen import _FACTORIES, FACTORY_CACHE_SIZE, make_factory
+from robocram.logic.goal_writer import _FACTORIES, FACTORY_CACHE_SIZE, make_factory
 from robocram.logic.knowledge_base import QUERY_CACHE_SIZE
 from robocram.logic.lru import LRUCache
 from robocram.logic.predicate import FrozenPred

@@ -23,19 +23,7 @@ def _compare(op: Callable[[Number, Number], bool]) -> DetFn:
     return run
 
 
-def _compiled_test(m: Engine, args: tuple[Any, ...]) -> bool:
-    """`'$test'(Fn, Values)`: a comparison that clause code compiled (see codegen)."""
-    return bool(args[0](*args[1]))
-
-
-def _compiled_is(m: Engine, args: tuple[Any, ...]) -> bool:
-    """`'$is'(Fn, Target, Values)`: an `is/2` that clause code compiled (see codegen)."""
-    return m.unify(args[1], args[0](*args[2]))
-
-
 BUILTINS: tuple[Builtin, ...] = (
-    det("$test", _compiled_test, 2),
-    det("$is", _compiled_is, 3),
     det("is", _is, 2),
     det("<", _compare(lambda a, b: a < b), 2),
     det(">", _compare(lambda a, b: a > b), 2),

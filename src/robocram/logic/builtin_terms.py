@@ -13,8 +13,9 @@ from robocram.logic.errors import (
     PrologTypeError,
     error_from_ball,
 )
-from robocram.logic.terms import NIL, PString, Term, Var, deref, make_list
+from robocram.logic.terms import NIL, PString, Term, Var, deref
 from robocram.logic.unify import copy_resolved, identical, is_acyclic, order_key
+from robocram.logic.univ import univ_compose, univ_list
 
 if TYPE_CHECKING:
     from robocram.logic.engine import Engine
@@ -137,19 +138,10 @@ def _arg(m: Engine, a: Args) -> bool:
 
 def _univ(m: Engine, a: Args) -> bool:
     t = deref(a[0])
-    if type(t) is Term:
-        return m.unify(a[1], make_list([t[0], *t[1]]))
-    if type(t) is not Var:
-        return m.unify(a[1], make_list([t]))
-    items = list_items(a[1], "=../2")
-    if not items:
-        raise PrologDomainError("non_empty_list", NIL, "=../2: the list is empty")
-    head = deref(items[0])
-    if len(items) == 1:
-        return m.unify(t, head)
-    if type(head) is not str:
-        raise PrologTypeError("atom", head, f"=../2: {head!r} cannot name a compound")
-    return m.unify(t, Term(head, items[1:]))
+    items = univ_list(t)
+    if items is not None:
+        return m.unify(a[1], items)
+    return m.unify(t, univ_compose(a[1]))
 
 
 def _copy_term(m: Engine, a: Args) -> bool:

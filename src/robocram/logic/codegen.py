@@ -22,11 +22,19 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any, Protocol
 
-from robocram.logic.arith import BINARY_FUNCTIONS, apply_binary, evaluate
-from robocram.logic.lru import LRUCache
-from robocram.logic.template import Slot, Tmpl
-from robocram.logic.terms import Term, Var, new_term
-from robocram.logic.unify import identical, unify
+from robocram.logic.early_guards import guard_goals, rejection
+from robocram.logic.goal_writer import (
+    FACTORY_CACHE_SIZE,
+    GoalWriter,
+    deref_line,
+    inlinable,
+    inline_function,
+    make_factory,
+    slots_in,
+    term_parts,
+)
+from robocram.logic.template import Tmpl
+from robocram.logic.terms import Var
 
 __all__ = [
     "FACTORY_CACHE_SIZE",
@@ -48,34 +56,6 @@ class ClauseCode(Protocol):
 
 ClauseFn = Callable[[tuple[Any, ...], list[Var], int, Any, list[list[Any]]], Any]
 
-_NAMESPACE: dict[str, Any] = {
-    "Var": Var,
-    "Term": Term,
-    "new_term": new_term,
-    "unify": unify,
-    "identical": identical,
-    "ev": evaluate,
-    "ap2": apply_binary,
-}
-# Generated factories are pure functions of their source text (constants are parameters),
-# so one bounded memo serves every knowledge base without sharing any resolved state.
-FACTORY_CACHE_SIZE = 4096
-_FACTORIES: LRUCache[str, Callable[..., Any]] = LRUCache(FACTORY_CACHE_SIZE)
-_ARITH_OPS = {"+": "+", "-": "-", "*": "*"}
-_COMPARE_OPS = {"<": "<", ">": ">", "=<": "<=", ">=": ">=", "=:=": "==", "=\\=": "!="}
-_EXACT_TYPES = (str, int, float)
-# ISO type tests inlined at the head of a clause body: the condition on the dereferenced value
-_TYPE_TESTS = {
-    "var": "type({0}) is Var",
-    "nonvar": "type({0}) is not Var",
-    "atom": "type({0}) is str",
-    "number": "type({0}) is int or type({0}) is float",
-    "integer": "type({0}) is int",
-    "float": "type({0}) is float",
-    "atomic": "type({0}) is not Var and type({0}) is not Term",
-    "compound": "type({0}) is Term",
-    "callable": "type({0}) is str or type({0}) is Term",
-}
 _CONTROL = {(",", 2), (";", 2), ("->", 2), ("*->", 2), ("\\+", 1)}
 
 
@@ -86,89 +66,27 @@ def compile_clause_fn(clause: ClauseCode) -> ClauseFn:
     return make_factory(source)(*gen.consts)
 
 
-def make_factory(source: str) -> Callable[..., Any]:
-    """Execute generated source defining `make(...)`, once per distinct source text."""
-    factory = _FACTORIES.get(source)
-    if factory is None:
-        namespace = dict(_NAMESPACE)
-        exec(compile(source, "<robocram clause>", "exec"), namespace)  # noqa: S102
-        factory = namespace["make"]
-        _FACTORIES.put(source, factory)
-    return factory
-
-
-def _slots_in(t: Any, out: list[int]) -> list[int]:
-    """Collect the slot numbers in a template, in order of first appearance."""
-    if type(t) is Slot:
-        if t.i not in out:
-            out.append(t.i)
-    elif type(t) is Tmpl:
-        for a in t.args:
-            _slots_in(a, out)
-    return out
-
-
 def _arg_names(arity: int) -> str:
     """`a0, a1, ` : the locals holding the call's arguments (a tuple target)."""
     return "".join(f"a{i}, " for i in range(arity))
 
 
-def _parts(t: Any) -> tuple[str, tuple[Any, ...]] | None:
-    """Name and arguments of a compound term or template; None for anything else."""
-    if type(t) is Tmpl:
-        return t.name, t.args
-    if type(t) is Term:
-        return t[0], t[1]
-    return None
-
-
 def _is_self_call(goal: Any, clause: ClauseCode) -> bool:
     """True when `goal` calls the clause's own predicate (same name and arity)."""
-    parts = _parts(goal)
+    parts = term_parts(goal)
     return parts is not None and parts[0] == clause.name and len(parts[1]) == len(clause.head)
 
 
 def _conjuncts(g: Any) -> list[Any]:
     """The goals of a conjunction `(A, B, ...)`, in order."""
-    parts = _parts(g)
+    parts = term_parts(g)
     if parts is not None and parts[0] == "," and len(parts[1]) == 2:
         return [*_conjuncts(parts[1][0]), *_conjuncts(parts[1][1])]
     return [g]
 
 
-def arith_function(name: str, args: tuple[Any, ...], slots: list[int]) -> Any:
-    """Compile comparison or `is/2` goal `name(args)` to a function of its slots' values.
-
-    The function returns the comparison's truth, or the value of `is/2`'s expression;
-    None when the expression has a part that must be evaluated at run time as a term.
-    """
-    writer = ClauseWriter()
-    writer.known = set(slots)
-    if name == "is":
-        code = writer.expr(args[1])
-    else:
-        left, right = writer.expr(args[0]), writer.expr(args[1])
-        code = None if left is None or right is None else f"{left} {_COMPARE_OPS[name]} {right}"
-    if code is None:
-        return None
-    params = ", ".join(f"k{i}" for i in range(len(writer.consts)))
-    values = ", ".join(f"v{i}" for i in slots)
-    head = [f"def make({params}):", f"  def fn({values}):"]
-    source = "\n".join([*head, *writer.lines, f"    return {code}", "  return fn", ""])
-    return make_factory(source)(*writer.consts)
-
-
-class ClauseWriter:
-    """Emits the Python source of clause code, tracking which slots hold values."""
-
-    def __init__(self) -> None:
-        self.lines: list[str] = []
-        self.consts: list[Any] = []
-        self.known: set[int] = set()
-        self.dereffed: set[int] = set()
-        self.temps = 0
-        self.base = 0
-        self.fail = "return False"  # the statement a failing head or inline goal runs
+class ClauseWriter(GoalWriter):
+    """Emits the Python source of a clause: head, leading inline goals, continuation."""
 
     def clause_source(self, clause: ClauseCode) -> str:
         """Generate `make(k0, k1, ...)` returning the clause function."""
@@ -191,12 +109,33 @@ class ClauseWriter:
         """
         self.known = set()
         self.dereffed = set()
+        body = list(reversed(clause.body_rev))
+        early = [r for r in map(rejection, guard_goals(body)) if r is not None]
         for i, p in enumerate(clause.head):
             if i == 0 and switched and type(p) is Tmpl:
                 self.read_args(p.args, "a0[1]", 1)
             elif not (i == 0 and switched and type(p) in (str, int)):
-                self.unify_arg(p, f"a{i}", 1)
-        self.body_code(clause, list(reversed(clause.body_rev)))
+                self.unify_arg(p, self.arg_local(i, p), 1)
+            if early and any(type(q) is Tmpl for q in clause.head[i + 1 :]):
+                early = self.reject_early(early)
+        self.body_code(clause, body)
+
+    def reject_early(self, guards: list[tuple[list[int], str]]) -> list[tuple[list[int], str]]:
+        """Emit the guards whose values are all known (see early_guards); return the rest."""
+        later = []
+        for slots, condition in guards:
+            if any(i not in self.known for i in slots):
+                later.append((slots, condition))
+                continue
+            for i in slots:
+                if i not in self.dereffed:
+                    self.emit(deref_line(f"v{i}"), 1)
+            self.emit(f"if {condition}: {self.fail}", 1)
+        return later
+
+    def arg_local(self, i: int, p: Any) -> str:
+        """The local to unify head argument `i` (template `p`) with; unify_arg derefs it."""
+        return f"a{i}"
 
     def body_code(self, clause: ClauseCode, body: list[Any]) -> None:
         """Emit the leading inline goals of `body`, then its exit."""
@@ -206,12 +145,12 @@ class ClauseWriter:
             return
         self.fresh(body, 1)
         if len(body) == 1 and _is_self_call(body[0], clause):
-            args = "".join(f"{self.build(a)}, " for a in _parts(body[0])[1])  # type: ignore[index]
+            args = "".join(f"{self.build(a)}, " for a in term_parts(body[0])[1])  # type: ignore[index]
             self.self_call(args)
             return
         cont = "nxt"
-        for g in reversed(body):
-            cont = f"({self.goal(g)}, cb, {cont})"
+        for g in reversed(self.goals(body)):
+            cont = f"({g}, cb, {cont})"
         self.exit(cont)
 
     def self_call(self, args: str) -> None:
@@ -226,156 +165,54 @@ class ClauseWriter:
         """Exit with the continuation expression `cont` (the remaining body goals)."""
         self.emit(f"return {cont}", 1)
 
-    def cut(self) -> None:
-        """Emit a cut at the neck: drop the choicepoints made since the clause began."""
-        self.emit("del cps[cb:]", 1)
-
-    def emit(self, line: str, depth: int) -> None:
-        self.lines.append("  " * (depth + self.base + 1) + line)
-
-    def const(self, value: Any) -> str:
-        self.consts.append(value)
-        return f"k{len(self.consts) - 1}"
-
-    def temp(self) -> str:
-        self.temps += 1
-        return f"t{self.temps}"
-
-    def fresh(self, templates: list[Any], depth: int) -> None:
-        """Give each slot not yet holding a value a new unbound variable."""
-        found: list[int] = []
-        for t in templates:
-            _slots_in(t, found)
-        for i in found:
-            if i not in self.known:
-                self.emit(f"v{i} = Var()", depth)
-                self.known.add(i)
-
-    def build(self, t: Any) -> str:
-        """Python expression building template `t` (all its slots must be known)."""
-        if type(t) is Slot:
-            return f"v{t.i}"
-        if type(t) is Tmpl:
-            args = "".join(f"{self.build(a)}, " for a in t.args)
-            return f"new_term(Term, ({self.const(t.name)}, ({args})))"
-        return self.const(t)
-
     def goal(self, g: Any) -> str:
-        """Python expression building body goal `g`, arithmetic compiled to a function.
+        """Python expression building body goal `g`; control constructs goal by goal.
 
-        `X > Y + 1` later in a body becomes `'$test'(Fn, Values)`, and `X is E` becomes
-        `'$is'(Fn, X, Values)`, so that the machine runs Python arithmetic instead of
-        walking the expression; control constructs are compiled goal by goal.
+        A test, `is/2` or `=/2` becomes an inline goal (see inline_goal.py), so that the
+        machine runs Python code instead of looking up and walking the built-in.
         """
-        parts = _parts(g)
+        run = self.inline_run([g]) if inlinable(g) else None
+        if run is not None:
+            return run
+        parts = term_parts(g)
         if parts is None:
             return self.build(g)
         name, args = parts
         if (name, len(args)) in _CONTROL:
             inner = "".join(f"{self.goal(a)}, " for a in args)
             return f"new_term(Term, ({self.const(name)}, ({inner})))"
-        if len(args) != 2 or not (name in _COMPARE_OPS or name == "is"):
-            return self.build(g)
-        slots = _slots_in(g, [])
-        fn = arith_function(name, args, slots)
-        if fn is None or not slots:
-            return self.build(g)
+        if type(g) is Tmpl:  # a call: a plain tuple the machine recognises by CALL
+            inner = "".join(f"{self.build(a)}, " for a in args)
+            return f"({self.const(name)}, ({inner}), CALL)"
+        return self.build(g)
+
+    def goals(self, body: list[Any]) -> list[str]:
+        """Expressions of the continuation's goals: each run of inline goals is one goal."""
+        out: list[str] = []
+        i = 0
+        while i < len(body):
+            j = i
+            while j < len(body) and inlinable(body[j]):
+                j += 1
+            run = self.inline_run(body[i:j]) if j > i else None
+            if run is not None:
+                out.append(run)
+                i = j
+            else:
+                out.append(self.goal(body[i]) if j == i else self.build(body[i]))
+                i += 1
+        return out
+
+    def inline_run(self, goals: list[Any]) -> str | None:
+        """Expression of one inline goal running `goals` (their slots all hold values)."""
+        slots: list[int] = []
+        for g in goals:
+            slots_in(g, slots)
+        fn = inline_function(goals, slots)
+        if fn is None:
+            return None
         values = "".join(f"v{i}, " for i in slots)
-        if name == "is":
-            target = self.build(args[0])
-            return f"new_term(Term, ('$is', ({self.const(fn)}, {target}, ({values}))))"
-        return f"new_term(Term, ('$test', ({self.const(fn)}, ({values}))))"
-
-    def unify_arg(self, p: Any, x: str, depth: int) -> None:
-        """Emit code unifying template `p` with the (un-dereferenced) value in local `x`."""
-        if type(p) is Slot:
-            if p.i in self.known:
-                self.emit(f"if not unify(v{p.i}, {x}, trail): {self.fail}", depth)
-            else:
-                self.emit(f"v{p.i} = {x}", depth)
-                self.known.add(p.i)
-            return
-        if type(p) is not Tmpl and type(p) not in _EXACT_TYPES:
-            self.emit(f"if not unify({self.const(p)}, {x}, trail): {self.fail}", depth)
-            return
-        self.emit(f"while type({x}) is Var and {x}.ref is not None: {x} = {x}.ref", depth)
-        if type(p) is not Tmpl:
-            k = self.const(p)
-            self.emit(f"if type({x}) is Var: {x}.ref = {k}; trail.append({x})", depth)
-            self.emit(f"elif type({x}) is not {type(p).__name__} or {x} != {k}: {self.fail}", depth)
-            return
-        before = set(self.known)
-        self.emit(f"if type({x}) is Var:", depth)
-        self.fresh([p], depth + 1)
-        self.emit(f"{x}.ref = {self.build(p)}; trail.append({x})", depth + 1)
-        self.known = before
-        name = self.const(p.name)
-        n = len(p.args)
-        self.emit(f"elif type({x}) is Term and {x}[0] == {name} and len({x}[1]) == {n}:", depth)
-        self.read_args(p.args, f"{x}[1]", depth + 1)
-        self.emit(f"else: {self.fail}", depth)
-
-    def read_args(self, pargs: tuple[Any, ...], src: str, depth: int) -> None:
-        """Read mode: unpack the call's subterms, then unify each with its template."""
-        names: list[str] = []
-        later: list[tuple[Any, str]] = []
-        for a in pargs:
-            if type(a) is Slot and a.i not in self.known:
-                names.append(f"v{a.i}")
-                self.known.add(a.i)
-            else:
-                t = self.temp()
-                names.append(t)
-                later.append((a, t))
-        self.emit(f"{''.join(n + ', ' for n in names)}= {src}", depth)
-        for a, t in later:
-            self.unify_arg(a, t, depth)
-
-    def inline_goal(self, g: Any) -> bool:
-        """Emit a leading deterministic built-in inline; False when `g` is not one."""
-        if g == "!":
-            self.cut()
-            return True
-        if g == "true":
-            return True
-        parts = _parts(g)
-        if parts is not None and len(parts[1]) == 1 and parts[0] in _TYPE_TESTS:
-            return self.type_test(parts[0], parts[1][0])
-        if parts is not None and len(parts[1]) == 2 and parts[0] in ("==", "\\=="):
-            test = self.test(g)
-            if test is not None:
-                self.emit(f"if not ({test}): {self.fail}", 1)
-            return test is not None
-        if parts is None or len(parts[1]) != 2:
-            return False
-        name, (left, right) = parts
-        if name in _COMPARE_OPS:
-            a, b = self.expr(left), self.expr(right)
-            if a is None or b is None:
-                return False
-            self.emit(f"if not ({a} {_COMPARE_OPS[name]} {b}): {self.fail}", 1)
-            return True
-        if name == "is":
-            value = self.expr(right)
-            if value is None:
-                return False
-            self.assign_or_unify(left, value)
-            return True
-        if name == "=":
-            if type(right) is Slot and right.i not in self.known:
-                left, right = right, left
-            if type(left) is Slot and left.i not in self.known:
-                if left.i in _slots_in(right, []):
-                    return False
-                self.fresh([right], 1)
-                self.emit(f"v{left.i} = {self.build(right)}", 1)
-                self.known.add(left.i)
-                return True
-            self.fresh([left, right], 1)
-            left_code, right_code = self.build(left), self.build(right)
-            self.emit(f"if not unify({left_code}, {right_code}, trail): {self.fail}", 1)
-            return True
-        return False
+        return f"({self.const(fn)}, ({values}), INLINE)"
 
     def inline_if(self, clause: ClauseCode, body: list[Any]) -> bool:
         """`(Cond -> Then ; Else)` first in `body`, Cond a test: a Python `if` instead.
@@ -383,11 +220,11 @@ class ClauseWriter:
         Each branch continues with its goals and the rest of the body, so no choicepoint
         or control goal is made; a cut in either branch cuts the clause, as it would.
         """
-        parts = _parts(body[0])
+        parts = term_parts(body[0])
         if parts is None or len(parts[1]) != 2 or parts[0] not in (";", "->"):
             return False
         cond_then, other = (parts[1][0], parts[1][1]) if parts[0] == ";" else (body[0], "fail")
-        inner = _parts(cond_then)
+        inner = term_parts(cond_then)
         if inner is None or inner[0] != "->" or len(inner[1]) != 2:
             return False
         test = self.test(inner[1][0])
@@ -412,83 +249,3 @@ class ClauseWriter:
 
     def restore(self, state: Any) -> None:
         """Undo a branch's changes to `state()`."""
-
-    def test(self, g: Any) -> str | None:
-        """A Python condition for test goal `g` (type tests, comparisons, `\\+`, `,`)."""
-        if g in ("true", "fail", "false"):
-            return "True" if g == "true" else "False"
-        parts = _parts(g)
-        if parts is None:
-            return None
-        name, args = parts
-        if name == "," and len(args) == 2 or name == "\\+" and len(args) == 1:
-            tests = [self.test(a) for a in args]
-            if None in tests:
-                return None
-            return f"not ({tests[0]})" if name == "\\+" else f"({tests[0]}) and ({tests[1]})"
-        if len(args) == 1 and name in _TYPE_TESTS:
-            slot = args[0]
-            if type(slot) is not Slot or slot.i not in self.known:
-                return None
-            self.deref_slot(slot.i)
-            return _TYPE_TESTS[name].format(f"v{slot.i}")
-        if len(args) == 2 and name in _COMPARE_OPS:
-            a, b = self.expr(args[0]), self.expr(args[1])
-            return None if a is None or b is None else f"{a} {_COMPARE_OPS[name]} {b}"
-        if len(args) == 2 and name in ("==", "\\=="):
-            if any(i not in self.known for i in _slots_in(g, [])):
-                return None
-            same = f"identical({self.build(args[0])}, {self.build(args[1])})"
-            return same if name == "==" else f"not {same}"
-        return None
-
-    def deref_slot(self, i: int) -> None:
-        """Dereference slot `i` in place, once."""
-        if i not in self.dereffed:
-            self.emit(f"while type(v{i}) is Var and v{i}.ref is not None: v{i} = v{i}.ref", 1)
-            self.dereffed.add(i)
-
-    def type_test(self, name: str, arg: Any) -> bool:
-        """Emit a type test (`number(X)`, `var(X)`, ...) of a slot holding a value."""
-        if type(arg) is not Slot or arg.i not in self.known:
-            return False
-        self.deref_slot(arg.i)
-        self.emit(f"if not ({_TYPE_TESTS[name].format(f'v{arg.i}')}): {self.fail}", 1)
-        return True
-
-    def assign_or_unify(self, target: Any, value: str) -> None:
-        """Bind a fresh slot to `value` directly, or unify `target` with it."""
-        if type(target) is Slot and target.i not in self.known:
-            self.emit(f"v{target.i} = {value}", 1)
-            self.known.add(target.i)
-            return
-        self.fresh([target], 1)
-        self.emit(f"if not unify({self.build(target)}, {value}, trail): {self.fail}", 1)
-
-    def expr(self, t: Any) -> str | None:
-        """Python expression evaluating arithmetic template `t`; None if a slot is unset."""
-        if type(t) is Slot:
-            if t.i not in self.known:
-                return None
-            v = f"v{t.i}"
-            if t.i not in self.dereffed:
-                # A slot read from a call argument is often a bound variable: dereference
-                # it once so every later use takes the int fast path.
-                self.emit(f"while type({v}) is Var and {v}.ref is not None: {v} = {v}.ref", 1)
-                self.dereffed.add(t.i)
-            return f"({v} if type({v}) is int else ev({v}))"
-        if type(t) is int:
-            return self.const(t)
-        parts = _parts(t)
-        if parts is not None:
-            name, args = parts
-            if len(args) == 2 and name in BINARY_FUNCTIONS:
-                a, b = self.expr(args[0]), self.expr(args[1])
-                if a is None or b is None:
-                    return None
-                if name in _ARITH_OPS:
-                    return f"({a} {_ARITH_OPS[name]} {b})"
-                return f"ap2({self.const(name)}, {a}, {b})"
-            if any(i not in self.known for i in _slots_in(t, [])):
-                return None
-        return f"ev({self.build(t)})"

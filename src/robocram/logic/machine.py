@@ -11,6 +11,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import Any
 
+from robocram.logic import gc_pacing
 from robocram.logic.builtin_flags import warn_unknown
 from robocram.logic.choicepoints import ALT, BARRIER, CATCH, CLAUSES, GEN, PROC, REACT
 from robocram.logic.clause import Clause
@@ -24,6 +25,7 @@ from robocram.logic.errors import (
     PrologTypeError,
     UnknownPredicateError,
 )
+from robocram.logic.inline_goal import CALL, INLINE
 from robocram.logic.limits import CHECK_EVERY, Budget
 from robocram.logic.occurs import unify_checked
 from robocram.logic.predicate import DET, NONDET, USER, WARM_CALLS, Pred
@@ -116,10 +118,17 @@ class Machine:
         goal: Any = None
         ticks = 0
         spend = self.budget.spend
+        plain = self.occurs_check == "false"  # procedures skip the occurs check
+        gc_pacing.enter()
+        running = True
         try:
             while True:
                 while cont is None:
+                    gc_pacing.leave()
+                    running = False
                     yield None
+                    gc_pacing.enter()
+                    running = True
                     cont = backtrack(cps)
                 if cont is False:
                     return
@@ -129,11 +138,24 @@ class Machine:
                     ticks = 0
                 goal, cutb, nxt = cont
                 tg = type(goal)
-                if tg is Term:
+                if tg is tuple:  # built by clause code (see inline_goal.py)
+                    name, args, mark = goal
+                    if mark is not CALL:
+                        if mark is INLINE:
+                            cont = nxt if name(trail, *args) else backtrack(cps)
+                        else:
+                            cont = self._call_other(goal, len(cps), nxt)
+                        continue
+                    p = preds.get((name, len(args)))
+                elif tg is Term:
                     name = goal[0]
                     args = goal[1]
                     p = preds.get((name, len(args)))
                 elif tg is str:
+                    if goal == "!":  # the commonest atom goal: no lookup
+                        del cps[cutb:]
+                        cont = nxt
+                        continue
                     name = goal
                     args = ()
                     p = preds.get((name, 0))
@@ -144,18 +166,18 @@ class Machine:
                     self._undefined(name, len(args))
                     cont = backtrack(cps)
                     continue
-                k = p.kind
-                if k == USER:
-                    proc = p.proc
-                    if proc is not None and self.occurs_check == "false":
-                        cont = proc(args, trail, nxt, cps, 0)
+                proc = p.proc  # only user predicates have one
+                if proc is not None and plain:
+                    cont = proc(args, trail, nxt, cps, 0)
+                    if cont is False:
+                        cont = backtrack(cps)
+                    elif type(cont) is list:
+                        cont = self._again(proc, cont, nxt, cps)
                         if cont is False:
                             cont = backtrack(cps)
-                        elif type(cont) is list:
-                            cont = self._again(proc, cont, nxt, cps)
-                            if cont is False:
-                                cont = backtrack(cps)
-                        continue
+                    continue
+                k = p.kind
+                if k == USER:
                     if p.pyfn is not None:
                         if not cps and trail:
                             del trail[:]
@@ -174,8 +196,8 @@ class Machine:
                     cont = backtrack(cps)
                 elif name == ",":
                     cont = (args[0], cutb, (args[1], cutb, nxt))
-                elif name == "!":
-                    del cps[cutb:]
+                elif name == "$cut":  # the end of an if-then-else's condition
+                    del cps[args[0] :]
                     cont = nxt
                 else:
                     cont = run_control(self, name, args, cutb, nxt, cps)
@@ -185,6 +207,9 @@ class Machine:
             raise
         except Exception as err:  # a built-in's own failure: make it a Prolog error
             raise host_error(err, goal) from err
+        finally:
+            if running:
+                gc_pacing.leave()
 
     def _call_clauses(self, p: Pred, args: Any, nxt: Any, cps: list[list[Any]]) -> Any:
         """Try the clauses of `p` that the first argument selects; False when none runs.
@@ -251,15 +276,15 @@ class Machine:
             while len(trail) > mark:
                 trail.pop().ref = None
             kind = cp[0]
-            if kind == CLAUSES:
-                cont = self._next_clause(cp, cps)
-                if cont is not False:
-                    return cont
-            elif kind == PROC:
+            if kind == PROC:  # the commonest: a compiled procedure's later clauses
                 cps.pop()
                 cont = cp[4](cp[2], trail, cp[3], cps, cp[5])
                 if type(cont) is list:
                     cont = self._again(cp[4], cont, cp[3], cps)
+                if cont is not False:
+                    return cont
+            elif kind == CLAUSES:
+                cont = self._next_clause(cp, cps)
                 if cont is not False:
                     return cont
             elif kind == GEN:
@@ -336,7 +361,11 @@ def host_error(err: Exception, goal: Any) -> PrologError:
     """The Prolog error for a Python exception raised while running `goal`."""
     while type(goal) is Var and goal.ref is not None:
         goal = goal.ref
-    if type(goal) is Term:
+    if type(goal) is tuple:
+        if len(goal) != 3 or goal[2] not in (CALL, INLINE):  # a Python tuple as a goal
+            return PrologTypeError("callable", goal, f"{goal!r} is not a callable goal")
+        where = f"{goal[0]}/{len(goal[1])}" if goal[2] is CALL else "an inline goal"
+    elif type(goal) is Term:
         where = f"{goal[0]}/{len(goal[1])}"
     else:
         where = f"{goal}/0" if type(goal) is str else "the engine"

@@ -31,7 +31,7 @@ from typing import Any
 from robocram.logic.choicepoints import PROC
 from robocram.logic.codegen import ClauseCode, ClauseWriter, make_factory
 from robocram.logic.limits import CHECK_EVERY
-from robocram.logic.template import Tmpl
+from robocram.logic.template import Slot, Tmpl
 from robocram.logic.terms import Term
 
 __all__ = ["MAX_CLAUSES", "SCAN_AFTER", "Procedure", "Scan", "compile_procedure"]
@@ -99,6 +99,7 @@ class _Branches:
         self.compound: dict[tuple[str, int], list[int]] = {}
         self.atomic: dict[str | int, list[int]] = {}
         self.open: list[int] = []  # clauses with a variable (or float, ...) there
+        self.open_compound: list[int] = []  # those of them a compound can get past
         self.every: list[int] = []
 
 
@@ -123,8 +124,54 @@ def _branches(clauses: list[ClauseCode]) -> _Branches | None:
             for key, members in table.items():
                 if k is None or k == key and type(k) is type(key):
                     members.append(i)
+    for key, members in b.compound.items():
+        b.compound[key] = [i for i in members if not _refused(clauses[i], Term)]
+    for key, members in b.atomic.items():
+        b.atomic[key] = [i for i in members if not _refused(clauses[i], type(key))]
+    b.open_compound = [i for i in b.open if not _refused(clauses[i], Term)]
     copies = sum(len(m) for m in [*b.compound.values(), *b.atomic.values()])
     return b if copies <= 4 * len(clauses) + 32 else None
+
+
+# Whether each ISO type test holds for a compound, an atom and an integer
+_TEST_TRUTH: dict[str, tuple[bool, bool, bool]] = {
+    "var": (False, False, False),
+    "nonvar": (True, True, True),
+    "atom": (False, True, False),
+    "number": (False, False, True),
+    "integer": (False, False, True),
+    "float": (False, False, False),
+    "atomic": (False, True, True),
+    "compound": (True, False, False),
+    "callable": (True, True, False),
+}
+_KINDS: dict[type, int] = {Term: 0, str: 1, int: 2}
+
+
+def _refused(clause: ClauseCode, kind: type) -> bool:
+    """True when a type test leading the body fails for any first argument of type `kind`.
+
+    `p(X, ...) :- atomic(X), ...` can never run for a compound X: head unification binds
+    only variables, so the test sees the type the switch saw. Only tests that neither
+    bind nor raise may come before it (a cut or a comparison stops the scan).
+    """
+    if not clause.head or type(clause.head[0]) is not Slot:
+        return False
+    first = clause.head[0].i
+    for goal in reversed(clause.body_rev):
+        if type(goal) is not Tmpl or len(goal.args) not in (1, 2):
+            return False
+        if len(goal.args) == 2:
+            if goal.name not in ("==", "\\=="):
+                return False
+            continue
+        truth = _TEST_TRUTH.get(goal.name)
+        if truth is None:
+            return False
+        arg = goal.args[0]
+        if type(arg) is Slot and arg.i == first and not truth[_KINDS[kind]]:
+            return True
+    return False
 
 
 def _key(t: Any) -> Key | None:
@@ -184,7 +231,7 @@ class _ProcWriter(ClauseWriter):
             tests = [f"f == {self.const(k[0])} and n == {k[1]}" for k in b.compound]
         else:  # one functor: test it in place
             tests = [f"a0[0] == {self.const(k[0])} and len(a0[1]) == {k[1]}" for k in b.compound]
-        self.dispatch(list(b.compound.items()), tests, "(f, n)", b.open)
+        self.dispatch(list(b.compound.items()), tests, "(f, n)", b.open_compound)
         self.emit("elif t is str or t is int:", 2)
         tests = [f"t is {type(k).__name__} and a0 == {self.const(k)}" for k in b.atomic]
         self.dispatch(list(b.atomic.items()), tests, "a0", b.open)
@@ -259,6 +306,20 @@ class _ProcWriter(ClauseWriter):
             self.emit("if start < 0: start = 0; continue", depth + 1)
             self.emit("while len(trail) > mark: trail.pop().ref = None", depth + 1)
         self.base = 0
+
+    def arg_local(self, i: int, p: Any) -> str:
+        """A copy of argument `i` when a later clause of the branch may still read it.
+
+        Unifying a head argument dereferences its local in place; past the first
+        argument, an earlier argument's binding may be followed there, which undoing the
+        trail does not reverse, so the later clauses and the choicepoint must see the
+        argument as called.
+        """
+        if i == 0 or self.next_start is None or type(p) is Slot and p.i not in self.known:
+            return f"a{i}"
+        local = self.temp()
+        self.emit(f"{local} = a{i}", 1)
+        return local
 
     def state(self) -> Any:
         return self.committed

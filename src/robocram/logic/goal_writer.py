@@ -1,0 +1,401 @@
+"""Emit the Python code of goals that run inline: head unification, tests, arithmetic.
+
+`GoalWriter` tracks which clause variables (slots) hold values and which are already
+dereferenced, and writes straight-line code for unifying a value with a template (read
+mode when the value is bound, write mode when it is a variable), ISO type tests,
+comparisons, `is/2`, `=/2`, `==/2` and `=../2`. `codegen.ClauseWriter` builds whole
+clauses on it, `procedure.py` whole predicates, and `inline_function` the runs of such
+goals that follow a call (see inline_goal.py). Generated sources become functions
+through `make_factory`, memoised by source text.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+from robocram.logic.arith import BINARY_FUNCTIONS, apply_binary, evaluate
+from robocram.logic.inline_goal import CALL, INLINE
+from robocram.logic.lru import LRUCache
+from robocram.logic.template import Slot, Tmpl
+from robocram.logic.terms import Term, Var, new_term
+from robocram.logic.unify import identical, unify
+from robocram.logic.univ import univ_compose, univ_list
+
+__all__ = [
+    "FACTORY_CACHE_SIZE",
+    "GoalWriter",
+    "deref_line",
+    "inlinable",
+    "inline_function",
+    "make_factory",
+    "term_parts",
+    "slots_in",
+]
+
+_NAMESPACE: dict[str, Any] = {
+    "Var": Var,
+    "Term": Term,
+    "INLINE": INLINE,
+    "CALL": CALL,
+    "univ_list": univ_list,
+    "univ_compose": univ_compose,
+    "new_term": new_term,
+    "unify": unify,
+    "identical": identical,
+    "ev": evaluate,
+    "ap2": apply_binary,
+}
+# Generated factories are pure functions of their source text (constants are parameters),
+# so one bounded memo serves every knowledge base without sharing any resolved state.
+FACTORY_CACHE_SIZE = 4096
+_FACTORIES: LRUCache[str, Callable[..., Any]] = LRUCache(FACTORY_CACHE_SIZE)
+_ARITH_OPS = {"+": "+", "-": "-", "*": "*"}
+_COMPARE_OPS = {"<": "<", ">": ">", "=<": "<=", ">=": ">=", "=:=": "==", "=\\=": "!="}
+_EXACT_TYPES = (str, int, float)
+# ISO type tests inlined at the head of a clause body: the condition on the dereferenced value
+_TYPE_TESTS = {
+    "var": "type({0}) is Var",
+    "nonvar": "type({0}) is not Var",
+    "atom": "type({0}) is str",
+    "number": "type({0}) is int or type({0}) is float",
+    "integer": "type({0}) is int",
+    "float": "type({0}) is float",
+    "atomic": "type({0}) is not Var and type({0}) is not Term",
+    "compound": "type({0}) is Term",
+    "callable": "type({0}) is str or type({0}) is Term",
+}
+
+
+def make_factory(source: str) -> Callable[..., Any]:
+    """Execute generated source defining `make(...)`, once per distinct source text."""
+    factory = _FACTORIES.get(source)
+    if factory is None:
+        namespace = dict(_NAMESPACE)
+        exec(compile(source, "<robocram clause>", "exec"), namespace)  # noqa: S102
+        factory = namespace["make"]
+        _FACTORIES.put(source, factory)
+    return factory
+
+
+def deref_line(x: str) -> str:
+    """The statement dereferencing local `x` in place."""
+    return f"while type({x}) is Var and {x}.ref is not None: {x} = {x}.ref"
+
+
+def slots_in(t: Any, out: list[int]) -> list[int]:
+    """Collect the slot numbers in a template, in order of first appearance."""
+    if type(t) is Slot:
+        if t.i not in out:
+            out.append(t.i)
+    elif type(t) is Tmpl:
+        for a in t.args:
+            slots_in(a, out)
+    return out
+
+
+def term_parts(t: Any) -> tuple[str, tuple[Any, ...]] | None:
+    """Name and arguments of a compound term or template; None for anything else."""
+    if type(t) is Tmpl:
+        return t.name, t.args
+    if type(t) is Term:
+        return t[0], t[1]
+    return None
+
+
+def inlinable(g: Any) -> bool:
+    """True for a goal that runs inline once its slots hold values (tests, is/2, =/2)."""
+    parts = term_parts(g)
+    if parts is None:
+        return g == "true"
+    name, args = parts
+    if len(args) == 1:
+        return name in _TYPE_TESTS
+    if name == "=.." and len(args) == 2:
+        return type(args[0]) is Slot
+    return len(args) == 2 and (name in _COMPARE_OPS or name in _INLINE_BINARY)
+
+
+_INLINE_BINARY = frozenset(["is", "=", "==", "\\=="])
+
+
+def inline_function(goals: list[Any], slots: list[int]) -> Any:
+    """Compile inline goals to `fn(trail, *values of slots)`: true when all succeed.
+
+    None when one of them cannot run inline after all.
+    """
+    writer = GoalWriter()
+    writer.known = set(slots)
+    for g in goals:
+        if not writer.inline_goal(g):
+            return None
+    params = ", ".join(f"k{i}" for i in range(len(writer.consts)))
+    values = "".join(f", v{i}" for i in slots)
+    head = [f"def make({params}):", f"  def fn(trail{values}):"]
+    source = "\n".join([*head, *writer.lines, "    return True", "  return fn", ""])
+    return make_factory(source)(*writer.consts)
+
+
+class GoalWriter:
+    """Emits Python source for inline goals, tracking which slots hold values."""
+
+    def __init__(self) -> None:
+        self.lines: list[str] = []
+        self.consts: list[Any] = []
+        self.known: set[int] = set()
+        self.dereffed: set[int] = set()
+        self.temps = 0
+        self.base = 0
+        self.fail = "return False"  # the statement a failing head or inline goal runs
+
+    def emit(self, line: str, depth: int) -> None:
+        self.lines.append("  " * (depth + self.base + 1) + line)
+
+    def const(self, value: Any) -> str:
+        self.consts.append(value)
+        return f"k{len(self.consts) - 1}"
+
+    def temp(self) -> str:
+        self.temps += 1
+        return f"t{self.temps}"
+
+    def fresh(self, templates: list[Any], depth: int) -> None:
+        """Give each slot not yet holding a value a new unbound variable."""
+        found: list[int] = []
+        for t in templates:
+            slots_in(t, found)
+        for i in found:
+            if i not in self.known:
+                self.emit(f"v{i} = Var()", depth)
+                self.known.add(i)
+
+    def build(self, t: Any) -> str:
+        """Python expression building template `t` (all its slots must be known)."""
+        if type(t) is Slot:
+            return f"v{t.i}"
+        if type(t) is Tmpl:
+            args = "".join(f"{self.build(a)}, " for a in t.args)
+            return f"new_term(Term, ({self.const(t.name)}, ({args})))"
+        return self.const(t)
+
+    def cut(self) -> None:
+        """Emit a cut at the neck: drop the choicepoints made since the clause began."""
+        self.emit("del cps[cb:]", 1)
+
+    def unify_arg(self, p: Any, x: str, depth: int) -> None:
+        """Emit code unifying template `p` with the (un-dereferenced) value in local `x`."""
+        if type(p) is Slot:
+            if p.i in self.known:
+                self.unify_locals(f"v{p.i}", x, depth)
+                self.dereffed.discard(p.i)
+            else:
+                self.emit(f"v{p.i} = {x}", depth)
+                self.known.add(p.i)
+            return
+        if type(p) is not Tmpl and type(p) not in _EXACT_TYPES:
+            self.emit(f"if not unify({self.const(p)}, {x}, trail): {self.fail}", depth)
+            return
+        self.emit(deref_line(x), depth)
+        if type(p) is not Tmpl:
+            k = self.const(p)
+            self.emit(f"if type({x}) is Var: {x}.ref = {k}; trail.append({x})", depth)
+            self.emit(f"elif type({x}) is not {type(p).__name__} or {x} != {k}: {self.fail}", depth)
+            return
+        before = set(self.known)
+        self.emit(f"if type({x}) is Var:", depth)
+        self.fresh([p], depth + 1)
+        self.emit(f"{x}.ref = {self.build(p)}; trail.append({x})", depth + 1)
+        self.known = before
+        name = self.const(p.name)
+        n = len(p.args)
+        self.emit(f"elif type({x}) is Term and {x}[0] == {name} and len({x}[1]) == {n}:", depth)
+        self.read_args(p.args, f"{x}[1]", depth + 1)
+        self.emit(f"else: {self.fail}", depth)
+
+    def unify_locals(self, a: str, b: str, depth: int) -> None:
+        """Emit unification of the values in locals `a` and `b` (both dereferenced in place).
+
+        Binding an unbound side is done here; only two non-variables call `unify`.
+        """
+        self.emit(deref_line(a), depth)
+        self.emit(deref_line(b), depth)
+        self.emit(f"if {a} is not {b}:", depth)
+        self.emit(f"if type({a}) is Var: {a}.ref = {b}; trail.append({a})", depth + 1)
+        self.emit(f"elif type({b}) is Var: {b}.ref = {a}; trail.append({b})", depth + 1)
+        self.emit(f"elif not unify({a}, {b}, trail): {self.fail}", depth + 1)
+
+    def read_args(self, pargs: tuple[Any, ...], src: str, depth: int) -> None:
+        """Read mode: unpack the call's subterms, then unify each with its template."""
+        names: list[str] = []
+        later: list[tuple[Any, str]] = []
+        for a in pargs:
+            if type(a) is Slot and a.i not in self.known:
+                names.append(f"v{a.i}")
+                self.known.add(a.i)
+            else:
+                t = self.temp()
+                names.append(t)
+                later.append((a, t))
+        self.emit(f"{''.join(n + ', ' for n in names)}= {src}", depth)
+        for a, t in later:
+            self.unify_arg(a, t, depth)
+
+    def inline_goal(self, g: Any) -> bool:
+        """Emit a leading deterministic built-in inline; False when `g` is not one."""
+        if g == "!":
+            self.cut()
+            return True
+        if g == "true":
+            return True
+        parts = term_parts(g)
+        if parts is not None and len(parts[1]) == 1 and parts[0] in _TYPE_TESTS:
+            return self.type_test(parts[0], parts[1][0])
+        if parts is not None and len(parts[1]) == 2 and parts[0] in ("==", "\\=="):
+            test = self.test(g)
+            if test is not None:
+                self.emit(f"if not ({test}): {self.fail}", 1)
+            return test is not None
+        if parts is None or len(parts[1]) != 2:
+            return False
+        name, (left, right) = parts
+        if name in _COMPARE_OPS:
+            a, b = self.expr(left), self.expr(right)
+            if a is None or b is None:
+                return False
+            self.emit(f"if not ({a} {_COMPARE_OPS[name]} {b}): {self.fail}", 1)
+            return True
+        if name == "is":
+            value = self.expr(right)
+            if value is None:
+                return False
+            self.assign_or_unify(left, value)
+            return True
+        if name == "=..":
+            return self.univ(left, right)
+        if name == "=":
+            if type(right) is Slot and right.i not in self.known:
+                left, right = right, left
+            if type(left) is Slot and left.i not in self.known:
+                if left.i in slots_in(right, []):
+                    return False
+                self.fresh([right], 1)
+                self.emit(f"v{left.i} = {self.build(right)}", 1)
+                self.known.add(left.i)
+                return True
+            if type(right) is Slot:
+                left, right = right, left
+            if type(left) is Slot:  # a value against a template: head-style read/write code
+                self.unify_arg(right, f"v{left.i}", 1)
+                self.dereffed.discard(left.i)
+                return True
+            self.fresh([left, right], 1)
+            left_code, right_code = self.build(left), self.build(right)
+            self.emit(f"if not unify({left_code}, {right_code}, trail): {self.fail}", 1)
+            return True
+        return False
+
+    def univ(self, term: Any, items: Any) -> bool:
+        """Emit `Term =.. Items` for a slot `Term`: taken apart, or built when unbound."""
+        if type(term) is not Slot or term.i in slots_in(items, []):
+            return False
+        v = f"v{term.i}"
+        if term.i not in self.known:
+            self.fresh([items], 1)
+            self.emit(f"{v} = univ_compose({self.build(items)})", 1)
+            self.known.add(term.i)
+            return True
+        parts = self.temp()
+        self.emit(f"{parts} = univ_list({v})", 1)
+        self.emit(f"if {parts} is None:", 1)
+        known, dereffed = set(self.known), set(self.dereffed)
+        self.fresh([items], 2)
+        built = self.temp()
+        self.emit(f"{built} = univ_compose({self.build(items)})", 2)
+        self.unify_locals(v, built, 2)
+        self.known = known
+        self.emit("else:", 1)
+        self.unify_arg(items, parts, 2)
+        self.dereffed = dereffed - {term.i, *slots_in(items, [])}
+        return True
+
+    def test(self, g: Any) -> str | None:
+        """A Python condition for test goal `g` (type tests, comparisons, `\\+`, `,`)."""
+        if g in ("true", "fail", "false"):
+            return "True" if g == "true" else "False"
+        parts = term_parts(g)
+        if parts is None:
+            return None
+        name, args = parts
+        if name == "," and len(args) == 2 or name == "\\+" and len(args) == 1:
+            tests = [self.test(a) for a in args]
+            if None in tests:
+                return None
+            return f"not ({tests[0]})" if name == "\\+" else f"({tests[0]}) and ({tests[1]})"
+        if len(args) == 1 and name in _TYPE_TESTS:
+            slot = args[0]
+            if type(slot) is not Slot or slot.i not in self.known:
+                return None
+            self.deref_slot(slot.i)
+            return _TYPE_TESTS[name].format(f"v{slot.i}")
+        if len(args) == 2 and name in _COMPARE_OPS:
+            a, b = self.expr(args[0]), self.expr(args[1])
+            return None if a is None or b is None else f"{a} {_COMPARE_OPS[name]} {b}"
+        if len(args) == 2 and name in ("==", "\\=="):
+            if any(i not in self.known for i in slots_in(g, [])):
+                return None
+            same = f"identical({self.build(args[0])}, {self.build(args[1])})"
+            return same if name == "==" else f"not {same}"
+        return None
+
+    def deref_slot(self, i: int) -> None:
+        """Dereference slot `i` in place, once."""
+        if i not in self.dereffed:
+            self.emit(deref_line(f"v{i}"), 1)
+            self.dereffed.add(i)
+
+    def type_test(self, name: str, arg: Any) -> bool:
+        """Emit a type test (`number(X)`, `var(X)`, ...) of a slot holding a value."""
+        if type(arg) is not Slot or arg.i not in self.known:
+            return False
+        self.deref_slot(arg.i)
+        self.emit(f"if not ({_TYPE_TESTS[name].format(f'v{arg.i}')}): {self.fail}", 1)
+        return True
+
+    def assign_or_unify(self, target: Any, value: str) -> None:
+        """Bind a fresh slot to `value` directly, or unify `target` with it."""
+        if type(target) is Slot and target.i not in self.known:
+            self.emit(f"v{target.i} = {value}", 1)
+            self.known.add(target.i)
+            self.dereffed.add(target.i)  # a number
+            return
+        result = self.temp()
+        self.emit(f"{result} = {value}", 1)
+        self.unify_arg(target, result, 1)
+
+    def expr(self, t: Any) -> str | None:
+        """Python expression evaluating arithmetic template `t`; None if a slot is unset."""
+        if type(t) is Slot:
+            if t.i not in self.known:
+                return None
+            v = f"v{t.i}"
+            if t.i not in self.dereffed:
+                # A slot read from a call argument is often a bound variable: dereference
+                # it once so every later use takes the int fast path.
+                self.emit(deref_line(v), 1)
+                self.dereffed.add(t.i)
+            return f"({v} if type({v}) is int else ev({v}))"
+        if type(t) is int:
+            return self.const(t)
+        parts = term_parts(t)
+        if parts is not None:
+            name, args = parts
+            if len(args) == 2 and name in BINARY_FUNCTIONS:
+                a, b = self.expr(args[0]), self.expr(args[1])
+                if a is None or b is None:
+                    return None
+                if name in _ARITH_OPS:
+                    return f"({a} {_ARITH_OPS[name]} {b})"
+                return f"ap2({self.const(name)}, {a}, {b})"
+            if any(i not in self.known for i in slots_in(t, [])):
+                return None
+        return f"ev({self.build(t)})"
