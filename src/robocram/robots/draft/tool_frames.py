@@ -5,8 +5,8 @@ opening is how the finger that moves most moves when the gripper opens (the join
 upper limits). A jaw turning about its own frame's origin against a fixed jaw (Unitree's
 Z1, the SO-101) moves no link frame: there the middles of the links' collision shapes
 are measured, the opening points the way the jaw opens, and an added frame sits at the
-middle of the closed jaw. An existing frame rigid with the wrist, named like a tool frame and reaching
-the fingers, is kept when its axes agree; otherwise a frame is added in code.
+middle of the closed jaw. An existing frame rigid with the wrist, named like a tool frame
+and reaching the fingers, is kept when its axes agree; otherwise a frame is added in code.
 """
 
 from __future__ import annotations
@@ -17,9 +17,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from robocram.robots.description import FrameSpec
+from robocram.robots.draft.finger_spread import opens_at_upper
 from robocram.robots.draft.hands import Hand
 from robocram.robots.draft.link_poses import link_poses
-from robocram.robots.draft.finger_spread import opens_at_upper
 from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.link_centre import link_centre
 from robocram.tf import Pose
