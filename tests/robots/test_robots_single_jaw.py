@@ -16,11 +16,14 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from robocram.robot_check import description_from
 from robocram.robots import draft_description, link_pose, load_description
 from robocram.robots.example_robot_data import example_robot_data_folder
 from robocram.robots.link_centre import link_centre, mesh_box
 from robocram.robots.urdf_elements import Collision, Geometry, Link
+from robocram.scenes import UnfitRobotError, tabletop_scene
 from robocram.tf import Pose
+from robocram.world import World
 
 pytestmark = pytest.mark.filterwarnings("ignore::robocram.robots.DescriptionWarning")
 Z1 = example_robot_data_folder() / "z1_description" / "urdf" / "z1.urdf"
@@ -120,3 +123,11 @@ def test_so101_jaw_opens_at_the_upper_limit_with_a_derived_opening() -> None:
     wrist = link_pose(desc.model, "gripper_link").matrix()
     out = tool[:3, 3] - wrist[:3, 3]
     assert float(tool[:3, 0] @ out) / float(np.linalg.norm(out)) > math.cos(math.radians(30))
+
+
+def test_a_floor_standing_arm_is_told_why_the_tabletop_scene_does_not_fit() -> None:
+    examples = Path(__file__).resolve().parents[2] / "examples" / "robots"
+    desc = description_from(str(examples / "z1.py"))
+    too_low = r"shoulder is 0\.\d\d m above the floor, too low"
+    with World() as world, pytest.raises(UnfitRobotError, match=too_low):
+        tabletop_scene(desc, world)
