@@ -23,15 +23,16 @@ from robocram.scenes import tabletop_scene
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "robots"
 MAX_EDITS = 10  # lines a user may change in a draft (the promise)
-EDITS = {
+EDITS = {  # lines each example changed from its draft
     "baxter": 0,
     "panda": 0,
     "so101": 0,
+    "talos": 0,
     "tiago": 0,
     "tiago_pro": 0,
     "z1": 0,
-}  # lines each example changed
-CHECKED_CLEAN = ("baxter", "panda", "so101", "tiago", "tiago_pro", "z1")
+}
+CHECKED_CLEAN = ("baxter", "panda", "so101", "talos", "tiago", "tiago_pro", "z1")
 
 
 def _module(path: Path) -> ModuleType:
