@@ -128,7 +128,7 @@ def test_so101_jaw_opens_at_the_upper_limit_with_a_derived_opening() -> None:
 def test_a_floor_standing_arm_is_told_why_the_tabletop_scene_does_not_fit() -> None:
     examples = Path(__file__).resolve().parents[2] / "examples" / "robots"
     desc = description_from(str(examples / "z1.py"))
-    too_low = r"shoulder is 0\.\d\d m above the floor, too low"
+    too_low = r"shoulder of its 'arm' arm is 0\.06 m above the floor, too low"
     with World() as world, pytest.raises(UnfitRobotError, match=too_low):
         tabletop_scene(desc, world)
 

@@ -153,7 +153,7 @@ def tabletop_placement(world: World, robot: str) -> TabletopPlacement:
     if table_height <= 0:
         raise UnfitRobotError(
             robot,
-            f"its {arm.name} arm's shoulder is {shoulder[2]:.2f} m above the floor, too low "
+            f"the shoulder of its {arm.name!r} arm is {shoulder[2]:.2f} m above the floor, too low "
             f"for a table under its hand (it would stand {table_height:.2f} m high): the "
             "tabletop scene has no pedestal for an arm standing on the floor; build the "
             "world yourself (world.add_robot(desc, pose=...) at a table's height)",
