@@ -93,11 +93,10 @@ def description() -> RobotDescription:
                 vertical_fov=0.8173,
             ),
         ),
-        # why: two joints turn the camera: the first pans, the second tilts
-        # TODO doubt: the first axis is not vertical or the second not horizontal
-        pan_tilt=PanTiltDescription(pan_joint="head_1_joint", tilt_joint="head_2_joint"),
+        # why: two joints turn the camera: the first tilts (horizontal axis), the second pans
+        pan_tilt=PanTiltDescription(pan_joint="head_2_joint", tilt_joint="head_1_joint"),
         # why: head at zero: straight ahead
-        neck_parking={"head_1_joint": 0.0, "head_2_joint": 0.0},
+        neck_parking={"head_2_joint": 0.0, "head_1_joint": 0.0},
         extra_frames=(
             FrameSpec(
                 name="left_standard_tool_frame",

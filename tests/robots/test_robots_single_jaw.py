@@ -134,12 +134,16 @@ def test_a_floor_standing_arm_is_told_why_the_tabletop_scene_does_not_fit() -> N
 
 
 def test_talos_waist_is_a_trunk_not_part_of_the_arms_or_neck() -> None:
-    """TALOS's torso_1/torso_2 turn both arms and the head: cut off, the head is a pan-tilt."""
+    """TALOS's torso_1/torso_2 turn both arms and the head: cut off, the head is a pan-tilt.
+
+    Its head tilts first (head_1_joint, axis y) and then pans (head_2_joint, axis z).
+    """
     draft = _draft(example_robot_data_folder() / "talos_data" / "robots" / "talos_full_v2.urdf")
     desc = draft.description
     assert desc.torso_joint is None and desc.neck_arm is None
     assert desc.pan_tilt is not None
-    assert (desc.pan_tilt.pan_joint, desc.pan_tilt.tilt_joint) == ("head_1_joint", "head_2_joint")
+    assert (desc.pan_tilt.pan_joint, desc.pan_tilt.tilt_joint) == ("head_2_joint", "head_1_joint")
+    assert "pan_tilt" not in draft.doubts
     for side in ("left", "right"):
         arm = desc.arms[side]
         assert arm.base_link == "torso_2_link"
