@@ -64,6 +64,13 @@ def test_ascii_stl_obj_and_collada_boxes(tmp_path: Path) -> None:
     assert mesh_box(str(obj)) == ((-1.0, 0.0, 0.0), (1.0, 0.1, 2.0))
     assert mesh_box(str(dae)) == ((0.0, -0.5, 0.0), (0.5, 0.0, 4.0))
     assert mesh_box(str(tmp_path / "missing.stl")) is None
+    millimetres = tmp_path / "d.dae"
+    millimetres.write_text(
+        dae.read_text().replace("<library", '<asset><unit meter="0.001"/></asset><library', 1)
+    )
+    low, high = mesh_box(str(millimetres))  # type: ignore[misc]
+    assert low == pytest.approx((0.0, -0.0005, 0.0))
+    assert high == pytest.approx((0.0005, 0.0, 0.004))
 
 
 def test_binary_stl_written_here_is_read_exactly(tmp_path: Path) -> None:

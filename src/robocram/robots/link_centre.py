@@ -4,8 +4,8 @@ A revolute jaw's link frame sits on its pivot, so the frame does not move when t
 opens; the middle of the jaw does. The gripper's opening direction and widest opening of a
 single moving jaw (Unitree's Z1, the SO-101) are measured at this centre. Meshes are read
 for their bounding box without a mesh library: binary and ASCII STL, OBJ and COLLADA
-vertex positions; a mesh that cannot be read (missing, another format) counts as the link
-frame's origin.
+vertex positions (COLLADA in its unit); a mesh that cannot be read (missing, another
+format) counts as the link frame's origin.
 """
 
 from __future__ import annotations
@@ -23,6 +23,7 @@ from robocram.tf import Pose
 
 Box = tuple[tuple[float, float, float], tuple[float, float, float]]
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
+_COLLADA_UNIT = re.compile(rf"<unit[^>]*meter=\"({_NUMBER})\"", re.IGNORECASE)
 _COLLADA_POSITIONS = re.compile(
     r"<float_array[^>]*id=\"[^\"]*position[^\"]*\"[^>]*>([^<]*)</float_array>", re.IGNORECASE
 )
@@ -48,15 +49,17 @@ def _obj_points(text: str) -> np.ndarray | None:
 def _collada_points(text: str) -> np.ndarray | None:
     arrays = [np.asarray(block.split(), float) for block in _COLLADA_POSITIONS.findall(text)]
     points = [a.reshape(-1, 3) for a in arrays if a.size and a.size % 3 == 0]
-    return np.vstack(points) if points else None
+    unit = _COLLADA_UNIT.search(text)
+    scale = float(unit.group(1)) if unit else 1.0
+    return np.vstack(points) * scale if points else None
 
 
 @lru_cache(maxsize=256)
 def mesh_box(filename: str) -> Box | None:
     """Bounding box [m, unscaled] of a mesh file's vertices, or None if it cannot be read.
 
-    COLLADA files are read without their node transforms and unit, which suffices for the
-    centre of a finger; STL and OBJ are exact.
+    COLLADA files are read in their unit but without their node transforms, which
+    suffices for the middle of a finger; STL and OBJ are exact.
     """
     path = Path(filename)
     try:

@@ -56,16 +56,12 @@ def _in_wrist(
     """Positions [m] of the hand's links (frames, or shape middles) in the wrist link."""
     poses = link_poses(tree.model, values)
     wrist = poses[hand.end_effector_link].inverse()
-    return {
-        link: np.asarray(
-            (
-                wrist
-                * poses[link]
-                * Pose(link_centre(tree.model.link(link)) if centres else (0, 0, 0))
-            ).position
-        )
-        for link in hand.hand_links
-    }
+
+    def point(link: str) -> np.ndarray:
+        at = Pose(link_centre(tree.model.link(link))) if centres else Pose()
+        return np.asarray((wrist * poses[link] * at).position)
+
+    return {link: point(link) for link in hand.hand_links}
 
 
 def _closed(tree: ModelTree, hand: Hand, jaw: bool) -> dict[str, float]:
