@@ -16,14 +16,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from robocram.robot_check import description_from
 from robocram.robots import draft_description, link_pose, load_description
 from robocram.robots.example_robot_data import example_robot_data_folder
 from robocram.robots.link_centre import link_centre, mesh_box
 from robocram.robots.urdf_elements import Collision, Geometry, Link
-from robocram.scenes import UnfitRobotError, tabletop_scene
 from robocram.tf import Pose
-from robocram.world import World
 
 pytestmark = pytest.mark.filterwarnings("ignore::robocram.robots.DescriptionWarning")
 Z1 = example_robot_data_folder() / "z1_description" / "urdf" / "z1.urdf"
@@ -130,29 +127,3 @@ def test_so101_jaw_opens_at_the_upper_limit_with_a_derived_opening() -> None:
     wrist = link_pose(desc.model, "gripper_link").matrix()
     out = tool[:3, 3] - wrist[:3, 3]
     assert float(tool[:3, 0] @ out) / float(np.linalg.norm(out)) > math.cos(math.radians(30))
-
-
-def test_a_floor_standing_arm_is_told_why_the_tabletop_scene_does_not_fit() -> None:
-    examples = Path(__file__).resolve().parents[2] / "examples" / "robots"
-    desc = description_from(str(examples / "z1.py"))
-    too_low = r"shoulder of its 'arm' arm is 0\.06 m above the floor, too low"
-    with World() as world, pytest.raises(UnfitRobotError, match=too_low):
-        tabletop_scene(desc, world)
-
-
-def test_talos_waist_is_a_trunk_not_part_of_the_arms_or_neck() -> None:
-    """TALOS's torso_1/torso_2 turn both arms and the head: cut off, the head is a pan-tilt.
-
-    Its head tilts first (head_1_joint, axis y) and then pans (head_2_joint, axis z).
-    """
-    draft = _draft(example_robot_data_folder() / "talos_data" / "robots" / "talos_full_v2.urdf")
-    desc = draft.description
-    assert desc.torso_joint is None and desc.neck_arm is None
-    assert desc.pan_tilt is not None
-    assert (desc.pan_tilt.pan_joint, desc.pan_tilt.tilt_joint) == ("head_2_joint", "head_1_joint")
-    assert "pan_tilt" not in draft.doubts
-    for side in ("left", "right"):
-        arm = desc.arms[side]
-        assert arm.base_link == "torso_2_link"
-        assert sorted(arm.parking) == [f"arm_{side}_{i}_joint" for i in range(1, 8)]
-    assert "torso_1_joint, torso_2_joint" in draft.why["arms"]
