@@ -52,7 +52,6 @@ def description() -> RobotDescription:
                     "arm_left_6_joint": 1.011,
                     "arm_left_7_joint": 0.019,
                 },
-                side="left",
             ),
             "right": ArmDescription(
                 name="right",
@@ -78,7 +77,6 @@ def description() -> RobotDescription:
                     "arm_right_6_joint": 0.457,
                     "arm_right_7_joint": -0.181,
                 },
-                side="right",
             ),
         },
         # why: camera frame by name (4 found, best first); optical: z looks forward; others:

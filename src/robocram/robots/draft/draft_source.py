@@ -72,8 +72,8 @@ def _arm(arm: ArmDescription, notes: _Notes) -> object:
     if arm.gripper_joints:
         fields.append(notes.item(f"{path}.gripper_joints", "gripper_joints", arm.gripper_joints))
     fields.append(notes.item(f"{path}.parking", "parking", dict(arm.parking)))
-    if arm.side is not None:
-        fields.append(Item("side", arm.side))
+    if arm.side is not None and arm.side != arm.name:
+        fields.append(Item("side", arm.side))  # an arm called left is found by its name
     if arm.gripper is not None:
         fields.append(notes.item(f"{path}.gripper", "gripper", _gripper(arm.gripper)))
     return call("ArmDescription", *fields)
