@@ -55,6 +55,8 @@ def derive_arm(robot: str, arm: ArmDescription, model: RobotModel) -> ArmDescrip
 def _gripper(robot: str, arm: ArmDescription, model: RobotModel) -> GripperDescription | None:
     """The arm's gripper as given, or the parallel default from its gripper joints' limits."""
     gripper = arm.gripper
+    if gripper is not None and gripper.curled_hand and not gripper.joints:
+        gripper = replace(gripper, joints=curling_joints(model, arm.end_effector_link))
     if gripper is None:
         if not arm.gripper_joints:
             return None
@@ -72,6 +74,26 @@ def _gripper(robot: str, arm: ArmDescription, model: RobotModel) -> GripperDescr
     return gripper
 
 
+def curling_joints(model: RobotModel, wrist: str) -> tuple[GripperJoint, ...]:
+    """Joints below ``wrist`` straight at 0 that curl to their upper limit, in file order.
+
+    Open at 0, closed at the upper limit: a hand whose URDF does not couple its fingers.
+    """
+    found: list[GripperJoint] = []
+
+    def below(link: str) -> None:
+        for joint in model.joints.values():
+            if joint.parent != link:
+                continue
+            curls = joint.type == "revolute" and joint.mimic is None and joint.lower == 0.0
+            if curls and joint.upper is not None and joint.upper > 0.0:
+                found.append(GripperJoint(joint.name, open=0.0, closed=joint.upper))
+            below(joint.child)
+
+    below(wrist)
+    return tuple(found)
+
+
 def _from_limits(robot: str, arm: str, model: RobotModel, name: str) -> GripperJoint:
     limits = finite_limits(model.joints[name])
     if limits is None:
@@ -86,6 +108,14 @@ def _from_limits(robot: str, arm: str, model: RobotModel, name: str) -> GripperJ
 
 
 def _check_gripper(robot: str, arm: str, model: RobotModel, gripper: GripperDescription) -> None:
+    if not gripper.joints and gripper.curled_hand:
+        raise GripperDescriptionError(
+            robot,
+            arm,
+            "GripperDescription.curling() found no joint below the wrist that is straight "
+            "at 0 and curls to a positive upper limit",
+            "list the hand's joints as GripperJoint(name, open=..., closed=...)",
+        )
     if not gripper.joints:
         raise GripperDescriptionError(
             robot, arm, "the gripper has no joints", "list at least one GripperJoint"

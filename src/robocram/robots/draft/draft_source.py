@@ -80,6 +80,8 @@ def _arm(arm: ArmDescription, notes: _Notes) -> object:
 
 
 def _gripper(gripper: GripperDescription) -> object:
+    if gripper.curled_hand:
+        return call("GripperDescription.curling")
     joints = tuple(
         call("GripperJoint", j.name, open=round(j.open, 6), closed=round(j.closed, 6))
         for j in gripper.joints
@@ -188,7 +190,7 @@ def draft_source(
             ("CameraDescription", bool(desc.cameras)),
             ("FrameSpec", bool(desc.extra_frames)),
             ("GripperDescription", any(a.gripper for a in desc.arms.values())),
-            ("GripperJoint", any(a.gripper for a in desc.arms.values())),
+            ("GripperJoint", any(a.gripper and a.gripper.joints for a in desc.arms.values())),
             ("PanTiltDescription", desc.pan_tilt is not None),
             ("RobotDescription", True),
             ("example_robot_data_folder", data_folder),
