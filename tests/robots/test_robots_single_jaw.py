@@ -16,11 +16,16 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from robocram.projection.arm import move_tcp
+from robocram.projection.gripper import grip, open_gripper
+from robocram.projection.projected_robot import ProjectedRobot
+from robocram.robot_check import description_from
 from robocram.robots import draft_description, link_pose, load_description
 from robocram.robots.example_robot_data import example_robot_data_folder
 from robocram.robots.link_centre import link_centre, mesh_box
 from robocram.robots.urdf_elements import Collision, Geometry, Link
-from robocram.tf import Pose
+from robocram.tf import Pose, quaternion
+from robocram.world import World
 
 pytestmark = pytest.mark.filterwarnings("ignore::robocram.robots.DescriptionWarning")
 Z1 = example_robot_data_folder() / "z1_description" / "urdf" / "z1.urdf"
@@ -127,3 +132,22 @@ def test_so101_jaw_opens_at_the_upper_limit_with_a_derived_opening() -> None:
     wrist = link_pose(desc.model, "gripper_link").matrix()
     out = tool[:3, 3] - wrist[:3, 3]
     assert float(tool[:3, 0] @ out) / float(np.linalg.norm(out)) > math.cos(math.radians(30))
+
+
+def test_z1_grips_a_mug_by_contact_with_its_one_moving_jaw() -> None:
+    """Closing stops where the moving jaw and the fixed one squeeze the mug, part way."""
+    examples = Path(__file__).resolve().parents[2] / "examples" / "robots"
+    with World() as world:
+        world.add_floor()
+        name = world.add_robot(description_from(str(examples / "z1.py"))).name
+        robot = ProjectedRobot.of(world, name)
+        down = quaternion.from_euler(0.0, math.pi / 2, 0.0)  # tool x (approach) down
+        tool = move_tcp(robot, "arm", Pose((0.35, 0.0, 0.20), down))
+        x, y, z = tool.position
+        world.add_item("mug-1", "mug", pose=(x, y, z - 0.05))
+        open_gripper(robot, "arm")
+        held = grip(robot, "arm")
+        jaw = world.joint_states(name)["jointGripper"]
+        attached = world.attachments(name)
+    assert held == "mug-1" and attached == {"mug-1": "link06"}
+    assert -1.5707 < jaw < -0.05  # stopped on the mug, not closed (0) nor open
