@@ -51,7 +51,6 @@ def description() -> RobotDescription:
                     "right_w1": 2.015,
                     "right_w2": -1.109,
                 },
-                side="right",
             ),
             "left": ArmDescription(
                 name="left",
@@ -76,7 +75,6 @@ def description() -> RobotDescription:
                     "left_w1": -1.157,
                     "left_w2": 2.329,
                 },
-                side="left",
             ),
         },
         # why: camera frame by name (5 found, best first); optical: z looks forward; others:

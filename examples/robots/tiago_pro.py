@@ -52,7 +52,6 @@ def description() -> RobotDescription:
                     "arm_left_6_joint": -1.86,
                     "arm_left_7_joint": 2.484,
                 },
-                side="left",
                 # why: mimicked by 5 hand joint(s) (<mimic> in the URDF); open at the lower limit,
                 #   where the fingers part
                 gripper=GripperDescription(
@@ -80,7 +79,6 @@ def description() -> RobotDescription:
                     "arm_right_6_joint": -0.496,
                     "arm_right_7_joint": -1.656,
                 },
-                side="right",
                 # why: mimicked by 5 hand joint(s) (<mimic> in the URDF); open at the lower limit,
                 #   where the fingers part
                 gripper=GripperDescription(

@@ -20,6 +20,7 @@ from robocram.cli import main
 from robocram.robot_check import check_robot
 from robocram.robots import (
     DraftDescription,
+    GripperDescription,
     LoadedDescription,
     RobotDescription,
     draft_description,
@@ -98,7 +99,9 @@ def test_every_guess_says_why_and_doubts_are_marked() -> None:
     assert text.count("# why:") >= 10
     # The Hey5 hand has no <mimic>: its 29 joints straight at 0 that curl to their upper
     # limit are the gripper, opening at 0; the 3 motors and 4 spreading joints are doubts.
-    gripper = draft.description.arms["arm"].gripper
+    assert draft.description.arms["arm"].gripper == GripperDescription.curling()
+    assert "gripper=GripperDescription.curling()," in text
+    gripper = load_description(draft.description).arms["arm"].gripper
     assert gripper is not None and len(gripper.joints) == 29
     assert all(j.open == 0.0 < j.closed for j in gripper.joints)
     assert draft.doubts["arms.arm.gripper"].startswith("7 more hand joint(s)")

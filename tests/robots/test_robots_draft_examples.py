@@ -19,12 +19,21 @@ from robocram.plans import pick_up
 from robocram.projection import simulated_robot
 from robocram.robot_check import check_robot, description_from
 from robocram.robots import draft_description
-from robocram.scenes import tabletop_scene
+from robocram.scenes import UnfitRobotError, tabletop_scene
+from robocram.world import World
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "robots"
 MAX_EDITS = 10  # lines a user may change in a draft (the promise)
-EDITS = {"baxter": 0, "panda": 0, "tiago": 0, "tiago_pro": 0}  # lines each example changed
-CHECKED_CLEAN = ("baxter", "panda", "tiago", "tiago_pro")
+EDITS = {  # lines each example changed from its draft
+    "baxter": 0,
+    "panda": 0,
+    "so101": 0,
+    "talos": 0,
+    "tiago": 0,
+    "tiago_pro": 0,
+    "z1": 0,
+}
+CHECKED_CLEAN = ("baxter", "panda", "so101", "talos", "tiago", "tiago_pro", "z1")
 
 
 def _module(path: Path) -> ModuleType:
@@ -82,3 +91,11 @@ def test_pick_up_runs_unchanged_on_drafted_robots(name: str, arm: str) -> None:
     assert (result.object_name, result.arm) == ("mug-1", arm)
     # lifted by the plan's 10 cm with the gripper holding it
     assert lifted == pytest.approx(scene.look_target.position[2] + 0.10, abs=0.02)
+
+
+@pytest.mark.filterwarnings("ignore::robocram.robots.DescriptionWarning")  # no camera
+def test_a_floor_standing_arm_is_told_why_the_tabletop_scene_does_not_fit() -> None:
+    desc = description_from(str(EXAMPLES / "z1.py"))
+    too_low = r"shoulder of its 'arm' arm is 0\.06 m above the floor, too low"
+    with World() as world, pytest.raises(UnfitRobotError, match=too_low):
+        tabletop_scene(desc, world)

@@ -132,3 +132,47 @@ def test_gripper_joints_that_contradict_the_gripper_are_refused() -> None:
     )
     with pytest.raises(GripperDescriptionError, match="give only ArmDescription.gripper"):
         load_description(replace(desc, arms={**desc.arms, "right": right}))
+
+
+TIAGO = example_robot_data_folder() / "tiago_description" / "robots" / "tiago.urdf"
+
+
+def _tiago(gripper: GripperDescription) -> RobotDescription:
+    arm = ArmDescription(
+        name="arm",
+        end_effector_link="arm_7_link",
+        tool_frame="arm_7_link",
+        base_link="torso_lift_link",
+        gripper=gripper,
+        parking={},
+    )
+    return RobotDescription("tiago", TIAGO, base_frame="base_footprint", arms={"arm": arm})
+
+
+def test_a_curling_hand_finds_its_joints_at_load() -> None:
+    """The TIAGo's Hey5: 29 joints straight at 0 curl to their upper limits, thumb first."""
+    gripper = load_description(_tiago(GripperDescription.curling())).arms["arm"].gripper
+    assert gripper is not None and len(gripper.joints) == 29
+    assert gripper.joints[0] == GripperJoint(
+        "hand_thumb_abd_joint", 0.0, pytest.approx(1.5708, abs=1e-4)
+    )
+    assert all(j.open == 0.0 and 0.78 < j.closed < 1.58 for j in gripper.joints)
+    assert "hand_index_flex_3_joint" in gripper.names
+    assert gripper.max_opening == pytest.approx(0.1224, abs=1e-3)
+
+
+def test_a_curling_hand_without_curling_joints_says_to_list_them() -> None:
+    """The Panda's fingers slide (prismatic): nothing curls."""
+    arm = ArmDescription(
+        name="arm",
+        end_effector_link="panda_link7",
+        tool_frame="panda_link7",
+        base_link="panda_link0",
+        gripper=GripperDescription.curling(),
+        parking={},
+    )
+    panda = example_robot_data_folder() / "panda_description" / "urdf" / "panda.urdf"
+    desc = RobotDescription("panda", panda, base_frame="panda_link0", arms={"arm": arm})
+    with pytest.raises(GripperDescriptionError, match=r"curling\(\) found no joint") as info:
+        load_description(desc)
+    assert "GripperJoint(name, open=..., closed=...)" in str(info.value)

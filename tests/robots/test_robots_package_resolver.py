@@ -66,3 +66,24 @@ def test_relative_and_file_uris(tmp_path: Path) -> None:
     resolver = PackageResolver(())
     assert resolver.resolve("meshes/a.stl", tmp_path) == (tmp_path / "meshes" / "a.stl").resolve()
     assert resolver.resolve("file:///abs/b.stl") == Path("/abs/b.stl")
+
+
+def test_an_empty_package_segment_reads_as_pinocchio_reads_it(tiny_package: Path) -> None:
+    """``package:///pkg/...`` (TALOS's meshes) resolves to ``package://pkg/...``."""
+    resolver = PackageResolver.default([tiny_package])
+    mesh = tiny_package / "tiny_pkg" / "meshes" / "body.stl"
+    assert resolver.resolve("package:///tiny_pkg/meshes/body.stl") == mesh
+    assert resolver.resolve("package://tiny_pkg/meshes/body.stl") == mesh
+
+
+def test_talos_loads_with_its_meshes() -> None:
+    urdf = example_robot_data_folder() / "talos_data" / "robots" / "talos_left_arm.urdf"
+    model = RobotModel.from_file(urdf)
+    meshes = [
+        Path(v.geometry.filename)
+        for link in model.links.values()
+        for v in link.visuals
+        if v.geometry.kind == "mesh"
+    ]
+    assert meshes and all(m.is_file() for m in meshes)
+    assert all("talos_data/meshes" in m.as_posix() for m in meshes)

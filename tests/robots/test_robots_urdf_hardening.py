@@ -73,6 +73,8 @@ def test_bad_joint_numbers_are_refused_with_file_and_line(
         "package://tiny_pkg/../../../etc/passwd",
         "package://tiny_pkg//etc/passwd",
         "package://./meshes/body.stl",
+        "package:///../etc/passwd",
+        "package:///",
     ],
 )
 def test_package_paths_stay_inside_the_package(tiny_package: Path, uri: str) -> None:

@@ -17,6 +17,7 @@ from robocram.projection.gripper import close_gripper, grip, open_gripper, relea
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robot_check.report_card import CheckResult
 from robocram.robots import ArmDescription
+from robocram.robots.link_centre import link_centre
 from robocram.tf import Pose, Vector3
 from robocram.tf import quaternion as quat
 
@@ -78,12 +79,17 @@ def tool_frame(robot: ProjectedRobot, key: str, arm: ArmDescription) -> CheckRes
 def _finger_span(robot: ProjectedRobot, arm: ArmDescription) -> float:
     """How far apart [m] the fingers and the tool frame lie along its y (the opening).
 
-    The tool frame counts as a point too, so a single jaw closing on a fixed one is seen.
+    The tool frame counts as a point too, so a single jaw closing on a fixed one is seen;
+    each finger counts with its frame and the middle of its collision shapes, since a
+    turning jaw's frame sits on its pivot.
     """
     tool = robot.world.link_pose(robot.name, arm.tool_frame)
     opening = tool.matrix()[:3, 1]
+    model = robot.description.model
     links = [link for link in arm.gripper_links if link in robot.body.link_index]
-    points = [tool.position, *(robot.world.link_pose(robot.name, link).position for link in links)]
+    frames = [robot.world.link_pose(robot.name, link) for link in links]
+    middles = [f * Pose(link_centre(model.link(k))) for f, k in zip(frames, links, strict=True)]
+    points = [tool.position, *(p.position for p in (*frames, *middles))]
     along = [float(opening @ point) for point in points]
     return max(along, default=0.0) - min(along, default=0.0)
 

@@ -3,7 +3,9 @@
 - a gripper's open and closed positions: its joints' upper and lower limits;
 - its fingers (``gripper_links``): the links its joints (and their mimic followers) move;
 - its widest opening [m]: the largest growth of a distance between two finger links from
-  closed to open;
+  closed to open; for a single jaw moving against a fixed one (whose link frames sit on
+  the pivot and do not part), how far the middle of the moving jaw leaves the tool
+  frame's approach axis;
 - the hand (``hand_links``): the wrist and every link below it;
 - a camera's minimal and maximal height: its frame's height with the torso at its lower
   and upper limit, the neck parked.
@@ -15,12 +17,16 @@ import itertools
 import math
 from dataclasses import replace
 
+import numpy as np
+
 from robocram.robots.description import ArmDescription, CameraDescription, RobotDescription
 from robocram.robots.description_check import check_values
 from robocram.robots.errors import GripperDescriptionError
 from robocram.robots.gripper import GripperDescription, GripperJoint
+from robocram.robots.link_centre import link_centre
 from robocram.robots.model_pose import finite_limits, link_pose, subtree_links
 from robocram.robots.robot_model import RobotModel
+from robocram.tf import Pose
 
 MIN_OPENING = 1e-4  # [m] a smaller growth of the finger gap means no opening was found
 
@@ -33,7 +39,10 @@ def derive_arm(robot: str, arm: ArmDescription, model: RobotModel) -> ArmDescrip
         return replace(arm, hand_links=hand)
     fingers = arm.gripper_links or moved_links(model, gripper.names)
     if gripper.max_opening is None:
-        gripper = replace(gripper, max_opening=widest_opening(model, gripper, fingers))
+        opening = widest_opening(model, gripper, fingers)
+        if opening is None:
+            opening = single_jaw_opening(model, gripper, fingers, arm.tool_frame)
+        gripper = replace(gripper, max_opening=opening)
     return replace(
         arm,
         gripper=gripper,
@@ -46,6 +55,8 @@ def derive_arm(robot: str, arm: ArmDescription, model: RobotModel) -> ArmDescrip
 def _gripper(robot: str, arm: ArmDescription, model: RobotModel) -> GripperDescription | None:
     """The arm's gripper as given, or the parallel default from its gripper joints' limits."""
     gripper = arm.gripper
+    if gripper is not None and gripper.curled_hand and not gripper.joints:
+        gripper = replace(gripper, joints=curling_joints(model, arm.end_effector_link))
     if gripper is None:
         if not arm.gripper_joints:
             return None
@@ -63,6 +74,26 @@ def _gripper(robot: str, arm: ArmDescription, model: RobotModel) -> GripperDescr
     return gripper
 
 
+def curling_joints(model: RobotModel, wrist: str) -> tuple[GripperJoint, ...]:
+    """Joints below ``wrist`` straight at 0 that curl to their upper limit, in file order.
+
+    Open at 0, closed at the upper limit: a hand whose URDF does not couple its fingers.
+    """
+    found: list[GripperJoint] = []
+
+    def below(link: str) -> None:
+        for joint in model.joints.values():
+            if joint.parent != link:
+                continue
+            curls = joint.type == "revolute" and joint.mimic is None and joint.lower == 0.0
+            if curls and joint.upper is not None and joint.upper > 0.0:
+                found.append(GripperJoint(joint.name, open=0.0, closed=joint.upper))
+            below(joint.child)
+
+    below(wrist)
+    return tuple(found)
+
+
 def _from_limits(robot: str, arm: str, model: RobotModel, name: str) -> GripperJoint:
     limits = finite_limits(model.joints[name])
     if limits is None:
@@ -77,6 +108,14 @@ def _from_limits(robot: str, arm: str, model: RobotModel, name: str) -> GripperJ
 
 
 def _check_gripper(robot: str, arm: str, model: RobotModel, gripper: GripperDescription) -> None:
+    if not gripper.joints and gripper.curled_hand:
+        raise GripperDescriptionError(
+            robot,
+            arm,
+            "GripperDescription.curling() found no joint below the wrist that is straight "
+            "at 0 and curls to a positive upper limit",
+            "list the hand's joints as GripperJoint(name, open=..., closed=...)",
+        )
     if not gripper.joints:
         raise GripperDescriptionError(
             robot, arm, "the gripper has no joints", "list at least one GripperJoint"
@@ -126,6 +165,32 @@ def widest_opening(
         (math.dist(opened[i], opened[j]) - math.dist(closed[i], closed[j]) for i, j in pairs),
         default=0.0,
     )
+    return growth if growth > MIN_OPENING else None
+
+
+def single_jaw_opening(
+    model: RobotModel, gripper: GripperDescription, fingers: tuple[str, ...], tool_frame: str
+) -> float | None:
+    """Largest growth [m] of a moving jaw's distance from the tool frame's approach axis.
+
+    A jaw turning against a fixed one keeps its link frame on the pivot; the middle of its
+    collision shapes moves off the axis along which the hand approaches (the tool frame's
+    x, through its origin: between the closed jaws). ``None`` without a tool frame in the
+    model or when no jaw moves off the axis.
+    """
+    if tool_frame not in model.links:
+        return None
+    tool = link_pose(model, tool_frame, gripper.at(0.0)).matrix()
+    origin, approach = tool[:3, 3], tool[:3, 0]
+
+    def off_axis(finger: str, fraction: float) -> float:
+        centre = link_pose(model, finger, gripper.at(fraction)) * Pose(
+            link_centre(model.link(finger))
+        )
+        offset = np.asarray(centre.position) - origin
+        return float(np.linalg.norm(offset - (offset @ approach) * approach))
+
+    growth = max((off_axis(f, 1.0) - off_axis(f, 0.0) for f in fingers), default=0.0)
     return growth if growth > MIN_OPENING else None
 
 

@@ -308,7 +308,8 @@ def _arm_gaps(where: str, arm: ArmDescription) -> list[Finding]:
         found.append(
             _gap(
                 f"{where}.gripper",
-                "its widest opening cannot be derived (no two finger links move apart)",
+                "its widest opening cannot be derived (no two finger links move apart, and no "
+                "jaw leaves the tool frame's approach axis)",
                 "give GripperDescription(max_opening=<metres>)",
             )
         )

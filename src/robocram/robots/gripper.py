@@ -8,6 +8,10 @@ linearly from closed to open, which is the coupling declared in the description.
 joint is the master: a ``setting-gripper`` position is a value of that joint.
 ``max_opening`` [m] is the widest gap between the fingers, what a grasp model compares with
 an object's size; left ``None`` it is derived from the URDF at load.
+
+``GripperDescription.curling()`` says the same of a hand without writing its joints out:
+every finger joint below the wrist that is straight at 0 curls to its upper limit (the
+TIAGo's Hey5 has 29); the joints are found at load, in the URDF's order.
 """
 
 from __future__ import annotations
@@ -35,6 +39,7 @@ class GripperDescription:
 
     joints: tuple[GripperJoint, ...]
     max_opening: float | None = None
+    curled_hand: bool = False  # joints left out: the curling joints, found at load
 
     @property
     def names(self) -> tuple[str, ...]:
@@ -49,6 +54,15 @@ class GripperDescription:
         """How far open (0 closed, 1 open) the gripper is with its master at ``master_value``."""
         master = self.joints[0]
         return (master_value - master.closed) / (master.open - master.closed)
+
+    @classmethod
+    def curling(cls, max_opening: float | None = None) -> GripperDescription:
+        """A hand whose finger joints, straight at 0, curl to their upper limits together.
+
+        The joints (revolute, not ``<mimic>`` followers, lower limit 0 and upper above it,
+        below the arm's ``end_effector_link``) are found at load.
+        """
+        return cls((), max_opening, curled_hand=True)
 
     @classmethod
     def parallel(cls, joints: tuple[tuple[str, float, float], ...]) -> GripperDescription:

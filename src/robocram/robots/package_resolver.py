@@ -4,7 +4,9 @@ Packages are searched in this order: folders the caller gives, ``ROS_PACKAGE_PAT
 the ``share/`` folders of installed prefixes (the Python environment's own and the
 ``cmeel.prefix`` that pip packages such as ``example-robot-data`` install into). A folder
 counts as package ``pkg`` when it is named ``pkg`` and lies at most three levels below a
-search root.
+search root. ``package:///pkg/path`` (an empty first segment, as in example-robot-data's
+TALOS) is read as ``package://pkg/path``, as pinocchio reads it: the URDF then loads here
+as it does in pinocchio, which robocram's kinematics use.
 """
 
 from __future__ import annotations
@@ -107,7 +109,7 @@ class PackageResolver:
     def resolve(self, uri: str, base_dir: Path | None = None) -> Path:
         """Absolute path of a ``package://``, ``file://``, absolute or relative reference."""
         if uri.startswith("package://"):
-            package, _, rest = uri[len("package://") :].partition("/")
+            package, _, rest = uri[len("package://") :].lstrip("/").partition("/")
             _check_inside(uri, package, rest)
             return self.package_folder(package, uri, base_dir) / rest
         if uri.startswith("file://"):

@@ -150,7 +150,15 @@ def tabletop_placement(world: World, robot: str) -> TabletopPlacement:
     seen = _nearest_in_view(desc, table_height)
     mug_x = max(past_base, shoulder[0] + REACH_SHARE * reach, seen)
     needed = math.dist(shoulder, (mug_x, shoulder[1], wrist_z))
-    if table_height <= 0 or needed > reach:
+    if table_height <= 0:
+        raise UnfitRobotError(
+            robot,
+            f"the shoulder of its {arm.name!r} arm is {shoulder[2]:.2f} m above the floor, too low "
+            f"for a table under its hand (it would stand {table_height:.2f} m high): the "
+            "tabletop scene has no pedestal for an arm standing on the floor; build the "
+            "world yourself (world.add_robot(desc, pose=...) at a table's height)",
+        )
+    if needed > reach:
         raise UnfitRobotError(
             robot,
             f"its {arm.name} arm reaches {reach:.2f} m but the mug in front of its base "

@@ -75,6 +75,8 @@ def draft_arm(tree: ModelTree, hand: Hand, name: str, torso: str | None) -> Draf
         list(hand.gripper_joints) if hand.opens_at_lower else _closing_upwards(tree, hand)
     )
     gripper = _gripper(tree, hand, reversed_joints) if reversed_joints else None
+    if hand.opens_at_lower:
+        gripper = GripperDescription.curling()  # the same joints, found again at load
     arm = ArmDescription(
         name=name,
         end_effector_link=hand.end_effector_link,

@@ -126,6 +126,10 @@ def find_neck(tree: ModelTree, camera: str, torso: str | None) -> Neck:
         return Neck(None, (), "one joint cannot aim a camera at a point", only)
     pan, tilt = joints
     why = "two joints turn the camera: the first pans, the second tilts"
+    if abs(float(axes[1][2])) >= 0.9 and abs(float(axes[0][2])) <= 0.1:
+        tilt, pan = joints  # TALOS's head tilts first, then pans
+        why = "two joints turn the camera: the first tilts (horizontal axis), the second pans"
+        axes = axes[::-1]
     doubt = None
     if abs(axes[0][2]) < 0.9 or abs(float(np.asarray(axes[1])[2])) > 0.1:
         doubt = "the first axis is not vertical or the second not horizontal"

@@ -27,6 +27,7 @@ from robocram.robots.draft.link_poses import within_limits
 from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.draft.parking import neck_pose
 from robocram.robots.draft.torso import find_torso
+from robocram.robots.draft.trunk import find_trunk
 from robocram.robots.robot_model import RobotModel
 from robocram.tf import Pose
 
@@ -74,15 +75,20 @@ def draft_description(urdf: str | Path, name: str | None = None) -> DraftDescrip
     names, names_why, names_doubt = arm_names(tree, hands) if hands else ([], "", None)
     arms: dict[str, ArmDescription] = {}
     frames: list[FrameSpec] = []
+    trunk = find_trunk(tree, [h.end_effector_link for h in hands] + cameras)
+    cut, trunk_why = torso.joint, ""
+    if trunk.joint is not None and trunk.joint != torso.joint:
+        cut = trunk.joint
+        trunk_why = f"; below the trunk that turns them all ({', '.join(trunk.joints)})"
     for hand, arm_name in zip(hands, names, strict=True):
-        drafted = draft_arm(tree, hand, arm_name, torso.joint)
+        drafted = draft_arm(tree, hand, arm_name, cut)
         arms[arm_name] = drafted.arm
         frames += [drafted.added] if drafted.added is not None else []
         for key, text in drafted.why.items():
             why[f"arms.{arm_name}.{key}"] = text
         for key, text in drafted.doubts.items():
             doubts[f"arms.{arm_name}.{key}"] = text
-    _note(why, doubts, "arms", names_why or "no gripper-like end found", names_doubt)
+    _note(why, doubts, "arms", (names_why or "no gripper-like end found") + trunk_why, names_doubt)
     if not hands:
         doubts["arms"] = "no chain ends in fingers (prismatic, mimic or leaf joints): add arms"
     desc = RobotDescription(
@@ -94,7 +100,7 @@ def draft_description(urdf: str | Path, name: str | None = None) -> DraftDescrip
         arms=arms,
         extra_frames=tuple(frames),
     )
-    desc = _with_camera(tree, desc, why, doubts)
+    desc = _with_camera(tree, desc, why, doubts, cut)
     inferred = frozenset(
         key
         for key, arm in desc.arms.items()
@@ -117,7 +123,11 @@ def _note(
 
 
 def _with_camera(
-    tree: ModelTree, desc: RobotDescription, why: dict[str, str], doubts: dict[str, str]
+    tree: ModelTree,
+    desc: RobotDescription,
+    why: dict[str, str],
+    doubts: dict[str, str],
+    cut: str | None,
 ) -> RobotDescription:
     """``desc`` with its camera, heights at the torso limits, and pan-tilt or neck arm."""
     hands = [arm.end_effector_link for arm in desc.arms.values()]
@@ -144,7 +154,7 @@ def _with_camera(
         vertical_fov=DEFAULT_VFOV if sensor is None else round(sensor.vertical_fov, 4),
     )
     looked_from = camera.added.parent if camera.added else camera.frame
-    neck = find_neck(tree, looked_from, desc.torso_joint)
+    neck = find_neck(tree, looked_from, cut)
     _note(why, doubts, "pan_tilt", neck.why, neck.doubt)
     offset = camera.added.pose if camera.added else Pose()
     parking = neck_pose(tree.model, neck.arm_joints, looked_from, offset) if neck.arm_joints else {}

@@ -72,14 +72,16 @@ def _arm(arm: ArmDescription, notes: _Notes) -> object:
     if arm.gripper_joints:
         fields.append(notes.item(f"{path}.gripper_joints", "gripper_joints", arm.gripper_joints))
     fields.append(notes.item(f"{path}.parking", "parking", dict(arm.parking)))
-    if arm.side is not None:
-        fields.append(Item("side", arm.side))
+    if arm.side is not None and arm.side != arm.name:
+        fields.append(Item("side", arm.side))  # an arm called left is found by its name
     if arm.gripper is not None:
         fields.append(notes.item(f"{path}.gripper", "gripper", _gripper(arm.gripper)))
     return call("ArmDescription", *fields)
 
 
 def _gripper(gripper: GripperDescription) -> object:
+    if gripper.curled_hand:
+        return call("GripperDescription.curling")
     joints = tuple(
         call("GripperJoint", j.name, open=round(j.open, 6), closed=round(j.closed, 6))
         for j in gripper.joints
@@ -188,7 +190,7 @@ def draft_source(
             ("CameraDescription", bool(desc.cameras)),
             ("FrameSpec", bool(desc.extra_frames)),
             ("GripperDescription", any(a.gripper for a in desc.arms.values())),
-            ("GripperJoint", any(a.gripper for a in desc.arms.values())),
+            ("GripperJoint", any(a.gripper and a.gripper.joints for a in desc.arms.values())),
             ("PanTiltDescription", desc.pan_tilt is not None),
             ("RobotDescription", True),
             ("example_robot_data_folder", data_folder),

@@ -2,8 +2,11 @@
 
 The approach is the direction from the wrist link to the middle of the hand's links; the
 opening is how the finger that moves most moves when the gripper opens (the joints'
-upper limits). An existing frame rigid with the wrist, named like a tool frame and reaching
-the fingers, is kept when its axes agree; otherwise a frame is added in code.
+upper limits). A jaw turning about its own frame's origin against a fixed jaw (Unitree's
+Z1, the SO-101) moves no link frame: there the middles of the links' collision shapes
+are measured, the opening points the way the jaw opens, and an added frame sits at the
+middle of the closed jaw. An existing frame rigid with the wrist, named like a tool frame
+and reaching the fingers, is kept when its axes agree; otherwise a frame is added in code.
 """
 
 from __future__ import annotations
@@ -14,9 +17,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from robocram.robots.description import FrameSpec
+from robocram.robots.draft.finger_spread import opens_at_upper
 from robocram.robots.draft.hands import Hand
 from robocram.robots.draft.link_poses import link_poses
 from robocram.robots.draft.model_tree import ModelTree
+from robocram.robots.link_centre import link_centre
 from robocram.tf import Pose
 
 TOOL_WORDS = ("tool", "tcp", "grasp", "endpoint", "end_effector", "gripper")
@@ -45,11 +50,27 @@ def _snapped(direction: np.ndarray) -> np.ndarray:
     return unit
 
 
-def _in_wrist(tree: ModelTree, hand: Hand, values: dict[str, float]) -> dict[str, np.ndarray]:
-    """Positions [m] of the hand's links in the wrist link, with the joints at ``values``."""
+def _in_wrist(
+    tree: ModelTree, hand: Hand, values: dict[str, float], centres: bool = False
+) -> dict[str, np.ndarray]:
+    """Positions [m] of the hand's links (frames, or shape middles) in the wrist link."""
     poses = link_poses(tree.model, values)
     wrist = poses[hand.end_effector_link].inverse()
-    return {link: np.asarray((wrist * poses[link]).position) for link in hand.hand_links}
+
+    def point(link: str) -> np.ndarray:
+        at = Pose(link_centre(tree.model.link(link))) if centres else Pose()
+        return np.asarray((wrist * poses[link] * at).position)
+
+    return {link: point(link) for link in hand.hand_links}
+
+
+def _closed(tree: ModelTree, hand: Hand, jaw: bool) -> dict[str, float]:
+    """The gripper joints where the fingers close: the lower limits, or a turning jaw's own."""
+    if not jaw:
+        return _gripper_at(tree, hand, "closed")
+    approach, _ = approach_and_opening(tree, hand)
+    upper = opens_at_upper(tree, hand, hand.gripper_joints[0], approach) is False
+    return _gripper_at(tree, hand, "open" if upper else "closed")
 
 
 def _gripper_at(tree: ModelTree, hand: Hand, where: str) -> dict[str, float]:
@@ -64,21 +85,38 @@ def _gripper_at(tree: ModelTree, hand: Hand, where: str) -> dict[str, float]:
 def approach_and_opening(tree: ModelTree, hand: Hand) -> tuple[np.ndarray, np.ndarray | None]:
     """Unit approach and opening directions in the wrist link (opening None if unseen)."""
     opened = _in_wrist(tree, hand, _gripper_at(tree, hand, "open"))
-    closed = _in_wrist(tree, hand, _gripper_at(tree, hand, "closed"))
     approach = _snapped(np.mean(list(opened.values()), axis=0))
+    opening = _opening(tree, hand, approach, centres=False)
+    if opening is None:
+        opening = _opening(tree, hand, approach, centres=True)
+    return approach, opening
+
+
+def turning_jaw(tree: ModelTree, hand: Hand) -> bool:
+    """Whether the fingers part only when measured at their shapes' middles."""
+    approach, _ = approach_and_opening(tree, hand)
+    return _opening(tree, hand, approach, centres=False) is None and (
+        _opening(tree, hand, approach, centres=True) is not None
+    )
+
+
+def _opening(tree: ModelTree, hand: Hand, approach: np.ndarray, centres: bool) -> np.ndarray | None:
+    """How the finger that moves most moves sideways from closed to the upper limits."""
+    opened = _in_wrist(tree, hand, _gripper_at(tree, hand, "open"), centres)
+    closed = _in_wrist(tree, hand, _gripper_at(tree, hand, "closed"), centres)
     moves = {link: opened[link] - closed[link] for link in hand.gripper_links}
     if not moves:
-        return approach, None
+        return None
     link = max(moves, key=lambda name: float(np.linalg.norm(moves[name])))
     sideways = moves[link] - (moves[link] @ approach) * approach
     if np.linalg.norm(sideways) < 1e-4:
-        return approach, None
-    return approach, _snapped(sideways)
+        return None
+    return _snapped(sideways)
 
 
-def _reach(tree: ModelTree, hand: Hand, approach: np.ndarray) -> float:
+def _reach(tree: ModelTree, hand: Hand, approach: np.ndarray, centres: bool) -> float:
     """How far [m] past the wrist along the approach the gripper links reach, closed."""
-    closed = _in_wrist(tree, hand, _gripper_at(tree, hand, "closed"))
+    closed = _in_wrist(tree, hand, _closed(tree, hand, centres), centres)
     reach = [float(closed[link] @ approach) for link in hand.gripper_links] or [0.0]
     return max(reach)
 
@@ -109,10 +147,13 @@ def tool_frame(tree: ModelTree, hand: Hand, arm: str) -> ToolFrame:
     """An existing tool frame that follows the convention, or one to add and why."""
     approach, opening = approach_and_opening(tree, hand)
     doubt = None
+    jaw = turning_jaw(tree, hand)
     if opening is None:
         opening = _fallback_opening(approach)
         doubt = "the fingers did not move apart between the joint limits; check y = opening"
-    reach = _reach(tree, hand, approach)
+    elif jaw and opens_at_upper(tree, hand, hand.gripper_joints[0], approach) is False:
+        opening = -opening  # measured towards the upper limits, where this jaw closes
+    reach = _reach(tree, hand, approach, jaw)
     at_rest = _in_wrist(tree, hand, {})
     poses = link_poses(tree.model)
     wrist = poses[hand.end_effector_link]
@@ -127,7 +168,7 @@ def tool_frame(tree: ModelTree, hand: Hand, arm: str) -> ToolFrame:
         spec = FrameSpec(f"{arm}_standard_tool_frame", name, Pose(orientation=turn.orientation))
         why = f"{name} is at the fingers but its axes differ: turned to x = approach, y = opening"
         return ToolFrame(spec.name, spec, why, doubt)
-    closed = _in_wrist(tree, hand, _gripper_at(tree, hand, "closed"))
+    closed = _in_wrist(tree, hand, _closed(tree, hand, jaw), jaw)
     middle = np.mean([closed[link] for link in hand.gripper_links] or [approach * reach], axis=0)
     centre = middle + (reach - float(middle @ approach)) * approach
     spec = FrameSpec(

@@ -1,0 +1,63 @@
+"""z1_description: a robot description drafted by `robocram robot draft` from z1.urdf.
+
+Check it with `robocram robot check z1.py`; look at each `TODO doubt`.
+"""
+
+from __future__ import annotations
+
+from robocram.robots import (
+    ArmDescription,
+    FrameSpec,
+    GripperDescription,
+    GripperJoint,
+    RobotDescription,
+    example_robot_data_folder,
+)
+from robocram.tf import Pose
+
+URDF = example_robot_data_folder() / "z1_description/urdf/z1.urdf"
+
+
+def description() -> RobotDescription:
+    """The z1_description description (unchecked; load_description checks it)."""
+    return RobotDescription(
+        name="z1_description",
+        urdf=URDF,
+        # why: the URDF's root link: the robot's base
+        base_frame="world",
+        # why: one gripper-like end
+        arms={
+            "arm": ArmDescription(
+                name="arm",
+                # why: child of joint6, the last joint before the fingers
+                end_effector_link="link06",
+                # why: no frame of the URDF reaches the fingers: added 0.140 m out along the
+                #   approach
+                tool_frame="arm_standard_tool_frame",
+                # why: parent of the first arm joint; its joints down to the wrist are found at load
+                base_link="link00",
+                # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
+                # TODO doubt: no collision check here: `robocram robot check` drives it
+                parking={
+                    "joint1": 0.712,
+                    "joint2": 0.446,
+                    "joint3": -0.07,
+                    "joint4": -1.032,
+                    "joint5": -0.008,
+                    "joint6": -1.919,
+                },
+                # why: the finger joints (prismatic, or leaves) right below the wrist; open at the
+                #   lower limit, where the fingers part
+                gripper=GripperDescription(
+                    (GripperJoint("jointGripper", open=-1.5707, closed=0.0),)
+                ),
+            ),
+        },
+        extra_frames=(
+            FrameSpec(
+                name="arm_standard_tool_frame",
+                parent="link06",
+                pose=Pose((0.139501, 0.0, 0.002626), (0.707107, 0.0, 0.0, 0.707107)),
+            ),
+        ),
+    )
