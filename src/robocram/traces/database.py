@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import sqlite3
 import threading
+import time
 from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
@@ -24,6 +25,8 @@ from robocram.traces.schema import SCHEMA_VERSION, Base, SchemaInfo
 
 BUSY_TIMEOUT = 60_000  # [ms] a writer waits this long for another process's transaction
 _WRITE = "robocram_write"
+OPEN_RETRIES = 50  # tries to open a file another process is setting up
+OPEN_RETRY_PAUSE = 0.05  # [s] between them
 
 
 class TraceDatabase:
@@ -41,10 +44,27 @@ class TraceDatabase:
         self._lock = threading.Lock()
         self._connection: Connection | None = None
         try:
-            self._check_schema(create)
+            self._open_schema(create)
         except BaseException:
             self.engine.dispose()
             raise
+
+    def _open_schema(self, create: bool) -> None:
+        """Check (or create) the schema, retrying while another process sets the file up.
+
+        Two batch workers opening a new file at once race to switch it to WAL and create
+        the tables; SQLite answers the loser "locked" at once, without waiting out
+        ``busy_timeout``. The retries are bounded, and the answer never depends on them.
+        """
+        for attempt in range(OPEN_RETRIES):
+            try:
+                self._check_schema(create)
+                return
+            except TraceError:
+                if attempt == OPEN_RETRIES - 1:
+                    raise
+                self.engine.dispose()  # the next connection sets its pragmas again
+                time.sleep(OPEN_RETRY_PAUSE)
 
     def _check_schema(self, create: bool) -> None:
         try:
