@@ -21,7 +21,9 @@ ALLOWED: dict[str, set[str]] = {
     "scenes": {"world", "kinematics", "robots", "tf"},
     "grasping": {"world", "kinematics", "robots", "logic", "tf"},
     "costmaps": {"grasping", "world", "kinematics", "designators", "robots", "logic", "tf"},
+    "motion": {"world", "kinematics", "execution", "robots", "logic", "tf"},
     "projection": {
+        "motion",
         "grasping",
         "costmaps",
         "world",
@@ -34,9 +36,10 @@ ALLOWED: dict[str, set[str]] = {
     },
     "turtlesim": {"execution", "designators", "logic", "tf"},
     "plans": {"execution", "designators", "logic", "tf"},
-    "traces": {"costmaps", "world", "execution", "designators", "robots", "logic", "tf"},
+    "traces": {"motion", "costmaps", "world", "execution", "designators", "robots", "logic", "tf"},
     "viewer": {
         "traces",
+        "motion",
         "costmaps",
         "world",
         "execution",
@@ -47,6 +50,7 @@ ALLOWED: dict[str, set[str]] = {
     },
     "ros": {
         "projection",
+        "motion",
         "grasping",
         "costmaps",
         "scenes",
@@ -58,7 +62,17 @@ ALLOWED: dict[str, set[str]] = {
         "logic",
         "tf",
     },
-    "batch": {"traces", "scenes", "plans", "projection", "world", "execution", "designators", "tf"},
+    "batch": {
+        "traces",
+        "motion",
+        "scenes",
+        "plans",
+        "projection",
+        "world",
+        "execution",
+        "designators",
+        "tf",
+    },
     "robot_check": {
         "projection",
         "world",

@@ -130,6 +130,13 @@ class BoxSpec:
     size: tuple[float, float, float]  # [m] full extents along x, y, z
 
 
+DEFAULT_ALLOWED_CONTACTS: tuple[tuple[str, str], ...] = (("*", "floor"), ("gripper", "held"))
+"""Which contacts are not collisions, as ``(robot links, other)`` rules. Robot links: ``*``
+(any), ``gripper`` or ``hand`` (an arm's, with that arm's held object), ``base`` (links not
+moved by any joint) or a link name; other: ``floor`` (objects of type floor), ``held`` (what
+the arm holds), an object type or an object name."""
+
+
 @dataclass(frozen=True)
 class RobotDescription:
     """What plans need to know about one robot, beside its URDF.
@@ -155,6 +162,9 @@ class RobotDescription:
     extra_boxes: tuple[BoxSpec, ...] = ()
     package_paths: tuple[Path, ...] = ()
     flying: bool = False
+    acceleration_limits: Mapping[str, float] = field(default_factory=dict)  # [rad/s^2 | m/s^2]
+    holonomic: bool = True  # the base drives sideways; False: paths of a car (Reeds-Shepp)
+    allowed_contacts: tuple[tuple[str, str], ...] = DEFAULT_ALLOWED_CONTACTS
     model: RobotModel | None = None
 
     def arm_called(self, word: str) -> str:

@@ -33,6 +33,7 @@ from robocram.execution.failures.manipulation import (
     ManipulationGoalInCollision,
     ManipulationGoalNotReached,
     ManipulationLowLevelFailure,
+    ManipulationPathBlocked,
     ManipulationPoseUnreachable,
     ObjectUndeliverable,
     ObjectUnfetchable,
@@ -42,6 +43,7 @@ from robocram.execution.failures.navigation import (
     NavigationGoalInCollision,
     NavigationGoalNotReached,
     NavigationLowLevelFailure,
+    NavigationPathBlocked,
     NavigationPoseUnreachable,
 )
 from robocram.execution.failures.perception import (
@@ -88,10 +90,12 @@ __all__ = [
     "ManipulationGoalInCollision",
     "ManipulationGoalNotReached",
     "ManipulationLowLevelFailure",
+    "ManipulationPathBlocked",
     "ManipulationPoseUnreachable",
     "NavigationGoalInCollision",
     "NavigationGoalNotReached",
     "NavigationLowLevelFailure",
+    "NavigationPathBlocked",
     "NavigationPoseUnreachable",
     "NoMatchingProcessModule",
     "NotInTopLevel",

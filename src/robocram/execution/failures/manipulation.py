@@ -34,6 +34,14 @@ class ManipulationPoseUnreachable(ManipulationLowLevelFailure):
     hint = ""  # the advice depends on the robot and the cause: the raiser's message has it
 
 
+class ManipulationPathBlocked(ManipulationPoseUnreachable):
+    """The goal is reachable, but no collision-free path of the arm leads there."""
+
+    path_fraction: float | None = None  # [0..1] how far along the path the first collision is
+    summary = "the arm's path to its goal is blocked"
+    hint = "try another grasp, arm or stand, or allow planning around the obstacle"
+
+
 class GripperLowLevelFailure(LowLevelFailure):
     """A gripper motion failed."""
 

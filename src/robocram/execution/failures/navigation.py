@@ -21,6 +21,14 @@ class NavigationPoseUnreachable(NavigationLowLevelFailure):
     hint = "sample another base pose from the location designator"
 
 
+class NavigationPathBlocked(NavigationPoseUnreachable):
+    """The goal is free, but no collision-free path of the base leads there."""
+
+    path_fraction: float | None = None  # [0..1] how far along the straight path it is blocked
+    summary = "the base's path to its goal is blocked"
+    hint = "clear the blocker (close the drawer, move the object) or choose another stand"
+
+
 class NavigationGoalNotReached(NavigationLowLevelFailure):
     """The base moved but stopped away from its target."""
 

@@ -1,0 +1,21 @@
+"""Motions a real robot can execute: collision-checked paths and timed trajectories.
+
+A motion's goal (joint values from IK, a base pose) becomes a path that is checked densely
+against the world, planned around obstacles when the straight way is blocked (OMPL), and
+timed under the robot's limits; projection follows the trajectory and ROS sends it whole.
+See docs/motion.md.
+"""
+
+from robocram.motion.errors import MotionError
+from robocram.motion.joint_limits import JointLimits, joint_limits
+from robocram.motion.joint_trajectory import BASE_JOINTS, JointTrajectory, TrajectoryPoint, still
+
+__all__ = [
+    "BASE_JOINTS",
+    "JointLimits",
+    "JointTrajectory",
+    "MotionError",
+    "TrajectoryPoint",
+    "joint_limits",
+    "still",
+]
