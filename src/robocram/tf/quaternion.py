@@ -133,3 +133,17 @@ def angle_between(a: Quaternion, b: Quaternion) -> float:
     """Smallest rotation angle [rad] taking orientation ``a`` to ``b``."""
     d = abs(sum(x * y for x, y in zip(a, b, strict=True)))
     return 2.0 * math.acos(min(1.0, d))
+
+
+def slerp(a: Quaternion, b: Quaternion, t: float) -> Quaternion:
+    """The rotation ``t`` (0..1) of the way from ``a`` to ``b`` along the shorter arc."""
+    qa, qb = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    dot = float(qa @ qb)
+    if dot < 0.0:  # q and -q are one rotation: take the shorter way round
+        qb, dot = -qb, -dot
+    if dot > 0.9995:  # nearly equal: a normalised straight blend is exact enough
+        return normalized((qa + t * (qb - qa)).tolist())
+    theta = float(np.arccos(min(dot, 1.0)))
+    s = np.sin(theta)
+    blend = (np.sin((1.0 - t) * theta) / s) * qa + (np.sin(t * theta) / s) * qb
+    return normalized(blend.tolist())

@@ -1,0 +1,103 @@
+"""Straight lines of the tool: approach, lift, put and retreat, as MoveIt's Cartesian path.
+
+The line from the tool's pose to the target is cut into steps of at most ``max_step``
+(1 cm) and ``max_rotation`` (0.05 rad); IK solves each step from the previous solution
+(one descent, no random restarts, so the arm follows the line instead of jumping to
+another branch); a step whose joints change by more than ``jump_threshold`` is a jump and
+ends the line; every step and the segment to it are checked like any other path. The
+answer is the path as far as it got and the fraction of the line achieved.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import numpy as np
+
+from robocram.kinematics import solve_ik
+from robocram.motion.configuration_checker import ConfigurationChecker
+from robocram.motion.joint_path import JointPath
+from robocram.motion.segment_check import CheckCounter, segment_free
+from robocram.motion.travel_bound import TravelBound
+from robocram.robots import LoadedDescription
+from robocram.tf import Pose
+from robocram.tf import quaternion as quat
+
+MAX_STEP = 0.01  # [m] of tool travel between IK solutions
+MAX_ROTATION = 0.05  # [rad] of tool rotation between IK solutions
+JUMP_THRESHOLD = 0.2  # [rad | m] largest change of any joint between two steps
+
+
+@dataclass(frozen=True)
+class CartesianPath:
+    """The path as far as the line could be followed, and how far that is (0..1)."""
+
+    path: JointPath
+    fraction: float
+    stopped_by: str  # "" when the whole line was achieved, else why it stopped
+
+
+def line_poses(start: Pose, goal: Pose, max_step: float, max_rotation: float) -> list[Pose]:
+    """Poses from ``start`` (excluded) to ``goal`` (included), evenly spaced."""
+    distance = start.distance_to(goal)
+    angle = start.angle_to(goal)
+    n = max(1, math.ceil(distance / max_step), math.ceil(angle / max_rotation))
+    a, b = np.array(start.position), np.array(goal.position)
+    return [
+        Pose(tuple((a + (b - a) * (k / n)).tolist()), quat.slerp(start.orientation,
+                                                                  goal.orientation, k / n))
+        for k in range(1, n + 1)
+    ]  # fmt: skip
+
+
+def cartesian_path(
+    desc: LoadedDescription,
+    arm: str,
+    checker: ConfigurationChecker,
+    current: Mapping[str, float],
+    tool_in_base: Pose,
+    target_in_base: Pose,
+    bound: TravelBound,
+    *,
+    random_seed: int = 0,
+    max_step: float = MAX_STEP,
+    max_rotation: float = MAX_ROTATION,
+    jump_threshold: float = JUMP_THRESHOLD,
+) -> CartesianPath:
+    """Follow the straight line of ``arm``'s tool from ``tool_in_base`` to ``target_in_base``.
+
+    ``current`` holds every joint's value now; the checker's joints are the ones moved.
+    """
+    joints = checker.joints
+    seed = dict(current)
+    q = np.array([seed[j] for j in joints])
+    waypoints = [tuple(q.tolist())]
+    counter = CheckCounter()
+    poses = line_poses(tool_in_base, target_in_base, max_step, max_rotation)
+    stopped = ""
+    for k, pose in enumerate(poses):
+        result = solve_ik(
+            desc, arm, pose, seed=seed, use_torso=False, max_restarts=0, random_seed=random_seed
+        )
+        if not result.success:
+            stopped = f"IK found no solution {k + 1} steps along the line"
+            break
+        nxt = np.array([result.joint_positions[j] for j in joints])
+        jump = float(np.abs(nxt - q).max())
+        if jump > jump_threshold:
+            stopped = f"a joint jumps {jump:.2f} between steps {k} and {k + 1}"
+            break
+        counter.checks += 1
+        pairs = checker.colliding(nxt)
+        if pairs or not segment_free(checker, q, nxt, bound, counter):
+            link, other = pairs[0] if pairs else ("the arm", "something on the way")
+            stopped = f"{link} hits {other} {k + 1} steps along the line"
+            break
+        seed.update(result.joint_positions)
+        q = nxt
+        waypoints.append(tuple(q.tolist()))
+    fraction = (len(waypoints) - 1) / len(poses)
+    path = JointPath(joints, tuple(waypoints), "cartesian", counter.checks)
+    return CartesianPath(path, fraction, stopped)

@@ -1,0 +1,35 @@
+"""What a planner asks of a collision model: is this configuration free, and if not, why.
+
+Planners work on configurations ``q`` of a fixed tuple of joints; everything else (the
+base, the other joints, the world) stays as it was when the checker was made. Two
+implementations: :class:`~robocram.motion.bullet_scene.BulletScene` (the projection
+world itself) and the coal scene (a snapshot, for speed).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Protocol
+
+import numpy as np
+import numpy.typing as npt
+
+Configuration = Sequence[float] | npt.NDArray[np.float64]  # values of the checker's joints
+LinkPair = tuple[str, str]  # (robot link, other: object, object/link or robot link)
+
+
+class ConfigurationChecker(Protocol):
+    """Checks configurations of :attr:`joints`; used by one thread at a time."""
+
+    @property
+    def joints(self) -> tuple[str, ...]:
+        """The joints a configuration gives values for, in order."""
+        ...
+
+    def colliding(self, q: Configuration, first_only: bool = False) -> list[LinkPair]:
+        """The colliding ``(robot link, other)`` pairs at ``q`` (empty: free)."""
+        ...
+
+    def is_free(self, q: Configuration) -> bool:
+        """Whether ``q`` collides with nothing (the fast path)."""
+        ...

@@ -1,0 +1,121 @@
+"""A collision-free joint-space path: the straight segment when it is free, else RRTConnect.
+
+Like MoveIt, the straight segment from start to goal is tried first, checked densely
+(:mod:`travel_bound`). When it is blocked, OMPL's RRTConnect plans in the same joints
+(the arm's, and the torso when IK moved it), and the path is shortcut: seeded random pairs
+of waypoints are joined by straight segments wherever those are free, for a counted
+number of tries. Everything is counted and seeded, so a query gives the same path on any
+machine. A goal the planner cannot connect within its budget raises
+``ManipulationPathBlocked`` naming what the straight segment runs into, and where.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from robocram.execution.failures import ManipulationPathBlocked
+from robocram.motion.configuration_checker import ConfigurationChecker
+from robocram.motion.joint_trajectory import FloatArray
+from robocram.motion.rrt_connect import rrt_connect
+from robocram.motion.segment_check import CheckCounter, first_collision, segment_free
+from robocram.motion.travel_bound import TravelBound
+
+PLANNING_BUDGET = 20_000  # configurations RRTConnect may check
+SHORTCUT_TRIES = 60  # random shortcut attempts after planning
+
+
+@dataclass(frozen=True)
+class JointPath:
+    """Waypoints of a path through ``joints``; ``planner`` says how it was found."""
+
+    joints: tuple[str, ...]
+    waypoints: tuple[tuple[float, ...], ...]
+    planner: str  # "straight", "rrt_connect" or "cartesian"
+    checks: int  # configurations checked to find it
+
+
+def plan_joint_path(
+    checker: ConfigurationChecker,
+    start: Sequence[float],
+    goal: Sequence[float],
+    bound: TravelBound,
+    limits: tuple[Sequence[float], Sequence[float]],
+    *,
+    plan: bool = True,
+    seed: int = 0,
+    budget: int = PLANNING_BUDGET,
+    what: str = "the arm",
+) -> JointPath:
+    """A free path from ``start`` to ``goal`` (both free); ``plan=False``: straight only.
+
+    ``limits`` are the joints' (lower, upper) bounds of the planning space.
+
+    Raises:
+        ManipulationPathBlocked: neither the straight segment nor the planner found a way;
+            it names the pairs colliding first on the straight segment and where.
+    """
+    counter = CheckCounter()
+    a, b = np.asarray(start, dtype=float), np.asarray(goal, dtype=float)
+    joints = checker.joints
+    if segment_free(checker, a, b, bound, counter):
+        return JointPath(joints, (tuple(a), tuple(b)), "straight", counter.checks)
+    if plan:
+        lower, upper = _box(a, b, limits)
+        found = rrt_connect(checker, a, b, lower, upper, bound, counter, budget, seed)
+        if found is not None:
+            waypoints = shortcut(checker, found, bound, counter, seed)
+            return JointPath(
+                joints, tuple(tuple(map(float, w)) for w in waypoints), "rrt_connect",
+                counter.checks,
+            )  # fmt: skip
+    hit = first_collision(checker, a, b, bound, counter)
+    fraction, pairs = hit if hit is not None else (0.0, [])
+    planned = f"; RRTConnect found no way round in {budget} checks" if plan else ""
+    raise ManipulationPathBlocked(
+        f"{what}'s straight path is blocked {fraction:.0%} of the way: {_pairs(pairs)}{planned}",
+        colliding_pairs=tuple(pairs),
+        path_fraction=fraction,
+    )
+
+
+def shortcut(
+    checker: ConfigurationChecker,
+    path: list[FloatArray],
+    bound: TravelBound,
+    counter: CheckCounter,
+    seed: int,
+    tries: int = SHORTCUT_TRIES,
+) -> list[FloatArray]:
+    """``path`` with waypoints dropped wherever a straight segment joins their neighbours."""
+    rng = np.random.default_rng(seed)
+    path = list(path)
+    for _ in range(tries):
+        if len(path) < 3:
+            break
+        i, j = sorted(rng.choice(len(path), size=2, replace=False).tolist())
+        if j - i < 2:
+            continue
+        if segment_free(checker, path[i], path[j], bound, counter):
+            path = path[: i + 1] + path[j:]
+    return path
+
+
+def _box(
+    a: FloatArray, b: FloatArray, limits: tuple[Sequence[float], Sequence[float]]
+) -> tuple[list[float], list[float]]:
+    """The planning space: the joint limits, continuous joints within a turn of the ends."""
+    lower, upper = [], []
+    for i, (lo, hi) in enumerate(zip(*limits, strict=True)):
+        low_end, high_end = min(a[i], b[i]), max(a[i], b[i])
+        lower.append(float(lo) if np.isfinite(lo) else low_end - np.pi)
+        upper.append(float(hi) if np.isfinite(hi) else high_end + np.pi)
+    return lower, upper
+
+
+def _pairs(pairs: Sequence[tuple[str, str]]) -> str:
+    if not pairs:
+        return "no collision found on it (a state on the way is invalid)"
+    return ", ".join(f"{link} hits {other}" for link, other in pairs[:4])

@@ -1,0 +1,96 @@
+"""OMPL's RRTConnect (MoveIt's default planner) in a robot's joint space, made repeatable.
+
+OMPL's random numbers are process-global: :data:`OMPL_LOCK` serialises queries and each
+query reseeds OMPL first, so the same query and seed give the same path in any process,
+whatever ran before. The budget is counted (configurations checked), never timed, so an
+idle and a loaded machine give the same answer. Motions between tree states are checked
+with the same dense segment check as every other path (:mod:`segment_check`).
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Sequence
+
+import numpy as np
+from ompl import base as ob
+from ompl import geometric as og
+from ompl import util as ou
+
+from robocram.motion.configuration_checker import ConfigurationChecker
+from robocram.motion.joint_trajectory import FloatArray
+from robocram.motion.segment_check import CheckCounter, segment_free
+from robocram.motion.travel_bound import TravelBound
+
+OMPL_LOCK = threading.Lock()  # OMPL's random number generator is one per process
+ou.setLogLevel(ou.LOG_NONE)
+
+
+class _DenseMotions(ob.MotionValidator):
+    """OMPL asks whether a tree edge is free; the dense segment check answers."""
+
+    def __init__(
+        self,
+        si: ob.SpaceInformation,
+        checker: ConfigurationChecker,
+        bound: TravelBound,
+        counter: CheckCounter,
+        width: int,
+    ) -> None:
+        super().__init__(si)
+        self._checker = checker
+        self._bound = bound
+        self._counter = counter
+        self._width = width
+
+    def checkMotion(self, s1: ob.State, s2: ob.State, *rest: object) -> bool:  # noqa: N802
+        a = np.array([s1[i] for i in range(self._width)])
+        b = np.array([s2[i] for i in range(self._width)])
+        return segment_free(self._checker, a, b, self._bound, self._counter)
+
+
+def rrt_connect(
+    checker: ConfigurationChecker,
+    start: FloatArray,
+    goal: FloatArray,
+    lower: Sequence[float],
+    upper: Sequence[float],
+    bound: TravelBound,
+    counter: CheckCounter,
+    budget: int,
+    seed: int,
+) -> list[FloatArray] | None:
+    """Waypoints from ``start`` to ``goal`` within the box ``lower``..``upper``, or None
+    when ``budget`` configuration checks found none."""
+    width = len(start)
+    space = ob.RealVectorStateSpace(width)
+    bounds = ob.RealVectorBounds(width)
+    for i in range(width):
+        bounds.setLow(i, float(lower[i]))
+        bounds.setHigh(i, float(upper[i]))
+    space.setBounds(bounds)
+    setup = og.SimpleSetup(space)
+    si = setup.getSpaceInformation()
+
+    def valid(state: ob.State) -> bool:
+        counter.checks += 1
+        return checker.is_free([state[i] for i in range(width)])
+
+    setup.setStateValidityChecker(valid)
+    validator = _DenseMotions(si, checker, bound, counter, width)
+    si.setMotionValidator(validator)
+    a, b = space.allocState(), space.allocState()
+    for i in range(width):
+        a[i], b[i] = float(start[i]), float(goal[i])
+    setup.setStartAndGoalStates(a, b)
+    setup.setPlanner(og.RRTConnect(si))
+    limit = counter.checks + budget
+    with OMPL_LOCK:
+        ou.RNG.setSeed(seed + 1)  # 0 would mean "no seed"
+        solved = setup.solve(ob.PlannerTerminationCondition(lambda: counter.checks > limit))
+        if not solved or not setup.haveExactSolutionPath():
+            return None
+        states = setup.getSolutionPath().getStates()
+        path = [np.array([s[i] for i in range(width)]) for s in states]
+    del validator
+    return path

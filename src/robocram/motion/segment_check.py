@@ -1,0 +1,77 @@
+"""Dense checks of straight joint-space segments, as a planner and a failure need them.
+
+``segment_free`` answers fast: it checks the interior configurations in van der Corput
+order (the middle first, then the quarters...), so a blocked segment is usually found
+after a few checks. ``first_collision`` walks from the start and reports where the first
+collision is and what collides, for the failure a plan sees.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from collections.abc import Iterator
+from dataclasses import dataclass
+
+import numpy as np
+
+from robocram.motion.configuration_checker import ConfigurationChecker, LinkPair
+from robocram.motion.joint_trajectory import FloatArray
+from robocram.motion.travel_bound import TravelBound
+
+
+@dataclass
+class CheckCounter:
+    """Configurations checked so far: a planner's budget is counted in them."""
+
+    checks: int = 0
+
+
+def interior(n: int) -> Iterator[int]:
+    """Indices 1..n-1, each once, the middle first, then the middles of the halves..."""
+    spans = deque([(0, n)])
+    while spans:
+        low, high = spans.popleft()
+        middle = (low + high) // 2
+        if low < middle < high:
+            yield middle
+            spans.append((low, middle))
+            spans.append((middle, high))
+
+
+def segment_free(
+    checker: ConfigurationChecker,
+    qa: FloatArray,
+    qb: FloatArray,
+    bound: TravelBound,
+    counter: CheckCounter,
+) -> bool:
+    """Whether every checked configuration strictly between ``qa`` and ``qb`` is free.
+
+    The ends are not checked: a planner checks its states once, on their own.
+    """
+    n = bound.steps(qa, qb)
+    qa, qb = np.asarray(qa, dtype=float), np.asarray(qb, dtype=float)
+    for k in interior(n):
+        counter.checks += 1
+        if not checker.is_free(qa + (qb - qa) * (k / n)):
+            return False
+    return True
+
+
+def first_collision(
+    checker: ConfigurationChecker,
+    qa: FloatArray,
+    qb: FloatArray,
+    bound: TravelBound,
+    counter: CheckCounter,
+) -> tuple[float, list[LinkPair]] | None:
+    """The first colliding configuration from ``qa`` to ``qb`` (ends included): the
+    fraction of the segment where it is and its colliding pairs; None when all is free."""
+    n = bound.steps(qa, qb)
+    qa, qb = np.asarray(qa, dtype=float), np.asarray(qb, dtype=float)
+    for k in range(n + 1):
+        counter.checks += 1
+        pairs = checker.colliding(qa + (qb - qa) * (k / n))
+        if pairs:
+            return k / n, pairs
+    return None

@@ -1,0 +1,109 @@
+"""How densely a joint-space segment must be checked: a bound on how far any point moves.
+
+"At most 1 cm of travel of any link and 0.02 rad of any joint between checks" needs the
+largest distance any point of the moving links (and what they hold) can travel when the
+joints change by ``dq``. For a revolute joint that is its change times the largest distance
+from the joint's origin to a point below it; that distance is bounded, whatever the other
+joints do, by the lengths of the rigid links between (joint origin to joint origin, fixed)
+plus the radius of the far link's geometry about its own frame. A prismatic joint moves
+every point below it by its change. The sum over the joints bounds the travel, so checks
+``resolution`` apart never skip more than ``resolution`` of any link's path.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from robocram.motion.errors import MotionError
+from robocram.motion.joint_trajectory import FloatArray
+from robocram.world import World
+
+MAX_LINK_TRAVEL = 0.01  # [m] between two checked configurations
+MAX_JOINT_STEP = 0.02  # [rad | m] of any joint between two checked configurations
+
+
+@dataclass(frozen=True)
+class TravelBound:
+    """Per joint: metres any point below it moves per unit change of the joint."""
+
+    joints: tuple[str, ...]
+    lever: FloatArray  # [m/rad] (1 for prismatic joints)
+    max_link_travel: float = MAX_LINK_TRAVEL
+    max_joint_step: float = MAX_JOINT_STEP
+
+    def steps(self, qa: FloatArray, qb: FloatArray) -> int:
+        """Segments between checks on the straight line ``qa`` -> ``qb`` (at least 1)."""
+        dq = np.abs(np.asarray(qb, dtype=float) - np.asarray(qa, dtype=float))
+        travel = float(self.lever @ dq)
+        step = float(dq.max()) if dq.size else 0.0
+        return max(
+            1, math.ceil(travel / self.max_link_travel), math.ceil(step / self.max_joint_step)
+        )
+
+    @classmethod
+    def of(
+        cls,
+        world: World,
+        robot: str,
+        joints: Sequence[str],
+        max_link_travel: float = MAX_LINK_TRAVEL,
+        max_joint_step: float = MAX_JOINT_STEP,
+    ) -> TravelBound:
+        """The bound for ``joints`` of ``robot`` as it stands (held objects included)."""
+        if max_link_travel <= 0.0 or max_joint_step <= 0.0:
+            raise MotionError(
+                f"check resolution must be positive, got {max_link_travel} m and "
+                f"{max_joint_step} rad"
+            )
+        model = world.robot(robot).description.model
+        radius = _link_radii(world, robot)
+        children: dict[str, list[tuple[str, float]]] = {}
+        for each in model.joints.values():
+            offset = float(np.linalg.norm(each.origin.position))
+            children.setdefault(each.parent, []).append((each.child, offset))
+        lever = []
+        for name in joints:
+            joint = model.joints.get(name)
+            if joint is None or not joint.movable:
+                raise MotionError(f"{name!r} is not a movable joint of {robot}")
+            if joint.type == "prismatic":
+                lever.append(1.0)
+                continue
+            lever.append(_reach_below(joint.child, 0.0, children, radius))
+        return cls(tuple(joints), np.array(lever), max_link_travel, max_joint_step)
+
+
+def _reach_below(
+    link: str,
+    so_far: float,
+    children: dict[str, list[tuple[str, float]]],
+    radius: dict[str, float],
+) -> float:
+    """The largest distance from the joint above ``link`` to any point at or below it."""
+    best = so_far + radius.get(link, 0.0)
+    for child, offset in children.get(link, ()):
+        best = max(best, _reach_below(child, so_far + offset, children, radius))
+    return best
+
+
+def _link_radii(world: World, robot: str) -> dict[str, float]:
+    """Per link: the largest distance from its frame to a corner of its bounds (and of what
+    it holds), in the world as it is now."""
+    radii: dict[str, float] = {}
+    for link in world.link_names(robot):
+        origin = np.array(world.link_pose(robot, link).position)
+        radii[link] = _corner_distance(origin, world.link_aabb(robot, link))
+    for obj, link in world.attachments(robot).items():
+        origin = np.array(world.link_pose(robot, link).position)
+        radii[link] = max(radii.get(link, 0.0), _corner_distance(origin, world.aabb(obj)))
+    return radii
+
+
+def _corner_distance(origin: FloatArray, box: tuple[Sequence[float], Sequence[float]]) -> float:
+    low, high = np.asarray(box[0], dtype=float), np.asarray(box[1], dtype=float)
+    far = np.maximum(np.abs(low - origin), np.abs(high - origin))
+    return float(np.linalg.norm(far))
