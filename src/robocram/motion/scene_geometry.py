@@ -16,8 +16,7 @@ import numpy as np
 import pinocchio as pin
 from numpy.typing import NDArray
 
-from robocram.kinematics.robot_kinematics import robot_kinematics
-from robocram.kinematics.robot_kinematics import RobotKinematics, pose_to_se3
+from robocram.kinematics.robot_kinematics import RobotKinematics, pose_to_se3, robot_kinematics
 from robocram.motion.allowed_contacts import AllowedContacts, Other
 from robocram.motion.coal_shapes import coal_geometries
 from robocram.motion.reach_bounds import Sphere, reach_sphere, shape_sphere
