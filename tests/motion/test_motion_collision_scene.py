@@ -7,8 +7,7 @@ import pickle
 import numpy as np
 import pytest
 
-from robocram.motion import joint_limits
-from robocram.motion.collision_scene import CollisionScene
+from robocram.motion import CollisionScene, joint_limits
 from robocram.scenes import kitchen_scene, tabletop_scene
 from robocram.tf import Pose
 from robocram.world import World
@@ -43,7 +42,9 @@ def _bullet_pairs(world: World, robot: str, distance: float) -> set[tuple[str, s
     }
 
 
-def _world_pairs(scene: CollisionScene, q: np.ndarray, robot_links: set[str]) -> set[tuple[str, str]]:
+def _world_pairs(
+    scene: CollisionScene, q: np.ndarray, robot_links: set[str]
+) -> set[tuple[str, str]]:
     return {p for p in scene.colliding(q) if p[1] not in robot_links}
 
 
@@ -63,9 +64,7 @@ def _agreement(world: World, robot: str, joints: list[str], n: int, seed: int) -
                 continue
             counts["near"] += 1
             if theirs and not ours:  # coal says free: PyBullet's deepest penetration
-                depth = min(
-                    p.distance for p in world.contact_points(robot) if p.object_b != robot
-                )
+                depth = min(p.distance for p in world.contact_points(robot) if p.object_b != robot)
                 if depth < -NEAR:
                     counts["missed_deep"] += 1
             elif not _bullet_pairs(world, robot, NEAR):

@@ -50,10 +50,8 @@ def mesh_hulls(path: str, scale: Vector3) -> tuple[coal.ConvexBase, ...]:
     file = Path(path)
     if not file.is_file():
         raise MotionError(f"mesh file {path} does not exist; fix the URDF or the object's spec")
-    if file.suffix.lower() == ".obj":
-        parts = _obj_parts(file)
-    else:
-        parts = [_loaded_vertices(file)]
+    obj = file.suffix.lower() == ".obj"
+    parts = _obj_parts(file) if obj else [_loaded_vertices(file)]
     factor = np.asarray(scale, dtype=float)
     return tuple(_hull(points * factor, path) for points in parts if len(points) >= 4)
 
