@@ -6,12 +6,14 @@ timed under the robot's limits; projection follows the trajectory and ROS sends 
 See docs/motion.md.
 """
 
+from robocram.motion.collision_scene import CollisionScene
 from robocram.motion.errors import MotionError
 from robocram.motion.joint_limits import JointLimits, joint_limits
 from robocram.motion.joint_trajectory import BASE_JOINTS, JointTrajectory, TrajectoryPoint, still
 
 __all__ = [
     "BASE_JOINTS",
+    "CollisionScene",
     "JointLimits",
     "JointTrajectory",
     "MotionError",

@@ -4,6 +4,7 @@ from robocram.world.attachment import Attachment
 from robocram.world.body_spec import MeshSpec, ShapeSpec, UrdfSpec
 from robocram.world.camera import Camera
 from robocram.world.catalogue import catalogue_names
+from robocram.world.collision_shapes import CollisionShape
 from robocram.world.contact_point import ContactPoint
 from robocram.world.errors import (
     AttachmentCycleError,
@@ -33,6 +34,7 @@ __all__ = [
     "BodyLoadError",
     "Camera",
     "ClampedJoint",
+    "CollisionShape",
     "ContactPoint",
     "DuplicateObjectError",
     "JointLimits",

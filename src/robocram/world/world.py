@@ -21,6 +21,7 @@ from robocram.world import contacts, link_contacts, spatial_relations, visibilit
 from robocram.world.body_spec import GREY, BodySpec, MeshSpec, Rgba, ShapeSpec, UrdfSpec
 from robocram.world.camera import Camera
 from robocram.world.catalogue import catalogue_item
+from robocram.world.collision_shapes import CollisionShape, collision_shapes
 from robocram.world.contact_point import ContactPoint
 from robocram.world.errors import NoCameraError, WorldValueError
 from robocram.world.png import write_png
@@ -211,6 +212,10 @@ class World(WorldCore):
         handle = self.object(obj)
         low, high = visibility.link_aabb(self, handle, self._link_index(handle, link))
         return (low[0], low[1], low[2]), (high[0], high[1], high[2])
+
+    def collision_shapes(self, obj: ObjectRef) -> list[CollisionShape]:
+        """The collision shapes of ``obj`` at their current poses in map (a snapshot)."""
+        return collision_shapes(self, self.object(obj))
 
     def collisions(
         self, obj: ObjectRef, ignore: Iterable[ObjectRef] = (), distance: float = 0.002
