@@ -9,6 +9,7 @@ See docs/motion.md.
 from robocram.motion.errors import MotionError
 from robocram.motion.joint_limits import JointLimits, joint_limits
 from robocram.motion.joint_trajectory import BASE_JOINTS, JointTrajectory, TrajectoryPoint, still
+from robocram.motion.time_parameterization import time_parameterize
 
 __all__ = [
     "BASE_JOINTS",
@@ -18,4 +19,5 @@ __all__ = [
     "TrajectoryPoint",
     "joint_limits",
     "still",
+    "time_parameterize",
 ]
