@@ -6,6 +6,7 @@ timed under the robot's limits; projection follows the trajectory and ROS sends 
 See docs/motion.md.
 """
 
+from robocram.motion.base_path import BasePath, plan_base_path
 from robocram.motion.errors import MotionError
 from robocram.motion.joint_limits import JointLimits, joint_limits
 from robocram.motion.joint_trajectory import BASE_JOINTS, JointTrajectory, TrajectoryPoint, still
@@ -13,11 +14,13 @@ from robocram.motion.time_parameterization import time_parameterize
 
 __all__ = [
     "BASE_JOINTS",
+    "BasePath",
     "JointLimits",
     "JointTrajectory",
     "MotionError",
     "TrajectoryPoint",
     "joint_limits",
+    "plan_base_path",
     "still",
     "time_parameterize",
 ]

@@ -128,9 +128,12 @@ def _sampled(
     """Points every ``period`` and at every waypoint; at a waypoint, its exact position."""
     stops = [pieces[0].t0] + [p.t1 for p in pieces]
     end = stops[-1]
-    ticks = [k * period for k in range(int(math.floor(end / period)) + 1)]
-    ticks = [t for t in ticks if min(abs(t - s) for s in _near(stops, t)) > SAME_TIME]
-    times = sorted([*ticks, *stops])
+    ticks = np.arange(int(math.floor(end / period)) + 1) * period
+    where = np.clip(np.searchsorted(stops, ticks), 1, len(stops) - 1)
+    gap = np.minimum(
+        np.abs(ticks - np.take(stops, where)), np.abs(ticks - np.take(stops, where - 1))
+    )
+    times = sorted([*ticks[gap > SAME_TIME].tolist(), *stops])
     out = []
     piece = 0
     for t in times:
@@ -149,12 +152,6 @@ def _sampled(
             )
         )
     return tuple(out)
-
-
-def _near(stops: list[float], t: float) -> list[float]:
-    """The waypoint times around ``t`` (the list is sorted)."""
-    i = int(np.searchsorted(stops, t))
-    return stops[max(i - 1, 0) : i + 1]
 
 
 def _at_waypoint(waypoints: list[FloatArray], pieces: list[_Piece], k: int) -> State:
