@@ -82,6 +82,7 @@ def plan_base_path(
         start = np.array([*checker.start.position[:2], start_yaw])
         end = np.array([goal.position[0], goal.position[1], yaw_of(goal)])
         end[2] = start_yaw + _wrap(end[2] - start_yaw)
+        checker.anchors = (start, end)
         fits = not checker.fast_hits(end[None, :], boundary=False)[0]
         colliding = [] if fits else checker.blockers(end)
         if colliding:

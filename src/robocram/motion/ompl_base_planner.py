@@ -94,15 +94,21 @@ def planned_waypoints(
         ends.append(state)
     setup.setStartAndGoalStates(ends[0], ends[1])
     limit = checker.fast_checks + budget
-    with _OMPL_TURNS:
-        ou.setLogLevel(ou.LOG_NONE)
-        ou.RNG.setSeed(seed + 1)  # OMPL ignores a seed of 0
-        setup.solve(ob.PlannerTerminationCondition(lambda: checker.fast_checks > limit))
-        if not setup.haveExactSolutionPath():
-            return None
-        extra = checker.fast_checks + int(SIMPLIFY_SHARE * budget)
-        setup.simplifySolution(ob.PlannerTerminationCondition(lambda: checker.fast_checks > extra))
-        states = [_pose(s) for s in setup.getSolutionPath().getStates()]
+    checker.confirm_everywhere = False
+    try:
+        with _OMPL_TURNS:
+            ou.setLogLevel(ou.LOG_NONE)
+            ou.RNG.setSeed(seed + 1)  # OMPL ignores a seed of 0
+            setup.solve(ob.PlannerTerminationCondition(lambda: checker.fast_checks > limit))
+            if not setup.haveExactSolutionPath():
+                return None
+            extra = checker.fast_checks + int(SIMPLIFY_SHARE * budget)
+            setup.simplifySolution(
+                ob.PlannerTerminationCondition(lambda: checker.fast_checks > extra)
+            )
+            states = [_pose(s) for s in setup.getSolutionPath().getStates()]
+    finally:
+        checker.confirm_everywhere = True
     return _unwrapped(checker, states, turning_radius, space)
 
 
