@@ -6,18 +6,23 @@ timed under the robot's limits; projection follows the trajectory and ROS sends 
 See docs/motion.md.
 """
 
+from robocram.motion.base_path import BasePath, plan_base_path
 from robocram.motion.collision_scene import CollisionScene
 from robocram.motion.errors import MotionError
 from robocram.motion.joint_limits import JointLimits, joint_limits
 from robocram.motion.joint_trajectory import BASE_JOINTS, JointTrajectory, TrajectoryPoint, still
+from robocram.motion.time_parameterization import time_parameterize
 
 __all__ = [
     "BASE_JOINTS",
+    "BasePath",
     "CollisionScene",
     "JointLimits",
     "JointTrajectory",
     "MotionError",
     "TrajectoryPoint",
     "joint_limits",
+    "plan_base_path",
     "still",
+    "time_parameterize",
 ]

@@ -22,6 +22,7 @@ from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.segment_check import CheckCounter, segment_free
 from robocram.motion.travel_bound import TravelBound
 
+POLL_LIMIT = 4  # termination polls per budgeted check, in case OMPL loops without checks
 OMPL_LOCK = threading.Lock()  # OMPL's random number generator is one per process
 ou.setLogLevel(ou.LOG_NONE)
 
@@ -85,9 +86,15 @@ def rrt_connect(
     setup.setStartAndGoalStates(a, b)
     setup.setPlanner(og.RRTConnect(si))
     limit = counter.checks + budget
+    polls = [0]
+
+    def spent() -> bool:  # counted, never timed; polls bound loops that check nothing
+        polls[0] += 1
+        return counter.checks > limit or polls[0] > POLL_LIMIT * budget
+
     with OMPL_LOCK:
         ou.RNG.setSeed(seed + 1)  # 0 would mean "no seed"
-        solved = setup.solve(ob.PlannerTerminationCondition(lambda: counter.checks > limit))
+        solved = setup.solve(ob.PlannerTerminationCondition(spent))
         if not solved or not setup.haveExactSolutionPath():
             return None
         states = setup.getSolutionPath().getStates()

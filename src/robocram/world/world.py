@@ -217,6 +217,19 @@ class World(WorldCore):
         """The collision shapes of ``obj`` at their current poses in map (a snapshot)."""
         return collision_shapes(self, self.object(obj))
 
+    def link_aabbs(self, obj: ObjectRef) -> dict[str, tuple[Vector3, Vector3]]:
+        """World-aligned bounds ``(lower, upper)`` [m] of every link of ``obj``, by link name.
+
+        One entry per body part (a frame folded into its host link is not repeated); a
+        single-shape body has one, under the object's name.
+        """
+        handle = self.object(obj)
+        names: dict[int, str] = {}
+        for name, index in handle.link_index.items():
+            names.setdefault(index, name)
+        names.setdefault(-1, handle.name)
+        return {name: visibility.link_aabb(self, handle, i) for i, name in sorted(names.items())}
+
     def collisions(
         self, obj: ObjectRef, ignore: Iterable[ObjectRef] = (), distance: float = 0.002
     ) -> list[WorldObject]:

@@ -1,0 +1,207 @@
+"""Is the robot, as it stands, free at a base pose? Fast 2.5-D checks confirmed exactly.
+
+The fast check (:class:`~robocram.motion.robot_footprint.RobotFootprint` against an
+:class:`~robocram.motion.obstacle_grid.ObstacleGrid`) costs microseconds per pose and is
+conservative: when it says free, the robot's and held objects' boxes touch nothing. Boxes
+are coarser than the shapes, so where it says "collides" near the start or the goal the
+exact PyBullet check decides (the robot put there, then back), and a goal that fits is not
+refused; away from them the fast answer stands. Both kinds of check are counted.
+
+Contacts the robot already has where it stands (a finger on a handle) are tolerated for
+its first :data:`ESCAPE` of travel, to get away; the floor and objects of type ``floor``
+may always be touched.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from robocram.motion.height_bins import HeightBins
+from robocram.motion.obstacle_grid import Box, ObstacleGrid
+from robocram.motion.robot_footprint import FloatArray, RobotFootprint
+from robocram.tf import Pose
+from robocram.tf import quaternion as quat
+from robocram.world import World
+
+CELL = 0.01  # [m] obstacle grid cells
+SPACING = 0.02  # [m] robot sample squares: more than the 1 cm a dense check moves
+CONTACT = 0.002  # [m] nearer than this counts as touching, as in World.collisions
+CHUNK = 128  # poses per batch of fast checks along a motion
+MARGIN = 0.5  # [m] room around the obstacles, start and goal for going around
+ESCAPE = 0.1  # [m] travel from the start during which its contacts are tolerated
+CONFIRM_NEAR = 0.3  # [m] travel from the start or goal within which exact checks decide
+
+
+@dataclass
+class BaseCollisionChecker:
+    """Checks base poses ``(x, y, yaw)`` (map) of ``robot`` in ``world``; counts its checks.
+
+    Use it as a context manager: on leaving, the robot is back at its start pose.
+    """
+
+    world: World
+    robot: str
+    start: Pose
+    carried: tuple[str, ...]
+    footprint: RobotFootprint
+    grid: ObstacleGrid
+    bounds: tuple[tuple[float, float], tuple[float, float]]  # [m] lower, upper x y to plan in
+    tolerated: frozenset[tuple[str, str]] = frozenset()
+    anchors: tuple[FloatArray, ...] = ()  # start and goal (x, y, unwrapped yaw)
+    confirm_everywhere: bool = True  # False while planning: exact checks near anchors only
+    fast_checks: int = 0
+    exact_checks: int = field(default=0)
+
+    @classmethod
+    def build(cls, world: World, robot: str, goal_xy: tuple[float, float]) -> BaseCollisionChecker:
+        """Rasterise the robot as it stands and the world around it and the goal."""
+        start = world.pose(robot)
+        carried = _carried(world, robot)
+        boxes = _boxes_in_base(world, robot, carried, start)
+        bins = HeightBins.up_to(start.position[2] + max(b[1][2] for b in boxes) + CONTACT)
+        footprint = RobotFootprint.build(boxes, start.position[2], bins, SPACING, CONTACT)
+        skip = {robot, *carried} | {o.name for o in world.objects("floor")}
+        obstacles = [box for o in world.objects() if o.name not in skip
+                     for box in world.link_aabbs(o).values()]  # fmt: skip
+        xs = [start.position[0], goal_xy[0], *(b[k][0] for b in obstacles for k in (0, 1))]
+        ys = [start.position[1], goal_xy[1], *(b[k][1] for b in obstacles for k in (0, 1))]
+        bounds = ((min(xs) - MARGIN, min(ys) - MARGIN), (max(xs) + MARGIN, max(ys) + MARGIN))
+        pad = footprint.reach + footprint.dilation + 2 * CELL
+        grid = ObstacleGrid.build(
+            obstacles,
+            (bounds[0][0] - pad, bounds[0][1] - pad),
+            (bounds[1][0] + pad, bounds[1][1] + pad),
+            CELL,
+            footprint.dilation,
+            bins,
+        )
+        checker = cls(world, robot, start, carried, footprint, grid, bounds)
+        checker.tolerated = frozenset(checker._contacts())
+        return checker
+
+    def __enter__(self) -> BaseCollisionChecker:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.world.set_pose(self.robot, self.start)
+
+    def fast_hits(self, poses: FloatArray, boundary: bool) -> np.ndarray:
+        """Per pose, whether the fast check finds a possible collision."""
+        self.fast_checks += len(poses)
+        fp = self.footprint
+        points = fp.boundary_points if boundary else fp.points
+        masks = fp.boundary_masks if boundary else fp.masks
+        cos, sin = np.cos(poses[:, 2:3]), np.sin(poses[:, 2:3])
+        x = poses[:, 0:1] + cos * points[:, 0] - sin * points[:, 1]
+        y = poses[:, 1:2] + sin * points[:, 0] + cos * points[:, 1]
+        cells = np.take(self.grid.masks.ravel(), self.grid.flat_indices(x, y))
+        return np.asarray(np.any(cells & masks, axis=1))
+
+    def pose_free(self, pose: FloatArray) -> bool:
+        """Whether the robot is free at ``pose`` (fast, then exact where it may collide)."""
+        if not self.fast_hits(pose[None, :], boundary=False)[0]:
+            return True
+        return self._cleared(pose)
+
+    def first_blocked(self, poses: FloatArray) -> int | None:
+        """Index of the first pose of a dense motion where the robot collides, or None.
+
+        The first pose and every pose after one the exact check had to clear get the full
+        fast check; the others only the boundary's.
+        """
+        full_next = True
+        for begin in range(0, len(poses), CHUNK):
+            chunk = poses[begin : begin + CHUNK]
+            edge = self.fast_hits(chunk, boundary=True)
+            for k, pose in enumerate(chunk):
+                hit = self.fast_hits(pose[None, :], boundary=False)[0] if full_next else edge[k]
+                full_next = False
+                if hit:
+                    if not self._cleared(pose):
+                        return begin + k
+                    full_next = True
+        return None
+
+    def _cleared(self, pose: FloatArray) -> bool:
+        """Whether the exact check clears a pose the fast check flagged.
+
+        While planning (``confirm_everywhere`` False) it is asked only near the start and
+        the goal (within :data:`CONFIRM_NEAR` of travel), where the robot must get close to
+        furniture; elsewhere a planned path keeps the fast check's few centimetres of extra
+        clearance, and planning stays fast. The direct motion is confirmed everywhere.
+        """
+        near = self.confirm_everywhere or any(
+            math.hypot(pose[0] - a[0], pose[1] - a[1]) + self.footprint.reach
+            * abs(_turn(pose[2] - a[2])) <= CONFIRM_NEAR
+            for a in self.anchors
+        )  # fmt: skip
+        return near and not self.blockers(pose)
+
+    def blockers(self, pose: FloatArray) -> list[str]:
+        """What the robot touches at ``pose`` by the exact check (``object/link`` names)."""
+        self.exact_checks += 1
+        x, y, yaw = (float(v) for v in pose)
+        self.world.set_pose(
+            self.robot, Pose((x, y, self.start.position[2]), quat.from_euler(0.0, 0.0, yaw))
+        )
+        x0, y0 = self.start.position[:2]
+        yaw0 = yaw_of(self.start)
+        travel = math.hypot(x - x0, y - y0) + self.footprint.reach * abs(_turn(yaw - yaw0))
+        tolerated = self.tolerated if travel <= ESCAPE else frozenset()
+        return sorted({other for pair in self._contacts() if pair not in tolerated
+                       for other in pair[1:]})  # fmt: skip
+
+    def _contacts(self) -> Iterator[tuple[str, str]]:
+        """``(part of the robot, object/link it touches)`` pairs where the robot is now."""
+        floors = [o.name for o in self.world.objects("floor")]
+        group = [self.robot, *self.carried]
+        for body in group:
+            ignore = floors + [g for g in group if g != body]
+            for link, other, other_link in self.world.link_pairs_in_contact(
+                body, ignore=ignore, distance=CONTACT
+            ):
+                name = other.name if other_link == other.name else f"{other.name}/{other_link}"
+                yield f"{body}/{link}", name
+
+
+def _carried(world: World, robot: str) -> tuple[str, ...]:
+    """Objects the robot holds, and what they hold, recursively."""
+    found: list[str] = []
+    frontier = [robot]
+    while frontier:
+        held = list(world.attachments(frontier.pop()))
+        found += held
+        frontier += held
+    return tuple(found)
+
+
+def _boxes_in_base(world: World, robot: str, carried: tuple[str, ...], start: Pose) -> list[Box]:
+    """Every link box of the robot and what it holds, in the base frame (robot at yaw 0)."""
+    x, y, z = start.position
+    world.set_pose(robot, Pose((x, y, z)))
+    try:
+        found = [box for body in (robot, *carried) for box in world.link_aabbs(body).values()]
+    finally:
+        world.set_pose(robot, start)
+    return [((lo[0] - x, lo[1] - y, lo[2] - z), (hi[0] - x, hi[1] - y, hi[2] - z))
+            for lo, hi in found]  # fmt: skip
+
+
+def yaw_of(pose: Pose) -> float:
+    """The heading [rad] of ``pose`` about the map's z axis."""
+    return float(quat.to_euler(pose.orientation)[2])
+
+
+def planar_steps(delta_xy: float, delta_yaw: float, reach: float) -> int:
+    """Checks needed so no point within ``reach`` moves > 1 cm, nor the heading > 0.02 rad."""
+    travel = delta_xy + reach * abs(delta_yaw)
+    return max(1, math.ceil(travel / 0.01), math.ceil(abs(delta_yaw) / 0.02))
+
+
+def _turn(angle: float) -> float:
+    """``angle`` [rad] as the shortest turn, in [-pi, pi)."""
+    return (angle + math.pi) % (2.0 * math.pi) - math.pi

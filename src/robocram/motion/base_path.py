@@ -1,0 +1,151 @@
+"""Going: a collision-free path of the base to a goal pose, timed as a trajectory.
+
+The robot goes as it stands: its arms where they are, what it holds riding along, at its
+height. First the direct motion (straight for a holonomic base, the shortest Reeds-Shepp
+curve for a car) is checked densely; only when it is blocked does OMPL plan around
+(:mod:`robocram.motion.ompl_base_planner`). A goal in collision is
+``NavigationPoseUnreachable``; a goal no path reaches within the budget is
+``NavigationPathBlocked``, naming what the direct motion runs into first and where.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from robocram.execution.failures import NavigationPathBlocked, NavigationPoseUnreachable
+from robocram.motion.base_collision import BaseCollisionChecker, yaw_of
+from robocram.motion.errors import MotionError
+from robocram.motion.joint_limits import joint_limits
+from robocram.motion.joint_trajectory import BASE_JOINTS, JointTrajectory
+from robocram.motion.ompl_base_planner import motion_poses, planned_waypoints
+from robocram.motion.time_parameterization import time_parameterize
+from robocram.tf import Pose
+from robocram.world import World
+
+DEFAULT_BUDGET = 20_000  # fast checks OMPL may spend planning (a quarter more for shortening)
+DEFAULT_TURNING_RADIUS = 0.5  # [m] of a base that is not holonomic
+
+
+@dataclass(frozen=True)
+class BasePath:
+    """Base poses ``(x, y, yaw)`` [m, m, rad] in map, straight between them, and their timing.
+
+    ``planner`` says how it was found: ``straight``, ``reeds_shepp`` (the direct curve of a
+    car), or the OMPL planner's name (``RRTConnect``, ``RRTConnect/ReedsShepp``). Headings
+    are continuous along the path (not wrapped), as the trajectory's ``yaw`` joint is.
+    """
+
+    robot: str
+    poses: tuple[tuple[float, float, float], ...]
+    planner: str
+    trajectory: JointTrajectory  # joints x, y, yaw; kind "base"
+    fast_checks: int
+    exact_checks: int
+
+
+def plan_base_path(
+    world: World,
+    robot: str,
+    goal: Pose,
+    *,
+    seed: int = 0,
+    budget: int = DEFAULT_BUDGET,
+    holonomic: bool | None = None,
+    turning_radius: float = DEFAULT_TURNING_RADIUS,
+    period: float = 0.05,
+) -> BasePath:
+    """A checked path of ``robot``'s base from where it stands to ``goal`` (map x, y, yaw).
+
+    Args:
+        world: The world; the robot is back at its start when this returns or raises.
+        robot: The robot's object name.
+        goal: Where the base should end; only x, y and the yaw count.
+        seed: Seeds OMPL when the direct motion is blocked: same seed, same path.
+        budget: Fast checks OMPL may spend (counted, never timed).
+        holonomic: Whether the base drives sideways; None: the description says.
+        turning_radius: [m] of a base that is not holonomic.
+        period: Sampling period [s] of the trajectory.
+
+    Raises:
+        NavigationPoseUnreachable: the robot would collide at ``goal`` (named).
+        NavigationPathBlocked: no path within the budget; names the direct motion's first
+            obstacle and how far along it is.
+        MotionError: a non-finite goal or a non-positive budget or turning radius.
+    """
+    car = holonomic is False or (holonomic is None and not world.robot(robot).description.holonomic)
+    _check_request(goal, budget, turning_radius)
+    radius = turning_radius if car else None
+    with BaseCollisionChecker.build(world, robot, goal.position[:2]) as checker:
+        start_yaw = yaw_of(checker.start)
+        start = np.array([*checker.start.position[:2], start_yaw])
+        end = np.array([goal.position[0], goal.position[1], yaw_of(goal)])
+        end[2] = start_yaw + _wrap(end[2] - start_yaw)
+        checker.anchors = (start, end)
+        fits = not checker.fast_hits(end[None, :], boundary=False)[0]
+        colliding = [] if fits else checker.blockers(end)
+        if colliding:
+            raise NavigationPoseUnreachable(
+                f"{robot} at {_shown(end)} would collide with {colliding}",
+                target=goal,
+                colliding=colliding,
+            )
+        direct = motion_poses(checker, start, end, radius)
+        blocked = checker.first_blocked(direct)
+        if blocked is None:
+            waypoints = list(direct) if car else [start, end]
+            planner = "reeds_shepp" if car else "straight"
+        else:
+            found = planned_waypoints(
+                checker, start, end, turning_radius=radius, seed=seed, budget=budget
+            )
+            if found is None:
+                names = checker.blockers(direct[blocked])
+                fraction = blocked / max(len(direct) - 1, 1)
+                raise NavigationPathBlocked(
+                    f"no path of {robot} to {_shown(end)} within {budget} checks; the "
+                    f"direct way runs into {names} {fraction:.0%} of the way",
+                    target=goal,
+                    colliding=names,
+                    path_fraction=fraction,
+                )
+            waypoints = found
+            planner = "RRTConnect/ReedsShepp" if car else "RRTConnect"
+            _recheck(checker, waypoints)
+        poses = tuple((float(p[0]), float(p[1]), float(p[2])) for p in waypoints)
+        desc = world.robot(robot).description
+        trajectory = time_parameterize(
+            robot, BASE_JOINTS, poses, joint_limits(desc, BASE_JOINTS), kind="base",
+            period=period,
+        )  # fmt: skip
+        return BasePath(
+            robot, poses, planner, trajectory, checker.fast_checks, checker.exact_checks
+        )
+
+
+def _recheck(checker: BaseCollisionChecker, waypoints: list[np.ndarray]) -> None:
+    """Check the planned path once more, densely and straight between its waypoints."""
+    for a, b in zip(waypoints[:-1], waypoints[1:], strict=True):
+        if checker.first_blocked(motion_poses(checker, a, b, None)) is not None:
+            raise MotionError(
+                f"the planned base path collides between {a.round(3)} and {b.round(3)}; "
+                "this is a bug of the base planner, please report it with the seed"
+            )
+
+
+def _wrap(angle: float) -> float:
+    return float((angle + np.pi) % (2.0 * np.pi) - np.pi)
+
+
+def _check_request(goal: Pose, budget: int, turning_radius: float) -> None:
+    if not all(np.isfinite(goal.position)) or not all(np.isfinite(goal.orientation)):
+        raise MotionError(f"base goal {goal} is not finite; give a pose in map")
+    if budget <= 0:
+        raise MotionError(f"planning budget must be a positive number of checks, got {budget}")
+    if not turning_radius > 0.0:
+        raise MotionError(f"turning radius must be positive [m], got {turning_radius}")
+
+
+def _shown(pose: np.ndarray) -> str:
+    return "({:.3f}, {:.3f}, {:.3f})".format(*(float(v) for v in pose))

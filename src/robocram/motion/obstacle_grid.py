@@ -1,0 +1,77 @@
+"""The world's obstacles seen from above: a grid of cells, each with its occupied heights.
+
+Every link of every obstacle is a world-aligned box (its AABB, conservative); a cell holds
+the height bits (:class:`~robocram.motion.height_bins.HeightBins`) of all boxes over it.
+The boxes are grown by ``dilation`` first, so that looking up one point per robot sample
+square (:mod:`robocram.motion.robot_footprint`) is still conservative: a square that
+touches a box has its centre inside the grown box, hence in a marked cell.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+
+from robocram.motion.height_bins import HeightBins
+
+Box = tuple[tuple[float, float, float], tuple[float, float, float]]  # (lower, upper) [m]
+IntArray = npt.NDArray[np.int64]
+
+
+@dataclass(frozen=True)
+class ObstacleGrid:
+    """Height masks per cell of ``cell`` [m], cell (0, 0) starting at ``origin`` (map)."""
+
+    origin: tuple[float, float]  # [m] map x, y of the grid's corner
+    cell: float  # [m]
+    masks: IntArray  # shape (nx, ny)
+
+    @classmethod
+    def build(
+        cls,
+        boxes: Sequence[Box],
+        lower: tuple[float, float],
+        upper: tuple[float, float],
+        cell: float,
+        dilation: float,
+        bins: HeightBins,
+    ) -> ObstacleGrid:
+        """Rasterise ``boxes`` grown by ``dilation`` [m] over the area ``lower``..``upper``."""
+        shape = (
+            int(math.ceil((upper[0] - lower[0]) / cell)) + 1,
+            int(math.ceil((upper[1] - lower[1]) / cell)) + 1,
+        )
+        masks = np.zeros(shape, dtype=np.int64)
+        for low, high in boxes:
+            bits = bins.mask(low[2], high[2])
+            if not bits:
+                continue
+            i0, j0 = cls._index(low[0] - dilation, low[1] - dilation, lower, cell, shape)
+            i1, j1 = cls._index(high[0] + dilation, high[1] + dilation, lower, cell, shape)
+            masks[i0 : i1 + 1, j0 : j1 + 1] |= bits
+        return cls(lower, cell, masks)
+
+    @staticmethod
+    def _index(
+        x: float, y: float, lower: tuple[float, float], cell: float, shape: tuple[int, int]
+    ) -> tuple[int, int]:
+        i = min(max(math.floor((x - lower[0]) / cell), 0), shape[0] - 1)
+        j = min(max(math.floor((y - lower[1]) / cell), 0), shape[1] - 1)
+        return i, j
+
+    def flat_indices(
+        self, x: npt.NDArray[np.float64], y: npt.NDArray[np.float64]
+    ) -> npt.NDArray[np.intp]:
+        """Indices into ``masks.ravel()`` of the cells holding points ``(x, y)`` (map).
+
+        Points off the grid look up its border cells, which hold nothing: every obstacle
+        lies well inside the grid.
+        """
+        nx, ny = self.masks.shape
+        i = np.clip(((x - self.origin[0]) / self.cell).astype(np.intp), 0, nx - 1)
+        j = np.clip(((y - self.origin[1]) / self.cell).astype(np.intp), 0, ny - 1)
+        return i * ny + j

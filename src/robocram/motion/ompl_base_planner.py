@@ -1,0 +1,134 @@
+"""Around obstacles: OMPL plans the base in SE(2) (RRTConnect), or as a Reeds-Shepp car.
+
+Every motion OMPL asks about, while planning and while shortening the path, is checked
+densely by the :class:`~robocram.motion.base_collision.BaseCollisionChecker` (a motion
+validator of ours, not OMPL's sparse one), so the path that comes out is checked densely.
+Planning and shortening stop on a counted budget of fast checks, never on the clock, and
+OMPL's random numbers are seeded right before the query; OMPL's generator is process-wide,
+so queries take turns (a lock).
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Callable
+
+import numpy as np
+from ompl import base as ob
+from ompl import geometric as og
+from ompl import util as ou
+
+from robocram.motion.base_collision import BaseCollisionChecker
+from robocram.motion.planar_motion import reeds_shepp_poses, straight_poses, wrapped
+from robocram.motion.robot_footprint import FloatArray
+
+_OMPL_TURNS = threading.Lock()  # OMPL's random generator is one per process
+SIMPLIFY_SHARE = 0.25  # of the budget, added for shortening the path
+
+
+class _DenseMotions(ob.MotionValidator):
+    """OMPL's question "is this motion free?", answered by our dense check."""
+
+    def __init__(self, si: ob.SpaceInformation, free: Callable[[object, object], bool]):
+        super().__init__(si)
+        self._free = free
+
+    def checkMotion(self, s1: object, s2: object) -> bool:  # noqa: N802 (OMPL's name)
+        return self._free(s1, s2)
+
+
+def motion_poses(
+    checker: BaseCollisionChecker,
+    start: FloatArray,
+    end: FloatArray,
+    turning_radius: float | None,
+    space: ob.StateSpace | None = None,
+) -> FloatArray:
+    """Dense poses of the base's motion ``start`` -> ``end`` (a car's if ``turning_radius``)."""
+    reach = checker.footprint.reach
+    if turning_radius is None:
+        return straight_poses(start, end, reach)
+    rs = space if space is not None else ob.ReedsSheppStateSpace(turning_radius)
+    return reeds_shepp_poses(rs, start, end, reach, turning_radius)
+
+
+def planned_waypoints(
+    checker: BaseCollisionChecker,
+    start: FloatArray,
+    goal: FloatArray,
+    *,
+    turning_radius: float | None,
+    seed: int,
+    budget: int,
+) -> list[FloatArray] | None:
+    """Waypoints of a free path (None within ``budget`` fast checks); straight between them.
+
+    For a car (``turning_radius`` given) the waypoints are the dense poses along its curves.
+    """
+    if turning_radius is None:
+        space: ob.StateSpace = ob.SE2StateSpace()
+    else:
+        space = ob.ReedsSheppStateSpace(turning_radius)
+    bounds = ob.RealVectorBounds(2)
+    for axis in (0, 1):
+        bounds.setLow(axis, checker.bounds[0][axis])
+        bounds.setHigh(axis, checker.bounds[1][axis])
+    space.setBounds(bounds)
+    setup = og.SimpleSetup(space)
+    setup.setStateValidityChecker(lambda s: checker.pose_free(_pose(s)))
+    info = setup.getSpaceInformation()
+
+    def free(s1: object, s2: object) -> bool:
+        poses = motion_poses(checker, _pose(s1), _pose(s2), turning_radius, space)
+        return checker.first_blocked(poses) is None
+
+    validator = _DenseMotions(info, free)
+    info.setMotionValidator(validator)
+    setup.setPlanner(og.RRTConnect(info))
+    ends = []
+    for pose in (start, goal):
+        state = space.allocState()
+        state.setX(float(pose[0]))
+        state.setY(float(pose[1]))
+        state.setYaw(wrapped(float(pose[2])))
+        ends.append(state)
+    setup.setStartAndGoalStates(ends[0], ends[1])
+    limit = checker.fast_checks + budget
+    checker.confirm_everywhere = False
+    try:
+        with _OMPL_TURNS:
+            ou.setLogLevel(ou.LOG_NONE)
+            ou.RNG.setSeed(seed + 1)  # OMPL ignores a seed of 0
+            setup.solve(ob.PlannerTerminationCondition(lambda: checker.fast_checks > limit))
+            if not setup.haveExactSolutionPath():
+                return None
+            extra = checker.fast_checks + int(SIMPLIFY_SHARE * budget)
+            setup.simplifySolution(
+                ob.PlannerTerminationCondition(lambda: checker.fast_checks > extra)
+            )
+            states = [_pose(s) for s in setup.getSolutionPath().getStates()]
+    finally:
+        checker.confirm_everywhere = True
+    return _unwrapped(checker, states, turning_radius, space)
+
+
+def _unwrapped(
+    checker: BaseCollisionChecker,
+    states: list[FloatArray],
+    turning_radius: float | None,
+    space: ob.StateSpace,
+) -> list[FloatArray]:
+    """The path's poses with continuous headings (a car's: dense along its curves)."""
+    out = [states[0]]
+    for state in states[1:]:
+        if turning_radius is None:
+            yaw = out[-1][2] + wrapped(state[2] - out[-1][2])
+            out.append(np.array([state[0], state[1], yaw]))
+        else:
+            dense = motion_poses(checker, out[-1], state, turning_radius, space)
+            out += list(dense[1:])
+    return out
+
+
+def _pose(state: object) -> FloatArray:
+    return np.array([state.getX(), state.getY(), state.getYaw()])  # type: ignore[attr-defined]

@@ -1,0 +1,142 @@
+"""One straight joint-space segment, timed jerk-limited by ruckig from rest to rest.
+
+Ruckig with phase synchronisation moves every joint through the same fraction of its
+distance at every instant, so the joints travel the straight line between the two
+waypoints. That is checked on the samples: a profile that strays more than
+:data:`STRAIGHT_TOLERANCE` (ruckig falls back to time synchronisation when phase
+synchronisation is infeasible) is replaced by a one-dimensional ruckig profile along the
+segment's length, straight by construction, under the tightest joint's limits.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+from ruckig import InputParameter, Result, Ruckig, Synchronization, Trajectory
+
+from robocram.motion.errors import MotionError
+from robocram.motion.joint_limits import JointLimits
+from robocram.motion.joint_trajectory import FloatArray
+
+STRAIGHT_TOLERANCE = 1e-6  # [rad | m] largest distance of a ruckig sample from the line
+CHECK_SAMPLES = 64  # samples per segment on which straightness is checked
+
+
+@dataclass(frozen=True)
+class StraightSegment:
+    """A timed straight move from ``start`` to ``end``, at rest at both ends."""
+
+    start: FloatArray
+    end: FloatArray
+    trajectory: Trajectory  # ruckig: multi-joint (phase-synchronised) or 1-D along the line
+    along_line: bool  # True: ``trajectory`` is 1-D, the distance travelled along the line
+
+    @property
+    def duration(self) -> float:
+        """Time from rest at ``start`` to rest at ``end`` [s]."""
+        return float(self.trajectory.duration)
+
+    def state(self, t: float) -> tuple[FloatArray, FloatArray, FloatArray]:
+        """Positions, velocities and accelerations at ``t`` [s] after the segment's start.
+
+        Positions are projected onto the segment, so they lie on it exactly.
+        """
+        delta = self.end - self.start
+        length = float(np.linalg.norm(delta))
+        direction = delta / length
+        pos, vel, acc = self.trajectory.at_time(min(max(t, 0.0), self.duration))
+        if self.along_line:
+            s, s_dot, s_ddot = float(pos[0]), float(vel[0]), float(acc[0])
+        else:
+            s = float(np.dot(np.asarray(pos) - self.start, direction))
+            s_dot = float(np.dot(vel, direction))
+            s_ddot = float(np.dot(acc, direction))
+        s = min(max(s, 0.0), length)
+        return self.start + direction * s, direction * s_dot, direction * s_ddot
+
+
+def straight_segment(
+    start: FloatArray, end: FloatArray, limits: Sequence[JointLimits]
+) -> StraightSegment:
+    """Time the straight move ``start`` -> ``end`` (distinct points) under ``limits``."""
+    synced = _ruckig(
+        start,
+        end,
+        [lim.velocity for lim in limits],
+        [lim.acceleration for lim in limits],
+        [lim.jerk for lim in limits],
+    )
+    segment = StraightSegment(start, end, synced, along_line=False)
+    if _deviation(segment) <= STRAIGHT_TOLERANCE:
+        return segment
+    return along_line_segment(start, end, limits)
+
+
+def along_line_segment(
+    start: FloatArray, end: FloatArray, limits: Sequence[JointLimits]
+) -> StraightSegment:
+    """Time the move as one coordinate, the distance along the line, under the joints' caps.
+
+    A joint moving a fraction ``|u_j|`` of the distance caps the line's velocity at
+    ``v_j / |u_j|`` (and likewise acceleration and jerk); the tightest joint wins.
+    """
+    delta = end - start
+    length = float(np.linalg.norm(delta))
+    share = np.abs(delta) / length
+    moving = share > 0.0
+
+    def cap(values: Sequence[float]) -> float:
+        return float(np.min(np.asarray(values, dtype=float)[moving] / share[moving]))
+
+    line = _ruckig(
+        np.zeros(1),
+        np.array([length]),
+        [cap([lim.velocity for lim in limits])],
+        [cap([lim.acceleration for lim in limits])],
+        [cap([lim.jerk for lim in limits])],
+    )
+    return StraightSegment(start, end, line, along_line=True)
+
+
+def _ruckig(
+    start: FloatArray,
+    end: FloatArray,
+    velocity: Sequence[float],
+    acceleration: Sequence[float],
+    jerk: Sequence[float],
+) -> Trajectory:
+    """Ruckig's offline, phase-synchronised, rest-to-rest profile."""
+    dofs = len(start)
+    params = InputParameter(dofs)
+    params.current_position = [float(v) for v in start]
+    params.target_position = [float(v) for v in end]
+    params.current_velocity = [0.0] * dofs
+    params.current_acceleration = [0.0] * dofs
+    params.target_velocity = [0.0] * dofs
+    params.target_acceleration = [0.0] * dofs
+    params.max_velocity = [float(v) for v in velocity]
+    params.max_acceleration = [float(v) for v in acceleration]
+    params.max_jerk = [float(v) for v in jerk]
+    params.synchronization = Synchronization.Phase
+    trajectory = Trajectory(dofs)
+    result = Ruckig(dofs).calculate(params, trajectory)
+    if result not in (Result.Working, Result.Finished):
+        raise MotionError(
+            f"ruckig could not time the segment {list(start)} -> {list(end)}: {result}; "
+            "check that the joint limits are positive and finite"
+        )
+    return trajectory
+
+
+def _deviation(segment: StraightSegment) -> float:
+    """Largest distance of the raw ruckig samples from the segment's line [rad | m]."""
+    delta = segment.end - segment.start
+    direction = delta / np.linalg.norm(delta)
+    worst = 0.0
+    for t in np.linspace(0.0, segment.duration, CHECK_SAMPLES):
+        offset = np.asarray(segment.trajectory.at_time(float(t))[0]) - segment.start
+        off_line = offset - direction * float(np.dot(offset, direction))
+        worst = max(worst, float(np.linalg.norm(off_line)))
+    return worst

@@ -1,0 +1,131 @@
+"""Base paths in the kitchen: straight when clear, around a box, never through a drawer."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator
+
+import numpy as np
+import pytest
+
+from robocram.execution.failures import NavigationPathBlocked, NavigationPoseUnreachable
+from robocram.motion.base_path import BasePath, plan_base_path
+from robocram.motion.planar_motion import straight_poses
+from robocram.scenes import kitchen_scene
+from robocram.tf import Pose
+from robocram.tf import quaternion as quat
+from robocram.world import World
+
+DRAWER = "drawer_unit_drawer_3"
+
+
+def _pose(x: float, y: float, yaw: float) -> Pose:
+    return Pose((x, y, 0.0), quat.from_euler(0.0, 0.0, yaw))
+
+
+@pytest.fixture(scope="module")
+def kitchen() -> Iterator[World]:
+    scene = kitchen_scene("pr2")
+    world = scene.world
+    for arm in world.robot("pr2").description.arms.values():
+        world.set_joint_states("pr2", dict(arm.parking))
+    yield world
+    world.close()
+
+
+@pytest.fixture
+def world(kitchen: World) -> Iterator[World]:
+    with kitchen.stored_state():
+        yield kitchen
+
+
+def _exactly_free(world: World, path: BasePath) -> list[tuple[float, float, float]]:
+    """Poses 1 cm apart along the path where the exact PyBullet check finds a collision."""
+    start = world.pose("pr2")
+    floors = [o.name for o in world.objects("floor")]
+    bad = []
+    try:
+        for a, b in zip(path.poses[:-1], path.poses[1:], strict=True):
+            for x, y, yaw in straight_poses(np.array(a), np.array(b), 1.0):
+                world.set_pose("pr2", _pose(x, y, yaw))
+                if world.collisions("pr2", ignore=floors):
+                    bad.append((x, y, yaw))
+    finally:
+        world.set_pose("pr2", start)
+    return bad
+
+
+def test_a_clear_drive_is_one_straight_segment(world: World) -> None:
+    start = world.pose("pr2")
+    path = plan_base_path(world, "pr2", _pose(0.3, 0.1, 0.0))
+    assert path.planner == "straight" and len(path.poses) == 2
+    assert path.poses[0] == pytest.approx((-0.8, 0.2, math.pi / 2))
+    assert path.poses[1] == pytest.approx((0.3, 0.1, 0.0))
+    assert path.trajectory.joint_names == ("x", "y", "yaw") and path.trajectory.kind == "base"
+    assert path.trajectory.end == pytest.approx({"x": 0.3, "y": 0.1, "yaw": 0.0}, abs=1e-9)
+    assert path.fast_checks > 100 and path.exact_checks == 0
+    assert world.pose("pr2") == start
+
+
+def test_a_box_in_the_way_is_driven_around(world: World) -> None:
+    world.add_box("crate", (0.5, 0.5, 0.6), (-0.2, 0.2, 0.3))
+    world.set_pose("pr2", _pose(-1.2, 0.2, 0.0))
+    goal = _pose(0.9, 0.2, 0.0)
+    path = plan_base_path(world, "pr2", goal, seed=3)
+    assert path.planner == "RRTConnect" and len(path.poses) >= 3
+    assert path.poses[-1][:2] == pytest.approx((0.9, 0.2))
+    assert _exactly_free(world, path) == []
+    again = plan_base_path(world, "pr2", goal, seed=3)
+    assert again.poses == path.poses and again.fast_checks == path.fast_checks
+
+
+def test_an_open_drawer_is_never_driven_through(world: World) -> None:
+    world.set_pose("pr2", _pose(-2.5, 1.05, 0.0))
+    goal = _pose(-0.5, 1.05, 0.0)
+    assert plan_base_path(world, "pr2", goal).planner == "straight"  # drawer shut: clear
+    world.set_joint_states("kitchen", {f"{DRAWER}_joint": 0.4})
+    try:
+        path = plan_base_path(world, "pr2", goal)
+    except NavigationPathBlocked as blocked:
+        assert f"kitchen/{DRAWER}" in (blocked.colliding or [])
+        assert 0.2 < (blocked.path_fraction or 0.0) < 0.6
+    else:
+        assert path.planner == "RRTConnect"
+        assert _exactly_free(world, path) == []
+
+
+def test_a_path_blocked_within_the_budget_names_the_drawer(world: World) -> None:
+    world.set_pose("pr2", _pose(-2.5, 1.05, 0.0))
+    world.set_joint_states("kitchen", {f"{DRAWER}_joint": 0.4})
+    with pytest.raises(NavigationPathBlocked) as raised:
+        plan_base_path(world, "pr2", _pose(-0.5, 1.05, 0.0), budget=50)
+    assert f"kitchen/{DRAWER}" in (raised.value.colliding or [])
+    assert raised.value.path_fraction == pytest.approx(0.33, abs=0.1)
+
+
+def test_a_goal_in_collision_is_unreachable(world: World) -> None:
+    with pytest.raises(NavigationPoseUnreachable) as raised:
+        plan_base_path(world, "pr2", _pose(-1.4, 1.9, math.pi / 2))
+    assert not isinstance(raised.value, NavigationPathBlocked)
+    assert any(name.startswith("kitchen/") for name in raised.value.colliding or [])
+
+
+def test_a_car_follows_reeds_shepp_curves(world: World) -> None:
+    radius = 0.5
+    path = plan_base_path(world, "pr2", _pose(0.4, -0.3, -math.pi / 2), holonomic=False,
+                          turning_radius=radius)  # fmt: skip
+    assert path.planner in ("reeds_shepp", "RRTConnect/ReedsShepp")
+    poses = np.array(path.poses)
+    step = np.diff(poses, axis=0)
+    travel = np.hypot(step[:, 0], step[:, 1])
+    heading = poses[:-1, 2] + 0.5 * step[:, 2]
+    forward = np.cos(heading) * step[:, 0] + np.sin(heading) * step[:, 1]
+    sideways = -np.sin(heading) * step[:, 0] + np.cos(heading) * step[:, 1]
+    cusp = np.zeros(len(step), dtype=bool)  # where it reverses, a step's chord is short
+    flips = np.nonzero(np.sign(forward[1:]) != np.sign(forward[:-1]))[0]
+    cusp[flips] = cusp[flips + 1] = True
+    assert np.all(np.abs(sideways[~cusp]) <= 1e-3 * travel[~cusp] + 1e-9)  # never sideways
+    assert np.all(np.abs(step[~cusp, 2]) <= travel[~cusp] / radius * 1.01 + 1e-9)
+    assert np.count_nonzero(np.abs(step[:, 2]) > 1e-9) > 10  # it does turn
+    assert poses[-1, :2] == pytest.approx((0.4, -0.3), abs=1e-6)
+    assert _exactly_free(world, path) == []
