@@ -17,7 +17,6 @@ from robocram.knowledge.errors import (
 )
 from robocram.knowledge.predicate import Need, Predicate, Source
 from robocram.knowledge.predicate_table import PREDICATE_TABLE, indicators_of, predicates_of
-from robocram.knowledge.reference_page import reference_page
 from robocram.knowledge.registration import register_predicates
 
 __all__ = [
@@ -39,7 +38,6 @@ __all__ = [
     "missing_in_facts",
     "missing_in_kb",
     "predicates_of",
-    "reference_page",
     "register_predicates",
     "unit",
 ]

@@ -24,9 +24,9 @@ def missing_in_facts(facts: Iterable[Term]) -> list[MissingFact]:
     robots: list[str] = []
     arms: list[tuple[str, str]] = []
     for fact in facts:
-        key = fact.args[:2] if len(fact.args) >= 2 else fact.args
-        stated.add((f"{fact.name}/{fact.arity}", key[:1]))
-        stated.add((f"{fact.name}/{fact.arity}", key))
+        names = tuple(str(a) for a in fact.args[:2] if isinstance(a, str))  # robot, arm
+        stated.add((f"{fact.name}/{fact.arity}", names[:1]))
+        stated.add((f"{fact.name}/{fact.arity}", names))
         if fact.name == "robot" and fact.arity == 1:
             robots.append(str(fact.args[0]))
         elif fact.name == ARM.name and fact.arity == ARM.arity:
