@@ -13,7 +13,7 @@ from robocram.knowledge.robot_predicates import (
     ROBOT_TOOL_FRAME,
     Arm,
     ArmFrame,
-    ArmJointStates,
+    ParkingPose,
 )
 from robocram.knowledge.world_predicates import LINK_POSE, LinkPose
 from robocram.logic import KnowledgeBase
@@ -42,7 +42,7 @@ def test_unbound_arguments_enumerate_in_the_kb_order(pr2_kb: KnowledgeBase) -> N
 
 def test_joint_states_become_pairs_of_name_and_float(pr2_kb: KnowledgeBase) -> None:
     row = ROBOT_ARMS_PARKING_JOINT_STATES.first(pr2_kb, robot="pr2", arm="right")
-    assert isinstance(row, ArmJointStates)
+    assert isinstance(row, ParkingPose)
     assert len(row.joint_states) == 7
     assert all(isinstance(j, str) and isinstance(v, float) for j, v in row.joint_states)
     assert dict(row.joint_states)["r_elbow_flex_joint"] == -2.12

@@ -61,8 +61,8 @@ _TYPE_TEXT: dict[Any, str] = {
 
 
 def to_prolog(value: Any) -> Any:
-    """The Prolog form of a row value: tuples become lists, the rest stays itself."""
-    if isinstance(value, tuple) and not isinstance(value, Pose | PoseStamped):
+    """The Prolog form of a row value: plain tuples become lists, the rest stays itself."""
+    if type(value) is tuple:  # a Term is a tuple too, and stays a term
         return make_list([to_prolog(v) for v in value])
     return value
 

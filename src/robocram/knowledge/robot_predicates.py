@@ -118,8 +118,17 @@ class GripperOpening:
 
 
 @dataclass(frozen=True)
-class ArmJointStates:
-    """A named configuration of an arm."""
+class ParkingPose:
+    """An arm's parking configuration; empty: the arm stays as it is."""
+
+    robot: str
+    arm: str
+    joint_states: JointStates = unit("rad | m")
+
+
+@dataclass(frozen=True)
+class CarryingPose:
+    """An arm's configuration to carry an object in."""
 
     robot: str
     arm: str
@@ -199,8 +208,8 @@ class RobotLinks:
 
 
 @dataclass(frozen=True)
-class RobotJointStates:
-    """A named configuration of joints of the robot as a whole."""
+class NeckParkingPose:
+    """The neck's parking configuration."""
 
     robot: str
     joint_states: JointStates = unit("rad | m")
@@ -278,14 +287,14 @@ GRIPPER_MAX_OPENING = Predicate(
 )
 ROBOT_ARMS_PARKING_JOINT_STATES = Predicate(
     "robot_arms_parking_joint_states",
-    ArmJointStates,
+    ParkingPose,
     _D,
     "the arm's parking configuration (empty: stays as it is)",
     Need.ARM,
 )
 ROBOT_ARMS_CARRYING_JOINT_STATES = Predicate(
     "robot_arms_carrying_joint_states",
-    ArmJointStates,
+    CarryingPose,
     _D,
     "the arm's configuration to carry an object in",
     Need.ARM,
@@ -293,7 +302,7 @@ ROBOT_ARMS_CARRYING_JOINT_STATES = Predicate(
 ROBOT_NECK_LINKS = Predicate("robot_neck_links", RobotLinks, _D, "the links of the neck")
 ROBOT_NECK_JOINTS = Predicate("robot_neck_joints", RobotJoints, _D, "the joints of the neck")
 ROBOT_NECK_PARKING_JOINT_STATES = Predicate(
-    "robot_neck_parking_joint_states", RobotJointStates, _D, "the neck's parking configuration"
+    "robot_neck_parking_joint_states", NeckParkingPose, _D, "the neck's parking configuration"
 )
 ROBOT_PAN_TILT_LINKS = Predicate(
     "robot_pan_tilt_links", PanTiltLinks, _D, "the links a pan-tilt head turns"

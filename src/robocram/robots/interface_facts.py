@@ -70,8 +70,8 @@ def _arm_facts(r: str, arm: ArmDescription, is_neck: bool) -> Iterator[Term]:
     if arm.gripper is not None and arm.gripper.max_opening is not None:
         yield rp.GRIPPER_MAX_OPENING.fact(rp.GripperOpening(r, a, arm.gripper.max_opening))
     parking, carrying = _states(arm.parking), _states(arm.carrying)
-    yield rp.ROBOT_ARMS_PARKING_JOINT_STATES.fact(rp.ArmJointStates(r, a, parking))
-    yield rp.ROBOT_ARMS_CARRYING_JOINT_STATES.fact(rp.ArmJointStates(r, a, carrying))
+    yield rp.ROBOT_ARMS_PARKING_JOINT_STATES.fact(rp.ParkingPose(r, a, parking))
+    yield rp.ROBOT_ARMS_CARRYING_JOINT_STATES.fact(rp.CarryingPose(r, a, carrying))
 
 
 def _pan_tilt(desc: RobotDescription) -> tuple[rp.PanTiltLinks, rp.PanTiltJoints] | None:
@@ -100,7 +100,7 @@ def _head_facts(desc: RobotDescription) -> Iterator[Term]:
         yield rp.ROBOT_NECK_JOINTS.fact(rp.RobotJoints(r, (joints.pan_joint, joints.tilt_joint)))
     if desc.neck_parking:
         states = _states(desc.neck_parking)
-        yield rp.ROBOT_NECK_PARKING_JOINT_STATES.fact(rp.RobotJointStates(r, states))
+        yield rp.ROBOT_NECK_PARKING_JOINT_STATES.fact(rp.NeckParkingPose(r, states))
 
 
 def _urdf_facts(r: str, model: RobotModel) -> Iterator[Term]:
