@@ -14,7 +14,7 @@ from robocram.designators import a
 from robocram.execution.environment import Environment
 from robocram.execution.perform import perform
 from robocram.execution.process_module import ProcessModule
-from robocram.execution.top_level import top_level
+from robocram.execution.top_level import run_top_level
 from robocram.turtlesim import TurtleWorld, turtle_environment
 
 TRIVIAL_FACTS = """
@@ -42,7 +42,7 @@ def run(label: str, env: Environment, make: Any, count: int) -> None:
 
     with env:
         started = time.perf_counter()
-        top_level(plan)
+        run_top_level(plan)
         total = time.perf_counter() - started
     print(f"{label:<28} {count:>6} performs  {total:8.3f} s  {total / count * 1e6:9.1f} us/perform")
 

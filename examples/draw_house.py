@@ -8,7 +8,7 @@ navigation process module executes by stepping the simulator.
 from __future__ import annotations
 
 from robocram.designators import an
-from robocram.execution import perform, run_top_level
+from robocram.execution import TopLevel, perform
 from robocram.turtlesim import TurtleWorld, turtle_environment
 
 
@@ -16,10 +16,11 @@ def main() -> None:
     """Draw the house, then print the strokes and the task tree."""
     world = TurtleWorld()
     with turtle_environment(world):
-        _, tree = run_top_level(
-            lambda: perform(an.action(type="drawing", shape="house", origin=(3, 2), size=4)),
-            name="draw-house",
+        drawing = TopLevel("draw-house")
+        drawing.run(
+            lambda: perform(an.action(type="drawing", shape="house", origin=(3, 2), size=4))
         )
+        tree = drawing.tree
     for i, line in enumerate(world.lines, 1):
         print(
             f"stroke {i}: ({line.start[0]:.2f}, {line.start[1]:.2f}) -> "

@@ -13,13 +13,14 @@ SRC = Path(__file__).resolve().parents[1] / "src" / "robocram"
 ALLOWED: dict[str, set[str]] = {
     "logic": set(),
     "tf": set(),
+    "knowledge": {"logic", "tf"},
     "designators": {"logic", "tf"},
-    "robots": {"logic", "tf"},
+    "robots": {"knowledge", "logic", "tf"},
     "execution": {"designators", "logic", "tf"},
-    "world": {"robots", "logic", "tf"},
+    "world": {"robots", "knowledge", "logic", "tf"},
     "kinematics": {"robots", "tf"},
     "scenes": {"world", "kinematics", "robots", "tf"},
-    "grasping": {"world", "kinematics", "robots", "logic", "tf"},
+    "grasping": {"world", "kinematics", "robots", "knowledge", "logic", "tf"},
     "costmaps": {"grasping", "world", "kinematics", "designators", "robots", "logic", "tf"},
     "motion": {"world", "kinematics", "execution", "robots", "logic", "tf"},
     "projection": {
@@ -35,7 +36,7 @@ ALLOWED: dict[str, set[str]] = {
         "tf",
     },
     "turtlesim": {"execution", "designators", "logic", "tf"},
-    "plans": {"execution", "designators", "logic", "tf"},
+    "plans": {"execution", "designators", "knowledge", "logic", "tf"},
     "traces": {"motion", "costmaps", "world", "execution", "designators", "robots", "logic", "tf"},
     "viewer": {
         "traces",

@@ -13,8 +13,7 @@ import time
 from pathlib import Path
 
 from robocram.designators import a, an
-from robocram.execution import perform
-from robocram.plans import install_actions
+from robocram.plans import perform
 from robocram.projection import looking_orientation, simulated_robot
 from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
@@ -37,7 +36,6 @@ def main(out_dir: Path = Path("out")) -> list[Path]:
     start = time.perf_counter()
     scene = kitchen_scene("pr2")
     world = scene.world
-    install_actions(world.kb)
     out_dir.mkdir(parents=True, exist_ok=True)
     pictures = [picture(world, out_dir / "demo_before.png")]
     with simulated_robot(world, scene.robot, name="kitchen-transport") as run:

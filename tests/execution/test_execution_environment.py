@@ -8,7 +8,7 @@ from typing import Any
 import pytest
 
 from robocram.designators import LocationResolver, a, bound_kb, current_location_resolver
-from robocram.execution import top_level
+from robocram.execution import run_top_level
 from robocram.execution.environment import Environment
 from robocram.execution.perform import perform
 from robocram.execution.process_module import ProcessModule
@@ -41,7 +41,7 @@ def test_entering_binds_everything_and_leaving_undoes_it() -> None:
         assert entered is env and current_kb() is env.kb
         assert current_location_resolver() is resolver and SPEED.get() == 2.5
         assert running_process_modules() == (pm,) and pm.running
-        result = top_level(lambda: perform(a.motion(type="echoing", text="hi")))
+        result = run_top_level(lambda: perform(a.motion(type="echoing", text="hi")))
     assert result == (Term("echo", ("hi",)), 2.5)
     assert bound_kb() is None and SPEED.get() == 1.0 and not pm.running
     assert running_process_modules() == ()
@@ -52,9 +52,9 @@ def test_the_same_designator_grounds_per_environment() -> None:
     calm = Environment("calm", [EchoPM()], FACTS)
     motion = a.motion(type="echoing", text="hi")
     with loud:
-        assert top_level(lambda: perform(motion))[0] == Term("shout", ("hi",))
+        assert run_top_level(lambda: perform(motion))[0] == Term("shout", ("hi",))
     with calm:
-        assert top_level(lambda: perform(motion))[0] == Term("echo", ("hi",))
+        assert run_top_level(lambda: perform(motion))[0] == Term("echo", ("hi",))
 
 
 def test_module_lookup_names_the_known_modules() -> None:

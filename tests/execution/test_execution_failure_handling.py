@@ -12,8 +12,8 @@ from robocram.execution import (
     failure_handled,
     par,
     retry,
+    run_top_level,
     sleep,
-    top_level,
     with_failure_handling,
 )
 from robocram.execution.failures import (
@@ -77,7 +77,7 @@ def test_next_solution_idiom_swaps_the_candidate_and_retries() -> None:
             target = solution
             retry()
 
-    assert top_level(
+    assert run_top_level(
         lambda: with_failure_handling(go, {NavigationPoseUnreachable: next_solution})
     ) == (
         3.0,
@@ -161,7 +161,7 @@ def test_handlers_do_not_catch_stopping() -> None:
         with_failure_handling(lambda: sleep(5.0), {Exception: lambda f, c: handled.append(f)})
 
     with pytest.raises(NavigationPoseUnreachable):
-        top_level(lambda: par(guarded_sleep, lambda: (sleep(0.01), retry_free_fail())))
+        run_top_level(lambda: par(guarded_sleep, lambda: (sleep(0.01), retry_free_fail())))
     assert handled == []
 
 

@@ -16,6 +16,7 @@ from robocram.execution import (
     fl_not,
     fl_or,
     pursue,
+    run_top_level,
     sleep,
     top_level,
     whenever,
@@ -142,7 +143,7 @@ def test_whenever_runs_on_each_true_update_until_stopped() -> None:
 def test_fluent_waits_are_stop_points() -> None:
     never = Fluent(False, name="never")
     started = time.monotonic()
-    result = top_level(lambda: pursue(lambda: never.wait_for(), lambda: after(0.02, "done")))
+    result = run_top_level(lambda: pursue(lambda: never.wait_for(), lambda: after(0.02, "done")))
     assert result == "done"
     assert time.monotonic() - started < 1.0
 

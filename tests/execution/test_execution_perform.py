@@ -8,7 +8,7 @@ from typing import Any
 import pytest
 
 from robocram.designators import a, an, install_common_motions
-from robocram.execution import PlanFailure, par, pursue, sleep, top_level
+from robocram.execution import PlanFailure, TopLevel, par, pursue, sleep
 from robocram.execution.failures import (
     DesignatorFailure,
     DesignatorReferenceFailure,
@@ -72,14 +72,15 @@ def torso(angle: float) -> Any:
 def test_motion_goes_to_the_matching_running_module(kb: KnowledgeBase) -> None:
     pm = TorsoPM()
     with using_kb(kb), process_modules_running(pm):
-        value, tree = run_top_level(lambda: perform(torso(0.2)))
+        tl = TopLevel("top-level")
+        value, tree = tl.run(lambda: perform(torso(0.2))), tl.tree
     assert value == 0.2 and pm.commands == [Term("move_torso", (0.2,))]
     assert "perform moving-torso" in tree.render()
 
 
 def test_no_running_module_is_a_typed_failure_naming_the_designator(kb: KnowledgeBase) -> None:
     with using_kb(kb), pytest.raises(NoMatchingProcessModule) as caught:
-        top_level(lambda: perform(torso(0.1)))
+        run_top_level(lambda: perform(torso(0.1)))
     assert "(a motion (type moving-torso) (joint_angle 0.1))" in str(caught.value)
     assert caught.value.running == []
 
@@ -87,10 +88,10 @@ def test_no_running_module_is_a_typed_failure_naming_the_designator(kb: Knowledg
 def test_first_failure_tries_the_next_module(kb: KnowledgeBase) -> None:
     main, spare = TorsoPM(), SpareTorsoPM()
     with using_kb(kb), process_modules_running(main, spare):
-        assert top_level(lambda: perform(torso(0.5))) == 0.5
+        assert run_top_level(lambda: perform(torso(0.5))) == 0.5
         assert spare.commands == [Term("move_torso", (0.5,))] and main.commands == []
         with pytest.raises(TorsoGoalNotReached) as caught:
-            top_level(lambda: perform(torso(2.0)))
+            run_top_level(lambda: perform(torso(2.0)))
     assert caught.value.reached == 0.3  # the first module's failure, named
     assert caught.value.context["process_module"] == "torso"
 
@@ -100,12 +101,12 @@ def test_ungroundable_designator_is_a_reference_failure(kb: KnowledgeBase) -> No
         using_kb(kb),
         pytest.raises(DesignatorReferenceFailure, match="types with motion_grounding"),
     ):
-        top_level(lambda: perform(a.motion(type="moving-torso", angle=0.1)))
+        run_top_level(lambda: perform(a.motion(type="moving-torso", angle=0.1)))
 
 
 def test_perform_refuses_locations_and_needs_a_top_level(kb: KnowledgeBase) -> None:
     with using_kb(kb), pytest.raises(DesignatorFailure, match="motion or action designators"):
-        top_level(lambda: perform(a.location(pose=(0, 0, 0))))  # type: ignore[arg-type]
+        run_top_level(lambda: perform(a.location(pose=(0, 0, 0))))  # type: ignore[arg-type]
     with using_kb(kb), pytest.raises(NotInTopLevel):
         perform(torso(0.1))
 
@@ -122,7 +123,8 @@ def test_action_runs_its_registered_plan(kb: KnowledgeBase) -> None:
     )
     pm = TorsoPM()
     with using_kb(kb), process_modules_running(pm):
-        value, tree = run_top_level(lambda: perform(an.action(type="lifting", height=0.25)))
+        tl = TopLevel("top-level")
+        value, tree = tl.run(lambda: perform(an.action(type="lifting", height=0.25))), tl.tree
     assert value == [0.1, 0.25]
     assert tree.render().count("perform moving-torso") == 2
 
@@ -131,14 +133,14 @@ def test_action_grounded_to_an_unregistered_plan_says_so(kb: KnowledgeBase) -> N
     register_plan(kb, "known", lambda: None)
     kb.consult("action_grounding(D, juggle(3)) :- desig_prop(D, type, juggling).", group="j")
     with using_kb(kb), pytest.raises(DesignatorReferenceFailure, match="registered: \\['known'\\]"):
-        top_level(lambda: perform(an.action(type="juggling")))
+        run_top_level(lambda: perform(an.action(type="juggling")))
 
 
 def test_many_parallel_performs_none_lost_none_doubled(kb: KnowledgeBase) -> None:
     pm = TorsoPM()
     angles = [i / 1000 for i in range(40)]
     with using_kb(kb), process_modules_running(pm):
-        values = top_level(lambda: par(*[(lambda x=x: perform(torso(x))) for x in angles]))
+        values = run_top_level(lambda: par(*[(lambda x=x: perform(torso(x))) for x in angles]))
     assert values == angles
     assert sorted(c.args[0] for c in pm.commands) == angles and pm.executed == 40
 
@@ -146,7 +148,7 @@ def test_many_parallel_performs_none_lost_none_doubled(kb: KnowledgeBase) -> Non
 def test_cancelled_performs_leave_nothing_running(kb: KnowledgeBase) -> None:
     pm = TorsoPM(hold=5.0)
     with using_kb(kb), process_modules_running(pm):
-        top_level(
+        run_top_level(
             lambda: pursue(
                 lambda: sleep(0.05),
                 lambda: perform(torso(0.1)),
@@ -172,5 +174,5 @@ def test_process_modules_are_shared_by_nested_blocks(kb: KnowledgeBase) -> None:
 def test_failures_are_plan_failures_for_handlers(kb: KnowledgeBase) -> None:
     var: contextvars.ContextVar[int] = contextvars.ContextVar("unused", default=0)
     with using_kb(kb), process_modules_running(TorsoPM()), pytest.raises(PlanFailure):
-        top_level(lambda: perform(torso(0.9)))
+        run_top_level(lambda: perform(torso(0.9)))
     assert var.get() == 0

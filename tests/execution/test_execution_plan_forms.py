@@ -14,6 +14,7 @@ from robocram.execution import (
     PlanFailure,
     TaskStatus,
     TaskStopped,
+    TopLevel,
     current_task,
     par,
     partial_order,
@@ -58,9 +59,11 @@ def fail_after(seconds: float, failure: PlanFailure) -> None:
 
 def test_seq_returns_last_value_and_records_each_step() -> None:
     order: list[str] = []
-    result, tree = run_top_level(
+    tl = TopLevel("top-level")
+    result = tl.run(
         lambda: seq(("a", lambda: order.append("a") or 1), ("b", lambda: order.append("b") or 2))
     )
+    tree = tl.tree
     assert result == 2
     assert order == ["a", "b"]
     seq_node = tree.find("top-level/seq")
@@ -72,13 +75,15 @@ def test_seq_stops_at_first_failure() -> None:
     ran: list[str] = []
     failure = TorsoGoalNotReached(goal=0.5, reached=0.3)
     with pytest.raises(TorsoGoalNotReached) as caught:
-        top_level(lambda: seq(lambda: ran.append("a"), lambda: fail_after(0, failure), ran.clear))
+        run_top_level(
+            lambda: seq(lambda: ran.append("a"), lambda: fail_after(0, failure), ran.clear)
+        )
     assert caught.value is failure
     assert ran == ["a"]
 
 
 def test_par_returns_all_results_in_step_order() -> None:
-    result = top_level(
+    result = run_top_level(
         lambda: par(lambda: after(0.03, "slow"), lambda: after(0.01, "mid"), lambda: "fast")
     )
     assert result == ["slow", "mid", "fast"]
@@ -108,7 +113,9 @@ def test_par_first_failure_stops_the_others_and_is_raised() -> None:
 
 def test_par_with_many_children_loses_no_result() -> None:
     n = 150
-    result = top_level(lambda: par(*[(f"c{i}", lambda i=i: after(0.001, i * i)) for i in range(n)]))
+    result = run_top_level(
+        lambda: par(*[(f"c{i}", lambda i=i: after(0.001, i * i)) for i in range(n)])
+    )
     assert result == [i * i for i in range(n)]
 
 
@@ -124,7 +131,7 @@ def test_pursue_returns_winner_and_stops_losers() -> None:
 def test_pursue_raises_when_the_first_finisher_fails() -> None:
     failure = TorsoGoalNotReached(goal=0.2)
     with pytest.raises(TorsoGoalNotReached):
-        top_level(lambda: pursue(lambda: fail_after(0.01, failure), lambda: sleep(5.0)))
+        run_top_level(lambda: pursue(lambda: fail_after(0.01, failure), lambda: sleep(5.0)))
 
 
 def test_try_in_order_returns_first_success_and_skips_the_rest() -> None:
@@ -136,7 +143,7 @@ def test_try_in_order_returns_first_success_and_skips_the_rest() -> None:
             raise NavigationPoseUnreachable(target=i)
         return i * 10
 
-    result = top_level(
+    result = run_top_level(
         lambda: try_in_order(
             lambda: attempt(1, False), lambda: attempt(2, True), lambda: attempt(3, True)
         )
@@ -151,16 +158,16 @@ def test_try_in_order_all_failing_raises_composite_with_every_failure() -> None:
         PerceptionObjectNotFound(object_designator="x"),
     ]
     with pytest.raises(CompositeFailure) as caught:
-        top_level(lambda: try_in_order(*[lambda f=f: fail_after(0, f) for f in failures]))
+        run_top_level(lambda: try_in_order(*[lambda f=f: fail_after(0, f) for f in failures]))
     assert caught.value.failures == failures
     assert caught.value.form == "try_in_order"
 
 
 def test_try_forms_let_bugs_through_at_once() -> None:
     with pytest.raises(ZeroDivisionError):
-        top_level(lambda: try_in_order(lambda: 1 / 0, lambda: 1))
+        run_top_level(lambda: try_in_order(lambda: 1 / 0, lambda: 1))
     with pytest.raises(ZeroDivisionError):
-        top_level(lambda: try_all(lambda: 1 / 0, lambda: sleep(5.0)))
+        run_top_level(lambda: try_all(lambda: 1 / 0, lambda: sleep(5.0)))
 
 
 def test_try_all_first_success_wins_failures_ignored() -> None:
@@ -180,7 +187,7 @@ def test_try_all_first_success_wins_failures_ignored() -> None:
 def test_try_all_all_failing_raises_composite_in_step_order() -> None:
     a, b = TorsoGoalNotReached(goal=1.0), NavigationPoseUnreachable(target=2)
     with pytest.raises(CompositeFailure) as caught:
-        top_level(lambda: try_all(lambda: fail_after(0.02, a), lambda: fail_after(0, b)))
+        run_top_level(lambda: try_all(lambda: fail_after(0.02, a), lambda: fail_after(0, b)))
     assert caught.value.failures == [a, b]
 
 
@@ -198,7 +205,7 @@ def test_partial_order_respects_orderings() -> None:
 
     steps = {n: (lambda n=n: step(n, 0.01)) for n in ["grasp", "open", "look", "lift"]}
     orderings = [("open", "grasp"), ("look", "grasp"), ("grasp", "lift")]
-    result = top_level(lambda: partial_order(steps, orderings))
+    result = run_top_level(lambda: partial_order(steps, orderings))
     assert result == {"grasp": "GRASP", "open": "OPEN", "look": "LOOK", "lift": "LIFT"}
     at = {(n, what): t for n, what, t in log}
     for before, after in orderings:
@@ -218,9 +225,11 @@ def test_partial_order_failure_evaporates_waiting_steps() -> None:
 
 def test_partial_order_rejects_unknown_steps_and_cycles() -> None:
     with pytest.raises(ValueError, match="did you mean 'grasp'"):
-        top_level(lambda: partial_order({"grasp": lambda: 1}, [("grap", "grasp")]))
+        run_top_level(lambda: partial_order({"grasp": lambda: 1}, [("grap", "grasp")]))
     with pytest.raises(ValueError, match="cycle"):
-        top_level(lambda: partial_order({"a": lambda: 1, "b": lambda: 2}, [("a", "b"), ("b", "a")]))
+        run_top_level(
+            lambda: partial_order({"a": lambda: 1, "b": lambda: 2}, [("a", "b"), ("b", "a")])
+        )
 
 
 def test_tags_let_a_sibling_suspend_and_resume_a_task() -> None:
@@ -263,7 +272,7 @@ def test_tagged_unknown_name_suggests_the_close_one() -> None:
         tagged("wroker")
 
     with pytest.raises(LookupError, match="did you mean 'worker'"):
-        top_level(lambda: with_tags(worker=lambda: sleep(0.05), controller=controller))
+        run_top_level(lambda: with_tags(worker=lambda: sleep(0.05), controller=controller))
 
 
 @pytest.mark.parametrize("form", [seq, par, pursue, try_all, try_in_order])
@@ -274,11 +283,11 @@ def test_plan_forms_outside_top_level_raise(form: object) -> None:
 
 def test_non_callable_step_is_named() -> None:
     with pytest.raises(TypeError, match="par step 1 is 42"):
-        top_level(lambda: par(lambda: 1, 42))  # type: ignore[arg-type]
+        run_top_level(lambda: par(lambda: 1, 42))  # type: ignore[arg-type]
 
 
 def test_children_see_their_own_task() -> None:
-    paths = top_level(
+    paths = run_top_level(
         lambda: par(("x", lambda: current_task().path), ("y", lambda: current_task().path)),  # type: ignore[union-attr]
         name="plan",
     )

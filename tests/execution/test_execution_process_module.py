@@ -8,7 +8,7 @@ from typing import Any
 
 import pytest
 
-from robocram.execution import PlanFailure, pursue, sleep, top_level
+from robocram.execution import PlanFailure, pursue, run_top_level, sleep
 from robocram.execution.failures import (
     NavigationGoalNotReached,
     ProcessModuleFailure,
@@ -164,7 +164,7 @@ def test_cancelled_callers_leave_nothing_running() -> None:
         return pursue(lambda: sleep(0.1), lambda: pm.call("slow"), lambda: pm.call("queued"))
 
     started = time.monotonic()
-    top_level(plan)
+    run_top_level(plan)
     assert time.monotonic() - started < 2.0
     assert not pm.busy and pm.waiting == 0 and pm.log == []
     pm.stop(timeout=1.0)

@@ -1,9 +1,13 @@
-"""Top levels in their three forms, sub tasks, and the task tree's text and JSON."""
+"""Top levels (decorate, run, a block), sub tasks, and the task tree's text and JSON."""
 
 from __future__ import annotations
 
+import importlib
 import json
+import sys
 import threading
+from collections.abc import Callable
+from pathlib import Path
 
 import pytest
 
@@ -25,8 +29,8 @@ from robocram.execution.failures import TorsoGoalNotReached
 
 
 def test_function_form_returns_the_value_and_binds_the_root() -> None:
-    assert top_level(lambda a, b: a + b, 2, 3) == 5
-    assert top_level(lambda: current_task().path, name="demo") == "demo"  # type: ignore[union-attr]
+    assert run_top_level(lambda a, b: a + b, 2, 3) == 5
+    assert run_top_level(lambda: current_task().path, name="demo") == "demo"  # type: ignore[union-attr]
     assert current_task() is None
 
 
@@ -52,8 +56,9 @@ def test_with_form_records_failure_and_re_raises() -> None:
     assert current_task() is None
 
 
-def test_run_top_level_returns_value_and_tree() -> None:
-    value, tree = run_top_level(lambda: par(lambda: 1, lambda: 2), name="both")
+def test_a_top_level_run_keeps_value_and_tree() -> None:
+    tl = TopLevel("both")
+    value, tree = tl.run(lambda: par(lambda: 1, lambda: 2)), tl.tree
     assert value == [1, 2]
     assert [t.path for t in tree.tasks()] == [
         "both",
@@ -65,9 +70,10 @@ def test_run_top_level_returns_value_and_tree() -> None:
 
 def test_nested_top_level_becomes_a_child_task() -> None:
     def outer() -> int:
-        return top_level(lambda: 7, name="inner") + 1
+        return run_top_level(lambda: 7, name="inner") + 1
 
-    value, tree = run_top_level(outer, name="outer")
+    tl = TopLevel("outer")
+    value, tree = tl.run(outer), tl.tree
     assert value == 8
     assert tree.find("outer/inner").result == 7
 
@@ -93,7 +99,9 @@ def test_sub_task_and_checkpoint_outside_a_top_level() -> None:
 
 
 def test_duplicate_sibling_names_get_numbered_paths() -> None:
-    _, tree = run_top_level(lambda: seq(("move", lambda: 1), ("move", lambda: 2)), name="p")
+    tl = TopLevel("p")
+    tl.run(lambda: seq(("move", lambda: 1), ("move", lambda: 2)))
+    tree = tl.tree
     assert [c.path for c in tree.find("p/seq").children] == ["p/seq/move", "p/seq/move#2"]
 
 
@@ -120,7 +128,9 @@ def test_render_shows_statuses_durations_values_and_failures() -> None:
 
 
 def test_to_json_round_trips_through_json() -> None:
-    _, tree = run_top_level(lambda: seq(tag("nav", lambda: "there")), name="plan")
+    tl = TopLevel("plan")
+    tl.run(lambda: seq(tag("nav", lambda: "there")))
+    tree = tl.tree
     data = json.loads(json.dumps(tree.to_json()))
     assert data["name"] == "plan" and data["status"] == "succeeded"
     nav = data["children"][0]["children"][0]["children"][0]
@@ -146,7 +156,7 @@ def test_no_thread_outlives_a_top_level() -> None:
         par(*[lambda: sleep(0.2) for _ in range(20)], lambda: (sleep(0.01), 1 / 0))
 
     with pytest.raises(ZeroDivisionError):
-        top_level(plan)
+        run_top_level(plan)
     assert threading.active_count() == before
 
 
@@ -163,10 +173,54 @@ def test_a_bare_top_level_decorator_makes_each_call_a_top_level_run() -> None:
     assert calls == [3, 4]
 
 
-def test_top_level_of_an_existing_function_still_runs_it_at_once() -> None:
+def test_a_call_that_could_decorate_or_run_is_a_type_error_naming_both() -> None:
     def plan() -> int:
         return 5
 
-    assert top_level(plan) == 5
-    one_liner = top_level(lambda: 6)
-    assert one_liner == 6
+    for call in (lambda: top_level(plan), lambda: top_level(lambda: 6), lambda: top_level(plan, 1)):
+        with pytest.raises(TypeError, match=r"@top_level.*run_top_level\(plan, \*args\)"):
+            call()
+    assert run_top_level(plan) == 5
+
+
+def test_top_level_from_another_file_on_the_plan_def_line_does_not_decorate(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The old rule took a call from the line of ``plan``'s ``def`` for a decorator."""
+    (tmp_path / "tl_regression_plans.py").write_text(
+        '"""Plans."""\n\n\ndef plan(x=1):\n    return 40 + x\n', encoding="utf-8"
+    )
+    (tmp_path / "tl_regression_caller.py").write_text(
+        "from robocram.execution import run_top_level, top_level\n"
+        "import tl_regression_plans as plans\n"
+        "\n"
+        "def wrap(): return top_level(plans.plan)\n"  # line 4, as plan's def
+        "def run(): return run_top_level(plans.plan, 2)\n",
+        encoding="utf-8",
+    )
+    monkeypatch.syspath_prepend(str(tmp_path))
+    caller = importlib.import_module("tl_regression_caller")
+    plans = importlib.import_module("tl_regression_plans")
+    assert plans.plan.__code__.co_firstlineno == 4
+    with pytest.raises(TypeError, match="top_level\\(plan\\) could decorate or run"):
+        caller.wrap()
+    assert caller.run() == 42
+    for name in ("tl_regression_caller", "tl_regression_plans"):
+        monkeypatch.delitem(sys.modules, name)
+
+
+def test_a_method_and_a_nested_plan_decorate_too() -> None:
+    class Robot:
+        @top_level
+        def plan(self) -> str:
+            return current_task().path  # type: ignore[union-attr,return-value]
+
+    def make() -> Callable[[], str]:
+        @top_level(name="made")
+        def plan() -> str:
+            return current_task().path  # type: ignore[union-attr,return-value]
+
+        return plan
+
+    assert Robot().plan() == "plan"
+    assert make()() == "made"

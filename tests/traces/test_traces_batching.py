@@ -9,7 +9,7 @@ from sqlalchemy import select
 
 from robocram.designators import a
 from robocram.execution import Task, TaskListener, TaskStatus, listening, par, perform
-from robocram.execution import top_level as run_top
+from robocram.execution import run_top_level as run_top
 from robocram.projection import simulated_robot
 from robocram.scenes import tabletop_scene
 from robocram.tf import PoseStamped

@@ -9,7 +9,7 @@ from typing import Any
 import pytest
 
 from robocram.designators import a, an
-from robocram.execution import PlanFailure, par, pursue, seq, top_level
+from robocram.execution import PlanFailure, TopLevel, par, pursue, seq
 from robocram.execution.failures import DesignatorReferenceFailure
 from robocram.execution.perform import perform
 from robocram.execution.top_level import run_top_level
@@ -28,14 +28,14 @@ from robocram.turtlesim import (
 def test_driving_motion_moves_by_speed_and_angle() -> None:
     world = TurtleWorld(start=TurtlePose(3.0, 3.0, 0.0))
     with turtle_environment(world):
-        pose = top_level(lambda: perform(a.motion(type="driving", speed=2, angle=0)))
+        pose = run_top_level(lambda: perform(a.motion(type="driving", speed=2, angle=0)))
     assert pose.x == pytest.approx(5.0) and pose.y == pytest.approx(3.0)
 
 
 def test_moving_motion_ends_within_a_tenth_of_its_goal() -> None:
     world = TurtleWorld()
     with turtle_environment(world):
-        pose = top_level(lambda: perform(a.motion(type="moving", goal=(5, 5, 0))))
+        pose = run_top_level(lambda: perform(a.motion(type="moving", goal=(5, 5, 0))))
     assert pose.distance_to(5, 5) < 0.1 and world.pose == pose
 
 
@@ -44,7 +44,7 @@ def test_parallel_performs_on_one_module_serialise() -> None:
     env = turtle_environment(world)
     goals = [(2.0 + i % 7, 1.0 + i // 7) for i in range(16)]
     with env:
-        poses = top_level(
+        poses = run_top_level(
             lambda: par(*[(lambda g=g: perform(a.motion(type="moving", goal=g))) for g in goals])
         )
     nav = env.module("turtle_navigation")
@@ -62,7 +62,7 @@ def test_location_designator_of_a_grid_cell_gives_points_in_that_cell() -> None:
         for _ in range(20):
             points.append(current.reference())
             current = current.next_solution()
-        pose = top_level(lambda: perform(a.motion(type="moving", goal=loc)))
+        pose = run_top_level(lambda: perform(a.motion(type="moving", goal=loc)))
     assert len(set(points)) == 20
     assert all(11 * 2 / 3 <= x <= 11 and 11 * 2 / 3 <= y <= 11 for x, y, _ in points)
     assert pose.distance_to(*points[0][:2]) < 0.1
@@ -71,7 +71,9 @@ def test_location_designator_of_a_grid_cell_gives_points_in_that_cell() -> None:
 def test_drawing_a_house_is_a_sequence_of_navigation_actions() -> None:
     world = TurtleWorld()
     with turtle_environment(world):
-        _, tree = run_top_level(lambda: perform(an.action(type="drawing", shape="house")))
+        drawing = TopLevel("top-level")
+        drawing.run(lambda: perform(an.action(type="drawing", shape="house")))
+        tree = drawing.tree
     corners = house_corners((2, 2), 4)
     lines = world.lines
     assert len(lines) == 8
@@ -89,9 +91,9 @@ def test_same_plan_runs_unchanged_in_a_noisy_logging_environment() -> None:
         return perform(an.action(type="drawing", shape="house", origin=(1, 1), size=3))
 
     with turtle_environment(exact):
-        top_level(plan)
+        run_top_level(plan)
     with noisy_turtle_environment(noisy, sigma=0.2, seed=7, log=log.append) as env:
-        top_level(plan)
+        run_top_level(plan)
         assert env.module("noisy_turtle_navigation").executed == 9
     assert len(log) == 9 and log[0].startswith("go_to (1.00, 1.00)")
     errors = [math.dist(x.end, y.end) for x, y in zip(exact.lines, noisy.lines, strict=True)]
@@ -114,7 +116,7 @@ def test_pursue_out_of_bounds_then_recover_by_clamping_the_goal() -> None:
         return perform(a.motion(type="moving", goal=clamped))  # type: ignore[no-any-return]
 
     with env:
-        pose = top_level(plan)
+        pose = run_top_level(plan)
         nav = env.module("turtle_navigation")
         assert not nav.busy and nav.waiting == 0
     assert pose.distance_to(10.5, 5.5) < 0.1 and not outside.get()
@@ -123,7 +125,7 @@ def test_pursue_out_of_bounds_then_recover_by_clamping_the_goal() -> None:
 
 def test_unknown_motion_type_fails_with_the_known_types() -> None:
     with turtle_environment(TurtleWorld()), pytest.raises(DesignatorReferenceFailure) as caught:
-        top_level(lambda: perform(a.motion(type="flying", height=3)))
+        run_top_level(lambda: perform(a.motion(type="flying", height=3)))
     assert "(a motion (type flying) (height 3))" in str(caught.value)
     assert "'driving'" in str(caught.value) and "'moving'" in str(caught.value)
 
@@ -140,9 +142,9 @@ def test_a_robot_without_a_body_says_and_listens() -> None:
 
     threading.Timer(0.05, voice.hear, args=("house",)).start()  # type: ignore[attr-defined]
     with env:
-        answer = top_level(dialogue)
+        answer = run_top_level(dialogue)
         with pytest.raises(NothingHeard, match="within 0.1 s"):
-            top_level(lambda: perform(a.motion(type="listening", timeout=0.1)))
+            run_top_level(lambda: perform(a.motion(type="listening", timeout=0.1)))
     assert answer == "house"
     assert voice.transcript == ["What shall I draw?", "I will draw a house."]  # type: ignore[attr-defined]
 
@@ -154,5 +156,5 @@ def test_failures_and_seq_compose_with_turtle_motions() -> None:
         lambda: perform(a.motion(type="moving", goal="nowhere")),
     )
     with turtle_environment(world), pytest.raises(PlanFailure, match="cannot read a turtle goal"):
-        top_level(lambda: seq(*steps))
+        run_top_level(lambda: seq(*steps))
     assert world.pose.distance_to(2, 2) < 0.1

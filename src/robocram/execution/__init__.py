@@ -25,7 +25,7 @@ from robocram.execution.motion_process_module import (
 )
 from robocram.execution.par import par
 from robocram.execution.partial_order import partial_order
-from robocram.execution.perform import perform, register_plan
+from robocram.execution.perform import perform, perform_plan, register_plan
 from robocram.execution.process_module import ProcessModule
 from robocram.execution.process_module_matching import (
     install_process_module_interface,
@@ -77,6 +77,7 @@ __all__ = [
     "par",
     "partial_order",
     "perform",
+    "perform_plan",
     "process_modules_running",
     "pursue",
     "register_plan",

@@ -11,7 +11,7 @@ name was given to :func:`register_plan`; PERFORM calls it. Each PERFORM is a chi
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any
+from typing import Any, TypeVar
 
 from robocram.designators import (
     ActionDesignator,
@@ -35,6 +35,7 @@ from robocram.execution.task_listeners import notify_performing
 from robocram.logic import KnowledgeBase, Term
 
 PLAN_INTERFACE_GROUP = "plan_interface"
+T = TypeVar("T")
 
 
 def perform(designator: Designator, kb: KnowledgeBase | None = None) -> Any:
@@ -62,6 +63,22 @@ def perform(designator: Designator, kb: KnowledgeBase | None = None) -> Any:
             task.result = _run_plan(designator, grounding, knowledge)
         checkpoint()
         return task.result
+
+
+def perform_plan(designator: ActionDesignator, plan: Callable[[], T]) -> T:
+    """Perform ``designator`` by calling ``plan()``: a typed action table's plain call.
+
+    The same child task ``perform <type>``, listener notice and stop points as
+    :func:`perform`, without grounding in a knowledge base; ``robocram.plans.perform`` runs
+    the action types of its table this way, so the call can be followed in the code.
+    """
+    with sub_task(f"perform {designator.type}") as task:
+        notify_performing(task, designator)
+        checkpoint()
+        result = plan()
+        task.result = result
+        checkpoint()
+        return result
 
 
 def _knowledge_base(designator: Designator, kb: KnowledgeBase | None) -> KnowledgeBase:

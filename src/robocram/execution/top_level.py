@@ -1,16 +1,17 @@
 """Top levels: run a plan as the root task of a task tree and join it.
 
-Three forms, one object. ``top_level(plan, *args)`` runs and returns the value (or
-raises the failure); ``with top_level(name="demo") as tl:`` runs the block as the root
-task; ``@top_level(name="demo")`` or a bare ``@top_level`` makes every call a top-level
-run. ``tl.tree`` is the TaskTree of the last run, also after a failure;
-``run_top_level(plan)`` returns ``(value, tree)``. Inside another top level, a top level
+Two names. ``run_top_level(plan, *args)`` runs now and returns the value (or raises the
+failure). ``top_level`` never runs a plan: ``@top_level``, ``@top_level()`` or
+``@top_level(name="demo")`` decorate (every call of the plan is then a top-level run), and
+``with top_level(name="demo") as tl:`` runs a block as the root task. ``tl.tree`` is the
+TaskTree of the last run, also after a failure. Inside another top level, a top level
 becomes a child task.
 
-A bare ``@top_level`` and ``top_level(plan)`` are the same call; they are told apart by
-where the call comes from: a decorator is called from the lines of the decorated
-function's own definition (its decorators and ``def`` header), a plan run from anywhere
-else.
+A bare ``@top_level`` calls ``top_level(plan)`` while the ``def`` statement runs: the
+caller is the scope the function is defined in, and the function's name is not bound to
+it yet. Any other ``top_level(plan)``, with a lambda, a function already bound (from
+another module, on any line), or plan arguments, could mean either and is a TypeError
+naming both forms.
 """
 
 from __future__ import annotations
@@ -18,7 +19,7 @@ from __future__ import annotations
 import functools
 import sys
 from collections.abc import Callable
-from types import TracebackType
+from types import FrameType, FunctionType, TracebackType
 from typing import Any, TypeVar, overload
 
 from robocram.execution.par import raise_failure_of
@@ -111,44 +112,56 @@ class TopLevel:
         return wrapper
 
 
+AMBIGUOUS = (
+    "top_level({plan}) could decorate or run: decorate with @top_level above the def (or "
+    "@top_level(name=...)); run a plan now with run_top_level(plan, *args)"
+)
+
+
 @overload
 def top_level(fn: None = None, *, name: str | None = None) -> TopLevel: ...
 @overload
-def top_level(fn: Callable[..., T], *args: Any, name: str | None = None, **kwargs: Any) -> T: ...
-def top_level(
-    fn: Callable[..., Any] | None = None, *args: Any, name: str | None = None, **kwargs: Any
-) -> Any:
-    """Run ``fn`` as a top level and return its value; without ``fn``, return a TopLevel."""
-    if fn is None:
-        if args or kwargs:
-            raise TypeError("top_level() got plan arguments but no plan; pass the plan first")
-        return TopLevel(name or "top-level")
-    runner = TopLevel(name or _name_of(fn))
-    if not args and not kwargs and _decorating(fn, sys._getframe(1).f_lineno):
-        return runner(fn)
-    return runner.run(fn, *args, **kwargs)
+def top_level(fn: Callable[..., T], *, name: str | None = None) -> Callable[..., T]: ...
+def top_level(fn: Callable[..., Any] | None = None, *args: Any, name: str | None = None) -> Any:
+    """Decorate ``fn`` as a top-level plan; without ``fn``, a TopLevel (decorator, ``with``).
 
-
-def _decorating(fn: Callable[..., Any], caller_line: int) -> bool:
-    """Whether ``fn`` is being decorated: called from its own decorator or ``def`` lines.
-
-    A function's code starts at its first decorator; its body starts after the ``def``
-    header, so a call from a line in between comes from a decorator of this very function.
+    Raises:
+        TypeError: ``fn`` is not being decorated (see the module docstring), or plan
+            arguments were given; the message names ``@top_level`` and ``run_top_level``.
     """
-    code = getattr(fn, "__code__", None)
-    if code is None:
+    if fn is None:
+        if args:
+            raise TypeError("top_level() got plan arguments but no plan; use run_top_level")
+        return TopLevel(name or "top-level")
+    if args or not _decorating(fn, sys._getframe(1)):
+        raise TypeError(AMBIGUOUS.format(plan=getattr(fn, "__name__", repr(fn))))
+    return TopLevel(name or _name_of(fn))(fn)
+
+
+def _decorating(fn: Callable[..., Any], caller: FrameType) -> bool:
+    """Whether ``fn``'s ``def`` statement is running in ``caller``, not yet bound.
+
+    A decorator is called by the frame that executes the ``def``: the scope named by the
+    function's qualified name (the module, a class body or an enclosing function), before
+    the name is bound to the function. Nothing else meets both.
+    """
+    if not isinstance(fn, FunctionType) or fn.__name__ == "<lambda>":
         return False
-    first = code.co_firstlineno
-    body = min((line for _, _, line in code.co_lines() if line and line > first), default=first)
-    return first <= caller_line < body
+    parent = fn.__qualname__.rpartition(".")[0]
+    scope = parent.removesuffix(".<locals>").rpartition(".")[2] or "<module>"
+    if caller.f_code.co_name != scope:
+        return False
+    if not parent and caller.f_globals.get("__name__") != fn.__module__:
+        return False
+    return caller.f_locals.get(fn.__name__) is not fn
 
 
-def run_top_level(
-    fn: Callable[..., T], *args: Any, name: str | None = None, **kwargs: Any
-) -> tuple[T, TaskTree]:
-    """Run ``fn`` as a top level; return its value and the task tree."""
-    runner = TopLevel(name or _name_of(fn))
-    return runner.run(fn, *args, **kwargs), runner.tree
+def run_top_level(fn: Callable[..., T], *args: Any, name: str | None = None, **kwargs: Any) -> T:
+    """Run ``fn(*args, **kwargs)`` as a top level now; return its value or raise its failure.
+
+    For the task tree as well, run a :class:`TopLevel` and read its ``tree``.
+    """
+    return TopLevel(name or _name_of(fn)).run(fn, *args, **kwargs)
 
 
 def _name_of(fn: Callable[..., Any]) -> str:

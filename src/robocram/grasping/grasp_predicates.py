@@ -1,5 +1,8 @@
 """The grasp model as predicates of a knowledge base: the door plans use.
 
+The rows (arguments, types, meanings) are declared in
+``robocram.knowledge.grasp_predicates``; the table registers the functions here.
+
 Plans may not import this layer; they ask the KB instead (docs/grasping.md). ``Obj`` is
 an object's name, or ``object(Name, Type, Pose)`` with its type and a ``PoseStamped``
 (in ``map``) where no world knows it (recording, a real robot: the shape then comes from
@@ -31,6 +34,8 @@ from robocram.grasping.object_grasps import (
     type_facts,
 )
 from robocram.grasping.object_shape import ObjectShape, catalogue_shape, shape_of
+from robocram.knowledge import Source, register_predicates
+from robocram.knowledge.registration import Implementation
 from robocram.logic import KnowledgeBase, Term, Var
 from robocram.robots import RobotDescription
 from robocram.tf import Pose, PoseStamped, transform_pose
@@ -141,8 +146,11 @@ def install_grasp_predicates(
         shape = door.shape(door.obj(spec))
         yield (spec, list(shape.low), list(shape.high))
 
-    kb.add_predicate("grasping_arm", 2, grasping_arm)
-    kb.add_predicate("object_extent", 3, object_extent)
-    kb.add_predicate("object_grasp", 7, object_grasp)
-    kb.add_predicate("object_ungraspable", 5, object_ungraspable)
+    implementations: dict[str, Implementation] = {
+        "grasping_arm/2": grasping_arm,
+        "object_extent/3": object_extent,
+        "object_grasp/7": object_grasp,
+        "object_ungraspable/5": object_ungraspable,
+    }
+    register_predicates(kb, Source.GRASPING, implementations)
     return kb

@@ -19,6 +19,7 @@ from robocram.logic.errors import (
     TimeLimitExceeded,
     UnknownPredicateError,
 )
+from robocram.logic.gc_pacing import fast_queries
 from robocram.logic.knowledge_base import KnowledgeBase
 from robocram.logic.terms import Term, Var
 
@@ -43,5 +44,6 @@ __all__ = [
     "UnknownPredicateError",
     "Var",
     "current_kb",
+    "fast_queries",
     "using_kb",
 ]

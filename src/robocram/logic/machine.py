@@ -119,15 +119,16 @@ class Machine:
         ticks = 0
         spend = self.budget.spend
         plain = self.occurs_check == "false"  # procedures skip the occurs check
-        gc_pacing.enter()
+        pacer = gc_pacing.current_pacer()  # paces only inside `with fast_queries():`
+        pacer.enter()
         running = True
         try:
             while True:
                 while cont is None:
-                    gc_pacing.leave()
+                    pacer.leave()
                     running = False
                     yield None
-                    gc_pacing.enter()
+                    pacer.enter()
                     running = True
                     cont = backtrack(cps)
                 if cont is False:
@@ -209,7 +210,7 @@ class Machine:
             raise host_error(err, goal) from err
         finally:
             if running:
-                gc_pacing.leave()
+                pacer.leave()
 
     def _call_clauses(self, p: Pred, args: Any, nxt: Any, cps: list[list[Any]]) -> Any:
         """Try the clauses of `p` that the first argument selects; False when none runs.

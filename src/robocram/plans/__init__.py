@@ -1,6 +1,13 @@
 """Robot-independent plans: they ask the knowledge base about the robot and PERFORM designators."""
 
-from robocram.plans.action_table import ACTION_TYPES, install_actions, perform_action
+from robocram.plans.action_table import (
+    ACTION_TYPES,
+    ACTIONS,
+    ActionTable,
+    install_actions,
+    perform,
+    perform_action,
+)
 from robocram.plans.action_type import ActionType
 from robocram.plans.attempt_log import Attempt, AttemptLog
 from robocram.plans.containers import Container, close_container, container, open_container
@@ -19,7 +26,9 @@ from robocram.plans.place_object import place_object
 from robocram.plans.transport import TransportResult, transport
 
 __all__ = [
+    "ACTIONS",
     "ACTION_TYPES",
+    "ActionTable",
     "ActionType",
     "Attempt",
     "AttemptLog",
@@ -41,6 +50,7 @@ __all__ = [
     "fetch",
     "install_actions",
     "open_container",
+    "perform",
     "perform_action",
     "pick_up",
     "pick_up_object",

@@ -1,22 +1,31 @@
-"""The action designators robocram plans understand, in CRAM's vocabulary.
+"""The action table: each action type robocram's plans understand, and its plan function.
 
-``install_actions(kb)`` adds one ``action_grounding/2`` rule that grounds every action
-designator whose ``type`` is in :data:`ACTION_TYPES` to the registered plan
-``robocram_action(D)``; that plan checks the designator's keys
-(:meth:`ActionType.arguments`) and runs the type's plan function. So
-``perform(an.action(type="opening", object="drawer_unit_drawer_3"))`` runs
-:func:`open_container` in any environment whose KB has the actions installed.
+The table is the one place an action type is described (:class:`ActionType`: required
+and optional keys, plan). From it come:
+
+- :func:`perform`: PERFORM with the table. An action of the table runs its plan by a plain
+  Python call, ``ACTIONS["transporting"].plan`` is :func:`~robocram.plans.transport.transport`,
+  so a reader and an IDE follow ``perform(an.action(type="transporting", ...))`` to the
+  plan without reading Prolog; anything else goes to :func:`robocram.execution.perform`.
+- :func:`install_actions`: the ``action_grounding/2`` rule and ``robocram_action_type/1``
+  facts written from the table, for users who reason about actions in Prolog or perform
+  them with :func:`robocram.execution.perform`.
+
+A user adds an action type with one registration, ``ACTIONS.adding(ActionType(...))``, a new
+table passed to :func:`perform` and :func:`install_actions` (docs/transport.md).
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Iterator, Mapping
+from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Any
 
-from robocram.designators import Designator, install_designator_predicates
-from robocram.execution import register_plan
-from robocram.logic import KnowledgeBase
+from robocram.designators import ActionDesignator, Designator, install_designator_predicates
+from robocram.execution import perform as perform_designator
+from robocram.execution import perform_plan, register_plan
+from robocram.logic import KnowledgeBase, Term
 from robocram.plans.action_type import ActionType
 from robocram.plans.basic_actions import detect, look, move_torso, navigate, park_arms
 from robocram.plans.containers import close_container, open_container
@@ -28,51 +37,91 @@ from robocram.plans.search import search
 from robocram.plans.transport import transport
 
 ACTIONS_GROUP = "robocram_actions"
-ACTION_TYPES: Mapping[str, ActionType] = MappingProxyType(
-    {
-        t.type: t
-        for t in (
-            ActionType("navigating", ("target",), (), navigate),
-            ActionType("looking", ("target",), (), look),
-            ActionType("detecting", ("object",), (), detect),
-            ActionType("searching", ("object",), ("poses_per_place",), search),
-            ActionType("parking-arms", (), ("arm",), park_arms),
-            ActionType("moving-torso", ("joint_angle",), (), move_torso),
-            ActionType("opening", ("object",), ("arm", "distance", "angle"), open_container),
-            ActionType("closing", ("object",), ("arm",), close_container),
-            ActionType("picking-up", ("object",), ("arm", "grasp"), pick_up_object),
-            ActionType("placing", ("object", "target"), ("arm",), place_object),
-            ActionType("fetching", ("object",), ("arm", "grasp", "stand_retries"), fetch),
-            ActionType(
-                "delivering",
-                ("object", "target"),
-                ("arm", "stand_retries", "place_retries"),
-                deliver,
-            ),
-            ActionType(
-                "transporting",
-                ("object", "target"),
-                ("arm", "grasp", "stand_retries", "place_retries", "placing_stands"),
-                transport,
-            ),
-        )
-    }
+GROUNDING_RULE = (
+    "action_grounding(D, robocram_action(D)) :-\n"
+    "    action_desig(D), desig_prop(D, type, T), robocram_action_type(T).\n"
 )
 
 
-def perform_action(designator: Designator[Any]) -> Any:
+@dataclass(frozen=True)
+class ActionTable:
+    """Action types by their ``type``; immutable, extended by :meth:`adding`."""
+
+    types: Mapping[str, ActionType]
+
+    @classmethod
+    def of(cls, *types: ActionType) -> ActionTable:
+        """A table of ``types``; a type named twice is refused."""
+        return cls(MappingProxyType({})).adding(*types)
+
+    def adding(self, *types: ActionType) -> ActionTable:
+        """This table with ``types`` added (the one registration of a new action type)."""
+        found = dict(self.types)
+        for t in types:
+            if t.type in found:
+                raise ValueError(f"action type {t.type!r} is already in the table")
+            found[t.type] = t
+        return ActionTable(MappingProxyType(found))
+
+    def __getitem__(self, type_: str) -> ActionType:
+        return self.types[type_]
+
+    def __contains__(self, type_: object) -> bool:
+        return type_ in self.types
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self.types)
+
+    def facts(self) -> list[Term]:
+        """``robocram_action_type(T)`` for every type of the table."""
+        return [Term("robocram_action_type", (t,)) for t in self.types]
+
+
+ACTIONS = ActionTable.of(
+    ActionType("navigating", ("target",), (), navigate),
+    ActionType("looking", ("target",), (), look),
+    ActionType("detecting", ("object",), (), detect),
+    ActionType("searching", ("object",), ("poses_per_place",), search),
+    ActionType("parking-arms", (), ("arm",), park_arms),
+    ActionType("moving-torso", ("joint_angle",), (), move_torso),
+    ActionType("opening", ("object",), ("arm", "distance", "angle"), open_container),
+    ActionType("closing", ("object",), ("arm",), close_container),
+    ActionType("picking-up", ("object",), ("arm", "grasp"), pick_up_object),
+    ActionType("placing", ("object", "target"), ("arm",), place_object),
+    ActionType("fetching", ("object",), ("arm", "grasp", "stand_retries"), fetch),
+    ActionType(
+        "delivering", ("object", "target"), ("arm", "stand_retries", "place_retries"), deliver
+    ),
+    ActionType(
+        "transporting",
+        ("object", "target"),
+        ("arm", "grasp", "stand_retries", "place_retries", "placing_stands"),
+        transport,
+    ),
+)
+ACTION_TYPES: Mapping[str, ActionType] = ACTIONS.types
+
+
+def perform(designator: Designator[Any], actions: ActionTable = ACTIONS) -> Any:
+    """PERFORM ``designator``; an action of ``actions`` runs its plan by a plain call.
+
+    Motions, and actions of types outside the table, go to
+    :func:`robocram.execution.perform` (grounded in the knowledge base).
+    """
+    if isinstance(designator, ActionDesignator) and designator.type in actions:
+        action = actions[designator.type]
+        return perform_plan(designator, lambda: action.perform(designator))
+    return perform_designator(designator)
+
+
+def perform_action(designator: Designator[Any], actions: ActionTable = ACTIONS) -> Any:
     """Run the plan of ``designator``'s action type with its checked properties."""
-    return ACTION_TYPES[str(designator.get("type"))].perform(designator)
+    return actions[str(designator.get("type"))].perform(designator)
 
 
-def install_actions(kb: KnowledgeBase) -> KnowledgeBase:
-    """Ground the action types of :data:`ACTION_TYPES` in ``kb`` to their plans."""
+def install_actions(kb: KnowledgeBase, actions: ActionTable = ACTIONS) -> KnowledgeBase:
+    """Ground the action types of ``actions`` in ``kb`` to their plans, in Prolog."""
     install_designator_predicates(kb)
-    types = "\n".join(f"robocram_action_type('{t}')." for t in ACTION_TYPES)
-    rule = (
-        "action_grounding(D, robocram_action(D)) :-\n"
-        "    action_desig(D), desig_prop(D, type, T), robocram_action_type(T).\n"
-    )
-    kb.consult(types + "\n" + rule, group=ACTIONS_GROUP)
-    register_plan(kb, "robocram_action", perform_action)
+    kb.add_fact_group(ACTIONS_GROUP, [*actions.facts(), GROUNDING_RULE])
+    register_plan(kb, "robocram_action", lambda d: perform_action(d, actions))
     return kb

@@ -10,9 +10,8 @@ from typing import Any
 
 from robocram.designators import ObjectDesignator, a, an
 from robocram.execution import perform
-from robocram.logic import current_kb
 from robocram.plans.errors import PlanSetupError
-from robocram.plans.robot_facts import current_robot
+from robocram.plans.robot_facts import current_robot, parking, robot_arms, torso_limit
 
 
 def navigate(target: Any) -> Any:
@@ -24,13 +23,14 @@ def park_arms(arm: str | None = None) -> list[str]:
     """Put ``arm`` (default: every arm) into its parking configuration; return the arms."""
     robot = current_robot()
     parked = []
-    query = "arm(R, A), robot_arms_parking_joint_states(R, A, S)"
-    for answer in current_kb().query(query, R=robot):
-        if arm is not None and answer["A"] != arm:
+    for name in robot_arms(robot):
+        pose = parking(robot, name)
+        if pose is None or (arm is not None and name != arm):
             continue
-        if answer["S"]:
-            perform(a.motion(type="moving-arm-joints", arm=answer["A"], configuration=answer["S"]))
-        parked.append(str(answer["A"]))
+        if pose.joint_states:
+            states = [[joint, value] for joint, value in pose.joint_states]
+            perform(a.motion(type="moving-arm-joints", arm=name, configuration=states))
+        parked.append(name)
     if arm is not None and not parked:
         raise PlanSetupError(f"{robot} has no arm {arm!r} with a parking configuration")
     return parked
@@ -40,18 +40,15 @@ def move_torso(joint_angle: float | str) -> Any:
     """Move the torso to ``joint_angle`` [m | rad], or to its ``upper``/``lower`` limit."""
     if isinstance(joint_angle, str):
         robot = current_robot()
-        limit = {"upper": "joint_upper_limit", "lower": "joint_lower_limit"}.get(joint_angle)
-        answer = None
-        if limit is not None:
-            answer = current_kb().first(
-                f"robot_torso_link_joint(R, _, J), {limit}(R, J, V)", R=robot
-            )
-        if answer is None:
+        limit = None
+        if joint_angle in ("upper", "lower"):
+            limit = torso_limit(robot, "upper" if joint_angle == "upper" else "lower")
+        if limit is None:
             raise PlanSetupError(
                 f"torso goal {joint_angle!r} is no number and not upper/lower of a torso "
                 f"joint of {robot}"
             )
-        joint_angle = float(answer["V"])
+        joint_angle = limit
     return perform(a.motion(type="moving-torso", joint_angle=joint_angle))
 
 

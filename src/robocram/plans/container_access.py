@@ -11,6 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from robocram.execution.failures import PlanFailure
+from robocram.knowledge.scene_predicates import CONTAINER, CONTAINER_KIND
 from robocram.logic import current_kb
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import navigate, park_arms
@@ -34,7 +35,7 @@ class OpenedContainer:
 
 def is_container(environment: str, link: str) -> bool:
     """Whether the KB names ``link`` of ``environment`` a container."""
-    return current_kb().holds("container(E, L, _, _)", E=environment, L=link)
+    return CONTAINER.holds(current_kb(), environment=environment, link=link)
 
 
 def _handle_pose(part: Container) -> Pose:
@@ -42,7 +43,9 @@ def _handle_pose(part: Container) -> Pose:
 
 
 def _is_drawer(part: Container) -> bool:
-    return current_kb().holds("container_kind(E, L, drawer)", E=part.environment, L=part.link)
+    return CONTAINER_KIND.holds(
+        current_kb(), environment=part.environment, link=part.link, kind="drawer"
+    )
 
 
 def open_from_front(

@@ -14,14 +14,10 @@ from dataclasses import dataclass
 from robocram.designators import a
 from robocram.execution import perform
 from robocram.execution.failures import EnvironmentManipulationImpossible, PlanFailure
+from robocram.knowledge.scene_predicates import CONTAINER, CONTAINER_OPENING
 from robocram.logic import current_kb
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.robot_facts import current_robot, robot_arms
-
-CONTAINER_QUERY = (
-    "container(Env, Link, Joint, Handle), (Link == C ; Handle == C), "
-    "container_opening(Env, Link, Opened)"
-)
 
 
 @dataclass(frozen=True)
@@ -37,15 +33,17 @@ class Container:
 
 def container(name: str) -> Container:
     """The container whose link or handle is ``name``."""
-    answer = current_kb().first(CONTAINER_QUERY, C=name)
-    if answer is None:
-        known = sorted({str(c["L"]) for c in current_kb().query("container(_, L, _, _)")})
-        raise PlanSetupError(
-            f"{name!r} is no container or handle in the knowledge base; containers: "
-            f"{', '.join(known) or 'none (load a scene with container/4 facts)'}"
-        )
-    return Container(
-        answer["Env"], answer["Link"], answer["Joint"], answer["Handle"], float(answer["Opened"])
+    kb = current_kb()
+    for fact in CONTAINER.answers(kb):
+        if name not in (fact.link, fact.handle):
+            continue
+        opening = CONTAINER_OPENING.first(kb, environment=fact.environment, link=fact.link)
+        if opening is not None:
+            return Container(fact.environment, fact.link, fact.joint, fact.handle, opening.opened)
+    known = sorted({fact.link for fact in CONTAINER.answers(kb)})
+    raise PlanSetupError(
+        f"{name!r} is no container or handle in the knowledge base; containers: "
+        f"{', '.join(known) or 'none (load a scene with container/4 facts)'}"
     )
 
 

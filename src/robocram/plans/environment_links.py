@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from robocram.knowledge.world_predicates import LINK_POSE
 from robocram.logic import current_kb
 from robocram.plans.errors import PlanSetupError
 from robocram.tf import Pose
@@ -13,10 +14,10 @@ def environment_link_pose(environment: str, link: str, role: str) -> Pose:
     Raises:
         PlanSetupError: the world has no such link (facts from another scene).
     """
-    answer = current_kb().first("world(W), link_pose(W, E, L, P)", E=environment, L=link)
-    if answer is None:
+    row = LINK_POSE.first(current_kb(), object=environment, link=link)
+    if row is None:
         raise PlanSetupError(
             f"the KB names {link!r} of {environment!r} as {role}, but the world has no such "
             "link; regenerate the scene's facts"
         )
-    return Pose.coerce(answer["P"])
+    return row.pose

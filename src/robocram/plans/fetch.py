@@ -24,10 +24,9 @@ from robocram.plans.container_access import OpenedContainer
 from robocram.plans.errors import FetchExhausted
 from robocram.plans.location_poses import location_poses, next_pose
 from robocram.plans.pick_object import Held, pick_up_object
-from robocram.plans.robot_facts import current_robot, robot_arms
+from robocram.plans.robot_facts import base_frame, current_robot, robot_arms
 from robocram.plans.stands import (
     REACH_DISTANCES,
-    base_frame,
     front_stands,
     map_pose,
     planar_pose,

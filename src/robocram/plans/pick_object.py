@@ -19,17 +19,14 @@ from robocram.execution.failures import (
     ManipulationLowLevelFailure,
     ManipulationPoseUnreachable,
 )
-from robocram.logic import Term, UnknownPredicateError, current_kb
+from robocram.knowledge.grasp_predicates import OBJECT_GRASP, OBJECT_UNGRASPABLE, ObjectGrasp
+from robocram.logic import Term, current_kb
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.grasp_failures import ObjectUngraspable, PickUpFailed, PickUpUnreachable
-from robocram.plans.robot_facts import current_robot
+from robocram.plans.robot_facts import current_robot, grasping_arms, tool_frame
 from robocram.tf import Pose, PoseStamped, TfError, transform_pose
 
 GRASPING = {"collision_mode": "allow_hand"}  # the fingers may touch what they close on
-NO_DOOR = (
-    "the knowledge base has no grasp predicates (object_grasp/7); run the plan in an "
-    "environment that installs them, such as simulated_robot(world, robot)"
-)
 TRIES = (ManipulationLowLevelFailure, GripperLowLevelFailure)  # a try ends, the next starts
 
 
@@ -74,22 +71,11 @@ def object_name(obj: ObjectDesignator | str) -> str:
     return str(name)
 
 
-def tool_frame(robot: str, arm: str) -> str:
-    """The tool frame of ``arm``."""
-    answer = current_kb().first("robot_tool_frame(R, A, T)", R=robot, A=arm)
-    if answer is None:
-        raise PlanSetupError(f"{robot} has no robot_tool_frame/3 for arm {arm!r}")
-    return str(answer["T"])
-
-
 def arms_nearest_first(robot: str, target: Pose | None, arm: str | None) -> list[str]:
     """``[arm]``, or the robot's arms with a gripper, their tool frames nearest first."""
     if arm is not None:
         return [arm]
-    try:
-        arms = [str(x["A"]) for x in current_kb().query("grasping_arm(R, A)", R=robot)]
-    except UnknownPredicateError as err:
-        raise PlanSetupError(NO_DOOR) from err
+    arms = grasping_arms(robot)
     if not arms:
         raise PlanSetupError(f"{robot} has no arm with a gripper (grasping_arm/2)")
     if target is None:
@@ -102,29 +88,27 @@ def arms_nearest_first(robot: str, target: Pose | None, arm: str | None) -> list
     return sorted(arms, key=distance)
 
 
-def grasp_choices(robot: str, spec: Any, arm: str, grasp: str | None) -> list[dict[str, Any]]:
+def grasp_choices(robot: str, spec: Any, arm: str, grasp: str | None) -> list[ObjectGrasp]:
     """The KB's grasps of ``name`` by ``arm`` (only ``grasp`` if given), best first.
 
     Raises:
         ObjectUngraspable: the hand is too narrow for every grasp of the object.
     """
     kb = current_kb()
-    query = "object_grasp(O, R, A, N, G, P, L)"
     name = str(spec.args[0]) if isinstance(spec, Term) else str(spec)
-    bindings: dict[str, Any] = {"O": spec, "R": robot, "A": arm}
-    if grasp is not None:
-        bindings["N"] = grasp
-    found = [{"N": grasp, **answer} for answer in kb.query(query, **bindings)]
+    named = {} if grasp is None else {"grasp": grasp}
+    found = list(OBJECT_GRASP.answers(kb, object=spec, robot=robot, arm=arm, **named))
     if not found:
-        refusal = kb.first("object_ungraspable(O, R, A, H, W)", O=spec, R=robot, A=arm)
+        refusal = OBJECT_UNGRASPABLE.first(kb, object=spec, robot=robot, arm=arm)
         if refusal is not None:
             raise ObjectUngraspable(
                 f"no grasp of {name!r} fits the {arm} hand of {robot}: it opens "
-                f"{refusal['H']:.3f} m, the narrowest grasp needs {refusal['W']:.3f} m",
+                f"{refusal.hand_width:.3f} m, the narrowest grasp needs "
+                f"{refusal.needed_width:.3f} m",
                 object_name=name,
                 arm=arm,
-                hand_width=float(refusal["H"]),
-                needed_width=float(refusal["W"]),
+                hand_width=refusal.hand_width,
+                needed_width=refusal.needed_width,
             )
     return found
 
@@ -134,21 +118,21 @@ def _move(arm: str, pose: PoseStamped, **mode: str) -> None:
 
 
 def _try_grasp(
-    robot: str, name: str, arm: str, choice: dict[str, Any], object_in_map: Pose | None
+    robot: str, name: str, arm: str, choice: ObjectGrasp, object_in_map: Pose | None
 ) -> Held:
     perform(a.motion(type="opening", gripper=arm))
-    _move(arm, choice["P"])
-    _move(arm, choice["G"], **GRASPING)
+    _move(arm, choice.pre_grasp)
+    _move(arm, choice.grasp_pose, **GRASPING)
     gripped = perform(a.motion(type="gripping", gripper=arm))
     if isinstance(gripped, str) and gripped != name:  # projection names what it holds
         perform(a.motion(type="opening", gripper=arm))
         raise PickUpFailed(f"the {arm} hand gripped {gripped!r}, not {name!r}", object_name=name)
-    _move(arm, choice["L"], **GRASPING)
+    _move(arm, choice.lift, **GRASPING)
     frame = tool_frame(robot, arm)
     if object_in_map is None:
         object_in_map = transform_pose(PoseStamped(name), "map").pose
-    held = choice["G"].pose.inverse() * object_in_map  # as gripped: the grasp keeps it
-    return Held(arm, str(choice["N"]), name, frame, choice["G"], choice["L"], held)
+    held = choice.grasp_pose.pose.inverse() * object_in_map  # as gripped: the grasp keeps it
+    return Held(arm, choice.grasp, name, frame, choice.grasp_pose, choice.lift, held)
 
 
 def pick_up_object(

@@ -13,10 +13,9 @@ from dataclasses import dataclass
 
 from robocram.designators import ObjectDesignator, a, an
 from robocram.execution import perform
-from robocram.logic import current_kb
 from robocram.plans.basic_actions import park_arms
 from robocram.plans.pick_object import Held, pick_up_object
-from robocram.plans.robot_facts import current_robot
+from robocram.plans.robot_facts import current_robot, torso_limit
 from robocram.tf import PoseStamped
 
 
@@ -34,10 +33,9 @@ class PickResult:
 
 
 def _raise_torso(robot: str) -> None:
-    kb = current_kb()
-    torso = kb.first("robot_torso_link_joint(R, _, J), joint_upper_limit(R, J, U)", R=robot)
-    if torso is not None:
-        perform(a.motion(type="moving-torso", joint_angle=torso["U"]))
+    upper = torso_limit(robot, "upper")
+    if upper is not None:
+        perform(a.motion(type="moving-torso", joint_angle=upper))
 
 
 def pick_up(look_target: PoseStamped, object_type: str = "mug") -> PickResult:

@@ -19,12 +19,13 @@ import math
 from robocram.designators import LocationDesignator, ObjectDesignator, a
 from robocram.execution import perform
 from robocram.execution.failures import ManipulationLowLevelFailure
+from robocram.knowledge.world_predicates import ATTACHED, SIMULATE
 from robocram.logic import UnknownPredicateError, current_kb
 from robocram.plans.basic_actions import park_arms
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.grasp_failures import PlacingFailed
-from robocram.plans.pick_object import GRASPING, Held, object_name, tool_frame
-from robocram.plans.robot_facts import current_robot
+from robocram.plans.pick_object import GRASPING, Held, object_name
+from robocram.plans.robot_facts import current_robot, end_effector_link, grasping_arms, tool_frame
 from robocram.tf import Pose, PoseStamped, transform_pose
 from robocram.tf import quaternion as quat
 
@@ -45,11 +46,11 @@ def held_object(obj: Held | ObjectDesignator | str, arm: str | None) -> Held:
         return obj
     robot, name = current_robot(), object_name(obj)
     kb = current_kb()
-    for answer in kb.query("grasping_arm(R, A), end_effector_link(R, A, L)", R=robot):
-        if arm is not None and answer["A"] != arm:
+    for choice in grasping_arms(robot):
+        link = end_effector_link(robot, choice)
+        if link is None or (arm is not None and choice != arm):
             continue
-        if kb.holds("world(W), attached(W, R, L, O)", O=name, R=robot, L=answer["L"]):
-            choice = str(answer["A"])
+        if ATTACHED.holds(kb, object=name, robot=robot, link=link):
             frame = tool_frame(robot, choice)
             here = transform_pose(PoseStamped(frame), "map")
             held = transform_pose(PoseStamped(name), frame).pose
@@ -87,11 +88,11 @@ def _move(arm: str, pose: Pose, **mode: str) -> None:
 
 def _retreat(robot: str, held: Held) -> None:
     """Back the open hand off towards the wrist; park the arm if it cannot."""
-    answer = current_kb().first("end_effector_link(R, A, L)", R=robot, A=held.arm)
+    wrist_link = end_effector_link(robot, held.arm)
     tool = transform_pose(PoseStamped(held.tool_frame), "map").pose
     back = (0.0, 0.0, 1.0)
-    if answer is not None:
-        wrist = transform_pose(PoseStamped(str(answer["L"])), "map").pose.position
+    if wrist_link is not None:
+        wrist = transform_pose(PoseStamped(wrist_link), "map").pose.position
         d = [w - t for w, t in zip(wrist, tool.position, strict=True)]
         norm = math.sqrt(sum(c * c for c in d)) or 1.0
         back = (d[0] / norm, d[1] / norm, d[2] / norm)
@@ -121,7 +122,7 @@ def _settled(name: str, put: Pose, seconds: float) -> str | None:
     while simulated < seconds - 1e-9:
         step = min(SETTLE_STEP, seconds - simulated)
         try:
-            if not kb.holds("world(W), simulate(W, S)", S=float(step)):
+            if not SIMULATE.holds(kb, seconds=float(step)):
                 return None
         except UnknownPredicateError:
             return None  # no simulated world to ask (a real robot)

@@ -1,9 +1,24 @@
-"""What plans ask the knowledge base about the robot they run on."""
+"""What plans ask the knowledge base about the robot they run on, as typed calls.
+
+Each function asks one row of the predicate table (``robocram.knowledge``) in the
+current knowledge base and returns Python values or the row's frozen dataclass, so a
+misspelt predicate or a swapped argument is a type error, not an empty answer on one
+robot. A fact a plan cannot do without raises :class:`PlanSetupError` naming it.
+"""
 
 from __future__ import annotations
 
+from typing import Literal
+
+from robocram.knowledge import grasp_predicates as gp
+from robocram.knowledge import robot_predicates as rp
 from robocram.logic import UnknownPredicateError, current_kb
 from robocram.plans.errors import PlanSetupError
+
+NO_GRASP_MODEL = (
+    "the knowledge base has no grasp predicates (object_grasp/7); run the plan in an "
+    "environment that installs them, such as simulated_robot(world, robot)"
+)
 
 
 def current_robot() -> str:
@@ -13,14 +28,71 @@ def current_robot() -> str:
         "environment such as simulated_robot(world, 'pr2')"
     )
     try:
-        answer = current_kb().first("robot(R)")
+        row = rp.ROBOT.first(current_kb())
     except UnknownPredicateError as err:
         raise PlanSetupError(hint) from err
-    if answer is None:
+    if row is None:
         raise PlanSetupError(hint)
-    return str(answer["R"])
+    return row.robot
 
 
 def robot_arms(robot: str) -> list[str]:
     """The robot's manipulating arms, in the KB's order."""
-    return [str(a["A"]) for a in current_kb().query("arm(R, A)", R=robot)]
+    return [row.arm for row in rp.ARM.answers(current_kb(), robot=robot)]
+
+
+def parking(robot: str, arm: str) -> rp.ParkingPose | None:
+    """The parking configuration of ``arm``, or None when the KB has none."""
+    return rp.ROBOT_ARMS_PARKING_JOINT_STATES.first(current_kb(), robot=robot, arm=arm)
+
+
+def torso_limit(robot: str, which: Literal["upper", "lower"]) -> float | None:
+    """The ``upper`` or ``lower`` limit [m | rad] of the torso joint; None without a torso."""
+    kb = current_kb()
+    torso = rp.ROBOT_TORSO_LINK_JOINT.first(kb, robot=robot)
+    if torso is None:
+        return None
+    limit = rp.JOINT_UPPER_LIMIT if which == "upper" else rp.JOINT_LOWER_LIMIT
+    row = limit.first(kb, robot=robot, joint=torso.joint)
+    return None if row is None else row.limit
+
+
+def has_torso(robot: str) -> bool:
+    """Whether the robot has a torso joint."""
+    return rp.ROBOT_TORSO_LINK_JOINT.holds(current_kb(), robot=robot)
+
+
+def tool_frame(robot: str, arm: str) -> str:
+    """The tool frame of ``arm``."""
+    row = rp.ROBOT_TOOL_FRAME.first(current_kb(), robot=robot, arm=arm)
+    if row is None:
+        raise PlanSetupError(f"{robot} has no robot_tool_frame/3 for arm {arm!r}")
+    return row.frame
+
+
+def end_effector_link(robot: str, arm: str) -> str | None:
+    """The link ``arm`` holds objects with, or None when the KB does not say."""
+    row = rp.END_EFFECTOR_LINK.first(current_kb(), robot=robot, arm=arm)
+    return None if row is None else row.link
+
+
+def base_frame(robot: str) -> str:
+    """The robot's base frame."""
+    row = rp.ROBOT_BASE_FRAME.first(current_kb(), robot=robot)
+    if row is None:
+        raise PlanSetupError(f"no robot_base_frame/2 for {robot!r}; load its description")
+    return row.frame
+
+
+def first_arm_link(robot: str, arm: str) -> str | None:
+    """The first link of ``arm`` (its shoulder), or None when the KB lists none."""
+    row = rp.ARM_LINKS.first(current_kb(), robot=robot, arm=arm)
+    return row.links[0] if row is not None and row.links else None
+
+
+def grasping_arms(robot: str) -> list[str]:
+    """The robot's arms with a gripper (``grasping_arm/2`` of the grasp model)."""
+    try:
+        return [row.arm for row in gp.GRASPING_ARM.answers(current_kb(), robot=robot)]
+    except UnknownPredicateError as err:
+        raise PlanSetupError(NO_GRASP_MODEL) from err

@@ -19,13 +19,14 @@ from robocram.designators import LocationDesignator, ObjectDesignator, a, an
 from robocram.designators.errors import DesignatorError
 from robocram.execution import perform
 from robocram.execution.failures import PlanFailure
+from robocram.knowledge.scene_predicates import SUPPORTING_SURFACE, USUAL_LOCATION
 from robocram.logic import current_kb
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import detect, look, move_torso, park_arms
 from robocram.plans.container_access import OpenedContainer, is_container, open_from_front
 from robocram.plans.environment_links import environment_link_pose
 from robocram.plans.errors import SearchExhausted
-from robocram.plans.robot_facts import current_robot
+from robocram.plans.robot_facts import current_robot, has_torso
 from robocram.tf import PoseStamped
 
 POSES_PER_PLACE = 2  # CRAM retries a search location a couple of times
@@ -53,8 +54,8 @@ class SearchLog:
 def candidate_places(object_type: str) -> list[Place]:
     """The usual places of ``object_type`` first, then every other supporting surface."""
     kb = current_kb()
-    usual = [Place(a_["E"], a_["L"]) for a_ in kb.query("usual_location(T, E, L)", T=object_type)]
-    others = [Place(a_["E"], a_["L"]) for a_ in kb.query("supporting_surface(E, L)")]
+    usual = [Place(r.environment, r.link) for r in USUAL_LOCATION.answers(kb, type=object_type)]
+    others = [Place(r.environment, r.link) for r in SUPPORTING_SURFACE.answers(kb)]
     return list(dict.fromkeys([*usual, *others]))
 
 
@@ -89,7 +90,7 @@ def _look_into(place: Place, wanted: ObjectDesignator, log: SearchLog) -> Object
     """Open the container ``place`` and look into it from where it was opened."""
     try:
         log.opened.append(open_from_front(place.link, log.attempts))
-        if current_kb().holds("robot_torso_link_joint(R, _, _)", R=current_robot()):
+        if has_torso(current_robot()):
             move_torso("upper")  # see over the drawer's front, into it
         look(place_point(place))
         return detect(wanted)

@@ -16,8 +16,7 @@ import math
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 
-from robocram.logic import current_kb
-from robocram.plans.errors import PlanSetupError
+from robocram.plans.robot_facts import base_frame, first_arm_link
 from robocram.tf import Pose, PoseStamped, transform_pose
 from robocram.tf import quaternion as quat
 
@@ -25,14 +24,6 @@ STAND_TURNS = 12  # placing stands per spot: turns about it, 30 degrees apart
 HANDLE_CLEARANCES = (0.5, 0.6, 0.4)  # [m] base centre to an opened drawer's handle
 REACH_DISTANCES = (0.55, 0.65, 0.45, 0.75, 0.85)  # [m] base to an object in an open container
 DOOR_DISTANCES = (0.8, 0.9, 0.7)  # [m] base centre to a closed door's handle
-
-
-def base_frame(robot: str) -> str:
-    """The robot's base frame from the KB."""
-    answer = current_kb().first("robot_base_frame(R, F)", R=robot)
-    if answer is None:
-        raise PlanSetupError(f"no robot_base_frame/2 for {robot!r}; load its description")
-    return str(answer["F"])
 
 
 def map_pose(frame: str) -> Pose:
@@ -86,10 +77,10 @@ class HandleStand:
 
 def shoulder_offset(robot: str, arm: str) -> float:
     """Sideways offset [m] of ``arm``'s first link from the base (its reaching line)."""
-    answer = current_kb().first("arm_links(R, A, [L | _])", R=robot, A=arm)
-    if answer is None:
+    shoulder = first_arm_link(robot, arm)
+    if shoulder is None:
         return 0.0
-    return transform_pose(PoseStamped(str(answer["L"])), base_frame(robot)).pose.position[1]
+    return transform_pose(PoseStamped(shoulder), base_frame(robot)).pose.position[1]
 
 
 def handle_stands(

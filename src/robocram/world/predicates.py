@@ -1,9 +1,11 @@
-"""The world as predicates of its own knowledge base.
+"""The world as predicates of its own knowledge base: the implementations of the table's rows.
 
-Every predicate takes the world first (``W``, bound by ``world(W)``); objects, robots,
-links and joints are name atoms. Unbound names enumerate. Predicates that change the
-world (``set_joint_state``, ``set_object_pose``, ``attach``, ``detach``, ``simulate``)
-succeed once; CRAM's ``assert`` forms are named so as not to clash with Prolog's own.
+The predicates, their arguments and meanings are declared in
+``robocram.knowledge.world_predicates``; here is one Python function per row, registered
+by the table (:func:`robocram.knowledge.register_predicates`), which refuses a row left
+without a function or a function without a row. Every predicate takes the world first;
+unbound names enumerate. CRAM's ``assert`` forms are named so as not to clash with
+Prolog's own.
 """
 
 from __future__ import annotations
@@ -11,6 +13,8 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING, Any
 
+from robocram.knowledge import Source, register_predicates
+from robocram.knowledge.registration import Implementation
 from robocram.logic import KnowledgeBase, Var
 from robocram.logic.limits import current_stop_check
 from robocram.tf import Pose
@@ -24,8 +28,10 @@ Solutions = Iterator[tuple[Any, ...] | None]
 def world_knowledge_base(world: World) -> KnowledgeBase:
     """A new knowledge base with the predicates of ``world``."""
     kb = KnowledgeBase()
-    for install in (_install_objects, _install_robots, _install_attachments, _install_reasoning):
-        install(kb, world)
+    implementations: dict[str, Implementation] = {}
+    for part in (_objects, _robots, _attachments, _reasoning):
+        implementations.update(part(world))
+    register_predicates(kb, Source.WORLD, implementations)
     return kb
 
 
@@ -56,38 +62,41 @@ def _relation(world: World, test: Callable[[str, str], bool]) -> Callable[..., S
     return solve
 
 
-def _install_objects(kb: KnowledgeBase, world: World) -> None:
-    @kb.predicate("world", 1)
+def _objects(world: World) -> dict[str, Implementation]:
     def world_(w: Any) -> Solutions:
         if _ours(world, w):
             yield (world,)
 
-    @kb.predicate("object", 2)
     def object_(w: Any, name: Any) -> Solutions:
         if _ours(world, w):
             yield from ((world, n) for n in _names(world, name))
 
-    @kb.predicate("object_type", 3)
     def object_type(w: Any, name: Any, kind: Any) -> Solutions:
         if _ours(world, w):
             yield from ((world, n, world.object(n).type) for n in _names(world, name))
 
-    @kb.predicate("object_pose", 3)
     def object_pose(w: Any, name: Any, pose: Any) -> Solutions:
         if _ours(world, w):
             yield from ((world, n, world.pose(n)) for n in _names(world, name))
 
-    @kb.predicate("set_object_pose", 3)
     def set_object_pose(w: Any, name: Any, pose: Any) -> Solutions:
         if _ours(world, w) and not isinstance(name, Var):
             world.set_pose(name, Pose.coerce(_pose_value(pose)))
             yield None
 
-    @kb.predicate("simulate", 2)
     def simulate(w: Any, seconds: Any) -> Solutions:
         if _ours(world, w):
             world.simulate(float(seconds), stop_check=current_stop_check())  # a task's stop
             yield (world, seconds)
+
+    return {
+        "world/1": world_,
+        "object/2": object_,
+        "object_type/3": object_type,
+        "object_pose/3": object_pose,
+        "set_object_pose/3": set_object_pose,
+        "simulate/2": simulate,
+    }
 
 
 def _pose_value(value: Any) -> Any:
@@ -99,13 +108,11 @@ def _pose_value(value: Any) -> Any:
     return value
 
 
-def _install_robots(kb: KnowledgeBase, world: World) -> None:
-    @kb.predicate("robot", 2)
+def _robots(world: World) -> dict[str, Implementation]:
     def robot(w: Any, name: Any) -> Solutions:
         if _ours(world, w):
             yield from ((world, n) for n in _names(world, name, robots_only=True))
 
-    @kb.predicate("joint_state", 4)
     def joint_state(w: Any, rob: Any, joint: Any, value: Any) -> Solutions:
         if not _ours(world, w):
             return
@@ -114,13 +121,11 @@ def _install_robots(kb: KnowledgeBase, world: World) -> None:
             joints = list(states) if isinstance(joint, Var) else [joint]
             yield from ((world, name, j, states[j]) for j in joints if j in states)
 
-    @kb.predicate("set_joint_state", 4)
     def set_joint_state(w: Any, rob: Any, joint: Any, value: Any) -> Solutions:
         if _ours(world, w):
             world.set_joint_states(rob, {joint: float(value)})
             yield None
 
-    @kb.predicate("link_pose", 4)
     def link_pose(w: Any, rob: Any, link: Any, pose: Any) -> Solutions:
         if not _ours(world, w):
             return
@@ -128,9 +133,15 @@ def _install_robots(kb: KnowledgeBase, world: World) -> None:
             links = world.link_names(name) if isinstance(link, Var) else [link]
             yield from ((world, name, k, world.link_pose(name, k)) for k in links)
 
+    return {
+        "robot/2": robot,
+        "joint_state/4": joint_state,
+        "set_joint_state/4": set_joint_state,
+        "link_pose/4": link_pose,
+    }
 
-def _install_attachments(kb: KnowledgeBase, world: World) -> None:
-    @kb.predicate("attached", 4)
+
+def _attachments(world: World) -> dict[str, Implementation]:
     def attached(w: Any, rob: Any, link: Any, obj: Any) -> Solutions:
         if not _ours(world, w):
             return
@@ -138,36 +149,28 @@ def _install_attachments(kb: KnowledgeBase, world: World) -> None:
             for carried, at in world.attachments(name).items():
                 yield (world, name, at, carried)
 
-    @kb.predicate("attach", 4)
     def attach(w: Any, obj: Any, rob: Any, link: Any) -> Solutions:
         if _ours(world, w):
             world.attach(obj, rob, link)
             yield None
 
-    @kb.predicate("detach", 2)
     def detach(w: Any, obj: Any) -> Solutions:
         if _ours(world, w):
             world.detach(obj)
             yield None
 
+    return {"attached/4": attached, "attach/4": attach, "detach/2": detach}
 
-def _install_reasoning(kb: KnowledgeBase, world: World) -> None:
-    kb.predicate("contact", 3)(_relation(world, world.contact))
-    kb.predicate("supported_by", 3)(_relation(world, world.supported_by))
-    kb.predicate("above", 3)(_relation(world, world.above))
-    kb.predicate("below", 3)(_relation(world, world.below))
 
-    @kb.predicate("stable", 2)
+def _reasoning(world: World) -> dict[str, Implementation]:
     def stable(w: Any, obj: Any) -> Solutions:
         if _ours(world, w):
             yield from ((world, n) for n in _names(world, obj) if world.stable(n))
 
-    @kb.predicate("stable", 1)
     def stable_all(w: Any) -> Solutions:
         if _ours(world, w) and world.stable():
             yield (world,)
 
-    @kb.predicate("visible", 3)
     def visible(w: Any, rob: Any, obj: Any) -> Solutions:
         if not _ours(world, w):
             return
@@ -176,7 +179,6 @@ def _install_reasoning(kb: KnowledgeBase, world: World) -> None:
                 if seen != name and world.visible(name, seen):
                     yield (world, name, seen)
 
-    @kb.predicate("occluding_objects", 4)
     def occluding_objects(w: Any, rob: Any, obj: Any, occluders: Any) -> Solutions:
         if not _ours(world, w):
             return
@@ -185,3 +187,14 @@ def _install_reasoning(kb: KnowledgeBase, world: World) -> None:
                 if target != name:
                     found = [o.name for o in world.occluding_objects(name, target)]
                     yield (world, name, target, found)
+
+    return {
+        "contact/3": _relation(world, world.contact),
+        "supported_by/3": _relation(world, world.supported_by),
+        "above/3": _relation(world, world.above),
+        "below/3": _relation(world, world.below),
+        "stable/2": stable,
+        "stable/1": stable_all,
+        "visible/3": visible,
+        "occluding_objects/4": occluding_objects,
+    }

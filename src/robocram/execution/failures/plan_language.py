@@ -34,7 +34,7 @@ class NotInTopLevel(RuntimeError):
     def __init__(self, form: str) -> None:
         super().__init__(
             f"{form} needs a running task but was called outside a top level; "
-            f"run the plan with top_level(plan) or inside `with top_level():`"
+            f"run the plan with run_top_level(plan) or inside `with top_level():`"
         )
         self.form = form
 

@@ -1,0 +1,78 @@
+"""Facts a scene provides about its environment: containers, surfaces, usual places.
+
+``tools/make_kitchen_urdf.py`` writes them for robocram's kitchen (``kitchen.pl``);
+plans ask these and never name a link.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+from robocram.knowledge.argument import unit
+from robocram.knowledge.predicate import Predicate, Source
+
+
+@dataclass(frozen=True)
+class ContainerFact:
+    """A container link of an environment, the joint that opens it and its handle."""
+
+    environment: str
+    link: str
+    joint: str
+    handle: str
+
+
+@dataclass(frozen=True)
+class ContainerKind:
+    """Whether a container is a ``drawer`` or a ``door``."""
+
+    environment: str
+    link: str
+    kind: str
+
+
+@dataclass(frozen=True)
+class ContainerOpening:
+    """The joint value that opens a container fully."""
+
+    environment: str
+    link: str
+    opened: float = unit("m | rad")
+
+
+@dataclass(frozen=True)
+class UsualLocation:
+    """Where objects of a type usually are."""
+
+    type: str
+    environment: str
+    link: str
+
+
+@dataclass(frozen=True)
+class SupportingSurface:
+    """A link of an environment things can stand on."""
+
+    environment: str
+    link: str
+
+
+_S = Source.SCENE
+CONTAINER = Predicate("container", ContainerFact, _S, "a drawer or door, its joint and handle")
+CONTAINER_KIND = Predicate("container_kind", ContainerKind, _S, "a container's kind")
+CONTAINER_OPENING = Predicate(
+    "container_opening", ContainerOpening, _S, "how far a container opens"
+)
+USUAL_LOCATION = Predicate("usual_location", UsualLocation, _S, "where a type of object is kept")
+SUPPORTING_SURFACE = Predicate(
+    "supporting_surface", SupportingSurface, _S, "a surface objects can stand on"
+)
+
+SCENE_PREDICATES: tuple[Predicate[Any], ...] = (
+    CONTAINER,
+    CONTAINER_KIND,
+    CONTAINER_OPENING,
+    USUAL_LOCATION,
+    SUPPORTING_SURFACE,
+)
