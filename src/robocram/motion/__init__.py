@@ -12,6 +12,7 @@ from robocram.motion.errors import MotionError
 from robocram.motion.joint_limits import JointLimits, joint_limits
 from robocram.motion.joint_trajectory import BASE_JOINTS, JointTrajectory, TrajectoryPoint, still
 from robocram.motion.time_parameterization import time_parameterize
+from robocram.motion.trajectory_log import report_executed, trajectory_listener
 
 __all__ = [
     "BASE_JOINTS",
@@ -23,6 +24,8 @@ __all__ = [
     "TrajectoryPoint",
     "joint_limits",
     "plan_base_path",
+    "report_executed",
     "still",
     "time_parameterize",
+    "trajectory_listener",
 ]
