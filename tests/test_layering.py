@@ -137,16 +137,7 @@ def test_logic_uses_stdlib_only() -> None:
 
 # Import cycles between modules of one package that are not fixed yet, with their owner.
 # Each entry is the set of modules in one cycle (a strongly connected component).
-KNOWN_CYCLES: list[frozenset[str]] = [
-    # World.knowledge_base imports world.predicates inside a function; predicates imports
-    # World for typing (owner: world).
-    frozenset({"robocram.world.predicates", "robocram.world.world"}),
-    # task imports task_listeners; task_listeners imports Task for typing (owner: execution).
-    frozenset({"robocram.execution.task", "robocram.execution.task_listeners"}),
-    # robot_model imports description; description imports RobotModel for typing
-    # (owner: robots).
-    frozenset({"robocram.robots.description", "robocram.robots.robot_model"}),
-]
+KNOWN_CYCLES: list[frozenset[str]] = []
 
 
 def _module_name(path: Path) -> str:

@@ -12,8 +12,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TypeVar, cast
 
-from robocram.robots.description import BoxSpec, FrameSpec
 from robocram.robots.errors import DescriptionError, MissingMeshWarning, UrdfError, closest_names
+from robocram.robots.model_additions import BoxSpec, FrameSpec
 from robocram.robots.package_resolver import PackageResolver
 from robocram.robots.safe_xml import decode_xml, parse_xml
 from robocram.robots.urdf_elements import Collision, Geometry, Inertial, Joint, Link

@@ -11,21 +11,19 @@ Prolog's own.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from robocram.knowledge import Source, register_predicates
 from robocram.knowledge.registration import Implementation
 from robocram.logic import KnowledgeBase, Var
 from robocram.logic.limits import current_stop_check
 from robocram.tf import Pose
-
-if TYPE_CHECKING:
-    from robocram.world.world import World
+from robocram.world.predicate_world import PredicateWorld
 
 Solutions = Iterator[tuple[Any, ...] | None]
 
 
-def world_knowledge_base(world: World) -> KnowledgeBase:
+def world_knowledge_base(world: PredicateWorld) -> KnowledgeBase:
     """A new knowledge base with the predicates of ``world``."""
     kb = KnowledgeBase()
     implementations: dict[str, Implementation] = {}
@@ -35,7 +33,7 @@ def world_knowledge_base(world: World) -> KnowledgeBase:
     return kb
 
 
-def _names(world: World, arg: Any, robots_only: bool = False) -> list[str]:
+def _names(world: PredicateWorld, arg: Any, robots_only: bool = False) -> list[str]:
     """The object names ``arg`` may stand for: all when unbound, else itself if it exists."""
     pool = world.robots() if robots_only else world.objects()
     if isinstance(arg, Var):
@@ -43,11 +41,11 @@ def _names(world: World, arg: Any, robots_only: bool = False) -> list[str]:
     return [o.name for o in pool if o.name == arg]
 
 
-def _ours(world: World, arg: Any) -> bool:
+def _ours(world: PredicateWorld, arg: Any) -> bool:
     return isinstance(arg, Var) or arg is world
 
 
-def _relation(world: World, test: Callable[[str, str], bool]) -> Callable[..., Solutions]:
+def _relation(world: PredicateWorld, test: Callable[[str, str], bool]) -> Callable[..., Solutions]:
     """A predicate ``p(W, A, B)`` enumerating the pairs of distinct objects for which
     ``test`` holds."""
 
@@ -62,7 +60,7 @@ def _relation(world: World, test: Callable[[str, str], bool]) -> Callable[..., S
     return solve
 
 
-def _objects(world: World) -> dict[str, Implementation]:
+def _objects(world: PredicateWorld) -> dict[str, Implementation]:
     def world_(w: Any) -> Solutions:
         if _ours(world, w):
             yield (world,)
@@ -108,7 +106,7 @@ def _pose_value(value: Any) -> Any:
     return value
 
 
-def _robots(world: World) -> dict[str, Implementation]:
+def _robots(world: PredicateWorld) -> dict[str, Implementation]:
     def robot(w: Any, name: Any) -> Solutions:
         if _ours(world, w):
             yield from ((world, n) for n in _names(world, name, robots_only=True))
@@ -141,7 +139,7 @@ def _robots(world: World) -> dict[str, Implementation]:
     }
 
 
-def _attachments(world: World) -> dict[str, Implementation]:
+def _attachments(world: PredicateWorld) -> dict[str, Implementation]:
     def attached(w: Any, rob: Any, link: Any, obj: Any) -> Solutions:
         if not _ours(world, w):
             return
@@ -162,7 +160,7 @@ def _attachments(world: World) -> dict[str, Implementation]:
     return {"attached/4": attached, "attach/4": attach, "detach/2": detach}
 
 
-def _reasoning(world: World) -> dict[str, Implementation]:
+def _reasoning(world: PredicateWorld) -> dict[str, Implementation]:
     def stable(w: Any, obj: Any) -> Solutions:
         if _ours(world, w):
             yield from ((world, n) for n in _names(world, obj) if world.stable(n))
