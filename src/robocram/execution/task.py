@@ -209,7 +209,7 @@ class Task:
             observer.task_started(self)
 
     def finish(
-        self, status: TaskStatus, result: Any = None, failure: BaseException | None = None
+        self, status: TaskStatus, result: object = None, failure: BaseException | None = None
     ) -> None:
         """Record the outcome and end time."""
         self.result, self.failure = result, failure

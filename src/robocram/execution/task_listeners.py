@@ -47,7 +47,7 @@ def task_listeners() -> tuple[TaskListener, ...]:
     return tuple(o for o in TASK_OBSERVERS.get() if isinstance(o, TaskListener))
 
 
-def notify_performing(task: Task, designator: Any) -> None:
+def notify_performing(task: Task, designator: object) -> None:
     """Call ``performing`` on every current listener."""
     for listener in task_listeners():
         listener.performing(task, designator)
