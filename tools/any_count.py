@@ -31,19 +31,20 @@ def _any_names(tree: ast.Module) -> tuple[set[str], set[str]]:
     return anys, modules
 
 
+def _is_any(node: ast.AST, anys: set[str], modules: set[str]) -> bool:
+    """Whether ``node`` names ``typing.Any`` (as ``Any`` or as ``typing.Any``)."""
+    if isinstance(node, ast.Name):
+        return node.id in anys
+    return (
+        isinstance(node, ast.Attribute)
+        and node.attr == "Any"
+        and isinstance(node.value, ast.Name)
+        and node.value.id in modules
+    )
+
+
 def _count_in(node: ast.AST, anys: set[str], modules: set[str]) -> int:
-    count = 0
-    for inner in ast.walk(node):
-        if isinstance(inner, ast.Name) and inner.id in anys:
-            count += 1
-        elif (
-            isinstance(inner, ast.Attribute)
-            and inner.attr == "Any"
-            and isinstance(inner.value, ast.Name)
-            and inner.value.id in modules
-        ):
-            count += 1
-    return count
+    return sum(_is_any(inner, anys, modules) for inner in ast.walk(node))
 
 
 def _quoted_annotations(tree: ast.Module) -> list[ast.AST]:

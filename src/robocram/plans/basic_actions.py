@@ -14,7 +14,7 @@ from robocram.plans.errors import PlanSetupError
 from robocram.plans.robot_facts import current_robot, parking, robot_arms, torso_limit
 
 
-def navigate(target: Any) -> Any:
+def navigate(target: object) -> Any:
     """Drive the base to ``target`` (a pose, a PoseStamped or a location designator)."""
     return perform(a.motion(type="going", target=target))
 
@@ -52,7 +52,7 @@ def move_torso(joint_angle: float | str) -> Any:
     return perform(a.motion(type="moving-torso", joint_angle=joint_angle))
 
 
-def look(target: Any) -> Any:
+def look(target: object) -> Any:
     """Point the camera at ``target``."""
     return perform(a.motion(type="looking", target=target))
 

@@ -11,7 +11,6 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass, field, fields
 from pathlib import Path
-from typing import Any
 
 from robocram.robots.errors import DescriptionError
 from robocram.robots.findings import Finding
@@ -187,7 +186,7 @@ class LoadedDescription(RobotDescription):
 
     @classmethod
     def checked(
-        cls, desc: RobotDescription, model: RobotModel, **changes: Any
+        cls, desc: RobotDescription, model: RobotModel, **changes: object
     ) -> LoadedDescription:
         """``desc`` with ``model`` and ``changes`` applied (for ``load_description``)."""
         values = {f.name: getattr(desc, f.name) for f in fields(RobotDescription)}
