@@ -24,7 +24,7 @@ from robocram.tf import PoseStamped
 PARKING_BACKOFFS = (0.15, 0.3)  # [m] the base backs away before each further parking try
 
 
-def navigate(target: Any) -> Any:
+def navigate(target: object) -> Any:
     """Drive the base to ``target`` (a pose, a PoseStamped or a location designator)."""
     return perform(a.motion(type="going", target=target))
 
@@ -76,7 +76,7 @@ def move_torso(joint_angle: float | str) -> Any:
     return perform(a.motion(type="moving-torso", joint_angle=joint_angle))
 
 
-def look(target: Any) -> Any:
+def look(target: object) -> Any:
     """Point the camera at ``target``."""
     return perform(a.motion(type="looking", target=target))
 
