@@ -46,7 +46,7 @@ def park_arms(arm: str | None = None) -> list[str]:
     return parked
 
 
-def _park(robot: str, arm: str, states: list[list[Any]]) -> None:
+def _park(robot: str, arm: str, states: list[list[object]]) -> None:
     """Park ``arm``; when its parking pose would hit what the robot stands at (a table the
     hand just put something on), back the base away and try again."""
     for attempt in range(len(PARKING_BACKOFFS) + 1):
