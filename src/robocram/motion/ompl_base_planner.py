@@ -10,19 +10,17 @@ so queries take turns (a lock).
 
 from __future__ import annotations
 
-import threading
 from collections.abc import Callable
 
 import numpy as np
 from ompl import base as ob
 from ompl import geometric as og
-from ompl import util as ou
 
 from robocram.motion.base_collision import BaseCollisionChecker
+from robocram.motion.ompl_query import POLLS_PER_CHECK, OmplQuery
 from robocram.motion.planar_motion import reeds_shepp_poses, straight_poses, wrapped
 from robocram.motion.robot_footprint import FloatArray
 
-_OMPL_TURNS = threading.Lock()  # OMPL's random generator is one per process
 SIMPLIFY_SHARE = 0.25  # of the budget, added for shortening the path
 
 
@@ -95,17 +93,14 @@ def planned_waypoints(
     setup.setStartAndGoalStates(ends[0], ends[1])
     limit = checker.fast_checks + budget
     checker.confirm_everywhere = False
+    polls = POLLS_PER_CHECK * budget
     try:
-        with _OMPL_TURNS:
-            ou.setLogLevel(ou.LOG_NONE)
-            ou.RNG.setSeed(seed + 1)  # OMPL ignores a seed of 0
-            setup.solve(ob.PlannerTerminationCondition(lambda: checker.fast_checks > limit))
+        with OmplQuery(seed, lambda: checker.fast_checks > limit, polls) as query:
+            setup.solve(query.condition())
             if not setup.haveExactSolutionPath():
                 return None
             extra = checker.fast_checks + int(SIMPLIFY_SHARE * budget)
-            setup.simplifySolution(
-                ob.PlannerTerminationCondition(lambda: checker.fast_checks > extra)
-            )
+            setup.simplifySolution(query.condition(lambda: checker.fast_checks > extra))
             states = [_pose(s) for s in setup.getSolutionPath().getStates()]
     finally:
         checker.confirm_everywhere = True

@@ -1,31 +1,26 @@
 """OMPL's RRTConnect (MoveIt's default planner) in a robot's joint space, made repeatable.
 
-OMPL's random numbers are process-global: :data:`OMPL_LOCK` serialises queries and each
-query reseeds OMPL first, so the same query and seed give the same path in any process,
-whatever ran before. The budget is counted (configurations checked), never timed, so an
-idle and a loaded machine give the same answer. Motions between tree states are checked
+Queries are seeded, locked and budgeted by :mod:`ompl_query`: the same query and seed
+give the same path in any process, on an idle or a loaded machine, and a stopped task
+ends the search at once. Motions between tree states are checked
 with the same dense segment check as every other path (:mod:`segment_check`).
 """
 
 from __future__ import annotations
 
-import threading
 from collections.abc import Sequence
 
 import numpy as np
 from ompl import base as ob
 from ompl import geometric as og
-from ompl import util as ou
 
 from robocram.motion.configuration_checker import ConfigurationChecker
 from robocram.motion.joint_trajectory import FloatArray
+from robocram.motion.ompl_query import POLLS_PER_CHECK, OmplQuery
 from robocram.motion.segment_check import CheckCounter, segment_free
 from robocram.motion.travel_bound import TravelBound
 
 RANGE = 0.5  # [rad] longest tree edge: short edges are cheap to check and rarely blocked
-POLL_LIMIT = 4  # termination polls per budgeted check, in case OMPL loops without checks
-OMPL_LOCK = threading.Lock()  # OMPL's random number generator is one per process
-ou.setLogLevel(ou.LOG_NONE)
 
 
 class _DenseMotions(ob.MotionValidator):
@@ -92,15 +87,8 @@ def rrt_connect(
     planner.setRange(RANGE)
     setup.setPlanner(planner)
     limit = counter.checks + budget
-    polls = [0]
-
-    def spent() -> bool:  # counted, never timed; polls bound loops that check nothing
-        polls[0] += 1
-        return counter.checks > limit or polls[0] > POLL_LIMIT * budget
-
-    with OMPL_LOCK:
-        ou.RNG.setSeed(seed + 1)  # 0 would mean "no seed"
-        solved = setup.solve(ob.PlannerTerminationCondition(spent))
+    with OmplQuery(seed, lambda: counter.checks > limit, POLLS_PER_CHECK * budget) as query:
+        solved = setup.solve(query.condition())
         if not solved or not setup.haveExactSolutionPath():
             return None
         states = setup.getSolutionPath().getStates()
