@@ -29,9 +29,7 @@ from robocram.world import World
 MAP_FRAME = "map"
 
 
-def export_mcap(
-    db: TraceDatabase, run: int, out: str | Path, period: float = SAMPLE_PERIOD
-) -> int:
+def export_mcap(db: TraceDatabase, run: int, out: str | Path, period: float = SAMPLE_PERIOD) -> int:
     """Write run ``run`` of ``db`` to the MCAP file ``out``; return the messages written.
 
     Trajectories are sampled every ``period`` [s] of motion time.

@@ -21,7 +21,7 @@ from robocram.traces.database import TraceDatabase
 from robocram.traces.errors import TraceError
 from robocram.traces.queries import require_run, world_state_times
 from robocram.traces.run_replay import replay_frames
-from robocram.traces.trajectory_record import clock_of, run_trajectories
+from robocram.traces.trajectory_record import replay_clock, run_trajectories
 from robocram.traces.world_record import build_scene
 
 GIF_PERIOD = 0.2  # [s] of replay time between two rendered frames, at most MAX_FRAMES
@@ -99,10 +99,9 @@ def animate_run(
 def _replay_span(db: TraceDatabase, run: int) -> float:
     """[s] of replay time from the run's start to its last stored moment."""
     start = require_run(db, run).start
-    trajectories = run_trajectories(db, run)
-    clock = clock_of(start, trajectories)
+    clock = replay_clock(db, run)
     ends = [clock.at(t) for _, t, _ in world_state_times(db, run)]
-    ends += [start + t.end for t in trajectories]
+    ends += [start + t.end for t in run_trajectories(db, run)]
     return max(ends, default=start) - start
 
 
@@ -110,8 +109,7 @@ def _write_gif(out: Path, images: list[np.ndarray]) -> Path:
     out.parent.mkdir(parents=True, exist_ok=True)
     first = Image.fromarray(images[0]).quantize(COLORS, method=Image.Quantize.MEDIANCUT)
     frames = [
-        Image.fromarray(image).quantize(palette=first, dither=Image.Dither.NONE)
-        for image in images
+        Image.fromarray(image).quantize(palette=first, dither=Image.Dither.NONE) for image in images
     ]
     frames[0].save(
         out,

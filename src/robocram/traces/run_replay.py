@@ -19,7 +19,8 @@ from robocram.tf.quaternion import from_euler, to_euler
 from robocram.traces.database import TraceDatabase
 from robocram.traces.errors import TraceError
 from robocram.traces.queries import require_run, world_state_times
-from robocram.traces.trajectory_record import StoredTrajectory, clock_of, run_trajectories
+from robocram.traces.replay_clock import ReplayClock
+from robocram.traces.trajectory_record import StoredTrajectory, run_trajectories
 from robocram.traces.world_record import StoredWorldState, load_world_state
 from robocram.world import World
 
@@ -54,9 +55,12 @@ def replay_frames(
         raise TraceError(f"the replay sampling period must be positive, got {period} s")
     start = require_run(db, run).start
     trajectories = run_trajectories(db, run)
-    clock = clock_of(start, trajectories)
+    states = world_state_times(db, run)
+    clock = ReplayClock(
+        start, [(t.time, t.duration) for t in trajectories], [t for _, t, _ in states]
+    )
     events: list[tuple[float, int, int | StoredTrajectory, str | None]] = [
-        (time, 1, state_id, path) for state_id, time, path in world_state_times(db, run)
+        (time, 1, state_id, path) for state_id, time, path in states
     ]
     events += [(t.time, 0, t, t.task_path) for t in trajectories]
     events.sort(key=lambda e: (e[0], e[1]))  # a motion's trajectories before its end state

@@ -20,7 +20,7 @@ from sqlalchemy import select
 
 from robocram.motion import JointTrajectory, TrajectoryPoint
 from robocram.traces.database import TraceDatabase
-from robocram.traces.queries import require_run
+from robocram.traces.queries import require_run, world_state_times
 from robocram.traces.replay_clock import ReplayClock, replay_starts
 from robocram.traces.schema import TaskRow, TrajectoryRow
 
@@ -94,18 +94,16 @@ def run_trajectories(db: TraceDatabase | str | Path, run: int) -> list[StoredTra
     with db.read() as session:
         rows = [(row, path) for row, path in session.execute(query)]
     loaded = [_loaded(row, path) for row, path in rows]
-    starts = replay_starts(run_start, [(t.time, t.duration) for t in loaded])
+    states = [time for _, time, _ in world_state_times(db, run)]
+    starts = replay_starts(run_start, [(t.time, t.duration) for t in loaded], states)
     return [replace(t, start=start - run_start) for t, start in zip(loaded, starts, strict=True)]
 
 
 def replay_clock(db: TraceDatabase, run: int) -> ReplayClock:
     """The replay clock of run ``run``: its wall times stretched to hold its trajectories."""
-    return clock_of(require_run(db, run).start, run_trajectories(db, run))
-
-
-def clock_of(run_start: float, trajectories: list[StoredTrajectory]) -> ReplayClock:
-    """The replay clock of a run that started at ``run_start`` and executed ``trajectories``."""
-    return ReplayClock(run_start, [(t.time, t.duration) for t in trajectories])
+    states = [time for _, time, _ in world_state_times(db, run)]
+    reported = [(t.time, t.duration) for t in run_trajectories(db, run)]
+    return ReplayClock(require_run(db, run).start, reported, states)
 
 
 def _loaded(row: TrajectoryRow, path: str | None) -> StoredTrajectory:
