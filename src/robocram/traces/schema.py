@@ -134,7 +134,7 @@ class CostmapRow(Base):
 class TrajectoryRow(Base):
     """A trajectory a robot executed while a task of the run ran, in execution order.
 
-    The points are float64 arrays, row-major (points x joints), zlib-compressed: exact, and
+    The points are little-endian float64 arrays, row-major (points x joints): exact, and
     one row per trajectory however many points it has.
     """
 
