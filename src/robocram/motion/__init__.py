@@ -6,6 +6,7 @@ timed under the robot's limits; projection follows the trajectory and ROS sends 
 See docs/motion.md.
 """
 
+from robocram.motion.arm_motion import ArmMotion, MotionSettings, plan_arm_motion, plan_tool_line
 from robocram.motion.base_path import BasePath, plan_base_path
 from robocram.motion.collision_scene import CollisionScene
 from robocram.motion.errors import MotionError
@@ -15,15 +16,19 @@ from robocram.motion.time_parameterization import time_parameterize
 from robocram.motion.trajectory_log import report_executed, trajectory_listener
 
 __all__ = [
+    "ArmMotion",
     "BASE_JOINTS",
     "BasePath",
     "CollisionScene",
     "JointLimits",
     "JointTrajectory",
     "MotionError",
+    "MotionSettings",
     "TrajectoryPoint",
     "joint_limits",
+    "plan_arm_motion",
     "plan_base_path",
+    "plan_tool_line",
     "report_executed",
     "still",
     "time_parameterize",

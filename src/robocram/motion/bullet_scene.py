@@ -15,6 +15,8 @@ from robocram.motion.configuration_checker import Configuration, LinkPair
 from robocram.motion.errors import MotionError
 from robocram.world import World, WorldObject
 
+CLEARANCE_REACH = 0.1  # [m] distances asked for: a free configuration clears this much
+
 
 class BulletScene:
     """Checks configurations of ``joints`` of ``robot`` in ``world`` (one thread at a time)."""
@@ -26,6 +28,7 @@ class BulletScene:
         joints: Sequence[str],
         allowed_links: Collection[str] = (),
         distance: float = 0.0,
+        allowed_pairs: Collection[LinkPair] = (),
     ) -> None:
         self.world = world
         self.robot = robot
@@ -37,7 +40,9 @@ class BulletScene:
                 f"joints {unknown} are not movable joints of {robot}; known: {sorted(known)}"
             )
         self.allowed_links = frozenset(allowed_links)
+        self.allowed_pairs = frozenset(allowed_pairs)  # (robot link | held object, other)
         self.distance = distance  # [m] nearer than this counts as touching
+        self.moving_links = _links_below(world, robot, self._joints)
 
     @property
     def joints(self) -> tuple[str, ...]:
@@ -66,6 +71,35 @@ class BulletScene:
         """Whether ``q`` collides with nothing."""
         return not self.colliding(q, first_only=True)
 
+    def clearance(self, q: Configuration, reach: float = CLEARANCE_REACH) -> float:
+        """How far [m] the moving links (and what they hold) are from anything they may not
+        touch, at ``q``; ``reach`` when nothing is nearer, 0 or less when they touch."""
+        values = dict(zip(self._joints, (float(v) for v in q), strict=True))
+        world = self.world
+        model = world.robot(self.robot).description.model
+        before = {
+            j: v for j, v in world.joint_states(self.robot).items() if model.joints[j].mimic is None
+        }
+        world.set_joint_states(self.robot, values)
+        try:
+            return self._clearance_now(reach)
+        finally:
+            world.set_joint_states(self.robot, before)
+
+    def _clearance_now(self, reach: float) -> float:
+        world = self.world
+        held = [world.object(name) for name in world.attachments(self.robot)]
+        floors = world.objects("floor")
+        nearest = reach
+        links = [link for link in self.moving_links if link not in self.allowed_links]
+        for _, _, _, gap in world.link_distances(self.robot, [*held, *floors], reach, links=links):
+            nearest = min(nearest, gap - self.distance)
+        for item in held:
+            skip = [world.robot(self.robot), *(h for h in held if h is not item), *floors]
+            for _, _, _, gap in world.link_distances(item, skip, reach):
+                nearest = min(nearest, gap - self.distance)
+        return nearest
+
     def colliding_now(self, first_only: bool = False) -> list[LinkPair]:
         """The colliding pairs of the robot (and what it holds) as it is in the world now."""
         world = self.world
@@ -75,17 +109,36 @@ class BulletScene:
         for link, obj, other_link in world.link_pairs_in_contact(
             self.robot, [*held, *floors], self.distance
         ):
-            if link not in self.allowed_links:
-                hits[(link, _named(world, obj, other_link))] = None
+            pair = (link, _named(world, obj, other_link))
+            if link not in self.allowed_links and pair not in self.allowed_pairs:
+                hits[pair] = None
                 if first_only:
                     return list(hits)
         for item in held:
             skip = [world.robot(self.robot), *(h for h in held if h is not item), *floors]
             for _, obj, other_link in world.link_pairs_in_contact(item, skip, self.distance):
-                hits[(item.name, _named(world, obj, other_link))] = None
-                if first_only:
-                    return list(hits)
+                pair = (item.name, _named(world, obj, other_link))
+                if pair not in self.allowed_pairs:
+                    hits[pair] = None
+                    if first_only:
+                        return list(hits)
         return list(hits)
+
+
+def _links_below(world: World, robot: str, joints: Sequence[str]) -> tuple[str, ...]:
+    """The links some joint of ``joints`` moves (those below it), in the world's link order."""
+    model = world.robot(robot).description.model
+    children: dict[str, list[str]] = {}
+    for joint in model.joints.values():
+        children.setdefault(joint.parent, []).append(joint.child)
+    below: set[str] = set()
+    todo = [model.joints[j].child for j in joints]
+    while todo:
+        link = todo.pop()
+        if link not in below:
+            below.add(link)
+            todo.extend(children.get(link, ()))
+    return tuple(link for link in world.link_names(robot) if link in below)
 
 
 def _named(world: World, obj: WorldObject, link: str) -> str:

@@ -9,7 +9,7 @@ world itself) and the coal scene (a snapshot, for speed).
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import Protocol
+from typing import Protocol, runtime_checkable
 
 import numpy as np
 import numpy.typing as npt
@@ -32,4 +32,13 @@ class ConfigurationChecker(Protocol):
 
     def is_free(self, q: Configuration) -> bool:
         """Whether ``q`` collides with nothing (the fast path)."""
+        ...
+
+
+@runtime_checkable
+class ClearanceChecker(ConfigurationChecker, Protocol):
+    """A checker that also tells how far a configuration is from touching anything."""
+
+    def clearance(self, q: Configuration) -> float:
+        """The distance [m] from the moving links to what they may not touch (<= 0: touch)."""
         ...

@@ -60,6 +60,14 @@ def plan_joint_path(
     counter = CheckCounter()
     a, b = np.asarray(start, dtype=float), np.asarray(goal, dtype=float)
     joints = checker.joints
+    for end, q, fraction in (("start", a, 0.0), ("goal", b, 1.0)):
+        pairs = checker.colliding(q)
+        if pairs:
+            raise ManipulationPathBlocked(
+                f"{what}'s {end} configuration is in collision: {_pairs(pairs)}",
+                colliding_pairs=tuple(pairs),
+                path_fraction=fraction,
+            )
     if segment_free(checker, a, b, bound, counter):
         return JointPath(joints, (tuple(a), tuple(b)), "straight", counter.checks)
     if plan:

@@ -22,6 +22,7 @@ from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.segment_check import CheckCounter, segment_free
 from robocram.motion.travel_bound import TravelBound
 
+RANGE = 0.5  # [rad] longest tree edge: short edges are cheap to check and rarely blocked
 POLL_LIMIT = 4  # termination polls per budgeted check, in case OMPL loops without checks
 OMPL_LOCK = threading.Lock()  # OMPL's random number generator is one per process
 ou.setLogLevel(ou.LOG_NONE)
@@ -47,6 +48,9 @@ class _DenseMotions(ob.MotionValidator):
     def checkMotion(self, s1: ob.State, s2: ob.State, *rest: object) -> bool:  # noqa: N802
         a = np.array([s1[i] for i in range(self._width)])
         b = np.array([s2[i] for i in range(self._width)])
+        self._counter.checks += 1
+        if not self._checker.is_free(b):  # OMPL takes s1 as valid, not s2
+            return False
         return segment_free(self._checker, a, b, self._bound, self._counter)
 
 
@@ -84,7 +88,9 @@ def rrt_connect(
     for i in range(width):
         a[i], b[i] = float(start[i]), float(goal[i])
     setup.setStartAndGoalStates(a, b)
-    setup.setPlanner(og.RRTConnect(si))
+    planner = og.RRTConnect(si)
+    planner.setRange(RANGE)
+    setup.setPlanner(planner)
     limit = counter.checks + budget
     polls = [0]
 

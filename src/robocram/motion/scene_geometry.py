@@ -21,7 +21,12 @@ from robocram.motion.allowed_contacts import AllowedContacts, Other
 from robocram.motion.coal_shapes import coal_geometries
 from robocram.motion.reach_bounds import Sphere, reach_sphere, shape_sphere
 from robocram.motion.scene_snapshot import PlacedShape, SceneSnapshot
-from robocram.motion.self_collision import active_joints, adjacent_pairs, moving_group
+from robocram.motion.self_collision import (
+    active_joints,
+    adjacent_pairs,
+    moving_group,
+    same_arm_chains,
+)
 
 
 @dataclass(frozen=True)
@@ -165,7 +170,9 @@ def _add_pairs(
     rules: AllowedContacts,
 ) -> list[tuple[str, str]]:
     with_geometry = {o.link for o in owners if o.kind == "robot"}
-    adjacent = adjacent_pairs(snap.description.model, with_geometry)
+    model = snap.description.model
+    roots = [model.joints[arm.joints[0]].child for arm in snap.description.arms.values()]
+    adjacent = adjacent_pairs(model, with_geometry) | same_arm_chains(model, roots)
     labels: list[tuple[str, str]] = []
     for i, a in enumerate(owners):
         if a.kind == "static" or not group[a.link]:

@@ -14,7 +14,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from robocram.motion.configuration_checker import ConfigurationChecker, LinkPair
+from robocram.motion.configuration_checker import (
+    ClearanceChecker,
+    ConfigurationChecker,
+    LinkPair,
+)
 from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.travel_bound import TravelBound
 
@@ -38,6 +42,31 @@ def interior(n: int) -> Iterator[int]:
             spans.append((middle, high))
 
 
+def _advance_free(
+    checker: ClearanceChecker,
+    qa: FloatArray,
+    qb: FloatArray,
+    bound: TravelBound,
+    counter: CheckCounter,
+) -> bool:
+    """Conservative advancement: from each checked configuration, step as far as its
+    clearance allows (no point can travel further than that), at least 1 cm of travel."""
+    travel = bound.travel(qa, qb)  # [m] the most any point moves from qa to qb
+    if travel <= 0.0:
+        return True
+    floor = bound.max_link_travel / travel
+    s = 0.0
+    while True:
+        q = qa + (qb - qa) * s
+        gap = checker.clearance(q)
+        counter.checks += 1
+        if gap <= 0.0 and not checker.is_free(q):  # the contact check decides, as everywhere
+            return False
+        s += max(gap / travel, floor)
+        if s >= 1.0:
+            return True
+
+
 def segment_free(
     checker: ConfigurationChecker,
     qa: FloatArray,
@@ -47,10 +76,13 @@ def segment_free(
 ) -> bool:
     """Whether every checked configuration strictly between ``qa`` and ``qb`` is free.
 
-    The ends are not checked: a planner checks its states once, on their own.
+    The ends are not checked: a planner checks its states once, on their own. A checker
+    that can tell its clearance is walked by conservative advancement instead.
     """
-    n = bound.steps(qa, qb)
     qa, qb = np.asarray(qa, dtype=float), np.asarray(qb, dtype=float)
+    if isinstance(checker, ClearanceChecker):
+        return _advance_free(checker, qa, qb, bound, counter)
+    n = bound.steps(qa, qb)
     for k in interior(n):
         counter.checks += 1
         if not checker.is_free(qa + (qb - qa) * (k / n)):

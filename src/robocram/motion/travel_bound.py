@@ -35,6 +35,11 @@ class TravelBound:
     max_link_travel: float = MAX_LINK_TRAVEL
     max_joint_step: float = MAX_JOINT_STEP
 
+    def travel(self, qa: FloatArray, qb: FloatArray) -> float:
+        """The most [m] any point of the moving links can travel from ``qa`` to ``qb``."""
+        dq = np.abs(np.asarray(qb, dtype=float) - np.asarray(qa, dtype=float))
+        return float(self.lever @ dq)
+
     def steps(self, qa: FloatArray, qb: FloatArray) -> int:
         """Segments between checks on the straight line ``qa`` -> ``qb`` (at least 1)."""
         dq = np.abs(np.asarray(qb, dtype=float) - np.asarray(qa, dtype=float))

@@ -10,8 +10,18 @@ from typing import Any
 
 from robocram.designators import ObjectDesignator, a, an
 from robocram.execution import perform
+from robocram.execution.failures import ManipulationPathBlocked
 from robocram.plans.errors import PlanSetupError
-from robocram.plans.robot_facts import current_robot, parking, robot_arms, torso_limit
+from robocram.plans.robot_facts import (
+    base_frame,
+    current_robot,
+    parking,
+    robot_arms,
+    torso_limit,
+)
+from robocram.tf import PoseStamped
+
+PARKING_BACKOFFS = (0.15, 0.3)  # [m] the base backs away before each further parking try
 
 
 def navigate(target: Any) -> Any:
@@ -29,11 +39,25 @@ def park_arms(arm: str | None = None) -> list[str]:
             continue
         if pose.joint_states:
             states = [[joint, value] for joint, value in pose.joint_states]
-            perform(a.motion(type="moving-arm-joints", arm=name, configuration=states))
+            _park(robot, name, states)
         parked.append(name)
     if arm is not None and not parked:
         raise PlanSetupError(f"{robot} has no arm {arm!r} with a parking configuration")
     return parked
+
+
+def _park(robot: str, arm: str, states: list[list[Any]]) -> None:
+    """Park ``arm``; when its parking pose would hit what the robot stands at (a table the
+    hand just put something on), back the base away and try again."""
+    for attempt in range(len(PARKING_BACKOFFS) + 1):
+        try:
+            perform(a.motion(type="moving-arm-joints", arm=arm, configuration=states))
+            return
+        except ManipulationPathBlocked:
+            if attempt == len(PARKING_BACKOFFS):
+                raise
+            back = PoseStamped(base_frame(robot), (-PARKING_BACKOFFS[attempt], 0.0, 0.0))
+            perform(a.motion(type="going", target=back))
 
 
 def move_torso(joint_angle: float | str) -> Any:

@@ -15,16 +15,20 @@ one), so a projection gives bit-identical joints on an idle and a loaded machine
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
+from dataclasses import replace
 
 from robocram.execution import checkpoint
-from robocram.execution.failures import ManipulationGoalNotReached
+from robocram.execution.failures import ManipulationGoalNotReached, ManipulationPathBlocked
 from robocram.kinematics import BaseMotion, IKResult, PlanarBase, base_in_ik, solve_ik
-from robocram.projection.collision_mode import collision_check
+from robocram.motion import ArmMotion, plan_arm_motion, plan_tool_line
+from robocram.projection.collision_mode import allowed_links, collision_check
 from robocram.projection.errors import unknown_name
-from robocram.projection.navigation import moved_base, place_base
+from robocram.projection.navigation import drive, moved_base
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.projection.reach_failure import unreachable
+from robocram.projection.trajectory_follower import follow
 from robocram.tf import Pose, PoseLike, PoseStamped
 
 POSITION_TOLERANCE = 0.01  # [m] between the reached tool frame and the target
@@ -114,10 +118,41 @@ def move_tcp(
         raise unreachable(desc, arm, target, target_in_map, collision_mode, result)
     motion = result.base_motion
     if motion is not None and motion != BaseMotion():
-        place_base(robot, moved_base(robot, motion))
-    robot.world.set_joint_states(robot.name, dict(result.joint_positions))
+        drive(robot, moved_base(robot, motion))
+        target_in_base = robot.base_pose().inverse() * target_in_map
+    arm_motion = _arm_motion(robot, arm, result, target_in_base, collision_mode)
+    follow(robot, arm_motion.trajectory)
     reached = robot.world.link_pose(robot.name, spec.tool_frame)
     return ensure_reached(robot.name, arm, reached, target, target_in_map)
+
+
+def _arm_motion(
+    robot: ProjectedRobot, arm: str, result: IKResult, target_in_base: Pose, mode: str
+) -> ArmMotion:
+    """The checked, timed motion to IK's answer: a straight tool line for ``allow_hand``
+    motions (approach, lift, put, retreat) when the whole line can be followed, else a
+    joint-space path (straight, or planned round what is in the way)."""
+    settings = robot.motion
+    mode = mode.replace("-", "_")
+    if mode == "allow_all":
+        settings = replace(settings, check=False)
+    allowed = allowed_links(robot, arm, mode)
+    goal = dict(result.joint_positions)
+    what = f"{robot.name}'s {arm} arm"
+    if mode == "allow_hand" and robot.description.torso_joint not in goal:
+        line = plan_tool_line(
+            robot.world, robot.name, arm, target_in_base, allowed_links=allowed, settings=settings
+        )
+        if line.fraction >= 1.0:
+            return line
+    try:
+        return plan_arm_motion(
+            robot.world, robot.name, goal, allowed_links=allowed, settings=settings, what=what
+        )
+    except ManipulationPathBlocked as failure:
+        failure.arm = arm
+        failure.target = target_in_base
+        raise
 
 
 def ensure_reached(
@@ -156,7 +191,13 @@ def move_joints(robot: ProjectedRobot, arm: str, configuration: object) -> dict[
     for joint in values:
         if joint not in allowed:
             raise unknown_name("joint", joint, f"{robot.name}'s {arm} arm", allowed)
-    clamped = robot.world.set_joint_states(robot.name, values)
+    clamped = []
+    if clamped_goals(robot, values):  # set (clamped) at once: the failure says so
+        clamped = robot.world.set_joint_states(robot.name, values)
+    else:
+        what = f"{robot.name}'s {arm} arm"
+        motion = plan_arm_motion(robot.world, robot.name, values, settings=robot.motion, what=what)
+        follow(robot, motion.trajectory)
     reached = {j: robot.world.joint_states(robot.name)[j] for j in values}
     if clamped:
         culprits = {c.name: (c.requested, c.lower, c.upper) for c in clamped}
@@ -168,6 +209,19 @@ def move_joints(robot: ProjectedRobot, arm: str, configuration: object) -> dict[
             reached=reached,
         )
     return reached
+
+
+def clamped_goals(robot: ProjectedRobot, values: Mapping[str, float]) -> list[str]:
+    """The joints of ``values`` outside their limits (they would be clamped)."""
+    limits = robot.description.model.joints
+    found = []
+    for name, value in values.items():
+        joint = limits[name]
+        low = joint.lower if joint.lower is not None else -math.inf
+        high = joint.upper if joint.upper is not None else math.inf
+        if not low <= value <= high:
+            found.append(name)
+    return found
 
 
 def joint_values(configuration: object) -> dict[str, float]:

@@ -8,12 +8,13 @@ joints are put back before the check returns, so IK never leaves the robot moved
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 
 from robocram.kinematics import split_base_motion
 from robocram.projection.errors import ProjectionError
 from robocram.projection.navigation import base_moved_by
 from robocram.projection.projected_robot import ProjectedRobot
+from robocram.robots import RobotModel
 
 COLLISION_MODES = ("avoid_all", "allow_hand", "allow_all")
 CONTACT_DISTANCE = 0.0  # [m] closer than this is a collision (touching counts)
@@ -33,21 +34,65 @@ def collision_check(
         )
     if mode == "allow_all":
         return None
-    spec = robot.arm(arm)
-    allowed = set(spec.hand_links) | set(spec.gripper_links) if mode == "allow_hand" else set()
-    if mode == "allow_hand":
-        allowed |= {spec.end_effector_link, spec.tool_frame}
+    allowed = allowed_links(robot, arm, mode)
+
+    own = self_pairs(robot, arm)
 
     def collides(candidate: Mapping[str, float]) -> list[tuple[str, str]]:
         joints, motion = split_base_motion(candidate)  # IK that moves the base too
         with base_moved_by(robot, motion):
-            return colliding_pairs(robot, joints, allowed)
+            return colliding_pairs(robot, joints, allowed, own)
 
     return collides
 
 
+def allowed_links(robot: ProjectedRobot, arm: str, mode: str) -> set[str]:
+    """The links that may touch things in ``mode``: the hand's for ``allow_hand``."""
+    mode = mode.replace("-", "_")
+    if mode != "allow_hand":
+        return set()
+    spec = robot.arm(arm)
+    return (
+        set(spec.hand_links) | set(spec.gripper_links) | {spec.end_effector_link, spec.tool_frame}
+    )
+
+
+def self_pairs(robot: ProjectedRobot, arm: str) -> list[tuple[str, str]]:
+    """Pairs of ``arm``'s links and the robot's other links that may collide: apart now,
+    and not joined by one joint (the shoulder sits on the torso)."""
+    world = robot.world
+    model = robot.description.model
+    first = model.joints[robot.arm(arm).joints[0]]
+    below = _subtree(model, first.child)
+    others = [link for link in world.link_names(robot.name) if link not in below]
+    mine = [link for link in world.link_names(robot.name) if link in below]
+    touching = set(world.self_contacts(robot.name, [(a, b) for a in mine for b in others]))
+    return [
+        (a, b)
+        for a in mine
+        for b in others
+        if (a, b) not in touching and b != first.parent and a != first.child
+    ]
+
+
+def _subtree(model: RobotModel, link: str) -> set[str]:
+    children: dict[str, list[str]] = {}
+    for joint in model.joints.values():
+        children.setdefault(joint.parent, []).append(joint.child)
+    found, todo = set(), [link]
+    while todo:
+        item = todo.pop()
+        if item not in found:
+            found.add(item)
+            todo.extend(children.get(item, ()))
+    return found
+
+
 def colliding_pairs(
-    robot: ProjectedRobot, joints: Mapping[str, float], allowed_links: set[str]
+    robot: ProjectedRobot,
+    joints: Mapping[str, float],
+    allowed_links: set[str],
+    own: Sequence[tuple[str, str]] = (),
 ) -> list[tuple[str, str]]:
     """``(robot link, object)`` pairs in contact at ``joints``, ``allowed_links`` excepted.
 
@@ -71,6 +116,8 @@ def colliding_pairs(
             if link not in allowed_links:
                 several = len(world.link_names(obj)) > 1
                 hits[(link, f"{obj.name}/{other_link}" if several else obj.name)] = None
+        for pair in world.self_contacts(robot.name, own):
+            hits[pair] = None
         return list(hits)
     finally:
         world.set_joint_states(robot.name, before)

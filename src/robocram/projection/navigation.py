@@ -1,11 +1,13 @@
-"""Driving in projection: the base jumps to its goal unless the goal is in collision.
+"""Driving in projection: the base follows a checked path to its goal.
 
-Like CRAM's projected ``drive``: the robot is put at the target; if it then touches
-anything that is neither the floor nor attached to it, the old pose is restored and
-``NavigationPoseUnreachable`` names what it hit. The robot keeps its height above the
-floor; only x, y and the yaw of the target count. IK that moves the base
-(``kinematics.PlanarBase``) moves it the same way (:func:`place_base`), so what the robot
-holds rides along.
+``drive`` plans the base's path from where it stands to the target
+(``motion.plan_base_path``: the straight way if it is free, else around what is in the
+way), for the robot as it stands, with what it holds; then it follows the timed path. A
+goal in collision raises ``NavigationPoseUnreachable``, a goal no free path reaches
+``NavigationPathBlocked`` naming the blocker (the drawer the search left open); either
+way the robot stays where it was. The robot keeps its height above the floor; only x, y
+and the yaw of the target count. IK that moves the base (``kinematics.PlanarBase``) places
+it with :func:`place_base`, so what the robot holds rides along.
 """
 
 from __future__ import annotations
@@ -16,7 +18,9 @@ from collections.abc import Iterator
 
 from robocram.execution.failures import NavigationPoseUnreachable
 from robocram.kinematics import BaseMotion
+from robocram.motion import plan_base_path
 from robocram.projection.projected_robot import ProjectedRobot
+from robocram.projection.trajectory_follower import follow
 from robocram.tf import Pose, PoseLike, PoseStamped
 from robocram.tf import quaternion as quat
 
@@ -27,32 +31,22 @@ def planar(pose: Pose, z: float) -> Pose:
     return Pose((pose.position[0], pose.position[1], z), quat.from_euler(0.0, 0.0, yaw))
 
 
-def floor_names(robot: ProjectedRobot) -> list[str]:
-    """Names of the world's floors (a standing robot always touches them)."""
-    return [o.name for o in robot.world.objects("floor")]
-
-
 def drive(robot: ProjectedRobot, target: PoseStamped | PoseLike) -> Pose:
     """Put the robot's base at ``target`` (map unless stamped); return the reached pose.
 
     Raises:
         NavigationPoseUnreachable: the robot would collide there; it stays where it was.
     """
-    world = robot.world
     start = robot.base_pose()
     goal = planar(robot.in_map(target), start.position[2])
     if not all(math.isfinite(v) for v in goal.position):
         raise ValueError(f"navigation target {target!r} has a non-finite position")
-    place_base(robot, goal)
-    colliding = world.collisions(robot.name, ignore=floor_names(robot))
-    if colliding:
-        world.set_pose(robot.name, start)
-        names = [o.name for o in colliding]
-        raise NavigationPoseUnreachable(
-            f"{robot.name} at {goal.position} would collide with {names}",
-            target=target,
-            colliding=names,
-        )
+    try:
+        path = plan_base_path(robot.world, robot.name, goal, seed=robot.motion.seed)
+    except NavigationPoseUnreachable as failure:
+        failure.target = target
+        raise
+    follow(robot, path.trajectory)
     return goal
 
 

@@ -11,6 +11,7 @@ from __future__ import annotations
 import threading
 from dataclasses import dataclass, field
 
+from robocram.motion import MotionSettings
 from robocram.projection.errors import ProjectionError, unknown_name
 from robocram.robots import ArmDescription, LoadedDescription
 from robocram.tf import Pose, PoseLike, PoseStamped
@@ -26,10 +27,18 @@ class ProjectedRobot:
     world: World
     name: str
     ik_lock: threading.Lock = field(default_factory=threading.Lock, compare=False)
+    motion: MotionSettings = field(default_factory=MotionSettings, compare=False)
 
     @classmethod
-    def of(cls, world: World, robot: str | RobotObject | None = None) -> ProjectedRobot:
-        """The robot ``robot`` of ``world`` (default: its only robot)."""
+    def of(
+        cls,
+        world: World,
+        robot: str | RobotObject | None = None,
+        motion: MotionSettings | None = None,
+    ) -> ProjectedRobot:
+        """The robot ``robot`` of ``world`` (default: its only robot); ``motion`` says how
+        its arm motions are planned (default: round obstacles, seed 0)."""
+        settings = motion or MotionSettings()
         robots = world.robots()
         if robot is None:
             if len(robots) != 1:
@@ -37,11 +46,11 @@ class ProjectedRobot:
                 raise ProjectionError(
                     f"the world has {len(robots)} robots {names}; name the one to project"
                 )
-            return cls(world, robots[0].name)
+            return cls(world, robots[0].name, motion=settings)
         name = robot.name if isinstance(robot, RobotObject) else robot
         if name not in world or not any(r.name == name for r in robots):
             raise unknown_name("robot", name, "the world", [r.name for r in robots])
-        return cls(world, name)
+        return cls(world, name, motion=settings)
 
     @property
     def body(self) -> RobotObject:

@@ -19,6 +19,7 @@ from robocram.designators import install_motion_family
 from robocram.execution import Environment, matching_facts
 from robocram.grasping import install_grasp_predicates
 from robocram.logic import KnowledgeBase
+from robocram.motion import MotionSettings
 from robocram.projection.process_modules import PROJECTION_MODULES
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robots import RobotDescription
@@ -39,12 +40,14 @@ def projection_environment(
     world: World,
     robot: str | RobotObject | None = None,
     locations: CostmapLocations | None = None,
+    motion: MotionSettings | None = None,
 ) -> Environment:
     """The environment whose process modules act on ``robot`` (default: the only robot).
 
-    ``locations`` resolves location designators (default: costmaps on ``world``, seed 0).
+    ``locations`` resolves location designators (default: costmaps on ``world``, seed 0);
+    ``motion`` says how arm motions are planned (default: round obstacles, seed 0).
     """
-    projected = ProjectedRobot.of(world, robot)
+    projected = ProjectedRobot.of(world, robot, motion)
     desc = projected.description
     resources = desc.resources()
     kb = install_motions(world.kb, desc)

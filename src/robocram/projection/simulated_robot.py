@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 from robocram.costmaps import CostmapLocations
 from robocram.execution import Environment, TaskTree, TopLevel, top_level
+from robocram.motion import MotionSettings
 from robocram.projection.robot_environment import projection_environment
 from robocram.projection.world_frames import LiveTransformTree, WorldFrames
 from robocram.tf import using_transform_tree
@@ -40,12 +41,15 @@ def simulated_robot(
     robot: str | RobotObject | None = None,
     name: str = "simulated-robot",
     locations: CostmapLocations | None = None,
+    motion: MotionSettings | None = None,
 ) -> Iterator[SimulatedRun]:
     """Run the block as a top level on the projected ``robot`` of ``world``.
 
-    Location designators resolve through ``locations`` (default: costmaps on ``world``).
+    Location designators resolve through ``locations`` (default: costmaps on ``world``);
+    ``motion`` says how motions are planned (``MotionSettings(plan=False)``: straight
+    joint-space segments only, a blocked one fails).
     """
-    environment = projection_environment(world, robot, locations)
+    environment = projection_environment(world, robot, locations, motion)
     transforms = LiveTransformTree(WorldFrames(world))
     runner = top_level(name=name)
     with using_transform_tree(transforms), environment, runner:

@@ -93,3 +93,65 @@ def link_pairs_in_contact(
         if key not in found and _near(world, obj, other, index, other_link, distance):
             found[key] = (link, other, other_name)
     return list(found.values())
+
+
+def link_distances(
+    world: WorldCore,
+    obj: WorldObject,
+    ignore: Iterable[WorldObject] = (),
+    distance: float = CONTACT_DISTANCE,
+    links: Iterable[str] | None = None,
+) -> list[tuple[str, WorldObject, str, float]]:
+    """``(link of obj, other object, its link, distance [m])`` for each pair of links
+    nearer than ``distance``, with the smallest distance between them (negative when they
+    penetrate). ``links`` limits the links of ``obj`` asked about (default: all)."""
+    skip = {obj.name} | {o.name for o in ignore}
+    cid = world.physics_client()
+    found: dict[tuple[str, str, str], tuple[str, WorldObject, str, float]] = {}
+    for link, other, other_link, index in _overlaps(world, obj, links, skip, distance):
+        points = pybullet.getClosestPoints(
+            obj.body_id, other.body_id, distance, linkIndexA=index, linkIndexB=other_link,
+            physicsClientId=cid,
+        )  # fmt: skip
+        if not points:
+            continue
+        nearest = min(float(p[8]) for p in points)
+        other_name = _link_names(other).get(other_link, other.name)
+        key = (link, other.name, other_name)
+        if key not in found or nearest < found[key][3]:
+            found[key] = (link, other, other_name, nearest)
+    return list(found.values())
+
+
+def self_contacts(
+    world: WorldCore,
+    obj: WorldObject,
+    pairs: Iterable[tuple[str, str]],
+    distance: float = CONTACT_DISTANCE,
+) -> list[tuple[str, str]]:
+    """The ``(link, link)`` pairs of ``obj`` among ``pairs`` nearer than ``distance`` [m].
+
+    Bounds are compared first, so only pairs whose bounds overlap get closest points.
+    """
+    cid = world.physics_client()
+    index = obj.link_index
+    bounds: dict[int, tuple[list[float], list[float]]] = {}
+
+    def box(i: int) -> tuple[list[float], list[float]]:
+        if i not in bounds:
+            low, high = pybullet.getAABB(obj.body_id, i, physicsClientId=cid)
+            bounds[i] = ([v - distance for v in low], [v + distance for v in high])
+        return bounds[i]
+
+    found = []
+    for a, b in pairs:
+        ia, ib = index[a], index[b]
+        (la, ha), (lb, hb) = box(ia), box(ib)
+        if any(la[k] > hb[k] or lb[k] > ha[k] for k in range(3)):
+            continue
+        if pybullet.getClosestPoints(
+            obj.body_id, obj.body_id, distance, linkIndexA=ia, linkIndexB=ib,
+            physicsClientId=cid,
+        ):  # fmt: skip
+            found.append((a, b))
+    return found

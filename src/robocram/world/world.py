@@ -266,6 +266,27 @@ class World(WorldCore):
         skip = [self.object(o) for o in ignore]
         return link_contacts.link_pairs_in_contact(self, self.object(obj), skip, distance)
 
+    def link_distances(
+        self,
+        obj: ObjectRef,
+        ignore: Iterable[ObjectRef] = (),
+        distance: float = 0.05,
+        links: Iterable[str] | None = None,
+    ) -> list[tuple[str, WorldObject, str, float]]:
+        """``(link of obj, other object, its link, distance [m])`` nearer than ``distance``.
+
+        The distance is the smallest between the two links (negative: penetration); a
+        planner steps as far as the nearest one allows. Nothing is skipped but ``ignore``.
+        """
+        skip = [self.object(o) for o in ignore]
+        return link_contacts.link_distances(self, self.object(obj), skip, distance, links)
+
+    def self_contacts(
+        self, obj: ObjectRef, pairs: Iterable[tuple[str, str]], distance: float = 0.0
+    ) -> list[tuple[str, str]]:
+        """The pairs of ``obj``'s own links among ``pairs`` nearer than ``distance`` [m]."""
+        return link_contacts.self_contacts(self, self.object(obj), pairs, distance)
+
     def contact_points(
         self,
         a: ObjectRef,

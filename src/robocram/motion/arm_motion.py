@@ -1,0 +1,180 @@
+"""An arm motion from where the robot is to a joint goal or along a tool line, timed.
+
+The straight joint-space segment is checked first on the world itself (PyBullet, by
+conservative advancement on clearances: :mod:`segment_check`), which needs no snapshot and
+answers most motions in a few checks. Only when it is blocked is a coal snapshot
+(:class:`~robocram.motion.collision_scene.CollisionScene`) built, for OMPL's thousands of
+checks; the planned path is then checked again on the world. Contacts the robot already
+has when the motion starts (a hand resting on a handle) are allowed for that motion: the
+links touching may move away from them.
+
+The answer is a :class:`ArmMotion`: the path, how it was found, and the timed trajectory.
+Nothing moves here; projection follows the trajectory, ROS sends it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Collection, Mapping
+from dataclasses import dataclass
+
+import numpy as np
+
+from robocram.execution.failures import ManipulationPathBlocked
+from robocram.motion.bullet_scene import BulletScene
+from robocram.motion.cartesian_path import cartesian_path
+from robocram.motion.collision_scene import CollisionScene
+from robocram.motion.joint_limits import joint_limits
+from robocram.motion.joint_path import PLANNING_BUDGET, JointPath, plan_joint_path
+from robocram.motion.joint_trajectory import JointTrajectory
+from robocram.motion.segment_check import CheckCounter, first_collision, segment_free
+from robocram.motion.time_parameterization import time_parameterize
+from robocram.motion.travel_bound import TravelBound
+from robocram.robots import LoadedDescription
+from robocram.tf import Pose
+from robocram.world import World
+
+
+@dataclass(frozen=True)
+class ArmMotion:
+    """A checked, timed arm motion; ``fraction`` of a tool line achieved (1 otherwise)."""
+
+    path: JointPath
+    trajectory: JointTrajectory
+    fraction: float = 1.0
+
+
+@dataclass(frozen=True)
+class MotionSettings:
+    """How arm motions are planned: whether to plan round obstacles, the seed, the budget."""
+
+    plan: bool = True  # False: the straight segment only (a blocked one fails)
+    seed: int = 0
+    budget: int = PLANNING_BUDGET  # configurations OMPL may check
+    check: bool = True  # False: no collision checks at all (CRAM's allow_all)
+
+
+def planned_joints(desc: LoadedDescription, goal: Mapping[str, float]) -> tuple[str, ...]:
+    """The joints of ``goal`` a motion moves itself (mimic joints follow their masters)."""
+    return tuple(j for j in goal if desc.model.joints[j].mimic is None)
+
+
+def _scene(
+    world: World, robot: str, joints: tuple[str, ...], allowed: Collection[str], start: list[float]
+) -> BulletScene:
+    """The world checker, allowing the contacts the robot (and what it holds) already has
+    at the start: a hand on a handle, a held bowl still on its table."""
+    scene = BulletScene(world, robot, joints, allowed)
+    touching = scene.colliding(start)
+    if touching:
+        scene = BulletScene(world, robot, joints, allowed, allowed_pairs=touching)
+    return scene
+
+
+def plan_arm_motion(
+    world: World,
+    robot: str,
+    goal: Mapping[str, float],
+    *,
+    allowed_links: Collection[str] = (),
+    settings: MotionSettings = MotionSettings(),
+    what: str = "the arm",
+) -> ArmMotion:
+    """A timed, collision-free motion of the joints in ``goal`` from where they are now.
+
+    Raises:
+        ManipulationPathBlocked: the goal collides, or no way there was found; it names the
+            colliding pairs and where along the straight path they are.
+    """
+    desc = world.robot(robot).description
+    joints = planned_joints(desc, goal)
+    current = world.joint_states(robot)
+    start = [current[j] for j in joints]
+    end = [float(goal[j]) for j in joints]
+    limits = joint_limits(desc, joints)
+    if not settings.check:
+        path = JointPath(joints, (tuple(start), tuple(end)), "straight", 0)
+    else:
+        path = _checked_path(world, robot, joints, allowed_links, start, end, settings, what)
+    trajectory = time_parameterize(robot, joints, path.waypoints, limits, kind="arm")
+    return ArmMotion(path, trajectory)
+
+
+def _checked_path(
+    world: World,
+    robot: str,
+    joints: tuple[str, ...],
+    allowed: Collection[str],
+    start: list[float],
+    end: list[float],
+    settings: MotionSettings,
+    what: str,
+) -> JointPath:
+    scene = _scene(world, robot, joints, allowed, start)
+    bound = TravelBound.of(world, robot, joints)
+    desc = world.robot(robot).description
+    limits = joint_limits(desc, joints)
+    box = ([lim.lower for lim in limits], [lim.upper for lim in limits])
+    try:
+        return plan_joint_path(scene, start, end, bound, box, plan=False, what=what)
+    except ManipulationPathBlocked:
+        if not settings.plan:
+            raise
+    links = set(world.link_names(robot))
+    start_links = {link for link, _ in scene.allowed_pairs if link in links}
+    snapshot = CollisionScene.of(
+        world, robot, joints, allowed_links=scene.allowed_links | start_links
+    )
+    path = plan_joint_path(
+        snapshot, start, end, bound, box, seed=settings.seed, budget=settings.budget, what=what
+    )
+    _confirm(scene, path, bound, what)
+    return path
+
+
+def _confirm(scene: BulletScene, path: JointPath, bound: TravelBound, what: str) -> None:
+    """Check a planned path on the world itself: the snapshot and the world must agree."""
+    counter = CheckCounter()
+    points = [np.array(w) for w in path.waypoints]
+    for k, (a, b) in enumerate(zip(points, points[1:], strict=False)):
+        if segment_free(scene, a, b, bound, counter) and scene.is_free(b):
+            continue
+        hit = first_collision(scene, a, b, bound, counter)
+        where, pairs = hit if hit is not None else (1.0, [])
+        raise ManipulationPathBlocked(
+            f"{what}'s planned path collides in the world {where:.0%} along segment {k + 1} "
+            f"of {len(points) - 1} ({_named(pairs)}), though the planning snapshot found it free",
+            colliding_pairs=tuple(pairs),
+            path_fraction=(k + where) / (len(points) - 1),
+        )
+
+
+def _named(pairs: list[tuple[str, str]]) -> str:
+    return ", ".join(f"{a} hits {b}" for a, b in pairs[:4]) or "touching within its clearance"
+
+
+def plan_tool_line(
+    world: World,
+    robot: str,
+    arm: str,
+    target_in_base: Pose,
+    *,
+    allowed_links: Collection[str] = (),
+    settings: MotionSettings = MotionSettings(),
+) -> ArmMotion:
+    """The straight line of ``arm``'s tool to ``target_in_base`` (the robot's root link),
+    as far as it can be followed: ``fraction`` says how far (1: all of it)."""
+    desc = world.robot(robot).description
+    spec = desc.arms[arm]
+    joints = tuple(spec.joints)
+    current = world.joint_states(robot)
+    start = [current[j] for j in joints]
+    base = world.pose(robot)
+    tool = base.inverse() * world.link_pose(robot, spec.tool_frame)
+    scene = _scene(world, robot, joints, allowed_links, start)
+    bound = TravelBound.of(world, robot, joints)
+    line = cartesian_path(
+        desc, arm, scene, current, tool, target_in_base, bound, random_seed=settings.seed
+    )
+    limits = joint_limits(desc, joints)
+    trajectory = time_parameterize(robot, joints, line.path.waypoints, limits, kind="cartesian")
+    return ArmMotion(line.path, trajectory, line.fraction)

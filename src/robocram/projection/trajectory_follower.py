@@ -1,0 +1,45 @@
+"""Projection follows a timed trajectory: the robot ends where the trajectory ends.
+
+Nothing between the points needs simulating (the path was checked before it was timed),
+so following is a walk over the points with a stop point at each: a stop during the
+motion leaves the robot, and what it holds, at the point it had reached. Every executed
+trajectory, or its part up to a stop, is reported to the motion layer's listeners
+(traces, viewers).
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from robocram.execution import checkpoint
+from robocram.motion import BASE_JOINTS, JointTrajectory, TrajectoryPoint, report_executed
+from robocram.projection.projected_robot import ProjectedRobot
+from robocram.tf import Pose
+from robocram.tf import quaternion as quat
+
+
+def follow(robot: ProjectedRobot, trajectory: JointTrajectory) -> None:
+    """Move ``robot`` along ``trajectory``; a stopped task leaves it where it had got to."""
+    points = trajectory.points
+    reached = 1
+    try:
+        while reached < len(points):
+            checkpoint()
+            reached += 1
+    except BaseException:
+        part = replace(trajectory, points=points[:reached])
+        _apply(robot, trajectory.joint_names, points[max(reached - 1, 0)])
+        report_executed(part)
+        raise
+    _apply(robot, trajectory.joint_names, points[-1])
+    report_executed(trajectory)
+
+
+def _apply(robot: ProjectedRobot, joints: tuple[str, ...], point: TrajectoryPoint) -> None:
+    values = dict(zip(joints, point.positions, strict=True))
+    if joints == BASE_JOINTS:  # what the robot holds rides along
+        height = robot.base_pose().position[2]
+        yaw = quat.from_euler(0.0, 0.0, values["yaw"])
+        robot.world.set_pose(robot.name, Pose((values["x"], values["y"], height), yaw))
+        return
+    robot.world.set_joint_states(robot.name, values)
