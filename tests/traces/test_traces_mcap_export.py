@@ -15,6 +15,7 @@ from robocram.cli import EXIT_OK, main
 from robocram.traces import (
     TraceDatabase,
     export_mcap,
+    replay_clock,
     require_run,
     run_trajectories,
     world_state_times,
@@ -43,14 +44,18 @@ def test_export_writes_every_state(
     assert code == EXIT_OK and "messages of run" in capsys.readouterr().out
     with TraceDatabase(pick_up_trace.db_path, create=False) as db:
         states = world_state_times(db, pick_up_trace.run)
+        clock = replay_clock(db, pick_up_trace.run)
+        moved = [t for t in run_trajectories(db, pick_up_trace.run) if t.points]
     with out.open("rb") as stream:
         reader = make_reader(stream, decoder_factories=[DecoderFactory()])
         messages = list(reader.iter_decoded_messages())
     by_topic: dict[str, list[Any]] = {}
     for schema, channel, message, decoded in messages:
         by_topic.setdefault(channel.topic, []).append((schema.name, message.log_time, decoded))
-    assert len(by_topic["/tf"]) == len(states)
-    assert [t for _, t, _ in by_topic["/tf"]] == [round(t * 1e9) for _, t, _ in states]
+    samples = sum(int(np.ceil(t.duration / 0.05)) + 1 for t in moved)  # every 0.05 s, the end
+    assert len(by_topic["/tf"]) == len(states) + samples
+    state_stamps = [t for _, t, _ in by_topic["/object_poses/mug-1"]]  # written at states only
+    assert state_stamps == [round(clock.at(t) * 1e9) for _, t, _ in states]
     assert {schema.name for schema, *_ in messages} == {
         "tf2_msgs/TFMessage",
         "sensor_msgs/JointState",

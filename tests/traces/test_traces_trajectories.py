@@ -24,6 +24,7 @@ from robocram.traces import (
     run_ids,
     run_trajectories,
     trace_to,
+    world_state_at,
     world_state_times,
 )
 
@@ -161,3 +162,24 @@ def test_a_traced_scene_with_a_trajectory_of_an_unknown_robot_names_the_robots(
         assert run.scene is not None
         with build_scene(run.scene) as world, pytest.raises(TraceError, match=r"robots: \['pr2'\]"):
             list(replay_frames(db, run.id, world))
+
+
+def test_a_traced_pick_up_keeps_each_motions_trajectory(pick_up_trace: Any) -> None:
+    with TraceDatabase(pick_up_trace.db_path, create=False) as db:
+        stored = run_trajectories(db, pick_up_trace.run)
+        states = {path: t for _, t, path in world_state_times(db, pick_up_trace.run)}
+        after = {path: world_state_at(db, pick_up_trace.run, time) for path, time in states.items()}
+    assert {"arm", "cartesian"} <= {t.kind for t in stored}
+    for trajectory in stored:
+        assert trajectory.task_path is not None and "/perform " in trajectory.task_path
+        state = after[trajectory.task_path]  # the world when its motion ended
+        last = [t for t in stored if t.task_path == trajectory.task_path][-1]
+        if trajectory is not last or not trajectory.points:
+            continue
+        end = trajectory.trajectory().end
+        if trajectory.kind == "base":
+            x, y, _ = state.poses["pr2"].position
+            assert (end["x"], end["y"]) == pytest.approx((x, y), abs=1e-9)
+        else:
+            joints = state.joints["pr2"]
+            assert [joints[n] for n in end] == pytest.approx(list(end.values()), abs=1e-9)

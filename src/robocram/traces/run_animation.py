@@ -1,11 +1,11 @@
 """An animated GIF of a stored run, rendered from its trajectories from one fixed camera.
 
 The run's scene is rebuilt from the trace and put through its replay frames
-(:func:`~robocram.traces.run_replay.replay_frames`). Rendered are: each trajectory every
-``period`` of its motion time and at its end, and each stored world state but the one
-right after a trajectory of its own motion (the trajectory's end showed it).
-The period is widened so that about ``max_frames`` are rendered, which bounds both the
-render time and the file size whatever the run's length. All frames share the first
+(:func:`~robocram.traces.run_replay.replay_frames`); the first frame at or after every
+``period`` of replay time is rendered, and the last one. The period is widened so that
+about ``max_frames`` are rendered (at most one more), which bounds both the render time and the file size
+whatever the run's length; a motion shorter than the period (a grip) shows in the next
+frame. All frames share the first
 frame's palette, so the GIF encoder stores only what changed between frames.
 """
 
@@ -22,12 +22,12 @@ from robocram.tf import Pose
 from robocram.traces.database import TraceDatabase
 from robocram.traces.errors import TraceError
 from robocram.traces.queries import require_run, world_state_times
-from robocram.traces.run_replay import ReplayFrame, replay_frames
-from robocram.traces.trajectory_record import run_trajectories
+from robocram.traces.run_replay import replay_frames
+from robocram.traces.trajectory_record import replay_clock, run_trajectories
 from robocram.traces.world_record import build_scene
 
-GIF_PERIOD = 0.2  # [s] of motion time between two rendered frames of a trajectory
-MAX_FRAMES = 120  # frames rendered, about; a run with more motion gets a wider period
+GIF_PERIOD = 0.2  # [s] of replay time between two rendered frames
+MAX_FRAMES = 100  # frames rendered (at most one more); a longer run gets a wider period
 FRAME_SHOWN = 0.1  # [s] each frame is shown: the GIF plays period / FRAME_SHOWN times faster
 COLORS = 128  # palette size shared by all frames
 
@@ -76,19 +76,18 @@ def animate_run(
     row = require_run(db, run)
     if row.scene is None:
         raise TraceError(f"run {run} stored no scene; trace it with trace_to(db, world=world)")
-    step = _period(db, run, period, max_frames)
+    step = max(period, _replay_span(db, run) / (max_frames - 1))
     images: list[np.ndarray] = []
-    times: list[float] = []
-    due = -np.inf  # [s] replay time of the next sample to render
-    ended: str | None = None  # the task whose trajectory's end was just rendered
+    first, due, last, shown = None, -np.inf, 0.0, False
     with build_scene(row.scene) as world:
-        for frame in replay_frames(db, run, world, period=step):
-            end = frame.trajectory is not None and frame.sample_time >= frame.trajectory.duration
-            if _rendered(frame, due, end, ended):
+        for frame in replay_frames(db, run, world, period=min(step, period)):
+            first = frame.time if first is None else first
+            last, shown = frame.time, frame.time >= due
+            if shown:
                 images.append(world.render(camera, width, height))
-                times.append(frame.time)
                 due = frame.time + step * (1.0 - 1e-9)
-            ended = frame.task_path if end else None
+        if first is not None and not shown:  # the run's end is always in the picture
+            images.append(world.render(camera, width, height))
     if not images:
         raise TraceError(f"run {run} has no world states nor trajectories to animate")
     path = _write_gif(Path(out), images)
@@ -96,25 +95,19 @@ def animate_run(
         path=path,
         frames=len(images),
         period=step,
-        replay_duration=times[-1] - times[0],
+        replay_duration=last - (first or 0.0),
         render_seconds=time.perf_counter() - began,
         size=path.stat().st_size,
     )
 
 
-def _rendered(frame: ReplayFrame, due: float, end: bool, ended: str | None) -> bool:
-    """A sample when due or at its trajectory's end; a state unless that end just showed it."""
-    if frame.trajectory is not None:
-        return frame.time >= due or end
-    return ended is None or frame.task_path != ended
-
-
-def _period(db: TraceDatabase, run: int, period: float, max_frames: int) -> float:
-    """``period``, widened so that states, trajectory ends and samples make ``max_frames``."""
-    trajectories = run_trajectories(db, run)
-    fixed = len(world_state_times(db, run)) + len(trajectories)
-    motion = sum(t.duration for t in trajectories)  # [s]
-    return max(period, motion / max(max_frames - fixed, 1))
+def _replay_span(db: TraceDatabase, run: int) -> float:
+    """[s] of replay time from the run's start to its last state or trajectory end."""
+    start = require_run(db, run).start
+    clock = replay_clock(db, run)
+    ends = [clock.at(t) for _, t, _ in world_state_times(db, run)]
+    ends += [start + t.end for t in run_trajectories(db, run)]
+    return max(ends, default=start) - start
 
 
 def _write_gif(out: Path, images: list[np.ndarray]) -> Path:

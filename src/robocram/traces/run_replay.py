@@ -80,6 +80,8 @@ def _samples(
     world: World, trajectory: StoredTrajectory, period: float, run_start: float, after: float
 ) -> Iterator[ReplayFrame]:
     """Frames along ``trajectory``; wall times spread over (``after``, its report]."""
+    if not trajectory.points:  # stopped before its first point: nothing moved
+        return
     robot = robot_in(world, trajectory.robot)
     span = trajectory.time - after
     for t, positions in trajectory.trajectory().sampled(period):
