@@ -3,10 +3,10 @@
 The run's scene is rebuilt from the trace and put through its replay frames
 (:func:`~robocram.traces.run_replay.replay_frames`); the first frame at or after every
 ``period`` of replay time is rendered, and the last one. The period is widened so that
-about ``max_frames`` are rendered (at most one more), which bounds both the render time and the file size
-whatever the run's length; a motion shorter than the period (a grip) shows in the next
-frame. All frames share the first
-frame's palette, so the GIF encoder stores only what changed between frames.
+about ``max_frames`` are rendered (at most one more), which bounds both the render time
+and the file size whatever the run's length; a motion shorter than the period (a grip)
+shows in the next frame. All frames share the first frame's palette, so the GIF encoder
+stores only what changed between frames.
 """
 
 from __future__ import annotations
