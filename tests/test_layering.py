@@ -1,8 +1,10 @@
-"""Layers import downwards only (docs/architecture.md): checked on the source text."""
+"""Layers import downwards only (docs/architecture.md): checked on the source text, and
+the doc's layer table checked against the rules here."""
 
 from __future__ import annotations
 
 import ast
+import re
 from pathlib import Path
 
 import pytest
@@ -137,16 +139,7 @@ def test_logic_uses_stdlib_only() -> None:
 
 # Import cycles between modules of one package that are not fixed yet, with their owner.
 # Each entry is the set of modules in one cycle (a strongly connected component).
-KNOWN_CYCLES: list[frozenset[str]] = [
-    # World.knowledge_base imports world.predicates inside a function; predicates imports
-    # World for typing (owner: world).
-    frozenset({"robocram.world.predicates", "robocram.world.world"}),
-    # task imports task_listeners; task_listeners imports Task for typing (owner: execution).
-    frozenset({"robocram.execution.task", "robocram.execution.task_listeners"}),
-    # robot_model imports description; description imports RobotModel for typing
-    # (owner: robots).
-    frozenset({"robocram.robots.description", "robocram.robots.robot_model"}),
-]
+KNOWN_CYCLES: list[frozenset[str]] = []
 
 
 def _module_name(path: Path) -> str:
@@ -230,3 +223,46 @@ def test_cycle_finder_sees_function_level_imports(tmp_path: Path) -> None:
     a = tmp_path / "a.py"
     a.write_text("def f():\n    from robocram.logic import b\n", encoding="utf-8")
     assert _imported_modules(a, "robocram.logic.a", {"robocram.logic.b"}) == {"robocram.logic.b"}
+
+
+# docs/architecture.md's layer table says what ALLOWED enforces, in the same order.
+DOC = SRC.parents[1] / "docs" / "architecture.md"
+ROW = re.compile(r"^\| `robocram\.(\w+)` \| (.+) \| (.+) \|$")
+NOTES = {"stdlib only", "numpy"}  # what a layer with no robocram import may write instead
+
+
+def _table(text: str) -> list[tuple[str, list[str]]]:
+    """The rows of the layer table: package, then the items of its "may import" cell."""
+    return [
+        (m[1], [item.strip() for item in m[3].split(",")])
+        for m in map(ROW.match, text.splitlines())
+        if m
+    ]
+
+
+def test_the_doc_lists_the_layers_in_the_tests_order() -> None:
+    assert [package for package, _ in _table(DOC.read_text(encoding="utf-8"))] == list(ALLOWED)
+
+
+def test_each_layer_may_import_what_the_test_allows() -> None:
+    for package, items in _table(DOC.read_text(encoding="utf-8")):
+        named = {item for item in items if item not in NOTES}
+        assert named == ALLOWED[package], (
+            f"docs/architecture.md, {package}: the doc says {sorted(named)}, "
+            f"tests/test_layering.py allows {sorted(ALLOWED[package])}"
+        )
+
+
+def test_the_table_is_lowest_first() -> None:
+    above: set[str] = set()
+    for package, items in _table(DOC.read_text(encoding="utf-8")):
+        assert {item for item in items if item not in NOTES} <= above, package
+        above.add(package)
+
+
+def test_the_reader_sees_a_drifted_row() -> None:
+    text = (
+        "| `robocram.logic` | engine | stdlib only |\n"
+        "| `robocram.viewer` | viewer | traces and everything below |\n"
+    )
+    assert _table(text) == [("logic", ["stdlib only"]), ("viewer", ["traces and everything below"])]

@@ -32,7 +32,7 @@ def test_the_example_spec_runs_end_to_end(
     assert succeeded + failed + lost == 6 and lost == 0
     assert succeeded >= 4  # the mug stays within reach in the example's ranges
     assert code == (EXIT_OK if succeeded == 6 else EXIT_FAILED)
-    assert 0.0 < float(_row(out, "median duration [s]")[0]) < 60.0  # it ran (no timing)
+    assert float(_row(out, "median duration [s]")[0]) > 0.0  # it ran (how long is no test)
     with TraceDatabase(db, create=False) as trace:
         stored = runs(trace)
     assert len(stored) == 6

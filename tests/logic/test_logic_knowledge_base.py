@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import threading
-import time
 import tracemalloc
 from collections.abc import Iterator
 
@@ -193,14 +192,18 @@ def test_deep_recursion_runs_in_bounded_memory() -> None:
 
 
 def test_first_argument_indexing_is_not_a_scan() -> None:
+    """A bound first argument tries the one clause with that key, not 100,000 (the time per
+    lookup is a figure of benchmarks/logic_bench.py, not a test)."""
     kb = KnowledgeBase()
     kb.consult("\n".join(f"fact({i}, v{i})." for i in range(100_000)))
     assert kb.first("fact(99999, V)") == {"V": "v99999"}
-    start = time.perf_counter()
-    for i in range(0, 100_000, 100):
-        kb.first("fact(K, V)", K=i)
-    per_query = (time.perf_counter() - start) / 1000
-    assert per_query < 0.002
+    assert [kb.first("fact(K, V)", K=i) for i in (0, 50_000, 99_999)] == [
+        {"V": "v0"},
+        {"V": "v50000"},
+        {"V": "v99999"},
+    ]
+    fact = kb._preds[("fact", 2)]
+    assert [len(fact.candidates(i)) for i in (0, 50_000, 99_999, 100_000)] == [1, 1, 1, 0]
 
 
 def test_concurrent_queries_from_threads() -> None:

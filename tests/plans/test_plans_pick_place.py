@@ -40,7 +40,8 @@ COUNTER_FRONT = 1.88  # [m] y of the north counter's front edge
 EAST_FRONT = 2.4  # [m] x of the east counter's front edge
 TABLE_EDGE = -0.95  # [m] y of the table's north edge
 TABLE_TOP = 0.751  # [m] height of the table's top
-STANDOFF = {"pr2": (0.45, 0.45), "hsrb": (0.45, 0.45), "boxy": (0.65, 0.55)}  # [m] counter, table
+STANDOFF = {"pr2": (0.45, 0.45), "hsrb": (0.45, 0.45), "boxy": (0.80, 0.55)}  # [m] counter, table
+# Boxy stands back from the counter: its arms need room to unfold under the wall cupboards
 TARGET = (0.0, -1.15)  # [m] where the mug goes on the table
 NORTH = quat.from_euler(0.0, 0.0, math.pi / 2)
 SOUTH = quat.from_euler(0.0, 0.0, -math.pi / 2)

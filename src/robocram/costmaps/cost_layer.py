@@ -57,7 +57,7 @@ class LocationQuery:
         """Map x and y [m] of the cell centres."""
         return self.grid.centres()
 
-    def object(self, value: Any, key: str) -> WorldObject:
+    def object(self, value: object, key: str) -> WorldObject:
         """The world object ``value`` names (a name, an object, an object designator)."""
         return resolve_object(self.world, value, key)
 
@@ -90,7 +90,7 @@ class LocationQuery:
         return ((low[0] + high[0]) / 2, (low[1] + high[1]) / 2, (low[2] + high[2]) / 2)
 
 
-def resolve_object(world: World, value: Any, key: str) -> WorldObject:
+def resolve_object(world: World, value: object, key: str) -> WorldObject:
     """The world object ``value`` stands for; a typed error naming ``key`` otherwise."""
     name = value
     if isinstance(value, ObjectDesignator):

@@ -75,7 +75,7 @@ class CostmapLocations:
         """``base`` (default: pose properties only) that also runs this generator."""
         return (base or LocationResolver()).with_generator("costmap", self.poses, priority=1)
 
-    def plan(self, designator: Any) -> LocationPlan:
+    def plan(self, designator: object) -> LocationPlan:
         """The layers and validators the rules give ``designator``."""
         return plan_location(self.world.kb, designator)
 
@@ -91,12 +91,12 @@ class CostmapLocations:
         grid = CostmapGrid.around(centre[:2], size, resolution)
         return LocationQuery(self.world, designator, grid, robot, self.reach_maps)
 
-    def costmap(self, designator: Any) -> Costmap:
+    def costmap(self, designator: object) -> Costmap:
         """The normalised product of the layers the designator's keys name."""
         query = self.query(designator)
         return self._costmap(query, self.plan(designator), lazy=False).costmap
 
-    def poses(self, designator: Any) -> Iterator[Pose]:
+    def poses(self, designator: object) -> Iterator[Pose]:
         """Accepted poses for ``designator``, lazily; nothing if no key asks for a costmap."""
         plan = self.plan(designator)
         if plan.empty:

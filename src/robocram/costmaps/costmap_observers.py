@@ -36,7 +36,7 @@ def observing_costmaps(observer: CostmapObserver) -> Iterator[CostmapObserver]:
         _OBSERVERS.reset(token)
 
 
-def notify_costmap(designator: Any, costmap: Costmap) -> None:
+def notify_costmap(designator: object, costmap: Costmap) -> None:
     """Show ``costmap``, built for ``designator``, to the observers of this context."""
     for observer in _OBSERVERS.get():
         observer(designator, costmap)

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-from typing import Any
-
 import numpy as np
 
 from robocram.costmaps.cost_layer import CostLayer, LocationQuery
@@ -43,7 +41,7 @@ def ring(
     return ((d >= min_distance) & (d <= max_distance)).astype(float)
 
 
-def near_cost(query: LocationQuery, value: Any, alive: BoolGrid) -> CostLayer:
+def near_cost(query: LocationQuery, value: object, alive: BoolGrid) -> CostLayer:
     """``near=obj``: weight falls off linearly from the object's bounds to 1 m away."""
     low, high = query.world.aabb(query.object(value, "near"))
     x, y = query.centres()

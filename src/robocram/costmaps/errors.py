@@ -19,7 +19,7 @@ class CostmapInputError(CostmapError, ValueError):
         culprit: the offending key, object name or value.
     """
 
-    def __init__(self, message: str, culprit: Any) -> None:
+    def __init__(self, message: str, culprit: object) -> None:
         super().__init__(message)
         self.culprit = culprit
 
@@ -27,7 +27,7 @@ class CostmapInputError(CostmapError, ValueError):
 class LocationKeyError(CostmapInputError):
     """A location designator uses a key no rule knows, or two keys that exclude each other."""
 
-    def __init__(self, message: str, key: str, designator: Any = None) -> None:
+    def __init__(self, message: str, key: str, designator: object = None) -> None:
         super().__init__(message, key)
         self.key = key
         self.designator = designator

@@ -15,7 +15,6 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator
 from contextlib import contextmanager
-from typing import Any
 
 import numpy as np
 
@@ -156,7 +155,7 @@ def free_cells(
     return free
 
 
-def occupancy_cost(query: LocationQuery, value: Any, alive: BoolGrid) -> CostLayer:
+def occupancy_cost(query: LocationQuery, value: object, alive: BoolGrid) -> CostLayer:
     """Rule out cells where the robot's base (radius from its URDF) would hit an obstacle.
 
     Only the cells earlier layers left ``alive`` are decided (the probes reach the cells

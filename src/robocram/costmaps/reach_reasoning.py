@@ -93,7 +93,7 @@ def blocking(
         world.set_joint_states(body, before)
 
 
-def _names(world: World, arg: Any, robots: bool) -> list[str]:
+def _names(world: World, arg: object, robots: bool) -> list[str]:
     if isinstance(arg, Var):
         pool = world.robots() if robots else [o for o in world.objects() if o.type != "floor"]
         return [o.name for o in pool if robots or not isinstance(o, RobotObject)]
@@ -104,7 +104,7 @@ def install_reach_predicates(kb: KnowledgeBase, world: World) -> None:
     """Add ``reachable/2``, ``pose_reachable/2`` and ``blocking/4`` about ``world`` to ``kb``."""
 
     @kb.predicate("reachable", 2)
-    def reachable_(rob: Any, obj: Any) -> Solutions:
+    def reachable_(rob: object, obj: object) -> Solutions:
         for r in _names(world, rob, robots=True):
             yield from ((r, o) for o in _names(world, obj, robots=False) if reachable(world, r, o))
 

@@ -9,8 +9,6 @@ score of its best arm, squared so that likely cells are drawn first.
 
 from __future__ import annotations
 
-from typing import Any
-
 import numpy as np
 
 from robocram.costmaps.cost_layer import CostLayer, LocationQuery
@@ -20,7 +18,7 @@ from robocram.costmaps.grid import BoolGrid
 from robocram.costmaps.validators import robot_arms
 
 
-def reachability_cost(query: LocationQuery, value: Any, alive: BoolGrid) -> CostLayer:
+def reachability_cost(query: LocationQuery, value: object, alive: BoolGrid) -> CostLayer:
     """Best arm's reach score per cell, with the base yaw that gives it."""
     robot = query.robot
     if robot is None:

@@ -29,7 +29,7 @@ _SIDES: dict[str, tuple[float, float]] = {
 def _side_cost(side: str) -> Callable[[LocationQuery, Any, BoolGrid], CostLayer]:
     forward_part, left_part = _SIDES[side]
 
-    def cost(query: LocationQuery, value: Any, alive: BoolGrid) -> CostLayer:
+    def cost(query: LocationQuery, value: object, alive: BoolGrid) -> CostLayer:
         centre = np.array(query.point(value, side)[:2])
         if query.robot is not None:
             sight = centre - np.array(query.world.pose(query.robot).position[:2])

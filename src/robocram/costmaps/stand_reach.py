@@ -174,7 +174,7 @@ def reachable(query: LocationQuery, pose: Pose) -> bool:
         return reach_point(world, robot, point, pose, arm, maps, budget) is not None
 
 
-def _spot(value: Any, point: Vector3) -> Pose:
+def _spot(value: object, point: Vector3) -> Pose:
     """Where the held object's frame goes: the target's pose, or the point unturned."""
     if isinstance(value, PoseStamped):
         return Pose(point, value.pose.orientation)

@@ -9,7 +9,6 @@ fits, and each cell's height is set so the object's bottom rests on the surface.
 from __future__ import annotations
 
 import math
-from typing import Any
 
 import numpy as np
 
@@ -36,7 +35,7 @@ def _placed(query: LocationQuery) -> tuple[WorldObject | None, float, float]:
     return obj, radius, query.world.pose(obj).position[2] - low[2]
 
 
-def _surface(query: LocationQuery, value: Any, key: str, alive: BoolGrid) -> CostLayer:
+def _surface(query: LocationQuery, value: object, key: str, alive: BoolGrid) -> CostLayer:
     world, inside = query.world, key == "in_"
     support, link = query.part(value, key)
     low, high = query.bounds(value, key)
@@ -64,11 +63,11 @@ def _surface(query: LocationQuery, value: Any, key: str, alive: BoolGrid) -> Cos
     return CostLayer(fits.astype(float), heights=heights)
 
 
-def on_cost(query: LocationQuery, value: Any, alive: BoolGrid) -> CostLayer:
+def on_cost(query: LocationQuery, value: object, alive: BoolGrid) -> CostLayer:
     """``on=support`` (an object or ``(object, link)``): where the ``for_`` object fits."""
     return _surface(query, value, "on", alive)
 
 
-def in_cost(query: LocationQuery, value: Any, alive: BoolGrid) -> CostLayer:
+def in_cost(query: LocationQuery, value: object, alive: BoolGrid) -> CostLayer:
     """``in_=container`` (e.g. ``(kitchen, drawer link)``): its inner bottom, where it fits."""
     return _surface(query, value, "in_", alive)

@@ -10,7 +10,6 @@ the cells a pose stream draws (the whole grid only for a picture).
 from __future__ import annotations
 
 from contextlib import AbstractContextManager
-from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -39,7 +38,7 @@ def camera_heights(query: LocationQuery) -> list[float]:
     return [*heights, camera.pose.position[2] - base_z]
 
 
-def visibility_cost(query: LocationQuery, value: Any, alive: BoolGrid) -> CostLayer:
+def visibility_cost(query: LocationQuery, value: object, alive: BoolGrid) -> CostLayer:
     """Cells in viewing range; the share of free lines of sight is computed lazily."""
     heights = camera_heights(query)
     target = query.point(query.designator.get("object") or query.designator.get("target"), "object")

@@ -74,7 +74,7 @@ class Designator(Generic[S_co]):
         self,
         *pairs: PropertyPair,
         quantifier: Quantifier = Quantifier.A,
-        **properties: Any,
+        **properties: object,
     ) -> None:
         self._properties = normalize_properties(pairs, properties)
         self.quantifier = quantifier
@@ -92,7 +92,7 @@ class Designator(Generic[S_co]):
         """The properties in the order written, repeats included."""
         return self._properties
 
-    def get(self, key: str, default: Any = None) -> Any:
+    def get(self, key: str, default: object = None) -> Any:
         """Return the first value of property ``key``, or ``default``."""
         return next((v for k, v in self._properties if k == key), default)
 

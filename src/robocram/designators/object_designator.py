@@ -27,8 +27,8 @@ class ObjectDesignator(Designator[object]):
         self,
         *pairs: PropertyPair,
         quantifier: Quantifier = Quantifier.A,
-        data: Any = None,
-        **properties: Any,
+        data: object = None,
+        **properties: object,
     ) -> None:
         super().__init__(*pairs, quantifier=quantifier, **properties)
         self._data = data
@@ -43,7 +43,7 @@ class ObjectDesignator(Designator[object]):
         """Whether perception has attached data to this very designator."""
         return self._data is not None
 
-    def make_effective(self, data: Any, **new_properties: Any) -> ObjectDesignator:
+    def make_effective(self, data: object, **new_properties: object) -> ObjectDesignator:
         """Return a designator with the perceived ``data`` and properties, equated with this one.
 
         New properties replace same-named old ones; the others are kept.

@@ -36,7 +36,7 @@ def normalize_properties(
     return tuple(pair for pair in out if pair[1] is not None)
 
 
-def _checked(key: Any, value: Any) -> PropertyPair:
+def _checked(key: object, value: object) -> PropertyPair:
     if not isinstance(key, str) or not key.isidentifier():
         raise DesignatorPropertyError(
             f"designator property key {key!r} is not an identifier; "
@@ -46,7 +46,7 @@ def _checked(key: Any, value: Any) -> PropertyPair:
     return key, value
 
 
-def format_value(value: Any) -> str:
+def format_value(value: object) -> str:
     """Render a property value for a designator's description (designators render nested)."""
     description = getattr(value, "description", None)
     if isinstance(description, str):

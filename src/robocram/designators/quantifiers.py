@@ -42,15 +42,15 @@ class Singular:
 class Universal:
     """Builds designators for every entity that fits: ``all_.objects(type="cup")``."""
 
-    def objects(self, *pairs: PropertyPair, **properties: Any) -> ObjectDesignator:
+    def objects(self, *pairs: PropertyPair, **properties: object) -> ObjectDesignator:
         """Describe all things that fit."""
         return ObjectDesignator(*pairs, quantifier=Quantifier.ALL, **properties)
 
-    def humans(self, *pairs: PropertyPair, **properties: Any) -> HumanDesignator:
+    def humans(self, *pairs: PropertyPair, **properties: object) -> HumanDesignator:
         """Describe all people that fit."""
         return HumanDesignator(*pairs, quantifier=Quantifier.ALL, **properties)
 
-    def locations(self, *pairs: PropertyPair, **properties: Any) -> LocationDesignator:
+    def locations(self, *pairs: PropertyPair, **properties: object) -> LocationDesignator:
         """Describe all places that fit."""
         return LocationDesignator(*pairs, quantifier=Quantifier.ALL, **properties)
 

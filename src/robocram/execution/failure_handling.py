@@ -31,7 +31,7 @@ class FailureControl:
         """Run the protected body again."""
         raise _Retry(self)
 
-    def return_value(self, value: Any) -> NoReturn:
+    def return_value(self, value: object) -> NoReturn:
         """End the form with ``value`` instead of the failure."""
         raise _Return(self, value)
 
@@ -56,7 +56,7 @@ class _Retry(_HandlerExit):
 
 
 class _Return(_HandlerExit):
-    def __init__(self, control: FailureControl, value: Any) -> None:
+    def __init__(self, control: FailureControl, value: object) -> None:
         super().__init__(control)
         self.value = value
 
@@ -146,7 +146,7 @@ def failure_handled(
 
     def decorate(fn: Callable[..., T]) -> Callable[..., T]:
         @functools.wraps(fn)
-        def wrapper(*args: Any, **kwargs: Any) -> T:
+        def wrapper(*args: object, **kwargs: object) -> T:
             return with_failure_handling(lambda: fn(*args, **kwargs), handlers)
 
         return wrapper

@@ -22,7 +22,7 @@ from robocram.execution.task_context import wait_until
 _ids = itertools.count(1)
 
 
-def _same(old: Any, new: Any) -> bool:
+def _same(old: object, new: object) -> bool:
     if old is new:
         return True
     try:
@@ -34,7 +34,7 @@ def _same(old: Any, new: Any) -> bool:
 class Fluent:
     """A thread-safe value to wait on; ``value`` reads and writes it."""
 
-    def __init__(self, value: Any = None, name: str | None = None) -> None:
+    def __init__(self, value: object = None, name: str | None = None) -> None:
         self.name = name or f"fluent-{next(_ids)}"
         self._cond = threading.Condition()
         self._value = value
@@ -59,7 +59,7 @@ class Fluent:
         with self._cond:
             return self._value
 
-    def set(self, value: Any) -> None:
+    def set(self, value: object) -> None:
         """Change the value; waiters and derived fluents see it if it differs."""
         if self._compute is not None:
             raise TypeError(f"fluent {self.name!r} is derived; set its source fluents instead")
@@ -71,7 +71,7 @@ class Fluent:
         return self.get()
 
     @value.setter
-    def value(self, value: Any) -> None:
+    def value(self, value: object) -> None:
         self.set(value)
 
     @property
@@ -90,7 +90,7 @@ class Fluent:
             self._cond.notify_all()
         self._notify_dependents(pulse=True)
 
-    def _assign(self, value: Any, pulse: bool) -> None:
+    def _assign(self, value: object, pulse: bool) -> None:
         with self._cond:
             changed = not _same(self._value, value)
             self._value = value
@@ -146,56 +146,56 @@ class Fluent:
             raise FluentWaitTimeout(fluent=self.name, timeout=timeout, value=self.get())
         return seen[-1]
 
-    def eq(self, other: Any) -> Fluent:
+    def eq(self, other: object) -> Fluent:
         """A fluent that is True while this value equals ``other``."""
         return derive(operator.eq, self, other, name=f"({self.name} == {_label(other)})")
 
-    def ne(self, other: Any) -> Fluent:
+    def ne(self, other: object) -> Fluent:
         """A fluent that is True while this value differs from ``other``."""
         return derive(operator.ne, self, other, name=f"({self.name} != {_label(other)})")
 
-    def __lt__(self, other: Any) -> Fluent:
+    def __lt__(self, other: object) -> Fluent:
         return derive(operator.lt, self, other, name=f"({self.name} < {_label(other)})")
 
-    def __le__(self, other: Any) -> Fluent:
+    def __le__(self, other: object) -> Fluent:
         return derive(operator.le, self, other, name=f"({self.name} <= {_label(other)})")
 
-    def __gt__(self, other: Any) -> Fluent:
+    def __gt__(self, other: object) -> Fluent:
         return derive(operator.gt, self, other, name=f"({self.name} > {_label(other)})")
 
-    def __ge__(self, other: Any) -> Fluent:
+    def __ge__(self, other: object) -> Fluent:
         return derive(operator.ge, self, other, name=f"({self.name} >= {_label(other)})")
 
-    def __add__(self, other: Any) -> Fluent:
+    def __add__(self, other: object) -> Fluent:
         return derive(operator.add, self, other, name=f"({self.name} + {_label(other)})")
 
-    def __radd__(self, other: Any) -> Fluent:
+    def __radd__(self, other: object) -> Fluent:
         return derive(operator.add, other, self, name=f"({_label(other)} + {self.name})")
 
-    def __sub__(self, other: Any) -> Fluent:
+    def __sub__(self, other: object) -> Fluent:
         return derive(operator.sub, self, other, name=f"({self.name} - {_label(other)})")
 
-    def __rsub__(self, other: Any) -> Fluent:
+    def __rsub__(self, other: object) -> Fluent:
         return derive(operator.sub, other, self, name=f"({_label(other)} - {self.name})")
 
-    def __mul__(self, other: Any) -> Fluent:
+    def __mul__(self, other: object) -> Fluent:
         return derive(operator.mul, self, other, name=f"({self.name} * {_label(other)})")
 
-    def __rmul__(self, other: Any) -> Fluent:
+    def __rmul__(self, other: object) -> Fluent:
         return derive(operator.mul, other, self, name=f"({_label(other)} * {self.name})")
 
-    def __truediv__(self, other: Any) -> Fluent:
+    def __truediv__(self, other: object) -> Fluent:
         return derive(operator.truediv, self, other, name=f"({self.name} / {_label(other)})")
 
     def __neg__(self) -> Fluent:
         return derive(operator.neg, self, name=f"(-{self.name})")
 
 
-def _label(value: Any) -> str:
+def _label(value: object) -> str:
     return value.name if isinstance(value, Fluent) else repr(value)
 
 
-def derive(fn: Callable[..., Any], *sources: Any, name: str | None = None) -> Fluent:
+def derive(fn: Callable[..., Any], *sources: object, name: str | None = None) -> Fluent:
     """A fluent whose value is ``fn(*values of sources)``; constants are passed as they are."""
 
     def compute() -> Any:
@@ -212,17 +212,17 @@ def derive(fn: Callable[..., Any], *sources: Any, name: str | None = None) -> Fl
     return derived
 
 
-def fl_and(*sources: Any) -> Fluent:
+def fl_and(*sources: object) -> Fluent:
     """True while every source value is truthy."""
     return derive(lambda *v: all(v), *sources, name=_joined("and", sources))
 
 
-def fl_or(*sources: Any) -> Fluent:
+def fl_or(*sources: object) -> Fluent:
     """True while any source value is truthy."""
     return derive(lambda *v: any(v), *sources, name=_joined("or", sources))
 
 
-def fl_not(source: Any) -> Fluent:
+def fl_not(source: object) -> Fluent:
     """True while the source value is falsy."""
     return derive(operator.not_, source, name=f"(not {_label(source)})")
 

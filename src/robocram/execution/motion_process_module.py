@@ -54,7 +54,7 @@ class MotionProcessModule(ProcessModule):
 
     resource: str = ""  # a class attribute; an instance may set its own before __init__
 
-    def __init_subclass__(cls, **kwargs: Any) -> None:
+    def __init_subclass__(cls, **kwargs: object) -> None:
         super().__init_subclass__(**kwargs)
         if not cls.resource or "run_command" in cls.__dict__:
             return

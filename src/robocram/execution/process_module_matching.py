@@ -12,7 +12,6 @@ from __future__ import annotations
 import contextvars
 from collections.abc import Iterator
 from contextlib import contextmanager
-from typing import Any
 
 from robocram.execution.process_module import ProcessModule
 from robocram.logic import KnowledgeBase
@@ -79,7 +78,7 @@ def process_modules_running(*modules: ProcessModule) -> Iterator[tuple[ProcessMo
             module.stop()
 
 
-def matching_process_modules(designator: Any, kb: KnowledgeBase) -> list[ProcessModule]:
+def matching_process_modules(designator: object, kb: KnowledgeBase) -> list[ProcessModule]:
     """Return the running modules that ``kb`` says match ``designator`` and are available."""
     by_name = {module.name: module for module in _RUNNING.get()}
     found: dict[str, ProcessModule] = {}

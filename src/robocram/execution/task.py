@@ -3,19 +3,31 @@
 Stopping and suspending are cooperative. ``stop()`` and ``suspend()`` only set flags and
 wake the task's waits; the task notices at its next stop point (``check_stop``, a sleep,
 a fluent wait, a PERFORM) and unwinds with :class:`TaskStopped` or blocks until resumed.
-A request on a task applies to all its descendants.
+A request on a task applies to all its descendants. A task tells the observers in its
+context when it starts and ends (``with listening(...)``, :mod:`task_listeners`).
 """
 
 from __future__ import annotations
 
+import contextvars
 import enum
 import threading
 import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
-from typing import Any
+from typing import Any, Protocol
 
-from robocram.execution.task_listeners import notify_finished, notify_started
+
+class TaskObserver(Protocol):
+    """Told when a task starts and ends (a :class:`TaskListener` is one)."""
+
+    def task_started(self, task: Task) -> None: ...
+    def task_finished(self, task: Task) -> None: ...
+
+
+TASK_OBSERVERS: contextvars.ContextVar[tuple[TaskObserver, ...]] = contextvars.ContextVar(
+    "robocram_task_listeners", default=()
+)
 
 
 class TaskStatus(enum.Enum):
@@ -193,13 +205,15 @@ class Task:
         """Mark the task running from now."""
         self.start_time = time.time()
         self.status = TaskStatus.RUNNING
-        notify_started(self)
+        for observer in TASK_OBSERVERS.get():
+            observer.task_started(self)
 
     def finish(
-        self, status: TaskStatus, result: Any = None, failure: BaseException | None = None
+        self, status: TaskStatus, result: object = None, failure: BaseException | None = None
     ) -> None:
         """Record the outcome and end time."""
         self.result, self.failure = result, failure
         self.end_time = time.time()
         self.status = status
-        notify_finished(self)
+        for observer in TASK_OBSERVERS.get():
+            observer.task_finished(self)

@@ -10,17 +10,11 @@ thread-safe; an exception from a hook propagates into the plan, like any bug.
 
 from __future__ import annotations
 
-import contextvars
 from collections.abc import Iterator
 from contextlib import contextmanager
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
-if TYPE_CHECKING:
-    from robocram.execution.task import Task
-
-_LISTENERS: contextvars.ContextVar[tuple[TaskListener, ...]] = contextvars.ContextVar(
-    "robocram_task_listeners", default=()
-)
+from robocram.execution.task import TASK_OBSERVERS, Task
 
 
 class TaskListener:
@@ -41,31 +35,19 @@ def listening(listener: TaskListener) -> Iterator[TaskListener]:
     """Tell ``listener`` about every task started inside the block (also in its threads)."""
     if not isinstance(listener, TaskListener):
         raise TypeError(f"listening() needs a TaskListener, got {listener!r}")
-    token = _LISTENERS.set((*_LISTENERS.get(), listener))
+    token = TASK_OBSERVERS.set((*TASK_OBSERVERS.get(), listener))
     try:
         yield listener
     finally:
-        _LISTENERS.reset(token)
+        TASK_OBSERVERS.reset(token)
 
 
 def task_listeners() -> tuple[TaskListener, ...]:
     """The listeners registered in the current context, outermost first."""
-    return _LISTENERS.get()
+    return tuple(o for o in TASK_OBSERVERS.get() if isinstance(o, TaskListener))
 
 
-def notify_started(task: Task) -> None:
-    """Call ``task_started`` on every current listener."""
-    for listener in _LISTENERS.get():
-        listener.task_started(task)
-
-
-def notify_finished(task: Task) -> None:
-    """Call ``task_finished`` on every current listener."""
-    for listener in _LISTENERS.get():
-        listener.task_finished(task)
-
-
-def notify_performing(task: Task, designator: Any) -> None:
+def notify_performing(task: Task, designator: object) -> None:
     """Call ``performing`` on every current listener."""
-    for listener in _LISTENERS.get():
+    for listener in task_listeners():
         listener.performing(task, designator)

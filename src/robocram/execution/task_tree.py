@@ -19,7 +19,7 @@ _repr.maxother = 400
 _RESULT_WIDTH = 72  # [characters] of a result shown in the tree
 
 
-def _result_text(value: Any) -> str:
+def _result_text(value: object) -> str:
     """A bounded repr that keeps the start of the value (its type and first fields)."""
     text = _repr.repr(value)
     return text if len(text) <= _RESULT_WIDTH else text[: _RESULT_WIDTH - 1] + "…"

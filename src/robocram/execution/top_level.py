@@ -64,7 +64,7 @@ class TopLevel:
     def _new_root(self) -> Task:
         return Task(self.name, current_task())
 
-    def run(self, fn: Callable[..., T], *args: Any, **kwargs: Any) -> T:
+    def run(self, fn: Callable[..., T], *args: object, **kwargs: object) -> T:
         """Run ``fn(*args, **kwargs)`` as the root task in this thread; join; return or raise."""
         task = self._task = self._new_root()
         with binding_task(task):
@@ -106,7 +106,7 @@ class TopLevel:
         """Decorate ``fn`` so that each call is a top-level run (the last run's tree kept)."""
 
         @functools.wraps(fn)
-        def wrapper(*args: Any, **kwargs: Any) -> T:
+        def wrapper(*args: object, **kwargs: object) -> T:
             return self.run(fn, *args, **kwargs)
 
         return wrapper
@@ -122,7 +122,7 @@ AMBIGUOUS = (
 def top_level(fn: None = None, *, name: str | None = None) -> TopLevel: ...
 @overload
 def top_level(fn: Callable[..., T], *, name: str | None = None) -> Callable[..., T]: ...
-def top_level(fn: Callable[..., Any] | None = None, *args: Any, name: str | None = None) -> Any:
+def top_level(fn: Callable[..., Any] | None = None, *args: object, name: str | None = None) -> Any:
     """Decorate ``fn`` as a top-level plan; without ``fn``, a TopLevel (decorator, ``with``).
 
     Raises:
@@ -156,7 +156,9 @@ def _decorating(fn: Callable[..., Any], caller: FrameType) -> bool:
     return caller.f_locals.get(fn.__name__) is not fn
 
 
-def run_top_level(fn: Callable[..., T], *args: Any, name: str | None = None, **kwargs: Any) -> T:
+def run_top_level(
+    fn: Callable[..., T], *args: object, name: str | None = None, **kwargs: object
+) -> T:
     """Run ``fn(*args, **kwargs)`` as a top level now; return its value or raise its failure.
 
     For the task tree as well, run a :class:`TopLevel` and read its ``tree``.

@@ -69,7 +69,7 @@ class GraspDoor:
             return self.world.pose(robot)
         return transform_pose(PoseStamped(self.description(robot).base_frame), "map").pose
 
-    def obj(self, spec: Any) -> _Object:
+    def obj(self, spec: object) -> _Object:
         if isinstance(spec, Term) and spec.name == "object" and spec.arity == 3:
             name, kind, pose = spec.args
             return _Object(str(name), str(kind), transform_pose(pose, "map").pose)
@@ -86,7 +86,7 @@ class GraspDoor:
             return shape_of(self.world, self.world.object(obj.name), *facts)
         return catalogue_shape(obj.kind, obj.name, *facts)
 
-    def arms(self, robot: str, arm: Any) -> list[str]:
+    def arms(self, robot: str, arm: object) -> list[str]:
         desc = self.description(robot)
         found = [a for a, s in desc.arms.items() if s.gripper is not None and a != desc.neck_arm]
         return found if isinstance(arm, Var) else [a for a in found if a == arm]
@@ -99,7 +99,7 @@ class GraspDoor:
             self.shape(obj), obj.pose, self.description(robot), arm, self.base_pose(robot), allowed
         )
 
-    def robots(self, robot: Any) -> list[str]:
+    def robots(self, robot: object) -> list[str]:
         names = [r.name for r in self.world.robots()] if self.world is not None else []
         if self.desc is not None and self.desc.name not in names:
             names.append(self.desc.name)
@@ -117,7 +117,9 @@ def install_grasp_predicates(
     install_grasp_facts(kb)
     door = GraspDoor(kb, world, description)
 
-    def object_grasp(spec: Any, robot: Any, arm: Any, name: Any, *_: Any) -> Solutions:
+    def object_grasp(
+        spec: object, robot: object, arm: object, name: object, *_: object
+    ) -> Solutions:
         obj = door.obj(spec)
         names = None if isinstance(name, Var) else (str(name),)
         for choice in door.arms(str(robot), arm):
@@ -129,7 +131,7 @@ def install_grasp_predicates(
                 poses = (PoseStamped.from_pose("map", p) for p in (c.tool, c.pre_grasp, c.lifted))
                 yield (spec, robot, choice, c.grasp.name, *poses)
 
-    def object_ungraspable(spec: Any, robot: Any, arm: Any, *_: Any) -> Solutions:
+    def object_ungraspable(spec: object, robot: object, arm: object, *_: object) -> Solutions:
         obj = door.obj(spec)
         for choice in door.arms(str(robot), arm):
             try:
@@ -137,12 +139,12 @@ def install_grasp_predicates(
             except ObjectUngraspable as err:
                 yield (spec, robot, choice, err.hand_width, err.needed_width)
 
-    def grasping_arm(robot: Any, arm: Any) -> Solutions:
+    def grasping_arm(robot: object, arm: object) -> Solutions:
         for name in door.robots(robot):
             for choice in door.arms(name, arm):
                 yield (name, choice)
 
-    def object_extent(spec: Any, *_: Any) -> Solutions:
+    def object_extent(spec: object, *_: object) -> Solutions:
         shape = door.shape(door.obj(spec))
         yield (spec, list(shape.low), list(shape.high))
 

@@ -6,6 +6,7 @@ from robocram.kinematics.descent import IKSettings
 from robocram.kinematics.errors import KinematicsError, TargetFrameError, UnknownNameError
 from robocram.kinematics.ik_result import IKResult
 from robocram.kinematics.ik_solver import CollisionCheck, IKSolver
+from robocram.kinematics.kinematics_cache import KinematicsCache
 from robocram.kinematics.planar_base import BaseMotion, PlanarBase, base_in_ik, split_base_motion
 from robocram.kinematics.reach import ReachBound
 from robocram.kinematics.solve_ik import forward_kinematics, reachable, solve_ik
@@ -17,6 +18,7 @@ __all__ = [
     "IKResult",
     "IKSettings",
     "IKSolver",
+    "KinematicsCache",
     "KinematicsError",
     "PlanarBase",
     "ReachBound",

@@ -2,25 +2,19 @@
 
 from __future__ import annotations
 
-import functools
-
 from robocram.kinematics.errors import KinematicsError, UnknownNameError
 from robocram.robots import ArmDescription, RobotDescription, RobotModel, load_description
 
 
-@functools.lru_cache(maxsize=16)
-def _builtin(name: str) -> RobotDescription:
-    return load_description(name)
-
-
 def loaded(description: RobotDescription | str) -> tuple[RobotDescription, RobotModel]:
-    """The description and its model: built-in names and unloaded descriptions get loaded."""
-    if isinstance(description, str):
-        desc = _builtin(description)
-    elif description.model is None:
-        desc = load_description(description)
-    else:
-        desc = description
+    """The description and its model: built-in names and unloaded descriptions get loaded.
+
+    Each load makes a new model, with nothing kept yet: callers asking more than once pass
+    the loaded description, whose model keeps the solvers built for it.
+    """
+    desc = description
+    if isinstance(desc, str) or desc.model is None:
+        desc = load_description(desc)
     if desc.model is None:
         raise KinematicsError(f"description {desc.name!r} has no model after loading")
     return desc, desc.model

@@ -11,7 +11,6 @@ counted as in :class:`~robocram.kinematics.IKSolver` (the two searches' counts a
 
 from __future__ import annotations
 
-import weakref
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import replace
 
@@ -22,12 +21,12 @@ from robocram.kinematics.arm_selection import loaded
 from robocram.kinematics.descent import IKSettings
 from robocram.kinematics.ik_result import IKResult
 from robocram.kinematics.ik_solver import CollisionCheck, IKSolver
+from robocram.kinematics.kinematics_cache import KinematicsCache
 from robocram.kinematics.planar_base import (
     BASE_JOINTS,
     BaseMotion,
     PlanarBase,
     split_base_motion,
-    with_planar_base,
 )
 from robocram.kinematics.planar_fit import planar_fits
 from robocram.kinematics.robot_kinematics import robot_kinematics
@@ -37,9 +36,6 @@ from robocram.tf import Pose, PoseStamped
 PLANAR_STARTS = 32  # fitted table samples tried before random configurations
 STILL_RESTARTS = 7  # restarts of the arm alone before the base may move (8 descents)
 STILL_ITERATIONS = 20  # steps per descent of the arm alone (a near miss creeps for long)
-_SOLVERS: weakref.WeakKeyDictionary[
-    RobotModel, dict[tuple[str, bool, str | None, PlanarBase], BaseIKSolver]
-] = weakref.WeakKeyDictionary()
 
 
 class BaseIKSolver(IKSolver):
@@ -58,13 +54,15 @@ class BaseIKSolver(IKSolver):
         use_torso: bool = False,
         frame: str | None = None,
         base: PlanarBase | None = None,
+        *,
+        cache: KinematicsCache | None = None,
     ) -> None:
         self.base = base or PlanarBase()
-        super().__init__(description, arm, use_torso, frame)
-        self.arm_solver = IKSolver.cached(self.description, arm, use_torso, frame)
+        super().__init__(description, arm, use_torso, frame, cache=cache)
+        self.arm_solver = IKSolver.cached(self.description, arm, use_torso, frame, cache=cache)
 
     def _chain(self, model: RobotModel, joints: tuple[str, ...]) -> ArmChain:
-        extended = robot_kinematics(with_planar_base(model, self.base))
+        extended = robot_kinematics(self.cache.planar_model(model, self.base))
         return ArmChain(extended, (*BASE_JOINTS, *joints), self.frame)
 
     @classmethod
@@ -75,16 +73,21 @@ class BaseIKSolver(IKSolver):
         use_torso: bool = False,
         frame: str | None = None,
         base: PlanarBase | None = None,
+        *,
+        cache: KinematicsCache | None = None,
     ) -> BaseIKSolver:
-        """The solver for these arguments, built on first use and kept with the model."""
+        """The solver for these arguments, built on first use and kept in ``cache`` (by
+        default the one the model keeps)."""
         desc, model = loaded(description)
-        per_model = _SOLVERS.setdefault(model, {})
-        key = (arm, use_torso, frame, base or PlanarBase())
-        solver = per_model.get(key)
-        if solver is None or solver.description.arms != desc.arms:
-            solver = cls(desc, arm, use_torso, frame, key[3])
-            per_model[key] = solver
-        return solver
+        cache = cache or KinematicsCache.of(model)
+        base = base or PlanarBase()
+        key = (cls, model, arm, use_torso, frame, base)
+        solver = cache.solvers.get(key)
+        if isinstance(solver, cls) and solver.description.arms == desc.arms:
+            return solver
+        built = cls(desc, arm, use_torso, frame, base, cache=cache)
+        cache.solvers.put(key, built)
+        return built
 
     def solve(
         self,

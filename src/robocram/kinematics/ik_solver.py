@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import math
 import time
-import weakref
 from collections import Counter
 from collections.abc import Callable, Collection, Iterator, Mapping
 from dataclasses import replace
@@ -31,14 +30,10 @@ from robocram.kinematics.arm_selection import arm_description, arm_joints, loade
 from robocram.kinematics.chain_sweep import chain_base
 from robocram.kinematics.descent import Best, IKSettings, descend
 from robocram.kinematics.ik_result import IKResult
+from robocram.kinematics.kinematics_cache import KinematicsCache
 from robocram.kinematics.reach import ReachBound
 from robocram.kinematics.robot_kinematics import pose_to_se3, robot_kinematics
-from robocram.kinematics.seed_table import (
-    ROTATION_WEIGHT,
-    SeedTable,
-    random_configurations,
-    seed_table,
-)
+from robocram.kinematics.seed_table import ROTATION_WEIGHT, SeedTable, random_configurations
 from robocram.robots import RobotDescription, RobotModel
 from robocram.tf import Pose, PoseStamped
 
@@ -49,15 +44,13 @@ other)`` pairs, when that configuration collides (False or empty when it is free
 
 TABLE_SIZE = 20_000  # sampled configurations in an arm's start table
 _DEFAULT = IKSettings()
-_SOLVERS: weakref.WeakKeyDictionary[RobotModel, dict[tuple[str, bool, str | None], IKSolver]] = (
-    weakref.WeakKeyDictionary()
-)
 
 
 class IKSolver:
     """IK for the tool frame of one arm of a description (optionally moving the torso).
 
     Build it once and query it many times; :meth:`cached` shares solvers between callers.
+    Its start table comes from ``cache`` (by default the one the model keeps).
     """
 
     def __init__(
@@ -67,8 +60,11 @@ class IKSolver:
         use_torso: bool = False,
         frame: str | None = None,
         table_size: int = TABLE_SIZE,
+        *,
+        cache: KinematicsCache | None = None,
     ) -> None:
         desc, model = loaded(description)
+        self.cache = cache or KinematicsCache.of(model)
         self.description = desc
         self.arm = arm
         self.use_torso = use_torso
@@ -94,16 +90,20 @@ class IKSolver:
         arm: str,
         use_torso: bool = False,
         frame: str | None = None,
+        *,
+        cache: KinematicsCache | None = None,
     ) -> IKSolver:
-        """The solver for these arguments, built on first use and kept with the model."""
+        """The solver for these arguments, built on first use and kept in ``cache`` (by
+        default the one the model keeps)."""
         desc, model = loaded(description)
-        per_model = _SOLVERS.setdefault(model, {})
-        key = (arm, use_torso, frame)
-        solver = per_model.get(key)
-        if solver is None or solver.description.arms != desc.arms:
-            solver = cls(desc, arm, use_torso, frame)
-            per_model[key] = solver
-        return solver
+        cache = cache or KinematicsCache.of(model)
+        key = (cls, model, arm, use_torso, frame)
+        solver = cache.solvers.get(key)
+        if isinstance(solver, cls) and solver.description.arms == desc.arms:
+            return solver
+        built = cls(desc, arm, use_torso, frame, cache=cache)
+        cache.solvers.put(key, built)
+        return built
 
     @property
     def variables(self) -> tuple[str, ...]:
@@ -114,7 +114,7 @@ class IKSolver:
     def table(self) -> SeedTable:
         """The start table, sampled on first use (tens of milliseconds)."""
         if self._table is None:
-            self._table = seed_table(self.chain, self._table_size, self.reach.radius)
+            self._table = self.cache.seed_table(self.chain, self._table_size, self.reach.radius)
         return self._table
 
     def start(self, seed: Mapping[str, float]) -> FloatArray:

@@ -11,7 +11,6 @@ root link where the robot stands now, so a solution's base part is a
 from __future__ import annotations
 
 import math
-import weakref
 from collections.abc import Mapping
 from dataclasses import dataclass
 
@@ -104,21 +103,9 @@ def base_in_ik(description: RobotDescription, arm: str) -> bool:
     return 0 < len(joints) < FULL_ARM_JOINTS
 
 
-_EXTENDED: weakref.WeakKeyDictionary[RobotModel, dict[PlanarBase, RobotModel]] = (
-    weakref.WeakKeyDictionary()
-)
-
-
 def with_planar_base(model: RobotModel, base: PlanarBase) -> RobotModel:
-    """``model`` below the virtual planar joints of ``base`` (cached per model and base)."""
-    per_model = _EXTENDED.setdefault(model, {})
-    extended = per_model.get(base)
-    if extended is None:
-        extended = per_model[base] = _extend(model, base)
-    return extended
-
-
-def _extend(model: RobotModel, base: PlanarBase) -> RobotModel:
+    """``model`` below the virtual planar joints of ``base`` (a new model each call:
+    :meth:`~robocram.kinematics.KinematicsCache.planar_model` keeps one)."""
     clash = [n for n in (BASE_ORIGIN_LINK, "planar_base_x", "planar_base_y") if n in model.links]
     clash += [n for n in BASE_JOINTS if n in model.joints]
     if clash:

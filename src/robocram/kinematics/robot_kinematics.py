@@ -1,15 +1,15 @@
 """The pinocchio model of a whole robot, with the joint facts its URDF states.
 
 Built once per :class:`~robocram.robots.RobotModel` from ``model.to_urdf()`` (so frames
-and boxes added in code are there) and cached. Pinocchio reads mimic joints as free joints;
-the coupling is kept here and applied by the IK and by :meth:`configuration`.
+and boxes added in code are there) and kept with the model (``RobotModel.derived``).
+Pinocchio reads mimic joints as free joints; the coupling is kept here and applied by the
+IK and by :meth:`configuration`.
 Poses are expressed in the URDF root link (pinocchio's universe frame coincides with it).
 """
 
 from __future__ import annotations
 
 import math
-import weakref
 from collections.abc import Mapping
 from dataclasses import dataclass
 
@@ -129,13 +129,6 @@ class RobotKinematics:
         return self.frame_pose(target.frame_id, joint_positions) * target.pose
 
 
-_CACHE: weakref.WeakKeyDictionary[RobotModel, RobotKinematics] = weakref.WeakKeyDictionary()
-
-
 def robot_kinematics(robot_model: RobotModel) -> RobotKinematics:
-    """The (cached) kinematics of ``robot_model``; models are immutable, so this is safe."""
-    kin = _CACHE.get(robot_model)
-    if kin is None:
-        kin = RobotKinematics(robot_model)
-        _CACHE[robot_model] = kin
-    return kin
+    """The kinematics of ``robot_model``, built once and kept with the model."""
+    return robot_model.derived(RobotKinematics)

@@ -51,24 +51,6 @@ def geometry_key(chain: ArmChain) -> tuple[object, ...]:
     )
 
 
-_TABLES: dict[tuple[object, ...], SeedTable] = {}
-_TABLES_KEPT = 32  # tables of different chains kept (a few MB each)
-
-
-def seed_table(chain: ArmChain, size: int, reach: float) -> SeedTable:
-    """The start table of ``chain``, shared by every chain of the same geometry.
-
-    Tests and batch projection load the same robot many times; sampling is then done once.
-    """
-    key = (geometry_key(chain), size, reach)
-    table = _TABLES.get(key)
-    if table is None:
-        if len(_TABLES) >= _TABLES_KEPT:
-            _TABLES.pop(next(iter(_TABLES)))
-        table = _TABLES[key] = SeedTable(chain, size, reach)
-    return table
-
-
 class SeedTable:
     """Sampled configurations of a chain, found by how close their tool pose is to a target.
 

@@ -6,13 +6,13 @@ HSR), i.e. relative to the robot base, not the map: transform map poses first.
 
 from __future__ import annotations
 
-import functools
 from collections.abc import Callable, Mapping
 
 from robocram.kinematics.arm_selection import loaded
 from robocram.kinematics.base_ik_solver import BaseIKSolver
 from robocram.kinematics.ik_result import IKResult
 from robocram.kinematics.ik_solver import CollisionCheck, IKSettings, IKSolver
+from robocram.kinematics.kinematics_cache import KinematicsCache
 from robocram.kinematics.planar_base import PlanarBase
 from robocram.kinematics.robot_kinematics import robot_kinematics
 from robocram.robots import RobotDescription
@@ -35,6 +35,7 @@ def solve_ik(
     random_seed: int = 0,
     stop_check: Callable[[], None] | None = None,
     base: PlanarBase | None = None,
+    cache: KinematicsCache | None = None,
 ) -> IKResult:
     """Joint values that put ``frame`` (default: the arm's tool frame) at ``target``.
 
@@ -58,27 +59,21 @@ def solve_ik(
         base: also move the base within this travel (planar x, y, yaw before the root
             link); the move comes back in ``IKResult.base_motion``. None keeps it still;
             :func:`~robocram.kinematics.base_in_ik` says whether the description wants it.
+        cache: where the solver and its start table are kept; by default the cache of the
+            description's model (built on the first query of an arm, kept with the model).
 
     Returns:
         An IKResult; ``success`` False when no solution was found within the budget.
     """
-    solver = _solver(description, arm, use_torso, frame, base)
-    settings = _settings(position_tolerance, orientation_tolerance, max_restarts, max_iterations)
-    return solver.solve(
-        target, dict(seed or {}), settings, collision_check, random_seed, stop_check
-    )
-
-
-@functools.lru_cache(maxsize=64)
-def _settings(
-    position_tolerance: float, orientation_tolerance: float, max_restarts: int, max_iterations: int
-) -> IKSettings:
-    """Settings for these budgets (callers that query many targets reuse one object)."""
-    return IKSettings(
+    solver = _solver(description, arm, use_torso, frame, base, cache)
+    settings = IKSettings(
         position_tolerance=position_tolerance,
         orientation_tolerance=orientation_tolerance,
         max_restarts=max_restarts,
         max_iterations=max_iterations,
+    )
+    return solver.solve(
+        target, dict(seed or {}), settings, collision_check, random_seed, stop_check
     )
 
 
@@ -102,6 +97,7 @@ def reachable(
     frame: str | None = None,
     use_torso: bool = False,
     base: PlanarBase | None = None,
+    cache: KinematicsCache | None = None,
 ) -> bool:
     """Whether ``target`` may be reachable: False only when it is certainly out of reach.
 
@@ -111,7 +107,7 @@ def reachable(
     from its first joint. True says only "maybe": :func:`solve_ik` decides. Arguments are
     those of :func:`solve_ik`.
     """
-    solver = _solver(description, arm, use_torso, frame, base)
+    solver = _solver(description, arm, use_torso, frame, base, cache)
     return solver.reachable(target, dict(seed or {}))
 
 
@@ -121,8 +117,9 @@ def _solver(
     use_torso: bool,
     frame: str | None,
     base: PlanarBase | None,
+    cache: KinematicsCache | None,
 ) -> IKSolver:
     """The cached solver for a query, with the base in the chain when ``base`` is given."""
     if base is None:
-        return IKSolver.cached(description, arm, use_torso, frame)
-    return BaseIKSolver.cached(description, arm, use_torso, frame, base)
+        return IKSolver.cached(description, arm, use_torso, frame, cache=cache)
+    return BaseIKSolver.cached(description, arm, use_torso, frame, base, cache=cache)

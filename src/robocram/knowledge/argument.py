@@ -31,11 +31,11 @@ def unit(text: str) -> Any:
     return dataclasses.field(metadata={"unit": text})
 
 
-def _joint_states(value: Any) -> JointStates:
+def _joint_states(value: object) -> JointStates:
     return tuple((str(joint), float(v)) for joint, v in to_python(value))
 
 
-def _pose_stamped(value: Any) -> PoseStamped:
+def _pose_stamped(value: object) -> PoseStamped:
     if not isinstance(value, PoseStamped):
         raise TypeError(f"expected a PoseStamped, got {value!r}")
     return value
@@ -60,7 +60,7 @@ _TYPE_TEXT: dict[Any, str] = {
 }
 
 
-def to_prolog(value: Any) -> Any:
+def to_prolog(value: object) -> Any:
     """The Prolog form of a row value: plain tuples become lists, the rest stays itself."""
     if type(value) is tuple:  # a Term is a tuple too, and stays a term
         return make_list([to_prolog(v) for v in value])

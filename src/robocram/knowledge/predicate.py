@@ -93,17 +93,17 @@ class Predicate(Generic[Row]):
                 raise UnknownArgumentError(self.indicator, key, tuple(names))
         return {names[key]: to_prolog(value) for key, value in bound.items()}
 
-    def answers(self, kb: Answers, **bound: Any) -> Iterator[Row]:
+    def answers(self, kb: Answers, **bound: object) -> Iterator[Row]:
         """Every answer as a row, arguments bound by name (``robot="pr2"``)."""
         for answer in kb.query(self._goal, **self._bindings(bound)):
             values = {a.name: answer.get(a.variable, bound.get(a.name)) for a in self.arguments}
             yield self.row(**{a.name: a.convert(values[a.name]) for a in self.arguments})
 
-    def first(self, kb: Answers, **bound: Any) -> Row | None:
+    def first(self, kb: Answers, **bound: object) -> Row | None:
         """The first answer, or None when there is none."""
         return next(self.answers(kb, **bound), None)
 
-    def holds(self, kb: Answers, **bound: Any) -> bool:
+    def holds(self, kb: Answers, **bound: object) -> bool:
         """Whether there is an answer."""
         return next(kb.query(self._goal, **self._bindings(bound)), None) is not None
 

@@ -12,7 +12,7 @@ machine. A goal the planner cannot connect within its budget raises
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -24,7 +24,9 @@ from robocram.motion.segment_check import CheckCounter, first_collision, segment
 from robocram.motion.travel_bound import TravelBound
 
 PLANNING_BUDGET = 20_000  # configurations RRTConnect may check
-SHORTCUT_TRIES = 60  # random shortcut attempts after planning
+COARSE = 8  # RRTConnect checks its tree edges this much coarser; the path is then re-checked
+PLANNING_ATTEMPTS = 3  # plans (seed, seed + 1, ...) whose re-check may fail before giving up
+SHORTCUT_TRIES = 20  # random shortcut attempts after planning
 
 
 @dataclass(frozen=True)
@@ -72,13 +74,23 @@ def plan_joint_path(
         return JointPath(joints, (tuple(a), tuple(b)), "straight", counter.checks)
     if plan:
         lower, upper = _box(a, b, limits)
-        found = rrt_connect(checker, a, b, lower, upper, bound, counter, budget, seed)
-        if found is not None:
+        coarse = replace(
+            bound,
+            max_link_travel=COARSE * bound.max_link_travel,
+            max_joint_step=COARSE * bound.max_joint_step,
+        )
+        for attempt in range(PLANNING_ATTEMPTS):
+            found = rrt_connect(
+                checker, a, b, lower, upper, coarse, counter, budget, seed + attempt
+            )
+            if found is None:
+                break
             waypoints = shortcut(checker, found, bound, counter, seed)
-            return JointPath(
-                joints, tuple(tuple(map(float, w)) for w in waypoints), "rrt_connect",
-                counter.checks,
-            )  # fmt: skip
+            if _dense_free(checker, waypoints, bound, counter):
+                return JointPath(
+                    joints, tuple(tuple(map(float, w)) for w in waypoints), "rrt_connect",
+                    counter.checks,
+                )  # fmt: skip
     hit = first_collision(checker, a, b, bound, counter)
     fraction, pairs = hit if hit is not None else (0.0, [])
     planned = f"; RRTConnect found no way round in {budget} checks" if plan else ""
@@ -86,6 +98,19 @@ def plan_joint_path(
         f"{what}'s straight path is blocked {fraction:.0%} of the way: {_pairs(pairs)}{planned}",
         colliding_pairs=tuple(pairs),
         path_fraction=fraction,
+    )
+
+
+def _dense_free(
+    checker: ConfigurationChecker,
+    waypoints: list[FloatArray],
+    bound: TravelBound,
+    counter: CheckCounter,
+) -> bool:
+    """Whether every segment of the path is free at the full check resolution."""
+    return all(
+        segment_free(checker, qa, qb, bound, counter)
+        for qa, qb in zip(waypoints, waypoints[1:], strict=False)
     )
 
 

@@ -24,7 +24,7 @@ from robocram.tf import PoseStamped
 PARKING_BACKOFFS = (0.15, 0.3)  # [m] the base backs away before each further parking try
 
 
-def navigate(target: Any) -> Any:
+def navigate(target: object) -> Any:
     """Drive the base to ``target`` (a pose, a PoseStamped or a location designator)."""
     return perform(a.motion(type="going", target=target))
 
@@ -46,7 +46,7 @@ def park_arms(arm: str | None = None) -> list[str]:
     return parked
 
 
-def _park(robot: str, arm: str, states: list[list[Any]]) -> None:
+def _park(robot: str, arm: str, states: list[list[object]]) -> None:
     """Park ``arm``; when its parking pose would hit what the robot stands at (a table the
     hand just put something on), back the base away and try again."""
     for attempt in range(len(PARKING_BACKOFFS) + 1):
@@ -76,7 +76,7 @@ def move_torso(joint_angle: float | str) -> Any:
     return perform(a.motion(type="moving-torso", joint_angle=joint_angle))
 
 
-def look(target: Any) -> Any:
+def look(target: object) -> Any:
     """Point the camera at ``target``."""
     return perform(a.motion(type="looking", target=target))
 

@@ -90,7 +90,7 @@ def _try_spot(
 
 def deliver(
     object: Held | ObjectDesignator | str,  # noqa: A002 - CRAM's key
-    target: Any,
+    target: object,
     arm: str | None = None,
     stand_retries: int = STAND_RETRIES,
     place_retries: int = PLACE_RETRIES,

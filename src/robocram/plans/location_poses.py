@@ -17,7 +17,7 @@ def as_map_pose(value: Any) -> Pose:
     return Pose.coerce(value)
 
 
-def location_poses(target: Any) -> Iterator[Pose]:
+def location_poses(target: object) -> Iterator[Pose]:
     """Each solution of a location designator in turn; a plain pose is its only solution.
 
     A designator's stream may end with a ``DesignatorError`` (the resolver found no more

@@ -88,7 +88,7 @@ def arms_nearest_first(robot: str, target: Pose | None, arm: str | None) -> list
     return sorted(arms, key=distance)
 
 
-def grasp_choices(robot: str, spec: Any, arm: str, grasp: str | None) -> list[ObjectGrasp]:
+def grasp_choices(robot: str, spec: object, arm: str, grasp: str | None) -> list[ObjectGrasp]:
     """The KB's grasps of ``name`` by ``arm`` (only ``grasp`` if given), best first.
 
     Raises:

@@ -12,7 +12,6 @@ the :class:`AttemptLog`, so callers (and tests) see what it took.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
 
 from robocram.designators import ObjectDesignator, an
 from robocram.execution import sub_task
@@ -78,7 +77,7 @@ def seen_from_here(object: ObjectDesignator | str) -> ObjectDesignator | None:  
 
 def transport(
     object: ObjectDesignator | str,  # noqa: A002 - CRAM's key
-    target: Any,
+    target: object,
     arm: str | None = None,
     grasp: str | None = None,
     stand_retries: int = STAND_RETRIES,

@@ -20,7 +20,11 @@ from collections.abc import Mapping
 from dataclasses import replace
 
 from robocram.execution import checkpoint
-from robocram.execution.failures import ManipulationGoalNotReached, ManipulationPathBlocked
+from robocram.execution.failures import (
+    ManipulationGoalNotReached,
+    ManipulationPathBlocked,
+    NavigationLowLevelFailure,
+)
 from robocram.kinematics import BaseMotion, IKResult, PlanarBase, base_in_ik, solve_ik
 from robocram.motion import ArmMotion, plan_arm_motion, plan_tool_line
 from robocram.projection.collision_mode import allowed_links, collision_check
@@ -118,12 +122,45 @@ def move_tcp(
         raise unreachable(desc, arm, target, target_in_map, collision_mode, result)
     motion = result.base_motion
     if motion is not None and motion != BaseMotion():
-        drive(robot, moved_base(robot, motion))
+        if _arm_then_base(robot, arm, result, moved_base(robot, motion), collision_mode):
+            reached = robot.world.link_pose(robot.name, spec.tool_frame)
+            return ensure_reached(robot.name, arm, reached, target, target_in_map)
         target_in_base = robot.base_pose().inverse() * target_in_map
     arm_motion = _arm_motion(robot, arm, result, target_in_base, collision_mode)
     follow(robot, arm_motion.trajectory)
     reached = robot.world.link_pose(robot.name, spec.tool_frame)
     return ensure_reached(robot.name, arm, reached, target, target_in_map)
+
+
+def _arm_then_base(
+    robot: ProjectedRobot, arm: str, result: IKResult, base_goal: Pose, mode: str
+) -> bool:
+    """Move the base for a solution that needs it: first the base with the arm as it is
+    (False: the arm moves after it); if the arm as it is does not fit there (over a table),
+    the arm first, then the base (True: both done). Each motion is checked on its own.
+
+    Raises:
+        NavigationLowLevelFailure: neither order works (the base's failure).
+    """
+    try:
+        drive(robot, base_goal)
+        return False
+    except NavigationLowLevelFailure as failure:
+        first = failure
+    try:
+        settings = replace(robot.motion, check=mode.replace("-", "_") != "allow_all")
+        motion = plan_arm_motion(
+            robot.world, robot.name, dict(result.joint_positions),
+            allowed_links=allowed_links(robot, arm, mode), settings=settings,
+        )  # fmt: skip
+    except ManipulationPathBlocked:
+        raise first from None
+    follow(robot, motion.trajectory)
+    try:
+        drive(robot, base_goal)
+    except NavigationLowLevelFailure:
+        raise first from None
+    return True
 
 
 def _arm_motion(

@@ -2,9 +2,7 @@
 
 from robocram.robots.description import (
     ArmDescription,
-    BoxSpec,
     CameraDescription,
-    FrameSpec,
     LoadedDescription,
     PanTiltDescription,
     RobotDescription,
@@ -27,6 +25,7 @@ from robocram.robots.gripper import GripperDescription, GripperJoint
 from robocram.robots.interface_facts import install_description
 from robocram.robots.loading import load_description
 from robocram.robots.mimic import mimic_followers
+from robocram.robots.model_additions import BoxSpec, FrameSpec
 from robocram.robots.model_pose import link_pose
 from robocram.robots.robot_model import RobotModel
 from robocram.robots.urdf_elements import Geometry, Inertial, Joint, Link, Mimic

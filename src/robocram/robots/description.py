@@ -11,15 +11,12 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass, field, fields
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
 
 from robocram.robots.errors import DescriptionError
 from robocram.robots.findings import Finding
 from robocram.robots.gripper import GripperDescription
-from robocram.tf import Pose
-
-if TYPE_CHECKING:
-    from robocram.robots.robot_model import RobotModel
+from robocram.robots.model_additions import BoxSpec, FrameSpec
+from robocram.robots.robot_model import RobotModel
 
 
 @dataclass(frozen=True)
@@ -111,25 +108,6 @@ class PanTiltDescription:
         return (self.pan_joint, self.pan_link), (self.tilt_joint, self.tilt_link)
 
 
-@dataclass(frozen=True)
-class FrameSpec:
-    """A frame added to the model in code, as a child of ``parent`` by a fixed joint."""
-
-    name: str
-    parent: str
-    pose: Pose  # of the new frame in ``parent``
-
-
-@dataclass(frozen=True)
-class BoxSpec:
-    """A collision box added to the model in code, on a new link fixed to ``parent``."""
-
-    name: str
-    parent: str
-    pose: Pose  # of the box centre in ``parent``
-    size: tuple[float, float, float]  # [m] full extents along x, y, z
-
-
 DEFAULT_ALLOWED_CONTACTS: tuple[tuple[str, str], ...] = (("*", "floor"), ("gripper", "held"))
 """Which contacts are not collisions, as ``(robot links, other)`` rules. Robot links: ``*``
 (any), ``gripper`` or ``hand`` (an arm's, with that arm's held object), ``base`` (links not
@@ -208,7 +186,7 @@ class LoadedDescription(RobotDescription):
 
     @classmethod
     def checked(
-        cls, desc: RobotDescription, model: RobotModel, **changes: Any
+        cls, desc: RobotDescription, model: RobotModel, **changes: object
     ) -> LoadedDescription:
         """``desc`` with ``model`` and ``changes`` applied (for ``load_description``)."""
         values = {f.name: getattr(desc, f.name) for f in fields(RobotDescription)}

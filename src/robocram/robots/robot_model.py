@@ -7,12 +7,13 @@ frames and collision boxes are added in code and the URDF text is never edited.
 from __future__ import annotations
 
 import warnings
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TypeVar, cast
 
-from robocram.robots.description import BoxSpec, FrameSpec
 from robocram.robots.errors import DescriptionError, MissingMeshWarning, UrdfError, closest_names
+from robocram.robots.model_additions import BoxSpec, FrameSpec
 from robocram.robots.package_resolver import PackageResolver
 from robocram.robots.safe_xml import decode_xml, parse_xml
 from robocram.robots.urdf_elements import Collision, Geometry, Inertial, Joint, Link
@@ -21,6 +22,8 @@ from robocram.robots.urdf_writer import write_urdf
 
 # A frame added in code weighs 1 g: PyBullet would otherwise give it 1 kg and unit inertia.
 _FRAME_INERTIA = Inertial(0.001, (1e-9, 0.0, 0.0, 1e-9, 0.0, 1e-9))
+
+T = TypeVar("T")
 
 
 def kinematic_loop(links: Iterable[str], parent_joint: dict[str, Joint]) -> list[Joint]:
@@ -56,6 +59,9 @@ class RobotModel:
     joints: dict[str, Joint]
     source: str = "<string>"
     _parent_joint: dict[str, Joint] = field(init=False, repr=False)
+    _derived: dict[Callable[[RobotModel], object], object] = field(
+        init=False, repr=False, default_factory=dict
+    )
 
     def __post_init__(self) -> None:
         parent_joint: dict[str, Joint] = {}
@@ -172,6 +178,22 @@ class RobotModel:
         links = {**self.links, link.name: link}
         joints = {**self.joints, joint.name: joint}
         return RobotModel(self.name, links, joints, self.source)
+
+    def derived(self, make: Callable[[RobotModel], T]) -> T:
+        """``make(self)``, built on first use and kept with this model, one per ``make``.
+
+        Upper layers keep what they build from a model here (kinematics keeps its pinocchio
+        model and its IK caches), so it lives exactly as long as the model and no module
+        holds a cache. Models never change, so a value derived once stays right.
+        """
+        found = self._derived.get(make)
+        if found is None:  # two threads may both build; both get the one stored first
+            found = self._derived.setdefault(make, make(self))
+        return cast(T, found)
+
+    def __getstate__(self) -> dict[str, object]:
+        """Pickled without derived values: they are rebuilt where the copy is used."""
+        return {**self.__dict__, "_derived": {}}
 
     def to_urdf(self, path: Path | None = None) -> str:
         """URDF XML of this model (absolute mesh paths); also written to ``path`` if given.

@@ -10,7 +10,6 @@ import codecs
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
 from xml.parsers import expat
 
 from robocram.robots.errors import UrdfError
@@ -38,7 +37,7 @@ class XmlNode:
 class _Builder:
     """Builds the node tree from expat callbacks and refuses DTDs."""
 
-    def __init__(self, parser: Any, source: str | Path) -> None:
+    def __init__(self, parser: expat.XMLParserType, source: str | Path) -> None:
         self.parser = parser
         self.source = source
         self.stack: list[XmlNode] = []

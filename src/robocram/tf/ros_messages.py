@@ -19,7 +19,7 @@ from robocram.tf.stamped import PoseStamped, TransformStamped
 RosDict = dict[str, Any]
 
 
-def _get(d: Any, key: str, path: str) -> Any:
+def _get(d: object, key: str, path: str) -> Any:
     if not isinstance(d, Mapping):
         raise RosMessageError(f"ROS message field {path or '<root>'!r} must be a dict", path)
     where = f"{path}.{key}" if path else key
@@ -28,7 +28,7 @@ def _get(d: Any, key: str, path: str) -> Any:
     return d[key]
 
 
-def _number(d: Any, key: str, path: str) -> float:
+def _number(d: object, key: str, path: str) -> float:
     value = _get(d, key, path)
     if isinstance(value, bool) or not isinstance(value, int | float):
         where = f"{path}.{key}" if path else key
@@ -36,11 +36,11 @@ def _number(d: Any, key: str, path: str) -> float:
     return float(value)
 
 
-def _xyz(d: Any, path: str) -> tuple[float, float, float]:
+def _xyz(d: object, path: str) -> tuple[float, float, float]:
     return (_number(d, "x", path), _number(d, "y", path), _number(d, "z", path))
 
 
-def _xyzw(d: Any, path: str) -> tuple[float, float, float, float]:
+def _xyzw(d: object, path: str) -> tuple[float, float, float, float]:
     return (*_xyz(d, path), _number(d, "w", path))
 
 
@@ -55,7 +55,7 @@ def stamp_to_ros(stamp: float, ros2: bool = False) -> dict[str, int]:
     return {"sec": secs, "nanosec": nsecs} if ros2 else {"secs": secs, "nsecs": nsecs}
 
 
-def stamp_from_ros(d: Any, path: str = "header.stamp") -> float:
+def stamp_from_ros(d: object, path: str = "header.stamp") -> float:
     """Time [s] of a ROS 1 ``{"secs", "nsecs"}`` or ROS 2 ``{"sec", "nanosec"}`` stamp."""
     if isinstance(d, Mapping) and "sec" in d:
         return _number(d, "sec", path) + _number(d, "nanosec", path) * 1e-9
@@ -66,7 +66,7 @@ def _header_to_ros(frame_id: str, stamp: float, ros2: bool) -> RosDict:
     return {"frame_id": frame_id, "stamp": stamp_to_ros(stamp, ros2)}
 
 
-def _header_from_ros(d: Any) -> tuple[str, float]:
+def _header_from_ros(d: object) -> tuple[str, float]:
     header = _get(d, "header", "")
     frame_id = _get(header, "frame_id", "header")
     if not isinstance(frame_id, str) or not frame_id:
@@ -86,7 +86,7 @@ def pose_to_ros(pose: Pose) -> RosDict:
     }
 
 
-def pose_from_ros(d: Any, path: str = "") -> Pose:
+def pose_from_ros(d: object, path: str = "") -> Pose:
     """Pose of a ``geometry_msgs/Pose`` dict."""
     prefix = f"{path}." if path else ""
     position = _xyz(_get(d, "position", path), f"{prefix}position")
@@ -102,7 +102,7 @@ def pose_stamped_to_ros(pose: PoseStamped, ros2: bool = False) -> RosDict:
     }
 
 
-def pose_stamped_from_ros(d: Any) -> PoseStamped:
+def pose_stamped_from_ros(d: object) -> PoseStamped:
     """PoseStamped of a ``geometry_msgs/PoseStamped`` dict."""
     frame_id, stamp = _header_from_ros(d)
     return PoseStamped.from_pose(frame_id, pose_from_ros(_get(d, "pose", ""), "pose"), stamp)
@@ -120,7 +120,7 @@ def transform_stamped_to_ros(transform: TransformStamped, ros2: bool = False) ->
     }
 
 
-def transform_stamped_from_ros(d: Any) -> TransformStamped:
+def transform_stamped_from_ros(d: object) -> TransformStamped:
     """TransformStamped of a ``geometry_msgs/TransformStamped`` dict."""
     frame_id, stamp = _header_from_ros(d)
     child = _get(d, "child_frame_id", "")

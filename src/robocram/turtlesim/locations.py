@@ -41,7 +41,7 @@ def grid_cell_generator(size: float, rng: random.Random) -> Any:
     return generate
 
 
-def _index(value: Any, names: tuple[str, ...], key: str) -> int:
+def _index(value: object, names: tuple[str, ...], key: str) -> int:
     if value is None:
         return 1
     if value not in names:
@@ -52,7 +52,7 @@ def _index(value: Any, names: tuple[str, ...], key: str) -> int:
 def field_validator(size: float) -> Any:
     """Return a validator that rejects points off the ``[0, size]^2`` field."""
 
-    def validate(designator: Any, candidate: Any) -> Verdict:
+    def validate(designator: object, candidate: object) -> Verdict:
         position = getattr(candidate, "position", candidate)
         if not isinstance(position, (tuple, list)) or len(position) < 2:
             return Verdict.UNKNOWN

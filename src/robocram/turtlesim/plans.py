@@ -6,14 +6,13 @@ Plans only PERFORM designators, so they run unchanged in any turtle environment.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import Any
 
 from robocram.designators import a, an
 from robocram.execution.perform import perform
 from robocram.turtlesim.world import Point, TurtlePose
 
 
-def navigate(goal: Any) -> TurtlePose:
+def navigate(goal: object) -> TurtlePose:
     """Go to ``goal`` (a point or a location designator) by a ``moving`` motion."""
     pose: TurtlePose = perform(a.motion(type="moving", goal=goal))
     return pose

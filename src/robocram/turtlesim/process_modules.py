@@ -22,7 +22,7 @@ from robocram.turtlesim.controller import GoToGains, go_to
 from robocram.turtlesim.world import TurtlePose, TurtleWorld
 
 
-def goal_xy(goal: Any) -> tuple[float, float]:
+def goal_xy(goal: object) -> tuple[float, float]:
     """Read ``(x, y)`` [m] from a tuple/list ``(x, y[, z])``, a ``Pose`` or a ``TurtlePose``."""
     if isinstance(goal, TurtlePose):
         return goal.x, goal.y
@@ -44,7 +44,7 @@ class TurtleNavigationPM(ProcessModule):
         self.world = world
         self.gains = gains or GoToGains()
 
-    def execute(self, command: Any) -> Any:
+    def execute(self, command: object) -> Any:
         """Drive or go to a goal, stepping the simulation."""
         if isinstance(command, Term) and command.name == "drive" and command.arity == 2:
             speed, angle = (float(v) for v in command.args)
@@ -54,7 +54,7 @@ class TurtleNavigationPM(ProcessModule):
             return go_to(self.world, x, y, self.gains, check=checkpoint)
         raise self.unsupported(command, ["drive/2", "go_to/1"])
 
-    def goal(self, goal: Any) -> tuple[float, float]:
+    def goal(self, goal: object) -> tuple[float, float]:
         """Return the point [m] the turtle heads for (a hook for noisy variants)."""
         return goal_xy(goal)
 
@@ -88,7 +88,7 @@ class NoisyTurtleNavigationPM(TurtleNavigationPM):
         self._rng = random.Random(seed)
         self._log = log
 
-    def goal(self, goal: Any) -> tuple[float, float]:
+    def goal(self, goal: object) -> tuple[float, float]:
         """Return the goal plus noise, logging both."""
         x, y = goal_xy(goal)
         noisy = (x + self._rng.gauss(0.0, self.sigma), y + self._rng.gauss(0.0, self.sigma))
@@ -106,7 +106,7 @@ class TurtlePenPM(ProcessModule):
         super().__init__()
         self.world = world
 
-    def execute(self, command: Any) -> Any:
+    def execute(self, command: object) -> Any:
         """Put the pen down or up, maybe changing its colour."""
         if isinstance(command, Term) and command.name == "set_pen" and command.arity == 2:
             state, colour = command.args

@@ -52,7 +52,7 @@ class VoicePM(ProcessModule):
         """Let the human say ``text`` to the robot."""
         self._heard.put(text)
 
-    def execute(self, command: Any) -> Any:
+    def execute(self, command: object) -> Any:
         """Say a text or listen for one."""
         if isinstance(command, Term) and command.name == "say" and command.arity == 1:
             self.transcript.append(str(command.args[0]))

@@ -11,21 +11,19 @@ Prolog's own.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from robocram.knowledge import Source, register_predicates
 from robocram.knowledge.registration import Implementation
 from robocram.logic import KnowledgeBase, Var
 from robocram.logic.limits import current_stop_check
 from robocram.tf import Pose
-
-if TYPE_CHECKING:
-    from robocram.world.world import World
+from robocram.world.predicate_world import PredicateWorld
 
 Solutions = Iterator[tuple[Any, ...] | None]
 
 
-def world_knowledge_base(world: World) -> KnowledgeBase:
+def world_knowledge_base(world: PredicateWorld) -> KnowledgeBase:
     """A new knowledge base with the predicates of ``world``."""
     kb = KnowledgeBase()
     implementations: dict[str, Implementation] = {}
@@ -35,7 +33,7 @@ def world_knowledge_base(world: World) -> KnowledgeBase:
     return kb
 
 
-def _names(world: World, arg: Any, robots_only: bool = False) -> list[str]:
+def _names(world: PredicateWorld, arg: object, robots_only: bool = False) -> list[str]:
     """The object names ``arg`` may stand for: all when unbound, else itself if it exists."""
     pool = world.robots() if robots_only else world.objects()
     if isinstance(arg, Var):
@@ -43,15 +41,15 @@ def _names(world: World, arg: Any, robots_only: bool = False) -> list[str]:
     return [o.name for o in pool if o.name == arg]
 
 
-def _ours(world: World, arg: Any) -> bool:
+def _ours(world: PredicateWorld, arg: object) -> bool:
     return isinstance(arg, Var) or arg is world
 
 
-def _relation(world: World, test: Callable[[str, str], bool]) -> Callable[..., Solutions]:
+def _relation(world: PredicateWorld, test: Callable[[str, str], bool]) -> Callable[..., Solutions]:
     """A predicate ``p(W, A, B)`` enumerating the pairs of distinct objects for which
     ``test`` holds."""
 
-    def solve(w: Any, a: Any, b: Any) -> Solutions:
+    def solve(w: object, a: object, b: object) -> Solutions:
         if not _ours(world, w):
             return
         for name_a in _names(world, a):
@@ -62,20 +60,20 @@ def _relation(world: World, test: Callable[[str, str], bool]) -> Callable[..., S
     return solve
 
 
-def _objects(world: World) -> dict[str, Implementation]:
-    def world_(w: Any) -> Solutions:
+def _objects(world: PredicateWorld) -> dict[str, Implementation]:
+    def world_(w: object) -> Solutions:
         if _ours(world, w):
             yield (world,)
 
-    def object_(w: Any, name: Any) -> Solutions:
+    def object_(w: object, name: object) -> Solutions:
         if _ours(world, w):
             yield from ((world, n) for n in _names(world, name))
 
-    def object_type(w: Any, name: Any, kind: Any) -> Solutions:
+    def object_type(w: object, name: object, kind: object) -> Solutions:
         if _ours(world, w):
             yield from ((world, n, world.object(n).type) for n in _names(world, name))
 
-    def object_pose(w: Any, name: Any, pose: Any) -> Solutions:
+    def object_pose(w: object, name: object, pose: object) -> Solutions:
         if _ours(world, w):
             yield from ((world, n, world.pose(n)) for n in _names(world, name))
 
@@ -99,7 +97,7 @@ def _objects(world: World) -> dict[str, Implementation]:
     }
 
 
-def _pose_value(value: Any) -> Any:
+def _pose_value(value: object) -> Any:
     """A pose given as a Pose or as Prolog lists ``[[X, Y, Z], [QX, QY, QZ, QW]]``."""
     if isinstance(value, list) and len(value) == 2 and isinstance(value[0], list):
         return (tuple(value[0]), tuple(value[1]))
@@ -108,12 +106,12 @@ def _pose_value(value: Any) -> Any:
     return value
 
 
-def _robots(world: World) -> dict[str, Implementation]:
-    def robot(w: Any, name: Any) -> Solutions:
+def _robots(world: PredicateWorld) -> dict[str, Implementation]:
+    def robot(w: object, name: object) -> Solutions:
         if _ours(world, w):
             yield from ((world, n) for n in _names(world, name, robots_only=True))
 
-    def joint_state(w: Any, rob: Any, joint: Any, value: Any) -> Solutions:
+    def joint_state(w: object, rob: object, joint: object, value: object) -> Solutions:
         if not _ours(world, w):
             return
         for name in _names(world, rob, robots_only=True):
@@ -141,8 +139,8 @@ def _robots(world: World) -> dict[str, Implementation]:
     }
 
 
-def _attachments(world: World) -> dict[str, Implementation]:
-    def attached(w: Any, rob: Any, link: Any, obj: Any) -> Solutions:
+def _attachments(world: PredicateWorld) -> dict[str, Implementation]:
+    def attached(w: object, rob: object, link: object, obj: object) -> Solutions:
         if not _ours(world, w):
             return
         for name in _names(world, rob):
@@ -162,16 +160,16 @@ def _attachments(world: World) -> dict[str, Implementation]:
     return {"attached/4": attached, "attach/4": attach, "detach/2": detach}
 
 
-def _reasoning(world: World) -> dict[str, Implementation]:
-    def stable(w: Any, obj: Any) -> Solutions:
+def _reasoning(world: PredicateWorld) -> dict[str, Implementation]:
+    def stable(w: object, obj: object) -> Solutions:
         if _ours(world, w):
             yield from ((world, n) for n in _names(world, obj) if world.stable(n))
 
-    def stable_all(w: Any) -> Solutions:
+    def stable_all(w: object) -> Solutions:
         if _ours(world, w) and world.stable():
             yield (world,)
 
-    def visible(w: Any, rob: Any, obj: Any) -> Solutions:
+    def visible(w: object, rob: object, obj: object) -> Solutions:
         if not _ours(world, w):
             return
         for name in _names(world, rob, robots_only=True):
@@ -179,7 +177,7 @@ def _reasoning(world: World) -> dict[str, Implementation]:
                 if seen != name and world.visible(name, seen):
                     yield (world, name, seen)
 
-    def occluding_objects(w: Any, rob: Any, obj: Any, occluders: Any) -> Solutions:
+    def occluding_objects(w: object, rob: object, obj: object, occluders: object) -> Solutions:
         if not _ours(world, w):
             return
         for name in _names(world, rob, robots_only=True):

@@ -27,7 +27,7 @@ class PlanFailure(Exception):
     hint: ClassVar[str] = ""
     cram_name: ClassVar[str] = "plan-failure"
 
-    def __init_subclass__(cls, **kwargs: Any) -> None:
+    def __init_subclass__(cls, **kwargs: object) -> None:
         super().__init_subclass__(**kwargs)
         own = [
             name

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from robocram.robots.description import ArmDescription, FrameSpec
+from robocram.robots.description import ArmDescription
 from robocram.robots.draft.finger_spread import opens_at_upper
 from robocram.robots.draft.hands import Hand
 from robocram.robots.draft.link_poses import link_poses
@@ -16,6 +16,7 @@ from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.draft.parking import parking_pose
 from robocram.robots.draft.tool_frames import approach_and_opening, tool_frame
 from robocram.robots.gripper import GripperDescription, GripperJoint
+from robocram.robots.model_additions import FrameSpec
 
 SIDE_GAP = 0.1  # [m] between two alike hands' y for one to be left of the other
 

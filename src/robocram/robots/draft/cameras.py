@@ -14,10 +14,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from robocram.robots.description import FrameSpec, PanTiltDescription
+from robocram.robots.description import PanTiltDescription
 from robocram.robots.draft.camera_sensors import CameraSensor, sensor_for
 from robocram.robots.draft.link_poses import axis_in_root, link_poses
 from robocram.robots.draft.model_tree import ModelTree
+from robocram.robots.model_additions import FrameSpec
 from robocram.tf import Pose
 
 CAMERA_WORDS = ("optical", "camera", "rgb", "kinect", "xtion", "realsense", "stereo")

@@ -16,12 +16,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from robocram.robots.description import FrameSpec
 from robocram.robots.draft.finger_spread import opens_at_upper
 from robocram.robots.draft.hands import Hand
 from robocram.robots.draft.link_poses import link_poses
 from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.link_centre import link_centre
+from robocram.robots.model_additions import FrameSpec
 from robocram.tf import Pose
 
 TOOL_WORDS = ("tool", "tcp", "grasp", "endpoint", "end_effector", "gripper")
