@@ -11,10 +11,9 @@ from __future__ import annotations
 import json
 from dataclasses import dataclass, replace
 from pathlib import Path
-from typing import Any
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 from sqlalchemy import select
 
 from robocram.motion import JointTrajectory, TrajectoryPoint
@@ -54,7 +53,7 @@ class StoredTrajectory:
 
 def trajectory_row(
     run_id: int, task_id: int | None, sequence: int, time: float, trajectory: JointTrajectory
-) -> dict[str, Any]:
+) -> dict[str, object]:
     """The ``trajectories`` row of ``trajectory`` (Core executemany on the tracer's hot path)."""
     points = trajectory.points
     return {
@@ -132,7 +131,7 @@ def _loaded(row: TrajectoryRow, path: str | None) -> StoredTrajectory:
     )
 
 
-def _pack(values: Any) -> bytes:
+def _pack(values: ArrayLike) -> bytes:
     """Raw little-endian float64: zlib would save a quarter and double the tracer's cost."""
     return np.ascontiguousarray(values, dtype="<f8").tobytes()
 
