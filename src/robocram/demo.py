@@ -3,8 +3,10 @@
 Builds the kitchen scene, performs two ``transporting`` action designators inside
 ``simulated_robot`` (the mug from the north counter; the bowl out of the top drawer, which
 the search opens and the transport closes again), prints the task tree and writes
-``out/demo_before.png`` and ``out/demo_after.png``. The tabletop pick-up demo lives on as
-``examples/pick_mug.py``.
+``out/demo_before.png`` and ``out/demo_after.png``. The run is traced to a fresh
+``out/demo.db`` (``robocram replay out/demo.db`` shows it), and ``out/demo.gif`` is rendered
+from that trace: the stored trajectories, seen from the pictures' viewpoint. The tabletop
+pick-up demo lives on as ``examples/pick_mug.py``.
 """
 
 from __future__ import annotations
@@ -17,6 +19,7 @@ from robocram.plans import perform
 from robocram.projection import looking_orientation, simulated_robot
 from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
+from robocram.traces import animate_run, trace_to
 from robocram.world import World
 
 VIEW_FROM = (2.4, -2.2, 3.3)  # [m] in map, where the pictures are taken from
@@ -25,20 +28,33 @@ TABLE = ("kitchen", "table_top")
 ITEMS = (("mug", "mug-1"), ("bowl", "bowl-1"))  # (type searched for, item placed for)
 
 
+CAMERA = Pose(VIEW_FROM, looking_orientation(VIEW_FROM, VIEW_AT))
+
+
 def picture(world: World, path: Path) -> Path:
     """Render the kitchen from :data:`VIEW_FROM` into ``path``."""
-    camera = Pose(VIEW_FROM, looking_orientation(VIEW_FROM, VIEW_AT))
-    return world.save_png(path, camera, width=800, height=600)
+    return world.save_png(path, CAMERA, width=800, height=600)
+
+
+def fresh_database(path: Path) -> Path:
+    """``path`` with no trace database left from an earlier demo (its WAL files too)."""
+    for old in (path, path.with_name(path.name + "-wal"), path.with_name(path.name + "-shm")):
+        old.unlink(missing_ok=True)
+    return path
 
 
 def main(out_dir: Path = Path("out")) -> list[Path]:
-    """Run both transports, print the task tree, write and return the two pictures."""
+    """Run both transports, print the task tree, write and return the pictures and the GIF."""
     start = time.perf_counter()
     scene = kitchen_scene("pr2")
     world = scene.world
     out_dir.mkdir(parents=True, exist_ok=True)
     pictures = [picture(world, out_dir / "demo_before.png")]
-    with simulated_robot(world, scene.robot, name="kitchen-transport") as run:
+    db_path = fresh_database(out_dir / "demo.db")
+    with (
+        trace_to(db_path, world=world) as tracer,
+        simulated_robot(world, scene.robot, name="kitchen-transport") as run,
+    ):
         for kind, item in ITEMS:
             target = a.location(on=TABLE, for_=item)
             perform(an.action(type="transporting", object=kind, target=target))
@@ -49,6 +65,12 @@ def main(out_dir: Path = Path("out")) -> list[Path]:
         print(f"{item} rests on {', '.join(links)} at ({x:.2f}, {y:.2f}, {z:.2f}) m in map")
     pictures.append(picture(world, out_dir / "demo_after.png"))
     world.close()
+    gif = animate_run(db_path, tracer.runs[-1], out_dir / "demo.gif", CAMERA)
+    print(
+        f"traced to {db_path}; {gif.path}: {gif.frames} frames over {gif.replay_duration:.1f} s "
+        f"of motion, {gif.size / 1e6:.2f} MB in {gif.render_seconds:.1f} s"
+    )
+    pictures.append(gif.path)
     print(f"wrote {', '.join(str(p) for p in pictures)} in {time.perf_counter() - start:.2f} s")
     return pictures
 

@@ -1,10 +1,15 @@
-"""A traced pick-up with a failing first branch, shared by the trace and export tests."""
+"""A traced pick-up with a failing first branch, and a traced run of trajectories, shared by
+the trace and export tests."""
 
 from __future__ import annotations
 
+import importlib.util
+import sys
 from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
+from types import ModuleType
+from typing import Any
 
 import pytest
 
@@ -48,5 +53,28 @@ def traced_pick_up(db_path: Path) -> TracedPickUp:
 @pytest.fixture(scope="module")
 def pick_up_trace(tmp_path_factory: pytest.TempPathFactory) -> Iterator[TracedPickUp]:
     traced = traced_pick_up(tmp_path_factory.mktemp("traces") / "runs.db")
+    yield traced
+    traced.world.close()
+
+
+def _trajectory_run_module() -> ModuleType:
+    """``trajectory_run.py`` beside this file (tests are not a package: loaded by path)."""
+    path = Path(__file__).with_name("trajectory_run.py")
+    spec = importlib.util.spec_from_file_location("traces_trajectory_run", path)
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = module  # dataclasses look their module up while being made
+    spec.loader.exec_module(module)
+    return module
+
+
+trajectory_run_module = _trajectory_run_module()
+
+
+@pytest.fixture(scope="module")
+def trajectory_run(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Any]:
+    traced = trajectory_run_module.traced_trajectory_run(
+        tmp_path_factory.mktemp("trajectories") / "runs.db"
+    )
     yield traced
     traced.world.close()

@@ -50,7 +50,8 @@ def test_replay_shows_the_stored_run(live_run: Any) -> None:
         times = world_state_times(db, live_run.run)
         viewer = replay_viewer(db, live_run.run, port=_free_port())
     with viewer:
-        assert len(viewer.timeline) == len(times)
+        moments = [viewer.timeline[i] for i in range(len(viewer.timeline))]
+        assert len([m for m in moments if m.trajectory is None]) == len(times)
         assert viewer.tasks.labels() == live_run.viewer.tasks.labels()
         mug = viewer.display.pose("mug-1").position
         assert np.allclose(mug, live_run.world.pose("mug-1").position, atol=1e-9)

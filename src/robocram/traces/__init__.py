@@ -1,8 +1,9 @@
 """Execution traces: every top-level run's task tree and world states, kept in SQLite.
 
-``with trace_to("runs.db", world=world):`` writes each run's tasks, and the world's state
-after every motion, in one transaction per motion, so a run can be queried, exported and
-replayed later, and a run killed half-way keeps what it finished.
+``with trace_to("runs.db", world=world):`` writes each run's tasks, the world's state
+after every motion and every executed trajectory, in one transaction per motion, so a run
+can be queried, exported, replayed and animated later, and a run killed half-way keeps
+what it finished.
 Several processes may append to one file (WAL mode, one writer at a time).
 """
 
@@ -15,6 +16,7 @@ from robocram.traces.errors import (
     TraceError,
     UnknownRun,
 )
+from robocram.traces.mcap_export import export_mcap
 from robocram.traces.queries import (
     DurationStats,
     FailureRecord,
@@ -30,8 +32,12 @@ from robocram.traces.queries import (
     world_state_at,
     world_state_times,
 )
+from robocram.traces.replay_clock import ReplayClock
+from robocram.traces.run_animation import RunAnimation, animate_run
+from robocram.traces.run_replay import ReplayFrame, replay_frames
 from robocram.traces.schema import SCHEMA_VERSION
 from robocram.traces.tracer import TRACE_ENV, Tracer, trace_from_environment, trace_to
+from robocram.traces.trajectory_record import StoredTrajectory, replay_clock, run_trajectories
 from robocram.traces.world_record import StoredWorldState, build_scene, scene_of
 
 __all__ = [
@@ -41,22 +47,31 @@ __all__ = [
     "FailureRecord",
     "NoWorldState",
     "NotATraceDatabase",
+    "ReplayClock",
+    "ReplayFrame",
+    "RunAnimation",
     "RunSummary",
     "SchemaVersionMismatch",
     "StoredCostmap",
+    "StoredTrajectory",
     "StoredWorldState",
     "TraceDatabase",
     "TraceError",
     "Tracer",
     "UnknownRun",
+    "animate_run",
     "build_scene",
     "designator_properties",
     "durations",
     "failure_counts",
+    "export_mcap",
     "failures",
+    "replay_clock",
+    "replay_frames",
     "require_run",
     "run_costmaps",
     "run_ids",
+    "run_trajectories",
     "runs",
     "scene_of",
     "task_tree",

@@ -3,7 +3,8 @@
 WAL lets readers (a viewer, ``robocram runs``) read while a plan writes, and lets several
 processes append runs to one file: each write transaction starts with ``BEGIN IMMEDIATE``,
 so writers queue on SQLite's lock (``busy_timeout``) instead of failing half-way.
-Within a process one lock serialises the writers of all threads.
+Within a process one lock serialises the writers of all threads. A file of an older
+version whose successors only added tables is upgraded in place on opening.
 """
 
 from __future__ import annotations
@@ -16,12 +17,12 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
-from sqlalchemy import Connection, create_engine, event, inspect, select
+from sqlalchemy import Connection, create_engine, event, inspect, select, update
 from sqlalchemy.exc import DatabaseError, OperationalError
 from sqlalchemy.orm import Session
 
 from robocram.traces.errors import NotATraceDatabase, SchemaVersionMismatch, TraceError
-from robocram.traces.schema import SCHEMA_VERSION, Base, SchemaInfo
+from robocram.traces.schema import ADDED_TABLES, SCHEMA_VERSION, Base, SchemaInfo
 
 BUSY_TIMEOUT = 60_000  # [ms] a writer waits this long for another process's transaction
 _WRITE = "robocram_write"
@@ -77,6 +78,9 @@ class TraceDatabase:
                 version = (
                     session.scalar(select(SchemaInfo.version)) if "schema_info" in tables else None
                 )
+                if version is not None and _only_added_tables(version):
+                    _add_tables(session, version)
+                    version = SCHEMA_VERSION
         except DatabaseError as err:
             if isinstance(err, OperationalError) and "locked" in str(err):
                 raise TraceError(f"{self.path} stayed locked by another writer") from err
@@ -121,6 +125,21 @@ class TraceDatabase:
 
     def __repr__(self) -> str:
         return f"TraceDatabase({str(self.path)!r})"
+
+
+def _only_added_tables(version: int) -> bool:
+    """Whether every version after ``version`` up to ours only added tables."""
+    later = range(version + 1, SCHEMA_VERSION + 1)
+    return version < SCHEMA_VERSION and all(v in ADDED_TABLES for v in later)
+
+
+def _add_tables(session: Session, version: int) -> None:
+    """Upgrade a file of ``version`` in place: create the tables added since, set the version."""
+    connection = session.connection()
+    for later in range(version + 1, SCHEMA_VERSION + 1):
+        for name in ADDED_TABLES[later]:
+            Base.metadata.tables[name].create(connection, checkfirst=True)
+    session.execute(update(SchemaInfo).values(version=SCHEMA_VERSION))
 
 
 def _configure_connection(dbapi_connection: sqlite3.Connection, _record: Any) -> None:

@@ -3,8 +3,13 @@
 For each stored world state (the run's start and every motion's end) it writes ``/tf``
 (map -> every link of every robot and every object, flat), ``/joint_states`` (one
 ``sensor_msgs/JointState`` per articulated body, ``header.frame_id`` naming the body) and
-``/object_poses/<name>`` (``geometry_msgs/PoseStamped`` in map). Link poses come from the
-run's scene rebuilt in a fresh physics world and put into each stored state.
+``/object_poses/<name>`` (``geometry_msgs/PoseStamped`` in map). Between them, along each
+executed trajectory sampled every ``period``, it writes ``/tf`` and the moving robot's
+``/joint_states``, so a player shows the motion; a base trajectory moves the robot's root
+frame (map -> robot). Link poses come from the run's scene rebuilt in a fresh physics world
+(:func:`~robocram.traces.run_replay.replay_frames`). Messages are stamped on the run's
+replay clock (``traces/replay_clock.py``): wall time, stretched where projection executed a
+trajectory faster than its duration.
 """
 
 from __future__ import annotations
@@ -15,16 +20,20 @@ from typing import Any
 from robocram.tf import Pose
 from robocram.traces.database import TraceDatabase
 from robocram.traces.errors import TraceError
-from robocram.traces.queries import require_run, world_state_times
+from robocram.traces.queries import require_run
 from robocram.traces.ros2_messages import message_definition
-from robocram.traces.world_record import StoredWorldState, build_scene, load_world_state
+from robocram.traces.run_replay import SAMPLE_PERIOD, ReplayFrame, replay_frames, robot_in
+from robocram.traces.world_record import StoredWorldState, build_scene
 from robocram.world import World
 
 MAP_FRAME = "map"
 
 
-def export_mcap(db: TraceDatabase, run: int, out: str | Path) -> int:
-    """Write run ``run`` of ``db`` to the MCAP file ``out``; return the messages written."""
+def export_mcap(db: TraceDatabase, run: int, out: str | Path, period: float = SAMPLE_PERIOD) -> int:
+    """Write run ``run`` of ``db`` to the MCAP file ``out``; return the messages written.
+
+    Trajectories are sampled every ``period`` [s] of motion time.
+    """
     try:
         from mcap_ros2.writer import Writer
     except ImportError as err:
@@ -32,13 +41,11 @@ def export_mcap(db: TraceDatabase, run: int, out: str | Path) -> int:
             "MCAP export needs the mcap and mcap-ros2-support packages: "
             "pip install 'robocram[mcap]'"
         ) from err
-    scene = require_run(db, run).scene
-    if scene is None:
+    row = require_run(db, run)
+    if row.scene is None:
         raise TraceError(f"run {run} stored no scene; trace with trace_to(db, world=world)")
-    with db.read() as session:
-        states = [load_world_state(session, i) for i, _, _ in world_state_times(db, run)]
     written = 0
-    with build_scene(scene) as world, open(out, "wb") as stream:
+    with build_scene(row.scene) as world, open(out, "wb") as stream:
         writer = Writer(stream)
         schemas = {
             name: writer.register_msgdef(name, message_definition(name))
@@ -48,35 +55,52 @@ def export_mcap(db: TraceDatabase, run: int, out: str | Path) -> int:
                 "geometry_msgs/PoseStamped",
             )
         }
-        for state in states:
-            state.apply(world)
-            for topic, schema, message in _messages(world, state):
-                stamp = int(round(state.time * 1e9))  # [ns] since the epoch
+        for frame in replay_frames(db, run, world, period):
+            stamp = int(round(frame.time * 1e9))  # [ns] since the epoch, replay clock
+            for topic, schema, message in _frame_messages(world, frame, frame.time):
                 writer.write_message(topic, schemas[schema], message, log_time=stamp)
                 written += 1
         writer.finish()
     return written
 
 
-def _messages(world: World, state: StoredWorldState) -> list[tuple[str, str, dict[str, Any]]]:
-    header = _header(state.time, MAP_FRAME)
+Message = tuple[str, str, dict[str, Any]]  # topic, schema name, message
+
+
+def _frame_messages(world: World, frame: ReplayFrame, time: float) -> list[Message]:
+    """A stored state: TF, every body's joints, object poses; a sample: TF, the robot's joints."""
+    if frame.state is not None:
+        return _messages(world, frame.state, time)
+    assert frame.trajectory is not None  # a frame is a state or a sample
+    robot = robot_in(world, frame.trajectory.robot)
+    return [_tf(world, time), _joint_state(robot, world.joint_states(robot), time)]
+
+
+def _tf(world: World, time: float) -> Message:
+    header = _header(time, MAP_FRAME)
     transforms = [
         {"header": header, "child_frame_id": frame, "transform": _transform(pose)}
         for frame, pose in _frames(world).items()
     ]
-    out: list[tuple[str, str, dict[str, Any]]] = [
-        ("/tf", "tf2_msgs/TFMessage", {"transforms": transforms})
-    ]
-    for body, joints in state.joints.items():
-        names = list(joints)
-        message = {
-            "header": _header(state.time, body),
-            "name": names,
-            "position": [joints[n] for n in names],
-            "velocity": [],
-            "effort": [],
-        }
-        out.append(("/joint_states", "sensor_msgs/JointState", message))
+    return ("/tf", "tf2_msgs/TFMessage", {"transforms": transforms})
+
+
+def _joint_state(body: str, joints: dict[str, float], time: float) -> Message:
+    names = list(joints)
+    message = {
+        "header": _header(time, body),
+        "name": names,
+        "position": [joints[n] for n in names],
+        "velocity": [],
+        "effort": [],
+    }
+    return ("/joint_states", "sensor_msgs/JointState", message)
+
+
+def _messages(world: World, state: StoredWorldState, time: float) -> list[Message]:
+    header = _header(time, MAP_FRAME)
+    out = [_tf(world, time)]
+    out += [_joint_state(body, joints, time) for body, joints in state.joints.items()]
     for name, pose in state.poses.items():
         message = {"header": header, "pose": _pose(pose)}
         out.append((f"/object_poses/{name}", "geometry_msgs/PoseStamped", message))

@@ -4,7 +4,9 @@ One run is one top-level task tree. Tasks are rows keyed by a database-wide id m
 run's id and the task's start order in the run (:func:`task_key`), so a tracer knows every
 id before it writes and several processes can append runs to one file; each row names its
 parent and its position among the parent's children. World states are stored at motion
-boundaries, one row each. ``SCHEMA_VERSION`` changes whenever a table does.
+boundaries, one row each; executed trajectories one row each, in execution order.
+``SCHEMA_VERSION`` changes whenever a table does; a version whose only change is a new
+table (:data:`ADDED_TABLES`) is opened by creating that table.
 """
 
 from __future__ import annotations
@@ -24,7 +26,8 @@ from sqlalchemy import (
 )
 from sqlalchemy.orm import DeclarativeBase, Mapped, mapped_column
 
-SCHEMA_VERSION = 3  # 2: one row per world state, task ids per run; 3: costmaps
+SCHEMA_VERSION = 4  # 2: one row per world state, task ids per run; 3: costmaps; 4: trajectories
+ADDED_TABLES = {4: ("trajectories",)}  # version -> the tables it added to the one before
 
 
 class Base(DeclarativeBase):
@@ -126,6 +129,30 @@ class CostmapRow(Base):
     heights: Mapped[bytes] = mapped_column(LargeBinary)  # [m] map z of each cell
 
     __table_args__ = (Index("ix_costmaps_run_time", "run_id", "time"),)
+
+
+class TrajectoryRow(Base):
+    """A trajectory a robot executed while a task of the run ran, in execution order.
+
+    The points are little-endian float64 arrays, row-major (points x joints): exact, and
+    one row per trajectory however many points it has.
+    """
+
+    __tablename__ = "trajectories"
+    id: Mapped[int] = mapped_column(Integer, primary_key=True)
+    run_id: Mapped[int] = mapped_column(ForeignKey("runs.id"))
+    task_id: Mapped[int | None] = mapped_column(ForeignKey("tasks.id"))
+    sequence: Mapped[int] = mapped_column(Integer)  # execution order in the run, from 0
+    time: Mapped[float] = mapped_column(Float)  # [s] since the epoch, when it was reported
+    robot: Mapped[str] = mapped_column(String)
+    kind: Mapped[str] = mapped_column(String)  # "arm", "cartesian", "base", ...
+    joint_names: Mapped[str] = mapped_column(Text)  # JSON list
+    times: Mapped[bytes] = mapped_column(LargeBinary)  # [s] from its start, per point
+    positions: Mapped[bytes] = mapped_column(LargeBinary)  # [rad | m]
+    velocities: Mapped[bytes] = mapped_column(LargeBinary)  # [rad/s | m/s]
+    accelerations: Mapped[bytes] = mapped_column(LargeBinary)  # [rad/s^2 | m/s^2]
+
+    __table_args__ = (Index("ix_trajectories_run", "run_id", "sequence"),)
 
 
 TASKS_PER_RUN = 1 << 32  # task keys of one run: run id * TASKS_PER_RUN + start order

@@ -14,6 +14,7 @@ from typing import Any
 from sqlalchemy import Connection, insert
 
 from robocram.costmaps import Costmap
+from robocram.motion import JointTrajectory
 from robocram.traces.costmap_record import costmap_row
 from robocram.traces.schema import (
     Base,
@@ -21,11 +22,13 @@ from robocram.traces.schema import (
     DesignatorPropertyRow,
     RunRow,
     TaskRow,
+    TrajectoryRow,
     WorldStateRow,
     new_id,
     table,
     task_key,
 )
+from robocram.traces.trajectory_record import trajectory_row
 from robocram.traces.world_record import StoredWorldState, state_row
 
 OUTCOME = (
@@ -53,6 +56,7 @@ _INSERT_TASKS = _insert_sql(TaskRow)
 _INSERT_PROPERTIES = _insert_sql(DesignatorPropertyRow)
 _INSERT_STATES = _insert_sql(WorldStateRow, generated="id")
 _INSERT_COSTMAPS = _insert_sql(CostmapRow, generated="id")
+_INSERT_TRAJECTORIES = _insert_sql(TrajectoryRow, generated="id")
 _FINISH_TASKS = (
     f"UPDATE {TaskRow.__tablename__} SET "
     + ", ".join(f'"{name}" = :{name}' for name in OUTCOME)
@@ -69,6 +73,7 @@ class RunBuffer:
     row: dict[str, Any]
     run_id: int | None = None
     started: int = 0  # tasks started so far: the next one's order
+    executed: int = 0  # trajectories reported so far: the next one's sequence number
     ended: tuple[str, float | None] = ("running", None)  # (status, end) of the top level
 
     def key(self, order: int) -> int:
@@ -100,13 +105,31 @@ class Pending:
     states: list[tuple[TaskEntry | None, RunBuffer, StoredWorldState]] = field(default_factory=list)
     ended_runs: list[RunBuffer] = field(default_factory=list)
     costmaps: list[tuple[TaskEntry, float, Any, Costmap]] = field(default_factory=list)
+    trajectories: list[TrajectoryEntry] = field(default_factory=list)
 
     def __bool__(self) -> bool:
-        return bool(self.runs or self.tasks or self.states or self.ended_runs or self.costmaps)
+        return bool(
+            self.runs
+            or self.tasks
+            or self.states
+            or self.ended_runs
+            or self.costmaps
+            or self.trajectories
+        )
+
+
+@dataclass(frozen=True)
+class TrajectoryEntry:
+    """An executed trajectory: the task it ran in, its number in the run, when reported."""
+
+    task: TaskEntry
+    sequence: int
+    time: float  # [s] since the epoch
+    trajectory: JointTrajectory
 
 
 def write(connection: Connection, pending: Pending) -> None:
-    """Write ``pending`` inside the caller's transaction: runs, tasks, states, run ends.
+    """Write ``pending`` inside the caller's transaction: runs, tasks, states, run ends, ...
 
     The caller holds the tracer's lock, so no entry changes while it is written.
     """
@@ -132,6 +155,12 @@ def write(connection: Connection, pending: Pending) -> None:
         costmap_row(_run_id(e.run), e.run.key(e.order), time, designator, costmap)
         for e, time, designator, costmap in pending.costmaps
     ]
+    trajectories = [
+        trajectory_row(
+            _run_id(t.task.run), t.task.run.key(t.task.order), t.sequence, t.time, t.trajectory
+        )
+        for t in pending.trajectories
+    ]
     for sql, rows in (
         (_INSERT_TASKS, fresh),
         (_FINISH_TASKS, ended),
@@ -139,6 +168,7 @@ def write(connection: Connection, pending: Pending) -> None:
         (_INSERT_STATES, states),
         (_FINISH_RUN, ends),
         (_INSERT_COSTMAPS, costmaps),
+        (_INSERT_TRAJECTORIES, trajectories),
     ):
         if rows:
             cursor.executemany(sql, rows)

@@ -5,7 +5,9 @@ transaction (one executemany per table) when a task starts after a motion has en
 at every motion boundary), when ``FLUSH_CPU`` seconds of CPU time have passed since the
 last write, and at the run's end. A run killed half-way thus leaves readable every task
 that ended before the last motion did, and the tasks running then, marked running. World
-states are captured after each motion and at the run's start.
+states are captured after each motion and at the run's start; every trajectory reported
+with :func:`robocram.motion.report_executed` inside a traced run is kept with its task
+(one reported outside any traced run has no run to belong to and is not kept).
 """
 
 from __future__ import annotations
@@ -22,9 +24,10 @@ from typing import Any
 from robocram.costmaps import Costmap, observing_costmaps
 from robocram.designators import ActionDesignator, Designator, MotionDesignator
 from robocram.execution import Task, TaskListener, TaskSnapshot, current_task, listening
+from robocram.motion import JointTrajectory, trajectory_listener
 from robocram.traces.database import TraceDatabase
 from robocram.traces.json_values import dumps
-from robocram.traces.trace_buffer import Pending, RunBuffer, TaskEntry, write
+from robocram.traces.trace_buffer import Pending, RunBuffer, TaskEntry, TrajectoryEntry, write
 from robocram.traces.world_record import StoredWorldState, scene_of
 from robocram.world import World
 
@@ -118,6 +121,23 @@ class Tracer(TaskListener):
             if entry is not None:
                 self._pending.costmaps.append((entry, time.time(), designator, costmap))
 
+    def trajectory_executed(self, trajectory: JointTrajectory) -> None:
+        """Keep an executed trajectory with the innermost running task the tracer knows.
+
+        It is written with the next flush, in the transaction of its motion's end.
+        """
+        reported = time.time()
+        task = current_task()
+        with self._lock:
+            entry = None
+            while task is not None and entry is None:
+                entry = self._entries.get(id(task))
+                task = task.parent
+            if entry is not None:
+                sequence, entry.run.executed = entry.run.executed, entry.run.executed + 1
+                item = TrajectoryEntry(entry, sequence, reported, trajectory)
+                self._pending.trajectories.append(item)
+
     def flush(self) -> None:
         """Write every pending row now, in one transaction."""
         with self._lock:
@@ -160,12 +180,16 @@ def trace_to(path: str | Path, world: World | None = None) -> Iterator[Tracer]:
     """Trace every top level run inside the block to the SQLite file ``path``.
 
     With ``world``, its state is stored at the start of each run and after each motion.
-    The costmaps location designators are resolved through are stored too.
+    The costmaps location designators are resolved through, and the trajectories the
+    robots execute, are stored too.
     """
     with TraceDatabase(path) as db, listening(Tracer(db, world)) as tracer:
         assert isinstance(tracer, Tracer)
         try:
-            with observing_costmaps(tracer.costmap_built):
+            with (
+                observing_costmaps(tracer.costmap_built),
+                trajectory_listener(tracer.trajectory_executed),
+            ):
                 yield tracer
         finally:
             tracer.flush()  # what a block left running (a stopped thread) is kept too

@@ -27,8 +27,9 @@ from robocram.traces import (
 )
 from robocram.viewer.costmap_overlay import CostmapOverlay
 from robocram.viewer.errors import NoWorld, PortInUse
+from robocram.viewer.player import Player
 from robocram.viewer.task_panel import TaskPanel
-from robocram.viewer.timeline import Moment, Timeline
+from robocram.viewer.timeline import REPLAY_PERIOD, Moment, Timeline
 from robocram.viewer.world_view import WorldView
 from robocram.world import World
 
@@ -71,6 +72,9 @@ class Viewer:
         self.follow = gui.add_checkbox("Follow live", initial_value=True)
         self.slider = gui.add_slider("World state", min=0, max=1, step=1, initial_value=0)
         self.slider.on_update(lambda _event: self._slider_moved())
+        self.player = Player(self.timeline, self._play_step)
+        self.play_button = gui.add_button("Play / stop")
+        self.play_button.on_click(lambda _event: self.toggle_play())
         self.costmaps: list[StoredCostmap] = []  # in time order
         self.overlay = CostmapOverlay(self.server)
         toggle = gui.add_checkbox("Costmaps", initial_value=True)
@@ -102,7 +106,13 @@ class Viewer:
             self.overlay.show(self.costmap_at(moment.time))
             self.shown = index
         where = moment.task_path or "the start"
-        self.caption.content = f"**state {index}**: after {where}"
+        if moment.trajectory is None:
+            self.caption.content = f"**state {index}**: after {where}"
+        else:
+            self.caption.content = (
+                f"**moment {index}**: trajectory {moment.trajectory} of {where} "
+                f"at {moment.sample_time:.2f} s"
+            )
 
     def add_costmap(self, costmap: StoredCostmap) -> None:
         """Add a costmap; it is drawn with the world states after it was built."""
@@ -117,6 +127,21 @@ class Viewer:
         times = [c.time for c in self.costmaps]
         index = bisect.bisect_right(times, time) - 1
         return self.costmaps[index] if index >= 0 else None
+
+    def toggle_play(self) -> None:
+        """Play the moments from the one shown (from the first at the end), or stop playing."""
+        if self.player.playing:
+            self.player.stop()
+            return
+        _set_value(self.follow, False)
+        start = self.shown if 0 <= self.shown < len(self.timeline) - 1 else 0
+        if start == 0:
+            self._play_step(0)
+        self.player.play(start)
+
+    def _play_step(self, index: int) -> None:
+        _set_value(self.slider, index)
+        self.show(index)
 
     def _slider_moved(self) -> None:
         index = int(self.slider.value)
@@ -135,19 +160,22 @@ class Viewer:
         """Show (or update) the task tree."""
         self.tasks.update(tree)
 
-    def load_run(self, db: TraceDatabase, run: int) -> None:
-        """Show stored run ``run`` of ``db``: its tree and all its world states."""
+    def load_run(self, db: TraceDatabase, run: int, period: float = REPLAY_PERIOD) -> None:
+        """Show stored run ``run`` of ``db``: its tree, its world states and, between them,
+        its trajectories sampled every ``period`` [s]."""
         _set_value(self.follow, False)
         self.set_tree(task_tree(db, run))
         for costmap in run_costmaps(db, run):
             self.add_costmap(costmap)
-        stored = Timeline.of_run(db, run)
+        with self._lock:  # the display world plays the run through once
+            stored = Timeline.of_replay(db, run, self.display, period)
         self.add_moments([stored[index] for index in range(len(stored))])
         _set_value(self.slider, len(self.timeline) - 1)
         self.show(len(self.timeline) - 1)
 
     def close(self) -> None:
-        """Stop serving and free the display world."""
+        """Stop playing and serving, and free the display world."""
+        self.player.stop()
         self.server.stop()
         self.display.close()
 
@@ -164,13 +192,21 @@ def _set_value(handle: Any, value: Any) -> None:
 
 
 def replay_viewer(
-    db: TraceDatabase, run: int, host: str = DEFAULT_HOST, port: int = DEFAULT_PORT
+    db: TraceDatabase,
+    run: int,
+    host: str = DEFAULT_HOST,
+    port: int = DEFAULT_PORT,
+    period: float = REPLAY_PERIOD,
 ) -> Viewer:
-    """A viewer showing stored run ``run``, its world rebuilt from the stored scene."""
+    """A viewer showing stored run ``run``, its world rebuilt from the stored scene.
+
+    Its slider runs over the stored states and the trajectories' samples every ``period``
+    [s] between them; the play button steps through them at the replay clock's pace.
+    """
     row = require_run(db, run)
     if row.scene is None:
         raise NoWorld()
     with build_scene(row.scene) as world:
         viewer = Viewer(world, host, port, title=f"run {run}: {row.name}")
-    viewer.load_run(db, run)
+    viewer.load_run(db, run, period)
     return viewer

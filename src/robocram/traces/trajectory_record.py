@@ -1,0 +1,142 @@
+"""Executed trajectories as the trace store keeps them, and back again.
+
+While a run is traced, every trajectory projection (or a real robot's driver) reports with
+:func:`robocram.motion.report_executed` is kept with the task that was running and the wall
+time it was reported, so it lies between the world states before and after its motion.
+Points are stored as exact float64 arrays, one row per trajectory.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+from sqlalchemy import select
+
+from robocram.motion import JointTrajectory, TrajectoryPoint
+from robocram.traces.database import TraceDatabase
+from robocram.traces.queries import require_run, world_state_times
+from robocram.traces.replay_clock import ReplayClock, replay_starts
+from robocram.traces.schema import TaskRow, TrajectoryRow
+
+
+@dataclass(frozen=True)
+class StoredTrajectory:
+    """A trajectory of a run: what moved, along which points, when, in which task."""
+
+    index: int  # execution order in the run, from 0
+    robot: str
+    joint_names: tuple[str, ...]
+    points: tuple[TrajectoryPoint, ...]
+    kind: str  # "arm", "cartesian", "base", ...
+    task_path: str | None  # the task running when it was executed
+    time: float  # [s] since the epoch (wall clock) when it was reported, its motion's end
+    start: float  # [s] from the run's start on the replay clock (traces/replay_clock.py)
+
+    @property
+    def duration(self) -> float:
+        """Time from its first to its last point [s]."""
+        return self.points[-1].time_from_start if self.points else 0.0
+
+    @property
+    def end(self) -> float:
+        """When it ended [s] from the run's start, on the replay clock."""
+        return self.start + self.duration
+
+    def trajectory(self) -> JointTrajectory:
+        """The trajectory as the motion layer made it."""
+        return JointTrajectory(self.robot, self.joint_names, self.points, self.kind)
+
+
+def trajectory_row(
+    run_id: int, task_id: int | None, sequence: int, time: float, trajectory: JointTrajectory
+) -> dict[str, object]:
+    """The ``trajectories`` row of ``trajectory`` (Core executemany on the tracer's hot path)."""
+    points = trajectory.points
+    return {
+        "run_id": run_id,
+        "task_id": task_id,
+        "sequence": sequence,
+        "time": time,
+        "robot": trajectory.robot,
+        "kind": trajectory.kind,
+        "joint_names": json.dumps(list(trajectory.joint_names)),
+        "times": _pack([p.time_from_start for p in points]),
+        "positions": _pack([p.positions for p in points]),
+        "velocities": _pack([p.velocities for p in points]),
+        "accelerations": _pack([p.accelerations for p in points]),
+    }
+
+
+def run_trajectories(db: TraceDatabase | str | Path, run: int) -> list[StoredTrajectory]:
+    """The trajectories run ``run`` executed, in execution order.
+
+    ``db`` is an open database or the path of one (opened for this query only).
+
+    Raises:
+        UnknownRun: the database has no run ``run`` (the message lists those it has).
+    """
+    if not isinstance(db, TraceDatabase):
+        with TraceDatabase(db, create=False) as opened:
+            return run_trajectories(opened, run)
+    run_start = require_run(db, run).start
+    query = (
+        select(TrajectoryRow, TaskRow.path)
+        .outerjoin(TaskRow, TaskRow.id == TrajectoryRow.task_id)
+        .where(TrajectoryRow.run_id == run)
+        .order_by(TrajectoryRow.sequence)
+    )
+    with db.read() as session:
+        rows = [(row, path) for row, path in session.execute(query)]
+    loaded = [_loaded(row, path) for row, path in rows]
+    states = [time for _, time, _ in world_state_times(db, run)]
+    starts = replay_starts(run_start, [(t.time, t.duration) for t in loaded], states)
+    return [replace(t, start=start - run_start) for t, start in zip(loaded, starts, strict=True)]
+
+
+def replay_clock(db: TraceDatabase, run: int) -> ReplayClock:
+    """The replay clock of run ``run``: its wall times stretched to hold its trajectories."""
+    states = [time for _, time, _ in world_state_times(db, run)]
+    reported = [(t.time, t.duration) for t in run_trajectories(db, run)]
+    return ReplayClock(require_run(db, run).start, reported, states)
+
+
+def _loaded(row: TrajectoryRow, path: str | None) -> StoredTrajectory:
+    names = tuple(json.loads(row.joint_names))
+    times = np.frombuffer(row.times, dtype="<f8")
+    shape = (len(times), len(names))
+    columns = [_unpack(data, shape) for data in (row.positions, row.velocities)]
+    columns.append(_unpack(row.accelerations, shape))
+    points = tuple(
+        TrajectoryPoint(
+            tuple(columns[0][i].tolist()),
+            tuple(columns[1][i].tolist()),
+            tuple(columns[2][i].tolist()),
+            float(times[i]),
+        )
+        for i in range(len(times))
+    )
+    return StoredTrajectory(
+        index=row.sequence,
+        robot=row.robot,
+        joint_names=names,
+        points=points,
+        kind=row.kind,
+        task_path=path,
+        time=row.time,
+        start=0.0,
+    )
+
+
+def _pack(values: ArrayLike) -> bytes:
+    """Raw little-endian float64: zlib would save a quarter and double the tracer's cost."""
+    return np.ascontiguousarray(values, dtype="<f8").tobytes()
+
+
+def _unpack(data: bytes, shape: tuple[int, int]) -> NDArray[np.float64]:
+    """Rows of one point each; velocities a driver left empty come back empty."""
+    values = np.frombuffer(data, dtype="<f8")
+    return values.reshape(shape[0], -1) if shape[0] else values.reshape(shape)
