@@ -124,6 +124,7 @@ def _checked_path(
     snapshot = CollisionScene.of(
         world, robot, joints, allowed_links=scene.allowed_links | start_links
     )
+    snapshot.allow_own_contacts_at(end)  # the goal passed the finer check on the meshes
     path = plan_joint_path(
         snapshot, start, end, bound, box, seed=settings.seed, budget=settings.budget, what=what
     )

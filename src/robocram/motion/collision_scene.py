@@ -88,10 +88,21 @@ class CollisionScene:
 
     def _drop_snapshot_contacts(self) -> None:
         """Leave out robot-robot and robot-held pairs already touching at the snapshot."""
+        self._drop_own_contacts(self._geometry.q0)
+
+    def allow_own_contacts_at(self, q: Sequence[float] | NDArray[np.float64]) -> None:
+        """Leave out the robot's own pairs (and with what it holds) touching at ``q``.
+
+        For a configuration a finer check already accepted (an IK goal checked on the
+        world's meshes), so that the convex hulls of neighbouring links do not refuse it.
+        """
+        self._drop_own_contacts(self._slots.full(q))
+
+    def _drop_own_contacts(self, full: NDArray[np.float64]) -> None:
         geo = self._geometry
         kinds = [o.kind for o in geo.owners]
         drop = {
-            k for k in self._pairs_at(geo.q0)
+            k for k in self._pairs_at(full)
             if kinds[geo.geometry.collisionPairs[k].second] != "static"
         }  # fmt: skip
         if not drop:
