@@ -71,7 +71,7 @@ def draw(path: Path) -> Path:
         world.add_sphere(f"planned-{k}", 0.012, Pose(where), color=GREEN)
     for k, where in enumerate(_tool_positions(world, straight, tool, 25)):
         world.add_sphere(f"straight-{k}", 0.01, Pose(where), color=RED)
-    camera = looking((-0.35, 2.25, 1.95), (-1.05, 1.75, 1.05))
+    camera = looking((-1.9, 1.0, 2.1), (-1.0, 1.95, 1.05))
     out = world.save_png(path, camera, width=800, height=600)
     world.close()
     return out

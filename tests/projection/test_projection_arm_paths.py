@@ -10,11 +10,14 @@ With planning off, the same motion fails with ``ManipulationPathBlocked`` naming
 
 from __future__ import annotations
 
+import importlib.util
 import math
 from collections.abc import Iterator
+from pathlib import Path
 
 import numpy as np
 import pytest
+from PIL import Image
 
 from robocram.designators import a
 from robocram.execution import perform
@@ -28,6 +31,7 @@ from robocram.scenes import KitchenScene, kitchen_scene
 from robocram.tf import PoseStamped
 from robocram.tf import quaternion as quat
 
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 NORTH = quat.from_euler(0.0, 0.0, math.pi / 2)
 SHELF_SIZE = (0.12, 0.12, 0.36)  # [m] a box standing on the counter, in the arm's way
 SHELF_CENTRE = (-0.97, 2.02, 1.04)  # [m] between the parked right hand and the mug
@@ -121,3 +125,16 @@ def test_the_same_seed_gives_the_same_trajectory(scene: KitchenScene) -> None:
         first = _move(scene, target, None)
     second = _move(scene, target, None)
     assert [t.points for t in first] == [t.points for t in second]
+
+
+def test_the_example_draws_both_paths(tmp_path: Path) -> None:
+    spec = importlib.util.spec_from_file_location("motion_picture", EXAMPLES / "motion_picture.py")
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    image = np.asarray(Image.open(module.draw(tmp_path / "shelf.png")).convert("RGB"), dtype=int)
+    red, green, blue = image[:, :, 0], image[:, :, 1], image[:, :, 2]
+    planned = (green > 150) & (red < 100) & (blue < 100)
+    straight = (red > 180) & (green < 60) & (blue < 60)
+    assert image.shape == (600, 800, 3)
+    assert planned.sum() > 200 and straight.sum() > 100  # both paths drawn
