@@ -84,3 +84,25 @@ def test_the_core_imports_without_ros() -> None:
         "assert not {'rospy', 'actionlib', 'robocram.ros'} & set(sys.modules), sys.modules"
     )
     subprocess.run([sys.executable, "-c", code], check=True)
+
+
+def test_goal_tolerances_come_from_facts_else_from_the_joint_type() -> None:
+    tolerances = _config("pr2").goal_tolerances
+    assert tolerances.position("torso_lift_joint") == pytest.approx(0.005)  # a fact
+    assert tolerances.position("r_wrist_roll_joint") == pytest.approx(0.05)  # a fact
+    assert tolerances.position("r_elbow_flex_joint") == pytest.approx(0.02)  # revolute
+    assert tolerances.time == pytest.approx(0.5)
+    fields = tolerances.to_ros(["torso_lift_joint"])
+    assert fields["goal_tolerance"] == [
+        {"name": "torso_lift_joint", "position": 0.005, "velocity": 0.0, "acceleration": 0.0}
+    ]
+    assert fields["goal_time_tolerance"] == {"secs": 0, "nsecs": 500_000_000}
+
+
+def test_a_goal_tolerance_of_an_unknown_joint_or_not_positive_is_named() -> None:
+    typo = "ros_goal_tolerance(pr2, torso_lift, 0.01).\n" + default_facts("pr2")
+    with pytest.raises(RosConfigError, match=r"torso_lift, _\) names no movable joint"):
+        _config("pr2", typo)
+    negative = "ros_goal_time_tolerance(pr2, -1.0).\n" + default_facts("pr2")
+    with pytest.raises(RosConfigError, match=r"ros_goal_time_tolerance\(pr2, S\) gives -1.0"):
+        _config("pr2", negative)

@@ -1,4 +1,5 @@
-"""Acceptance: the pick-up plan runs unchanged through ROS and agrees with projection."""
+"""Acceptance: the pick-up plan runs unchanged through ROS and agrees with projection,
+with motions planned straight or in a world of the scene."""
 
 from __future__ import annotations
 
@@ -33,14 +34,16 @@ def _direct(robot: str) -> tuple[Pose, Pose, Pose, str]:
     )
 
 
+@pytest.mark.parametrize("with_world", [False, True], ids=["no_world", "world"])
 @pytest.mark.parametrize("robot", ["pr2", "hsrb"])
 def test_pick_up_through_ros_agrees_with_projection(
-    roscore: Roscore, master_nodes: Callable[[], set[str]], robot: str
+    roscore: Roscore, master_nodes: Callable[[], set[str]], robot: str, with_world: bool
 ) -> None:
     grasp, tool, mug, arm = _direct(robot)
     look = tabletop_scene(robot).look_target
+    world = tabletop_scene(robot).world if with_world else None  # motions checked in it
     threads = set(threading.enumerate())
-    with DriverProcess(roscore.uri, robot), ros_robot(robot, roscore.uri) as run:
+    with DriverProcess(roscore.uri, robot), ros_robot(robot, roscore.uri, world=world) as run:
         result = pick_up(look)
         ros_tool = transform_pose(PoseStamped(result.tool_frame), "map").pose
         ros_mug = run.transforms.lookup("map", "mug-1")

@@ -101,12 +101,15 @@ def test_a_driver_that_aborts_gives_the_typed_failure_with_the_status_text(
     assert torso.value.goal == 0.1
 
 
-def test_a_goal_out_of_limits_is_aborted_by_the_driver_as_in_projection(roscore: Roscore) -> None:
+def test_a_goal_out_of_limits_is_clamped_sent_and_fails_as_in_projection(
+    roscore: Roscore,
+) -> None:
     with DriverProcess(roscore.uri), ros_robot("pr2", roscore.uri) as run:
         with pytest.raises(TorsoGoalNotReached) as failure:
             perform(a.motion(type="moving-torso", joint_angle=0.5))
         reached = run.environment.client.joint_states()["torso_lift_joint"]
-    assert "torso_lift_joint=0.5 not in [0.0, 0.31]" in failure.value.context["status_text"]
+    assert "torso_lift_joint=0.5 not in [0.0, 0.31]" in str(failure.value)
+    assert failure.value.goal == 0.5
     assert reached == pytest.approx(0.31)
 
 

@@ -1,11 +1,13 @@
-"""The arms of a robot behind ROS: IK on the plan side, ``FollowJointTrajectory`` goals.
+"""The arms of a robot behind ROS: IK and paths on the plan side, timed trajectory goals.
 
 ``move_tcp`` reads the joint states and the base pose from ROS, solves IK (pinocchio,
 seeded with the current joints, first with the torso held, then free) and sends the torso
-and arm trajectories; the reached tool frame is then read from tf and checked against the
-target (1 cm / 0.05 rad, as in projection). Collision avoidance is the robot's motion
-planner's job on a real robot (CRAM hands this to giskard or MoveIt), so the collision
-mode is passed on but not checked here.
+and then the arm as whole timed ``FollowJointTrajectory`` goals; the reached tool frame is
+then read from tf and checked against the target (1 cm / 0.05 rad, as in projection).
+With a world given to ``ros_robot`` the collision mode counts as in projection: IK rejects
+colliding solutions, ``allow_hand`` motions follow a straight tool line when they can, and
+joint paths go round what is in the world (``motion_planner.py``). Without one, nothing
+in the environment is checked: the path is the straight joint segment.
 """
 
 from __future__ import annotations
@@ -13,11 +15,13 @@ from __future__ import annotations
 from typing import Any
 
 from robocram.designators import SIDES
-from robocram.execution.failures import ManipulationGoalNotReached
+from robocram.execution.failures import ManipulationGoalNotReached, ManipulationPathBlocked
 from robocram.kinematics import IKResult, solve_ik
 from robocram.projection.arm import IK_RANDOM_SEED, ensure_reached, joint_values
+from robocram.projection.collision_mode import collision_check
 from robocram.projection.reach_failure import unreachable
 from robocram.ros.errors import RosCommandError
+from robocram.ros.goal_runner import FailureFactory
 from robocram.ros.process_modules import RosProcessModule
 from robocram.tf import Pose, PoseStamped
 
@@ -47,9 +51,11 @@ class ArmPM(RosProcessModule):
             f"{arm}'s hand); run it in projection, or add a controller interface for it"
         )
 
-    def _solve(self, arm: str, target_in_base: Pose) -> IKResult:
+    def _solve(self, arm: str, target_in_base: Pose, mode: str) -> IKResult:
         desc = self.client.desc
         seed = self.client.actuated_joint_states()
+        robot = self.client.planner().robot  # the world in the robot's state now, or None
+        check = collision_check(robot, arm, mode) if robot is not None else None
         result = IKResult(False)
         for use_torso in [False, True] if desc.torso_joint is not None else [False]:
             result = solve_ik(
@@ -58,6 +64,7 @@ class ArmPM(RosProcessModule):
                 target_in_base,
                 seed=seed,
                 use_torso=use_torso,
+                collision_check=check,
                 random_seed=IK_RANDOM_SEED,
             )
             if result.success:
@@ -67,21 +74,34 @@ class ArmPM(RosProcessModule):
     def move_tcp(
         self, arm: str, target: PoseStamped | Any, collision_mode: str = "avoid_all"
     ) -> Pose:
-        """Put ``arm``'s tool frame at ``target``; return the reached pose in the fixed frame."""
+        """Put ``arm``'s tool frame at ``target``; return the reached pose in the fixed frame.
+
+        Raises:
+            ManipulationPoseUnreachable: IK found no (collision-free, with a world) solution.
+            ManipulationPathBlocked: the world blocks every path there; nothing was sent.
+            ManipulationGoalNotReached: the controller failed, or the tool ended too far off.
+        """
         client = self.client
         arm = client.desc.arm_called(arm)
         spec = client.arm(arm)
         target_in_map = client.in_map(target)
-        result = self._solve(arm, client.base_pose().inverse() * target_in_map)
+        result = self._solve(arm, client.base_pose().inverse() * target_in_map, collision_mode)
         if not result.success:
-            raise unreachable(client.desc, arm, target, target_in_map, "allow_all", result)
+            mode = collision_mode if client.has_world else "allow_all"
+            raise unreachable(client.desc, arm, target, target_in_map, mode, result)
         solution = dict(result.joint_positions)
         torso = client.desc.torso_joint
         if torso in solution:
             value = solution.pop(torso)
             if abs(value - client.joint_states()[torso]) > TORSO_MOVE:
-                self._send("torso", {torso: value}, arm, target)
-        self._send(f"arm({arm})", {j: solution[j] for j in spec.joints}, arm, target)
+                self._move("torso", {torso: value}, arm, target, collision_mode)
+        goal = {j: solution[j] for j in spec.joints}
+        target_in_base = client.base_pose().inverse() * target_in_map
+        line = client.planner().tool_line(arm, target_in_base, collision_mode)
+        if line is not None:
+            client.follow_trajectory(f"arm({arm})", line, self._failure(arm, target))
+        else:
+            self._move(f"arm({arm})", goal, arm, target, collision_mode)
         reached = client.frame_pose(spec.tool_frame)
         return ensure_reached(client.name, arm, reached, target, target_in_map)
 
@@ -95,13 +115,22 @@ class ArmPM(RosProcessModule):
             raise RosCommandError(
                 f"joints {unknown} are not in {self.client.name}'s {arm} arm {sorted(allowed)}"
             )
-        self._send(f"arm({arm})", values, arm, values)
+        self._move(f"arm({arm})", values, arm, values, "avoid_all")
         joints = self.client.joint_states()
         return {j: joints[j] for j in values}
 
-    def _send(self, resource: str, goal: dict[str, float], arm: str, target: Any) -> None:
-        self.client.follow_joints(
-            resource,
-            goal,
-            lambda text: ManipulationGoalNotReached(text, arm=arm, target=target),
-        )
+    def _move(
+        self, resource: str, goal: dict[str, float], arm: str, target: Any, mode: str
+    ) -> None:
+        """Plan the timed motion (in the world, if any) and send it; a blocked path raises
+        ``ManipulationPathBlocked`` naming the arm and target before anything is sent."""
+        try:
+            self.client.move_joints(resource, goal, self._failure(arm, target), arm=arm, mode=mode)
+        except ManipulationPathBlocked as failure:
+            failure.arm = arm
+            failure.target = target
+            raise
+
+    @staticmethod
+    def _failure(arm: str, target: Any) -> FailureFactory:
+        return lambda text: ManipulationGoalNotReached(text, arm=arm, target=target)

@@ -17,6 +17,7 @@ from robocram.execution import MotionProcessModule
 from robocram.execution.failures import (
     GripperClosedCompletely,
     GripperGoalNotReached,
+    ManipulationPathBlocked,
     NavigationGoalNotReached,
     PerceptionObjectNotFound,
     PtuGoalNotReached,
@@ -47,8 +48,17 @@ class NavigationPM(RosProcessModule):
     resource = "navigation"
 
     def move_base(self, target: PoseStamped | Any) -> Pose:
-        """Send a MoveBase goal; return the base pose reached."""
+        """Send a MoveBase goal; return the base pose reached.
+
+        The robot plans its own path; with a world given to ``ros_robot``, the path is
+        first checked there (``plan_base_path``), and no goal is sent if none exists.
+
+        Raises:
+            NavigationPathBlocked: no path to the goal in the world (nothing was sent).
+            NavigationPoseUnreachable: the robot would collide at the goal in the world.
+        """
         goal_in_map = self.client.in_map(target)
+        self.client.planner().base_path(goal_in_map)
         goal = {
             "target_pose": {
                 "header": {"frame_id": self.client.fixed_frame},
@@ -75,9 +85,15 @@ class TorsoPM(RosProcessModule):
         if joint is None:
             raise RosCommandError(f"{self.client.name} has no torso joint; it cannot move one")
         goal = float(value)
-        self.client.follow_joints(
-            "torso", {joint: goal}, lambda text: TorsoGoalNotReached(text, goal=goal)
-        )
+        try:
+            self.client.move_joints(
+                "torso", {joint: goal}, lambda text: TorsoGoalNotReached(text, goal=goal)
+            )
+        except ManipulationPathBlocked as blocked:  # the world given to ros_robot blocks it
+            raise TorsoGoalNotReached(
+                f"{self.client.name}'s torso cannot move to {goal}: {blocked}; nothing was sent",
+                goal=goal,
+            ) from blocked
         return self.client.joint_states()[joint]
 
 
@@ -127,7 +143,7 @@ class PtuPM(RosProcessModule):
         else:
             joints = client.actuated_joint_states()
             angles = pan_tilt_towards(client.desc, joints, client.base_pose(), target)
-            client.follow_joints("head", angles, failure)
+            client.move_joints("head", angles, failure, mode="allow_all")
         pt = client.desc.pan_tilt
         joints = client.joint_states()
         return {j: joints[j] for j in ((pt.pan_joint, pt.tilt_joint) if pt else ())}

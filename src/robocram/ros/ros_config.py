@@ -7,13 +7,14 @@ every resource the robot's description has is served, naming the missing fact.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from importlib import resources
 from typing import Any
 
 from robocram.logic import KnowledgeBase, Term, UnknownPredicateError
 from robocram.robots import RobotDescription
 from robocram.ros.errors import RosConfigError
+from robocram.ros.goal_tolerances import GoalTolerances, read_goal_tolerances
 
 ROS_FACTS_GROUP = "ros_interfaces"
 ACTION_TYPES = (
@@ -45,6 +46,7 @@ class RosConfig:
     connection_timeout: float  # [s] of status silence that count as a lost connection
     server_timeout: float  # [s] to wait for an action server to appear
     gripper_effort: float  # [N]
+    goal_tolerances: GoalTolerances = field(default_factory=GoalTolerances)
 
     def action(self, resource: str) -> ActionInterface:
         """The interface of ``resource``, or a RosConfigError naming the missing fact."""
@@ -129,6 +131,7 @@ def read_ros_config(kb: KnowledgeBase, desc: RobotDescription) -> RosConfig:
         connection_timeout=_number(kb, "ros_connection_timeout", robot, "s"),
         server_timeout=_number(kb, "ros_server_timeout", robot, "s"),
         gripper_effort=_number(kb, "ros_gripper_effort", robot, "N"),
+        goal_tolerances=read_goal_tolerances(kb, desc),
     )
 
 

@@ -18,6 +18,7 @@ from robocram.designators import install_common_motions
 from robocram.execution import Environment, TaskTree, TopLevel, matching_facts, top_level
 from robocram.grasping import install_grasp_predicates
 from robocram.logic import KnowledgeBase
+from robocram.motion import MotionSettings
 from robocram.robots import RobotDescription, install_description, load_description
 from robocram.ros.arm_module import ArmPM
 from robocram.ros.errors import RosConfigError
@@ -33,6 +34,7 @@ from robocram.ros.ros_config import install_ros_facts, read_ros_config
 from robocram.ros.ros_robot_client import RosRobotClient
 from robocram.ros.ros_transform_tree import RosTransformTree
 from robocram.tf import using_transform_tree
+from robocram.world import World
 
 # motion table resource -> the ros_action/4 resources that serve it
 MODULES: dict[str, tuple[type[RosProcessModule], str]] = {
@@ -78,6 +80,8 @@ def ros_environment(
     master_uri: str | None = None,
     ros_facts: str | None = None,
     node_name: str = "robocram",
+    world: World | None = None,
+    motion: MotionSettings | None = None,
 ) -> RosEnvironment:
     """The environment of ``robot`` behind the ROS master at ``master_uri``.
 
@@ -85,6 +89,11 @@ def ros_environment(
         master_uri: default ``$ROS_MASTER_URI``.
         ros_facts: Prolog text with the robot's ``ros_action/4`` ... facts (docs/ros.md);
             default: the packaged ones of a built-in robot.
+        world: a projection world of the robot's environment with the robot in it (e.g.
+            ``tabletop_scene("pr2").world``); before each motion it is put into the robot's
+            state read from ROS, and arm, torso and base motions are checked and planned
+            in it. None: nothing in the environment is checked (straight joint moves).
+        motion: how arm paths are planned in the world (seed, budget); default settings.
     """
     uri = master_uri or os.environ.get("ROS_MASTER_URI")
     if not uri:
@@ -95,7 +104,9 @@ def ros_environment(
     install_common_motions(kb)
     install_ros_facts(kb, desc.name, ros_facts)
     install_grasp_predicates(kb, description=desc)  # grasps by the perceived type and pose
-    client = RosRobotClient(desc, read_ros_config(kb, desc), uri, node_name)
+    client = RosRobotClient(
+        desc, read_ros_config(kb, desc), uri, node_name, world=world, motion=motion
+    )
     return RosEnvironment(client, kb)
 
 
@@ -119,9 +130,12 @@ def ros_robot(
     master_uri: str | None = None,
     ros_facts: str | None = None,
     name: str = "ros-robot",
+    world: World | None = None,
+    motion: MotionSettings | None = None,
 ) -> Iterator[RosRun]:
-    """Run the block as a top level on ``robot`` behind ROS (see :func:`ros_environment`)."""
-    environment = ros_environment(robot, master_uri, ros_facts)
+    """Run the block as a top level on ``robot`` behind ROS (see :func:`ros_environment`;
+    ``world`` is the environment motions are checked and planned in)."""
+    environment = ros_environment(robot, master_uri, ros_facts, world=world, motion=motion)
     transforms = RosTransformTree(lambda: environment.client.transport)
     runner = top_level(name=name)
     with environment, using_transform_tree(transforms), runner:

@@ -1,6 +1,7 @@
 """The plan side of one robot behind ROS: its description, ROS facts and transport.
 
-Process modules ask it to run goals on resources and to read the robot's state. After a
+Process modules ask it to run goals on resources, to move joints by timed trajectories
+(``motion_planner.py``) and to read the robot's state. After a
 goal ends it waits for the first joint states and transforms published after the
 result, so what a plan reads next (tool poses, joint values) shows the end of the motion.
 """
@@ -9,18 +10,19 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 
-from robocram.robots import ArmDescription, RobotDescription
+from robocram.motion import JointTrajectory, MotionSettings, report_executed
+from robocram.robots import ArmDescription, LoadedDescription
 from robocram.ros.errors import RosCommandError, RosConnectionLost, RosNodeError
 from robocram.ros.goal_runner import FailureFactory, checked, finish_goal
+from robocram.ros.motion_planner import MotionPlanner, clamp_goal
 from robocram.ros.ros1_node import NodeConfig
 from robocram.ros.ros1_transport import Ros1Transport
 from robocram.ros.ros_config import RosConfig
 from robocram.ros.transport import GoalOutcome, RosDict, Transport
 from robocram.tf import Pose, PoseLike, PoseStamped
+from robocram.world import World
 
 STATE_TIMEOUT = 5.0  # [s] for the state after a goal to arrive
-DEFAULT_VELOCITY = 0.5  # [rad/s | m/s] for joints whose URDF gives no velocity limit
-MIN_DURATION = 0.1  # [s] of any trajectory
 TransportFactory = Callable[[NodeConfig], Transport]
 
 
@@ -29,13 +31,17 @@ class RosRobotClient:
 
     def __init__(
         self,
-        desc: RobotDescription,
+        desc: LoadedDescription,
         config: RosConfig,
         master_uri: str,
         node_name: str = "robocram",
         fixed_frame: str = "map",
         transport_factory: TransportFactory = Ros1Transport.open,
+        world: World | None = None,
+        motion: MotionSettings | None = None,
     ) -> None:
+        """``world``: a projection world of the robot's environment to plan motions in
+        (kept in sync with the robot's state); None plans straight joint moves."""
         self.desc = desc
         self.config = config
         self.fixed_frame = fixed_frame
@@ -50,6 +56,7 @@ class RosRobotClient:
         )
         self._factory = transport_factory
         self._transport: Transport | None = None
+        self._planner = MotionPlanner(desc, world, motion)
 
     @property
     def name(self) -> str:
@@ -95,23 +102,64 @@ class RosRobotClient:
                 reason="state not published",
             )
 
-    def follow_joints(
-        self, resource: str, goal: Mapping[str, float], failure: FailureFactory
-    ) -> GoalOutcome:
-        """Move joints to ``goal`` [rad | m] by a one-point trajectory at their velocity limits."""
+    @property
+    def has_world(self) -> bool:
+        """Whether motions are planned in a world of the robot's environment."""
+        return self._planner.world is not None
+
+    def planner(self) -> MotionPlanner:
+        """The motion planner, its world (if any) put where ROS says the robot is now."""
+        if self._planner.world is not None:
+            self._planner.sync(self.joint_states(), self.base_pose())
+        return self._planner
+
+    def move_joints(
+        self,
+        resource: str,
+        goal: Mapping[str, float],
+        failure: FailureFactory,
+        *,
+        arm: str | None = None,
+        mode: str = "avoid_all",
+    ) -> JointTrajectory:
+        """Move the joints of ``goal`` [rad | m] there by a timed trajectory on ``resource``.
+
+        The trajectory is planned by :class:`MotionPlanner` (checked in the world if one
+        was given). A goal outside the joint limits is clamped, sent, and then raises
+        ``failure`` naming the joints, as projection does.
+
+        Raises:
+            ManipulationPathBlocked: the world blocks the way; nothing was sent.
+        """
+        clamped = clamp_goal(self.desc, goal)
         current = self.joint_states()
-        seconds = MIN_DURATION
-        for joint, value in goal.items():
-            spec = self.desc.model.joints[joint] if self.desc.model is not None else None
-            velocity = (spec.velocity if spec is not None else None) or DEFAULT_VELOCITY
-            seconds = max(seconds, abs(value - current.get(joint, value)) / velocity)
-        secs = int(seconds)
-        point = {
-            "positions": [float(v) for v in goal.values()],
-            "time_from_start": {"secs": secs, "nsecs": int((seconds - secs) * 1e9)},
+        missing = sorted(j for j in clamped.goal if j not in current)
+        if missing:
+            raise RosCommandError(
+                f"{self.name}'s joint states on {self.config.joint_states_topic} lack {missing}; "
+                "check the topic in ros_topic/3 and the robot's driver"
+            )
+        what = f"{self.name}'s {arm} arm" if arm is not None else f"{self.name}'s {resource}"
+        trajectory = self.planner().joint_motion(
+            clamped.goal, current, arm=arm, mode=mode, what=what
+        )
+        self.follow_trajectory(resource, trajectory, failure)
+        if clamped.culprits:
+            raise failure(clamped.describe(self.name))
+        return trajectory
+
+    def follow_trajectory(
+        self, resource: str, trajectory: JointTrajectory, failure: FailureFactory
+    ) -> GoalOutcome:
+        """Send ``trajectory`` whole as a ``FollowJointTrajectory`` goal with the goal
+        tolerances of the robot's facts; report it to the trajectory listeners once done."""
+        goal = {
+            "trajectory": trajectory.to_ros(),
+            **self.config.goal_tolerances.to_ros(trajectory.joint_names),
         }
-        trajectory = {"trajectory": {"joint_names": list(goal), "points": [point]}}
-        return self.run(resource, trajectory, failure)
+        outcome = self.run(resource, goal, failure)
+        report_executed(trajectory)
+        return outcome
 
     def joint_states(self) -> dict[str, float]:
         """The latest joint positions [rad | m]."""

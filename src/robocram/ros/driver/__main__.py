@@ -28,6 +28,7 @@ def _arguments() -> argparse.Namespace:
     parser.add_argument("--time-scale", type=float, default=1.0, help="trajectory time x")
     parser.add_argument("--fault", choices=FAULTS, default="none")
     parser.add_argument("--node-name", default="robocram_driver")
+    parser.add_argument("--goal-log", type=Path, help="append each goal received as JSON")
     return parser.parse_args()
 
 
@@ -46,7 +47,7 @@ def main() -> None:
     config = read_ros_config(world.kb, load_description(scene.robot))
     options = MotionOptions(base_speed=args.base_speed, time_scale=args.time_scale)
     rospy.init_node(args.node_name)
-    driver = ProjectionDriver(world, config, options, args.fault)
+    driver = ProjectionDriver(world, config, options, args.fault, args.goal_log)
     driver.start()
     driver.publish_state()
     print("ready", rospy.get_name(), flush=True)

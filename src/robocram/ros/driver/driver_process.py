@@ -8,6 +8,7 @@ that could fill up and block it.
 
 from __future__ import annotations
 
+import json
 import os
 import subprocess
 import sys
@@ -15,6 +16,7 @@ import tempfile
 import time
 from pathlib import Path
 from types import TracebackType
+from typing import Any
 
 from robocram.ros.errors import RosNodeError
 
@@ -33,7 +35,9 @@ class DriverProcess:
         time_scale: float = 0.0,
         fault: str = "none",
         ros_facts: Path | None = None,
+        goal_log: Path | None = None,
     ) -> None:
+        """``goal_log``: the driver appends each goal it receives there (``received_goals``)."""
         self.args = [
             sys.executable, "-m", "robocram.ros.driver", "--robot", robot,
             "--master-uri", master_uri, "--base-speed", str(base_speed),
@@ -41,6 +45,9 @@ class DriverProcess:
         ]  # fmt: skip
         if ros_facts is not None:
             self.args += ["--ros-facts", str(ros_facts)]
+        self.goal_log = goal_log
+        if goal_log is not None:
+            self.args += ["--goal-log", str(goal_log)]
         self.master_uri = master_uri
         self.process: subprocess.Popen[bytes] | None = None
         self._log = tempfile.NamedTemporaryFile(  # noqa: SIM115 - closed by stop()
@@ -51,6 +58,15 @@ class DriverProcess:
     def log(self) -> str:
         """What the driver printed so far."""
         return Path(self._log.name).read_text(errors="replace")
+
+    def received_goals(self, server: str | None = None) -> list[dict[str, Any]]:
+        """The goals the driver received so far (of ``server``, or all), oldest first."""
+        if self.goal_log is None:
+            raise RosNodeError("the driver keeps no goal log; start it with goal_log=PATH")
+        if not self.goal_log.exists():
+            return []
+        entries = [json.loads(line) for line in self.goal_log.read_text().splitlines() if line]
+        return [e["goal"] for e in entries if server is None or e["server"] == server]
 
     def start(self) -> DriverProcess:
         """Start the node and wait for its ``ready`` line."""

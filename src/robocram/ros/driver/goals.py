@@ -26,6 +26,7 @@ from robocram.tf import Pose, PoseStamped, pose_stamped_to_ros
 Outcome = tuple[bool, dict[str, Any], str] | None
 INVALID_JOINTS = -2
 GOAL_TOLERANCE_VIOLATED = -5
+DEFAULT_GOAL_TOLERANCE = 0.01  # [rad | m] for joints whose goal gives 0 (the default)
 GRIP_TOLERANCE = 1e-6  # [rad | m] a command this close to the lower limit closes fully
 
 
@@ -71,7 +72,12 @@ def move_base(goal: Any, ctx: GoalContext) -> Outcome:
 
 
 def follow_joint_trajectory(goal: Any, ctx: GoalContext) -> Outcome:
-    """``control_msgs/FollowJointTrajectory``: play the points, fail on limits or bad joints."""
+    """``control_msgs/FollowJointTrajectory``: play every point at its time, then check the
+    joints against the last point within the goal's tolerances, as a controller does.
+
+    Bad joint names or no points are ``INVALID_JOINTS``; a point outside the joint limits
+    (clamped) or a joint stopping beyond its goal tolerance is ``GOAL_TOLERANCE_VIOLATED``.
+    """
     names = list(goal.trajectory.joint_names)
     with ctx.stepper.lock:
         known = ctx.robot.world.joint_states(ctx.robot.name)
@@ -95,7 +101,40 @@ def follow_joint_trajectory(goal: Any, ctx: GoalContext) -> Outcome:
                 f"{c.name}={c.requested} not in [{c.lower}, {c.upper}]" for c in clamped
             )
             return False, {"error_code": GOAL_TOLERANCE_VIOLATED, "error_string": text}, text
-    return True, {"error_code": 0}, ""
+    return _at_goal(goal, names, ctx)
+
+
+def _at_goal(goal: Any, names: list[str], ctx: GoalContext) -> Outcome:
+    """Compare the joints with the last point within each joint's goal tolerance."""
+    last = dict(zip(names, map(float, goal.trajectory.points[-1].positions), strict=True))
+    tolerances = {t.name: float(t.position) for t in goal.goal_tolerance}
+    with ctx.stepper.lock:
+        reached = ctx.robot.world.joint_states(ctx.robot.name)
+    errors = {j: abs(reached[j] - last[j]) for j in names}
+    beyond = {
+        j: (error, tolerance)
+        for j, error in errors.items()
+        if (tolerance := _tolerance(tolerances.get(j, 0.0))) is not None and error > tolerance
+    }
+    worst = max(errors, key=errors.__getitem__)
+    if beyond:
+        text = "joints beyond their goal tolerance (error, tolerance): " + ", ".join(
+            f"{j}=({e:.4f}, {t})" for j, (e, t) in beyond.items()
+        )
+        return False, {"error_code": GOAL_TOLERANCE_VIOLATED, "error_string": text}, text
+    text = (
+        f"reached the last of {len(goal.trajectory.points)} points "
+        f"({goal.trajectory.points[-1].time_from_start.to_sec():.3f} s); "
+        f"largest error {errors[worst]:.2e} ({worst})"
+    )
+    return True, {"error_code": 0, "error_string": text}, text
+
+
+def _tolerance(value: float) -> float | None:
+    """A goal tolerance as control_msgs means it: 0 the default, negative none."""
+    if value < 0.0:
+        return None
+    return value if value > 0.0 else DEFAULT_GOAL_TOLERANCE
 
 
 def point_head(goal: Any, ctx: GoalContext) -> Outcome:

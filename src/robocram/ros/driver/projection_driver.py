@@ -10,15 +10,17 @@ result. ``fault`` makes every goal end badly on purpose, to exercise clients:
 
 from __future__ import annotations
 
+import json
 import threading
 from collections.abc import Callable
 from functools import partial
+from pathlib import Path
 from typing import Any
 
 from robocram.projection import ProjectedRobot, WorldFrames
 from robocram.ros.driver import goals
 from robocram.ros.driver.motion import MotionOptions, Stepper
-from robocram.ros.message_dicts import message_class, to_message
+from robocram.ros.message_dicts import message_class, to_dict, to_message
 from robocram.ros.ros_config import RosConfig
 from robocram.world import World
 
@@ -48,7 +50,10 @@ class ProjectionDriver:
         config: RosConfig,
         options: MotionOptions | None = None,
         fault: str = "none",
+        goal_log: Path | None = None,
     ) -> None:
+        """``goal_log``: a file each received goal is appended to, one JSON line
+        ``{"server", "action_type", "goal"}`` (goal as message dicts), before it runs."""
         if fault not in FAULTS:
             raise ValueError(f"driver fault {fault!r} is none of {FAULTS}")
         self.world = world
@@ -60,6 +65,8 @@ class ProjectionDriver:
         self.frames = WorldFrames(world)
         self._servers: list[Any] = []
         self._publishers: dict[str, Any] = {}
+        self.goal_log = goal_log
+        self._log_lock = threading.Lock()
 
     def start(self) -> None:
         """Advertise the state topics and start one action server per configured server."""
@@ -80,16 +87,27 @@ class ProjectionDriver:
                 server, message_class(f"{action_type}Action"), auto_start=False
             )
             handler = _handler(resource, action_type)
-            action.register_goal_callback(partial(self._on_goal, action, action_type, handler))
+            action.register_goal_callback(
+                partial(self._on_goal, action, server, action_type, handler)
+            )
             action.start()
             self._servers.append(action)
         rospy.Timer(rospy.Duration(1.0 / PUBLISH_RATE), lambda _: self.publish_state())
 
-    def _on_goal(self, server: Any, action_type: str, handler: Handler) -> None:
+    def _on_goal(self, server: Any, name: str, action_type: str, handler: Handler) -> None:
         goal = server.accept_new_goal()
+        self._record(name, action_type, goal)
         threading.Thread(
             target=self._execute, args=(server, action_type, handler, goal), daemon=True
         ).start()
+
+    def _record(self, server: str, action_type: str, goal: Any) -> None:
+        """Append the goal to the goal log, if there is one."""
+        if self.goal_log is None:
+            return
+        line = json.dumps({"server": server, "action_type": action_type, "goal": to_dict(goal)})
+        with self._log_lock, self.goal_log.open("a") as log:
+            log.write(line + "\n")
 
     def _execute(self, server: Any, action_type: str, handler: Handler, goal: Any) -> None:
         import rospy

@@ -19,3 +19,7 @@ ros_action_timeout(hsrb, Resource, 30.0) :- Resource \== navigation.
 ros_connection_timeout(hsrb, 2.0).
 ros_server_timeout(hsrb, 5.0).
 ros_gripper_effort(hsrb, 30.0).
+
+% How close a trajectory goal must end (see pr2.pl); other joints get the defaults.
+ros_goal_tolerance(hsrb, arm_lift_joint, 0.005).
+ros_goal_time_tolerance(hsrb, 0.5).

@@ -28,3 +28,11 @@ ros_connection_timeout(pr2, 2.0).
 ros_server_timeout(pr2, 5.0).
 % Effort [N] the grippers grip with.
 ros_gripper_effort(pr2, 50.0).
+
+% How close a trajectory goal must end (FollowJointTrajectory goal_tolerance and
+% goal_time_tolerance). Joints without a fact: 0.02 rad (revolute), 0.005 m (prismatic).
+% ros_goal_tolerance(Robot, Joint, Tolerance) [rad | m]; ros_goal_time_tolerance(Robot, S).
+ros_goal_tolerance(pr2, torso_lift_joint, 0.005).
+ros_goal_tolerance(pr2, l_wrist_roll_joint, 0.05).
+ros_goal_tolerance(pr2, r_wrist_roll_joint, 0.05).
+ros_goal_time_tolerance(pr2, 0.5).

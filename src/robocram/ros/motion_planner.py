@@ -1,0 +1,186 @@
+"""The plan side's motions for a robot behind ROS: checked in a world if given, always timed.
+
+Every joint motion sent over ROS is a timed trajectory (``robocram.motion``): positions,
+velocities, accelerations and times from the start, within the joints' limits. With a
+projection ``World`` of the robot's environment, the world is first put into the robot's
+state as ROS reports it (joint states and base pose), then the motion is planned in it as
+projection plans it: the straight joint segment if it is free, else around obstacles
+(OMPL), a Cartesian line for ``allow_hand`` tool motions, and the base's path checked
+before a ``move_base`` goal is sent. Without a world no environment is checked: the
+trajectory is the straight joint segment, timed.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Collection, Mapping
+from dataclasses import dataclass, replace
+
+from robocram.motion import (
+    BasePath,
+    JointTrajectory,
+    MotionSettings,
+    joint_limits,
+    plan_arm_motion,
+    plan_base_path,
+    plan_tool_line,
+    time_parameterize,
+)
+from robocram.projection import ProjectedRobot
+from robocram.projection.collision_mode import COLLISION_MODES, allowed_links
+from robocram.robots import LoadedDescription
+from robocram.ros.errors import RosCommandError, RosConfigError
+from robocram.tf import Pose
+from robocram.world import World
+
+
+@dataclass(frozen=True)
+class ClampedGoal:
+    """A joint goal moved into the limits; ``culprits`` are ``joint: (asked, lower, upper)``."""
+
+    goal: dict[str, float]  # [rad | m] within the limits
+    culprits: dict[str, tuple[float, float, float]]
+
+    def describe(self, robot: str) -> str:
+        """What was clamped, in words."""
+        return (
+            "joint goals outside the limits, clamped: "
+            + ", ".join(
+                f"{j}={asked} not in [{low}, {high}]"
+                for j, (asked, low, high) in self.culprits.items()
+            )
+            + f" ({robot})"
+        )
+
+
+def clamp_goal(desc: LoadedDescription, goal: Mapping[str, float]) -> ClampedGoal:
+    """``goal`` with every value inside its joint's limits (a trajectory cannot leave them)."""
+    clamped: dict[str, float] = {}
+    culprits: dict[str, tuple[float, float, float]] = {}
+    for joint, value in goal.items():
+        spec = desc.model.joints.get(joint)
+        if spec is None or not spec.movable:
+            raise RosCommandError(f"{joint!r} is not a movable joint of {desc.name}")
+        low = spec.lower if spec.lower is not None else -math.inf
+        high = spec.upper if spec.upper is not None else math.inf
+        clamped[joint] = min(max(float(value), low), high)
+        if clamped[joint] != float(value):
+            culprits[joint] = (float(value), low, high)
+    return ClampedGoal(clamped, culprits)
+
+
+class MotionPlanner:
+    """Plans the trajectories the ROS process modules send (one per robot connection)."""
+
+    def __init__(
+        self,
+        desc: LoadedDescription,
+        world: World | None = None,
+        settings: MotionSettings | None = None,
+    ) -> None:
+        self.desc = desc
+        self.world = world
+        self.settings = settings or MotionSettings()
+        self.robot: ProjectedRobot | None = None
+        if world is not None:
+            names = [r.name for r in world.robots()]
+            if desc.name not in names:
+                raise RosConfigError(
+                    f"the world given for {desc.name} has robots {names}, not {desc.name!r}; "
+                    f"pass a world with the robot in it (e.g. tabletop_scene({desc.name!r}).world)"
+                )
+            self.robot = ProjectedRobot.of(world, desc.name, motion=self.settings)
+
+    def sync(self, joints: Mapping[str, float], base_in_map: Pose) -> None:
+        """Put the world's robot where ROS says it is: joint states and base pose."""
+        if self.robot is None:
+            return
+        world, name = self.robot.world, self.robot.name
+        model = self.desc.model
+        known = world.joint_states(name)
+        world.set_joint_states(
+            name,
+            {
+                j: v
+                for j, v in joints.items()
+                if j in known and model.joints[j].mimic is None  # followers follow
+            },
+        )
+        world.set_pose(name, base_in_map)
+
+    def joint_motion(
+        self,
+        goal: Mapping[str, float],
+        current: Mapping[str, float],
+        *,
+        arm: str | None = None,
+        mode: str = "avoid_all",
+        what: str = "the joints",
+    ) -> JointTrajectory:
+        """The timed motion of the joints in ``goal`` (within limits) from where they are.
+
+        With a world it is checked (and planned round obstacles) in the collision mode of
+        the motion; ``arm``'s hand may touch things under ``allow_hand``. Call
+        :meth:`sync` first. Without a world, ``current`` is the start of a straight move.
+
+        Raises:
+            ManipulationPathBlocked: the world blocks every way there (nothing was sent).
+        """
+        joints = tuple(j for j in goal if self.desc.model.joints[j].mimic is None)
+        if self.robot is None:
+            limits = joint_limits(self.desc, joints)
+            # a real robot may report a joint a hair beyond its limit; a trajectory cannot
+            start = [
+                min(max(current[j], lim.lower), lim.upper)
+                for j, lim in zip(joints, limits, strict=True)
+            ]
+            end = [float(goal[j]) for j in joints]
+            return time_parameterize(self.desc.name, joints, [start, end], limits, kind="arm")
+        mode = _mode(mode)
+        settings = replace(self.settings, check=False) if mode == "allow_all" else self.settings
+        allowed = allowed_links(self.robot, arm, mode) if arm is not None else set()
+        motion = plan_arm_motion(
+            self.robot.world,
+            self.robot.name,
+            {j: float(goal[j]) for j in joints},
+            allowed_links=allowed,
+            settings=settings,
+            what=what,
+        )
+        return motion.trajectory
+
+    def tool_line(self, arm: str, target_in_base: Pose, mode: str) -> JointTrajectory | None:
+        """The arm's straight tool line to ``target_in_base`` if the world lets it all be
+        followed (``allow_hand`` motions: approach, lift, retreat), else None."""
+        if self.robot is None or _mode(mode) != "allow_hand":
+            return None
+        allowed: Collection[str] = allowed_links(self.robot, arm, "allow_hand")
+        line = plan_tool_line(
+            self.robot.world,
+            self.robot.name,
+            arm,
+            target_in_base,
+            allowed_links=allowed,
+            settings=self.settings,
+        )
+        return line.trajectory if line.fraction >= 1.0 else None
+
+    def base_path(self, goal_in_map: Pose) -> BasePath | None:
+        """The base's checked path to ``goal_in_map`` in the world (None without a world).
+
+        Raises:
+            NavigationPoseUnreachable: the robot would collide at the goal.
+            NavigationPathBlocked: no path leads there in the world.
+        """
+        if self.robot is None:
+            return None
+        return plan_base_path(
+            self.robot.world, self.robot.name, goal_in_map, seed=self.settings.seed
+        )
+
+
+def _mode(mode: str) -> str:
+    mode = mode.replace("-", "_")
+    if mode not in COLLISION_MODES:
+        raise RosCommandError(f"unknown collision mode {mode!r}; use one of {COLLISION_MODES}")
+    return mode
