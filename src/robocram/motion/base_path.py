@@ -10,6 +10,7 @@ curve for a car) is checked densely; only when it is blocked does OMPL plan arou
 
 from __future__ import annotations
 
+from collections.abc import Collection
 from dataclasses import dataclass
 
 import numpy as np
@@ -55,6 +56,7 @@ def plan_base_path(
     holonomic: bool | None = None,
     turning_radius: float = DEFAULT_TURNING_RADIUS,
     period: float = 0.05,
+    allowed_links: Collection[str] = (),
 ) -> BasePath:
     """A checked path of ``robot``'s base from where it stands to ``goal`` (map x, y, yaw).
 
@@ -67,6 +69,8 @@ def plan_base_path(
         holonomic: Whether the base drives sideways; None: the description says.
         turning_radius: [m] of a base that is not holonomic.
         period: Sampling period [s] of the trajectory.
+        allowed_links: Robot links that may touch anything on the way (a hand holding a
+            handle while the base follows a door's arc).
 
     Raises:
         NavigationPoseUnreachable: the robot would collide at ``goal`` (named).
@@ -77,7 +81,8 @@ def plan_base_path(
     car = holonomic is False or (holonomic is None and not world.robot(robot).description.holonomic)
     _check_request(goal, budget, turning_radius)
     radius = turning_radius if car else None
-    with BaseCollisionChecker.build(world, robot, goal.position[:2]) as checker:
+    allowed = frozenset(allowed_links)
+    with BaseCollisionChecker.build(world, robot, goal.position[:2], allowed) as checker:
         start_yaw = yaw_of(checker.start)
         start = np.array([*checker.start.position[:2], start_yaw])
         end = np.array([goal.position[0], goal.position[1], yaw_of(goal)])

@@ -9,7 +9,8 @@ what projection sees: tests use it as the independent judge of planned paths.
 
 from __future__ import annotations
 
-from collections.abc import Collection, Mapping, Sequence
+import contextlib
+from collections.abc import Collection, Iterator, Mapping, Sequence
 
 from robocram.motion.configuration_checker import Configuration, LinkPair
 from robocram.motion.errors import MotionError
@@ -42,7 +43,12 @@ class BulletScene:
         self.allowed_links = frozenset(allowed_links)
         self.allowed_pairs = frozenset(allowed_pairs)  # (robot link | held object, other)
         self.distance = distance  # [m] nearer than this counts as touching
-        self.moving_links = _links_below(world, robot, self._joints)
+        self.moving_links = (  # only these can touch anything new; no joints: the base
+            _links_below(world, robot, self._joints)
+            if self._joints
+            else tuple(world.link_names(robot))
+        )
+        self._posed = False
 
     @property
     def joints(self) -> tuple[str, ...]:
@@ -54,18 +60,33 @@ class BulletScene:
         values = dict(zip(self._joints, (float(v) for v in q), strict=True))
         return self.colliding_at(values, first_only)
 
-    def colliding_at(self, values: Mapping[str, float], first_only: bool = False) -> list[LinkPair]:
-        """The colliding pairs with the joints in ``values`` set (the others unchanged)."""
+    @contextlib.contextmanager
+    def posed(self) -> Iterator[None]:
+        """Inside the block, checks leave the robot where they put it (no put-back after
+        each, half their cost); the robot is put back once, when the block ends."""
+        if self._posed:
+            yield
+            return
+        before = self._current()
+        self._posed = True
+        try:
+            yield
+        finally:
+            self._posed = False
+            self.world.set_joint_states(self.robot, before)
+
+    def _current(self) -> dict[str, float]:
         world = self.world
         model = world.robot(self.robot).description.model
-        before = {
+        return {
             j: v for j, v in world.joint_states(self.robot).items() if model.joints[j].mimic is None
         }
-        world.set_joint_states(self.robot, values)
-        try:
+
+    def colliding_at(self, values: Mapping[str, float], first_only: bool = False) -> list[LinkPair]:
+        """The colliding pairs with the joints in ``values`` set (the others unchanged)."""
+        with self.posed():
+            self.world.set_joint_states(self.robot, values)
             return self.colliding_now(first_only)
-        finally:
-            world.set_joint_states(self.robot, before)
 
     def is_free(self, q: Configuration) -> bool:
         """Whether ``q`` collides with nothing."""
@@ -75,16 +96,9 @@ class BulletScene:
         """How far [m] the moving links (and what they hold) are from anything they may not
         touch, at ``q``; ``reach`` when nothing is nearer, 0 or less when they touch."""
         values = dict(zip(self._joints, (float(v) for v in q), strict=True))
-        world = self.world
-        model = world.robot(self.robot).description.model
-        before = {
-            j: v for j, v in world.joint_states(self.robot).items() if model.joints[j].mimic is None
-        }
-        world.set_joint_states(self.robot, values)
-        try:
+        with self.posed():
+            self.world.set_joint_states(self.robot, values)
             return self._clearance_now(reach)
-        finally:
-            world.set_joint_states(self.robot, before)
 
     def _clearance_now(self, reach: float) -> float:
         world = self.world
@@ -107,7 +121,7 @@ class BulletScene:
         floors = world.objects("floor")
         hits: dict[LinkPair, None] = {}
         for link, obj, other_link in world.link_pairs_in_contact(
-            self.robot, [*held, *floors], self.distance
+            self.robot, [*held, *floors], self.distance, links=self.moving_links
         ):
             pair = (link, _named(world, obj, other_link))
             if link not in self.allowed_links and pair not in self.allowed_pairs:

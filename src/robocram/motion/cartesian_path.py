@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from robocram.kinematics import solve_ik
-from robocram.motion.configuration_checker import ConfigurationChecker
+from robocram.motion.configuration_checker import ConfigurationChecker, posed
 from robocram.motion.joint_path import JointPath
 from robocram.motion.segment_check import CheckCounter, segment_free
 from robocram.motion.travel_bound import TravelBound
@@ -77,27 +77,28 @@ def cartesian_path(
     counter = CheckCounter()
     poses = line_poses(tool_in_base, target_in_base, max_step, max_rotation)
     stopped = ""
-    for k, pose in enumerate(poses):
-        result = solve_ik(
-            desc, arm, pose, seed=seed, use_torso=False, max_restarts=0, random_seed=random_seed
-        )
-        if not result.success:
-            stopped = f"IK found no solution {k + 1} steps along the line"
-            break
-        nxt = np.array([result.joint_positions[j] for j in joints])
-        jump = float(np.abs(nxt - q).max())
-        if jump > jump_threshold:
-            stopped = f"a joint jumps {jump:.2f} between steps {k} and {k + 1}"
-            break
-        counter.checks += 1
-        pairs = checker.colliding(nxt)
-        if pairs or not segment_free(checker, q, nxt, bound, counter):
-            link, other = pairs[0] if pairs else ("the arm", "something on the way")
-            stopped = f"{link} hits {other} {k + 1} steps along the line"
-            break
-        seed.update(result.joint_positions)
-        q = nxt
-        waypoints.append(tuple(q.tolist()))
+    with posed(checker):  # the robot is put back once, after the whole line
+        for k, pose in enumerate(poses):
+            result = solve_ik(
+                desc, arm, pose, seed=seed, use_torso=False, max_restarts=0, random_seed=random_seed
+            )
+            if not result.success:
+                stopped = f"IK found no solution {k + 1} steps along the line"
+                break
+            nxt = np.array([result.joint_positions[j] for j in joints])
+            jump = float(np.abs(nxt - q).max())
+            if jump > jump_threshold:
+                stopped = f"a joint jumps {jump:.2f} between steps {k} and {k + 1}"
+                break
+            counter.checks += 1
+            pairs = checker.colliding(nxt)
+            if pairs or not segment_free(checker, q, nxt, bound, counter):
+                link, other = pairs[0] if pairs else ("the arm", "something on the way")
+                stopped = f"{link} hits {other} {k + 1} steps along the line"
+                break
+            seed.update(result.joint_positions)
+            q = nxt
+            waypoints.append(tuple(q.tolist()))
     fraction = (len(waypoints) - 1) / len(poses)
     path = JointPath(joints, tuple(waypoints), "cartesian", counter.checks)
     return CartesianPath(path, fraction, stopped)

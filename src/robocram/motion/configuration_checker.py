@@ -8,6 +8,7 @@ world itself) and the coal scene (a snapshot, for speed).
 
 from __future__ import annotations
 
+import contextlib
 from collections.abc import Sequence
 from typing import Protocol, runtime_checkable
 
@@ -42,3 +43,10 @@ class ClearanceChecker(ConfigurationChecker, Protocol):
     def clearance(self, q: Configuration) -> float:
         """The distance [m] from the moving links to what they may not touch (<= 0: touch)."""
         ...
+
+
+def posed(checker: ConfigurationChecker) -> contextlib.AbstractContextManager[None]:
+    """The checker's ``posed()`` block (a world checker puts the robot back once, at the
+    end, instead of after every check), or a block that does nothing."""
+    hold = getattr(checker, "posed", None)
+    return hold() if hold is not None else contextlib.nullcontext()

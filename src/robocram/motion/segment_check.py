@@ -18,6 +18,7 @@ from robocram.motion.configuration_checker import (
     ClearanceChecker,
     ConfigurationChecker,
     LinkPair,
+    posed,
 )
 from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.travel_bound import TravelBound
@@ -80,14 +81,15 @@ def segment_free(
     that can tell its clearance is walked by conservative advancement instead.
     """
     qa, qb = np.asarray(qa, dtype=float), np.asarray(qb, dtype=float)
-    if isinstance(checker, ClearanceChecker):
-        return _advance_free(checker, qa, qb, bound, counter)
-    n = bound.steps(qa, qb)
-    for k in interior(n):
-        counter.checks += 1
-        if not checker.is_free(qa + (qb - qa) * (k / n)):
-            return False
-    return True
+    with posed(checker):
+        if isinstance(checker, ClearanceChecker):
+            return _advance_free(checker, qa, qb, bound, counter)
+        n = bound.steps(qa, qb)
+        for k in interior(n):
+            counter.checks += 1
+            if not checker.is_free(qa + (qb - qa) * (k / n)):
+                return False
+        return True
 
 
 def first_collision(
@@ -101,9 +103,10 @@ def first_collision(
     fraction of the segment where it is and its colliding pairs; None when all is free."""
     n = bound.steps(qa, qb)
     qa, qb = np.asarray(qa, dtype=float), np.asarray(qb, dtype=float)
-    for k in range(n + 1):
-        counter.checks += 1
-        pairs = checker.colliding(qa + (qb - qa) * (k / n))
-        if pairs:
-            return k / n, pairs
+    with posed(checker):
+        for k in range(n + 1):
+            counter.checks += 1
+            pairs = checker.colliding(qa + (qb - qa) * (k / n))
+            if pairs:
+                return k / n, pairs
     return None

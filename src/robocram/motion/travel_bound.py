@@ -96,12 +96,8 @@ def _reach_below(
 
 
 def _link_radii(world: World, robot: str) -> dict[str, float]:
-    """Per link: the largest distance from its frame to a corner of its bounds (and of what
-    it holds), in the world as it is now."""
-    radii: dict[str, float] = {}
-    for link in world.link_names(robot):
-        origin = np.array(world.link_pose(robot, link).position)
-        radii[link] = _corner_distance(origin, world.link_aabb(robot, link))
+    """Per link: a radius about its frame holding its shapes (and what it holds now)."""
+    radii = world.link_radii(robot)
     for obj, link in world.attachments(robot).items():
         origin = np.array(world.link_pose(robot, link).position)
         radii[link] = max(radii.get(link, 0.0), _corner_distance(origin, world.aabb(obj)))

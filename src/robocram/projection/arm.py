@@ -29,7 +29,7 @@ from robocram.kinematics import BaseMotion, IKResult, PlanarBase, base_in_ik, so
 from robocram.motion import ArmMotion, plan_arm_motion, plan_tool_line
 from robocram.projection.collision_mode import allowed_links, collision_check
 from robocram.projection.errors import unknown_name
-from robocram.projection.navigation import drive, moved_base
+from robocram.projection.navigation import drive, moved_base, unchecked_base_motion
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.projection.reach_failure import unreachable
 from robocram.projection.trajectory_follower import follow
@@ -43,7 +43,9 @@ BASE_TRAVEL = PlanarBase()  # how far IK may move the base: +-0.5 m in x and y, 
 IKQuery = tuple[bool, PlanarBase | None]  # use_torso, base travel (None: the base stays)
 
 
-def _attempts(robot: ProjectedRobot, arm: str, move_base: bool | None) -> list[IKQuery]:
+def _attempts(
+    robot: ProjectedRobot, arm: str, move_base: bool | None, travel: PlanarBase = BASE_TRAVEL
+) -> list[IKQuery]:
     """(use_torso, base) of each IK query, in order: the arm, the torso, the base.
 
     The base solver tries the arm and torso alone first, from the current joints, so with
@@ -52,7 +54,7 @@ def _attempts(robot: ProjectedRobot, arm: str, move_base: bool | None) -> list[I
     desc = robot.description
     torso = desc.torso_joint is not None
     if base_in_ik(desc, arm) if move_base is None else move_base:
-        return [(torso, BASE_TRAVEL)]
+        return [(torso, travel)]
     return [(False, None), (True, None)] if torso else [(False, None)]
 
 
@@ -64,12 +66,13 @@ def _solve(
     random_seed: int,
     move_base: bool | None = None,
     max_restarts: int = IK_RESTARTS,
+    base_travel: PlanarBase = BASE_TRAVEL,
 ) -> IKResult:
     check = collision_check(robot, arm, mode)
     seed = robot.world.joint_states(robot.name)
     result = IKResult(False)
     with robot.ik_lock:
-        for use_torso, base in _attempts(robot, arm, move_base):
+        for use_torso, base in _attempts(robot, arm, move_base, base_travel):
             result = solve_ik(
                 robot.description,
                 arm,
@@ -95,6 +98,7 @@ def move_tcp(
     random_seed: int = IK_RANDOM_SEED,
     move_base: bool | None = None,
     max_restarts: int = IK_RESTARTS,
+    base_travel: PlanarBase = BASE_TRAVEL,
 ) -> Pose:
     """Put ``arm``'s tool frame at ``target`` (map unless stamped); return it in ``map``.
 
@@ -103,7 +107,8 @@ def move_tcp(
     ``move_base``: whether IK may move the base (within :data:`BASE_TRAVEL`) when the arm
     alone cannot reach; None lets the description decide (``kinematics.base_in_ik``). A
     solution with a base part drives the base first, then moves the arm. ``max_restarts``
-    bounds each IK query (a best-effort motion may ask for fewer).
+    bounds each IK query (a best-effort motion may ask for fewer); ``base_travel`` how
+    far IK may move the base (a door's arc followed step by step needs little).
 
     Raises:
         ManipulationPoseUnreachable: IK found no collision-free solution; the arm stays.
@@ -115,8 +120,9 @@ def move_tcp(
     target_in_map = robot.in_map(target)
     target_in_base = robot.base_pose().inverse() * target_in_map
     result = _solve(
-        robot, arm, target_in_base, collision_mode, random_seed, move_base, max_restarts
-    )
+        robot, arm, target_in_base, collision_mode, random_seed, move_base, max_restarts,
+        base_travel,
+    )  # fmt: skip
     if not result.success:
         desc = robot.description
         raise unreachable(desc, arm, target, target_in_map, collision_mode, result)
@@ -142,8 +148,12 @@ def _arm_then_base(
     Raises:
         NavigationLowLevelFailure: neither order works (the base's failure).
     """
+    if mode.replace("-", "_") == "allow_all":  # nothing checked, the base neither
+        follow(robot, unchecked_base_motion(robot, base_goal))
+        return False
+    hand = allowed_links(robot, arm, mode)
     try:
-        drive(robot, base_goal)
+        drive(robot, base_goal, hand)
         return False
     except NavigationLowLevelFailure as failure:
         first = failure
@@ -151,13 +161,13 @@ def _arm_then_base(
         settings = replace(robot.motion, check=mode.replace("-", "_") != "allow_all")
         motion = plan_arm_motion(
             robot.world, robot.name, dict(result.joint_positions),
-            allowed_links=allowed_links(robot, arm, mode), settings=settings,
+            allowed_links=hand, settings=settings,
         )  # fmt: skip
     except ManipulationPathBlocked:
         raise first from None
     follow(robot, motion.trajectory)
     try:
-        drive(robot, base_goal)
+        drive(robot, base_goal, hand)
     except NavigationLowLevelFailure:
         raise first from None
     return True

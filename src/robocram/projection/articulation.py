@@ -24,8 +24,9 @@ from robocram.execution.failures import (
     EnvironmentManipulationImpossible,
     ManipulationGoalNotReached,
     ManipulationPoseUnreachable,
+    NavigationLowLevelFailure,
 )
-from robocram.kinematics import forward_kinematics
+from robocram.kinematics import PlanarBase, forward_kinematics
 from robocram.projection.arm import move_tcp
 from robocram.projection.errors import ProjectionError
 from robocram.projection.gripper import close_gripper, open_gripper
@@ -42,6 +43,8 @@ LET_GO_RESTARTS = 8  # IK restarts per backing-off try: it is best effort
 ROLLS = (math.pi / 2, -math.pi / 2, 0.0, math.pi)  # [rad] about the approach axis
 RESTING = 0.005  # [m] objects this close to the moving link move with it
 HOLD_MODE = "allow_hand"  # the fingers close around the handle
+STEP_TRAVEL = PlanarBase(0.15, 0.15, 0.5)  # [m, m, rad] the base's move per step of the arc
+REACH_TRAVEL = PlanarBase(0.5, 0.5, 1.0)  # [m, m, rad] to get the hand before the handle
 
 
 @dataclass(frozen=True)
@@ -115,8 +118,11 @@ def _follow(
         checkpoint()  # a stopped task ends here, holding the handle at the last step
         world.set_joint_states(part, {joint: value})
         try:
-            move_tcp(robot, arm, world.link_pose(part, handle) * grasp, HOLD_MODE, move_base=True)
-        except (ManipulationPoseUnreachable, ManipulationGoalNotReached):
+            move_tcp(
+                robot, arm, world.link_pose(part, handle) * grasp, HOLD_MODE, move_base=True,
+                base_travel=STEP_TRAVEL,
+            )  # fmt: skip
+        except (ManipulationPoseUnreachable, ManipulationGoalNotReached, NavigationLowLevelFailure):
             world.set_joint_states(part, {joint: held})
             return held
         except TaskStopped:  # stopped inside IK: the hand did not follow, undo the step
@@ -153,10 +159,10 @@ def _take_handle(robot: ProjectedRobot, arm: str, part: str, handle: str, grasp:
     in_front = world.link_pose(part, handle) * Pose((PRE_GRASP, 0.0, 0.0)) * grasp
     open_gripper(robot, arm)
     try:
-        move_tcp(robot, arm, in_front, move_base=True)
+        move_tcp(robot, arm, in_front, move_base=True, base_travel=REACH_TRAVEL)
         checkpoint()
-        move_tcp(robot, arm, at_handle, HOLD_MODE, move_base=True)
-    except (ManipulationPoseUnreachable, ManipulationGoalNotReached):
+        move_tcp(robot, arm, at_handle, HOLD_MODE, move_base=True, base_travel=STEP_TRAVEL)
+    except (ManipulationPoseUnreachable, ManipulationGoalNotReached, NavigationLowLevelFailure):
         return False
     close_gripper(robot, arm)
     return True

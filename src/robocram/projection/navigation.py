@@ -14,11 +14,17 @@ from __future__ import annotations
 
 import contextlib
 import math
-from collections.abc import Iterator
+from collections.abc import Collection, Iterator
 
 from robocram.execution.failures import NavigationPoseUnreachable
 from robocram.kinematics import BaseMotion
-from robocram.motion import plan_base_path
+from robocram.motion import (
+    BASE_JOINTS,
+    JointTrajectory,
+    joint_limits,
+    plan_base_path,
+    time_parameterize,
+)
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.projection.trajectory_follower import follow
 from robocram.tf import Pose, PoseLike, PoseStamped
@@ -31,8 +37,12 @@ def planar(pose: Pose, z: float) -> Pose:
     return Pose((pose.position[0], pose.position[1], z), quat.from_euler(0.0, 0.0, yaw))
 
 
-def drive(robot: ProjectedRobot, target: PoseStamped | PoseLike) -> Pose:
+def drive(
+    robot: ProjectedRobot, target: PoseStamped | PoseLike, allowed_links: Collection[str] = ()
+) -> Pose:
     """Put the robot's base at ``target`` (map unless stamped); return the reached pose.
+
+    ``allowed_links`` may touch things on the way (the hand holding a door's handle).
 
     Raises:
         NavigationPoseUnreachable: the robot would collide there; it stays where it was.
@@ -42,12 +52,25 @@ def drive(robot: ProjectedRobot, target: PoseStamped | PoseLike) -> Pose:
     if not all(math.isfinite(v) for v in goal.position):
         raise ValueError(f"navigation target {target!r} has a non-finite position")
     try:
-        path = plan_base_path(robot.world, robot.name, goal, seed=robot.motion.seed)
+        path = plan_base_path(
+            robot.world, robot.name, goal, seed=robot.motion.seed, allowed_links=allowed_links
+        )
     except NavigationPoseUnreachable as failure:
         failure.target = target
         raise
     follow(robot, path.trajectory)
     return goal
+
+
+def unchecked_base_motion(robot: ProjectedRobot, goal: Pose) -> JointTrajectory:
+    """The straight, timed base motion to ``goal`` with no check (CRAM's ``allow_all``)."""
+    start = robot.base_pose()
+    yaw0 = quat.to_euler(start.orientation)[2]
+    turn = quat.to_euler(goal.orientation)[2] - yaw0
+    yaw1 = yaw0 + math.atan2(math.sin(turn), math.cos(turn))  # the shorter way round
+    ends = [(*start.position[:2], yaw0), (*goal.position[:2], yaw1)]
+    limits = joint_limits(robot.description, BASE_JOINTS)
+    return time_parameterize(robot.name, BASE_JOINTS, ends, limits, kind="base")
 
 
 def place_base(robot: ProjectedRobot, goal: Pose) -> None:

@@ -79,6 +79,7 @@ def link_pairs_in_contact(
     obj: WorldObject,
     ignore: Iterable[WorldObject] = (),
     distance: float = CONTACT_DISTANCE,
+    links: Iterable[str] | None = None,
 ) -> list[tuple[str, WorldObject, str]]:
     """``(link of obj, other object, its link)`` triples nearer than ``distance`` [m], each once.
 
@@ -87,7 +88,7 @@ def link_pairs_in_contact(
     """
     skip = {obj.name} | {o.name for o in ignore}
     found: dict[tuple[str, str, str], tuple[str, WorldObject, str]] = {}
-    for link, other, other_link, index in _overlaps(world, obj, None, skip, distance):
+    for link, other, other_link, index in _overlaps(world, obj, links, skip, distance):
         other_name = _link_names(other).get(other_link, other.name)
         key = (link, other.name, other_name)
         if key not in found and _near(world, obj, other, index, other_link, distance):

@@ -46,6 +46,7 @@ class World(WorldCore):
         super().__init__(gui, gravity, time_step)
         self._gui = gui
         self._kb: KnowledgeBase | None = None
+        self._radii: dict[int, dict[str, float]] = {}  # body -> link -> radius [m]
 
     def __enter__(self) -> World:
         return self
@@ -163,6 +164,7 @@ class World(WorldCore):
     def remove(self, obj: ObjectRef) -> None:
         """Take ``obj`` out (see :meth:`WorldCore.remove`); a robot's facts leave the KB."""
         handle = self.object(obj)
+        self._radii.pop(handle.body_id, None)
         super().remove(handle)
         if isinstance(handle, RobotObject) and self._kb is not None:
             name = handle.description.name
@@ -256,15 +258,41 @@ class World(WorldCore):
         return bool(self.collisions(obj, skip))
 
     def link_pairs_in_contact(
-        self, obj: ObjectRef, ignore: Iterable[ObjectRef] = (), distance: float = 0.0
+        self,
+        obj: ObjectRef,
+        ignore: Iterable[ObjectRef] = (),
+        distance: float = 0.0,
+        links: Iterable[str] | None = None,
     ) -> list[tuple[str, WorldObject, str]]:
         """``(link of obj, other object, its link)`` triples within ``distance`` [m].
 
         Found through Bullet's broadphase, so a robot in a kitchen of hundreds of links
-        costs only the pairs whose bounds overlap. Nothing is skipped but ``ignore``.
+        costs only the pairs whose bounds overlap. Nothing is skipped but ``ignore``;
+        ``links`` limits the links of ``obj`` asked about (default: all).
         """
         skip = [self.object(o) for o in ignore]
-        return link_contacts.link_pairs_in_contact(self, self.object(obj), skip, distance)
+        return link_contacts.link_pairs_in_contact(self, self.object(obj), skip, distance, links)
+
+    def link_radii(self, obj: ObjectRef) -> dict[str, float]:
+        """Per link of ``obj``: a radius [m] about the link's frame that holds its shapes.
+
+        Taken once per body from its world-aligned bounds at the pose it is in (such a box
+        holds the link's shapes whatever its orientation, so the radius bounds them
+        forever: the shapes are rigid in the link's frame).
+        """
+        handle = self.object(obj)
+        cached = self._radii.get(handle.body_id)
+        if cached is None:
+            cached = {}
+            for link in self.link_names(handle):
+                origin = np.array(self.link_pose(handle, link).position)
+                low, high = self.link_aabb(handle, link)
+                far = np.maximum(
+                    np.abs(np.subtract(low, origin)), np.abs(np.subtract(high, origin))
+                )
+                cached[link] = float(np.linalg.norm(far))
+            self._radii[handle.body_id] = cached
+        return dict(cached)
 
     def link_distances(
         self,

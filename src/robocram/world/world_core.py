@@ -57,6 +57,7 @@ class WorldCore:
         pybullet.setGravity(0, 0, gravity, physicsClientId=self.client)
         pybullet.setTimeStep(time_step, physicsClientId=self.client)
         self._objects: dict[str, WorldObject] = {}
+        self._limits: dict[tuple[int, str], JointLimits] = {}  # (body, joint): fixed at load
         self._inertial: dict[str, Pose] = {}  # base link frame -> pybullet base (COM) frame
         self._attachments: dict[str, Attachment] = {}  # by attached object name
         self._holds: dict[str, dict[int, float]] = {}  # robot -> joint index -> held value
@@ -147,6 +148,7 @@ class WorldCore:
             if handle.name in (name, att.robot):
                 del self._attachments[name]
         pybullet.removeBody(handle.body_id, physicsClientId=self.physics_client())
+        self._limits = {k: v for k, v in self._limits.items() if k[0] != handle.body_id}
         del self._objects[handle.name]
         self._inertial.pop(handle.name, None)
         self._holds.pop(handle.name, None)
@@ -207,6 +209,14 @@ class WorldCore:
     def joint_limits(self, obj: ObjectRef, joint: str) -> JointLimits:
         """Position limits [rad | m] of a movable joint; continuous ones are -inf/inf."""
         handle = self.object(obj)
+        cached = self._limits.get((handle.body_id, joint))
+        if cached is not None:
+            return cached
+        limits = self._joint_limits(handle, joint)
+        self._limits[(handle.body_id, joint)] = limits
+        return limits
+
+    def _joint_limits(self, handle: WorldObject, joint: str) -> JointLimits:
         index = self._movable_index(handle, joint)
         if isinstance(handle, RobotObject):
             spec = handle.description.model.joints[joint]
