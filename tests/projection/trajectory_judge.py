@@ -1,0 +1,86 @@
+"""An independent judge of executed trajectories, for tests: PyBullet, densely, at once.
+
+Each trajectory is judged the moment projection reports it, in the world as it is then.
+Every configuration 1 cm of link travel / 0.02 rad apart along an arm trajectory, and
+every pose 1 cm / 0.02 rad apart along a base trajectory, must be free, held objects
+included; contacts the motion starts with and the moving hand's own links (grasping) do
+not count.
+"""
+
+from __future__ import annotations
+
+import math
+
+from robocram.motion import BASE_JOINTS, JointTrajectory
+from robocram.motion.bullet_scene import BulletScene
+from robocram.motion.travel_bound import TravelBound
+from robocram.tf import Pose
+from robocram.tf import quaternion as quat
+from robocram.world import World
+
+
+class Judge:
+    """Checks each reported trajectory against the world at that moment."""
+
+    def __init__(self, world: World, robot: str) -> None:
+        self.world = world
+        self.robot = robot
+        self.judged: list[tuple[str, int]] = []  # (kind, configurations checked)
+
+    def __call__(self, trajectory: JointTrajectory) -> None:
+        if trajectory.joint_names == BASE_JOINTS:
+            self.judged.append(("base", self._base(trajectory)))
+        else:
+            self.judged.append((trajectory.kind, self._arm(trajectory)))
+
+    def _hand_links(self, joints: tuple[str, ...]) -> set[str]:
+        desc = self.world.robot(self.robot).description
+        links: set[str] = set()
+        for arm in desc.arms.values():
+            if set(arm.joints) & set(joints):
+                links |= set(arm.hand_links) | set(arm.gripper_links)
+                links |= {arm.end_effector_link, arm.tool_frame}
+        return links
+
+    def _arm(self, trajectory: JointTrajectory) -> int:
+        world, joints = self.world, trajectory.joint_names
+        end = world.joint_states(self.robot)
+        points = trajectory.positions()
+        start = dict(zip(joints, points[0], strict=True))
+        judge = BulletScene(world, self.robot, joints, self._hand_links(joints))
+        allowed = set(judge.colliding_at(start))
+        bound = TravelBound.of(world, self.robot, joints)
+        checked = 0
+        for qa, qb in zip(points, points[1:], strict=False):
+            n = bound.steps(qa, qb)
+            for k in range(1, n + 1):
+                q = qa + (qb - qa) * (k / n)
+                hits = set(judge.colliding(q)) - allowed
+                assert not hits, f"{trajectory.kind} trajectory of {joints} hits {hits} at {q}"
+                checked += 1
+        world.set_joint_states(self.robot, {j: end[j] for j in joints})
+        return checked
+
+    def _base(self, trajectory: JointTrajectory) -> int:
+        world, robot = self.world, self.robot
+        end = world.pose(robot)
+        height = end.position[2]
+        points = trajectory.positions()
+        judge = BulletScene(world, robot, ())
+
+        def put(x: float, y: float, yaw: float) -> None:
+            world.set_pose(robot, Pose((x, y, height), quat.from_euler(0.0, 0.0, yaw)))
+
+        put(*points[0])
+        allowed = set(judge.colliding_now())
+        checked = 0
+        for qa, qb in zip(points, points[1:], strict=False):
+            travel = math.dist(qa[:2], qb[:2]) + 0.5 * abs(qb[2] - qa[2])  # 0.5 m: a reach
+            n = max(1, math.ceil(travel / 0.01), math.ceil(abs(qb[2] - qa[2]) / 0.02))
+            for k in range(1, n + 1):
+                put(*(qa + (qb - qa) * (k / n)))
+                hits = set(judge.colliding_now()) - allowed
+                assert not hits, f"base path hits {hits} at {qa + (qb - qa) * (k / n)}"
+                checked += 1
+        world.set_pose(robot, end)
+        return checked
