@@ -17,8 +17,13 @@ from dataclasses import dataclass
 import numpy as np
 
 from robocram.kinematics import solve_ik
-from robocram.motion.configuration_checker import ConfigurationChecker, posed
+from robocram.motion.configuration_checker import (
+    ClearanceChecker,
+    ConfigurationChecker,
+    posed,
+)
 from robocram.motion.joint_path import JointPath
+from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.segment_check import CheckCounter, segment_free
 from robocram.motion.travel_bound import TravelBound
 from robocram.robots import LoadedDescription
@@ -37,6 +42,14 @@ class CartesianPath:
     path: JointPath
     fraction: float
     stopped_by: str  # "" when the whole line was achieved, else why it stopped
+
+
+def _clear_around(checker: ConfigurationChecker, q: FloatArray, travel: float) -> bool:
+    """Whether ``q`` is clear by more than ``travel`` [m]: then the step to it is free too
+    (no point moved further than that on the way), with one clearance query."""
+    if not isinstance(checker, ClearanceChecker):
+        return False
+    return checker.clearance(q) > travel
 
 
 def line_poses(start: Pose, goal: Pose, max_step: float, max_rotation: float) -> list[Pose]:
@@ -91,8 +104,10 @@ def cartesian_path(
                 stopped = f"a joint jumps {jump:.2f} between steps {k} and {k + 1}"
                 break
             counter.checks += 1
-            pairs = checker.colliding(nxt)
-            if pairs or not segment_free(checker, q, nxt, bound, counter):
+            if not _clear_around(checker, nxt, bound.travel(q, nxt)) and (
+                (pairs := checker.colliding(nxt))
+                or not segment_free(checker, q, nxt, bound, counter)
+            ):
                 link, other = pairs[0] if pairs else ("the arm", "something on the way")
                 stopped = f"{link} hits {other} {k + 1} steps along the line"
                 break
