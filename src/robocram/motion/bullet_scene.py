@@ -2,9 +2,11 @@
 
 The robot is put at each configuration, asked for contacts through Bullet's broadphase,
 and put back. Held objects are checked against the world too (they ride with the hand);
-the robot touching what it holds, anything touching a floor, and the ``allowed_links``
-(CRAM's ``allow_hand``) do not count. Slower than a coal snapshot, but it sees exactly
-what projection sees: tests use it as the independent judge of planned paths.
+the robot touching what it holds, the contacts its description allows
+(``allowed_contacts``: anything on the floor), contacts the motion starts with
+(``allowed_pairs``) and the ``allowed_links`` (CRAM's ``allow_hand``) do not count.
+Slower than a coal snapshot, but it sees exactly what projection sees: it checks straight
+segments and tool lines, and tests use it as the judge of planned paths.
 """
 
 from __future__ import annotations
@@ -12,6 +14,7 @@ from __future__ import annotations
 import contextlib
 from collections.abc import Collection, Iterator, Mapping, Sequence
 
+from robocram.motion.allowed_contacts import AllowedContacts, Other
 from robocram.motion.configuration_checker import Configuration, LinkPair
 from robocram.motion.errors import MotionError
 from robocram.world import World, WorldObject
@@ -41,6 +44,7 @@ class BulletScene:
                 f"joints {unknown} are not movable joints of {robot}; known: {sorted(known)}"
             )
         self.allowed_links = frozenset(allowed_links)
+        self.rules = AllowedContacts.of(world.robot(robot).description, allowed_links)
         self.allowed_pairs = frozenset(allowed_pairs)  # (robot link | held object, other)
         self.distance = distance  # [m] nearer than this counts as touching
         self.moving_links = (  # only these can touch anything new; no joints: the base
@@ -103,33 +107,49 @@ class BulletScene:
     def _clearance_now(self, reach: float) -> float:
         world = self.world
         held = [world.object(name) for name in world.attachments(self.robot)]
-        floors = world.objects("floor")
+        anywhere = self._anywhere()
         nearest = reach
         links = [link for link in self.moving_links if link not in self.allowed_links]
-        for _, _, _, gap in world.link_distances(self.robot, [*held, *floors], reach, links=links):
-            nearest = min(nearest, gap - self.distance)
-        for item in held:
-            skip = [world.robot(self.robot), *(h for h in held if h is not item), *floors]
-            for _, _, _, gap in world.link_distances(item, skip, reach):
+        for link, obj, other_link, gap in world.link_distances(
+            self.robot, [*held, *anywhere], reach, links=links
+        ):
+            if self._counts(link, obj, other_link):
                 nearest = min(nearest, gap - self.distance)
+        for item in held:
+            skip = [world.robot(self.robot), *(h for h in held if h is not item), *anywhere]
+            for _, obj, other_link, gap in world.link_distances(item, skip, reach):
+                if (item.name, _named(world, obj, other_link)) not in self.allowed_pairs:
+                    nearest = min(nearest, gap - self.distance)
         return nearest
+
+    def _counts(self, link: str, obj: WorldObject, other_link: str) -> bool:
+        """Whether robot ``link`` touching ``obj`` is a collision (rules, start contacts)."""
+        if self.rules.allows(link, Other(obj.name, obj.type)):
+            return False
+        return (link, _named(self.world, obj, other_link)) not in self.allowed_pairs
+
+    def _anywhere(self) -> list[WorldObject]:
+        """Objects every link may touch by the description's rules (the floor)."""
+        return [
+            o for o in self.world.objects()
+            if o.name != self.robot and self.rules.allows_any_link(Other(o.name, o.type))
+        ]  # fmt: skip
 
     def colliding_now(self, first_only: bool = False) -> list[LinkPair]:
         """The colliding pairs of the robot (and what it holds) as it is in the world now."""
         world = self.world
         held = [world.object(name) for name in world.attachments(self.robot)]
-        floors = world.objects("floor")
+        anywhere = self._anywhere()
         hits: dict[LinkPair, None] = {}
         for link, obj, other_link in world.link_pairs_in_contact(
-            self.robot, [*held, *floors], self.distance, links=self.moving_links
+            self.robot, [*held, *anywhere], self.distance, links=self.moving_links
         ):
-            pair = (link, _named(world, obj, other_link))
-            if link not in self.allowed_links and pair not in self.allowed_pairs:
-                hits[pair] = None
+            if self._counts(link, obj, other_link):
+                hits[(link, _named(world, obj, other_link))] = None
                 if first_only:
                     return list(hits)
         for item in held:
-            skip = [world.robot(self.robot), *(h for h in held if h is not item), *floors]
+            skip = [world.robot(self.robot), *(h for h in held if h is not item), *anywhere]
             for _, obj, other_link in world.link_pairs_in_contact(item, skip, self.distance):
                 pair = (item.name, _named(world, obj, other_link))
                 if pair not in self.allowed_pairs:
