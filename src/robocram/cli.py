@@ -36,6 +36,10 @@ from robocram.traces import (
 from robocram.traces.mcap_export import export_mcap
 
 EXIT_OK, EXIT_FAILED, EXIT_USAGE, EXIT_INPUT = 0, 1, 2, 3
+ROBOT_HELP = (
+    "a built-in robot (pr2, hsrb, boxy), a description file (my_robot.py, as `robocram robot "
+    "draft` writes it) or pkg.module:NAME (default: %(default)s)"
+)
 
 try:
     from robocram.viewer.errors import ViewerError as _ViewerError
@@ -69,7 +73,7 @@ def _parser() -> argparse.ArgumentParser:
     )
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     demo = commands.add_parser("demo", help="a robot picks up a mug in projection")
-    demo.add_argument("--robot", default="pr2", help="built-in robot (pr2, hsrb, boxy)")
+    demo.add_argument("--robot", default="pr2", help=ROBOT_HELP)
     demo.add_argument(
         "--db", type=Path, help=f"trace the run into this SQLite file (or ${TRACE_ENV})"
     )
@@ -108,7 +112,7 @@ def _add_runs_commands(commands: argparse._SubParsersAction[argparse.ArgumentPar
 
 def _add_viewer_commands(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     view = commands.add_parser("view", help="live demo: watch a pick-up in the browser viewer")
-    view.add_argument("--robot", default="pr2", help="built-in robot (pr2, hsrb, boxy)")
+    view.add_argument("--robot", default="pr2", help=ROBOT_HELP)
     replay = commands.add_parser("replay", help="a stored run in the browser viewer")
     replay.add_argument("db", type=Path, help="trace database (SQLite)")
     replay.add_argument("--run", type=int, help="run id (default: the last run)")

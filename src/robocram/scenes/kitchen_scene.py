@@ -16,6 +16,7 @@ from pathlib import Path
 
 from robocram.robots import RobotDescription, load_description
 from robocram.scenes.errors import SceneError
+from robocram.scenes.parking import park_arms
 from robocram.tf import Pose, PoseStamped
 from robocram.world import World, WorldObject
 
@@ -100,6 +101,7 @@ def kitchen_scene(robot: str | RobotDescription, world: World | None = None) -> 
     world.add_urdf(KITCHEN, kitchen_urdf(), type="kitchen")
     world.kb.consult(kitchen_facts(), group="kitchen_semantics")
     name = world.add_robot(desc, pose=ROBOT_START).name
+    park_arms(world, name)
     items = {p.name: _place(world, p) for p in PLACES}
     usual = sorted({f"usual_location({p.kind}, {KITCHEN}, {p.link})." for p in PLACES})
     world.kb.consult("\n".join(usual), group="kitchen_contents")
