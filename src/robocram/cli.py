@@ -20,9 +20,11 @@ from pathlib import Path
 from typing import Any
 
 from robocram.batch.cli_batch import add_batch_command
+from robocram.environment_commands import add_environment_commands
 from robocram.execution import PlanFailure, TaskSnapshot
 from robocram.robot_commands import add_robot_commands
 from robocram.robots import DescriptionError, MissingMeshWarning, RobotModel, load_description
+from robocram.scenes import SceneError
 from robocram.traces import (
     TRACE_ENV,
     TraceDatabase,
@@ -58,7 +60,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     try:
         return int(args.handler(args))
-    except (TraceError, DescriptionError, CliInputError, _ViewerError) as err:
+    except (TraceError, DescriptionError, SceneError, CliInputError, _ViewerError) as err:
         print(f"robocram: error: {err}", file=sys.stderr)
         return EXIT_INPUT
 
@@ -85,6 +87,7 @@ def _parser() -> argparse.ArgumentParser:
     check.add_argument("urdf", help="a URDF file, or a built-in robot name such as pr2")
     check.set_defaults(handler=_check_robot)
     add_robot_commands(commands)
+    add_environment_commands(commands)
     return parser
 
 
