@@ -26,6 +26,7 @@ from robocram.scenes.environment_description import (
     SurfaceDescription,
 )
 from robocram.scenes.environment_model import Box, EnvironmentModel, EnvJoint
+from robocram.scenes.environment_source import environment_source
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
 
@@ -50,9 +51,7 @@ class EnvironmentDraft:
 
     def source(self, module_file: Path | None = None) -> str:
         """The draft as a ready-to-edit Python module defining ``description()``."""
-        from robocram.scenes.environment_source import environment_source
-
-        return environment_source(self, module_file)
+        return environment_source(self.description, self.reasons, self.doubts, module_file)
 
 
 def draft_environment(urdf: str | Path, name: str | None = None) -> EnvironmentDraft:

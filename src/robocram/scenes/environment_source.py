@@ -3,16 +3,19 @@
 from __future__ import annotations
 
 import os
+from collections.abc import Mapping, Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING
 
-if TYPE_CHECKING:  # the draft imports this module lazily; no cycle at run time
-    from robocram.scenes.environment_draft import EnvironmentDraft
+from robocram.scenes.environment_description import EnvironmentDescription
 
 
-def environment_source(draft: EnvironmentDraft, module_file: Path | None = None) -> str:
-    """``draft`` as Python source defining ``description()``; ``# why:`` and doubts inline."""
-    desc = draft.description
+def environment_source(
+    desc: EnvironmentDescription,
+    reasons: Mapping[str, str],
+    doubts: Sequence[str],
+    module_file: Path | None = None,
+) -> str:
+    """``desc`` as Python source defining ``description()``; ``# why:`` and doubts inline."""
     urdf = Path(desc.urdf).resolve()
     if module_file is not None:
         relative = os.path.relpath(urdf, Path(module_file).resolve().parent)
@@ -47,19 +50,19 @@ def environment_source(draft: EnvironmentDraft, module_file: Path | None = None)
         "        surfaces=(",
     ]
     for surface in desc.surfaces:
-        lines.append(f"            # why: {draft.reasons.get(surface.link, 'named by hand')}")
+        lines.append(f"            # why: {reasons.get(surface.link, 'named by hand')}")
         lines.append(
             f"            SurfaceDescription({surface.link!r}, height={surface.height!r}),"
         )
     lines += ["        ),", "        containers=("]
     for c in desc.containers:
-        lines.append(f"            # why: {draft.reasons.get(c.link, 'named by hand')}")
+        lines.append(f"            # why: {reasons.get(c.link, 'named by hand')}")
         lines.append(
             f"            ContainerDescription({c.link!r}, {c.joint!r}, {c.handle!r}, "
             f"{c.kind!r}, opening={c.opening!r}, front={c.front!r}),"
         )
     lines += ["        ),"]
-    for doubt in draft.doubts:
+    for doubt in doubts:
         lines.append(f"        # TODO doubt: {doubt}")
     lines += [
         "        # TODO doubt: where is each type of object usually kept? e.g.",
