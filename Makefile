@@ -28,8 +28,10 @@ $(ROS_STAMP): $(STAMP) tools/setup_ros.sh tools/generate_ros_messages.py $(ROS_D
 
 setup: $(STAMP) $(ROS_STAMP)
 
+# `make demo ROBOT=path/to/my_robot.py` runs the kitchen demo on a description file
+ROBOT ?= pr2
 demo: installed
-	$(BIN)/python -m robocram.demo
+	$(BIN)/python -m robocram.demo --robot $(ROBOT)
 
 lint: installed
 	$(BIN)/ruff check src tests benchmarks examples tools

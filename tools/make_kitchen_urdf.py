@@ -1,4 +1,7 @@
-"""Write robocram's kitchen: src/robocram/scenes/data/kitchen.urdf and its KB facts kitchen.pl.
+"""Write robocram's kitchen: src/robocram/scenes/data/kitchen.urdf.
+
+The facts it also builds are what it means the kitchen to hold; the scene drafts its own
+from the URDF (``robocram.scenes.draft_environment``) and a test checks they agree.
 
 A 6 x 5 m room of simple shapes: walls, a counter run along the north wall (cupboard, sink
 cabinet, drawer units, stove unit), a fridge, wall cupboards, a second counter run of
@@ -266,12 +269,11 @@ def build() -> tuple[str, str]:
 
 
 def main() -> None:
-    """Write the URDF and the facts next to the scenes package."""
-    urdf, facts = build()
+    """Write the URDF next to the scenes package."""
+    urdf, _ = build()
     DATA.mkdir(parents=True, exist_ok=True)
     (DATA / "kitchen.urdf").write_text(urdf, encoding="utf-8")
-    (DATA / "kitchen.pl").write_text(facts, encoding="utf-8")
-    print(f"wrote {DATA / 'kitchen.urdf'} and kitchen.pl")
+    print(f"wrote {DATA / 'kitchen.urdf'}")
 
 
 if __name__ == "__main__":

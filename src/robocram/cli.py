@@ -20,9 +20,11 @@ from pathlib import Path
 from typing import Any
 
 from robocram.batch.cli_batch import add_batch_command
+from robocram.environment_commands import add_environment_commands
 from robocram.execution import PlanFailure, TaskSnapshot
 from robocram.robot_commands import add_robot_commands
 from robocram.robots import DescriptionError, MissingMeshWarning, RobotModel, load_description
+from robocram.scenes import SceneError
 from robocram.traces import (
     TRACE_ENV,
     TraceDatabase,
@@ -36,6 +38,10 @@ from robocram.traces import (
 from robocram.traces.mcap_export import export_mcap
 
 EXIT_OK, EXIT_FAILED, EXIT_USAGE, EXIT_INPUT = 0, 1, 2, 3
+ROBOT_HELP = (
+    "a built-in robot (pr2, hsrb, boxy), a description file (my_robot.py, as `robocram robot "
+    "draft` writes it) or pkg.module:NAME (default: %(default)s)"
+)
 
 try:
     from robocram.viewer.errors import ViewerError as _ViewerError
@@ -54,7 +60,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     try:
         return int(args.handler(args))
-    except (TraceError, DescriptionError, CliInputError, _ViewerError) as err:
+    except (TraceError, DescriptionError, SceneError, CliInputError, _ViewerError) as err:
         print(f"robocram: error: {err}", file=sys.stderr)
         return EXIT_INPUT
 
@@ -69,7 +75,7 @@ def _parser() -> argparse.ArgumentParser:
     )
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     demo = commands.add_parser("demo", help="a robot picks up a mug in projection")
-    demo.add_argument("--robot", default="pr2", help="built-in robot (pr2, hsrb, boxy)")
+    demo.add_argument("--robot", default="pr2", help=ROBOT_HELP)
     demo.add_argument(
         "--db", type=Path, help=f"trace the run into this SQLite file (or ${TRACE_ENV})"
     )
@@ -81,6 +87,7 @@ def _parser() -> argparse.ArgumentParser:
     check.add_argument("urdf", help="a URDF file, or a built-in robot name such as pr2")
     check.set_defaults(handler=_check_robot)
     add_robot_commands(commands)
+    add_environment_commands(commands)
     return parser
 
 
@@ -108,7 +115,7 @@ def _add_runs_commands(commands: argparse._SubParsersAction[argparse.ArgumentPar
 
 def _add_viewer_commands(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     view = commands.add_parser("view", help="live demo: watch a pick-up in the browser viewer")
-    view.add_argument("--robot", default="pr2", help="built-in robot (pr2, hsrb, boxy)")
+    view.add_argument("--robot", default="pr2", help=ROBOT_HELP)
     replay = commands.add_parser("replay", help="a stored run in the browser viewer")
     replay.add_argument("db", type=Path, help="trace database (SQLite)")
     replay.add_argument("--run", type=int, help="run id (default: the last run)")

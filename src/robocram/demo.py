@@ -11,7 +11,9 @@ pick-up demo lives on as ``examples/pick_mug.py``.
 
 from __future__ import annotations
 
+import argparse
 import time
+from collections.abc import Sequence
 from pathlib import Path
 
 from robocram.designators import a, an
@@ -43,10 +45,13 @@ def fresh_database(path: Path) -> Path:
     return path
 
 
-def main(out_dir: Path = Path("out")) -> list[Path]:
-    """Run both transports, print the task tree, write and return the pictures and the GIF."""
+def main(out_dir: Path = Path("out"), robot: str = "pr2") -> list[Path]:
+    """Run both transports, print the task tree, write and return the pictures and the GIF.
+
+    ``robot`` is a built-in robot's name or a description file (``my_robot.py``).
+    """
     start = time.perf_counter()
-    scene = kitchen_scene("pr2")
+    scene = kitchen_scene(robot)
     world = scene.world
     out_dir.mkdir(parents=True, exist_ok=True)
     pictures = [picture(world, out_dir / "demo_before.png")]
@@ -75,5 +80,18 @@ def main(out_dir: Path = Path("out")) -> list[Path]:
     return pictures
 
 
+def command_line(argv: Sequence[str] | None = None) -> list[Path]:
+    """``python -m robocram.demo [--robot ROBOT] [--out DIR]`` (``make demo ROBOT=...``)."""
+    parser = argparse.ArgumentParser(prog="python -m robocram.demo", description=__doc__)
+    parser.add_argument(
+        "--robot",
+        default="pr2",
+        help="a built-in robot (pr2, hsrb, boxy) or a description file (my_robot.py)",
+    )
+    parser.add_argument("--out", type=Path, default=Path("out"), help="where the pictures go")
+    args = parser.parse_args(argv)
+    return main(args.out, args.robot)
+
+
 if __name__ == "__main__":
-    main()
+    command_line()

@@ -66,7 +66,7 @@ def load_spec(path: str | Path) -> BatchSpec:
     try:
         return BatchSpec(
             _named(path, "scene", data.get("scene", "tabletop"), SCENES),
-            _string(path, "robot", data.get("robot", "pr2")),
+            _robot(path, data.get("robot", "pr2")),
             _named(path, "plan", data.get("plan", "pick_up"), PLANS),
             _variants(path, data),
             _optional_int(path, "workers", data.get("workers")),
@@ -95,6 +95,18 @@ def _string(path: Path, key: str, value: object) -> str:
     if not (isinstance(value, str) and value):
         raise BadSpec(path, key, value, "give a name")
     return value
+
+
+def _robot(path: Path, value: object) -> str:
+    """A built-in robot's name, ``pkg.mod:NAME``, or a description file (relative: to the spec)."""
+    spec = _string(path, "robot", value)
+    where, colon, name = spec.partition(":")
+    if not where.endswith(".py") or Path(where).is_absolute():
+        return spec
+    file = path.resolve().parent / where
+    if not file.is_file():
+        raise BadSpec(path, "robot", spec, f"no file {file}; give a built-in robot or a .py file")
+    return f"{file}{colon}{name}"
 
 
 def _optional_string(path: Path, key: str, value: object) -> str | None:

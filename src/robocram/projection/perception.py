@@ -6,19 +6,26 @@ object (``World.visible``). The answer is a new object designator carrying the o
 name, type and pose in the robot's base frame, equated with the one asked for; with
 ``all_.objects(...)`` every visible match is returned, nearest first, as fresh designators
 (they describe different things, so they are not equated with the question).
+When nothing fits and the robot's own link hides an object that would have, the failure
+(:class:`PerceptionBlockedByRobot`) names the link and suggests parking the arms.
 """
 
 from __future__ import annotations
 
+from collections import Counter
 from dataclasses import dataclass
+from itertools import product
+
+import numpy as np
 
 from robocram.designators import ObjectDesignator, Quantifier
-from robocram.execution.failures import PerceptionObjectNotFound
+from robocram.execution.failures import PerceptionBlockedByRobot, PerceptionObjectNotFound
 from robocram.projection.projected_robot import ProjectedRobot
-from robocram.tf import PoseStamped
-from robocram.world import WorldObject
+from robocram.tf import PoseStamped, Vector3
+from robocram.world import Camera, WorldObject
 
 FILTER_KEYS = ("type", "name")
+BLOCK_SAMPLES = (0.2, 0.5, 0.8)  # share of an object's bounds per axis the rays aim at
 
 
 @dataclass(frozen=True)
@@ -51,6 +58,44 @@ def visible_matches(robot: ProjectedRobot, designator: ObjectDesignator) -> list
     return sorted(seen, key=lambda o: world.pose(o).distance_to(camera))
 
 
+def _in_view(camera: Camera, point: list[float]) -> bool:
+    x, y, z = camera.to_optical(np.array([point]))[0]
+    th, tv = camera.tan_half
+    return bool(z > camera.near and abs(x / z) <= th and abs(y / z) <= tv)
+
+
+def own_link_blocking(
+    robot: ProjectedRobot, designator: ObjectDesignator
+) -> tuple[str, str] | None:
+    """``(link, object)``: the robot's link most rays from its camera to a fitting object hit.
+
+    Rays go from the camera to 27 points inside each fitting object's bounds; None when
+    no ray meets the robot before the object.
+    """
+    world = robot.world
+    cam = world.camera(robot.name)
+    camera = cam.pose.position
+    hits: Counter[tuple[str, str]] = Counter()
+    for obj in world.objects():
+        if obj.name == robot.name or obj.type == "floor" or not _matches(designator, obj):
+            continue
+        low, high = world.aabb(obj)
+        if not _in_view(cam, [(lo + hi) / 2 for lo, hi in zip(low, high, strict=True)]):
+            continue  # out of the picture: the robot's body behind the camera is no blocker
+        points: list[Vector3] = [
+            (
+                low[0] + sx * (high[0] - low[0]),
+                low[1] + sy * (high[1] - low[1]),
+                low[2] + sz * (high[2] - low[2]),
+            )
+            for sx, sy, sz in product(BLOCK_SAMPLES, repeat=3)
+        ]
+        for hit in world.ray_cast_batch([camera] * len(points), points):
+            if hit is not None and hit.obj.name == robot.name and hit.link is not None:
+                hits[(hit.link, obj.name)] += 1
+    return hits.most_common(1)[0][0] if hits else None
+
+
 def perceive(
     robot: ProjectedRobot, obj: WorldObject, asked: ObjectDesignator | None
 ) -> ObjectDesignator:
@@ -71,6 +116,7 @@ def detect(
     """Perceive the object(s) ``designator`` describes.
 
     Raises:
+        PerceptionBlockedByRobot: the robot's own link hides the object that fits.
         PerceptionObjectNotFound: no visible object fits the designator.
     """
     if not isinstance(designator, ObjectDesignator):
@@ -78,6 +124,16 @@ def detect(
             f"detecting needs an object designator (an.object(type=...)), got {designator!r}"
         )
     seen = visible_matches(robot, designator)
+    blocked = None if seen else own_link_blocking(robot, designator)
+    if blocked is not None:
+        link, target = blocked
+        raise PerceptionBlockedByRobot(
+            f"{robot.name} sees no object fitting {designator.description}: its own link "
+            f"{link!r} blocks the view of {target!r}",
+            object_designator=designator,
+            link=link,
+            target=target,
+        )
     if not seen:
         raise PerceptionObjectNotFound(
             f"{robot.name} sees no object fitting {designator.description}",

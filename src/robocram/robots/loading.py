@@ -1,7 +1,8 @@
 """Load a robot description: parse its URDF, add its frames and boxes, check every name.
 
 ``load_description("pr2")`` returns the built-in PR2 as a :class:`LoadedDescription`
-(``model`` set); a user's own ``RobotDescription`` goes through the same checks.
+(``model`` set); a user's own ``RobotDescription``, or a file defining one
+(``load_description("my_robot.py")``), goes through the same checks.
 """
 
 from __future__ import annotations
@@ -10,7 +11,6 @@ from collections.abc import Iterable
 from dataclasses import replace
 from pathlib import Path
 
-from robocram.robots.builtin import builtin_description
 from robocram.robots.derived_values import derive_arm, derive_camera, derive_links
 from robocram.robots.description import LoadedDescription, RobotDescription
 from robocram.robots.description_check import (
@@ -19,6 +19,7 @@ from robocram.robots.description_check import (
     infer_arm,
     semantic_findings,
 )
+from robocram.robots.description_source import description_from
 from robocram.robots.errors import DescriptionCheckError
 from robocram.robots.findings import warn
 from robocram.robots.package_resolver import PackageResolver
@@ -43,7 +44,7 @@ def load_description(
         UrdfError, PackageNotFoundError: the URDF cannot be read.
     """
     if isinstance(name_or_desc, str):
-        desc = builtin_description(name_or_desc)
+        desc = description_from(name_or_desc)
     elif isinstance(name_or_desc, RobotDescription):
         desc = name_or_desc
     else:

@@ -10,6 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from robocram.robots import RobotDescription, load_description
+from robocram.scenes.parking import park_arms
 from robocram.scenes.placement import TABLE_DEPTH, tabletop_placement
 from robocram.tf import Pose, PoseStamped
 from robocram.world import World
@@ -25,7 +26,8 @@ class TabletopScene:
 
 
 def tabletop_scene(robot: str | RobotDescription, world: World | None = None) -> TabletopScene:
-    """Floor, ``robot`` at the origin, a table with a mug and a bottle in front of it.
+    """Floor, ``robot`` (a name, a description file or a description) at the origin, arms
+    parked, a table with a mug and a bottle in front of it.
 
     Raises:
         UnfitRobotError: the robot has no gripper arm, or it cannot reach past its base.
@@ -34,6 +36,7 @@ def tabletop_scene(robot: str | RobotDescription, world: World | None = None) ->
     world = world if world is not None else World()
     world.add_floor()
     name = world.add_robot(desc, pose=Pose((0.0, 0.0, 0.0))).name
+    park_arms(world, name)
     place = tabletop_placement(world, name)
     height, (mug_x, mug_y), table_x = place.table_height, place.mug_xy, place.table_x
     world.add_box("table", (TABLE_DEPTH, 1.0, height), pose=Pose((table_x, 0.0, height / 2)))

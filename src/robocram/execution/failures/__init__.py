@@ -49,6 +49,7 @@ from robocram.execution.failures.navigation import (
 from robocram.execution.failures.perception import (
     LookingHighLevelFailure,
     ObjectNowhereToBeFound,
+    PerceptionBlockedByRobot,
     PerceptionLowLevelFailure,
     PerceptionObjectNotFound,
     PtuGoalNotReached,
@@ -104,6 +105,7 @@ __all__ = [
     "ObjectUnfetchable",
     "ObjectUnreachable",
     "PerceptionLowLevelFailure",
+    "PerceptionBlockedByRobot",
     "PerceptionObjectNotFound",
     "PlanFailure",
     "ProcessModuleFailure",

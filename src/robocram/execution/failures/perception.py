@@ -21,6 +21,18 @@ class PerceptionObjectNotFound(PerceptionLowLevelFailure):
     hint = "look somewhere else or relax the object description"
 
 
+class PerceptionBlockedByRobot(PerceptionObjectNotFound):
+    """The robot's own link stands between its camera and an object that fits."""
+
+    link: str | None = None
+    target: str | None = None
+    summary = "the robot's own link blocks the camera's view"
+    hint = (
+        "park the arms before looking (perform(an.action(type='parking-arms'))); "
+        "the scenes park them at the start"
+    )
+
+
 class PtuLowLevelFailure(LowLevelFailure):
     """A pan-tilt unit (neck) motion failed."""
 

@@ -36,7 +36,8 @@ def builtin_description(name: str) -> RobotDescription:
         hint = f"; did you mean {' or '.join(repr(c) for c in close)}?" if close else ""
         raise DescriptionError(
             f"no built-in robot {name!r}{hint} (built-in: {', '.join(builtin_names())}); "
-            "or pass a RobotDescription"
+            "or give a .py file defining description() (as `robocram robot draft` writes), "
+            "pkg.module:NAME, or a RobotDescription"
         )
     module = importlib.import_module(f"{__name__}.{module_name}")
     description: RobotDescription = module.description()

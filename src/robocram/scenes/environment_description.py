@@ -1,0 +1,86 @@
+"""An environment description: what plans need to know about a URDF kitchen, as data.
+
+Plans ask the knowledge base for supporting surfaces, containers (the link things lie in,
+the joint that opens it, the handle to pull, drawer or door, how far it opens) and where a
+type of object is usually kept. An :class:`EnvironmentDescription` holds those for one
+URDF and writes them as the facts of the predicate table's ``SCENE`` rows
+(:meth:`EnvironmentDescription.facts`). ``robocram env draft URDF`` drafts one
+(:mod:`robocram.scenes.environment_draft`); the built-in kitchen is one too.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Literal
+
+ContainerKind = Literal["drawer", "door"]
+
+
+@dataclass(frozen=True)
+class SurfaceDescription:
+    """The top of ``link``: things stand on it ``height`` [m] above the floor.
+
+    ``margin`` [m] is kept from its edges when placing there.
+    """
+
+    link: str
+    height: float  # [m] in the environment's frame
+    margin: float = 0.05  # [m]
+
+
+@dataclass(frozen=True)
+class ContainerDescription:
+    """A drawer or door: things lie in ``link``; ``joint`` opens it; ``handle`` is pulled.
+
+    ``opening`` is the joint value [m | rad] that opens it; ``front`` [rad] the yaw (in the
+    environment's frame) of the direction out of its front, where the robot stands.
+    """
+
+    link: str
+    joint: str
+    handle: str
+    kind: ContainerKind
+    opening: float  # [m | rad]
+    front: float = 0.0  # [rad]
+
+
+@dataclass(frozen=True)
+class EnvironmentDescription:
+    """An environment's URDF and the semantic parts plans use, by link name."""
+
+    name: str
+    urdf: Path
+    surfaces: tuple[SurfaceDescription, ...] = ()
+    containers: tuple[ContainerDescription, ...] = ()
+    usual_locations: tuple[tuple[str, str], ...] = ()  # (object type, surface or container)
+    package_paths: tuple[Path, ...] = field(default_factory=tuple)
+
+    def surface(self, link: str) -> SurfaceDescription | None:
+        """The surface on ``link``, if it is one."""
+        return next((s for s in self.surfaces if s.link == link), None)
+
+    def container(self, link: str) -> ContainerDescription | None:
+        """The container ``link`` (or whose handle is ``link``), if any."""
+        return next((c for c in self.containers if link in (c.link, c.handle)), None)
+
+    def facts(self, environment: str | None = None) -> str:
+        """The KB facts (Prolog text) for this environment, named ``environment``."""
+        env = _atom(environment or self.name)
+        lines = [f"supporting_surface({env}, {_atom(s.link)})." for s in self.surfaces]
+        for c in self.containers:
+            link = _atom(c.link)
+            lines.append(f"container({env}, {link}, {_atom(c.joint)}, {_atom(c.handle)}).")
+            lines.append(f"container_kind({env}, {link}, {c.kind}).")
+            lines.append(f"container_opening({env}, {link}, {float(c.opening)!r}).")
+        lines += [
+            f"usual_location({_atom(t)}, {env}, {_atom(p)})." for t, p in self.usual_locations
+        ]
+        return "\n".join(lines) + "\n"
+
+
+def _atom(name: str) -> str:
+    """``name`` as a Prolog atom, quoted unless it is a plain lower-case identifier."""
+    if name[:1].islower() and all(ch.isalnum() or ch == "_" for ch in name):
+        return name
+    return "'" + name.replace("\\", "\\\\").replace("'", "\\'") + "'"

@@ -1,0 +1,208 @@
+"""An environment URDF's links, joints and collision boxes, and their poses at any joint values.
+
+Read for drafting (:mod:`robocram.scenes.environment_draft`): only the tree, the joints'
+origins, axes and limits, and the collision shapes' sizes matter. A mesh's size is unknown
+without its file, so a mesh shape counts as none here (the draft says so where it matters).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import math
+import tempfile
+from collections.abc import Iterator, Mapping
+from dataclasses import dataclass
+from pathlib import Path
+
+from robocram.robots.safe_xml import XmlNode, decode_xml, parse_xml
+from robocram.scenes.errors import SceneError
+from robocram.tf import Pose, Vector3
+from robocram.tf import quaternion as quat
+
+
+@dataclass(frozen=True)
+class Box:
+    """A collision box (or a cylinder's bounding box) at ``origin`` in its link's frame."""
+
+    origin: Pose
+    size: Vector3  # [m]
+
+
+@dataclass(frozen=True)
+class EnvJoint:
+    """A URDF joint: its type, its parent and child links, origin, axis and limits."""
+
+    name: str
+    type: str
+    parent: str
+    child: str
+    origin: Pose
+    axis: Vector3
+    lower: float
+    upper: float
+
+    @property
+    def moves(self) -> bool:
+        """Whether it is a prismatic or revolute joint with some range."""
+        return self.type in ("prismatic", "revolute", "continuous") and self.upper > self.lower
+
+    def motion(self, value: float) -> Pose:
+        """The child's pose in the joint frame at ``value`` [m | rad]."""
+        if self.type == "prismatic":
+            return Pose(tuple(a * value for a in self.axis))  # type: ignore[arg-type]
+        if self.type in ("revolute", "continuous"):
+            return Pose(orientation=quat.from_axis_angle(self.axis, value))
+        return Pose()
+
+
+@dataclass(frozen=True)
+class EnvironmentModel:
+    """Links (with their boxes and mesh counts) and joints of an environment URDF."""
+
+    name: str
+    boxes: Mapping[str, tuple[Box, ...]]
+    meshes: Mapping[str, int]  # link -> number of mesh collision shapes
+    joints: Mapping[str, EnvJoint]  # by child link
+    root: str
+
+    @classmethod
+    def from_file(cls, path: str | Path) -> EnvironmentModel:
+        """Read the URDF at ``path``.
+
+        Raises:
+            UrdfError: malformed or unsafe XML.
+            SceneError: no links, or not a tree.
+        """
+        file = Path(path)
+        root = parse_xml(decode_xml(file.read_bytes(), file), file)
+        boxes = {n.attrib["name"]: tuple(_boxes(n)) for n in root.findall("link")}
+        meshes = {n.attrib["name"]: _count_meshes(n) for n in root.findall("link")}
+        joints = {j.child: j for j in (_joint(n) for n in root.findall("joint"))}
+        roots = sorted(set(boxes) - set(joints))
+        if not roots:
+            raise SceneError(f"{file}: no root link (no links, or a cycle); give a URDF tree")
+        return cls(root.attrib.get("name", file.stem), boxes, meshes, joints, roots[0])
+
+    def pose(self, link: str, values: Mapping[str, float] | None = None) -> Pose:
+        """``link``'s pose in the root's frame, joints at ``values`` (default 0) [m | rad]."""
+        chain: list[EnvJoint] = []
+        while link in self.joints:
+            joint = self.joints[link]
+            chain.append(joint)
+            link = joint.parent
+        pose = Pose()
+        for joint in reversed(chain):
+            value = (values or {}).get(joint.name, 0.0)
+            pose = pose * joint.origin * joint.motion(value)
+        return pose
+
+    def children(self, link: str) -> Iterator[EnvJoint]:
+        """The joints whose parent is ``link``."""
+        return (j for j in self.joints.values() if j.parent == link)
+
+    def fixed_subtree(self, link: str) -> list[str]:
+        """``link`` and every link fixed to it (through fixed joints only)."""
+        found = [link]
+        for joint in self.children(link):
+            if joint.type == "fixed":
+                found += self.fixed_subtree(joint.child)
+        return found
+
+    def moved_by_joint(self, link: str) -> bool:
+        """Whether a moving joint lies between the root and ``link``."""
+        while link in self.joints:
+            if self.joints[link].moves:
+                return True
+            link = self.joints[link].parent
+        return False
+
+
+def _floats(text: str | None, default: tuple[float, ...]) -> tuple[float, ...]:
+    return tuple(float(v) for v in text.split()) if text else default
+
+
+def _origin(node: XmlNode | None) -> Pose:
+    if node is None:
+        return Pose()
+    x, y, z = _floats(node.attrib.get("xyz"), (0.0, 0.0, 0.0))
+    roll, pitch, yaw = _floats(node.attrib.get("rpy"), (0.0, 0.0, 0.0))
+    return Pose((x, y, z), quat.from_euler(roll, pitch, yaw))
+
+
+def _boxes(link: XmlNode) -> Iterator[Box]:
+    for shape in link.findall("collision"):
+        geometry = shape.find("geometry")
+        if geometry is None or not geometry.children:
+            continue
+        kind = geometry.children[0]
+        if kind.tag == "box":
+            sx, sy, sz = _floats(kind.attrib.get("size"), (0.0, 0.0, 0.0))
+            yield Box(_origin(shape.find("origin")), (sx, sy, sz))
+        elif kind.tag == "cylinder":
+            r, length = float(kind.attrib["radius"]), float(kind.attrib["length"])
+            yield Box(_origin(shape.find("origin")), (2 * r, 2 * r, length))
+
+
+def _count_meshes(link: XmlNode) -> int:
+    return sum(
+        1
+        for shape in link.findall("collision")
+        if (g := shape.find("geometry")) is not None and g.find("mesh") is not None
+    )
+
+
+def _joint(node: XmlNode) -> EnvJoint:
+    parent, child, axis, limit = (node.find(t) for t in ("parent", "child", "axis", "limit"))
+    if parent is None or child is None:
+        raise SceneError(f"joint {node.attrib.get('name')!r} lacks a parent or child link")
+    ax = _floats(axis.attrib.get("xyz") if axis is not None else None, (1.0, 0.0, 0.0))
+    norm = math.sqrt(sum(a * a for a in ax)) or 1.0
+    lower = float(limit.attrib.get("lower", 0.0)) if limit is not None else 0.0
+    upper = float(limit.attrib.get("upper", 0.0)) if limit is not None else 0.0
+    if node.attrib.get("type") == "continuous":
+        lower, upper = -math.pi, math.pi
+    return EnvJoint(
+        node.attrib["name"],
+        node.attrib.get("type", "fixed"),
+        parent.attrib["link"],
+        child.attrib["link"],
+        _origin(node.find("origin")),
+        (ax[0] / norm, ax[1] / norm, ax[2] / norm),
+        lower,
+        upper,
+    )
+
+
+def loadable_urdf(urdf: str | Path, folder: Path | None = None) -> Path:
+    """``urdf`` itself, or a copy in ``folder`` without the shapes PyBullet cannot load.
+
+    Mesh files that are not there (``package://`` URIs without their package, as in
+    URDFs taken out of a ROS workspace) are left out of the copy: the links stay, as
+    frames that move with their joints; the draft marks them as doubts.
+    """
+    import xml.etree.ElementTree as ET  # the file was read safely by from_file first
+
+    path = Path(urdf)
+    EnvironmentModel.from_file(path)  # refuses unsafe XML before ElementTree sees it
+    tree = ET.parse(path)
+    dropped = 0
+    for link in tree.getroot().iter("link"):
+        for shape in [*link.findall("visual"), *link.findall("collision")]:
+            mesh = shape.find("geometry/mesh")
+            if mesh is not None and not _mesh_exists(mesh.get("filename", ""), path.parent):
+                link.remove(shape)
+                dropped += 1
+    if not dropped:
+        return path
+    key = hashlib.sha1(str(path.resolve()).encode()).hexdigest()[:12]
+    folder = folder or Path(tempfile.gettempdir()) / "robocram-environments" / key
+    folder.mkdir(parents=True, exist_ok=True)
+    copy = folder / f"{path.stem}.loadable.urdf"
+    tree.write(copy, encoding="unicode")
+    return copy
+
+
+def _mesh_exists(uri: str, base: Path) -> bool:
+    if uri.startswith("package://"):
+        return False  # no ROS workspace: PyBullet cannot resolve it either
+    return (base / uri.removeprefix("file://")).is_file()

@@ -1,0 +1,108 @@
+"""A scene from any environment description: floor, environment, robot (arms parked), items.
+
+The environment's facts (:meth:`EnvironmentDescription.facts`) join the world's knowledge
+base as the fact group ``<name>_semantics``; each item is put on the top face of a link
+(a surface, or a drawer's floor) at ``xy`` in that link's frame, and its type's usual
+place is that link (group ``<name>_contents``) unless the description says otherwise.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+from robocram.robots import RobotDescription, load_description
+from robocram.scenes.environment_description import EnvironmentDescription
+from robocram.scenes.environment_model import loadable_urdf
+from robocram.scenes.errors import SceneError
+from robocram.scenes.parking import park_arms
+from robocram.tf import Pose, PoseLike, PoseStamped
+from robocram.world import World, WorldObject
+
+RESTING_GAP = 0.002  # [m] items are put this far above their support
+ORIGIN = Pose()
+
+
+@dataclass(frozen=True)
+class ItemPlace:
+    """An item ``name`` of catalogue ``kind`` at ``xy`` [m] in ``link``'s frame, on its top."""
+
+    name: str
+    kind: str
+    link: str
+    xy: tuple[float, float]
+
+
+@dataclass(frozen=True)
+class EnvironmentScene:
+    """The world, the robot's and the environment's object names, and the items by name."""
+
+    world: World
+    robot: str
+    environment: str
+    items: dict[str, WorldObject]
+
+    @property
+    def kitchen(self) -> str:
+        """The environment's object name (the kitchen scene's name for it)."""
+        return self.environment
+
+    @property
+    def look_target(self) -> PoseStamped:
+        """Where the first item is now: what a plan that starts by looking looks at."""
+        first = next(iter(self.items.values()))
+        return PoseStamped("map", self.world.pose(first).position)
+
+
+def environment_scene(
+    environment: EnvironmentDescription,
+    robot: str | RobotDescription,
+    items: Iterable[ItemPlace] = (),
+    robot_pose: PoseLike = ORIGIN,
+    world: World | None = None,
+) -> EnvironmentScene:
+    """Floor, ``environment`` at the origin, ``robot`` at ``robot_pose`` with parked arms, items.
+
+    Raises:
+        SceneError: an item's link has no surface under its spot.
+    """
+    desc = load_description(robot)
+    world = world if world is not None else World()
+    world.add_floor()
+    name = environment.name
+    world.add_urdf(name, loadable_urdf(environment.urdf), type="environment")
+    world.kb.consult(environment.facts(name), group=f"{name}_semantics")
+    robot_name = world.add_robot(desc, pose=Pose.coerce(robot_pose)).name
+    park_arms(world, robot_name)
+    placed = list(items)
+    objects = {p.name: place_item(world, name, p) for p in placed}
+    known = {kind for kind, _ in environment.usual_locations}
+    usual = sorted(
+        {f"usual_location({p.kind}, {name}, {p.link})." for p in placed if p.kind not in known}
+    )
+    if usual:
+        world.kb.consult("\n".join(usual), group=f"{name}_contents")
+    return EnvironmentScene(world, robot_name, name, objects)
+
+
+def place_item(world: World, environment: str, place: ItemPlace) -> WorldObject:
+    """Put the item on the top face of ``place.link`` (its floor, for a drawer)."""
+    spot = world.link_pose(environment, place.link) * Pose((*place.xy, 0.0))
+    top = support_top(world, environment, place.link, spot)
+    item = world.add_item(place.name, place.kind, Pose((0.0, 0.0, 100.0)))
+    below_origin = 100.0 - world.aabb(item)[0][2]  # [m] from the item's origin down
+    x, y, _ = spot.position
+    world.set_pose(item, Pose((x, y, top + below_origin + RESTING_GAP)))
+    return item
+
+
+def support_top(world: World, environment: str, link: str, spot: Pose) -> float:
+    """Height [m] of the first surface of ``link`` below ``spot`` (a ray cast down)."""
+    x, y, _ = spot.position
+    _, high = world.link_aabb(environment, link)
+    hit = world.ray_cast((x, y, high[2] + 0.01), (x, y, high[2] - 1.0))
+    if hit is None or hit.link != link:
+        raise SceneError(
+            f"no surface of {link!r} under ({x:.2f}, {y:.2f}) m; put the item elsewhere on it"
+        )
+    return float(hit.position[2])
