@@ -120,7 +120,7 @@ class ArmPM(RosProcessModule):
         return {j: joints[j] for j in values}
 
     def _move(
-        self, resource: str, goal: dict[str, float], arm: str, target: Any, mode: str
+        self, resource: str, goal: dict[str, float], arm: str, target: object, mode: str
     ) -> None:
         """Plan the timed motion (in the world, if any) and send it; a blocked path raises
         ``ManipulationPathBlocked`` naming the arm and target before anything is sent."""
@@ -132,5 +132,5 @@ class ArmPM(RosProcessModule):
             raise
 
     @staticmethod
-    def _failure(arm: str, target: Any) -> FailureFactory:
+    def _failure(arm: str, target: object) -> FailureFactory:
         return lambda text: ManipulationGoalNotReached(text, arm=arm, target=target)

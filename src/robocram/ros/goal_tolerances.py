@@ -15,7 +15,6 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass, field
-from typing import Any
 
 from robocram.logic import KnowledgeBase, UnknownPredicateError
 from robocram.robots import RobotDescription
@@ -54,7 +53,7 @@ class GoalTolerances:
         }
 
 
-def _answers(kb: KnowledgeBase, goal: str, robot: str) -> list[dict[str, Any]]:
+def _answers(kb: KnowledgeBase, goal: str, robot: str) -> list[dict[str, object]]:
     try:
         return list(kb.query(goal, R=robot))
     except UnknownPredicateError:

@@ -101,7 +101,7 @@ class ProjectionDriver:
             target=self._execute, args=(server, action_type, handler, goal), daemon=True
         ).start()
 
-    def _record(self, server: str, action_type: str, goal: Any) -> None:
+    def _record(self, server: str, action_type: str, goal: object) -> None:
         """Append the goal to the goal log, if there is one."""
         if self.goal_log is None:
             return
