@@ -16,14 +16,12 @@ from pathlib import Path
 
 import numpy as np
 
-from robocram.designators import a
-from robocram.execution import perform
+from robocram.designators import a, an
 from robocram.motion import JointTrajectory, trajectory_listener
-from robocram.plans.basic_actions import move_torso, navigate, park_arms
+from robocram.plans import install_actions, perform
 from robocram.projection import simulated_robot
 from robocram.scenes import kitchen_scene
 from robocram.tf import Pose, PoseStamped
-from robocram.tf import quaternion as quat
 from robocram.world import World
 
 SHELF = ((0.12, 0.12, 0.36), (-0.97, 2.02, 1.04))  # size, centre [m]
@@ -36,7 +34,16 @@ def looking(eye: tuple[float, float, float], target: tuple[float, float, float])
     down = -(np.array([0.0, 0.0, 1.0]) - z[2] * z)
     y = down / np.linalg.norm(down)
     x = np.cross(y, z)
-    return Pose(eye, quat.from_matrix(np.column_stack([x, y, z])))
+    return Pose(eye, _quaternion(np.column_stack([x, y, z])))
+
+
+def _quaternion(m: np.ndarray) -> tuple[float, float, float, float]:
+    """The unit quaternion (x, y, z, w) of a rotation matrix (its trace is > -1 here)."""
+    w = math.sqrt(max(0.0, 1.0 + m[0, 0] + m[1, 1] + m[2, 2])) / 2.0
+    if w < 1e-6:
+        raise ValueError("a camera turned half round about an axis; look from elsewhere")
+    return ((m[2, 1] - m[1, 2]) / (4 * w), (m[0, 2] - m[2, 0]) / (4 * w),
+            (m[1, 0] - m[0, 1]) / (4 * w), w)  # fmt: skip
 
 
 def _tool_positions(world: World, trajectory: JointTrajectory, frame: str, count: int) -> list:
@@ -56,10 +63,13 @@ def draw(path: Path) -> Path:
     world = scene.world
     x = world.pose("mug-1").position[0]
     executed: list[JointTrajectory] = []
+    install_actions(world.kb)
+    north = (0.0, 0.0, math.sin(math.pi / 4), math.cos(math.pi / 4))  # facing +y
+    stand = PoseStamped("map", (x, 1.43, 0.0), north)
     with simulated_robot(world, "pr2"):
-        park_arms()
-        move_torso("upper")
-        navigate(PoseStamped("map", (x, 1.43, 0.0), quat.from_euler(0.0, 0.0, math.pi / 2)))
+        perform(an.action(type="parking-arms"))
+        perform(an.action(type="moving-torso", joint_angle="upper"))
+        perform(an.action(type="navigating", target=stand))
         grasp = world.kb.first("object_grasp(O, R, A, N, G, P, L)", O="mug-1", R="pr2", A="right")
         world.add_box("shelf", *SHELF, color=(0.55, 0.35, 0.2, 1.0))
         with trajectory_listener(executed.append):

@@ -47,7 +47,7 @@ def _right_arm(values: dict[str, float]) -> dict[str, float]:
         "r_shoulder_pan_joint", "r_shoulder_lift_joint", "r_upper_arm_roll_joint",
         "r_elbow_flex_joint", "r_forearm_roll_joint", "r_wrist_flex_joint", "r_wrist_roll_joint",
     ]  # fmt: skip
-    return {j: values.get(j, 0.0) for j in joints}  # the scene starts with all at 0
+    return {j: values.get(j, 0.0) for j in joints}  # the others at 0: stretched forward
 
 
 def _assert_same(received: dict[str, Any], sent: JointTrajectory) -> None:
@@ -85,10 +85,12 @@ def test_a_path_round_a_shelf_is_sent_whole_timed_with_goal_tolerances(
         ros_robot("pr2", roscore.uri, world=_world_with_shelf()) as run,
         trajectory_listener(sent.append),
     ):
+        stretched = _right_arm({})  # the scene parks the arms: stretch the right one first
+        perform(a.motion(type="moving-arm-joints", arm="right", configuration=stretched))
         perform(a.motion(type="moving-arm-joints", arm="right", configuration=_right_arm(SWEEP)))
         reached = run.environment.client.joint_states()
-    (goal,) = driver.received_goals(RIGHT_ARM)
-    (trajectory,) = sent
+    _, goal = driver.received_goals(RIGHT_ARM)
+    _, trajectory = sent
     _assert_same(goal, trajectory)
     assert len(trajectory.points) > 2
     assert _off_straight(trajectory) > BENT  # round the shelf, not through it

@@ -33,6 +33,8 @@ from robocram.robots import LoadedDescription
 from robocram.tf import Pose
 from robocram.world import World
 
+SNAPSHOT_MARGINS = (0.0, 0.015)  # [m] planning again with a margin when the world disagrees
+
 
 @dataclass(frozen=True)
 class ArmMotion:
@@ -121,15 +123,22 @@ def _checked_path(
             raise
     links = set(world.link_names(robot))
     start_links = {link for link, _ in scene.allowed_pairs if link in links}
-    snapshot = CollisionScene.of(
-        world, robot, joints, allowed_links=scene.allowed_links | start_links
-    )
-    snapshot.allow_own_contacts_at(end)  # the goal passed the finer check on the meshes
-    path = plan_joint_path(
-        snapshot, start, end, bound, box, seed=settings.seed, budget=settings.budget, what=what
-    )
-    _confirm(scene, path, bound, what)
-    return path
+    failures: list[ManipulationPathBlocked] = []
+    for margin in SNAPSHOT_MARGINS:  # the snapshot's hulls and Bullet's can differ by mm
+        snapshot = CollisionScene.of(
+            world, robot, joints, allowed_links=scene.allowed_links | start_links, margin=margin
+        )
+        snapshot.allow_own_contacts_at(end)  # the goal passed the finer check on the meshes
+        try:
+            path = plan_joint_path(
+                snapshot, start, end, bound, box, seed=settings.seed, budget=settings.budget,
+                what=what,
+            )  # fmt: skip
+            _confirm(scene, path, bound, what)
+            return path
+        except ManipulationPathBlocked as failure:
+            failures.append(failure)
+    raise failures[0]  # the plan without a margin says best what is in the way
 
 
 def _confirm(scene: BulletScene, path: JointPath, bound: TravelBound, what: str) -> None:
