@@ -55,6 +55,11 @@ class BulletScene:
         self._posed = False
 
     @property
+    def reach(self) -> float:
+        """How far [m] clearance queries look (:data:`CLEARANCE_REACH`)."""
+        return CLEARANCE_REACH
+
+    @property
     def joints(self) -> tuple[str, ...]:
         """The joints a configuration gives values for, in order."""
         return self._joints
@@ -104,23 +109,35 @@ class BulletScene:
             self.world.set_joint_states(self.robot, values)
             return self._clearance_now(reach)
 
+    def clearances(self, q: Configuration, reach: float = CLEARANCE_REACH) -> dict[str, float]:
+        """Per moving link (or held object) nearer than ``reach`` [m] to something it may
+        not touch, at ``q``: that distance [m] (0 or less: touching). Links not named are
+        clear by ``reach`` at least."""
+        values = dict(zip(self._joints, (float(v) for v in q), strict=True))
+        with self.posed():
+            self.world.set_joint_states(self.robot, values)
+            return self._clearances_now(reach)
+
     def _clearance_now(self, reach: float) -> float:
+        return min(self._clearances_now(reach).values(), default=reach)
+
+    def _clearances_now(self, reach: float) -> dict[str, float]:
         world = self.world
         held = [world.object(name) for name in world.attachments(self.robot)]
         anywhere = self._anywhere()
-        nearest = reach
+        gaps: dict[str, float] = {}
         links = [link for link in self.moving_links if link not in self.allowed_links]
         for link, obj, other_link, gap in world.link_distances(
             self.robot, [*held, *anywhere], reach, links=links
         ):
             if self._counts(link, obj, other_link):
-                nearest = min(nearest, gap - self.distance)
+                gaps[link] = min(gaps.get(link, reach), gap - self.distance)
         for item in held:
             skip = [world.robot(self.robot), *(h for h in held if h is not item), *anywhere]
             for _, obj, other_link, gap in world.link_distances(item, skip, reach):
                 if (item.name, _named(world, obj, other_link)) not in self.allowed_pairs:
-                    nearest = min(nearest, gap - self.distance)
-        return nearest
+                    gaps[item.name] = min(gaps.get(item.name, reach), gap - self.distance)
+        return gaps
 
     def _counts(self, link: str, obj: WorldObject, other_link: str) -> bool:
         """Whether robot ``link`` touching ``obj`` is a collision (rules, start contacts)."""

@@ -40,8 +40,18 @@ class ConfigurationChecker(Protocol):
 class ClearanceChecker(ConfigurationChecker, Protocol):
     """A checker that also tells how far a configuration is from touching anything."""
 
+    @property
+    def reach(self) -> float:
+        """How far [m] its clearance queries look: farther is reported as this."""
+        ...
+
     def clearance(self, q: Configuration) -> float:
         """The distance [m] from the moving links to what they may not touch (<= 0: touch)."""
+        ...
+
+    def clearances(self, q: Configuration) -> dict[str, float]:
+        """Per moving link (or held object) near something: that distance [m]; the links
+        not named are clear by the checker's reach."""
         ...
 
 

@@ -56,14 +56,21 @@ def _advance_free(
     if travel <= 0.0:
         return True
     floor = bound.max_link_travel / travel
+    by_link = {}  # [m] per link: the most a point of it moves from qa to qb
     s = 0.0
     while True:
         q = qa + (qb - qa) * s
-        gap = checker.clearance(q)
+        gaps = checker.clearances(q)
         counter.checks += 1
-        if gap <= 0.0 and not checker.is_free(q):  # the contact check decides, as everywhere
-            return False
-        s += max(gap / travel, floor)
+        if min(gaps.values(), default=1.0) <= 0.0 and not checker.is_free(q):
+            return False  # the contact check decides, as everywhere
+        step = checker.reach / travel  # links not named are clear by the reach
+        for link, gap in gaps.items():
+            if link not in by_link:
+                by_link[link] = bound.link_travel(link, qa, qb)
+            if by_link[link] > 0.0:
+                step = min(step, gap / by_link[link])
+        s += max(step, floor)
         if s >= 1.0:
             return True
 

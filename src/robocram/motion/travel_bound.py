@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -34,6 +34,14 @@ class TravelBound:
     lever: FloatArray  # [m/rad] (1 for prismatic joints)
     max_link_travel: float = MAX_LINK_TRAVEL
     max_joint_step: float = MAX_JOINT_STEP
+    link_lever: dict[str, FloatArray] = field(default_factory=dict)  # per moving link
+    carriers: dict[str, str] = field(default_factory=dict)  # held object -> its link
+
+    def link_travel(self, link: str, qa: FloatArray, qb: FloatArray) -> float:
+        """The most [m] a point of ``link`` (or of a held object) travels from qa to qb."""
+        lever = self.link_lever.get(self.carriers.get(link, link), self.lever)
+        dq = np.abs(np.asarray(qb, dtype=float) - np.asarray(qa, dtype=float))
+        return float(lever @ dq)
 
     def travel(self, qa: FloatArray, qb: FloatArray) -> float:
         """The most [m] any point of the moving links can travel from ``qa`` to ``qb``."""
@@ -71,28 +79,35 @@ class TravelBound:
             offset = float(np.linalg.norm(each.origin.position))
             children.setdefault(each.parent, []).append((each.child, offset))
         lever = []
-        for name in joints:
+        per_link: dict[str, FloatArray] = {}
+        for i, name in enumerate(joints):
             joint = model.joints.get(name)
             if joint is None or not joint.movable:
                 raise MotionError(f"{name!r} is not a movable joint of {robot}")
+            reach = _reaches(joint.child, 0.0, children, radius)
             if joint.type == "prismatic":
-                lever.append(1.0)
-                continue
-            lever.append(_reach_below(joint.child, 0.0, children, radius))
-        return cls(tuple(joints), np.array(lever), max_link_travel, max_joint_step)
+                reach = {link: 1.0 for link in reach}
+            for link, value in reach.items():
+                per_link.setdefault(link, np.zeros(len(joints)))[i] = value
+            lever.append(max(reach.values(), default=0.0))
+        carriers = dict(world.attachments(robot))
+        return cls(
+            tuple(joints), np.array(lever), max_link_travel, max_joint_step, per_link, carriers
+        )
 
 
-def _reach_below(
+def _reaches(
     link: str,
     so_far: float,
     children: dict[str, list[tuple[str, float]]],
     radius: dict[str, float],
-) -> float:
-    """The largest distance from the joint above ``link`` to any point at or below it."""
-    best = so_far + radius.get(link, 0.0)
+) -> dict[str, float]:
+    """Per link at or below ``link``: the largest distance from the joint above ``link``
+    to a point of it (the rigid lengths between, plus its radius)."""
+    found = {link: so_far + radius.get(link, 0.0)}
     for child, offset in children.get(link, ()):
-        best = max(best, _reach_below(child, so_far + offset, children, radius))
-    return best
+        found.update(_reaches(child, so_far + offset, children, radius))
+    return found
 
 
 def _link_radii(world: World, robot: str) -> dict[str, float]:
