@@ -94,7 +94,7 @@ class JointTrajectory:
         """``(t, {joint: position})`` every ``period`` [s], the last point included."""
         if period <= 0.0:
             raise ValueError(f"sampling period must be positive, got {period} s")
-        steps = max(1, int(np.ceil(self.duration / period)))
+        steps = int(np.ceil(self.duration / period))  # a motion of no time: one sample
         for k in range(steps + 1):
             t = min(k * period, self.duration)
             yield t, dict(zip(self.joint_names, self.at(t).tolist(), strict=True))

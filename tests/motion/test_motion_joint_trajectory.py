@@ -1,0 +1,51 @@
+"""The trajectory value: its checks, its sampling, its ROS message and its pickling."""
+
+from __future__ import annotations
+
+import pickle
+
+import pytest
+
+from robocram.motion import JointTrajectory, TrajectoryPoint, still
+
+
+def _two_points() -> JointTrajectory:
+    a = TrajectoryPoint((0.0, 1.0), (0.0, 0.0), (0.0, 0.0), 0.0)
+    b = TrajectoryPoint((1.0, 3.0), (0.0, 0.0), (0.0, 0.0), 2.0)
+    return JointTrajectory("pr2", ("j1", "j2"), (a, b))
+
+
+def test_positions_between_points_are_linear_and_clamped_at_the_ends() -> None:
+    trajectory = _two_points()
+    assert trajectory.at(0.5).tolist() == pytest.approx([0.25, 1.5])
+    assert trajectory.at(-1.0).tolist() == [0.0, 1.0]
+    assert trajectory.at(9.0).tolist() == [1.0, 3.0]
+    assert trajectory.start == {"j1": 0.0, "j2": 1.0} and trajectory.end == {"j1": 1.0, "j2": 3.0}
+
+
+def test_sampling_covers_the_motion_and_a_still_one_is_one_sample() -> None:
+    samples = list(_two_points().sampled(0.5))
+    assert [t for t, _ in samples] == pytest.approx([0.0, 0.5, 1.0, 1.5, 2.0])
+    assert samples[-1][1] == {"j1": 1.0, "j2": 3.0}
+    assert len(list(still("pr2", ("j1",), (0.3,)).sampled(0.05))) == 1
+    with pytest.raises(ValueError, match="period"):
+        list(_two_points().sampled(0.0))
+
+
+def test_times_must_increase_and_widths_match() -> None:
+    a = TrajectoryPoint((0.0,), (0.0,), (0.0,), 1.0)
+    with pytest.raises(ValueError, match="not after"):
+        JointTrajectory("pr2", ("j1",), (a, a))
+    with pytest.raises(ValueError, match="1 positions for 2 joints"):
+        JointTrajectory("pr2", ("j1", "j2"), (a,))
+
+
+def test_the_ros_message_carries_every_point_to_the_nanosecond_and_it_pickles() -> None:
+    trajectory = _two_points()
+    message = trajectory.to_ros()
+    assert message["joint_names"] == ["j1", "j2"]
+    points = message["points"]
+    assert isinstance(points, list) and len(points) == 2
+    assert points[1]["time_from_start"] == {"secs": 2, "nsecs": 0}
+    assert points[1]["positions"] == [1.0, 3.0]
+    assert pickle.loads(pickle.dumps(trajectory)) == trajectory
