@@ -20,13 +20,25 @@ import pytest
 from PIL import Image
 
 from robocram.designators import a
-from robocram.execution import perform
+from robocram.execution import Task, TaskStopped, perform
 from robocram.execution.failures import ManipulationPathBlocked
-from robocram.motion import JointTrajectory, MotionSettings, trajectory_listener
+from robocram.execution.task_context import binding_task
+from robocram.kinematics import solve_ik
+from robocram.motion import (
+    CollisionScene,
+    JointTrajectory,
+    MotionSettings,
+    joint_limits,
+    trajectory_listener,
+)
 from robocram.motion.bullet_scene import BulletScene
+from robocram.motion.joint_path import planning_box
+from robocram.motion.rrt_connect import rrt_connect
+from robocram.motion.segment_check import CheckCounter
 from robocram.motion.travel_bound import TravelBound
 from robocram.plans.basic_actions import move_torso, navigate, park_arms
-from robocram.projection import simulated_robot
+from robocram.projection import ProjectedRobot, simulated_robot
+from robocram.projection.collision_mode import collision_check
 from robocram.scenes import KitchenScene, kitchen_scene
 from robocram.tf import PoseStamped
 from robocram.tf import quaternion as quat
@@ -138,3 +150,33 @@ def test_the_example_draws_both_paths(tmp_path: Path) -> None:
     straight = (red > 180) & (green < 60) & (blue < 60)
     assert image.shape == (600, 800, 3)
     assert planned.sum() > 200 and straight.sum() > 100  # both paths drawn
+
+
+def test_a_stopped_task_ends_the_planner_at_once_and_nothing_moves(scene: KitchenScene) -> None:
+    target = _stand(scene)
+    world = scene.world
+    world.add_box("shelf", SHELF_SIZE, SHELF_CENTRE)
+    robot = ProjectedRobot.of(world, "pr2")
+    current = world.joint_states("pr2")
+    check = collision_check(robot, "right", "avoid_all")
+    goal = solve_ik(robot.description, "right", robot.in_base(target), seed=current,
+                    collision_check=check)  # fmt: skip
+    joints = robot.description.arms["right"].joints
+    start, end = [current[j] for j in joints], [goal.joint_positions[j] for j in joints]
+    limits = joint_limits(robot.description, joints)
+    box = planning_box(
+        np.array(start), np.array(end),
+        ([lim.lower for lim in limits], [lim.upper for lim in limits]),
+    )  # fmt: skip
+    bound = TravelBound.of(world, "pr2", joints)
+    snapshot = CollisionScene.of(world, "pr2", joints)
+    counter = CheckCounter()
+    task = Task("stopped-while-planning")
+    task.stop()
+    with binding_task(task), pytest.raises(TaskStopped):
+        rrt_connect(snapshot, np.array(start), np.array(end), *box, bound, counter, 20_000, 0)
+    assert counter.checks < 50  # OMPL asked once or twice, not its whole budget
+    assert world.joint_states("pr2") == current
+    # and the same query, not stopped, plans: the stop was what ended it
+    assert rrt_connect(snapshot, np.array(start), np.array(end), *box, bound, CheckCounter(),
+                       20_000, 0) is not None  # fmt: skip

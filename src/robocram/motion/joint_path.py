@@ -73,7 +73,7 @@ def plan_joint_path(
     if segment_free(checker, a, b, bound, counter):
         return JointPath(joints, (tuple(a), tuple(b)), "straight", counter.checks)
     if plan:
-        lower, upper = _box(a, b, limits)
+        lower, upper = planning_box(a, b, limits)
         coarse = replace(
             bound,
             max_link_travel=COARSE * bound.max_link_travel,
@@ -136,7 +136,7 @@ def shortcut(
     return path
 
 
-def _box(
+def planning_box(
     a: FloatArray, b: FloatArray, limits: tuple[Sequence[float], Sequence[float]]
 ) -> tuple[list[float], list[float]]:
     """The planning space: the joint limits, continuous joints within a turn of the ends."""

@@ -15,6 +15,7 @@ from ompl import base as ob
 from ompl import geometric as og
 
 from robocram.motion.configuration_checker import ConfigurationChecker
+from robocram.motion.errors import MotionError
 from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.ompl_query import POLLS_PER_CHECK, OmplQuery
 from robocram.motion.segment_check import CheckCounter, segment_free
@@ -63,6 +64,12 @@ def rrt_connect(
     """Waypoints from ``start`` to ``goal`` within the box ``lower``..``upper``, or None
     when ``budget`` configuration checks found none."""
     width = len(start)
+    for i in range(width):
+        if not (np.isfinite(lower[i]) and np.isfinite(upper[i]) and lower[i] < upper[i]):
+            raise MotionError(
+                f"planning bounds of joint {i} are [{lower[i]}, {upper[i]}]: they must be "
+                "finite and increasing (joint_path.planning_box gives continuous joints a turn)"
+            )
     space = ob.RealVectorStateSpace(width)
     bounds = ob.RealVectorBounds(width)
     for i in range(width):
