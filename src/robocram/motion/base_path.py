@@ -27,6 +27,8 @@ from robocram.world import World
 
 DEFAULT_BUDGET = 20_000  # fast checks OMPL may spend planning (a quarter more for shortening)
 DEFAULT_TURNING_RADIUS = 0.5  # [m] of a base that is not holonomic
+COARSE = 5  # a holonomic base's tree edges are checked at every 5th pose while planning
+PLANNING_ATTEMPTS = 3  # seeds tried when the dense check refuses a coarsely planned path
 
 
 @dataclass(frozen=True)
@@ -102,9 +104,7 @@ def plan_base_path(
             waypoints = list(direct) if car else [start, end]
             planner = "reeds_shepp" if car else "straight"
         else:
-            found = planned_waypoints(
-                checker, start, end, turning_radius=radius, seed=seed, budget=budget
-            )
+            found = _planned(checker, start, end, radius, seed, budget)
             if found is None:
                 names = checker.blockers(direct[blocked])
                 fraction = blocked / max(len(direct) - 1, 1)
@@ -117,7 +117,6 @@ def plan_base_path(
                 )
             waypoints = found
             planner = "RRTConnect/ReedsShepp" if car else "RRTConnect"
-            _recheck(checker, waypoints)
         poses = tuple((float(p[0]), float(p[1]), float(p[2])) for p in waypoints)
         desc = world.robot(robot).description
         trajectory = time_parameterize(
@@ -129,14 +128,34 @@ def plan_base_path(
         )
 
 
-def _recheck(checker: BaseCollisionChecker, waypoints: list[np.ndarray]) -> None:
-    """Check the planned path once more, densely and straight between its waypoints."""
-    for a, b in zip(waypoints[:-1], waypoints[1:], strict=True):
-        if checker.first_blocked(motion_poses(checker, a, b, None)) is not None:
-            raise MotionError(
-                f"the planned base path collides between {a.round(3)} and {b.round(3)}; "
-                "this is a bug of the base planner, please report it with the seed"
-            )
+def _planned(
+    checker: BaseCollisionChecker,
+    start: np.ndarray,
+    end: np.ndarray,
+    radius: float | None,
+    seed: int,
+    budget: int,
+) -> list[np.ndarray] | None:
+    """A planned path that passes the dense check, or None. A holonomic base's tree edges
+    are checked :data:`COARSE` times coarser while planning, then the path densely, with
+    the next seed if that fails (a car's curves are checked densely from the start)."""
+    coarse = 1 if radius is not None else COARSE
+    for attempt in range(PLANNING_ATTEMPTS):
+        found = planned_waypoints(
+            checker, start, end, turning_radius=radius, seed=seed + attempt, budget=budget,
+            coarse=coarse,
+        )  # fmt: skip
+        if found is None or coarse == 1 or _dense_free(checker, found):
+            return found
+    return None
+
+
+def _dense_free(checker: BaseCollisionChecker, waypoints: list[np.ndarray]) -> bool:
+    """Whether the path is free, densely and straight between its waypoints."""
+    return all(
+        checker.first_blocked(motion_poses(checker, a, b, None)) is None
+        for a, b in zip(waypoints[:-1], waypoints[1:], strict=True)
+    )
 
 
 def _wrap(angle: float) -> float:

@@ -58,10 +58,13 @@ def planned_waypoints(
     turning_radius: float | None,
     seed: int,
     budget: int,
+    coarse: int = 1,
 ) -> list[FloatArray] | None:
     """Waypoints of a free path (None within ``budget`` fast checks); straight between them.
 
     For a car (``turning_radius`` given) the waypoints are the dense poses along its curves.
+    ``coarse``: tree edges are checked at every ``coarse``-th dense pose (and the last), so
+    the caller checks the answer densely again.
     """
     if turning_radius is None:
         space: ob.StateSpace = ob.SE2StateSpace()
@@ -78,6 +81,8 @@ def planned_waypoints(
 
     def free(s1: object, s2: object) -> bool:
         poses = motion_poses(checker, _pose(s1), _pose(s2), turning_radius, space)
+        if coarse > 1:
+            poses = np.concatenate([poses[::coarse], poses[-1:]])
         return checker.first_blocked(poses) is None
 
     validator = _DenseMotions(info, free)
