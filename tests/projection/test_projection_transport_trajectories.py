@@ -88,3 +88,21 @@ def test_going_past_an_open_drawer_goes_round_it_or_names_it(
         assert world.pose("pr2").position[:2] == pytest.approx((x + 1.0, 1.05), abs=1e-6)
         assert ("base", 0) not in judge.judged and any(k == "base" for k, _ in judge.judged)
     world.close()
+
+
+def test_the_pr2_takes_the_bowl_out_of_the_drawer_along_free_paths(
+    make_judge: Callable[..., Any],
+) -> None:
+    scene = kitchen_scene("pr2")
+    world = scene.world
+    judge = make_judge(world, "pr2")
+    with trajectory_listener(judge), simulated_robot(world, "pr2"):
+        result = transport("bowl", a.location(on=TABLE, for_="bowl-1"))
+    assert result.object_name == "bowl-1" and result.opened  # it came out of a drawer
+    assert sum(n for _, n in judge.judged) > 100
+    low, _ = world.aabb("bowl-1")
+    assert low[2] == pytest.approx(world.link_aabb("kitchen", "table_top")[1][2], abs=0.01)
+    assert world.joint_states("kitchen")["drawer_unit_drawer_3_joint"] == pytest.approx(
+        0.0, abs=0.01
+    )  # closed again
+    world.close()
