@@ -32,9 +32,15 @@ class CollisionScene:
     """A snapshot of the world around one robot, for fast checks of configurations of some
     of its joints (:attr:`joints`, in that order); the base stays where it stands."""
 
-    def __init__(self, snapshot: SceneSnapshot, geometry: SceneGeometry | None = None) -> None:
+    def __init__(
+        self,
+        snapshot: SceneSnapshot,
+        geometry: SceneGeometry | None = None,
+        dropped: Collection[int] = (),
+    ) -> None:
         self.snapshot = snapshot
         self.joints: tuple[str, ...] = snapshot.joints
+        self._dropped: set[int] = set(dropped)  # pairs left out (touching at q0 or a goal)
         if geometry is None:
             geometry = build_geometry(snapshot)
             self._geometry = geometry
@@ -76,6 +82,8 @@ class CollisionScene:
         for request in self._geometry_data.collisionRequests:
             request.security_margin = self.snapshot.margin
             request.enable_contact = False  # a yes/no answer: GJK only, no EPA
+        for k in self._dropped:
+            self._geometry_data.deactivateCollisionPair(k)
         moving, fixed = geo.sides()
         self._moving = _Manager(model, moving, self._geometry_data)
         self._fixed = _Manager(model, fixed, self._geometry_data)
@@ -105,15 +113,9 @@ class CollisionScene:
             k for k in self._pairs_at(full)
             if kinds[geo.geometry.collisionPairs[k].second] != "static"
         }  # fmt: skip
-        if not drop:
-            return
-        pairs = [p for k, p in enumerate(geo.geometry.collisionPairs) if k not in drop]
-        geo.pair_labels = [lab for k, lab in enumerate(geo.pair_labels) if k not in drop]
-        geo.geometry.removeAllCollisionPairs()
-        for pair in pairs:
-            geo.geometry.addCollisionPair(pin.CollisionPair(pair.first, pair.second))
-        geo.forget_sides()
-        self._new_data()
+        for k in drop:  # switched off in this scene's data: no rebuild of models or trees
+            self._geometry_data.deactivateCollisionPair(k)
+        self._dropped |= drop
 
     def _place(self, full: NDArray[np.float64]) -> None:
         geo = self._geometry
@@ -125,7 +127,7 @@ class CollisionScene:
     @property
     def pair_count(self) -> int:
         """How many geometry pairs a full check may test (after culling and rules)."""
-        return len(self._geometry.pair_labels)
+        return len(self._geometry.pair_labels) - len(self._dropped)
 
     @property
     def geometry_count(self) -> int:
@@ -169,7 +171,7 @@ class CollisionScene:
         candidates.update(int(k) for k in collect.pair_indexes)
         geo = self._geometry
         hits = []
-        for k in sorted(candidates):
+        for k in sorted(candidates - self._dropped):
             if pin.computeCollision(geo.geometry, self._geometry_data, k):
                 hits.append(k)
                 if first_only:
@@ -178,7 +180,7 @@ class CollisionScene:
 
     def copy(self) -> CollisionScene:
         """A scene sharing this one's models with its own data, for another thread."""
-        return CollisionScene(self.snapshot, self._geometry)
+        return CollisionScene(self.snapshot, self._geometry, self._dropped)
 
     def __reduce__(self) -> tuple[type[CollisionScene], tuple[SceneSnapshot]]:
         return (CollisionScene, (self.snapshot,))

@@ -174,21 +174,41 @@ def _add_pairs(
     roots = [model.joints[arm.joints[0]].child for arm in snap.description.arms.values()]
     adjacent = adjacent_pairs(model, with_geometry) | same_arm_chains(model, roots)
     labels: list[tuple[str, str]] = []
+    near = _sphere_overlaps(spheres)
+    decided: dict[tuple[object, ...], bool] = {}  # geometries of one link share the answer
     for i, a in enumerate(owners):
         if a.kind == "static" or not group[a.link]:
             continue  # pairs are made from the moving side
-        sphere = spheres[i]
         for j, b in enumerate(owners):
-            if i == j or not _checked(a, b, group, adjacent, rules):
+            if i == j:
+                continue
+            key = (a.kind, a.link, a.other, b.kind, b.link, b.other)
+            checked = decided.get(key)
+            if checked is None:
+                checked = decided[key] = _checked(a, b, group, adjacent, rules)
+            if not checked:
                 continue
             if j < i and b.kind != "static" and group[b.link]:
                 continue  # two moving geometries: the pair was made from b's side
-            bound = spheres[j]
-            if b.kind == "static" and sphere and bound and not sphere.overlaps(bound):
+            if b.kind == "static" and not near[i, j]:
                 continue
             geometry.addCollisionPair(pin.CollisionPair(i, j))
             labels.append((a.label, b.label))
     return labels
+
+
+def _sphere_overlaps(spheres: list[Sphere | None]) -> np.ndarray:
+    """Whether the reach spheres of geometries i and j meet (True where either has none)."""
+    n = len(spheres)
+    centres = np.zeros((n, 3))
+    radii = np.full(n, np.inf)
+    for k, sphere in enumerate(spheres):
+        if sphere is not None:
+            centres[k] = sphere.centre
+            radii[k] = sphere.radius
+    gaps = np.linalg.norm(centres[:, None, :] - centres[None, :, :], axis=2)
+    with np.errstate(invalid="ignore"):
+        return ~(gaps > radii[:, None] + radii[None, :])
 
 
 def _checked(
