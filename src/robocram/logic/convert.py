@@ -30,19 +30,34 @@ NONE = _NoneBox()
 def to_prolog(value: Any) -> Any:
     """Convert a Python value to an engine term.
 
+    Values nested deeper than Python's stack allows are converted by `_to_prolog_deep`;
+    a list that contains itself raises `PrologResourceError` (no finite term stands for it).
+
     >>> to_prolog([1, "a"])
     [1,a]
     """
+    try:
+        return _to_prolog(value)
+    except RecursionError:
+        return _to_prolog_deep(value)
+
+
+def _to_prolog(value: Any) -> Any:
     t = type(value)
     if t is str or t is int or t is float or t is Var or t is PString:
         return value
     if t is list:
         result: Any = NIL
         for item in reversed(value):
-            result = new_term(Term, (".", (to_prolog(item), result)))
+            result = new_term(Term, (".", (_to_prolog(item), result)))
         return result
     if t is Term:
-        return new_term(Term, (value[0], tuple([to_prolog(a) for a in value[1]])))
+        return new_term(Term, (value[0], tuple([_to_prolog(a) for a in value[1]])))
+    return _to_prolog_leaf(value)
+
+
+def _to_prolog_leaf(value: Any) -> Any:
+    t = type(value)
     if t is bool:
         return "true" if value else "false"
     if value is None:
@@ -54,6 +69,47 @@ def to_prolog(value: Any) -> Any:
     if isinstance(value, float):
         return float(value)
     return value
+
+
+def _to_prolog_deep(value: Any) -> Any:
+    """`to_prolog` with an explicit stack, for a list or term of any depth."""
+    out: list[Any] = []
+    open_ids: set[int] = set()  # lists and terms being converted: seeing one again is a cycle
+    stack: list[tuple[bool, Any]] = [(False, value)]
+    while stack:
+        built, v = stack.pop()
+        t = type(v)
+        if built:
+            open_ids.discard(id(v))
+            items = v if t is list else v[1]
+            args = out[len(out) - len(items) :] if items else []
+            del out[len(out) - len(items) :]
+            out.append(_assembled_prolog(v, args))
+        elif t is list or t is Term:
+            if id(v) in open_ids:
+                from robocram.logic.errors import PrologResourceError  # errors imports us
+
+                raise PrologResourceError(
+                    "term_depth",
+                    "a Python list or Term passed into the query contains itself; "
+                    "no finite term stands for it: pass a copy without the cycle",
+                )
+            open_ids.add(id(v))
+            stack.append((True, v))
+            stack.extend((False, item) for item in reversed(v if t is list else v[1]))
+        else:
+            out.append(_to_prolog(v))
+    return out[0]
+
+
+def _assembled_prolog(value: Any, args: list[Any]) -> Any:
+    """The term of ``value`` (a list or Term) from its converted items ``args``."""
+    if type(value) is Term:
+        return new_term(Term, (value[0], tuple(args)))
+    result: Any = NIL
+    for item in reversed(args):
+        result = new_term(Term, (".", (item, result)))
+    return result
 
 
 def to_python(term: Any) -> Any:
