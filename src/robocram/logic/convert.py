@@ -7,7 +7,8 @@
 
 from __future__ import annotations
 
-from typing import Any
+from collections.abc import Sequence
+from typing import Any, cast
 
 from robocram.logic.terms import NIL, PString, Term, Var, new_term
 from robocram.logic.unify import is_acyclic
@@ -42,21 +43,21 @@ def to_prolog(value: Any) -> Any:
         return _to_prolog_deep(value)
 
 
-def _to_prolog(value: Any) -> Any:
+def _to_prolog(value: object) -> object:
     t = type(value)
     if t is str or t is int or t is float or t is Var or t is PString:
         return value
-    if t is list:
-        result: Any = NIL
+    if isinstance(value, list) and t is list:
+        result: object = NIL
         for item in reversed(value):
             result = new_term(Term, (".", (_to_prolog(item), result)))
         return result
-    if t is Term:
+    if isinstance(value, Term) and t is Term:
         return new_term(Term, (value[0], tuple([_to_prolog(a) for a in value[1]])))
     return _to_prolog_leaf(value)
 
 
-def _to_prolog_leaf(value: Any) -> Any:
+def _to_prolog_leaf(value: object) -> object:
     t = type(value)
     if t is bool:
         return "true" if value else "false"
@@ -71,21 +72,22 @@ def _to_prolog_leaf(value: Any) -> Any:
     return value
 
 
-def _to_prolog_deep(value: Any) -> Any:
+def _to_prolog_deep(value: object) -> object:
     """`to_prolog` with an explicit stack, for a list or term of any depth."""
-    out: list[Any] = []
+    out: list[object] = []
     open_ids: set[int] = set()  # lists and terms being converted: seeing one again is a cycle
-    stack: list[tuple[bool, Any]] = [(False, value)]
+    stack: list[tuple[bool, object]] = [(False, value)]
     while stack:
         built, v = stack.pop()
-        t = type(v)
-        if built:
+        items = _items(v)
+        if items is None:
+            out.append(_to_prolog(v))
+        elif built:
             open_ids.discard(id(v))
-            items = v if t is list else v[1]
             args = out[len(out) - len(items) :] if items else []
             del out[len(out) - len(items) :]
             out.append(_assembled_prolog(v, args))
-        elif t is list or t is Term:
+        else:
             if id(v) in open_ids:
                 from robocram.logic.errors import PrologResourceError  # errors imports us
 
@@ -96,17 +98,24 @@ def _to_prolog_deep(value: Any) -> Any:
                 )
             open_ids.add(id(v))
             stack.append((True, v))
-            stack.extend((False, item) for item in reversed(v if t is list else v[1]))
-        else:
-            out.append(_to_prolog(v))
+            stack.extend((False, item) for item in reversed(items))
     return out[0]
 
 
-def _assembled_prolog(value: Any, args: list[Any]) -> Any:
+def _items(value: object) -> Sequence[object] | None:
+    """The items of a list or the arguments of a Term; ``None`` for anything else."""
+    if type(value) is list:
+        return cast("list[object]", value)
+    if isinstance(value, Term) and type(value) is Term:
+        return cast("tuple[object, ...]", value[1])
+    return None
+
+
+def _assembled_prolog(value: object, args: list[object]) -> object:
     """The term of ``value`` (a list or Term) from its converted items ``args``."""
-    if type(value) is Term:
+    if isinstance(value, Term) and type(value) is Term:
         return new_term(Term, (value[0], tuple(args)))
-    result: Any = NIL
+    result: object = NIL
     for item in reversed(args):
         result = new_term(Term, (".", (item, result)))
     return result
