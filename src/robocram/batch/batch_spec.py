@@ -85,6 +85,14 @@ def _read(path: Path) -> object:
         text = path.read_text(encoding="utf-8")
     except OSError as err:
         raise BadSpec(path, "(file)", str(path), f"cannot read it ({err.strerror})") from err
+    except UnicodeDecodeError as err:
+        raise BadSpec(
+            path,
+            "(file)",
+            path.name,
+            f"not UTF-8 text (byte {err.object[err.start]:#04x} at offset {err.start}); "
+            "a spec is a YAML or JSON text file saved as UTF-8",
+        ) from err
     try:
         return json.loads(text) if path.suffix == ".json" else yaml.safe_load(text)
     except (json.JSONDecodeError, yaml.YAMLError) as err:
