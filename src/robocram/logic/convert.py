@@ -13,7 +13,17 @@ from typing import Any, cast
 from robocram.logic.terms import NIL, PString, Term, Var, new_term
 from robocram.logic.unify import is_acyclic
 
-__all__ = ["NONE", "to_prolog", "to_python"]
+__all__ = ["NONE", "SelfContainingValue", "to_prolog", "to_python"]
+
+
+class SelfContainingValue(ValueError):  # noqa: N818 - reads as what the value is
+    """A Python list or Term that contains itself: no finite term stands for it."""
+
+    def __init__(self) -> None:
+        super().__init__(
+            "a Python list or Term that contains itself; no finite term stands for it: "
+            "pass a copy without the cycle"
+        )
 
 
 class _NoneBox:
@@ -32,7 +42,7 @@ def to_prolog(value: Any) -> Any:
     """Convert a Python value to an engine term.
 
     Values nested deeper than Python's stack allows are converted by `_to_prolog_deep`;
-    a list that contains itself raises `PrologResourceError` (no finite term stands for it).
+    a list that contains itself raises `SelfContainingValue` (no finite term stands for it).
 
     >>> to_prolog([1, "a"])
     [1,a]
@@ -89,13 +99,7 @@ def _to_prolog_deep(value: object) -> object:
             out.append(_assembled_prolog(v, args))
         else:
             if id(v) in open_ids:
-                from robocram.logic.errors import PrologResourceError  # errors imports us
-
-                raise PrologResourceError(
-                    "term_depth",
-                    "a Python list or Term passed into the query contains itself; "
-                    "no finite term stands for it: pass a copy without the cycle",
-                )
+                raise SelfContainingValue()
             open_ids.add(id(v))
             stack.append((True, v))
             stack.extend((False, item) for item in reversed(items))
