@@ -19,6 +19,7 @@ from robocram.traces import (
     NotATraceDatabase,
     SchemaVersionMismatch,
     TraceDatabase,
+    TraceLocked,
     TraceStorageError,
 )
 from robocram.traces import database as database_module
@@ -125,3 +126,25 @@ def test_a_damaged_file_is_still_not_a_trace(tmp_path: Path) -> None:
     path.write_bytes(path.read_bytes()[:100] + b"\xff" * 4000)
     with pytest.raises(NotATraceDatabase):
         TraceDatabase(path, create=False)
+
+
+def test_locked_is_retried_and_only_locked(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    pauses: list[float] = []
+    monkeypatch.setattr(database_module.time, "sleep", pauses.append)
+    answers: list[Exception | str] = [TraceLocked(tmp_path), TraceLocked(tmp_path), "opened"]
+
+    def attempt() -> str:
+        answer = answers.pop(0)
+        if isinstance(answer, Exception):
+            raise answer
+        return answer
+
+    assert database_module.retry_while_locked(attempt) == "opened"
+    assert pauses == [database_module.OPEN_RETRY_PAUSE] * 2
+
+    def damaged() -> str:
+        raise DamagedTrace(tmp_path, ["tasks"])
+
+    with pytest.raises(DamagedTrace):
+        database_module.retry_while_locked(damaged)
+    assert len(pauses) == 2

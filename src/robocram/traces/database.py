@@ -14,10 +14,10 @@ from __future__ import annotations
 import sqlite3
 import threading
 import time
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 from sqlalchemy import Connection, create_engine, event, inspect, select, update
 from sqlalchemy.exc import DatabaseError
@@ -31,6 +31,7 @@ BUSY_TIMEOUT = 60_000  # [ms] a writer waits this long for another process's tra
 _WRITE = "robocram_write"
 OPEN_RETRIES = 50  # tries to open a file another process is setting up
 OPEN_RETRY_PAUSE = 0.05  # [s] between them
+T = TypeVar("T")
 
 
 class TraceDatabase:
@@ -40,7 +41,7 @@ class TraceDatabase:
         self.path = Path(path)
         if not create and not self.path.exists():
             raise TraceError(f"no trace database at {self.path}; record one with trace_to(path)")
-        fresh = probe_trace(self.path)
+        fresh = retry_while_locked(lambda: probe_trace(self.path))
         if fresh and not create:
             raise SchemaVersionMismatch(self.path, None, SCHEMA_VERSION)
         try:
@@ -67,15 +68,15 @@ class TraceDatabase:
         ``busy_timeout``. Only "locked" or "busy" is retried; the retries are bounded, and
         the answer never depends on them.
         """
-        for attempt in range(OPEN_RETRIES):
+
+        def check() -> None:
             try:
                 self._check_schema(create)
-                return
             except TraceLocked:
-                if attempt == OPEN_RETRIES - 1:
-                    raise
                 self.engine.dispose()  # the next connection sets its pragmas again
-                time.sleep(OPEN_RETRY_PAUSE)
+                raise
+
+        retry_while_locked(check)
 
     def _check_schema(self, create: bool) -> None:
         try:
@@ -133,6 +134,16 @@ class TraceDatabase:
 
     def __repr__(self) -> str:
         return f"TraceDatabase({str(self.path)!r})"
+
+
+def retry_while_locked(attempt: Callable[[], T]) -> T:
+    """``attempt()``, tried again while the file is locked or busy (and only then)."""
+    for _ in range(OPEN_RETRIES - 1):
+        try:
+            return attempt()
+        except TraceLocked:
+            time.sleep(OPEN_RETRY_PAUSE)
+    return attempt()
 
 
 def _only_added_tables(version: int) -> bool:
