@@ -12,6 +12,7 @@ import argparse
 import contextlib
 import datetime
 import os
+import socket
 import sys
 import time
 import warnings
@@ -131,12 +132,29 @@ def _add_viewer_commands(commands: argparse._SubParsersAction[argparse.ArgumentP
         command.set_defaults(handler=handler)
 
 
+def _check_address(host: str, port: int) -> None:
+    """Refuse a port out of range or an address this machine does not have, before serving."""
+    if not 1 <= port <= 65535:
+        raise CliInputError(f"--port {port} is out of range; give a port in 1..65535")
+    try:
+        infos = socket.getaddrinfo(host, None, type=socket.SOCK_STREAM)
+        family, _, _, _, address = infos[0]
+        with socket.socket(family, socket.SOCK_STREAM) as probe:
+            probe.bind((address[0], 0))  # any free port: only the address is tested
+    except OSError as err:
+        raise CliInputError(
+            f"--host {host} is not an address of this machine ({err.strerror or err}); "
+            "use 127.0.0.1 (this machine only) or 0.0.0.0 (every interface)"
+        ) from err
+
+
 def _view(args: argparse.Namespace) -> int:
     from robocram.execution import listening
     from robocram.plans import pick_up
     from robocram.projection import simulated_robot
     from robocram.scenes import tabletop_scene
 
+    _check_address(args.host, args.port)
     viewer_module = _viewer_module()
     scene = tabletop_scene(args.robot)
     try:
@@ -157,6 +175,7 @@ def _view(args: argparse.Namespace) -> int:
 
 
 def _replay(args: argparse.Namespace) -> int:
+    _check_address(args.host, args.port)
     viewer_module = _viewer_module()
     with _open(args.db) as db:
         run = _last_run(db, args.run)

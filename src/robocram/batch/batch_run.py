@@ -4,7 +4,7 @@ backend (a :class:`~robocram.batch.worker_pool.WorkerPool`)."""
 from __future__ import annotations
 
 import threading
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 from types import TracebackType
 
 from robocram.batch.progress import ProgressBar
@@ -19,7 +19,9 @@ class BatchRun:
     Also a context manager: leaving the block cancels whatever has not finished.
     """
 
-    def __init__(self, pool: WorkerPool, variants: list[Variant], progress: ProgressBar) -> None:
+    def __init__(
+        self, pool: WorkerPool, variants: Sequence[Variant], progress: ProgressBar
+    ) -> None:
         self._pool = pool
         self._stream = pool.results(variants)
         self.count = len(variants)

@@ -14,26 +14,26 @@ import importlib
 import json
 import math
 import sys
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-import numpy as np
 import yaml
 
+from robocram.batch.drawn_variants import Axis, DrawnVariants
 from robocram.batch.errors import BadSpec, BatchError
 from robocram.batch.kitchen_transport import transport_item
-from robocram.batch.object_placement import coerce_poses, coerce_shifts
-from robocram.batch.variant import Variant
+from robocram.batch.variant import MAX_SEED, Variant  # a variant's seed is `seed + index`
 from robocram.batch.worker import Plan, SceneFactory
 from robocram.plans import pick_up
 from robocram.scenes import kitchen_scene, tabletop_scene
 
 SPEC_KEYS = (
     "scene", "robot", "plan", "seed", "variants", "place", "look_at", "parameters", "jitter",
-    "workers", "backend",
+    "workers", "backend", "max_variants",
 )  # fmt: skip
+MAX_VARIANTS = 100_000  # a spec asks for more with `max_variants:` (docs/batch.md)
 PLACE_KEYS = ("frame", "x", "y", "z", "yaw")
 FRAMES = ("scene", "map")  # shift from the scene's pose, or an absolute pose
 SCENES: dict[str, SceneFactory] = {"tabletop": tabletop_scene, "kitchen": kitchen_scene}
@@ -47,7 +47,7 @@ class BatchSpec:
     scene: SceneFactory
     robot: str
     plan: Plan
-    variants: tuple[Variant, ...]
+    variants: Sequence[Variant]  # listed: a tuple; drawn: DrawnVariants, drawn as they run
     workers: int | None = None  # None: the command line's choice
     backend: str | None = None
 
@@ -85,6 +85,14 @@ def _read(path: Path) -> object:
         text = path.read_text(encoding="utf-8")
     except OSError as err:
         raise BadSpec(path, "(file)", str(path), f"cannot read it ({err.strerror})") from err
+    except UnicodeDecodeError as err:
+        raise BadSpec(
+            path,
+            "(file)",
+            path.name,
+            f"not UTF-8 text (byte {err.object[err.start]:#04x} at offset {err.start}); "
+            "a spec is a YAML or JSON text file saved as UTF-8",
+        ) from err
     try:
         return json.loads(text) if path.suffix == ".json" else yaml.safe_load(text)
     except (json.JSONDecodeError, yaml.YAMLError) as err:
@@ -139,8 +147,18 @@ def _named(path: Path, key: str, value: object, known: Mapping[str, Callable[...
     return found
 
 
-def _variants(path: Path, data: Mapping[str, Any]) -> tuple[Variant, ...]:
+def _variants(path: Path, data: Mapping[str, Any]) -> Sequence[Variant]:
     given = data.get("variants")
+    bound = data.get("max_variants", MAX_VARIANTS)
+    if not isinstance(bound, int) or isinstance(bound, bool) or bound < 1:
+        raise BadSpec(path, "max_variants", bound, "give a positive count")
+    count = len(given) if isinstance(given, list) else given
+    if isinstance(count, int) and not isinstance(count, bool) and count > bound:
+        raise BadSpec(
+            path, "variants", count,
+            f"more than {bound} variants; raise the bound with `max_variants: {count}` "
+            "if you mean it (each variant is a plan run)",
+        )  # fmt: skip
     if isinstance(given, list):
         if "place" in data:
             raise BadSpec(path, "place", data["place"], "draws variants: give `variants: N`")
@@ -148,8 +166,14 @@ def _variants(path: Path, data: Mapping[str, Any]) -> tuple[Variant, ...]:
     if not isinstance(given, int) or isinstance(given, bool) or given < 1:
         raise BadSpec(path, "variants", given, "give a count (with `place`) or a list")
     seed = data.get("seed", 0)
-    if not isinstance(seed, int) or isinstance(seed, bool) or seed < 0:
-        raise BadSpec(path, "seed", seed, "give an integer >= 0")
+    if not isinstance(seed, int) or isinstance(seed, bool) or not 0 <= seed <= MAX_SEED:
+        raise BadSpec(path, "seed", seed, f"give an integer in 0..{MAX_SEED} (2**32-1)")
+    if seed + given - 1 > MAX_SEED:
+        raise BadSpec(
+            path, "seed", seed,
+            f"variant i is seeded seed+i, and {seed}+{given - 1} passes {MAX_SEED}; "
+            f"give a seed <= {MAX_SEED - given + 1}",
+        )  # fmt: skip
     return _drawn(path, data, given, seed)
 
 
@@ -160,33 +184,15 @@ def _listed(path: Path, index: int, entry: object) -> Variant:
         raise BadSpec(path, f"variants[{index}]", "...", str(err)) from err
 
 
-def _drawn(path: Path, data: Mapping[str, Any], count: int, seed: int) -> tuple[Variant, ...]:
+def _drawn(path: Path, data: Mapping[str, Any], count: int, seed: int) -> DrawnVariants:
     place = data.get("place", {})
     if not isinstance(place, Mapping):
         raise BadSpec(path, "place", place, "give a mapping of object -> {x, y, z, yaw, frame}")
     ranges = {str(name): _ranges(path, str(name), axes) for name, axes in sorted(place.items())}
-    rng = np.random.default_rng(seed)
     common = {k: data[k] for k in ("look_at", "parameters", "jitter") if k in data}
-    out = []
-    for i in range(count):
-        shifts: dict[str, tuple[float, ...]] = {}
-        poses: dict[str, tuple[float, ...]] = {}
-        for name, (frame, axes) in ranges.items():
-            values = tuple(_draw(rng, axes.get(a, 0.0)) for a in ("x", "y", "z", "yaw"))
-            (poses if frame == "map" else shifts)[name] = values
-        out.append(
-            Variant(
-                f"v{i:03d}",
-                object_shifts=coerce_shifts(shifts),
-                object_poses=coerce_poses(poses),
-                seed=seed + i,
-                **common,
-            )
-        )
-    return tuple(out)
-
-
-Axis = float | tuple[float, float]
+    drawn = DrawnVariants(count, seed, ranges, common)
+    drawn[0]  # the fields every variant shares are checked now, not in a worker
+    return drawn
 
 
 def _ranges(path: Path, name: str, axes: object) -> tuple[str, dict[str, Axis]]:
@@ -215,7 +221,3 @@ def _axis(path: Path, key: str, value: object) -> Axis:
     if not (numbers and math.isfinite(low) and math.isfinite(high) and low <= high):
         raise BadSpec(path, key, value, fix + " with low <= high")
     return (float(low), float(high))
-
-
-def _draw(rng: np.random.Generator, axis: Axis) -> float:
-    return axis if isinstance(axis, float) else float(rng.uniform(axis[0], axis[1]))

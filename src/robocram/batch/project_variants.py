@@ -8,6 +8,7 @@ from pathlib import Path
 from typing import TextIO
 
 from robocram.batch.batch_run import BatchRun, WorkerPool
+from robocram.batch.drawn_variants import DrawnVariants
 from robocram.batch.errors import BatchError, UnknownBackend
 from robocram.batch.process_pool import ProcessPool
 from robocram.batch.progress import ProgressBar
@@ -50,10 +51,11 @@ def project_variants(
         raise UnknownBackend(backend, BACKENDS)
     if not isinstance(workers, int) or isinstance(workers, bool) or workers < 1:
         raise BatchError(f"workers={workers!r}: give a positive number of processes")
-    batch = list(variants)
-    for item in batch:
-        if not isinstance(item, Variant):
-            raise BatchError(f"{item!r} is not a Variant; build one with Variant(name, ...)")
+    batch = variants if isinstance(variants, DrawnVariants) else list(variants)
+    if not isinstance(batch, DrawnVariants):  # a drawn batch is drawn as workers ask
+        for item in batch:
+            if not isinstance(item, Variant):
+                raise BatchError(f"{item!r} is not a Variant; build one with Variant(name, ...)")
     config = WorkerConfig(plan, scene, robot, None if traces is None else Path(traces))
     _check_picklable(config)
     pool: WorkerPool

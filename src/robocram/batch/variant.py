@@ -15,6 +15,8 @@ from typing import Any
 from robocram.batch.errors import BadVariant
 from robocram.batch.object_placement import Pose7, Shift, coerce_poses, coerce_shifts
 
+MAX_SEED = 2**32 - 1  # the largest seed numpy's legacy seeding and random take
+
 
 @dataclass(frozen=True)
 class Variant:
@@ -47,8 +49,9 @@ class Variant:
         jitter = self.jitter
         if not (isinstance(jitter, int | float) and math.isfinite(jitter) and jitter >= 0.0):
             raise BadVariant("jitter", jitter, "give a finite standard deviation >= 0 [m]")
-        if not isinstance(self.seed, int) or isinstance(self.seed, bool) or self.seed < 0:
-            raise BadVariant("seed", self.seed, "give an integer >= 0")
+        seed = self.seed
+        if not isinstance(seed, int) or isinstance(seed, bool) or not 0 <= seed <= MAX_SEED:
+            raise BadVariant("seed", seed, f"give an integer in 0..{MAX_SEED} (2**32-1)")
 
     @classmethod
     def from_mapping(cls, data: Mapping[str, Any]) -> Variant:

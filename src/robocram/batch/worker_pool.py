@@ -9,13 +9,39 @@ from __future__ import annotations
 
 import threading
 from abc import ABC, abstractmethod
-from collections import deque
 from collections.abc import Generator, Iterator, Sequence
 
+from robocram.batch.errors import BatchError
 from robocram.batch.result import VariantResult, VariantStatus
 from robocram.batch.variant import Variant
 
-Pending = deque[tuple[int, Variant]]  # (index in the batch, variant) not yet handed out
+
+class Pending:
+    """The variants not yet handed out, taken from the batch one at a time.
+
+    A drawn batch (:class:`~robocram.batch.drawn_variants.DrawnVariants`) draws each
+    variant here, as a worker becomes free, so a big batch starts at once in little memory.
+    """
+
+    def __init__(self, variants: Sequence[Variant]) -> None:
+        self._left = len(variants)
+        self._variants = enumerate(variants)
+        self.names: dict[int, str] = {}  # the variants handed out, for lost results
+
+    def __bool__(self) -> bool:
+        return self._left > 0
+
+    def __len__(self) -> int:
+        return self._left
+
+    def popleft(self) -> tuple[int, Variant]:
+        """The next (index in the batch, variant)."""
+        index, variant = next(self._variants)
+        self._left -= 1
+        if not isinstance(variant, Variant):
+            raise BatchError(f"{variant!r} is not a Variant; build one with Variant(name, ...)")
+        self.names[index] = variant.name
+        return index, variant
 
 
 class WorkerPool(ABC):
@@ -28,8 +54,8 @@ class WorkerPool(ABC):
 
     def results(self, variants: Sequence[Variant]) -> Generator[VariantResult, None, None]:
         """Yield each variant's result as it finishes; stop every worker on leaving."""
-        pending: Pending = deque(enumerate(variants))
-        self._names = {i: v.name for i, v in pending}
+        pending = Pending(variants)
+        self._names = pending.names
         try:
             self._start(min(self.size, len(pending)), pending)
             while not self._stopping.is_set() and self._busy():

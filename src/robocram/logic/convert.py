@@ -7,12 +7,23 @@
 
 from __future__ import annotations
 
-from typing import Any
+from collections.abc import Sequence
+from typing import Any, cast
 
 from robocram.logic.terms import NIL, PString, Term, Var, new_term
 from robocram.logic.unify import is_acyclic
 
-__all__ = ["NONE", "to_prolog", "to_python"]
+__all__ = ["NONE", "SelfContainingValue", "to_prolog", "to_python"]
+
+
+class SelfContainingValue(ValueError):  # noqa: N818 - reads as what the value is
+    """A Python list or Term that contains itself: no finite term stands for it."""
+
+    def __init__(self) -> None:
+        super().__init__(
+            "a Python list or Term that contains itself; no finite term stands for it: "
+            "pass a copy without the cycle"
+        )
 
 
 class _NoneBox:
@@ -30,19 +41,34 @@ NONE = _NoneBox()
 def to_prolog(value: Any) -> Any:
     """Convert a Python value to an engine term.
 
+    Values nested deeper than Python's stack allows are converted by `_to_prolog_deep`;
+    a list that contains itself raises `SelfContainingValue` (no finite term stands for it).
+
     >>> to_prolog([1, "a"])
     [1,a]
     """
+    try:
+        return _to_prolog(value)
+    except RecursionError:
+        return _to_prolog_deep(value)
+
+
+def _to_prolog(value: object) -> object:
     t = type(value)
     if t is str or t is int or t is float or t is Var or t is PString:
         return value
-    if t is list:
-        result: Any = NIL
+    if isinstance(value, list) and t is list:
+        result: object = NIL
         for item in reversed(value):
-            result = new_term(Term, (".", (to_prolog(item), result)))
+            result = new_term(Term, (".", (_to_prolog(item), result)))
         return result
-    if t is Term:
-        return new_term(Term, (value[0], tuple([to_prolog(a) for a in value[1]])))
+    if isinstance(value, Term) and t is Term:
+        return new_term(Term, (value[0], tuple([_to_prolog(a) for a in value[1]])))
+    return _to_prolog_leaf(value)
+
+
+def _to_prolog_leaf(value: object) -> object:
+    t = type(value)
     if t is bool:
         return "true" if value else "false"
     if value is None:
@@ -54,6 +80,49 @@ def to_prolog(value: Any) -> Any:
     if isinstance(value, float):
         return float(value)
     return value
+
+
+def _to_prolog_deep(value: object) -> object:
+    """`to_prolog` with an explicit stack, for a list or term of any depth."""
+    out: list[object] = []
+    open_ids: set[int] = set()  # lists and terms being converted: seeing one again is a cycle
+    stack: list[tuple[bool, object]] = [(False, value)]
+    while stack:
+        built, v = stack.pop()
+        items = _items(v)
+        if items is None:
+            out.append(_to_prolog(v))
+        elif built:
+            open_ids.discard(id(v))
+            args = out[len(out) - len(items) :] if items else []
+            del out[len(out) - len(items) :]
+            out.append(_assembled_prolog(v, args))
+        else:
+            if id(v) in open_ids:
+                raise SelfContainingValue()
+            open_ids.add(id(v))
+            stack.append((True, v))
+            stack.extend((False, item) for item in reversed(items))
+    return out[0]
+
+
+def _items(value: object) -> Sequence[object] | None:
+    """The items of a list or the arguments of a Term; ``None`` for anything else."""
+    if type(value) is list:
+        return cast("list[object]", value)
+    if isinstance(value, Term) and type(value) is Term:
+        return cast("tuple[object, ...]", value[1])
+    return None
+
+
+def _assembled_prolog(value: object, args: list[object]) -> object:
+    """The term of ``value`` (a list or Term) from its converted items ``args``."""
+    if isinstance(value, Term) and type(value) is Term:
+        return new_term(Term, (value[0], tuple(args)))
+    result: object = NIL
+    for item in reversed(args):
+        result = new_term(Term, (".", (item, result)))
+    return result
 
 
 def to_python(term: Any) -> Any:

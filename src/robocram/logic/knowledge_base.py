@@ -15,7 +15,7 @@ from typing import Any
 from robocram.logic.arith import MAX_INTEGER_BITS
 from robocram.logic.builtin_flags import default_flags
 from robocram.logic.bulk import paused_gc
-from robocram.logic.convert import to_prolog, to_python
+from robocram.logic.convert import SelfContainingValue, to_prolog, to_python
 from robocram.logic.errors import PrologError, PrologPermissionError, PrologResourceError
 from robocram.logic.fact_groups import LIBRARY_OWNER, GroupEdit, Groups, refuse_system
 from robocram.logic.limits import Budget, QueryStopped
@@ -269,7 +269,10 @@ class KnowledgeBase:
                     f"binding {name}= names no variable of query {text!r}; its variables are"
                     f" {', '.join(sorted(names)) or 'none'}"
                 )
-            regs[names[name]] = to_prolog(value)
+            try:
+                regs[names[name]] = to_prolog(value)
+            except SelfContainingValue as err:
+                raise PrologResourceError("term_depth", f"binding {name}= is {err}") from err
         goal = build(template, regs)
         shown = [(n, i) for n, i in names.items() if n not in bindings and not n.startswith("_")]
         return self._answers(goal, regs, shown, limits)

@@ -8,6 +8,7 @@ that loops (`p :- p.`). The hook's exception passes through `catch/3` untouched.
 
 from __future__ import annotations
 
+import math
 import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
@@ -58,8 +59,11 @@ class Budget:
     def __init__(self, max_inferences: int | None, time_limit: float | None) -> None:
         if max_inferences is not None and max_inferences < 0:
             raise ValueError(f"max_inferences must be >= 0, got {max_inferences}")
-        if time_limit is not None and time_limit < 0:
-            raise ValueError(f"time_limit must be >= 0 [s], got {time_limit}")
+        if time_limit is not None and not (math.isfinite(time_limit) and time_limit >= 0):
+            raise ValueError(
+                f"time_limit must be a finite number >= 0 [s], got {time_limit}; "
+                "pass None for no limit"
+            )
         self.inferences = 0
         self.max_inferences = max_inferences
         self.time_limit = time_limit  # [s]

@@ -10,10 +10,13 @@ Several processes may append to one file (WAL mode, one writer at a time).
 from robocram.traces.costmap_record import StoredCostmap, run_costmaps
 from robocram.traces.database import TraceDatabase
 from robocram.traces.errors import (
+    DamagedTrace,
     NotATraceDatabase,
     NoWorldState,
     SchemaVersionMismatch,
     TraceError,
+    TraceLocked,
+    TraceStorageError,
     UnknownRun,
 )
 from robocram.traces.mcap_export import export_mcap
@@ -41,8 +44,7 @@ from robocram.traces.trajectory_record import StoredTrajectory, replay_clock, ru
 from robocram.traces.world_record import StoredWorldState, build_scene, scene_of
 
 __all__ = [
-    "SCHEMA_VERSION",
-    "TRACE_ENV",
+    "DamagedTrace",
     "DurationStats",
     "FailureRecord",
     "NoWorldState",
@@ -51,20 +53,24 @@ __all__ = [
     "ReplayFrame",
     "RunAnimation",
     "RunSummary",
+    "SCHEMA_VERSION",
     "SchemaVersionMismatch",
     "StoredCostmap",
     "StoredTrajectory",
     "StoredWorldState",
+    "TRACE_ENV",
     "TraceDatabase",
     "TraceError",
+    "TraceLocked",
+    "TraceStorageError",
     "Tracer",
     "UnknownRun",
     "animate_run",
     "build_scene",
     "designator_properties",
     "durations",
-    "failure_counts",
     "export_mcap",
+    "failure_counts",
     "failures",
     "replay_clock",
     "replay_frames",

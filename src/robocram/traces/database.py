@@ -4,7 +4,9 @@ WAL lets readers (a viewer, ``robocram runs``) read while a plan writes, and let
 processes append runs to one file: each write transaction starts with ``BEGIN IMMEDIATE``,
 so writers queue on SQLite's lock (``busy_timeout``) instead of failing half-way.
 Within a process one lock serialises the writers of all threads. A file of an older
-version whose successors only added tables is upgraded in place on opening.
+version whose successors only added tables is upgraded in place on opening. A file that
+is not a robocram trace is never written: it is probed read-only first
+(``traces/trace_probe.py``), and only a new or empty file gets the schema.
 """
 
 from __future__ import annotations
@@ -12,22 +14,24 @@ from __future__ import annotations
 import sqlite3
 import threading
 import time
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 from sqlalchemy import Connection, create_engine, event, inspect, select, update
-from sqlalchemy.exc import DatabaseError, OperationalError
+from sqlalchemy.exc import DatabaseError
 from sqlalchemy.orm import Session
 
-from robocram.traces.errors import NotATraceDatabase, SchemaVersionMismatch, TraceError
+from robocram.traces.errors import SchemaVersionMismatch, TraceError, TraceLocked
 from robocram.traces.schema import ADDED_TABLES, SCHEMA_VERSION, Base, SchemaInfo
+from robocram.traces.trace_probe import probe_trace, sqlite_error, storage_error
 
 BUSY_TIMEOUT = 60_000  # [ms] a writer waits this long for another process's transaction
 _WRITE = "robocram_write"
 OPEN_RETRIES = 50  # tries to open a file another process is setting up
 OPEN_RETRY_PAUSE = 0.05  # [s] between them
+T = TypeVar("T")
 
 
 class TraceDatabase:
@@ -37,7 +41,13 @@ class TraceDatabase:
         self.path = Path(path)
         if not create and not self.path.exists():
             raise TraceError(f"no trace database at {self.path}; record one with trace_to(path)")
-        self.path.parent.mkdir(parents=True, exist_ok=True)
+        fresh = retry_while_locked(lambda: probe_trace(self.path))
+        if fresh and not create:
+            raise SchemaVersionMismatch(self.path, None, SCHEMA_VERSION)
+        try:
+            self.path.parent.mkdir(parents=True, exist_ok=True)
+        except OSError as err:
+            raise storage_error(self.path, err) from err
         self.engine = create_engine(f"sqlite:///{self.path}")
         event.listen(self.engine, "connect", _configure_connection)
         event.listen(self.engine, "begin", _begin)
@@ -45,7 +55,7 @@ class TraceDatabase:
         self._lock = threading.Lock()
         self._connection: Connection | None = None
         try:
-            self._open_schema(create)
+            self._open_schema(fresh)
         except BaseException:
             self.engine.dispose()
             raise
@@ -55,17 +65,18 @@ class TraceDatabase:
 
         Two batch workers opening a new file at once race to switch it to WAL and create
         the tables; SQLite answers the loser "locked" at once, without waiting out
-        ``busy_timeout``. The retries are bounded, and the answer never depends on them.
+        ``busy_timeout``. Only "locked" or "busy" is retried; the retries are bounded, and
+        the answer never depends on them.
         """
-        for attempt in range(OPEN_RETRIES):
+
+        def check() -> None:
             try:
                 self._check_schema(create)
-                return
-            except TraceError:
-                if attempt == OPEN_RETRIES - 1:
-                    raise
+            except TraceLocked:
                 self.engine.dispose()  # the next connection sets its pragmas again
-                time.sleep(OPEN_RETRY_PAUSE)
+                raise
+
+        retry_while_locked(check)
 
     def _check_schema(self, create: bool) -> None:
         try:
@@ -82,9 +93,7 @@ class TraceDatabase:
                     _add_tables(session, version)
                     version = SCHEMA_VERSION
         except DatabaseError as err:
-            if isinstance(err, OperationalError) and "locked" in str(err):
-                raise TraceError(f"{self.path} stayed locked by another writer") from err
-            raise NotATraceDatabase(self.path, str(err.orig)) from err
+            raise sqlite_error(self.path, err.orig or err) from err
         if version != SCHEMA_VERSION:
             raise SchemaVersionMismatch(self.path, version, SCHEMA_VERSION)
 
@@ -125,6 +134,16 @@ class TraceDatabase:
 
     def __repr__(self) -> str:
         return f"TraceDatabase({str(self.path)!r})"
+
+
+def retry_while_locked(attempt: Callable[[], T]) -> T:
+    """``attempt()``, tried again while the file is locked or busy (and only then)."""
+    for _ in range(OPEN_RETRIES - 1):
+        try:
+            return attempt()
+        except TraceLocked:
+            time.sleep(OPEN_RETRY_PAUSE)
+    return attempt()
 
 
 def _only_added_tables(version: int) -> bool:

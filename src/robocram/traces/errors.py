@@ -54,3 +54,35 @@ class NoWorldState(TraceError):  # noqa: N818
             "trace_to(db, world=world) to store world states at motion boundaries"
         )
         self.run, self.time = run, time
+
+
+class DamagedTrace(TraceError):  # noqa: N818 - reads as what the file is
+    """A robocram trace with tables missing (changed outside robocram, or cut short)."""
+
+    def __init__(self, path: Path, missing: Sequence[str]) -> None:
+        super().__init__(
+            f"{path} is a damaged robocram trace: table(s) {', '.join(sorted(missing))} are "
+            "missing; it was changed outside robocram: record the runs again into a new file"
+        )
+        self.path, self.missing = path, sorted(missing)
+
+
+class TraceStorageError(TraceError):
+    """The storage, not the file, is the problem: read-only, full, or no folder to write in.
+
+    ``kind`` is ``"read-only"``, ``"disk full"`` or ``"path"``.
+    """
+
+    def __init__(self, path: Path, kind: str, problem: str, fix: str) -> None:
+        super().__init__(f"cannot use trace {path}: {problem}; {fix}")
+        self.path, self.kind, self.problem = path, kind, problem
+
+
+class TraceLocked(TraceError):  # noqa: N818
+    """Another process kept the file locked past the waiting time."""
+
+    def __init__(self, path: Path) -> None:
+        super().__init__(
+            f"{path} stayed locked by another writer; wait for it to finish or use another file"
+        )
+        self.path = path

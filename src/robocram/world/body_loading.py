@@ -1,7 +1,8 @@
 """Making a body from its spec, checked: failures are typed and leave nothing behind.
 
-PyBullet answers joint state queries only for bodies of at most :data:`MAX_LINKS` links
-below the root; a bigger body loads but then fails on every query, so it is refused.
+A URDF passes the checked parser first (:func:`checked_urdf_spec`). PyBullet answers joint
+state queries only for bodies of at most :data:`MAX_LINKS` links below the root; a bigger
+body loads but then fails on every query, so it is refused.
 """
 
 from __future__ import annotations
@@ -10,13 +11,14 @@ import pybullet
 
 from robocram.world.body_spec import BodySpec, MeshSpec, UrdfSpec
 from robocram.world.errors import BodyLoadError, TooManyLinksError
-
-MAX_LINKS = 128  # links below the root that PyBullet's joint state queries handle
+from robocram.world.robot_urdf import MAX_LINKS, checked_urdf_spec
 
 
 def create_body(name: str, spec: BodySpec, cid: int) -> int:
     """The body of ``spec`` called ``name``; a failed or oversized load leaves no body."""
     source = str(spec.path) if isinstance(spec, UrdfSpec | MeshSpec) else "a shape"
+    if isinstance(spec, UrdfSpec):
+        spec = checked_urdf_spec(name, spec)
     try:
         body = spec.create(cid)
     except (pybullet.error, FileNotFoundError) as err:

@@ -8,7 +8,9 @@ from __future__ import annotations
 
 import contextlib
 import os
+import re
 import sys
+import tempfile
 from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
@@ -23,22 +25,50 @@ ShapeKind = Literal["box", "cylinder", "sphere", "plane"]
 GREY: Rgba = (0.6, 0.6, 0.6, 1.0)
 
 
+# Bullet prefixes each message with b3Error[file,line]: or b3Warning[file,line]:
+_MESSAGE = re.compile(r"b3(Error|Warning)\[[^\]]*\]:\s*(.*?)(?=b3(?:Error|Warning)\[|\Z)", re.S)
+
+
+@dataclass
+class Chatter:
+    """What Bullet's importer printed while loading; ``text`` is set when the block ends."""
+
+    text: str = ""
+
+    def reason(self) -> str:
+        """Bullet's errors, after the warning that caused them ("cannot find 'x.obj'")."""
+        said = [(kind, text.strip()) for kind, text in _MESSAGE.findall(self.text) if text.strip()]
+        first_error = next((i for i, (kind, _) in enumerate(said) if kind == "Error"), None)
+        if first_error is None:
+            return " ".join(text for _, text in said[-2:])
+        cause = [said[first_error - 1][1]] if first_error > 0 else []
+        errors = " ".join(text for _, text in said[first_error:])
+        return ": ".join([*cause, errors])
+
+
 @contextlib.contextmanager
-def quiet_stdout() -> Iterator[None]:
-    """Silence the C-level stdout/stderr chatter of Bullet's URDF importer while loading."""
+def quiet_stdout() -> Iterator[Chatter]:
+    """Keep the C-level stdout/stderr chatter of Bullet's URDF importer off the terminal.
+
+    It is captured instead, so a refusal can say why (PyBullet's exception only says
+    "Cannot load URDF file.").
+    """
     sys.stdout.flush()
     sys.stderr.flush()
     saved = [os.dup(1), os.dup(2)]
-    devnull = os.open(os.devnull, os.O_WRONLY)
-    try:
-        os.dup2(devnull, 1)
-        os.dup2(devnull, 2)
-        yield
-    finally:
-        os.dup2(saved[0], 1)
-        os.dup2(saved[1], 2)
-        for fd in (*saved, devnull):
-            os.close(fd)
+    chatter = Chatter()
+    with tempfile.TemporaryFile() as capture:
+        try:
+            os.dup2(capture.fileno(), 1)
+            os.dup2(capture.fileno(), 2)
+            yield chatter
+        finally:
+            os.dup2(saved[0], 1)
+            os.dup2(saved[1], 2)
+            for fd in saved:
+                os.close(fd)
+            capture.seek(0)
+            chatter.text = capture.read().decode("utf-8", "replace")
 
 
 @dataclass(frozen=True)
@@ -123,7 +153,9 @@ class UrdfSpec:
     """A body from a URDF file; ``mass`` [kg], if given, overrides the base link's mass.
 
     ``frames`` name links folded into a host link before loading: they stay usable as
-    frames (``World.link_pose``) at a fixed pose in their host.
+    frames (``World.link_pose``) at a fixed pose in their host. ``checked`` says that
+    ``path`` already passed the URDF parser (robots write theirs from a checked model);
+    every other URDF is read by it before PyBullet sees it (``world/robot_urdf.py``).
     """
 
     path: Path
@@ -131,20 +163,28 @@ class UrdfSpec:
     scale: float = 1.0
     mass: float | None = None
     frames: tuple[tuple[str, str, Pose], ...] = ()  # (frame, host link, pose in host)
+    checked: bool = False
 
     def create(self, client: int) -> int:
         """Load the URDF into ``client`` at the origin; return its body id."""
         if not Path(self.path).is_file():
             raise FileNotFoundError(f"URDF file {self.path} does not exist")
-        with quiet_stdout():
-            body = int(
-                pybullet.loadURDF(
-                    str(self.path),
-                    useFixedBase=self.fixed_base,
-                    globalScaling=self.scale,
-                    physicsClientId=client,
+        refusal: pybullet.error | None = None
+        with quiet_stdout() as chatter:
+            try:
+                body = int(
+                    pybullet.loadURDF(
+                        str(self.path),
+                        useFixedBase=self.fixed_base,
+                        globalScaling=self.scale,
+                        physicsClientId=client,
+                    )
                 )
-            )
+            except pybullet.error as err:
+                refusal = err
+        if refusal is not None:
+            why = chatter.reason() or "PyBullet gave no reason"
+            raise pybullet.error(f"{str(refusal).strip()} {why}") from refusal
         if self.mass is not None:
             pybullet.changeDynamics(body, -1, mass=self.mass, physicsClientId=client)
         return body

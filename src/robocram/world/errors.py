@@ -117,16 +117,18 @@ class BodyLoadError(WorldError):
 
 
 class TooManyLinksError(BodyLoadError):
-    """A body with more moving or fixed links than PyBullet can hold."""
+    """A body with more links (or moving joints) than PyBullet can hold."""
 
-    def __init__(self, name: str, source: str, links: int, limit: int) -> None:
+    def __init__(
+        self, name: str, source: str, links: int, limit: int, what: str = "links below its root"
+    ) -> None:
         self.links = links
         self.limit = limit
         super().__init__(
             name,
             source,
-            f"it has {links} links below its root and PyBullet holds at most {limit}; drop "
-            "links the projection does not need or merge chains of fixed joints in the URDF",
+            f"it has {links} {what} and PyBullet holds at most {limit}; drop links the "
+            "projection does not need or merge chains of fixed joints in the URDF",
         )
 
 
