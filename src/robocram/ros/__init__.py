@@ -13,10 +13,12 @@ from robocram.ros.availability import require_ros_extra
 require_ros_extra()
 
 from robocram.ros.errors import (  # noqa: E402 - only once the extra is known to be there
+    RosCancelIgnored,
     RosConfigError,
     RosConnectionLost,
     RosError,
     RosExtraMissing,
+    RosMasterUnreachable,
     RosNodeError,
 )
 from robocram.ros.ros_config import RosConfig, install_ros_facts, read_ros_config  # noqa: E402
@@ -27,12 +29,14 @@ from robocram.ros.transport import GoalOutcome, GoalState, Transport  # noqa: E4
 __all__ = [
     "GoalOutcome",
     "GoalState",
+    "RosCancelIgnored",
     "RosConfig",
     "RosConfigError",
     "RosConnectionLost",
     "RosEnvironment",
     "RosError",
     "RosExtraMissing",
+    "RosMasterUnreachable",
     "RosNodeError",
     "RosRun",
     "Roscore",

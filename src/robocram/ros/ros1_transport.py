@@ -10,20 +10,70 @@ child dies, every running goal ends LOST and every request raises, never hangs.
 from __future__ import annotations
 
 import contextlib
+import http.client
 import itertools
+import logging
 import multiprocessing
 import threading
+import time
+import xmlrpc.client
+from collections.abc import Iterator
 from multiprocessing.connection import Connection
 from typing import Any
 
-from robocram.ros.errors import RosConnectionLost, RosNodeError
+from robocram.ros.errors import RosConnectionLost, RosMasterUnreachable, RosNodeError
 from robocram.ros.ros1_node import NodeConfig, node_main
-from robocram.ros.transport import GoalHandle, GoalOutcome, GoalState, RosDict
+from robocram.ros.transport import GoalHandle, GoalOutcome, GoalState, RosDict, StateMark
 from robocram.tf import Pose
 
-START_TIMEOUT = 30.0  # [s] for the child to import rospy and join the master
+LOG = logging.getLogger("robocram.ros")
+START_TIMEOUT = 30.0  # [s] for the child to import rospy and join a master that answered
 REPLY_TIMEOUT = 10.0  # [s] for a request that does not wait on the robot
 STOP_TIMEOUT = 5.0  # [s] for the child to leave ROS before it is killed
+MASTER_RETRY = 0.2  # [s] between asking an absent master again
+
+
+def wait_for_master(uri: str, timeout: float) -> None:
+    """Return once the ROS master at ``uri`` answers; else RosMasterUnreachable in ``timeout``.
+
+    rospy's own start-up waits for a master forever; asking it first makes the error quick.
+    """
+    deadline = time.monotonic() + timeout
+    last = "no answer"
+    while True:
+        remaining = deadline - time.monotonic()
+        try:
+            with _timeout_proxy(uri, max(0.05, min(1.0, remaining))) as master:
+                master.getPid("/robocram_probe")
+            return
+        except (OSError, xmlrpc.client.Error) as err:
+            last = f"{type(err).__name__}: {err}"
+        if time.monotonic() + MASTER_RETRY > deadline:
+            raise RosMasterUnreachable(
+                f"no ROS master answered at {uri} within {timeout} s ({last}); start roscore "
+                "there (or fix master_uri / $ROS_MASTER_URI), or give ros_robot a longer "
+                "master_timeout"
+            )
+        time.sleep(MASTER_RETRY)
+
+
+@contextlib.contextmanager
+def _timeout_proxy(uri: str, timeout: float) -> Iterator[xmlrpc.client.ServerProxy]:
+    """An XML-RPC proxy whose socket gives up after ``timeout`` [s]."""
+    transport = _TimeoutTransport(timeout)
+    with xmlrpc.client.ServerProxy(uri, transport=transport) as proxy:
+        yield proxy
+
+
+class _TimeoutTransport(xmlrpc.client.Transport):
+    def __init__(self, timeout: float) -> None:
+        super().__init__()
+        self._timeout = timeout
+
+    def make_connection(self, host: Any) -> http.client.HTTPConnection:
+        connection = super().make_connection(host)
+        connection.timeout = self._timeout
+        return connection
 
 
 class Ros1Transport:
@@ -42,6 +92,7 @@ class Ros1Transport:
         self._process: multiprocessing.process.BaseProcess | None = None
         self._reader: threading.Thread | None = None
         self.node_name = ""
+        self.clock_skew: float | None = None  # [s] robot stamps minus our clock, measured once
 
     @classmethod
     def open(cls, config: NodeConfig, fixed_frame: str = "map") -> Ros1Transport:
@@ -50,7 +101,21 @@ class Ros1Transport:
         transport._start()
         return transport
 
+    def _on_skew(self, skew: float) -> None:
+        """Keep the robot clock's offset; report it when it exceeds the bound."""
+        self.clock_skew = skew
+        bound = self.config.clock_skew_bound
+        if abs(skew) > bound:
+            side = "behind" if skew < 0 else "ahead of"
+            LOG.warning(
+                "the robot's clock is %.3f s %s ours (joint states on %s stamped %+.3f s from "
+                "their arrival; bound %.3f s). robocram waits for state by arrival, so results "
+                "do not change; synchronise the clocks (chrony/ntp) for stamped data and logs",
+                abs(skew), side, self.config.joint_states_topic, skew, bound,
+            )  # fmt: skip
+
     def _start(self) -> None:
+        wait_for_master(self.config.master_uri, self.config.master_timeout)
         context = multiprocessing.get_context("spawn")
         parent, child = context.Pipe()
         self._process = context.Process(
@@ -66,6 +131,9 @@ class Ros1Transport:
                 f"{START_TIMEOUT} s; is roscore running there?"
             )
         status, detail = parent.recv()
+        while status == "skew":  # the first joint states may come before "ready"
+            self._on_skew(float(detail))
+            status, detail = parent.recv()
         if status != "ready":
             self._kill()
             raise RosNodeError(f"our ROS node failed to start: {detail}")
@@ -86,11 +154,13 @@ class Ros1Transport:
                     self._replies[request_id] = (ok, payload)
                     self._cond.notify_all()
             elif message[0] == "goal":
-                _, goal_id, state, text, result, stamp = message
+                _, goal_id, state, text, result, mark = message
                 with self._cond:
                     handle = self._goals.pop(goal_id, None)
                 if handle is not None:
-                    handle.finish(GoalOutcome(GoalState(state), text, result, stamp))
+                    handle.finish(GoalOutcome(GoalState(state), text, result, tuple(mark)))
+            elif message[0] == "skew":
+                self._on_skew(float(message[1]))
         self._die("our ROS node process ended")
 
     def _die(self, reason: str) -> None:
@@ -99,7 +169,7 @@ class Ros1Transport:
             goals, self._goals = list(self._goals.values()), {}
             self._cond.notify_all()
         for handle in goals:
-            handle.finish(GoalOutcome(GoalState.LOST, reason, {}, 0.0))
+            handle.finish(GoalOutcome(GoalState.LOST, reason, {}))
 
     def request(self, op: str, *args: Any, timeout: float = REPLY_TIMEOUT) -> Any:
         """Run ``op`` in the node; return its payload or raise what it reported."""
@@ -148,19 +218,9 @@ class Ros1Transport:
         if self._dead is None:
             self.request("cancel", handle.goal_id)
 
-    def wait_for_state(self, after: float, timeout: float) -> bool:
-        """Wait for joint states and the base frame's transform stamped after ``after`` [s]."""
-        base = self.config.base_frame
-        return bool(
-            self.request(
-                "wait_for_state",
-                after,
-                self.fixed_frame,
-                base,
-                timeout,
-                timeout=timeout + REPLY_TIMEOUT,
-            )
-        )
+    def wait_for_state(self, after: StateMark | None, timeout: float) -> bool:
+        """Wait for joint states and the base frame's transform arriving after ``after``."""
+        return bool(self.request("wait_for_state", after, timeout, timeout=timeout + REPLY_TIMEOUT))
 
     def joint_states(self) -> dict[str, float]:
         """The latest ``/joint_states`` positions by joint name."""

@@ -13,7 +13,7 @@ from collections.abc import Callable, Mapping
 from robocram.motion import JointTrajectory, MotionSettings, report_executed
 from robocram.robots import ArmDescription, LoadedDescription
 from robocram.ros.errors import RosCommandError, RosConnectionLost, RosNodeError
-from robocram.ros.goal_runner import FailureFactory, checked, finish_goal
+from robocram.ros.goal_runner import Accept, FailureFactory, checked, finish_goal
 from robocram.ros.motion_planner import MotionPlanner, clamp_goal
 from robocram.ros.ros1_node import NodeConfig
 from robocram.ros.ros1_transport import Ros1Transport
@@ -23,6 +23,7 @@ from robocram.tf import Pose, PoseLike, PoseStamped
 from robocram.world import World
 
 STATE_TIMEOUT = 5.0  # [s] for the state after a goal to arrive
+DEFAULT_MASTER_TIMEOUT = 5.0  # [s] for the ROS master to answer when entering
 TransportFactory = Callable[[NodeConfig], Transport]
 
 
@@ -39,9 +40,11 @@ class RosRobotClient:
         transport_factory: TransportFactory = Ros1Transport.open,
         world: World | None = None,
         motion: MotionSettings | None = None,
+        master_timeout: float = DEFAULT_MASTER_TIMEOUT,
     ) -> None:
         """``world``: a projection world of the robot's environment to plan motions in
-        (kept in sync with the robot's state); None plans straight joint moves."""
+        (kept in sync with the robot's state); None plans straight joint moves.
+        ``master_timeout`` [s]: how long ``connect`` waits for the ROS master to answer."""
         self.desc = desc
         self.config = config
         self.fixed_frame = fixed_frame
@@ -53,6 +56,8 @@ class RosRobotClient:
             base_frame=desc.base_frame,
             connect_timeout=config.server_timeout,
             lost_after=config.connection_timeout,
+            clock_skew_bound=config.clock_skew_bound,
+            master_timeout=master_timeout,
         )
         self._factory = transport_factory
         self._transport: Transport | None = None
@@ -76,6 +81,11 @@ class RosRobotClient:
             transport.close()
 
     @property
+    def clock_skew(self) -> float | None:
+        """[s] the robot's stamps minus our clock, once measured (None before, or unknown)."""
+        return getattr(self._transport, "clock_skew", None)
+
+    @property
     def transport(self) -> Transport:
         """The open transport, or a RosNodeError saying where to run."""
         if self._transport is None:
@@ -84,17 +94,27 @@ class RosRobotClient:
             )
         return self._transport
 
-    def run(self, resource: str, goal: RosDict, failure: FailureFactory) -> GoalOutcome:
-        """Run ``goal`` on ``resource``'s action server, then wait for the state after it."""
+    def run(
+        self,
+        resource: str,
+        goal: RosDict,
+        failure: FailureFactory,
+        accept: Accept | None = None,
+    ) -> GoalOutcome:
+        """Run ``goal`` on ``resource``'s action server, then wait for the state after it.
+
+        ``accept(outcome)`` says whether an outcome other than SUCCEEDED is a success too
+        (a PR2 gripper holding an object ends ABORTED with ``stalled``).
+        """
         interface = self.config.action(resource)
         outcome = finish_goal(
             self.transport, interface, goal, lambda end: self._settle(interface.server, end)
         )
-        return checked(interface, outcome, failure)
+        return checked(interface, outcome, failure, accept)
 
     def _settle(self, server: str, end: GoalOutcome) -> None:
         """Wait for the state published after ``end`` (failed goals moved the robot too)."""
-        if not self.transport.wait_for_state(end.stamp, STATE_TIMEOUT):
+        if not self.transport.wait_for_state(end.mark, STATE_TIMEOUT):
             raise RosConnectionLost(
                 f"no joint states or transforms of {self.name} arrived within {STATE_TIMEOUT} s "
                 f"after {server} finished",

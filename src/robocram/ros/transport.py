@@ -16,6 +16,7 @@ from typing import Any, Protocol
 from robocram.tf import Pose
 
 RosDict = dict[str, Any]
+StateMark = tuple[int, int]  # joint-state and base-transform messages arrived so far
 
 
 class GoalState(Enum):
@@ -31,12 +32,13 @@ class GoalState(Enum):
 
 @dataclass(frozen=True)
 class GoalOutcome:
-    """How a goal ended: its state, the server's status text, the result, when it arrived."""
+    """How a goal ended: its state, the server's status text, the result, and the state
+    messages that had arrived when it did (state arriving after ``mark`` shows its end)."""
 
     state: GoalState
     status_text: str
     result: RosDict
-    stamp: float  # [s] ROS time the outcome arrived
+    mark: StateMark = (0, 0)
 
 
 @dataclass
@@ -67,8 +69,9 @@ class Transport(Protocol):
         """Ask the server to cancel the goal (its outcome arrives as PREEMPTED or RECALLED)."""
         ...
 
-    def wait_for_state(self, after: float, timeout: float) -> bool:
-        """Wait until joint states and transforms stamped after ``after`` [s] arrived."""
+    def wait_for_state(self, after: StateMark | None, timeout: float) -> bool:
+        """Wait until joint states and the base's transform arrived after ``after`` (an
+        outcome's mark; None: from now on). Arrival, not stamps: robot clocks may differ."""
         ...
 
     def joint_states(self) -> dict[str, float]:

@@ -36,12 +36,16 @@ class DriverProcess:
         fault: str = "none",
         ros_facts: Path | None = None,
         goal_log: Path | None = None,
+        controllers: str = "projection",
+        clock_offset: float = 0.0,
     ) -> None:
-        """``goal_log``: the driver appends each goal it receives there (``received_goals``)."""
+        """``goal_log``: the driver appends each goal it receives there (``received_goals``);
+        ``controllers="pr2"``: the real PR2's controllers; ``clock_offset`` [s] on stamps."""
         self.args = [
             sys.executable, "-m", "robocram.ros.driver", "--robot", robot,
             "--master-uri", master_uri, "--base-speed", str(base_speed),
             "--time-scale", str(time_scale), "--fault", fault,
+            "--controllers", controllers, "--clock-offset", str(clock_offset),
         ]  # fmt: skip
         if ros_facts is not None:
             self.args += ["--ros-facts", str(ros_facts)]

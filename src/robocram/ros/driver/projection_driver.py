@@ -5,7 +5,12 @@ servers named by the robot's ``ros_action/4`` facts move the projected robot (as
 ``goals.py`` says per action type), and ``/joint_states`` plus ``/tf`` (every robot link
 and object in ``map``) are published at ``PUBLISH_RATE`` and after every goal, before its
 result. ``fault`` makes every goal end badly on purpose, to exercise clients:
-``"silent"`` never answers (until cancelled), ``"abort"`` aborts with a status text.
+``"silent"`` never answers (until cancelled), ``"abort"`` aborts with a status text,
+``"ignore_cancel"`` never answers and ignores cancels. ``controllers="pr2"`` behaves as
+the real PR2's controllers (``pr2_controllers.py``: a gripper gap in metres that stalls
+on objects, joints clamped to the soft limits, results without status text);
+``clock_offset`` [s] shifts the stamps of everything published, as a robot clock ahead
+(+) or behind (-) of ours.
 """
 
 from __future__ import annotations
@@ -18,21 +23,24 @@ from pathlib import Path
 from typing import Any
 
 from robocram.projection import ProjectedRobot, WorldFrames
-from robocram.ros.driver import goals
+from robocram.ros.driver import goals, pr2_controllers
 from robocram.ros.driver.motion import MotionOptions, Stepper
 from robocram.ros.message_dicts import message_class, to_dict, to_message
 from robocram.ros.ros_config import RosConfig
 from robocram.world import World
 
 PUBLISH_RATE = 30.0  # [Hz]
-FAULTS = ("none", "silent", "abort")
+FAULTS = ("none", "silent", "abort", "ignore_cancel")
+CONTROLLERS = ("projection", "pr2")
 Handler = Callable[[Any, goals.GoalContext], goals.Outcome]
 
 
-def _handler(resource: str, action_type: str) -> Handler:
+def _handler(resource: str, action_type: str, config: RosConfig, controllers: str) -> Handler:
     if action_type == "control_msgs/GripperCommand":
         arm = resource.removeprefix("gripper(").removesuffix(")")
-        return partial(goals.gripper_command, arm=arm)
+        if controllers == "pr2":
+            return partial(pr2_controllers.gripper_command, arm=arm)
+        return partial(goals.gripper_command, semantics=config.grippers[arm])
     return {
         "move_base_msgs/MoveBase": goals.move_base,
         "control_msgs/FollowJointTrajectory": goals.follow_joint_trajectory,
@@ -51,11 +59,18 @@ class ProjectionDriver:
         options: MotionOptions | None = None,
         fault: str = "none",
         goal_log: Path | None = None,
+        controllers: str = "projection",
+        clock_offset: float = 0.0,
     ) -> None:
         """``goal_log``: a file each received goal is appended to, one JSON line
-        ``{"server", "action_type", "goal"}`` (goal as message dicts), before it runs."""
+        ``{"server", "action_type", "goal"}`` (goal as message dicts), before it runs.
+        ``controllers``: ``"projection"`` or ``"pr2"``; ``clock_offset`` [s]."""
         if fault not in FAULTS:
             raise ValueError(f"driver fault {fault!r} is none of {FAULTS}")
+        if controllers not in CONTROLLERS:
+            raise ValueError(f"driver controllers {controllers!r} are none of {CONTROLLERS}")
+        self.controllers = controllers
+        self.clock_offset = clock_offset
         self.world = world
         self.robot = ProjectedRobot.of(world, config.robot)
         self.config = config
@@ -63,6 +78,11 @@ class ProjectionDriver:
         self.fault = fault
         self.lock = threading.Lock()
         self.frames = WorldFrames(world)
+        self.soft_limits = (
+            pr2_controllers.soft_limits(self.robot.description.urdf)
+            if controllers == "pr2"
+            else None
+        )
         self._servers: list[Any] = []
         self._publishers: dict[str, Any] = {}
         self.goal_log = goal_log
@@ -86,7 +106,7 @@ class ProjectionDriver:
             action = actionlib.SimpleActionServer(
                 server, message_class(f"{action_type}Action"), auto_start=False
             )
-            handler = _handler(resource, action_type)
+            handler = _handler(resource, action_type, self.config, self.controllers)
             action.register_goal_callback(
                 partial(self._on_goal, action, server, action_type, handler)
             )
@@ -114,6 +134,10 @@ class ProjectionDriver:
 
         stepper = Stepper(self.lock, server.is_preempt_requested)
         result_type = f"{action_type}Result"
+        if self.fault == "ignore_cancel":  # a controller that never stops
+            while not rospy.is_shutdown():
+                rospy.sleep(0.02)
+            return
         if self.fault == "silent":
             while not server.is_preempt_requested() and not rospy.is_shutdown():
                 rospy.sleep(0.02)
@@ -136,7 +160,8 @@ class ProjectionDriver:
     def _handle(self, handler: Handler, goal: Any, stepper: Stepper) -> goals.Outcome:
         """Run the handler; an error in it aborts the goal with the error as status text."""
         try:
-            return handler(goal, goals.GoalContext(self.robot, self.options, stepper))
+            context = goals.GoalContext(self.robot, self.options, stepper, self.soft_limits)
+            return handler(goal, context)
         except Exception as err:  # reported to the client, never a goal left hanging
             return False, {}, f"driver error: {type(err).__name__}: {err}"
 
@@ -150,7 +175,7 @@ class ProjectionDriver:
         with self.lock:
             joints = self.world.joint_states(self.robot.name)
             poses = self.frames.frame_poses()
-        stamp = rospy.Time.now()
+        stamp = rospy.Time.now() + rospy.Duration.from_sec(self.clock_offset)
         state = JointState(name=list(joints), position=list(joints.values()))
         state.header.stamp = stamp
         transforms = []
