@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Collection, Mapping
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 from robocram.motion import (
     BasePath,
@@ -36,10 +36,12 @@ from robocram.world import World
 
 @dataclass(frozen=True)
 class ClampedGoal:
-    """A joint goal moved into the limits; ``culprits`` are ``joint: (asked, lower, upper)``."""
+    """A joint goal moved into the limits; ``culprits`` are ``joint: (asked, lower, upper)``
+    for goals beyond the hard limits, ``softened`` those only beyond the soft ones."""
 
-    goal: dict[str, float]  # [rad | m] within the limits
+    goal: dict[str, float]  # [rad | m] within the working (soft, else hard) limits
     culprits: dict[str, tuple[float, float, float]]
+    softened: dict[str, tuple[float, float]] = field(default_factory=dict)  # asked, sent
 
     def describe(self, robot: str) -> str:
         """What was clamped, in words."""
@@ -53,20 +55,35 @@ class ClampedGoal:
         )
 
 
+def _bounds(limits: tuple[float | None, float | None]) -> tuple[float, float]:
+    low, high = limits
+    return (-math.inf if low is None else low, math.inf if high is None else high)
+
+
 def clamp_goal(desc: LoadedDescription, goal: Mapping[str, float]) -> ClampedGoal:
-    """``goal`` with every value inside its joint's limits (a trajectory cannot leave them)."""
+    """``goal`` with every value inside its joint's working limits.
+
+    A real robot's controllers stop a joint at its ``<safety_controller>`` soft limits
+    (the PR2's), so the goal sent stays inside them. A value beyond the hard limits is
+    a culprit (the motion then fails, as in projection); a value between a soft and the
+    hard limit is moved to the soft limit and is no failure: the robot ends there.
+    """
     clamped: dict[str, float] = {}
     culprits: dict[str, tuple[float, float, float]] = {}
+    softened: dict[str, tuple[float, float]] = {}
     for joint, value in goal.items():
         spec = desc.model.joints.get(joint)
         if spec is None or not spec.movable:
             raise RosCommandError(f"{joint!r} is not a movable joint of {desc.name}")
-        low = spec.lower if spec.lower is not None else -math.inf
-        high = spec.upper if spec.upper is not None else math.inf
-        clamped[joint] = min(max(float(value), low), high)
-        if clamped[joint] != float(value):
-            culprits[joint] = (float(value), low, high)
-    return ClampedGoal(clamped, culprits)
+        asked = float(value)
+        low, high = _bounds((spec.lower, spec.upper))
+        soft_low, soft_high = _bounds(spec.working_limits)
+        clamped[joint] = min(max(asked, soft_low), soft_high)
+        if not low <= asked <= high:
+            culprits[joint] = (asked, low, high)
+        elif clamped[joint] != asked:
+            softened[joint] = (asked, clamped[joint])
+    return ClampedGoal(clamped, culprits, softened)
 
 
 class MotionPlanner:

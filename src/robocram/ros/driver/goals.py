@@ -152,6 +152,15 @@ def _at_goal(goal: Any, names: list[str], ctx: GoalContext) -> Outcome:
     return _trajectory_outcome(True, 0, text, ctx)
 
 
+def aborted_on_purpose(action_type: str, bare: bool) -> Outcome:
+    """The outcome of ``fault="abort"``: a status text, or (``bare``, as the real PR2's
+    trajectory controllers) only a trajectory result's error code and string."""
+    text = "the driver aborts every goal (fault='abort')"
+    if bare and action_type == "control_msgs/FollowJointTrajectory":
+        return False, {"error_code": GOAL_TOLERANCE_VIOLATED, "error_string": text}, ""
+    return False, {}, text
+
+
 def _tolerance(value: float) -> float | None:
     """A goal tolerance as control_msgs means it: 0 the default, negative none."""
     if value < 0.0:

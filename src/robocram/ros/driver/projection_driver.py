@@ -143,7 +143,7 @@ class ProjectionDriver:
                 rospy.sleep(0.02)
             outcome: goals.Outcome = None
         elif self.fault == "abort":
-            outcome = (False, {}, "the driver aborts every goal (fault='abort')")
+            outcome = goals.aborted_on_purpose(action_type, bare=self.controllers == "pr2")
         else:
             outcome = self._handle(handler, goal, stepper)
         self.publish_state()
