@@ -66,9 +66,8 @@ class RobotKinematics:
         joint = self.robot_model.joints[name]
         jm = self.model.joints[pin_id]
         continuous = jm.nq == 2
-        low, high = joint.working_limits  # the soft limits where the URDF has them
-        lower = -math.inf if continuous else float(low if low is not None else 0)
-        upper = math.inf if continuous else float(high if high is not None else 0)
+        lower = -math.inf if continuous else float(joint.lower if joint.lower is not None else 0)
+        upper = math.inf if continuous else float(joint.upper if joint.upper is not None else 0)
         self.joints[name] = JointInfo(name, pin_id, jm.idx_q, jm.idx_v, continuous, lower, upper)
 
     def joint(self, name: str) -> JointInfo:

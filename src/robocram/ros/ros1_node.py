@@ -127,8 +127,9 @@ class RosNode:
         with self._state:
             return (self._joint_arrivals, self._base_arrivals)
 
-    def op_send_goal(self, goal_id: int, server: str, goal: dict[str, Any]) -> None:
-        """Send a goal once the server is there; its end arrives as a ``goal`` message."""
+    def op_send_goal(self, goal_id: int, server: str, goal: dict[str, Any]) -> float:
+        """Send a goal once the server is there; its end arrives as a ``goal`` message.
+        Returns when it was sent (``time.monotonic()``)."""
         import rospy
 
         entry = self.servers.get(server)
@@ -142,8 +143,10 @@ class RosNode:
         entry.heard = time.monotonic()
         entry.goal_id = goal_id
         entry.client.send_goal(message, done_cb=lambda state, result: self._done(entry, goal_id))
+        return time.monotonic()
 
     def _done(self, entry: _Server, goal_id: int) -> None:
+        arrived = time.monotonic()
         mark = self._mark()  # state arriving from now on shows the end of the goal
         if entry.goal_id != goal_id:
             return
@@ -153,7 +156,7 @@ class RosNode:
         result = entry.client.get_result()
         payload = to_dict(result) if result is not None else {}
         text = entry.client.get_goal_status_text()
-        self.send(("goal", goal_id, state, text, payload, mark))
+        self.send(("goal", goal_id, state, text, payload, mark, arrived))
 
     def op_cancel(self, goal_id: int) -> None:
         """Cancel the goal if it still runs."""
@@ -205,7 +208,7 @@ class RosNode:
                     entry.goal_id = None
                     reason = f"no status from {entry.name} for {self.config.lost_after} s"
                     lost = GoalState.LOST.value
-                    self.send(("goal", goal_id, lost, reason, {}, self._mark()))
+                    self.send(("goal", goal_id, lost, reason, {}, self._mark(), now))
             time.sleep(MONITOR_PERIOD)
 
 

@@ -154,11 +154,12 @@ class Ros1Transport:
                     self._replies[request_id] = (ok, payload)
                     self._cond.notify_all()
             elif message[0] == "goal":
-                _, goal_id, state, text, result, mark = message
+                _, goal_id, state, text, result, mark, arrived = message
                 with self._cond:
                     handle = self._goals.pop(goal_id, None)
                 if handle is not None:
-                    handle.finish(GoalOutcome(GoalState(state), text, result, tuple(mark)))
+                    outcome = GoalOutcome(GoalState(state), text, result, tuple(mark), arrived)
+                    handle.finish(outcome)
             elif message[0] == "skew":
                 self._on_skew(float(message[1]))
         self._die("our ROS node process ended")
@@ -204,7 +205,7 @@ class Ros1Transport:
             self._goals[handle.goal_id] = handle
         wait = self.config.connect_timeout + REPLY_TIMEOUT
         try:
-            self.request("send_goal", handle.goal_id, server, goal, timeout=wait)
+            handle.sent = self.request("send_goal", handle.goal_id, server, goal, timeout=wait)
         except RosNodeError as err:
             with self._cond:
                 self._goals.pop(handle.goal_id, None)

@@ -39,6 +39,7 @@ class GoalOutcome:
     status_text: str
     result: RosDict
     mark: StateMark = (0, 0)
+    arrived: float = 0.0  # [s] time.monotonic() when our node got the result (benchmarks)
 
 
 @dataclass
@@ -47,6 +48,7 @@ class GoalHandle:
 
     goal_id: int
     server: str
+    sent: float = 0.0  # [s] time.monotonic() when our node handed the goal to ROS
     done: threading.Condition = field(default_factory=threading.Condition)
     outcome: GoalOutcome | None = None
 

@@ -36,7 +36,7 @@ _GRIPPER_LINKS = (
 # Arms folded beside the torso, out of the way for driving; the left arm mirrors the right.
 # CRAM parks the wrist flex at -0.07; the PR2's safety controller stops it at its soft upper
 # limit -0.1 (pr2_description), so parking asks for that.
-_RIGHT_PARKING = (-1.712, -0.256, -1.463, -2.12, 1.766, -0.1, 0.051)
+_RIGHT_PARKING = (-1.712, -0.256, -1.463, -2.12, 1.766, -0.07, 0.051)
 # Hand in front of the chest, wrist level: holds an object while the base moves.
 _RIGHT_CARRYING = (-0.5, 0.0, -0.3, -1.8, 0.0, -0.3, 0.0)
 # Mirroring across the sagittal plane flips the sign of joints about x and z axes.

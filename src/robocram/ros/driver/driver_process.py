@@ -65,12 +65,19 @@ class DriverProcess:
 
     def received_goals(self, server: str | None = None) -> list[dict[str, Any]]:
         """The goals the driver received so far (of ``server``, or all), oldest first."""
+        return [e["goal"] for e in self._log_entries(server) if "goal" in e]
+
+    def cancels_seen(self, server: str | None = None) -> list[float]:
+        """When cancels reached the driver's servers (``time.monotonic()``), oldest first."""
+        return [e["cancel_seen"] for e in self._log_entries(server) if "cancel_seen" in e]
+
+    def _log_entries(self, server: str | None) -> list[dict[str, Any]]:
         if self.goal_log is None:
             raise RosNodeError("the driver keeps no goal log; start it with goal_log=PATH")
         if not self.goal_log.exists():
             return []
         entries = [json.loads(line) for line in self.goal_log.read_text().splitlines() if line]
-        return [e["goal"] for e in entries if server is None or e["server"] == server]
+        return [e for e in entries if server is None or e["server"] == server]
 
     def start(self) -> DriverProcess:
         """Start the node and wait for its ``ready`` line."""

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import json
 import threading
+import time
 from collections.abc import Callable
 from functools import partial
 from pathlib import Path
@@ -110,6 +111,7 @@ class ProjectionDriver:
             action.register_goal_callback(
                 partial(self._on_goal, action, server, action_type, handler)
             )
+            action.register_preempt_callback(partial(self._on_preempt, server))
             action.start()
             self._servers.append(action)
         rospy.Timer(rospy.Duration(1.0 / PUBLISH_RATE), lambda _: self.publish_state())
@@ -120,6 +122,14 @@ class ProjectionDriver:
         threading.Thread(
             target=self._execute, args=(server, action_type, handler, goal), daemon=True
         ).start()
+
+    def _on_preempt(self, server: str) -> None:
+        """Log when a cancel reached the server (``time.monotonic()``, for benchmarks)."""
+        if self.goal_log is None:
+            return
+        line = json.dumps({"server": server, "cancel_seen": time.monotonic()})
+        with self._log_lock, self.goal_log.open("a") as log:
+            log.write(line + "\n")
 
     def _record(self, server: str, action_type: str, goal: Any) -> None:
         """Append the goal to the goal log, if there is one."""
