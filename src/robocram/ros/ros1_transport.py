@@ -142,12 +142,18 @@ class Ros1Transport:
         self._reader.start()
 
     def _read(self) -> None:
+        try:
+            self._route()
+        finally:  # also when a message could not be read: never leave a caller waiting
+            self._die("our ROS node process ended")
+
+    def _route(self) -> None:
         assert self._conn is not None
         while True:
             try:
                 message = self._conn.recv()
             except (EOFError, OSError):
-                break
+                return
             if message[0] == "reply":
                 _, request_id, ok, payload = message
                 with self._cond:
@@ -162,7 +168,6 @@ class Ros1Transport:
                     handle.finish(outcome)
             elif message[0] == "skew":
                 self._on_skew(float(message[1]))
-        self._die("our ROS node process ended")
 
     def _die(self, reason: str) -> None:
         with self._cond:
