@@ -5,6 +5,7 @@ limits, results without status text, and a robot clock 10 s off ours."""
 from __future__ import annotations
 
 import logging
+import re
 from pathlib import Path
 
 import pytest
@@ -116,3 +117,48 @@ def test_no_master_is_a_typed_error_naming_the_uri(roscore: Roscore) -> None:
     assert uri in str(error.value)
     assert "0.5 s" in str(error.value)
     assert "start roscore" in str(error.value)
+
+
+NATIVE = """
+ros_action(pr2, navigation, '/move_base', 'move_base_msgs/MoveBase').
+ros_action(pr2, torso, '/torso_controller/position_joint_action',
+           'pr2_controllers_msgs/SingleJointPosition').
+ros_action(pr2, arm(left), '/l_arm_controller/joint_trajectory_action',
+           'pr2_controllers_msgs/JointTrajectory').
+ros_action(pr2, arm(right), '/r_arm_controller/joint_trajectory_action',
+           'pr2_controllers_msgs/JointTrajectory').
+ros_action(pr2, head, '/head_traj_controller/point_head_action', 'pr2_controllers_msgs/PointHead').
+ros_action(pr2, gripper(left), '/l_gripper_controller/gripper_action',
+           'pr2_controllers_msgs/Pr2GripperCommand').
+ros_action(pr2, gripper(right), '/r_gripper_controller/gripper_action',
+           'pr2_controllers_msgs/Pr2GripperCommand').
+ros_action(pr2, perception, '/robocram/detect_objects', 'robocram_msgs/DetectObjects').
+"""
+
+
+def _native_facts() -> str:
+    """The PR2's facts with its native pr2_controllers_msgs action servers."""
+    rest = re.sub(r"ros_action\(pr2,[^.]*\)\.\s*", "", default_facts("pr2"))
+    return NATIVE + rest
+
+
+def test_pick_up_succeeds_on_the_pr2s_native_action_types(roscore: Roscore, tmp_path: Path) -> None:
+    facts = tmp_path / "pr2_native.pl"
+    facts.write_text(_native_facts())
+    log = tmp_path / "goals.jsonl"
+    look = tabletop_scene("pr2").look_target
+    with (
+        DriverProcess(roscore.uri, controllers="pr2", ros_facts=facts, goal_log=log) as driver,
+        ros_robot("pr2", roscore.uri, facts.read_text()) as run,
+    ):
+        result = pick_up(look)
+        mug = run.transforms.lookup("map", "mug-1")
+        torso = driver.received_goals("/torso_controller/position_joint_action")
+        arm = driver.received_goals("/r_arm_controller/joint_trajectory_action")
+    assert run.tree.root.status.name == "SUCCEEDED"
+    assert result.arm == "right"
+    assert mug.position[2] > look.position[2] + 0.09  # lifted
+    assert torso and set(torso[0]) == {"position", "min_duration", "max_velocity"}
+    assert torso[-1]["position"] == pytest.approx(0.305)  # the soft limit, not 0.31
+    assert arm and set(arm[0]) == {"trajectory"}  # no control_msgs tolerances
+    assert len(arm[0]["trajectory"]["points"]) > 2  # a timed trajectory, not one point

@@ -128,7 +128,7 @@ class PtuPM(RosProcessModule):
         target = self._target(mode, goal)
         failure = lambda text: PtuGoalNotReached(text, target=target)  # noqa: E731
         interface = client.config.action("head")
-        if interface.action_type == "control_msgs/PointHead":
+        if interface.action_type.endswith("/PointHead"):  # control_msgs or the PR2's own
             x, y, z = target
             camera = client.desc.cameras[0].frame
             point_head = {

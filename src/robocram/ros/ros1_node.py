@@ -50,7 +50,13 @@ class NodeConfig:
 
 
 class _Server:
-    """One action server: its actionlib client and when its status was last heard."""
+    """One action server: its actionlib client, the running goal's handle and when the
+    server's status was last heard.
+
+    actionlib's ``ActionClient`` with one goal handle per goal, not ``SimpleActionClient``:
+    the simple client shares one state between consecutive goals, and a goal sent right
+    after the previous one ended can lose its DONE transition to the old goal's.
+    """
 
     def __init__(self, name: str, action_type: str) -> None:
         import actionlib
@@ -59,7 +65,8 @@ class _Server:
 
         self.name = name
         self.action_type = action_type
-        self.client = actionlib.SimpleActionClient(name, message_class(f"{action_type}Action"))
+        self.client = actionlib.ActionClient(name, message_class(f"{action_type}Action"))
+        self.handle: Any = None  # actionlib's ClientGoalHandle of the running goal
         self.heard = 0.0  # monotonic [s]
         self.goal_id: int | None = None
         self._status = rospy.Subscriber(f"{name}/status", GoalStatusArray, self._on_status)
@@ -141,28 +148,38 @@ class RosNode:
             )
         message = to_message(f"{entry.action_type}Goal", goal)
         entry.heard = time.monotonic()
-        entry.goal_id = goal_id
-        entry.client.send_goal(message, done_cb=lambda state, result: self._done(entry, goal_id))
+        with self._state:
+            entry.goal_id = goal_id
+            entry.handle = entry.client.send_goal(
+                message, transition_cb=lambda handle: self._transition(entry, goal_id, handle)
+            )
         return time.monotonic()
 
-    def _done(self, entry: _Server, goal_id: int) -> None:
+    def _transition(self, entry: _Server, goal_id: int, handle: Any) -> None:
+        """Report the goal's end once its handle is DONE (each goal has its own handle)."""
+        from actionlib import CommState
+
+        if handle.get_comm_state() != CommState.DONE:
+            return
         arrived = time.monotonic()
         mark = self._mark()  # state arriving from now on shows the end of the goal
-        if entry.goal_id != goal_id:
-            return
-        entry.goal_id = None
-        code = entry.client.get_state()
+        with self._state:
+            if entry.goal_id != goal_id:
+                return
+            entry.goal_id, entry.handle = None, None
+        code = handle.get_goal_status()
         state = code if code in TERMINAL else GoalState.LOST.value
-        result = entry.client.get_result()
+        result = handle.get_result()
         payload = to_dict(result) if result is not None else {}
-        text = entry.client.get_goal_status_text()
+        text = handle.get_goal_status_text()
         self.send(("goal", goal_id, state, text, payload, mark, arrived))
 
     def op_cancel(self, goal_id: int) -> None:
         """Cancel the goal if it still runs."""
         for entry in self.servers.values():
-            if entry.goal_id == goal_id:
-                entry.client.cancel_goal()
+            handle = entry.handle
+            if entry.goal_id == goal_id and handle is not None:
+                handle.cancel()
 
     def op_joint_states(self) -> dict[str, float]:
         """The latest joint positions."""

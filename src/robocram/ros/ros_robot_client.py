@@ -18,6 +18,7 @@ from robocram.ros.motion_planner import MotionPlanner, clamp_goal
 from robocram.ros.ros1_node import NodeConfig
 from robocram.ros.ros1_transport import Ros1Transport
 from robocram.ros.ros_config import RosConfig
+from robocram.ros.trajectory_goal import trajectory_goal
 from robocram.ros.transport import GoalOutcome, RosDict, Transport
 from robocram.tf import Pose, PoseLike, PoseStamped
 from robocram.world import World
@@ -171,15 +172,34 @@ class RosRobotClient:
     def follow_trajectory(
         self, resource: str, trajectory: JointTrajectory, failure: FailureFactory
     ) -> GoalOutcome:
-        """Send ``trajectory`` whole as a ``FollowJointTrajectory`` goal with the goal
-        tolerances of the robot's facts; report it to the trajectory listeners once done."""
-        goal = {
-            "trajectory": trajectory.to_ros(),
-            **self.config.goal_tolerances.to_ros(trajectory.joint_names),
-        }
+        """Send ``trajectory`` as the goal of ``resource``'s action type, then check the
+        joints reached against the goal tolerances; report it to the trajectory listeners.
+
+        ``control_msgs/FollowJointTrajectory`` goals carry the tolerances of the robot's
+        facts; the PR2's native ``JointTrajectory`` takes the trajectory alone and
+        ``SingleJointPosition`` the last position and the duration. Whatever the type,
+        a joint ending beyond its tolerance raises ``failure`` naming it.
+        """
+        interface = self.config.action(resource)
+        goal = trajectory_goal(interface.action_type, trajectory, self.config.goal_tolerances)
         outcome = self.run(resource, goal, failure)
+        self._check_reached(trajectory, failure)
         report_executed(trajectory)
         return outcome
+
+    def _check_reached(self, trajectory: JointTrajectory, failure: FailureFactory) -> None:
+        reached = self.joint_states()
+        tolerances = self.config.goal_tolerances
+        beyond = {
+            joint: (reached[joint], goal, tolerances.position(joint))
+            for joint, goal in trajectory.end.items()
+            if joint in reached and abs(reached[joint] - goal) > tolerances.position(joint)
+        }
+        if beyond:
+            raise failure(
+                f"{self.name}'s joints ended beyond their goal tolerances (reached, goal, "
+                f"tolerance): {beyond}; the controller reported success"
+            )
 
     def joint_states(self) -> dict[str, float]:
         """The latest joint positions [rad | m]."""

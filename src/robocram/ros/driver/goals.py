@@ -126,10 +126,28 @@ def follow_joint_trajectory(goal: Any, ctx: GoalContext) -> Outcome:
     return _at_goal(goal, names, ctx)
 
 
+def single_joint_position(goal: Any, ctx: GoalContext, joint: str) -> Outcome:
+    """``pr2_controllers_msgs/SingleJointPosition`` (the PR2's torso): move ``joint`` to the
+    position over ``min_duration``; the result has no fields, the status text says more."""
+    target = _soft_clamped({joint: float(goal.position)}, ctx)
+    with ctx.stepper.lock:
+        duration, step = joint_motion(ctx.robot, target, goal.min_duration.to_sec(), ctx.options)
+    if not ctx.stepper.run(duration, step):
+        return None
+    with ctx.stepper.lock:
+        clamped = ctx.robot.world.set_joint_states(ctx.robot.name, target)
+        reached = ctx.robot.world.joint_states(ctx.robot.name)[joint]
+    if clamped:
+        return False, {}, f"{joint}={goal.position} outside the limits; stopped at {reached}"
+    return True, {}, f"{joint} at {reached:.4f}"
+
+
 def _at_goal(goal: Any, names: list[str], ctx: GoalContext) -> Outcome:
-    """Compare the joints with the last point within each joint's goal tolerance."""
+    """Compare the joints with the last point within each joint's goal tolerance (the
+    PR2's native JointTrajectory goal has none: each joint gets the default)."""
     last = dict(zip(names, map(float, goal.trajectory.points[-1].positions), strict=True))
-    tolerances = {t.name: float(t.position) for t in goal.goal_tolerance}
+    given = getattr(goal, "goal_tolerance", [])
+    tolerances = {t.name: float(t.position) for t in given}
     with ctx.stepper.lock:
         reached = ctx.robot.world.joint_states(ctx.robot.name)
     errors = {j: abs(reached[j] - last[j]) for j in names}

@@ -24,6 +24,7 @@ from pathlib import Path
 from typing import Any
 
 from robocram.projection import ProjectedRobot, WorldFrames
+from robocram.robots import load_description
 from robocram.ros.driver import goals, pr2_controllers
 from robocram.ros.driver.motion import MotionOptions, Stepper
 from robocram.ros.message_dicts import message_class, to_dict, to_message
@@ -37,17 +38,31 @@ Handler = Callable[[Any, goals.GoalContext], goals.Outcome]
 
 
 def _handler(resource: str, action_type: str, config: RosConfig, controllers: str) -> Handler:
-    if action_type == "control_msgs/GripperCommand":
+    if action_type.endswith("GripperCommand"):  # control_msgs' or the PR2's Pr2GripperCommand
         arm = resource.removeprefix("gripper(").removesuffix(")")
         if controllers == "pr2":
             return partial(pr2_controllers.gripper_command, arm=arm)
         return partial(goals.gripper_command, semantics=config.grippers[arm])
+    if action_type == "pr2_controllers_msgs/SingleJointPosition":
+        joint = load_description(config.robot).torso_joint
+        if resource != "torso" or joint is None:
+            raise ValueError(f"the driver serves SingleJointPosition for a torso, not {resource}")
+        return partial(goals.single_joint_position, joint=joint)
     return {
         "move_base_msgs/MoveBase": goals.move_base,
         "control_msgs/FollowJointTrajectory": goals.follow_joint_trajectory,
+        "pr2_controllers_msgs/JointTrajectory": goals.follow_joint_trajectory,
         "control_msgs/PointHead": goals.point_head,
+        "pr2_controllers_msgs/PointHead": goals.point_head,
         "robocram_msgs/DetectObjects": goals.detect_objects,
     }[action_type]
+
+
+def _result(result_type: str, fields: dict[str, Any]) -> Any:
+    """The result message with the fields its type has (the PR2's trajectory results have
+    none: their controllers report only by the goal status)."""
+    slots = message_class(result_type).__slots__
+    return to_message(result_type, {k: v for k, v in fields.items() if k in slots})
 
 
 class ProjectionDriver:
@@ -161,7 +176,7 @@ class ProjectionDriver:
             server.set_preempted(to_message(result_type, {}), "cancelled; stopped where it was")
             return
         succeeded, result, text = outcome
-        message = to_message(result_type, result)
+        message = _result(result_type, result)
         if succeeded:
             server.set_succeeded(message, text)
         else:
