@@ -20,6 +20,7 @@ mark)``; ``("skew", seconds)`` once. A goal whose server publishes no status for
 from __future__ import annotations
 
 import os
+import sys
 import threading
 import time
 from dataclasses import dataclass
@@ -264,3 +265,10 @@ def node_main(conn: Connection, config: NodeConfig) -> None:
         else:
             _handle(node, request_id, op, args)
     rospy.signal_shutdown("robocram environment exited")
+
+
+def child_main() -> None:
+    """The node process's entry (``Ros1Transport``): the pipe's file descriptor is the
+    first argument, the :class:`NodeConfig` its first message."""
+    conn = Connection(int(sys.argv[1]))
+    node_main(conn, conn.recv())

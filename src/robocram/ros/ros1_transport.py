@@ -1,7 +1,9 @@
 """The ROS 1 transport: our node in a child process, spoken to over a pipe.
 
-``Ros1Transport.open(config)`` starts the child (``ros1_node.node_main``) and one reader
-thread that routes replies to the waiting callers and goal ends to their handles.
+``Ros1Transport.open(config)`` first asks the master (``RosMasterUnreachable`` within
+``master_timeout``), then starts the child, a fresh interpreter running only
+``ros1_node.child_main`` on one end of a socket pair, and one reader thread that routes
+replies to the waiting callers and goal ends to their handles.
 ``close()`` cancels running goals, asks the node to leave ROS, joins the reader thread
 and the process (killing it by PID if it does not end), so nothing keeps running. If the
 child dies, every running goal ends LOST and every request raises, never hangs.
@@ -13,7 +15,10 @@ import contextlib
 import http.client
 import itertools
 import logging
-import multiprocessing
+import os
+import socket
+import subprocess
+import sys
 import threading
 import time
 import xmlrpc.client
@@ -22,7 +27,7 @@ from multiprocessing.connection import Connection
 from typing import Any
 
 from robocram.ros.errors import RosConnectionLost, RosMasterUnreachable, RosNodeError
-from robocram.ros.ros1_node import NodeConfig, node_main
+from robocram.ros.ros1_node import NodeConfig
 from robocram.ros.transport import GoalHandle, GoalOutcome, GoalState, RosDict, StateMark
 from robocram.tf import Pose
 
@@ -31,6 +36,7 @@ START_TIMEOUT = 30.0  # [s] for the child to import rospy and join a master that
 REPLY_TIMEOUT = 10.0  # [s] for a request that does not wait on the robot
 STOP_TIMEOUT = 5.0  # [s] for the child to leave ROS before it is killed
 MASTER_RETRY = 0.2  # [s] between asking an absent master again
+CHILD_CODE = "from robocram.ros.ros1_node import child_main; child_main()"
 
 
 def wait_for_master(uri: str, timeout: float) -> None:
@@ -89,7 +95,7 @@ class Ros1Transport:
         self._send_lock = threading.Lock()
         self._dead: str | None = None
         self._conn: Connection | None = None
-        self._process: multiprocessing.process.BaseProcess | None = None
+        self._process: subprocess.Popen[bytes] | None = None
         self._reader: threading.Thread | None = None
         self.node_name = ""
         self.clock_skew: float | None = None  # [s] robot stamps minus our clock, measured once
@@ -116,13 +122,18 @@ class Ros1Transport:
 
     def _start(self) -> None:
         wait_for_master(self.config.master_uri, self.config.master_timeout)
-        context = multiprocessing.get_context("spawn")
-        parent, child = context.Pipe()
-        self._process = context.Process(
-            target=node_main, args=(child, self.config), name="robocram-ros-node"
+        ours, theirs = socket.socketpair()
+        # A fresh interpreter running only our node: multiprocessing's spawn would import
+        # the caller's main script again (the whole plan side) before the node starts.
+        env = dict(os.environ, PYTHONPATH=os.pathsep.join(p for p in sys.path if p))
+        self._process = subprocess.Popen(
+            [sys.executable, "-c", CHILD_CODE, str(theirs.fileno())],
+            pass_fds=(theirs.fileno(),),
+            env=env,
         )
-        self._process.start()
-        child.close()
+        theirs.close()
+        parent = Connection(ours.detach())
+        parent.send(self.config)
         self._conn = parent
         if not parent.poll(START_TIMEOUT):
             self._kill()
@@ -258,10 +269,11 @@ class Ros1Transport:
     def _kill(self) -> None:
         process = self._process
         if process is not None:
-            process.join(STOP_TIMEOUT)
-            if process.is_alive():
+            try:
+                process.wait(STOP_TIMEOUT)
+            except subprocess.TimeoutExpired:
                 process.kill()
-                process.join()
+                process.wait()
         if self._conn is not None:
             self._conn.close()
         if self._reader is not None and self._reader is not threading.current_thread():
