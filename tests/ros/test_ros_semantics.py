@@ -18,7 +18,7 @@ from robocram.execution.failures import (
     TorsoGoalNotReached,
 )
 from robocram.ros import RosConnectionLost, Roscore, ros_robot
-from robocram.ros.driver.driver_process import DriverProcess
+from robocram.ros_driver.driver_process import DriverProcess
 from robocram.ros.ros_config import default_facts
 from robocram.tf import Pose
 

@@ -17,7 +17,7 @@ from robocram.execution import perform
 from robocram.execution.failures import ManipulationPathBlocked, NavigationPathBlocked
 from robocram.motion import JointTrajectory, MotionSettings, trajectory_listener
 from robocram.ros import Roscore, ros_robot
-from robocram.ros.driver.driver_process import DriverProcess
+from robocram.ros_driver.driver_process import DriverProcess
 from robocram.scenes import tabletop_scene
 from robocram.tf import Pose
 from robocram.world import World

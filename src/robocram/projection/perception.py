@@ -10,24 +10,14 @@ name, type and pose in the robot's base frame, equated with the one asked for; w
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from robocram.designators import ObjectDesignator, Quantifier
+from robocram.designators.perceived_object import PerceivedObject
 from robocram.execution.failures import PerceptionObjectNotFound
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.tf import PoseStamped
 from robocram.world import WorldObject
 
 FILTER_KEYS = ("type", "name")
-
-
-@dataclass(frozen=True)
-class PerceivedObject:
-    """What perception attaches to a designator: the object and its pose in the base frame."""
-
-    name: str
-    type: str
-    pose: PoseStamped
 
 
 def _matches(designator: ObjectDesignator, obj: WorldObject) -> bool:

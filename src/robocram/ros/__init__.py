@@ -4,7 +4,7 @@
 process modules that send ``move_base``, ``FollowJointTrajectory``, ``PointHead``,
 ``GripperCommand`` and our ``DetectObjects`` goals, with controller names from the
 robot's ROS facts. Our ROS node runs in a child process behind the :class:`Transport`
-interface. ``python -m robocram.ros.driver`` serves the same interfaces from a projection
+interface. ``python -m robocram.ros_driver`` serves the same interfaces from a projection
 world. Importing this package without the extra raises :class:`RosExtraMissing`.
 """
 

@@ -13,6 +13,7 @@ from typing import Any
 import numpy as np
 
 from robocram.designators import ObjectDesignator, Quantifier
+from robocram.designators.perceived_object import PerceivedObject
 from robocram.execution import MotionProcessModule
 from robocram.execution.failures import (
     GripperClosedCompletely,
@@ -23,7 +24,6 @@ from robocram.execution.failures import (
     PtuGoalNotReached,
     TorsoGoalNotReached,
 )
-from robocram.projection import PerceivedObject
 from robocram.ros.errors import RosCommandError
 from robocram.ros.head_aim import pan_tilt_towards
 from robocram.ros.ros_robot_client import RosRobotClient

@@ -25,8 +25,8 @@ from typing import Any
 
 from robocram.projection import ProjectedRobot, WorldFrames
 from robocram.robots import load_description
-from robocram.ros.driver import goals, pr2_controllers
-from robocram.ros.driver.motion import MotionOptions, Stepper
+from robocram.ros_driver import goals, pr2_controllers
+from robocram.ros_driver.motion import MotionOptions, Stepper
 from robocram.ros.message_dicts import message_class, to_dict, to_message
 from robocram.ros.ros_config import RosConfig
 from robocram.world import World

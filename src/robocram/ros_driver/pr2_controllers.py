@@ -22,7 +22,7 @@ from xml.etree import ElementTree
 
 from robocram.execution.failures import GripperClosedCompletely
 from robocram.projection.gripper import grip, gripper_joints, release, set_gripper
-from robocram.ros.driver.goals import GoalContext, Outcome
+from robocram.ros_driver.goals import GoalContext, Outcome
 
 GAP_AT_UPPER = 0.09  # [m] the gap of pr2_description's gripper_joint at its upper limit
 GAP_SOFT_UPPER = 0.088  # [m] its safety_controller soft_upper_limit

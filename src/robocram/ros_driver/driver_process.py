@@ -25,7 +25,7 @@ STOP_TIMEOUT = 10.0  # [s]
 
 
 class DriverProcess:
-    """``python -m robocram.ros.driver`` with the given options, as a context manager."""
+    """``python -m robocram.ros_driver`` with the given options, as a context manager."""
 
     def __init__(
         self,
@@ -42,7 +42,7 @@ class DriverProcess:
         """``goal_log``: the driver appends each goal it receives there (``received_goals``);
         ``controllers="pr2"``: the real PR2's controllers; ``clock_offset`` [s] on stamps."""
         self.args = [
-            sys.executable, "-m", "robocram.ros.driver", "--robot", robot,
+            sys.executable, "-m", "robocram.ros_driver", "--robot", robot,
             "--master-uri", master_uri, "--base-speed", str(base_speed),
             "--time-scale", str(time_scale), "--fault", fault,
             "--controllers", controllers, "--clock-offset", str(clock_offset),

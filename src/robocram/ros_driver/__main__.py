@@ -1,6 +1,6 @@
 """Run the projection driver as a ROS node on the tabletop scene of a robot.
 
-``python -m robocram.ros.driver --robot pr2 --master-uri http://127.0.0.1:11311``
+``python -m robocram.ros_driver --robot pr2 --master-uri http://127.0.0.1:11311``
 prints ``ready <node name>`` on stdout once its action servers run, then serves until
 killed (SIGTERM or SIGINT) or the master goes away.
 """
@@ -12,8 +12,8 @@ import os
 from pathlib import Path
 
 from robocram.robots import load_description
-from robocram.ros.driver.motion import MotionOptions
-from robocram.ros.driver.projection_driver import CONTROLLERS, FAULTS, ProjectionDriver
+from robocram.ros_driver.motion import MotionOptions
+from robocram.ros_driver.projection_driver import CONTROLLERS, FAULTS, ProjectionDriver
 from robocram.ros.ros_config import install_ros_facts, read_ros_config
 from robocram.scenes import tabletop_scene
 from robocram.world import World
