@@ -23,11 +23,11 @@ from robocram.execution.failures import TorsoGoalNotReached
 from robocram.logic import current_kb
 from robocram.projection import simulated_robot
 from robocram.ros import Roscore, RosMasterUnreachable, ros_robot
-from robocram.ros_driver.driver_process import DriverProcess
 from robocram.ros.goal_runner import checked
 from robocram.ros.ros_robot_client import RosRobotClient
 from robocram.ros.roscore import free_port
 from robocram.ros.transport import GoalHandle, GoalOutcome
+from robocram.ros_driver.driver_process import DriverProcess
 from robocram.scenes import tabletop_scene
 from robocram.tf import Pose, PoseStamped
 

@@ -19,9 +19,9 @@ from robocram.execution.failures import (
 )
 from robocram.plans import pick_up
 from robocram.ros import RosCancelIgnored, Roscore, RosMasterUnreachable, ros_robot
-from robocram.ros_driver.driver_process import DriverProcess
 from robocram.ros.ros_config import default_facts
 from robocram.ros.roscore import free_port
+from robocram.ros_driver.driver_process import DriverProcess
 from robocram.scenes import tabletop_scene
 from robocram.tf import Pose
 

@@ -18,8 +18,8 @@ from robocram.execution.failures import (
     TorsoGoalNotReached,
 )
 from robocram.ros import RosConnectionLost, Roscore, ros_robot
-from robocram.ros_driver.driver_process import DriverProcess
 from robocram.ros.ros_config import default_facts
+from robocram.ros_driver.driver_process import DriverProcess
 from robocram.tf import Pose
 
 FAR = Pose((-4.0, 3.0, 0.0))  # [m] free floor, far from the robot at the origin

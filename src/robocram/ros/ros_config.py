@@ -141,7 +141,8 @@ def read_ros_config(kb: KnowledgeBase, desc: RobotDescription) -> RosConfig:
         answers = []
     for answer in answers:
         interface = _interface(kb, robot, answer)
-        actions[interface.resource] = interface
+        actions.setdefault(interface.resource, interface)  # the first answer wins, as for
+        # every ROS fact: facts put before the defaults override them
     topic = _first(kb, "ros_topic(R, joint_states, T)", R=robot)
     if topic is None:
         raise RosConfigError(f"{robot} lacks the fact ros_topic({robot}, joint_states, Topic)")

@@ -12,9 +12,9 @@ import os
 from pathlib import Path
 
 from robocram.robots import load_description
+from robocram.ros.ros_config import install_ros_facts, read_ros_config
 from robocram.ros_driver.motion import MotionOptions
 from robocram.ros_driver.projection_driver import CONTROLLERS, FAULTS, ProjectionDriver
-from robocram.ros.ros_config import install_ros_facts, read_ros_config
 from robocram.scenes import tabletop_scene
 from robocram.world import World
 

@@ -20,9 +20,9 @@ from robocram.projection.gripper import grip, gripper_joints, open_gripper, set_
 from robocram.projection.navigation import drive
 from robocram.projection.neck import look_at
 from robocram.projection.perception import visible_matches
-from robocram.ros_driver.motion import MotionOptions, Stepper, base_motion, joint_motion
 from robocram.ros.gripper_semantics import GripperSemantics
 from robocram.ros.transport import GoalState
+from robocram.ros_driver.motion import MotionOptions, Stepper, base_motion, joint_motion
 from robocram.tf import Pose, PoseStamped, pose_stamped_to_ros
 
 Outcome = tuple[bool, dict[str, Any], str] | None

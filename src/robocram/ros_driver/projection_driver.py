@@ -25,10 +25,10 @@ from typing import Any
 
 from robocram.projection import ProjectedRobot, WorldFrames
 from robocram.robots import load_description
-from robocram.ros_driver import goals, pr2_controllers
-from robocram.ros_driver.motion import MotionOptions, Stepper
 from robocram.ros.message_dicts import message_class, to_dict, to_message
 from robocram.ros.ros_config import RosConfig
+from robocram.ros_driver import goals, pr2_controllers
+from robocram.ros_driver.motion import MotionOptions, Stepper
 from robocram.world import World
 
 PUBLISH_RATE = 30.0  # [Hz]
