@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 
 from robocram.designators import a
-from robocram.execution import perform
+from robocram.execution import perform, pursue, sleep
 from robocram.execution.failures import (
     ActionlibActionTimedOut,
     GripperClosedCompletely,
@@ -106,6 +106,7 @@ def test_a_cancel_the_server_ignores_raises_that_the_robot_may_still_move(
         perform(a.motion(type="going", target=a.location(pose=Pose((-1.0, 0.0, 0.0)))))
     assert failure.value.server == "/move_base"
     assert failure.value.timeout == 0.5
+    assert failure.value.stopping is False  # the goal's time ran out; nothing stopped it
     assert "may still be moving" in str(failure.value)
     assert not isinstance(failure.value, ActionlibActionTimedOut)
 
@@ -162,3 +163,17 @@ def test_pick_up_succeeds_on_the_pr2s_native_action_types(roscore: Roscore, tmp_
     assert torso[-1]["position"] == pytest.approx(0.305)  # the soft limit, not 0.31
     assert arm and set(arm[0]) == {"trajectory"}  # no control_msgs tolerances
     assert len(arm[0]["trajectory"]["points"]) > 2  # a timed trajectory, not one point
+
+
+def test_a_stopped_task_whose_cancel_is_ignored_does_not_end_silently(roscore: Roscore) -> None:
+    facts = "ros_cancel_timeout(pr2, 0.5).\n" + default_facts("pr2")
+    far = a.location(pose=Pose((-1.0, 0.0, 0.0)))
+    with (
+        DriverProcess(roscore.uri, fault="ignore_cancel"),
+        pytest.raises(RosCancelIgnored) as failure,
+        ros_robot("pr2", roscore.uri, facts),
+    ):
+        pursue(lambda: perform(a.motion(type="going", target=far)), lambda: sleep(0.3))
+    assert failure.value.server == "/move_base"
+    assert "may still be moving" in str(failure.value)
+    assert failure.value.stopping

@@ -50,6 +50,7 @@ class RosCancelIgnored(LowLevelFailure):
 
     server: str | None = None
     timeout: float | None = None  # [s] waited for the confirmation
+    stopping: bool | None = None  # the cancel came from a stopped task (not a timeout)
     summary = "the action server ignored a cancel; the robot may still be moving"
     hint = (
         "stop the robot by its own means (run-stop), check its controller, then retry; "

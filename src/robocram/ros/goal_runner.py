@@ -40,7 +40,11 @@ def _wait(handle: GoalHandle, timeout: float | None) -> bool:
 
 
 def _cancel_and_wait(
-    transport: Transport, interface: ActionInterface, handle: GoalHandle, settle: Settle
+    transport: Transport,
+    interface: ActionInterface,
+    handle: GoalHandle,
+    settle: Settle,
+    stopping: bool,
 ) -> None:
     """Cancel, wait for the server's confirmation, then for the state after it.
 
@@ -58,6 +62,7 @@ def _cancel_and_wait(
             f"{interface.cancel_timeout} s: the robot may still be moving",
             server=interface.server,
             timeout=interface.cancel_timeout,
+            stopping=stopping,
         )
     if handle.outcome is not None and handle.outcome.state is not GoalState.LOST:
         settle(handle.outcome)
@@ -99,10 +104,10 @@ def finish_goal(
     try:
         finished = _wait(handle, interface.timeout)
     except TaskStopped:
-        _cancel_and_wait(transport, interface, handle, settle)
+        _cancel_and_wait(transport, interface, handle, settle, stopping=True)
         raise
     if not finished:
-        _cancel_and_wait(transport, interface, handle, settle)
+        _cancel_and_wait(transport, interface, handle, settle, stopping=False)
         raise ActionlibActionTimedOut(
             f"the goal to {interface.server} ({interface.resource}) did not finish within "
             f"{interface.timeout} s; it was cancelled",

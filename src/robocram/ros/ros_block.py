@@ -66,11 +66,17 @@ class RosEnvironment(Environment):
 
     @contextmanager
     def running(self) -> Iterator[Environment]:
-        """Start our ROS node, then the environment; stop both on leaving."""
+        """Start our ROS node, then the environment; stop both on leaving.
+
+        Raises:
+            RosCancelIgnored: on leaving without another error, if a server did not
+                confirm a cancel of a stopped task (the robot may still be moving).
+        """
         self.client.connect()
         try:
             with super().running() as environment:
                 yield environment
+            self.client.raise_unconfirmed_cancel()
         finally:
             self.client.disconnect()
 

@@ -12,7 +12,12 @@ from collections.abc import Callable, Mapping
 
 from robocram.motion import JointTrajectory, MotionSettings, report_executed
 from robocram.robots import ArmDescription, LoadedDescription
-from robocram.ros.errors import RosCommandError, RosConnectionLost, RosNodeError
+from robocram.ros.errors import (
+    RosCancelIgnored,
+    RosCommandError,
+    RosConnectionLost,
+    RosNodeError,
+)
 from robocram.ros.goal_runner import Accept, FailureFactory, checked, finish_goal
 from robocram.ros.motion_planner import MotionPlanner, clamp_goal
 from robocram.ros.ros1_node import NodeConfig
@@ -63,6 +68,7 @@ class RosRobotClient:
         self._factory = transport_factory
         self._transport: Transport | None = None
         self._planner = MotionPlanner(desc, world, motion)
+        self.unconfirmed_cancels: list[RosCancelIgnored] = []
 
     @property
     def name(self) -> str:
@@ -108,10 +114,28 @@ class RosRobotClient:
         (a PR2 gripper holding an object ends ABORTED with ``stalled``).
         """
         interface = self.config.action(resource)
-        outcome = finish_goal(
-            self.transport, interface, goal, lambda end: self._settle(interface.server, end)
-        )
+        try:
+            outcome = finish_goal(
+                self.transport, interface, goal, lambda end: self._settle(interface.server, end)
+            )
+        except RosCancelIgnored as ignored:
+            if ignored.stopping:  # a stopped task's failure may be dropped (pursue): keep it
+                self.unconfirmed_cancels.append(ignored)
+            raise
         return checked(interface, outcome, failure, accept)
+
+    def raise_unconfirmed_cancel(self) -> None:
+        """Raise the first cancel a server did not confirm (the robot may still be moving),
+        if any; called when a ``ros_robot`` block ends without an error of its own."""
+        if self.unconfirmed_cancels:
+            first = self.unconfirmed_cancels[0]
+            raise RosCancelIgnored(
+                f"{first.message}; it happened in a task that was stopped, so the block "
+                "ended without it",
+                server=first.server,
+                timeout=first.timeout,
+                stopping=True,
+            )
 
     def _settle(self, server: str, end: GoalOutcome) -> None:
         """Wait for the state published after ``end`` (failed goals moved the robot too)."""
