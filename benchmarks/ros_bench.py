@@ -12,16 +12,22 @@ from __future__ import annotations
 
 import statistics
 import sys
+import tempfile
 import time
 from collections.abc import Callable
+from pathlib import Path
 
 from robocram.designators import a, an
-from robocram.execution import perform
+from robocram.execution import perform, pursue, sleep
 from robocram.execution.failures import TorsoGoalNotReached
 from robocram.logic import current_kb
 from robocram.projection import simulated_robot
-from robocram.ros import Roscore, ros_robot
-from robocram.ros.driver.driver_process import DriverProcess
+from robocram.ros import Roscore, RosMasterUnreachable, ros_robot
+from robocram.ros.goal_runner import checked
+from robocram.ros.ros_robot_client import RosRobotClient
+from robocram.ros.roscore import free_port
+from robocram.ros.transport import GoalHandle, GoalOutcome
+from robocram.ros_driver.driver_process import DriverProcess
 from robocram.scenes import tabletop_scene
 from robocram.tf import Pose, PoseStamped
 
@@ -112,11 +118,90 @@ def over_ros(core: Roscore, runs: int) -> tuple[dict[str, float], dict[str, floa
     return per_motion, latency
 
 
+def entering(core: Roscore, runs: int) -> float:
+    """Median [s] to enter ``ros_robot`` (our node joined, the block running)."""
+    times = []
+    for _ in range(runs):
+        t0 = time.perf_counter()
+        with ros_robot("pr2", core.uri):
+            times.append(time.perf_counter() - t0)
+    return statistics.median(times)
+
+
+def no_master() -> float:
+    """[s] until entering with no master raises RosMasterUnreachable (default timeout)."""
+    t0 = time.perf_counter()
+    try:
+        with ros_robot("pr2", f"http://127.0.0.1:{free_port()}"):
+            pass
+    except RosMasterUnreachable:
+        return time.perf_counter() - t0
+    raise AssertionError("a ROS master answered where none should run")
+
+
+def _outcome(handle: GoalHandle) -> GoalOutcome:
+    with handle.done:
+        handle.done.wait_for(lambda: handle.outcome is not None)
+    assert handle.outcome is not None
+    return handle.outcome
+
+
+def goal_overhead_ms(client: RosRobotClient, runs: int) -> float:
+    """Median [ms] the plan side adds per goal: from the call to the goal handed to ROS by
+    our node, plus from our node getting the result to the outcome checked."""
+    interface = client.config.action("torso")
+    transport = client.transport
+    torso = {"trajectory": {"joint_names": ["torso_lift_joint"], "points": [
+        {"positions": [0.1], "time_from_start": {"secs": 0, "nsecs": 0}}]}}  # fmt: skip
+    overheads = []
+    for _ in range(runs + 1):
+        t0 = time.monotonic()
+        handle = transport.send_goal(interface.server, torso)
+        outcome = checked(interface, _outcome(handle), TorsoGoalNotReached)
+        t1 = time.monotonic()
+        overheads.append((handle.sent - t0) + (t1 - outcome.arrived))
+    return 1e3 * statistics.median(overheads[1:])  # the first warms up
+
+
+def _going_stopped_after(seconds: float, x: float) -> float:
+    """Start going to ``(x, 0)`` and stop it after ``seconds``; when it was stopped."""
+    stopped: list[float] = []
+
+    def stop_soon() -> None:
+        sleep(seconds)
+        stopped.append(time.monotonic())
+
+    pursue(
+        lambda: perform(a.motion(type="going", target=a.location(pose=Pose((x, 0.0, 0.0))))),
+        stop_soon,
+    )
+    return stopped[0]
+
+
+def stop_to_cancel_ms(core: Roscore, runs: int) -> float:
+    """Median [ms] from a stopped navigation task to the cancel seen by the driver."""
+    with tempfile.TemporaryDirectory() as tmp:
+        log = Path(tmp) / "goals.jsonl"
+        with (
+            DriverProcess(core.uri, "pr2", base_speed=0.2, goal_log=log) as driver,
+            ros_robot("pr2", core.uri),
+        ):
+            stops = [_going_stopped_after(0.3, -1.0 - 0.1 * (i % 2)) for i in range(runs)]
+            seen = driver.cancels_seen("/move_base")
+    return 1e3 * statistics.median(c - s for s, c in zip(stops, seen, strict=True))
+
+
 def main(runs: int) -> None:
-    """Print the per-motion table and the round-trip latencies."""
+    """Print the per-motion table, the round-trip latencies and the ROS-semantics figures."""
     projected = direct(runs)
     with Roscore() as core:
         ros, latency = over_ros(core, runs)
+        with DriverProcess(core.uri, "pr2"):
+            enter = entering(core, runs)
+            with ros_robot("pr2", core.uri) as run:
+                overhead = goal_overhead_ms(run.environment.client, runs)
+        cancel = stop_to_cancel_ms(core, runs)
+    absent = no_master()
     print(f"PR2, median of {runs} PERFORMs [ms]")
     print(f"{'motion':20} {'projection':>11} {'ROS':>9} {'overhead':>9}")
     for name, value in projected.items():
@@ -124,6 +209,11 @@ def main(runs: int) -> None:
     print("round trips [ms]")
     for name, value in latency.items():
         print(f"  {name:32} {value:7.2f}")
+    print("ROS semantics (median)          value    goal")
+    print(f"  enter ros_robot [s]          {enter:8.3f}   <= 2")
+    print(f"  no master, typed error [s]   {absent:8.3f}   <= 5")
+    print(f"  plan overhead per goal [ms]  {overhead:8.3f}   <= 5")
+    print(f"  stop to cancel seen [ms]     {cancel:8.3f}   <= 50")
 
 
 if __name__ == "__main__":

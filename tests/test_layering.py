@@ -52,7 +52,6 @@ ALLOWED: dict[str, set[str]] = {
         "tf",
     },
     "ros": {
-        "projection",
         "motion",
         "grasping",
         "costmaps",
@@ -63,6 +62,17 @@ ALLOWED: dict[str, set[str]] = {
         "designators",
         "robots",
         "logic",
+        "tf",
+    },
+    "ros_driver": {
+        "ros",
+        "projection",
+        "motion",
+        "scenes",
+        "world",
+        "execution",
+        "designators",
+        "robots",
         "tf",
     },
     "batch": {

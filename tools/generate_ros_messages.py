@@ -1,11 +1,13 @@
-"""Generate the Python ROS 1 messages Debian does not package: control_msgs and robocram_msgs.
+"""Generate the Python ROS 1 messages Debian does not package: control_msgs, the PR2's
+pr2_controllers_msgs and robocram_msgs.
 
 Run with Debian's interpreter (it has genmsg and genpy):
 ``/usr/bin/python3 tools/generate_ros_messages.py OUT_DIR``. Each ``.action`` becomes its
 seven messages (Goal, Result, Feedback and the Action/ActionGoal/ActionResult/ActionFeedback
 wrappers with a header and a goal id or status), then genpy writes the Python packages
-``OUT_DIR/control_msgs`` and ``OUT_DIR/robocram_msgs``. Dependencies (std_msgs,
-geometry_msgs, actionlib_msgs, trajectory_msgs) come from Debian's ``/usr/share/<pkg>/msg``.
+``OUT_DIR/control_msgs``, ``OUT_DIR/pr2_controllers_msgs`` and ``OUT_DIR/robocram_msgs``.
+Dependencies (std_msgs, geometry_msgs, actionlib_msgs, trajectory_msgs) come from Debian's
+``/usr/share/<pkg>/msg``.
 A stamp file holding the hash of the definitions makes a second run a no-op.
 """
 
@@ -16,7 +18,7 @@ import sys
 from pathlib import Path
 
 DEFINITIONS = Path(__file__).resolve().parents[1] / "src" / "robocram" / "ros" / "definitions"
-PACKAGES = ("control_msgs", "robocram_msgs")
+PACKAGES = ("control_msgs", "pr2_controllers_msgs", "robocram_msgs")
 DEPENDENCIES = ("std_msgs", "geometry_msgs", "actionlib_msgs", "trajectory_msgs")
 SYSTEM_SHARE = Path("/usr/share")
 

@@ -77,7 +77,11 @@ def test_unreachable_target_fails_within_its_budget(pr2: RobotDescription) -> No
 
 def test_torso_moves_when_the_target_is_too_high(pr2: RobotDescription) -> None:
     seed = {"torso_lift_joint": 0.0}
-    high = forward_kinematics(pr2, {"torso_lift_joint": 0.3, "r_shoulder_lift_joint": -0.3}, TOOL)
+    # elbow and wrist bent inside their soft limits (a straight PR2 arm is beyond them)
+    bent = {"r_elbow_flex_joint": -0.5, "r_wrist_flex_joint": -0.3}
+    high = forward_kinematics(
+        pr2, {"torso_lift_joint": 0.3, "r_shoulder_lift_joint": -0.3, **bent}, TOOL
+    )
     assert not solve_ik(pr2, "right", high, seed=seed)
     result = solve_ik(pr2, "right", high, seed=seed, use_torso=True)
     assert result.success
@@ -209,8 +213,9 @@ def test_mimic_target_only_reachable_beyond_follower_limit(mimic_arm: RobotDescr
 
 def test_continuous_joints_wrap_near_the_seed(pr2: RobotDescription) -> None:
     seed = {"r_forearm_roll_joint": 6.0, "r_wrist_roll_joint": -6.0}
+    bent = {"r_elbow_flex_joint": -0.5, "r_wrist_flex_joint": -0.3}  # inside the soft limits
     target = forward_kinematics(
-        pr2, {"r_forearm_roll_joint": 6.1, "r_wrist_roll_joint": -6.2}, TOOL
+        pr2, {"r_forearm_roll_joint": 6.1, "r_wrist_roll_joint": -6.2, **bent}, TOOL
     )
     result = solve_ik(pr2, "right", target, seed=seed)
     assert result.success

@@ -15,8 +15,9 @@ import pytest
 from robocram.designators import a
 from robocram.execution import Task, TaskStopped, checkpoint, perform
 from robocram.execution.task_context import binding_task
+from robocram.motion.tool_goal import POSITION_TOLERANCE
 from robocram.projection import ProjectedRobot, simulated_robot
-from robocram.projection.arm import POSITION_TOLERANCE, move_tcp
+from robocram.projection.arm import move_tcp
 from robocram.projection.articulation import move_part
 from robocram.scenes import KitchenScene, kitchen_scene
 from robocram.tf import Pose, PoseStamped

@@ -106,3 +106,32 @@ def test_a_goal_tolerance_of_an_unknown_joint_or_not_positive_is_named() -> None
     negative = "ros_goal_time_tolerance(pr2, -1.0).\n" + default_facts("pr2")
     with pytest.raises(RosConfigError, match=r"ros_goal_time_tolerance\(pr2, S\) gives -1.0"):
         _config("pr2", negative)
+
+
+def test_the_pr2_gripper_takes_a_gap_in_metres_and_holds_when_aborted_stalled() -> None:
+    gripper = _config("pr2").grippers["right"]
+    assert (gripper.joint, gripper.unit) == ("r_gripper_l_finger_joint", "gap")
+    assert gripper.command(0.548) == pytest.approx(0.085)  # open: the finger joint's limit
+    assert gripper.command(0.0) == pytest.approx(0.0)
+    assert gripper.joint_value(0.0425) == pytest.approx(0.274)
+    assert gripper.holding_status.name == "ABORTED"
+    assert gripper.holding_min == pytest.approx(0.002)
+    hsr = _config("hsrb").grippers["arm"]
+    assert (hsr.unit, hsr.holding_status.name) == ("joint", "SUCCEEDED")
+    assert hsr.command(1.24) == pytest.approx(1.24)  # the joint value itself
+
+
+def test_a_gripper_fact_with_an_unknown_unit_names_the_fix() -> None:
+    facts = "ros_gripper_command(pr2, right, inches, 0.0, 3.5).\n" + default_facts("pr2")
+    with pytest.raises(RosConfigError, match=r"unit 'inches'.*use a unit of \('gap', 'joint'\)"):
+        _config("pr2", facts)
+
+
+def test_native_pr2_action_types_are_accepted_by_name() -> None:
+    facts = (
+        "ros_action(pr2, torso, '/torso_controller/position_joint_action', "
+        "'pr2_controllers_msgs/SingleJointPosition').\n" + default_facts("pr2")
+    )
+    config = _config("pr2", facts)
+    kinds = {i.action_type for i in config.actions.values()}
+    assert "pr2_controllers_msgs/SingleJointPosition" in kinds

@@ -12,7 +12,7 @@ import pytest
 from robocram.plans import pick_up
 from robocram.projection import simulated_robot
 from robocram.ros import Roscore, ros_robot
-from robocram.ros.driver.driver_process import DriverProcess
+from robocram.ros_driver.driver_process import DriverProcess
 from robocram.scenes import tabletop_scene
 from robocram.tf import Pose, PoseStamped, transform_pose
 

@@ -18,8 +18,8 @@ from robocram.execution.failures import (
     TorsoGoalNotReached,
 )
 from robocram.ros import RosConnectionLost, Roscore, ros_robot
-from robocram.ros.driver.driver_process import DriverProcess
 from robocram.ros.ros_config import default_facts
+from robocram.ros_driver.driver_process import DriverProcess
 from robocram.tf import Pose
 
 FAR = Pose((-4.0, 3.0, 0.0))  # [m] free floor, far from the robot at the origin
@@ -52,7 +52,7 @@ def test_stopping_mid_navigation_cancels_the_goal_and_the_base_stops(
         pursue(_going, until_moving)
         stopped = client.base_pose()
         for _ in range(3):  # several state messages later the base is still there
-            assert client.transport.wait_for_state(time.time(), 5.0)
+            assert client.transport.wait_for_state(None, 5.0)
         later = client.base_pose()
         node = client.transport.node_name  # type: ignore[attr-defined]
     assert stopped.distance_to(start) >= MOVED
@@ -110,7 +110,17 @@ def test_a_goal_out_of_limits_is_clamped_sent_and_fails_as_in_projection(
         reached = run.environment.client.joint_states()["torso_lift_joint"]
     assert "torso_lift_joint=0.5 not in [0.0, 0.31]" in str(failure.value)
     assert failure.value.goal == 0.5
-    assert reached == pytest.approx(0.31)
+    # sent as the safety_controller's soft upper limit, where the real PR2 stops
+    assert reached == pytest.approx(0.305)
+
+
+def test_a_goal_between_the_soft_and_the_hard_limit_ends_at_the_soft_limit(
+    roscore: Roscore,
+) -> None:
+    with DriverProcess(roscore.uri), ros_robot("pr2", roscore.uri) as run:
+        perform(a.motion(type="moving-torso", joint_angle=0.31))  # the hard upper limit
+        reached = run.environment.client.joint_states()["torso_lift_joint"]
+    assert reached == pytest.approx(0.305)  # the soft upper limit (pr2_description)
 
 
 def test_a_driver_dying_mid_goal_gives_a_typed_failure_not_a_hang(

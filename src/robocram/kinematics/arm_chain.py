@@ -83,9 +83,13 @@ class ArmChain:
         self.sin_q = self.cos_q + 1
 
     def _limits(self) -> tuple[FloatArray, FloatArray]:
-        """Variable bounds, narrowed so that every mimic follower stays in its own limits."""
-        lower = np.array([self.kin.joints[v].lower for v in self.variables])
-        upper = np.array([self.kin.joints[v].upper for v in self.variables])
+        """Variable bounds, narrowed so that every mimic follower stays in its own limits.
+
+        A joint with ``<safety_controller>`` soft limits is bounded by them: a real robot's
+        controllers (the PR2's) stop it there, so a solution beyond them ends off target.
+        """
+        lower = np.array([self._working(v)[0] for v in self.variables])
+        upper = np.array([self._working(v)[1] for v in self.variables])
         index = {v: k for k, v in enumerate(self.variables)}
         for joint in self.kin.robot_model.joints.values():
             m = joint.mimic
@@ -122,6 +126,18 @@ class ArmChain:
         """Pose of the tip frame in the root link for variable values ``x``."""
         pin.framesForwardKinematics(self.model, self.data, self.configuration(x, b))
         return self.data.oMf[self.frame_id].copy()
+
+    def _working(self, variable: str) -> tuple[float, float]:
+        """The hard limits of ``variable`` narrowed to its soft limits, if it has any."""
+        info = self.kin.joints[variable]
+        joint = self.kin.robot_model.joints.get(variable)
+        if joint is None or info.continuous:
+            return info.lower, info.upper
+        soft_lower, soft_upper = joint.working_limits
+        return (
+            info.lower if soft_lower is None else max(info.lower, soft_lower),
+            info.upper if soft_upper is None else min(info.upper, soft_upper),
+        )
 
     def _mimic_followers(self) -> tuple[tuple[str, str, float, float], ...]:
         """(follower, master, multiplier, offset) of every joint following a variable,

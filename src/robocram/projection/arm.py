@@ -27,17 +27,19 @@ from robocram.execution.failures import (
 )
 from robocram.kinematics import BaseMotion, IKResult, PlanarBase, base_in_ik, solve_ik
 from robocram.motion import ArmMotion, plan_arm_motion, plan_tool_line
+from robocram.motion.reach_failure import unreachable
+from robocram.motion.tool_goal import (
+    IK_RANDOM_SEED,
+    ensure_reached,
+    joint_values,
+)
 from robocram.projection.collision_mode import allowed_links, collision_check
 from robocram.projection.errors import unknown_name
 from robocram.projection.navigation import drive, moved_base, unchecked_base_motion
 from robocram.projection.projected_robot import ProjectedRobot
-from robocram.projection.reach_failure import unreachable
 from robocram.projection.trajectory_follower import follow
 from robocram.tf import Pose, PoseLike, PoseStamped
 
-POSITION_TOLERANCE = 0.01  # [m] between the reached tool frame and the target
-ORIENTATION_TOLERANCE = 0.05  # [rad]
-IK_RANDOM_SEED = 0  # seeds IK's random restarts in every move_tcp without its own seed
 IK_RESTARTS = 100  # descents after the first in each IK query of a move_tcp
 BASE_TRAVEL = PlanarBase()  # how far IK may move the base: +-0.5 m in x and y, +-pi in yaw
 IKQuery = tuple[bool, PlanarBase | None]  # use_torso, base travel (None: the base stays)
@@ -202,30 +204,6 @@ def _arm_motion(
         raise
 
 
-def ensure_reached(
-    robot: str, arm: str, reached: Pose, target: object, target_in_map: Pose
-) -> Pose:
-    """Return ``reached`` if it is within tolerance of ``target_in_map``, else raise.
-
-    Shared by every environment that moves a tool (projection, ROS), so "reached" means the
-    same everywhere.
-
-    Raises:
-        ManipulationGoalNotReached: the tool frame stopped too far from the target.
-    """
-    error = (reached.distance_to(target_in_map), reached.angle_to(target_in_map))
-    if error[0] > POSITION_TOLERANCE or error[1] > ORIENTATION_TOLERANCE:
-        raise ManipulationGoalNotReached(
-            f"{robot}'s {arm} tool frame stopped {error[0]:.3f} m / {error[1]:.3f} rad "
-            "from its target",
-            arm=arm,
-            target=target,
-            reached=reached,
-            error=error,
-        )
-    return reached
-
-
 def move_joints(robot: ProjectedRobot, arm: str, configuration: object) -> dict[str, float]:
     """Set ``arm``'s joints from a mapping or ``[[joint, value], ...]``; return what was set.
 
@@ -269,17 +247,3 @@ def clamped_goals(robot: ProjectedRobot, values: Mapping[str, float]) -> list[st
         if not low <= value <= high:
             found.append(name)
     return found
-
-
-def joint_values(configuration: object) -> dict[str, float]:
-    """Read ``{joint: value}`` from a mapping or a list of ``[joint, value]`` pairs."""
-    if isinstance(configuration, Mapping):
-        return {str(k): float(v) for k, v in configuration.items()}
-    if isinstance(configuration, list | tuple) and all(
-        isinstance(p, list | tuple) and len(p) == 2 for p in configuration
-    ):
-        return {str(k): float(v) for k, v in configuration}
-    raise ValueError(
-        f"an arm configuration is a {{joint: value}} mapping or [[joint, value], ...], "
-        f"got {configuration!r}"
-    )

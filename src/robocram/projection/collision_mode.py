@@ -11,12 +11,12 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping, Sequence
 
 from robocram.kinematics import split_base_motion
+from robocram.motion.collision_modes import COLLISION_MODES, hand_links
 from robocram.projection.errors import ProjectionError
 from robocram.projection.navigation import base_moved_by
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robots import RobotModel
 
-COLLISION_MODES = ("avoid_all", "allow_hand", "allow_all")
 CONTACT_DISTANCE = 0.0  # [m] closer than this is a collision (touching counts)
 
 
@@ -51,10 +51,7 @@ def allowed_links(robot: ProjectedRobot, arm: str, mode: str) -> set[str]:
     mode = mode.replace("-", "_")
     if mode != "allow_hand":
         return set()
-    spec = robot.arm(arm)
-    return (
-        set(spec.hand_links) | set(spec.gripper_links) | {spec.end_effector_link, spec.tool_frame}
-    )
+    return hand_links(robot.arm(arm))
 
 
 def self_pairs(robot: ProjectedRobot, arm: str) -> list[tuple[str, str]]:

@@ -13,12 +13,12 @@ When nothing fits and the robot's own link hides an object that would have, the 
 from __future__ import annotations
 
 from collections import Counter
-from dataclasses import dataclass
 from itertools import product
 
 import numpy as np
 
 from robocram.designators import ObjectDesignator, Quantifier
+from robocram.designators.perceived_object import PerceivedObject
 from robocram.execution.failures import PerceptionBlockedByRobot, PerceptionObjectNotFound
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.tf import PoseStamped, Vector3
@@ -26,15 +26,6 @@ from robocram.world import Camera, WorldObject
 
 FILTER_KEYS = ("type", "name")
 BLOCK_SAMPLES = (0.2, 0.5, 0.8)  # share of an object's bounds per axis the rays aim at
-
-
-@dataclass(frozen=True)
-class PerceivedObject:
-    """What perception attaches to a designator: the object and its pose in the base frame."""
-
-    name: str
-    type: str
-    pose: PoseStamped
 
 
 def _matches(designator: ObjectDesignator, obj: WorldObject) -> bool:

@@ -100,7 +100,9 @@ class Joint:
 
     ``lower``/``upper`` are [rad] or [m]; continuous joints have -inf/inf and fixed,
     floating or planar joints ``None``. ``velocity`` [rad/s | m/s] and ``effort``
-    [N m | N] are ``None`` when the URDF gives none.
+    [N m | N] are ``None`` when the URDF gives none. ``soft_lower``/``soft_upper`` are the
+    ``<safety_controller>`` soft limits, ``None`` without one: a real robot's controllers
+    (the PR2's) stop the joint there, so :attr:`working_limits` is what IK may use.
     """
 
     name: str
@@ -116,6 +118,20 @@ class Joint:
     mimic: Mimic | None = None
     damping: float = 0.0
     friction: float = 0.0
+    soft_lower: float | None = None
+    soft_upper: float | None = None
+
+    @property
+    def working_limits(self) -> tuple[float | None, float | None]:
+        """The soft limits where the URDF has them (inside the hard ones), else the hard."""
+        lower, upper = self.lower, self.upper
+        if self.soft_lower is not None and lower is not None:
+            lower = max(lower, self.soft_lower)
+        if self.soft_upper is not None and upper is not None:
+            upper = min(upper, self.soft_upper)
+        if lower is not None and upper is not None and lower > upper:
+            return self.lower, self.upper  # soft limits that cross are ignored
+        return lower, upper
 
     @property
     def movable(self) -> bool:

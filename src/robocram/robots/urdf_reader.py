@@ -162,6 +162,7 @@ class _Reader:
                 node, f"joint {name!r} needs a <parent link=...> and a <child link=...>"
             )
         limit, dynamics, mimic = node.find("limit"), node.find("dynamics"), node.find("mimic")
+        safety = node.find("safety_controller")
         lower, upper = joint_limits(
             kind, self.number(limit, "lower", 0.0), self.number(limit, "upper", 0.0)
         )
@@ -187,6 +188,8 @@ class _Reader:
             mimic=None if mimic is None else self.mimic(mimic),
             damping=self.number(dynamics, "damping", 0.0) or 0.0,
             friction=self.number(dynamics, "friction", 0.0) or 0.0,
+            soft_lower=self.number(safety, "soft_lower_limit", None),
+            soft_upper=self.number(safety, "soft_upper_limit", None),
         )
 
     def check_limits(

@@ -17,9 +17,8 @@ from typing import Any
 from robocram.designators import SIDES
 from robocram.execution.failures import ManipulationGoalNotReached, ManipulationPathBlocked
 from robocram.kinematics import IKResult, solve_ik
-from robocram.projection.arm import IK_RANDOM_SEED, ensure_reached, joint_values
-from robocram.projection.collision_mode import collision_check
-from robocram.projection.reach_failure import unreachable
+from robocram.motion.reach_failure import unreachable
+from robocram.motion.tool_goal import IK_RANDOM_SEED, ensure_reached, joint_values
 from robocram.ros.errors import RosCommandError
 from robocram.ros.goal_runner import FailureFactory
 from robocram.ros.process_modules import RosProcessModule
@@ -54,10 +53,11 @@ class ArmPM(RosProcessModule):
     def _solve(self, arm: str, target_in_base: Pose, mode: str) -> IKResult:
         desc = self.client.desc
         seed = self.client.actuated_joint_states()
-        robot = self.client.planner().robot  # the world in the robot's state now, or None
-        check = collision_check(robot, arm, mode) if robot is not None else None
+        planner = self.client.planner()  # its world (if any) in the robot's state now
         result = IKResult(False)
         for use_torso in [False, True] if desc.torso_joint is not None else [False]:
+            moving = desc.arms[arm].joints + ((desc.torso_joint,) if use_torso else ())
+            check = planner.ik_check(arm, tuple(j for j in moving if j is not None), mode)
             result = solve_ik(
                 desc,
                 arm,

@@ -41,6 +41,23 @@ class RosConnectionLost(LowLevelFailure):
     hint = "check that the robot's driver and the ROS master are running, then retry"
 
 
+class RosMasterUnreachable(RosNodeError):
+    """No ROS master answered at the URI within the master timeout."""
+
+
+class RosCancelIgnored(LowLevelFailure):
+    """A cancelled goal's server did not confirm the cancel in time: the robot may still move."""
+
+    server: str | None = None
+    timeout: float | None = None  # [s] waited for the confirmation
+    stopping: bool | None = None  # the cancel came from a stopped task (not a timeout)
+    summary = "the action server ignored a cancel; the robot may still be moving"
+    hint = (
+        "stop the robot by its own means (run-stop), check its controller, then retry; "
+        "ros_cancel_timeout/2 sets how long to wait for a confirmation"
+    )
+
+
 class RosCommandError(SetupFailure):
     """A command names what the robot's ROS side does not have (an arm, a joint, a motion)."""
 

@@ -4,8 +4,10 @@ The caller's task waits for the outcome at a stop point. If the task is stopped 
 ``pursue`` sibling won, the top level was stopped) the goal is cancelled and the wait
 goes on until the server confirms, so the robot has stopped when the stop unwinds. A goal
 over its time budget is cancelled and fails with ``ActionlibActionTimedOut`` naming the
-server; ABORTED and REJECTED raise the resource's failure with the server's status text;
-a lost connection raises ``RosConnectionLost``.
+server; ABORTED and REJECTED raise the resource's failure with the controller's own words
+(status text, ``error_code`` and ``error_string``); a lost connection raises
+``RosConnectionLost``; a cancel the server does not confirm within the interface's
+``cancel_timeout`` raises ``RosCancelIgnored`` (the robot may still be moving).
 """
 
 from __future__ import annotations
@@ -15,24 +17,53 @@ from collections.abc import Callable
 from robocram.execution.failures import ActionlibActionTimedOut, PlanFailure
 from robocram.execution.task import TaskStopped
 from robocram.execution.task_context import wait_until
-from robocram.ros.errors import RosConnectionLost
+from robocram.ros.errors import RosCancelIgnored, RosConnectionLost
 from robocram.ros.ros_config import ActionInterface
 from robocram.ros.transport import GoalHandle, GoalOutcome, GoalState, RosDict, Transport
 
-CANCEL_TIMEOUT = 5.0  # [s] to wait for the server to confirm a cancel
 FailureFactory = Callable[[str], PlanFailure]
 Settle = Callable[[GoalOutcome], None]
+Accept = Callable[[GoalOutcome], bool]
+# control_msgs/FollowJointTrajectoryResult error codes, named in failures
+ERROR_CODES = {
+    0: "SUCCESSFUL",
+    -1: "INVALID_GOAL",
+    -2: "INVALID_JOINTS",
+    -3: "OLD_HEADER_TIMESTAMP",
+    -4: "PATH_TOLERANCE_VIOLATED",
+    -5: "GOAL_TOLERANCE_VIOLATED",
+}
 
 
 def _wait(handle: GoalHandle, timeout: float | None) -> bool:
     return wait_until(handle.done, lambda: handle.outcome is not None, timeout)
 
 
-def _cancel_and_wait(transport: Transport, handle: GoalHandle, settle: Settle) -> None:
-    """Cancel, wait for the server's confirmation, then for the state after it."""
+def _cancel_and_wait(
+    transport: Transport,
+    interface: ActionInterface,
+    handle: GoalHandle,
+    settle: Settle,
+    stopping: bool,
+) -> None:
+    """Cancel, wait for the server's confirmation, then for the state after it.
+
+    Raises:
+        RosCancelIgnored: no confirmation within ``interface.cancel_timeout``.
+    """
     transport.cancel_goal(handle)
     with handle.done:
-        handle.done.wait_for(lambda: handle.outcome is not None, CANCEL_TIMEOUT)
+        confirmed = handle.done.wait_for(
+            lambda: handle.outcome is not None, interface.cancel_timeout
+        )
+    if not confirmed:
+        raise RosCancelIgnored(
+            f"{interface.server} ({interface.resource}) did not confirm a cancel within "
+            f"{interface.cancel_timeout} s: the robot may still be moving",
+            server=interface.server,
+            timeout=interface.cancel_timeout,
+            stopping=stopping,
+        )
     if handle.outcome is not None and handle.outcome.state is not GoalState.LOST:
         settle(handle.outcome)
 
@@ -56,6 +87,7 @@ def run_goal(
         ActionlibActionTimedOut: the goal ran past ``interface.timeout`` (it is cancelled).
         RosConnectionLost: the server or our ROS node went away.
         TaskStopped: the task was stopped; the goal was cancelled first.
+        RosCancelIgnored: a cancel (stop or timeout) was not confirmed by the server.
     """
     return checked(interface, finish_goal(transport, interface, goal, _no_settling), failure)
 
@@ -72,10 +104,10 @@ def finish_goal(
     try:
         finished = _wait(handle, interface.timeout)
     except TaskStopped:
-        _cancel_and_wait(transport, handle, settle)
+        _cancel_and_wait(transport, interface, handle, settle, stopping=True)
         raise
     if not finished:
-        _cancel_and_wait(transport, handle, settle)
+        _cancel_and_wait(transport, interface, handle, settle, stopping=False)
         raise ActionlibActionTimedOut(
             f"the goal to {interface.server} ({interface.resource}) did not finish within "
             f"{interface.timeout} s; it was cancelled",
@@ -89,12 +121,30 @@ def finish_goal(
     return outcome
 
 
+def controller_words(outcome: GoalOutcome) -> str:
+    """The status text, ``error_code`` (named) and ``error_string`` of an outcome, joined."""
+    words = [outcome.status_text] if outcome.status_text else []
+    code = outcome.result.get("error_code")
+    if isinstance(code, int) and code != 0:
+        words.append(f"error_code {code} ({ERROR_CODES.get(code, 'unknown code')})")
+    detail = outcome.result.get("error_string")
+    if detail and detail != outcome.status_text:
+        words.append(str(detail))
+    return "; ".join(words) or "no status text, error code or error string"
+
+
 def checked(
-    interface: ActionInterface, outcome: GoalOutcome, failure: FailureFactory
+    interface: ActionInterface,
+    outcome: GoalOutcome,
+    failure: FailureFactory,
+    accept: Accept | None = None,
 ) -> GoalOutcome:
-    """``outcome`` if it SUCCEEDED, else the typed failure it stands for (raised)."""
+    """``outcome`` if it SUCCEEDED (or ``accept`` takes it), else the typed failure it
+    stands for (raised), carrying the controller's own words in its message and context."""
     state = outcome.state
-    if state is GoalState.SUCCEEDED:
+    if state is GoalState.SUCCEEDED or (
+        state is not GoalState.LOST and accept is not None and accept(outcome)
+    ):
         return outcome
     server = interface.server
     if state is GoalState.LOST:
@@ -103,6 +153,11 @@ def checked(
             server=server,
             reason=outcome.status_text,
         )
-    text = outcome.status_text or "no status text"
-    error = failure(f"{server} {state.name}: {text}")
-    raise error.add_context(controller=server, status=state.name, status_text=outcome.status_text)
+    error = failure(f"{server} {state.name}: {controller_words(outcome)}")
+    raise error.add_context(
+        controller=server,
+        status=state.name,
+        status_text=outcome.status_text,
+        error_code=outcome.result.get("error_code"),
+        error_string=outcome.result.get("error_string"),
+    )

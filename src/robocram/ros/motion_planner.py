@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Collection, Mapping
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 from robocram.motion import (
     BasePath,
@@ -26,8 +26,12 @@ from robocram.motion import (
     plan_tool_line,
     time_parameterize,
 )
-from robocram.projection import ProjectedRobot
-from robocram.projection.collision_mode import COLLISION_MODES, allowed_links
+from robocram.motion.collision_modes import (
+    COLLISION_MODES,
+    IKCollisionCheck,
+    allowed_links,
+    ik_collision_check,
+)
 from robocram.robots import LoadedDescription
 from robocram.ros.errors import RosCommandError, RosConfigError
 from robocram.tf import Pose
@@ -36,10 +40,12 @@ from robocram.world import World
 
 @dataclass(frozen=True)
 class ClampedGoal:
-    """A joint goal moved into the limits; ``culprits`` are ``joint: (asked, lower, upper)``."""
+    """A joint goal moved into the limits; ``culprits`` are ``joint: (asked, lower, upper)``
+    for goals beyond the hard limits, ``softened`` those only beyond the soft ones."""
 
-    goal: dict[str, float]  # [rad | m] within the limits
+    goal: dict[str, float]  # [rad | m] within the working (soft, else hard) limits
     culprits: dict[str, tuple[float, float, float]]
+    softened: dict[str, tuple[float, float]] = field(default_factory=dict)  # asked, sent
 
     def describe(self, robot: str) -> str:
         """What was clamped, in words."""
@@ -53,20 +59,35 @@ class ClampedGoal:
         )
 
 
+def _bounds(limits: tuple[float | None, float | None]) -> tuple[float, float]:
+    low, high = limits
+    return (-math.inf if low is None else low, math.inf if high is None else high)
+
+
 def clamp_goal(desc: LoadedDescription, goal: Mapping[str, float]) -> ClampedGoal:
-    """``goal`` with every value inside its joint's limits (a trajectory cannot leave them)."""
+    """``goal`` with every value inside its joint's working limits.
+
+    A real robot's controllers stop a joint at its ``<safety_controller>`` soft limits
+    (the PR2's), so the goal sent stays inside them. A value beyond the hard limits is
+    a culprit (the motion then fails, as in projection); a value between a soft and the
+    hard limit is moved to the soft limit and is no failure: the robot ends there.
+    """
     clamped: dict[str, float] = {}
     culprits: dict[str, tuple[float, float, float]] = {}
+    softened: dict[str, tuple[float, float]] = {}
     for joint, value in goal.items():
         spec = desc.model.joints.get(joint)
         if spec is None or not spec.movable:
             raise RosCommandError(f"{joint!r} is not a movable joint of {desc.name}")
-        low = spec.lower if spec.lower is not None else -math.inf
-        high = spec.upper if spec.upper is not None else math.inf
-        clamped[joint] = min(max(float(value), low), high)
-        if clamped[joint] != float(value):
-            culprits[joint] = (float(value), low, high)
-    return ClampedGoal(clamped, culprits)
+        asked = float(value)
+        low, high = _bounds((spec.lower, spec.upper))
+        soft_low, soft_high = _bounds(spec.working_limits)
+        clamped[joint] = min(max(asked, soft_low), soft_high)
+        if not low <= asked <= high:
+            culprits[joint] = (asked, low, high)
+        elif clamped[joint] != asked:
+            softened[joint] = (asked, clamped[joint])
+    return ClampedGoal(clamped, culprits, softened)
 
 
 class MotionPlanner:
@@ -81,7 +102,6 @@ class MotionPlanner:
         self.desc = desc
         self.world = world
         self.settings = settings or MotionSettings()
-        self.robot: ProjectedRobot | None = None
         if world is not None:
             names = [r.name for r in world.robots()]
             if desc.name not in names:
@@ -89,13 +109,12 @@ class MotionPlanner:
                     f"the world given for {desc.name} has robots {names}, not {desc.name!r}; "
                     f"pass a world with the robot in it (e.g. tabletop_scene({desc.name!r}).world)"
                 )
-            self.robot = ProjectedRobot.of(world, desc.name, motion=self.settings)
 
     def sync(self, joints: Mapping[str, float], base_in_map: Pose) -> None:
         """Put the world's robot where ROS says it is: joint states and base pose."""
-        if self.robot is None:
+        if self.world is None:
             return
-        world, name = self.robot.world, self.robot.name
+        world, name = self.world, self.desc.name
         model = self.desc.model
         known = world.joint_states(name)
         world.set_joint_states(
@@ -127,7 +146,7 @@ class MotionPlanner:
             ManipulationPathBlocked: the world blocks every way there (nothing was sent).
         """
         joints = tuple(j for j in goal if self.desc.model.joints[j].mimic is None)
-        if self.robot is None:
+        if self.world is None:
             limits = joint_limits(self.desc, joints)
             # a real robot may report a joint a hair beyond its limit; a trajectory cannot
             start = [
@@ -138,10 +157,10 @@ class MotionPlanner:
             return time_parameterize(self.desc.name, joints, [start, end], limits, kind="arm")
         mode = _mode(mode)
         settings = replace(self.settings, check=False) if mode == "allow_all" else self.settings
-        allowed = allowed_links(self.robot, arm, mode) if arm is not None else set()
+        allowed = allowed_links(self.desc.arms[arm], mode) if arm is not None else set()
         motion = plan_arm_motion(
-            self.robot.world,
-            self.robot.name,
+            self.world,
+            self.desc.name,
             {j: float(goal[j]) for j in joints},
             allowed_links=allowed,
             settings=settings,
@@ -152,12 +171,12 @@ class MotionPlanner:
     def tool_line(self, arm: str, target_in_base: Pose, mode: str) -> JointTrajectory | None:
         """The arm's straight tool line to ``target_in_base`` if the world lets it all be
         followed (``allow_hand`` motions: approach, lift, retreat), else None."""
-        if self.robot is None or _mode(mode) != "allow_hand":
+        if self.world is None or _mode(mode) != "allow_hand":
             return None
-        allowed: Collection[str] = allowed_links(self.robot, arm, "allow_hand")
+        allowed: Collection[str] = allowed_links(self.desc.arms[arm], "allow_hand")
         line = plan_tool_line(
-            self.robot.world,
-            self.robot.name,
+            self.world,
+            self.desc.name,
             arm,
             target_in_base,
             allowed_links=allowed,
@@ -172,11 +191,16 @@ class MotionPlanner:
             NavigationPoseUnreachable: the robot would collide at the goal.
             NavigationPathBlocked: no path leads there in the world.
         """
-        if self.robot is None:
+        if self.world is None:
             return None
-        return plan_base_path(
-            self.robot.world, self.robot.name, goal_in_map, seed=self.settings.seed
-        )
+        return plan_base_path(self.world, self.desc.name, goal_in_map, seed=self.settings.seed)
+
+    def ik_check(self, arm: str, joints: tuple[str, ...], mode: str) -> IKCollisionCheck | None:
+        """IK's collision check for ``arm`` moving ``joints`` in ``mode`` (None without a
+        world, or for ``allow_all``); call :meth:`sync` first."""
+        if self.world is None:
+            return None
+        return ik_collision_check(self.world, self.desc.name, self.desc.arms[arm], joints, mode)
 
 
 def _mode(mode: str) -> str:

@@ -13,6 +13,7 @@ from typing import Any
 import numpy as np
 
 from robocram.designators import ObjectDesignator, Quantifier
+from robocram.designators.perceived_object import PerceivedObject
 from robocram.execution import MotionProcessModule
 from robocram.execution.failures import (
     GripperClosedCompletely,
@@ -23,7 +24,6 @@ from robocram.execution.failures import (
     PtuGoalNotReached,
     TorsoGoalNotReached,
 )
-from robocram.projection import PerceivedObject
 from robocram.ros.errors import RosCommandError
 from robocram.ros.head_aim import pan_tilt_towards
 from robocram.ros.ros_robot_client import RosRobotClient
@@ -128,7 +128,7 @@ class PtuPM(RosProcessModule):
         target = self._target(mode, goal)
         failure = lambda text: PtuGoalNotReached(text, target=target)  # noqa: E731
         interface = client.config.action("head")
-        if interface.action_type == "control_msgs/PointHead":
+        if interface.action_type.endswith("/PointHead"):  # control_msgs or the PR2's own
             x, y, z = target
             camera = client.desc.cameras[0].frame
             point_head = {
@@ -185,23 +185,24 @@ class PerceptionPM(RosProcessModule):
 
 
 class GripperPM(RosProcessModule):
-    """The grippers over ``GripperCommand``: ``move_gripper_joint(Arm, Action, Effort)``."""
+    """The grippers over ``GripperCommand``: ``move_gripper_joint(Arm, Action, Effort)``.
+
+    Positions are the description's gripper joint values; the robot's gripper semantics
+    (``gripper_semantics.py``) turn them into the controller's command and say what a
+    holding gripper reports (the PR2: ABORTED with ``stalled``).
+    """
 
     name = "ros_grippers"
     resource = "grippers"
 
-    def _limits(self, arm: str) -> tuple[float, float]:
-        spec = self.client.arm(arm)
-        model = self.client.desc.model
-        joint = model.joints[spec.gripper_joints[0]] if model and spec.gripper_joints else None
-        if joint is None or joint.lower is None or joint.upper is None:
-            raise RosCommandError(f"{self.client.name}'s {arm} arm has no bounded gripper joint")
-        return joint.lower, joint.upper
-
     def move_gripper_joint(self, gripper: str, action: Any, effort: Any) -> float:
-        """Open, close or grip with ``gripper``'s hand, or move it to a position [rad | m]."""
+        """Open, close or grip with ``gripper``'s hand, or move it to a position [rad | m];
+        return the description's gripper joint value reached."""
         arm = self.client.desc.arm_called(str(gripper))
-        lower, upper = self._limits(arm)
+        semantics = self.client.config.grippers.get(arm)
+        if semantics is None:
+            raise RosCommandError(f"{self.client.name}'s {arm} arm has no bounded gripper joint")
+        lower, upper = semantics.joint_range
         positions = {"open": upper, "close": lower, "grip": lower}
         if action in positions:
             position = positions[action]
@@ -211,19 +212,22 @@ class GripperPM(RosProcessModule):
             raise RosCommandError(
                 f"gripper goal {action!r} is none of open, close, grip or a position"
             )
-        force = (
-            float(effort) if isinstance(effort, int | float) else self.client.config.gripper_effort
-        )
-        goal = {"command": {"position": position, "max_effort": force}}
+        force = float(effort) if isinstance(effort, int | float) else semantics.effort
+        command = semantics.command(position)
+        goal = {"command": {"position": command, "max_effort": force}}
+        closing = action in ("close", "grip")
         outcome = self.client.run(
             f"gripper({arm})",
             goal,
             lambda text: GripperGoalNotReached(text, gripper=arm, goal=position),
+            accept=semantics.holds if closing else None,
         )
-        reached = float(outcome.result.get("position", position))
-        if action == "grip" and not outcome.result.get("stalled", False):
+        reached = semantics.joint_value(float(outcome.result.get("position", command)))
+        if action == "grip" and not semantics.holds(outcome):
             raise GripperClosedCompletely(
-                f"{self.client.name}'s {arm} gripper closed on nothing (not stalled)",
+                f"{self.client.name}'s {arm} gripper closed on nothing ({outcome.state.name}, "
+                f"stalled={bool(outcome.result.get('stalled', False))}, position "
+                f"{outcome.result.get('position')} {semantics.unit})",
                 gripper=arm,
                 position=reached,
             )

@@ -4,16 +4,23 @@ rospy allows one node per process for the life of the process, with threads that
 end. Running it in a child process started by :class:`Ros1Transport` keeps the plan
 process clean: when the environment exits the child leaves ROS and ends, so no thread or
 subscriber remains. The node keeps one actionlib client per configured action server,
-the latest ``/joint_states`` and a tf2 buffer fed from ``/tf``.
+the latest ``/joint_states`` and a tf2 buffer fed from ``/tf`` and ``/tf_static``.
+
+The robot's clock is never compared with ours: the node counts joint-state messages and
+transforms of the base frame as they *arrive*, and "the state after a goal" is the first
+of each to arrive after the goal's result (its ``mark``). The robot clock's offset is
+measured once, on the first joint states, and reported to the plan process.
 
 Pipe protocol (tuples of plain values): requests ``(request_id, op, args)``; replies
 ``("reply", request_id, ok, payload)``; goal ends ``("goal", goal_id, state, text, result,
-stamp)``. A goal whose server publishes no status for ``lost_after`` seconds ends LOST.
+mark)``; ``("skew", seconds)`` once. A goal whose server publishes no status for
+``lost_after`` seconds ends LOST.
 """
 
 from __future__ import annotations
 
 import os
+import sys
 import threading
 import time
 from dataclasses import dataclass
@@ -25,6 +32,7 @@ from robocram.ros.transport import GoalState
 
 MONITOR_PERIOD = 0.05  # [s] how often running goals are checked for a silent server
 TERMINAL = frozenset(state.value for state in GoalState)
+TF_AUTHORITY = "robocram"
 
 
 @dataclass(frozen=True)
@@ -38,10 +46,18 @@ class NodeConfig:
     base_frame: str  # the robot's base frame, waited for in tf after each motion
     connect_timeout: float  # [s] to wait for an action server to appear
     lost_after: float  # [s] of status silence that count as a lost connection
+    clock_skew_bound: float = 0.5  # [s] a larger robot clock offset is reported
+    master_timeout: float = 5.0  # [s] for the master to answer before entering fails
 
 
 class _Server:
-    """One action server: its actionlib client and when its status was last heard."""
+    """One action server: its actionlib client, the running goal's handle and when the
+    server's status was last heard.
+
+    actionlib's ``ActionClient`` with one goal handle per goal, not ``SimpleActionClient``:
+    the simple client shares one state between consecutive goals, and a goal sent right
+    after the previous one ended can lose its DONE transition to the old goal's.
+    """
 
     def __init__(self, name: str, action_type: str) -> None:
         import actionlib
@@ -50,7 +66,8 @@ class _Server:
 
         self.name = name
         self.action_type = action_type
-        self.client = actionlib.SimpleActionClient(name, message_class(f"{action_type}Action"))
+        self.client = actionlib.ActionClient(name, message_class(f"{action_type}Action"))
+        self.handle: Any = None  # actionlib's ClientGoalHandle of the running goal
         self.heard = 0.0  # monotonic [s]
         self.goal_id: int | None = None
         self._status = rospy.Subscriber(f"{name}/status", GoalStatusArray, self._on_status)
@@ -66,15 +83,20 @@ class RosNode:
         import rospy
         import tf2_ros
         from sensor_msgs.msg import JointState
+        from tf2_msgs.msg import TFMessage
 
         self.conn = conn
         self.config = config
         self._send_lock = threading.Lock()
         self._state = threading.Condition()
         self._joints: dict[str, float] = {}
-        self._joints_stamp = 0.0
+        self._joint_arrivals = 0  # joint-state messages received so far
+        self._base_arrivals = 0  # /tf messages with the base frame received so far
         self.buffer = tf2_ros.Buffer(cache_time=rospy.Duration(10.0))
-        self.listener = tf2_ros.TransformListener(self.buffer)
+        self._tf_subs = [
+            rospy.Subscriber("/tf", TFMessage, self._on_tf, callback_args=False),
+            rospy.Subscriber("/tf_static", TFMessage, self._on_tf, callback_args=True),
+        ]
         self._joint_sub = rospy.Subscriber(config.joint_states_topic, JointState, self._on_joints)
         self.servers = {name: _Server(name, kind) for name, kind in config.servers.items()}
         self.running = True
@@ -85,13 +107,37 @@ class RosNode:
             self.conn.send(message)
 
     def _on_joints(self, msg: Any) -> None:
+        import rospy
+
         with self._state:
             self._joints.update(zip(msg.name, map(float, msg.position), strict=False))
-            self._joints_stamp = msg.header.stamp.to_sec()
+            self._joint_arrivals += 1
+            first = self._joint_arrivals == 1
             self._state.notify_all()
+        if first and not msg.header.stamp.is_zero():  # the robot clock's offset, once
+            self.send(("skew", msg.header.stamp.to_sec() - rospy.get_time()))
 
-    def op_send_goal(self, goal_id: int, server: str, goal: dict[str, Any]) -> None:
-        """Send a goal once the server is there; its end arrives as a ``goal`` message."""
+    def _on_tf(self, msg: Any, static: bool) -> None:
+        """Feed the buffer, then count the arrival if the base frame is in the message."""
+        base = False
+        for transform in msg.transforms:
+            if static:
+                self.buffer.set_transform_static(transform, TF_AUTHORITY)
+            else:
+                self.buffer.set_transform(transform, TF_AUTHORITY)
+            base = base or transform.child_frame_id.lstrip("/") == self.config.base_frame
+        if base:
+            with self._state:
+                self._base_arrivals += 1
+                self._state.notify_all()
+
+    def _mark(self) -> tuple[int, int]:
+        with self._state:
+            return (self._joint_arrivals, self._base_arrivals)
+
+    def op_send_goal(self, goal_id: int, server: str, goal: dict[str, Any]) -> float:
+        """Send a goal once the server is there; its end arrives as a ``goal`` message.
+        Returns when it was sent (``time.monotonic()``)."""
         import rospy
 
         entry = self.servers.get(server)
@@ -103,45 +149,52 @@ class RosNode:
             )
         message = to_message(f"{entry.action_type}Goal", goal)
         entry.heard = time.monotonic()
-        entry.goal_id = goal_id
-        entry.client.send_goal(message, done_cb=lambda state, result: self._done(entry, goal_id))
+        with self._state:
+            entry.goal_id = goal_id
+            entry.handle = entry.client.send_goal(
+                message, transition_cb=lambda handle: self._transition(entry, goal_id, handle)
+            )
+        return time.monotonic()
 
-    def _done(self, entry: _Server, goal_id: int) -> None:
-        import rospy
+    def _transition(self, entry: _Server, goal_id: int, handle: Any) -> None:
+        """Report the goal's end once its handle is DONE (each goal has its own handle)."""
+        from actionlib import CommState
 
-        if entry.goal_id != goal_id:
+        if handle.get_comm_state() != CommState.DONE:
             return
-        entry.goal_id = None
-        code = entry.client.get_state()
+        arrived = time.monotonic()
+        mark = self._mark()  # state arriving from now on shows the end of the goal
+        with self._state:
+            if entry.goal_id != goal_id:
+                return
+            entry.goal_id, entry.handle = None, None
+        code = handle.get_goal_status()
         state = code if code in TERMINAL else GoalState.LOST.value
-        result = entry.client.get_result()
+        result = handle.get_result()
         payload = to_dict(result) if result is not None else {}
-        text = entry.client.get_goal_status_text()
-        self.send(("goal", goal_id, state, text, payload, rospy.get_time()))
+        text = handle.get_goal_status_text()
+        self.send(("goal", goal_id, state, text, payload, mark, arrived))
 
     def op_cancel(self, goal_id: int) -> None:
         """Cancel the goal if it still runs."""
         for entry in self.servers.values():
-            if entry.goal_id == goal_id:
-                entry.client.cancel_goal()
+            handle = entry.handle
+            if entry.goal_id == goal_id and handle is not None:
+                handle.cancel()
 
     def op_joint_states(self) -> dict[str, float]:
         """The latest joint positions."""
         with self._state:
             return dict(self._joints)
 
-    def op_wait_for_state(self, after: float, fixed: str, frame: str, timeout: float) -> bool:
-        """Wait for joint states stamped after ``after`` and for ``frame`` in ``fixed`` then."""
-        import rospy
-
-        deadline = time.monotonic() + timeout
+    def op_wait_for_state(self, after: tuple[int, int] | None, timeout: float) -> bool:
+        """Wait until joint states and a base transform arrived after the mark ``after``
+        (None: after this request); no robot stamp is compared with our clock."""
+        joints, base = after if after is not None else self._mark()
         with self._state:
-            while self._joints_stamp <= after:
-                if not self._state.wait(deadline - time.monotonic()):
-                    return False
-        remaining = max(0.0, deadline - time.monotonic())
-        stamp = rospy.Time.from_sec(after)
-        return bool(self.buffer.can_transform(fixed, frame, stamp, rospy.Duration(remaining)))
+            return self._state.wait_for(
+                lambda: self._joint_arrivals > joints and self._base_arrivals > base, timeout
+            )
 
     def op_lookup(self, target: str, source: str) -> tuple[tuple[float, ...], tuple[float, ...]]:
         """The latest pose of ``source`` in ``target`` as (position, quaternion)."""
@@ -173,7 +226,7 @@ class RosNode:
                     entry.goal_id = None
                     reason = f"no status from {entry.name} for {self.config.lost_after} s"
                     lost = GoalState.LOST.value
-                    self.send(("goal", goal_id, lost, reason, {}, rospy.get_time()))
+                    self.send(("goal", goal_id, lost, reason, {}, self._mark(), now))
             time.sleep(MONITOR_PERIOD)
 
 
@@ -212,3 +265,10 @@ def node_main(conn: Connection, config: NodeConfig) -> None:
         else:
             _handle(node, request_id, op, args)
     rospy.signal_shutdown("robocram environment exited")
+
+
+def child_main() -> None:
+    """The node process's entry (``Ros1Transport``): the pipe's file descriptor is the
+    first argument, the :class:`NodeConfig` its first message."""
+    conn = Connection(int(sys.argv[1]))
+    node_main(conn, conn.recv())

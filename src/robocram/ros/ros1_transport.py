@@ -1,7 +1,9 @@
 """The ROS 1 transport: our node in a child process, spoken to over a pipe.
 
-``Ros1Transport.open(config)`` starts the child (``ros1_node.node_main``) and one reader
-thread that routes replies to the waiting callers and goal ends to their handles.
+``Ros1Transport.open(config)`` first asks the master (``RosMasterUnreachable`` within
+``master_timeout``), then starts the child, a fresh interpreter running only
+``ros1_node.child_main`` on one end of a socket pair, and one reader thread that routes
+replies to the waiting callers and goal ends to their handles.
 ``close()`` cancels running goals, asks the node to leave ROS, joins the reader thread
 and the process (killing it by PID if it does not end), so nothing keeps running. If the
 child dies, every running goal ends LOST and every request raises, never hangs.
@@ -10,20 +12,74 @@ child dies, every running goal ends LOST and every request raises, never hangs.
 from __future__ import annotations
 
 import contextlib
+import http.client
 import itertools
-import multiprocessing
+import logging
+import os
+import socket
+import subprocess
+import sys
 import threading
+import time
+import xmlrpc.client
+from collections.abc import Iterator
 from multiprocessing.connection import Connection
 from typing import Any
 
-from robocram.ros.errors import RosConnectionLost, RosNodeError
-from robocram.ros.ros1_node import NodeConfig, node_main
-from robocram.ros.transport import GoalHandle, GoalOutcome, GoalState, RosDict
+from robocram.ros.errors import RosConnectionLost, RosMasterUnreachable, RosNodeError
+from robocram.ros.ros1_node import NodeConfig
+from robocram.ros.transport import GoalHandle, GoalOutcome, GoalState, RosDict, StateMark
 from robocram.tf import Pose
 
-START_TIMEOUT = 30.0  # [s] for the child to import rospy and join the master
+LOG = logging.getLogger("robocram.ros")
+START_TIMEOUT = 30.0  # [s] for the child to import rospy and join a master that answered
 REPLY_TIMEOUT = 10.0  # [s] for a request that does not wait on the robot
 STOP_TIMEOUT = 5.0  # [s] for the child to leave ROS before it is killed
+MASTER_RETRY = 0.2  # [s] between asking an absent master again
+CHILD_CODE = "from robocram.ros.ros1_node import child_main; child_main()"
+
+
+def wait_for_master(uri: str, timeout: float) -> None:
+    """Return once the ROS master at ``uri`` answers; else RosMasterUnreachable in ``timeout``.
+
+    rospy's own start-up waits for a master forever; asking it first makes the error quick.
+    """
+    deadline = time.monotonic() + timeout
+    last = "no answer"
+    while True:
+        remaining = deadline - time.monotonic()
+        try:
+            with _timeout_proxy(uri, max(0.05, min(1.0, remaining))) as master:
+                master.getPid("/robocram_probe")
+            return
+        except (OSError, xmlrpc.client.Error) as err:
+            last = f"{type(err).__name__}: {err}"
+        if time.monotonic() + MASTER_RETRY > deadline:
+            raise RosMasterUnreachable(
+                f"no ROS master answered at {uri} within {timeout} s ({last}); start roscore "
+                "there (or fix master_uri / $ROS_MASTER_URI), or give ros_robot a longer "
+                "master_timeout"
+            )
+        time.sleep(MASTER_RETRY)
+
+
+@contextlib.contextmanager
+def _timeout_proxy(uri: str, timeout: float) -> Iterator[xmlrpc.client.ServerProxy]:
+    """An XML-RPC proxy whose socket gives up after ``timeout`` [s]."""
+    transport = _TimeoutTransport(timeout)
+    with xmlrpc.client.ServerProxy(uri, transport=transport) as proxy:
+        yield proxy
+
+
+class _TimeoutTransport(xmlrpc.client.Transport):
+    def __init__(self, timeout: float) -> None:
+        super().__init__()
+        self._timeout = timeout
+
+    def make_connection(self, host: Any) -> http.client.HTTPConnection:
+        connection = super().make_connection(host)
+        connection.timeout = self._timeout
+        return connection
 
 
 class Ros1Transport:
@@ -39,9 +95,10 @@ class Ros1Transport:
         self._send_lock = threading.Lock()
         self._dead: str | None = None
         self._conn: Connection | None = None
-        self._process: multiprocessing.process.BaseProcess | None = None
+        self._process: subprocess.Popen[bytes] | None = None
         self._reader: threading.Thread | None = None
         self.node_name = ""
+        self.clock_skew: float | None = None  # [s] robot stamps minus our clock, measured once
 
     @classmethod
     def open(cls, config: NodeConfig, fixed_frame: str = "map") -> Ros1Transport:
@@ -50,14 +107,33 @@ class Ros1Transport:
         transport._start()
         return transport
 
+    def _on_skew(self, skew: float) -> None:
+        """Keep the robot clock's offset; report it when it exceeds the bound."""
+        self.clock_skew = skew
+        bound = self.config.clock_skew_bound
+        if abs(skew) > bound:
+            side = "behind" if skew < 0 else "ahead of"
+            LOG.warning(
+                "the robot's clock is %.3f s %s ours (joint states on %s stamped %+.3f s from "
+                "their arrival; bound %.3f s). robocram waits for state by arrival, so results "
+                "do not change; synchronise the clocks (chrony/ntp) for stamped data and logs",
+                abs(skew), side, self.config.joint_states_topic, skew, bound,
+            )  # fmt: skip
+
     def _start(self) -> None:
-        context = multiprocessing.get_context("spawn")
-        parent, child = context.Pipe()
-        self._process = context.Process(
-            target=node_main, args=(child, self.config), name="robocram-ros-node"
+        wait_for_master(self.config.master_uri, self.config.master_timeout)
+        ours, theirs = socket.socketpair()
+        # A fresh interpreter running only our node: multiprocessing's spawn would import
+        # the caller's main script again (the whole plan side) before the node starts.
+        env = dict(os.environ, PYTHONPATH=os.pathsep.join(p for p in sys.path if p))
+        self._process = subprocess.Popen(
+            [sys.executable, "-c", CHILD_CODE, str(theirs.fileno())],
+            pass_fds=(theirs.fileno(),),
+            env=env,
         )
-        self._process.start()
-        child.close()
+        theirs.close()
+        parent = Connection(ours.detach())
+        parent.send(self.config)
         self._conn = parent
         if not parent.poll(START_TIMEOUT):
             self._kill()
@@ -66,6 +142,9 @@ class Ros1Transport:
                 f"{START_TIMEOUT} s; is roscore running there?"
             )
         status, detail = parent.recv()
+        while status == "skew":  # the first joint states may come before "ready"
+            self._on_skew(float(detail))
+            status, detail = parent.recv()
         if status != "ready":
             self._kill()
             raise RosNodeError(f"our ROS node failed to start: {detail}")
@@ -74,24 +153,32 @@ class Ros1Transport:
         self._reader.start()
 
     def _read(self) -> None:
+        try:
+            self._route()
+        finally:  # also when a message could not be read: never leave a caller waiting
+            self._die("our ROS node process ended")
+
+    def _route(self) -> None:
         assert self._conn is not None
         while True:
             try:
                 message = self._conn.recv()
             except (EOFError, OSError):
-                break
+                return
             if message[0] == "reply":
                 _, request_id, ok, payload = message
                 with self._cond:
                     self._replies[request_id] = (ok, payload)
                     self._cond.notify_all()
             elif message[0] == "goal":
-                _, goal_id, state, text, result, stamp = message
+                _, goal_id, state, text, result, mark, arrived = message
                 with self._cond:
                     handle = self._goals.pop(goal_id, None)
                 if handle is not None:
-                    handle.finish(GoalOutcome(GoalState(state), text, result, stamp))
-        self._die("our ROS node process ended")
+                    outcome = GoalOutcome(GoalState(state), text, result, tuple(mark), arrived)
+                    handle.finish(outcome)
+            elif message[0] == "skew":
+                self._on_skew(float(message[1]))
 
     def _die(self, reason: str) -> None:
         with self._cond:
@@ -99,7 +186,7 @@ class Ros1Transport:
             goals, self._goals = list(self._goals.values()), {}
             self._cond.notify_all()
         for handle in goals:
-            handle.finish(GoalOutcome(GoalState.LOST, reason, {}, 0.0))
+            handle.finish(GoalOutcome(GoalState.LOST, reason, {}))
 
     def request(self, op: str, *args: Any, timeout: float = REPLY_TIMEOUT) -> Any:
         """Run ``op`` in the node; return its payload or raise what it reported."""
@@ -134,7 +221,7 @@ class Ros1Transport:
             self._goals[handle.goal_id] = handle
         wait = self.config.connect_timeout + REPLY_TIMEOUT
         try:
-            self.request("send_goal", handle.goal_id, server, goal, timeout=wait)
+            handle.sent = self.request("send_goal", handle.goal_id, server, goal, timeout=wait)
         except RosNodeError as err:
             with self._cond:
                 self._goals.pop(handle.goal_id, None)
@@ -148,19 +235,9 @@ class Ros1Transport:
         if self._dead is None:
             self.request("cancel", handle.goal_id)
 
-    def wait_for_state(self, after: float, timeout: float) -> bool:
-        """Wait for joint states and the base frame's transform stamped after ``after`` [s]."""
-        base = self.config.base_frame
-        return bool(
-            self.request(
-                "wait_for_state",
-                after,
-                self.fixed_frame,
-                base,
-                timeout,
-                timeout=timeout + REPLY_TIMEOUT,
-            )
-        )
+    def wait_for_state(self, after: StateMark | None, timeout: float) -> bool:
+        """Wait for joint states and the base frame's transform arriving after ``after``."""
+        return bool(self.request("wait_for_state", after, timeout, timeout=timeout + REPLY_TIMEOUT))
 
     def joint_states(self) -> dict[str, float]:
         """The latest ``/joint_states`` positions by joint name."""
@@ -192,10 +269,11 @@ class Ros1Transport:
     def _kill(self) -> None:
         process = self._process
         if process is not None:
-            process.join(STOP_TIMEOUT)
-            if process.is_alive():
+            try:
+                process.wait(STOP_TIMEOUT)
+            except subprocess.TimeoutExpired:
                 process.kill()
-                process.join()
+                process.wait()
         if self._conn is not None:
             self._conn.close()
         if self._reader is not None and self._reader is not threading.current_thread():

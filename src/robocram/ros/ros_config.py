@@ -15,6 +15,7 @@ from robocram.logic import KnowledgeBase, Term, UnknownPredicateError
 from robocram.robots import RobotDescription
 from robocram.ros.errors import RosConfigError
 from robocram.ros.goal_tolerances import GoalTolerances, read_goal_tolerances
+from robocram.ros.gripper_semantics import GripperSemantics, read_gripper_semantics
 
 ROS_FACTS_GROUP = "ros_interfaces"
 ACTION_TYPES = (
@@ -23,7 +24,13 @@ ACTION_TYPES = (
     "control_msgs/PointHead",
     "control_msgs/GripperCommand",
     "robocram_msgs/DetectObjects",
+    "pr2_controllers_msgs/JointTrajectory",
+    "pr2_controllers_msgs/SingleJointPosition",
+    "pr2_controllers_msgs/PointHead",
+    "pr2_controllers_msgs/Pr2GripperCommand",
 )
+DEFAULT_CANCEL_TIMEOUT = 2.0  # [s] for a server to confirm a cancel (ros_cancel_timeout/2)
+DEFAULT_SKEW_BOUND = 0.5  # [s] a larger robot clock offset is reported (ros_clock_skew_bound/2)
 
 
 @dataclass(frozen=True)
@@ -34,6 +41,7 @@ class ActionInterface:
     server: str
     action_type: str
     timeout: float  # [s]
+    cancel_timeout: float = DEFAULT_CANCEL_TIMEOUT  # [s] for the server to confirm a cancel
 
 
 @dataclass(frozen=True)
@@ -47,6 +55,8 @@ class RosConfig:
     server_timeout: float  # [s] to wait for an action server to appear
     gripper_effort: float  # [N]
     goal_tolerances: GoalTolerances = field(default_factory=GoalTolerances)
+    grippers: dict[str, GripperSemantics] = field(default_factory=dict)  # by arm
+    clock_skew_bound: float = DEFAULT_SKEW_BOUND  # [s] a larger robot clock offset is reported
 
     def action(self, resource: str) -> ActionInterface:
         """The interface of ``resource``, or a RosConfigError naming the missing fact."""
@@ -95,6 +105,16 @@ def _number(kb: KnowledgeBase, predicate: str, robot: str, unit: str) -> float:
     return float(answer["S"])
 
 
+def _optional(kb: KnowledgeBase, predicate: str, robot: str, default: float) -> float:
+    answer = _first(kb, f"{predicate}(R, S)", R=robot)
+    if answer is None:
+        return default
+    value = answer["S"]
+    if not isinstance(value, int | float) or value <= 0:
+        raise RosConfigError(f"{predicate}({robot}, {value!r}): give a number of seconds > 0")
+    return float(value)
+
+
 def _interface(kb: KnowledgeBase, robot: str, answer: dict[str, Any]) -> ActionInterface:
     resource, server, kind = answer["Res"], str(answer["Server"]), str(answer["Type"])
     if kind not in ACTION_TYPES:
@@ -107,7 +127,8 @@ def _interface(kb: KnowledgeBase, robot: str, answer: dict[str, Any]) -> ActionI
         raise RosConfigError(
             f"{robot} lacks ros_action_timeout({robot}, {resource_key(resource)}, Seconds)"
         )
-    return ActionInterface(resource_key(resource), server, kind, float(timeout["S"]))
+    cancel = _optional(kb, "ros_cancel_timeout", robot, DEFAULT_CANCEL_TIMEOUT)
+    return ActionInterface(resource_key(resource), server, kind, float(timeout["S"]), cancel)
 
 
 def read_ros_config(kb: KnowledgeBase, desc: RobotDescription) -> RosConfig:
@@ -120,18 +141,27 @@ def read_ros_config(kb: KnowledgeBase, desc: RobotDescription) -> RosConfig:
         answers = []
     for answer in answers:
         interface = _interface(kb, robot, answer)
-        actions[interface.resource] = interface
+        actions.setdefault(interface.resource, interface)  # the first answer wins, as for
+        # every ROS fact: facts put before the defaults override them
     topic = _first(kb, "ros_topic(R, joint_states, T)", R=robot)
     if topic is None:
         raise RosConfigError(f"{robot} lacks the fact ros_topic({robot}, joint_states, Topic)")
+    effort = _number(kb, "ros_gripper_effort", robot, "N")
+    grippers = {
+        arm: semantics
+        for arm in desc.arms
+        if (semantics := read_gripper_semantics(kb, desc, arm, effort)) is not None
+    }
     return RosConfig(
         robot=robot,
         actions=actions,
         joint_states_topic=str(topic["T"]),
         connection_timeout=_number(kb, "ros_connection_timeout", robot, "s"),
         server_timeout=_number(kb, "ros_server_timeout", robot, "s"),
-        gripper_effort=_number(kb, "ros_gripper_effort", robot, "N"),
+        gripper_effort=effort,
         goal_tolerances=read_goal_tolerances(kb, desc),
+        grippers=grippers,
+        clock_skew_bound=_optional(kb, "ros_clock_skew_bound", robot, DEFAULT_SKEW_BOUND),
     )
 
 

@@ -12,17 +12,24 @@ from collections.abc import Callable, Mapping
 
 from robocram.motion import JointTrajectory, MotionSettings, report_executed
 from robocram.robots import ArmDescription, LoadedDescription
-from robocram.ros.errors import RosCommandError, RosConnectionLost, RosNodeError
-from robocram.ros.goal_runner import FailureFactory, checked, finish_goal
+from robocram.ros.errors import (
+    RosCancelIgnored,
+    RosCommandError,
+    RosConnectionLost,
+    RosNodeError,
+)
+from robocram.ros.goal_runner import Accept, FailureFactory, checked, finish_goal
 from robocram.ros.motion_planner import MotionPlanner, clamp_goal
 from robocram.ros.ros1_node import NodeConfig
 from robocram.ros.ros1_transport import Ros1Transport
 from robocram.ros.ros_config import RosConfig
+from robocram.ros.trajectory_goal import trajectory_goal
 from robocram.ros.transport import GoalOutcome, RosDict, Transport
 from robocram.tf import Pose, PoseLike, PoseStamped
 from robocram.world import World
 
 STATE_TIMEOUT = 5.0  # [s] for the state after a goal to arrive
+DEFAULT_MASTER_TIMEOUT = 5.0  # [s] for the ROS master to answer when entering
 TransportFactory = Callable[[NodeConfig], Transport]
 
 
@@ -39,9 +46,11 @@ class RosRobotClient:
         transport_factory: TransportFactory = Ros1Transport.open,
         world: World | None = None,
         motion: MotionSettings | None = None,
+        master_timeout: float = DEFAULT_MASTER_TIMEOUT,
     ) -> None:
         """``world``: a projection world of the robot's environment to plan motions in
-        (kept in sync with the robot's state); None plans straight joint moves."""
+        (kept in sync with the robot's state); None plans straight joint moves.
+        ``master_timeout`` [s]: how long ``connect`` waits for the ROS master to answer."""
         self.desc = desc
         self.config = config
         self.fixed_frame = fixed_frame
@@ -53,10 +62,13 @@ class RosRobotClient:
             base_frame=desc.base_frame,
             connect_timeout=config.server_timeout,
             lost_after=config.connection_timeout,
+            clock_skew_bound=config.clock_skew_bound,
+            master_timeout=master_timeout,
         )
         self._factory = transport_factory
         self._transport: Transport | None = None
         self._planner = MotionPlanner(desc, world, motion)
+        self.unconfirmed_cancels: list[RosCancelIgnored] = []
 
     @property
     def name(self) -> str:
@@ -76,6 +88,11 @@ class RosRobotClient:
             transport.close()
 
     @property
+    def clock_skew(self) -> float | None:
+        """[s] the robot's stamps minus our clock, once measured (None before, or unknown)."""
+        return getattr(self._transport, "clock_skew", None)
+
+    @property
     def transport(self) -> Transport:
         """The open transport, or a RosNodeError saying where to run."""
         if self._transport is None:
@@ -84,17 +101,45 @@ class RosRobotClient:
             )
         return self._transport
 
-    def run(self, resource: str, goal: RosDict, failure: FailureFactory) -> GoalOutcome:
-        """Run ``goal`` on ``resource``'s action server, then wait for the state after it."""
+    def run(
+        self,
+        resource: str,
+        goal: RosDict,
+        failure: FailureFactory,
+        accept: Accept | None = None,
+    ) -> GoalOutcome:
+        """Run ``goal`` on ``resource``'s action server, then wait for the state after it.
+
+        ``accept(outcome)`` says whether an outcome other than SUCCEEDED is a success too
+        (a PR2 gripper holding an object ends ABORTED with ``stalled``).
+        """
         interface = self.config.action(resource)
-        outcome = finish_goal(
-            self.transport, interface, goal, lambda end: self._settle(interface.server, end)
-        )
-        return checked(interface, outcome, failure)
+        try:
+            outcome = finish_goal(
+                self.transport, interface, goal, lambda end: self._settle(interface.server, end)
+            )
+        except RosCancelIgnored as ignored:
+            if ignored.stopping:  # a stopped task's failure may be dropped (pursue): keep it
+                self.unconfirmed_cancels.append(ignored)
+            raise
+        return checked(interface, outcome, failure, accept)
+
+    def raise_unconfirmed_cancel(self) -> None:
+        """Raise the first cancel a server did not confirm (the robot may still be moving),
+        if any; called when a ``ros_robot`` block ends without an error of its own."""
+        if self.unconfirmed_cancels:
+            first = self.unconfirmed_cancels[0]
+            raise RosCancelIgnored(
+                f"{first.message}; it happened in a task that was stopped, so the block "
+                "ended without it",
+                server=first.server,
+                timeout=first.timeout,
+                stopping=True,
+            )
 
     def _settle(self, server: str, end: GoalOutcome) -> None:
         """Wait for the state published after ``end`` (failed goals moved the robot too)."""
-        if not self.transport.wait_for_state(end.stamp, STATE_TIMEOUT):
+        if not self.transport.wait_for_state(end.mark, STATE_TIMEOUT):
             raise RosConnectionLost(
                 f"no joint states or transforms of {self.name} arrived within {STATE_TIMEOUT} s "
                 f"after {server} finished",
@@ -151,15 +196,34 @@ class RosRobotClient:
     def follow_trajectory(
         self, resource: str, trajectory: JointTrajectory, failure: FailureFactory
     ) -> GoalOutcome:
-        """Send ``trajectory`` whole as a ``FollowJointTrajectory`` goal with the goal
-        tolerances of the robot's facts; report it to the trajectory listeners once done."""
-        goal = {
-            "trajectory": trajectory.to_ros(),
-            **self.config.goal_tolerances.to_ros(trajectory.joint_names),
-        }
+        """Send ``trajectory`` as the goal of ``resource``'s action type, then check the
+        joints reached against the goal tolerances; report it to the trajectory listeners.
+
+        ``control_msgs/FollowJointTrajectory`` goals carry the tolerances of the robot's
+        facts; the PR2's native ``JointTrajectory`` takes the trajectory alone and
+        ``SingleJointPosition`` the last position and the duration. Whatever the type,
+        a joint ending beyond its tolerance raises ``failure`` naming it.
+        """
+        interface = self.config.action(resource)
+        goal = trajectory_goal(interface.action_type, trajectory, self.config.goal_tolerances)
         outcome = self.run(resource, goal, failure)
+        self._check_reached(trajectory, failure)
         report_executed(trajectory)
         return outcome
+
+    def _check_reached(self, trajectory: JointTrajectory, failure: FailureFactory) -> None:
+        reached = self.joint_states()
+        tolerances = self.config.goal_tolerances
+        beyond = {
+            joint: (reached[joint], goal, tolerances.position(joint))
+            for joint, goal in trajectory.end.items()
+            if joint in reached and abs(reached[joint] - goal) > tolerances.position(joint)
+        }
+        if beyond:
+            raise failure(
+                f"{self.name}'s joints ended beyond their goal tolerances (reached, goal, "
+                f"tolerance): {beyond}; the controller reported success"
+            )
 
     def joint_states(self) -> dict[str, float]:
         """The latest joint positions [rad | m]."""

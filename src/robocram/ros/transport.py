@@ -16,6 +16,7 @@ from typing import Any, Protocol
 from robocram.tf import Pose
 
 RosDict = dict[str, Any]
+StateMark = tuple[int, int]  # joint-state and base-transform messages arrived so far
 
 
 class GoalState(Enum):
@@ -31,12 +32,14 @@ class GoalState(Enum):
 
 @dataclass(frozen=True)
 class GoalOutcome:
-    """How a goal ended: its state, the server's status text, the result, when it arrived."""
+    """How a goal ended: its state, the server's status text, the result, and the state
+    messages that had arrived when it did (state arriving after ``mark`` shows its end)."""
 
     state: GoalState
     status_text: str
     result: RosDict
-    stamp: float  # [s] ROS time the outcome arrived
+    mark: StateMark = (0, 0)
+    arrived: float = 0.0  # [s] time.monotonic() when our node got the result (benchmarks)
 
 
 @dataclass
@@ -45,6 +48,7 @@ class GoalHandle:
 
     goal_id: int
     server: str
+    sent: float = 0.0  # [s] time.monotonic() when our node handed the goal to ROS
     done: threading.Condition = field(default_factory=threading.Condition)
     outcome: GoalOutcome | None = None
 
@@ -67,8 +71,9 @@ class Transport(Protocol):
         """Ask the server to cancel the goal (its outcome arrives as PREEMPTED or RECALLED)."""
         ...
 
-    def wait_for_state(self, after: float, timeout: float) -> bool:
-        """Wait until joint states and transforms stamped after ``after`` [s] arrived."""
+    def wait_for_state(self, after: StateMark | None, timeout: float) -> bool:
+        """Wait until joint states and the base's transform arrived after ``after`` (an
+        outcome's mark; None: from now on). Arrival, not stamps: robot clocks may differ."""
         ...
 
     def joint_states(self) -> dict[str, float]:

@@ -34,6 +34,8 @@ _GRIPPER_LINKS = (
     "gripper_r_finger_tip_link",
 )
 # Arms folded beside the torso, out of the way for driving; the left arm mirrors the right.
+# CRAM's values; the wrist flex (-0.07) lies beyond its soft upper limit (-0.1), where the
+# real PR2 stops it, so over ROS parking is sent with -0.1 (ros/motion_planner.clamp_goal).
 _RIGHT_PARKING = (-1.712, -0.256, -1.463, -2.12, 1.766, -0.07, 0.051)
 # Hand in front of the chest, wrist level: holds an object while the base moves.
 _RIGHT_CARRYING = (-0.5, 0.0, -0.3, -1.8, 0.0, -0.3, 0.0)

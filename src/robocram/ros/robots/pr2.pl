@@ -29,6 +29,20 @@ ros_server_timeout(pr2, 5.0).
 % Effort [N] the grippers grip with.
 ros_gripper_effort(pr2, 50.0).
 
+% pr2_gripper_action (pr2_controllers/pr2_gripper_action) reads GripperCommand.position as
+% the gap between the fingers [m]: pr2_description's <side>_gripper_joint spans 0 .. 0.09 m
+% with the safety_controller's soft upper limit 0.088 m, while the description's finger
+% joint <side>_gripper_l_finger_joint spans 0 .. 0.548 rad. Open is sent as 0.085 m, inside
+% the soft limit, so an opening reaches its goal instead of stalling at the limit.
+ros_gripper_command(pr2, Arm, gap, 0.0, 0.085) :- member(Arm, [left, right]).
+% A goal the fingers cannot reach because they stalled (on an object) ends ABORTED with
+% stalled = true (pr2_gripper_action's stall check); 2 mm of gap or more is holding.
+ros_gripper_holding(pr2, Arm, aborted, 0.002) :- member(Arm, [left, right]).
+% Seconds a server may take to confirm a cancel before the robot may still be moving.
+ros_cancel_timeout(pr2, 2.0).
+% A robot clock further than this from ours is reported when entering ros_robot [s].
+ros_clock_skew_bound(pr2, 0.5).
+
 % How close a trajectory goal must end (FollowJointTrajectory goal_tolerance and
 % goal_time_tolerance). Joints without a fact: 0.02 rad (revolute), 0.005 m (prismatic).
 % ros_goal_tolerance(Robot, Joint, Tolerance) [rad | m]; ros_goal_time_tolerance(Robot, S).

@@ -31,7 +31,7 @@ from robocram.ros.process_modules import (
     TorsoPM,
 )
 from robocram.ros.ros_config import install_ros_facts, read_ros_config
-from robocram.ros.ros_robot_client import RosRobotClient
+from robocram.ros.ros_robot_client import DEFAULT_MASTER_TIMEOUT, RosRobotClient
 from robocram.ros.ros_transform_tree import RosTransformTree
 from robocram.tf import using_transform_tree
 from robocram.world import World
@@ -66,11 +66,17 @@ class RosEnvironment(Environment):
 
     @contextmanager
     def running(self) -> Iterator[Environment]:
-        """Start our ROS node, then the environment; stop both on leaving."""
+        """Start our ROS node, then the environment; stop both on leaving.
+
+        Raises:
+            RosCancelIgnored: on leaving without another error, if a server did not
+                confirm a cancel of a stopped task (the robot may still be moving).
+        """
         self.client.connect()
         try:
             with super().running() as environment:
                 yield environment
+            self.client.raise_unconfirmed_cancel()
         finally:
             self.client.disconnect()
 
@@ -82,6 +88,7 @@ def ros_environment(
     node_name: str = "robocram",
     world: World | None = None,
     motion: MotionSettings | None = None,
+    master_timeout: float = DEFAULT_MASTER_TIMEOUT,
 ) -> RosEnvironment:
     """The environment of ``robot`` behind the ROS master at ``master_uri``.
 
@@ -94,6 +101,8 @@ def ros_environment(
             state read from ROS, and arm, torso and base motions are checked and planned
             in it. None: nothing in the environment is checked (straight joint moves).
         motion: how arm paths are planned in the world (seed, budget); default settings.
+        master_timeout: [s] entering waits this long for the master to answer, then
+            raises ``RosMasterUnreachable``.
     """
     uri = master_uri or os.environ.get("ROS_MASTER_URI")
     if not uri:
@@ -105,7 +114,13 @@ def ros_environment(
     install_ros_facts(kb, desc.name, ros_facts)
     install_grasp_predicates(kb, description=desc)  # grasps by the perceived type and pose
     client = RosRobotClient(
-        desc, read_ros_config(kb, desc), uri, node_name, world=world, motion=motion
+        desc,
+        read_ros_config(kb, desc),
+        uri,
+        node_name,
+        world=world,
+        motion=motion,
+        master_timeout=master_timeout,
     )
     return RosEnvironment(client, kb)
 
@@ -132,10 +147,13 @@ def ros_robot(
     name: str = "ros-robot",
     world: World | None = None,
     motion: MotionSettings | None = None,
+    master_timeout: float = DEFAULT_MASTER_TIMEOUT,
 ) -> Iterator[RosRun]:
     """Run the block as a top level on ``robot`` behind ROS (see :func:`ros_environment`;
     ``world`` is the environment motions are checked and planned in)."""
-    environment = ros_environment(robot, master_uri, ros_facts, world=world, motion=motion)
+    environment = ros_environment(
+        robot, master_uri, ros_facts, world=world, motion=motion, master_timeout=master_timeout
+    )
     transforms = RosTransformTree(lambda: environment.client.transport)
     runner = top_level(name=name)
     with environment, using_transform_tree(transforms), runner:

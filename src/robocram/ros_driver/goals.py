@@ -20,7 +20,9 @@ from robocram.projection.gripper import grip, gripper_joints, open_gripper, set_
 from robocram.projection.navigation import drive
 from robocram.projection.neck import look_at
 from robocram.projection.perception import visible_matches
-from robocram.ros.driver.motion import MotionOptions, Stepper, base_motion, joint_motion
+from robocram.ros.gripper_semantics import GripperSemantics
+from robocram.ros.transport import GoalState
+from robocram.ros_driver.motion import MotionOptions, Stepper, base_motion, joint_motion
 from robocram.tf import Pose, PoseStamped, pose_stamped_to_ros
 
 Outcome = tuple[bool, dict[str, Any], str] | None
@@ -32,11 +34,31 @@ GRIP_TOLERANCE = 1e-6  # [rad | m] a command this close to the lower limit close
 
 @dataclass
 class GoalContext:
-    """The robot, its motion options and the stepper watching the goal's preemption."""
+    """The robot, its motion options and the stepper watching the goal's preemption.
+
+    ``soft_limits`` (the real PR2's controllers): joint targets are clamped into them
+    silently, as its safety controller does, and trajectory results carry no status text.
+    """
 
     robot: ProjectedRobot
     options: MotionOptions
     stepper: Stepper
+    soft_limits: dict[str, tuple[float, float]] | None = None
+
+
+def _soft_clamped(target: dict[str, float], ctx: GoalContext) -> dict[str, float]:
+    if ctx.soft_limits is None:
+        return target
+    limits = ctx.soft_limits
+    return {
+        j: min(max(v, limits[j][0]), limits[j][1]) if j in limits else v for j, v in target.items()
+    }
+
+
+def _trajectory_outcome(ok: bool, code: int, text: str, ctx: GoalContext) -> Outcome:
+    """A trajectory goal's end; the real PR2's controller says it in the result only."""
+    status = "" if ctx.soft_limits is not None else text
+    return ok, {"error_code": code, "error_string": text}, status
 
 
 def _pose(msg: Any) -> Pose:
@@ -87,7 +109,7 @@ def follow_joint_trajectory(goal: Any, ctx: GoalContext) -> Outcome:
         return False, {"error_code": INVALID_JOINTS, "error_string": text}, text
     elapsed = 0.0
     for point in goal.trajectory.points:
-        target = dict(zip(names, map(float, point.positions), strict=True))
+        target = _soft_clamped(dict(zip(names, map(float, point.positions), strict=True)), ctx)
         seconds = point.time_from_start.to_sec() - elapsed
         elapsed = point.time_from_start.to_sec()
         with ctx.stepper.lock:
@@ -100,14 +122,32 @@ def follow_joint_trajectory(goal: Any, ctx: GoalContext) -> Outcome:
             text = "joint goals outside the limits, clamped: " + ", ".join(
                 f"{c.name}={c.requested} not in [{c.lower}, {c.upper}]" for c in clamped
             )
-            return False, {"error_code": GOAL_TOLERANCE_VIOLATED, "error_string": text}, text
+            return _trajectory_outcome(False, GOAL_TOLERANCE_VIOLATED, text, ctx)
     return _at_goal(goal, names, ctx)
 
 
+def single_joint_position(goal: Any, ctx: GoalContext, joint: str) -> Outcome:
+    """``pr2_controllers_msgs/SingleJointPosition`` (the PR2's torso): move ``joint`` to the
+    position over ``min_duration``; the result has no fields, the status text says more."""
+    target = _soft_clamped({joint: float(goal.position)}, ctx)
+    with ctx.stepper.lock:
+        duration, step = joint_motion(ctx.robot, target, goal.min_duration.to_sec(), ctx.options)
+    if not ctx.stepper.run(duration, step):
+        return None
+    with ctx.stepper.lock:
+        clamped = ctx.robot.world.set_joint_states(ctx.robot.name, target)
+        reached = ctx.robot.world.joint_states(ctx.robot.name)[joint]
+    if clamped:
+        return False, {}, f"{joint}={goal.position} outside the limits; stopped at {reached}"
+    return True, {}, f"{joint} at {reached:.4f}"
+
+
 def _at_goal(goal: Any, names: list[str], ctx: GoalContext) -> Outcome:
-    """Compare the joints with the last point within each joint's goal tolerance."""
+    """Compare the joints with the last point within each joint's goal tolerance (the
+    PR2's native JointTrajectory goal has none: each joint gets the default)."""
     last = dict(zip(names, map(float, goal.trajectory.points[-1].positions), strict=True))
-    tolerances = {t.name: float(t.position) for t in goal.goal_tolerance}
+    given = getattr(goal, "goal_tolerance", [])
+    tolerances = {t.name: float(t.position) for t in given}
     with ctx.stepper.lock:
         reached = ctx.robot.world.joint_states(ctx.robot.name)
     errors = {j: abs(reached[j] - last[j]) for j in names}
@@ -121,13 +161,22 @@ def _at_goal(goal: Any, names: list[str], ctx: GoalContext) -> Outcome:
         text = "joints beyond their goal tolerance (error, tolerance): " + ", ".join(
             f"{j}=({e:.4f}, {t})" for j, (e, t) in beyond.items()
         )
-        return False, {"error_code": GOAL_TOLERANCE_VIOLATED, "error_string": text}, text
+        return _trajectory_outcome(False, GOAL_TOLERANCE_VIOLATED, text, ctx)
     text = (
         f"reached the last of {len(goal.trajectory.points)} points "
         f"({goal.trajectory.points[-1].time_from_start.to_sec():.3f} s); "
         f"largest error {errors[worst]:.2e} ({worst})"
     )
-    return True, {"error_code": 0, "error_string": text}, text
+    return _trajectory_outcome(True, 0, text, ctx)
+
+
+def aborted_on_purpose(action_type: str, bare: bool) -> Outcome:
+    """The outcome of ``fault="abort"``: a status text, or (``bare``, as the real PR2's
+    trajectory controllers) only a trajectory result's error code and string."""
+    text = "the driver aborts every goal (fault='abort')"
+    if bare and action_type == "control_msgs/FollowJointTrajectory":
+        return False, {"error_code": GOAL_TOLERANCE_VIOLATED, "error_string": text}, ""
+    return False, {}, text
 
 
 def _tolerance(value: float) -> float | None:
@@ -155,13 +204,16 @@ def point_head(goal: Any, ctx: GoalContext) -> Outcome:
     return True, {}, f"pointing angle error {math.acos(max(-1.0, min(1.0, cos))):.4f} rad"
 
 
-def gripper_command(goal: Any, ctx: GoalContext, arm: str) -> Outcome:
-    """``control_msgs/GripperCommand`` on ``arm``'s gripper joint; closing grips what is there.
+def gripper_command(goal: Any, ctx: GoalContext, semantics: GripperSemantics) -> Outcome:
+    """``control_msgs/GripperCommand`` on a gripper as the robot's ROS facts describe it.
 
-    Positions are the gripper joint's value [rad | m]. Closing fully grips: with an object
-    between the fingers they stop on it (``stalled``) and it is held; opening lets go.
+    The command maps to the gripper joint by ``semantics`` (a PR2 gap in metres, else the
+    joint value). Closing fully grips: with an object between the fingers they stop on it
+    (``stalled``), it is held, and the goal ends as the facts say holding ends (the PR2:
+    ABORTED); opening lets go. The result's position is in the command's unit.
     """
-    robot, position = ctx.robot, float(goal.command.position)
+    robot, arm = ctx.robot, semantics.arm
+    position = semantics.joint_value(float(goal.command.position))
     with ctx.stepper.lock:
         joint = gripper_joints(robot, arm)[0]
         limits = robot.world.joint_limits(robot.name, joint)
@@ -180,12 +232,13 @@ def gripper_command(goal: Any, ctx: GoalContext, arm: str) -> Outcome:
         reached = robot.world.joint_states(robot.name)[joint]
     effort = float(goal.command.max_effort) if stalled else 0.0
     result = {
-        "position": reached,
+        "position": semantics.command(reached),
         "effort": effort,
         "stalled": stalled,
         "reached_goal": abs(reached - position) < 1e-3,
     }
-    return True, result, "holding an object" if stalled else ""
+    succeeded = not (stalled and semantics.holding_status is GoalState.ABORTED)
+    return succeeded, result, "holding an object" if stalled else ""
 
 
 def detect_objects(goal: Any, ctx: GoalContext) -> Outcome:

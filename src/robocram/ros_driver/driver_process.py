@@ -25,7 +25,7 @@ STOP_TIMEOUT = 10.0  # [s]
 
 
 class DriverProcess:
-    """``python -m robocram.ros.driver`` with the given options, as a context manager."""
+    """``python -m robocram.ros_driver`` with the given options, as a context manager."""
 
     def __init__(
         self,
@@ -36,12 +36,16 @@ class DriverProcess:
         fault: str = "none",
         ros_facts: Path | None = None,
         goal_log: Path | None = None,
+        controllers: str = "projection",
+        clock_offset: float = 0.0,
     ) -> None:
-        """``goal_log``: the driver appends each goal it receives there (``received_goals``)."""
+        """``goal_log``: the driver appends each goal it receives there (``received_goals``);
+        ``controllers="pr2"``: the real PR2's controllers; ``clock_offset`` [s] on stamps."""
         self.args = [
-            sys.executable, "-m", "robocram.ros.driver", "--robot", robot,
+            sys.executable, "-m", "robocram.ros_driver", "--robot", robot,
             "--master-uri", master_uri, "--base-speed", str(base_speed),
             "--time-scale", str(time_scale), "--fault", fault,
+            "--controllers", controllers, "--clock-offset", str(clock_offset),
         ]  # fmt: skip
         if ros_facts is not None:
             self.args += ["--ros-facts", str(ros_facts)]
@@ -61,12 +65,19 @@ class DriverProcess:
 
     def received_goals(self, server: str | None = None) -> list[dict[str, Any]]:
         """The goals the driver received so far (of ``server``, or all), oldest first."""
+        return [e["goal"] for e in self._log_entries(server) if "goal" in e]
+
+    def cancels_seen(self, server: str | None = None) -> list[float]:
+        """When cancels reached the driver's servers (``time.monotonic()``), oldest first."""
+        return [e["cancel_seen"] for e in self._log_entries(server) if "cancel_seen" in e]
+
+    def _log_entries(self, server: str | None) -> list[dict[str, Any]]:
         if self.goal_log is None:
             raise RosNodeError("the driver keeps no goal log; start it with goal_log=PATH")
         if not self.goal_log.exists():
             return []
         entries = [json.loads(line) for line in self.goal_log.read_text().splitlines() if line]
-        return [e["goal"] for e in entries if server is None or e["server"] == server]
+        return [e for e in entries if server is None or e["server"] == server]
 
     def start(self) -> DriverProcess:
         """Start the node and wait for its ``ready`` line."""

@@ -1,6 +1,6 @@
 """Run the projection driver as a ROS node on the tabletop scene of a robot.
 
-``python -m robocram.ros.driver --robot pr2 --master-uri http://127.0.0.1:11311``
+``python -m robocram.ros_driver --robot pr2 --master-uri http://127.0.0.1:11311``
 prints ``ready <node name>`` on stdout once its action servers run, then serves until
 killed (SIGTERM or SIGINT) or the master goes away.
 """
@@ -12,9 +12,9 @@ import os
 from pathlib import Path
 
 from robocram.robots import load_description
-from robocram.ros.driver.motion import MotionOptions
-from robocram.ros.driver.projection_driver import FAULTS, ProjectionDriver
 from robocram.ros.ros_config import install_ros_facts, read_ros_config
+from robocram.ros_driver.motion import MotionOptions
+from robocram.ros_driver.projection_driver import CONTROLLERS, FAULTS, ProjectionDriver
 from robocram.scenes import tabletop_scene
 from robocram.world import World
 
@@ -29,6 +29,10 @@ def _arguments() -> argparse.Namespace:
     parser.add_argument("--fault", choices=FAULTS, default="none")
     parser.add_argument("--node-name", default="robocram_driver")
     parser.add_argument("--goal-log", type=Path, help="append each goal received as JSON")
+    parser.add_argument(
+        "--controllers", choices=CONTROLLERS, default="projection", help="pr2: the real PR2's"
+    )
+    parser.add_argument("--clock-offset", type=float, default=0.0, help="[s] added to stamps")
     return parser.parse_args()
 
 
@@ -47,7 +51,9 @@ def main() -> None:
     config = read_ros_config(world.kb, load_description(scene.robot))
     options = MotionOptions(base_speed=args.base_speed, time_scale=args.time_scale)
     rospy.init_node(args.node_name)
-    driver = ProjectionDriver(world, config, options, args.fault, args.goal_log)
+    driver = ProjectionDriver(
+        world, config, options, args.fault, args.goal_log, args.controllers, args.clock_offset
+    )
     driver.start()
     driver.publish_state()
     print("ready", rospy.get_name(), flush=True)

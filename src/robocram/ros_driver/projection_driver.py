@@ -5,40 +5,64 @@ servers named by the robot's ``ros_action/4`` facts move the projected robot (as
 ``goals.py`` says per action type), and ``/joint_states`` plus ``/tf`` (every robot link
 and object in ``map``) are published at ``PUBLISH_RATE`` and after every goal, before its
 result. ``fault`` makes every goal end badly on purpose, to exercise clients:
-``"silent"`` never answers (until cancelled), ``"abort"`` aborts with a status text.
+``"silent"`` never answers (until cancelled), ``"abort"`` aborts with a status text,
+``"ignore_cancel"`` never answers and ignores cancels. ``controllers="pr2"`` behaves as
+the real PR2's controllers (``pr2_controllers.py``: a gripper gap in metres that stalls
+on objects, joints clamped to the soft limits, results without status text);
+``clock_offset`` [s] shifts the stamps of everything published, as a robot clock ahead
+(+) or behind (-) of ours.
 """
 
 from __future__ import annotations
 
 import json
 import threading
+import time
 from collections.abc import Callable
 from functools import partial
 from pathlib import Path
 from typing import Any
 
 from robocram.projection import ProjectedRobot, WorldFrames
-from robocram.ros.driver import goals
-from robocram.ros.driver.motion import MotionOptions, Stepper
+from robocram.robots import load_description
 from robocram.ros.message_dicts import message_class, to_dict, to_message
 from robocram.ros.ros_config import RosConfig
+from robocram.ros_driver import goals, pr2_controllers
+from robocram.ros_driver.motion import MotionOptions, Stepper
 from robocram.world import World
 
 PUBLISH_RATE = 30.0  # [Hz]
-FAULTS = ("none", "silent", "abort")
+FAULTS = ("none", "silent", "abort", "ignore_cancel")
+CONTROLLERS = ("projection", "pr2")
 Handler = Callable[[Any, goals.GoalContext], goals.Outcome]
 
 
-def _handler(resource: str, action_type: str) -> Handler:
-    if action_type == "control_msgs/GripperCommand":
+def _handler(resource: str, action_type: str, config: RosConfig, controllers: str) -> Handler:
+    if action_type.endswith("GripperCommand"):  # control_msgs' or the PR2's Pr2GripperCommand
         arm = resource.removeprefix("gripper(").removesuffix(")")
-        return partial(goals.gripper_command, arm=arm)
+        if controllers == "pr2":
+            return partial(pr2_controllers.gripper_command, arm=arm)
+        return partial(goals.gripper_command, semantics=config.grippers[arm])
+    if action_type == "pr2_controllers_msgs/SingleJointPosition":
+        joint = load_description(config.robot).torso_joint
+        if resource != "torso" or joint is None:
+            raise ValueError(f"the driver serves SingleJointPosition for a torso, not {resource}")
+        return partial(goals.single_joint_position, joint=joint)
     return {
         "move_base_msgs/MoveBase": goals.move_base,
         "control_msgs/FollowJointTrajectory": goals.follow_joint_trajectory,
+        "pr2_controllers_msgs/JointTrajectory": goals.follow_joint_trajectory,
         "control_msgs/PointHead": goals.point_head,
+        "pr2_controllers_msgs/PointHead": goals.point_head,
         "robocram_msgs/DetectObjects": goals.detect_objects,
     }[action_type]
+
+
+def _result(result_type: str, fields: dict[str, Any]) -> Any:
+    """The result message with the fields its type has (the PR2's trajectory results have
+    none: their controllers report only by the goal status)."""
+    slots = message_class(result_type).__slots__
+    return to_message(result_type, {k: v for k, v in fields.items() if k in slots})
 
 
 class ProjectionDriver:
@@ -51,11 +75,18 @@ class ProjectionDriver:
         options: MotionOptions | None = None,
         fault: str = "none",
         goal_log: Path | None = None,
+        controllers: str = "projection",
+        clock_offset: float = 0.0,
     ) -> None:
         """``goal_log``: a file each received goal is appended to, one JSON line
-        ``{"server", "action_type", "goal"}`` (goal as message dicts), before it runs."""
+        ``{"server", "action_type", "goal"}`` (goal as message dicts), before it runs.
+        ``controllers``: ``"projection"`` or ``"pr2"``; ``clock_offset`` [s]."""
         if fault not in FAULTS:
             raise ValueError(f"driver fault {fault!r} is none of {FAULTS}")
+        if controllers not in CONTROLLERS:
+            raise ValueError(f"driver controllers {controllers!r} are none of {CONTROLLERS}")
+        self.controllers = controllers
+        self.clock_offset = clock_offset
         self.world = world
         self.robot = ProjectedRobot.of(world, config.robot)
         self.config = config
@@ -63,6 +94,11 @@ class ProjectionDriver:
         self.fault = fault
         self.lock = threading.Lock()
         self.frames = WorldFrames(world)
+        self.soft_limits = (
+            pr2_controllers.soft_limits(self.robot.description.urdf)
+            if controllers == "pr2"
+            else None
+        )
         self._servers: list[Any] = []
         self._publishers: dict[str, Any] = {}
         self.goal_log = goal_log
@@ -86,10 +122,11 @@ class ProjectionDriver:
             action = actionlib.SimpleActionServer(
                 server, message_class(f"{action_type}Action"), auto_start=False
             )
-            handler = _handler(resource, action_type)
+            handler = _handler(resource, action_type, self.config, self.controllers)
             action.register_goal_callback(
                 partial(self._on_goal, action, server, action_type, handler)
             )
+            action.register_preempt_callback(partial(self._on_preempt, server))
             action.start()
             self._servers.append(action)
         rospy.Timer(rospy.Duration(1.0 / PUBLISH_RATE), lambda _: self.publish_state())
@@ -100,6 +137,14 @@ class ProjectionDriver:
         threading.Thread(
             target=self._execute, args=(server, action_type, handler, goal), daemon=True
         ).start()
+
+    def _on_preempt(self, server: str) -> None:
+        """Log when a cancel reached the server (``time.monotonic()``, for benchmarks)."""
+        if self.goal_log is None:
+            return
+        line = json.dumps({"server": server, "cancel_seen": time.monotonic()})
+        with self._log_lock, self.goal_log.open("a") as log:
+            log.write(line + "\n")
 
     def _record(self, server: str, action_type: str, goal: object) -> None:
         """Append the goal to the goal log, if there is one."""
@@ -114,12 +159,16 @@ class ProjectionDriver:
 
         stepper = Stepper(self.lock, server.is_preempt_requested)
         result_type = f"{action_type}Result"
+        if self.fault == "ignore_cancel":  # a controller that never stops
+            while not rospy.is_shutdown():
+                rospy.sleep(0.02)
+            return
         if self.fault == "silent":
             while not server.is_preempt_requested() and not rospy.is_shutdown():
                 rospy.sleep(0.02)
             outcome: goals.Outcome = None
         elif self.fault == "abort":
-            outcome = (False, {}, "the driver aborts every goal (fault='abort')")
+            outcome = goals.aborted_on_purpose(action_type, bare=self.controllers == "pr2")
         else:
             outcome = self._handle(handler, goal, stepper)
         self.publish_state()
@@ -127,7 +176,7 @@ class ProjectionDriver:
             server.set_preempted(to_message(result_type, {}), "cancelled; stopped where it was")
             return
         succeeded, result, text = outcome
-        message = to_message(result_type, result)
+        message = _result(result_type, result)
         if succeeded:
             server.set_succeeded(message, text)
         else:
@@ -136,7 +185,8 @@ class ProjectionDriver:
     def _handle(self, handler: Handler, goal: Any, stepper: Stepper) -> goals.Outcome:
         """Run the handler; an error in it aborts the goal with the error as status text."""
         try:
-            return handler(goal, goals.GoalContext(self.robot, self.options, stepper))
+            context = goals.GoalContext(self.robot, self.options, stepper, self.soft_limits)
+            return handler(goal, context)
         except Exception as err:  # reported to the client, never a goal left hanging
             return False, {}, f"driver error: {type(err).__name__}: {err}"
 
@@ -150,7 +200,7 @@ class ProjectionDriver:
         with self.lock:
             joints = self.world.joint_states(self.robot.name)
             poses = self.frames.frame_poses()
-        stamp = rospy.Time.now()
+        stamp = rospy.Time.now() + rospy.Duration.from_sec(self.clock_offset)
         state = JointState(name=list(joints), position=list(joints.values()))
         state.header.stamp = stamp
         transforms = []

@@ -1,0 +1,62 @@
+"""CRAM's collision modes for arm motions, and an IK collision check on a world for them.
+
+``avoid_all``: no link of the robot may touch anything. ``allow_hand``: the moving arm's
+hand and gripper links may touch (for grasping). ``allow_all``: no check. Projection and
+the ROS layer (with a world) read the modes the same way from here.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+
+from robocram.motion.bullet_scene import BulletScene
+from robocram.motion.configuration_checker import LinkPair
+from robocram.motion.errors import MotionError
+from robocram.robots import ArmDescription
+from robocram.world import World
+
+COLLISION_MODES = ("avoid_all", "allow_hand", "allow_all")
+IKCollisionCheck = Callable[[Mapping[str, float]], list[LinkPair]]
+
+
+def collision_mode(mode: str) -> str:
+    """``mode`` with dashes as underscores; a MotionError naming the modes if unknown."""
+    normal = mode.replace("-", "_")
+    if normal not in COLLISION_MODES:
+        raise MotionError(f"unknown collision mode {mode!r}; use one of {COLLISION_MODES}")
+    return normal
+
+
+def hand_links(spec: ArmDescription) -> set[str]:
+    """The links of ``spec``'s hand: hand, gripper, end effector and tool frame."""
+    return (
+        set(spec.hand_links) | set(spec.gripper_links) | {spec.end_effector_link, spec.tool_frame}
+    )
+
+
+def allowed_links(spec: ArmDescription, mode: str) -> set[str]:
+    """The links that may touch things in ``mode``: the hand's for ``allow_hand``."""
+    return hand_links(spec) if collision_mode(mode) == "allow_hand" else set()
+
+
+def ik_collision_check(
+    world: World, robot: str, spec: ArmDescription, joints: tuple[str, ...], mode: str
+) -> IKCollisionCheck | None:
+    """An IK ``collision_check`` on ``world`` for ``joints`` in ``mode`` (None: allow_all).
+
+    It returns the colliding ``(robot link, other)`` pairs, so a failure can name them;
+    contacts the robot has now (a held object on its table) stay allowed, as in planning.
+    """
+    if collision_mode(mode) == "allow_all":
+        return None
+    allowed = allowed_links(spec, mode)
+    scene = BulletScene(world, robot, joints, allowed)
+    now = world.joint_states(robot)
+    touching = scene.colliding([now[j] for j in joints])
+    if touching:
+        scene = BulletScene(world, robot, joints, allowed, allowed_pairs=touching)
+
+    def colliding(candidate: Mapping[str, float]) -> list[LinkPair]:
+        return scene.colliding_at({j: candidate[j] for j in joints if j in candidate})
+
+    return colliding
