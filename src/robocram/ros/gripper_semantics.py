@@ -66,14 +66,14 @@ class GripperSemantics:
         )
 
 
-def _first(kb: KnowledgeBase, goal: str, **bindings: Any) -> dict[str, Any] | None:
+def _first(kb: KnowledgeBase, goal: str, **bindings: object) -> dict[str, Any] | None:
     try:
         return kb.first(goal, **bindings)
     except UnknownPredicateError:
         return None
 
 
-def _number(robot: str, fact: str, value: Any) -> float:
+def _number(robot: str, fact: str, value: object) -> float:
     if not isinstance(value, int | float):
         raise RosConfigError(f"{fact} gives {value!r}; it must be a number")
     return float(value)

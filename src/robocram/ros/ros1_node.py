@@ -135,7 +135,7 @@ class RosNode:
         with self._state:
             return (self._joint_arrivals, self._base_arrivals)
 
-    def op_send_goal(self, goal_id: int, server: str, goal: dict[str, Any]) -> float:
+    def op_send_goal(self, goal_id: int, server: str, goal: dict[str, object]) -> float:
         """Send a goal once the server is there; its end arrives as a ``goal`` message.
         Returns when it was sent (``time.monotonic()``)."""
         import rospy

@@ -90,7 +90,7 @@ def resource_key(term: Any) -> str:
     return str(term)
 
 
-def _first(kb: KnowledgeBase, goal: str, **bindings: Any) -> dict[str, Any] | None:
+def _first(kb: KnowledgeBase, goal: str, **bindings: object) -> dict[str, Any] | None:
     """The first answer, or None also when no clause of the predicate exists at all."""
     try:
         return kb.first(goal, **bindings)

@@ -25,6 +25,7 @@ from robocram.ros.transport import GoalState
 from robocram.ros_driver.motion import MotionOptions, Stepper, base_motion, joint_motion
 from robocram.tf import Pose, PoseStamped, pose_stamped_to_ros
 
+RosMessage = Any  # a genpy message (goal, result, pose): Debian's rospy ships no types
 Outcome = tuple[bool, dict[str, Any], str] | None
 INVALID_JOINTS = -2
 GOAL_TOLERANCE_VIOLATED = -5
@@ -61,7 +62,7 @@ def _trajectory_outcome(ok: bool, code: int, text: str, ctx: GoalContext) -> Out
     return ok, {"error_code": code, "error_string": text}, status
 
 
-def _pose(msg: Any) -> Pose:
+def _pose(msg: RosMessage) -> Pose:
     p, q = msg.position, msg.orientation
     return Pose((p.x, p.y, p.z), (q.x, q.y, q.z, q.w))
 
@@ -70,7 +71,7 @@ def _stamped_in_map(robot: ProjectedRobot, frame: str, pose: Pose) -> Pose:
     return robot.in_map(PoseStamped.from_pose(frame or "map", pose))
 
 
-def move_base(goal: Any, ctx: GoalContext) -> Outcome:
+def move_base(goal: RosMessage, ctx: GoalContext) -> Outcome:
     """``move_base_msgs/MoveBase``: refuse a goal in collision, else drive straight there."""
     target = goal.target_pose
     robot = ctx.robot
@@ -93,7 +94,7 @@ def move_base(goal: Any, ctx: GoalContext) -> Outcome:
     return True, {}, f"reached {reached.position}"
 
 
-def follow_joint_trajectory(goal: Any, ctx: GoalContext) -> Outcome:
+def follow_joint_trajectory(goal: RosMessage, ctx: GoalContext) -> Outcome:
     """``control_msgs/FollowJointTrajectory``: play every point at its time, then check the
     joints against the last point within the goal's tolerances, as a controller does.
 
@@ -126,7 +127,7 @@ def follow_joint_trajectory(goal: Any, ctx: GoalContext) -> Outcome:
     return _at_goal(goal, names, ctx)
 
 
-def single_joint_position(goal: Any, ctx: GoalContext, joint: str) -> Outcome:
+def single_joint_position(goal: RosMessage, ctx: GoalContext, joint: str) -> Outcome:
     """``pr2_controllers_msgs/SingleJointPosition`` (the PR2's torso): move ``joint`` to the
     position over ``min_duration``; the result has no fields, the status text says more."""
     target = _soft_clamped({joint: float(goal.position)}, ctx)
@@ -142,7 +143,7 @@ def single_joint_position(goal: Any, ctx: GoalContext, joint: str) -> Outcome:
     return True, {}, f"{joint} at {reached:.4f}"
 
 
-def _at_goal(goal: Any, names: list[str], ctx: GoalContext) -> Outcome:
+def _at_goal(goal: RosMessage, names: list[str], ctx: GoalContext) -> Outcome:
     """Compare the joints with the last point within each joint's goal tolerance (the
     PR2's native JointTrajectory goal has none: each joint gets the default)."""
     last = dict(zip(names, map(float, goal.trajectory.points[-1].positions), strict=True))
@@ -186,7 +187,7 @@ def _tolerance(value: float) -> float | None:
     return value if value > 0.0 else DEFAULT_GOAL_TOLERANCE
 
 
-def point_head(goal: Any, ctx: GoalContext) -> Outcome:
+def point_head(goal: RosMessage, ctx: GoalContext) -> Outcome:
     """``control_msgs/PointHead``: aim the camera at the target point."""
     point = goal.target.point
     with ctx.stepper.lock:
@@ -204,7 +205,7 @@ def point_head(goal: Any, ctx: GoalContext) -> Outcome:
     return True, {}, f"pointing angle error {math.acos(max(-1.0, min(1.0, cos))):.4f} rad"
 
 
-def gripper_command(goal: Any, ctx: GoalContext, semantics: GripperSemantics) -> Outcome:
+def gripper_command(goal: RosMessage, ctx: GoalContext, semantics: GripperSemantics) -> Outcome:
     """``control_msgs/GripperCommand`` on a gripper as the robot's ROS facts describe it.
 
     The command maps to the gripper joint by ``semantics`` (a PR2 gap in metres, else the
@@ -241,7 +242,7 @@ def gripper_command(goal: Any, ctx: GoalContext, semantics: GripperSemantics) ->
     return succeeded, result, "holding an object" if stalled else ""
 
 
-def detect_objects(goal: Any, ctx: GoalContext) -> Outcome:
+def detect_objects(goal: RosMessage, ctx: GoalContext) -> Outcome:
     """``robocram_msgs/DetectObjects``: the visible objects matching type and name."""
     wanted = {k: v for k, v in (("type", goal.object_type), ("name", goal.object_name)) if v}
     robot = ctx.robot

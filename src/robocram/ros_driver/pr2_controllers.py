@@ -17,12 +17,11 @@ from __future__ import annotations
 
 import contextlib
 from pathlib import Path
-from typing import Any
 from xml.etree import ElementTree
 
 from robocram.execution.failures import GripperClosedCompletely
 from robocram.projection.gripper import grip, gripper_joints, release, set_gripper
-from robocram.ros_driver.goals import GoalContext, Outcome
+from robocram.ros_driver.goals import GoalContext, Outcome, RosMessage
 
 GAP_AT_UPPER = 0.09  # [m] the gap of pr2_description's gripper_joint at its upper limit
 GAP_SOFT_UPPER = 0.088  # [m] its safety_controller soft_upper_limit
@@ -43,7 +42,7 @@ def soft_limits(urdf: str | Path) -> dict[str, tuple[float, float]]:
     return limits
 
 
-def gripper_command(goal: Any, ctx: GoalContext, arm: str) -> Outcome:
+def gripper_command(goal: RosMessage, ctx: GoalContext, arm: str) -> Outcome:
     """``GripperCommand`` as ``pr2_gripper_action``: a gap [m], stalls end ABORTED."""
     robot, wanted = ctx.robot, float(goal.command.position)
     with ctx.stepper.lock:

@@ -28,6 +28,7 @@ from robocram.robots import load_description
 from robocram.ros.message_dicts import message_class, to_dict, to_message
 from robocram.ros.ros_config import RosConfig
 from robocram.ros_driver import goals, pr2_controllers
+from robocram.ros_driver.goals import RosMessage
 from robocram.ros_driver.motion import MotionOptions, Stepper
 from robocram.world import World
 
@@ -154,7 +155,7 @@ class ProjectionDriver:
         with self._log_lock, self.goal_log.open("a") as log:
             log.write(line + "\n")
 
-    def _execute(self, server: Any, action_type: str, handler: Handler, goal: Any) -> None:
+    def _execute(self, server: Any, action_type: str, handler: Handler, goal: RosMessage) -> None:
         import rospy
 
         stepper = Stepper(self.lock, server.is_preempt_requested)
@@ -182,7 +183,7 @@ class ProjectionDriver:
         else:
             server.set_aborted(message, text)
 
-    def _handle(self, handler: Handler, goal: Any, stepper: Stepper) -> goals.Outcome:
+    def _handle(self, handler: Handler, goal: RosMessage, stepper: Stepper) -> goals.Outcome:
         """Run the handler; an error in it aborts the goal with the error as status text."""
         try:
             context = goals.GoalContext(self.robot, self.options, stepper, self.soft_limits)
