@@ -125,10 +125,10 @@ def _checked_path(
     start_links = {link for link, _ in scene.allowed_pairs if link in links}
     failures: list[ManipulationPathBlocked] = []
     for margin in SNAPSHOT_MARGINS:  # the snapshot's hulls and Bullet's can differ by mm
-        snapshot = CollisionScene.of(
-            world, robot, joints, allowed_links=scene.allowed_links | start_links, margin=margin
-        )
-        snapshot.allow_own_contacts_at(end)  # the goal passed the finer check on the meshes
+        snapshot = CollisionScene.of(  # the goal passed the finer check on the meshes
+            world, robot, joints, allowed_links=scene.allowed_links | start_links,
+            margin=margin, allow_at=[end],
+        )  # fmt: skip
         try:
             path = plan_joint_path(
                 snapshot, start, end, bound, box, seed=settings.seed, budget=settings.budget,

@@ -36,20 +36,20 @@ class CollisionScene:
         self,
         snapshot: SceneSnapshot,
         geometry: SceneGeometry | None = None,
-        dropped: Collection[int] = (),
+        allow_at: Sequence[Sequence[float] | NDArray[np.float64]] = (),
     ) -> None:
         self.snapshot = snapshot
         self.joints: tuple[str, ...] = snapshot.joints
-        self._dropped: set[int] = set(dropped)  # pairs left out (touching at q0 or a goal)
         if geometry is None:
             geometry = build_geometry(snapshot)
             self._geometry = geometry
+            self._slots = _JointSlots(geometry, snapshot)
             self._new_data()
-            self._drop_snapshot_contacts()
+            self._drop_own_contacts([geometry.q0, *(self._slots.full(q) for q in allow_at)])
         else:
             self._geometry = geometry
+            self._slots = _JointSlots(geometry, snapshot)
             self._new_data()
-        self._slots = _JointSlots(geometry, snapshot)
 
     @classmethod
     def of(
@@ -60,13 +60,16 @@ class CollisionScene:
         *,
         allowed_links: Collection[str] = (),
         margin: float = 0.0,
+        allow_at: Sequence[Sequence[float] | NDArray[np.float64]] = (),
     ) -> CollisionScene:
         """Take ``world`` around ``robot`` now, to check values of ``joints``.
 
         ``allowed_links`` may touch anything (CRAM's ``allow_hand``); ``margin`` [m]
-        grows every shape, for a safety distance.
+        grows every shape, for a safety distance; the robot's own contacts at the
+        configurations ``allow_at`` (a goal a finer check accepted) are left out.
         """
-        return cls(SceneSnapshot.take(world, robot, joints, allowed_links, margin))
+        snapshot = SceneSnapshot.take(world, robot, joints, allowed_links, margin)
+        return cls(snapshot, allow_at=allow_at)
 
     def _new_data(self) -> None:
         """This scene's own data: pinocchio's, coal's and two broadphase managers.
@@ -82,8 +85,6 @@ class CollisionScene:
         for request in self._geometry_data.collisionRequests:
             request.security_margin = self.snapshot.margin
             request.enable_contact = False  # a yes/no answer: GJK only, no EPA
-        for k in self._dropped:
-            self._geometry_data.deactivateCollisionPair(k)
         moving, fixed = geo.sides()
         self._moving = _Manager(model, moving, self._geometry_data)
         self._fixed = _Manager(model, fixed, self._geometry_data)
@@ -94,28 +95,34 @@ class CollisionScene:
             geo.geometry, self._geometry_data, max(1, len(geo.pair_labels))
         )
 
-    def _drop_snapshot_contacts(self) -> None:
-        """Leave out robot-robot and robot-held pairs already touching at the snapshot."""
-        self._drop_own_contacts(self._geometry.q0)
-
     def allow_own_contacts_at(self, q: Sequence[float] | NDArray[np.float64]) -> None:
         """Leave out the robot's own pairs (and with what it holds) touching at ``q``.
 
         For a configuration a finer check already accepted (an IK goal checked on the
         world's meshes), so that the convex hulls of neighbouring links do not refuse it.
+        Cheaper when given to the constructor (``allow_at``): the data is built once.
         """
-        self._drop_own_contacts(self._slots.full(q))
+        self._drop_own_contacts([self._slots.full(q)])
 
-    def _drop_own_contacts(self, full: NDArray[np.float64]) -> None:
+    def _drop_own_contacts(self, fulls: Sequence[NDArray[np.float64]]) -> None:
+        """Remove the robot-robot and robot-held pairs touching at any of ``fulls`` (the
+        snapshot's own configuration first), then build the data once for what is left:
+        removed pairs cost the checks nothing, unlike switched-off ones."""
         geo = self._geometry
         kinds = [o.kind for o in geo.owners]
         drop = {
-            k for k in self._pairs_at(full)
+            k for full in fulls for k in self._pairs_at(full)
             if kinds[geo.geometry.collisionPairs[k].second] != "static"
         }  # fmt: skip
-        for k in drop:  # switched off in this scene's data: no rebuild of models or trees
-            self._geometry_data.deactivateCollisionPair(k)
-        self._dropped |= drop
+        if not drop:
+            return
+        pairs = [p for k, p in enumerate(geo.geometry.collisionPairs) if k not in drop]
+        geo.pair_labels = [lab for k, lab in enumerate(geo.pair_labels) if k not in drop]
+        geo.geometry.removeAllCollisionPairs()
+        for pair in pairs:
+            geo.geometry.addCollisionPair(pin.CollisionPair(pair.first, pair.second))
+        geo.forget_sides()
+        self._new_data()
 
     def _place(self, full: NDArray[np.float64]) -> None:
         geo = self._geometry
@@ -127,7 +134,7 @@ class CollisionScene:
     @property
     def pair_count(self) -> int:
         """How many geometry pairs a full check may test (after culling and rules)."""
-        return len(self._geometry.pair_labels) - len(self._dropped)
+        return len(self._geometry.pair_labels)
 
     @property
     def geometry_count(self) -> int:
@@ -171,7 +178,7 @@ class CollisionScene:
         candidates.update(int(k) for k in collect.pair_indexes)
         geo = self._geometry
         hits = []
-        for k in sorted(candidates - self._dropped):
+        for k in sorted(candidates):
             if pin.computeCollision(geo.geometry, self._geometry_data, k):
                 hits.append(k)
                 if first_only:
@@ -180,7 +187,7 @@ class CollisionScene:
 
     def copy(self) -> CollisionScene:
         """A scene sharing this one's models with its own data, for another thread."""
-        return CollisionScene(self.snapshot, self._geometry, self._dropped)
+        return CollisionScene(self.snapshot, self._geometry)
 
     def __reduce__(self) -> tuple[type[CollisionScene], tuple[SceneSnapshot]]:
         return (CollisionScene, (self.snapshot,))
