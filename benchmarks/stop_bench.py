@@ -4,7 +4,8 @@ For each command a thread runs it inside its own task in the PR2 kitchen; after 
 the main thread stops that task and times how long the command takes to end. Cases: an
 arm motion whose IK fails (every solution collides with the torso, ~90 ms unstopped), two
 seconds of physics, a drive, and opening a drawer by 0.3 m. The world is put back after
-every run. Run: ``python benchmarks/stop_bench.py``.
+every run. Then a PR2 kitchen transport is stopped at 20 seeded moments of its run
+(issue 24: max <= 100 ms idle). Run: ``python benchmarks/stop_bench.py``.
 """
 
 from __future__ import annotations
@@ -16,19 +17,25 @@ import threading
 import time
 from collections.abc import Callable
 
+import numpy as np
+
+from robocram.designators import a
 from robocram.execution import Task, TaskStopped, checkpoint
 from robocram.execution.failures import PlanFailure
 from robocram.execution.task_context import binding_task
-from robocram.projection import ProjectedRobot
+from robocram.plans import transport
+from robocram.projection import ProjectedRobot, SimulatedRun, simulated_robot
 from robocram.projection.arm import move_tcp
 from robocram.projection.articulation import move_part
 from robocram.projection.navigation import drive
 from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
+from robocram.world import World
 
 DRAWER = "drawer_unit_drawer_3"
 DELAYS = (0.0, 0.005, 0.01, 0.025, 0.04, 0.06, 0.08)  # [s] after the start, when stop is asked
+TRANSPORT_MOMENTS = 20  # seeded moments of a transport at which it is stopped
 INSIDE_TORSO = Pose((0.0, 0.0, 0.8), quat.from_euler(0.0, math.pi / 2, 0.0))  # IK fails: collides
 
 Command = Callable[[ProjectedRobot], object]
@@ -99,6 +106,56 @@ def kitchen_robot() -> ProjectedRobot:
     return ProjectedRobot.of(world, scene.robot)
 
 
+def _transport_once(world: World, stop_after: float | None) -> tuple[float, float]:
+    """Transport the mug in a thread; stop its top level ``stop_after`` [s] in (None: never).
+
+    Returns (seconds the run lasted, seconds from the stop to its end; 0 if it ended first).
+    """
+    box: dict[str, SimulatedRun] = {}
+    started, ended = threading.Event(), []
+
+    def running() -> None:
+        with contextlib.suppress(TaskStopped, PlanFailure), simulated_robot(world, "pr2") as run:
+            box["run"] = run
+            started.set()
+            transport("mug", a.location(on=("kitchen", "table_top"), for_="mug-1"))
+        ended.append(time.perf_counter())
+
+    worker = threading.Thread(target=running)
+    begun = time.perf_counter()
+    worker.start()
+    started.wait()
+    if stop_after is None:
+        worker.join()
+        return ended[0] - begun, 0.0
+    time.sleep(stop_after)
+    asked = time.perf_counter()
+    box["run"].top_level.stop()
+    worker.join()
+    return ended[0] - begun, max(0.0, ended[0] - asked)
+
+
+def transport_case(moments: int = TRANSPORT_MOMENTS, seed: int = 0) -> None:
+    """Stop a PR2 kitchen transport at ``moments`` seeded moments of its run (wall time)."""
+    scene = kitchen_scene("pr2")
+    world = scene.world
+    with world.stored_state():
+        _transport_once(world, None)  # warm: IK start tables, reachability maps
+    with world.stored_state():
+        lasted, _ = _transport_once(world, None)
+    delays = sorted(np.random.default_rng(seed).uniform(0.0, lasted, moments))
+    latencies = []
+    for delay in delays:
+        with world.stored_state():
+            latencies.append(_transport_once(world, float(delay))[1])
+    print(
+        f"  {'transport, ' + str(moments) + ' moments':28s} median "
+        f"{statistics.median(latencies) * 1e3:6.1f} ms, max {max(latencies) * 1e3:6.1f} ms"
+        f"  (unstopped it runs {lasted * 1e3:6.1f} ms)"
+    )
+    world.close()
+
+
 def main() -> None:
     robot = kitchen_robot()
     world = robot.world
@@ -117,6 +174,7 @@ def main() -> None:
             f"max {max(latencies) * 1e3:6.1f} ms  (unstopped it runs {unstopped * 1e3:6.1f} ms)"
         )
     world.close()
+    transport_case()
 
 
 if __name__ == "__main__":

@@ -13,9 +13,19 @@ from collections.abc import Iterator
 import pytest
 
 from robocram.designators import a
-from robocram.execution import Task, TaskStopped, checkpoint, perform
+from robocram.execution import (
+    Task,
+    TaskListener,
+    TaskStopped,
+    TopLevel,
+    checkpoint,
+    listening,
+    perform,
+)
 from robocram.execution.task_context import binding_task
+from robocram.motion import JointTrajectory, trajectory_listener
 from robocram.motion.tool_goal import POSITION_TOLERANCE
+from robocram.plans import transport
 from robocram.projection import ProjectedRobot, simulated_robot
 from robocram.projection.arm import move_tcp
 from robocram.projection.articulation import move_part
@@ -145,3 +155,39 @@ def test_a_stopped_plan_does_not_drive_and_a_stopped_drive_is_whole(
             run.top_level.stop()  # after the drive: the plan ends, the base stays at the goal
             checkpoint()
         assert world.pose(robot.name).distance_to(before) == pytest.approx(0.3, abs=1e-9)
+
+
+class StopAtTask(TaskListener):
+    """Stops the top level when the ``n``-th task of the run starts (no clock involved)."""
+
+    def __init__(self, n: int, executed: list[JointTrajectory]) -> None:
+        self.n, self.started, self.executed = n, 0, executed
+        self.top_level: TopLevel | None = None
+        self.executed_at_stop: int | None = None
+
+    def task_started(self, task: Task) -> None:
+        self.started += 1
+        if self.started == self.n and self.top_level is not None:
+            self.executed_at_stop = len(self.executed)
+            self.top_level.stop()
+
+
+@pytest.mark.parametrize("n", [3, 9, 16, 24])  # of the 27 tasks a transport starts
+def test_a_transport_stopped_at_its_nth_task_moves_no_further(n: int) -> None:
+    scene = kitchen_scene("pr2")
+    world = scene.world
+    executed: list[JointTrajectory] = []
+    stopper = StopAtTask(n, executed)
+    with (
+        trajectory_listener(executed.append),
+        listening(stopper),
+        simulated_robot(world, "pr2") as run,
+    ):
+        stopper.top_level = run.top_level
+        with pytest.raises(TaskStopped):
+            transport("mug", a.location(on=("kitchen", "table_top"), for_="mug-1"))
+    assert stopper.executed_at_stop is not None  # the stop came during the transport
+    assert len(executed) <= stopper.executed_at_stop + 1  # at most the motion under way
+    held = world.attached_to("mug-1")
+    assert held is None or held.robot == "pr2"  # on its counter, or in the hand: whole
+    world.close()

@@ -19,6 +19,7 @@ import numpy as np
 
 from robocram.designators import ObjectDesignator, Quantifier
 from robocram.designators.perceived_object import PerceivedObject
+from robocram.execution import checkpoint
 from robocram.execution.failures import PerceptionBlockedByRobot, PerceptionObjectNotFound
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.tf import PoseStamped, Vector3
@@ -45,7 +46,11 @@ def visible_matches(robot: ProjectedRobot, designator: ObjectDesignator) -> list
         for o in world.objects()
         if o.name != robot.name and o.type != "floor" and _matches(designator, o)
     ]
-    seen = [o for o in found if world.visible(robot.name, o)]
+    seen = []
+    for obj in found:
+        checkpoint()  # a stopped task ends here, between one object's rays and the next's
+        if world.visible(robot.name, obj):
+            seen.append(obj)
     return sorted(seen, key=lambda o: world.pose(o).distance_to(camera))
 
 
