@@ -19,6 +19,7 @@ from robocram.costmaps.errors import CostmapInputError
 from robocram.costmaps.grid import BoolGrid, CostmapGrid, FloatGrid
 from robocram.costmaps.reachability_map import ReachabilityMaps
 from robocram.designators import ObjectDesignator
+from robocram.logic import Value
 from robocram.tf import Pose, PoseStamped, Vector3
 from robocram.world import RobotObject, World, WorldObject
 
@@ -50,7 +51,7 @@ class LocationQuery:
     grid: CostmapGrid
     robot: RobotObject | None
     reach_maps: ReachabilityMaps = field(default_factory=ReachabilityMaps)
-    memo: dict[Any, Any] = field(default_factory=dict, repr=False)  # per resolution: what
+    memo: dict[object, object] = field(default_factory=dict, repr=False)  # per resolution: what
     # validators work out once for all candidates (an object's shape, its grasp names)
 
     def centres(self) -> tuple[FloatGrid, FloatGrid]:
@@ -61,7 +62,7 @@ class LocationQuery:
         """The world object ``value`` names (a name, an object, an object designator)."""
         return resolve_object(self.world, value, key)
 
-    def part(self, value: Any, key: str) -> tuple[WorldObject, str | None]:
+    def part(self, value: Value, key: str) -> tuple[WorldObject, str | None]:
         """The object and link ``value`` names: an object, or ``(object, link)`` for a part
         of an articulated one such as ``("kitchen", "drawer_unit_drawer_3")``."""
         if isinstance(value, tuple) and len(value) == 2 and isinstance(value[1], str):
@@ -75,12 +76,12 @@ class LocationQuery:
             return obj, value[1]
         return self.object(value, key), None
 
-    def bounds(self, value: Any, key: str) -> tuple[Vector3, Vector3]:
+    def bounds(self, value: Value, key: str) -> tuple[Vector3, Vector3]:
         """World-aligned bounds [m] of the object or ``(object, link)`` ``value`` names."""
         obj, link = self.part(value, key)
         return self.world.aabb(obj) if link is None else self.world.link_aabb(obj, link)
 
-    def point(self, value: Any, key: str) -> tuple[float, float, float]:
+    def point(self, value: Value, key: str) -> tuple[float, float, float]:
         """Map (x, y, z) [m] of a pose, a point, or the centre of an object's (link's) bounds."""
         if isinstance(value, Pose | PoseStamped):
             return Pose.coerce(value.pose if isinstance(value, PoseStamped) else value).position
@@ -113,7 +114,7 @@ def resolve_object(world: World, value: object, key: str) -> WorldObject:
     return world.object(name)
 
 
-CostFunction = Callable[[LocationQuery, Any, BoolGrid], CostLayer]
+CostFunction = Callable[[LocationQuery, Value, BoolGrid], CostLayer]
 
 
 def ones(query: LocationQuery) -> FloatGrid:

@@ -12,6 +12,7 @@ from importlib import resources
 from typing import Any
 
 from robocram.costmaps.errors import LocationKeyError
+from robocram.designators import Designator
 from robocram.logic import KnowledgeBase
 
 GROUP = "location_costmaps"
@@ -48,7 +49,7 @@ def _all(kb: KnowledgeBase, goal: str, var: str, **bindings: Any) -> list[Any]:
     return [answer[var] for answer in kb.query(goal, **bindings)]
 
 
-def _check_keys(kb: KnowledgeBase, designator: Any, keys: list[str]) -> None:
+def _check_keys(kb: KnowledgeBase, designator: Designator[object], keys: list[str]) -> None:
     known = set(_all(kb, "location_cost(K, _)", "K")) | set(_all(kb, "location_option(K)", "K"))
     for key in keys:
         if key not in known:

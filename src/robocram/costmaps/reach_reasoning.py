@@ -9,7 +9,6 @@ see what it would hit, then restores the joints.
 from __future__ import annotations
 
 from collections.abc import Iterator
-from typing import Any
 
 from robocram.costmaps.errors import CostmapInputError
 from robocram.costmaps.validators import (
@@ -20,14 +19,14 @@ from robocram.costmaps.validators import (
     robot_arms,
 )
 from robocram.kinematics import base_in_ik, solve_ik
-from robocram.logic import KnowledgeBase, Var
+from robocram.logic import KnowledgeBase, Value, Var
 from robocram.tf import Pose, PoseStamped
 from robocram.world import RobotObject, World, WorldObject
 
-Solutions = Iterator[tuple[Any, ...] | None]
+Solutions = Iterator[tuple[Value, ...] | None]
 
 
-def _pose_in_map(pose: Pose | PoseStamped | Any) -> Pose:
+def _pose_in_map(pose: Value) -> Pose:
     if isinstance(pose, PoseStamped):
         if pose.frame_id != "map":
             raise CostmapInputError(
@@ -109,14 +108,14 @@ def install_reach_predicates(kb: KnowledgeBase, world: World) -> None:
             yield from ((r, o) for o in _names(world, obj, robots=False) if reachable(world, r, o))
 
     @kb.predicate("pose_reachable", 2)
-    def pose_reachable_(rob: Any, pose: Any) -> Solutions:
+    def pose_reachable_(rob: object, pose: Value) -> Solutions:
         if not isinstance(pose, Var):
             yield from (
                 (r, pose) for r in _names(world, rob, True) if pose_reachable(world, r, pose)
             )
 
     @kb.predicate("blocking", 4)
-    def blocking_(rob: Any, arm: Any, obj: Any, blockers: Any) -> Solutions:
+    def blocking_(rob: object, arm: Value, obj: object, blockers: object) -> Solutions:
         for r in _names(world, rob, robots=True):
             arms = robot_arms(world.robot(r), None) if isinstance(arm, Var) else [arm]
             for a in arms:

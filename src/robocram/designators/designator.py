@@ -20,7 +20,7 @@ from robocram.designators.properties import PropertyPair, format_value, normaliz
 from robocram.designators.solution_stream import SolutionStream
 
 if TYPE_CHECKING:
-    from robocram.logic import KnowledgeBase
+    from robocram.logic import KnowledgeBase, Value
 
 S = TypeVar("S")  # a solution, in the stream tables
 S_co = TypeVar("S_co", covariant=True)  # what a designator resolves to
@@ -92,16 +92,16 @@ class Designator(Generic[S_co]):
         """The properties in the order written, repeats included."""
         return self._properties
 
-    def get(self, key: str, default: object = None) -> Any:
+    def get(self, key: str, default: object = None) -> Value:
         """Return the first value of property ``key``, or ``default``."""
         return next((v for k, v in self._properties if k == key), default)
 
-    def get_all(self, key: str) -> list[Any]:
+    def get_all(self, key: str) -> list[Value]:
         """Return every value of property ``key`` (keys may repeat)."""
         return [v for k, v in self._properties if k == key]
 
     @property
-    def type(self) -> Any:
+    def type(self) -> Value:
         """The ``type`` property (None if absent)."""
         return self.get("type")
 
@@ -196,7 +196,7 @@ class Designator(Generic[S_co]):
     def _no_solution_error(self, context: Any) -> GroundingError:
         return GroundingError(f"{self.description} has no solution", self)
 
-    def equate(self, successor: Designator[Any]) -> None:
+    def equate(self, successor: Designator[object]) -> None:
         """Declare that ``successor`` describes the same entity, appending it to this chain."""
         if successor.kind is not self.kind:
             raise DesignatorError(
@@ -217,23 +217,23 @@ class Designator(Generic[S_co]):
             last._successor = successor
             successor._parent = last
 
-    def first_desig(self) -> Designator[Any]:
+    def first_desig(self) -> Designator[object]:
         """Return the oldest designator of this chain."""
         with _CHAIN_LOCK:
-            desig: Designator[Any] = self
+            desig: Designator[object] = self
             while desig._parent is not None:
                 desig = desig._parent
             return desig
 
-    def current_desig(self) -> Designator[Any]:
+    def current_desig(self) -> Designator[object]:
         """Return the newest designator of this chain (the best-informed description)."""
         with _CHAIN_LOCK:
-            desig: Designator[Any] = self
+            desig: Designator[object] = self
             while desig._successor is not None:
                 desig = desig._successor
             return desig
 
-    def chain(self) -> list[Designator[Any]]:
+    def chain(self) -> list[Designator[object]]:
         """Return the whole chain, oldest first."""
         with _CHAIN_LOCK:
             out = [self.first_desig()]
@@ -242,6 +242,6 @@ class Designator(Generic[S_co]):
             return out
 
 
-def desig_equal(a: Designator[Any], b: Designator[Any]) -> bool:
+def desig_equal(a: Designator[object], b: Designator[object]) -> bool:
     """Return whether ``a`` and ``b`` belong to the same chain (describe the same entity)."""
     return a.first_desig() is b.first_desig()

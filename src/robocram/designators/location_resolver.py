@@ -20,7 +20,7 @@ from dataclasses import dataclass, replace
 from enum import Enum
 from typing import Any, TypeVar
 
-GeneratorFunction = Callable[[Any], Iterable[Any]]
+GeneratorFunction = Callable[[Any], Iterable[object]]
 ValidatorFunction = Callable[[Any, Any], "Verdict"]
 _Item = TypeVar("_Item", "LocationGenerator", "LocationValidator")
 
@@ -120,7 +120,7 @@ class LocationResolver:
         _require(name, [v.name for v in self.validators], "validator")
         return replace(self, validators=tuple(v for v in self.validators if v.name != name))
 
-    def solutions(self, designator: object) -> Iterator[Any]:
+    def solutions(self, designator: object) -> Iterator[object]:
         """Yield the accepted candidates for ``designator`` lazily."""
         rejections = 0
         for candidate in self._candidates(designator):
@@ -139,7 +139,7 @@ class LocationResolver:
             if rejections >= self.max_consecutive_rejections:
                 return
 
-    def _candidates(self, designator: object) -> Iterator[Any]:
+    def _candidates(self, designator: object) -> Iterator[object]:
         for generator in self.generators:
             yield from generator.function(designator)
 

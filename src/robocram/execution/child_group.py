@@ -10,17 +10,16 @@ from __future__ import annotations
 import queue
 import threading
 from collections.abc import Callable, Iterable, Iterator, Sequence
-from typing import Any
 
 from robocram.execution.task import Task
 from robocram.execution.task_context import start_in_thread
 
-Step = Callable[[], Any] | tuple[str, Callable[[], Any]]
+Step = Callable[[], object] | tuple[str, Callable[[], object]]
 
 
-def named_steps(form: str, steps: Iterable[Step]) -> list[tuple[str, Callable[[], Any]]]:
+def named_steps(form: str, steps: Iterable[Step]) -> list[tuple[str, Callable[[], object]]]:
     """Normalise thunks and ``(name, thunk)`` pairs to pairs; name lambdas ``form[i]``."""
-    named: list[tuple[str, Callable[[], Any]]] = []
+    named: list[tuple[str, Callable[[], object]]] = []
     for i, step in enumerate(steps):
         if isinstance(step, tuple) and len(step) == 2 and isinstance(step[0], str):
             name, fn = step
@@ -40,7 +39,7 @@ def named_steps(form: str, steps: Iterable[Step]) -> list[tuple[str, Callable[[]
 class ChildGroup:
     """Threads running the steps of one form as child tasks of ``parent``."""
 
-    def __init__(self, parent: Task, steps: Sequence[tuple[str, Callable[[], Any]]]) -> None:
+    def __init__(self, parent: Task, steps: Sequence[tuple[str, Callable[[], object]]]) -> None:
         self.tasks = [Task(name, parent) for name, _ in steps]
         self._fns = [fn for _, fn in steps]
         self._finished: queue.SimpleQueue[Task] = queue.SimpleQueue()

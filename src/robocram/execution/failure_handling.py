@@ -36,7 +36,7 @@ class FailureControl:
         raise _Return(self, value)
 
 
-Handler = Callable[[Any, FailureControl], Any]
+Handler = Callable[[Any, FailureControl], object]
 
 _HANDLING: contextvars.ContextVar[FailureControl | None] = contextvars.ContextVar(
     "robocram_failure_control", default=None

@@ -40,7 +40,7 @@ class Fluent:
         self._value = value
         self._generation = 0  # counts changes and pulses
         self._dependents: list[weakref.ref[Fluent]] = []
-        self._compute: Callable[[], Any] | None = None
+        self._compute: Callable[[], object] | None = None
         self._recompute_lock = threading.Lock()
 
     def __repr__(self) -> str:
@@ -113,14 +113,14 @@ class Fluent:
             self._assign(self._compute(), pulse)
 
     def wait_for(
-        self, predicate: Callable[[Any], Any] | None = None, timeout: float | None = None
+        self, predicate: Callable[[Any], object] | None = None, timeout: float | None = None
     ) -> Any:
         """Wait until the value is truthy (or satisfies ``predicate``); return that value.
 
         Raises FluentWaitTimeout after ``timeout`` [s]; a stop point.
         """
         test = predicate or bool
-        seen: list[Any] = []
+        seen: list[object] = []
 
         def ready() -> bool:
             if test(self._value):
@@ -134,7 +134,7 @@ class Fluent:
 
     def wait_for_update(self, after: int, timeout: float | None = None) -> tuple[Any, int]:
         """Wait until ``generation`` exceeds ``after``; return ``(value, generation)``."""
-        seen: list[tuple[Any, int]] = []
+        seen: list[tuple[object, int]] = []
 
         def ready() -> bool:
             if self._generation > after:
@@ -195,10 +195,10 @@ def _label(value: object) -> str:
     return value.name if isinstance(value, Fluent) else repr(value)
 
 
-def derive(fn: Callable[..., Any], *sources: object, name: str | None = None) -> Fluent:
+def derive(fn: Callable[..., object], *sources: object, name: str | None = None) -> Fluent:
     """A fluent whose value is ``fn(*values of sources)``; constants are passed as they are."""
 
-    def compute() -> Any:
+    def compute() -> object:
         return fn(*(s.get() if isinstance(s, Fluent) else s for s in sources))
 
     derived = Fluent(compute(), name)
@@ -227,5 +227,5 @@ def fl_not(source: object) -> Fluent:
     return derive(operator.not_, source, name=f"(not {_label(source)})")
 
 
-def _joined(word: str, sources: tuple[Any, ...]) -> str:
+def _joined(word: str, sources: tuple[object, ...]) -> str:
     return "(" + f" {word} ".join(_label(s) for s in sources) + ")"

@@ -5,7 +5,6 @@ from __future__ import annotations
 import difflib
 import threading
 from collections.abc import Callable, Iterable, Mapping
-from typing import Any
 
 from robocram.execution.child_group import ChildGroup
 from robocram.execution.par import raise_failure_of
@@ -14,11 +13,11 @@ from robocram.execution.task_context import require_task, sub_task, wait_until
 
 
 def partial_order(
-    steps: Mapping[str, Callable[[], Any]],
+    steps: Mapping[str, Callable[[], object]],
     orderings: Iterable[tuple[str, str]] = (),
     *,
     name: str = "partial_order",
-) -> dict[str, Any]:
+) -> dict[str, object]:
     """Run ``steps`` so that for each ``(before, after)`` pair ``after`` starts once
     ``before`` has succeeded; return each step's value by name.
 
@@ -29,8 +28,8 @@ def partial_order(
     succeeded: set[str] = set()
     cond = threading.Condition()
 
-    def gated(step: str, fn: Callable[[], Any]) -> Callable[[], Any]:
-        def run() -> Any:
+    def gated(step: str, fn: Callable[[], object]) -> Callable[[], object]:
+        def run() -> object:
             wait_until(cond, lambda: before[step] <= succeeded)
             result = fn()
             with cond:
@@ -52,7 +51,7 @@ def partial_order(
 
 
 def _predecessors(
-    steps: Mapping[str, Callable[[], Any]], orderings: Iterable[tuple[str, str]]
+    steps: Mapping[str, Callable[[], object]], orderings: Iterable[tuple[str, str]]
 ) -> dict[str, set[str]]:
     before: dict[str, set[str]] = {step: set() for step in steps}
     for pair in orderings:

@@ -138,13 +138,13 @@ def _run_plan(designator: Designator, plan: object, kb: KnowledgeBase) -> Any:
     )
 
 
-def _registered_plans(kb: KnowledgeBase) -> dict[str, Callable[..., Any]]:
+def _registered_plans(kb: KnowledgeBase) -> dict[str, Callable[..., object]]:
     if "plan_function/2" not in kb.predicates():
         return {}
     return {a["Name"]: a["F"] for a in kb.query("plan_function(Name, F)")}
 
 
-def register_plan(kb: KnowledgeBase, name: str, function: Callable[..., Any]) -> None:
+def register_plan(kb: KnowledgeBase, name: str, function: Callable[..., object]) -> None:
     """Let action groundings name ``function`` as ``name(Args...)`` in ``kb``."""
     if not callable(function):
         raise TypeError(f"register_plan({name!r}) needs a callable, got {function!r}")

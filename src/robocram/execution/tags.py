@@ -4,17 +4,16 @@ from __future__ import annotations
 
 import difflib
 from collections.abc import Callable
-from typing import Any
 
 from robocram.execution.par import par
 from robocram.execution.task import Task
 from robocram.execution.task_context import require_task, sub_task
 
 
-def tag(name: str, fn: Callable[[], Any]) -> Callable[[], Any]:
+def tag(name: str, fn: Callable[[], object]) -> Callable[[], object]:
     """Wrap ``fn`` so that it runs as a child task named and tagged ``name``."""
 
-    def tagged_step() -> Any:
+    def tagged_step() -> object:
         with sub_task(name, frozenset({name})) as task:
             task.result = fn()
         return task.result
@@ -23,7 +22,7 @@ def tag(name: str, fn: Callable[[], Any]) -> Callable[[], Any]:
     return tagged_step
 
 
-def with_tags(name: str = "with_tags", **named_fns: Callable[[], Any]) -> dict[str, Any]:
+def with_tags(name: str = "with_tags", **named_fns: Callable[[], object]) -> dict[str, object]:
     """Run the keyword thunks in parallel, each tagged by its keyword; return values by tag.
 
     A step can reach a sibling with ``tagged("other")`` to suspend, resume or stop it.

@@ -138,7 +138,7 @@ def top_level(fn: Callable[..., Any] | None = None, *args: object, name: str | N
     return TopLevel(name or _name_of(fn))(fn)
 
 
-def _decorating(fn: Callable[..., Any], caller: FrameType) -> bool:
+def _decorating(fn: Callable[..., object], caller: FrameType) -> bool:
     """Whether ``fn``'s ``def`` statement is running in ``caller``, not yet bound.
 
     A decorator is called by the frame that executes the ``def``: the scope named by the
@@ -166,6 +166,6 @@ def run_top_level(
     return TopLevel(name or _name_of(fn)).run(fn, *args, **kwargs)
 
 
-def _name_of(fn: Callable[..., Any]) -> str:
+def _name_of(fn: Callable[..., object]) -> str:
     name = getattr(fn, "__name__", "")
     return name if name.isidentifier() else "top-level"

@@ -16,6 +16,7 @@ from typing import Any
 
 from robocram.logic.convert import to_python
 from robocram.logic.terms import make_list
+from robocram.logic.value import Value
 from robocram.tf import Pose, PoseStamped
 
 JointStates = tuple[tuple[str, float], ...]  # ((joint, value [rad | m]), ...)
@@ -41,7 +42,7 @@ def _pose_stamped(value: object) -> PoseStamped:
     return value
 
 
-_CONVERTERS: dict[Any, Callable[[Any], Any]] = {
+_CONVERTERS: dict[object, Callable[[Value], object]] = {
     str: str,
     float: float,
     int: int,
@@ -52,7 +53,7 @@ _CONVERTERS: dict[Any, Callable[[Any], Any]] = {
     Pose: Pose.coerce,
     PoseStamped: _pose_stamped,
 }
-_TYPE_TEXT: dict[Any, str] = {
+_TYPE_TEXT: dict[object, str] = {
     Names: "list of names",
     Vector: "list of numbers",
     JointStates: "list of [joint, value]",
@@ -60,7 +61,7 @@ _TYPE_TEXT: dict[Any, str] = {
 }
 
 
-def to_prolog(value: object) -> Any:
+def to_prolog(value: object) -> Value:
     """The Prolog form of a row value: plain tuples become lists, the rest stays itself."""
     if type(value) is tuple:  # a Term is a tuple too, and stays a term
         return make_list([to_prolog(v) for v in value])
@@ -72,9 +73,9 @@ class Argument:
     """A predicate argument: ``name`` (the row field), Python ``type`` and ``unit``."""
 
     name: str
-    type: Any
+    type: object
     unit: str
-    convert: Callable[[Any], Any]
+    convert: Callable[[Value], object]
 
     @property
     def variable(self) -> str:

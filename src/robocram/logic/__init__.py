@@ -22,6 +22,7 @@ from robocram.logic.errors import (
 from robocram.logic.gc_pacing import fast_queries
 from robocram.logic.knowledge_base import KnowledgeBase
 from robocram.logic.terms import Term, Var
+from robocram.logic.value import Value
 
 __all__ = [
     "FactGroupError",
@@ -42,6 +43,7 @@ __all__ = [
     "Term",
     "TimeLimitExceeded",
     "UnknownPredicateError",
+    "Value",
     "Var",
     "current_kb",
     "fast_queries",

@@ -28,6 +28,7 @@ from robocram.logic.reader import read_query, read_terms
 from robocram.logic.system import PRIVATE_PREFIX, library_predicates, system_predicates
 from robocram.logic.template import Slot, build, compile_term
 from robocram.logic.terms import Term, Var, deref
+from robocram.logic.value import Value
 
 __all__ = ["KnowledgeBase"]
 
@@ -51,7 +52,7 @@ class KnowledgeBase:
         self._preds.update(library_predicates())
         self._ops = OperatorTable()
         self._functions: dict[str, Callable[..., Any]] = {}
-        self._flags: dict[str, Any] = default_flags(MAX_INTEGER_BITS)
+        self._flags: dict[str, Value] = default_flags(MAX_INTEGER_BITS)
         self._groups: Groups = {}
         self._lock = threading.RLock()
         self._queries: LRUCache[tuple[str, str], tuple[Any, dict[str, int], int]] = LRUCache(
@@ -251,8 +252,8 @@ class KnowledgeBase:
         *,
         max_inferences: int | None = None,
         time_limit: float | None = None,
-        **bindings: Any,
-    ) -> Iterator[dict[str, Any]]:
+        **bindings: Value,
+    ) -> Iterator[dict[str, Value]]:
         """Lazily yield one dict per answer, mapping the query's free variable names to values.
 
         `max_inferences` and `time_limit` [s, counted from the first answer asked for] stop
@@ -283,7 +284,7 @@ class KnowledgeBase:
         regs: list[Any],
         shown: list[tuple[str, int]],
         limits: tuple[int | None, float | None],
-    ) -> Iterator[dict[str, Any]]:
+    ) -> Iterator[dict[str, Value]]:
         solutions = Machine(self, Budget(*limits)).solve(goal)
         while True:
             try:
@@ -315,11 +316,11 @@ class KnowledgeBase:
             self._queries.put(key, cached)
         return cached
 
-    def holds(self, text: str, **bindings: Any) -> bool:
+    def holds(self, text: str, **bindings: Value) -> bool:
         """True when the query has at least one answer."""
         return next(self.query(text, **bindings), None) is not None
 
-    def first(self, text: str, **bindings: Any) -> dict[str, Any] | None:
+    def first(self, text: str, **bindings: Value) -> dict[str, Value] | None:
         """The first answer of the query, or None when it has none."""
         return next(self.query(text, **bindings), None)
 

@@ -102,7 +102,7 @@ ACTIONS = ActionTable.of(
 ACTION_TYPES: Mapping[str, ActionType] = ACTIONS.types
 
 
-def perform(designator: Designator[Any], actions: ActionTable = ACTIONS) -> Any:
+def perform(designator: Designator[object], actions: ActionTable = ACTIONS) -> Any:
     """PERFORM ``designator``; an action of ``actions`` runs its plan by a plain call.
 
     Motions, and actions of types outside the table, go to
@@ -114,7 +114,7 @@ def perform(designator: Designator[Any], actions: ActionTable = ACTIONS) -> Any:
     return perform_designator(designator)
 
 
-def perform_action(designator: Designator[Any], actions: ActionTable = ACTIONS) -> Any:
+def perform_action(designator: Designator[object], actions: ActionTable = ACTIONS) -> Any:
     """Run the plan of ``designator``'s action type with its checked properties."""
     return actions[str(designator.get("type"))].perform(designator)
 

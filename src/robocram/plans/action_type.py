@@ -21,14 +21,14 @@ class ActionType:
     type: str
     required: tuple[str, ...]
     optional: tuple[str, ...]
-    plan: Callable[..., Any]
+    plan: Callable[..., object]
 
     @property
     def keys(self) -> tuple[str, ...]:
         """Every key the type accepts, sorted (``type`` itself left out)."""
         return tuple(sorted({*self.required, *self.optional}))
 
-    def arguments(self, designator: Designator[Any]) -> dict[str, Any]:
+    def arguments(self, designator: Designator[object]) -> dict[str, Any]:
         """The plan's keyword arguments from ``designator``'s checked properties."""
         given = {key: value for key, value in designator.properties if key != "type"}
         for key in given:
@@ -49,6 +49,6 @@ class ActionType:
                 )
         return given
 
-    def perform(self, designator: Designator[Any]) -> Any:
+    def perform(self, designator: Designator[object]) -> Any:
         """Check ``designator`` and run the plan with its properties."""
         return self.plan(**self.arguments(designator))

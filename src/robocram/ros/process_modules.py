@@ -8,8 +8,6 @@ server serves a resource comes from the robot's ROS facts (``ros_config.py``).
 
 from __future__ import annotations
 
-from typing import Any
-
 import numpy as np
 
 from robocram.designators import ObjectDesignator, Quantifier
@@ -24,10 +22,11 @@ from robocram.execution.failures import (
     PtuGoalNotReached,
     TorsoGoalNotReached,
 )
+from robocram.logic import Value
 from robocram.ros.errors import RosCommandError
 from robocram.ros.head_aim import pan_tilt_towards
 from robocram.ros.ros_robot_client import RosRobotClient
-from robocram.tf import Pose, PoseStamped, pose_stamped_from_ros, pose_to_ros
+from robocram.tf import Pose, PoseLike, PoseStamped, pose_stamped_from_ros, pose_to_ros
 
 DIRECTION_REACH = 100.0  # [m] looking along a direction aims at a point this far away
 POINTING_AXIS = {"x": 0.0, "y": 0.0, "z": 1.0}  # the optical axis of camera frames
@@ -47,7 +46,7 @@ class NavigationPM(RosProcessModule):
     name = "ros_navigation"
     resource = "navigation"
 
-    def move_base(self, target: PoseStamped | Any) -> Pose:
+    def move_base(self, target: PoseStamped | PoseLike) -> Pose:
         """Send a MoveBase goal; return the base pose reached.
 
         The robot plans its own path; with a world given to ``ros_robot``, the path is
@@ -103,7 +102,7 @@ class PtuPM(RosProcessModule):
     name = "ros_ptu"
     resource = "ptu"
 
-    def _target(self, mode: str, goal: Any) -> tuple[float, float, float]:
+    def _target(self, mode: str, goal: Value) -> tuple[float, float, float]:
         client = self.client
         if mode == "pose":
             return client.in_map(goal).position
@@ -122,7 +121,7 @@ class PtuPM(RosProcessModule):
             return (float(far[0]), float(far[1]), float(far[2]))
         raise RosCommandError(f"move_head mode {mode!r} is none of pose, frame, direction")
 
-    def move_head(self, mode: str, goal: Any) -> dict[str, float]:
+    def move_head(self, mode: str, goal: Value) -> dict[str, float]:
         """Point the camera at a pose, a frame or along a direction; return pan and tilt."""
         client = self.client
         target = self._target(mode, goal)
@@ -155,11 +154,11 @@ class PerceptionPM(RosProcessModule):
     name = "ros_perception"
     resource = "perception"
 
-    def inspect(self, designator: Any) -> ObjectDesignator | list[ObjectDesignator]:
+    def inspect(self, designator: object) -> ObjectDesignator | list[ObjectDesignator]:
         """Inspect one object: our perception action reports all it sees when detecting."""
         return self.detect(designator)
 
-    def detect(self, designator: Any) -> ObjectDesignator | list[ObjectDesignator]:
+    def detect(self, designator: object) -> ObjectDesignator | list[ObjectDesignator]:
         """Ask the perception server for the objects fitting ``designator``."""
         if not isinstance(designator, ObjectDesignator):
             raise TypeError(
@@ -195,7 +194,7 @@ class GripperPM(RosProcessModule):
     name = "ros_grippers"
     resource = "grippers"
 
-    def move_gripper_joint(self, gripper: str, action: Any, effort: Any) -> float:
+    def move_gripper_joint(self, gripper: str, action: object, effort: object) -> float:
         """Open, close or grip with ``gripper``'s hand, or move it to a position [rad | m];
         return the description's gripper joint value reached."""
         arm = self.client.desc.arm_called(str(gripper))

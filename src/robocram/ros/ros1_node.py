@@ -72,7 +72,7 @@ class _Server:
         self.goal_id: int | None = None
         self._status = rospy.Subscriber(f"{name}/status", GoalStatusArray, self._on_status)
 
-    def _on_status(self, _: Any) -> None:
+    def _on_status(self, _: object) -> None:
         self.heard = time.monotonic()
 
 
@@ -101,7 +101,7 @@ class RosNode:
         self.servers = {name: _Server(name, kind) for name, kind in config.servers.items()}
         self.running = True
 
-    def send(self, message: tuple[Any, ...]) -> None:
+    def send(self, message: tuple[object, ...]) -> None:
         """Write one message to the plan process (from any thread)."""
         with self._send_lock:
             self.conn.send(message)
@@ -230,7 +230,7 @@ class RosNode:
             time.sleep(MONITOR_PERIOD)
 
 
-def _handle(node: RosNode, request_id: int, op: str, args: tuple[Any, ...]) -> None:
+def _handle(node: RosNode, request_id: int, op: str, args: tuple[object, ...]) -> None:
     try:
         payload = getattr(node, f"op_{op}")(*args)
     except Exception as err:  # the reply carries it to the plan process

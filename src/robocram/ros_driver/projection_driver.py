@@ -59,7 +59,7 @@ def _handler(resource: str, action_type: str, config: RosConfig, controllers: st
     }[action_type]
 
 
-def _result(result_type: str, fields: dict[str, Any]) -> Any:
+def _result(result_type: str, fields: dict[str, object]) -> RosMessage:
     """The result message with the fields its type has (the PR2's trajectory results have
     none: their controllers report only by the goal status)."""
     slots = message_class(result_type).__slots__

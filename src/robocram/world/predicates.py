@@ -11,16 +11,15 @@ Prolog's own.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
-from typing import Any
 
 from robocram.knowledge import Source, register_predicates
 from robocram.knowledge.registration import Implementation
-from robocram.logic import KnowledgeBase, Var
+from robocram.logic import KnowledgeBase, Value, Var
 from robocram.logic.limits import current_stop_check
 from robocram.tf import Pose
 from robocram.world.predicate_world import PredicateWorld
 
-Solutions = Iterator[tuple[Any, ...] | None]
+Solutions = Iterator[tuple[Value, ...] | None]
 
 
 def world_knowledge_base(world: PredicateWorld) -> KnowledgeBase:
@@ -77,12 +76,12 @@ def _objects(world: PredicateWorld) -> dict[str, Implementation]:
         if _ours(world, w):
             yield from ((world, n, world.pose(n)) for n in _names(world, name))
 
-    def set_object_pose(w: Any, name: Any, pose: Any) -> Solutions:
+    def set_object_pose(w: object, name: Value, pose: Value) -> Solutions:
         if _ours(world, w) and not isinstance(name, Var):
             world.set_pose(name, Pose.coerce(_pose_value(pose)))
             yield None
 
-    def simulate(w: Any, seconds: Any) -> Solutions:
+    def simulate(w: object, seconds: Value) -> Solutions:
         if _ours(world, w):
             world.simulate(float(seconds), stop_check=current_stop_check())  # a task's stop
             yield (world, seconds)
@@ -97,7 +96,7 @@ def _objects(world: PredicateWorld) -> dict[str, Implementation]:
     }
 
 
-def _pose_value(value: object) -> Any:
+def _pose_value(value: object) -> Value:
     """A pose given as a Pose or as Prolog lists ``[[X, Y, Z], [QX, QY, QZ, QW]]``."""
     if isinstance(value, list) and len(value) == 2 and isinstance(value[0], list):
         return (tuple(value[0]), tuple(value[1]))
@@ -119,12 +118,12 @@ def _robots(world: PredicateWorld) -> dict[str, Implementation]:
             joints = list(states) if isinstance(joint, Var) else [joint]
             yield from ((world, name, j, states[j]) for j in joints if j in states)
 
-    def set_joint_state(w: Any, rob: Any, joint: Any, value: Any) -> Solutions:
+    def set_joint_state(w: object, rob: Value, joint: Value, value: Value) -> Solutions:
         if _ours(world, w):
             world.set_joint_states(rob, {joint: float(value)})
             yield None
 
-    def link_pose(w: Any, rob: Any, link: Any, pose: Any) -> Solutions:
+    def link_pose(w: object, rob: Value, link: Value, pose: Value) -> Solutions:
         if not _ours(world, w):
             return
         for name in _names(world, rob):
@@ -147,12 +146,12 @@ def _attachments(world: PredicateWorld) -> dict[str, Implementation]:
             for carried, at in world.attachments(name).items():
                 yield (world, name, at, carried)
 
-    def attach(w: Any, obj: Any, rob: Any, link: Any) -> Solutions:
+    def attach(w: object, obj: Value, rob: Value, link: Value) -> Solutions:
         if _ours(world, w):
             world.attach(obj, rob, link)
             yield None
 
-    def detach(w: Any, obj: Any) -> Solutions:
+    def detach(w: object, obj: Value) -> Solutions:
         if _ours(world, w):
             world.detach(obj)
             yield None
