@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from typing import Any
 
 from robocram.logic.errors import (
     PrologEvaluationError,
@@ -18,6 +17,7 @@ from robocram.logic.errors import (
     PrologTypeError,
 )
 from robocram.logic.terms import PString, Term, Var
+from robocram.logic.value import Value
 
 __all__ = ["BINARY_FUNCTIONS", "MAX_INTEGER_BITS", "apply_binary", "evaluate"]
 
@@ -90,7 +90,7 @@ def _sign(x: Number) -> Number:
     return math.copysign(1.0, x) if x != 0 else 0.0
 
 
-_BINARY: dict[str, Callable[[Any, Any], Number]] = {
+_BINARY: dict[str, Callable[[Value, Value], Number]] = {
     "+": lambda a, b: a + b,
     "-": lambda a, b: a - b,
     "*": lambda a, b: a * b,
@@ -115,7 +115,7 @@ _BINARY: dict[str, Callable[[Any, Any], Number]] = {
     "gcd": _int_only("gcd", math.gcd),
 }
 
-_UNARY: dict[str, Callable[[Any], Number]] = {
+_UNARY: dict[str, Callable[[Value], Number]] = {
     "-": lambda a: -a,
     "+": lambda a: a,
     "abs": abs,
@@ -172,7 +172,7 @@ def apply_binary(name: str, a: Number, b: Number) -> Number:
         raise PrologEvaluationError("undefined", f"{name}/2: {err}") from err
 
 
-def evaluate(t: Any) -> Number:
+def evaluate(t: Value) -> Number:
     """Evaluate an arithmetic expression; raise ISO errors for unbound or bad parts."""
     while type(t) is Var:
         if t.ref is None:

@@ -3,21 +3,21 @@
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any
 
 from robocram.logic.arith import Number, evaluate
 from robocram.logic.builtin_spec import Builtin, det
 from robocram.logic.engine import DetFn, Engine
+from robocram.logic.value import Value
 
 __all__ = ["BUILTINS"]
 
 
-def _is(m: Engine, args: tuple[Any, ...]) -> bool:
+def _is(m: Engine, args: tuple[Value, ...]) -> bool:
     return m.unify(args[0], evaluate(args[1]))
 
 
 def _compare(op: Callable[[Number, Number], bool]) -> DetFn:
-    def run(m: Engine, args: tuple[Any, ...]) -> bool:
+    def run(m: Engine, args: tuple[Value, ...]) -> bool:
         return op(evaluate(args[0]), evaluate(args[1]))
 
     return run

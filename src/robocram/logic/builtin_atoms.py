@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sys
 from collections.abc import Iterator
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from robocram.logic.bigint import int_text
 from robocram.logic.builtin_spec import Builtin, det, nondet
@@ -18,16 +18,17 @@ from robocram.logic.errors import (
 )
 from robocram.logic.reader import read_query
 from robocram.logic.terms import PString, Term, Var, deref, format_term, make_list
+from robocram.logic.value import Value
 
 if TYPE_CHECKING:
     from robocram.logic.engine import Engine
 
 __all__ = ["format_text", "text_of"]
 
-Args = tuple[Any, ...]
+Args = tuple[Value, ...]
 
 
-def text_of(t: Any, what: str) -> str:
+def text_of(t: Value, what: str) -> str:
     """The characters of an atomic term (atom, string, number)."""
     t = deref(t)
     if type(t) is str:
@@ -43,11 +44,11 @@ def text_of(t: Any, what: str) -> str:
     raise PrologTypeError("atomic", t, f"{what}: {t!r} is not an atom, string or number")
 
 
-def _char(x: Any) -> str:
+def _char(x: Value) -> str:
     return char_of(x, "format ~s") if type(x) is str else char_of_code(x, "format ~s")
 
 
-def _bound(t: Any) -> bool:
+def _bound(t: Value) -> bool:
     return type(deref(t)) is not Var
 
 
@@ -149,7 +150,7 @@ def _directive(text: str, i: int) -> tuple[str | None, str, int]:
     return (text[i + 1 : j] or None), text[j], j + 1
 
 
-def format_text(fmt: str, args: list[Any]) -> str:
+def format_text(fmt: str, args: list[Value]) -> str:
     """Expand a format string (~w ~p ~q ~a ~d ~f ~e ~g ~s ~n ~c ~r ~t ~| ~+ ~i ~~).
 
     >>> format_text("~w has ~d items, ~2f kg~n", ["box", 3, 1.5])
@@ -159,7 +160,7 @@ def format_text(fmt: str, args: list[Any]) -> str:
     queue = list(args)
     i = 0
 
-    def take(d: str) -> Any:
+    def take(d: str) -> Value:
         if not queue:
             raise PrologError(f"format: not enough arguments for ~{d} in {fmt!r}")
         return deref(queue.pop(0))
@@ -177,7 +178,7 @@ def format_text(fmt: str, args: list[Any]) -> str:
     return "".join(out)
 
 
-def _expand(d: str, num: str | None, take: Any, fmt: str) -> str:
+def _expand(d: str, num: str | None, take: Value, fmt: str) -> str:
     if d in "wpa":
         return format_term(take(d))
     if d == "q":
@@ -216,18 +217,18 @@ def _expand(d: str, num: str | None, take: Any, fmt: str) -> str:
     raise PrologError(f"format: unknown directive ~{d} in {fmt!r}")
 
 
-def _format_args(t: Any) -> list[Any]:
+def _format_args(t: Value) -> list[Value]:
     t = deref(t)
     if type(t) is Term and t[0] == "." or t == "[]":
         return list_items(t, "format")
     return [t]
 
 
-def _emit(m: Engine, sink: Any, text: str) -> bool:
+def _emit(m: Engine, sink: Value, text: str) -> bool:
     sink = deref(sink)
     if type(sink) is Term and len(sink[1]) == 1 and sink[0] in ("atom", "string", "codes", "chars"):
         kind = sink[0]
-        value: Any = text if kind == "atom" else PString(text)
+        value: Value = text if kind == "atom" else PString(text)
         if kind == "codes":
             value = make_list([ord(c) for c in text])
         if kind == "chars":

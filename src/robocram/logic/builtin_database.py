@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Iterator
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from robocram.logic.builtin_spec import Builtin, det, nondet
 from robocram.logic.builtin_terms import need_int
@@ -11,6 +11,7 @@ from robocram.logic.errors import PrologInstantiationError, PrologPermissionErro
 from robocram.logic.loader import parse_indicator
 from robocram.logic.terms import Term, Var, deref
 from robocram.logic.unify import copy_resolved
+from robocram.logic.value import Value
 
 if TYPE_CHECKING:
     from robocram.logic.engine import Engine
@@ -18,7 +19,7 @@ if TYPE_CHECKING:
 
 __all__: list[str] = []
 
-Args = tuple[Any, ...]
+Args = tuple[Value, ...]
 
 
 def _assertz(m: Engine, a: Args) -> bool:
@@ -31,14 +32,14 @@ def _asserta(m: Engine, a: Args) -> bool:
     return True
 
 
-def _split(clause: Any) -> tuple[Any, Any]:
+def _split(clause: Value) -> tuple[Value, Value]:
     clause = deref(clause)
     if type(clause) is Term and clause[0] == ":-" and len(clause[1]) == 2:
         return deref(clause[1][0]), clause[1][1]
     return clause, "true"
 
 
-def _pred_of(m: Engine, head: Any, what: str) -> Pred | None:
+def _pred_of(m: Engine, head: Value, what: str) -> Pred | None:
     if type(head) is Var:
         raise PrologInstantiationError(f"{what}: the clause head is unbound")
     if type(head) is str:
@@ -55,7 +56,7 @@ def _pred_of(m: Engine, head: Any, what: str) -> Pred | None:
     return pred
 
 
-def _stored(clause: Any) -> tuple[Any, Any]:
+def _stored(clause: Value) -> tuple[Value, Value]:
     return _split(copy_resolved(clause.source))
 
 
@@ -85,7 +86,7 @@ def _retract(m: Engine, a: Args) -> Iterator[bool]:
         m.undo_to(mark)
 
 
-def _candidates(pred: Pred, head: Any) -> list[Any]:
+def _candidates(pred: Pred, head: Value) -> list[Value]:
     """The live clauses that can match `head` by its first argument (a snapshot)."""
     if type(head) is Term and head[1]:
         return pred.live(list(pred.candidates(deref(head[1][0]))))

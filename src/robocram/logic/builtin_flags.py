@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import sys
 from collections.abc import Iterator
-from typing import Any
 
 from robocram.logic.builtin_spec import Builtin, det, nondet
 from robocram.logic.engine import Engine
@@ -21,10 +20,11 @@ from robocram.logic.errors import (
     PrologTypeError,
 )
 from robocram.logic.terms import Term, Var, deref
+from robocram.logic.value import Value
 
 __all__ = ["BUILTINS", "default_flags"]
 
-Args = tuple[Any, ...]
+Args = tuple[Value, ...]
 
 # flag -> the values it may be set to (empty: read-only)
 _CHANGEABLE: dict[str, tuple[str, ...]] = {
@@ -33,7 +33,7 @@ _CHANGEABLE: dict[str, tuple[str, ...]] = {
     "occurs_check": ("false", "true", "error"),
     "debug": ("false", "true"),
 }
-_READ_ONLY: dict[str, Any] = {
+_READ_ONLY: dict[str, Value] = {
     "bounded": "false",
     "max_arity": "unbounded",
     "integer_rounding_function": "toward_zero",
@@ -42,9 +42,9 @@ _READ_ONLY: dict[str, Any] = {
 }
 
 
-def default_flags(max_integer_bits: int) -> dict[str, Any]:
+def default_flags(max_integer_bits: int) -> dict[str, Value]:
     """A new knowledge base's flags (SWI-Prolog's defaults for the changeable ones)."""
-    flags: dict[str, Any] = {"double_quotes": "string", "unknown": "error"}
+    flags: dict[str, Value] = {"double_quotes": "string", "unknown": "error"}
     flags.update(occurs_check="false", debug="false")
     flags.update(_READ_ONLY, max_integer_bits=max_integer_bits)
     return flags

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Iterator
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from robocram.logic.arith import evaluate
 from robocram.logic.builtin_spec import Builtin, det, nondet
@@ -11,13 +11,14 @@ from robocram.logic.builtin_terms import list_items, need_int
 from robocram.logic.errors import PrologDomainError, PrologInstantiationError, PrologTypeError
 from robocram.logic.terms import NIL, Term, Var, deref, make_list
 from robocram.logic.unify import order_key
+from robocram.logic.value import Value
 
 if TYPE_CHECKING:
     from robocram.logic.engine import Engine
 
 __all__: list[str] = []
 
-Args = tuple[Any, ...]
+Args = tuple[Value, ...]
 
 
 def _length(m: Engine, a: Args) -> Iterator[bool]:
@@ -57,9 +58,9 @@ def _sort(m: Engine, a: Args) -> bool:
     return m.unify(a[1], make_list(_dedup(sorted(list_items(a[0], "sort/2"), key=order_key))))
 
 
-def _dedup(items: list[Any]) -> list[Any]:
-    out: list[Any] = []
-    last: Any = None
+def _dedup(items: list[Value]) -> list[Value]:
+    out: list[Value] = []
+    last: Value = None
     for item in items:
         key = order_key(item)
         if not out or key != last:
@@ -77,7 +78,7 @@ def _sort4(m: Engine, a: Args) -> bool:
         )
     items = list_items(a[2], "sort/4")
 
-    def key(item: Any) -> Any:
+    def key(item: Value) -> Value:
         if key_index == 0:
             return order_key(item)
         t = deref(item)
@@ -87,7 +88,7 @@ def _sort4(m: Engine, a: Args) -> bool:
 
     ordered = sorted(items, key=key, reverse=order in ("@>", "@>="))
     if order in ("@<", "@>"):
-        unique: list[Any] = []
+        unique: list[Value] = []
         for item in ordered:
             if not unique or key(unique[-1]) != key(item):
                 unique.append(item)
@@ -110,7 +111,7 @@ def _sum_list(m: Engine, a: Args) -> bool:
     return m.unify(a[1], sum((evaluate(x) for x in list_items(a[0], "sum_list/2")), 0))
 
 
-def _extreme(name: str, pick: Any) -> Builtin:
+def _extreme(name: str, pick: Value) -> Builtin:
     def run(m: Engine, a: Args) -> bool:
         values = [evaluate(x) for x in list_items(a[0], f"{name}/2")]
         return bool(values) and m.unify(a[1], pick(values))

@@ -3,23 +3,24 @@
 from __future__ import annotations
 
 from collections.abc import Iterator
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from robocram.logic.arith import evaluate
 from robocram.logic.builtin_spec import Builtin, det, nondet
 from robocram.logic.errors import PrologDomainError, PrologInstantiationError
 from robocram.logic.terms import Term, Var, deref, make_list
 from robocram.logic.unify import copy_resolved, order_key, variant_key
+from robocram.logic.value import Value
 
 if TYPE_CHECKING:
     from robocram.logic.engine import Engine
 
 __all__ = ["term_variables"]
 
-Args = tuple[Any, ...]
+Args = tuple[Value, ...]
 
 
-def term_variables(t: Any, seen: dict[Var, None] | None = None) -> list[Var]:
+def term_variables(t: Value, seen: dict[Var, None] | None = None) -> list[Var]:
     """Return the unbound variables of a term in depth-first, left-to-right order."""
     found: dict[Var, None] = {} if seen is None else seen
     stack = [t]
@@ -36,7 +37,7 @@ def _term_variables(m: Engine, a: Args) -> bool:
     return m.unify(a[1], make_list(term_variables(a[0])))
 
 
-def collect(m: Engine, template: Any, goal: Any) -> list[Any]:
+def collect(m: Engine, template: Value, goal: Value) -> list[Value]:
     """Copy `template` for every solution of `goal`, leaving no bindings behind."""
     mark = len(m.trail)
     try:
@@ -53,8 +54,8 @@ def _findall4(m: Engine, a: Args) -> bool:
     return m.unify(a[2], make_list(collect(m, a[0], a[1]), a[3]))
 
 
-def _strip_carets(goal: Any) -> tuple[Any, list[Any]]:
-    bound: list[Any] = []
+def _strip_carets(goal: Value) -> tuple[Value, list[Value]]:
+    bound: list[Value] = []
     goal = deref(goal)
     while type(goal) is Term and goal[0] == "^" and len(goal[1]) == 2:
         bound.append(goal[1][0])
@@ -74,7 +75,7 @@ def _grouped(m: Engine, a: Args, to_set: bool) -> Iterator[bool]:
     pairs = collect(m, Term("-", (witness, a[0])), goal)
     if not pairs:
         return
-    groups: dict[Any, list[tuple[Any, Any]]] = {}
+    groups: dict[Value, list[tuple[Value, Value]]] = {}
     for pair in pairs:
         w, t = pair[1]
         groups.setdefault(variant_key(w), []).append((w, t))
@@ -95,9 +96,9 @@ def _grouped(m: Engine, a: Args, to_set: bool) -> Iterator[bool]:
         m.undo_to(mark)
 
 
-def _sorted_unique(items: list[Any]) -> list[Any]:
-    out: list[Any] = []
-    keys: list[Any] = []
+def _sorted_unique(items: list[Value]) -> list[Value]:
+    out: list[Value] = []
+    keys: list[Value] = []
     for item in sorted(items, key=order_key):
         key = order_key(item)
         if not keys or keys[-1] != key:

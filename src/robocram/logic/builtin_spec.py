@@ -8,10 +8,10 @@ importing a module.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
 
 from robocram.logic.engine import DetFn, NondetFn
 from robocram.logic.predicate import DET, NONDET
+from robocram.logic.value import Value
 
 __all__ = ["Builtin", "det", "nondet"]
 
@@ -23,7 +23,7 @@ class Builtin:
     name: str
     arities: tuple[int, ...]
     kind: int
-    fn: Any
+    fn: Value
 
 
 def det(name: str, fn: DetFn, *arities: int) -> Builtin:

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Iterator
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from robocram.logic.builtin_spec import Builtin, det, nondet
 from robocram.logic.convert import NONE
@@ -16,16 +16,17 @@ from robocram.logic.errors import (
 from robocram.logic.terms import NIL, PString, Term, Var, deref
 from robocram.logic.unify import copy_resolved, identical, is_acyclic, order_key
 from robocram.logic.univ import univ_compose, univ_list
+from robocram.logic.value import Value
 
 if TYPE_CHECKING:
     from robocram.logic.engine import Engine
 
 __all__ = ["list_items", "need_int"]
 
-Args = tuple[Any, ...]
+Args = tuple[Value, ...]
 
 
-def need_int(t: Any, what: str) -> int:
+def need_int(t: Value, what: str) -> int:
     """Dereference `t` and insist on an integer."""
     t = deref(t)
     if type(t) is Var:
@@ -35,7 +36,7 @@ def need_int(t: Any, what: str) -> int:
     return t
 
 
-def list_items(t: Any, what: str) -> list[Any]:
+def list_items(t: Value, what: str) -> list[Value]:
     """Return the elements of a proper list; raise for partial or non-lists."""
     items = []
     t = deref(t)
@@ -60,12 +61,12 @@ def _not_unify(m: Engine, a: Args) -> bool:
     return not ok
 
 
-def _compare_terms(a: Any, b: Any) -> int:
+def _compare_terms(a: Value, b: Value) -> int:
     ka, kb = order_key(a), order_key(b)
     return (ka > kb) - (ka < kb)
 
 
-def _ordering(test: Any) -> Any:
+def _ordering(test: Value) -> Value:
     def run(m: Engine, a: Args) -> bool:
         return bool(test(_compare_terms(a[0], a[1])))
 
@@ -77,20 +78,20 @@ def _compare(m: Engine, a: Args) -> bool:
     return m.unify(a[0], "<" if c < 0 else ">" if c > 0 else "=")
 
 
-def _type_test(name: str, test: Any) -> Builtin:
+def _type_test(name: str, test: Value) -> Builtin:
     return det(name, lambda m, a: bool(test(deref(a[0]))), 1)
 
 
 _OPAQUE_EXCLUDED = (str, int, float, Term, Var, PString)
 
 
-def _is_list(t: Any) -> bool:
+def _is_list(t: Value) -> bool:
     while type(t) is Term and t[0] == "." and len(t[1]) == 2:
         t = deref(t[1][1])
     return type(t) is str and t == NIL
 
 
-def _is_ground(t: Any) -> bool:
+def _is_ground(t: Value) -> bool:
     stack = [t]
     seen: set[int] = set()  # a cyclic term revisits its compounds
     while stack:
@@ -220,7 +221,7 @@ def _subsumes_term(m: Engine, a: Args) -> bool:
         m.undo_to(mark)
 
 
-def _variables(t: Any) -> list[Var]:
+def _variables(t: Value) -> list[Var]:
     found: dict[int, Var] = {}
     stack = [t]
     seen: set[int] = set()

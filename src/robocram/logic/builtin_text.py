@@ -9,7 +9,6 @@ Unicode is `representation_error(character_code)`, and text that is not a number
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
-from typing import Any
 
 from robocram.logic.bigint import int_text
 from robocram.logic.builtin_spec import Builtin, det, nondet
@@ -24,10 +23,11 @@ from robocram.logic.errors import (
 )
 from robocram.logic.lexer import tokenize
 from robocram.logic.terms import NIL, PString, Term, Var, deref, make_list
+from robocram.logic.value import Value
 
 __all__ = ["BUILTINS", "parse_number"]
 
-Args = tuple[Any, ...]
+Args = tuple[Value, ...]
 _MAX_CODE = 0x10FFFF
 
 
@@ -52,12 +52,12 @@ def parse_number(text: str) -> int | float | None:
     return sign * value
 
 
-def _representation(code: Any) -> PrologError:
+def _representation(code: Value) -> PrologError:
     ball = Term("error", (Term("representation_error", ("character_code",)), "bad code"))
     return PrologError(f"{code!r} is not a Unicode character code", ball)
 
 
-def char_of(x: Any, what: str) -> str:
+def char_of(x: Value, what: str) -> str:
     """A one-character atom from a list element (ISO errors otherwise)."""
     x = deref(x)
     if type(x) is Var:
@@ -67,7 +67,7 @@ def char_of(x: Any, what: str) -> str:
     return x
 
 
-def char_of_code(x: Any, what: str) -> str:
+def char_of_code(x: Value, what: str) -> str:
     """The character of a code list element (ISO errors otherwise)."""
     code = need_int(x, what)
     if not 0 <= code <= _MAX_CODE:
@@ -75,7 +75,7 @@ def char_of_code(x: Any, what: str) -> str:
     return chr(code)
 
 
-def text_items(t: Any, what: str, item: Callable[[Any, str], str]) -> str | None:
+def text_items(t: Value, what: str, item: Callable[[Value, str], str]) -> str | None:
     """The text of a char or code list; None when the list is partial (can't tell yet)."""
     out: list[str] = []
     t = deref(t)
@@ -89,7 +89,7 @@ def text_items(t: Any, what: str, item: Callable[[Any, str], str]) -> str | None
     return "".join(out)
 
 
-def _source_text(t: Any, what: str, number: bool) -> str | None:
+def _source_text(t: Value, what: str, number: bool) -> str | None:
     t = deref(t)
     if type(t) is Var:
         return None
@@ -157,7 +157,7 @@ def _sub_atom(m: Engine, a: Args) -> Iterator[bool]:
         m.undo_to(mark)
 
 
-def _opt_len(t: Any, what: str) -> int | None:
+def _opt_len(t: Value, what: str) -> int | None:
     t = deref(t)
     if type(t) is Var:
         return None
@@ -167,7 +167,7 @@ def _opt_len(t: Any, what: str) -> int | None:
     return value
 
 
-def _spans(atom: str, n: int, fixed: list[int | None], sub: Any) -> Iterator[tuple[int, int]]:
+def _spans(atom: str, n: int, fixed: list[int | None], sub: Value) -> Iterator[tuple[int, int]]:
     """(before, length) pairs consistent with the bound arguments, in ISO order."""
     before, length, after = fixed
     if type(sub) is str:
@@ -179,7 +179,7 @@ def _spans(atom: str, n: int, fixed: list[int | None], sub: Any) -> Iterator[tup
             start = found + 1
         return
     if before is not None and length is not None:
-        spans: Any = [(before, length)]
+        spans: Value = [(before, length)]
     elif before is not None and after is not None:
         spans = [(before, n - before - after)]
     elif length is not None and after is not None:

@@ -8,7 +8,7 @@ up at each call so that redirecting them (pytest's capture, a GUI console) works
 from __future__ import annotations
 
 import sys
-from typing import Any, TextIO
+from typing import TextIO
 
 from robocram.logic.builtin_spec import Builtin, det
 from robocram.logic.builtin_terms import list_items
@@ -20,14 +20,15 @@ from robocram.logic.errors import (
 )
 from robocram.logic.reader import read_query
 from robocram.logic.terms import PString, Term, Var, deref, format_term
+from robocram.logic.value import Value
 
 __all__ = ["BUILTINS"]
 
-Args = tuple[Any, ...]
+Args = tuple[Value, ...]
 _BOOLEAN_OPTIONS = ("quoted", "ignore_ops", "numbervars", "portray")
 
 
-def _stream(t: Any) -> TextIO:
+def _stream(t: Value) -> TextIO:
     t = deref(t)
     if type(t) is Var:
         raise PrologInstantiationError("output: the stream is unbound")
@@ -40,7 +41,7 @@ def _stream(t: Any) -> TextIO:
     )
 
 
-def write_options(options: Any, what: str) -> dict[str, bool]:
+def write_options(options: Value, what: str) -> dict[str, bool]:
     """The write_term/2 options as flags (ISO errors for bad or unknown ones)."""
     flags = dict.fromkeys(_BOOLEAN_OPTIONS, False)
     for option in list_items(options, what):
@@ -60,13 +61,13 @@ def write_options(options: Any, what: str) -> dict[str, bool]:
     return flags
 
 
-def _text(t: Any, flags: dict[str, bool]) -> str:
+def _text(t: Value, flags: dict[str, bool]) -> str:
     return format_term(
         t, flags["quoted"], ignore_ops=flags["ignore_ops"], numbervars=flags["numbervars"]
     )
 
 
-def _writer(quoted: bool, ignore_ops: bool, numbervars: bool, newline: str = "") -> Any:
+def _writer(quoted: bool, ignore_ops: bool, numbervars: bool, newline: str = "") -> Value:
     flags = {"quoted": quoted, "ignore_ops": ignore_ops, "numbervars": numbervars}
 
     def run(m: Engine, a: Args) -> bool:
@@ -88,7 +89,7 @@ def _nl(m: Engine, a: Args) -> bool:
     return True
 
 
-def _read_from(m: Engine, text: Any, what: str) -> Any:
+def _read_from(m: Engine, text: Value, what: str) -> Value:
     t = deref(text)
     if type(t) is Var:
         raise PrologInstantiationError(f"{what}: the text is unbound")

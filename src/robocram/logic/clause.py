@@ -6,12 +6,11 @@ stored clause is never mutated and can be shared by concurrent queries.
 
 from __future__ import annotations
 
-from typing import Any
-
 from robocram.logic.codegen import compile_clause_fn
 from robocram.logic.occurs import unify_checked
 from robocram.logic.template import build, index_key_of_template, unify_head
 from robocram.logic.terms import Var
+from robocram.logic.value import Value
 
 __all__ = ["Clause"]
 
@@ -40,11 +39,11 @@ class Clause:
 
     def __init__(
         self,
-        head: tuple[Any, ...],
-        body_rev: tuple[Any, ...],
+        head: tuple[Value, ...],
+        body_rev: tuple[Value, ...],
         nvars: int,
         group: str | None,
-        source: Any,
+        source: Value,
         name: str = "",
     ) -> None:
         self.head = head
@@ -54,11 +53,11 @@ class Clause:
         self.source = source
         self.name = name
         self.key = index_key_of_template(head[0]) if head else None
-        self.run: Any = None
+        self.run: Value = None
         self.calls = 0
         self.erased = False  # retracted; calls that started before still see it
 
-    def prepare(self) -> Any:
+    def prepare(self) -> Value:
         """Return the function to run this clause with: interpreted first, then compiled."""
         self.calls += 1
         if self.calls < _COMPILE_AFTER:
@@ -72,17 +71,17 @@ class Clause:
         return self.run
 
     def interpret(
-        self, args: tuple[Any, ...], trail: list[Var], cb: int, nxt: Any, cps: list[list[Any]]
-    ) -> Any:
+        self, args: tuple[Value, ...], trail: list[Var], cb: int, nxt: Value, cps: list[list[Value]]
+    ) -> Value:
         """Unify the head with `args` and return the body's continuation (False on failure)."""
-        regs: list[Any] = [None] * self.nvars
+        regs: list[Value] = [None] * self.nvars
         head = self.head
         for i in range(len(head)):
             if not unify_head(head[i], args[i], regs, trail):
                 return False
         return self.body(regs, cb, nxt)
 
-    def body(self, regs: list[Any], cb: int, nxt: Any) -> Any:
+    def body(self, regs: list[Value], cb: int, nxt: Value) -> Value:
         """The continuation running the body goals built against `regs`, then `nxt`."""
         cont = nxt
         for g in self.body_rev:
@@ -91,15 +90,15 @@ class Clause:
 
     def interpret_checked(
         self,
-        args: tuple[Any, ...],
+        args: tuple[Value, ...],
         trail: list[Var],
         cb: int,
-        nxt: Any,
-        cps: list[list[Any]],
+        nxt: Value,
+        cps: list[list[Value]],
         error: bool = False,
-    ) -> Any:
+    ) -> Value:
         """`interpret` with the occurs check in head unification (flag true or error)."""
-        regs: list[Any] = [None] * self.nvars
+        regs: list[Value] = [None] * self.nvars
         head = self.head
         for i in range(len(head)):
             if not unify_checked(build(head[i], regs), args[i], trail, error):
@@ -107,7 +106,7 @@ class Clause:
         return self.body(regs, cb, nxt)
 
     def interpret_error(
-        self, args: tuple[Any, ...], trail: list[Var], cb: int, nxt: Any, cps: list[list[Any]]
-    ) -> Any:
+        self, args: tuple[Value, ...], trail: list[Var], cb: int, nxt: Value, cps: list[list[Value]]
+    ) -> Value:
         """`interpret_checked` raising on a cyclic binding (flag error)."""
         return self.interpret_checked(args, trail, cb, nxt, cps, error=True)

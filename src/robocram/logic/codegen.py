@@ -20,7 +20,7 @@ of the same shape (for example 100,000 `fact(N, vN)` facts) share one compiled f
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any, Protocol
+from typing import Protocol
 
 from robocram.logic.early_guards import guard_goals, rejection
 from robocram.logic.goal_writer import (
@@ -35,6 +35,7 @@ from robocram.logic.goal_writer import (
 )
 from robocram.logic.template import Tmpl
 from robocram.logic.terms import Var
+from robocram.logic.value import Value
 
 __all__ = [
     "FACTORY_CACHE_SIZE",
@@ -49,12 +50,12 @@ __all__ = [
 class ClauseCode(Protocol):
     """What code generation reads from a stored clause (see clause.Clause)."""
 
-    head: tuple[Any, ...]
-    body_rev: tuple[Any, ...]
+    head: tuple[Value, ...]
+    body_rev: tuple[Value, ...]
     name: str
 
 
-ClauseFn = Callable[[tuple[Any, ...], list[Var], int, Any, list[list[Any]]], Any]
+ClauseFn = Callable[[tuple[Value, ...], list[Var], int, Value, list[list[Value]]], Value]
 
 _CONTROL = {(",", 2), (";", 2), ("->", 2), ("*->", 2), ("\\+", 1)}
 
@@ -71,13 +72,13 @@ def _arg_names(arity: int) -> str:
     return "".join(f"a{i}, " for i in range(arity))
 
 
-def _is_self_call(goal: Any, clause: ClauseCode) -> bool:
+def _is_self_call(goal: Value, clause: ClauseCode) -> bool:
     """True when `goal` calls the clause's own predicate (same name and arity)."""
     parts = term_parts(goal)
     return parts is not None and parts[0] == clause.name and len(parts[1]) == len(clause.head)
 
 
-def _conjuncts(g: Any) -> list[Any]:
+def _conjuncts(g: Value) -> list[Value]:
     """The goals of a conjunction `(A, B, ...)`, in order."""
     parts = term_parts(g)
     if parts is not None and parts[0] == "," and len(parts[1]) == 2:
@@ -133,11 +134,11 @@ class ClauseWriter(GoalWriter):
             self.emit(f"if {condition}: {self.fail}", 1)
         return later
 
-    def arg_local(self, i: int, p: Any) -> str:
+    def arg_local(self, i: int, p: Value) -> str:
         """The local to unify head argument `i` (template `p`) with; unify_arg derefs it."""
         return f"a{i}"
 
-    def body_code(self, clause: ClauseCode, body: list[Any]) -> None:
+    def body_code(self, clause: ClauseCode, body: list[Value]) -> None:
         """Emit the leading inline goals of `body`, then its exit."""
         while body and self.inline_goal(body[0]):
             body.pop(0)
@@ -165,7 +166,7 @@ class ClauseWriter(GoalWriter):
         """Exit with the continuation expression `cont` (the remaining body goals)."""
         self.emit(f"return {cont}", 1)
 
-    def goal(self, g: Any) -> str:
+    def goal(self, g: Value) -> str:
         """Python expression building body goal `g`; control constructs goal by goal.
 
         A test, `is/2` or `=/2` becomes an inline goal (see inline_goal.py), so that the
@@ -186,7 +187,7 @@ class ClauseWriter(GoalWriter):
             return f"({self.const(name)}, ({inner}), CALL)"
         return self.build(g)
 
-    def goals(self, body: list[Any]) -> list[str]:
+    def goals(self, body: list[Value]) -> list[str]:
         """Expressions of the continuation's goals: each run of inline goals is one goal."""
         out: list[str] = []
         i = 0
@@ -203,7 +204,7 @@ class ClauseWriter(GoalWriter):
                 i += 1
         return out
 
-    def inline_run(self, goals: list[Any]) -> str | None:
+    def inline_run(self, goals: list[Value]) -> str | None:
         """Expression of one inline goal running `goals` (their slots all hold values)."""
         slots: list[int] = []
         for g in goals:
@@ -214,7 +215,7 @@ class ClauseWriter(GoalWriter):
         values = "".join(f"v{i}, " for i in slots)
         return f"({self.const(fn)}, ({values}), INLINE)"
 
-    def inline_if(self, clause: ClauseCode, body: list[Any]) -> bool:
+    def inline_if(self, clause: ClauseCode, body: list[Value]) -> bool:
         """`(Cond -> Then ; Else)` first in `body`, Cond a test: a Python `if` instead.
 
         Each branch continues with its goals and the rest of the body, so no choicepoint
@@ -243,9 +244,9 @@ class ClauseWriter(GoalWriter):
             self.restore(saved[4])
         return True
 
-    def state(self) -> Any:
+    def state(self) -> Value:
         """What a branch of an inline if-then-else may change besides the slots."""
         return None
 
-    def restore(self, state: Any) -> None:
+    def restore(self, state: Value) -> None:
         """Undo a branch's changes to `state()`."""

@@ -7,11 +7,12 @@ Each construct rewrites the continuation and may push a choicepoint; cut barrier
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from robocram.logic.choicepoints import ALT, BARRIER, CATCH, CLAUSES, DEAD, GEN, PROC, REACT
 from robocram.logic.errors import PrologInstantiationError, PrologTypeError
 from robocram.logic.terms import Term, Var, new_term
+from robocram.logic.value import Value
 
 if TYPE_CHECKING:
     from robocram.logic.engine import Engine
@@ -41,7 +42,7 @@ CONTROL_NAMES: list[tuple[str, int]] = [
 ] + [("call", n) for n in range(1, 9)]
 
 
-def add_args(goal: Any, extra: tuple[Any, ...]) -> Any:
+def add_args(goal: Value, extra: tuple[Value, ...]) -> Value:
     """Append arguments to a callable term, as call/N does."""
     while type(goal) is Var:
         if goal.ref is None:
@@ -56,7 +57,7 @@ def add_args(goal: Any, extra: tuple[Any, ...]) -> Any:
     raise PrologTypeError("callable", goal, f"call/N: {goal!r} is not a callable term")
 
 
-def callable_body(goal: Any) -> Any:
+def callable_body(goal: Value) -> Value:
     """Return `goal` after checking, as ISO's call/1 does, that its control tree is callable.
 
     `call((fail, 1))` raises `type_error(callable, (fail, 1))` before running anything.
@@ -75,7 +76,7 @@ def callable_body(goal: Any) -> Any:
 _BODY_CONTROL = frozenset([",", ";", "->", "*->"])
 
 
-def _deref(t: Any) -> Any:
+def _deref(t: Value) -> Value:
     while type(t) is Var and t.ref is not None:
         t = t.ref
     return t
@@ -86,8 +87,8 @@ def _cut(b: int) -> Term:
 
 
 def run_control(
-    m: Engine, name: str, args: tuple[Any, ...], cutb: int, nxt: Any, cps: list[list[Any]]
-) -> Any:
+    m: Engine, name: str, args: tuple[Value, ...], cutb: int, nxt: Value, cps: list[list[Value]]
+) -> Value:
     """Execute one control construct; return the next continuation or FAIL."""
     trail = m.trail
     if name == ";":
@@ -141,7 +142,7 @@ def run_control(
     return _atom_control(name, cutb, nxt, cps)
 
 
-def _atom_control(name: str, cutb: int, nxt: Any, cps: list[list[Any]]) -> Any:
+def _atom_control(name: str, cutb: int, nxt: Value, cps: list[list[Value]]) -> Value:
     if name == "!":
         del cps[cutb:]
         return nxt

@@ -8,10 +8,11 @@
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import Any, cast
+from typing import cast
 
 from robocram.logic.terms import NIL, PString, Term, Var, new_term
 from robocram.logic.unify import is_acyclic
+from robocram.logic.value import Value
 
 __all__ = ["NONE", "SelfContainingValue", "to_prolog", "to_python"]
 
@@ -38,7 +39,7 @@ class _NoneBox:
 NONE = _NoneBox()
 
 
-def to_prolog(value: Any) -> Any:
+def to_prolog(value: Value) -> Value:
     """Convert a Python value to an engine term.
 
     Values nested deeper than Python's stack allows are converted by `_to_prolog_deep`;
@@ -125,7 +126,7 @@ def _assembled_prolog(value: object, args: list[object]) -> object:
     return result
 
 
-def to_python(term: Any) -> Any:
+def to_python(term: Value) -> Value:
     """Convert an engine term (following bindings) to a Python value.
 
     Terms nested deeper than Python's stack allows are converted by `_to_python_deep`.
@@ -141,10 +142,10 @@ def to_python(term: Any) -> Any:
         return _to_python_deep(term)
 
 
-def _to_python_deep(term: Any) -> Any:
+def _to_python_deep(term: Value) -> Value:
     """`to_python` with an explicit stack, for an acyclic term of any depth."""
-    out: list[Any] = []
-    stack: list[tuple[bool, Any]] = [(False, term)]
+    out: list[Value] = []
+    stack: list[tuple[bool, Value]] = [(False, term)]
     while stack:
         built, t = stack.pop()
         if built:
@@ -163,14 +164,14 @@ def _to_python_deep(term: Any) -> Any:
     return out[0]
 
 
-def _assemble(name: str, args: list[Any]) -> Any:
+def _assemble(name: str, args: list[Value]) -> Value:
     """A converted compound: `'.'(H, T)` with a Python list tail becomes a list."""
     if name == "." and len(args) == 2 and type(args[1]) is list:
         return [args[0], *args[1]]
     return Term(name, tuple(args))
 
 
-def _to_python(term: Any) -> Any:
+def _to_python(term: Value) -> Value:
     while type(term) is Var:
         if term.ref is None:
             return term

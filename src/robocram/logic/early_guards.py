@@ -10,10 +10,9 @@ unbound operand) or depend on a later binding is left to run in its place.
 
 from __future__ import annotations
 
-from typing import Any
-
 from robocram.logic.template import Slot, Tmpl
 from robocram.logic.terms import Term
+from robocram.logic.value import Value
 
 __all__ = ["guard_goals", "rejection"]
 
@@ -32,7 +31,7 @@ _TYPE_FAILS = {
 }
 
 
-def guard_goals(body: list[Any]) -> list[Any]:
+def guard_goals(body: list[Value]) -> list[Value]:
     """The leading comparisons and type tests of a body (before any cut or binding goal)."""
     out = []
     for goal in body:
@@ -45,7 +44,7 @@ def guard_goals(body: list[Any]) -> list[Any]:
     return out
 
 
-def rejection(goal: Any) -> tuple[list[int], str] | None:
+def rejection(goal: Value) -> tuple[list[int], str] | None:
     """The slots of guard `goal` and a condition, on their dereferenced values, that holds
     only when the guard is certain to fail; None when there is no such cheap condition."""
     if len(goal.args) == 1:
@@ -62,7 +61,7 @@ def rejection(goal: Any) -> tuple[list[int], str] | None:
     return slots, f"{ints} and not ({left} {_COMPARE[goal.name]} {right})"
 
 
-def _int_expr(t: Any, slots: list[int]) -> str | None:
+def _int_expr(t: Value, slots: list[int]) -> str | None:
     """Python for an expression of slots, integers, +, - and *; None for anything else."""
     if type(t) is Slot:
         if t.i not in slots:

@@ -9,11 +9,12 @@ from __future__ import annotations
 
 import threading
 from collections.abc import Callable, Iterator
-from typing import Any, Protocol
+from typing import Protocol
 
 from robocram.logic.operators import OperatorTable
 from robocram.logic.predicate import Key, Pred
 from robocram.logic.terms import Var
+from robocram.logic.value import Value
 
 __all__ = ["Database", "DetFn", "Engine", "NondetFn"]
 
@@ -23,11 +24,11 @@ class Database(Protocol):
 
     _preds: dict[Key, Pred]
     _ops: OperatorTable
-    _functions: dict[str, Callable[..., Any]]
+    _functions: dict[str, Callable[..., Value]]
     _lock: threading.RLock
-    _flags: dict[str, Any]
+    _flags: dict[str, Value]
 
-    def assert_clause(self, clause: Any, front: bool = False) -> None: ...
+    def assert_clause(self, clause: Value, front: bool = False) -> None: ...
 
     def declare_dynamic(self, key: Key) -> None: ...
 
@@ -41,12 +42,12 @@ class Engine(Protocol):
     trail: list[Var]
     occurs_check: str  # the flag's value: false, true or error
 
-    def unify(self, a: Any, b: Any) -> bool: ...
+    def unify(self, a: Value, b: Value) -> bool: ...
 
     def undo_to(self, mark: int) -> None: ...
 
-    def solve(self, goal: Any, sub: bool = False) -> Iterator[None]: ...
+    def solve(self, goal: Value, sub: bool = False) -> Iterator[None]: ...
 
 
-DetFn = Callable[[Engine, tuple[Any, ...]], bool]
-NondetFn = Callable[[Engine, tuple[Any, ...]], Iterator[Any]]
+DetFn = Callable[[Engine, tuple[Value, ...]], bool]
+NondetFn = Callable[[Engine, tuple[Value, ...]], Iterator[Value]]

@@ -6,10 +6,9 @@ can be caught with `catch/3`, and when they escape they surface as the matching 
 
 from __future__ import annotations
 
-from typing import Any
-
 from robocram.logic.convert import to_python
 from robocram.logic.terms import Term, format_term
+from robocram.logic.value import Value
 
 __all__ = [
     "FactGroupError",
@@ -35,27 +34,27 @@ __all__ = [
 class PrologError(Exception):
     """Root of all engine errors; `ball` is the Prolog term thrown (engine form)."""
 
-    def __init__(self, message: str, ball: Any = None) -> None:
+    def __init__(self, message: str, ball: Value = None) -> None:
         super().__init__(message)
         self.message = message
-        self.ball: Any = (
+        self.ball: Value = (
             ball if ball is not None else Term("error", (Term("system_error", (message,)), message))
         )
 
     @property
-    def term(self) -> Any:
+    def term(self) -> Value:
         """The thrown term as a Python value (lists as lists, atoms as str)."""
         return to_python(self.ball)
 
 
-def _iso(formal: Any, message: str) -> Term:
+def _iso(formal: Value, message: str) -> Term:
     return Term("error", (formal, message))
 
 
 class PrologThrow(PrologError):
     """A term thrown with `throw/1` that no `catch/3` caught."""
 
-    def __init__(self, ball: Any) -> None:
+    def __init__(self, ball: Value) -> None:
         super().__init__(f"uncaught exception in query: {format_term(ball, quoted=True)}", ball)
 
 
@@ -69,7 +68,7 @@ class PrologInstantiationError(PrologError):
 class PrologTypeError(PrologError):
     """An argument had the wrong type (`type_error(Expected, Culprit)`)."""
 
-    def __init__(self, expected: str, culprit: Any, message: str) -> None:
+    def __init__(self, expected: str, culprit: Value, message: str) -> None:
         super().__init__(message, _iso(Term("type_error", (expected, culprit)), message))
         self.expected = expected
         self.culprit = culprit
@@ -78,7 +77,7 @@ class PrologTypeError(PrologError):
 class PrologDomainError(PrologError):
     """An argument had the right type but an invalid value."""
 
-    def __init__(self, domain: str, culprit: Any, message: str) -> None:
+    def __init__(self, domain: str, culprit: Value, message: str) -> None:
         super().__init__(message, _iso(Term("domain_error", (domain, culprit)), message))
 
 
@@ -92,7 +91,7 @@ class PrologEvaluationError(PrologError):
 class PrologExistenceError(PrologError):
     """Something named does not exist (`existence_error(Kind, Name)`)."""
 
-    def __init__(self, kind: str, culprit: Any, message: str) -> None:
+    def __init__(self, kind: str, culprit: Value, message: str) -> None:
         super().__init__(message, _iso(Term("existence_error", (kind, culprit)), message))
 
 
@@ -111,7 +110,7 @@ class UnknownPredicateError(PrologExistenceError):
 class PrologPermissionError(PrologError):
     """An operation is not allowed on the object (e.g. modifying a static predicate)."""
 
-    def __init__(self, action: str, kind: str, culprit: Any, message: str) -> None:
+    def __init__(self, action: str, kind: str, culprit: Value, message: str) -> None:
         super().__init__(message, _iso(Term("permission_error", (action, kind, culprit)), message))
 
 
@@ -144,7 +143,7 @@ class PrologSyntaxError(PrologError):
 class PrologOccursCheckError(PrologError):
     """With the flag `occurs_check = error`: a unification would make a cyclic term."""
 
-    def __init__(self, var: Any, term: Any) -> None:
+    def __init__(self, var: Value, term: Value) -> None:
         message = (
             f"unifying {var!r} with {term!r} would make a cyclic term (occurs_check is error);"
             " set it to false or true to unify or fail instead"
@@ -194,7 +193,7 @@ class PrologHostError(PrologError):
         self.goal = goal
 
 
-def error_from_ball(ball: Any) -> PrologError:
+def error_from_ball(ball: Value) -> PrologError:
     """Wrap a thrown term that escaped a query in the matching Python exception."""
     if type(ball) is Term and ball[0] == "error" and len(ball[1]) == 2:
         formal, context = ball[1]

@@ -12,7 +12,6 @@ through `make_factory`, memoised by source text.
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any
 
 from robocram.logic.arith import BINARY_FUNCTIONS, apply_binary, evaluate
 from robocram.logic.inline_goal import CALL, INLINE
@@ -21,6 +20,7 @@ from robocram.logic.template import Slot, Tmpl
 from robocram.logic.terms import Term, Var, new_term
 from robocram.logic.unify import identical, unify
 from robocram.logic.univ import univ_compose, univ_list
+from robocram.logic.value import Value
 
 __all__ = [
     "FACTORY_CACHE_SIZE",
@@ -33,7 +33,7 @@ __all__ = [
     "slots_in",
 ]
 
-_NAMESPACE: dict[str, Any] = {
+_NAMESPACE: dict[str, Value] = {
     "Var": Var,
     "Term": Term,
     "INLINE": INLINE,
@@ -49,7 +49,7 @@ _NAMESPACE: dict[str, Any] = {
 # Generated factories are pure functions of their source text (constants are parameters),
 # so one bounded memo serves every knowledge base without sharing any resolved state.
 FACTORY_CACHE_SIZE = 4096
-_FACTORIES: LRUCache[str, Callable[..., Any]] = LRUCache(FACTORY_CACHE_SIZE)
+_FACTORIES: LRUCache[str, Callable[..., Value]] = LRUCache(FACTORY_CACHE_SIZE)
 _ARITH_OPS = {"+": "+", "-": "-", "*": "*"}
 _COMPARE_OPS = {"<": "<", ">": ">", "=<": "<=", ">=": ">=", "=:=": "==", "=\\=": "!="}
 _EXACT_TYPES = (str, int, float)
@@ -67,7 +67,7 @@ _TYPE_TESTS = {
 }
 
 
-def make_factory(source: str) -> Callable[..., Any]:
+def make_factory(source: str) -> Callable[..., Value]:
     """Execute generated source defining `make(...)`, once per distinct source text."""
     factory = _FACTORIES.get(source)
     if factory is None:
@@ -83,7 +83,7 @@ def deref_line(x: str) -> str:
     return f"while type({x}) is Var and {x}.ref is not None: {x} = {x}.ref"
 
 
-def slots_in(t: Any, out: list[int]) -> list[int]:
+def slots_in(t: Value, out: list[int]) -> list[int]:
     """Collect the slot numbers in a template, in order of first appearance."""
     if type(t) is Slot:
         if t.i not in out:
@@ -94,7 +94,7 @@ def slots_in(t: Any, out: list[int]) -> list[int]:
     return out
 
 
-def term_parts(t: Any) -> tuple[str, tuple[Any, ...]] | None:
+def term_parts(t: Value) -> tuple[str, tuple[Value, ...]] | None:
     """Name and arguments of a compound term or template; None for anything else."""
     if type(t) is Tmpl:
         return t.name, t.args
@@ -103,7 +103,7 @@ def term_parts(t: Any) -> tuple[str, tuple[Any, ...]] | None:
     return None
 
 
-def inlinable(g: Any) -> bool:
+def inlinable(g: Value) -> bool:
     """True for a goal that runs inline once its slots hold values (tests, is/2, =/2)."""
     parts = term_parts(g)
     if parts is None:
@@ -119,7 +119,7 @@ def inlinable(g: Any) -> bool:
 _INLINE_BINARY = frozenset(["is", "=", "==", "\\=="])
 
 
-def inline_function(goals: list[Any], slots: list[int]) -> Any:
+def inline_function(goals: list[Value], slots: list[int]) -> Value:
     """Compile inline goals to `fn(trail, *values of slots)`: true when all succeed.
 
     None when one of them cannot run inline after all.
@@ -141,7 +141,7 @@ class GoalWriter:
 
     def __init__(self) -> None:
         self.lines: list[str] = []
-        self.consts: list[Any] = []
+        self.consts: list[Value] = []
         self.known: set[int] = set()
         self.dereffed: set[int] = set()
         self.temps = 0
@@ -151,7 +151,7 @@ class GoalWriter:
     def emit(self, line: str, depth: int) -> None:
         self.lines.append("  " * (depth + self.base + 1) + line)
 
-    def const(self, value: Any) -> str:
+    def const(self, value: Value) -> str:
         self.consts.append(value)
         return f"k{len(self.consts) - 1}"
 
@@ -159,7 +159,7 @@ class GoalWriter:
         self.temps += 1
         return f"t{self.temps}"
 
-    def fresh(self, templates: list[Any], depth: int) -> None:
+    def fresh(self, templates: list[Value], depth: int) -> None:
         """Give each slot not yet holding a value a new unbound variable."""
         found: list[int] = []
         for t in templates:
@@ -169,7 +169,7 @@ class GoalWriter:
                 self.emit(f"v{i} = Var()", depth)
                 self.known.add(i)
 
-    def build(self, t: Any) -> str:
+    def build(self, t: Value) -> str:
         """Python expression building template `t` (all its slots must be known)."""
         if type(t) is Slot:
             return f"v{t.i}"
@@ -182,7 +182,7 @@ class GoalWriter:
         """Emit a cut at the neck: drop the choicepoints made since the clause began."""
         self.emit("del cps[cb:]", 1)
 
-    def unify_arg(self, p: Any, x: str, depth: int) -> None:
+    def unify_arg(self, p: Value, x: str, depth: int) -> None:
         """Emit code unifying template `p` with the (un-dereferenced) value in local `x`."""
         if type(p) is Slot:
             if p.i in self.known:
@@ -224,10 +224,10 @@ class GoalWriter:
         self.emit(f"elif type({b}) is Var: {b}.ref = {a}; trail.append({b})", depth + 1)
         self.emit(f"elif not unify({a}, {b}, trail): {self.fail}", depth + 1)
 
-    def read_args(self, pargs: tuple[Any, ...], src: str, depth: int) -> None:
+    def read_args(self, pargs: tuple[Value, ...], src: str, depth: int) -> None:
         """Read mode: unpack the call's subterms, then unify each with its template."""
         names: list[str] = []
-        later: list[tuple[Any, str]] = []
+        later: list[tuple[Value, str]] = []
         for a in pargs:
             if type(a) is Slot and a.i not in self.known:
                 names.append(f"v{a.i}")
@@ -240,7 +240,7 @@ class GoalWriter:
         for a, t in later:
             self.unify_arg(a, t, depth)
 
-    def inline_goal(self, g: Any) -> bool:
+    def inline_goal(self, g: Value) -> bool:
         """Emit a leading deterministic built-in inline; False when `g` is not one."""
         if g == "!":
             self.cut()
@@ -294,7 +294,7 @@ class GoalWriter:
             return True
         return False
 
-    def univ(self, term: Any, items: Any) -> bool:
+    def univ(self, term: Value, items: Value) -> bool:
         """Emit `Term =.. Items` for a slot `Term`: taken apart, or built when unbound."""
         if type(term) is not Slot or term.i in slots_in(items, []):
             return False
@@ -318,7 +318,7 @@ class GoalWriter:
         self.dereffed = dereffed - {term.i, *slots_in(items, [])}
         return True
 
-    def test(self, g: Any) -> str | None:
+    def test(self, g: Value) -> str | None:
         """A Python condition for test goal `g` (type tests, comparisons, `\\+`, `,`)."""
         if g in ("true", "fail", "false"):
             return "True" if g == "true" else "False"
@@ -353,7 +353,7 @@ class GoalWriter:
             self.emit(deref_line(f"v{i}"), 1)
             self.dereffed.add(i)
 
-    def type_test(self, name: str, arg: Any) -> bool:
+    def type_test(self, name: str, arg: Value) -> bool:
         """Emit a type test (`number(X)`, `var(X)`, ...) of a slot holding a value."""
         if type(arg) is not Slot or arg.i not in self.known:
             return False
@@ -361,7 +361,7 @@ class GoalWriter:
         self.emit(f"if not ({_TYPE_TESTS[name].format(f'v{arg.i}')}): {self.fail}", 1)
         return True
 
-    def assign_or_unify(self, target: Any, value: str) -> None:
+    def assign_or_unify(self, target: Value, value: str) -> None:
         """Bind a fresh slot to `value` directly, or unify `target` with it."""
         if type(target) is Slot and target.i not in self.known:
             self.emit(f"v{target.i} = {value}", 1)
@@ -372,7 +372,7 @@ class GoalWriter:
         self.emit(f"{result} = {value}", 1)
         self.unify_arg(target, result, 1)
 
-    def expr(self, t: Any) -> str | None:
+    def expr(self, t: Value) -> str | None:
         """Python expression evaluating arithmetic template `t`; None if a slot is unset."""
         if type(t) is Slot:
             if t.i not in self.known:

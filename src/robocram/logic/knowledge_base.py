@@ -10,7 +10,6 @@ from __future__ import annotations
 import difflib
 import threading
 from collections.abc import Callable, Iterable, Iterator
-from typing import Any
 
 from robocram.logic.arith import MAX_INTEGER_BITS
 from robocram.logic.builtin_flags import default_flags
@@ -32,7 +31,7 @@ from robocram.logic.value import Value
 
 __all__ = ["KnowledgeBase"]
 
-PyPredicate = Callable[..., Iterator[Any]]
+PyPredicate = Callable[..., Iterator[Value]]
 QUERY_CACHE_SIZE = 1024
 
 
@@ -51,23 +50,25 @@ class KnowledgeBase:
         self._preds: dict[Key, Pred] = dict(system_predicates())
         self._preds.update(library_predicates())
         self._ops = OperatorTable()
-        self._functions: dict[str, Callable[..., Any]] = {}
+        self._functions: dict[str, Callable[..., Value]] = {}
         self._flags: dict[str, Value] = default_flags(MAX_INTEGER_BITS)
         self._groups: Groups = {}
         self._lock = threading.RLock()
-        self._queries: LRUCache[tuple[str, str], tuple[Any, dict[str, int], int]] = LRUCache(
+        self._queries: LRUCache[tuple[str, str], tuple[Value, dict[str, int], int]] = LRUCache(
             QUERY_CACHE_SIZE
         )
 
-    def consult(self, text: str, group: str | None = None, extendable: Iterable[Any] = ()) -> None:
+    def consult(
+        self, text: str, group: str | None = None, extendable: Iterable[Value] = ()
+    ) -> None:
         """Load Prolog text as fact group `group` (replacing it); None appends to 'user'.
 
         All or nothing: when a clause is refused or a directive fails or raises, the
         knowledge base is left as it was, and a concurrent query sees the old group or the
         new one, never a mix.
         """
-        terms: list[Any] = []
-        directives: list[Any] = []
+        terms: list[Value] = []
+        directives: list[Value] = []
         dynamic: list[Key] = []
         with paused_gc():
             for term, _ in read_terms(text, self._ops, self._flags):
@@ -90,11 +91,11 @@ class KnowledgeBase:
                 raise
 
     def add_fact_group(
-        self, group: str | None, clauses: Iterable[Any], extendable: Iterable[Any] = ()
+        self, group: str | None, clauses: Iterable[Value], extendable: Iterable[Value] = ()
     ) -> None:
         """Define fact group `group` from clause texts or terms (see `consult`)."""
         name = group or "user"
-        compiled: list[tuple[Key, Any]] = []
+        compiled: list[tuple[Key, Value]] = []
         for clause in clauses:
             if isinstance(clause, str):
                 compiled.extend(
@@ -109,8 +110,8 @@ class KnowledgeBase:
         self,
         name: str,
         replace: bool,
-        compiled: list[tuple[Key, Any]],
-        extendable: Iterable[Any],
+        compiled: list[tuple[Key, Value]],
+        extendable: Iterable[Value],
         dynamic: Iterable[Key],
     ) -> None:
         """Stage the group on copies and install them in one step (hold the lock)."""
@@ -119,7 +120,7 @@ class KnowledgeBase:
         edit.load(name, replace, compiled, shared, dynamic)
         self._preds, self._groups = edit.preds, edit.groups
 
-    def _declaration(self, goal: Any, dynamic: list[Key]) -> bool:
+    def _declaration(self, goal: Value, dynamic: list[Key]) -> bool:
         """Handle dynamic/discontiguous/op directives; False for goals to run."""
         if (
             type(goal) is not Term
@@ -148,7 +149,7 @@ class KnowledgeBase:
             raise refuse_system(pred)
         return pred
 
-    def assert_clause(self, clause: Any, front: bool = False) -> None:
+    def assert_clause(self, clause: Value, front: bool = False) -> None:
         """Add a clause to a dynamic (or new) predicate, as assertz/asserta do."""
         key, compiled = compile_clause(to_prolog(clause), None)
         with self._lock:
@@ -174,17 +175,17 @@ class KnowledgeBase:
             else:
                 pred.add_last(compiled)
 
-    def assertz(self, clause: Any) -> None:
+    def assertz(self, clause: Value) -> None:
         """Append a clause (Prolog text or term) to a dynamic predicate."""
         for term in self._clause_terms(clause):
             self.assert_clause(term)
 
-    def asserta(self, clause: Any) -> None:
+    def asserta(self, clause: Value) -> None:
         """Prepend a clause (Prolog text or term) to a dynamic predicate."""
         for term in self._clause_terms(clause):
             self.assert_clause(term, front=True)
 
-    def retract(self, clause: Any) -> bool:
+    def retract(self, clause: Value) -> bool:
         """Remove the first clause unifying with `clause`; return whether one was removed."""
         term = (
             read_query(clause, self._ops, self._flags)[0]
@@ -193,7 +194,7 @@ class KnowledgeBase:
         )
         return self.holds_term(Term("retract", (term,)))
 
-    def _clause_terms(self, clause: Any) -> list[Any]:
+    def _clause_terms(self, clause: Value) -> list[Value]:
         if isinstance(clause, str):
             return [
                 t
@@ -219,7 +220,7 @@ class KnowledgeBase:
         with self._lock:
             self._user_pred((name, arity)).pyfn = fn
 
-    def register_function(self, name: str, fn: Callable[..., Any]) -> None:
+    def register_function(self, name: str, fn: Callable[..., Value]) -> None:
         """Make `fn` callable by name from py_fun/N and py_pred/N."""
         if not callable(fn):
             raise TypeError(f"register_function({name!r}): {fn!r} is not callable")
@@ -263,7 +264,7 @@ class KnowledgeBase:
         limits = (max_inferences, time_limit)
         Budget(*limits)  # check the limits now, not at the first answer
         template, names, nslots = self._compile_query(text)
-        regs: list[Any] = [None] * nslots
+        regs: list[Value] = [None] * nslots
         for name, value in bindings.items():
             if name not in names:
                 raise PrologError(
@@ -280,8 +281,8 @@ class KnowledgeBase:
 
     def _answers(
         self,
-        goal: Any,
-        regs: list[Any],
+        goal: Value,
+        regs: list[Value],
         shown: list[tuple[str, int]],
         limits: tuple[int | None, float | None],
     ) -> Iterator[dict[str, Value]]:
@@ -303,7 +304,7 @@ class KnowledgeBase:
                 ) from err
             yield answer
 
-    def _compile_query(self, text: str) -> tuple[Any, dict[str, int], int]:
+    def _compile_query(self, text: str) -> tuple[Value, dict[str, int], int]:
         key = (self._flags["double_quotes"], text)  # the flag changes what "..." reads as
         cached = self._queries.get(key)
         if cached is None:
@@ -324,7 +325,7 @@ class KnowledgeBase:
         """The first answer of the query, or None when it has none."""
         return next(self.query(text, **bindings), None)
 
-    def holds_term(self, goal: Any) -> bool:
+    def holds_term(self, goal: Value) -> bool:
         """Run an engine term as a goal; True when it has a solution."""
         try:
             return next(Machine(self).solve(to_prolog(goal)), False) is None
@@ -339,7 +340,7 @@ class KnowledgeBase:
 _READER_DIRECTIVES = frozenset([("op", 3), ("set_prolog_flag", 2)])
 
 
-def _comma_items(t: Any) -> list[Any]:
+def _comma_items(t: Value) -> list[Value]:
     """Items of `a, b, c` or of a list `[a, b, c]` (as in `:- dynamic`)."""
     t = deref(t)
     items = []

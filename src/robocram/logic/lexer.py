@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
 
 from robocram.logic.bigint import text_int
 from robocram.logic.errors import PrologSyntaxError
+from robocram.logic.value import Value
 
 __all__ = ["Token", "line_col", "tokenize"]
 
@@ -21,7 +21,7 @@ class Token:
     """One token: `kind` is atom, qatom, var, num, str, bq, punct, end or eof."""
 
     kind: str
-    value: Any
+    value: Value
     pos: int
     layout_before: bool
 

@@ -2,20 +2,19 @@
 
 from __future__ import annotations
 
-from typing import Any
-
 from robocram.logic.clause import Clause
 from robocram.logic.errors import PrologInstantiationError, PrologTypeError
 from robocram.logic.template import Slot, compile_term
 from robocram.logic.terms import Term, Var, deref
 from robocram.logic.unify import copy_resolved
+from robocram.logic.value import Value
 
 __all__ = ["compile_clause", "conjuncts", "parse_indicator"]
 
 
-def conjuncts(body: Any) -> list[Any]:
+def conjuncts(body: Value) -> list[Value]:
     """Flatten a conjunction into its goals; a variable goal becomes call(Var)."""
-    goals: list[Any] = []
+    goals: list[Value] = []
     stack = [body]
     while stack:
         g = deref(stack.pop())
@@ -31,7 +30,7 @@ def conjuncts(body: Any) -> list[Any]:
     return goals
 
 
-def compile_clause(term: Any, group: str | None) -> tuple[tuple[str, int], Clause]:
+def compile_clause(term: Value, group: str | None) -> tuple[tuple[str, int], Clause]:
     """Compile `Head :- Body` (or a fact) into a Clause; return its name/arity key too.
 
     >>> from robocram.logic.reader import read_query
@@ -46,7 +45,7 @@ def compile_clause(term: Any, group: str | None) -> tuple[tuple[str, int], Claus
         head, body = term, "true"
     if type(head) is Var:
         raise PrologInstantiationError("clause head is an unbound variable; write name(Args...)")
-    args: tuple[Any, ...]
+    args: tuple[Value, ...]
     if type(head) is str:
         name, args = head, ()
     elif type(head) is Term:
@@ -61,7 +60,7 @@ def compile_clause(term: Any, group: str | None) -> tuple[tuple[str, int], Claus
     return (name, len(args)), Clause(head_t, tuple(reversed(body_t)), len(slots), group, term, name)
 
 
-def parse_indicator(spec: Any) -> tuple[str, int]:
+def parse_indicator(spec: Value) -> tuple[str, int]:
     """Read `name/arity` (a Term or the text 'name/arity') into a key."""
     spec = deref(spec)
     if isinstance(spec, str) and "/" in spec:

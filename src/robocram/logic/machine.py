@@ -9,7 +9,6 @@ the barrier recorded when the clause was entered.
 from __future__ import annotations
 
 from collections.abc import Iterator
-from typing import Any
 
 from robocram.logic import gc_pacing
 from robocram.logic.builtin_flags import warn_unknown
@@ -32,6 +31,7 @@ from robocram.logic.predicate import DET, NONDET, USER, WARM_CALLS, Pred
 from robocram.logic.python_predicates import python_solutions
 from robocram.logic.terms import Term, Var, new_term
 from robocram.logic.unify import copy_resolved, undo, unify
+from robocram.logic.value import Value
 
 __all__ = ["Machine"]
 
@@ -46,13 +46,13 @@ class Machine:
         self.budget = budget if budget is not None else Budget(None, None)
         self.occurs_check: str = kb._flags["occurs_check"]
 
-    def unify(self, a: Any, b: Any) -> bool:
+    def unify(self, a: Value, b: Value) -> bool:
         """Unify two terms, trailing the bindings (for built-ins)."""
         if self.occurs_check != "false":
             return unify_checked(a, b, self.trail, self.occurs_check == "error")
         return unify(a, b, self.trail)
 
-    def clause_runner(self, cl: Clause) -> Any:
+    def clause_runner(self, cl: Clause) -> Value:
         """The function to run clause `cl` with: compiled, or checked for the occurs check."""
         if self.occurs_check == "false":
             return cl.run if cl.run is not None else cl.prepare()
@@ -74,11 +74,11 @@ class Machine:
         if mode == "warning":
             warn_unknown(name, arity)
 
-    def solve(self, goal: Any, sub: bool = False) -> Iterator[None]:
+    def solve(self, goal: Value, sub: bool = False) -> Iterator[None]:
         """Yield once per solution of `goal`, with its bindings in place while suspended."""
         trail = self.trail
-        cps: list[list[Any]] = [[BARRIER, len(trail)]] if sub else []
-        cont: Any = (goal, len(cps), None)
+        cps: list[list[Value]] = [[BARRIER, len(trail)]] if sub else []
+        cont: Value = (goal, len(cps), None)
         fail = False
         while True:
             try:
@@ -88,7 +88,7 @@ class Machine:
                 cont = self._handle(err, cps, sub)
                 fail = False
 
-    def _handle(self, err: PrologError, cps: list[list[Any]], sub: bool) -> Any:
+    def _handle(self, err: PrologError, cps: list[list[Value]], sub: bool) -> Value:
         """Find the innermost active catch/3 whose catcher unifies with the ball."""
         ball = copy_resolved(err.ball)
         err.ball = ball
@@ -106,7 +106,7 @@ class Machine:
             raise err.original  # nothing caught it: the caller sees its own exception
         raise err
 
-    def _run(self, cps: list[list[Any]], cont: Any, fail: bool) -> Iterator[None]:
+    def _run(self, cps: list[list[Value]], cont: Value, fail: bool) -> Iterator[None]:
         # The hot loop: one iteration per goal. It is written flat on purpose (locals cached,
         # `type(x) is` tests, first-argument indexing inlined) because every helper call
         # here costs a measurable share of an inference; the cold paths are methods.
@@ -115,7 +115,7 @@ class Machine:
         backtrack = self._backtrack
         if fail:
             cont = backtrack(cps)
-        goal: Any = None
+        goal: Value = None
         ticks = 0
         spend = self.budget.spend
         plain = self.occurs_check == "false"  # procedures skip the occurs check
@@ -212,7 +212,7 @@ class Machine:
             if running:
                 pacer.leave()
 
-    def _call_clauses(self, p: Pred, args: Any, nxt: Any, cps: list[list[Any]]) -> Any:
+    def _call_clauses(self, p: Pred, args: Value, nxt: Value, cps: list[list[Value]]) -> Value:
         """Try the clauses of `p` that the first argument selects; False when none runs.
 
         A clause ending in a call to its own predicate returns that call's arguments as a
@@ -268,7 +268,7 @@ class Machine:
                 return cont
             args = cont
 
-    def _backtrack(self, cps: list[list[Any]]) -> Any:
+    def _backtrack(self, cps: list[list[Value]]) -> Value:
         """Resume the newest choicepoint; return its continuation, or False when none is left."""
         trail = self.trail
         while cps:
@@ -303,7 +303,7 @@ class Machine:
                 cps.pop()
         return False
 
-    def _again(self, proc: Any, args: list[Any], nxt: Any, cps: list[list[Any]]) -> Any:
+    def _again(self, proc: Value, args: list[Value], nxt: Value, cps: list[list[Value]]) -> Value:
         """Finish a call that a procedure handed back (see procedure.py).
 
         After CHECK_EVERY loops: count them and call the procedure again. With a Scan:
@@ -317,7 +317,7 @@ class Machine:
             args = proc(args, self.trail, nxt, cps, 0)
         return args
 
-    def _next_clause(self, cp: list[Any], cps: list[list[Any]]) -> Any:
+    def _next_clause(self, cp: list[Value], cps: list[list[Value]]) -> Value:
         """Try the next candidate clause of a CLAUSES choicepoint (popping it at the last)."""
         i = cp[5]
         cl = cp[4][i]
@@ -335,7 +335,7 @@ class Machine:
             return (new_term(Term, (cp[7].name, tuple(cont))), 0, cp[3])
         return cont
 
-    def _call_other(self, goal: Any, cutb: int, nxt: Any) -> Any:
+    def _call_other(self, goal: Value, cutb: int, nxt: Value) -> Value:
         """Dispatch a goal that is a bound variable; raise for unbound or non-callable."""
         while type(goal) is Var:
             if goal.ref is None:
@@ -347,7 +347,9 @@ class Machine:
             return (goal, cutb, nxt)
         raise PrologTypeError("callable", goal, f"{goal!r} is not a callable goal")
 
-    def _push_python(self, p: Pred, args: tuple[Any, ...], nxt: Any, cps: list[list[Any]]) -> None:
+    def _push_python(
+        self, p: Pred, args: tuple[Value, ...], nxt: Value, cps: list[list[Value]]
+    ) -> None:
         """Try the Python predicate's solutions first, then the ordinary clauses."""
         trail = self.trail
         cands = p.clauses if not args or len(p.clauses) < 2 else p.candidates(deref1(args[0]))
@@ -358,7 +360,7 @@ class Machine:
         cps.append([GEN, len(trail), python_solutions(self, p, args), nxt])
 
 
-def host_error(err: Exception, goal: Any) -> PrologError:
+def host_error(err: Exception, goal: Value) -> PrologError:
     """The Prolog error for a Python exception raised while running `goal`."""
     while type(goal) is Var and goal.ref is not None:
         goal = goal.ref
@@ -379,7 +381,7 @@ def host_error(err: Exception, goal: Any) -> PrologError:
     return PrologHostError(err, where)
 
 
-def deref1(t: Any) -> Any:
+def deref1(t: Value) -> Value:
     """Dereference (module-level for speed in the machine)."""
     while type(t) is Var:
         r = t.ref

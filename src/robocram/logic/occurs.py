@@ -10,16 +10,15 @@ False
 
 from __future__ import annotations
 
-from typing import Any
-
 from robocram.logic.errors import PrologOccursCheckError
 from robocram.logic.terms import Term, Var
 from robocram.logic.unify import unify_iterative
+from robocram.logic.value import Value
 
 __all__ = ["occurs_in", "unify_checked"]
 
 
-def occurs_in(v: Var, t: Any) -> bool:
+def occurs_in(v: Var, t: Value) -> bool:
     """True when unbound variable `v` occurs in term `t` (bindings followed)."""
     seen: set[int] = set()
     stack = [t]
@@ -35,10 +34,10 @@ def occurs_in(v: Var, t: Any) -> bool:
     return False
 
 
-def unify_checked(a: Any, b: Any, trail: list[Var], error: bool) -> bool:
+def unify_checked(a: Value, b: Value, trail: list[Var], error: bool) -> bool:
     """Unify `a` and `b` without making cyclic terms; `error` raises instead of failing."""
 
-    def may_bind(v: Var, t: Any) -> bool:
+    def may_bind(v: Var, t: Value) -> bool:
         if not occurs_in(v, t):
             return True
         if error:

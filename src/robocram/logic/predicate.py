@@ -3,12 +3,12 @@
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
-from typing import Any
 
 from robocram.logic.bulk import paused_gc
 from robocram.logic.clause import Clause
 from robocram.logic.procedure import compile_procedure
 from robocram.logic.terms import Term, Var
+from robocram.logic.value import Value
 
 __all__ = ["CONTROL", "DET", "NONDET", "USER", "WARM_CALLS", "FrozenPred", "Key", "Pred"]
 
@@ -39,21 +39,21 @@ class Pred:
         "warm",
     )
 
-    def __init__(self, name: str, arity: int, kind: int = USER, fn: Any = None) -> None:
+    def __init__(self, name: str, arity: int, kind: int = USER, fn: Value = None) -> None:
         self.name = name
         self.arity = arity
         self.kind = kind
         self.fn = fn
-        self.store: list[Any] = []  # the clauses are store[head:]; before head: room
+        self.store: list[Value] = []  # the clauses are store[head:]; before head: room
         self.head = 0
-        self.index: dict[Any, list[Clause]] | None = None
+        self.index: dict[Value, list[Clause]] | None = None
         self.varclauses: list[Clause] = []
-        self.pyfn: Callable[..., Iterator[Any]] | None = None
+        self.pyfn: Callable[..., Iterator[Value]] | None = None
         self.dynamic = False
         self.system = False
         self.owner: str | None = None
         self.extendable: set[str] = set()
-        self.proc: Any = None
+        self.proc: Value = None
         self.warm = 0
         self.erased = 0  # retracted clauses still in `clauses` (dropped in batches)
 
@@ -154,9 +154,9 @@ class Pred:
             bucket = index.get(clause.key)
             index[clause.key] = [clause, *(self.varclauses if bucket is None else bucket)]
 
-    def build_index(self) -> dict[Any, list[Clause]]:
+    def build_index(self) -> dict[Value, list[Clause]]:
         """Group clauses by first-argument key; variable-first clauses join every bucket."""
-        index: dict[Any, list[Clause]] = {}
+        index: dict[Value, list[Clause]] = {}
         varclauses: list[Clause] = []
         with paused_gc():
             for clause in self.clauses:
@@ -173,7 +173,7 @@ class Pred:
         self.index = index
         return index
 
-    def candidates(self, first: Any) -> list[Clause]:
+    def candidates(self, first: Value) -> list[Clause]:
         """Clauses whose first argument can match the dereferenced call argument `first`."""
         t = type(first)
         if t is Var:
@@ -196,12 +196,12 @@ class FrozenPred(Pred):
 
     __slots__ = ()
 
-    def __init__(self, name: str, arity: int, kind: int, fn: Any = None) -> None:
+    def __init__(self, name: str, arity: int, kind: int, fn: Value = None) -> None:
         super().__init__(name, arity, kind, fn)
         self.owner = "system"
         self.system = True  # from here on, every attribute is read-only
 
-    def __setattr__(self, attr: str, value: Any) -> None:
+    def __setattr__(self, attr: str, value: Value) -> None:
         if getattr(self, "system", False):
             raise AttributeError(
                 f"{self.name}/{self.arity} is a system predicate shared by every knowledge"

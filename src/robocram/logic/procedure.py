@@ -26,17 +26,17 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable, Sequence
-from typing import Any
 
 from robocram.logic.choicepoints import PROC
 from robocram.logic.codegen import ClauseCode, ClauseWriter, make_factory
 from robocram.logic.limits import CHECK_EVERY
 from robocram.logic.template import Slot, Tmpl
 from robocram.logic.terms import Term
+from robocram.logic.value import Value
 
 __all__ = ["MAX_CLAUSES", "SCAN_AFTER", "Procedure", "Scan", "compile_procedure"]
 
-Procedure = Callable[[Any, list[Any], Any, list[list[Any]], int], Any]
+Procedure = Callable[[Value, list[Value], Value, list[list[Value]], int], Value]
 MAX_CLAUSES = 64
 MAX_KEYS = MAX_CLAUSES  # distinct first-argument keys in one procedure
 SCAN_AFTER = 8  # clauses a call with an unbound first argument tries in the procedure
@@ -58,11 +58,11 @@ class Scan:
 
     __slots__ = ("pred",)
 
-    def __init__(self, pred: Any) -> None:
+    def __init__(self, pred: Value) -> None:
         self.pred = pred
 
 
-def compile_procedure(stored: Sequence[ClauseCode], owner: Any = None) -> Procedure | None:
+def compile_procedure(stored: Sequence[ClauseCode], owner: Value = None) -> Procedure | None:
     """Return the procedure of a static predicate's clauses, or None when not worth it.
 
     With `owner` (the predicate), a call with the first argument unbound that would try
@@ -174,7 +174,7 @@ def _refused(clause: ClauseCode, kind: type) -> bool:
     return False
 
 
-def _key(t: Any) -> Key | None:
+def _key(t: Value) -> Key | None:
     """The switch key of a head's first argument; None when any call argument can match."""
     if type(t) is Tmpl:
         return (t.name, len(t.args))
@@ -188,7 +188,7 @@ def _key(t: Any) -> Key | None:
 class _ProcWriter(ClauseWriter):
     """Writes the switch and, per branch, each clause; a failing clause falls through."""
 
-    def __init__(self, clauses: list[ClauseCode], owner: Any = None) -> None:
+    def __init__(self, clauses: list[ClauseCode], owner: Value = None) -> None:
         super().__init__()
         self.clauses = clauses
         self.owner = owner
@@ -242,7 +242,7 @@ class _ProcWriter(ClauseWriter):
             self.branch(b.every, 3, switched=False)
 
     def dispatch(
-        self, entries: list[tuple[Any, list[int]]], tests: list[str], key: str, open_: list[int]
+        self, entries: list[tuple[Value, list[int]]], tests: list[str], key: str, open_: list[int]
     ) -> None:
         """Emit the branches of one kind of key: compared in turn, or by a dictionary.
 
@@ -307,7 +307,7 @@ class _ProcWriter(ClauseWriter):
             self.emit("while len(trail) > mark: trail.pop().ref = None", depth + 1)
         self.base = 0
 
-    def arg_local(self, i: int, p: Any) -> str:
+    def arg_local(self, i: int, p: Value) -> str:
         """A copy of argument `i` when a later clause of the branch may still read it.
 
         Unifying a head argument dereferences its local in place; past the first
@@ -321,10 +321,10 @@ class _ProcWriter(ClauseWriter):
         self.emit(f"{local} = a{i}", 1)
         return local
 
-    def state(self) -> Any:
+    def state(self) -> Value:
         return self.committed
 
-    def restore(self, state: Any) -> None:
+    def restore(self, state: Value) -> None:
         self.committed = state
 
     def cut(self) -> None:

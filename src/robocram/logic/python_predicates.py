@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from robocram.logic.builtin_spec import Builtin, det
 from robocram.logic.convert import to_prolog, to_python
@@ -14,6 +14,7 @@ from robocram.logic.errors import (
     PrologInstantiationError,
 )
 from robocram.logic.terms import Var, deref
+from robocram.logic.value import Value
 
 if TYPE_CHECKING:
     from robocram.logic.engine import Engine
@@ -22,7 +23,7 @@ if TYPE_CHECKING:
 __all__ = ["python_solutions"]
 
 
-def python_solutions(m: Engine, p: Pred, args: tuple[Any, ...]) -> Iterator[bool]:
+def python_solutions(m: Engine, p: Pred, args: tuple[Value, ...]) -> Iterator[bool]:
     """Run a Python predicate; unify each yielded tuple with the call's arguments."""
     assert p.pyfn is not None
     py_args = [to_python(a) for a in args]
@@ -43,7 +44,7 @@ def python_solutions(m: Engine, p: Pred, args: tuple[Any, ...]) -> Iterator[bool
             m.undo_to(mark)
 
 
-def _guarded(fn: Callable[..., Any], args: list[Any], where: str) -> Iterator[Any]:
+def _guarded(fn: Callable[..., Value], args: list[Value], where: str) -> Iterator[Value]:
     """Yield `fn(*args)`'s solutions; a Python exception becomes a `PrologHostError`."""
     solutions = iter(_host_call(fn, args, where))
     while True:
@@ -58,7 +59,7 @@ def _guarded(fn: Callable[..., Any], args: list[Any], where: str) -> Iterator[An
         yield solution
 
 
-def _host_call(fn: Callable[..., Any], args: list[Any], where: str) -> Any:
+def _host_call(fn: Callable[..., Value], args: list[Value], where: str) -> Value:
     try:
         return fn(*args)
     except PrologError:
@@ -67,7 +68,7 @@ def _host_call(fn: Callable[..., Any], args: list[Any], where: str) -> Any:
         raise PrologHostError(err, where) from err
 
 
-def _resolve_callable(m: Engine, f: Any, what: str) -> Callable[..., Any]:
+def _resolve_callable(m: Engine, f: Value, what: str) -> Callable[..., Value]:
     f = deref(f)
     if type(f) is Var:
         raise PrologInstantiationError(
@@ -87,13 +88,13 @@ def _resolve_callable(m: Engine, f: Any, what: str) -> Callable[..., Any]:
     return fn
 
 
-def _py_fun(m: Engine, args: tuple[Any, ...]) -> bool:
+def _py_fun(m: Engine, args: tuple[Value, ...]) -> bool:
     fn = _resolve_callable(m, args[0], "py_fun")
     result = _host_call(fn, [to_python(a) for a in args[1:-1]], f"py_fun({args[0]!r})")
     return m.unify(args[-1], to_prolog(result))
 
 
-def _py_pred(m: Engine, args: tuple[Any, ...]) -> bool:
+def _py_pred(m: Engine, args: tuple[Value, ...]) -> bool:
     fn = _resolve_callable(m, args[0], "py_pred")
     return bool(_host_call(fn, [to_python(a) for a in args[1:]], f"py_pred({args[0]!r})"))
 

@@ -3,11 +3,11 @@
 from __future__ import annotations
 
 from collections.abc import Iterator
-from typing import Any
 
 from robocram.logic.lexer import Token, syntax_error, tokenize
 from robocram.logic.operators import OperatorTable
 from robocram.logic.terms import NIL, PString, Term, Var, make_list
+from robocram.logic.value import Value
 
 __all__ = ["read_query", "read_terms"]
 
@@ -45,11 +45,11 @@ class _Parser:
         tok = self.peek()
         return tok.kind in ("end", "eof") or (tok.kind == "punct" and tok.value in _STOP)
 
-    def parse(self, max_prec: int) -> tuple[Any, int]:
+    def parse(self, max_prec: int) -> tuple[Value, int]:
         left, prec = self.primary(max_prec)
         return self.infix(left, prec, max_prec)
 
-    def infix(self, left: Any, left_prec: int, max_prec: int) -> tuple[Any, int]:
+    def infix(self, left: Value, left_prec: int, max_prec: int) -> tuple[Value, int]:
         while True:
             tok = self.peek()
             if tok.kind == "atom" or (tok.kind == "punct" and tok.value in (",", "|")):
@@ -69,7 +69,7 @@ class _Parser:
             left = Term(";" if name == "|" else name, (left, right))
             left_prec = prec
 
-    def primary(self, max_prec: int) -> tuple[Any, int]:
+    def primary(self, max_prec: int) -> tuple[Value, int]:
         tok = self.next()
         kind = tok.kind
         if kind == "num":
@@ -93,7 +93,7 @@ class _Parser:
             raise self.fail(tok, "unexpected end of clause")
         raise self.fail(tok, "unexpected end of text")
 
-    def quoted_text(self, text: str) -> Any:
+    def quoted_text(self, text: str) -> Value:
         """A double-quoted text as the `double_quotes` flag says: string, codes, chars, atom."""
         mode = self.double_quotes
         if mode == "codes":
@@ -104,7 +104,7 @@ class _Parser:
             return text
         return PString(text)
 
-    def punct(self, tok: Token) -> tuple[Any, int]:
+    def punct(self, tok: Token) -> tuple[Value, int]:
         if tok.value == "(":
             term, _ = self.parse(1200)
             self.expect(")")
@@ -117,7 +117,7 @@ class _Parser:
             while self.peek().kind == "punct" and self.peek().value == ",":
                 self.next()
                 items.append(self.parse(999)[0])
-            tail: Any = NIL
+            tail: Value = NIL
             if self.peek().kind == "punct" and self.peek().value == "|":
                 self.next()
                 tail = self.parse(999)[0]
@@ -132,7 +132,7 @@ class _Parser:
             return Term("{}", (term,)), 0
         raise self.fail(tok, f"unexpected '{tok.value}'")
 
-    def maybe_call(self, name: str) -> Any:
+    def maybe_call(self, name: str) -> Value:
         tok = self.peek()
         if tok.kind == "punct" and tok.value == "(" and not tok.layout_before:
             self.next()
@@ -144,7 +144,7 @@ class _Parser:
             return Term(name, args)
         return name
 
-    def atom(self, tok: Token, max_prec: int) -> tuple[Any, int]:
+    def atom(self, tok: Token, max_prec: int) -> tuple[Value, int]:
         name = tok.value
         nxt = self.peek()
         if nxt.kind == "punct" and nxt.value == "(" and not nxt.layout_before:
@@ -171,7 +171,7 @@ class _Parser:
         after = self.tokens[self.i + 1]
         return not (after.kind == "punct" and after.value == "(" and not after.layout_before)
 
-    def clause(self) -> Any:
+    def clause(self) -> Value:
         self.varmap = {}
         term, _ = self.parse(1200)
         tok = self.next()
@@ -181,8 +181,8 @@ class _Parser:
 
 
 def read_terms(
-    text: str, ops: OperatorTable | None = None, flags: dict[str, Any] | None = None
-) -> Iterator[tuple[Any, dict[str, Var]]]:
+    text: str, ops: OperatorTable | None = None, flags: dict[str, Value] | None = None
+) -> Iterator[tuple[Value, dict[str, Var]]]:
     """Yield each clause of `text` with its variable names.
 
     The parser reads `flags` (a knowledge base's Prolog flags) before each clause, so a
@@ -200,8 +200,8 @@ def read_terms(
 
 
 def read_query(
-    text: str, ops: OperatorTable | None = None, flags: dict[str, Any] | None = None
-) -> tuple[Any, dict[str, Var]]:
+    text: str, ops: OperatorTable | None = None, flags: dict[str, Value] | None = None
+) -> tuple[Value, dict[str, Var]]:
     """Read one term (the final '.' is optional) and its variables by name.
 
     >>> read_query("X = f(Y)")[0].name

@@ -13,7 +13,6 @@ from __future__ import annotations
 from collections.abc import Mapping
 from functools import cache
 from types import MappingProxyType
-from typing import Any
 
 from robocram.logic import (
     builtin_arith,
@@ -36,6 +35,7 @@ from robocram.logic.loader import compile_clause
 from robocram.logic.predicate import CONTROL, FrozenPred, Key, Pred
 from robocram.logic.reader import read_terms
 from robocram.logic.terms import Term
+from robocram.logic.value import Value
 
 __all__ = ["PRIVATE_PREFIX", "library_predicates", "system_predicates"]
 
@@ -87,19 +87,19 @@ def _library_clauses() -> tuple[tuple[Key, Clause], ...]:
     return tuple(out)
 
 
-def _is_rule(t: Any) -> bool:
+def _is_rule(t: Value) -> bool:
     return type(t) is Term and t[0] == ":-" and len(t[1]) == 2
 
 
-def _head(t: Any) -> Any:
+def _head(t: Value) -> Value:
     return t[1][0] if _is_rule(t) else t
 
 
-def _key(t: Any) -> Key:
+def _key(t: Value) -> Key:
     return (t, 0) if type(t) is str else (t[0], len(t[1]))
 
 
-def _private_calls(goal: Any, names: set[Key]) -> Any:
+def _private_calls(goal: Value, names: set[Key]) -> Value:
     """Point the body's calls of library predicates at their private twins."""
     if type(goal) not in (str, Term):
         return goal

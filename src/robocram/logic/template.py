@@ -6,10 +6,9 @@ so the stored templates are never mutated and can be shared by concurrent querie
 
 from __future__ import annotations
 
-from typing import Any
-
 from robocram.logic.terms import Term, Var, new_term
 from robocram.logic.unify import unify
+from robocram.logic.value import Value
 
 __all__ = ["Slot", "Tmpl", "build", "compile_term", "index_key_of_template", "unify_head"]
 
@@ -28,12 +27,12 @@ class Tmpl:
 
     __slots__ = ("args", "name")
 
-    def __init__(self, name: str, args: tuple[Any, ...]) -> None:
+    def __init__(self, name: str, args: tuple[Value, ...]) -> None:
         self.name = name
         self.args = args
 
 
-def index_key_of_template(t: Any) -> Any:
+def index_key_of_template(t: Value) -> Value:
     """Return the first-argument index key of a template (None for a variable)."""
     if type(t) is Slot:
         return None
@@ -48,7 +47,7 @@ def index_key_of_template(t: Any) -> Any:
     return t
 
 
-def compile_term(term: Any, slots: dict[Var, Slot]) -> Any:
+def compile_term(term: Value, slots: dict[Var, Slot]) -> Value:
     """Turn a term into a template, numbering its unbound variables in `slots`."""
     while type(term) is Var:
         if term.ref is None:
@@ -65,7 +64,7 @@ def compile_term(term: Any, slots: dict[Var, Slot]) -> Any:
     return new_term(Term, (term[0], args))
 
 
-def build(t: Any, regs: list[Any]) -> Any:
+def build(t: Value, regs: list[Value]) -> Value:
     """Instantiate a template against the registers, creating fresh Vars on first use."""
     tt = type(t)
     if tt is Slot:
@@ -78,7 +77,7 @@ def build(t: Any, regs: list[Any]) -> Any:
     return t
 
 
-def unify_head(p: Any, t: Any, regs: list[Any], trail: list[Var]) -> bool:
+def unify_head(p: Value, t: Value, regs: list[Value], trail: list[Var]) -> bool:
     """Unify head template `p` with call argument `t` without building the head first."""
     tp = type(p)
     if tp is Slot:

@@ -9,10 +9,10 @@ themselves as Prolog text (`format_term`), which `repr`, `write/1` and error mes
 from __future__ import annotations
 
 from collections.abc import Iterable
-from typing import Any
 
 from robocram.logic.bigint import int_text
 from robocram.logic.operators import OperatorTable
+from robocram.logic.value import Value
 
 __all__ = ["NIL", "PString", "Term", "Var", "deref", "format_term", "make_list", "quote_atom"]
 
@@ -29,13 +29,13 @@ class Var:
     __slots__ = ("ref",)
 
     def __init__(self) -> None:
-        self.ref: Any = None
+        self.ref: Value = None
 
     def __repr__(self) -> str:
         return f"_G{id(self) % 100000}"
 
 
-class Term(tuple[str, tuple[Any, ...]]):
+class Term(tuple[str, tuple[Value, ...]]):
     """An immutable compound term `name(args...)`.
 
     >>> t = Term("point", (1, 2)); t.name, t.args
@@ -44,7 +44,7 @@ class Term(tuple[str, tuple[Any, ...]]):
 
     __slots__ = ()
 
-    def __new__(cls, name: str, args: Iterable[Any] = ()) -> Term:
+    def __new__(cls, name: str, args: Iterable[Value] = ()) -> Term:
         return tuple.__new__(cls, (name, tuple(args)))
 
     @property
@@ -53,7 +53,7 @@ class Term(tuple[str, tuple[Any, ...]]):
         return self[0]
 
     @property
-    def args(self) -> tuple[Any, ...]:
+    def args(self) -> tuple[Value, ...]:
         """The arguments, in order."""
         return self[1]
 
@@ -92,7 +92,7 @@ class PString:
         return f"PString({self.text!r})"
 
 
-def deref(t: Any) -> Any:
+def deref(t: Value) -> Value:
     """Follow variable bindings to the value (or the unbound variable) at the end."""
     while type(t) is Var:
         r = t.ref
@@ -105,7 +105,7 @@ def deref(t: Any) -> Any:
 new_term = tuple.__new__
 
 
-def make_list(items: Iterable[Any], tail: Any = NIL) -> Any:
+def make_list(items: Iterable[Value], tail: Value = NIL) -> Value:
     """Build a Prolog list (`'.'/2` cells) from engine terms.
 
     >>> make_list([1, 2])
@@ -137,7 +137,7 @@ def quote_atom(name: str) -> str:
 
 
 def format_term(
-    term: Any,
+    term: Value,
     quoted: bool = False,
     max_prec: int = 1200,
     *,
@@ -160,7 +160,7 @@ def format_term(
 Style = tuple[bool, bool, bool]  # quoted, ignore_ops, numbervars
 
 
-def _write(term: Any, style: Style, max_prec: int) -> str:
+def _write(term: Value, style: Style, max_prec: int) -> str:
     while type(term) is Var and term.ref is not None:
         term = term.ref
     t = type(term)
@@ -225,7 +225,7 @@ def _compound(term: Term, style: Style, max_prec: int) -> str:
     return f"{quote_atom(name) if quoted else name}({inner})"
 
 
-def _list(term: Any, style: Style) -> str:
+def _list(term: Value, style: Style) -> str:
     items: list[str] = []
     while type(term) is Term and term[0] == "." and len(term[1]) == 2:
         items.append(_write(term[1][0], style, 999))

@@ -3,9 +3,9 @@
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any
 
 from robocram.logic.terms import PString, Term, Var, deref, new_term
+from robocram.logic.value import Value
 
 __all__ = [
     "copy_resolved",
@@ -20,11 +20,11 @@ __all__ = [
 ]
 
 _PRIMITIVE = frozenset([str, int, float, PString])
-BindCheck = Callable[[Var, Any], bool]
+BindCheck = Callable[[Var, Value], bool]
 _FAST_STEPS = 100_000
 
 
-def unify(a: Any, b: Any, trail: list[Var]) -> bool:
+def unify(a: Value, b: Value, trail: list[Var]) -> bool:
     """Unify two terms, recording each bound variable on `trail`.
 
     >>> x = Var(); unify(Term("f", (x,)), Term("f", (1,)), []), x.ref
@@ -101,7 +101,7 @@ def unify(a: Any, b: Any, trail: list[Var]) -> bool:
         return bool(a == b)
 
 
-def unify_rational(a: Any, b: Any, trail: list[Var]) -> bool:
+def unify_rational(a: Value, b: Value, trail: list[Var]) -> bool:
     """Unify without recursion, terminating on cyclic terms (pairs already met are equal).
 
     >>> x, y = Var(), Var(); t = []
@@ -111,7 +111,7 @@ def unify_rational(a: Any, b: Any, trail: list[Var]) -> bool:
     return unify_iterative(a, b, trail, None)
 
 
-def unify_iterative(a: Any, b: Any, trail: list[Var], may_bind: BindCheck | None) -> bool:
+def unify_iterative(a: Value, b: Value, trail: list[Var], may_bind: BindCheck | None) -> bool:
     """Unify with an explicit stack; compound pairs met before count as equal (so cyclic
     terms end), and `may_bind(var, value)` vets each binding of a variable to a compound
     (the occurs check).
@@ -145,11 +145,11 @@ def unify_iterative(a: Any, b: Any, trail: list[Var], may_bind: BindCheck | None
     return True
 
 
-def is_acyclic(t: Any) -> bool:
+def is_acyclic(t: Value) -> bool:
     """True unless following bindings from `t` leads back into a compound on the path."""
     on_path: set[int] = set()
     done: set[int] = set()
-    stack: list[tuple[Any, bool]] = [(t, False)]
+    stack: list[tuple[Value, bool]] = [(t, False)]
     while stack:
         t, leaving = stack.pop()
         if leaving:
@@ -173,7 +173,7 @@ def undo(trail: list[Var], mark: int) -> None:
         trail.pop().ref = None
 
 
-def copy_resolved(term: Any, mapping: dict[Var, Var] | None = None) -> Any:
+def copy_resolved(term: Value, mapping: dict[Var, Var] | None = None) -> Value:
     """Copy a term with bindings applied and fresh variables for unbound ones.
 
     Terms nested deeper than Python's stack allows are copied by `_copy_deep` instead.
@@ -186,7 +186,7 @@ def copy_resolved(term: Any, mapping: dict[Var, Var] | None = None) -> Any:
         return _copy_deep(term, mapping)
 
 
-def _copy(term: Any, mapping: dict[Var, Var]) -> Any:
+def _copy(term: Value, mapping: dict[Var, Var]) -> Value:
     while type(term) is Var:
         if term.ref is None:
             fresh = mapping.get(term)
@@ -210,10 +210,10 @@ def _copy(term: Any, mapping: dict[Var, Var]) -> Any:
     return new_term(Term, (term[0], tuple([_copy(a, mapping) for a in term[1]])))
 
 
-def _copy_deep(term: Any, mapping: dict[Var, Var]) -> Any:
+def _copy_deep(term: Value, mapping: dict[Var, Var]) -> Value:
     """`copy_resolved` with an explicit stack: any depth (a cyclic term never ends)."""
-    out: list[Any] = []
-    stack: list[tuple[bool, Any]] = [(False, term)]
+    out: list[Value] = []
+    stack: list[tuple[bool, Value]] = [(False, term)]
     while stack:
         built, t = stack.pop()
         if built:  # all arguments of compound t are on `out`: assemble it
@@ -237,7 +237,7 @@ def _copy_deep(term: Any, mapping: dict[Var, Var]) -> Any:
     return out[0]
 
 
-def identical(a: Any, b: Any) -> bool:
+def identical(a: Value, b: Value) -> bool:
     """`a == b` in Prolog: the same term, variables included, without building order keys.
 
     >>> x = Var(); identical(Term("f", (x, 1)), Term("f", (x, 1))), identical(1, 1.0)
@@ -275,7 +275,7 @@ def identical(a: Any, b: Any) -> bool:
     return True
 
 
-def order_key(term: Any) -> tuple[Any, ...]:
+def order_key(term: Value) -> tuple[Value, ...]:
     """Key giving the standard order: Var < Number < Atom < String < Compound < other.
 
     >>> sorted([Term("f", (1,)), "b", 2, 1.0, "a"], key=order_key)
@@ -297,11 +297,11 @@ def order_key(term: Any) -> tuple[Any, ...]:
     return (6, type(term).__name__, id(term))
 
 
-def variant_key(term: Any) -> tuple[Any, ...]:
+def variant_key(term: Value) -> tuple[Value, ...]:
     """Key equal for terms that are variants (equal up to renaming variables)."""
     names: dict[int, int] = {}
 
-    def walk(t: Any) -> Any:
+    def walk(t: Value) -> Value:
         while type(t) is Var:
             if t.ref is None:
                 return ("$VAR", names.setdefault(id(t), len(names)))

@@ -8,15 +8,14 @@ f(a,1)
 
 from __future__ import annotations
 
-from typing import Any
-
 from robocram.logic.errors import PrologDomainError, PrologInstantiationError, PrologTypeError
 from robocram.logic.terms import NIL, Term, Var, new_term
+from robocram.logic.value import Value
 
 __all__ = ["univ_compose", "univ_list"]
 
 
-def univ_list(t: Any) -> Any:
+def univ_list(t: Value) -> Value:
     """The list `[Name|Args]` of term `t` (`[t]` for an atomic one); None when unbound."""
     while type(t) is Var:
         r = t.ref
@@ -25,16 +24,16 @@ def univ_list(t: Any) -> Any:
         t = r
     if type(t) is not Term:
         return new_term(Term, (".", (t, NIL)))
-    items: Any = NIL
+    items: Value = NIL
     args = t[1]
     for i in range(len(args) - 1, -1, -1):
         items = new_term(Term, (".", (args[i], items)))
     return new_term(Term, (".", (t[0], items)))
 
 
-def univ_compose(items: Any) -> Any:
+def univ_compose(items: Value) -> Value:
     """The term that list `items` describes (`[Name|Args]`), with ISO's errors."""
-    parts: list[Any] = []
+    parts: list[Value] = []
     t = items
     while True:
         while type(t) is Var and t.ref is not None:
