@@ -6,7 +6,8 @@ stored clause is never mutated and can be shared by concurrent queries.
 
 from __future__ import annotations
 
-from robocram.logic.codegen import compile_clause_fn
+from robocram.logic.choicepoints import ChoicePoint, Cont
+from robocram.logic.codegen import ClauseFn, compile_clause_fn
 from robocram.logic.occurs import unify_checked
 from robocram.logic.template import build, index_key_of_template, unify_head
 from robocram.logic.terms import Var
@@ -53,11 +54,11 @@ class Clause:
         self.source = source
         self.name = name
         self.key = index_key_of_template(head[0]) if head else None
-        self.run: Value = None
+        self.run: ClauseFn | None = None
         self.calls = 0
         self.erased = False  # retracted; calls that started before still see it
 
-    def prepare(self) -> Value:
+    def prepare(self) -> ClauseFn:
         """Return the function to run this clause with: interpreted first, then compiled."""
         self.calls += 1
         if self.calls < _COMPILE_AFTER:
@@ -71,8 +72,8 @@ class Clause:
         return self.run
 
     def interpret(
-        self, args: tuple[Value, ...], trail: list[Var], cb: int, nxt: Value, cps: list[list[Value]]
-    ) -> Value:
+        self, args: tuple[Value, ...], trail: list[Var], cb: int, nxt: Cont, cps: list[ChoicePoint]
+    ) -> Cont:
         """Unify the head with `args` and return the body's continuation (False on failure)."""
         regs: list[Value] = [None] * self.nvars
         head = self.head
@@ -81,7 +82,7 @@ class Clause:
                 return False
         return self.body(regs, cb, nxt)
 
-    def body(self, regs: list[Value], cb: int, nxt: Value) -> Value:
+    def body(self, regs: list[Value], cb: int, nxt: Cont) -> Cont:
         """The continuation running the body goals built against `regs`, then `nxt`."""
         cont = nxt
         for g in self.body_rev:
@@ -93,10 +94,10 @@ class Clause:
         args: tuple[Value, ...],
         trail: list[Var],
         cb: int,
-        nxt: Value,
-        cps: list[list[Value]],
+        nxt: Cont,
+        cps: list[ChoicePoint],
         error: bool = False,
-    ) -> Value:
+    ) -> Cont:
         """`interpret` with the occurs check in head unification (flag true or error)."""
         regs: list[Value] = [None] * self.nvars
         head = self.head
@@ -106,7 +107,7 @@ class Clause:
         return self.body(regs, cb, nxt)
 
     def interpret_error(
-        self, args: tuple[Value, ...], trail: list[Var], cb: int, nxt: Value, cps: list[list[Value]]
-    ) -> Value:
+        self, args: tuple[Value, ...], trail: list[Var], cb: int, nxt: Cont, cps: list[ChoicePoint]
+    ) -> Cont:
         """`interpret_checked` raising on a cyclic binding (flag error)."""
         return self.interpret_checked(args, trail, cb, nxt, cps, error=True)

@@ -22,6 +22,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Protocol
 
+from robocram.logic.choicepoints import ChoicePoint, Cont
 from robocram.logic.early_guards import guard_goals, rejection
 from robocram.logic.goal_writer import (
     FACTORY_CACHE_SIZE,
@@ -55,7 +56,7 @@ class ClauseCode(Protocol):
     name: str
 
 
-ClauseFn = Callable[[tuple[Value, ...], list[Var], int, Value, list[list[Value]]], Value]
+ClauseFn = Callable[[tuple[Value, ...], list[Var], int, Cont, list[ChoicePoint]], Cont]
 
 _CONTROL = {(",", 2), (";", 2), ("->", 2), ("*->", 2), ("\\+", 1)}
 
@@ -244,9 +245,9 @@ class ClauseWriter(GoalWriter):
             self.restore(saved[4])
         return True
 
-    def state(self) -> Value:
+    def state(self) -> bool | None:
         """What a branch of an inline if-then-else may change besides the slots."""
         return None
 
-    def restore(self, state: Value) -> None:
+    def restore(self, state: bool | None) -> None:
         """Undo a branch's changes to `state()`."""

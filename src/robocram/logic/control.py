@@ -9,7 +9,18 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from robocram.logic.choicepoints import ALT, BARRIER, CATCH, CLAUSES, DEAD, GEN, PROC, REACT
+from robocram.logic.choicepoints import (
+    ALT,
+    BARRIER,
+    CATCH,
+    CLAUSES,
+    DEAD,
+    GEN,
+    PROC,
+    REACT,
+    ChoicePoint,
+    Cont,
+)
 from robocram.logic.errors import PrologInstantiationError, PrologTypeError
 from robocram.logic.terms import Term, Var, new_term
 from robocram.logic.value import Value
@@ -87,8 +98,8 @@ def _cut(b: int) -> Term:
 
 
 def run_control(
-    m: Engine, name: str, args: tuple[Value, ...], cutb: int, nxt: Value, cps: list[list[Value]]
-) -> Value:
+    m: Engine, name: str, args: tuple[Value, ...], cutb: int, nxt: Cont, cps: list[ChoicePoint]
+) -> Cont:
     """Execute one control construct; return the next continuation or FAIL."""
     trail = m.trail
     if name == ";":
@@ -142,7 +153,7 @@ def run_control(
     return _atom_control(name, cutb, nxt, cps)
 
 
-def _atom_control(name: str, cutb: int, nxt: Value, cps: list[list[Value]]) -> Value:
+def _atom_control(name: str, cutb: int, nxt: Cont, cps: list[ChoicePoint]) -> Cont:
     if name == "!":
         del cps[cutb:]
         return nxt

@@ -12,8 +12,19 @@ from collections.abc import Iterator
 
 from robocram.logic import gc_pacing
 from robocram.logic.builtin_flags import warn_unknown
-from robocram.logic.choicepoints import ALT, BARRIER, CATCH, CLAUSES, GEN, PROC, REACT
+from robocram.logic.choicepoints import (
+    ALT,
+    BARRIER,
+    CATCH,
+    CLAUSES,
+    GEN,
+    PROC,
+    REACT,
+    ChoicePoint,
+    Cont,
+)
 from robocram.logic.clause import Clause
+from robocram.logic.codegen import ClauseFn
 from robocram.logic.control import FAIL, run_control
 from robocram.logic.engine import Database
 from robocram.logic.errors import (
@@ -52,7 +63,7 @@ class Machine:
             return unify_checked(a, b, self.trail, self.occurs_check == "error")
         return unify(a, b, self.trail)
 
-    def clause_runner(self, cl: Clause) -> Value:
+    def clause_runner(self, cl: Clause) -> ClauseFn:
         """The function to run clause `cl` with: compiled, or checked for the occurs check."""
         if self.occurs_check == "false":
             return cl.run if cl.run is not None else cl.prepare()
@@ -77,8 +88,8 @@ class Machine:
     def solve(self, goal: Value, sub: bool = False) -> Iterator[None]:
         """Yield once per solution of `goal`, with its bindings in place while suspended."""
         trail = self.trail
-        cps: list[list[Value]] = [[BARRIER, len(trail)]] if sub else []
-        cont: Value = (goal, len(cps), None)
+        cps: list[ChoicePoint] = [[BARRIER, len(trail)]] if sub else []
+        cont: Cont = (goal, len(cps), None)
         fail = False
         while True:
             try:
@@ -88,7 +99,7 @@ class Machine:
                 cont = self._handle(err, cps, sub)
                 fail = False
 
-    def _handle(self, err: PrologError, cps: list[list[Value]], sub: bool) -> Value:
+    def _handle(self, err: PrologError, cps: list[ChoicePoint], sub: bool) -> Cont:
         """Find the innermost active catch/3 whose catcher unifies with the ball."""
         ball = copy_resolved(err.ball)
         err.ball = ball
@@ -106,7 +117,7 @@ class Machine:
             raise err.original  # nothing caught it: the caller sees its own exception
         raise err
 
-    def _run(self, cps: list[list[Value]], cont: Value, fail: bool) -> Iterator[None]:
+    def _run(self, cps: list[ChoicePoint], cont: Cont, fail: bool) -> Iterator[None]:
         # The hot loop: one iteration per goal. It is written flat on purpose (locals cached,
         # `type(x) is` tests, first-argument indexing inlined) because every helper call
         # here costs a measurable share of an inference; the cold paths are methods.
@@ -212,7 +223,7 @@ class Machine:
             if running:
                 pacer.leave()
 
-    def _call_clauses(self, p: Pred, args: Value, nxt: Value, cps: list[list[Value]]) -> Value:
+    def _call_clauses(self, p: Pred, args: Value, nxt: Cont, cps: list[ChoicePoint]) -> Cont:
         """Try the clauses of `p` that the first argument selects; False when none runs.
 
         A clause ending in a call to its own predicate returns that call's arguments as a
@@ -268,7 +279,7 @@ class Machine:
                 return cont
             args = cont
 
-    def _backtrack(self, cps: list[list[Value]]) -> Value:
+    def _backtrack(self, cps: list[ChoicePoint]) -> Cont:
         """Resume the newest choicepoint; return its continuation, or False when none is left."""
         trail = self.trail
         while cps:
@@ -303,7 +314,7 @@ class Machine:
                 cps.pop()
         return False
 
-    def _again(self, proc: Value, args: list[Value], nxt: Value, cps: list[list[Value]]) -> Value:
+    def _again(self, proc: Value, args: list[Value], nxt: Cont, cps: list[ChoicePoint]) -> Cont:
         """Finish a call that a procedure handed back (see procedure.py).
 
         After CHECK_EVERY loops: count them and call the procedure again. With a Scan:
@@ -317,7 +328,7 @@ class Machine:
             args = proc(args, self.trail, nxt, cps, 0)
         return args
 
-    def _next_clause(self, cp: list[Value], cps: list[list[Value]]) -> Value:
+    def _next_clause(self, cp: ChoicePoint, cps: list[ChoicePoint]) -> Cont:
         """Try the next candidate clause of a CLAUSES choicepoint (popping it at the last)."""
         i = cp[5]
         cl = cp[4][i]
@@ -335,7 +346,7 @@ class Machine:
             return (new_term(Term, (cp[7].name, tuple(cont))), 0, cp[3])
         return cont
 
-    def _call_other(self, goal: Value, cutb: int, nxt: Value) -> Value:
+    def _call_other(self, goal: Value, cutb: int, nxt: Cont) -> Cont:
         """Dispatch a goal that is a bound variable; raise for unbound or non-callable."""
         while type(goal) is Var:
             if goal.ref is None:
@@ -348,7 +359,7 @@ class Machine:
         raise PrologTypeError("callable", goal, f"{goal!r} is not a callable goal")
 
     def _push_python(
-        self, p: Pred, args: tuple[Value, ...], nxt: Value, cps: list[list[Value]]
+        self, p: Pred, args: tuple[Value, ...], nxt: Cont, cps: list[ChoicePoint]
     ) -> None:
         """Try the Python predicate's solutions first, then the ordinary clauses."""
         trail = self.trail

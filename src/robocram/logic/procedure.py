@@ -27,16 +27,16 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Sequence
 
-from robocram.logic.choicepoints import PROC
+from robocram.logic.choicepoints import PROC, ChoicePoint, Cont
 from robocram.logic.codegen import ClauseCode, ClauseWriter, make_factory
 from robocram.logic.limits import CHECK_EVERY
 from robocram.logic.template import Slot, Tmpl
-from robocram.logic.terms import Term
+from robocram.logic.terms import Term, Var
 from robocram.logic.value import Value
 
 __all__ = ["MAX_CLAUSES", "SCAN_AFTER", "Procedure", "Scan", "compile_procedure"]
 
-Procedure = Callable[[Value, list[Value], Value, list[list[Value]], int], Value]
+Procedure = Callable[[Sequence[Value], list[Var], Cont, list[ChoicePoint], int], Cont]
 MAX_CLAUSES = 64
 MAX_KEYS = MAX_CLAUSES  # distinct first-argument keys in one procedure
 SCAN_AFTER = 8  # clauses a call with an unbound first argument tries in the procedure
@@ -194,7 +194,7 @@ class _ProcWriter(ClauseWriter):
         self.owner = owner
         self.arity = len(clauses[0].head)
         self.names = "".join(f"a{i}, " for i in range(self.arity))
-        self.committed = False
+        self.committed: bool | None = False
         self.next_start: int | None = None
 
     def procedure(self, b: _Branches) -> None:
@@ -321,10 +321,10 @@ class _ProcWriter(ClauseWriter):
         self.emit(f"{local} = a{i}", 1)
         return local
 
-    def state(self) -> Value:
+    def state(self) -> bool | None:
         return self.committed
 
-    def restore(self, state: Value) -> None:
+    def restore(self, state: bool | None) -> None:
         self.committed = state
 
     def cut(self) -> None:
