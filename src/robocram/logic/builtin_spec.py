@@ -11,7 +11,6 @@ from dataclasses import dataclass
 
 from robocram.logic.engine import DetFn, NondetFn
 from robocram.logic.predicate import DET, NONDET
-from robocram.logic.value import Value
 
 __all__ = ["Builtin", "det", "nondet"]
 
@@ -23,7 +22,7 @@ class Builtin:
     name: str
     arities: tuple[int, ...]
     kind: int
-    fn: Value
+    fn: DetFn | NondetFn
 
 
 def det(name: str, fn: DetFn, *arities: int) -> Builtin:

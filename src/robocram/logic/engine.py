@@ -24,7 +24,7 @@ class Database(Protocol):
 
     _preds: dict[Key, Pred]
     _ops: OperatorTable
-    _functions: dict[str, Callable[..., Value]]
+    _functions: dict[str, Callable[..., object]]
     _lock: threading.RLock
     _flags: dict[str, Value]
 
@@ -50,4 +50,4 @@ class Engine(Protocol):
 
 
 DetFn = Callable[[Engine, tuple[Value, ...]], bool]
-NondetFn = Callable[[Engine, tuple[Value, ...]], Iterator[Value]]
+NondetFn = Callable[[Engine, tuple[Value, ...]], Iterator[bool]]

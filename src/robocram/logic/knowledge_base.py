@@ -31,7 +31,7 @@ from robocram.logic.value import Value
 
 __all__ = ["KnowledgeBase"]
 
-PyPredicate = Callable[..., Iterator[Value]]
+PyPredicate = Callable[..., Iterator[object]]
 QUERY_CACHE_SIZE = 1024
 
 
@@ -50,7 +50,7 @@ class KnowledgeBase:
         self._preds: dict[Key, Pred] = dict(system_predicates())
         self._preds.update(library_predicates())
         self._ops = OperatorTable()
-        self._functions: dict[str, Callable[..., Value]] = {}
+        self._functions: dict[str, Callable[..., object]] = {}
         self._flags: dict[str, Value] = default_flags(MAX_INTEGER_BITS)
         self._groups: Groups = {}
         self._lock = threading.RLock()
@@ -220,7 +220,7 @@ class KnowledgeBase:
         with self._lock:
             self._user_pred((name, arity)).pyfn = fn
 
-    def register_function(self, name: str, fn: Callable[..., Value]) -> None:
+    def register_function(self, name: str, fn: Callable[..., object]) -> None:
         """Make `fn` callable by name from py_fun/N and py_pred/N."""
         if not callable(fn):
             raise TypeError(f"register_function({name!r}): {fn!r} is not callable")

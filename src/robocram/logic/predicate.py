@@ -3,10 +3,11 @@
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
+from typing import Any
 
 from robocram.logic.bulk import paused_gc
 from robocram.logic.clause import Clause
-from robocram.logic.procedure import compile_procedure
+from robocram.logic.procedure import Procedure, compile_procedure
 from robocram.logic.terms import Term, Var
 from robocram.logic.value import Value
 
@@ -15,6 +16,11 @@ __all__ = ["CONTROL", "DET", "NONDET", "USER", "WARM_CALLS", "FrozenPred", "Key"
 USER, DET, NONDET, CONTROL = 0, 1, 2, 3
 WARM_CALLS = 3
 Key = tuple[str, int]
+
+# A predicate's built-in: a DetFn or a NondetFn (see engine.py) by its kind, None for user
+# predicates. The machine calls it after testing the kind, which mypy cannot tie to the None
+# case, so it is Any.
+PredFn = Any
 
 
 class Pred:
@@ -39,21 +45,23 @@ class Pred:
         "warm",
     )
 
-    def __init__(self, name: str, arity: int, kind: int = USER, fn: Value = None) -> None:
+    def __init__(self, name: str, arity: int, kind: int = USER, fn: PredFn = None) -> None:
         self.name = name
         self.arity = arity
         self.kind = kind
         self.fn = fn
-        self.store: list[Value] = []  # the clauses are store[head:]; before head: room
+        # The clauses are store[head:]; before head: room (None). Readers slice past `head`,
+        # which mypy cannot follow from an element type, so the items are Any.
+        self.store: list[Any] = []
         self.head = 0
-        self.index: dict[Value, list[Clause]] | None = None
+        self.index: dict[object, list[Clause]] | None = None
         self.varclauses: list[Clause] = []
-        self.pyfn: Callable[..., Iterator[Value]] | None = None
+        self.pyfn: Callable[..., Iterator[object]] | None = None
         self.dynamic = False
         self.system = False
         self.owner: str | None = None
         self.extendable: set[str] = set()
-        self.proc: Value = None
+        self.proc: Procedure | None = None
         self.warm = 0
         self.erased = 0  # retracted clauses still in `clauses` (dropped in batches)
 
@@ -154,9 +162,9 @@ class Pred:
             bucket = index.get(clause.key)
             index[clause.key] = [clause, *(self.varclauses if bucket is None else bucket)]
 
-    def build_index(self) -> dict[Value, list[Clause]]:
+    def build_index(self) -> dict[object, list[Clause]]:
         """Group clauses by first-argument key; variable-first clauses join every bucket."""
-        index: dict[Value, list[Clause]] = {}
+        index: dict[object, list[Clause]] = {}
         varclauses: list[Clause] = []
         with paused_gc():
             for clause in self.clauses:
@@ -196,12 +204,12 @@ class FrozenPred(Pred):
 
     __slots__ = ()
 
-    def __init__(self, name: str, arity: int, kind: int, fn: Value = None) -> None:
+    def __init__(self, name: str, arity: int, kind: int, fn: PredFn = None) -> None:
         super().__init__(name, arity, kind, fn)
         self.owner = "system"
         self.system = True  # from here on, every attribute is read-only
 
-    def __setattr__(self, attr: str, value: Value) -> None:
+    def __setattr__(self, attr: str, value: object) -> None:
         if getattr(self, "system", False):
             raise AttributeError(
                 f"{self.name}/{self.arity} is a system predicate shared by every knowledge"

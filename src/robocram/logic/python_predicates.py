@@ -44,7 +44,7 @@ def python_solutions(m: Engine, p: Pred, args: tuple[Value, ...]) -> Iterator[bo
             m.undo_to(mark)
 
 
-def _guarded(fn: Callable[..., Value], args: list[Value], where: str) -> Iterator[Value]:
+def _guarded(fn: Callable[..., object], args: list[Value], where: str) -> Iterator[object]:
     """Yield `fn(*args)`'s solutions; a Python exception becomes a `PrologHostError`."""
     solutions = iter(_host_call(fn, args, where))
     while True:
@@ -59,7 +59,7 @@ def _guarded(fn: Callable[..., Value], args: list[Value], where: str) -> Iterato
         yield solution
 
 
-def _host_call(fn: Callable[..., Value], args: list[Value], where: str) -> Value:
+def _host_call(fn: Callable[..., object], args: list[Value], where: str) -> Value:
     try:
         return fn(*args)
     except PrologError:
@@ -68,7 +68,7 @@ def _host_call(fn: Callable[..., Value], args: list[Value], where: str) -> Value
         raise PrologHostError(err, where) from err
 
 
-def _resolve_callable(m: Engine, f: Value, what: str) -> Callable[..., Value]:
+def _resolve_callable(m: Engine, f: Value, what: str) -> Callable[..., object]:
     f = deref(f)
     if type(f) is Var:
         raise PrologInstantiationError(
