@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import sys
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING
 
 from robocram.logic.bigint import int_text
@@ -178,7 +178,7 @@ def format_text(fmt: str, args: list[Value]) -> str:
     return "".join(out)
 
 
-def _expand(d: str, num: str | None, take: Value, fmt: str) -> str:
+def _expand(d: str, num: str | None, take: Callable[[str], Value], fmt: str) -> str:
     if d in "wpa":
         return format_term(take(d))
     if d == "q":

@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING
 
-from robocram.logic.arith import evaluate
+from robocram.logic.arith import Number, evaluate
 from robocram.logic.builtin_spec import Builtin, det, nondet
 from robocram.logic.builtin_terms import list_items, need_int
 from robocram.logic.errors import PrologDomainError, PrologInstantiationError, PrologTypeError
@@ -78,7 +78,7 @@ def _sort4(m: Engine, a: Args) -> bool:
         )
     items = list_items(a[2], "sort/4")
 
-    def key(item: Value) -> Value:
+    def key(item: Value) -> tuple[object, ...]:
         if key_index == 0:
             return order_key(item)
         t = deref(item)
@@ -111,7 +111,7 @@ def _sum_list(m: Engine, a: Args) -> bool:
     return m.unify(a[1], sum((evaluate(x) for x in list_items(a[0], "sum_list/2")), 0))
 
 
-def _extreme(name: str, pick: Value) -> Builtin:
+def _extreme(name: str, pick: Callable[[list[Number]], Number]) -> Builtin:
     def run(m: Engine, a: Args) -> bool:
         values = [evaluate(x) for x in list_items(a[0], f"{name}/2")]
         return bool(values) and m.unify(a[1], pick(values))

@@ -8,7 +8,7 @@ Unicode is `representation_error(character_code)`, and text that is not a number
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 
 from robocram.logic.bigint import int_text
 from robocram.logic.builtin_spec import Builtin, det, nondet
@@ -179,7 +179,7 @@ def _spans(atom: str, n: int, fixed: list[int | None], sub: Value) -> Iterator[t
             start = found + 1
         return
     if before is not None and length is not None:
-        spans: Value = [(before, length)]
+        spans: Iterable[tuple[int, int]] = [(before, length)]
     elif before is not None and after is not None:
         spans = [(before, n - before - after)]
     elif length is not None and after is not None:

@@ -12,7 +12,7 @@ from typing import TextIO
 
 from robocram.logic.builtin_spec import Builtin, det
 from robocram.logic.builtin_terms import list_items
-from robocram.logic.engine import Engine
+from robocram.logic.engine import DetFn, Engine
 from robocram.logic.errors import (
     PrologDomainError,
     PrologExistenceError,
@@ -67,7 +67,7 @@ def _text(t: Value, flags: dict[str, bool]) -> str:
     )
 
 
-def _writer(quoted: bool, ignore_ops: bool, numbervars: bool, newline: str = "") -> Value:
+def _writer(quoted: bool, ignore_ops: bool, numbervars: bool, newline: str = "") -> DetFn:
     flags = {"quoted": quoted, "ignore_ops": ignore_ops, "numbervars": numbervars}
 
     def run(m: Engine, a: Args) -> bool:

@@ -12,6 +12,7 @@ through `make_factory`, memoised by source text.
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import Any
 
 from robocram.logic.arith import BINARY_FUNCTIONS, apply_binary, evaluate
 from robocram.logic.inline_goal import CALL, INLINE
@@ -33,7 +34,11 @@ __all__ = [
     "slots_in",
 ]
 
-_NAMESPACE: dict[str, Value] = {
+# A generated `make(constants...)`: it returns a ClauseFn, a Procedure or an inline goal
+# function, as its source says. mypy cannot read generated source, so the result is Any.
+Factory = Callable[..., Any]
+
+_NAMESPACE: dict[str, object] = {
     "Var": Var,
     "Term": Term,
     "INLINE": INLINE,
@@ -49,7 +54,7 @@ _NAMESPACE: dict[str, Value] = {
 # Generated factories are pure functions of their source text (constants are parameters),
 # so one bounded memo serves every knowledge base without sharing any resolved state.
 FACTORY_CACHE_SIZE = 4096
-_FACTORIES: LRUCache[str, Callable[..., Value]] = LRUCache(FACTORY_CACHE_SIZE)
+_FACTORIES: LRUCache[str, Factory] = LRUCache(FACTORY_CACHE_SIZE)
 _ARITH_OPS = {"+": "+", "-": "-", "*": "*"}
 _COMPARE_OPS = {"<": "<", ">": ">", "=<": "<=", ">=": ">=", "=:=": "==", "=\\=": "!="}
 _EXACT_TYPES = (str, int, float)
@@ -67,11 +72,12 @@ _TYPE_TESTS = {
 }
 
 
-def make_factory(source: str) -> Callable[..., Value]:
+def make_factory(source: str) -> Factory:
     """Execute generated source defining `make(...)`, once per distinct source text."""
     factory = _FACTORIES.get(source)
     if factory is None:
-        namespace = dict(_NAMESPACE)
+        # exec binds `make` here; what it is shows only in the source, so the values are Any.
+        namespace: dict[str, Any] = dict(_NAMESPACE)
         exec(compile(source, "<robocram clause>", "exec"), namespace)  # noqa: S102
         factory = namespace["make"]
         _FACTORIES.put(source, factory)
@@ -119,7 +125,7 @@ def inlinable(g: Value) -> bool:
 _INLINE_BINARY = frozenset(["is", "=", "==", "\\=="])
 
 
-def inline_function(goals: list[Value], slots: list[int]) -> Value:
+def inline_function(goals: list[Value], slots: list[int]) -> Callable[..., bool] | None:
     """Compile inline goals to `fn(trail, *values of slots)`: true when all succeed.
 
     None when one of them cannot run inline after all.

@@ -14,6 +14,7 @@ from collections.abc import Callable, Iterable, Iterator
 from robocram.logic.arith import MAX_INTEGER_BITS
 from robocram.logic.builtin_flags import default_flags
 from robocram.logic.bulk import paused_gc
+from robocram.logic.clause import Clause
 from robocram.logic.convert import SelfContainingValue, to_prolog, to_python
 from robocram.logic.errors import PrologError, PrologPermissionError, PrologResourceError
 from robocram.logic.fact_groups import LIBRARY_OWNER, GroupEdit, Groups, refuse_system
@@ -95,7 +96,7 @@ class KnowledgeBase:
     ) -> None:
         """Define fact group `group` from clause texts or terms (see `consult`)."""
         name = group or "user"
-        compiled: list[tuple[Key, Value]] = []
+        compiled: list[tuple[Key, Clause]] = []
         for clause in clauses:
             if isinstance(clause, str):
                 compiled.extend(
@@ -110,7 +111,7 @@ class KnowledgeBase:
         self,
         name: str,
         replace: bool,
-        compiled: list[tuple[Key, Value]],
+        compiled: list[tuple[Key, Clause]],
         extendable: Iterable[Value],
         dynamic: Iterable[Key],
     ) -> None:

@@ -275,7 +275,7 @@ def identical(a: Value, b: Value) -> bool:
     return True
 
 
-def order_key(term: Value) -> tuple[Value, ...]:
+def order_key(term: Value) -> tuple[object, ...]:
     """Key giving the standard order: Var < Number < Atom < String < Compound < other.
 
     >>> sorted([Term("f", (1,)), "b", 2, 1.0, "a"], key=order_key)
@@ -297,11 +297,11 @@ def order_key(term: Value) -> tuple[Value, ...]:
     return (6, type(term).__name__, id(term))
 
 
-def variant_key(term: Value) -> tuple[Value, ...]:
+def variant_key(term: Value) -> tuple[object, ...]:
     """Key equal for terms that are variants (equal up to renaming variables)."""
     names: dict[int, int] = {}
 
-    def walk(t: Value) -> Value:
+    def walk(t: Value) -> object:
         while type(t) is Var:
             if t.ref is None:
                 return ("$VAR", names.setdefault(id(t), len(names)))
