@@ -39,6 +39,7 @@ from robocram.logic.inline_goal import CALL, INLINE
 from robocram.logic.limits import CHECK_EVERY, Budget
 from robocram.logic.occurs import unify_checked
 from robocram.logic.predicate import DET, NONDET, USER, WARM_CALLS, Pred
+from robocram.logic.procedure import Procedure
 from robocram.logic.python_predicates import python_solutions
 from robocram.logic.terms import Term, Var, new_term
 from robocram.logic.unify import copy_resolved, undo, unify
@@ -314,7 +315,7 @@ class Machine:
                 cps.pop()
         return False
 
-    def _again(self, proc: Value, args: list[Value], nxt: Cont, cps: list[ChoicePoint]) -> Cont:
+    def _again(self, proc: Procedure, args: list[Value], nxt: Cont, cps: list[ChoicePoint]) -> Cont:
         """Finish a call that a procedure handed back (see procedure.py).
 
         After CHECK_EVERY loops: count them and call the procedure again. With a Scan:
