@@ -26,7 +26,6 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable, Sequence
-from typing import TYPE_CHECKING
 
 from robocram.logic.choicepoints import PROC, ChoicePoint, Cont
 from robocram.logic.codegen import ClauseCode, ClauseWriter, make_factory
@@ -34,9 +33,6 @@ from robocram.logic.limits import CHECK_EVERY
 from robocram.logic.template import Slot, Tmpl
 from robocram.logic.terms import Term, Var
 from robocram.logic.value import Value
-
-if TYPE_CHECKING:
-    from robocram.logic.predicate import Pred
 
 __all__ = ["MAX_CLAUSES", "SCAN_AFTER", "Procedure", "Scan", "compile_procedure"]
 
@@ -62,11 +58,11 @@ class Scan:
 
     __slots__ = ("pred",)
 
-    def __init__(self, pred: Pred) -> None:
+    def __init__(self, pred: object) -> None:
         self.pred = pred
 
 
-def compile_procedure(stored: Sequence[ClauseCode], owner: Pred | None = None) -> Procedure | None:
+def compile_procedure(stored: Sequence[ClauseCode], owner: object = None) -> Procedure | None:
     """Return the procedure of a static predicate's clauses, or None when not worth it.
 
     With `owner` (the predicate), a call with the first argument unbound that would try
@@ -192,7 +188,7 @@ def _key(t: Value) -> Key | None:
 class _ProcWriter(ClauseWriter):
     """Writes the switch and, per branch, each clause; a failing clause falls through."""
 
-    def __init__(self, clauses: list[ClauseCode], owner: Pred | None = None) -> None:
+    def __init__(self, clauses: list[ClauseCode], owner: object = None) -> None:
         super().__init__()
         self.clauses = clauses
         self.owner = owner
