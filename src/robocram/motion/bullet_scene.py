@@ -17,7 +17,7 @@ from collections.abc import Collection, Iterator, Mapping, Sequence
 from robocram.motion.allowed_contacts import AllowedContacts, Other
 from robocram.motion.configuration_checker import Configuration, LinkPair
 from robocram.motion.errors import MotionError
-from robocram.world import World, WorldObject
+from robocram.world import ObstacleBoxes, World, WorldObject
 
 CLEARANCE_REACH = 0.1  # [m] distances asked for: a free configuration clears this much
 
@@ -53,6 +53,7 @@ class BulletScene:
             else tuple(world.link_names(robot))
         )
         self._posed = False
+        self._obstacles: ObstacleBoxes | None = None  # read once per posed block
 
     @property
     def reach(self) -> float:
@@ -82,7 +83,15 @@ class BulletScene:
             yield
         finally:
             self._posed = False
+            self._obstacles = None
             self.world.set_joint_states(self.robot, before)
+
+    def _obstacles_now(self, held: list[WorldObject], anywhere: list[WorldObject]) -> ObstacleBoxes:
+        """The others' bounds: inside a posed block only this robot's joints move, so they
+        are read once per block."""
+        if self._obstacles is None:
+            self._obstacles = self.world.obstacle_boxes([self.robot, *held, *anywhere])
+        return self._obstacles
 
     def _current(self) -> dict[str, float]:
         world = self.world
@@ -127,14 +136,15 @@ class BulletScene:
         anywhere = self._anywhere()
         gaps: dict[str, float] = {}
         links = [link for link in self.moving_links if link not in self.allowed_links]
+        boxes = self._obstacles_now(held, anywhere)
         for link, obj, other_link, gap in world.link_distances(
-            self.robot, [*held, *anywhere], reach, links=links
+            self.robot, [*held, *anywhere], reach, links=links, obstacles=boxes
         ):
             if self._counts(link, obj, other_link):
                 gaps[link] = min(gaps.get(link, reach), gap - self.distance)
         for item in held:
             skip = [world.robot(self.robot), *(h for h in held if h is not item), *anywhere]
-            for _, obj, other_link, gap in world.link_distances(item, skip, reach):
+            for _, obj, other_link, gap in world.link_distances(item, skip, reach, obstacles=boxes):
                 if (item.name, _named(world, obj, other_link)) not in self.allowed_pairs:
                     gaps[item.name] = min(gaps.get(item.name, reach), gap - self.distance)
         return gaps
@@ -158,16 +168,20 @@ class BulletScene:
         held = [world.object(name) for name in world.attachments(self.robot)]
         anywhere = self._anywhere()
         hits: dict[LinkPair, None] = {}
+        boxes = self._obstacles_now(held, anywhere) if self._posed else None
         for link, obj, other_link in world.link_pairs_in_contact(
-            self.robot, [*held, *anywhere], self.distance, links=self.moving_links
-        ):
+            self.robot, [*held, *anywhere], self.distance, links=self.moving_links,
+            obstacles=boxes,
+        ):  # fmt: skip
             if self._counts(link, obj, other_link):
                 hits[(link, _named(world, obj, other_link))] = None
                 if first_only:
                     return list(hits)
         for item in held:
             skip = [world.robot(self.robot), *(h for h in held if h is not item), *anywhere]
-            for _, obj, other_link in world.link_pairs_in_contact(item, skip, self.distance):
+            for _, obj, other_link in world.link_pairs_in_contact(
+                item, skip, self.distance, obstacles=boxes
+            ):
                 pair = (item.name, _named(world, obj, other_link))
                 if pair not in self.allowed_pairs:
                     hits[pair] = None

@@ -22,6 +22,7 @@ from robocram.world.errors import (
     WorldValueError,
 )
 from robocram.world.joint_state import ClampedJoint, JointLimits
+from robocram.world.obstacle_boxes import ObstacleBoxes
 from robocram.world.ray_hit import RayHit
 from robocram.world.visibility import Visibility
 from robocram.world.world import World
@@ -41,6 +42,7 @@ __all__ = [
     "MeshSpec",
     "NoCameraError",
     "NotARobotError",
+    "ObstacleBoxes",
     "RayHit",
     "RobotObject",
     "ShapeSpec",

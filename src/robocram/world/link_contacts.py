@@ -12,9 +12,11 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
 
+import numpy as np
 import pybullet
 
 from robocram.world.contacts import CONTACT_DISTANCE, _carried_with, _link_names
+from robocram.world.obstacle_boxes import ObstacleBoxes
 from robocram.world.world_core import WorldCore
 from robocram.world.world_object import WorldObject
 
@@ -25,13 +27,20 @@ def _overlaps(
     links: Iterable[str] | None,
     skip: set[str],
     distance: float,
-) -> Iterator[tuple[str, WorldObject, int, int]]:
-    """``(link of obj, other object, other's link index, obj's link index)`` per pair of
-    links whose bounds, grown by ``distance``, overlap; objects named in ``skip`` left out."""
+    obstacles: ObstacleBoxes | None = None,
+) -> Iterator[tuple[str, WorldObject, int, int, str]]:
+    """``(link of obj, other object, other's link index, obj's link index, other's link
+    name)`` per pair of links whose bounds, grown by ``distance``, overlap; objects named in
+    ``skip`` left out. ``obstacles``, when it covers the query, stands in for the
+    broadphase."""
     cid = world.physics_client()
-    by_body = {o.body_id: o for o in world.objects() if o.name not in skip}
     names = _link_names(obj)
     indices = names if links is None else {obj.link_index[name]: name for name in links}
+    if obstacles is not None and obstacles.covers(obj, skip):
+        yield from _overlaps_in(obstacles, obj, indices, names, skip, distance, cid)
+        return
+    by_body = {o.body_id: o for o in world.objects() if o.name not in skip}
+    other_names: dict[int, dict[int, str]] = {}
     for index, link in indices.items():
         low, high = pybullet.getAABB(obj.body_id, index, physicsClientId=cid)
         low = [v - distance for v in low]
@@ -41,7 +50,38 @@ def _overlaps(
         ):
             other = by_body.get(body)
             if other is not None:
-                yield names.get(index, link), other, other_link, index
+                if body not in other_names:
+                    other_names[body] = _link_names(other)
+                other_name = other_names[body].get(other_link, other.name)
+                yield names.get(index, link), other, other_link, index, other_name
+
+
+def _overlaps_in(
+    obstacles: ObstacleBoxes,
+    obj: WorldObject,
+    indices: dict[int, str],
+    names: dict[int, str],
+    skip: set[str],
+    distance: float,
+    cid: int,
+) -> Iterator[tuple[str, WorldObject, int, int, str]]:
+    """:func:`_overlaps` against bounds read before (one comparison for all links)."""
+    order = list(indices.items())
+    boxes = np.array(
+        [
+            [*low, *high]
+            for low, high in (
+                pybullet.getAABB(obj.body_id, index, physicsClientId=cid) for index, _ in order
+            )
+        ],
+        dtype=float,
+    ).reshape(-1, 6)
+    for box, row in obstacles.overlapping(boxes[:, :3] - distance, boxes[:, 3:] + distance, skip):
+        index, link = order[box]
+        yield (
+            names.get(index, link), obstacles.objects[row], obstacles.indices[row], index,
+            obstacles.names[row],
+        )  # fmt: skip
 
 
 def _near(world: WorldCore, a: WorldObject, b: WorldObject, la: int, lb: int, d: float) -> bool:
@@ -66,7 +106,7 @@ def link_contacts(
     """
     skip = _carried_with(world, obj) | {o.name for o in ignore}
     found: dict[tuple[str, str], None] = {}
-    for link, other, other_link, index in _overlaps(world, obj, links, skip, distance):
+    for link, other, other_link, index, _ in _overlaps(world, obj, links, skip, distance):
         if (link, other.name) not in found and _near(
             world, obj, other, index, other_link, distance
         ):
@@ -80,6 +120,7 @@ def link_pairs_in_contact(
     ignore: Iterable[WorldObject] = (),
     distance: float = CONTACT_DISTANCE,
     links: Iterable[str] | None = None,
+    obstacles: ObstacleBoxes | None = None,
 ) -> list[tuple[str, WorldObject, str]]:
     """``(link of obj, other object, its link)`` triples nearer than ``distance`` [m], each once.
 
@@ -88,8 +129,8 @@ def link_pairs_in_contact(
     """
     skip = {obj.name} | {o.name for o in ignore}
     found: dict[tuple[str, str, str], tuple[str, WorldObject, str]] = {}
-    for link, other, other_link, index in _overlaps(world, obj, links, skip, distance):
-        other_name = _link_names(other).get(other_link, other.name)
+    overlaps = _overlaps(world, obj, links, skip, distance, obstacles)
+    for link, other, other_link, index, other_name in overlaps:
         key = (link, other.name, other_name)
         if key not in found and _near(world, obj, other, index, other_link, distance):
             found[key] = (link, other, other_name)
@@ -102,6 +143,7 @@ def link_distances(
     ignore: Iterable[WorldObject] = (),
     distance: float = CONTACT_DISTANCE,
     links: Iterable[str] | None = None,
+    obstacles: ObstacleBoxes | None = None,
 ) -> list[tuple[str, WorldObject, str, float]]:
     """``(link of obj, other object, its link, distance [m])`` for each pair of links
     nearer than ``distance``, with the smallest distance between them (negative when they
@@ -109,7 +151,8 @@ def link_distances(
     skip = {obj.name} | {o.name for o in ignore}
     cid = world.physics_client()
     found: dict[tuple[str, str, str], tuple[str, WorldObject, str, float]] = {}
-    for link, other, other_link, index in _overlaps(world, obj, links, skip, distance):
+    overlaps = _overlaps(world, obj, links, skip, distance, obstacles)
+    for link, other, other_link, index, other_name in overlaps:
         points = pybullet.getClosestPoints(
             obj.body_id, other.body_id, distance, linkIndexA=index, linkIndexB=other_link,
             physicsClientId=cid,
@@ -117,7 +160,6 @@ def link_distances(
         if not points:
             continue
         nearest = min(float(p[8]) for p in points)
-        other_name = _link_names(other).get(other_link, other.name)
         key = (link, other.name, other_name)
         if key not in found or nearest < found[key][3]:
             found[key] = (link, other, other_name, nearest)

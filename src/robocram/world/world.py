@@ -24,6 +24,7 @@ from robocram.world.catalogue import catalogue_item
 from robocram.world.collision_shapes import CollisionShape, collision_shapes
 from robocram.world.contact_point import ContactPoint
 from robocram.world.errors import NoCameraError, WorldValueError
+from robocram.world.obstacle_boxes import ObstacleBoxes
 from robocram.world.png import write_png
 from robocram.world.ray_hit import RayHit, cast_rays
 from robocram.world.robot_urdf import robot_body_spec
@@ -263,15 +264,24 @@ class World(WorldCore):
         ignore: Iterable[ObjectRef] = (),
         distance: float = 0.0,
         links: Iterable[str] | None = None,
+        obstacles: ObstacleBoxes | None = None,
     ) -> list[tuple[str, WorldObject, str]]:
         """``(link of obj, other object, its link)`` triples within ``distance`` [m].
 
         Found through Bullet's broadphase, so a robot in a kitchen of hundreds of links
         costs only the pairs whose bounds overlap. Nothing is skipped but ``ignore``;
-        ``links`` limits the links of ``obj`` asked about (default: all).
+        ``links`` limits the links of ``obj`` asked about (default: all). ``obstacles``
+        (:meth:`obstacle_boxes`, read since only ``obj`` moved) replaces the broadphase.
         """
         skip = [self.object(o) for o in ignore]
-        return link_contacts.link_pairs_in_contact(self, self.object(obj), skip, distance, links)
+        return link_contacts.link_pairs_in_contact(
+            self, self.object(obj), skip, distance, links, obstacles
+        )
+
+    def obstacle_boxes(self, ignore: Iterable[ObjectRef] = ()) -> ObstacleBoxes:
+        """The bounds of every link of every object but ``ignore``, read now: pass them to
+        :meth:`link_distances` and :meth:`link_pairs_in_contact` while nothing else moves."""
+        return ObstacleBoxes.of(self, [self.object(o).name for o in ignore])
 
     def link_radii(self, obj: ObjectRef) -> dict[str, float]:
         """Per link of ``obj``: a radius [m] about the link's frame that holds its shapes.
@@ -300,6 +310,7 @@ class World(WorldCore):
         ignore: Iterable[ObjectRef] = (),
         distance: float = 0.05,
         links: Iterable[str] | None = None,
+        obstacles: ObstacleBoxes | None = None,
     ) -> list[tuple[str, WorldObject, str, float]]:
         """``(link of obj, other object, its link, distance [m])`` nearer than ``distance``.
 
@@ -307,7 +318,9 @@ class World(WorldCore):
         planner steps as far as the nearest one allows. Nothing is skipped but ``ignore``.
         """
         skip = [self.object(o) for o in ignore]
-        return link_contacts.link_distances(self, self.object(obj), skip, distance, links)
+        return link_contacts.link_distances(
+            self, self.object(obj), skip, distance, links, obstacles
+        )
 
     def self_contacts(
         self, obj: ObjectRef, pairs: Iterable[tuple[str, str]], distance: float = 0.0
