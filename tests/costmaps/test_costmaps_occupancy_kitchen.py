@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from robocram.costmaps import CostmapLocations
-from robocram.costmaps.occupancy import footprint_radius, occupancy_cost
+from robocram.costmaps.occupancy import footprint_radii, footprint_radius, occupancy_cost
 from robocram.designators import a
 from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
@@ -21,10 +21,12 @@ def test_no_cell_near_a_wall_is_free() -> None:
     locations = CostmapLocations(world)
     query = locations.query(a.location(visible_for="pr2", target=(0.0, -1.8, 0.8)))
     free = occupancy_cost(query, None, np.ones(query.grid.shape, dtype=bool)).weights
-    radius = footprint_radius(world, world.robot("pr2"))
+    radius, outer = footprint_radii(world, world.robot("pr2"))
     _, y = query.centres()
     low, high = world.link_aabb("kitchen", "wall_south")
-    assert radius > 0.3 and high[2] > 1.9  # a 2 m wall: probes from the robot's top missed it
+    # the PR2's base is 0.668 m square: half that inside, the corners 0.47 m out
+    assert radius == pytest.approx(0.334, abs=0.01) and outer == pytest.approx(0.472, abs=0.01)
+    assert high[2] > 1.9  # a 2 m wall: probes from the robot's top missed it
     assert not free[(y > low[1] - radius) & (y < high[1] + radius)].any()
     assert free[(y > high[1] + radius + 0.05) & (y < high[1] + radius + 0.3)].any()
     world.close()

@@ -46,24 +46,36 @@ def base_links(robot: RobotObject) -> list[str]:
 
 
 def footprint_radius(world: World, robot: RobotObject) -> float:
-    """Radius [m] around the base origin that holds the base links' x-y extents.
+    """Radius [m] around the base origin that holds the base links' x-y extents."""
+    return footprint_radii(world, robot)[1]
+
+
+def footprint_radii(world: World, robot: RobotObject) -> tuple[float, float]:
+    """Radii [m] about the base origin of the largest circle inside the base links' x-y
+    extents and of the smallest around them.
 
     Measured with the base turned to the map's axes for a moment (bounds are axis-aligned:
     a base turned by 45 degrees would seem 1.4 times as wide), then put back exactly.
     """
     base = world.pose(robot)
     upright = Pose(base.position)
-    radius = 0.0
+    x0, y0 = upright.position[:2]
+    lows: list[tuple[float, float]] = []
+    highs: list[tuple[float, float]] = []
     with placed_for_a_moment(world, robot, upright):
         for link in base_links(robot):
             low, high = world.link_aabb(robot, link)
             if high[2] - low[2] <= 0 or high[0] - low[0] > 5:  # frames without geometry
                 continue
-            for x in (low[0], high[0]):
-                for y in (low[1], high[1]):
-                    dx, dy = x - upright.position[0], y - upright.position[1]
-                    radius = max(radius, float(math.hypot(dx, dy)))
-    return radius
+            lows.append((low[0] - x0, low[1] - y0))
+            highs.append((high[0] - x0, high[1] - y0))
+    if not lows:
+        return 0.0, 0.0
+    low_x, low_y = min(p[0] for p in lows), min(p[1] for p in lows)
+    high_x, high_y = max(p[0] for p in highs), max(p[1] for p in highs)
+    outer = max(math.hypot(x, y) for x in (low_x, high_x) for y in (low_y, high_y))
+    inner = max(0.0, min(-low_x, high_x, -low_y, high_y))
+    return inner, outer
 
 
 @contextmanager
@@ -158,13 +170,17 @@ def free_cells(
 def occupancy_cost(query: LocationQuery, value: object, alive: BoolGrid) -> CostLayer:
     """Rule out cells where the robot's base (radius from its URDF) would hit an obstacle.
 
-    Only the cells earlier layers left ``alive`` are decided (the probes reach the cells
-    around them that the base would cover).
+    The radius is the base's inner one (half a square base's width): a robot facing a
+    counter stands that close, and the circle round its corners would keep it 14 cm
+    further away from a PR2's reach. Whether the base, turned as the stand is, fits is the
+    ``robot_collision_free`` validator's exact check, which every key that asks for
+    occupancy also asks for. Only the cells earlier layers left ``alive`` are decided (the
+    probes reach the cells around them that the base would cover).
     """
     robot = query.robot
     if robot is None:
         return CostLayer(np.ones(query.grid.shape))
-    radius = footprint_radius(query.world, robot)
+    radius = footprint_radii(query.world, robot)[0]
     top = robot_height(query.world, robot)
     boxes, large = obstacle_boxes(query.world, robot, top)
     free = free_cells(query, boxes, radius, alive)

@@ -25,7 +25,7 @@ from robocram.motion.obstacle_grid import Box, ObstacleGrid
 from robocram.motion.robot_footprint import FloatArray, RobotFootprint
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
-from robocram.world import World
+from robocram.world import ObstacleBoxes, World
 
 CELL = 0.01  # [m] obstacle grid cells
 SPACING = 0.02  # [m] robot sample squares: more than the 1 cm a dense check moves
@@ -56,6 +56,7 @@ class BaseCollisionChecker:
     allowed_links: frozenset[str] = frozenset()  # robot links that may touch (a hand holding)
     fast_checks: int = 0
     exact_checks: int = field(default=0)
+    _obstacles: ObstacleBoxes | None = field(default=None, repr=False)  # read once
 
     @classmethod
     def build(
@@ -168,10 +169,12 @@ class BaseCollisionChecker:
         """``(part of the robot, object/link it touches)`` pairs where the robot is now."""
         floors = [o.name for o in self.world.objects("floor")]
         group = [self.robot, *self.carried]
+        if self._obstacles is None:  # only the robot and what it carries move here
+            self._obstacles = self.world.obstacle_boxes([*group, *floors])
         for body in group:
             ignore = floors + [g for g in group if g != body]
             for link, other, other_link in self.world.link_pairs_in_contact(
-                body, ignore=ignore, distance=CONTACT
+                body, ignore=ignore, distance=CONTACT, obstacles=self._obstacles
             ):
                 if body == self.robot and link in self.allowed_links:
                     continue

@@ -174,27 +174,32 @@ def self_contacts(
 ) -> list[tuple[str, str]]:
     """The ``(link, link)`` pairs of ``obj`` among ``pairs`` nearer than ``distance`` [m].
 
-    Bounds are compared first, so only pairs whose bounds overlap get closest points.
+    Bounds are compared first (all pairs at once), so only pairs whose bounds overlap get
+    closest points.
     """
+    pairs = list(pairs)
+    if not pairs:
+        return []
     cid = world.physics_client()
     index = obj.link_index
-    bounds: dict[int, tuple[list[float], list[float]]] = {}
-
-    def box(i: int) -> tuple[list[float], list[float]]:
-        if i not in bounds:
-            low, high = pybullet.getAABB(obj.body_id, i, physicsClientId=cid)
-            bounds[i] = ([v - distance for v in low], [v + distance for v in high])
-        return bounds[i]
-
+    firsts = np.array([index[a] for a, _ in pairs])
+    seconds = np.array([index[b] for _, b in pairs])
+    used = np.union1d(firsts, seconds)
+    table = np.array(
+        [[*low, *high] for low, high in (
+            pybullet.getAABB(obj.body_id, int(i), physicsClientId=cid) for i in used
+        )],
+        dtype=float,
+    ).reshape(-1, 6)  # fmt: skip
+    ra, rb = np.searchsorted(used, firsts), np.searchsorted(used, seconds)
+    apart = (table[ra, :3] - distance > table[rb, 3:] + distance).any(axis=1) | (
+        table[rb, :3] - distance > table[ra, 3:] + distance
+    ).any(axis=1)
     found = []
-    for a, b in pairs:
-        ia, ib = index[a], index[b]
-        (la, ha), (lb, hb) = box(ia), box(ib)
-        if any(la[k] > hb[k] or lb[k] > ha[k] for k in range(3)):
-            continue
+    for k in np.flatnonzero(~apart):
         if pybullet.getClosestPoints(
-            obj.body_id, obj.body_id, distance, linkIndexA=ia, linkIndexB=ib,
-            physicsClientId=cid,
+            obj.body_id, obj.body_id, distance, linkIndexA=int(firsts[k]),
+            linkIndexB=int(seconds[k]), physicsClientId=cid,
         ):  # fmt: skip
-            found.append((a, b))
+            found.append(pairs[k])
     return found
