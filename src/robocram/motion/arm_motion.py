@@ -117,7 +117,9 @@ def _checked_path(
     limits = joint_limits(desc, joints)
     box = ([lim.lower for lim in limits], [lim.upper for lim in limits])
     try:
-        return plan_joint_path(scene, start, end, bound, box, plan=False, what=what)
+        return plan_joint_path(
+            scene, start, end, bound, box, plan=False, what=what, explain=not settings.plan
+        )  # planning explains a failure from its snapshot
     except ManipulationPathBlocked:
         if not settings.plan:
             raise

@@ -50,10 +50,13 @@ def plan_joint_path(
     seed: int = 0,
     budget: int = PLANNING_BUDGET,
     what: str = "the arm",
+    explain: bool = True,
 ) -> JointPath:
     """A free path from ``start`` to ``goal`` (both free); ``plan=False``: straight only.
 
-    ``limits`` are the joints' (lower, upper) bounds of the planning space.
+    ``limits`` are the joints' (lower, upper) bounds of the planning space. ``explain``
+    False skips finding what the straight segment runs into first (a walk at full
+    resolution), for a caller that will plan elsewhere and explain from there.
 
     Raises:
         ManipulationPathBlocked: neither the straight segment nor the planner found a way;
@@ -91,6 +94,10 @@ def plan_joint_path(
                     joints, tuple(tuple(map(float, w)) for w in waypoints), "rrt_connect",
                     counter.checks,
                 )  # fmt: skip
+    if not explain:
+        raise ManipulationPathBlocked(
+            f"{what}'s straight path is blocked", colliding_pairs=(), path_fraction=0.0
+        )
     hit = first_collision(checker, a, b, bound, counter)
     fraction, pairs = hit if hit is not None else (0.0, [])
     planned = f"; RRTConnect found no way round in {budget} checks" if plan else ""
