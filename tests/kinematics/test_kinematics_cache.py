@@ -14,6 +14,7 @@ from robocram.kinematics import IKSolver, KinematicsCache, PlanarBase, solve_ik
 from robocram.kinematics.kinematics_cache import BoundedMap
 from robocram.kinematics.robot_kinematics import RobotKinematics, robot_kinematics
 from robocram.robots import load_description
+from robocram.robots.model_memo import MODELS
 from robocram.tf import Pose
 
 CONTAINERS = {"dict", "list", "set", "OrderedDict", "WeakKeyDictionary", "WeakValueDictionary"}
@@ -75,7 +76,11 @@ def test_the_model_keeps_its_kinematics_and_its_cache() -> None:
     solver = IKSolver.cached(pr2, "right")
     assert solver.cache is KinematicsCache.of(pr2.model)
     assert IKSolver.cached(pr2, "right") is solver
+    again = load_description("pr2")  # the same file: the same model, and what it keeps
+    assert again.model is pr2.model and IKSolver.cached(again, "right") is solver
+    MODELS.clear()
     other = load_description("pr2")  # a new model starts with nothing kept
+    assert other.model is not pr2.model
     assert KinematicsCache.of(other.model) is not solver.cache
     assert len(KinematicsCache.of(other.model).solvers) == 0
 
@@ -86,13 +91,18 @@ def test_what_a_model_keeps_goes_with_it() -> None:
     model = weakref.ref(pr2.model)
     cache = weakref.ref(KinematicsCache.of(pr2.model))
     del pr2
+    MODELS.clear()  # loads of one file share a model while the process keeps it
     gc.collect()
     assert (model(), cache()) == (None, None)
 
 
 def test_a_callers_cache_is_bounded_and_shares_tables_between_equal_models() -> None:
     cache = KinematicsCache(solvers=2, tables=8)
-    first, second = load_description("pr2"), load_description("pr2")
+    MODELS.clear()
+    first = load_description("pr2")
+    MODELS.clear()
+    second = load_description("pr2")  # an equal model, not the same one
+    assert second.model is not first.model
     right = IKSolver.cached(first, "right", cache=cache)
     assert IKSolver.cached(second, "right", cache=cache).table is right.table  # same geometry
     IKSolver.cached(first, "left", cache=cache)

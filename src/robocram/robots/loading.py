@@ -22,6 +22,7 @@ from robocram.robots.description_check import (
 from robocram.robots.description_source import description_from
 from robocram.robots.errors import DescriptionCheckError
 from robocram.robots.findings import warn
+from robocram.robots.model_memo import MODELS
 from robocram.robots.package_resolver import PackageResolver
 from robocram.robots.robot_model import RobotModel
 
@@ -53,13 +54,7 @@ def load_description(
             f"{type(name_or_desc).__name__}"
         )
     paths = tuple(dict.fromkeys([*desc.package_paths, *(Path(p) for p in package_paths)]))
-    model = desc.model or _read_model(desc.urdf, paths)
-    for frame in desc.extra_frames:
-        if frame.name not in model.links:
-            model = model.with_frame(frame)
-    for box in desc.extra_boxes:
-        if box.name not in model.links:
-            model = model.with_box(box)
+    model = desc.model or _shared_model(desc, paths)
     check_names(desc, model)
     arms = {
         key: derive_arm(desc.name, infer_arm(arm, model), model) for key, arm in desc.arms.items()
@@ -81,7 +76,21 @@ def load_description(
     return replace(loaded, findings=findings)
 
 
-def _read_model(urdf: str | Path, package_paths: tuple[Path, ...]) -> RobotModel:
+def _shared_model(desc: RobotDescription, paths: tuple[Path, ...]) -> RobotModel:
+    """The parsed URDF with the description's frames and boxes, shared by equal loads."""
+    urdf = desc.urdf
     if isinstance(urdf, str) and urdf.startswith("package://"):
-        urdf = PackageResolver.default(package_paths).resolve(urdf)
-    return RobotModel.from_file(urdf, package_paths)
+        urdf = PackageResolver.default(paths).resolve(urdf)
+    file = Path(urdf).expanduser()
+
+    def build() -> RobotModel:
+        model = RobotModel.from_file(file, paths)
+        for frame in desc.extra_frames:
+            if frame.name not in model.links:
+                model = model.with_frame(frame)
+        for box in desc.extra_boxes:
+            if box.name not in model.links:
+                model = model.with_box(box)
+        return model
+
+    return MODELS.model(file, paths, desc.extra_frames, desc.extra_boxes, build)

@@ -1,0 +1,70 @@
+"""Parsed robot models kept for the process, so every load of one URDF shares one model.
+
+What a plan learns about a robot's kinematics (IK solvers, start tables, reach bounds,
+link radii) is kept on its :class:`~robocram.robots.RobotModel`, which lives as long as the
+model. Loading ``"pr2"`` for each new scene parsed the URDF again and so threw all of that
+away: a user's first plan in each fresh scene paid ~0.1 s of caches again. Models are
+immutable, so loads of the same file (same bytes, same package paths, same added frames
+and boxes) share one; a changed file is parsed anew. At most :data:`MODELS_KEPT` are kept.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import threading
+from collections import OrderedDict
+from collections.abc import Callable
+from pathlib import Path
+
+from robocram.robots.model_additions import BoxSpec, FrameSpec
+from robocram.robots.robot_model import RobotModel
+
+MODELS_KEPT = 8  # different robot files a process loads (a few MB each with their caches)
+
+ModelKey = tuple[str, str, tuple[Path, ...], tuple[FrameSpec, ...], tuple[BoxSpec, ...]]
+
+
+class ModelMemo:
+    """The last :data:`MODELS_KEPT` models built, by the content of what they were built from."""
+
+    def __init__(self, size: int = MODELS_KEPT) -> None:
+        self.size = size
+        self._models: OrderedDict[ModelKey, RobotModel] = OrderedDict()
+        self._lock = threading.Lock()
+
+    def model(
+        self,
+        file: Path,
+        package_paths: tuple[Path, ...],
+        frames: tuple[FrameSpec, ...],
+        boxes: tuple[BoxSpec, ...],
+        build: Callable[[], RobotModel],
+    ) -> RobotModel:
+        """The model kept for ``file``'s current bytes and these additions, or ``build()``.
+
+        A file that cannot be read is left to ``build`` to report.
+        """
+        try:
+            digest = hashlib.sha256(file.read_bytes()).hexdigest()
+        except OSError:
+            return build()
+        key: ModelKey = (str(file.resolve()), digest, package_paths, frames, boxes)
+        with self._lock:
+            found = self._models.get(key)
+            if found is not None:
+                self._models.move_to_end(key)
+                return found
+        model = build()
+        with self._lock:
+            self._models[key] = model
+            while len(self._models) > self.size:
+                self._models.popitem(last=False)
+        return model
+
+    def clear(self) -> None:
+        """Forget every model (they live on while something else holds them)."""
+        with self._lock:
+            self._models.clear()
+
+
+MODELS = ModelMemo()  # the process's; loads through load_description use it

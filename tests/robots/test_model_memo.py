@@ -1,0 +1,44 @@
+"""Loads of one robot file share one parsed model; a changed file is parsed anew."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from robocram.robots.model_memo import ModelMemo
+from robocram.robots.robot_model import RobotModel
+
+ARM = """<robot name="arm">
+  <link name="base"/><link name="tip"/>
+  <joint name="j" type="revolute"><parent link="base"/><child link="tip"/>
+    <axis xyz="0 0 1"/><limit lower="-1" upper="{upper}" effort="1" velocity="1"/></joint>
+</robot>"""
+
+
+def test_equal_bytes_share_a_model_and_a_changed_file_is_read_again(tmp_path: Path) -> None:
+    file = tmp_path / "arm.urdf"
+    file.write_text(ARM.format(upper=1.0))
+    memo = ModelMemo(size=2)
+    built: list[RobotModel] = []
+
+    def build() -> RobotModel:
+        built.append(RobotModel.from_file(file))
+        return built[-1]
+
+    first = memo.model(file, (), (), (), build)
+    assert memo.model(file, (), (), (), build) is first and len(built) == 1
+    file.write_text(ARM.format(upper=2.0))
+    changed = memo.model(file, (), (), (), build)
+    assert changed is not first and changed.joints["j"].upper == 2.0
+    assert len(built) == 2
+
+
+def test_the_memo_keeps_at_most_its_size(tmp_path: Path) -> None:
+    memo = ModelMemo(size=2)
+    files = []
+    for k in range(3):
+        files.append(tmp_path / f"arm{k}.urdf")
+        files[-1].write_text(ARM.format(upper=1.0 + k))
+    models = [memo.model(f, (), (), (), lambda f=f: RobotModel.from_file(f)) for f in files]
+    rebuilt = memo.model(files[0], (), (), (), lambda: RobotModel.from_file(files[0]))
+    assert rebuilt is not models[0]  # the oldest was dropped
+    assert memo.model(files[2], (), (), (), lambda: RobotModel.from_file(files[2])) is models[2]
