@@ -4,6 +4,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
+
+from robocram.robots.errors import MissingMeshWarning
 from robocram.robots.model_memo import ModelMemo
 from robocram.robots.robot_model import RobotModel
 
@@ -21,7 +24,7 @@ def test_equal_bytes_share_a_model_and_a_changed_file_is_read_again(tmp_path: Pa
     built: list[RobotModel] = []
 
     def build() -> RobotModel:
-        built.append(RobotModel.from_file(file))
+        built.append(RobotModel.from_string(file.read_text()))
         return built[-1]
 
     first = memo.model(file, (), (), (), build)
@@ -32,13 +35,29 @@ def test_equal_bytes_share_a_model_and_a_changed_file_is_read_again(tmp_path: Pa
     assert len(built) == 2
 
 
+def test_a_shared_model_warns_again_on_every_load(tmp_path: Path) -> None:
+    file = tmp_path / "arm.urdf"
+    file.write_text(ARM.format(upper=1.0).replace(
+        '<link name="tip"/>',
+        '<link name="tip"><visual><geometry><mesh filename="gone.stl"/></geometry></visual></link>',
+    ))  # fmt: skip
+    for _ in range(2):
+        with pytest.warns(MissingMeshWarning, match="gone.stl"):
+            RobotModel.from_file(file)
+
+
 def test_the_memo_keeps_at_most_its_size(tmp_path: Path) -> None:
     memo = ModelMemo(size=2)
     files = []
     for k in range(3):
         files.append(tmp_path / f"arm{k}.urdf")
         files[-1].write_text(ARM.format(upper=1.0 + k))
-    models = [memo.model(f, (), (), (), lambda f=f: RobotModel.from_file(f)) for f in files]
-    rebuilt = memo.model(files[0], (), (), (), lambda: RobotModel.from_file(files[0]))
+    models = [
+        memo.model(f, (), (), (), lambda f=f: RobotModel.from_string(f.read_text())) for f in files
+    ]
+    rebuilt = memo.model(files[0], (), (), (), lambda: RobotModel.from_string(files[0].read_text()))
     assert rebuilt is not models[0]  # the oldest was dropped
-    assert memo.model(files[2], (), (), (), lambda: RobotModel.from_file(files[2])) is models[2]
+    assert (
+        memo.model(files[2], (), (), (), lambda: RobotModel.from_string(files[2].read_text()))
+        is models[2]
+    )

@@ -12,12 +12,16 @@ from __future__ import annotations
 
 import hashlib
 import threading
+import warnings
 from collections import OrderedDict
 from collections.abc import Callable
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from robocram.robots.model_additions import BoxSpec, FrameSpec
-from robocram.robots.robot_model import RobotModel
+
+if TYPE_CHECKING:  # the model reads files through this memo
+    from robocram.robots.robot_model import RobotModel
 
 MODELS_KEPT = 8  # different robot files a process loads (a few MB each with their caches)
 
@@ -29,7 +33,9 @@ class ModelMemo:
 
     def __init__(self, size: int = MODELS_KEPT) -> None:
         self.size = size
-        self._models: OrderedDict[ModelKey, RobotModel] = OrderedDict()
+        self._models: OrderedDict[ModelKey, tuple[RobotModel, list[warnings.WarningMessage]]] = (
+            OrderedDict()
+        )
         self._lock = threading.Lock()
 
     def model(
@@ -42,7 +48,8 @@ class ModelMemo:
     ) -> RobotModel:
         """The model kept for ``file``'s current bytes and these additions, or ``build()``.
 
-        A file that cannot be read is left to ``build`` to report.
+        A file that cannot be read is left to ``build`` to report. The warnings the build
+        gave (a missing mesh) are given again on every load, as a parse would.
         """
         try:
             digest = hashlib.sha256(file.read_bytes()).hexdigest()
@@ -53,13 +60,18 @@ class ModelMemo:
             found = self._models.get(key)
             if found is not None:
                 self._models.move_to_end(key)
-                return found
-        model = build()
-        with self._lock:
-            self._models[key] = model
-            while len(self._models) > self.size:
-                self._models.popitem(last=False)
-        return model
+        if found is None:
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always")
+                model = build()
+            found = (model, list(caught))
+            with self._lock:
+                self._models[key] = found
+                while len(self._models) > self.size:
+                    self._models.popitem(last=False)
+        for w in found[1]:
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno, source=w.source)
+        return found[0]
 
     def clear(self) -> None:
         """Forget every model (they live on while something else holds them)."""

@@ -211,14 +211,24 @@ class RobotModel:
 
     @classmethod
     def from_file(cls, path: str | Path, package_paths: Iterable[str | Path] = ()) -> RobotModel:
-        """Parse a URDF file; ``package_paths`` are searched first for ``package://`` URIs."""
+        """Parse a URDF file; ``package_paths`` are searched first for ``package://`` URIs.
+
+        Equal files share one model for the process (:mod:`~robocram.robots.model_memo`).
+        """
+        from robocram.robots.model_memo import MODELS  # here: the memo types with this module
+
         file = Path(path).expanduser()
-        try:
-            data = file.read_bytes()
-        except OSError as err:
-            raise UrdfError(file, f"cannot read the URDF: {err.strerror}") from err
-        text = decode_xml(data, file)
-        return cls.from_string(text, file.resolve().parent, package_paths, source=str(file))
+        paths = tuple(Path(p) for p in package_paths)
+
+        def parse() -> RobotModel:
+            try:
+                data = file.read_bytes()
+            except OSError as err:
+                raise UrdfError(file, f"cannot read the URDF: {err.strerror}") from err
+            text = decode_xml(data, file)
+            return cls.from_string(text, file.resolve().parent, paths, source=str(file))
+
+        return MODELS.model(file, paths, (), (), parse)
 
     @classmethod
     def from_string(
