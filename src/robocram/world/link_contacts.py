@@ -12,9 +12,8 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
 
-import pybullet
-
 from robocram.world.contacts import CONTACT_DISTANCE, _carried_with, _link_names
+from robocram.world.pybullet_backend import pybullet
 from robocram.world.world_core import WorldCore
 from robocram.world.world_object import WorldObject
 
