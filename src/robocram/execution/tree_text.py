@@ -27,7 +27,10 @@ def tree_text(snapshot: TaskSnapshot, verbose: bool = False) -> str:
 
 
 def recovered(child: TaskSnapshot, parent: TaskSnapshot) -> bool:
-    """Whether ``child`` failed and ``parent`` went on without that failure."""
+    """Whether ``child`` failed and its failure stopped there: handled, or wrapped in another.
+
+    A failure ``parent`` passed on as it was keeps its subtree in view.
+    """
     if child.status is not TaskStatus.FAILED:
         return False
     source = parent.failure_source
