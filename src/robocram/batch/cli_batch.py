@@ -16,10 +16,8 @@ from robocram.batch.batch_spec import load_spec
 from robocram.batch.batch_summary import BatchSummary
 from robocram.batch.errors import BatchError
 from robocram.batch.project_variants import project_variants
-from robocram.batch.result import VariantResult
 
 EXIT_ALL_SUCCEEDED, EXIT_SOME_FAILED, EXIT_BAD_INPUT, EXIT_INTERRUPTED = 0, 1, 3, 130
-MESSAGE_WIDTH = 100  # [characters] of a failure message in the list of failed variants
 
 
 def run_batch_command(args: argparse.Namespace) -> int:
@@ -50,16 +48,8 @@ def _run(args: argparse.Namespace) -> int:
         results = run.collect()
     summary = BatchSummary.of(results)
     print("\n".join(summary.lines()))
-    _print_failures(results)
+    if summary.causes:
+        print("\n" + "\n".join(summary.cause_lines()))
     if args.db is not None:
         print(f"\nruns traced in {args.db}: robocram runs list {args.db}")
     return EXIT_ALL_SUCCEEDED if summary.succeeded == summary.variants else EXIT_SOME_FAILED
-
-
-def _print_failures(results: list[VariantResult]) -> None:
-    failed = [r for r in results if not r.succeeded]
-    if failed:
-        print("\nvariants that did not succeed:")
-    for r in failed:
-        message = r.message.splitlines()[0] if r.message else ""
-        print(f"  {r.name}: {r.failure_type}: {message[:MESSAGE_WIDTH]}")
