@@ -32,7 +32,7 @@ from robocram.environment_commands import add_environment_commands
 from robocram.robot_commands import add_robot_commands
 from robocram.runs_commands import add_runs_commands, last_run, open_database
 
-__all__ = ["EXIT_FAILED", "EXIT_INPUT", "EXIT_OK", "EXIT_USAGE", "CliInputError", "main", "run"]
+__all__ = ["CliInputError", "EXIT_FAILED", "EXIT_INPUT", "EXIT_OK", "EXIT_USAGE", "main", "run"]
 
 TRACE_ENV = "ROBOCRAM_TRACE"  # robocram.traces.TRACE_ENV, named so --help loads no trace store
 ROBOT_HELP = (
