@@ -32,6 +32,7 @@ setup: $(STAMP) $(ROS_STAMP)
 ROBOT ?= pr2
 demo: installed
 	$(BIN)/python -m robocram.demo --robot $(ROBOT)
+	@echo "the robocram command: 'source $(BIN)/activate' then 'robocram --help', or '$(BIN)/robocram --help'"
 
 lint: installed
 	$(BIN)/ruff check src tests benchmarks examples tools

@@ -10,50 +10,36 @@ from __future__ import annotations
 
 import argparse
 import contextlib
-import datetime
 import os
 import socket
 import sys
 import time
 import warnings
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any
 
-from robocram.batch.cli_batch import add_batch_command
-from robocram.environment_commands import add_environment_commands
-from robocram.execution import PlanFailure, TaskSnapshot
-from robocram.robot_commands import add_robot_commands
-from robocram.robots import DescriptionError, MissingMeshWarning, RobotModel, load_description
-from robocram.scenes import SceneError
-from robocram.traces import (
-    TRACE_ENV,
-    TraceDatabase,
-    TraceError,
-    durations,
-    failures,
-    require_run,
-    runs,
-    task_tree,
+from robocram.batch_commands import add_batch_command
+from robocram.command_exit import (
+    EXIT_FAILED,
+    EXIT_INPUT,
+    EXIT_OK,
+    EXIT_USAGE,
+    CliInputError,
+    is_input_error,
 )
-from robocram.traces.mcap_export import export_mcap
+from robocram.environment_commands import add_environment_commands
+from robocram.robot_commands import add_robot_commands
+from robocram.runs_commands import add_runs_commands, last_run, open_database
 
-EXIT_OK, EXIT_FAILED, EXIT_USAGE, EXIT_INPUT = 0, 1, 2, 3
+__all__ = ["CliInputError", "EXIT_FAILED", "EXIT_INPUT", "EXIT_OK", "EXIT_USAGE", "main", "run"]
+
+TRACE_ENV = "ROBOCRAM_TRACE"  # robocram.traces.TRACE_ENV, named so --help loads no trace store
 ROBOT_HELP = (
     "a built-in robot (pr2, hsrb, boxy), a description file (my_robot.py, as `robocram robot "
     "draft` writes it) or pkg.module:NAME (default: %(default)s)"
 )
-
-try:
-    from robocram.viewer.errors import ViewerError as _ViewerError
-except ImportError:  # the viewer extra is not installed; its commands say so
-
-    class _ViewerError(Exception):  # type: ignore[no-redef]
-        """Stands in for robocram.viewer's root error."""
-
-
-class CliInputError(Exception):
-    """Input the command cannot work with; the message says what to do instead."""
+VERBOSE_HELP = "print every task of the tree and full failure texts, unfolded"
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -61,7 +47,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     try:
         return int(args.handler(args))
-    except (TraceError, DescriptionError, SceneError, CliInputError, _ViewerError) as err:
+    except Exception as err:
+        if not is_input_error(err):
+            raise
         print(f"robocram: error: {err}", file=sys.stderr)
         return EXIT_INPUT
 
@@ -80,8 +68,9 @@ def _parser() -> argparse.ArgumentParser:
     demo.add_argument(
         "--db", type=Path, help=f"trace the run into this SQLite file (or ${TRACE_ENV})"
     )
+    demo.add_argument("--verbose", action="store_true", help=VERBOSE_HELP)
     demo.set_defaults(handler=_demo)
-    _add_runs_commands(commands)
+    add_runs_commands(commands)
     _add_viewer_commands(commands)
     add_batch_command(commands)
     check = commands.add_parser("check-robot", help="read a URDF (or built-in robot) and report")
@@ -90,28 +79,6 @@ def _parser() -> argparse.ArgumentParser:
     add_robot_commands(commands)
     add_environment_commands(commands)
     return parser
-
-
-def _add_runs_commands(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
-    runs_parser = commands.add_parser("runs", help="list, show and query stored runs")
-    sub = runs_parser.add_subparsers(dest="runs_command", required=True, metavar="ACTION")
-    listing = sub.add_parser("list", help="one line per run: id, name, status, counts")
-    listing.add_argument("db", type=Path, help="trace database (SQLite)")
-    listing.set_defaults(handler=_runs_list)
-    show = sub.add_parser("show", help="a run's task tree and its durations per motion")
-    show.add_argument("db", type=Path, help="trace database (SQLite)")
-    show.add_argument("--run", type=int, help="run id (default: the last run)")
-    show.set_defaults(handler=_runs_show)
-    fails = sub.add_parser("failures", help="failures where they were raised, by type")
-    fails.add_argument("db", type=Path, help="trace database (SQLite)")
-    fails.add_argument("--type", dest="failure_type", help="only this failure type")
-    fails.add_argument("--run", type=int, help="only this run")
-    fails.set_defaults(handler=_runs_failures)
-    export = sub.add_parser("export", help="write a run as ROS 2 messages (TF, joints, poses)")
-    export.add_argument("db", type=Path, help="trace database (SQLite)")
-    export.add_argument("--run", type=int, help="run id (default: the last run)")
-    export.add_argument("--mcap", type=Path, required=True, help="the MCAP file to write")
-    export.set_defaults(handler=_runs_export)
 
 
 def _add_viewer_commands(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -149,7 +116,7 @@ def _check_address(host: str, port: int) -> None:
 
 
 def _view(args: argparse.Namespace) -> int:
-    from robocram.execution import listening
+    from robocram.execution import PlanFailure, listening
     from robocram.plans import pick_up
     from robocram.projection import simulated_robot
     from robocram.scenes import tabletop_scene
@@ -177,8 +144,8 @@ def _view(args: argparse.Namespace) -> int:
 def _replay(args: argparse.Namespace) -> int:
     _check_address(args.host, args.port)
     viewer_module = _viewer_module()
-    with _open(args.db) as db:
-        run = _last_run(db, args.run)
+    with open_database(args.db) as db:
+        run = last_run(db, args.run)
         viewer = viewer_module.replay_viewer(db, run, args.host, args.port)
     with viewer:
         print(f"run {run} at {viewer.url}", flush=True)
@@ -208,11 +175,8 @@ def _serve(viewer: Any, args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
-def _open(path: Path) -> TraceDatabase:
-    return TraceDatabase(path, create=False)
-
-
 def _demo(args: argparse.Namespace) -> int:
+    from robocram.execution import PlanFailure
     from robocram.plans import pick_up
     from robocram.projection import simulated_robot
     from robocram.scenes import tabletop_scene
@@ -228,90 +192,15 @@ def _demo(args: argparse.Namespace) -> int:
         return EXIT_FAILED
     finally:
         scene.world.close()
-    print(run.tree.render())
+    print(run.tree.render(verbose=args.verbose))
     if tracer is not None:
         print(f"\ntraced as run {tracer.runs[-1]} in {tracer.db.path}")
     return EXIT_OK
 
 
-def _when(stamp: float | None) -> str:
-    if stamp is None:
-        return "-"
-    return datetime.datetime.fromtimestamp(stamp, datetime.UTC).strftime("%Y-%m-%d %H:%M:%S")
-
-
-def _runs_list(args: argparse.Namespace) -> int:
-    with _open(args.db) as db:
-        stored = runs(db)
-    print(f"{'run':>5}  {'name':<20} {'status':<10} {'started (UTC)':<19} tasks failed states")
-    for r in stored:
-        print(
-            f"{r.id:>5}  {r.name[:20]:<20} {r.status:<10} {_when(r.start):<19} "
-            f"{r.tasks:>5} {r.failed_tasks:>6} {r.world_states:>6}"
-        )
-    return EXIT_OK
-
-
-def _last_run(db: TraceDatabase, run: int | None) -> int:
-    if run is not None:
-        return require_run(db, run).id
-    stored = runs(db)
-    if not stored:
-        raise CliInputError(f"{db.path} holds no runs yet; record one with `robocram demo --db`")
-    return stored[-1].id
-
-
-def _runs_show(args: argparse.Namespace) -> int:
-    with _open(args.db) as db:
-        run = _last_run(db, args.run)
-        tree = task_tree(db, run)
-        stats = durations(db, run)
-    print(f"run {run}:")
-    print("\n".join(render_tree(tree)))
-    if stats:
-        print("\nduration per performed designator type:")
-        for name, s in sorted(stats.items()):
-            print(
-                f"  {name:<32} n={s.count:<3} "
-                f"mean {s.mean * 1e3:8.1f} ms  max {s.max * 1e3:8.1f} ms"
-            )
-    return EXIT_OK
-
-
-def render_tree(snapshot: TaskSnapshot, indent: str = "") -> Iterator[str]:
-    """A stored task tree as text lines, like the live tree's ``render()``."""
-    if not indent:
-        yield snapshot.label()
-    for i, child in enumerate(snapshot.children):
-        last = i == len(snapshot.children) - 1
-        yield f"{indent}{'└── ' if last else '├── '}{child.label()}"
-        yield from (
-            render_tree(child, indent + ("    " if last else "│   ")) if child.children else ()
-        )
-
-
-def _runs_failures(args: argparse.Namespace) -> int:
-    with _open(args.db) as db:
-        found = failures(db, args.failure_type, args.run)
-    counts: dict[str, int] = {}
-    for f in found:
-        counts[f.type] = counts.get(f.type, 0) + 1
-    for name, n in sorted(counts.items(), key=lambda kv: (-kv[1], kv[0])):
-        print(f"{n:>5}  {name}")
-    for f in found:
-        print(f"run {f.run}  {f.path}\n       {f.type}: {f.message}")
-    return EXIT_OK
-
-
-def _runs_export(args: argparse.Namespace) -> int:
-    with _open(args.db) as db:
-        run = _last_run(db, args.run)
-        count = export_mcap(db, run, args.mcap)
-    print(f"wrote {count} messages of run {run} to {args.mcap} (/tf, /joint_states, /object_poses)")
-    return EXIT_OK
-
-
 def _check_robot(args: argparse.Namespace) -> int:
+    from robocram.robots import MissingMeshWarning, RobotModel, load_description
+
     path = Path(args.urdf)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", MissingMeshWarning)

@@ -45,10 +45,11 @@ def fresh_database(path: Path) -> Path:
     return path
 
 
-def main(out_dir: Path = Path("out"), robot: str = "pr2") -> list[Path]:
+def main(out_dir: Path = Path("out"), robot: str = "pr2", verbose: bool = False) -> list[Path]:
     """Run both transports, print the task tree, write and return the pictures and the GIF.
 
-    ``robot`` is a built-in robot's name or a description file (``my_robot.py``).
+    ``robot`` is a built-in robot's name or a description file (``my_robot.py``); the tree
+    folds the tries the plan recovered from unless ``verbose``.
     """
     start = time.perf_counter()
     scene = kitchen_scene(robot)
@@ -63,7 +64,7 @@ def main(out_dir: Path = Path("out"), robot: str = "pr2") -> list[Path]:
         for kind, item in ITEMS:
             target = a.location(on=TABLE, for_=item)
             perform(an.action(type="transporting", object=kind, target=target))
-    print(run.tree.render())
+    print(run.tree.render(verbose=verbose))
     for _, item in ITEMS:
         x, y, z = world.pose(item).position
         links = sorted({p.link_b for p in world.contact_points(item, "kitchen")})
@@ -81,7 +82,7 @@ def main(out_dir: Path = Path("out"), robot: str = "pr2") -> list[Path]:
 
 
 def command_line(argv: Sequence[str] | None = None) -> list[Path]:
-    """``python -m robocram.demo [--robot ROBOT] [--out DIR]`` (``make demo ROBOT=...``)."""
+    """``python -m robocram.demo [--robot ROBOT] [--out DIR] [--verbose]`` (``make demo``)."""
     parser = argparse.ArgumentParser(prog="python -m robocram.demo", description=__doc__)
     parser.add_argument(
         "--robot",
@@ -89,8 +90,11 @@ def command_line(argv: Sequence[str] | None = None) -> list[Path]:
         help="a built-in robot (pr2, hsrb, boxy) or a description file (my_robot.py)",
     )
     parser.add_argument("--out", type=Path, default=Path("out"), help="where the pictures go")
+    parser.add_argument(
+        "--verbose", action="store_true", help="print every task and full failure texts"
+    )
     args = parser.parse_args(argv)
-    return main(args.out, args.robot)
+    return main(args.out, args.robot, args.verbose)
 
 
 if __name__ == "__main__":

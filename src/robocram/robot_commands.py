@@ -11,8 +11,6 @@ import argparse
 import sys
 from pathlib import Path
 
-from robocram.robots import draft_description
-
 EXIT_OK, EXIT_FAILED = 0, 1
 
 
@@ -33,6 +31,8 @@ def add_robot_commands(commands: argparse._SubParsersAction[argparse.ArgumentPar
 
 
 def _draft(args: argparse.Namespace) -> int:
+    from robocram.robots import draft_description
+
     draft = draft_description(args.urdf, name=args.name)
     if args.output is None:
         sys.stdout.write(draft.source())

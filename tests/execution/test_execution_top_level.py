@@ -116,7 +116,7 @@ def test_render_shows_statuses_durations_values_and_failures() -> None:
                 ("wait", lambda: sleep(5.0)),
             )
         )
-    lines = runner.tree.render().splitlines()
+    lines = runner.tree.render(verbose=True).splitlines()
     assert lines[0].startswith("✗ plan failed ")
     assert lines[1].startswith("└── ✗ par failed")
     assert lines[2].startswith("    ├── ✓ ok succeeded") and lines[2].endswith("→ 42")

@@ -1,4 +1,8 @@
-"""What a batch found, in a few numbers: success rate, failure types, median duration."""
+"""What a batch found, in a few numbers: success rate, failure types, median duration.
+
+Why variants failed is grouped by cause: each cause is one :func:`failure_line` (the failure
+type and what went wrong, no designator dump), with the variants it ended.
+"""
 
 from __future__ import annotations
 
@@ -8,6 +12,27 @@ from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 
 from robocram.batch.result import VariantResult, VariantStatus
+from robocram.execution.failures import failure_line
+
+LINE_WIDTH = 160  # [characters] of every line about a cause, its count and indent included
+COUNT_WIDTH = 7  # [characters] of the count column before a cause: "   41  "
+
+
+@dataclass(frozen=True)
+class FailureCause:
+    """One reason variants did not succeed, and which variants it ended."""
+
+    line: str  # the failure's type and what went wrong, one short line
+    variants: tuple[str, ...]  # their names, in batch order
+
+    def lines(self) -> Iterator[str]:
+        """The count and the cause, then the variants' names, each within LINE_WIDTH."""
+        yield f"{len(self.variants):>{COUNT_WIDTH - 2}}  {self.line}"
+        names = " ".join(self.variants)
+        width = LINE_WIDTH - COUNT_WIDTH
+        if len(names) > width:
+            names = names[: width - 2].rsplit(" ", 1)[0] + " …"
+        yield " " * COUNT_WIDTH + names
 
 
 @dataclass(frozen=True)
@@ -20,6 +45,7 @@ class BatchSummary:
     lost: int
     failure_types: tuple[tuple[str, int], ...]  # most frequent first
     median_duration: float  # [s] over the variants that ran to an answer
+    causes: tuple[FailureCause, ...] = ()  # of failed and lost variants, most frequent first
 
     @classmethod
     def of(cls, results: Iterable[VariantResult]) -> BatchSummary:
@@ -35,6 +61,7 @@ class BatchSummary:
             status[VariantStatus.LOST],
             tuple(sorted(types.items(), key=lambda kv: (-kv[1], kv[0]))),
             statistics.median(ran) if ran else 0.0,
+            _causes(done),
         )
 
     @property
@@ -53,3 +80,20 @@ class BatchSummary:
             yield ""
             yield f"{'failure type':<26}{'count':>8}"
             yield from (f"{name:<26}{count:>8}" for name, count in self.failure_types)
+
+    def cause_lines(self) -> Iterator[str]:
+        """Why variants did not succeed: one group per cause, most frequent first."""
+        if self.causes:
+            yield "variants that did not succeed, by cause:"
+        for cause in self.causes:
+            yield from cause.lines()
+
+
+def _causes(results: list[VariantResult]) -> tuple[FailureCause, ...]:
+    width = LINE_WIDTH - COUNT_WIDTH
+    groups: dict[str, list[str]] = {}
+    for r in results:
+        if not r.succeeded:
+            groups.setdefault(failure_line(r.failure_type, r.message, width), []).append(r.name)
+    ordered = sorted(groups.items(), key=lambda kv: -len(kv[1]))  # stable: first seen first
+    return tuple(FailureCause(line, tuple(names)) for line, names in ordered)

@@ -1,5 +1,7 @@
 """``robocram batch SPEC``: run a spec's variants and print what they found.
 
+The command's options are registered by ``robocram.batch_commands``.
+
 Exit codes (those of ``robocram``): 0 every variant succeeded, 1 some failed or were lost,
 3 the spec or an option cannot be used (the message names the key and the fix), 130 Ctrl-C
 (every worker is stopped first).
@@ -9,34 +11,13 @@ from __future__ import annotations
 
 import argparse
 import sys
-from pathlib import Path
 
 from robocram.batch.batch_spec import load_spec
 from robocram.batch.batch_summary import BatchSummary
 from robocram.batch.errors import BatchError
-from robocram.batch.project_variants import BACKENDS, project_variants
-from robocram.batch.result import VariantResult
+from robocram.batch.project_variants import project_variants
 
 EXIT_ALL_SUCCEEDED, EXIT_SOME_FAILED, EXIT_BAD_INPUT, EXIT_INTERRUPTED = 0, 1, 3, 130
-MESSAGE_WIDTH = 100  # [characters] of a failure message in the list of failed variants
-
-
-def add_batch_command(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
-    """Register ``batch`` among ``robocram``'s subcommands."""
-    batch = commands.add_parser(
-        "batch",
-        help="run a plan's variants from a YAML/JSON spec in parallel worlds, summarise",
-        description="Run the variants of a spec (examples/batch_tabletop.yaml) in parallel "
-        "projection worlds; print the success rate, failure types and median duration. "
-        "Exit 0: all succeeded, 1: some failed or were lost, 3: bad spec or option.",
-    )
-    batch.add_argument("spec", type=Path, help="a .yaml, .yml or .json batch spec")
-    batch.add_argument("--workers", type=int, help="worker processes (default: the spec's, or 2)")
-    batch.add_argument(
-        "--backend", choices=BACKENDS, help="processes (default) or ray (uses RAY_ADDRESS)"
-    )
-    batch.add_argument("--db", type=Path, help="write every variant's run to this trace file")
-    batch.set_defaults(handler=run_batch_command)
 
 
 def run_batch_command(args: argparse.Namespace) -> int:
@@ -67,16 +48,8 @@ def _run(args: argparse.Namespace) -> int:
         results = run.collect()
     summary = BatchSummary.of(results)
     print("\n".join(summary.lines()))
-    _print_failures(results)
+    if summary.causes:
+        print("\n" + "\n".join(summary.cause_lines()))
     if args.db is not None:
         print(f"\nruns traced in {args.db}: robocram runs list {args.db}")
     return EXIT_ALL_SUCCEEDED if summary.succeeded == summary.variants else EXIT_SOME_FAILED
-
-
-def _print_failures(results: list[VariantResult]) -> None:
-    failed = [r for r in results if not r.succeeded]
-    if failed:
-        print("\nvariants that did not succeed:")
-    for r in failed:
-        message = r.message.splitlines()[0] if r.message else ""
-        print(f"  {r.name}: {r.failure_type}: {message[:MESSAGE_WIDTH]}")

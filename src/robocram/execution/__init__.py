@@ -39,7 +39,8 @@ from robocram.execution.tags import tag, tagged, with_tags
 from robocram.execution.task import Task, TaskStatus, TaskStopped
 from robocram.execution.task_context import checkpoint, current_task, sleep, sub_task
 from robocram.execution.task_listeners import TaskListener, listening, task_listeners
-from robocram.execution.task_tree import STATUS_MARKS, TaskSnapshot, TaskTree
+from robocram.execution.task_snapshot import STATUS_MARKS, TaskSnapshot
+from robocram.execution.task_tree import TaskTree
 from robocram.execution.top_level import TopLevel, run_top_level, top_level
 from robocram.execution.try_forms import try_all, try_in_order
 from robocram.execution.whenever import whenever

@@ -17,7 +17,7 @@ from collections.abc import Iterator
 from typing import Any
 
 from robocram.designators import ObjectDesignator, a, an
-from robocram.execution.failures import NavigationPoseUnreachable, PlanFailure
+from robocram.execution.failures import NavigationPoseUnreachable, PlanFailure, failure_line
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import detect, look, navigate, park_arms
 from robocram.plans.container_access import OpenedContainer
@@ -95,6 +95,26 @@ def _stands(
         yield pose, arm
 
 
+def exhausted_message(name: str, tries: int, causes: list[Exception]) -> str:
+    """Why fetching ``name`` gave up, counted as it happened, with the last cause's line.
+
+    A try is a stand where picking up was tried; when there was none, the message says that
+    no stand was found, or that every stand found was blocked, rather than "0 tries".
+    """
+    blocked = sum(isinstance(c, NavigationPoseUnreachable) for c in causes)
+    if tries:
+        text = f"could not fetch {name} in {tries} tr{'y' if tries == 1 else 'ies'}"
+    elif blocked:
+        text = f"could not fetch {name}: the robot would collide at each of {blocked} stands"
+    else:
+        text = f"no stand found for {name}"
+    if not causes:
+        return text
+    last = causes[-1]
+    joint = "; the last: " if tries or blocked > 1 else ": "
+    return text + joint + failure_line(type(last).__name__, str(last))
+
+
 def fetch(
     object: ObjectDesignator | str,  # noqa: A002 - CRAM's key
     arm: str | None = None,
@@ -135,8 +155,7 @@ def fetch(
         log.record("fetch", pose, None)
         return held
     raise FetchExhausted(
-        f"could not fetch {seen.get('name')} in {tries} tries: "
-        + "; ".join(type(c).__name__ for c in causes[-5:]),
+        exhausted_message(str(seen.get("name")), tries, causes),
         object_designator=seen,
         causes=tuple(causes),
         attempts=tries,

@@ -7,10 +7,9 @@ body loads but then fails on every query, so it is refused.
 
 from __future__ import annotations
 
-import pybullet
-
 from robocram.world.body_spec import BodySpec, MeshSpec, UrdfSpec
 from robocram.world.errors import BodyLoadError, TooManyLinksError
+from robocram.world.pybullet_backend import pybullet
 from robocram.world.robot_urdf import MAX_LINKS, checked_urdf_spec
 
 

@@ -16,9 +16,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Literal
 
-import pybullet
-
 from robocram.tf import Pose, Vector3
+from robocram.world.pybullet_backend import pybullet
 
 Rgba = tuple[float, float, float, float]
 ShapeKind = Literal["box", "cylinder", "sphere", "plane"]

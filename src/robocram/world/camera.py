@@ -10,10 +10,10 @@ import math
 from dataclasses import dataclass, replace
 
 import numpy as np
-import pybullet
 from numpy.typing import NDArray
 
 from robocram.tf import Pose
+from robocram.world.pybullet_backend import pybullet
 
 
 @dataclass(frozen=True)

@@ -6,10 +6,9 @@ count as colliding with each other; a robot's self-collisions are not checked ei
 
 from __future__ import annotations
 
-import pybullet
-
 from robocram.world.contact_point import ContactPoint
 from robocram.world.errors import UnknownLinkError
+from robocram.world.pybullet_backend import pybullet
 from robocram.world.world_core import WorldCore
 from robocram.world.world_object import WorldObject
 

@@ -13,10 +13,10 @@ from __future__ import annotations
 from collections.abc import Iterable, Iterator
 
 import numpy as np
-import pybullet
 
 from robocram.world.contacts import CONTACT_DISTANCE, _carried_with, _link_names
 from robocram.world.obstacle_boxes import ObstacleBoxes
+from robocram.world.pybullet_backend import pybullet
 from robocram.world.world_core import WorldCore
 from robocram.world.world_object import WorldObject
 

@@ -13,10 +13,10 @@ from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 
 import numpy as np
-import pybullet
 from numpy.typing import NDArray
 
 from robocram.world.contacts import _link_names
+from robocram.world.pybullet_backend import pybullet
 from robocram.world.world_core import WorldCore
 from robocram.world.world_object import WorldObject
 

@@ -7,10 +7,10 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
-import pybullet
 from numpy.typing import NDArray
 
 from robocram.tf import Vector3
+from robocram.world.pybullet_backend import pybullet
 from robocram.world.world_core import WorldCore
 from robocram.world.world_object import WorldObject
 

@@ -15,11 +15,11 @@ from contextlib import contextmanager
 from dataclasses import dataclass
 
 import numpy as np
-import pybullet
 from numpy.typing import NDArray
 
 from robocram.tf import Vector3
 from robocram.world.camera import Camera
+from robocram.world.pybullet_backend import pybullet
 from robocram.world.ray_hit import first_hit_bodies
 from robocram.world.shape_rays import lone_body
 from robocram.world.world_core import WorldCore

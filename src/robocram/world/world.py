@@ -12,7 +12,6 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Literal
 
 import numpy as np
-import pybullet
 from numpy.typing import NDArray
 
 from robocram.robots import RobotDescription, install_description, load_description
@@ -26,6 +25,7 @@ from robocram.world.contact_point import ContactPoint
 from robocram.world.errors import NoCameraError, WorldValueError
 from robocram.world.obstacle_boxes import ObstacleBoxes
 from robocram.world.png import write_png
+from robocram.world.pybullet_backend import pybullet
 from robocram.world.ray_hit import RayHit, cast_rays
 from robocram.world.robot_urdf import robot_body_spec
 from robocram.world.visibility import Visibility

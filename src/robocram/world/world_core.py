@@ -9,8 +9,6 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterable, Iterator, Mapping
 
-import pybullet
-
 from robocram.robots import mimic_followers
 from robocram.tf import Pose, PoseLike
 from robocram.world.attachment import Attachment, check_acyclic
@@ -26,6 +24,7 @@ from robocram.world.errors import (
     WorldValueError,
 )
 from robocram.world.joint_state import ClampedJoint, JointLimits, clamp_values
+from robocram.world.pybullet_backend import pybullet
 from robocram.world.world_object import RobotObject, WorldObject
 
 ObjectRef = WorldObject | str

@@ -9,10 +9,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import pybullet
-
 from robocram.world.attachment import Attachment
 from robocram.world.errors import WorldClosedError
+from robocram.world.pybullet_backend import pybullet
 from robocram.world.world_core import WorldCore
 from robocram.world.world_object import RobotObject, WorldObject
 

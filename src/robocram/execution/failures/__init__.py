@@ -19,6 +19,7 @@ from robocram.execution.failures.executive import (
     ProcessModuleFailure,
     ProcessModuleInputError,
 )
+from robocram.execution.failures.failure_line import failure_line
 from robocram.execution.failures.flying import (
     FlyingGoalInCollision,
     FlyingGoalNotReached,
@@ -119,4 +120,5 @@ __all__ = [
     "TorsoGoalUnreachable",
     "TorsoLowLevelFailure",
     "failure_class",
+    "failure_line",
 ]

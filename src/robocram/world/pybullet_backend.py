@@ -1,0 +1,44 @@
+"""PyBullet, loaded once for the whole world package, without its build-time banner.
+
+The C extension prints ``pybullet build time: ...`` when it is loaded (to standard error in
+the wheels we use, to standard output in some builds): into every command's output and a
+test's captured text. Every module of ``robocram.world`` imports ``pybullet`` from here,
+so the banner is silenced in one place: file descriptors 1 and 2 point at the null device
+while the extension loads, C's output buffers are flushed there, and both are restored.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import ctypes
+import os
+import sys
+from collections.abc import Iterator
+
+__all__ = ["pybullet"]
+
+
+@contextlib.contextmanager
+def _silenced(descriptors: tuple[int, ...] = (1, 2)) -> Iterator[None]:
+    """Send what C code writes to ``descriptors`` to the null device, then restore them."""
+    sys.stdout.flush()
+    sys.stderr.flush()
+    saved: dict[int, int] = {}
+    null = os.open(os.devnull, os.O_WRONLY)
+    try:
+        for fd in descriptors:
+            with contextlib.suppress(OSError):  # a closed descriptor has nothing to hide
+                saved[fd] = os.dup(fd)
+                os.dup2(null, fd)
+        yield
+    finally:
+        with contextlib.suppress(OSError, AttributeError):
+            ctypes.CDLL(None).fflush(None)  # the banner may wait in C's buffer of a pipe
+        for fd, copy in saved.items():
+            os.dup2(copy, fd)
+            os.close(copy)
+        os.close(null)
+
+
+with _silenced():
+    import pybullet
