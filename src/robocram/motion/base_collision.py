@@ -178,7 +178,7 @@ class BaseCollisionChecker:
             ):
                 if body == self.robot and link in self.allowed_links:
                     continue
-                several = len(self.world.link_names(other)) > 1
+                several = len(other.link_index) > 1
                 yield f"{body}/{link}", f"{other.name}/{other_link}" if several else other.name
 
 

@@ -208,4 +208,4 @@ def _links_below(world: World, robot: str, joints: Sequence[str]) -> tuple[str, 
 
 def _named(world: World, obj: WorldObject, link: str) -> str:
     """An object by its name, or ``object/link`` when it has several links."""
-    return f"{obj.name}/{link}" if len(world.link_names(obj)) > 1 else obj.name
+    return f"{obj.name}/{link}" if len(obj.link_index) > 1 else obj.name

@@ -111,7 +111,7 @@ def colliding_pairs(
             robot.name, ignore, CONTACT_DISTANCE
         ):
             if link not in allowed_links:
-                several = len(world.link_names(obj)) > 1
+                several = len(obj.link_index) > 1
                 hits[(link, f"{obj.name}/{other_link}" if several else obj.name)] = None
         for pair in world.self_contacts(robot.name, own):
             hits[pair] = None
