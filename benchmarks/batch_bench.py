@@ -9,20 +9,35 @@ lower; rerun on an idle one. Ray's own start-up is timed apart (it is started on
 user would). No reference system: CRAM and PyCRAM project one world in one process.
 Each figure is the fastest of ``--rounds`` runs, alternating which worker count goes first,
 so load from other processes biases neither. Workers run one BLAS thread each.
-Usage: python benchmarks/batch_bench.py [--variants 40] [--rounds 2] [--robot pr2] [--no-ray]
+First, issue 27's figure: ``--kitchen`` (default 1,000) variants of
+examples/batch_kitchen.yaml on 2 processes, end to end (goal <= 60 s, >= 95 % succeeding,
+the first result within 2 s), where each variant's time went in its worker (scene,
+restore, placing, tracer, robot set-up, plan), what the parent waited beyond the
+workers' own time (IPC and scheduling), and the same variants' plan run in this one
+process for comparison (goal: a worker's per-variant cost within 20 % of it).
+Usage: python benchmarks/batch_bench.py [--kitchen 1000] [--variants 40] [--rounds 2]
+[--robot pr2] [--no-ray] [--no-tabletop]
 """
 
 from __future__ import annotations
 
 import argparse
 import os
+import re
+import statistics
+import tempfile
 import time
 from dataclasses import dataclass
+from pathlib import Path
 
 import psutil
 from settle_plan import pick_and_settle
 
-from robocram.batch import Variant, project_variants
+from robocram.batch import Variant, VariantResult, project_variants
+from robocram.batch.batch_spec import BatchSpec, load_spec
+from robocram.batch.worker import VariantRunner, WorkerConfig
+
+KITCHEN_SPEC = Path(__file__).resolve().parents[1] / "examples" / "batch_kitchen.yaml"
 
 
 @dataclass(frozen=True)
@@ -112,13 +127,73 @@ def compare(backend: str, batch: list[Variant], robot: str, rounds: int) -> None
     )
 
 
+def kitchen_spec(count: int) -> Path:
+    """The example kitchen spec with ``count`` variants, written to a temporary file."""
+    text = re.sub(r"^variants: *\d+", f"variants: {count}", KITCHEN_SPEC.read_text(), flags=re.M)
+    path = Path(tempfile.mkdtemp()) / "batch_kitchen.yaml"
+    path.write_text(text)
+    return path
+
+
+def kitchen_batch(count: int, workers: int) -> None:
+    """Issue 27's figure: ``count`` kitchen transports end to end, and where time went."""
+    spec = load_spec(kitchen_spec(count))
+    start = time.perf_counter()
+    results: list[VariantResult] = []
+    first = 0.0
+    with project_variants(
+        spec.variants, spec.plan, spec.robot, spec.scene, workers, "processes"
+    ) as run:
+        for result in run:
+            first = first or time.perf_counter() - start
+            results.append(result)
+    wall = time.perf_counter() - start
+    ok = sum(r.succeeded for r in results)
+    print(
+        f"kitchen batch: {len(results)} transports on {workers} processes in {wall:.1f} s "
+        f"({len(results) / wall:.1f} variants/s), {ok} succeeded ({100 * ok / len(results):.1f} "
+        f"%), first result after {first:.2f} s   (goal <= 60 s for 1,000, >= 95 %, first <= 2 s)"
+        f"  (load {os.getloadavg()[0]:.1f})",
+        flush=True,
+    )
+    phases: dict[str, list[float]] = {}
+    for r in results:
+        for phase, spent in r.split:
+            phases.setdefault(phase, []).append(spent)
+    split = "  ".join(f"{phase} {1e3 * sum(v) / len(results):.1f}" for phase, v in phases.items())
+    busy = sum(r.duration for r in results)
+    waited = (wall * workers - busy) / len(results)
+    print(f"  per variant in a worker [ms, mean]: {split}   total {1e3 * busy / len(results):.1f}")
+    print(f"  the parent's wait beyond the workers' time (IPC, idle) [ms]: {1e3 * waited:.1f}")
+    in_process(spec, min(count, 60))
+
+
+def in_process(spec: BatchSpec, count: int) -> None:
+    """The same variants' plan in this process, for the worker's 20 % goal."""
+    runner = VariantRunner(WorkerConfig(spec.plan, spec.scene, spec.robot))
+    variants = list(spec.variants)[:count]
+    runner.run(0, variants[0])  # the scene is built once, as in a worker
+    durations = [runner.run(i, v).duration for i, v in enumerate(variants[1:], 1)]
+    print(
+        f"  the same plan in one process: {1e3 * statistics.mean(durations):.1f} ms mean per "
+        f"variant over {len(durations)} (a worker's total above should be within 20 %)",
+        flush=True,
+    )
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--variants", type=int, default=40)
     parser.add_argument("--robot", default="pr2")
     parser.add_argument("--rounds", type=int, default=2, help="runs of each, fastest kept")
     parser.add_argument("--no-ray", action="store_true", help="only the process backend")
+    parser.add_argument("--kitchen", type=int, default=1000, help="kitchen variants (0: none)")
+    parser.add_argument("--no-tabletop", action="store_true", help="only the kitchen figure")
     args = parser.parse_args()
+    if args.kitchen:
+        kitchen_batch(args.kitchen, 2)
+    if args.no_tabletop:
+        return
     batch = variants(args.variants)
     load = ", ".join(f"{x:.1f}" for x in os.getloadavg())
     print(

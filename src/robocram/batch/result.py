@@ -33,6 +33,7 @@ class VariantResult:
     locations: tuple[tuple[str, Pose7], ...] = ()  # (what for, map pose): stands, spots
     worker: int = -1  # process id of the worker that ran it
     run_id: int | None = None  # its run in the trace store, when one was given
+    split: tuple[tuple[str, float], ...] = ()  # [s] per phase: scene, restore, plan, ...
 
     @property
     def succeeded(self) -> bool:
@@ -41,4 +42,4 @@ class VariantResult:
 
     def outcome(self) -> VariantResult:
         """This result without what depends on the machine (duration, worker, run id)."""
-        return replace(self, duration=0.0, worker=-1, run_id=None)
+        return replace(self, duration=0.0, worker=-1, run_id=None, split=())

@@ -16,7 +16,7 @@ from contextlib import AbstractContextManager, nullcontext
 from dataclasses import dataclass, replace
 from multiprocessing.connection import Connection
 from pathlib import Path
-from typing import Any, Protocol
+from typing import Any, Protocol, TypeVar
 
 import numpy as np
 
@@ -44,6 +44,7 @@ class Scene(Protocol):
     def look_target(self) -> PoseStamped: ...
 
 
+T = TypeVar("T")
 SceneFactory = Callable[[str], Scene]
 Plan = Callable[..., Any]  # plan(look_target, **parameters), run inside simulated_robot
 
@@ -71,24 +72,36 @@ class VariantRunner:
         return self._scenes[robot]
 
     def run(self, index: int, variant: Variant) -> VariantResult:
-        """Run one variant from its robot's initial world; exceptions become the result."""
-        start = time.perf_counter()
+        """Run one variant from its robot's initial world; exceptions become the result.
+
+        The result's ``split`` says where its time went: building the scene (a worker's
+        first variant), restoring the world, placing objects, the tracer, the simulated
+        robot's set-up and the plan itself.
+        """
+        clock = _SplitClock()
         runs: list[int] = []  # the tracer's run ids, filled as the run starts
         try:
-            scene = self._scene(variant.robot or self.config.robot)
+            scene = clock.after("scene", self._scene(variant.robot or self.config.robot))
             with scene.world.stored_state():  # the next variant starts from the scene as built
-                look_target = _place_objects(scene, variant)
+                clock.mark("restore")
+                look_target = clock.after("place", _place_objects(scene, variant))
                 _seed_everything(variant.seed)
                 with self._tracing(scene.world) as tracer:
                     runs = tracer.runs if tracer is not None else runs
+                    clock.mark("trace")
                     with simulated_robot(scene.world, scene.robot):
+                        clock.mark("robot")
                         chosen = self.config.plan(look_target, **variant.parameter_dict())
+                        clock.mark("plan")
+                    clock.mark("robot")
+                clock.mark("trace")
+            clock.mark("restore")
         except Exception as err:  # a variant's failure is data, the batch goes on
             return VariantResult(
                 index, variant.name, VariantStatus.FAILED, type(err).__name__, str(err),
-                time.perf_counter() - start, run_id=runs[-1] if runs else None,
+                clock.total(), run_id=runs[-1] if runs else None, split=clock.split(),
             )  # fmt: skip
-        return _success(index, variant, chosen, time.perf_counter() - start, runs)
+        return _success(index, variant, chosen, clock, runs)
 
     def _tracing(self, world: World) -> AbstractContextManager[Tracer | None]:
         if self.config.traces is None:
@@ -116,12 +129,38 @@ def _seed_everything(seed: int) -> None:
     np.random.seed(seed)
 
 
+class _SplitClock:
+    """Wall time [s] spent per phase of a variant, added up as marks are passed."""
+
+    def __init__(self) -> None:
+        self.start = self.last = time.perf_counter()
+        self.spent: dict[str, float] = {}
+
+    def mark(self, phase: str) -> None:
+        """The time since the last mark was spent in ``phase``."""
+        now = time.perf_counter()
+        self.spent[phase] = self.spent.get(phase, 0.0) + now - self.last
+        self.last = now
+
+    def after(self, phase: str, value: T) -> T:
+        """``value``, computed in ``phase`` (mark it, pass the value through)."""
+        self.mark(phase)
+        return value
+
+    def total(self) -> float:
+        return time.perf_counter() - self.start
+
+    def split(self) -> tuple[tuple[str, float], ...]:
+        return tuple(self.spent.items())
+
+
 def _success(
-    index: int, variant: Variant, chosen: object, duration: float, runs: list[int]
+    index: int, variant: Variant, chosen: object, clock: _SplitClock, runs: list[int]
 ) -> VariantResult:
     picked = choices_of(chosen)
     return VariantResult(
-        index, variant.name, VariantStatus.SUCCEEDED, duration=duration,
+        index, variant.name, VariantStatus.SUCCEEDED, duration=clock.total(),
+        split=clock.split(),
         arm=picked.arm, grasp=picked.grasp, grasp_frame=picked.grasp_frame,
         grasp_name=picked.grasp_name, locations=picked.locations,
         run_id=runs[-1] if runs else None,
