@@ -11,6 +11,7 @@ from robocram.traces.costmap_record import StoredCostmap, run_costmaps
 from robocram.traces.database import TraceDatabase
 from robocram.traces.errors import (
     DamagedTrace,
+    MissingRobotDescription,
     NotATraceDatabase,
     NoWorldState,
     SchemaVersionMismatch,
@@ -48,6 +49,7 @@ __all__ = [
     "DurationStats",
     "FailureRecord",
     "NoWorldState",
+    "MissingRobotDescription",
     "NotATraceDatabase",
     "ReplayClock",
     "ReplayFrame",
