@@ -7,6 +7,7 @@ from __future__ import annotations
 import json
 import shutil
 import sqlite3
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -15,7 +16,9 @@ import pytest
 from mcap.reader import make_reader
 from mcap_ros2.decoder import DecoderFactory
 
+from robocram.execution import top_level
 from robocram.robots import RobotModel
+from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
 from robocram.traces import (
     MissingRobotDescription,
@@ -24,6 +27,7 @@ from robocram.traces import (
     export_mcap,
     replay_frames,
     require_run,
+    trace_to,
 )
 from robocram.world import RobotObject, World
 
@@ -71,6 +75,38 @@ def _link_pose(world: World, obj: Any, link: str) -> Pose:
     return world.link_pose(obj, link) if world.link_names(obj) else world.pose(obj)
 
 
+@dataclass
+class KitchenTrace:
+    """A run that only starts, in the kitchen with a door and a drawer open."""
+
+    db_path: Path
+    run: int
+
+
+@pytest.fixture(scope="module")
+def kitchen_trace(tmp_path_factory: pytest.TempPathFactory) -> KitchenTrace:
+    scene = kitchen_scene("pr2")
+    opened = {"cupboard_door_joint": 0.8, "drawer_unit_drawer_1_joint": 0.2}  # [rad], [m]
+    scene.world.set_joint_states("kitchen", opened)
+    db_path = tmp_path_factory.mktemp("kitchen") / "runs.db"
+    try:
+        with trace_to(db_path, world=scene.world) as tracer, top_level(name="look"):
+            pass
+    finally:
+        scene.world.close()
+    return KitchenTrace(db_path, tracer.runs[0])
+
+
+@pytest.fixture(scope="module", params=["pick_up_trace", "trajectory_run", "kitchen_trace"])
+def every_export(request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory) -> Any:
+    """(trace, MCAP file read back) of a pick-up, a run with trajectories, the kitchen."""
+    trace = request.getfixturevalue(request.param)
+    out = tmp_path_factory.mktemp("mcap") / "run.mcap"
+    with TraceDatabase(trace.db_path, create=False) as db:
+        export_mcap(db, trace.run, out, period=0.1)
+    return trace, _read(out)
+
+
 @pytest.fixture(scope="module", params=["pick_up_trace", "trajectory_run"])
 def exported(request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory) -> Any:
     """(trace, MCAP file read back) of a pick-up, and of a run with trajectories."""
@@ -81,8 +117,8 @@ def exported(request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFa
     return trace, _read(out)
 
 
-def test_the_tf_tree_gives_every_recorded_link_pose(exported: Any) -> None:
-    trace, by_topic = exported
+def test_the_tf_tree_gives_every_recorded_link_pose(every_export: Any) -> None:
+    trace, by_topic = every_export
     ((_, static_stamp, static),) = by_topic["/tf_static"]
     edges = {t.child_frame_id: (t.header.frame_id, _pose(t.transform)) for t in static.transforms}
     tf = by_topic["/tf"]
