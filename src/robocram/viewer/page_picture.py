@@ -11,7 +11,7 @@ from typing import Any
 from robocram.viewer.headless_browser import HeadlessChromium
 from robocram.viewer.viewer import Viewer
 
-CAMERA_FROM = (2.4, 1.5, 1.7)  # [m] in map: the initial camera, beside the robot's table
+CAMERA_FROM = (2.2, 1.4, 2.9)  # [m] in map: the initial camera, above the robot's table
 CAMERA_AT = (0.35, -0.1, 0.65)  # [m] in map: what it looks at
 SETTLE_TIMEOUT = 60.0  # [s] for the 3-D view to stop changing
 
