@@ -10,7 +10,7 @@ import time
 
 import pytest
 
-from robocram.cli import EXIT_OK, main
+from robocram.cli import EXIT_INPUT, EXIT_OK, main
 from robocram.viewer.headless_browser import HeadlessChromium
 
 SPEED = 4.0  # motions play at 4 times their pace: the run lasts a few seconds
@@ -85,5 +85,5 @@ def test_view_no_wait_runs_without_a_browser(capsys: pytest.CaptureFixture[str])
 
 
 def test_view_refuses_a_speed_that_is_not_positive(capsys: pytest.CaptureFixture[str]) -> None:
-    assert main(["view", "--no-wait", "--speed", "0", "--port", str(_free_port())]) == 3
+    assert main(["view", "--no-wait", "--speed", "0", "--port", str(_free_port())]) == EXIT_INPUT
     assert "--speed 0.0 must be positive" in capsys.readouterr().err
