@@ -84,6 +84,12 @@ def _parser() -> argparse.ArgumentParser:
 def _add_viewer_commands(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     view = commands.add_parser("view", help="live demo: watch a pick-up in the browser viewer")
     view.add_argument("--robot", default="pr2", help=ROBOT_HELP)
+    view.add_argument(
+        "--no-wait", action="store_true", help="start the plan at once, not at the first browser"
+    )
+    view.add_argument(
+        "--speed", type=float, default=1.0, help="motions play at this many times their pace"
+    )
     replay = commands.add_parser("replay", help="a stored run in the browser viewer")
     replay.add_argument("db", type=Path, help="trace database (SQLite)")
     replay.add_argument("--run", type=int, help="run id (default: the last run)")
@@ -116,26 +122,48 @@ def _check_address(host: str, port: int) -> None:
 
 
 def _view(args: argparse.Namespace) -> int:
-    from robocram.execution import PlanFailure, listening
+    """Serve the viewer, wait for a browser (or --no-wait), then run the pick-up live."""
+    from robocram.designators import a
+    from robocram.execution import PlanFailure, listening, perform
     from robocram.plans import pick_up
     from robocram.projection import simulated_robot
     from robocram.scenes import tabletop_scene
 
     _check_address(args.host, args.port)
+    if not args.speed > 0.0:
+        raise CliInputError(f"--speed {args.speed} must be positive, e.g. 1 (the robot's pace)")
     viewer_module = _viewer_module()
     scene = tabletop_scene(args.robot)
     try:
-        with viewer_module.Viewer(scene.world, args.host, args.port, "robocram view") as viewer:
+        with (
+            viewer_module.Viewer(scene.world, args.host, args.port, "robocram view") as viewer,
+            contextlib.ExitStack() as page,
+        ):
             print(f"viewer at {viewer.url}", flush=True)
+            browser = None
+            if args.screenshot is not None:  # the picture's browser is the one waited for
+                from robocram.viewer.page_picture import picture_page
+
+                browser = page.enter_context(picture_page(viewer))
+            if not args.no_wait:
+                print("waiting for a browser to open the page (--no-wait: start now)", flush=True)
+                viewer.wait_for_browser()
             try:
                 with (
-                    viewer_module.LiveFeed(viewer, scene.world) as feed,
+                    viewer_module.LiveFeed(viewer, scene.world, args.speed) as feed,
                     listening(feed),
                     simulated_robot(scene.world, scene.robot, name="pick-mug"),
                 ):
+                    stand = a.location(reachable_for=scene.robot, object="mug-1")  # costmap
+                    perform(a.motion(type="going", target=stand))
                     pick_up(scene.look_target)
             except PlanFailure as failure:
                 print(f"the plan failed: {type(failure).__name__}: {failure}", file=sys.stderr)
+            if browser is not None:
+                from robocram.viewer.page_picture import save_picture
+
+                print(f"wrote {save_picture(browser, args.screenshot)}")
+                return EXIT_OK
             return _serve(viewer, args)
     finally:
         scene.world.close()

@@ -14,7 +14,7 @@ from robocram.kinematics import IKSolver, KinematicsCache, PlanarBase, solve_ik
 from robocram.kinematics.kinematics_cache import BoundedMap
 from robocram.kinematics.robot_kinematics import RobotKinematics, robot_kinematics
 from robocram.robots import load_description
-from robocram.robots.model_memo import MODELS
+from robocram.robots.robot_model import MODELS
 from robocram.tf import Pose
 
 CONTAINERS = {"dict", "list", "set", "OrderedDict", "WeakKeyDictionary", "WeakValueDictionary"}

@@ -20,7 +20,7 @@ ARM = """<robot name="arm">
 def test_equal_bytes_share_a_model_and_a_changed_file_is_read_again(tmp_path: Path) -> None:
     file = tmp_path / "arm.urdf"
     file.write_text(ARM.format(upper=1.0))
-    memo = ModelMemo(size=2)
+    memo: ModelMemo[RobotModel] = ModelMemo(size=2)
     built: list[RobotModel] = []
 
     def build() -> RobotModel:
@@ -47,7 +47,7 @@ def test_a_shared_model_warns_again_on_every_load(tmp_path: Path) -> None:
 
 
 def test_the_memo_keeps_at_most_its_size(tmp_path: Path) -> None:
-    memo = ModelMemo(size=2)
+    memo: ModelMemo[RobotModel] = ModelMemo(size=2)
     files = []
     for k in range(3):
         files.append(tmp_path / f"arm{k}.urdf")

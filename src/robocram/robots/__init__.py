@@ -26,7 +26,7 @@ from robocram.robots.interface_facts import install_description
 from robocram.robots.loading import load_description
 from robocram.robots.mimic import mimic_followers
 from robocram.robots.model_additions import BoxSpec, FrameSpec
-from robocram.robots.model_pose import link_pose
+from robocram.robots.model_pose import joint_transform, link_pose
 from robocram.robots.robot_model import RobotModel
 from robocram.robots.urdf_elements import Geometry, Inertial, Joint, Link, Mimic
 
@@ -61,6 +61,7 @@ __all__ = [
     "draft_description",
     "example_robot_data_folder",
     "install_description",
+    "joint_transform",
     "link_pose",
     "load_description",
     "merge_fixed_links",

@@ -22,9 +22,8 @@ from robocram.robots.description_check import (
 from robocram.robots.description_source import description_from
 from robocram.robots.errors import DescriptionCheckError
 from robocram.robots.findings import warn
-from robocram.robots.model_memo import MODELS
 from robocram.robots.package_resolver import PackageResolver
-from robocram.robots.robot_model import RobotModel
+from robocram.robots.robot_model import MODELS, RobotModel
 
 
 def load_description(

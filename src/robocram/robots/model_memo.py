@@ -6,6 +6,7 @@ model. Loading ``"pr2"`` for each new scene parsed the URDF again and so threw a
 away: a user's first plan in each fresh scene paid ~0.1 s of caches again. Models are
 immutable, so loads of the same file (same bytes, same package paths, same added frames
 and boxes) share one; a changed file is parsed anew. At most :data:`MODELS_KEPT` are kept.
+The process's memo is ``robocram.robots.robot_model.MODELS``.
 """
 
 from __future__ import annotations
@@ -16,26 +17,23 @@ import warnings
 from collections import OrderedDict
 from collections.abc import Callable
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import Generic, TypeVar
 
 from robocram.robots.model_additions import BoxSpec, FrameSpec
 
-if TYPE_CHECKING:  # the model reads files through this memo
-    from robocram.robots.robot_model import RobotModel
+M = TypeVar("M")  # the model type (RobotModel, which keeps the process's memo)
 
 MODELS_KEPT = 8  # different robot files a process loads (a few MB each with their caches)
 
 ModelKey = tuple[str, str, tuple[Path, ...], tuple[FrameSpec, ...], tuple[BoxSpec, ...]]
 
 
-class ModelMemo:
+class ModelMemo(Generic[M]):
     """The last :data:`MODELS_KEPT` models built, by the content of what they were built from."""
 
     def __init__(self, size: int = MODELS_KEPT) -> None:
         self.size = size
-        self._models: OrderedDict[ModelKey, tuple[RobotModel, list[warnings.WarningMessage]]] = (
-            OrderedDict()
-        )
+        self._models: OrderedDict[ModelKey, tuple[M, list[warnings.WarningMessage]]] = OrderedDict()
         self._lock = threading.Lock()
 
     def model(
@@ -44,8 +42,8 @@ class ModelMemo:
         package_paths: tuple[Path, ...],
         frames: tuple[FrameSpec, ...],
         boxes: tuple[BoxSpec, ...],
-        build: Callable[[], RobotModel],
-    ) -> RobotModel:
+        build: Callable[[], M],
+    ) -> M:
         """The model kept for ``file``'s current bytes and these additions, or ``build()``.
 
         A file that cannot be read is left to ``build`` to report. The warnings the build
@@ -77,6 +75,3 @@ class ModelMemo:
         """Forget every model (they live on while something else holds them)."""
         with self._lock:
             self._models.clear()
-
-
-MODELS = ModelMemo()  # the process's; loads through load_description use it

@@ -45,6 +45,11 @@ def _motion(joint: Joint, value: float) -> Pose:
     return Pose()
 
 
+def joint_transform(joint: Joint, value: float = 0.0) -> Pose:
+    """``parent_T_child`` of ``joint`` at ``value`` [rad | m]: its origin, then its motion."""
+    return joint.origin * _motion(joint, value)
+
+
 def link_pose(model: RobotModel, link: str, joints: Mapping[str, float] | None = None) -> Pose:
     """Pose of ``link`` in the model's root link for ``joints`` [rad | m].
 
@@ -55,7 +60,7 @@ def link_pose(model: RobotModel, link: str, joints: Mapping[str, float] | None =
     pose = Pose()
     for joint in model.chain(model.root_link, link):
         value = values.get(joint.name, resting_value(joint))
-        pose = pose * joint.origin * _motion(joint, value)
+        pose = pose * joint_transform(joint, value)
     return pose
 
 

@@ -14,6 +14,7 @@ from typing import TypeVar, cast
 
 from robocram.robots.errors import DescriptionError, MissingMeshWarning, UrdfError, closest_names
 from robocram.robots.model_additions import BoxSpec, FrameSpec
+from robocram.robots.model_memo import ModelMemo
 from robocram.robots.package_resolver import PackageResolver
 from robocram.robots.safe_xml import decode_xml, parse_xml
 from robocram.robots.urdf_elements import Collision, Geometry, Inertial, Joint, Link
@@ -215,8 +216,6 @@ class RobotModel:
 
         Equal files share one model for the process (:mod:`~robocram.robots.model_memo`).
         """
-        from robocram.robots.model_memo import MODELS  # here: the memo types with this module
-
         file = Path(path).expanduser()
         paths = tuple(Path(p) for p in package_paths)
 
@@ -256,3 +255,6 @@ class RobotModel:
             parts.joints,
             Path(source).name if source != "<string>" else source,
         )
+
+
+MODELS: ModelMemo[RobotModel] = ModelMemo()  # the process's: equal files share one model

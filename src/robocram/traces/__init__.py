@@ -11,6 +11,7 @@ from robocram.traces.costmap_record import StoredCostmap, run_costmaps
 from robocram.traces.database import TraceDatabase
 from robocram.traces.errors import (
     DamagedTrace,
+    MissingRobotDescription,
     NotATraceDatabase,
     NoWorldState,
     SchemaVersionMismatch,
@@ -37,7 +38,7 @@ from robocram.traces.queries import (
 )
 from robocram.traces.replay_clock import ReplayClock
 from robocram.traces.run_animation import RunAnimation, animate_run
-from robocram.traces.run_replay import ReplayFrame, replay_frames
+from robocram.traces.run_replay import ReplayFrame, replay_frames, robot_in, set_robot_joints
 from robocram.traces.schema import SCHEMA_VERSION
 from robocram.traces.tracer import TRACE_ENV, Tracer, trace_from_environment, trace_to
 from robocram.traces.trajectory_record import StoredTrajectory, replay_clock, run_trajectories
@@ -48,6 +49,7 @@ __all__ = [
     "DurationStats",
     "FailureRecord",
     "NoWorldState",
+    "MissingRobotDescription",
     "NotATraceDatabase",
     "ReplayClock",
     "ReplayFrame",
@@ -75,11 +77,13 @@ __all__ = [
     "replay_clock",
     "replay_frames",
     "require_run",
+    "robot_in",
     "run_costmaps",
     "run_ids",
     "run_trajectories",
     "runs",
     "scene_of",
+    "set_robot_joints",
     "task_tree",
     "trace_from_environment",
     "trace_to",

@@ -86,3 +86,15 @@ class TraceLocked(TraceError):  # noqa: N818
             f"{path} stayed locked by another writer; wait for it to finish or use another file"
         )
         self.path = path
+
+
+class MissingRobotDescription(UserWarning):  # noqa: N818 - reads as what is missing
+    """A run's trace holds no URDF of its robot: it was written before robocram stored them."""
+
+    def __init__(self, run: int, robot: str) -> None:
+        super().__init__(
+            f"run {run}'s trace stores no URDF of robot {robot!r} (written by an older "
+            "robocram): the MCAP file has no /robot_description, so Foxglove draws no robot; "
+            "trace the run again to get it"
+        )
+        self.run, self.robot = run, robot

@@ -1,38 +1,69 @@
-"""Export a stored run to MCAP as ROS 2 messages, for Foxglove, Rerun or ``ros2 bag``.
+"""Export a stored run to MCAP as ROS 2 messages, for Foxglove, rviz2 or ``ros2 bag``.
 
-For each stored world state (the run's start and every motion's end) it writes ``/tf``
-(map -> every link of every robot and every object, flat), ``/joint_states`` (one
-``sensor_msgs/JointState`` per articulated body, ``header.frame_id`` naming the body) and
-``/object_poses/<name>`` (``geometry_msgs/PoseStamped`` in map). Between them, along each
-executed trajectory sampled every ``period``, it writes ``/tf`` and the moving robot's
-``/joint_states``, so a player shows the motion; a base trajectory moves the robot's root
-frame (map -> robot). Link poses come from the run's scene rebuilt in a fresh physics world
+What a real robot would send, so that Foxglove shows the robot and its world:
+
+- ``/tf_static`` once, at the run's start: fixed joints and each robot's odom frame at
+  ``map`` (:mod:`~robocram.traces.tf_frames`);
+- ``/robot_description`` once (``std_msgs/msg/String``): the URDF the trace stored for
+  the run's robot; a trace of an older robocram has none, and the export warns;
+- ``/scene_markers`` once (``visualization_msgs/msg/MarkerArray``): the objects' shapes
+  (:mod:`~robocram.traces.scene_markers`);
+- at each stored world state (the run's start and every motion's end): ``/tf`` (each
+  body's root and movable joints), ``/joint_states`` (one per articulated body,
+  ``header.frame_id`` naming the body) and ``/object_poses/<name>`` in map;
+- between them, along each executed trajectory sampled every ``period``: ``/tf`` and the
+  moving robot's ``/joint_states``, so a player shows the motion.
+
+Link poses come from the run's scene rebuilt in a fresh physics world
 (:func:`~robocram.traces.run_replay.replay_frames`). Messages are stamped on the run's
-replay clock (``traces/replay_clock.py``): wall time, stretched where projection executed a
-trajectory faster than its duration.
+replay clock (``traces/replay_clock.py``): wall time, stretched where projection executed
+a trajectory faster than its duration.
 """
 
 from __future__ import annotations
 
+import json
+import warnings
+from collections.abc import Iterable
 from pathlib import Path
-from typing import Any
 
-from robocram.tf import Pose
 from robocram.traces.database import TraceDatabase
-from robocram.traces.errors import TraceError
+from robocram.traces.errors import MissingRobotDescription, TraceError
 from robocram.traces.queries import require_run
+from robocram.traces.robot_model_record import stored_urdf
 from robocram.traces.ros2_messages import message_definition
+from robocram.traces.ros2_values import Value, header, pose_value, transform
 from robocram.traces.run_replay import SAMPLE_PERIOD, ReplayFrame, replay_frames, robot_in
-from robocram.traces.world_record import StoredWorldState, build_scene
+from robocram.traces.scene_markers import scene_markers
+from robocram.traces.tf_frames import (
+    MAP_FRAME,
+    BodyFrames,
+    Transform,
+    moving_transforms,
+    static_transforms,
+    world_frames,
+)
+from robocram.traces.world_record import build_scene
 from robocram.world import World
 
-MAP_FRAME = "map"
+TF = "tf2_msgs/msg/TFMessage"
+JOINT_STATE = "sensor_msgs/msg/JointState"
+POSE_STAMPED = "geometry_msgs/msg/PoseStamped"
+STRING = "std_msgs/msg/String"
+MARKER_ARRAY = "visualization_msgs/msg/MarkerArray"
+SCHEMAS = (TF, JOINT_STATE, POSE_STAMPED, STRING, MARKER_ARRAY)
+
+Message = tuple[str, str, Value]  # topic, schema name, message
 
 
 def export_mcap(db: TraceDatabase, run: int, out: str | Path, period: float = SAMPLE_PERIOD) -> int:
     """Write run ``run`` of ``db`` to the MCAP file ``out``; return the messages written.
 
     Trajectories are sampled every ``period`` [s] of motion time.
+
+    Warns:
+        MissingRobotDescription: the trace stored no URDF of the run's robot (written by
+            an older robocram); the rest is exported without ``/robot_description``.
     """
     try:
         from mcap_ros2.writer import Writer
@@ -44,96 +75,77 @@ def export_mcap(db: TraceDatabase, run: int, out: str | Path, period: float = SA
     row = require_run(db, run)
     if row.scene is None:
         raise TraceError(f"run {run} stored no scene; trace with trace_to(db, world=world)")
+    urdf = _robot_description(db, run, row.scene)
     written = 0
     with build_scene(row.scene) as world, open(out, "wb") as stream:
         writer = Writer(stream)
-        schemas = {
-            name: writer.register_msgdef(name, message_definition(name))
-            for name in (
-                "tf2_msgs/TFMessage",
-                "sensor_msgs/JointState",
-                "geometry_msgs/PoseStamped",
-            )
-        }
-        for frame in replay_frames(db, run, world, period):
+        schemas = {name: writer.register_msgdef(name, message_definition(name)) for name in SCHEMAS}
+        bodies = world_frames(world)
+        for index, frame in enumerate(replay_frames(db, run, world, period)):
+            messages = _frame_messages(world, bodies, frame)
+            if index == 0:
+                messages = _once(world, bodies, frame.time, urdf) + messages
             stamp = int(round(frame.time * 1e9))  # [ns] since the epoch, replay clock
-            for topic, schema, message in _frame_messages(world, frame, frame.time):
+            for topic, schema, message in messages:
                 writer.write_message(topic, schemas[schema], message, log_time=stamp)
                 written += 1
         writer.finish()
     return written
 
 
-Message = tuple[str, str, dict[str, Any]]  # topic, schema name, message
+def _robot_description(db: TraceDatabase, run: int, scene: str) -> str | None:
+    """The stored URDF of the scene's (first) robot; ``None``, with a warning, if absent."""
+    robots = [recipe for recipe in json.loads(scene) if "robot" in recipe]
+    if not robots:
+        return None
+    digest = robots[0].get("urdf_digest")
+    urdf = None if digest is None else stored_urdf(db, digest)
+    if urdf is None:
+        warnings.warn(MissingRobotDescription(run, robots[0]["robot"]), stacklevel=3)
+    return urdf
 
 
-def _frame_messages(world: World, frame: ReplayFrame, time: float) -> list[Message]:
+def _once(world: World, bodies: list[BodyFrames], time: float, urdf: str | None) -> list[Message]:
+    """The latched messages: fixed transforms, the robot's URDF, the objects' shapes."""
+    once = [("/tf_static", TF, _tf_message(static_transforms(bodies), time))]
+    if urdf is not None:
+        once.append(("/robot_description", STRING, {"data": urdf}))
+    once.append(("/scene_markers", MARKER_ARRAY, scene_markers(world, bodies, time)))
+    return once
+
+
+def _frame_messages(world: World, bodies: list[BodyFrames], frame: ReplayFrame) -> list[Message]:
     """A stored state: TF, every body's joints, object poses; a sample: TF, the robot's joints."""
-    if frame.state is not None:
-        return _messages(world, frame.state, time)
-    assert frame.trajectory is not None  # a frame is a state or a sample
-    robot = robot_in(world, frame.trajectory.robot)
-    return [_tf(world, time), _joint_state(robot, world.joint_states(robot), time)]
+    tf = ("/tf", TF, _tf_message(moving_transforms(world, bodies), frame.time))
+    if frame.state is None:
+        assert frame.trajectory is not None  # a frame is a state or a sample
+        robot = robot_in(world, frame.trajectory.robot)
+        return [tf, _joint_state(robot, world.joint_states(robot), frame.time)]
+    out = [tf]
+    out += [_joint_state(body, joints, frame.time) for body, joints in frame.state.joints.items()]
+    stamp = header(frame.time, MAP_FRAME)
+    for name, pose in frame.state.poses.items():
+        message: Value = {"header": stamp, "pose": pose_value(pose)}
+        out.append((f"/object_poses/{name}", POSE_STAMPED, message))
+    return out
 
 
-def _tf(world: World, time: float) -> Message:
-    header = _header(time, MAP_FRAME)
-    transforms = [
-        {"header": header, "child_frame_id": frame, "transform": _transform(pose)}
-        for frame, pose in _frames(world).items()
-    ]
-    return ("/tf", "tf2_msgs/TFMessage", {"transforms": transforms})
+def _tf_message(transforms: Iterable[Transform], time: float) -> Value:
+    return {
+        "transforms": [
+            {"header": header(time, parent), "child_frame_id": child, "transform": transform(pose)}
+            for parent, child, pose in transforms
+        ]
+    }
 
 
 def _joint_state(body: str, joints: dict[str, float], time: float) -> Message:
     names = list(joints)
-    message = {
-        "header": _header(time, body),
+    message: Value = {
+        "header": header(time, body),
         "name": names,
         "position": [joints[n] for n in names],
         "velocity": [],
         "effort": [],
     }
-    return ("/joint_states", "sensor_msgs/JointState", message)
-
-
-def _messages(world: World, state: StoredWorldState, time: float) -> list[Message]:
-    header = _header(time, MAP_FRAME)
-    out = [_tf(world, time)]
-    out += [_joint_state(body, joints, time) for body, joints in state.joints.items()]
-    for name, pose in state.poses.items():
-        message = {"header": header, "pose": _pose(pose)}
-        out.append((f"/object_poses/{name}", "geometry_msgs/PoseStamped", message))
-    return out
-
-
-def _frames(world: World) -> dict[str, Pose]:
-    """map_T_frame of every object root and every link of an articulated body."""
-    frames: dict[str, Pose] = {}
-    for obj in world.objects():
-        frames[obj.name] = world.pose(obj)
-        for link in world.link_names(obj)[1:]:
-            frames.setdefault(link, world.link_pose(obj, link))
-    return frames
-
-
-def _header(time: float, frame: str) -> dict[str, Any]:
-    sec = int(time // 1)
-    nanosec = min(int(round((time - sec) * 1e9)), 999_999_999)
-    return {"stamp": {"sec": sec, "nanosec": nanosec}, "frame_id": frame}
-
-
-def _transform(pose: Pose) -> dict[str, Any]:
-    (x, y, z), (qx, qy, qz, qw) = pose.position, pose.orientation
-    return {
-        "translation": {"x": x, "y": y, "z": z},
-        "rotation": {"x": qx, "y": qy, "z": qz, "w": qw},
-    }
-
-
-def _pose(pose: Pose) -> dict[str, Any]:
-    (x, y, z), (qx, qy, qz, qw) = pose.position, pose.orientation
-    return {
-        "position": {"x": x, "y": y, "z": z},
-        "orientation": {"x": qx, "y": qy, "z": qz, "w": qw},
-    }
+    return ("/joint_states", JOINT_STATE, message)

@@ -26,8 +26,8 @@ from sqlalchemy import (
 )
 from sqlalchemy.orm import DeclarativeBase, Mapped, mapped_column
 
-SCHEMA_VERSION = 4  # 2: one row per world state, task ids per run; 3: costmaps; 4: trajectories
-ADDED_TABLES = {4: ("trajectories",)}  # version -> the tables it added to the one before
+SCHEMA_VERSION = 5  # 2: world state rows, task ids per run; 3: costmaps; 4: trajectories; 5: URDFs
+ADDED_TABLES = {4: ("trajectories",), 5: ("robot_models",)}  # version -> tables it added
 
 
 class Base(DeclarativeBase):
@@ -153,6 +153,19 @@ class TrajectoryRow(Base):
     accelerations: Mapped[bytes] = mapped_column(LargeBinary)  # [rad/s^2 | m/s^2]
 
     __table_args__ = (Index("ix_trajectories_run", "run_id", "sequence"),)
+
+
+class RobotModelRow(Base):
+    """The URDF text of a robot a run's scene holds, once per content (its SHA-1 digest).
+
+    A scene names its robots' models by digest, so a thousand runs of one robot store one
+    text, and an export shows the robot that ran, whatever the built-in is today.
+    """
+
+    __tablename__ = "robot_models"
+    digest: Mapped[str] = mapped_column(String, primary_key=True)  # SHA-1 of the text, hex
+    name: Mapped[str] = mapped_column(String)  # the description's name
+    urdf: Mapped[str] = mapped_column(Text)
 
 
 TASKS_PER_RUN = 1 << 32  # task keys of one run: run id * TASKS_PER_RUN + start order

@@ -16,6 +16,7 @@ from sqlalchemy import Connection, insert
 from robocram.costmaps import Costmap
 from robocram.motion import JointTrajectory
 from robocram.traces.costmap_record import costmap_row
+from robocram.traces.robot_model_record import INSERT_MODEL
 from robocram.traces.schema import (
     Base,
     CostmapRow,
@@ -106,6 +107,7 @@ class Pending:
     ended_runs: list[RunBuffer] = field(default_factory=list)
     costmaps: list[tuple[TaskEntry, float, Any, Costmap]] = field(default_factory=list)
     trajectories: list[TrajectoryEntry] = field(default_factory=list)
+    robot_models: list[dict[str, str]] = field(default_factory=list)  # robot_models rows
 
     def __bool__(self) -> bool:
         return bool(
@@ -115,6 +117,7 @@ class Pending:
             or self.ended_runs
             or self.costmaps
             or self.trajectories
+            or self.robot_models
         )
 
 
@@ -169,6 +172,7 @@ def write(connection: Connection, pending: Pending) -> None:
         (_FINISH_RUN, ends),
         (_INSERT_COSTMAPS, costmaps),
         (_INSERT_TRAJECTORIES, trajectories),
+        (INSERT_MODEL, pending.robot_models),
     ):
         if rows:
             cursor.executemany(sql, rows)

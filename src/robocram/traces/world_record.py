@@ -2,8 +2,8 @@
 
 A :class:`StoredWorldState` is what a motion leaves behind: every object's root pose, the
 joint positions of articulated bodies and the attachments. A scene is the list of body
-recipes (robots by description name, shapes, meshes, URDFs) from which a replay rebuilds
-the world in a fresh physics client.
+recipes (robots by description name and URDF digest, shapes, meshes, URDFs) from which a
+replay rebuilds the world in a fresh physics client.
 """
 
 from __future__ import annotations
@@ -17,6 +17,7 @@ from sqlalchemy.orm import Session
 
 from robocram.tf import Pose
 from robocram.traces.errors import TraceError
+from robocram.traces.robot_model_record import urdf_digest
 from robocram.traces.schema import WorldStateRow
 from robocram.world import Attachment, MeshSpec, RobotObject, ShapeSpec, UrdfSpec, World
 
@@ -118,6 +119,7 @@ def _body_recipe(obj: Any) -> dict[str, Any]:
     spec = obj.spec
     if isinstance(obj, RobotObject):
         recipe["robot"] = obj.description.name
+        recipe["urdf_digest"] = urdf_digest(obj.description.model)  # robot_models key
     elif isinstance(spec, ShapeSpec):
         recipe["shape"] = {"shape": spec.shape, "size": spec.size, "mass": spec.mass}
         recipe["shape"]["color"] = spec.color

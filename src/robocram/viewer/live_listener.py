@@ -6,19 +6,26 @@ the slow part, drawing and sending to browsers, at most ``MAX_PUSH_RATE`` times 
 it skips to the newest state, so the viewer barely slows a plan (the feeder's Python work
 would otherwise take the plan's turns at the interpreter). Use it as
 ``with LiveFeed(viewer, world) as feed, listening(feed): ...``.
+
+Projection runs far faster than the robot would move. To be watched, a feed given a
+``speed`` paces the plan instead: after each motion the plan waits until the page has
+played the motion's trajectories (at ``speed`` times their own pace), every open page
+has drawn the state after it, and :data:`DWELL` seconds have passed, so every state
+reaches the page and stays long enough to be seen.
 """
 
 from __future__ import annotations
 
 import threading
 import time
-from contextlib import AbstractContextManager
+from contextlib import ExitStack
 from types import TracebackType
 from typing import Any
 
 from robocram.costmaps import Costmap, observing_costmaps
 from robocram.designators import MotionDesignator
 from robocram.execution import Task, TaskListener, TaskSnapshot, current_task
+from robocram.motion import JointTrajectory, trajectory_listener
 from robocram.traces import StoredCostmap, StoredWorldState
 from robocram.viewer.timeline import Moment
 from robocram.viewer.viewer import Viewer
@@ -26,19 +33,26 @@ from robocram.world import World
 
 FLUSH_TIMEOUT = 120.0  # [s] for the feeder to send what is queued when the block ends
 MAX_PUSH_RATE = 5.0  # [Hz] pushes to the browsers while a plan runs; every state is kept
+DWELL = 0.3  # [s] a paced feed shows each drawn state this long before the plan goes on
+
+Step = tuple[Moment, tuple[JointTrajectory, ...]]  # a state, the trajectories that led to it
 
 
 class LiveFeed(TaskListener):
     """Sends ``viewer`` each top level's tree and ``world``'s state after every motion."""
 
-    def __init__(self, viewer: Viewer, world: World) -> None:
+    def __init__(self, viewer: Viewer, world: World, speed: float | None = None) -> None:
+        if speed is not None and not speed > 0.0:
+            raise ValueError(f"the viewing speed must be positive, got {speed}")
         self.viewer = viewer
         self.world = world
+        self.speed = speed  # None: the plan runs at full speed, the page skips states
         self._root: Task | None = None
         self._motions: set[int] = set()
-        self._queued: list[Moment] = []
+        self._queued: list[Step] = []
+        self._executed: list[JointTrajectory] = []  # since the last motion ended (paced)
         self._costmaps: list[StoredCostmap] = []
-        self._observing: AbstractContextManager[Any] | None = None
+        self._observing: ExitStack | None = None
         self._tree_changed = False
         self._stopping = False
         self._busy = False
@@ -47,8 +61,10 @@ class LiveFeed(TaskListener):
 
     def __enter__(self) -> LiveFeed:
         self._stopping = False
-        self._observing = observing_costmaps(self.costmap_built)
-        self._observing.__enter__()
+        self._observing = ExitStack()
+        self._observing.enter_context(observing_costmaps(self.costmap_built))
+        if self.speed is not None:
+            self._observing.enter_context(trajectory_listener(self.trajectory_executed))
         self._thread = threading.Thread(target=self._feed, name="robocram:live-feed", daemon=True)
         self._thread.start()
         return self
@@ -60,7 +76,7 @@ class LiveFeed(TaskListener):
         tb: TracebackType | None,
     ) -> None:
         if self._observing is not None:
-            self._observing.__exit__(None, None, None)
+            self._observing.close()
         self.flush()
         with self._wake:
             self._stopping = True
@@ -82,7 +98,7 @@ class LiveFeed(TaskListener):
             if self._root is None or task.root is not self._root:
                 self._root = task.root
                 state = StoredWorldState.capture(self.world, task.start_time or 0.0)
-                self._queued.append(Moment(state, None))
+                self._queued.append((Moment(state, None), ()))
             self._tree_changed = True
             self._wake.notify_all()
 
@@ -100,9 +116,17 @@ class LiveFeed(TaskListener):
         state = StoredWorldState.capture(self.world, task.end_time or 0.0) if motion else None
         with self._wake:
             if state is not None:
-                self._queued.append(Moment(state, task.path))
+                executed, self._executed = tuple(self._executed), []
+                self._queued.append((Moment(state, task.path), executed))
             self._tree_changed = True
             self._wake.notify_all()
+            if state is not None and self.speed is not None:  # paced: the page catches up
+                self._wake.wait_for(lambda: not (self._queued or self._busy), FLUSH_TIMEOUT)
+
+    def trajectory_executed(self, trajectory: JointTrajectory) -> None:
+        """Keep a trajectory the robot executed, to play it before its motion's end state."""
+        with self._wake:
+            self._executed.append(trajectory)
 
     def costmap_built(self, designator: Any, costmap: Costmap) -> None:
         """Keep a costmap a location was resolved through, for the feeder to draw."""
@@ -128,7 +152,7 @@ class LiveFeed(TaskListener):
                 for costmap in costmaps:
                     self.viewer.add_costmap(costmap)
                 if moments:
-                    self.viewer.add_moments(moments)
+                    self._show(moments)
                 if tree_changed and root is not None:
                     self.viewer.set_tree(TaskSnapshot.of(root))
             finally:
@@ -136,6 +160,18 @@ class LiveFeed(TaskListener):
                     self._busy = False
                     self._wake.notify_all()
                     self._wake.wait_for(lambda: self._stopping, pause)  # the rate bound
+
+    def _show(self, steps: list[Step]) -> None:
+        """Unpaced, the newest state at once; paced, each motion played, each state kept."""
+        if self.speed is None:
+            self.viewer.add_moments([moment for moment, _ in steps])
+            return
+        for moment, trajectories in steps:
+            for trajectory in trajectories:
+                self.viewer.play(trajectory, self.speed)
+            self.viewer.add_moments([moment])
+            self.viewer.wait_until_drawn()
+            time.sleep(DWELL)
 
     def _has_work(self, stopping: bool = True) -> bool:
         queued = self._queued or self._costmaps or self._tree_changed

@@ -10,19 +10,24 @@ from __future__ import annotations
 
 import bisect
 import errno
+import queue
 import socket
 import threading
+import time
 from typing import Any
 
 import viser
 
 from robocram.execution import TaskSnapshot
+from robocram.motion import JointTrajectory
 from robocram.traces import (
     StoredCostmap,
     TraceDatabase,
     build_scene,
     require_run,
+    robot_in,
     run_costmaps,
+    set_robot_joints,
     task_tree,
 )
 from robocram.viewer.costmap_overlay import CostmapOverlay
@@ -35,6 +40,8 @@ from robocram.world import World
 
 DEFAULT_HOST = "127.0.0.1"
 DEFAULT_PORT = 8080
+READY_PICTURE = 16  # [px] side of the picture asked of a page to know it has drawn
+DRAW_TIMEOUT = 60.0  # [s] a paced live run waits at most this long for a page to draw
 
 
 def check_port(host: str, port: int) -> None:
@@ -81,11 +88,50 @@ class Viewer:
         toggle.on_update(lambda _event: self.overlay.set_visible(bool(toggle.value)))
         self.tasks = TaskPanel(gui, self.show_task)
         self.shown = -1  # index of the moment on screen
+        self._browsers: queue.Queue[viser.ClientHandle] = queue.Queue()
+        self.server.on_client_connect(self._browsers.put)
 
     @property
     def url(self) -> str:
         """Where a browser finds the page."""
         return f"http://{self.server.get_host()}:{self.server.get_port()}"
+
+    def wait_for_browser(self, timeout: float | None = None) -> bool:
+        """Wait until a browser has opened the page and drawn the world (``timeout`` [s]
+        for each, None: for ever); return whether one has.
+
+        A page connects long before it has built the scene (software WebGL takes seconds);
+        asking it for a small picture returns once it has drawn everything sent before,
+        so a live run started after this is seen from its start.
+        """
+        try:
+            browser = self._browsers.get(timeout=timeout)
+        except queue.Empty:
+            return False
+        return _drawn(browser, timeout)
+
+    def wait_until_drawn(self, timeout: float = DRAW_TIMEOUT) -> None:
+        """Wait until every open page has drawn what was sent to it (or ``timeout`` [s])."""
+        for browser in list(self.server.get_clients().values()):
+            _drawn(browser, timeout)
+
+    def play(self, trajectory: JointTrajectory, speed: float = 1.0) -> None:
+        """Move the robot along ``trajectory`` on screen, at ``speed`` times its own pace.
+
+        Starts from the moment shown (the state the motion started from, when following a
+        live run); scrubbed back (not following), nothing is played.
+        """
+        if not self.follow.value or not trajectory.points:
+            return
+        with self._lock:
+            robot = robot_in(self.display, trajectory.robot)
+        where = f"**state {self.shown}**, then moving ({trajectory.kind})"
+        for t, positions in trajectory.sampled(REPLAY_PERIOD):
+            with self._lock:
+                set_robot_joints(self.display, robot, positions)
+                self.view.show(self.display)
+            self.caption.content = f"{where}: {t:.1f} of {trajectory.duration:.1f} s"
+            time.sleep(REPLAY_PERIOD / speed)
 
     def add_moments(self, moments: list[Moment]) -> None:
         """Add world states; when following, show the newest at once."""
@@ -184,6 +230,15 @@ class Viewer:
 
     def __exit__(self, *exc: Any) -> None:
         self.close()
+
+
+def _drawn(browser: viser.ClientHandle, timeout: float | None) -> bool:
+    """Whether the page drew a tiny picture in time: it has drawn all sent before it."""
+    try:
+        browser.get_render(READY_PICTURE, READY_PICTURE, timeout=timeout)
+    except TimeoutError:
+        return False
+    return True
 
 
 def _set_value(handle: Any, value: Any) -> None:

@@ -1,0 +1,89 @@
+"""``robocram view`` watched live in headless Chromium: it waits for the browser, then the
+page sees the world change state by state while the plan runs."""
+
+from __future__ import annotations
+
+import re
+import socket
+import threading
+import time
+
+import pytest
+
+from robocram.cli import EXIT_INPUT, EXIT_OK, main
+from robocram.viewer.headless_browser import HeadlessChromium
+
+SPEED = 4.0  # motions play at 4 times their pace: the run lasts a few seconds
+STATES_SEEN = 5  # at least this many different world states reach the page
+SERVE_AFTER = 3.0  # [s] the page is served after the run (its last updates arrive)
+SERVER_POLLS, POLL = 1200, 0.1  # looks for the server to wait [s apart]: a hang guard
+
+# Installed before the page's own scripts: records every "state N:" the caption shows, from
+# the browser's side (a DOM observer), however briefly it is shown.
+WATCHER = r"""
+window.__states = [];
+window.__waited = false;
+new MutationObserver(() => {
+  const text = document.body ? document.body.innerText : '';
+  if (text.includes('waiting for a run')) window.__waited = true;
+  for (const match of text.matchAll(/\bstate (\d+):/g)) {
+    const n = Number(match[1]);
+    if (!window.__states.includes(n)) window.__states.push(n);
+  }
+}).observe(document, {subtree: true, childList: true, characterData: true});
+"""
+
+
+def _free_port() -> int:
+    with socket.socket() as probe:
+        probe.bind(("127.0.0.1", 0))
+        return int(probe.getsockname()[1])
+
+
+def _run_view(argv: list[str], codes: list[int]) -> threading.Thread:
+    thread = threading.Thread(target=lambda: codes.append(main(argv)), daemon=True)
+    thread.start()
+    return thread
+
+
+def test_view_waits_for_the_browser_then_the_page_sees_the_run(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    port = _free_port()
+    codes: list[int] = []
+    argv = ["view", "--port", str(port), "--speed", str(SPEED), "--seconds", str(SERVE_AFTER)]
+    thread = _run_view(argv, codes)
+    said = ""
+    for _ in range(SERVER_POLLS):  # the server listens, then says it waits
+        said += capsys.readouterr().out
+        if "waiting for a browser" in said or not thread.is_alive():
+            break
+        time.sleep(POLL)
+    assert "waiting for a browser" in said
+    with HeadlessChromium() as browser:
+        browser.call("Page.enable")
+        browser.call("Page.addScriptToEvaluateOnNewDocument", source=WATCHER)
+        browser.open(f"http://127.0.0.1:{port}")
+        thread.join(timeout=600)  # the run, then SERVE_AFTER of serving
+        seen = browser.evaluate("window.__states")
+        waited = browser.evaluate("window.__waited")
+        text = browser.evaluate("document.body.innerText")
+    assert codes == [EXIT_OK]
+    assert waited  # the page showed the viewer before any state: the plan waited for it
+    assert len(seen) >= STATES_SEEN, seen
+    assert seen == sorted(seen)  # in the order the plan reached them
+    assert "pick-mug succeeded" in text and "perform going succeeded" in text
+    last = re.search(r"state (\d+):", text)
+    assert last is not None and int(last.group(1)) == max(seen) == 12  # the start, 12 motions
+
+
+def test_view_no_wait_runs_without_a_browser(capsys: pytest.CaptureFixture[str]) -> None:
+    argv = ["view", "--no-wait", "--port", str(_free_port()), "--speed", "50", "--seconds", "0"]
+    assert main(argv) == EXIT_OK
+    out = capsys.readouterr()
+    assert "waiting for a browser" not in out.out and "the plan failed" not in out.err
+
+
+def test_view_refuses_a_speed_that_is_not_positive(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["view", "--no-wait", "--speed", "0", "--port", str(_free_port())]) == EXIT_INPUT
+    assert "--speed 0.0 must be positive" in capsys.readouterr().err
