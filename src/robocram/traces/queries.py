@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from sqlalchemy import case, func, select
 
@@ -11,7 +12,9 @@ from robocram.execution import TaskSnapshot, TaskStatus
 from robocram.traces.database import TraceDatabase
 from robocram.traces.errors import NoWorldState, UnknownRun
 from robocram.traces.schema import DesignatorPropertyRow, RunRow, TaskRow, WorldStateRow
-from robocram.traces.world_record import StoredWorldState, load_world_state
+
+if TYPE_CHECKING:  # loading a world state needs the physics world; listing runs does not
+    from robocram.traces.world_record import StoredWorldState
 
 
 @dataclass(frozen=True)
@@ -182,6 +185,8 @@ def world_state_at(db: TraceDatabase, run: int, time: float) -> StoredWorldState
         state_id = session.scalar(query)
         if state_id is None:
             raise NoWorldState(run, time)
+        from robocram.traces.world_record import load_world_state  # the physics, when asked
+
         return load_world_state(session, state_id)
 
 
