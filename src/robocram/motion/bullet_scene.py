@@ -13,10 +13,16 @@ from __future__ import annotations
 
 import contextlib
 from collections.abc import Collection, Iterator, Mapping, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
 
 from robocram.motion.allowed_contacts import AllowedContacts, Other
 from robocram.motion.configuration_checker import Configuration, LinkPair
 from robocram.motion.errors import MotionError
+from robocram.motion.joint_trajectory import FloatArray
+from robocram.motion.travel_bound import link_radii
 from robocram.world import ObstacleBoxes, World, WorldObject
 
 CLEARANCE_REACH = 0.1  # [m] distances asked for: a free configuration clears this much
@@ -54,6 +60,7 @@ class BulletScene:
         )
         self._posed = False
         self._obstacles: ObstacleBoxes | None = None  # read once per posed block
+        self._levers: _LeverData | None = None  # what joint_levers needs, read once
 
     @property
     def reach(self) -> float:
@@ -127,6 +134,39 @@ class BulletScene:
             self.world.set_joint_states(self.robot, values)
             return self._clearances_now(reach)
 
+    def lever_links(self) -> tuple[str, ...]:
+        """The moving links and the objects the robot holds (they ride on a link)."""
+        return (*self.moving_links, *self.world.attachments(self.robot))
+
+    def joints_after(self) -> NDArray[np.bool_]:
+        """``[i, k]``: whether joint k's child link moves with joint i (k below i)."""
+        return self._lever_data().after
+
+    def joint_levers(self, links: Sequence[str]) -> FloatArray:
+        """Per link of ``links`` (a moving link, or a held object: its carrier), per joint:
+        the most [m] a point of the link moves per unit change of the joint, as the robot
+        is posed now (the distance from the joint's axis to the link's frame plus the
+        link's radius; 1 for a prismatic joint; 0 for joints above which it is not).
+
+        Far tighter than :class:`TravelBound`'s levers, which hold whatever the other joints
+        do: a folded arm's hand is near the shoulder's axis, not an arm's length away.
+        """
+        data = self._lever_data()
+        rows = [data.row[data.carriers.get(link, link)] for link in links]
+        frames = np.asarray(self.world.link_frames(self.robot, data.frame_links), dtype=float)
+        centres = frames[data.centre_rows, :3][rows]  # (links, 3)
+        origins = frames[data.joint_rows, :3]  # (joints, 3)
+        axes = _rotated(frames[data.joint_rows, 3:], data.local_axes)  # (joints, 3)
+        arms = np.cross(centres[:, None, :] - origins[None, :, :], axes[None, :, :])
+        levers = np.linalg.norm(arms, axis=2) + data.radii[rows][:, None]
+        levers = np.where(data.prismatic[None, :], 1.0, levers)
+        return np.where(data.below[rows], levers, 0.0)
+
+    def _lever_data(self) -> _LeverData:
+        if self._levers is None:
+            self._levers = _LeverData.of(self.world, self.robot, self._joints, self.moving_links)
+        return self._levers
+
     def _clearance_now(self, reach: float) -> float:
         return min(self._clearances_now(reach).values(), default=reach)
 
@@ -188,6 +228,59 @@ class BulletScene:
                     if first_only:
                         return list(hits)
         return list(hits)
+
+
+@dataclass(frozen=True)
+class _LeverData:
+    """What :meth:`BulletScene.joint_levers` reads once: rows, axes, radii, masks."""
+
+    frame_links: tuple[str, ...]  # links whose frames are read per configuration
+    row: dict[str, int]  # moving link -> its row below
+    carriers: dict[str, str]  # held object -> the link it rides on
+    centre_rows: NDArray[np.intp]  # per moving link: its row in frame_links
+    joint_rows: NDArray[np.intp]  # per joint: its child link's row in frame_links
+    local_axes: FloatArray  # (joints, 3) each joint's axis in its child link's frame
+    prismatic: NDArray[np.bool_]  # (joints,)
+    radii: FloatArray  # (links,) [m] about each link's frame, held objects included
+    below: NDArray[np.bool_]  # (links, joints) whether the joint moves the link
+    after: NDArray[np.bool_]  # (joints, joints) whether joint k's child moves with joint i
+
+    @classmethod
+    def of(
+        cls, world: World, robot: str, joints: Sequence[str], moving: Sequence[str]
+    ) -> _LeverData:
+        model = world.robot(robot).description.model
+        children = [model.joints[j].child for j in joints]
+        frame_links = tuple(dict.fromkeys([*moving, *children]))
+        at = {link: k for k, link in enumerate(frame_links)}
+        radii = link_radii(world, robot)
+        moved_by = [set(_links_below(world, robot, [j])) for j in joints]
+        below = np.array(
+            [[link in links for links in moved_by] for link in moving], dtype=bool
+        ).reshape(len(moving), len(joints))
+        return cls(
+            frame_links,
+            {link: k for k, link in enumerate(moving)},
+            dict(world.attachments(robot)),
+            np.array([at[link] for link in moving], dtype=np.intp),
+            np.array([at[c] for c in children], dtype=np.intp),
+            np.array([model.joints[j].axis for j in joints], dtype=float).reshape(-1, 3),
+            np.array([model.joints[j].type == "prismatic" for j in joints], dtype=bool),
+            np.array([radii.get(link, 0.0) for link in moving], dtype=float),
+            below,
+            np.array(
+                [[c in links and c != model.joints[j].child for c in children]
+                 for j, links in zip(joints, moved_by, strict=True)],
+                dtype=bool,
+            ).reshape(len(joints), len(joints)),
+        )  # fmt: skip
+
+
+def _rotated(quaternions: FloatArray, vectors: FloatArray) -> FloatArray:
+    """Each vector turned by its quaternion ``(x, y, z, w)``, row by row."""
+    q, w = quaternions[:, :3], quaternions[:, 3:4]
+    t = 2.0 * np.cross(q, vectors)
+    return vectors + w * t + np.cross(q, t)
 
 
 def _links_below(world: World, robot: str, joints: Sequence[str]) -> tuple[str, ...]:

@@ -55,6 +55,23 @@ class ClearanceChecker(ConfigurationChecker, Protocol):
         ...
 
 
+@runtime_checkable
+class LeverChecker(ClearanceChecker, Protocol):
+    """A clearance checker that can also bound how fast its links move, as posed now."""
+
+    def lever_links(self) -> tuple[str, ...]:
+        """The links (and held objects) that move: what :meth:`joint_levers` rows are."""
+        ...
+
+    def joints_after(self) -> npt.NDArray[np.bool_]:
+        """``[i, k]``: whether joint k sits below joint i (k's motion changes i's levers)."""
+        ...
+
+    def joint_levers(self, links: Sequence[str]) -> npt.NDArray[np.float64]:
+        """Per link, per joint: the most [m] a point of it moves per unit joint change."""
+        ...
+
+
 def posed(checker: ConfigurationChecker) -> contextlib.AbstractContextManager[None]:
     """The checker's ``posed()`` block (a world checker puts the robot back once, at the
     end, instead of after every check), or a block that does nothing."""

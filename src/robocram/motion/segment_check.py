@@ -17,6 +17,7 @@ import numpy as np
 from robocram.motion.configuration_checker import (
     ClearanceChecker,
     ConfigurationChecker,
+    LeverChecker,
     LinkPair,
     posed,
 )
@@ -56,6 +57,7 @@ def _advance_free(
     if travel <= 0.0:
         return True
     floor = bound.max_link_travel / travel
+    local = _LocalSteps.of(checker, qa, qb, bound) if isinstance(checker, LeverChecker) else None
     by_link = {}  # [m] per link: the most a point of it moves from qa to qb
     s = 0.0
     while True:
@@ -64,15 +66,58 @@ def _advance_free(
         counter.checks += 1
         if min(gaps.values(), default=1.0) <= 0.0 and not checker.is_free(q):
             return False  # the contact check decides, as everywhere
-        step = checker.reach / travel  # links not named are clear by the reach
-        for link, gap in gaps.items():
-            if link not in by_link:
-                by_link[link] = bound.link_travel(link, qa, qb)
-            if by_link[link] > 0.0:
-                step = min(step, gap / by_link[link])
+        if local is not None:
+            step = local.step(gaps, checker.reach)
+        else:
+            step = checker.reach / travel  # links not named are clear by the reach
+            for link, gap in gaps.items():
+                if link not in by_link:
+                    by_link[link] = bound.link_travel(link, qa, qb)
+                if by_link[link] > 0.0:
+                    step = min(step, gap / by_link[link])
         s += max(step, floor)
         if s >= 1.0:
             return True
+
+
+@dataclass
+class _LocalSteps:
+    """Steps from the levers of the configuration checked last (tighter than the rigid
+    ones): over a step ``ds`` a link moves at most ``A ds + B ds^2``, where ``A`` is its
+    speed from the levers now and ``B ds`` bounds how much those levers can grow meanwhile
+    (the joints between an axis and the link move it by at most its rigid travel)."""
+
+    checker: LeverChecker
+    links: tuple[str, ...]
+    dq: FloatArray  # |qb - qa| per joint
+    grow: FloatArray  # per link: B = sum over joints i of dq_i times the rigid travel the
+    # joints after i along the chain give the link (what can move it off i's axis)
+
+    @classmethod
+    def of(
+        cls, checker: LeverChecker, qa: FloatArray, qb: FloatArray, bound: TravelBound
+    ) -> _LocalSteps:
+        links = checker.lever_links()
+        dq = np.abs(qb - qa)
+        rigid = np.array(
+            [bound.link_lever.get(bound.carriers.get(link, link), bound.lever) for link in links],
+            dtype=float,
+        ).reshape(len(links), len(dq))  # (links, joints) [m] per unit change
+        after = checker.joints_after()  # (joints, joints): k moves what i's axis does not
+        grow = np.einsum("i,ik,lk,k->l", dq, after.astype(float), rigid, dq)
+        return cls(checker, links, dq, grow)
+
+    def step(self, gaps: dict[str, float], reach: float) -> float:
+        """The largest fraction of the segment no link can cross its clearance in."""
+        speed = self.checker.joint_levers(self.links) @ self.dq  # A per link
+        gap = np.array([gaps.get(link, reach) for link in self.links], dtype=float)
+        gap = np.maximum(gap, 0.0)
+        grow = self.grow
+        with np.errstate(divide="ignore", invalid="ignore"):
+            root = (-speed + np.sqrt(speed * speed + 4.0 * grow * gap)) / (2.0 * grow)
+            linear = np.where(speed > 0.0, gap / speed, np.inf)
+        steps = np.where(grow > 0.0, root, linear)
+        return float(steps.min()) if steps.size else 1.0
 
 
 def segment_free(

@@ -73,7 +73,7 @@ class TravelBound:
                 f"{max_joint_step} rad"
             )
         model = world.robot(robot).description.model
-        radius = _link_radii(world, robot)
+        radius = link_radii(world, robot)
         children: dict[str, list[tuple[str, float]]] = {}
         for each in model.joints.values():
             offset = float(np.linalg.norm(each.origin.position))
@@ -110,7 +110,7 @@ def _reaches(
     return found
 
 
-def _link_radii(world: World, robot: str) -> dict[str, float]:
+def link_radii(world: World, robot: str) -> dict[str, float]:
     """Per link: a radius about its frame holding its shapes (and what it holds now)."""
     radii = world.link_radii(robot)
     for obj, link in world.attachments(robot).items():

@@ -7,7 +7,7 @@
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterable, Iterator, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 
 from robocram.robots import mimic_followers
 from robocram.tf import Pose, PoseLike
@@ -194,6 +194,35 @@ class WorldCore:
             physicsClientId=self.physics_client(),
         )
         return Pose(state[4], state[5]) * offset
+
+    def link_frames(self, obj: ObjectRef, links: Sequence[str]) -> list[tuple[float, ...]]:
+        """Per link of ``links``: its frame in the world as ``(x, y, z, qx, qy, qz, qw)``,
+        read from the backend in one call (checks read tens of links per configuration)."""
+        handle = self.object(obj)
+        indices = [self._link_index(handle, link) for link in links]
+        moving = sorted({i for i in indices if i >= 0})
+        states = (
+            pybullet.getLinkStates(
+                handle.body_id, moving, computeForwardKinematics=True,
+                physicsClientId=self.physics_client(),
+            )
+            if moving
+            else []
+        )  # fmt: skip
+        by_index = {i: (*st[4], *st[5]) for i, st in zip(moving, states, strict=True)}
+        if -1 in indices:
+            base = self.pose(handle)
+            by_index[-1] = (*base.position, *base.orientation)
+        frames = []
+        for i, link in zip(indices, links, strict=True):
+            offset = handle.link_offset.get(link)
+            if offset is None:
+                frames.append(by_index[i])
+            else:
+                f = by_index[i]
+                pose = Pose(f[:3], f[3:]) * offset
+                frames.append((*pose.position, *pose.orientation))
+        return frames
 
     def link_names(self, obj: ObjectRef) -> list[str]:
         """Names of all links and frames of ``obj``, the root first."""
