@@ -76,10 +76,16 @@ def query_robot(query: LocationQuery) -> RobotObject:
 
 
 def robot_collision_free(query: LocationQuery, pose: Pose) -> bool:
-    """Whether the robot standing at ``pose``, arms parked, touches nothing but the floor."""
+    """Whether the robot standing at ``pose``, arms parked, touches nothing but the floor;
+    nor does what it holds (driving there checks both, so a stand that only the robot
+    clears would be refused by the drive)."""
     robot, world = query_robot(query), query.world
+    floors = world.objects(type="floor")
     with placed(world, robot, pose), parked(world, robot):
-        return not link_contacts(world, robot, ignore=world.objects(type="floor"))
+        return not link_contacts(world, robot, ignore=floors) and not any(
+            link_contacts(world, world.object(held), ignore=floors)
+            for held in world.attachments(robot)
+        )
 
 
 def object_collision_free(query: LocationQuery, pose: Pose) -> bool:

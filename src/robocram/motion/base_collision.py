@@ -167,19 +167,50 @@ class BaseCollisionChecker:
 
     def _contacts(self) -> Iterator[tuple[str, str]]:
         """``(part of the robot, object/link it touches)`` pairs where the robot is now."""
-        floors = [o.name for o in self.world.objects("floor")]
-        group = [self.robot, *self.carried]
         if self._obstacles is None:  # only the robot and what it carries move here
-            self._obstacles = self.world.obstacle_boxes([*group, *floors])
-        for body in group:
-            ignore = floors + [g for g in group if g != body]
-            for link, other, other_link in self.world.link_pairs_in_contact(
-                body, ignore=ignore, distance=CONTACT, obstacles=self._obstacles
-            ):
-                if body == self.robot and link in self.allowed_links:
-                    continue
-                several = len(other.link_index) > 1
-                yield f"{body}/{link}", f"{other.name}/{other_link}" if several else other.name
+            floors = [o.name for o in self.world.objects("floor")]
+            self._obstacles = self.world.obstacle_boxes([self.robot, *self.carried, *floors])
+        return _contacts_now(
+            self.world, self.robot, self.carried, self.allowed_links, self._obstacles
+        )
+
+
+def _contacts_now(
+    world: World,
+    robot: str,
+    carried: tuple[str, ...],
+    allowed_links: frozenset[str],
+    obstacles: ObstacleBoxes | None = None,
+) -> Iterator[tuple[str, str]]:
+    """``(part of the robot, object/link it touches)`` pairs where the robot is now, the
+    floor and the ``allowed_links`` left out."""
+    floors = [o.name for o in world.objects("floor")]
+    group = [robot, *carried]
+    for body in group:
+        ignore = floors + [g for g in group if g != body]
+        for link, other, other_link in world.link_pairs_in_contact(
+            body, ignore=ignore, distance=CONTACT, obstacles=obstacles
+        ):
+            if body == robot and link in allowed_links:
+                continue
+            several = len(other.link_index) > 1
+            yield f"{body}/{link}", f"{other.name}/{other_link}" if several else other.name
+
+
+def blockers_at(
+    world: World, robot: str, pose: FloatArray, allowed_links: frozenset[str] = frozenset()
+) -> list[str]:
+    """What the robot (and what it carries) touches standing at ``pose`` (map x, y, yaw),
+    by the exact check, without the grid a path needs: a goal that is plainly blocked (a
+    stand under a table's edge) costs a millisecond, not a checker. It is put back."""
+    start = world.pose(robot)
+    x, y, yaw = (float(v) for v in pose)
+    world.set_pose(robot, Pose((x, y, start.position[2]), quat.from_euler(0.0, 0.0, yaw)))
+    try:
+        pairs = _contacts_now(world, robot, _carried(world, robot), allowed_links)
+        return sorted({other for _, other in pairs})
+    finally:
+        world.set_pose(robot, start)
 
 
 def _carried(world: World, robot: str) -> tuple[str, ...]:

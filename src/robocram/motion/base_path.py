@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from robocram.execution.failures import NavigationPathBlocked, NavigationPoseUnreachable
-from robocram.motion.base_collision import BaseCollisionChecker, yaw_of
+from robocram.motion.base_collision import ESCAPE, BaseCollisionChecker, blockers_at, yaw_of
 from robocram.motion.errors import MotionError
 from robocram.motion.joint_limits import joint_limits
 from robocram.motion.joint_trajectory import BASE_JOINTS, JointTrajectory
@@ -84,6 +84,7 @@ def plan_base_path(
     _check_request(goal, budget, turning_radius)
     radius = turning_radius if car else None
     allowed = frozenset(allowed_links)
+    _refuse_blocked_goal(world, robot, goal, allowed)
     with BaseCollisionChecker.build(world, robot, goal.position[:2], allowed) as checker:
         start_yaw = yaw_of(checker.start)
         start = np.array([*checker.start.position[:2], start_yaw])
@@ -125,6 +126,22 @@ def plan_base_path(
         )  # fmt: skip
         return BasePath(
             robot, poses, planner, trajectory, checker.fast_checks, checker.exact_checks
+        )
+
+
+def _refuse_blocked_goal(world: World, robot: str, goal: Pose, allowed: frozenset[str]) -> None:
+    """Raise before any grid is built when the robot plainly collides at ``goal``; a goal
+    within :data:`ESCAPE` of the start is left to the checker (start contacts count there)."""
+    here = world.pose(robot)
+    end = np.array([goal.position[0], goal.position[1], yaw_of(goal)])
+    if np.hypot(end[0] - here.position[0], end[1] - here.position[1]) <= ESCAPE:
+        return
+    colliding = blockers_at(world, robot, end, allowed)
+    if colliding:
+        raise NavigationPoseUnreachable(
+            f"{robot} at {_shown(end)} would collide with {colliding}",
+            target=goal,
+            colliding=colliding,
         )
 
 
