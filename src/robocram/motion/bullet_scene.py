@@ -61,6 +61,7 @@ class BulletScene:
         self._posed = False
         self._obstacles: ObstacleBoxes | None = None  # read once per posed block
         self._levers: _LeverData | None = None  # what joint_levers needs, read once
+        self._rows: dict[tuple[str, ...], NDArray[np.int_]] = {}  # links -> their rows
 
     @property
     def reach(self) -> float:
@@ -152,15 +153,20 @@ class BulletScene:
         do: a folded arm's hand is near the shoulder's axis, not an arm's length away.
         """
         data = self._lever_data()
-        rows = [data.row[data.carriers.get(link, link)] for link in links]
-        frames = np.asarray(self.world.link_frames(self.robot, data.frame_links), dtype=float)
-        centres = frames[data.centre_rows, :3][rows]  # (links, 3)
-        origins = frames[data.joint_rows, :3]  # (joints, 3)
-        axes = _rotated(frames[data.joint_rows, 3:], data.local_axes)  # (joints, 3)
-        arms = np.cross(centres[:, None, :] - origins[None, :, :], axes[None, :, :])
-        levers = np.linalg.norm(arms, axis=2) + data.radii[rows][:, None]
-        levers = np.where(data.prismatic[None, :], 1.0, levers)
-        return np.where(data.below[rows], levers, 0.0)
+        key = tuple(links)
+        rows = self._rows.get(key)
+        if rows is None:  # the same links are asked about at every check of a segment
+            rows = np.array([data.row[data.carriers.get(link, link)] for link in links], int)
+            self._rows[key] = rows
+        frames = np.array(self.world.link_frames(self.robot, data.frame_links))
+        centres = frames[data.centre_rows[rows], :3]  # (links, 3)
+        joints = frames[data.joint_rows]
+        axes = _rotated(joints[:, 3:], data.local_axes)  # (joints, 3)
+        arms = _cross(centres[:, None, :] - joints[None, :, :3], axes[None, :, :])
+        levers = np.sqrt((arms * arms).sum(axis=2)) + data.radii[rows][:, None]
+        levers[:, data.prismatic] = 1.0
+        levers[~data.below[rows]] = 0.0
+        return levers
 
     def _lever_data(self) -> _LeverData:
         if self._levers is None:
@@ -279,8 +285,16 @@ class _LeverData:
 def _rotated(quaternions: FloatArray, vectors: FloatArray) -> FloatArray:
     """Each vector turned by its quaternion ``(x, y, z, w)``, row by row."""
     q, w = quaternions[:, :3], quaternions[:, 3:4]
-    t = 2.0 * np.cross(q, vectors)
-    return vectors + w * t + np.cross(q, t)
+    t = 2.0 * _cross(q, vectors)
+    return vectors + w * t + _cross(q, t)
+
+
+def _cross(a: FloatArray, b: FloatArray) -> FloatArray:
+    """The cross product over the last axis (3), broadcast; numpy's own is slower for
+    the small arrays a check makes."""
+    a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]
+    b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
+    return np.stack((a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0), axis=-1)
 
 
 def _links_below(world: World, robot: str, joints: Sequence[str]) -> tuple[str, ...]:

@@ -199,30 +199,19 @@ class WorldCore:
         """Per link of ``links``: its frame in the world as ``(x, y, z, qx, qy, qz, qw)``,
         read from the backend in one call (checks read tens of links per configuration)."""
         handle = self.object(obj)
-        indices = [self._link_index(handle, link) for link in links]
-        moving = sorted({i for i in indices if i >= 0})
-        states = (
-            pybullet.getLinkStates(
-                handle.body_id, moving, computeForwardKinematics=True,
+        index = handle.link_index
+        try:
+            indices = [index[link] for link in links]
+        except KeyError:
+            indices = [self._link_index(handle, link) for link in links]  # names the culprit
+        if min(indices, default=0) >= 0 and not handle.link_offset.keys() & set(links):
+            states = pybullet.getLinkStates(
+                handle.body_id, indices, computeForwardKinematics=True,
                 physicsClientId=self.physics_client(),
-            )
-            if moving
-            else []
-        )  # fmt: skip
-        by_index = {i: (*st[4], *st[5]) for i, st in zip(moving, states, strict=True)}
-        if -1 in indices:
-            base = self.pose(handle)
-            by_index[-1] = (*base.position, *base.orientation)
-        frames = []
-        for i, link in zip(indices, links, strict=True):
-            offset = handle.link_offset.get(link)
-            if offset is None:
-                frames.append(by_index[i])
-            else:
-                f = by_index[i]
-                pose = Pose(f[:3], f[3:]) * offset
-                frames.append((*pose.position, *pose.orientation))
-        return frames
+            )  # fmt: skip
+            return [(*st[4], *st[5]) for st in states]
+        poses = [self.link_pose(handle, link) for link in links]  # the root or added frames
+        return [(*p.position, *p.orientation) for p in poses]
 
     def link_names(self, obj: ObjectRef) -> list[str]:
         """Names of all links and frames of ``obj``, the root first."""
