@@ -24,6 +24,8 @@ from robocram.motion.configuration_checker import (
 from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.travel_bound import TravelBound
 
+LOCAL_LEVERS_FROM = 1.0  # [m] of rigid travel bound from which steps use local levers
+
 
 @dataclass
 class CheckCounter:
@@ -57,7 +59,11 @@ def _advance_free(
     if travel <= 0.0:
         return True
     floor = bound.max_link_travel / travel
-    local = _LocalSteps.of(checker, qa, qb, bound) if isinstance(checker, LeverChecker) else None
+    local = (  # reading levers costs a sixth of a check: worth it on long sweeps only
+        _LocalSteps.of(checker, qa, qb, bound)
+        if travel > LOCAL_LEVERS_FROM and isinstance(checker, LeverChecker)
+        else None
+    )
     by_link = {}  # [m] per link: the most a point of it moves from qa to qb
     s = 0.0
     while True:
