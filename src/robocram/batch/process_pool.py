@@ -65,7 +65,7 @@ class ProcessPool(WorkerPool):
         for worker in self._workers:
             self._assign(worker, pending)
 
-    def _busy(self) -> bool:
+    def _busy(self, pending: Pending) -> bool:
         return any(w.job is not None for w in self._workers)
 
     def _assign(self, worker: _Worker, pending: Pending) -> None:
