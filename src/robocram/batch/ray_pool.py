@@ -100,6 +100,17 @@ def _ray() -> Any:
     return ray
 
 
+def _check_client(address: str) -> None:
+    """A ``ray://`` address is Ray Client's, which needs ``ray[client]`` (grpc), not in Ray."""
+    if not address.startswith("ray://"):
+        return
+    try:
+        import grpc  # noqa: F401
+    except ImportError as err:
+        fix = f"RAY_ADDRESS={address} connects through Ray Client: pip install 'robocram[ray]'"
+        raise BackendMissing("ray[client]", f"{fix} (it installs ray[client])") from err
+
+
 class RayPool(WorkerPool):
     """Ray actors running the variants of one batch; iterate :meth:`results`."""
 
@@ -119,6 +130,7 @@ class RayPool(WorkerPool):
     def _connect(self) -> None:
         ray = self._ray
         if not ray.is_initialized():
+            _check_client(os.environ.get("RAY_ADDRESS", ""))
             local = "RAY_ADDRESS" not in os.environ
             options = {"object_store_memory": LOCAL_OBJECT_STORE} if local else {}
             ray.init(include_dashboard=False, log_to_driver=False, **options)
