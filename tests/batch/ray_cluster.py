@@ -34,9 +34,10 @@ class LocalCluster:
     """``ray start --head`` and ``ray start --address`` nodes; :meth:`stop` ends them all."""
 
     def __init__(self) -> None:
-        # no token authentication, as on a trusted LAN: Ray reads the mode once per process,
-        # so a test process could not switch to the token a `ray start --head` turns on
-        self.env = {**os.environ, "RAY_AUTH_MODE": "disabled", "RAY_USAGE_STATS_ENABLED": "0"}
+        # the nodes authenticate as this process will: Ray reads the mode once per process,
+        # and a local `ray.init()` turns tokens on in it (its token in ~/.ray/auth_token)
+        mode = os.environ.get("RAY_AUTH_MODE", "disabled")
+        self.env = {**os.environ, "RAY_AUTH_MODE": mode, "RAY_USAGE_STATS_ENABLED": "0"}
         self.address = f"127.0.0.1:{_free_port()}"
         self._dirs: list[str] = []  # short: Ray's socket paths must stay under 108 bytes
         self._killed: list[psutil.Process] = []  # a killed node's processes, orphaned now

@@ -35,7 +35,6 @@ def cluster(batch_plans: ModuleType, monkeypatch: pytest.MonkeyPatch) -> Iterato
         ray.shutdown()
     made: LocalCluster = importlib.import_module("ray_cluster").LocalCluster()
     monkeypatch.setenv("RAY_ADDRESS", made.address)
-    monkeypatch.setenv("RAY_AUTH_MODE", "disabled")  # as the nodes (see LocalCluster)
     try:
         yield made
     finally:
