@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import os
 import signal
+import socket
 import threading
 from pathlib import Path
 from types import ModuleType
@@ -35,6 +36,7 @@ def test_one_and_two_workers_give_equal_results(
     two = project_variants(reference_variants, robot="pr2", workers=2).collect()
     assert [r.outcome() for r in one] == [r.outcome() for r in two]
     assert len({r.worker for r in two}) == 2  # both workers did some of the work
+    assert {r.node for r in two} == {socket.gethostname()}  # processes run on this host
     by_name = {r.name: r for r in one}
     assert by_name["toaster"].status is VariantStatus.FAILED
     assert by_name["toaster"].failure_type == "PerceptionObjectNotFound"

@@ -41,6 +41,7 @@ def test_ray_gives_the_results_of_the_process_workers(
     assert [r.outcome() for r in results] == [r.outcome() for r in reference_results]
     assert len({r.worker for r in results}) == 2  # both actors did some of the work
     assert {r.worker for r in results}.isdisjoint({os.getpid()})
+    assert {r.node for r in results} == {ray.get_runtime_context().get_node_id()}
     assert ray.is_initialized()  # a Ray the caller started stays up
 
 
