@@ -21,6 +21,7 @@ caller started (``ray.init(address=...)``) is used and left running.
 from __future__ import annotations
 
 import contextlib
+import importlib.util
 import os
 import pickle
 import signal
@@ -104,11 +105,9 @@ def _check_client(address: str) -> None:
     """A ``ray://`` address is Ray Client's, which needs ``ray[client]`` (grpc), not in Ray."""
     if not address.startswith("ray://"):
         return
-    try:
-        import grpc  # noqa: F401
-    except ImportError as err:
+    if importlib.util.find_spec("grpc") is None:
         fix = f"RAY_ADDRESS={address} connects through Ray Client: pip install 'robocram[ray]'"
-        raise BackendMissing("ray[client]", f"{fix} (it installs ray[client])") from err
+        raise BackendMissing("ray[client]", f"{fix} (it installs ray[client])")
 
 
 class RayPool(WorkerPool):
@@ -211,13 +210,14 @@ class RayPool(WorkerPool):
         if again:
             return None
         cause = str(err).strip().splitlines()[0] if str(err).strip() else type(err).__name__
-        what = f"its node {dead.node} was lost" if node_lost else "died"
+        what = f"was lost with its node {dead.node}" if node_lost else "died"
         why = f"Ray actor in process {dead.pid} {what} running this variant ({cause})"
         return self._lost(job.index, dead.pid, why, dead.node)
 
     def _node_lost(self, actor: _Actor, err: Exception) -> bool:
         """Whether ``actor`` died with its node: unreachable, or its node no longer alive."""
-        if isinstance(err, self._ray.exceptions.ActorUnavailableError):
+        unavailable = getattr(self._ray.exceptions, "ActorUnavailableError", ())  # Ray 2.2x+
+        if isinstance(err, unavailable):
             return True  # its raylet is gone (a dead process on a live node is "died")
         alive = {n["NodeID"] for n in self._ray.nodes() if n["Alive"]}
         return actor.node not in alive

@@ -82,7 +82,8 @@ class WorkerPool(ABC):
                 for result in self._collect(pending):
                     yield replace(result, rerun=result.index in pending.rerun)
             while pending and not self._stopping.is_set():
-                yield self._not_run(*pending.popleft())
+                index, variant = pending.popleft()
+                yield self._not_run(index, variant, index in pending.rerun)
         finally:
             self.close()
 
@@ -96,9 +97,10 @@ class WorkerPool(ABC):
         lost = VariantStatus.LOST
         return VariantResult(index, name, lost, "WorkerDied", why, worker=pid, node=node)
 
-    def _not_run(self, index: int, variant: Variant) -> VariantResult:
+    def _not_run(self, index: int, variant: Variant, lost_once: bool) -> VariantResult:
         """The result of a variant left over when every worker was gone."""
-        why = "not run: every worker was lost and none could be started in their place"
+        what = "lost with its worker's node, not run again" if lost_once else "not run"
+        why = f"{what}: every worker was lost and none could be started in their place"
         return VariantResult(index, variant.name, VariantStatus.LOST, "NoWorkerLeft", why)
 
     @abstractmethod
