@@ -18,7 +18,6 @@ import tempfile
 from pathlib import Path
 
 import psutil
-from batch_plans import DOOMED_ENV
 
 RAY = str(Path(sys.executable).with_name("ray"))
 START_LIMIT = 90.0  # [s] for one `ray start`; a guard against a hang, not a measure
@@ -51,10 +50,10 @@ class LocalCluster:
             "--dashboard-port", dashboard,
         )  # fmt: skip
 
-    def add_node(self, doomed: bool = False) -> str:
-        """Start a one-CPU worker node; return its temporary directory (it names the node)."""
-        extra = {DOOMED_ENV: "doomed"} if doomed else {}
-        return self._ray_start("--address", self.address, "--num-cpus", "1", **extra)
+    def add_node(self, **env: str) -> str:
+        """Start a one-CPU worker node with ``env`` added to its processes' environment;
+        return its temporary directory (it names the node)."""
+        return self._ray_start("--address", self.address, "--num-cpus", "1", **env)
 
     def _ray_start(self, *args: str, **env: str) -> str:
         temp = tempfile.mkdtemp(prefix="rc-ray-", dir="/tmp")

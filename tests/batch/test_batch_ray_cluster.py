@@ -62,7 +62,7 @@ def test_a_lost_node_s_variant_runs_again_and_the_batch_finishes(
     cluster: LocalCluster, batch_plans: ModuleType, tmp_path: Path
 ) -> None:
     cluster.start_head(cpus=1)
-    doomed = cluster.add_node(doomed=True)
+    doomed = cluster.add_node(**{batch_plans.DOOMED_ENV: "doomed"})
     variants = [
         Variant(
             f"mug{i}",
@@ -86,10 +86,13 @@ def test_a_lost_node_s_variant_runs_again_and_the_batch_finishes(
 
 
 def test_a_lost_cluster_ends_the_command_with_what_finished(
-    cluster: LocalCluster, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+    cluster: LocalCluster,
+    batch_plans: ModuleType,
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
 ) -> None:
     cluster.start_head(cpus=0)  # the head runs no actor: the doomed node is the only one
-    doomed = cluster.add_node(doomed=True)
+    doomed = cluster.add_node(**{batch_plans.DOOMED_ENV: "doomed"})
     block_dir = tmp_path / "blocks"
     block_dir.mkdir()
     spec = tmp_path / "spec.json"
@@ -105,7 +108,11 @@ def test_a_lost_cluster_ends_the_command_with_what_finished(
     counts = {line[:26].strip(): line[26:].split()[:1] for line in out.splitlines()}
     assert counts["variants"] == ["4"] and counts["succeeded"] == ["1"]
     assert counts["lost"] == ["3"]  # the one lost with the node, and the two not run
-    assert "NoWorkerLeft" in out and "v1 v2 v3" in out
+    causes = out.split("variants that did not succeed, by cause:\n")[1].splitlines()
+    assert causes[0].split()[:4] == ["2", "NoWorkerLeft:", "not", "run:"]
+    assert causes[1].split() == ["v2", "v3"]
+    assert causes[2].split()[:2] == ["1", "NoWorkerLeft:"] and "lost with" in causes[2]
+    assert causes[3].split() == ["v1"]  # the one its actor held when the node was killed
 
 
 def test_a_ray_client_address_without_the_client_says_how(
