@@ -25,7 +25,7 @@ def pick_or_block(look_target: PoseStamped, block_in: str = "") -> object:
     return pick_up(look_target)
 
 
-def pick_unless_doomed(look_target: PoseStamped, block_dir: str, runs_before: int = 2) -> object:
+def pick_unless_doomed(look_target: PoseStamped, block_dir: str, runs_before: int = 1) -> object:
     """Pick up the mug; on the doomed node, the variant after ``runs_before`` others blocks
     (its pid in ``block_dir/blocked.pid``) until the node is killed, so it is lost with the
     node, and picks the mug up when run again on another node."""

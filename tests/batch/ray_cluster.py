@@ -9,6 +9,7 @@ every Ray of this user on the machine).
 from __future__ import annotations
 
 import contextlib
+import importlib.util
 import os
 import shutil
 import socket
@@ -44,11 +45,14 @@ class LocalCluster:
     def start_head(self, cpus: int) -> None:
         """Start the head node with ``cpus`` CPUs for actors (0: it runs none)."""
         port = self.address.rsplit(":", 1)[1]
-        dashboard = str(_free_port())  # not 8265: another Ray on the machine may hold it
+        # not the default ports 8265 and 10001: another Ray on the machine may hold them (a
+        # Ray Client server runs where ray[client] is installed; the option needs it)
+        ports = ["--dashboard-port", str(_free_port())]
+        if importlib.util.find_spec("grpc") is not None:
+            ports += ["--ray-client-server-port", str(_free_port())]
         self._ray_start(
-            "--head", "--port", port, "--num-cpus", str(cpus), "--include-dashboard=false",
-            "--dashboard-port", dashboard,
-        )  # fmt: skip
+            "--head", "--port", port, "--num-cpus", str(cpus), "--include-dashboard=false", *ports
+        )
 
     def add_node(self, **env: str) -> str:
         """Start a one-CPU worker node with ``env`` added to its processes' environment;
