@@ -56,6 +56,7 @@ def test_a_killed_worker_loses_only_its_variant(batch_plans: ModuleType, tmp_pat
     results, killed = batch_plans.run_killing_the_first("processes", tmp_path / "blocked.pid")
     assert results[0].failure_type == "WorkerDied" and results[0].name == "blocked"
     assert f"worker {killed} died (exit code {-signal.SIGKILL})" in results[0].message
+    assert results[0].node == socket.gethostname() and not results[0].rerun  # not retried
 
 
 def test_cancel_leaves_no_process(batch_plans: ModuleType, tmp_path: Path) -> None:
