@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import os
 import signal
+import socket
 import threading
 from pathlib import Path
 from types import ModuleType
@@ -35,6 +36,7 @@ def test_one_and_two_workers_give_equal_results(
     two = project_variants(reference_variants, robot="pr2", workers=2).collect()
     assert [r.outcome() for r in one] == [r.outcome() for r in two]
     assert len({r.worker for r in two}) == 2  # both workers did some of the work
+    assert {r.node for r in two} == {socket.gethostname()}  # processes run on this host
     by_name = {r.name: r for r in one}
     assert by_name["toaster"].status is VariantStatus.FAILED
     assert by_name["toaster"].failure_type == "PerceptionObjectNotFound"
@@ -54,6 +56,7 @@ def test_a_killed_worker_loses_only_its_variant(batch_plans: ModuleType, tmp_pat
     results, killed = batch_plans.run_killing_the_first("processes", tmp_path / "blocked.pid")
     assert results[0].failure_type == "WorkerDied" and results[0].name == "blocked"
     assert f"worker {killed} died (exit code {-signal.SIGKILL})" in results[0].message
+    assert results[0].node == socket.gethostname() and not results[0].rerun  # not retried
 
 
 def test_cancel_leaves_no_process(batch_plans: ModuleType, tmp_path: Path) -> None:

@@ -41,6 +41,7 @@ def test_ray_gives_the_results_of_the_process_workers(
     assert [r.outcome() for r in results] == [r.outcome() for r in reference_results]
     assert len({r.worker for r in results}) == 2  # both actors did some of the work
     assert {r.worker for r in results}.isdisjoint({os.getpid()})
+    assert {r.node for r in results} == {ray.get_runtime_context().get_node_id()}
     assert ray.is_initialized()  # a Ray the caller started stays up
 
 
@@ -48,6 +49,8 @@ def test_a_killed_actor_loses_only_its_variant(batch_plans: ModuleType, tmp_path
     results, killed = batch_plans.run_killing_the_first("ray", tmp_path / "blocked.pid")
     assert results[0].failure_type == "WorkerDied" and results[0].name == "blocked"
     assert f"Ray actor in process {killed} died" in results[0].message
+    # its node lives on: the variant may be what killed it, so it does not run again
+    assert results[0].node == ray.get_runtime_context().get_node_id() and not results[0].rerun
 
 
 def test_cancel_leaves_no_actor_process(batch_plans: ModuleType, tmp_path: Path) -> None:

@@ -1,7 +1,9 @@
 """What a batch found, in a few numbers: success rate, failure types, median duration.
 
 Why variants failed is grouped by cause: each cause is one :func:`failure_line` (the failure
-type and what went wrong, no designator dump), with the variants it ended.
+type and what went wrong, no designator dump), with the variants it ended. Each variant counts
+once, with its final outcome; ``rerun`` says how many of them ran a second time because
+their first worker's node was lost.
 """
 
 from __future__ import annotations
@@ -46,6 +48,7 @@ class BatchSummary:
     failure_types: tuple[tuple[str, int], ...]  # most frequent first
     median_duration: float  # [s] over the variants that ran to an answer
     causes: tuple[FailureCause, ...] = ()  # of failed and lost variants, most frequent first
+    rerun: int = 0  # variants run again after their worker's node was lost
 
     @classmethod
     def of(cls, results: Iterable[VariantResult]) -> BatchSummary:
@@ -62,6 +65,7 @@ class BatchSummary:
             tuple(sorted(types.items(), key=lambda kv: (-kv[1], kv[0]))),
             statistics.median(ran) if ran else 0.0,
             _causes(done),
+            sum(r.rerun for r in done),
         )
 
     @property
@@ -75,6 +79,8 @@ class BatchSummary:
         yield f"{'succeeded':<26}{self.succeeded:>8}  ({100 * self.success_rate:.1f} %)"
         yield f"{'failed':<26}{self.failed:>8}"
         yield f"{'lost':<26}{self.lost:>8}"
+        if self.rerun:
+            yield f"{'re-run after a lost node':<26}{self.rerun:>8}"
         yield f"{'median duration [s]':<26}{self.median_duration:>8.2f}"
         if self.failure_types:
             yield ""

@@ -2,9 +2,10 @@
 
 The command's options are registered by ``robocram.batch_commands``.
 
-Exit codes (those of ``robocram``): 0 every variant succeeded, 1 some failed or were lost,
-3 the spec or an option cannot be used (the message names the key and the fix), 130 Ctrl-C
-(every worker is stopped first).
+Exit codes (those of ``robocram``): 0 every variant succeeded, 1 some failed or were lost
+(also when a Ray cluster lost every node: the summary then says what finished, the rest are
+``NoWorkerLeft``), 3 the spec or an option cannot be used (the message names the key and the
+fix), 130 Ctrl-C (every worker is stopped first).
 """
 
 from __future__ import annotations

@@ -11,6 +11,7 @@ from __future__ import annotations
 import contextlib
 import multiprocessing
 import os
+import socket
 from collections.abc import Iterator
 from dataclasses import dataclass
 from multiprocessing.connection import Connection, wait
@@ -65,7 +66,7 @@ class ProcessPool(WorkerPool):
         for worker in self._workers:
             self._assign(worker, pending)
 
-    def _busy(self) -> bool:
+    def _busy(self, pending: Pending) -> bool:
         return any(w.job is not None for w in self._workers)
 
     def _assign(self, worker: _Worker, pending: Pending) -> None:
@@ -108,7 +109,8 @@ class ProcessPool(WorkerPool):
         if answered is not None:
             return answered
         pid, code = dead.process.pid or -1, dead.process.exitcode
-        return self._lost(index, pid, f"worker {pid} died (exit code {code}) running this variant")
+        why = f"worker {pid} died (exit code {code}) running this variant"
+        return self._lost(index, pid, why, socket.gethostname())
 
     def close(self) -> None:
         """Terminate every worker and wait until each is gone (killing stragglers)."""

@@ -13,7 +13,7 @@ class VariantStatus(enum.Enum):
 
     SUCCEEDED = "succeeded"
     FAILED = "failed"  # the plan raised: a plan failure or any other exception
-    LOST = "lost"  # its worker died (killed, crashed) before it answered
+    LOST = "lost"  # its worker died (killed, crashed, its node lost) before it answered
 
 
 @dataclass(frozen=True)
@@ -32,7 +32,9 @@ class VariantResult:
     grasp_name: str | None = None  # the grasp model's name of it: "top", "front", "rim", ...
     locations: tuple[tuple[str, Pose7], ...] = ()  # (what for, map pose): stands, spots
     worker: int = -1  # process id of the worker that ran it
+    node: str = ""  # where that worker ran: the host name, or the Ray node id
     run_id: int | None = None  # its run in the trace store, when one was given
+    rerun: bool = False  # run a second time, its first worker's node having been lost
     split: tuple[tuple[str, float], ...] = ()  # [s] per phase: scene, restore, plan, ...
 
     @property
@@ -41,5 +43,6 @@ class VariantResult:
         return self.status is VariantStatus.SUCCEEDED
 
     def outcome(self) -> VariantResult:
-        """This result without what depends on the machine (duration, worker, run id)."""
-        return replace(self, duration=0.0, worker=-1, run_id=None, split=())
+        """This result without what depends on the machine (duration, worker, node, run id,
+        whether a lost node made it run again, the split of its time)."""
+        return replace(self, duration=0.0, worker=-1, node="", run_id=None, rerun=False, split=())

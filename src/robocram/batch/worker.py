@@ -10,6 +10,7 @@ from __future__ import annotations
 import os
 import random
 import signal
+import socket
 import time
 from collections.abc import Callable
 from contextlib import AbstractContextManager, nullcontext
@@ -171,6 +172,7 @@ def worker_main(config: WorkerConfig, conn: Connection) -> None:
     """Entry point of a spawned worker: answer each ``(index, variant)`` until ``None``."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's to handle
     runner = VariantRunner(config)
+    host = socket.gethostname()
     while True:
         try:
             job = conn.recv()
@@ -179,4 +181,4 @@ def worker_main(config: WorkerConfig, conn: Connection) -> None:
         if job is None:
             return
         index, variant = job
-        conn.send(replace(runner.run(index, variant), worker=os.getpid()))
+        conn.send(replace(runner.run(index, variant), worker=os.getpid(), node=host))

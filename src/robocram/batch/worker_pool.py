@@ -3,13 +3,21 @@
 A backend (:mod:`~robocram.batch.process_pool`, :mod:`~robocram.batch.ray_pool`) starts its
 workers, collects whatever finished (replacing a dead worker and reporting its variant
 lost), and stops them all; the loop, the stop request and the lost result are here.
+
+A variant whose worker's node was lost (not the variant's fault) is handed out once more
+(:meth:`Pending.retry`), and only its final result is yielded, marked ``rerun``: each
+variant has exactly one result. Should every worker be gone with variants left (a Ray
+cluster that lost all its nodes), the batch ends: those variants are reported ``lost`` as
+``NoWorkerLeft``, so the caller still gets one result per variant and what finished.
 """
 
 from __future__ import annotations
 
 import threading
 from abc import ABC, abstractmethod
+from collections import deque
 from collections.abc import Generator, Iterator, Sequence
+from dataclasses import replace
 
 from robocram.batch.errors import BatchError
 from robocram.batch.result import VariantResult, VariantStatus
@@ -26,22 +34,34 @@ class Pending:
     def __init__(self, variants: Sequence[Variant]) -> None:
         self._left = len(variants)
         self._variants = enumerate(variants)
+        self._again: deque[tuple[int, Variant]] = deque()  # handed out again first
         self.names: dict[int, str] = {}  # the variants handed out, for lost results
+        self.rerun: set[int] = set()  # the variants handed out a second time
 
     def __bool__(self) -> bool:
-        return self._left > 0
+        return self._left > 0 or bool(self._again)
 
     def __len__(self) -> int:
-        return self._left
+        return self._left + len(self._again)
 
     def popleft(self) -> tuple[int, Variant]:
-        """The next (index in the batch, variant)."""
+        """The next (index in the batch, variant): one to run again, else a new one."""
+        if self._again:
+            return self._again.popleft()
         index, variant = next(self._variants)
         self._left -= 1
         if not isinstance(variant, Variant):
             raise BatchError(f"{variant!r} is not a Variant; build one with Variant(name, ...)")
         self.names[index] = variant.name
         return index, variant
+
+    def retry(self, index: int, variant: Variant) -> bool:
+        """Hand variant ``index`` out again, next; False if it was already run again once."""
+        if index in self.rerun:
+            return False
+        self.rerun.add(index)
+        self._again.append((index, variant))
+        return True
 
 
 class WorkerPool(ABC):
@@ -58,8 +78,12 @@ class WorkerPool(ABC):
         self._names = pending.names
         try:
             self._start(min(self.size, len(pending)), pending)
-            while not self._stopping.is_set() and self._busy():
-                yield from self._collect(pending)
+            while not self._stopping.is_set() and self._busy(pending):
+                for result in self._collect(pending):
+                    yield replace(result, rerun=result.index in pending.rerun)
+            while pending and not self._stopping.is_set():
+                index, variant = pending.popleft()
+                yield self._not_run(index, variant, index in pending.rerun)
         finally:
             self.close()
 
@@ -67,18 +91,25 @@ class WorkerPool(ABC):
         """Make :meth:`results` return at its next wake-up (safe from any thread)."""
         self._stopping.set()
 
-    def _lost(self, index: int, pid: int, why: str) -> VariantResult:
-        """The result of variant ``index``, lost with the worker ``pid`` that held it."""
+    def _lost(self, index: int, pid: int, why: str, node: str = "") -> VariantResult:
+        """The result of variant ``index``, lost with the worker ``pid`` (on ``node``)."""
         name = self._names.get(index, "")
-        return VariantResult(index, name, VariantStatus.LOST, "WorkerDied", why, worker=pid)
+        lost = VariantStatus.LOST
+        return VariantResult(index, name, lost, "WorkerDied", why, worker=pid, node=node)
+
+    def _not_run(self, index: int, variant: Variant, lost_once: bool) -> VariantResult:
+        """The result of a variant left over when every worker was gone."""
+        what = "lost with its worker's node, not run again" if lost_once else "not run"
+        why = f"{what}: every worker was lost and none could be started in their place"
+        return VariantResult(index, variant.name, VariantStatus.LOST, "NoWorkerLeft", why)
 
     @abstractmethod
     def _start(self, count: int, pending: Pending) -> None:
         """Start ``count`` workers and hand each a variant."""
 
     @abstractmethod
-    def _busy(self) -> bool:
-        """Whether a worker holds a variant."""
+    def _busy(self, pending: Pending) -> bool:
+        """Whether a worker holds a variant (or one is starting to take ``pending`` ones)."""
 
     @abstractmethod
     def _collect(self, pending: Pending) -> Iterator[VariantResult]:
