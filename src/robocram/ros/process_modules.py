@@ -188,7 +188,8 @@ class GripperPM(RosProcessModule):
 
     Positions are the description's gripper joint values; the robot's gripper semantics
     (``gripper_semantics.py``) turn them into the controller's command and say what a
-    holding gripper reports (the PR2: ABORTED with ``stalled``).
+    holding gripper reports (the PR2: ABORTED with ``stalled``). With a world, the object
+    a holding hand closed on is attached to it there, and opening lets it go.
     """
 
     name = "ros_grippers"
@@ -222,7 +223,13 @@ class GripperPM(RosProcessModule):
             accept=semantics.holds if closing else None,
         )
         reached = semantics.joint_value(float(outcome.result.get("position", command)))
-        if action == "grip" and not semantics.holds(outcome):
+        holding = closing and semantics.holds(outcome)
+        if self.client.mirror is not None:  # what the hand holds moves with it there
+            if holding:
+                self.client.mirror.hold(arm)
+            elif not closing:
+                self.client.mirror.release(arm)
+        if action == "grip" and not holding:
             raise GripperClosedCompletely(
                 f"{self.client.name}'s {arm} gripper closed on nothing ({outcome.state.name}, "
                 f"stalled={bool(outcome.result.get('stalled', False))}, position "

@@ -4,7 +4,8 @@ For tests and demos the robot behind real ROS is then a simulated one: the actio
 servers named by the robot's ``ros_action/4`` facts move the projected robot (as
 ``goals.py`` says per action type), and ``/joint_states`` plus ``/tf`` (every robot link
 and object in ``map``) are published at ``PUBLISH_RATE`` and after every goal, before its
-result. ``fault`` makes every goal end badly on purpose, to exercise clients:
+result, with the joint states of each articulated environment (the kitchen's drawers and
+doors) on ``/<name>/joint_states``, as iai_kitchen publishes them. ``fault`` makes every goal end badly on purpose, to exercise clients:
 ``"silent"`` never answers (until cancelled), ``"abort"`` aborts with a status text,
 ``"ignore_cancel"`` never answers and ignores cancels. ``controllers="pr2"`` behaves as
 the real PR2's controllers (``pr2_controllers.py``: a gripper gap in metres that stalls
@@ -30,7 +31,7 @@ from robocram.ros.ros_config import RosConfig
 from robocram.ros_driver import goals, pr2_controllers
 from robocram.ros_driver.goals import RosMessage
 from robocram.ros_driver.motion import MotionOptions, Stepper
-from robocram.world import World
+from robocram.world import RobotObject, World
 
 PUBLISH_RATE = 30.0  # [Hz]
 FAULTS = ("none", "silent", "abort", "ignore_cancel")
@@ -95,6 +96,9 @@ class ProjectionDriver:
         self.fault = fault
         self.lock = threading.Lock()
         self.frames = WorldFrames(world)
+        self.environments = [
+            o.name for o in world.objects() if not isinstance(o, RobotObject) and world.joint_states(o)
+        ]  # articulated objects that are not robots: kitchens, cupboards
         self.soft_limits = (
             pr2_controllers.soft_limits(self.robot.description.urdf)
             if controllers == "pr2"
@@ -116,6 +120,10 @@ class ProjectionDriver:
             "joints": rospy.Publisher(self.config.joint_states_topic, JointState, queue_size=10),
             "tf": rospy.Publisher("/tf", TFMessage, queue_size=10),
         }
+        for environment in self.environments:
+            self._publishers[environment] = rospy.Publisher(
+                f"/{environment}/joint_states", JointState, queue_size=10
+            )
         served: dict[str, tuple[str, str]] = {}
         for interface in self.config.actions.values():
             served.setdefault(interface.server, (interface.resource, interface.action_type))
@@ -201,6 +209,7 @@ class ProjectionDriver:
         with self.lock:
             joints = self.world.joint_states(self.robot.name)
             poses = self.frames.frame_poses()
+            environments = {e: self.world.joint_states(e) for e in self.environments}
         stamp = rospy.Time.now() + rospy.Duration.from_sec(self.clock_offset)
         state = JointState(name=list(joints), position=list(joints.values()))
         state.header.stamp = stamp
@@ -215,4 +224,8 @@ class ProjectionDriver:
             r.x, r.y, r.z, r.w = pose.orientation
             transforms.append(t)
         self._publishers["tf"].publish(TFMessage(transforms=transforms))
+        for environment, values in environments.items():
+            message = JointState(name=list(values), position=list(values.values()))
+            message.header.stamp = stamp
+            self._publishers[environment].publish(message)
         self._publishers["joints"].publish(state)
