@@ -123,7 +123,8 @@ class MotionPlanner:
 
         With a world it is checked (and planned round obstacles) in the collision mode of
         the motion; ``arm``'s hand may touch things under ``allow_hand``. The world must
-        show the robot's state now (``world_mirror.py``). Without a world, ``current`` is the start of a straight move.
+        show the robot's state now (``world_mirror.py``). Without a world, ``current`` is
+        the start of a straight move.
 
         Raises:
             ManipulationPathBlocked: the world blocks every way there (nothing was sent).

@@ -5,8 +5,8 @@ servers named by the robot's ``ros_action/4`` facts move the projected robot (as
 ``goals.py`` says per action type), and ``/joint_states`` plus ``/tf`` (every robot link
 and object in ``map``) are published at ``PUBLISH_RATE`` and after every goal, before its
 result, with the joint states of each articulated environment (the kitchen's drawers and
-doors) on ``/<name>/joint_states``, as iai_kitchen publishes them. ``fault`` makes every goal end badly on purpose, to exercise clients:
-``"silent"`` never answers (until cancelled), ``"abort"`` aborts with a status text,
+doors) on ``/<name>/joint_states``, as iai_kitchen publishes them. ``fault`` makes every
+goal end badly on purpose, to exercise clients: ``"silent"`` never answers (until cancelled), ``"abort"`` aborts with a status text,
 ``"ignore_cancel"`` never answers and ignores cancels. ``controllers="pr2"`` behaves as
 the real PR2's controllers (``pr2_controllers.py``: a gripper gap in metres that stalls
 on objects, joints clamped to the soft limits, results without status text);
@@ -96,9 +96,11 @@ class ProjectionDriver:
         self.fault = fault
         self.lock = threading.Lock()
         self.frames = WorldFrames(world)
-        self.environments = [
-            o.name for o in world.objects() if not isinstance(o, RobotObject) and world.joint_states(o)
-        ]  # articulated objects that are not robots: kitchens, cupboards
+        self.environments = [  # articulated objects that are not robots: kitchens, cupboards
+            o.name
+            for o in world.objects()
+            if not isinstance(o, RobotObject) and world.joint_states(o)
+        ]
         self.soft_limits = (
             pr2_controllers.soft_limits(self.robot.description.urdf)
             if controllers == "pr2"
