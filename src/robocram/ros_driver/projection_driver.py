@@ -6,9 +6,9 @@ servers named by the robot's ``ros_action/4`` facts move the projected robot (as
 and object in ``map``) are published at ``PUBLISH_RATE`` and after every goal, before its
 result, with the joint states of each articulated environment (the kitchen's drawers and
 doors) on ``/<name>/joint_states``, as iai_kitchen publishes them. ``fault`` makes every
-goal end badly on purpose, to exercise clients: ``"silent"`` never answers (until cancelled), ``"abort"`` aborts with a status text,
-``"ignore_cancel"`` never answers and ignores cancels. ``controllers="pr2"`` behaves as
-the real PR2's controllers (``pr2_controllers.py``: a gripper gap in metres that stalls
+goal end badly on purpose, to exercise clients: ``"silent"`` never answers (until
+cancelled), ``"abort"`` aborts with a status text, ``"ignore_cancel"`` never answers and
+ignores cancels. ``controllers="pr2"`` behaves as the real PR2's controllers (``pr2_controllers.py``: a gripper gap in metres that stalls
 on objects, joints clamped to the soft limits, results without status text);
 ``clock_offset`` [s] shifts the stamps of everything published, as a robot clock ahead
 (+) or behind (-) of ours.
