@@ -8,10 +8,10 @@ result, with the joint states of each articulated environment (the kitchen's dra
 doors) on ``/<name>/joint_states``, as iai_kitchen publishes them. ``fault`` makes every
 goal end badly on purpose, to exercise clients: ``"silent"`` never answers (until
 cancelled), ``"abort"`` aborts with a status text, ``"ignore_cancel"`` never answers and
-ignores cancels. ``controllers="pr2"`` behaves as the real PR2's controllers (``pr2_controllers.py``: a gripper gap in metres that stalls
-on objects, joints clamped to the soft limits, results without status text);
-``clock_offset`` [s] shifts the stamps of everything published, as a robot clock ahead
-(+) or behind (-) of ours.
+ignores cancels. ``controllers="pr2"`` behaves as the real PR2's controllers
+(``pr2_controllers.py``: a gripper gap in metres that stalls on objects, joints clamped
+to the soft limits, results without status text); ``clock_offset`` [s] shifts the stamps
+of everything published, as a robot clock ahead (+) or behind (-) of ours.
 """
 
 from __future__ import annotations
