@@ -30,6 +30,7 @@ from robocram.ros.message_dicts import message_class, to_dict, to_message
 from robocram.ros.ros_config import RosConfig
 from robocram.ros_driver import goals, pr2_controllers
 from robocram.ros_driver.goals import RosMessage
+from robocram.ros_driver.held_handles import HeldHandles
 from robocram.ros_driver.motion import MotionOptions, Stepper
 from robocram.world import RobotObject, World
 
@@ -96,6 +97,7 @@ class ProjectionDriver:
         self.fault = fault
         self.lock = threading.Lock()
         self.frames = WorldFrames(world)
+        self.handles = HeldHandles()  # a drawer follows the hand holding its handle
         self.environments = [  # articulated objects that are not robots: kitchens, cupboards
             o.name
             for o in world.objects()
@@ -196,7 +198,9 @@ class ProjectionDriver:
     def _handle(self, handler: Handler, goal: RosMessage, stepper: Stepper) -> goals.Outcome:
         """Run the handler; an error in it aborts the goal with the error as status text."""
         try:
-            context = goals.GoalContext(self.robot, self.options, stepper, self.soft_limits)
+            context = goals.GoalContext(
+                self.robot, self.options, stepper, self.soft_limits, self.handles
+            )
             return handler(goal, context)
         except Exception as err:  # reported to the client, never a goal left hanging
             return False, {}, f"driver error: {type(err).__name__}: {err}"
