@@ -24,6 +24,7 @@ from robocram.execution.failures import (
     ManipulationGoalNotReached,
     ManipulationPathBlocked,
     ManipulationPoseUnreachable,
+    TorsoGoalNotReached,
 )
 from robocram.grasping import approach_axis
 from robocram.kinematics import solve_ik
@@ -37,6 +38,7 @@ from robocram.ros.ros_robot_client import RosRobotClient
 from robocram.tf import Pose
 from robocram.world import World
 
+TORSO_MOVE = 1e-4  # [m] smaller torso changes are not sent
 PART_TOLERANCE = 0.01  # [m | rad] the part's joint ends this close to the goal
 MAX_JUMP = 0.5  # [rad | m] an IK step moving a joint further is a flip, not a follow
 REACHING = (ManipulationPoseUnreachable, ManipulationPathBlocked, ManipulationGoalNotReached)
@@ -72,7 +74,12 @@ def move_part(
     failures: list[str] = []
     for roll in ROLLS:
         grasp = grasp_in_handle(axis, roll)
+        torso = _torso_for_path(client, world, arm, (part, joint, handle), grasp, goal)
+        if torso is None:
+            failures.append(f"roll {roll:.2f}: no torso height lets the arm follow the handle")
+            continue
         try:
+            _raise_torso(client, torso)
             _take_handle(client, tools, arm, world.link_pose(part, handle), grasp)
         except REACHING as failure:
             failures.append(f"roll {roll:.2f}: {failure}")
@@ -139,26 +146,26 @@ def _let_go(client: RosRobotClient, tools: ToolMover, arm: str, handle: Pose, gr
             continue
 
 
-def _follow_path(
+def _waypoints(
     client: RosRobotClient,
     world: World,
     arm: str,
     moving: tuple[str, str, str],
     grasp: Pose,
-    goal: float,
-) -> JointTrajectory | None:
-    """The arm's timed trajectory keeping the tool on the handle while the joint goes to
-    ``goal`` (None if a step has no IK solution near the last), planned in ``world``."""
+    values: list[float],
+    seed: dict[str, float],
+) -> list[list[float]] | None:
+    """The arm's joints keeping the tool on the handle at each of the joint's ``values``,
+    each solution near the last, the torso held at ``seed``'s (None if a step fails)."""
     part, joint, handle = moving
     desc, joints = client.desc, client.arm(arm).joints
-    planner = client.planner()  # the world in the robot's state now
-    check = planner.ik_check(arm, joints, "allow_hand")
-    seed = client.actuated_joint_states()
+    check = client.planner().ik_check(arm, joints, "allow_hand")  # syncs the world first
     to_base = client.base_pose().inverse()
     start = world.joint_states(part)[joint]
-    waypoints = [[seed[j] for j in joints]]
+    waypoints: list[list[float]] = []
+    last = [seed[j] for j in joints]
     try:
-        for value in part_path(world, part, joint, handle, goal):
+        for value in values:
             world.set_joint_states(part, {joint: value})
             target = to_base * world.link_pose(part, handle) * grasp
             result = solve_ik(
@@ -167,14 +174,87 @@ def _follow_path(
             if not result.success:
                 return None
             point = [result.joint_positions[j] for j in joints]
-            if max(abs(a - b) for a, b in zip(point, waypoints[-1], strict=True)) > MAX_JUMP:
+            if waypoints and _jump(point, last) > MAX_JUMP:
                 return None
             waypoints.append(point)
-            seed = {**seed, **result.joint_positions}
+            last, seed = point, {**seed, **result.joint_positions}
     finally:
         world.set_joint_states(part, {joint: start})
-    limits = joint_limits(desc, joints)
-    return time_parameterize(desc.name, joints, waypoints, limits, kind="arm")
+    return waypoints
+
+
+def _torso_for_path(
+    client: RosRobotClient,
+    world: World,
+    arm: str,
+    moving: tuple[str, str, str],
+    grasp: Pose,
+    goal: float,
+) -> float | None:
+    """A torso height [m] from which the arm holds the handle all the way (the current
+    one if it does; else one IK picks at either end of the path); None if none does.
+
+    The torso is its own controller and cannot move while the hand holds the handle, so
+    it is chosen before the handle is taken (projection lets IK move it at each step).
+    """
+    part, joint, handle = moving
+    current = client.actuated_joint_states()
+    torso = client.desc.torso_joint
+    start = world.joint_states(part)[joint]
+    values = [start, *part_path(world, part, joint, handle, goal)]
+    heights = [current[torso] if torso is not None else 0.0]
+    if torso is not None:
+        to_base = client.base_pose().inverse()
+        for end in (goal, start):
+            world.set_joint_states(part, {joint: end})
+            target = to_base * world.link_pose(part, handle) * grasp
+            world.set_joint_states(part, {joint: start})
+            free = solve_ik(client.desc, arm, target, seed=current, use_torso=True)
+            if free.success:
+                heights.append(free.joint_positions[torso])
+    for height in heights:
+        seed = {**current, torso: height} if torso is not None else current
+        if _waypoints(client, world, arm, moving, grasp, values, seed) is not None:
+            return height
+    return None
+
+
+def _raise_torso(client: RosRobotClient, height: float) -> None:
+    """Move the torso to ``height`` [m] unless it is there."""
+    torso = client.desc.torso_joint
+    if torso is None or abs(client.joint_states()[torso] - height) < TORSO_MOVE:
+        return
+    client.move_joints(
+        "torso", {torso: height}, lambda text: TorsoGoalNotReached(text, goal=height)
+    )
+
+
+def _follow_path(
+    client: RosRobotClient,
+    world: World,
+    arm: str,
+    moving: tuple[str, str, str],
+    grasp: Pose,
+    goal: float,
+) -> JointTrajectory | None:
+    """The arm's timed trajectory from where it holds the handle now, keeping the tool on
+    it while the joint goes to ``goal`` (None if a step has no IK solution near the last)."""
+    part, joint, handle = moving
+    seed = client.actuated_joint_states()
+    joints = client.arm(arm).joints
+    start = world.joint_states(part)[joint]
+    values = [start, *part_path(world, part, joint, handle, goal)]
+    path = _waypoints(client, world, arm, moving, grasp, values, seed)
+    here = [seed[j] for j in joints]
+    if path is None or _jump(path[0], here) > MAX_JUMP:  # the first is where it holds now
+        return None
+    limits = joint_limits(client.desc, joints)
+    return time_parameterize(client.desc.name, joints, [here, *path[1:]], limits, kind="arm")
+
+
+def _jump(a: list[float], b: list[float]) -> float:
+    """The largest change of one joint between two configurations [rad | m]."""
+    return max(abs(x - y) for x, y in zip(a, b, strict=True))
 
 
 def _failure(arm: str, handle: str) -> FailureFactory:
