@@ -71,41 +71,57 @@ def move_part(
     client.mirror_state()
     start = world.joint_states(part)[joint]
     axis = np.asarray(approach_axis(client.desc, arm))
+    action = "opening" if goal > start else "closing"
     failures: list[str] = []
     for roll in ROLLS:
-        grasp = grasp_in_handle(axis, roll)
-        torso = _torso_for_path(client, world, arm, (part, joint, handle), grasp, goal)
-        if torso is None:
-            failures.append(f"roll {roll:.2f}: no torso height lets the arm follow the handle")
+        why = _with_grasp(
+            client, tools, arm, (part, joint, handle), grasp_in_handle(axis, roll), goal
+        )
+        if why is not None:
+            failures.append(f"roll {roll:.2f}: {why}")
             continue
-        try:
-            _raise_torso(client, torso)
-            _take_handle(client, tools, arm, world.link_pose(part, handle), grasp)
-        except REACHING as failure:
-            failures.append(f"roll {roll:.2f}: {failure}")
-            continue
-        path = _follow_path(client, world, arm, (part, joint, handle), grasp, goal)
-        if path is not None:
-            client.follow_trajectory(f"arm({arm})", path, _failure(arm, handle))
-        _let_go(client, tools, arm, world.link_pose(part, handle), grasp)
-        if path is None:
-            failures.append(f"roll {roll:.2f}: the arm cannot keep the tool on the handle")
-            continue
-        reached = world.joint_states(part)[joint]
+        reached = world.joint_states(part)[joint]  # as the robot side reports it
         if abs(reached - goal) > PART_TOLERANCE:
             raise EnvironmentManipulationImpossible(
                 f"{part}'s {joint} ended at {reached:.3f}, not {goal:.3f}, though the arm "
                 "followed the handle: the robot side did not move the part with the hand",
                 environment_part=joint,
-                action="opening" if goal > start else "closing",
+                action=action,
             )
         return reached
     raise EnvironmentManipulationImpossible(
         f"{client.name}'s {arm} arm cannot hold {handle!r} while {joint!r} moves from "
         f"{start:.3f} to {goal:.3f} with any grasp roll: " + "; ".join(failures),
         environment_part=joint,
-        action="opening" if goal > start else "closing",
+        action=action,
     )
+
+
+def _with_grasp(
+    client: RosRobotClient,
+    tools: ToolMover,
+    arm: str,
+    moving: tuple[str, str, str],
+    grasp: Pose,
+    goal: float,
+) -> str | None:
+    """Move the part holding its handle with ``grasp``; None if done, else why not (the
+    hand then is open and off the handle)."""
+    part, _, handle = moving
+    world = _world(client, part, moving[1], goal)
+    torso = _torso_for_path(client, world, arm, moving, grasp, goal)
+    if torso is None:
+        return "no torso height lets the arm follow the handle"
+    try:
+        _raise_torso(client, torso)
+        _take_handle(client, tools, arm, world.link_pose(part, handle), grasp)
+    except REACHING as failure:
+        return str(failure)
+    path = _follow_path(client, world, arm, moving, grasp, goal)
+    if path is not None:
+        client.follow_trajectory(f"arm({arm})", path, _failure(arm, handle))
+    _let_go(client, tools, arm, world.link_pose(part, handle), grasp)
+    return None if path is not None else "the arm cannot keep the tool on the handle"
 
 
 def _world(client: RosRobotClient, part: str, joint: str, goal: float) -> World:
