@@ -4,8 +4,10 @@ latency of one round trip (our node's pipe, a goal and the state after it, a PER
 A real roscore on a free port and our projection driver (motions as jumps, like
 projection) serve the PR2 of the tabletop scene; the same motions run in projection in
 the same scene. Prints medians [ms] over ``runs`` repetitions; CRAM's ROS process
-modules (the reference) are not installable here. Usage:
-``python benchmarks/ros_bench.py [runs]``.
+modules (the reference) are not installable here. Then the kitchen transports (the mug
+from the counter, the bowl from a drawer) on the driver's kitchen with the real PR2's
+controllers against projection, median of at most ``KITCHEN_RUNS`` (each run needs a
+fresh kitchen on both sides). Usage: ``python benchmarks/ros_bench.py [runs]``.
 """
 
 from __future__ import annotations
@@ -21,6 +23,7 @@ from robocram.designators import a, an
 from robocram.execution import perform, pursue, sleep
 from robocram.execution.failures import TorsoGoalNotReached
 from robocram.logic import current_kb
+from robocram.plans.transport import transport
 from robocram.projection import simulated_robot
 from robocram.ros import Roscore, RosMasterUnreachable, ros_robot
 from robocram.ros.goal_runner import checked
@@ -28,12 +31,14 @@ from robocram.ros.ros_robot_client import RosRobotClient
 from robocram.ros.roscore import free_port
 from robocram.ros.transport import GoalHandle, GoalOutcome
 from robocram.ros_driver.driver_process import DriverProcess
-from robocram.scenes import tabletop_scene
+from robocram.scenes import kitchen_scene, tabletop_scene
 from robocram.tf import Pose, PoseStamped
 
 DOWN = (0.0, 0.7071068, 0.0, 0.7071068)  # the PR2's tool pointing down
 PARKED = {"r_shoulder_lift_joint": 0.3, "r_elbow_flex_joint": -1.0}
 UNPARKED = {"r_shoulder_lift_joint": 0.1, "r_elbow_flex_joint": -0.6}
+KITCHEN_RUNS = 3  # a transport takes seconds, and each needs a fresh driver
+ITEMS = {"mug": "mug-1", "bowl": "bowl-1"}
 
 
 def motions(look: PoseStamped) -> dict[str, Callable[[int], object]]:
@@ -191,6 +196,35 @@ def stop_to_cancel_ms(core: Roscore, runs: int) -> float:
     return 1e3 * statistics.median(c - s for s, c in zip(stops, seen, strict=True))
 
 
+def _to_the_table(object_type: str) -> float:
+    """[s] one transport of ``object_type`` to the kitchen's table top, in the block."""
+    target = a.location(on=("kitchen", "table_top"), for_=ITEMS[object_type])
+    t0 = time.perf_counter()
+    transport(object_type, target)
+    return time.perf_counter() - t0
+
+
+def kitchen(core: Roscore, runs: int) -> dict[str, tuple[float, float]]:
+    """Median [s] of each kitchen transport in projection and over ROS (real PR2 mode)."""
+    figures = {}
+    for object_type in ITEMS:
+        projected, ros = [], []
+        for _ in range(min(runs, KITCHEN_RUNS)):
+            scene = kitchen_scene("pr2")
+            with simulated_robot(scene.world, "pr2"):
+                projected.append(_to_the_table(object_type))
+            scene.world.close()
+            scene = kitchen_scene("pr2")
+            with (
+                DriverProcess(core.uri, controllers="pr2", scene="kitchen"),
+                ros_robot("pr2", core.uri, world=scene.world),
+            ):
+                ros.append(_to_the_table(object_type))
+            scene.world.close()
+        figures[object_type] = (statistics.median(projected), statistics.median(ros))
+    return figures
+
+
 def main(runs: int) -> None:
     """Print the per-motion table, the round-trip latencies and the ROS-semantics figures."""
     projected = direct(runs)
@@ -201,6 +235,7 @@ def main(runs: int) -> None:
             with ros_robot("pr2", core.uri) as run:
                 overhead = goal_overhead_ms(run.environment.client, runs)
         cancel = stop_to_cancel_ms(core, runs)
+        transports = kitchen(core, runs)
     absent = no_master()
     print(f"PR2, median of {runs} PERFORMs [ms]")
     print(f"{'motion':20} {'projection':>11} {'ROS':>9} {'overhead':>9}")
@@ -214,6 +249,10 @@ def main(runs: int) -> None:
     print(f"  no master, typed error [s]   {absent:8.3f}   <= 5")
     print(f"  plan overhead per goal [ms]  {overhead:8.3f}   <= 5")
     print(f"  stop to cancel seen [ms]     {cancel:8.3f}   <= 50")
+    print(f"kitchen transport to the table [s], median of {min(runs, KITCHEN_RUNS)}")
+    print(f"{'object':20} {'projection':>11} {'ROS':>9}")
+    for name, (value, over) in transports.items():
+        print(f"{name:20} {value:11.2f} {over:9.2f}")
 
 
 if __name__ == "__main__":

@@ -11,6 +11,8 @@ import pytest
 from robocram.logic import KnowledgeBase
 from robocram.robots import load_description
 from robocram.ros import (
+    GoalOutcome,
+    GoalState,
     RosConfig,
     RosConfigError,
     RosExtraMissing,
@@ -119,6 +121,25 @@ def test_the_pr2_gripper_takes_a_gap_in_metres_and_holds_when_aborted_stalled() 
     hsr = _config("hsrb").grippers["arm"]
     assert (hsr.unit, hsr.holding_status.name) == ("joint", "SUCCEEDED")
     assert hsr.command(1.24) == pytest.approx(1.24)  # the joint value itself
+
+
+@pytest.mark.parametrize(
+    ("state", "stalled", "gap", "holding"),
+    [
+        ("ABORTED", True, 0.03, True),  # stalled on a mug
+        ("SUCCEEDED", False, 0.0088, True),  # a bowl's rim, within the goal threshold
+        ("SUCCEEDED", False, 0.0005, False),  # closed on nothing
+        ("ABORTED", True, 0.001, False),  # stalled nearly shut: nothing worth holding
+    ],
+)
+def test_the_pr2_gripper_holds_by_its_gap(
+    state: str, stalled: bool, gap: float, holding: bool
+) -> None:
+    gripper = _config("pr2").grippers["right"]
+    outcome = GoalOutcome(GoalState[state], "", {"position": gap, "stalled": stalled})
+    assert gripper.holds(outcome) is holding
+    hsr = _config("hsrb").grippers["arm"]  # succeeds on holding: the stall flag decides
+    assert not hsr.holds(GoalOutcome(GoalState.SUCCEEDED, "", {"position": 0.5}))
 
 
 def test_a_gripper_fact_with_an_unknown_unit_names_the_fix() -> None:

@@ -8,13 +8,12 @@ with the part where the arm last held it. Whatever rests in the moving link (a b
 drawer) is attached to it for the motion, so it moves along.
 
 The grasp's roll about the approach axis is not known in advance (a bar handle wants the
-fingers across it, and robots' hands differ), so the rolls in :data:`ROLLS` are tried in
-order, each with the whole path, from the same start.
+fingers across it, and robots' hands differ), so the rolls in ``motion.part_path.ROLLS``
+are tried in order, each with the whole path, from the same start.
 """
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -27,20 +26,15 @@ from robocram.execution.failures import (
     NavigationLowLevelFailure,
 )
 from robocram.kinematics import PlanarBase, forward_kinematics
+from robocram.motion.part_path import BACK_OFF, PRE_GRASP, ROLLS, grasp_in_handle, part_path
 from robocram.projection.arm import move_tcp
 from robocram.projection.errors import ProjectionError
 from robocram.projection.gripper import close_gripper, open_gripper
 from robocram.projection.navigation import place_base
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.tf import Pose
-from robocram.tf import quaternion as quat
 
-LINEAR_STEP = 0.02  # [m] of a prismatic joint between IK checks
-ANGULAR_STEP = math.radians(5.0)  # [rad] of a revolute joint between IK checks
-PRE_GRASP = 0.10  # [m] in front of the handle before and after holding it
-BACK_OFF = (PRE_GRASP, PRE_GRASP / 2)  # [m] tried in turn when letting go of the handle
 LET_GO_RESTARTS = 8  # IK restarts per backing-off try: it is best effort
-ROLLS = (math.pi / 2, -math.pi / 2, 0.0, math.pi)  # [rad] about the approach axis
 RESTING = 0.005  # [m] objects this close to the moving link move with it
 HOLD_MODE = "allow_hand"  # the fingers close around the handle
 STEP_TRAVEL = PlanarBase(0.15, 0.15, 0.5)  # [m, m, rad] the base's move per step of the arc
@@ -73,24 +67,7 @@ def approach_axis(robot: ProjectedRobot, arm: str) -> np.ndarray:
     return axis / norm
 
 
-def grasp_in_handle(axis_in_tool: np.ndarray, roll: float) -> Pose:
-    """The tool pose in the handle frame: approach axis along the handle's -x, rolled."""
-    into = np.array((-1.0, 0.0, 0.0))
-    turn = np.cross(axis_in_tool, into)
-    angle = math.atan2(float(np.linalg.norm(turn)), float(axis_in_tool @ into))
-    if np.linalg.norm(turn) < 1e-9:
-        turn = np.array((0.0, 0.0, 1.0))
-    aligned = quat.from_axis_angle(tuple(turn / np.linalg.norm(turn)), angle)
-    return Pose(orientation=quat.multiply(quat.from_axis_angle((1.0, 0.0, 0.0), roll), aligned))
-
-
-def _path(start: float, goal: float, step: float) -> list[float]:
-    """Joint values from after ``start`` to ``goal`` inclusive, at most ``step`` apart."""
-    count = max(1, math.ceil(abs(goal - start) / step))
-    return [start + (goal - start) * (i + 1) / count for i in range(count)]
-
-
-def _riders(robot: ProjectedRobot, part: str, link: str) -> list[str]:
+def resting_in(robot: ProjectedRobot, part: str, link: str) -> list[str]:
     """Free objects resting in or on ``link`` of ``part`` (not held by anything)."""
     world = robot.world
     out = []
@@ -132,24 +109,11 @@ def _follow(
     return held
 
 
-def _moving_link(robot: ProjectedRobot, part: str, joint: str) -> str:
+def moving_link(robot: ProjectedRobot, part: str, joint: str) -> str:
     """The link ``joint`` of ``part`` moves (its child)."""
     body = robot.world.object(part)
     index = body.joint_index[joint]
     return next(name for name, i in body.link_index.items() if i == index)
-
-
-def _handle_speed(robot: ProjectedRobot, part: str, joint: str, handle: str) -> float:
-    """How far [m] the handle moves per unit of the joint [m | rad] near its current value."""
-    world = robot.world
-    start = world.joint_states(part)[joint]
-    limits = world.joint_limits(part, joint)
-    probe = 1e-3 if start + 1e-3 <= limits.upper else -1e-3
-    before = world.link_pose(part, handle).position
-    world.set_joint_states(part, {joint: start + probe})
-    moved = math.dist(before, world.link_pose(part, handle).position) / abs(probe)
-    world.set_joint_states(part, {joint: start})
-    return max(moved, 1e-3)
 
 
 def _take_handle(robot: ProjectedRobot, arm: str, part: str, handle: str, grasp: Pose) -> bool:
@@ -188,22 +152,22 @@ def move_part(
             f"[{limits.lower:.3f}, {limits.upper:.3f}]; ask for a value within them"
         )
     start = world.joint_states(part)[joint]
-    step = LINEAR_STEP / _handle_speed(robot, part, joint, handle)
+    path = part_path(world, part, joint, handle, goal)
     axis = approach_axis(robot, arm)
     model = robot.description.model
     robot_start = {  # mimic joints follow their masters when those are set back
         j: v for j, v in world.joint_states(robot.name).items() if model.joints[j].mimic is None
     }
     base_start = robot.base_pose()
-    riders = _riders(robot, part, _moving_link(robot, part, joint))
+    riders = resting_in(robot, part, moving_link(robot, part, joint))
     for name in riders:
-        world.attach(name, part, _moving_link(robot, part, joint))
+        world.attach(name, part, moving_link(robot, part, joint))
     try:
         for roll in ROLLS:
             checkpoint()
             grasp = grasp_in_handle(axis, roll)
             if _take_handle(robot, arm, part, handle, grasp):
-                reached = _follow(robot, arm, part, joint, handle, grasp, _path(start, goal, step))
+                reached = _follow(robot, arm, part, joint, handle, grasp, path)
                 if abs(reached - goal) <= 1e-9:
                     _let_go(robot, arm, part, handle, grasp)
                     return ArticulationResult(joint, start, reached, roll, tuple(riders))

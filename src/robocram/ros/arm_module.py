@@ -21,6 +21,7 @@ from robocram.motion.reach_failure import unreachable
 from robocram.motion.tool_goal import IK_RANDOM_SEED, ensure_reached, joint_values
 from robocram.ros.errors import RosCommandError
 from robocram.ros.goal_runner import FailureFactory
+from robocram.ros.part_motion import move_part
 from robocram.ros.process_modules import RosProcessModule
 from robocram.tf import Pose, PoseStamped
 
@@ -44,11 +45,10 @@ class ArmPM(RosProcessModule):
         return tuple(self.move_joints(s, c) for s, c in zip(SIDES, (left, right), strict=True))
 
     def move_part(self, arm: str, part: str, joint: str, handle: str, goal: float) -> float:
-        """Not over ROS yet: articulated parts need a whole-body controller (CRAM: giskard)."""
-        raise RosCommandError(
-            f"robocram.ros has no ROS interface for moving-articulation ({part}.{joint} with "
-            f"{arm}'s hand); run it in projection, or add a controller interface for it"
-        )
+        """Open or close a drawer or door: hold ``handle`` and move ``joint`` of ``part``
+        to ``goal`` [m | rad] (``part_motion.py``); return the joint value reached."""
+        side = self.client.desc.arm_called(arm)
+        return move_part(self.client, self, side, part, joint, handle, float(goal))
 
     def _solve(self, arm: str, target_in_base: Pose, mode: str) -> IKResult:
         desc = self.client.desc

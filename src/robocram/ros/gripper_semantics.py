@@ -10,7 +10,8 @@ Per gripper, from the robot's ROS facts (defaults from the description):
 % the command at the gripper joint's lower (closed) and upper (open) limit, and its unit
 ros_gripper_command(Robot, Arm, Unit, Closed, Open).     % Unit: gap [m] | joint [rad | m]
 % a held object ends the goal in Status (aborted | succeeded) with stalled = true and the
-% command-unit position above MinPosition
+% command-unit position above MinPosition (aborted: a SUCCEEDED goal above it holds too,
+% a thin object the fingers stopped on within the controller's goal threshold)
 ros_gripper_holding(Robot, Arm, Status, MinPosition).
 ros_gripper_effort(Robot, Newtons).                      % max_effort of every command
 ```
@@ -57,13 +58,19 @@ class GripperSemantics:
         return q0 + (q1 - q0) * (command - c0) / (c1 - c0)
 
     def holds(self, outcome: GoalOutcome) -> bool:
-        """Whether a closing goal's outcome says an object is held between the fingers."""
+        """Whether a closing goal's outcome says an object is held between the fingers.
+
+        A controller that aborts on holding (the PR2's) succeeds when the fingers stop
+        within its goal threshold of the command: closing on a thin object (a bowl's
+        rim) ends SUCCEEDED with a gap, so there the gap alone decides, as CRAM's PR2
+        gripping does.
+        """
         result = outcome.result
-        return (
-            outcome.state is self.holding_status
-            and bool(result.get("stalled", False))
-            and float(result.get("position", self.holding_min)) > self.holding_min
-        )
+        gap = float(result.get("position", self.holding_min)) > self.holding_min
+        if outcome.state is self.holding_status and bool(result.get("stalled", False)):
+            return gap
+        thin = self.holding_status is GoalState.ABORTED and outcome.state is GoalState.SUCCEEDED
+        return thin and gap
 
 
 def _first(kb: KnowledgeBase, goal: str, **bindings: object) -> dict[str, Any] | None:

@@ -110,23 +110,6 @@ class MotionPlanner:
                     f"pass a world with the robot in it (e.g. tabletop_scene({desc.name!r}).world)"
                 )
 
-    def sync(self, joints: Mapping[str, float], base_in_map: Pose) -> None:
-        """Put the world's robot where ROS says it is: joint states and base pose."""
-        if self.world is None:
-            return
-        world, name = self.world, self.desc.name
-        model = self.desc.model
-        known = world.joint_states(name)
-        world.set_joint_states(
-            name,
-            {
-                j: v
-                for j, v in joints.items()
-                if j in known and model.joints[j].mimic is None  # followers follow
-            },
-        )
-        world.set_pose(name, base_in_map)
-
     def joint_motion(
         self,
         goal: Mapping[str, float],
@@ -139,8 +122,9 @@ class MotionPlanner:
         """The timed motion of the joints in ``goal`` (within limits) from where they are.
 
         With a world it is checked (and planned round obstacles) in the collision mode of
-        the motion; ``arm``'s hand may touch things under ``allow_hand``. Call
-        :meth:`sync` first. Without a world, ``current`` is the start of a straight move.
+        the motion; ``arm``'s hand may touch things under ``allow_hand``. The world must
+        show the robot's state now (``world_mirror.py``). Without a world, ``current`` is
+        the start of a straight move.
 
         Raises:
             ManipulationPathBlocked: the world blocks every way there (nothing was sent).
@@ -197,7 +181,7 @@ class MotionPlanner:
 
     def ik_check(self, arm: str, joints: tuple[str, ...], mode: str) -> IKCollisionCheck | None:
         """IK's collision check for ``arm`` moving ``joints`` in ``mode`` (None without a
-        world, or for ``allow_all``); call :meth:`sync` first."""
+        world, or for ``allow_all``); the world must show the robot's state now."""
         if self.world is None:
             return None
         return ik_collision_check(self.world, self.desc.name, self.desc.arms[arm], joints, mode)

@@ -14,8 +14,6 @@ from robocram.designators import ObjectDesignator, Quantifier
 from robocram.designators.perceived_object import PerceivedObject
 from robocram.execution import MotionProcessModule
 from robocram.execution.failures import (
-    GripperClosedCompletely,
-    GripperGoalNotReached,
     ManipulationPathBlocked,
     NavigationGoalNotReached,
     PerceptionObjectNotFound,
@@ -24,6 +22,7 @@ from robocram.execution.failures import (
 )
 from robocram.logic import Value
 from robocram.ros.errors import RosCommandError
+from robocram.ros.gripper_goal import move_gripper
 from robocram.ros.head_aim import pan_tilt_towards
 from robocram.ros.ros_robot_client import RosRobotClient
 from robocram.tf import Pose, PoseLike, PoseStamped, pose_stamped_from_ros, pose_to_ros
@@ -186,9 +185,8 @@ class PerceptionPM(RosProcessModule):
 class GripperPM(RosProcessModule):
     """The grippers over ``GripperCommand``: ``move_gripper_joint(Arm, Action, Effort)``.
 
-    Positions are the description's gripper joint values; the robot's gripper semantics
-    (``gripper_semantics.py``) turn them into the controller's command and say what a
-    holding gripper reports (the PR2: ABORTED with ``stalled``).
+    Positions are the description's gripper joint values, turned into the controller's
+    command and back by ``gripper_goal.py``.
     """
 
     name = "ros_grippers"
@@ -197,37 +195,4 @@ class GripperPM(RosProcessModule):
     def move_gripper_joint(self, gripper: str, action: object, effort: object) -> float:
         """Open, close or grip with ``gripper``'s hand, or move it to a position [rad | m];
         return the description's gripper joint value reached."""
-        arm = self.client.desc.arm_called(str(gripper))
-        semantics = self.client.config.grippers.get(arm)
-        if semantics is None:
-            raise RosCommandError(f"{self.client.name}'s {arm} arm has no bounded gripper joint")
-        lower, upper = semantics.joint_range
-        positions = {"open": upper, "close": lower, "grip": lower}
-        if action in positions:
-            position = positions[action]
-        elif isinstance(action, int | float):
-            position = float(action)
-        else:
-            raise RosCommandError(
-                f"gripper goal {action!r} is none of open, close, grip or a position"
-            )
-        force = float(effort) if isinstance(effort, int | float) else semantics.effort
-        command = semantics.command(position)
-        goal = {"command": {"position": command, "max_effort": force}}
-        closing = action in ("close", "grip")
-        outcome = self.client.run(
-            f"gripper({arm})",
-            goal,
-            lambda text: GripperGoalNotReached(text, gripper=arm, goal=position),
-            accept=semantics.holds if closing else None,
-        )
-        reached = semantics.joint_value(float(outcome.result.get("position", command)))
-        if action == "grip" and not semantics.holds(outcome):
-            raise GripperClosedCompletely(
-                f"{self.client.name}'s {arm} gripper closed on nothing ({outcome.state.name}, "
-                f"stalled={bool(outcome.result.get('stalled', False))}, position "
-                f"{outcome.result.get('position')} {semantics.unit})",
-                gripper=arm,
-                position=reached,
-            )
-        return reached
+        return move_gripper(self.client, gripper, action, effort)

@@ -4,7 +4,9 @@ rospy allows one node per process for the life of the process, with threads that
 end. Running it in a child process started by :class:`Ros1Transport` keeps the plan
 process clean: when the environment exits the child leaves ROS and ends, so no thread or
 subscriber remains. The node keeps one actionlib client per configured action server,
-the latest ``/joint_states`` and a tf2 buffer fed from ``/tf`` and ``/tf_static``.
+the latest ``/joint_states``, the latest joint states of the environment's articulated
+objects (``environment_topics``, e.g. ``/kitchen/joint_states``: drawers and doors) and
+a tf2 buffer fed from ``/tf`` and ``/tf_static``.
 
 The robot's clock is never compared with ours: the node counts joint-state messages and
 transforms of the base frame as they *arrive*, and "the state after a goal" is the first
@@ -48,6 +50,7 @@ class NodeConfig:
     lost_after: float  # [s] of status silence that count as a lost connection
     clock_skew_bound: float = 0.5  # [s] a larger robot clock offset is reported
     master_timeout: float = 5.0  # [s] for the master to answer before entering fails
+    environment_topics: tuple[str, ...] = ()  # joint states of articulated environments
 
 
 class _Server:
@@ -98,6 +101,11 @@ class RosNode:
             rospy.Subscriber("/tf_static", TFMessage, self._on_tf, callback_args=True),
         ]
         self._joint_sub = rospy.Subscriber(config.joint_states_topic, JointState, self._on_joints)
+        self._environment: dict[str, dict[str, float]] = {t: {} for t in config.environment_topics}
+        self._environment_subs = [
+            rospy.Subscriber(topic, JointState, self._on_environment, callback_args=topic)
+            for topic in config.environment_topics
+        ]
         self.servers = {name: _Server(name, kind) for name, kind in config.servers.items()}
         self.running = True
 
@@ -116,6 +124,10 @@ class RosNode:
             self._state.notify_all()
         if first and not msg.header.stamp.is_zero():  # the robot clock's offset, once
             self.send(("skew", msg.header.stamp.to_sec() - rospy.get_time()))
+
+    def _on_environment(self, msg: Any, topic: str) -> None:
+        with self._state:
+            self._environment[topic].update(zip(msg.name, map(float, msg.position), strict=False))
 
     def _on_tf(self, msg: Any, static: bool) -> None:
         """Feed the buffer, then count the arrival if the base frame is in the message."""
@@ -186,6 +198,11 @@ class RosNode:
         """The latest joint positions."""
         with self._state:
             return dict(self._joints)
+
+    def op_environment_joint_states(self) -> dict[str, dict[str, float]]:
+        """The latest joint positions of each environment topic (empty until heard)."""
+        with self._state:
+            return {topic: dict(joints) for topic, joints in self._environment.items()}
 
     def op_wait_for_state(self, after: tuple[int, int] | None, timeout: float) -> bool:
         """Wait until joint states and a base transform arrived after the mark ``after``

@@ -243,6 +243,10 @@ class Ros1Transport:
         """The latest ``/joint_states`` positions by joint name."""
         return dict(self.request("joint_states"))
 
+    def environment_joint_states(self) -> dict[str, dict[str, float]]:
+        """The latest positions on each environment joint-state topic, by topic."""
+        return dict(self.request("environment_joint_states"))
+
     def lookup_transform(self, target_frame: str, source_frame: str) -> Pose:
         """The latest pose of ``source_frame`` in ``target_frame`` from tf2."""
         position, orientation = self.request("lookup", target_frame, source_frame)

@@ -14,6 +14,7 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
 
+from robocram.costmaps import CostmapLocations
 from robocram.designators import install_common_motions
 from robocram.execution import Environment, TaskTree, TopLevel, matching_facts, top_level
 from robocram.grasping import install_grasp_predicates
@@ -50,7 +51,12 @@ MODULES: dict[str, tuple[type[RosProcessModule], str]] = {
 class RosEnvironment(Environment):
     """An environment whose process modules talk to one robot through our ROS node."""
 
-    def __init__(self, client: RosRobotClient, kb: KnowledgeBase) -> None:
+    def __init__(
+        self,
+        client: RosRobotClient,
+        kb: KnowledgeBase,
+        locations: CostmapLocations | None = None,
+    ) -> None:
         served = [
             resource
             for resource, (_, prefix) in MODULES.items()
@@ -61,6 +67,7 @@ class RosEnvironment(Environment):
             process_modules=[MODULES[resource][0](client) for resource in served],
             facts=matching_facts("ros", served),
             kb=kb,
+            location_resolver=locations.resolver() if locations is not None else None,
         )
         self.client = client
 
@@ -89,6 +96,7 @@ def ros_environment(
     world: World | None = None,
     motion: MotionSettings | None = None,
     master_timeout: float = DEFAULT_MASTER_TIMEOUT,
+    locations: CostmapLocations | None = None,
 ) -> RosEnvironment:
     """The environment of ``robot`` behind the ROS master at ``master_uri``.
 
@@ -98,21 +106,30 @@ def ros_environment(
             default: the packaged ones of a built-in robot.
         world: a projection world of the robot's environment with the robot in it (e.g.
             ``tabletop_scene("pr2").world``); before each motion it is put into the robot's
-            state read from ROS, and arm, torso and base motions are checked and planned
-            in it. None: nothing in the environment is checked (straight joint moves).
+            state read from ROS (``world_mirror.py``), arm, torso and base motions are
+            checked and planned in it, its knowledge base is the plans' (the scene's
+            facts: places, containers, link poses) and location designators resolve by
+            costmaps on it. None: nothing in the environment is checked (straight joint
+            moves) and location designators are poses only.
         motion: how arm paths are planned in the world (seed, budget); default settings.
         master_timeout: [s] entering waits this long for the master to answer, then
             raises ``RosMasterUnreachable``.
+        locations: resolves location designators (default with a world: costmaps on
+            it, seed 0, as in projection).
     """
     uri = master_uri or os.environ.get("ROS_MASTER_URI")
     if not uri:
         raise RosConfigError("no ROS master: pass master_uri= or set ROS_MASTER_URI")
     desc = load_description(robot)
-    kb = KnowledgeBase()
+    kb = world.kb if world is not None else KnowledgeBase()  # the scene's facts for plans
     install_description(kb, desc)
     install_common_motions(kb)
     install_ros_facts(kb, desc.name, ros_facts)
-    install_grasp_predicates(kb, description=desc)  # grasps by the perceived type and pose
+    if world is None:
+        install_grasp_predicates(kb, description=desc)  # by the perceived type and pose
+    else:
+        install_grasp_predicates(kb, world)  # on the world's objects, as in projection
+        locations = locations or CostmapLocations(world)
     client = RosRobotClient(
         desc,
         read_ros_config(kb, desc),
@@ -122,7 +139,7 @@ def ros_environment(
         motion=motion,
         master_timeout=master_timeout,
     )
-    return RosEnvironment(client, kb)
+    return RosEnvironment(client, kb, locations)
 
 
 @dataclass(frozen=True)
@@ -148,11 +165,18 @@ def ros_robot(
     world: World | None = None,
     motion: MotionSettings | None = None,
     master_timeout: float = DEFAULT_MASTER_TIMEOUT,
+    locations: CostmapLocations | None = None,
 ) -> Iterator[RosRun]:
     """Run the block as a top level on ``robot`` behind ROS (see :func:`ros_environment`;
     ``world`` is the environment motions are checked and planned in)."""
     environment = ros_environment(
-        robot, master_uri, ros_facts, world=world, motion=motion, master_timeout=master_timeout
+        robot,
+        master_uri,
+        ros_facts,
+        world=world,
+        motion=motion,
+        master_timeout=master_timeout,
+        locations=locations,
     )
     transforms = RosTransformTree(lambda: environment.client.transport)
     runner = top_level(name=name)

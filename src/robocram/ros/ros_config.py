@@ -57,6 +57,7 @@ class RosConfig:
     goal_tolerances: GoalTolerances = field(default_factory=GoalTolerances)
     grippers: dict[str, GripperSemantics] = field(default_factory=dict)  # by arm
     clock_skew_bound: float = DEFAULT_SKEW_BOUND  # [s] a larger robot clock offset is reported
+    environment_topics: dict[str, str] = field(default_factory=dict)  # env -> joint states
 
     def action(self, resource: str) -> ActionInterface:
         """The interface of ``resource``, or a RosConfigError naming the missing fact."""
@@ -146,6 +147,13 @@ def read_ros_config(kb: KnowledgeBase, desc: RobotDescription) -> RosConfig:
     topic = _first(kb, "ros_topic(R, joint_states, T)", R=robot)
     if topic is None:
         raise RosConfigError(f"{robot} lacks the fact ros_topic({robot}, joint_states, Topic)")
+    try:
+        environments = {
+            resource_key(a["Env"]): str(a["T"])
+            for a in kb.query("ros_topic(R, joint_states(Env), T)", R=robot)
+        }
+    except UnknownPredicateError:
+        environments = {}
     effort = _number(kb, "ros_gripper_effort", robot, "N")
     grippers = {
         arm: semantics
@@ -162,6 +170,7 @@ def read_ros_config(kb: KnowledgeBase, desc: RobotDescription) -> RosConfig:
         goal_tolerances=read_goal_tolerances(kb, desc),
         grippers=grippers,
         clock_skew_bound=_optional(kb, "ros_clock_skew_bound", robot, DEFAULT_SKEW_BOUND),
+        environment_topics=environments,
     )
 
 

@@ -3,7 +3,8 @@
 Process modules ask it to run goals on resources, to move joints by timed trajectories
 (``motion_planner.py``) and to read the robot's state. After a
 goal ends it waits for the first joint states and transforms published after the
-result, so what a plan reads next (tool poses, joint values) shows the end of the motion.
+result, so what a plan reads next (tool poses, joint values) shows the end of the motion;
+with a world, the world is then put into that state (``world_mirror.py``).
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ from robocram.ros.ros1_transport import Ros1Transport
 from robocram.ros.ros_config import RosConfig
 from robocram.ros.trajectory_goal import trajectory_goal
 from robocram.ros.transport import GoalOutcome, RosDict, Transport
+from robocram.ros.world_mirror import WorldMirror, environment_topics, names_in
 from robocram.tf import Pose, PoseLike, PoseStamped
 from robocram.world import World
 
@@ -54,6 +56,11 @@ class RosRobotClient:
         self.desc = desc
         self.config = config
         self.fixed_frame = fixed_frame
+        self.mirror = (
+            WorldMirror(world, desc, environment_topics(world, config.environment_topics))
+            if world is not None
+            else None
+        )
         self.node_config = NodeConfig(
             master_uri=master_uri,
             node_name=node_name,
@@ -64,6 +71,7 @@ class RosRobotClient:
             lost_after=config.connection_timeout,
             clock_skew_bound=config.clock_skew_bound,
             master_timeout=master_timeout,
+            environment_topics=tuple(self.mirror.topics.values()) if self.mirror else (),
         )
         self._factory = transport_factory
         self._transport: Transport | None = None
@@ -146,6 +154,7 @@ class RosRobotClient:
                 server=server,
                 reason="state not published",
             )
+        self.mirror_state()
 
     @property
     def has_world(self) -> bool:
@@ -154,9 +163,23 @@ class RosRobotClient:
 
     def planner(self) -> MotionPlanner:
         """The motion planner, its world (if any) put where ROS says the robot is now."""
-        if self._planner.world is not None:
-            self._planner.sync(self.joint_states(), self.base_pose())
+        self.mirror_state()
         return self._planner
+
+    def mirror_state(self) -> None:
+        """Put the world (if any) into the state ROS reports now: the robot's joints and
+        base, the environments' joints and the poses of the objects tf knows."""
+        mirror = self.mirror
+        if mirror is None:
+            return
+        transport = self.transport
+        tracked = names_in(transport.frames(), mirror.movable_objects())
+        mirror.sync(
+            self.joint_states(),
+            self.base_pose(),
+            transport.environment_joint_states(),
+            {obj: self.frame_pose(obj) for obj in tracked},
+        )
 
     def move_joints(
         self,

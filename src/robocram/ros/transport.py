@@ -80,6 +80,10 @@ class Transport(Protocol):
         """The latest joint positions [rad | m] by joint name."""
         ...
 
+    def environment_joint_states(self) -> dict[str, dict[str, float]]:
+        """The latest joint positions of the environment (drawers, doors) by topic."""
+        ...
+
     def lookup_transform(self, target_frame: str, source_frame: str) -> Pose:
         """The latest pose of ``source_frame`` in ``target_frame``."""
         ...

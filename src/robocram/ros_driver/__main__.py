@@ -1,8 +1,8 @@
-"""Run the projection driver as a ROS node on the tabletop scene of a robot.
+"""Run the projection driver as a ROS node on a scene (tabletop or kitchen) of a robot.
 
-``python -m robocram.ros_driver --robot pr2 --master-uri http://127.0.0.1:11311``
-prints ``ready <node name>`` on stdout once its action servers run, then serves until
-killed (SIGTERM or SIGINT) or the master goes away.
+``python -m robocram.ros_driver --robot pr2 --master-uri http://127.0.0.1:11311
+[--scene kitchen]`` prints ``ready <node name>`` on stdout once its action servers run,
+then serves until killed (SIGTERM or SIGINT) or the master goes away.
 """
 
 from __future__ import annotations
@@ -15,14 +15,24 @@ from robocram.robots import load_description
 from robocram.ros.ros_config import install_ros_facts, read_ros_config
 from robocram.ros_driver.motion import MotionOptions
 from robocram.ros_driver.projection_driver import CONTROLLERS, FAULTS, ProjectionDriver
-from robocram.scenes import tabletop_scene
+from robocram.scenes import kitchen_scene, tabletop_scene
 from robocram.world import World
+
+SCENES = ("tabletop", "kitchen")
+
+
+def _build_scene(scene: str, robot: str, world: World) -> str:
+    """Build ``scene`` with ``robot`` in ``world``; return the robot's name there."""
+    if scene == "kitchen":
+        return kitchen_scene(robot, world).robot
+    return tabletop_scene(robot, world).robot
 
 
 def _arguments() -> argparse.Namespace:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--robot", default="pr2", help="built-in robot: pr2, hsrb")
     parser.add_argument("--master-uri", default=os.environ.get("ROS_MASTER_URI", ""))
+    parser.add_argument("--scene", choices=SCENES, default="tabletop")
     parser.add_argument("--ros-facts", type=Path, help="ROS facts file (default: packaged)")
     parser.add_argument("--base-speed", type=float, default=0.5, help="[m/s]; 0 jumps")
     parser.add_argument("--time-scale", type=float, default=1.0, help="trajectory time x")
@@ -45,10 +55,10 @@ def main() -> None:
     import rospy
 
     world = World()
-    scene = tabletop_scene(args.robot, world)
+    robot = _build_scene(args.scene, args.robot, world)
     facts = args.ros_facts.read_text() if args.ros_facts else None
-    install_ros_facts(world.kb, scene.robot, facts)
-    config = read_ros_config(world.kb, load_description(scene.robot))
+    install_ros_facts(world.kb, robot, facts)
+    config = read_ros_config(world.kb, load_description(robot))
     options = MotionOptions(base_speed=args.base_speed, time_scale=args.time_scale)
     rospy.init_node(args.node_name)
     driver = ProjectionDriver(

@@ -38,14 +38,16 @@ class DriverProcess:
         goal_log: Path | None = None,
         controllers: str = "projection",
         clock_offset: float = 0.0,
+        scene: str = "tabletop",
     ) -> None:
         """``goal_log``: the driver appends each goal it receives there (``received_goals``);
-        ``controllers="pr2"``: the real PR2's controllers; ``clock_offset`` [s] on stamps."""
+        ``controllers="pr2"``: the real PR2's controllers; ``clock_offset`` [s] on stamps;
+        ``scene``: ``"tabletop"`` or ``"kitchen"`` (``kitchen_scene``)."""
         self.args = [
             sys.executable, "-m", "robocram.ros_driver", "--robot", robot,
             "--master-uri", master_uri, "--base-speed", str(base_speed),
             "--time-scale", str(time_scale), "--fault", fault,
-            "--controllers", controllers, "--clock-offset", str(clock_offset),
+            "--controllers", controllers, "--clock-offset", str(clock_offset), "--scene", scene,
         ]  # fmt: skip
         if ros_facts is not None:
             self.args += ["--ros-facts", str(ros_facts)]

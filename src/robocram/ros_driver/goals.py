@@ -8,7 +8,9 @@ reuse projection's low-level functions, so a robot behind ROS behaves as in proj
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from functools import partial
 from typing import Any
 
 import numpy as np
@@ -22,6 +24,7 @@ from robocram.projection.neck import look_at
 from robocram.projection.perception import visible_matches
 from robocram.ros.gripper_semantics import GripperSemantics
 from robocram.ros.transport import GoalState
+from robocram.ros_driver.held_handles import HeldHandles
 from robocram.ros_driver.motion import MotionOptions, Stepper, base_motion, joint_motion
 from robocram.tf import Pose, PoseStamped, pose_stamped_to_ros
 
@@ -39,12 +42,14 @@ class GoalContext:
 
     ``soft_limits`` (the real PR2's controllers): joint targets are clamped into them
     silently, as its safety controller does, and trajectory results carry no status text.
+    ``handles``: the handles the grippers hold (their parts move with the hands).
     """
 
     robot: ProjectedRobot
     options: MotionOptions
     stepper: Stepper
     soft_limits: dict[str, tuple[float, float]] | None = None
+    handles: HeldHandles = field(default_factory=HeldHandles)
 
 
 def _soft_clamped(target: dict[str, float], ctx: GoalContext) -> dict[str, float]:
@@ -115,16 +120,23 @@ def follow_joint_trajectory(goal: RosMessage, ctx: GoalContext) -> Outcome:
         elapsed = point.time_from_start.to_sec()
         with ctx.stepper.lock:
             duration, step = joint_motion(ctx.robot, target, seconds, ctx.options)
-        if not ctx.stepper.run(duration, step):
+        if not ctx.stepper.run(duration, partial(_pulling, step, ctx)):
             return None
         with ctx.stepper.lock:
             clamped = ctx.robot.world.set_joint_states(ctx.robot.name, target)
+            ctx.handles.follow(ctx.robot)
         if clamped:
             text = "joint goals outside the limits, clamped: " + ", ".join(
                 f"{c.name}={c.requested} not in [{c.lower}, {c.upper}]" for c in clamped
             )
             return _trajectory_outcome(False, GOAL_TOLERANCE_VIOLATED, text, ctx)
     return _at_goal(goal, names, ctx)
+
+
+def _pulling(step: Callable[[float], None], ctx: GoalContext, fraction: float) -> None:
+    """A trajectory step; the parts whose handles the hands hold follow them."""
+    step(fraction)
+    ctx.handles.follow(ctx.robot)
 
 
 def single_joint_position(goal: RosMessage, ctx: GoalContext, joint: str) -> Outcome:
@@ -223,11 +235,12 @@ def gripper_command(goal: RosMessage, ctx: GoalContext, semantics: GripperSemant
             if position <= limits.lower + GRIP_TOLERANCE:
                 stalled = bool(grip(robot, arm))
             elif position >= limits.upper - GRIP_TOLERANCE:
+                ctx.handles.release(robot, arm)
                 open_gripper(robot, arm)
             else:
                 set_gripper(robot, arm, position)
-        except GripperClosedCompletely:
-            stalled = False
+        except GripperClosedCompletely:  # on nothing movable; a handle's bar is thin
+            ctx.handles.grasp(robot, arm)
         except PlanFailure as failure:
             return False, {}, str(failure)
         reached = robot.world.joint_states(robot.name)[joint]

@@ -15,7 +15,6 @@ Written from the PR2's public controller behaviour, independently of the plan si
 
 from __future__ import annotations
 
-import contextlib
 from pathlib import Path
 from xml.etree import ElementTree
 
@@ -50,9 +49,12 @@ def gripper_command(goal: RosMessage, ctx: GoalContext, arm: str) -> Outcome:
         upper = robot.world.joint_limits(robot.name, joint).upper
         per_metre = upper / GAP_AT_UPPER  # [rad/m]
         if wanted <= CLOSED:
-            with contextlib.suppress(GripperClosedCompletely):  # closed fully: reached 0
+            try:
                 grip(robot, arm)
+            except GripperClosedCompletely:  # closed fully: reached 0, or a handle's bar
+                ctx.handles.grasp(robot, arm)
         else:
+            ctx.handles.release(robot, arm)
             release(robot, arm)
             set_gripper(robot, arm, min(max(wanted, 0.0), GAP_SOFT_UPPER) * per_metre)
         gap = robot.world.joint_states(robot.name)[joint] / per_metre

@@ -4,13 +4,14 @@ For tests and demos the robot behind real ROS is then a simulated one: the actio
 servers named by the robot's ``ros_action/4`` facts move the projected robot (as
 ``goals.py`` says per action type), and ``/joint_states`` plus ``/tf`` (every robot link
 and object in ``map``) are published at ``PUBLISH_RATE`` and after every goal, before its
-result. ``fault`` makes every goal end badly on purpose, to exercise clients:
-``"silent"`` never answers (until cancelled), ``"abort"`` aborts with a status text,
-``"ignore_cancel"`` never answers and ignores cancels. ``controllers="pr2"`` behaves as
-the real PR2's controllers (``pr2_controllers.py``: a gripper gap in metres that stalls
-on objects, joints clamped to the soft limits, results without status text);
-``clock_offset`` [s] shifts the stamps of everything published, as a robot clock ahead
-(+) or behind (-) of ours.
+result, with the joint states of each articulated environment (the kitchen's drawers and
+doors) on ``/<name>/joint_states``, as iai_kitchen publishes them. ``fault`` makes every
+goal end badly on purpose, to exercise clients: ``"silent"`` never answers (until
+cancelled), ``"abort"`` aborts with a status text, ``"ignore_cancel"`` never answers and
+ignores cancels. ``controllers="pr2"`` behaves as the real PR2's controllers
+(``pr2_controllers.py``: a gripper gap in metres that stalls on objects, joints clamped
+to the soft limits, results without status text); ``clock_offset`` [s] shifts the stamps
+of everything published, as a robot clock ahead (+) or behind (-) of ours.
 """
 
 from __future__ import annotations
@@ -29,8 +30,9 @@ from robocram.ros.message_dicts import message_class, to_dict, to_message
 from robocram.ros.ros_config import RosConfig
 from robocram.ros_driver import goals, pr2_controllers
 from robocram.ros_driver.goals import RosMessage
+from robocram.ros_driver.held_handles import HeldHandles
 from robocram.ros_driver.motion import MotionOptions, Stepper
-from robocram.world import World
+from robocram.world import RobotObject, World
 
 PUBLISH_RATE = 30.0  # [Hz]
 FAULTS = ("none", "silent", "abort", "ignore_cancel")
@@ -95,6 +97,12 @@ class ProjectionDriver:
         self.fault = fault
         self.lock = threading.Lock()
         self.frames = WorldFrames(world)
+        self.handles = HeldHandles()  # a drawer follows the hand holding its handle
+        self.environments = [  # articulated objects that are not robots: kitchens, cupboards
+            o.name
+            for o in world.objects()
+            if not isinstance(o, RobotObject) and world.joint_states(o)
+        ]
         self.soft_limits = (
             pr2_controllers.soft_limits(self.robot.description.urdf)
             if controllers == "pr2"
@@ -116,6 +124,10 @@ class ProjectionDriver:
             "joints": rospy.Publisher(self.config.joint_states_topic, JointState, queue_size=10),
             "tf": rospy.Publisher("/tf", TFMessage, queue_size=10),
         }
+        for environment in self.environments:
+            self._publishers[environment] = rospy.Publisher(
+                f"/{environment}/joint_states", JointState, queue_size=10
+            )
         served: dict[str, tuple[str, str]] = {}
         for interface in self.config.actions.values():
             served.setdefault(interface.server, (interface.resource, interface.action_type))
@@ -186,7 +198,9 @@ class ProjectionDriver:
     def _handle(self, handler: Handler, goal: RosMessage, stepper: Stepper) -> goals.Outcome:
         """Run the handler; an error in it aborts the goal with the error as status text."""
         try:
-            context = goals.GoalContext(self.robot, self.options, stepper, self.soft_limits)
+            context = goals.GoalContext(
+                self.robot, self.options, stepper, self.soft_limits, self.handles
+            )
             return handler(goal, context)
         except Exception as err:  # reported to the client, never a goal left hanging
             return False, {}, f"driver error: {type(err).__name__}: {err}"
@@ -201,6 +215,7 @@ class ProjectionDriver:
         with self.lock:
             joints = self.world.joint_states(self.robot.name)
             poses = self.frames.frame_poses()
+            environments = {e: self.world.joint_states(e) for e in self.environments}
         stamp = rospy.Time.now() + rospy.Duration.from_sec(self.clock_offset)
         state = JointState(name=list(joints), position=list(joints.values()))
         state.header.stamp = stamp
@@ -215,4 +230,8 @@ class ProjectionDriver:
             r.x, r.y, r.z, r.w = pose.orientation
             transforms.append(t)
         self._publishers["tf"].publish(TFMessage(transforms=transforms))
+        for environment, values in environments.items():
+            message = JointState(name=list(values), position=list(values.values()))
+            message.header.stamp = stamp
+            self._publishers[environment].publish(message)
         self._publishers["joints"].publish(state)

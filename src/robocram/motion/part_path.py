@@ -1,0 +1,56 @@
+"""How a hand holds a handle and the steps a part's joint moves in: shared by projection
+and the ROS arms, so both open drawers and doors the same way.
+
+The gripper takes the handle from the front: its approach axis along the handle frame's
+-x (which points out of the front), rolled about that axis by one of :data:`ROLLS` (a bar
+handle wants the fingers across it, and robots' hands differ). The joint then moves in
+steps of at most :data:`LINEAR_STEP` of the handle's travel, the tool put on the handle
+at each.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from robocram.tf import Pose
+from robocram.tf import quaternion as quat
+from robocram.world import World
+
+LINEAR_STEP = 0.02  # [m] of the handle's travel between IK checks
+PRE_GRASP = 0.10  # [m] in front of the handle before and after holding it
+BACK_OFF = (PRE_GRASP, PRE_GRASP / 2)  # [m] tried in turn when letting go of the handle
+ROLLS = (math.pi / 2, -math.pi / 2, 0.0, math.pi)  # [rad] about the approach axis
+
+
+def grasp_in_handle(axis_in_tool: np.ndarray, roll: float) -> Pose:
+    """The tool pose in the handle frame: approach axis along the handle's -x, rolled."""
+    into = np.array((-1.0, 0.0, 0.0))
+    turn = np.cross(axis_in_tool, into)
+    angle = math.atan2(float(np.linalg.norm(turn)), float(axis_in_tool @ into))
+    if np.linalg.norm(turn) < 1e-9:
+        turn = np.array((0.0, 0.0, 1.0))
+    aligned = quat.from_axis_angle(tuple(turn / np.linalg.norm(turn)), angle)
+    return Pose(orientation=quat.multiply(quat.from_axis_angle((1.0, 0.0, 0.0), roll), aligned))
+
+
+def handle_speed(world: World, part: str, joint: str, handle: str) -> float:
+    """How far [m] the handle moves per unit of the joint [m | rad] near its current value."""
+    start = world.joint_states(part)[joint]
+    limits = world.joint_limits(part, joint)
+    probe = 1e-3 if start + 1e-3 <= limits.upper else -1e-3
+    before = world.link_pose(part, handle).position
+    world.set_joint_states(part, {joint: start + probe})
+    moved = math.dist(before, world.link_pose(part, handle).position) / abs(probe)
+    world.set_joint_states(part, {joint: start})
+    return max(moved, 1e-3)
+
+
+def part_path(world: World, part: str, joint: str, handle: str, goal: float) -> list[float]:
+    """The joint values from after the current one to ``goal`` inclusive, the handle
+    moving at most :data:`LINEAR_STEP` between two."""
+    start = world.joint_states(part)[joint]
+    step = LINEAR_STEP / handle_speed(world, part, joint, handle)
+    count = max(1, math.ceil(abs(goal - start) / step))
+    return [start + (goal - start) * (i + 1) / count for i in range(count)]
