@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING
 from robocram.logic.builtin_spec import Builtin, det, nondet
 from robocram.logic.builtin_terms import need_int
 from robocram.logic.errors import PrologInstantiationError, PrologPermissionError, PrologTypeError
+from robocram.logic.indicator import indicator_key, indicator_pattern
 from robocram.logic.loader import parse_indicator
 from robocram.logic.terms import Term, Var, deref
 from robocram.logic.unify import copy_resolved
@@ -39,7 +40,8 @@ def _split(clause: Value) -> tuple[Value, Value]:
     return clause, "true"
 
 
-def _pred_of(m: Engine, head: Value, what: str) -> Pred | None:
+def _pred_of(m: Engine, head: Value, what: str, modify: bool = False) -> Pred | None:
+    """The user predicate of `head`; a built-in is private to clause/2, static to retract."""
     if type(head) is Var:
         raise PrologInstantiationError(f"{what}: the clause head is unbound")
     if type(head) is str:
@@ -50,8 +52,9 @@ def _pred_of(m: Engine, head: Value, what: str) -> Pred | None:
         raise PrologTypeError("callable", head, f"{what}: {head!r} is not a callable head")
     pred = m.kb._preds.get(key)
     if pred is not None and (pred.system or pred.kind != 0):
+        action, kind = ("modify", "static_procedure") if modify else ("access", "private_procedure")
         raise PrologPermissionError(
-            "access", "private_procedure", Term("/", key), f"{what}: {pred.indicator} is a built-in"
+            action, kind, Term("/", key), f"{what}: {pred.indicator} is a built-in"
         )
     return pred
 
@@ -62,7 +65,7 @@ def _stored(clause: Value) -> tuple[Value, Value]:
 
 def _retract(m: Engine, a: Args) -> Iterator[bool]:
     head, body = _split(a[0])
-    pred = _pred_of(m, head, "retract/1")
+    pred = _pred_of(m, head, "retract/1", modify=True)
     if pred is None:
         return
     for clause in _candidates(pred, head):
@@ -95,7 +98,7 @@ def _candidates(pred: Pred, head: Value) -> list[Value]:
 
 def _retractall(m: Engine, a: Args) -> bool:
     head = deref(a[0])
-    pred = _pred_of(m, head, "retractall/1")
+    pred = _pred_of(m, head, "retractall/1", modify=True)
     if pred is None:
         m.kb.declare_dynamic((head, 0) if type(head) is str else (head[0], len(head[1])))
         return True
@@ -157,10 +160,10 @@ def _current_op(m: Engine, a: Args) -> bool:
 
 def _current_predicate(m: Engine, a: Args) -> Iterator[bool]:
     spec = deref(a[0])
-    if type(spec) is not Var and not (type(spec) is Term and spec[0] == "/" and len(spec[1]) == 2):
-        raise PrologTypeError(
-            "predicate_indicator", spec, f"current_predicate/1: {spec!r} is not Name/Arity"
-        )
+    if type(spec) is Term and spec[0] == ":" and len(spec[1]) == 2:
+        spec = deref(spec[1][1])  # Module:Name/Arity: one module here
+    if type(spec) is not Var:
+        indicator_pattern(spec, "current_predicate/1")
     # Visible user and library predicates with a definition; built-ins are not listed (ISO).
     for pred in list(m.kb._preds.values()):
         if pred.system or pred.name.startswith("$") or pred.kind != 0:
@@ -174,10 +177,7 @@ def _current_predicate(m: Engine, a: Args) -> Iterator[bool]:
 
 
 def _abolish(m: Engine, a: Args) -> bool:
-    spec = deref(a[0])
-    if type(spec) is Var:
-        raise PrologInstantiationError("abolish/1: the predicate indicator is unbound")
-    key = parse_indicator(spec)
+    key = indicator_key(a[0], "abolish/1")
     with m.kb._lock:
         pred = m.kb._preds.get(key)
         if pred is None:

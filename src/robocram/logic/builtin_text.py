@@ -127,7 +127,10 @@ def _conversion(name: str, codes: bool, result: str) -> Builtin:
 def _char_code(m: Engine, a: Args) -> bool:
     c = deref(a[0])
     if type(c) is not Var:
-        return m.unify(a[1], ord(char_of(c, "char_code/2")))
+        code = deref(a[1])
+        if type(code) is not Var and type(code) is not int:  # ISO checks both arguments
+            raise PrologTypeError("integer", code, f"char_code/2: {code!r} is not an integer")
+        return m.unify(code, ord(char_of(c, "char_code/2")))
     code = deref(a[1])
     if type(code) is Var:
         raise PrologInstantiationError("char_code/2: both arguments are unbound")

@@ -12,6 +12,7 @@ __all__ = [
     "identical",
     "is_acyclic",
     "order_key",
+    "order_key_by",
     "undo",
     "unify",
     "unify_iterative",
@@ -295,6 +296,18 @@ def order_key(term: Value) -> tuple[object, ...]:
     if t is Term:
         return (5, len(term[1]), term[0], tuple([order_key(a) for a in term[1]]))
     return (6, type(term).__name__, id(term))
+
+
+def order_key_by(term: Value, ages: dict[Var, int]) -> tuple[object, ...]:
+    """`order_key` with variables ranked by `ages` (those not in it after, by address)."""
+    while type(term) is Var:
+        if term.ref is None:
+            age = ages.get(term)
+            return (0, 0, age) if age is not None else (0, 1, id(term))
+        term = term.ref
+    if type(term) is Term:
+        return (5, len(term[1]), term[0], tuple([order_key_by(a, ages) for a in term[1]]))
+    return order_key(term)
 
 
 def variant_key(term: Value) -> tuple[object, ...]:
