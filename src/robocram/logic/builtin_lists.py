@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING
 from robocram.logic.arith import Number, evaluate
 from robocram.logic.builtin_spec import Builtin, det, nondet
 from robocram.logic.builtin_terms import list_items, need_int
+from robocram.logic.cycles import list_prefix
 from robocram.logic.errors import PrologDomainError, PrologInstantiationError, PrologTypeError
 from robocram.logic.terms import NIL, Term, Var, deref, make_list
 from robocram.logic.unify import order_key
@@ -22,11 +23,8 @@ Args = tuple[Value, ...]
 
 
 def _length(m: Engine, a: Args) -> Iterator[bool]:
-    n = 0
-    t = deref(a[0])
-    while type(t) is Term and t[0] == "." and len(t[1]) == 2:
-        n += 1
-        t = deref(t[1][1])
+    cells, t = list_prefix(a[0], "length/2")
+    n = len(cells)
     if type(t) is not Var:
         if t != NIL or type(t) is not str:
             raise PrologTypeError("list", t, f"length/2: expected a list, got {t!r}")

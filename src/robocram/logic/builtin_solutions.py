@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING
 from robocram.logic.arith import evaluate
 from robocram.logic.builtin_spec import Builtin, det, nondet
 from robocram.logic.control import callable_body
+from robocram.logic.cycles import WALK_STEPS, check_acyclic
 from robocram.logic.errors import PrologDomainError, PrologInstantiationError
 from robocram.logic.terms import Term, Var, deref, make_list
 from robocram.logic.unify import copy_resolved, order_key, order_key_by, variant_key
@@ -24,6 +25,8 @@ Args = tuple[Value, ...]
 def term_variables(t: Value, seen: dict[Var, None] | None = None) -> list[Var]:
     """Return the unbound variables of a term in depth-first, left-to-right order."""
     found: dict[Var, None] = {} if seen is None else seen
+    root = t
+    steps = 0
     stack = [t]
     while stack:
         t = deref(stack.pop())
@@ -31,6 +34,9 @@ def term_variables(t: Value, seen: dict[Var, None] | None = None) -> list[Var]:
             found.setdefault(t, None)
         elif type(t) is Term:
             stack.extend(reversed(t[1]))
+            steps += 1
+            if steps == WALK_STEPS:  # a big term, perhaps a cyclic one: check once
+                check_acyclic(root, "term_variables/2")
     return list(found)
 
 

@@ -7,9 +7,11 @@ from typing import TYPE_CHECKING
 
 from robocram.logic.builtin_spec import Builtin, det, nondet
 from robocram.logic.convert import NONE
+from robocram.logic.cycles import list_prefix
 from robocram.logic.errors import (
     PrologDomainError,
     PrologInstantiationError,
+    PrologResourceError,
     PrologTypeError,
     error_from_ball,
 )
@@ -38,11 +40,7 @@ def need_int(t: Value, what: str) -> int:
 
 def list_items(t: Value, what: str) -> list[Value]:
     """Return the elements of a proper list; raise for partial or non-lists."""
-    items = []
-    t = deref(t)
-    while type(t) is Term and t[0] == "." and len(t[1]) == 2:
-        items.append(t[1][0])
-        t = deref(t[1][1])
+    items, t = list_prefix(t, what)
     if type(t) is Var:
         raise PrologInstantiationError(f"{what}: the list is partial (ends in a variable)")
     if t != NIL or type(t) is not str:
@@ -86,8 +84,10 @@ _OPAQUE_EXCLUDED = (str, int, float, Term, Var, PString)
 
 
 def _is_list(t: Value) -> bool:
-    while type(t) is Term and t[0] == "." and len(t[1]) == 2:
-        t = deref(t[1][1])
+    try:
+        t = list_prefix(t, "is_list/1")[1]
+    except PrologResourceError:
+        return False  # a cyclic list is not a list
     return type(t) is str and t == NIL
 
 

@@ -13,6 +13,7 @@ from collections.abc import Callable, Iterable, Iterator
 from robocram.logic.bigint import int_text
 from robocram.logic.builtin_spec import Builtin, det, nondet
 from robocram.logic.builtin_terms import need_int
+from robocram.logic.cycles import list_prefix
 from robocram.logic.engine import Engine
 from robocram.logic.errors import (
     PrologDomainError,
@@ -77,11 +78,8 @@ def char_of_code(x: Value, what: str) -> str:
 
 def text_items(t: Value, what: str, item: Callable[[Value, str], str]) -> str | None:
     """The text of a char or code list; None when the list is partial (can't tell yet)."""
-    out: list[str] = []
-    t = deref(t)
-    while type(t) is Term and t[0] == "." and len(t[1]) == 2:
-        out.append(item(t[1][0], what))
-        t = deref(t[1][1])
+    cells, t = list_prefix(t, what)
+    out = [item(c, what) for c in cells]
     if type(t) is Var:
         return None
     if t != NIL or type(t) is not str:

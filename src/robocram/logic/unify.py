@@ -4,7 +4,8 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from robocram.logic.terms import PString, Term, Var, deref, new_term
+from robocram.logic.cycles import check_acyclic, cyclic_error, is_acyclic
+from robocram.logic.terms import PString, Term, Var, new_term
 from robocram.logic.value import Value
 
 __all__ = [
@@ -146,28 +147,6 @@ def unify_iterative(a: Value, b: Value, trail: list[Var], may_bind: BindCheck | 
     return True
 
 
-def is_acyclic(t: Value) -> bool:
-    """True unless following bindings from `t` leads back into a compound on the path."""
-    on_path: set[int] = set()
-    done: set[int] = set()
-    stack: list[tuple[Value, bool]] = [(t, False)]
-    while stack:
-        t, leaving = stack.pop()
-        if leaving:
-            on_path.discard(id(t))
-            done.add(id(t))
-            continue
-        t = deref(t)
-        if type(t) is not Term or id(t) in done:
-            continue
-        if id(t) in on_path:
-            return False
-        on_path.add(id(t))
-        stack.append((t, True))
-        stack.extend((arg, False) for arg in t[1])
-    return True
-
-
 def undo(trail: list[Var], mark: int) -> None:
     """Unbind every variable bound since the trail had length `mark`."""
     while len(trail) > mark:
@@ -199,11 +178,18 @@ def _copy(term: Value, mapping: dict[Var, Var]) -> Value:
         return term
     if term[0] == "." and len(term[1]) == 2:
         items = []
+        saved: Value = term
+        power = 64
         while type(term) is Term and term[0] == "." and len(term[1]) == 2:
             items.append(_copy(term[1][0], mapping))
             term = term[1][1]
             while type(term) is Var and term.ref is not None:
                 term = term.ref
+            if term is saved:  # Brent's test: the tail came back to a cell seen before
+                raise cyclic_error("copying a list")
+            if len(items) == power:
+                saved = term
+                power <<= 1
         tail = _copy(term, mapping)
         for item in reversed(items):
             tail = new_term(Term, (".", (item, tail)))
@@ -212,7 +198,8 @@ def _copy(term: Value, mapping: dict[Var, Var]) -> Value:
 
 
 def _copy_deep(term: Value, mapping: dict[Var, Var]) -> Value:
-    """`copy_resolved` with an explicit stack: any depth (a cyclic term never ends)."""
+    """`copy_resolved` with an explicit stack: any depth; a cyclic term is an error."""
+    check_acyclic(term, "copying a term")
     out: list[Value] = []
     stack: list[tuple[bool, Value]] = [(False, term)]
     while stack:
