@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING
 
 from robocram.logic.builtin_spec import Builtin, det, nondet
@@ -38,9 +38,12 @@ def need_int(t: Value, what: str) -> int:
     return t
 
 
-def list_items(t: Value, what: str) -> list[Value]:
-    """Return the elements of a proper list; raise for partial or non-lists."""
-    items, t = list_prefix(t, what)
+def list_items(t: Value, what: str, check: Callable[[], None] | None = None) -> list[Value]:
+    """Return the elements of a proper list; raise for partial or non-lists.
+
+    `check` (the query's limit check) is called as a long list is read.
+    """
+    items, t = list_prefix(t, what, check)
     if type(t) is Var:
         raise PrologInstantiationError(f"{what}: the list is partial (ends in a variable)")
     if t != NIL or type(t) is not str:

@@ -9,6 +9,8 @@ run `is_acyclic` once, only after `WALK_STEPS` steps.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from robocram.logic.errors import PrologResourceError
 from robocram.logic.terms import Term, Var
 from robocram.logic.value import Value
@@ -56,10 +58,13 @@ def check_acyclic(t: Value, what: str) -> None:
         raise cyclic_error(what)
 
 
-def list_prefix(t: Value, what: str) -> tuple[list[Value], Value]:
+def list_prefix(
+    t: Value, what: str, check: Callable[[], None] | None = None
+) -> tuple[list[Value], Value]:
     """The elements of the list cells of `t` and the dereferenced tail after them.
 
     Raises `cyclic_error(what)` for a cyclic list (`L = [a|L]`), found by Brent's test.
+    `check` (the query's limit check) is called every 32768 cells of a long list.
 
     >>> list_prefix(Term(".", (1, Term(".", (2, "[]")))), "t")
     ([1, 2], '[]')
@@ -79,4 +84,6 @@ def list_prefix(t: Value, what: str) -> tuple[list[Value], Value]:
         if len(items) == power:  # Brent: move the marker to the hare every power of two
             saved = t
             power <<= 1
+        if check is not None and not len(items) & 0x7FFF:
+            check()
     return items, t
