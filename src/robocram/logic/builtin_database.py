@@ -193,6 +193,11 @@ def _abolish(m: Engine, a: Args) -> bool:
     return True
 
 
+def _mode(m: Engine, a: Args) -> bool:
+    """Accept a DEC-10 mode declaration (`:- mode(p(+, -))`) and ignore it, as SWI does."""
+    return True
+
+
 def _repeat(m: Engine, a: Args) -> Iterator[bool]:
     while True:
         yield True
@@ -209,6 +214,7 @@ BUILTINS: tuple[Builtin, ...] = (
     det("retractall", _retractall, 1),
     nondet("clause", _clause, 2),
     det("dynamic", _dynamic, 1),
+    det("mode", _mode, 1),
     det("op", _op, 3),
     det("current_op", _current_op, 3),
 )
