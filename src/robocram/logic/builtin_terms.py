@@ -15,6 +15,7 @@ from robocram.logic.errors import (
     PrologTypeError,
     error_from_ball,
 )
+from robocram.logic.functor_arg import arg_check, functor_make
 from robocram.logic.terms import NIL, PString, Term, Var, deref
 from robocram.logic.unify import copy_resolved, identical, is_acyclic, order_key
 from robocram.logic.univ import univ_compose, univ_list
@@ -113,30 +114,12 @@ def _functor(m: Engine, a: Args) -> bool:
         return m.unify(a[1], t[0]) and m.unify(a[2], len(t[1]))
     if type(t) is not Var:
         return m.unify(a[1], t) and m.unify(a[2], 0)
-    name = deref(a[1])
-    if type(name) is Var:
-        raise PrologInstantiationError("functor/3: both the term and the name are unbound")
-    arity = need_int(a[2], "functor/3")
-    if arity < 0:
-        raise PrologDomainError("not_less_than_zero", arity, f"functor/3: arity {arity} < 0")
-    if type(name) is Term:
-        raise PrologTypeError("atomic", name, f"functor/3: {name!r} is not atomic")
-    if arity == 0:
-        return m.unify(t, name)
-    if type(name) is not str:
-        raise PrologTypeError("atom", name, f"functor/3: {name!r} cannot name a compound")
-    return m.unify(t, Term(name, [Var() for _ in range(arity)]))
+    return m.unify(t, functor_make(a[1], a[2]))
 
 
 def _arg(m: Engine, a: Args) -> bool:
-    n = need_int(a[0], "arg/3")
+    n = arg_check(a[0], a[1])
     t = deref(a[1])
-    if type(t) is Var:
-        raise PrologInstantiationError("arg/3: the term is unbound")
-    if type(t) is not Term:
-        raise PrologTypeError("compound", t, f"arg/3: {t!r} is not a compound term")
-    if n < 0:
-        raise PrologDomainError("not_less_than_zero", n, f"arg/3: position {n} < 0")
     return 1 <= n <= len(t[1]) and m.unify(a[2], t[1][n - 1])
 
 

@@ -29,6 +29,7 @@ from collections.abc import Callable, Sequence
 
 from robocram.logic.choicepoints import PROC, ChoicePoint, Cont
 from robocram.logic.codegen import ClauseCode, ClauseWriter, make_factory
+from robocram.logic.exclusive_guards import excludes
 from robocram.logic.limits import PROC_LOOPS
 from robocram.logic.template import Slot, Tmpl
 from robocram.logic.terms import Term, Var
@@ -196,6 +197,7 @@ class _ProcWriter(ClauseWriter):
         self.names = "".join(f"a{i}, " for i in range(self.arity))
         self.committed: bool | None = False
         self.next_start: int | None = None
+        self.alt_start: int | None = None  # the clause a choicepoint resumes at
 
     def procedure(self, b: _Branches) -> None:
         self.switch(b)
@@ -292,6 +294,8 @@ class _ProcWriter(ClauseWriter):
             self.committed = False
             last = pos == len(members) - 1
             self.next_start = None if last else members[pos + 1]
+            rest = [j for j in members[pos + 1 :] if not excludes(self.clauses[i], self.clauses[j])]
+            self.alt_start = rest[0] if rest else None
             if last:
                 self.fail = "return False"
                 self.base = depth - 1
@@ -335,9 +339,9 @@ class _ProcWriter(ClauseWriter):
 
     def alternatives(self) -> None:
         """Emit the choicepoint for the branch's later clauses, unless cut."""
-        if self.committed or self.next_start is None:
+        if self.committed or self.alt_start is None:
             return
-        state = f"[{PROC}, mark, ({self.names}), nxt, proc, {self.next_start}]"
+        state = f"[{PROC}, mark, ({self.names}), nxt, proc, {self.alt_start}]"
         self.emit(f"cps.append({state})", 1)
 
     def exit(self, cont: str) -> None:
