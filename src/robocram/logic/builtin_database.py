@@ -24,12 +24,12 @@ Args = tuple[Value, ...]
 
 
 def _assertz(m: Engine, a: Args) -> bool:
-    m.kb.assert_clause(copy_resolved(a[0]))
+    m.kb.assert_term(a[0])
     return True
 
 
 def _asserta(m: Engine, a: Args) -> bool:
-    m.kb.assert_clause(copy_resolved(a[0]), front=True)
+    m.kb.assert_term(a[0], front=True)
     return True
 
 

@@ -22,6 +22,8 @@ def stored_body(body: Value) -> Value:
     >>> v = Var(); stored_body(Term(",", (v, "true")))[1][0][0]
     'call'
     """
+    if type(body) is str:  # a fact's `true`, or one atom goal: nothing to wrap
+        return body
     out: list[Value] = []
     stack: list[tuple[bool, Value]] = [(False, body)]
     changed = False

@@ -12,7 +12,7 @@ from robocram.logic.errors import (
     PrologInstantiationError,
     PrologTypeError,
 )
-from robocram.logic.terms import Term, Var
+from robocram.logic.terms import Term, Var, new_term
 from robocram.logic.value import Value
 
 __all__ = ["arg_check", "functor_make"]
@@ -57,9 +57,12 @@ def functor_make(name: Value, arity: Value) -> Value:
     (2, 'a')
     """
     name = _deref(name)
+    n = _deref(arity)
+    if type(name) is str and type(n) is int and n > 0:  # the common case, checked below
+        return new_term(Term, (name, tuple([Var() for _ in range(n)])))
     if type(name) is Var:
         raise PrologInstantiationError("functor/3: both the term and the name are unbound")
-    n = _int(arity, "functor/3")
+    n = _int(n, "functor/3")
     if n < 0:
         raise PrologDomainError("not_less_than_zero", n, f"functor/3: arity {n} < 0")
     if type(name) is Term:
