@@ -173,7 +173,8 @@ class Machine:
                         else:
                             cont = self._call_other(goal, len(cps), nxt)
                         continue
-                    p = preds.get((name, len(args)))
+                    p = preds.get(name)  # a call's first item is its (name, arity) key
+                    name = name[0]
                 elif tg is Term:
                     name = goal[0]
                     args = goal[1]
@@ -397,7 +398,7 @@ def host_error(err: Exception, goal: Value) -> PrologError:
     if type(goal) is tuple:
         if len(goal) != 3 or goal[2] not in (CALL, INLINE):  # a Python tuple as a goal
             return PrologTypeError("callable", goal, f"{goal!r} is not a callable goal")
-        where = f"{goal[0]}/{len(goal[1])}" if goal[2] is CALL else "an inline goal"
+        where = f"{goal[0][0]}/{len(goal[1])}" if goal[2] is CALL else "an inline goal"
     elif type(goal) is Term:
         where = f"{goal[0]}/{len(goal[1])}"
     else:
