@@ -10,7 +10,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import cast
 
-from robocram.logic.cycles import is_acyclic
+from robocram.logic.acyclic import is_acyclic
 from robocram.logic.terms import NIL, PString, Term, Var, new_term
 from robocram.logic.value import Value
 

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from robocram.logic.acyclic import is_acyclic
 from robocram.logic.errors import PrologResourceError
 from robocram.logic.terms import Term, Var
 from robocram.logic.value import Value
@@ -27,29 +28,6 @@ def cyclic_error(what: str) -> PrologResourceError:
         "term_depth",
         f"{what}: the term is cyclic (as after X = f(X)); test it with acyclic_term/1 first",
     )
-
-
-def is_acyclic(t: Value) -> bool:
-    """True unless following bindings from `t` leads back into a compound on the path."""
-    on_path: set[int] = set()
-    done: set[int] = set()
-    stack: list[tuple[Value, bool]] = [(t, False)]
-    while stack:
-        t, leaving = stack.pop()
-        if leaving:
-            on_path.discard(id(t))
-            done.add(id(t))
-            continue
-        while type(t) is Var and t.ref is not None:
-            t = t.ref
-        if type(t) is not Term or id(t) in done:
-            continue
-        if id(t) in on_path:
-            return False
-        on_path.add(id(t))
-        stack.append((t, True))
-        stack.extend((arg, False) for arg in t[1])
-    return True
 
 
 def check_acyclic(t: Value, what: str) -> None:

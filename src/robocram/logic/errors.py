@@ -6,6 +6,7 @@ can be caught with `catch/3`, and when they escape they surface as the matching 
 
 from __future__ import annotations
 
+from robocram.logic.convert import to_python
 from robocram.logic.terms import Term, format_term
 from robocram.logic.value import Value
 
@@ -43,8 +44,6 @@ class PrologError(Exception):
     @property
     def term(self) -> Value:
         """The thrown term as a Python value (lists as lists, atoms as str)."""
-        from robocram.logic.convert import to_python  # convert -> unify -> errors
-
         return to_python(self.ball)
 
 

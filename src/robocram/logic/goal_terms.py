@@ -8,17 +8,31 @@ checks of functor_arg.py, which raise the ISO error or let the goal fail.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import Protocol
 
 from robocram.logic.template import Slot, Tmpl
 from robocram.logic.value import Value
 
-if TYPE_CHECKING:
-    from robocram.logic.goal_writer import GoalWriter
-
 __all__ = ["TERM_GOALS", "emit_term_goal"]
 
 TERM_GOALS = frozenset([("arg", 3), ("functor", 3)])
+
+
+class GoalWriter(Protocol):
+    """What these emitters use of goal_writer.GoalWriter."""
+
+    known: set[int]
+    fail: str
+
+    def emit(self, line: str, depth: int) -> None: ...
+
+    def temp(self) -> str: ...
+
+    def const(self, value: Value) -> str: ...
+
+    def build(self, t: Value) -> str: ...
+
+    def unify_arg(self, p: Value, x: str, depth: int) -> None: ...
 
 
 def emit_term_goal(w: GoalWriter, name: str, args: tuple[Value, ...]) -> bool:
