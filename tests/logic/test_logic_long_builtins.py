@@ -47,6 +47,22 @@ def test_long_built_ins_ask_the_stop_hook_as_they_go(goal: str) -> None:
     assert calls[0] == 3  # stopped at the third check, well inside the one long call
 
 
+def test_text_built_ins_ask_the_stop_hook_while_they_build_a_list() -> None:
+    kb = KnowledgeBase()
+    kb.holds("length(L, 400000), maplist(=(0'a), L), atom_codes(A, L), assertz(big(A))")
+    calls = [0]
+
+    def hook() -> None:
+        calls[0] += 1
+        if calls[0] == 3:
+            raise Stop
+
+    for goal in ("big(A), atom_chars(A, _)", "big(A), atom_codes(A, _)"):
+        calls[0] = 0
+        with checking_stop(hook), pytest.raises(Stop):
+            kb.holds(goal)
+
+
 def test_a_time_limit_ends_numlist_long_before_it_could_finish() -> None:
     kb = KnowledgeBase()
     chunks = [0]

@@ -23,7 +23,8 @@ from robocram.logic.errors import (
     PrologTypeError,
 )
 from robocram.logic.lexer import tokenize
-from robocram.logic.terms import NIL, PString, Term, Var, deref, make_list
+from robocram.logic.long_work import checked_list
+from robocram.logic.terms import NIL, PString, Term, Var, deref
 from robocram.logic.value import Value
 
 __all__ = ["BUILTINS", "parse_number"]
@@ -76,9 +77,17 @@ def char_of_code(x: Value, what: str) -> str:
     return chr(code)
 
 
-def text_items(t: Value, what: str, item: Callable[[Value, str], str]) -> str | None:
-    """The text of a char or code list; None when the list is partial (can't tell yet)."""
-    cells, t = list_prefix(t, what)
+def text_items(
+    t: Value,
+    what: str,
+    item: Callable[[Value, str], str],
+    check: Callable[[], None] | None = None,
+) -> str | None:
+    """The text of a char or code list; None when the list is partial (can't tell yet).
+
+    `check` (the query's limit check) is called as a long list is read.
+    """
+    cells, t = list_prefix(t, what, check)
     out = [item(c, what) for c in cells]
     if type(t) is Var:
         return None
@@ -107,11 +116,12 @@ def _conversion(name: str, codes: bool, result: str) -> Builtin:
 
     def run(m: Engine, a: Args) -> bool:
         text = _source_text(a[0], name, result == "number")
-        listed = text_items(a[1], name, item)
+        listed = text_items(a[1], name, item, m.budget.check)
         if listed is None:
             if text is None:
                 raise PrologInstantiationError(f"{name}: both arguments are unbound")
-            return m.unify(a[1], make_list([ord(c) if codes else c for c in text]))
+            chars = [ord(c) for c in text] if codes else list(text)
+            return m.unify(a[1], checked_list(chars, m.budget))
         if result == "number":
             value = parse_number(listed)
             if value is None:
