@@ -15,6 +15,7 @@ from robocram.logic.unify import copy_resolved
 from robocram.logic.value import Value
 
 if TYPE_CHECKING:
+    from robocram.logic.clause import Clause
     from robocram.logic.engine import Engine
     from robocram.logic.predicate import Pred
 
@@ -59,8 +60,9 @@ def _pred_of(m: Engine, head: Value, what: str, modify: bool = False) -> Pred | 
     return pred
 
 
-def _stored(clause: Value) -> tuple[Value, Value]:
-    return _split(copy_resolved(clause.source))
+def _stored(clause: Clause) -> tuple[Value, Value]:
+    """The clause as a term to unify with; a ground one needs no fresh copy."""
+    return _split(clause.source if clause.nvars == 0 else copy_resolved(clause.source))
 
 
 def _retract(m: Engine, a: Args) -> Iterator[bool]:
@@ -68,7 +70,7 @@ def _retract(m: Engine, a: Args) -> Iterator[bool]:
     pred = _pred_of(m, head, "retract/1", modify=True)
     if pred is None:
         return
-    for clause in _candidates(pred, head):
+    for clause in _snapshot(pred, head):
         if clause.erased:
             continue  # retracted meanwhile (by this or another query)
         h, b = _stored(clause)
@@ -87,6 +89,21 @@ def _retract(m: Engine, a: Args) -> Iterator[bool]:
                     yield True
                     continue
         m.undo_to(mark)
+
+
+def _snapshot(pred: Pred, head: Value) -> Iterator[Clause]:
+    """The clauses that can match `head`, as they were at the call, read without a copy.
+
+    Clauses are only ever added after the end of a list, or before its start (asserta),
+    or the list is replaced: its first `n` entries from `lo` on stay the call's view.
+    """
+    first = deref(head[1][0]) if type(head) is Term and head[1] else None
+    if first is None or type(first) is Var:
+        cands, lo = pred.store, pred.head
+    else:
+        cands, lo = pred.candidates(first), 0
+    for i in range(lo, len(cands)):
+        yield cands[i]
 
 
 def _candidates(pred: Pred, head: Value) -> list[Value]:
