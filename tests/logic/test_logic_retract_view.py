@@ -12,7 +12,7 @@ def test_retract_ignores_clauses_added_while_it_runs() -> None:
     kb = KnowledgeBase()
     kb.consult(":- dynamic c/1.\nc(1).\nc(2).")
     answer = kb.first(
-        "findall(X, (retract(c(X)), assertz(c(9)), asserta(c(8))), L), findall(Y, c(Y), M)"
+        "findall(_X, (retract(c(_X)), assertz(c(9)), asserta(c(8))), L), findall(_Y, c(_Y), M)"
     )
     assert answer == {"L": [1, 2], "M": [8, 8, 9, 9]}
 
@@ -20,7 +20,7 @@ def test_retract_ignores_clauses_added_while_it_runs() -> None:
 def test_retract_skips_clauses_retracted_while_it_runs() -> None:
     kb = KnowledgeBase()
     kb.consult(":- dynamic d/1.\nd(a).\nd(b).\nd(c).")
-    assert kb.first("findall(Z, (retract(d(Z)), retract(d(c))), L)") == {"L": ["a"]}
+    assert kb.first("findall(_Z, (retract(d(_Z)), retract(d(c))), L)") == {"L": ["a"]}
 
 
 def test_retract_of_many_ground_facts_by_an_unbound_argument() -> None:
