@@ -159,6 +159,19 @@ case(152, number_chars(_, [a]), syntax_error(_)).
 case(153, (iso_kind(f(x), K), K == compound), true).
 case(154, (iso_kind(_, K), K == var), true).
 case(155, (findall(K, iso_kind(3, K), L), L == [small]), true).
+case(156, abolish(foo/a), type_error(integer, a)).
+case(157, abolish(1/2), type_error(atom, 1)).
+case(158, abolish(foo/(-1)), domain_error(not_less_than_zero, -1)).
+case(159, abolish(foo/_), instantiation_error).
+case(160, (asserta((iso_v(X) :- X)), clause(iso_v(Y), B), B == call(Y)), true).
+case(161, char_code(a, x), type_error(integer, x)).
+case(162, current_predicate(0/dog), type_error(predicate_indicator, 0/dog)).
+case(163, (set_prolog_flag(debug, off), current_prolog_flag(debug, F), F == false), true).
+case(164, retract((atom(_) :- true)), permission_error(modify, static_procedure, atom/1)).
+case(165, (findall(L, setof(X, member(X-_, [1-B, 2-_, 3-B]), L), R),
+           R == [[1, 3], [2]]), true).
+case(166, setof(X, X^(true ; 4), _), type_error(callable, (true ; 4))).
+case(167, bagof(X, Y^(Y = 1 ; 4), _), type_error(callable, (_ = 1 ; 4))).
 
 iso_same(X, X).
 iso_kind(X, K) :- ( var(X) -> K = var ; integer(X), X < 10 -> K = small ; compound(X) -> K = compound

@@ -1,6 +1,3 @@
-% Van Roy benchmark 'chat_parser', fetched unchanged from https://github.com/SWI-Prolog/bench
-% (programs/chat_parser.pl at commit bba99e6). Licence: MIT (the notice kept below).
-% Entry point: top/0.
 /*  Copyright 1986-2020 David H. D. Warren and Fernando C. N. Pereira
 
     Permission is hereby granted, free of charge, to any person obtaining a

@@ -1,6 +1,3 @@
-% Van Roy benchmark 'query', fetched unchanged from https://github.com/SWI-Prolog/bench
-% (programs/query.pl at commit bba99e6). Licence: public domain (as the file itself states).
-% Entry point: top/0.
 % generated: 17 November 1989
 % option(s): SOURCE_TRANSFORM_1
 %

@@ -8,12 +8,14 @@ from typing import TYPE_CHECKING
 from robocram.logic.builtin_spec import Builtin, det, nondet
 from robocram.logic.builtin_terms import need_int
 from robocram.logic.errors import PrologInstantiationError, PrologPermissionError, PrologTypeError
+from robocram.logic.indicator import indicator_key, indicator_pattern
 from robocram.logic.loader import parse_indicator
 from robocram.logic.terms import Term, Var, deref
 from robocram.logic.unify import copy_resolved
 from robocram.logic.value import Value
 
 if TYPE_CHECKING:
+    from robocram.logic.clause import Clause
     from robocram.logic.engine import Engine
     from robocram.logic.predicate import Pred
 
@@ -23,12 +25,12 @@ Args = tuple[Value, ...]
 
 
 def _assertz(m: Engine, a: Args) -> bool:
-    m.kb.assert_clause(copy_resolved(a[0]))
+    m.kb.assert_term(a[0])
     return True
 
 
 def _asserta(m: Engine, a: Args) -> bool:
-    m.kb.assert_clause(copy_resolved(a[0]), front=True)
+    m.kb.assert_term(a[0], front=True)
     return True
 
 
@@ -39,7 +41,8 @@ def _split(clause: Value) -> tuple[Value, Value]:
     return clause, "true"
 
 
-def _pred_of(m: Engine, head: Value, what: str) -> Pred | None:
+def _pred_of(m: Engine, head: Value, what: str, modify: bool = False) -> Pred | None:
+    """The user predicate of `head`; a built-in is private to clause/2, static to retract."""
     if type(head) is Var:
         raise PrologInstantiationError(f"{what}: the clause head is unbound")
     if type(head) is str:
@@ -50,22 +53,24 @@ def _pred_of(m: Engine, head: Value, what: str) -> Pred | None:
         raise PrologTypeError("callable", head, f"{what}: {head!r} is not a callable head")
     pred = m.kb._preds.get(key)
     if pred is not None and (pred.system or pred.kind != 0):
+        action, kind = ("modify", "static_procedure") if modify else ("access", "private_procedure")
         raise PrologPermissionError(
-            "access", "private_procedure", Term("/", key), f"{what}: {pred.indicator} is a built-in"
+            action, kind, Term("/", key), f"{what}: {pred.indicator} is a built-in"
         )
     return pred
 
 
-def _stored(clause: Value) -> tuple[Value, Value]:
-    return _split(copy_resolved(clause.source))
+def _stored(clause: Clause) -> tuple[Value, Value]:
+    """The clause as a term to unify with; a ground one needs no fresh copy."""
+    return _split(clause.source if clause.nvars == 0 else copy_resolved(clause.source))
 
 
 def _retract(m: Engine, a: Args) -> Iterator[bool]:
     head, body = _split(a[0])
-    pred = _pred_of(m, head, "retract/1")
+    pred = _pred_of(m, head, "retract/1", modify=True)
     if pred is None:
         return
-    for clause in _candidates(pred, head):
+    for clause in _snapshot(pred, head):
         if clause.erased:
             continue  # retracted meanwhile (by this or another query)
         h, b = _stored(clause)
@@ -86,6 +91,21 @@ def _retract(m: Engine, a: Args) -> Iterator[bool]:
         m.undo_to(mark)
 
 
+def _snapshot(pred: Pred, head: Value) -> Iterator[Clause]:
+    """The clauses that can match `head`, as they were at the call, read without a copy.
+
+    Clauses are only ever added after the end of a list, or before its start (asserta),
+    or the list is replaced: its first `n` entries from `lo` on stay the call's view.
+    """
+    first = deref(head[1][0]) if type(head) is Term and head[1] else None
+    if first is None or type(first) is Var:
+        cands, lo = pred.store, pred.head
+    else:
+        cands, lo = pred.candidates(first), 0
+    for i in range(lo, len(cands)):
+        yield cands[i]
+
+
 def _candidates(pred: Pred, head: Value) -> list[Value]:
     """The live clauses that can match `head` by its first argument (a snapshot)."""
     if type(head) is Term and head[1]:
@@ -95,7 +115,7 @@ def _candidates(pred: Pred, head: Value) -> list[Value]:
 
 def _retractall(m: Engine, a: Args) -> bool:
     head = deref(a[0])
-    pred = _pred_of(m, head, "retractall/1")
+    pred = _pred_of(m, head, "retractall/1", modify=True)
     if pred is None:
         m.kb.declare_dynamic((head, 0) if type(head) is str else (head[0], len(head[1])))
         return True
@@ -157,10 +177,10 @@ def _current_op(m: Engine, a: Args) -> bool:
 
 def _current_predicate(m: Engine, a: Args) -> Iterator[bool]:
     spec = deref(a[0])
-    if type(spec) is not Var and not (type(spec) is Term and spec[0] == "/" and len(spec[1]) == 2):
-        raise PrologTypeError(
-            "predicate_indicator", spec, f"current_predicate/1: {spec!r} is not Name/Arity"
-        )
+    if type(spec) is Term and spec[0] == ":" and len(spec[1]) == 2:
+        spec = deref(spec[1][1])  # Module:Name/Arity: one module here
+    if type(spec) is not Var:
+        indicator_pattern(spec, "current_predicate/1")
     # Visible user and library predicates with a definition; built-ins are not listed (ISO).
     for pred in list(m.kb._preds.values()):
         if pred.system or pred.name.startswith("$") or pred.kind != 0:
@@ -174,10 +194,7 @@ def _current_predicate(m: Engine, a: Args) -> Iterator[bool]:
 
 
 def _abolish(m: Engine, a: Args) -> bool:
-    spec = deref(a[0])
-    if type(spec) is Var:
-        raise PrologInstantiationError("abolish/1: the predicate indicator is unbound")
-    key = parse_indicator(spec)
+    key = indicator_key(a[0], "abolish/1")
     with m.kb._lock:
         pred = m.kb._preds.get(key)
         if pred is None:
@@ -190,6 +207,11 @@ def _abolish(m: Engine, a: Args) -> bool:
                 f"abolish/1: {pred.indicator} is static; only dynamic predicates can be abolished",
             )
         del m.kb._preds[key]
+    return True
+
+
+def _mode(m: Engine, a: Args) -> bool:
+    """Accept a DEC-10 mode declaration (`:- mode(p(+, -))`) and ignore it, as SWI does."""
     return True
 
 
@@ -209,6 +231,7 @@ BUILTINS: tuple[Builtin, ...] = (
     det("retractall", _retractall, 1),
     nondet("clause", _clause, 2),
     det("dynamic", _dynamic, 1),
+    det("mode", _mode, 1),
     det("op", _op, 3),
     det("current_op", _current_op, 3),
 )

@@ -33,6 +33,8 @@ _CHANGEABLE: dict[str, tuple[str, ...]] = {
     "occurs_check": ("false", "true", "error"),
     "debug": ("false", "true"),
 }
+# Boolean flags also take on/off, as in SWI-Prolog; they read back as true/false.
+_BOOLEAN = {"on": "true", "off": "false"}
 _READ_ONLY: dict[str, Value] = {
     "bounded": "false",
     "max_arity": "unbounded",
@@ -66,6 +68,10 @@ def _set_flag(m: Engine, a: Args) -> bool:
         raise PrologDomainError(
             "prolog_flag", flag, f"set_prolog_flag/2: no flag {flag!r} (known: {known})"
         )
+    if allowed == ("false", "true"):
+        value = _BOOLEAN.get(value, value) if type(value) is str else value
+        if value not in allowed:
+            raise PrologTypeError("bool", deref(a[1]), f"set_prolog_flag/2: {flag} is a boolean")
     if value not in allowed:
         raise PrologDomainError(
             "flag_value",

@@ -8,7 +8,9 @@ from typing import TYPE_CHECKING
 from robocram.logic.arith import Number, evaluate
 from robocram.logic.builtin_spec import Builtin, det, nondet
 from robocram.logic.builtin_terms import list_items, need_int
+from robocram.logic.cycles import list_prefix
 from robocram.logic.errors import PrologDomainError, PrologInstantiationError, PrologTypeError
+from robocram.logic.long_work import checked_keys, checked_list, checked_sort, fresh_variables
 from robocram.logic.terms import NIL, Term, Var, deref, make_list
 from robocram.logic.unify import order_key
 from robocram.logic.value import Value
@@ -22,11 +24,8 @@ Args = tuple[Value, ...]
 
 
 def _length(m: Engine, a: Args) -> Iterator[bool]:
-    n = 0
-    t = deref(a[0])
-    while type(t) is Term and t[0] == "." and len(t[1]) == 2:
-        n += 1
-        t = deref(t[1][1])
+    cells, t = list_prefix(a[0], "length/2", m.budget.check)
+    n = len(cells)
     if type(t) is not Var:
         if t != NIL or type(t) is not str:
             raise PrologTypeError("list", t, f"length/2: expected a list, got {t!r}")
@@ -38,7 +37,7 @@ def _length(m: Engine, a: Args) -> Iterator[bool]:
         k = need_int(want, "length/2")
         if k < 0:
             raise PrologDomainError("not_less_than_zero", k, f"length/2: length {k} is negative")
-        if k >= n and m.unify(t, make_list([Var() for _ in range(k - n)])):
+        if k >= n and m.unify(t, checked_list(fresh_variables(k - n, m.budget), m.budget)):
             yield True
         return
     extra = 0
@@ -50,19 +49,28 @@ def _length(m: Engine, a: Args) -> Iterator[bool]:
         extra += 1
 
 
+def _sorted(
+    m: Engine, items: list[Value], reverse: bool = False
+) -> list[tuple[tuple[object, ...], Value]]:
+    """(standard-order key, item) pairs sorted by key, checking the limits as it goes."""
+    keys = checked_keys(items, order_key, m.budget)
+    return checked_sort(list(zip(keys, items, strict=True)), m.budget, reverse)
+
+
 def _msort(m: Engine, a: Args) -> bool:
-    return m.unify(a[1], make_list(sorted(list_items(a[0], "msort/2"), key=order_key)))
+    pairs = _sorted(m, list_items(a[0], "msort/2", m.budget.check))
+    return m.unify(a[1], checked_list([item for _, item in pairs], m.budget))
 
 
 def _sort(m: Engine, a: Args) -> bool:
-    return m.unify(a[1], make_list(_dedup(sorted(list_items(a[0], "sort/2"), key=order_key))))
+    pairs = _sorted(m, list_items(a[0], "sort/2", m.budget.check))
+    return m.unify(a[1], checked_list(_dedup(pairs), m.budget))
 
 
-def _dedup(items: list[Value]) -> list[Value]:
+def _dedup(pairs: list[tuple[tuple[object, ...], Value]]) -> list[Value]:
     out: list[Value] = []
-    last: Value = None
-    for item in items:
-        key = order_key(item)
+    last: object = None
+    for key, item in pairs:
         if not out or key != last:
             out.append(item)
             last = key
@@ -76,7 +84,7 @@ def _sort4(m: Engine, a: Args) -> bool:
         raise PrologDomainError(
             "order", order, f"sort/4: order {order!r} is not @<, @>, @=< or @>="
         )
-    items = list_items(a[2], "sort/4")
+    items = list_items(a[2], "sort/4", m.budget.check)
 
     def key(item: Value) -> tuple[object, ...]:
         if key_index == 0:
@@ -86,25 +94,23 @@ def _sort4(m: Engine, a: Args) -> bool:
             raise PrologTypeError("compound", t, f"sort/4: {t!r} has no argument {key_index}")
         return order_key(t[1][key_index - 1])
 
-    ordered = sorted(items, key=key, reverse=order in ("@>", "@>="))
-    if order in ("@<", "@>"):
-        unique: list[Value] = []
-        for item in ordered:
-            if not unique or key(unique[-1]) != key(item):
-                unique.append(item)
-        ordered = unique
-    return m.unify(a[3], make_list(ordered))
+    keys = checked_keys(items, key, m.budget)
+    pairs = checked_sort(list(zip(keys, items, strict=True)), m.budget, order in ("@>", "@>="))
+    ordered = _dedup(pairs) if order in ("@<", "@>") else [item for _, item in pairs]
+    return m.unify(a[3], checked_list(ordered, m.budget))
 
 
 def _keysort(m: Engine, a: Args) -> bool:
-    items = list_items(a[0], "keysort/2")
+    items = list_items(a[0], "keysort/2", m.budget.check)
     for item in items:
         t = deref(item)
         if type(t) is Var:
             raise PrologInstantiationError("keysort/2: an element is unbound; expected Key-Value")
         if type(t) is not Term or t[0] != "-" or len(t[1]) != 2:
             raise PrologTypeError("pair", t, f"keysort/2: {t!r} is not a Key-Value pair")
-    return m.unify(a[1], make_list(sorted(items, key=lambda p: order_key(deref(p)[1][0]))))
+    keys = checked_keys(items, lambda p: order_key(deref(p)[1][0]), m.budget)
+    pairs = checked_sort(list(zip(keys, items, strict=True)), m.budget)
+    return m.unify(a[1], checked_list([item for _, item in pairs], m.budget))
 
 
 def _sum_list(m: Engine, a: Args) -> bool:
@@ -121,7 +127,7 @@ def _extreme(name: str, pick: Callable[[list[Number]], Number]) -> Builtin:
 
 def _numlist(m: Engine, a: Args) -> bool:
     low, high = need_int(a[0], "numlist/3"), need_int(a[1], "numlist/3")
-    return low <= high and m.unify(a[2], make_list(range(low, high + 1)))
+    return low <= high and m.unify(a[2], checked_list(range(low, high + 1), m.budget))
 
 
 def _max_member(m: Engine, a: Args) -> bool:

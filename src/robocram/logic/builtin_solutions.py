@@ -7,9 +7,11 @@ from typing import TYPE_CHECKING
 
 from robocram.logic.arith import evaluate
 from robocram.logic.builtin_spec import Builtin, det, nondet
+from robocram.logic.control import callable_body
+from robocram.logic.cycles import WALK_STEPS, check_acyclic
 from robocram.logic.errors import PrologDomainError, PrologInstantiationError
 from robocram.logic.terms import Term, Var, deref, make_list
-from robocram.logic.unify import copy_resolved, order_key, variant_key
+from robocram.logic.unify import copy_resolved, order_key, order_key_by, variant_key
 from robocram.logic.value import Value
 
 if TYPE_CHECKING:
@@ -23,6 +25,8 @@ Args = tuple[Value, ...]
 def term_variables(t: Value, seen: dict[Var, None] | None = None) -> list[Var]:
     """Return the unbound variables of a term in depth-first, left-to-right order."""
     found: dict[Var, None] = {} if seen is None else seen
+    root = t
+    steps = 0
     stack = [t]
     while stack:
         t = deref(stack.pop())
@@ -30,6 +34,9 @@ def term_variables(t: Value, seen: dict[Var, None] | None = None) -> list[Var]:
             found.setdefault(t, None)
         elif type(t) is Term:
             stack.extend(reversed(t[1]))
+            steps += 1
+            if steps == WALK_STEPS:  # a big term, perhaps a cyclic one: check once
+                check_acyclic(root, "term_variables/2")
     return list(found)
 
 
@@ -39,6 +46,7 @@ def _term_variables(m: Engine, a: Args) -> bool:
 
 def collect(m: Engine, template: Value, goal: Value) -> list[Value]:
     """Copy `template` for every solution of `goal`, leaving no bindings behind."""
+    callable_body(goal)  # ISO: the culprit is the whole goal, checked before it runs
     mark = len(m.trail)
     try:
         return [copy_resolved(template) for _ in m.solve(goal, sub=True)]
@@ -80,8 +88,11 @@ def _grouped(m: Engine, a: Args, to_set: bool) -> Iterator[bool]:
         w, t = pair[1]
         groups.setdefault(variant_key(w), []).append((w, t))
     entries = list(groups.values())
+    # The copies' variables are ordered by age (ISO), that is by first appearance in the
+    # solutions, which were copied one after the other.
+    ages = {v: i for i, v in enumerate(term_variables(make_list(pairs)))}
     if len(entries) > 1:
-        entries.sort(key=lambda e: order_key(e[0][0]))
+        entries.sort(key=lambda e: order_key_by(e[0][0], ages))
     for members in entries:
         mark = len(m.trail)
         # ISO: every witness of the group is unified with the first, so variables that
@@ -90,17 +101,20 @@ def _grouped(m: Engine, a: Args, to_set: bool) -> Iterator[bool]:
         if all(m.unify(w, first) for w, _ in members[1:]):
             items = [t for _, t in members]
             if to_set:
-                items = _sorted_unique(items)
+                items = _sorted_unique(items, ages)
             if m.unify(witness, first) and m.unify(a[2], make_list(items)):
                 yield True
         m.undo_to(mark)
 
 
-def _sorted_unique(items: list[Value]) -> list[Value]:
+def _sorted_unique(items: list[Value], ages: dict[Var, int] | None = None) -> list[Value]:
     out: list[Value] = []
     keys: list[Value] = []
-    for item in sorted(items, key=order_key):
-        key = order_key(item)
+    keyed = [
+        (order_key(item) if ages is None else order_key_by(item, ages), item) for item in items
+    ]
+    keyed.sort(key=lambda k: k[0])
+    for key, item in keyed:
         if not keys or keys[-1] != key:
             out.append(item)
             keys.append(key)

@@ -31,5 +31,8 @@ def det(name: str, fn: DetFn, *arities: int) -> Builtin:
 
 
 def nondet(name: str, fn: NondetFn, *arities: int) -> Builtin:
-    """A nondeterministic built-in: a generator yielding True per solution."""
+    """A nondeterministic built-in: a generator yielding True per solution.
+
+    Yielding False instead marks the last solution, so that no choicepoint is left.
+    """
     return Builtin(name, arities, NONDET, fn)

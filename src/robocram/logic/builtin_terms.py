@@ -2,17 +2,20 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING
 
 from robocram.logic.builtin_spec import Builtin, det, nondet
 from robocram.logic.convert import NONE
+from robocram.logic.cycles import list_prefix
 from robocram.logic.errors import (
     PrologDomainError,
     PrologInstantiationError,
+    PrologResourceError,
     PrologTypeError,
     error_from_ball,
 )
+from robocram.logic.functor_arg import arg_check, functor_make
 from robocram.logic.terms import NIL, PString, Term, Var, deref
 from robocram.logic.unify import copy_resolved, identical, is_acyclic, order_key
 from robocram.logic.univ import univ_compose, univ_list
@@ -36,13 +39,12 @@ def need_int(t: Value, what: str) -> int:
     return t
 
 
-def list_items(t: Value, what: str) -> list[Value]:
-    """Return the elements of a proper list; raise for partial or non-lists."""
-    items = []
-    t = deref(t)
-    while type(t) is Term and t[0] == "." and len(t[1]) == 2:
-        items.append(t[1][0])
-        t = deref(t[1][1])
+def list_items(t: Value, what: str, check: Callable[[], None] | None = None) -> list[Value]:
+    """Return the elements of a proper list; raise for partial or non-lists.
+
+    `check` (the query's limit check) is called as a long list is read.
+    """
+    items, t = list_prefix(t, what, check)
     if type(t) is Var:
         raise PrologInstantiationError(f"{what}: the list is partial (ends in a variable)")
     if t != NIL or type(t) is not str:
@@ -86,8 +88,10 @@ _OPAQUE_EXCLUDED = (str, int, float, Term, Var, PString)
 
 
 def _is_list(t: Value) -> bool:
-    while type(t) is Term and t[0] == "." and len(t[1]) == 2:
-        t = deref(t[1][1])
+    try:
+        t = list_prefix(t, "is_list/1")[1]
+    except PrologResourceError:
+        return False  # a cyclic list is not a list
     return type(t) is str and t == NIL
 
 
@@ -110,30 +114,12 @@ def _functor(m: Engine, a: Args) -> bool:
         return m.unify(a[1], t[0]) and m.unify(a[2], len(t[1]))
     if type(t) is not Var:
         return m.unify(a[1], t) and m.unify(a[2], 0)
-    name = deref(a[1])
-    if type(name) is Var:
-        raise PrologInstantiationError("functor/3: both the term and the name are unbound")
-    arity = need_int(a[2], "functor/3")
-    if arity < 0:
-        raise PrologDomainError("not_less_than_zero", arity, f"functor/3: arity {arity} < 0")
-    if type(name) is Term:
-        raise PrologTypeError("atomic", name, f"functor/3: {name!r} is not atomic")
-    if arity == 0:
-        return m.unify(t, name)
-    if type(name) is not str:
-        raise PrologTypeError("atom", name, f"functor/3: {name!r} cannot name a compound")
-    return m.unify(t, Term(name, [Var() for _ in range(arity)]))
+    return m.unify(t, functor_make(a[1], a[2]))
 
 
 def _arg(m: Engine, a: Args) -> bool:
-    n = need_int(a[0], "arg/3")
+    n = arg_check(a[0], a[1])
     t = deref(a[1])
-    if type(t) is Var:
-        raise PrologInstantiationError("arg/3: the term is unbound")
-    if type(t) is not Term:
-        raise PrologTypeError("compound", t, f"arg/3: {t!r} is not a compound term")
-    if n < 0:
-        raise PrologDomainError("not_less_than_zero", n, f"arg/3: position {n} < 0")
     return 1 <= n <= len(t[1]) and m.unify(a[2], t[1][n - 1])
 
 

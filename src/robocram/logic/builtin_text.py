@@ -13,6 +13,7 @@ from collections.abc import Callable, Iterable, Iterator
 from robocram.logic.bigint import int_text
 from robocram.logic.builtin_spec import Builtin, det, nondet
 from robocram.logic.builtin_terms import need_int
+from robocram.logic.cycles import list_prefix
 from robocram.logic.engine import Engine
 from robocram.logic.errors import (
     PrologDomainError,
@@ -22,7 +23,8 @@ from robocram.logic.errors import (
     PrologTypeError,
 )
 from robocram.logic.lexer import tokenize
-from robocram.logic.terms import NIL, PString, Term, Var, deref, make_list
+from robocram.logic.long_work import checked_list
+from robocram.logic.terms import NIL, PString, Term, Var, deref
 from robocram.logic.value import Value
 
 __all__ = ["BUILTINS", "parse_number"]
@@ -75,13 +77,18 @@ def char_of_code(x: Value, what: str) -> str:
     return chr(code)
 
 
-def text_items(t: Value, what: str, item: Callable[[Value, str], str]) -> str | None:
-    """The text of a char or code list; None when the list is partial (can't tell yet)."""
-    out: list[str] = []
-    t = deref(t)
-    while type(t) is Term and t[0] == "." and len(t[1]) == 2:
-        out.append(item(t[1][0], what))
-        t = deref(t[1][1])
+def text_items(
+    t: Value,
+    what: str,
+    item: Callable[[Value, str], str],
+    check: Callable[[], None] | None = None,
+) -> str | None:
+    """The text of a char or code list; None when the list is partial (can't tell yet).
+
+    `check` (the query's limit check) is called as a long list is read.
+    """
+    cells, t = list_prefix(t, what, check)
+    out = [item(c, what) for c in cells]
     if type(t) is Var:
         return None
     if t != NIL or type(t) is not str:
@@ -109,11 +116,12 @@ def _conversion(name: str, codes: bool, result: str) -> Builtin:
 
     def run(m: Engine, a: Args) -> bool:
         text = _source_text(a[0], name, result == "number")
-        listed = text_items(a[1], name, item)
+        listed = text_items(a[1], name, item, m.budget.check)
         if listed is None:
             if text is None:
                 raise PrologInstantiationError(f"{name}: both arguments are unbound")
-            return m.unify(a[1], make_list([ord(c) if codes else c for c in text]))
+            chars = [ord(c) for c in text] if codes else list(text)
+            return m.unify(a[1], checked_list(chars, m.budget))
         if result == "number":
             value = parse_number(listed)
             if value is None:
@@ -127,7 +135,10 @@ def _conversion(name: str, codes: bool, result: str) -> Builtin:
 def _char_code(m: Engine, a: Args) -> bool:
     c = deref(a[0])
     if type(c) is not Var:
-        return m.unify(a[1], ord(char_of(c, "char_code/2")))
+        code = deref(a[1])
+        if type(code) is not Var and type(code) is not int:  # ISO checks both arguments
+            raise PrologTypeError("integer", code, f"char_code/2: {code!r} is not an integer")
+        return m.unify(code, ord(char_of(c, "char_code/2")))
     code = deref(a[1])
     if type(code) is Var:
         raise PrologInstantiationError("char_code/2: both arguments are unbound")

@@ -185,7 +185,7 @@ class ClauseWriter(GoalWriter):
             return f"new_term(Term, ({self.const(name)}, ({inner})))"
         if type(g) is Tmpl:  # a call: a plain tuple the machine recognises by CALL
             inner = "".join(f"{self.build(a)}, " for a in args)
-            return f"({self.const(name)}, ({inner}), CALL)"
+            return f"({self.const((name, len(args)))}, ({inner}), CALL)"
         return self.build(g)
 
     def goals(self, body: list[Value]) -> list[str]:

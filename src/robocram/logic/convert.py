@@ -10,8 +10,8 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import cast
 
+from robocram.logic.acyclic import is_acyclic
 from robocram.logic.terms import NIL, PString, Term, Var, new_term
-from robocram.logic.unify import is_acyclic
 from robocram.logic.value import Value
 
 __all__ = ["NONE", "SelfContainingValue", "to_prolog", "to_python"]
@@ -180,11 +180,18 @@ def _to_python(term: Value) -> Value:
     if t is Term:
         if term[0] == "." and len(term[1]) == 2:
             items = []
+            saved: Value = term
+            power = 64
             while type(term) is Term and term[0] == "." and len(term[1]) == 2:
                 items.append(_to_python(term[1][0]))
                 term = term[1][1]
                 while type(term) is Var and term.ref is not None:
                     term = term.ref
+                if term is saved:  # Brent's test: a cyclic list has no Python value
+                    raise RecursionError("a cyclic list has no Python value")
+                if len(items) == power:
+                    saved = term
+                    power <<= 1
             if term == NIL:
                 return items
             tail = _to_python(term)

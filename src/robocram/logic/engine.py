@@ -11,6 +11,8 @@ import threading
 from collections.abc import Callable, Iterator
 from typing import Protocol
 
+from robocram.logic.choicepoints import ChoicePoint
+from robocram.logic.limits import Budget
 from robocram.logic.operators import OperatorTable
 from robocram.logic.predicate import Key, Pred
 from robocram.logic.terms import Var
@@ -30,6 +32,8 @@ class Database(Protocol):
 
     def assert_clause(self, clause: Value, front: bool = False) -> None: ...
 
+    def assert_term(self, clause: Value, front: bool = False) -> None: ...
+
     def declare_dynamic(self, key: Key) -> None: ...
 
     def similar_predicates(self, name: str, arity: int) -> list[str]: ...
@@ -41,12 +45,15 @@ class Engine(Protocol):
     kb: Database
     trail: list[Var]
     occurs_check: str  # the flag's value: false, true or error
+    budget: Budget  # the query's limits, which long built-ins check as they go
 
     def unify(self, a: Value, b: Value) -> bool: ...
 
     def undo_to(self, mark: int) -> None: ...
 
-    def solve(self, goal: Value, sub: bool = False) -> Iterator[None]: ...
+    def solve(
+        self, goal: Value, sub: bool = False, cps: list[ChoicePoint] | None = None
+    ) -> Iterator[None]: ...
 
 
 DetFn = Callable[[Engine, tuple[Value, ...]], bool]

@@ -15,6 +15,8 @@ from collections.abc import Callable
 from typing import Any
 
 from robocram.logic.arith import BINARY_FUNCTIONS, apply_binary, evaluate
+from robocram.logic.functor_arg import arg_check, functor_make
+from robocram.logic.goal_terms import TERM_GOALS, emit_term_goal
 from robocram.logic.inline_goal import CALL, INLINE
 from robocram.logic.lru import LRUCache
 from robocram.logic.template import Slot, Tmpl
@@ -50,6 +52,8 @@ _NAMESPACE: dict[str, object] = {
     "identical": identical,
     "ev": evaluate,
     "ap2": apply_binary,
+    "arg_check": arg_check,
+    "functor_make": functor_make,
 }
 # Generated factories are pure functions of their source text (constants are parameters),
 # so one bounded memo serves every knowledge base without sharing any resolved state.
@@ -119,6 +123,8 @@ def inlinable(g: Value) -> bool:
         return name in _TYPE_TESTS
     if name == "=.." and len(args) == 2:
         return type(args[0]) is Slot
+    if (name, len(args)) in TERM_GOALS:
+        return True
     return len(args) == 2 and (name in _COMPARE_OPS or name in _INLINE_BINARY)
 
 
@@ -256,6 +262,8 @@ class GoalWriter:
         parts = term_parts(g)
         if parts is not None and len(parts[1]) == 1 and parts[0] in _TYPE_TESTS:
             return self.type_test(parts[0], parts[1][0])
+        if parts is not None and (parts[0], len(parts[1])) in TERM_GOALS:
+            return emit_term_goal(self, parts[0], parts[1])
         if parts is not None and len(parts[1]) == 2 and parts[0] in ("==", "\\=="):
             test = self.test(g)
             if test is not None:

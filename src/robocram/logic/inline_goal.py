@@ -4,9 +4,10 @@ Clause code runs the tests, `is/2` and `=/2` goals that lead a body in its own f
 Those that follow a call cannot: the call runs first, in the machine. Each run of them
 becomes one goal `(fn, values, INLINE)`, and the machine calls `fn(trail, *values)`
 (true to go on, false to fail) without looking up a predicate. Calls are built the same
-way, as `(name, args, CALL)` instead of `Term`s: a plain tuple costs a third of a `Term`
-to make. The private markers tell these from any Python tuple a program passed as a goal
-(that stays a type error); they never appear in a term a program can read.
+way, as `((name, arity), args, CALL)` instead of `Term`s: a plain tuple costs a third
+of a `Term` to make, and the machine looks the predicate up by the ready-made key. The
+private markers tell these from any Python tuple a program passed as a goal (that stays
+a type error); they never appear in a term a program can read.
 
 >>> goal = (lambda trail, x: x > 1, (2,), INLINE)
 >>> goal[2] is INLINE and goal[0]([], *goal[1])

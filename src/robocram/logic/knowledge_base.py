@@ -152,7 +152,11 @@ class KnowledgeBase:
 
     def assert_clause(self, clause: Value, front: bool = False) -> None:
         """Add a clause to a dynamic (or new) predicate, as assertz/asserta do."""
-        key, compiled = compile_clause(to_prolog(clause), None)
+        self.assert_term(to_prolog(clause), front)
+
+    def assert_term(self, clause: Value, front: bool = False) -> None:
+        """`assert_clause` for a clause already in engine form (compiling copies it)."""
+        key, compiled = compile_clause(clause, None)
         with self._lock:
             pred = self._preds.get(key)
             if (

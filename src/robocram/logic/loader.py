@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from robocram.logic.clause import Clause
+from robocram.logic.clause_body import stored_body
 from robocram.logic.errors import PrologInstantiationError, PrologTypeError
 from robocram.logic.template import Slot, compile_term
 from robocram.logic.terms import Term, Var, deref
@@ -43,6 +44,10 @@ def compile_clause(term: Value, group: str | None) -> tuple[tuple[str, int], Cla
         head, body = deref(term[1][0]), term[1][1]
     else:
         head, body = term, "true"
+    new_body = stored_body(body)
+    if new_body is not body:
+        body = new_body
+        term = Term(":-", (head, body))
     if type(head) is Var:
         raise PrologInstantiationError("clause head is an unbound variable; write name(Args...)")
     args: tuple[Value, ...]

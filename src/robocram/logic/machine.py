@@ -36,7 +36,7 @@ from robocram.logic.errors import (
     UnknownPredicateError,
 )
 from robocram.logic.inline_goal import CALL, INLINE
-from robocram.logic.limits import CHECK_EVERY, Budget
+from robocram.logic.limits import PROC_LOOPS, Budget
 from robocram.logic.occurs import unify_checked
 from robocram.logic.predicate import DET, NONDET, USER, WARM_CALLS, Pred
 from robocram.logic.procedure import Procedure
@@ -86,10 +86,18 @@ class Machine:
         if mode == "warning":
             warn_unknown(name, arity)
 
-    def solve(self, goal: Value, sub: bool = False) -> Iterator[None]:
-        """Yield once per solution of `goal`, with its bindings in place while suspended."""
+    def solve(
+        self, goal: Value, sub: bool = False, cps: list[ChoicePoint] | None = None
+    ) -> Iterator[None]:
+        """Yield once per solution of `goal`, with its bindings in place while suspended.
+
+        `cps`, an empty list, lets the caller see the choicepoints left after a solution.
+        """
         trail = self.trail
-        cps: list[ChoicePoint] = [[BARRIER, len(trail)]] if sub else []
+        if cps is None:
+            cps = []
+        if sub:
+            cps.append([BARRIER, len(trail)])
         cont: Cont = (goal, len(cps), None)
         fail = False
         while True:
@@ -129,7 +137,9 @@ class Machine:
             cont = backtrack(cps)
         goal: Value = None
         ticks = 0
-        spend = self.budget.spend
+        budget = self.budget
+        spend = budget.spend
+        every = budget.interval()
         plain = self.occurs_check == "false"  # procedures skip the occurs check
         pacer = gc_pacing.current_pacer()  # paces only inside `with fast_queries():`
         pacer.enter()
@@ -142,12 +152,16 @@ class Machine:
                     yield None
                     pacer.enter()
                     running = True
+                    ticks += 1  # a redo: the loop of `between(1, N, X)` under findall/3
+                    if ticks >= every:
+                        every = spend(ticks)
+                        ticks = 0
                     cont = backtrack(cps)
                 if cont is False:
                     return
                 ticks += 1
-                if ticks >= CHECK_EVERY:
-                    spend(ticks)
+                if ticks >= every:
+                    every = spend(ticks)
                     ticks = 0
                 goal, cutb, nxt = cont
                 tg = type(goal)
@@ -159,7 +173,8 @@ class Machine:
                         else:
                             cont = self._call_other(goal, len(cps), nxt)
                         continue
-                    p = preds.get((name, len(args)))
+                    p = preds.get(name)  # a call's first item is its (name, arity) key
+                    name = name[0]
                 elif tg is Term:
                     name = goal[0]
                     args = goal[1]
@@ -232,12 +247,13 @@ class Machine:
         """
         trail = self.trail
         loops = 0
+        every = self.budget.interval()
         while True:
             if not cps and trail:
                 del trail[:]
             loops += 1
-            if loops >= CHECK_EVERY:  # a deterministic self-recursion loops here
-                self.budget.spend(loops)
+            if loops >= every:  # a deterministic self-recursion loops here
+                every = self.budget.spend(loops)
                 loops = 0
             cands = p.store
             lo = p.head
@@ -301,7 +317,10 @@ class Machine:
                 if cont is not False:
                     return cont
             elif kind == GEN:
-                if next(cp[2], None) is not None:
+                found = next(cp[2], None)
+                if found is not None:
+                    if found is False:  # the built-in's last solution: no choicepoint left
+                        cps.pop()
                     return cp[3]
                 cps.pop()
             elif kind == ALT:
@@ -318,14 +337,14 @@ class Machine:
     def _again(self, proc: Procedure, args: list[Value], nxt: Cont, cps: list[ChoicePoint]) -> Cont:
         """Finish a call that a procedure handed back (see procedure.py).
 
-        After CHECK_EVERY loops: count them and call the procedure again. With a Scan:
+        After PROC_LOOPS loops: count them and call the procedure again. With a Scan:
         run the clauses one by one here (an unbound first argument of a long predicate).
         """
         while type(args) is list:
             scan = args.pop()
             if scan is not None:
                 return self._call_clauses(scan.pred, args, nxt, cps)
-            self.budget.spend(CHECK_EVERY)
+            self.budget.spend(PROC_LOOPS)
             args = proc(args, self.trail, nxt, cps, 0)
         return args
 
@@ -379,7 +398,7 @@ def host_error(err: Exception, goal: Value) -> PrologError:
     if type(goal) is tuple:
         if len(goal) != 3 or goal[2] not in (CALL, INLINE):  # a Python tuple as a goal
             return PrologTypeError("callable", goal, f"{goal!r} is not a callable goal")
-        where = f"{goal[0]}/{len(goal[1])}" if goal[2] is CALL else "an inline goal"
+        where = f"{goal[0][0]}/{len(goal[1])}" if goal[2] is CALL else "an inline goal"
     elif type(goal) is Term:
         where = f"{goal[0]}/{len(goal[1])}"
     else:

@@ -12,7 +12,7 @@ loops in the same frame.
 
     proc(args, trail, nxt, cps, start) -> continuation, or False when no clause from
         `start` on gets past its inline goals; or the argument list plus one extra item:
-        None after CHECK_EVERY loops, so that the machine counts them and calls again,
+        None after PROC_LOOPS loops, so that the machine counts them and calls again,
         or a Scan to have the machine run the clauses one by one
 
 The first argument is switched on before any clause runs: for each principal functor
@@ -29,7 +29,8 @@ from collections.abc import Callable, Sequence
 
 from robocram.logic.choicepoints import PROC, ChoicePoint, Cont
 from robocram.logic.codegen import ClauseCode, ClauseWriter, make_factory
-from robocram.logic.limits import CHECK_EVERY
+from robocram.logic.exclusive_guards import excludes
+from robocram.logic.limits import PROC_LOOPS
 from robocram.logic.template import Slot, Tmpl
 from robocram.logic.terms import Term, Var
 from robocram.logic.value import Value
@@ -196,6 +197,7 @@ class _ProcWriter(ClauseWriter):
         self.names = "".join(f"a{i}, " for i in range(self.arity))
         self.committed: bool | None = False
         self.next_start: int | None = None
+        self.alt_start: int | None = None  # the clause a choicepoint resumes at
 
     def procedure(self, b: _Branches) -> None:
         self.switch(b)
@@ -205,7 +207,7 @@ class _ProcWriter(ClauseWriter):
             self.emit(f"{self.names}= args", 1)
         loops = "continue" in body
         # The trail only serves choicepoints: with none, drop it on entry, and again
-        # every CHECK_EVERY loops, when a long self-recursion is handed to the machine
+        # every PROC_LOOPS loops, when a long self-recursion is handed to the machine
         # so that it counts the inferences (limits, stop requests) and calls again.
         self.emit("if not cps and trail: del trail[:]", 1)
         if loops:
@@ -213,7 +215,7 @@ class _ProcWriter(ClauseWriter):
         self.emit("while True:", 1)
         if loops:
             self.emit("steps += 1", 2)
-            self.emit(f"if steps >= {CHECK_EVERY}: return [{self.names}None]", 2)
+            self.emit(f"if steps >= {PROC_LOOPS}: return [{self.names}None]", 2)
         if re.search(r"\bcb\b", body):
             self.emit("cb = len(cps)", 2)
         self.lines.append(body)
@@ -292,6 +294,8 @@ class _ProcWriter(ClauseWriter):
             self.committed = False
             last = pos == len(members) - 1
             self.next_start = None if last else members[pos + 1]
+            rest = [j for j in members[pos + 1 :] if not excludes(self.clauses[i], self.clauses[j])]
+            self.alt_start = rest[0] if rest else None
             if last:
                 self.fail = "return False"
                 self.base = depth - 1
@@ -335,9 +339,9 @@ class _ProcWriter(ClauseWriter):
 
     def alternatives(self) -> None:
         """Emit the choicepoint for the branch's later clauses, unless cut."""
-        if self.committed or self.next_start is None:
+        if self.committed or self.alt_start is None:
             return
-        state = f"[{PROC}, mark, ({self.names}), nxt, proc, {self.next_start}]"
+        state = f"[{PROC}, mark, ({self.names}), nxt, proc, {self.alt_start}]"
         self.emit(f"cps.append({state})", 1)
 
     def exit(self, cont: str) -> None:

@@ -227,11 +227,18 @@ def _compound(term: Term, style: Style, max_prec: int) -> str:
 
 def _list(term: Value, style: Style) -> str:
     items: list[str] = []
+    saved: Value = term
+    power = 64
     while type(term) is Term and term[0] == "." and len(term[1]) == 2:
         items.append(_write(term[1][0], style, 999))
         term = term[1][1]
         while type(term) is Var and term.ref is not None:
             term = term.ref
+        if term is saved:  # Brent's test; a cyclic compound ends the same way, in recursion
+            raise RecursionError("a cyclic list cannot be written")
+        if len(items) == power:
+            saved = term
+            power <<= 1
     if term == NIL and type(term) is str:
         return "[" + ",".join(items) + "]"
     return "[" + ",".join(items) + "|" + _write(term, style, 999) + "]"

@@ -4,7 +4,8 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from robocram.logic.terms import PString, Term, Var, deref, new_term
+from robocram.logic.cycles import check_acyclic, cyclic_error, is_acyclic
+from robocram.logic.terms import PString, Term, Var, new_term
 from robocram.logic.value import Value
 
 __all__ = [
@@ -12,6 +13,7 @@ __all__ = [
     "identical",
     "is_acyclic",
     "order_key",
+    "order_key_by",
     "undo",
     "unify",
     "unify_iterative",
@@ -145,28 +147,6 @@ def unify_iterative(a: Value, b: Value, trail: list[Var], may_bind: BindCheck | 
     return True
 
 
-def is_acyclic(t: Value) -> bool:
-    """True unless following bindings from `t` leads back into a compound on the path."""
-    on_path: set[int] = set()
-    done: set[int] = set()
-    stack: list[tuple[Value, bool]] = [(t, False)]
-    while stack:
-        t, leaving = stack.pop()
-        if leaving:
-            on_path.discard(id(t))
-            done.add(id(t))
-            continue
-        t = deref(t)
-        if type(t) is not Term or id(t) in done:
-            continue
-        if id(t) in on_path:
-            return False
-        on_path.add(id(t))
-        stack.append((t, True))
-        stack.extend((arg, False) for arg in t[1])
-    return True
-
-
 def undo(trail: list[Var], mark: int) -> None:
     """Unbind every variable bound since the trail had length `mark`."""
     while len(trail) > mark:
@@ -198,11 +178,18 @@ def _copy(term: Value, mapping: dict[Var, Var]) -> Value:
         return term
     if term[0] == "." and len(term[1]) == 2:
         items = []
+        saved: Value = term
+        power = 64
         while type(term) is Term and term[0] == "." and len(term[1]) == 2:
             items.append(_copy(term[1][0], mapping))
             term = term[1][1]
             while type(term) is Var and term.ref is not None:
                 term = term.ref
+            if term is saved:  # Brent's test: the tail came back to a cell seen before
+                raise cyclic_error("copying a list")
+            if len(items) == power:
+                saved = term
+                power <<= 1
         tail = _copy(term, mapping)
         for item in reversed(items):
             tail = new_term(Term, (".", (item, tail)))
@@ -211,7 +198,8 @@ def _copy(term: Value, mapping: dict[Var, Var]) -> Value:
 
 
 def _copy_deep(term: Value, mapping: dict[Var, Var]) -> Value:
-    """`copy_resolved` with an explicit stack: any depth (a cyclic term never ends)."""
+    """`copy_resolved` with an explicit stack: any depth; a cyclic term is an error."""
+    check_acyclic(term, "copying a term")
     out: list[Value] = []
     stack: list[tuple[bool, Value]] = [(False, term)]
     while stack:
@@ -295,6 +283,18 @@ def order_key(term: Value) -> tuple[object, ...]:
     if t is Term:
         return (5, len(term[1]), term[0], tuple([order_key(a) for a in term[1]]))
     return (6, type(term).__name__, id(term))
+
+
+def order_key_by(term: Value, ages: dict[Var, int]) -> tuple[object, ...]:
+    """`order_key` with variables ranked by `ages` (those not in it after, by address)."""
+    while type(term) is Var:
+        if term.ref is None:
+            age = ages.get(term)
+            return (0, 0, age) if age is not None else (0, 1, id(term))
+        term = term.ref
+    if type(term) is Term:
+        return (5, len(term[1]), term[0], tuple([order_key_by(a, ages) for a in term[1]]))
+    return order_key(term)
 
 
 def variant_key(term: Value) -> tuple[object, ...]:

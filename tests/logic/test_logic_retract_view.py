@@ -1,0 +1,30 @@
+"""retract/1 sees the clauses as they were at the call, without copying them (sieve).
+
+The expected lists were checked against `swipl` 9.0.4.
+"""
+
+from __future__ import annotations
+
+from robocram.logic import KnowledgeBase
+
+
+def test_retract_ignores_clauses_added_while_it_runs() -> None:
+    kb = KnowledgeBase()
+    kb.consult(":- dynamic c/1.\nc(1).\nc(2).")
+    answer = kb.first(
+        "findall(_X, (retract(c(_X)), assertz(c(9)), asserta(c(8))), L), findall(_Y, c(_Y), M)"
+    )
+    assert answer == {"L": [1, 2], "M": [8, 8, 9, 9]}
+
+
+def test_retract_skips_clauses_retracted_while_it_runs() -> None:
+    kb = KnowledgeBase()
+    kb.consult(":- dynamic d/1.\nd(a).\nd(b).\nd(c).")
+    assert kb.first("findall(_Z, (retract(d(_Z)), retract(d(c))), L)") == {"L": ["a"]}
+
+
+def test_retract_of_many_ground_facts_by_an_unbound_argument() -> None:
+    kb = KnowledgeBase()
+    kb.holds("forall(between(1, 3000, I), assertz(e(I)))")
+    answer = kb.first("findall(X, retract(e(X)), L), length(L, N), \\+ e(_)")
+    assert answer is not None and answer["N"] == 3000
