@@ -9,7 +9,7 @@ here, naming the element, rather than as a strange draft.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -78,7 +78,12 @@ class _Reader:
     def name(self, node: XmlNode, key: str, kind: str) -> str:
         """The ``kind`` ("link", "joint", "group") that attribute ``key`` names, checked."""
         value = self.attr(node, key)
-        pool = {"link": self.model.links, "joint": self.model.joints, "group": self.nodes}[kind]
+        pools: dict[str, Collection[str]] = {
+            "link": self.model.links,
+            "joint": self.model.joints,
+            "group": self.nodes,
+        }
+        pool = pools[kind]
         if value not in pool:
             close = closest_names(value, pool)
             hint = f"did you mean {' or '.join(map(repr, close))}? " if close else ""
