@@ -13,6 +13,7 @@ from pathlib import Path
 import pytest
 
 from robocram.cli import main
+from robocram.robot_check import check_robot
 from robocram.robots import (
     DraftDescription,
     MissingMeshWarning,
@@ -109,6 +110,16 @@ def test_srdf_draft_runs_and_loads(tucked_srdf: Path, tmp_path: Path) -> None:
     assert loaded.arms["arm"].joints == ARM
     assert loaded.arms["arm"].parking["elbow_flex_joint"] == pytest.approx(1.72)
     assert ("bellows_link", "torso_lift_link") in loaded.allowed_contacts
+
+
+def test_srdf_draft_checks_as_the_plain_draft_does(tucked_srdf: Path) -> None:
+    """Only the grip fails, as for the plain draft: boxes stand in for the finger meshes."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        card = check_robot(_draft(FETCH_URDF, tucked_srdf).description)
+    failed = [r.name for r in card.results if not r.passed]
+    assert failed == ["arm arm: grip"]
+    assert "arm arm: parking" in [r.name for r in card.results]
 
 
 def test_srdf_without_named_states_keeps_the_sampled_parking() -> None:
