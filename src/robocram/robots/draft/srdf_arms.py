@@ -35,15 +35,20 @@ def _arm_group(
     smallest group ending at the parent link (an arm without the torso before one with)."""
     if effector.parent_group is not None:
         group = srdf.groups[effector.parent_group]
-        return group, _arm_joints(model, group, effector.parent_link, torso)
+        joints = _arm_joints(model, group, effector.parent_link, torso)
+        return (group, joints) if joints else None
     own = set(srdf.groups[effector.group].joints)
     found = []
     for group in srdf.groups.values():
         joints = _arm_joints(model, group, effector.parent_link, torso)
-        ends_here = joints and model.joints[joints[-1]].child == effector.parent_link
-        if ends_here and not own & set(group.joints):
-            found.append((torso in group.joints, len(group.joints), group.name, group, joints))
-    return (min(found)[3], min(found)[4]) if found else None
+        if not joints or own & set(group.joints):
+            continue
+        if model.joints[joints[-1]].child == effector.parent_link:
+            found.append(((torso in group.joints, len(group.joints), group.name), group, joints))
+    if not found:
+        return None
+    _, group, joints = min(found, key=lambda entry: entry[0])
+    return group, joints
 
 
 def _parking(srdf: Srdf, joints: list[str]) -> tuple[str, dict[str, float]] | None:
