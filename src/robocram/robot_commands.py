@@ -1,14 +1,16 @@
 """``robocram robot draft|check``: draft a description from a URDF, and its report card.
 
-``draft URDF [-o FILE]`` prints (or writes) ready-to-edit Python; ``check DESCRIPTION``
-(``pkg.mod:NAME``, a ``.py`` file, or a built-in robot) drives every part of the robot
-once in projection and prints one line per check. Exit code 0 only if all pass.
+``draft URDF [-o FILE] [--srdf FILE]`` prints (or writes) ready-to-edit Python, arms and
+parking taken from the SRDF where given; ``check DESCRIPTION`` (``pkg.mod:NAME``, a ``.py``
+file, or a built-in robot) drives every part of the robot once in projection and prints one
+line per check. Exit code 0 only if all pass. Both take ``--package-path DIR`` (repeatable).
 """
 
 from __future__ import annotations
 
 import argparse
 import sys
+from dataclasses import replace
 from pathlib import Path
 
 EXIT_OK, EXIT_FAILED = 0, 1
@@ -22,18 +24,36 @@ def add_robot_commands(commands: argparse._SubParsersAction[argparse.ArgumentPar
     draft.add_argument("urdf", type=Path, help="the robot's URDF file")
     draft.add_argument("-o", "--output", type=Path, help="write the Python module here")
     draft.add_argument("--name", help="the robot's name (default: the URDF's)")
+    draft.add_argument(
+        "--srdf", type=Path, help="the robot's SRDF (MoveIt): arms, parking state, self-contacts"
+    )
+    _package_path_option(draft)
     draft.set_defaults(handler=_draft)
     check = sub.add_parser("check", help="drive every part of a description once: report card")
     check.add_argument(
         "description", help="pkg.module:NAME, a .py file defining description(), or a built-in"
     )
+    _package_path_option(check)
     check.set_defaults(handler=_check)
+
+
+def _package_path_option(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "--package-path",
+        type=Path,
+        action="append",
+        default=[],
+        metavar="DIR",
+        help="a folder holding ROS packages for package:// URIs (repeatable)",
+    )
 
 
 def _draft(args: argparse.Namespace) -> int:
     from robocram.robots import draft_description
 
-    draft = draft_description(args.urdf, name=args.name)
+    draft = draft_description(
+        args.urdf, name=args.name, srdf=args.srdf, package_paths=args.package_path
+    )
     if args.output is None:
         sys.stdout.write(draft.source())
         return EXIT_OK
@@ -45,6 +65,8 @@ def _draft(args: argparse.Namespace) -> int:
 def _check(args: argparse.Namespace) -> int:
     from robocram.robot_check import check_robot, description_from
 
-    card = check_robot(description_from(args.description))
+    desc = description_from(args.description)
+    paths = tuple(dict.fromkeys([*desc.package_paths, *args.package_path]))
+    card = check_robot(replace(desc, package_paths=paths))
     print(card.render())
     return EXIT_OK if card.passed else EXIT_FAILED

@@ -16,6 +16,7 @@ from robocram.robots.errors import (
     MissingMeshWarning,
     PackageNotFoundError,
     PackagePathError,
+    SrdfError,
     UrdfError,
 )
 from robocram.robots.example_robot_data import example_robot_data_folder
@@ -57,6 +58,7 @@ __all__ = [
     "PanTiltDescription",
     "RobotDescription",
     "RobotModel",
+    "SrdfError",
     "UrdfError",
     "draft_description",
     "example_robot_data_folder",

@@ -27,6 +27,17 @@ class UrdfError(DescriptionError):
         super().__init__(f"{where}: {problem}")
 
 
+class SrdfError(DescriptionError):
+    """An SRDF is malformed or names links, joints or groups its URDF does not have."""
+
+    def __init__(self, source: str | Path, problem: str, line: int | None = None) -> None:
+        self.source = str(source)
+        self.problem = problem
+        self.line = line
+        where = f"{self.source}:{line}" if line is not None else self.source
+        super().__init__(f"{where}: {problem}")
+
+
 class PackageNotFoundError(DescriptionError):
     """A ``package://`` URI names a package found in none of the searched folders."""
 

@@ -25,7 +25,7 @@ M = TypeVar("M")  # the model type (RobotModel, which keeps the process's memo)
 
 MODELS_KEPT = 8  # different robot files a process loads (a few MB each with their caches)
 
-ModelKey = tuple[str, str, tuple[Path, ...], tuple[FrameSpec, ...], tuple[BoxSpec, ...]]
+ModelKey = tuple[str, str, tuple[Path, ...], tuple[FrameSpec, ...], tuple[BoxSpec, ...], bool]
 
 
 class ModelMemo(Generic[M]):
@@ -43,9 +43,11 @@ class ModelMemo(Generic[M]):
         frames: tuple[FrameSpec, ...],
         boxes: tuple[BoxSpec, ...],
         build: Callable[[], M],
+        lenient: bool = False,
     ) -> M:
         """The model kept for ``file``'s current bytes and these additions, or ``build()``.
 
+        ``lenient`` builds (boxes for missing packages) are kept apart from strict ones.
         A file that cannot be read is left to ``build`` to report. The warnings the build
         gave (a missing mesh) are given again on every load, as a parse would.
         """
@@ -53,7 +55,7 @@ class ModelMemo(Generic[M]):
             digest = hashlib.sha256(file.read_bytes()).hexdigest()
         except OSError:
             return build()
-        key: ModelKey = (str(file.resolve()), digest, package_paths, frames, boxes)
+        key: ModelKey = (str(file.resolve()), digest, package_paths, frames, boxes, lenient)
         with self._lock:
             found = self._models.get(key)
             if found is not None:

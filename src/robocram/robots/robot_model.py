@@ -211,8 +211,16 @@ class RobotModel:
         return text
 
     @classmethod
-    def from_file(cls, path: str | Path, package_paths: Iterable[str | Path] = ()) -> RobotModel:
+    def from_file(
+        cls,
+        path: str | Path,
+        package_paths: Iterable[str | Path] = (),
+        missing_packages_as_boxes: bool = False,
+    ) -> RobotModel:
         """Parse a URDF file; ``package_paths`` are searched first for ``package://`` URIs.
+
+        ``missing_packages_as_boxes``: a package found nowhere gets boxes and a warning,
+        as a missing mesh file does, instead of :class:`PackageNotFoundError`.
 
         Equal files share one model for the process (:mod:`~robocram.robots.model_memo`).
         """
@@ -225,9 +233,11 @@ class RobotModel:
             except OSError as err:
                 raise UrdfError(file, f"cannot read the URDF: {err.strerror}") from err
             text = decode_xml(data, file)
-            return cls.from_string(text, file.resolve().parent, paths, source=str(file))
+            return cls.from_string(
+                text, file.resolve().parent, paths, str(file), missing_packages_as_boxes
+            )
 
-        return MODELS.model(file, paths, (), (), parse)
+        return MODELS.model(file, paths, (), (), parse, missing_packages_as_boxes)
 
     @classmethod
     def from_string(
@@ -236,11 +246,20 @@ class RobotModel:
         base_dir: str | Path | None = None,
         package_paths: Iterable[str | Path] = (),
         source: str = "<string>",
+        missing_packages_as_boxes: bool = False,
     ) -> RobotModel:
         """Parse URDF text; relative mesh paths are taken from ``base_dir``."""
         resolver = PackageResolver.default(package_paths)
         base = None if base_dir is None else Path(base_dir)
-        parts = read_urdf(parse_xml(xml, source), source, base, resolver)
+        parts = read_urdf(parse_xml(xml, source), source, base, resolver, missing_packages_as_boxes)
+        if parts.missing_packages:
+            names = ", ".join(repr(p) for p in sorted(set(parts.missing_packages)))
+            warnings.warn(
+                f"{source}: package(s) {names} not found, boxes stand in for their meshes; "
+                "pass `--package-path DIR` (package_paths=[DIR]) with the folder holding them",
+                MissingMeshWarning,
+                stacklevel=2,
+            )
         if parts.missing_meshes:
             listed = ", ".join(sorted(set(parts.missing_meshes)))
             warnings.warn(

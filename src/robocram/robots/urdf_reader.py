@@ -11,7 +11,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from robocram.robots.errors import UrdfError, closest_names
+from robocram.robots.errors import PackageNotFoundError, UrdfError, closest_names
 from robocram.robots.package_resolver import PackageResolver
 from robocram.robots.safe_xml import XmlNode
 from robocram.robots.urdf_elements import (
@@ -38,6 +38,7 @@ class UrdfParts:
     links: dict[str, Link]
     joints: dict[str, Joint]
     missing_meshes: list[str] = field(default_factory=list)
+    missing_packages: list[str] = field(default_factory=list)
 
 
 @dataclass
@@ -45,7 +46,9 @@ class _Reader:
     source: str
     base_dir: Path | None
     resolver: PackageResolver
+    missing_packages_as_boxes: bool = False
     missing_meshes: list[str] = field(default_factory=list)
+    missing_packages: list[str] = field(default_factory=list)
     colors: dict[str, tuple[float, ...]] = field(default_factory=dict)  # named materials
 
     def fail(self, node: XmlNode, problem: str) -> UrdfError:
@@ -100,7 +103,13 @@ class _Reader:
 
     def mesh(self, shape: XmlNode, stand_in: Callable[[], Geometry]) -> Geometry:
         uri = self.attr(shape, "filename")
-        path = self.resolver.resolve(uri, self.base_dir)
+        try:
+            path = self.resolver.resolve(uri, self.base_dir)
+        except PackageNotFoundError as err:
+            if not self.missing_packages_as_boxes:
+                raise
+            self.missing_packages.append(err.package)
+            return stand_in()
         if not path.is_file():
             self.missing_meshes.append(uri)
             return stand_in()
@@ -236,12 +245,20 @@ def inertia_box(inertial: Inertial | None) -> tuple[float, float, float] | None:
 
 
 def read_urdf(
-    root: XmlNode, source: str, base_dir: Path | None, resolver: PackageResolver
+    root: XmlNode,
+    source: str,
+    base_dir: Path | None,
+    resolver: PackageResolver,
+    missing_packages_as_boxes: bool = False,
 ) -> UrdfParts:
-    """Links and joints of a ``<robot>`` element; duplicate names raise :class:`UrdfError`."""
+    """Links and joints of a ``<robot>`` element; duplicate names raise :class:`UrdfError`.
+
+    ``missing_packages_as_boxes``: a mesh in a package found nowhere gets a box, as a
+    missing file does, instead of :class:`PackageNotFoundError`.
+    """
     if root.tag != "robot":
         raise UrdfError(source, f"root element is <{root.tag}>, a URDF needs <robot>", root.line)
-    reader = _Reader(source, base_dir, resolver)
+    reader = _Reader(source, base_dir, resolver, missing_packages_as_boxes)
     for material in root.findall("material"):
         color = material.find("color")
         if color is not None and "name" in material.attrib:
@@ -269,7 +286,7 @@ def read_urdf(
                     f"which the URDF does not define{hint}",
                 )
     name = reader.attr(root, "name")
-    return UrdfParts(name, links, joints, reader.missing_meshes)
+    return UrdfParts(name, links, joints, reader.missing_meshes, reader.missing_packages)
 
 
 def _did_you_mean(name: str, candidates: dict[str, Link]) -> str:

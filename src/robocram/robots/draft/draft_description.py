@@ -7,7 +7,7 @@ each part, and where the URDF left doubt. ``source()`` prints it as ready-to-edi
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
@@ -26,9 +26,11 @@ from robocram.robots.draft.hands import find_hands
 from robocram.robots.draft.link_poses import within_limits
 from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.draft.parking import neck_pose
+from robocram.robots.draft.srdf_arms import srdf_arms
 from robocram.robots.draft.torso import find_torso
 from robocram.robots.draft.trunk import find_trunk
 from robocram.robots.robot_model import RobotModel
+from robocram.robots.srdf import read_srdf
 from robocram.tf import Pose
 
 
@@ -57,14 +59,26 @@ class DraftDescription:
         )
 
 
-def draft_description(urdf: str | Path, name: str | None = None) -> DraftDescription:
+def draft_description(
+    urdf: str | Path,
+    name: str | None = None,
+    srdf: str | Path | None = None,
+    package_paths: Iterable[str | Path] = (),
+) -> DraftDescription:
     """Guess a description of the robot in ``urdf`` (its name from the URDF unless given).
+
+    An ``srdf`` (its MoveIt configuration) gives the arms' joints, parking states and
+    self-contacts instead of guesses. ``package_paths`` are searched for ``package://``
+    URIs; a package found nowhere gets boxes and a :class:`MissingMeshWarning`, so a
+    draft can start before every mesh package is at hand.
 
     Raises:
         UrdfError: the URDF cannot be read or is not a tree.
+        SrdfError: the SRDF cannot be read or names what the URDF does not have.
     """
     path = Path(urdf).expanduser().resolve()
-    model = RobotModel.from_file(path)
+    model = RobotModel.from_file(path, package_paths, missing_packages_as_boxes=True)
+    semantics = None if srdf is None else read_srdf(srdf, model)
     tree = ModelTree(model)
     why: dict[str, str] = {"base_frame": "the URDF's root link: the robot's base"}
     doubts: dict[str, str] = {}
@@ -101,6 +115,8 @@ def draft_description(urdf: str | Path, name: str | None = None) -> DraftDescrip
         extra_frames=tuple(frames),
     )
     desc = _with_camera(tree, desc, why, doubts, cut)
+    if semantics is not None:
+        desc = srdf_arms(model, desc, semantics, why, doubts)
     inferred = frozenset(
         key
         for key, arm in desc.arms.items()

@@ -13,6 +13,7 @@ from collections.abc import Mapping
 from pathlib import Path
 
 from robocram.robots.description import (
+    DEFAULT_ALLOWED_CONTACTS,
     ArmDescription,
     CameraDescription,
     FrameSpec,
@@ -158,7 +159,18 @@ def _body(desc: RobotDescription, notes: _Notes) -> object:
         fields.append(notes.item("neck_parking", "neck_parking", dict(desc.neck_parking)))
     if desc.extra_frames:
         fields.append(Item("extra_frames", tuple(_frame(f) for f in desc.extra_frames)))
+    if desc.allowed_contacts != DEFAULT_ALLOWED_CONTACTS:
+        fields.append(notes.item("allowed_contacts", "allowed_contacts", _contacts(desc)))
     return call("RobotDescription", *fields)
+
+
+def _contacts(desc: RobotDescription) -> Call:
+    """The allowed contacts as the defaults followed by the rules the draft adds."""
+    default = len(DEFAULT_ALLOWED_CONTACTS)
+    if desc.allowed_contacts[:default] != DEFAULT_ALLOWED_CONTACTS:
+        return Call("(", [Item(None, rule) for rule in desc.allowed_contacts], ")")
+    added = [Item(None, rule) for rule in desc.allowed_contacts[default:]]
+    return Call("(", [Item(None, Code("*DEFAULT_ALLOWED_CONTACTS")), *added], ")")
 
 
 def _import_line(module: str, names: list[str]) -> str:
@@ -204,6 +216,8 @@ def draft_source(
     standard += ["from pathlib import Path"] if urdf.startswith("Path(") else []
     text += "".join(f"{line}\n" for line in standard) + ("\n" if standard else "")
     text += _import_line("robocram.robots", names)
+    if "*DEFAULT_ALLOWED_CONTACTS" in repr(body):
+        text += _import_line("robocram.robots.description", ["DEFAULT_ALLOWED_CONTACTS"])
     text += _import_line("robocram.tf", ["Pose"]) if desc.extra_frames else ""
     text += f"\nURDF = {urdf}\n\n\n"
     text += "def description() -> RobotDescription:\n"
