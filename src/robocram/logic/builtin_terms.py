@@ -15,7 +15,7 @@ from robocram.logic.errors import (
     PrologTypeError,
     error_from_ball,
 )
-from robocram.logic.functor_arg import arg_check, functor_make
+from robocram.logic.functor_arg import arg_check, functor_make, need_int
 from robocram.logic.terms import NIL, PString, Term, Var, deref
 from robocram.logic.unify import copy_resolved, identical, is_acyclic, order_key
 from robocram.logic.univ import univ_compose, univ_list
@@ -27,16 +27,6 @@ if TYPE_CHECKING:
 __all__ = ["list_items", "need_int"]
 
 Args = tuple[Value, ...]
-
-
-def need_int(t: Value, what: str) -> int:
-    """Dereference `t` and insist on an integer."""
-    t = deref(t)
-    if type(t) is Var:
-        raise PrologInstantiationError(f"{what}: argument is unbound; bind it to an integer")
-    if type(t) is not int:
-        raise PrologTypeError("integer", t, f"{what}: {t!r} is not an integer")
-    return t
 
 
 def list_items(t: Value, what: str, check: Callable[[], None] | None = None) -> list[Value]:

@@ -24,7 +24,8 @@ def _deref(t: Value) -> Value:
     return t
 
 
-def _int(t: Value, what: str) -> int:
+def need_int(t: Value, what: str) -> int:
+    """Dereference `t` and insist on an integer (the ISO errors name ``what``)."""
     t = _deref(t)
     if type(t) is Var:
         raise PrologInstantiationError(f"{what}: argument is unbound; bind it to an integer")
@@ -39,7 +40,7 @@ def arg_check(n: Value, t: Value) -> int:
     >>> arg_check(3, Term("f", (1,)))
     3
     """
-    k = _int(n, "arg/3")
+    k = need_int(n, "arg/3")
     t = _deref(t)
     if type(t) is Var:
         raise PrologInstantiationError("arg/3: the term is unbound")
@@ -62,7 +63,7 @@ def functor_make(name: Value, arity: Value) -> Value:
         return new_term(Term, (name, tuple([Var() for _ in range(n)])))
     if type(name) is Var:
         raise PrologInstantiationError("functor/3: both the term and the name are unbound")
-    n = _int(n, "functor/3")
+    n = need_int(n, "functor/3")
     if n < 0:
         raise PrologDomainError("not_less_than_zero", n, f"functor/3: arity {n} < 0")
     if type(name) is Term:

@@ -27,15 +27,9 @@ class UrdfError(DescriptionError):
         super().__init__(f"{where}: {problem}")
 
 
-class SrdfError(DescriptionError):
-    """An SRDF is malformed or names links, joints or groups its URDF does not have."""
-
-    def __init__(self, source: str | Path, problem: str, line: int | None = None) -> None:
-        self.source = str(source)
-        self.problem = problem
-        self.line = line
-        where = f"{self.source}:{line}" if line is not None else self.source
-        super().__init__(f"{where}: {problem}")
+class SrdfError(UrdfError):
+    """An SRDF is malformed or names links, joints or groups its URDF does not have (a
+    robot file's error like a URDF's: where, which line, what to do)."""
 
 
 class PackageNotFoundError(DescriptionError):
