@@ -91,3 +91,19 @@ def test_local_steps_agree_with_the_rigid_ones_on_what_is_free() -> None:
             assert local  # a free segment is never refused
     assert len(verdicts) >= 3
     world.close()
+
+
+def test_one_arm_sweeps_while_the_other_holds_something() -> None:
+    """What the other hand holds does not move with this arm: its levers are not asked
+    for (a KeyError on the right wrist once ended a left-arm motion)."""
+    world = tabletop_scene("pr2").world
+    world.attach("mug-1", "pr2", "r_wrist_roll_link")
+    left = tuple(j.replace("r_", "l_", 1) for j in JOINTS[1:])
+    scene = BulletScene(world, "pr2", left)
+    assert "mug-1" not in scene.lever_links()
+    bound = TravelBound.of(world, "pr2", left)
+    qa = np.array([world.joint_states("pr2")[j] for j in left])
+    qb = qa + np.array([0.6, 0.3, 0.5, -0.4, 1.0, -0.3, 1.5])
+    assert bound.travel(qa, qb) > 1.0  # long enough for the local levers
+    segment_free(scene, qa, qb, bound, CheckCounter())  # answers, whatever it answers
+    world.close()

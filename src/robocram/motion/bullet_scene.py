@@ -136,8 +136,11 @@ class BulletScene:
             return self._clearances_now(reach)
 
     def lever_links(self) -> tuple[str, ...]:
-        """The moving links and the objects the robot holds (they ride on a link)."""
-        return (*self.moving_links, *self.world.attachments(self.robot))
+        """The moving links and the objects held by one of them (they ride on it); what
+        the other hand holds stays where it is."""
+        moving = set(self.moving_links)
+        held = self.world.attachments(self.robot)
+        return (*self.moving_links, *(obj for obj, link in held.items() if link in moving))
 
     def joints_after(self) -> NDArray[np.bool_]:
         """``[i, k]``: whether joint k's child link moves with joint i (k below i)."""

@@ -10,7 +10,7 @@ from typing import Any
 
 from robocram.designators import ObjectDesignator, a, an
 from robocram.execution import perform
-from robocram.execution.failures import ManipulationPathBlocked
+from robocram.execution.failures import ManipulationPathBlocked, NavigationLowLevelFailure
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.robot_facts import (
     base_frame,
@@ -19,9 +19,11 @@ from robocram.plans.robot_facts import (
     robot_arms,
     torso_limit,
 )
-from robocram.tf import PoseStamped
+from robocram.tf import Pose, PoseStamped, transform_pose
 
-PARKING_BACKOFFS = (0.15, 0.3)  # [m] the base backs away before each further parking try
+# [m] (forward, left) base moves, in its frame where parking first failed, before each
+# further try: back away from what the hand just worked at, then sideways from a wall
+PARKING_BACKOFFS = ((-0.15, 0.0), (-0.45, 0.0), (0.0, 0.2), (0.0, -0.2), (-0.2, 0.2), (-0.2, -0.2))
 
 
 def navigate(target: object) -> Any:
@@ -48,16 +50,27 @@ def park_arms(arm: str | None = None) -> list[str]:
 
 def _park(robot: str, arm: str, states: list[list[object]]) -> None:
     """Park ``arm``; when its parking pose would hit what the robot stands at (a table the
-    hand just put something on), back the base away and try again."""
-    for attempt in range(len(PARKING_BACKOFFS) + 1):
+    hand just put something on, a wall beside it), move the base away and try again: back
+    first, then to either side (:data:`PARKING_BACKOFFS`); a move that cannot be driven is
+    skipped. The parking failure is raised when every move was tried."""
+    try:
+        perform(a.motion(type="moving-arm-joints", arm=arm, configuration=states))
+        return
+    except ManipulationPathBlocked as failure:
+        blocked = failure
+    origin = transform_pose(PoseStamped(base_frame(robot)), "map").pose
+    for forward, left in PARKING_BACKOFFS:
+        moved = origin * Pose((forward, left, 0.0))
+        try:
+            perform(a.motion(type="going", target=PoseStamped.from_pose("map", moved)))
+        except NavigationLowLevelFailure:
+            continue
         try:
             perform(a.motion(type="moving-arm-joints", arm=arm, configuration=states))
             return
-        except ManipulationPathBlocked:
-            if attempt == len(PARKING_BACKOFFS):
-                raise
-            back = PoseStamped(base_frame(robot), (-PARKING_BACKOFFS[attempt], 0.0, 0.0))
-            perform(a.motion(type="going", target=back))
+        except ManipulationPathBlocked as failure:
+            blocked = failure
+    raise blocked
 
 
 def move_torso(joint_angle: float | str) -> Any:
