@@ -24,8 +24,8 @@ LAYER_ADVICE: Mapping[str, str] = {
     "reachability": "the object is beyond the robot's reach from every cell searched: "
     "move it or use another arm/robot",
     "right_of": _SIDE.format("right of"),
-    "visibility": "no cell sees the target within the camera's range: move the target "
-    "closer to open floor or use another robot",
+    "visibility": "no cell within the camera's range (0.4 to 2.5 m) sees the target: "
+    "remove what hides it, or widen `size` if the search area is smaller than that",
 }
 
 VALIDATOR_ADVICE: Mapping[str, str] = {
