@@ -141,7 +141,7 @@ class CostmapLocations:
     def _costmap(self, query: LocationQuery, plan: LocationPlan, lazy: bool) -> _Layers:
         alive = np.ones(query.grid.shape, dtype=bool)
         weights, refiners, heights, yaws = [], [], None, None
-        emptied_by: str | None = None
+        zeroed_by: str | None = None
         refined_by: list[str] = []
         for key, name in plan.cost_functions:
             function = _registered(self.cost_functions, name, "location_cost", "add_cost_function")
@@ -155,11 +155,11 @@ class CostmapLocations:
                 weights[-1][cells[:, 0], cells[:, 1]] *= layer.refine(cells)
             was_alive, alive = alive.any(), alive & (weights[-1] > 0)
             if was_alive and not alive.any():
-                emptied_by = name  # later layers only see zeros: this one is the cause
+                zeroed_by = name  # later layers only see zeros: this one is the cause
             heights = layer.heights if layer.heights is not None else heights
             yaws = layer.yaws if layer.yaws is not None else yaws
         costmap = Costmap.from_layers(query.grid, weights, heights)
-        return _Layers(costmap, yaws, refiners, plan, emptied_by, tuple(refined_by))
+        return _Layers(costmap, yaws, refiners, plan, zeroed_by, tuple(refined_by))
 
     def _cells(self, layers: _Layers, rng: np.random.Generator) -> Iterator[tuple[int, int]]:
         """Cells drawn from the costmap, thinned by the lazy factors (rejection sampling)."""
