@@ -119,7 +119,7 @@ class CostmapLocations:
             if in_a_row >= self.max_rejections:
                 raise LocationNotFound(designator, rejected, accepted, in_a_row)
         if accepted == 0:
-            raise LocationNotFound(designator, rejected, accepted, in_a_row)
+            raise LocationNotFound(designator, rejected, accepted, in_a_row, layers.emptied_by())
 
     def _robot(self, designator: Any, plan: LocationPlan) -> RobotObject | None:
         if plan.robot_key is None:
@@ -141,19 +141,25 @@ class CostmapLocations:
     def _costmap(self, query: LocationQuery, plan: LocationPlan, lazy: bool) -> _Layers:
         alive = np.ones(query.grid.shape, dtype=bool)
         weights, refiners, heights, yaws = [], [], None, None
+        zeroed_by: str | None = None
+        refined_by: list[str] = []
         for key, name in plan.cost_functions:
             function = _registered(self.cost_functions, name, "location_cost", "add_cost_function")
             layer: CostLayer = function(query, query.designator.get(key), alive)
             weights.append(np.where(alive, layer.weights, 0.0))
             if layer.refine is not None and lazy:
                 refiners.append(layer.refine)
+                refined_by.append(name)
             elif layer.refine is not None:
                 cells = np.argwhere(weights[-1] > 0)
                 weights[-1][cells[:, 0], cells[:, 1]] *= layer.refine(cells)
-            alive &= weights[-1] > 0
+            was_alive, alive = alive.any(), alive & (weights[-1] > 0)
+            if was_alive and not alive.any():
+                zeroed_by = name  # later layers only see zeros: this one is the cause
             heights = layer.heights if layer.heights is not None else heights
             yaws = layer.yaws if layer.yaws is not None else yaws
-        return _Layers(Costmap.from_layers(query.grid, weights, heights), yaws, refiners, plan)
+        costmap = Costmap.from_layers(query.grid, weights, heights)
+        return _Layers(costmap, yaws, refiners, plan, zeroed_by, tuple(refined_by))
 
     def _cells(self, layers: _Layers, rng: np.random.Generator) -> Iterator[tuple[int, int]]:
         """Cells drawn from the costmap, thinned by the lazy factors (rejection sampling)."""
@@ -190,12 +196,20 @@ class CostmapLocations:
 
 @dataclass(frozen=True, eq=False)
 class _Layers:
-    """A costmap of the eager layers, the yaws, the lazy factors still to apply, the plan."""
+    """A costmap of the eager layers, the yaws, the lazy factors still to apply, the plan;
+    the layer that zeroed every cell, and those whose lazy factors may zero the rest."""
 
     costmap: Costmap
     yaws: np.ndarray | None
     refiners: list[CellRefiner]
     plan: LocationPlan
+    zeroed_by: str | None = None
+    refined_by: tuple[str, ...] = ()
+
+    def emptied_by(self) -> tuple[str, ...]:
+        """The layers to blame when no candidate came: the one that zeroed the grid, else
+        the lazy ones (their factors refused every cell drawn)."""
+        return (self.zeroed_by,) if self.zeroed_by else self.refined_by
 
 
 def _registered(registry: dict[str, _Function], name: str, rule: str, adder: str) -> _Function:

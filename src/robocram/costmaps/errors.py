@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
+from robocram.costmaps.location_advice import not_found_advice
 from robocram.designators import GroundingError
 
 
@@ -39,18 +40,26 @@ class LocationNotFound(CostmapError, GroundingError):
     Attributes:
         rejections: how many candidates each validator rejected in all, by validator name.
         accepted: how many poses the designator had yielded before.
+        emptied_by: the cost layers that left no cell (when there were no candidates).
     """
 
     def __init__(
-        self, designator: Any, rejections: Mapping[str, int], accepted: int, in_a_row: int
+        self,
+        designator: Any,
+        rejections: Mapping[str, int],
+        accepted: int,
+        in_a_row: int,
+        emptied_by: tuple[str, ...] = (),
     ) -> None:
         self.rejections = dict(rejections)
         self.accepted = accepted
+        self.emptied_by = emptied_by
+        advice = not_found_advice(self.rejections, accepted, in_a_row, emptied_by)
         counts = ", ".join(f"{name} rejected {n}" for name, n in sorted(self.rejections.items()))
         GroundingError.__init__(
             self,
             f"{designator.description}: no location found after {in_a_row} "
             f"rejections in a row ({counts or 'no candidates at all'}; {accepted} accepted "
-            "before); widen the search area, loosen the keys or clear the obstacles",
+            f"before); {advice}",
             designator,
         )
