@@ -71,3 +71,23 @@ def test_container_stands_face_the_kb_front_turned_with_the_environment(
     assert ahead == pytest.approx([0.9, 1.0, 0.8] * 2, abs=1e-6)
     for stand in stands:
         assert _wrapped(yaw_of(stand.pose) - front - math.pi) == pytest.approx(0.0, abs=1e-3)
+
+
+def test_without_a_front_fact_the_container_stands_face_the_handle_frame(
+    turned_handle_kitchen: EnvironmentScene,
+) -> None:
+    world, robot = turned_handle_kitchen.world, turned_handle_kitchen.robot
+    facts = kitchen_description().facts().splitlines()
+    unfronted = [f for f in facts if not f.startswith("container_front(")]
+    world.kb.consult("\n".join(unfronted), group="kitchen_semantics")  # as before the fact
+    handle = world.link_pose("kitchen", HANDLE)
+    with simulated_robot(world, robot):
+        part = container(HANDLE)
+        part_front = front_in_map(part)
+        stands = list(opening_stands(part))
+    assert part_front is None
+    assert len(stands) == 6
+    for stand in stands:
+        assert _wrapped(yaw_of(stand.pose) - yaw_of(handle) - math.pi) == pytest.approx(
+            0.0, abs=1e-3
+        )
