@@ -102,6 +102,7 @@ class Facts:
     def __init__(self) -> None:
         self.surfaces: list[str] = []
         self.containers: list[tuple[str, str, str, str]] = []  # link, joint, handle, kind
+        self.fronts: dict[str, float] = {}  # container link -> its unit's yaw [rad]
 
     def text(self) -> str:
         """The Prolog fact group: supporting surfaces and containers of the kitchen."""
@@ -116,6 +117,8 @@ class Facts:
             *(f"container_kind(kitchen, {c}, {k})." for c, _, _, k in self.containers),
             "% container_opening(Env, Link, Goal): the joint value [m | rad] that opens it.",
             *(f"container_opening(kitchen, {c}, {OPENED[k]})." for c, _, _, k in self.containers),
+            "% container_front(Env, Link, Yaw): the way [rad] out of its front (its unit's +x).",
+            *(f"container_front(kitchen, {c}, {round(y, 4)!r})." for c, y in self.fronts.items()),
         ]
         return "\n".join(lines) + "\n"
 
@@ -169,6 +172,7 @@ def drawer(b: UrdfBuilder, u: Unit, k: int, facts: Facts) -> None:
     b.link(name, shapes, mass=2.0, color="white")
     handle(b, name, f"{name}_handle", (0.04, 0.0, slot - 0.06), upright=False)
     facts.containers.append((name, f"{name}_joint", f"{name}_handle", "drawer"))
+    facts.fronts[name] = u.yaw
 
 
 def door(b: UrdfBuilder, u: Unit, facts: Facts) -> None:
@@ -190,6 +194,7 @@ def door(b: UrdfBuilder, u: Unit, facts: Facts) -> None:
     grip_z = 0.12 if u.xyz[2] > 0.0 else min(tall - 0.12, 1.0)
     handle(b, name, f"{name}_handle", (0.04, WIDTH - 0.06, grip_z), upright=True)
     facts.containers.append((f"{u.name}_body", f"{name}_joint", f"{name}_handle", "door"))
+    facts.fronts[f"{u.name}_body"] = u.yaw
 
 
 def unit(b: UrdfBuilder, u: Unit, facts: Facts) -> None:

@@ -42,6 +42,18 @@ class ContainerOpening:
 
 
 @dataclass(frozen=True)
+class ContainerFront:
+    """The yaw, in the environment's frame, of the way out of a container's front.
+
+    The robot stands on that side to open it; a handle's own frame need not point there.
+    """
+
+    environment: str
+    link: str
+    front: float = unit("rad")
+
+
+@dataclass(frozen=True)
 class UsualLocation:
     """Where objects of a type usually are."""
 
@@ -64,6 +76,9 @@ CONTAINER_KIND = Predicate("container_kind", ContainerKind, _S, "a container's k
 CONTAINER_OPENING = Predicate(
     "container_opening", ContainerOpening, _S, "how far a container opens"
 )
+CONTAINER_FRONT = Predicate(
+    "container_front", ContainerFront, _S, "which way a container's front faces"
+)
 USUAL_LOCATION = Predicate("usual_location", UsualLocation, _S, "where a type of object is kept")
 SUPPORTING_SURFACE = Predicate(
     "supporting_surface", SupportingSurface, _S, "a surface objects can stand on"
@@ -73,6 +88,7 @@ SCENE_PREDICATES: tuple[Predicate[Any], ...] = (
     CONTAINER,
     CONTAINER_KIND,
     CONTAINER_OPENING,
+    CONTAINER_FRONT,
     USUAL_LOCATION,
     SUPPORTING_SURFACE,
 )

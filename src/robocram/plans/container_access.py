@@ -1,17 +1,20 @@
 """Going to a container and opening it, and later closing it again from where it was opened.
 
 CRAM opens a drawer when the object is known to be inside it and closes it once the object
-is delivered. The stand comes from :func:`handle_stands` (in front of the handle, the
-arm's shoulder in line with it); each stand is tried in turn, bounded, and a stand where
-the robot would collide or the arm cannot hold the handle all the way gives the next one.
+is delivered. The stand comes from :func:`handle_stands` (in front of the handle on the
+side the KB's ``container_front/3`` names, the arm's shoulder in line with it); each stand
+is tried in turn, bounded, and a stand where the robot would collide or the arm cannot
+hold the handle all the way gives the next one.
 """
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from dataclasses import dataclass
 
 from robocram.execution.failures import PlanFailure
-from robocram.knowledge.scene_predicates import CONTAINER, CONTAINER_KIND
+from robocram.knowledge.scene_predicates import CONTAINER, CONTAINER_FRONT, CONTAINER_KIND
+from robocram.knowledge.world_predicates import OBJECT_POSE
 from robocram.logic import current_kb
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import navigate, park_arms
@@ -19,7 +22,7 @@ from robocram.plans.containers import Container, close_container, container, ope
 from robocram.plans.environment_links import environment_link_pose
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.robot_facts import current_robot, robot_arms
-from robocram.plans.stands import HandleStand, handle_stands
+from robocram.plans.stands import HandleStand, handle_stands, yaw_of
 from robocram.tf import Pose
 
 OPEN_RETRIES = 6  # stands tried before opening gives up
@@ -48,6 +51,30 @@ def _is_drawer(part: Container) -> bool:
     )
 
 
+def front_in_map(part: Container) -> float | None:
+    """The map yaw [rad] out of ``part``'s front, if the KB gives it.
+
+    ``container_front/3`` is in the environment's frame, so the environment's own turn in
+    the world is added; without the fact (or the pose) the caller falls back on the handle.
+    """
+    kb = current_kb()
+    fact = CONTAINER_FRONT.first(kb, environment=part.environment, link=part.link)
+    if fact is None:
+        return None
+    row = OBJECT_POSE.first(kb, object=part.environment)
+    if row is None:
+        return None
+    return fact.front + yaw_of(row.pose)
+
+
+def opening_stands(part: Container) -> Iterator[HandleStand]:
+    """Stands in front of ``part``'s handle for the current robot, each arm in the KB's order."""
+    robot = current_robot()
+    handle = _handle_pose(part)
+    drawer = _is_drawer(part)
+    return handle_stands(robot, robot_arms(robot), handle, part.opened, drawer, front_in_map(part))
+
+
 def open_from_front(
     name: str, log: AttemptLog | None = None, retries: int = OPEN_RETRIES
 ) -> OpenedContainer:
@@ -58,12 +85,8 @@ def open_from_front(
     """
     log = log if log is not None else AttemptLog()
     part = container(name)
-    robot = current_robot()
-    stands = handle_stands(
-        robot, robot_arms(robot), _handle_pose(part), part.opened, _is_drawer(part)
-    )
     last: PlanFailure | None = None
-    for _, stand in zip(range(retries), stands, strict=False):
+    for _, stand in zip(range(retries), opening_stands(part), strict=False):
         try:
             park_arms()
             navigate(stand.pose)

@@ -5,9 +5,10 @@ the object over the placing spot *at the same place relative to the base* is rea
 by construction (the arm only lowers it). The stands turn about the spot, the first one
 on the side the robot comes from, so the robot tries the near side of a table first.
 
-Handles: the robot faces the handle from in front of its unit (unit frames have x out of
-the front), far enough back for a drawer to open, with the chosen arm's shoulder in line
-with the handle. Everything comes from the KB and the transform tree: no link names.
+Handles: the robot faces the handle from in front of its unit (the environment's
+``container_front/3``, else the handle's x axis), far enough back for a drawer to open,
+with the chosen arm's shoulder in line with the handle. Everything comes from the KB and
+the transform tree: no link names.
 """
 
 from __future__ import annotations
@@ -84,11 +85,21 @@ def shoulder_offset(robot: str, arm: str) -> float:
 
 
 def handle_stands(
-    robot: str, arms: list[str], handle_pose: Pose, opening: float, drawer: bool
+    robot: str,
+    arms: list[str],
+    handle_pose: Pose,
+    opening: float,
+    drawer: bool,
+    front: float | None = None,
 ) -> Iterator[HandleStand]:
-    """Stands facing the handle at ``handle_pose`` (map; x out of its unit's front)."""
+    """Stands facing the handle at ``handle_pose`` (map) from its unit's ``front``.
+
+    ``front`` [rad] is the map yaw out of the unit's front; when the environment does not
+    say, the handle's x axis is taken to point out of it.
+    """
     distances = [opening + c for c in HANDLE_CLEARANCES] if drawer else list(DOOR_DISTANCES)
-    return front_stands(robot, arms, handle_pose, yaw_of(handle_pose), distances)
+    out_yaw = front if front is not None else yaw_of(handle_pose)
+    return front_stands(robot, arms, handle_pose, out_yaw, distances)
 
 
 def front_stands(

@@ -1,11 +1,12 @@
 """An environment description: what plans need to know about a URDF kitchen, as data.
 
 Plans ask the knowledge base for supporting surfaces, containers (the link things lie in,
-the joint that opens it, the handle to pull, drawer or door, how far it opens) and where a
-type of object is usually kept. An :class:`EnvironmentDescription` holds those for one
-URDF and writes them as the facts of the predicate table's ``SCENE`` rows
-(:meth:`EnvironmentDescription.facts`). ``robocram env draft URDF`` drafts one
-(:mod:`robocram.scenes.environment_draft`); the built-in kitchen is one too.
+the joint that opens it, the handle to pull, drawer or door, how far it opens, which way
+its front faces) and where a type of object is usually kept. An
+:class:`EnvironmentDescription` holds those for one URDF and writes them as the facts of
+the predicate table's ``SCENE`` rows (:meth:`EnvironmentDescription.facts`).
+``robocram env draft URDF`` drafts one (:mod:`robocram.scenes.environment_draft`); the
+built-in kitchen is one too.
 """
 
 from __future__ import annotations
@@ -73,6 +74,7 @@ class EnvironmentDescription:
             lines.append(f"container({env}, {link}, {_atom(c.joint)}, {_atom(c.handle)}).")
             lines.append(f"container_kind({env}, {link}, {c.kind}).")
             lines.append(f"container_opening({env}, {link}, {float(c.opening)!r}).")
+            lines.append(f"container_front({env}, {link}, {float(c.front)!r}).")
         lines += [
             f"usual_location({_atom(t)}, {env}, {_atom(p)})." for t, p in self.usual_locations
         ]
