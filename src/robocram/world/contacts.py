@@ -30,11 +30,7 @@ def _carried_with(world: WorldCore, obj: WorldObject) -> set[str]:
 
 def _link_names(obj: WorldObject) -> dict[int, str]:
     """pybullet link index -> link name (the first name of each index)."""
-    names: dict[int, str] = {}
-    for name, index in obj.link_index.items():
-        names.setdefault(index, name)
-    names.setdefault(-1, obj.name)  # single-shape bodies: the base is the object itself
-    return names
+    return obj.index_names()  # single-shape bodies: the base is the object itself
 
 
 def _index(obj: WorldObject, link: str) -> int:

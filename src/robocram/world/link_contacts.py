@@ -36,6 +36,7 @@ def _overlaps(
     cid = world.physics_client()
     names = _link_names(obj)
     indices = names if links is None else {obj.link_index[name]: name for name in links}
+    indices = {i: name for i, name in indices.items() if i in obj.colliders}  # no shape, no hit
     if obstacles is not None and obstacles.covers(obj, skip):
         yield from _overlaps_in(obstacles, obj, indices, names, skip, distance, cid)
         return

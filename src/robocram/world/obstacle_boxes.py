@@ -52,6 +52,8 @@ class ObstacleBoxes:
             if obj.name in skipped:
                 continue
             for index, name in _link_names(obj).items():
+                if index not in obj.colliders:
+                    continue  # a frame without shapes hits nothing
                 low, high = pybullet.getAABB(obj.body_id, index, physicsClientId=cid)
                 objects.append(obj)
                 indices.append(index)

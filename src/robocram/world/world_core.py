@@ -92,6 +92,7 @@ class WorldCore:
         handle.joint_index.clear()
         handle.link_index.clear()
         handle.movable_joints.clear()
+        handle.forget_indices()
         base_name = pybullet.getBodyInfo(handle.body_id, physicsClientId=cid)[0].decode()
         handle.link_index[base_name] = -1
         for i in range(pybullet.getNumJoints(handle.body_id, physicsClientId=cid)):
@@ -104,6 +105,10 @@ class WorldCore:
         for frame, host, host_T_frame in getattr(handle.spec, "frames", ()):
             handle.link_index[frame] = handle.link_index[host]
             handle.link_offset[frame] = host_T_frame
+        handle.colliders = frozenset(
+            i for i in handle.index_names()
+            if pybullet.getCollisionShapeData(handle.body_id, i, physicsClientId=cid)
+        )  # fmt: skip
         self._objects[handle.name] = handle
         if handle.joint_index:
             self._holds[handle.name] = {}

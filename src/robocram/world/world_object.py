@@ -34,6 +34,27 @@ class WorldObject:
     link_index: dict[str, int] = field(default_factory=dict, kw_only=True)
     link_offset: dict[str, Pose] = field(default_factory=dict, kw_only=True)
     movable_joints: list[str] = field(default_factory=list, kw_only=True)
+    _index_names: dict[int, str] | None = field(default=None, init=False, repr=False)
+    colliders: frozenset[int] = field(default=frozenset(), init=False, repr=False)
+    """pybullet link indices that have collision shapes, read when the body is created:
+    contact queries leave the others (frames, cameras) out."""
+
+    def forget_indices(self) -> None:
+        """Drop what was read from the last body: a new one is being indexed."""
+        self._index_names = None
+        self.colliders = frozenset()
+
+    def index_names(self) -> dict[int, str]:
+        """pybullet link index -> link name (the first name of each index); the base (-1)
+        is the object's own name when no link names it. Read once: contact queries ask it
+        for every pair they find."""
+        if self._index_names is None:
+            names: dict[int, str] = {}
+            for name, index in self.link_index.items():
+                names.setdefault(index, name)
+            names.setdefault(-1, self.name)
+            self._index_names = names
+        return self._index_names
 
     @property
     def is_static(self) -> bool:
