@@ -79,6 +79,19 @@ def test_a_box_in_the_way_is_driven_around(world: World) -> None:
     assert again.poses == path.poses and again.fast_checks == path.fast_checks
 
 
+def test_a_crate_beside_the_way_is_passed_backing_out_and_arriving_straight(world: World) -> None:
+    """The detour before planning: back out along the start heading, drive, arrive
+    straight along the goal's; here only the 0.6 m one clears the crate."""
+    world.set_pose("pr2", _pose(-1.0, 0.2, math.pi / 2))
+    world.add_box("crate", (0.3, 0.3, 0.8), (-0.2, 0.2, 0.4))
+    path = plan_base_path(world, "pr2", _pose(0.6, 0.2, math.pi / 2))
+    assert path.planner == "detour"
+    expected = [(-1.0, 0.2), (-1.0, -0.4), (0.6, -0.4), (0.6, 0.2)]
+    assert [p[:2] for p in path.poses] == [pytest.approx(xy) for xy in expected]
+    assert all(p[2] == pytest.approx(math.pi / 2) for p in path.poses)
+    assert _exactly_free(world, path) == []
+
+
 def test_an_open_drawer_is_never_driven_through(world: World) -> None:
     world.set_pose("pr2", _pose(-2.5, 1.05, 0.0))
     goal = _pose(-0.5, 1.05, 0.0)

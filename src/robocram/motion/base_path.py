@@ -2,8 +2,11 @@
 
 The robot goes as it stands: its arms where they are, what it holds riding along, at its
 height. First the direct motion (straight for a holonomic base, the shortest Reeds-Shepp
-curve for a car) is checked densely; only when it is blocked does OMPL plan around
-(:mod:`robocram.motion.ompl_base_planner`). A goal in collision is
+curve for a car) is checked densely. When it is blocked, a holonomic base tries the two
+detours a driver would take before planning: leave backwards along its heading, and
+arrive straight ahead along the goal's (the direct motion of a long drive mostly fails
+by turning while close to the furniture it leaves or reaches). Only when those are
+blocked too does OMPL plan around (:mod:`robocram.motion.ompl_base_planner`). A goal in collision is
 ``NavigationPoseUnreachable``; a goal no path reaches within the budget is
 ``NavigationPathBlocked``, naming what the direct motion runs into first and where.
 """
@@ -27,6 +30,13 @@ from robocram.world import World
 
 DEFAULT_BUDGET = 20_000  # fast checks OMPL may spend planning (a quarter more for shortening)
 DEFAULT_TURNING_RADIUS = 0.5  # [m] of a base that is not holonomic
+DETOURS = (  # [m] (backing out of the start, arriving straight at the goal), tried in order
+    (0.0, 0.3),
+    (0.3, 0.0),
+    (0.3, 0.3),
+    (0.0, 0.6),
+    (0.6, 0.6),
+)
 COARSE = 5  # a holonomic base's tree edges are checked at every 5th pose while planning
 PLANNING_ATTEMPTS = 3  # seeds tried when the dense check refuses a coarsely planned path
 
@@ -36,8 +46,9 @@ class BasePath:
     """Base poses ``(x, y, yaw)`` [m, m, rad] in map, straight between them, and their timing.
 
     ``planner`` says how it was found: ``straight``, ``reeds_shepp`` (the direct curve of a
-    car), or the OMPL planner's name (``RRTConnect``, ``RRTConnect/ReedsShepp``). Headings
-    are continuous along the path (not wrapped), as the trajectory's ``yaw`` joint is.
+    car), ``detour`` (backing out and arriving straight, :data:`DETOURS`), or the OMPL
+    planner's name (``RRTConnect``, ``RRTConnect/ReedsShepp``). Headings are continuous
+    along the path (not wrapped), as the trajectory's ``yaw`` joint is.
     """
 
     robot: str
@@ -105,7 +116,11 @@ def plan_base_path(
             waypoints = list(direct) if car else [start, end]
             planner = "reeds_shepp" if car else "straight"
         else:
-            found = _planned(checker, start, end, radius, seed, budget)
+            found = None if car else _detour(checker, start, end)
+            planner = "detour"
+            if found is None:
+                found = _planned(checker, start, end, radius, seed, budget)
+                planner = "RRTConnect/ReedsShepp" if car else "RRTConnect"
             if found is None:
                 names = checker.blockers(direct[blocked])
                 fraction = blocked / max(len(direct) - 1, 1)
@@ -117,7 +132,6 @@ def plan_base_path(
                     path_fraction=fraction,
                 )
             waypoints = found
-            planner = "RRTConnect/ReedsShepp" if car else "RRTConnect"
         poses = tuple((float(p[0]), float(p[1]), float(p[2])) for p in waypoints)
         desc = world.robot(robot).description
         trajectory = time_parameterize(
@@ -143,6 +157,20 @@ def _refuse_blocked_goal(world: World, robot: str, goal: Pose, allowed: frozense
             target=goal,
             colliding=colliding,
         )
+
+
+def _detour(
+    checker: BaseCollisionChecker, start: np.ndarray, end: np.ndarray
+) -> list[np.ndarray] | None:
+    """The first of :data:`DETOURS` whose straight pieces are free, densely checked, or
+    None. Each costs one dense check, a fraction of planning; deterministic."""
+    for back, ahead in DETOURS:
+        leave = start - back * np.array([np.cos(start[2]), np.sin(start[2]), 0.0])
+        arrive = end - ahead * np.array([np.cos(end[2]), np.sin(end[2]), 0.0])
+        points = [start, *(p for p, d in ((leave, back), (arrive, ahead)) if d > 0.0), end]
+        if _dense_free(checker, points):
+            return points
+    return None
 
 
 def _planned(
