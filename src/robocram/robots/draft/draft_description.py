@@ -84,7 +84,7 @@ def draft_description(
     doubts: dict[str, str] = {}
     hands = find_hands(tree)
     cameras = [c for c in _camera_guess(tree, [h.end_effector_link for h in hands])]
-    torso = find_torso(tree, [h.end_effector_link for h in hands] + cameras)
+    torso = find_torso(tree, [h.end_effector_link for h in hands], cameras)
     _note(why, doubts, "torso_joint", torso.why, torso.doubt)
     names, names_why, names_doubt = arm_names(tree, hands) if hands else ([], "", None)
     arms: dict[str, ArmDescription] = {}
