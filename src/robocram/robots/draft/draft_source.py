@@ -211,6 +211,10 @@ def draft_source(
     ]
     module = module_file.name if module_file is not None else "THIS_FILE.py"
     text = _HEADER.format(name=desc.name, urdf=Path(desc.urdf).name, module=module)
+    first, rest = text.split("\n", 1)
+    if len(first) > WIDTH:  # a long robot or file name: ruff would refuse the line
+        first = first.replace("` from ", "`\nfrom ", 1)
+    text = f"{first}\n{rest}"
     uses_math = any("math." in repr(_fov(c.horizontal_fov)) for c in desc.cameras[:1])
     standard = ["import math"] if uses_math else []
     standard += ["from pathlib import Path"] if urdf.startswith("Path(") else []
