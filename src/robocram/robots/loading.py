@@ -76,7 +76,8 @@ def load_description(
 
 
 def _shared_model(desc: RobotDescription, paths: tuple[Path, ...]) -> RobotModel:
-    """The parsed URDF with the description's frames and boxes, shared by equal loads.
+    """The parsed URDF with the description's frames, boxes and joint couplings, shared by
+    equal loads.
 
     A mesh package found nowhere (Stretch's camera mesh in ``realsense2_description``)
     gets boxes and a :class:`MissingMeshWarning`, as a missing mesh file does.
@@ -94,6 +95,16 @@ def _shared_model(desc: RobotDescription, paths: tuple[Path, ...]) -> RobotModel
         for box in desc.extra_boxes:
             if box.name not in model.links:
                 model = model.with_box(box)
+        for coupling in desc.coupled_joints:
+            model = model.with_coupling(coupling)
         return model
 
-    return MODELS.model(file, paths, desc.extra_frames, desc.extra_boxes, build, lenient=True)
+    return MODELS.model(
+        file,
+        paths,
+        desc.extra_frames,
+        desc.extra_boxes,
+        build,
+        lenient=True,
+        couplings=desc.coupled_joints,
+    )

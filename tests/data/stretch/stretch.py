@@ -9,7 +9,13 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
-from robocram.robots import ArmDescription, CameraDescription, PanTiltDescription, RobotDescription
+from robocram.robots import (
+    ArmDescription,
+    CameraDescription,
+    JointCoupling,
+    PanTiltDescription,
+    RobotDescription,
+)
 
 URDF = Path(__file__).resolve().parent / "stretch_description/urdf/stretch_description.urdf"
 
@@ -31,20 +37,24 @@ def description() -> RobotDescription:
                 tool_frame="link_grasp_center",
                 # why: parent of the first arm joint; its joints down to the wrist are found at load
                 base_link="link_mast",
+                joints=(
+                    "joint_lift",
+                    "joint_arm_l3",
+                    "joint_wrist_yaw",
+                    "joint_wrist_pitch",
+                    "joint_wrist_roll",
+                ),
                 # why: the finger joints (prismatic, or leaves) right below the wrist; fingers and
                 #   hand links are found at load
                 gripper_joints=("joint_gripper_finger_right", "joint_gripper_finger_left"),
                 # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
                 # TODO doubt: no collision check here: `robocram robot check` drives it
                 parking={
-                    "joint_lift": 0.2,
+                    "joint_lift": 0.177,
                     "joint_arm_l3": 0.0,
-                    "joint_arm_l2": 0.0,
-                    "joint_arm_l1": 0.0,
-                    "joint_arm_l0": 0.0,
-                    "joint_wrist_yaw": -0.375,
-                    "joint_wrist_pitch": -0.375,
-                    "joint_wrist_roll": 0.0,
+                    "joint_wrist_yaw": 3.56,
+                    "joint_wrist_pitch": 0.437,
+                    "joint_wrist_roll": 2.806,
                 },
             ),
         },
@@ -64,4 +74,11 @@ def description() -> RobotDescription:
         pan_tilt=PanTiltDescription(pan_joint="joint_head_pan", tilt_joint="joint_head_tilt"),
         # why: head at zero: straight ahead
         neck_parking={"joint_head_pan": 0.0, "joint_head_tilt": 0.0},
+        # why: 4 prismatic joints in a row sliding along one axis with equal limits: a telescope,
+        #   moved by one actuator
+        coupled_joints=(
+            JointCoupling(
+                actuator="joint_arm_l3", followers=("joint_arm_l2", "joint_arm_l1", "joint_arm_l0")
+            ),
+        ),
     )

@@ -27,6 +27,7 @@ from robocram.robots.draft.link_poses import within_limits
 from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.draft.parking import neck_pose
 from robocram.robots.draft.srdf_arms import srdf_arms
+from robocram.robots.draft.telescope import find_telescopes
 from robocram.robots.draft.torso import find_torso
 from robocram.robots.draft.trunk import find_trunk
 from robocram.robots.robot_model import RobotModel
@@ -78,10 +79,15 @@ def draft_description(
     """
     path = Path(urdf).expanduser().resolve()
     model = RobotModel.from_file(path, package_paths, missing_packages_as_boxes=True)
-    semantics = None if srdf is None else read_srdf(srdf, model)
-    tree = ModelTree(model)
     why: dict[str, str] = {"base_frame": "the URDF's root link: the robot's base"}
     doubts: dict[str, str] = {}
+    telescopes = find_telescopes(ModelTree(model))
+    for telescope in telescopes:
+        model = model.with_coupling(telescope.coupling)
+    if telescopes:
+        why["coupled_joints"] = "; ".join(t.why for t in telescopes)
+    semantics = None if srdf is None else read_srdf(srdf, model)
+    tree = ModelTree(model)
     hands = find_hands(tree)
     cameras = [c for c in _camera_guess(tree, [h.end_effector_link for h in hands])]
     torso = find_torso(tree, [h.end_effector_link for h in hands], cameras)
@@ -113,6 +119,7 @@ def draft_description(
         torso_joint=torso.joint,
         arms=arms,
         extra_frames=tuple(frames),
+        coupled_joints=tuple(t.coupling for t in telescopes),
     )
     desc = _with_camera(tree, desc, why, doubts, cut)
     if semantics is not None:

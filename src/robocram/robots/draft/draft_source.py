@@ -24,6 +24,7 @@ from robocram.robots.draft.source_writer import WIDTH, Call, Code, Item, call, q
 from robocram.robots.errors import DescriptionError
 from robocram.robots.example_robot_data import example_robot_data_folder
 from robocram.robots.gripper import GripperDescription
+from robocram.robots.model_additions import JointCoupling
 from robocram.tf import Pose
 
 _HEADER = '''"""{name}: a robot description drafted by `robocram robot draft` from {urdf}.
@@ -61,6 +62,12 @@ def _pose(pose: Pose) -> Code:
 
 def _frame(spec: FrameSpec) -> object:
     return call("FrameSpec", name=spec.name, parent=spec.parent, pose=_pose(spec.pose))
+
+
+def _coupling(spec: JointCoupling) -> object:
+    extra = {} if spec.multiplier == 1.0 else {"multiplier": spec.multiplier}
+    extra |= {} if spec.offset == 0.0 else {"offset": spec.offset}
+    return call("JointCoupling", actuator=spec.actuator, followers=spec.followers, **extra)
 
 
 def _arm(arm: ArmDescription, notes: _Notes) -> object:
@@ -159,6 +166,9 @@ def _body(desc: RobotDescription, notes: _Notes) -> object:
         fields.append(notes.item("neck_parking", "neck_parking", dict(desc.neck_parking)))
     if desc.extra_frames:
         fields.append(Item("extra_frames", tuple(_frame(f) for f in desc.extra_frames)))
+    if desc.coupled_joints:
+        couplings = tuple(_coupling(c) for c in desc.coupled_joints)
+        fields.append(notes.item("coupled_joints", "coupled_joints", couplings))
     if desc.allowed_contacts != DEFAULT_ALLOWED_CONTACTS:
         fields.append(notes.item("allowed_contacts", "allowed_contacts", _contacts(desc)))
     return call("RobotDescription", *fields)
@@ -203,6 +213,7 @@ def draft_source(
             ("FrameSpec", bool(desc.extra_frames)),
             ("GripperDescription", any(a.gripper for a in desc.arms.values())),
             ("GripperJoint", any(a.gripper and a.gripper.joints for a in desc.arms.values())),
+            ("JointCoupling", bool(desc.coupled_joints)),
             ("PanTiltDescription", desc.pan_tilt is not None),
             ("RobotDescription", True),
             ("example_robot_data_folder", data_folder),
