@@ -3,11 +3,13 @@
 A telescope's reach is its length extended, not at its zero (retracted): Stretch's arm
 reaches about 0.7 m, not 0.21 m. And an arm need not work straight ahead of its base:
 Stretch's reaches along its base's -y. The working direction is read from where the wrist
-gets over seeded joint values within the limits, as bearings from the shoulder counted in
-four quarters (ahead, left, behind, right): the arm works straight ahead (+x, the
-convention every description keeps) unless fewer than :data:`MIN_AHEAD_SHARE` of the
-samples are ahead; then it works towards the fullest quarter. An arm on a sideways mount
-that turns ahead too (Boxy's, TALOS's, Baxter's: a sixth or more ahead) keeps +x.
+gets over seeded joint values within the limits: the far samples (at least
+:data:`FAR_SHARE` of the farthest horizontal distance from the shoulder) are counted by
+bearing in four quarters (ahead, left, behind, right). The arm works straight ahead (+x,
+the convention every description keeps) unless fewer than :data:`MIN_AHEAD_SHARE` of them
+are ahead; then towards the fullest quarter. An arm on a sideways mount that turns ahead
+too (Boxy's, TALOS's, Baxter's: an eighth or more) keeps +x; Stretch's, ahead only when
+retracted, works along -y.
 A lift (the arm's leading vertical prismatic joints) is held at the middle of its range;
 the shoulder is where the first joint after it starts.
 """
@@ -26,7 +28,8 @@ from robocram.robots.robot_model import RobotModel
 from robocram.tf import Pose
 
 SAMPLES = 256  # seeded joint samples for the working direction
-MIN_AHEAD_SHARE = 0.1  # of the wrist samples ahead of the shoulder, else the arm works aside
+FAR_SHARE = 0.5  # of the farthest horizontal wrist distance: the samples that count
+MIN_AHEAD_SHARE = 0.05  # of the far wrist samples ahead of the shoulder, else it works aside
 QUARTERS = (0.0, math.pi / 2, -math.pi / 2, math.pi)  # [rad] ahead first: it wins ties
 VERTICAL = 0.9  # |z| of a unit axis in the root link above which it is vertical
 
@@ -70,6 +73,17 @@ def lift_joints(model: RobotModel, arm: ArmDescription) -> tuple[str, ...]:
     return tuple(lift)
 
 
+def _with_followers(model: RobotModel, arm: ArmDescription, joints: tuple[str, ...]) -> list[str]:
+    """``joints`` and the chain joints that mimic one of them (a coupled telescope's), in
+    chain order: each segment of the chain counts in its stretched length."""
+    chain = model.chain(model.joints[joints[0]].parent, arm.end_effector_link)
+    return [
+        j.name
+        for j in chain
+        if j.name in joints or (j.mimic is not None and j.mimic.joint in joints)
+    ]
+
+
 def _middle(model: RobotModel, joints: tuple[str, ...]) -> dict[str, float]:
     values = {}
     for name in joints:
@@ -104,7 +118,8 @@ def arm_reach(
     rest = arm.joints[len(lift) :]
     if not rest:
         return 0.0
-    links = [model.joints[j].child for j in rest] + [arm.end_effector_link]
+    links = [model.joints[j].child for j in _with_followers(model, arm, rest)]
+    links.append(arm.end_effector_link)
     values = {**_middle(model, lift), **(fixed or {})}
     sliding = [j for j in rest if model.joints[j].type == "prismatic"]
     ends = []
@@ -163,7 +178,9 @@ def _working_yaw(
             for s in _samples(model, rest)
         ]
     )
-    bearings = np.arctan2(offsets[:, 1], offsets[:, 0])
+    distances = np.hypot(offsets[:, 0], offsets[:, 1])
+    far = offsets[distances >= FAR_SHARE * distances.max()]
+    bearings = np.arctan2(far[:, 1], far[:, 0])
     shares = [
         float(np.mean(np.abs((bearings - q + math.pi) % (2 * math.pi) - math.pi) <= math.pi / 4))
         for q in QUARTERS

@@ -284,7 +284,7 @@ class RobotModel:
         if parts.missing_meshes:
             listed = ", ".join(sorted(set(parts.missing_meshes)))
             warnings.warn(
-                f"{source}: {len(parts.missing_meshes)} mesh file(s) missing, boxes stand in: "
+                f"{source}: {len(set(parts.missing_meshes))} mesh file(s) missing, boxes stand in: "
                 f"{listed}",
                 MissingMeshWarning,
                 stacklevel=2,
