@@ -47,5 +47,5 @@ def arm_roles(model: RobotModel, arm: ArmDescription) -> ArmRoles:
         for j in rest[last + 1 :]
         if math.dist((link_pose(model, j.parent) * j.origin).position, hand) <= WRIST_RADIUS
     )
-    fingers = arm.gripper_joints or (arm.gripper.names() if arm.gripper is not None else ())
+    fingers = arm.gripper_joints or (arm.gripper.names if arm.gripper is not None else ())
     return ArmRoles(lift, telescope, wrist, tuple(fingers))
