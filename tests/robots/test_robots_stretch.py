@@ -3,7 +3,8 @@
 Its description, ``tests/data/stretch/stretch.py``, is the draft, unedited. The tests check
 the kinematic roles the draft found, the reach over the telescope's range, the arm's
 working direction, that ``robot check`` passes, that the four telescope joints move as one
-actuator, and that the unchanged pick-up runs in the tabletop scene.
+actuator, and that the unchanged pick-up runs in the tabletop scene and the unchanged
+transport carries the mug from the kitchen counter to the table.
 """
 
 from __future__ import annotations
@@ -15,10 +16,12 @@ from pathlib import Path
 
 import pytest
 
+from robocram.designators import a
 from robocram.kinematics import solve_ik
 from robocram.motion import JointTrajectory
 from robocram.motion.joint_trajectory import TrajectoryPoint
 from robocram.plans import pick_up
+from robocram.plans.transport import transport
 from robocram.projection import simulated_robot
 from robocram.robot_check import check_robot, description_from
 from robocram.robots import (
@@ -33,7 +36,7 @@ from robocram.robots.arm_roles import arm_roles
 from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.draft.telescope import find_telescopes
 from robocram.ros.coupled_trajectory import with_coupled_followers
-from robocram.scenes import tabletop_scene
+from robocram.scenes import kitchen_scene, tabletop_scene
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
 from robocram.world import World
@@ -151,5 +154,26 @@ def test_the_unchanged_pick_up_runs_in_the_tabletop_scene(stretch: LoadedDescrip
         joints = world.joint_states(scene.robot)
         telescope = [joints[j] for j in TELESCOPE]
         assert telescope == pytest.approx([telescope[0]] * 4, abs=1e-6)
+    finally:
+        world.close()
+
+
+def test_the_unchanged_transport_carries_the_mug_to_the_kitchen_table(
+    stretch: LoadedDescription,
+) -> None:
+    scene = kitchen_scene(stretch)
+    world = scene.world
+    try:
+        with simulated_robot(world, scene.robot):
+            result = transport("mug", a.location(on=("kitchen", "table_top"), for_="mug-1"))
+        assert result.object_name == "mug-1"
+        assert world.attached_to("mug-1") is None
+        touching = {p.link_b for p in world.contact_points("mug-1", "kitchen")}
+        assert touching == {"table_top"}
+        assert world.pose("mug-1").position[:2] == pytest.approx(result.spot.position[:2], abs=0.03)
+        joints = world.joint_states(scene.robot)
+        for joint, value in stretch.arms["arm"].parking.items():
+            assert joints[joint] == pytest.approx(value, abs=0.01), joint
+        assert [joints[j] for j in TELESCOPE] == pytest.approx([joints[TELESCOPE[0]]] * 4)
     finally:
         world.close()
