@@ -37,6 +37,8 @@ def description() -> RobotDescription:
                 tool_frame="link_grasp_center",
                 # why: parent of the first arm joint; its joints down to the wrist are found at load
                 base_link="link_mast",
+                # why: joint_lift lifts this arm only, not the camera: its first joint; joint_arm_l3
+                #   drives the telescope (coupled_joints)
                 joints=(
                     "joint_lift",
                     "joint_arm_l3",

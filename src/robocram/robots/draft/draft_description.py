@@ -11,6 +11,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
+from robocram.robots.arm_envelope import lift_joints
 from robocram.robots.description import (
     ArmDescription,
     CameraDescription,
@@ -27,7 +28,7 @@ from robocram.robots.draft.link_poses import within_limits
 from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.draft.parking import neck_pose
 from robocram.robots.draft.srdf_arms import srdf_arms
-from robocram.robots.draft.telescope import find_telescopes
+from robocram.robots.draft.telescope import Telescope, find_telescopes
 from robocram.robots.draft.torso import find_torso
 from robocram.robots.draft.trunk import find_trunk
 from robocram.robots.robot_model import RobotModel
@@ -103,6 +104,9 @@ def draft_description(
     for hand, arm_name in zip(hands, names, strict=True):
         drafted = draft_arm(tree, hand, arm_name, cut)
         arms[arm_name] = drafted.arm
+        roles = _roles(model, drafted.arm, telescopes)
+        if roles:
+            why[f"arms.{arm_name}.joints"] = roles
         frames += [drafted.added] if drafted.added is not None else []
         for key, text in drafted.why.items():
             why[f"arms.{arm_name}.{key}"] = text
@@ -130,6 +134,18 @@ def draft_description(
         if infer_arm(replace(arm, joints=(), links=()), model).joints == arm.joints
     )
     return DraftDescription(desc, path, why, doubts, inferred)
+
+
+def _roles(model: RobotModel, arm: ArmDescription, telescopes: list[Telescope]) -> str:
+    """Why an arm holds a lift or a telescope (empty for an arm of turning joints)."""
+    parts = []
+    lift = lift_joints(model, arm)
+    if lift:
+        parts.append(f"{', '.join(lift)} lifts this arm only, not the camera: its first joint")
+    for telescope in telescopes:
+        if telescope.coupling.actuator in arm.joints:
+            parts.append(f"{telescope.coupling.actuator} drives the telescope (coupled_joints)")
+    return "; ".join(parts)
 
 
 def _camera_guess(tree: ModelTree, hands: list[str]) -> list[str]:

@@ -76,7 +76,7 @@ def _arm(arm: ArmDescription, notes: _Notes) -> object:
     for key in ("end_effector_link", "tool_frame", "base_link"):
         fields.append(notes.item(f"{path}.{key}", key, getattr(arm, key)))
     if arm.name not in notes.inferred:
-        fields.append(Item("joints", arm.joints))
+        fields.append(notes.item(f"{path}.joints", "joints", arm.joints))
     if arm.gripper_joints:
         fields.append(notes.item(f"{path}.gripper_joints", "gripper_joints", arm.gripper_joints))
     fields.append(notes.item(f"{path}.parking", "parking", dict(arm.parking)))
