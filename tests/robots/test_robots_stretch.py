@@ -14,13 +14,19 @@ import warnings
 from collections.abc import Iterator
 from pathlib import Path
 
+import numpy as np
 import pytest
 
+from robocram.costmaps.batch_fk import batch_frame_poses
+from robocram.costmaps.occupancy import facing_radius, footprint_radii
 from robocram.designators import a
 from robocram.kinematics import solve_ik
+from robocram.kinematics.robot_kinematics import robot_kinematics
 from robocram.motion import JointTrajectory
 from robocram.motion.joint_trajectory import TrajectoryPoint
 from robocram.plans import pick_up
+from robocram.plans.attempt_log import AttemptLog
+from robocram.plans.container_access import open_from_front
 from robocram.plans.transport import transport
 from robocram.projection import simulated_robot
 from robocram.robot_check import check_robot, description_from
@@ -35,6 +41,7 @@ from robocram.robots.arm_envelope import arm_envelope
 from robocram.robots.arm_roles import arm_roles
 from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.draft.telescope import find_telescopes
+from robocram.robots.model_pose import link_pose
 from robocram.ros.coupled_trajectory import with_coupled_followers
 from robocram.scenes import kitchen_scene, tabletop_scene
 from robocram.tf import Pose
@@ -175,5 +182,43 @@ def test_the_unchanged_transport_carries_the_mug_to_the_kitchen_table(
         for joint, value in stretch.arms["arm"].parking.items():
             assert joints[joint] == pytest.approx(value, abs=0.01), joint
         assert [joints[j] for j in TELESCOPE] == pytest.approx([joints[TELESCOPE[0]]] * 4)
+    finally:
+        world.close()
+
+
+def test_batched_fk_extends_the_coupled_telescope(stretch: LoadedDescription) -> None:
+    """The reachability map's FK sets the followers too: the telescope extends 0.52 m."""
+    kin = robot_kinematics(stretch.model)
+    values = {"joint_arm_l3": np.array([0.0, 0.13])}
+    _, positions = batch_frame_poses(kin, "link_wrist_roll", values)
+    for value, position in zip((0.0, 0.13), positions, strict=True):
+        expected = link_pose(stretch.model, "link_wrist_roll", {"joint_arm_l3": value}).position
+        assert position == pytest.approx(expected, abs=1e-6)
+    assert positions[0][1] - positions[1][1] == pytest.approx(EXTENSION, abs=1e-3)
+
+
+def test_a_sideways_base_keeps_its_side_from_obstacles(stretch: LoadedDescription) -> None:
+    with World() as world:
+        robot = world.add_robot(stretch)
+        inner, _ = footprint_radii(world, robot)
+        assert inner == pytest.approx(0.06, abs=0.01)  # the origin is at the base's front
+        assert facing_radius(world, robot) == pytest.approx(0.18, abs=0.01)  # its -y side
+        pr2 = world.add_robot("pr2", pose=Pose((3.0, 0.0, 0.0)))
+        assert facing_radius(world, pr2) == footprint_radii(world, pr2)[0]
+
+
+def test_the_arm_faces_the_drawer_it_opens(stretch: LoadedDescription) -> None:
+    scene = kitchen_scene(stretch)
+    world = scene.world
+    try:
+        with simulated_robot(world, scene.robot):
+            opened = open_from_front("drawer_unit_drawer_3", AttemptLog())
+        joint = opened.container.joint
+        assert world.joint_states("kitchen")[joint] == pytest.approx(opened.container.opened)
+        assert opened.container.opened > 0.3
+        yaw = quat.to_euler(opened.stand.pose.orientation)[2]
+        # the drawer opens towards the map's -y; the arm, along the base's -y, points at
+        # the drawer (+y) when the base heads along -x
+        assert math.remainder(yaw - math.pi, 2 * math.pi) == pytest.approx(0.0, abs=1e-3)
     finally:
         world.close()
