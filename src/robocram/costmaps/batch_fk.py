@@ -48,14 +48,32 @@ def _turned(
     return rotation + s * _times(rotation, k) + (1 - c) * _times(rotation, k @ k)
 
 
+def _with_followers(
+    kin: RobotKinematics, values: Mapping[str, NDArray[np.float64]]
+) -> dict[str, NDArray[np.float64]]:
+    """``values`` plus every mimic joint following one of them, transitively."""
+    found = dict(values)
+    changed = True
+    while changed:
+        changed = False
+        for joint in kin.robot_model.joints.values():
+            mimic = joint.mimic
+            if mimic is not None and mimic.joint in found and joint.name not in found:
+                found[joint.name] = mimic.multiplier * found[mimic.joint] + mimic.offset
+                changed = True
+    return found
+
+
 def batch_frame_poses(
     kin: RobotKinematics, frame: str, values: Mapping[str, NDArray[np.float64]]
 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """Rotations (N x 3 x 3) and positions (N x 3) of ``frame`` in the root link.
 
-    ``values`` maps joint names to N values each [rad | m]; other joints sit at the value
-    nearest 0 within their limits.
+    ``values`` maps joint names to N values each [rad | m]; ``<mimic>`` joints follow them
+    (a coupled telescope's segments); other joints sit at the value nearest 0 within their
+    limits.
     """
+    values = _with_followers(kin, values)
     model = kin.model
     fid = kin.frame_id(frame)
     count = len(next(iter(values.values())))

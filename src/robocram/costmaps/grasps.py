@@ -26,6 +26,7 @@ from robocram.grasping import (
 )
 from robocram.kinematics import forward_kinematics
 from robocram.robots import RobotDescription, load_description
+from robocram.robots.arm_envelope import working_yaw
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
 from robocram.world import World, WorldObject
@@ -85,10 +86,20 @@ def grasp_poses(
     return [inverse * c.tool for c in found]
 
 
+def arm_working_yaw(desc: RobotDescription, arm: str) -> float:
+    """The direction [rad] about the base's z that ``arm`` works in (0: straight ahead)."""
+    loaded = load_description(desc)
+    spec = loaded.arms[arm]
+    return working_yaw(loaded.model, spec) if spec.joints else 0.0
+
+
 def shoulder_offset(desc: RobotDescription, arm: str) -> float:
-    """Sideways offset [m] (base y) of the arm's first joint: the line it reaches along."""
+    """Sideways offset [m] of the arm's first joint across its working direction (the
+    base's y for an arm working ahead): the line it reaches along."""
     model = load_description(desc).model
     first = model.joints[desc.arms[arm].joints[0]] if desc.arms[arm].joints else None
     if first is None:
         return 0.0
-    return forward_kinematics(desc, {}, first.child).position[1]
+    x, y, _ = forward_kinematics(desc, {}, first.child).position
+    turn = arm_working_yaw(desc, arm)
+    return -math.sin(turn) * x + math.cos(turn) * y

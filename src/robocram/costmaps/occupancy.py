@@ -20,6 +20,7 @@ import numpy as np
 
 from robocram.costmaps.cost_layer import CostLayer, LocationQuery
 from robocram.costmaps.errors import CostmapInputError
+from robocram.costmaps.grasps import arm_working_yaw
 from robocram.costmaps.grid import BoolGrid, FloatGrid, dilate, erode
 from robocram.costmaps.out_of_the_way import out_of_the_way
 from robocram.tf import Pose, Vector3
@@ -50,9 +51,9 @@ def footprint_radius(world: World, robot: RobotObject) -> float:
     return footprint_radii(world, robot)[1]
 
 
-def footprint_radii(world: World, robot: RobotObject) -> tuple[float, float]:
-    """Radii [m] about the base origin of the largest circle inside the base links' x-y
-    extents and of the smallest around them.
+def footprint_extents(world: World, robot: RobotObject) -> tuple[float, float, float, float]:
+    """``(low_x, low_y, high_x, high_y)`` [m] of the base links about the base origin, in
+    the base's axes (zeros for a base without geometry).
 
     Measured with the base turned to the map's axes for a moment (bounds are axis-aligned:
     a base turned by 45 degrees would seem 1.4 times as wide), then put back exactly.
@@ -70,12 +71,38 @@ def footprint_radii(world: World, robot: RobotObject) -> tuple[float, float]:
             lows.append((low[0] - x0, low[1] - y0))
             highs.append((high[0] - x0, high[1] - y0))
     if not lows:
-        return 0.0, 0.0
+        return 0.0, 0.0, 0.0, 0.0
     low_x, low_y = min(p[0] for p in lows), min(p[1] for p in lows)
     high_x, high_y = max(p[0] for p in highs), max(p[1] for p in highs)
+    return low_x, low_y, high_x, high_y
+
+
+def footprint_radii(world: World, robot: RobotObject) -> tuple[float, float]:
+    """Radii [m] about the base origin of the largest circle inside the base links' x-y
+    extents and of the smallest around them."""
+    low_x, low_y, high_x, high_y = footprint_extents(world, robot)
     outer = max(math.hypot(x, y) for x in (low_x, high_x) for y in (low_y, high_y))
     inner = max(0.0, min(-low_x, high_x, -low_y, high_y))
     return inner, outer
+
+
+def facing_radius(world: World, robot: RobotObject) -> float:
+    """How close [m] the base origin comes to an obstacle the robot works at.
+
+    The inner radius, except for a robot whose arms all work sideways (Stretch's, along
+    its base's -y): it stands with that side to the counter, so the base's extent that way
+    counts, not the inner circle about an origin near the front of its base (6 cm).
+    """
+    inner = footprint_radii(world, robot)[0]
+    desc = robot.description
+    turns = {
+        arm_working_yaw(desc, k) for k, a in desc.arms.items() if k != desc.neck_arm and a.joints
+    }
+    if not turns or 0.0 in turns:
+        return inner
+    low_x, low_y, high_x, high_y = footprint_extents(world, robot)
+    ways = {0.0: high_x, math.pi / 2: high_y, -math.pi / 2: -low_y, math.pi: -low_x}
+    return max(inner, min(ways.get(turn, inner) for turn in turns))
 
 
 @contextmanager
@@ -172,7 +199,8 @@ def occupancy_cost(query: LocationQuery, value: object, alive: BoolGrid) -> Cost
 
     The radius is the base's inner one (half a square base's width): a robot facing a
     counter stands that close, and the circle round its corners would keep it 14 cm
-    further away from a PR2's reach. Whether the base, turned as the stand is, fits is the
+    further away from a PR2's reach; for an arm working sideways, the base's extent that
+    way (:func:`facing_radius`). Whether the base, turned as the stand is, fits is the
     ``robot_collision_free`` validator's exact check, which every key that asks for
     occupancy also asks for. Only the cells earlier layers left ``alive`` are decided (the
     probes reach the cells around them that the base would cover).
@@ -180,7 +208,7 @@ def occupancy_cost(query: LocationQuery, value: object, alive: BoolGrid) -> Cost
     robot = query.robot
     if robot is None:
         return CostLayer(np.ones(query.grid.shape))
-    radius = footprint_radii(query.world, robot)[0]
+    radius = facing_radius(query.world, robot)
     top = robot_height(query.world, robot)
     boxes, large = obstacle_boxes(query.world, robot, top)
     free = free_cells(query, boxes, radius, alive)

@@ -1,8 +1,9 @@
 """Reachability: cells from which an arm reaches the object, by the inverse reachability map.
 
-Each arm reaches best straight ahead of its shoulder, so a cell's yaw turns the base until
-the target lies on the line ahead of the shoulder (the arm faces the target; for an arm
-of five joints such as the HSR's this is the only line it reaches from above). The arm's
+Each arm reaches best along its working direction from its shoulder (straight ahead for
+most, the base's -y for Stretch), so a cell's yaw turns the base until the target lies on
+that line (the arm faces the target; for an arm of five joints such as the HSR's this is
+the only line it reaches from above). The arm's
 reachability map then scores the target's place in the base frame; a cell takes the
 score of its best arm, squared so that likely cells are drawn first.
 """
@@ -13,7 +14,7 @@ import numpy as np
 
 from robocram.costmaps.cost_layer import CostLayer, LocationQuery
 from robocram.costmaps.errors import CostmapInputError
-from robocram.costmaps.grasps import grasp_point, shoulder_offset
+from robocram.costmaps.grasps import arm_working_yaw, grasp_point, shoulder_offset
 from robocram.costmaps.grid import BoolGrid
 from robocram.costmaps.validators import robot_arms
 
@@ -38,15 +39,19 @@ def reachability_cost(query: LocationQuery, value: object, alive: BoolGrid) -> C
     yaws = np.zeros(distance.shape)
     for name in arms:
         side = shoulder_offset(desc, name)
+        turn_to_work = arm_working_yaw(desc, name)
         ahead = np.sqrt(np.maximum(distance**2 - side**2, 0.0))
-        points = np.column_stack([ahead, np.full_like(ahead, side), np.full_like(ahead, height)])
+        c, s = np.cos(turn_to_work), np.sin(turn_to_work)  # working frame to base frame
+        points = np.column_stack(
+            [c * ahead - s * side, s * ahead + c * side, np.full_like(ahead, height)]
+        )
         arm_score = np.where(
             distance > abs(side), query.reach_maps.get(desc, name).scores_at(points), 0.0
         )
         better = arm_score > score
         score = np.where(better, arm_score, score)
         turn = np.arcsin(np.clip(side / np.maximum(distance, 1e-9), -1.0, 1.0))
-        yaws = np.where(better, towards - turn, yaws)
+        yaws = np.where(better, towards - turn - turn_to_work, yaws)
     shape = query.grid.shape
     return CostLayer(
         (score**2).reshape(shape), yaws=yaws.reshape(shape)

@@ -34,7 +34,7 @@ BEARINGS = 24  # bins over a full turn
 HEIGHT_STEP = 0.05  # [m]
 HEIGHT_MAX = 2.4  # [m]
 MAX_TILT = math.radians(30)  # approach axis within this of straight down counts as a grasp
-FORMAT = 3  # bump when the map's meaning changes: old cache files are then ignored
+FORMAT = 4  # bump when the map's meaning changes: old cache files are then ignored
 
 
 def cache_dir() -> Path:

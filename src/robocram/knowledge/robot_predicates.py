@@ -118,6 +118,15 @@ class GripperOpening:
 
 
 @dataclass(frozen=True)
+class ArmDirection:
+    """Which way an arm works, about the base's z: 0 straight ahead, -pi/2 its right."""
+
+    robot: str
+    arm: str
+    yaw: float = unit("rad")
+
+
+@dataclass(frozen=True)
 class ParkingPose:
     """An arm's parking configuration; empty: the arm stays as it is."""
 
@@ -285,6 +294,12 @@ GRIPPER_LINK = Predicate("gripper_link", ArmLink, _D, "a link the gripper's join
 GRIPPER_MAX_OPENING = Predicate(
     "gripper_max_opening", GripperOpening, _D, "the widest gap between the fingers"
 )
+ARM_WORKING_DIRECTION = Predicate(
+    "arm_working_direction",
+    ArmDirection,
+    _D,
+    "the arm's working direction from its reach envelope (Stretch's: -pi/2)",
+)
 ROBOT_ARMS_PARKING_JOINT_STATES = Predicate(
     "robot_arms_parking_joint_states",
     ParkingPose,
@@ -340,6 +355,7 @@ DESCRIPTION_PREDICATES: tuple[Predicate[Any], ...] = (
     GRIPPER_JOINT,
     GRIPPER_LINK,
     GRIPPER_MAX_OPENING,
+    ARM_WORKING_DIRECTION,
     ROBOT_ARMS_PARKING_JOINT_STATES,
     ROBOT_ARMS_CARRYING_JOINT_STATES,
     ROBOT_NECK_LINKS,

@@ -84,6 +84,12 @@ def base_frame(robot: str) -> str:
     return row.frame
 
 
+def working_yaw(robot: str, arm: str) -> float:
+    """The direction [rad] about the base's z that ``arm`` works in (0: straight ahead)."""
+    row = rp.ARM_WORKING_DIRECTION.first(current_kb(), robot=robot, arm=arm)
+    return 0.0 if row is None else row.yaw
+
+
 def first_arm_link(robot: str, arm: str) -> str | None:
     """The first link of ``arm`` (its shoulder), or None when the KB lists none."""
     row = rp.ARM_LINKS.first(current_kb(), robot=robot, arm=arm)

@@ -7,8 +7,9 @@ on the side the robot comes from, so the robot tries the near side of a table fi
 
 Handles: the robot faces the handle from in front of its unit (the environment's
 ``container_front/3``, else the handle's x axis), far enough back for a drawer to open,
-with the chosen arm's shoulder in line with the handle. Everything comes from the KB and
-the transform tree: no link names.
+with the chosen arm's shoulder in line with the handle; an arm that works sideways
+(Stretch's, ``arm_working_direction/3``) has the base turned so it points at it.
+Everything comes from the KB and the transform tree: no link names.
 """
 
 from __future__ import annotations
@@ -17,7 +18,7 @@ import math
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 
-from robocram.plans.robot_facts import base_frame, first_arm_link
+from robocram.plans.robot_facts import base_frame, first_arm_link, working_yaw
 from robocram.tf import Pose, PoseStamped, transform_pose
 from robocram.tf import quaternion as quat
 
@@ -77,11 +78,14 @@ class HandleStand:
 
 
 def shoulder_offset(robot: str, arm: str) -> float:
-    """Sideways offset [m] of ``arm``'s first link from the base (its reaching line)."""
+    """Sideways offset [m] of ``arm``'s first link from the base (its reaching line),
+    across the arm's working direction (the base's y for an arm working ahead)."""
     shoulder = first_arm_link(robot, arm)
     if shoulder is None:
         return 0.0
-    return transform_pose(PoseStamped(shoulder), base_frame(robot)).pose.position[1]
+    x, y, _ = transform_pose(PoseStamped(shoulder), base_frame(robot)).pose.position
+    turn = working_yaw(robot, arm)
+    return -math.sin(turn) * x + math.cos(turn) * y
 
 
 def handle_stands(
@@ -107,13 +111,14 @@ def front_stands(
 ) -> Iterator[HandleStand]:
     """Stands facing ``point`` from the direction ``out_yaw`` [rad] (a unit's front), each
     arm's shoulder in line with it, ``distances`` [m] away, per arm in order."""
-    yaw = out_yaw + math.pi  # face the unit
+    facing = out_yaw + math.pi  # the arm's working direction faces the unit
     out = (math.cos(out_yaw), math.sin(out_yaw))
-    left = (-math.sin(yaw), math.cos(yaw))  # the base's +y in map
+    left = (-math.sin(facing), math.cos(facing))  # across the working direction, in map
     hx, hy = point.position[0], point.position[1]
     distances = list(distances)
     for arm in arms:
         side = shoulder_offset(robot, arm)
+        yaw = facing - working_yaw(robot, arm)
         for distance in distances:
             x = hx + out[0] * distance - left[0] * side
             y = hy + out[1] * distance - left[1] * side

@@ -12,6 +12,7 @@ When nothing fits and the robot's own link hides an object that would have, the 
 
 from __future__ import annotations
 
+import math
 from collections import Counter
 from itertools import product
 
@@ -60,13 +61,21 @@ def _in_view(camera: Camera, point: list[float]) -> bool:
     return bool(z > camera.near and abs(x / z) <= th and abs(y / z) <= tv)
 
 
+def _near(camera: Vector3, point: Vector3, near: float) -> Vector3:
+    """The point ``near`` [m] from ``camera`` towards ``point``."""
+    share = near / (math.dist(camera, point) or 1.0)
+    x, y, z = (c + share * (p - c) for c, p in zip(camera, point, strict=True))
+    return (x, y, z)
+
+
 def own_link_blocking(
     robot: ProjectedRobot, designator: ObjectDesignator
 ) -> tuple[str, str] | None:
     """``(link, object)``: the robot's link most rays from its camera to a fitting object hit.
 
-    Rays go from the camera to 27 points inside each fitting object's bounds; None when
-    no ray meets the robot before the object.
+    Rays go from the camera's near plane (as the world's visibility rays do: the camera's
+    own housing, Stretch's ``camera_link`` box, holds its optical frame) to 27 points
+    inside each fitting object's bounds; None when no ray meets the robot before the object.
     """
     world = robot.world
     cam = world.camera(robot.name)
@@ -86,7 +95,8 @@ def own_link_blocking(
             )
             for sx, sy, sz in product(BLOCK_SAMPLES, repeat=3)
         ]
-        for hit in world.ray_cast_batch([camera] * len(points), points):
+        starts = [_near(camera, point, cam.near) for point in points]
+        for hit in world.ray_cast_batch(starts, points):
             if hit is not None and hit.obj.name == robot.name and hit.link is not None:
                 hits[(hit.link, obj.name)] += 1
     return hits.most_common(1)[0][0] if hits else None

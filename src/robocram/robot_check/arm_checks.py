@@ -1,8 +1,9 @@
 """Drive each arm once: parking, the tool frame's convention, the gripper, a reach and a grip.
 
-The reach goes to a point ahead of the shoulder, tool pointing down as the pick-up plan
-holds it; a small box then appears between the fingers and the gripper must close on it,
-which fails if the tool frame is not between the fingertips.
+The reach goes to a point ahead of the shoulder along the arm's working direction
+(straight ahead, or sideways for an arm such as Stretch's), tool pointing down as the
+pick-up plan holds it; a small box then appears between the fingers and the gripper must
+close on it, which fails if the tool frame is not between the fingertips.
 """
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ from robocram.projection.gripper import close_gripper, grip, open_gripper, relea
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robot_check.report_card import CheckResult
 from robocram.robots import ArmDescription
+from robocram.robots.arm_envelope import arm_reach, working_yaw
 from robocram.robots.link_centre import link_centre
 from robocram.tf import Pose, Vector3
 from robocram.tf import quaternion as quat
@@ -124,17 +126,24 @@ def reach_targets(robot: ProjectedRobot, arm: ArmDescription) -> list[Vector3]:
     """Points [m, map] ahead of the shoulder where the tool, pointing down, may be.
 
     As the tabletop scene places its mug: the wrist a share of the arm's length ahead of
-    the shoulder and a little below it, the tool a hand's length under the wrist; a few
-    shares and heights, since arms with few joints reach only some of them.
+    the shoulder, along its working direction, and a little below it, the tool a hand's
+    length under the wrist; a few shares and heights, since arms with few joints reach
+    only some of them. An arm that slides (a telescope) counts its length extended.
     """
     world = robot.world
+    model = robot.description.model
     links = [*dict.fromkeys((*arm.links, arm.end_effector_link))]
     points = [world.link_pose(robot.name, link).position for link in links]
     length = sum(math.dist(p, q) for p, q in zip(points, points[1:], strict=False))
+    if any(model.joints[j].type == "prismatic" for j in arm.joints):
+        length = max(length, arm_reach(model, arm))
     hand = math.dist(points[-1], world.link_pose(robot.name, arm.tool_frame).position)
+    base = world.pose(robot.name).orientation
+    heading = quat.to_euler(base)[2] + working_yaw(model, arm)
     x, y, z = points[0]
+    c, s = math.cos(heading), math.sin(heading)
     return [
-        (x + share * length, y, z - below - hand)
+        (x + c * share * length, y + s * share * length, z - below - hand)
         for below in WRISTS_BELOW
         for share in REACH_SHARES
     ]

@@ -26,7 +26,7 @@ from robocram.robots.gripper import GripperDescription, GripperJoint
 from robocram.robots.interface_facts import install_description
 from robocram.robots.loading import load_description
 from robocram.robots.mimic import mimic_followers
-from robocram.robots.model_additions import BoxSpec, FrameSpec
+from robocram.robots.model_additions import BoxSpec, FrameSpec, JointCoupling
 from robocram.robots.model_pose import joint_transform, link_pose
 from robocram.robots.robot_model import RobotModel
 from robocram.robots.urdf_elements import Geometry, Inertial, Joint, Link, Mimic
@@ -47,6 +47,7 @@ __all__ = [
     "GripperJoint",
     "Inertial",
     "Joint",
+    "JointCoupling",
     "JointValueError",
     "Link",
     "LoadedDescription",

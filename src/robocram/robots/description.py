@@ -1,9 +1,9 @@
 """Typed robot descriptions: what CRAM's robot interface predicates say, as frozen values.
 
 A :class:`RobotDescription` names a URDF and the parts of the robot plans talk about: base
-and odom frames, torso, any number of named arms, cameras, a pan-tilt unit, and frames or
-collision boxes to add to the model in code. ``load_description`` checks it against the URDF
-and fills ``model``.
+and odom frames, torso, any number of named arms, cameras, a pan-tilt unit, and frames,
+collision boxes or joint couplings to add to the model in code. ``load_description`` checks
+it against the URDF and fills ``model``.
 """
 
 from __future__ import annotations
@@ -15,7 +15,7 @@ from pathlib import Path
 from robocram.robots.errors import DescriptionError
 from robocram.robots.findings import Finding
 from robocram.robots.gripper import GripperDescription
-from robocram.robots.model_additions import BoxSpec, FrameSpec
+from robocram.robots.model_additions import BoxSpec, FrameSpec, JointCoupling
 from robocram.robots.robot_model import RobotModel
 
 
@@ -138,6 +138,7 @@ class RobotDescription:
     neck_parking: Mapping[str, float] = field(default_factory=dict)
     extra_frames: tuple[FrameSpec, ...] = ()
     extra_boxes: tuple[BoxSpec, ...] = ()
+    coupled_joints: tuple[JointCoupling, ...] = ()  # joints one actuator moves (a telescope)
     package_paths: tuple[Path, ...] = ()
     flying: bool = False
     acceleration_limits: Mapping[str, float] = field(default_factory=dict)  # [rad/s^2 | m/s^2]

@@ -16,6 +16,7 @@ from typing import Any, Protocol
 from robocram.knowledge import JointStates, Source, check_facts, indicators_of
 from robocram.knowledge import robot_predicates as rp
 from robocram.logic.terms import Term
+from robocram.robots.arm_envelope import working_yaw
 from robocram.robots.description import ArmDescription, LoadedDescription, RobotDescription
 from robocram.robots.loading import load_description
 from robocram.robots.robot_model import RobotModel
@@ -56,7 +57,9 @@ def _robot_facts(desc: RobotDescription) -> Iterator[Term]:
         yield rp.CAMERA_VERTICAL_ANGLE.fact(rp.CameraAngle(r, camera.vertical_fov))
 
 
-def _arm_facts(r: str, arm: ArmDescription, is_neck: bool) -> Iterator[Term]:
+def _arm_facts(
+    r: str, arm: ArmDescription, is_neck: bool, model: RobotModel | None = None
+) -> Iterator[Term]:
     a = arm.name
     if not is_neck:
         yield rp.ARM.fact(rp.Arm(r, a))
@@ -69,6 +72,8 @@ def _arm_facts(r: str, arm: ArmDescription, is_neck: bool) -> Iterator[Term]:
     yield from (rp.GRIPPER_LINK.fact(rp.ArmLink(r, a, link)) for link in arm.gripper_links)
     if arm.gripper is not None and arm.gripper.max_opening is not None:
         yield rp.GRIPPER_MAX_OPENING.fact(rp.GripperOpening(r, a, arm.gripper.max_opening))
+    if not is_neck and model is not None and arm.joints:
+        yield rp.ARM_WORKING_DIRECTION.fact(rp.ArmDirection(r, a, working_yaw(model, arm)))
     parking, carrying = _states(arm.parking), _states(arm.carrying)
     yield rp.ROBOT_ARMS_PARKING_JOINT_STATES.fact(rp.ParkingPose(r, a, parking))
     yield rp.ROBOT_ARMS_CARRYING_JOINT_STATES.fact(rp.CarryingPose(r, a, carrying))
@@ -123,7 +128,7 @@ def description_facts(desc: LoadedDescription) -> list[Term]:
     """All facts of a loaded description, robot facts first."""
     facts = list(_robot_facts(desc))
     for arm in desc.arms.values():
-        facts.extend(_arm_facts(desc.name, arm, arm.name == desc.neck_arm))
+        facts.extend(_arm_facts(desc.name, arm, arm.name == desc.neck_arm, desc.model))
     facts.extend(_head_facts(desc))
     facts.extend(_urdf_facts(desc.name, desc.model))
     return facts

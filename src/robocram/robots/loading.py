@@ -41,7 +41,7 @@ def load_description(
             fault of the semantic checks (a tool frame pointing back, swapped heights, ...).
         GripperDescriptionError: a gripper that cannot open or close.
         JointValueError: a parking, carrying or neck value lies outside its joint limits.
-        UrdfError, PackageNotFoundError: the URDF cannot be read.
+        UrdfError: the URDF cannot be read.
     """
     if isinstance(name_or_desc, str):
         desc = description_from(name_or_desc)
@@ -76,20 +76,35 @@ def load_description(
 
 
 def _shared_model(desc: RobotDescription, paths: tuple[Path, ...]) -> RobotModel:
-    """The parsed URDF with the description's frames and boxes, shared by equal loads."""
+    """The parsed URDF with the description's frames, boxes and joint couplings, shared by
+    equal loads.
+
+    A mesh package found nowhere (Stretch's camera mesh in ``realsense2_description``)
+    gets boxes and a :class:`MissingMeshWarning`, as a missing mesh file does.
+    """
     urdf = desc.urdf
     if isinstance(urdf, str) and urdf.startswith("package://"):
         urdf = PackageResolver.default(paths).resolve(urdf)
     file = Path(urdf).expanduser()
 
     def build() -> RobotModel:
-        model = RobotModel.from_file(file, paths)
+        model = RobotModel.from_file(file, paths, missing_packages_as_boxes=True)
         for frame in desc.extra_frames:
             if frame.name not in model.links:
                 model = model.with_frame(frame)
         for box in desc.extra_boxes:
             if box.name not in model.links:
                 model = model.with_box(box)
+        for coupling in desc.coupled_joints:
+            model = model.with_coupling(coupling)
         return model
 
-    return MODELS.model(file, paths, desc.extra_frames, desc.extra_boxes, build)
+    return MODELS.model(
+        file,
+        paths,
+        desc.extra_frames,
+        desc.extra_boxes,
+        build,
+        lenient=True,
+        couplings=desc.coupled_joints,
+    )

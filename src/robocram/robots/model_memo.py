@@ -19,13 +19,21 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Generic, TypeVar
 
-from robocram.robots.model_additions import BoxSpec, FrameSpec
+from robocram.robots.model_additions import BoxSpec, FrameSpec, JointCoupling
 
 M = TypeVar("M")  # the model type (RobotModel, which keeps the process's memo)
 
 MODELS_KEPT = 8  # different robot files a process loads (a few MB each with their caches)
 
-ModelKey = tuple[str, str, tuple[Path, ...], tuple[FrameSpec, ...], tuple[BoxSpec, ...], bool]
+ModelKey = tuple[
+    str,
+    str,
+    tuple[Path, ...],
+    tuple[FrameSpec, ...],
+    tuple[BoxSpec, ...],
+    bool,
+    tuple[JointCoupling, ...],
+]
 
 
 class ModelMemo(Generic[M]):
@@ -44,6 +52,7 @@ class ModelMemo(Generic[M]):
         boxes: tuple[BoxSpec, ...],
         build: Callable[[], M],
         lenient: bool = False,
+        couplings: tuple[JointCoupling, ...] = (),
     ) -> M:
         """The model kept for ``file``'s current bytes and these additions, or ``build()``.
 
@@ -55,7 +64,15 @@ class ModelMemo(Generic[M]):
             digest = hashlib.sha256(file.read_bytes()).hexdigest()
         except OSError:
             return build()
-        key: ModelKey = (str(file.resolve()), digest, package_paths, frames, boxes, lenient)
+        key: ModelKey = (
+            str(file.resolve()),
+            digest,
+            package_paths,
+            frames,
+            boxes,
+            lenient,
+            couplings,
+        )
         with self._lock:
             found = self._models.get(key)
             if found is not None:

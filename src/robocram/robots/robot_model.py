@@ -6,6 +6,7 @@ frames and collision boxes are added in code and the URDF text is never edited.
 
 from __future__ import annotations
 
+import dataclasses
 import warnings
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
@@ -13,11 +14,11 @@ from pathlib import Path
 from typing import TypeVar, cast
 
 from robocram.robots.errors import DescriptionError, MissingMeshWarning, UrdfError, closest_names
-from robocram.robots.model_additions import BoxSpec, FrameSpec
+from robocram.robots.model_additions import BoxSpec, FrameSpec, JointCoupling
 from robocram.robots.model_memo import ModelMemo
 from robocram.robots.package_resolver import PackageResolver
 from robocram.robots.safe_xml import decode_xml, parse_xml
-from robocram.robots.urdf_elements import Collision, Geometry, Inertial, Joint, Link
+from robocram.robots.urdf_elements import Collision, Geometry, Inertial, Joint, Link, Mimic
 from robocram.robots.urdf_reader import read_urdf
 from robocram.robots.urdf_writer import write_urdf
 
@@ -164,6 +165,26 @@ class RobotModel:
         joint = Joint(f"{spec.name}_joint", "fixed", spec.parent, spec.name, spec.pose)
         return self._extended(Link(spec.name, collisions=(box,), inertial=_FRAME_INERTIA), joint)
 
+    def with_coupling(self, spec: JointCoupling) -> RobotModel:
+        """A copy whose ``spec.followers`` mimic ``spec.actuator`` (one actuator moves them).
+
+        Raises:
+            DescriptionError: a joint is unknown (with suggestions), not movable, already a
+                ``<mimic>`` follower, or the actuator follows itself.
+        """
+        actuator = self.joint(spec.actuator)
+        joints = dict(self.joints)
+        for name in spec.followers:
+            joint = self.joint(name)
+            if name == actuator.name or not joint.movable or joint.mimic is not None:
+                raise DescriptionError(
+                    f"cannot couple {name!r} to {actuator.name!r} in {self.source}: a follower "
+                    "must be another movable joint that mimics nothing yet"
+                )
+            mimic = Mimic(actuator.name, spec.multiplier, spec.offset)
+            joints[name] = dataclasses.replace(joint, mimic=mimic)
+        return RobotModel(self.name, dict(self.links), joints, self.source)
+
     def _check_new_link(self, name: str, parent: str) -> None:
         self.link(parent)
         if name in self.links:
@@ -263,7 +284,7 @@ class RobotModel:
         if parts.missing_meshes:
             listed = ", ".join(sorted(set(parts.missing_meshes)))
             warnings.warn(
-                f"{source}: {len(parts.missing_meshes)} mesh file(s) missing, boxes stand in: "
+                f"{source}: {len(set(parts.missing_meshes))} mesh file(s) missing, boxes stand in: "
                 f"{listed}",
                 MissingMeshWarning,
                 stacklevel=2,

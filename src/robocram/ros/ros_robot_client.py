@@ -13,6 +13,7 @@ from collections.abc import Callable, Mapping
 
 from robocram.motion import JointTrajectory, MotionSettings, report_executed
 from robocram.robots import ArmDescription, LoadedDescription
+from robocram.ros.coupled_trajectory import with_coupled_followers
 from robocram.ros.errors import (
     RosCancelIgnored,
     RosCommandError,
@@ -224,10 +225,13 @@ class RosRobotClient:
 
         ``control_msgs/FollowJointTrajectory`` goals carry the tolerances of the robot's
         facts; the PR2's native ``JointTrajectory`` takes the trajectory alone and
-        ``SingleJointPosition`` the last position and the duration. Whatever the type,
+        ``SingleJointPosition`` the last position and the duration. Joints coupled to an
+        actuator in it (Stretch's telescope) are sent with it. Whatever the type,
         a joint ending beyond its tolerance raises ``failure`` naming it.
         """
         interface = self.config.action(resource)
+        if interface.action_type != "pr2_controllers_msgs/SingleJointPosition":
+            trajectory = with_coupled_followers(self.desc, trajectory)
         goal = trajectory_goal(interface.action_type, trajectory, self.config.goal_tolerances)
         outcome = self.run(resource, goal, failure)
         self._check_reached(trajectory, failure)

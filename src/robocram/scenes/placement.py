@@ -3,17 +3,23 @@
 Nothing is keyed on robot names, so a new robot gets a scene too. The rules:
 
 - the arm is the right-most arm with a gripper (smallest shoulder y);
+- the robot stands turned so that the arm's working direction
+  (:mod:`robocram.robots.arm_envelope`: straight ahead for most, its base's -y for
+  Stretch) points along the map's x, where the table is; everything below is in the map;
+- an arm's lift (its leading vertical prismatic joints) counts as a torso: half raised;
 - the mug lies ahead of that arm's shoulder; if the arm pans (its first joint turns about
   the vertical), only :data:`SIDE_SHARE` of the shoulder's y out from the robot's
   mid-plane, so it is not hidden under an arm stretched forward; else in the arm's plane;
 - the table top sits so that, with the torso half raised, the wrist is
   :data:`WRIST_BELOW_SHOULDER` below the shoulder when the hand grasps the mug from above;
-- the mug lies :data:`REACH_SHARE` of the arm's stretched length ahead of the shoulder,
+- the mug lies :data:`REACH_SHARE` of the arm's reach (stretched over its joint range: a
+  telescope extended) ahead of the shoulder,
   or further if needed for the table's front edge to clear the robot's base footprint
   (its links fixed to the root) by :data:`TABLE_GAP`, the mug :data:`MUG_INSET` behind it;
 - with a pan-tilt head, the mug lies at least as far out as the camera's optical axis,
-  tilted down as far as it goes with the torso up, meets the table: looking aims that
-  axis at the target, and a camera close above a low table cannot look that steeply;
+  panned towards the table and tilted down as far as it goes with the torso up, meets
+  it: looking aims that axis at the target, and a camera close above a low table cannot
+  look that steeply;
 - the shoulder must reach the wrist's grasp position, else the robot is unfit.
 """
 
@@ -24,9 +30,11 @@ from dataclasses import dataclass
 
 from robocram.kinematics import forward_kinematics
 from robocram.robots import ArmDescription, LoadedDescription
+from robocram.robots.arm_envelope import arm_envelope, lift_joints
 from robocram.robots.model_pose import finite_limits
 from robocram.scenes.errors import UnfitRobotError
 from robocram.tf import Pose, Vector3
+from robocram.tf import quaternion as quat
 from robocram.world import World
 
 GRASP_HEIGHT = 0.05  # [m] above the mug's bottom, where a top grasp holds it
@@ -37,6 +45,7 @@ REACH_SHARE = 0.65  # of the arm's stretched length: the mug's x distance from t
 TABLE_DEPTH = 0.6  # [m] along x
 SIDE_SHARE = 0.8  # of the shoulder's y: the mug's y, a little inside the arm's line
 PAN_VERTICAL = 0.9  # |z| of a first joint's unit axis above which the arm can pan
+PAN_STEPS = 72  # pan values tried to look along the arm's working direction
 LOOK_MARGIN = 0.05  # [rad] kept from the tilt's limit when looking down at the mug
 
 
@@ -54,31 +63,50 @@ class TabletopPlacement:
         return self.mug_xy[0] - MUG_INSET + TABLE_DEPTH / 2
 
 
-def _joints_for_torso(desc: LoadedDescription) -> dict[str, float]:
-    limits = finite_limits(desc.model.joints[desc.torso_joint]) if desc.torso_joint else None
-    if desc.torso_joint is None or limits is None:
-        return {}
-    return {desc.torso_joint: sum(limits) / 2}
+def _joints_for_torso(desc: LoadedDescription, arm: ArmDescription) -> dict[str, float]:
+    """The torso and the arm's lift at the middle of their ranges."""
+    names = ((desc.torso_joint,) if desc.torso_joint else ()) + lift_joints(desc.model, arm)
+    middles = {}
+    for name in names:
+        limits = finite_limits(desc.model.joints[name])
+        if limits is not None:
+            middles[name] = sum(limits) / 2
+    return middles
+
+
+def _first(desc: LoadedDescription, arm: ArmDescription) -> str:
+    """The arm's first joint after its lift."""
+    lift = lift_joints(desc.model, arm)
+    return arm.joints[len(lift)] if len(arm.joints) > len(lift) else arm.joints[-1]
 
 
 def _shoulder(desc: LoadedDescription, arm: ArmDescription, torso: dict[str, float]) -> Vector3:
-    first = desc.model.joints[arm.joints[0]]
+    first = desc.model.joints[_first(desc, arm)]
     return forward_kinematics(desc, torso, first.child).position
 
 
 def _pans(desc: LoadedDescription, arm: ArmDescription, torso: dict[str, float]) -> bool:
     """Whether the arm's first joint turns about the vertical (it can swing sideways)."""
-    first = desc.model.joints[arm.joints[0]]
+    first = desc.model.joints[_first(desc, arm)]
     frame = forward_kinematics(desc, torso, first.child)
     axis = (Pose(orientation=frame.orientation) * Pose(first.axis)).position
-    return abs(axis[2]) > PAN_VERTICAL
+    return abs(axis[2]) > PAN_VERTICAL and first.type != "prismatic"
 
 
-def _arm_length(desc: LoadedDescription, arm: ArmDescription, torso: dict[str, float]) -> float:
-    """Shoulder-to-wrist length [m] along the chain, stretched out (joints at zero)."""
-    links = [desc.model.joints[j].child for j in arm.joints] + [arm.end_effector_link]
-    points = [forward_kinematics(desc, torso, link).position for link in links]
-    return sum(math.dist(p, q) for p, q in zip(points, points[1:], strict=False))
+def placement_arm(desc: LoadedDescription) -> ArmDescription | None:
+    """The arm the scene places the mug for: the right-most with a gripper (base y)."""
+    arms = [a for a in desc.arms.values() if a.gripper_joints and a.joints]
+    if not arms:
+        return None
+    return min(arms, key=lambda a: (_shoulder(desc, a, _joints_for_torso(desc, a))[1], a.name))
+
+
+def facing_yaw(desc: LoadedDescription) -> float:
+    """The map yaw [rad] to stand the robot at, so its arm works along the map's x."""
+    arm = placement_arm(desc)
+    if arm is None:
+        return 0.0
+    return -arm_envelope(desc.model, arm, _joints_for_torso(desc, arm)).working_yaw
 
 
 def _hand_length(desc: LoadedDescription, arm: ArmDescription) -> float:
@@ -93,20 +121,48 @@ def _look_down(pose: Pose) -> float:
     return -(Pose(orientation=pose.orientation) * Pose((0.0, 0.0, 1.0))).position[2]
 
 
-def _nearest_in_view(desc: LoadedDescription, height: float) -> float:
+def _heading(desc: LoadedDescription, joints: dict[str, float]) -> float:
+    """The map-free heading [rad] of the camera's optical axis in the base frame."""
+    view = forward_kinematics(desc, joints, desc.cameras[0].frame)
+    z = (Pose(orientation=view.orientation) * Pose((0.0, 0.0, 1.0))).position
+    return math.atan2(z[1], z[0])
+
+
+def _pan_to(desc: LoadedDescription, yaw: float) -> float:
+    """The pan value [rad] (0 for a robot facing along its arm) that looks along the
+    map's x for a robot standing at ``yaw``: the one of a few within limits nearest it."""
+    pt = desc.pan_tilt
+    limits = finite_limits(desc.model.joints[pt.pan_joint]) if pt is not None else None
+    if pt is None or limits is None or yaw == 0.0:
+        return 0.0
+    values = [limits[0] + (limits[1] - limits[0]) * i / PAN_STEPS for i in range(PAN_STEPS + 1)]
+
+    def off(value: float) -> float:
+        heading = _heading(desc, {pt.pan_joint: value}) + yaw
+        return abs(math.remainder(heading, 2 * math.pi))
+
+    return min(values, key=off)
+
+
+def _nearest_in_view(desc: LoadedDescription, height: float, yaw: float = 0.0) -> float:
     """Nearest x [m] at which the pan-tilt camera sees a point ``height`` [m] high.
 
-    The camera is tilted down as far as its limits allow, with the torso up (where the
-    pick-up plan looks from); -inf without a pan-tilt head, inf if it cannot look down.
+    The robot stands at map ``yaw`` [rad]; the camera is panned towards the map's x and
+    tilted down as far as its limits allow, with the torso up (where the pick-up plan
+    looks from); -inf without a pan-tilt head, inf if it cannot look down.
     """
     pt = desc.pan_tilt
     tilt = finite_limits(desc.model.joints[pt.tilt_joint]) if pt is not None else None
     if pt is None or tilt is None or not desc.cameras:
         return -math.inf
     up = finite_limits(desc.model.joints[desc.torso_joint]) if desc.torso_joint else None
-    joints = {pt.pan_joint: 0.0, **({desc.torso_joint: up[1]} if desc.torso_joint and up else {})}
+    joints = {
+        pt.pan_joint: _pan_to(desc, yaw),
+        **({desc.torso_joint: up[1]} if desc.torso_joint and up else {}),
+    }
     frame = desc.cameras[0].frame
-    views = [forward_kinematics(desc, {**joints, pt.tilt_joint: v}, frame) for v in tilt]
+    turn = Pose(orientation=quat.from_euler(0.0, 0.0, yaw))
+    views = [turn * forward_kinematics(desc, {**joints, pt.tilt_joint: v}, frame) for v in tilt]
     view = max(views, key=_look_down)
     angle = math.asin(min(_look_down(view), 1.0)) - LOOK_MARGIN
     if angle <= 0.0:
@@ -133,21 +189,22 @@ def _footprint_front(world: World, robot: str, below: float) -> float:
 def tabletop_placement(world: World, robot: str) -> TabletopPlacement:
     """The table and mug placement for ``robot`` (already in ``world`` at the origin)."""
     desc = world.robot(robot).description
-    arms = [a for a in desc.arms.values() if a.gripper_joints and a.joints]
-    if not arms:
+    arm = placement_arm(desc)
+    if arm is None:
         raise UnfitRobotError(
             robot,
             "it has no arm with joints and a gripper to pick the mug with; give an "
             "ArmDescription joints (or a base_link) and gripper_joints (or gripper=...)",
         )
-    torso = _joints_for_torso(desc)
-    arm = min(arms, key=lambda a: (_shoulder(desc, a, torso)[1], a.name))
-    shoulder = _shoulder(desc, arm, torso)
+    torso = _joints_for_torso(desc, arm)
+    yaw = quat.to_euler(world.pose(robot).orientation)[2]
+    turn = Pose(orientation=quat.from_euler(0.0, 0.0, yaw))
+    shoulder = (turn * Pose(_shoulder(desc, arm, torso))).position
     wrist_z = shoulder[2] - WRIST_BELOW_SHOULDER
     table_height = wrist_z - _hand_length(desc, arm) - GRASP_HEIGHT
-    reach = _arm_length(desc, arm, torso)
+    reach = arm_envelope(desc.model, arm, torso).reach
     past_base = _footprint_front(world, robot, table_height) + TABLE_GAP + MUG_INSET
-    seen = _nearest_in_view(desc, table_height)
+    seen = _nearest_in_view(desc, table_height, yaw)
     mug_x = max(past_base, shoulder[0] + REACH_SHARE * reach, seen)
     needed = math.dist(shoulder, (mug_x, shoulder[1], wrist_z))
     if table_height <= 0:

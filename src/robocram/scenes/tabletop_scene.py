@@ -11,8 +11,9 @@ from dataclasses import dataclass
 
 from robocram.robots import RobotDescription, load_description
 from robocram.scenes.parking import park_arms
-from robocram.scenes.placement import TABLE_DEPTH, tabletop_placement
+from robocram.scenes.placement import TABLE_DEPTH, facing_yaw, tabletop_placement
 from robocram.tf import Pose, PoseStamped
+from robocram.tf import quaternion as quat
 from robocram.world import World
 
 
@@ -27,7 +28,8 @@ class TabletopScene:
 
 def tabletop_scene(robot: str | RobotDescription, world: World | None = None) -> TabletopScene:
     """Floor, ``robot`` (a name, a description file or a description) at the origin, arms
-    parked, a table with a mug and a bottle in front of it.
+    parked, a table with a mug and a bottle in front of it: along the map's x, where the
+    robot's arm works (it stands turned if its arm works sideways, as Stretch's does).
 
     Raises:
         UnfitRobotError: the robot has no gripper arm, or it cannot reach past its base.
@@ -35,7 +37,8 @@ def tabletop_scene(robot: str | RobotDescription, world: World | None = None) ->
     desc = load_description(robot)
     world = world if world is not None else World()
     world.add_floor()
-    name = world.add_robot(desc, pose=Pose((0.0, 0.0, 0.0))).name
+    turned = quat.from_euler(0.0, 0.0, facing_yaw(desc))
+    name = world.add_robot(desc, pose=Pose((0.0, 0.0, 0.0), turned)).name
     park_arms(world, name)
     place = tabletop_placement(world, name)
     height, (mug_x, mug_y), table_x = place.table_height, place.mug_xy, place.table_x

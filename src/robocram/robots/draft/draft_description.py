@@ -11,6 +11,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
+from robocram.robots.arm_envelope import lift_joints
 from robocram.robots.description import (
     ArmDescription,
     CameraDescription,
@@ -27,6 +28,7 @@ from robocram.robots.draft.link_poses import within_limits
 from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.draft.parking import neck_pose
 from robocram.robots.draft.srdf_arms import srdf_arms
+from robocram.robots.draft.telescope import Telescope, find_telescopes
 from robocram.robots.draft.torso import find_torso
 from robocram.robots.draft.trunk import find_trunk
 from robocram.robots.robot_model import RobotModel
@@ -78,13 +80,18 @@ def draft_description(
     """
     path = Path(urdf).expanduser().resolve()
     model = RobotModel.from_file(path, package_paths, missing_packages_as_boxes=True)
-    semantics = None if srdf is None else read_srdf(srdf, model)
-    tree = ModelTree(model)
     why: dict[str, str] = {"base_frame": "the URDF's root link: the robot's base"}
     doubts: dict[str, str] = {}
+    telescopes = find_telescopes(ModelTree(model))
+    for telescope in telescopes:
+        model = model.with_coupling(telescope.coupling)
+    if telescopes:
+        why["coupled_joints"] = "; ".join(t.why for t in telescopes)
+    semantics = None if srdf is None else read_srdf(srdf, model)
+    tree = ModelTree(model)
     hands = find_hands(tree)
     cameras = [c for c in _camera_guess(tree, [h.end_effector_link for h in hands])]
-    torso = find_torso(tree, [h.end_effector_link for h in hands] + cameras)
+    torso = find_torso(tree, [h.end_effector_link for h in hands], cameras)
     _note(why, doubts, "torso_joint", torso.why, torso.doubt)
     names, names_why, names_doubt = arm_names(tree, hands) if hands else ([], "", None)
     arms: dict[str, ArmDescription] = {}
@@ -97,6 +104,9 @@ def draft_description(
     for hand, arm_name in zip(hands, names, strict=True):
         drafted = draft_arm(tree, hand, arm_name, cut)
         arms[arm_name] = drafted.arm
+        roles = _roles(model, drafted.arm, telescopes)
+        if roles:
+            why[f"arms.{arm_name}.joints"] = roles
         frames += [drafted.added] if drafted.added is not None else []
         for key, text in drafted.why.items():
             why[f"arms.{arm_name}.{key}"] = text
@@ -113,6 +123,7 @@ def draft_description(
         torso_joint=torso.joint,
         arms=arms,
         extra_frames=tuple(frames),
+        coupled_joints=tuple(t.coupling for t in telescopes),
     )
     desc = _with_camera(tree, desc, why, doubts, cut)
     if semantics is not None:
@@ -123,6 +134,18 @@ def draft_description(
         if infer_arm(replace(arm, joints=(), links=()), model).joints == arm.joints
     )
     return DraftDescription(desc, path, why, doubts, inferred)
+
+
+def _roles(model: RobotModel, arm: ArmDescription, telescopes: list[Telescope]) -> str:
+    """Why an arm holds a lift or a telescope (empty for an arm of turning joints)."""
+    parts = []
+    lift = lift_joints(model, arm)
+    if lift:
+        parts.append(f"{', '.join(lift)} lifts this arm only, not the camera: its first joint")
+    for telescope in telescopes:
+        if telescope.coupling.actuator in arm.joints:
+            parts.append(f"{telescope.coupling.actuator} drives the telescope (coupled_joints)")
+    return "; ".join(parts)
 
 
 def _camera_guess(tree: ModelTree, hands: list[str]) -> list[str]:

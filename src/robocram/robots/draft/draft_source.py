@@ -24,6 +24,7 @@ from robocram.robots.draft.source_writer import WIDTH, Call, Code, Item, call, q
 from robocram.robots.errors import DescriptionError
 from robocram.robots.example_robot_data import example_robot_data_folder
 from robocram.robots.gripper import GripperDescription
+from robocram.robots.model_additions import JointCoupling
 from robocram.tf import Pose
 
 _HEADER = '''"""{name}: a robot description drafted by `robocram robot draft` from {urdf}.
@@ -63,13 +64,19 @@ def _frame(spec: FrameSpec) -> object:
     return call("FrameSpec", name=spec.name, parent=spec.parent, pose=_pose(spec.pose))
 
 
+def _coupling(spec: JointCoupling) -> object:
+    extra = {} if spec.multiplier == 1.0 else {"multiplier": spec.multiplier}
+    extra |= {} if spec.offset == 0.0 else {"offset": spec.offset}
+    return call("JointCoupling", actuator=spec.actuator, followers=spec.followers, **extra)
+
+
 def _arm(arm: ArmDescription, notes: _Notes) -> object:
     path = f"arms.{arm.name}"
     fields: list[Item] = [Item("name", arm.name)]
     for key in ("end_effector_link", "tool_frame", "base_link"):
         fields.append(notes.item(f"{path}.{key}", key, getattr(arm, key)))
     if arm.name not in notes.inferred:
-        fields.append(Item("joints", arm.joints))
+        fields.append(notes.item(f"{path}.joints", "joints", arm.joints))
     if arm.gripper_joints:
         fields.append(notes.item(f"{path}.gripper_joints", "gripper_joints", arm.gripper_joints))
     fields.append(notes.item(f"{path}.parking", "parking", dict(arm.parking)))
@@ -159,6 +166,9 @@ def _body(desc: RobotDescription, notes: _Notes) -> object:
         fields.append(notes.item("neck_parking", "neck_parking", dict(desc.neck_parking)))
     if desc.extra_frames:
         fields.append(Item("extra_frames", tuple(_frame(f) for f in desc.extra_frames)))
+    if desc.coupled_joints:
+        couplings = tuple(_coupling(c) for c in desc.coupled_joints)
+        fields.append(notes.item("coupled_joints", "coupled_joints", couplings))
     if desc.allowed_contacts != DEFAULT_ALLOWED_CONTACTS:
         fields.append(notes.item("allowed_contacts", "allowed_contacts", _contacts(desc)))
     return call("RobotDescription", *fields)
@@ -203,6 +213,7 @@ def draft_source(
             ("FrameSpec", bool(desc.extra_frames)),
             ("GripperDescription", any(a.gripper for a in desc.arms.values())),
             ("GripperJoint", any(a.gripper and a.gripper.joints for a in desc.arms.values())),
+            ("JointCoupling", bool(desc.coupled_joints)),
             ("PanTiltDescription", desc.pan_tilt is not None),
             ("RobotDescription", True),
             ("example_robot_data_folder", data_folder),
@@ -211,6 +222,10 @@ def draft_source(
     ]
     module = module_file.name if module_file is not None else "THIS_FILE.py"
     text = _HEADER.format(name=desc.name, urdf=Path(desc.urdf).name, module=module)
+    first, rest = text.split("\n", 1)
+    if len(first) > WIDTH:  # a long robot or file name: ruff would refuse the line
+        first = first.replace("` from ", "`\nfrom ", 1)
+    text = f"{first}\n{rest}"
     uses_math = any("math." in repr(_fov(c.horizontal_fov)) for c in desc.cameras[:1])
     standard = ["import math"] if uses_math else []
     standard += ["from pathlib import Path"] if urdf.startswith("Path(") else []

@@ -38,11 +38,20 @@ def _leaf(tree: ModelTree, joint: Joint) -> bool:
     return not any(j.movable for j in tree.subtree_joints(joint.child))
 
 
+def _moves_nothing_else(tree: ModelTree, joint: Joint) -> bool:
+    """Whether every movable joint below ``joint`` is coupled by ``<mimic>``."""
+    below = [j for j in tree.subtree_joints(joint.child) if j.movable]
+    return all(j.mimic is not None or tree.is_mimicked(j.name) for j in below)
+
+
 def _finger_like(tree: ModelTree, joint: Joint, siblings: int) -> bool:
-    """Prismatic, coupled by a mimic, or a leaf beside other fingers (or named like one).
+    """Prismatic, coupled by a mimic, or a leaf beside other fingers (or named like one),
+    and carrying no joint of its own.
 
     A lone revolute leaf is a wrist's last joint (UR, xArm) unless its name says gripper.
     """
+    if not _moves_nothing_else(tree, joint):
+        return False
     if joint.type == "prismatic" or joint.mimic is not None or tree.is_mimicked(joint.name):
         return True
     if not _leaf(tree, joint):
