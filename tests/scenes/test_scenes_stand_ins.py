@@ -30,6 +30,11 @@ def test_an_open_box_is_a_floor_and_four_walls_inside_its_outline() -> None:
             low = at[axis] - size[axis] / 2 - (0.1, 0.0)[axis]
             assert low >= -extent / 2 - 1e-9
     assert StandIn("top", "box", (1.0, 0.5, 0.04)).boxes() == (((0.0, 0.0, 0.0), (1.0, 0.5, 0.04)),)
+    top, *legs = StandIn("t", "table", (1.2, 0.8, 0.75), (0.0, 0.0, 0.375)).boxes()
+    assert top == ((0.0, 0.0, 0.73), (1.2, 0.8, 0.04))  # its upper face at 0.75 m
+    corners = sorted((round(at[0], 6), round(at[1], 6)) for at, _ in legs)
+    assert corners == [(-0.575, -0.375), (-0.575, 0.375), (0.575, -0.375), (0.575, 0.375)]
+    assert all(at[2] - size[2] / 2 == pytest.approx(0.0) for at, size in legs)  # on the floor
     with pytest.raises(ValueError, match="positive"):
         StandIn("flat", "box", (1.0, 0.0, 0.1))
 
@@ -48,7 +53,7 @@ def test_the_kitchen_drawers_and_table_stand_in_for_their_meshes() -> None:
     # its rim 4 cm over the handle (0.11 m up its frame), its front 3 cm behind the handle
     assert island.centre == pytest.approx((0.0375, 0.0, 0.09))
     table = shapes["table_area_main"]
-    assert (table.kind, table.size, table.centre) == ("box", (1.2, 0.8, 0.75), (0.0, 0.0, 0.375))
+    assert (table.kind, table.size, table.centre) == ("table", (1.2, 0.8, 0.75), (0.0, 0.0, 0.375))
     table_doubt = [s.doubt for s in draft.stand_ins if s.stand_in.link == "table_area_main"]
     assert table_doubt[0] is not None and "guess" in table_doubt[0]
 
@@ -57,11 +62,8 @@ def test_the_apartment_counter_tops_reach_past_what_stands_on_them() -> None:
     draft = draft_environment(DATA / "apartment.urdf")
     shapes = {s.link: s for s in draft.description.stand_ins}
     assert sum(s.kind == "open_box" for s in shapes.values()) == 22
-    assert {k for k, s in shapes.items() if s.kind == "box"} == {
-        "countertop",
-        "island_countertop",
-        "table_area_main",
-    }
+    assert {k for k, s in shapes.items() if s.kind == "box"} == {"countertop", "island_countertop"}
+    assert shapes["table_area_main"].kind == "table"
     # the coffee machine stands 0.3 m off the countertop's frame: 0.3 m more each side
     assert shapes["countertop"].size == pytest.approx((0.6, 1.2, 0.04))
     top = shapes["cabinet10_drawer_top"]
@@ -73,7 +75,8 @@ def test_the_loadable_copy_gives_the_stand_ins_collision_boxes(tmp_path: Path) -
     copy = loadable_urdf(desc.urdf, desc.stand_ins, tmp_path)
     model = EnvironmentModel.from_file(copy)
     assert len(model.boxes["kitchen_island_left_upper_drawer_main"]) == 5
-    assert model.boxes["table_area_main"][0].size == (1.2, 0.8, 0.75)
+    top, *legs = model.boxes["table_area_main"]
+    assert top.size == (1.2, 0.8, 0.04) and len(legs) == 4
     world = World()
     try:
         env = world.add_urdf("kitchen", copy, type="environment")

@@ -4,9 +4,10 @@
   just behind the handle and its top a little above it; it is as deep as the joint
   travels (plus :data:`DEPTH_EXTRA`), as wide as the spacing to the next drawer beside it
   and as high as the spacing to the next one below, both capped.
-- **A table or a counter top** (a link that never moves, named like one) becomes a solid
-  box: standing on the floor when its frame is low (a table), else a thin top at its frame
-  (a worktop), as wide as the links standing on it reach. Its size is a guess, a doubt.
+- **A table or a counter top** (a link that never moves, named like one) becomes a table
+  (a top on legs) standing on the floor when its frame is low, else a thin top at its
+  frame (a worktop), as wide as the links standing on it reach. Its size is a guess, a
+  doubt.
 
 Each stand-in comes with why it was chosen; a guessed size, with a doubt too.
 """
@@ -168,7 +169,7 @@ def _top(model: EnvironmentModel, link: str) -> DraftedStandIn | None:
     z = pose.position[2]
     if z < FLOOR_STANDING:
         sx, sy, sz = TABLE
-        stand_in = StandIn(link, "box", (sx, sy, sz), (0.0, 0.0, round(sz / 2 - z, 4)))
+        stand_in = StandIn(link, "table", (sx, sy, sz), (0.0, 0.0, round(sz / 2 - z, 4)))
         why = f"named like a table, its frame {z:.2f} m up: a table standing on the floor"
         doubt = (
             f"{link}: its size is in a missing mesh; a {sx} x {sy} x {sz} m table is a guess: "
