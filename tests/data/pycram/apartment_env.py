@@ -32,7 +32,7 @@ def description() -> EnvironmentDescription:
             # why: an upward face 0.60 x 1.20 m at 0.928 m
             SurfaceDescription("countertop", height=0.928),
             # why: an upward face 1.20 x 0.80 m at 0.750 m
-            SurfaceDescription("table_area_main", height=0.75),
+            SurfaceDescription("table_area_main", height=0.72),
         ),
         containers=(
             # why: revolute wardrobe_door_right_joint moves wardrobe_door_right; handle
@@ -525,9 +525,7 @@ def description() -> EnvironmentDescription:
             # TODO doubt: countertop: its outline is in a missing mesh; 0.60 x 1.20 m is a guess
             StandIn("countertop", "box", size=(0.6, 1.2, 0.04), centre=(0.0, 0.0, 0.0)),
             # why: named like a table, its frame 0.00 m up: a table standing on the floor
-            # TODO doubt: table_area_main: its size is in a missing mesh; a 1.2 x 0.8 x 0.75 m table
-            #   is a guess: measure it, fix the StandIn's size and centre and the surface's height
-            StandIn("table_area_main", "table", size=(1.2, 0.8, 0.75), centre=(0.0, 0.0, 0.375)),
+            StandIn("table_area_main", "table", size=(1.6, 0.8, 0.72), centre=(0.0, 0.0, 0.36)),
         ),
         # TODO doubt: coffee_table_drawer_joint: no handle found on coffee_table_drawer; it is
         #   pulled by itself
@@ -551,6 +549,5 @@ def description() -> EnvironmentDescription:
         # TODO doubt: 56 links have mesh shapes only, so no surface was looked for on them
         #   (armchair, cabinet1, cabinet10, cabinet11, cabinet1_door_top_left, cabinet2, ...); add
         #   SurfaceDescription(link, height) and a StandIn for any you put things on
-        # TODO doubt: where is each type of object usually kept? e.g. usual_locations=(("bowl", "<a
-        #   drawer link>"), ("mug", "<a surface link>")),
+        usual_locations=(("bowl", "cabinet10_drawer_top"),),
     )

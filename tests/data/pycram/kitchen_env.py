@@ -28,7 +28,7 @@ def description() -> EnvironmentDescription:
             # why: an upward face 0.80 x 2.45 m at 0.861 m
             SurfaceDescription("kitchen_island_surface", height=0.861),
             # why: an upward face 1.20 x 0.80 m at 0.750 m
-            SurfaceDescription("table_area_main", height=0.75),
+            SurfaceDescription("table_area_main", height=0.72),
         ),
         containers=(
             # why: prismatic sink_area_trash_drawer_main_joint moves sink_area_trash_drawer_main;
@@ -318,9 +318,7 @@ def description() -> EnvironmentDescription:
                 centre=(0.0375, 0.0, 0.09),
             ),
             # why: named like a table, its frame 0.00 m up: a table standing on the floor
-            # TODO doubt: table_area_main: its size is in a missing mesh; a 1.2 x 0.8 x 0.75 m table
-            #   is a guess: measure it, fix the StandIn's size and centre and the surface's height
-            StandIn("table_area_main", "table", size=(1.2, 0.8, 0.75), centre=(0.0, 0.0, 0.375)),
+            StandIn("table_area_main", "table", size=(1.6, 0.8, 0.72), centre=(0.0, 0.0, 0.36)),
         ),
         # TODO doubt: sink_area_dish_washer_main_joint: moves 0.000 only; left out
         # TODO doubt: sink_area_dish_washer_door_joint: moves 0.000 only; left out
@@ -339,6 +337,5 @@ def description() -> EnvironmentDescription:
         #   (fridge_area, fridge_area_lower_drawer_handle, iai_fridge_door, iai_fridge_door_handle,
         #   iai_fridge_main, kitchen_island, ...); add SurfaceDescription(link, height) and a
         #   StandIn for any you put things on
-        # TODO doubt: where is each type of object usually kept? e.g. usual_locations=(("bowl", "<a
-        #   drawer link>"), ("mug", "<a surface link>")),
+        usual_locations=(("bowl", "kitchen_island_left_upper_drawer_main"),),
     )
