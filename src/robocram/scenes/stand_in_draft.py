@@ -113,8 +113,7 @@ def _spacings(front: DrawerFront, fronts: list[DrawerFront]) -> tuple[list[float
     for other in fronts:
         if other is front or _dot(other.out, front.out) < 0.99:
             continue
-        delta = tuple(o - m for o, m in zip(other.at, front.at, strict=True))
-        d = (delta[0], delta[1], delta[2])
+        d = (other.at[0] - front.at[0], other.at[1] - front.at[1], other.at[2] - front.at[2])
         if abs(_dot(d, front.out)) > LINED_UP:
             continue
         sideways, height = abs(_dot(d, side)), abs(_dot(d, up))
