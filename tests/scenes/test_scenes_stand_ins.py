@@ -85,3 +85,13 @@ def test_the_loadable_copy_gives_the_stand_ins_collision_boxes(tmp_path: Path) -
         assert high[0] - low[0] == pytest.approx(1.2, abs=0.01)
     finally:
         world.close()
+
+
+def test_the_draft_writes_each_stand_in_with_why_and_the_guesses_as_doubts() -> None:
+    text = draft_environment(DATA / "apartment.urdf").source()
+    assert text.count("            StandIn(") == 25
+    assert text.count("# why: cabinet") > 0 and "an open box 0.50 deep" in text
+    # the table and the two counter tops are guesses: one doubt each, above their StandIn
+    doubts = [line for line in text.splitlines() if "# TODO doubt:" in line]
+    assert sum("in a missing mesh" in line for line in doubts) == 3
+    assert 'StandIn("table_area_main", "table", size=(1.2, 0.8, 0.75)' in text
