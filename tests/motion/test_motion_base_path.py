@@ -142,3 +142,15 @@ def test_a_car_follows_reeds_shepp_curves(world: World) -> None:
     assert np.count_nonzero(np.abs(step[:, 2]) > 1e-9) > 10  # it does turn
     assert poses[-1, :2] == pytest.approx((0.4, -0.3), abs=1e-6)
     assert _exactly_free(world, path) == []
+
+
+def test_a_goal_turned_half_round_is_planned_to_without_waiting() -> None:
+    """Unwrapping a goal yaw of pi against a start yaw of -2.36 rounds to just below -pi,
+    which wrapped once to +pi: OMPL refused that goal and waited out the budget's polls."""
+    from robocram.motion.planar_motion import wrapped
+
+    start_yaw = -2.36
+    goal_yaw = start_yaw + wrapped(math.pi - start_yaw)
+    assert goal_yaw < -math.pi  # the rounding this guards against
+    assert -math.pi <= wrapped(goal_yaw) < math.pi
+    assert wrapped(goal_yaw) == pytest.approx(-math.pi)

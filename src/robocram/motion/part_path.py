@@ -19,6 +19,8 @@ from robocram.tf import quaternion as quat
 from robocram.world import World
 
 LINEAR_STEP = 0.02  # [m] of the handle's travel between IK checks
+FRAME_OFF_FRONT = math.radians(45.0)  # [rad] a handle frame's x this far off the way out
+PROBE = 1e-3  # [m | rad] joint step over which the handle's way out is measured
 PRE_GRASP = 0.10  # [m] in front of the handle before and after holding it
 BACK_OFF = (PRE_GRASP, PRE_GRASP / 2)  # [m] tried in turn when letting go of the handle
 ROLLS = (math.pi / 2, -math.pi / 2, 0.0, math.pi)  # [rad] about the approach axis
@@ -54,3 +56,32 @@ def part_path(world: World, part: str, joint: str, handle: str, goal: float) -> 
     step = LINEAR_STEP / handle_speed(world, part, joint, handle)
     count = max(1, math.ceil(abs(goal - start) / step))
     return [start + (goal - start) * (i + 1) / count for i in range(count)]
+
+
+def pull_frame(world: World, part: str, joint: str, handle: str) -> Pose:
+    """The frame to hold the handle in, in the handle's frame: the handle's own, unless
+    its x points more than :data:`FRAME_OFF_FRONT` off the way out of the front.
+
+    Then (a URDF whose handle frames point into the cabinet) x is turned to where the
+    handle goes as the joint opens, level, with z up: the hand still comes from the front.
+    """
+    start = world.joint_states(part)[joint]
+    limits = world.joint_limits(part, joint)
+    far = limits.upper if abs(limits.upper) >= abs(limits.lower) else limits.lower
+    toward = math.copysign(PROBE, far)  # the joint's opening way
+    sign = 1.0 if abs(start + toward) <= abs(far) else -1.0  # at its far limit: step back
+    here = world.link_pose(part, handle)
+    world.set_joint_states(part, {joint: start + sign * toward})
+    there = world.link_pose(part, handle).position
+    world.set_joint_states(part, {joint: start})
+    out = np.array(there[:2]) - np.array(here.position[:2])
+    norm = float(np.linalg.norm(out))
+    x_axis = quat.rotate(here.orientation, (1.0, 0.0, 0.0))
+    if norm < 1e-9:
+        return Pose()
+    out = sign * out / norm
+    if float(out @ np.array(x_axis[:2])) >= math.cos(FRAME_OFF_FRONT):
+        return Pose()
+    yaw = math.atan2(float(out[1]), float(out[0]))
+    level = quat.from_euler(0.0, 0.0, yaw)
+    return Pose(orientation=quat.multiply(quat.conjugate(here.orientation), level))

@@ -18,8 +18,13 @@ from robocram.motion.robot_footprint import FloatArray
 
 
 def wrapped(angle: float) -> float:
-    """``angle`` [rad] brought into [-pi, pi)."""
-    return (angle + math.pi) % (2.0 * math.pi) - math.pi
+    """``angle`` [rad] brought into [-pi, pi).
+
+    Rounding can bring an angle just below -pi to +pi, which OMPL's SE(2) bounds refuse (a
+    goal it refuses is waited for until the budget's polls run out): that is taken back.
+    """
+    value = (angle + math.pi) % (2.0 * math.pi) - math.pi
+    return value if value < math.pi else value - 2.0 * math.pi
 
 
 def straight_poses(start: FloatArray, end: FloatArray, reach: float) -> FloatArray:

@@ -26,7 +26,14 @@ from robocram.execution.failures import (
     NavigationLowLevelFailure,
 )
 from robocram.kinematics import PlanarBase, forward_kinematics
-from robocram.motion.part_path import BACK_OFF, PRE_GRASP, ROLLS, grasp_in_handle, part_path
+from robocram.motion.part_path import (
+    BACK_OFF,
+    PRE_GRASP,
+    ROLLS,
+    grasp_in_handle,
+    part_path,
+    pull_frame,
+)
 from robocram.projection.arm import move_tcp
 from robocram.projection.errors import ProjectionError
 from robocram.projection.gripper import close_gripper, open_gripper
@@ -87,6 +94,7 @@ def _follow(
     handle: str,
     grasp: Pose,
     path: list[float],
+    pull: Pose,
 ) -> float:
     """Move the joint along ``path`` with the tool on the handle; return the last value held."""
     world = robot.world
@@ -96,7 +104,7 @@ def _follow(
         world.set_joint_states(part, {joint: value})
         try:
             move_tcp(
-                robot, arm, world.link_pose(part, handle) * grasp, HOLD_MODE, move_base=True,
+                robot, arm, world.link_pose(part, handle) * pull * grasp, HOLD_MODE, move_base=True,
                 base_travel=STEP_TRAVEL,
             )  # fmt: skip
         except (ManipulationPoseUnreachable, ManipulationGoalNotReached, NavigationLowLevelFailure):
@@ -116,11 +124,14 @@ def moving_link(robot: ProjectedRobot, part: str, joint: str) -> str:
     return next(name for name, i in body.link_index.items() if i == index)
 
 
-def _take_handle(robot: ProjectedRobot, arm: str, part: str, handle: str, grasp: Pose) -> bool:
+def _take_handle(
+    robot: ProjectedRobot, arm: str, part: str, handle: str, grasp: Pose, pull: Pose
+) -> bool:
     """Open the gripper, come from the front, close it on the handle; False if unreachable."""
     world = robot.world
-    at_handle = world.link_pose(part, handle) * grasp
-    in_front = world.link_pose(part, handle) * Pose((PRE_GRASP, 0.0, 0.0)) * grasp
+    held = world.link_pose(part, handle) * pull
+    at_handle = held * grasp
+    in_front = held * Pose((PRE_GRASP, 0.0, 0.0)) * grasp
     open_gripper(robot, arm)
     try:
         move_tcp(robot, arm, in_front, move_base=True, base_travel=REACH_TRAVEL)
@@ -154,6 +165,7 @@ def move_part(
     start = world.joint_states(part)[joint]
     path = part_path(world, part, joint, handle, goal)
     axis = approach_axis(robot, arm)
+    pull = pull_frame(world, part, joint, handle)
     model = robot.description.model
     robot_start = {  # mimic joints follow their masters when those are set back
         j: v for j, v in world.joint_states(robot.name).items() if model.joints[j].mimic is None
@@ -166,10 +178,10 @@ def move_part(
         for roll in ROLLS:
             checkpoint()
             grasp = grasp_in_handle(axis, roll)
-            if _take_handle(robot, arm, part, handle, grasp):
-                reached = _follow(robot, arm, part, joint, handle, grasp, path)
+            if _take_handle(robot, arm, part, handle, grasp, pull):
+                reached = _follow(robot, arm, part, joint, handle, grasp, path, pull)
                 if abs(reached - goal) <= 1e-9:
-                    _let_go(robot, arm, part, handle, grasp)
+                    _let_go(robot, arm, part, handle, grasp, pull)
                     return ArticulationResult(joint, start, reached, roll, tuple(riders))
             world.set_joint_states(part, {joint: start})
             place_base(robot, base_start)
@@ -185,7 +197,9 @@ def move_part(
     )
 
 
-def _let_go(robot: ProjectedRobot, arm: str, part: str, handle: str, grasp: Pose) -> None:
+def _let_go(
+    robot: ProjectedRobot, arm: str, part: str, handle: str, grasp: Pose, pull: Pose
+) -> None:
     """Open the gripper and back the tool off the handle along its approach axis.
 
     A wide-open door can leave no room to back off the whole way: shorter moves are
@@ -194,7 +208,7 @@ def _let_go(robot: ProjectedRobot, arm: str, part: str, handle: str, grasp: Pose
     open_gripper(robot, arm)
     world = robot.world
     for distance in BACK_OFF:
-        back = world.link_pose(part, handle) * Pose((distance, 0.0, 0.0)) * grasp
+        back = world.link_pose(part, handle) * pull * Pose((distance, 0.0, 0.0)) * grasp
         try:
             move_tcp(robot, arm, back, HOLD_MODE, move_base=True, max_restarts=LET_GO_RESTARTS)
             return

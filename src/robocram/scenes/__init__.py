@@ -10,6 +10,7 @@ from robocram.scenes.environment_scene import EnvironmentScene, environment_scen
 from robocram.scenes.errors import SceneError, UnfitRobotError
 from robocram.scenes.kitchen_scene import KitchenScene, kitchen_scene, kitchen_urdf
 from robocram.scenes.placement import TabletopPlacement, tabletop_placement
+from robocram.scenes.stand_in import StandIn
 from robocram.scenes.tabletop_scene import TabletopScene, tabletop_scene
 
 __all__ = [
@@ -19,6 +20,7 @@ __all__ = [
     "EnvironmentScene",
     "KitchenScene",
     "SceneError",
+    "StandIn",
     "TabletopPlacement",
     "TabletopScene",
     "SurfaceDescription",

@@ -84,7 +84,7 @@ def check_environment(desc: EnvironmentDescription) -> EnvironmentCard:
     world = World()
     try:
         world.add_floor()
-        world.add_urdf(desc.name, loadable_urdf(desc.urdf), type="environment")
+        world.add_urdf(desc.name, loadable_urdf(desc.urdf, desc.stand_ins), type="environment")
         lines = [_check_container(world, desc.name, c) for c in desc.containers]
         lines += [_check_surface(world, desc.name, s) for s in desc.surfaces]
     finally:

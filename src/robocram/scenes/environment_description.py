@@ -15,6 +15,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Literal
 
+from robocram.scenes.stand_in import StandIn
+
 ContainerKind = Literal["drawer", "door"]
 
 
@@ -48,7 +50,10 @@ class ContainerDescription:
 
 @dataclass(frozen=True)
 class EnvironmentDescription:
-    """An environment's URDF and the semantic parts plans use, by link name."""
+    """An environment's URDF and the semantic parts plans use, by link name.
+
+    ``stand_ins`` give shapes to links whose mesh files are missing (a drawer's floor).
+    """
 
     name: str
     urdf: Path
@@ -56,6 +61,7 @@ class EnvironmentDescription:
     containers: tuple[ContainerDescription, ...] = ()
     usual_locations: tuple[tuple[str, str], ...] = ()  # (object type, surface or container)
     package_paths: tuple[Path, ...] = field(default_factory=tuple)
+    stand_ins: tuple[StandIn, ...] = ()
 
     def surface(self, link: str) -> SurfaceDescription | None:
         """The surface on ``link``, if it is one."""

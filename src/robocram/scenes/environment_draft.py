@@ -9,6 +9,9 @@
 - **Surfaces**: upward faces of collision boxes that never move, at least
   :data:`MIN_SURFACE_SIDE` wide, between :data:`SURFACE_HEIGHTS`, and not covered by
   another box.
+- **Stand-ins** for links whose mesh files are missing: a drawer's open box, a table's
+  or counter's top (:mod:`robocram.scenes.stand_in_draft`); surfaces are then looked for
+  on them too.
 - Doubts (a joint without a handle, a link whose size hides in a mesh) become
   ``# TODO doubt:`` comments in the source.
 """
@@ -27,6 +30,7 @@ from robocram.scenes.environment_description import (
 )
 from robocram.scenes.environment_model import Box, EnvironmentModel, EnvJoint
 from robocram.scenes.environment_source import environment_source
+from robocram.scenes.stand_in_draft import DraftedStandIn, draft_stand_ins, drawer_fronts
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
 
@@ -48,10 +52,13 @@ class EnvironmentDraft:
     description: EnvironmentDescription
     reasons: dict[str, str] = field(default_factory=dict)  # link -> why
     doubts: list[str] = field(default_factory=list)
+    stand_ins: tuple[DraftedStandIn, ...] = ()  # with why and doubt, as in the description
 
     def source(self, module_file: Path | None = None) -> str:
         """The draft as a ready-to-edit Python module defining ``description()``."""
-        return environment_source(self.description, self.reasons, self.doubts, module_file)
+        return environment_source(
+            self.description, self.reasons, self.doubts, self.stand_ins, module_file
+        )
 
 
 def draft_environment(urdf: str | Path, name: str | None = None) -> EnvironmentDraft:
@@ -61,19 +68,28 @@ def draft_environment(urdf: str | Path, name: str | None = None) -> EnvironmentD
     reasons: dict[str, str] = {}
     doubts: list[str] = []
     containers = list(_containers(model, reasons, doubts))
+    drawers = [(model.joints[c.link], c.handle) for c in containers if c.kind == "drawer"]
+    stand_ins = tuple(draft_stand_ins(model, drawer_fronts(model, drawers)))
+    model = model.with_stand_ins(s.stand_in for s in stand_ins)
     inside = {c.link for c in containers}  # a cupboard's shelves are inside it, no surface
-    surfaces = [s for s in _surfaces(model, reasons) if s.link not in inside]
+    tops: dict[str, str] = {}
+    surfaces = [s for s in _surfaces(model, tops) if s.link not in inside]
+    reasons.update((s.link, tops[s.link]) for s in surfaces)
     unsized = sorted(k for k, n in model.meshes.items() if n and not model.boxes.get(k))
     if unsized:
         doubts.append(
             f"{len(unsized)} links have mesh shapes only, so no surface was looked for on "
             f"them ({', '.join(unsized[:6])}{', ...' if len(unsized) > 6 else ''}); add "
-            "SurfaceDescription(link, height) for any you put things on"
+            "SurfaceDescription(link, height) and a StandIn for any you put things on"
         )
     description = EnvironmentDescription(
-        name or model.name, path, tuple(surfaces), tuple(containers)
+        name or model.name,
+        path,
+        tuple(surfaces),
+        tuple(containers),
+        stand_ins=tuple(s.stand_in for s in stand_ins),
     )
-    return EnvironmentDraft(description, reasons, doubts)
+    return EnvironmentDraft(description, reasons, doubts, stand_ins)
 
 
 def _containers(

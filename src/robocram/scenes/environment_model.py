@@ -10,14 +10,19 @@ from __future__ import annotations
 import hashlib
 import math
 import tempfile
-from collections.abc import Iterator, Mapping
-from dataclasses import dataclass
+from collections.abc import Iterable, Iterator, Mapping
+from dataclasses import dataclass, replace
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from robocram.robots.safe_xml import XmlNode, decode_xml, parse_xml
 from robocram.scenes.errors import SceneError
+from robocram.scenes.stand_in import StandIn
 from robocram.tf import Pose, Vector3
 from robocram.tf import quaternion as quat
+
+if TYPE_CHECKING:
+    import xml.etree.ElementTree as ET
 
 
 @dataclass(frozen=True)
@@ -64,6 +69,7 @@ class EnvironmentModel:
     meshes: Mapping[str, int]  # link -> number of mesh collision shapes
     joints: Mapping[str, EnvJoint]  # by child link
     root: str
+    unfound: frozenset[str] = frozenset()  # links with a mesh file that is not there
 
     @classmethod
     def from_file(cls, path: str | Path) -> EnvironmentModel:
@@ -81,7 +87,22 @@ class EnvironmentModel:
         roots = sorted(set(boxes) - set(joints))
         if not roots:
             raise SceneError(f"{file}: no root link (no links, or a cycle); give a URDF tree")
-        return cls(root.attrib.get("name", file.stem), boxes, meshes, joints, roots[0])
+        unfound = frozenset(
+            n.attrib["name"]
+            for n in root.findall("link")
+            for uri in _mesh_files(n)
+            if not _mesh_exists(uri, file.parent)
+        )
+        name = root.attrib.get("name", file.stem)
+        return cls(name, boxes, meshes, joints, roots[0], unfound)
+
+    def with_stand_ins(self, stand_ins: Iterable[StandIn]) -> EnvironmentModel:
+        """This model with each stand-in's boxes added to its link's."""
+        boxes = dict(self.boxes)
+        for stand_in in stand_ins:
+            extra = tuple(Box(Pose(c), s) for c, s in stand_in.boxes())
+            boxes[stand_in.link] = boxes.get(stand_in.link, ()) + extra
+        return replace(self, boxes=boxes)
 
     def pose(self, link: str, values: Mapping[str, float] | None = None) -> Pose:
         """``link``'s pose in the root's frame, joints at ``values`` (default 0) [m | rad]."""
@@ -151,6 +172,14 @@ def _count_meshes(link: XmlNode) -> int:
     )
 
 
+def _mesh_files(link: XmlNode) -> Iterator[str]:
+    for shape in [*link.findall("visual"), *link.findall("collision")]:
+        geometry = shape.find("geometry")
+        mesh = geometry.find("mesh") if geometry is not None else None
+        if mesh is not None:
+            yield mesh.attrib.get("filename", "")
+
+
 def _joint(node: XmlNode) -> EnvJoint:
     parent, child, axis, limit = (node.find(t) for t in ("parent", "child", "axis", "limit"))
     if parent is None or child is None:
@@ -173,18 +202,23 @@ def _joint(node: XmlNode) -> EnvJoint:
     )
 
 
-def loadable_urdf(urdf: str | Path, folder: Path | None = None) -> Path:
+def loadable_urdf(
+    urdf: str | Path, stand_ins: Iterable[StandIn] = (), folder: Path | None = None
+) -> Path:
     """``urdf`` itself, or a copy in ``folder`` without the shapes PyBullet cannot load.
 
     Mesh files that are not there (``package://`` URIs without their package, as in
     URDFs taken out of a ROS workspace) are left out of the copy: the links stay, as
-    frames that move with their joints; the draft marks them as doubts.
+    frames that move with their joints, unless ``stand_ins`` give them boxes instead
+    (as collision and visual shapes).
     """
     import xml.etree.ElementTree as ET  # the file was read safely by from_file first
 
     path = Path(urdf)
     EnvironmentModel.from_file(path)  # refuses unsafe XML before ElementTree sees it
     tree = ET.parse(path)
+    shapes = tuple(stand_ins)
+    by_link = {s.link: s for s in shapes}
     dropped = 0
     for link in tree.getroot().iter("link"):
         for shape in [*link.findall("visual"), *link.findall("collision")]:
@@ -192,14 +226,31 @@ def loadable_urdf(urdf: str | Path, folder: Path | None = None) -> Path:
             if mesh is not None and not _mesh_exists(mesh.get("filename", ""), path.parent):
                 link.remove(shape)
                 dropped += 1
+        stand_in = by_link.pop(link.get("name", ""), None)
+        if stand_in is not None:
+            _add_boxes(link, stand_in)
+            dropped += 1
+    if by_link:
+        raise SceneError(f"{path.name} has no links {sorted(by_link)} for the stand-ins")
     if not dropped:
         return path
-    key = hashlib.sha1(str(path.resolve()).encode()).hexdigest()[:12]
-    folder = folder or Path(tempfile.gettempdir()) / "robocram-environments" / key
+    key = hashlib.sha1(f"{path.resolve()}{sorted(map(repr, shapes))}".encode())
+    folder = folder or Path(tempfile.gettempdir()) / "robocram-environments" / key.hexdigest()[:12]
     folder.mkdir(parents=True, exist_ok=True)
     copy = folder / f"{path.stem}.loadable.urdf"
     tree.write(copy, encoding="unicode")
     return copy
+
+
+def _add_boxes(link: ET.Element, stand_in: StandIn) -> None:
+    import xml.etree.ElementTree as ET  # noqa: F811  (only writes elements)
+
+    for centre, size in stand_in.boxes():
+        for tag in ("visual", "collision"):
+            shape = ET.SubElement(link, tag)
+            ET.SubElement(shape, "origin", xyz=" ".join(f"{v:.6g}" for v in centre), rpy="0 0 0")
+            geometry = ET.SubElement(shape, "geometry")
+            ET.SubElement(geometry, "box", size=" ".join(f"{v:.6g}" for v in size))
 
 
 def _mesh_exists(uri: str, base: Path) -> bool:
