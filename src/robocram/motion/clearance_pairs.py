@@ -1,0 +1,170 @@
+"""The (moving part, obstacle piece) pairs a clearance check tests, and the test itself.
+
+Made once per checker: every part the judge asks about (a moving link's convex pieces,
+a held object's) against every obstacle piece the rules check and the part can come
+within reach of for some values of the planned joints. Per check, the parts' balls give
+a lower bound on each pair's distance against the pieces' map-aligned boxes, and coal
+computes distances nearest bound first, per part label only until a bound cannot beat the
+distance found (a few coal calls per check).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Collection, Sequence
+from dataclasses import dataclass
+
+import coal
+import numpy as np
+import pinocchio as pin
+from numpy.typing import NDArray
+
+from robocram.motion.allowed_contacts import AllowedContacts, Other
+from robocram.motion.configuration_checker import LinkPair
+from robocram.motion.joint_trajectory import FloatArray
+from robocram.motion.obstacle_shapes import ObstacleShapes, StackedShapes
+from robocram.motion.robot_geometry import Part
+
+
+@dataclass(frozen=True)
+class ClearancePairs:
+    """Pairs as arrays: per pair its part, label, obstacle box and coal geometry."""
+
+    parts: tuple[Part, ...]
+    part_row: NDArray[np.intp]  # per part: the row of its joint in the placements
+    part_centres: FloatArray  # (parts, 3) ball centres in their joint's frame
+    part: NDArray[np.intp]  # per pair: the part
+    label: NDArray[np.intp]  # per pair: its part's label, numbered
+    names: tuple[str, ...]  # the labels by number
+    centres: FloatArray  # (pairs, 3) the obstacle box's centre in map
+    halves: FloatArray  # (pairs, 3) its half extents
+    radii: FloatArray  # (pairs,) the part's ball radius
+    piece: NDArray[np.intp]  # per pair: the obstacle piece
+    geometries: tuple[coal.CollisionGeometry, ...]  # per piece: its geometry
+    placements: tuple[pin.SE3, ...]  # per piece: its placement in map
+
+    @classmethod
+    def of(
+        cls,
+        parts: list[Part],
+        rows: dict[int, int],
+        balls: tuple[FloatArray, FloatArray],
+        shapes: StackedShapes,
+        rules: PairRules,
+        within: float,
+    ) -> ClearancePairs:
+        """The pairs the rules check whose part's ball (``balls``: centres and radii in
+        map, where it can be at all) comes within ``within`` [m] of the piece's box;
+        ``rows`` gives each pinocchio joint's row in the placements of a check."""
+        owner, centres, halves = shapes.owner, shapes.centres, shapes.halves
+        lower = box_distances(balls[0][:, None, :], centres[None], halves[None])
+        near = lower - balls[1][:, None] < within
+        near &= rules.matrix(parts, shapes.shapes, near, owner)[:, owner]
+        if rules.allowed_pairs:  # start contacts the motion may keep
+            for m, piece in zip(*np.nonzero(near), strict=True):
+                near[m, piece] = (parts[m].label, shapes.labels[piece]) not in rules.allowed_pairs
+        part, piece = np.nonzero(near)
+        numbers = {label: k for k, label in enumerate(dict.fromkeys(p.label for p in parts))}
+        part_label = np.array([numbers[p.label] for p in parts], dtype=np.intp)
+        geometries, placements = shapes.geometries, shapes.placements
+        return cls(
+            tuple(parts),
+            np.array([rows[p.joint] for p in parts], dtype=np.intp),
+            _stack([p.centre[None, :] for p in parts]),
+            part.astype(np.intp),
+            part_label[part].astype(np.intp),
+            tuple(numbers),
+            centres[piece],
+            halves[piece],
+            np.array([p.radius for p in parts], dtype=float).reshape(-1)[part],
+            piece.astype(np.intp),
+            geometries,
+            placements,
+        )
+
+    def gaps(self, frames: FloatArray, slack: float, reach: float) -> dict[str, float]:
+        """Per label nearer than ``reach``: its least distance [m] less ``slack``.
+
+        ``frames`` (rows, 4, 4) are the joints' placements in map now.
+        """
+        if not len(self.part):
+            return {}
+        rotations, origins = frames[self.part_row, :3, :3], frames[self.part_row, :3, 3]
+        centres = np.einsum("mij,mj->mi", rotations, self.part_centres) + origins
+        lower = box_distances(centres[self.part], self.centres, self.halves)
+        lower -= self.radii + slack
+        near = np.flatnonzero(lower < reach)
+        if not near.size:
+            return {}
+        labels = self.label[near]
+        near = near[np.lexsort((lower[near], labels))]
+        labels = self.label[near]
+        ends = [*np.flatnonzero(labels[1:] != labels[:-1]).tolist(), len(near) - 1]
+        order, bounds = near.tolist(), lower[near].tolist()
+        request, result = coal.DistanceRequest(), coal.DistanceResult()
+        gaps: dict[str, float] = {}
+        start = 0
+        for end in ends:
+            best = reach
+            for at in range(start, end + 1):
+                if bounds[at] >= best:
+                    break  # the label's other pairs are farther still
+                k = order[at]
+                m, piece = int(self.part[k]), int(self.piece[k])
+                part = self.parts[m]
+                pose = pin.SE3(frames[self.part_row[m]]) * part.placement
+                result.clear()  # a result keeps the least distance of all its calls
+                found = coal.distance(
+                    part.geometry, pose, self.geometries[piece], self.placements[piece],
+                    request, result,
+                )  # fmt: skip
+                best = min(best, found - slack)
+            if best < reach:
+                gaps[self.names[int(labels[start])]] = best
+            start = end + 1
+        return gaps
+
+
+@dataclass(frozen=True)
+class PairRules:
+    """Which (part label, obstacle) pairs count, as the judge decides them."""
+
+    rules: AllowedContacts
+    held: frozenset[str]  # labels of held objects: only start contacts are allowed them
+    allowed_pairs: Collection[LinkPair]  # (label, obstacle piece label) the motion starts with
+
+    def matrix(
+        self,
+        parts: list[Part],
+        shapes: Sequence[ObstacleShapes],
+        near: NDArray[np.bool_],
+        owner: NDArray[np.intp],
+    ) -> NDArray[np.bool_]:
+        """``[part, object]``: whether the rules check them; asked once per label and
+        object, and only where some piece of the object is ``near`` the part."""
+        checked = np.zeros((len(parts), len(shapes)), dtype=bool)
+        rows, pieces = np.nonzero(near)
+        checked[rows, owner[pieces]] = True  # first: which objects each part comes near
+        asked: dict[tuple[str, int], bool] = {}
+        for m, k in zip(*np.nonzero(checked), strict=True):
+            label = parts[m].label
+            answer = asked.get((label, k))
+            if answer is None:
+                obj = shapes[k].obj
+                answer = label in self.held or not self.rules.allows(
+                    label, Other(obj.name, obj.type)
+                )
+                asked[(label, k)] = answer
+            checked[m, k] = answer
+        return checked
+
+
+def box_distances(points: FloatArray, centres: FloatArray, halves: FloatArray) -> FloatArray:
+    """The distance [m] from each point to each map-aligned box (0 inside), broadcast."""
+    outside = np.abs(points - centres) - halves
+    np.maximum(outside, 0.0, out=outside)
+    outside *= outside
+    return np.asarray(np.sqrt(outside.sum(axis=-1)), dtype=float)
+
+
+def _stack(arrays: list[FloatArray]) -> FloatArray:
+    return np.concatenate(arrays) if arrays else np.zeros((0, 3))
