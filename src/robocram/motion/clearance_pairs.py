@@ -24,23 +24,57 @@ from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.obstacle_shapes import ObstacleShapes, StackedShapes
 from robocram.motion.robot_geometry import Part
 
+# [m] a check's pairs are those that can be near while no part's ball moves this far
+FOCUS = 0.1
+
 
 @dataclass(frozen=True)
+class PairTable:
+    """Pairs as arrays: per pair its part, label and the obstacle piece's box."""
+
+    part: NDArray[np.intp]  # per pair: the part
+    label: NDArray[np.intp]  # per pair: its part's label, numbered
+    piece: NDArray[np.intp]  # per pair: the obstacle piece
+    centres: FloatArray  # (pairs, 3) the piece's box centre in map
+    halves: FloatArray  # (pairs, 3) its half extents
+    radii: FloatArray  # (pairs,) the part's ball radius
+
+    def subset(self, rows: NDArray[np.intp]) -> PairTable:
+        """The pairs at ``rows``."""
+        return PairTable(
+            self.part[rows], self.label[rows], self.piece[rows], self.centres[rows],
+            self.halves[rows], self.radii[rows],
+        )  # fmt: skip
+
+    def bounds(self, centres: FloatArray, slack: float) -> FloatArray:
+        """Per pair: a lower bound [m] on its distance less ``slack``, with the parts'
+        ball centres at ``centres``."""
+        lower = box_distances(centres[self.part], self.centres, self.halves)
+        lower -= self.radii + slack
+        return lower
+
+
+@dataclass
+class _Focus:
+    """The pairs that can be near while no part's ball has moved :data:`FOCUS` from
+    ``centres``: a check walks a segment in small steps, so most checks reuse it."""
+
+    centres: FloatArray  # (parts, 3) where the balls were when it was made
+    table: PairTable
+
+
+@dataclass
 class ClearancePairs:
-    """Pairs as arrays: per pair its part, label, obstacle box and coal geometry."""
+    """The parts, every pair they are tested in, and the focus of the last checks."""
 
     parts: tuple[Part, ...]
     part_row: NDArray[np.intp]  # per part: the row of its joint in the placements
     part_centres: FloatArray  # (parts, 3) ball centres in their joint's frame
-    part: NDArray[np.intp]  # per pair: the part
-    label: NDArray[np.intp]  # per pair: its part's label, numbered
     names: tuple[str, ...]  # the labels by number
-    centres: FloatArray  # (pairs, 3) the obstacle box's centre in map
-    halves: FloatArray  # (pairs, 3) its half extents
-    radii: FloatArray  # (pairs,) the part's ball radius
-    piece: NDArray[np.intp]  # per pair: the obstacle piece
+    table: PairTable
     geometries: tuple[coal.CollisionGeometry, ...]  # per piece: its geometry
     placements: tuple[pin.SE3, ...]  # per piece: its placement in map
+    _focus: _Focus | None = None
 
     @classmethod
     def of(
@@ -66,17 +100,17 @@ class ClearancePairs:
         numbers = {label: k for k, label in enumerate(dict.fromkeys(p.label for p in parts))}
         part_label = np.array([numbers[p.label] for p in parts], dtype=np.intp)
         geometries, placements = shapes.geometries, shapes.placements
+        radii = np.array([p.radius for p in parts], dtype=float).reshape(-1)
+        table = PairTable(
+            part.astype(np.intp), part_label[part].astype(np.intp), piece.astype(np.intp),
+            centres[piece], halves[piece], radii[part],
+        )  # fmt: skip
         return cls(
             tuple(parts),
             np.array([rows[p.joint] for p in parts], dtype=np.intp),
             _stack([p.centre[None, :] for p in parts]),
-            part.astype(np.intp),
-            part_label[part].astype(np.intp),
             tuple(numbers),
-            centres[piece],
-            halves[piece],
-            np.array([p.radius for p in parts], dtype=float).reshape(-1)[part],
-            piece.astype(np.intp),
+            table,
             geometries,
             placements,
         )
@@ -86,22 +120,23 @@ class ClearancePairs:
 
         ``frames`` (rows, 4, 4) are the joints' placements in map now.
         """
-        if not len(self.part):
+        if not len(self.table.part):
             return {}
         rotations, origins = frames[self.part_row, :3, :3], frames[self.part_row, :3, 3]
         centres = np.einsum("mij,mj->mi", rotations, self.part_centres) + origins
-        lower = box_distances(centres[self.part], self.centres, self.halves)
-        lower -= self.radii + slack
+        table = self._focused(centres, slack, reach).table
+        lower = table.bounds(centres, slack)
         near = np.flatnonzero(lower < reach)
         if not near.size:
             return {}
-        labels = self.label[near]
+        labels = table.label[near]
         near = near[np.lexsort((lower[near], labels))]
-        labels = self.label[near]
+        labels = table.label[near]
         ends = [*np.flatnonzero(labels[1:] != labels[:-1]).tolist(), len(near) - 1]
         order, bounds = near.tolist(), lower[near].tolist()
         request, result = coal.DistanceRequest(), coal.DistanceResult()
         gaps: dict[str, float] = {}
+        placed: dict[int, pin.SE3] = {}  # per part: its placement now
         start = 0
         for end in ends:
             best = reach
@@ -109,9 +144,11 @@ class ClearancePairs:
                 if bounds[at] >= best:
                     break  # the label's other pairs are farther still
                 k = order[at]
-                m, piece = int(self.part[k]), int(self.piece[k])
+                m, piece = int(table.part[k]), int(table.piece[k])
                 part = self.parts[m]
-                pose = pin.SE3(frames[self.part_row[m]]) * part.placement
+                pose = placed.get(m)
+                if pose is None:
+                    pose = placed[m] = pin.SE3(frames[self.part_row[m]]) * part.placement
                 result.clear()  # a result keeps the least distance of all its calls
                 found = coal.distance(
                     part.geometry, pose, self.geometries[piece], self.placements[piece],
@@ -122,6 +159,18 @@ class ClearancePairs:
                 gaps[self.names[int(labels[start])]] = best
             start = end + 1
         return gaps
+
+    def _focused(self, centres: FloatArray, slack: float, reach: float) -> _Focus:
+        """The focus for balls at ``centres``: the last one unless a ball has moved
+        :data:`FOCUS` since (a pair left out was farther than the reach plus that)."""
+        focus = self._focus
+        if focus is not None:
+            moved = centres - focus.centres
+            if float((moved * moved).sum(axis=1).max()) < FOCUS * FOCUS:
+                return focus
+        rows = np.flatnonzero(self.table.bounds(centres, slack) < reach + FOCUS)
+        focus = self._focus = _Focus(centres, self.table.subset(rows))
+        return focus
 
 
 @dataclass(frozen=True)

@@ -137,9 +137,7 @@ class ObstacleCache:
 
 def _state(world: World, obj: WorldObject) -> NDArray[np.float64]:
     """What places ``obj``'s shapes: its body, pose and joint values."""
-    pose = world.pose(obj)
-    joints = list(world.joint_states(obj).values()) if obj.movable_joints else []
-    return np.array([obj.body_id, *pose.position, *pose.orientation, *joints], dtype=float)
+    return np.array(world.body_state(obj), dtype=float)
 
 
 def _near(kept: NDArray[np.float64], now: NDArray[np.float64]) -> bool:
