@@ -53,6 +53,14 @@ class PairTable:
         lower -= self.radii + slack
         return lower
 
+    def box_bounds(self, centres: FloatArray, halves: FloatArray, slack: float) -> FloatArray:
+        """Per pair: the tighter of the ball's bound and that of the part's map-aligned
+        box (``halves`` per part, about the same centre)."""
+        points = centres[self.part]
+        boxes = box_distances(points, self.centres, self.halves + halves[self.part])
+        balls = box_distances(points, self.centres, self.halves) - self.radii
+        return np.maximum(boxes, balls) - slack
+
 
 @dataclass
 class _Focus:
@@ -70,6 +78,8 @@ class ClearancePairs:
     parts: tuple[Part, ...]
     part_row: NDArray[np.intp]  # per part: the row of its joint in the placements
     part_centres: FloatArray  # (parts, 3) ball centres in their joint's frame
+    part_axes: FloatArray  # (parts, 3, 3) their boxes' axes in their joint's frame
+    part_halves: FloatArray  # (parts, 3) their boxes' half extents
     names: tuple[str, ...]  # the labels by number
     table: PairTable
     geometries: tuple[coal.CollisionGeometry, ...]  # per piece: its geometry
@@ -109,6 +119,8 @@ class ClearancePairs:
             tuple(parts),
             np.array([rows[p.joint] for p in parts], dtype=np.intp),
             _stack([p.centre[None, :] for p in parts]),
+            np.array([p.axes for p in parts], dtype=float).reshape(-1, 3, 3),
+            _stack([p.halves[None, :] for p in parts]),
             tuple(numbers),
             table,
             geometries,
@@ -125,7 +137,8 @@ class ClearancePairs:
         rotations, origins = frames[self.part_row, :3, :3], frames[self.part_row, :3, 3]
         centres = np.einsum("mij,mj->mi", rotations, self.part_centres) + origins
         table = self._focused(centres, slack, reach).table
-        lower = table.bounds(centres, slack)
+        halves = np.einsum("mij,mj->mi", np.abs(rotations @ self.part_axes), self.part_halves)
+        lower = table.box_bounds(centres, halves, slack)
         near = np.flatnonzero(lower < reach)
         if not near.size:
             return {}

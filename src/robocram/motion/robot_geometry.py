@@ -8,6 +8,7 @@ model (:mod:`~robocram.motion.coal_clearance`) places the parts it needs per che
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Collection
 from dataclasses import dataclass, field
 
@@ -32,6 +33,8 @@ class Part:
     centre: FloatArray  # [m] of its bounding ball, in the joint's frame
     radius: float  # [m] of its bounding ball
     extent: float  # [m] the farthest its ball reaches from the joint's origin
+    axes: FloatArray  # (3, 3) its bounding box's axes in the joint's frame
+    halves: FloatArray  # [m] (3,) its bounding box's half extents
 
 
 def part(label: str, joint: int, placement: pin.SE3, geometry: coal.CollisionGeometry) -> Part:
@@ -39,7 +42,12 @@ def part(label: str, joint: int, placement: pin.SE3, geometry: coal.CollisionGeo
     geometry.computeLocalAABB()
     centre = np.asarray(placement.act(np.asarray(geometry.aabb_center, dtype=float)), float)
     radius = float(geometry.aabb_radius)
-    return Part(label, joint, placement, geometry, centre, radius, _norm(centre) + radius)
+    box = geometry.aabb_local
+    halves = (np.asarray(box.max_, dtype=float) - np.asarray(box.min_, dtype=float)) / 2.0
+    axes = np.asarray(placement.rotation, dtype=float)
+    return Part(
+        label, joint, placement, geometry, centre, radius, _norm(centre) + radius, axes, halves
+    )
 
 
 def _norm(vector: FloatArray) -> float:
@@ -71,7 +79,7 @@ class RobotGeometry:
         found = self._named.get(names)
         if found is None:
             found = self._named[names] = tuple(
-                Part(label, p.joint, p.placement, p.geometry, p.centre, p.radius, p.extent)
+                dataclasses.replace(p, label=label)
                 for link, label in names
                 for p in self.parts.get(link, ())
             )
