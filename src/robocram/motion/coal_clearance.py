@@ -19,6 +19,7 @@ anything, the judge decides whether the configuration collides, as on the world 
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import dataclass, field
 
 import numpy as np
 import pinocchio as pin
@@ -39,6 +40,7 @@ from robocram.world import World
 # to ~0.7 mm more; coal's distances are lowered by this so they never exceed PyBullet's
 # (tests/motion/test_motion_coal_clearance.py measures it near the kitchen counter).
 BULLET_MARGIN = 0.002
+KEPT_SETUPS = 8  # checker setups kept per world (a stand's motions use a few)
 
 
 class CoalClearance:
@@ -51,7 +53,7 @@ class CoalClearance:
         self._geometry = world.robot(robot).description.model.derived(RobotGeometry.of)
         kin = self._geometry.kinematics
         self._model = kin.model
-        self._data = self._model.createData()
+        self._data = self._geometry.data()  # shared: every check runs FK before reading
         masters = {  # mimic joints follow their masters in pinocchio's configuration
             j: v for j, v in world.joint_states(robot).items()
             if kin.robot_model.joints[j].mimic is None
@@ -59,20 +61,14 @@ class CoalClearance:
         self._slots = JointSlots(kin, judge.joints, kin.configuration(masters))
         self._base = pose_to_se3(world.pose(robot))
         self._slack = margin + DRIFT + judge.distance  # [m] taken off every coal distance
-        parts = _parts(world, judge, self._geometry)
-        carriers = {self._geometry.frame(link)[0] for link in judge.moving_links}
-        joints = sorted({p.joint for p in parts} | carriers)
-        self._joints = joints  # the pinocchio joints whose placements a check reads
-        rows = {j: k for k, j in enumerate(joints)}
-        self._rows = rows
-        self._levers: tuple[NDArray[np.intp], FloatArray] | None = None  # rows, frames
         pin.forwardKinematics(self._model, self._data, self._slots.q0)
-        balls = _reach_balls(self._geometry, judge.joints, parts, self._data, self._base)
-        rules = PairRules(judge.rules, frozenset(world.attachments(robot)), judge.allowed_pairs)
-        within = CLEARANCE_REACH + self._slack
-        self._pairs = ClearancePairs.of(parts, rows, balls, _obstacles(world, judge), rules, within)
+        setup = world.derived(_SetupCache).setup(self, margin)
+        self._joints = setup.joints  # the pinocchio joints whose placements a check reads
+        self._rows = {j: k for k, j in enumerate(setup.joints)}
+        self._pairs = setup.pairs
+        self._levers: tuple[NDArray[np.intp], FloatArray] | None = None  # rows, frames
         self._base_matrix = self._base.homogeneous
-        self._frames: FloatArray = np.zeros((len(joints), 4, 4))  # placements, last check
+        self._frames: FloatArray = np.zeros((len(self._joints), 4, 4))  # placements, last check
         self._last: tuple[bytes, dict[str, float]] | None = None  # q -> its clearances
 
     @property
@@ -136,6 +132,75 @@ class CoalClearance:
         joints = frames[data.joint_rows]
         axes = np.einsum("jik,jk->ji", joints[:, :3, :3], data.local_axes)
         return data.levers(links, frames[:, :3, 3], joints[:, :3, 3], axes)
+
+
+@dataclass(frozen=True)
+class _Setup:
+    """What a checker reads per check: the joints whose placements it needs and its
+    pairs (they hold the focus of the checks made so far)."""
+
+    joints: list[int]
+    pairs: ClearancePairs
+    obstacles: StackedShapes  # kept so that its id in the key is never reused
+
+    @classmethod
+    def of(cls, checker: CoalClearance, obstacles: StackedShapes, margin: float) -> _Setup:
+        judge, geometry = checker.judge, checker._geometry
+        world = judge.world
+        parts = _parts(world, judge, geometry)
+        carriers = {geometry.frame(link)[0] for link in judge.moving_links}
+        joints = sorted({p.joint for p in parts} | carriers)
+        rows = {j: k for k, j in enumerate(joints)}
+        balls = _reach_balls(geometry, judge.joints, parts, checker._data, checker._base)
+        held = frozenset(world.attachments(judge.robot))
+        rules = PairRules(judge.rules, held, judge.allowed_pairs)
+        within = CLEARANCE_REACH + margin + DRIFT + judge.distance
+        return cls(
+            joints, ClearancePairs.of(parts, rows, balls, obstacles, rules, within), obstacles
+        )
+
+
+@dataclass
+class _SetupCache:
+    """The setups of the last checkers of one world (kept with it, ``World.derived``): the
+    motions at one stand share theirs, and with them the pairs' focus."""
+
+    world: World
+    _kept: dict[tuple[object, ...], _Setup] = field(default_factory=dict)
+
+    def setup(self, checker: CoalClearance, margin: float) -> _Setup:
+        """``checker``'s setup: a kept one if everything it depends on is as it was."""
+        obstacles = _obstacles(self.world, checker.judge)
+        key = (id(obstacles), margin, *_setup_key(checker))
+        found = self._kept.get(key)
+        if found is None or found.obstacles is not obstacles:
+            found = self._kept[key] = _Setup.of(checker, obstacles, margin)
+            if len(self._kept) > KEPT_SETUPS:
+                del self._kept[next(iter(self._kept))]  # the oldest
+        return found
+
+
+def _setup_key(checker: CoalClearance) -> tuple[object, ...]:
+    """What a setup depends on beyond the obstacles: the judge's rules, what the robot
+    holds and where, and where the anchors of the parts' reach balls are."""
+    judge, geometry = checker.judge, checker._geometry
+    world = judge.world
+    kin = geometry.kinematics
+    held = []
+    carriers = [kin.joint(j).pin_id for j in judge.joints]
+    for obj, link in sorted(world.attachments(judge.robot).items()):
+        attachment = world.attached_to(obj)
+        pose = attachment.link_T_obj if attachment is not None else None
+        held.append((obj, link, pose))
+        carriers.append(geometry.frame(link)[0])
+    anchors = sorted({geometry.anchor(j, judge.joints)[0] for j in carriers})
+    places = tuple(
+        tuple((checker._base * checker._data.oMi[a]).translation.tolist()) for a in anchors
+    )
+    return (
+        judge.robot, judge.joints, judge.allowed_links, judge.allowed_pairs, judge.distance,
+        tuple(held), places,
+    )  # fmt: skip
 
 
 def _parts(world: World, judge: BulletScene, geometry: RobotGeometry) -> list[Part]:

@@ -9,6 +9,7 @@ model (:mod:`~robocram.motion.coal_clearance`) places the parts it needs per che
 from __future__ import annotations
 
 import dataclasses
+import threading
 from collections.abc import Collection
 from dataclasses import dataclass, field
 
@@ -64,6 +65,15 @@ class RobotGeometry:
     _chains: dict[tuple[int, frozenset[str]], tuple[int, float]] = field(default_factory=dict)
     _frames: dict[str, tuple[int, FloatArray]] = field(default_factory=dict)
     _named: dict[tuple[tuple[str, str], ...], tuple[Part, ...]] = field(default_factory=dict)
+    _local: threading.local = field(default_factory=threading.local)
+
+    def data(self) -> pin.Data:
+        """This thread's pinocchio data for the model (making one costs ~0.4 ms, more
+        than a motion's checks): valid only until the next forward kinematics on it."""
+        found: pin.Data | None = getattr(self._local, "data", None)
+        if found is None:
+            found = self._local.data = self.kinematics.model.createData()
+        return found
 
     def frame(self, link: str) -> tuple[int, FloatArray]:
         """The pinocchio joint ``link``'s frame rides on, and the frame in the joint's (4x4)."""
