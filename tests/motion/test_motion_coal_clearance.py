@@ -99,14 +99,23 @@ def test_levers_match_the_worlds_at_the_configuration_checked_last(world: World)
         np.testing.assert_allclose(coal.joint_levers(links), expected, atol=1e-6)  # Bullet: float32
 
 
-def test_obstacle_shapes_are_read_again_only_for_what_moved(world: World) -> None:
+def test_obstacle_shapes_follow_what_moved_and_are_read_only_when_joints_move(
+    world: World,
+) -> None:
     cache = obstacle_cache(world)
-    CoalClearance(BulletScene(world, "pr2", JOINTS))
-    before = cache.builds
-    CoalClearance(BulletScene(world, "pr2", JOINTS))
-    assert cache.builds == before  # nothing moved: nothing read
+    mug = world.object("mug-1")
+    before = cache.shapes(world, mug)
+    reads = cache.builds
+    assert cache.shapes(world, mug) is before  # nothing moved: nothing read
     with world.stored_state():
-        x, y, z = world.pose("mug-1").position
-        world.set_pose("mug-1", Pose((x + 0.05, y, z)))
-        CoalClearance(BulletScene(world, "pr2", JOINTS))
-        assert cache.builds == before + 1  # the mug only
+        x, y, z = world.pose(mug).position
+        world.set_pose(mug, Pose((x + 0.05, y, z), quat.from_euler(0.0, 0.0, 0.3)))
+        moved = cache.shapes(world, mug)
+        fresh = type(before).of(world, mug)
+        np.testing.assert_allclose(moved.centres, fresh.centres, atol=1e-9)
+        np.testing.assert_allclose(moved.halves, fresh.halves, atol=1e-9)
+        assert cache.builds == reads  # placed again, not read
+        drawer = world.object("kitchen").movable_joints[0]
+        world.set_joint_states("kitchen", {drawer: 0.1})
+        cache.shapes(world, world.object("kitchen"))
+        assert cache.builds == reads + 1  # a joint moved: the kitchen is read again

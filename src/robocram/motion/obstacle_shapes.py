@@ -11,6 +11,7 @@ with it (:func:`obstacle_cache`, ``World.derived``): no module holds one.
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass, field
 
 import coal
@@ -26,6 +27,7 @@ from robocram.world import World, WorldObject
 # Shapes are reused while an object's position [m], quaternion and joint values [rad | m]
 # each stay within this of the state they were read in.
 DRIFT_TOLERANCE = 1e-6
+HUGE = 1e9  # [m] the half extents of a half-space's box
 # [m] the most that moves a point of a reused object's shapes (within 10 m of its frame,
 # through joints of up to 10 m of lever): clearances are lowered by it.
 DRIFT = 1e-4
@@ -39,8 +41,20 @@ class ObstacleShapes:
     geometries: tuple[coal.CollisionGeometry, ...]
     placements: tuple[pin.SE3, ...]  # map -> geometry
     labels: tuple[str, ...]  # per piece: "object", or "object/link" of a many-link object
-    centres: FloatArray  # (pieces, 3) [m] box centres in map
-    halves: FloatArray  # (pieces, 3) [m] half extents (inf for a half-space)
+    rotations: FloatArray  # (pieces, 3, 3) the placements' rotations
+    translations: FloatArray  # (pieces, 3) [m] and translations
+    local_centres: FloatArray  # (pieces, 3) [m] each piece's box centre in its own frame
+    local_halves: FloatArray  # (pieces, 3) [m] and half extents (huge for a half-space)
+
+    @property
+    def centres(self) -> FloatArray:
+        """(pieces, 3) [m] the centres of the map-aligned boxes."""
+        return np.einsum("pij,pj->pi", self.rotations, self.local_centres) + self.translations
+
+    @property
+    def halves(self) -> FloatArray:
+        """(pieces, 3) [m] their half extents."""
+        return np.einsum("pij,pj->pi", np.abs(self.rotations), self.local_halves)
 
     @classmethod
     def of(cls, world: World, obj: WorldObject) -> ObstacleShapes:
@@ -57,12 +71,11 @@ class ObstacleShapes:
             for piece in coal_geometries(shape.kind, shape.extents, shape.mesh):
                 piece.computeLocalAABB()
                 if isinstance(piece, coal.Halfspace):
-                    centre, half = np.asarray(placement.translation), np.full(3, np.inf)
+                    centre, half = np.zeros(3), np.full(3, HUGE)
                 else:
                     box = piece.aabb_local
                     low, high = np.asarray(box.min_, float), np.asarray(box.max_, float)
-                    centre = placement.act((low + high) / 2.0)
-                    half = np.abs(placement.rotation) @ ((high - low) / 2.0)
+                    centre, half = (low + high) / 2.0, (high - low) / 2.0
                 geometries.append(piece)
                 placements.append(placement)
                 labels.append(label)
@@ -70,9 +83,22 @@ class ObstacleShapes:
                 halves.append(half)
         return cls(
             obj, tuple(geometries), tuple(placements), tuple(labels),
+            np.array([p.rotation for p in placements], dtype=float).reshape(-1, 3, 3),
+            np.array([p.translation for p in placements], dtype=float).reshape(-1, 3),
             np.array(centres, dtype=float).reshape(-1, 3),
             np.array(halves, dtype=float).reshape(-1, 3),
         )  # fmt: skip
+
+    def moved(self, delta: pin.SE3) -> ObstacleShapes:
+        """The same pieces after the whole object moved by ``delta`` (in map): cheaper
+        than reading its shapes again (a settling bowl, a placed mug)."""
+        rotation, translation = np.asarray(delta.rotation), np.asarray(delta.translation)
+        return dataclasses.replace(
+            self,
+            placements=tuple(delta * p for p in self.placements),
+            rotations=np.einsum("ij,pjk->pik", rotation, self.rotations),
+            translations=self.translations @ rotation.T + translation,
+        )
 
 
 @dataclass(frozen=True)
@@ -129,6 +155,10 @@ class ObstacleCache:
         entry = self._entries.get(obj.name)
         if entry is not None and entry[0] is obj and _near(entry[1], state):
             return entry[2]
+        if entry is not None and entry[0] is obj and _rigidly_moved(entry[1], state):
+            shapes = entry[2].moved(_base(state) * _base(entry[1]).inverse())
+            self._entries[obj.name] = (obj, state, shapes)
+            return shapes
         shapes = ObstacleShapes.of(world, obj)
         self._entries[obj.name] = (obj, state, shapes)
         self.builds += 1
@@ -146,6 +176,17 @@ def _near(kept: NDArray[np.float64], now: NDArray[np.float64]) -> bool:
         and kept[0] == now[0]
         and float(np.abs(kept - now).max()) <= DRIFT_TOLERANCE
     )
+
+
+def _rigidly_moved(kept: NDArray[np.float64], now: NDArray[np.float64]) -> bool:
+    """Whether only the base pose changed: same body, same joint values."""
+    return kept.shape == now.shape and kept[0] == now[0] and bool((kept[8:] == now[8:]).all())
+
+
+def _base(state: NDArray[np.float64]) -> pin.SE3:
+    """The body's base pose in a state (position, then quaternion x, y, z, w)."""
+    x, y, z, w = state[4:8]
+    return pin.SE3(pin.Quaternion(w, x, y, z).toRotationMatrix(), state[1:4].copy())
 
 
 def obstacle_cache(world: World) -> ObstacleCache:
