@@ -1,7 +1,9 @@
 """An arm motion from where the robot is to a joint goal or along a tool line, timed.
 
-The straight joint-space segment is checked first on the world itself (PyBullet, by
-conservative advancement on clearances: :mod:`segment_check`), which needs no snapshot and
+The straight joint-space segment is checked first on the world itself, by conservative
+advancement on clearances (:mod:`segment_check`): coal measures them on obstacles kept
+with the world and PyBullet decides every near contact
+(:class:`~robocram.motion.coal_clearance.CoalClearance`), which needs no snapshot and
 answers most motions in a few checks. Only when it is blocked is a coal snapshot
 (:class:`~robocram.motion.collision_scene.CollisionScene`) built, for OMPL's thousands of
 checks; the planned path is then checked again on the world. Contacts the robot already
