@@ -10,8 +10,9 @@ Run: ``.venv/bin/python benchmarks/motion_bench.py [transports] [shelf_runs]`` (
    (tests/projection/test_projection_arm_paths.py), ``shelf_runs`` seeds, with and without
    the coal snapshot's build.
 3. Collision checks per second: coal snapshot (``CollisionScene.is_free``), PyBullet
-   contact check (``BulletScene.colliding``) and PyBullet clearance (the straight
-   segments' conservative advancement).
+   contact check (``BulletScene.colliding``), PyBullet clearance and coal clearance
+   (``CoalClearance.clearance``, what the straight segments' conservative advancement
+   uses; random configurations jump, so each refocuses its pairs).
 4. The transport before (commit ``BEFORE``: motions jump to their goals) and after, in the
    same run: the old commit is checked out into a temporary worktree and timed there.
 """
@@ -38,6 +39,7 @@ import robocram.projection.navigation as projected_navigation
 from robocram.kinematics import solve_ik
 from robocram.motion import CollisionScene
 from robocram.motion.bullet_scene import BulletScene
+from robocram.motion.coal_clearance import CoalClearance
 from robocram.motion.joint_limits import joint_limits
 from robocram.motion.joint_path import plan_joint_path
 from robocram.motion.travel_bound import TravelBound
@@ -144,7 +146,7 @@ def ompl_fallback(runs: int) -> tuple[list[float], list[float], list[int]]:
 
 
 def checks_per_second(samples: int = 2000) -> dict[str, float]:
-    """Rates of the three checks on random right-arm configurations at the counter."""
+    """Rates of the four checks on random right-arm configurations at the counter."""
     world, robot, start, goal, joints = _shelf_setup()
     rng = np.random.default_rng(0)
     limits = joint_limits(robot.description, joints)
@@ -153,11 +155,13 @@ def checks_per_second(samples: int = 2000) -> dict[str, float]:
     qs = [low + rng.random(len(joints)) * (high - low) for _ in range(samples)]
     coal = CollisionScene.of(world, "pr2", joints)
     bullet = BulletScene(world, "pr2", joints)
+    clearance = CoalClearance(bullet)
     rates = {}
     for name, fn in (
         ("coal is_free", coal.is_free),
         ("pybullet colliding", bullet.colliding),
         ("pybullet clearance", bullet.clearance),
+        ("coal clearance", clearance.clearance),
     ):
         start_time = time.process_time()
         for q in qs:

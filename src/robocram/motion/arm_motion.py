@@ -1,7 +1,9 @@
 """An arm motion from where the robot is to a joint goal or along a tool line, timed.
 
-The straight joint-space segment is checked first on the world itself (PyBullet, by
-conservative advancement on clearances: :mod:`segment_check`), which needs no snapshot and
+The straight joint-space segment is checked first on the world itself, by conservative
+advancement on clearances (:mod:`segment_check`): coal measures them on obstacles kept
+with the world and PyBullet decides every near contact
+(:class:`~robocram.motion.coal_clearance.CoalClearance`), which needs no snapshot and
 answers most motions in a few checks. Only when it is blocked is a coal snapshot
 (:class:`~robocram.motion.collision_scene.CollisionScene`) built, for OMPL's thousands of
 checks; the planned path is then checked again on the world. Contacts the robot already
@@ -22,6 +24,7 @@ import numpy as np
 from robocram.execution.failures import ManipulationPathBlocked
 from robocram.motion.bullet_scene import BulletScene
 from robocram.motion.cartesian_path import cartesian_path
+from robocram.motion.coal_clearance import CoalClearance
 from robocram.motion.collision_scene import CollisionScene
 from robocram.motion.joint_limits import joint_limits
 from robocram.motion.joint_path import PLANNING_BUDGET, JointPath, plan_joint_path
@@ -62,13 +65,15 @@ def planned_joints(desc: LoadedDescription, goal: Mapping[str, float]) -> tuple[
 
 def _scene(
     world: World, robot: str, joints: tuple[str, ...], allowed: Collection[str], start: list[float]
-) -> BulletScene:
-    """The world checker, allowing the contacts the robot (and what it holds) already has
-    at the start: a hand on a handle, a held bowl still on its table."""
-    scene = BulletScene(world, robot, joints, allowed)
+) -> CoalClearance:
+    """The world checker (clearances from coal, contacts judged on the world), allowing
+    the contacts the robot (and what it holds) already has at the start: a hand on a
+    handle, a held bowl still on its table."""
+    scene = CoalClearance(BulletScene(world, robot, joints, allowed))
     touching = scene.colliding(start)
     if touching:
-        scene = BulletScene(world, robot, joints, allowed, allowed_pairs=touching)
+        judge = BulletScene(world, robot, joints, allowed, allowed_pairs=touching)
+        scene = CoalClearance(judge)
     return scene
 
 
@@ -124,11 +129,11 @@ def _checked_path(
         if not settings.plan:
             raise
     links = set(world.link_names(robot))
-    start_links = {link for link, _ in scene.allowed_pairs if link in links}
+    start_links = {link for link, _ in scene.judge.allowed_pairs if link in links}
     failures: list[ManipulationPathBlocked] = []
     for margin in SNAPSHOT_MARGINS:  # the snapshot's hulls and Bullet's can differ by mm
         snapshot = CollisionScene.of(  # the goal passed the finer check on the meshes
-            world, robot, joints, allowed_links=scene.allowed_links | start_links,
+            world, robot, joints, allowed_links=scene.judge.allowed_links | start_links,
             margin=margin, allow_at=[end],
         )  # fmt: skip
         try:
@@ -143,7 +148,7 @@ def _checked_path(
     raise failures[0]  # the plan without a margin says best what is in the way
 
 
-def _confirm(scene: BulletScene, path: JointPath, bound: TravelBound, what: str) -> None:
+def _confirm(scene: CoalClearance, path: JointPath, bound: TravelBound, what: str) -> None:
     """Check a planned path on the world itself: the snapshot and the world must agree."""
     counter = CheckCounter()
     points = [np.array(w) for w in path.waypoints]

@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import contextlib
 from collections.abc import Collection, Iterator, Mapping, Sequence
-from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import NDArray
@@ -21,8 +20,8 @@ from numpy.typing import NDArray
 from robocram.motion.allowed_contacts import AllowedContacts, Other
 from robocram.motion.configuration_checker import Configuration, LinkPair
 from robocram.motion.errors import MotionError
+from robocram.motion.joint_levers import LeverData, cross, links_below
 from robocram.motion.joint_trajectory import FloatArray
-from robocram.motion.travel_bound import link_radii
 from robocram.world import ObstacleBoxes, World, WorldObject
 
 CLEARANCE_REACH = 0.1  # [m] distances asked for: a free configuration clears this much
@@ -54,14 +53,13 @@ class BulletScene:
         self.allowed_pairs = frozenset(allowed_pairs)  # (robot link | held object, other)
         self.distance = distance  # [m] nearer than this counts as touching
         self.moving_links = (  # only these can touch anything new; no joints: the base
-            _links_below(world, robot, self._joints)
+            links_below(world, robot, self._joints)
             if self._joints
             else tuple(world.link_names(robot))
         )
         self._posed = False
         self._obstacles: ObstacleBoxes | None = None  # read once per posed block
-        self._levers: _LeverData | None = None  # what joint_levers needs, read once
-        self._rows: dict[tuple[str, ...], NDArray[np.int_]] = {}  # links -> their rows
+        self._levers: LeverData | None = None  # what joint_levers needs, read once
 
     @property
     def reach(self) -> float:
@@ -144,7 +142,7 @@ class BulletScene:
 
     def joints_after(self) -> NDArray[np.bool_]:
         """``[i, k]``: whether joint k's child link moves with joint i (k below i)."""
-        return self._lever_data().after
+        return self.lever_data().after
 
     def joint_levers(self, links: Sequence[str]) -> FloatArray:
         """Per link of ``links`` (a moving link, or a held object: its carrier), per joint:
@@ -155,25 +153,16 @@ class BulletScene:
         Far tighter than :class:`TravelBound`'s levers, which hold whatever the other joints
         do: a folded arm's hand is near the shoulder's axis, not an arm's length away.
         """
-        data = self._lever_data()
-        key = tuple(links)
-        rows = self._rows.get(key)
-        if rows is None:  # the same links are asked about at every check of a segment
-            rows = np.array([data.row[data.carriers.get(link, link)] for link in links], int)
-            self._rows[key] = rows
+        data = self.lever_data()
         frames = np.array(self.world.link_frames(self.robot, data.frame_links))
-        centres = frames[data.centre_rows[rows], :3]  # (links, 3)
         joints = frames[data.joint_rows]
         axes = _rotated(joints[:, 3:], data.local_axes)  # (joints, 3)
-        arms = _cross(centres[:, None, :] - joints[None, :, :3], axes[None, :, :])
-        levers = np.sqrt((arms * arms).sum(axis=2)) + data.radii[rows][:, None]
-        levers[:, data.prismatic] = 1.0
-        levers[~data.below[rows]] = 0.0
-        return levers
+        return data.levers(links, frames[:, :3], joints[:, :3], axes)
 
-    def _lever_data(self) -> _LeverData:
+    def lever_data(self) -> LeverData:
+        """What :meth:`joint_levers` needs beyond the frames, read once."""
         if self._levers is None:
-            self._levers = _LeverData.of(self.world, self.robot, self._joints, self.moving_links)
+            self._levers = LeverData.of(self.world, self.robot, self._joints, self.moving_links)
         return self._levers
 
     def _clearance_now(self, reach: float) -> float:
@@ -182,7 +171,7 @@ class BulletScene:
     def _clearances_now(self, reach: float) -> dict[str, float]:
         world = self.world
         held = [world.object(name) for name in world.attachments(self.robot)]
-        anywhere = self._anywhere()
+        anywhere = self.anywhere()
         gaps: dict[str, float] = {}
         links = [link for link in self.moving_links if link not in self.allowed_links]
         boxes = self._obstacles_now(held, anywhere)
@@ -204,7 +193,7 @@ class BulletScene:
             return False
         return (link, _named(self.world, obj, other_link)) not in self.allowed_pairs
 
-    def _anywhere(self) -> list[WorldObject]:
+    def anywhere(self) -> list[WorldObject]:
         """Objects every link may touch by the description's rules (the floor)."""
         return [
             o for o in self.world.objects()
@@ -215,7 +204,7 @@ class BulletScene:
         """The colliding pairs of the robot (and what it holds) as it is in the world now."""
         world = self.world
         held = [world.object(name) for name in world.attachments(self.robot)]
-        anywhere = self._anywhere()
+        anywhere = self.anywhere()
         hits: dict[LinkPair, None] = {}
         boxes = self._obstacles_now(held, anywhere) if self._posed else None
         for link, obj, other_link in world.link_pairs_in_contact(
@@ -239,81 +228,11 @@ class BulletScene:
         return list(hits)
 
 
-@dataclass(frozen=True)
-class _LeverData:
-    """What :meth:`BulletScene.joint_levers` reads once: rows, axes, radii, masks."""
-
-    frame_links: tuple[str, ...]  # links whose frames are read per configuration
-    row: dict[str, int]  # moving link -> its row below
-    carriers: dict[str, str]  # held object -> the link it rides on
-    centre_rows: NDArray[np.intp]  # per moving link: its row in frame_links
-    joint_rows: NDArray[np.intp]  # per joint: its child link's row in frame_links
-    local_axes: FloatArray  # (joints, 3) each joint's axis in its child link's frame
-    prismatic: NDArray[np.bool_]  # (joints,)
-    radii: FloatArray  # (links,) [m] about each link's frame, held objects included
-    below: NDArray[np.bool_]  # (links, joints) whether the joint moves the link
-    after: NDArray[np.bool_]  # (joints, joints) whether joint k's child moves with joint i
-
-    @classmethod
-    def of(
-        cls, world: World, robot: str, joints: Sequence[str], moving: Sequence[str]
-    ) -> _LeverData:
-        model = world.robot(robot).description.model
-        children = [model.joints[j].child for j in joints]
-        frame_links = tuple(dict.fromkeys([*moving, *children]))
-        at = {link: k for k, link in enumerate(frame_links)}
-        radii = link_radii(world, robot)
-        moved_by = [set(_links_below(world, robot, [j])) for j in joints]
-        below = np.array(
-            [[link in links for links in moved_by] for link in moving], dtype=bool
-        ).reshape(len(moving), len(joints))
-        return cls(
-            frame_links,
-            {link: k for k, link in enumerate(moving)},
-            dict(world.attachments(robot)),
-            np.array([at[link] for link in moving], dtype=np.intp),
-            np.array([at[c] for c in children], dtype=np.intp),
-            np.array([model.joints[j].axis for j in joints], dtype=float).reshape(-1, 3),
-            np.array([model.joints[j].type == "prismatic" for j in joints], dtype=bool),
-            np.array([radii.get(link, 0.0) for link in moving], dtype=float),
-            below,
-            np.array(
-                [[c in links and c != model.joints[j].child for c in children]
-                 for j, links in zip(joints, moved_by, strict=True)],
-                dtype=bool,
-            ).reshape(len(joints), len(joints)),
-        )  # fmt: skip
-
-
 def _rotated(quaternions: FloatArray, vectors: FloatArray) -> FloatArray:
     """Each vector turned by its quaternion ``(x, y, z, w)``, row by row."""
     q, w = quaternions[:, :3], quaternions[:, 3:4]
-    t = 2.0 * _cross(q, vectors)
-    return vectors + w * t + _cross(q, t)
-
-
-def _cross(a: FloatArray, b: FloatArray) -> FloatArray:
-    """The cross product over the last axis (3), broadcast; numpy's own is slower for
-    the small arrays a check makes."""
-    a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]
-    b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
-    return np.stack((a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0), axis=-1)
-
-
-def _links_below(world: World, robot: str, joints: Sequence[str]) -> tuple[str, ...]:
-    """The links some joint of ``joints`` moves (those below it), in the world's link order."""
-    model = world.robot(robot).description.model
-    children: dict[str, list[str]] = {}
-    for joint in model.joints.values():
-        children.setdefault(joint.parent, []).append(joint.child)
-    below: set[str] = set()
-    todo = [model.joints[j].child for j in joints]
-    while todo:
-        link = todo.pop()
-        if link not in below:
-            below.add(link)
-            todo.extend(children.get(link, ()))
-    return tuple(link for link in world.link_names(robot) if link in below)
+    t = 2.0 * cross(q, vectors)
+    return vectors + w * t + cross(q, t)
 
 
 def _named(world: World, obj: WorldObject, link: str) -> str:

@@ -19,10 +19,9 @@ import numpy as np
 import pinocchio as pin
 from numpy.typing import NDArray
 
-from robocram.motion.errors import MotionError
+from robocram.motion.joint_slots import JointSlots
 from robocram.motion.scene_geometry import SceneGeometry, build_geometry
 from robocram.motion.scene_snapshot import SceneSnapshot
-from robocram.robots import RobotModel
 from robocram.world import World
 
 _Manager = pin.BroadPhaseManager_DynamicAABBTreeCollisionManager
@@ -43,12 +42,12 @@ class CollisionScene:
         if geometry is None:
             geometry = build_geometry(snapshot)
             self._geometry = geometry
-            self._slots = _JointSlots(geometry, snapshot)
+            self._slots = JointSlots(geometry.kinematics, snapshot.joints, geometry.q0)
             self._new_data()
             self._drop_own_contacts([geometry.q0, *(self._slots.full(q) for q in allow_at)])
         else:
             self._geometry = geometry
-            self._slots = _JointSlots(geometry, snapshot)
+            self._slots = JointSlots(geometry.kinematics, snapshot.joints, geometry.q0)
             self._new_data()
 
     @classmethod
@@ -191,58 +190,3 @@ class CollisionScene:
 
     def __reduce__(self) -> tuple[type[CollisionScene], tuple[SceneSnapshot]]:
         return (CollisionScene, (self.snapshot,))
-
-
-class _JointSlots:
-    """Where each planned joint (and its mimic followers) sits in pinocchio's ``q``."""
-
-    def __init__(self, geometry: SceneGeometry, snapshot: SceneSnapshot) -> None:
-        kin = geometry.kinematics
-        model = snapshot.description.model
-        self.q0 = geometry.q0
-        self.width = len(snapshot.joints)
-        rows: list[tuple[int, int, float, float, bool]] = []  # (source, idx_q, mult, off, cont)
-        for source, name in enumerate(snapshot.joints):
-            for follower, mult, off in _followers(model, name):
-                info = kin.joint(follower)
-                rows.append((source, info.idx_q, mult, off, info.continuous))
-        plain = [r for r in rows if not r[4]]
-        cont = [r for r in rows if r[4]]
-        self.plain_src = np.array([r[0] for r in plain], dtype=int)
-        self.plain_idx = np.array([r[1] for r in plain], dtype=int)
-        self.plain_mult = np.array([r[2] for r in plain])
-        self.plain_off = np.array([r[3] for r in plain])
-        self.cont_src = np.array([r[0] for r in cont], dtype=int)
-        self.cont_idx = np.array([r[1] for r in cont], dtype=int)
-        self.cont_mult = np.array([r[2] for r in cont])
-        self.cont_off = np.array([r[3] for r in cont])
-        self.names = snapshot.joints
-
-    def full(self, q: Sequence[float] | NDArray[np.float64]) -> NDArray[np.float64]:
-        values = np.asarray(q, dtype=float)
-        if values.shape != (self.width,):
-            raise MotionError(
-                f"a configuration gives {self.width} values, for joints {list(self.names)}; "
-                f"got shape {values.shape}"
-            )
-        full = self.q0.copy()
-        full[self.plain_idx] = self.plain_mult * values[self.plain_src] + self.plain_off
-        if len(self.cont_idx):
-            angles = self.cont_mult * values[self.cont_src] + self.cont_off
-            full[self.cont_idx] = np.cos(angles)
-            full[self.cont_idx + 1] = np.sin(angles)
-        return full
-
-
-def _followers(model: RobotModel, name: str) -> list[tuple[str, float, float]]:
-    """``(joint, multiplier, offset)`` of ``name`` itself and every joint mimicking it."""
-    found = [(name, 1.0, 0.0)]
-    k = 0
-    while k < len(found):
-        master, mult, off = found[k]
-        for joint in model.joints.values():
-            if joint.mimic is not None and joint.mimic.joint == master:
-                m = joint.mimic
-                found.append((joint.name, m.multiplier * mult, m.multiplier * off + m.offset))
-        k += 1
-    return found

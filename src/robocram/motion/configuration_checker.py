@@ -1,9 +1,10 @@
 """What a planner asks of a collision model: is this configuration free, and if not, why.
 
 Planners work on configurations ``q`` of a fixed tuple of joints; everything else (the
-base, the other joints, the world) stays as it was when the checker was made. Two
+base, the other joints, the world) stays as it was when the checker was made. Three
 implementations: :class:`~robocram.motion.bullet_scene.BulletScene` (the projection
-world itself) and the coal scene (a snapshot, for speed).
+world itself), :class:`~robocram.motion.coal_clearance.CoalClearance` (clearances from
+coal, contacts from a ``BulletScene``) and the coal scene (a snapshot, for OMPL).
 """
 
 from __future__ import annotations

@@ -7,9 +7,9 @@ no global "current world". Close a world (or use it as a context manager) when d
 from __future__ import annotations
 
 import contextlib
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, Literal
+from typing import TYPE_CHECKING, Literal, TypeVar, cast
 
 import numpy as np
 from numpy.typing import NDArray
@@ -37,6 +37,7 @@ if TYPE_CHECKING:
     from robocram.logic import KnowledgeBase
 
 VisibilityMethod = Literal["ray", "render"]
+T = TypeVar("T")
 DEFAULT_VISIBILITY: VisibilityMethod = "ray"
 
 
@@ -48,6 +49,20 @@ class World(WorldCore):
         self._gui = gui
         self._kb: KnowledgeBase | None = None
         self._radii: dict[int, dict[str, float]] = {}  # body -> link -> radius [m]
+        self._derived: dict[Callable[[World], object], object] = {}
+
+    def derived(self, make: Callable[[World], T]) -> T:
+        """``make(self)``, built on first use and kept with this world, one per ``make``.
+
+        Upper layers keep what they derive from a world here (the motion layer its coal
+        obstacle shapes), so it lives exactly as long as the world and no module holds a
+        cache. Unlike a robot model a world changes: what is kept must check that it is
+        still right (a copy of the world starts with none).
+        """
+        found = self._derived.get(make)
+        if found is None:
+            found = self._derived.setdefault(make, make(self))
+        return cast(T, found)
 
     def __enter__(self) -> World:
         return self

@@ -185,6 +185,22 @@ class WorldCore:
             )
         self._follow(handle.name)
 
+    def body_state(self, obj: ObjectRef) -> tuple[float, ...]:
+        """Numbers that change whenever ``obj``'s shapes move: its body id, base pose and
+        joint positions as the backend holds them, read in two calls (a cache of derived
+        geometry compares them, cheaper than :meth:`pose` and :meth:`joint_states`)."""
+        handle = self.object(obj)
+        cid = self.physics_client()
+        position, orientation = pybullet.getBasePositionAndOrientation(
+            handle.body_id, physicsClientId=cid
+        )
+        joints: tuple[float, ...] = ()
+        if handle.movable_joints:
+            indices = [handle.joint_index[n] for n in handle.movable_joints]
+            states = pybullet.getJointStates(handle.body_id, indices, physicsClientId=cid)
+            joints = tuple(float(st[0]) for st in states or ())
+        return (float(handle.body_id), *position, *orientation, *joints)
+
     def link_pose(self, obj: ObjectRef, link: str) -> Pose:
         """Pose of ``link`` (a URDF link or a frame added in code) in the world."""
         handle = self.object(obj)

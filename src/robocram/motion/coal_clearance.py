@@ -1,0 +1,257 @@
+"""Clearances of a motion's moving links from coal, with PyBullet kept as the judge.
+
+Walking a joint segment by conservative advancement asks "how far is each moving link
+from what it may not touch?" about thirty times; PyBullet answers in ~0.5 ms (pose the
+robot, read link bounds, closest points per near pair). :class:`CoalClearance` answers
+the same question from coal: pinocchio places the moving links (and what they hold), a
+bound leaves out far pairs, and coal's distances decide the rest
+(:mod:`clearance_pairs`). The world's other objects come from a cache kept with the world
+(:mod:`obstacle_shapes`), rebuilt only for objects that moved, so a motion pays no
+snapshot.
+
+The rules are the world checker's (:class:`~robocram.motion.bullet_scene.BulletScene`,
+its ``judge``): the same links, allowed contacts, start contacts and held objects. Coal's
+hulls are PyBullet's shapes without its collision margin, so each distance is lowered by
+:data:`BULLET_MARGIN` and never exceeds PyBullet's; whenever a link comes that near
+anything, the judge decides whether the configuration collides, as on the world itself.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+import pinocchio as pin
+from numpy.typing import NDArray
+
+from robocram.kinematics.robot_kinematics import pose_to_se3
+from robocram.motion.bullet_scene import CLEARANCE_REACH, BulletScene
+from robocram.motion.clearance_pairs import ClearancePairs, PairRules
+from robocram.motion.coal_shapes import coal_geometries
+from robocram.motion.configuration_checker import Configuration, LinkPair
+from robocram.motion.joint_slots import JointSlots
+from robocram.motion.joint_trajectory import FloatArray
+from robocram.motion.obstacle_shapes import DRIFT, StackedShapes, obstacle_cache
+from robocram.motion.robot_geometry import Part, RobotGeometry, part
+from robocram.world import World
+
+# [m] PyBullet grows convex hulls by a collision margin of 1 mm and its GJK is off by up
+# to ~0.7 mm more; coal's distances are lowered by this so they never exceed PyBullet's
+# (tests/motion/test_motion_coal_clearance.py measures it near the kitchen counter).
+BULLET_MARGIN = 0.002
+KEPT_SETUPS = 8  # checker setups kept per world (a stand's motions use a few)
+
+
+class CoalClearance:
+    """A :class:`~robocram.motion.configuration_checker.LeverChecker` for ``judge``'s
+    joints: clearances from coal, contacts decided by ``judge`` (the world itself)."""
+
+    def __init__(self, judge: BulletScene, margin: float = BULLET_MARGIN) -> None:
+        self.judge = judge
+        world, robot = judge.world, judge.robot
+        self._geometry = world.robot(robot).description.model.derived(RobotGeometry.of)
+        kin = self._geometry.kinematics
+        self._model = kin.model
+        self._data = self._geometry.data()  # shared: every check runs FK before reading
+        masters = {  # mimic joints follow their masters in pinocchio's configuration
+            j: v for j, v in world.joint_states(robot).items()
+            if kin.robot_model.joints[j].mimic is None
+        }  # fmt: skip
+        self._slots = JointSlots(kin, judge.joints, kin.configuration(masters))
+        self._base = pose_to_se3(world.pose(robot))
+        self._slack = margin + DRIFT + judge.distance  # [m] taken off every coal distance
+        pin.forwardKinematics(self._model, self._data, self._slots.q0)
+        setup = world.derived(_SetupCache).setup(self, margin)
+        self._joints = setup.joints  # the pinocchio joints whose placements a check reads
+        self._rows = {j: k for k, j in enumerate(setup.joints)}
+        self._pairs = setup.pairs
+        self._levers: tuple[NDArray[np.intp], FloatArray] | None = None  # rows, frames
+        self._base_matrix = self._base.homogeneous
+        self._frames: FloatArray = np.zeros((len(self._joints), 4, 4))  # placements, last check
+        self._last: tuple[bytes, dict[str, float]] | None = None  # q -> its clearances
+
+    @property
+    def joints(self) -> tuple[str, ...]:
+        """The joints a configuration gives values for, in order."""
+        return self.judge.joints
+
+    @property
+    def reach(self) -> float:
+        """How far [m] clearance queries look (:data:`CLEARANCE_REACH`)."""
+        return CLEARANCE_REACH
+
+    def clearance(self, q: Configuration) -> float:
+        """The distance [m] from the moving links to what they may not touch (<= 0: near
+        enough that the judge must be asked)."""
+        return min(self.clearances(q).values(), default=CLEARANCE_REACH)
+
+    def clearances(self, q: Configuration) -> dict[str, float]:
+        """Per moving link (or held object) nearer than the reach to something it may not
+        touch: that distance [m], never more than PyBullet's."""
+        values = np.asarray(q, dtype=float)
+        key = values.tobytes()
+        if self._last is not None and self._last[0] == key:
+            return dict(self._last[1])
+        pin.forwardKinematics(self._model, self._data, self._slots.full(values))
+        oMi = self._data.oMi
+        self._frames = self._base_matrix @ np.array([oMi[j].homogeneous for j in self._joints])
+        gaps = self._pairs.gaps(self._frames, self._slack, CLEARANCE_REACH)
+        self._last = (key, gaps)
+        return dict(gaps)
+
+    def colliding(self, q: Configuration, first_only: bool = False) -> list[LinkPair]:
+        """The colliding pairs at ``q``: none when coal finds everything clear, else the
+        judge's answer."""
+        if min(self.clearances(q).values(), default=CLEARANCE_REACH) > 0.0:
+            return []
+        return self.judge.colliding(q, first_only)
+
+    def is_free(self, q: Configuration) -> bool:
+        """Whether ``q`` collides with nothing (coal first, the judge when near)."""
+        return not self.colliding(q, first_only=True)
+
+    def lever_links(self) -> tuple[str, ...]:
+        """The moving links and what they hold (the judge's)."""
+        return self.judge.lever_links()
+
+    def joints_after(self) -> NDArray[np.bool_]:
+        """``[i, k]``: whether joint k's child link moves with joint i (the judge's)."""
+        return self.judge.joints_after()
+
+    def joint_levers(self, links: Sequence[str]) -> FloatArray:
+        """Per link, per joint: the most [m] a point of it moves per unit joint change, at
+        the configuration checked last (see :meth:`BulletScene.joint_levers`)."""
+        data = self.judge.lever_data()
+        if self._levers is None:
+            found = [self._geometry.frame(link) for link in data.frame_links]
+            rows = np.array([self._rows[joint] for joint, _ in found], dtype=np.intp)
+            self._levers = (rows, np.array([placement for _, placement in found]))
+        rows, placements = self._levers
+        frames = self._frames[rows] @ placements  # (frame links, 4, 4)
+        joints = frames[data.joint_rows]
+        axes = np.einsum("jik,jk->ji", joints[:, :3, :3], data.local_axes)
+        return data.levers(links, frames[:, :3, 3], joints[:, :3, 3], axes)
+
+
+@dataclass(frozen=True)
+class _Setup:
+    """What a checker reads per check: the joints whose placements it needs and its
+    pairs (they hold the focus of the checks made so far)."""
+
+    joints: list[int]
+    pairs: ClearancePairs
+    obstacles: StackedShapes  # kept so that its id in the key is never reused
+
+    @classmethod
+    def of(cls, checker: CoalClearance, obstacles: StackedShapes, margin: float) -> _Setup:
+        judge, geometry = checker.judge, checker._geometry
+        world = judge.world
+        parts = _parts(world, judge, geometry)
+        carriers = {geometry.frame(link)[0] for link in judge.moving_links}
+        joints = sorted({p.joint for p in parts} | carriers)
+        rows = {j: k for k, j in enumerate(joints)}
+        balls = _reach_balls(geometry, judge.joints, parts, checker._data, checker._base)
+        held = frozenset(world.attachments(judge.robot))
+        rules = PairRules(judge.rules, held, judge.allowed_pairs)
+        within = CLEARANCE_REACH + margin + DRIFT + judge.distance
+        return cls(
+            joints, ClearancePairs.of(parts, rows, balls, obstacles, rules, within), obstacles
+        )
+
+
+@dataclass
+class _SetupCache:
+    """The setups of the last checkers of one world (kept with it, ``World.derived``): the
+    motions at one stand share theirs, and with them the pairs' focus."""
+
+    world: World
+    _kept: dict[tuple[object, ...], _Setup] = field(default_factory=dict)
+
+    def setup(self, checker: CoalClearance, margin: float) -> _Setup:
+        """``checker``'s setup: a kept one if everything it depends on is as it was."""
+        obstacles = _obstacles(self.world, checker.judge)
+        key = (id(obstacles), margin, *_setup_key(checker))
+        found = self._kept.get(key)
+        if found is None or found.obstacles is not obstacles:
+            found = self._kept[key] = _Setup.of(checker, obstacles, margin)
+            if len(self._kept) > KEPT_SETUPS:
+                del self._kept[next(iter(self._kept))]  # the oldest
+        return found
+
+
+def _setup_key(checker: CoalClearance) -> tuple[object, ...]:
+    """What a setup depends on beyond the obstacles: the judge's rules, what the robot
+    holds and where, and where the anchors of the parts' reach balls are."""
+    judge, geometry = checker.judge, checker._geometry
+    world = judge.world
+    kin = geometry.kinematics
+    held = []
+    carriers = [kin.joint(j).pin_id for j in judge.joints]
+    for obj, link in sorted(world.attachments(judge.robot).items()):
+        attachment = world.attached_to(obj)
+        pose = attachment.link_T_obj if attachment is not None else None
+        held.append((obj, link, pose))
+        carriers.append(geometry.frame(link)[0])
+    anchors = sorted({geometry.anchor(j, judge.joints)[0] for j in carriers})
+    places = tuple(
+        tuple((checker._base * checker._data.oMi[a]).translation.tolist()) for a in anchors
+    )
+    return (
+        judge.robot, judge.joints, judge.allowed_links, judge.allowed_pairs, judge.distance,
+        tuple(held), places,
+    )  # fmt: skip
+
+
+def _parts(world: World, judge: BulletScene, geometry: RobotGeometry) -> list[Part]:
+    """The parts the judge asks about: its moving links but the allowed ones (named as
+    PyBullet names their link), and every held object (named by the object)."""
+    handle = world.robot(judge.robot)
+    names = handle.index_names()
+    asked = {
+        handle.link_index[link] for link in judge.moving_links if link not in judge.allowed_links
+    } & handle.colliders
+    labels = tuple(
+        (link, names[index])
+        for link in geometry.parts
+        if (index := handle.link_index.get(link, -2)) in asked
+    )
+    parts = list(geometry.named_parts(labels))
+    for obj, link in world.attachments(handle).items():
+        joint, frame = geometry.frame(link)
+        link_T_map = world.link_pose(handle, link).inverse()
+        for shape in world.collision_shapes(obj):
+            placement = pin.SE3(frame) * pose_to_se3(link_T_map * shape.pose)
+            for piece in coal_geometries(shape.kind, shape.extents, shape.mesh):
+                parts.append(part(obj, joint, placement, piece))
+    return parts
+
+
+def _obstacles(world: World, judge: BulletScene) -> StackedShapes:
+    """The shapes of every object the judge checks against: all but the robot, what it
+    holds and what any link may touch (the floor)."""
+    held = set(world.attachments(judge.robot))
+    skip = {judge.robot, *held, *(o.name for o in judge.anywhere())}
+    cache = obstacle_cache(world)
+    return cache.stacked(
+        [cache.shapes(world, obj) for obj in world.objects() if obj.name not in skip]
+    )
+
+
+def _reach_balls(
+    geometry: RobotGeometry,
+    planned: Sequence[str],
+    parts: list[Part],
+    data: pin.Data,
+    base: pin.SE3,
+) -> tuple[FloatArray, FloatArray]:
+    """Per part: a ball (map) it stays in for any values of the planned joints."""
+    anchors: dict[int, FloatArray] = {}
+    centres, radii = [], []
+    for p in parts:
+        anchor, reach = geometry.anchor(p.joint, planned)
+        if anchor not in anchors:
+            anchors[anchor] = np.asarray((base * data.oMi[anchor]).translation, dtype=float)
+        centres.append(anchors[anchor])
+        radii.append(reach + p.extent)
+    return np.array(centres, dtype=float).reshape(-1, 3), np.array(radii, dtype=float)

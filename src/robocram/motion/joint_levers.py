@@ -1,0 +1,113 @@
+"""How fast each moving link can move per unit joint change, as the robot is posed now.
+
+A checker that walks a long sweep asks, at each checked configuration, for the lever of
+every joint on every moving link: the distance from the joint's axis to the link's frame
+plus the link's radius (1 for a prismatic joint, 0 for a joint the link is not below).
+:class:`LeverData` holds what does not change along a sweep; the frames come from the
+checker (PyBullet's links or pinocchio's frames), so both checkers share the arithmetic.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+from numpy.typing import NDArray
+
+from robocram.motion.joint_trajectory import FloatArray
+from robocram.motion.travel_bound import link_radii
+from robocram.world import World
+
+
+@dataclass(frozen=True)
+class LeverData:
+    """What :meth:`levers` needs beyond the frames: rows, axes, radii, masks."""
+
+    frame_links: tuple[str, ...]  # links whose frames are read per configuration
+    row: dict[str, int]  # moving link -> its row below
+    carriers: dict[str, str]  # held object -> the link it rides on
+    centre_rows: NDArray[np.intp]  # per moving link: its row in frame_links
+    joint_rows: NDArray[np.intp]  # per joint: its child link's row in frame_links
+    local_axes: FloatArray  # (joints, 3) each joint's axis in its child link's frame
+    prismatic: NDArray[np.bool_]  # (joints,)
+    radii: FloatArray  # (links,) [m] about each link's frame, held objects included
+    below: NDArray[np.bool_]  # (links, joints) whether the joint moves the link
+    after: NDArray[np.bool_]  # (joints, joints) whether joint k's child moves with joint i
+    _rows: dict[tuple[str, ...], NDArray[np.intp]] = field(default_factory=dict)
+
+    @classmethod
+    def of(
+        cls, world: World, robot: str, joints: Sequence[str], moving: Sequence[str]
+    ) -> LeverData:
+        model = world.robot(robot).description.model
+        children = [model.joints[j].child for j in joints]
+        frame_links = tuple(dict.fromkeys([*moving, *children]))
+        at = {link: k for k, link in enumerate(frame_links)}
+        radii = link_radii(world, robot)
+        moved_by = [set(links_below(world, robot, [j])) for j in joints]
+        below = np.array(
+            [[link in links for links in moved_by] for link in moving], dtype=bool
+        ).reshape(len(moving), len(joints))
+        return cls(
+            frame_links,
+            {link: k for k, link in enumerate(moving)},
+            dict(world.attachments(robot)),
+            np.array([at[link] for link in moving], dtype=np.intp),
+            np.array([at[c] for c in children], dtype=np.intp),
+            np.array([model.joints[j].axis for j in joints], dtype=float).reshape(-1, 3),
+            np.array([model.joints[j].type == "prismatic" for j in joints], dtype=bool),
+            np.array([radii.get(link, 0.0) for link in moving], dtype=float),
+            below,
+            np.array(
+                [[c in links and c != model.joints[j].child for c in children]
+                 for j, links in zip(joints, moved_by, strict=True)],
+                dtype=bool,
+            ).reshape(len(joints), len(joints)),
+        )  # fmt: skip
+
+    def levers(
+        self,
+        links: Sequence[str],
+        positions: FloatArray,
+        joint_origins: FloatArray,
+        axes: FloatArray,
+    ) -> FloatArray:
+        """Per link of ``links`` (a held object: its carrier's row), per joint: the lever
+        [m per unit change]; ``positions`` (frame links, 3) are the frames' origins,
+        ``joint_origins`` and ``axes`` (joints, 3) the joints' (any one frame for all)."""
+        key = tuple(links)
+        rows = self._rows.get(key)
+        if rows is None:  # the same links are asked about at every check of a segment
+            rows = np.array([self.row[self.carriers.get(link, link)] for link in links], int)
+            self._rows[key] = rows
+        centres = positions[self.centre_rows[rows]]  # (links, 3)
+        arms = cross(centres[:, None, :] - joint_origins[None, :, :], axes[None, :, :])
+        levers = np.sqrt((arms * arms).sum(axis=2)) + self.radii[rows][:, None]
+        levers[:, self.prismatic] = 1.0
+        levers[~self.below[rows]] = 0.0
+        return levers
+
+
+def cross(a: FloatArray, b: FloatArray) -> FloatArray:
+    """The cross product over the last axis (3), broadcast; numpy's own is slower for
+    the small arrays a check makes."""
+    a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]
+    b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
+    return np.stack((a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0), axis=-1)
+
+
+def links_below(world: World, robot: str, joints: Sequence[str]) -> tuple[str, ...]:
+    """The links some joint of ``joints`` moves (those below it), in the world's link order."""
+    model = world.robot(robot).description.model
+    children: dict[str, list[str]] = {}
+    for joint in model.joints.values():
+        children.setdefault(joint.parent, []).append(joint.child)
+    below: set[str] = set()
+    todo = [model.joints[j].child for j in joints]
+    while todo:
+        link = todo.pop()
+        if link not in below:
+            below.add(link)
+            todo.extend(children.get(link, ()))
+    return tuple(link for link in world.link_names(robot) if link in below)

@@ -1,0 +1,73 @@
+"""Where a checker's joints (and their mimic followers) sit in pinocchio's ``q``.
+
+A checker is given values of a few joints; pinocchio wants the whole robot's configuration,
+with continuous joints as (cos, sin) and mimic joints following their masters. The rest
+of ``q`` stays as the robot stood when the checker was made.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+from numpy.typing import NDArray
+
+from robocram.kinematics.robot_kinematics import RobotKinematics
+from robocram.motion.errors import MotionError
+from robocram.robots import RobotModel
+
+
+class JointSlots:
+    """Fills pinocchio configurations from values of :attr:`names`, around ``q0``."""
+
+    def __init__(
+        self, kin: RobotKinematics, joints: Sequence[str], q0: NDArray[np.float64]
+    ) -> None:
+        self.q0 = q0
+        self.names = tuple(joints)
+        self.width = len(self.names)
+        rows: list[tuple[int, int, float, float, bool]] = []  # (source, idx_q, mult, off, cont)
+        for source, name in enumerate(self.names):
+            for follower, mult, off in _followers(kin.robot_model, name):
+                info = kin.joint(follower)
+                rows.append((source, info.idx_q, mult, off, info.continuous))
+        plain = [r for r in rows if not r[4]]
+        cont = [r for r in rows if r[4]]
+        self.plain_src = np.array([r[0] for r in plain], dtype=int)
+        self.plain_idx = np.array([r[1] for r in plain], dtype=int)
+        self.plain_mult = np.array([r[2] for r in plain])
+        self.plain_off = np.array([r[3] for r in plain])
+        self.cont_src = np.array([r[0] for r in cont], dtype=int)
+        self.cont_idx = np.array([r[1] for r in cont], dtype=int)
+        self.cont_mult = np.array([r[2] for r in cont])
+        self.cont_off = np.array([r[3] for r in cont])
+
+    def full(self, q: Sequence[float] | NDArray[np.float64]) -> NDArray[np.float64]:
+        """The robot's pinocchio configuration with the joints at ``q``."""
+        values = np.asarray(q, dtype=float)
+        if values.shape != (self.width,):
+            raise MotionError(
+                f"a configuration gives {self.width} values, for joints {list(self.names)}; "
+                f"got shape {values.shape}"
+            )
+        full = self.q0.copy()
+        full[self.plain_idx] = self.plain_mult * values[self.plain_src] + self.plain_off
+        if len(self.cont_idx):
+            angles = self.cont_mult * values[self.cont_src] + self.cont_off
+            full[self.cont_idx] = np.cos(angles)
+            full[self.cont_idx + 1] = np.sin(angles)
+        return full
+
+
+def _followers(model: RobotModel, name: str) -> list[tuple[str, float, float]]:
+    """``(joint, multiplier, offset)`` of ``name`` itself and every joint mimicking it."""
+    found = [(name, 1.0, 0.0)]
+    k = 0
+    while k < len(found):
+        master, mult, off = found[k]
+        for joint in model.joints.values():
+            if joint.mimic is not None and joint.mimic.joint == master:
+                m = joint.mimic
+                found.append((joint.name, m.multiplier * mult, m.multiplier * off + m.offset))
+        k += 1
+    return found

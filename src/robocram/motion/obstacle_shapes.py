@@ -1,0 +1,198 @@
+"""One world object's collision geometry in coal, where it stands, kept while it stands.
+
+A clearance query tests the moving links against the objects around them. Reading an
+object's shapes and making coal geometry of them costs milliseconds for a kitchen (268
+boxes), far more than the queries of a motion; but the kitchen, the table and a mug
+waiting on the counter do not move between motions. :class:`ObstacleCache` keeps each
+object's :class:`ObstacleShapes` with the object's state (body, pose, joint values) and
+rebuilds them only when that state changed. A cache belongs to one world and is kept
+with it (:func:`obstacle_cache`, ``World.derived``): no module holds one.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass, field
+
+import coal
+import numpy as np
+import pinocchio as pin
+from numpy.typing import NDArray
+
+from robocram.kinematics.robot_kinematics import pose_to_se3
+from robocram.motion.coal_shapes import coal_geometries
+from robocram.motion.joint_trajectory import FloatArray
+from robocram.world import World, WorldObject
+
+# Shapes are reused while an object's position [m], quaternion and joint values [rad | m]
+# each stay within this of the state they were read in.
+DRIFT_TOLERANCE = 1e-6
+HUGE = 1e9  # [m] the half extents of a half-space's box
+# [m] the most that moves a point of a reused object's shapes (within 10 m of its frame,
+# through joints of up to 10 m of lever): clearances are lowered by it.
+DRIFT = 1e-4
+
+
+@dataclass(frozen=True)
+class ObstacleShapes:
+    """The convex pieces of one object in map, with a map-aligned box around each."""
+
+    obj: WorldObject
+    geometries: tuple[coal.CollisionGeometry, ...]
+    placements: tuple[pin.SE3, ...]  # map -> geometry
+    labels: tuple[str, ...]  # per piece: "object", or "object/link" of a many-link object
+    rotations: FloatArray  # (pieces, 3, 3) the placements' rotations
+    translations: FloatArray  # (pieces, 3) [m] and translations
+    local_centres: FloatArray  # (pieces, 3) [m] each piece's box centre in its own frame
+    local_halves: FloatArray  # (pieces, 3) [m] and half extents (huge for a half-space)
+
+    @property
+    def centres(self) -> FloatArray:
+        """(pieces, 3) [m] the centres of the map-aligned boxes."""
+        return np.einsum("pij,pj->pi", self.rotations, self.local_centres) + self.translations
+
+    @property
+    def halves(self) -> FloatArray:
+        """(pieces, 3) [m] their half extents."""
+        return np.einsum("pij,pj->pi", np.abs(self.rotations), self.local_halves)
+
+    @classmethod
+    def of(cls, world: World, obj: WorldObject) -> ObstacleShapes:
+        """Read ``obj``'s shapes from ``world`` now."""
+        names = obj.index_names()
+        many = len(obj.link_index) > 1
+        geometries, placements, labels = [], [], []
+        centres, halves = [], []
+        for shape in world.collision_shapes(obj):
+            index = obj.link_index.get(shape.link)
+            link = names.get(index, shape.link) if index is not None else shape.link
+            label = f"{obj.name}/{link}" if many else obj.name
+            placement = pose_to_se3(shape.pose)
+            for piece in coal_geometries(shape.kind, shape.extents, shape.mesh):
+                piece.computeLocalAABB()
+                if isinstance(piece, coal.Halfspace):
+                    centre, half = np.zeros(3), np.full(3, HUGE)
+                else:
+                    box = piece.aabb_local
+                    low, high = np.asarray(box.min_, float), np.asarray(box.max_, float)
+                    centre, half = (low + high) / 2.0, (high - low) / 2.0
+                geometries.append(piece)
+                placements.append(placement)
+                labels.append(label)
+                centres.append(centre)
+                halves.append(half)
+        return cls(
+            obj, tuple(geometries), tuple(placements), tuple(labels),
+            np.array([p.rotation for p in placements], dtype=float).reshape(-1, 3, 3),
+            np.array([p.translation for p in placements], dtype=float).reshape(-1, 3),
+            np.array(centres, dtype=float).reshape(-1, 3),
+            np.array(halves, dtype=float).reshape(-1, 3),
+        )  # fmt: skip
+
+    def moved(self, delta: pin.SE3) -> ObstacleShapes:
+        """The same pieces after the whole object moved by ``delta`` (in map): cheaper
+        than reading its shapes again (a settling bowl, a placed mug)."""
+        rotation, translation = np.asarray(delta.rotation), np.asarray(delta.translation)
+        return dataclasses.replace(
+            self,
+            placements=tuple(delta * p for p in self.placements),
+            rotations=np.einsum("ij,pjk->pik", rotation, self.rotations),
+            translations=self.translations @ rotation.T + translation,
+        )
+
+
+@dataclass(frozen=True)
+class StackedShapes:
+    """Several objects' pieces as one table, for the pairs of a check."""
+
+    shapes: tuple[ObstacleShapes, ...]
+    owner: NDArray[np.intp]  # per piece: its object's index in ``shapes``
+    geometries: tuple[coal.CollisionGeometry, ...]
+    placements: tuple[pin.SE3, ...]
+    labels: tuple[str, ...]
+    centres: FloatArray  # (pieces, 3)
+    halves: FloatArray  # (pieces, 3)
+
+    @classmethod
+    def of(cls, shapes: list[ObstacleShapes]) -> StackedShapes:
+        """Stack ``shapes`` in order."""
+        return cls(
+            tuple(shapes),
+            np.array([k for k, s in enumerate(shapes) for _ in s.labels], dtype=np.intp),
+            tuple(g for s in shapes for g in s.geometries),
+            tuple(p for s in shapes for p in s.placements),
+            tuple(label for s in shapes for label in s.labels),
+            np.concatenate([s.centres for s in shapes]) if shapes else np.zeros((0, 3)),
+            np.concatenate([s.halves for s in shapes]) if shapes else np.zeros((0, 3)),
+        )
+
+
+@dataclass
+class ObstacleCache:
+    """Per object of one world: its shapes, and the state they were read in.
+
+    Shapes are kept while the object's state stays within :data:`DRIFT_TOLERANCE` of the
+    state they were read in (a settled kitchen's drawers creep by 1e-8 under simulation);
+    :data:`DRIFT` bounds how far that can move any point of them.
+    """
+
+    _entries: dict[str, tuple[WorldObject, NDArray[np.float64], ObstacleShapes]] = field(
+        default_factory=dict
+    )
+    builds: int = 0  # how many times shapes were read (for tests and figures)
+    _stacked: tuple[tuple[int, ...], StackedShapes] | None = None
+
+    def stacked(self, shapes: list[ObstacleShapes]) -> StackedShapes:
+        """``shapes`` as one table (kept while the same shapes are asked for again)."""
+        key = tuple(id(s) for s in shapes)
+        if self._stacked is None or self._stacked[0] != key:
+            self._stacked = (key, StackedShapes.of(shapes))
+        return self._stacked[1]
+
+    def shapes(self, world: World, obj: WorldObject) -> ObstacleShapes:
+        """``obj``'s shapes as it stands now: the kept ones if its state is unchanged."""
+        state = _state(world, obj)
+        entry = self._entries.get(obj.name)
+        if entry is not None and entry[0] is obj and _near(entry[1], state):
+            return entry[2]
+        if entry is not None and entry[0] is obj and _rigidly_moved(entry[1], state):
+            shapes = entry[2].moved(_base(state) * _base(entry[1]).inverse())
+            self._entries[obj.name] = (obj, state, shapes)
+            return shapes
+        shapes = ObstacleShapes.of(world, obj)
+        self._entries[obj.name] = (obj, state, shapes)
+        self.builds += 1
+        return shapes
+
+
+def _state(world: World, obj: WorldObject) -> NDArray[np.float64]:
+    """What places ``obj``'s shapes: its body, pose and joint values."""
+    return np.array(world.body_state(obj), dtype=float)
+
+
+def _near(kept: NDArray[np.float64], now: NDArray[np.float64]) -> bool:
+    return (
+        kept.shape == now.shape
+        and kept[0] == now[0]
+        and float(np.abs(kept - now).max()) <= DRIFT_TOLERANCE
+    )
+
+
+def _rigidly_moved(kept: NDArray[np.float64], now: NDArray[np.float64]) -> bool:
+    """Whether only the base pose changed: same body, same joint values."""
+    return kept.shape == now.shape and kept[0] == now[0] and bool((kept[8:] == now[8:]).all())
+
+
+def _base(state: NDArray[np.float64]) -> pin.SE3:
+    """The body's base pose in a state (position, then quaternion x, y, z, w)."""
+    x, y, z, w = state[4:8]
+    return pin.SE3(pin.Quaternion(w, x, y, z).toRotationMatrix(), state[1:4].copy())
+
+
+def obstacle_cache(world: World) -> ObstacleCache:
+    """The cache of ``world``'s obstacle shapes, kept with the world (``World.derived``)."""
+    return world.derived(_new_cache)
+
+
+def _new_cache(world: World) -> ObstacleCache:
+    return ObstacleCache()
