@@ -78,10 +78,16 @@ class RobotKinematics:
         return info
 
     def frame_id(self, frame: str) -> int:
-        """Pinocchio frame index of a link or frame of the robot."""
+        """Pinocchio frame index of a link or frame of the robot.
+
+        A URDF may name a joint as one of its links (the Z1's ``gripperStator``): pinocchio
+        then has two frames of that name, and the link's (a body frame) is meant.
+        """
         if not self.model.existFrame(frame):
             names = [f.name for f in self.model.frames if f.name != "universe"]
             raise UnknownNameError("frame", frame, self.robot_model.source, names)
+        if self.model.existFrame(frame, pin.FrameType.BODY):
+            return int(self.model.getFrameId(frame, pin.FrameType.BODY))
         return int(self.model.getFrameId(frame))
 
     def default_value(self, name: str) -> float:
