@@ -25,6 +25,10 @@ def description() -> RobotDescription:
         urdf=URDF,
         # why: the URDF's root link: the robot's base
         base_frame="base_link",
+        # why: no driven wheels in the URDF: the default
+        # TODO doubt: holonomic assumed; say 'differential' for two wheels on one axle, 'fixed' for
+        #   a base that stays
+        base_type="holonomic",
         # why: two alike arms 0.588 m apart (left: larger y); below the trunk that turns them all
         #   (torso_1_joint, torso_2_joint)
         arms={

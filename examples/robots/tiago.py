@@ -26,6 +26,9 @@ def description() -> RobotDescription:
         urdf=URDF,
         # why: the URDF's root link: the robot's base
         base_frame="base_footprint",
+        # why: wheel_right_joint and wheel_left_joint drive two wheels on one axle: no sideways
+        #   motion
+        base_type="differential",
         # why: vertical prismatic joint carrying 2 of the arms and cameras
         torso_joint="torso_lift_joint",
         # why: one gripper-like end

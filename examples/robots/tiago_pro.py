@@ -27,6 +27,10 @@ def description() -> RobotDescription:
         urdf=URDF,
         # why: the URDF's root link: the robot's base
         base_frame="base_footprint",
+        # why: 4 wheels on fixed axles (wheel_front_right_joint, wheel_front_left_joint,
+        #   wheel_rear_right_joint, wheel_rear_left_joint): mecanum wheels drive any way
+        # TODO doubt: skid-steered wheels would not: then say base_type='differential'
+        base_type="holonomic",
         # why: vertical prismatic joint carrying 3 of the arms and cameras
         torso_joint="torso_lift_joint",
         # why: two alike arms 0.882 m apart (left: larger y)

@@ -63,14 +63,28 @@ def drive(
 
 
 def unchecked_base_motion(robot: ProjectedRobot, goal: Pose) -> JointTrajectory:
-    """The straight, timed base motion to ``goal`` with no check (CRAM's ``allow_all``)."""
+    """The timed base motion to ``goal`` with no check (CRAM's ``allow_all``): straight for
+    a holonomic base; else turn, drive along the heading, turn (never sideways)."""
     start = robot.base_pose()
     yaw0 = quat.to_euler(start.orientation)[2]
     turn = quat.to_euler(goal.orientation)[2] - yaw0
     yaw1 = yaw0 + math.atan2(math.sin(turn), math.cos(turn))  # the shorter way round
     ends = [(*start.position[:2], yaw0), (*goal.position[:2], yaw1)]
+    if robot.description.drive != "holonomic":
+        local = start.inverse() * goal
+        motion = BaseMotion(local.position[0], local.position[1], yaw1 - yaw0)
+        ends = [_in_map(start, yaw0, step) for step in motion.drive_steps()]
     limits = joint_limits(robot.description, BASE_JOINTS)
     return time_parameterize(robot.name, BASE_JOINTS, ends, limits, kind="base")
+
+
+def _in_map(
+    start: Pose, yaw0: float, step: tuple[float, float, float]
+) -> tuple[float, float, float]:
+    """A step ``(x, y, yaw)`` of the base's own frame at ``start`` as map x, y, yaw."""
+    x, y, yaw = step
+    c, s = math.cos(yaw0), math.sin(yaw0)
+    return (start.position[0] + c * x - s * y, start.position[1] + s * x + c * y, yaw0 + yaw)
 
 
 def place_base(robot: ProjectedRobot, goal: Pose) -> None:

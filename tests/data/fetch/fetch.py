@@ -20,6 +20,8 @@ def description() -> RobotDescription:
         urdf=URDF,
         # why: the URDF's root link: the robot's base
         base_frame="base_link",
+        # why: r_wheel_joint and l_wheel_joint drive two wheels on one axle: no sideways motion
+        base_type="differential",
         # why: vertical prismatic joint carrying 2 of the arms and cameras
         torso_joint="torso_lift_joint",
         # why: one gripper-like end

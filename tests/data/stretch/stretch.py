@@ -27,6 +27,9 @@ def description() -> RobotDescription:
         urdf=URDF,
         # why: the URDF's root link: the robot's base
         base_frame="base_link",
+        # why: joint_right_wheel and joint_left_wheel drive two wheels on one axle: no sideways
+        #   motion
+        base_type="differential",
         # why: one gripper-like end
         arms={
             "arm": ArmDescription(
