@@ -24,6 +24,7 @@ from dataclasses import dataclass, replace
 
 from robocram.kinematics.errors import KinematicsError
 from robocram.robots import ArmDescription, RobotDescription, RobotModel
+from robocram.robots.arm_slice import arm_slice
 from robocram.robots.urdf_elements import Joint, JointType, Link
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
@@ -37,7 +38,7 @@ BASE_JOINTS = (BASE_X_JOINT, BASE_Y_JOINT, BASE_YAW_JOINT)
 DIFFERENTIAL_JOINTS = (BASE_TURN_JOINT, BASE_X_JOINT, BASE_YAW_JOINT)
 VIRTUAL_JOINTS = frozenset(BASE_JOINTS + DIFFERENTIAL_JOINTS)
 MAX_TURN = math.pi / 2  # [rad] a differential base turns at most this far before it drives
-FULL_ARM_JOINTS = 6  # an arm with fewer joints (torso included) reaches with its base too
+FULL_ARM_JOINTS = 6  # an unloaded arm with fewer joints (torso included) uses its base
 
 
 @dataclass(frozen=True)
@@ -142,23 +143,24 @@ def for_robot(description: RobotDescription, base: PlanarBase) -> PlanarBase:
 def base_in_ik(description: RobotDescription, arm: str) -> bool:
     """Whether IK for ``arm`` reaches with the base too, as the description says.
 
-    ``ArmDescription.base_in_ik`` decides when set; by default an arm (not the neck) with
-    fewer than six joints, the torso joint counted, uses the base.
+    ``ArmDescription.base_in_ik`` decides when set. By default an arm (not the neck) of a
+    base that moves uses it when its reach envelope is a thin slice or small
+    (:func:`~robocram.robots.arm_slice.arm_slice`: Stretch's, the HSR's, the SO-101's),
+    not by its number of joints: Stretch's five move in one plane. An unloaded
+    description falls back to the count: fewer than six joints, the torso's counted.
     """
     spec: ArmDescription | None = description.arms.get(arm)
     if spec is None or arm == description.neck_arm and spec.base_in_ik is None:
         return False
     if spec.base_in_ik is not None:
         return spec.base_in_ik
+    if description.drive == "fixed":
+        return False
+    if description.model is not None and spec.joints:
+        return arm_slice(description.model, spec).needs_base
     joints = set(spec.joints)
     if description.torso_joint is not None:
         joints.add(description.torso_joint)
-    if description.model is not None:
-        joints = {
-            j
-            for j in joints
-            if j in description.model.joints and description.model.joints[j].mimic is None
-        }
     return 0 < len(joints) < FULL_ARM_JOINTS
 
 

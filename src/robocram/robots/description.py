@@ -57,7 +57,7 @@ class ArmDescription:
     carrying: Mapping[str, float] = field(default_factory=dict)
     side: str | None = None  # "left" | "right": the side CRAM's two-armed motions call it
     gripper: GripperDescription | None = None
-    # IK moves the base too (planar x, y, yaw); None: when the arm, torso included, has < 6 joints
+    # IK moves the base too; None: when the arm's reach envelope is a thin slice or small
     base_in_ik: bool | None = None
 
 
