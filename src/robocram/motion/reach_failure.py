@@ -15,7 +15,7 @@ from __future__ import annotations
 from robocram.execution.failures import ManipulationPoseUnreachable
 from robocram.kinematics import IKResult
 from robocram.robots import ArmDescription, RobotDescription
-from robocram.robots.arm_slice import arm_slice
+from robocram.robots.arm_slice import slice_advice
 from robocram.robots.model_pose import subtree_links
 from robocram.tf import Pose
 
@@ -76,19 +76,6 @@ def _within_length_advice(result: IKResult) -> str:
     return (
         f"the position is reachable, its orientation is {result.orientation_error:.2f} rad "
         "off: try another grasp orientation"
-    )
-
-
-def slice_advice(desc: RobotDescription, spec: ArmDescription, base_moved: bool) -> str | None:
-    """Advice for a planar arm that missed with its base still: reach with the base too."""
-    if base_moved or desc.model is None or not spec.joints or desc.drive == "fixed":
-        return None
-    shape = arm_slice(desc.model, spec)
-    if not shape.planar:
-        return None
-    return (
-        f"the {spec.name} arm moves in a thin slice (flatness {shape.flatness:.2f}): let IK "
-        f"move the base too (arms[{spec.name!r}] base_in_ik=True, or move_base=True)"
     )
 
 

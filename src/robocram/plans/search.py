@@ -110,8 +110,8 @@ def _look_into(
 
 def _pulled_out_middle(closed: PoseStamped, opened: PoseStamped) -> PoseStamped:
     """The middle between a container's point closed and opened: of what opening exposed."""
-    middle = tuple((c + o) / 2 for c, o in zip(closed.position, opened.position, strict=True))
-    return PoseStamped("map", middle)
+    (cx, cy, cz), (ox, oy, oz) = closed.position, opened.position
+    return PoseStamped("map", ((cx + ox) / 2, (cy + oy) / 2, (cz + oz) / 2))
 
 
 def search(

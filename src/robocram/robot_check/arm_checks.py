@@ -14,13 +14,13 @@ import numpy as np
 
 from robocram.execution import PlanFailure
 from robocram.kinematics import base_in_ik
-from robocram.motion.reach_failure import slice_advice
 from robocram.projection.arm import move_joints, move_tcp
 from robocram.projection.gripper import close_gripper, grip, open_gripper, release
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robot_check.report_card import CheckResult
 from robocram.robots import ArmDescription
 from robocram.robots.arm_envelope import arm_reach, working_yaw
+from robocram.robots.arm_slice import slice_advice
 from robocram.robots.link_centre import link_centre
 from robocram.tf import Pose, Vector3
 from robocram.tf import quaternion as quat

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from robocram.robots.arm_envelope import arm_reach, joint_samples
-from robocram.robots.description import ArmDescription
+from robocram.robots.description import ArmDescription, RobotDescription
 from robocram.robots.model_pose import link_pose
 from robocram.robots.robot_model import RobotModel
 
@@ -74,3 +74,17 @@ def _flatness(model: RobotModel, arm: ArmDescription) -> float:
     spreads = np.linalg.svd(points - points.mean(axis=0), compute_uv=False)
     spreads /= math.sqrt(len(points))
     return float(spreads[2] / spreads[0]) if spreads[0] > 1e-9 else 0.0
+
+
+def slice_advice(desc: RobotDescription, spec: ArmDescription, base_moved: bool) -> str | None:
+    """Advice for a planar arm that missed with its base still (``base_moved`` False):
+    reach with the base too; None for any other arm."""
+    if base_moved or desc.model is None or not spec.joints or desc.drive == "fixed":
+        return None
+    shape = arm_slice(desc.model, spec)
+    if not shape.planar:
+        return None
+    return (
+        f"the {spec.name} arm moves in a thin slice (flatness {shape.flatness:.2f}): let IK "
+        f"move the base too (arms[{spec.name!r}] base_in_ik=True, or move_base=True)"
+    )
