@@ -126,8 +126,13 @@ def _base_steps(trajectories: list[JointTrajectory]) -> list[np.ndarray]:
     return [sideways(t.positions()) for t in trajectories if t.kind == "base"]
 
 
-def test_the_kitchen_transport_drives_without_sliding(stretch: LoadedDescription) -> None:
-    scene = kitchen_scene(stretch)
+@pytest.mark.parametrize("robot", ["stretch", "fetch"])
+def test_the_kitchen_transport_drives_without_sliding(
+    robot: str, request: pytest.FixtureRequest
+) -> None:
+    desc: LoadedDescription = request.getfixturevalue(robot)
+    assert desc.drive == "differential"
+    scene = kitchen_scene(desc)
     executed: list[JointTrajectory] = []
     try:
         with trajectory_listener(executed.append), simulated_robot(scene.world, scene.robot):
