@@ -17,11 +17,13 @@ import numpy as np
 import pytest
 
 from robocram.designators import a
+from robocram.execution.failures import NavigationPoseUnreachable
 from robocram.kinematics import PlanarBase, forward_kinematics, solve_ik
 from robocram.motion import JointTrajectory, plan_base_path, trajectory_listener
 from robocram.plans import pick_up
 from robocram.plans.transport import transport
-from robocram.projection import simulated_robot
+from robocram.projection import ProjectedRobot, simulated_robot
+from robocram.projection.navigation import drive
 from robocram.robots import LoadedDescription, load_description
 from robocram.scenes import kitchen_scene, tabletop_scene
 from robocram.scenes.placement import TABLE_DEPTH
@@ -164,3 +166,14 @@ def test_an_hsr_on_two_wheels_reaches_a_mug_beside_it_without_sliding() -> None:
     steps = _base_steps(executed)
     assert steps  # the base moved
     assert all((s <= SIDEWAYS).all() for s in steps)
+
+
+def test_a_fixed_base_stays_where_it_stands() -> None:
+    desc = dataclasses.replace(load_description("pr2"), base_type="fixed")
+    with World() as world:
+        world.add_floor()
+        robot = ProjectedRobot.of(world, world.add_robot(desc).name)
+        drive(robot, Pose())  # where it stands: nothing to do
+        with pytest.raises(NavigationPoseUnreachable, match="fixed"):
+            drive(robot, Pose((0.5, 0.0, 0.0)))
+        assert world.pose(robot.name).position == pytest.approx((0.0, 0.0, 0.0), abs=1e-9)

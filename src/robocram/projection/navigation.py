@@ -30,6 +30,8 @@ from robocram.projection.trajectory_follower import follow
 from robocram.tf import Pose, PoseLike, PoseStamped
 from robocram.tf import quaternion as quat
 
+FIXED_TOLERANCE = 1e-3  # [m | rad] a fixed base "drives" only to where it stands
+
 
 def planar(pose: Pose, z: float) -> Pose:
     """``pose`` flattened onto the plane at height ``z`` [m]: x, y and yaw kept."""
@@ -45,12 +47,21 @@ def drive(
     ``allowed_links`` may touch things on the way (the hand holding a door's handle).
 
     Raises:
-        NavigationPoseUnreachable: the robot would collide there; it stays where it was.
+        NavigationPoseUnreachable: the robot would collide there, or its base is fixed
+            (``base_type="fixed"``) and the target is elsewhere; it stays where it was.
     """
     start = robot.base_pose()
     goal = planar(robot.in_map(target), start.position[2])
     if not all(math.isfinite(v) for v in goal.position):
         raise ValueError(f"navigation target {target!r} has a non-finite position")
+    if robot.description.drive == "fixed" and (
+        start.distance_to(goal) > FIXED_TOLERANCE or start.angle_to(goal) > FIXED_TOLERANCE
+    ):
+        raise NavigationPoseUnreachable(
+            f"{robot.name}'s base is fixed (base_type='fixed'): it stays where it stands; "
+            "stand the robot where it works, or give the base type it has",
+            target=target,
+        )
     try:
         path = plan_base_path(
             robot.world, robot.name, goal, seed=robot.motion.seed, allowed_links=allowed_links
