@@ -26,6 +26,10 @@ def description() -> RobotDescription:
         urdf=URDF,
         # why: the URDF's root link: the robot's base
         base_frame="base",
+        # why: no driven wheels in the URDF: the default
+        # TODO doubt: holonomic assumed; say 'differential' for two wheels on one axle, 'fixed' for
+        #   a base that stays
+        base_type="holonomic",
         # why: two alike arms 1.824 m apart (left: larger y)
         arms={
             "right": ArmDescription(
@@ -40,16 +44,16 @@ def description() -> RobotDescription:
                 # why: mimicked by 1 hand joint(s) (<mimic> in the URDF); fingers and hand links are
                 #   found at load
                 gripper_joints=("r_gripper_l_finger_joint",),
-                # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
-                # TODO doubt: no collision check here: `robocram robot check` drives it
+                # why: stowed: within limits, the arm within 0.73 m of the base's middle (the
+                #   sampled pose: touching), no link touching another (meshes)
                 parking={
-                    "right_s0": -1.177,
-                    "right_s1": -0.397,
-                    "right_e0": 0.413,
-                    "right_e1": 2.618,
-                    "right_w0": 0.034,
-                    "right_w1": 2.015,
-                    "right_w2": -1.109,
+                    "right_s0": -1.521,
+                    "right_s1": -0.342,
+                    "right_e0": -0.901,
+                    "right_e1": 1.344,
+                    "right_w0": -0.374,
+                    "right_w1": 0.885,
+                    "right_w2": 1.892,
                 },
             ),
             "left": ArmDescription(
@@ -65,7 +69,9 @@ def description() -> RobotDescription:
                 #   found at load
                 gripper_joints=("l_gripper_l_finger_joint",),
                 # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
-                # TODO doubt: no collision check here: `robocram robot check` drives it
+                # TODO doubt: its links touch (collision_head_link_2/left_upper_elbow_visual,
+                #   left_upper_forearm/left_upper_elbow_visual) and no stowed pose was found: give
+                #   one
                 parking={
                     "left_s0": -1.195,
                     "left_s1": -1.972,

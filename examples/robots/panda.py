@@ -18,6 +18,10 @@ def description() -> RobotDescription:
         urdf=URDF,
         # why: the URDF's root link: the robot's base
         base_frame="panda_link0",
+        # why: no driven wheels in the URDF: the default
+        # TODO doubt: holonomic assumed; say 'differential' for two wheels on one axle, 'fixed' for
+        #   a base that stays
+        base_type="holonomic",
         # why: one gripper-like end
         arms={
             "arm": ArmDescription(
@@ -32,16 +36,16 @@ def description() -> RobotDescription:
                 # why: mimicked by 1 hand joint(s) (<mimic> in the URDF); fingers and hand links are
                 #   found at load
                 gripper_joints=("panda_finger_joint1",),
-                # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
-                # TODO doubt: no collision check here: `robocram robot check` drives it
+                # why: stowed: within limits, the arm within 0.17 m of the base's middle (the
+                #   sampled pose: touching), no link touching another (meshes)
                 parking={
-                    "panda_joint1": 1.732,
-                    "panda_joint2": -1.178,
-                    "panda_joint3": -2.618,
+                    "panda_joint1": -2.897,
+                    "panda_joint2": -0.088,
+                    "panda_joint3": 0.705,
                     "panda_joint4": -3.071,
-                    "panda_joint5": -2.897,
-                    "panda_joint6": 3.511,
-                    "panda_joint7": 2.569,
+                    "panda_joint5": 2.33,
+                    "panda_joint6": 3.752,
+                    "panda_joint7": 1.09,
                 },
             ),
         },

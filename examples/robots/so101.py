@@ -18,6 +18,10 @@ def description() -> RobotDescription:
         urdf=URDF,
         # why: the URDF's root link: the robot's base
         base_frame="base_link",
+        # why: no driven wheels in the URDF: the default
+        # TODO doubt: holonomic assumed; say 'differential' for two wheels on one axle, 'fixed' for
+        #   a base that stays
+        base_type="holonomic",
         # why: one gripper-like end
         arms={
             "arm": ArmDescription(

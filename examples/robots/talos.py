@@ -25,6 +25,10 @@ def description() -> RobotDescription:
         urdf=URDF,
         # why: the URDF's root link: the robot's base
         base_frame="base_link",
+        # why: no driven wheels in the URDF: the default
+        # TODO doubt: holonomic assumed; say 'differential' for two wheels on one axle, 'fixed' for
+        #   a base that stays
+        base_type="holonomic",
         # why: two alike arms 0.588 m apart (left: larger y); below the trunk that turns them all
         #   (torso_1_joint, torso_2_joint)
         arms={
@@ -66,16 +70,16 @@ def description() -> RobotDescription:
                 # why: mimicked by 6 hand joint(s) (<mimic> in the URDF); fingers and hand links are
                 #   found at load
                 gripper_joints=("gripper_right_joint",),
-                # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
-                # TODO doubt: no collision check here: `robocram robot check` drives it
+                # why: stowed: within limits, the arm within 0.49 m of the base's middle (the
+                #   sampled pose: 0.55 m out), no link touching another (meshes)
                 parking={
-                    "arm_right_1_joint": -0.785,
-                    "arm_right_2_joint": -0.777,
-                    "arm_right_3_joint": 0.422,
+                    "arm_right_1_joint": 0.339,
+                    "arm_right_2_joint": -0.814,
+                    "arm_right_3_joint": 0.576,
                     "arm_right_4_joint": -2.234,
-                    "arm_right_5_joint": -1.771,
-                    "arm_right_6_joint": 0.457,
-                    "arm_right_7_joint": -0.181,
+                    "arm_right_5_joint": 2.267,
+                    "arm_right_6_joint": -0.823,
+                    "arm_right_7_joint": -0.157,
                 },
             ),
         },

@@ -26,6 +26,9 @@ def description() -> RobotDescription:
         urdf=URDF,
         # why: the URDF's root link: the robot's base
         base_frame="base_footprint",
+        # why: wheel_right_joint and wheel_left_joint drive two wheels on one axle: no sideways
+        #   motion
+        base_type="differential",
         # why: vertical prismatic joint carrying 2 of the arms and cameras
         torso_joint="torso_lift_joint",
         # why: one gripper-like end
@@ -40,16 +43,16 @@ def description() -> RobotDescription:
                 # why: parent of the first arm joint after the torso; its joints down to the wrist
                 #   are found at load
                 base_link="torso_lift_link",
-                # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
-                # TODO doubt: no collision check here: `robocram robot check` drives it
+                # why: stowed: within limits, the arm within 0.31 m of the base's middle (the
+                #   sampled pose: touching), no link touching another (meshes)
                 parking={
-                    "arm_1_joint": 1.563,
-                    "arm_2_joint": -0.881,
-                    "arm_3_joint": 0.047,
-                    "arm_4_joint": 2.101,
-                    "arm_5_joint": -0.116,
-                    "arm_6_joint": 1.065,
-                    "arm_7_joint": -0.479,
+                    "arm_1_joint": 2.633,
+                    "arm_2_joint": -1.4,
+                    "arm_3_joint": 0.513,
+                    "arm_4_joint": 1.997,
+                    "arm_5_joint": -1.435,
+                    "arm_6_joint": 1.273,
+                    "arm_7_joint": -1.487,
                 },
                 # why: no <mimic> couples the hand: its 29 curling joints move together; open at the
                 #   lower limit, where the fingers part

@@ -27,6 +27,10 @@ def description() -> RobotDescription:
         urdf=URDF,
         # why: the URDF's root link: the robot's base
         base_frame="base_footprint",
+        # why: 4 wheels on fixed axles (wheel_front_right_joint, wheel_front_left_joint,
+        #   wheel_rear_right_joint, wheel_rear_left_joint): mecanum wheels drive any way
+        # TODO doubt: skid-steered wheels would not: then say base_type='differential'
+        base_type="holonomic",
         # why: vertical prismatic joint carrying 3 of the arms and cameras
         torso_joint="torso_lift_joint",
         # why: two alike arms 0.882 m apart (left: larger y)
@@ -41,16 +45,16 @@ def description() -> RobotDescription:
                 # why: parent of the first arm joint after the torso; its joints down to the wrist
                 #   are found at load
                 base_link="torso_lift_link",
-                # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
-                # TODO doubt: no collision check here: `robocram robot check` drives it
+                # why: stowed: within limits, the arm within 0.38 m of the base's middle (the
+                #   sampled pose: touching), no link touching another (meshes)
                 parking={
-                    "arm_left_1_joint": -0.112,
-                    "arm_left_2_joint": -2.192,
-                    "arm_left_3_joint": -0.737,
-                    "arm_left_4_joint": -2.338,
-                    "arm_left_5_joint": -2.094,
-                    "arm_left_6_joint": -1.86,
-                    "arm_left_7_joint": 2.484,
+                    "arm_left_1_joint": 1.881,
+                    "arm_left_2_joint": 0.978,
+                    "arm_left_3_joint": 2.04,
+                    "arm_left_4_joint": -2.443,
+                    "arm_left_5_joint": -0.648,
+                    "arm_left_6_joint": -1.106,
+                    "arm_left_7_joint": 0.634,
                 },
                 # why: mimicked by 5 hand joint(s) (<mimic> in the URDF); open at the lower limit,
                 #   where the fingers part
@@ -68,16 +72,16 @@ def description() -> RobotDescription:
                 # why: parent of the first arm joint after the torso; its joints down to the wrist
                 #   are found at load
                 base_link="torso_lift_link",
-                # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
-                # TODO doubt: no collision check here: `robocram robot check` drives it
+                # why: stowed: within limits, the arm within 0.34 m of the base's middle (the
+                #   sampled pose: 0.61 m out), no link touching another (meshes)
                 parking={
-                    "arm_right_1_joint": -1.42,
-                    "arm_right_2_joint": -0.516,
-                    "arm_right_3_joint": -2.031,
-                    "arm_right_4_joint": -2.072,
-                    "arm_right_5_joint": -0.175,
-                    "arm_right_6_joint": -0.496,
-                    "arm_right_7_joint": -1.656,
+                    "arm_right_1_joint": -2.62,
+                    "arm_right_2_joint": 0.976,
+                    "arm_right_3_joint": -1.135,
+                    "arm_right_4_joint": -2.443,
+                    "arm_right_5_joint": -1.57,
+                    "arm_right_6_joint": 1.493,
+                    "arm_right_7_joint": -0.069,
                 },
                 # why: mimicked by 5 hand joint(s) (<mimic> in the URDF); open at the lower limit,
                 #   where the fingers part

@@ -25,6 +25,10 @@ def description() -> RobotDescription:
         urdf=URDF,
         # why: the URDF's root link: the robot's base
         base_frame="world",
+        # why: no driven wheels in the URDF: the default
+        # TODO doubt: holonomic assumed; say 'differential' for two wheels on one axle, 'fixed' for
+        #   a base that stays
+        base_type="holonomic",
         # why: one gripper-like end
         arms={
             "arm": ArmDescription(
@@ -36,15 +40,15 @@ def description() -> RobotDescription:
                 tool_frame="arm_standard_tool_frame",
                 # why: parent of the first arm joint; its joints down to the wrist are found at load
                 base_link="link00",
-                # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
-                # TODO doubt: no collision check here: `robocram robot check` drives it
+                # why: stowed: within limits, the arm within 0.19 m of the base's middle (the
+                #   sampled pose: 0.32 m out), no link touching another (meshes)
                 parking={
-                    "joint1": 0.712,
-                    "joint2": 0.446,
-                    "joint3": -0.07,
-                    "joint4": -1.032,
-                    "joint5": -0.008,
-                    "joint6": -1.919,
+                    "joint1": -2.309,
+                    "joint2": 1.059,
+                    "joint3": -0.038,
+                    "joint4": -0.042,
+                    "joint5": 1.268,
+                    "joint6": -2.383,
                 },
                 # why: the finger joints (prismatic, or leaves) right below the wrist; open at the
                 #   lower limit, where the fingers part

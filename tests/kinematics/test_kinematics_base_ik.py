@@ -43,7 +43,7 @@ def reached(desc: LoadedDescription, joints: dict[str, float], motion: BaseMotio
 
 
 def test_which_arms_reach_with_the_base(hsr: LoadedDescription) -> None:
-    assert base_in_ik(hsr, "arm")  # 4 arm joints + the lift: 5 < 6
+    assert base_in_ik(hsr, "arm")  # its hand moves in a thin slice (no shoulder pan)
     assert not base_in_ik(load_description("pr2"), "right")
     assert not base_in_ik(load_description("boxy"), "left")
     assert not base_in_ik(hsr, "no-such-arm")

@@ -76,9 +76,11 @@ def test_example_checks_clean(name: str) -> None:
     assert len(card.results) >= 6
 
 
-@pytest.mark.parametrize(("name", "arm"), [("tiago_pro", "right"), ("tiago", "arm")])
+@pytest.mark.parametrize(("name", "arm"), [("tiago_pro", "left"), ("tiago", "arm")])
 def test_pick_up_runs_unchanged_on_drafted_robots(name: str, arm: str) -> None:
-    """The right-most arm with a gripper picks: the tabletop scene puts the mug before it."""
+    """The arm whose parked hand is nearest picks (the plan tries arms nearest first): the
+    tabletop scene puts the mug before the right arm, but the TIAGo Pro's stowed right hand
+    rests behind its shoulder, the left one ahead of its body, 8 cm nearer the mug."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         scene = tabletop_scene(description_from(str(EXAMPLES / f"{name}.py")))

@@ -23,6 +23,9 @@ from robocram.robots import (
     load_description,
 )
 from robocram.robots.description import DEFAULT_ALLOWED_CONTACTS
+from robocram.robots.robot_model import RobotModel
+from robocram.robots.self_contacts import SelfContacts
+from robocram.robots.srdf import read_srdf
 
 from .conftest import TINY_URDF
 
@@ -112,10 +115,34 @@ def test_srdf_draft_checks_as_the_plain_draft_does(tucked_srdf: Path) -> None:
     assert "arm arm: parking" in [r.name for r in card.results]
 
 
-def test_srdf_without_named_states_keeps_the_sampled_parking() -> None:
+def test_srdf_without_named_states_keeps_the_drafted_parking() -> None:
     plain, srdf = _draft(FETCH_URDF), _draft(FETCH_URDF, FETCH_SRDF)
     assert srdf.description.arms["arm"].parking == plain.description.arms["arm"].parking
     assert "no state named stow" in srdf.doubts["arms.arm.parking"]
+
+
+@pytest.mark.filterwarnings("ignore::robocram.robots.MissingMeshWarning")
+def test_the_fetchs_own_srdf_has_no_named_state_so_it_parks_stowed() -> None:
+    """fetch_moveit_config's SRDF: groups, an end effector and 134 disabled pairs, but no
+    ``group_state``; the disabled pairs become allowed contacts, parking the stowed pose."""
+    assert "group_state" not in FETCH_SRDF.read_text(encoding="utf-8")
+    draft = _draft(FETCH_URDF, FETCH_SRDF)
+    desc = draft.description
+    semantics = read_srdf(
+        FETCH_SRDF, RobotModel.from_file(FETCH_URDF, missing_packages_as_boxes=True)
+    )
+    assert semantics.states == ()
+    assert len(semantics.disabled_pairs) == 134
+    assert desc.allowed_contacts == DEFAULT_ALLOWED_CONTACTS + semantics.disabled_pairs
+    parking = dict(desc.arms["arm"].parking)
+    assert set(parking) == set(ARM)
+    assert draft.why["arms.arm.parking"].startswith("stowed: within limits")
+    model = load_description(desc).model
+    assert not SelfContacts(model).touches(parking)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        card = check_robot(desc)
+    assert [r.name for r in card.results if not r.passed] == ["arm arm: grip"]  # boxed fingers
 
 
 def test_srdf_state_named_like_stow_wins_over_tuck(tmp_path: Path) -> None:

@@ -23,9 +23,9 @@ from robocram.kinematics.ik_result import IKResult
 from robocram.kinematics.ik_solver import CollisionCheck, IKSolver
 from robocram.kinematics.kinematics_cache import KinematicsCache
 from robocram.kinematics.planar_base import (
-    BASE_JOINTS,
     BaseMotion,
     PlanarBase,
+    for_robot,
     split_base_motion,
 )
 from robocram.kinematics.planar_fit import planar_fits
@@ -43,8 +43,9 @@ class BaseIKSolver(IKSolver):
 
     Targets are in the root link where the robot stands now; results carry the base's
     move in ``IKResult.base_motion`` and the robot's joints in ``joint_positions``.
-    A collision check gets the virtual base joints (``BASE_JOINTS``) among the values;
-    :func:`~robocram.kinematics.planar_base.split_base_motion` separates them.
+    A collision check gets the virtual base joints (``base.joints``) among the values;
+    :func:`~robocram.kinematics.planar_base.split_base_motion` separates them. The base
+    drives as the description says: a differential one never slides sideways.
     """
 
     def __init__(
@@ -57,13 +58,14 @@ class BaseIKSolver(IKSolver):
         *,
         cache: KinematicsCache | None = None,
     ) -> None:
-        self.base = base or PlanarBase()
+        desc = loaded(description)[0] if isinstance(description, str) else description
+        self.base = for_robot(desc, base or PlanarBase())
         super().__init__(description, arm, use_torso, frame, cache=cache)
         self.arm_solver = IKSolver.cached(self.description, arm, use_torso, frame, cache=cache)
 
     def _chain(self, model: RobotModel, joints: tuple[str, ...]) -> ArmChain:
         extended = robot_kinematics(self.cache.planar_model(model, self.base))
-        return ArmChain(extended, (*BASE_JOINTS, *joints), self.frame)
+        return ArmChain(extended, (*self.base.joints, *joints), self.frame)
 
     @classmethod
     def cached(
@@ -80,7 +82,7 @@ class BaseIKSolver(IKSolver):
         default the one the model keeps)."""
         desc, model = loaded(description)
         cache = cache or KinematicsCache.of(model)
-        base = base or PlanarBase()
+        base = for_robot(desc, base or PlanarBase())
         key = (cls, model, arm, use_torso, frame, base)
         solver = cache.solvers.get(key)
         if isinstance(solver, cls) and solver.description.arms == desc.arms:
@@ -136,6 +138,6 @@ class BaseIKSolver(IKSolver):
             return
         # the arm table's frame: the parent of the arm's first variable, at the seed (the
         # last FK of the chain, made by ``locate``), in the virtual origin = the root link
-        arm_base = self.chain.data.oMi[self.arm_solver.chain.first_row + len(BASE_JOINTS)]
+        arm_base = self.chain.data.oMi[self.arm_solver.chain.first_row + len(self.base.joints)]
         fits = planar_fits(self.arm_solver.table, arm_base, in_base, self.base, PLANAR_STARTS)
         yield from self._with_seed(fits.starts, fits.cost, reference, seed_distance, random_seed)

@@ -7,6 +7,11 @@ the sample's orientation onto the target's (the rotation about z nearest, in the
 sense, to ``R_target R_sample^T``), then the shift that puts the positions over each other.
 What is left (height and tilt, weighted like the table's pose distance) is the misfit.
 Starts are ranked by misfit plus a cost on the move, so that small base motions come first.
+
+A differential base reaches the same move by turning towards it (or away, to back up),
+driving and turning to the yaw; its start is given in those variables, and its move costs
+the drive and both turns. A move sideways thus costs two turns: IK prefers the poses a
+drive reaches along its heading, not those that need it to turn about near the furniture.
 """
 
 from __future__ import annotations
@@ -17,7 +22,7 @@ import numpy as np
 import pinocchio as pin
 
 from robocram.kinematics.arm_chain import FloatArray
-from robocram.kinematics.planar_base import PlanarBase
+from robocram.kinematics.planar_base import MAX_TURN, PlanarBase
 from robocram.kinematics.seed_table import ROTATION_WEIGHT, SeedTable
 
 MOTION_WEIGHT = 0.1  # cost per metre of base travel, against metres of misfit
@@ -57,7 +62,12 @@ def planar_fits(
     trace = c * (m00 + m11) + s * (m10 - m01) + m22
     tilt2 = np.maximum(6.0 - 2.0 * trace, 0.0)  # |Rz R_sample - R_target|_F^2
     misfit = np.sqrt((goal[2] - position[:, 2]) ** 2 + ROTATION_WEIGHT**2 * tilt2)
-    motion = np.hypot(x, y) + TURN_WEIGHT * np.abs(yaw)
+    variables = _differential(x, y, yaw) if base.differential else np.column_stack((x, y, yaw))
+    if base.differential:
+        turns = np.abs(variables[:, 0]) + np.abs(variables[:, 2])
+        motion = np.abs(variables[:, 1]) + TURN_WEIGHT * turns
+    else:
+        motion = np.hypot(x, y) + TURN_WEIGHT * np.abs(yaw)
     cost = misfit + MOTION_WEIGHT * motion
     inside = (np.abs(x) <= base.travel_x) & (np.abs(y) <= base.travel_y)
     inside &= np.abs(yaw) <= base.travel_yaw
@@ -65,5 +75,18 @@ def planar_fits(
     if rows.size > count:
         rows = rows[np.argpartition(cost[rows], count)[:count]]
     rows = rows[np.argsort(cost[rows], kind="stable")]
-    starts = np.hstack((np.column_stack((x[rows], y[rows], yaw[rows])), table.configurations[rows]))
+    starts = np.hstack((variables[rows], table.configurations[rows]))
     return PlanarFits(starts, cost[rows])
+
+
+def _differential(x: FloatArray, y: FloatArray, yaw: FloatArray) -> FloatArray:
+    """Moves ``(x, y, yaw)`` as a differential base's (turn, drive, turn), the first turn at
+    most a quarter each way (beyond, the base backs up)."""
+    turn = np.arctan2(y, x)
+    drive = np.hypot(x, y)
+    back = np.abs(turn) > MAX_TURN
+    turn = np.where(back, turn - np.copysign(np.pi, turn), turn)
+    drive = np.where(back, -drive, drive)
+    turn = np.where(drive == 0.0, 0.0, turn)
+    last = np.remainder(yaw - turn + np.pi, 2 * np.pi) - np.pi
+    return np.column_stack((turn, drive, last))

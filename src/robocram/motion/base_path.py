@@ -91,7 +91,8 @@ def plan_base_path(
             obstacle and how far along it is.
         MotionError: a non-finite goal or a non-positive budget or turning radius.
     """
-    car = holonomic is False or (holonomic is None and not world.robot(robot).description.holonomic)
+    drive = world.robot(robot).description.drive
+    car = holonomic is False or (holonomic is None and drive != "holonomic")
     _check_request(goal, budget, turning_radius)
     radius = turning_radius if car else None
     allowed = frozenset(allowed_links)

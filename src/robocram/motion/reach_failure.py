@@ -5,7 +5,9 @@ the arm's reach (``beyond_reach``). The message names the colliding link pairs a
 only what applies: moving the base closer only when the target is out of reach (and by how
 much), the other arm only when the robot has one, letting the hand touch only when the
 hand hit an object while every contact was forbidden, adding links to ``hand_links`` only
-when a link below the wrist that is not listed hit the object being grasped.
+when a link below the wrist that is not listed hit the object being grasped. A planar arm
+(its reach envelope a thin slice, :mod:`robocram.robots.arm_slice`) that missed without
+its base is told to reach with its base (``base_in_ik``), not to turn or move the base.
 """
 
 from __future__ import annotations
@@ -13,6 +15,7 @@ from __future__ import annotations
 from robocram.execution.failures import ManipulationPoseUnreachable
 from robocram.kinematics import IKResult
 from robocram.robots import ArmDescription, RobotDescription
+from robocram.robots.arm_slice import slice_advice
 from robocram.robots.model_pose import subtree_links
 from robocram.tf import Pose
 
@@ -78,7 +81,10 @@ def _within_length_advice(result: IKResult) -> str:
 
 def _advice(desc: RobotDescription, spec: ArmDescription, mode: str, result: IKResult) -> list[str]:
     advice = []
-    if result.beyond_reach > 0:
+    planar = slice_advice(desc, spec, result.base_motion is not None)
+    if planar is not None and (result.beyond_reach > 0 or not result.colliding_pairs):
+        advice.append(planar)
+    elif result.beyond_reach > 0:
         advice.append(f"move the base at least {result.beyond_reach:.3f} m closer")
     hand = set(spec.hand_links) | set(spec.gripper_links)
     hand |= {spec.end_effector_link, spec.tool_frame}
@@ -99,7 +105,9 @@ def _advice(desc: RobotDescription, spec: ArmDescription, mode: str, result: IKR
     if links - hand - set(unlisted):
         advice.append("approach from another side, or place the base so the arm clears it")
     if result.beyond_reach <= 0 and not result.colliding_pairs:
-        advice.append(_within_length_advice(result))
+        within = _within_length_advice(result)
+        if planar is None or not within.startswith("the joint limits"):
+            advice.append(within)
     others = [k for k in desc.arms if k not in (spec.name, desc.neck_arm)]
     if others and (result.beyond_reach > 0 or not result.colliding_pairs):
         advice.append(f"or use the other arm ({', '.join(others)})")

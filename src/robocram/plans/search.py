@@ -3,7 +3,10 @@
 The candidate places come from the knowledge base: first the object type's usual places
 (``usual_location(Type, Env, Link)``), then every other supporting surface
 (``supporting_surface(Env, Link)``). A place the KB names a container (a drawer, a door)
-is opened first, as CRAM does, and looked into from where it was opened; the containers
+is opened first, as CRAM does, and looked into from where it was opened, at the middle of
+what opening pulled out (a drawer's frame sits at its front: looking there cut the inside
+off); if the object is not seen from there (a camera too low to see over the drawer's
+front, as Stretch's without a torso), from where that middle is visible. The containers
 opened are in the log, so a caller closes them again. For each place the plan asks for a
 location from which the robot sees it (``visible_for``, a location designator resolved by whatever
 resolver the environment has, e.g. costmaps), tries up to ``poses_per_place`` of its
@@ -86,17 +89,29 @@ def _look_from_places(
     return None
 
 
-def _look_into(place: Place, wanted: ObjectDesignator, log: SearchLog) -> ObjectDesignator | None:
-    """Open the container ``place`` and look into it from where it was opened."""
+def _look_into(
+    place: Place, wanted: ObjectDesignator, log: SearchLog
+) -> tuple[ObjectDesignator | None, PoseStamped]:
+    """Open the container ``place`` and look into it from where it was opened; the object
+    seen (or None) and the point looked at: the middle of what opening pulled out."""
+    closed = place_point(place)
+    inside = closed
     try:
         log.opened.append(open_from_front(place.link, log.attempts))
+        inside = _pulled_out_middle(closed, place_point(place))
         if has_torso(current_robot()):
             move_torso("upper")  # see over the drawer's front, into it
-        look(place_point(place))
-        return detect(wanted)
+        look(inside)
+        return detect(wanted), inside
     except PlanFailure as failure:
         log.failures.append(failure)
-        return None
+        return None, inside
+
+
+def _pulled_out_middle(closed: PoseStamped, opened: PoseStamped) -> PoseStamped:
+    """The middle between a container's point closed and opened: of what opening exposed."""
+    (cx, cy, cz), (ox, oy, oz) = closed.position, opened.position
+    return PoseStamped("map", ((cx + ox) / 2, (cy + oy) / 2, (cz + oz) / 2))
 
 
 def search(
@@ -117,11 +132,12 @@ def search(
     park_arms()
     for place in candidate_places(object_type):
         log.searched.append(place)
+        target = place_point(place)
         if open_containers and is_container(place.environment, place.link):
-            seen = _look_into(place, wanted, log)
+            seen, target = _look_into(place, wanted, log)
             if seen is not None:
                 return seen
-        seen = _look_from_places(robot, place_point(place), wanted, poses_per_place, log)
+        seen = _look_from_places(robot, target, wanted, poses_per_place, log)
         if seen is not None:
             return seen
     names = tuple(p.link for p in log.searched)

@@ -30,6 +30,8 @@ from robocram.projection.trajectory_follower import follow
 from robocram.tf import Pose, PoseLike, PoseStamped
 from robocram.tf import quaternion as quat
 
+FIXED_TOLERANCE = 1e-3  # [m | rad] a fixed base "drives" only to where it stands
+
 
 def planar(pose: Pose, z: float) -> Pose:
     """``pose`` flattened onto the plane at height ``z`` [m]: x, y and yaw kept."""
@@ -45,12 +47,21 @@ def drive(
     ``allowed_links`` may touch things on the way (the hand holding a door's handle).
 
     Raises:
-        NavigationPoseUnreachable: the robot would collide there; it stays where it was.
+        NavigationPoseUnreachable: the robot would collide there, or its base is fixed
+            (``base_type="fixed"``) and the target is elsewhere; it stays where it was.
     """
     start = robot.base_pose()
     goal = planar(robot.in_map(target), start.position[2])
     if not all(math.isfinite(v) for v in goal.position):
         raise ValueError(f"navigation target {target!r} has a non-finite position")
+    if robot.description.drive == "fixed" and (
+        start.distance_to(goal) > FIXED_TOLERANCE or start.angle_to(goal) > FIXED_TOLERANCE
+    ):
+        raise NavigationPoseUnreachable(
+            f"{robot.name}'s base is fixed (base_type='fixed'): it stays where it stands; "
+            "stand the robot where it works, or give the base type it has",
+            target=target,
+        )
     try:
         path = plan_base_path(
             robot.world, robot.name, goal, seed=robot.motion.seed, allowed_links=allowed_links
@@ -63,14 +74,28 @@ def drive(
 
 
 def unchecked_base_motion(robot: ProjectedRobot, goal: Pose) -> JointTrajectory:
-    """The straight, timed base motion to ``goal`` with no check (CRAM's ``allow_all``)."""
+    """The timed base motion to ``goal`` with no check (CRAM's ``allow_all``): straight for
+    a holonomic base; else turn, drive along the heading, turn (never sideways)."""
     start = robot.base_pose()
     yaw0 = quat.to_euler(start.orientation)[2]
     turn = quat.to_euler(goal.orientation)[2] - yaw0
     yaw1 = yaw0 + math.atan2(math.sin(turn), math.cos(turn))  # the shorter way round
     ends = [(*start.position[:2], yaw0), (*goal.position[:2], yaw1)]
+    if robot.description.drive != "holonomic":
+        local = start.inverse() * goal
+        motion = BaseMotion(local.position[0], local.position[1], yaw1 - yaw0)
+        ends = [_in_map(start, yaw0, step) for step in motion.drive_steps()]
     limits = joint_limits(robot.description, BASE_JOINTS)
     return time_parameterize(robot.name, BASE_JOINTS, ends, limits, kind="base")
+
+
+def _in_map(
+    start: Pose, yaw0: float, step: tuple[float, float, float]
+) -> tuple[float, float, float]:
+    """A step ``(x, y, yaw)`` of the base's own frame at ``start`` as map x, y, yaw."""
+    x, y, yaw = step
+    c, s = math.cos(yaw0), math.sin(yaw0)
+    return (start.position[0] + c * x - s * y, start.position[1] + s * x + c * y, yaw0 + yaw)
 
 
 def place_base(robot: ProjectedRobot, goal: Pose) -> None:

@@ -13,12 +13,14 @@ import math
 import numpy as np
 
 from robocram.execution import PlanFailure
+from robocram.kinematics import base_in_ik
 from robocram.projection.arm import move_joints, move_tcp
 from robocram.projection.gripper import close_gripper, grip, open_gripper, release
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robot_check.report_card import CheckResult
 from robocram.robots import ArmDescription
 from robocram.robots.arm_envelope import arm_reach, working_yaw
+from robocram.robots.arm_slice import slice_advice
 from robocram.robots.link_centre import link_centre
 from robocram.tf import Pose, Vector3
 from robocram.tf import quaternion as quat
@@ -162,7 +164,8 @@ def reach_and_grip(robot: ProjectedRobot, key: str, arm: ArmDescription) -> list
             detail = f"tool at {_fmt(reached.position)} (map)"
             return [CheckResult(f"{key} arm: reach", True, detail, ""), _grip(robot, key, reached)]
     fix = "check the arm's joints and base_link, and that the tool frame is at the fingers"
-    return [CheckResult(f"{key} arm: reach", False, errors[0], fix)]
+    planar = slice_advice(robot.description, arm, base_in_ik(robot.description, key))
+    return [CheckResult(f"{key} arm: reach", False, errors[0], planar or fix)]
 
 
 def _grip(robot: ProjectedRobot, key: str, tool: Pose) -> CheckResult:

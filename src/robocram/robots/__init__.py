@@ -2,6 +2,7 @@
 
 from robocram.robots.description import (
     ArmDescription,
+    BaseType,
     CameraDescription,
     LoadedDescription,
     PanTiltDescription,
@@ -33,6 +34,7 @@ from robocram.robots.urdf_elements import Geometry, Inertial, Joint, Link, Mimic
 
 __all__ = [
     "ArmDescription",
+    "BaseType",
     "BoxSpec",
     "CameraDescription",
     "DescriptionCheckError",

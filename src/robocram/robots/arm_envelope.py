@@ -132,7 +132,8 @@ def arm_reach(
     return max(ends)
 
 
-def _samples(model: RobotModel, joints: tuple[str, ...]) -> list[dict[str, float]]:
+def joint_samples(model: RobotModel, joints: tuple[str, ...]) -> list[dict[str, float]]:
+    """:data:`SAMPLES` seeded values of ``joints``, uniform within their limits."""
     rng = np.random.default_rng(0)
     columns = {}
     for name in joints:
@@ -175,7 +176,7 @@ def _working_yaw(
     offsets = np.array(
         [
             np.subtract(link_pose(model, arm.end_effector_link, {**held, **s}).position, shoulder)
-            for s in _samples(model, rest)
+            for s in joint_samples(model, rest)
         ]
     )
     distances = np.hypot(offsets[:, 0], offsets[:, 1])

@@ -11,6 +11,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass, field, fields
 from pathlib import Path
+from typing import Literal, get_args
 
 from robocram.robots.errors import DescriptionError
 from robocram.robots.findings import Finding
@@ -56,7 +57,7 @@ class ArmDescription:
     carrying: Mapping[str, float] = field(default_factory=dict)
     side: str | None = None  # "left" | "right": the side CRAM's two-armed motions call it
     gripper: GripperDescription | None = None
-    # IK moves the base too (planar x, y, yaw); None: when the arm, torso included, has < 6 joints
+    # IK moves the base too; None: when the arm's reach envelope is a thin slice or small
     base_in_ik: bool | None = None
 
 
@@ -108,6 +109,12 @@ class PanTiltDescription:
         return (self.pan_joint, self.pan_link), (self.tilt_joint, self.tilt_link)
 
 
+BaseType = Literal["holonomic", "differential", "fixed"]
+"""How the base moves: ``holonomic`` drives any way (omni wheels, casters), ``differential``
+only forward, backward and turning (two driven wheels on one axle), ``fixed`` not at all."""
+BASE_TYPES: tuple[str, ...] = get_args(BaseType)
+
+
 DEFAULT_ALLOWED_CONTACTS: tuple[tuple[str, str], ...] = (("*", "floor"), ("gripper", "held"))
 """Which contacts are not collisions, as ``(robot links, other)`` rules. Robot links: ``*``
 (any), ``gripper`` or ``hand`` (an arm's, with that arm's held object), ``base`` (links not
@@ -142,9 +149,23 @@ class RobotDescription:
     package_paths: tuple[Path, ...] = ()
     flying: bool = False
     acceleration_limits: Mapping[str, float] = field(default_factory=dict)  # [rad/s^2 | m/s^2]
-    holonomic: bool = True  # the base drives sideways; False: paths of a car (Reeds-Shepp)
+    holonomic: bool = True  # the base drives sideways; False: differential (kept for old files)
+    base_type: BaseType | None = None  # None: from ``holonomic``; set, it wins over it
     allowed_contacts: tuple[tuple[str, str], ...] = DEFAULT_ALLOWED_CONTACTS
     model: RobotModel | None = None
+
+    def __post_init__(self) -> None:
+        if self.base_type is not None and self.base_type not in BASE_TYPES:
+            raise DescriptionError(
+                f"base_type {self.base_type!r} of {self.name!r} is none of {BASE_TYPES}"
+            )
+
+    @property
+    def drive(self) -> BaseType:
+        """How the base moves: ``base_type``, else ``holonomic`` (True) or ``differential``."""
+        if self.base_type is not None:
+            return self.base_type
+        return "holonomic" if self.holonomic else "differential"
 
     def arm_called(self, word: str) -> str:
         """The key of the arm ``word`` names: its own name, or the ``side`` it is on.

@@ -111,14 +111,26 @@ def _corners(collision: Collision) -> list[np.ndarray]:
     ]
 
 
+def link_box(link: Link) -> Box | None:
+    """The box [m, link frame] around ``link``'s collision shapes, or None (none readable)."""
+    corners = [c for collision in link.collisions for c in _corners(collision)]
+    if not corners:
+        return None
+    stacked = np.asarray(corners)
+    low, high = stacked.min(axis=0), stacked.max(axis=0)
+    return (
+        (float(low[0]), float(low[1]), float(low[2])),
+        (float(high[0]), float(high[1]), float(high[2])),
+    )
+
+
 def link_centre(link: Link) -> tuple[float, float, float]:
     """Centre [m, link frame] of the bounding box of ``link``'s collision shapes.
 
     The link frame's origin when it has none (or none whose size can be read).
     """
-    corners = [c for collision in link.collisions for c in _corners(collision)]
-    if not corners:
+    box = link_box(link)
+    if box is None:
         return (0.0, 0.0, 0.0)
-    stacked = np.asarray(corners)
-    centre = (stacked.min(axis=0) + stacked.max(axis=0)) / 2
+    centre = (np.asarray(box[0]) + np.asarray(box[1])) / 2
     return (float(centre[0]), float(centre[1]), float(centre[2]))

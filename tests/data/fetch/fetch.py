@@ -20,6 +20,8 @@ def description() -> RobotDescription:
         urdf=URDF,
         # why: the URDF's root link: the robot's base
         base_frame="base_link",
+        # why: r_wheel_joint and l_wheel_joint drive two wheels on one axle: no sideways motion
+        base_type="differential",
         # why: vertical prismatic joint carrying 2 of the arms and cameras
         torso_joint="torso_lift_joint",
         # why: one gripper-like end
@@ -36,16 +38,16 @@ def description() -> RobotDescription:
                 # why: the finger joints (prismatic, or leaves) right below the wrist; fingers and
                 #   hand links are found at load
                 gripper_joints=("r_gripper_finger_joint", "l_gripper_finger_joint"),
-                # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
-                # TODO doubt: no collision check here: `robocram robot check` drives it
+                # why: stowed: within limits, the arm within 0.37 m of the base's middle (the
+                #   sampled pose: touching), no link touching another (meshes)
                 parking={
-                    "shoulder_pan_joint": -1.581,
-                    "shoulder_lift_joint": 1.139,
-                    "upperarm_roll_joint": -0.201,
-                    "elbow_flex_joint": 2.078,
-                    "forearm_roll_joint": -0.475,
-                    "wrist_flex_joint": -2.085,
-                    "wrist_roll_joint": 0.099,
+                    "shoulder_pan_joint": -0.245,
+                    "shoulder_lift_joint": 1.298,
+                    "upperarm_roll_joint": 1.508,
+                    "elbow_flex_joint": -2.251,
+                    "forearm_roll_joint": -2.039,
+                    "wrist_flex_joint": 1.529,
+                    "wrist_roll_joint": 0.562,
                 },
             ),
         },

@@ -27,6 +27,9 @@ def description() -> RobotDescription:
         urdf=URDF,
         # why: the URDF's root link: the robot's base
         base_frame="base_link",
+        # why: joint_right_wheel and joint_left_wheel drive two wheels on one axle: no sideways
+        #   motion
+        base_type="differential",
         # why: one gripper-like end
         arms={
             "arm": ArmDescription(
@@ -49,14 +52,14 @@ def description() -> RobotDescription:
                 # why: the finger joints (prismatic, or leaves) right below the wrist; fingers and
                 #   hand links are found at load
                 gripper_joints=("joint_gripper_finger_right", "joint_gripper_finger_left"),
-                # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
-                # TODO doubt: no collision check here: `robocram robot check` drives it
+                # why: stowed: within limits, the telescope retracted, the arm within 0.20 m of the
+                #   base's middle (the sampled pose: touching), no link touching another (meshes)
                 parking={
-                    "joint_lift": 0.177,
+                    "joint_lift": 0.218,
                     "joint_arm_l3": 0.0,
-                    "joint_wrist_yaw": 3.56,
-                    "joint_wrist_pitch": 0.437,
-                    "joint_wrist_roll": 2.806,
+                    "joint_wrist_yaw": 3.4,
+                    "joint_wrist_pitch": -0.438,
+                    "joint_wrist_roll": -1.346,
                 },
             ),
         },

@@ -13,7 +13,7 @@ from robocram.robots.draft.finger_spread import opens_at_upper
 from robocram.robots.draft.hands import Hand
 from robocram.robots.draft.link_poses import link_poses
 from robocram.robots.draft.model_tree import ModelTree
-from robocram.robots.draft.parking import parking_pose
+from robocram.robots.draft.stowing import drafted_parking
 from robocram.robots.draft.tool_frames import approach_and_opening, tool_frame
 from robocram.robots.gripper import GripperDescription, GripperJoint
 from robocram.robots.model_additions import FrameSpec
@@ -71,7 +71,7 @@ def draft_arm(tree: ModelTree, hand: Hand, name: str, torso: str | None) -> Draf
     joints = tuple(j.name for j in chain if j.mimic is None)
     base = tree.model.joints[joints[0]].parent
     tool = tool_frame(tree, hand, name)
-    parking = parking_pose(tree.model, joints, hand.end_effector_link)
+    parking = drafted_parking(tree.model, joints, hand.end_effector_link)
     reversed_joints = (
         list(hand.gripper_joints) if hand.opens_at_lower else _closing_upwards(tree, hand)
     )
@@ -85,7 +85,7 @@ def draft_arm(tree: ModelTree, hand: Hand, name: str, torso: str | None) -> Draf
         base_link=base,
         joints=joints,
         gripper_joints=() if gripper else hand.gripper_joints,
-        parking=parking,
+        parking=parking.values,
         side=name if name in ("left", "right") else None,
         gripper=gripper,
     )
@@ -97,9 +97,9 @@ def draft_arm(tree: ModelTree, hand: Hand, name: str, torso: str | None) -> Draf
         "tool_frame": tool.why,
         "gripper_joints": hand.why_gripper + "; fingers and hand links are found at load",
         "gripper": f"{hand.why_gripper}; open at the lower limit, where the fingers part",
-        "parking": "sampled in limits (seed 0): wrist low beside the shoulder, out of view",
+        "parking": parking.why,
     }
-    doubts = {"parking": "no collision check here: `robocram robot check` drives it"}
+    doubts = {"parking": parking.doubt} if parking.doubt else {}
     if hand.doubt_gripper:
         doubts["gripper_joints"] = hand.doubt_gripper
     if tool.doubt:

@@ -20,6 +20,7 @@ from robocram.robots.description import (
 )
 from robocram.robots.description_check import infer_arm
 from robocram.robots.draft.arms import arm_names, draft_arm
+from robocram.robots.draft.base_drive import find_base_drive
 from robocram.robots.draft.camera_sensors import camera_sensors
 from robocram.robots.draft.cameras import DEFAULT_HFOV, DEFAULT_VFOV, find_camera, find_neck
 from robocram.robots.draft.draft_source import draft_source
@@ -89,6 +90,8 @@ def draft_description(
         why["coupled_joints"] = "; ".join(t.why for t in telescopes)
     semantics = None if srdf is None else read_srdf(srdf, model)
     tree = ModelTree(model)
+    drive = find_base_drive(tree)
+    _note(why, doubts, "base_type", drive.why, drive.doubt)
     hands = find_hands(tree)
     cameras = [c for c in _camera_guess(tree, [h.end_effector_link for h in hands])]
     torso = find_torso(tree, [h.end_effector_link for h in hands], cameras)
@@ -119,6 +122,7 @@ def draft_description(
         name=name or model.name,
         urdf=path,
         base_frame=model.root_link,
+        base_type=drive.base_type,
         torso_link=torso.link,
         torso_joint=torso.joint,
         arms=arms,

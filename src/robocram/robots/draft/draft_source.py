@@ -148,6 +148,8 @@ def _urdf_code(urdf: Path, module_file: Path | None) -> str:
 def _body(desc: RobotDescription, notes: _Notes) -> object:
     fields = [Item("name", desc.name), Item("urdf", Code("URDF"))]
     fields.append(notes.item("base_frame", "base_frame", desc.base_frame))
+    if desc.base_type is not None:
+        fields.append(notes.item("base_type", "base_type", desc.base_type))
     if desc.torso_joint is not None:
         # its link, the joint's child, is derived at load
         fields.append(notes.item("torso_joint", "torso_joint", desc.torso_joint))

@@ -26,15 +26,17 @@ LOOK_DOWN = math.radians(30.0)  # [rad] a parked neck holds the camera looking t
 FLOOR_CLEARANCE = 0.15  # [m] every arm joint stays this high over the root link (the floor)
 
 
-def _limits(model: RobotModel, joint: str) -> tuple[float, float]:
+def joint_range(model: RobotModel, joint: str) -> tuple[float, float]:
+    """``joint``'s limits [rad | m], a full turn each way where the URDF gives none."""
     spec = model.joints[joint]
     lower = -math.pi if spec.lower is None or not math.isfinite(spec.lower) else spec.lower
     upper = math.pi if spec.upper is None or not math.isfinite(spec.upper) else spec.upper
     return lower, upper
 
 
-class _ArmChain:
-    """Forward kinematics of one arm chain only, for a fast search."""
+class ChainPoses:
+    """Forward kinematics of one arm chain only, for a fast search: ``chain`` holds every
+    joint from the first arm joint's parent down to ``wrist``."""
 
     def __init__(self, model: RobotModel, joints: Sequence[str], wrist: str) -> None:
         self.model = model
@@ -49,6 +51,8 @@ class _ArmChain:
         for joint in self.chain:
             pose = pose * joint.origin
             value = by_name.get(joint.name, 0.0)
+            if joint.mimic is not None and joint.mimic.joint in by_name:  # a coupled follower
+                value = joint.mimic.multiplier * by_name[joint.mimic.joint] + joint.mimic.offset
             if joint.movable and value:
                 pose = pose * joint_motion(joint.axis, joint.type, value)
             found.append(pose)
@@ -59,7 +63,7 @@ class _ArmChain:
         return [np.asarray(pose.position) for pose in self.poses(values)]
 
 
-def _cost(chain: _ArmChain, values: Sequence[float], goal: np.ndarray, side: float) -> float:
+def _cost(chain: ChainPoses, values: Sequence[float], goal: np.ndarray, side: float) -> float:
     points = chain.points(values)
     cost = float(np.linalg.norm(points[-1] - goal))
     for point in points:
@@ -73,7 +77,7 @@ def parking_pose(
     model: RobotModel, joints: Sequence[str], wrist: str, seed: int = 0
 ) -> dict[str, float]:
     """Joint values [rad | m] within limits that park the arm; ``seed`` fixes the search."""
-    chain = _ArmChain(model, joints, wrist)
+    chain = ChainPoses(model, joints, wrist)
     shoulder = chain.points([0.0] * len(joints))[0]
     side = float(np.sign(shoulder[1])) if abs(shoulder[1]) > 0.05 else 0.0
     goal = shoulder + np.array((0.0, side * OUTWARD, -BELOW))
@@ -93,7 +97,7 @@ def neck_pose(
     Ahead is :data:`LOOK_DOWN` below the root link's x, with the image's x to the right;
     ``offset`` is the optical frame's pose in ``camera`` (one added in code).
     """
-    chain = _ArmChain(model, joints, camera)
+    chain = ChainPoses(model, joints, camera)
     wanted = np.array((math.cos(LOOK_DOWN), 0.0, -math.sin(LOOK_DOWN)))
 
     def cost(values: Sequence[float]) -> float:
@@ -110,7 +114,7 @@ def _search(
     seed: int,
 ) -> dict[str, float]:
     """Seeded sampling within the limits, then coordinate descent on ``cost``."""
-    limits = [_limits(model, j) for j in joints]
+    limits = [joint_range(model, j) for j in joints]
     rng = random.Random(seed)
     best = [min(max(0.0, lo), hi) for lo, hi in limits]
     best_cost = cost(best)

@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from robocram.robots.description import ArmDescription, RobotDescription
-from robocram.robots.draft.parking import parking_pose
+from robocram.robots.draft.stowing import drafted_parking
 from robocram.robots.robot_model import RobotModel
 from robocram.robots.srdf import Srdf, SrdfEndEffector, SrdfGroup
 
@@ -119,10 +119,12 @@ def _srdf_arm(
         doubts.pop(f"{path}.parking", None)
     else:
         if set(joints) != set(parking):
-            parking = parking_pose(model, joints, arm.end_effector_link)
+            drafted = drafted_parking(model, joints, arm.end_effector_link)
+            parking = drafted.values
+            why[f"{path}.parking"] = drafted.why
         doubts[f"{path}.parking"] = (
-            f"sampled: {name} has no state named {' or '.join(PARKING_WORDS)} for group "
-            f"{group.name!r}; `robocram robot check` drives it"
+            f"{name} has no state named {' or '.join(PARKING_WORDS)} for group "
+            f"{group.name!r}: the draft's own pose; `robocram robot check` drives it"
         )
     return replace(
         arm,

@@ -1,0 +1,118 @@
+"""How a drafted robot's base drives, read from its wheels.
+
+Two driven wheels on one axle (their joints turn about one horizontal line, both fixed to
+the body) can only drive forward, backward and turn: a differential base (Stretch, the
+Fetch, TIAGo). Wheels on steering joints (the PR2's casters, the HSR's turning drive unit)
+or four fixed wheels (mecanum, TIAGo Pro's) drive any way: holonomic. A URDF with no
+wheels says nothing; the draft keeps the holonomic default and marks the doubt.
+"""
+
+from __future__ import annotations
+
+import itertools
+from dataclasses import dataclass
+
+import numpy as np
+
+from robocram.robots.description import BaseType
+from robocram.robots.draft.link_poses import axis_in_root, link_poses
+from robocram.robots.draft.model_tree import ModelTree
+from robocram.robots.urdf_elements import Joint
+
+HORIZONTAL = 0.1  # |z| of a unit axis in the root link below which it is horizontal
+VERTICAL = 0.9  # |z| above which it is vertical (a steering joint)
+COAXIAL = 0.01  # [m] two wheel origins this close to one axis line share the axle
+MIN_TRACK = 0.1  # [m] between the wheels of one axle
+LOW = 0.3  # [m] a wheel's axle is at most this high over the lowest link (the floor)
+
+
+@dataclass(frozen=True)
+class BaseDrive:
+    """The drafted base type, why, and the doubt left."""
+
+    base_type: BaseType
+    why: str
+    doubt: str | None = None
+
+
+def _turns_freely(joint: Joint) -> bool:
+    """A continuous joint, or a revolute one whose range is at least a full turn."""
+    if joint.type == "continuous":
+        return True
+    lower, upper = joint.lower, joint.upper
+    return joint.type == "revolute" and (lower is None or upper is None or upper - lower >= 6.28)
+
+
+def _wheels(tree: ModelTree, links: set[str]) -> list[Joint]:
+    """Leaf joints below ``links`` that turn freely about a low horizontal axis: wheels."""
+    model, poses = tree.model, link_poses(tree.model)
+    floor = min(pose.position[2] for pose in poses.values())
+    return [
+        joint
+        for joint in model.joints.values()
+        if joint.parent in links
+        and joint.mimic is None
+        and (poses[joint.parent] * joint.origin).position[2] <= floor + LOW
+        and _turns_freely(joint)
+        and abs(axis_in_root(model, joint.name, poses)[2]) < HORIZONTAL
+        and not any(j.movable for j in tree.subtree_joints(joint.child))
+    ]
+
+
+def _axles(tree: ModelTree, wheels: list[Joint]) -> list[tuple[Joint, Joint]]:
+    """Pairs of ``wheels`` turning about one line, at least :data:`MIN_TRACK` apart."""
+    model, poses = tree.model, link_poses(tree.model)
+    pairs = []
+    for a, b in itertools.combinations(wheels, 2):
+        axis = axis_in_root(model, a.name, poses)
+        if abs(float(axis @ axis_in_root(model, b.name, poses))) < 0.99:
+            continue
+        apart = np.subtract(
+            (poses[b.parent] * b.origin).position, (poses[a.parent] * a.origin).position
+        )
+        off_axis = apart - (apart @ axis) * axis
+        if np.linalg.norm(off_axis) < COAXIAL and abs(float(apart @ axis)) >= MIN_TRACK:
+            pairs.append((a, b))
+    return pairs
+
+
+def _steered(tree: ModelTree, body: set[str]) -> list[Joint]:
+    """Joints on the body that turn freely about a vertical axis and carry a wheel."""
+    model, poses = tree.model, link_poses(tree.model)
+    return [
+        joint
+        for joint in model.joints.values()
+        if joint.parent in body
+        and _turns_freely(joint)
+        and abs(axis_in_root(model, joint.name, poses)[2]) > VERTICAL
+        and _wheels(tree, {joint.child, *tree.subtree_links(joint.child)})
+    ]
+
+
+def find_base_drive(tree: ModelTree) -> BaseDrive:
+    """The base type the wheels say (see the module docstring)."""
+    model = tree.model
+    planar = [j.name for j in model.joints.values() if j.type == "planar"]
+    if planar:
+        return BaseDrive("holonomic", f"planar joint {planar[0]} moves the base any way")
+    body = tree.rigid_group(model.root_link)
+    fixed = _wheels(tree, body)
+    axles = _axles(tree, fixed)
+    if len(fixed) == 2 and len(axles) == 1:
+        left, right = axles[0]
+        why = f"{left.name} and {right.name} drive two wheels on one axle: no sideways motion"
+        return BaseDrive("differential", why)
+    steered = _steered(tree, body)
+    if steered:
+        names = ", ".join(j.name for j in steered)
+        return BaseDrive("holonomic", f"wheels on steering joints ({names}) drive any way")
+    if len(fixed) >= 4 and len(axles) >= 2:
+        names = ", ".join(j.name for j in fixed)
+        why = f"{len(fixed)} wheels on fixed axles ({names}): mecanum wheels drive any way"
+        doubt = "skid-steered wheels would not: then say base_type='differential'"
+        return BaseDrive("holonomic", why, doubt)
+    doubt = (
+        "holonomic assumed; say 'differential' for two wheels "
+        "on one axle, 'fixed' for a base that stays"
+    )
+    return BaseDrive("holonomic", "no driven wheels in the URDF: the default", doubt)

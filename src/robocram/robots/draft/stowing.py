@@ -1,0 +1,212 @@
+"""A stowed parking pose for a drafted arm: compact, within limits, touching nothing.
+
+A real robot parks its arm stowed: folded close to its body, a telescope retracted, so
+that the base fits where it stands at counters (Stretch's sampled pose left the gripper
+sticking out, and every kitchen stand was refused as ``robot_collision_free``). Without
+an SRDF naming one, the draft searches for it: the arm's joint origins and hand kept
+horizontally close to the middle of the base, the hand not above the shoulder (out of
+the camera's view), everything above the floor and on the arm's own side, a telescope at
+its retracted limit. Candidates are checked on the collision meshes
+(:class:`~robocram.robots.self_contacts.SelfContacts`).
+The stowed pose replaces the sampled one (:mod:`~robocram.robots.draft.parking`) where
+it touches nothing and is more compact, or where the sampled one touches and the stowed
+one is about as compact (:func:`better_parking`).
+"""
+
+from __future__ import annotations
+
+import math
+import random
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from robocram.robots.draft.link_poses import axis_in_root, link_poses
+from robocram.robots.draft.model_tree import ModelTree
+from robocram.robots.draft.parking import FLOOR_CLEARANCE, ChainPoses, joint_range, parking_pose
+from robocram.robots.link_centre import link_centre
+from robocram.robots.robot_model import RobotModel
+from robocram.robots.self_contacts import SelfContacts
+from robocram.tf import Pose
+
+SAMPLES = 800
+CANDIDATES = 200  # cheapest samples checked for contacts, in order
+REFINE_ROUNDS = 4
+BETTER = 0.02  # [m] closer to the base's middle than the sampled pose by this, to replace it
+SLACK = 0.1  # [m] farther out than a sampled pose that touches, at most, to replace it
+VERTICAL = 0.9  # |z| of a unit axis above which a sliding joint is a lift, not a telescope
+
+
+@dataclass(frozen=True)
+class Stowed:
+    """Arm joint values, how far [m] the arm gets from the base's middle, whether it touches."""
+
+    values: dict[str, float]
+    extent: float
+    touches: bool
+
+
+def _retracted(model: RobotModel, joints: Sequence[str]) -> dict[str, float]:
+    """Sliding joints that are no lift, at their limit nearest zero: a telescope retracted."""
+    poses = link_poses(model)
+    fixed = {}
+    for name in joints:
+        spec = model.joints[name]
+        if spec.type == "prismatic" and abs(axis_in_root(model, name, poses)[2]) <= VERTICAL:
+            lower, upper = joint_range(model, name)
+            fixed[name] = lower if abs(lower) <= abs(upper) else upper
+    return fixed
+
+
+class _Search:
+    """The arm's points for a pose, their cost, and the contact check."""
+
+    def __init__(
+        self, model: RobotModel, joints: Sequence[str], wrist: str, contacts: SelfContacts
+    ) -> None:
+        self.joints = tuple(joints)
+        self.chain = ChainPoses(model, joints, wrist)
+        self.limits = [joint_range(model, j) for j in joints]
+        self.fixed = _retracted(model, joints)
+        self.contacts = contacts
+        tree, poses = ModelTree(model), link_poses(model)
+        hand = [wrist, *tree.subtree_links(wrist)]
+        self.hand = [
+            poses[wrist].inverse() * poses[n] * Pose(link_centre(model.links[n])) for n in hand
+        ]
+        base = [
+            (poses[n] * Pose(link_centre(model.links[n]))).position
+            for n in tree.rigid_group(model.root_link)
+        ]
+        self.middle = np.mean(np.asarray(base)[:, :2], axis=0)
+        shoulder = (self.chain.base * self.chain.chain[0].origin).position
+        self.shoulder = float(shoulder[2])
+        across = shoulder[1] - self.middle[1]  # an arm on one side stays on it
+        self.side = float(np.sign(across)) if abs(across) > 0.05 else 0.0
+
+    def points(self, values: Sequence[float]) -> np.ndarray:
+        poses = self.chain.poses(values)
+        found = [p.position for p in poses] + [(poses[-1] * h).position for h in self.hand]
+        return np.asarray(found)
+
+    def extent(self, values: Sequence[float]) -> float:
+        return float(np.linalg.norm(self.points(values)[:, :2] - self.middle, axis=1).max())
+
+    def cost(self, values: Sequence[float]) -> float:
+        points = self.points(values)
+        low = np.maximum(FLOOR_CLEARANCE - points[:, 2], 0.0).sum()
+        hand = points[-len(self.hand) :, 2]
+        high = np.maximum(hand - self.shoulder, 0.0).sum()
+        spread = np.linalg.norm(points[:, :2] - self.middle, axis=1)
+        crossed = np.maximum(self.side * (self.middle[1] - points[:, 1]), 0.0).sum()
+        return float(spread.max() + 0.1 * spread.mean() + 2.0 * low + high + crossed)
+
+    def touches(self, values: Sequence[float]) -> bool:
+        return self.contacts.touches(dict(zip(self.joints, values, strict=True)))
+
+    def sample(self, rng: random.Random) -> list[float]:
+        return [
+            self.fixed.get(name, rng.uniform(lo, hi))
+            for name, (lo, hi) in zip(self.joints, self.limits, strict=True)
+        ]
+
+    def refine(self, values: list[float]) -> list[float]:
+        """Coordinate descent on the cost, each step kept only if it touches nothing."""
+        best, best_cost, step = values, self.cost(values), 0.2
+        for _ in range(REFINE_ROUNDS):
+            for i, (lo, hi) in enumerate(self.limits):
+                if self.joints[i] in self.fixed:
+                    continue
+                for delta in (-step, step):
+                    trial = list(best)
+                    trial[i] = min(max(trial[i] + delta, lo), hi)
+                    cost = self.cost(trial)
+                    if cost < best_cost and not self.touches(trial):
+                        best, best_cost = trial, cost
+            step /= 2
+        return best
+
+    def judged(self, values: Sequence[float]) -> Stowed:
+        named = dict(zip(self.joints, values, strict=True))
+        return Stowed(named, self.extent(values), self.touches(values))
+
+
+def stowed_pose(
+    model: RobotModel,
+    joints: Sequence[str],
+    wrist: str,
+    contacts: SelfContacts | None = None,
+    seed: int = 0,
+) -> Stowed | None:
+    """The stowed pose of the arm (see the module docstring), or None if every candidate
+    touches; values within limits, to 3 decimals."""
+    search = _Search(model, joints, wrist, contacts or SelfContacts(model))
+    rng = random.Random(seed)
+    ranked = sorted((search.sample(rng) for _ in range(SAMPLES)), key=search.cost)
+    for values in ranked[:CANDIDATES]:
+        if not search.touches(values):
+            best = search.refine(values)
+            judged = search.judged(
+                [_rounded(v, lim) for v, lim in zip(best, search.limits, strict=True)]
+            )
+            return None if judged.touches else judged
+    return None
+
+
+def judged_parking(
+    model: RobotModel, parking: Mapping[str, float], wrist: str, contacts: SelfContacts
+) -> Stowed:
+    """How far the arm parked at ``parking`` gets from the base's middle, and if it touches."""
+    search = _Search(model, list(parking), wrist, contacts)
+    return search.judged(list(parking.values()))
+
+
+def better_parking(stowed: Stowed | None, sampled: Stowed) -> bool:
+    """Whether the stowed pose replaces the sampled one: it touches nothing and is more
+    compact, or the sampled one touches and the stowed one is about as compact."""
+    if stowed is None or stowed.touches:
+        return False
+    if sampled.touches:
+        return stowed.extent <= sampled.extent + SLACK
+    return stowed.extent < sampled.extent - BETTER
+
+
+@dataclass(frozen=True)
+class DraftedParking:
+    """The parking pose a draft writes, why, and the doubt left."""
+
+    values: dict[str, float]
+    why: str
+    doubt: str | None
+
+
+def drafted_parking(model: RobotModel, joints: Sequence[str], wrist: str) -> DraftedParking:
+    """The stowed pose where it is better than the sampled one (:func:`better_parking`),
+    else the sampled one; the model keeps the meshes checked for the next arm."""
+    contacts = model.derived(SelfContacts)
+    sampled = judged_parking(model, parking_pose(model, joints, wrist), wrist, contacts)
+    stowed = stowed_pose(model, joints, wrist, contacts)
+    if stowed is not None and better_parking(stowed, sampled):
+        retracted = ", the telescope retracted" if _retracted(model, joints) else ""
+        was = "touching" if sampled.touches else f"{sampled.extent:.2f} m out"
+        why = (
+            f"stowed: within limits{retracted}, the arm within {stowed.extent:.2f} m of the "
+            f"base's middle (the sampled pose: {was}), no link touching another (meshes)"
+        )
+        return DraftedParking(stowed.values, why, None)
+    why = "sampled in limits (seed 0): wrist low beside the shoulder, out of view"
+    doubt = "no collision check here: `robocram robot check` drives it"
+    if sampled.touches:
+        pairs = ", ".join("/".join(p) for p in contacts.meeting(sampled.values)[:2])
+        doubt = f"its links touch ({pairs}) and no stowed pose was found: give one"
+    return DraftedParking(sampled.values, why, doubt)
+
+
+def _rounded(value: float, limits: tuple[float, float]) -> float:
+    rounded = round(value, 3)
+    if rounded > limits[1]:
+        return math.floor(limits[1] * 1000) / 1000
+    if rounded < limits[0]:
+        return math.ceil(limits[0] * 1000) / 1000
+    return rounded

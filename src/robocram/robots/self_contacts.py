@@ -1,0 +1,104 @@
+"""Which links of a robot meet in a configuration, on their collision meshes, without physics.
+
+The draft has no world to ask (only ``robocram.world`` runs PyBullet), so it checks a
+pose it proposes through pinocchio's geometry (coal underneath), as MoveIt's setup
+assistant does before it writes an SRDF: pairs of links joined by one joint (fixed
+joints merged), and pairs that already meet with every joint at zero (within limits),
+are left out; every other pair counts.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from collections.abc import Mapping
+
+import numpy as np
+import pinocchio as pin
+
+from robocram.robots.mimic import mimic_followers
+from robocram.robots.robot_model import RobotModel
+
+
+class SelfContacts:
+    """The robot's collision meshes and the pairs that count (see the module docstring)."""
+
+    def __init__(self, model: RobotModel) -> None:
+        self.model = model
+        text = model.to_urdf()
+        self.kinematics = pin.buildModelFromXML(text)
+        self.geometry = pin.buildGeomFromUrdfString(self.kinematics, text, pin.COLLISION)
+        self.links = [
+            self.kinematics.frames[g.parentFrame].name for g in self.geometry.geometryObjects
+        ]
+        adjacent = self._adjacent()
+        for i, j in itertools.combinations(range(len(self.links)), 2):
+            a, b = self.links[i], self.links[j]
+            if a != b and frozenset((a, b)) not in adjacent:
+                self.geometry.addCollisionPair(pin.CollisionPair(i, j))
+        self.data = self.kinematics.createData()
+        self.geometry_data = pin.GeometryData(self.geometry)
+        at_zero = self._meeting(self._q({}))
+        for index in sorted(at_zero, reverse=True):
+            self.geometry.removeCollisionPair(self.geometry.collisionPairs[index])
+        self.geometry_data = pin.GeometryData(self.geometry)
+
+    def _adjacent(self) -> set[frozenset[str]]:
+        """Pairs of links joined by one joint, fixed joints merged."""
+        group: dict[str, str] = {}
+        for link in self.model.links:
+            top = link
+            joint = self.model.parent_joint(top)
+            while joint is not None and joint.type == "fixed":
+                top = joint.parent
+                joint = self.model.parent_joint(top)
+            group[link] = top
+        members: dict[str, list[str]] = {}
+        for link, top in group.items():
+            members.setdefault(top, []).append(link)
+        pairs = {
+            frozenset(p) for links in members.values() for p in itertools.combinations(links, 2)
+        }
+        for joint in self.model.joints.values():
+            if joint.type != "fixed":
+                for a in members[group[joint.parent]]:
+                    pairs.update(frozenset((a, b)) for b in members[group[joint.child]])
+        return pairs
+
+    def _q(self, values: Mapping[str, float]) -> np.ndarray:
+        q = pin.neutral(self.kinematics)
+        every = mimic_followers(self.model, {k: float(v) for k, v in values.items()})
+        for name, spec in self.model.joints.items():
+            if not spec.movable or not self.kinematics.existJointName(name):
+                continue
+            lower = -math.inf if spec.lower is None else spec.lower
+            upper = math.inf if spec.upper is None else spec.upper
+            value = every.get(name, min(max(0.0, lower), upper))
+            joint = self.kinematics.joints[self.kinematics.getJointId(name)]
+            if joint.nq == 2:  # a continuous joint: cos, sin
+                q[joint.idx_q : joint.idx_q + 2] = (math.cos(value), math.sin(value))
+            else:
+                q[joint.idx_q] = value
+        return q
+
+    def _meeting(self, q: np.ndarray) -> list[int]:
+        pin.computeCollisions(
+            self.kinematics, self.data, self.geometry, self.geometry_data, q, False
+        )
+        return [i for i, r in enumerate(self.geometry_data.collisionResults) if r.isCollision()]
+
+    def meeting(self, values: Mapping[str, float]) -> list[tuple[str, str]]:
+        """The pairs of links that meet with ``values`` set (other joints at zero)."""
+        pairs = self.geometry.collisionPairs
+        found = []
+        for index in self._meeting(self._q(values)):
+            pair = pairs[index]
+            found.append((self.links[pair.first], self.links[pair.second]))
+        return sorted(set(found))
+
+    def touches(self, values: Mapping[str, float]) -> bool:
+        """Whether any counted pair meets with ``values`` set."""
+        q = self._q(values)
+        return pin.computeCollisions(
+            self.kinematics, self.data, self.geometry, self.geometry_data, q, True
+        )
