@@ -9,17 +9,22 @@ from __future__ import annotations
 
 import difflib
 import importlib.util
+import math
 import warnings
 from pathlib import Path
 from types import ModuleType
 
 import pytest
 
+from robocram.kinematics import solve_ik
 from robocram.plans import pick_up
 from robocram.projection import simulated_robot
 from robocram.robot_check import check_robot, description_from
 from robocram.robots import draft_description
-from robocram.scenes import UnfitRobotError, tabletop_scene
+from robocram.scenes import UnfitRobotError, tabletop_placement, tabletop_scene
+from robocram.scenes.standing import PEDESTAL_GAP, PEDESTAL_TABLE
+from robocram.tf import Pose
+from robocram.tf import quaternion as quat
 from robocram.world import World
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "robots"
@@ -96,8 +101,44 @@ def test_pick_up_runs_unchanged_on_drafted_robots(name: str, arm: str) -> None:
 
 
 @pytest.mark.filterwarnings("ignore::robocram.robots.DescriptionWarning")  # no camera
-def test_a_floor_standing_arm_is_told_why_the_tabletop_scene_does_not_fit() -> None:
+@pytest.mark.parametrize("name", ["z1", "so101", "panda"])
+def test_a_floor_standing_arm_stands_on_a_pedestal_at_a_lab_table(name: str) -> None:
+    """Its shoulder is too low for a table: a pedestal lifts it, the table is 0.7 m high,
+    the robot does not touch the pedestal, and its hand reaches down to the mug."""
+    scene = tabletop_scene(description_from(str(EXAMPLES / f"{name}.py")))
+    world, robot = scene.world, scene.robot
+    try:
+        assert scene.look_target.position[2] == pytest.approx(PEDESTAL_TABLE, abs=1e-6)
+        top = world.aabb("pedestal")[1][2]
+        assert world.aabb(robot)[0][2] - top == pytest.approx(PEDESTAL_GAP, abs=1e-3)
+        assert world.object("pedestal").type == "pedestal"
+        assert not world.collisions(robot, ignore=["floor"])
+        desc = world.robot(robot).description
+        arm = next(a for a in desc.arms.values() if a.gripper_joints)
+        mug = world.pose("mug-1").position
+        down = quat.from_euler(0.0, math.pi / 2, 0.0)  # the tool's x (its approach) down
+        grasp = world.pose(robot).inverse() * Pose((mug[0], mug[1], mug[2] + 0.05), down)
+        result = solve_ik(desc, arm.name, grasp, orientation_tolerance=0.2)
+        assert result.success, f"{name} cannot grasp the mug from above"
+    finally:
+        world.close()
+
+
+@pytest.mark.filterwarnings("ignore::robocram.robots.DescriptionWarning")  # no camera
+def test_a_floor_standing_arm_placed_by_hand_is_told_why_the_table_does_not_fit() -> None:
     desc = description_from(str(EXAMPLES / "z1.py"))
-    too_low = r"shoulder of its 'arm' arm is 0\.06 m above the floor, too low"
+    too_low = r"shoulder of its 'arm' arm is 0\.06 m above the floor, too low.*pedestal"
     with World() as world, pytest.raises(UnfitRobotError, match=too_low):
-        tabletop_scene(desc, world)
+        world.add_robot(desc)
+        tabletop_placement(world, desc.name)
+
+
+def test_a_robot_whose_root_is_not_at_its_feet_stands_on_the_floor() -> None:
+    """TALOS's root is its pelvis: the scene lifts it onto its feet, then says that its
+    camera sees the table only beyond its arm's reach."""
+    desc = description_from(str(EXAMPLES / "talos.py"))
+    with World() as world:
+        with pytest.raises(UnfitRobotError, match=r"reaches 0\.68 m but the mug .* camera's view"):
+            tabletop_scene(desc, world)
+        assert world.aabb(desc.name)[0][2] == pytest.approx(0.0, abs=0.01)
+        assert world.pose(desc.name).position[2] > 0.8

@@ -20,7 +20,9 @@ Nothing is keyed on robot names, so a new robot gets a scene too. The rules:
   panned towards the table and tilted down as far as it goes with the torso up, meets
   it: looking aims that axis at the target, and a camera close above a low table cannot
   look that steeply;
-- the shoulder must reach the wrist's grasp position, else the robot is unfit.
+- the shoulder must reach the wrist's grasp position, else the robot is unfit;
+- heights are the map's: a robot lifted onto the floor or a pedestal
+  (:mod:`robocram.scenes.standing`) gets its table that much higher.
 """
 
 from __future__ import annotations
@@ -33,6 +35,7 @@ from robocram.robots import ArmDescription, LoadedDescription
 from robocram.robots.arm_envelope import arm_envelope, lift_joints
 from robocram.robots.model_pose import finite_limits
 from robocram.scenes.errors import UnfitRobotError
+from robocram.scenes.standing import root_fixed_links
 from robocram.tf import Pose, Vector3
 from robocram.tf import quaternion as quat
 from robocram.world import World
@@ -174,20 +177,35 @@ def _nearest_in_view(desc: LoadedDescription, height: float, yaw: float = 0.0) -
 def _footprint_front(world: World, robot: str, below: float) -> float:
     """Foremost x [m] of the robot's links fixed to its root and reaching below ``below``."""
     desc = world.robot(robot).description
-    fixed = {desc.model.root_link}
-    for joint in desc.model.joints.values():  # URDF order lists parents before children
-        if joint.type == "fixed" and joint.parent in fixed:
-            fixed.add(joint.child)
     front = 0.0
-    for link in sorted(fixed & set(world.link_names(robot))):
+    for link in sorted(root_fixed_links(desc) & set(world.link_names(robot))):
         low, high = world.link_aabb(robot, link)
         if low[0] <= high[0] and low[2] < below:
             front = max(front, high[0])
     return front
 
 
+def _shoulder_in_map(world: World, robot: str, arm: ArmDescription) -> Vector3:
+    """The arm's shoulder (torso half raised) in the map, the robot as it stands now."""
+    desc = world.robot(robot).description
+    local = _shoulder(desc, arm, _joints_for_torso(desc, arm))
+    return (world.pose(robot) * Pose(local)).position
+
+
+def table_height(
+    world: World, robot: str, arm: ArmDescription, below: float = WRIST_BELOW_SHOULDER
+) -> float:
+    """The height [m] of a table top under ``arm``'s hand grasping from above with the
+    wrist ``below`` [m] under the shoulder, the robot as it stands now (at most 0: its
+    shoulder is too low for any table)."""
+    desc = world.robot(robot).description
+    wrist_z = _shoulder_in_map(world, robot, arm)[2] - below
+    return wrist_z - _hand_length(desc, arm) - GRASP_HEIGHT
+
+
 def tabletop_placement(world: World, robot: str) -> TabletopPlacement:
-    """The table and mug placement for ``robot`` (already in ``world`` at the origin)."""
+    """The table and mug placement for ``robot`` (already in ``world``, standing where the
+    scene stands it: heights are the map's)."""
     desc = world.robot(robot).description
     arm = placement_arm(desc)
     if arm is None:
@@ -196,31 +214,43 @@ def tabletop_placement(world: World, robot: str) -> TabletopPlacement:
             "it has no arm with joints and a gripper to pick the mug with; give an "
             "ArmDescription joints (or a base_link) and gripper_joints (or gripper=...)",
         )
-    torso = _joints_for_torso(desc, arm)
-    yaw = quat.to_euler(world.pose(robot).orientation)[2]
-    turn = Pose(orientation=quat.from_euler(0.0, 0.0, yaw))
-    shoulder = (turn * Pose(_shoulder(desc, arm, torso))).position
-    wrist_z = shoulder[2] - WRIST_BELOW_SHOULDER
-    table_height = wrist_z - _hand_length(desc, arm) - GRASP_HEIGHT
-    reach = arm_envelope(desc.model, arm, torso).reach
-    past_base = _footprint_front(world, robot, table_height) + TABLE_GAP + MUG_INSET
-    seen = _nearest_in_view(desc, table_height, yaw)
-    mug_x = max(past_base, shoulder[0] + REACH_SHARE * reach, seen)
-    needed = math.dist(shoulder, (mug_x, shoulder[1], wrist_z))
-    if table_height <= 0:
+    shoulder = _shoulder_in_map(world, robot, arm)
+    height = table_height(world, robot, arm)
+    if height <= 0:
         raise UnfitRobotError(
             robot,
             f"the shoulder of its {arm.name!r} arm is {shoulder[2]:.2f} m above the floor, too low "
-            f"for a table under its hand (it would stand {table_height:.2f} m high): the "
-            "tabletop scene has no pedestal for an arm standing on the floor; build the "
-            "world yourself (world.add_robot(desc, pose=...) at a table's height)",
+            f"for a table under its hand (it would stand {height:.2f} m high): stand it "
+            "higher (tabletop_scene puts such an arm on a pedestal)",
         )
+    placed, unfit = _placement_at(world, robot, arm, WRIST_BELOW_SHOULDER)
+    if placed is None:
+        raise UnfitRobotError(robot, unfit)
+    return placed
+
+
+def _placement_at(
+    world: World, robot: str, arm: ArmDescription, below: float
+) -> tuple[TabletopPlacement | None, str]:
+    """The placement with the grasping wrist ``below`` [m] under the shoulder, or None and
+    why it does not fit."""
+    desc = world.robot(robot).description
+    torso = _joints_for_torso(desc, arm)
+    root = world.pose(robot)
+    yaw = quat.to_euler(root.orientation)[2]
+    shoulder = _shoulder_in_map(world, robot, arm)
+    wrist_z = shoulder[2] - below
+    height = table_height(world, robot, arm, below)
+    reach = arm_envelope(desc.model, arm, torso).reach
+    past_base = _footprint_front(world, robot, height) + TABLE_GAP + MUG_INSET
+    seen = _nearest_in_view(desc, height - root.position[2], yaw)
+    mug_x = max(past_base, shoulder[0] + REACH_SHARE * reach, seen)
+    needed = math.dist(shoulder, (mug_x, shoulder[1], wrist_z))
     if needed > reach:
-        raise UnfitRobotError(
-            robot,
+        return None, (
             f"its {arm.name} arm reaches {reach:.2f} m but the mug in front of its base "
             f"and in its camera's view (from x = {seen:.2f} m) is {needed:.2f} m from the "
-            f"shoulder (table height {table_height:.2f} m)",
+            f"shoulder (table height {height:.2f} m)"
         )
     side = SIDE_SHARE if _pans(desc, arm, torso) else 1.0
-    return TabletopPlacement(arm.name, table_height, (mug_x, side * shoulder[1]))
+    return TabletopPlacement(arm.name, height, (mug_x, side * shoulder[1])), ""

@@ -11,7 +11,19 @@ from dataclasses import dataclass
 
 from robocram.robots import RobotDescription, load_description
 from robocram.scenes.parking import park_arms
-from robocram.scenes.placement import TABLE_DEPTH, facing_yaw, tabletop_placement
+from robocram.scenes.placement import (
+    TABLE_DEPTH,
+    facing_yaw,
+    placement_arm,
+    table_height,
+    tabletop_placement,
+)
+from robocram.scenes.standing import (
+    LOWEST_TABLE,
+    PEDESTAL_TABLE,
+    stand_on_a_pedestal,
+    stand_on_the_floor,
+)
 from robocram.tf import Pose, PoseStamped
 from robocram.tf import quaternion as quat
 from robocram.world import World
@@ -30,6 +42,8 @@ def tabletop_scene(robot: str | RobotDescription, world: World | None = None) ->
     """Floor, ``robot`` (a name, a description file or a description) at the origin, arms
     parked, a table with a mug and a bottle in front of it: along the map's x, where the
     robot's arm works (it stands turned if its arm works sideways, as Stretch's does).
+    A robot whose root is not at its feet stands on the floor; an arm too low for a table
+    stands on a pedestal (:mod:`robocram.scenes.standing`).
 
     Raises:
         UnfitRobotError: the robot has no gripper arm, or it cannot reach past its base.
@@ -40,6 +54,10 @@ def tabletop_scene(robot: str | RobotDescription, world: World | None = None) ->
     turned = quat.from_euler(0.0, 0.0, facing_yaw(desc))
     name = world.add_robot(desc, pose=Pose((0.0, 0.0, 0.0), turned)).name
     park_arms(world, name)
+    stand_on_the_floor(world, name)
+    arm = placement_arm(world.robot(name).description)
+    if arm is not None and table_height(world, name, arm) < LOWEST_TABLE:
+        stand_on_a_pedestal(world, name, PEDESTAL_TABLE - table_height(world, name, arm))
     place = tabletop_placement(world, name)
     height, (mug_x, mug_y), table_x = place.table_height, place.mug_xy, place.table_x
     world.add_box("table", (TABLE_DEPTH, 1.0, height), pose=Pose((table_x, 0.0, height / 2)))
