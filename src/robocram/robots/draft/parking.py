@@ -133,10 +133,10 @@ def _search(
                 if value < best_cost:
                     best, best_cost = trial, value
         step /= 2
-    return {j: _rounded_inside(v, lim) for j, v, lim in zip(joints, best, limits, strict=True)}
+    return {j: rounded_inside(v, lim) for j, v, lim in zip(joints, best, limits, strict=True)}
 
 
-def _rounded_inside(value: float, limits: tuple[float, float]) -> float:
+def rounded_inside(value: float, limits: tuple[float, float]) -> float:
     """``value`` to 3 decimals, rounded towards the inside of ``limits``."""
     rounded = round(value, 3)
     if rounded > limits[1]:

@@ -15,7 +15,6 @@ one is about as compact (:func:`better_parking`).
 
 from __future__ import annotations
 
-import math
 import random
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
@@ -24,7 +23,13 @@ import numpy as np
 
 from robocram.robots.draft.link_poses import axis_in_root, link_poses
 from robocram.robots.draft.model_tree import ModelTree
-from robocram.robots.draft.parking import FLOOR_CLEARANCE, ChainPoses, joint_range, parking_pose
+from robocram.robots.draft.parking import (
+    FLOOR_CLEARANCE,
+    ChainPoses,
+    joint_range,
+    parking_pose,
+    rounded_inside,
+)
 from robocram.robots.link_centre import link_centre
 from robocram.robots.robot_model import RobotModel
 from robocram.robots.self_contacts import SelfContacts
@@ -148,7 +153,7 @@ def stowed_pose(
         if not search.touches(values):
             best = search.refine(values)
             judged = search.judged(
-                [_rounded(v, lim) for v, lim in zip(best, search.limits, strict=True)]
+                [rounded_inside(v, lim) for v, lim in zip(best, search.limits, strict=True)]
             )
             return None if judged.touches else judged
     return None
@@ -201,12 +206,3 @@ def drafted_parking(model: RobotModel, joints: Sequence[str], wrist: str) -> Dra
         pairs = ", ".join("/".join(p) for p in contacts.meeting(sampled.values)[:2])
         doubt = f"its links touch ({pairs}) and no stowed pose was found: give one"
     return DraftedParking(sampled.values, why, doubt)
-
-
-def _rounded(value: float, limits: tuple[float, float]) -> float:
-    rounded = round(value, 3)
-    if rounded > limits[1]:
-        return math.floor(limits[1] * 1000) / 1000
-    if rounded < limits[0]:
-        return math.ceil(limits[0] * 1000) / 1000
-    return rounded
