@@ -22,6 +22,10 @@ from robocram.motion.planar_motion import reeds_shepp_poses, straight_poses, wra
 from robocram.motion.robot_footprint import FloatArray
 
 SIMPLIFY_SHARE = 0.25  # of the budget, added for shortening the path
+# [m, in SE(2)'s distance] longest tree edge. OMPL's default, a fifth of the planning
+# area's extent, is metres in a flat whose walls run 19 m: every extension into a cluttered
+# corner is a long edge, blocked, and its dense check spends the budget growing nothing.
+TREE_STEP = 0.5
 
 
 class _DenseMotions(ob.MotionValidator):
@@ -87,7 +91,9 @@ def planned_waypoints(
 
     validator = _DenseMotions(info, free)
     info.setMotionValidator(validator)
-    setup.setPlanner(og.RRTConnect(info))
+    planner = og.RRTConnect(info)
+    planner.setRange(TREE_STEP)
+    setup.setPlanner(planner)
     ends = []
     for pose in (start, goal):
         state = space.allocState()
