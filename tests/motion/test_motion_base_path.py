@@ -154,3 +154,21 @@ def test_a_goal_turned_half_round_is_planned_to_without_waiting() -> None:
     assert goal_yaw < -math.pi  # the rounding this guards against
     assert -math.pi <= wrapped(goal_yaw) < math.pi
     assert wrapped(goal_yaw) == pytest.approx(-math.pi)
+
+
+def test_a_way_round_far_beyond_the_start_and_goal_is_still_found() -> None:
+    """OMPL samples near the start and goal first (NEAR_MARGIN); a wall whose only way
+    round lies farther out is passed by planning in the whole area next."""
+    from robocram.motion.base_path import NEAR_MARGIN
+
+    with World() as world:
+        world.add_floor()
+        world.add_box("wall", (0.1, 8.6, 1.0), (1.0, 1.7, 0.5))  # y -2.6 .. 6.0
+        world.add_box("marker", (0.2, 0.2, 0.2), (0.0, -6.0, 0.1))  # the area reaches y -6.1
+        world.add_robot("pr2", _pose(-0.5, 0.0, 0.0))
+        for arm in world.robot("pr2").description.arms.values():
+            world.set_joint_states("pr2", dict(arm.parking))
+        path = plan_base_path(world, "pr2", _pose(2.5, 0.0, 0.0), seed=1)
+    assert path.planner == "RRTConnect"
+    assert min(y for _, y, _ in path.poses) < -2.6 < -NEAR_MARGIN
+    assert path.poses[-1][:2] == pytest.approx((2.5, 0.0))

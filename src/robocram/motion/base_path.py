@@ -23,7 +23,7 @@ from robocram.motion.base_collision import ESCAPE, BaseCollisionChecker, blocker
 from robocram.motion.errors import MotionError
 from robocram.motion.joint_limits import joint_limits
 from robocram.motion.joint_trajectory import BASE_JOINTS, JointTrajectory
-from robocram.motion.ompl_base_planner import motion_poses, planned_waypoints
+from robocram.motion.ompl_base_planner import Area, motion_poses, planned_waypoints
 from robocram.motion.time_parameterization import time_parameterize
 from robocram.tf import Pose
 from robocram.world import World
@@ -39,6 +39,10 @@ DETOURS = (  # [m] (backing out of the start, arriving straight at the goal), tr
 )
 COARSE = 5  # a holonomic base's tree edges are checked at every 5th pose while planning
 PLANNING_ATTEMPTS = 3  # seeds tried when the dense check refuses a coarsely planned path
+# [m] OMPL first samples only within the start's and goal's box grown by this, then (if
+# that finds nothing and the world reaches farther) everywhere: a flat's walls span many
+# metres of open floor that would draw the trees away from a narrow way round furniture
+NEAR_MARGIN = 2.0
 
 
 @dataclass(frozen=True)
@@ -184,16 +188,36 @@ def _planned(
 ) -> list[np.ndarray] | None:
     """A planned path that passes the dense check, or None. A holonomic base's tree edges
     are checked :data:`COARSE` times coarser while planning, then the path densely, with
-    the next seed if that fails (a car's curves are checked densely from the start)."""
+    the next seed if that fails (a car's curves are checked densely from the start).
+    Each of :func:`_areas` gets the whole budget."""
     coarse = 1 if radius is not None else COARSE
-    for attempt in range(PLANNING_ATTEMPTS):
-        found = planned_waypoints(
-            checker, start, end, turning_radius=radius, seed=seed + attempt, budget=budget,
-            coarse=coarse,
-        )  # fmt: skip
-        if found is None or coarse == 1 or _dense_free(checker, found):
-            return found
+    for area in _areas(checker, start, end):
+        for attempt in range(PLANNING_ATTEMPTS):
+            found = planned_waypoints(
+                checker, start, end, turning_radius=radius, seed=seed + attempt,
+                budget=budget, coarse=coarse, area=area,
+            )  # fmt: skip
+            if found is None:
+                break
+            if coarse == 1 or _dense_free(checker, found):
+                return found
     return None
+
+
+def _areas(checker: BaseCollisionChecker, start: np.ndarray, end: np.ndarray) -> list[Area]:
+    """Where OMPL samples, in turn: near the start and goal (:data:`NEAR_MARGIN`), then
+    the checker's whole area, if that is larger."""
+    (x0, y0), (x1, y1) = checker.bounds
+    low = (
+        max(x0, min(start[0], end[0]) - NEAR_MARGIN),
+        max(y0, min(start[1], end[1]) - NEAR_MARGIN),
+    )
+    high = (
+        min(x1, max(start[0], end[0]) + NEAR_MARGIN),
+        min(y1, max(start[1], end[1]) + NEAR_MARGIN),
+    )
+    near = ((float(low[0]), float(low[1])), (float(high[0]), float(high[1])))
+    return [near] if near == checker.bounds else [near, checker.bounds]
 
 
 def _dense_free(checker: BaseCollisionChecker, waypoints: list[np.ndarray]) -> bool:

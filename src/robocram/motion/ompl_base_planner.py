@@ -21,6 +21,7 @@ from robocram.motion.ompl_query import POLLS_PER_CHECK, OmplQuery
 from robocram.motion.planar_motion import reeds_shepp_poses, straight_poses, wrapped
 from robocram.motion.robot_footprint import FloatArray
 
+Area = tuple[tuple[float, float], tuple[float, float]]  # [m] lower and upper x, y in map
 SIMPLIFY_SHARE = 0.25  # of the budget, added for shortening the path
 # [m, in SE(2)'s distance] longest tree edge. OMPL's default, a fifth of the planning
 # area's extent, is metres in a flat whose walls run 19 m: every extension into a cluttered
@@ -63,21 +64,24 @@ def planned_waypoints(
     seed: int,
     budget: int,
     coarse: int = 1,
+    area: Area | None = None,
 ) -> list[FloatArray] | None:
     """Waypoints of a free path (None within ``budget`` fast checks); straight between them.
 
     For a car (``turning_radius`` given) the waypoints are the dense poses along its curves.
     ``coarse``: tree edges are checked at every ``coarse``-th dense pose (and the last), so
-    the caller checks the answer densely again.
+    the caller checks the answer densely again. ``area``: where to sample (default: the
+    checker's bounds).
     """
     if turning_radius is None:
         space: ob.StateSpace = ob.SE2StateSpace()
     else:
         space = ob.ReedsSheppStateSpace(turning_radius)
+    lower, upper = area if area is not None else checker.bounds
     bounds = ob.RealVectorBounds(2)
     for axis in (0, 1):
-        bounds.setLow(axis, checker.bounds[0][axis])
-        bounds.setHigh(axis, checker.bounds[1][axis])
+        bounds.setLow(axis, lower[axis])
+        bounds.setHigh(axis, upper[axis])
     space.setBounds(bounds)
     setup = og.SimpleSetup(space)
     setup.setStateValidityChecker(lambda s: checker.pose_free(_pose(s)))
