@@ -152,11 +152,11 @@ class CollisionScene:
         if not drop:
             return False
         geo = self._geometry
-        pairs = [p for k, p in enumerate(geo.geometry.collisionPairs) if k not in drop]
+        pairs = geo.geometry.collisionPairs
+        dropped = [pin.CollisionPair(pairs[k].first, pairs[k].second) for k in sorted(drop)]
+        for pair in dropped:  # one by one: a few, and the others keep their order
+            geo.geometry.removeCollisionPair(pair)
         geo.pair_labels = [lab for k, lab in enumerate(geo.pair_labels) if k not in drop]
-        geo.geometry.removeAllCollisionPairs()
-        for pair in pairs:
-            geo.geometry.addCollisionPair(pin.CollisionPair(pair.first, pair.second))
         geo.forget_sides()
         return True
 
