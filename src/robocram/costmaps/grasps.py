@@ -25,7 +25,7 @@ from robocram.grasping import (
     approach_axis as tool_approach_axis,
 )
 from robocram.kinematics import forward_kinematics
-from robocram.robots import RobotDescription, load_description
+from robocram.robots import LoadedDescription, RobotDescription, load_description
 from robocram.robots.arm_envelope import working_yaw
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
@@ -88,7 +88,7 @@ def grasp_poses(
 
 def arm_working_yaw(desc: RobotDescription, arm: str) -> float:
     """The direction [rad] about the base's z that ``arm`` works in (0: straight ahead)."""
-    loaded = load_description(desc)
+    loaded = _loaded(desc)
     spec = loaded.arms[arm]
     return working_yaw(loaded.model, spec) if spec.joints else 0.0
 
@@ -96,10 +96,16 @@ def arm_working_yaw(desc: RobotDescription, arm: str) -> float:
 def shoulder_offset(desc: RobotDescription, arm: str) -> float:
     """Sideways offset [m] of the arm's first joint across its working direction (the
     base's y for an arm working ahead): the line it reaches along."""
-    model = load_description(desc).model
+    model = _loaded(desc).model
     first = model.joints[desc.arms[arm].joints[0]] if desc.arms[arm].joints else None
     if first is None:
         return 0.0
     x, y, _ = forward_kinematics(desc, {}, first.child).position
     turn = arm_working_yaw(desc, arm)
     return -math.sin(turn) * x + math.cos(turn) * y
+
+
+def _loaded(desc: RobotDescription) -> LoadedDescription:
+    """``desc`` checked and with its model: as it is when already loaded (loading again
+    re-runs every check, ~3 ms, and costmaps ask per arm per stand)."""
+    return desc if isinstance(desc, LoadedDescription) else load_description(desc)

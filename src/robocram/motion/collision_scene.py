@@ -43,8 +43,9 @@ class CollisionScene:
             geometry = build_geometry(snapshot)
             self._geometry = geometry
             self._slots = JointSlots(geometry.kinematics, snapshot.joints, geometry.q0)
+            fulls = [geometry.q0, *(self._slots.full(q) for q in allow_at)]
+            self._drop_pairs(self._own_contacts(fulls))
             self._new_data()
-            self._drop_own_contacts([geometry.q0, *(self._slots.full(q) for q in allow_at)])
         else:
             self._geometry = geometry
             self._slots = JointSlots(geometry.kinematics, snapshot.joints, geometry.q0)
@@ -105,7 +106,7 @@ class CollisionScene:
 
     def _drop_own_contacts(self, fulls: Sequence[NDArray[np.float64]]) -> None:
         """Remove the robot-robot and robot-held pairs touching at any of ``fulls`` (the
-        snapshot's own configuration first), then build the data once for what is left:
+        snapshot's own configuration first), then build the data again for what is left:
         removed pairs cost the checks nothing, unlike switched-off ones."""
         geo = self._geometry
         kinds = [o.kind for o in geo.owners]
@@ -113,15 +114,51 @@ class CollisionScene:
             k for full in fulls for k in self._pairs_at(full)
             if kinds[geo.geometry.collisionPairs[k].second] != "static"
         }  # fmt: skip
+        if self._drop_pairs(drop):
+            self._new_data()
+
+    def _own_contacts(self, fulls: Sequence[NDArray[np.float64]]) -> set[int]:
+        """Indices of the robot-robot and robot-held pairs touching at any of ``fulls``.
+
+        Found on a copy of the geometry holding only those pairs: its data costs a few
+        milliseconds, the full scene's (thousands of static pairs) tens, and a new scene
+        builds that only once, after the drop.
+        """
+        geo = self._geometry
+        kinds = [o.kind for o in geo.owners]
+        pairs = geo.geometry.collisionPairs
+        own = [k for k, pair in enumerate(pairs) if kinds[pair.second] != "static"]
+        if not own:
+            return set()
+        geometry = geo.geometry.copy()
+        geometry.removeAllCollisionPairs()
+        for k in own:
+            geometry.addCollisionPair(pin.CollisionPair(pairs[k].first, pairs[k].second))
+        geometry_data = geometry.createData()
+        for request in geometry_data.collisionRequests:
+            request.security_margin = self.snapshot.margin
+            request.enable_contact = False
+        model = geo.kinematics.model
+        data = model.createData()
+        found: set[int] = set()
+        for full in fulls:
+            pin.computeCollisions(model, data, geometry, geometry_data, full, False)
+            results = geometry_data.collisionResults
+            found.update(k for k, result in zip(own, results, strict=True) if result.isCollision())
+        return found
+
+    def _drop_pairs(self, drop: Collection[int]) -> bool:
+        """Remove the pairs at indices ``drop`` from the geometry; whether any were."""
         if not drop:
-            return
-        pairs = [p for k, p in enumerate(geo.geometry.collisionPairs) if k not in drop]
+            return False
+        geo = self._geometry
+        pairs = geo.geometry.collisionPairs
+        dropped = [pin.CollisionPair(pairs[k].first, pairs[k].second) for k in sorted(drop)]
+        for pair in dropped:  # one by one: a few, and the others keep their order
+            geo.geometry.removeCollisionPair(pair)
         geo.pair_labels = [lab for k, lab in enumerate(geo.pair_labels) if k not in drop]
-        geo.geometry.removeAllCollisionPairs()
-        for pair in pairs:
-            geo.geometry.addCollisionPair(pin.CollisionPair(pair.first, pair.second))
         geo.forget_sides()
-        self._new_data()
+        return True
 
     def _place(self, full: NDArray[np.float64]) -> None:
         geo = self._geometry

@@ -34,6 +34,27 @@ class Sphere:
         return float(np.linalg.norm(self.centre - other.centre)) <= self.radius + other.radius
 
 
+@dataclass(frozen=True)
+class Spheres:
+    """Balls as arrays, so that one ball is tested against all of them at once."""
+
+    centres: NDArray[np.float64]  # (balls, 3)
+    radii: NDArray[np.float64]  # (balls,)
+
+    @classmethod
+    def of(cls, spheres: Collection[Sphere]) -> Spheres:
+        """The balls of ``spheres``."""
+        centres = np.array([s.centre for s in spheres], dtype=float).reshape(-1, 3)
+        return cls(centres, np.array([s.radius for s in spheres], dtype=float))
+
+    def meet(self, other: Sphere) -> bool:
+        """Whether any of the balls meets ``other`` (as :meth:`Sphere.overlaps`)."""
+        if math.isinf(other.radius):
+            return bool(len(self.radii))
+        gaps = np.linalg.norm(self.centres - other.centre, axis=1)
+        return bool(np.any(np.isinf(self.radii) | (gaps <= self.radii + other.radius)))
+
+
 def shape_sphere(geometry: coal.CollisionGeometry, placement: pin.SE3) -> Sphere:
     """The ball around a geometry's local bounding box, at ``placement``."""
     if isinstance(geometry, coal.Halfspace):

@@ -19,7 +19,7 @@ from numpy.typing import NDArray
 from robocram.kinematics.robot_kinematics import RobotKinematics, pose_to_se3, robot_kinematics
 from robocram.motion.allowed_contacts import AllowedContacts, Other
 from robocram.motion.coal_shapes import coal_geometries
-from robocram.motion.reach_bounds import Sphere, reach_sphere, shape_sphere
+from robocram.motion.reach_bounds import Sphere, Spheres, reach_sphere, shape_sphere
 from robocram.motion.scene_snapshot import PlacedShape, SceneSnapshot
 from robocram.motion.self_collision import (
     active_joints,
@@ -143,14 +143,14 @@ def _add_static(
 
     ``spheres`` gets the bounding ball of each static geometry added.
     """
-    moving = [s for s in spheres if s is not None]
+    moving = Spheres.of([s for s in spheres if s is not None])
     skipped = 0
     for n, placed in enumerate(snap.static):
         placement = pose_to_se3(placed.frame_T_shape)
         other = Other(placed.label.split("/")[0], placed.type)
         for k, part in enumerate(_parts(placed)):
             bound = shape_sphere(part, placement)
-            if not any(s.overlaps(bound) for s in moving):
+            if not moving.meet(bound):
                 skipped += 1
                 continue
             geometry.addGeometryObject(

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 from ruckig import InputParameter, Result, Ruckig, Synchronization, Trajectory
@@ -38,14 +39,19 @@ class StraightSegment:
         """Time from rest at ``start`` to rest at ``end`` [s]."""
         return float(self.trajectory.duration)
 
+    @cached_property
+    def _line(self) -> tuple[float, FloatArray]:
+        """The segment's length and unit direction: sampling asks for them per point."""
+        delta = self.end - self.start
+        length = float(np.linalg.norm(delta))
+        return length, delta / length
+
     def state(self, t: float) -> tuple[FloatArray, FloatArray, FloatArray]:
         """Positions, velocities and accelerations at ``t`` [s] after the segment's start.
 
         Positions are projected onto the segment, so they lie on it exactly.
         """
-        delta = self.end - self.start
-        length = float(np.linalg.norm(delta))
-        direction = delta / length
+        length, direction = self._line
         pos, vel, acc = self.trajectory.at_time(min(max(t, 0.0), self.duration))
         if self.along_line:
             s, s_dot, s_ddot = float(pos[0]), float(vel[0]), float(acc[0])

@@ -20,6 +20,7 @@ import numpy as np
 
 from robocram.motion.errors import MotionError
 from robocram.motion.joint_trajectory import FloatArray
+from robocram.robots import RobotModel
 from robocram.world import World
 
 MAX_LINK_TRAVEL = 0.01  # [m] between two checked configurations
@@ -74,10 +75,7 @@ class TravelBound:
             )
         model = world.robot(robot).description.model
         radius = link_radii(world, robot)
-        children: dict[str, list[tuple[str, float]]] = {}
-        for each in model.joints.values():
-            offset = float(np.linalg.norm(each.origin.position))
-            children.setdefault(each.parent, []).append((each.child, offset))
+        children = model.derived(_children)
         lever = []
         per_link: dict[str, FloatArray] = {}
         for i, name in enumerate(joints):
@@ -88,12 +86,25 @@ class TravelBound:
             if joint.type == "prismatic":
                 reach = {link: 1.0 for link in reach}
             for link, value in reach.items():
-                per_link.setdefault(link, np.zeros(len(joints)))[i] = value
+                row = per_link.get(link)
+                if row is None:
+                    row = per_link[link] = np.zeros(len(joints))
+                row[i] = value
             lever.append(max(reach.values(), default=0.0))
         carriers = dict(world.attachments(robot))
         return cls(
             tuple(joints), np.array(lever), max_link_travel, max_joint_step, per_link, carriers
         )
+
+
+def _children(model: RobotModel) -> dict[str, list[tuple[str, float]]]:
+    """Per link: its child links with the length [m] of the joint offset to each. Kept
+    with the model (``RobotModel.derived``): every checked motion asks."""
+    children: dict[str, list[tuple[str, float]]] = {}
+    for each in model.joints.values():
+        offset = float(np.linalg.norm(each.origin.position))
+        children.setdefault(each.parent, []).append((each.child, offset))
+    return children
 
 
 def _reaches(

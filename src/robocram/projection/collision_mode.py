@@ -9,6 +9,7 @@ joints are put back before the check returns, so IK never leaves the robot moved
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
 
 from robocram.kinematics import split_base_motion
 from robocram.motion.collision_modes import COLLISION_MODES, hand_links
@@ -58,18 +59,36 @@ def self_pairs(robot: ProjectedRobot, arm: str) -> list[tuple[str, str]]:
     """Pairs of ``arm``'s links and the robot's other links that may collide: apart now,
     and not joined by one joint (the shoulder sits on the torso)."""
     world = robot.world
-    model = robot.description.model
-    first = model.joints[robot.arm(arm).joints[0]]
-    below = _subtree(model, first.child)
-    others = [link for link in world.link_names(robot.name) if link not in below]
-    mine = [link for link in world.link_names(robot.name) if link in below]
-    touching = set(world.self_contacts(robot.name, [(a, b) for a in mine for b in others]))
-    return [
-        (a, b)
-        for a in mine
-        for b in others
-        if (a, b) not in touching and b != first.parent and a != first.child
-    ]
+    links = tuple(world.link_names(robot.name))
+    first = robot.arm(arm).joints[0]
+    pairs = robot.description.model.derived(_ArmPairs).of(first, links)
+    touching = set(world.self_contacts(robot.name, pairs))
+    return [pair for pair in pairs if pair not in touching]
+
+
+@dataclass
+class _ArmPairs:
+    """Per arm: its links paired with the robot's others, shoulder joint excepted. They
+    follow from the model alone, so they are kept with it (``RobotModel.derived``): IK
+    asks for them at every query."""
+
+    model: RobotModel
+    _found: dict[tuple[str, tuple[str, ...]], list[tuple[str, str]]] = field(default_factory=dict)
+
+    def of(self, first: str, links: tuple[str, ...]) -> list[tuple[str, str]]:
+        """The pairs for the arm whose first joint is ``first``, among ``links``."""
+        key = (first, links)
+        found = self._found.get(key)
+        if found is None:
+            joint = self.model.joints[first]
+            below = _subtree(self.model, joint.child)
+            others = [link for link in links if link not in below]
+            mine = [link for link in links if link in below]
+            found = self._found.setdefault(key, [
+                (a, b) for a in mine for b in others
+                if b != joint.parent and a != joint.child
+            ])  # fmt: skip
+        return found
 
 
 def _subtree(model: RobotModel, link: str) -> set[str]:

@@ -93,7 +93,8 @@ def _tangent_grid(
     steps = (np.arange(grid) + 0.5) / grid
     tx = lo[0] + steps * (hi[0] - lo[0])
     ty = lo[1] + steps * (hi[1] - lo[1])
-    return np.array([[x, y] for y in ty for x in tx])
+    xs, ys = np.meshgrid(tx, ty)  # rows by y, x fastest
+    return np.stack([xs.ravel(), ys.ravel()], axis=1)
 
 
 def _first_hits(world: WorldCore, camera: Camera, tangents: NDArray[np.float64]) -> list[int]:
