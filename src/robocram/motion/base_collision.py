@@ -34,6 +34,8 @@ CHUNK = 128  # poses per batch of fast checks along a motion
 MARGIN = 0.5  # [m] room around the obstacles, start and goal for going around
 ESCAPE = 0.1  # [m] travel from the start during which its contacts are tolerated
 CONFIRM_NEAR = 0.3  # [m] travel from the start or goal within which exact checks decide
+GAP_QUERY = 0.05  # [m] how far an exact check looks for the gap that lets it skip poses
+LOCAL_MARGIN = 0.6  # [m] the first grid covers the start's and goal's box grown by this
 
 
 @dataclass
@@ -56,7 +58,9 @@ class BaseCollisionChecker:
     allowed_links: frozenset[str] = frozenset()  # robot links that may touch (a hand holding)
     fast_checks: int = 0
     exact_checks: int = field(default=0)
+    covered: tuple[tuple[float, float], tuple[float, float]] = ((0.0, 0.0), (0.0, 0.0))
     _obstacles: ObstacleBoxes | None = field(default=None, repr=False)  # read once
+    _bins: HeightBins | None = field(default=None, repr=False)
 
     @classmethod
     def build(
@@ -67,29 +71,40 @@ class BaseCollisionChecker:
         allowed_links: frozenset[str] = frozenset(),
     ) -> BaseCollisionChecker:
         """Rasterise the robot as it stands and the world around it and the goal;
-        ``allowed_links`` may touch anything (the exact check leaves them out)."""
+        ``allowed_links`` may touch anything (the exact check leaves them out).
+
+        The grid first covers only the box round the start and the goal (what the direct
+        motion sweeps); a pose beyond it widens the grid to the whole world at its first
+        fast check (:meth:`_widen`), so detours and planning see everything.
+        """
         start = world.pose(robot)
         carried = _carried(world, robot)
         boxes = _boxes_in_base(world, robot, carried, start)
         bins = HeightBins.up_to(start.position[2] + max(b[1][2] for b in boxes) + CONTACT)
         footprint = RobotFootprint.build(boxes, start.position[2], bins, SPACING, CONTACT)
         skip = {robot, *carried} | {o.name for o in world.objects("floor")}
-        obstacles = [box for o in world.objects() if o.name not in skip
-                     for box in world.link_aabbs(o).values()]  # fmt: skip
-        xs = [start.position[0], goal_xy[0], *(b[k][0] for b in obstacles for k in (0, 1))]
-        ys = [start.position[1], goal_xy[1], *(b[k][1] for b in obstacles for k in (0, 1))]
-        bounds = ((min(xs) - MARGIN, min(ys) - MARGIN), (max(xs) + MARGIN, max(ys) + MARGIN))
-        pad = footprint.reach + footprint.dilation + 2 * CELL
-        grid = ObstacleGrid.build(
-            obstacles,
-            (bounds[0][0] - pad, bounds[0][1] - pad),
-            (bounds[1][0] + pad, bounds[1][1] + pad),
-            CELL,
-            footprint.dilation,
-            bins,
+        obstacles = world.obstacle_boxes(skip)
+        ends = np.array([start.position[:2], goal_xy], dtype=float)
+        low = np.minimum(ends.min(axis=0), obstacles.low[:, :2].min(axis=0, initial=np.inf))
+        high = np.maximum(ends.max(axis=0), obstacles.high[:, :2].max(axis=0, initial=-np.inf))
+        bounds = (
+            (float(low[0]) - MARGIN, float(low[1]) - MARGIN),
+            (float(high[0]) + MARGIN, float(high[1]) + MARGIN),
         )
+        near = (
+            (float(ends[:, 0].min()) - LOCAL_MARGIN, float(ends[:, 1].min()) - LOCAL_MARGIN),
+            (float(ends[:, 0].max()) + LOCAL_MARGIN, float(ends[:, 1].max()) + LOCAL_MARGIN),
+        )
+        covered = (
+            (max(near[0][0], bounds[0][0]), max(near[0][1], bounds[0][1])),
+            (min(near[1][0], bounds[1][0]), min(near[1][1], bounds[1][1])),
+        )
+        grid = _grid(obstacles, covered, footprint, bins)
         checker = cls(world, robot, start, carried, footprint, grid, bounds)
         checker.allowed_links = allowed_links
+        checker.covered = covered
+        checker._obstacles = obstacles
+        checker._bins = bins
         checker.tolerated = frozenset(checker._contacts())
         return checker
 
@@ -102,6 +117,8 @@ class BaseCollisionChecker:
     def fast_hits(self, poses: FloatArray, boundary: bool) -> np.ndarray:
         """Per pose, whether the fast check finds a possible collision."""
         self.fast_checks += len(poses)
+        if self.covered != self.bounds and not self._covers(poses):
+            self._widen()
         fp = self.footprint
         points = fp.boundary_points if boundary else fp.points
         masks = fp.boundary_masks if boundary else fp.masks
@@ -110,6 +127,19 @@ class BaseCollisionChecker:
         y = poses[:, 1:2] + sin * points[:, 0] + cos * points[:, 1]
         cells = np.take(self.grid.masks.ravel(), self.grid.flat_indices(x, y))
         return np.asarray(np.any(cells & masks, axis=1))
+
+    def _covers(self, poses: FloatArray) -> bool:
+        """Whether the grid holds every base position of ``poses`` (its cells reach past
+        them by the robot's reach, so every sample point falls on the grid)."""
+        (x0, y0), (x1, y1) = self.covered
+        xs, ys = poses[:, 0], poses[:, 1]
+        return bool(xs.min() >= x0 and xs.max() <= x1 and ys.min() >= y0 and ys.max() <= y1)
+
+    def _widen(self) -> None:
+        """Rasterise the whole world: a pose left the box round the start and goal."""
+        assert self._obstacles is not None and self._bins is not None  # set by build
+        self.grid = _grid(self._obstacles, self.bounds, self.footprint, self._bins)
+        self.covered = self.bounds
 
     def pose_free(self, pose: FloatArray) -> bool:
         """Whether the robot is free at ``pose`` (fast, then exact where it may collide)."""
@@ -121,23 +151,38 @@ class BaseCollisionChecker:
         """Index of the first pose of a dense motion where the robot collides, or None.
 
         The first pose and every pose after one the exact check had to clear get the full
-        fast check; the others only the boundary's.
+        fast check; the others only the boundary's. A pose the exact check clears also
+        says how far the robot is from everything there: the poses after it that move no
+        point of the robot farther than that are free without a check.
         """
         full_next = True
+        cleared: tuple[FloatArray, float] | None = None  # (pose, gap [m]) of the last exact
         for begin in range(0, len(poses), CHUNK):
             chunk = poses[begin : begin + CHUNK]
             edge = self.fast_hits(chunk, boundary=True)
             for k, pose in enumerate(chunk):
+                if cleared is not None and self._travel(cleared[0], pose) < cleared[1]:
+                    continue  # within the cleared pose's gap; the next checked one is full
+                cleared = None
                 hit = self.fast_hits(pose[None, :], boundary=False)[0] if full_next else edge[k]
                 full_next = False
                 if hit:
-                    if not self._cleared(pose):
+                    gap = self._exact_gap(pose)
+                    if gap is None:
                         return begin + k
+                    cleared = (pose, gap) if gap > 0.0 else None
                     full_next = True
         return None
 
-    def _cleared(self, pose: FloatArray) -> bool:
-        """Whether the exact check clears a pose the fast check flagged.
+    def _travel(self, a: FloatArray, b: FloatArray) -> float:
+        """How far [m] any point of the robot moves at most from base pose ``a`` to ``b``."""
+        return math.hypot(b[0] - a[0], b[1] - a[1]) + self.footprint.reach * abs(_turn(b[2] - a[2]))
+
+    def _exact_gap(self, pose: FloatArray) -> float | None:
+        """None when the exact check does not clear a pose the fast check flagged; else
+        how much farther [m] than the contact distance the robot is from everything (up
+        to :data:`GAP_QUERY`). Near the start, where its contacts are tolerated, the gap
+        is 0: the tolerance ends within :data:`ESCAPE` of travel.
 
         While planning (``confirm_everywhere`` False) it is asked only near the start and
         the goal (within :data:`CONFIRM_NEAR` of travel), where the robot must get close to
@@ -145,23 +190,52 @@ class BaseCollisionChecker:
         clearance, and planning stays fast. The direct motion is confirmed everywhere.
         """
         near = self.confirm_everywhere or any(
-            math.hypot(pose[0] - a[0], pose[1] - a[1]) + self.footprint.reach
-            * abs(_turn(pose[2] - a[2])) <= CONFIRM_NEAR
-            for a in self.anchors
-        )  # fmt: skip
-        return near and not self.blockers(pose)
-
-    def blockers(self, pose: FloatArray) -> list[str]:
-        """What the robot touches at ``pose`` by the exact check (``object/link`` names)."""
+            self._travel(a, pose) <= CONFIRM_NEAR for a in self.anchors
+        )
+        if not near:
+            return None
         self.exact_checks += 1
+        self._place(pose)
+        start = np.array([*self.start.position[:2], yaw_of(self.start)])
+        if self.tolerated and self._travel(start, pose) <= ESCAPE:
+            return None if self._touching(self.tolerated) else 0.0
+        nearest = min(self._distances(), default=GAP_QUERY)
+        return None if nearest <= CONTACT else nearest - CONTACT
+
+    def _place(self, pose: FloatArray) -> None:
         x, y, yaw = (float(v) for v in pose)
         self.world.set_pose(
             self.robot, Pose((x, y, self.start.position[2]), quat.from_euler(0.0, 0.0, yaw))
         )
-        x0, y0 = self.start.position[:2]
-        yaw0 = yaw_of(self.start)
-        travel = math.hypot(x - x0, y - y0) + self.footprint.reach * abs(_turn(yaw - yaw0))
-        tolerated = self.tolerated if travel <= ESCAPE else frozenset()
+
+    def _touching(self, tolerated: frozenset[tuple[str, str]]) -> bool:
+        return any(pair not in tolerated for pair in self._contacts())
+
+    def _distances(self) -> Iterator[float]:
+        """Distances [m] below :data:`GAP_QUERY` from the robot (and what it carries, but
+        not its ``allowed_links``) to every obstacle, where the robot is now."""
+        assert self._obstacles is not None  # read by build
+        group = [self.robot, *self.carried]
+        floors = [o.name for o in self.world.objects("floor")]
+        for body in group:
+            ignore = floors + [g for g in group if g != body]
+            for link, _, _, distance in self.world.link_distances(
+                body, ignore=ignore, distance=GAP_QUERY, obstacles=self._obstacles
+            ):
+                if body != self.robot or link not in self.allowed_links:
+                    yield distance
+
+    def _cleared(self, pose: FloatArray) -> bool:
+        """Whether the exact check clears a pose the fast check flagged (see
+        :meth:`_exact_gap`)."""
+        return self._exact_gap(pose) is not None
+
+    def blockers(self, pose: FloatArray) -> list[str]:
+        """What the robot touches at ``pose`` by the exact check (``object/link`` names)."""
+        self.exact_checks += 1
+        self._place(pose)
+        start = np.array([*self.start.position[:2], yaw_of(self.start)])
+        tolerated = self.tolerated if self._travel(start, pose) <= ESCAPE else frozenset()
         return sorted({other for pair in self._contacts() if pair not in tolerated
                        for other in pair[1:]})  # fmt: skip
 
@@ -173,6 +247,30 @@ class BaseCollisionChecker:
         return _contacts_now(
             self.world, self.robot, self.carried, self.allowed_links, self._obstacles
         )
+
+
+def _grid(
+    obstacles: ObstacleBoxes,
+    area: tuple[tuple[float, float], tuple[float, float]],
+    footprint: RobotFootprint,
+    bins: HeightBins,
+) -> ObstacleGrid:
+    """The obstacle grid over ``area`` (base positions [m]) grown by the robot's reach:
+    only the boxes that reach into it are rasterised. Its corner lies on the lattice of
+    :data:`CELL` through the map's origin, so a local grid and the whole world's share
+    their cells."""
+    pad = footprint.reach + footprint.dilation + 2 * CELL
+    lower = (
+        math.floor((area[0][0] - pad) / CELL) * CELL,
+        math.floor((area[0][1] - pad) / CELL) * CELL,
+    )
+    upper = (area[1][0] + pad, area[1][1] + pad)
+    inside = np.flatnonzero(
+        (obstacles.low[:, 0] <= upper[0]) & (obstacles.high[:, 0] >= lower[0])
+        & (obstacles.low[:, 1] <= upper[1]) & (obstacles.high[:, 1] >= lower[1])
+    )  # fmt: skip
+    boxes: list[Box] = [(tuple(obstacles.low[k]), tuple(obstacles.high[k])) for k in inside]
+    return ObstacleGrid.build(boxes, lower, upper, CELL, footprint.dilation, bins)
 
 
 def _contacts_now(

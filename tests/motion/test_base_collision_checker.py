@@ -1,0 +1,93 @@
+"""The base checker's shortcuts agree with checking every pose exactly: the local grid
+round the start and goal, and the poses skipped within an exact check's gap."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+import numpy as np
+import pytest
+
+from robocram.motion.base_collision import BaseCollisionChecker
+from robocram.motion.planar_motion import straight_poses
+from robocram.scenes import kitchen_scene
+from robocram.tf import Pose
+from robocram.tf import quaternion as quat
+from robocram.world import World
+
+
+@pytest.fixture(scope="module")
+def kitchen() -> Iterator[World]:
+    scene = kitchen_scene("pr2")
+    world = scene.world
+    for arm in world.robot("pr2").description.arms.values():
+        world.set_joint_states("pr2", dict(arm.parking))
+    yield world
+    world.close()
+
+
+def _first_touching(checker: BaseCollisionChecker, poses: np.ndarray) -> int | None:
+    """The first pose where the exact check finds a contact, asked at every pose."""
+    for k, pose in enumerate(poses):
+        if checker.blockers(pose):
+            return k
+    return None
+
+
+@pytest.mark.parametrize(
+    ("start", "end"),
+    [
+        ((-0.8, 0.2, 1.5708), (1.6, 0.2, 1.5708)),  # along the counter, into the island
+        ((-0.8, 0.2, 1.5708), (-0.8, 1.6, 1.5708)),  # towards the counter
+        ((0.3, -0.2, 0.0), (0.3, 1.5, 3.0)),  # turning while driving at the counter
+        ((-2.0, 1.5, 1.5708), (-0.4, 1.5, 1.5708)),  # along the counter, 2-3 cm off it
+        ((-2.0, 1.5, 1.5708), (-0.4, 1.56, 1.5708)),  # ... closing in until it touches
+    ],
+)
+def test_first_blocked_equals_the_exact_check_at_every_pose(
+    kitchen: World, start: tuple[float, float, float], end: tuple[float, float, float]
+) -> None:
+    with kitchen.stored_state():
+        poses = straight_poses(np.array(start), np.array(end), 1.0)
+        kitchen.set_pose("pr2", _pose(*start))
+        with BaseCollisionChecker.build(kitchen, "pr2", end[:2]) as checker:
+            truth = _first_touching(checker, poses)
+            found = checker.first_blocked(poses)
+        assert found == truth
+        assert truth is None or truth > 5  # the case drives some way before it touches
+        with BaseCollisionChecker.build(kitchen, "pr2", end[:2]) as whole:
+            whole._widen()  # noqa: SLF001 - the same question on the whole world's grid
+            assert whole.first_blocked(poses) == truth
+
+
+def test_the_grid_widens_for_a_pose_beyond_the_start_and_goal(kitchen: World) -> None:
+    with kitchen.stored_state():
+        kitchen.set_pose("pr2", _pose(-0.8, 0.2, 1.5708))
+        with BaseCollisionChecker.build(kitchen, "pr2", (-0.5, 0.2)) as checker:
+            local = checker.grid.masks.shape
+            assert checker.covered != checker.bounds
+            far = np.array([[1.5, -1.0, 0.0]])
+            checker.fast_hits(far, boundary=False)
+            assert checker.covered == checker.bounds
+            assert checker.grid.masks.size > 2 * local[0] * local[1]
+
+
+def test_a_gap_skips_exact_checks_near_furniture(kitchen: World) -> None:
+    """Driving along the counter a few centimetres off it: fewer exact checks than poses
+    the fast check flags, and no touching pose missed (the first test's equality)."""
+    with kitchen.stored_state():
+        start, end = (-2.0, 1.5, 1.5708), (-0.4, 1.5, 1.5708)
+        kitchen.set_pose("pr2", _pose(*start))
+        poses = straight_poses(np.array(start), np.array(end), 1.0)
+        with BaseCollisionChecker.build(kitchen, "pr2", end[:2]) as checker:
+            flagged = int(checker.fast_hits(poses, boundary=False).sum())
+            checker.exact_checks = 0
+            result = checker.first_blocked(poses)
+            exact = checker.exact_checks
+            truth = _first_touching(checker, poses)
+        assert result == truth
+        assert flagged == len(poses) and exact < flagged / 2
+
+
+def _pose(x: float, y: float, yaw: float) -> Pose:
+    return Pose((x, y, 0.0), quat.from_euler(0.0, 0.0, yaw))
