@@ -145,7 +145,13 @@ class ReachabilityMaps:
         key = (id(robot.model), arm)
         entry = self._maps.get(key)
         if entry is None or entry[0] is not robot.model:  # ids of dead models get reused
-            entry = (robot.model, self._load_or_build(robot, arm))
+            assert robot.model is not None
+            kept = robot.model.derived(_kept_with_model)  # a new resolver (each batch
+            path = str(_cache_file(robot, arm, self.samples))  # variant's) reads no file
+            found = kept.get(path)
+            if found is None or found.robot != robot.name:
+                found = kept[path] = self._load_or_build(robot, arm)
+            entry = (robot.model, found)
             self._maps[key] = entry
         return entry[1]
 
@@ -163,3 +169,10 @@ class ReachabilityMaps:
             np.savez_compressed(out, scores=built.scores)
         os.replace(tmp, path)
         return built
+
+
+def _kept_with_model(model: object) -> dict[str, ReachabilityMap]:
+    """The maps a robot model keeps, by their file (the key under which
+    :meth:`~robocram.robots.RobotModel.derived` keeps them): the model is parsed once per
+    process, so each map is read once per process too."""
+    return {}
