@@ -90,3 +90,15 @@ def test_reachability_maps_are_cached_on_disk(tmp_path, monkeypatch) -> None:
     assert np.array_equal(built.scores, loaded.scores)
     fresh = build_reachability_map(desc, "arm", samples=20_000)
     assert np.array_equal(fresh.scores, built.scores)  # seeded: the same map every time
+
+
+def test_a_new_resolver_reads_no_file_for_a_map_already_read(tmp_path, monkeypatch) -> None:
+    """Each batch variant makes a new resolver; the maps stay with the robot model."""
+    monkeypatch.setenv("ROBOCRAM_CACHE_DIR", str(tmp_path))
+    desc = load_description("hsrb")
+    built = ReachabilityMaps(samples=20_000).get(desc, "arm")
+    for path in tmp_path.glob("reachability/*.npz"):
+        path.unlink()  # a read would now have to build again
+    again = ReachabilityMaps(samples=20_000)
+    assert again.get(desc, "arm") is built and again.build_seconds == 0
+    assert not list(tmp_path.glob("reachability/*.npz"))
