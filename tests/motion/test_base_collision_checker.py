@@ -91,3 +91,20 @@ def test_a_gap_skips_exact_checks_near_furniture(kitchen: World) -> None:
 
 def _pose(x: float, y: float, yaw: float) -> Pose:
     return Pose((x, y, 0.0), quat.from_euler(0.0, 0.0, yaw))
+
+
+def test_a_footprint_is_kept_per_posture(kitchen: World) -> None:
+    with kitchen.stored_state():
+        kitchen.set_pose("pr2", _pose(-0.8, 0.2, 1.5708))
+        with BaseCollisionChecker.build(kitchen, "pr2", (0.0, 0.0)) as first:
+            pass
+        kitchen.set_pose("pr2", _pose(0.5, -0.3, 0.4))  # moving the base keeps the posture
+        with BaseCollisionChecker.build(kitchen, "pr2", (0.0, 0.0)) as second:
+            pass
+        assert second.footprint is first.footprint
+        kitchen.set_joint_states("pr2", {"torso_lift_joint": 0.25})
+        with BaseCollisionChecker.build(kitchen, "pr2", (0.0, 0.0)) as raised:
+            pass
+        assert raised.footprint is not first.footprint
+        assert raised._bins is not None and first._bins is not None  # noqa: SLF001
+        assert raised._bins.height > first._bins.height  # noqa: SLF001 - the head rose

@@ -35,6 +35,7 @@ MARGIN = 0.5  # [m] room around the obstacles, start and goal for going around
 ESCAPE = 0.1  # [m] travel from the start during which its contacts are tolerated
 CONFIRM_NEAR = 0.3  # [m] travel from the start or goal within which exact checks decide
 GAP_QUERY = 0.05  # [m] how far an exact check looks for the gap that lets it skip poses
+FOOTPRINTS_KEPT = 8  # robot postures whose footprints a world keeps
 LOCAL_MARGIN = 0.6  # [m] the first grid covers the start's and goal's box grown by this
 
 
@@ -79,9 +80,7 @@ class BaseCollisionChecker:
         """
         start = world.pose(robot)
         carried = _carried(world, robot)
-        boxes = _boxes_in_base(world, robot, carried, start)
-        bins = HeightBins.up_to(start.position[2] + max(b[1][2] for b in boxes) + CONTACT)
-        footprint = RobotFootprint.build(boxes, start.position[2], bins, SPACING, CONTACT)
+        bins, footprint = _footprint(world, robot, carried, start)
         skip = {robot, *carried} | {o.name for o in world.objects("floor")}
         obstacles = world.obstacle_boxes(skip)
         ends = np.array([start.position[:2], goal_xy], dtype=float)
@@ -309,6 +308,42 @@ def blockers_at(
         return sorted({other for _, other in pairs})
     finally:
         world.set_pose(robot, start)
+
+
+def _footprint(
+    world: World, robot: str, carried: tuple[str, ...], start: Pose
+) -> tuple[HeightBins, RobotFootprint]:
+    """The height bins and footprint of the robot as it stands, kept with the world for
+    the last few postures: a robot drives in few postures (arms parked, or carrying), so
+    most drives find theirs. The key is everything the footprint depends on: the joints,
+    the height of the base and where each carried object is in the base frame."""
+    base_z = start.position[2]
+    key = (
+        robot,
+        tuple(world.joint_states(robot).items()),
+        base_z,
+        tuple((name, _in_base(start, world.pose(name))) for name in carried),
+    )
+    kept = world.derived(_kept_footprints)
+    found = kept.pop(key, None)
+    if found is None:
+        boxes = _boxes_in_base(world, robot, carried, start)
+        bins = HeightBins.up_to(base_z + max(b[1][2] for b in boxes) + CONTACT)
+        found = (bins, RobotFootprint.build(boxes, base_z, bins, SPACING, CONTACT))
+    kept[key] = found  # most recent last
+    while len(kept) > FOOTPRINTS_KEPT:
+        kept.pop(next(iter(kept)))
+    return found
+
+
+def _in_base(base: Pose, pose: Pose) -> tuple[float, ...]:
+    relative = base.inverse() * pose
+    return (*relative.position, *relative.orientation)
+
+
+def _kept_footprints(world: World) -> dict[tuple[object, ...], tuple[HeightBins, RobotFootprint]]:
+    """The footprints a world keeps (the key under which :meth:`World.derived` keeps them)."""
+    return {}
 
 
 def _carried(world: World, robot: str) -> tuple[str, ...]:
