@@ -15,8 +15,8 @@ import numpy as np
 from robocram.costmaps.cost_layer import CostLayer, LocationQuery
 from robocram.costmaps.grid import BoolGrid, erode
 from robocram.costmaps.out_of_the_way import out_of_the_way
-from robocram.costmaps.rays import cast_rays
 from robocram.world import WorldObject
+from robocram.world.ray_hit import ray_hits
 
 SURFACE_MARGIN = 0.03  # [m] kept free between the placed object and the support's edges
 INNER_DEPTH = 0.02  # [m] an inside bottom lies at least this far below a container's rim
@@ -42,23 +42,22 @@ def _surface(query: LocationQuery, value: object, key: str, alive: BoolGrid) -> 
     placed, radius, lift = _placed(query)
     x, y = query.centres()
     over = (x >= low[0]) & (x <= high[0]) & (y >= low[1]) & (y <= high[1])
-    cells = np.argwhere(alive & over)  # a ray straight down elsewhere cannot meet the support
+    rows, cols = np.nonzero(alive & over)  # a ray straight down elsewhere cannot meet it
     top = high[2] - 0.01 if inside else high[2] + 0.5
-    starts = [(float(x[r, c]), float(y[r, c]), top) for r, c in cells]
-    ends = [(sx, sy, low[2] - 0.01) for sx, sy, _ in starts]
+    starts = np.column_stack([x[rows, cols], y[rows, cols], np.full(len(rows), top)])
+    ends = starts.copy()
+    ends[:, 2] = low[2] - 0.01
+    with out_of_the_way(world, [placed]):
+        hits = ray_hits(world, starts, ends)
+    ok = (hits.bodies == support.body_id) & (hits.normals[:, 2] >= FLAT)
+    if link is not None:
+        ok &= hits.links == support.link_index[link]
+    if inside:
+        ok &= hits.positions[:, 2] <= high[2] - INNER_DEPTH
     heights = np.zeros(query.grid.shape)
     free = np.zeros(query.grid.shape, dtype=bool)
-    with out_of_the_way(world, [placed]):
-        hits = cast_rays(world, starts, ends)
-    for (r, c), hit in zip(cells, hits, strict=True):
-        if hit is None or hit.obj is not support or hit.normal[2] < FLAT:
-            continue
-        if link is not None and hit.link != link:
-            continue
-        if inside and hit.position[2] > high[2] - INNER_DEPTH:
-            continue
-        free[r, c] = True
-        heights[r, c] = hit.position[2] + lift + RESTING_GAP
+    free[rows[ok], cols[ok]] = True
+    heights[rows[ok], cols[ok]] = hits.positions[ok, 2] + lift + RESTING_GAP
     fits = erode(free, (SURFACE_MARGIN + radius) / query.grid.resolution)
     return CostLayer(fits.astype(float), heights=heights)
 
