@@ -108,3 +108,19 @@ def test_a_footprint_is_kept_per_posture(kitchen: World) -> None:
         assert raised.footprint is not first.footprint
         assert raised._bins is not None and first._bins is not None  # noqa: SLF001
         assert raised._bins.height > first._bins.height  # noqa: SLF001 - the head rose
+
+
+def test_the_unclipped_lookup_equals_the_clipped_one(kitchen: World) -> None:
+    with kitchen.stored_state():
+        kitchen.set_pose("pr2", _pose(-0.8, 0.2, 1.5708))
+        with BaseCollisionChecker.build(kitchen, "pr2", (1.0, 1.2)) as checker:
+            rng = np.random.default_rng(7)
+            (x0, y0), (x1, y1) = checker.covered
+            poses = np.column_stack(
+                [rng.uniform(x0, x1, 500), rng.uniform(y0, y1, 500), rng.uniform(-4, 4, 500)]
+            )
+            fp = checker.footprint
+            fast = checker.grid.hits(poses, fp.points, fp.masks, inside=True)
+            clipped = checker.grid.hits(poses, fp.points, fp.masks, inside=False)
+        assert np.array_equal(fast, clipped)
+        assert 50 < fast.sum() < 450  # both kinds of pose are asked

@@ -116,16 +116,14 @@ class BaseCollisionChecker:
     def fast_hits(self, poses: FloatArray, boundary: bool) -> np.ndarray:
         """Per pose, whether the fast check finds a possible collision."""
         self.fast_checks += len(poses)
-        if self.covered != self.bounds and not self._covers(poses):
+        inside = self._covers(poses)
+        if not inside and self.covered != self.bounds:
             self._widen()
+            inside = self._covers(poses)
         fp = self.footprint
         points = fp.boundary_points if boundary else fp.points
         masks = fp.boundary_masks if boundary else fp.masks
-        cos, sin = np.cos(poses[:, 2:3]), np.sin(poses[:, 2:3])
-        x = poses[:, 0:1] + cos * points[:, 0] - sin * points[:, 1]
-        y = poses[:, 1:2] + sin * points[:, 0] + cos * points[:, 1]
-        cells = np.take(self.grid.masks.ravel(), self.grid.flat_indices(x, y))
-        return np.asarray(np.any(cells & masks, axis=1))
+        return self.grid.hits(poses, points, masks, inside)
 
     def _covers(self, poses: FloatArray) -> bool:
         """Whether the grid holds every base position of ``poses`` (its cells reach past
