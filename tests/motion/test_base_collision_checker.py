@@ -3,27 +3,14 @@ round the start and goal, and the poses skipped within an exact check's gap."""
 
 from __future__ import annotations
 
-from collections.abc import Iterator
-
 import numpy as np
 import pytest
 
 from robocram.motion.base_collision import BaseCollisionChecker
 from robocram.motion.planar_motion import straight_poses
-from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
 from robocram.world import World
-
-
-@pytest.fixture(scope="module")
-def kitchen() -> Iterator[World]:
-    scene = kitchen_scene("pr2")
-    world = scene.world
-    for arm in world.robot("pr2").description.arms.values():
-        world.set_joint_states("pr2", dict(arm.parking))
-    yield world
-    world.close()
 
 
 def _first_touching(checker: BaseCollisionChecker, poses: np.ndarray) -> int | None:

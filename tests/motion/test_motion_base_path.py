@@ -11,7 +11,6 @@ import pytest
 from robocram.execution.failures import NavigationPathBlocked, NavigationPoseUnreachable
 from robocram.motion.base_path import BasePath, plan_base_path
 from robocram.motion.planar_motion import straight_poses
-from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
 from robocram.world import World
@@ -21,16 +20,6 @@ DRAWER = "drawer_unit_drawer_3"
 
 def _pose(x: float, y: float, yaw: float) -> Pose:
     return Pose((x, y, 0.0), quat.from_euler(0.0, 0.0, yaw))
-
-
-@pytest.fixture(scope="module")
-def kitchen() -> Iterator[World]:
-    scene = kitchen_scene("pr2")
-    world = scene.world
-    for arm in world.robot("pr2").description.arms.values():
-        world.set_joint_states("pr2", dict(arm.parking))
-    yield world
-    world.close()
 
 
 @pytest.fixture
