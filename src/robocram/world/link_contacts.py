@@ -175,32 +175,26 @@ def self_contacts(
 ) -> list[tuple[str, str]]:
     """The ``(link, link)`` pairs of ``obj`` among ``pairs`` nearer than ``distance`` [m].
 
-    Bounds are compared first (all pairs at once), so only pairs whose bounds overlap get
-    closest points.
+    Bounds are compared first (every two links used at once), so only pairs whose bounds
+    overlap get closest points; the pairs' rows are kept with ``obj`` per set of pairs.
     """
-    pairs = list(pairs)
-    if not pairs:
+    key = tuple(pairs)
+    if not key:
         return []
     cid = world.physics_client()
-    index = obj.link_index
-    firsts = np.array([index[a] for a, _ in pairs])
-    seconds = np.array([index[b] for _, b in pairs])
-    used = np.union1d(firsts, seconds)
+    rows = obj.pair_rows(key)
     table = np.array(
-        [[*low, *high] for low, high in (
-            pybullet.getAABB(obj.body_id, int(i), physicsClientId=cid) for i in used
-        )],
-        dtype=float,
-    ).reshape(-1, 6)  # fmt: skip
-    ra, rb = np.searchsorted(used, firsts), np.searchsorted(used, seconds)
-    apart = (table[ra, :3] - distance > table[rb, 3:] + distance).any(axis=1) | (
-        table[rb, :3] - distance > table[ra, 3:] + distance
-    ).any(axis=1)
+        [pybullet.getAABB(obj.body_id, i, physicsClientId=cid) for i in rows.used], dtype=float
+    ).reshape(-1, 2, 3)
+    low, high = table[:, 0] - distance, table[:, 1] + distance
+    below = np.ones((len(table), len(table)), dtype=bool)  # [i, j]: i's low under j's high
+    for axis in range(3):
+        below &= low[:, None, axis] <= high[None, :, axis]
     found = []
-    for k in np.flatnonzero(~apart):
+    for k in np.flatnonzero((below & below.T).ravel()[rows.cells]).tolist():
         if pybullet.getClosestPoints(
-            obj.body_id, obj.body_id, distance, linkIndexA=int(firsts[k]),
-            linkIndexB=int(seconds[k]), physicsClientId=cid,
+            obj.body_id, obj.body_id, distance, linkIndexA=int(rows.firsts[k]),
+            linkIndexB=int(rows.seconds[k]), physicsClientId=cid,
         ):  # fmt: skip
-            found.append(pairs[k])
+            found.append(key[k])
     return found
