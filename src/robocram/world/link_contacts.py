@@ -69,15 +69,10 @@ def _overlaps_in(
     """:func:`_overlaps` against bounds read before (one comparison for all links)."""
     order = list(indices.items())
     boxes = np.array(
-        [
-            [*low, *high]
-            for low, high in (
-                pybullet.getAABB(obj.body_id, index, physicsClientId=cid) for index, _ in order
-            )
-        ],
+        [pybullet.getAABB(obj.body_id, index, physicsClientId=cid) for index, _ in order],
         dtype=float,
-    ).reshape(-1, 6)
-    for box, row in obstacles.overlapping(boxes[:, :3] - distance, boxes[:, 3:] + distance, skip):
+    ).reshape(-1, 2, 3)
+    for box, row in obstacles.overlapping(boxes[:, 0] - distance, boxes[:, 1] + distance, skip):
         index, link = order[box]
         yield (
             names.get(index, link), obstacles.objects[row], obstacles.indices[row], index,

@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 
-from robocram.robots import mimic_followers
+from robocram.robots import RobotModel, mimic_followers
 from robocram.tf import Pose, PoseLike
 from robocram.world.attachment import Attachment, check_acyclic
 from robocram.world.body_loading import create_body
@@ -314,8 +314,8 @@ class WorldCore:
         if not isinstance(handle, RobotObject):
             return {}
         model = handle.description.model
-        if model is None:
-            return {}
+        if model is None or applied.keys().isdisjoint(model.derived(_mimic_masters)):
+            return {}  # nothing set has followers (asking would walk every joint twice)
         followers = mimic_followers(model, applied)
         out: dict[str, float] = {}
         for name, value in followers.items():
@@ -437,6 +437,11 @@ def _reset_joints(body: int, values: Mapping[int, float], cid: int) -> None:
             targetVelocities=[[0.0]] * len(values),
             physicsClientId=cid,
         )
+
+
+def _mimic_masters(model: RobotModel) -> frozenset[str]:
+    """The joints some mimic joint of ``model`` follows."""
+    return frozenset(j.mimic.joint for j in model.joints.values() if j.mimic is not None)
 
 
 def _check_time_step(time_step: float) -> None:
