@@ -35,8 +35,11 @@ def _overlaps(
     broadphase."""
     cid = world.physics_client()
     names = _link_names(obj)
-    indices = names if links is None else {obj.link_index[name]: name for name in links}
-    indices = {i: name for i, name in indices.items() if i in obj.colliders}  # no shape, no hit
+    if links is None:
+        indices = obj.collider_names()  # no shape, no hit
+    else:
+        asked = {obj.link_index[name]: name for name in links}
+        indices = {i: name for i, name in asked.items() if i in obj.colliders}
     if obstacles is not None and obstacles.covers(obj, skip):
         yield from _overlaps_in(obstacles, obj, indices, names, skip, distance, cid)
         return
