@@ -86,3 +86,23 @@ def test_insert_brings_back_a_removed_handle(world: World) -> None:
     assert world.insert(box, Pose((2.0, 0.0, 0.1))) is box
     assert world.object("c") is box
     assert world.pose("c").position == pytest.approx((2.0, 0.0, 0.1), abs=1e-9)
+
+
+def test_self_contacts_match_closest_points_of_every_pair() -> None:
+    """The bounds test only prunes: the pairs found are those within ``distance``, asked
+    about again after the arm moved (the pairs' rows are kept with the handle)."""
+    with World() as world:
+        pr2 = world.add_robot("pr2")
+        links = world.link_names(pr2)
+        arm = [link for link in links if link.startswith("r_") and "gripper" in link]
+        pairs = [(a, b) for a in arm for b in links if not b.startswith("r_")]
+        for elbow in (0.0, -2.0):
+            world.set_joint_states(pr2, {"r_elbow_flex_joint": elbow})
+            for distance in (0.0, 0.3):
+                expected = [
+                    (a, b) for a, b in pairs
+                    if world.contact_points(pr2, pr2, a, b, distance=distance)
+                ]  # fmt: skip
+                assert world.self_contacts(pr2, pairs, distance) == expected
+        assert expected  # the far distance finds some
+        assert world.self_contacts(pr2, []) == []

@@ -125,3 +125,18 @@ def test_robots_start_with_every_joint_within_its_limits() -> None:
             assert limits.lower - 1e-9 <= value <= limits.upper + 1e-9, name
         assert states["left_gripper_joint"] == pytest.approx(0.0065, abs=1e-9)  # 0 is outside
         assert states["left_gripper_base_gripper_left_joint"] == pytest.approx(-0.00325, abs=1e-9)
+
+
+def test_a_joint_let_go_is_stiff_again_after_being_held() -> None:
+    """Held joints simulate without their motors; one no longer held gets its motor back
+    (without it the shoulder would fall ~0.6 rad in 0.3 s)."""
+    with World() as world:
+        world.add_floor()
+        pr2 = world.add_robot("pr2")
+        world.simulate(0.05)  # every joint held: their motors are off
+        held = world.held_joints(pr2)
+        del held["r_shoulder_lift_joint"]
+        world.set_held_joints(pr2, held)
+        world.simulate(0.3)
+        assert world.joint_states(pr2)["r_shoulder_lift_joint"] == pytest.approx(0.0, abs=0.01)
+        assert world.joint_states(pr2)["l_shoulder_lift_joint"] == 0.0  # still held exactly

@@ -24,101 +24,114 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
 
 from robocram.motion.joint_limits import JointLimits
 from robocram.motion.joint_trajectory import FloatArray
 
+IntArray = npt.NDArray[np.intp]
 
-@dataclass(frozen=True)
-class Phase:
-    """Constant path acceleration from ``t0`` for ``duration`` [s]."""
 
-    t0: float  # [s] from the run's start
-    s0: float  # arc length at t0
-    speed: float  # path speed at t0
-    acceleration: float  # path acceleration
-    duration: float  # [s]
+PHASE_FIELDS = 5  # a phase's row: t0 [s], s0, speed, acceleration, duration [s]
+MAX_PHASES = 3  # accelerate, cruise, brake
 
 
 @dataclass(frozen=True)
-class ArcSegment:
-    """One segment of the run: its phases and its place on the path."""
+class ArcRun:
+    """The timed run as tables, one row per segment (a polyline of ``m`` segments).
 
-    start: FloatArray
-    direction: FloatArray  # unit, joint space
-    length: float
-    s_start: float  # arc length of ``start`` along the run
-    phases: tuple[Phase, ...]
+    A segment moves from ``starts[k]`` along the unit ``directions[k]`` for ``lengths[k]``;
+    ``phases[k]`` holds up to :data:`MAX_PHASES` rows of constant path acceleration
+    (``t0`` from the run's start, arc length ``s0`` and ``speed`` at ``t0``,
+    ``acceleration``, ``duration``), unused rows starting at infinity. Sampling asks for
+    hundreds of states per trajectory, so they are computed on the tables at once.
+    """
 
-    @property
-    def t_start(self) -> float:
-        """Time the robot passes ``start`` [s] from the run's start."""
-        return self.phases[0].t0
+    starts: FloatArray  # (m, joints)
+    directions: FloatArray  # (m, joints), unit
+    lengths: FloatArray  # (m,)
+    s_starts: FloatArray  # (m,) arc length of each start along the run
+    phases: FloatArray  # (m, MAX_PHASES, PHASE_FIELDS)
+    t_starts: FloatArray  # (m,) [s] from the run's start: the robot passes ``starts[k]``
+    t_ends: FloatArray  # (m,) [s] ... passes the segment's end
 
-    @property
-    def t_end(self) -> float:
-        """Time the robot passes the segment's end [s] from the run's start."""
-        last = self.phases[-1]
-        return last.t0 + last.duration
-
-    def state(self, t: float) -> tuple[FloatArray, FloatArray, FloatArray]:
-        """Positions, velocities, accelerations at ``t`` [s] from the run's start."""
-        phase = self.phases[0]
-        for candidate in self.phases:
-            if t >= candidate.t0:
-                phase = candidate
-        tau = min(max(t - phase.t0, 0.0), phase.duration)
-        s = phase.s0 + phase.speed * tau + 0.5 * phase.acceleration * tau * tau
-        s = min(max(s, self.s_start), self.s_start + self.length)
-        speed = max(phase.speed + phase.acceleration * tau, 0.0)
-        u = self.direction
-        return self.start + u * (s - self.s_start), u * speed, u * phase.acceleration
+    def states(
+        self, segments: IntArray, times: FloatArray
+    ) -> tuple[FloatArray, FloatArray, FloatArray]:
+        """Positions, velocities, accelerations (one row each) on segment ``segments[i]``
+        at ``times[i]`` [s] from the run's start: within its phase that began last."""
+        table = self.phases[segments]  # (n, MAX_PHASES, PHASE_FIELDS)
+        begun = np.count_nonzero(table[:, :, 0] <= times[:, None], axis=1)
+        phase = table[np.arange(len(times)), np.maximum(begun - 1, 0)]
+        t0, s0, speed0, acceleration, duration = phase.T
+        tau = np.minimum(np.maximum(times - t0, 0.0), duration)
+        s = s0 + speed0 * tau + 0.5 * acceleration * tau * tau
+        s_start = self.s_starts[segments]
+        s = np.minimum(np.maximum(s, s_start), s_start + self.lengths[segments])
+        speed = np.maximum(speed0 + acceleration * tau, 0.0)
+        u = self.directions[segments]
+        return (
+            self.starts[segments] + u * (s - s_start)[:, None],
+            u * speed[:, None],
+            u * acceleration[:, None],
+        )
 
 
 def arc_length_run(
     waypoints: Sequence[FloatArray], limits: Sequence[JointLimits], period: float
-) -> tuple[ArcSegment, ...]:
+) -> ArcRun:
     """Time the run through ``waypoints`` (distinct consecutive points), at rest at both ends."""
-    starts = [np.asarray(p, dtype=float) for p in waypoints[:-1]]
-    deltas = [np.asarray(b, dtype=float) - a for a, b in zip(starts, waypoints[1:], strict=True)]
-    lengths = [float(np.linalg.norm(d)) for d in deltas]
-    units = [d / n for d, n in zip(deltas, lengths, strict=True)]
+    points = np.array(waypoints, dtype=float)
+    starts = points[:-1]
+    deltas = points[1:] - starts
+    lengths = np.array([np.linalg.norm(d) for d in deltas])  # as one norm each: same bits
+    units = deltas / lengths[:, None]
     velocity = np.array([lim.velocity for lim in limits])
     acceleration = np.array([lim.acceleration for lim in limits])
-    speed_caps = [_cap(velocity, u) for u in units]
-    accel_caps = [_cap(acceleration, u) for u in units]
+    speed_caps = _caps(velocity, units).tolist()
+    accel_caps = _caps(acceleration, units).tolist()
+    corner_caps = _caps(acceleration * period, units[1:] - units[:-1]).tolist()
+    lengths_list = lengths.tolist()
     node = [0.0] + [
-        min(speed_caps[k - 1], speed_caps[k], _cap(acceleration * period, units[k] - units[k - 1]))
-        for k in range(1, len(units))
+        min(speed_caps[k - 1], speed_caps[k], corner_caps[k - 1]) for k in range(1, len(units))
     ] + [0.0]  # fmt: skip
     squared = [v * v for v in node]
     for k in range(len(units)):  # forward: no faster than accelerating from the last node
-        squared[k + 1] = min(squared[k + 1], squared[k] + 2.0 * accel_caps[k] * lengths[k])
+        squared[k + 1] = min(squared[k + 1], squared[k] + 2.0 * accel_caps[k] * lengths_list[k])
     for k in reversed(range(len(units))):  # backward: slow enough to brake for the next
-        squared[k] = min(squared[k], squared[k + 1] + 2.0 * accel_caps[k] * lengths[k])
-    segments = []
+        squared[k] = min(squared[k], squared[k + 1] + 2.0 * accel_caps[k] * lengths_list[k])
+    phases = np.full((len(units), MAX_PHASES, PHASE_FIELDS), math.inf)
+    t_starts, t_ends, s_starts = [], [], []
     t, s = 0.0, 0.0
-    for k, unit in enumerate(units):
-        phases = _segment_phases(
-            t, s, lengths[k], squared[k], squared[k + 1], speed_caps[k], accel_caps[k]
+    for k, length in enumerate(lengths_list):
+        rows = _segment_phases(
+            t, s, length, squared[k], squared[k + 1], speed_caps[k], accel_caps[k]
         )
-        segments.append(ArcSegment(starts[k], unit, lengths[k], s, phases))
-        t, s = segments[-1].t_end, s + lengths[k]
-    return tuple(segments)
+        phases[k, : len(rows)] = rows
+        t_starts.append(rows[0][0])
+        s_starts.append(s)
+        t = rows[-1][0] + rows[-1][4]
+        t_ends.append(t)
+        s += length
+    return ArcRun(
+        starts, units, lengths, np.array(s_starts), phases, np.array(t_starts), np.array(t_ends)
+    )
 
 
-def _cap(limit: FloatArray, share: FloatArray) -> float:
-    """The path rate at which the first joint reaches its ``limit``: ``min limit_j/|share_j|``."""
-    moving = np.abs(share) > 1e-15
-    if not moving.any():
-        return math.inf
-    return float(np.min(limit[moving] / np.abs(share[moving])))
+def _caps(limit: FloatArray, shares: FloatArray) -> FloatArray:
+    """Per row of ``shares``, the path rate at which the first joint reaches its
+    ``limit``: ``min limit_j/|share_j|`` over the joints that move (infinite if none)."""
+    size = np.abs(shares)
+    moving = size > 1e-15
+    rates = np.divide(limit, size, out=np.full(shares.shape, math.inf), where=moving)
+    return rates.min(axis=1) if len(rates) else np.zeros(0)
 
 
 def _segment_phases(
     t0: float, s0: float, length: float, w0: float, w1: float, cap: float, accel: float
-) -> tuple[Phase, ...]:
-    """Accelerate from ``sqrt(w0)``, cruise at most at ``cap``, brake to ``sqrt(w1)``."""
+) -> list[tuple[float, float, float, float, float]]:
+    """Accelerate from ``sqrt(w0)``, cruise at most at ``cap``, brake to ``sqrt(w1)``:
+    the phases of positive duration as ``(t0, s0, speed, acceleration, duration)``."""
     v0, v1 = math.sqrt(max(w0, 0.0)), math.sqrt(max(w1, 0.0))
     peak = min(cap, math.sqrt(max((w0 + w1 + 2.0 * accel * length) / 2.0, 0.0)))
     peak = max(peak, v0, v1)
@@ -133,6 +146,6 @@ def _segment_phases(
         (fall, peak, -accel, (peak - v1) / accel),
     ):
         if duration > 0.0:
-            phases.append(Phase(t, s, speed, acceleration, duration))
+            phases.append((t, s, speed, acceleration, duration))
             t, s = t + duration, s + distance
-    return tuple(phases)
+    return phases

@@ -21,16 +21,16 @@ The trajectory is sampled every ``period`` and at every waypoint.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
 
-from robocram.motion.arc_length_profile import arc_length_run
+from robocram.motion.arc_length_profile import ArcRun, IntArray, arc_length_run
 from robocram.motion.errors import MotionError
 from robocram.motion.joint_limits import JointLimits
 from robocram.motion.joint_trajectory import FloatArray, JointTrajectory, TrajectoryPoint, still
-from robocram.motion.straight_segment import straight_segment
+from robocram.motion.straight_segment import StraightSegment, straight_segment
 
 SMOOTH_TURN = 0.2  # [rad] turns of the path's direction up to this are passed without stopping
 SAME_POINT = 1e-12  # [rad | m] consecutive waypoints closer than this are one waypoint
@@ -46,7 +46,9 @@ class _Piece:
 
     t0: float  # [s]
     t1: float  # [s]
-    state: Callable[[float], State]  # global time -> positions, velocities, accelerations
+    motion: StraightSegment | ArcRun  # the timed motion it is (a segment of)
+    segment: int  # which segment of an ArcRun; 0 for a StraightSegment
+    offset: float  # [s] global time of the motion's own time 0
 
 
 def time_parameterize(
@@ -93,18 +95,14 @@ def _timed_pieces(
     for first, last in _runs(waypoints):
         if last - first == 1:
             segment = straight_segment(waypoints[first], waypoints[last], limits)
-            pieces.append(_Piece(clock, clock + segment.duration, _shifted(segment.state, clock)))
+            pieces.append(_Piece(clock, clock + segment.duration, segment, 0, clock))
         else:
-            for arc in arc_length_run(waypoints[first : last + 1], limits, period):
-                pieces.append(
-                    _Piece(clock + arc.t_start, clock + arc.t_end, _shifted(arc.state, clock))
-                )
+            run = arc_length_run(waypoints[first : last + 1], limits, period)
+            spans = zip(run.t_starts.tolist(), run.t_ends.tolist(), strict=True)
+            for k, (t_start, t_end) in enumerate(spans):
+                pieces.append(_Piece(clock + t_start, clock + t_end, run, k, clock))
         clock = pieces[-1].t1
     return pieces
-
-
-def _shifted(state: Callable[[float], State], offset: float) -> Callable[[float], State]:
-    return lambda t: state(t - offset)
 
 
 def _runs(waypoints: list[FloatArray]) -> list[tuple[int, int]]:
@@ -125,44 +123,81 @@ def _runs(waypoints: list[FloatArray]) -> list[tuple[int, int]]:
 def _sampled(
     waypoints: list[FloatArray], pieces: list[_Piece], period: float
 ) -> tuple[TrajectoryPoint, ...]:
-    """Points every ``period`` and at every waypoint; at a waypoint, its exact position."""
+    """Points every ``period`` and at every waypoint; at a waypoint, its exact position
+    with the mean of the motions arriving and leaving (at rest at both ends).
+
+    A time between waypoints belongs to the first piece that does not end before it.
+    """
     stops = [pieces[0].t0] + [p.t1 for p in pieces]
-    end = stops[-1]
-    ticks = np.arange(int(math.floor(end / period)) + 1) * period
+    times = _sample_times(stops, period)
+    stop_index = {t: k for k, t in reversed(list(enumerate(stops)))}
+    at_stop = [stop_index.get(t, -1) for t in times]  # the waypoint there, or -1
+    between = [i for i, k in enumerate(at_stop) if k < 0]
+    clock = np.array([times[i] for i in between])
+    owner = np.searchsorted(np.array(stops[1:]) + SAME_TIME, clock, side="left")
+    corners = np.arange(1, len(pieces))  # waypoint k joins piece k - 1 and piece k
+    asked = _states(
+        pieces,
+        np.concatenate([np.minimum(owner, len(pieces) - 1), corners - 1, corners]),
+        np.array([*clock.tolist(), *stops[1:-1], *(pieces[k].t0 for k in corners)]),
+        len(waypoints[0]),
+    )
+    rows = [np.zeros((len(times), len(waypoints[0]))) for _ in range(3)]
+    for row, values in zip(rows, asked, strict=True):
+        row[between] = values[: len(clock)]
+    stopped = [i for i, k in enumerate(at_stop) if k >= 0]
+    rows[0][stopped] = np.array(waypoints)[[at_stop[i] for i in stopped]]
+    inner = [i for i in stopped if 0 < at_stop[i] < len(waypoints) - 1]
+    arriving = len(clock) - 1 + np.array([at_stop[i] for i in inner], dtype=np.intp)
+    leaving = arriving + len(corners)  # the rows ``asked`` for waypoint k's two pieces
+    for row, values in zip(rows[1:], asked[1:], strict=True):
+        row[inner] = 0.5 * (values[arriving] + values[leaving])
+    positions, velocities, accelerations = (row.tolist() for row in rows)
+    return tuple(
+        TrajectoryPoint(tuple(p), tuple(v), tuple(a), float(t))
+        for p, v, a, t in zip(positions, velocities, accelerations, times, strict=True)
+    )
+
+
+def _sample_times(stops: list[float], period: float) -> list[float]:
+    """Every ``period`` [s] and every stop, sorted; a tick this close to a stop is dropped."""
+    ticks = np.arange(int(math.floor(stops[-1] / period)) + 1) * period
     where = np.clip(np.searchsorted(stops, ticks), 1, len(stops) - 1)
     gap = np.minimum(
         np.abs(ticks - np.take(stops, where)), np.abs(ticks - np.take(stops, where - 1))
     )
-    times = sorted([*ticks[gap > SAME_TIME].tolist(), *stops])
-    out = []
-    piece = 0
-    for t in times:
-        while piece < len(pieces) - 1 and t > pieces[piece].t1 + SAME_TIME:
-            piece += 1
-        if t in stops:
-            position, velocity, acceleration = _at_waypoint(waypoints, pieces, stops.index(t))
+    return sorted([*ticks[gap > SAME_TIME].tolist(), *stops])
+
+
+def _states(pieces: list[_Piece], owners: IntArray, times: FloatArray, width: int) -> State:
+    """Positions, velocities, accelerations (one row each) of piece ``owners[i]`` at global
+    time ``times[i]`` [s]; each motion computes all of its rows at once."""
+    groups: dict[int, list[int]] = {}  # id of a motion -> its pieces
+    for k, piece in enumerate(pieces):
+        groups.setdefault(id(piece.motion), []).append(k)
+    group_of = np.zeros(len(pieces), dtype=np.intp)
+    for g, members in enumerate(groups.values()):
+        group_of[members] = g
+    group = group_of[owners]
+    segment = np.array([p.segment for p in pieces])[owners]
+    local = times - np.array([p.offset for p in pieces])[owners]
+    out = (
+        np.zeros((len(times), width)),
+        np.zeros((len(times), width)),
+        np.zeros((len(times), width)),
+    )
+    for g, members in enumerate(groups.values()):
+        mine = np.flatnonzero(group == g)
+        motion = pieces[members[0]].motion
+        if not len(mine):
+            continue
+        if isinstance(motion, ArcRun):
+            values = motion.states(segment[mine], local[mine])
         else:
-            position, velocity, acceleration = pieces[piece].state(t)
-        out.append(
-            TrajectoryPoint(
-                tuple(position.tolist()),
-                tuple(velocity.tolist()),
-                tuple(acceleration.tolist()),
-                float(t),
-            )
-        )
-    return tuple(out)
-
-
-def _at_waypoint(waypoints: list[FloatArray], pieces: list[_Piece], k: int) -> State:
-    """Waypoint ``k`` exactly, with the mean of the motions arriving and leaving."""
-    position = waypoints[k]
-    zero = np.zeros_like(position)
-    if k == 0 or k == len(waypoints) - 1:
-        return position, zero, zero
-    _, v_in, a_in = pieces[k - 1].state(pieces[k - 1].t1)
-    _, v_out, a_out = pieces[k].state(pieces[k].t0)
-    return position, 0.5 * (v_in + v_out), 0.5 * (a_in + a_out)
+            values = motion.states(local[mine])
+        for row, value in zip(out, values, strict=True):
+            row[mine] = value
+    return out
 
 
 def _checked_path(

@@ -35,8 +35,11 @@ def _overlaps(
     broadphase."""
     cid = world.physics_client()
     names = _link_names(obj)
-    indices = names if links is None else {obj.link_index[name]: name for name in links}
-    indices = {i: name for i, name in indices.items() if i in obj.colliders}  # no shape, no hit
+    if links is None:
+        indices = obj.collider_names()  # no shape, no hit
+    else:
+        asked = {obj.link_index[name]: name for name in links}
+        indices = {i: name for i, name in asked.items() if i in obj.colliders}
     if obstacles is not None and obstacles.covers(obj, skip):
         yield from _overlaps_in(obstacles, obj, indices, names, skip, distance, cid)
         return
@@ -69,15 +72,10 @@ def _overlaps_in(
     """:func:`_overlaps` against bounds read before (one comparison for all links)."""
     order = list(indices.items())
     boxes = np.array(
-        [
-            [*low, *high]
-            for low, high in (
-                pybullet.getAABB(obj.body_id, index, physicsClientId=cid) for index, _ in order
-            )
-        ],
+        [pybullet.getAABB(obj.body_id, index, physicsClientId=cid) for index, _ in order],
         dtype=float,
-    ).reshape(-1, 6)
-    for box, row in obstacles.overlapping(boxes[:, :3] - distance, boxes[:, 3:] + distance, skip):
+    ).reshape(-1, 2, 3)
+    for box, row in obstacles.overlapping(boxes[:, 0] - distance, boxes[:, 1] + distance, skip):
         index, link = order[box]
         yield (
             names.get(index, link), obstacles.objects[row], obstacles.indices[row], index,
@@ -175,32 +173,26 @@ def self_contacts(
 ) -> list[tuple[str, str]]:
     """The ``(link, link)`` pairs of ``obj`` among ``pairs`` nearer than ``distance`` [m].
 
-    Bounds are compared first (all pairs at once), so only pairs whose bounds overlap get
-    closest points.
+    Bounds are compared first (every two links used at once), so only pairs whose bounds
+    overlap get closest points; the pairs' rows are kept with ``obj`` per set of pairs.
     """
-    pairs = list(pairs)
-    if not pairs:
+    key = tuple(pairs)
+    if not key:
         return []
     cid = world.physics_client()
-    index = obj.link_index
-    firsts = np.array([index[a] for a, _ in pairs])
-    seconds = np.array([index[b] for _, b in pairs])
-    used = np.union1d(firsts, seconds)
+    rows = obj.pair_rows(key)
     table = np.array(
-        [[*low, *high] for low, high in (
-            pybullet.getAABB(obj.body_id, int(i), physicsClientId=cid) for i in used
-        )],
-        dtype=float,
-    ).reshape(-1, 6)  # fmt: skip
-    ra, rb = np.searchsorted(used, firsts), np.searchsorted(used, seconds)
-    apart = (table[ra, :3] - distance > table[rb, 3:] + distance).any(axis=1) | (
-        table[rb, :3] - distance > table[ra, 3:] + distance
-    ).any(axis=1)
+        [pybullet.getAABB(obj.body_id, i, physicsClientId=cid) for i in rows.used], dtype=float
+    ).reshape(-1, 2, 3)
+    low, high = table[:, 0] - distance, table[:, 1] + distance
+    below = np.ones((len(table), len(table)), dtype=bool)  # [i, j]: i's low under j's high
+    for axis in range(3):
+        below &= low[:, None, axis] <= high[None, :, axis]
     found = []
-    for k in np.flatnonzero(~apart):
+    for k in np.flatnonzero((below & below.T).ravel()[rows.cells]).tolist():
         if pybullet.getClosestPoints(
-            obj.body_id, obj.body_id, distance, linkIndexA=int(firsts[k]),
-            linkIndexB=int(seconds[k]), physicsClientId=cid,
+            obj.body_id, obj.body_id, distance, linkIndexA=int(rows.firsts[k]),
+            linkIndexB=int(rows.seconds[k]), physicsClientId=cid,
         ):  # fmt: skip
-            found.append(pairs[k])
+            found.append(key[k])
     return found

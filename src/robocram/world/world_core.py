@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 
-from robocram.robots import mimic_followers
+from robocram.robots import RobotModel, mimic_followers
 from robocram.tf import Pose, PoseLike
 from robocram.world.attachment import Attachment, check_acyclic
 from robocram.world.body_loading import create_body
@@ -23,6 +23,7 @@ from robocram.world.errors import (
     WorldError,
     WorldValueError,
 )
+from robocram.world.held_motors import HeldMotors
 from robocram.world.joint_state import ClampedJoint, JointLimits, clamp_values
 from robocram.world.pybullet_backend import pybullet
 from robocram.world.world_object import RobotObject, WorldObject
@@ -60,6 +61,7 @@ class WorldCore:
         self._inertial: dict[str, Pose] = {}  # base link frame -> pybullet base (COM) frame
         self._attachments: dict[str, Attachment] = {}  # by attached object name
         self._holds: dict[str, dict[int, float]] = {}  # robot -> joint index -> held value
+        self._motors = HeldMotors()  # a robot's held joints need no motor
 
     def close(self) -> None:
         """Disconnect the physics client; the world is unusable afterwards."""
@@ -87,6 +89,7 @@ class WorldCore:
             raise DuplicateObjectError(handle.name)
         cid = self.physics_client()
         handle.body_id = create_body(handle.name, handle.spec, cid)
+        self._motors.forget(handle.body_id)
         dyn = pybullet.getDynamicsInfo(handle.body_id, -1, physicsClientId=cid)
         self._inertial[handle.name] = Pose(dyn[3], dyn[4])
         handle.joint_index.clear()
@@ -152,6 +155,7 @@ class WorldCore:
             if handle.name in (name, att.robot):
                 del self._attachments[name]
         pybullet.removeBody(handle.body_id, physicsClientId=self.physics_client())
+        self._motors.forget(handle.body_id)
         self._limits = {k: v for k, v in self._limits.items() if k[0] != handle.body_id}
         del self._objects[handle.name]
         self._inertial.pop(handle.name, None)
@@ -310,8 +314,8 @@ class WorldCore:
         if not isinstance(handle, RobotObject):
             return {}
         model = handle.description.model
-        if model is None:
-            return {}
+        if model is None or applied.keys().isdisjoint(model.derived(_mimic_masters)):
+            return {}  # nothing set has followers (asking would walk every joint twice)
         followers = mimic_followers(model, applied)
         out: dict[str, float] = {}
         for name, value in followers.items():
@@ -390,13 +394,19 @@ class WorldCore:
             self._follow(att.obj)
 
     def step(self) -> None:
-        """Advance physics one time step; robots hold their joints, attachments follow."""
+        """Advance physics one time step; robots hold their joints, attachments follow.
+
+        Held joints of robots are put back after the step, so their motors are off.
+        """
         cid = self.physics_client()
+        robots = [(self._objects[n].body_id, held) for n, held in self._holds.items()
+                  if isinstance(self._objects[n], RobotObject)]  # fmt: skip
+        for body, held in robots:
+            self._motors.match(body, held.keys(), self.time_step, cid)
         pybullet.stepSimulation(physicsClientId=cid)
         self.time += self.time_step
-        for name, held in self._holds.items():
-            if held and isinstance(self._objects[name], RobotObject):
-                _reset_joints(self._objects[name].body_id, held, cid)
+        for body, held in robots:
+            _reset_joints(body, held, cid)
         for carrier in {a.robot for a in self._attachments.values()}:
             self._follow(carrier)
 
@@ -427,6 +437,11 @@ def _reset_joints(body: int, values: Mapping[int, float], cid: int) -> None:
             targetVelocities=[[0.0]] * len(values),
             physicsClientId=cid,
         )
+
+
+def _mimic_masters(model: RobotModel) -> frozenset[str]:
+    """The joints some mimic joint of ``model`` follows."""
+    return frozenset(j.mimic.joint for j in model.joints.values() if j.mimic is not None)
 
 
 def _check_time_step(time_step: float) -> None:

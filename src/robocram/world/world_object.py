@@ -11,6 +11,9 @@ from dataclasses import dataclass, field
 from robocram.robots import LoadedDescription
 from robocram.tf import Pose
 from robocram.world.body_spec import BodySpec
+from robocram.world.link_pair_rows import LinkPairRows
+
+PAIR_ROWS_KEPT = 8  # sets of link pairs whose rows a handle keeps (one per arm and mode)
 
 
 @dataclass(eq=False)
@@ -35,14 +38,36 @@ class WorldObject:
     link_offset: dict[str, Pose] = field(default_factory=dict, kw_only=True)
     movable_joints: list[str] = field(default_factory=list, kw_only=True)
     _index_names: dict[int, str] | None = field(default=None, init=False, repr=False)
+    _collider_names: dict[int, str] | None = field(default=None, init=False, repr=False)
     colliders: frozenset[int] = field(default=frozenset(), init=False, repr=False)
     """pybullet link indices that have collision shapes, read when the body is created:
     contact queries leave the others (frames, cameras) out."""
+    _pair_rows: dict[tuple[tuple[str, str], ...], LinkPairRows] = field(
+        default_factory=dict, init=False, repr=False
+    )
 
     def forget_indices(self) -> None:
         """Drop what was read from the last body: a new one is being indexed."""
         self._index_names = None
+        self._collider_names = None
         self.colliders = frozenset()
+        self._pair_rows.clear()
+
+    def pair_rows(self, pairs: tuple[tuple[str, str], ...]) -> LinkPairRows:
+        """``pairs`` of this body's link names as bounds-table rows, kept per set of pairs."""
+        found = self._pair_rows.get(pairs)
+        if found is None:
+            if len(self._pair_rows) >= PAIR_ROWS_KEPT:
+                self._pair_rows.clear()
+            found = self._pair_rows[pairs] = LinkPairRows.of(self.link_index, pairs)
+        return found
+
+    def collider_names(self) -> dict[int, str]:
+        """:meth:`index_names` of the links with collision shapes only (kept per body)."""
+        if self._collider_names is None:
+            names = self.index_names()
+            self._collider_names = {i: n for i, n in names.items() if i in self.colliders}
+        return self._collider_names
 
     def index_names(self) -> dict[int, str]:
         """pybullet link index -> link name (the first name of each index); the base (-1)
