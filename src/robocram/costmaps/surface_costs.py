@@ -15,31 +15,54 @@ import numpy as np
 from robocram.costmaps.cost_layer import CostLayer, LocationQuery
 from robocram.costmaps.grid import BoolGrid, erode
 from robocram.costmaps.out_of_the_way import out_of_the_way
-from robocram.world import WorldObject
+from robocram.world import World, WorldObject
 from robocram.world.ray_hit import ray_hits
 
 SURFACE_MARGIN = 0.03  # [m] kept free between the placed object and the support's edges
 INNER_DEPTH = 0.02  # [m] an inside bottom lies at least this far below a container's rim
 FLAT = 0.9  # a hit counts as a surface if its normal's z is at least this
 RESTING_GAP = 0.002  # [m] the object is put this far above the surface
+BOTTOM_RAYS = 7  # rays per side of the grid that finds a placed object's bottom
 
 
-def _placed(query: LocationQuery) -> tuple[WorldObject | None, float, float]:
-    """The ``for_`` object, its footprint radius [m] and its frame's height over its bottom."""
+def _placed(query: LocationQuery) -> tuple[WorldObject | None, float]:
+    """The ``for_`` object and its footprint radius [m]."""
     value = query.designator.get("for_")
     if value is None:
-        return None, 0.0, 0.0
+        return None, 0.0
     obj = query.object(value, "for_")
     low, high = query.world.aabb(obj)
-    radius = math.hypot(high[0] - low[0], high[1] - low[1]) / 2
-    return obj, radius, query.world.pose(obj).position[2] - low[2]
+    return obj, math.hypot(high[0] - low[0], high[1] - low[1]) / 2
+
+
+def _frame_over_bottom(world: World, obj: WorldObject | None) -> float:
+    """How far [m] ``obj``'s frame is above its lowest point, by rays cast up at it.
+
+    Its bounds would say a few millimetres more (Bullet grows them by its collision
+    margin), and an object put down that much too high falls that far when let go, which
+    the settling check then waits out. Asked while the object is out of the way, so the
+    rays meet nothing else; the bounds' answer stands when no ray hits.
+    """
+    if obj is None:
+        return 0.0
+    low, high = world.aabb(obj)
+    xs = np.linspace(low[0], high[0], BOTTOM_RAYS + 2)[1:-1]
+    ys = np.linspace(low[1], high[1], BOTTOM_RAYS + 2)[1:-1]
+    gx, gy = np.meshgrid(xs, ys)
+    starts = np.column_stack([gx.ravel(), gy.ravel(), np.full(gx.size, low[2] - 0.05)])
+    ends = starts.copy()
+    ends[:, 2] = high[2] + 0.05
+    hits = ray_hits(world, starts, ends)
+    on_it = hits.bodies == obj.body_id
+    bottom = float(hits.positions[on_it, 2].min()) if on_it.any() else low[2]
+    return world.pose(obj).position[2] - bottom
 
 
 def _surface(query: LocationQuery, value: object, key: str, alive: BoolGrid) -> CostLayer:
     world, inside = query.world, key == "in_"
     support, link = query.part(value, key)
     low, high = query.bounds(value, key)
-    placed, radius, lift = _placed(query)
+    placed, radius = _placed(query)
     x, y = query.centres()
     over = (x >= low[0]) & (x <= high[0]) & (y >= low[1]) & (y <= high[1])
     rows, cols = np.nonzero(alive & over)  # a ray straight down elsewhere cannot meet it
@@ -49,6 +72,7 @@ def _surface(query: LocationQuery, value: object, key: str, alive: BoolGrid) -> 
     ends[:, 2] = low[2] - 0.01
     with out_of_the_way(world, [placed]):
         hits = ray_hits(world, starts, ends)
+        lift = _frame_over_bottom(world, placed)
     ok = (hits.bodies == support.body_id) & (hits.normals[:, 2] >= FLAT)
     if link is not None:
         ok &= hits.links == support.link_index[link]
