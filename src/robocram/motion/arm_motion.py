@@ -4,7 +4,9 @@ The straight joint-space segment is checked first on the world itself, by conser
 advancement on clearances (:mod:`segment_check`): coal measures them on obstacles kept
 with the world and PyBullet decides every near contact
 (:class:`~robocram.motion.coal_clearance.CoalClearance`), which needs no snapshot and
-answers most motions in a few checks. Only when it is blocked is a coal snapshot
+answers most motions in a few checks. When it is blocked, a detour over the obstacle
+(:mod:`arm_detours`: the tool lifted at both ends) is checked the same way; only when that
+is blocked too is a coal snapshot
 (:class:`~robocram.motion.collision_scene.CollisionScene`) built, for OMPL's thousands of
 checks; the planned path is then checked again on the world. Contacts the robot already
 has when the motion starts (a hand resting on a handle) are allowed for that motion: the
@@ -22,6 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from robocram.execution.failures import ManipulationPathBlocked
+from robocram.motion.arm_detours import ToolHeight, detour_path
 from robocram.motion.bullet_scene import BulletScene
 from robocram.motion.cartesian_path import cartesian_path
 from robocram.motion.coal_clearance import CoalClearance
@@ -128,6 +131,11 @@ def _checked_path(
     except ManipulationPathBlocked:
         if not settings.plan:
             raise
+    height = ToolHeight.of(world, robot, joints)
+    if height is not None:
+        detour = detour_path(scene, start, end, bound, box, height)
+        if detour is not None:
+            return detour
     links = set(world.link_names(robot))
     start_links = {link for link, _ in scene.judge.allowed_pairs if link in links}
     failures: list[ManipulationPathBlocked] = []
