@@ -28,9 +28,11 @@ from robocram.motion.segment_check import CheckCounter, segment_free
 from robocram.motion.travel_bound import TravelBound
 from robocram.world import World
 
-DETOUR_LIFTS = (0.3,)  # [m] tool lifts tried, in order
+DETOUR_LIFTS = (0.3, 0.5)  # [m] tool lifts tried, in order
 MIN_LIFT = 0.05  # [m] a joint that lifts the tool less than this makes no detour
 MAX_TURN = 1.0  # [rad | m] the most a lift changes its joint
+LIFT_STEPS = 4  # secant steps towards the lift
+LIFT_TOLERANCE = 0.01  # [m] a lift this near the one asked for is taken
 SLOPE_STEP = 1e-4  # [rad | m] finite difference of the tool's height per joint
 
 
@@ -69,9 +71,9 @@ class ToolHeight:
     def raised(
         self, q: FloatArray, lift: float, limits: tuple[Sequence[float], Sequence[float]]
     ) -> FloatArray | None:
-        """``q`` with the joint changed that lifts the tool most steeply (by ``lift`` [m] to
-        first order, or as far as its limits and :data:`MAX_TURN` let it, if that is at
-        least :data:`MIN_LIFT`); None when no joint can."""
+        """``q`` with the joint changed that lifts the tool most steeply: by ``lift`` [m],
+        or as far as its limits and :data:`MAX_TURN` let it, if that is at least
+        :data:`MIN_LIFT`; None when no joint can."""
         here = self.height(q)
         slopes = []  # [m] per unit of each joint
         for i in range(len(q)):
@@ -81,13 +83,36 @@ class ToolHeight:
         for i in sorted(range(len(q)), key=lambda i: -abs(slopes[i])):
             if abs(slopes[i]) < 1e-6:
                 break
-            change = float(np.clip(lift / slopes[i], -MAX_TURN, MAX_TURN))
-            value = float(np.clip(q[i] + change, limits[0][i], limits[1][i]))
-            if (value - q[i]) * slopes[i] >= MIN_LIFT:
-                raised = q.copy()
-                raised[i] = value
+            raised = self._lifted(q, i, here + lift, slopes[i], limits)
+            if self.height(raised) - here >= MIN_LIFT:
                 return raised
         return None
+
+    def _lifted(
+        self,
+        q: FloatArray,
+        joint: int,
+        target: float,
+        slope: float,
+        limits: tuple[Sequence[float], Sequence[float]],
+    ) -> FloatArray:
+        """``q`` with ``joint`` moved towards the tool height ``target`` [m] by a few
+        secant steps from ``slope``, within its limits and :data:`MAX_TURN` of ``q``."""
+        low = max(limits[0][joint], q[joint] - MAX_TURN)
+        high = min(limits[1][joint], q[joint] + MAX_TURN)
+        value, height = float(q[joint]), self.height(q)
+        moved = q.copy()
+        for _ in range(LIFT_STEPS):
+            step = (target - height) / slope
+            moved[joint] = float(np.clip(value + step, low, high))
+            if abs(moved[joint] - value) < 1e-9:
+                break
+            now = self.height(moved)
+            slope = (now - height) / (moved[joint] - value) if now != height else slope
+            value, height = float(moved[joint]), now
+            if abs(target - height) < LIFT_TOLERANCE or abs(slope) < 1e-6:
+                break
+        return moved
 
 
 def detour_path(
