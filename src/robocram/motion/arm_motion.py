@@ -40,6 +40,7 @@ from robocram.tf import Pose
 from robocram.world import World
 
 SNAPSHOT_MARGINS = (0.0, 0.015)  # [m] planning again with a margin when the world disagrees
+UNMOVED = 1e-9  # [rad | m] a joint changing less than this does not move
 
 
 @dataclass(frozen=True)
@@ -101,12 +102,18 @@ def plan_arm_motion(
     start = [current[j] for j in joints]
     end = [float(goal[j]) for j in joints]
     limits = joint_limits(desc, joints)
-    if not settings.check:
+    if not settings.check or _unmoved(start, end):  # nothing to check: the start is allowed
         path = JointPath(joints, (tuple(start), tuple(end)), "straight", 0)
     else:
         path = _checked_path(world, robot, joints, allowed_links, start, end, settings, what)
     trajectory = time_parameterize(robot, joints, path.waypoints, limits, kind="arm")
     return ArmMotion(path, trajectory)
+
+
+def _unmoved(start: list[float], end: list[float]) -> bool:
+    """Whether no joint moves (an arm parked again): contacts the motion starts with are
+    allowed, so such a motion is free without a checker."""
+    return all(abs(b - a) <= UNMOVED for a, b in zip(start, end, strict=True))
 
 
 def _checked_path(
