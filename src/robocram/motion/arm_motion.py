@@ -4,7 +4,9 @@ The straight joint-space segment is checked first on the world itself, by conser
 advancement on clearances (:mod:`segment_check`): coal measures them on obstacles kept
 with the world and PyBullet decides every near contact
 (:class:`~robocram.motion.coal_clearance.CoalClearance`), which needs no snapshot and
-answers most motions in a few checks. Only when it is blocked is a coal snapshot
+answers most motions in a few checks. When it is blocked, a detour over the obstacle
+(:mod:`arm_detours`: the tool lifted at both ends) is checked the same way; only when that
+is blocked too is a coal snapshot
 (:class:`~robocram.motion.collision_scene.CollisionScene`) built, for OMPL's thousands of
 checks; the planned path is then checked again on the world. Contacts the robot already
 has when the motion starts (a hand resting on a handle) are allowed for that motion: the
@@ -22,6 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from robocram.execution.failures import ManipulationPathBlocked
+from robocram.motion.arm_detours import ToolHeight, detour_path
 from robocram.motion.bullet_scene import BulletScene
 from robocram.motion.cartesian_path import cartesian_path
 from robocram.motion.coal_clearance import CoalClearance
@@ -37,6 +40,7 @@ from robocram.tf import Pose
 from robocram.world import World
 
 SNAPSHOT_MARGINS = (0.0, 0.015)  # [m] planning again with a margin when the world disagrees
+UNMOVED = 1e-9  # [rad | m] a joint changing less than this does not move
 
 
 @dataclass(frozen=True)
@@ -98,12 +102,18 @@ def plan_arm_motion(
     start = [current[j] for j in joints]
     end = [float(goal[j]) for j in joints]
     limits = joint_limits(desc, joints)
-    if not settings.check:
+    if not settings.check or _unmoved(start, end):  # nothing to check: the start is allowed
         path = JointPath(joints, (tuple(start), tuple(end)), "straight", 0)
     else:
         path = _checked_path(world, robot, joints, allowed_links, start, end, settings, what)
     trajectory = time_parameterize(robot, joints, path.waypoints, limits, kind="arm")
     return ArmMotion(path, trajectory)
+
+
+def _unmoved(start: list[float], end: list[float]) -> bool:
+    """Whether no joint moves (an arm parked again): contacts the motion starts with are
+    allowed, so such a motion is free without a checker."""
+    return all(abs(b - a) <= UNMOVED for a, b in zip(start, end, strict=True))
 
 
 def _checked_path(
@@ -128,6 +138,11 @@ def _checked_path(
     except ManipulationPathBlocked:
         if not settings.plan:
             raise
+    height = ToolHeight.of(world, robot, joints)
+    if height is not None:
+        detour = detour_path(scene, start, end, bound, box, height)
+        if detour is not None:
+            return detour
     links = set(world.link_names(robot))
     start_links = {link for link, _ in scene.judge.allowed_pairs if link in links}
     failures: list[ManipulationPathBlocked] = []

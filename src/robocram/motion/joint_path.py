@@ -35,7 +35,7 @@ class JointPath:
 
     joints: tuple[str, ...]
     waypoints: tuple[tuple[float, ...], ...]
-    planner: str  # "straight", "rrt_connect" or "cartesian"
+    planner: str  # "straight", "detour", "rrt_connect" or "cartesian"
     checks: int  # configurations checked to find it
 
 

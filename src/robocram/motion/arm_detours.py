@@ -1,0 +1,149 @@
+"""Detours tried before planning: lift the tool, cross over at that height, lower it.
+
+Most arm motions whose straight joint segment is blocked are blocked near an end: the
+fingers sweep through the object they are about to grasp, a held mug is dragged through
+the table it is put on, the forearm scrapes the table when the arm parks after placing.
+Lifting the tool at the start, crossing at that height and lowering it at the goal clears
+such obstacles. Each lift is made by one joint, the one that raises the tool most within
+its limits (a shoulder, or the torso), linearised at that configuration. Every segment is
+checked on the world like a straight motion, so a detour costs a few dozen checks where
+planning costs a snapshot and thousands; one that fails leaves the planner to it. Nothing
+is random: the same motion always gets the same detour.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+import pinocchio as pin
+
+from robocram.motion.configuration_checker import ConfigurationChecker
+from robocram.motion.joint_path import JointPath
+from robocram.motion.joint_slots import JointSlots
+from robocram.motion.joint_trajectory import FloatArray
+from robocram.motion.robot_geometry import RobotGeometry
+from robocram.motion.segment_check import CheckCounter, segment_free
+from robocram.motion.travel_bound import TravelBound
+from robocram.world import World
+
+DETOUR_LIFTS = (0.3, 0.5)  # [m] tool lifts tried, in order
+MIN_LIFT = 0.05  # [m] a joint that lifts the tool less than this makes no detour
+MAX_TURN = 1.0  # [rad | m] the most a lift changes its joint
+LIFT_STEPS = 4  # secant steps towards the lift
+LIFT_TOLERANCE = 0.01  # [m] a lift this near the one asked for is taken
+SLOPE_STEP = 1e-4  # [rad | m] finite difference of the tool's height per joint
+
+
+@dataclass(frozen=True)
+class ToolHeight:
+    """The height [m] of an arm's tool over the robot's root link, as the motion's joints
+    (the others as the robot stands) change."""
+
+    geometry: RobotGeometry
+    slots: JointSlots
+    frame: int  # pinocchio frame of the tool
+
+    @classmethod
+    def of(cls, world: World, robot: str, joints: Sequence[str]) -> ToolHeight | None:
+        """The height of the tool of the arm moved by most of ``joints``; None if none is."""
+        desc = world.robot(robot).description
+        arms = [arm for arm in desc.arms.values() if set(arm.joints) & set(joints)]
+        if not arms:
+            return None
+        arm = max(arms, key=lambda arm: len(set(arm.joints) & set(joints)))
+        geometry = desc.model.derived(RobotGeometry.of)
+        kin = geometry.kinematics
+        masters = {
+            j: v for j, v in world.joint_states(robot).items()
+            if kin.robot_model.joints[j].mimic is None
+        }  # fmt: skip
+        slots = JointSlots(kin, joints, kin.configuration(masters))
+        return cls(geometry, slots, kin.frame_id(arm.tool_frame))
+
+    def height(self, q: FloatArray) -> float:
+        """The tool's height [m] over the root link at ``q``."""
+        model, data = self.geometry.kinematics.model, self.geometry.data()
+        pin.framesForwardKinematics(model, data, self.slots.full(q))
+        return float(data.oMf[self.frame].translation[2])
+
+    def raised(
+        self, q: FloatArray, lift: float, limits: tuple[Sequence[float], Sequence[float]]
+    ) -> FloatArray | None:
+        """``q`` with the joint changed that lifts the tool most steeply: by ``lift`` [m],
+        or as far as its limits and :data:`MAX_TURN` let it, if that is at least
+        :data:`MIN_LIFT`; None when no joint can."""
+        here = self.height(q)
+        slopes = []  # [m] per unit of each joint
+        for i in range(len(q)):
+            probe = q.copy()
+            probe[i] += SLOPE_STEP
+            slopes.append((self.height(probe) - here) / SLOPE_STEP)
+        for i in sorted(range(len(q)), key=lambda i: -abs(slopes[i])):
+            if abs(slopes[i]) < 1e-6:
+                break
+            raised = self._lifted(q, i, here + lift, slopes[i], limits)
+            if self.height(raised) - here >= MIN_LIFT:
+                return raised
+        return None
+
+    def _lifted(
+        self,
+        q: FloatArray,
+        joint: int,
+        target: float,
+        slope: float,
+        limits: tuple[Sequence[float], Sequence[float]],
+    ) -> FloatArray:
+        """``q`` with ``joint`` moved towards the tool height ``target`` [m] by a few
+        secant steps from ``slope``, within its limits and :data:`MAX_TURN` of ``q``."""
+        low = max(limits[0][joint], q[joint] - MAX_TURN)
+        high = min(limits[1][joint], q[joint] + MAX_TURN)
+        value, height = float(q[joint]), self.height(q)
+        moved = q.copy()
+        for _ in range(LIFT_STEPS):
+            step = (target - height) / slope
+            moved[joint] = float(np.clip(value + step, low, high))
+            if abs(moved[joint] - value) < 1e-9:
+                break
+            now = self.height(moved)
+            slope = (now - height) / (moved[joint] - value) if now != height else slope
+            value, height = float(moved[joint]), now
+            if abs(target - height) < LIFT_TOLERANCE or abs(slope) < 1e-6:
+                break
+        return moved
+
+
+def detour_path(
+    checker: ConfigurationChecker,
+    start: Sequence[float],
+    goal: Sequence[float],
+    bound: TravelBound,
+    limits: tuple[Sequence[float], Sequence[float]],
+    height: ToolHeight,
+    lifts: Sequence[float] = DETOUR_LIFTS,
+) -> JointPath | None:
+    """A free path start, start lifted, goal lifted, goal; None if there is none (or an
+    end collides).
+
+    ``limits`` are the joints' (lower, upper) bounds; the first lift of ``lifts`` [m]
+    whose path is free is taken.
+    """
+    a, b = np.asarray(start, dtype=float), np.asarray(goal, dtype=float)
+    counter = CheckCounter(checks=2)
+    if not (checker.is_free(a) and checker.is_free(b)):
+        return None
+    for lift in lifts:
+        up_a, up_b = height.raised(a, lift, limits), height.raised(b, lift, limits)
+        if up_a is None or up_b is None:
+            continue
+        points = [a, up_a, up_b, b]
+        counter.checks += 2
+        if not (checker.is_free(up_a) and checker.is_free(up_b)):
+            continue
+        legs = zip(points, points[1:], strict=False)
+        if all(segment_free(checker, p, q, bound, counter) for p, q in legs):
+            waypoints = tuple(tuple(map(float, p)) for p in points)
+            return JointPath(checker.joints, waypoints, "detour", counter.checks)
+    return None
