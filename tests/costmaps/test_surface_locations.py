@@ -8,7 +8,7 @@ from collections.abc import Iterator
 import pytest
 
 from robocram.costmaps import CostmapError, CostmapInputError, CostmapLocations, LocationKeyError
-from robocram.costmaps.surface_costs import SURFACE_MARGIN
+from robocram.costmaps.surface_costs import RESTING_GAP, SURFACE_MARGIN
 from robocram.designators import a, using_location_resolver
 from robocram.tf import Pose
 from robocram.world import World
@@ -93,3 +93,15 @@ def test_visible_for_a_robot_without_a_camera() -> None:
         with pytest.raises(CostmapInputError, match="no camera") as caught:
             next(CostmapLocations(w).poses(a.location(visible_for="quadrotor", object="mug")))
         assert caught.value.culprit == "quadrotor"
+
+
+def test_a_pose_on_the_table_lies_the_resting_gap_above_the_mugs_true_bottom(
+    world: World,
+) -> None:
+    """The mug's frame is 1 mm above its bottom (its Bullet bounds say 3 mm): the pose
+    puts the bottom RESTING_GAP over the top, so a mug let go there drops 2 mm."""
+    locs = CostmapLocations(world, resolution=0.02)
+    pose = next(iter(locs.poses(a.location(on="table", for_="mug"))))
+    frame_over_bottom = 0.001
+    assert pose.position[2] == pytest.approx(TABLE[2] + frame_over_bottom + RESTING_GAP, abs=2e-4)
+    assert world.pose("mug").position[2] - world.aabb("mug")[0][2] > frame_over_bottom + 0.001
