@@ -189,9 +189,7 @@ class IKSolver:
             descend(self.chain, reference, target_se3, b, replace(s, max_iterations=1), best)
         values = self.chain.joint_positions(self.chain.wrap_continuous(best.x, reference))
         result = self._result(False, values, best, iterations, descents, hits, t0)
-        return replace(
-            result, beyond_reach=max(self.reach.pose_outside(in_base), 0.0)
-        )
+        return replace(result, beyond_reach=max(self.reach.pose_outside(in_base), 0.0))
 
     def _starts(
         self,
