@@ -3,9 +3,10 @@
 The line from the tool's pose to the target is cut into steps of at most ``max_step``
 (1 cm) and ``max_rotation`` (0.05 rad); IK solves each step from the previous solution
 (one descent, no random restarts, so the arm follows the line instead of jumping to
-another branch); a step whose joints change by more than ``jump_threshold`` is a jump and
-ends the line; every step and the segment to it are checked like any other path. The
-answer is the path as far as it got and the fraction of the line achieved.
+another branch; :func:`~robocram.kinematics.track_ik`); a step whose joints change by
+more than ``jump_threshold`` is a jump and ends the line; every step and the segment to
+it are checked like any other path. The answer is the path as far as it got and the
+fraction of the line achieved.
 """
 
 from __future__ import annotations
@@ -16,7 +17,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from robocram.kinematics import solve_ik
+from robocram.kinematics import track_ik
 from robocram.motion.configuration_checker import (
     ClearanceChecker,
     ConfigurationChecker,
@@ -84,17 +85,14 @@ def cartesian_path(
     ``current`` holds every joint's value now; the checker's joints are the ones moved.
     """
     joints = checker.joints
-    seed = dict(current)
-    q = np.array([seed[j] for j in joints])
+    q = np.array([current[j] for j in joints])
     waypoints = [tuple(q.tolist())]
     counter = CheckCounter()
     poses = line_poses(tool_in_base, target_in_base, max_step, max_rotation)
     stopped = ""
+    answers = track_ik(desc, arm, poses, current, random_seed=random_seed)
     with posed(checker):  # the robot is put back once, after the whole line
-        for k, pose in enumerate(poses):
-            result = solve_ik(
-                desc, arm, pose, seed=seed, use_torso=False, max_restarts=0, random_seed=random_seed
-            )
+        for k, result in enumerate(answers):
             if not result.success:
                 stopped = f"IK found no solution {k + 1} steps along the line"
                 break
@@ -111,7 +109,6 @@ def cartesian_path(
                 link, other = pairs[0] if pairs else ("the arm", "something on the way")
                 stopped = f"{link} hits {other} {k + 1} steps along the line"
                 break
-            seed.update(result.joint_positions)
             q = nxt
             waypoints.append(tuple(q.tolist()))
     fraction = (len(waypoints) - 1) / len(poses)
