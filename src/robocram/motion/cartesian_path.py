@@ -45,12 +45,30 @@ class CartesianPath:
     stopped_by: str  # "" when the whole line was achieved, else why it stopped
 
 
-def _clear_around(checker: ConfigurationChecker, q: FloatArray, travel: float) -> bool:
-    """Whether ``q`` is clear by more than ``travel`` [m]: then the step to it is free too
-    (no point moved further than that on the way), with one clearance query."""
-    if not isinstance(checker, ClearanceChecker):
-        return False
-    return checker.clearance(q) > travel
+class _Clearance:
+    """A lower bound [m] on the clearance of the last waypoint, to spare clearance queries.
+
+    A step that moves no point more than ``travel`` lowers the clearance by at most that.
+    So a waypoint clear by more than twice the travel to the next one leaves the next one
+    clear by more than that travel: the step is free (no point moved further than that on
+    the way) and nobody needs to ask. Otherwise the next waypoint's clearance is asked:
+    one query, which tells as much for the step to it.
+    """
+
+    def __init__(self, checker: ConfigurationChecker) -> None:
+        self.checker = checker
+        self.at_least = -math.inf  # [m] at the last waypoint; nothing known at first
+
+    def step_free(self, q: FloatArray, travel: float) -> bool:
+        """Whether the step to ``q``, moving no point more than ``travel`` [m], is free by
+        clearance alone (False: check it otherwise)."""
+        if self.at_least - travel > travel:
+            self.at_least -= travel
+            return True
+        if not isinstance(self.checker, ClearanceChecker):
+            return False
+        self.at_least = self.checker.clearance(q)
+        return self.at_least > travel
 
 
 def line_poses(start: Pose, goal: Pose, max_step: float, max_rotation: float) -> list[Pose]:
@@ -91,6 +109,7 @@ def cartesian_path(
     poses = line_poses(tool_in_base, target_in_base, max_step, max_rotation)
     stopped = ""
     answers = track_ik(desc, arm, poses, current, random_seed=random_seed)
+    clearance = _Clearance(checker)
     with posed(checker):  # the robot is put back once, after the whole line
         for k, result in enumerate(answers):
             if not result.success:
@@ -102,7 +121,7 @@ def cartesian_path(
                 stopped = f"a joint jumps {jump:.2f} between steps {k} and {k + 1}"
                 break
             counter.checks += 1
-            if not _clear_around(checker, nxt, bound.travel(q, nxt)) and (
+            if not clearance.step_free(nxt, bound.travel(q, nxt)) and (
                 (pairs := checker.colliding(nxt))
                 or not segment_free(checker, q, nxt, bound, counter)
             ):
