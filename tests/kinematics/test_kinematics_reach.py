@@ -87,3 +87,17 @@ def test_torso_extends_the_reach(pr2: RobotDescription) -> None:
     assert not reachable(pr2, "right", above, seed={"torso_lift_joint": 0.0})
     assert reachable(pr2, "right", above, seed={"torso_lift_joint": 0.0}, use_torso=True)
     assert not math.isclose(IKSolver.cached(pr2, "right", True).reach.radius, 1.001)
+
+
+def test_a_near_miss_of_the_wrist_still_gets_the_nearest_configuration(
+    pr2: RobotDescription,
+) -> None:
+    shoulder = forward_kinematics(pr2, {}, "r_shoulder_pan_link").position
+    down = (0.0, math.sqrt(0.5), 0.0, math.sqrt(0.5))
+    wrist_out = 0.005  # [m] beyond the wrist's reach: a near miss, not ruled out
+    along = math.sqrt((0.821 + wrist_out) ** 2 - 0.38**2)
+    near = Pose((shoulder[0] + along, shoulder[1], shoulder[2] + 0.2), down)
+    assert reachable(pr2, "right", near)
+    result = solve_ik(pr2, "right", near)
+    assert not result.success and result.iterations > 0  # descended: the nearest found
+    assert result.beyond_reach == pytest.approx(wrist_out, abs=1e-6)

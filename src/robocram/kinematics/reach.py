@@ -25,7 +25,10 @@ import pinocchio as pin
 from robocram.kinematics.arm_chain import ArmChain, FloatArray
 
 _ON_AXIS = 1e-9  # [m] an offset closer than this to a joint's axis lies on it
-_ROUNDING = 1e-9  # [m] a wrist this far outside may be rounding (some wrists reach the sphere)
+# a wrist this near its bound is not ruled out, so that a query that fails still answers
+# with the nearest configuration it finds for a target a near miss from reach
+NEAR_MISS_POSITION = 0.01  # [m]
+NEAR_MISS_ORIENTATION = 0.05  # [rad]
 
 
 def _travel(chain: ArmChain, row: int) -> float:
@@ -116,11 +119,13 @@ class ReachBound:
     def excludes(
         self, target_in_base: pin.SE3, tolerance: float, orientation_tolerance: float = 0.0
     ) -> bool:
-        """Whether a target is farther than the bound plus ``tolerance`` [m] (the wrist: plus
-        what ``orientation_tolerance`` [rad] moves it too)."""
+        """Whether a target is farther than the bound plus ``tolerance`` [m], or its wrist
+        farther than a near miss (or the tolerances, if larger) moves it."""
         if self.distance_outside(target_in_base.translation) > tolerance:
             return True
-        slack = tolerance + _ROUNDING + float(np.linalg.norm(self.wrist)) * orientation_tolerance
+        position = max(tolerance, NEAR_MISS_POSITION)
+        turn = max(orientation_tolerance, NEAR_MISS_ORIENTATION)
+        slack = position + float(np.linalg.norm(self.wrist)) * turn
         return self._outside(target_in_base.act(self.wrist).tolist(), self.wrist_radius) > slack
 
     def _outside(self, p: list[float], radius: float) -> float:
