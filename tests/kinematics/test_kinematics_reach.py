@@ -45,6 +45,25 @@ def test_every_sampled_pose_lies_inside_the_bound(robot: str, arm: str, use_tors
         assert reachable(desc, arm, tool, use_torso=use_torso)
         _, in_base, _ = solver.locate(tool, joints)
         assert solver.reach.distance_outside(in_base.translation) <= 1e-9
+        assert solver.reach.pose_outside(in_base) <= 1e-9
+
+
+def test_pr2_wrist_lies_behind_the_tool_within_the_shorter_radius(pr2: RobotDescription) -> None:
+    bound = IKSolver.cached(pr2, "right").reach
+    assert tuple(bound.wrist) == pytest.approx((-0.18, 0.0, 0.0))  # the wrist flex joint
+    assert bound.wrist_radius == pytest.approx(0.821, abs=1e-9)  # 0.1 + 0.4 + 0.321 [m]
+
+
+def test_a_top_grasp_beyond_the_wrist_reach_fails_without_a_descent(pr2: RobotDescription) -> None:
+    shoulder = forward_kinematics(pr2, {}, "r_shoulder_pan_link").position
+    down = (0.0, math.sqrt(0.5), 0.0, math.sqrt(0.5))  # the tool's x axis points down
+    # the tool is within 1.001 m of the shoulder, its wrist 0.18 m above it is not
+    top = Pose((shoulder[0] + 0.78, shoulder[1], shoulder[2] + 0.2), down)
+    assert reachable(pr2, "right", Pose(top.position))
+    assert not reachable(pr2, "right", top)
+    result = solve_ik(pr2, "right", top)
+    assert not result.success and result.iterations == 0
+    assert result.beyond_reach == pytest.approx(math.hypot(0.78, 0.38) - 0.821, abs=1e-6)
 
 
 def test_beyond_reach_fails_without_a_descent(pr2: RobotDescription) -> None:
@@ -68,3 +87,17 @@ def test_torso_extends_the_reach(pr2: RobotDescription) -> None:
     assert not reachable(pr2, "right", above, seed={"torso_lift_joint": 0.0})
     assert reachable(pr2, "right", above, seed={"torso_lift_joint": 0.0}, use_torso=True)
     assert not math.isclose(IKSolver.cached(pr2, "right", True).reach.radius, 1.001)
+
+
+def test_a_near_miss_of_the_wrist_still_gets_the_nearest_configuration(
+    pr2: RobotDescription,
+) -> None:
+    shoulder = forward_kinematics(pr2, {}, "r_shoulder_pan_link").position
+    down = (0.0, math.sqrt(0.5), 0.0, math.sqrt(0.5))
+    wrist_out = 0.005  # [m] beyond the wrist's reach: a near miss, not ruled out
+    along = math.sqrt((0.821 + wrist_out) ** 2 - 0.38**2)
+    near = Pose((shoulder[0] + along, shoulder[1], shoulder[2] + 0.2), down)
+    assert reachable(pr2, "right", near)
+    result = solve_ik(pr2, "right", near)
+    assert not result.success and result.iterations > 0  # descended: the nearest found
+    assert result.beyond_reach == pytest.approx(wrist_out, abs=1e-6)

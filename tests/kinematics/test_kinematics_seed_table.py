@@ -62,12 +62,13 @@ def test_far_target_has_no_samples_around() -> None:
 
 def test_hsr_without_its_lift_gives_up_after_fruitless_descents() -> None:
     hsr = load_description("hsrb")
-    # inside the arm's reach without the lift, but at an orientation four joints cannot take
+    # inside the arm's reach without the lift (the arm points down, the lift brings its wrist
+    # nearer the shoulder), but at a pose four joints cannot take
     target = forward_kinematics(
         hsr,
         {
             "arm_lift_joint": 0.1,
-            "arm_flex_joint": -1.2,
+            "arm_flex_joint": -2.2,
             "arm_roll_joint": 0.6,
             "wrist_flex_joint": -1.0,
         },

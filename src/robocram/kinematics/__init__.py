@@ -10,6 +10,7 @@ from robocram.kinematics.kinematics_cache import KinematicsCache
 from robocram.kinematics.planar_base import BaseMotion, PlanarBase, base_in_ik, split_base_motion
 from robocram.kinematics.reach import ReachBound
 from robocram.kinematics.solve_ik import forward_kinematics, reachable, solve_ik
+from robocram.kinematics.track_ik import track_ik
 
 __all__ = [
     "BaseIKSolver",
@@ -30,4 +31,5 @@ __all__ = [
     "reachable",
     "solve_ik",
     "split_base_motion",
+    "track_ik",
 ]

@@ -134,7 +134,7 @@ class BaseIKSolver(IKSolver):
     ) -> Iterator[FloatArray]:
         """Fitted table samples, least base motion and misfit first, the seed among them
         by its own misfit; then seeded random configurations."""
-        if self.reach.excludes(in_base, s.position_tolerance):
+        if self.reach.excludes(in_base, s.position_tolerance, s.orientation_tolerance):
             return
         # the arm table's frame: the parent of the arm's first variable, at the seed (the
         # last FK of the chain, made by ``locate``), in the virtual origin = the root link

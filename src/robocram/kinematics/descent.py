@@ -65,15 +65,11 @@ def _bounded_step(
     leaves its limits (at most once per variable).
     """
     lower, upper = chain.lower, chain.upper
+    moved = x + _damped_solve(jac, err, damping)
+    out = (moved < lower) | (moved > upper)
     free = np.ones(x.size, dtype=bool)
-    moved = x.copy()
     rest = err
-    for _ in range(x.size):
-        jf = jac[:, free] if not free.all() else jac
-        hessian = jf.T @ jf
-        hessian.flat[:: hessian.shape[0] + 1] += damping
-        moved[free] = x[free] + np.linalg.solve(hessian, jf.T @ rest)
-        out = (moved < lower) | (moved > upper)
+    for _ in range(x.size - 1):
         if not out.any():
             return moved
         clamped = np.minimum(np.maximum(moved, lower), upper)
@@ -83,7 +79,16 @@ def _bounded_step(
         free &= ~out
         if not free.any():
             break
+        moved[free] = x[free] + _damped_solve(jac[:, free], rest, damping)
+        out = (moved < lower) | (moved > upper)
     return np.minimum(np.maximum(moved, lower), upper)
+
+
+def _damped_solve(jac: FloatArray, err: FloatArray, damping: float) -> FloatArray:
+    """``(J^T J + damping I)^-1 J^T e``."""
+    hessian = jac.T @ jac
+    hessian.flat[:: hessian.shape[0] + 1] += damping
+    return np.asarray(np.linalg.solve(hessian, jac.T @ err))
 
 
 def descend(

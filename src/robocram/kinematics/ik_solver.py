@@ -189,9 +189,7 @@ class IKSolver:
             descend(self.chain, reference, target_se3, b, replace(s, max_iterations=1), best)
         values = self.chain.joint_positions(self.chain.wrap_continuous(best.x, reference))
         result = self._result(False, values, best, iterations, descents, hits, t0)
-        return replace(
-            result, beyond_reach=max(self.reach.distance_outside(in_base.translation), 0.0)
-        )
+        return replace(result, beyond_reach=max(self.reach.pose_outside(in_base), 0.0))
 
     def _starts(
         self,
@@ -205,7 +203,7 @@ class IKSolver:
 
         None beyond the reach bound: no descent can get there.
         """
-        if self.reach.excludes(in_base, s.position_tolerance):
+        if self.reach.excludes(in_base, s.position_tolerance, s.orientation_tolerance):
             return
         near, distance = self.table.nearest(in_base, s.table_starts)
         yield from self._with_seed(near, distance, reference, seed_distance, random_seed)

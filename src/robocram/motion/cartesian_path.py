@@ -3,9 +3,10 @@
 The line from the tool's pose to the target is cut into steps of at most ``max_step``
 (1 cm) and ``max_rotation`` (0.05 rad); IK solves each step from the previous solution
 (one descent, no random restarts, so the arm follows the line instead of jumping to
-another branch); a step whose joints change by more than ``jump_threshold`` is a jump and
-ends the line; every step and the segment to it are checked like any other path. The
-answer is the path as far as it got and the fraction of the line achieved.
+another branch; :func:`~robocram.kinematics.track_ik`); a step whose joints change by
+more than ``jump_threshold`` is a jump and ends the line; every step and the segment to
+it are checked like any other path. The answer is the path as far as it got and the
+fraction of the line achieved.
 """
 
 from __future__ import annotations
@@ -16,7 +17,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from robocram.kinematics import solve_ik
+from robocram.kinematics import track_ik
 from robocram.motion.configuration_checker import (
     ClearanceChecker,
     ConfigurationChecker,
@@ -44,12 +45,30 @@ class CartesianPath:
     stopped_by: str  # "" when the whole line was achieved, else why it stopped
 
 
-def _clear_around(checker: ConfigurationChecker, q: FloatArray, travel: float) -> bool:
-    """Whether ``q`` is clear by more than ``travel`` [m]: then the step to it is free too
-    (no point moved further than that on the way), with one clearance query."""
-    if not isinstance(checker, ClearanceChecker):
-        return False
-    return checker.clearance(q) > travel
+class _Clearance:
+    """A lower bound [m] on the clearance of the last waypoint, to spare clearance queries.
+
+    A step that moves no point more than ``travel`` lowers the clearance by at most that.
+    So a waypoint clear by more than twice the travel to the next one leaves the next one
+    clear by more than that travel: the step is free (no point moved further than that on
+    the way) and nobody needs to ask. Otherwise the next waypoint's clearance is asked:
+    one query, which tells as much for the step to it.
+    """
+
+    def __init__(self, checker: ConfigurationChecker) -> None:
+        self.checker = checker
+        self.at_least = -math.inf  # [m] at the last waypoint; nothing known at first
+
+    def step_free(self, q: FloatArray, travel: float) -> bool:
+        """Whether the step to ``q``, moving no point more than ``travel`` [m], is free by
+        clearance alone (False: check it otherwise)."""
+        if self.at_least - travel > travel:
+            self.at_least -= travel
+            return True
+        if not isinstance(self.checker, ClearanceChecker):
+            return False
+        self.at_least = self.checker.clearance(q)
+        return self.at_least > travel
 
 
 def line_poses(start: Pose, goal: Pose, max_step: float, max_rotation: float) -> list[Pose]:
@@ -84,17 +103,15 @@ def cartesian_path(
     ``current`` holds every joint's value now; the checker's joints are the ones moved.
     """
     joints = checker.joints
-    seed = dict(current)
-    q = np.array([seed[j] for j in joints])
+    q = np.array([current[j] for j in joints])
     waypoints = [tuple(q.tolist())]
     counter = CheckCounter()
     poses = line_poses(tool_in_base, target_in_base, max_step, max_rotation)
     stopped = ""
+    answers = track_ik(desc, arm, poses, current, random_seed=random_seed)
+    clearance = _Clearance(checker)
     with posed(checker):  # the robot is put back once, after the whole line
-        for k, pose in enumerate(poses):
-            result = solve_ik(
-                desc, arm, pose, seed=seed, use_torso=False, max_restarts=0, random_seed=random_seed
-            )
+        for k, result in enumerate(answers):
             if not result.success:
                 stopped = f"IK found no solution {k + 1} steps along the line"
                 break
@@ -104,14 +121,13 @@ def cartesian_path(
                 stopped = f"a joint jumps {jump:.2f} between steps {k} and {k + 1}"
                 break
             counter.checks += 1
-            if not _clear_around(checker, nxt, bound.travel(q, nxt)) and (
+            if not clearance.step_free(nxt, bound.travel(q, nxt)) and (
                 (pairs := checker.colliding(nxt))
                 or not segment_free(checker, q, nxt, bound, counter)
             ):
                 link, other = pairs[0] if pairs else ("the arm", "something on the way")
                 stopped = f"{link} hits {other} {k + 1} steps along the line"
                 break
-            seed.update(result.joint_positions)
             q = nxt
             waypoints.append(tuple(q.tolist()))
     fraction = (len(waypoints) - 1) / len(poses)
