@@ -26,9 +26,10 @@ from robocram.scenes import KitchenScene, kitchen_scene
 from robocram.tf import Pose
 
 KEPT = (
-    "kept per process: the parsed URDF models (robocram.robots.model_memo) and what IK "
-    "keeps on them (solvers, start tables); on disk: the reachability maps; per scene: "
-    "the world; nothing else carries over"
+    "kept per process: the parsed URDF models (robocram.robots.model_memo) and what is "
+    "kept on them (IK's solvers and start tables, the reachability maps read from disk "
+    "once); per scene: the world and what it keeps (coal obstacle shapes, base "
+    "footprints); nothing else carries over"
 )
 
 
