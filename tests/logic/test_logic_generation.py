@@ -87,3 +87,11 @@ def test_a_retracted_clause_of_a_dynamic_group_comes_back_when_it_is_loaded_agai
 
 def _one(x: object) -> Iterator[tuple[object]]:
     yield (1,)
+
+
+def test_defines_answers_as_the_list_of_predicates_does() -> None:
+    kb = _kb()
+    kb.add_predicate("py", 1, _one)
+    listed = set(kb.predicates())
+    for indicator in ["fact/1", "rule/1", "py/1", "rule/2", "member/2", "atom/1", "x", "x/y"]:
+        assert kb.defines(indicator) == (indicator in listed), indicator

@@ -65,7 +65,7 @@ def install_motion_family(kb: KnowledgeBase, family: str) -> KnowledgeBase:
     if family not in FAMILY_GROUPS:
         raise ValueError(f"motion family {family!r} is none of {sorted(FAMILY_GROUPS)}")
     install_designator_predicates(kb)
-    if family != "common" and "common_target_pose/2" not in kb.predicates():
+    if family != "common" and not kb.defines("common_target_pose/2"):
         install_motion_family(kb, "common")
     text = common_motions_text(family)
     installed = _INSTALLED.setdefault(kb, {})
@@ -77,7 +77,7 @@ def install_motion_family(kb: KnowledgeBase, family: str) -> KnowledgeBase:
 
 def _still_there(kb: KnowledgeBase, family: str) -> bool:
     """Whether the family's groundings are (still) in ``kb``: its first rule's predicate."""
-    return f"{family}_target_pose/2" in kb.predicates() if family == "common" else True
+    return kb.defines(f"{family}_target_pose/2") if family == "common" else True
 
 
 def install_common_motions(kb: KnowledgeBase) -> KnowledgeBase:

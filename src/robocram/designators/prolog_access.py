@@ -41,7 +41,7 @@ action_grounding(_, _) :- fail.
 def install_designator_predicates(kb: KnowledgeBase) -> KnowledgeBase:
     """Add the designator predicates and grounding interface to ``kb``; return ``kb``."""
     _install_python_predicates(kb)
-    if "motion_grounding/2" not in kb.predicates():
+    if not kb.defines("motion_grounding/2"):
         kb.consult(
             _INTERFACE_TEXT,
             group=INTERFACE_GROUP,

@@ -37,7 +37,7 @@ _RUNNING: contextvars.ContextVar[tuple[ProcessModule, ...]] = contextvars.Contex
 
 def install_process_module_interface(kb: KnowledgeBase) -> KnowledgeBase:
     """Declare the matching interface predicates in ``kb`` (idempotent); return ``kb``."""
-    if not set(INTERFACE_PREDICATES) <= set(kb.predicates()):
+    if not all(kb.defines(p) for p in INTERFACE_PREDICATES):
         kb.consult(_INTERFACE_TEXT, group=INTERFACE_GROUP, extendable=INTERFACE_PREDICATES)
     return kb
 

@@ -303,6 +303,18 @@ class KnowledgeBase:
             and (include_builtins or not p.system and p.kind == USER and p.owner != LIBRARY_OWNER)
         )
 
+    def defines(self, indicator: str) -> bool:
+        """Whether ``name/arity`` is one of :meth:`predicates` (without listing them all)."""
+        name, _, arity = indicator.rpartition("/")
+        pred = self._preds.get((name, int(arity))) if arity.isdigit() else None
+        return (
+            pred is not None
+            and not pred.name.startswith(PRIVATE_PREFIX)
+            and not pred.system
+            and pred.kind == USER
+            and pred.owner != LIBRARY_OWNER
+        )
+
     def similar_predicates(self, name: str, arity: int) -> list[str]:
         """Defined predicates whose name or arity is close to name/arity."""
         preds = list(self._preds.values())
