@@ -57,7 +57,7 @@ common_prop_or_default(_, _, Default, Default).
 def common_motions_text(family: str = "common") -> str:
     """Return the Prolog text of the grounding rules of ``family`` (with the helpers)."""
     helpers = _HELPERS if family == "common" else ""
-    return helpers + grounding_rules(motion_types(family))
+    return helpers + grounding_rules(motion_types(family), f"{family}_motion_grounding")
 
 
 def install_motion_family(kb: KnowledgeBase, family: str) -> KnowledgeBase:
