@@ -33,6 +33,7 @@ command per gripper, in order.
 
 from __future__ import annotations
 
+import functools
 import weakref
 
 from robocram.designators.motion_table import motion_types
@@ -54,6 +55,7 @@ common_prop_or_default(_, _, Default, Default).
 """
 
 
+@functools.cache  # the motion table is immutable; every simulated_robot asks again
 def common_motions_text(family: str = "common") -> str:
     """Return the Prolog text of the grounding rules of ``family`` (with the helpers)."""
     helpers = _HELPERS if family == "common" else ""
