@@ -63,9 +63,20 @@ def test_matching_facts_send_each_table_type_to_its_resource_module() -> None:
     )
     facts = matching_facts("log", ["torso"])
     assert facts == (
-        "matching_process_module(D, log_torso) :- desig_prop(D, type, 'moving-torso').\n"
+        "matching_process_module(D, PM) :- desig_prop(D, type, T), "
+        "motion_process_module(T, log, PM).\n"
+        "motion_process_module('moving-torso', log, log_torso).\n"
         "available_process_module(log_torso).\n"
     )
+
+
+def test_two_environments_of_one_prefix_share_a_knowledge_base() -> None:
+    kb = install_common_motions(KnowledgeBase())
+    Environment("one", [], facts=matching_facts("log", ["torso"]), kb=kb)
+    Environment("two", [], facts=matching_facts("log", ["torso", "grippers"]), kb=kb)
+    d = a.motion(type="opening", gripper="left")
+    answers = [ans["PM"] for ans in kb.query("matching_process_module(D, PM)", D=d)]
+    assert answers == ["log_grippers", "log_grippers"]
 
 
 def test_an_environment_of_table_modules_performs_motions_without_projection() -> None:

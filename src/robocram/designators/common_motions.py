@@ -33,6 +33,7 @@ command per gripper, in order.
 
 from __future__ import annotations
 
+import functools
 import weakref
 
 from robocram.designators.motion_table import motion_types
@@ -54,10 +55,11 @@ common_prop_or_default(_, _, Default, Default).
 """
 
 
+@functools.cache  # the motion table is immutable; every simulated_robot asks again
 def common_motions_text(family: str = "common") -> str:
     """Return the Prolog text of the grounding rules of ``family`` (with the helpers)."""
     helpers = _HELPERS if family == "common" else ""
-    return helpers + grounding_rules(motion_types(family))
+    return helpers + grounding_rules(motion_types(family), f"{family}_motion_grounding")
 
 
 def install_motion_family(kb: KnowledgeBase, family: str) -> KnowledgeBase:
@@ -65,7 +67,7 @@ def install_motion_family(kb: KnowledgeBase, family: str) -> KnowledgeBase:
     if family not in FAMILY_GROUPS:
         raise ValueError(f"motion family {family!r} is none of {sorted(FAMILY_GROUPS)}")
     install_designator_predicates(kb)
-    if family != "common" and "common_target_pose/2" not in kb.predicates():
+    if family != "common" and not kb.defines("common_target_pose/2"):
         install_motion_family(kb, "common")
     text = common_motions_text(family)
     installed = _INSTALLED.setdefault(kb, {})
@@ -77,7 +79,7 @@ def install_motion_family(kb: KnowledgeBase, family: str) -> KnowledgeBase:
 
 def _still_there(kb: KnowledgeBase, family: str) -> bool:
     """Whether the family's groundings are (still) in ``kb``: its first rule's predicate."""
-    return f"{family}_target_pose/2" in kb.predicates() if family == "common" else True
+    return kb.defines(f"{family}_target_pose/2") if family == "common" else True
 
 
 def install_common_motions(kb: KnowledgeBase) -> KnowledgeBase:

@@ -122,7 +122,8 @@ def grounded_types(kb: KnowledgeBase, kind: Kind) -> tuple[str, ...]:
     """Return the ``type`` values that ``<kind>_grounding/2`` rules in ``kb`` test for.
 
     Found by running the grounding query on a probe designator whose ``desig_prop`` records
-    every type a rule asks about and then fails, so no rule needs to list its types twice.
+    every type a rule asks about and then fails, so no rule needs to list its types twice;
+    rules that dispatch on the type they read list theirs in ``grounded_motion_type/1``.
     """
     probes: dict[Kind, tuple[str, type[TypeProbe]]] = {
         Kind.MOTION: (MotionDesignator.grounding_predicate, _MotionTypeProbe),
@@ -134,7 +135,10 @@ def grounded_types(kb: KnowledgeBase, kind: Kind) -> tuple[str, ...]:
     probe = probe_class()
     for _ in kb.query(f"{predicate}(D, G)", D=probe):
         pass
-    return tuple(sorted(set(probe.asked_types)))
+    listed: list[str] = []
+    if kind is Kind.MOTION and kb.defines("grounded_motion_type/1"):
+        listed = [a["T"] for a in kb.query("grounded_motion_type(T)") if isinstance(a["T"], str)]
+    return tuple(sorted({*probe.asked_types, *listed}))
 
 
 class TypeProbe(Designator[None]):

@@ -201,7 +201,7 @@ def _atom(name: str) -> str:
     return name if plain else "'" + name.replace("'", "\\'") + "'"
 
 
-def _rule(motion: MotionType, command: Command) -> str:
+def _rule(motion: MotionType, command: Command, table: str) -> str:
     args: list[str] = []
     reads: list[str] = []
     resolves: list[str] = []
@@ -218,17 +218,33 @@ def _rule(motion: MotionType, command: Command) -> str:
         reads.append(f"desig_prop(D, {arg}, {value})")
         if prop.target:
             resolves.append(f"common_target_pose({value}, {_var(arg)})")
-    body = ["motion_desig(D)", f"desig_prop(D, type, {_atom(motion.type)})", *reads]
+    body = [*reads]
     if command.unless_all:  # after the reads, so other forms fail before testing it
         both = ", ".join(f"desig_prop(D, {key}, _)" for key in command.unless_all)
         body.append(f"\\+ ({both})")
-    head = f"motion_grounding(D, {command.name}({', '.join(args)}))"
-    return head + " :-\n    " + ",\n    ".join(body + resolves) + "."
+    body.extend(resolves)
+    head = f"{table}({_atom(motion.type)}, D, {command.name}({', '.join(args)}))"
+    return head + (" :-\n    " + ",\n    ".join(body) if body else "") + "."
 
 
-def grounding_rules(motions: Iterator[MotionType] | tuple[MotionType, ...]) -> str:
-    """The ``motion_grounding/2`` rules of ``motions`` as Prolog text, in table order."""
-    return "\n".join(_rule(m, c) for m in motions for c in m.commands) + "\n"
+def grounding_rules(
+    motions: Iterator[MotionType] | tuple[MotionType, ...], table: str = "motion_grounding_by_type"
+) -> str:
+    """The ``motion_grounding/2`` rules of ``motions`` as Prolog text, in table order.
+
+    One rule reads the designator's ``type`` once and goes on in ``table/3``, whose
+    clauses (one per command, in table order) are indexed on the type: a rule per
+    command read the type in every rule, ~40 Python calls to ground a ``moving-tcp``.
+    ``grounded_motion_type/1`` lists the types, for error messages.
+    """
+    motions = tuple(motions)
+    dispatch = (
+        "motion_grounding(D, G) :-\n"
+        f"    motion_desig(D),\n    desig_prop(D, type, T),\n    {table}(T, D, G).\n"
+    )
+    rules = "\n".join(_rule(m, c, table) for m in motions for c in m.commands)
+    types = "".join(f"grounded_motion_type({_atom(m.type)}).\n" for m in motions if m.commands)
+    return dispatch + rules + "\n" + types
 
 
 def commands_of(motions: Mapping[str, MotionType], resource: str) -> dict[tuple[str, int], Command]:

@@ -8,7 +8,8 @@
 - kind tests ``action_desig/1``, ``motion_desig/1``, ``loc_desig/1``, ``obj_desig/1``,
   ``human_desig/1``, and ``desig_kind(D, Kind)`` (Kind: action, motion, location, ...)
 - interface predicates ``motion_grounding(D, Command)`` and ``action_grounding(D, Plan)``:
-  they fail until a robot or an environment extends them
+  they fail until a robot or an environment extends them; ``grounded_motion_type(Type)``
+  names the types of rules that do not test ``desig_prop(D, type, Type)`` themselves
 
 Property keys are atoms (the Python keyword names); string values are atoms, designators
 and poses are opaque objects, numbers and lists map as themselves.
@@ -35,18 +36,16 @@ _KIND_TESTS = {
 _INTERFACE_TEXT = """
 motion_grounding(_, _) :- fail.
 action_grounding(_, _) :- fail.
+grounded_motion_type(_) :- fail.
 """
+INTERFACE_PREDICATES = ("motion_grounding/2", "action_grounding/2", "grounded_motion_type/1")
 
 
 def install_designator_predicates(kb: KnowledgeBase) -> KnowledgeBase:
     """Add the designator predicates and grounding interface to ``kb``; return ``kb``."""
     _install_python_predicates(kb)
-    if "motion_grounding/2" not in kb.predicates():
-        kb.consult(
-            _INTERFACE_TEXT,
-            group=INTERFACE_GROUP,
-            extendable=["motion_grounding/2", "action_grounding/2"],
-        )
+    if not all(kb.defines(p) for p in INTERFACE_PREDICATES):
+        kb.consult(_INTERFACE_TEXT, group=INTERFACE_GROUP, extendable=INTERFACE_PREDICATES)
     return kb
 
 

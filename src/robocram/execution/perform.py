@@ -139,7 +139,7 @@ def _run_plan(designator: Designator, plan: object, kb: KnowledgeBase) -> Any:
 
 
 def _registered_plans(kb: KnowledgeBase) -> dict[str, Callable[..., object]]:
-    if "plan_function/2" not in kb.predicates():
+    if not kb.defines("plan_function/2"):
         return {}
     return {a["Name"]: a["F"] for a in kb.query("plan_function(Name, F)")}
 
@@ -148,7 +148,7 @@ def register_plan(kb: KnowledgeBase, name: str, function: Callable[..., object])
     """Let action groundings name ``function`` as ``name(Args...)`` in ``kb``."""
     if not callable(function):
         raise TypeError(f"register_plan({name!r}) needs a callable, got {function!r}")
-    if "plan_function/2" not in kb.predicates():
+    if not kb.defines("plan_function/2"):
         kb.consult(
             "plan_function(_, _) :- fail.",
             group=PLAN_INTERFACE_GROUP,

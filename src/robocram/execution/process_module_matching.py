@@ -2,9 +2,11 @@
 
 ``matching_process_module(Desig, PM)`` and ``available_process_module(PM)`` are interface
 predicates: they fail until a robot or environment extends them with facts or rules
-naming modules by their ``name`` atom. ``process_modules_running(...)`` starts modules
-for a block (CRAM's ``with-process-modules-running``) and binds them as running in this
-context; PERFORM only sends commands to modules that are matching, available and running.
+naming modules by their ``name`` atom. ``motion_process_module(Type, Prefix, PM)`` is the
+table an environment's motion modules are matched through (see ``matching_facts``).
+``process_modules_running(...)`` starts modules for a block (CRAM's
+``with-process-modules-running``) and binds them as running in this context; PERFORM
+only sends commands to modules that are matching, available and running.
 """
 
 from __future__ import annotations
@@ -20,7 +22,13 @@ INTERFACE_GROUP = "process_module_interface"
 _INTERFACE_TEXT = """
 matching_process_module(_, _) :- fail.
 available_process_module(_) :- fail.
+motion_process_module(_, _, _) :- fail.
 """
+INTERFACE_PREDICATES = (
+    "matching_process_module/2",
+    "available_process_module/1",
+    "motion_process_module/3",
+)
 
 _RUNNING: contextvars.ContextVar[tuple[ProcessModule, ...]] = contextvars.ContextVar(
     "robocram_running_process_modules", default=()
@@ -29,12 +37,8 @@ _RUNNING: contextvars.ContextVar[tuple[ProcessModule, ...]] = contextvars.Contex
 
 def install_process_module_interface(kb: KnowledgeBase) -> KnowledgeBase:
     """Declare the matching interface predicates in ``kb`` (idempotent); return ``kb``."""
-    if "matching_process_module/2" not in kb.predicates():
-        kb.consult(
-            _INTERFACE_TEXT,
-            group=INTERFACE_GROUP,
-            extendable=["matching_process_module/2", "available_process_module/1"],
-        )
+    if not all(kb.defines(p) for p in INTERFACE_PREDICATES):
+        kb.consult(_INTERFACE_TEXT, group=INTERFACE_GROUP, extendable=INTERFACE_PREDICATES)
     return kb
 
 

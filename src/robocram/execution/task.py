@@ -124,12 +124,22 @@ class Task:
     @property
     def stop_requested(self) -> bool:
         """Whether this task or an ancestor has been asked to stop."""
-        return any(t._stop for t in self.ancestors())
+        task: Task | None = self
+        while task is not None:
+            if task._stop:
+                return True
+            task = task.parent
+        return False
 
     @property
     def suspend_requested(self) -> bool:
         """Whether this task or an ancestor has been asked to suspend."""
-        return any(t._suspended for t in self.ancestors())
+        task: Task | None = self
+        while task is not None:
+            if task._suspended:
+                return True
+            task = task.parent
+        return False
 
     def stop(self) -> None:
         """Ask this task and its descendants to stop at their next stop point."""
@@ -169,10 +179,18 @@ class Task:
                 self._wakers.remove(cond)
 
     def check_stop(self) -> None:
-        """Stop point: raise TaskStopped if asked to stop; block while suspended."""
-        if self.stop_requested:
-            raise TaskStopped(self)
-        if self.suspend_requested:
+        """Stop point: raise TaskStopped if asked to stop; block while suspended.
+
+        One walk up the tree for both flags: plans pass hundreds of stop points per run.
+        """
+        task: Task | None = self
+        suspended = False
+        while task is not None:
+            if task._stop:
+                raise TaskStopped(self)
+            suspended = suspended or task._suspended
+            task = task.parent
+        if suspended:
             self._wait_resumed()
 
     def _wait_resumed(self) -> None:

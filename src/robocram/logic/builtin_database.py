@@ -86,6 +86,7 @@ def _retract(m: Engine, a: Args) -> Iterator[bool]:
             with m.kb._lock:
                 if not clause.erased:
                     pred.erase(clause)
+                    m.kb.mark_changed()
                     yield True
                     continue
         m.undo_to(mark)
@@ -127,6 +128,7 @@ def _retractall(m: Engine, a: Args) -> bool:
         m.undo_to(mark)
     with m.kb._lock:
         pred.set_clauses(keep)
+        m.kb.mark_changed()
     return True
 
 
@@ -166,6 +168,8 @@ def _op(m: Engine, a: Args) -> bool:
             m.kb._ops.add(priority, kind, name)
         except ValueError as err:
             raise PrologTypeError("operator_specifier", kind, f"op/3: {err}") from err
+        finally:
+            m.kb.mark_changed(syntax=True)
     return True
 
 
@@ -207,6 +211,7 @@ def _abolish(m: Engine, a: Args) -> bool:
                 f"abolish/1: {pred.indicator} is static; only dynamic predicates can be abolished",
             )
         del m.kb._preds[key]
+        m.kb.mark_changed()
     return True
 
 

@@ -80,6 +80,7 @@ def _set_flag(m: Engine, a: Args) -> bool:
         )
     with m.kb._lock:
         m.kb._flags[flag] = value
+        m.kb.mark_changed(syntax=True)
     if flag == "occurs_check":
         m.occurs_check = value  # the running query unifies the new way from here on
     return True

@@ -40,6 +40,7 @@ class GroupEdit:
     """A staged copy of the predicate table and groups; read `preds`/`groups` to commit."""
 
     def __init__(self, preds: dict[Key, Pred], groups: Groups) -> None:
+        self._original = preds
         self.preds = dict(preds)
         self.groups: Groups = {g: (set(k), set(e)) for g, (k, e) in groups.items()}
         self._copied: set[Key] = set()
@@ -68,6 +69,22 @@ class GroupEdit:
                 pred.owner = name
             pred.add_last(clause)
             keys.add(key)
+
+    def keep_unchanged(self) -> bool:
+        """Put back the original of every copied predicate that ended up the same.
+
+        True when all of them did: the edit changed no predicate. A kept predicate keeps
+        its compiled procedure, which a copy would build again.
+        """
+        same = True
+        for key in self._copied:
+            new = self.preds.get(key)
+            old = self._original.get(key)
+            if new is not None and old is not None and _same_definition(old, new):
+                self.preds[key] = old
+            else:
+                same = False
+        return same
 
     def writable(self, key: Key) -> Pred | None:
         """This edit's own copy of the predicate `key` (None when there is none)."""
@@ -127,3 +144,18 @@ class GroupEdit:
         mine = self.groups.get(group, (set(), set()))[1]
         if key not in owner_ext and key not in mine:
             raise FactGroupError(pred.indicator, pred.owner, group)
+
+
+def _same_definition(old: Pred, new: Pred) -> bool:
+    """Whether two versions of a predicate hold the same clause objects and settings."""
+    if old.erased or new.erased:
+        return False
+    a, b = old.clauses, new.clauses
+    return (
+        len(a) == len(b)
+        and all(x is y for x, y in zip(a, b, strict=True))
+        and (old.kind, old.dynamic, old.owner, old.extendable)
+        == (new.kind, new.dynamic, new.owner, new.extendable)
+        and old.fn is new.fn
+        and old.pyfn is new.pyfn
+    )

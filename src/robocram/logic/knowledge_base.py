@@ -34,6 +34,8 @@ __all__ = ["KnowledgeBase"]
 
 PyPredicate = Callable[..., Iterator[object]]
 QUERY_CACHE_SIZE = 1024
+CONSULT_CACHE_SIZE = 64  # texts consulted again and again (an environment's set-up)
+Compiled = list[tuple[Key, Clause]]
 
 
 class KnowledgeBase:
@@ -58,6 +60,29 @@ class KnowledgeBase:
         self._queries: LRUCache[tuple[str, str], tuple[Value, dict[str, int], int]] = LRUCache(
             QUERY_CACHE_SIZE
         )
+        self._generation = 0  # see `generation`
+        self._syntax = 0  # changes with the operators and flags, which change how text reads
+        self._consulted: LRUCache[tuple[str, str, int], Compiled] = LRUCache(CONSULT_CACHE_SIZE)
+
+    @property
+    def generation(self) -> int:
+        """A number that changes whenever the clauses, predicates, operators or flags do.
+
+        Every way of changing them (consult, fact groups, assert, retract, retractall,
+        abolish, dynamic, op, set_prolog_flag, Python predicates and functions, from Python
+        or from inside a query) calls :meth:`mark_changed`. Loading a group again with the
+        same clauses does not count. A caller may keep the answers of a query over static
+        rules keyed on ``(generation, inputs)``, as long as no Python predicate the query
+        runs reads anything else (the world) -- or that is part of its key as well.
+        """
+        return self._generation
+
+    def mark_changed(self, syntax: bool = False) -> None:
+        """Note a change of clauses or predicates (``syntax``: of operators or flags)."""
+        with self._lock:
+            self._generation += 1
+            if syntax:
+                self._syntax += 1
 
     def consult(
         self, text: str, group: str | None = None, extendable: Iterable[Value] = ()
@@ -68,18 +93,15 @@ class KnowledgeBase:
         knowledge base is left as it was, and a concurrent query sees the old group or the
         new one, never a mix.
         """
-        terms: list[Value] = []
+        name = group or "user"
         directives: list[Value] = []
         dynamic: list[Key] = []
-        with paused_gc():
-            for term, _ in read_terms(text, self._ops, self._flags):
-                if type(term) is Term and term[0] == ":-" and len(term[1]) == 1:
-                    if not self._declaration(deref(term[1][0]), dynamic):
-                        directives.append(term[1][0])
-                else:
-                    terms.append(term)
-            name = group or "user"
-            compiled = [compile_clause(t, name) for t in terms]
+        compiled = self._consulted_before(name, text) if group is not None else None
+        if compiled is None:
+            syntax = self._syntax
+            compiled = self._read_clauses(text, name, directives, dynamic)
+            if group is not None and not directives and not dynamic and syntax == self._syntax:
+                self._consulted.put((name, text, syntax), compiled)
         with self._lock:
             before = (self._preds, self._groups)
             self._commit(name, group is not None, compiled, extendable, dynamic)
@@ -89,7 +111,41 @@ class KnowledgeBase:
                         raise PrologError(f"directive failed: {goal!r} (in fact group {name!r})")
             except BaseException:
                 self._preds, self._groups = before
+                self.mark_changed()
                 raise
+
+    def _read_clauses(
+        self, text: str, name: str, directives: list[Value], dynamic: list[Key]
+    ) -> Compiled:
+        """Read and compile the clauses of ``text``; collect its directives and dynamics."""
+        terms: list[Value] = []
+        with paused_gc():
+            for term, _ in read_terms(text, self._ops, self._flags):
+                if type(term) is Term and term[0] == ":-" and len(term[1]) == 1:
+                    if not self._declaration(deref(term[1][0]), dynamic):
+                        directives.append(term[1][0])
+                else:
+                    terms.append(term)
+            return [compile_clause(t, name) for t in terms]
+
+    def _consulted_before(self, name: str, text: str) -> Compiled | None:
+        """The clauses ``text`` compiled to when group ``name`` last loaded it, if reusable.
+
+        Reused clauses keep their generated code, and a group loaded again unchanged
+        keeps its predicates' compiled procedures (see ``_commit``). Only texts of a named
+        group (which replaces its old clauses) without directives are kept, and their
+        clauses only while no predicate of theirs is dynamic: a static clause is never
+        retracted, so it is still as compiled.
+        """
+        compiled = self._consulted.get((name, text, self._syntax))
+        if compiled is None:
+            return None
+        preds = self._preds
+        for key, clause in compiled:
+            pred = preds.get(key)
+            if clause.erased or (pred is not None and pred.dynamic):
+                return None
+        return compiled
 
     def add_fact_group(
         self, group: str | None, clauses: Iterable[Value], extendable: Iterable[Value] = ()
@@ -119,7 +175,10 @@ class KnowledgeBase:
         shared = {parse_indicator(to_prolog(e)) for e in extendable}
         edit = GroupEdit(self._preds, self._groups)
         edit.load(name, replace, compiled, shared, dynamic)
+        if edit.keep_unchanged() and edit.groups == self._groups:
+            return  # the same clauses again: keep the predicates and their compiled code
         self._preds, self._groups = edit.preds, edit.groups
+        self.mark_changed()
 
     def _declaration(self, goal: Value, dynamic: list[Key]) -> bool:
         """Handle dynamic/discontiguous/op directives; False for goals to run."""
@@ -140,6 +199,7 @@ class KnowledgeBase:
         """Make name/arity a dynamic predicate (defined, modifiable by assert/retract)."""
         with self._lock:
             self._user_pred(key).dynamic = True
+            self.mark_changed()
 
     def _user_pred(self, key: Key) -> Pred:
         """The user predicate `key` in place (created, or taken over from the library)."""
@@ -179,6 +239,7 @@ class KnowledgeBase:
                 pred.add_first(compiled)
             else:
                 pred.add_last(compiled)
+            self.mark_changed()
 
     def assertz(self, clause: Value) -> None:
         """Append a clause (Prolog text or term) to a dynamic predicate."""
@@ -224,12 +285,14 @@ class KnowledgeBase:
             raise TypeError(f"add_predicate({name!r}, {arity}): {fn!r} is not callable")
         with self._lock:
             self._user_pred((name, arity)).pyfn = fn
+            self.mark_changed()
 
     def register_function(self, name: str, fn: Callable[..., object]) -> None:
         """Make `fn` callable by name from py_fun/N and py_pred/N."""
         if not callable(fn):
             raise TypeError(f"register_function({name!r}): {fn!r} is not callable")
         self._functions[name] = fn
+        self.mark_changed()
 
     def predicates(self, include_builtins: bool = False) -> list[str]:
         """Sorted `name/arity` of the defined predicates (user ones unless asked)."""
@@ -238,6 +301,18 @@ class KnowledgeBase:
             for p in list(self._preds.values())
             if not p.name.startswith(PRIVATE_PREFIX)
             and (include_builtins or not p.system and p.kind == USER and p.owner != LIBRARY_OWNER)
+        )
+
+    def defines(self, indicator: str) -> bool:
+        """Whether ``name/arity`` is one of :meth:`predicates` (without listing them all)."""
+        name, _, arity = indicator.rpartition("/")
+        pred = self._preds.get((name, int(arity))) if arity.isdigit() else None
+        return (
+            pred is not None
+            and not pred.name.startswith(PRIVATE_PREFIX)
+            and not pred.system
+            and pred.kind == USER
+            and pred.owner != LIBRARY_OWNER
         )
 
     def similar_predicates(self, name: str, arity: int) -> list[str]:

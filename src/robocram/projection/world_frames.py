@@ -54,13 +54,40 @@ class WorldFrames:
 
 
 class LiveTransformTree(TransformTree):
-    """A transform tree refreshed from its source before every lookup."""
+    """A transform tree refreshed from its source before every lookup.
+
+    Over a :class:`FramePoseSource` it starts empty and reads a frame when a lookup or a
+    membership test first names it: reading a PR2 world's ~90 frames at the start of
+    every ``simulated_robot`` block cost more than the block's few lookups.
+    """
 
     def __init__(self, source: TransformSource, fixed_frame: str = "map") -> None:
         super().__init__()
         self.source = source
         self.fixed_frame = fixed_frame
-        self.update_from(source, fixed_frame)
+        self._frame_source: FramePoseSource | None = None
+        self._checked: TransformSource | None = None  # the source _frame_source is for
+        if self._one_frame_source() is None:
+            self.update_from(source, fixed_frame)
+
+    def _one_frame_source(self) -> FramePoseSource | None:
+        """The source, when it can give one frame (the protocol check is slow: once)."""
+        source = self.source
+        if source is not self._checked:
+            self._checked = source
+            self._frame_source = source if isinstance(source, FramePoseSource) else None
+        return self._frame_source
+
+    def __contains__(self, frame: object) -> bool:
+        if TransformTree.__contains__(self, frame):
+            return True
+        source = self._one_frame_source()
+        if source is None or not isinstance(frame, str):
+            return False
+        if frame == self.fixed_frame:
+            return True  # the root every frame of the source hangs below
+        self._refresh_chain(source, frame)
+        return TransformTree.__contains__(self, frame)
 
     def refresh(self) -> None:
         """Re-read every frame of the source."""
@@ -84,8 +111,8 @@ class LiveTransformTree(TransformTree):
     def _refresh_frames(self, *frames: str) -> bool:
         """Re-read the source's frames that ``frames`` hang below (all of them when the
         source cannot give one frame); True when only those were read."""
-        source = self.source
-        if not isinstance(source, FramePoseSource):
+        source = self._one_frame_source()
+        if source is None:
             self.refresh()
             return False
         for frame in frames:
@@ -99,7 +126,7 @@ class LiveTransformTree(TransformTree):
         current: str | None = frame
         while current is not None and current != self.fixed_frame and current not in seen:
             seen.add(current)
-            if current in self._fed or current not in self:
+            if current in self._fed or not TransformTree.__contains__(self, current):
                 pose = source.frame_pose(current)
                 if pose is not None:
                     self.set_transform(self.fixed_frame, current, pose)
