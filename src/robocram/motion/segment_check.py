@@ -54,7 +54,12 @@ def _advance_free(
     counter: CheckCounter,
 ) -> bool:
     """Conservative advancement: from each checked configuration, step as far as its
-    clearance allows (no point can travel further than that), at least 1 cm of travel."""
+    clearance allows (no point can travel further than that), at least 1 cm of travel.
+
+    The query's reach adapts: while the step is limited by a link clear by the whole
+    reach (none named), the next query looks twice as far (up to the checker's far
+    reach), so steps in free space grow; once a named link limits it, back to the reach.
+    """
     travel = bound.travel(qa, qb)  # [m] the most any point moves from qa to qb
     if travel <= 0.0:
         return True
@@ -65,22 +70,25 @@ def _advance_free(
         else None
     )
     by_link = {}  # [m] per link: the most a point of it moves from qa to qb
+    near, far = checker.reach, checker.far_reach
+    reach = near
     s = 0.0
     while True:
         q = qa + (qb - qa) * s
-        gaps = checker.clearances(q)
+        gaps = checker.clearances(q, reach)
         counter.checks += 1
         if min(gaps.values(), default=1.0) <= 0.0 and not checker.is_free(q):
             return False  # the contact check decides, as everywhere
         if local is not None:
-            step = local.step(gaps, checker.reach)
+            step, unnamed = local.step(gaps, reach)
         else:
-            step = checker.reach / travel  # links not named are clear by the reach
+            step, unnamed = reach / travel, True  # links not named are clear by the reach
             for link, gap in gaps.items():
                 if link not in by_link:
                     by_link[link] = bound.link_travel(link, qa, qb)
-                if by_link[link] > 0.0:
-                    step = min(step, gap / by_link[link])
+                if by_link[link] > 0.0 and gap / by_link[link] < step:
+                    step, unnamed = gap / by_link[link], False
+        reach = min(2.0 * reach, far) if unnamed else near
         s += max(step, floor)
         if s >= 1.0:
             return True
@@ -113,8 +121,9 @@ class _LocalSteps:
         grow = np.einsum("i,ik,lk,k->l", dq, after.astype(float), rigid, dq)
         return cls(checker, links, dq, grow)
 
-    def step(self, gaps: dict[str, float], reach: float) -> float:
-        """The largest fraction of the segment no link can cross its clearance in."""
+    def step(self, gaps: dict[str, float], reach: float) -> tuple[float, bool]:
+        """The largest fraction of the segment no link can cross its clearance in, and
+        whether a link not named in ``gaps`` (clear by ``reach``) limits it."""
         speed = self.checker.joint_levers(self.links) @ self.dq  # A per link
         gap = np.array([gaps.get(link, reach) for link in self.links], dtype=float)
         gap = np.maximum(gap, 0.0)
@@ -123,7 +132,10 @@ class _LocalSteps:
             root = (-speed + np.sqrt(speed * speed + 4.0 * grow * gap)) / (2.0 * grow)
             linear = np.where(speed > 0.0, gap / speed, np.inf)
         steps = np.where(grow > 0.0, root, linear)
-        return float(steps.min()) if steps.size else 1.0
+        if not steps.size:
+            return 1.0, False
+        least = int(steps.argmin())
+        return float(steps[least]), self.links[least] not in gaps
 
 
 def segment_free(
