@@ -165,6 +165,16 @@ class BulletScene:
         axes = _rotated(joints[:, 3:], data.local_axes)  # (joints, 3)
         return data.levers(links, frames[:, :3], joints[:, :3], axes)
 
+    def link_speeds(self, links: Sequence[str], delta: FloatArray) -> FloatArray:
+        """Per link of ``links``: the most [m] a point of it moves per unit of a segment
+        whose joints change by ``delta``, as the robot is posed now (its frame's speed
+        plus its angular speed times its radius; see :meth:`LeverData.speeds`)."""
+        data = self.lever_data()
+        frames = np.array(self.world.link_frames(self.robot, data.frame_links))
+        joints = frames[data.joint_rows]
+        axes = _rotated(joints[:, 3:], data.local_axes)  # (joints, 3)
+        return data.speeds(links, frames[:, :3], joints[:, :3], axes, delta)
+
     def lever_data(self) -> LeverData:
         """What :meth:`joint_levers` needs beyond the frames, read once."""
         if self._levers is None:

@@ -66,6 +66,44 @@ class LeverData:
             ).reshape(len(joints), len(joints)),
         )  # fmt: skip
 
+    def link_rows(self, links: Sequence[str]) -> NDArray[np.intp]:
+        """Per link of ``links`` (a held object: its carrier's), its row."""
+        key = tuple(links)
+        rows = self._rows.get(key)
+        if rows is None:  # the same links are asked about at every check of a segment
+            rows = np.array([self.row[self.carriers.get(link, link)] for link in links], int)
+            self._rows[key] = rows
+        return rows
+
+    def speeds(
+        self,
+        links: Sequence[str],
+        positions: FloatArray,
+        joint_origins: FloatArray,
+        axes: FloatArray,
+        delta: FloatArray,
+    ) -> FloatArray:
+        """(2, links): two bounds on how far [m] a point of each link of ``links`` moves
+        per unit of a segment whose joints change by ``delta``, as posed now. Row 0 sums
+        the levers' magnitudes (:meth:`levers` times ``|delta|``); row 1 adds the joints'
+        motions as vectors: its frame's speed plus its angular speed times its radius."""
+        rows = self.link_rows(links)
+        centres = positions[self.centre_rows[rows]]  # (links, 3)
+        offsets = centres[:, None, :] - joint_origins[None, :, :]
+        jac = cross(axes[None, :, :], offsets)  # (links, joints, 3)
+        jac[:, self.prismatic] = axes[self.prismatic]
+        below = self.below[rows]  # (links, joints)
+        jac[~below] = 0.0
+        radii = self.radii[rows]
+        levers = np.sqrt((jac * jac).sum(axis=2)) + radii[:, None]
+        levers[:, self.prismatic] = 1.0
+        levers[~below] = 0.0
+        linear = np.einsum("ljk,j->lk", jac, delta)
+        turning = (below & ~self.prismatic).astype(float) @ (delta[:, None] * axes)
+        speed = np.sqrt((linear * linear).sum(axis=1))
+        spin = np.sqrt((turning * turning).sum(axis=1))
+        return np.stack((levers @ np.abs(delta), speed + spin * radii))
+
     def levers(
         self,
         links: Sequence[str],
@@ -76,11 +114,7 @@ class LeverData:
         """Per link of ``links`` (a held object: its carrier's row), per joint: the lever
         [m per unit change]; ``positions`` (frame links, 3) are the frames' origins,
         ``joint_origins`` and ``axes`` (joints, 3) the joints' (any one frame for all)."""
-        key = tuple(links)
-        rows = self._rows.get(key)
-        if rows is None:  # the same links are asked about at every check of a segment
-            rows = np.array([self.row[self.carriers.get(link, link)] for link in links], int)
-            self._rows[key] = rows
+        rows = self.link_rows(links)
         centres = positions[self.centre_rows[rows]]  # (links, 3)
         arms = cross(centres[:, None, :] - joint_origins[None, :, :], axes[None, :, :])
         levers = np.sqrt((arms * arms).sum(axis=2)) + self.radii[rows][:, None]
