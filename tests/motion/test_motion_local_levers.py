@@ -1,10 +1,10 @@
 """Conservative advancement's tighter steps never let a point outrun its clearance.
 
-The levers taken where the robot stands (axis to link frame plus the link's radius) and
-the growth term bound how far any point within its radius of each link's frame moves over
-a step; here points on those balls, fixed in their links, are moved through each step in
-fine increments and must stay within that bound (halving the levers or dropping the
-growth term makes this fail).
+The speed of each link where the robot stands (its frame's speed plus its angular speed
+times its radius, for the segment's joint motion) and the growth term bound how far any
+point within its radius of each link's frame moves over a step; here points on those
+balls, fixed in their links, are moved through each step in fine increments and must
+stay within that bound (dropping the growth term makes this fail).
 """
 
 from __future__ import annotations
@@ -99,7 +99,7 @@ def test_no_point_moves_further_than_the_vector_bound(seed: int) -> None:
             s = float(rng.uniform(0.0, 0.5))
             gap = float(rng.uniform(0.1, 0.4))
             scene.clearances(qa + (qb - qa) * s)
-            vector = scene.link_speeds(links, qb - qa)[1]
+            vector = scene.link_speeds(links, qb - qa)
             ds = _quadratic_step(vector, steps.turn / 2, np.full(len(links), gap))
             start = _ball_points(world, links, radii, directions)
             moved = np.zeros(len(links))

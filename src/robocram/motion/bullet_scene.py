@@ -140,11 +140,18 @@ class BulletScene:
             return self._clearances_now(CLEARANCE_REACH if reach is None else reach)
 
     def lever_links(self) -> tuple[str, ...]:
-        """The moving links and the objects held by one of them (they ride on it); what
-        the other hand holds stays where it is."""
+        """The moving links that can collide (they have shapes and are not allowed to
+        touch anything: a frame without shapes need not slow a sweep) and the objects
+        held by a moving link (they ride on it); what the other hand holds stays put."""
         moving = set(self.moving_links)
+        handle = self.world.robot(self.robot)
         held = self.world.attachments(self.robot)
-        return (*self.moving_links, *(obj for obj, link in held.items() if link in moving))
+        shaped = (
+            link for link in self.moving_links
+            if link not in self.allowed_links
+            and handle.link_index.get(link, -2) in handle.colliders
+        )  # fmt: skip
+        return (*shaped, *(obj for obj, link in held.items() if link in moving))
 
     def joints_after(self) -> NDArray[np.bool_]:
         """``[i, k]``: whether joint k's child link moves with joint i (k below i)."""

@@ -35,6 +35,7 @@ class LeverData:
     below: NDArray[np.bool_]  # (links, joints) whether the joint moves the link
     after: NDArray[np.bool_]  # (joints, joints) whether joint k's child moves with joint i
     _rows: dict[tuple[str, ...], NDArray[np.intp]] = field(default_factory=dict)
+    _masks: dict[bytes, tuple[FloatArray, FloatArray]] = field(default_factory=dict)
 
     @classmethod
     def of(
@@ -83,26 +84,25 @@ class LeverData:
         axes: FloatArray,
         delta: FloatArray,
     ) -> FloatArray:
-        """(2, links): two bounds on how far [m] a point of each link of ``links`` moves
-        per unit of a segment whose joints change by ``delta``, as posed now. Row 0 sums
-        the levers' magnitudes (:meth:`levers` times ``|delta|``); row 1 adds the joints'
-        motions as vectors: its frame's speed plus its angular speed times its radius."""
+        """Per link of ``links``: the most [m] a point of it moves per unit of a segment
+        whose joints change by ``delta``, as posed now: its frame's speed plus its angular
+        speed times its radius (the joints' motions add as vectors; far tighter than the
+        levers' magnitudes summed, which no sweep of the kitchen ever needed)."""
         rows = self.link_rows(links)
-        centres = positions[self.centre_rows[rows]]  # (links, 3)
-        offsets = centres[:, None, :] - joint_origins[None, :, :]
-        jac = cross(axes[None, :, :], offsets)  # (links, joints, 3)
-        jac[:, self.prismatic] = axes[self.prismatic]
-        below = self.below[rows]  # (links, joints)
-        jac[~below] = 0.0
-        radii = self.radii[rows]
-        levers = np.sqrt((jac * jac).sum(axis=2)) + radii[:, None]
-        levers[:, self.prismatic] = 1.0
-        levers[~below] = 0.0
-        linear = np.einsum("ljk,j->lk", jac, delta)
-        turning = (below & ~self.prismatic).astype(float) @ (delta[:, None] * axes)
+        masks = self._masks.get(rows.tobytes())
+        if masks is None:
+            below = self.below[rows]
+            masks = self._masks[rows.tobytes()] = (
+                (below & ~self.prismatic).astype(float), (below & self.prismatic).astype(float)
+            )  # fmt: skip
+        turning, sliding = masks
+        moves = delta[:, None] * axes  # (joints, 3)
+        spin = turning @ moves  # (links, 3) each link's angular velocity
+        centres = positions[self.centre_rows[rows]]
+        # sum over revolute j of moves_j x (c - o_j) = spin x c - sum of moves_j x o_j
+        linear = cross(spin, centres) - turning @ cross(moves, joint_origins) + sliding @ moves
         speed = np.sqrt((linear * linear).sum(axis=1))
-        spin = np.sqrt((turning * turning).sum(axis=1))
-        return np.stack((levers @ np.abs(delta), speed + spin * radii))
+        return np.asarray(speed + np.sqrt((spin * spin).sum(axis=1)) * self.radii[rows])
 
     def levers(
         self,

@@ -96,24 +96,16 @@ def _advance_free(
 
 @dataclass
 class _LocalSteps:
-    """Steps from the levers of the configuration checked last (tighter than the rigid
-    ones). Two bounds on how far a link moves over a step ``ds``, the larger step of the
-    two is taken:
-
-    - ``A ds + B ds^2``: ``A`` sums the levers now times each joint's change, ``B ds``
-      bounds how much those levers can grow meanwhile (the joints between an axis and
-      the link move it by at most its rigid travel);
-    - ``V ds + G ds^2 / 2``: ``V`` adds the joints' motions as vectors (the frame's
-      speed plus the angular speed times the link's radius), ``G`` bounds how fast that
-      speed can change: a joint's axis turns with the joints above it (``W``), and the
-      link moves relative to it by what those and the joints from it down do.
-    """
+    """Steps from the frames of the configuration checked last (far tighter than the
+    rigid ones): over a step ``ds`` a link moves at most ``V ds + G ds^2 / 2``. ``V`` adds
+    the joints' motions as vectors (the frame's speed plus the angular speed times the
+    link's radius); ``G`` bounds how fast that speed can change: each joint's axis turns
+    with the joints above it (``W``), and the link moves relative to it by what those and
+    the joints from it down do (their rigid travel)."""
 
     checker: LeverChecker
     links: tuple[str, ...]
     delta: FloatArray  # qb - qa per joint
-    grow: FloatArray  # per link: B = sum over joints i of dq_i times the rigid travel the
-    # joints after i along the chain give the link (what can move it off i's axis)
     turn: FloatArray  # per link: G
 
     @classmethod
@@ -128,7 +120,6 @@ class _LocalSteps:
             dtype=float,
         ).reshape(len(links), len(dq))  # (links, joints) [m] per unit change
         after = checker.joints_after().astype(float)  # (joints, joints): k below i
-        grow = np.einsum("i,ik,lk,k->l", dq, after, rigid, dq)
         data = checker.lever_data()
         rows = data.link_rows(links)
         below, radii = data.below[rows].astype(float), data.radii[rows]
@@ -139,22 +130,19 @@ class _LocalSteps:
             (2.0 * spin * rigid + spin * radii[:, None] * below + down) * revolute
             + spin * below * data.prismatic
         ) @ dq
-        return cls(checker, links, delta, grow, turn)
+        return cls(checker, links, delta, turn)
 
     def step(self, gaps: dict[str, float], reach: float, least: float = 0.0) -> tuple[float, bool]:
         """The largest fraction of the segment no link can cross its clearance (or
         ``least`` [m], the dense check's travel between checks) in, and whether a link
         not named in ``gaps`` (clear by ``reach``) limits it."""
-        summed, vector = self.checker.link_speeds(self.links, self.delta)
+        speed = self.checker.link_speeds(self.links, self.delta)
         gap = np.array([gaps.get(link, reach) for link in self.links], dtype=float)
-        gap = np.maximum(gap, least)
-        steps = np.maximum(
-            _quadratic_step(summed, self.grow, gap), _quadratic_step(vector, self.turn / 2, gap)
-        )
+        steps = _quadratic_step(speed, self.turn / 2, np.maximum(gap, least))
         if not steps.size:
             return 1.0, False
-        least = int(steps.argmin())
-        return float(steps[least]), self.links[least] not in gaps
+        least_at = int(steps.argmin())
+        return float(steps[least_at]), self.links[least_at] not in gaps
 
 
 def _quadratic_step(speed: FloatArray, grow: FloatArray, gap: FloatArray) -> FloatArray:
