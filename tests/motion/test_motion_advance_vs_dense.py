@@ -1,7 +1,7 @@
 """Conservative advancement on coal's clearances gives the dense check's verdicts.
 
-``segment_free`` walks a segment by steps as large as the clearances allow (its query
-reach grows in free space, local levers on long sweeps); the dense check judges every
+``segment_free`` walks a segment by steps as large as the clearances allow (each link's
+speed along the segment where it stands, on long sweeps); the dense check judges every
 configuration 1 cm of travel apart on the world itself. For seeded segments of the PR2's
 right arm and torso at the kitchen counter (short and long, free and blocked, empty hand
 and holding the mug), both must agree: a free segment stays free, a blocked one blocked.

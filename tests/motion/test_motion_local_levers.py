@@ -65,7 +65,7 @@ def test_no_link_frame_moves_further_than_the_step_bound(seed: int) -> None:
         for s in rng.uniform(0.0, 0.9, 4):
             gap = float(rng.uniform(0.02, 0.3))
             scene.clearances(qa + (qb - qa) * s)
-            ds, _ = steps.step({}, gap)  # every link clear by ``gap``
+            ds = steps.step({}, gap)  # every link clear by ``gap``
             start = _ball_points(world, links, radii, directions)
             moved = np.zeros(len(links))
             for t in np.linspace(0.0, ds, 25)[1:]:

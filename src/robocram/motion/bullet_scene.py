@@ -25,7 +25,6 @@ from robocram.motion.joint_trajectory import FloatArray
 from robocram.world import ObstacleBoxes, World, WorldObject
 
 CLEARANCE_REACH = 0.1  # [m] distances asked for: a free configuration clears this much
-FAR_REACH = 0.4  # [m] the farthest a query may look (a sweep in free space asks farther)
 
 
 class BulletScene:
@@ -66,11 +65,6 @@ class BulletScene:
     def reach(self) -> float:
         """How far [m] clearance queries look (:data:`CLEARANCE_REACH`)."""
         return CLEARANCE_REACH
-
-    @property
-    def far_reach(self) -> float:
-        """The farthest [m] a clearance query may look (:data:`FAR_REACH`)."""
-        return FAR_REACH
 
     @property
     def joints(self) -> tuple[str, ...]:
@@ -130,14 +124,14 @@ class BulletScene:
             self.world.set_joint_states(self.robot, values)
             return self._clearance_now(reach)
 
-    def clearances(self, q: Configuration, reach: float | None = None) -> dict[str, float]:
+    def clearances(self, q: Configuration, reach: float = CLEARANCE_REACH) -> dict[str, float]:
         """Per moving link (or held object) nearer than ``reach`` [m] to something it may
         not touch, at ``q``: that distance [m] (0 or less: touching). Links not named are
         clear by ``reach`` at least."""
         values = dict(zip(self._joints, (float(v) for v in q), strict=True))
         with self.posed():
             self.world.set_joint_states(self.robot, values)
-            return self._clearances_now(CLEARANCE_REACH if reach is None else reach)
+            return self._clearances_now(reach)
 
     def lever_links(self) -> tuple[str, ...]:
         """The moving links that can collide (they have shapes and are not allowed to

@@ -68,7 +68,6 @@ class _Focus:
     ``centres``: a check walks a segment in small steps, so most checks reuse it."""
 
     centres: FloatArray  # (parts, 3) where the balls were when it was made
-    reach: float  # [m] the reach it holds every pair for
     table: PairTable
 
 
@@ -128,16 +127,11 @@ class ClearancePairs:
             placements,
         )
 
-    def gaps(
-        self, frames: FloatArray, slack: float, reach: float, exact: float | None = None
-    ) -> dict[str, float]:
+    def gaps(self, frames: FloatArray, slack: float, reach: float) -> dict[str, float]:
         """Per label nearer than ``reach``: its least distance [m] less ``slack``.
 
-        ``frames`` (rows, 4, 4) are the joints' placements in map now. Pairs whose lower
-        bound is ``exact`` or more are not asked of coal: their bound stands for them (a
-        label's gap is then at most its distance, never more).
+        ``frames`` (rows, 4, 4) are the joints' placements in map now.
         """
-        exact = reach if exact is None else min(exact, reach)
         if not len(self.table.part):
             return {}
         rotations, origins = frames[self.part_row, :3, :3], frames[self.part_row, :3, 3]
@@ -162,9 +156,6 @@ class ClearancePairs:
             for at in range(start, end + 1):
                 if bounds[at] >= best:
                     break  # the label's other pairs are farther still
-                if bounds[at] >= exact:
-                    best = bounds[at]  # a lower bound for this pair and those after
-                    break
                 k = order[at]
                 m, piece = int(table.part[k]), int(table.piece[k])
                 part = self.parts[m]
@@ -186,12 +177,12 @@ class ClearancePairs:
         """The focus for balls at ``centres``: the last one unless a ball has moved
         :data:`FOCUS` since (a pair left out was farther than the reach plus that)."""
         focus = self._focus
-        if focus is not None and focus.reach >= reach:
+        if focus is not None:
             moved = centres - focus.centres
             if float((moved * moved).sum(axis=1).max()) < FOCUS * FOCUS:
                 return focus
         rows = np.flatnonzero(self.table.bounds(centres, slack) < reach + FOCUS)
-        focus = self._focus = _Focus(centres, reach, self.table.subset(rows))
+        focus = self._focus = _Focus(centres, self.table.subset(rows))
         return focus
 
 

@@ -26,7 +26,7 @@ import pinocchio as pin
 from numpy.typing import NDArray
 
 from robocram.kinematics.robot_kinematics import pose_to_se3
-from robocram.motion.bullet_scene import CLEARANCE_REACH, FAR_REACH, BulletScene
+from robocram.motion.bullet_scene import CLEARANCE_REACH, BulletScene
 from robocram.motion.clearance_pairs import ClearancePairs, PairRules
 from robocram.motion.coal_shapes import coal_geometries
 from robocram.motion.configuration_checker import Configuration, LinkPair
@@ -70,7 +70,7 @@ class CoalClearance:
         self._levers: tuple[NDArray[np.intp], FloatArray] | None = None  # rows, frames
         self._base_matrix = self._base.homogeneous
         self._frames: FloatArray = np.zeros((len(self._joints), 4, 4))  # placements, last check
-        self._last: tuple[bytes, float, dict[str, float]] | None = None  # q, reach -> gaps
+        self._last: tuple[bytes, dict[str, float]] | None = None  # q -> its clearances
 
     @property
     def joints(self) -> tuple[str, ...]:
@@ -82,32 +82,23 @@ class CoalClearance:
         """How far [m] clearance queries look (:data:`CLEARANCE_REACH`)."""
         return CLEARANCE_REACH
 
-    @property
-    def far_reach(self) -> float:
-        """The farthest [m] a clearance query may look (:data:`FAR_REACH`: its pairs
-        hold every piece that far)."""
-        return FAR_REACH
-
     def clearance(self, q: Configuration) -> float:
         """The distance [m] from the moving links to what they may not touch (<= 0: near
         enough that the judge must be asked)."""
         return min(self.clearances(q).values(), default=CLEARANCE_REACH)
 
-    def clearances(self, q: Configuration, reach: float | None = None) -> dict[str, float]:
-        """Per moving link (or held object) nearer than ``reach`` (default: the reach, at
-        most :data:`FAR_REACH`) to something it may not touch: that distance [m], never
-        more than PyBullet's."""
-        reach = CLEARANCE_REACH if reach is None else min(reach, FAR_REACH)
+    def clearances(self, q: Configuration) -> dict[str, float]:
+        """Per moving link (or held object) nearer than the reach to something it may not
+        touch: that distance [m], never more than PyBullet's."""
         values = np.asarray(q, dtype=float)
         key = values.tobytes()
-        last = self._last
-        if last is not None and last[0] == key and last[1] >= reach:
-            return {link: gap for link, gap in last[2].items() if gap < reach}
+        if self._last is not None and self._last[0] == key:
+            return dict(self._last[1])
         pin.forwardKinematics(self._model, self._data, self._slots.full(values))
         oMi = self._data.oMi
         self._frames = self._base_matrix @ np.array([oMi[j].homogeneous for j in self._joints])
-        gaps = self._pairs.gaps(self._frames, self._slack, reach, CLEARANCE_REACH)
-        self._last = (key, reach, gaps)
+        gaps = self._pairs.gaps(self._frames, self._slack, CLEARANCE_REACH)
+        self._last = (key, gaps)
         return dict(gaps)
 
     def colliding(self, q: Configuration, first_only: bool = False) -> list[LinkPair]:
@@ -180,7 +171,7 @@ class _Setup:
         balls = _reach_balls(geometry, judge.joints, parts, checker._data, checker._base)
         held = frozenset(world.attachments(judge.robot))
         rules = PairRules(judge.rules, held, judge.allowed_pairs)
-        within = FAR_REACH + margin + DRIFT + judge.distance
+        within = CLEARANCE_REACH + margin + DRIFT + judge.distance
         return cls(
             joints, ClearancePairs.of(parts, rows, balls, obstacles, rules, within), obstacles
         )

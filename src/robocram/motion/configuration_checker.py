@@ -46,22 +46,16 @@ class ClearanceChecker(ConfigurationChecker, Protocol):
 
     @property
     def reach(self) -> float:
-        """How far [m] its clearance queries look by default: farther is reported as this."""
-        ...
-
-    @property
-    def far_reach(self) -> float:
-        """The farthest [m] a clearance query may be asked to look (``reach`` argument)."""
+        """How far [m] its clearance queries look: farther is reported as this."""
         ...
 
     def clearance(self, q: Configuration) -> float:
         """The distance [m] from the moving links to what they may not touch (<= 0: touch)."""
         ...
 
-    def clearances(self, q: Configuration, reach: float | None = None) -> dict[str, float]:
-        """Per moving link (or held object) nearer than ``reach`` (default: the checker's,
-        at most :attr:`far_reach`) to something: that distance [m]; the links not named are
-        clear by ``reach``."""
+    def clearances(self, q: Configuration) -> dict[str, float]:
+        """Per moving link (or held object) near something: that distance [m]; the links
+        not named are clear by the checker's reach."""
         ...
 
 

@@ -54,12 +54,7 @@ def _advance_free(
     counter: CheckCounter,
 ) -> bool:
     """Conservative advancement: from each checked configuration, step as far as its
-    clearance allows (no point can travel further than that), at least 1 cm of travel.
-
-    The query's reach adapts: while the step is limited by a link clear by the whole
-    reach (none named), the next query looks twice as far (up to the checker's far
-    reach), so steps in free space grow; once a named link limits it, back to the reach.
-    """
+    clearance allows (no point can travel further than that), at least 1 cm of travel."""
     travel = bound.travel(qa, qb)  # [m] the most any point moves from qa to qb
     if travel <= 0.0:
         return True
@@ -70,25 +65,23 @@ def _advance_free(
         else None
     )
     by_link = {}  # [m] per link: the most a point of it moves from qa to qb
-    near, far = checker.reach, checker.far_reach
-    reach = near
+    reach = checker.reach
     s = 0.0
     while True:
         q = qa + (qb - qa) * s
-        gaps = checker.clearances(q, reach)
+        gaps = checker.clearances(q)
         counter.checks += 1
         if min(gaps.values(), default=1.0) <= 0.0 and not checker.is_free(q):
             return False  # the contact check decides, as everywhere
         if local is not None:
-            step, unnamed = local.step(gaps, reach, bound.max_link_travel)
+            step = local.step(gaps, reach, bound.max_link_travel)
         else:
-            step, unnamed = reach / travel, True  # links not named are clear by the reach
+            step = reach / travel  # links not named are clear by the reach
             for link, gap in gaps.items():
                 if link not in by_link:
                     by_link[link] = bound.link_travel(link, qa, qb)
-                if by_link[link] > 0.0 and gap / by_link[link] < step:
-                    step, unnamed = gap / by_link[link], False
-        reach = min(2.0 * reach, far) if unnamed else near
+                if by_link[link] > 0.0:
+                    step = min(step, gap / by_link[link])
         s += max(step, floor)
         if s >= 1.0:
             return True
@@ -132,17 +125,14 @@ class _LocalSteps:
         ) @ dq
         return cls(checker, links, delta, turn)
 
-    def step(self, gaps: dict[str, float], reach: float, least: float = 0.0) -> tuple[float, bool]:
+    def step(self, gaps: dict[str, float], reach: float, least: float = 0.0) -> float:
         """The largest fraction of the segment no link can cross its clearance (or
-        ``least`` [m], the dense check's travel between checks) in, and whether a link
-        not named in ``gaps`` (clear by ``reach``) limits it."""
+        ``least`` [m], the dense check's travel between checks) in; links not named in
+        ``gaps`` are clear by ``reach``."""
         speed = self.checker.link_speeds(self.links, self.delta)
         gap = np.array([gaps.get(link, reach) for link in self.links], dtype=float)
         steps = _quadratic_step(speed, self.turn / 2, np.maximum(gap, least))
-        if not steps.size:
-            return 1.0, False
-        least_at = int(steps.argmin())
-        return float(steps[least_at]), self.links[least_at] not in gaps
+        return float(steps.min()) if steps.size else 1.0
 
 
 def _quadratic_step(speed: FloatArray, grow: FloatArray, gap: FloatArray) -> FloatArray:
