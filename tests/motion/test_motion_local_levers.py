@@ -1,10 +1,10 @@
 """Conservative advancement's tighter steps never let a point outrun its clearance.
 
-The levers taken where the robot stands (axis to link frame plus the link's radius) and
-the growth term bound how far any point within its radius of each link's frame moves over
-a step; here points on those balls, fixed in their links, are moved through each step in
-fine increments and must stay within that bound (halving the levers or dropping the
-growth term makes this fail).
+The speed of each link where the robot stands (its frame's speed plus its angular speed
+times its radius, for the segment's joint motion) and the growth term bound how far any
+point within its radius of each link's frame moves over a step; here points on those
+balls, fixed in their links, are moved through each step in fine increments and must
+stay within that bound (dropping the growth term makes this fail).
 """
 
 from __future__ import annotations
@@ -13,7 +13,12 @@ import numpy as np
 import pytest
 
 from robocram.motion.bullet_scene import BulletScene
-from robocram.motion.segment_check import CheckCounter, _LocalSteps, segment_free
+from robocram.motion.segment_check import (
+    CheckCounter,
+    _LocalSteps,
+    _quadratic_step,
+    segment_free,
+)
 from robocram.motion.travel_bound import TravelBound, link_radii
 from robocram.scenes import tabletop_scene
 from robocram.world import World
@@ -71,6 +76,42 @@ def test_no_link_frame_moves_further_than_the_step_bound(seed: int) -> None:
             tight = max(tight, float(moved.max() / gap))
             assert ds > 0.0
     assert tight > 0.3  # the bound is not slack: some point comes near it
+    world.close()
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_no_point_moves_further_than_the_vector_bound(seed: int) -> None:
+    """The bound that adds the joints' motions as vectors, alone: ``V ds + G ds^2 / 2``
+    (dropping ``G`` makes this fail)."""
+    world = tabletop_scene("pr2").world
+    scene = BulletScene(world, "pr2", JOINTS)
+    rng = np.random.default_rng(100 + seed)
+    bound = TravelBound.of(world, "pr2", JOINTS)
+    links = scene.lever_links()
+    radii = np.array([link_radii(world, "pr2").get(link, 0.0) for link in links])
+    directions = rng.normal(size=(64, 3))
+    directions /= np.linalg.norm(directions, axis=1)[:, None]
+    tight = 0.0
+    with scene.posed():
+        for _ in range(3):
+            qa, qb = _random_configuration(rng, scene), _random_configuration(rng, scene)
+            steps = _LocalSteps.of(scene, qa, qb, bound)
+            s = float(rng.uniform(0.0, 0.5))
+            gap = float(rng.uniform(0.1, 0.4))
+            scene.clearances(qa + (qb - qa) * s)
+            vector = scene.link_speeds(links, qb - qa)
+            ds = _quadratic_step(vector, steps.turn / 2, np.full(len(links), gap))
+            start = _ball_points(world, links, radii, directions)
+            moved = np.zeros(len(links))
+            for t in np.linspace(0.0, float(ds.max()), 40)[1:]:
+                scene.clearances(qa + (qb - qa) * (s + t))
+                now = _ball_points(world, links, radii, directions)
+                within = t <= ds + 1e-12  # each link, over its own step
+                reached = np.linalg.norm(now - start, axis=2).max(axis=1)
+                moved = np.where(within, np.maximum(moved, reached), moved)
+            assert moved.max() <= gap + 1e-6, (links[int(moved.argmax())], moved.max(), gap)
+            tight = max(tight, float(moved.max() / gap))
+    assert tight > 0.5
     world.close()
 
 

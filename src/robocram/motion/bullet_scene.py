@@ -134,11 +134,18 @@ class BulletScene:
             return self._clearances_now(reach)
 
     def lever_links(self) -> tuple[str, ...]:
-        """The moving links and the objects held by one of them (they ride on it); what
-        the other hand holds stays where it is."""
+        """The moving links that can collide (they have shapes and are not allowed to
+        touch anything: a frame without shapes need not slow a sweep) and the objects
+        held by a moving link (they ride on it); what the other hand holds stays put."""
         moving = set(self.moving_links)
+        handle = self.world.robot(self.robot)
         held = self.world.attachments(self.robot)
-        return (*self.moving_links, *(obj for obj, link in held.items() if link in moving))
+        shaped = (
+            link for link in self.moving_links
+            if link not in self.allowed_links
+            and handle.link_index.get(link, -2) in handle.colliders
+        )  # fmt: skip
+        return (*shaped, *(obj for obj, link in held.items() if link in moving))
 
     def joints_after(self) -> NDArray[np.bool_]:
         """``[i, k]``: whether joint k's child link moves with joint i (k below i)."""
@@ -158,6 +165,16 @@ class BulletScene:
         joints = frames[data.joint_rows]
         axes = _rotated(joints[:, 3:], data.local_axes)  # (joints, 3)
         return data.levers(links, frames[:, :3], joints[:, :3], axes)
+
+    def link_speeds(self, links: Sequence[str], delta: FloatArray) -> FloatArray:
+        """Per link of ``links``: the most [m] a point of it moves per unit of a segment
+        whose joints change by ``delta``, as the robot is posed now (its frame's speed
+        plus its angular speed times its radius; see :meth:`LeverData.speeds`)."""
+        data = self.lever_data()
+        frames = np.array(self.world.link_frames(self.robot, data.frame_links))
+        joints = frames[data.joint_rows]
+        axes = _rotated(joints[:, 3:], data.local_axes)  # (joints, 3)
+        return data.speeds(links, frames[:, :3], joints[:, :3], axes, delta)
 
     def lever_data(self) -> LeverData:
         """What :meth:`joint_levers` needs beyond the frames, read once."""

@@ -30,6 +30,7 @@ from robocram.motion.bullet_scene import CLEARANCE_REACH, BulletScene
 from robocram.motion.clearance_pairs import ClearancePairs, PairRules
 from robocram.motion.coal_shapes import coal_geometries
 from robocram.motion.configuration_checker import Configuration, LinkPair
+from robocram.motion.joint_levers import LeverData
 from robocram.motion.joint_slots import JointSlots
 from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.obstacle_shapes import DRIFT, StackedShapes, obstacle_cache
@@ -123,6 +124,22 @@ class CoalClearance:
         """Per link, per joint: the most [m] a point of it moves per unit joint change, at
         the configuration checked last (see :meth:`BulletScene.joint_levers`)."""
         data = self.judge.lever_data()
+        return data.levers(links, *self._lever_frames())
+
+    def link_speeds(self, links: Sequence[str], delta: FloatArray) -> FloatArray:
+        """Per link: the most [m] a point of it moves per unit of a segment whose joints
+        change by ``delta``, at the configuration checked last (see
+        :meth:`BulletScene.link_speeds`)."""
+        data = self.judge.lever_data()
+        return data.speeds(links, *self._lever_frames(), delta)
+
+    def lever_data(self) -> LeverData:
+        """What the levers need beyond the frames (the judge's)."""
+        return self.judge.lever_data()
+
+    def _lever_frames(self) -> tuple[FloatArray, FloatArray, FloatArray]:
+        """The frame links' origins, the joints' origins and axes at the last check."""
+        data = self.judge.lever_data()
         if self._levers is None:
             found = [self._geometry.frame(link) for link in data.frame_links]
             rows = np.array([self._rows[joint] for joint, _ in found], dtype=np.intp)
@@ -131,7 +148,7 @@ class CoalClearance:
         frames = self._frames[rows] @ placements  # (frame links, 4, 4)
         joints = frames[data.joint_rows]
         axes = np.einsum("jik,jk->ji", joints[:, :3, :3], data.local_axes)
-        return data.levers(links, frames[:, :3, 3], joints[:, :3, 3], axes)
+        return frames[:, :3, 3], joints[:, :3, 3], axes
 
 
 @dataclass(frozen=True)

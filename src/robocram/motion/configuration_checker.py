@@ -11,10 +11,13 @@ from __future__ import annotations
 
 import contextlib
 from collections.abc import Sequence
-from typing import Protocol, runtime_checkable
+from typing import TYPE_CHECKING, Protocol, runtime_checkable
 
 import numpy as np
 import numpy.typing as npt
+
+if TYPE_CHECKING:
+    from robocram.motion.joint_levers import LeverData
 
 Configuration = Sequence[float] | npt.NDArray[np.float64]  # values of the checker's joints
 LinkPair = tuple[str, str]  # (robot link, other: object, object/link or robot link)
@@ -70,6 +73,17 @@ class LeverChecker(ClearanceChecker, Protocol):
 
     def joint_levers(self, links: Sequence[str]) -> npt.NDArray[np.float64]:
         """Per link, per joint: the most [m] a point of it moves per unit joint change."""
+        ...
+
+    def link_speeds(
+        self, links: Sequence[str], delta: npt.NDArray[np.float64]
+    ) -> npt.NDArray[np.float64]:
+        """Per link: the most [m] a point of it moves per unit of a segment whose joints
+        change by ``delta``, as posed now."""
+        ...
+
+    def lever_data(self) -> LeverData:
+        """What the levers need beyond the frames: radii, which joints are prismatic."""
         ...
 
 

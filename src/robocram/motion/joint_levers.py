@@ -35,6 +35,7 @@ class LeverData:
     below: NDArray[np.bool_]  # (links, joints) whether the joint moves the link
     after: NDArray[np.bool_]  # (joints, joints) whether joint k's child moves with joint i
     _rows: dict[tuple[str, ...], NDArray[np.intp]] = field(default_factory=dict)
+    _masks: dict[bytes, tuple[FloatArray, FloatArray]] = field(default_factory=dict)
 
     @classmethod
     def of(
@@ -66,6 +67,43 @@ class LeverData:
             ).reshape(len(joints), len(joints)),
         )  # fmt: skip
 
+    def link_rows(self, links: Sequence[str]) -> NDArray[np.intp]:
+        """Per link of ``links`` (a held object: its carrier's), its row."""
+        key = tuple(links)
+        rows = self._rows.get(key)
+        if rows is None:  # the same links are asked about at every check of a segment
+            rows = np.array([self.row[self.carriers.get(link, link)] for link in links], int)
+            self._rows[key] = rows
+        return rows
+
+    def speeds(
+        self,
+        links: Sequence[str],
+        positions: FloatArray,
+        joint_origins: FloatArray,
+        axes: FloatArray,
+        delta: FloatArray,
+    ) -> FloatArray:
+        """Per link of ``links``: the most [m] a point of it moves per unit of a segment
+        whose joints change by ``delta``, as posed now: its frame's speed plus its angular
+        speed times its radius (the joints' motions add as vectors; far tighter than the
+        levers' magnitudes summed, which no sweep of the kitchen ever needed)."""
+        rows = self.link_rows(links)
+        masks = self._masks.get(rows.tobytes())
+        if masks is None:
+            below = self.below[rows]
+            masks = self._masks[rows.tobytes()] = (
+                (below & ~self.prismatic).astype(float), (below & self.prismatic).astype(float)
+            )  # fmt: skip
+        turning, sliding = masks
+        moves = delta[:, None] * axes  # (joints, 3)
+        spin = turning @ moves  # (links, 3) each link's angular velocity
+        centres = positions[self.centre_rows[rows]]
+        # sum over revolute j of moves_j x (c - o_j) = spin x c - sum of moves_j x o_j
+        linear = cross(spin, centres) - turning @ cross(moves, joint_origins) + sliding @ moves
+        speed = np.sqrt((linear * linear).sum(axis=1))
+        return np.asarray(speed + np.sqrt((spin * spin).sum(axis=1)) * self.radii[rows])
+
     def levers(
         self,
         links: Sequence[str],
@@ -76,11 +114,7 @@ class LeverData:
         """Per link of ``links`` (a held object: its carrier's row), per joint: the lever
         [m per unit change]; ``positions`` (frame links, 3) are the frames' origins,
         ``joint_origins`` and ``axes`` (joints, 3) the joints' (any one frame for all)."""
-        key = tuple(links)
-        rows = self._rows.get(key)
-        if rows is None:  # the same links are asked about at every check of a segment
-            rows = np.array([self.row[self.carriers.get(link, link)] for link in links], int)
-            self._rows[key] = rows
+        rows = self.link_rows(links)
         centres = positions[self.centre_rows[rows]]  # (links, 3)
         arms = cross(centres[:, None, :] - joint_origins[None, :, :], axes[None, :, :])
         levers = np.sqrt((arms * arms).sum(axis=2)) + self.radii[rows][:, None]

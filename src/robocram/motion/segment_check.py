@@ -65,6 +65,7 @@ def _advance_free(
         else None
     )
     by_link = {}  # [m] per link: the most a point of it moves from qa to qb
+    reach = checker.reach
     s = 0.0
     while True:
         q = qa + (qb - qa) * s
@@ -73,9 +74,9 @@ def _advance_free(
         if min(gaps.values(), default=1.0) <= 0.0 and not checker.is_free(q):
             return False  # the contact check decides, as everywhere
         if local is not None:
-            step = local.step(gaps, checker.reach)
+            step = local.step(gaps, reach, bound.max_link_travel)
         else:
-            step = checker.reach / travel  # links not named are clear by the reach
+            step = reach / travel  # links not named are clear by the reach
             for link, gap in gaps.items():
                 if link not in by_link:
                     by_link[link] = bound.link_travel(link, qa, qb)
@@ -88,42 +89,57 @@ def _advance_free(
 
 @dataclass
 class _LocalSteps:
-    """Steps from the levers of the configuration checked last (tighter than the rigid
-    ones): over a step ``ds`` a link moves at most ``A ds + B ds^2``, where ``A`` is its
-    speed from the levers now and ``B ds`` bounds how much those levers can grow meanwhile
-    (the joints between an axis and the link move it by at most its rigid travel)."""
+    """Steps from the frames of the configuration checked last (far tighter than the
+    rigid ones): over a step ``ds`` a link moves at most ``V ds + G ds^2 / 2``. ``V`` adds
+    the joints' motions as vectors (the frame's speed plus the angular speed times the
+    link's radius); ``G`` bounds how fast that speed can change: each joint's axis turns
+    with the joints above it (``W``), and the link moves relative to it by what those and
+    the joints from it down do (their rigid travel)."""
 
     checker: LeverChecker
     links: tuple[str, ...]
-    dq: FloatArray  # |qb - qa| per joint
-    grow: FloatArray  # per link: B = sum over joints i of dq_i times the rigid travel the
-    # joints after i along the chain give the link (what can move it off i's axis)
+    delta: FloatArray  # qb - qa per joint
+    turn: FloatArray  # per link: G
 
     @classmethod
     def of(
         cls, checker: LeverChecker, qa: FloatArray, qb: FloatArray, bound: TravelBound
     ) -> _LocalSteps:
         links = checker.lever_links()
-        dq = np.abs(qb - qa)
+        delta = qb - qa
+        dq = np.abs(delta)
         rigid = np.array(
             [bound.link_lever.get(bound.carriers.get(link, link), bound.lever) for link in links],
             dtype=float,
         ).reshape(len(links), len(dq))  # (links, joints) [m] per unit change
-        after = checker.joints_after()  # (joints, joints): k moves what i's axis does not
-        grow = np.einsum("i,ik,lk,k->l", dq, after.astype(float), rigid, dq)
-        return cls(checker, links, dq, grow)
+        after = checker.joints_after().astype(float)  # (joints, joints): k below i
+        data = checker.lever_data()
+        rows = data.link_rows(links)
+        below, radii = data.below[rows].astype(float), data.radii[rows]
+        revolute = ~data.prismatic
+        spin = after.T @ (dq * revolute)  # per joint: how fast its axis can turn (W)
+        down = (rigid * dq) @ (np.eye(len(dq)) + after).T  # [l, i]: joints from i down
+        turn = (
+            (2.0 * spin * rigid + spin * radii[:, None] * below + down) * revolute
+            + spin * below * data.prismatic
+        ) @ dq
+        return cls(checker, links, delta, turn)
 
-    def step(self, gaps: dict[str, float], reach: float) -> float:
-        """The largest fraction of the segment no link can cross its clearance in."""
-        speed = self.checker.joint_levers(self.links) @ self.dq  # A per link
+    def step(self, gaps: dict[str, float], reach: float, least: float = 0.0) -> float:
+        """The largest fraction of the segment no link can cross its clearance (or
+        ``least`` [m], the dense check's travel between checks) in; links not named in
+        ``gaps`` are clear by ``reach``."""
+        speed = self.checker.link_speeds(self.links, self.delta)
         gap = np.array([gaps.get(link, reach) for link in self.links], dtype=float)
-        gap = np.maximum(gap, 0.0)
-        grow = self.grow
-        with np.errstate(divide="ignore", invalid="ignore"):
-            root = (-speed + np.sqrt(speed * speed + 4.0 * grow * gap)) / (2.0 * grow)
-            linear = np.where(speed > 0.0, gap / speed, np.inf)
-        steps = np.where(grow > 0.0, root, linear)
+        steps = _quadratic_step(speed, self.turn / 2, np.maximum(gap, least))
         return float(steps.min()) if steps.size else 1.0
+
+
+def _quadratic_step(speed: FloatArray, grow: FloatArray, gap: FloatArray) -> FloatArray:
+    """Per link: the ``ds`` at which ``speed ds + grow ds^2`` reaches ``gap``."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        root = 2.0 * gap / (speed + np.sqrt(speed * speed + 4.0 * grow * gap))
+    return np.where(speed + grow > 0.0, root, np.inf)
 
 
 def segment_free(
