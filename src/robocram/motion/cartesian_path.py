@@ -19,8 +19,8 @@ import numpy as np
 
 from robocram.kinematics import track_ik
 from robocram.motion.configuration_checker import (
-    ClearanceChecker,
     ConfigurationChecker,
+    can_tell_clearance,
     posed,
 )
 from robocram.motion.joint_path import JointPath
@@ -65,7 +65,7 @@ class _Clearance:
         if self.at_least - travel > travel:
             self.at_least -= travel
             return True
-        if not isinstance(self.checker, ClearanceChecker):
+        if not can_tell_clearance(self.checker):
             return False
         self.at_least = self.checker.clearance(q)
         return self.at_least > travel

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import contextlib
 from collections.abc import Sequence
-from typing import TYPE_CHECKING, Protocol, runtime_checkable
+from typing import TYPE_CHECKING, Protocol, TypeGuard, runtime_checkable
 
 import numpy as np
 import numpy.typing as npt
@@ -85,6 +85,30 @@ class LeverChecker(ClearanceChecker, Protocol):
     def lever_data(self) -> LeverData:
         """What the levers need beyond the frames: radii, which joints are prismatic."""
         ...
+
+
+def can_tell_clearance(checker: object) -> TypeGuard[ClearanceChecker]:
+    """``isinstance(checker, ClearanceChecker)``, asked once per class: a protocol check
+    compares every member (~20 us), and a motion asks it per segment and per waypoint."""
+    return _is_a(checker, ClearanceChecker)
+
+
+def can_tell_levers(checker: object) -> TypeGuard[LeverChecker]:
+    """``isinstance(checker, LeverChecker)``, asked once per class."""
+    return _is_a(checker, LeverChecker)
+
+
+def _is_a(checker: object, protocol: type) -> bool:
+    """The first instance of a class answers for the class (checkers set every member
+    in ``__init__``; ``issubclass`` refuses protocols with data members)."""
+    key = (type(checker), protocol)
+    found = _KINDS.get(key)
+    if found is None:
+        found = _KINDS[key] = isinstance(checker, protocol)
+    return found
+
+
+_KINDS: dict[tuple[type, type], bool] = {}  # (checker class, protocol) -> is one
 
 
 def posed(checker: ConfigurationChecker) -> contextlib.AbstractContextManager[None]:

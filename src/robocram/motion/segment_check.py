@@ -19,6 +19,8 @@ from robocram.motion.configuration_checker import (
     ConfigurationChecker,
     LeverChecker,
     LinkPair,
+    can_tell_clearance,
+    can_tell_levers,
     posed,
 )
 from robocram.motion.joint_trajectory import FloatArray
@@ -61,7 +63,7 @@ def _advance_free(
     floor = bound.max_link_travel / travel
     local = (  # reading levers costs a sixth of a check: worth it on long sweeps only
         _LocalSteps.of(checker, qa, qb, bound)
-        if travel > LOCAL_LEVERS_FROM and isinstance(checker, LeverChecker)
+        if travel > LOCAL_LEVERS_FROM and can_tell_levers(checker)
         else None
     )
     by_link = {}  # [m] per link: the most a point of it moves from qa to qb
@@ -156,7 +158,7 @@ def segment_free(
     """
     qa, qb = np.asarray(qa, dtype=float), np.asarray(qb, dtype=float)
     with posed(checker):
-        if isinstance(checker, ClearanceChecker):
+        if can_tell_clearance(checker):
             return _advance_free(checker, qa, qb, bound, counter)
         n = bound.steps(qa, qb)
         for k in interior(n):
