@@ -147,10 +147,9 @@ class ReachabilityMaps:
         if entry is None or entry[0] is not robot.model:  # ids of dead models get reused
             assert robot.model is not None
             kept = robot.model.derived(_kept_with_model)  # a new resolver (each batch
-            path = str(_cache_file(robot, arm, self.samples))  # variant's) reads no file
-            found = kept.get(path)
+            found = kept.get((arm, self.samples))  # variant's) reads no file, hashes no URDF
             if found is None or found.robot != robot.name:
-                found = kept[path] = self._load_or_build(robot, arm)
+                found = kept[(arm, self.samples)] = self._load_or_build(robot, arm)
             entry = (robot.model, found)
             self._maps[key] = entry
         return entry[1]
@@ -171,8 +170,8 @@ class ReachabilityMaps:
         return built
 
 
-def _kept_with_model(model: object) -> dict[str, ReachabilityMap]:
-    """The maps a robot model keeps, by their file (the key under which
-    :meth:`~robocram.robots.RobotModel.derived` keeps them): the model is parsed once per
-    process, so each map is read once per process too."""
+def _kept_with_model(model: object) -> dict[tuple[str, int], ReachabilityMap]:
+    """The maps a robot model keeps (:meth:`~robocram.robots.RobotModel.derived`), by arm
+    and sample count: the rest of their file's key is the model's, fixed while it lives.
+    The model is parsed once per process, so each map is read once per process too."""
     return {}
