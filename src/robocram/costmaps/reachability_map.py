@@ -58,6 +58,15 @@ class ReachabilityMap:
         """Score of a tool position given in the robot's base frame [m]."""
         return float(self.scores_at(np.array([point_in_base]))[0])
 
+    def radius_at(self, z: float) -> float:
+        """A distance [m] from the base's z axis beyond which every score at height ``z``
+        (base frame) is 0: where a costmap need not ask."""
+        h = math.floor(z / HEIGHT_STEP)
+        if not 0 <= h < self.scores.shape[2]:
+            return 0.0
+        reached = np.flatnonzero(self.scores[:, :, h].any(axis=1))
+        return float(reached[-1] + 1) * RADIUS_STEP if len(reached) else 0.0
+
     def scores_at(self, points_in_base: NDArray[np.float64]) -> NDArray[np.float64]:
         """Scores of tool positions (N x 3, base frame [m]); 0 outside the map."""
         x, y, z = points_in_base[:, 0], points_in_base[:, 1], points_in_base[:, 2]
