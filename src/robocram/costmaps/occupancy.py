@@ -171,24 +171,26 @@ def free_cells(
 ) -> FloatGrid:
     """1 in cells farther than ``radius`` [m] from every box, 0 elsewhere.
 
-    Only the cells of ``where`` (default all) are measured, against all boxes at once; the
-    others count as free.
+    Each box is only measured against the window of cells its ``radius`` reaches, and
+    only boxes whose window holds a cell of ``where`` (default all) are measured.
     """
     grid = query.grid
     x0, y0 = grid.origin
-    res = grid.resolution
+    res, (rows, cols) = grid.resolution, grid.shape
     free = np.ones(grid.shape)
-    if not boxes:
-        return free
-    rows, cols = np.nonzero(np.ones(grid.shape, dtype=bool) if where is None else where)
-    xs = (x0 + res * cols)[:, None]  # cell centres, as the grid has them
-    ys = (y0 + res * rows)[:, None]
-    lows = np.array([low[:2] for low, _ in boxes], dtype=float)
-    highs = np.array([high[:2] for _, high in boxes], dtype=float)
-    dx = np.maximum(np.maximum(lows[:, 0] - xs, xs - highs[:, 0]), 0.0)
-    dy = np.maximum(np.maximum(lows[:, 1] - ys, ys - highs[:, 1]), 0.0)
-    near = (np.hypot(dx, dy) < radius).any(axis=1)
-    free[rows[near], cols[near]] = 0.0
+    for low, high in boxes:
+        c0 = max(0, math.floor((low[0] - radius - x0) / res))
+        c1 = min(cols, math.ceil((high[0] + radius - x0) / res) + 1)
+        r0 = max(0, math.floor((low[1] - radius - y0) / res))
+        r1 = min(rows, math.ceil((high[1] + radius - y0) / res) + 1)
+        if c0 >= c1 or r0 >= r1 or (where is not None and not where[r0:r1, c0:c1].any()):
+            continue
+        xs = x0 + res * np.arange(c0, c1)
+        ys = y0 + res * np.arange(r0, r1)
+        dx = np.maximum(np.maximum(low[0] - xs, xs - high[0]), 0.0)
+        dy = np.maximum(np.maximum(low[1] - ys, ys - high[1]), 0.0)
+        near = np.hypot(dx[None, :], dy[:, None]) < radius
+        free[r0:r1, c0:c1][near] = 0.0
     return free
 
 
