@@ -96,13 +96,24 @@ def arm_working_yaw(desc: RobotDescription, arm: str) -> float:
 def shoulder_offset(desc: RobotDescription, arm: str) -> float:
     """Sideways offset [m] of the arm's first joint across its working direction (the
     base's y for an arm working ahead): the line it reaches along."""
-    model = _loaded(desc).model
-    first = model.joints[desc.arms[arm].joints[0]] if desc.arms[arm].joints else None
-    if first is None:
+    loaded = _loaded(desc)
+    spec = loaded.arms[arm]
+    if not spec.joints:
         return 0.0
-    x, y, _ = forward_kinematics(desc, {}, first.child).position
-    turn = arm_working_yaw(desc, arm)
-    return -math.sin(turn) * x + math.cos(turn) * y
+    key = (spec.joints, spec.end_effector_link)  # the model's FK and working yaw of them
+    found = loaded.model.derived(_ShoulderOffsets).found  # costmaps ask per arm per stand
+    if key not in found:
+        x, y, _ = forward_kinematics(loaded, {}, loaded.model.joints[spec.joints[0]].child).position
+        turn = arm_working_yaw(loaded, arm)
+        found[key] = -math.sin(turn) * x + math.cos(turn) * y
+    return found[key]
+
+
+class _ShoulderOffsets:
+    """Shoulder offsets found for one model, by arm chain."""
+
+    def __init__(self, model: object) -> None:
+        self.found: dict[tuple[object, ...], float] = {}
 
 
 def _loaded(desc: RobotDescription) -> LoadedDescription:

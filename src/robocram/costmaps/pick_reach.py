@@ -84,7 +84,8 @@ def collides(
     changed = [j for j, v in joints.items() if abs(before.get(j, v) - v) > 1e-9]
     here = stand.distance_to(pose) < 1e-6 and stand.angle_to(pose) < 1e-6
     moved = _moved_links(model, changed, robot) if here else None
-    world.set_pose(robot, stand)
+    if not here:  # standing there already (the validator placed it): no move to undo
+        world.set_pose(robot, stand)
     world.set_joint_states(robot, dict(joints))
     try:
         floors = world.objects(type="floor")
@@ -92,14 +93,22 @@ def collides(
         return any(link not in allowed for link, _ in hits)
     finally:
         world.set_joint_states(robot, before)
-        world.set_pose(robot, pose)
+        if not here:
+            world.set_pose(robot, pose)
+
+
+class _Children:
+    """The child links of each link of one model (a model never changes)."""
+
+    def __init__(self, model: RobotModel) -> None:
+        self.below: dict[str, list[str]] = {}
+        for joint in model.joints.values():
+            self.below.setdefault(joint.parent, []).append(joint.child)
 
 
 def _moved_links(model: RobotModel, joints: list[str], robot: RobotObject) -> list[str]:
     """The links below ``joints`` (their children and everything further out) in the body."""
-    below: dict[str, list[str]] = {}
-    for joint in model.joints.values():
-        below.setdefault(joint.parent, []).append(joint.child)
+    below = model.derived(_Children).below
     found = [model.joints[j].child for j in joints if j in model.joints]
     for link in found:
         found.extend(below.get(link, ()))

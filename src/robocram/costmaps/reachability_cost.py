@@ -16,6 +16,7 @@ from robocram.costmaps.cost_layer import CostLayer, LocationQuery
 from robocram.costmaps.errors import CostmapInputError
 from robocram.costmaps.grasps import arm_working_yaw, grasp_point, shoulder_offset
 from robocram.costmaps.grid import BoolGrid
+from robocram.costmaps.reachability_map import RADIUS_STEP
 from robocram.costmaps.validators import robot_arms
 
 
@@ -40,14 +41,17 @@ def reachability_cost(query: LocationQuery, value: object, alive: BoolGrid) -> C
     for name in arms:
         side = shoulder_offset(desc, name)
         turn_to_work = arm_working_yaw(desc, name)
-        ahead = np.sqrt(np.maximum(distance**2 - side**2, 0.0))
+        reach_map = query.reach_maps.get(desc, name)
+        # the map scores 0 beyond its radius at this height: ask only for the cells within
+        # (a bin's margin for rounding), whose target is off the shoulder's line
+        asked = (distance > abs(side)) & (distance < reach_map.radius_at(height) + RADIUS_STEP)
+        ahead = np.sqrt(np.maximum(distance[asked] ** 2 - side**2, 0.0))
         c, s = np.cos(turn_to_work), np.sin(turn_to_work)  # working frame to base frame
         points = np.column_stack(
             [c * ahead - s * side, s * ahead + c * side, np.full_like(ahead, height)]
         )
-        arm_score = np.where(
-            distance > abs(side), query.reach_maps.get(desc, name).scores_at(points), 0.0
-        )
+        arm_score = np.zeros(distance.shape)
+        arm_score[asked] = reach_map.scores_at(points)
         better = arm_score > score
         score = np.where(better, arm_score, score)
         turn = np.arcsin(np.clip(side / np.maximum(distance, 1e-9), -1.0, 1.0))

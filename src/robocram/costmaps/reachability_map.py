@@ -58,6 +58,15 @@ class ReachabilityMap:
         """Score of a tool position given in the robot's base frame [m]."""
         return float(self.scores_at(np.array([point_in_base]))[0])
 
+    def radius_at(self, z: float) -> float:
+        """A distance [m] from the base's z axis beyond which every score at height ``z``
+        (base frame) is 0: where a costmap need not ask."""
+        h = math.floor(z / HEIGHT_STEP)
+        if not 0 <= h < self.scores.shape[2]:
+            return 0.0
+        reached = np.flatnonzero(self.scores[:, :, h].any(axis=1))
+        return float(reached[-1] + 1) * RADIUS_STEP if len(reached) else 0.0
+
     def scores_at(self, points_in_base: NDArray[np.float64]) -> NDArray[np.float64]:
         """Scores of tool positions (N x 3, base frame [m]); 0 outside the map."""
         x, y, z = points_in_base[:, 0], points_in_base[:, 1], points_in_base[:, 2]
@@ -147,10 +156,9 @@ class ReachabilityMaps:
         if entry is None or entry[0] is not robot.model:  # ids of dead models get reused
             assert robot.model is not None
             kept = robot.model.derived(_kept_with_model)  # a new resolver (each batch
-            path = str(_cache_file(robot, arm, self.samples))  # variant's) reads no file
-            found = kept.get(path)
+            found = kept.get((arm, self.samples))  # variant's) reads no file, hashes no URDF
             if found is None or found.robot != robot.name:
-                found = kept[path] = self._load_or_build(robot, arm)
+                found = kept[(arm, self.samples)] = self._load_or_build(robot, arm)
             entry = (robot.model, found)
             self._maps[key] = entry
         return entry[1]
@@ -171,8 +179,8 @@ class ReachabilityMaps:
         return built
 
 
-def _kept_with_model(model: object) -> dict[str, ReachabilityMap]:
-    """The maps a robot model keeps, by their file (the key under which
-    :meth:`~robocram.robots.RobotModel.derived` keeps them): the model is parsed once per
-    process, so each map is read once per process too."""
+def _kept_with_model(model: object) -> dict[tuple[str, int], ReachabilityMap]:
+    """The maps a robot model keeps (:meth:`~robocram.robots.RobotModel.derived`), by arm
+    and sample count: the rest of their file's key is the model's, fixed while it lives.
+    The model is parsed once per process, so each map is read once per process too."""
     return {}

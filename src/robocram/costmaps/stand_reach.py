@@ -56,7 +56,11 @@ def reach_to_pick(
     """
     seed = world.joint_states(robot)
     memo = {} if memo is None else memo
-    for name in hopeful_arms(robot, grasp_point(world, obj), base, arm, maps):
+    key = ("grasp_point", obj.name, world.pose(obj))  # the object stays put meanwhile
+    point = memo.get(key)
+    if point is None:
+        point = memo[key] = grasp_point(world, obj)
+    for name in hopeful_arms(robot, point, base, arm, maps):
         record: dict[str, list[int]] = memo.setdefault(("grasp_record", obj.name, name), {})
         targets = pick_targets(world, robot, obj, name, base, memo)
         targets.sort(key=lambda t: _rank(record, t.grasp))

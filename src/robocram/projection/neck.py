@@ -52,8 +52,11 @@ def _nearest_in_limits(value: float, limits: JointLimits) -> float:
     return value
 
 
-def _aim_joint(robot: ProjectedRobot, joint: str, child_link: str, target: np.ndarray) -> float:
-    """The value of ``joint`` that turns the optical axis towards ``target``, unclamped."""
+def _aim_joint(
+    robot: ProjectedRobot, joint: str, child_link: str, target: np.ndarray, current: float
+) -> float:
+    """The value of ``joint`` (now ``current``) that turns the optical axis towards
+    ``target``, unclamped."""
     world, desc = robot.world, robot.description
     spec = desc.model.joints[joint]
     link = world.link_pose(robot.name, child_link).matrix()
@@ -62,7 +65,6 @@ def _aim_joint(robot: ProjectedRobot, joint: str, child_link: str, target: np.nd
     camera = world.link_pose(robot.name, desc.cameras[0].frame).matrix()
     optical = camera[:3, 2]
     wanted = target - camera[:3, 3]
-    current = world.joint_states(robot.name)[joint]
     turn = signed_angle(optical, wanted, axis)
     return _nearest_in_limits(current + turn, world.joint_limits(robot.name, joint))
 
@@ -72,10 +74,11 @@ def _aim_pan_tilt(
 ) -> dict[str, float]:
     world, target = robot.world, np.asarray(target_in_map, float)
     wanted: dict[str, float] = {}
+    after = world.joint_states(robot.name)
     for _ in range(AIM_ROUNDS):
-        before = world.joint_states(robot.name)
+        before = after  # setting one pan-tilt joint leaves the other's value: read once a round
         for joint, link in pt.axes():
-            wanted[joint] = _aim_joint(robot, joint, link, target)
+            wanted[joint] = _aim_joint(robot, joint, link, target, before[joint])
             world.set_joint_states(robot.name, {joint: wanted[joint]})
         after = world.joint_states(robot.name)
         if max(abs(after[j] - before[j]) for j in wanted) < AIM_TOLERANCE:
