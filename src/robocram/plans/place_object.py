@@ -29,11 +29,12 @@ from robocram.plans.robot_facts import current_robot, end_effector_link, graspin
 from robocram.tf import Pose, PoseStamped, transform_pose
 from robocram.tf import quaternion as quat
 
-PLACE_GAP = 0.002  # [m] the object is let go this far above its target (a location's
-# target already rests a gap above the surface; a bare pose may be the surface itself)
+PLACE_GAP = 0.005  # [m] the object is let go this far above its target (a location's
+# target already rests a gap above the surface; a bare pose may be the surface itself; at
+# 2 mm the HSR's hand, backing off, knocked 2 of 50 mugs off the table)
 CARRY_HEIGHTS = (0.10, 0.05)  # [m] the object comes in from this far above, first that works
 RETREATS = (0.10, 0.05)  # [m] the open hand backs off this far towards the wrist, or less
-SETTLE = 0.15  # [s] simulated at most after letting go: the 4 mm drop takes 0.03 s
+SETTLE = 0.15  # [s] simulated at most after letting go: the 7 mm drop takes 0.04 s
 SETTLE_STEP = 1.0 / 60.0  # [s] simulated between two looks at the object (4 steps at 240 Hz)
 AT_REST = 0.0004  # [m] an object moving less than this over one look's step rests (2.4 cm/s)
 AT_REST_TURN = 0.008  # [rad] ... and turning less than this (0.5 rad/s: a mug rocks a little)
@@ -111,8 +112,8 @@ def _settled(name: str, put: Pose, seconds: float) -> str | None:
 
     The world is simulated in steps of :data:`SETTLE_STEP` until the object stops moving
     (it moved less than :data:`AT_REST` and turned less than :data:`AT_REST_TURN` over the
-    last step) or ``seconds`` have passed. An object let go 4 mm above its support lands
-    within the second step and rests by the third, 12 physics steps of the 36 in
+    last step) or ``seconds`` have passed. An object let go 7 mm above its support lands
+    within the third step and rests by the fourth, 16 physics steps of the 36 in
     :data:`SETTLE`: the shorter the drop, the sooner it rests, so the location's pose
     lies on the object's true bottom (not its Bullet bounds, a few mm lower).
     """
