@@ -50,15 +50,9 @@ def _random_configuration(rng: np.random.Generator, scene: BulletScene) -> np.nd
 
 @pytest.mark.parametrize("seed", range(6))
 def test_no_link_frame_moves_further_than_the_step_bound(seed: int) -> None:
-    world = tabletop_scene("pr2").world
-    scene = BulletScene(world, "pr2", JOINTS)
-    rng = np.random.default_rng(seed)
+    scene, rng, bound, links, radii, directions = _lever_case(seed)
+    world = scene.world
     qa, qb = _random_configuration(rng, scene), _random_configuration(rng, scene)
-    bound = TravelBound.of(world, "pr2", JOINTS)
-    links = scene.lever_links()
-    radii = np.array([link_radii(world, "pr2").get(link, 0.0) for link in links])
-    directions = rng.normal(size=(64, 3))
-    directions /= np.linalg.norm(directions, axis=1)[:, None]
     tight = 0.0
     with scene.posed():
         steps = _LocalSteps.of(scene, qa, qb, bound)
@@ -83,14 +77,8 @@ def test_no_link_frame_moves_further_than_the_step_bound(seed: int) -> None:
 def test_no_point_moves_further_than_the_vector_bound(seed: int) -> None:
     """The bound that adds the joints' motions as vectors, alone: ``V ds + G ds^2 / 2``
     (dropping ``G`` makes this fail)."""
-    world = tabletop_scene("pr2").world
-    scene = BulletScene(world, "pr2", JOINTS)
-    rng = np.random.default_rng(100 + seed)
-    bound = TravelBound.of(world, "pr2", JOINTS)
-    links = scene.lever_links()
-    radii = np.array([link_radii(world, "pr2").get(link, 0.0) for link in links])
-    directions = rng.normal(size=(64, 3))
-    directions /= np.linalg.norm(directions, axis=1)[:, None]
+    scene, rng, bound, links, radii, directions = _lever_case(100 + seed)
+    world = scene.world
     tight = 0.0
     with scene.posed():
         for _ in range(3):
@@ -148,3 +136,18 @@ def test_one_arm_sweeps_while_the_other_holds_something() -> None:
     assert bound.travel(qa, qb) > 1.0  # long enough for the local levers
     segment_free(scene, qa, qb, bound, CheckCounter())  # answers, whatever it answers
     world.close()
+
+
+def _lever_case(
+    seed: int,
+) -> tuple[BulletScene, np.random.Generator, TravelBound, tuple[str, ...], np.ndarray, np.ndarray]:
+    """A PR2 tabletop checker, a seeded generator, the travel bound, the moving links with
+    their radii and 64 unit directions to probe points on their balls."""
+    world = tabletop_scene("pr2").world
+    scene = BulletScene(world, "pr2", JOINTS)
+    rng = np.random.default_rng(seed)
+    links = scene.lever_links()
+    radii = np.array([link_radii(world, "pr2").get(link, 0.0) for link in links])
+    directions = rng.normal(size=(64, 3))
+    directions /= np.linalg.norm(directions, axis=1)[:, None]
+    return scene, rng, TravelBound.of(world, "pr2", JOINTS), links, radii, directions

@@ -124,19 +124,19 @@ class Task:
     @property
     def stop_requested(self) -> bool:
         """Whether this task or an ancestor has been asked to stop."""
-        task: Task | None = self
-        while task is not None:
-            if task._stop:
-                return True
-            task = task.parent
-        return False
+        return self._up_the_tree("_stop")
 
     @property
     def suspend_requested(self) -> bool:
         """Whether this task or an ancestor has been asked to suspend."""
+        return self._up_the_tree("_suspended")
+
+    def _up_the_tree(self, flag: str) -> bool:
+        """Whether ``flag`` is set on this task or an ancestor (a plain loop: a plan passes
+        hundreds of stop points)."""
         task: Task | None = self
         while task is not None:
-            if task._suspended:
+            if getattr(task, flag):
                 return True
             task = task.parent
         return False
