@@ -5,7 +5,8 @@ its parked right hand and the mug, so the straight joint-space move to the mug's
 pre-grasp sweeps the fingers through it. Lifted 0.3 m at both ends, the hand crosses over
 the box: the detour must be found, start and end where the motion does, lift the tool,
 and every configuration 1 cm of travel apart along it must be free as PyBullet judges it.
-A box too tall to cross is left to OMPL; a goal inside the box gets no detour.
+A box too tall to cross is left to OMPL; a goal inside the box gets no detour. A lift one
+joint leaves short (a torso near its top) is carried on by the next steepest joint.
 """
 
 from __future__ import annotations
@@ -160,3 +161,32 @@ def test_a_goal_inside_the_box_gets_no_detour(motion: tuple) -> None:
     assert hit is not None
     inside = np.array(start) + (np.array(end) - np.array(start)) * hit[0]
     assert detour_path(checker, start, inside, bound, limits, height) is None
+
+
+def test_a_lift_one_joint_leaves_short_is_carried_on_by_the_next(
+    stand: tuple[KitchenScene, PoseStamped],
+) -> None:
+    """The torso 0.1 m below its top: alone it lifts the tool 0.1 m, shared with the
+    next steepest joint the whole 0.3 m asked (within the tolerance), both in limits."""
+    scene, _ = stand
+    world = scene.world
+    torso = world.robot("pr2").description.torso_joint
+    assert torso is not None
+    joints = (torso, *JOINTS)
+    limits = joint_limits(world.robot("pr2").description, joints)
+    box = ([lim.lower for lim in limits], [lim.upper for lim in limits])
+    current = world.joint_states("pr2")
+    q = np.array([current[j] for j in joints])
+    q[0] = box[1][0] - 0.1
+    height = ToolHeight.of(world, "pr2", joints)
+    assert height is not None
+    here = height.height(q)
+    alone = height.raised(q, 0.3, box)
+    shared = height.raised(q, 0.3, box, joints=2)
+    assert alone is not None and shared is not None
+    assert height.height(alone) - here == pytest.approx(0.1, abs=1e-6)
+    assert np.flatnonzero(alone != q).tolist() == [0]
+    assert height.height(shared) - here == pytest.approx(0.3, abs=0.01)
+    moved = np.flatnonzero(shared != q).tolist()
+    assert len(moved) == 2 and moved[0] == 0 and shared[0] == pytest.approx(box[1][0])
+    assert all(box[0][i] <= shared[i] <= box[1][i] for i in moved)

@@ -28,7 +28,8 @@ from robocram.motion.segment_check import CheckCounter, segment_free
 from robocram.motion.travel_bound import TravelBound
 from robocram.world import World
 
-DETOUR_LIFTS = (0.3, 0.5)  # [m] tool lifts tried, in order
+DETOUR_LIFTS = (0.3, 0.5)  # [m] tool lifts tried, in order, each by one joint
+SHARED_LIFT = 0.5  # [m] then this lift, shared by the two steepest joints
 MIN_LIFT = 0.05  # [m] a joint that lifts the tool less than this makes no detour
 MAX_TURN = 1.0  # [rad | m] the most a lift changes its joint
 LIFT_STEPS = 4  # secant steps towards the lift
@@ -69,12 +70,41 @@ class ToolHeight:
         return float(data.oMf[self.frame].translation[2])
 
     def raised(
-        self, q: FloatArray, lift: float, limits: tuple[Sequence[float], Sequence[float]]
+        self,
+        q: FloatArray,
+        lift: float,
+        limits: tuple[Sequence[float], Sequence[float]],
+        joints: int = 1,
     ) -> FloatArray | None:
         """``q`` with the joint changed that lifts the tool most steeply: by ``lift`` [m],
         or as far as its limits and :data:`MAX_TURN` let it, if that is at least
-        :data:`MIN_LIFT`; None when no joint can."""
+        :data:`MIN_LIFT`; None when no joint can. With ``joints`` > 1, a lift one joint
+        leaves short is carried on by the next steepest (a torso at its top, then the
+        shoulder).
+        """
         here = self.height(q)
+        found = self._steepest(q, here, here + lift, limits, ())
+        if found is None:
+            return None
+        moved, used = found[0], [found[1]]
+        while len(used) < joints and here + lift - self.height(moved) > LIFT_TOLERANCE:
+            more = self._steepest(moved, self.height(moved), here + lift, limits, used)
+            if more is None:
+                break
+            moved = more[0]
+            used.append(more[1])
+        return moved
+
+    def _steepest(
+        self,
+        q: FloatArray,
+        here: float,
+        target: float,
+        limits: tuple[Sequence[float], Sequence[float]],
+        used: Sequence[int],
+    ) -> tuple[FloatArray, int] | None:
+        """``q`` lifted towards ``target`` [m] by the steepest joint not ``used`` that
+        lifts the tool at least :data:`MIN_LIFT` above ``here`` (its height at ``q``)."""
         slopes = []  # [m] per unit of each joint
         for i in range(len(q)):
             probe = q.copy()
@@ -83,9 +113,11 @@ class ToolHeight:
         for i in sorted(range(len(q)), key=lambda i: -abs(slopes[i])):
             if abs(slopes[i]) < 1e-6:
                 break
-            raised = self._lifted(q, i, here + lift, slopes[i], limits)
+            if i in used:
+                continue
+            raised = self._lifted(q, i, target, slopes[i], limits)
             if self.height(raised) - here >= MIN_LIFT:
-                return raised
+                return raised, i
         return None
 
     def _lifted(
@@ -123,21 +155,30 @@ def detour_path(
     limits: tuple[Sequence[float], Sequence[float]],
     height: ToolHeight,
     lifts: Sequence[float] = DETOUR_LIFTS,
+    shared_lift: float | None = SHARED_LIFT,
 ) -> JointPath | None:
     """A free path start, start lifted, goal lifted, goal; None if there is none (or an
     end collides).
 
     ``limits`` are the joints' (lower, upper) bounds; the first lift of ``lifts`` [m]
-    whose path is free is taken.
+    whose path is free is taken, each made by one joint; then ``shared_lift`` (None: not
+    tried), made by two joints where one is not enough: an arm that must turn its upper
+    arm over (a put-down reached from the other elbow branch) sweeps the hand well below
+    the wrist, and a torso alone, at its top after a few centimetres, lifts it too little.
     """
     a, b = np.asarray(start, dtype=float), np.asarray(goal, dtype=float)
     counter = CheckCounter(checks=2)
     if not (checker.is_free(a) and checker.is_free(b)):
         return None
-    for lift in lifts:
-        up_a, up_b = height.raised(a, lift, limits), height.raised(b, lift, limits)
-        if up_a is None or up_b is None:
+    tries = [(lift, 1) for lift in lifts]
+    if shared_lift is not None:
+        tries.append((shared_lift, 2))
+    done: list[tuple[FloatArray, FloatArray]] = []
+    for lift, joints in tries:
+        up_a, up_b = height.raised(a, lift, limits, joints), height.raised(b, lift, limits, joints)
+        if up_a is None or up_b is None or _tried(done, up_a, up_b):
             continue
+        done.append((up_a, up_b))
         points = [a, up_a, up_b, b]
         counter.checks += 2
         if not (checker.is_free(up_a) and checker.is_free(up_b)):
@@ -147,3 +188,9 @@ def detour_path(
             waypoints = tuple(tuple(map(float, p)) for p in points)
             return JointPath(checker.joints, waypoints, "detour", counter.checks)
     return None
+
+
+def _tried(done: list[tuple[FloatArray, FloatArray]], up_a: FloatArray, up_b: FloatArray) -> bool:
+    """Whether these lifted ends were checked already (a joint at its limit lifts the same
+    for every lift asked)."""
+    return any(np.array_equal(a, up_a) and np.array_equal(b, up_b) for a, b in done)
