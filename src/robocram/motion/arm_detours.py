@@ -5,7 +5,9 @@ fingers sweep through the object they are about to grasp, a held mug is dragged 
 the table it is put on, the forearm scrapes the table when the arm parks after placing.
 Lifting the tool at the start, crossing at that height and lowering it at the goal clears
 such obstacles. Each lift is made by one joint, the one that raises the tool most within
-its limits (a shoulder, or the torso), linearised at that configuration. Every segment is
+its limits (a shoulder, or the torso), linearised at that configuration; a last try shares
+a higher lift between the two steepest joints, for an arm that turns its upper arm over
+on the way (its hand sweeps far below the wrist). Every segment is
 checked on the world like a straight motion, so a detour costs a few dozen checks where
 planning costs a snapshot and thousands; one that fails leaves the planner to it. Nothing
 is random: the same motion always gets the same detour.
