@@ -35,9 +35,9 @@ PLACE_GAP = 0.005  # [m] the object is let go this far above its target (a locat
 CARRY_HEIGHTS = (0.10, 0.05)  # [m] the object comes in from this far above, first that works
 RETREATS = (0.10, 0.05)  # [m] the open hand backs off this far towards the wrist, or less
 SETTLE = 0.15  # [s] simulated at most after letting go: the 7 mm drop takes 0.04 s
-SETTLE_STEP = 1.0 / 60.0  # [s] simulated between two looks at the object (4 steps at 240 Hz)
-AT_REST = 0.0004  # [m] an object moving less than this over one look's step rests (2.4 cm/s)
-AT_REST_TURN = 0.008  # [rad] ... and turning less than this (0.5 rad/s: a mug rocks a little)
+SETTLE_STEP = 1.0 / 120.0  # [s] simulated between two looks at the object (2 steps at 240 Hz)
+AT_REST = 0.0002  # [m] an object moving less than this over one look's step rests (2.4 cm/s)
+AT_REST_TURN = 0.004  # [rad] ... and turning less than this (0.5 rad/s: a mug rocks a little)
 MAX_SETTLE_DROP = 0.03  # [m] it may sink this much (the gap, contact) and still rest
 TURNS = (0.0, math.pi / 2, -math.pi / 2, math.pi)  # [rad] object turns tried in order
 
@@ -113,9 +113,10 @@ def _settled(name: str, put: Pose, seconds: float) -> str | None:
     The world is simulated in steps of :data:`SETTLE_STEP` until the object stops moving
     (it moved less than :data:`AT_REST` and turned less than :data:`AT_REST_TURN` over the
     last step) or ``seconds`` have passed. An object let go 7 mm above its support lands
-    within the third step and rests by the fourth, 16 physics steps of the 36 in
-    :data:`SETTLE`: the shorter the drop, the sooner it rests, so the location's pose
-    lies on the object's true bottom (not its Bullet bounds, a few mm lower).
+    within the fifth step and rests by the sixth or seventh, 12 to 14 physics steps of the
+    36 in :data:`SETTLE` (looked at every 4 steps, it took 16: a look costs far less than
+    a step): the shorter the drop, the sooner it rests, so the location's pose lies on the
+    object's true bottom (not its Bullet bounds, a few mm lower).
     """
     if seconds <= 0.0:
         return None
