@@ -20,6 +20,7 @@ from robocram.motion.height_bins import HeightBins
 
 Box = tuple[tuple[float, float, float], tuple[float, float, float]]  # (lower, upper) [m]
 IntArray = npt.NDArray[np.int64]
+LOOKUPS_PER_BLOCK = 16_000  # cells looked up at once: the temporaries stay in the cache
 
 
 @dataclass(frozen=True)
@@ -82,17 +83,35 @@ class ObstacleGrid:
             y = poses[:, 1:2] + sin * points[:, 0] + cos * points[:, 1]
             cells = np.take(self.masks.ravel(), self.flat_indices(x, y))
             return np.asarray(np.any(cells & masks, axis=1))
+        block = max(1, LOOKUPS_PER_BLOCK // max(len(points), 1))
+        if len(poses) <= block:
+            return self._hits_on_grid(poses, points, masks)
+        return np.concatenate([
+            self._hits_on_grid(poses[k : k + block], points, masks)
+            for k in range(0, len(poses), block)
+        ])  # fmt: skip
+
+    def _hits_on_grid(
+        self, poses: npt.NDArray[np.float64], points: npt.NDArray[np.float64], masks: IntArray
+    ) -> npt.NDArray[np.bool_]:
+        """:meth:`hits` of points known to fall on the grid: the cells' rows and columns
+        come from one product of the poses' rotations (in cell units) with the points."""
         per_cell = 1.0 / self.cell
-        cos, sin = np.cos(poses[:, 2:3]) * per_cell, np.sin(poses[:, 2:3]) * per_cell
-        px, py = points[:, 0], points[:, 1]
-        i = (poses[:, 0:1] - self.origin[0]) * per_cell + (cos * px - sin * py)
-        j = (poses[:, 1:2] - self.origin[1]) * per_cell + (sin * px + cos * py)
-        flat = i.astype(np.intp)
+        count = len(poses)
+        cos, sin = np.cos(poses[:, 2]) * per_cell, np.sin(poses[:, 2]) * per_cell
+        rotations = np.empty((2 * count, 2))
+        rotations[:count, 0], rotations[:count, 1] = cos, -sin
+        rotations[count:, 0], rotations[count:, 1] = sin, cos
+        ij = rotations @ points.T  # rows: i of every pose, then j of every pose
+        ij[:count] += ((poses[:, 0] - self.origin[0]) * per_cell)[:, None]
+        ij[count:] += ((poses[:, 1] - self.origin[1]) * per_cell)[:, None]
+        cells = ij.astype(np.intp)
+        flat = cells[:count]
         flat *= self.masks.shape[1]
-        flat += j.astype(np.intp)
-        cells = np.take(self.masks.ravel(), flat, mode="clip")
-        cells &= masks
-        return np.asarray(cells.any(axis=1))
+        flat += cells[count:]
+        found = np.take(self.masks.ravel(), flat, mode="clip")
+        found &= masks
+        return np.asarray(found.any(axis=1))
 
     def flat_indices(
         self, x: npt.NDArray[np.float64], y: npt.NDArray[np.float64]
