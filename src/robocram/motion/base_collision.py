@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from robocram.motion.cleared_poses import ClearedPoses
 from robocram.motion.height_bins import HeightBins
 from robocram.motion.obstacle_grid import Box, ObstacleGrid
 from robocram.motion.robot_footprint import FloatArray, RobotFootprint
@@ -62,6 +63,7 @@ class BaseCollisionChecker:
     covered: tuple[tuple[float, float], tuple[float, float]] = ((0.0, 0.0), (0.0, 0.0))
     _obstacles: ObstacleBoxes | None = field(default=None, repr=False)  # read once
     _bins: HeightBins | None = field(default=None, repr=False)
+    _cleared_poses: ClearedPoses | None = field(default=None, repr=False)  # exact answers
 
     @classmethod
     def build(
@@ -191,6 +193,16 @@ class BaseCollisionChecker:
         )
         if not near:
             return None
+        if self._cleared_poses is None:
+            self._cleared_poses = ClearedPoses(self.footprint.reach)
+        known, gap = self._cleared_poses.known(pose)
+        if not known:
+            gap = self._measured_gap(pose)
+            self._cleared_poses.add(pose, gap)
+        return gap
+
+    def _measured_gap(self, pose: FloatArray) -> float | None:
+        """:meth:`_exact_gap` by the exact check itself."""
         self.exact_checks += 1
         self._place(pose)
         start = np.array([*self.start.position[:2], yaw_of(self.start)])
