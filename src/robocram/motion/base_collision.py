@@ -278,7 +278,7 @@ def _grid(
         (obstacles.low[:, 0] <= upper[0]) & (obstacles.high[:, 0] >= lower[0])
         & (obstacles.low[:, 1] <= upper[1]) & (obstacles.high[:, 1] >= lower[1])
     )  # fmt: skip
-    boxes: list[Box] = [(tuple(obstacles.low[k]), tuple(obstacles.high[k])) for k in inside]
+    boxes = np.stack([obstacles.low[inside], obstacles.high[inside]], axis=1)
     return ObstacleGrid.build(boxes, lower, upper, CELL, footprint.dilation, bins)
 
 

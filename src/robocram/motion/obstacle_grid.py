@@ -34,35 +34,39 @@ class ObstacleGrid:
     @classmethod
     def build(
         cls,
-        boxes: Sequence[Box],
+        boxes: Sequence[Box] | npt.NDArray[np.float64],
         lower: tuple[float, float],
         upper: tuple[float, float],
         cell: float,
         dilation: float,
         bins: HeightBins,
     ) -> ObstacleGrid:
-        """Rasterise ``boxes`` grown by ``dilation`` [m] over the area ``lower``..``upper``."""
+        """Rasterise ``boxes`` (or their (n, 2, 3) table) grown by ``dilation`` [m] over the
+        area ``lower``..``upper``."""
         shape = (
             int(math.ceil((upper[0] - lower[0]) / cell)) + 1,
             int(math.ceil((upper[1] - lower[1]) / cell)) + 1,
         )
         masks = np.zeros(shape, dtype=np.int64)
-        for low, high in boxes:
-            bits = bins.mask(low[2], high[2])
-            if not bits:
-                continue
-            i0, j0 = cls._index(low[0] - dilation, low[1] - dilation, lower, cell, shape)
-            i1, j1 = cls._index(high[0] + dilation, high[1] + dilation, lower, cell, shape)
-            masks[i0 : i1 + 1, j0 : j1 + 1] |= bits
+        table = np.asarray(boxes, dtype=float).reshape(-1, 2, 3)
+        first = cls._indices(table[:, 0, :2] - dilation, lower, cell, shape)
+        last = cls._indices(table[:, 1, :2] + dilation, lower, cell, shape)
+        for k, (i0, j0), (i1, j1) in zip(range(len(table)), first, last, strict=True):
+            bits = bins.mask(table[k, 0, 2], table[k, 1, 2])
+            if bits:
+                masks[i0 : i1 + 1, j0 : j1 + 1] |= bits
         return cls(lower, cell, masks)
 
     @staticmethod
-    def _index(
-        x: float, y: float, lower: tuple[float, float], cell: float, shape: tuple[int, int]
-    ) -> tuple[int, int]:
-        i = min(max(math.floor((x - lower[0]) / cell), 0), shape[0] - 1)
-        j = min(max(math.floor((y - lower[1]) / cell), 0), shape[1] - 1)
-        return i, j
+    def _indices(
+        xy: npt.NDArray[np.float64], lower: tuple[float, float], cell: float,
+        shape: tuple[int, int],
+    ) -> list[list[int]]:  # fmt: skip
+        """:meth:`_index` of every row of ``xy`` (n, 2) [m]."""
+        i = np.clip(np.floor((xy[:, 0] - lower[0]) / cell), 0, shape[0] - 1)
+        j = np.clip(np.floor((xy[:, 1] - lower[1]) / cell), 0, shape[1] - 1)
+        found: list[list[int]] = np.stack([i, j], axis=1).astype(np.intp).tolist()
+        return found
 
     def hits(
         self,
