@@ -22,6 +22,7 @@ import numpy as np
 
 from robocram.motion.cleared_poses import ClearedPoses
 from robocram.motion.height_bins import HeightBins
+from robocram.motion.kept_grids import kept_grids
 from robocram.motion.obstacle_grid import Box, ObstacleGrid
 from robocram.motion.robot_footprint import FloatArray, RobotFootprint
 from robocram.tf import Pose
@@ -38,6 +39,8 @@ CONFIRM_NEAR = 0.3  # [m] travel from the start or goal within which exact check
 GAP_QUERY = 0.05  # [m] how far an exact check looks for the gap that lets it skip poses
 FOOTPRINTS_KEPT = 8  # robot postures whose footprints a world keeps
 LOCAL_MARGIN = 0.6  # [m] the first grid covers the start's and goal's box grown by this
+TOP_STEP = 0.1  # [m] height bins reach the robot's top rounded up to this: postures whose
+# tops differ a little (the torso IK raised) share bins, so the world's kept grids serve them
 
 
 @dataclass
@@ -100,7 +103,7 @@ class BaseCollisionChecker:
             (max(near[0][0], bounds[0][0]), max(near[0][1], bounds[0][1])),
             (min(near[1][0], bounds[1][0]), min(near[1][1], bounds[1][1])),
         )
-        grid = _grid(obstacles, covered, footprint, bins)
+        grid = _grid(world, obstacles, covered, footprint, bins)
         checker = cls(world, robot, start, carried, footprint, grid, bounds)
         checker.allowed_links = allowed_links
         checker.covered = covered
@@ -137,7 +140,7 @@ class BaseCollisionChecker:
     def _widen(self) -> None:
         """Rasterise the whole world: a pose left the box round the start and goal."""
         assert self._obstacles is not None and self._bins is not None  # set by build
-        self.grid = _grid(self._obstacles, self.bounds, self.footprint, self._bins)
+        self.grid = _grid(self.world, self._obstacles, self.bounds, self.footprint, self._bins)
         self.covered = self.bounds
 
     def pose_free(self, pose: FloatArray) -> bool:
@@ -259,27 +262,24 @@ class BaseCollisionChecker:
 
 
 def _grid(
+    world: World,
     obstacles: ObstacleBoxes,
     area: tuple[tuple[float, float], tuple[float, float]],
     footprint: RobotFootprint,
     bins: HeightBins,
 ) -> ObstacleGrid:
     """The obstacle grid over ``area`` (base positions [m]) grown by the robot's reach:
-    only the boxes that reach into it are rasterised. Its corner lies on the lattice of
-    :data:`CELL` through the map's origin, so a local grid and the whole world's share
-    their cells."""
+    only the boxes that reach into it are rasterised (the furniture's kept by the world,
+    :mod:`~robocram.motion.kept_grids`). Its corner lies on the lattice of :data:`CELL`
+    through the map's origin, so a local grid and the whole world's share their cells."""
     pad = footprint.reach + footprint.dilation + 2 * CELL
     lower = (
         math.floor((area[0][0] - pad) / CELL) * CELL,
         math.floor((area[0][1] - pad) / CELL) * CELL,
     )
     upper = (area[1][0] + pad, area[1][1] + pad)
-    inside = np.flatnonzero(
-        (obstacles.low[:, 0] <= upper[0]) & (obstacles.high[:, 0] >= lower[0])
-        & (obstacles.low[:, 1] <= upper[1]) & (obstacles.high[:, 1] >= lower[1])
-    )  # fmt: skip
-    boxes = np.stack([obstacles.low[inside], obstacles.high[inside]], axis=1)
-    return ObstacleGrid.build(boxes, lower, upper, CELL, footprint.dilation, bins)
+    kept = world.derived(kept_grids)
+    return kept.window(obstacles, lower, upper, CELL, footprint.dilation, bins)
 
 
 def _contacts_now(
@@ -338,7 +338,8 @@ def _footprint(
     found = kept.pop(key, None)
     if found is None:
         boxes = _boxes_in_base(world, robot, carried, start)
-        bins = HeightBins.up_to(base_z + max(b[1][2] for b in boxes) + CONTACT)
+        top = base_z + max(b[1][2] for b in boxes) + CONTACT
+        bins = HeightBins.up_to(math.ceil(top / TOP_STEP) * TOP_STEP)  # shared by postures
         found = (bins, RobotFootprint.build(boxes, base_z, bins, SPACING, CONTACT))
     kept[key] = found  # most recent last
     while len(kept) > FOOTPRINTS_KEPT:
