@@ -68,9 +68,10 @@ class KeptGrids:
         dilation: float,
         bins: HeightBins,
     ) -> ObstacleGrid:
-        """The grid :meth:`ObstacleGrid.build` makes of ``obstacles`` over ``lower``..
-        ``upper`` (``lower`` on the lattice of ``cell``), from the kept furniture's grid
-        and the boxes of the bodies that may move."""
+        """The grid of ``obstacles`` over ``lower``..``upper`` (``lower`` on the lattice
+        of ``cell``), from the kept furniture's grid and the boxes of the bodies that may
+        move: every box that, grown, reaches into it is marked as :meth:`ObstacleGrid.build`
+        marks it (a box beyond the window marks no border cell it does not reach)."""
         static = np.array([o.is_static for o in obstacles.objects], dtype=bool)
         furniture = self._furniture_of(obstacles, static)
         key = (bins.height, dilation, cell)
@@ -88,10 +89,9 @@ class KeptGrids:
             self._grids.pop(next(iter(self._grids)))
         if grid is None:  # beyond even the whole world's grid
             return ObstacleGrid.build(_table(obstacles), lower, upper, cell, dilation, bins)
-        reaching = (
-            (obstacles.low[:, 0] <= upper[0]) & (obstacles.high[:, 0] >= lower[0])
-            & (obstacles.low[:, 1] <= upper[1]) & (obstacles.high[:, 1] >= lower[1])
-        )  # fmt: skip
+        start = np.array(lower) - dilation
+        end = start + np.array(grid.masks.shape) * cell + 2 * dilation
+        reaching = ((obstacles.low[:, :2] <= end) & (obstacles.high[:, :2] >= start)).all(axis=1)
         grid.add(_table(obstacles, np.flatnonzero(reaching & ~static)), dilation, bins)
         return grid
 
