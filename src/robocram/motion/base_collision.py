@@ -38,7 +38,7 @@ ESCAPE = 0.1  # [m] travel from the start during which its contacts are tolerate
 CONFIRM_NEAR = 0.3  # [m] travel from the start or goal within which exact checks decide
 GAP_QUERY = 0.05  # [m] how far an exact check looks for the gap that lets it skip poses
 LOCAL_MARGIN = 0.6  # [m] the first grid covers the start's and goal's box grown by this
-WIDE = 0.05  # [m] a pose free on the wide grid frees the poses that move no point farther
+WIDE = 0.1  # [m] a pose free on the wide grid frees the poses that move no point farther
 
 
 @dataclass
