@@ -19,26 +19,25 @@ from collections.abc import Iterator
 from dataclasses import dataclass, field
 
 import numpy as np
-import numpy.typing as npt
 
 from robocram.motion.cleared_poses import ClearedPoses
 from robocram.motion.height_bins import HeightBins
-from robocram.motion.kept_grids import kept_grids
-from robocram.motion.obstacle_grid import ObstacleGrid
+from robocram.motion.obstacle_grid import Box, ObstacleGrid
 from robocram.motion.robot_footprint import FloatArray, RobotFootprint
-from robocram.motion.standing_footprint import CONTACT, standing_footprint
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
 from robocram.world import ObstacleBoxes, World
 
 CELL = 0.01  # [m] obstacle grid cells
+SPACING = 0.02  # [m] robot sample squares: more than the 1 cm a dense check moves
+CONTACT = 0.002  # [m] nearer than this counts as touching, as in World.collisions
 CHUNK = 128  # poses per batch of fast checks along a motion
 MARGIN = 0.5  # [m] room around the obstacles, start and goal for going around
 ESCAPE = 0.1  # [m] travel from the start during which its contacts are tolerated
 CONFIRM_NEAR = 0.3  # [m] travel from the start or goal within which exact checks decide
 GAP_QUERY = 0.05  # [m] how far an exact check looks for the gap that lets it skip poses
+FOOTPRINTS_KEPT = 8  # robot postures whose footprints a world keeps
 LOCAL_MARGIN = 0.6  # [m] the first grid covers the start's and goal's box grown by this
-WIDE = 0.1  # [m] a pose free on the wide grid frees the poses that move no point farther
 
 
 @dataclass
@@ -64,7 +63,6 @@ class BaseCollisionChecker:
     covered: tuple[tuple[float, float], tuple[float, float]] = ((0.0, 0.0), (0.0, 0.0))
     _obstacles: ObstacleBoxes | None = field(default=None, repr=False)  # read once
     _bins: HeightBins | None = field(default=None, repr=False)
-    _wide: ObstacleGrid | None = field(default=None, repr=False)  # of _surely_free, lazily
     _cleared_poses: ClearedPoses | None = field(default=None, repr=False)  # exact answers
 
     @classmethod
@@ -84,7 +82,7 @@ class BaseCollisionChecker:
         """
         start = world.pose(robot)
         carried = _carried(world, robot)
-        bins, footprint = standing_footprint(world, robot, carried, start)
+        bins, footprint = _footprint(world, robot, carried, start)
         skip = {robot, *carried} | {o.name for o in world.objects("floor")}
         obstacles = world.obstacle_boxes(skip)
         ends = np.array([start.position[:2], goal_xy], dtype=float)
@@ -102,7 +100,7 @@ class BaseCollisionChecker:
             (max(near[0][0], bounds[0][0]), max(near[0][1], bounds[0][1])),
             (min(near[1][0], bounds[1][0]), min(near[1][1], bounds[1][1])),
         )
-        grid = _grid(world, obstacles, covered, footprint, bins)
+        grid = _grid(obstacles, covered, footprint, bins)
         checker = cls(world, robot, start, carried, footprint, grid, bounds)
         checker.allowed_links = allowed_links
         checker.covered = covered
@@ -120,53 +118,14 @@ class BaseCollisionChecker:
     def fast_hits(self, poses: FloatArray, boundary: bool) -> np.ndarray:
         """Per pose, whether the fast check finds a possible collision."""
         self.fast_checks += len(poses)
-        return self._lookup(poses, boundary)
-
-    def _lookup(self, poses: FloatArray, boundary: bool) -> np.ndarray:
-        """:meth:`fast_hits`, not counted."""
-        inside = self._on_grid(poses)
-        fp = self.footprint
-        points = fp.boundary_points if boundary else fp.points
-        masks = fp.boundary_masks if boundary else fp.masks
-        return self.grid.hits(poses, points, masks, inside)
-
-    def _on_grid(self, poses: FloatArray) -> bool:
-        """Whether the grid holds ``poses``, after widening it to the world if they leave
-        it (False: some lie beyond even that, the lookups clip)."""
         inside = self._covers(poses)
         if not inside and self.covered != self.bounds:
             self._widen()
             inside = self._covers(poses)
-        return inside
-
-    def _stride(self, poses: FloatArray) -> int:
-        """How many poses either side of one the wide grid frees with it: as many as move
-        no point of the robot farther than :data:`WIDE` (0: the steps are too long)."""
-        if len(poses) < 2:
-            return 0
-        step = np.diff(poses, axis=0)
-        turn = np.abs((step[:, 2] + np.pi) % (2.0 * np.pi) - np.pi)
-        longest = float(np.max(np.hypot(step[:, 0], step[:, 1]) + self.footprint.reach * turn))
-        return len(poses) if longest <= 0.0 else int(WIDE / longest)
-
-    def _surely_free(self, poses: FloatArray, stride: int) -> npt.NDArray[np.bool_]:
-        """Per pose, whether it is free by the wide grid, whose boxes are grown by
-        :data:`WIDE` more (and a cell): every point of the robot free there at one pose
-        is free on the fine grid at every pose within ``stride`` of it (their points are
-        at most :data:`WIDE` apart). Every ``2 * stride + 1``-th pose is looked up."""
-        if stride < 1:
-            return np.zeros(len(poses), dtype=bool)
-        period = 2 * stride + 1
-        centres = np.minimum(np.arange(stride, len(poses) + stride, period), len(poses) - 1)
-        inside = self._on_grid(poses[centres])
-        if self._wide is None:
-            assert self._obstacles is not None and self._bins is not None  # set by build
-            self._wide = _grid(
-                self.world, self._obstacles, self.covered, self.footprint, self._bins, WIDE
-            )
         fp = self.footprint
-        hit = self._wide.hits(poses[centres], fp.points, fp.masks, inside)
-        return np.repeat(~hit, period)[: len(poses)]
+        points = fp.boundary_points if boundary else fp.points
+        masks = fp.boundary_masks if boundary else fp.masks
+        return self.grid.hits(poses, points, masks, inside)
 
     def _covers(self, poses: FloatArray) -> bool:
         """Whether the grid holds every base position of ``poses`` (its cells reach past
@@ -178,9 +137,8 @@ class BaseCollisionChecker:
     def _widen(self) -> None:
         """Rasterise the whole world: a pose left the box round the start and goal."""
         assert self._obstacles is not None and self._bins is not None  # set by build
-        self.grid = _grid(self.world, self._obstacles, self.bounds, self.footprint, self._bins)
+        self.grid = _grid(self._obstacles, self.bounds, self.footprint, self._bins)
         self.covered = self.bounds
-        self._wide = None
 
     def pose_free(self, pose: FloatArray) -> bool:
         """Whether the robot is free at ``pose`` (fast, then exact where it may collide)."""
@@ -194,38 +152,18 @@ class BaseCollisionChecker:
         The first pose and every pose after one the exact check had to clear get the full
         fast check; the others only the boundary's. A pose the exact check clears also
         says how far the robot is from everything there: the poses after it that move no
-        point of the robot farther than that are free without a check. Poses the wide grid
-        frees (:meth:`_surely_free`) are free without either lookup; they are counted as
-        the lookups they spare, so a budget of fast checks means what it meant.
+        point of the robot farther than that are free without a check.
         """
         full_next = True
         cleared: tuple[FloatArray, float] | None = None  # (pose, gap [m]) of the last exact
-        stride = self._stride(poses)
         for begin in range(0, len(poses), CHUNK):
             chunk = poses[begin : begin + CHUNK]
-            free = self._surely_free(chunk, stride)
-            self.fast_checks += len(chunk)
-            edge = np.zeros(len(chunk), dtype=bool)
-            ask = np.flatnonzero(~free)
-            if ask.size:
-                edge[ask] = self._lookup(chunk[ask], boundary=True)
-            k = -1
-            while k + 1 < len(chunk):
-                k += 1
-                if not full_next and cleared is None:  # on to the next boundary hit
-                    ahead = np.flatnonzero(edge[k:])
-                    if not ahead.size:
-                        break
-                    k += int(ahead[0])
-                pose = chunk[k]
+            edge = self.fast_hits(chunk, boundary=True)
+            for k, pose in enumerate(chunk):
                 if cleared is not None and self._travel(cleared[0], pose) < cleared[1]:
                     continue  # within the cleared pose's gap; the next checked one is full
                 cleared = None
-                if full_next:
-                    self.fast_checks += 1
-                    hit = not free[k] and bool(self._lookup(pose[None, :], boundary=False)[0])
-                else:
-                    hit = bool(edge[k])
+                hit = self.fast_hits(pose[None, :], boundary=False)[0] if full_next else edge[k]
                 full_next = False
                 if hit:
                     gap = self._exact_gap(pose)
@@ -321,28 +259,27 @@ class BaseCollisionChecker:
 
 
 def _grid(
-    world: World,
     obstacles: ObstacleBoxes,
     area: tuple[tuple[float, float], tuple[float, float]],
     footprint: RobotFootprint,
     bins: HeightBins,
-    wider: float = 0.0,
 ) -> ObstacleGrid:
     """The obstacle grid over ``area`` (base positions [m]) grown by the robot's reach:
-    only the boxes that reach into it are rasterised (the furniture's kept by the world,
-    :mod:`~robocram.motion.kept_grids`). Its corner lies on the lattice of :data:`CELL`
-    through the map's origin, so a local grid and the whole world's share their cells.
-    ``wider`` [m] > 0: the wide grid, its boxes grown by that and a cell more (the cell a
-    point may lie across from the box it hits)."""
+    only the boxes that reach into it are rasterised. Its corner lies on the lattice of
+    :data:`CELL` through the map's origin, so a local grid and the whole world's share
+    their cells."""
     pad = footprint.reach + footprint.dilation + 2 * CELL
     lower = (
         math.floor((area[0][0] - pad) / CELL) * CELL,
         math.floor((area[0][1] - pad) / CELL) * CELL,
     )
     upper = (area[1][0] + pad, area[1][1] + pad)
-    dilation = footprint.dilation + (wider + CELL if wider > 0.0 else 0.0)
-    kept = world.derived(kept_grids)
-    return kept.window(obstacles, lower, upper, CELL, dilation, bins)
+    inside = np.flatnonzero(
+        (obstacles.low[:, 0] <= upper[0]) & (obstacles.high[:, 0] >= lower[0])
+        & (obstacles.low[:, 1] <= upper[1]) & (obstacles.high[:, 1] >= lower[1])
+    )  # fmt: skip
+    boxes = np.stack([obstacles.low[inside], obstacles.high[inside]], axis=1)
+    return ObstacleGrid.build(boxes, lower, upper, CELL, footprint.dilation, bins)
 
 
 def _contacts_now(
@@ -383,6 +320,42 @@ def blockers_at(
         world.set_pose(robot, start)
 
 
+def _footprint(
+    world: World, robot: str, carried: tuple[str, ...], start: Pose
+) -> tuple[HeightBins, RobotFootprint]:
+    """The height bins and footprint of the robot as it stands, kept with the world for
+    the last few postures: a robot drives in few postures (arms parked, or carrying), so
+    most drives find theirs. The key is everything the footprint depends on: the joints,
+    the height of the base and where each carried object is in the base frame."""
+    base_z = start.position[2]
+    key = (
+        robot,
+        tuple(world.joint_states(robot).items()),
+        base_z,
+        tuple((name, _in_base(start, world.pose(name))) for name in carried),
+    )
+    kept = world.derived(_kept_footprints)
+    found = kept.pop(key, None)
+    if found is None:
+        boxes = _boxes_in_base(world, robot, carried, start)
+        bins = HeightBins.up_to(base_z + max(b[1][2] for b in boxes) + CONTACT)
+        found = (bins, RobotFootprint.build(boxes, base_z, bins, SPACING, CONTACT))
+    kept[key] = found  # most recent last
+    while len(kept) > FOOTPRINTS_KEPT:
+        kept.pop(next(iter(kept)))
+    return found
+
+
+def _in_base(base: Pose, pose: Pose) -> tuple[float, ...]:
+    relative = base.inverse() * pose
+    return (*relative.position, *relative.orientation)
+
+
+def _kept_footprints(world: World) -> dict[tuple[object, ...], tuple[HeightBins, RobotFootprint]]:
+    """The footprints a world keeps (the key under which :meth:`World.derived` keeps them)."""
+    return {}
+
+
 def _carried(world: World, robot: str) -> tuple[str, ...]:
     """Objects the robot holds, and what they hold, recursively."""
     found: list[str] = []
@@ -392,6 +365,18 @@ def _carried(world: World, robot: str) -> tuple[str, ...]:
         found += held
         frontier += held
     return tuple(found)
+
+
+def _boxes_in_base(world: World, robot: str, carried: tuple[str, ...], start: Pose) -> list[Box]:
+    """Every link box of the robot and what it holds, in the base frame (robot at yaw 0)."""
+    x, y, z = start.position
+    world.set_pose(robot, Pose((x, y, z)))
+    try:
+        found = [box for body in (robot, *carried) for box in world.link_aabbs(body).values()]
+    finally:
+        world.set_pose(robot, start)
+    return [((lo[0] - x, lo[1] - y, lo[2] - z), (hi[0] - x, hi[1] - y, hi[2] - z))
+            for lo, hi in found]  # fmt: skip
 
 
 def yaw_of(pose: Pose) -> float:

@@ -43,47 +43,19 @@ class ObstacleGrid:
     ) -> ObstacleGrid:
         """Rasterise ``boxes`` (or their (n, 2, 3) table) grown by ``dilation`` [m] over the
         area ``lower``..``upper``."""
-        grid = cls(lower, cell, np.zeros(cls._shape(lower, upper, cell), dtype=np.int64))
-        grid.add(boxes, dilation, bins)
-        return grid
-
-    @staticmethod
-    def _shape(lower: tuple[float, float], upper: tuple[float, float], cell: float) -> tuple[
-        int, int
-    ]:  # fmt: skip
-        return (
+        shape = (
             int(math.ceil((upper[0] - lower[0]) / cell)) + 1,
             int(math.ceil((upper[1] - lower[1]) / cell)) + 1,
         )
-
-    def add(
-        self, boxes: Sequence[Box] | npt.NDArray[np.float64], dilation: float, bins: HeightBins
-    ) -> None:
-        """Mark ``boxes`` grown by ``dilation`` [m] too (a grid being made); a box reaching
-        beyond the grid marks its border."""
-        shape = (int(self.masks.shape[0]), int(self.masks.shape[1]))
+        masks = np.zeros(shape, dtype=np.int64)
         table = np.asarray(boxes, dtype=float).reshape(-1, 2, 3)
-        first = self._indices(table[:, 0, :2] - dilation, self.origin, self.cell, shape)
-        last = self._indices(table[:, 1, :2] + dilation, self.origin, self.cell, shape)
+        first = cls._indices(table[:, 0, :2] - dilation, lower, cell, shape)
+        last = cls._indices(table[:, 1, :2] + dilation, lower, cell, shape)
         for k, (i0, j0), (i1, j1) in zip(range(len(table)), first, last, strict=True):
             bits = bins.mask(table[k, 0, 2], table[k, 1, 2])
             if bits:
-                self.masks[i0 : i1 + 1, j0 : j1 + 1] |= bits
-
-    def window(self, lower: tuple[float, float], upper: tuple[float, float]) -> ObstacleGrid | None:
-        """A copy of the part of this grid over ``lower``..``upper`` as :meth:`build`
-        shapes it (``lower`` on this grid's lattice), or None if it reaches beyond."""
-        shape = self._shape(lower, upper, self.cell)
-        i = round((lower[0] - self.origin[0]) / self.cell)
-        j = round((lower[1] - self.origin[1]) / self.cell)
-        if (
-            i < 0
-            or j < 0
-            or i + shape[0] > self.masks.shape[0]
-            or j + shape[1] > self.masks.shape[1]
-        ):
-            return None
-        return ObstacleGrid(lower, self.cell, self.masks[i : i + shape[0], j : j + shape[1]].copy())
+                masks[i0 : i1 + 1, j0 : j1 + 1] |= bits
+        return cls(lower, cell, masks)
 
     @staticmethod
     def _indices(
