@@ -35,7 +35,7 @@ CHUNK = 128  # poses per batch of fast checks along a motion
 MARGIN = 0.5  # [m] room around the obstacles, start and goal for going around
 ESCAPE = 0.1  # [m] travel from the start during which its contacts are tolerated
 CONFIRM_NEAR = 0.3  # [m] travel from the start or goal within which exact checks decide
-GAP_QUERY = 0.05  # [m] how far an exact check looks for the gap that lets it skip poses
+GAP_QUERY = 0.1  # [m] how far an exact check looks for the gap that lets it skip poses
 FOOTPRINTS_KEPT = 8  # robot postures whose footprints a world keeps
 LOCAL_MARGIN = 0.6  # [m] the first grid covers the start's and goal's box grown by this
 
