@@ -117,8 +117,8 @@ class _BodyBoxes:
 class KeptObstacleBoxes:
     """Obstacle bounds kept with a world: a body's are read again only when its state
     (:meth:`WorldCore.body_state`: body id, base pose, joints) changed, two backend calls
-    to ask instead of one per link. Motion checks, IK collision checks and base drives ask
-    for them many times per plan while only the robot and what it holds move."""
+    to ask instead of one per link. Arm motion checks and base drives ask for them many
+    times per plan while only the robot and what it holds move."""
 
     _bodies: dict[str, _BodyBoxes] = field(default_factory=dict)
     _last: ObstacleBoxes | None = None  # the table last asked for, of these rows
