@@ -76,6 +76,20 @@ def test_a_gap_skips_exact_checks_near_furniture(kitchen: World) -> None:
         assert flagged == len(poses) and exact < flagged / 2
 
 
+def test_a_motion_asked_again_needs_no_exact_check(kitchen: World) -> None:
+    """OMPL asks about motions from the same node again: the answers are kept."""
+    with kitchen.stored_state():
+        start, end = (-2.0, 1.5, 1.5708), (-0.4, 1.56, 1.5708)
+        kitchen.set_pose("pr2", _pose(*start))
+        poses = straight_poses(np.array(start), np.array(end), 1.0)
+        with BaseCollisionChecker.build(kitchen, "pr2", end[:2]) as checker:
+            first = checker.first_blocked(poses)
+            exact = checker.exact_checks
+            assert first is not None and exact > 0
+            assert checker.first_blocked(poses) == first
+            assert checker.exact_checks == exact
+
+
 def _pose(x: float, y: float, yaw: float) -> Pose:
     return Pose((x, y, 0.0), quat.from_euler(0.0, 0.0, yaw))
 

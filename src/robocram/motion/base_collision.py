@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from robocram.motion.cleared_poses import ClearedPoses
 from robocram.motion.height_bins import HeightBins
 from robocram.motion.obstacle_grid import Box, ObstacleGrid
 from robocram.motion.robot_footprint import FloatArray, RobotFootprint
@@ -34,7 +35,7 @@ CHUNK = 128  # poses per batch of fast checks along a motion
 MARGIN = 0.5  # [m] room around the obstacles, start and goal for going around
 ESCAPE = 0.1  # [m] travel from the start during which its contacts are tolerated
 CONFIRM_NEAR = 0.3  # [m] travel from the start or goal within which exact checks decide
-GAP_QUERY = 0.05  # [m] how far an exact check looks for the gap that lets it skip poses
+GAP_QUERY = 0.1  # [m] how far an exact check looks for the gap that lets it skip poses
 FOOTPRINTS_KEPT = 8  # robot postures whose footprints a world keeps
 LOCAL_MARGIN = 0.6  # [m] the first grid covers the start's and goal's box grown by this
 
@@ -62,6 +63,7 @@ class BaseCollisionChecker:
     covered: tuple[tuple[float, float], tuple[float, float]] = ((0.0, 0.0), (0.0, 0.0))
     _obstacles: ObstacleBoxes | None = field(default=None, repr=False)  # read once
     _bins: HeightBins | None = field(default=None, repr=False)
+    _cleared_poses: ClearedPoses | None = field(default=None, repr=False)  # exact answers
 
     @classmethod
     def build(
@@ -191,6 +193,16 @@ class BaseCollisionChecker:
         )
         if not near:
             return None
+        if self._cleared_poses is None:
+            self._cleared_poses = ClearedPoses(self.footprint.reach)
+        known, gap = self._cleared_poses.known(pose)
+        if not known:
+            gap = self._measured_gap(pose)
+            self._cleared_poses.add(pose, gap)
+        return gap
+
+    def _measured_gap(self, pose: FloatArray) -> float | None:
+        """:meth:`_exact_gap` by the exact check itself."""
         self.exact_checks += 1
         self._place(pose)
         start = np.array([*self.start.position[:2], yaw_of(self.start)])
@@ -266,7 +278,7 @@ def _grid(
         (obstacles.low[:, 0] <= upper[0]) & (obstacles.high[:, 0] >= lower[0])
         & (obstacles.low[:, 1] <= upper[1]) & (obstacles.high[:, 1] >= lower[1])
     )  # fmt: skip
-    boxes: list[Box] = [(tuple(obstacles.low[k]), tuple(obstacles.high[k])) for k in inside]
+    boxes = np.stack([obstacles.low[inside], obstacles.high[inside]], axis=1)
     return ObstacleGrid.build(boxes, lower, upper, CELL, footprint.dilation, bins)
 
 

@@ -100,7 +100,7 @@ def plan_base_path(
     _check_request(goal, budget, turning_radius)
     radius = turning_radius if car else None
     allowed = frozenset(allowed_links)
-    _refuse_blocked_goal(world, robot, goal, allowed)
+    goal_checked = _refuse_blocked_goal(world, robot, goal, allowed)
     with BaseCollisionChecker.build(world, robot, goal.position[:2], allowed) as checker:
         start_yaw = yaw_of(checker.start)
         start = np.array([*checker.start.position[:2], start_yaw])
@@ -108,7 +108,7 @@ def plan_base_path(
         end[2] = start_yaw + _wrap(end[2] - start_yaw)
         checker.anchors = (start, end)
         fits = not checker.fast_hits(end[None, :], boundary=False)[0]
-        colliding = [] if fits else checker.blockers(end)
+        colliding = [] if fits or goal_checked else checker.blockers(end)
         if colliding:
             raise NavigationPoseUnreachable(
                 f"{robot} at {_shown(end)} would collide with {colliding}",
@@ -148,13 +148,14 @@ def plan_base_path(
         )
 
 
-def _refuse_blocked_goal(world: World, robot: str, goal: Pose, allowed: frozenset[str]) -> None:
+def _refuse_blocked_goal(world: World, robot: str, goal: Pose, allowed: frozenset[str]) -> bool:
     """Raise before any grid is built when the robot plainly collides at ``goal``; a goal
-    within :data:`ESCAPE` of the start is left to the checker (start contacts count there)."""
+    within :data:`ESCAPE` of the start is left to the checker (start contacts count there).
+    Whether the goal was checked (and is free), so the checker need not ask again."""
     here = world.pose(robot)
     end = np.array([goal.position[0], goal.position[1], yaw_of(goal)])
     if np.hypot(end[0] - here.position[0], end[1] - here.position[1]) <= ESCAPE:
-        return
+        return False
     colliding = blockers_at(world, robot, end, allowed)
     if colliding:
         raise NavigationPoseUnreachable(
@@ -162,6 +163,7 @@ def _refuse_blocked_goal(world: World, robot: str, goal: Pose, allowed: frozense
             target=goal,
             colliding=colliding,
         )
+    return True
 
 
 def _detour(

@@ -20,6 +20,7 @@ from robocram.motion.height_bins import HeightBins
 
 Box = tuple[tuple[float, float, float], tuple[float, float, float]]  # (lower, upper) [m]
 IntArray = npt.NDArray[np.int64]
+LOOKUPS_PER_BLOCK = 16_000  # cells looked up at once: the temporaries stay in the cache
 
 
 @dataclass(frozen=True)
@@ -33,35 +34,39 @@ class ObstacleGrid:
     @classmethod
     def build(
         cls,
-        boxes: Sequence[Box],
+        boxes: Sequence[Box] | npt.NDArray[np.float64],
         lower: tuple[float, float],
         upper: tuple[float, float],
         cell: float,
         dilation: float,
         bins: HeightBins,
     ) -> ObstacleGrid:
-        """Rasterise ``boxes`` grown by ``dilation`` [m] over the area ``lower``..``upper``."""
+        """Rasterise ``boxes`` (or their (n, 2, 3) table) grown by ``dilation`` [m] over the
+        area ``lower``..``upper``."""
         shape = (
             int(math.ceil((upper[0] - lower[0]) / cell)) + 1,
             int(math.ceil((upper[1] - lower[1]) / cell)) + 1,
         )
         masks = np.zeros(shape, dtype=np.int64)
-        for low, high in boxes:
-            bits = bins.mask(low[2], high[2])
-            if not bits:
-                continue
-            i0, j0 = cls._index(low[0] - dilation, low[1] - dilation, lower, cell, shape)
-            i1, j1 = cls._index(high[0] + dilation, high[1] + dilation, lower, cell, shape)
-            masks[i0 : i1 + 1, j0 : j1 + 1] |= bits
+        table = np.asarray(boxes, dtype=float).reshape(-1, 2, 3)
+        first = cls._indices(table[:, 0, :2] - dilation, lower, cell, shape)
+        last = cls._indices(table[:, 1, :2] + dilation, lower, cell, shape)
+        for k, (i0, j0), (i1, j1) in zip(range(len(table)), first, last, strict=True):
+            bits = bins.mask(table[k, 0, 2], table[k, 1, 2])
+            if bits:
+                masks[i0 : i1 + 1, j0 : j1 + 1] |= bits
         return cls(lower, cell, masks)
 
     @staticmethod
-    def _index(
-        x: float, y: float, lower: tuple[float, float], cell: float, shape: tuple[int, int]
-    ) -> tuple[int, int]:
-        i = min(max(math.floor((x - lower[0]) / cell), 0), shape[0] - 1)
-        j = min(max(math.floor((y - lower[1]) / cell), 0), shape[1] - 1)
-        return i, j
+    def _indices(
+        xy: npt.NDArray[np.float64], lower: tuple[float, float], cell: float,
+        shape: tuple[int, int],
+    ) -> list[list[int]]:  # fmt: skip
+        """:meth:`_index` of every row of ``xy`` (n, 2) [m]."""
+        i = np.clip(np.floor((xy[:, 0] - lower[0]) / cell), 0, shape[0] - 1)
+        j = np.clip(np.floor((xy[:, 1] - lower[1]) / cell), 0, shape[1] - 1)
+        found: list[list[int]] = np.stack([i, j], axis=1).astype(np.intp).tolist()
+        return found
 
     def hits(
         self,
@@ -82,17 +87,35 @@ class ObstacleGrid:
             y = poses[:, 1:2] + sin * points[:, 0] + cos * points[:, 1]
             cells = np.take(self.masks.ravel(), self.flat_indices(x, y))
             return np.asarray(np.any(cells & masks, axis=1))
+        block = max(1, LOOKUPS_PER_BLOCK // max(len(points), 1))
+        if len(poses) <= block:
+            return self._hits_on_grid(poses, points, masks)
+        return np.concatenate([
+            self._hits_on_grid(poses[k : k + block], points, masks)
+            for k in range(0, len(poses), block)
+        ])  # fmt: skip
+
+    def _hits_on_grid(
+        self, poses: npt.NDArray[np.float64], points: npt.NDArray[np.float64], masks: IntArray
+    ) -> npt.NDArray[np.bool_]:
+        """:meth:`hits` of points known to fall on the grid: the cells' rows and columns
+        come from one product of the poses' rotations (in cell units) with the points."""
         per_cell = 1.0 / self.cell
-        cos, sin = np.cos(poses[:, 2:3]) * per_cell, np.sin(poses[:, 2:3]) * per_cell
-        px, py = points[:, 0], points[:, 1]
-        i = (poses[:, 0:1] - self.origin[0]) * per_cell + (cos * px - sin * py)
-        j = (poses[:, 1:2] - self.origin[1]) * per_cell + (sin * px + cos * py)
-        flat = i.astype(np.intp)
+        count = len(poses)
+        cos, sin = np.cos(poses[:, 2]) * per_cell, np.sin(poses[:, 2]) * per_cell
+        rotations = np.empty((2 * count, 2))
+        rotations[:count, 0], rotations[:count, 1] = cos, -sin
+        rotations[count:, 0], rotations[count:, 1] = sin, cos
+        ij = rotations @ points.T  # rows: i of every pose, then j of every pose
+        ij[:count] += ((poses[:, 0] - self.origin[0]) * per_cell)[:, None]
+        ij[count:] += ((poses[:, 1] - self.origin[1]) * per_cell)[:, None]
+        cells = ij.astype(np.intp)
+        flat = cells[:count]
         flat *= self.masks.shape[1]
-        flat += j.astype(np.intp)
-        cells = np.take(self.masks.ravel(), flat, mode="clip")
-        cells &= masks
-        return np.asarray(cells.any(axis=1))
+        flat += cells[count:]
+        found = np.take(self.masks.ravel(), flat, mode="clip")
+        found &= masks
+        return np.asarray(found.any(axis=1))
 
     def flat_indices(
         self, x: npt.NDArray[np.float64], y: npt.NDArray[np.float64]

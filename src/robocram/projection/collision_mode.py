@@ -118,12 +118,7 @@ def colliding_pairs(
     The object is named by itself, or as ``object/link`` when it has several links.
     """
     world = robot.world
-    model = robot.description.model
-    before = {
-        joint: value
-        for joint, value in world.joint_states(robot.name).items()
-        if model.joints[joint].mimic is None  # followers come back with their masters
-    }
+    before = _to_restore(robot, joints)
     world.set_joint_states(robot.name, dict(joints))
     try:
         held = set(world.attachments(robot.name))
@@ -140,3 +135,21 @@ def colliding_pairs(
         return list(hits)
     finally:
         world.set_joint_states(robot.name, before)
+
+
+def _to_restore(robot: ProjectedRobot, joints: Mapping[str, float]) -> dict[str, float]:
+    """The joint values that put the robot back after it is set to ``joints``: those the
+    check changes, and every other one simulation does not hold where it is (putting it
+    back holds it there, as putting back every joint did). Mimic followers come back with
+    their masters."""
+    world = robot.world
+    model = robot.description.model
+    held = world.held_joints(robot.name)
+    mimics = (model.joints[j].mimic for j in joints)
+    masters = {mimic.joint for mimic in mimics if mimic is not None}
+    return {
+        joint: value
+        for joint, value in world.joint_states(robot.name).items()
+        if model.joints[joint].mimic is None
+        and (joint in joints or joint in masters or held.get(joint) != value)
+    }

@@ -10,7 +10,7 @@ same overlapping pairs.
 from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 from numpy.typing import NDArray
@@ -43,25 +43,22 @@ class ObstacleBoxes:
     def of(cls, world: WorldCore, skip: Iterable[str]) -> ObstacleBoxes:
         """Read the bounds of every link of every object not named in ``skip``."""
         skipped = frozenset(skip)
-        cid = world.physics_client()
-        objects: list[WorldObject] = []
-        indices: list[int] = []
-        names: list[str] = []
-        boxes: list[tuple[float, ...]] = []
-        for obj in world.objects():
-            if obj.name in skipped:
-                continue
-            for index, name in _link_names(obj).items():
-                if index not in obj.colliders:
-                    continue  # a frame without shapes hits nothing
-                low, high = pybullet.getAABB(obj.body_id, index, physicsClientId=cid)
-                objects.append(obj)
-                indices.append(index)
-                names.append(name)
-                boxes.append((*low, *high))
-        table = np.array(boxes, dtype=float).reshape(-1, 6)
+        rows = [_BodyBoxes.read(world, o, ()) for o in world.objects() if o.name not in skipped]
+        return cls.joined(skipped, rows)
+
+    @classmethod
+    def joined(cls, skipped: frozenset[str], rows: list[_BodyBoxes]) -> ObstacleBoxes:
+        """The table of the bodies' ``rows``, in their order."""
+        low = np.concatenate([r.low for r in rows]) if rows else np.zeros((0, 3))
+        high = np.concatenate([r.high for r in rows]) if rows else np.zeros((0, 3))
+        low.flags.writeable = high.flags.writeable = False  # a kept table is shared
         return cls(
-            skipped, tuple(objects), tuple(indices), tuple(names), table[:, :3], table[:, 3:]
+            skipped,
+            tuple(o for r in rows for o in (r.obj,) * len(r.indices)),
+            tuple(i for r in rows for i in r.indices),
+            tuple(n for r in rows for n in r.names),
+            low,
+            high,
         )
 
     def covers(self, obj: WorldObject, skip: set[str]) -> bool:
@@ -88,3 +85,61 @@ class ObstacleBoxes:
             row = int(near[column])
             if self.objects[row].name not in skip:
                 yield int(box), row
+
+
+@dataclass(frozen=True)
+class _BodyBoxes:
+    """The bounds of one body's links with shapes, and the body state they were read at."""
+
+    obj: WorldObject
+    state: tuple[float, ...]
+    indices: tuple[int, ...]
+    names: tuple[str, ...]
+    low: FloatArray  # (links, 3)
+    high: FloatArray  # (links, 3)
+
+    @classmethod
+    def read(cls, world: WorldCore, obj: WorldObject, state: tuple[float, ...]) -> _BodyBoxes:
+        """Read ``obj``'s bounds; ``state`` is its body state now (or empty: unkept)."""
+        cid = world.physics_client()
+        links = [(i, n) for i, n in _link_names(obj).items() if i in obj.colliders]
+        table = np.array(
+            [pybullet.getAABB(obj.body_id, i, physicsClientId=cid) for i, _ in links],
+            dtype=float,
+        ).reshape(-1, 6)
+        return cls(
+            obj, state, tuple(i for i, _ in links), tuple(n for _, n in links),
+            table[:, :3], table[:, 3:],
+        )  # fmt: skip
+
+
+@dataclass
+class KeptObstacleBoxes:
+    """Obstacle bounds kept with a world: a body's are read again only when its state
+    (:meth:`WorldCore.body_state`: body id, base pose, joints) changed, two backend calls
+    to ask instead of one per link. Arm motion checks and base drives ask for them many
+    times per plan while only the robot and what it holds move."""
+
+    _bodies: dict[str, _BodyBoxes] = field(default_factory=dict)
+    _last: ObstacleBoxes | None = None  # the table last asked for, of these rows
+    _rows: list[_BodyBoxes] = field(default_factory=list)
+
+    def boxes(self, world: WorldCore, skip: Iterable[str]) -> ObstacleBoxes:
+        """:meth:`ObstacleBoxes.of`, from the bodies' bounds kept while they stay put."""
+        skipped = frozenset(skip)
+        rows = []
+        for obj in world.objects():
+            if obj.name in skipped:
+                continue
+            kept = self._bodies.get(obj.name)
+            state = world.body_state(obj)
+            if kept is None or kept.obj is not obj or kept.state != state:
+                kept = self._bodies[obj.name] = _BodyBoxes.read(world, obj, state)
+            rows.append(kept)
+        same = len(rows) == len(self._rows) and all(
+            a is b for a, b in zip(rows, self._rows, strict=True)
+        )
+        if self._last is None or not same or self._last.skipped != skipped:
+            self._last = ObstacleBoxes.joined(skipped, rows)
+            self._rows = rows
+        return self._last

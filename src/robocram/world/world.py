@@ -23,7 +23,7 @@ from robocram.world.catalogue import catalogue_item
 from robocram.world.collision_shapes import CollisionShape, collision_shapes
 from robocram.world.contact_point import ContactPoint
 from robocram.world.errors import NoCameraError, WorldValueError
-from robocram.world.obstacle_boxes import ObstacleBoxes
+from robocram.world.obstacle_boxes import KeptObstacleBoxes, ObstacleBoxes
 from robocram.world.png import write_png
 from robocram.world.pybullet_backend import pybullet
 from robocram.world.ray_hit import RayHit, cast_rays
@@ -296,7 +296,8 @@ class World(WorldCore):
     def obstacle_boxes(self, ignore: Iterable[ObjectRef] = ()) -> ObstacleBoxes:
         """The bounds of every link of every object but ``ignore``, read now: pass them to
         :meth:`link_distances` and :meth:`link_pairs_in_contact` while nothing else moves."""
-        return ObstacleBoxes.of(self, [self.object(o).name for o in ignore])
+        names = [self.object(o).name for o in ignore]
+        return self.derived(_kept_obstacle_boxes).boxes(self, names)
 
     def link_radii(self, obj: ObjectRef) -> dict[str, float]:
         """Per link of ``obj``: a radius [m] about the link's frame that holds its shapes.
@@ -496,3 +497,8 @@ class World(WorldCore):
     def __repr__(self) -> str:
         names = ", ".join(o.name for o in self.objects())
         return f"World(client={self.client}, objects=[{names}])"
+
+
+def _kept_obstacle_boxes(world: World) -> KeptObstacleBoxes:
+    """The obstacle bounds a world keeps (the key under which :meth:`World.derived` keeps them)."""
+    return KeptObstacleBoxes()
