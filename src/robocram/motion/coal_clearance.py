@@ -69,6 +69,8 @@ class CoalClearance:
         self._pairs = setup.pairs
         self._levers: tuple[NDArray[np.intp], FloatArray] | None = None  # rows, frames
         self._base_matrix = self._base.homogeneous
+        pin.forwardKinematics(self._model, self._data, self._slots.q0)  # as it stands
+        self._carriers = _Carriers.of(self._model, self._data, self._slots, setup.joints)
         self._frames: FloatArray = np.zeros((len(self._joints), 4, 4))  # placements, last check
         self._last: tuple[bytes, dict[str, float]] | None = None  # q -> its clearances
 
@@ -95,8 +97,7 @@ class CoalClearance:
         if self._last is not None and self._last[0] == key:
             return dict(self._last[1])
         pin.forwardKinematics(self._model, self._data, self._slots.full(values))
-        oMi = self._data.oMi
-        self._frames = self._base_matrix @ np.array([oMi[j].homogeneous for j in self._joints])
+        self._frames = self._carriers.frames(self._data, self._base_matrix)
         gaps = self._pairs.gaps(self._frames, self._slack, CLEARANCE_REACH)
         self._last = (key, gaps)
         return dict(gaps)
@@ -149,6 +150,47 @@ class CoalClearance:
         joints = frames[data.joint_rows]
         axes = np.einsum("jik,jk->ji", joints[:, :3, :3], data.local_axes)
         return frames[:, :3, 3], joints[:, :3, 3], axes
+
+
+@dataclass(frozen=True)
+class _Carriers:
+    """The joints' placements from those of the joints a check moves: reading a placement
+    from pinocchio costs more than composing it, and the joints between stay as they were
+    when the checker was made."""
+
+    read: list[int]  # the pinocchio joints read per check: moved ones, 0 for the root
+    row: NDArray[np.intp]  # per joint of a check: its carrier's row in ``read``
+    offsets: FloatArray  # (joints, 4, 4) each joint's placement in its carrier's frame
+
+    @classmethod
+    def of(
+        cls, model: pin.Model, data: pin.Data, slots: JointSlots, joints: list[int]
+    ) -> _Carriers:
+        """For ``joints``, from ``data`` posed at ``slots.q0``."""
+        written = {*slots.plain_idx.tolist(), *slots.cont_idx.tolist()}
+        moved = {j for j in range(1, model.njoints) if model.joints[j].idx_q in written}
+        carriers = []
+        for joint in joints:
+            carrier = joint
+            while carrier and carrier not in moved:
+                carrier = model.parents[carrier]
+            carriers.append(carrier)
+        read = sorted(set(carriers))
+        oMi = data.oMi
+        pairs = zip(carriers, joints, strict=True)
+        offsets = [(oMi[c].inverse() * oMi[j]).homogeneous for c, j in pairs]
+        return cls(
+            read,
+            np.array([read.index(c) for c in carriers], dtype=np.intp),
+            np.array(offsets, dtype=float).reshape(-1, 4, 4),
+        )
+
+    def frames(self, data: pin.Data, base: FloatArray) -> FloatArray:
+        """(joints, 4, 4) the joints' placements in map, ``data`` posed by a check and the
+        robot's base at ``base``."""
+        placed = data.oMi.tolist()  # views: read them now
+        carriers = base @ np.array([placed[j].homogeneous for j in self.read])
+        return np.asarray(carriers[self.row] @ self.offsets, dtype=float)
 
 
 @dataclass(frozen=True)
