@@ -99,6 +99,26 @@ def test_levers_match_the_worlds_at_the_configuration_checked_last(world: World)
         np.testing.assert_allclose(coal.joint_levers(links), expected, atol=1e-6)  # Bullet: float32
 
 
+def test_link_speeds_match_the_worlds_at_the_configuration_checked_last(world: World) -> None:
+    """Coal's speeds come from pinocchio's joint velocities, the world's from its frames."""
+    spec = world.robot("pr2").description.arms["right"]
+    with world.stored_state():
+        world.attach("mug-1", "pr2", spec.tool_frame)  # its radius rides on the hand
+        judge = BulletScene(world, "pr2", JOINTS)
+        coal = CoalClearance(judge)
+        links = judge.lever_links()
+        assert "mug-1" in links
+        rng = np.random.default_rng(13)
+        for q in _configurations(world, 13, 5):
+            delta = rng.normal(size=len(JOINTS))
+            with judge.posed():
+                judge.clearances(q)
+                expected = judge.link_speeds(links, delta)
+            coal.clearances(q)
+            # Bullet's frames are float32
+            np.testing.assert_allclose(coal.link_speeds(links, delta), expected, atol=1e-5)
+
+
 def test_obstacle_shapes_follow_what_moved_and_are_read_only_when_joints_move(
     world: World,
 ) -> None:

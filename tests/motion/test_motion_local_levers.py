@@ -55,7 +55,7 @@ def test_no_link_frame_moves_further_than_the_step_bound(seed: int) -> None:
     qa, qb = _random_configuration(rng, scene), _random_configuration(rng, scene)
     tight = 0.0
     with scene.posed():
-        steps = _LocalSteps.of(scene, qa, qb, bound)
+        steps = _LocalSteps.of(scene, qa, qb)
         for s in rng.uniform(0.0, 0.9, 4):
             gap = float(rng.uniform(0.02, 0.3))
             scene.clearances(qa + (qb - qa) * s)
@@ -83,7 +83,7 @@ def test_no_point_moves_further_than_the_vector_bound(seed: int) -> None:
     with scene.posed():
         for _ in range(3):
             qa, qb = _random_configuration(rng, scene), _random_configuration(rng, scene)
-            steps = _LocalSteps.of(scene, qa, qb, bound)
+            steps = _LocalSteps.of(scene, qa, qb)
             s = float(rng.uniform(0.0, 0.5))
             gap = float(rng.uniform(0.1, 0.4))
             scene.clearances(qa + (qb - qa) * s)

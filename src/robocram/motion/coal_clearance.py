@@ -68,6 +68,9 @@ class CoalClearance:
         self._rows = {j: k for k, j in enumerate(setup.joints)}
         self._pairs = setup.pairs
         self._levers: tuple[NDArray[np.intp], FloatArray] | None = None  # rows, frames
+        self._speeds: dict[tuple[str, ...], _LinkSpeeds] = {}  # per asked links
+        self._velocity_slots = np.array([kin.joint(j).idx_v for j in judge.joints], dtype=np.intp)
+        self._q = self._slots.q0  # pinocchio's configuration checked last
         self._base_matrix = self._base.homogeneous
         pin.forwardKinematics(self._model, self._data, self._slots.q0)  # as it stands
         self._carriers = _Carriers.of(self._model, self._data, self._slots, setup.joints)
@@ -96,7 +99,8 @@ class CoalClearance:
         key = values.tobytes()
         if self._last is not None and self._last[0] == key:
             return dict(self._last[1])
-        pin.forwardKinematics(self._model, self._data, self._slots.full(values))
+        self._q = self._slots.full(values)
+        pin.forwardKinematics(self._model, self._data, self._q)
         self._frames = self._carriers.frames(self._data, self._base_matrix)
         gaps = self._pairs.gaps(self._frames, self._slack, CLEARANCE_REACH)
         self._last = (key, gaps)
@@ -131,8 +135,14 @@ class CoalClearance:
         """Per link: the most [m] a point of it moves per unit of a segment whose joints
         change by ``delta``, at the configuration checked last (see
         :meth:`BulletScene.link_speeds`)."""
-        data = self.judge.lever_data()
-        return data.speeds(links, *self._lever_frames(), delta)
+        speeds = self._speeds.get(tuple(links))
+        if speeds is None:
+            data = self.judge.lever_data()
+            speeds = self._speeds[tuple(links)] = _LinkSpeeds.of(self, data, links)
+        velocity = np.zeros(self._model.nv)
+        velocity[self._velocity_slots] = delta  # the planned joints' (as LeverData's)
+        pin.forwardKinematics(self._model, self._data, self._q, velocity)
+        return speeds.speeds(self._data)
 
     def lever_data(self) -> LeverData:
         """What the levers need beyond the frames (the judge's)."""
@@ -150,6 +160,42 @@ class CoalClearance:
         joints = frames[data.joint_rows]
         axes = np.einsum("jik,jk->ji", joints[:, :3, :3], data.local_axes)
         return frames[:, :3, 3], joints[:, :3, 3], axes
+
+
+@dataclass(frozen=True)
+class _LinkSpeeds:
+    """The asked links' speed bounds from pinocchio's joint velocities (a joint's spatial
+    velocity in its own frame, linear then angular): one matrix takes them to each link
+    frame's velocity and angular velocity, in the frame of the joint it rides on (a norm
+    does not depend on the frame)."""
+
+    joints: list[int]  # the pinocchio joints whose velocities are read
+    matrix: FloatArray  # (6 links, 6 joints)
+    radii: FloatArray  # (links,) [m] about each link's frame (held objects included)
+
+    @classmethod
+    def of(cls, checker: CoalClearance, data: LeverData, links: Sequence[str]) -> _LinkSpeeds:
+        rows = data.link_rows(links)
+        placed = [checker._geometry.frame(data.frame_links[k]) for k in data.centre_rows[rows]]
+        joints = sorted({joint for joint, _ in placed})
+        matrix = np.zeros((6 * len(placed), 6 * len(joints)))
+        for k, (joint, placement) in enumerate(placed):
+            row, col = 6 * k, 6 * joints.index(joint)
+            x, y, z = placement[:3, 3]  # the frame's origin p: w x p = -[p]x w
+            matrix[row : row + 3, col : col + 3] = np.eye(3)
+            matrix[row : row + 3, col + 3 : col + 6] = [[0.0, z, -y], [-z, 0.0, x], [y, -x, 0.0]]
+            matrix[row + 3 : row + 6, col + 3 : col + 6] = np.eye(3)
+        return cls(joints, matrix, np.asarray(data.radii[rows], dtype=float))
+
+    def speeds(self, posed: pin.Data) -> FloatArray:
+        """Per link: its frame's speed plus its angular speed times its radius, with
+        ``posed``'s joint velocities."""
+        velocities = posed.v.tolist()  # views: read them now
+        stacked = np.array([velocities[j].vector for j in self.joints]).reshape(-1)
+        both = (self.matrix @ stacked).reshape(-1, 2, 3)
+        both *= both
+        norms = np.sqrt(both.sum(axis=2))
+        return np.asarray(norms[:, 0] + norms[:, 1] * self.radii, dtype=float)
 
 
 @dataclass(frozen=True)
