@@ -104,34 +104,40 @@ class ClearancePairs:
         cls,
         parts: list[Part],
         rows: dict[int, int],
-        balls: tuple[FloatArray, FloatArray],
+        balls: ReachBalls,
         shapes: StackedShapes,
-        rules: PairRules,
+        checked: NDArray[np.bool_],
+        allowed_pairs: Collection[LinkPair],
         within: float,
     ) -> ClearancePairs:
-        """The pairs the rules check whose part's ball (``balls``: centres and radii in
-        map, where it can be at all) comes within ``within`` [m] of the piece's box;
-        ``rows`` gives each pinocchio joint's row in the placements of a check."""
+        """The pairs the rules check (``checked``: ``[label, object]``, labels numbered
+        as they first come in ``parts``) but the start contacts ``allowed_pairs`` (part
+        label, piece label), whose part's ball comes within ``within`` [m] of the piece's
+        box; ``rows`` gives each pinocchio joint's row in the placements of a check."""
         owner, centres, halves = shapes.owner, shapes.centres, shapes.halves
-        lower = box_distances(balls[0][:, None, :], centres[None], halves[None])
-        near = lower - balls[1][:, None] < within
-        near &= rules.matrix(parts, shapes.shapes, near, owner)[:, owner]
-        if rules.allowed_pairs:  # start contacts the motion may keep
-            for m, piece in zip(*np.nonzero(near), strict=True):
-                near[m, piece] = (parts[m].label, shapes.labels[piece]) not in rules.allowed_pairs
-        part, piece = np.nonzero(near)
         numbers = {label: k for k, label in enumerate(dict.fromkeys(p.label for p in parts))}
         part_label = np.array([numbers[p.label] for p in parts], dtype=np.intp)
+        lower = box_distances(balls.centres[:, None, :], centres[None], halves[None])
+        near = lower[balls.anchor] - balls.radii[:, None] < within  # [part, piece]
+        near &= checked[part_label][:, owner]
+        if allowed_pairs:  # start contacts the motion may keep
+            for m, piece in zip(*np.nonzero(near), strict=True):
+                near[m, piece] = (parts[m].label, shapes.labels[piece]) not in allowed_pairs
+        part, piece = np.nonzero(near)
         radii = np.array([p.radius for p in parts], dtype=float).reshape(-1)
         boxes = np.zeros((len(parts), 4, 4))
         boxes[:, 3, 3] = 1.0
-        for m, p in enumerate(parts):
-            boxes[m, :3, :3] = p.axes * p.halves
-            boxes[m, :3, 3] = p.centre
+        if parts:
+            axes = np.array([p.axes for p in parts], dtype=float)
+            boxes[:, :3, :3] = axes * np.array([p.halves for p in parts])[:, None, :]
+            boxes[:, :3, 3] = np.array([p.centre for p in parts], dtype=float)
+        floats = np.empty((7, len(part)))
+        floats[:3] = np.take(centres, piece, axis=0).T
+        floats[3:6] = np.take(halves, piece, axis=0).T
+        floats[6] = radii[part]
         table = PairTable(
-            np.array([part, part_label[part], piece], dtype=np.intp).reshape(3, -1),
-            np.concatenate([centres[piece].T, halves[piece].T, radii[part][None]]),
-        )  # fmt: skip
+            np.array([part, part_label[part], piece], dtype=np.intp).reshape(3, -1), floats
+        )
         return cls(
             tuple(parts),
             np.array([rows[p.joint] for p in parts], dtype=np.intp),
@@ -212,37 +218,32 @@ class ClearancePairs:
 
 
 @dataclass(frozen=True)
+class ReachBalls:
+    """Per part, a ball in map it stays in for any values of the planned joints: about
+    one of a few anchors (the topmost planned joint above it)."""
+
+    centres: FloatArray  # (anchors, 3) [m]
+    anchor: NDArray[np.intp]  # per part: its anchor
+    radii: FloatArray  # per part [m]
+
+
+@dataclass(frozen=True)
 class PairRules:
     """Which (part label, obstacle) pairs count, as the judge decides them."""
 
     rules: AllowedContacts
     held: frozenset[str]  # labels of held objects: only start contacts are allowed them
-    allowed_pairs: Collection[LinkPair]  # (label, obstacle piece label) the motion starts with
 
-    def matrix(
-        self,
-        parts: list[Part],
-        shapes: Sequence[ObstacleShapes],
-        near: NDArray[np.bool_],
-        owner: NDArray[np.intp],
-    ) -> NDArray[np.bool_]:
-        """``[part, object]``: whether the rules check them; asked once per label and
-        object, and only where some piece of the object is ``near`` the part."""
-        checked = np.zeros((len(parts), len(shapes)), dtype=bool)
-        rows, pieces = np.nonzero(near)
-        checked[rows, owner[pieces]] = True  # first: which objects each part comes near
-        asked: dict[tuple[str, int], bool] = {}
-        for m, k in zip(*np.nonzero(checked), strict=True):
-            label = parts[m].label
-            answer = asked.get((label, k))
-            if answer is None:
-                obj = shapes[k].obj
-                answer = label in self.held or not self.rules.allows(
-                    label, Other(obj.name, obj.type)
-                )
-                asked[(label, k)] = answer
-            checked[m, k] = answer
-        return checked
+    def matrix(self, labels: Sequence[str], shapes: Sequence[ObstacleShapes]) -> NDArray[np.bool_]:
+        """``[label, object]``: whether the rules check them."""
+        return np.array(
+            [
+                [label in self.held or not self.rules.allows(label, Other(s.obj.name, s.obj.type))
+                 for s in shapes]
+                for label in labels
+            ],
+            dtype=bool,
+        ).reshape(len(labels), len(shapes))  # fmt: skip
 
 
 def box_distances(points: FloatArray, centres: FloatArray, halves: FloatArray) -> FloatArray:

@@ -19,7 +19,7 @@ anything, the judge decides whether the configuration collides, as on the world 
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 import pinocchio as pin
@@ -27,21 +27,18 @@ from numpy.typing import NDArray
 
 from robocram.kinematics.robot_kinematics import pose_to_se3
 from robocram.motion.bullet_scene import CLEARANCE_REACH, BulletScene
-from robocram.motion.clearance_pairs import ClearancePairs, PairRules
-from robocram.motion.coal_shapes import coal_geometries
+from robocram.motion.clearance_setup import SetupCache
 from robocram.motion.configuration_checker import Configuration, LinkPair
 from robocram.motion.joint_levers import LeverData
 from robocram.motion.joint_slots import JointSlots
 from robocram.motion.joint_trajectory import FloatArray
-from robocram.motion.obstacle_shapes import DRIFT, StackedShapes, obstacle_cache
-from robocram.motion.robot_geometry import Part, RobotGeometry, part
-from robocram.world import World
+from robocram.motion.obstacle_shapes import DRIFT
+from robocram.motion.robot_geometry import RobotGeometry
 
 # [m] PyBullet grows convex hulls by a collision margin of 1 mm and its GJK is off by up
 # to ~0.7 mm more; coal's distances are lowered by this so they never exceed PyBullet's
 # (tests/motion/test_motion_coal_clearance.py measures it near the kitchen counter).
 BULLET_MARGIN = 0.002
-KEPT_SETUPS = 8  # checker setups kept per world (a stand's motions use a few)
 
 
 class CoalClearance:
@@ -63,7 +60,9 @@ class CoalClearance:
         self._base = pose_to_se3(world.pose(robot))
         self._slack = margin + DRIFT + judge.distance  # [m] taken off every coal distance
         pin.forwardKinematics(self._model, self._data, self._slots.q0)
-        setup = world.derived(_SetupCache).setup(self, margin)
+        setup = world.derived(SetupCache).setup(
+            judge, self._geometry, self._data, self._base, margin
+        )
         self._joints = setup.joints  # the pinocchio joints whose placements a check reads
         self._rows = {j: k for k, j in enumerate(setup.joints)}
         self._pairs = setup.pairs
@@ -214,22 +213,20 @@ class _Carriers:
     ) -> _Carriers:
         """For ``joints``, from ``data`` posed at ``slots.q0``."""
         written = {*slots.plain_idx.tolist(), *slots.cont_idx.tolist()}
-        moved = {j for j in range(1, model.njoints) if model.joints[j].idx_q in written}
+        moved = {j for j, at in enumerate(model.idx_qs.tolist()) if j and at in written}
+        parents = model.parents.tolist()
         carriers = []
         for joint in joints:
             carrier = joint
             while carrier and carrier not in moved:
-                carrier = model.parents[carrier]
+                carrier = parents[carrier]
             carriers.append(carrier)
         read = sorted(set(carriers))
-        oMi = data.oMi
-        pairs = zip(carriers, joints, strict=True)
-        offsets = [(oMi[c].inverse() * oMi[j]).homogeneous for c, j in pairs]
-        return cls(
-            read,
-            np.array([read.index(c) for c in carriers], dtype=np.intp),
-            np.array(offsets, dtype=float).reshape(-1, 4, 4),
-        )
+        row = np.array([read.index(c) for c in carriers], dtype=np.intp)
+        placed = data.oMi.tolist()  # views: read them now
+        inverses = np.array([placed[c].inverse().homogeneous for c in read], dtype=float)
+        frames = np.array([placed[j].homogeneous for j in joints], dtype=float)
+        return cls(read, row, (inverses.reshape(-1, 4, 4)[row] @ frames.reshape(-1, 4, 4)))
 
     def frames(self, data: pin.Data, base: FloatArray) -> FloatArray:
         """(joints, 4, 4) the joints' placements in map, ``data`` posed by a check and the
@@ -237,126 +234,3 @@ class _Carriers:
         placed = data.oMi.tolist()  # views: read them now
         carriers = base @ np.array([placed[j].homogeneous for j in self.read])
         return np.asarray(carriers[self.row] @ self.offsets, dtype=float)
-
-
-@dataclass(frozen=True)
-class _Setup:
-    """What a checker reads per check: the joints whose placements it needs and its
-    pairs (they hold the focus of the checks made so far)."""
-
-    joints: list[int]
-    pairs: ClearancePairs
-    obstacles: StackedShapes  # kept so that its id in the key is never reused
-
-    @classmethod
-    def of(cls, checker: CoalClearance, obstacles: StackedShapes, margin: float) -> _Setup:
-        judge, geometry = checker.judge, checker._geometry
-        world = judge.world
-        parts = _parts(world, judge, geometry)
-        carriers = {geometry.frame(link)[0] for link in judge.moving_links}
-        joints = sorted({p.joint for p in parts} | carriers)
-        rows = {j: k for k, j in enumerate(joints)}
-        balls = _reach_balls(geometry, judge.joints, parts, checker._data, checker._base)
-        held = frozenset(world.attachments(judge.robot))
-        rules = PairRules(judge.rules, held, judge.allowed_pairs)
-        within = CLEARANCE_REACH + margin + DRIFT + judge.distance
-        return cls(
-            joints, ClearancePairs.of(parts, rows, balls, obstacles, rules, within), obstacles
-        )
-
-
-@dataclass
-class _SetupCache:
-    """The setups of the last checkers of one world (kept with it, ``World.derived``): the
-    motions at one stand share theirs, and with them the pairs' focus."""
-
-    world: World
-    _kept: dict[tuple[object, ...], _Setup] = field(default_factory=dict)
-
-    def setup(self, checker: CoalClearance, margin: float) -> _Setup:
-        """``checker``'s setup: a kept one if everything it depends on is as it was."""
-        obstacles = _obstacles(self.world, checker.judge)
-        key = (id(obstacles), margin, *_setup_key(checker))
-        found = self._kept.get(key)
-        if found is None or found.obstacles is not obstacles:
-            found = self._kept[key] = _Setup.of(checker, obstacles, margin)
-            if len(self._kept) > KEPT_SETUPS:
-                del self._kept[next(iter(self._kept))]  # the oldest
-        return found
-
-
-def _setup_key(checker: CoalClearance) -> tuple[object, ...]:
-    """What a setup depends on beyond the obstacles: the judge's rules, what the robot
-    holds and where, and where the anchors of the parts' reach balls are."""
-    judge, geometry = checker.judge, checker._geometry
-    world = judge.world
-    kin = geometry.kinematics
-    held = []
-    carriers = [kin.joint(j).pin_id for j in judge.joints]
-    for obj, link in sorted(world.attachments(judge.robot).items()):
-        attachment = world.attached_to(obj)
-        pose = attachment.link_T_obj if attachment is not None else None
-        held.append((obj, link, pose))
-        carriers.append(geometry.frame(link)[0])
-    anchors = sorted({geometry.anchor(j, judge.joints)[0] for j in carriers})
-    places = tuple(
-        tuple((checker._base * checker._data.oMi[a]).translation.tolist()) for a in anchors
-    )
-    return (
-        judge.robot, judge.joints, judge.allowed_links, judge.allowed_pairs, judge.distance,
-        tuple(held), places,
-    )  # fmt: skip
-
-
-def _parts(world: World, judge: BulletScene, geometry: RobotGeometry) -> list[Part]:
-    """The parts the judge asks about: its moving links but the allowed ones (named as
-    PyBullet names their link), and every held object (named by the object)."""
-    handle = world.robot(judge.robot)
-    names = handle.index_names()
-    asked = {
-        handle.link_index[link] for link in judge.moving_links if link not in judge.allowed_links
-    } & handle.colliders
-    labels = tuple(
-        (link, names[index])
-        for link in geometry.parts
-        if (index := handle.link_index.get(link, -2)) in asked
-    )
-    parts = list(geometry.named_parts(labels))
-    for obj, link in world.attachments(handle).items():
-        joint, frame = geometry.frame(link)
-        link_T_map = world.link_pose(handle, link).inverse()
-        for shape in world.collision_shapes(obj):
-            placement = pin.SE3(frame) * pose_to_se3(link_T_map * shape.pose)
-            for piece in coal_geometries(shape.kind, shape.extents, shape.mesh):
-                parts.append(part(obj, joint, placement, piece))
-    return parts
-
-
-def _obstacles(world: World, judge: BulletScene) -> StackedShapes:
-    """The shapes of every object the judge checks against: all but the robot, what it
-    holds and what any link may touch (the floor)."""
-    held = set(world.attachments(judge.robot))
-    skip = {judge.robot, *held, *(o.name for o in judge.anywhere())}
-    cache = obstacle_cache(world)
-    return cache.stacked(
-        [cache.shapes(world, obj) for obj in world.objects() if obj.name not in skip]
-    )
-
-
-def _reach_balls(
-    geometry: RobotGeometry,
-    planned: Sequence[str],
-    parts: list[Part],
-    data: pin.Data,
-    base: pin.SE3,
-) -> tuple[FloatArray, FloatArray]:
-    """Per part: a ball (map) it stays in for any values of the planned joints."""
-    anchors: dict[int, FloatArray] = {}
-    centres, radii = [], []
-    for p in parts:
-        anchor, reach = geometry.anchor(p.joint, planned)
-        if anchor not in anchors:
-            anchors[anchor] = np.asarray((base * data.oMi[anchor]).translation, dtype=float)
-        centres.append(anchors[anchor])
-        radii.append(reach + p.extent)
-    return np.array(centres, dtype=float).reshape(-1, 3), np.array(radii, dtype=float)
