@@ -49,11 +49,11 @@ class PairTable:
     def bounds(self, centres: FloatArray, slack: float) -> FloatArray:
         """Per pair: a lower bound [m] on its distance less ``slack``, with the parts'
         ball centres at ``centres`` (3, parts)."""
-        outside = np.abs(np.take(centres, self.ints[0], axis=1) - self.floats[:3])
+        outside = np.abs(centres.take(self.ints[0], axis=1) - self.floats[:3])
         outside -= self.floats[3:6]
         np.maximum(outside, 0.0, out=outside)
         outside *= outside
-        lower = np.sqrt(outside.sum(axis=0))
+        lower = np.sqrt(outside[0] + outside[1] + outside[2])
         lower -= self.floats[6]
         lower -= slack
         return lower
@@ -62,16 +62,16 @@ class PairTable:
         """Per pair: the tighter of the ball's bound and that of the part's map-aligned
         box (``halves`` (3, parts), about the same centre), less ``slack``."""
         part = self.ints[0]
-        ball = np.abs(np.take(centres, part, axis=1) - self.floats[:3])
+        ball = np.abs(centres.take(part, axis=1) - self.floats[:3])
         ball -= self.floats[3:6]
-        box = ball - np.take(halves, part, axis=1)
+        box = ball - halves.take(part, axis=1)
         np.maximum(ball, 0.0, out=ball)
         np.maximum(box, 0.0, out=box)
         ball *= ball
         box *= box
-        lower = np.sqrt(ball.sum(axis=0))
+        lower = np.sqrt(ball[0] + ball[1] + ball[2])
         lower -= self.floats[6]
-        np.maximum(lower, np.sqrt(box.sum(axis=0)), out=lower)
+        np.maximum(lower, np.sqrt(box[0] + box[1] + box[2]), out=lower)
         lower -= slack
         return lower
 
@@ -160,7 +160,8 @@ class ClearancePairs:
         table = self._focused(centres, slack, reach).table
         if not table.size:
             return {}
-        halves = np.abs(boxes[:, :3, :3]).sum(axis=2).T
+        spans = np.abs(boxes[:, :3, :3])
+        halves = (spans[:, :, 0] + spans[:, :, 1] + spans[:, :, 2]).T
         lower = table.box_bounds(centres, halves, slack)
         near = (lower < reach).nonzero()[0]
         if not near.size:
@@ -180,6 +181,8 @@ class ClearancePairs:
         """Per label of ``order`` (label, bound, part, piece; sorted): coal's least
         distance less ``slack``, pairs tried until a bound cannot beat the least found."""
         request, result = coal.DistanceRequest(), coal.DistanceResult()
+        distance, geometries, placements = coal.distance, self.geometries, self.placements
+        parts = self.parts
         gaps: dict[str, float] = {}
         placed: dict[int, pin.SE3] = {}  # per part: its placement now
         label, best = order[0][0], reach
@@ -192,13 +195,16 @@ class ClearancePairs:
                 continue  # the label's other pairs are farther still
             pose = placed.get(m)
             if pose is None:
-                pose = placed[m] = pin.SE3(frames[self.part_row[m]]) * self.parts[m].placement
+                pose = placed[m] = pin.SE3(frames[self.part_row[m]]) * parts[m].placement
             result.clear()  # a result keeps the least distance of all its calls
-            found = coal.distance(
-                self.parts[m].geometry, pose, self.geometries[piece], self.placements[piece],
-                request, result,
-            )  # fmt: skip
-            best = min(best, found - slack)
+            found = (
+                distance(
+                    parts[m].geometry, pose, geometries[piece], placements[piece], request, result
+                )
+                - slack
+            )
+            if found < best:
+                best = found
         if best < reach:
             gaps[self.names[label]] = best
         return gaps

@@ -25,7 +25,7 @@ import numpy as np
 import pinocchio as pin
 from numpy.typing import NDArray
 
-from robocram.kinematics.robot_kinematics import pose_to_se3
+from robocram.kinematics.robot_kinematics import pose_to_se3, robot_kinematics
 from robocram.motion.bullet_scene import CLEARANCE_REACH, BulletScene
 from robocram.motion.clearance_setup import SetupCache
 from robocram.motion.configuration_checker import Configuration, LinkPair
@@ -34,6 +34,7 @@ from robocram.motion.joint_slots import JointSlots
 from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.obstacle_shapes import DRIFT
 from robocram.motion.robot_geometry import RobotGeometry
+from robocram.robots import RobotModel
 
 # [m] PyBullet grows convex hulls by a collision margin of 1 mm and its GJK is off by up
 # to ~0.7 mm more; coal's distances are lowered by this so they never exceed PyBullet's
@@ -72,7 +73,8 @@ class CoalClearance:
         self._q = self._slots.q0  # pinocchio's configuration checked last
         self._base_matrix = self._base.homogeneous
         pin.forwardKinematics(self._model, self._data, self._slots.q0)  # as it stands
-        self._carriers = _Carriers.of(self._model, self._data, self._slots, setup.joints)
+        tree = world.robot(robot).description.model.derived(_pin_tree)
+        self._carriers = _Carriers.of(tree, self._data, self._slots, setup.joints)
         self._frames: FloatArray = np.zeros((len(self._joints), 4, 4))  # placements, last check
         self._last: tuple[bytes, dict[str, float]] | None = None  # q -> its clearances
 
@@ -197,6 +199,15 @@ class _LinkSpeeds:
         return np.asarray(norms[:, 0] + norms[:, 1] * self.radii, dtype=float)
 
 
+_PinTree = tuple[list[int], list[int]]  # per pinocchio joint: its parent, its first q index
+
+
+def _pin_tree(model: RobotModel) -> _PinTree:
+    """Pinocchio's joint tree of ``model`` (kept with it: reading it costs ~10 us)."""
+    kin = robot_kinematics(model)
+    return kin.model.parents.tolist(), kin.model.idx_qs.tolist()
+
+
 @dataclass(frozen=True)
 class _Carriers:
     """The joints' placements from those of the joints a check moves: reading a placement
@@ -208,13 +219,11 @@ class _Carriers:
     offsets: FloatArray  # (joints, 4, 4) each joint's placement in its carrier's frame
 
     @classmethod
-    def of(
-        cls, model: pin.Model, data: pin.Data, slots: JointSlots, joints: list[int]
-    ) -> _Carriers:
+    def of(cls, tree: _PinTree, data: pin.Data, slots: JointSlots, joints: list[int]) -> _Carriers:
         """For ``joints``, from ``data`` posed at ``slots.q0``."""
         written = {*slots.plain_idx.tolist(), *slots.cont_idx.tolist()}
-        moved = {j for j, at in enumerate(model.idx_qs.tolist()) if j and at in written}
-        parents = model.parents.tolist()
+        parents, starts = tree
+        moved = {j for j, at in enumerate(starts) if j and at in written}
         carriers = []
         for joint in joints:
             carrier = joint

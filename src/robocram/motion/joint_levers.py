@@ -141,9 +141,13 @@ def links_below(world: World, robot: str, joints: Sequence[str]) -> tuple[str, .
     """The links some joint of ``joints`` moves (those below it), in the world's link order."""
     model = world.robot(robot).description.model
     tree = model.derived(_tree)
-    below: set[str] = set()
-    for joint in joints:
-        below.update(_chains(tree, model.joints[joint].child))
+    todo = [model.joints[j].child for j in joints]
+    below = set(todo)
+    while todo:
+        for child, _ in tree.get(todo.pop(), ()):
+            if child not in below:
+                below.add(child)
+                todo.append(child)
     return tuple(link for link in world.link_names(robot) if link in below)
 
 
