@@ -87,6 +87,22 @@ def test_held_objects_and_allowed_hands_follow_the_judges_rules(world: World) ->
     assert worst < BULLET_MARGIN + 0.001
 
 
+def test_checkers_after_a_base_move_follow_the_judge(world: World) -> None:
+    """A checker made at a second stand, holding the mug, reuses what outlives a stand
+    (the held mug's parts, the rules' answers) and still answers as the judge does."""
+    spec = world.robot("pr2").description.arms["right"]
+    with world.stored_state():
+        world.attach("mug-1", "pr2", spec.tool_frame)
+        for k, shift in enumerate((0.0, 0.2)):  # along the counter
+            x, y, z = AT_COUNTER.position
+            place = (x + 0.95 * shift, y + 0.3 * shift, z)
+            world.set_pose("pr2", Pose(place, AT_COUNTER.orientation))
+            judge = BulletScene(world, "pr2", JOINTS, allowed_links=hand_links(spec))
+            compared, near, worst = _compare(world, judge, 20 + k)
+            assert compared > 80 and near > 20
+            assert worst < BULLET_MARGIN + 0.001
+
+
 def test_levers_match_the_worlds_at_the_configuration_checked_last(world: World) -> None:
     judge = BulletScene(world, "pr2", JOINTS)
     coal = CoalClearance(judge)

@@ -50,7 +50,7 @@ class SetupCache:
     world: World
     _kept: dict[tuple[object, ...], Setup] = field(default_factory=dict)
     _answers: dict[tuple[object, ...], NDArray[np.bool_]] = field(default_factory=dict)
-    _held: dict[tuple[str, str], tuple[WorldObject, tuple[float, ...], list[Part]]] = field(
+    _held: dict[tuple[str, str, str], tuple[WorldObject, tuple[float, ...], list[Part]]] = field(
         default_factory=dict
     )
 
@@ -141,7 +141,7 @@ class SetupCache:
         obj = world.object(name)
         attachment = world.attached_to(obj)
         grip = _pose_key(attachment.link_T_obj) if attachment is not None else None
-        kept = self._held.get((name, link))
+        kept = self._held.get((robot.name, name, link))
         if grip is not None and kept is not None and kept[0] is obj and kept[1] == grip:
             return kept[2]
         joint, frame = geometry.frame(link)
@@ -152,7 +152,7 @@ class SetupCache:
             for piece in coal_geometries(shape.kind, shape.extents, shape.mesh):
                 parts.append(part(name, joint, placement, piece))
         if grip is not None:
-            self._held[(name, link)] = (obj, grip, parts)
+            self._held[(robot.name, name, link)] = (obj, grip, parts)
         return parts
 
 
