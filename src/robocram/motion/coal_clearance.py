@@ -7,7 +7,9 @@ the same question from coal: pinocchio places the moving links (and what they ho
 bound leaves out far pairs, and coal's distances decide the rest
 (:mod:`clearance_pairs`). The world's other objects come from a cache kept with the world
 (:mod:`obstacle_shapes`), rebuilt only for objects that moved, so a motion pays no
-snapshot.
+snapshot; the pairs come from setups kept with the world too (:mod:`clearance_setup`).
+A check reads only the moved joints' placements from pinocchio, and a step's speed
+bounds come from pinocchio's joint velocities.
 
 The rules are the world checker's (:class:`~robocram.motion.bullet_scene.BulletScene`,
 its ``judge``): the same links, allowed contacts, start contacts and held objects. Coal's
@@ -72,7 +74,7 @@ class CoalClearance:
         self._velocity_slots = np.array([kin.joint(j).idx_v for j in judge.joints], dtype=np.intp)
         self._q = self._slots.q0  # pinocchio's configuration checked last
         self._base_matrix = self._base.homogeneous
-        pin.forwardKinematics(self._model, self._data, self._slots.q0)  # as it stands
+        pin.forwardKinematics(self._model, self._data, self._slots.q0)  # offsets: from q0
         tree = world.robot(robot).description.model.derived(_pin_tree)
         self._carriers = _Carriers.of(tree, self._data, self._slots, setup.joints)
         self._frames: FloatArray = np.zeros((len(self._joints), 4, 4))  # placements, last check
