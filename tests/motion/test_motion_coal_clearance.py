@@ -87,6 +87,22 @@ def test_held_objects_and_allowed_hands_follow_the_judges_rules(world: World) ->
     assert worst < BULLET_MARGIN + 0.001
 
 
+def test_checkers_after_a_base_move_follow_the_judge(world: World) -> None:
+    """A checker made at a second stand, holding the mug, reuses what outlives a stand
+    (the held mug's parts, the rules' answers) and still answers as the judge does."""
+    spec = world.robot("pr2").description.arms["right"]
+    with world.stored_state():
+        world.attach("mug-1", "pr2", spec.tool_frame)
+        for k, shift in enumerate((0.0, 0.2)):  # along the counter
+            x, y, z = AT_COUNTER.position
+            place = (x + 0.95 * shift, y + 0.3 * shift, z)
+            world.set_pose("pr2", Pose(place, AT_COUNTER.orientation))
+            judge = BulletScene(world, "pr2", JOINTS, allowed_links=hand_links(spec))
+            compared, near, worst = _compare(world, judge, 20 + k)
+            assert compared > 80 and near > 20
+            assert worst < BULLET_MARGIN + 0.001
+
+
 def test_levers_match_the_worlds_at_the_configuration_checked_last(world: World) -> None:
     judge = BulletScene(world, "pr2", JOINTS)
     coal = CoalClearance(judge)
@@ -97,6 +113,26 @@ def test_levers_match_the_worlds_at_the_configuration_checked_last(world: World)
             expected = judge.joint_levers(links)
         coal.clearances(q)
         np.testing.assert_allclose(coal.joint_levers(links), expected, atol=1e-6)  # Bullet: float32
+
+
+def test_link_speeds_match_the_worlds_at_the_configuration_checked_last(world: World) -> None:
+    """Coal's speeds come from pinocchio's joint velocities, the world's from its frames."""
+    spec = world.robot("pr2").description.arms["right"]
+    with world.stored_state():
+        world.attach("mug-1", "pr2", spec.tool_frame)  # its radius rides on the hand
+        judge = BulletScene(world, "pr2", JOINTS)
+        coal = CoalClearance(judge)
+        links = judge.lever_links()
+        assert "mug-1" in links
+        rng = np.random.default_rng(13)
+        for q in _configurations(world, 13, 5):
+            delta = rng.normal(size=len(JOINTS))
+            with judge.posed():
+                judge.clearances(q)
+                expected = judge.link_speeds(links, delta)
+            coal.clearances(q)
+            # Bullet's frames are float32
+            np.testing.assert_allclose(coal.link_speeds(links, delta), expected, atol=1e-5)
 
 
 def test_obstacle_shapes_follow_what_moved_and_are_read_only_when_joints_move(

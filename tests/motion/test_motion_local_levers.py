@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 from robocram.motion.bullet_scene import BulletScene
+from robocram.motion.coal_clearance import CoalClearance
 from robocram.motion.segment_check import (
     CheckCounter,
     _LocalSteps,
@@ -55,7 +56,7 @@ def test_no_link_frame_moves_further_than_the_step_bound(seed: int) -> None:
     qa, qb = _random_configuration(rng, scene), _random_configuration(rng, scene)
     tight = 0.0
     with scene.posed():
-        steps = _LocalSteps.of(scene, qa, qb, bound)
+        steps = _LocalSteps.of(scene, qa, qb)
         for s in rng.uniform(0.0, 0.9, 4):
             gap = float(rng.uniform(0.02, 0.3))
             scene.clearances(qa + (qb - qa) * s)
@@ -83,7 +84,7 @@ def test_no_point_moves_further_than_the_vector_bound(seed: int) -> None:
     with scene.posed():
         for _ in range(3):
             qa, qb = _random_configuration(rng, scene), _random_configuration(rng, scene)
-            steps = _LocalSteps.of(scene, qa, qb, bound)
+            steps = _LocalSteps.of(scene, qa, qb)
             s = float(rng.uniform(0.0, 0.5))
             gap = float(rng.uniform(0.1, 0.4))
             scene.clearances(qa + (qb - qa) * s)
@@ -100,6 +101,39 @@ def test_no_point_moves_further_than_the_vector_bound(seed: int) -> None:
             assert moved.max() <= gap + 1e-6, (links[int(moved.argmax())], moved.max(), gap)
             tight = max(tight, float(moved.max() / gap))
     assert tight > 0.5
+    world.close()
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_the_speed_bound_grows_no_faster_than_the_growth_term(seed: int) -> None:
+    """``G`` bounds how fast ``V`` (a link's speed bound) changes along the segment: for
+    any two configurations of it, ``V`` at the later one is at most ``V`` at the earlier
+    one plus ``G`` times the fraction between (what a step relies on), holding the mug
+    (whose radius rides on the wrist)."""
+    world = tabletop_scene("pr2").world
+    world.attach("mug-1", "pr2", "r_wrist_roll_link")
+    checker = CoalClearance(BulletScene(world, "pr2", JOINTS))
+    rng = np.random.default_rng(200 + seed)
+    fractions = np.linspace(0.0, 1.0, 101)
+    tight = 0.0
+    for _ in range(6):
+        qa = _random_configuration(rng, checker.judge)
+        qb = _random_configuration(rng, checker.judge)
+        steps = _LocalSteps.of(checker, qa, qb)
+        assert "mug-1" in steps.links
+        speeds = []
+        for s in fractions:
+            checker.clearances(qa + (qb - qa) * s)
+            speeds.append(checker.link_speeds(steps.links, qb - qa))
+        speed = np.array(speeds)  # (fractions, links)
+        for k in range(1, len(fractions)):
+            ds = fractions[k] - fractions[:k]  # from every earlier configuration
+            growth = speed[k][None, :] - speed[:k]
+            assert (growth <= steps.turn[None, :] * ds[:, None] + 1e-9).all()
+            moving = steps.turn > 0.0
+            ratio = growth[:, moving] / (steps.turn[moving] * ds[:, None])
+            tight = max(tight, float(ratio.max()))
+    assert tight > 0.05  # the bound is not vacuous
     world.close()
 
 

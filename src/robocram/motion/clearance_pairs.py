@@ -30,36 +30,50 @@ FOCUS = 0.1
 
 @dataclass(frozen=True)
 class PairTable:
-    """Pairs as arrays: per pair its part, label and the obstacle piece's box."""
+    """Pairs as arrays, coordinates first (one row per axis: a check's arithmetic runs on
+    contiguous rows): per pair its part, label and obstacle piece, the piece's box."""
 
-    part: NDArray[np.intp]  # per pair: the part
-    label: NDArray[np.intp]  # per pair: its part's label, numbered
-    piece: NDArray[np.intp]  # per pair: the obstacle piece
-    centres: FloatArray  # (pairs, 3) the piece's box centre in map
-    halves: FloatArray  # (pairs, 3) its half extents
-    radii: FloatArray  # (pairs,) the part's ball radius
+    ints: NDArray[np.intp]  # (3, pairs): the part, its label (numbered), the piece
+    floats: FloatArray  # (7, pairs): the piece's box centre in map, its half extents,
+    # the part's ball radius
+
+    @property
+    def size(self) -> int:
+        """How many pairs."""
+        return int(self.ints.shape[1])
 
     def subset(self, rows: NDArray[np.intp]) -> PairTable:
         """The pairs at ``rows``."""
-        return PairTable(
-            self.part[rows], self.label[rows], self.piece[rows], self.centres[rows],
-            self.halves[rows], self.radii[rows],
-        )  # fmt: skip
+        return PairTable(self.ints[:, rows], self.floats[:, rows])
 
     def bounds(self, centres: FloatArray, slack: float) -> FloatArray:
         """Per pair: a lower bound [m] on its distance less ``slack``, with the parts'
-        ball centres at ``centres``."""
-        lower = box_distances(centres[self.part], self.centres, self.halves)
-        lower -= self.radii + slack
+        ball centres at ``centres`` (3, parts)."""
+        outside = np.abs(centres.take(self.ints[0], axis=1) - self.floats[:3])
+        outside -= self.floats[3:6]
+        np.maximum(outside, 0.0, out=outside)
+        outside *= outside
+        lower = np.sqrt(outside[0] + outside[1] + outside[2])
+        lower -= self.floats[6]
+        lower -= slack
         return lower
 
     def box_bounds(self, centres: FloatArray, halves: FloatArray, slack: float) -> FloatArray:
         """Per pair: the tighter of the ball's bound and that of the part's map-aligned
-        box (``halves`` per part, about the same centre)."""
-        points = centres[self.part]
-        boxes = box_distances(points, self.centres, self.halves + halves[self.part])
-        balls = box_distances(points, self.centres, self.halves) - self.radii
-        return np.maximum(boxes, balls) - slack
+        box (``halves`` (3, parts), about the same centre), less ``slack``."""
+        part = self.ints[0]
+        ball = np.abs(centres.take(part, axis=1) - self.floats[:3])
+        ball -= self.floats[3:6]
+        box = ball - halves.take(part, axis=1)
+        np.maximum(ball, 0.0, out=ball)
+        np.maximum(box, 0.0, out=box)
+        ball *= ball
+        box *= box
+        lower = np.sqrt(ball[0] + ball[1] + ball[2])
+        lower -= self.floats[6]
+        np.maximum(lower, np.sqrt(box[0] + box[1] + box[2]), out=lower)
+        lower -= slack
+        return lower
 
 
 @dataclass
@@ -67,7 +81,7 @@ class _Focus:
     """The pairs that can be near while no part's ball has moved :data:`FOCUS` from
     ``centres``: a check walks a segment in small steps, so most checks reuse it."""
 
-    centres: FloatArray  # (parts, 3) where the balls were when it was made
+    centres: FloatArray  # (3, parts) where the balls were when it was made
     table: PairTable
 
 
@@ -77,9 +91,8 @@ class ClearancePairs:
 
     parts: tuple[Part, ...]
     part_row: NDArray[np.intp]  # per part: the row of its joint in the placements
-    part_centres: FloatArray  # (parts, 3) ball centres in their joint's frame
-    part_axes: FloatArray  # (parts, 3, 3) their boxes' axes in their joint's frame
-    part_halves: FloatArray  # (parts, 3) their boxes' half extents
+    part_boxes: FloatArray  # (parts, 4, 4) per part in its joint's frame: its box's axes
+    # scaled by its half extents, and its ball's centre (a placement's last column)
     names: tuple[str, ...]  # the labels by number
     table: PairTable
     geometries: tuple[coal.CollisionGeometry, ...]  # per piece: its geometry
@@ -91,40 +104,48 @@ class ClearancePairs:
         cls,
         parts: list[Part],
         rows: dict[int, int],
-        balls: tuple[FloatArray, FloatArray],
+        balls: ReachBalls,
         shapes: StackedShapes,
-        rules: PairRules,
+        checked: NDArray[np.bool_],
+        allowed_pairs: Collection[LinkPair],
         within: float,
     ) -> ClearancePairs:
-        """The pairs the rules check whose part's ball (``balls``: centres and radii in
-        map, where it can be at all) comes within ``within`` [m] of the piece's box;
-        ``rows`` gives each pinocchio joint's row in the placements of a check."""
+        """The pairs the rules check (``checked``: ``[label, object]``, labels numbered
+        as they first come in ``parts``) but the start contacts ``allowed_pairs`` (part
+        label, piece label), whose part's ball comes within ``within`` [m] of the piece's
+        box; ``rows`` gives each pinocchio joint's row in the placements of a check."""
         owner, centres, halves = shapes.owner, shapes.centres, shapes.halves
-        lower = box_distances(balls[0][:, None, :], centres[None], halves[None])
-        near = lower - balls[1][:, None] < within
-        near &= rules.matrix(parts, shapes.shapes, near, owner)[:, owner]
-        if rules.allowed_pairs:  # start contacts the motion may keep
-            for m, piece in zip(*np.nonzero(near), strict=True):
-                near[m, piece] = (parts[m].label, shapes.labels[piece]) not in rules.allowed_pairs
-        part, piece = np.nonzero(near)
         numbers = {label: k for k, label in enumerate(dict.fromkeys(p.label for p in parts))}
         part_label = np.array([numbers[p.label] for p in parts], dtype=np.intp)
-        geometries, placements = shapes.geometries, shapes.placements
+        lower = box_distances(balls.centres[:, None, :], centres[None], halves[None])
+        near = lower[balls.anchor] - balls.radii[:, None] < within  # [part, piece]
+        near &= checked[part_label][:, owner]
+        if allowed_pairs:  # start contacts the motion may keep
+            for m, piece in zip(*np.nonzero(near), strict=True):
+                near[m, piece] = (parts[m].label, shapes.labels[piece]) not in allowed_pairs
+        part, piece = np.nonzero(near)
         radii = np.array([p.radius for p in parts], dtype=float).reshape(-1)
+        boxes = np.zeros((len(parts), 4, 4))
+        boxes[:, 3, 3] = 1.0
+        if parts:
+            axes = np.array([p.axes for p in parts], dtype=float)
+            boxes[:, :3, :3] = axes * np.array([p.halves for p in parts])[:, None, :]
+            boxes[:, :3, 3] = np.array([p.centre for p in parts], dtype=float)
+        floats = np.empty((7, len(part)))
+        floats[:3] = np.take(centres, piece, axis=0).T
+        floats[3:6] = np.take(halves, piece, axis=0).T
+        floats[6] = radii[part]
         table = PairTable(
-            part.astype(np.intp), part_label[part].astype(np.intp), piece.astype(np.intp),
-            centres[piece], halves[piece], radii[part],
-        )  # fmt: skip
+            np.array([part, part_label[part], piece], dtype=np.intp).reshape(3, -1), floats
+        )
         return cls(
             tuple(parts),
             np.array([rows[p.joint] for p in parts], dtype=np.intp),
-            _stack([p.centre[None, :] for p in parts]),
-            np.array([p.axes for p in parts], dtype=float).reshape(-1, 3, 3),
-            _stack([p.halves[None, :] for p in parts]),
+            boxes,
             tuple(numbers),
             table,
-            geometries,
-            placements,
+            shapes.geometries,
+            shapes.placements,
         )
 
     def gaps(self, frames: FloatArray, slack: float, reach: float) -> dict[str, float]:
@@ -132,58 +153,84 @@ class ClearancePairs:
 
         ``frames`` (rows, 4, 4) are the joints' placements in map now.
         """
-        if not len(self.table.part):
+        if not self.table.size:
             return {}
-        rotations, origins = frames[self.part_row, :3, :3], frames[self.part_row, :3, 3]
-        centres = np.einsum("mij,mj->mi", rotations, self.part_centres) + origins
+        boxes = frames[self.part_row] @ self.part_boxes  # the parts' boxes in map
+        centres = boxes[:, :3, 3].T
         table = self._focused(centres, slack, reach).table
-        halves = np.einsum("mij,mj->mi", np.abs(rotations @ self.part_axes), self.part_halves)
+        if not table.size:
+            return {}
+        spans = np.abs(boxes[:, :3, :3])
+        halves = (spans[:, :, 0] + spans[:, :, 1] + spans[:, :, 2]).T
         lower = table.box_bounds(centres, halves, slack)
-        near = np.flatnonzero(lower < reach)
+        near = (lower < reach).nonzero()[0]
         if not near.size:
             return {}
-        labels = table.label[near]
-        near = near[np.lexsort((lower[near], labels))]
-        labels = table.label[near]
-        ends = [*np.flatnonzero(labels[1:] != labels[:-1]).tolist(), len(near) - 1]
-        order, bounds = near.tolist(), lower[near].tolist()
+        ints = table.ints[:, near].tolist()
+        # by label, nearest bound first (ties: in table order)
+        order = sorted(zip(ints[1], lower[near].tolist(), ints[0], ints[2], strict=True))
+        return self._distances(order, frames, slack, reach)
+
+    def _distances(
+        self,
+        order: list[tuple[int, float, int, int]],
+        frames: FloatArray,
+        slack: float,
+        reach: float,
+    ) -> dict[str, float]:
+        """Per label of ``order`` (label, bound, part, piece; sorted): coal's least
+        distance less ``slack``, pairs tried until a bound cannot beat the least found."""
         request, result = coal.DistanceRequest(), coal.DistanceResult()
+        distance, geometries, placements = coal.distance, self.geometries, self.placements
+        parts = self.parts
         gaps: dict[str, float] = {}
         placed: dict[int, pin.SE3] = {}  # per part: its placement now
-        start = 0
-        for end in ends:
-            best = reach
-            for at in range(start, end + 1):
-                if bounds[at] >= best:
-                    break  # the label's other pairs are farther still
-                k = order[at]
-                m, piece = int(table.part[k]), int(table.piece[k])
-                part = self.parts[m]
-                pose = placed.get(m)
-                if pose is None:
-                    pose = placed[m] = pin.SE3(frames[self.part_row[m]]) * part.placement
-                result.clear()  # a result keeps the least distance of all its calls
-                found = coal.distance(
-                    part.geometry, pose, self.geometries[piece], self.placements[piece],
-                    request, result,
-                )  # fmt: skip
-                best = min(best, found - slack)
-            if best < reach:
-                gaps[self.names[int(labels[start])]] = best
-            start = end + 1
+        label, best = order[0][0], reach
+        for at, bound, m, piece in order:
+            if at != label:
+                if best < reach:
+                    gaps[self.names[label]] = best
+                label, best = at, reach
+            if bound >= best:
+                continue  # the label's other pairs are farther still
+            pose = placed.get(m)
+            if pose is None:
+                pose = placed[m] = pin.SE3(frames[self.part_row[m]]) * parts[m].placement
+            result.clear()  # a result keeps the least distance of all its calls
+            found = (
+                distance(
+                    parts[m].geometry, pose, geometries[piece], placements[piece], request, result
+                )
+                - slack
+            )
+            if found < best:
+                best = found
+        if best < reach:
+            gaps[self.names[label]] = best
         return gaps
 
     def _focused(self, centres: FloatArray, slack: float, reach: float) -> _Focus:
-        """The focus for balls at ``centres``: the last one unless a ball has moved
-        :data:`FOCUS` since (a pair left out was farther than the reach plus that)."""
+        """The focus for balls at ``centres`` (3, parts): the last one unless a ball has
+        moved :data:`FOCUS` since (a pair left out was farther than the reach plus that)."""
         focus = self._focus
         if focus is not None:
             moved = centres - focus.centres
-            if float((moved * moved).sum(axis=1).max()) < FOCUS * FOCUS:
+            moved *= moved
+            if float((moved[0] + moved[1] + moved[2]).max()) < FOCUS * FOCUS:
                 return focus
-        rows = np.flatnonzero(self.table.bounds(centres, slack) < reach + FOCUS)
+        rows = (self.table.bounds(centres, slack) < reach + FOCUS).nonzero()[0]
         focus = self._focus = _Focus(centres, self.table.subset(rows))
         return focus
+
+
+@dataclass(frozen=True)
+class ReachBalls:
+    """Per part, a ball in map it stays in for any values of the planned joints: about
+    one of a few anchors (the topmost planned joint above it)."""
+
+    centres: FloatArray  # (anchors, 3) [m]
+    anchor: NDArray[np.intp]  # per part: its anchor
+    radii: FloatArray  # per part [m]
 
 
 @dataclass(frozen=True)
@@ -192,32 +239,17 @@ class PairRules:
 
     rules: AllowedContacts
     held: frozenset[str]  # labels of held objects: only start contacts are allowed them
-    allowed_pairs: Collection[LinkPair]  # (label, obstacle piece label) the motion starts with
 
-    def matrix(
-        self,
-        parts: list[Part],
-        shapes: Sequence[ObstacleShapes],
-        near: NDArray[np.bool_],
-        owner: NDArray[np.intp],
-    ) -> NDArray[np.bool_]:
-        """``[part, object]``: whether the rules check them; asked once per label and
-        object, and only where some piece of the object is ``near`` the part."""
-        checked = np.zeros((len(parts), len(shapes)), dtype=bool)
-        rows, pieces = np.nonzero(near)
-        checked[rows, owner[pieces]] = True  # first: which objects each part comes near
-        asked: dict[tuple[str, int], bool] = {}
-        for m, k in zip(*np.nonzero(checked), strict=True):
-            label = parts[m].label
-            answer = asked.get((label, k))
-            if answer is None:
-                obj = shapes[k].obj
-                answer = label in self.held or not self.rules.allows(
-                    label, Other(obj.name, obj.type)
-                )
-                asked[(label, k)] = answer
-            checked[m, k] = answer
-        return checked
+    def matrix(self, labels: Sequence[str], shapes: Sequence[ObstacleShapes]) -> NDArray[np.bool_]:
+        """``[label, object]``: whether the rules check them."""
+        return np.array(
+            [
+                [label in self.held or not self.rules.allows(label, Other(s.obj.name, s.obj.type))
+                 for s in shapes]
+                for label in labels
+            ],
+            dtype=bool,
+        ).reshape(len(labels), len(shapes))  # fmt: skip
 
 
 def box_distances(points: FloatArray, centres: FloatArray, halves: FloatArray) -> FloatArray:
@@ -226,7 +258,3 @@ def box_distances(points: FloatArray, centres: FloatArray, halves: FloatArray) -
     np.maximum(outside, 0.0, out=outside)
     outside *= outside
     return np.asarray(np.sqrt(outside.sum(axis=-1)), dtype=float)
-
-
-def _stack(arrays: list[FloatArray]) -> FloatArray:
-    return np.concatenate(arrays) if arrays else np.zeros((0, 3))

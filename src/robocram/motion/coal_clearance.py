@@ -7,7 +7,9 @@ the same question from coal: pinocchio places the moving links (and what they ho
 bound leaves out far pairs, and coal's distances decide the rest
 (:mod:`clearance_pairs`). The world's other objects come from a cache kept with the world
 (:mod:`obstacle_shapes`), rebuilt only for objects that moved, so a motion pays no
-snapshot.
+snapshot; the pairs come from setups kept with the world too (:mod:`clearance_setup`).
+A check reads only the moved joints' placements from pinocchio, and a step's speed
+bounds come from pinocchio's joint velocities.
 
 The rules are the world checker's (:class:`~robocram.motion.bullet_scene.BulletScene`,
 its ``judge``): the same links, allowed contacts, start contacts and held objects. Coal's
@@ -19,29 +21,27 @@ anything, the judge decides whether the configuration collides, as on the world 
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 import pinocchio as pin
 from numpy.typing import NDArray
 
-from robocram.kinematics.robot_kinematics import pose_to_se3
+from robocram.kinematics.robot_kinematics import pose_to_se3, robot_kinematics
 from robocram.motion.bullet_scene import CLEARANCE_REACH, BulletScene
-from robocram.motion.clearance_pairs import ClearancePairs, PairRules
-from robocram.motion.coal_shapes import coal_geometries
+from robocram.motion.clearance_setup import SetupCache
 from robocram.motion.configuration_checker import Configuration, LinkPair
 from robocram.motion.joint_levers import LeverData
 from robocram.motion.joint_slots import JointSlots
 from robocram.motion.joint_trajectory import FloatArray
-from robocram.motion.obstacle_shapes import DRIFT, StackedShapes, obstacle_cache
-from robocram.motion.robot_geometry import Part, RobotGeometry, part
-from robocram.world import World
+from robocram.motion.obstacle_shapes import DRIFT
+from robocram.motion.robot_geometry import RobotGeometry
+from robocram.robots import RobotModel
 
 # [m] PyBullet grows convex hulls by a collision margin of 1 mm and its GJK is off by up
 # to ~0.7 mm more; coal's distances are lowered by this so they never exceed PyBullet's
 # (tests/motion/test_motion_coal_clearance.py measures it near the kitchen counter).
 BULLET_MARGIN = 0.002
-KEPT_SETUPS = 8  # checker setups kept per world (a stand's motions use a few)
 
 
 class CoalClearance:
@@ -63,12 +63,20 @@ class CoalClearance:
         self._base = pose_to_se3(world.pose(robot))
         self._slack = margin + DRIFT + judge.distance  # [m] taken off every coal distance
         pin.forwardKinematics(self._model, self._data, self._slots.q0)
-        setup = world.derived(_SetupCache).setup(self, margin)
+        setup = world.derived(SetupCache).setup(
+            judge, self._geometry, self._data, self._base, margin
+        )
         self._joints = setup.joints  # the pinocchio joints whose placements a check reads
         self._rows = {j: k for k, j in enumerate(setup.joints)}
         self._pairs = setup.pairs
         self._levers: tuple[NDArray[np.intp], FloatArray] | None = None  # rows, frames
+        self._speeds: dict[tuple[str, ...], _LinkSpeeds] = {}  # per asked links
+        self._velocity_slots = np.array([kin.joint(j).idx_v for j in judge.joints], dtype=np.intp)
+        self._q = self._slots.q0  # pinocchio's configuration checked last
         self._base_matrix = self._base.homogeneous
+        pin.forwardKinematics(self._model, self._data, self._slots.q0)  # offsets: from q0
+        tree = world.robot(robot).description.model.derived(_pin_tree)
+        self._carriers = _Carriers.of(tree, self._data, self._slots, setup.joints)
         self._frames: FloatArray = np.zeros((len(self._joints), 4, 4))  # placements, last check
         self._last: tuple[bytes, dict[str, float]] | None = None  # q -> its clearances
 
@@ -94,9 +102,9 @@ class CoalClearance:
         key = values.tobytes()
         if self._last is not None and self._last[0] == key:
             return dict(self._last[1])
-        pin.forwardKinematics(self._model, self._data, self._slots.full(values))
-        oMi = self._data.oMi
-        self._frames = self._base_matrix @ np.array([oMi[j].homogeneous for j in self._joints])
+        self._q = self._slots.full(values)
+        pin.forwardKinematics(self._model, self._data, self._q)
+        self._frames = self._carriers.frames(self._data, self._base_matrix)
         gaps = self._pairs.gaps(self._frames, self._slack, CLEARANCE_REACH)
         self._last = (key, gaps)
         return dict(gaps)
@@ -130,8 +138,14 @@ class CoalClearance:
         """Per link: the most [m] a point of it moves per unit of a segment whose joints
         change by ``delta``, at the configuration checked last (see
         :meth:`BulletScene.link_speeds`)."""
-        data = self.judge.lever_data()
-        return data.speeds(links, *self._lever_frames(), delta)
+        speeds = self._speeds.get(tuple(links))
+        if speeds is None:
+            data = self.judge.lever_data()
+            speeds = self._speeds[tuple(links)] = _LinkSpeeds.of(self, data, links)
+        velocity = np.zeros(self._model.nv)
+        velocity[self._velocity_slots] = delta  # the planned joints' (as LeverData's)
+        pin.forwardKinematics(self._model, self._data, self._q, velocity)
+        return speeds.speeds(self._data)
 
     def lever_data(self) -> LeverData:
         """What the levers need beyond the frames (the judge's)."""
@@ -152,123 +166,82 @@ class CoalClearance:
 
 
 @dataclass(frozen=True)
-class _Setup:
-    """What a checker reads per check: the joints whose placements it needs and its
-    pairs (they hold the focus of the checks made so far)."""
+class _LinkSpeeds:
+    """The asked links' speed bounds from pinocchio's joint velocities (a joint's spatial
+    velocity in its own frame, linear then angular): one matrix takes them to each link
+    frame's velocity and angular velocity, in the frame of the joint it rides on (a norm
+    does not depend on the frame)."""
 
-    joints: list[int]
-    pairs: ClearancePairs
-    obstacles: StackedShapes  # kept so that its id in the key is never reused
+    joints: list[int]  # the pinocchio joints whose velocities are read
+    matrix: FloatArray  # (6 links, 6 joints)
+    radii: FloatArray  # (links,) [m] about each link's frame (held objects included)
 
     @classmethod
-    def of(cls, checker: CoalClearance, obstacles: StackedShapes, margin: float) -> _Setup:
-        judge, geometry = checker.judge, checker._geometry
-        world = judge.world
-        parts = _parts(world, judge, geometry)
-        carriers = {geometry.frame(link)[0] for link in judge.moving_links}
-        joints = sorted({p.joint for p in parts} | carriers)
-        rows = {j: k for k, j in enumerate(joints)}
-        balls = _reach_balls(geometry, judge.joints, parts, checker._data, checker._base)
-        held = frozenset(world.attachments(judge.robot))
-        rules = PairRules(judge.rules, held, judge.allowed_pairs)
-        within = CLEARANCE_REACH + margin + DRIFT + judge.distance
-        return cls(
-            joints, ClearancePairs.of(parts, rows, balls, obstacles, rules, within), obstacles
-        )
+    def of(cls, checker: CoalClearance, data: LeverData, links: Sequence[str]) -> _LinkSpeeds:
+        rows = data.link_rows(links)
+        placed = [checker._geometry.frame(data.frame_links[k]) for k in data.centre_rows[rows]]
+        joints = sorted({joint for joint, _ in placed})
+        matrix = np.zeros((6 * len(placed), 6 * len(joints)))
+        for k, (joint, placement) in enumerate(placed):
+            row, col = 6 * k, 6 * joints.index(joint)
+            x, y, z = placement[:3, 3]  # the frame's origin p: w x p = -[p]x w
+            matrix[row : row + 3, col : col + 3] = np.eye(3)
+            matrix[row : row + 3, col + 3 : col + 6] = [[0.0, z, -y], [-z, 0.0, x], [y, -x, 0.0]]
+            matrix[row + 3 : row + 6, col + 3 : col + 6] = np.eye(3)
+        return cls(joints, matrix, np.asarray(data.radii[rows], dtype=float))
+
+    def speeds(self, posed: pin.Data) -> FloatArray:
+        """Per link: its frame's speed plus its angular speed times its radius, with
+        ``posed``'s joint velocities."""
+        velocities = posed.v.tolist()  # views: read them now
+        stacked = np.array([velocities[j].vector for j in self.joints]).reshape(-1)
+        both = (self.matrix @ stacked).reshape(-1, 2, 3)
+        both *= both
+        norms = np.sqrt(both.sum(axis=2))
+        return np.asarray(norms[:, 0] + norms[:, 1] * self.radii, dtype=float)
 
 
-@dataclass
-class _SetupCache:
-    """The setups of the last checkers of one world (kept with it, ``World.derived``): the
-    motions at one stand share theirs, and with them the pairs' focus."""
-
-    world: World
-    _kept: dict[tuple[object, ...], _Setup] = field(default_factory=dict)
-
-    def setup(self, checker: CoalClearance, margin: float) -> _Setup:
-        """``checker``'s setup: a kept one if everything it depends on is as it was."""
-        obstacles = _obstacles(self.world, checker.judge)
-        key = (id(obstacles), margin, *_setup_key(checker))
-        found = self._kept.get(key)
-        if found is None or found.obstacles is not obstacles:
-            found = self._kept[key] = _Setup.of(checker, obstacles, margin)
-            if len(self._kept) > KEPT_SETUPS:
-                del self._kept[next(iter(self._kept))]  # the oldest
-        return found
+_PinTree = tuple[list[int], list[int]]  # per pinocchio joint: its parent, its first q index
 
 
-def _setup_key(checker: CoalClearance) -> tuple[object, ...]:
-    """What a setup depends on beyond the obstacles: the judge's rules, what the robot
-    holds and where, and where the anchors of the parts' reach balls are."""
-    judge, geometry = checker.judge, checker._geometry
-    world = judge.world
-    kin = geometry.kinematics
-    held = []
-    carriers = [kin.joint(j).pin_id for j in judge.joints]
-    for obj, link in sorted(world.attachments(judge.robot).items()):
-        attachment = world.attached_to(obj)
-        pose = attachment.link_T_obj if attachment is not None else None
-        held.append((obj, link, pose))
-        carriers.append(geometry.frame(link)[0])
-    anchors = sorted({geometry.anchor(j, judge.joints)[0] for j in carriers})
-    places = tuple(
-        tuple((checker._base * checker._data.oMi[a]).translation.tolist()) for a in anchors
-    )
-    return (
-        judge.robot, judge.joints, judge.allowed_links, judge.allowed_pairs, judge.distance,
-        tuple(held), places,
-    )  # fmt: skip
+def _pin_tree(model: RobotModel) -> _PinTree:
+    """Pinocchio's joint tree of ``model`` (kept with it: reading it costs ~10 us)."""
+    kin = robot_kinematics(model)
+    return kin.model.parents.tolist(), kin.model.idx_qs.tolist()
 
 
-def _parts(world: World, judge: BulletScene, geometry: RobotGeometry) -> list[Part]:
-    """The parts the judge asks about: its moving links but the allowed ones (named as
-    PyBullet names their link), and every held object (named by the object)."""
-    handle = world.robot(judge.robot)
-    names = handle.index_names()
-    asked = {
-        handle.link_index[link] for link in judge.moving_links if link not in judge.allowed_links
-    } & handle.colliders
-    labels = tuple(
-        (link, names[index])
-        for link in geometry.parts
-        if (index := handle.link_index.get(link, -2)) in asked
-    )
-    parts = list(geometry.named_parts(labels))
-    for obj, link in world.attachments(handle).items():
-        joint, frame = geometry.frame(link)
-        link_T_map = world.link_pose(handle, link).inverse()
-        for shape in world.collision_shapes(obj):
-            placement = pin.SE3(frame) * pose_to_se3(link_T_map * shape.pose)
-            for piece in coal_geometries(shape.kind, shape.extents, shape.mesh):
-                parts.append(part(obj, joint, placement, piece))
-    return parts
+@dataclass(frozen=True)
+class _Carriers:
+    """The joints' placements from those of the joints a check moves: reading a placement
+    from pinocchio costs more than composing it, and the joints between stay as they were
+    when the checker was made."""
 
+    read: list[int]  # the pinocchio joints read per check: moved ones, 0 for the root
+    row: NDArray[np.intp]  # per joint of a check: its carrier's row in ``read``
+    offsets: FloatArray  # (joints, 4, 4) each joint's placement in its carrier's frame
 
-def _obstacles(world: World, judge: BulletScene) -> StackedShapes:
-    """The shapes of every object the judge checks against: all but the robot, what it
-    holds and what any link may touch (the floor)."""
-    held = set(world.attachments(judge.robot))
-    skip = {judge.robot, *held, *(o.name for o in judge.anywhere())}
-    cache = obstacle_cache(world)
-    return cache.stacked(
-        [cache.shapes(world, obj) for obj in world.objects() if obj.name not in skip]
-    )
+    @classmethod
+    def of(cls, tree: _PinTree, data: pin.Data, slots: JointSlots, joints: list[int]) -> _Carriers:
+        """For ``joints``, from ``data`` posed at ``slots.q0``."""
+        written = {*slots.plain_idx.tolist(), *slots.cont_idx.tolist()}
+        parents, starts = tree
+        moved = {j for j, at in enumerate(starts) if j and at in written}
+        carriers = []
+        for joint in joints:
+            carrier = joint
+            while carrier and carrier not in moved:
+                carrier = parents[carrier]
+            carriers.append(carrier)
+        read = sorted(set(carriers))
+        row = np.array([read.index(c) for c in carriers], dtype=np.intp)
+        placed = data.oMi.tolist()  # views: read them now
+        inverses = np.array([placed[c].inverse().homogeneous for c in read], dtype=float)
+        frames = np.array([placed[j].homogeneous for j in joints], dtype=float)
+        return cls(read, row, (inverses.reshape(-1, 4, 4)[row] @ frames.reshape(-1, 4, 4)))
 
-
-def _reach_balls(
-    geometry: RobotGeometry,
-    planned: Sequence[str],
-    parts: list[Part],
-    data: pin.Data,
-    base: pin.SE3,
-) -> tuple[FloatArray, FloatArray]:
-    """Per part: a ball (map) it stays in for any values of the planned joints."""
-    anchors: dict[int, FloatArray] = {}
-    centres, radii = [], []
-    for p in parts:
-        anchor, reach = geometry.anchor(p.joint, planned)
-        if anchor not in anchors:
-            anchors[anchor] = np.asarray((base * data.oMi[anchor]).translation, dtype=float)
-        centres.append(anchors[anchor])
-        radii.append(reach + p.extent)
-    return np.array(centres, dtype=float).reshape(-1, 3), np.array(radii, dtype=float)
+    def frames(self, data: pin.Data, base: FloatArray) -> FloatArray:
+        """(joints, 4, 4) the joints' placements in map, ``data`` posed by a check and the
+        robot's base at ``base``."""
+        placed = data.oMi.tolist()  # views: read them now
+        carriers = base @ np.array([placed[j].homogeneous for j in self.read])
+        return np.asarray(carriers[self.row] @ self.offsets, dtype=float)

@@ -17,6 +17,7 @@ from numpy.typing import NDArray
 
 from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.travel_bound import link_radii
+from robocram.robots import RobotModel
 from robocram.world import World
 
 
@@ -34,6 +35,8 @@ class LeverData:
     radii: FloatArray  # (links,) [m] about each link's frame, held objects included
     below: NDArray[np.bool_]  # (links, joints) whether the joint moves the link
     after: NDArray[np.bool_]  # (joints, joints) whether joint k's child moves with joint i
+    chains: FloatArray  # (links, joints) [m] the most from the joint's origin to the link's
+    # frame, whatever the joints between do (the rigid lengths between; 0 where not below)
     _rows: dict[tuple[str, ...], NDArray[np.intp]] = field(default_factory=dict)
     _masks: dict[bytes, tuple[FloatArray, FloatArray]] = field(default_factory=dict)
 
@@ -46,10 +49,8 @@ class LeverData:
         frame_links = tuple(dict.fromkeys([*moving, *children]))
         at = {link: k for k, link in enumerate(frame_links)}
         radii = link_radii(world, robot)
-        moved_by = [set(links_below(world, robot, [j])) for j in joints]
-        below = np.array(
-            [[link in links for links in moved_by] for link in moving], dtype=bool
-        ).reshape(len(moving), len(joints))
+        tree = model.derived(_tree)
+        chains = [_chains(tree, child) for child in children]  # per joint: link -> length
         return cls(
             frame_links,
             {link: k for k, link in enumerate(moving)},
@@ -59,12 +60,17 @@ class LeverData:
             np.array([model.joints[j].axis for j in joints], dtype=float).reshape(-1, 3),
             np.array([model.joints[j].type == "prismatic" for j in joints], dtype=bool),
             np.array([radii.get(link, 0.0) for link in moving], dtype=float),
-            below,
             np.array(
-                [[c in links and c != model.joints[j].child for c in children]
-                 for j, links in zip(joints, moved_by, strict=True)],
+                [[link in found for found in chains] for link in moving], dtype=bool
+            ).reshape(len(moving), len(joints)),
+            np.array(
+                [[c in found and c != model.joints[j].child for c in children]
+                 for j, found in zip(joints, chains, strict=True)],
                 dtype=bool,
             ).reshape(len(joints), len(joints)),
+            np.array(
+                [[found.get(link, 0.0) for found in chains] for link in moving], dtype=float
+            ).reshape(len(moving), len(joints)),
         )  # fmt: skip
 
     def link_rows(self, links: Sequence[str]) -> NDArray[np.intp]:
@@ -134,14 +140,37 @@ def cross(a: FloatArray, b: FloatArray) -> FloatArray:
 def links_below(world: World, robot: str, joints: Sequence[str]) -> tuple[str, ...]:
     """The links some joint of ``joints`` moves (those below it), in the world's link order."""
     model = world.robot(robot).description.model
-    children: dict[str, list[str]] = {}
-    for joint in model.joints.values():
-        children.setdefault(joint.parent, []).append(joint.child)
-    below: set[str] = set()
+    tree = model.derived(_tree)
     todo = [model.joints[j].child for j in joints]
+    below = set(todo)
     while todo:
-        link = todo.pop()
-        if link not in below:
-            below.add(link)
-            todo.extend(children.get(link, ()))
+        for child, _ in tree.get(todo.pop(), ()):
+            if child not in below:
+                below.add(child)
+                todo.append(child)
     return tuple(link for link in world.link_names(robot) if link in below)
+
+
+_Tree = dict[str, list[tuple[str, float]]]  # per link: its children, the joint offset [m] to each
+
+
+def _tree(model: RobotModel) -> _Tree:
+    """The model's links as a tree (kept with it: ``RobotModel.derived``)."""
+    children: _Tree = {}
+    for joint in model.joints.values():
+        offset = float(np.sqrt(np.square(joint.origin.position).sum()))
+        children.setdefault(joint.parent, []).append((joint.child, offset))
+    return children
+
+
+def _chains(tree: _Tree, link: str) -> dict[str, float]:
+    """Per link at or below ``link``: the rigid lengths [m] from ``link``'s frame to its."""
+    found = {link: 0.0}
+    todo = [link]
+    while todo:
+        parent = todo.pop()
+        for child, offset in tree.get(parent, ()):
+            if child not in found:
+                found[child] = found[parent] + offset
+                todo.append(child)
+    return found

@@ -62,7 +62,7 @@ def _advance_free(
         return True
     floor = bound.max_link_travel / travel
     local = (  # reading levers costs a sixth of a check: worth it on long sweeps only
-        _LocalSteps.of(checker, qa, qb, bound)
+        _LocalSteps.of(checker, qa, qb)
         if travel > LOCAL_LEVERS_FROM and can_tell_levers(checker)
         else None
     )
@@ -92,56 +92,64 @@ def _advance_free(
 @dataclass
 class _LocalSteps:
     """Steps from the frames of the configuration checked last (far tighter than the
-    rigid ones): over a step ``ds`` a link moves at most ``V ds + G ds^2 / 2``. ``V`` adds
-    the joints' motions as vectors (the frame's speed plus the angular speed times the
-    link's radius); ``G`` bounds how fast that speed can change: each joint's axis turns
-    with the joints above it (``W``), and the link moves relative to it by what those and
-    the joints from it down do (their rigid travel)."""
+    rigid ones): over a step ``ds`` no point of a link moves more than ``V ds + G ds^2 /
+    2``. ``V`` (the link's speed bound) is its frame's speed plus its angular speed times
+    its radius ``r``, the joints' motions added as vectors; ``G`` bounds how fast ``V`` can
+    change along the segment. Per revolute joint j moving the link by ``|dq_j|``: its axis
+    turns with the revolute joints above it (``W_j``, their summed ``|dq|``), which moves
+    the frame's lever arm (at most ``c_j``, the rigid lengths from j's origin to the frame)
+    by ``W_j c_j``; the frame moves relative to j's origin by ``W_j c_j`` plus what j and
+    the joints below it do (``D_j``: their ``|dq|`` times their own ``c``, 1 for prismatic
+    ones); and the angular speed changes by at most ``W_j``, the radius term by ``W_j r``.
+    So ``G = sum_j |dq_j| (2 W_j c_j + D_j + W_j r)`` over revolute j, plus ``|dq_j| W_j``
+    per prismatic joint j (its direction turns)."""
 
     checker: LeverChecker
     links: tuple[str, ...]
     delta: FloatArray  # qb - qa per joint
     turn: FloatArray  # per link: G
+    index: dict[str, int]  # per link: its position in ``links``
 
     @classmethod
-    def of(
-        cls, checker: LeverChecker, qa: FloatArray, qb: FloatArray, bound: TravelBound
-    ) -> _LocalSteps:
+    def of(cls, checker: LeverChecker, qa: FloatArray, qb: FloatArray) -> _LocalSteps:
         links = checker.lever_links()
         delta = qb - qa
         dq = np.abs(delta)
-        rigid = np.array(
-            [bound.link_lever.get(bound.carriers.get(link, link), bound.lever) for link in links],
-            dtype=float,
-        ).reshape(len(links), len(dq))  # (links, joints) [m] per unit change
-        after = checker.joints_after().astype(float)  # (joints, joints): k below i
         data = checker.lever_data()
         rows = data.link_rows(links)
-        below, radii = data.below[rows].astype(float), data.radii[rows]
+        below = data.below[rows].astype(float)  # (links, joints)
+        chains = data.chains[rows]  # (links, joints) [m] c: joint origin to link frame
+        radii = data.radii[rows][:, None]
         revolute = ~data.prismatic
+        after = checker.joints_after().astype(float)  # (joints, joints): k below i
         spin = after.T @ (dq * revolute)  # per joint: how fast its axis can turn (W)
-        down = (rigid * dq) @ (np.eye(len(dq)) + after).T  # [l, i]: joints from i down
+        lever = np.where(revolute, chains, 1.0) * below  # [m per unit] of the frame
+        down = (lever * dq) @ (np.eye(len(dq)) + after).T  # [l, j]: D, joint j and below
         turn = (
-            (2.0 * spin * rigid + spin * radii[:, None] * below + down) * revolute
-            + spin * below * data.prismatic
-        ) @ dq
-        return cls(checker, links, delta, turn)
+            (((2.0 * chains + radii) * spin + down) * revolute + spin * data.prismatic) * below @ dq
+        )
+        return cls(checker, links, delta, turn, {link: k for k, link in enumerate(links)})
 
     def step(self, gaps: dict[str, float], reach: float, least: float = 0.0) -> float:
         """The largest fraction of the segment no link can cross its clearance (or
-        ``least`` [m], the dense check's travel between checks) in; links not named in
+        ``least`` [m] > 0, the dense check's travel between checks) in; links not named in
         ``gaps`` are clear by ``reach``."""
+        if not self.links:
+            return 1.0
         speed = self.checker.link_speeds(self.links, self.delta)
-        gap = np.array([gaps.get(link, reach) for link in self.links], dtype=float)
-        steps = _quadratic_step(speed, self.turn / 2, np.maximum(gap, least))
-        return float(steps.min()) if steps.size else 1.0
+        gap = np.full(len(self.links), max(reach, least))
+        for link, clearance in gaps.items():
+            k = self.index.get(link)
+            if k is not None:
+                gap[k] = max(clearance, least)
+        return float(_quadratic_step(speed, self.turn / 2, gap).min())
 
 
 def _quadratic_step(speed: FloatArray, grow: FloatArray, gap: FloatArray) -> FloatArray:
-    """Per link: the ``ds`` at which ``speed ds + grow ds^2`` reaches ``gap``."""
-    with np.errstate(divide="ignore", invalid="ignore"):
-        root = 2.0 * gap / (speed + np.sqrt(speed * speed + 4.0 * grow * gap))
-    return np.where(speed + grow > 0.0, root, np.inf)
+    """Per link: the ``ds`` at which ``speed ds + grow ds^2`` reaches ``gap`` (> 0)."""
+    denominator = speed + np.sqrt(speed * speed + 4.0 * grow * gap)
+    steps = np.full(len(gap), np.inf)
+    return np.divide(2.0 * gap, denominator, out=steps, where=denominator > 0.0)
 
 
 def segment_free(
