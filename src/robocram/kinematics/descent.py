@@ -71,13 +71,14 @@ def _bounded_step(
     out = clamped != moved
     if not out.any():  # nearly every step
         return moved
-    free = np.ones(x.size, dtype=bool)
+    free = ~out
     rest = err
-    for _ in range(x.size - 1):
+    for k in range(x.size - 1):
         rest = rest - jac[:, out] @ (clamped[out] - x[out])
         moved[out] = clamped[out]
         x = np.where(out, clamped, x)
-        free &= ~out
+        if k:
+            free &= ~out
         if not free.any():
             break
         moved[free] = x[free] + _damped_solve(jac[:, free], rest, damping)
