@@ -10,7 +10,7 @@ import pytest
 from ruckig import InputParameter, Ruckig, Trajectory
 
 from robocram.motion import JointLimits, JointTrajectory, MotionError, joint_limits
-from robocram.motion.straight_segment import along_line_segment, straight_segment
+from robocram.motion.straight_segment import along_line_segment, profile_states, straight_segment
 from robocram.motion.time_parameterization import time_parameterize
 from robocram.robots import load_description
 
@@ -162,3 +162,19 @@ def test_bad_paths_are_named(path: list[list[float]], fragment: str) -> None:
 def test_limits_for_other_joints_are_refused() -> None:
     with pytest.raises(MotionError, match="joint_limits"):
         time_parameterize("pr2", ARM, PATH, LIMITS[::-1])
+
+
+def test_a_profile_sampled_at_once_is_ruckig_at_each_time_bit_for_bit() -> None:
+    rng = np.random.default_rng(5)
+    for _ in range(40):
+        a = rng.uniform(-1.5, 1.5, 7)
+        b = a + rng.normal(0.0, 1.0, 7) * (rng.random(7) > 0.3)
+        b[0] += 0.1  # never the same point
+        for segment in (straight_segment(a, b, LIMITS), along_line_segment(a, b, LIMITS)):
+            trajectory = segment.trajectory
+            times = np.concatenate((np.linspace(0.0, trajectory.duration, 50), [0.3]))
+            at_once = profile_states(trajectory, np.minimum(times, trajectory.duration))
+            for row, t in enumerate(np.minimum(times, trajectory.duration)):
+                one = trajectory.at_time(float(t))
+                for k in range(3):
+                    assert at_once[k][row].tolist() == list(one[k])

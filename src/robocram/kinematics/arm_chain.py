@@ -70,6 +70,12 @@ class ArmChain:
             else:
                 self.held.append(row)
         self.identity_map = n == p and not self.held and np.array_equal(self.a, np.eye(n))
+        # the path row each variable moves alone, when each moves one row one to one (no
+        # mimic follower on the path): then ``J @ A`` is a choice of J's columns
+        rows = [np.flatnonzero(column) for column in self.a.T]
+        self._columns: NDArray[np.intp] | None = None
+        if all(r.size == 1 and self.a[r[0], k] == 1.0 for k, r in enumerate(rows)):
+            self._columns = np.array([int(r[0]) for r in rows], dtype=np.intp)
         moved = np.flatnonzero(np.any(self.a != 0.0, axis=1))
         # the first path row a variable moves; the rows before it are held
         self.first_row = int(moved[0]) if moved.size else p
@@ -114,13 +120,27 @@ class ArmChain:
 
     def configuration(self, x: FloatArray, b: FloatArray) -> FloatArray:
         """Reduced-model configuration of variable values ``x``."""
-        values = x if self.identity_map else self.a @ x + b
+        if self.identity_map:
+            values = x
+        elif self._columns is not None:
+            values = b.copy()
+            values[self._columns] = x
+        else:
+            values = self.a @ x + b
         q = np.empty(self.model.nq)
         q[self.rev_q] = values[self.rev_rows]
         c = values[self.cont_rows]
         q[self.cos_q] = np.cos(c)
         q[self.sin_q] = np.sin(c)
         return q
+
+    def variable_jacobian(self, jac: FloatArray) -> FloatArray:
+        """``jac @ A``: a Jacobian of the path's joints as one of the variables."""
+        if self.identity_map:
+            return jac
+        if self._columns is not None:
+            return jac.take(self._columns, axis=1)  # C order, as the product: same sums
+        return jac @ self.a
 
     def tip_pose(self, x: FloatArray, b: FloatArray) -> pin.SE3:
         """Pose of the tip frame in the root link for variable values ``x``."""

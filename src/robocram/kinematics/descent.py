@@ -17,6 +17,7 @@ from typing import NamedTuple
 
 import numpy as np
 import pinocchio as pin
+from numpy.linalg._umath_linalg import solve1 as _gesv
 
 from robocram.kinematics.arm_chain import ArmChain, FloatArray
 
@@ -66,29 +67,39 @@ def _bounded_step(
     """
     lower, upper = chain.lower, chain.upper
     moved = x + _damped_solve(jac, err, damping)
-    out = (moved < lower) | (moved > upper)
-    free = np.ones(x.size, dtype=bool)
+    clamped = np.minimum(np.maximum(moved, lower), upper)
+    out = clamped != moved
+    if not out.any():  # nearly every step
+        return moved
+    free = ~out
     rest = err
-    for _ in range(x.size - 1):
-        if not out.any():
-            return moved
-        clamped = np.minimum(np.maximum(moved, lower), upper)
+    for k in range(x.size - 1):
         rest = rest - jac[:, out] @ (clamped[out] - x[out])
         moved[out] = clamped[out]
         x = np.where(out, clamped, x)
-        free &= ~out
+        if k:
+            free &= ~out
         if not free.any():
             break
         moved[free] = x[free] + _damped_solve(jac[:, free], rest, damping)
-        out = (moved < lower) | (moved > upper)
-    return np.minimum(np.maximum(moved, lower), upper)
+        clamped = np.minimum(np.maximum(moved, lower), upper)
+        out = clamped != moved
+        if not out.any():
+            return moved
+    return clamped
 
 
 def _damped_solve(jac: FloatArray, err: FloatArray, damping: float) -> FloatArray:
-    """``(J^T J + damping I)^-1 J^T e``."""
-    hessian = jac.T @ jac
+    """``(J^T J + damping I)^-1 J^T e``.
+
+    LAPACK's ``gesv``, as ``np.linalg.solve`` calls it, without that function's checks
+    and error-state set-up: they cost four of its five microseconds, and the damped
+    matrix is positive definite, never singular.
+    """
+    jac_t = jac.T
+    hessian = jac_t @ jac
     hessian.flat[:: hessian.shape[0] + 1] += damping
-    return np.asarray(np.linalg.solve(hessian, jac.T @ err))
+    return _gesv(hessian, jac_t @ err)
 
 
 def descend(
@@ -96,16 +107,19 @@ def descend(
 ) -> Descent:
     """Descend from ``x`` until the tool is within tolerance, stalls, or runs out of steps."""
     model, data, fid = chain.model, chain.data, chain.frame_id
+    configuration, in_variables = chain.configuration, chain.variable_jacobian
     position_tol2, orientation_tol2 = s.position_tolerance**2, s.orientation_tolerance**2
+    error_damping, damping = s.error_damping, s.damping
     last, minimum, stall = math.inf, math.inf, 0
     for it in range(1, s.max_iterations + 1):
-        pin.computeJointJacobians(model, data, chain.configuration(x, b))
+        pin.computeJointJacobians(model, data, configuration(x, b))
         delta = pin.updateFramePlacement(model, data, fid).actInv(target)
         err = pin.log6(delta).vector
         cost = float(err @ err)
         shift, turn = delta.translation, err[3:]
         position2, orientation2 = float(shift @ shift), float(turn @ turn)
-        minimum = min(minimum, cost)
+        if cost < minimum:
+            minimum = cost
         done = position2 < position_tol2 and orientation2 < orientation_tol2
         if cost < best.cost or done:
             best.x, best.cost = x, cost
@@ -118,9 +132,8 @@ def descend(
         stall = stall + 1 if cost > last * 0.999 else 0
         if stall >= s.stall_iterations:
             return Descent(False, x, it, True, minimum)
-        last = min(last, cost)
-        jac = pin.Jlog6(delta) @ pin.getFrameJacobian(model, data, fid, pin.LOCAL)
-        if not chain.identity_map:
-            jac = jac @ chain.a
-        x = _bounded_step(chain, x, jac, err, cost * s.error_damping + s.damping)
+        if cost < last:
+            last = cost
+        jac = in_variables(pin.Jlog6(delta) @ pin.getFrameJacobian(model, data, fid, pin.LOCAL))
+        x = _bounded_step(chain, x, jac, err, cost * error_damping + damping)
     return Descent(False, x, s.max_iterations, False, minimum)

@@ -70,8 +70,7 @@ class StraightSegment:
         """
         length, direction = self._line
         clock = np.minimum(np.maximum(times, 0.0), self.duration)
-        samples = [self.trajectory.at_time(float(t)) for t in clock]
-        pos, vel, acc = (np.array([sample[i] for sample in samples]) for i in range(3))
+        pos, vel, acc = profile_states(self.trajectory, clock)
         if self.along_line:
             s, s_dot, s_ddot = pos[:, 0], vel[:, 0], acc[:, 0]
         else:
@@ -162,6 +161,41 @@ def _deviation(segment: StraightSegment) -> float:
     delta = segment.end - segment.start
     direction = delta / np.linalg.norm(delta)
     times = np.linspace(0.0, segment.duration, CHECK_SAMPLES)
-    offsets = np.array([segment.trajectory.at_time(float(t))[0] for t in times]) - segment.start
+    offsets = profile_states(segment.trajectory, times)[0] - segment.start
     off_line = offsets - np.outer(offsets @ direction, direction)
     return float(np.linalg.norm(off_line, axis=1).max())
+
+
+def profile_states(
+    trajectory: Trajectory, times: FloatArray
+) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """Ruckig's ``at_time`` at each of ``times`` (within the trajectory): positions,
+    velocities, accelerations, one row per time.
+
+    A rest-to-rest profile of one section is, per joint, seven phases of constant jerk;
+    evaluating them for all times at once, with ruckig's own formula, costs what a few
+    ``at_time`` calls and their conversion to arrays do. Anything else (a braking phase
+    before the profile, several sections) is asked of ruckig time by time.
+    """
+    profiles = trajectory.profiles
+    if len(profiles) != 1 or any(p.brake.duration > 0.0 for p in profiles[0]):
+        samples = np.array([trajectory.at_time(float(t)) for t in times], dtype=float)
+        return samples[:, 0], samples[:, 1], samples[:, 2]
+    joints = profiles[0]
+    ends = np.cumsum(np.array([p.t for p in joints]), axis=1)  # (joints, 7): ruckig's t_sum
+    # phase k of a joint starts at ends[k - 1]; phase 7 holds the end state, jerk 0
+    starts = np.hstack((np.zeros((len(joints), 1)), ends))
+    jerk = np.hstack((np.array([p.j for p in joints]), np.zeros((len(joints), 1))))
+    acc0 = np.array([p.a for p in joints])
+    vel0 = np.array([p.v for p in joints])
+    pos0 = np.array([p.p for p in joints])
+    phase = np.count_nonzero(ends[None, :, :] <= times[:, None, None], axis=2)  # (n, joints)
+    phase[times >= trajectory.duration] = 7  # ruckig: the end state, whatever a joint's sum
+    column = np.arange(len(joints))[None, :]
+    t = times[:, None] - starts[column, phase]
+    j, a, v = jerk[column, phase], acc0[column, phase], vel0[column, phase]
+    return (
+        pos0[column, phase] + t * (v + t * (a / 2 + t * j / 6)),
+        v + t * (a + t * j / 2),
+        a + t * j,
+    )
