@@ -22,6 +22,9 @@ from robocram.batch import (
     VariantStatus,
     project_variants,
 )
+from robocram.batch.worker import VariantRunner, WorkerConfig
+from robocram.plans import pick_up
+from robocram.scenes import tabletop_scene
 from robocram.traces import TraceDatabase, runs
 
 
@@ -124,3 +127,19 @@ def test_bad_input_names_the_culprit() -> None:
     with pytest.raises(BadVariant, match=r"object_shifts\['mug-1'\]"):
         Variant("a", object_shifts={"mug-1": (0.0, 1.0)})
     assert Variant("a", parameters={"b": 1, "a": 2}).parameters == (("a", 2), ("b", 1))
+
+
+def test_a_worker_hides_what_it_keeps_from_the_collector_and_exits_cleanly(
+    capfd: pytest.CaptureFixture[str],
+) -> None:
+    """A worker freezes what its first variant built (the collector's full passes walked it
+    for nothing) and unfreezes it on the way out: its results are those of the same
+    variants run in this process (no freeze here), and no binding reports leaked objects."""
+    variants = [Variant("a"), Variant("b", seed=2), Variant("c", seed=3)]
+    results = project_variants(variants, workers=1).collect()
+    assert [r.status for r in results] == [VariantStatus.SUCCEEDED] * 3
+    assert len({r.worker for r in results}) == 1
+    runner = VariantRunner(WorkerConfig(pick_up, tabletop_scene, "pr2"))
+    here = [runner.run(k, v) for k, v in enumerate(variants)]
+    assert [r.outcome() for r in results] == [r.outcome() for r in here]
+    assert "leaked" not in capfd.readouterr().err
