@@ -1,12 +1,14 @@
 """Straight lines of the tool: approach, lift, put and retreat, as MoveIt's Cartesian path.
 
 The line from the tool's pose to the target is cut into steps of at most ``max_step``
-(1 cm) and ``max_rotation`` (0.05 rad); IK solves each step from the previous solution
+(2 cm) and ``max_rotation`` (0.05 rad); IK solves each step from the previous solution
 (one descent, no random restarts, so the arm follows the line instead of jumping to
 another branch; :func:`~robocram.kinematics.track_ik`); a step whose joints change by
 more than ``jump_threshold`` is a jump and ends the line; every step and the segment to
 it are checked like any other path. The answer is the path as far as it got and the
-fraction of the line achieved.
+fraction of the line achieved. Between two waypoints the arm moves in joint space: over
+the kitchen's tool lines the tool stays within 0.95 mm of the line (0.38 mm median; at
+1 cm steps 0.43 and 0.10 mm), inside IK's 1 mm tolerance, for half the IK descents.
 """
 
 from __future__ import annotations
@@ -31,7 +33,7 @@ from robocram.robots import LoadedDescription
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
 
-MAX_STEP = 0.01  # [m] of tool travel between IK solutions
+MAX_STEP = 0.02  # [m] of tool travel between IK solutions (the tool leaves the line < 1 mm)
 MAX_ROTATION = 0.05  # [rad] of tool rotation between IK solutions
 JUMP_THRESHOLD = 0.2  # [rad | m] largest change of any joint between two steps
 
