@@ -12,14 +12,32 @@ at their limit and the step is solved again for the others, which can still move
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import NamedTuple
 
 import numpy as np
 import pinocchio as pin
-from numpy.linalg._umath_linalg import solve1 as _gesv
 
 from robocram.kinematics.arm_chain import ArmChain, FloatArray
+
+
+def _lapack_solve() -> Callable[[FloatArray, FloatArray], FloatArray]:
+    """LAPACK's gesv as ``np.linalg.solve`` calls it, without its checks (4 of its 5 us;
+    the damping keeps the matrix regular); a numpy without that private module gets the
+    public call, which gives the same bits."""
+    try:
+        from numpy.linalg._umath_linalg import solve1
+    except ImportError:
+        return _public_solve
+    return solve1
+
+
+def _public_solve(a: FloatArray, b: FloatArray) -> FloatArray:
+    return np.asarray(np.linalg.solve(a, b), dtype=np.float64)
+
+
+_gesv = _lapack_solve()
 
 
 @dataclass(frozen=True)
