@@ -44,7 +44,7 @@ def se3_to_pose(m: pin.SE3) -> Pose:
 
 def pose_to_se3(pose: Pose) -> pin.SE3:
     """Pinocchio SE3 of a pose (one pinocchio call: a third of the three it replaces, the
-    same rotation matrix bit for bit; a tool line asks for one per centimetre)."""
+    same rotation matrix bit for bit; a tool line asks for one per 2 cm)."""
     return pin.XYZQUATToSE3(np.array((*pose.position, *pose.orientation)))
 
 

@@ -1,12 +1,12 @@
 """IK along a sequence of nearby tool poses, each solved from the previous solution.
 
-A straight tool line (``motion/cartesian_path.py``) asks IK every centimetre with no
+A straight tool line (``motion/cartesian_path.py``) asks IK every 2 cm with no
 restarts. A descent from the previous waypoint's joints converges there in one or two
 steps; the full query (:func:`~robocram.kinematics.solve_ik`) spends two to three times as
 long around that descent: the start table's nearest samples, the seed's pose distance, the
 result's bookkeeping. So each pose is first descended to from the previous solution, and
 only a pose that descent misses gets the full query. Where the full query would start from
-the seed anyway (the seed nearest the target, as it nearly always is a centimetre away), the
+the seed anyway (the seed nearest the target, as it nearly always is 2 cm away), the
 answers are the same, bit for bit; otherwise the tracked one stays on the arm's branch.
 """
 

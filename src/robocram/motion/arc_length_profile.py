@@ -1,7 +1,7 @@
 """A run of short, gently turning segments, timed along its arc length without stopping.
 
-A Cartesian line becomes dozens of joint-space waypoints a centimetre apart; stopping at
-each would take seconds for a hand's width. Along such a run the robot moves on the
+A Cartesian line becomes a run of joint-space waypoints 2 cm of tool travel apart;
+stopping at each would take seconds for a hand's width. Along such a run the robot moves on the
 polyline at a path speed ``s_dot`` (``s`` the arc length in joint space), with:
 
 - per segment, ``s_dot <= v_j / |u_j|`` and ``|s_ddot| <= a_j / |u_j|`` for every joint

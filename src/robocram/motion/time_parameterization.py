@@ -8,7 +8,7 @@ timed trajectory must stay on those lines: every sampled point lies on the polyl
   robot stops; the single segments between sharp corners are timed jerk-limited by ruckig
   (phase-synchronised, so straight; checked) from rest to rest, the time-optimal straight
   move under every joint's velocity, acceleration and jerk limit;
-- a **smooth corner** (a dense path, e.g. a Cartesian line as 30 waypoints a centimetre
+- a **smooth corner** (a dense path, e.g. a Cartesian line as 15 waypoints 2 cm
   apart) is passed without stopping: the run of segments between sharp corners is timed
   along its arc length (:mod:`robocram.motion.arc_length_profile`) with per-segment
   velocity and acceleration caps and corner speeds that keep each joint's velocity step at
