@@ -83,32 +83,47 @@ class LoneBody:
 
     def first_hit(self, origins: FloatArray, dirs: FloatArray, length: FloatArray) -> FloatArray:
         """Distance [m] at which each ray (world frame, unit ``dirs``) first meets the body,
-        inf when it does not within its ``length``."""
+        inf when it does not within its ``length``.
+
+        Every piece's box is tested against every ray in one pass (a mug has six pieces:
+        six passes cost twice as much); only the rays through a piece's box enter it.
+        """
         best = np.full(len(origins), np.inf)
-        for piece, pose in self.pieces:
-            m = pose.matrix()
-            rot, centre = m[:3, :3], m[:3, 3]
-            rel = origins - centre
-            local_origins, local_dirs = rel @ rot, dirs @ rot
-            near = np.flatnonzero(_box_hits(piece.box, local_origins, local_dirs, length))
+        if not self.pieces:
+            return best
+        rotations, centres, boxes = self._frames()
+        local_origins = (origins[None, :, :] - centres[:, None, :]) @ rotations
+        local_dirs = dirs[None, :, :] @ rotations
+        through = _box_hits(boxes, local_origins, local_dirs, length)
+        for k, (piece, _) in enumerate(self.pieces):
+            near = np.flatnonzero(through[k])
             if len(near) == 0:
                 continue
-            t = piece.entry(local_origins[near], local_dirs[near])
+            t = piece.entry(local_origins[k, near], local_dirs[k, near])
             best[near] = np.minimum(best[near], t)
         best[best > length] = np.inf
         return best
 
+    def _frames(self) -> tuple[FloatArray, FloatArray, FloatArray]:
+        """Per piece: its rotation (3 x 3) and origin in the world, and its box (2 x 3)."""
+        matrices = np.array([pose.matrix() for _, pose in self.pieces])
+        boxes = np.array([piece.box for piece, _ in self.pieces], dtype=float)
+        return matrices[:, :3, :3], matrices[:, :3, 3], boxes
+
 
 def _box_hits(
-    box: FloatArray, origins: FloatArray, dirs: FloatArray, length: FloatArray
+    boxes: FloatArray, origins: FloatArray, dirs: FloatArray, length: FloatArray
 ) -> NDArray[np.bool_]:
-    """Which rays pass through the axis-aligned ``box`` within their ``length`` (slabs)."""
+    """``[piece, ray]``: whether the ray passes through the piece's axis-aligned box
+    (``boxes`` (pieces, 2, 3); rays (pieces, rays, 3) in each piece's frame) within its
+    ``length`` (slabs; a ray in a slab's plane leaves that slab out)."""
     with np.errstate(divide="ignore", invalid="ignore"):
         inverse = 1.0 / dirs
-        low, high = (box[0] - origins) * inverse, (box[1] - origins) * inverse
-    enter = np.nanmax(np.minimum(low, high), axis=1)
-    leave = np.nanmin(np.maximum(low, high), axis=1)
-    return np.asarray((enter <= leave) & (leave >= 0) & (enter <= length))
+        low = (boxes[:, 0, None, :] - origins) * inverse
+        high = (boxes[:, 1, None, :] - origins) * inverse
+    enter = np.fmax.reduce(np.minimum(low, high), axis=2)  # NaN (0 * inf) ignored
+    leave = np.fmin.reduce(np.maximum(low, high), axis=2)
+    return np.asarray((enter <= leave) & (leave >= 0) & (enter <= length[None, :]))
 
 
 def lone_body(world: WorldCore, obj: WorldObject) -> LoneBody | None:
