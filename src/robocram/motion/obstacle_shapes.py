@@ -12,6 +12,7 @@ with it (:func:`obstacle_cache`, ``World.derived``): no module holds one.
 from __future__ import annotations
 
 import dataclasses
+import functools
 from dataclasses import dataclass, field
 
 import coal
@@ -31,6 +32,7 @@ HUGE = 1e9  # [m] the half extents of a half-space's box
 # [m] the most that moves a point of a reused object's shapes (within 10 m of its frame,
 # through joints of up to 10 m of lever): clearances are lowered by it.
 DRIFT = 1e-4
+KEPT_STACKS = 4  # obstacle tables kept per world
 
 
 @dataclass(frozen=True)
@@ -46,12 +48,13 @@ class ObstacleShapes:
     local_centres: FloatArray  # (pieces, 3) [m] each piece's box centre in its own frame
     local_halves: FloatArray  # (pieces, 3) [m] and half extents (huge for a half-space)
 
-    @property
+    @functools.cached_property
     def centres(self) -> FloatArray:
-        """(pieces, 3) [m] the centres of the map-aligned boxes."""
+        """(pieces, 3) [m] the centres of the map-aligned boxes (kept: the pieces do not
+        move, and every new stack of a kitchen's 268 pieces asked for them again)."""
         return np.einsum("pij,pj->pi", self.rotations, self.local_centres) + self.translations
 
-    @property
+    @functools.cached_property
     def halves(self) -> FloatArray:
         """(pieces, 3) [m] their half extents."""
         return np.einsum("pij,pj->pi", np.abs(self.rotations), self.local_halves)
@@ -140,34 +143,39 @@ class ObstacleCache:
         default_factory=dict
     )
     builds: int = 0  # how many times shapes were read (for tests and figures)
-    _stacked: tuple[tuple[int, ...], StackedShapes] | None = None
+    _stacked: dict[tuple[int, ...], StackedShapes] = field(default_factory=dict)
+    _read: dict[str, tuple[float, ...]] = field(default_factory=dict)  # state last seen equal
 
     def stacked(self, shapes: list[ObstacleShapes]) -> StackedShapes:
-        """``shapes`` as one table (kept while the same shapes are asked for again)."""
+        """``shapes`` as one table, kept for the last :data:`KEPT_STACKS` sets asked for
+        (checkers with and without a held object alternate). A kept stack holds its
+        shapes, so the ids in its key are not reused while it is kept."""
         key = tuple(id(s) for s in shapes)
-        if self._stacked is None or self._stacked[0] != key:
-            self._stacked = (key, StackedShapes.of(shapes))
-        return self._stacked[1]
+        found = self._stacked.get(key)
+        if found is None:
+            found = self._stacked[key] = StackedShapes.of(shapes)
+            if len(self._stacked) > KEPT_STACKS:
+                del self._stacked[next(iter(self._stacked))]  # the oldest
+        return found
 
     def shapes(self, world: World, obj: WorldObject) -> ObstacleShapes:
         """``obj``'s shapes as it stands now: the kept ones if its state is unchanged."""
-        state = _state(world, obj)
+        raw = world.body_state(obj)
         entry = self._entries.get(obj.name)
+        if entry is not None and entry[0] is obj and self._read.get(obj.name) == raw:
+            return entry[2]  # read exactly so before: no need to compare as numbers
+        state = np.array(raw, dtype=float)
         if entry is not None and entry[0] is obj and _near(entry[1], state):
+            self._read[obj.name] = raw
             return entry[2]
         if entry is not None and entry[0] is obj and _rigidly_moved(entry[1], state):
             shapes = entry[2].moved(_base(state) * _base(entry[1]).inverse())
-            self._entries[obj.name] = (obj, state, shapes)
-            return shapes
-        shapes = ObstacleShapes.of(world, obj)
+        else:
+            shapes = ObstacleShapes.of(world, obj)
+            self.builds += 1
         self._entries[obj.name] = (obj, state, shapes)
-        self.builds += 1
+        self._read[obj.name] = raw
         return shapes
-
-
-def _state(world: World, obj: WorldObject) -> NDArray[np.float64]:
-    """What places ``obj``'s shapes: its body, pose and joint values."""
-    return np.array(world.body_state(obj), dtype=float)
 
 
 def _near(kept: NDArray[np.float64], now: NDArray[np.float64]) -> bool:
