@@ -153,61 +153,36 @@ class ClearancePairs:
 
         ``frames`` (rows, 4, 4) are the joints' placements in map now.
         """
+        return self.near(frames, slack, reach).gaps()
+
+    def near(self, frames: FloatArray, slack: float, reach: float) -> NearPairs:
+        """The pairs whose bound is below ``reach`` with the joints placed at ``frames``
+        (rows, 4, 4, in map), per label: coal measures a label's only when asked."""
         if not self.table.size:
-            return {}
+            return NearPairs(self, frames, slack, reach, [], [], [])
         boxes = frames[self.part_row] @ self.part_boxes  # the parts' boxes in map
         centres = boxes[:, :3, 3].T
         table = self._focused(centres, slack, reach).table
         if not table.size:
-            return {}
-        spans = np.abs(boxes[:, :3, :3])
-        halves = (spans[:, :, 0] + spans[:, :, 1] + spans[:, :, 2]).T
+            return NearPairs(self, frames, slack, reach, [], [], [])
+        halves = np.abs(boxes[:, :3, :3]).sum(axis=2).T  # three terms: summed in order
         lower = table.box_bounds(centres, halves, slack)
         near = (lower < reach).nonzero()[0]
         if not near.size:
-            return {}
+            return NearPairs(self, frames, slack, reach, [], [], [])
         ints = table.ints[:, near].tolist()
         # by label, nearest bound first (ties: in table order)
         order = sorted(zip(ints[1], lower[near].tolist(), ints[0], ints[2], strict=True))
-        return self._distances(order, frames, slack, reach)
-
-    def _distances(
-        self,
-        order: list[tuple[int, float, int, int]],
-        frames: FloatArray,
-        slack: float,
-        reach: float,
-    ) -> dict[str, float]:
-        """Per label of ``order`` (label, bound, part, piece; sorted): coal's least
-        distance less ``slack``, pairs tried until a bound cannot beat the least found."""
-        request, result = coal.DistanceRequest(), coal.DistanceResult()
-        distance, geometries, placements = coal.distance, self.geometries, self.placements
-        parts = self.parts
-        gaps: dict[str, float] = {}
-        placed: dict[int, pin.SE3] = {}  # per part: its placement now
-        label, best = order[0][0], reach
-        for at, bound, m, piece in order:
-            if at != label:
-                if best < reach:
-                    gaps[self.names[label]] = best
-                label, best = at, reach
-            if bound >= best:
-                continue  # the label's other pairs are farther still
-            pose = placed.get(m)
-            if pose is None:
-                pose = placed[m] = pin.SE3(frames[self.part_row[m]]) * parts[m].placement
-            result.clear()  # a result keeps the least distance of all its calls
-            found = (
-                distance(
-                    parts[m].geometry, pose, geometries[piece], placements[piece], request, result
-                )
-                - slack
-            )
-            if found < best:
-                best = found
-        if best < reach:
-            gaps[self.names[label]] = best
-        return gaps
+        labels: list[int] = []
+        bounds: list[float] = []
+        runs: list[list[tuple[float, int, int]]] = []
+        for label, bound, m, piece in order:
+            if not labels or labels[-1] != label:
+                labels.append(label)
+                bounds.append(bound)
+                runs.append([])
+            runs[-1].append((bound, m, piece))
+        return NearPairs(self, frames, slack, reach, labels, bounds, runs)
 
     def _focused(self, centres: FloatArray, slack: float, reach: float) -> _Focus:
         """The focus for balls at ``centres`` (3, parts): the last one unless a ball has
@@ -221,6 +196,66 @@ class ClearancePairs:
         rows = (self.table.bounds(centres, slack) < reach + FOCUS).nonzero()[0]
         focus = self._focus = _Focus(centres, self.table.subset(rows))
         return focus
+
+
+class NearPairs:
+    """A check's near pairs per label (labels in number order), each label's least bound
+    first; :meth:`gap` asks coal for one label's least distance, nearest bound first, only
+    until a bound cannot beat the least found (a few coal calls per check)."""
+
+    def __init__(
+        self,
+        pairs: ClearancePairs,
+        frames: FloatArray,
+        slack: float,
+        reach: float,
+        labels: list[int],
+        bounds: list[float],
+        runs: list[list[tuple[float, int, int]]],
+    ) -> None:
+        self.names = [pairs.names[label] for label in labels]  # the near labels' names
+        self.bounds = bounds  # per near label: a lower bound [m] on its gap
+        self._pairs = pairs
+        self._frames = frames
+        self._slack = slack
+        self._reach = reach
+        self._runs = runs  # per near label: (bound, part, piece), least bound first
+        self._placed: dict[int, pin.SE3] = {}  # per part: its placement now
+        self._query: tuple[coal.DistanceRequest, coal.DistanceResult] | None = None
+
+    def gap(self, k: int) -> float:
+        """Near label ``k``'s least distance [m] less the slack; the reach if it is farther."""
+        if self._query is None:
+            self._query = (coal.DistanceRequest(), coal.DistanceResult())
+        request, result = self._query
+        distance, pairs, placed = coal.distance, self._pairs, self._placed
+        geometries, placements, parts = pairs.geometries, pairs.placements, pairs.parts
+        best = self._reach
+        for bound, m, piece in self._runs[k]:
+            if bound >= best:
+                break  # the label's other pairs are farther still
+            pose = placed.get(m)
+            if pose is None:
+                pose = placed[m] = pin.SE3(self._frames[pairs.part_row[m]]) * parts[m].placement
+            result.clear()  # a result keeps the least distance of all its calls
+            found = (
+                distance(
+                    parts[m].geometry, pose, geometries[piece], placements[piece], request, result
+                )
+                - self._slack
+            )
+            if found < best:
+                best = found
+        return best
+
+    def gaps(self) -> dict[str, float]:
+        """Per label nearer than the reach: its least distance [m] less the slack."""
+        gaps = {}
+        for k, name in enumerate(self.names):
+            found = self.gap(k)
+            if found < self._reach:
+                gaps[name] = found
+        return gaps
 
 
 @dataclass(frozen=True)

@@ -29,6 +29,7 @@ from numpy.typing import NDArray
 
 from robocram.kinematics.robot_kinematics import pose_to_se3, robot_kinematics
 from robocram.motion.bullet_scene import CLEARANCE_REACH, BulletScene
+from robocram.motion.clearance_pairs import NearPairs
 from robocram.motion.clearance_setup import SetupCache
 from robocram.motion.configuration_checker import Configuration, LinkPair
 from robocram.motion.joint_levers import LeverData
@@ -102,12 +103,21 @@ class CoalClearance:
         key = values.tobytes()
         if self._last is not None and self._last[0] == key:
             return dict(self._last[1])
+        gaps = self._posed(values).gaps()
+        self._last = (key, gaps)
+        return dict(gaps)
+
+    def near(self, q: Configuration) -> NearPairs:
+        """The robot posed at ``q`` and its near pairs per label, before coal measures any:
+        a step of conservative advancement needs only the labels that can limit it."""
+        self._last = None  # the pose changes: a kept answer no longer describes it
+        return self._posed(np.asarray(q, dtype=float))
+
+    def _posed(self, values: FloatArray) -> NearPairs:
         self._q = self._slots.full(values)
         pin.forwardKinematics(self._model, self._data, self._q)
         self._frames = self._carriers.frames(self._data, self._base_matrix)
-        gaps = self._pairs.gaps(self._frames, self._slack, CLEARANCE_REACH)
-        self._last = (key, gaps)
-        return dict(gaps)
+        return self._pairs.near(self._frames, self._slack, CLEARANCE_REACH)
 
     def colliding(self, q: Configuration, first_only: bool = False) -> list[LinkPair]:
         """The colliding pairs at ``q``: none when coal finds everything clear, else the

@@ -87,6 +87,30 @@ class LeverChecker(ClearanceChecker, Protocol):
         ...
 
 
+class LabelGaps(Protocol):
+    """A check's near labels (moving links or held objects), each with a lower bound on its
+    gap, measured one by one: the labels whose bound cannot limit a step are never
+    measured."""
+
+    names: list[str]  # the labels whose bound is below the checker's reach
+    bounds: list[float]  # [m] per label: at most its gap
+
+    def gap(self, k: int) -> float:
+        """Label ``k``'s gap [m] (<= 0: near enough that the contact check must decide);
+        the reach if it is farther."""
+        ...
+
+
+@runtime_checkable
+class NearChecker(LeverChecker, Protocol):
+    """A lever checker that poses a configuration and tells its near labels' bounds
+    before measuring any gap."""
+
+    def near(self, q: Configuration) -> LabelGaps:
+        """The labels near something at ``q``, the robot posed there."""
+        ...
+
+
 def can_tell_clearance(checker: object) -> TypeGuard[ClearanceChecker]:
     """``isinstance(checker, ClearanceChecker)``, asked once per class: a protocol check
     compares every member (~20 us), and a motion asks it per segment and per waypoint."""
@@ -96,6 +120,11 @@ def can_tell_clearance(checker: object) -> TypeGuard[ClearanceChecker]:
 def can_tell_levers(checker: object) -> TypeGuard[LeverChecker]:
     """``isinstance(checker, LeverChecker)``, asked once per class."""
     return _is_a(checker, LeverChecker)
+
+
+def can_tell_near(checker: object) -> TypeGuard[NearChecker]:
+    """``isinstance(checker, NearChecker)``, asked once per class."""
+    return _is_a(checker, NearChecker)
 
 
 def _is_a(checker: object, protocol: type) -> bool:

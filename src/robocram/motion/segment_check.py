@@ -8,6 +8,7 @@ collision is and what collides, for the failure a plan sees.
 
 from __future__ import annotations
 
+import math
 from collections import deque
 from collections.abc import Iterator
 from dataclasses import dataclass
@@ -17,10 +18,12 @@ import numpy as np
 from robocram.motion.configuration_checker import (
     ClearanceChecker,
     ConfigurationChecker,
+    LabelGaps,
     LeverChecker,
     LinkPair,
     can_tell_clearance,
     can_tell_levers,
+    can_tell_near,
     posed,
 )
 from robocram.motion.joint_trajectory import FloatArray
@@ -68,11 +71,25 @@ def _advance_free(
     )
     by_link = {}  # [m] per link: the most a point of it moves from qa to qb
     reach = checker.reach
+    bounded = local is not None and can_tell_near(checker)
     s = 0.0
     while True:
         q = qa + (qb - qa) * s
-        gaps = checker.clearances(q)
         counter.checks += 1
+        if bounded:  # only the labels that can limit the step are measured
+            assert local is not None
+            step, touching = local.bounded_step(
+                checker.near(q),  # type: ignore[attr-defined]
+                reach,
+                bound.max_link_travel,
+            )
+            if touching and not checker.is_free(q):
+                return False  # the contact check decides, as everywhere
+            s += max(step, floor)
+            if s >= 1.0:
+                return True
+            continue
+        gaps = checker.clearances(q)
         if min(gaps.values(), default=1.0) <= 0.0 and not checker.is_free(q):
             return False  # the contact check decides, as everywhere
         if local is not None:
@@ -109,6 +126,7 @@ class _LocalSteps:
     delta: FloatArray  # qb - qa per joint
     turn: FloatArray  # per link: G
     index: dict[str, int]  # per link: its position in ``links``
+    grow: list[float]  # per link: G / 2, as floats
 
     @classmethod
     def of(cls, checker: LeverChecker, qa: FloatArray, qb: FloatArray) -> _LocalSteps:
@@ -128,7 +146,8 @@ class _LocalSteps:
         turn = (
             (((2.0 * chains + radii) * spin + down) * revolute + spin * data.prismatic) * below @ dq
         )
-        return cls(checker, links, delta, turn, {link: k for k, link in enumerate(links)})
+        index = {link: k for k, link in enumerate(links)}
+        return cls(checker, links, delta, turn, index, (turn / 2).tolist())
 
     def step(self, gaps: dict[str, float], reach: float, least: float = 0.0) -> float:
         """The largest fraction of the segment no link can cross its clearance (or
@@ -143,6 +162,52 @@ class _LocalSteps:
             if k is not None:
                 gap[k] = max(clearance, least)
         return float(_quadratic_step(speed, self.turn / 2, gap).min())
+
+    def bounded_step(self, near: LabelGaps, reach: float, least: float = 0.0) -> tuple[float, bool]:
+        """:meth:`step`, the same to the bit, measuring only the labels that can limit it,
+        and whether a label touches (a gap <= 0: the contact check must decide).
+
+        A label's bound is at most its gap, so the step its bound allows is at most the
+        one its gap allows: labels are measured in the order of their bounds' steps until
+        that step is no smaller than the least step found. Labels whose bound is <= 0 are
+        always measured: they may touch. A check has a handful of labels, so the steps
+        are worked out on floats (the same operations as :func:`_quadratic_step`).
+        """
+        exact: dict[int, float] = {}
+        touching = False
+        for k, lower in enumerate(near.bounds):
+            if lower <= 0.0:
+                exact[k] = near.gap(k)
+                touching = touching or exact[k] <= 0.0
+        if not self.links:
+            return 1.0, touching
+        speed = self.checker.link_speeds(self.links, self.delta).tolist()
+        grow = self.grow
+        rows = {
+            k: row for k, name in enumerate(near.names) if (row := self.index.get(name)) is not None
+        }
+        free = max(reach, least)
+        taken = set(rows.values())
+        best = min(
+            (_step_of(speed[r], grow[r], free) for r in range(len(speed)) if r not in taken),
+            default=math.inf,
+        )
+        hopeful = sorted(
+            (_step_of(speed[row], grow[row], max(near.bounds[k], least)), k, row)
+            for k, row in rows.items()
+        )
+        for lowest, k, row in hopeful:
+            if lowest >= best:
+                break  # no label left can make the step smaller
+            gap = exact[k] if k in exact else near.gap(k)
+            best = min(best, _step_of(speed[row], grow[row], max(gap, least)))
+        return best, touching
+
+
+def _step_of(speed: float, grow: float, gap: float) -> float:
+    """:func:`_quadratic_step` of one link, on floats (the same operations, the same bits)."""
+    denominator = speed + math.sqrt(speed * speed + 4.0 * grow * gap)
+    return 2.0 * gap / denominator if denominator > 0.0 else math.inf
 
 
 def _quadratic_step(speed: FloatArray, grow: FloatArray, gap: FloatArray) -> FloatArray:
