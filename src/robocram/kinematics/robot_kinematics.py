@@ -10,7 +10,7 @@ Poses are expressed in the URDF root link (pinocchio's universe frame coincides 
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -112,6 +112,22 @@ class RobotKinematics:
             else:
                 q[info.idx_q] = value
         return q
+
+    def put(self, q: NDArray[np.float64], name: str, value: float) -> None:
+        """Write joint ``name``'s ``value`` [rad | m] into the configuration ``q``."""
+        info = self.joints[name]
+        if info.continuous:
+            q[info.idx_q], q[info.idx_q + 1] = math.cos(value), math.sin(value)
+        else:
+            q[info.idx_q] = value
+
+    def frame_matrices(
+        self, q: NDArray[np.float64], frames: Sequence[int]
+    ) -> list[NDArray[np.float64]]:
+        """The 4 x 4 placements in the root link of the frames (ids) at configuration ``q``:
+        one forward pass for several frames."""
+        pin.forwardKinematics(self.model, self.data, q)
+        return [pin.updateFramePlacement(self.model, self.data, f).homogeneous for f in frames]
 
     def frame_pose(self, frame: str, joint_positions: Mapping[str, float]) -> Pose:
         """Pose of ``frame`` in the root link for the given joint values."""
