@@ -66,6 +66,15 @@ class SimulatedTime:
 
 
 @dataclass(frozen=True)
+class SettlingTime:
+    """A span of simulated time in which one object moves and the rest sleeps."""
+
+    world: object
+    object: str
+    seconds: float = unit("s")
+
+
+@dataclass(frozen=True)
 class JointState:
     """A joint's value."""
 
@@ -140,6 +149,9 @@ OBJECT_TYPE = Predicate("object_type", ObjectType, _W, "an object's type")
 OBJECT_POSE = Predicate("object_pose", ObjectPose, _W, "an object's pose now")
 SET_OBJECT_POSE = Predicate("set_object_pose", ObjectPose, _W, "puts an object at a pose")
 SIMULATE = Predicate("simulate", SimulatedTime, _W, "runs the physics for a while")
+SETTLING = Predicate(
+    "settle", SettlingTime, _W, "runs the physics for a while, the rest asleep till touched"
+)
 ROBOT_IN_WORLD = Predicate("robot", WorldRobot, _W, "a robot of the world")
 JOINT_STATE = Predicate("joint_state", JointState, _W, "a robot joint's value now")
 SET_JOINT_STATE = Predicate("set_joint_state", JointState, _W, "sets a robot joint's value")
@@ -165,6 +177,7 @@ WORLD_PREDICATES: tuple[Predicate[Any], ...] = (
     OBJECT_POSE,
     SET_OBJECT_POSE,
     SIMULATE,
+    SETTLING,
     ROBOT_IN_WORLD,
     JOINT_STATE,
     SET_JOINT_STATE,

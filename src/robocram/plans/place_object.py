@@ -19,7 +19,7 @@ import math
 from robocram.designators import LocationDesignator, ObjectDesignator, a
 from robocram.execution import perform
 from robocram.execution.failures import ManipulationLowLevelFailure
-from robocram.knowledge.world_predicates import ATTACHED, SIMULATE
+from robocram.knowledge.world_predicates import ATTACHED, SETTLING
 from robocram.logic import UnknownPredicateError, current_kb
 from robocram.plans.basic_actions import park_arms
 from robocram.plans.errors import PlanSetupError
@@ -116,7 +116,9 @@ def _settled(name: str, put: Pose, seconds: float) -> str | None:
     within the fifth step and rests by the sixth or seventh, 12 to 14 physics steps of the
     36 in :data:`SETTLE` (looked at every 4 steps, it took 16: a look costs far less than
     a step): the shorter the drop, the sooner it rests, so the location's pose lies on the
-    object's true bottom (not its Bullet bounds, a few mm lower).
+    object's true bottom (not its Bullet bounds, a few mm lower). The rest of the world
+    sleeps meanwhile unless the object touches it (a fifth of the cost of a step; the
+    object moves as among awake bodies).
     """
     if seconds <= 0.0:
         return None
@@ -126,7 +128,7 @@ def _settled(name: str, put: Pose, seconds: float) -> str | None:
     while simulated < seconds - 1e-9:
         step = min(SETTLE_STEP, seconds - simulated)
         try:
-            if not SIMULATE.holds(kb, seconds=float(step)):
+            if not SETTLING.holds(kb, object=name, seconds=float(step)):
                 return None
         except UnknownPredicateError:
             return None  # no simulated world to ask (a real robot)
