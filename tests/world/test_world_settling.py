@@ -1,4 +1,4 @@
-"""Simulating with only some objects moving: the rest sleeps until touched, then wakes."""
+"""Settling an object: the rest sleeps until touched, and is as awake as before afterwards."""
 
 from __future__ import annotations
 
@@ -8,6 +8,7 @@ import pytest
 
 from robocram.tf import Pose
 from robocram.world import World
+from robocram.world.settling import at_rest
 
 
 @pytest.fixture
@@ -21,14 +22,19 @@ def world() -> Iterator[World]:
     w.close()
 
 
-def test_the_moving_object_moves_as_among_awake_bodies(world: World) -> None:
+def test_the_object_moves_as_among_awake_bodies_until_it_rests(world: World) -> None:
     awake = world.copy()
     try:
-        world.set_pose("dropped", Pose((0.5, 0.0, 0.2)))  # it touches nothing asleep
-        awake.set_pose("dropped", Pose((0.5, 0.0, 0.2)))
-        assert world.simulate(0.3, moving=("dropped",)) == awake.simulate(0.3)
+        for w in (world, awake):
+            w.set_pose("dropped", Pose((0.5, 0.0, 0.055)))  # 5 mm above the floor
+        steps = world.settle("dropped", 1.0)
+        assert 4 < steps < 60  # it landed and rested well before the second was up
+        awake.simulate(steps * world.time_step)
         assert world.pose("dropped") == awake.pose("dropped")
         assert world.pose("far").distance_to(Pose((1.0, 0.0, 0.05))) < 1e-3
+        before = world.pose("dropped")
+        world.simulate(2 * world.time_step)
+        assert at_rest(before, world.pose("dropped"))
     finally:
         awake.close()
 
@@ -36,8 +42,8 @@ def test_the_moving_object_moves_as_among_awake_bodies(world: World) -> None:
 def test_a_sleeping_body_wakes_when_touched(world: World) -> None:
     awake = world.copy()
     try:
-        world.simulate(0.5, moving=("dropped",))
-        awake.simulate(0.5)
+        steps = world.settle("dropped", 0.5)
+        awake.simulate(steps * world.time_step)
         for name in ("resting", "dropped"):
             assert world.pose(name).distance_to(awake.pose(name)) < 1e-3
         assert world.pose("resting").distance_to(Pose((0.0, 0.0, 0.05))) > 0.01  # pushed
@@ -46,7 +52,14 @@ def test_a_sleeping_body_wakes_when_touched(world: World) -> None:
 
 
 def test_the_bodies_are_awake_afterwards(world: World) -> None:
-    world.simulate(0.05, moving=("dropped",))
-    world.set_pose("far", Pose((1.0, 0.0, 0.5)))
-    world.simulate(0.1)
-    assert world.pose("far").position[2] < 0.45  # it falls again
+    world.add_box("hanging", (0.1, 0.1, 0.1), Pose((2.0, 0.0, 0.5)), mass=1.0)
+    world.settle("dropped", 0.05)
+    z = world.pose("hanging").position[2]
+    assert z > 0.499  # asleep in the air: it fell only before the first step's end
+    world.simulate(world.time_step)
+    assert world.pose("hanging").position[2] < z  # it falls in the very next step
+
+
+def test_no_time_no_step(world: World) -> None:
+    assert world.settle("dropped", 0.0) == 0
+    assert world.pose("dropped") == Pose((0.08, 0.0, 0.3))

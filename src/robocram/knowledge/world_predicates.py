@@ -67,7 +67,7 @@ class SimulatedTime:
 
 @dataclass(frozen=True)
 class SettlingTime:
-    """A span of simulated time in which one object moves and the rest sleeps."""
+    """At most a span of simulated time for an object to come to rest."""
 
     world: object
     object: str
@@ -150,7 +150,7 @@ OBJECT_POSE = Predicate("object_pose", ObjectPose, _W, "an object's pose now")
 SET_OBJECT_POSE = Predicate("set_object_pose", ObjectPose, _W, "puts an object at a pose")
 SIMULATE = Predicate("simulate", SimulatedTime, _W, "runs the physics for a while")
 SETTLING = Predicate(
-    "settle", SettlingTime, _W, "runs the physics for a while, the rest asleep till touched"
+    "settle", SettlingTime, _W, "runs the physics until an object rests (at most Seconds)"
 )
 ROBOT_IN_WORLD = Predicate("robot", WorldRobot, _W, "a robot of the world")
 JOINT_STATE = Predicate("joint_state", JointState, _W, "a robot joint's value now")

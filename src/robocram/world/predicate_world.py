@@ -7,7 +7,7 @@ its knowledge base from them.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Collection, Mapping
+from collections.abc import Callable, Mapping
 from typing import Protocol
 
 from robocram.tf import Pose, PoseLike
@@ -24,11 +24,9 @@ class PredicateWorld(Protocol):
     def object(self, name: ObjectRef) -> WorldObject: ...
     def pose(self, obj: ObjectRef) -> Pose: ...
     def set_pose(self, obj: ObjectRef, pose: PoseLike) -> None: ...
-    def simulate(
-        self,
-        seconds: float,
-        stop_check: Callable[[], None] | None = None,
-        moving: Collection[ObjectRef] | None = None,
+    def simulate(self, seconds: float, stop_check: Callable[[], None] | None = None) -> int: ...
+    def settle(
+        self, obj: ObjectRef, seconds: float, stop_check: Callable[[], None] | None = None
     ) -> int: ...
     def joint_states(self, obj: ObjectRef) -> dict[str, float]: ...
     def set_joint_states(

@@ -88,7 +88,7 @@ def _objects(world: PredicateWorld) -> dict[str, Implementation]:
 
     def settle(w: object, name: Value, seconds: Value) -> Solutions:
         if _ours(world, w) and not isinstance(name, Var):
-            world.simulate(float(seconds), stop_check=current_stop_check(), moving=(name,))
+            world.settle(name, float(seconds), stop_check=current_stop_check())
             yield (world, name, seconds)
 
     return {

@@ -7,9 +7,9 @@ not integrate them nor solve their contacts, unless something moving touches the
 Bullet wakes them as usual). Bullet solves apart what does not touch, so the settling
 object moves exactly as it would among awake bodies (~0.15 ms a step).
 
-Waking puts the bodies back as PyBullet makes them (no sleeping of their own, awake).
-Bullet marks their shapes awake only at the end of their next step, so in that one step
-they stay as they are (as a body at rest would, but for a jitter of ~1e-7 m).
+Waking puts the bodies back as PyBullet makes them (no sleeping of their own, awake), but
+Bullet marks their shapes awake only at the end of their next step: in that step they
+stay as they are. A caller takes that step before anything else may move them.
 """
 
 from __future__ import annotations
