@@ -63,3 +63,19 @@ def test_the_bodies_are_awake_afterwards(world: World) -> None:
 def test_no_time_no_step(world: World) -> None:
     assert world.settle("dropped", 0.0) == 0
     assert world.pose("dropped") == Pose((0.08, 0.0, 0.3))
+
+
+def test_a_stop_leaves_the_bodies_awake(world: World) -> None:
+    world.add_box("hanging", (0.1, 0.1, 0.1), Pose((2.0, 0.0, 0.5)), mass=1.0)
+    looks: list[int] = []
+
+    def stop() -> None:
+        looks.append(1)
+        if len(looks) > 4:
+            raise RuntimeError("stopped")
+
+    with pytest.raises(RuntimeError, match="stopped"):
+        world.settle("dropped", 1.0, stop_check=stop)
+    z = world.pose("hanging").position[2]
+    world.simulate(world.time_step)
+    assert world.pose("hanging").position[2] < z

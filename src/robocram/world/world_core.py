@@ -434,7 +434,8 @@ class WorldCore:
         stayed still between two looks (:func:`~robocram.world.settling.at_rest`). The
         other bodies sleep meanwhile unless something moving touches them (a fifth of
         the cost of a kitchen step; see :mod:`~robocram.world.sleeping`); woken, they
-        take one more step with ``obj``, which leaves them as awake as before.
+        take one more step with ``obj``, which leaves them as awake as before. A stop
+        (``stop_check`` raising) takes that step too, then passes on.
         """
         handle = self.object(obj)
         steps = self._steps(seconds)
@@ -444,19 +445,21 @@ class WorldCore:
         cid = self.physics_client()
         others = [o.body_id for o in self._objects.values() if o is not handle]
         done = 0
-        with asleep(others, cid):
-            before = self.pose(handle)
-            while done < steps:
-                for _ in range(min(look, steps - done)):
-                    if stop_check is not None:
-                        stop_check()
-                    self.step()
-                    done += 1
-                now = self.pose(handle)
-                if at_rest(before, now):
-                    break
-                before = now
-        self.step()  # Bullet marks the woken bodies awake at the end of a step
+        try:
+            with asleep(others, cid):
+                before = self.pose(handle)
+                while done < steps:
+                    for _ in range(min(look, steps - done)):
+                        if stop_check is not None:
+                            stop_check()
+                        self.step()
+                        done += 1
+                    now = self.pose(handle)
+                    if at_rest(before, now):
+                        break
+                    before = now
+        finally:
+            self.step()  # Bullet marks the woken bodies awake at the end of a step
         return done + 1
 
     def _steps(self, seconds: float) -> int:
