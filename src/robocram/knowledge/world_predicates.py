@@ -3,7 +3,7 @@
 Every predicate takes the world first (``W``, bound by ``world(W)``; a typed query binds
 it itself); objects, robots, links and joints are name atoms, and unbound names
 enumerate. Predicates that change the world (``set_joint_state``, ``set_object_pose``,
-``attach``, ``detach``, ``simulate``) succeed once.
+``attach``, ``detach``, ``simulate``, ``settle``) succeed once.
 """
 
 from __future__ import annotations
