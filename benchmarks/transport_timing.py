@@ -141,7 +141,7 @@ def transport_times(robot: str, runs: int) -> TransportTimes:
     world = scene.world
     maps = ReachabilityMaps()
     out = TransportTimes(runs=runs)
-    solve_ik, simulate = projected_arm.solve_ik, World.simulate
+    solve_ik, simulate, settle = projected_arm.solve_ik, World.simulate, World.settle
     for seed in range(runs):
         spot = _mug_spot(seed)
         split = Split()
@@ -149,6 +149,7 @@ def transport_times(robot: str, runs: int) -> TransportTimes:
         locations.split = split
         projected_arm.solve_ik = timed(split, "ik", solve_ik)
         World.simulate = timed(split, "settling", simulate)  # type: ignore[method-assign]
+        World.settle = timed(split, "settling", settle)  # type: ignore[method-assign]
         with world.stored_state():
             z = world.pose("mug-1").position[2]
             world.set_pose("mug-1", Pose((*spot.position[:2], z), spot.orientation))
@@ -168,6 +169,7 @@ def transport_times(robot: str, runs: int) -> TransportTimes:
                 out.splits.append(split.finish())
         projected_arm.solve_ik = solve_ik
         World.simulate = simulate  # type: ignore[method-assign]
+        World.settle = settle  # type: ignore[method-assign]
     world.close()
     return out
 

@@ -3,7 +3,7 @@
 Every predicate takes the world first (``W``, bound by ``world(W)``; a typed query binds
 it itself); objects, robots, links and joints are name atoms, and unbound names
 enumerate. Predicates that change the world (``set_joint_state``, ``set_object_pose``,
-``attach``, ``detach``, ``simulate``) succeed once.
+``attach``, ``detach``, ``simulate``, ``settle``) succeed once.
 """
 
 from __future__ import annotations
@@ -62,6 +62,15 @@ class SimulatedTime:
     """A span of simulated time."""
 
     world: object
+    seconds: float = unit("s")
+
+
+@dataclass(frozen=True)
+class SettlingTime:
+    """At most a span of simulated time for an object to come to rest."""
+
+    world: object
+    object: str
     seconds: float = unit("s")
 
 
@@ -140,6 +149,9 @@ OBJECT_TYPE = Predicate("object_type", ObjectType, _W, "an object's type")
 OBJECT_POSE = Predicate("object_pose", ObjectPose, _W, "an object's pose now")
 SET_OBJECT_POSE = Predicate("set_object_pose", ObjectPose, _W, "puts an object at a pose")
 SIMULATE = Predicate("simulate", SimulatedTime, _W, "runs the physics for a while")
+SETTLING = Predicate(
+    "settle", SettlingTime, _W, "runs the physics until an object rests (at most Seconds)"
+)
 ROBOT_IN_WORLD = Predicate("robot", WorldRobot, _W, "a robot of the world")
 JOINT_STATE = Predicate("joint_state", JointState, _W, "a robot joint's value now")
 SET_JOINT_STATE = Predicate("set_joint_state", JointState, _W, "sets a robot joint's value")
@@ -165,6 +177,7 @@ WORLD_PREDICATES: tuple[Predicate[Any], ...] = (
     OBJECT_POSE,
     SET_OBJECT_POSE,
     SIMULATE,
+    SETTLING,
     ROBOT_IN_WORLD,
     JOINT_STATE,
     SET_JOINT_STATE,

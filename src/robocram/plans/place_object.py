@@ -19,7 +19,7 @@ import math
 from robocram.designators import LocationDesignator, ObjectDesignator, a
 from robocram.execution import perform
 from robocram.execution.failures import ManipulationLowLevelFailure
-from robocram.knowledge.world_predicates import ATTACHED, SIMULATE
+from robocram.knowledge.world_predicates import ATTACHED, SETTLING
 from robocram.logic import UnknownPredicateError, current_kb
 from robocram.plans.basic_actions import park_arms
 from robocram.plans.errors import PlanSetupError
@@ -35,9 +35,6 @@ PLACE_GAP = 0.005  # [m] the object is let go this far above its target (a locat
 CARRY_HEIGHTS = (0.10, 0.05)  # [m] the object comes in from this far above, first that works
 RETREATS = (0.10, 0.05)  # [m] the open hand backs off this far towards the wrist, or less
 SETTLE = 0.15  # [s] simulated at most after letting go: the 7 mm drop takes 0.04 s
-SETTLE_STEP = 1.0 / 120.0  # [s] simulated between two looks at the object (2 steps at 240 Hz)
-AT_REST = 0.0002  # [m] an object moving less than this over one look's step rests (2.4 cm/s)
-AT_REST_TURN = 0.004  # [rad] ... and turning less than this (0.5 rad/s: a mug rocks a little)
 MAX_SETTLE_DROP = 0.03  # [m] it may sink this much (the gap, contact) and still rest
 TURNS = (0.0, math.pi / 2, -math.pi / 2, math.pi)  # [rad] object turns tried in order
 
@@ -110,31 +107,21 @@ def _retreat(robot: str, held: Held) -> None:
 def _settled(name: str, put: Pose, seconds: float) -> str | None:
     """Why the object does not rest where it was put within ``seconds`` [s], or None.
 
-    The world is simulated in steps of :data:`SETTLE_STEP` until the object stops moving
-    (it moved less than :data:`AT_REST` and turned less than :data:`AT_REST_TURN` over the
-    last step) or ``seconds`` have passed. An object let go 7 mm above its support lands
-    within the fifth step and rests by the sixth or seventh, 12 to 14 physics steps of the
-    36 in :data:`SETTLE` (looked at every 4 steps, it took 16: a look costs far less than
-    a step): the shorter the drop, the sooner it rests, so the location's pose lies on the
-    object's true bottom (not its Bullet bounds, a few mm lower).
+    The world is simulated until the object rests (``settle/3``: it stopped moving between
+    two looks, see :mod:`robocram.world.settling`) or ``seconds`` have passed. An object
+    let go 7 mm above its support lands within the fifth look and rests by the sixth or
+    seventh, 12 to 14 physics steps of the 36 in :data:`SETTLE`: the shorter the drop, the
+    sooner it rests, so the location's pose lies on the object's true bottom (not its
+    Bullet bounds, a few mm lower).
     """
     if seconds <= 0.0:
         return None
-    kb = current_kb()
-    before = put
-    simulated = 0.0
-    while simulated < seconds - 1e-9:
-        step = min(SETTLE_STEP, seconds - simulated)
-        try:
-            if not SIMULATE.holds(kb, seconds=float(step)):
-                return None
-        except UnknownPredicateError:
-            return None  # no simulated world to ask (a real robot)
-        simulated += step
-        now = transform_pose(PoseStamped(name), "map").pose
-        if now.distance_to(before) < AT_REST and now.angle_to(before) < AT_REST_TURN:
-            break
-        before = now
+    try:
+        if not SETTLING.holds(current_kb(), object=name, seconds=float(seconds)):
+            return None
+    except UnknownPredicateError:
+        return None  # no simulated world to ask (a real robot)
+    now = transform_pose(PoseStamped(name), "map").pose
     drop = put.position[2] - now.position[2]
     if drop > MAX_SETTLE_DROP or now.distance_to(put) > MAX_SETTLE_DROP + 0.02:
         return f"it moved {now.distance_to(put):.3f} m after letting go (fell or slid)"

@@ -86,6 +86,11 @@ def _objects(world: PredicateWorld) -> dict[str, Implementation]:
             world.simulate(float(seconds), stop_check=current_stop_check())  # a task's stop
             yield (world, seconds)
 
+    def settle(w: object, name: Value, seconds: Value) -> Solutions:
+        if _ours(world, w) and not isinstance(name, Var):
+            world.settle(name, float(seconds), stop_check=current_stop_check())
+            yield (world, name, seconds)
+
     return {
         "world/1": world_,
         "object/2": object_,
@@ -93,6 +98,7 @@ def _objects(world: PredicateWorld) -> dict[str, Implementation]:
         "object_pose/3": object_pose,
         "set_object_pose/3": set_object_pose,
         "simulate/2": simulate,
+        "settle/3": settle,
     }
 
 
