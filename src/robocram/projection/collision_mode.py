@@ -58,9 +58,8 @@ class _Check:
         joints, motion = split_base_motion(candidate)  # IK that moves the base too
         start = self._start
         if start is None or not start.holds():
-            start = self._start = IKStart.read(
-                self.robot, CONTACT_DISTANCE, lambda: self_pairs(self.robot, self.arm)
-            )
+            pairs = arm_pairs(self.robot, self.arm)
+            start = self._start = IKStart.read(self.robot, CONTACT_DISTANCE, pairs)
         with base_moved_by(self.robot, motion):
             return start.colliding(joints, self.allowed, motion is not None)
 
@@ -73,18 +72,16 @@ def allowed_links(robot: ProjectedRobot, arm: str, mode: str) -> set[str]:
     return hand_links(robot.arm(arm))
 
 
-def self_pairs(robot: ProjectedRobot, arm: str) -> list[tuple[str, str]]:
+def arm_pairs(robot: ProjectedRobot, arm: str) -> list[tuple[str, str]]:
     """Pairs of ``arm``'s links and the robot's other links that may collide: both with a
-    collision shape (of 1,239 pairs of a PR2 arm, 216), apart now, and not joined by one
-    joint (the shoulder sits on the torso)."""
+    collision shape (of 1,239 pairs of a PR2 arm, 216) and not joined by one joint (the
+    shoulder sits on the torso). A check counts those apart where the robot starts."""
     world = robot.world
     body = world.object(robot.name)
     shaped = body.colliders
     links = tuple(n for n in world.link_names(body) if body.link_index[n] in shaped)
     first = robot.arm(arm).joints[0]
-    pairs = robot.description.model.derived(_ArmPairs).of(first, links)
-    touching = set(world.self_contacts(robot.name, pairs))
-    return [pair for pair in pairs if pair not in touching]
+    return robot.description.model.derived(_ArmPairs).of(first, links)
 
 
 @dataclass
@@ -136,5 +133,5 @@ def colliding_pairs(
 
     The object is named by itself, or as ``object/link`` when it has several links.
     """
-    start = IKStart.read(robot, CONTACT_DISTANCE, lambda: list(own))
+    start = IKStart.read(robot, CONTACT_DISTANCE, list(own), apart=True)
     return start.colliding(joints, allowed_links, base_moves=False)

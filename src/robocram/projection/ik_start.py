@@ -11,12 +11,13 @@ otherwise; nothing but the robot may move between its candidates.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robots import RobotModel
 from robocram.world import ObstacleBoxes, WorldObject
+from robocram.world.link_contacts import Bounds, link_bounds, link_pairs_in_contact, self_contacts
 
 LinkPair = tuple[str, str]  # (robot link, object or object/link | robot link)
 
@@ -32,17 +33,25 @@ class IKStart:
     unheld: frozenset[str]  # joints simulation does not hold where they are
     ignore: list[WorldObject]  # what may touch: the floor, what the robot holds
     obstacles: ObstacleBoxes | None  # None: what it holds carries more, ask the broadphase
-    own: list[LinkPair]  # the self pairs to check, apart at the start
+    pairs: list[LinkPair]  # self pairs to check, unless they touch at the start
+    _at_start: dict[LinkPair, bool] = field(default_factory=dict)  # pair -> touching
+    _touching: set[LinkPair] = field(default_factory=set)  # the pairs touching at the start
     _kept: dict[str, list[LinkPair]] = field(default_factory=dict)  # links that stay put
+    _bounds: dict[int, Bounds] = field(default_factory=dict)  # of the links that stay put
     _moves: dict[tuple[str, ...], tuple[frozenset[int], list[LinkPair]]] = field(
         default_factory=dict
     )
 
     @classmethod
     def read(
-        cls, robot: ProjectedRobot, distance: float, own: Callable[[], list[LinkPair]]
+        cls,
+        robot: ProjectedRobot,
+        distance: float,
+        pairs: list[LinkPair],
+        apart: bool = False,
     ) -> IKStart:
-        """The start as it is now; ``own`` gives the self pairs apart now."""
+        """The start as it is now; ``pairs`` of the robot's links count only if apart now
+        (asked when one touches at a candidate), or always if ``apart`` says they are."""
         world = robot.world
         model = robot.description.model
         body = world.object(robot.name)
@@ -59,7 +68,8 @@ class IKStart:
             frozenset(j for j, v in joints.items() if held.get(j) != v),
             ignore,
             None if carries_more else world.obstacle_boxes([body, *ignore]),
-            own(),
+            pairs,
+            dict.fromkeys(pairs, False) if apart else {},
         )
 
     def holds(self) -> bool:
@@ -73,48 +83,73 @@ class IKStart:
         ``allowed`` excepted, the robot put back after; ``base_moves``: every link moved."""
         world = self.robot.world
         body = world.object(self.robot.name)
-        colliders = body.collider_names()
-        moved, own = self._moved(body, tuple(joints), base_moves or self.obstacles is None)
-        ask = [n for i, n in colliders.items() if i in moved or n not in self._kept]
+        moved, pairs = self._moved(body, tuple(joints), base_moves or self.obstacles is None)
         before = self._to_restore(joints)
+        masters = self.robot.description.model.derived(_MovedLinks).masters
+        if not masters.isdisjoint(before):  # followers come back with masters, maybe elsewhere
+            self._touching_at_start(pairs)
         world.set_joint_states(body, dict(joints))
         try:
-            found: dict[str, list[LinkPair]] = {n: [] for n in ask}
-            for link, obj, other in world.link_pairs_in_contact(
-                body, self.ignore, self.distance, ask, self.obstacles
-            ):
-                several = len(obj.link_index) > 1
-                found[link].append((link, f"{obj.name}/{other}" if several else obj.name))
-            if self.obstacles is not None and not base_moves:
-                self._kept.update((n, found[n]) for i, n in colliders.items()
-                                  if n in found and i not in moved)  # fmt: skip
-            hits: dict[LinkPair, None] = {}
-            for link in colliders.values():
-                if link not in allowed:
-                    hits.update(dict.fromkeys(found[link] if link in found else self._kept[link]))
-            hits.update(dict.fromkeys(world.self_contacts(body, own, self.distance)))
-            return list(hits)
+            hits, touching = self._contacts(body, moved, pairs, allowed, base_moves)
         finally:
             world.set_joint_states(body, before)
+        hits.update(dict.fromkeys(p for p in touching if not self._touching_at_start([p])))
+        return list(hits)
+
+    def _contacts(
+        self,
+        body: WorldObject,
+        moved: frozenset[int],
+        pairs: list[LinkPair],
+        allowed: set[str],
+        base_moves: bool,
+    ) -> tuple[dict[LinkPair, None], list[LinkPair]]:
+        """What the robot, set to a candidate, touches (links in ``allowed`` excepted), and
+        which of ``pairs`` touch; each link's bounds read once for both."""
+        world = self.robot.world
+        colliders = body.collider_names()
+        bounds = dict(self._bounds)
+        bounds.update(link_bounds(world, body, [i for i in colliders if i not in bounds]))
+        ask = [n for i, n in colliders.items() if i in moved or n not in self._kept]
+        found: dict[str, list[LinkPair]] = {n: [] for n in ask}
+        for link, obj, other in link_pairs_in_contact(
+            world, body, self.ignore, self.distance, ask, self.obstacles, bounds
+        ):
+            several = len(obj.link_index) > 1
+            found[link].append((link, f"{obj.name}/{other}" if several else obj.name))
+        if self.obstacles is not None and not base_moves:
+            still = [(i, n) for i, n in colliders.items() if i not in moved]
+            self._kept.update((n, found[n]) for _, n in still if n in found)
+            self._bounds = {i: bounds[i] for i, _ in still}
+        hits: dict[LinkPair, None] = {}
+        for link in colliders.values():
+            if link not in allowed:
+                hits.update(dict.fromkeys(found[link] if link in found else self._kept[link]))
+        return hits, self_contacts(world, body, pairs, self.distance, bounds)
+
+    def _touching_at_start(self, pairs: list[LinkPair]) -> bool:
+        """Whether any of ``pairs`` touch at the start (the robot stands there now)."""
+        unknown = [p for p in pairs if p not in self._at_start]
+        if unknown:
+            body = self.robot.world.object(self.robot.name)
+            touching = set(self_contacts(self.robot.world, body, unknown, self.distance))
+            self._at_start.update((p, p in touching) for p in unknown)
+            self._touching |= touching
+        return any(self._at_start[p] for p in pairs)
 
     def _moved(
         self, body: WorldObject, joints: tuple[str, ...], everything: bool
     ) -> tuple[frozenset[int], list[LinkPair]]:
         """The link indices ``joints`` move (all if ``everything``), and the self pairs one
-        of whose links moves (the others stay apart, as at the start)."""
+        of whose links moves (the others stay as at the start), those known to touch there
+        left out."""
         key = () if everything else joints
         found = self._moves.get(key)
         if found is None:
-            if everything:
-                indices = frozenset(body.link_index.values())
-            else:
-                links = self.robot.description.model.derived(_MovedLinks).below(joints)
-                indices = frozenset(body.link_index[n] for n in links if n in body.link_index)
-            own = [
-                (a, b) for a, b in self.own
-                if body.link_index[a] in indices or body.link_index[b] in indices
-            ]  # fmt: skip
-            found = self._moves[key] = (indices, own)
+            moves = self.robot.description.model.derived(_MovedLinks)
+            found = self._moves[key] = moves.of(body, None if everything else joints, self.pairs)
+        if self._touching:
+            return found[0], [p for p in found[1] if p not in self._touching]
         return found
 
     def _to_restore(self, joints: Mapping[str, float]) -> dict[str, float]:
@@ -139,12 +174,35 @@ class _MovedLinks:
     _children: dict[str, list[str]] = field(default_factory=dict)
     _followers: dict[str, list[str]] = field(default_factory=dict)
     _found: dict[tuple[str, ...], frozenset[str]] = field(default_factory=dict)
+    _pairs: dict[tuple[object, ...], tuple[frozenset[int], list[LinkPair]]] = field(
+        default_factory=dict
+    )
+
+    masters: frozenset[str] = frozenset()  # the joints mimic joints follow
 
     def __post_init__(self) -> None:
         for name, joint in self.model.joints.items():
             self._children.setdefault(joint.parent, []).append(joint.child)
             if joint.mimic is not None:
                 self._followers.setdefault(joint.mimic.joint, []).append(name)
+        self.masters = frozenset(self._followers)
+
+    def of(
+        self, body: WorldObject, joints: tuple[str, ...] | None, pairs: list[LinkPair]
+    ) -> tuple[frozenset[int], list[LinkPair]]:
+        """The link indices of ``body`` that ``joints`` move (None: all, the base moves),
+        and those of ``pairs`` (link names) one of whose links moves."""
+        key = (joints, *pairs)
+        found = self._pairs.get(key)
+        if found is None:
+            index = body.link_index
+            if joints is None:
+                indices = frozenset(index.values())
+            else:
+                indices = frozenset(index[n] for n in self.below(joints) if n in index)
+            moving = [(a, b) for a, b in pairs if index[a] in indices or index[b] in indices]
+            found = self._pairs.setdefault(key, (indices, moving))
+        return found
 
     def below(self, joints: tuple[str, ...]) -> frozenset[str]:
         """The links that move when ``joints`` do."""
