@@ -88,11 +88,12 @@ class IKStart:
         masters = self.robot.description.model.derived(_MovedLinks).masters
         if not masters.isdisjoint(before):  # followers come back with masters, maybe elsewhere
             self._touching_at_start(pairs)
-        world.set_joint_states(body, dict(joints))
+        carry = self.obstacles is None  # what the robot holds carries more, and may hit it
+        world.set_joint_states(body, dict(joints), carry)
         try:
             hits, touching = self._contacts(body, moved, pairs, allowed, base_moves)
         finally:
-            world.set_joint_states(body, before)
+            world.set_joint_states(body, before, carry)
         hits.update(dict.fromkeys(p for p in touching if not self._touching_at_start([p])))
         return list(hits)
 
