@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robots import RobotModel
-from robocram.world import ObstacleBoxes, WorldObject
+from robocram.world import WorldObject
 from robocram.world.link_contacts import Bounds, link_bounds, link_pairs_in_contact, self_contacts
 
 LinkPair = tuple[str, str]  # (robot link, object or object/link | robot link)
@@ -32,7 +32,7 @@ class IKStart:
     joints: dict[str, float]  # the values to put back (mimic followers come with masters)
     unheld: frozenset[str]  # joints simulation does not hold where they are
     ignore: list[WorldObject]  # what may touch: the floor, what the robot holds
-    obstacles: ObstacleBoxes | None  # None: what it holds carries more, ask the broadphase
+    alone: bool  # only the robot and what it holds (ignored) move: nothing they carry
     pairs: list[LinkPair]  # self pairs to check, unless they touch at the start
     _at_start: dict[LinkPair, bool] = field(default_factory=dict)  # pair -> touching
     _touching: set[LinkPair] = field(default_factory=set)  # the pairs touching at the start
@@ -67,7 +67,7 @@ class IKStart:
             {j: v for j, v in joints.items() if model.joints[j].mimic is None},
             frozenset(j for j, v in joints.items() if held.get(j) != v),
             ignore,
-            None if carries_more else world.obstacle_boxes([body, *ignore]),
+            not carries_more,
             pairs,
             dict.fromkeys(pairs, False) if apart else {},
         )
@@ -83,12 +83,12 @@ class IKStart:
         ``allowed`` excepted, the robot put back after; ``base_moves``: every link moved."""
         world = self.robot.world
         body = world.object(self.robot.name)
-        moved, pairs = self._moved(body, tuple(joints), base_moves or self.obstacles is None)
+        moved, pairs = self._moved(body, tuple(joints), base_moves or not self.alone)
         before = self._to_restore(joints)
         masters = self.robot.description.model.derived(_MovedLinks).masters
         if not masters.isdisjoint(before):  # followers come back with masters, maybe elsewhere
             self._touching_at_start(pairs)
-        carry = self.obstacles is None  # what the robot holds carries more, and may hit it
+        carry = not self.alone  # what the robot holds carries more, which may hit it
         world.set_joint_states(body, dict(joints), carry)
         try:
             hits, touching = self._contacts(body, moved, pairs, allowed, base_moves)
@@ -114,11 +114,11 @@ class IKStart:
         ask = [n for i, n in colliders.items() if i in moved or n not in self._kept]
         found: dict[str, list[LinkPair]] = {n: [] for n in ask}
         for link, obj, other in link_pairs_in_contact(
-            world, body, self.ignore, self.distance, ask, self.obstacles, bounds
+            world, body, self.ignore, self.distance, ask, None, bounds
         ):
             several = len(obj.link_index) > 1
             found[link].append((link, f"{obj.name}/{other}" if several else obj.name))
-        if self.obstacles is not None and not base_moves:
+        if self.alone and not base_moves:
             still = [(i, n) for i, n in colliders.items() if i not in moved]
             self._kept.update((n, found[n]) for _, n in still if n in found)
             self._bounds = {i: bounds[i] for i, _ in still}
