@@ -55,7 +55,9 @@ class IKStart:
         world = robot.world
         model = robot.description.model
         body = world.object(robot.name)
-        joints = world.joint_states(body)
+        state = world.body_state(body)  # its joints last, in joint_states' order
+        names = body.movable_joints
+        joints = dict(zip(names, state[len(state) - len(names) :], strict=True))
         held = world.held_joints(body)
         carried = set(world.attachments(body))
         ignore = [o for o in world.objects() if o.name in carried or o.type == "floor"]
@@ -63,7 +65,7 @@ class IKStart:
         return cls(
             robot,
             distance,
-            world.body_state(body),
+            state,
             {j: v for j, v in joints.items() if model.joints[j].mimic is None},
             frozenset(j for j, v in joints.items() if held.get(j) != v),
             ignore,

@@ -212,9 +212,7 @@ def self_contacts(
         [_bounds_of(obj, i, bounds, cid) for i in rows.used], dtype=float
     ).reshape(-1, 2, 3)
     low, high = table[:, 0] - distance, table[:, 1] + distance
-    below = np.ones((len(table), len(table)), dtype=bool)  # [i, j]: i's low under j's high
-    for axis in range(3):
-        below &= low[:, None, axis] <= high[None, :, axis]
+    below = (low[:, None, :] <= high[None, :, :]).all(axis=2)  # [i, j]: i's low under j's
     found = []
     for k in np.flatnonzero((below & below.T).ravel()[rows.cells]).tolist():
         if pybullet.getClosestPoints(
