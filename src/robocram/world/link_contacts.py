@@ -208,9 +208,8 @@ def self_contacts(
         return []
     cid = world.physics_client()
     rows = obj.pair_rows(key)
-    table = np.array(
-        [_bounds_of(obj, i, bounds, cid) for i in rows.used], dtype=float
-    ).reshape(-1, 2, 3)
+    boxes = [_bounds_of(obj, i, bounds, cid) for i in rows.used]
+    table = np.array(boxes, dtype=float).reshape(-1, 2, 3)
     low, high = table[:, 0] - distance, table[:, 1] + distance
     below = (low[:, None, :] <= high[None, :, :]).all(axis=2)  # [i, j]: i's low under j's
     found = []
