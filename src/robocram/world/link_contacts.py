@@ -70,8 +70,9 @@ def _overlaps(
     other_names: dict[int, dict[int, str]] = {}
     for index, link in indices.items():
         low, high = _bounds_of(obj, index, bounds, cid)
-        low = [v - distance for v in low]
-        high = [v + distance for v in high]
+        if distance:  # IK checks ask for touching: their bounds as read
+            low = [v - distance for v in low]
+            high = [v + distance for v in high]
         for body, other_link in (
             pybullet.getOverlappingObjects(low, high, physicsClientId=cid) or ()
         ):
