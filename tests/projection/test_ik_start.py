@@ -7,7 +7,7 @@ from __future__ import annotations
 import pytest
 
 from robocram.projection import ProjectedRobot
-from robocram.projection.collision_mode import arm_pairs, collision_check
+from robocram.projection.collision_mode import arm_pairs, collision_check, putting_back_once
 from robocram.scenes import kitchen_scene
 from robocram.world import World
 
@@ -62,3 +62,23 @@ def test_self_pairs_touching_at_the_start_stay_allowed(world: World) -> None:
     assert not touching & set(found)
     world.set_joint_states("pr2", dict(zip(ARM, REACHING, strict=True)))
     assert touching & set(_fresh(robot, nudged))  # from elsewhere, the same pose collides
+
+
+def test_a_query_puts_the_robot_back_once_even_when_it_raises(world: World) -> None:
+    robot = ProjectedRobot.of(world, "pr2")
+    world.set_pose("pr2", AT_THE_COUNTER)
+    joints, held = world.joint_states("pr2"), world.held_joints("pr2")
+    candidates = [
+        dict(zip(ARM, REACHING, strict=True)),
+        dict(zip(ARM, ON_THE_BASE, strict=True)),  # a self pair: put back to ask the start
+        {**dict(zip(ARM, REACHING, strict=True)), "torso_lift_joint": 0.3},
+        dict(zip(ARM, (0.0,) * 7, strict=True)),  # the torso goes back first
+    ]
+    check = collision_check(robot, "right", "avoid_all")
+    assert check is not None
+    with pytest.raises(RuntimeError), putting_back_once(check):
+        seen = [check(candidate) for candidate in candidates]
+        assert world.joint_states("pr2") != joints  # left at the last candidate
+        raise RuntimeError("a stopped task")
+    assert world.joint_states("pr2") == joints and world.held_joints("pr2") == held
+    assert seen == [_fresh(robot, candidate) for candidate in candidates]

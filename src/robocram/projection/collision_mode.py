@@ -3,7 +3,8 @@
 ``avoid_all``: no link of the robot may touch anything (the floor and objects the robot
 holds excepted). ``allow_hand``: the moving arm's hand and gripper links may touch (for
 grasping). ``allow_all``: no check. A candidate configuration is tried on the world and the
-joints are put back before the check returns, so IK never leaves the robot moved.
+joints are put back before the check returns (inside :func:`putting_back_once`, when the
+query ends: the next candidate moves on from the last), so IK never leaves the robot moved.
 
 One check serves one IK query, while only the robot moves: the links a candidate's joints
 do not move touch at every candidate what they touch where the robot stands, so what they
@@ -12,7 +13,8 @@ touch is asked once (:class:`~robocram.projection.ik_start.IKStart`).
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping, Sequence
+import contextlib
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 
 from robocram.kinematics import split_base_motion
@@ -53,6 +55,7 @@ class _Check:
     arm: str
     allowed: set[str]
     _start: IKStart | None = field(default=None, repr=False)
+    _once: bool = field(default=False, repr=False)  # put back after the query only
 
     def __call__(self, candidate: Mapping[str, float]) -> list[tuple[str, str]]:
         joints, motion = split_base_motion(candidate)  # IK that moves the base too
@@ -60,8 +63,28 @@ class _Check:
         if start is None or not start.holds():
             pairs = arm_pairs(self.robot, self.arm)
             start = self._start = IKStart.read(self.robot, CONTACT_DISTANCE, pairs)
+        defer = self._once and motion is None  # a moved base goes back at every candidate
         with base_moved_by(self.robot, motion):
-            return start.colliding(joints, self.allowed, motion is not None)
+            return start.colliding(joints, self.allowed, motion is not None, defer)
+
+    @contextlib.contextmanager
+    def putting_back_once(self) -> Iterator[None]:
+        """Inside, candidates leave the robot where they put it for the next one to move
+        on from; it is put back when the block ends (returns or raises)."""
+        self._once = True
+        try:
+            yield
+        finally:
+            self._once = False
+            if self._start is not None:
+                self._start.put_back()
+
+
+def putting_back_once(check: object) -> contextlib.AbstractContextManager[None]:
+    """:meth:`_Check.putting_back_once` of a check made here; nothing for another one."""
+    if isinstance(check, _Check):
+        return check.putting_back_once()
+    return contextlib.nullcontext()
 
 
 def allowed_links(robot: ProjectedRobot, arm: str, mode: str) -> set[str]:

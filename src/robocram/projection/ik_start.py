@@ -2,11 +2,10 @@
 
 A candidate moves the links below its joints (the arm's, the torso's); the others stay
 where they start, so what they touch is the same at every candidate of the query and is
-asked once. So are the bounds of everything the robot may hit
-(:meth:`~robocram.world.World.obstacle_boxes`: only the robot and what it holds move), the
-self pairs apart at the start, and the joint values each candidate puts back. A check asks
-:meth:`IKStart.holds` before each candidate and reads the start again if the robot stands
-otherwise; nothing but the robot may move between its candidates.
+asked once, as are their bounds. Self pairs touching at the start stay allowed; the start
+is asked about a pair only when it touches at a candidate. What each candidate puts back
+is read once too. A check asks :meth:`IKStart.holds` before each candidate and reads the
+start again if the robot stands otherwise; nothing but the robot may move in between.
 """
 
 from __future__ import annotations
@@ -35,6 +34,7 @@ class IKStart:
     alone: bool  # only the robot and what it holds (ignored) move: nothing they carry
     pairs: list[LinkPair]  # self pairs to check, unless they touch at the start
     _at_start: dict[LinkPair, bool] = field(default_factory=dict)  # pair -> touching
+    _dirty: dict[str, float] = field(default_factory=dict)  # deferred: values to put back
     _touching: set[LinkPair] = field(default_factory=set)  # the pairs touching at the start
     _kept: dict[str, list[LinkPair]] = field(default_factory=dict)  # links that stay put
     _bounds: dict[int, Bounds] = field(default_factory=dict)  # of the links that stay put
@@ -75,29 +75,51 @@ class IKStart:
         )
 
     def holds(self) -> bool:
-        """Whether the robot stands as it did at the start (base and joints)."""
-        return self.robot.world.body_state(self.robot.name) == self.state
+        """Whether the robot stands as it did at the start (base and joints), or where the
+        last candidate left it, to be put back (:meth:`put_back`)."""
+        return bool(self._dirty) or self.robot.world.body_state(self.robot.name) == self.state
 
     def colliding(
-        self, joints: Mapping[str, float], allowed: set[str], base_moves: bool
+        self,
+        joints: Mapping[str, float],
+        allowed: set[str],
+        base_moves: bool,
+        defer: bool = False,
     ) -> list[LinkPair]:
         """The ``(robot link, object)`` and self pairs in contact at ``joints``, links in
-        ``allowed`` excepted, the robot put back after; ``base_moves``: every link moved."""
+        ``allowed`` excepted; ``base_moves``: every link moved. The robot is put back after,
+        or with ``defer`` left there until the next candidate or :meth:`put_back`."""
         world = self.robot.world
         body = world.object(self.robot.name)
         moved, pairs = self._moved(body, tuple(joints), base_moves or not self.alone)
         before = self._to_restore(joints)
         masters = self.robot.description.model.derived(_MovedLinks).masters
         if not masters.isdisjoint(before):  # followers come back with masters, maybe elsewhere
+            self.put_back()
             self._touching_at_start(pairs)
+            defer = False
+        if any(j not in joints and j not in self.unheld for j in self._dirty):
+            self.put_back()  # an earlier candidate moved joints this one leaves
         carry = not self.alone  # what the robot holds carries more, which may hit it
         world.set_joint_states(body, dict(joints), carry)
+        if defer:
+            self._dirty.update(before)
         try:
             hits, touching = self._contacts(body, moved, pairs, allowed, base_moves)
         finally:
-            world.set_joint_states(body, before, carry)
+            if not defer:
+                world.set_joint_states(body, before, carry)
+        if any(p not in self._at_start for p in touching):
+            self.put_back()  # the start's self contacts are asked where it stands
         hits.update(dict.fromkeys(p for p in touching if not self._touching_at_start([p])))
         return list(hits)
+
+    def put_back(self) -> None:
+        """Put back what deferred candidates moved (nothing if none is left)."""
+        if self._dirty:
+            body = self.robot.world.object(self.robot.name)
+            self.robot.world.set_joint_states(body, self._dirty, not self.alone)
+            self._dirty = {}
 
     def _contacts(
         self,
