@@ -82,3 +82,19 @@ def test_a_query_puts_the_robot_back_once_even_when_it_raises(world: World) -> N
         raise RuntimeError("a stopped task")
     assert world.joint_states("pr2") == joints and world.held_joints("pr2") == held
     assert seen == [_fresh(robot, candidate) for candidate in candidates]
+
+
+def test_links_a_later_candidate_moves_are_read_again(world: World) -> None:
+    robot = ProjectedRobot.of(world, "pr2")
+    world.set_pose("pr2", ((-0.12, 1.4, 0.0), AT_THE_COUNTER[1]))
+    left = (-0.71, 0.9, -0.38, -0.15, 0.66, -0.18, 0.1)  # the hand in the cutlery unit
+    lefts = [j.replace("r_", "l_", 1) for j in ARM]
+    world.set_joint_states("pr2", dict(zip(lefts, left, strict=True)))
+    arm = dict(zip(ARM, (-0.94, 0.51, 0.08, -0.34, 0.58, -0.39, -0.09), strict=True))
+    raised = {**arm, "torso_lift_joint": 0.3}  # the left hand rises with the torso
+    check = collision_check(robot, "right", "avoid_all")
+    assert check is not None
+    seen = [check(arm), check(raised)]
+    assert seen == [_fresh(robot, arm), _fresh(robot, raised)]
+    hand = [{p for p in s if p[0].startswith("l_")} for s in seen]
+    assert hand[0] and hand[1] and hand[0] != hand[1]

@@ -133,7 +133,7 @@ class IKStart:
         which of ``pairs`` touch; each link's bounds read once for both."""
         world = self.robot.world
         colliders = body.collider_names()
-        bounds = dict(self._bounds)
+        bounds = {i: b for i, b in self._bounds.items() if i not in moved}  # still where read
         bounds.update(link_bounds(world, body, [i for i in colliders if i not in bounds]))
         ask = [n for i, n in colliders.items() if i in moved or n not in self._kept]
         found: dict[str, list[LinkPair]] = {n: [] for n in ask}
