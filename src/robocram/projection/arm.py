@@ -33,7 +33,7 @@ from robocram.motion.tool_goal import (
     ensure_reached,
     joint_values,
 )
-from robocram.projection.collision_mode import allowed_links, collision_check
+from robocram.projection.collision_mode import allowed_links, collision_check, putting_back_once
 from robocram.projection.errors import unknown_name
 from robocram.projection.navigation import drive, moved_base, unchecked_base_motion
 from robocram.projection.projected_robot import ProjectedRobot
@@ -73,7 +73,7 @@ def _solve(
     check = collision_check(robot, arm, mode)
     seed = robot.world.joint_states(robot.name)
     result = IKResult(False)
-    with robot.ik_lock:
+    with robot.ik_lock, putting_back_once(check):  # the robot stands as before after
         for use_torso, base in _attempts(robot, arm, move_base, base_travel):
             result = solve_ik(
                 robot.description,

@@ -3,17 +3,24 @@
 ``avoid_all``: no link of the robot may touch anything (the floor and objects the robot
 holds excepted). ``allow_hand``: the moving arm's hand and gripper links may touch (for
 grasping). ``allow_all``: no check. A candidate configuration is tried on the world and the
-joints are put back before the check returns, so IK never leaves the robot moved.
+joints are put back before the check returns (inside :func:`putting_back_once`, when the
+query ends: the next candidate moves on from the last), so IK never leaves the robot moved.
+
+One check serves one IK query, while only the robot moves: the links a candidate's joints
+do not move touch at every candidate what they touch where the robot stands, so what they
+touch is asked once (:class:`~robocram.projection.ik_start.IKStart`).
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping, Sequence
+import contextlib
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 
 from robocram.kinematics import split_base_motion
 from robocram.motion.collision_modes import COLLISION_MODES, hand_links
 from robocram.projection.errors import ProjectionError
+from robocram.projection.ik_start import IKStart
 from robocram.projection.navigation import base_moved_by
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robots import RobotModel
@@ -35,16 +42,49 @@ def collision_check(
         )
     if mode == "allow_all":
         return None
-    allowed = allowed_links(robot, arm, mode)
+    return _Check(robot, arm, allowed_links(robot, arm, mode))
 
-    own = self_pairs(robot, arm)
 
-    def collides(candidate: Mapping[str, float]) -> list[tuple[str, str]]:
+@dataclass
+class _Check:
+    """``collides(candidate)``: the check of one query, reading the robot's start (its
+    contacts, self pairs and the obstacles' bounds) at the first candidate, and again only
+    if the robot stands otherwise at a later one."""
+
+    robot: ProjectedRobot
+    arm: str
+    allowed: set[str]
+    _start: IKStart | None = field(default=None, repr=False)
+    _once: bool = field(default=False, repr=False)  # put back after the query only
+
+    def __call__(self, candidate: Mapping[str, float]) -> list[tuple[str, str]]:
         joints, motion = split_base_motion(candidate)  # IK that moves the base too
-        with base_moved_by(robot, motion):
-            return colliding_pairs(robot, joints, allowed, own)
+        start = self._start
+        if start is None or not start.holds():
+            pairs = arm_pairs(self.robot, self.arm)
+            start = self._start = IKStart.read(self.robot, CONTACT_DISTANCE, pairs)
+        defer = self._once and motion is None  # a moved base goes back at every candidate
+        with base_moved_by(self.robot, motion):
+            return start.colliding(joints, self.allowed, motion is not None, defer)
 
-    return collides
+    @contextlib.contextmanager
+    def putting_back_once(self) -> Iterator[None]:
+        """Inside, candidates leave the robot where they put it for the next one to move
+        on from; it is put back when the block ends (returns or raises)."""
+        self._once = True
+        try:
+            yield
+        finally:
+            self._once = False
+            if self._start is not None:
+                self._start.put_back()
+
+
+def putting_back_once(check: object) -> contextlib.AbstractContextManager[None]:
+    """:meth:`_Check.putting_back_once` of a check made here; nothing for another one."""
+    if isinstance(check, _Check):
+        return check.putting_back_once()
+    return contextlib.nullcontext()
 
 
 def allowed_links(robot: ProjectedRobot, arm: str, mode: str) -> set[str]:
@@ -55,18 +95,16 @@ def allowed_links(robot: ProjectedRobot, arm: str, mode: str) -> set[str]:
     return hand_links(robot.arm(arm))
 
 
-def self_pairs(robot: ProjectedRobot, arm: str) -> list[tuple[str, str]]:
+def arm_pairs(robot: ProjectedRobot, arm: str) -> list[tuple[str, str]]:
     """Pairs of ``arm``'s links and the robot's other links that may collide: both with a
-    collision shape (of 1,239 pairs of a PR2 arm, 216), apart now, and not joined by one
-    joint (the shoulder sits on the torso)."""
+    collision shape (of 1,239 pairs of a PR2 arm, 216) and not joined by one joint (the
+    shoulder sits on the torso). A check counts those apart where the robot starts."""
     world = robot.world
     body = world.object(robot.name)
     shaped = body.colliders
     links = tuple(n for n in world.link_names(body) if body.link_index[n] in shaped)
     first = robot.arm(arm).joints[0]
-    pairs = robot.description.model.derived(_ArmPairs).of(first, links)
-    touching = set(world.self_contacts(robot.name, pairs))
-    return [pair for pair in pairs if pair not in touching]
+    return robot.description.model.derived(_ArmPairs).of(first, links)
 
 
 @dataclass
@@ -113,43 +151,10 @@ def colliding_pairs(
     allowed_links: set[str],
     own: Sequence[tuple[str, str]] = (),
 ) -> list[tuple[str, str]]:
-    """``(robot link, object)`` pairs in contact at ``joints``, ``allowed_links`` excepted.
+    """``(robot link, object)`` pairs in contact at ``joints``, ``allowed_links`` excepted,
+    and the pairs among ``own`` that touch; the robot is put back after.
 
     The object is named by itself, or as ``object/link`` when it has several links.
     """
-    world = robot.world
-    before = _to_restore(robot, joints)
-    world.set_joint_states(robot.name, dict(joints))
-    try:
-        held = set(world.attachments(robot.name))
-        ignore = [o for o in world.objects() if o.name in held or o.type == "floor"]
-        hits: dict[tuple[str, str], None] = {}
-        for link, obj, other_link in world.link_pairs_in_contact(
-            robot.name, ignore, CONTACT_DISTANCE
-        ):
-            if link not in allowed_links:
-                several = len(obj.link_index) > 1
-                hits[(link, f"{obj.name}/{other_link}" if several else obj.name)] = None
-        for pair in world.self_contacts(robot.name, own):
-            hits[pair] = None
-        return list(hits)
-    finally:
-        world.set_joint_states(robot.name, before)
-
-
-def _to_restore(robot: ProjectedRobot, joints: Mapping[str, float]) -> dict[str, float]:
-    """The joint values that put the robot back after it is set to ``joints``: those the
-    check changes, and every other one simulation does not hold where it is (putting it
-    back holds it there, as putting back every joint did). Mimic followers come back with
-    their masters."""
-    world = robot.world
-    model = robot.description.model
-    held = world.held_joints(robot.name)
-    mimics = (model.joints[j].mimic for j in joints)
-    masters = {mimic.joint for mimic in mimics if mimic is not None}
-    return {
-        joint: value
-        for joint, value in world.joint_states(robot.name).items()
-        if model.joints[joint].mimic is None
-        and (joint in joints or joint in masters or held.get(joint) != value)
-    }
+    start = IKStart.read(robot, CONTACT_DISTANCE, list(own), apart=True)
+    return start.colliding(joints, allowed_links, base_moves=False)

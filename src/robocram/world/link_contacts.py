@@ -10,7 +10,7 @@ says: the body's carried objects and itself never do.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterable, Iterator, Mapping, Sequence
 
 import numpy as np
 
@@ -20,6 +20,28 @@ from robocram.world.pybullet_backend import pybullet
 from robocram.world.world_core import WorldCore
 from robocram.world.world_object import WorldObject
 
+Bounds = tuple[Sequence[float], Sequence[float]]  # a link's (low, high) corners [m]
+
+
+def link_bounds(world: WorldCore, obj: WorldObject, indices: Iterable[int]) -> dict[int, Bounds]:
+    """The bounds of ``obj``'s links ``indices`` (pybullet link indices) as they are now.
+
+    Queries about one configuration share them (pass them as ``bounds``): a check asks
+    both what its links touch and which pairs of its own links touch.
+    """
+    cid = world.physics_client()
+    return {i: pybullet.getAABB(obj.body_id, i, physicsClientId=cid) for i in indices}
+
+
+def _bounds_of(
+    obj: WorldObject, index: int, bounds: Mapping[int, Bounds] | None, cid: int
+) -> Bounds:
+    if bounds is not None:
+        found = bounds.get(index)
+        if found is not None:
+            return found
+    return pybullet.getAABB(obj.body_id, index, physicsClientId=cid)
+
 
 def _overlaps(
     world: WorldCore,
@@ -28,11 +50,12 @@ def _overlaps(
     skip: set[str],
     distance: float,
     obstacles: ObstacleBoxes | None = None,
+    bounds: Mapping[int, Bounds] | None = None,
 ) -> Iterator[tuple[str, WorldObject, int, int, str]]:
     """``(link of obj, other object, other's link index, obj's link index, other's link
     name)`` per pair of links whose bounds, grown by ``distance``, overlap; objects named in
     ``skip`` left out. ``obstacles``, when it covers the query, stands in for the
-    broadphase."""
+    broadphase; ``bounds`` holds links' bounds read before (:func:`link_bounds`)."""
     cid = world.physics_client()
     names = _link_names(obj)
     if links is None:
@@ -41,14 +64,15 @@ def _overlaps(
         asked = {obj.link_index[name]: name for name in links}
         indices = {i: name for i, name in asked.items() if i in obj.colliders}
     if obstacles is not None and obstacles.covers(obj, skip):
-        yield from _overlaps_in(obstacles, obj, indices, names, skip, distance, cid)
+        yield from _overlaps_in(obstacles, obj, indices, names, skip, distance, bounds, cid)
         return
     by_body = {o.body_id: o for o in world.objects() if o.name not in skip}
     other_names: dict[int, dict[int, str]] = {}
     for index, link in indices.items():
-        low, high = pybullet.getAABB(obj.body_id, index, physicsClientId=cid)
-        low = [v - distance for v in low]
-        high = [v + distance for v in high]
+        low, high = _bounds_of(obj, index, bounds, cid)
+        if distance:  # IK checks ask for touching: their bounds as read
+            low = [v - distance for v in low]
+            high = [v + distance for v in high]
         for body, other_link in (
             pybullet.getOverlappingObjects(low, high, physicsClientId=cid) or ()
         ):
@@ -67,13 +91,13 @@ def _overlaps_in(
     names: dict[int, str],
     skip: set[str],
     distance: float,
+    bounds: Mapping[int, Bounds] | None,
     cid: int,
 ) -> Iterator[tuple[str, WorldObject, int, int, str]]:
     """:func:`_overlaps` against bounds read before (one comparison for all links)."""
     order = list(indices.items())
     boxes = np.array(
-        [pybullet.getAABB(obj.body_id, index, physicsClientId=cid) for index, _ in order],
-        dtype=float,
+        [_bounds_of(obj, index, bounds, cid) for index, _ in order], dtype=float
     ).reshape(-1, 2, 3)
     for box, row in obstacles.overlapping(boxes[:, 0] - distance, boxes[:, 1] + distance, skip):
         index, link = order[box]
@@ -120,15 +144,17 @@ def link_pairs_in_contact(
     distance: float = CONTACT_DISTANCE,
     links: Iterable[str] | None = None,
     obstacles: ObstacleBoxes | None = None,
+    bounds: Mapping[int, Bounds] | None = None,
 ) -> list[tuple[str, WorldObject, str]]:
     """``(link of obj, other object, its link)`` triples nearer than ``distance`` [m], each once.
 
     Unlike :func:`link_contacts` nothing is skipped for being carried: the caller says in
-    ``ignore`` what may touch (a robot and what it holds, the floor).
+    ``ignore`` what may touch (a robot and what it holds, the floor). ``bounds``: links'
+    bounds read before at this configuration (:func:`link_bounds`); others are read here.
     """
     skip = {obj.name} | {o.name for o in ignore}
     found: dict[tuple[str, str, str], tuple[str, WorldObject, str]] = {}
-    overlaps = _overlaps(world, obj, links, skip, distance, obstacles)
+    overlaps = _overlaps(world, obj, links, skip, distance, obstacles, bounds)
     for link, other, other_link, index, other_name in overlaps:
         key = (link, other.name, other_name)
         if key not in found and _near(world, obj, other, index, other_link, distance):
@@ -170,24 +196,23 @@ def self_contacts(
     obj: WorldObject,
     pairs: Iterable[tuple[str, str]],
     distance: float = CONTACT_DISTANCE,
+    bounds: Mapping[int, Bounds] | None = None,
 ) -> list[tuple[str, str]]:
     """The ``(link, link)`` pairs of ``obj`` among ``pairs`` nearer than ``distance`` [m].
 
     Bounds are compared first (every two links used at once), so only pairs whose bounds
     overlap get closest points; the pairs' rows are kept with ``obj`` per set of pairs.
+    ``bounds``: links' bounds read before at this configuration (:func:`link_bounds`).
     """
     key = tuple(pairs)
     if not key:
         return []
     cid = world.physics_client()
     rows = obj.pair_rows(key)
-    table = np.array(
-        [pybullet.getAABB(obj.body_id, i, physicsClientId=cid) for i in rows.used], dtype=float
-    ).reshape(-1, 2, 3)
+    boxes = [_bounds_of(obj, i, bounds, cid) for i in rows.used]
+    table = np.array(boxes, dtype=float).reshape(-1, 2, 3)
     low, high = table[:, 0] - distance, table[:, 1] + distance
-    below = np.ones((len(table), len(table)), dtype=bool)  # [i, j]: i's low under j's high
-    for axis in range(3):
-        below &= low[:, None, axis] <= high[None, :, axis]
+    below = (low[:, None, :] <= high[None, :, :]).all(axis=2)  # [i, j]: i's low under j's
     found = []
     for k in np.flatnonzero((below & below.T).ravel()[rows.cells]).tolist():
         if pybullet.getClosestPoints(

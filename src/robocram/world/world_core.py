@@ -296,20 +296,26 @@ class WorldCore:
         )
         return {n: float(s[0]) for n, s in zip(names, states or (), strict=True)}
 
-    def set_joint_states(self, obj: ObjectRef, values: Mapping[str, float]) -> list[ClampedJoint]:
+    def set_joint_states(
+        self, obj: ObjectRef, values: Mapping[str, float], carry: bool = True
+    ) -> list[ClampedJoint]:
         """Set joints by name, clamped to their limits; mimic joints follow their masters.
 
         Returns the joints whose requested value was outside the limits (empty if none).
-        The values are held during simulation; attached objects follow.
+        The values are held during simulation; attached objects follow unless ``carry`` is
+        False: a check that puts the joints back before anything else looks, and ignores
+        what the robot holds, saves moving it there and back.
         """
         handle = self.object(obj)
-        limits = {name: self.joint_limits(handle, name) for name in values}
+        kept, body = self._limits, handle.body_id
+        limits = {n: kept.get((body, n)) or self.joint_limits(handle, n) for n in values}
         applied, clamped = clamp_values(values, limits)
         applied.update(self._mimic_values(handle, applied))
         by_index = {handle.joint_index[name]: value for name, value in applied.items()}
-        _reset_joints(handle.body_id, by_index, self.physics_client())
+        _reset_joints(body, by_index, self.physics_client())
         self._holds.setdefault(handle.name, {}).update(by_index)
-        self._follow(handle.name)
+        if carry:
+            self._follow(handle.name)
         return clamped
 
     def _mimic_values(self, handle: WorldObject, applied: dict[str, float]) -> dict[str, float]:
