@@ -21,12 +21,12 @@ _BYTE_SUM = np.uint64(0x0101010101010101)  # times eight bytes: their sum in the
 
 @dataclass(frozen=True)
 class JerkProfile:
-    """Per joint, ruckig's phase ends, then per joint and phase its start state."""
+    """Per joint, when its phases end, then per joint and phase the state it starts in."""
 
-    ends: FloatArray  # (joints, 8) [s] ruckig's t_sum of each phase, then infinity
+    ends: FloatArray  # (joints, 8) [s] ruckig's t_sum of each phase, at most the duration
+    # (a time past the duration is in the end state), then infinity
     starts: FloatArray  # (6, joints * 8) time [s], position, velocity, acceleration, half
     # the acceleration and jerk at the start of phase k of joint i, in column 8 i + k
-    duration: float  # [s]
 
     def states(self, times: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
         """Positions, velocities, accelerations at ``times`` (within the profile), one
@@ -46,7 +46,6 @@ class JerkProfile:
         # along the last axis does at a third of its cost
         phase = (below.view(np.uint64)[:, :, 0] * _BYTE_SUM) >> np.uint64(56)
         column = phase.astype(np.intp) + np.arange(0, self.starts.shape[1], PHASES + 1)
-        column[times >= self.duration] = np.arange(PHASES, self.starts.shape[1], PHASES + 1)
         state = np.take(self.starts, column, axis=1)  # (6, times, joints)
         state[0] = times[:, None] - state[0]
         return state
@@ -57,22 +56,23 @@ def jerk_profile(trajectory: Trajectory) -> JerkProfile | None:
     profiles = trajectory.profiles
     if len(profiles) != 1 or any(p.brake.duration > 0.0 for p in profiles[0]):
         return None
-    joints = profiles[0]
-    width = len(joints)
-    ends = np.cumsum(np.array([p.t for p in joints]), axis=1)  # (joints, 7): ruckig's t_sum
-    acceleration = np.array([p.a for p in joints])
-    starts = np.stack(
-        [
-            np.hstack((np.zeros((width, 1)), ends)),  # phase k starts at ends[k - 1]
-            np.array([p.p for p in joints]),
-            np.array([p.v for p in joints]),
-            acceleration,
-            acceleration / 2,
-            np.hstack((np.array([p.j for p in joints]), np.zeros((width, 1)))),
-        ]
-    )
-    return JerkProfile(
-        np.hstack((ends, np.full((width, 1), np.inf))),
-        starts.reshape(6, width * (PHASES + 1)),
-        float(trajectory.duration),
-    )
+    raw: list[float] = []
+    for p in profiles[0]:  # per joint: 7 durations and jerks, 8 accelerations, ...
+        raw += p.t
+        raw += p.j
+        raw += p.a
+        raw += p.v
+        raw += p.p
+    table = np.array(raw).reshape(len(profiles[0]), 38)
+    ends = table[:, :7].cumsum(axis=1)  # ruckig's t_sum; phase k starts at ends[k - 1]
+    starts = np.empty((6, len(table), PHASES + 1))
+    starts[0, :, 0] = 0.0
+    starts[0, :, 1:] = ends
+    starts[1], starts[2], starts[3] = table[:, 30:], table[:, 22:30], table[:, 14:22]
+    starts[4] = table[:, 14:22] / 2
+    starts[5, :, :7] = table[:, 7:14]
+    starts[5, :, 7] = 0.0  # the end state
+    last = np.full((len(table), PHASES + 1), np.inf)
+    last[:, :7] = np.minimum(ends, float(trajectory.duration))  # ruckig: past the duration,
+    # the end state, whatever a joint's own sum
+    return JerkProfile(last, starts.reshape(6, -1))

@@ -141,9 +141,9 @@ def _sampled(waypoints: FloatArray, timeline: _Timeline, period: float) -> Point
     stops = timeline.stops
     ticks = _ticks(stops, period)
     count, pieces, width = len(ticks) + len(stops), len(stops) - 1, waypoints.shape[1]
-    tick_rows = np.arange(len(ticks)) + np.searchsorted(stops, ticks)  # none is a stop
-    stop_rows = np.arange(len(stops)) + np.searchsorted(ticks, stops)
-    owner = np.searchsorted(stops[1:] + SAME_TIME, ticks, side="left")
+    tick_rows = np.arange(len(ticks)) + stops.searchsorted(ticks)  # none is a stop
+    stop_rows = np.arange(len(stops)) + ticks.searchsorted(stops)
+    owner = (stops[1:] + SAME_TIME).searchsorted(ticks, side="left")
     corners = np.arange(1, pieces)  # waypoint k joins piece k - 1 and piece k
     asked = _states(
         timeline,
@@ -169,7 +169,7 @@ def _sampled(waypoints: FloatArray, timeline: _Timeline, period: float) -> Point
 def _ticks(stops: FloatArray, period: float) -> FloatArray:
     """Every ``period`` [s] up to the last stop, but for those this close to a stop."""
     ticks = np.arange(math.floor(float(stops[-1]) / period) + 1, dtype=float) * period
-    where = np.clip(np.searchsorted(stops, ticks), 1, len(stops) - 1)
+    where = np.minimum(np.maximum(stops.searchsorted(ticks), 1), len(stops) - 1)
     gap = np.minimum(np.abs(ticks - stops[where]), np.abs(ticks - stops[where - 1]))
     return ticks[gap > SAME_TIME]
 
@@ -177,7 +177,11 @@ def _ticks(stops: FloatArray, period: float) -> FloatArray:
 def _states(timeline: _Timeline, owners: IntArray, times: FloatArray, width: int) -> State:
     """Positions, velocities, accelerations (one row each) of piece ``owners[i]`` at global
     time ``times[i]`` [s]; each motion computes all of its rows at once."""
-    group = np.searchsorted(timeline.firsts, owners, side="right") - 1
+    if len(timeline.motions) == 1:  # most paths: one straight move or one smooth run
+        motion = timeline.motions[0]
+        local = times - timeline.offsets[0]
+        return motion.states(owners, local) if isinstance(motion, ArcRun) else motion.states(local)
+    group = timeline.firsts.searchsorted(owners, side="right") - 1
     segment = owners - timeline.firsts[group]
     local = times - timeline.offsets[group]
     out = (
