@@ -218,16 +218,22 @@ def _checked_path(
             f"limits are for {[lim.name for lim in limits]}, the path's joints are "
             f"{list(names)}; pass joint_limits(desc, joint_names)"
         )
-    for lim in limits:
-        rates = (lim.velocity, lim.acceleration, lim.jerk)
-        if not all(math.isfinite(v) and v > 0.0 for v in rates):
-            raise MotionError(
-                f"joint {lim.name!r} has velocity/acceleration/jerk limits {rates}; "
-                "each must be positive and finite"
-            )
+    bounds = np.array(
+        [(lim.lower, lim.upper, lim.velocity, lim.acceleration, lim.jerk) for lim in limits],
+        dtype=float,
+    ).reshape(len(limits), 5)
+    rates = bounds[:, 2:]
+    if not ((rates > 0.0) & (rates < math.inf)).all():  # positive and finite, NaN neither
+        for lim in limits:
+            given = (lim.velocity, lim.acceleration, lim.jerk)
+            if not all(math.isfinite(v) and v > 0.0 for v in given):
+                raise MotionError(
+                    f"joint {lim.name!r} has velocity/acceleration/jerk limits {given}; "
+                    "each must be positive and finite"
+                )
     if len(path) == 0:
         raise MotionError("the path has no waypoints; give at least the start")
-    fast = _within_limits(path, len(names), limits)
+    fast = _within_limits(path, len(names), bounds)
     if fast is not None:
         return fast
     points = []
@@ -250,18 +256,19 @@ def _checked_path(
 
 
 def _within_limits(
-    path: Sequence[Sequence[float]] | np.ndarray, width: int, limits: Sequence[JointLimits]
+    path: Sequence[Sequence[float]] | np.ndarray, width: int, bounds: FloatArray
 ) -> list[FloatArray] | None:
     """The waypoints as rows of one array when all are fine (the same tests as the checks
-    per value, all at once); None when one is not, for those checks to name it."""
+    per value, all at once); None when one is not, for those checks to name it.
+    ``bounds`` holds a row per joint, its lower and upper limits first."""
     try:
         table = np.array(path, dtype=float)
     except (TypeError, ValueError):  # ragged, or not numbers
         return None
-    if table.ndim != 2 or table.shape[1] != width or not np.isfinite(table).all():
+    if table.ndim != 2 or table.shape[1] != width:
         return None
-    lower = np.array([lim.lower for lim in limits]) - LIMIT_SLACK
-    upper = np.array([lim.upper for lim in limits]) + LIMIT_SLACK
-    if not ((lower <= table) & (table <= upper)).all():
+    lower = bounds[:, 0] - LIMIT_SLACK
+    upper = bounds[:, 1] + LIMIT_SLACK
+    if not ((lower <= table) & (table <= upper) & np.isfinite(table)).all():
         return None
     return list(table)
