@@ -93,3 +93,10 @@ def test_a_point_table_is_checked_as_points_are() -> None:
         JointTrajectory("pr2", ("j1", "j2"), late)
     with pytest.raises(ValueError, match="point table needs"):
         PointTable(table.positions, table.positions, table.positions, np.zeros(2))
+
+
+def test_a_point_table_keeps_its_own_copy() -> None:
+    positions = np.zeros((2, 1))
+    table = PointTable(positions, positions, positions, np.array([0.0, 1.0]))
+    positions[1, 0] = 5.0  # the caller's array stays writable and the table unchanged
+    assert table[1].positions == (0.0,)

@@ -52,8 +52,9 @@ class PointTable(Sequence[TrajectoryPoint]):
         accelerations: FloatArray,  # (points, joints) [rad/s^2 | m/s^2]
         times: FloatArray,  # (points,) [s] from the start
     ) -> None:
-        columns = [np.asarray(c, dtype=float) for c in (positions, velocities, accelerations)]
-        stamps = np.asarray(times, dtype=float)
+        # copies: the caller's arrays stay theirs, these are frozen
+        columns = [np.array(c, dtype=float) for c in (positions, velocities, accelerations)]
+        stamps = np.array(times, dtype=float)
         if stamps.ndim != 1 or any(c.ndim != 2 or len(c) != len(stamps) for c in columns):
             shapes = [c.shape for c in columns]
             raise ValueError(
