@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import pickle
 
@@ -178,3 +179,11 @@ def test_a_profile_sampled_at_once_is_ruckig_at_each_time_bit_for_bit() -> None:
                 one = trajectory.at_time(float(t))
                 for k in range(3):
                     assert at_once[k][row].tolist() == list(one[k])
+
+
+@pytest.mark.parametrize("value", [0.0, -1.0, math.nan, math.inf])
+def test_limits_that_are_not_positive_and_finite_are_named(value: float) -> None:
+    bad = list(LIMITS)
+    bad[2] = dataclasses.replace(LIMITS[2], acceleration=value)
+    with pytest.raises(MotionError, match=rf"joint '{ARM[2]}' has .*positive and finite"):
+        time_parameterize("pr2", ARM, PATH, bad)

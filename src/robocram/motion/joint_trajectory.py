@@ -5,6 +5,10 @@ joint names and points, each with positions, velocities, accelerations and its t
 the start. It is plain frozen data, so it pickles to batch workers, goes into the trace
 and becomes a ``FollowJointTrajectory`` goal unchanged. A base path is a trajectory of the
 planar joints ``x``, ``y`` and ``yaw`` (:data:`BASE_JOINTS`) in the map frame.
+
+Its points are a tuple of :class:`TrajectoryPoint` or, as timing makes them, a
+:class:`PointTable`: the same points kept as four arrays, each point made only when read.
+Projection reads only the last point of the hundreds timing samples per motion.
 """
 
 from __future__ import annotations
@@ -12,6 +16,7 @@ from __future__ import annotations
 import bisect
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
+from typing import overload
 
 import numpy as np
 import numpy.typing as npt
@@ -30,17 +35,118 @@ class TrajectoryPoint:
     time_from_start: float  # [s]
 
 
+class PointTable(Sequence[TrajectoryPoint]):
+    """Points as rows of float64 arrays, read-only; a :class:`TrajectoryPoint` is made
+    when one is read, with the very floats the arrays hold.
+
+    Equal to the tuple of its points (and hashes as it), so a trajectory is equal to
+    itself stored in a trace; it pickles as its arrays.
+    """
+
+    __slots__ = ("_accelerations", "_points", "_positions", "_times", "_velocities")
+
+    def __init__(
+        self,
+        positions: FloatArray,  # (points, joints) [rad | m]
+        velocities: FloatArray,  # (points, joints) [rad/s | m/s]
+        accelerations: FloatArray,  # (points, joints) [rad/s^2 | m/s^2]
+        times: FloatArray,  # (points,) [s] from the start
+    ) -> None:
+        # copies: the caller's arrays stay theirs, these are frozen
+        columns = [np.array(c, dtype=float) for c in (positions, velocities, accelerations)]
+        stamps = np.array(times, dtype=float)
+        if stamps.ndim != 1 or any(c.ndim != 2 or len(c) != len(stamps) for c in columns):
+            shapes = [c.shape for c in columns]
+            raise ValueError(
+                f"a point table needs (points, joints) positions, velocities and "
+                f"accelerations and (points,) times, got {shapes} and {stamps.shape}"
+            )
+        for array in (*columns, stamps):
+            array.flags.writeable = False
+        self._positions, self._velocities, self._accelerations = columns
+        self._times = stamps
+        self._points: tuple[TrajectoryPoint, ...] | None = None
+
+    @property
+    def positions(self) -> FloatArray:
+        """Every point's positions, shape (points, joints), read-only."""
+        return self._positions
+
+    @property
+    def times(self) -> FloatArray:
+        """Every point's time from the start [s], read-only."""
+        return self._times
+
+    def __len__(self) -> int:
+        return len(self._times)
+
+    @overload
+    def __getitem__(self, index: int) -> TrajectoryPoint: ...
+
+    @overload
+    def __getitem__(self, index: slice) -> PointTable: ...
+
+    def __getitem__(self, index: int | slice) -> TrajectoryPoint | PointTable:
+        if isinstance(index, slice):
+            return PointTable(
+                self._positions[index],
+                self._velocities[index],
+                self._accelerations[index],
+                self._times[index],
+            )
+        if self._points is not None:
+            return self._points[index]
+        return TrajectoryPoint(
+            tuple(self._positions[index].tolist()),
+            tuple(self._velocities[index].tolist()),
+            tuple(self._accelerations[index].tolist()),
+            float(self._times[index]),
+        )
+
+    def __iter__(self) -> Iterator[TrajectoryPoint]:
+        return iter(self.as_tuple())
+
+    def as_tuple(self) -> tuple[TrajectoryPoint, ...]:
+        """All points (made once, then kept)."""
+        if self._points is None:
+            rows = (map(tuple, c.tolist()) for c in self._columns())
+            self._points = tuple(map(TrajectoryPoint, *rows, self._times.tolist()))
+        return self._points
+
+    def _columns(self) -> tuple[FloatArray, FloatArray, FloatArray]:
+        return self._positions, self._velocities, self._accelerations
+
+    def __eq__(self, other: object) -> bool:
+        if isinstance(other, PointTable):
+            return self.as_tuple() == other.as_tuple()
+        if isinstance(other, tuple):
+            return self.as_tuple() == other
+        return NotImplemented
+
+    def __hash__(self) -> int:
+        return hash(self.as_tuple())
+
+    def __repr__(self) -> str:
+        return f"PointTable({self.as_tuple()!r})"
+
+    def __reduce__(self) -> tuple[type[PointTable], tuple[FloatArray, ...]]:
+        return PointTable, (*self._columns(), self._times)
+
+
 @dataclass(frozen=True)
 class JointTrajectory:
     """Joint names and timed points; ``kind`` says which motion made it (``arm``, ``base``)."""
 
     robot: str
     joint_names: tuple[str, ...]
-    points: tuple[TrajectoryPoint, ...]
+    points: tuple[TrajectoryPoint, ...] | PointTable
     kind: str = "arm"
 
     def __post_init__(self) -> None:
         width = len(self.joint_names)
+        if isinstance(self.points, PointTable):
+            self._check_table(self.points, width)
+            return
         for i, point in enumerate(self.points):
             if len(point.positions) != width:
                 raise ValueError(
@@ -53,9 +159,27 @@ class JointTrajectory:
                     f"{i - 1} at {self.points[i - 1].time_from_start} s"
                 )
 
+    def _check_table(self, table: PointTable, width: int) -> None:
+        """The checks of the points one by one, on the arrays at once (same messages)."""
+        if len(table) and table.positions.shape[1] != width:
+            raise ValueError(
+                f"trajectory point 0 has {table.positions.shape[1]} positions for "
+                f"{width} joints {self.joint_names}"
+            )
+        times = table.times
+        late = np.flatnonzero(times[1:] <= times[:-1])
+        if len(late):
+            i = int(late[0]) + 1
+            raise ValueError(
+                f"trajectory point {i} is at {float(times[i])} s, not after point "
+                f"{i - 1} at {float(times[i - 1])} s"
+            )
+
     @property
     def duration(self) -> float:
         """Time from the start to the last point [s]."""
+        if isinstance(self.points, PointTable):
+            return float(self.points.times[-1]) if len(self.points) else 0.0
         return self.points[-1].time_from_start if self.points else 0.0
 
     @property
@@ -70,12 +194,16 @@ class JointTrajectory:
 
     def positions(self) -> FloatArray:
         """All points' positions as an array of shape (points, joints)."""
+        if isinstance(self.points, PointTable):
+            return self.points.positions.copy()
         return np.array([p.positions for p in self.points], dtype=float).reshape(
             len(self.points), len(self.joint_names)
         )
 
     def times(self) -> FloatArray:
         """Every point's time from the start [s]."""
+        if isinstance(self.points, PointTable):
+            return self.points.times.copy()
         return np.array([p.time_from_start for p in self.points], dtype=float)
 
     def at(self, t: float) -> FloatArray:

@@ -10,6 +10,7 @@ segment's length, straight by construction, under the tightest joint's limits.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import cached_property
@@ -18,6 +19,7 @@ import numpy as np
 from ruckig import InputParameter, Result, Ruckig, Synchronization, Trajectory
 
 from robocram.motion.errors import MotionError
+from robocram.motion.jerk_profile import JerkProfile, jerk_profile
 from robocram.motion.joint_limits import JointLimits
 from robocram.motion.joint_trajectory import FloatArray
 
@@ -46,6 +48,16 @@ class StraightSegment:
         length = float(np.linalg.norm(delta))
         return length, delta / length
 
+    @cached_property
+    def _profile(self) -> JerkProfile | None:
+        """Ruckig's profile as tables (None: asked of ruckig time by time)."""
+        return jerk_profile(self.trajectory)
+
+    def _sampled(self, times: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
+        """Ruckig's states at ``times`` (within the profile), one row per time."""
+        profile = self._profile
+        return profile_states(self.trajectory, times) if profile is None else profile.states(times)
+
     def state(self, t: float) -> tuple[FloatArray, FloatArray, FloatArray]:
         """Positions, velocities and accelerations at ``t`` [s] after the segment's start.
 
@@ -70,16 +82,16 @@ class StraightSegment:
         """
         length, direction = self._line
         clock = np.minimum(np.maximum(times, 0.0), self.duration)
-        pos, vel, acc = profile_states(self.trajectory, clock)
+        pos, vel, acc = self._sampled(clock)
         if self.along_line:
             s, s_dot, s_ddot = pos[:, 0], vel[:, 0], acc[:, 0]
         else:
             s, s_dot, s_ddot = (pos - self.start) @ direction, vel @ direction, acc @ direction
         s = np.minimum(np.maximum(s, 0.0), length)
-        return (
-            self.start + np.outer(s, direction),
-            np.outer(s_dot, direction),
-            np.outer(s_ddot, direction),
+        return (  # np.outer, without its wrapper
+            self.start + s[:, None] * direction,
+            s_dot[:, None] * direction,
+            s_ddot[:, None] * direction,
         )
 
 
@@ -158,12 +170,17 @@ def _ruckig(
 
 def _deviation(segment: StraightSegment) -> float:
     """Largest distance of the raw ruckig samples from the segment's line [rad | m]."""
-    delta = segment.end - segment.start
-    direction = delta / np.linalg.norm(delta)
+    direction = segment._line[1]
     times = np.linspace(0.0, segment.duration, CHECK_SAMPLES)
-    offsets = profile_states(segment.trajectory, times)[0] - segment.start
-    off_line = offsets - np.outer(offsets @ direction, direction)
-    return float(np.linalg.norm(off_line, axis=1).max())
+    profile = segment._profile
+    if profile is None:
+        positions = profile_states(segment.trajectory, times)[0]
+    else:
+        positions = profile.positions(times)
+    offsets = positions - segment.start
+    off_line = offsets - (offsets @ direction)[:, None] * direction
+    # np.linalg.norm(off_line, axis=1).max(), bit for bit: the root of the largest square
+    return math.sqrt(float(np.add.reduce(off_line * off_line, axis=1).max()))
 
 
 def profile_states(
@@ -172,30 +189,11 @@ def profile_states(
     """Ruckig's ``at_time`` at each of ``times`` (within the trajectory): positions,
     velocities, accelerations, one row per time.
 
-    A rest-to-rest profile of one section is, per joint, seven phases of constant jerk;
-    evaluating them for all times at once, with ruckig's own formula, costs what a few
-    ``at_time`` calls and their conversion to arrays do. Anything else (a braking phase
-    before the profile, several sections) is asked of ruckig time by time.
+    A one-section profile without braking is evaluated on its tables
+    (:mod:`robocram.motion.jerk_profile`); anything else is asked of ruckig time by time.
     """
-    profiles = trajectory.profiles
-    if len(profiles) != 1 or any(p.brake.duration > 0.0 for p in profiles[0]):
-        samples = np.array([trajectory.at_time(float(t)) for t in times], dtype=float)
-        return samples[:, 0], samples[:, 1], samples[:, 2]
-    joints = profiles[0]
-    ends = np.cumsum(np.array([p.t for p in joints]), axis=1)  # (joints, 7): ruckig's t_sum
-    # phase k of a joint starts at ends[k - 1]; phase 7 holds the end state, jerk 0
-    starts = np.hstack((np.zeros((len(joints), 1)), ends))
-    jerk = np.hstack((np.array([p.j for p in joints]), np.zeros((len(joints), 1))))
-    acc0 = np.array([p.a for p in joints])
-    vel0 = np.array([p.v for p in joints])
-    pos0 = np.array([p.p for p in joints])
-    phase = np.count_nonzero(ends[None, :, :] <= times[:, None, None], axis=2)  # (n, joints)
-    phase[times >= trajectory.duration] = 7  # ruckig: the end state, whatever a joint's sum
-    column = np.arange(len(joints))[None, :]
-    t = times[:, None] - starts[column, phase]
-    j, a, v = jerk[column, phase], acc0[column, phase], vel0[column, phase]
-    return (
-        pos0[column, phase] + t * (v + t * (a / 2 + t * j / 6)),
-        v + t * (a + t * j / 2),
-        a + t * j,
-    )
+    profile = jerk_profile(trajectory)
+    if profile is not None:
+        return profile.states(times)
+    samples = np.array([trajectory.at_time(float(t)) for t in times], dtype=float)
+    return samples[:, 0], samples[:, 1], samples[:, 2]

@@ -29,7 +29,7 @@ import numpy as np
 from robocram.motion.arc_length_profile import ArcRun, IntArray, arc_length_run
 from robocram.motion.errors import MotionError
 from robocram.motion.joint_limits import JointLimits
-from robocram.motion.joint_trajectory import FloatArray, JointTrajectory, TrajectoryPoint, still
+from robocram.motion.joint_trajectory import FloatArray, JointTrajectory, PointTable, still
 from robocram.motion.straight_segment import StraightSegment, straight_segment
 
 SMOOTH_TURN = 0.2  # [rad] turns of the path's direction up to this are passed without stopping
@@ -41,14 +41,14 @@ State = tuple[FloatArray, FloatArray, FloatArray]
 
 
 @dataclass(frozen=True)
-class _Piece:
-    """One segment of the timed path, from waypoint to waypoint, on the global clock."""
+class _Timeline:
+    """The timed path on the global clock: its motions one after another, and its pieces
+    (one per segment, from waypoint ``k`` to ``k + 1``, numbered along the path)."""
 
-    t0: float  # [s]
-    t1: float  # [s]
-    motion: StraightSegment | ArcRun  # the timed motion it is (a segment of)
-    segment: int  # which segment of an ArcRun; 0 for a StraightSegment
-    offset: float  # [s] global time of the motion's own time 0
+    motions: list[StraightSegment | ArcRun]
+    firsts: IntArray  # (motions,) the first piece of each motion
+    offsets: FloatArray  # (motions,) [s] global time of each motion's own time 0
+    stops: FloatArray  # (pieces + 1,) [s] when the path passes each waypoint
 
 
 def time_parameterize(
@@ -82,27 +82,33 @@ def time_parameterize(
             distinct.append(point)
     if len(distinct) == 1:
         return JointTrajectory(robot, names, still(robot, names, distinct[0].tolist()).points, kind)
-    pieces = _timed_pieces(distinct, limits, period)
-    return JointTrajectory(robot, names, _sampled(distinct, pieces, period), kind)
+    timeline = _timed_path(distinct, limits, period)
+    return JointTrajectory(robot, names, _sampled(np.array(distinct), timeline, period), kind)
 
 
-def _timed_pieces(
+def _timed_path(
     waypoints: list[FloatArray], limits: Sequence[JointLimits], period: float
-) -> list[_Piece]:
+) -> _Timeline:
     """Split at sharp corners and time each run, runs one after another from rest."""
-    pieces: list[_Piece] = []
+    motions: list[StraightSegment | ArcRun] = []
+    firsts, offsets, ends = [], [], [np.zeros(1)]
     clock = 0.0
     for first, last in _runs(waypoints):
+        motion: StraightSegment | ArcRun
         if last - first == 1:
-            segment = straight_segment(waypoints[first], waypoints[last], limits)
-            pieces.append(_Piece(clock, clock + segment.duration, segment, 0, clock))
+            motion = straight_segment(waypoints[first], waypoints[last], limits)
+            piece_ends = np.array([motion.duration])
         else:
-            run = arc_length_run(waypoints[first : last + 1], limits, period)
-            spans = zip(run.t_starts.tolist(), run.t_ends.tolist(), strict=True)
-            for k, (t_start, t_end) in enumerate(spans):
-                pieces.append(_Piece(clock + t_start, clock + t_end, run, k, clock))
-        clock = pieces[-1].t1
-    return pieces
+            motion = arc_length_run(waypoints[first : last + 1], limits, period)
+            piece_ends = motion.t_ends
+        motions.append(motion)
+        firsts.append(first)
+        offsets.append(clock)
+        ends.append(clock + piece_ends)
+        clock = float(ends[-1][-1])
+    return _Timeline(
+        motions, np.array(firsts, dtype=np.intp), np.array(offsets), np.concatenate(ends)
+    )
 
 
 def _runs(waypoints: list[FloatArray]) -> list[tuple[int, int]]:
@@ -126,72 +132,65 @@ def _length(vector: FloatArray) -> float:
     return math.sqrt(float(vector.dot(vector)))
 
 
-def _sampled(
-    waypoints: list[FloatArray], pieces: list[_Piece], period: float
-) -> tuple[TrajectoryPoint, ...]:
+def _sampled(waypoints: FloatArray, timeline: _Timeline, period: float) -> PointTable:
     """Points every ``period`` and at every waypoint; at a waypoint, its exact position
     with the mean of the motions arriving and leaving (at rest at both ends).
 
     A time between waypoints belongs to the first piece that does not end before it.
     """
-    stops = [pieces[0].t0] + [p.t1 for p in pieces]
-    times = _sample_times(stops, period)
-    stop_index = {t: k for k, t in reversed(list(enumerate(stops)))}
-    at_stop = [stop_index.get(t, -1) for t in times]  # the waypoint there, or -1
-    between = [i for i, k in enumerate(at_stop) if k < 0]
-    clock = np.array([times[i] for i in between])
-    owner = np.searchsorted(np.array(stops[1:]) + SAME_TIME, clock, side="left")
-    corners = np.arange(1, len(pieces))  # waypoint k joins piece k - 1 and piece k
+    stops = timeline.stops
+    ticks = _ticks(stops, period)
+    count, pieces, width = len(ticks) + len(stops), len(stops) - 1, waypoints.shape[1]
+    tick_rows = np.arange(len(ticks)) + stops.searchsorted(ticks)  # none is a stop
+    stop_rows = np.arange(len(stops)) + ticks.searchsorted(stops)
+    owner = (stops[1:] + SAME_TIME).searchsorted(ticks, side="left")
+    corners = np.arange(1, pieces)  # waypoint k joins piece k - 1 and piece k
     asked = _states(
-        pieces,
-        np.concatenate([np.minimum(owner, len(pieces) - 1), corners - 1, corners]),
-        np.array([*clock.tolist(), *stops[1:-1], *(pieces[k].t0 for k in corners)]),
-        len(waypoints[0]),
+        timeline,
+        np.concatenate([np.minimum(owner, pieces - 1), corners - 1, corners]),
+        np.concatenate([ticks, stops[1:-1], stops[1:-1]]),  # a piece starts where the last ends
+        width,
     )
-    rows = [np.zeros((len(times), len(waypoints[0]))) for _ in range(3)]
-    for row, values in zip(rows, asked, strict=True):
-        row[between] = values[: len(clock)]
-    stopped = [i for i, k in enumerate(at_stop) if k >= 0]
-    rows[0][stopped] = np.array(waypoints)[[at_stop[i] for i in stopped]]
-    inner = [i for i in stopped if 0 < at_stop[i] < len(waypoints) - 1]
-    arriving = len(clock) - 1 + np.array([at_stop[i] for i in inner], dtype=np.intp)
-    leaving = arriving + len(corners)  # the rows ``asked`` for waypoint k's two pieces
-    for row, values in zip(rows[1:], asked[1:], strict=True):
-        row[inner] = 0.5 * (values[arriving] + values[leaving])
-    positions, velocities, accelerations = (map(tuple, row.tolist()) for row in rows)
-    return tuple(map(TrajectoryPoint, positions, velocities, accelerations, map(float, times)))
+    times = np.empty(count)
+    times[tick_rows] = ticks
+    times[stop_rows] = stops
+    positions = np.empty((count, width))
+    positions[tick_rows] = asked[0][: len(ticks)]
+    positions[stop_rows] = waypoints
+    rates = np.zeros((count, width)), np.zeros((count, width))
+    arriving = slice(len(ticks), len(ticks) + len(corners))  # rows asked for the corners
+    leaving = slice(len(ticks) + len(corners), None)
+    for row, values in zip(rates, asked[1:], strict=True):
+        row[tick_rows] = values[: len(ticks)]
+        row[stop_rows[1:-1]] = 0.5 * (values[arriving] + values[leaving])
+    return PointTable(positions, *rates, times)
 
 
-def _sample_times(stops: list[float], period: float) -> list[float]:
-    """Every ``period`` [s] and every stop, sorted; a tick this close to a stop is dropped."""
-    ticks = np.arange(int(math.floor(stops[-1] / period)) + 1) * period
-    where = np.clip(np.searchsorted(stops, ticks), 1, len(stops) - 1)
-    gap = np.minimum(
-        np.abs(ticks - np.take(stops, where)), np.abs(ticks - np.take(stops, where - 1))
-    )
-    return sorted([*ticks[gap > SAME_TIME].tolist(), *stops])
+def _ticks(stops: FloatArray, period: float) -> FloatArray:
+    """Every ``period`` [s] up to the last stop, but for those this close to a stop."""
+    ticks = np.arange(math.floor(float(stops[-1]) / period) + 1, dtype=float) * period
+    where = np.minimum(np.maximum(stops.searchsorted(ticks), 1), len(stops) - 1)
+    gap = np.minimum(np.abs(ticks - stops[where]), np.abs(ticks - stops[where - 1]))
+    return ticks[gap > SAME_TIME]
 
 
-def _states(pieces: list[_Piece], owners: IntArray, times: FloatArray, width: int) -> State:
+def _states(timeline: _Timeline, owners: IntArray, times: FloatArray, width: int) -> State:
     """Positions, velocities, accelerations (one row each) of piece ``owners[i]`` at global
     time ``times[i]`` [s]; each motion computes all of its rows at once."""
-    groups: dict[int, list[int]] = {}  # id of a motion -> its pieces
-    for k, piece in enumerate(pieces):
-        groups.setdefault(id(piece.motion), []).append(k)
-    group_of = np.zeros(len(pieces), dtype=np.intp)
-    for g, members in enumerate(groups.values()):
-        group_of[members] = g
-    group = group_of[owners]
-    segment = np.array([p.segment for p in pieces])[owners]
-    local = times - np.array([p.offset for p in pieces])[owners]
+    if len(timeline.motions) == 1:  # most paths: one straight move or one smooth run
+        motion = timeline.motions[0]
+        local = times - timeline.offsets[0]
+        return motion.states(owners, local) if isinstance(motion, ArcRun) else motion.states(local)
+    group = timeline.firsts.searchsorted(owners, side="right") - 1
+    segment = owners - timeline.firsts[group]
+    local = times - timeline.offsets[group]
     out = (
         np.zeros((len(times), width)),
         np.zeros((len(times), width)),
         np.zeros((len(times), width)),
     )
-    for g, members in enumerate(groups.values()):
+    for g, motion in enumerate(timeline.motions):
         mine = np.flatnonzero(group == g)
-        motion = pieces[members[0]].motion
         if not len(mine):
             continue
         if isinstance(motion, ArcRun):
@@ -219,16 +218,22 @@ def _checked_path(
             f"limits are for {[lim.name for lim in limits]}, the path's joints are "
             f"{list(names)}; pass joint_limits(desc, joint_names)"
         )
-    for lim in limits:
-        rates = (lim.velocity, lim.acceleration, lim.jerk)
-        if not all(math.isfinite(v) and v > 0.0 for v in rates):
-            raise MotionError(
-                f"joint {lim.name!r} has velocity/acceleration/jerk limits {rates}; "
-                "each must be positive and finite"
-            )
+    bounds = np.array(
+        [(lim.lower, lim.upper, lim.velocity, lim.acceleration, lim.jerk) for lim in limits],
+        dtype=float,
+    ).reshape(len(limits), 5)
+    rates = bounds[:, 2:]
+    if not ((rates > 0.0) & (rates < math.inf)).all():  # positive and finite, NaN neither
+        for lim in limits:
+            given = (lim.velocity, lim.acceleration, lim.jerk)
+            if not all(math.isfinite(v) and v > 0.0 for v in given):
+                raise MotionError(
+                    f"joint {lim.name!r} has velocity/acceleration/jerk limits {given}; "
+                    "each must be positive and finite"
+                )
     if len(path) == 0:
         raise MotionError("the path has no waypoints; give at least the start")
-    fast = _within_limits(path, len(names), limits)
+    fast = _within_limits(path, len(names), bounds)
     if fast is not None:
         return fast
     points = []
@@ -251,18 +256,19 @@ def _checked_path(
 
 
 def _within_limits(
-    path: Sequence[Sequence[float]] | np.ndarray, width: int, limits: Sequence[JointLimits]
+    path: Sequence[Sequence[float]] | np.ndarray, width: int, bounds: FloatArray
 ) -> list[FloatArray] | None:
     """The waypoints as rows of one array when all are fine (the same tests as the checks
-    per value, all at once); None when one is not, for those checks to name it."""
+    per value, all at once); None when one is not, for those checks to name it.
+    ``bounds`` holds a row per joint, its lower and upper limits first."""
     try:
         table = np.array(path, dtype=float)
     except (TypeError, ValueError):  # ragged, or not numbers
         return None
-    if table.ndim != 2 or table.shape[1] != width or not np.isfinite(table).all():
+    if table.ndim != 2 or table.shape[1] != width:
         return None
-    lower = np.array([lim.lower for lim in limits]) - LIMIT_SLACK
-    upper = np.array([lim.upper for lim in limits]) + LIMIT_SLACK
-    if not ((lower <= table) & (table <= upper)).all():
+    lower = bounds[:, 0] - LIMIT_SLACK
+    upper = bounds[:, 1] + LIMIT_SLACK
+    if not ((lower <= table) & (table <= upper) & np.isfinite(table)).all():
         return None
     return list(table)

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from robocram.execution import checkpoint
+from robocram.execution import checkpoint, current_task
 from robocram.motion import BASE_JOINTS, JointTrajectory, TrajectoryPoint, report_executed
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.tf import Pose
@@ -21,10 +21,13 @@ from robocram.tf import quaternion as quat
 def follow(robot: ProjectedRobot, trajectory: JointTrajectory) -> None:
     """Move ``robot`` along ``trajectory``; a stopped task leaves it where it had got to."""
     points = trajectory.points
+    count = len(points)
+    task = current_task()  # the same at every point: asked once, its stop point per point
+    stop_point = checkpoint if task is None else task.check_stop
     reached = 1
     try:
-        while reached < len(points):
-            checkpoint()
+        while reached < count:
+            stop_point()
             reached += 1
     except BaseException:
         part = replace(trajectory, points=points[:reached])
