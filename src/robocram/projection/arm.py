@@ -223,7 +223,8 @@ def move_joints(robot: ProjectedRobot, arm: str, configuration: object) -> dict[
         what = f"{robot.name}'s {arm} arm"
         motion = plan_arm_motion(robot.world, robot.name, values, settings=robot.motion, what=what)
         follow(robot, motion.trajectory)
-    reached = {j: robot.world.joint_states(robot.name)[j] for j in values}
+    now = robot.world.joint_states(robot.name)
+    reached = {j: now[j] for j in values}
     if clamped:
         culprits = {c.name: (c.requested, c.lower, c.upper) for c in clamped}
         raise ManipulationGoalNotReached(

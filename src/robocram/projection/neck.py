@@ -59,7 +59,8 @@ def _aim_pan_tilt(
     world, target = robot.world, np.asarray(target_in_map, float)
     wanted = _aimed(robot, pt, target)
     clamped = world.set_joint_states(robot.name, wanted)
-    reached = {j: world.joint_states(robot.name)[j] for j in wanted}
+    now = world.joint_states(robot.name)
+    reached = {j: now[j] for j in wanted}
     if clamped:
         limits = {c.name: (c.lower, c.upper) for c in clamped}
         raise PtuGoalNotReached(
@@ -150,7 +151,8 @@ def _aim_neck_arm(robot: ProjectedRobot, neck: str, target_in_map: Vector3) -> d
             result = solve_ik(desc, neck, target_in_base, seed=seed, frame=frame)
         if result.success:
             world.set_joint_states(robot.name, dict(result.joint_positions))
-            return {j: world.joint_states(robot.name)[j] for j in result.joint_positions}
+            now = world.joint_states(robot.name)
+            return {j: now[j] for j in result.joint_positions}
         errors.append(result.position_error)
     raise PtuGoalUnreachable(
         f"{robot.name}'s neck cannot point {frame} at {tuple(target_in_map)} from any of "
