@@ -2,7 +2,9 @@
 
 Pan-tilt heads (PR2, HSR) are aimed joint by joint: each joint turns by the angle between
 the optical axis and the direction to the target, both projected onto the plane normal to
-the joint axis; a few rounds absorb the camera's offset from the axes. Angles outside the
+the joint axis; a few rounds absorb the camera's offset from the axes. The rounds place
+the links on the robot's kinematic model (from its base pose in the world), and only the
+aimed values are set in the world. Angles outside the
 limits are clamped and applied, then ``PtuGoalNotReached`` is raised (CRAM's semantics).
 A neck that is an arm (Boxy) is aimed by IK: the camera turns to face the target from
 its current place, else from the neck's parking place or a step away from the current
