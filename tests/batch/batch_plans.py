@@ -7,6 +7,7 @@ import os
 import signal
 import threading
 import time
+from collections.abc import Callable
 from pathlib import Path
 
 from robocram.batch import Variant, VariantResult, VariantStatus, project_variants
@@ -28,13 +29,24 @@ def pick_or_block(look_target: PoseStamped, block_in: str = "") -> object:
 def pick_unless_doomed(look_target: PoseStamped, block_dir: str, runs_before: int = 1) -> object:
     """Pick up the mug; on the doomed node, the variant after ``runs_before`` others blocks
     (its pid in ``block_dir/blocked.pid``) until the node is killed, so it is lost with the
-    node, and picks the mug up when run again on another node."""
+    node, and picks the mug up when run again on another node. Elsewhere a variant first
+    waits until the doomed node has run one (a loaded machine could otherwise run them all
+    elsewhere before the doomed node's actor starts, and nothing would be lost)."""
     if os.environ.get(DOOMED_ENV) == "doomed":
         ran = len(list(Path(block_dir).glob("ran-*")))
         if ran >= runs_before:
             _block(Path(block_dir) / BLOCKED)
         (Path(block_dir) / f"ran-{ran}").touch()
+    else:
+        _wait_until(lambda: any(Path(block_dir).glob("ran-*")))
     return pick_up(look_target)
+
+
+def _wait_until(done: Callable[[], bool]) -> None:
+    """Wait until ``done()`` (or :data:`BLOCK_LIMIT` passed)."""
+    end = time.monotonic() + BLOCK_LIMIT
+    while not done() and time.monotonic() < end:
+        time.sleep(0.02)
 
 
 def _block(pid_file: Path) -> None:
