@@ -32,7 +32,7 @@ from robocram.motion.obstacle_grid import Box
 
 FloatArray = npt.NDArray[np.float64]
 IntArray = npt.NDArray[np.int64]
-GROWN_SQUARES = 3  # the grown footprint reaches this many squares farther
+GROWN_SQUARES = 4  # the grown footprint reaches this many squares farther
 
 
 @dataclass(frozen=True)
