@@ -55,7 +55,6 @@ class BaseCollisionChecker:
     footprint: RobotFootprint
     grid: ObstacleGrid
     bounds: tuple[tuple[float, float], tuple[float, float]]  # [m] lower, upper x y to plan in
-    tolerated: frozenset[tuple[str, str]] = frozenset()
     anchors: tuple[FloatArray, ...] = ()  # start and goal (x, y, unwrapped yaw)
     confirm_everywhere: bool = True  # False while planning: exact checks near anchors only
     allowed_links: frozenset[str] = frozenset()  # robot links that may touch (a hand holding)
@@ -65,6 +64,7 @@ class BaseCollisionChecker:
     _obstacles: ObstacleBoxes | None = field(default=None, repr=False)  # read once
     _bins: HeightBins | None = field(default=None, repr=False)
     _cleared_poses: ClearedPoses | None = field(default=None, repr=False)  # exact answers
+    _tolerated: frozenset[tuple[str, str]] | None = field(default=None, repr=False)
 
     @classmethod
     def build(
@@ -107,8 +107,16 @@ class BaseCollisionChecker:
         checker.covered = covered
         checker._obstacles = obstacles
         checker._bins = bins
-        checker.tolerated = frozenset(checker._contacts())
         return checker
+
+    @property
+    def tolerated(self) -> frozenset[tuple[str, str]]:
+        """The contacts the robot has at its start (read when first asked: most drives
+        never check a pose within :data:`ESCAPE` of it exactly). It is left at its start."""
+        if self._tolerated is None:
+            self.world.set_pose(self.robot, self.start)
+            self._tolerated = frozenset(self._contacts())
+        return self._tolerated
 
     def __enter__(self) -> BaseCollisionChecker:
         return self
@@ -244,13 +252,21 @@ class BaseCollisionChecker:
             self._cleared_poses.add(pose, gap)
         return gap
 
+    def known_free(self, pose: FloatArray) -> None:
+        """Keep that the exact check found the robot free at ``pose`` (a goal checked
+        before the checker was built), with no gap: it is not asked again."""
+        if self._cleared_poses is None:
+            self._cleared_poses = ClearedPoses(self.footprint.reach)
+        self._cleared_poses.add(pose, 0.0)
+
     def _measured_gap(self, pose: FloatArray) -> float | None:
         """:meth:`_exact_gap` by the exact check itself."""
         self.exact_checks += 1
-        self._place(pose)
         start = np.array([*self.start.position[:2], yaw_of(self.start)])
-        if self.tolerated and self._travel(start, pose) <= ESCAPE:
-            return None if self._touching(self.tolerated) else 0.0
+        tolerated = self.tolerated if self._travel(start, pose) <= ESCAPE else frozenset()
+        self._place(pose)
+        if tolerated:
+            return None if self._touching(tolerated) else 0.0
         nearest = min(self._distances(), default=GAP_QUERY)
         return None if nearest <= CONTACT else nearest - CONTACT
 
@@ -285,9 +301,9 @@ class BaseCollisionChecker:
     def blockers(self, pose: FloatArray) -> list[str]:
         """What the robot touches at ``pose`` by the exact check (``object/link`` names)."""
         self.exact_checks += 1
-        self._place(pose)
         start = np.array([*self.start.position[:2], yaw_of(self.start)])
         tolerated = self.tolerated if self._travel(start, pose) <= ESCAPE else frozenset()
+        self._place(pose)
         return sorted({other for pair in self._contacts() if pair not in tolerated
                        for other in pair[1:]})  # fmt: skip
 
