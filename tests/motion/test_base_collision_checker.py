@@ -139,3 +139,12 @@ def test_a_drive_through_open_floor_is_proven_in_blocks(kitchen: World) -> None:
             left = sum(stop - first for first, stop in runs)
             assert left < len(poses) / 2
             assert checker.first_blocked(poses) == _first_touching(checker, poses)
+
+
+def test_a_motion_standing_still_is_checked_as_it_is(kitchen: World) -> None:
+    with kitchen.stored_state():
+        start = (-0.8, 0.2, 1.5708)
+        kitchen.set_pose("pr2", _pose(*start))
+        poses = np.array([start] * 40, dtype=float)
+        with BaseCollisionChecker.build(kitchen, "pr2", start[:2]) as checker:
+            assert checker.first_blocked(poses) == _first_touching(checker, poses)

@@ -213,7 +213,10 @@ class BaseCollisionChecker:
             return [(0, count)]
         step = poses[1:] - poses[:-1]
         travel = np.hypot(step[:, 0], step[:, 1]) + fp.reach * np.abs(_turns(step[:, 2]))
-        half = int((fp.grown_by - GROWN_ROUNDING) / float(travel.max(initial=0.0)))
+        most = float(travel.max())  # [m] the longest step
+        if most <= 0.0:  # the robot stands still
+            return [(0, count)]
+        half = int((fp.grown_by - GROWN_ROUNDING) / most)  # steps from a block's middle
         block = 2 * half + 1
         if half < 1 or count < block:
             return [(0, count)]
