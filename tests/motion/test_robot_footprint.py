@@ -45,3 +45,12 @@ def test_height_masks_of_many_equal_one_by_one() -> None:
     high = low + rng.uniform(0.0, 0.8, 200)
     many = bins.masks(low, high)
     assert many == [int(bins.mask(float(a), float(b))) for a, b in zip(low, high, strict=True)]
+
+
+def test_every_grown_square_lies_within_the_grown_reach() -> None:
+    rng = np.random.default_rng(7)
+    bins = HeightBins.up_to(1.0)
+    fp = RobotFootprint.build(_boxes(rng), 0.05, bins, 0.02, 0.002)
+    corners = np.abs(fp.grown_points) + fp.spacing / 2.0
+    assert np.linalg.norm(corners, axis=1).max() <= fp.grown_reach + 1e-12
+    assert fp.grown_reach > fp.reach

@@ -326,11 +326,11 @@ def _grid(
     footprint: RobotFootprint,
     bins: HeightBins,
 ) -> ObstacleGrid:
-    """The obstacle grid over ``area`` (base positions [m]) grown by the robot's reach:
-    only the boxes that reach into it are rasterised. Its corner lies on the lattice of
-    :data:`CELL` through the map's origin, so a local grid and the whole world's share
-    their cells."""
-    pad = footprint.reach + footprint.grown_by + footprint.dilation + 2 * CELL
+    """The obstacle grid over ``area`` (base positions [m]) grown by the reach of the
+    robot's grown squares (:class:`RobotFootprint`): only the boxes that reach into it
+    are rasterised. Its corner lies on the lattice of :data:`CELL` through the map's
+    origin, so a local grid and the whole world's share their cells."""
+    pad = footprint.grown_reach + footprint.dilation + 2 * CELL  # the grown squares too
     lower = (
         math.floor((area[0][0] - pad) / CELL) * CELL,
         math.floor((area[0][1] - pad) / CELL) * CELL,

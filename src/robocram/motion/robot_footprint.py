@@ -48,6 +48,7 @@ class RobotFootprint:
     grown_points: FloatArray  # (g, 2): the squares grown by ``grown_by``, see the module
     grown_masks: IntArray  # (g,)
     grown_by: float  # [m]
+    grown_reach: float  # [m] farthest any grown square reaches from the base origin (xy)
 
     @property
     def dilation(self) -> float:
@@ -83,9 +84,11 @@ class RobotFootprint:
         grown_points, grown_masks = cls._points(
             _grown(patch, GROWN_SQUARES), first - GROWN_SQUARES, spacing
         )
+        corner = spacing / math.sqrt(2.0)
+        grown_reach = float(np.max(np.linalg.norm(grown_points, axis=1))) + corner
         return cls(
             points, masks, edge_points, edge_masks, spacing, reach, grown_points, grown_masks,
-            GROWN_SQUARES * spacing,
+            GROWN_SQUARES * spacing, grown_reach,
         )  # fmt: skip
 
     @staticmethod
