@@ -125,3 +125,26 @@ def test_the_unclipped_lookup_equals_the_clipped_one(kitchen: World) -> None:
             clipped = checker.grid.hits(poses, fp.points, fp.masks, inside=False)
         assert np.array_equal(fast, clipped)
         assert 50 < fast.sum() < 450  # both kinds of pose are asked
+
+
+def test_a_drive_through_open_floor_is_proven_in_blocks(kitchen: World) -> None:
+    """Far from the furniture the grown footprint proves most poses free in blocks; the
+    answer is the exact check's at every pose."""
+    with kitchen.stored_state():
+        start, end = (-0.8, 0.2, 1.5708), (0.3, -0.2, 0.0)
+        kitchen.set_pose("pr2", _pose(*start))
+        poses = straight_poses(np.array(start), np.array(end), 1.0)
+        with BaseCollisionChecker.build(kitchen, "pr2", end[:2]) as checker:
+            runs = checker._unproven(poses)  # noqa: SLF001 - the blocks left to check
+            left = sum(stop - first for first, stop in runs)
+            assert left < len(poses) / 2
+            assert checker.first_blocked(poses) == _first_touching(checker, poses)
+
+
+def test_a_motion_standing_still_is_checked_as_it_is(kitchen: World) -> None:
+    with kitchen.stored_state():
+        start = (-0.8, 0.2, 1.5708)
+        kitchen.set_pose("pr2", _pose(*start))
+        poses = np.array([start] * 40, dtype=float)
+        with BaseCollisionChecker.build(kitchen, "pr2", start[:2]) as checker:
+            assert checker.first_blocked(poses) == _first_touching(checker, poses)

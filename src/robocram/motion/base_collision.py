@@ -38,6 +38,7 @@ CONFIRM_NEAR = 0.3  # [m] travel from the start or goal within which exact check
 GAP_QUERY = 0.1  # [m] how far an exact check looks for the gap that lets it skip poses
 FOOTPRINTS_KEPT = 8  # robot postures whose footprints a world keeps
 LOCAL_MARGIN = 0.6  # [m] the first grid covers the start's and goal's box grown by this
+GROWN_ROUNDING = 1e-9  # [m] kept off the grown footprint's reach for rounding of travel
 
 
 @dataclass
@@ -54,7 +55,6 @@ class BaseCollisionChecker:
     footprint: RobotFootprint
     grid: ObstacleGrid
     bounds: tuple[tuple[float, float], tuple[float, float]]  # [m] lower, upper x y to plan in
-    tolerated: frozenset[tuple[str, str]] = frozenset()
     anchors: tuple[FloatArray, ...] = ()  # start and goal (x, y, unwrapped yaw)
     confirm_everywhere: bool = True  # False while planning: exact checks near anchors only
     allowed_links: frozenset[str] = frozenset()  # robot links that may touch (a hand holding)
@@ -64,6 +64,7 @@ class BaseCollisionChecker:
     _obstacles: ObstacleBoxes | None = field(default=None, repr=False)  # read once
     _bins: HeightBins | None = field(default=None, repr=False)
     _cleared_poses: ClearedPoses | None = field(default=None, repr=False)  # exact answers
+    _tolerated: frozenset[tuple[str, str]] | None = field(default=None, repr=False)
 
     @classmethod
     def build(
@@ -106,8 +107,16 @@ class BaseCollisionChecker:
         checker.covered = covered
         checker._obstacles = obstacles
         checker._bins = bins
-        checker.tolerated = frozenset(checker._contacts())
         return checker
+
+    @property
+    def tolerated(self) -> frozenset[tuple[str, str]]:
+        """The contacts the robot has at its start (read when first asked: most drives
+        never check a pose within :data:`ESCAPE` of it exactly). It is left at its start."""
+        if self._tolerated is None:
+            self.world.set_pose(self.robot, self.start)
+            self._tolerated = frozenset(self._contacts())
+        return self._tolerated
 
     def __enter__(self) -> BaseCollisionChecker:
         return self
@@ -118,13 +127,18 @@ class BaseCollisionChecker:
     def fast_hits(self, poses: FloatArray, boundary: bool) -> np.ndarray:
         """Per pose, whether the fast check finds a possible collision."""
         self.fast_checks += len(poses)
+        fp = self.footprint
+        if boundary:
+            return self._grid_hits(poses, fp.boundary_points, fp.boundary_masks)
+        return self._grid_hits(poses, fp.points, fp.masks)
+
+    def _grid_hits(self, poses: FloatArray, points: FloatArray, masks: np.ndarray) -> np.ndarray:
+        """Per pose, whether any of ``points`` (base frame) lies in a cell sharing bits with
+        its ``masks``; the grid widens first when a pose lies beyond it."""
         inside = self._covers(poses)
         if not inside and self.covered != self.bounds:
             self._widen()
             inside = self._covers(poses)
-        fp = self.footprint
-        points = fp.boundary_points if boundary else fp.points
-        masks = fp.boundary_masks if boundary else fp.masks
         return self.grid.hits(poses, points, masks, inside)
 
     def _covers(self, poses: FloatArray) -> bool:
@@ -152,10 +166,23 @@ class BaseCollisionChecker:
         The first pose and every pose after one the exact check had to clear get the full
         fast check; the others only the boundary's. A pose the exact check clears also
         says how far the robot is from everything there: the poses after it that move no
-        point of the robot farther than that are free without a check.
+        point of the robot farther than that are free without a check. Blocks of poses
+        the grown footprint proves free at their middle (:meth:`_unproven`) are skipped.
         """
-        full_next = True
         cleared: tuple[FloatArray, float] | None = None  # (pose, gap [m]) of the last exact
+        for first, stop in self._unproven(poses):
+            blocked, cleared = self._first_blocked_in(poses[first:stop], cleared)
+            if blocked is not None:
+                return first + blocked
+        return None
+
+    def _first_blocked_in(
+        self, poses: FloatArray, cleared: tuple[FloatArray, float] | None
+    ) -> tuple[int | None, tuple[FloatArray, float] | None]:
+        """:meth:`first_blocked` of a run of poses whose first is checked in full (the pose
+        before it, if any, was proven free, not checked on the grid), and the last pose
+        the exact check cleared with a gap."""
+        full_next = True
         for begin in range(0, len(poses), CHUNK):
             chunk = poses[begin : begin + CHUNK]
             edge = self.fast_hits(chunk, boundary=True)
@@ -168,10 +195,37 @@ class BaseCollisionChecker:
                 if hit:
                     gap = self._exact_gap(pose)
                     if gap is None:
-                        return begin + k
+                        return begin + k, cleared
                     cleared = (pose, gap) if gap > 0.0 else None
                     full_next = True
-        return None
+        return None, cleared
+
+    def _unproven(self, poses: FloatArray) -> list[tuple[int, int]]:
+        """Ranges ``[first, stop)`` of ``poses`` (a dense motion) that the grown footprint
+        (:class:`RobotFootprint`) did not prove free: every pose within ``grown_by`` of
+        travel of a pose where the grown points are free is free. The poses are cut into
+        blocks, each proven by the grown check at its middle pose; the proven ones count
+        as fast checks. Only while the motion is confirmed everywhere: planning keeps its
+        own (coarse) checks."""
+        count = len(poses)
+        fp = self.footprint
+        if not self.confirm_everywhere or count < 2:
+            return [(0, count)]
+        step = poses[1:] - poses[:-1]
+        travel = np.hypot(step[:, 0], step[:, 1]) + fp.reach * np.abs(_turns(step[:, 2]))
+        most = float(travel.max())  # [m] the longest step
+        if most <= 0.0:  # the robot stands still
+            return [(0, count)]
+        half = int((fp.grown_by - GROWN_ROUNDING) / most)  # steps from a block's middle
+        block = 2 * half + 1
+        if half < 1 or count < block:
+            return [(0, count)]
+        centres = np.minimum(np.arange(half, count + half, block), count - 1)
+        free = ~self._grid_hits(poses[centres], fp.grown_points, fp.grown_masks)
+        proven = np.repeat(free, block)[:count]
+        self.fast_checks += len(centres) - int(free.sum()) + int(proven.sum())
+        edges = np.flatnonzero(np.diff(np.concatenate([[True], proven, [True]]).view(np.int8)))
+        return [(int(a), int(b)) for a, b in zip(edges[::2], edges[1::2], strict=True)]
 
     def _travel(self, a: FloatArray, b: FloatArray) -> float:
         """How far [m] any point of the robot moves at most from base pose ``a`` to ``b``."""
@@ -201,13 +255,21 @@ class BaseCollisionChecker:
             self._cleared_poses.add(pose, gap)
         return gap
 
+    def known_free(self, pose: FloatArray) -> None:
+        """Keep that the exact check found the robot free at ``pose`` (a goal checked
+        before the checker was built), with no gap: it is not asked again."""
+        if self._cleared_poses is None:
+            self._cleared_poses = ClearedPoses(self.footprint.reach)
+        self._cleared_poses.add(pose, 0.0)
+
     def _measured_gap(self, pose: FloatArray) -> float | None:
         """:meth:`_exact_gap` by the exact check itself."""
         self.exact_checks += 1
-        self._place(pose)
         start = np.array([*self.start.position[:2], yaw_of(self.start)])
-        if self.tolerated and self._travel(start, pose) <= ESCAPE:
-            return None if self._touching(self.tolerated) else 0.0
+        tolerated = self.tolerated if self._travel(start, pose) <= ESCAPE else frozenset()
+        self._place(pose)
+        if tolerated:
+            return None if self._touching(tolerated) else 0.0
         nearest = min(self._distances(), default=GAP_QUERY)
         return None if nearest <= CONTACT else nearest - CONTACT
 
@@ -242,9 +304,9 @@ class BaseCollisionChecker:
     def blockers(self, pose: FloatArray) -> list[str]:
         """What the robot touches at ``pose`` by the exact check (``object/link`` names)."""
         self.exact_checks += 1
-        self._place(pose)
         start = np.array([*self.start.position[:2], yaw_of(self.start)])
         tolerated = self.tolerated if self._travel(start, pose) <= ESCAPE else frozenset()
+        self._place(pose)
         return sorted({other for pair in self._contacts() if pair not in tolerated
                        for other in pair[1:]})  # fmt: skip
 
@@ -264,11 +326,11 @@ def _grid(
     footprint: RobotFootprint,
     bins: HeightBins,
 ) -> ObstacleGrid:
-    """The obstacle grid over ``area`` (base positions [m]) grown by the robot's reach:
-    only the boxes that reach into it are rasterised. Its corner lies on the lattice of
-    :data:`CELL` through the map's origin, so a local grid and the whole world's share
-    their cells."""
-    pad = footprint.reach + footprint.dilation + 2 * CELL
+    """The obstacle grid over ``area`` (base positions [m]) grown by the reach of the
+    robot's grown squares (:class:`RobotFootprint`): only the boxes that reach into it
+    are rasterised. Its corner lies on the lattice of :data:`CELL` through the map's
+    origin, so a local grid and the whole world's share their cells."""
+    pad = footprint.grown_reach + footprint.dilation + 2 * CELL  # the grown squares too
     lower = (
         math.floor((area[0][0] - pad) / CELL) * CELL,
         math.floor((area[0][1] - pad) / CELL) * CELL,
@@ -393,3 +455,8 @@ def planar_steps(delta_xy: float, delta_yaw: float, reach: float) -> int:
 def _turn(angle: float) -> float:
     """``angle`` [rad] as the shortest turn, in [-pi, pi)."""
     return (angle + math.pi) % (2.0 * math.pi) - math.pi
+
+
+def _turns(angles: FloatArray) -> FloatArray:
+    """:func:`_turn` of every angle [rad]."""
+    return np.asarray((angles + math.pi) % (2.0 * math.pi) - math.pi)

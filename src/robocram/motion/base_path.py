@@ -116,6 +116,9 @@ def plan_base_path(
                 colliding=colliding,
             )
         direct = motion_poses(checker, start, end, radius)
+        if goal_checked and not car:  # the straight way ends where the goal was checked
+            direct[-1] = end
+            checker.known_free(end)
         blocked = checker.first_blocked(direct)
         if blocked is None:
             waypoints = list(direct) if car else [start, end]

@@ -12,6 +12,9 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
+
+FloatArray = npt.NDArray[np.float64]
 
 BINS = 64  # height bins: the bits of an int64
 
@@ -35,3 +38,18 @@ class HeightBins:
             return np.int64(0)
         bits = ((1 << (last + 1)) - 1) ^ ((1 << first) - 1)
         return np.int64(bits - (1 << 64) if bits >= 1 << 63 else bits)
+
+    def masks(self, low: FloatArray, high: FloatArray) -> list[int]:
+        """:meth:`mask` of every pair of ``low`` and ``high`` [m] (arrays of one shape), as
+        Python integers: rasterising many boxes needs their bits at once."""
+        first = np.minimum(np.maximum(np.floor(low / self.height), 0), BINS).astype(np.int64)
+        last = np.minimum(np.maximum(np.floor(high / self.height), 0), BINS - 1).astype(np.int64)
+        return [
+            0 if f > t else _signed(((1 << (t + 1)) - 1) ^ ((1 << f) - 1))
+            for f, t in zip(first.tolist(), last.tolist(), strict=True)
+        ]
+
+
+def _signed(bits: int) -> int:
+    """``bits`` (0 .. 2**64 - 1) as the int64 with the same bits."""
+    return bits - (1 << 64) if bits >= 1 << 63 else bits

@@ -51,8 +51,8 @@ class ObstacleGrid:
         table = np.asarray(boxes, dtype=float).reshape(-1, 2, 3)
         first = cls._indices(table[:, 0, :2] - dilation, lower, cell, shape)
         last = cls._indices(table[:, 1, :2] + dilation, lower, cell, shape)
-        for k, (i0, j0), (i1, j1) in zip(range(len(table)), first, last, strict=True):
-            bits = bins.mask(table[k, 0, 2], table[k, 1, 2])
+        every_bits = bins.masks(table[:, 0, 2], table[:, 1, 2])
+        for bits, (i0, j0), (i1, j1) in zip(every_bits, first, last, strict=True):
             if bits:
                 masks[i0 : i1 + 1, j0 : j1 + 1] |= bits
         return cls(lower, cell, masks)
