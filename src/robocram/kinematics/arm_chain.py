@@ -42,6 +42,7 @@ class ArmChain:
         self._build_maps()
         self.lower, self.upper = self._limits()
         self.continuous = np.array([kin.joints[v].continuous for v in self.variables], bool)
+        self._wraps = bool(self.continuous.any())
         self._followers = self._mimic_followers()
 
     def _variables(self, joints: Iterable[str]) -> tuple[str, ...]:
@@ -182,7 +183,8 @@ class ArmChain:
 
     def wrap_continuous(self, x: FloatArray, reference: FloatArray) -> FloatArray:
         """Shift continuous variables by whole turns to lie within pi of ``reference``."""
-        if not self.continuous.any():
+        if not self._wraps:
             return x
-        turns = np.round((x - reference) / (2 * math.pi))
+        # ``np.round`` to 0 decimals is ``rint``, called through two Python layers
+        turns = np.rint((x - reference) / (2 * math.pi))
         return np.where(self.continuous, x - turns * 2 * math.pi, x)

@@ -92,7 +92,7 @@ def _held_step(
     """
     lower, upper = chain.lower, chain.upper
     out = clamped != moved
-    if not out.any():
+    if True not in out.tolist():  # ``out.any()`` without its two Python layers
         return moved
     free = ~out
     rest = err
@@ -102,13 +102,13 @@ def _held_step(
         x = np.where(out, clamped, x)
         if k:
             free &= ~out
-        if not free.any():
+        if True not in free.tolist():
             break
         moved[free] = x[free] + _damped_solve(jac[:, free], rest, damping)
         clamped = np.minimum(np.maximum(moved, lower), upper)
-        out = clamped != moved
-        if not out.any():
+        if clamped.tolist() == moved.tolist():  # as in :func:`descend`
             return moved
+        out = clamped != moved
     return clamped
 
 

@@ -11,6 +11,7 @@ orientation (rotation matrices, weighted by ``ROTATION_WEIGHT`` [m]) start the d
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 import pinocchio as pin
@@ -72,7 +73,8 @@ class SeedTable:
         self.features = features[order]
         self._keys_sorted = keys[order]
         self._squares = np.einsum("ij,ij->i", self.features, self.features)
-        self._around: dict[tuple[int, int, int], np.ndarray] = {}  # cell -> table rows
+        # cell -> the rows' configurations, features and squared features
+        self._around: dict[tuple[int, int, int], _Rows] = {}
 
     def _keys(self, cells: np.ndarray) -> np.ndarray:
         """One integer per grid cell (cells outside the sampled box map to -1)."""
@@ -81,8 +83,9 @@ class SeedTable:
         key = (local[..., 0] * self._shape[1] + local[..., 1]) * self._shape[2] + local[..., 2]
         return np.where(inside, key, -1)
 
-    def _neighbourhood(self, cell: tuple[int, int, int]) -> np.ndarray:
-        """The samples in ``cell`` and the 26 cells around it (cached per cell)."""
+    def _neighbourhood(self, cell: tuple[int, int, int]) -> _Rows:
+        """The samples in ``cell`` and the 26 cells around it (cached per cell, with their
+        rows gathered once: a cell is asked again and again)."""
         found = self._around.get(cell)
         if found is None:
             keys = self._keys(np.array(cell) + _AROUND)
@@ -90,7 +93,8 @@ class SeedTable:
             first = np.searchsorted(self._keys_sorted, keys, side="left")
             last = np.searchsorted(self._keys_sorted, keys, side="right")
             spans = [np.arange(f, t) for f, t in zip(first, last, strict=True)]
-            found = np.concatenate([np.empty(0, np.int64), *spans])
+            rows = np.concatenate([np.empty(0, np.int64), *spans])
+            found = _Rows(self.configurations[rows], self.features[rows], self._squares[rows])
             self._around[cell] = found
         return found
 
@@ -100,13 +104,22 @@ class SeedTable:
         position = target_in_base.translation
         x, y, z = (math.floor(v / self.cell) for v in position.tolist())
         rows = self._neighbourhood((x, y, z))
-        if rows.size == 0:
+        size = rows.squares.size
+        if size == 0:
             return np.empty((0, self.configurations.shape[1])), np.empty(0)
         goal = np.concatenate((position, ROTATION_WEIGHT * target_in_base.rotation.ravel()))
-        distance = self._squares[rows] - 2.0 * (self.features[rows] @ goal) + float(goal @ goal)
-        if rows.size > count:
+        distance = rows.squares - 2.0 * (rows.features @ goal) + float(goal @ goal)
+        if size > count:
             pick = np.argpartition(distance, count)[:count]
             pick = pick[np.argsort(distance[pick])]
         else:
             pick = np.argsort(distance)
-        return self.configurations[rows[pick]], np.sqrt(np.maximum(distance[pick], 0.0))
+        return rows.configurations[pick], np.sqrt(np.maximum(distance[pick], 0.0))
+
+
+class _Rows(NamedTuple):
+    """Some samples of a table: their configurations, features and squared features."""
+
+    configurations: FloatArray
+    features: FloatArray
+    squares: FloatArray
