@@ -80,3 +80,21 @@ def test_hsr_without_its_lift_gives_up_after_fruitless_descents() -> None:
     assert not result.success
     assert result.restarts + 1 < 12  # of a budget of 101 descents
     assert 0.005 < result.position_error < 0.2
+
+
+def test_nearest_answers_alike_from_a_gathered_and_a_fresh_neighbourhood(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # the table keeps the rows of a few cells gathered; dropping them changes no answer
+    solver = IKSolver.cached(load_description("pr2"), "right")
+    table = SeedTable(solver.chain, 5000, solver.reach.radius)
+    targets = [Pose((0.5 + 0.07 * k, -0.2 + 0.03 * k, 0.8)) for k in range(6)]
+    in_base = [solver.locate(t, {})[1] for t in targets]
+    first = [table.nearest(t, 4) for t in in_base]
+    assert len({tuple(np.floor(t.translation / table.cell)) for t in in_base}) > 2
+    assert all(c.size for c, _ in first)
+    monkeypatch.setattr("robocram.kinematics.seed_table.CACHED_CELLS", 2)
+    for t, (configs, distances) in zip(in_base * 2, first * 2, strict=True):
+        again_configs, again_distances = table.nearest(t, 4)
+        np.testing.assert_array_equal(again_configs, configs)
+        np.testing.assert_array_equal(again_distances, distances)

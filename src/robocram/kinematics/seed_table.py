@@ -22,6 +22,7 @@ from robocram.kinematics.chain_sweep import sweep_tip_poses
 ROTATION_WEIGHT = 0.1  # [m] per unit of rotation-matrix difference
 TABLE_SEED = 0  # seeds the sampled configurations; fixed, so IK answers are repeatable
 CELLS_ACROSS_REACH = 8  # grid cells along the arm's reach
+CACHED_CELLS = 64  # neighbourhoods a table keeps gathered (a batch visits a dozen)
 _AROUND = np.array([(x, y, z) for x in (-1, 0, 1) for y in (-1, 0, 1) for z in (-1, 0, 1)])
 
 
@@ -95,6 +96,8 @@ class SeedTable:
             spans = [np.arange(f, t) for f, t in zip(first, last, strict=True)]
             rows = np.concatenate([np.empty(0, np.int64), *spans])
             found = _Rows(self.configurations[rows], self.features[rows], self._squares[rows])
+            if len(self._around) >= CACHED_CELLS:  # a neighbourhood's copy is ~0.1 MB
+                self._around.clear()
             self._around[cell] = found
         return found
 
