@@ -20,7 +20,7 @@ from numpy.typing import NDArray
 
 from robocram.kinematics.robot_kinematics import pose_to_se3
 from robocram.motion.bullet_scene import CLEARANCE_REACH, BulletScene
-from robocram.motion.clearance_pairs import ClearancePairs, PairRules, ReachBalls
+from robocram.motion.clearance_pairs import ClearancePairs, PairRules, PartArrays, ReachBalls
 from robocram.motion.coal_shapes import coal_geometries
 from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.obstacle_shapes import DRIFT, StackedShapes, obstacle_cache
@@ -30,6 +30,7 @@ from robocram.world import World, WorldObject
 
 KEPT_SETUPS = 8  # checker setups kept per world (a stand's motions use a few)
 KEPT_ANSWERS = 64  # rule answer tables kept per world (one per judge, held set, objects)
+KEPT_PARTS = 8  # part arrays kept per world (one per asked links and held parts)
 GRIP_DIGITS = 9  # a held object's parts are reused while its grip is the same to 1e-9
 
 
@@ -51,6 +52,11 @@ class SetupCache:
     _kept: dict[tuple[object, ...], Setup] = field(default_factory=dict)
     _answers: dict[tuple[object, ...], NDArray[np.bool_]] = field(default_factory=dict)
     _held: dict[tuple[str, str, str], tuple[WorldObject, tuple[float, ...], list[Part]]] = field(
+        default_factory=dict
+    )
+    # per the ids of the part groups (the links' kept tuple, held objects' kept lists):
+    # the groups (held, so the ids are not reused while kept) and their arrays
+    _arrays: dict[tuple[int, ...], tuple[tuple[Sequence[Part], ...], PartArrays]] = field(
         default_factory=dict
     )
 
@@ -82,7 +88,8 @@ class SetupCache:
         obstacles: StackedShapes,
         margin: float,
     ) -> Setup:
-        parts = self._parts(judge, geometry)
+        arrays = self._parts(judge, geometry)
+        parts = arrays.parts
         carriers = {geometry.frame(link)[0] for link in judge.moving_links}
         joints = sorted({p.joint for p in parts} | carriers)
         rows = {j: k for k, j in enumerate(joints)}
@@ -91,7 +98,7 @@ class SetupCache:
         checked = self._checked(judge, labels, obstacles)
         within = CLEARANCE_REACH + margin + DRIFT + judge.distance
         pairs = ClearancePairs.of(
-            parts, rows, balls, obstacles, checked, judge.allowed_pairs, within
+            arrays, rows, balls, obstacles, checked, judge.allowed_pairs, within
         )
         return Setup(joints, pairs, obstacles)
 
@@ -111,9 +118,10 @@ class SetupCache:
                 del self._answers[next(iter(self._answers))]
         return found
 
-    def _parts(self, judge: BulletScene, geometry: RobotGeometry) -> list[Part]:
+    def _parts(self, judge: BulletScene, geometry: RobotGeometry) -> PartArrays:
         """The parts the judge asks about: its moving links but the allowed ones (named
-        as PyBullet names their link), and every held object (named by the object)."""
+        as PyBullet names their link), and every held object (named by the object); kept
+        while the same groups of parts come again."""
         world = self.world
         handle = world.robot(judge.robot)
         names = handle.index_names()
@@ -127,10 +135,17 @@ class SetupCache:
             for link in geometry.parts
             if (index := handle.link_index.get(link, -2)) in asked
         )
-        parts = list(geometry.named_parts(labels))
+        groups: list[Sequence[Part]] = [geometry.named_parts(labels)]
         for obj, link in world.attachments(handle).items():
-            parts.extend(self._held_parts(geometry, handle, obj, link))
-        return parts
+            groups.append(self._held_parts(geometry, handle, obj, link))
+        key = tuple(id(group) for group in groups)
+        found = self._arrays.get(key)
+        if found is None:
+            arrays = PartArrays.of([p for group in groups for p in group])
+            found = self._arrays[key] = (tuple(groups), arrays)
+            if len(self._arrays) > KEPT_PARTS:
+                del self._arrays[next(iter(self._arrays))]  # the oldest
+        return found[1]
 
     def _held_parts(
         self, geometry: RobotGeometry, robot: WorldObject, name: str, link: str
@@ -202,7 +217,7 @@ def _obstacles(world: World, judge: BulletScene) -> StackedShapes:
 def _reach_balls(
     geometry: RobotGeometry,
     planned: Sequence[str],
-    parts: list[Part],
+    parts: Sequence[Part],
     data: pin.Data,
     base: pin.SE3,
 ) -> ReachBalls:

@@ -75,7 +75,7 @@ class CoalClearance:
         self._velocity_slots = np.array([kin.joint(j).idx_v for j in judge.joints], dtype=np.intp)
         self._q = self._slots.q0  # pinocchio's configuration checked last
         self._base_matrix = self._base.homogeneous
-        pin.forwardKinematics(self._model, self._data, self._slots.q0)  # offsets: from q0
+        # the offsets come from q0 too: the setup reads the data but poses nothing
         tree = world.robot(robot).description.model.derived(_pin_tree)
         self._carriers = _Carriers.of(tree, self._data, self._slots, setup.joints)
         self._frames: FloatArray = np.zeros((len(self._joints), 4, 4))  # placements, last check

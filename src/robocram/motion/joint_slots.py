@@ -61,13 +61,24 @@ class JointSlots:
 
 def _followers(model: RobotModel, name: str) -> list[tuple[str, float, float]]:
     """``(joint, multiplier, offset)`` of ``name`` itself and every joint mimicking it."""
+    mimics = model.derived(_mimics)
     found = [(name, 1.0, 0.0)]
     k = 0
     while k < len(found):
         master, mult, off = found[k]
-        for joint in model.joints.values():
-            if joint.mimic is not None and joint.mimic.joint == master:
-                m = joint.mimic
-                found.append((joint.name, m.multiplier * mult, m.multiplier * off + m.offset))
+        for joint, multiplier, offset in mimics.get(master, ()):
+            found.append((joint, multiplier * mult, multiplier * off + offset))
         k += 1
+    return found
+
+
+def _mimics(model: RobotModel) -> dict[str, list[tuple[str, float, float]]]:
+    """Per master joint: ``(joint, multiplier, offset)`` of the joints mimicking it
+    directly, in the model's order (kept with the model: a checker is made per motion,
+    and scanning every joint per planned joint cost more than the rest of its slots)."""
+    found: dict[str, list[tuple[str, float, float]]] = {}
+    for joint in model.joints.values():
+        if joint.mimic is not None:
+            m = joint.mimic
+            found.setdefault(m.joint, []).append((joint.name, m.multiplier, m.offset))
     return found

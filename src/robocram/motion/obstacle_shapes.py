@@ -14,6 +14,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 from dataclasses import dataclass, field
+from itertools import chain
 
 import coal
 import numpy as np
@@ -119,12 +120,13 @@ class StackedShapes:
     @classmethod
     def of(cls, shapes: list[ObstacleShapes]) -> StackedShapes:
         """Stack ``shapes`` in order."""
+        counts = [len(s.labels) for s in shapes]
         return cls(
             tuple(shapes),
-            np.array([k for k, s in enumerate(shapes) for _ in s.labels], dtype=np.intp),
-            tuple(g for s in shapes for g in s.geometries),
-            tuple(p for s in shapes for p in s.placements),
-            tuple(label for s in shapes for label in s.labels),
+            np.repeat(np.arange(len(shapes), dtype=np.intp), counts),
+            tuple(chain.from_iterable(s.geometries for s in shapes)),
+            tuple(chain.from_iterable(s.placements for s in shapes)),
+            tuple(chain.from_iterable(s.labels for s in shapes)),
             np.concatenate([s.centres for s in shapes]) if shapes else np.zeros((0, 3)),
             np.concatenate([s.halves for s in shapes]) if shapes else np.zeros((0, 3)),
         )
