@@ -19,6 +19,7 @@ import pinocchio as pin
 from numpy.typing import NDArray
 
 from robocram.kinematics.robot_kinematics import pose_to_se3
+from robocram.motion.allowed_contacts import Other
 from robocram.motion.bullet_scene import CLEARANCE_REACH, BulletScene
 from robocram.motion.clearance_pairs import ClearancePairs, PairRules, PartArrays, ReachBalls
 from robocram.motion.coal_shapes import coal_geometries
@@ -59,6 +60,10 @@ class SetupCache:
     _arrays: dict[tuple[int, ...], tuple[tuple[Sequence[Part], ...], PartArrays]] = field(
         default_factory=dict
     )
+    # per (rules, object name, type): whether a "*" rule lets every link touch it
+    _anywhere: dict[tuple[tuple[tuple[str, str], ...], str, str], bool] = field(
+        default_factory=dict
+    )
 
     def setup(
         self,
@@ -70,7 +75,7 @@ class SetupCache:
     ) -> Setup:
         """The setup of a checker of ``judge`` with the robot's base at ``base`` and its
         joints as ``data`` is posed: a kept one if everything it depends on is as it was."""
-        obstacles = _obstacles(self.world, judge)
+        obstacles = self._obstacles(judge)
         key = (id(obstacles), margin, *_setup_key(judge, geometry, data, base))
         found = self._kept.get(key)
         if found is None or found.obstacles is not obstacles:
@@ -78,6 +83,27 @@ class SetupCache:
             if len(self._kept) > KEPT_SETUPS:
                 del self._kept[next(iter(self._kept))]  # the oldest
         return found
+
+    def _obstacles(self, judge: BulletScene) -> StackedShapes:
+        """The shapes of every object the judge checks against: all but the robot, what
+        it holds and what any link may touch (the floor, as ``judge.anywhere``; the
+        answers are kept per rules and object)."""
+        world = self.world
+        skip = {judge.robot, *world.attachments(judge.robot)}
+        rules = judge.rules
+        anywhere = self._anywhere
+        cache = obstacle_cache(world)
+        shapes = []
+        for obj in world.objects():
+            if obj.name in skip:
+                continue
+            key = (rules.rules, obj.name, obj.type)
+            free = anywhere.get(key)
+            if free is None:
+                free = anywhere[key] = rules.allows_any_link(Other(obj.name, obj.type))
+            if not free:
+                shapes.append(cache.shapes(world, obj))
+        return cache.stacked(shapes)
 
     def _made(
         self,
@@ -203,17 +229,6 @@ def _pose_key(pose: Pose) -> tuple[float, ...]:
     return tuple(np.round(values, GRIP_DIGITS).tolist())
 
 
-def _obstacles(world: World, judge: BulletScene) -> StackedShapes:
-    """The shapes of every object the judge checks against: all but the robot, what it
-    holds and what any link may touch (the floor)."""
-    held = set(world.attachments(judge.robot))
-    skip = {judge.robot, *held, *(o.name for o in judge.anywhere())}
-    cache = obstacle_cache(world)
-    return cache.stacked(
-        [cache.shapes(world, obj) for obj in world.objects() if obj.name not in skip]
-    )
-
-
 def _reach_balls(
     geometry: RobotGeometry,
     planned: Sequence[str],
@@ -227,8 +242,12 @@ def _reach_balls(
     centres: list[FloatArray] = []
     owners: list[int] = []
     radii: list[float] = []
+    chains: dict[int, tuple[int, float]] = {}  # per joint: its anchor (parts share joints)
     for p in parts:
-        anchor, reach = geometry.anchor(p.joint, planned)
+        chain = chains.get(p.joint)
+        if chain is None:
+            chain = chains[p.joint] = geometry.anchor(p.joint, planned)
+        anchor, reach = chain
         if anchor not in anchors:
             anchors[anchor] = len(centres)
             centres.append(np.asarray((base * data.oMi[anchor]).translation, dtype=float))
