@@ -222,10 +222,9 @@ def _setup_key(
 def _pose_key(pose: Pose) -> tuple[float, ...]:
     """``pose`` rounded to :data:`GRIP_DIGITS`, its quaternion's sign made unique (a grip
     read again after a base move differs by float noise, or is the same rotation as -q)."""
-    quaternion = np.asarray(pose.orientation, dtype=float)
-    if quaternion[np.flatnonzero(np.abs(quaternion) > 1e-6)[0]] < 0.0:
-        quaternion = -quaternion
-    values = np.concatenate((np.asarray(pose.position, dtype=float), quaternion))
+    values = np.array((*pose.position, *pose.orientation), dtype=float)
+    if next(v for v in pose.orientation if abs(v) > 1e-6) < 0.0:
+        values[3:] = -values[3:]
     return tuple(np.round(values, GRIP_DIGITS).tolist())
 
 

@@ -141,7 +141,9 @@ class ObstacleCache:
     :data:`DRIFT` bounds how far that can move any point of them.
     """
 
-    _entries: dict[str, tuple[WorldObject, NDArray[np.float64], ObstacleShapes]] = field(
+    # per object: it, the state its shapes were read in, the shapes, that state's base
+    # pose (a moved object's next move starts from it)
+    _entries: dict[str, tuple[WorldObject, NDArray[np.float64], ObstacleShapes, pin.SE3]] = field(
         default_factory=dict
     )
     builds: int = 0  # how many times shapes were read (for tests and figures)
@@ -170,12 +172,13 @@ class ObstacleCache:
         if entry is not None and entry[0] is obj and _near(entry[1], state):
             self._read[obj.name] = raw
             return entry[2]
+        base = _base(state)
         if entry is not None and entry[0] is obj and _rigidly_moved(entry[1], state):
-            shapes = entry[2].moved(_base(state) * _base(entry[1]).inverse())
+            shapes = entry[2].moved(base * entry[3].inverse())
         else:
             shapes = ObstacleShapes.of(world, obj)
             self.builds += 1
-        self._entries[obj.name] = (obj, state, shapes)
+        self._entries[obj.name] = (obj, state, shapes, base)
         self._read[obj.name] = raw
         return shapes
 
