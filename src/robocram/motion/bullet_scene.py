@@ -25,6 +25,7 @@ from robocram.motion.joint_trajectory import FloatArray
 from robocram.world import ObstacleBoxes, World, WorldObject
 
 CLEARANCE_REACH = 0.1  # [m] distances asked for: a free configuration clears this much
+KEPT_RULES = 32  # judges' rules and moving links kept per world (per joints, allowed links)
 
 
 class BulletScene:
@@ -49,14 +50,24 @@ class BulletScene:
                 f"joints {unknown} are not movable joints of {robot}; known: {sorted(known)}"
             )
         self.allowed_links = frozenset(allowed_links)
-        self.rules = AllowedContacts.of(world.robot(robot).description, allowed_links)
+        handle = world.robot(robot)
+        kept = world.derived(_kept_rules)
+        key = (robot, self._joints, self.allowed_links)
+        found = kept.get(key)
+        if found is None or found[0] is not handle:
+            rules = AllowedContacts.of(handle.description, allowed_links)
+            moving = (  # only these can touch anything new; no joints: the base
+                links_below(world, robot, self._joints)
+                if self._joints
+                else tuple(world.link_names(robot))
+            )
+            found = kept[key] = (handle, rules, moving)
+            if len(kept) > KEPT_RULES:
+                del kept[next(iter(kept))]  # the oldest
+        self.rules = found[1]
         self.allowed_pairs = frozenset(allowed_pairs)  # (robot link | held object, other)
         self.distance = distance  # [m] nearer than this counts as touching
-        self.moving_links = (  # only these can touch anything new; no joints: the base
-            links_below(world, robot, self._joints)
-            if self._joints
-            else tuple(world.link_names(robot))
-        )
+        self.moving_links = found[2]
         self._posed = False
         self._obstacles: ObstacleBoxes | None = None  # read once per posed block
         self._levers: LeverData | None = None  # what joint_levers needs, read once
@@ -255,3 +266,14 @@ def _rotated(quaternions: FloatArray, vectors: FloatArray) -> FloatArray:
 def _named(world: World, obj: WorldObject, link: str) -> str:
     """An object by its name, or ``object/link`` when it has several links."""
     return f"{obj.name}/{link}" if len(obj.link_index) > 1 else obj.name
+
+
+_JudgeKey = tuple[str, tuple[str, ...], frozenset[str]]  # robot, joints, allowed links
+_KeptRules = dict[_JudgeKey, tuple[WorldObject, AllowedContacts, tuple[str, ...]]]
+
+
+def _kept_rules(world: World) -> _KeptRules:
+    """Per (robot, joints, allowed links): the robot object they were made for, its rules
+    and its moving links, kept with the world (a judge is made per motion, and reading
+    them again cost a quarter of its making)."""
+    return {}

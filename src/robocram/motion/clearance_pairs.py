@@ -76,6 +76,33 @@ class PairTable:
         return lower
 
 
+@dataclass(frozen=True)
+class PartArrays:
+    """Parts as the arrays a checker's pairs read, kept per set of parts (a stand's
+    checkers ask about the same links: building them per checker cost a third of its
+    pairs)."""
+
+    parts: tuple[Part, ...]
+    names: tuple[str, ...]  # the labels by number, as they first come in ``parts``
+    labels: NDArray[np.intp]  # per part: its label's number
+    radii: FloatArray  # (parts,) [m] the parts' ball radii
+    boxes: FloatArray  # (parts, 4, 4) as ``ClearancePairs.part_boxes``
+
+    @classmethod
+    def of(cls, parts: Sequence[Part]) -> PartArrays:
+        """The arrays of ``parts``."""
+        numbers = {label: k for k, label in enumerate(dict.fromkeys(p.label for p in parts))}
+        labels = np.array([numbers[p.label] for p in parts], dtype=np.intp)
+        radii = np.array([p.radius for p in parts], dtype=float).reshape(-1)
+        boxes = np.zeros((len(parts), 4, 4))
+        boxes[:, 3, 3] = 1.0
+        if parts:
+            axes = np.array([p.axes for p in parts], dtype=float)
+            boxes[:, :3, :3] = axes * np.array([p.halves for p in parts])[:, None, :]
+            boxes[:, :3, 3] = np.array([p.centre for p in parts], dtype=float)
+        return cls(tuple(parts), tuple(numbers), labels, radii, boxes)
+
+
 @dataclass
 class _Focus:
     """The pairs that can be near while no part's ball has moved :data:`FOCUS` from
@@ -102,7 +129,7 @@ class ClearancePairs:
     @classmethod
     def of(
         cls,
-        parts: list[Part],
+        parts: PartArrays,
         rows: dict[int, int],
         balls: ReachBalls,
         shapes: StackedShapes,
@@ -115,34 +142,26 @@ class ClearancePairs:
         label, piece label), whose part's ball comes within ``within`` [m] of the piece's
         box; ``rows`` gives each pinocchio joint's row in the placements of a check."""
         owner, centres, halves = shapes.owner, shapes.centres, shapes.halves
-        numbers = {label: k for k, label in enumerate(dict.fromkeys(p.label for p in parts))}
-        part_label = np.array([numbers[p.label] for p in parts], dtype=np.intp)
+        part_label = parts.labels
         lower = box_distances(balls.centres[:, None, :], centres[None], halves[None])
         near = lower[balls.anchor] - balls.radii[:, None] < within  # [part, piece]
         near &= checked[part_label][:, owner]
         if allowed_pairs:  # start contacts the motion may keep
             for m, piece in zip(*np.nonzero(near), strict=True):
-                near[m, piece] = (parts[m].label, shapes.labels[piece]) not in allowed_pairs
+                near[m, piece] = (parts.parts[m].label, shapes.labels[piece]) not in allowed_pairs
         part, piece = np.nonzero(near)
-        radii = np.array([p.radius for p in parts], dtype=float).reshape(-1)
-        boxes = np.zeros((len(parts), 4, 4))
-        boxes[:, 3, 3] = 1.0
-        if parts:
-            axes = np.array([p.axes for p in parts], dtype=float)
-            boxes[:, :3, :3] = axes * np.array([p.halves for p in parts])[:, None, :]
-            boxes[:, :3, 3] = np.array([p.centre for p in parts], dtype=float)
         floats = np.empty((7, len(part)))
         floats[:3] = np.take(centres, piece, axis=0).T
         floats[3:6] = np.take(halves, piece, axis=0).T
-        floats[6] = radii[part]
+        floats[6] = parts.radii[part]
         table = PairTable(
             np.array([part, part_label[part], piece], dtype=np.intp).reshape(3, -1), floats
         )
         return cls(
-            tuple(parts),
-            np.array([rows[p.joint] for p in parts], dtype=np.intp),
-            boxes,
-            tuple(numbers),
+            parts.parts,
+            np.array([rows[p.joint] for p in parts.parts], dtype=np.intp),
+            parts.boxes,
+            parts.names,
             table,
             shapes.geometries,
             shapes.placements,

@@ -19,8 +19,9 @@ import pinocchio as pin
 from numpy.typing import NDArray
 
 from robocram.kinematics.robot_kinematics import pose_to_se3
+from robocram.motion.allowed_contacts import Other
 from robocram.motion.bullet_scene import CLEARANCE_REACH, BulletScene
-from robocram.motion.clearance_pairs import ClearancePairs, PairRules, ReachBalls
+from robocram.motion.clearance_pairs import ClearancePairs, PairRules, PartArrays, ReachBalls
 from robocram.motion.coal_shapes import coal_geometries
 from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.obstacle_shapes import DRIFT, StackedShapes, obstacle_cache
@@ -30,6 +31,7 @@ from robocram.world import World, WorldObject
 
 KEPT_SETUPS = 8  # checker setups kept per world (a stand's motions use a few)
 KEPT_ANSWERS = 64  # rule answer tables kept per world (one per judge, held set, objects)
+KEPT_PARTS = 8  # part arrays kept per world (one per asked links and held parts)
 GRIP_DIGITS = 9  # a held object's parts are reused while its grip is the same to 1e-9
 
 
@@ -53,6 +55,15 @@ class SetupCache:
     _held: dict[tuple[str, str, str], tuple[WorldObject, tuple[float, ...], list[Part]]] = field(
         default_factory=dict
     )
+    # per the ids of the part groups (the links' kept tuple, held objects' kept lists):
+    # the groups (held, so the ids are not reused while kept) and their arrays
+    _arrays: dict[tuple[int, ...], tuple[tuple[Sequence[Part], ...], PartArrays]] = field(
+        default_factory=dict
+    )
+    # per (rules, object name, type): whether a "*" rule lets every link touch it
+    _anywhere: dict[tuple[tuple[tuple[str, str], ...], str, str], bool] = field(
+        default_factory=dict
+    )
 
     def setup(
         self,
@@ -64,7 +75,7 @@ class SetupCache:
     ) -> Setup:
         """The setup of a checker of ``judge`` with the robot's base at ``base`` and its
         joints as ``data`` is posed: a kept one if everything it depends on is as it was."""
-        obstacles = _obstacles(self.world, judge)
+        obstacles = self._obstacles(judge)
         key = (id(obstacles), margin, *_setup_key(judge, geometry, data, base))
         found = self._kept.get(key)
         if found is None or found.obstacles is not obstacles:
@@ -72,6 +83,27 @@ class SetupCache:
             if len(self._kept) > KEPT_SETUPS:
                 del self._kept[next(iter(self._kept))]  # the oldest
         return found
+
+    def _obstacles(self, judge: BulletScene) -> StackedShapes:
+        """The shapes of every object the judge checks against: all but the robot, what
+        it holds and what any link may touch (the floor, as ``judge.anywhere``; the
+        answers are kept per rules and object)."""
+        world = self.world
+        skip = {judge.robot, *world.attachments(judge.robot)}
+        rules = judge.rules
+        anywhere = self._anywhere
+        cache = obstacle_cache(world)
+        shapes = []
+        for obj in world.objects():
+            if obj.name in skip:
+                continue
+            key = (rules.rules, obj.name, obj.type)
+            free = anywhere.get(key)
+            if free is None:
+                free = anywhere[key] = rules.allows_any_link(Other(obj.name, obj.type))
+            if not free:
+                shapes.append(cache.shapes(world, obj))
+        return cache.stacked(shapes)
 
     def _made(
         self,
@@ -82,7 +114,8 @@ class SetupCache:
         obstacles: StackedShapes,
         margin: float,
     ) -> Setup:
-        parts = self._parts(judge, geometry)
+        arrays = self._parts(judge, geometry)
+        parts = arrays.parts
         carriers = {geometry.frame(link)[0] for link in judge.moving_links}
         joints = sorted({p.joint for p in parts} | carriers)
         rows = {j: k for k, j in enumerate(joints)}
@@ -91,7 +124,7 @@ class SetupCache:
         checked = self._checked(judge, labels, obstacles)
         within = CLEARANCE_REACH + margin + DRIFT + judge.distance
         pairs = ClearancePairs.of(
-            parts, rows, balls, obstacles, checked, judge.allowed_pairs, within
+            arrays, rows, balls, obstacles, checked, judge.allowed_pairs, within
         )
         return Setup(joints, pairs, obstacles)
 
@@ -111,9 +144,10 @@ class SetupCache:
                 del self._answers[next(iter(self._answers))]
         return found
 
-    def _parts(self, judge: BulletScene, geometry: RobotGeometry) -> list[Part]:
+    def _parts(self, judge: BulletScene, geometry: RobotGeometry) -> PartArrays:
         """The parts the judge asks about: its moving links but the allowed ones (named
-        as PyBullet names their link), and every held object (named by the object)."""
+        as PyBullet names their link), and every held object (named by the object); kept
+        while the same groups of parts come again."""
         world = self.world
         handle = world.robot(judge.robot)
         names = handle.index_names()
@@ -127,10 +161,17 @@ class SetupCache:
             for link in geometry.parts
             if (index := handle.link_index.get(link, -2)) in asked
         )
-        parts = list(geometry.named_parts(labels))
+        groups: list[Sequence[Part]] = [geometry.named_parts(labels)]
         for obj, link in world.attachments(handle).items():
-            parts.extend(self._held_parts(geometry, handle, obj, link))
-        return parts
+            groups.append(self._held_parts(geometry, handle, obj, link))
+        key = tuple(id(group) for group in groups)
+        found = self._arrays.get(key)
+        if found is None:
+            arrays = PartArrays.of([p for group in groups for p in group])
+            found = self._arrays[key] = (tuple(groups), arrays)
+            if len(self._arrays) > KEPT_PARTS:
+                del self._arrays[next(iter(self._arrays))]  # the oldest
+        return found[1]
 
     def _held_parts(
         self, geometry: RobotGeometry, robot: WorldObject, name: str, link: str
@@ -181,28 +222,16 @@ def _setup_key(
 def _pose_key(pose: Pose) -> tuple[float, ...]:
     """``pose`` rounded to :data:`GRIP_DIGITS`, its quaternion's sign made unique (a grip
     read again after a base move differs by float noise, or is the same rotation as -q)."""
-    quaternion = np.asarray(pose.orientation, dtype=float)
-    if quaternion[np.flatnonzero(np.abs(quaternion) > 1e-6)[0]] < 0.0:
-        quaternion = -quaternion
-    values = np.concatenate((np.asarray(pose.position, dtype=float), quaternion))
+    values = np.array((*pose.position, *pose.orientation), dtype=float)
+    if next(v for v in pose.orientation if abs(v) > 1e-6) < 0.0:
+        values[3:] = -values[3:]
     return tuple(np.round(values, GRIP_DIGITS).tolist())
-
-
-def _obstacles(world: World, judge: BulletScene) -> StackedShapes:
-    """The shapes of every object the judge checks against: all but the robot, what it
-    holds and what any link may touch (the floor)."""
-    held = set(world.attachments(judge.robot))
-    skip = {judge.robot, *held, *(o.name for o in judge.anywhere())}
-    cache = obstacle_cache(world)
-    return cache.stacked(
-        [cache.shapes(world, obj) for obj in world.objects() if obj.name not in skip]
-    )
 
 
 def _reach_balls(
     geometry: RobotGeometry,
     planned: Sequence[str],
-    parts: list[Part],
+    parts: Sequence[Part],
     data: pin.Data,
     base: pin.SE3,
 ) -> ReachBalls:
@@ -212,8 +241,12 @@ def _reach_balls(
     centres: list[FloatArray] = []
     owners: list[int] = []
     radii: list[float] = []
+    chains: dict[int, tuple[int, float]] = {}  # per joint: its anchor (parts share joints)
     for p in parts:
-        anchor, reach = geometry.anchor(p.joint, planned)
+        chain = chains.get(p.joint)
+        if chain is None:
+            chain = chains[p.joint] = geometry.anchor(p.joint, planned)
+        anchor, reach = chain
         if anchor not in anchors:
             anchors[anchor] = len(centres)
             centres.append(np.asarray((base * data.oMi[anchor]).translation, dtype=float))

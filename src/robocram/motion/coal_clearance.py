@@ -75,7 +75,7 @@ class CoalClearance:
         self._velocity_slots = np.array([kin.joint(j).idx_v for j in judge.joints], dtype=np.intp)
         self._q = self._slots.q0  # pinocchio's configuration checked last
         self._base_matrix = self._base.homogeneous
-        pin.forwardKinematics(self._model, self._data, self._slots.q0)  # offsets: from q0
+        # the offsets come from q0 too: the setup reads the data but poses nothing
         tree = world.robot(robot).description.model.derived(_pin_tree)
         self._carriers = _Carriers.of(tree, self._data, self._slots, setup.joints)
         self._frames: FloatArray = np.zeros((len(self._joints), 4, 4))  # placements, last check
@@ -211,13 +211,20 @@ class _LinkSpeeds:
         return np.asarray(norms[:, 0] + norms[:, 1] * self.radii, dtype=float)
 
 
-_PinTree = tuple[list[int], list[int]]  # per pinocchio joint: its parent, its first q index
+@dataclass(frozen=True)
+class _PinTree:
+    """Pinocchio's joint tree of a model, and per (written q indices, joints) which
+    joints carry them (a checker is made per motion, and its joints repeat)."""
+
+    parents: list[int]  # per pinocchio joint: its parent
+    starts: list[int]  # and its first q index
+    carried: dict[tuple[tuple[int, ...], tuple[int, ...]], tuple[list[int], NDArray[np.intp]]]
 
 
 def _pin_tree(model: RobotModel) -> _PinTree:
     """Pinocchio's joint tree of ``model`` (kept with it: reading it costs ~10 us)."""
     kin = robot_kinematics(model)
-    return kin.model.parents.tolist(), kin.model.idx_qs.tolist()
+    return _PinTree(kin.model.parents.tolist(), kin.model.idx_qs.tolist(), {})
 
 
 @dataclass(frozen=True)
@@ -233,17 +240,11 @@ class _Carriers:
     @classmethod
     def of(cls, tree: _PinTree, data: pin.Data, slots: JointSlots, joints: list[int]) -> _Carriers:
         """For ``joints``, from ``data`` posed at ``slots.q0``."""
-        written = {*slots.plain_idx.tolist(), *slots.cont_idx.tolist()}
-        parents, starts = tree
-        moved = {j for j, at in enumerate(starts) if j and at in written}
-        carriers = []
-        for joint in joints:
-            carrier = joint
-            while carrier and carrier not in moved:
-                carrier = parents[carrier]
-            carriers.append(carrier)
-        read = sorted(set(carriers))
-        row = np.array([read.index(c) for c in carriers], dtype=np.intp)
+        key = ((*slots.plain_idx.tolist(), *slots.cont_idx.tolist()), tuple(joints))
+        found = tree.carried.get(key)
+        if found is None:
+            found = tree.carried[key] = _carried(tree, set(key[0]), joints)
+        read, row = found
         placed = data.oMi.tolist()  # views: read them now
         inverses = np.array([placed[c].inverse().homogeneous for c in read], dtype=float)
         frames = np.array([placed[j].homogeneous for j in joints], dtype=float)
@@ -255,3 +256,20 @@ class _Carriers:
         placed = data.oMi.tolist()  # views: read them now
         carriers = base @ np.array([placed[j].homogeneous for j in self.read])
         return np.asarray(carriers[self.row] @ self.offsets, dtype=float)
+
+
+def _carried(
+    tree: _PinTree, written: set[int], joints: list[int]
+) -> tuple[list[int], NDArray[np.intp]]:
+    """The joints that move with ``written`` q indices and carry ``joints`` (0: the
+    root), and per joint its carrier's row among them."""
+    parents, starts = tree.parents, tree.starts
+    moved = {j for j, at in enumerate(starts) if j and at in written}
+    carriers = []
+    for joint in joints:
+        carrier = joint
+        while carrier and carrier not in moved:
+            carrier = parents[carrier]
+        carriers.append(carrier)
+    read = sorted(set(carriers))
+    return read, np.array([read.index(c) for c in carriers], dtype=np.intp)

@@ -26,21 +26,14 @@ class JointSlots:
         self.q0 = q0
         self.names = tuple(joints)
         self.width = len(self.names)
-        rows: list[tuple[int, int, float, float, bool]] = []  # (source, idx_q, mult, off, cont)
-        for source, name in enumerate(self.names):
-            for follower, mult, off in _followers(kin.robot_model, name):
-                info = kin.joint(follower)
-                rows.append((source, info.idx_q, mult, off, info.continuous))
-        plain = [r for r in rows if not r[4]]
-        cont = [r for r in rows if r[4]]
-        self.plain_src = np.array([r[0] for r in plain], dtype=int)
-        self.plain_idx = np.array([r[1] for r in plain], dtype=int)
-        self.plain_mult = np.array([r[2] for r in plain])
-        self.plain_off = np.array([r[3] for r in plain])
-        self.cont_src = np.array([r[0] for r in cont], dtype=int)
-        self.cont_idx = np.array([r[1] for r in cont], dtype=int)
-        self.cont_mult = np.array([r[2] for r in cont])
-        self.cont_off = np.array([r[3] for r in cont])
+        tables = kin.robot_model.derived(_slot_tables)
+        found = tables.get(self.names)
+        if found is None:
+            found = tables[self.names] = _slots(kin, self.names)
+        (
+            self.plain_src, self.plain_idx, self.plain_mult, self.plain_off,
+            self.cont_src, self.cont_idx, self.cont_mult, self.cont_off,
+        ) = found  # fmt: skip
 
     def full(self, q: Sequence[float] | NDArray[np.float64]) -> NDArray[np.float64]:
         """The robot's pinocchio configuration with the joints at ``q``."""
@@ -61,13 +54,58 @@ class JointSlots:
 
 def _followers(model: RobotModel, name: str) -> list[tuple[str, float, float]]:
     """``(joint, multiplier, offset)`` of ``name`` itself and every joint mimicking it."""
+    mimics = model.derived(_mimics)
     found = [(name, 1.0, 0.0)]
     k = 0
     while k < len(found):
         master, mult, off = found[k]
-        for joint in model.joints.values():
-            if joint.mimic is not None and joint.mimic.joint == master:
-                m = joint.mimic
-                found.append((joint.name, m.multiplier * mult, m.multiplier * off + m.offset))
+        for joint, multiplier, offset in mimics.get(master, ()):
+            found.append((joint, multiplier * mult, multiplier * off + offset))
         k += 1
     return found
+
+
+def _mimics(model: RobotModel) -> dict[str, list[tuple[str, float, float]]]:
+    """Per master joint: ``(joint, multiplier, offset)`` of the joints mimicking it
+    directly, in the model's order (kept with the model: a checker is made per motion,
+    and scanning every joint per planned joint cost more than the rest of its slots)."""
+    found: dict[str, list[tuple[str, float, float]]] = {}
+    for joint in model.joints.values():
+        if joint.mimic is not None:
+            m = joint.mimic
+            found.setdefault(m.joint, []).append((joint.name, m.multiplier, m.offset))
+    return found
+
+
+_Slots = tuple[
+    NDArray[np.int_], NDArray[np.int_], NDArray[np.float64], NDArray[np.float64],
+    NDArray[np.int_], NDArray[np.int_], NDArray[np.float64], NDArray[np.float64],
+]  # fmt: skip
+
+
+def _slot_tables(model: RobotModel) -> dict[tuple[str, ...], _Slots]:
+    """Per planned joints: their slots, kept with the model (a checker is made per motion,
+    and its joints repeat; the arrays are only read)."""
+    return {}
+
+
+def _slots(kin: RobotKinematics, names: tuple[str, ...]) -> _Slots:
+    """The plain then the continuous slots of ``names`` and their followers: source
+    value, q index, multiplier, offset."""
+    rows: list[tuple[int, int, float, float, bool]] = []  # (source, idx_q, mult, off, cont)
+    for source, name in enumerate(names):
+        for follower, mult, off in _followers(kin.robot_model, name):
+            info = kin.joint(follower)
+            rows.append((source, info.idx_q, mult, off, info.continuous))
+    plain = [r for r in rows if not r[4]]
+    cont = [r for r in rows if r[4]]
+    return (
+        np.array([r[0] for r in plain], dtype=int),
+        np.array([r[1] for r in plain], dtype=int),
+        np.array([r[2] for r in plain]),
+        np.array([r[3] for r in plain]),
+        np.array([r[0] for r in cont], dtype=int),
+        np.array([r[1] for r in cont], dtype=int),
+        np.array([r[2] for r in cont]),
+        np.array([r[3] for r in cont]),
+    )

@@ -14,6 +14,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 from dataclasses import dataclass, field
+from itertools import chain
 
 import coal
 import numpy as np
@@ -119,12 +120,13 @@ class StackedShapes:
     @classmethod
     def of(cls, shapes: list[ObstacleShapes]) -> StackedShapes:
         """Stack ``shapes`` in order."""
+        counts = [len(s.labels) for s in shapes]
         return cls(
             tuple(shapes),
-            np.array([k for k, s in enumerate(shapes) for _ in s.labels], dtype=np.intp),
-            tuple(g for s in shapes for g in s.geometries),
-            tuple(p for s in shapes for p in s.placements),
-            tuple(label for s in shapes for label in s.labels),
+            np.repeat(np.arange(len(shapes), dtype=np.intp), counts),
+            tuple(chain.from_iterable(s.geometries for s in shapes)),
+            tuple(chain.from_iterable(s.placements for s in shapes)),
+            tuple(chain.from_iterable(s.labels for s in shapes)),
             np.concatenate([s.centres for s in shapes]) if shapes else np.zeros((0, 3)),
             np.concatenate([s.halves for s in shapes]) if shapes else np.zeros((0, 3)),
         )
@@ -139,7 +141,9 @@ class ObstacleCache:
     :data:`DRIFT` bounds how far that can move any point of them.
     """
 
-    _entries: dict[str, tuple[WorldObject, NDArray[np.float64], ObstacleShapes]] = field(
+    # per object: it, the state its shapes were read in, the shapes, that state's base
+    # pose (a moved object's next move starts from it)
+    _entries: dict[str, tuple[WorldObject, NDArray[np.float64], ObstacleShapes, pin.SE3]] = field(
         default_factory=dict
     )
     builds: int = 0  # how many times shapes were read (for tests and figures)
@@ -168,12 +172,13 @@ class ObstacleCache:
         if entry is not None and entry[0] is obj and _near(entry[1], state):
             self._read[obj.name] = raw
             return entry[2]
+        base = _base(state)
         if entry is not None and entry[0] is obj and _rigidly_moved(entry[1], state):
-            shapes = entry[2].moved(_base(state) * _base(entry[1]).inverse())
+            shapes = entry[2].moved(base * entry[3].inverse())
         else:
             shapes = ObstacleShapes.of(world, obj)
             self.builds += 1
-        self._entries[obj.name] = (obj, state, shapes)
+        self._entries[obj.name] = (obj, state, shapes, base)
         self._read[obj.name] = raw
         return shapes
 
