@@ -54,14 +54,14 @@ class BulletScene:
         kept = world.derived(_kept_rules)
         key = (robot, self._joints, self.allowed_links)
         found = kept.get(key)
-        if found is None or found[0] is not handle:
+        if found is None or found[0] is not handle or found[3] is not handle.description:
             rules = AllowedContacts.of(handle.description, allowed_links)
             moving = (  # only these can touch anything new; no joints: the base
                 links_below(world, robot, self._joints)
                 if self._joints
                 else tuple(world.link_names(robot))
             )
-            found = kept[key] = (handle, rules, moving)
+            found = kept[key] = (handle, rules, moving, handle.description)
             if len(kept) > KEPT_RULES:
                 del kept[next(iter(kept))]  # the oldest
         self.rules = found[1]
@@ -269,11 +269,11 @@ def _named(world: World, obj: WorldObject, link: str) -> str:
 
 
 _JudgeKey = tuple[str, tuple[str, ...], frozenset[str]]  # robot, joints, allowed links
-_KeptRules = dict[_JudgeKey, tuple[WorldObject, AllowedContacts, tuple[str, ...]]]
+_KeptRules = dict[_JudgeKey, tuple[WorldObject, AllowedContacts, tuple[str, ...], object]]
 
 
 def _kept_rules(world: World) -> _KeptRules:
-    """Per (robot, joints, allowed links): the robot object they were made for, its rules
-    and its moving links, kept with the world (a judge is made per motion, and reading
-    them again cost a quarter of its making)."""
+    """Per (robot, joints, allowed links): the robot object they were made for, its rules,
+    its moving links and the description they were read from, kept with the world (a
+    judge is made per motion, and reading them again cost a quarter of its making)."""
     return {}
