@@ -33,6 +33,7 @@ from robocram.motion.joint_limits import joint_limits
 from robocram.motion.joint_path import PLANNING_BUDGET, JointPath, plan_joint_path
 from robocram.motion.joint_trajectory import JointTrajectory
 from robocram.motion.segment_check import CheckCounter, first_collision, segment_free
+from robocram.motion.self_path_check import SelfPathCheck
 from robocram.motion.time_parameterization import time_parameterize
 from robocram.motion.travel_bound import TravelBound
 from robocram.robots import LoadedDescription
@@ -131,17 +132,24 @@ def _checked_path(
     desc = world.robot(robot).description
     limits = joint_limits(desc, joints)
     box = ([lim.lower for lim in limits], [lim.upper for lim in limits])
+    own = SelfPathCheck.of(world, robot, joints)
+    _goal_apart(own, end, what)
     try:
-        return plan_joint_path(
+        straight = plan_joint_path(
             scene, start, end, bound, box, plan=False, what=what, explain=not settings.plan
         )  # planning explains a failure from its snapshot
+        blocked = own.first_collision(straight.waypoints)
+        if blocked is None:
+            return straight
+        if not settings.plan:
+            raise _self_blocked(what, "straight path", blocked)
     except ManipulationPathBlocked:
         if not settings.plan:
             raise
     height = ToolHeight.of(world, robot, joints)
     if height is not None:
         detour = detour_path(scene, start, end, bound, box, height)
-        if detour is not None:
+        if detour is not None and own.first_collision(detour.waypoints) is None:
             return detour
     links = set(world.link_names(robot))
     start_links = {link for link, _ in scene.judge.allowed_pairs if link in links}
@@ -157,6 +165,9 @@ def _checked_path(
                 what=what,
             )  # fmt: skip
             _confirm(scene, path, bound, what)
+            blocked = own.first_collision(path.waypoints)
+            if blocked is not None:
+                raise _self_blocked(what, "planned path", blocked)
             return path
         except ManipulationPathBlocked as failure:
             failures.append(failure)
@@ -178,6 +189,28 @@ def _confirm(scene: CoalClearance, path: JointPath, bound: TravelBound, what: st
             colliding_pairs=tuple(pairs),
             path_fraction=(k + where) / (len(points) - 1),
         )
+
+
+def _goal_apart(own: SelfPathCheck, goal: list[float], what: str) -> None:
+    """Fail before planning when the goal itself puts the robot's links into each other."""
+    pairs = own.colliding(goal)
+    if pairs:
+        raise ManipulationPathBlocked(
+            f"{what}'s goal configuration puts the robot into itself: {_named(pairs)}",
+            colliding_pairs=tuple(pairs),
+            path_fraction=1.0,
+        )
+
+
+def _self_blocked(
+    what: str, which: str, blocked: tuple[float, list[tuple[str, str]]]
+) -> ManipulationPathBlocked:
+    where, pairs = blocked
+    return ManipulationPathBlocked(
+        f"{what}'s {which} runs the robot into itself {where:.0%} along ({_named(pairs)})",
+        colliding_pairs=tuple(pairs),
+        path_fraction=where,
+    )
 
 
 def _named(pairs: list[tuple[str, str]]) -> str:
@@ -207,6 +240,11 @@ def plan_tool_line(
     line = cartesian_path(
         desc, arm, scene, current, tool, target_in_base, bound, random_seed=settings.seed
     )
+    fraction = line.fraction
+    own = SelfPathCheck.of(world, robot, joints)
+    blocked = own.first_collision(line.path.waypoints)
+    if blocked is not None:  # not followed: the caller moves in joint space instead
+        fraction = fraction * blocked[0] if blocked[0] < 1.0 else 0.0
     limits = joint_limits(desc, joints)
     trajectory = time_parameterize(robot, joints, line.path.waypoints, limits, kind="cartesian")
-    return ArmMotion(line.path, trajectory, line.fraction)
+    return ArmMotion(line.path, trajectory, fraction)

@@ -66,15 +66,17 @@ class TravelBound:
         joints: Sequence[str],
         max_link_travel: float = MAX_LINK_TRAVEL,
         max_joint_step: float = MAX_JOINT_STEP,
+        held: bool = True,
     ) -> TravelBound:
-        """The bound for ``joints`` of ``robot`` as it stands (held objects included)."""
+        """The bound for ``joints`` of ``robot`` as it stands (held objects included
+        unless ``held`` is False: the robot's own links alone)."""
         if max_link_travel <= 0.0 or max_joint_step <= 0.0:
             raise MotionError(
                 f"check resolution must be positive, got {max_link_travel} m and "
                 f"{max_joint_step} rad"
             )
         model = world.robot(robot).description.model
-        radius = link_radii(world, robot)
+        radius = link_radii(world, robot) if held else world.link_radii(robot)
         children = model.derived(_children)
         lever = []
         per_link: dict[str, FloatArray] = {}
@@ -91,7 +93,7 @@ class TravelBound:
                     row = per_link[link] = np.zeros(len(joints))
                 row[i] = value
             lever.append(max(reach.values(), default=0.0))
-        carriers = dict(world.attachments(robot))
+        carriers = dict(world.attachments(robot)) if held else {}
         return cls(
             tuple(joints), np.array(lever), max_link_travel, max_joint_step, per_link, carriers
         )

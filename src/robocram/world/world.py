@@ -344,6 +344,18 @@ class World(WorldCore):
         """The pairs of ``obj``'s own links among ``pairs`` nearer than ``distance`` [m]."""
         return link_contacts.self_contacts(self, self.object(obj), pairs, distance)
 
+    def self_distances(
+        self,
+        obj: ObjectRef,
+        pairs: Sequence[tuple[str, str]],
+        reach: float,
+        exact: Callable[[NDArray[np.float64]], Iterable[int]] | None = None,
+    ) -> NDArray[np.float64]:
+        """Per pair of ``obj``'s own links: a lower bound [m] on their distance, exact
+        (negative: penetration depth) where their bounds come within ``reach`` or for
+        the pairs ``exact`` picks from the bounds' gaps."""
+        return link_contacts.self_distances(self, self.object(obj), pairs, reach, exact)
+
     def contact_points(
         self,
         a: ObjectRef,

@@ -1,0 +1,184 @@
+"""Which pairs of a robot's own links a motion must keep apart, MoveIt's setup way.
+
+MoveIt's setup assistant samples the robot's configurations once and writes the pairs it
+need never check into the SRDF. Here the same is worked out on the projection world's own
+shapes (PyBullet's hulls, what every check and the audit measure), once per robot model:
+- **adjacent**: joined by one joint (fixed joints merged, links without shapes looked
+  through);
+- **always**: touching in every sampled configuration (:data:`SAMPLES`, seeded), as hulls
+  of neighbouring covers do: they can never be apart, so their contact says nothing;
+- **default**: touching where the robot rests (every arm and the neck parked, grippers
+  open or closed) and at most :data:`NEAR_JOINTS` movable joints apart, as MoveIt
+  disables pairs in collision at its default pose: convex hulls of a folded elbow's two
+  halves overlap where the meshes clear. A pair farther apart that touches at rest (a
+  parked hand inside the base) is still checked: that parking pose is wrong;
+- **allowed**: the description's ``allowed_contacts`` name the pair (an SRDF's disabled
+  pairs are drafted into them).
+
+Every other pair of links with shapes is checked, also within one arm (a forearm against
+its own fingers). Pairs never seen touching in the samples are still checked: a few
+hundred samples cannot prove a pair apart, and only a check can.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from robocram.motion.allowed_contacts import AllowedContacts, Other
+from robocram.motion.self_collision import adjacent_pairs
+from robocram.robots import RobotModel
+from robocram.world import World
+
+SAMPLES = 64  # configurations sampled to find pairs always in contact
+SEED = 0
+NEAR_JOINTS = 4  # movable joints between two links for a contact at rest to be skipped
+
+
+@dataclass(frozen=True)
+class SelfCollisionMatrix:
+    """The checked pairs of one robot's links, and why each other pair is skipped."""
+
+    checked: tuple[tuple[str, str], ...]
+    skipped: Mapping[frozenset[str], str]  # pair -> adjacent | always | default | allowed
+
+    @classmethod
+    def of(cls, world: World, robot: str) -> SelfCollisionMatrix:
+        """The matrix of ``robot`` (worked out on first use, kept with its model)."""
+        handle = world.robot(robot)
+        holder = handle.description.model.derived(_Kept)
+        if holder.matrix is None or holder.description is not handle.description:
+            holder.matrix = _work_out(world, robot)
+            holder.description = handle.description
+        return holder.matrix
+
+    def reason(self, a: str, b: str) -> str | None:
+        """Why the pair ``a``, ``b`` is not checked (None: it is)."""
+        return self.skipped.get(frozenset((a, b)))
+
+
+@dataclass
+class _Kept:
+    """The matrix, kept with the model it was worked out for."""
+
+    model: RobotModel
+    matrix: SelfCollisionMatrix | None = None
+    description: object = field(default=None, repr=False)
+
+
+def _work_out(world: World, robot: str) -> SelfCollisionMatrix:
+    handle = world.robot(robot)
+    desc = handle.description
+    names = handle.collider_names()
+    links = sorted(set(names.values()))
+    skipped: dict[frozenset[str], str] = {}
+    for pair in adjacent_pairs(desc.model, links):
+        skipped[pair] = "adjacent"
+    rules = AllowedContacts.of(desc)
+    for a, b in itertools.combinations(links, 2):
+        pair = frozenset((a, b))
+        if pair not in skipped and (
+            rules.allows(a, Other(b, "robot")) or rules.allows(b, Other(a, "robot"))
+        ):
+            skipped[pair] = "allowed"
+    candidates = [(a, b) for a, b in itertools.combinations(links, 2) if frozenset((a, b)) not in skipped]
+    for pair in _always_touching(world, robot, candidates):
+        skipped[frozenset(pair)] = "always"
+    left = [p for p in candidates if frozenset(p) not in skipped]
+    for pair in _touching_at_rest(world, robot, left):
+        if _joints_between(desc.model, *pair) <= NEAR_JOINTS:
+            skipped[frozenset(pair)] = "default"
+    checked = tuple(p for p in candidates if frozenset(p) not in skipped)
+    return SelfCollisionMatrix(checked, skipped)
+
+
+def _always_touching(
+    world: World, robot: str, candidates: list[tuple[str, str]]
+) -> list[tuple[str, str]]:
+    """The pairs among ``candidates`` touching in every sampled configuration: a pair
+    apart in one sample is dropped, so later samples ask only the survivors."""
+    model = world.robot(robot).description.model
+    movable = [
+        j for j in world.joint_states(robot)
+        if model.joints[j].mimic is None
+    ]  # fmt: skip
+    before = {j: v for j, v in world.joint_states(robot).items() if j in movable}
+    rng = np.random.default_rng(SEED)
+    survivors = list(candidates)
+    try:
+        for _ in range(SAMPLES):
+            if not survivors:
+                break
+            world.set_joint_states(robot, _sample(model, movable, rng), carry=False)
+            touching = world.self_distances(robot, survivors, 0.0)
+            survivors = [p for k, p in enumerate(survivors) if touching[k] <= 0.0]
+    finally:
+        world.set_joint_states(robot, before, carry=False)
+    return survivors
+
+
+def _touching_at_rest(
+    world: World, robot: str, candidates: list[tuple[str, str]]
+) -> list[tuple[str, str]]:
+    """The pairs among ``candidates`` touching with every arm and the neck parked, the
+    grippers closed or open, the other joints at zero (within their limits)."""
+    desc = world.robot(robot).description
+    model = desc.model
+    movable = [j for j in world.joint_states(robot) if model.joints[j].mimic is None]
+    before = {j: v for j, v in world.joint_states(robot).items() if j in movable}
+    rest = {j: _clamped(model, j, 0.0) for j in movable}
+    for arm in desc.arms.values():
+        rest.update({j: v for j, v in arm.parking.items() if j in rest})
+    rest.update({j: v for j, v in desc.neck_parking.items() if j in rest})
+    grippers = [j for arm in desc.arms.values() for j in arm.gripper_joints if j in rest]
+    found: set[tuple[str, str]] = set()
+    try:
+        for end in ("lower", "upper"):
+            values = dict(rest)
+            for j in grippers:
+                values[j] = _clamped(model, j, getattr(model.joints[j], end) or 0.0)
+            world.set_joint_states(robot, values, carry=False)
+            touching = world.self_distances(robot, candidates, 0.0)
+            found.update(p for p, d in zip(candidates, touching.tolist(), strict=True) if d <= 0.0)
+    finally:
+        world.set_joint_states(robot, before, carry=False)
+    return [p for p in candidates if p in found]
+
+
+def _clamped(model: RobotModel, joint: str, value: float) -> float:
+    spec = model.joints[joint]
+    lower = -math.inf if spec.lower is None else spec.lower
+    upper = math.inf if spec.upper is None else spec.upper
+    return min(max(value, lower), upper)
+
+
+def _joints_between(model: RobotModel, a: str, b: str) -> int:
+    """How many movable joints the kinematic path from link ``a`` to link ``b`` crosses."""
+    up_a, up_b = _joints_up(model, a), _joints_up(model, b)
+    shared = set(up_a) & set(up_b)
+    return sum(1 for j in up_a if j not in shared) + sum(1 for j in up_b if j not in shared)
+
+
+def _joints_up(model: RobotModel, link: str) -> list[str]:
+    """The movable joints from ``link`` up to the root, in order."""
+    found = []
+    joint = model.parent_joint(link)
+    while joint is not None:
+        if joint.movable:
+            found.append(joint.name)
+        joint = model.parent_joint(joint.parent)
+    return found
+
+
+def _sample(model: RobotModel, joints: list[str], rng: np.random.Generator) -> dict[str, float]:
+    values = {}
+    for name in joints:
+        joint = model.joints[name]
+        lower = -math.pi if joint.lower is None else max(joint.lower, -math.pi * 2)
+        upper = math.pi if joint.upper is None else min(joint.upper, math.pi * 2)
+        values[name] = float(rng.uniform(lower, upper)) if upper > lower else lower
+    return values

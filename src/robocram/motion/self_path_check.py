@@ -1,0 +1,209 @@
+"""Keeping a robot's links apart from each other along a whole joint path.
+
+The world checks (:mod:`segment_check`) look at what the moving links may hit around the
+robot; this looks at the robot itself, for every pair its
+:class:`~robocram.motion.self_collision_matrix.SelfCollisionMatrix` checks that the
+planned joints move relative to each other (a forearm and its own fingers, a hand and the
+torso, a parked arm and the head on a rising lift).
+
+It walks the path by conservative advancement on PyBullet's distances between the two
+links of each pair: from a checked configuration, it moves on until some pair could have
+closed its gap, measured by how far the joints between the two links (not those above
+both) can move a point of either (:class:`~robocram.motion.travel_bound.TravelBound`'s
+rigid levers). Near contact it steps :data:`MIN_STEP` at least.
+
+A pair touching where the motion starts (a hand folded on the torso's hull) may stay in
+contact only while it does not deepen (by more than :data:`DEEPEN`); every other pair
+counts from the first touch. So a motion never creates or deepens a self-collision.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from robocram.motion.configuration_checker import LinkPair
+from robocram.motion.joint_trajectory import FloatArray
+from robocram.motion.self_collision import active_joints
+from robocram.motion.self_collision_matrix import SelfCollisionMatrix
+from robocram.motion.travel_bound import TravelBound
+from robocram.world import World
+
+REACH = 1.0  # [m] closest points are asked this far (a farther pair is clear by it)
+MIN_STEP = 0.002  # [m] of a pair's relative travel between two checks near contact
+DEEPEN = 0.0005  # [m] a contact a motion starts with may deepen by this (numerics)
+KEPT = 32  # robots and joint sets whose pairs a world keeps
+
+
+@dataclass(frozen=True)
+class SelfPathCheck:
+    """The self pairs one motion of ``joints`` must keep apart, with their levers."""
+
+    world: World
+    robot: str
+    joints: tuple[str, ...]
+    pairs: tuple[LinkPair, ...]
+    levers: FloatArray  # (pairs, joints) [m per unit]: relative travel per joint change
+    floors: FloatArray  # per pair [m]: nearer than this is a collision
+
+    @classmethod
+    def of(cls, world: World, robot: str, joints: Sequence[str]) -> SelfPathCheck:
+        """The check of a motion of ``joints`` from where the robot is now."""
+        joints = tuple(joints)
+        pairs, levers = world.derived(_kept_pairs).of(world, robot, joints)
+        floors = np.minimum(world.self_distances(robot, pairs, 0.0), 0.0) - DEEPEN
+        return cls(world, robot, joints, pairs, levers, floors)
+
+    def colliding(self, q: Sequence[float]) -> list[LinkPair]:
+        """The pairs colliding at ``q``."""
+        with _posed(self.world, self.robot):
+            gaps = self._gaps(np.asarray(q, dtype=float), np.zeros(len(self.pairs)))
+        return [self.pairs[k] for k in np.flatnonzero(gaps < 0.0).tolist()]
+
+    def first_collision(
+        self, waypoints: Sequence[Sequence[float]]
+    ) -> tuple[float, list[LinkPair]] | None:
+        """Where along the path through ``waypoints`` (a fraction of its segments) the
+        first self-collision is found, and its pairs; None when the path keeps apart."""
+        points = np.asarray(waypoints, dtype=float)
+        if not self.pairs or len(points) < 2:
+            return None
+        travel = np.abs(np.diff(points, axis=0)) @ self.levers.T  # (segments, pairs)
+        segment, s = 0, 0.0
+        with _posed(self.world, self.robot):
+            while True:
+                q = points[segment] + (points[segment + 1] - points[segment]) * s
+                gaps = self._gaps(q, travel[segment])
+                hit = np.flatnonzero(gaps < 0.0)
+                if hit.size:
+                    fraction = (segment + s) / (len(points) - 1)
+                    return fraction, [self.pairs[k] for k in hit.tolist()]
+                if segment == len(points) - 2 and s >= 1.0:
+                    return None
+                segment, s = _advance(travel, segment, s, np.maximum(gaps, MIN_STEP))
+
+    def _gaps(self, q: FloatArray, rate: FloatArray) -> FloatArray:
+        """Per pair, at ``q``: a lower bound on how far it is from counting as a collision
+        (< 0: it does). Pairs whose bounds could touch are measured exactly; the others
+        in the order their bounds would limit a step at ``rate`` (travel per unit of the
+        segment), until no bound left can limit it more than a measured gap does."""
+        self.world.set_joint_states(
+            self.robot, dict(zip(self.joints, q.tolist(), strict=True)), carry=False
+        )
+        floors = self.floors
+
+        def pick(gaps: FloatArray) -> Iterator[int]:
+            lower = gaps - floors
+            touching = np.flatnonzero(lower < 0.0).tolist()
+            yield from touching
+            with np.errstate(divide="ignore"):
+                ratio = np.where(rate > 0.0, np.maximum(lower, MIN_STEP) / rate, np.inf)
+            best = min(
+                (max(gaps[k] - floors[k], MIN_STEP) / rate[k] for k in touching if rate[k] > 0),
+                default=np.inf,
+            )
+            for k in np.argsort(ratio, kind="stable").tolist():
+                if ratio[k] >= best:
+                    return
+                if lower[k] < 0.0:
+                    continue
+                yield k
+                best = min(best, max(gaps[k] - floors[k], MIN_STEP) / rate[k])
+
+        distance = self.world.self_distances(self.robot, self.pairs, REACH, pick)
+        result: FloatArray = distance - floors
+        return result
+
+
+def _advance(travel: FloatArray, segment: int, s: float, budget: FloatArray) -> tuple[int, float]:
+    """The furthest ``(segment, s)`` from here no pair can travel its ``budget`` by."""
+    left = budget.copy()
+    last = len(travel) - 1
+    while True:
+        rest = travel[segment] * (1.0 - s)
+        if (rest <= left).all():
+            if segment == last:
+                return segment, 1.0
+            left -= rest
+            segment, s = segment + 1, 0.0
+            continue
+        moving = travel[segment] > 0.0
+        share = np.min(left[moving] / travel[segment][moving])
+        return segment, min(s + float(share), 1.0)
+
+
+@dataclass
+class _KeptPairs:
+    """Per robot and planned joints: the pairs they move apart and their levers, kept
+    with the world (every arm motion asks; they change only with the description)."""
+
+    found: dict[tuple[str, tuple[str, ...]], tuple[object, tuple[LinkPair, ...], FloatArray]]
+
+    def of(
+        self, world: World, robot: str, joints: tuple[str, ...]
+    ) -> tuple[tuple[LinkPair, ...], FloatArray]:
+        desc = world.robot(robot).description
+        key = (robot, joints)
+        kept = self.found.get(key)
+        if kept is None or kept[0] is not desc:
+            kept = self.found[key] = (desc, *_moved_pairs(world, robot, joints))
+            if len(self.found) > KEPT:
+                del self.found[next(iter(self.found))]
+        return kept[1], kept[2]
+
+
+def _kept_pairs(world: World) -> _KeptPairs:
+    return _KeptPairs({})
+
+
+def _moved_pairs(
+    world: World, robot: str, joints: tuple[str, ...]
+) -> tuple[tuple[LinkPair, ...], FloatArray]:
+    """The matrix's checked pairs that ``joints`` move relative to each other, and per
+    pair and joint the most a point of either link moves relative to the other per unit
+    change of the joint (joints above both move neither relative to the other)."""
+    model = world.robot(robot).description.model
+    matrix = SelfCollisionMatrix.of(world, robot)
+    active = sorted(active_joints(model, joints))
+    bound = TravelBound.of(world, robot, active, held=False)
+    column = {j: i for i, j in enumerate(active)}
+    fold = np.zeros((len(active), len(joints)))  # follower columns onto their masters
+    for i, name in enumerate(joints):
+        fold[column[name], i] = 1.0
+    for name in active:
+        mimic = model.joints[name].mimic
+        if mimic is not None and mimic.joint in joints:
+            fold[column[name], joints.index(mimic.joint)] = abs(mimic.multiplier)
+    if not matrix.checked:
+        return (), np.zeros((0, len(joints)))
+    names = sorted({link for pair in matrix.checked for link in pair})
+    row = {link: k for k, link in enumerate(names)}
+    table = np.zeros((len(names), len(active)))
+    for link, lever in bound.link_lever.items():
+        if link in row:
+            table[row[link]] = lever
+    first = table[[row[a] for a, _ in matrix.checked]]
+    second = table[[row[b] for _, b in matrix.checked]]
+    relative = np.where((first > 0.0) & (second > 0.0), 0.0, first + second) @ fold
+    moved = np.flatnonzero(relative.any(axis=1))
+    pairs = tuple(matrix.checked[k] for k in moved.tolist())
+    return pairs, relative[moved]
+
+
+class _posed:
+    """Puts the robot's joints back when the block ends (checks move it)."""
+
+    def __init__(self, world: World, robot: str) -> None:
+        self.world, self.robot = world, robot
+
+    def __enter__(self) -> None:
+        model = self.world.robot(self.robot).description.model
+        self.before = {
+            j: v for j, v in self.world.joint_states(self.robot).items()
+            if model.joints[j].mimic is None
+        }  # fmt: skip
+
+    def __exit__(self, *_: object) -> None:
+        self.world.set_joint_states(self.robot, self.before, carry=False)
