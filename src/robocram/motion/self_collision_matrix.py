@@ -12,6 +12,10 @@ shapes (PyBullet's hulls, what every check and the audit measure), once per robo
   disables pairs in collision at its default pose: convex hulls of a folded elbow's two
   halves overlap where the meshes clear. A pair farther apart that touches at rest (a
   parked hand inside the base) is still checked: that parking pose is wrong;
+- **chained**: one hangs below the other across two movable joints (an HSR's arm roll
+  link and its wrist roll link, a wrist flex between): the joint limits between keep
+  the real links apart, while their convex hulls, which bridge the joint, overlap when
+  it flexes. Three joints apart (a PR2's forearm and its own fingers) is checked;
 - **allowed**: the description's ``allowed_contacts`` name the pair (an SRDF's disabled
   pairs are drafted into them).
 
@@ -44,7 +48,7 @@ class SelfCollisionMatrix:
     """The checked pairs of one robot's links, and why each other pair is skipped."""
 
     checked: tuple[tuple[str, str], ...]
-    skipped: Mapping[frozenset[str], str]  # pair -> adjacent | always | default | allowed
+    skipped: Mapping[frozenset[str], str]  # adjacent | always | default | chained | allowed
 
     @classmethod
     def of(cls, world: World, robot: str) -> SelfCollisionMatrix:
@@ -78,6 +82,10 @@ def _work_out(world: World, robot: str) -> SelfCollisionMatrix:
     skipped: dict[frozenset[str], str] = {}
     for pair in adjacent_pairs(desc.model, links):
         skipped[pair] = "adjacent"
+    for a, b in itertools.combinations(links, 2):
+        pair = frozenset((a, b))
+        if pair not in skipped and _chained(desc.model, a, b):
+            skipped[pair] = "chained"
     rules = AllowedContacts.of(desc)
     for a, b in itertools.combinations(links, 2):
         pair = frozenset((a, b))
@@ -161,6 +169,13 @@ def _joints_between(model: RobotModel, a: str, b: str) -> int:
     up_a, up_b = _joints_up(model, a), _joints_up(model, b)
     shared = set(up_a) & set(up_b)
     return sum(1 for j in up_a if j not in shared) + sum(1 for j in up_b if j not in shared)
+
+
+def _chained(model: RobotModel, a: str, b: str) -> bool:
+    """Whether one of ``a``, ``b`` hangs below the other across two movable joints."""
+    up_a, up_b = _joints_up(model, a), _joints_up(model, b)
+    lower, upper = (up_a, up_b) if len(up_a) > len(up_b) else (up_b, up_a)
+    return lower[len(lower) - len(upper) :] == upper and len(lower) - len(upper) == 2
 
 
 def _joints_up(model: RobotModel, link: str) -> list[str]:
