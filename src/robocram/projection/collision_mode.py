@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 
 from robocram.kinematics import split_base_motion
 from robocram.motion.collision_modes import COLLISION_MODES, hand_links
+from robocram.motion.self_collision_matrix import SelfCollisionMatrix
 from robocram.projection.errors import ProjectionError
 from robocram.projection.ik_start import IKStart
 from robocram.projection.navigation import base_moved_by
@@ -96,38 +97,34 @@ def allowed_links(robot: ProjectedRobot, arm: str, mode: str) -> set[str]:
 
 
 def arm_pairs(robot: ProjectedRobot, arm: str) -> list[tuple[str, str]]:
-    """Pairs of ``arm``'s links and the robot's other links that may collide: both with a
-    collision shape (of 1,239 pairs of a PR2 arm, 216) and not joined by one joint (the
-    shoulder sits on the torso). A check counts those apart where the robot starts."""
-    world = robot.world
-    body = world.object(robot.name)
-    shaped = body.colliders
-    links = tuple(n for n in world.link_names(body) if body.link_index[n] in shaped)
+    """The pairs of the robot's self-collision matrix with a link of ``arm``: against the
+    robot's other links and within the arm itself (a forearm against its own fingers),
+    as every motion checks them. A check counts those apart where the robot starts."""
+    matrix = SelfCollisionMatrix.of(robot.world, robot.name)
     first = robot.arm(arm).joints[0]
-    return robot.description.model.derived(_ArmPairs).of(first, links)
+    return robot.description.model.derived(_ArmPairs).of(first, matrix.checked)
 
 
 @dataclass
 class _ArmPairs:
-    """Per arm: its links paired with the robot's others, shoulder joint excepted. They
-    follow from the model alone, so they are kept with it (``RobotModel.derived``): IK
-    asks for them at every query."""
+    """Per arm: the matrix's pairs with a link of it. They follow from the model alone,
+    so they are kept with it (``RobotModel.derived``): IK asks for them at every query."""
 
     model: RobotModel
-    _found: dict[tuple[str, tuple[str, ...]], list[tuple[str, str]]] = field(default_factory=dict)
+    _found: dict[tuple[str, tuple[tuple[str, str], ...]], list[tuple[str, str]]] = field(
+        default_factory=dict
+    )
 
-    def of(self, first: str, links: tuple[str, ...]) -> list[tuple[str, str]]:
-        """The pairs for the arm whose first joint is ``first``, among ``links``."""
-        key = (first, links)
+    def of(self, first: str, pairs: tuple[tuple[str, str], ...]) -> list[tuple[str, str]]:
+        """The pairs among ``pairs`` with a link of the arm whose first joint is ``first``
+        (the arm's link first)."""
+        key = (first, pairs)
         found = self._found.get(key)
         if found is None:
-            joint = self.model.joints[first]
-            below = _subtree(self.model, joint.child)
-            others = [link for link in links if link not in below]
-            mine = [link for link in links if link in below]
+            below = _subtree(self.model, self.model.joints[first].child)
             found = self._found.setdefault(key, [
-                (a, b) for a in mine for b in others
-                if b != joint.parent and a != joint.child
+                (a, b) if a in below else (b, a) for a, b in pairs
+                if a in below or b in below
             ])  # fmt: skip
         return found
 

@@ -20,6 +20,11 @@ from robocram.robots.mimic import mimic_followers
 from robocram.robots.robot_model import RobotModel
 
 
+CLEARANCE = 0.01  # [m] links nearer than this on their meshes meet: a pose checked here is
+# checked again on PyBullet's convex hulls, which reach past the meshes (a Fetch's parked
+# finger 2.8 mm from its shoulder on the hulls), and a motion must reach it without touching
+
+
 class SelfContacts:
     """The robot's collision meshes and the pairs that count (see the module docstring)."""
 
@@ -37,11 +42,16 @@ class SelfContacts:
             if a != b and frozenset((a, b)) not in adjacent:
                 self.geometry.addCollisionPair(pin.CollisionPair(i, j))
         self.data = self.kinematics.createData()
-        self.geometry_data = pin.GeometryData(self.geometry)
-        at_zero = self._meeting(self._q({}))
+        self._fresh_data()
+        at_zero = self._meeting(self._q({}))  # within the clearance: they are built so
         for index in sorted(at_zero, reverse=True):
             self.geometry.removeCollisionPair(self.geometry.collisionPairs[index])
+        self._fresh_data()
+
+    def _fresh_data(self) -> None:
         self.geometry_data = pin.GeometryData(self.geometry)
+        for request in self.geometry_data.collisionRequests:
+            request.security_margin = CLEARANCE
 
     def _adjacent(self) -> set[frozenset[str]]:
         """Pairs of links joined by one joint, fixed joints merged."""

@@ -218,11 +218,13 @@ def self_contacts(
     low, high = table[:, 0] - distance, table[:, 1] + distance
     below = (low[:, None, :] <= high[None, :, :]).all(axis=2)  # [i, j]: i's low under j's
     found = []
+    ask = max(distance, SELF_QUERY)
     for k in np.flatnonzero((below & below.T).ravel()[rows.cells]).tolist():
-        if pybullet.getClosestPoints(
-            obj.body_id, obj.body_id, distance, linkIndexA=int(rows.firsts[k]),
+        points = pybullet.getClosestPoints(
+            obj.body_id, obj.body_id, ask, linkIndexA=int(rows.firsts[k]),
             linkIndexB=int(rows.seconds[k]), physicsClientId=cid,
-        ):  # fmt: skip
+        )  # fmt: skip
+        if points and min(float(p[8]) for p in points) <= distance:
             found.append(key[k])
     return found
 

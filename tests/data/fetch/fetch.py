@@ -38,16 +38,16 @@ def description() -> RobotDescription:
                 # why: the finger joints (prismatic, or leaves) right below the wrist; fingers and
                 #   hand links are found at load
                 gripper_joints=("r_gripper_finger_joint", "l_gripper_finger_joint"),
-                # why: stowed: within limits, the arm within 0.37 m of the base's middle (the
-                #   sampled pose: touching), no link touching another (meshes)
+                # why: stowed: within limits, the arm within 0.40 m of the base's middle (the
+                #   sampled pose: touching), 1 cm clear of its other links (meshes)
                 parking={
-                    "shoulder_pan_joint": -0.245,
-                    "shoulder_lift_joint": 1.298,
-                    "upperarm_roll_joint": 1.508,
-                    "elbow_flex_joint": -2.251,
+                    "shoulder_pan_joint": 0.105,
+                    "shoulder_lift_joint": 1.198,
+                    "upperarm_roll_joint": 1.458,
+                    "elbow_flex_joint": -2.155,
                     "forearm_roll_joint": -2.039,
-                    "wrist_flex_joint": 1.529,
-                    "wrist_roll_joint": 0.562,
+                    "wrist_flex_joint": 1.604,
+                    "wrist_roll_joint": 0.162,
                 },
             ),
         },

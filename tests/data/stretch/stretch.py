@@ -52,14 +52,14 @@ def description() -> RobotDescription:
                 # why: the finger joints (prismatic, or leaves) right below the wrist; fingers and
                 #   hand links are found at load
                 gripper_joints=("joint_gripper_finger_right", "joint_gripper_finger_left"),
-                # why: stowed: within limits, the telescope retracted, the arm within 0.20 m of the
-                #   base's middle (the sampled pose: touching), no link touching another (meshes)
+                # why: stowed: within limits, the telescope retracted, the arm within 0.25 m of the
+                #   base's middle (the sampled pose: touching), 1 cm clear of its other links (meshes)
                 parking={
-                    "joint_lift": 0.218,
+                    "joint_lift": 0.248,
                     "joint_arm_l3": 0.0,
-                    "joint_wrist_yaw": 3.4,
-                    "joint_wrist_pitch": -0.438,
-                    "joint_wrist_roll": -1.346,
+                    "joint_wrist_yaw": 1.985,
+                    "joint_wrist_pitch": -0.774,
+                    "joint_wrist_roll": 0.811,
                 },
             ),
         },

@@ -85,6 +85,11 @@ class _Search:
             for n in tree.rigid_group(model.root_link)
         ]
         self.middle = np.mean(np.asarray(base)[:, :2], axis=0)
+        below = set(tree.subtree_links(wrist))
+        self.hand_states = _hand_states(model, [
+            j.name for j in model.joints.values()
+            if j.movable and j.mimic is None and j.child in below
+        ])  # fmt: skip
         shoulder = (self.chain.base * self.chain.chain[0].origin).position
         self.shoulder = float(shoulder[2])
         across = shoulder[1] - self.middle[1]  # an arm on one side stays on it
@@ -108,7 +113,9 @@ class _Search:
         return float(spread.max() + 0.1 * spread.mean() + 2.0 * low + high + crossed)
 
     def touches(self, values: Sequence[float]) -> bool:
-        return self.contacts.touches(dict(zip(self.joints, values, strict=True)))
+        """Whether the arm at ``values`` touches itself with the hand closed or open."""
+        arm = dict(zip(self.joints, values, strict=True))
+        return any(self.contacts.touches({**arm, **hand}) for hand in self.hand_states)
 
     def sample(self, rng: random.Random) -> list[float]:
         return [
@@ -135,6 +142,17 @@ class _Search:
     def judged(self, values: Sequence[float]) -> Stowed:
         named = dict(zip(self.joints, values, strict=True))
         return Stowed(named, self.extent(values), self.touches(values))
+
+
+def _hand_states(model: RobotModel, joints: Sequence[str]) -> list[dict[str, float]]:
+    """The hand's joints (fingers) at zero, at their lower and at their upper limits: a
+    parked arm's gripper opens and closes where it is."""
+    states: list[dict[str, float]] = [{}]
+    for end in (0, 1):
+        state = {j: joint_range(model, j)[end] for j in joints}
+        if state:
+            states.append(state)
+    return states
 
 
 def stowed_pose(
@@ -197,7 +215,7 @@ def drafted_parking(model: RobotModel, joints: Sequence[str], wrist: str) -> Dra
         was = "touching" if sampled.touches else f"{sampled.extent:.2f} m out"
         why = (
             f"stowed: within limits{retracted}, the arm within {stowed.extent:.2f} m of the "
-            f"base's middle (the sampled pose: {was}), no link touching another (meshes)"
+            f"base's middle (the sampled pose: {was}), 1 cm clear of its other links (meshes)"
         )
         return DraftedParking(stowed.values, why, None)
     why = "sampled in limits (seed 0): wrist low beside the shoulder, out of view"
