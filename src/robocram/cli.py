@@ -59,8 +59,8 @@ def _parser() -> argparse.ArgumentParser:
         prog="robocram",
         description="CRAM in Python: run plans in projection, keep and inspect their traces.",
         epilog="exit codes: 0 done, 1 plan failed / batch variants failed / robot check found "
-        "problems / run audit found something, 2 usage error, 3 bad input (database, run id, URDF, port, missing package, "
-        "batch spec)",
+        "problems / a run's audit found something, 2 usage error, 3 bad input (database, run "
+        "id, URDF, port, missing package, batch spec)",
     )
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     demo = commands.add_parser("demo", help="a robot picks up a mug in projection")

@@ -38,11 +38,12 @@ class Part:
 
     body: str
     link: str
+    only: bool = False  # the body's only link with collision shapes
 
     @property
     def label(self) -> str:
-        """``body:link``, or the body's name alone for a single-shape body."""
-        return self.body if self.link == self.body else f"{self.body}:{self.link}"
+        """``body:link``, or the body's name alone when it has one link with shapes."""
+        return self.body if self.only else f"{self.body}:{self.link}"
 
 
 @dataclass(frozen=True)
@@ -80,7 +81,7 @@ class PenetrationProbe:
         self._moving = np.flatnonzero(labels != "") if groups is not None else None
         floors = {o.name for o in world.objects(type="floor")}
         others = [o.name for o in world.objects() if o.name != robot and o.name not in held]
-        self.others = [Part(o, link) for o in others for link in self.raw.collision_links(o)]
+        self.others = [part for o in others for part in _parts_of(self.raw, o)]
         self._other_boxes = self._boxes(self.others)
         self._hand_of = _hands(description, held)
         self._world_mask = np.array(
@@ -195,7 +196,12 @@ def robot_side_parts(world: World, robot: str, held: Iterable[str]) -> list[Part
     """The robot's links with collision shapes, then those of each held object."""
     raw = RawDistances(world)
     parts = [Part(robot, link) for link in raw.collision_links(robot)]
-    return parts + [Part(obj, link) for obj in held for link in raw.collision_links(obj)]
+    return parts + [part for obj in held for part in _parts_of(raw, obj)]
+
+
+def _parts_of(raw: RawDistances, body: str) -> list[Part]:
+    links = raw.collision_links(body)
+    return [Part(body, link, only=len(links) == 1) for link in links]
 
 
 def _side(part: Part, robot: str) -> str:
