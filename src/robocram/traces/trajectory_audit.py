@@ -33,7 +33,7 @@ from robocram.traces.database import TraceDatabase
 from robocram.traces.dense_samples import Levers, dense_configurations
 from robocram.traces.errors import TraceError
 from robocram.traces.limit_audit import limit_findings
-from robocram.traces.penetration_audit import Part, PenetrationProbe, robot_side_parts
+from robocram.traces.penetration_audit import PenetrationProbe, robot_side_parts
 from robocram.traces.queries import require_run, run_ids, world_state_times
 from robocram.traces.relative_motion import moving_groups
 from robocram.traces.replay_clock import ReplayClock
@@ -107,7 +107,7 @@ class _RunAudit:
 
     def __post_init__(self) -> None:
         self.findings: list[AuditFinding] = []
-        self.first = True  # the run's first configuration: every pair is judged
+        self.judged: set[str] = set()  # robots whose every pair was judged once
         self.configurations = 0
         self.watches = {
             r.name: TeleportWatch(r.name, r.description.model, self.bounds.teleport)
@@ -123,7 +123,7 @@ class _RunAudit:
         for robot, watch in self.watches.items():
             jumps = list(watch.state(state.joints.get(robot, {}), state.poses[robot], place))
             self.findings += jumps
-            if jumps or self.first:
+            if jumps or robot not in self.judged:
                 self._sweep_configurations(robot, watch.jumped, place, [(0.0, None)])
 
     def trajectory(self, trajectory: StoredTrajectory) -> None:
@@ -162,7 +162,7 @@ class _RunAudit:
     def _sweep_configurations(
         self,
         robot: str,
-        moved: Collection[str] | None,
+        moved: Collection[str],
         place: FindingPlace,
         samples: Iterable[tuple[float, dict[str, float] | None]],
         allowances: tuple[ContactAllowance, ...] = (),
@@ -170,16 +170,17 @@ class _RunAudit:
         """Put the robot in each sample (None: as it is) and keep what penetrates.
 
         ``moved``: the joints moving; pairs of the robot's parts that they do not move
-        relative to each other are not judged again (None: judge every pair, as at the
-        run's first configuration).
+        relative to each other are not judged again; at the robot's first configuration in
+        the run every pair is judged).
         """
         description = self.world.robot(robot).description
         held = self._held(robot)
         groups = None
-        if moved is not None and not self.first:
+        if robot in self.judged:
             by_link = moving_groups(description.model, moved)
-            groups = [by_link.get(held.get(p.body, p.link), "") for p in self._parts(robot, held)]
-        self.first = False
+            parts = robot_side_parts(self.world, robot, held)
+            groups = [by_link.get(held.get(p.body, p.link), "") for p in parts]
+        self.judged.add(robot)
         probe = PenetrationProbe(
             self.world, robot, description, held, allowances, self.bounds, groups
         )
@@ -189,6 +190,3 @@ class _RunAudit:
             self.configurations += 1
             for p in probe.check(first=k == 0):
                 self.findings.append(place.finding(p.kind, t, p.what, p.depth, p.bound))
-
-    def _parts(self, robot: str, held: dict[str, str]) -> list[Part]:
-        return robot_side_parts(self.world, robot, held)
