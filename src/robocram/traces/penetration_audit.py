@@ -17,7 +17,7 @@ A contact allowed but deeper than its bound is its own kind of finding.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Collection, Iterable, Iterator, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -27,6 +27,7 @@ from robocram.motion import ContactAllowance
 from robocram.robots import LoadedDescription
 from robocram.traces.audit_bounds import AuditBounds
 from robocram.traces.audit_findings import FindingKind
+from robocram.traces.link_adjacency import LinkPair
 from robocram.world import RawDistances, World
 
 FloatArray = NDArray[np.float64]
@@ -67,9 +68,11 @@ class PenetrationProbe:
         held: dict[str, str],  # held object -> the robot link it is attached to
         allowances: Sequence[ContactAllowance],
         bounds: AuditBounds,
+        skipped: Collection[LinkPair],
         groups: Sequence[str] | None = None,
     ) -> None:
-        """``groups``: per part of :func:`robot_side_parts`, its moving group
+        """``skipped``: pairs of the robot's links not judged (adjacent, always touching);
+        ``groups``: per part of :func:`robot_side_parts`, its moving group
         (:func:`~robocram.traces.relative_motion.moving_groups`; ``""`` does not move);
         None: every part moves and every pair is judged."""
         self.raw = RawDistances(world)
@@ -88,13 +91,12 @@ class PenetrationProbe:
             [[not (p.body == robot and o.body in floors) for o in self.others] for p in self.parts],
             dtype=bool,
         ).reshape(len(self.parts), len(self.others))
-        pairs = self._judged_pairs(description)
+        pairs = self._judged_pairs(skipped)
         self._self_pairs = pairs[labels[pairs[:, 0]] != labels[pairs[:, 1]]]
         self._boxes_now = self._boxes(self.parts)
 
-    def _judged_pairs(self, description: LoadedDescription) -> NDArray[np.intp]:
+    def _judged_pairs(self, skipped: Collection[LinkPair]) -> NDArray[np.intp]:
         """Pairs of parts (robot links, held objects) judged against each other."""
-        skipped = self.bounds.skipped_self_pairs(description.model)
         pairs = []
         for i, a in enumerate(self.parts):
             for j in range(i + 1, len(self.parts)):

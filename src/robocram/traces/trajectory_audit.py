@@ -108,6 +108,10 @@ class _RunAudit:
     def __post_init__(self) -> None:
         self.findings: list[AuditFinding] = []
         self.judged: set[str] = set()  # robots whose every pair was judged once
+        self.skipped = {  # per robot: the pairs of its own links not judged
+            r.name: frozenset(self.bounds.skipped_self_pairs(r.description.model))
+            for r in self.world.robots()
+        }
         self.configurations = 0
         self.watches = {
             r.name: TeleportWatch(r.name, r.description.model, self.bounds.teleport)
@@ -182,8 +186,9 @@ class _RunAudit:
             groups = [by_link.get(held.get(p.body, p.link), "") for p in parts]
         self.judged.add(robot)
         probe = PenetrationProbe(
-            self.world, robot, description, held, allowances, self.bounds, groups
-        )
+            self.world, robot, description, held, allowances, self.bounds, self.skipped[robot],
+            groups,
+        )  # fmt: skip
         for k, (t, positions) in enumerate(samples):
             if positions is not None:
                 set_robot_joints(self.world, robot, positions)
