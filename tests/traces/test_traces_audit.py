@@ -232,6 +232,40 @@ def test_a_torso_set_without_a_trajectory_is_a_jump(planted_report: AuditReport)
     assert len(jumps) == 2  # nothing else jumped
 
 
+def test_a_held_object_driven_into_a_shelf_is_found_and_a_base_put_aside_jumps(
+    tmp_path: Path,
+) -> None:
+    world = World()
+    world.add_floor()
+    world.add_robot("pr2")
+    for arm in world.robot("pr2").description.arms.values():
+        world.set_joint_states("pr2", dict(arm.parking))
+    low, high = world.link_aabb("pr2", "r_gripper_palm_link")
+    y, z = (low[1] + high[1]) / 2, (low[2] + high[2]) / 2
+    front = max(world.link_aabb("pr2", link)[1][0] for link in world.link_names("pr2"))
+    world.add_box("stick", (0.3, 0.03, 0.03), ((front + 0.16, y, z), (0.0, 0.0, 0.0, 1.0)))
+    world.attach("stick", "pr2", "r_gripper_tool_frame")
+    world.add_box("shelf", (0.1, 0.3, 0.3), ((front + 0.4, y, z), (0.0, 0.0, 0.0, 1.0)))
+    (gap,) = [p.distance for p in world.contact_points("stick", "shelf", distance=0.5)]
+    db_path = tmp_path / "held.db"
+    with trace_to(db_path, world=world), simulated_robot(world, "pr2", name="held"):
+        _execute(
+            world, "push", _timed(world, ("x", "y", "yaw"), [[0, 0, 0], [DRIVE, 0, 0]], "base")
+        )
+        world.set_pose("pr2", Pose((DRIVE, 0.05, 0.0)))  # put aside: no trajectory
+        perform(a.motion(type="moving-torso", joint_angle=0.0))  # a stored state, no change
+    world.close()
+    with TraceDatabase(db_path, create=False) as db:
+        report = audit_runs(db)
+    (pushed,) = _in_task(report, "push", FindingKind.WORLD_PENETRATION)
+    assert pushed.what == "stick / shelf"
+    assert pushed.amount == pytest.approx(DRIVE - gap, abs=DEPTH_TOLERANCE)
+    assert not _in_task(report, "push", FindingKind.ALLOWED_CONTACT_TOO_DEEP)
+    (aside,) = report.of(FindingKind.TELEPORT)
+    assert aside.what.startswith("pr2 base y 0.0000 -> 0.0500") and aside.trajectory is None
+    assert aside.amount == pytest.approx(0.05, abs=1e-9)
+
+
 def test_the_cli_exits_1_on_findings_and_prints_one_line_each(
     planted: PlantedRun, planted_report: AuditReport, capsys: pytest.CaptureFixture[str]
 ) -> None:
