@@ -320,6 +320,19 @@ def test_pairs_skipped_as_always_touching_make_a_pr2_drive_clean(tmp_path: Path)
     assert matrix.clean and matrix.configurations == plain.configurations
 
 
+def test_a_run_traced_without_its_world_is_not_audited_and_says_so(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    db_path = tmp_path / "tree-only.db"
+    with trace_to(db_path), top_level(name="no world"):
+        pass
+    assert main(["runs", "audit", str(db_path)]) == 0
+    out = capsys.readouterr().out
+    assert "  not audited: run 1: run 1 stores no scene" in out
+    assert main(["runs", "audit", str(db_path), "--run", "1"]) == 3
+    assert "run 1 stores no scene" in capsys.readouterr().err
+
+
 def test_a_missing_database_or_run_is_one_line_of_bad_input(
     planted: PlantedRun, tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:

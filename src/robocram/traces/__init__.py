@@ -23,6 +23,7 @@ if TYPE_CHECKING:  # the names, for type checkers; at run time each loads on fir
     from robocram.traces.errors import (
         DamagedTrace,
         MissingRobotDescription,
+        NoSceneStored,
         NotATraceDatabase,
         NoWorldState,
         SchemaVersionMismatch,
@@ -65,6 +66,7 @@ _WHERE = {  # name -> the module that defines it: `robocram runs list` needs no 
     "FailureRecord": "robocram.traces.queries",
     "FindingKind": "robocram.traces.audit_findings",
     "MissingRobotDescription": "robocram.traces.errors",
+    "NoSceneStored": "robocram.traces.errors",
     "NoWorldState": "robocram.traces.errors",
     "NotATraceDatabase": "robocram.traces.errors",
     "ReplayClock": "robocram.traces.replay_clock",
@@ -138,6 +140,7 @@ __all__ = [
     "DurationStats",
     "FailureRecord",
     "FindingKind",
+    "NoSceneStored",
     "NoWorldState",
     "MissingRobotDescription",
     "NotATraceDatabase",

@@ -110,10 +110,11 @@ class FindingPlace:
 class AuditReport:
     """The findings of one audit (of one run or many), and how much it looked at."""
 
-    runs: tuple[int, ...]
+    runs: tuple[int, ...]  # the runs audited
     findings: tuple[AuditFinding, ...]
     trajectories: int  # trajectories replayed
     configurations: int  # configurations checked for penetration
+    not_audited: tuple[tuple[int, str], ...] = ()  # (run, why): no world stored to replay
 
     @property
     def clean(self) -> bool:
@@ -136,16 +137,18 @@ class AuditReport:
 
     def summary_lines(self) -> list[str]:
         """What was audited, then per kind the count and the worst finding."""
-        runs = ", ".join(map(str, self.runs)) or "none"
-        lines = [
-            f"audited run(s) {runs}: {self.trajectories} trajectories, "
-            f"{self.configurations} configurations checked; "
-            + ("clean" if self.clean else f"{len(self.findings)} finding(s)")
-        ]
+        if self.runs:
+            lines = [
+                f"audited run(s) {', '.join(map(str, self.runs))}: {self.trajectories} "
+                f"trajectories, {self.configurations} configurations checked; "
+                + ("clean" if self.clean else f"{len(self.findings)} finding(s)")
+            ]
+        else:
+            lines = ["audited no run"]
         for kind, count in self.counts().items():
-            worst = self.worst(kind)
-            assert worst is not None  # counted, so found
+            worst = max(self.of(kind), key=lambda f: f.excess)
             lines.append(f"  {kind.value:<24} {count:>4}  worst: {worst.what}, {_size(worst)}")
+        lines += [f"  not audited: run {run}: {why}" for run, why in self.not_audited]
         return lines
 
     @classmethod
@@ -156,6 +159,7 @@ class AuditReport:
             tuple(f for report in reports for f in report.findings),
             sum(r.trajectories for r in reports),
             sum(r.configurations for r in reports),
+            tuple(n for report in reports for n in report.not_audited),
         )
 
 

@@ -31,7 +31,7 @@ from robocram.traces.audit_findings import (
 )
 from robocram.traces.database import TraceDatabase
 from robocram.traces.dense_samples import Levers, dense_configurations
-from robocram.traces.errors import TraceError
+from robocram.traces.errors import NoSceneStored, TraceError
 from robocram.traces.limit_audit import limit_findings
 from robocram.traces.penetration_audit import PenetrationProbe, robot_side_parts
 from robocram.traces.queries import require_run, run_ids, world_state_times
@@ -47,14 +47,22 @@ from robocram.world import World
 def audit_runs(
     db: TraceDatabase, run: int | None = None, bounds: AuditBounds | None = None
 ) -> AuditReport:
-    """The audit of run ``run``, or of every run of ``db`` (None).
+    """The audit of run ``run``, or of every run of ``db`` (None); of every run, those
+    traced without their world are listed as not audited.
 
     Raises:
         UnknownRun: no run ``run`` in ``db``.
-        TraceError: a run without a stored scene, or a trajectory of a robot it lacks.
+        TraceError: run ``run`` has no stored scene, or a trajectory of a robot it lacks.
     """
-    ids = [require_run(db, run).id] if run is not None else run_ids(db)
-    return AuditReport.merged([audit_run(db, i, bounds) for i in ids])
+    if run is not None:
+        return audit_run(db, require_run(db, run).id, bounds)
+    reports = []
+    for i in run_ids(db):
+        try:
+            reports.append(audit_run(db, i, bounds))
+        except NoSceneStored as err:
+            reports.append(AuditReport((), (), 0, 0, ((i, str(err)),)))
+    return AuditReport.merged(reports)
 
 
 def audit_run(db: TraceDatabase, run: int, bounds: AuditBounds | None = None) -> AuditReport:
@@ -62,10 +70,7 @@ def audit_run(db: TraceDatabase, run: int, bounds: AuditBounds | None = None) ->
     bounds = bounds if bounds is not None else AuditBounds()
     row = require_run(db, run)
     if row.scene is None:
-        raise TraceError(
-            f"run {run} stores no scene, so its world cannot be rebuilt; trace it with "
-            "trace_to(db, world=world)"
-        )
+        raise NoSceneStored(run)
     trajectories = run_trajectories(db, run)
     with build_scene(row.scene) as world:
         audit = _RunAudit(db, run, world, bounds)
