@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -133,3 +134,18 @@ def test_dense_samples_move_no_link_frame_more_than_five_mm() -> None:
         steps += 1
     world.close()
     assert steps > 2.0 / 0.005  # the wrist roll alone turns 2 rad
+
+
+def test_a_yaw_through_pi_is_unwrapped_a_position_is_not() -> None:
+    times = np.linspace(0.0, 4.0, 401)
+    s = times / 4.0
+    turn = 3.0 + 0.3 * (s - np.sin(math.tau * s) / math.tau)  # 3.0 -> 3.3 rad, slowly
+    stored = np.where(turn > math.pi, turn - math.tau, turn)  # as a wrapped yaw
+    velocities = 0.3 / 4.0 * (1.0 - np.cos(math.tau * s))
+    accelerations = 0.3 * math.tau / 16.0 * np.sin(math.tau * s)
+    trajectory = _stored(times, stored, velocities, accelerations)
+    yaw = replace(LIMIT, name="j")
+    wrapped = list(limit_findings(trajectory, (yaw,), AuditBounds(), PLACE, wrapping={"j"}))
+    assert wrapped == []
+    as_position = {f.kind for f in limit_findings(trajectory, (yaw,), AuditBounds(), PLACE)}
+    assert FindingKind.VELOCITY in as_position  # a jump of 2 pi in 10 ms

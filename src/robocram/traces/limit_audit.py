@@ -5,8 +5,8 @@ Derivatives are divided differences of the stored positions at their stored time
 nodes (mean value theorem), so a trajectory within its limits never shows one above them,
 however its points are spaced. The robot is at rest before and after a trajectory: each
 end is a triple node with velocity and acceleration zero, so a trajectory that starts
-moving or stops at once shows the acceleration and jerk that takes. Continuous joints
-and the base's yaw are unwrapped first.
+moving or stops at once shows the acceleration and jerk that takes. Angles that wrap
+(continuous joints, the base's yaw) are unwrapped first.
 
 A derivative is a finding when it exceeds its limit by more than ``limit_tolerance`` of
 it plus the rounding error of its quotient (``k! 2^k 8 eps (1 + max|q|) / h^k`` over the
@@ -19,7 +19,7 @@ differ by the same share of the limit plus what a jerk at its limit changes in b
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator
+from collections.abc import Collection, Iterator
 from dataclasses import replace
 
 import numpy as np
@@ -40,15 +40,17 @@ def limit_findings(
     limits: tuple[JointLimits, ...],
     bounds: AuditBounds,
     place: FindingPlace,
+    wrapping: Collection[str] = (),
 ) -> Iterator[AuditFinding]:
-    """Each joint's worst derivative over its limit, and stored values that disagree."""
+    """Each joint's worst derivative over its limit, and stored values that disagree;
+    the joints named in ``wrapping`` are angles that wrap (unwrapped first)."""
     if len(trajectory.points) < 2:
         return
     times = np.array([p.time_from_start for p in trajectory.points])
     positions = np.array([p.positions for p in trajectory.points], dtype=float)
     for column, limit in enumerate(limits):
         q = positions[:, column]
-        if math.isinf(limit.lower) and math.isinf(limit.upper):
+        if limit.name in wrapping:
             q = np.unwrap(q)
         yield from _derivative_findings(times, q, limit, bounds, place)
         yield from _stored_findings(trajectory, column, times, q, limit, bounds, place)

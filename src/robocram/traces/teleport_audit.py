@@ -46,8 +46,11 @@ class TeleportWatch:
         self, start: Mapping[str, float], end: Mapping[str, float], place: FindingPlace
     ) -> Iterator[AuditFinding]:
         """Jumps to a trajectory's first point; then its joints are known at its last."""
-        yield from self._jumps(start, place, "where its trajectory starts")
-        self.known.update(end)
+        judged = self._judged.union(BASE_JOINTS)
+        yield from self._jumps(
+            {j: v for j, v in start.items() if j in judged}, place, "where its trajectory starts"
+        )
+        self.known.update({j: v for j, v in end.items() if j in judged})
 
     def _jumps(
         self, now: Mapping[str, float], place: FindingPlace, how: str

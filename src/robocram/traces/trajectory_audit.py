@@ -146,7 +146,9 @@ class _RunAudit:
             limits = joint_limits(description, trajectory.joint_names)
         except MotionError as err:
             raise TraceError(f"run {self.run}, trajectory {trajectory.index}: {err}") from err
-        self.findings += limit_findings(trajectory, limits, self.bounds, place)
+        wrapping = {j.name for j in description.model.joints.values() if j.type == "continuous"}
+        wrapping.add("yaw")
+        self.findings += limit_findings(trajectory, limits, self.bounds, place, wrapping)
         start = dict(zip(trajectory.joint_names, trajectory.points[0].positions, strict=True))
         end = dict(zip(trajectory.joint_names, trajectory.points[-1].positions, strict=True))
         self.findings += self.watches[robot].trajectory(start, end, place)
