@@ -396,3 +396,19 @@ def test_a_pr2_kitchen_transport_tool_lines_exceed_acceleration_and_jerk(
     assert all("moving-tcp" in (f.task_path or "") for f in over)
     worst = kitchen_report.worst(FindingKind.ACCELERATION)
     assert worst is not None and worst.amount > 2.0 * worst.bound
+
+
+def test_an_hsr_kitchen_transport_stays_within_its_limits_and_off_the_kitchen(
+    tmp_path: Path,
+) -> None:
+    scene = kitchen_scene("hsrb")
+    with trace_to(tmp_path / "hsr.db", world=scene.world), simulated_robot(scene.world, "hsrb"):
+        transport("mug", a.location(on=("kitchen", "table_top"), for_="mug-1"))
+    scene.world.close()
+    with TraceDatabase(tmp_path / "hsr.db", create=False) as db:
+        report = audit_runs(db)
+    assert set(report.counts()) == {FindingKind.SELF_PENETRATION, FindingKind.TELEPORT}
+    jumped = {f.what.split()[2] for f in report.of(FindingKind.TELEPORT)}
+    assert jumped == {"head_pan_joint", "head_tilt_joint", "hand_motor_joint"}
+    hulls = {f.what for f in report.of(FindingKind.SELF_PENETRATION)}
+    assert "hsrb:torso_lift_link / hsrb:arm_lift_link" in hulls  # the telescope's hulls
