@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+import ast
 import math
 from dataclasses import replace
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -149,3 +151,28 @@ def test_a_yaw_through_pi_is_unwrapped_a_position_is_not() -> None:
     assert wrapped == []
     as_position = {f.kind for f in limit_findings(trajectory, (yaw,), AuditBounds(), PLACE)}
     assert FindingKind.VELOCITY in as_position  # a jump of 2 pi in 10 ms
+
+
+AUDIT_MODULES = (
+    "audit_bounds", "audit_findings", "dense_samples", "limit_audit", "link_adjacency",
+    "penetration_audit", "relative_motion", "teleport_audit", "trajectory_audit",
+)  # fmt: skip
+PLANNER_CHECKS = (
+    "robocram.motion.bullet_scene", "robocram.motion.coal_clearance",
+    "robocram.motion.segment_check", "robocram.motion.self_collision",
+    "robocram.motion.collision_scene", "robocram.motion.travel_bound",
+    "robocram.world.link_contacts", "robocram.world.contacts", "robocram.world.obstacle_boxes",
+)  # fmt: skip
+
+
+@pytest.mark.parametrize("name", AUDIT_MODULES)
+def test_the_audit_uses_none_of_the_planners_checks(name: str) -> None:
+    path = Path(__file__).resolve().parents[2] / "src" / "robocram" / "traces" / f"{name}.py"
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    imported = {n.module or "" for n in ast.walk(tree) if isinstance(n, ast.ImportFrom)} | {
+        a.name for n in ast.walk(tree) if isinstance(n, ast.Import) for a in n.names
+    }
+    assert not imported & set(PLANNER_CHECKS)
+    called = {n.attr for n in ast.walk(tree) if isinstance(n, ast.Attribute)}
+    shortcuts = {"link_distances", "link_pairs_in_contact", "self_contacts", "obstacle_boxes"}
+    assert not called & (shortcuts | {"in_collision", "contact_points", "contact"})
