@@ -412,3 +412,11 @@ def test_an_hsr_kitchen_transport_stays_within_its_limits_and_off_the_kitchen(
     assert jumped == {"head_pan_joint", "head_tilt_joint", "hand_motor_joint"}
     hulls = {f.what for f in report.of(FindingKind.SELF_PENETRATION)}
     assert "hsrb:torso_lift_link / hsrb:arm_lift_link" in hulls  # the telescope's hulls
+    # the open hand's finger in the base, parked: Bullet asked for 0 would not say so
+    (finger,) = [
+        f
+        for f in report.of(FindingKind.SELF_PENETRATION)
+        if f.what == "hsrb:base_link / hsrb:hand_r_distal_link" and f.trajectory is None
+    ]
+    assert finger.amount == pytest.approx(0.0066, abs=2e-4)
+    assert (finger.task_path or "").endswith("perform opening")

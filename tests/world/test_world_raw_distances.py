@@ -37,3 +37,15 @@ def test_bounds_are_per_link_and_links_without_shapes_are_not_listed(world: Worl
     assert low[0] <= -0.1 and high[0] >= 0.1 and high[0] < 0.11
     with pytest.raises(UnknownLinkError, match="did you mean"):
         raw.closest("pr2", "base_lnk", "a", raw.collision_links("a")[0])
+
+
+def test_asked_for_exactly_zero_bullet_misses_a_penetration_of_one_bodys_links() -> None:
+    """Why the audit asks a hair beyond 0 (penetration_audit.QUERY_REACH)."""
+    with World() as world:
+        world.add_robot("hsrb")
+        world.set_joint_states("hsrb", dict(world.robot("hsrb").description.arms["arm"].parking))
+        world.set_joint_states("hsrb", {"hand_motor_joint": 1.24})  # the open hand
+        raw = RawDistances(world)
+        assert raw.closest("hsrb", "base_link", "hsrb", "hand_r_distal_link", 0.0) is None
+        gap = raw.closest("hsrb", "base_link", "hsrb", "hand_r_distal_link", 1e-6)
+        assert gap is not None and gap.distance == pytest.approx(-0.0066, abs=2e-4)

@@ -31,6 +31,9 @@ from robocram.traces.link_adjacency import LinkPair
 from robocram.world import RawDistances, World
 
 FloatArray = NDArray[np.float64]
+# [m] how far apart pairs are asked for: asked for exactly 0, Bullet sometimes reports no
+# points for two penetrating links of one body, so the question reaches a hair farther
+QUERY_REACH = 1e-4
 
 
 @dataclass(frozen=True)
@@ -161,7 +164,7 @@ class PenetrationProbe:
 
     def _judged(self, mine: Part, other: Part) -> Penetration | None:
         """The pair's penetration if deeper than it may be."""
-        gap = self.raw.closest(mine.body, mine.link, other.body, other.link)
+        gap = self.raw.closest(mine.body, mine.link, other.body, other.link, QUERY_REACH)
         if gap is None or -gap.distance <= self.bounds.penetration:
             return None  # within the general bound: never a finding, allowed or not
         depth = -gap.distance
