@@ -36,9 +36,8 @@ from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
 from robocram.tf.quaternion import from_euler
 from robocram.traces import TraceDatabase, trace_to
-from robocram.traces.audit_bounds import AuditBounds
+from robocram.traces.audit_bounds import AuditBounds, adjacent_pairs_of
 from robocram.traces.audit_findings import AuditFinding, AuditReport, FindingKind
-from robocram.traces.link_adjacency import adjacent_links
 from robocram.traces.trajectory_audit import audit_runs
 from robocram.world import World
 
@@ -190,7 +189,7 @@ def test_an_arm_swung_into_the_other_shoulder_is_a_self_penetration(
     assert planted.swing_depth > 0.03
     # the skipped pairs are a parameter: skipping this one, it is not found
     skip = frozenset({a_link, b_link})
-    bounds = AuditBounds(skipped_self_pairs=lambda model: adjacent_links(model) | {skip})
+    bounds = AuditBounds(skipped_self_pairs=lambda w, r: adjacent_pairs_of(w, r) | {skip})
     with TraceDatabase(planted.db_path, create=False) as db:
         again = audit_runs(db, planted.run, bounds)
     assert deepest.what not in {
@@ -311,7 +310,7 @@ def test_pairs_skipped_as_always_touching_make_a_pr2_drive_clean(tmp_path: Path)
     world.close()
     with TraceDatabase(tmp_path / "pr2.db", create=False) as db:
         plain = audit_runs(db)
-        skipping = AuditBounds(skipped_self_pairs=lambda m: adjacent_links(m) | touching)
+        skipping = AuditBounds(skipped_self_pairs=lambda w, r: adjacent_pairs_of(w, r) | touching)
         matrix = audit_runs(db, bounds=skipping)
     assert set(plain.counts()) == {FindingKind.SELF_PENETRATION}
     worst = plain.worst(FindingKind.SELF_PENETRATION)

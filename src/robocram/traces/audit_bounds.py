@@ -9,20 +9,26 @@ of its difference quotient. Density: checked configurations are at most ``joint_
 more than ``point_step`` (5 mm) between them. Jumps: a joint or the base may change by
 ``teleport`` (1e-4 rad or m) without a trajectory.
 
-``skipped_self_pairs`` says which pairs of a robot's own links are not judged: by default
-the adjacent ones (:func:`~robocram.traces.link_adjacency.adjacent_links`); a per-robot
-matrix of pairs always in contact can be added to it.
+``skipped_self_pairs(world, robot)`` says which pairs of a robot's own links are not
+judged: by default the adjacent ones (:func:`~robocram.traces.link_adjacency.adjacent_links`
+of its model). It gets the replay world, so a per-robot matrix worked out on the world's
+shapes (pairs always in contact) can be added to them.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Collection
 from dataclasses import dataclass, field
 
-from robocram.robots import RobotModel
 from robocram.traces.link_adjacency import LinkPair, adjacent_links
+from robocram.world import World
 
-SkippedSelfPairs = Callable[[RobotModel], frozenset[LinkPair]]
+SkippedSelfPairs = Callable[[World, str], Collection[LinkPair]]  # (world, robot) -> pairs
+
+
+def adjacent_pairs_of(world: World, robot: str) -> frozenset[LinkPair]:
+    """The adjacent pairs of ``robot``'s links (the default pairs the audit skips)."""
+    return adjacent_links(world.robot(robot).description.model)
 
 
 @dataclass(frozen=True)
@@ -35,7 +41,7 @@ class AuditBounds:
     joint_step: float = 0.005  # [rad | m] between checked configurations, per joint
     point_step: float = 0.005  # [m] any point of the robot between checked configurations
     teleport: float = 1e-4  # [rad | m] a change without a trajectory
-    skipped_self_pairs: SkippedSelfPairs = field(default=adjacent_links)
+    skipped_self_pairs: SkippedSelfPairs = field(default=adjacent_pairs_of)
 
     def __post_init__(self) -> None:
         for name in ("penetration", "held_depth", "limit_tolerance", "teleport"):

@@ -114,7 +114,7 @@ class _RunAudit:
         self.findings: list[AuditFinding] = []
         self.judged: set[str] = set()  # robots whose every pair was judged once
         self.skipped = {  # per robot: the pairs of its own links not judged
-            r.name: frozenset(self.bounds.skipped_self_pairs(r.description.model))
+            r.name: frozenset(self.bounds.skipped_self_pairs(self.world, r.name))
             for r in self.world.robots()
         }
         self.configurations = 0
