@@ -17,7 +17,8 @@ from robocram.motion import (
     time_parameterize,
 )
 from robocram.robots import load_description
-from robocram.traces import StoredTrajectory
+from robocram.tf import Pose
+from robocram.traces import StoredTrajectory, set_robot_joints
 from robocram.traces.audit_bounds import AuditBounds
 from robocram.traces.audit_findings import FindingKind, FindingPlace
 from robocram.traces.dense_samples import Levers, dense_configurations
@@ -112,30 +113,41 @@ def test_adjacency_merges_fixed_joints_and_looks_through_links_without_shapes() 
     assert all(model.links[link].collisions for pair in adjacent for link in pair)
 
 
-def test_dense_samples_move_no_link_frame_more_than_five_mm() -> None:
+@pytest.mark.parametrize("motion", ["arm-and-torso", "base"])
+def test_dense_samples_move_no_point_more_than_five_mm(motion: str) -> None:
+    """Points at each link's radius from its frame, along its axes, move <= 5 mm a step."""
     world = World()
     world.add_robot("pr2")
     desc = world.robot("pr2").description
-    names = (*desc.arms["right"].joints, "torso_lift_joint")
-    path = [
-        [desc.arms["right"].parking[j] for j in names[:-1]] + [0.0],
-        [0.3, 0.5, -1.0, -0.4, 1.0, -0.5, 2.0, 0.2],
-    ]
+    if motion == "base":
+        names: tuple[str, ...] = ("x", "y", "yaw")
+        path = [[0.0, 0.0, 0.0], [0.4, -0.2, 1.5]]
+    else:
+        names = (*desc.arms["right"].joints, "torso_lift_joint")
+        start = [desc.arms["right"].parking[j] for j in names[:-1]] + [0.0]
+        path = [start, [0.3, 0.5, -1.0, -0.4, 1.0, -0.5, 2.0, 0.2]]
     timed = time_parameterize("pr2", names, path, joint_limits(desc, names))
     levers = Levers.of(world, "pr2", desc.model, {})
+    radii = world.link_radii("pr2")
     links = [link for link in desc.model.links if desc.model.links[link].collisions]
+    offsets = [
+        Pose(tuple(radii[link] * e for e in axis))
+        for link in links
+        for axis in ((0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1))
+    ]
     before, before_q = None, None
     steps = 0
     for _, q in dense_configurations(names, timed.times(), timed.positions(), levers, 0.005, 0.005):
-        world.set_joint_states("pr2", dict(zip(names, q.tolist(), strict=True)))
-        now = np.array([world.link_pose("pr2", link).position for link in links])
+        set_robot_joints(world, "pr2", dict(zip(names, q.tolist(), strict=True)))
+        frames = [world.link_pose("pr2", link) for link in links]
+        now = np.array([(frames[k // 4] * o).position for k, o in enumerate(offsets)])
         if before is not None and before_q is not None:
             assert np.max(np.linalg.norm(now - before, axis=1)) <= 0.005 + 1e-9
             assert np.max(np.abs(q - before_q)) <= 0.005 + 1e-9
         before, before_q = now, q
         steps += 1
     world.close()
-    assert steps > 2.0 / 0.005  # the wrist roll alone turns 2 rad
+    assert steps > (2.0 if motion != "base" else 1.5) / 0.005  # the largest joint move
 
 
 def test_a_yaw_through_pi_is_unwrapped_a_position_is_not() -> None:
