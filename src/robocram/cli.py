@@ -1,9 +1,9 @@
 """``robocram``: run the demo, look into stored runs, export, view and replay them.
 
-Exit codes: 0 done; 1 the plan failed, a batch had variants that failed, or the robot check
-found problems (missing meshes); 2 wrong usage; 3 bad input (a file that is not a trace
-database, an unknown run, an unreadable URDF, a port in use, a missing optional package, a
-bad batch spec).
+Exit codes: 0 done; 1 the plan failed, a batch had variants that failed, the robot check
+found problems (missing meshes) or a run's audit found something; 2 wrong usage; 3 bad
+input (a file that is not a trace database, an unknown run, an unreadable URDF, a port in
+use, a missing optional package, a bad batch spec).
 """
 
 from __future__ import annotations
@@ -59,8 +59,8 @@ def _parser() -> argparse.ArgumentParser:
         prog="robocram",
         description="CRAM in Python: run plans in projection, keep and inspect their traces.",
         epilog="exit codes: 0 done, 1 plan failed / batch variants failed / robot check found "
-        "problems, 2 usage error, 3 bad input (database, run id, URDF, port, missing package, "
-        "batch spec)",
+        "problems / a run's audit found something, 2 usage error, 3 bad input (database, run "
+        "id, URDF, port, missing package, batch spec)",
     )
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     demo = commands.add_parser("demo", help="a robot picks up a mug in projection")

@@ -1,4 +1,4 @@
-"""``robocram runs list|show|failures|export``: look into the runs a trace database holds.
+"""``robocram runs list|show|failures|export|audit``: look into the runs a trace database holds.
 
 Each handler imports the trace store when it runs, so ``robocram --help`` does not load
 SQLAlchemy.
@@ -11,7 +11,7 @@ import datetime
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from robocram.command_exit import EXIT_OK, CliInputError
+from robocram.command_exit import EXIT_FAILED, EXIT_OK, CliInputError
 
 if TYPE_CHECKING:
     from robocram.traces import TraceDatabase
@@ -20,7 +20,7 @@ DB_HELP = "trace database (SQLite)"
 
 
 def add_runs_commands(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
-    """Add ``runs list|show|failures|export`` to the ``robocram`` parser."""
+    """Add ``runs list|show|failures|export|audit`` to the ``robocram`` parser."""
     runs_parser = commands.add_parser("runs", help="list, show and query stored runs")
     sub = runs_parser.add_subparsers(dest="runs_command", required=True, metavar="ACTION")
     listing = sub.add_parser("list", help="one line per run: id, name, status, counts")
@@ -43,6 +43,13 @@ def add_runs_commands(commands: argparse._SubParsersAction[argparse.ArgumentPars
     export.add_argument("--run", type=int, help="run id (default: the last run)")
     export.add_argument("--mcap", type=Path, required=True, help="the MCAP file to write")
     export.set_defaults(handler=_runs_export)
+    audit = sub.add_parser(
+        "audit",
+        help="replay stored trajectories densely: penetrations, limits, jumps (exit 1 if any)",
+    )
+    audit.add_argument("db", type=Path, help=DB_HELP)
+    audit.add_argument("--run", type=int, help="only this run (default: every run)")
+    audit.set_defaults(handler=_runs_audit)
 
 
 def open_database(path: Path) -> TraceDatabase:
@@ -134,3 +141,14 @@ def _runs_export(args: argparse.Namespace) -> int:
         count = export_mcap(db, run, args.mcap)
     print(f"wrote {count} messages of run {run} to {args.mcap} (/tf, /joint_states, /object_poses)")
     return EXIT_OK
+
+
+def _runs_audit(args: argparse.Namespace) -> int:
+    from robocram.traces.trajectory_audit import audit_runs
+
+    with open_database(args.db) as db:
+        report = audit_runs(db, args.run)
+    for finding in report.findings:
+        print(finding.line())
+    print("\n".join(report.summary_lines()))
+    return EXIT_OK if report.clean else EXIT_FAILED

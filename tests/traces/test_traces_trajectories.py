@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import sqlite3
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -10,7 +11,7 @@ import numpy as np
 import pytest
 
 from robocram.execution import top_level
-from robocram.motion import report_executed, still
+from robocram.motion import ContactAllowance, report_executed, still
 from robocram.scenes import tabletop_scene
 from robocram.traces import (
     SCHEMA_VERSION,
@@ -183,3 +184,29 @@ def test_a_traced_pick_up_keeps_each_motions_trajectory(pick_up_trace: Any) -> N
         else:
             joints = state.joints["pr2"]
             assert [joints[n] for n in end] == pytest.approx(list(end.values()), abs=1e-9)
+
+
+def test_allowed_contacts_round_trip_and_old_files_read_none(tmp_path: Path) -> None:
+    db_path = tmp_path / "runs.db"
+    allowance = ContactAllowance("r_gripper_palm_link", "kitchen/handle", 0.004)
+    moved = replace(still("pr2", ["torso_lift_joint"], [0.2]), allowed_contacts=(allowance,))
+    with trace_to(db_path), top_level(name="allowed"):
+        report_executed(moved)
+        report_executed(still("pr2", ["torso_lift_joint"], [0.2]))
+    with TraceDatabase(db_path, create=False) as db:
+        (run,) = run_ids(db)
+        kept, plain = run_trajectories(db, run)
+    assert kept.allowed_contacts == (allowance,) and kept.trajectory() == moved
+    assert plain.allowed_contacts == ()
+    with sqlite3.connect(db_path) as con:  # what robocram wrote before allowed contacts
+        con.execute("ALTER TABLE trajectories DROP COLUMN allowed_contacts")
+        con.execute("UPDATE schema_info SET version = 5")
+    with TraceDatabase(db_path, create=False) as db:
+        assert [t.allowed_contacts for t in run_trajectories(db, run)] == [(), ()]
+    with sqlite3.connect(db_path) as con:
+        assert con.execute("SELECT version FROM schema_info").fetchone() == (SCHEMA_VERSION,)
+
+
+def test_a_contact_allowance_refuses_a_negative_depth() -> None:
+    with pytest.raises(ValueError, match="depth is a bound in metres"):
+        ContactAllowance("r_gripper_palm_link", "kitchen", -0.001)

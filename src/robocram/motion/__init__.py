@@ -9,6 +9,7 @@ See docs/motion.md.
 from robocram.motion.arm_motion import ArmMotion, MotionSettings, plan_arm_motion, plan_tool_line
 from robocram.motion.base_path import BasePath, plan_base_path
 from robocram.motion.collision_scene import CollisionScene
+from robocram.motion.contact_allowance import ContactAllowance
 from robocram.motion.errors import MotionError
 from robocram.motion.joint_limits import JointLimits, joint_limits
 from robocram.motion.joint_trajectory import BASE_JOINTS, JointTrajectory, TrajectoryPoint, still
@@ -20,6 +21,7 @@ __all__ = [
     "BASE_JOINTS",
     "BasePath",
     "CollisionScene",
+    "ContactAllowance",
     "JointLimits",
     "JointTrajectory",
     "MotionError",

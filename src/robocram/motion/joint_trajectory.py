@@ -21,6 +21,8 @@ from typing import overload
 import numpy as np
 import numpy.typing as npt
 
+from robocram.motion.contact_allowance import ContactAllowance
+
 FloatArray = npt.NDArray[np.float64]
 BASE_JOINTS = ("x", "y", "yaw")  # [m, m, rad] in map: a base path's joints
 
@@ -135,12 +137,17 @@ class PointTable(Sequence[TrajectoryPoint]):
 
 @dataclass(frozen=True)
 class JointTrajectory:
-    """Joint names and timed points; ``kind`` says which motion made it (``arm``, ``base``)."""
+    """Joint names and timed points; ``kind`` says which motion made it (``arm``, ``base``).
+
+    ``allowed_contacts`` are the contacts its motion was allowed beyond the description's
+    (the audit of a trace honours them up to their depth).
+    """
 
     robot: str
     joint_names: tuple[str, ...]
     points: tuple[TrajectoryPoint, ...] | PointTable
     kind: str = "arm"
+    allowed_contacts: tuple[ContactAllowance, ...] = ()
 
     def __post_init__(self) -> None:
         width = len(self.joint_names)

@@ -16,11 +16,14 @@ from typing import TYPE_CHECKING
 import robocram.traces.replay_clock as _replay_clock_module  # noqa: F401
 
 if TYPE_CHECKING:  # the names, for type checkers; at run time each loads on first use
+    from robocram.traces.audit_bounds import AuditBounds
+    from robocram.traces.audit_findings import AuditFinding, AuditReport, FindingKind
     from robocram.traces.costmap_record import StoredCostmap, run_costmaps
     from robocram.traces.database import TraceDatabase
     from robocram.traces.errors import (
         DamagedTrace,
         MissingRobotDescription,
+        NoSceneStored,
         NotATraceDatabase,
         NoWorldState,
         SchemaVersionMismatch,
@@ -50,14 +53,20 @@ if TYPE_CHECKING:  # the names, for type checkers; at run time each loads on fir
     from robocram.traces.run_replay import ReplayFrame, replay_frames, robot_in, set_robot_joints
     from robocram.traces.schema import SCHEMA_VERSION
     from robocram.traces.tracer import TRACE_ENV, Tracer, trace_from_environment, trace_to
+    from robocram.traces.trajectory_audit import audit_run, audit_runs
     from robocram.traces.trajectory_record import StoredTrajectory, run_trajectories
     from robocram.traces.world_record import StoredWorldState, build_scene, scene_of
 
 _WHERE = {  # name -> the module that defines it: `robocram runs list` needs no physics
+    "AuditBounds": "robocram.traces.audit_bounds",
+    "AuditFinding": "robocram.traces.audit_findings",
+    "AuditReport": "robocram.traces.audit_findings",
     "DamagedTrace": "robocram.traces.errors",
     "DurationStats": "robocram.traces.queries",
     "FailureRecord": "robocram.traces.queries",
+    "FindingKind": "robocram.traces.audit_findings",
     "MissingRobotDescription": "robocram.traces.errors",
+    "NoSceneStored": "robocram.traces.errors",
     "NoWorldState": "robocram.traces.errors",
     "NotATraceDatabase": "robocram.traces.errors",
     "ReplayClock": "robocram.traces.replay_clock",
@@ -77,6 +86,8 @@ _WHERE = {  # name -> the module that defines it: `robocram runs list` needs no 
     "Tracer": "robocram.traces.tracer",
     "UnknownRun": "robocram.traces.errors",
     "animate_run": "robocram.traces.run_animation",
+    "audit_run": "robocram.traces.trajectory_audit",
+    "audit_runs": "robocram.traces.trajectory_audit",
     "build_scene": "robocram.traces.world_record",
     "designator_properties": "robocram.traces.queries",
     "durations": "robocram.traces.queries",
@@ -122,9 +133,14 @@ def __getattr__(name: str) -> object:
 
 
 __all__ = [
+    "AuditBounds",
+    "AuditFinding",
+    "AuditReport",
     "DamagedTrace",
     "DurationStats",
     "FailureRecord",
+    "FindingKind",
+    "NoSceneStored",
     "NoWorldState",
     "MissingRobotDescription",
     "NotATraceDatabase",
@@ -145,6 +161,8 @@ __all__ = [
     "Tracer",
     "UnknownRun",
     "animate_run",
+    "audit_run",
+    "audit_runs",
     "build_scene",
     "designator_properties",
     "durations",

@@ -24,7 +24,14 @@ from sqlalchemy.exc import DatabaseError
 from sqlalchemy.orm import Session
 
 from robocram.traces.errors import SchemaVersionMismatch, TraceError, TraceLocked
-from robocram.traces.schema import ADDED_TABLES, SCHEMA_VERSION, Base, SchemaInfo
+from robocram.traces.schema import (
+    ADDED_COLUMNS,
+    ADDED_TABLES,
+    SCHEMA_VERSION,
+    Base,
+    SchemaInfo,
+    upgradable,
+)
 from robocram.traces.trace_probe import probe_trace, sqlite_error, storage_error
 
 BUSY_TIMEOUT = 60_000  # [ms] a writer waits this long for another process's transaction
@@ -89,7 +96,7 @@ class TraceDatabase:
                 version = (
                     session.scalar(select(SchemaInfo.version)) if "schema_info" in tables else None
                 )
-                if version is not None and _only_added_tables(version):
+                if version is not None and upgradable(version):
                     _add_tables(session, version)
                     version = SCHEMA_VERSION
         except DatabaseError as err:
@@ -146,18 +153,18 @@ def retry_while_locked(attempt: Callable[[], T]) -> T:
     return attempt()
 
 
-def _only_added_tables(version: int) -> bool:
-    """Whether every version after ``version`` up to ours only added tables."""
-    later = range(version + 1, SCHEMA_VERSION + 1)
-    return version < SCHEMA_VERSION and all(v in ADDED_TABLES for v in later)
-
-
 def _add_tables(session: Session, version: int) -> None:
-    """Upgrade a file of ``version`` in place: create the tables added since, set the version."""
+    """Upgrade a file of ``version`` in place: add the tables and nullable columns added
+    since (a table created here already has its later columns), set the version."""
     connection = session.connection()
     for later in range(version + 1, SCHEMA_VERSION + 1):
-        for name in ADDED_TABLES[later]:
+        for name in ADDED_TABLES.get(later, ()):
             Base.metadata.tables[name].create(connection, checkfirst=True)
+        for name, column in ADDED_COLUMNS.get(later, ()):
+            present = {c["name"] for c in inspect(connection).get_columns(name)}
+            if column not in present:
+                kind = Base.metadata.tables[name].columns[column].type.compile(connection.dialect)
+                connection.exec_driver_sql(f'ALTER TABLE {name} ADD COLUMN "{column}" {kind}')
     session.execute(update(SchemaInfo).values(version=SCHEMA_VERSION))
 
 

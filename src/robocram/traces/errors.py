@@ -56,6 +56,17 @@ class NoWorldState(TraceError):  # noqa: N818
         self.run, self.time = run, time
 
 
+class NoSceneStored(TraceError):  # noqa: N818 - reads as what is missing
+    """A run traced without its world: nothing to rebuild it from for a replay or an audit."""
+
+    def __init__(self, run: int) -> None:
+        super().__init__(
+            f"run {run} stores no scene, so its world cannot be rebuilt; trace it with "
+            "trace_to(db, world=world)"
+        )
+        self.run = run
+
+
 class DamagedTrace(TraceError):  # noqa: N818 - reads as what the file is
     """A robocram trace with tables missing (changed outside robocram, or cut short)."""
 

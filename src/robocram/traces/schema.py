@@ -6,7 +6,8 @@ id before it writes and several processes can append runs to one file; each row 
 parent and its position among the parent's children. World states are stored at motion
 boundaries, one row each; executed trajectories one row each, in execution order.
 ``SCHEMA_VERSION`` changes whenever a table does; a version whose only change is a new
-table (:data:`ADDED_TABLES`) is opened by creating that table.
+table (:data:`ADDED_TABLES`) or a new nullable column (:data:`ADDED_COLUMNS`) is opened by
+adding it.
 """
 
 from __future__ import annotations
@@ -26,8 +27,18 @@ from sqlalchemy import (
 )
 from sqlalchemy.orm import DeclarativeBase, Mapped, mapped_column
 
-SCHEMA_VERSION = 5  # 2: world state rows, task ids per run; 3: costmaps; 4: trajectories; 5: URDFs
+# 2: world state rows, task ids per run; 3: costmaps; 4: trajectories; 5: URDFs;
+# 6: trajectories' allowed contacts
+SCHEMA_VERSION = 6
 ADDED_TABLES = {4: ("trajectories",), 5: ("robot_models",)}  # version -> tables it added
+ADDED_COLUMNS = {6: (("trajectories", "allowed_contacts"),)}  # version -> (table, column)
+
+
+def upgradable(version: int) -> bool:
+    """Whether a file of ``version`` opens by adding what later versions added (and only that)."""
+    later = range(version + 1, SCHEMA_VERSION + 1)
+    added = ADDED_TABLES.keys() | ADDED_COLUMNS.keys()
+    return version < SCHEMA_VERSION and all(v in added for v in later)
 
 
 class Base(DeclarativeBase):
@@ -151,6 +162,8 @@ class TrajectoryRow(Base):
     positions: Mapped[bytes] = mapped_column(LargeBinary)  # [rad | m]
     velocities: Mapped[bytes] = mapped_column(LargeBinary)  # [rad/s | m/s]
     accelerations: Mapped[bytes] = mapped_column(LargeBinary)  # [rad/s^2 | m/s^2]
+    # JSON [[robot side, other, depth [m]], ...]; NULL (files before version 6): none
+    allowed_contacts: Mapped[str | None] = mapped_column(Text, nullable=True)
 
     __table_args__ = (Index("ix_trajectories_run", "run_id", "sequence"),)
 

@@ -21,7 +21,7 @@ from robocram.traces.errors import (
     TraceLocked,
     TraceStorageError,
 )
-from robocram.traces.schema import ADDED_TABLES, SCHEMA_VERSION, Base
+from robocram.traces.schema import ADDED_TABLES, SCHEMA_VERSION, Base, upgradable
 
 SQLITE_HEADER = b"SQLite format 3\x00"
 _READ_ONLY = "the file or its folder is read-only (read-only media or permissions)"
@@ -56,7 +56,7 @@ def probe_trace(path: Path) -> bool:
         return True
     if version is None:
         raise SchemaVersionMismatch(path, None, SCHEMA_VERSION)
-    if version != SCHEMA_VERSION and not _upgradable(version):
+    if version != SCHEMA_VERSION and not upgradable(version):
         raise SchemaVersionMismatch(path, version, SCHEMA_VERSION)
     added_later = {t for v, names in ADDED_TABLES.items() if v > version for t in names}
     missing = set(Base.metadata.tables) - added_later - tables
@@ -91,11 +91,6 @@ def _read_only_look(path: Path) -> tuple[set[str], int | None]:
     except sqlite3.DatabaseError as err:
         raise sqlite_error(path, err) from err
     return tables, None if row is None else int(row[0])
-
-
-def _upgradable(version: int) -> bool:
-    later = range(version + 1, SCHEMA_VERSION + 1)
-    return version < SCHEMA_VERSION and all(v in ADDED_TABLES for v in later)
 
 
 def sqlite_error(path: Path, err: Exception) -> TraceError:

@@ -16,7 +16,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from sqlalchemy import select
 
-from robocram.motion import JointTrajectory, TrajectoryPoint
+from robocram.motion import ContactAllowance, JointTrajectory, TrajectoryPoint
 from robocram.traces.database import TraceDatabase
 from robocram.traces.queries import require_run, world_state_times
 from robocram.traces.replay_clock import ReplayClock, replay_starts
@@ -35,6 +35,7 @@ class StoredTrajectory:
     task_path: str | None  # the task running when it was executed
     time: float  # [s] since the epoch (wall clock) when it was reported, its motion's end
     start: float  # [s] from the run's start on the replay clock (traces/replay_clock.py)
+    allowed_contacts: tuple[ContactAllowance, ...] = ()  # beyond the description's
 
     @property
     def duration(self) -> float:
@@ -48,7 +49,9 @@ class StoredTrajectory:
 
     def trajectory(self) -> JointTrajectory:
         """The trajectory as the motion layer made it."""
-        return JointTrajectory(self.robot, self.joint_names, self.points, self.kind)
+        return JointTrajectory(
+            self.robot, self.joint_names, self.points, self.kind, self.allowed_contacts
+        )
 
 
 def trajectory_row(
@@ -68,6 +71,7 @@ def trajectory_row(
         "positions": _pack([p.positions for p in points]),
         "velocities": _pack([p.velocities for p in points]),
         "accelerations": _pack([p.accelerations for p in points]),
+        "allowed_contacts": _allowances_text(trajectory.allowed_contacts),
     }
 
 
@@ -128,7 +132,22 @@ def _loaded(row: TrajectoryRow, path: str | None) -> StoredTrajectory:
         task_path=path,
         time=row.time,
         start=0.0,
+        allowed_contacts=_allowances(row.allowed_contacts),
     )
+
+
+def _allowances_text(allowances: tuple[ContactAllowance, ...]) -> str | None:
+    """JSON ``[[robot side, other, depth], ...]``; None (NULL) when there are none."""
+    if not allowances:
+        return None
+    return json.dumps([[a.robot_side, a.other, a.depth] for a in allowances])
+
+
+def _allowances(text: str | None) -> tuple[ContactAllowance, ...]:
+    """The allowances of a row; NULL (none, or a file written before version 6): none."""
+    if not text:
+        return ()
+    return tuple(ContactAllowance(side, other, depth) for side, other, depth in json.loads(text))
 
 
 def _pack(values: ArrayLike) -> bytes:

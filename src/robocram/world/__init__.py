@@ -23,6 +23,7 @@ from robocram.world.errors import (
 )
 from robocram.world.joint_state import ClampedJoint, JointLimits
 from robocram.world.obstacle_boxes import ObstacleBoxes
+from robocram.world.raw_distances import LinkGap, RawDistances
 from robocram.world.ray_hit import RayHit
 from robocram.world.visibility import Visibility
 from robocram.world.world import World
@@ -39,10 +40,12 @@ __all__ = [
     "ContactPoint",
     "DuplicateObjectError",
     "JointLimits",
+    "LinkGap",
     "MeshSpec",
     "NoCameraError",
     "NotARobotError",
     "ObstacleBoxes",
+    "RawDistances",
     "RayHit",
     "RobotObject",
     "ShapeSpec",

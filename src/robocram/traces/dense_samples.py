@@ -1,0 +1,118 @@
+"""Configurations along a stored trajectory, dense enough that nothing is stepped over.
+
+Between two stored points the robot moves on the straight joint segment (linear
+interpolation, as the replay does). The segment is cut into ``n`` equal steps, the least
+``n`` with every joint moving at most ``joint_step`` and every point of the robot and of
+what it holds at most ``point_step`` per step. A point's travel is bounded by the joints'
+levers, whatever the other joints do:
+
+- a revolute joint moves a link by at most (the rigid lengths between the joint and the
+  link, prismatic travel included, plus the link's radius) times its angle;
+- a prismatic joint, and the base's ``x`` and ``y``, by the distance itself;
+- the base's ``yaw`` as a revolute joint at the robot's root.
+
+A mimic joint's lever is added to its master's, times its multiplier. Radii are read from
+PyBullet's link bounds about the link's frame; a held object counts as part of the link it
+is attached to.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from robocram.robots import RobotModel
+from robocram.world import RawDistances, World
+
+FloatArray = NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class Levers:
+    """Per joint (and base joint): the most a point moves per unit of it [m/rad | m/m]."""
+
+    per_joint: Mapping[str, float]
+
+    @classmethod
+    def of(cls, world: World, robot: str, model: RobotModel, held: Mapping[str, str]) -> Levers:
+        """The levers of ``robot`` as it stands, holding ``held`` (object -> link)."""
+        radius = _radii(world, robot, held)
+        reach = _reach_below(model, radius)
+        levers: dict[str, float] = {}
+        for joint in model.movable_joints():
+            levers[joint.name] = 1.0 if joint.type == "prismatic" else reach[joint.child]
+        for joint in model.movable_joints():
+            if joint.mimic is not None and joint.mimic.joint in levers:
+                levers[joint.mimic.joint] += abs(joint.mimic.multiplier) * levers[joint.name]
+        levers |= {"x": 1.0, "y": 1.0, "yaw": reach[model.root_link]}
+        return cls(levers)
+
+    def steps(
+        self, names: Sequence[str], delta: FloatArray, joint_step: float, point_step: float
+    ) -> int:
+        """Steps for a move of ``delta`` (per joint of ``names``) within both bounds."""
+        moved = np.abs(delta)
+        travel = sum(
+            self.per_joint.get(n, 0.0) * float(d) for n, d in zip(names, moved, strict=True)
+        )
+        return max(1, math.ceil(float(np.max(moved)) / joint_step), math.ceil(travel / point_step))
+
+
+def dense_configurations(
+    names: Sequence[str], times: FloatArray, positions: FloatArray, levers: Levers,
+    joint_step: float, point_step: float,
+) -> Iterator[tuple[float, FloatArray]]:  # fmt: skip
+    """``(t, positions)`` from the first stored point to the last, within both steps."""
+    yield float(times[0]), positions[0]
+    for i in range(len(times) - 1):
+        n = levers.steps(names, positions[i + 1] - positions[i], joint_step, point_step)
+        for k in range(1, n + 1):
+            s = k / n
+            yield (
+                float((1.0 - s) * times[i] + s * times[i + 1]),
+                (1.0 - s) * positions[i] + s * positions[i + 1],
+            )
+
+
+def _radii(world: World, robot: str, held: Mapping[str, str]) -> dict[str, float]:
+    """Per link: how far its shapes (and what it holds) reach from its frame [m]."""
+    raw = RawDistances(world)
+    radius: dict[str, float] = {}
+    links = raw.collision_links(robot)
+    for link, box in zip(links, raw.link_bounds(robot, links), strict=True):
+        radius[link] = _far_corner(world.link_pose(robot, link).position, box)
+    for obj, link in held.items():
+        parts = raw.collision_links(obj)
+        origin = world.link_pose(robot, link).position
+        for box in raw.link_bounds(obj, parts):
+            radius[link] = max(radius.get(link, 0.0), _far_corner(origin, box))
+    return radius
+
+
+def _far_corner(origin: Sequence[float], box: tuple[Sequence[float], Sequence[float]]) -> float:
+    low, high = np.asarray(box[0]), np.asarray(box[1])
+    far = np.maximum(np.abs(low - origin), np.abs(high - origin))
+    return float(np.linalg.norm(far))
+
+
+def _reach_below(model: RobotModel, radius: Mapping[str, float]) -> dict[str, float]:
+    """Per link: the farthest any point below it (itself included) can be from its frame."""
+    children: dict[str, list[tuple[str, float]]] = {}
+    for joint in model.joints.values():
+        length = float(np.linalg.norm(joint.origin.position))
+        if joint.type == "prismatic":
+            length += max(abs(joint.lower or 0.0), abs(joint.upper or 0.0))
+        children.setdefault(joint.parent, []).append((joint.child, length))
+    reach: dict[str, float] = {}
+
+    def down(link: str) -> float:
+        below = [length + down(child) for child, length in children.get(link, [])]
+        reach[link] = max([radius.get(link, 0.0), *below])
+        return reach[link]
+
+    down(model.root_link)
+    return reach

@@ -1,0 +1,227 @@
+"""Penetrations of a robot (and what it holds) with the world and with itself, raw.
+
+PyBullet answers for every pair of links, through :class:`robocram.world.RawDistances`
+only: its own link bounds pick the pairs that may touch (bounds that do not overlap
+cannot hide a penetration), and its closest points give the depth. Nothing of the
+planner's checker is used. Per configuration, only the parts that moved since the last
+one are asked about again.
+
+Who may touch what:
+- robot links and objects of type ``floor``: any depth (the base stands on it);
+- a hand (an arm's hand and gripper links, and the link holding it) and the object its
+  arm holds: ``held_depth``;
+- what the trajectory's :class:`~robocram.motion.ContactAllowance` s allow: their depth;
+- anything else, the robot's own non-adjacent links included: ``penetration``.
+A contact allowed but deeper than its bound is its own kind of finding.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Collection, Iterable, Iterator, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from robocram.motion import ContactAllowance
+from robocram.robots import LoadedDescription
+from robocram.traces.audit_bounds import AuditBounds
+from robocram.traces.audit_findings import FindingKind
+from robocram.traces.link_adjacency import LinkPair
+from robocram.world import RawDistances, World
+
+FloatArray = NDArray[np.float64]
+# [m] how far apart pairs are asked for: asked for exactly 0, Bullet sometimes reports no
+# points for two penetrating links of one body, so the question reaches a hair farther
+QUERY_REACH = 1e-4
+
+
+@dataclass(frozen=True)
+class Part:
+    """One link with collision shapes: of the robot, of a held object, or of the world."""
+
+    body: str
+    link: str
+    only: bool = False  # the body's only link with collision shapes
+
+    @property
+    def label(self) -> str:
+        """``body:link``, or the body's name alone when it has one link with shapes."""
+        return self.body if self.only else f"{self.body}:{self.link}"
+
+
+@dataclass(frozen=True)
+class Penetration:
+    """A pair deeper than it may be, at one configuration."""
+
+    kind: FindingKind
+    what: str
+    depth: float  # [m]
+    bound: float  # [m]
+
+
+class PenetrationProbe:
+    """The pairs of one robot, in one world, during one trajectory (nothing else moves)."""
+
+    def __init__(
+        self,
+        world: World,
+        robot: str,
+        description: LoadedDescription,
+        held: dict[str, str],  # held object -> the robot link it is attached to
+        allowances: Sequence[ContactAllowance],
+        bounds: AuditBounds,
+        skipped: Collection[LinkPair],
+        groups: Sequence[str] | None = None,
+    ) -> None:
+        """``skipped``: pairs of the robot's links not judged (adjacent, always touching);
+        ``groups``: per part of :func:`robot_side_parts`, its moving group
+        (:func:`~robocram.traces.relative_motion.moving_groups`; ``""`` does not move);
+        None: every part moves and every pair is judged."""
+        self.raw = RawDistances(world)
+        self.bounds = bounds
+        self.allowances = tuple(allowances)
+        self.robot = robot
+        self.parts = robot_side_parts(world, robot, held)
+        labels = np.array(groups if groups is not None else range(len(self.parts)), dtype=object)
+        self._moving = np.flatnonzero(labels != "") if groups is not None else None
+        floors = {o.name for o in world.objects(type="floor")}
+        others = [o.name for o in world.objects() if o.name != robot and o.name not in held]
+        self.others = [part for o in others for part in _parts_of(self.raw, o)]
+        self._other_boxes = self._boxes(self.others)
+        self._hand_of = _hands(description, held)
+        self._world_mask = np.array(
+            [[not (p.body == robot and o.body in floors) for o in self.others] for p in self.parts],
+            dtype=bool,
+        ).reshape(len(self.parts), len(self.others))
+        pairs = self._judged_pairs(skipped)
+        self._self_pairs = pairs[labels[pairs[:, 0]] != labels[pairs[:, 1]]]
+        self._boxes_now = self._boxes(self.parts)
+
+    def _judged_pairs(self, skipped: Collection[LinkPair]) -> NDArray[np.intp]:
+        """Pairs of parts (robot links, held objects) judged against each other."""
+        pairs = []
+        for i, a in enumerate(self.parts):
+            for j in range(i + 1, len(self.parts)):
+                b = self.parts[j]
+                if a.body == b.body == self.robot and frozenset((a.link, b.link)) in skipped:
+                    continue
+                if a.body == b.body and a.body != self.robot:
+                    continue  # one held object's own links
+                pairs.append((i, j))
+        return np.array(pairs, dtype=np.intp).reshape(-1, 2)
+
+    def _boxes(self, parts: Sequence[Part]) -> FloatArray:
+        """(parts, 2, 3): each part's PyBullet bounds, low and high."""
+        boxes = np.zeros((len(parts), 2, 3))
+        by_body: dict[str, list[int]] = {}
+        for i, part in enumerate(parts):
+            by_body.setdefault(part.body, []).append(i)
+        for body, rows in by_body.items():
+            read = self.raw.link_bounds(body, [parts[i].link for i in rows])
+            boxes[rows] = np.array(read, dtype=float)
+        return boxes
+
+    def check(self, first: bool) -> Iterator[Penetration]:
+        """Penetrations now: at the ``first`` configuration of all parts, later only of
+        the parts that move and the pairs that move relative to each other."""
+        rows = self._moving if self._moving is not None and not first else None
+        if rows is None:
+            rows = np.arange(len(self.parts))
+        if len(rows):
+            self._boxes_now[rows] = self._boxes([self.parts[i] for i in rows])
+        yield from self._world(rows)
+        yield from self._self()
+
+    def _world(self, rows: NDArray[np.intp]) -> Iterator[Penetration]:
+        if not len(rows) or not self.others:
+            return
+        mine = self._boxes_now[rows]
+        overlap = (
+            np.all(
+                (mine[:, None, 0, :] <= self._other_boxes[None, :, 1, :])
+                & (self._other_boxes[None, :, 0, :] <= mine[:, None, 1, :]),
+                axis=2,
+            )
+            & self._world_mask[rows]
+        )
+        for r, o in zip(*np.nonzero(overlap), strict=True):
+            found = self._judged(self.parts[rows[r]], self.others[o])
+            if found is not None:
+                yield found
+
+    def _self(self) -> Iterator[Penetration]:
+        """The pairs moving relative to each other (all of them when no groups are given)."""
+        pairs = self._self_pairs
+        if not len(pairs):
+            return
+        a, b = self._boxes_now[pairs[:, 0]], self._boxes_now[pairs[:, 1]]
+        overlap = np.all((a[:, 0] <= b[:, 1]) & (b[:, 0] <= a[:, 1]), axis=1)
+        for i, j in pairs[overlap]:
+            found = self._judged(self.parts[i], self.parts[j])
+            if found is not None:
+                yield found
+
+    def _judged(self, mine: Part, other: Part) -> Penetration | None:
+        """The pair's penetration if deeper than it may be."""
+        gap = self.raw.closest(mine.body, mine.link, other.body, other.link, QUERY_REACH)
+        if gap is None or -gap.distance <= self.bounds.penetration:
+            return None  # within the general bound: never a finding, allowed or not
+        depth = -gap.distance
+        bound = self._allowed_depth(mine, other)
+        if bound is not None:
+            if depth <= bound:
+                return None
+            kind = FindingKind.ALLOWED_CONTACT_TOO_DEEP
+        else:
+            own = mine.body == other.body == self.robot
+            kind = FindingKind.SELF_PENETRATION if own else FindingKind.WORLD_PENETRATION
+            bound = self.bounds.penetration
+        return Penetration(kind, f"{mine.label} / {other.label}", depth, bound)
+
+    def _allowed_depth(self, mine: Part, other: Part) -> float | None:
+        """The deepest contact allowed between the two (None: none allowed)."""
+        found = [
+            a.depth
+            for x, y in ((mine, other), (other, mine))
+            for a in self.allowances
+            if a.covers(_side(x, self.robot), y.body, y.link)
+        ]
+        for x, y in ((mine, other), (other, mine)):
+            if (
+                x.body != self.robot
+                and y.body == self.robot
+                and y.link in self._hand_of.get(x.body, ())
+            ):
+                found.append(self.bounds.held_depth)
+        return max(found) if found else None
+
+
+def robot_side_parts(world: World, robot: str, held: Iterable[str]) -> list[Part]:
+    """The robot's links with collision shapes, then those of each held object."""
+    raw = RawDistances(world)
+    parts = [Part(robot, link) for link in raw.collision_links(robot)]
+    return parts + [part for obj in held for part in _parts_of(raw, obj)]
+
+
+def _parts_of(raw: RawDistances, body: str) -> list[Part]:
+    links = raw.collision_links(body)
+    return [Part(body, link, only=len(links) == 1) for link in links]
+
+
+def _side(part: Part, robot: str) -> str:
+    """The robot side's name in an allowance: a robot link, or a held object's name."""
+    return part.link if part.body == robot else part.body
+
+
+def _hands(description: LoadedDescription, held: dict[str, str]) -> dict[str, frozenset[str]]:
+    """Per held object: the links of the hand holding it (hand, gripper, the holding link)."""
+    hands: dict[str, frozenset[str]] = {}
+    for obj, link in held.items():
+        links = {link}
+        for arm in description.arms.values():
+            hand = {*arm.hand_links, *arm.gripper_links, arm.tool_frame, arm.end_effector_link}
+            if link in hand or link in arm.links:
+                links |= set(arm.hand_links) | set(arm.gripper_links)
+        hands[obj] = frozenset(links)
+    return hands
