@@ -11,8 +11,8 @@ more than ``point_step`` (5 mm) between them. Jumps: a joint or the base may cha
 
 ``skipped_self_pairs(world, robot)`` says which pairs of a robot's own links are not
 judged: by default the adjacent ones (:func:`~robocram.traces.link_adjacency.adjacent_links`
-of its model). It gets the replay world, so a per-robot matrix worked out on the world's
-shapes (pairs always in contact) can be added to them.
+of its model) and those the robot's self-collision matrix skips (:func:`matrix_pairs_of`);
+``adjacent_pairs_of`` judges every other pair.
 """
 
 from __future__ import annotations
@@ -20,6 +20,7 @@ from __future__ import annotations
 from collections.abc import Callable, Collection
 from dataclasses import dataclass, field
 
+from robocram.motion.self_collision_matrix import SelfCollisionMatrix
 from robocram.traces.link_adjacency import LinkPair, adjacent_links
 from robocram.world import World
 
@@ -27,8 +28,18 @@ SkippedSelfPairs = Callable[[World, str], Collection[LinkPair]]  # (world, robot
 
 
 def adjacent_pairs_of(world: World, robot: str) -> frozenset[LinkPair]:
-    """The adjacent pairs of ``robot``'s links (the default pairs the audit skips)."""
+    """The adjacent pairs of ``robot``'s links, as the audit works them out itself."""
     return adjacent_links(world.robot(robot).description.model)
+
+
+def matrix_pairs_of(world: World, robot: str) -> frozenset[LinkPair]:
+    """The pairs the audit skips by default: its own adjacent ones and those the robot's
+    :class:`~robocram.motion.self_collision_matrix.SelfCollisionMatrix` skips (convex
+    hulls that always overlap, or at rest, or bridge a flexed joint; pairs the
+    description allows). Only which pairs are read from it: every distance is the
+    audit's own."""
+    matrix = SelfCollisionMatrix.of(world, robot)
+    return adjacent_pairs_of(world, robot) | frozenset(matrix.skipped)
 
 
 @dataclass(frozen=True)
@@ -41,7 +52,7 @@ class AuditBounds:
     joint_step: float = 0.005  # [rad | m] between checked configurations, per joint
     point_step: float = 0.005  # [m] any point of the robot between checked configurations
     teleport: float = 1e-4  # [rad | m] a change without a trajectory
-    skipped_self_pairs: SkippedSelfPairs = field(default=adjacent_pairs_of)
+    skipped_self_pairs: SkippedSelfPairs = field(default=matrix_pairs_of)
 
     def __post_init__(self) -> None:
         for name in ("penetration", "held_depth", "limit_tolerance", "teleport"):
