@@ -37,15 +37,15 @@ def description() -> RobotDescription:
                 #   found at load
                 gripper_joints=("panda_finger_joint1",),
                 # why: stowed: within limits, the arm within 0.17 m of the base's middle (the
-                #   sampled pose: touching), no link touching another (meshes)
+                #   sampled pose: touching), 1 cm clear of its other links (meshes)
                 parking={
                     "panda_joint1": -2.897,
-                    "panda_joint2": -0.088,
-                    "panda_joint3": 0.705,
+                    "panda_joint2": -0.063,
+                    "panda_joint3": 0.73,
                     "panda_joint4": -3.071,
-                    "panda_joint5": 2.33,
+                    "panda_joint5": 2.23,
                     "panda_joint6": 3.752,
-                    "panda_joint7": 1.09,
+                    "panda_joint7": 0.915,
                 },
             ),
         },

@@ -46,7 +46,8 @@ def description() -> RobotDescription:
                 #   found at load
                 gripper_joints=("gripper_left_joint",),
                 # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
-                # TODO doubt: no collision check here: `robocram robot check` drives it
+                # TODO doubt: its links touch (arm_left_3_link/arm_left_5_link) and no stowed pose
+                #   was found: give one
                 parking={
                     "arm_left_1_joint": 0.785,
                     "arm_left_2_joint": 0.804,
@@ -70,16 +71,17 @@ def description() -> RobotDescription:
                 # why: mimicked by 6 hand joint(s) (<mimic> in the URDF); fingers and hand links are
                 #   found at load
                 gripper_joints=("gripper_right_joint",),
-                # why: stowed: within limits, the arm within 0.49 m of the base's middle (the
-                #   sampled pose: 0.55 m out), no link touching another (meshes)
+                # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
+                # TODO doubt: its links touch (arm_right_3_link/arm_right_5_link) and no stowed pose
+                #   was found: give one
                 parking={
-                    "arm_right_1_joint": 0.339,
-                    "arm_right_2_joint": -0.814,
-                    "arm_right_3_joint": 0.576,
+                    "arm_right_1_joint": -0.785,
+                    "arm_right_2_joint": -0.777,
+                    "arm_right_3_joint": 0.422,
                     "arm_right_4_joint": -2.234,
-                    "arm_right_5_joint": 2.267,
-                    "arm_right_6_joint": -0.823,
-                    "arm_right_7_joint": -0.157,
+                    "arm_right_5_joint": -1.771,
+                    "arm_right_6_joint": 0.457,
+                    "arm_right_7_joint": -0.181,
                 },
             ),
         },

@@ -40,15 +40,15 @@ def description() -> RobotDescription:
                 tool_frame="arm_standard_tool_frame",
                 # why: parent of the first arm joint; its joints down to the wrist are found at load
                 base_link="link00",
-                # why: stowed: within limits, the arm within 0.19 m of the base's middle (the
-                #   sampled pose: 0.32 m out), no link touching another (meshes)
+                # why: stowed: within limits, the arm within 0.18 m of the base's middle (the
+                #   sampled pose: 0.32 m out), 1 cm clear of its other links (meshes)
                 parking={
-                    "joint1": -2.309,
-                    "joint2": 1.059,
-                    "joint3": -0.038,
-                    "joint4": -0.042,
-                    "joint5": 1.268,
-                    "joint6": -2.383,
+                    "joint1": 1.228,
+                    "joint2": 1.799,
+                    "joint3": -0.128,
+                    "joint4": 0.802,
+                    "joint5": -1.304,
+                    "joint6": 2.184,
                 },
                 # why: the finger joints (prismatic, or leaves) right below the wrist; open at the
                 #   lower limit, where the fingers part

@@ -166,7 +166,7 @@ def _checked_path(
             )  # fmt: skip
             _confirm(scene, path, bound, what)
             blocked = own.first_collision(path.waypoints)
-            if blocked is not None:
+            if blocked is not None:  # between the snapshot's coarse edge checks
                 raise _self_blocked(what, "planned path", blocked)
             return path
         except ManipulationPathBlocked as failure:

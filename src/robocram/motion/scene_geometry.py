@@ -25,7 +25,6 @@ from robocram.motion.self_collision import (
     active_joints,
     adjacent_pairs,
     moving_group,
-    same_arm_chains,
 )
 
 
@@ -171,8 +170,7 @@ def _add_pairs(
 ) -> list[tuple[str, str]]:
     with_geometry = {o.link for o in owners if o.kind == "robot"}
     model = snap.description.model
-    roots = [model.joints[arm.joints[0]].child for arm in snap.description.arms.values()]
-    adjacent = adjacent_pairs(model, with_geometry) | same_arm_chains(model, roots)
+    adjacent = adjacent_pairs(model, with_geometry) | set(snap.skipped_self)
     labels: list[tuple[str, str]] = []
     near = _sphere_overlaps(spheres)
     decided: dict[tuple[object, ...], bool] = {}  # geometries of one link share the answer

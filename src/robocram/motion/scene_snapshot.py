@@ -12,6 +12,7 @@ from collections.abc import Collection, Sequence
 from dataclasses import dataclass
 
 from robocram.motion.errors import MotionError
+from robocram.motion.self_collision_matrix import SelfCollisionMatrix
 from robocram.robots import LoadedDescription
 from robocram.tf import Pose
 from robocram.world import CollisionShape, World
@@ -41,6 +42,7 @@ class SceneSnapshot:
     static: tuple[PlacedShape, ...]
     allowed_links: frozenset[str]
     margin: float  # [m]
+    skipped_self: frozenset[frozenset[str]] = frozenset()  # own pairs the matrix skips
 
     @classmethod
     def take(
@@ -69,6 +71,7 @@ class SceneSnapshot:
             tuple(_held_shapes(world, handle.name, desc)),
             tuple(_static_shapes(world, handle.name, held_names)),
             frozenset(allowed_links), float(margin),
+            frozenset(SelfCollisionMatrix.of(world, handle.name).skipped),
         )  # fmt: skip
 
 

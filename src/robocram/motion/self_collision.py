@@ -1,13 +1,11 @@
 """Which robot link pairs a self-collision check looks at, MoveIt's way.
 
 Two links are checked when some planned joint moves one relative to the other (else their
-contact never changes), they are not adjacent (joined by one joint, links without
-geometry and fixed joints looked through), they are not one above the other in the same
-arm (the arm's joint limits keep its own links apart, and convex hulls of neighbouring
-arm links overlap at many poses the real links clear), and they were apart at the
-snapshot (the scene drops pairs touching then, as MoveIt's setup assistant disables
-"default" ones). An arm is still checked against the torso, the base, the head and the
-other arm.
+contact never changes) and the robot's
+:class:`~robocram.motion.self_collision_matrix.SelfCollisionMatrix` checks them (not
+adjacent: joined by one joint, links without geometry and fixed joints looked through;
+not always in contact; not touching at rest or across one flexed joint). An arm is
+checked against the torso, the base, the head, the other arm and its own hand.
 """
 
 from __future__ import annotations
@@ -94,19 +92,3 @@ def _rigid_roots(model: RobotModel) -> dict[str, str]:
         find(link)
     return roots
 
-
-def same_arm_chains(model: RobotModel, arm_roots: Collection[str]) -> set[frozenset[str]]:
-    """Pairs of links below one arm's first link where one hangs below the other."""
-    children: dict[str, list[str]] = {}
-    for joint in model.joints.values():
-        children.setdefault(joint.parent, []).append(joint.child)
-    pairs: set[frozenset[str]] = set()
-
-    def walk(link: str, above: tuple[str, ...]) -> None:
-        pairs.update(frozenset((link, a)) for a in above)
-        for child in children.get(link, ()):
-            walk(child, (*above, link))
-
-    for root in arm_roots:
-        walk(root, ())
-    return pairs

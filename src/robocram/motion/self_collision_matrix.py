@@ -93,7 +93,9 @@ def _work_out(world: World, robot: str) -> SelfCollisionMatrix:
             rules.allows(a, Other(b, "robot")) or rules.allows(b, Other(a, "robot"))
         ):
             skipped[pair] = "allowed"
-    candidates = [(a, b) for a, b in itertools.combinations(links, 2) if frozenset((a, b)) not in skipped]
+    candidates = [
+        (a, b) for a, b in itertools.combinations(links, 2) if frozenset((a, b)) not in skipped
+    ]
     for pair in _always_touching(world, robot, candidates):
         skipped[frozenset(pair)] = "always"
     left = [p for p in candidates if frozenset(p) not in skipped]

@@ -1,7 +1,9 @@
-"""Which links of a robot meet in a configuration, on their collision meshes, without physics.
+"""Which links of a robot meet in a configuration, on their collision shapes, without physics.
 
 The draft has no world to ask (only ``robocram.world`` runs PyBullet), so it checks a
-pose it proposes through pinocchio's geometry (coal underneath), as MoveIt's setup
+pose it proposes through pinocchio's geometry (coal underneath), meshes as their convex
+hulls as PyBullet collides them (a concave torso's hull reaches far past its mesh), as
+MoveIt's setup
 assistant does before it writes an SRDF: pairs of links joined by one joint (fixed
 joints merged), and pairs that already meet with every joint at zero (within limits),
 are left out; every other pair counts.
@@ -33,6 +35,11 @@ class SelfContacts:
         text = model.to_urdf()
         self.kinematics = pin.buildModelFromXML(text)
         self.geometry = pin.buildGeomFromUrdfString(self.kinematics, text, pin.COLLISION)
+        for item in self.geometry.geometryObjects:  # as PyBullet collides a moving mesh
+            shape = item.geometry
+            if hasattr(shape, "buildConvexHull") and shape.num_vertices > 3:
+                shape.buildConvexHull(False, "Qt")
+                item.geometry = shape.convex
         self.links = [
             self.kinematics.frames[g.parentFrame].name for g in self.geometry.geometryObjects
         ]

@@ -53,7 +53,8 @@ def description() -> RobotDescription:
                 #   hand links are found at load
                 gripper_joints=("joint_gripper_finger_right", "joint_gripper_finger_left"),
                 # why: stowed: within limits, the telescope retracted, the arm within 0.25 m of the
-                #   base's middle (the sampled pose: touching), 1 cm clear of its other links (meshes)
+                #   base's middle (the sampled pose: touching), 1 cm clear of its other links
+                #   (meshes)
                 parking={
                     "joint_lift": 0.248,
                     "joint_arm_l3": 0.0,
