@@ -73,7 +73,8 @@ def _deepening(world: World, robot: str, joints: tuple[str, ...], waypoints) -> 
             for s in np.linspace(0.0, 1.0, n + 1):
                 world.set_joint_states(robot, dict(zip(joints, a + (b - a) * s, strict=True)))
                 deep = _depths(world, robot, pairs) - start
-                found.update(f"{p[2]}-{p[3]}" for p, d in zip(pairs, deep, strict=True) if d > DEEPER)
+                over = [p for p, d in zip(pairs, deep, strict=True) if d > DEEPER]
+                found.update(f"{p[2]}-{p[3]}" for p in over)
     finally:
         world.set_joint_states(robot, before)
     return sorted(found)
@@ -83,7 +84,8 @@ def test_the_matrix_checks_a_forearm_against_its_own_fingers(pr2: World) -> None
     matrix = SelfCollisionMatrix.of(pr2, "pr2")
     assert matrix.reason("r_forearm_link", "r_gripper_l_finger_link") is None
     assert ("r_forearm_link", "r_gripper_l_finger_link") in matrix.checked or (
-        "r_gripper_l_finger_link", "r_forearm_link"
+        "r_gripper_l_finger_link",
+        "r_forearm_link",
     ) in matrix.checked
     assert matrix.reason("r_elbow_flex_link", "r_upper_arm_roll_link") == "adjacent"
 

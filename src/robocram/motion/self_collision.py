@@ -91,4 +91,3 @@ def _rigid_roots(model: RobotModel) -> dict[str, str]:
     for link in model.links:
         find(link)
     return roots
-

@@ -21,7 +21,6 @@ import pinocchio as pin
 from robocram.robots.mimic import mimic_followers
 from robocram.robots.robot_model import RobotModel
 
-
 CLEARANCE = 0.01  # [m] links nearer than this on their meshes meet: a pose checked here is
 # checked again on PyBullet's convex hulls, which reach past the meshes (a Fetch's parked
 # finger 2.8 mm from its shoulder on the hulls), and a motion must reach it without touching

@@ -229,7 +229,6 @@ def self_contacts(
     return found
 
 
-
 def self_distances(
     world: WorldCore,
     obj: WorldObject,
