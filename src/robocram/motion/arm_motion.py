@@ -60,6 +60,7 @@ class MotionSettings:
     seed: int = 0
     budget: int = PLANNING_BUDGET  # configurations OMPL may check
     check: bool = True  # False: no collision checks at all (CRAM's allow_all)
+    period: float = 0.05  # [s] between the trajectory's samples (and at every waypoint)
 
 
 def planned_joints(desc: LoadedDescription, goal: Mapping[str, float]) -> tuple[str, ...]:
@@ -106,7 +107,9 @@ def plan_arm_motion(
         path = JointPath(joints, (tuple(start), tuple(end)), "straight", 0)
     else:
         path = _checked_path(world, robot, joints, allowed_links, start, end, settings, what)
-    trajectory = time_parameterize(robot, joints, path.waypoints, limits, kind="arm")
+    trajectory = time_parameterize(
+        robot, joints, path.waypoints, limits, kind="arm", period=settings.period
+    )
     return ArmMotion(path, trajectory)
 
 
@@ -208,5 +211,7 @@ def plan_tool_line(
         desc, arm, scene, current, tool, target_in_base, bound, random_seed=settings.seed
     )
     limits = joint_limits(desc, joints)
-    trajectory = time_parameterize(robot, joints, line.path.waypoints, limits, kind="cartesian")
+    trajectory = time_parameterize(
+        robot, joints, line.path.waypoints, limits, kind="cartesian", period=settings.period
+    )
     return ArmMotion(line.path, trajectory, line.fraction)

@@ -99,7 +99,7 @@ def straight_segment(
     start: FloatArray, end: FloatArray, limits: Sequence[JointLimits]
 ) -> StraightSegment:
     """Time the straight move ``start`` -> ``end`` (distinct points) under ``limits``."""
-    synced = _ruckig(
+    synced = rest_to_rest(
         start,
         end,
         [lim.velocity for lim in limits],
@@ -128,7 +128,7 @@ def along_line_segment(
     def cap(values: Sequence[float]) -> float:
         return float(np.min(np.asarray(values, dtype=float)[moving] / share[moving]))
 
-    line = _ruckig(
+    line = rest_to_rest(
         np.zeros(1),
         np.array([length]),
         [cap([lim.velocity for lim in limits])],
@@ -138,7 +138,7 @@ def along_line_segment(
     return StraightSegment(start, end, line, along_line=True)
 
 
-def _ruckig(
+def rest_to_rest(
     start: FloatArray,
     end: FloatArray,
     velocity: Sequence[float],

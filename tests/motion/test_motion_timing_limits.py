@@ -1,0 +1,220 @@
+"""Every kind of path keeps its joints' velocity, acceleration and jerk limits when timed.
+
+An independent judge, not the timing's own numbers: each motion is timed twice, at the
+usual period (0.05 s) and at :data:`DENSE` (2 ms, under 5 mm / 0.005 rad between
+samples at these speeds). The dense samples are the motion itself (the coarse points are
+among them, to 1e-9), so finite differences of their positions measure it:
+
+- a k-th divided difference of positions 2 ms apart is the k-th derivative at some
+  instant between them, so ``max |fd velocity|``, ``|fd acceleration|`` and ``|fd jerk|``
+  may not exceed the limits (times 1 + :data:`SLACK`, plus rounding);
+- the stored velocities and accelerations equal the central differences within what a
+  bounded jerk allows (``J h^2 / 6`` and ``J h / 3``, ``h`` the spacing);
+- between two stored points of the usual trajectory, velocity and acceleration change by
+  at most limit x time apart: no two points 1 us apart with different velocities.
+
+Covered: a PR2 tool line in the kitchen, an arm path of several waypoints, a holonomic
+base detour that turns, and a car's (``holonomic=False``) Reeds-Shepp path with a cusp.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
+
+import numpy as np
+import pytest
+
+from robocram.motion import (
+    BASE_JOINTS,
+    JointLimits,
+    JointTrajectory,
+    MotionSettings,
+    joint_limits,
+    plan_base_path,
+    plan_tool_line,
+    time_parameterize,
+)
+from robocram.tf import Pose
+from robocram.tf import quaternion as quat
+from robocram.world import World
+
+DENSE = 0.002  # [s] the judge's sampling period
+SLACK = 1e-3  # relative excess tolerated over a limit (rounding of the profiles' tables)
+
+
+@dataclass(frozen=True)
+class Excess:
+    """Largest ratio to its limit over joints and samples; residuals of stored values."""
+
+    velocity: float
+    acceleration: float
+    jerk: float
+    stored_velocity: float  # [/s] largest |stored - central difference| beyond J h^2 / 6
+    stored_acceleration: float  # [/s^2] ... beyond J h / 3
+
+    def within(self) -> bool:
+        return (
+            max(self.velocity, self.acceleration, self.jerk) <= 1.0 + SLACK
+            and max(self.stored_velocity, self.stored_acceleration) <= 1e-6
+        )
+
+
+def _ticks(trajectory: JointTrajectory, period: float) -> tuple[np.ndarray, ...]:
+    """The points at multiples of ``period`` (waypoint samples between them left out)."""
+    times = trajectory.times()
+    on_tick = np.abs(times / period - np.round(times / period)) < 1e-6
+    rows = np.flatnonzero(on_tick)
+    velocities = np.array([trajectory.points[i].velocities for i in rows])
+    accelerations = np.array([trajectory.points[i].accelerations for i in rows])
+    return times[rows], trajectory.positions()[rows], velocities, accelerations
+
+
+def excess(dense: JointTrajectory, limits: tuple[JointLimits, ...]) -> Excess:
+    """The judge: finite differences of the positions sampled every :data:`DENSE`."""
+    t, q, v, a = _ticks(dense, DENSE)
+    assert np.allclose(np.diff(t), DENSE, atol=1e-9)
+    assert dense.duration - t[-1] < DENSE + 1e-9
+    vel = np.array([lim.velocity for lim in limits])
+    acc = np.array([lim.acceleration for lim in limits])
+    jerk = np.array([lim.jerk for lim in limits])
+    h = DENSE
+    d1 = np.diff(q, axis=0) / h
+    d2 = np.diff(q, n=2, axis=0) / h**2
+    d3 = np.diff(q, n=3, axis=0) / h**3
+    central_v = (q[2:] - q[:-2]) / (2 * h)
+    stored_v = np.abs(v[1:-1] - central_v) - jerk * h * h / 6
+    stored_a = np.abs(a[1:-1] - d2) - jerk * h / 3
+    rounding = 4e-15 / h**3  # what rounding of positions near 1 does to a third difference
+    return Excess(
+        float(np.max(np.abs(d1) / vel)),
+        float(np.max(np.abs(d2) / acc)),
+        float(np.max((np.abs(d3) - rounding) / jerk)),
+        float(np.max(stored_v)),
+        float(np.max(stored_a)),
+    )
+
+
+def assert_stored_steps_within(
+    trajectory: JointTrajectory, limits: tuple[JointLimits, ...]
+) -> None:
+    """Between two stored points, velocities change by at most acceleration x time apart,
+    accelerations by at most jerk x time apart."""
+    dt = np.diff(trajectory.times())[:, None]
+    v = np.array([p.velocities for p in trajectory.points])
+    a = np.array([p.accelerations for p in trajectory.points])
+    acc = np.array([lim.acceleration for lim in limits])
+    jerk = np.array([lim.jerk for lim in limits])
+    assert np.all(np.abs(np.diff(v, axis=0)) <= acc * dt * (1 + SLACK) + 1e-9)
+    assert np.all(np.abs(np.diff(a, axis=0)) <= jerk * dt * (1 + SLACK) + 1e-9)
+
+
+def assert_same_motion(coarse: JointTrajectory, dense: JointTrajectory) -> None:
+    """The usual trajectory's points are the dense one's at the same times."""
+    assert coarse.duration == pytest.approx(dense.duration, abs=1e-9)
+    times = dense.times()
+    for point in coarse.points:
+        row = int(np.argmin(np.abs(times - point.time_from_start)))
+        if abs(times[row] - point.time_from_start) < 1e-9:
+            assert dense.points[row].positions == pytest.approx(point.positions, abs=1e-9)
+            assert dense.points[row].velocities == pytest.approx(point.velocities, abs=1e-9)
+
+
+def assert_keeps_limits(
+    coarse: JointTrajectory, dense: JointTrajectory, limits: tuple[JointLimits, ...]
+) -> Excess:
+    assert_same_motion(coarse, dense)
+    assert_stored_steps_within(coarse, limits)
+    found = excess(dense, limits)
+    assert found.within(), found
+    return found
+
+
+@pytest.fixture
+def world(kitchen: World) -> Iterator[World]:
+    with kitchen.stored_state():
+        yield kitchen
+
+
+def _pose(x: float, y: float, yaw: float) -> Pose:
+    return Pose((x, y, 0.0), quat.from_euler(0.0, 0.0, yaw))
+
+
+def test_a_pr2_tool_line_in_the_kitchen_keeps_its_limits(world: World) -> None:
+    desc = world.robot("pr2").description
+    tool = world.pose("pr2").inverse() * world.link_pose("pr2", desc.arms["right"].tool_frame)
+    shift = np.array((0.12, 0.0, -0.08))  # forward and down, as an approach: 8 waypoints
+    target = Pose(tuple((np.array(tool.position) + shift).tolist()), tool.orientation)
+
+    def line(period: float) -> JointTrajectory:
+        settings = MotionSettings(period=period)
+        motion = plan_tool_line(world, "pr2", "right", target, settings=settings)
+        assert motion.fraction == 1.0 and len(motion.path.waypoints) >= 8
+        return motion.trajectory
+
+    coarse, dense = line(0.05), line(DENSE)
+    assert coarse.kind == "cartesian"
+    assert_keeps_limits(coarse, dense, joint_limits(desc, coarse.joint_names))
+
+
+def test_an_arm_path_of_several_waypoints_keeps_its_limits(world: World) -> None:
+    """A lift, a crossing and a lowering (a detour's shape), then a gentle curve of 1 cm
+    steps (a planner's dense corner)."""
+    desc = world.robot("pr2").description
+    joints = desc.arms["right"].joints
+    limits = joint_limits(desc, joints)
+    s = np.linspace(0.0, 0.3, 31)
+    curve = np.stack(
+        [-0.9 + s, 0.5 * s**2, -0.5 - 0.3 * s, -1.0 + 0.2 * s, 0.3 + 0 * s, -0.6 + 0.1 * s, s],
+        axis=1,
+    )
+    path = np.vstack(
+        [
+            [[-1.0, 0.2, -0.5, -1.2, 0.3, -0.6, 0.0]],
+            [[-1.0, -0.2, -0.5, -1.2, 0.3, -0.6, 0.0]],
+            [[-0.9, -0.2, -0.5, -1.0, 0.3, -0.6, 0.0]],
+            curve[1:],
+        ]
+    )
+    coarse = time_parameterize("pr2", joints, path, limits)
+    dense = time_parameterize("pr2", joints, path, limits, period=DENSE)
+    assert_keeps_limits(coarse, dense, limits)
+
+
+def _base(world: World, goal: Pose, **options: object) -> Callable[[float], JointTrajectory]:
+    def timed(period: float) -> JointTrajectory:
+        return plan_base_path(world, "pr2", goal, period=period, **options).trajectory  # type: ignore[arg-type]
+
+    return timed
+
+
+def test_a_holonomic_base_path_round_a_crate_that_turns_keeps_its_limits(world: World) -> None:
+    world.set_pose("pr2", _pose(-1.0, 0.2, math.pi / 2))
+    world.add_box("crate", (0.3, 0.3, 0.8), (-0.2, 0.2, 0.4))
+    try:
+        goal = _pose(0.6, 0.2, math.pi / 2 + 0.8)
+        path = plan_base_path(world, "pr2", goal)
+        assert path.planner in ("detour", "RRTConnect") and len(path.poses) >= 3
+        timed = _base(world, goal)
+        coarse, dense = timed(0.05), timed(DENSE)
+    finally:
+        world.remove("crate")
+    limits = joint_limits(world.robot("pr2").description, BASE_JOINTS)
+    assert_keeps_limits(coarse, dense, limits)
+
+
+def test_a_car_path_with_a_cusp_keeps_its_limits(world: World) -> None:
+    """Sideways by 0.3 m: a Reeds-Shepp path that reverses (a cusp) and changes curvature."""
+    world.set_pose("pr2", _pose(-0.8, 0.2, math.pi / 2))
+    goal = _pose(-0.5, 0.3, math.pi / 2)
+    path = plan_base_path(world, "pr2", goal, holonomic=False)
+    poses = np.array(path.poses)
+    step = np.diff(poses, axis=0)
+    forward = np.cos(poses[:-1, 2]) * step[:, 0] + np.sin(poses[:-1, 2]) * step[:, 1]
+    assert np.any(forward > 1e-4) and np.any(forward < -1e-4)  # it reverses somewhere
+    timed = _base(world, goal, holonomic=False)
+    coarse, dense = timed(0.05), timed(DENSE)
+    limits = joint_limits(world.robot("pr2").description, BASE_JOINTS)
+    assert_keeps_limits(coarse, dense, limits)
+    assert coarse.end == pytest.approx({"x": -0.5, "y": 0.3, "yaw": math.pi / 2}, abs=1e-6)
