@@ -26,6 +26,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
 from ruckig import Trajectory
 
 from robocram.motion.joint_limits import JointLimits
@@ -39,6 +40,7 @@ from robocram.motion.time_parameterization import (
     time_parameterize,
 )
 
+BoolArray = npt.NDArray[np.bool_]
 ON_CURVE = 1e-7  # [m] a step whose chord is this far off the arc through its ends: mixed
 SAME_CURVATURE = 1e-6  # [1/m] steps of curvatures this close are on one curve
 END_TOLERANCE = 1e-6  # [m | rad] a curve must end this close to its last pose
@@ -111,7 +113,7 @@ def time_car_path(
     return sampled_trajectory(robot, BASE_JOINTS, np.array(stops), pieces, period, "base")
 
 
-def _steps(points: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
+def _steps(points: FloatArray) -> tuple[BoolArray, FloatArray, FloatArray]:
     """Per step: whether it lies on one curve, its signed length [m] and curvature [1/m]."""
     delta = np.diff(points, axis=0)
     mid = points[:-1, 2] + 0.5 * delta[:, 2]
