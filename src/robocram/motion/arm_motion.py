@@ -29,6 +29,7 @@ from robocram.motion.bullet_scene import BulletScene
 from robocram.motion.cartesian_path import cartesian_path
 from robocram.motion.coal_clearance import CoalClearance
 from robocram.motion.collision_scene import CollisionScene
+from robocram.motion.corner_blend import blend_radii
 from robocram.motion.joint_limits import joint_limits
 from robocram.motion.joint_path import PLANNING_BUDGET, JointPath, plan_joint_path
 from robocram.motion.joint_trajectory import JointTrajectory
@@ -211,7 +212,9 @@ def plan_tool_line(
         desc, arm, scene, current, tool, target_in_base, bound, random_seed=settings.seed
     )
     limits = joint_limits(desc, joints)
+    radii = blend_radii(scene, bound, line.path.waypoints)  # its gentle corners, checked
     trajectory = time_parameterize(
-        robot, joints, line.path.waypoints, limits, kind="cartesian", period=settings.period
-    )
+        robot, joints, line.path.waypoints, limits, kind="cartesian", period=settings.period,
+        corner_radii=radii,
+    )  # fmt: skip
     return ArmMotion(line.path, trajectory, line.fraction)

@@ -27,6 +27,7 @@ from typing import Protocol
 
 import numpy as np
 
+from robocram.motion.corner_blend import blended_run
 from robocram.motion.errors import MotionError
 from robocram.motion.joint_limits import JointLimits
 from robocram.motion.joint_trajectory import FloatArray, JointTrajectory, PointTable, still
@@ -57,8 +58,9 @@ def time_parameterize(
     *,
     kind: str = "arm",
     period: float = 0.05,
+    corner_radii: Sequence[float] | None = None,
 ) -> JointTrajectory:
-    """Time ``path`` (waypoints of ``joint_names``) under ``limits``, exactly on the polyline.
+    """Time ``path`` (waypoints of ``joint_names``) under ``limits``, on the polyline.
 
     Args:
         robot: The robot the trajectory is for.
@@ -67,6 +69,9 @@ def time_parameterize(
         limits: One :class:`JointLimits` per joint, same order (``joint_limits(desc, names)``).
         kind: What made it (``arm``, ``base``), kept in the trajectory.
         period: Sampling period [s].
+        corner_radii: Per inner waypoint, the radius of a blend checked free
+            (:func:`~robocram.motion.corner_blend.blend_radii`; 0: rest there). None:
+            rest at every corner, exactly on the polyline.
 
     Raises:
         MotionError: widths that do not match, non-finite values, a waypoint outside a
@@ -80,9 +85,37 @@ def time_parameterize(
             distinct.append(point)
     if len(distinct) == 1:
         return JointTrajectory(robot, names, still(robot, names, distinct[0].tolist()).points, kind)
+    if corner_radii is not None and len(distinct) == len(points) > 2:
+        if len(corner_radii) != len(points) - 2:
+            raise MotionError(
+                f"{len(corner_radii)} corner radii for {len(points) - 2} inner waypoints"
+            )
+        stops, pieces = _blended(np.array(distinct), np.array(corner_radii, dtype=float), limits)
+        return sampled_trajectory(robot, names, stops, pieces, period, kind)
     corners = _corners(distinct)
-    pieces = [straight_segment(a, b, limits) for a, b in zip(corners, corners[1:], strict=False)]
-    return sampled_trajectory(robot, names, np.array(corners), pieces, period, kind)
+    straight = [straight_segment(a, b, limits) for a, b in zip(corners, corners[1:], strict=False)]
+    return sampled_trajectory(robot, names, np.array(corners), straight, period, kind)
+
+
+def _blended(
+    points: FloatArray, radii: FloatArray, limits: Sequence[JointLimits]
+) -> tuple[FloatArray, list[TimedPiece]]:
+    """Runs between the corners of radius 0, each blended through its inner corners (or,
+    when that is no faster, resting at each): the stops and the pieces between them."""
+    rests = [0, *(np.flatnonzero(radii <= 0.0) + 1).tolist(), len(points) - 1]
+    stops, pieces = [points[0]], []
+    for first, last in zip(rests[:-1], rests[1:], strict=True):
+        run = None
+        if last - first > 1:
+            run = blended_run(points[first : last + 1], radii[first : last - 1], limits)
+        if run is not None:
+            pieces.append(run)
+            stops.append(points[last])
+            continue
+        for k in range(first, last):
+            pieces.append(straight_segment(points[k], points[k + 1], limits))
+            stops.append(points[k + 1])
+    return np.array(stops), pieces
 
 
 def _corners(waypoints: list[FloatArray]) -> list[FloatArray]:
