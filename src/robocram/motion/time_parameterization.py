@@ -103,7 +103,8 @@ def _blended(
     """Runs between the corners of radius 0, each blended through its inner corners (or,
     when that is no faster, resting at each): the stops and the pieces between them."""
     rests = [0, *(np.flatnonzero(radii <= 0.0) + 1).tolist(), len(points) - 1]
-    stops, pieces = [points[0]], list[TimedPiece]()
+    stops = [points[0]]
+    pieces: list[TimedPiece] = []
     for first, last in zip(rests[:-1], rests[1:], strict=True):
         run = None
         if last - first > 1:
