@@ -16,10 +16,12 @@ so along ``s``
   limits hold), and the blend is within ``3 b |u2 - u1| / 16`` of the polyline.
 
 **Checked.** The blend leaves the checked polyline, so it is walked on the same checker
-before it is used (:func:`blend_radii`): by conservative advancement on the checker's
-clearance along the blend itself (a configuration clear by ``c`` leaves every one within
-``c`` of link travel free; :class:`TravelBound`). A blend not proven free within a
-radius is tried at a quarter of it, then the robot rests at that corner.
+before it is used (:func:`blend_radii`), as a straight segment is
+(:func:`~robocram.motion.segment_check.segment_free`): conservative advancement on the
+checker's clearances along the blend itself (a link clear by ``c`` stays free while no
+point of it moves farther; :class:`TravelBound`), steps of at least 1 cm of travel, the
+contact check deciding where a link touches. A blend not found free is tried at a
+quarter of its radius, then the robot rests at that corner.
 
 **Timed.** A run of blended corners is one jerk-limited 1-D ruckig profile ``s(t)`` from
 rest to rest. With ``g1, g2, g3`` the bounds of ``|q'|, |q''|, |q'''|`` per joint over
@@ -42,6 +44,7 @@ import numpy as np
 from ruckig import Trajectory
 
 from robocram.motion.configuration_checker import (
+    ClearanceChecker,
     ConfigurationChecker,
     can_tell_clearance,
     posed,
@@ -53,7 +56,6 @@ from robocram.motion.travel_bound import TravelBound
 
 SHARP_TURN = 1.0  # [rad | m per rad | m] |u2 - u1| above which the robot rests (60 deg)
 SHARES = (0.25, 0.5, 0.75)  # alpha: the share of acceleration and jerk left to s_ddot
-MIN_CLEARANCE = 1e-3  # [m] a blend configuration nearer than this fails the walk
 MAX_WALK = 64  # clearance queries a blend may spend before it counts as not proven free
 SHRINK = 0.25  # a blend not proven free is tried again at this share of its radius
 
@@ -151,27 +153,40 @@ def blend_radii(
 
 
 def _blend_free(
-    checker: ConfigurationChecker,
+    checker: ClearanceChecker,
     bound: TravelBound,
     corner: FloatArray,
     u1: FloatArray,
     u2: FloatArray,
     b: float,
 ) -> bool:
-    """Whether every configuration on the blend is free: conservative advancement along
-    it, a step never moving a point farther than the clearance where it starts."""
-    clearance = getattr(checker, "clearance")  # noqa: B009 (can_tell_clearance checked it)
-    speed = float(bound.lever @ np.maximum(np.abs(u1), np.abs(u2)))  # [m] per unit of s
+    """Whether the blend is free as a straight segment is (:func:`segment_free`'s walk):
+    conservative advancement along the blend itself, each step moving no point of a
+    link farther than that link's clearance where it starts (links not named are clear by
+    the checker's reach), at least :data:`MAX_LINK_TRAVEL`; where a link touches, the
+    contact check decides. Along the blend ``|dq_j/ds| <= max(|u1_j|, |u2_j|)``."""
+    rate = np.maximum(np.abs(u1), np.abs(u2))
+    speed = float(bound.lever @ rate)  # [m] the most any point moves per unit of s
+    if speed <= 0.0:
+        return True
+    by_link: dict[str, float] = {}
+    floor = bound.max_link_travel / speed
     s = 0.0
     for _ in range(MAX_WALK):
         x = np.array([min(s / (2.0 * b), 1.0)])
         q = blend_state(corner[None, :], u1[None, :], u2[None, :], np.array([b]), x)[0][0]
-        gap = float(clearance(q))
-        if gap < MIN_CLEARANCE:
+        gaps = checker.clearances(q)
+        if min(gaps.values(), default=1.0) <= 0.0 and not checker.is_free(q):
             return False
-        if s >= 2.0 * b:
+        step = checker.reach / speed
+        for link, gap in gaps.items():
+            if link not in by_link:
+                by_link[link] = bound.link_travel(link, np.zeros_like(rate), rate)
+            if by_link[link] > 0.0:
+                step = min(step, gap / by_link[link])
+        s += max(step, floor)
+        if s >= 2.0 * b:  # the rest is within this step (its end is on the polyline)
             return True
-        s = min(s + gap / speed, 2.0 * b)
     return False
 
 
