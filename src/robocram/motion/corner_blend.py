@@ -214,13 +214,36 @@ def blended_run(
         speed, accel, jolt = _caps(alpha, g1, g2, g3, velocity, acceleration, jerk)
         profiles.append(rest_to_rest(np.zeros(1), s_points[-1:], [speed], [accel], [jolt]))
     best = min(profiles, key=lambda profile: float(profile.duration))  # the first of ties
-    resting = sum(
-        along_line_segment(a, b, limits).duration
-        for a, b in zip(points[:-1], points[1:], strict=True)
-    )
-    if resting <= best.duration:
-        return None
+    if _resting_at_least(lengths, units, velocity, acceleration, jerk) <= best.duration:
+        pairs = zip(points[:-1], points[1:], strict=True)
+        resting = sum(along_line_segment(a, b, limits).duration for a, b in pairs)
+        if resting <= best.duration:
+            return None
     return BlendedRun(points, units, s_points, radii, best)
+
+
+def _resting_at_least(
+    lengths: FloatArray,
+    units: FloatArray,
+    velocity: FloatArray,
+    acceleration: FloatArray,
+    jerk: FloatArray,
+) -> float:
+    """A lower bound [s] on resting at every corner: per segment, the longest of the
+    times each limit alone needs (``L / v``, ``2 sqrt(L / a)``, ``(32 L / j)^(1/3)``) at
+    the segment's caps; ruckig is asked only when the blend is not faster than this."""
+    size = np.abs(units)
+    moving = size > 0.0
+
+    def caps(limit: FloatArray) -> FloatArray:
+        rates = np.divide(limit, size, out=np.full(size.shape, np.inf), where=moving)
+        return rates.min(axis=1)
+
+    times = np.maximum(
+        np.maximum(lengths / caps(velocity), 2.0 * np.sqrt(lengths / caps(acceleration))),
+        np.cbrt(32.0 * lengths / caps(jerk)),
+    )
+    return float(times.sum())
 
 
 def _caps(
