@@ -11,7 +11,12 @@ among them, to 1e-9), so finite differences of their positions measure it:
 - the stored velocities and accelerations equal the central differences within what a
   bounded jerk allows (``J h^2 / 6`` and ``J h / 3``, ``h`` the spacing);
 - between two stored points of the usual trajectory, velocity and acceleration change by
-  at most limit x time apart: no two points 1 us apart with different velocities.
+  at most limit x time apart: no two points 1 us apart with different velocities;
+- a judge replaying the usual trajectory's stored points alone finds them within limits
+  twice: by their divided differences (k! times the k-th divided difference is the k-th
+  derivative somewhere between the points), and as a controller interpolates them, by a
+  quintic Hermite polynomial per interval from the stored positions, velocities and
+  accelerations, its derivatives read at 21 instants per interval.
 
 Covered: a PR2 tool line in the kitchen, an arm path of several waypoints, a holonomic
 base detour that turns, and a car's (``holonomic=False``) Reeds-Shepp path with a cusp.
@@ -110,6 +115,47 @@ def assert_stored_steps_within(
     assert np.all(np.abs(np.diff(a, axis=0)) <= jerk * dt * (1 + SLACK) + 1e-9)
 
 
+def _limit_rows(limits: tuple[JointLimits, ...]) -> list[np.ndarray]:
+    return [
+        np.array([getattr(lim, n) for lim in limits]) for n in ("velocity", "acceleration", "jerk")
+    ]
+
+
+def divided_excess(trajectory: JointTrajectory, limits: tuple[JointLimits, ...]) -> list[float]:
+    """Largest ratio to the limit of k! times the k-th divided differences (k = 1, 2, 3)
+    of the stored positions."""
+    t, d = trajectory.times(), trajectory.positions()
+    found = []
+    for k, limit in enumerate(_limit_rows(limits), start=1):
+        d = (d[1:] - d[:-1]) / (t[k:] - t[:-k])[:, None]
+        found.append(float(np.max(np.abs(d) * math.factorial(k) / limit)))
+    return found
+
+
+def hermite_excess(trajectory: JointTrajectory, limits: tuple[JointLimits, ...]) -> list[float]:
+    """Largest ratio to the limit of velocity, acceleration and jerk of the quintic Hermite
+    interpolation of the stored points (what a ROS joint trajectory controller follows)."""
+    t, q = trajectory.times(), trajectory.positions()
+    v = np.array([p.velocities for p in trajectory.points])
+    a = np.array([p.accelerations for p in trajectory.points])
+    h = np.diff(t)[:, None]
+    step, v0, v1, a0, a1 = q[1:] - q[:-1], v[:-1], v[1:], a[:-1], a[1:]
+    c3 = (20 * step - (8 * v1 + 12 * v0) * h - (3 * a0 - a1) * h**2) / (2 * h**3)
+    c4 = (-30 * step + (14 * v1 + 16 * v0) * h + (3 * a0 - 2 * a1) * h**2) / (2 * h**4)
+    c5 = (12 * step - 6 * (v1 + v0) * h + (a1 - a0) * h**2) / (2 * h**5)
+    worst = [0.0, 0.0, 0.0]
+    for u in np.linspace(0.0, 1.0, 21):
+        tau = u * h
+        rates = (
+            v0 + a0 * tau + 3 * c3 * tau**2 + 4 * c4 * tau**3 + 5 * c5 * tau**4,
+            a0 + 6 * c3 * tau + 12 * c4 * tau**2 + 20 * c5 * tau**3,
+            6 * c3 + 24 * c4 * tau + 60 * c5 * tau**2,
+        )
+        for k, (rate, limit) in enumerate(zip(rates, _limit_rows(limits), strict=True)):
+            worst[k] = max(worst[k], float(np.max(np.abs(rate) / limit)))
+    return worst
+
+
 def assert_same_motion(coarse: JointTrajectory, dense: JointTrajectory) -> None:
     """The usual trajectory's points are the dense one's at the same times."""
     assert coarse.duration == pytest.approx(dense.duration, abs=1e-9)
@@ -126,6 +172,8 @@ def assert_keeps_limits(
 ) -> Excess:
     assert_same_motion(coarse, dense)
     assert_stored_steps_within(coarse, limits)
+    assert max(divided_excess(coarse, limits)) <= 1.0 + SLACK
+    assert max(hermite_excess(coarse, limits)) <= 1.0 + SLACK
     found = excess(dense, limits)
     assert found.within(), found
     return found

@@ -31,7 +31,12 @@ from ruckig import Trajectory
 
 from robocram.motion.joint_limits import JointLimits
 from robocram.motion.joint_trajectory import BASE_JOINTS, FloatArray, JointTrajectory
-from robocram.motion.straight_segment import profile_states, rest_to_rest, straight_segment
+from robocram.motion.straight_segment import (
+    profile_states,
+    profile_switches,
+    rest_to_rest,
+    straight_segment,
+)
 from robocram.motion.time_parameterization import (
     SAME_POINT,
     TimedPiece,
@@ -62,6 +67,10 @@ class CarCurve:
     def duration(self) -> float:
         """Time from rest at the start to rest at the end [s]."""
         return float(self.profile.duration)
+
+    def breaks(self) -> FloatArray:
+        """The times [s] inside the curve where the path jerk changes."""
+        return profile_switches(self.profile)
 
     def states(self, times: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
         """Poses, velocities and accelerations of x, y, yaw at ``times`` [s]."""

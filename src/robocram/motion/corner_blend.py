@@ -51,7 +51,12 @@ from robocram.motion.configuration_checker import (
 )
 from robocram.motion.joint_limits import JointLimits
 from robocram.motion.joint_trajectory import FloatArray
-from robocram.motion.straight_segment import along_line_segment, profile_states, rest_to_rest
+from robocram.motion.straight_segment import (
+    along_line_segment,
+    profile_states,
+    profile_switches,
+    rest_to_rest,
+)
 from robocram.motion.travel_bound import TravelBound
 
 SHARP_TURN = 1.0  # [rad | m per rad | m] |u2 - u1| above which the robot rests (60 deg)
@@ -75,6 +80,15 @@ class BlendedRun:
     def duration(self) -> float:
         """Time from rest at the first waypoint to rest at the last [s]."""
         return float(self.profile.duration)
+
+    def breaks(self) -> FloatArray:
+        """The times [s] inside the run where the jerk may jump: the profile's switches
+        and the ends of the blends (where the path's third derivative does)."""
+        corners = self.s_points[1:-1]
+        edges = np.concatenate([corners - self.radii, corners + self.radii])
+        found = [self.profile.get_first_time_at_position(0, float(s)) for s in edges]
+        times = np.array([t for t in found if t is not None], dtype=float)
+        return np.unique(np.concatenate([profile_switches(self.profile), times]))
 
     def states(self, times: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
         """Positions, velocities, accelerations at ``times`` [s], one row per time."""

@@ -36,6 +36,7 @@ from robocram.motion.straight_segment import straight_segment
 COLLINEAR = 1e-9  # [rad | m] a waypoint this close to its neighbours' line is no corner
 SAME_POINT = 1e-12  # [rad | m] consecutive waypoints closer than this are one waypoint
 SAME_TIME = 1e-9  # [s] a periodic sample this close to a waypoint's time is dropped
+BREAK_GAP = 1e-6  # [s] a jerk switch this close to another sample gets no sample
 LIMIT_SLACK = 1e-9  # [rad | m] a waypoint this far outside a position limit still counts
 
 State = tuple[FloatArray, FloatArray, FloatArray]
@@ -48,6 +49,8 @@ class TimedPiece(Protocol):
     def duration(self) -> float: ...
 
     def states(self, times: FloatArray) -> State: ...
+
+    def breaks(self) -> FloatArray: ...
 
 
 def time_parameterize(
@@ -151,7 +154,7 @@ def sampled_trajectory(
     ``stops[k + 1]``), sampled every ``period`` [s] and at every stop (its exact position,
     at rest)."""
     ends = np.cumsum([0.0] + [piece.duration for piece in pieces])
-    ticks = _ticks(ends, period)
+    ticks = _with_breaks(_ticks(ends, period), ends, pieces)
     count, width = len(ticks) + len(ends), stops.shape[1]
     tick_rows = np.arange(len(ticks)) + ends.searchsorted(ticks)  # none is a stop
     stop_rows = np.arange(len(ends)) + ticks.searchsorted(ends)
@@ -172,6 +175,25 @@ def sampled_trajectory(
         rates[0][rows] = values[1]
         rates[1][rows] = values[2]
     return JointTrajectory(robot, names, PointTable(positions, *rates, times), kind)
+
+
+def _with_breaks(ticks: FloatArray, ends: FloatArray, pieces: Sequence[TimedPiece]) -> FloatArray:
+    """``ticks`` and the times where a piece's jerk changes, but for those within
+    :data:`BREAK_GAP` of a tick, a stop or another: between two samples the motion is
+    then one polynomial (on a straight piece), which a controller's quintic
+    interpolation of the samples reproduces."""
+    pairs = zip(pieces, ends, strict=False)
+    breaks = np.concatenate([piece.breaks() + end for piece, end in pairs])
+    if not len(breaks):
+        return ticks
+    taken = np.sort(np.concatenate([ticks, ends]))
+    kept: list[float] = []
+    for t in np.sort(breaks).tolist():
+        i = int(taken.searchsorted(t))
+        near = min(abs(t - taken[max(i - 1, 0)]), abs(t - taken[min(i, len(taken) - 1)]))
+        if near > BREAK_GAP and (not kept or t - kept[-1] > BREAK_GAP):
+            kept.append(t)
+    return np.sort(np.concatenate([ticks, kept]))
 
 
 def _ticks(stops: FloatArray, period: float) -> FloatArray:
