@@ -15,8 +15,10 @@ neighbours are passed without stopping (the geometry is the same line).
 Blending corners (or smoothing the path) would leave the checked polyline and need a
 check of the new geometry; a caller that can check it may smooth the path first.
 
-The trajectory is sampled every ``period`` and at every waypoint
-(:func:`sampled_trajectory`, shared with :mod:`robocram.motion.car_timing`).
+The trajectory is sampled every ``period``, at every rest and at every jerk switch
+(:func:`sampled_trajectory`, shared with :mod:`robocram.motion.car_timing` and the
+blended runs of :mod:`robocram.motion.corner_blend`): between two samples a straight
+piece is one cubic polynomial, which a controller's quintic interpolation reproduces.
 """
 
 from __future__ import annotations
