@@ -1,4 +1,4 @@
-"""Time a collision-checked joint-space polyline without leaving it.
+"""Time a collision-checked joint-space polyline, leaving it only on checked blends.
 
 The path's waypoints were checked densely along straight lines between them, so the
 timed trajectory stays on those lines: every sampled point lies on the polyline (within
@@ -12,8 +12,10 @@ straight; checked), the time-optimal straight move under every joint's velocity,
 acceleration and jerk limit; waypoints within :data:`COLLINEAR` of the line through their
 neighbours are passed without stopping (the geometry is the same line).
 
-Blending corners (or smoothing the path) would leave the checked polyline and need a
-check of the new geometry; a caller that can check it may smooth the path first.
+Blending a corner leaves the checked polyline, so it needs a check of the new geometry:
+a caller that has the path's checker passes ``corner_radii`` of blends walked free on it
+(:func:`~robocram.motion.corner_blend.blend_radii`, as tool lines do); a run of such
+corners is passed without stopping (:mod:`robocram.motion.corner_blend`).
 
 The trajectory is sampled every ``period``, at every rest and at every jerk switch
 (:func:`sampled_trajectory`, shared with :mod:`robocram.motion.car_timing` and the
