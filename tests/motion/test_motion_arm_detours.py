@@ -13,12 +13,13 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
+from typing import Any
 
 import numpy as np
 import pytest
 
 from robocram.kinematics import solve_ik
-from robocram.motion import joint_limits, plan_arm_motion
+from robocram.motion import MotionSettings, joint_limits, plan_arm_motion
 from robocram.motion.arm_detours import DETOUR_LIFTS, MIN_LIFT, ToolHeight, detour_path
 from robocram.motion.bullet_scene import BulletScene
 from robocram.motion.coal_clearance import CoalClearance
@@ -190,3 +191,22 @@ def test_a_lift_one_joint_leaves_short_is_carried_on_by_the_next(
     moved = np.flatnonzero(shared != q).tolist()
     assert len(moved) == 2 and moved[0] == 0 and shared[0] == pytest.approx(box[1][0])
     assert all(box[0][i] <= shared[i] <= box[1][i] for i in moved)
+
+
+@pytest.mark.parametrize("motion", [LOW_BOX, TALL_BOX], indirect=True)
+def test_a_detour_and_a_planned_path_keep_the_joint_limits(
+    motion: tuple, timing_judge: Any
+) -> None:
+    """Timed at the usual period and every 2 ms, judged by finite differences
+    (``timing_judge.py``): several waypoints, at rest at each corner."""
+    scene, _, end = motion
+    world = scene.world
+    goal = dict(zip(JOINTS, end, strict=True))
+    coarse, dense = (
+        plan_arm_motion(world, "pr2", goal, settings=MotionSettings(period=period))
+        for period in (0.05, timing_judge.DENSE)
+    )
+    assert coarse.path.planner in ("detour", "rrt_connect") and len(coarse.path.waypoints) >= 3
+    assert dense.path == coarse.path
+    limits = joint_limits(world.robot("pr2").description, JOINTS)
+    timing_judge.assert_keeps_limits(coarse.trajectory, dense.trajectory, limits)

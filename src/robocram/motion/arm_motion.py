@@ -29,6 +29,7 @@ from robocram.motion.bullet_scene import BulletScene
 from robocram.motion.cartesian_path import cartesian_path
 from robocram.motion.coal_clearance import CoalClearance
 from robocram.motion.collision_scene import CollisionScene
+from robocram.motion.corner_blend import blend_radii
 from robocram.motion.joint_limits import joint_limits
 from robocram.motion.joint_path import PLANNING_BUDGET, JointPath, plan_joint_path
 from robocram.motion.joint_trajectory import JointTrajectory
@@ -61,6 +62,7 @@ class MotionSettings:
     seed: int = 0
     budget: int = PLANNING_BUDGET  # configurations OMPL may check
     check: bool = True  # False: no collision checks at all (CRAM's allow_all)
+    period: float = 0.05  # [s] between the trajectory's samples (and at every waypoint)
 
 
 def planned_joints(desc: LoadedDescription, goal: Mapping[str, float]) -> tuple[str, ...]:
@@ -107,7 +109,9 @@ def plan_arm_motion(
         path = JointPath(joints, (tuple(start), tuple(end)), "straight", 0)
     else:
         path = _checked_path(world, robot, joints, allowed_links, start, end, settings, what)
-    trajectory = time_parameterize(robot, joints, path.waypoints, limits, kind="arm")
+    trajectory = time_parameterize(
+        robot, joints, path.waypoints, limits, kind="arm", period=settings.period
+    )
     return ArmMotion(path, trajectory)
 
 
@@ -241,10 +245,16 @@ def plan_tool_line(
         desc, arm, scene, current, tool, target_in_base, bound, random_seed=settings.seed
     )
     fraction = line.fraction
-    own = SelfPathCheck.of(world, robot, joints)
-    blocked = own.first_collision(line.path.waypoints)
-    if blocked is not None:  # not followed: the caller moves in joint space instead
-        fraction = fraction * blocked[0] if blocked[0] < 1.0 else 0.0
+    if fraction >= 1.0:  # a line cut short is not followed: no need to walk it
+        blocked = SelfPathCheck.of(world, robot, joints).first_collision(line.path.waypoints)
+        if blocked is not None:  # not followed: the caller moves in joint space instead
+            fraction = blocked[0] if blocked[0] < 1.0 else 0.0
     limits = joint_limits(desc, joints)
-    trajectory = time_parameterize(robot, joints, line.path.waypoints, limits, kind="cartesian")
+    radii = (  # its gentle corners, checked; a line not followed needs none
+        blend_radii(scene, bound, line.path.waypoints) if fraction >= 1.0 else None
+    )
+    trajectory = time_parameterize(
+        robot, joints, line.path.waypoints, limits, kind="cartesian", period=settings.period,
+        corner_radii=radii,
+    )  # fmt: skip
     return ArmMotion(line.path, trajectory, fraction)

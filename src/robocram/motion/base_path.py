@@ -20,6 +20,7 @@ import numpy as np
 
 from robocram.execution.failures import NavigationPathBlocked, NavigationPoseUnreachable
 from robocram.motion.base_collision import ESCAPE, BaseCollisionChecker, blockers_at, yaw_of
+from robocram.motion.car_timing import time_car_path
 from robocram.motion.errors import MotionError
 from robocram.motion.joint_limits import joint_limits
 from robocram.motion.joint_trajectory import BASE_JOINTS, JointTrajectory
@@ -141,11 +142,13 @@ def plan_base_path(
                 )
             waypoints = found
         poses = tuple((float(p[0]), float(p[1]), float(p[2])) for p in waypoints)
-        desc = world.robot(robot).description
-        trajectory = time_parameterize(
-            robot, BASE_JOINTS, poses, joint_limits(desc, BASE_JOINTS), kind="base",
-            period=period,
-        )  # fmt: skip
+        limits = joint_limits(world.robot(robot).description, BASE_JOINTS)
+        if car:  # on its curves, resting where the curvature changes
+            trajectory = time_car_path(robot, poses, limits, period=period)
+        else:
+            trajectory = time_parameterize(
+                robot, BASE_JOINTS, poses, limits, kind="base", period=period
+            )
         return BasePath(
             robot, poses, planner, trajectory, checker.fast_checks, checker.exact_checks
         )

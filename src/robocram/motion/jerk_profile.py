@@ -34,6 +34,12 @@ class JerkProfile:
         t, p, v, a, half_a, j = self._phase_starts(times)
         return p + t * (v + t * (half_a + t * j / 6)), v + t * (a + t * j / 2), a + t * j
 
+    def switches(self) -> FloatArray:
+        """The times [s] strictly inside the profile where some joint's jerk changes,
+        sorted (between two of them every joint's motion is one cubic polynomial)."""
+        ends = self.ends[:, :PHASES]
+        return np.unique(ends[(ends > 0.0) & (ends < ends.max())])
+
     def positions(self, times: FloatArray) -> FloatArray:
         """The positions of :meth:`states` alone."""
         t, p, v, _, half_a, j = self._phase_starts(times)

@@ -19,9 +19,14 @@ shapes (PyBullet's hulls, what every check and the audit measure), once per robo
 - **allowed**: the description's ``allowed_contacts`` name the pair (an SRDF's disabled
   pairs are drafted into them).
 
+- **never**: never nearer than :data:`NEVER_GAP` in :data:`NEVER_SAMPLES` seeded samples
+  of every joint within its limits (a PR2's laser mount and a shoulder that pans beside
+  it, 3 cm apart at their nearest), as MoveIt's setup assistant finds them. Sampling
+  cannot prove a pair apart; the audit (:mod:`~robocram.traces.trajectory_audit`) judges
+  every pair the matrix skips as never, so a sample that missed shows up there.
+
 Every other pair of links with shapes is checked, also within one arm (a forearm against
-its own fingers). Pairs never seen touching in the samples are still checked: a few
-hundred samples cannot prove a pair apart, and only a check can.
+its own fingers).
 """
 
 from __future__ import annotations
@@ -40,6 +45,8 @@ from robocram.world import World
 
 SAMPLES = 64  # configurations sampled to find pairs always in contact
 SEED = 0
+NEVER_SAMPLES = 1000  # configurations sampled to find pairs that never come near
+NEVER_GAP = 0.01  # [m] a pair nearer than this in some sample is checked
 NEAR_JOINTS = 4  # movable joints between two links for a contact at rest to be skipped
 
 
@@ -48,7 +55,7 @@ class SelfCollisionMatrix:
     """The checked pairs of one robot's links, and why each other pair is skipped."""
 
     checked: tuple[tuple[str, str], ...]
-    skipped: Mapping[frozenset[str], str]  # adjacent | always | default | chained | allowed
+    skipped: Mapping[frozenset[str], str]  # adjacent always default chained never allowed
 
     @classmethod
     def of(cls, world: World, robot: str) -> SelfCollisionMatrix:
@@ -102,6 +109,9 @@ def _work_out(world: World, robot: str) -> SelfCollisionMatrix:
     for pair in _touching_at_rest(world, robot, left):
         if _joints_between(desc.model, *pair) <= NEAR_JOINTS:
             skipped[frozenset(pair)] = "default"
+    left = [p for p in candidates if frozenset(p) not in skipped]
+    for pair in _never_near(world, robot, left):
+        skipped[frozenset(pair)] = "never"
     checked = tuple(p for p in candidates if frozenset(p) not in skipped)
     return SelfCollisionMatrix(checked, skipped)
 
@@ -129,6 +139,26 @@ def _always_touching(
     finally:
         world.set_joint_states(robot, before, carry=False)
     return survivors
+
+
+def _never_near(
+    world: World, robot: str, candidates: list[tuple[str, str]]
+) -> list[tuple[str, str]]:
+    """The pairs among ``candidates`` never nearer than :data:`NEVER_GAP` in the samples
+    (a pair found near once is asked no more)."""
+    model = world.robot(robot).description.model
+    movable = [j for j in world.joint_states(robot) if model.joints[j].mimic is None]
+    before = {j: v for j, v in world.joint_states(robot).items() if j in movable}
+    rng = np.random.default_rng(SEED + 1)
+    far = list(candidates)
+    try:
+        for _ in range(NEVER_SAMPLES):
+            world.set_joint_states(robot, _sample(model, movable, rng), carry=False)
+            gaps = world.self_distances(robot, far, NEVER_GAP)
+            far = [p for p, gap in zip(far, gaps.tolist(), strict=True) if gap >= NEVER_GAP]
+    finally:
+        world.set_joint_states(robot, before, carry=False)
+    return far
 
 
 def _touching_at_rest(

@@ -53,6 +53,12 @@ class StraightSegment:
         """Ruckig's profile as tables (None: asked of ruckig time by time)."""
         return jerk_profile(self.trajectory)
 
+    def breaks(self) -> FloatArray:
+        """The times [s] inside the segment where a joint's jerk changes (none known
+        for a profile not kept as tables)."""
+        profile = self._profile
+        return np.zeros(0) if profile is None else profile.switches()
+
     def _sampled(self, times: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
         """Ruckig's states at ``times`` (within the profile), one row per time."""
         profile = self._profile
@@ -99,7 +105,7 @@ def straight_segment(
     start: FloatArray, end: FloatArray, limits: Sequence[JointLimits]
 ) -> StraightSegment:
     """Time the straight move ``start`` -> ``end`` (distinct points) under ``limits``."""
-    synced = _ruckig(
+    synced = rest_to_rest(
         start,
         end,
         [lim.velocity for lim in limits],
@@ -128,7 +134,7 @@ def along_line_segment(
     def cap(values: Sequence[float]) -> float:
         return float(np.min(np.asarray(values, dtype=float)[moving] / share[moving]))
 
-    line = _ruckig(
+    line = rest_to_rest(
         np.zeros(1),
         np.array([length]),
         [cap([lim.velocity for lim in limits])],
@@ -138,7 +144,7 @@ def along_line_segment(
     return StraightSegment(start, end, line, along_line=True)
 
 
-def _ruckig(
+def rest_to_rest(
     start: FloatArray,
     end: FloatArray,
     velocity: Sequence[float],
@@ -197,3 +203,10 @@ def profile_states(
         return profile.states(times)
     samples = np.array([trajectory.at_time(float(t)) for t in times], dtype=float)
     return samples[:, 0], samples[:, 1], samples[:, 2]
+
+
+def profile_switches(trajectory: Trajectory) -> FloatArray:
+    """The times [s] strictly inside ``trajectory`` where a joint's jerk changes (none
+    for a profile that is not one section without braking)."""
+    profile = jerk_profile(trajectory)
+    return np.zeros(0) if profile is None else profile.switches()

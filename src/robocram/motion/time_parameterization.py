@@ -1,54 +1,60 @@
-"""Time a collision-checked joint-space polyline without leaving it.
+"""Time a collision-checked joint-space polyline, leaving it only on checked blends.
 
 The path's waypoints were checked densely along straight lines between them, so the
-timed trajectory must stay on those lines: every sampled point lies on the polyline
-(within 1e-6). Two kinds of corner decide how:
+timed trajectory stays on those lines: every sampled point lies on the polyline (within
+1e-6). A joint's velocity must be continuous and its acceleration and jerk bounded, and on
+a polyline that means **rest at every corner**: passing a corner of turn ``du`` at path
+speed ``s_dot`` changes the joint velocities at once by ``du * s_dot``, an unbounded
+acceleration whatever the speed cap (the profile this replaced did so, up to 20x the
+acceleration limit and 1,000x the jerk limit measured 2 ms apart on a tool line). So each
+segment is timed jerk-limited by ruckig from rest to rest (phase-synchronised, so
+straight; checked), the time-optimal straight move under every joint's velocity,
+acceleration and jerk limit; waypoints within :data:`COLLINEAR` of the line through their
+neighbours are passed without stopping (the geometry is the same line).
 
-- a **sharp corner** (the direction turns by more than :data:`SMOOTH_TURN`) is where the
-  robot stops; the single segments between sharp corners are timed jerk-limited by ruckig
-  (phase-synchronised, so straight; checked) from rest to rest, the time-optimal straight
-  move under every joint's velocity, acceleration and jerk limit;
-- a **smooth corner** (a dense path, e.g. a Cartesian line as 15 waypoints 2 cm
-  apart) is passed without stopping: the run of segments between sharp corners is timed
-  along its arc length (:mod:`robocram.motion.arc_length_profile`) with per-segment
-  velocity and acceleration caps and corner speeds that keep each joint's velocity step at
-  a corner within ``acceleration * period``. Merging nearly collinear segments into one
-  ruckig move instead would leave the polyline, so it is not done.
+Blending a corner leaves the checked polyline, so it needs a check of the new geometry:
+a caller that has the path's checker passes ``corner_radii`` of blends walked free on it
+(:func:`~robocram.motion.corner_blend.blend_radii`, as tool lines do); a run of such
+corners is passed without stopping (:mod:`robocram.motion.corner_blend`).
 
-The trajectory is sampled every ``period`` and at every waypoint.
+The trajectory is sampled every ``period``, at every rest and at every jerk switch
+(:func:`sampled_trajectory`, shared with :mod:`robocram.motion.car_timing` and the
+blended runs of :mod:`robocram.motion.corner_blend`): between two samples a straight
+piece is one cubic polynomial, which a controller's quintic interpolation reproduces.
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from typing import Protocol
 
 import numpy as np
 
-from robocram.motion.arc_length_profile import ArcRun, IntArray, arc_length_run
+from robocram.motion.corner_blend import blended_run
 from robocram.motion.errors import MotionError
 from robocram.motion.joint_limits import JointLimits
 from robocram.motion.joint_trajectory import FloatArray, JointTrajectory, PointTable, still
-from robocram.motion.straight_segment import StraightSegment, straight_segment
+from robocram.motion.straight_segment import straight_segment
 
-SMOOTH_TURN = 0.2  # [rad] turns of the path's direction up to this are passed without stopping
+COLLINEAR = 1e-9  # [rad | m] a waypoint this close to its neighbours' line is no corner
 SAME_POINT = 1e-12  # [rad | m] consecutive waypoints closer than this are one waypoint
 SAME_TIME = 1e-9  # [s] a periodic sample this close to a waypoint's time is dropped
+BREAK_GAP = 1e-6  # [s] a jerk switch this close to another sample gets no sample
 LIMIT_SLACK = 1e-9  # [rad | m] a waypoint this far outside a position limit still counts
 
 State = tuple[FloatArray, FloatArray, FloatArray]
 
 
-@dataclass(frozen=True)
-class _Timeline:
-    """The timed path on the global clock: its motions one after another, and its pieces
-    (one per segment, from waypoint ``k`` to ``k + 1``, numbered along the path)."""
+class TimedPiece(Protocol):
+    """A piece of a trajectory from rest to rest: its duration and its states."""
 
-    motions: list[StraightSegment | ArcRun]
-    firsts: IntArray  # (motions,) the first piece of each motion
-    offsets: FloatArray  # (motions,) [s] global time of each motion's own time 0
-    stops: FloatArray  # (pieces + 1,) [s] when the path passes each waypoint
+    @property
+    def duration(self) -> float: ...
+
+    def states(self, times: FloatArray) -> State: ...
+
+    def breaks(self) -> FloatArray: ...
 
 
 def time_parameterize(
@@ -59,8 +65,9 @@ def time_parameterize(
     *,
     kind: str = "arm",
     period: float = 0.05,
+    corner_radii: Sequence[float] | None = None,
 ) -> JointTrajectory:
-    """Time ``path`` (waypoints of ``joint_names``) under ``limits``, exactly on the polyline.
+    """Time ``path`` (waypoints of ``joint_names``) under ``limits``, on the polyline.
 
     Args:
         robot: The robot the trajectory is for.
@@ -68,62 +75,69 @@ def time_parameterize(
         path: Waypoints [rad | m], already collision-checked along straight lines.
         limits: One :class:`JointLimits` per joint, same order (``joint_limits(desc, names)``).
         kind: What made it (``arm``, ``base``), kept in the trajectory.
-        period: Sampling period [s]; also the corner blend time of dense paths.
+        period: Sampling period [s].
+        corner_radii: Per inner waypoint, the radius of a blend checked free
+            (:func:`~robocram.motion.corner_blend.blend_radii`; 0: rest there). None:
+            rest at every corner, exactly on the polyline.
 
     Raises:
         MotionError: widths that do not match, non-finite values, a waypoint outside a
             position limit, a non-positive period or limit (each named).
     """
     names = tuple(joint_names)
-    points = _checked_path(names, path, limits, period)
+    points = checked_path(names, path, limits, period)
     distinct = [points[0]]
     for point in points[1:]:
         if _length(point - distinct[-1]) > SAME_POINT:
             distinct.append(point)
     if len(distinct) == 1:
         return JointTrajectory(robot, names, still(robot, names, distinct[0].tolist()).points, kind)
-    timeline = _timed_path(distinct, limits, period)
-    return JointTrajectory(robot, names, _sampled(np.array(distinct), timeline, period), kind)
+    if corner_radii is not None and len(distinct) == len(points) > 2:
+        if len(corner_radii) != len(points) - 2:
+            raise MotionError(
+                f"{len(corner_radii)} corner radii for {len(points) - 2} inner waypoints"
+            )
+        stops, pieces = _blended(np.array(distinct), np.array(corner_radii, dtype=float), limits)
+        return sampled_trajectory(robot, names, stops, pieces, period, kind)
+    corners = _corners(distinct)
+    straight = [straight_segment(a, b, limits) for a, b in zip(corners, corners[1:], strict=False)]
+    return sampled_trajectory(robot, names, np.array(corners), straight, period, kind)
 
 
-def _timed_path(
-    waypoints: list[FloatArray], limits: Sequence[JointLimits], period: float
-) -> _Timeline:
-    """Split at sharp corners and time each run, runs one after another from rest."""
-    motions: list[StraightSegment | ArcRun] = []
-    firsts, offsets, ends = [], [], [np.zeros(1)]
-    clock = 0.0
-    for first, last in _runs(waypoints):
-        motion: StraightSegment | ArcRun
-        if last - first == 1:
-            motion = straight_segment(waypoints[first], waypoints[last], limits)
-            piece_ends = np.array([motion.duration])
-        else:
-            motion = arc_length_run(waypoints[first : last + 1], limits, period)
-            piece_ends = motion.t_ends
-        motions.append(motion)
-        firsts.append(first)
-        offsets.append(clock)
-        ends.append(clock + piece_ends)
-        clock = float(ends[-1][-1])
-    return _Timeline(
-        motions, np.array(firsts, dtype=np.intp), np.array(offsets), np.concatenate(ends)
-    )
+def _blended(
+    points: FloatArray, radii: FloatArray, limits: Sequence[JointLimits]
+) -> tuple[FloatArray, list[TimedPiece]]:
+    """Runs between the corners of radius 0, each blended through its inner corners (or,
+    when that is no faster, resting at each): the stops and the pieces between them."""
+    rests = [0, *(np.flatnonzero(radii <= 0.0) + 1).tolist(), len(points) - 1]
+    stops = [points[0]]
+    pieces: list[TimedPiece] = []
+    for first, last in zip(rests[:-1], rests[1:], strict=True):
+        run = None
+        if last - first > 1:
+            run = blended_run(points[first : last + 1], radii[first : last - 1], limits)
+        if run is not None:
+            pieces.append(run)
+            stops.append(points[last])
+            continue
+        for k in range(first, last):
+            pieces.append(straight_segment(points[k], points[k + 1], limits))
+            stops.append(points[k + 1])
+    return np.array(stops), pieces
 
 
-def _runs(waypoints: list[FloatArray]) -> list[tuple[int, int]]:
-    """Index ranges ``(first, last)`` of waypoints between sharp corners."""
-    runs = []
-    first = 0
+def _corners(waypoints: list[FloatArray]) -> list[FloatArray]:
+    """The waypoints but those within :data:`COLLINEAR` of the segment joining their
+    neighbours kept (they lie on it, so the robot passes them without stopping)."""
+    kept = [waypoints[0]]
     for k in range(1, len(waypoints) - 1):
-        before = waypoints[k] - waypoints[k - 1]
-        after = waypoints[k + 1] - waypoints[k]
-        cos = float(before.dot(after)) / (_length(before) * _length(after))
-        if math.acos(min(max(cos, -1.0), 1.0)) > SMOOTH_TURN:
-            runs.append((first, k))
-            first = k
-    runs.append((first, len(waypoints) - 1))
-    return runs
+        a, b, c = kept[-1], waypoints[k], waypoints[k + 1]
+        chord = c - a
+        along = float((b - a).dot(chord)) / float(chord.dot(chord))
+        if not 0.0 < along < 1.0 or _length(b - a - along * chord) > COLLINEAR:
+            kept.append(b)
+    kept.append(waypoints[-1])
+    return kept
 
 
 def _length(vector: FloatArray) -> float:
@@ -132,38 +146,58 @@ def _length(vector: FloatArray) -> float:
     return math.sqrt(float(vector.dot(vector)))
 
 
-def _sampled(waypoints: FloatArray, timeline: _Timeline, period: float) -> PointTable:
-    """Points every ``period`` and at every waypoint; at a waypoint, its exact position
-    with the mean of the motions arriving and leaving (at rest at both ends).
-
-    A time between waypoints belongs to the first piece that does not end before it.
-    """
-    stops = timeline.stops
-    ticks = _ticks(stops, period)
-    count, pieces, width = len(ticks) + len(stops), len(stops) - 1, waypoints.shape[1]
-    tick_rows = np.arange(len(ticks)) + stops.searchsorted(ticks)  # none is a stop
-    stop_rows = np.arange(len(stops)) + ticks.searchsorted(stops)
-    owner = (stops[1:] + SAME_TIME).searchsorted(ticks, side="left")
-    corners = np.arange(1, pieces)  # waypoint k joins piece k - 1 and piece k
-    asked = _states(
-        timeline,
-        np.concatenate([np.minimum(owner, pieces - 1), corners - 1, corners]),
-        np.concatenate([ticks, stops[1:-1], stops[1:-1]]),  # a piece starts where the last ends
-        width,
-    )
+def sampled_trajectory(
+    robot: str,
+    names: tuple[str, ...],
+    stops: FloatArray,
+    pieces: Sequence[TimedPiece],
+    period: float,
+    kind: str,
+) -> JointTrajectory:
+    """The pieces one after another (piece ``k`` from rest at ``stops[k]`` to rest at
+    ``stops[k + 1]``), sampled every ``period`` [s] and at every stop (its exact position,
+    at rest)."""
+    ends = np.cumsum([0.0] + [piece.duration for piece in pieces])
+    ticks = _with_breaks(_ticks(ends, period), ends, pieces)
+    count, width = len(ticks) + len(ends), stops.shape[1]
+    tick_rows = np.arange(len(ticks)) + ends.searchsorted(ticks)  # none is a stop
+    stop_rows = np.arange(len(ends)) + ticks.searchsorted(ends)
+    owner = np.minimum((ends[1:] + SAME_TIME).searchsorted(ticks, side="left"), len(pieces) - 1)
     times = np.empty(count)
     times[tick_rows] = ticks
-    times[stop_rows] = stops
+    times[stop_rows] = ends
     positions = np.empty((count, width))
-    positions[tick_rows] = asked[0][: len(ticks)]
-    positions[stop_rows] = waypoints
+    positions[stop_rows] = stops
     rates = np.zeros((count, width)), np.zeros((count, width))
-    arriving = slice(len(ticks), len(ticks) + len(corners))  # rows asked for the corners
-    leaving = slice(len(ticks) + len(corners), None)
-    for row, values in zip(rates, asked[1:], strict=True):
-        row[tick_rows] = values[: len(ticks)]
-        row[stop_rows[1:-1]] = 0.5 * (values[arriving] + values[leaving])
-    return PointTable(positions, *rates, times)
+    for k, piece in enumerate(pieces):
+        mine = np.flatnonzero(owner == k)
+        if not len(mine):
+            continue
+        values = piece.states(ticks[mine] - ends[k])
+        rows = tick_rows[mine]
+        positions[rows] = values[0]
+        rates[0][rows] = values[1]
+        rates[1][rows] = values[2]
+    return JointTrajectory(robot, names, PointTable(positions, *rates, times), kind)
+
+
+def _with_breaks(ticks: FloatArray, ends: FloatArray, pieces: Sequence[TimedPiece]) -> FloatArray:
+    """``ticks`` and the times where a piece's jerk changes, but for those within
+    :data:`BREAK_GAP` of a tick, a stop or another: between two samples the motion is
+    then one polynomial (on a straight piece), which a controller's quintic
+    interpolation of the samples reproduces."""
+    pairs = zip(pieces, ends, strict=False)
+    breaks = np.concatenate([piece.breaks() + end for piece, end in pairs])
+    if not len(breaks):
+        return ticks
+    taken = np.sort(np.concatenate([ticks, ends]))
+    kept: list[float] = []
+    for t in np.sort(breaks).tolist():
+        i = int(taken.searchsorted(t))
+        near = min(abs(t - taken[max(i - 1, 0)]), abs(t - taken[min(i, len(taken) - 1)]))
+        if near > BREAK_GAP and (not kept or t - kept[-1] > BREAK_GAP):
+            kept.append(t)
+    return np.sort(np.concatenate([ticks, kept]))
 
 
 def _ticks(stops: FloatArray, period: float) -> FloatArray:
@@ -174,35 +208,7 @@ def _ticks(stops: FloatArray, period: float) -> FloatArray:
     return ticks[gap > SAME_TIME]
 
 
-def _states(timeline: _Timeline, owners: IntArray, times: FloatArray, width: int) -> State:
-    """Positions, velocities, accelerations (one row each) of piece ``owners[i]`` at global
-    time ``times[i]`` [s]; each motion computes all of its rows at once."""
-    if len(timeline.motions) == 1:  # most paths: one straight move or one smooth run
-        motion = timeline.motions[0]
-        local = times - timeline.offsets[0]
-        return motion.states(owners, local) if isinstance(motion, ArcRun) else motion.states(local)
-    group = timeline.firsts.searchsorted(owners, side="right") - 1
-    segment = owners - timeline.firsts[group]
-    local = times - timeline.offsets[group]
-    out = (
-        np.zeros((len(times), width)),
-        np.zeros((len(times), width)),
-        np.zeros((len(times), width)),
-    )
-    for g, motion in enumerate(timeline.motions):
-        mine = np.flatnonzero(group == g)
-        if not len(mine):
-            continue
-        if isinstance(motion, ArcRun):
-            values = motion.states(segment[mine], local[mine])
-        else:
-            values = motion.states(local[mine])
-        for row, value in zip(out, values, strict=True):
-            row[mine] = value
-    return out
-
-
-def _checked_path(
+def checked_path(
     names: tuple[str, ...],
     path: Sequence[Sequence[float]] | np.ndarray,
     limits: Sequence[JointLimits],
