@@ -298,20 +298,17 @@ def test_a_clean_run_exits_0(tmp_path: Path, capsys: pytest.CaptureFixture[str])
     assert int(line.split(", ")[1].split()[0]) > 0.3 / 0.005  # 5 mm steps at least
 
 
-def test_pairs_skipped_as_always_touching_make_a_pr2_drive_clean(tmp_path: Path) -> None:
-    """Today the PR2's convex hulls overlap at rest (the base and the shoulders, ...); a
-    disabled-pair matrix skipping pairs that always touch makes its drive clean."""
+def test_the_matrix_skips_the_hulls_a_pr2_overlaps_at_rest_and_its_drive_is_clean(
+    tmp_path: Path,
+) -> None:
+    """The PR2's convex hulls overlap at rest (the base and the shoulders, ...): judged on
+    adjacency alone its drive sinks them 258 mm; the self-collision matrix the audit
+    skips by default (adjacent, always, default, chained, never) makes it clean."""
     world = _traced_drive(tmp_path / "pr2.db", "pr2")
-    touching = {
-        frozenset((p.link_a, p.link_b))
-        for p in world.contact_points("pr2", "pr2")
-        if p.distance < -0.001 and p.link_a != p.link_b
-    }
     world.close()
     with TraceDatabase(tmp_path / "pr2.db", create=False) as db:
-        plain = audit_runs(db)
-        skipping = AuditBounds(skipped_self_pairs=lambda w, r: adjacent_pairs_of(w, r) | touching)
-        matrix = audit_runs(db, bounds=skipping)
+        plain = audit_runs(db, bounds=AuditBounds(skipped_self_pairs=adjacent_pairs_of))
+        matrix = audit_runs(db)
     assert set(plain.counts()) == {FindingKind.SELF_PENETRATION}
     worst = plain.worst(FindingKind.SELF_PENETRATION)
     assert worst is not None and worst.what == "pr2:base_link / pr2:r_shoulder_pan_link"
@@ -383,18 +380,14 @@ def test_a_pr2_kitchen_transport_closes_its_fingers_into_the_mug(
     assert not others  # nothing else of the kitchen is touched, drives included
 
 
-def test_a_pr2_kitchen_transport_tool_lines_exceed_acceleration_and_jerk(
-    kitchen_report: AuditReport,
-) -> None:
-    over = [
-        f
-        for kind in (FindingKind.ACCELERATION, FindingKind.JERK, FindingKind.VELOCITY)
-        for f in kitchen_report.of(kind)
-    ]
-    assert {f.kind for f in over} == {FindingKind.ACCELERATION, FindingKind.JERK}
-    assert all("moving-tcp" in (f.task_path or "") for f in over)
-    worst = kitchen_report.worst(FindingKind.ACCELERATION)
-    assert worst is not None and worst.amount > 2.0 * worst.bound
+def test_a_pr2_kitchen_transport_keeps_every_limit(kitchen_report: AuditReport) -> None:
+    """Tool lines used to pass their corners at speed (20x the acceleration limit); every
+    path kind is now timed within velocity, acceleration and jerk."""
+    for kind in (
+        FindingKind.VELOCITY, FindingKind.ACCELERATION, FindingKind.JERK,
+        FindingKind.VELOCITY_MISMATCH, FindingKind.ACCELERATION_MISMATCH,
+    ):  # fmt: skip
+        assert kitchen_report.of(kind) == []
 
 
 def test_an_hsr_kitchen_transport_stays_within_its_limits_and_off_the_kitchen(
@@ -410,7 +403,7 @@ def test_an_hsr_kitchen_transport_stays_within_its_limits_and_off_the_kitchen(
     jumped = {f.what.split()[2] for f in report.of(FindingKind.TELEPORT)}
     assert jumped == {"head_pan_joint", "head_tilt_joint", "hand_motor_joint"}
     hulls = {f.what for f in report.of(FindingKind.SELF_PENETRATION)}
-    assert "hsrb:torso_lift_link / hsrb:arm_lift_link" in hulls  # the telescope's hulls
+    assert "hsrb:torso_lift_link / hsrb:arm_lift_link" not in hulls  # the matrix skips it
     # the open hand's finger in the base, parked: Bullet asked for 0 would not say so
     (finger,) = [
         f

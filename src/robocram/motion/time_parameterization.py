@@ -133,7 +133,11 @@ def _corners(waypoints: list[FloatArray]) -> list[FloatArray]:
     for k in range(1, len(waypoints) - 1):
         a, b, c = kept[-1], waypoints[k], waypoints[k + 1]
         chord = c - a
-        along = float((b - a).dot(chord)) / float(chord.dot(chord))
+        span = float(chord.dot(chord))
+        if span == 0.0:  # out and back: b is a turning point
+            kept.append(b)
+            continue
+        along = float((b - a).dot(chord)) / span
         if not 0.0 < along < 1.0 or _length(b - a - along * chord) > COLLINEAR:
             kept.append(b)
     kept.append(waypoints[-1])
