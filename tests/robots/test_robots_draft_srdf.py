@@ -111,7 +111,7 @@ def test_srdf_draft_checks_as_the_plain_draft_does(tucked_srdf: Path) -> None:
         warnings.simplefilter("ignore")
         card = check_robot(_draft(FETCH_URDF, tucked_srdf).description)
     failed = [r.name for r in card.results if not r.passed]
-    assert failed == ["arm arm: grip"]
+    assert failed == ["arm arm: grip"], card.render()
     assert "arm arm: parking" in [r.name for r in card.results]
 
 

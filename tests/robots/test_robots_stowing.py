@@ -36,8 +36,8 @@ def test_stretch_parks_stowed_with_its_telescope_retracted() -> None:
     contacts = SelfContacts(model)
     assert not contacts.touches(parking)
     sampled = parking_pose(model, list(parking), "link_wrist_roll")
-    # the sampled pose folds the wrist back onto the telescope
-    assert ("link_arm_l0", "link_wrist_pitch") in contacts.meeting(sampled)
+    # the sampled pose folds the hand back onto the telescope
+    assert ("link_arm_l0", "link_straight_gripper") in contacts.meeting(sampled)
     for joint, value in parking.items():
         spec = model.joints[joint]
         assert spec.lower is not None and spec.upper is not None

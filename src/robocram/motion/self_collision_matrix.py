@@ -8,10 +8,13 @@ shapes (PyBullet's hulls, what every check and the audit measure), once per robo
 - **always**: touching in every sampled configuration (:data:`SAMPLES`, seeded), as hulls
   of neighbouring covers do: they can never be apart, so their contact says nothing;
 - **default**: touching where the robot rests (every arm and the neck parked, grippers
-  open or closed) and at most :data:`NEAR_JOINTS` movable joints apart, as MoveIt
-  disables pairs in collision at its default pose: convex hulls of a folded elbow's two
-  halves overlap where the meshes clear. A pair farther apart that touches at rest (a
-  parked hand inside the base) is still checked: that parking pose is wrong;
+  open or closed), as MoveIt disables pairs in collision at its default pose: convex
+  hulls of a folded elbow's two halves overlap where the meshes clear, and a Fetch tucked
+  as its makers tuck it sinks its forearm's hull 10 mm into the torso's. Unlike MoveIt,
+  such a pair is not forgotten: its depth at rest (:attr:`SelfCollisionMatrix.rest_depths`)
+  is the deepest a motion may take it (:mod:`~robocram.motion.self_path_check`). Drafted
+  parking poses keep clear of the robot (:mod:`~robocram.robots.draft.stowing`), so this
+  only trusts poses a user or an SRDF gave;
 - **chained**: one hangs below the other across two movable joints (an HSR's arm roll
   link and its wrist roll link, a wrist flex between): the joint limits between keep
   the real links apart, while their convex hulls, which bridge the joint, overlap when
@@ -47,7 +50,6 @@ SAMPLES = 64  # configurations sampled to find pairs always in contact
 SEED = 0
 NEVER_SAMPLES = 1000  # configurations sampled to find pairs that never come near
 NEVER_GAP = 0.01  # [m] a pair nearer than this in some sample is checked
-NEAR_JOINTS = 4  # movable joints between two links for a contact at rest to be skipped
 
 
 @dataclass(frozen=True)
@@ -56,6 +58,7 @@ class SelfCollisionMatrix:
 
     checked: tuple[tuple[str, str], ...]
     skipped: Mapping[frozenset[str], str]  # adjacent always default chained never allowed
+    rest_depths: Mapping[frozenset[str], float] = field(default_factory=dict)  # [m] default
 
     @classmethod
     def of(cls, world: World, robot: str) -> SelfCollisionMatrix:
@@ -103,17 +106,18 @@ def _work_out(world: World, robot: str) -> SelfCollisionMatrix:
     candidates = [
         (a, b) for a, b in itertools.combinations(links, 2) if frozenset((a, b)) not in skipped
     ]
-    for pair in _always_touching(world, robot, candidates):
-        skipped[frozenset(pair)] = "always"
+    for always in _always_touching(world, robot, candidates):
+        skipped[frozenset(always)] = "always"
     left = [p for p in candidates if frozenset(p) not in skipped]
-    for pair in _touching_at_rest(world, robot, left):
-        if _joints_between(desc.model, *pair) <= NEAR_JOINTS:
-            skipped[frozenset(pair)] = "default"
+    rest_depths: dict[frozenset[str], float] = {}
+    for resting, depth in _touching_at_rest(world, robot, left).items():
+        skipped[frozenset(resting)] = "default"
+        rest_depths[frozenset(resting)] = depth
     left = [p for p in candidates if frozenset(p) not in skipped]
-    for pair in _never_near(world, robot, left):
-        skipped[frozenset(pair)] = "never"
+    for never in _never_near(world, robot, left):
+        skipped[frozenset(never)] = "never"
     checked = tuple(p for p in candidates if frozenset(p) not in skipped)
-    return SelfCollisionMatrix(checked, skipped)
+    return SelfCollisionMatrix(checked, skipped, rest_depths)
 
 
 def _always_touching(
@@ -163,9 +167,10 @@ def _never_near(
 
 def _touching_at_rest(
     world: World, robot: str, candidates: list[tuple[str, str]]
-) -> list[tuple[str, str]]:
+) -> dict[tuple[str, str], float]:
     """The pairs among ``candidates`` touching with every arm and the neck parked, the
-    grippers closed or open, the other joints at zero (within their limits)."""
+    grippers closed or open, the other joints at zero (within their limits), each with
+    its deepest penetration [m] there (>= 0)."""
     desc = world.robot(robot).description
     model = desc.model
     movable = [j for j in world.joint_states(robot) if model.joints[j].mimic is None]
@@ -175,7 +180,7 @@ def _touching_at_rest(
         rest.update({j: v for j, v in arm.parking.items() if j in rest})
     rest.update({j: v for j, v in desc.neck_parking.items() if j in rest})
     grippers = [j for arm in desc.arms.values() for j in arm.gripper_joints if j in rest]
-    found: set[tuple[str, str]] = set()
+    found: dict[tuple[str, str], float] = {}
     try:
         for end in ("lower", "upper"):
             values = dict(rest)
@@ -183,10 +188,12 @@ def _touching_at_rest(
                 values[j] = _clamped(model, j, getattr(model.joints[j], end) or 0.0)
             world.set_joint_states(robot, values, carry=False)
             touching = world.self_distances(robot, candidates, 0.0)
-            found.update(p for p, d in zip(candidates, touching.tolist(), strict=True) if d <= 0.0)
+            for pair, gap in zip(candidates, touching.tolist(), strict=True):
+                if gap <= 0.0:
+                    found[pair] = max(found.get(pair, 0.0), -gap)
     finally:
         world.set_joint_states(robot, before, carry=False)
-    return [p for p in candidates if p in found]
+    return {p: found[p] for p in candidates if p in found}
 
 
 def _clamped(model: RobotModel, joint: str, value: float) -> float:
@@ -194,13 +201,6 @@ def _clamped(model: RobotModel, joint: str, value: float) -> float:
     lower = -math.inf if spec.lower is None else spec.lower
     upper = math.inf if spec.upper is None else spec.upper
     return min(max(value, lower), upper)
-
-
-def _joints_between(model: RobotModel, a: str, b: str) -> int:
-    """How many movable joints the kinematic path from link ``a`` to link ``b`` crosses."""
-    up_a, up_b = _joints_up(model, a), _joints_up(model, b)
-    shared = set(up_a) & set(up_b)
-    return sum(1 for j in up_a if j not in shared) + sum(1 for j in up_b if j not in shared)
 
 
 def _chained(model: RobotModel, a: str, b: str) -> bool:

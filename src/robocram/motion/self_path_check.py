@@ -13,8 +13,9 @@ both) can move a point of either (:class:`~robocram.motion.travel_bound.TravelBo
 rigid levers). Near contact it steps :data:`MIN_STEP` at least.
 
 A pair touching where the motion starts (a hand folded on the torso's hull) may stay in
-contact only while it does not deepen (by more than :data:`DEEPEN`); every other pair
-counts from the first touch. So a motion never creates or deepens a self-collision.
+contact only while it does not deepen (by more than :data:`DEEPEN`), and a pair whose
+hulls overlap where the robot rests no deeper than there; every other pair counts from
+the first touch. So a motion never creates or deepens a self-collision.
 """
 
 from __future__ import annotations
@@ -52,8 +53,9 @@ class SelfPathCheck:
     def of(cls, world: World, robot: str, joints: Sequence[str]) -> SelfPathCheck:
         """The check of a motion of ``joints`` from where the robot is now."""
         joints = tuple(joints)
-        pairs, levers = world.derived(_kept_pairs).of(world, robot, joints)
-        floors = np.minimum(world.self_distances(robot, pairs, 0.0), 0.0) - DEEPEN
+        pairs, levers, rest = world.derived(_kept_pairs).of(world, robot, joints)
+        start = world.self_distances(robot, pairs, 0.0)
+        floors = np.minimum(np.minimum(start, rest), 0.0) - DEEPEN
         return cls(world, robot, joints, pairs, levers, floors)
 
     def colliding(self, q: Sequence[float]) -> list[LinkPair]:
@@ -139,31 +141,32 @@ class _KeptPairs:
     """Per robot and planned joints: the pairs they move apart and their levers, kept
     with the world (every arm motion asks; they change only with the description)."""
 
-    found: dict[tuple[str, tuple[str, ...]], tuple[object, tuple[LinkPair, ...], FloatArray]]
+    found: dict[tuple[str, tuple[str, ...]], tuple[object, _MovedPairs]]
 
-    def of(
-        self, world: World, robot: str, joints: tuple[str, ...]
-    ) -> tuple[tuple[LinkPair, ...], FloatArray]:
+    def of(self, world: World, robot: str, joints: tuple[str, ...]) -> _MovedPairs:
         desc = world.robot(robot).description
         key = (robot, joints)
         kept = self.found.get(key)
         if kept is None or kept[0] is not desc:
-            kept = self.found[key] = (desc, *_moved_pairs(world, robot, joints))
+            kept = self.found[key] = (desc, _moved_pairs(world, robot, joints))
             if len(self.found) > KEPT:
                 del self.found[next(iter(self.found))]
-        return kept[1], kept[2]
+        return kept[1]
+
+
+_MovedPairs = tuple[tuple[LinkPair, ...], FloatArray, FloatArray]  # pairs, levers, rest
 
 
 def _kept_pairs(world: World) -> _KeptPairs:
     return _KeptPairs({})
 
 
-def _moved_pairs(
-    world: World, robot: str, joints: tuple[str, ...]
-) -> tuple[tuple[LinkPair, ...], FloatArray]:
-    """The matrix's checked pairs that ``joints`` move relative to each other, and per
-    pair and joint the most a point of either link moves relative to the other per unit
-    change of the joint (joints above both move neither relative to the other)."""
+def _moved_pairs(world: World, robot: str, joints: tuple[str, ...]) -> _MovedPairs:
+    """The matrix's checked pairs, and its pairs touching at rest, that ``joints`` move
+    relative to each other; per pair and joint the most a point of either link moves
+    relative to the other per unit change of the joint (joints above both move neither
+    relative to the other); per pair the least gap [m] it may keep (minus its depth at
+    rest; 0 for a pair apart at rest)."""
     model = world.robot(robot).description.model
     matrix = SelfCollisionMatrix.of(world, robot)
     active = sorted(active_joints(model, joints))
@@ -176,20 +179,23 @@ def _moved_pairs(
         mimic = model.joints[name].mimic
         if mimic is not None and mimic.joint in joints:
             fold[column[name], joints.index(mimic.joint)] = abs(mimic.multiplier)
-    if not matrix.checked:
-        return (), np.zeros((0, len(joints)))
-    names = sorted({link for pair in matrix.checked for link in pair})
+    rests = [tuple(sorted(pair)) for pair in matrix.rest_depths]
+    every: list[LinkPair] = [*matrix.checked, *((a, b) for a, b in rests)]
+    if not every:
+        return (), np.zeros((0, len(joints))), np.zeros(0)
+    names = sorted({link for pair in every for link in pair})
     row = {link: k for k, link in enumerate(names)}
     table = np.zeros((len(names), len(active)))
     for link, lever in bound.link_lever.items():
         if link in row:
             table[row[link]] = lever
-    first = table[[row[a] for a, _ in matrix.checked]]
-    second = table[[row[b] for _, b in matrix.checked]]
+    first = table[[row[a] for a, _ in every]]
+    second = table[[row[b] for _, b in every]]
     relative = np.where((first > 0.0) & (second > 0.0), 0.0, first + second) @ fold
     moved = np.flatnonzero(relative.any(axis=1))
-    pairs = tuple(matrix.checked[k] for k in moved.tolist())
-    return pairs, relative[moved]
+    pairs = tuple(every[k] for k in moved.tolist())
+    rest = np.array([-matrix.rest_depths.get(frozenset(p), 0.0) for p in pairs], dtype=float)
+    return pairs, relative[moved], rest
 
 
 class _posed:

@@ -14,6 +14,7 @@ import numpy as np
 
 from robocram.execution import PlanFailure
 from robocram.kinematics import base_in_ik
+from robocram.motion.self_collision_matrix import SelfCollisionMatrix
 from robocram.projection.arm import move_joints, move_tcp
 from robocram.projection.gripper import close_gripper, grip, open_gripper, release
 from robocram.projection.projected_robot import ProjectedRobot
@@ -34,12 +35,18 @@ YAWS = (0.0, math.pi / 2, math.pi, -math.pi / 2)  # [rad] tool turns about the v
 
 
 def parking(robot: ProjectedRobot, key: str, arm: ArmDescription) -> CheckResult:
-    """The arm reaches its parking pose without touching the floor."""
+    """The arm reaches its parking pose without touching the floor or the robot itself."""
     name = f"{key} arm: parking"
     try:
         move_joints(robot, key, dict(arm.parking))
     except PlanFailure as failure:
         return CheckResult(name, False, str(failure), f"parking values of arms[{key!r}] in limits")
+    inside = _self_contacts(robot, arm)
+    if inside:
+        return CheckResult(
+            name, False, f"parked, the robot is in itself: {', '.join(inside)}",
+            f"parking values of arms[{key!r}] that keep the arm clear of the robot",
+        )  # fmt: skip
     floors = [o for o in robot.world.objects() if o.type == "floor"]
     low = [
         p.link_a
@@ -52,6 +59,19 @@ def parking(robot: ProjectedRobot, key: str, arm: ArmDescription) -> CheckResult
             name, False, f"{sorted(set(low))} touch the floor", "park the arm higher"
         )
     return CheckResult(name, True, f"{len(arm.parking)} joints set", "")
+
+
+def _self_contacts(robot: ProjectedRobot, arm: ArmDescription) -> list[str]:
+    """The self-collision matrix's pairs with a link of ``arm`` that touch now."""
+    world = robot.world
+    mine = {*arm.links, *arm.hand_links, *arm.gripper_links}
+    pairs = [p for p in SelfCollisionMatrix.of(world, robot.name).checked if mine & set(p)]
+    gaps = world.self_distances(robot.name, pairs, 0.0)
+    return [
+        f"{a} in {b} ({-gap * 1000:.1f} mm)"
+        for (a, b), gap in zip(pairs, gaps.tolist(), strict=True)
+        if gap < 0.0
+    ]
 
 
 def tool_frame(robot: ProjectedRobot, key: str, arm: ArmDescription) -> CheckResult:

@@ -46,6 +46,7 @@ def _guarded(name: str, check: Callable[[], CheckResult | list[CheckResult]]) ->
 def _drive(robot: ProjectedRobot) -> list[CheckResult]:
     desc = robot.description
     results: list[CheckResult] = []
+    _park(robot)
     if desc.cameras:
         results += _guarded("camera", lambda: head_checks.camera_forward(robot))
     results += _guarded("torso", lambda: head_checks.torso(robot))
@@ -55,6 +56,16 @@ def _drive(robot: ProjectedRobot) -> list[CheckResult]:
     if desc.cameras:
         results += _guarded("look", lambda: head_checks.look_and_detect(robot))
     return results
+
+
+def _park(robot: ProjectedRobot) -> None:
+    """Start as a scene does: every arm and the neck parked (set, not driven: a robot is
+    never at its URDF's zeros, which may fold an arm into itself); the parking check then
+    judges the parked pose and drives to it again after the reach."""
+    desc = robot.description
+    values = {j: v for arm in desc.arms.values() for j, v in arm.parking.items()}
+    values.update(desc.neck_parking)
+    robot.world.set_joint_states(robot.name, values)
 
 
 def _arm(robot: ProjectedRobot, key: str, arm: ArmDescription) -> list[CheckResult]:
