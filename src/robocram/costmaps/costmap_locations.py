@@ -244,7 +244,8 @@ def _with_holding_arm(
 
 def _culprits(query: LocationQuery) -> Culprits:
     """The objects the refused candidates failed on; the robot, what it holds and the object
-    the designator is about left out (moving them is no remedy)."""
+    the designator is about left out (moving them is no remedy), environments (a kitchen's
+    walls) named only when nothing movable is to blame."""
     designator, target = query.designator, "the location"
     spared = set()
     for key in ("object", "for_"):
@@ -259,7 +260,8 @@ def _culprits(query: LocationQuery) -> Culprits:
         target = f"the target ({x:.2f}, {y:.2f}, {z:.2f})"
     elif designator.get("for_") is not None:
         target = query.object(designator.get("for_"), "for_").name
-    return query.blame.culprits(target, spared)
+    fixed = [o.name for o in query.world.objects(type="environment")]
+    return query.blame.culprits(target, spared, fixed)
 
 
 def _anchor(query: LocationQuery, plan: LocationPlan) -> tuple[float, float, float]:

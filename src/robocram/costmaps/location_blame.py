@@ -13,9 +13,7 @@ from __future__ import annotations
 from collections import Counter
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
-from typing import Literal
 
-BlameKind = Literal["occluded", "blocked"]
 CULPRIT_SHARE = 0.5  # an object is named if it failed at least this share of the candidates
 # the most frequent one failed: the leading blocker and any about as frequent, not strays
 
@@ -24,14 +22,16 @@ CULPRIT_SHARE = 0.5  # an object is named if it failed at least this share of th
 class Culprits:
     """The objects to name: what hid the target, what blocked the stands, and how often.
 
-    ``counts`` holds, per named object, how many refused candidates it was blamed for;
-    ``occluded`` and ``blocked`` how many refused candidates blamed any object at all.
+    ``occluders`` and ``blockers`` count, per object blamed (innocent ones left out), the
+    refused candidates it was blamed for; ``occluded`` and ``blocked`` how many refused
+    candidates blamed any object at all.
     """
 
     target: str
     occluded_by: tuple[str, ...] = ()
     blocked_by: tuple[str, ...] = ()
-    counts: Mapping[str, int] = field(default_factory=dict)
+    occluders: Mapping[str, int] = field(default_factory=dict)
+    blockers: Mapping[str, int] = field(default_factory=dict)
     occluded: int = 0
     blocked: int = 0
 
@@ -62,42 +62,65 @@ class LocationBlame:
             self.blockers.update(found)
             self.blocked += 1
 
-    def culprits(self, target: str, innocent: Iterable[str] = ()) -> Culprits:
-        """The objects to name for ``target``, ``innocent`` ones (the robot, the target, what
-        it holds: moving them is no remedy) left out."""
-        spared = set(innocent)
-        occluded_by = _leaders(self.occluders, spared)
-        blocked_by = _leaders(self.blockers, spared)
-        counts = {name: self.occluders[name] for name in occluded_by}
-        counts.update({name: self.blockers[name] for name in blocked_by})
-        return Culprits(target, occluded_by, blocked_by, counts, self.occluded, self.blocked)
+    def culprits(
+        self, target: str, innocent: Iterable[str] = (), fixed: Iterable[str] = ()
+    ) -> Culprits:
+        """The objects to name for ``target``: ``innocent`` ones (the robot, the target, what
+        it holds: moving them is no remedy) never, ``fixed`` ones (an environment's walls
+        and counters, which hide things from far-off cells in any scene) only when no
+        movable object is to blame."""
+        spared, walls = set(innocent), set(fixed)
+        occluders = {k: n for k, n in self.occluders.items() if k not in spared}
+        blockers = {k: n for k, n in self.blockers.items() if k not in spared}
+        return Culprits(
+            target,
+            _leaders(occluders, walls),
+            _leaders(blockers, walls),
+            occluders,
+            blockers,
+            self.occluded,
+            self.blocked,
+        )
 
 
-def _leaders(tally: Counter[str], spared: set[str]) -> tuple[str, ...]:
-    """The names counted at least :data:`CULPRIT_SHARE` of the top count, most first."""
-    ranked = sorted(
-        ((n, name) for name, n in tally.items() if name not in spared), key=lambda x: (-x[0], x[1])
-    )
+def _leaders(tally: Mapping[str, int], fixed: set[str]) -> tuple[str, ...]:
+    """The movable names counted at least :data:`CULPRIT_SHARE` of the top one's count, most
+    first; the fixed ones so counted if no movable name is counted at all."""
+    movable = {name: n for name, n in tally.items() if name not in fixed}
+    ranked = sorted((movable or tally).items(), key=lambda item: (-item[1], item[0]))
     if not ranked:
         return ()
-    least = CULPRIT_SHARE * ranked[0][0]
-    return tuple(name for n, name in ranked if n >= least)
+    least = CULPRIT_SHARE * ranked[0][1]
+    return tuple(name for name, n in ranked if n >= least)
 
 
 def culprit_sentence(culprits: Culprits) -> str:
-    """What hides or blocks the target, how often, and what to do; empty if nothing named."""
+    """What hides or blocks the target, how often, and what to do; empty if nothing named.
+
+    >>> text = culprit_sentence(
+    ...     Culprits("mug-1", ("box-3",), occluders={"box-3": 8, "wall": 2}, occluded=9)
+    ... )
+    >>> for part in text.split("; "):
+    ...     print(part)
+    mug-1 is hidden from every stand by box-3 (it hid mug-1 from 8 of the 9 candidates refused
+    also in the way: wall 2)
+    move box-3 or look from elsewhere
+    """
     parts = []
+    target = culprits.target
     if culprits.occluded_by:
+        names, counts = culprits.occluded_by, culprits.occluders
+        tally = _tally(names, counts, culprits.occluded, "also in the way")
         parts.append(
-            f"{culprits.target} is hidden from every stand by {_listed(culprits.occluded_by)} "
-            f"({_tally(culprits, culprits.occluded_by, culprits.occluded, 'occluded')}); "
-            f"move {_listed(culprits.occluded_by)} or look from elsewhere"
+            f"{target} is hidden from every stand by {_listed(names)} ({_it(names)} hid "
+            f"{target} from {tally}); move {_listed(names)} or look from elsewhere"
         )
     if culprits.blocked_by:
+        names, counts = culprits.blocked_by, culprits.blockers
+        tally = _tally(names, counts, culprits.blocked, "also touched")
         parts.append(
-            f"every stand for {culprits.target} is blocked by {_listed(culprits.blocked_by)} "
-            f"({_tally(culprits, culprits.blocked_by, culprits.blocked, 'blocked')}); "
-            f"move {_listed(culprits.blocked_by)} or stand elsewhere"
+            f"every stand for {target} is blocked by {_listed(names)} (the robot would touch "
+            f"{_it(names, 'it', 'them')} at {tally}); move {_listed(names)} or stand elsewhere"
         )
     return "; ".join(parts)
 
@@ -106,8 +129,13 @@ def _listed(names: tuple[str, ...]) -> str:
     return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
 
 
-def _tally(culprits: Culprits, names: tuple[str, ...], total: int, kind: BlameKind) -> str:
-    verb = "in the way" if kind == "occluded" else "touched"
-    return ", ".join(
-        f"{name} {verb} at {culprits.counts[name]} of {total} refused" for name in names
-    )
+def _it(names: tuple[str, ...], one: str = "it", many: str = "they") -> str:
+    return one if len(names) == 1 else many
+
+
+def _tally(named: tuple[str, ...], counts: Mapping[str, int], total: int, also: str) -> str:
+    """``8 of the 9 candidates refused; also in the way: wall 2`` (one count per name)."""
+    shown = _listed(tuple(str(counts[name]) for name in named))
+    rest = sorted(((n, name) for name, n in counts.items() if name not in named), reverse=True)
+    tail = f"; {also}: " + ", ".join(f"{name} {n}" for n, name in rest) if rest else ""
+    return f"{shown} of the {total} candidates refused{tail}"
