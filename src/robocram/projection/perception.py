@@ -102,6 +102,37 @@ def own_link_blocking(
     return hits.most_common(1)[0][0] if hits else None
 
 
+def hidden_by(
+    robot: ProjectedRobot, designator: ObjectDesignator
+) -> tuple[str, tuple[str, ...]] | None:
+    """``(object, occluders)``: a fitting object in view and the objects that hide it (the
+    robot's own links are :func:`own_link_blocking`'s); one hidden by movable objects first,
+    an environment (a counter's edge) named only if nothing movable hides it. None when
+    nothing in view is hidden. Only asked when nothing fitting was seen."""
+    world = robot.world
+    cam = world.camera(robot.name)
+    found: list[tuple[bool, str, tuple[str, ...]]] = []
+    for obj in world.objects():
+        if obj.name == robot.name or obj.type == "floor" or not _matches(designator, obj):
+            continue
+        low, high = world.aabb(obj)
+        if not _in_view(cam, [(lo + hi) / 2 for lo, hi in zip(low, high, strict=True)]):
+            continue
+        names = world.visibility_from(cam, obj).occluders
+        others = [world.object(n) for n in names if n not in (robot.name, obj.name)]
+        movable = tuple(o.name for o in others if o.type != "environment")
+        if others:
+            found.append((not movable, obj.name, movable or tuple(o.name for o in others)))
+    if not found:
+        return None
+    _, name, occluders = min(found, key=lambda item: item[0])
+    return name, occluders
+
+
+def _listed(names: tuple[str, ...]) -> str:
+    return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
+
+
 def perceive(
     robot: ProjectedRobot, obj: WorldObject, asked: ObjectDesignator | None
 ) -> ObjectDesignator:
@@ -141,9 +172,14 @@ def detect(
             target=target,
         )
     if not seen:
+        hidden = hidden_by(robot, designator)
+        text = f"{robot.name} sees no object fitting {designator.description}"
+        if hidden is not None:
+            name, occluders = hidden
+            listed = _listed(occluders)
+            text += f": {name} is hidden by {listed}; move {listed} or look from elsewhere"
         raise PerceptionObjectNotFound(
-            f"{robot.name} sees no object fitting {designator.description}",
-            object_designator=designator,
+            text, object_designator=designator, occluded_by=hidden[1] if hidden else None
         )
     if designator.quantifier is Quantifier.ALL:
         return [perceive(robot, obj, None) for obj in seen]
