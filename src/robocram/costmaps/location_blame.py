@@ -102,7 +102,7 @@ def culprit_sentence(culprits: Culprits) -> str:
     ... )
     >>> for part in text.split("; "):
     ...     print(part)
-    mug-1 is hidden from every stand by box-3 (it hid mug-1 from 8 of the 9 candidates refused
+    mug-1 is hidden from every stand by box-3 (in the way at 8 of the 9 candidates refused
     also in the way: wall 2)
     move box-3 or look from elsewhere
     """
@@ -112,25 +112,21 @@ def culprit_sentence(culprits: Culprits) -> str:
         names, counts = culprits.occluded_by, culprits.occluders
         tally = _tally(names, counts, culprits.occluded, "also in the way")
         parts.append(
-            f"{target} is hidden from every stand by {_listed(names)} ({_it(names)} hid "
-            f"{target} from {tally}); move {_listed(names)} or look from elsewhere"
+            f"{target} is hidden from every stand by {_listed(names)} (in the way at {tally}); "
+            f"move {_listed(names)} or look from elsewhere"
         )
     if culprits.blocked_by:
         names, counts = culprits.blocked_by, culprits.blockers
         tally = _tally(names, counts, culprits.blocked, "also touched")
         parts.append(
-            f"every stand for {target} is blocked by {_listed(names)} (the robot would touch "
-            f"{_it(names, 'it', 'them')} at {tally}); move {_listed(names)} or stand elsewhere"
+            f"every stand for {target} is blocked by {_listed(names)} (touched at {tally}); "
+            f"move {_listed(names)} or stand elsewhere"
         )
     return "; ".join(parts)
 
 
 def _listed(names: tuple[str, ...]) -> str:
     return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
-
-
-def _it(names: tuple[str, ...], one: str = "it", many: str = "they") -> str:
-    return one if len(names) == 1 else many
 
 
 def _tally(named: tuple[str, ...], counts: Mapping[str, int], total: int, also: str) -> str:
