@@ -11,7 +11,7 @@ blocks, nearly every candidate is the one to move.
 from __future__ import annotations
 
 from collections import Counter
-from collections.abc import Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
 
 CULPRIT_SHARE = 0.5  # an object is named if it failed at least this share of the candidates
@@ -47,6 +47,12 @@ class LocationBlame:
     blockers: Counter[str] = field(default_factory=Counter)
     occluded: int = 0  # refused candidates that blamed an occluder
     blocked: int = 0  # refused candidates that blamed a blocker
+    pending: list[Callable[[LocationBlame], None]] = field(default_factory=list)
+    # tallies a layer leaves for a failure to run (what ruled cells out, worked out only then)
+
+    def later(self, tally: Callable[[LocationBlame], None]) -> None:
+        """Run ``tally`` on this blame only if the location fails (:meth:`culprits`)."""
+        self.pending.append(tally)
 
     def occluding(self, names: Iterable[str]) -> None:
         """One refused candidate from which ``names`` hid the target."""
@@ -62,13 +68,21 @@ class LocationBlame:
             self.blockers.update(found)
             self.blocked += 1
 
+    def blocking_cells(self, counts: Mapping[str, int], cells: int) -> None:
+        """``cells`` refused cells at once, ``counts[name]`` of them blocked by ``name``."""
+        if cells:
+            self.blockers.update(counts)
+            self.blocked += cells
+
     def culprits(
         self, target: str, innocent: Iterable[str] = (), fixed: Iterable[str] = ()
     ) -> Culprits:
         """The objects to name for ``target``: ``innocent`` ones (the robot, the target, what
         it holds: moving them is no remedy) never, ``fixed`` ones (an environment's walls
         and counters, which hide things from far-off cells in any scene) only when no
-        movable object is to blame."""
+        movable object is to blame. The tallies left for later are run first."""
+        while self.pending:
+            self.pending.pop(0)(self)
         spared, walls = set(innocent), set(fixed)
         occluders = {k: n for k, n in self.occluders.items() if k not in spared}
         blockers = {k: n for k, n in self.blockers.items() if k not in spared}
@@ -117,9 +131,9 @@ def culprit_sentence(culprits: Culprits) -> str:
         )
     if culprits.blocked_by:
         names, counts = culprits.blocked_by, culprits.blockers
-        tally = _tally(names, counts, culprits.blocked, "also touched")
+        tally = _tally(names, counts, culprits.blocked, "also in the way")
         parts.append(
-            f"every stand for {target} is blocked by {_listed(names)} (touched at {tally}); "
+            f"every stand for {target} is blocked by {_listed(names)} (in the way at {tally}); "
             f"move {_listed(names)} or stand elsewhere"
         )
     return "; ".join(parts)
