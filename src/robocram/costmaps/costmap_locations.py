@@ -244,8 +244,8 @@ def _with_holding_arm(
 
 def _culprits(query: LocationQuery) -> Culprits:
     """The objects the refused candidates failed on; the robot, what it holds and the object
-    the designator is about left out (moving them is no remedy), environments (a kitchen's
-    walls) named only when nothing movable is to blame."""
+    the designator is about left out, and environments (a kitchen's walls): moving them is
+    no remedy."""
     designator, target = query.designator, "the location"
     spared = set()
     for key in ("object", "for_"):

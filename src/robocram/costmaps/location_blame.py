@@ -77,10 +77,11 @@ class LocationBlame:
     def culprits(
         self, target: str, innocent: Iterable[str] = (), fixed: Iterable[str] = ()
     ) -> Culprits:
-        """The objects to name for ``target``: ``innocent`` ones (the robot, the target, what
-        it holds: moving them is no remedy) never, ``fixed`` ones (an environment's walls
-        and counters, which hide things from far-off cells in any scene) only when no
-        movable object is to blame. The tallies left for later are run first."""
+        """The objects to name for ``target``: neither ``innocent`` ones (the robot, the
+        target, what it holds) nor ``fixed`` ones (an environment's walls and counters,
+        which hide things from far-off cells and stand in the way of some stands in any
+        scene): moving them is no remedy. Fixed ones still show in the counts. The tallies
+        left for later are run first."""
         while self.pending:
             self.pending.pop(0)(self)
         spared, walls = set(innocent), set(fixed)
@@ -98,10 +99,12 @@ class LocationBlame:
 
 
 def _leaders(tally: Mapping[str, int], fixed: set[str]) -> tuple[str, ...]:
-    """The movable names counted at least :data:`CULPRIT_SHARE` of the top one's count, most
-    first; the fixed ones so counted if no movable name is counted at all."""
-    movable = {name: n for name, n in tally.items() if name not in fixed}
-    ranked = sorted((movable or tally).items(), key=lambda item: (-item[1], item[0]))
+    """The movable names counted at least :data:`CULPRIT_SHARE` of the top one's count,
+    most first."""
+    ranked = sorted(
+        ((name, n) for name, n in tally.items() if name not in fixed),
+        key=lambda item: (-item[1], item[0]),
+    )
     if not ranked:
         return ()
     least = CULPRIT_SHARE * ranked[0][1]

@@ -105,13 +105,12 @@ def own_link_blocking(
 def hidden_by(
     robot: ProjectedRobot, designator: ObjectDesignator
 ) -> tuple[str, tuple[str, ...]] | None:
-    """``(object, occluders)``: a fitting object in view and the objects that hide it (the
-    robot's own links are :func:`own_link_blocking`'s); one hidden by movable objects first,
-    an environment (a counter's edge) named only if nothing movable hides it. None when
-    nothing in view is hidden. Only asked when nothing fitting was seen."""
+    """``(object, occluders)``: the first fitting object in view that movable objects hide,
+    and those objects. The robot's own links are :func:`own_link_blocking`'s; an environment
+    (a counter's edge) is no occluder to move. None when no such object is in view. Only
+    asked when nothing fitting was seen."""
     world = robot.world
     cam = world.camera(robot.name)
-    found: list[tuple[bool, str, tuple[str, ...]]] = []
     for obj in world.objects():
         if obj.name == robot.name or obj.type == "floor" or not _matches(designator, obj):
             continue
@@ -121,12 +120,9 @@ def hidden_by(
         names = world.visibility_from(cam, obj).occluders
         others = [world.object(n) for n in names if n not in (robot.name, obj.name)]
         movable = tuple(o.name for o in others if o.type != "environment")
-        if others:
-            found.append((not movable, obj.name, movable or tuple(o.name for o in others)))
-    if not found:
-        return None
-    _, name, occluders = min(found, key=lambda item: item[0])
-    return name, occluders
+        if movable:
+            return obj.name, movable
+    return None
 
 
 def _listed(names: tuple[str, ...]) -> str:
