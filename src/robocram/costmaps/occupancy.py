@@ -226,7 +226,7 @@ def occupancy_cost(query: LocationQuery, value: object, alive: BoolGrid) -> Cost
         around = dilate(alive & (free > 0), reach)
         probed = erode(probed_free(query, robot, top, around), reach, True)
         free = free * probed
-    query.blame.later(lambda blame: blame_movable(query, named, radius, alive.copy()))
+    query.blame.later(lambda blame: blame_movable(query, named, radius, alive))
     return CostLayer(free)
 
 
