@@ -17,6 +17,7 @@ from numpy.typing import NDArray
 
 from robocram.costmaps.errors import CostmapInputError
 from robocram.costmaps.grid import BoolGrid, CostmapGrid, FloatGrid
+from robocram.costmaps.location_blame import LocationBlame
 from robocram.costmaps.reachability_map import ReachabilityMaps
 from robocram.designators import ObjectDesignator
 from robocram.logic import Value
@@ -53,6 +54,8 @@ class LocationQuery:
     reach_maps: ReachabilityMaps = field(default_factory=ReachabilityMaps)
     memo: dict[object, object] = field(default_factory=dict, repr=False)  # per resolution: what
     # validators work out once for all candidates (an object's shape, its grasp names)
+    blame: LocationBlame = field(default_factory=LocationBlame, repr=False)  # per resolution:
+    # the objects refused candidates failed on (recorded only when one is refused)
 
     def centres(self) -> tuple[FloatGrid, FloatGrid]:
         """Map x and y [m] of the cell centres."""

@@ -25,6 +25,7 @@ from robocram.costmaps.costmap import Costmap
 from robocram.costmaps.costmap_observers import notify_costmap
 from robocram.costmaps.errors import CostmapInputError, LocationNotFound
 from robocram.costmaps.grid import CostmapGrid
+from robocram.costmaps.location_blame import Culprits
 from robocram.costmaps.location_keys import LocationPlan, install_location_keys, plan_location
 from robocram.costmaps.place_reach import held_objects
 from robocram.costmaps.reach_reasoning import install_reach_predicates
@@ -117,9 +118,11 @@ class CostmapLocations:
             rejected[culprit] += 1
             in_a_row += 1
             if in_a_row >= self.max_rejections:
-                raise LocationNotFound(designator, rejected, accepted, in_a_row)
+                culprits = _culprits(query)
+                raise LocationNotFound(designator, rejected, accepted, in_a_row, (), culprits)
         if accepted == 0:
-            raise LocationNotFound(designator, rejected, accepted, in_a_row, layers.emptied_by())
+            emptied_by, culprits = layers.emptied_by(), _culprits(query)
+            raise LocationNotFound(designator, rejected, accepted, in_a_row, emptied_by, culprits)
 
     def _robot(self, designator: Any, plan: LocationPlan) -> RobotObject | None:
         if plan.robot_key is None:
@@ -237,6 +240,28 @@ def _with_holding_arm(
     if len(arms) != 1:
         return designator
     return LocationDesignator(*designator.properties, ("arm", arms.pop()))
+
+
+def _culprits(query: LocationQuery) -> Culprits:
+    """The objects the refused candidates failed on; the robot, what it holds and the object
+    the designator is about left out, and environments (a kitchen's walls): moving them is
+    no remedy."""
+    designator, target = query.designator, "the location"
+    spared = set()
+    for key in ("object", "for_"):
+        if designator.get(key) is not None:
+            spared.add(query.object(designator.get(key), key).name)
+    if query.robot is not None:
+        spared |= {query.robot.name, *query.world.attachments(query.robot)}
+    if designator.get("object") is not None:
+        target = query.object(designator.get("object"), "object").name
+    elif designator.get("target") is not None:
+        x, y, z = query.point(designator.get("target"), "target")
+        target = f"the target ({x:.2f}, {y:.2f}, {z:.2f})"
+    elif designator.get("for_") is not None:
+        target = query.object(designator.get("for_"), "for_").name
+    fixed = [o.name for o in query.world.objects(type="environment")]
+    return query.blame.culprits(target, spared, fixed)
 
 
 def _anchor(query: LocationQuery, plan: LocationPlan) -> tuple[float, float, float]:

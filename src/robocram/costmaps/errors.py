@@ -3,9 +3,11 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
+from dataclasses import dataclass
 from typing import Any
 
 from robocram.costmaps.location_advice import not_found_advice
+from robocram.costmaps.location_blame import Culprits, culprit_sentence
 from robocram.designators import GroundingError
 
 
@@ -41,6 +43,11 @@ class LocationNotFound(CostmapError, GroundingError):
         rejections: how many candidates each validator rejected in all, by validator name.
         accepted: how many poses the designator had yielded before.
         emptied_by: the cost layers that left no cell (when there were no candidates).
+        occluded_by: the objects that hid the target from (nearly) every refused candidate,
+            most frequent first (``("box-3",)``); empty when no object was to blame.
+        blocked_by: the objects the robot would have touched at (nearly) every refused
+            stand, standing or reaching, most frequent first.
+        culprits: the same with how often each was blamed (what the message says).
     """
 
     def __init__(
@@ -50,11 +57,19 @@ class LocationNotFound(CostmapError, GroundingError):
         accepted: int,
         in_a_row: int,
         emptied_by: tuple[str, ...] = (),
+        culprits: Culprits | None = None,
     ) -> None:
         self.rejections = dict(rejections)
         self.accepted = accepted
+        self.in_a_row = in_a_row
         self.emptied_by = emptied_by
+        self.culprits = culprits
+        self.description: str = designator.description
+        self.occluded_by = culprits.occluded_by if culprits else ()
+        self.blocked_by = culprits.blocked_by if culprits else ()
         advice = not_found_advice(self.rejections, accepted, in_a_row, emptied_by)
+        if culprits:  # the named objects first: the most specific remedy
+            advice = f"{culprit_sentence(culprits)}; {advice}"
         counts = ", ".join(f"{name} rejected {n}" for name, n in sorted(self.rejections.items()))
         GroundingError.__init__(
             self,
@@ -63,3 +78,25 @@ class LocationNotFound(CostmapError, GroundingError):
             f"before); {advice}",
             designator,
         )
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        """Pickle (batches send failures across processes) with the designator's description
+        in its place: a live designator holds its resolver's lock."""
+        return (
+            type(self),
+            (
+                DescribedAs(self.description),
+                self.rejections,
+                self.accepted,
+                self.in_a_row,
+                self.emptied_by,
+                self.culprits,
+            ),
+        )
+
+
+@dataclass(frozen=True)
+class DescribedAs:
+    """A designator's description standing in for it where the designator cannot go."""
+
+    description: str

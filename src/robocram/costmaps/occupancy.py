@@ -7,7 +7,8 @@ Articulated objects (a kitchen) block link by link, so a counter does not block 
 a part wider than :data:`LARGE_PART` both ways (all of a room's walls in one link, whose
 bounds would cover the room) is probed instead, one ray down each cell. A long, thin part
 (one wall, a counter top) blocks by its bounds: a probe ray starting inside a wall taller
-than the robot would not see it.
+than the robot would not see it. When the location fails, the movable objects whose bounds
+ruled out cells are recorded (``query.blame``), so the failure names them.
 """
 
 from __future__ import annotations
@@ -128,8 +129,16 @@ def robot_height(world: World, robot: RobotObject) -> float:
 def obstacle_boxes(world: World, robot: RobotObject | None, top: float) -> tuple[list[Box], bool]:
     """Bounds of every object (link by link) reaching into the band ``FLOOR_CLEARANCE..top``,
     and whether some part is too large for its bounds to stand for it (a room's walls)."""
+    named, large = named_obstacle_boxes(world, robot, top)
+    return [box for _, box in named], large
+
+
+def named_obstacle_boxes(
+    world: World, robot: RobotObject | None, top: float
+) -> tuple[list[tuple[str, Box]], bool]:
+    """:func:`obstacle_boxes`, each box with the name of its object."""
     carried = set(world.attachments(robot)) if robot is not None else set()
-    boxes: list[Box] = []
+    boxes: list[tuple[str, Box]] = []
     large = False
     for obj in world.objects():
         if obj is robot or obj.type == "floor" or obj.name in carried:
@@ -142,7 +151,7 @@ def obstacle_boxes(world: World, robot: RobotObject | None, top: float) -> tuple
             if min(high[0] - low[0], high[1] - low[1]) > LARGE_PART:
                 large = True
             else:
-                boxes.append((low, high))
+                boxes.append((obj.name, (low, high)))
     return boxes, large
 
 
@@ -210,11 +219,35 @@ def occupancy_cost(query: LocationQuery, value: object, alive: BoolGrid) -> Cost
         return CostLayer(np.ones(query.grid.shape))
     radius = facing_radius(query.world, robot)
     top = robot_height(query.world, robot)
-    boxes, large = obstacle_boxes(query.world, robot, top)
-    free = free_cells(query, boxes, radius, alive)
+    named, large = named_obstacle_boxes(query.world, robot, top)
+    free = free_cells(query, [box for _, box in named], radius, alive)
     if large:  # parts whose bounds would cover the room are probed cell by cell
         reach = radius / query.grid.resolution
         around = dilate(alive & (free > 0), reach)
         probed = erode(probed_free(query, robot, top, around), reach, True)
         free = free * probed
+    query.blame.later(lambda blame: blame_movable(query, named, radius, alive))
     return CostLayer(free)
+
+
+def blame_movable(
+    query: LocationQuery, named: list[tuple[str, Box]], radius: float, alive: BoolGrid
+) -> None:
+    """Record, per movable object, the ``alive`` cells (those earlier layers, reachability,
+    left) its bounds alone rule out: the stands it took. Run only when the location fails;
+    an environment's own parts (a counter) rule out cells in every scene, so cells they rule
+    out are nobody's fault here."""
+    environments = {o.name for o in query.world.objects(type="environment")}
+    fixed = [box for name, box in named if name in environments]
+    open_floor = alive & (free_cells(query, fixed, radius, alive) > 0)
+    if not open_floor.any():
+        return
+    counts: dict[str, int] = {}
+    taken = np.zeros(query.grid.shape, dtype=bool)
+    for owner in sorted({name for name, _ in named} - environments):
+        boxes = [box for name, box in named if name == owner]
+        ruled_out = open_floor & (free_cells(query, boxes, radius, open_floor) == 0)
+        if ruled_out.any():
+            counts[owner] = int(np.count_nonzero(ruled_out))
+            taken |= ruled_out
+    query.blame.blocking_cells(counts, int(np.count_nonzero(taken)))

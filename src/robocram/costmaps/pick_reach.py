@@ -64,7 +64,20 @@ def collides(
     joints: Mapping[str, float],
     allow_hand: bool = False,
 ) -> bool:
-    """Whether a link the motion moves touches anything but the floor.
+    """Whether a link the motion moves touches anything but the floor
+    (:func:`touched_objects` is not empty)."""
+    return bool(touched_objects(world, robot, arm, stand, joints, allow_hand))
+
+
+def touched_objects(
+    world: World,
+    robot: RobotObject,
+    arm: str,
+    stand: Pose,
+    joints: Mapping[str, float],
+    allow_hand: bool = False,
+) -> list[str]:
+    """The objects a link the motion moves touches (the floor left out), each once.
 
     The robot stands at ``stand`` and takes ``joints``; the links checked are those the
     changed joints move, all of them if the robot stands elsewhere than now (the robot
@@ -90,7 +103,7 @@ def collides(
     try:
         floors = world.objects(type="floor")
         hits = link_contacts(world, robot, links=moved, ignore=floors, distance=0.0)
-        return any(link not in allowed for link, _ in hits)
+        return list(dict.fromkeys(other for link, other in hits if link not in allowed))
     finally:
         world.set_joint_states(robot, before)
         if not here:

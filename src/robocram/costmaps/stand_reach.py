@@ -14,7 +14,7 @@ from typing import Any
 
 from robocram.costmaps.cost_layer import LocationQuery
 from robocram.costmaps.grasps import grasp_point
-from robocram.costmaps.pick_reach import PickTarget, collides, pick_targets
+from robocram.costmaps.pick_reach import PickTarget, pick_targets, touched_objects
 from robocram.costmaps.place_reach import held_objects, place_targets
 from robocram.costmaps.reachability_map import ReachabilityMaps
 from robocram.costmaps.validators import (
@@ -42,6 +42,7 @@ def reach_to_pick(
     maps: ReachabilityMaps | None = None,
     restarts: int = IK_RESTARTS,
     memo: dict[Any, Any] | None = None,
+    touched: set[str] | None = None,
 ) -> Reach | None:
     """The first grasp the pick plan will try that works from ``base``, or None.
 
@@ -52,7 +53,8 @@ def reach_to_pick(
 
     Which grasp is tried first does not change the answer (the pick tries them all), so
     with a ``memo`` (one resolution: stand after stand) grasps that worked before go first
-    and those that failed last.
+    and those that failed last. ``touched`` gathers the objects grasps that reached collided
+    with (what blocks the stand, when none works).
     """
     seed = world.joint_states(robot)
     memo = {} if memo is None else memo
@@ -66,7 +68,7 @@ def reach_to_pick(
         targets.sort(key=lambda t: _rank(record, t.grasp))
         for target in targets:
             tally = record.setdefault(target.grasp, [0, 0])  # [worked, failed]
-            reach = _pick_at(world, robot, name, base, target, seed, restarts)
+            reach = _pick_at(world, robot, name, base, target, seed, restarts, touched)
             if reach is not None:
                 tally[0] += 1
                 return reach
@@ -87,8 +89,10 @@ def _pick_at(
     target: PickTarget,
     seed: Mapping[str, float],
     restarts: int,
+    touched: set[str] | None = None,
 ) -> Reach | None:
-    """The pick's motions for one grasp from ``base``: pre-grasp, grasp, collisions."""
+    """The pick's motions for one grasp from ``base``: pre-grasp, grasp, collisions (the
+    objects hit added to ``touched``)."""
     desc = robot.description
     pre = solve_at_stand(desc, arm, target.pre_grasp_in_base, seed, restarts)
     if not pre.success:
@@ -96,9 +100,14 @@ def _pick_at(
     grasp = _solve_near(desc, arm, target.grasp_in_base, pre, seed, restarts)
     if not grasp.success:
         return None
-    if collides(world, robot, arm, _moved(base, grasp.base_motion), grasp.joint_positions, True):
-        return None
-    if collides(world, robot, arm, _moved(base, pre.base_motion), pre.joint_positions):
+    at_grasp = _moved(base, grasp.base_motion)
+    hit = touched_objects(world, robot, arm, at_grasp, grasp.joint_positions, True)
+    if not hit:
+        at_pre = _moved(base, pre.base_motion)
+        hit = touched_objects(world, robot, arm, at_pre, pre.joint_positions)
+    if hit:
+        if touched is not None:
+            touched.update(hit)
         return None
     return Reach(arm, dict(grasp.joint_positions), target.grasp_in_base, grasp.base_motion)
 
@@ -136,12 +145,14 @@ def reach_to_place(
     base: Pose,
     arm: str | None = None,
     restarts: int = IK_RESTARTS,
+    touched: set[str] | None = None,
 ) -> Reach | None:
     """The first way the place plan will try that works from ``base``, or None.
 
     ``target`` is where the held object's frame goes (map). One works if IK reaches the
     tool's pose there, then the hand's retreat towards the wrist, and at the put only the
     hand (and what it holds) touches anything. None when the robot holds nothing.
+    ``touched`` gathers the objects the ways that reached collided with.
     """
     desc = robot.description
     seed = world.joint_states(robot)
@@ -153,29 +164,40 @@ def reach_to_place(
         if not back.success:
             continue
         at = _moved(base, put.base_motion)
-        if not collides(world, robot, way.arm, at, put.joint_positions, allow_hand=True):
+        hit = touched_objects(world, robot, way.arm, at, put.joint_positions, allow_hand=True)
+        if not hit:
             return Reach(way.arm, dict(put.joint_positions), way.place_in_base, put.base_motion)
+        if touched is not None:
+            touched.update(hit)
     return None
 
 
 def reachable(query: LocationQuery, pose: Pose) -> bool:
     """Whether the robot at ``pose`` can pick the object up (:func:`reach_to_pick`), put
     what it holds down at the ``target`` (:func:`reach_to_place`), or, hands empty, reach
-    the ``target`` with the tool from above; IK with the torso free."""
+    the ``target`` with the tool from above; IK with the torso free. A refused stand blames
+    what the arm would have hit where IK reached."""
     robot, world = query_robot(query), query.world
     arm = query.designator.get("arm")
     wanted = query.designator.get("object")
     maps, budget = query.reach_maps, STAND_IK_RESTARTS
+    touched: set[str] = set()
     with placed(world, robot, pose):  # standing there: the checks move only the arm
         if wanted is not None:
             obj = query.object(wanted, "object")
-            found = reach_to_pick(world, robot, obj, pose, arm, maps, budget, query.memo)
-            return found is not None
-        value = query.designator.get("target")
-        point = query.point(value, "target")
-        if held_objects(world, robot):
-            return reach_to_place(world, robot, _spot(value, point), pose, arm, budget) is not None
-        return reach_point(world, robot, point, pose, arm, maps, budget) is not None
+            memo = query.memo
+            found = reach_to_pick(world, robot, obj, pose, arm, maps, budget, memo, touched)
+        else:
+            value = query.designator.get("target")
+            point = query.point(value, "target")
+            if held_objects(world, robot):
+                spot = _spot(value, point)
+                found = reach_to_place(world, robot, spot, pose, arm, budget, touched)
+            else:
+                found = reach_point(world, robot, point, pose, arm, maps, budget)
+    if found is None:
+        query.blame.blocking(touched)
+    return found is not None
 
 
 def _spot(value: object, point: Vector3) -> Pose:

@@ -22,7 +22,7 @@ from robocram.costmaps.reachability_map import ReachabilityMaps
 from robocram.kinematics import BaseMotion, IKResult, PlanarBase, base_in_ik, solve_ik
 from robocram.robots import RobotDescription
 from robocram.tf import Pose, Vector3
-from robocram.world import Camera, RobotObject, World, WorldObject
+from robocram.world import Camera, RayHit, RobotObject, World, WorldObject
 from robocram.world.link_contacts import link_contacts
 from robocram.world.visibility import ray_visibility
 
@@ -78,14 +78,20 @@ def query_robot(query: LocationQuery) -> RobotObject:
 def robot_collision_free(query: LocationQuery, pose: Pose) -> bool:
     """Whether the robot standing at ``pose``, arms parked, touches nothing but the floor;
     nor does what it holds (driving there checks both, so a stand that only the robot
-    clears would be refused by the drive)."""
+    clears would be refused by the drive). A refused stand blames what was touched."""
     robot, world = query_robot(query), query.world
     floors = world.objects(type="floor")
     with placed(world, robot, pose), parked(world, robot):
-        return not link_contacts(world, robot, ignore=floors) and not any(
-            link_contacts(world, world.object(held), ignore=floors)
-            for held in world.attachments(robot)
-        )
+        touched = link_contacts(world, robot, ignore=floors)
+        if not touched:
+            touched = [
+                pair
+                for held in world.attachments(robot)
+                for pair in link_contacts(world, world.object(held), ignore=floors)
+            ]
+    if touched:
+        query.blame.blocking(other for _, other in touched)
+    return not touched
 
 
 def object_collision_free(query: LocationQuery, pose: Pose) -> bool:
@@ -98,16 +104,25 @@ def object_collision_free(query: LocationQuery, pose: Pose) -> bool:
 
 
 def visible(query: LocationQuery, pose: Pose) -> bool:
-    """Whether the robot at ``pose``, arms parked, camera aimed at the target, sees 90 % of it."""
+    """Whether the robot at ``pose``, arms parked, camera aimed at the target, sees 90 % of it.
+
+    A refused stand blames what the rays met before the target."""
     robot, world = query_robot(query), query.world
     target = query.designator.get("object")
     with placed(world, robot, pose), parked(world, robot):
         if target is None:
             point = query.point(query.designator.get("target"), "target")
-            return sees_point(world, aimed_camera(world, robot, point), point)
+            hit = point_blocker(world, aimed_camera(world, robot, point), point)
+            if hit is not None:
+                query.blame.occluding([hit.obj.name])
+            return hit is None
         obj = query.object(target, "object")
         camera = aimed_camera(world, robot, query.point(obj, "object"))
-        return ray_visibility(world, camera, obj, VISIBILITY_RAYS).fraction >= VISIBLE_FRACTION
+        seen = ray_visibility(world, camera, obj, VISIBILITY_RAYS)
+    if seen.fraction >= VISIBLE_FRACTION:
+        return True
+    query.blame.occluding(seen.occluders)
+    return False
 
 
 def sees_point(world: World, camera: Camera, point: Vector3) -> bool:
@@ -116,14 +131,20 @@ def sees_point(world: World, camera: Camera, point: Vector3) -> bool:
     The ray starts at the camera's near plane, as the world's visibility rays do: a camera
     inside its own housing (Boxy's Kinect link) sees nothing closer than that.
     """
+    return point_blocker(world, camera, point) is None
+
+
+def point_blocker(world: World, camera: Camera, point: Vector3) -> RayHit | None:
+    """Where the ray from ``camera`` to ``point`` meets something short of it (farther than
+    2 cm from it), or None when the camera sees the point (:func:`sees_point`)."""
     origin = np.asarray(camera.pose.position, float)
     ahead = np.asarray(point, float) - origin
     length = float(np.linalg.norm(ahead))
     if length <= camera.near:
-        return True
+        return None
     start = origin + ahead * (camera.near / length)
     hit = world.ray_cast(tuple(start.tolist()), point)
-    return hit is None or math.dist(hit.position, point) < SEEN_WITHIN
+    return None if hit is None or math.dist(hit.position, point) < SEEN_WITHIN else hit
 
 
 @dataclass(frozen=True)

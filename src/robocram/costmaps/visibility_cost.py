@@ -4,7 +4,8 @@ Computed from the target outwards: with the target and the robot moved out of th
 rays fan out from the target's centre to a camera point over each cell, at a few heights
 between the description's camera minimum and maximum (and the camera's height now). A
 cell's weight is the share of its rays nothing stops. The rays are cast lazily, only for
-the cells a pose stream draws (the whole grid only for a picture).
+the cells a pose stream draws (the whole grid only for a picture). A cell whose every ray
+is stopped blames what stopped them (``query.blame``), so a failure can name it.
 """
 
 from __future__ import annotations
@@ -51,7 +52,11 @@ def visibility_cost(query: LocationQuery, value: object, alive: BoolGrid) -> Cos
         with _out_of_sight(query):
             hits = cast_rays(query.world, [target] * len(ends), ends)
         free = np.array([hit is None for hit in hits], dtype=float)
-        return np.asarray(free.reshape(len(cells), len(heights)).mean(axis=1), dtype=np.float64)
+        share = free.reshape(len(cells), len(heights)).mean(axis=1)
+        for k in np.flatnonzero(share == 0.0).tolist():  # refused for sure: blame what hid it
+            rays = hits[k * len(heights) : (k + 1) * len(heights)]
+            query.blame.occluding(hit.obj.name for hit in rays if hit is not None)
+        return np.asarray(share, dtype=np.float64)
 
     return CostLayer(in_range, refine=free_share)
 

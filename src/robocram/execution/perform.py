@@ -96,7 +96,8 @@ def _reference(designator: Designator, kb: KnowledgeBase) -> Any:
     try:
         return designator.reference(kb)
     except DesignatorError as err:
-        raise DesignatorReferenceFailure(str(err), designator=designator) from err
+        blame = {k: v for k in ("occluded_by", "blocked_by") if (v := getattr(err, k, None))}
+        raise DesignatorReferenceFailure(str(err), designator=designator, **blame) from err
 
 
 def _send(designator: Designator, command: object, kb: KnowledgeBase) -> Any:

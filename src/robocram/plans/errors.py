@@ -18,6 +18,7 @@ class SearchExhausted(PerceptionObjectNotFound):
     """Every candidate place was looked at and the object was in none of them."""
 
     searched: tuple[str, ...] | None = None  # the places looked at, in order
+    occluded_by: tuple[str, ...] | None = None  # what hid a place or the object, most first
     hint = "put the object's usual place into the KB (usual_location/3) or search elsewhere"
 
 
@@ -26,6 +27,8 @@ class FetchExhausted(ObjectUnfetchable):
 
     causes: tuple[Exception, ...] | None = None  # one failure per attempt, in order
     attempts: int | None = None  # stands where picking up was tried
+    blocked_by: tuple[str, ...] | None = None  # what the robot touched at the stands refused
+    occluded_by: tuple[str, ...] | None = None  # what hid the object from the stands refused
     hint = "raise stand_retries, give another arm or grasp, or clear the object's surroundings"
 
 

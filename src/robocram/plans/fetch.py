@@ -21,6 +21,7 @@ from robocram.execution.failures import NavigationPoseUnreachable, PlanFailure, 
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import detect, look, navigate, park_arms
 from robocram.plans.container_access import OpenedContainer
+from robocram.plans.culprits import blamed, culprit_clause
 from robocram.plans.errors import FetchExhausted
 from robocram.plans.location_poses import location_poses, next_pose
 from robocram.plans.pick_object import Held, pick_up_object
@@ -100,14 +101,18 @@ def exhausted_message(name: str, tries: int, causes: list[Exception]) -> str:
 
     A try is a stand where picking up was tried; when there was none, the message says that
     no stand was found, or that every stand found was blocked, rather than "0 tries".
+    Objects the causes blame (a location's ``blocked_by``, ``occluded_by``) come first.
     """
     blocked = sum(isinstance(c, NavigationPoseUnreachable) for c in causes)
+    culprits = culprit_clause(blamed(causes, "occluded_by"), blamed(causes, "blocked_by"))
     if tries:
-        text = f"could not fetch {name} in {tries} tr{'y' if tries == 1 else 'ies'}"
+        text = f"could not fetch {name} in {tries} tr{'y' if tries == 1 else 'ies'}{culprits}"
     elif blocked:
-        text = f"could not fetch {name}: the robot would collide at each of {blocked} stands"
+        text = (
+            f"could not fetch {name}{culprits}: the robot would collide at each of {blocked} stands"
+        )
     else:
-        text = f"no stand found for {name}"
+        text = f"no stand found for {name}{culprits}"
     if not causes:
         return text
     last = causes[-1]
@@ -159,4 +164,6 @@ def fetch(
         object_designator=seen,
         causes=tuple(causes),
         attempts=tries,
+        blocked_by=blamed(causes, "blocked_by") or None,
+        occluded_by=blamed(causes, "occluded_by") or None,
     )

@@ -11,7 +11,8 @@ opened are in the log, so a caller closes them again. For each place the plan as
 location from which the robot sees it (``visible_for``, a location designator resolved by whatever
 resolver the environment has, e.g. costmaps), tries up to ``poses_per_place`` of its
 solutions, looks and detects. When every place is exhausted it raises
-:class:`SearchExhausted`, a ``PerceptionObjectNotFound`` that lists the places searched.
+:class:`SearchExhausted`, a ``PerceptionObjectNotFound`` that lists the places searched
+and names what hid a place or the object (``occluded_by``), when anything did.
 """
 
 from __future__ import annotations
@@ -27,6 +28,7 @@ from robocram.logic import current_kb
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import detect, look, move_torso, park_arms
 from robocram.plans.container_access import OpenedContainer, is_container, open_from_front
+from robocram.plans.culprits import blamed, culprit_clause
 from robocram.plans.environment_links import environment_link_pose
 from robocram.plans.errors import SearchExhausted
 from robocram.plans.robot_facts import current_robot, has_torso
@@ -141,8 +143,11 @@ def search(
         if seen is not None:
             return seen
     names = tuple(p.link for p in log.searched)
+    hidden_by = blamed(log.failures, "occluded_by")
     raise SearchExhausted(
-        f"no {object_type} seen from any place searched: {', '.join(names) or 'none'}",
+        f"no {object_type} seen from any place searched{culprit_clause(hidden_by, ())}: "
+        f"{', '.join(names) or 'none'}",
         object_designator=wanted,
         searched=names,
+        occluded_by=hidden_by or None,
     )

@@ -102,6 +102,33 @@ def own_link_blocking(
     return hits.most_common(1)[0][0] if hits else None
 
 
+def hidden_by(
+    robot: ProjectedRobot, designator: ObjectDesignator
+) -> tuple[str, tuple[str, ...]] | None:
+    """``(object, occluders)``: the first fitting object in view that movable objects hide,
+    and those objects. The robot's own links are :func:`own_link_blocking`'s; an environment
+    (a counter's edge) is no occluder to move. None when no such object is in view. Only
+    asked when nothing fitting was seen."""
+    world = robot.world
+    cam = world.camera(robot.name)
+    for obj in world.objects():
+        if obj.name == robot.name or obj.type == "floor" or not _matches(designator, obj):
+            continue
+        low, high = world.aabb(obj)
+        if not _in_view(cam, [(lo + hi) / 2 for lo, hi in zip(low, high, strict=True)]):
+            continue
+        names = world.visibility_from(cam, obj).occluders
+        others = [world.object(n) for n in names if n not in (robot.name, obj.name)]
+        movable = tuple(o.name for o in others if o.type != "environment")
+        if movable:
+            return obj.name, movable
+    return None
+
+
+def _listed(names: tuple[str, ...]) -> str:
+    return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
+
+
 def perceive(
     robot: ProjectedRobot, obj: WorldObject, asked: ObjectDesignator | None
 ) -> ObjectDesignator:
@@ -141,9 +168,14 @@ def detect(
             target=target,
         )
     if not seen:
+        hidden = hidden_by(robot, designator)
+        text = f"{robot.name} sees no object fitting {designator.description}"
+        if hidden is not None:
+            name, occluders = hidden
+            listed = _listed(occluders)
+            text += f": {name} is hidden by {listed}; move {listed} or look from elsewhere"
         raise PerceptionObjectNotFound(
-            f"{robot.name} sees no object fitting {designator.description}",
-            object_designator=designator,
+            text, object_designator=designator, occluded_by=hidden[1] if hidden else None
         )
     if designator.quantifier is Quantifier.ALL:
         return [perceive(robot, obj, None) for obj in seen]

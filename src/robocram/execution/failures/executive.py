@@ -16,6 +16,9 @@ class DesignatorFailure(PlanFailure):
 class DesignatorReferenceFailure(DesignatorFailure):
     """A designator has no (further) solution."""
 
+    occluded_by: tuple[str, ...] | None = None  # a location: what hid its target
+    blocked_by: tuple[str, ...] | None = None  # a location: what blocked its stands
+
     summary = "the designator could not be referenced"
     hint = "check its properties against the grounding rules, or take another designator"
 

@@ -17,6 +17,7 @@ class PerceptionObjectNotFound(PerceptionLowLevelFailure):
     """No object in view matches the designator."""
 
     object_designator: ObjectDesignator | None = None
+    occluded_by: tuple[str, ...] | None = None  # what hid a fitting object in view, most first
     summary = "no object matching the designator was seen"
     hint = "look somewhere else or relax the object description"
 
