@@ -29,6 +29,7 @@ from robocram.motion.bullet_scene import BulletScene
 from robocram.motion.cartesian_path import cartesian_path
 from robocram.motion.coal_clearance import CoalClearance
 from robocram.motion.collision_scene import CollisionScene
+from robocram.motion.configuration_checker import LinkPair
 from robocram.motion.joint_limits import joint_limits
 from robocram.motion.joint_path import PLANNING_BUDGET, JointPath, plan_joint_path
 from robocram.motion.joint_trajectory import JointTrajectory
@@ -68,15 +69,20 @@ def planned_joints(desc: LoadedDescription, goal: Mapping[str, float]) -> tuple[
 
 
 def _scene(
-    world: World, robot: str, joints: tuple[str, ...], allowed: Collection[str], start: list[float]
+    world: World,
+    robot: str,
+    joints: tuple[str, ...],
+    allowed: Collection[str],
+    start: list[float],
+    pairs: Collection[LinkPair] = (),
 ) -> CoalClearance:
     """The world checker (clearances from coal, contacts judged on the world), allowing
-    the contacts the robot (and what it holds) already has at the start: a hand on a
-    handle, a held bowl still on its table."""
-    scene = CoalClearance(BulletScene(world, robot, joints, allowed))
+    ``pairs`` and the contacts the robot (and what it holds) already has at the start: a
+    hand on a handle, a held bowl still on its table."""
+    scene = CoalClearance(BulletScene(world, robot, joints, allowed, allowed_pairs=pairs))
     touching = scene.colliding(start)
     if touching:
-        judge = BulletScene(world, robot, joints, allowed, allowed_pairs=touching)
+        judge = BulletScene(world, robot, joints, allowed, allowed_pairs={*pairs, *touching})
         scene = CoalClearance(judge)
     return scene
 
@@ -89,8 +95,14 @@ def plan_arm_motion(
     allowed_links: Collection[str] = (),
     settings: MotionSettings = MotionSettings(),
     what: str = "the arm",
+    kind: str = "arm",
+    allowed_pairs: Collection[LinkPair] = (),
 ) -> ArmMotion:
     """A timed, collision-free motion of the joints in ``goal`` from where they are now.
+
+    Any joints of the robot: an arm's, the torso, the head's, a gripper's (``kind``
+    names the motion in its trajectory). ``allowed_pairs`` ``(robot link, other)`` may
+    touch besides the contacts the motion starts with (fingers squeezing what they grip).
 
     Raises:
         ManipulationPathBlocked: the goal collides, or no way there was found; it names the
@@ -105,8 +117,10 @@ def plan_arm_motion(
     if not settings.check or _unmoved(start, end):  # nothing to check: the start is allowed
         path = JointPath(joints, (tuple(start), tuple(end)), "straight", 0)
     else:
-        path = _checked_path(world, robot, joints, allowed_links, start, end, settings, what)
-    trajectory = time_parameterize(robot, joints, path.waypoints, limits, kind="arm")
+        path = _checked_path(
+            world, robot, joints, allowed_links, start, end, settings, what, allowed_pairs
+        )
+    trajectory = time_parameterize(robot, joints, path.waypoints, limits, kind=kind)
     return ArmMotion(path, trajectory)
 
 
@@ -125,8 +139,9 @@ def _checked_path(
     end: list[float],
     settings: MotionSettings,
     what: str,
+    pairs: Collection[LinkPair] = (),
 ) -> JointPath:
-    scene = _scene(world, robot, joints, allowed, start)
+    scene = _scene(world, robot, joints, allowed, start, pairs)
     bound = TravelBound.of(world, robot, joints)
     desc = world.robot(robot).description
     limits = joint_limits(desc, joints)
