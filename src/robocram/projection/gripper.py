@@ -22,7 +22,7 @@ anything the fingers squeeze (a handle) and attaches nothing.
 
 from __future__ import annotations
 
-from collections.abc import Collection
+from collections.abc import Callable, Collection
 
 from robocram.execution.failures import (
     GripperClosedCompletely,
@@ -110,10 +110,16 @@ def open_gripper(robot: ProjectedRobot, arm: str) -> dict[str, float]:
 
 
 def close_gripper(robot: ProjectedRobot, arm: str) -> dict[str, float]:
-    """Close ``arm``'s gripper until it squeezes something (a handle), else fully; nothing
-    is attached."""
+    """Close ``arm``'s gripper until its fingers meet something (a handle), else fully;
+    nothing is attached."""
     links = _squeezing_links(robot, arm)
-    found = _closing_stop(robot, arm, links, _near_hand(robot, links, movable_only=False))
+    candidates = _near_hand(robot, links, movable_only=False)
+    before = {obj.name: _touching(robot, links, obj) for obj in candidates}
+
+    def meets(obj: WorldObject) -> bool:  # squeezes it, or touches it where it did not
+        return _squeezed(robot, links, obj) or bool(_touching(robot, links, obj) - before[obj.name])
+
+    found = _closing_stop(robot, arm, links, candidates, meets)
     if found is None:
         return _move_to(robot, arm, 0.0)
     fraction, _, touching = found
@@ -173,7 +179,8 @@ def _near_hand(
     robot: ProjectedRobot, links: set[str], movable_only: bool = True
 ) -> list[WorldObject]:
     """Objects whose bounding box comes within :data:`NEAR` of the hand: with
-    ``movable_only`` only movable ones not held (what can be gripped), else any."""
+    ``movable_only`` only movable ones not held (what can be gripped), else any but
+    floors."""
     world = robot.world
     boxes = [world.link_aabb(robot.name, link) for link in links]
     low = [min(b[0][k] for b in boxes) - NEAR for k in range(3)]
@@ -183,8 +190,8 @@ def _near_hand(
     for obj in world.objects():
         if obj.name == robot.name:
             continue
-        if movable_only and (obj.is_static or obj.name in held):
-            continue
+        if (movable_only and (obj.is_static or obj.name in held)) or obj.type == "floor":
+            continue  # fingers close on a floor as on nothing
         lo, hi = world.aabb(obj)
         if all(lo[k] <= high[k] and hi[k] >= low[k] for k in range(3)):
             found.append(obj)
@@ -206,7 +213,9 @@ def grip(robot: ProjectedRobot, arm: str) -> str:
         GripperPathBlocked: the fingers' way runs into something else; they did not move.
     """
     links = _squeezing_links(robot, arm)
-    found = _closing_stop(robot, arm, links, _near_hand(robot, links))
+    found = _closing_stop(
+        robot, arm, links, _near_hand(robot, links), lambda obj: _squeezed(robot, links, obj)
+    )
     if found is None:
         _move_to(robot, arm, 0.0)
         closed = robot.world.joint_states(robot.name)[gripper_joints(robot, arm)[0]]
@@ -223,10 +232,14 @@ def grip(robot: ProjectedRobot, arm: str) -> str:
 
 
 def _closing_stop(
-    robot: ProjectedRobot, arm: str, links: set[str], candidates: list[WorldObject]
+    robot: ProjectedRobot,
+    arm: str,
+    links: set[str],
+    candidates: list[WorldObject],
+    stops: Callable[[WorldObject], bool],
 ) -> Stop | None:
-    """Where closing first squeezes one of ``candidates``: the opening (0 closed, 1 open),
-    the object and the pairs touching there; None if none is squeezed up to fully
+    """Where closing first ``stops`` on one of ``candidates``: the opening (0 closed, 1
+    open), the object and the pairs touching there; None if nothing stops it up to fully
     closed. Probes only: the gripper is as before after."""
     before = _opening(robot, arm)
     if not candidates:
@@ -237,10 +250,10 @@ def _closing_stop(
         for step in range(1, CLOSING_STEPS + 1):
             fraction = before * (1 - step / CLOSING_STEPS)
             _probe(robot, arm, fraction)
-            held = next((o for o in candidates if _squeezed(robot, links, o)), None)
+            held = next((o for o in candidates if stops(o)), None)
             if held is not None:
                 outside = before * (1 - (step - 1) / CLOSING_STEPS)
-                stop = _first_squeeze(robot, arm, links, held, fraction, outside)
+                stop = _first_stop(robot, arm, held, stops, fraction, outside)
                 _probe(robot, arm, stop)
                 return stop, held, _touching(robot, links, held)
         return None
@@ -248,19 +261,20 @@ def _closing_stop(
         robot.world.set_joint_states(robot.name, start)
 
 
-def _first_squeeze(
+def _first_stop(
     robot: ProjectedRobot,
     arm: str,
-    links: set[str],
     obj: WorldObject,
+    stops: Callable[[WorldObject], bool],
     inside: float,
     outside: float,
 ) -> float:
-    """Bisect the opening between ``inside`` (squeezed) and ``outside`` (not); the former."""
+    """Bisect the opening between ``inside`` (``obj`` stops the fingers) and ``outside``
+    (it does not); the former."""
     for _ in range(BISECTION_STEPS):
         middle = (inside + outside) / 2
         _probe(robot, arm, middle)
-        if _squeezed(robot, links, obj):
+        if stops(obj):
             inside = middle
         else:
             outside = middle
