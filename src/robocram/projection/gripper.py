@@ -110,20 +110,34 @@ def open_gripper(robot: ProjectedRobot, arm: str) -> dict[str, float]:
 
 
 def close_gripper(robot: ProjectedRobot, arm: str) -> dict[str, float]:
-    """Close ``arm``'s gripper until its fingers meet something (a handle), else fully;
-    nothing is attached."""
-    links = _squeezing_links(robot, arm)
-    candidates = _near_hand(robot, links, movable_only=False)
-    before = {obj.name: _touching(robot, links, obj) for obj in candidates}
+    """Close ``arm``'s gripper fully, or until its fingers meet what is in their way (a
+    handle); nothing is attached.
 
-    def meets(obj: WorldObject) -> bool:  # squeezes it, or touches it where it did not
-        return _squeezed(robot, links, obj) or bool(_touching(robot, links, obj) - before[obj.name])
-
-    found = _closing_stop(robot, arm, links, candidates, meets)
-    if found is None:
+    Raises:
+        GripperPathBlocked: the fingers meet it at once (no closing is free).
+    """
+    try:  # mostly nothing is in the way: one checked motion, no probing
         return _move_to(robot, arm, 0.0)
-    fraction, _, touching = found
-    return _move_to(robot, arm, fraction, touching)
+    except GripperPathBlocked as blocked:
+        hit = {other.split("/")[0] for _, other in blocked.colliding_pairs or ()}
+        links = _squeezing_links(robot, arm)
+        candidates = [
+            robot.world.object(name)
+            for name in sorted(hit)
+            if name in robot.world and name != robot.name
+        ]
+        before = {obj.name: _touching(robot, links, obj) for obj in candidates}
+
+        def meets(obj: WorldObject) -> bool:  # squeezes it, or touches it where it did not
+            return _squeezed(robot, links, obj) or bool(
+                _touching(robot, links, obj) - before[obj.name]
+            )
+
+        found = _closing_stop(robot, arm, links, candidates, meets)
+        if found is None:
+            raise
+        fraction, _, touching = found
+        return _move_to(robot, arm, fraction, touching)
 
 
 def set_gripper(robot: ProjectedRobot, arm: str, position: float) -> dict[str, float]:
@@ -175,12 +189,8 @@ def _squeezed(robot: ProjectedRobot, links: set[str], obj: WorldObject) -> bool:
     )
 
 
-def _near_hand(
-    robot: ProjectedRobot, links: set[str], movable_only: bool = True
-) -> list[WorldObject]:
-    """Objects whose bounding box comes within :data:`NEAR` of the hand: with
-    ``movable_only`` only movable ones not held (what can be gripped), else any but
-    floors."""
+def _near_hand(robot: ProjectedRobot, links: set[str]) -> list[WorldObject]:
+    """Movable objects, not held, whose bounding box comes within :data:`NEAR` of the hand."""
     world = robot.world
     boxes = [world.link_aabb(robot.name, link) for link in links]
     low = [min(b[0][k] for b in boxes) - NEAR for k in range(3)]
@@ -188,10 +198,8 @@ def _near_hand(
     held = set(world.attachments(robot.name))
     found = []
     for obj in world.objects():
-        if obj.name == robot.name:
+        if obj.name == robot.name or obj.is_static or obj.name in held:
             continue
-        if (movable_only and (obj.is_static or obj.name in held)) or obj.type == "floor":
-            continue  # fingers close on a floor as on nothing
         lo, hi = world.aabb(obj)
         if all(lo[k] <= high[k] and hi[k] >= low[k] for k in range(3)):
             found.append(obj)
