@@ -42,6 +42,9 @@ from robocram.world import World
 
 SNAPSHOT_MARGINS = (0.0, 0.015)  # [m] planning again with a margin when the world disagrees
 UNMOVED = 1e-9  # [rad | m] a joint changing less than this does not move
+LIGHT_TRAVEL = 0.3  # [m] a straight segment moving no point farther is checked on the world
+# alone: one PyBullet clearance (free when nothing is nearer than the travel), else a walk on
+# PyBullet's, costs less than making a coal checker (a gripper, a head, a short torso move)
 
 
 @dataclass(frozen=True)
@@ -85,6 +88,22 @@ def _scene(
         judge = BulletScene(world, robot, joints, allowed, allowed_pairs={*pairs, *touching})
         scene = CoalClearance(judge)
     return scene
+
+
+def _judge(
+    world: World,
+    robot: str,
+    joints: tuple[str, ...],
+    allowed: Collection[str],
+    start: list[float],
+    pairs: Collection[LinkPair],
+) -> BulletScene:
+    """The world itself as the checker, allowing ``pairs`` and the start's contacts."""
+    judge = BulletScene(world, robot, joints, allowed, allowed_pairs=pairs)
+    touching = judge.colliding(start)
+    if touching:
+        judge = BulletScene(world, robot, joints, allowed, allowed_pairs={*pairs, *touching})
+    return judge
 
 
 def plan_arm_motion(
@@ -141,18 +160,29 @@ def _checked_path(
     what: str,
     pairs: Collection[LinkPair] = (),
 ) -> JointPath:
-    scene = _scene(world, robot, joints, allowed, start, pairs)
     bound = TravelBound.of(world, robot, joints)
     desc = world.robot(robot).description
     limits = joint_limits(desc, joints)
     box = ([lim.lower for lim in limits], [lim.upper for lim in limits])
+    travel = bound.travel(np.array(start), np.array(end))
+    if travel <= LIGHT_TRAVEL:
+        judge = BulletScene(world, robot, joints, allowed, allowed_pairs=pairs)
+        if judge.clearance_now() > travel:  # at the start, no point can reach what is nearest
+            return JointPath(joints, (tuple(start), tuple(end)), "straight", 1)
+    checker: BulletScene | CoalClearance
+    if travel <= LIGHT_TRAVEL:
+        checker = _judge(world, robot, joints, allowed, start, pairs)
+    else:
+        checker = _scene(world, robot, joints, allowed, start, pairs)
     try:
         return plan_joint_path(
-            scene, start, end, bound, box, plan=False, what=what, explain=not settings.plan
+            checker, start, end, bound, box, plan=False, what=what, explain=not settings.plan
         )  # planning explains a failure from its snapshot
     except ManipulationPathBlocked:
         if not settings.plan:
             raise
+    # a way round is planned on coal's clearances
+    scene = checker if isinstance(checker, CoalClearance) else CoalClearance(checker)
     height = ToolHeight.of(world, robot, joints)
     if height is not None:
         detour = detour_path(scene, start, end, bound, box, height)
