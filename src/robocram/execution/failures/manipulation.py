@@ -72,7 +72,7 @@ class GripperPathBlocked(GripperLowLevelFailure):
 
     goal: float | None = None
     colliding_pairs: tuple[tuple[str, str], ...] | None = None  # (robot link, object)
-    path_fraction: float | None = None  # [0..1] how far along the way the first collision is
+    path_fraction: float | None = None  # [0..1] where along the way it collides (1: the goal)
     summary = "the gripper's way to its goal is blocked"
     hint = "move the hand away from what the message names, then retry"
 

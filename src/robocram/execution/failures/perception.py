@@ -52,7 +52,7 @@ class PtuPathBlocked(PtuGoalUnreachable):
     """Turning the head to the look target runs into something; the head did not move."""
 
     colliding_pairs: tuple[tuple[str, str], ...] | None = None  # (robot link, object)
-    path_fraction: float | None = None  # [0..1] how far along the turn the first collision is
+    path_fraction: float | None = None  # [0..1] where along the turn it collides (1: the goal)
     summary = "the head's turn to the look target is blocked"
     hint = "move the base, or what the message names, so the head can turn freely"
 

@@ -25,7 +25,7 @@ class TorsoPathBlocked(TorsoGoalUnreachable):
     not move."""
 
     colliding_pairs: tuple[tuple[str, str], ...] | None = None  # (robot link, object)
-    path_fraction: float | None = None  # [0..1] how far along the way the first collision is
+    path_fraction: float | None = None  # [0..1] where along the way it collides (1: the goal)
     summary = "the torso's way to its goal is blocked"
     hint = "stand elsewhere, or move what the message names out of the way"
 
