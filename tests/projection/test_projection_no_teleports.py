@@ -18,7 +18,7 @@ import pytest
 
 from robocram.designators import a
 from robocram.execution import perform
-from robocram.execution.failures import TorsoGoalNotReached, TorsoPathBlocked
+from robocram.execution.failures import PtuPathBlocked, TorsoGoalNotReached, TorsoPathBlocked
 from robocram.motion import JointTrajectory, joint_limits, trajectory_listener
 from robocram.projection import simulated_robot
 from robocram.scenes import TabletopScene, tabletop_scene
@@ -176,6 +176,24 @@ def test_a_torso_raised_under_a_board_fails_naming_it_and_nothing_moves() -> Non
         ledger.perform(a.motion(type="moving-torso", joint_angle=0.3))
     assert any(other == "board" for _, other in info.value.colliding_pairs or ())
     assert 0.0 < (info.value.path_fraction or 0.0) <= 1.0
+    assert ledger.seen == []
+    assert world.joint_states("pr2") == before and world.pose("pr2") == pose
+    world.close()
+
+
+def test_a_head_turned_into_a_post_beside_it_fails_naming_it_and_nothing_moves() -> None:
+    scene = tabletop_scene("pr2")
+    world = scene.world
+    world.add_cylinder("post", 0.015, 0.3, pose=(-0.1, -0.22, 1.25))  # behind the head's right
+    before, pose = dict(world.joint_states("pr2")), world.pose("pr2")
+    ledger = Ledger(world, "pr2")
+    with (
+        trajectory_listener(ledger),
+        simulated_robot(world, "pr2"),
+        pytest.raises(PtuPathBlocked, match="post") as info,
+    ):  # to the right: the pan cannot go round the other way (its limits are +-3 rad)
+        ledger.perform(a.motion(type="looking", target=PoseStamped("map", (0.0, -2.0, 1.2))))
+    assert ("head_pan_link", "post") in (info.value.colliding_pairs or ())
     assert ledger.seen == []
     assert world.joint_states("pr2") == before and world.pose("pr2") == pose
     world.close()
