@@ -104,9 +104,14 @@ def _opening(robot: ProjectedRobot, arm: str) -> float:
 
 
 def open_gripper(robot: ProjectedRobot, arm: str) -> dict[str, float]:
-    """Open ``arm``'s gripper fully and release what it holds; return the joint values."""
+    """Open ``arm``'s gripper fully and release what it holds; return the joint values.
+
+    Raises:
+        GripperPathBlocked: the fingers cannot open; they did not move and hold on.
+    """
+    reached = _move_to(robot, arm, 1.0)
     release(robot, arm)
-    return _move_to(robot, arm, 1.0)
+    return reached
 
 
 def close_gripper(robot: ProjectedRobot, arm: str) -> dict[str, float]:
