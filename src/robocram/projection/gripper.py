@@ -15,9 +15,10 @@ gripper's links first touch one object from opposing sides (two contact normals 
 :data:`OPPOSED` apart), found by probing the closing in steps and bisecting the step where
 that first happens; the fingers then close to there, touching what they squeeze (those
 contacts are allowed). Gripping squeezes only movable objects and attaches the one
-squeezed to the arm's end-effector link; with nothing squeezed when fully closed,
-``GripperClosedCompletely`` is raised, as in CRAM. Closing without gripping stops on
-anything the fingers squeeze (a handle) and attaches nothing.
+squeezed to the arm's end-effector link; with none squeezed, the fingers close as closing
+does and ``GripperClosedCompletely`` is raised, as in CRAM. Closing without gripping
+closes fully, or, when something is in the way, stops where the fingers squeeze it or
+first touch it (a handle's face), and attaches nothing.
 """
 
 from __future__ import annotations
@@ -222,16 +223,16 @@ def grip(robot: ProjectedRobot, arm: str) -> str:
     """Close ``arm``'s gripper until it squeezes an object, attach it and return its name.
 
     Raises:
-        GripperClosedCompletely: the gripper closed fully without squeezing anything.
+        GripperClosedCompletely: the gripper closed without squeezing anything movable
+            (fully, or onto what does not move, as :func:`close_gripper` does).
         GripperPathBlocked: the fingers' way runs into something else; they did not move.
     """
     links = _squeezing_links(robot, arm)
     found = _closing_stop(
         robot, arm, links, _near_hand(robot, links), lambda obj: _squeezed(robot, links, obj)
     )
-    if found is None:
-        _move_to(robot, arm, 0.0)
-        closed = robot.world.joint_states(robot.name)[gripper_joints(robot, arm)[0]]
+    if found is None:  # closes as closing does: fully, or onto a handle's bar
+        closed = close_gripper(robot, arm)[gripper_joints(robot, arm)[0]]
         raise GripperClosedCompletely(
             f"{robot.name}'s {arm} gripper closed on nothing: no movable object was squeezed "
             "between its fingers",
