@@ -42,9 +42,10 @@ from robocram.world import World
 
 SNAPSHOT_MARGINS = (0.0, 0.015)  # [m] planning again with a margin when the world disagrees
 UNMOVED = 1e-9  # [rad | m] a joint changing less than this does not move
-LIGHT_TRAVEL = 0.3  # [m] a straight segment moving no point farther is checked on the world
+LIGHT_TRAVEL = 0.5  # [m] a straight segment moving no point farther is checked on the world
 # alone: one PyBullet clearance (free when nothing is nearer than the travel), else a walk on
 # PyBullet's, costs less than making a coal checker (a gripper, a head, a short torso move)
+FAST_MARGIN = 0.01  # [m] the one clearance looks this much beyond the travel
 
 
 @dataclass(frozen=True)
@@ -167,7 +168,7 @@ def _checked_path(
     travel = bound.travel(np.array(start), np.array(end))
     if travel <= LIGHT_TRAVEL:
         judge = BulletScene(world, robot, joints, allowed, allowed_pairs=pairs)
-        if judge.clearance_now() > travel:  # at the start, no point can reach what is nearest
+        if judge.clearance_now(travel + FAST_MARGIN) > travel:  # no point can reach anything
             return JointPath(joints, (tuple(start), tuple(end)), "straight", 1)
     checker: BulletScene | CoalClearance
     if travel <= LIGHT_TRAVEL:
