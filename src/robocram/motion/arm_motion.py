@@ -4,7 +4,10 @@ The straight joint-space segment is checked first on the world itself, by conser
 advancement on clearances (:mod:`segment_check`): coal measures them on obstacles kept
 with the world and PyBullet decides every near contact
 (:class:`~robocram.motion.coal_clearance.CoalClearance`), which needs no snapshot and
-answers most motions in a few checks. When it is blocked, a detour over the obstacle
+answers most motions in a few checks. A short segment (no point moving over
+:data:`LIGHT_TRAVEL`: a gripper, a head's turn, a small torso move) needs no coal checker:
+it is free at once when PyBullet finds nothing it may not touch within its travel, else it
+is walked on PyBullet's clearances. When it is blocked, a detour over the obstacle
 (:mod:`arm_detours`: the tool lifted at both ends) is checked the same way; only when that
 is blocked too is a coal snapshot
 (:class:`~robocram.motion.collision_scene.CollisionScene`) built, for OMPL's thousands of
@@ -150,6 +153,26 @@ def _unmoved(start: list[float], end: list[float]) -> bool:
     return all(abs(b - a) <= UNMOVED for a, b in zip(start, end, strict=True))
 
 
+def _straight_checker(
+    world: World,
+    robot: str,
+    joints: tuple[str, ...],
+    allowed: Collection[str],
+    start: list[float],
+    pairs: Collection[LinkPair],
+    travel: float,
+) -> BulletScene | CoalClearance | None:
+    """What checks the straight segment from ``start`` (where the robot stands) on which
+    no point moves farther than ``travel`` [m]: None when nothing it may not touch is that
+    near (it is free); the world itself for a short one; else coal's clearances."""
+    if travel > LIGHT_TRAVEL:
+        return _scene(world, robot, joints, allowed, start, pairs)
+    judge = BulletScene(world, robot, joints, allowed, allowed_pairs=pairs)
+    if judge.clearance_now(travel + FAST_MARGIN) > travel:
+        return None
+    return _judge(world, robot, joints, allowed, start, pairs)
+
+
 def _checked_path(
     world: World,
     robot: str,
@@ -166,15 +189,9 @@ def _checked_path(
     limits = joint_limits(desc, joints)
     box = ([lim.lower for lim in limits], [lim.upper for lim in limits])
     travel = bound.travel(np.array(start), np.array(end))
-    if travel <= LIGHT_TRAVEL:
-        judge = BulletScene(world, robot, joints, allowed, allowed_pairs=pairs)
-        if judge.clearance_now(travel + FAST_MARGIN) > travel:  # no point can reach anything
-            return JointPath(joints, (tuple(start), tuple(end)), "straight", 1)
-    checker: BulletScene | CoalClearance
-    if travel <= LIGHT_TRAVEL:
-        checker = _judge(world, robot, joints, allowed, start, pairs)
-    else:
-        checker = _scene(world, robot, joints, allowed, start, pairs)
+    checker = _straight_checker(world, robot, joints, allowed, start, pairs, travel)
+    if checker is None:
+        return JointPath(joints, (tuple(start), tuple(end)), "straight", 1)
     try:
         return plan_joint_path(
             checker, start, end, bound, box, plan=False, what=what, explain=not settings.plan
