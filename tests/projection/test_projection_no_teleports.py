@@ -1,11 +1,12 @@
 """No joint jumps: the torso, the head and the grippers move along checked, timed
 trajectories, reported to listeners (issue 35, item 2; issue 42, item 5).
 
-The ledger below is independent of the planner: it reads the world's joint states before
-the first motion and at each reported trajectory. Between two of them only the joints the
-trajectory names (and their mimic followers) may change; the trajectory starts where they
-were and ends where they are; and after a motion nothing has changed since its last
-trajectory. A joint set directly by a motion breaks one of these.
+The ledger below is independent of the planner: it reads the world's joint states and the
+base pose before the first motion and at each reported trajectory. Between two of them
+only the joints the trajectory names (and their mimic followers), or for a base trajectory
+only the base, may change; a joint trajectory starts where its joints were and ends where
+they are; and after a motion nothing has changed since its last trajectory. A joint set or
+a base placed directly by a motion breaks one of these.
 """
 
 from __future__ import annotations
@@ -19,9 +20,10 @@ import pytest
 from robocram.designators import a
 from robocram.execution import perform
 from robocram.execution.failures import PtuPathBlocked, TorsoGoalNotReached, TorsoPathBlocked
-from robocram.motion import JointTrajectory, joint_limits, trajectory_listener
+from robocram.motion import BASE_JOINTS, JointTrajectory, joint_limits, trajectory_listener
+from robocram.plans.transport import transport
 from robocram.projection import simulated_robot
-from robocram.scenes import TabletopScene, tabletop_scene
+from robocram.scenes import TabletopScene, kitchen_scene, tabletop_scene
 from robocram.tf import PoseStamped
 from robocram.world import World
 
@@ -37,6 +39,7 @@ class Ledger:
         self.world, self.robot = world, robot
         self.model = world.robot(robot).description.model
         self.last = dict(world.joint_states(robot))
+        self.pose = world.pose(robot)
         self.seen: list[JointTrajectory] = []
 
     def followers(self, joints: tuple[str, ...]) -> set[str]:
@@ -52,17 +55,27 @@ class Ledger:
         return found
 
     def __call__(self, trajectory: JointTrajectory) -> None:
-        now = dict(self.world.joint_states(self.robot))
-        moving = self.followers(trajectory.joint_names)
+        now, pose = dict(self.world.joint_states(self.robot)), self.world.pose(self.robot)
+        base = trajectory.joint_names == BASE_JOINTS
+        assert base or pose.distance_to(self.pose) == 0.0, "the base moved off its trajectory"
+        self.pose = pose
+        moving = set() if base else self.followers(trajectory.joint_names)
         jumped = {
             j: (self.last[j], v) for j, v in now.items() if j not in moving and v != self.last[j]
         }
         assert not jumped, f"joints {jumped} changed outside the {trajectory.kind} trajectory"
-        for joint in trajectory.joint_names:
+        for joint in () if base else trajectory.joint_names:
             assert trajectory.start[joint] == pytest.approx(self.last[joint], abs=TOL)
             assert trajectory.end[joint] == pytest.approx(now[joint], abs=TOL)
         self.seen.append(trajectory)
         self.last = now
+
+    def assert_still(self) -> None:
+        """Nothing moved since the last trajectory."""
+        now = dict(self.world.joint_states(self.robot))
+        changed = {j for j, v in now.items() if v != self.last[j]}
+        assert not changed, f"joints {changed} changed after the last trajectory"
+        assert self.world.pose(self.robot).distance_to(self.pose) == 0.0
 
     def perform(self, motion: Any) -> tuple[Any, list[JointTrajectory]]:
         """Perform ``motion``; its answer and the trajectories it reported."""
@@ -70,9 +83,7 @@ class Ledger:
         try:
             return perform(motion), self.seen[first:]
         finally:
-            now = dict(self.world.joint_states(self.robot))
-            changed = {j for j, v in now.items() if v != self.last[j]}
-            assert not changed, f"joints {changed} changed after the motion's last trajectory"
+            self.assert_still()
 
 
 def assert_timed(world: World, robot: str, trajectory: JointTrajectory) -> None:
@@ -196,4 +207,18 @@ def test_a_head_turned_into_a_post_beside_it_fails_naming_it_and_nothing_moves()
     assert ("head_pan_link", "post") in (info.value.colliding_pairs or ())
     assert ledger.seen == []
     assert world.joint_states("pr2") == before and world.pose("pr2") == pose
+    world.close()
+
+
+@pytest.mark.parametrize(("robot", "kind"), [("pr2", "bowl"), ("hsrb", "mug")])
+def test_a_kitchen_transport_moves_the_robot_only_along_its_trajectories(
+    robot: str, kind: str
+) -> None:
+    scene = kitchen_scene(robot)  # the PR2's bowl is in a drawer: opened and closed again
+    world = scene.world
+    ledger = Ledger(world, robot)
+    with trajectory_listener(ledger), simulated_robot(world, robot):
+        transport(kind, a.location(on=("kitchen", "table_top"), for_=f"{kind}-1"))
+    ledger.assert_still()
+    assert {"base", "arm", "head", "gripper"} <= {t.kind for t in ledger.seen}
     world.close()
