@@ -1,10 +1,10 @@
 """An independent judge of executed trajectories, for tests: PyBullet, densely, at once.
 
 Each trajectory is judged the moment projection reports it, in the world as it is then.
-Every configuration 1 cm of link travel / 0.02 rad apart along an arm trajectory, and
-every pose 1 cm / 0.02 rad apart along a base trajectory, must be free, held objects
-included; contacts the motion starts with and the moving hand's own links (grasping) do
-not count.
+Every configuration 1 cm of link travel / 0.02 rad apart along an arm, torso, head or
+gripper trajectory, and every pose 1 cm / 0.02 rad apart along a base trajectory, must be
+free, held objects included; contacts the motion starts with, the moving hand's own links
+(grasping) and the fingers on a movable object a gripper closes on do not count.
 """
 
 from __future__ import annotations
@@ -49,6 +49,8 @@ class Judge:
         start = dict(zip(joints, points[0], strict=True))
         judge = BulletScene(world, self.robot, joints, self._hand_links(joints))
         allowed = set(judge.colliding_at(start))
+        if trajectory.kind == "gripper":  # the fingers may sink into what they squeeze
+            allowed |= self._squeezed(judge, trajectory)
         bound = TravelBound.of(world, self.robot, joints)
         checked = 0
         for qa, qb in zip(points, points[1:], strict=False):
@@ -60,6 +62,16 @@ class Judge:
                 checked += 1
         world.set_joint_states(self.robot, {j: end[j] for j in joints})
         return checked
+
+    def _squeezed(self, judge: BulletScene, trajectory: JointTrajectory) -> set[tuple[str, str]]:
+        """The pairs a gripper trajectory ends in: a finger on a movable object (one that
+        meets it before the other does sinks in until both squeeze it)."""
+        movable = {o.name for o in self.world.objects() if not o.is_static}
+        return {
+            (link, other)
+            for link, other in judge.colliding_at(trajectory.end)
+            if other.split("/")[0] in movable
+        }
 
     def _base(self, trajectory: JointTrajectory) -> int:
         world, robot = self.world, self.robot

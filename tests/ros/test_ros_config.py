@@ -34,7 +34,9 @@ def test_pr2_defaults_name_cram_s_controllers() -> None:
     config = _config("pr2")
     assert config.action("arm(left)").server == "/l_arm_controller/follow_joint_trajectory"
     assert config.action("gripper(right)").action_type == "control_msgs/GripperCommand"
-    assert config.action("head").action_type == "control_msgs/PointHead"
+    head = config.action("head")  # the trajectory robocram plans and checks, not PointHead
+    assert head.server == "/head_traj_controller/follow_joint_trajectory"
+    assert head.action_type == "control_msgs/FollowJointTrajectory"
     assert config.action("navigation").timeout == 120.0
     assert config.action("arm(right)").timeout == 30.0
     assert config.joint_states_topic == "/joint_states"
@@ -57,7 +59,7 @@ def test_a_missing_fact_is_named() -> None:
 
 
 def test_an_unknown_action_type_says_which_are_known() -> None:
-    facts = default_facts("pr2").replace("'control_msgs/PointHead'", "'pr2_msgs/PointHead'")
+    facts = default_facts("pr2").replace("'control_msgs/GripperCommand'", "'pr2_msgs/Gripper'")
     with pytest.raises(RosConfigError, match="unknown action type; use one of"):
         _config("pr2", facts)
 

@@ -14,16 +14,21 @@ import pytest
 
 from robocram.designators import a
 from robocram.execution import perform
-from robocram.execution.failures import ManipulationPathBlocked, NavigationPathBlocked
+from robocram.execution.failures import (
+    ManipulationPathBlocked,
+    NavigationPathBlocked,
+    TorsoPathBlocked,
+)
 from robocram.motion import JointTrajectory, trajectory_listener
 from robocram.ros import Roscore, ros_robot
 from robocram.ros_driver.driver_process import DriverProcess
 from robocram.scenes import tabletop_scene
-from robocram.tf import Pose
+from robocram.tf import Pose, PoseStamped
 from robocram.world import World
 
 RIGHT_ARM = "/r_arm_controller/follow_joint_trajectory"
 TORSO = "/torso_controller/follow_joint_trajectory"
+HEAD = "/head_traj_controller/follow_joint_trajectory"
 SAME = 1e-9  # [rad | s] what crosses ROS unchanged (float64; times to the nanosecond)
 SWEEP = {"r_shoulder_pan_joint": -1.2}  # the stretched right arm swings to the right
 INTO_SHELF = {"r_shoulder_pan_joint": -0.6}  # halfway: the forearm is in the shelf
@@ -172,3 +177,47 @@ def test_a_base_goal_no_path_leads_to_in_the_world_is_not_sent(
     assert driver.received_goals() == []
     assert "wall_e" in str(failure.value)
     assert base.distance_to(Pose()) < 1e-6
+
+
+def test_the_pr2_lifts_and_looks_by_checked_trajectories_of_their_kinds(
+    roscore: Roscore, tmp_path: Path
+) -> None:
+    sent: list[JointTrajectory] = []
+    with (
+        DriverProcess(roscore.uri, goal_log=tmp_path / "goals.jsonl") as driver,
+        ros_robot("pr2", roscore.uri, world=tabletop_scene("pr2").world) as run,
+        trajectory_listener(sent.append),
+    ):
+        perform(a.motion(type="moving-torso", joint_angle=0.1))
+        perform(a.motion(type="looking", target=PoseStamped("map", (1.0, -0.5, 0.6))))
+        reached = run.environment.client.joint_states()
+    torso, head = sent
+    assert (torso.kind, head.kind) == ("torso", "head")
+    (torso_goal,) = driver.received_goals(TORSO)
+    (head_goal,) = driver.received_goals(HEAD)  # the trajectory controller's, not PointHead
+    _assert_same(torso_goal, torso)
+    _assert_same(head_goal, head)
+    assert set(head.joint_names) == {"head_pan_joint", "head_tilt_joint"}
+    assert len(head.points) > 2
+    for joint, value in head.end.items():
+        assert reached[joint] == pytest.approx(value, abs=0.02)  # the goal tolerance
+
+
+def test_a_torso_blocked_by_a_board_in_the_world_sends_nothing(
+    roscore: Roscore, tmp_path: Path
+) -> None:
+    world = tabletop_scene("pr2").world
+    top = max(world.link_aabb("pr2", link)[1][2] for link in world.link_names("pr2"))
+    world.add_box("board", (0.8, 0.8, 0.02), Pose((0.0, 0.0, top + 0.06)))  # 5 cm above
+    with (
+        DriverProcess(roscore.uri, goal_log=tmp_path / "goals.jsonl") as driver,
+        ros_robot("pr2", roscore.uri, world=world) as run,
+        pytest.raises(TorsoPathBlocked, match="board") as failure,
+    ):
+        try:
+            perform(a.motion(type="moving-torso", joint_angle=0.3))
+        finally:
+            reached = run.environment.client.joint_states()["torso_lift_joint"]
+    assert driver.received_goals() == []
+    assert any(other == "board" for _, other in failure.value.colliding_pairs or ())
+    assert reached == pytest.approx(0.0, abs=1e-9)

@@ -11,12 +11,17 @@ from PIL import Image
 
 from robocram.projection import looking_orientation
 from robocram.tf import Pose
-from robocram.traces import TraceError, animate_run
+from robocram.traces import TraceError, animate_run, run_trajectories
 
 EYE, AT = (1.6, -1.6, 2.0), (-0.1, 0.1, 0.5)  # [m] in map: the PR2 and its drive in sight
 CAMERA = Pose(EYE, looking_orientation(EYE, AT))
 WIDTH, HEIGHT = 160, 120  # [px]
 PERIOD = 0.5  # [s] of motion time between frames
+
+
+def _motion_time(traced: Any) -> float:
+    """[s] of motion in the run: the arm's, the torso's and the base's trajectories."""
+    return sum(t.duration for t in run_trajectories(traced.db_path, traced.run))
 
 
 def test_gif_has_a_frame_per_period_of_motion_and_every_state(
@@ -27,7 +32,7 @@ def test_gif_has_a_frame_per_period_of_motion_and_every_state(
         trajectory_run.db_path, trajectory_run.run, out, CAMERA,
         width=WIDTH, height=HEIGHT, period=PERIOD,
     )  # fmt: skip
-    span = trajectory_run.arm.duration + trajectory_run.base.duration  # [s] of motion
+    span = _motion_time(trajectory_run)
     assert gif.period == pytest.approx(PERIOD)
     assert abs(gif.frames - (span / PERIOD + 1)) <= 1  # one every period, and the end
     assert gif.replay_duration == pytest.approx(span, abs=0.05)
@@ -48,7 +53,7 @@ def test_a_long_run_gets_a_wider_period(trajectory_run: Any, tmp_path: Path) -> 
         trajectory_run.db_path, trajectory_run.run, tmp_path / "short.gif", CAMERA,
         width=WIDTH, height=HEIGHT, period=PERIOD, max_frames=5,
     )  # fmt: skip
-    span = trajectory_run.arm.duration + trajectory_run.base.duration
+    span = _motion_time(trajectory_run)
     assert gif.period == pytest.approx(span / 4, abs=0.05)
     assert gif.frames in (5, 6)
 

@@ -30,6 +30,7 @@ from robocram.traces import (
 )
 
 TOL = 1e-9
+CLOCK_TOL = 1e-6  # [s] replay starts come from wall-clock stamps (~2e-7 s apart in 2026)
 
 
 def _by_task(trajectories: list[Any], suffix: str) -> Any:
@@ -58,17 +59,21 @@ def test_trajectories_sit_between_the_states_of_their_motions(trajectory_run: An
         states = world_state_times(db, trajectory_run.run)
         run_start = require_run(db, trajectory_run.run).start
     arm, base = _by_task(stored, "/move-arm"), _by_task(stored, "/move-base")
+    (torso,) = [t for t in stored if t.kind == "torso"]  # the torso moves along its own
+    assert torso.joint_names == ("torso_lift_joint",)
+    assert torso.trajectory().end["torso_lift_joint"] == pytest.approx(0.1, abs=TOL)
     torso_state = next(t for _, t, path in states if path and path.endswith("moving-torso"))
-    assert states[0][1] < arm.time < torso_state < base.time
+    assert states[0][1] < arm.time < torso.time <= torso_state < base.time
     # projection takes no wall time: on the replay clock each one starts when the last ended
     assert arm.start == pytest.approx(0.0, abs=0.05)
-    assert base.start >= arm.end - TOL
-    assert base.start - arm.end < 0.05
+    for before, after in ((arm, torso), (torso, base)):
+        assert after.start >= before.end - CLOCK_TOL
+        assert after.start - before.end < 0.05
     clock = ReplayClock(
         run_start, [(t.time, t.duration) for t in stored], [t for _, t, _ in states]
     )
-    assert clock.since_start(torso_state) >= arm.end - TOL  # the torso's state after the arm
-    assert clock.since_start(torso_state) <= base.start + TOL
+    assert clock.since_start(torso_state) >= torso.end - CLOCK_TOL  # its state after it
+    assert clock.since_start(torso_state) <= base.start + CLOCK_TOL
 
 
 def test_replay_frames_follow_the_trajectories(trajectory_run: Any) -> None:

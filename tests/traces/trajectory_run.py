@@ -1,5 +1,7 @@
 """A traced PR2 run that executes timed trajectories: an arm motion, a torso motion, a drive.
 
+The torso moves through projection (``moving-torso``), so its trajectory is projection's.
+
 The arm and base trajectories are timed by the motion layer on real PR2 joint paths under
 the PR2's limits; the run sets the world to each trajectory's end and reports it the way
 projection does (``report_executed``), inside a task of its own. The mug is held (attached
@@ -72,7 +74,8 @@ def base_trajectory(world: World) -> JointTrajectory:
 
 
 def traced_trajectory_run(db_path: Path) -> TrajectoryRun:
-    """Trace: arm trajectory, a torso motion (a stored state), grasp the mug, drive."""
+    """Trace: arm trajectory, grasp the mug, a torso motion (its trajectory and a stored
+    state), drive."""
     scene = tabletop_scene("pr2")
     world = scene.world
     with (

@@ -4,7 +4,10 @@ The straight joint-space segment is checked first on the world itself, by conser
 advancement on clearances (:mod:`segment_check`): coal measures them on obstacles kept
 with the world and PyBullet decides every near contact
 (:class:`~robocram.motion.coal_clearance.CoalClearance`), which needs no snapshot and
-answers most motions in a few checks. When it is blocked, a detour over the obstacle
+answers most motions in a few checks. A short segment (no point moving over
+:data:`LIGHT_TRAVEL`: a gripper, a head's turn, a small torso move) needs no coal checker:
+it is free at once when PyBullet finds nothing it may not touch within its travel, else it
+is walked on PyBullet's clearances. When it is blocked, a detour over the obstacle
 (:mod:`arm_detours`: the tool lifted at both ends) is checked the same way; only when that
 is blocked too is a coal snapshot
 (:class:`~robocram.motion.collision_scene.CollisionScene`) built, for OMPL's thousands of
@@ -29,6 +32,7 @@ from robocram.motion.bullet_scene import BulletScene
 from robocram.motion.cartesian_path import cartesian_path
 from robocram.motion.coal_clearance import CoalClearance
 from robocram.motion.collision_scene import CollisionScene
+from robocram.motion.configuration_checker import LinkPair
 from robocram.motion.corner_blend import blend_radii
 from robocram.motion.joint_limits import joint_limits
 from robocram.motion.joint_path import PLANNING_BUDGET, JointPath, plan_joint_path
@@ -43,6 +47,10 @@ from robocram.world import World
 
 SNAPSHOT_MARGINS = (0.0, 0.015)  # [m] planning again with a margin when the world disagrees
 UNMOVED = 1e-9  # [rad | m] a joint changing less than this does not move
+LIGHT_TRAVEL = 0.5  # [m] a straight segment moving no point farther is checked on the world
+# alone: one PyBullet clearance (free when nothing is nearer than the travel), else a walk on
+# PyBullet's, costs less than making a coal checker (a gripper, a head, a short torso move)
+FAST_MARGIN = 0.01  # [m] the one clearance looks this much beyond the travel
 
 
 @dataclass(frozen=True)
@@ -71,17 +79,38 @@ def planned_joints(desc: LoadedDescription, goal: Mapping[str, float]) -> tuple[
 
 
 def _scene(
-    world: World, robot: str, joints: tuple[str, ...], allowed: Collection[str], start: list[float]
+    world: World,
+    robot: str,
+    joints: tuple[str, ...],
+    allowed: Collection[str],
+    start: list[float],
+    pairs: Collection[LinkPair] = (),
 ) -> CoalClearance:
     """The world checker (clearances from coal, contacts judged on the world), allowing
-    the contacts the robot (and what it holds) already has at the start: a hand on a
-    handle, a held bowl still on its table."""
-    scene = CoalClearance(BulletScene(world, robot, joints, allowed))
+    ``pairs`` and the contacts the robot (and what it holds) already has at the start: a
+    hand on a handle, a held bowl still on its table."""
+    scene = CoalClearance(BulletScene(world, robot, joints, allowed, allowed_pairs=pairs))
     touching = scene.colliding(start)
     if touching:
-        judge = BulletScene(world, robot, joints, allowed, allowed_pairs=touching)
+        judge = BulletScene(world, robot, joints, allowed, allowed_pairs={*pairs, *touching})
         scene = CoalClearance(judge)
     return scene
+
+
+def _judge(
+    world: World,
+    robot: str,
+    joints: tuple[str, ...],
+    allowed: Collection[str],
+    start: list[float],
+    pairs: Collection[LinkPair],
+) -> BulletScene:
+    """The world itself as the checker, allowing ``pairs`` and the start's contacts."""
+    judge = BulletScene(world, robot, joints, allowed, allowed_pairs=pairs)
+    touching = judge.colliding(start)
+    if touching:
+        judge = BulletScene(world, robot, joints, allowed, allowed_pairs={*pairs, *touching})
+    return judge
 
 
 def plan_arm_motion(
@@ -92,8 +121,14 @@ def plan_arm_motion(
     allowed_links: Collection[str] = (),
     settings: MotionSettings = MotionSettings(),
     what: str = "the arm",
+    kind: str = "arm",
+    allowed_pairs: Collection[LinkPair] = (),
 ) -> ArmMotion:
     """A timed, collision-free motion of the joints in ``goal`` from where they are now.
+
+    Any joints of the robot: an arm's, the torso, the head's, a gripper's (``kind``
+    names the motion in its trajectory). ``allowed_pairs`` ``(robot link, other)`` may
+    touch besides the contacts the motion starts with (fingers squeezing what they grip).
 
     Raises:
         ManipulationPathBlocked: the goal collides, or no way there was found; it names the
@@ -108,9 +143,11 @@ def plan_arm_motion(
     if not settings.check or _unmoved(start, end):  # nothing to check: the start is allowed
         path = JointPath(joints, (tuple(start), tuple(end)), "straight", 0)
     else:
-        path = _checked_path(world, robot, joints, allowed_links, start, end, settings, what)
+        path = _checked_path(
+            world, robot, joints, allowed_links, start, end, settings, what, allowed_pairs
+        )
     trajectory = time_parameterize(
-        robot, joints, path.waypoints, limits, kind="arm", period=settings.period
+        robot, joints, path.waypoints, limits, kind=kind, period=settings.period
     )
     return ArmMotion(path, trajectory)
 
@@ -119,6 +156,26 @@ def _unmoved(start: list[float], end: list[float]) -> bool:
     """Whether no joint moves (an arm parked again): contacts the motion starts with are
     allowed, so such a motion is free without a checker."""
     return all(abs(b - a) <= UNMOVED for a, b in zip(start, end, strict=True))
+
+
+def _straight_checker(
+    world: World,
+    robot: str,
+    joints: tuple[str, ...],
+    allowed: Collection[str],
+    start: list[float],
+    pairs: Collection[LinkPair],
+    travel: float,
+) -> BulletScene | CoalClearance | None:
+    """What checks the straight segment from ``start`` (where the robot stands) on which
+    no point moves farther than ``travel`` [m]: None when nothing it may not touch is that
+    near (it is free); the world itself for a short one; else coal's clearances."""
+    if travel > LIGHT_TRAVEL:
+        return _scene(world, robot, joints, allowed, start, pairs)
+    judge = BulletScene(world, robot, joints, allowed, allowed_pairs=pairs)
+    if judge.clearance_now(travel + FAST_MARGIN) > travel:
+        return None
+    return _judge(world, robot, joints, allowed, start, pairs)
 
 
 def _checked_path(
@@ -130,18 +187,25 @@ def _checked_path(
     end: list[float],
     settings: MotionSettings,
     what: str,
+    pairs: Collection[LinkPair] = (),
 ) -> JointPath:
-    scene = _scene(world, robot, joints, allowed, start)
     bound = TravelBound.of(world, robot, joints)
     desc = world.robot(robot).description
     limits = joint_limits(desc, joints)
     box = ([lim.lower for lim in limits], [lim.upper for lim in limits])
     own = SelfPathCheck.of(world, robot, joints)
     _goal_apart(own, end, what)
+    travel = bound.travel(np.array(start), np.array(end))
+    checker = _straight_checker(world, robot, joints, allowed, start, pairs, travel)
     try:
-        straight = plan_joint_path(
-            scene, start, end, bound, box, plan=False, what=what, explain=not settings.plan
-        )  # planning explains a failure from its snapshot
+        straight = (
+            JointPath(joints, (tuple(start), tuple(end)), "straight", 1)
+            if checker is None  # nothing of the world near: free at once
+            else plan_joint_path(
+                checker, start, end, bound, box, plan=False, what=what,
+                explain=not settings.plan,
+            )  # planning explains a failure from its snapshot
+        )  # fmt: skip
         blocked = own.first_collision(straight.waypoints)
         if blocked is None:
             return straight
@@ -150,6 +214,10 @@ def _checked_path(
     except ManipulationPathBlocked:
         if not settings.plan:
             raise
+    if checker is None:  # free of the world, but into itself: plan round on coal
+        checker = _scene(world, robot, joints, allowed, start, pairs)
+    # a way round is planned on coal's clearances
+    scene = checker if isinstance(checker, CoalClearance) else CoalClearance(checker)
     height = ToolHeight.of(world, robot, joints)
     if height is not None:
         detour = detour_path(scene, start, end, bound, box, height)

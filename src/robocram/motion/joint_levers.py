@@ -16,6 +16,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from robocram.motion.joint_trajectory import FloatArray
+from robocram.motion.mimic_family import mimic_family
 from robocram.motion.travel_bound import link_radii
 from robocram.robots import RobotModel
 from robocram.world import World
@@ -138,10 +139,11 @@ def cross(a: FloatArray, b: FloatArray) -> FloatArray:
 
 
 def links_below(world: World, robot: str, joints: Sequence[str]) -> tuple[str, ...]:
-    """The links some joint of ``joints`` moves (those below it), in the world's link order."""
+    """The links some joint of ``joints`` moves (those below it, or below a joint that
+    mimics it), in the world's link order."""
     model = world.robot(robot).description.model
     tree = model.derived(_tree)
-    todo = [model.joints[j].child for j in joints]
+    todo = [model.joints[m].child for j in joints for m, _, _ in mimic_family(model, j)]
     below = set(todo)
     while todo:
         for child, _ in tree.get(todo.pop(), ()):

@@ -14,6 +14,7 @@ from numpy.typing import NDArray
 
 from robocram.kinematics.robot_kinematics import RobotKinematics
 from robocram.motion.errors import MotionError
+from robocram.motion.mimic_family import mimic_family
 from robocram.robots import RobotModel
 
 
@@ -52,31 +53,6 @@ class JointSlots:
         return full
 
 
-def _followers(model: RobotModel, name: str) -> list[tuple[str, float, float]]:
-    """``(joint, multiplier, offset)`` of ``name`` itself and every joint mimicking it."""
-    mimics = model.derived(_mimics)
-    found = [(name, 1.0, 0.0)]
-    k = 0
-    while k < len(found):
-        master, mult, off = found[k]
-        for joint, multiplier, offset in mimics.get(master, ()):
-            found.append((joint, multiplier * mult, multiplier * off + offset))
-        k += 1
-    return found
-
-
-def _mimics(model: RobotModel) -> dict[str, list[tuple[str, float, float]]]:
-    """Per master joint: ``(joint, multiplier, offset)`` of the joints mimicking it
-    directly, in the model's order (kept with the model: a checker is made per motion,
-    and scanning every joint per planned joint cost more than the rest of its slots)."""
-    found: dict[str, list[tuple[str, float, float]]] = {}
-    for joint in model.joints.values():
-        if joint.mimic is not None:
-            m = joint.mimic
-            found.setdefault(m.joint, []).append((joint.name, m.multiplier, m.offset))
-    return found
-
-
 _Slots = tuple[
     NDArray[np.int_], NDArray[np.int_], NDArray[np.float64], NDArray[np.float64],
     NDArray[np.int_], NDArray[np.int_], NDArray[np.float64], NDArray[np.float64],
@@ -94,7 +70,7 @@ def _slots(kin: RobotKinematics, names: tuple[str, ...]) -> _Slots:
     value, q index, multiplier, offset."""
     rows: list[tuple[int, int, float, float, bool]] = []  # (source, idx_q, mult, off, cont)
     for source, name in enumerate(names):
-        for follower, mult, off in _followers(kin.robot_model, name):
+        for follower, mult, off in mimic_family(kin.robot_model, name):
             info = kin.joint(follower)
             rows.append((source, info.idx_q, mult, off, info.continuous))
     plain = [r for r in rows if not r[4]]

@@ -66,7 +66,7 @@ def _advance_free(
     floor = bound.max_link_travel / travel
     local = (  # reading levers costs a sixth of a check: worth it on long sweeps only
         _LocalSteps.of(checker, qa, qb)
-        if travel > LOCAL_LEVERS_FROM and can_tell_levers(checker)
+        if travel > LOCAL_LEVERS_FROM and not bound.mimicked and can_tell_levers(checker)
         else None
     )
     by_link = {}  # [m] per link: the most a point of it moves from qa to qb

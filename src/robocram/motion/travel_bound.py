@@ -20,6 +20,7 @@ import numpy as np
 
 from robocram.motion.errors import MotionError
 from robocram.motion.joint_trajectory import FloatArray
+from robocram.motion.mimic_family import mimic_family
 from robocram.robots import RobotModel
 from robocram.world import World
 
@@ -37,6 +38,7 @@ class TravelBound:
     max_joint_step: float = MAX_JOINT_STEP
     link_lever: dict[str, FloatArray] = field(default_factory=dict)  # per moving link
     carriers: dict[str, str] = field(default_factory=dict)  # held object -> its link
+    mimicked: bool = False  # a joint has mimic followers (local levers do not see them)
 
     def link_travel(self, link: str, qa: FloatArray, qb: FloatArray) -> float:
         """The most [m] a point of ``link`` (or of a held object) travels from qa to qb."""
@@ -80,13 +82,13 @@ class TravelBound:
         children = model.derived(_children)
         lever = []
         per_link: dict[str, FloatArray] = {}
+        mimicked = False
         for i, name in enumerate(joints):
             joint = model.joints.get(name)
             if joint is None or not joint.movable:
                 raise MotionError(f"{name!r} is not a movable joint of {robot}")
-            reach = _reaches(joint.child, 0.0, children, radius)
-            if joint.type == "prismatic":
-                reach = {link: 1.0 for link in reach}
+            reach = _family_reaches(model, name, children, radius)
+            mimicked = mimicked or len(mimic_family(model, name)) > 1
             for link, value in reach.items():
                 row = per_link.get(link)
                 if row is None:
@@ -95,8 +97,29 @@ class TravelBound:
             lever.append(max(reach.values(), default=0.0))
         carriers = dict(world.attachments(robot)) if held else {}
         return cls(
-            tuple(joints), np.array(lever), max_link_travel, max_joint_step, per_link, carriers
-        )
+            tuple(joints), np.array(lever), max_link_travel, max_joint_step, per_link, carriers,
+            mimicked,
+        )  # fmt: skip
+
+
+def _family_reaches(
+    model: RobotModel,
+    name: str,
+    children: dict[str, list[tuple[str, float]]],
+    radius: dict[str, float],
+) -> dict[str, float]:
+    """Per link that joint ``name`` moves, itself or through the joints mimicking it: the
+    most [m] a point of it moves per unit change of ``name``. A link below a follower
+    moves by the follower's turn (``multiplier`` times ``name``'s) too: the sum bounds
+    both (a finger tip turns with its finger and on its own joint)."""
+    reach: dict[str, float] = {}
+    for member, multiplier, _ in mimic_family(model, name):
+        joint = model.joints[member]
+        scale = abs(multiplier)
+        for link, value in _reaches(joint.child, 0.0, children, radius).items():
+            moved = scale * (1.0 if joint.type == "prismatic" else value)
+            reach[link] = reach.get(link, 0.0) + moved
+    return reach
 
 
 def _children(model: RobotModel) -> dict[str, list[tuple[str, float]]]:

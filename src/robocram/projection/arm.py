@@ -1,4 +1,4 @@
-"""Arms in projection: move the tool frame by IK, or set the arm joints directly.
+"""Arms in projection: move the tool frame by IK, or move the arm joints to given values.
 
 ``move_tcp`` transforms the target into the robot's root link and solves IK seeded with
 the current joints, first with the torso held, then (as CRAM's projection resamples the
@@ -15,8 +15,6 @@ one), so a projection gives bit-identical joints on an idle and a loaded machine
 
 from __future__ import annotations
 
-import math
-from collections.abc import Mapping
 from dataclasses import replace
 
 from robocram.execution import checkpoint
@@ -208,7 +206,9 @@ def move_joints(robot: ProjectedRobot, arm: str, configuration: object) -> dict[
     """Set ``arm``'s joints from a mapping or ``[[joint, value], ...]``; return what was set.
 
     Raises:
-        ManipulationGoalNotReached: a value was outside its limits (the clamped one is set).
+        ManipulationGoalNotReached: a value was outside its limits (the arm moves to the
+            clamped one).
+        ManipulationPathBlocked: no collision-free way there was found; the arm did not move.
     """
     spec = robot.arm(arm)
     values = joint_values(configuration)
@@ -216,17 +216,19 @@ def move_joints(robot: ProjectedRobot, arm: str, configuration: object) -> dict[
     for joint in values:
         if joint not in allowed:
             raise unknown_name("joint", joint, f"{robot.name}'s {arm} arm", allowed)
-    clamped = []
-    if clamped_goals(robot, values):  # set (clamped) at once: the failure says so
-        clamped = robot.world.set_joint_states(robot.name, values)
-    else:
-        what = f"{robot.name}'s {arm} arm"
-        motion = plan_arm_motion(robot.world, robot.name, values, settings=robot.motion, what=what)
-        follow(robot, motion.trajectory)
+    limits = {j: robot.world.joint_limits(robot.name, j) for j in values}
+    inside = {j: limits[j].clamp(float(v)) for j, v in values.items()}  # moved to, then failed
+    what = f"{robot.name}'s {arm} arm"
+    motion = plan_arm_motion(robot.world, robot.name, inside, settings=robot.motion, what=what)
+    follow(robot, motion.trajectory)
     now = robot.world.joint_states(robot.name)
     reached = {j: now[j] for j in values}
-    if clamped:
-        culprits = {c.name: (c.requested, c.lower, c.upper) for c in clamped}
+    if inside != values:
+        culprits = {
+            j: (float(v), limits[j].lower, limits[j].upper)
+            for j, v in values.items()
+            if inside[j] != v
+        }
         raise ManipulationGoalNotReached(
             f"joint goals (value, lower, upper) {culprits} of {robot.name}'s {arm} arm are "
             "outside the limits; clamped values applied",
@@ -235,16 +237,3 @@ def move_joints(robot: ProjectedRobot, arm: str, configuration: object) -> dict[
             reached=reached,
         )
     return reached
-
-
-def clamped_goals(robot: ProjectedRobot, values: Mapping[str, float]) -> list[str]:
-    """The joints of ``values`` outside their limits (they would be clamped)."""
-    limits = robot.description.model.joints
-    found = []
-    for name, value in values.items():
-        joint = limits[name]
-        low = joint.lower if joint.lower is not None else -math.inf
-        high = joint.upper if joint.upper is not None else math.inf
-        if not low <= value <= high:
-            found.append(name)
-    return found

@@ -21,6 +21,7 @@ import numpy as np
 from robocram.execution import TaskStopped, checkpoint
 from robocram.execution.failures import (
     EnvironmentManipulationImpossible,
+    GripperPathBlocked,
     ManipulationGoalNotReached,
     ManipulationPoseUnreachable,
     NavigationLowLevelFailure,
@@ -127,19 +128,39 @@ def moving_link(robot: ProjectedRobot, part: str, joint: str) -> str:
 def _take_handle(
     robot: ProjectedRobot, arm: str, part: str, handle: str, grasp: Pose, pull: Pose
 ) -> bool:
-    """Open the gripper, come from the front, close it on the handle; False if unreachable."""
+    """Open the gripper, come from the front, close it on the handle; False if unreachable.
+
+    Fingers that cannot open where the hand is (under a counter's top) open in front of
+    the handle.
+    """
     world = robot.world
     held = world.link_pose(part, handle) * pull
     at_handle = held * grasp
     in_front = held * Pose((PRE_GRASP, 0.0, 0.0)) * grasp
-    open_gripper(robot, arm)
     try:
+        opened = _opened(robot, arm)
         move_tcp(robot, arm, in_front, move_base=True, base_travel=REACH_TRAVEL)
+        if not opened:
+            open_gripper(robot, arm)
         checkpoint()
         move_tcp(robot, arm, at_handle, HOLD_MODE, move_base=True, base_travel=STEP_TRAVEL)
-    except (ManipulationPoseUnreachable, ManipulationGoalNotReached, NavigationLowLevelFailure):
+    except (
+        ManipulationPoseUnreachable,
+        ManipulationGoalNotReached,
+        NavigationLowLevelFailure,
+        GripperPathBlocked,
+    ):
         return False
     close_gripper(robot, arm)
+    return True
+
+
+def _opened(robot: ProjectedRobot, arm: str) -> bool:
+    """Open the gripper where the hand is; False if the fingers are blocked there."""
+    try:
+        open_gripper(robot, arm)
+    except GripperPathBlocked:
+        return False
     return True
 
 
@@ -204,13 +225,17 @@ def _let_go(
 
     A wide-open door can leave no room to back off the whole way: shorter moves are
     tried, and if none fits the open hand stays at the handle (the part is where asked).
+    Fingers that cannot open at the handle (a drawer under a counter's top) open once the
+    hand has backed off, if they can there.
     """
-    open_gripper(robot, arm)
+    opened = _opened(robot, arm)
     world = robot.world
     for distance in BACK_OFF:
         back = world.link_pose(part, handle) * pull * Pose((distance, 0.0, 0.0)) * grasp
         try:
             move_tcp(robot, arm, back, HOLD_MODE, move_base=True, max_restarts=LET_GO_RESTARTS)
-            return
         except (ManipulationPoseUnreachable, ManipulationGoalNotReached):
             continue
+        if not opened:
+            _opened(robot, arm)
+        return

@@ -5,18 +5,35 @@ of its joints moves linearly between its closed and open value, all together, so
 parallel gripper and a hand with coupled fingers open and close alike. A position is a
 value of the master (first) joint.
 
-Gripping closes step by step and judges success by contact, not by the closed pose: an
-object is held once the gripper's links touch it from opposing sides (two contact normals
-more than :data:`OPPOSED` apart), found to within a bisection of the step where that
-first happens. The object is attached to the arm's end-effector link there. Objects the
-hand does not come near, and static ones like tables, are never gripped. With nothing
-held when fully closed, ``GripperClosedCompletely`` is raised, as in CRAM.
+Each motion is a checked, timed trajectory (``joint_motion.py``, kind ``gripper``): the
+fingers' way is checked against the world as an arm's is, contacts they start with (a
+hand round a handle) allowed; a way that runs into something fails with
+``GripperPathBlocked`` before the fingers move.
+
+Closing stops where the fingers squeeze something, as a real gripper does: where the
+gripper's links first touch one object from opposing sides (two contact normals more than
+:data:`OPPOSED` apart), found by probing the closing in steps and bisecting the step where
+that first happens; the fingers then close to there, touching what they squeeze (those
+contacts are allowed). Gripping squeezes only movable objects and attaches the one
+squeezed to the arm's end-effector link; with none squeezed, the fingers close as closing
+does and ``GripperClosedCompletely`` is raised, as in CRAM. Closing without gripping
+closes fully, or, when something is in the way, stops where the fingers squeeze it or
+first touch it (a handle's face), and attaches nothing.
 """
 
 from __future__ import annotations
 
-from robocram.execution.failures import GripperClosedCompletely, GripperGoalNotReached
+from collections.abc import Callable, Collection
+
+from robocram.execution.failures import (
+    GripperClosedCompletely,
+    GripperGoalNotReached,
+    GripperPathBlocked,
+    ManipulationPathBlocked,
+)
+from robocram.motion.configuration_checker import LinkPair
 from robocram.projection.errors import ProjectionError
+from robocram.projection.joint_motion import move_along_checked
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robots import ArmDescription, GripperDescription
 from robocram.world import WorldObject
@@ -27,6 +44,7 @@ OPPOSED = -0.3  # cos: two contact normals over ~107 degrees apart squeeze the o
 CLOSING_STEPS = 20  # steps from the current opening to closed
 BISECTION_STEPS = 8  # halvings of the step in which the object was first squeezed
 NEAR = 0.02  # [m] margin around the hand's bounding box for objects worth testing
+Stop = tuple[float, WorldObject, set[LinkPair]]  # opening, what is squeezed, touching pairs
 
 
 def gripper_of(robot: ProjectedRobot, arm: str) -> GripperDescription:
@@ -45,12 +63,38 @@ def gripper_joints(robot: ProjectedRobot, arm: str) -> tuple[str, ...]:
     return gripper_of(robot, arm).names
 
 
-def _set_fraction(robot: ProjectedRobot, arm: str, fraction: float) -> dict[str, float]:
-    """Put the gripper ``fraction`` of the way from closed (0) to open (1)."""
-    values = gripper_of(robot, arm).at(fraction)
-    robot.world.set_joint_states(robot.name, values)
-    states = robot.world.joint_states(robot.name)
-    return {j: states[j] for j in values}
+def _probe(robot: ProjectedRobot, arm: str, fraction: float) -> None:
+    """Put the gripper ``fraction`` of the way from closed (0) to open (1), to look: the
+    closing is probed this way, and the fingers put back before they move."""
+    robot.world.set_joint_states(robot.name, gripper_of(robot, arm).at(fraction))
+
+
+def _move_to(
+    robot: ProjectedRobot, arm: str, fraction: float, squeezed: Collection[LinkPair] = ()
+) -> dict[str, float]:
+    """Move the gripper ``fraction`` of the way from closed (0) to open (1) along a checked
+    trajectory (``squeezed`` pairs may touch); return its joints' values.
+
+    Raises:
+        GripperPathBlocked: the fingers' way runs into something; they did not move.
+    """
+    world = robot.world
+    goal = {
+        j: world.joint_limits(robot.name, j).clamp(v)
+        for j, v in gripper_of(robot, arm).at(fraction).items()
+    }
+    what = f"{robot.name}'s {arm} gripper"
+    try:
+        return move_along_checked(robot, goal, kind="gripper", what=what, allowed_pairs=squeezed)
+    except ManipulationPathBlocked as blocked:
+        master = gripper_of(robot, arm).names[0]
+        raise GripperPathBlocked(
+            f"{what} cannot move to {goal[master]:.3f}: {blocked}; the fingers did not move",
+            gripper=arm,
+            goal=goal[master],
+            colliding_pairs=blocked.colliding_pairs,
+            path_fraction=blocked.path_fraction,
+        ) from blocked
 
 
 def _opening(robot: ProjectedRobot, arm: str) -> float:
@@ -61,14 +105,45 @@ def _opening(robot: ProjectedRobot, arm: str) -> float:
 
 
 def open_gripper(robot: ProjectedRobot, arm: str) -> dict[str, float]:
-    """Open ``arm``'s gripper fully and release what it holds; return the joint values."""
+    """Open ``arm``'s gripper fully and release what it holds; return the joint values.
+
+    Raises:
+        GripperPathBlocked: the fingers cannot open; they did not move and hold on.
+    """
+    reached = _move_to(robot, arm, 1.0)
     release(robot, arm)
-    return _set_fraction(robot, arm, 1.0)
+    return reached
 
 
 def close_gripper(robot: ProjectedRobot, arm: str) -> dict[str, float]:
-    """Close ``arm``'s gripper fully (no grip check, nothing attached)."""
-    return _set_fraction(robot, arm, 0.0)
+    """Close ``arm``'s gripper fully, or until its fingers meet what is in their way (a
+    handle); nothing is attached.
+
+    Raises:
+        GripperPathBlocked: the fingers meet it at once (no closing is free).
+    """
+    try:  # mostly nothing is in the way: one checked motion, no probing
+        return _move_to(robot, arm, 0.0)
+    except GripperPathBlocked as blocked:
+        hit = {other.split("/")[0] for _, other in blocked.colliding_pairs or ()}
+        links = _squeezing_links(robot, arm)
+        candidates = [
+            robot.world.object(name)
+            for name in sorted(hit)
+            if name in robot.world and name != robot.name
+        ]
+        before = {obj.name: _touching(robot, links, obj) for obj in candidates}
+
+        def meets(obj: WorldObject) -> bool:  # squeezes it, or touches it where it did not
+            return _squeezed(robot, links, obj) or bool(
+                _touching(robot, links, obj) - before[obj.name]
+            )
+
+        found = _closing_stop(robot, arm, links, candidates, meets)
+        if found is None:
+            raise
+        fraction, _, touching = found
+        return _move_to(robot, arm, fraction, touching)
 
 
 def set_gripper(robot: ProjectedRobot, arm: str, position: float) -> dict[str, float]:
@@ -76,11 +151,12 @@ def set_gripper(robot: ProjectedRobot, arm: str, position: float) -> dict[str, f
 
     Raises:
         GripperGoalNotReached: ``position`` lies beyond the closed or open value (the
-            nearest of them is set).
+            gripper moves to the nearest of them).
+        GripperPathBlocked: the fingers' way runs into something; they did not move.
     """
     gripper = gripper_of(robot, arm)
     fraction = gripper.fraction_of(float(position))
-    reached = _set_fraction(robot, arm, min(max(fraction, 0.0), 1.0))
+    reached = _move_to(robot, arm, min(max(fraction, 0.0), 1.0))
     if not 0.0 <= fraction <= 1.0:
         master = gripper.joints[0]
         applied = reached[master.name]
@@ -136,52 +212,97 @@ def _near_hand(robot: ProjectedRobot, links: set[str]) -> list[WorldObject]:
     return found
 
 
+def _squeezing_links(robot: ProjectedRobot, arm: str) -> set[str]:
+    spec = robot.arm(arm)
+    return {
+        link for link in (*spec.gripper_links, *spec.hand_links) if link in robot.body.link_index
+    }
+
+
 def grip(robot: ProjectedRobot, arm: str) -> str:
     """Close ``arm``'s gripper until it squeezes an object, attach it and return its name.
 
     Raises:
-        GripperClosedCompletely: the gripper closed fully without squeezing anything.
+        GripperClosedCompletely: the gripper closed without squeezing anything movable
+            (fully, or onto what does not move, as :func:`close_gripper` does).
+        GripperPathBlocked: the fingers' way runs into something else; they did not move.
     """
-    spec = robot.arm(arm)
-    links = {
-        link for link in (*spec.gripper_links, *spec.hand_links) if link in robot.body.link_index
-    }
-    candidates = _near_hand(robot, links)
-    before = _opening(robot, arm)
-    for step in range(1, CLOSING_STEPS + 1):
-        fraction = before * (1 - step / CLOSING_STEPS)
-        _set_fraction(robot, arm, fraction)
-        held = next((o for o in candidates if _squeezed(robot, links, o)), None)
-        if held is not None:
-            _first_squeeze(
-                robot, arm, links, held, fraction, before * (1 - (step - 1) / CLOSING_STEPS)
-            )
-            robot.world.attach(held, robot.name, spec.end_effector_link)
-            return held.name
-    closed = robot.world.joint_states(robot.name)[gripper_joints(robot, arm)[0]]
-    raise GripperClosedCompletely(
-        f"{robot.name}'s {arm} gripper closed on nothing: no movable object was squeezed "
-        "between its fingers",
-        gripper=arm,
-        position=closed,
+    links = _squeezing_links(robot, arm)
+    found = _closing_stop(
+        robot, arm, links, _near_hand(robot, links), lambda obj: _squeezed(robot, links, obj)
     )
+    if found is None:  # closes as closing does: fully, or onto a handle's bar
+        closed = close_gripper(robot, arm)[gripper_joints(robot, arm)[0]]
+        raise GripperClosedCompletely(
+            f"{robot.name}'s {arm} gripper closed on nothing: no movable object was squeezed "
+            "between its fingers",
+            gripper=arm,
+            position=closed,
+        )
+    fraction, held, touching = found
+    _move_to(robot, arm, fraction, touching)
+    robot.world.attach(held, robot.name, robot.arm(arm).end_effector_link)
+    return held.name
 
 
-def _first_squeeze(
+def _closing_stop(
     robot: ProjectedRobot,
     arm: str,
     links: set[str],
+    candidates: list[WorldObject],
+    stops: Callable[[WorldObject], bool],
+) -> Stop | None:
+    """Where closing first ``stops`` on one of ``candidates``: the opening (0 closed, 1
+    open), the object and the pairs touching there; None if nothing stops it up to fully
+    closed. Probes only: the gripper is as before after."""
+    before = _opening(robot, arm)
+    if not candidates:
+        return None
+    states = robot.world.joint_states(robot.name)
+    start = {j: states[j] for j in gripper_joints(robot, arm)}
+    try:
+        for step in range(1, CLOSING_STEPS + 1):
+            fraction = before * (1 - step / CLOSING_STEPS)
+            _probe(robot, arm, fraction)
+            held = next((o for o in candidates if stops(o)), None)
+            if held is not None:
+                outside = before * (1 - (step - 1) / CLOSING_STEPS)
+                stop = _first_stop(robot, arm, held, stops, fraction, outside)
+                _probe(robot, arm, stop)
+                return stop, held, _touching(robot, links, held)
+        return None
+    finally:
+        robot.world.set_joint_states(robot.name, start)
+
+
+def _first_stop(
+    robot: ProjectedRobot,
+    arm: str,
     obj: WorldObject,
+    stops: Callable[[WorldObject], bool],
     inside: float,
     outside: float,
 ) -> float:
-    """Bisect the opening between ``inside`` (squeezed) and ``outside`` (not); set the former."""
+    """Bisect the opening between ``inside`` (``obj`` stops the fingers) and ``outside``
+    (it does not); the former."""
     for _ in range(BISECTION_STEPS):
         middle = (inside + outside) / 2
-        _set_fraction(robot, arm, middle)
-        if _squeezed(robot, links, obj):
+        _probe(robot, arm, middle)
+        if stops(obj):
             inside = middle
         else:
             outside = middle
-    _set_fraction(robot, arm, inside)
     return inside
+
+
+def _touching(robot: ProjectedRobot, links: set[str], obj: WorldObject) -> set[LinkPair]:
+    """The (gripper link, part of ``obj``) pairs within :data:`TOUCH` as the gripper is
+    now: at the squeeze, a finger that met ``obj`` before the other may have sunk in a
+    little, so these may touch while the fingers close on it. Named as the motion
+    checker names parts: ``object/link`` for an object of several links."""
+    several = len(obj.link_index) > 1
+    return {
+        (p.link_a, f"{obj.name}/{p.link_b}" if several else obj.name)
+        for p in robot.world.contact_points(robot.name, obj, distance=TOUCH)
+        if p.link_a in links and p.distance <= TOUCH
+    }

@@ -3,12 +3,14 @@
 Pan-tilt heads (PR2, HSR) are aimed joint by joint: each joint turns by the angle between
 the optical axis and the direction to the target, both projected onto the plane normal to
 the joint axis; a few rounds absorb the camera's offset from the axes. The rounds place
-the links on the robot's kinematic model (from its base pose in the world), and only the
-aimed values are set in the world. Angles outside the
-limits are clamped and applied, then ``PtuGoalNotReached`` is raised (CRAM's semantics).
-A neck that is an arm (Boxy) is aimed by IK: the camera turns to face the target from
-its current place, else from the neck's parking place or a step away from the current
-one; ``PtuGoalUnreachable`` if IK finds no solution for any of them.
+the links on the robot's kinematic model (from its base pose in the world). The head
+then turns to the aimed values along a checked, timed trajectory (``joint_motion.py``,
+kind ``head``); a turn that runs into something fails with ``PtuPathBlocked`` before the
+head moves. Angles outside the limits are clamped and turned to, then
+``PtuGoalNotReached`` is raised (CRAM's semantics). A neck that is an arm (Boxy) is aimed
+by IK: the camera turns to face the target from its current place, else from the neck's
+parking place or a step away from the current one; ``PtuGoalUnreachable`` if IK finds no
+solution for any of them.
 """
 
 from __future__ import annotations
@@ -17,10 +19,16 @@ import math
 
 import numpy as np
 
-from robocram.execution.failures import PtuGoalNotReached, PtuGoalUnreachable
+from robocram.execution.failures import (
+    ManipulationPathBlocked,
+    PtuGoalNotReached,
+    PtuGoalUnreachable,
+    PtuPathBlocked,
+)
 from robocram.kinematics import forward_kinematics, solve_ik
 from robocram.kinematics.robot_kinematics import robot_kinematics
 from robocram.projection.errors import ProjectionError
+from robocram.projection.joint_motion import move_along_checked
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robots import PanTiltDescription
 from robocram.tf import Pose, Vector3
@@ -60,11 +68,11 @@ def _aim_pan_tilt(
 ) -> dict[str, float]:
     world, target = robot.world, np.asarray(target_in_map, float)
     wanted = _aimed(robot, pt, target)
-    clamped = world.set_joint_states(robot.name, wanted)
-    now = world.joint_states(robot.name)
-    reached = {j: now[j] for j in wanted}
-    if clamped:
-        limits = {c.name: (c.lower, c.upper) for c in clamped}
+    bounds = {j: world.joint_limits(robot.name, j) for j in wanted}
+    inside = {j: bounds[j].clamp(v) for j, v in wanted.items()}
+    reached = _turn_head(robot, inside, target_in_map)
+    if inside != wanted:
+        limits = {j: (b.lower, b.upper) for j, b in bounds.items() if inside[j] != wanted[j]}
         raise PtuGoalNotReached(
             f"looking at {tuple(target_in_map)} needs {wanted}, outside the limits {limits} "
             f"of {robot.name}'s head; turned to {reached} instead",
@@ -72,6 +80,32 @@ def _aim_pan_tilt(
             reached=reached,
         )
     return reached
+
+
+def _turn_head(
+    robot: ProjectedRobot, goal: dict[str, float], target_in_map: Vector3
+) -> dict[str, float]:
+    """Turn the head's joints to ``goal`` along a checked, timed trajectory.
+
+    Raises:
+        PtuPathBlocked: the turn runs into something; the head did not move.
+    """
+    try:
+        return move_along_checked(robot, goal, kind="head", what=f"{robot.name}'s head", plan=True)
+    except ManipulationPathBlocked as blocked:
+        raise _blocked(robot, target_in_map, blocked) from blocked
+
+
+def _blocked(
+    robot: ProjectedRobot, target_in_map: Vector3, blocked: ManipulationPathBlocked
+) -> PtuPathBlocked:
+    return PtuPathBlocked(
+        f"{robot.name} cannot turn its head to look at {tuple(target_in_map)}: {blocked}; "
+        "the head did not move",
+        target=tuple(target_in_map),
+        colliding_pairs=blocked.colliding_pairs,
+        path_fraction=blocked.path_fraction,
+    )
 
 
 def _aimed(robot: ProjectedRobot, pt: PanTiltDescription, target: np.ndarray) -> dict[str, float]:
@@ -146,16 +180,24 @@ def _aim_neck_arm(robot: ProjectedRobot, neck: str, target_in_map: Vector3) -> d
     frame = desc.cameras[0].frame
     seed = world.joint_states(robot.name)
     errors = []
+    blocked: list[ManipulationPathBlocked] = []
     for place in _camera_positions(robot, frame):
         view = Pose(place, looking_orientation(place, target_in_map))
         target_in_base = robot.base_pose().inverse() * view
         with robot.ik_lock:
             result = solve_ik(desc, neck, target_in_base, seed=seed, frame=frame)
-        if result.success:
-            world.set_joint_states(robot.name, dict(result.joint_positions))
-            now = world.joint_states(robot.name)
-            return {j: now[j] for j in result.joint_positions}
-        errors.append(result.position_error)
+        if not result.success:
+            errors.append(result.position_error)
+            continue
+        try:
+            return move_along_checked(
+                robot, dict(result.joint_positions), kind="head",
+                what=f"{robot.name}'s neck", plan=True,
+            )  # fmt: skip
+        except ManipulationPathBlocked as failure:  # another camera place may be free
+            blocked.append(failure)
+    if blocked:
+        raise _blocked(robot, target_in_map, blocked[0]) from blocked[0]
     raise PtuGoalUnreachable(
         f"{robot.name}'s neck cannot point {frame} at {tuple(target_in_map)} from any of "
         f"{len(errors)} camera positions tried (best IK miss {min(errors):.3f} m)",

@@ -1,9 +1,21 @@
-"""Moving the torso in projection: clamp to the URDF limits, apply, fail if clamped."""
+"""Moving the torso in projection: a checked, timed trajectory to the goal within limits.
+
+The lift moves everything above it (the head, the arms and what they hold), so its way
+is checked against the world like an arm motion (``joint_motion.py``); a way that runs
+into something (a shelf above the head) fails with ``TorsoPathBlocked`` before anything
+moves. A goal outside the limits moves the torso to the nearest limit and then fails with
+``TorsoGoalNotReached``, as CRAM's projection does.
+"""
 
 from __future__ import annotations
 
-from robocram.execution.failures import TorsoGoalNotReached
+from robocram.execution.failures import (
+    ManipulationPathBlocked,
+    TorsoGoalNotReached,
+    TorsoPathBlocked,
+)
 from robocram.projection.errors import ProjectionError
+from robocram.projection.joint_motion import move_along_checked
 from robocram.projection.projected_robot import ProjectedRobot
 
 
@@ -19,22 +31,38 @@ def torso_joint(robot: ProjectedRobot) -> str:
 
 
 def move_torso(robot: ProjectedRobot, goal: float) -> float:
-    """Set the torso joint to ``goal`` [m | rad]; return the value reached.
+    """Move the torso joint to ``goal`` [m | rad] along a checked trajectory; return the
+    value reached.
 
     Raises:
-        TorsoGoalNotReached: ``goal`` was outside the limits; the clamped value is applied.
+        TorsoPathBlocked: the way there runs into something; the torso did not move.
+        TorsoGoalNotReached: ``goal`` was outside the limits; the torso moved to the
+            nearest limit.
     """
     joint = torso_joint(robot)
     value = float(goal)
-    clamped = robot.world.set_joint_states(robot.name, {joint: value})
-    reached = robot.world.joint_states(robot.name)[joint]
-    if clamped:
-        c = clamped[0]
+    limits = robot.world.joint_limits(robot.name, joint)
+    inside = limits.clamp(value)
+    start = robot.world.joint_states(robot.name)[joint]
+    try:
+        reached = move_along_checked(
+            robot, {joint: inside}, kind="torso", what=f"{robot.name}'s torso"
+        )[joint]
+    except ManipulationPathBlocked as blocked:
+        raise TorsoPathBlocked(
+            f"{robot.name}'s torso cannot move from {start:.3f} to {inside:.3f}: {blocked}; "
+            "it did not move",
+            goal=value,
+            limits=(limits.lower, limits.upper),
+            colliding_pairs=blocked.colliding_pairs,
+            path_fraction=blocked.path_fraction,
+        ) from blocked
+    if inside != value:
         raise TorsoGoalNotReached(
-            f"torso goal {value} of {robot.name} is outside [{c.lower}, {c.upper}]; "
+            f"torso goal {value} of {robot.name} is outside [{limits.lower}, {limits.upper}]; "
             f"moved to {reached} instead",
             goal=value,
-            limits=(c.lower, c.upper),
+            limits=(limits.lower, limits.upper),
             reached=reached,
         )
     return reached

@@ -118,13 +118,16 @@ class MotionPlanner:
         arm: str | None = None,
         mode: str = "avoid_all",
         what: str = "the joints",
+        kind: str = "arm",
+        plan: bool = True,
     ) -> JointTrajectory:
         """The timed motion of the joints in ``goal`` (within limits) from where they are.
 
-        With a world it is checked (and planned round obstacles) in the collision mode of
-        the motion; ``arm``'s hand may touch things under ``allow_hand``. The world must
-        show the robot's state now (``world_mirror.py``). Without a world, ``current`` is
-        the start of a straight move.
+        With a world it is checked (and planned round obstacles unless ``plan`` is False:
+        a lift has one way) in the collision mode of the motion; ``arm``'s hand may touch
+        things under ``allow_hand``. The world must show the robot's state now
+        (``world_mirror.py``). Without a world, ``current`` is the start of a straight
+        move. ``kind`` names the motion in the trajectory (``arm``, ``torso``, ``head``).
 
         Raises:
             ManipulationPathBlocked: the world blocks every way there (nothing was sent).
@@ -138,9 +141,10 @@ class MotionPlanner:
                 for j, lim in zip(joints, limits, strict=True)
             ]
             end = [float(goal[j]) for j in joints]
-            return time_parameterize(self.desc.name, joints, [start, end], limits, kind="arm")
+            return time_parameterize(self.desc.name, joints, [start, end], limits, kind=kind)
         mode = _mode(mode)
         settings = replace(self.settings, check=False) if mode == "allow_all" else self.settings
+        settings = settings if plan else replace(settings, plan=False)
         allowed = allowed_links(self.desc.arms[arm], mode) if arm is not None else set()
         motion = plan_arm_motion(
             self.world,
@@ -149,6 +153,7 @@ class MotionPlanner:
             allowed_links=allowed,
             settings=settings,
             what=what,
+            kind=kind,
         )
         return motion.trajectory
 

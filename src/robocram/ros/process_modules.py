@@ -18,7 +18,9 @@ from robocram.execution.failures import (
     NavigationGoalNotReached,
     PerceptionObjectNotFound,
     PtuGoalNotReached,
+    PtuPathBlocked,
     TorsoGoalNotReached,
+    TorsoPathBlocked,
 )
 from robocram.logic import Value
 from robocram.ros.errors import RosCommandError
@@ -88,9 +90,11 @@ class TorsoPM(RosProcessModule):
                 "torso", {joint: goal}, lambda text: TorsoGoalNotReached(text, goal=goal)
             )
         except ManipulationPathBlocked as blocked:  # the world given to ros_robot blocks it
-            raise TorsoGoalNotReached(
+            raise TorsoPathBlocked(
                 f"{self.client.name}'s torso cannot move to {goal}: {blocked}; nothing was sent",
                 goal=goal,
+                colliding_pairs=blocked.colliding_pairs,
+                path_fraction=blocked.path_fraction,
             ) from blocked
         return self.client.joint_states()[joint]
 
@@ -138,10 +142,19 @@ class PtuPM(RosProcessModule):
                 "pointing_frame": camera,
             }
             client.run("head", point_head, failure)
-        else:
+        else:  # a pan/tilt trajectory controller: the aim's timed trajectory, checked
             joints = client.actuated_joint_states()
             angles = pan_tilt_towards(client.desc, joints, client.base_pose(), target)
-            client.move_joints("head", angles, failure, mode="allow_all")
+            try:
+                client.move_joints("head", angles, failure)
+            except ManipulationPathBlocked as blocked:  # the world given to ros_robot
+                raise PtuPathBlocked(
+                    f"{client.name} cannot turn its head to look at {target}: {blocked}; "
+                    "nothing was sent",
+                    target=target,
+                    colliding_pairs=blocked.colliding_pairs,
+                    path_fraction=blocked.path_fraction,
+                ) from blocked
         pt = client.desc.pan_tilt
         joints = client.joint_states()
         return {j: joints[j] for j in ((pt.pan_joint, pt.tilt_joint) if pt else ())}
@@ -186,7 +199,9 @@ class GripperPM(RosProcessModule):
     """The grippers over ``GripperCommand``: ``move_gripper_joint(Arm, Action, Effort)``.
 
     Positions are the description's gripper joint values, turned into the controller's
-    command and back by ``gripper_goal.py``.
+    command and back by ``gripper_goal.py``. A gripper controller takes a position and
+    stops where the fingers stall (on an object), so no trajectory is sent: the
+    controller times the fingers itself.
     """
 
     name = "ros_grippers"

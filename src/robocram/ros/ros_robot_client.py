@@ -33,6 +33,7 @@ from robocram.world import World
 
 STATE_TIMEOUT = 5.0  # [s] for the state after a goal to arrive
 DEFAULT_MASTER_TIMEOUT = 5.0  # [s] for the ROS master to answer when entering
+RESOURCE_KINDS = {"torso": "torso", "head": "head"}  # a trajectory's kind; arms': "arm"
 TransportFactory = Callable[[NodeConfig], Transport]
 
 
@@ -194,8 +195,9 @@ class RosRobotClient:
         """Move the joints of ``goal`` [rad | m] there by a timed trajectory on ``resource``.
 
         The trajectory is planned by :class:`MotionPlanner` (checked in the world if one
-        was given). A goal outside the joint limits is clamped, sent, and then raises
-        ``failure`` naming the joints, as projection does.
+        was given; the torso's straight only, as in projection) and named by the
+        resource (kind ``torso``, ``head``, else ``arm``). A goal outside the joint limits
+        is clamped, sent, and then raises ``failure`` naming the joints, as projection does.
 
         Raises:
             ManipulationPathBlocked: the world blocks the way; nothing was sent.
@@ -210,8 +212,9 @@ class RosRobotClient:
             )
         what = f"{self.name}'s {arm} arm" if arm is not None else f"{self.name}'s {resource}"
         trajectory = self.planner().joint_motion(
-            clamped.goal, current, arm=arm, mode=mode, what=what
-        )
+            clamped.goal, current, arm=arm, mode=mode, what=what,
+            kind=RESOURCE_KINDS.get(resource, "arm"), plan=resource != "torso",
+        )  # fmt: skip
         self.follow_trajectory(resource, trajectory, failure)
         if clamped.culprits:
             raise failure(clamped.describe(self.name))

@@ -188,14 +188,19 @@ class World(WorldCore):
                 self._kb.add_fact_group(f"{name}_description", [])
 
     def _start_within_limits(self, robot: RobotObject) -> None:
-        """Put every joint at its in-limit value nearest 0 (some grippers exclude 0)."""
+        """Put every joint at its in-limit value nearest 0 (some grippers exclude 0), and
+        mimic joints where their masters put them (the HSR's finger tips follow its hand
+        motor with an offset: left at 0, the first motion would snap them there)."""
         model = robot.description.model
+        masters = {j.mimic.joint for j in model.joints.values() if j.mimic is not None}
         start = {
             name: self.joint_limits(robot, name).clamp(0.0)
             for name in self.joint_states(robot)
             if model.joints[name].mimic is None
         }
-        self.set_joint_states(robot, {name: v for name, v in start.items() if v != 0.0})
+        self.set_joint_states(
+            robot, {name: v for name, v in start.items() if v != 0.0 or name in masters}
+        )
 
     def _install_description(self, desc: RobotDescription) -> None:
         install_description(self.kb, desc)

@@ -31,6 +31,7 @@ from robocram.execution.failures.manipulation import (
     GripperClosedCompletely,
     GripperGoalNotReached,
     GripperLowLevelFailure,
+    GripperPathBlocked,
     ManipulationGoalInCollision,
     ManipulationGoalNotReached,
     ManipulationLowLevelFailure,
@@ -56,6 +57,7 @@ from robocram.execution.failures.perception import (
     PtuGoalNotReached,
     PtuGoalUnreachable,
     PtuLowLevelFailure,
+    PtuPathBlocked,
 )
 from robocram.execution.failures.plan_failure import PlanFailure, failure_class
 from robocram.execution.failures.plan_language import (
@@ -69,6 +71,7 @@ from robocram.execution.failures.torso import (
     TorsoGoalNotReached,
     TorsoGoalUnreachable,
     TorsoLowLevelFailure,
+    TorsoPathBlocked,
 )
 
 __all__ = [
@@ -86,6 +89,7 @@ __all__ = [
     "GripperClosedCompletely",
     "GripperGoalNotReached",
     "GripperLowLevelFailure",
+    "GripperPathBlocked",
     "HighLevelFailure",
     "LookingHighLevelFailure",
     "LowLevelFailure",
@@ -114,11 +118,13 @@ __all__ = [
     "PtuGoalNotReached",
     "PtuGoalUnreachable",
     "PtuLowLevelFailure",
+    "PtuPathBlocked",
     "RetryOutsideHandler",
     "SetupFailure",
     "TorsoGoalNotReached",
     "TorsoGoalUnreachable",
     "TorsoLowLevelFailure",
+    "TorsoPathBlocked",
     "failure_class",
     "failure_line",
 ]

@@ -66,6 +66,17 @@ class GripperGoalNotReached(GripperLowLevelFailure):
     hint = "check for an obstacle between the fingers and retry"
 
 
+class GripperPathBlocked(GripperLowLevelFailure):
+    """The fingers' way to the commanded opening runs into something (not what they
+    grip); the gripper did not move."""
+
+    goal: float | None = None
+    colliding_pairs: tuple[tuple[str, str], ...] | None = None  # (robot link, object)
+    path_fraction: float | None = None  # [0..1] where along the way it collides (1: the goal)
+    summary = "the gripper's way to its goal is blocked"
+    hint = "move the hand away from what the message names, then retry"
+
+
 class ManipulationGoalInCollision(HighLevelFailure):
     """The planned arm motion would collide with the environment."""
 

@@ -49,6 +49,15 @@ class PtuGoalUnreachable(PtuLowLevelFailure):
     hint = "turn the base towards the target first"
 
 
+class PtuPathBlocked(PtuGoalUnreachable):
+    """Turning the head to the look target runs into something; the head did not move."""
+
+    colliding_pairs: tuple[tuple[str, str], ...] | None = None  # (robot link, object)
+    path_fraction: float | None = None  # [0..1] where along the turn it collides (1: the goal)
+    summary = "the head's turn to the look target is blocked"
+    hint = "move the base, or what the message names, so the head can turn freely"
+
+
 class PtuGoalNotReached(PtuLowLevelFailure):
     """The pan-tilt unit stopped away from its goal."""
 

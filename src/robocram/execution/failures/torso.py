@@ -20,6 +20,16 @@ class TorsoGoalUnreachable(TorsoLowLevelFailure):
     hint = "pick a goal [m] within the limits"
 
 
+class TorsoPathBlocked(TorsoGoalUnreachable):
+    """The torso's way to its goal runs into something (a shelf above the head); it did
+    not move."""
+
+    colliding_pairs: tuple[tuple[str, str], ...] | None = None  # (robot link, object)
+    path_fraction: float | None = None  # [0..1] where along the way it collides (1: the goal)
+    summary = "the torso's way to its goal is blocked"
+    hint = "stand elsewhere, or move what the message names out of the way"
+
+
 class TorsoGoalNotReached(TorsoLowLevelFailure):
     """The torso stopped away from its goal."""
 

@@ -8,7 +8,11 @@ ros_action(pr2, arm(left), '/l_arm_controller/follow_joint_trajectory',
            'control_msgs/FollowJointTrajectory').
 ros_action(pr2, arm(right), '/r_arm_controller/follow_joint_trajectory',
            'control_msgs/FollowJointTrajectory').
-ros_action(pr2, head, '/head_traj_controller/point_head_action', 'control_msgs/PointHead').
+% The head's trajectory controller takes the timed pan/tilt trajectory robocram plans and
+% checks; its point_head_action (control_msgs/PointHead) is the alternative that plans
+% on the robot side and moves unchecked.
+ros_action(pr2, head, '/head_traj_controller/follow_joint_trajectory',
+           'control_msgs/FollowJointTrajectory').
 ros_action(pr2, gripper(left), '/l_gripper_controller/gripper_action',
            'control_msgs/GripperCommand').
 ros_action(pr2, gripper(right), '/r_gripper_controller/gripper_action',
