@@ -164,6 +164,10 @@ def _checked_path(
                 snapshot, start, end, bound, box, seed=settings.seed, budget=settings.budget,
                 what=what,
             )  # fmt: skip
+        except ManipulationPathBlocked as failure:
+            failures.append(failure)
+            break  # a margin makes planning only harder: plan again only if the world disagrees
+        try:
             _confirm(scene, path, bound, what)
             blocked = own.first_collision(path.waypoints)
             if blocked is not None:

@@ -4,9 +4,8 @@ Like MoveIt, the straight segment from start to goal is tried first, checked den
 (:mod:`travel_bound`). When it is blocked, OMPL's RRTConnect plans in the same joints
 (the arm's, and the torso when IK moved it), and the path is simplified until no inner
 waypoint can be dropped (:mod:`path_simplification`). Everything is counted and seeded,
-so a query gives the same path on any machine. A goal the planner cannot connect within its
-budget raises
-``ManipulationPathBlocked`` naming what the straight segment runs into, and where.
+so a query gives the same path on any machine. A goal the planner cannot connect within
+its budget raises ``ManipulationPathBlocked`` naming what the straight segment runs into, and where.
 """
 
 from __future__ import annotations
@@ -24,7 +23,7 @@ from robocram.motion.rrt_connect import rrt_connect
 from robocram.motion.segment_check import CheckCounter, first_collision, segment_free
 from robocram.motion.travel_bound import TravelBound
 
-PLANNING_BUDGET = 20_000  # configurations RRTConnect may check
+PLANNING_BUDGET = 5_000  # configurations RRTConnect may check (a plan round the box: ~300)
 COARSE = 16  # RRTConnect checks its tree edges this much coarser; the path is then re-checked
 PLANNING_ATTEMPTS = 3  # plans (seed, seed + 1, ...) whose re-check may fail before giving up
 
