@@ -32,6 +32,7 @@ from robocram.motion.collision_scene import CollisionScene
 from robocram.motion.joint_limits import joint_limits
 from robocram.motion.joint_path import PLANNING_BUDGET, JointPath, plan_joint_path
 from robocram.motion.joint_trajectory import JointTrajectory
+from robocram.motion.path_simplification import SegmentJudge
 from robocram.motion.segment_check import CheckCounter, first_collision, segment_free
 from robocram.motion.self_path_check import SelfPathCheck
 from robocram.motion.time_parameterization import time_parameterize
@@ -162,7 +163,7 @@ def _checked_path(
         try:
             path = plan_joint_path(
                 snapshot, start, end, bound, box, seed=settings.seed, budget=settings.budget,
-                what=what,
+                what=what, judge=_world_judge(scene, bound),
             )  # fmt: skip
         except ManipulationPathBlocked as failure:
             failures.append(failure)
@@ -176,6 +177,13 @@ def _checked_path(
         except ManipulationPathBlocked as failure:
             failures.append(failure)
     raise failures[0]  # the plan without a margin says best what is in the way
+
+
+def _world_judge(scene: CoalClearance, bound: TravelBound) -> SegmentJudge:
+    """Whether a segment (its end included) is free on the world: a simplified path is
+    pulled tight round obstacles, where the snapshot's hulls and the world's differ."""
+    counter = CheckCounter()
+    return lambda a, b: segment_free(scene, a, b, bound, counter) and scene.is_free(b)
 
 
 def _confirm(scene: CoalClearance, path: JointPath, bound: TravelBound, what: str) -> None:

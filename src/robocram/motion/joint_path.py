@@ -18,7 +18,7 @@ import numpy as np
 from robocram.execution.failures import ManipulationPathBlocked
 from robocram.motion.configuration_checker import ConfigurationChecker
 from robocram.motion.joint_trajectory import FloatArray
-from robocram.motion.path_simplification import simplify
+from robocram.motion.path_simplification import SegmentJudge, simplify
 from robocram.motion.rrt_connect import rrt_connect
 from robocram.motion.segment_check import CheckCounter, first_collision, segment_free
 from robocram.motion.travel_bound import TravelBound
@@ -50,12 +50,15 @@ def plan_joint_path(
     budget: int = PLANNING_BUDGET,
     what: str = "the arm",
     explain: bool = True,
+    judge: SegmentJudge | None = None,
 ) -> JointPath:
     """A free path from ``start`` to ``goal`` (both free); ``plan=False``: straight only.
 
     ``limits`` are the joints' (lower, upper) bounds of the planning space. ``explain``
     False skips finding what the straight segment runs into first (a walk at full
-    resolution), for a caller that will plan elsewhere and explain from there.
+    resolution), for a caller that will plan elsewhere and explain from there. ``judge``:
+    a second check every segment of a planned path must pass (the world, when ``checker``
+    is a snapshot of it), while it is simplified and after.
 
     Raises:
         ManipulationPathBlocked: neither the straight segment nor the planner found a way;
@@ -87,8 +90,11 @@ def plan_joint_path(
             )
             if found is None:
                 break
-            simple = simplify(checker, found, bound, counter)
-            if all(segment_free(checker, qa, qb, bound, counter) for qa, qb in simple.unchecked()):
+            simple = simplify(checker, found, bound, counter, judge=judge)
+            if all(
+                segment_free(checker, qa, qb, bound, counter) and (judge is None or judge(qa, qb))
+                for qa, qb in simple.unchecked()
+            ):
                 return JointPath(
                     joints, tuple(tuple(map(float, w)) for w in simple.waypoints),
                     "rrt_connect", counter.checks,

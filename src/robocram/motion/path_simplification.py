@@ -17,13 +17,13 @@ resolution (:func:`~robocram.motion.segment_check.segment_free`):
    (triangle inequality).
 
 The result has no droppable inner waypoint: the last step is always a full vertex
-reduction pass that dropped nothing. Each segment remembers whether it was checked at
-full resolution (a piece of a checked segment is checked too), so the caller checks
-again only what the planner checked coarsely.
+reduction pass that dropped nothing. Each segment remembers whether it was checked as it
+is at full resolution, so the caller checks again only what the planner checked coarsely.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -34,6 +34,7 @@ from robocram.motion.segment_check import CheckCounter, segment_free
 from robocram.motion.travel_bound import TravelBound
 
 CORNER_CUTS = (0.5, 0.25)  # fractions of a corner's segments tried, in turn
+SegmentJudge = Callable[[FloatArray, FloatArray], bool]  # whether a segment is free there too
 SMOOTHING_CHECKS = 1000  # checks corner cutting may spend (vertex reduction always ends)
 
 
@@ -67,13 +68,18 @@ def simplify(
     *,
     checked: list[bool] | None = None,
     smoothing: int = SMOOTHING_CHECKS,
+    judge: SegmentJudge | None = None,
 ) -> Simplified:
-    """``path`` shortened until no inner waypoint can be dropped; ``checked`` says which
-    of its segments are already checked at full resolution (default: none);
-    ``smoothing``: the checks corner cutting may spend."""
+    """``path`` shortened until no inner waypoint can be dropped.
+
+    ``checked`` says which of its segments are already checked at full resolution
+    (default: none); ``smoothing``: the checks corner cutting may spend; ``judge``: a
+    second check every new segment must pass too (the world, where the checker is a
+    snapshot of it: a path pulled tight round an obstacle must not touch it there).
+    """
     flags = list(checked) if checked is not None else [False] * (len(path) - 1)
     out = Simplified([np.asarray(w, dtype=float) for w in path], flags)
-    free = _Free(checker, bound, counter)
+    free = _Free(checker, bound, counter, judge)
     _farthest_first(out, free)
     reduce_vertices(out, free)
     limit = counter.checks + smoothing
@@ -89,13 +95,16 @@ class _Free:
     checker: ConfigurationChecker
     bound: TravelBound
     counter: CheckCounter
+    judge: SegmentJudge | None = None
     blocked: set[bytes] = field(default_factory=set)
 
     def __call__(self, a: FloatArray, b: FloatArray) -> bool:
         key = a.tobytes() + b.tobytes()
         if key in self.blocked:
             return False
-        if segment_free(self.checker, a, b, self.bound, self.counter):
+        if segment_free(self.checker, a, b, self.bound, self.counter) and (
+            self.judge is None or self.judge(a, b)
+        ):
             return True
         self.blocked.add(key)
         return False
@@ -139,7 +148,9 @@ def reduce_vertices(path: Simplified, free: _Free) -> None:
 
 def _cut_corners(path: Simplified, free: _Free, limit: int) -> bool:
     """Replace each corner by two points on its segments where they see each other, until
-    ``limit`` checks are spent; whether any corner was cut."""
+    ``limit`` checks are spent; whether any corner was cut. The pieces left of the
+    corner's segments are checked again as they are (a check samples a segment at its own
+    points, and a piece's points are not its whole segment's)."""
     points, flags = [path.waypoints[0]], []
     cut = False
     for k in range(1, len(path.waypoints) - 1):
@@ -147,9 +158,9 @@ def _cut_corners(path: Simplified, free: _Free, limit: int) -> bool:
         for fraction in CORNER_CUTS if free.counter.checks < limit else ():
             p = corner + (before - corner) * fraction
             r = corner + (after - corner) * fraction
-            if free(p, r):
+            if free(p, r) and free(before, p) and free(r, after):
                 points += [p, r]
-                flags += [path.checked[k - 1], True]
+                flags += [True, True]
                 cut = True
                 break
         else:
