@@ -31,8 +31,7 @@ from robocram.motion.coal_clearance import CoalClearance
 from robocram.motion.collision_scene import CollisionScene
 from robocram.motion.joint_limits import joint_limits
 from robocram.motion.joint_path import PLANNING_BUDGET, JointPath, plan_joint_path
-from robocram.motion.joint_trajectory import JointTrajectory
-from robocram.motion.path_simplification import SegmentJudge
+from robocram.motion.joint_trajectory import FloatArray, JointTrajectory
 from robocram.motion.segment_check import CheckCounter, first_collision, segment_free
 from robocram.motion.self_path_check import SelfPathCheck
 from robocram.motion.time_parameterization import time_parameterize
@@ -156,6 +155,7 @@ def _checked_path(
     start_links = {link for link, _ in scene.judge.allowed_pairs if link in links}
     failures: list[ManipulationPathBlocked] = []
     for margin in SNAPSHOT_MARGINS:  # the snapshot's hulls and Bullet's can differ by mm
+        judge = _WorldJudge(scene, bound)
         snapshot = CollisionScene.of(  # the goal passed the finer check on the meshes
             world, robot, joints, allowed_links=scene.judge.allowed_links | start_links,
             margin=margin, allow_at=[end],
@@ -163,13 +163,13 @@ def _checked_path(
         try:
             path = plan_joint_path(
                 snapshot, start, end, bound, box, seed=settings.seed, budget=settings.budget,
-                what=what, judge=_world_judge(scene, bound),
+                what=what, judge=judge,
             )  # fmt: skip
         except ManipulationPathBlocked as failure:
             failures.append(failure)
             break  # a margin makes planning only harder: plan again only if the world disagrees
         try:
-            _confirm(scene, path, bound, what)
+            _confirm(scene, path, bound, what, judge)
             blocked = own.first_collision(path.waypoints)
             if blocked is not None:
                 raise _self_blocked(what, "planned path", blocked)
@@ -179,19 +179,35 @@ def _checked_path(
     raise failures[0]  # the plan without a margin says best what is in the way
 
 
-def _world_judge(scene: CoalClearance, bound: TravelBound) -> SegmentJudge:
+class _WorldJudge:
     """Whether a segment (its end included) is free on the world: a simplified path is
-    pulled tight round obstacles, where the snapshot's hulls and the world's differ."""
-    counter = CheckCounter()
-    return lambda a, b: segment_free(scene, a, b, bound, counter) and scene.is_free(b)
+    pulled tight round obstacles, where the snapshot's hulls and the world's differ. It
+    remembers the segments it found free, so confirming the path checks them only once."""
+
+    def __init__(self, scene: CoalClearance, bound: TravelBound) -> None:
+        self.scene, self.bound = scene, bound
+        self.counter = CheckCounter()
+        self.free: set[bytes] = set()
+
+    def __call__(self, a: FloatArray, b: FloatArray) -> bool:
+        key = np.asarray(a, dtype=float).tobytes() + np.asarray(b, dtype=float).tobytes()
+        if key in self.free:
+            return True
+        if segment_free(self.scene, a, b, self.bound, self.counter) and self.scene.is_free(b):
+            self.free.add(key)
+            return True
+        return False
 
 
-def _confirm(scene: CoalClearance, path: JointPath, bound: TravelBound, what: str) -> None:
-    """Check a planned path on the world itself: the snapshot and the world must agree."""
+def _confirm(
+    scene: CoalClearance, path: JointPath, bound: TravelBound, what: str, judge: _WorldJudge
+) -> None:
+    """Check a planned path on the world itself: the snapshot and the world must agree
+    (segments ``judge`` found free while the path was simplified are not walked again)."""
     counter = CheckCounter()
     points = [np.array(w) for w in path.waypoints]
     for k, (a, b) in enumerate(zip(points, points[1:], strict=False)):
-        if segment_free(scene, a, b, bound, counter) and scene.is_free(b):
+        if judge(a, b):
             continue
         hit = first_collision(scene, a, b, bound, counter)
         where, pairs = hit if hit is not None else (1.0, [])
