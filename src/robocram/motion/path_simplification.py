@@ -17,8 +17,10 @@ resolution (:func:`~robocram.motion.segment_check.segment_free`):
    (triangle inequality).
 
 The result has no droppable inner waypoint: the last step is always a full vertex
-reduction pass that dropped nothing. Each segment remembers whether it was checked as it
-is at full resolution, so the caller checks again only what the planner checked coarsely.
+reduction pass that dropped nothing. Each segment remembers whether it was checked at full
+resolution (on the checker, a piece of a checked segment is checked: its samples are the
+resolution apart along the piece too), so the caller checks again only what the planner
+checked coarsely.
 """
 
 from __future__ import annotations
@@ -35,7 +37,7 @@ from robocram.motion.travel_bound import TravelBound
 
 CORNER_CUTS = (0.5, 0.25)  # fractions of a corner's segments tried, in turn
 SegmentJudge = Callable[[FloatArray, FloatArray], bool]  # whether a segment is free there too
-SMOOTHING_CHECKS = 1000  # checks corner cutting may spend (vertex reduction always ends)
+SMOOTHING_CHECKS = 600  # checks corner cutting may spend (vertex reduction always ends)
 
 
 @dataclass
@@ -109,6 +111,12 @@ class _Free:
         self.blocked.add(key)
         return False
 
+    def judged(self, a: FloatArray, b: FloatArray) -> bool:
+        """Whether a piece of a checked segment is free: the checker's samples along the
+        whole segment are at most the resolution apart along the piece too, but the judge
+        walks the piece as it is (a walk by clearances samples where it steps)."""
+        return self.judge is None or self.judge(a, b)
+
 
 def _farthest_first(path: Simplified, free: _Free) -> None:
     """From the start, join each waypoint to the farthest one it sees, and go on from
@@ -149,8 +157,8 @@ def reduce_vertices(path: Simplified, free: _Free) -> None:
 def _cut_corners(path: Simplified, free: _Free, limit: int) -> bool:
     """Replace each corner by two points on its segments where they see each other, until
     ``limit`` checks are spent; whether any corner was cut. The pieces left of the
-    corner's segments are checked again as they are (a check samples a segment at its own
-    points, and a piece's points are not its whole segment's)."""
+    corner's segments need no new check on the checker (its samples along the whole
+    segment are the resolution apart along the piece too); the judge walks them."""
     points, flags = [path.waypoints[0]], []
     cut = False
     for k in range(1, len(path.waypoints) - 1):
@@ -158,7 +166,7 @@ def _cut_corners(path: Simplified, free: _Free, limit: int) -> bool:
         for fraction in CORNER_CUTS if free.counter.checks < limit else ():
             p = corner + (before - corner) * fraction
             r = corner + (after - corner) * fraction
-            if free(p, r) and free(before, p) and free(r, after):
+            if free(p, r) and free.judged(before, p) and free.judged(r, after):
                 points += [p, r]
                 flags += [True, True]
                 cut = True
