@@ -155,7 +155,7 @@ def _checked_path(
     start_links = {link for link, _ in scene.judge.allowed_pairs if link in links}
     failures: list[ManipulationPathBlocked] = []
     for margin in SNAPSHOT_MARGINS:  # the snapshot's hulls and Bullet's can differ by mm
-        judge = _WorldJudge(scene, bound)
+        judge = _WorldJudge(scene, bound, own)
         snapshot = CollisionScene.of(  # the goal passed the finer check on the meshes
             world, robot, joints, allowed_links=scene.judge.allowed_links | start_links,
             margin=margin, allow_at=[end],
@@ -180,12 +180,13 @@ def _checked_path(
 
 
 class _WorldJudge:
-    """Whether a segment (its end included) is free on the world: a simplified path is
-    pulled tight round obstacles, where the snapshot's hulls and the world's differ. It
-    remembers the segments it found free, so confirming the path checks them only once."""
+    """Whether a segment (its end included) is free on the world and keeps the robot's
+    links apart: a simplified path is pulled tight round obstacles (where the snapshot's
+    hulls and the world's differ) and round the robot itself. It remembers the segments
+    it found free, so confirming the path checks them only once."""
 
-    def __init__(self, scene: CoalClearance, bound: TravelBound) -> None:
-        self.scene, self.bound = scene, bound
+    def __init__(self, scene: CoalClearance, bound: TravelBound, own: SelfPathCheck) -> None:
+        self.scene, self.bound, self.own = scene, bound, own
         self.counter = CheckCounter()
         self.free: set[bytes] = set()
 
@@ -193,7 +194,11 @@ class _WorldJudge:
         key = np.asarray(a, dtype=float).tobytes() + np.asarray(b, dtype=float).tobytes()
         if key in self.free:
             return True
-        if segment_free(self.scene, a, b, self.bound, self.counter) and self.scene.is_free(b):
+        if (
+            segment_free(self.scene, a, b, self.bound, self.counter)
+            and self.scene.is_free(b)
+            and self.own.first_collision([a, b]) is None
+        ):
             self.free.add(key)
             return True
         return False

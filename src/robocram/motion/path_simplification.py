@@ -79,24 +79,41 @@ def simplify(
     second check every new segment must pass too (the world, where the checker is a
     snapshot of it: a path pulled tight round an obstacle must not touch it there).
     """
+
+    def dense(a: FloatArray, b: FloatArray) -> bool:
+        return segment_free(checker, a, b, bound, counter)
+
+    return simplify_with(
+        SegmentTest(dense, lambda: counter.checks, judge), path, checked=checked,
+        smoothing=smoothing,
+    )  # fmt: skip
+
+
+def simplify_with(
+    test: SegmentTest,
+    path: list[FloatArray],
+    *,
+    checked: list[bool] | None = None,
+    smoothing: int = SMOOTHING_CHECKS,
+) -> Simplified:
+    """:func:`simplify` with any dense segment check (a base's poses, say)."""
     flags = list(checked) if checked is not None else [False] * (len(path) - 1)
     out = Simplified([np.asarray(w, dtype=float) for w in path], flags)
-    free = _Free(checker, bound, counter, judge)
-    _farthest_first(out, free)
-    reduce_vertices(out, free)
-    limit = counter.checks + smoothing
-    while counter.checks < limit and _cut_corners(out, free, limit):
-        reduce_vertices(out, free)
+    _farthest_first(out, test)
+    reduce_vertices(out, test)
+    limit = test.checks() + smoothing
+    while test.checks() < limit and _cut_corners(out, test, limit):
+        reduce_vertices(out, test)
     return out
 
 
 @dataclass
-class _Free:
-    """The full-resolution segment check, counted; a blocked segment is not checked twice."""
+class SegmentTest:
+    """A dense segment check at full resolution and how many checks it has spent so far;
+    a blocked segment is not checked twice."""
 
-    checker: ConfigurationChecker
-    bound: TravelBound
-    counter: CheckCounter
+    dense: SegmentJudge
+    checks: Callable[[], int]
     judge: SegmentJudge | None = None
     blocked: set[bytes] = field(default_factory=set)
 
@@ -104,9 +121,7 @@ class _Free:
         key = a.tobytes() + b.tobytes()
         if key in self.blocked:
             return False
-        if segment_free(self.checker, a, b, self.bound, self.counter) and (
-            self.judge is None or self.judge(a, b)
-        ):
+        if self.dense(a, b) and self.judged(a, b):
             return True
         self.blocked.add(key)
         return False
@@ -118,7 +133,7 @@ class _Free:
         return self.judge is None or self.judge(a, b)
 
 
-def _farthest_first(path: Simplified, free: _Free) -> None:
+def _farthest_first(path: Simplified, free: SegmentTest) -> None:
     """From the start, join each waypoint to the farthest one it sees, and go on from
     there: blocked tries are cheap (the check looks at the middle first), and the segments
     kept are seldom replaced later, so few checks go into segments thrown away."""
@@ -138,7 +153,7 @@ def _farthest_first(path: Simplified, free: _Free) -> None:
     path.waypoints, path.checked = kept, kept_flags
 
 
-def reduce_vertices(path: Simplified, free: _Free) -> None:
+def reduce_vertices(path: Simplified, free: SegmentTest) -> None:
     """Drop inner waypoints whose neighbours see each other, until none can be."""
     dropped = True
     while dropped:
@@ -154,7 +169,7 @@ def reduce_vertices(path: Simplified, free: _Free) -> None:
                 k += 1
 
 
-def _cut_corners(path: Simplified, free: _Free, limit: int) -> bool:
+def _cut_corners(path: Simplified, free: SegmentTest, limit: int) -> bool:
     """Replace each corner by two points on its segments where they see each other, until
     ``limit`` checks are spent; whether any corner was cut. The pieces left of the
     corner's segments need no new check on the checker (its samples along the whole
@@ -163,7 +178,7 @@ def _cut_corners(path: Simplified, free: _Free, limit: int) -> bool:
     cut = False
     for k in range(1, len(path.waypoints) - 1):
         before, corner, after = path.waypoints[k - 1], path.waypoints[k], path.waypoints[k + 1]
-        for fraction in CORNER_CUTS if free.counter.checks < limit else ():
+        for fraction in CORNER_CUTS if free.checks() < limit else ():
             p = corner + (before - corner) * fraction
             r = corner + (after - corner) * fraction
             if free(p, r) and free.judged(before, p) and free.judged(r, after):
