@@ -322,11 +322,12 @@ def main() -> None:
     )
     for name, rate in checks_per_second().items():
         print(f"  {name:20s} {rate:10.0f} checks/s")
+    after = statistics.median(totals)
     if "--before" not in sys.argv:
-        print("  (transport before/after: run with --before)")
+        print(f"  transport: median {after:7.1f} ms ({succeeded}/{transports} ok); --before: "
+              "against the commit before robocram.motion")  # fmt: skip
         return
     before = transport_before(transports)
-    after = statistics.median(totals)
     shown = (
         f"{before['median']:7.1f} ms ({before['ok']:.0f}/{transports} ok)"
         if before else "n/a (no git worktree)"
