@@ -197,7 +197,7 @@ class _WorldJudge:
         if (
             segment_free(self.scene, a, b, self.bound, self.counter)
             and self.scene.is_free(b)
-            and self.own.first_collision([a, b]) is None
+            and self.own.first_collision([a.tolist(), b.tolist()]) is None
         ):
             self.free.add(key)
             return True
