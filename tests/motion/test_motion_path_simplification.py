@@ -129,6 +129,50 @@ def test_simplifying_keeps_the_ends_and_never_lengthens(shelf: Shelf) -> None:
     assert counter.checks > 0
 
 
+class _Square:
+    """A point robot in the plane (two prismatic "joints") round a square obstacle."""
+
+    joints = ("x", "y")
+
+    def colliding(self, q: object, first_only: bool = False) -> list[tuple[str, str]]:
+        x, y = np.asarray(q, dtype=float)
+        return [("point", "square")] if abs(x) < 1.0 and abs(y) < 1.0 else []
+
+    def is_free(self, q: object) -> bool:
+        return not self.colliding(q)
+
+
+def _crosses_square(a: np.ndarray, b: np.ndarray) -> bool:
+    """Whether the segment a-b meets the open square |x|, |y| < 1 (exactly: clipped)."""
+    low, high = 0.0, 1.0
+    for axis in (0, 1):
+        d = b[axis] - a[axis]
+        if d == 0.0:
+            if abs(a[axis]) >= 1.0:
+                return False
+            continue
+        t0, t1 = sorted(((-1.0 - a[axis]) / d, (1.0 - a[axis]) / d))
+        low, high = max(low, t0), min(high, t1)
+    return low < high
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_a_path_round_a_square_is_as_short_as_its_corners_allow(seed: int) -> None:
+    start, goal = np.array([-3.0, 0.2]), np.array([3.0, -0.1])
+    bound = TravelBound(("x", "y"), np.ones(2))
+    box = ([-5.0, -5.0], [5.0, 5.0])
+    path = plan_joint_path(_Square(), start, goal, bound, box, seed=seed)
+    points = [np.array(w) for w in path.waypoints]
+    assert path.planner == "rrt_connect" and len(points) >= 3
+    assert not any(_crosses_square(a, b) for a, b in zip(points, points[1:], strict=False))
+    for k in range(1, len(points) - 1):  # every corner is needed (exact geometry judges)
+        assert _crosses_square(points[k - 1], points[k + 1])
+    over = [start, np.array([-1.0, 1.0]), np.array([1.0, 1.0]), goal]
+    under = [start, np.array([-1.0, -1.0]), np.array([1.0, -1.0]), goal]
+    shortest = min(path_length(over), path_length(under))  # round two corners: 6.44
+    assert shortest <= path_length(points) < 1.1 * shortest
+
+
 class _Caged:
     """The snapshot, with the goal enclosed in joint space: every configuration between
     0.05 and 0.3 rad (max norm) of it collides with "cage"; counts what it is asked."""

@@ -183,7 +183,7 @@ def _cut_corners(path: Simplified, free: SegmentTest, limit: int) -> bool:
             r = corner + (after - corner) * fraction
             if free(p, r) and free.judged(before, p) and free.judged(r, after):
                 points += [p, r]
-                flags += [True, True]
+                flags += [path.checked[k - 1], True]  # a piece is checked if its segment is
                 cut = True
                 break
         else:
