@@ -151,41 +151,64 @@ def _checked_path(
         detour = detour_path(scene, start, end, bound, box, height)
         if detour is not None and own.first_collision(detour.waypoints) is None:
             return detour
+    return _planned(world, robot, scene, own, start, end, bound, box, settings, what)
+
+
+def _planned(
+    world: World,
+    robot: str,
+    scene: CoalClearance,
+    own: SelfPathCheck,
+    start: list[float],
+    end: list[float],
+    bound: TravelBound,
+    box: tuple[list[float], list[float]],
+    settings: MotionSettings,
+    what: str,
+) -> JointPath:
+    """A path OMPL plans on a coal snapshot, simplified under the world's judge and
+    confirmed on the world. The self walk judges the simplifier only once a plan without
+    it ran the robot into itself (it costs as much as the world's walk); a snapshot with a
+    margin is taken only when the world refuses a planned path."""
     links = set(world.link_names(robot))
     start_links = {link for link, _ in scene.judge.allowed_pairs if link in links}
     failures: list[ManipulationPathBlocked] = []
     for margin in SNAPSHOT_MARGINS:  # the snapshot's hulls and Bullet's can differ by mm
-        judge = _WorldJudge(scene, bound, own)
         snapshot = CollisionScene.of(  # the goal passed the finer check on the meshes
-            world, robot, joints, allowed_links=scene.judge.allowed_links | start_links,
+            world, robot, scene.joints, allowed_links=scene.judge.allowed_links | start_links,
             margin=margin, allow_at=[end],
         )  # fmt: skip
-        try:
-            path = plan_joint_path(
-                snapshot, start, end, bound, box, seed=settings.seed, budget=settings.budget,
-                what=what, judge=judge,
-            )  # fmt: skip
-        except ManipulationPathBlocked as failure:
-            failures.append(failure)
-            break  # a margin makes planning only harder: plan again only if the world disagrees
-        try:
-            _confirm(scene, path, bound, what, judge)
-            blocked = own.first_collision(path.waypoints)
-            if blocked is not None:
-                raise _self_blocked(what, "planned path", blocked)
-            return path
-        except ManipulationPathBlocked as failure:
-            failures.append(failure)
+        for apart in (False, True):
+            judge = _WorldJudge(scene, bound, own if apart else None)
+            try:
+                path = plan_joint_path(
+                    snapshot, start, end, bound, box, seed=settings.seed,
+                    budget=settings.budget, what=what, judge=judge,
+                )  # fmt: skip
+            except ManipulationPathBlocked as failure:  # a margin only makes planning harder
+                failures.append(failure)
+                raise failures[0] from None
+            blocked = None
+            try:
+                _confirm(scene, path, bound, what, judge)
+                blocked = own.first_collision(path.waypoints)
+                if blocked is not None:
+                    raise _self_blocked(what, "planned path", blocked)
+                return path
+            except ManipulationPathBlocked as failure:
+                failures.append(failure)
+            if blocked is None:
+                break  # the world refused the path: plan on a snapshot with a margin
     raise failures[0]  # the plan without a margin says best what is in the way
 
 
 class _WorldJudge:
-    """Whether a segment (its end included) is free on the world and keeps the robot's
-    links apart: a simplified path is pulled tight round obstacles (where the snapshot's
+    """Whether a segment (its end included) is free on the world and, given ``own``, keeps
+    the robot's links apart: a simplified path is pulled tight round obstacles (where the snapshot's
     hulls and the world's differ) and round the robot itself. It remembers the segments
     it found free, so confirming the path checks them only once."""
 
-    def __init__(self, scene: CoalClearance, bound: TravelBound, own: SelfPathCheck) -> None:
+    def __init__(self, scene: CoalClearance, bound: TravelBound, own: SelfPathCheck | None) -> None:
         self.scene, self.bound, self.own = scene, bound, own
         self.counter = CheckCounter()
         self.free: set[bytes] = set()
@@ -197,7 +220,7 @@ class _WorldJudge:
         if (
             segment_free(self.scene, a, b, self.bound, self.counter)
             and self.scene.is_free(b)
-            and self.own.first_collision([a.tolist(), b.tolist()]) is None
+            and (self.own is None or self.own.first_collision([a.tolist(), b.tolist()]) is None)
         ):
             self.free.add(key)
             return True
