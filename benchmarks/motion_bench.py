@@ -1,24 +1,30 @@
 """Motion planning in the kitchen: what each kind of motion costs, and the transport.
 
-Run: ``.venv/bin/python benchmarks/motion_bench.py [transports] [shelf_runs]`` (defaults
-20 and 10). CPU time of this process throughout (pybullet and coal run in it).
+Run: ``.venv/bin/python benchmarks/motion_bench.py [transports] [shelf_runs] [--before]``
+(defaults 5 and 20). CPU time of this process throughout (pybullet and coal run in it).
 
 1. The PR2 transports the mug ``transports`` times (seeded spots, as kitchen_bench); every
    motion is timed from its planning call to its trajectory: straight joint segments,
    Cartesian tool lines, OMPL fallbacks and base paths (median, p95, count).
 2. The OMPL fallback on its own: the PR2's arm round a box on the counter
-   (tests/projection/test_projection_arm_paths.py), ``shelf_runs`` seeds, with and without
-   the coal snapshot's build.
+   (tests/projection/test_projection_arm_paths.py), ``shelf_runs`` seeds: median and p95 of
+   the planning alone (``plan_joint_path`` on the snapshot: RRTConnect, simplification and
+   the re-check), with the snapshot's build apart; the path's length against the straight
+   line, in joint space and along the tool frame; and how long a query that cannot
+   succeed (its goal enclosed in joint space) takes to give up.
 3. Collision checks per second: coal snapshot (``CollisionScene.is_free``), PyBullet
    contact check (``BulletScene.colliding``), PyBullet clearance and coal clearance
    (``CoalClearance.clearance``, what the straight segments' conservative advancement
    uses; random configurations jump, so each refocuses its pairs).
-4. The transport before (commit ``BEFORE``: motions jump to their goals) and after, in the
-   same run: the old commit is checked out into a temporary worktree and timed there.
+4. With ``--before``: the transport before (commit ``BEFORE``: motions jump to their
+   goals) and after, in the same run: the old commit is checked out into a temporary
+   worktree and timed there.
 """
 
 from __future__ import annotations
 
+import contextlib
+import itertools
 import json
 import math
 import statistics
@@ -28,6 +34,7 @@ import tempfile
 import time
 from collections import defaultdict
 from collections.abc import Callable
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -36,12 +43,14 @@ from transport_timing import transport_times
 
 import robocram.projection.arm as projected_arm
 import robocram.projection.navigation as projected_navigation
-from robocram.kinematics import solve_ik
+from robocram.execution.failures import ManipulationPathBlocked
+from robocram.kinematics import forward_kinematics, solve_ik
 from robocram.motion import CollisionScene
 from robocram.motion.bullet_scene import BulletScene
 from robocram.motion.coal_clearance import CoalClearance
 from robocram.motion.joint_limits import joint_limits
 from robocram.motion.joint_path import plan_joint_path
+from robocram.motion.path_simplification import path_length
 from robocram.motion.travel_bound import TravelBound
 from robocram.plans.basic_actions import move_torso, navigate, park_arms
 from robocram.projection import simulated_robot
@@ -124,13 +133,27 @@ def _shelf_setup() -> tuple[Any, ProjectedRobot, list[float], list[float], tuple
     )  # fmt: skip
 
 
-def ompl_fallback(runs: int) -> tuple[list[float], list[float], list[int]]:
-    """Round the shelf: planning times [ms] with and without the snapshot build; checks."""
+@dataclass
+class Fallback:
+    """OMPL round the box, per seed: CPU ms with and without the snapshot's build, checks,
+    and the path's length against the straight line (joint space and the tool's)."""
+
+    with_build: list[float] = field(default_factory=list)
+    planning: list[float] = field(default_factory=list)
+    checks: list[int] = field(default_factory=list)
+    joint_ratio: list[float] = field(default_factory=list)
+    tool_ratio: list[float] = field(default_factory=list)
+
+
+def ompl_fallback(runs: int) -> Fallback:
+    """Round the shelf: ``plan_joint_path`` on a fresh coal snapshot per seed."""
     world, robot, start, goal, joints = _shelf_setup()
     limits = joint_limits(robot.description, joints)
     box = ([lim.lower for lim in limits], [lim.upper for lim in limits])
     bound = TravelBound.of(world, "pr2", joints)
-    with_build, planning, checks = [], [], []
+    tool = _tool_length(robot, joints)
+    straight = float(np.linalg.norm(np.subtract(goal, start)))
+    out = Fallback()
     for seed in range(runs):
         t0 = time.process_time()
         scene = CollisionScene.of(world, "pr2", joints)
@@ -138,11 +161,68 @@ def ompl_fallback(runs: int) -> tuple[list[float], list[float], list[int]]:
         path = plan_joint_path(scene, start, goal, bound, box, seed=seed)
         t2 = time.process_time()
         assert path.planner == "rrt_connect"
-        with_build.append((t2 - t0) * 1e3)
-        planning.append((t2 - t1) * 1e3)
-        checks.append(path.checks)
+        out.with_build.append((t2 - t0) * 1e3)
+        out.planning.append((t2 - t1) * 1e3)
+        out.checks.append(path.checks)
+        out.joint_ratio.append(path_length(path.waypoints) / straight)
+        out.tool_ratio.append(tool(path.waypoints) / tool((start, goal), straight=True))
     world.close()
-    return with_build, planning, checks
+    return out
+
+
+def _tool_length(robot: ProjectedRobot, joints: tuple[str, ...]) -> Callable[..., float]:
+    """The length [m] of the tool frame's path along joint-space waypoints (each segment
+    cut in 50), or of the straight line between its ends (``straight``)."""
+    frame = robot.description.arms["right"].tool_frame
+    rest = robot.world.joint_states("pr2")
+
+    def at(q: np.ndarray) -> np.ndarray:
+        values = {**rest, **dict(zip(joints, q.tolist(), strict=True))}
+        return np.array(forward_kinematics(robot.description, values, frame).position)
+
+    def length(waypoints: Any, straight: bool = False) -> float:
+        points = [np.asarray(w, dtype=float) for w in waypoints]
+        if straight:
+            return float(np.linalg.norm(at(points[-1]) - at(points[0])))
+        dense = [a + (b - a) * k / 50 for a, b in itertools.pairwise(points) for k in range(50)]
+        tips = np.array([at(q) for q in [*dense, points[-1]]])
+        return float(np.linalg.norm(np.diff(tips, axis=0), axis=1).sum())
+
+    return length
+
+
+def impossible_query() -> tuple[float, int]:
+    """CPU ms and checks until RRTConnect gives up on a goal enclosed in joint space
+    (every configuration 0.05-0.3 rad from it collides), snapshot build included."""
+    world, robot, start, goal, joints = _shelf_setup()
+    limits = joint_limits(robot.description, joints)
+    box = ([lim.lower for lim in limits], [lim.upper for lim in limits])
+    bound = TravelBound.of(world, "pr2", joints)
+    begin = time.process_time()
+    scene = CollisionScene.of(world, "pr2", joints)
+    caged = _Caged(scene, np.array(goal))
+    with contextlib.suppress(ManipulationPathBlocked):  # it must fail: the goal is caged
+        plan_joint_path(caged, start, goal, bound, box)
+    spent = (time.process_time() - begin) * 1e3
+    world.close()
+    return spent, caged.asked
+
+
+class _Caged:
+    """A snapshot whose goal is enclosed: a shell round it in joint space collides."""
+
+    def __init__(self, scene: CollisionScene, goal: np.ndarray) -> None:
+        self.scene, self.goal, self.asked, self.joints = scene, goal, 0, scene.joints
+
+    def _caged(self, q: Any) -> bool:
+        self.asked += 1
+        return 0.05 < float(np.abs(np.asarray(q, dtype=float) - self.goal).max()) < 0.3
+
+    def is_free(self, q: Any) -> bool:
+        return not self._caged(q) and self.scene.is_free(q)
+
+    def colliding(self, q: Any, first_only: bool = False) -> list[tuple[str, str]]:
+        return [("cage", "cage")] if self._caged(q) else self.scene.colliding(q, first_only)
 
 
 def checks_per_second(samples: int = 2000) -> dict[str, float]:
@@ -204,31 +284,50 @@ def transport_before(transports: int) -> dict[str, float] | None:
 
 def main() -> None:
     """Print the figures."""
-    transports = int(sys.argv[1]) if len(sys.argv) > 1 else 20
-    shelf_runs = int(sys.argv[2]) if len(sys.argv) > 2 else 10
+    numbers = [int(a) for a in sys.argv[1:] if a.isdigit()]
+    transports = numbers[0] if numbers else 5
+    shelf_runs = numbers[1] if len(numbers) > 1 else 20
     print(f"motion_bench: PR2 in the kitchen; CPU time of this process; {transports} transports")
     record, totals, succeeded = motion_kinds(transports)
-    for kind in ("straight", "cartesian", "rrt_connect", "base"):
+    for kind in [*GOALS, *sorted(set(record) - set(GOALS))]:
         values = record.get(kind, [])
         if not values:
             print(f"  {kind:12s} none in these transports")
             continue
+        goal = (
+            f"   (goal: {'median' if kind == 'rrt_connect' else 'p95'} <= {GOALS[kind]:.0f} ms)"
+            if kind in GOALS else ""
+        )  # fmt: skip
         print(
             f"  {kind:12s} n={len(values):4d}  median {statistics.median(values):6.1f} ms  "
-            f"p95 {_p95(values):6.1f} ms   (goal: {'median' if kind == 'rrt_connect' else 'p95'}"
-            f" <= {GOALS[kind]:.0f} ms)"
+            f"p95 {_p95(values):6.1f} ms{goal}"
         )
-    with_build, planning, checks = ompl_fallback(shelf_runs)
+    f = ompl_fallback(shelf_runs)
     print(
-        f"  OMPL round the shelf ({shelf_runs} seeds): median {statistics.median(with_build):6.1f}"
-        f" ms with the coal snapshot's build, {statistics.median(planning):6.1f} ms planning "
-        f"alone, p95 {_p95(with_build):6.1f} ms; median {statistics.median(checks):.0f} checks"
-        f"   (goal: median <= {GOALS['rrt_connect']:.0f} ms)"
+        f"  OMPL round the shelf ({shelf_runs} seeds), planning alone (plan_joint_path on the "
+        f"snapshot): median {statistics.median(f.planning):6.1f} ms  p95 {_p95(f.planning):6.1f}"
+        f" ms   (goal: median <= {GOALS['rrt_connect']:.0f} ms); with the snapshot's build: "
+        f"median {statistics.median(f.with_build):6.1f} ms; "
+        f"median {statistics.median(f.checks):.0f} checks"
+    )
+    print(
+        f"  OMPL path length / straight line: joint space median "
+        f"{statistics.median(f.joint_ratio):.2f} (max {max(f.joint_ratio):.2f}), tool frame "
+        f"median {statistics.median(f.tool_ratio):.2f} (max {max(f.tool_ratio):.2f})"
+    )
+    spent, asked = impossible_query()
+    print(
+        f"  an impossible query (goal enclosed): gives up after {spent:6.1f} ms, {asked} checks"
+        f"   (goal: <= 500 ms)"
     )
     for name, rate in checks_per_second().items():
         print(f"  {name:20s} {rate:10.0f} checks/s")
-    before = transport_before(transports)
     after = statistics.median(totals)
+    if "--before" not in sys.argv:
+        print(f"  transport: median {after:7.1f} ms ({succeeded}/{transports} ok); --before: "
+              "against the commit before robocram.motion")  # fmt: skip
+        return
+    before = transport_before(transports)
     shown = (
         f"{before['median']:7.1f} ms ({before['ok']:.0f}/{transports} ok)"
         if before else "n/a (no git worktree)"

@@ -36,7 +36,7 @@ from robocram.motion.configuration_checker import LinkPair
 from robocram.motion.corner_blend import blend_radii
 from robocram.motion.joint_limits import joint_limits
 from robocram.motion.joint_path import PLANNING_BUDGET, JointPath, plan_joint_path
-from robocram.motion.joint_trajectory import JointTrajectory
+from robocram.motion.joint_trajectory import FloatArray, JointTrajectory
 from robocram.motion.segment_check import CheckCounter, first_collision, segment_free
 from robocram.motion.self_path_check import SelfPathCheck
 from robocram.motion.time_parameterization import time_parameterize
@@ -223,35 +223,91 @@ def _checked_path(
         detour = detour_path(scene, start, end, bound, box, height)
         if detour is not None and own.first_collision(detour.waypoints) is None:
             return detour
+    return _planned(world, robot, scene, own, start, end, bound, box, settings, what)
+
+
+def _planned(
+    world: World,
+    robot: str,
+    scene: CoalClearance,
+    own: SelfPathCheck,
+    start: list[float],
+    end: list[float],
+    bound: TravelBound,
+    box: tuple[list[float], list[float]],
+    settings: MotionSettings,
+    what: str,
+) -> JointPath:
+    """A path OMPL plans on a coal snapshot, simplified under the world's judge and
+    confirmed on the world. The self walk judges the simplifier only once a plan without
+    it ran the robot into itself (it costs as much as the world's walk); a snapshot with a
+    margin is taken only when the world refuses a planned path."""
     links = set(world.link_names(robot))
     start_links = {link for link, _ in scene.judge.allowed_pairs if link in links}
     failures: list[ManipulationPathBlocked] = []
     for margin in SNAPSHOT_MARGINS:  # the snapshot's hulls and Bullet's can differ by mm
         snapshot = CollisionScene.of(  # the goal passed the finer check on the meshes
-            world, robot, joints, allowed_links=scene.judge.allowed_links | start_links,
+            world, robot, scene.joints, allowed_links=scene.judge.allowed_links | start_links,
             margin=margin, allow_at=[end],
         )  # fmt: skip
-        try:
-            path = plan_joint_path(
-                snapshot, start, end, bound, box, seed=settings.seed, budget=settings.budget,
-                what=what,
-            )  # fmt: skip
-            _confirm(scene, path, bound, what)
-            blocked = own.first_collision(path.waypoints)
-            if blocked is not None:  # between the snapshot's coarse edge checks
-                raise _self_blocked(what, "planned path", blocked)
-            return path
-        except ManipulationPathBlocked as failure:
-            failures.append(failure)
+        for apart in (False, True):
+            judge = _WorldJudge(scene, bound, own if apart else None)
+            try:
+                path = plan_joint_path(
+                    snapshot, start, end, bound, box, seed=settings.seed,
+                    budget=settings.budget, what=what, judge=judge,
+                )  # fmt: skip
+            except ManipulationPathBlocked as failure:  # a margin only makes planning harder
+                failures.append(failure)
+                raise failures[0] from None
+            blocked = None
+            try:
+                _confirm(scene, path, bound, what, judge)
+                blocked = own.first_collision(path.waypoints)
+                if blocked is not None:
+                    raise _self_blocked(what, "planned path", blocked)
+                return path
+            except ManipulationPathBlocked as failure:
+                failures.append(failure)
+            if blocked is None:
+                break  # the world refused the path: plan on a snapshot with a margin
     raise failures[0]  # the plan without a margin says best what is in the way
 
 
-def _confirm(scene: CoalClearance, path: JointPath, bound: TravelBound, what: str) -> None:
-    """Check a planned path on the world itself: the snapshot and the world must agree."""
+class _WorldJudge:
+    """Whether a segment (its end included) is free on the world and, given ``own``, keeps
+    the robot's links apart: a simplified path is pulled tight round obstacles (where the snapshot's
+    hulls and the world's differ) and round the robot itself. It remembers the segments
+    it found free, so confirming the path checks them only once."""
+
+    def __init__(self, scene: CoalClearance, bound: TravelBound, own: SelfPathCheck | None) -> None:
+        self.scene, self.bound, self.own = scene, bound, own
+        self.counter = CheckCounter()
+        self.free: set[bytes] = set()
+
+    def __call__(self, a: FloatArray, b: FloatArray) -> bool:
+        key = np.asarray(a, dtype=float).tobytes() + np.asarray(b, dtype=float).tobytes()
+        if key in self.free:
+            return True
+        if (
+            segment_free(self.scene, a, b, self.bound, self.counter)
+            and self.scene.is_free(b)
+            and (self.own is None or self.own.first_collision([a.tolist(), b.tolist()]) is None)
+        ):
+            self.free.add(key)
+            return True
+        return False
+
+
+def _confirm(
+    scene: CoalClearance, path: JointPath, bound: TravelBound, what: str, judge: _WorldJudge
+) -> None:
+    """Check a planned path on the world itself: the snapshot and the world must agree
+    (segments ``judge`` found free while the path was simplified are not walked again)."""
     counter = CheckCounter()
     points = [np.array(w) for w in path.waypoints]
     for k, (a, b) in enumerate(zip(points, points[1:], strict=False)):
-        if segment_free(scene, a, b, bound, counter) and scene.is_free(b):
+        if judge(a, b):
             continue
         hit = first_collision(scene, a, b, bound, counter)
         where, pairs = hit if hit is not None else (1.0, [])

@@ -2,11 +2,10 @@
 
 Like MoveIt, the straight segment from start to goal is tried first, checked densely
 (:mod:`travel_bound`). When it is blocked, OMPL's RRTConnect plans in the same joints
-(the arm's, and the torso when IK moved it), and the path is shortcut: seeded random pairs
-of waypoints are joined by straight segments wherever those are free, for a counted
-number of tries. Everything is counted and seeded, so a query gives the same path on any
-machine. A goal the planner cannot connect within its budget raises
-``ManipulationPathBlocked`` naming what the straight segment runs into, and where.
+(the arm's, and the torso when IK moved it), and the path is simplified until no inner
+waypoint can be dropped (:mod:`path_simplification`). Everything is counted and seeded,
+so a query gives the same path on any machine. A goal the planner cannot connect within
+its budget raises ``ManipulationPathBlocked`` naming what the straight segment runs into, and where.
 """
 
 from __future__ import annotations
@@ -19,14 +18,14 @@ import numpy as np
 from robocram.execution.failures import ManipulationPathBlocked
 from robocram.motion.configuration_checker import ConfigurationChecker
 from robocram.motion.joint_trajectory import FloatArray
+from robocram.motion.path_simplification import SegmentJudge, simplify
 from robocram.motion.rrt_connect import rrt_connect
 from robocram.motion.segment_check import CheckCounter, first_collision, segment_free
 from robocram.motion.travel_bound import TravelBound
 
-PLANNING_BUDGET = 20_000  # configurations RRTConnect may check
-COARSE = 8  # RRTConnect checks its tree edges this much coarser; the path is then re-checked
+PLANNING_BUDGET = 5_000  # configurations RRTConnect may check (a plan round the box: ~300)
+COARSE = 16  # RRTConnect checks its tree edges this much coarser; the path is then re-checked
 PLANNING_ATTEMPTS = 3  # plans (seed, seed + 1, ...) whose re-check may fail before giving up
-SHORTCUT_TRIES = 20  # random shortcut attempts after planning
 
 
 @dataclass(frozen=True)
@@ -51,12 +50,15 @@ def plan_joint_path(
     budget: int = PLANNING_BUDGET,
     what: str = "the arm",
     explain: bool = True,
+    judge: SegmentJudge | None = None,
 ) -> JointPath:
     """A free path from ``start`` to ``goal`` (both free); ``plan=False``: straight only.
 
     ``limits`` are the joints' (lower, upper) bounds of the planning space. ``explain``
     False skips finding what the straight segment runs into first (a walk at full
-    resolution), for a caller that will plan elsewhere and explain from there.
+    resolution), for a caller that will plan elsewhere and explain from there. ``judge``:
+    a second check every segment of a planned path must pass (the world, when ``checker``
+    is a snapshot of it), while it is simplified and after.
 
     Raises:
         ManipulationPathBlocked: neither the straight segment nor the planner found a way;
@@ -88,11 +90,14 @@ def plan_joint_path(
             )
             if found is None:
                 break
-            waypoints = shortcut(checker, found, bound, counter, seed)
-            if _dense_free(checker, waypoints, bound, counter):
+            simple = simplify(checker, found, bound, counter, judge=judge)
+            if all(
+                segment_free(checker, qa, qb, bound, counter) and (judge is None or judge(qa, qb))
+                for qa, qb in simple.unchecked()
+            ):
                 return JointPath(
-                    joints, tuple(tuple(map(float, w)) for w in waypoints), "rrt_connect",
-                    counter.checks,
+                    joints, tuple(tuple(map(float, w)) for w in simple.waypoints),
+                    "rrt_connect", counter.checks,
                 )  # fmt: skip
     if not explain:
         raise ManipulationPathBlocked(
@@ -106,41 +111,6 @@ def plan_joint_path(
         colliding_pairs=tuple(pairs),
         path_fraction=fraction,
     )
-
-
-def _dense_free(
-    checker: ConfigurationChecker,
-    waypoints: list[FloatArray],
-    bound: TravelBound,
-    counter: CheckCounter,
-) -> bool:
-    """Whether every segment of the path is free at the full check resolution."""
-    return all(
-        segment_free(checker, qa, qb, bound, counter)
-        for qa, qb in zip(waypoints, waypoints[1:], strict=False)
-    )
-
-
-def shortcut(
-    checker: ConfigurationChecker,
-    path: list[FloatArray],
-    bound: TravelBound,
-    counter: CheckCounter,
-    seed: int,
-    tries: int = SHORTCUT_TRIES,
-) -> list[FloatArray]:
-    """``path`` with waypoints dropped wherever a straight segment joins their neighbours."""
-    rng = np.random.default_rng(seed)
-    path = list(path)
-    for _ in range(tries):
-        if len(path) < 3:
-            break
-        i, j = sorted(rng.choice(len(path), size=2, replace=False).tolist())
-        if j - i < 2:
-            continue
-        if segment_free(checker, path[i], path[j], bound, counter):
-            path = path[: i + 1] + path[j:]
-    return path
 
 
 def planning_box(

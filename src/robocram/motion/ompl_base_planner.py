@@ -1,8 +1,10 @@
 """Around obstacles: OMPL plans the base in SE(2) (RRTConnect), or as a Reeds-Shepp car.
 
-Every motion OMPL asks about, while planning and while shortening the path, is checked
-densely by the :class:`~robocram.motion.base_collision.BaseCollisionChecker` (a motion
-validator of ours, not OMPL's sparse one), so the path that comes out is checked densely.
+A holonomic base's path is shortened by :mod:`path_simplification` (until no waypoint can
+be dropped), a car's by OMPL's simplifier. Every motion asked about, while planning and
+while shortening the path, is checked densely by the
+:class:`~robocram.motion.base_collision.BaseCollisionChecker` (a motion validator of ours,
+not OMPL's sparse one), so the path that comes out is checked densely.
 Planning and shortening stop on a counted budget of fast checks, never on the clock, and
 OMPL's random numbers are seeded right before the query; OMPL's generator is process-wide,
 so queries take turns (a lock).
@@ -18,11 +20,14 @@ from ompl import geometric as og
 
 from robocram.motion.base_collision import BaseCollisionChecker
 from robocram.motion.ompl_query import POLLS_PER_CHECK, OmplQuery
+from robocram.motion.path_simplification import SegmentTest, simplify_with
 from robocram.motion.planar_motion import reeds_shepp_poses, straight_poses, wrapped
 from robocram.motion.robot_footprint import FloatArray
 
 Area = tuple[tuple[float, float], tuple[float, float]]  # [m] lower and upper x, y in map
-SIMPLIFY_SHARE = 0.25  # of the budget, added for shortening the path
+SIMPLIFY_SHARE = 0.25  # of the budget, added for shortening a car's path (OMPL's simplifier)
+SMOOTHING_CHECKS = 1_000  # fast checks corner cutting may spend on a holonomic base's path
+PREVIEW = 8  # the simplifier checks every 8th pose first: a blocked shortcut is refused sooner
 # [m, in SE(2)'s distance] longest tree edge. OMPL's default, a fifth of the planning
 # area's extent, is metres in a flat whose walls run 19 m: every extension into a cluttered
 # corner is a long edge, blocked, and its dense check spends the budget growing nothing.
@@ -114,12 +119,35 @@ def planned_waypoints(
             setup.solve(query.condition())
             if not setup.haveExactSolutionPath():
                 return None
-            extra = checker.fast_checks + int(SIMPLIFY_SHARE * budget)
-            setup.simplifySolution(query.condition(lambda: checker.fast_checks > extra))
+            if turning_radius is not None:
+                extra = checker.fast_checks + int(SIMPLIFY_SHARE * budget)
+                setup.simplifySolution(query.condition(lambda: checker.fast_checks > extra))
             states = [_pose(s) for s in setup.getSolutionPath().getStates()]
     finally:
         checker.confirm_everywhere = True
-    return _unwrapped(checker, states, turning_radius, space)
+    path = _unwrapped(checker, states, turning_radius, space)
+    if turning_radius is not None:
+        return path
+    checker.confirm_everywhere = False
+    try:
+        return simplify_with(_straight_test(checker), path, smoothing=SMOOTHING_CHECKS).waypoints
+    finally:
+        checker.confirm_everywhere = True
+
+
+def _straight_test(checker: BaseCollisionChecker) -> SegmentTest:
+    """The dense check of a holonomic base's straight motion, for the simplifier: a motion
+    turning more than half a turn is refused (checked the short way round, it would be
+    driven the long way: the path's headings are continuous)."""
+
+    def free(a: FloatArray, b: FloatArray) -> bool:
+        if abs(b[2] - a[2]) > np.pi:
+            return False
+        poses = motion_poses(checker, a, b, None)
+        coarse = np.concatenate([poses[::PREVIEW], poses[-1:]])
+        return checker.first_blocked(coarse) is None and checker.first_blocked(poses) is None
+
+    return SegmentTest(free, lambda: checker.fast_checks)
 
 
 def _unwrapped(

@@ -21,7 +21,7 @@ from robocram.motion.ompl_query import POLLS_PER_CHECK, OmplQuery
 from robocram.motion.segment_check import CheckCounter, segment_free
 from robocram.motion.travel_bound import TravelBound
 
-RANGE = 0.5  # [rad] longest tree edge: short edges are cheap to check and rarely blocked
+RANGE = 1.5  # [rad] longest tree edge: long edges checked coarsely reach round in few states
 
 
 class _DenseMotions(ob.MotionValidator):
