@@ -28,7 +28,8 @@ from robocram.tf import PoseStamped
 from robocram.world import World
 
 PERIOD = 0.05  # [s] the trajectories' sampling period
-TORSO_GOAL = {"pr2": 0.2, "hsrb": 0.3}  # [m] within the lift's limits
+TORSO_GOAL = {"pr2": 0.2, "hsrb": 0.1}  # [m] within the lift's limits; the HSR looks down to
+# the mug past its parked hand only this low (higher, the hand meets the turning head)
 TOL = 1e-9
 
 

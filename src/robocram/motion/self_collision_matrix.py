@@ -10,15 +10,18 @@ shapes (PyBullet's hulls, what every check and the audit measure), once per robo
 - **default**: touching where the robot rests (every arm and the neck parked, grippers
   open or closed), as MoveIt disables pairs in collision at its default pose: convex
   hulls of a folded elbow's two halves overlap where the meshes clear, and a Fetch tucked
-  as its makers tuck it sinks its forearm's hull 10 mm into the torso's. Unlike MoveIt,
-  such a pair is not forgotten: its depth at rest (:attr:`SelfCollisionMatrix.rest_depths`)
-  is the deepest a motion may take it (:mod:`~robocram.motion.self_path_check`). Drafted
-  parking poses keep clear of the robot (:mod:`~robocram.robots.draft.stowing`), so this
-  only trusts poses a user or an SRDF gave;
+  as its makers tuck it sinks its forearm's hull 10 mm into the torso's (the depths are
+  kept: :attr:`SelfCollisionMatrix.rest_depths`). Bounding such a pair by its depth at
+  rest refused a PR2 opening the fridge (its upper arm's hull sweeps the torso's deeper as
+  the door pulls it back), so, as in MoveIt, it is not checked. Drafted parking poses keep
+  clear of the robot (:mod:`~robocram.robots.draft.stowing`), so this only trusts poses a
+  user or an SRDF gave;
 - **chained**: one hangs below the other across two movable joints (an HSR's arm roll
   link and its wrist roll link, a wrist flex between): the joint limits between keep
   the real links apart, while their convex hulls, which bridge the joint, overlap when
   it flexes. Three joints apart (a PR2's forearm and its own fingers) is checked;
+- **fingers**: two fingers of one gripper (``gripper_links``): they close on each other
+  by design (a TALOS hand's three tips meet halfway through closing);
 - **allowed**: the description's ``allowed_contacts`` name the pair (an SRDF's disabled
   pairs are drafted into them).
 
@@ -57,7 +60,7 @@ class SelfCollisionMatrix:
     """The checked pairs of one robot's links, and why each other pair is skipped."""
 
     checked: tuple[tuple[str, str], ...]
-    skipped: Mapping[frozenset[str], str]  # adjacent always default chained never allowed
+    skipped: Mapping[frozenset[str], str]  # pair -> why (adjacent, chained, never, ...)
     rest_depths: Mapping[frozenset[str], float] = field(default_factory=dict)  # [m] default
 
     @classmethod
@@ -96,6 +99,10 @@ def _work_out(world: World, robot: str) -> SelfCollisionMatrix:
         pair = frozenset((a, b))
         if pair not in skipped and _chained(desc.model, a, b):
             skipped[pair] = "chained"
+    for arm in desc.arms.values():
+        fingers = sorted(set(arm.gripper_links) & set(links))
+        for a, b in itertools.combinations(fingers, 2):
+            skipped.setdefault(frozenset((a, b)), "fingers")
     rules = AllowedContacts.of(desc)
     for a, b in itertools.combinations(links, 2):
         pair = frozenset((a, b))

@@ -13,9 +13,8 @@ both) can move a point of either (:class:`~robocram.motion.travel_bound.TravelBo
 rigid levers). Near contact it steps :data:`MIN_STEP` at least.
 
 A pair touching where the motion starts (a hand folded on the torso's hull) may stay in
-contact only while it does not deepen (by more than :data:`DEEPEN`), and a pair whose
-hulls overlap where the robot rests no deeper than there; every other pair counts from
-the first touch. So a motion never creates or deepens a self-collision.
+contact only while it does not deepen (by more than :data:`DEEPEN`); every other pair
+counts from the first touch. So a motion never creates or deepens a self-collision.
 """
 
 from __future__ import annotations
@@ -53,9 +52,8 @@ class SelfPathCheck:
     def of(cls, world: World, robot: str, joints: Sequence[str]) -> SelfPathCheck:
         """The check of a motion of ``joints`` from where the robot is now."""
         joints = tuple(joints)
-        pairs, levers, rest = world.derived(_kept_pairs).of(world, robot, joints)
-        start = world.self_distances(robot, pairs, 0.0)
-        floors = np.minimum(np.minimum(start, rest), 0.0) - DEEPEN
+        pairs, levers = world.derived(_kept_pairs).of(world, robot, joints)
+        floors = np.minimum(world.self_distances(robot, pairs, 0.0), 0.0) - DEEPEN
         return cls(world, robot, joints, pairs, levers, floors)
 
     def colliding(self, q: Sequence[float]) -> list[LinkPair]:
@@ -154,7 +152,7 @@ class _KeptPairs:
         return kept[1]
 
 
-_MovedPairs = tuple[tuple[LinkPair, ...], FloatArray, FloatArray]  # pairs, levers, rest
+_MovedPairs = tuple[tuple[LinkPair, ...], FloatArray]  # pairs, levers
 
 
 def _kept_pairs(world: World) -> _KeptPairs:
@@ -162,11 +160,9 @@ def _kept_pairs(world: World) -> _KeptPairs:
 
 
 def _moved_pairs(world: World, robot: str, joints: tuple[str, ...]) -> _MovedPairs:
-    """The matrix's checked pairs, and its pairs touching at rest, that ``joints`` move
-    relative to each other; per pair and joint the most a point of either link moves
-    relative to the other per unit change of the joint (joints above both move neither
-    relative to the other); per pair the least gap [m] it may keep (minus its depth at
-    rest; 0 for a pair apart at rest)."""
+    """The matrix's checked pairs that ``joints`` move relative to each other, and per
+    pair and joint the most a point of either link moves relative to the other per unit
+    change of the joint (joints above both move neither relative to the other)."""
     model = world.robot(robot).description.model
     matrix = SelfCollisionMatrix.of(world, robot)
     active = sorted(active_joints(model, joints))
@@ -179,10 +175,9 @@ def _moved_pairs(world: World, robot: str, joints: tuple[str, ...]) -> _MovedPai
         mimic = model.joints[name].mimic
         if mimic is not None and mimic.joint in joints:
             fold[column[name], joints.index(mimic.joint)] = abs(mimic.multiplier)
-    rests = [tuple(sorted(pair)) for pair in matrix.rest_depths]
-    every: list[LinkPair] = [*matrix.checked, *((a, b) for a, b in rests)]
+    every = list(matrix.checked)
     if not every:
-        return (), np.zeros((0, len(joints))), np.zeros(0)
+        return (), np.zeros((0, len(joints)))
     names = sorted({link for pair in every for link in pair})
     row = {link: k for k, link in enumerate(names)}
     table = np.zeros((len(names), len(active)))
@@ -194,8 +189,7 @@ def _moved_pairs(world: World, robot: str, joints: tuple[str, ...]) -> _MovedPai
     relative = np.where((first > 0.0) & (second > 0.0), 0.0, first + second) @ fold
     moved = np.flatnonzero(relative.any(axis=1))
     pairs = tuple(every[k] for k in moved.tolist())
-    rest = np.array([-matrix.rest_depths.get(frozenset(p), 0.0) for p in pairs], dtype=float)
-    return pairs, relative[moved], rest
+    return pairs, relative[moved]
 
 
 class _posed:
