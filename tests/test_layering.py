@@ -88,6 +88,7 @@ ALLOWED: dict[str, set[str]] = {
     },
     "robot_check": {
         "projection",
+        "motion",
         "world",
         "kinematics",
         "execution",

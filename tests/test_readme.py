@@ -38,5 +38,9 @@ def test_readme_example_runs_on_each_robot_it_names(robot: str) -> None:
     placed = world.pose(robot).inverse() * world.pose("mug-1")
     assert pose.position == pytest.approx(placed.position, abs=1e-3)
     torso = world.robot(robot).description.torso_joint
-    assert world.joint_states(robot)[torso] == pytest.approx(namespace["top"]["Top"], abs=1e-6)  # type: ignore[index]
+    limits = world.robot(robot).description.model.joints[torso]
+    assert limits.lower is not None and limits.upper is not None
+    quarter = limits.lower + (limits.upper - limits.lower) / 4
+    assert world.joint_states(robot)[torso] == pytest.approx(quarter, abs=1e-6)
+    assert namespace["up"] == pytest.approx(quarter, abs=1e-12)
     world.close()
