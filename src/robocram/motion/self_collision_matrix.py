@@ -46,7 +46,7 @@ import numpy as np
 
 from robocram.motion.allowed_contacts import AllowedContacts, Other
 from robocram.motion.self_collision import adjacent_pairs
-from robocram.robots import RobotModel
+from robocram.robots import LoadedDescription, RobotModel
 from robocram.world import World
 
 SAMPLES = 64  # configurations sampled to find pairs always in contact
@@ -67,11 +67,13 @@ class SelfCollisionMatrix:
     def of(cls, world: World, robot: str) -> SelfCollisionMatrix:
         """The matrix of ``robot`` (worked out on first use, kept with its model)."""
         handle = world.robot(robot)
-        holder = handle.description.model.derived(_Kept)
-        if holder.matrix is None or holder.description is not handle.description:
-            holder.matrix = _work_out(world, robot)
-            holder.description = handle.description
-        return holder.matrix
+        desc = handle.description
+        kept = desc.model.derived(_Kept).matrices
+        key = _description_key(desc)
+        found = kept.get(key)
+        if found is None:
+            found = kept[key] = _work_out(world, robot)
+        return found
 
     def reason(self, a: str, b: str) -> str | None:
         """Why the pair ``a``, ``b`` is not checked (None: it is)."""
@@ -80,11 +82,22 @@ class SelfCollisionMatrix:
 
 @dataclass
 class _Kept:
-    """The matrix, kept with the model it was worked out for."""
+    """The matrices worked out for a model, per description of it."""
 
     model: RobotModel
-    matrix: SelfCollisionMatrix | None = None
-    description: object = field(default=None, repr=False)
+    matrices: dict[tuple[object, ...], SelfCollisionMatrix] = field(default_factory=dict)
+
+
+def _description_key(desc: LoadedDescription) -> tuple[object, ...]:
+    """What of a description, beyond its model, the matrix depends on: its allowed
+    contacts, its arms' parking poses and fingers and its neck's parking (a scene loads the
+    description anew, the model is kept per process: the matrix is worked out once)."""
+    arms = tuple(
+        (name, tuple(sorted(arm.parking.items())), tuple(arm.gripper_joints),
+         tuple(arm.gripper_links))
+        for name, arm in sorted(desc.arms.items())
+    )  # fmt: skip
+    return (tuple(desc.allowed_contacts), arms, tuple(sorted(desc.neck_parking.items())))
 
 
 def _work_out(world: World, robot: str) -> SelfCollisionMatrix:
