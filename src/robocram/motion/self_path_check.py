@@ -19,13 +19,15 @@ counts from the first touch. So a motion never creates or deepens a self-collisi
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
 
+from robocram.motion.coal_self_distances import SELF_MARGIN, SelfDistances, SelfParts
 from robocram.motion.configuration_checker import LinkPair
 from robocram.motion.joint_trajectory import FloatArray
+from robocram.motion.robot_geometry import RobotGeometry
 from robocram.motion.self_collision import active_joints
 from robocram.motion.self_collision_matrix import SelfCollisionMatrix
 from robocram.motion.travel_bound import TravelBound
@@ -47,19 +49,31 @@ class SelfPathCheck:
     pairs: tuple[LinkPair, ...]
     levers: FloatArray  # (pairs, joints) [m per unit]: relative travel per joint change
     floors: FloatArray  # per pair [m]: nearer than this is a collision
+    distances: SelfDistances  # lower bounds on the pairs' distances, from coal
 
     @classmethod
     def of(cls, world: World, robot: str, joints: Sequence[str]) -> SelfPathCheck:
         """The check of a motion of ``joints`` from where the robot is now."""
         joints = tuple(joints)
-        pairs, levers = world.derived(_kept_pairs).of(world, robot, joints)
+        pairs, levers, parts = world.derived(_kept_pairs).of(world, robot, joints)
         floors = np.minimum(world.self_distances(robot, pairs, 0.0), 0.0) - DEEPEN
-        return cls(world, robot, joints, pairs, levers, floors)
+        model = world.robot(robot).description.model
+        standing = {
+            j: v for j, v in world.joint_states(robot).items() if model.joints[j].mimic is None
+        }  # fmt: skip
+        geometry = model.derived(RobotGeometry.of)
+        distances = SelfDistances(geometry, parts, joints, standing, SELF_MARGIN)
+        return cls(world, robot, joints, pairs, levers, floors, distances)
 
     def colliding(self, q: Sequence[float]) -> list[LinkPair]:
         """The pairs colliding at ``q``."""
-        with _posed(self.world, self.robot):
-            gaps = self._gaps(np.asarray(q, dtype=float), np.zeros(len(self.pairs)))
+        if not self.pairs:
+            return []
+        posing = _Posing(self.world, self.robot, self.joints)
+        try:
+            gaps = self._gaps(np.asarray(q, dtype=float), np.zeros(len(self.pairs)), posing)
+        finally:
+            posing.restore()
         return [self.pairs[k] for k in np.flatnonzero(gaps < 0.0).tolist()]
 
     def first_collision(
@@ -72,10 +86,11 @@ class SelfPathCheck:
             return None
         travel = np.abs(np.diff(points, axis=0)) @ self.levers.T  # (segments, pairs)
         segment, s = 0, 0.0
-        with _posed(self.world, self.robot):
+        posing = _Posing(self.world, self.robot, self.joints)
+        try:
             while True:
                 q = points[segment] + (points[segment + 1] - points[segment]) * s
-                gaps = self._gaps(q, travel[segment])
+                gaps = self._gaps(q, travel[segment], posing)
                 hit = np.flatnonzero(gaps < 0.0)
                 if hit.size:
                     fraction = (segment + s) / (len(points) - 1)
@@ -83,38 +98,43 @@ class SelfPathCheck:
                 if segment == len(points) - 2 and s >= 1.0:
                     return None
                 segment, s = _advance(travel, segment, s, np.maximum(gaps, MIN_STEP))
+        finally:
+            posing.restore()
 
-    def _gaps(self, q: FloatArray, rate: FloatArray) -> FloatArray:
+    def _gaps(self, q: FloatArray, rate: FloatArray, posing: _Posing) -> FloatArray:
         """Per pair, at ``q``: a lower bound on how far it is from counting as a collision
         (< 0: it does). Pairs whose bounds could touch are measured exactly; the others
         in the order their bounds would limit a step at ``rate`` (travel per unit of the
         segment), until no bound left can limit it more than a measured gap does."""
-        self.world.set_joint_states(
-            self.robot, dict(zip(self.joints, q.tolist(), strict=True)), carry=False
-        )
         floors = self.floors
+        lower = self.distances.bounds(q) - floors
+        gaps = lower.copy()
 
-        def pick(gaps: FloatArray) -> Iterator[int]:
-            lower = gaps - floors
-            touching = np.flatnonzero(lower < 0.0).tolist()
-            yield from touching
-            with np.errstate(divide="ignore"):
-                ratio = np.where(rate > 0.0, np.maximum(lower, MIN_STEP) / rate, np.inf)
-            best = min(
-                (max(gaps[k] - floors[k], MIN_STEP) / rate[k] for k in touching if rate[k] > 0),
-                default=np.inf,
-            )
-            for k in np.argsort(ratio, kind="stable").tolist():
-                if ratio[k] >= best:
-                    return
-                if lower[k] < 0.0:
-                    continue
-                yield k
-                best = min(best, max(gaps[k] - floors[k], MIN_STEP) / rate[k])
+        def measure(k: int) -> float:
+            found = self.distances.distance(k)
+            if self.distances.touching(found):  # PyBullet's own word, on the posed robot
+                posing.pose(q)
+                found = float(
+                    self.world.self_distances(self.robot, self.pairs, REACH, lambda _: (k,))[k]
+                )
+            gaps[k] = found - floors[k]
+            return max(float(gaps[k]), MIN_STEP)
 
-        distance = self.world.self_distances(self.robot, self.pairs, REACH, pick)
-        result: FloatArray = distance - floors
-        return result
+        touching = np.flatnonzero(lower < 0.0).tolist()
+        best = np.inf
+        for k in touching:
+            step = measure(k)
+            if rate[k] > 0.0:
+                best = min(best, step / rate[k])
+        with np.errstate(divide="ignore"):
+            ratio = np.where(rate > 0.0, np.maximum(lower, MIN_STEP) / rate, np.inf)
+        for k in np.argsort(ratio, kind="stable").tolist():
+            if ratio[k] >= best:
+                break
+            if lower[k] < 0.0:
+                continue
+            best = min(best, measure(k) / rate[k])
+        return gaps
 
 
 def _advance(travel: FloatArray, segment: int, s: float, budget: FloatArray) -> tuple[int, float]:
@@ -152,7 +172,7 @@ class _KeptPairs:
         return kept[1]
 
 
-_MovedPairs = tuple[tuple[LinkPair, ...], FloatArray]  # pairs, levers
+_MovedPairs = tuple[tuple[LinkPair, ...], FloatArray, SelfParts]  # pairs, levers, parts
 
 
 def _kept_pairs(world: World) -> _KeptPairs:
@@ -176,8 +196,10 @@ def _moved_pairs(world: World, robot: str, joints: tuple[str, ...]) -> _MovedPai
         if mimic is not None and mimic.joint in joints:
             fold[column[name], joints.index(mimic.joint)] = abs(mimic.multiplier)
     every = list(matrix.checked)
+    geometry = model.derived(RobotGeometry.of)
+    link_index = world.object(robot).link_index
     if not every:
-        return (), np.zeros((0, len(joints)))
+        return (), np.zeros((0, len(joints))), SelfParts.of(geometry, link_index, ())
     names = sorted({link for pair in every for link in pair})
     row = {link: k for k, link in enumerate(names)}
     table = np.zeros((len(names), len(active)))
@@ -189,21 +211,35 @@ def _moved_pairs(world: World, robot: str, joints: tuple[str, ...]) -> _MovedPai
     relative = np.where((first > 0.0) & (second > 0.0), 0.0, first + second) @ fold
     moved = np.flatnonzero(relative.any(axis=1))
     pairs = tuple(every[k] for k in moved.tolist())
-    return pairs, relative[moved]
+    return pairs, relative[moved], SelfParts.of(geometry, link_index, pairs)
 
 
-class _posed:
-    """Puts the robot's joints back when the block ends (checks move it)."""
+class _Posing:
+    """Poses the robot in PyBullet only when a pair needs PyBullet's own distance, and
+    puts its joints back afterwards (coal answers most checks with nothing posed)."""
 
-    def __init__(self, world: World, robot: str) -> None:
-        self.world, self.robot = world, robot
+    def __init__(self, world: World, robot: str, joints: tuple[str, ...]) -> None:
+        self.world, self.robot, self.joints = world, robot, joints
+        self.before: dict[str, float] | None = None
+        self.at: FloatArray | None = None
 
-    def __enter__(self) -> None:
-        model = self.world.robot(self.robot).description.model
-        self.before = {
-            j: v for j, v in self.world.joint_states(self.robot).items()
-            if model.joints[j].mimic is None
-        }  # fmt: skip
+    def pose(self, q: FloatArray) -> None:
+        """The robot's planned joints at ``q`` in PyBullet."""
+        if self.at is q:
+            return
+        if self.before is None:
+            model = self.world.robot(self.robot).description.model
+            self.before = {
+                j: v for j, v in self.world.joint_states(self.robot).items()
+                if model.joints[j].mimic is None
+            }  # fmt: skip
+        self.world.set_joint_states(
+            self.robot, dict(zip(self.joints, q.tolist(), strict=True)), carry=False
+        )
+        self.at = q
 
-    def __exit__(self, *_: object) -> None:
-        self.world.set_joint_states(self.robot, self.before, carry=False)
+    def restore(self) -> None:
+        """The joints as they were, if any check posed them."""
+        if self.before is not None:
+            self.world.set_joint_states(self.robot, self.before, carry=False)
+            self.before = self.at = None
