@@ -45,9 +45,7 @@ def test_coal_bounds_never_exceed_pybullet(scene: tuple[World, str]) -> None:
         limits = [world.joint_limits(robot, j) for j in joints]
         start = world.joint_states(robot)
         for _ in range(SAMPLES):
-            q = np.array(
-                [rng.uniform(max(lim.lower, -3.0), min(lim.upper, 3.0)) for lim in limits]
-            )
+            q = np.array([rng.uniform(max(lim.lower, -3.0), min(lim.upper, 3.0)) for lim in limits])
             bounds = check.distances.bounds(q)
             exact = [check.distances.distance(k) for k in range(len(check.pairs))]
             world.set_joint_states(robot, dict(zip(joints, q.tolist(), strict=True)))
