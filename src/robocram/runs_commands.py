@@ -42,6 +42,7 @@ def add_runs_commands(commands: argparse._SubParsersAction[argparse.ArgumentPars
     export.add_argument("db", type=Path, help=DB_HELP)
     export.add_argument("--run", type=int, help="run id (default: the last run)")
     export.add_argument("--mcap", type=Path, required=True, help="the MCAP file to write")
+    _robot_file_option(export)
     export.set_defaults(handler=_runs_export)
     audit = sub.add_parser(
         "audit",
@@ -49,7 +50,34 @@ def add_runs_commands(commands: argparse._SubParsersAction[argparse.ArgumentPars
     )
     audit.add_argument("db", type=Path, help=DB_HELP)
     audit.add_argument("--run", type=int, help="only this run (default: every run)")
+    _robot_file_option(audit)
     audit.set_defaults(handler=_runs_audit)
+
+
+def _robot_file_option(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "--robot-file",
+        type=Path,
+        action="append",
+        default=[],
+        metavar="FILE.py",
+        help="a robot's description file, if it moved since the run (repeatable; the "
+        "trace names the file each robot ran with)",
+    )
+
+
+def robot_files(paths: list[Path]) -> dict[str, str]:
+    """Description files by the name of the robot each describes."""
+    from robocram.robots.description_source import description_from
+
+    found = {}
+    for path in paths:
+        if path.suffix != ".py":
+            raise CliInputError(
+                f"--robot-file {path}: give the .py file that defines description()"
+            )
+        found[description_from(str(path)).name] = str(path)
+    return found
 
 
 def open_database(path: Path) -> TraceDatabase:
@@ -138,7 +166,7 @@ def _runs_export(args: argparse.Namespace) -> int:
 
     with open_database(args.db) as db:
         run = last_run(db, args.run)
-        count = export_mcap(db, run, args.mcap)
+        count = export_mcap(db, run, args.mcap, robots=robot_files(args.robot_file))
     print(f"wrote {count} messages of run {run} to {args.mcap} (/tf, /joint_states, /object_poses)")
     return EXIT_OK
 
@@ -147,7 +175,7 @@ def _runs_audit(args: argparse.Namespace) -> int:
     from robocram.traces.trajectory_audit import audit_runs
 
     with open_database(args.db) as db:
-        report = audit_runs(db, args.run)
+        report = audit_runs(db, args.run, robots=robot_files(args.robot_file))
     for finding in report.findings:
         print(finding.line())
     print("\n".join(report.summary_lines()))

@@ -153,6 +153,10 @@ class RobotDescription:
     base_type: BaseType | None = None  # None: from ``holonomic``; set, it wins over it
     allowed_contacts: tuple[tuple[str, str], ...] = DEFAULT_ALLOWED_CONTACTS
     model: RobotModel | None = None
+    source: str = field(default="", compare=False, kw_only=True)
+    """Where the description was read: ``FILE.py:NAME`` (absolute) or ``module:NAME``, as
+    :func:`~robocram.robots.description_source.description_from` takes it; empty for a
+    built-in robot or one made in code. A trace keeps it to build the robot again."""
 
     def __post_init__(self) -> None:
         if self.base_type is not None and self.base_type not in BASE_TYPES:

@@ -8,6 +8,7 @@ by ``robocram robot draft`` is used as written.
 
 from __future__ import annotations
 
+import dataclasses
 import importlib
 import importlib.util
 from pathlib import Path
@@ -39,13 +40,14 @@ def description_from(spec: str) -> RobotDescription:
     where, _, name = spec.partition(":")
     name = name or DEFAULT_NAME
     if where.endswith(".py"):
-        return _described(_module_from_file(Path(where)), name, spec)
+        found = _described(_module_from_file(Path(where)), name, spec)
+        return dataclasses.replace(found, source=f"{Path(where).resolve()}:{name}")
     if ":" in spec:
         try:
             module = importlib.import_module(where)
         except ImportError as err:
             raise DescriptionSourceError(f"cannot import {where!r} (from {spec!r}): {err}") from err
-        return _described(module, name, spec)
+        return dataclasses.replace(_described(module, name, spec), source=f"{where}:{name}")
     try:
         return builtin_description(spec)
     except DescriptionError as err:  # its message names the built-ins and the other ways

@@ -109,3 +109,16 @@ class MissingRobotDescription(UserWarning):  # noqa: N818 - reads as what is mis
             "trace the run again to get it"
         )
         self.run, self.robot = run, robot
+
+
+class RobotNotRebuilt(TraceError):  # noqa: N818 - reads as what went wrong
+    """A traced robot cannot be built again as it ran: its description file is gone, does
+    not load, or describes another URDF now."""
+
+    def __init__(self, robot: str, source: str, problem: str) -> None:
+        super().__init__(
+            f"robot {robot!r} of this trace was described by {source}, which {problem}; "
+            f"give the file it ran with (--robot-file FILE.py, or robots={{{robot!r}: "
+            "'FILE.py'}} in code)"
+        )
+        self.robot, self.source, self.problem = robot, source, problem

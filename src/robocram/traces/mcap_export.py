@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import json
 import warnings
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from pathlib import Path
 
 from robocram.traces.database import TraceDatabase
@@ -56,10 +56,18 @@ SCHEMAS = (TF, JOINT_STATE, POSE_STAMPED, STRING, MARKER_ARRAY)
 Message = tuple[str, str, Value]  # topic, schema name, message
 
 
-def export_mcap(db: TraceDatabase, run: int, out: str | Path, period: float = SAMPLE_PERIOD) -> int:
+def export_mcap(
+    db: TraceDatabase,
+    run: int,
+    out: str | Path,
+    period: float = SAMPLE_PERIOD,
+    robots: Mapping[str, str] | None = None,
+) -> int:
     """Write run ``run`` of ``db`` to the MCAP file ``out``; return the messages written.
 
-    Trajectories are sampled every ``period`` [s] of motion time.
+    Trajectories are sampled every ``period`` [s] of motion time. ``robots``: description
+    files by robot name, for robots whose file moved since the run (see
+    :func:`~robocram.traces.world_record.build_scene`).
 
     Warns:
         MissingRobotDescription: the trace stored no URDF of the run's robot (written by
@@ -77,7 +85,7 @@ def export_mcap(db: TraceDatabase, run: int, out: str | Path, period: float = SA
         raise TraceError(f"run {run} stored no scene; trace with trace_to(db, world=world)")
     urdf = _robot_description(db, run, row.scene)
     written = 0
-    with build_scene(row.scene) as world, open(out, "wb") as stream:
+    with build_scene(row.scene, robots=robots) as world, open(out, "wb") as stream:
         writer = Writer(stream)
         schemas = {name: writer.register_msgdef(name, message_definition(name)) for name in SCHEMAS}
         bodies = world_frames(world)

@@ -12,6 +12,7 @@ stores only what changed between frames.
 from __future__ import annotations
 
 import time
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -54,6 +55,7 @@ def animate_run(
     height: int = 300,
     period: float = GIF_PERIOD,
     max_frames: int = MAX_FRAMES,
+    robots: Mapping[str, str] | None = None,
 ) -> RunAnimation:
     """Render run ``run`` from ``camera`` (an optical-frame pose in map) into the GIF ``out``.
 
@@ -66,7 +68,7 @@ def animate_run(
         with TraceDatabase(db, create=False) as opened:
             return animate_run(
                 opened, run, out, camera, width=width, height=height,
-                period=period, max_frames=max_frames,
+                period=period, max_frames=max_frames, robots=robots,
             )  # fmt: skip
     if not (period > 0.0 and max_frames >= 2):
         raise TraceError(
@@ -79,7 +81,7 @@ def animate_run(
     step = max(period, _replay_span(db, run) / (max_frames - 1))
     images: list[np.ndarray] = []
     first, due, last, shown = None, -np.inf, 0.0, False
-    with build_scene(row.scene) as world:
+    with build_scene(row.scene, robots=robots) as world:
         for frame in replay_frames(db, run, world, period=min(step, period)):
             first = frame.time if first is None else first
             last, shown = frame.time, frame.time >= due

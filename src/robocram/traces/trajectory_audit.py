@@ -16,7 +16,7 @@ its stored trajectories are replayed in the order they ran, densely
 
 from __future__ import annotations
 
-from collections.abc import Collection, Iterable, Iterator
+from collections.abc import Collection, Iterable, Iterator, Mapping
 from dataclasses import dataclass
 
 import numpy as np
@@ -45,7 +45,10 @@ from robocram.world import World
 
 
 def audit_runs(
-    db: TraceDatabase, run: int | None = None, bounds: AuditBounds | None = None
+    db: TraceDatabase,
+    run: int | None = None,
+    bounds: AuditBounds | None = None,
+    robots: Mapping[str, str] | None = None,
 ) -> AuditReport:
     """The audit of run ``run``, or of every run of ``db`` (None); of every run, those
     traced without their world are listed as not audited.
@@ -55,24 +58,31 @@ def audit_runs(
         TraceError: run ``run`` has no stored scene, or a trajectory of a robot it lacks.
     """
     if run is not None:
-        return audit_run(db, require_run(db, run).id, bounds)
+        return audit_run(db, require_run(db, run).id, bounds, robots)
     reports = []
     for i in run_ids(db):
         try:
-            reports.append(audit_run(db, i, bounds))
+            reports.append(audit_run(db, i, bounds, robots))
         except NoSceneStored as err:
             reports.append(AuditReport((), (), 0, 0, ((i, str(err)),)))
     return AuditReport.merged(reports)
 
 
-def audit_run(db: TraceDatabase, run: int, bounds: AuditBounds | None = None) -> AuditReport:
-    """Replay run ``run`` densely on its stored world and report what is wrong."""
+def audit_run(
+    db: TraceDatabase,
+    run: int,
+    bounds: AuditBounds | None = None,
+    robots: Mapping[str, str] | None = None,
+) -> AuditReport:
+    """Replay run ``run`` densely on its stored world and report what is wrong
+    (``robots``: description files by robot name, see
+    :func:`~robocram.traces.world_record.build_scene`)."""
     bounds = bounds if bounds is not None else AuditBounds()
     row = require_run(db, run)
     if row.scene is None:
         raise NoSceneStored(run)
     trajectories = run_trajectories(db, run)
-    with build_scene(row.scene) as world:
+    with build_scene(row.scene, robots=robots) as world:
         audit = _RunAudit(db, run, world, bounds)
         for event in _events(db, run, trajectories):
             if isinstance(event, StoredTrajectory):

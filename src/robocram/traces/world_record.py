@@ -9,14 +9,16 @@ replay rebuilds the world in a fresh physics client.
 from __future__ import annotations
 
 import json
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 from sqlalchemy.orm import Session
 
+from robocram.robots import DescriptionError
 from robocram.tf import Pose
-from robocram.traces.errors import TraceError
+from robocram.traces.errors import RobotNotRebuilt, TraceError
 from robocram.traces.robot_model_record import urdf_digest
 from robocram.traces.schema import WorldStateRow
 from robocram.world import Attachment, MeshSpec, RobotObject, ShapeSpec, UrdfSpec, World
@@ -120,6 +122,8 @@ def _body_recipe(obj: Any) -> dict[str, Any]:
     if isinstance(obj, RobotObject):
         recipe["robot"] = obj.description.name
         recipe["urdf_digest"] = urdf_digest(obj.description.model)  # robot_models key
+        if obj.description.source:  # a description file or module: the name is not enough
+            recipe["source"] = obj.description.source
     elif isinstance(spec, ShapeSpec):
         recipe["shape"] = {"shape": spec.shape, "size": spec.size, "mass": spec.mass}
         recipe["shape"]["color"] = spec.color
@@ -132,13 +136,23 @@ def _body_recipe(obj: Any) -> dict[str, Any]:
     return recipe
 
 
-def build_scene(scene: str, world: World | None = None) -> World:
-    """Re-create the bodies of a stored scene (JSON from :func:`scene_of`) in a world."""
+def build_scene(
+    scene: str, world: World | None = None, robots: Mapping[str, str] | None = None
+) -> World:
+    """Re-create the bodies of a stored scene (JSON from :func:`scene_of`) in a world.
+
+    A robot described by a file is read from the file it ran with, or from
+    ``robots[description name]`` (a file moved since, or a trace from elsewhere).
+
+    Raises:
+        RobotNotRebuilt: a robot's description file is missing, fails to load, or now
+            describes another URDF than the one that ran.
+    """
     world = world if world is not None else World()
     for recipe in json.loads(scene):
         name, kind = recipe["name"], recipe["type"]
         if "robot" in recipe:
-            world.add_robot(recipe["robot"], name=name)
+            _add_robot(world, recipe, dict(robots or {}))
         elif "shape" in recipe:
             s = recipe["shape"]
             spec = ShapeSpec(s["shape"], tuple(s["size"]), s["mass"], tuple(s["color"]))
@@ -153,3 +167,19 @@ def build_scene(scene: str, world: World | None = None) -> World:
             urdf = UrdfSpec(Path(u["path"]), u["fixed_base"], u["scale"], u["mass"])
             world.add_object(name, kind, urdf)
     return world
+
+
+def _add_robot(world: World, recipe: dict[str, Any], robots: dict[str, str]) -> None:
+    """The recipe's robot, from its built-in name or its description file, as it ran."""
+    robot = recipe["robot"]
+    source = robots.get(robot) or recipe.get("source")
+    if source is None:
+        world.add_robot(robot, name=recipe["name"])
+        return
+    try:
+        handle = world.add_robot(source, name=recipe["name"])
+    except DescriptionError as err:
+        raise RobotNotRebuilt(robot, source, f"does not load ({err})") from err
+    if urdf_digest(handle.description.model) != recipe["urdf_digest"]:
+        world.remove(handle)
+        raise RobotNotRebuilt(robot, source, "now describes another URDF than the one that ran")

@@ -1,0 +1,90 @@
+"""Runs of a robot described by a file are rebuilt from that file (issues 35 and 41).
+
+A scene used to name its robots by description name alone, so the audit, the MCAP export
+and the GIF of a run of a drafted robot failed with "no built-in robot". The trace now
+keeps the file each robot was read from; a file moved since is given by hand, and a file
+that now describes another URDF is refused rather than replayed wrongly.
+"""
+
+from __future__ import annotations
+
+import json
+import sqlite3
+from pathlib import Path
+
+import pytest
+
+from robocram.cli import main
+from robocram.designators import a
+from robocram.execution import perform
+from robocram.projection import simulated_robot
+from robocram.scenes import tabletop_scene
+from robocram.traces import TraceDatabase, trace_to
+from robocram.traces.errors import RobotNotRebuilt
+from robocram.traces.trajectory_audit import audit_runs
+
+DATA = Path(__file__).resolve().parents[1] / "data"
+FETCH = DATA / "fetch" / "fetch.py"
+STRETCH = DATA / "stretch" / "stretch.py"
+TORSO = 0.2  # [m] the Fetch's torso lift the run raises it to
+
+
+@pytest.fixture(scope="module")
+def fetch_run(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    db_path = tmp_path_factory.mktemp("fetch") / "runs.db"
+    scene = tabletop_scene(str(FETCH))
+    robot = scene.world.robots()[0].name
+    with trace_to(db_path, world=scene.world), simulated_robot(scene.world, robot):
+        perform(a.motion(type="moving-torso", joint_angle=TORSO))
+    scene.world.close()
+    return db_path
+
+
+def _stored_source(db_path: Path) -> str:
+    with sqlite3.connect(db_path) as db:
+        (scene,) = db.execute("SELECT scene FROM runs").fetchone()
+    return next(r["source"] for r in json.loads(scene) if "robot" in r)
+
+
+def _move_source(db_path: Path, tmp_path: Path, to: str) -> Path:
+    """A copy of the store whose robot was read from ``to`` (a file moved or changed)."""
+    copy = tmp_path / "moved.db"
+    copy.write_bytes(db_path.read_bytes())
+    with sqlite3.connect(copy) as db:
+        (scene,) = db.execute("SELECT scene FROM runs").fetchone()
+        recipes = json.loads(scene)
+        for recipe in recipes:
+            if "robot" in recipe:
+                recipe["source"] = to
+        db.execute("UPDATE runs SET scene = ?", (json.dumps(recipes),))
+    return copy
+
+
+def test_the_trace_keeps_the_file_and_the_audit_rebuilds_the_robot(fetch_run: Path) -> None:
+    assert _stored_source(fetch_run) == f"{FETCH.resolve()}:description"
+    with TraceDatabase(fetch_run, create=False) as db:
+        report = audit_runs(db)
+    assert report.clean, report.summary_lines()
+    assert report.trajectories == 1 and report.configurations > 10  # the torso's, replayed
+
+
+def test_a_moved_file_is_named_with_the_fix_and_can_be_given(
+    fetch_run: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    moved = _move_source(fetch_run, tmp_path, str(tmp_path / "gone.py") + ":description")
+    with TraceDatabase(moved, create=False) as db, pytest.raises(RobotNotRebuilt) as err:
+        audit_runs(db)
+    assert "gone.py" in str(err.value) and "--robot-file" in str(err.value)
+    assert main(["runs", "audit", str(moved)]) == 3  # bad input: one line, no traceback
+    assert "gone.py" in capsys.readouterr().err
+    assert main(["runs", "audit", str(moved), "--robot-file", str(FETCH)]) == 0
+    out = tmp_path / "run.mcap"
+    assert main(["runs", "export", str(moved), "--mcap", str(out), "--robot-file", str(FETCH)]) == 0
+    assert out.stat().st_size > 10_000
+
+
+def test_a_file_that_now_describes_another_urdf_is_refused(fetch_run: Path, tmp_path: Path) -> None:
+    changed = _move_source(fetch_run, tmp_path, f"{STRETCH}:description")
+    with TraceDatabase(changed, create=False) as db, pytest.raises(RobotNotRebuilt) as err:
+        audit_runs(db)
+    assert "another URDF" in str(err.value)
