@@ -32,7 +32,8 @@ shapes (PyBullet's hulls, what every check and the audit measure), once per robo
   every pair the matrix skips as never, so a sample that missed shows up there.
 
 Every other pair of links with shapes is checked, also within one arm (a forearm against
-its own fingers).
+its own fingers). The built-in robots' matrices are stored with their descriptions
+(:mod:`~robocram.motion.stored_self_collision`): a process reads them instead of sampling.
 """
 
 from __future__ import annotations
@@ -41,11 +42,13 @@ import itertools
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
 from robocram.motion.allowed_contacts import AllowedContacts, Other
 from robocram.motion.self_collision import adjacent_pairs
+from robocram.motion.stored_self_collision import matrix_digest, read_stored
 from robocram.robots import LoadedDescription, RobotModel
 from robocram.world import World
 
@@ -72,8 +75,35 @@ class SelfCollisionMatrix:
         key = _description_key(desc)
         found = kept.get(key)
         if found is None:
-            found = kept[key] = _work_out(world, robot)
+            digest = matrix_digest(desc, key)
+            stored = read_stored(desc.name, digest)
+            found = cls.from_data(stored) if stored is not None else _work_out(world, robot)
+            kept[key] = found
         return found
+
+    @classmethod
+    def worked_out(cls, world: World, robot: str) -> tuple[SelfCollisionMatrix, str]:
+        """The matrix of ``robot`` worked out anew (nothing stored or kept is read), and
+        the digest it is stored under (``tools/store_self_collision.py``)."""
+        desc = world.robot(robot).description
+        return _work_out(world, robot), matrix_digest(desc, _description_key(desc))
+
+    def to_data(self) -> dict[str, Any]:
+        """The matrix as JSON data (pairs in a fixed order)."""
+        return {
+            "checked": [list(p) for p in self.checked],
+            "skipped": sorted([*sorted(p), why] for p, why in self.skipped.items()),
+            "rest_depths": sorted([*sorted(p), d] for p, d in self.rest_depths.items()),
+        }
+
+    @classmethod
+    def from_data(cls, data: Mapping[str, Any]) -> SelfCollisionMatrix:
+        """The matrix :meth:`to_data` gave."""
+        return cls(
+            tuple((str(a), str(b)) for a, b in data["checked"]),
+            {frozenset((str(a), str(b))): str(why) for a, b, why in data["skipped"]},
+            {frozenset((str(a), str(b))): float(d) for a, b, d in data["rest_depths"]},
+        )
 
     def reason(self, a: str, b: str) -> str | None:
         """Why the pair ``a``, ``b`` is not checked (None: it is)."""
