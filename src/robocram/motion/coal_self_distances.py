@@ -16,7 +16,7 @@ asks PyBullet itself then (:meth:`SelfDistances.touching`).
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import coal
 import numpy as np
@@ -52,6 +52,24 @@ class SelfParts:
     sums: FloatArray  # per part pair: the two balls' radii summed
     starts: NDArray[np.intp]  # per link pair: where its part pairs start (reduceat)
     empty: NDArray[np.bool_]  # per link pair: coal has no parts for one of its links
+    _moved: dict[tuple[str, ...], tuple[NDArray[np.intp], list[int], NDArray[np.intp]]] = field(
+        default_factory=dict, compare=False
+    )
+
+    def moved(
+        self, kin: RobotKinematics, slots: JointSlots
+    ) -> tuple[NDArray[np.intp], list[int], NDArray[np.intp]]:
+        """For motions of ``slots``' joints: the rows of :attr:`joints` they move, those
+        joints, and the parts riding on them (kept: every motion of those joints asks)."""
+        found = self._moved.get(slots.names)
+        if found is None:
+            rows = _moved_rows(kin, slots, self.joints)
+            found = self._moved[slots.names] = (
+                rows,
+                [self.joints[k] for k in rows.tolist()],
+                np.flatnonzero(np.isin(self.part_row, rows)),
+            )
+        return found
 
     @classmethod
     def of(
@@ -134,9 +152,7 @@ class SelfDistances:
             [placed[j].homogeneous for j in parts.joints], dtype=float
         ).reshape(-1, 4, 4)
         # only the joints below a planned one move: the others' parts are placed once
-        self._moved = _moved_rows(kin, self._slots, parts.joints)
-        self._moved_ids = [parts.joints[k] for k in self._moved.tolist()]
-        self._moved_parts = np.flatnonzero(np.isin(parts.part_row, self._moved))
+        self._moved, self._moved_ids, self._moved_parts = parts.moved(kin, self._slots)
         self._centres, self._halves = _placed_boxes(self._frames, parts, parts.part_row)
 
     def bounds(self, q: FloatArray) -> FloatArray:

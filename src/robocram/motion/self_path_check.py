@@ -126,8 +126,8 @@ class SelfPathCheck:
             step = measure(k)
             if rate[k] > 0.0:
                 best = min(best, step / rate[k])
-        with np.errstate(divide="ignore"):
-            ratio = np.where(rate > 0.0, np.maximum(lower, MIN_STEP) / rate, np.inf)
+        ratio = np.full(len(rate), np.inf)
+        np.divide(np.maximum(lower, MIN_STEP), rate, out=ratio, where=rate > 0.0)
         for k in np.argsort(ratio, kind="stable").tolist():
             if ratio[k] >= best:
                 break
