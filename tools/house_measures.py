@@ -1,0 +1,166 @@
+"""The measures issue 39 ("a house to live in") asks to report before and after, read from
+the source with Python's own parser, so that each step of the redesign can show its
+effect in the same terms.
+
+- ``perform`` definitions (goal 1);
+- functions with a ``robot: str`` parameter, and those also taking ``world`` (goal 0
+  outside the public edges: scenes, the command line, ``simulated_robot``);
+- public methods of ``World`` and ``WorldCore`` (goal <= 25 on the facade);
+- caches kept by hand: functions decorated with ``functools`` caches, ``derived(...)``
+  stores, and module-level dictionaries written inside functions (goal 0);
+- bare built-in raises (``ValueError``, ``RuntimeError``, ``TypeError``, ``KeyError``)
+  in library code (goal <= 10).
+
+Usage: python tools/house_measures.py [--list]   (--list names every hit)
+"""
+
+from __future__ import annotations
+
+import ast
+import sys
+from collections.abc import Iterator
+from pathlib import Path
+
+SRC = Path(__file__).resolve().parents[1] / "src" / "robocram"
+EDGES = ("scenes/", "cli.py", "_commands.py", "projection/simulated_robot.py", "demo.py")
+BARE = {"ValueError", "RuntimeError", "TypeError", "KeyError"}
+CACHES = {"cache", "lru_cache", "cached_property"}
+
+
+def _modules() -> Iterator[tuple[str, ast.Module]]:
+    for path in sorted(SRC.rglob("*.py")):
+        yield str(path.relative_to(SRC)), ast.parse(path.read_text(encoding="utf-8"))
+
+
+def _functions(tree: ast.AST) -> Iterator[ast.FunctionDef | ast.AsyncFunctionDef]:
+    for node in ast.walk(tree):
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            yield node
+
+
+def _takes_robot_name(fn: ast.FunctionDef | ast.AsyncFunctionDef) -> tuple[bool, bool]:
+    args = [*fn.args.posonlyargs, *fn.args.args, *fn.args.kwonlyargs]
+    names = {a.arg for a in args}
+    robot = any(
+        a.arg == "robot" and a.annotation is not None and ast.unparse(a.annotation) == "str"
+        for a in args
+    )
+    return robot, robot and "world" in names
+
+
+def _decorator_name(node: ast.expr) -> str:
+    target = node.func if isinstance(node, ast.Call) else node
+    return target.attr if isinstance(target, ast.Attribute) else getattr(target, "id", "")
+
+
+def _module_dicts(tree: ast.Module) -> set[str]:
+    names = set()
+    for node in tree.body:
+        value = node.value if isinstance(node, (ast.Assign, ast.AnnAssign)) else None
+        if isinstance(value, (ast.Dict, ast.Call)) and (
+            isinstance(value, ast.Dict) or _decorator_name(value) in ("dict", "defaultdict")
+        ):
+            names |= _bound(node)
+    return names
+
+
+def _bound(node: ast.stmt) -> set[str]:
+    """The plain names an assignment binds."""
+    if isinstance(node, ast.Assign):
+        targets = node.targets
+    elif isinstance(node, ast.AnnAssign):
+        targets = [node.target]
+    else:
+        return set()
+    return {t.id for t in targets if isinstance(t, ast.Name)}
+
+
+def _cache_objects(tree: ast.Module) -> set[str]:
+    """Module-level names bound to a cache object (a class named ``*Cache``, ``*Memo``,
+    a weak dictionary)."""
+    names = set()
+    for node in tree.body:
+        value = node.value if isinstance(node, (ast.Assign, ast.AnnAssign)) else None
+        if isinstance(value, ast.Call) and any(
+            word in _decorator_name(value) for word in ("Cache", "Memo", "Dictionary")
+        ):
+            names |= _bound(node)
+    return names
+
+
+def _written_in_functions(tree: ast.Module, names: set[str]) -> set[str]:
+    written = set()
+    for fn in _functions(tree):
+        for node in ast.walk(fn):
+            if (
+                isinstance(node, ast.Subscript)
+                and isinstance(node.ctx, ast.Store)
+                and isinstance(node.value, ast.Name)
+                and node.value.id in names
+            ):
+                written.add(node.value.id)
+            if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute):
+                base = node.func.value
+                if isinstance(base, ast.Name) and base.id in names and node.func.attr in (
+                    "setdefault", "update", "__setitem__",
+                ):  # fmt: skip
+                    written.add(base.id)
+    return written
+
+
+def measure() -> dict[str, list[str]]:
+    """Per measure, the places that count (``file:line name``)."""
+    found: dict[str, list[str]] = {
+        "perform definitions": [],
+        "robot: str parameters": [],
+        "robot: str with world": [],
+        "World public methods": [],
+        "functools caches": [],
+        "derived stores": [],
+        "module-level memos": [],
+        "bare built-in raises": [],
+    }
+    for name, tree in _modules():
+        edge = name.startswith(EDGES[0]) or name.endswith(EDGES[1:])
+        for fn in _functions(tree):
+            where = f"{name}:{fn.lineno} {fn.name}"
+            if fn.name == "perform":
+                found["perform definitions"].append(where)
+            robot, with_world = _takes_robot_name(fn)
+            if robot and not edge:
+                found["robot: str parameters"].append(where)
+            if with_world and not edge:
+                found["robot: str with world"].append(where)
+            if any(_decorator_name(d) in CACHES for d in fn.decorator_list):
+                found["functools caches"].append(where)
+        for node in ast.walk(tree):
+            if isinstance(node, ast.ClassDef) and node.name in ("World", "WorldCore"):
+                for item in node.body:
+                    if isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)) and (
+                        not item.name.startswith("_")
+                    ):
+                        found["World public methods"].append(f"{node.name}.{item.name}")
+            if isinstance(node, ast.Call) and _decorator_name(node) == "derived":
+                found["derived stores"].append(f"{name}:{node.lineno}")
+            if (
+                isinstance(node, ast.Raise)
+                and node.exc is not None
+                and (_decorator_name(node.exc) in BARE)
+            ):
+                found["bare built-in raises"].append(f"{name}:{node.lineno}")
+        memos = _written_in_functions(tree, _module_dicts(tree)) | _cache_objects(tree)
+        for memo in sorted(memos):
+            found["module-level memos"].append(f"{name} {memo}")
+    return found
+
+
+def main(argv: list[str]) -> None:
+    for label, places in measure().items():
+        print(f"{label:28s} {len(places):5d}")
+        if "--list" in argv:
+            for place in places:
+                print(f"    {place}")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])
