@@ -10,7 +10,12 @@ from typing import Any
 
 from robocram.designators import ObjectDesignator, a, an
 from robocram.execution import perform
-from robocram.execution.failures import ManipulationPathBlocked, NavigationLowLevelFailure
+from robocram.execution.failures import (
+    ManipulationPathBlocked,
+    NavigationLowLevelFailure,
+    PtuPathBlocked,
+    TorsoPathBlocked,
+)
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.robot_facts import (
     base_frame,
@@ -23,6 +28,10 @@ from robocram.tf import Pose, PoseStamped, transform_pose
 
 # [m] (forward, left) base moves, in its frame where parking first failed, before each
 # further try: back away from what the hand just worked at, then sideways from a wall
+# the torso's heights, as fractions of its travel, from which a blocked look from the top is
+# tried again, highest first (an HSR's head turned down meets its parked hand with the
+# lift high, and sees nothing in a drawer with it low)
+LOOK_HEIGHTS = (0.5, 0.25, 0.0)
 PARKING_BACKOFFS = ((-0.15, 0.0), (-0.45, 0.0), (0.0, 0.2), (0.0, -0.2), (-0.2, 0.2), (-0.2, -0.2))
 
 
@@ -92,6 +101,37 @@ def move_torso(joint_angle: float | str) -> Any:
 def look(target: object) -> Any:
     """Point the camera at ``target``."""
     return perform(a.motion(type="looking", target=target))
+
+
+def look_from_above(target: object, looked: bool = False) -> None:
+    """Raise the torso to its top and look at ``target``, for a view from above (into a
+    drawer, down on a table). Where the robot's own arm is in the way (an HSR's lift raises
+    its parked hand twice as fast as its head, into the head turned down), a raise that is
+    blocked moves nothing and the robot looks from where it is (not again if it
+    ``looked`` already), and after a look that is blocked the torso goes down in steps
+    (:data:`LOOK_HEIGHTS` of its travel) until the head can look from there."""
+    robot = current_robot()
+    upper = torso_limit(robot, "upper")
+    raised = upper is not None
+    if upper is not None:
+        try:
+            move_torso(upper)
+        except TorsoPathBlocked:
+            raised = False
+    if not raised and looked:
+        return
+    lower = torso_limit(robot, "lower")
+    heights = [] if upper is None or lower is None or not raised else LOOK_HEIGHTS
+    for fraction in (None, *heights):
+        if fraction is not None:
+            assert upper is not None and lower is not None
+            move_torso(lower + fraction * (upper - lower))
+        try:
+            look(target)
+            return
+        except PtuPathBlocked:
+            if fraction == 0.0 or not heights:
+                raise
 
 
 def detect(object: ObjectDesignator | str) -> ObjectDesignator:  # noqa: A002 - CRAM's key

@@ -13,10 +13,8 @@ from dataclasses import dataclass
 
 from robocram.designators import ObjectDesignator, a, an
 from robocram.execution import perform
-from robocram.execution.failures import PtuPathBlocked, TorsoPathBlocked
-from robocram.plans.basic_actions import park_arms
+from robocram.plans.basic_actions import look_from_above, park_arms
 from robocram.plans.pick_object import Held, pick_up_object
-from robocram.plans.robot_facts import current_robot, torso_limit
 from robocram.tf import PoseStamped
 
 
@@ -33,34 +31,11 @@ class PickResult:
     held: Held
 
 
-def _look_from_above(robot: str, look_target: PoseStamped) -> None:
-    """Raise the torso and look again, for a view from above. Where the robot's own arm
-    is in the way (an HSR's lift raises its parked hand twice as fast as its head, into
-    the head turned down), keep the first look: a raise that is blocked moves nothing, and
-    after a look that is blocked the torso goes down again and the head looks from there."""
-    upper = torso_limit(robot, "upper")
-    if upper is None:
-        return
-    try:
-        perform(a.motion(type="moving-torso", joint_angle=upper))
-    except TorsoPathBlocked:
-        return
-    try:
-        perform(a.motion(type="looking", target=a.location(pose=look_target)))
-    except PtuPathBlocked:
-        lower = torso_limit(robot, "lower")
-        if lower is None:
-            raise
-        perform(a.motion(type="moving-torso", joint_angle=lower))
-        perform(a.motion(type="looking", target=a.location(pose=look_target)))
-
-
 def pick_up(look_target: PoseStamped, object_type: str = "mug") -> PickResult:
     """Look, raise the torso, detect an ``object_type`` and pick it up."""
-    robot = current_robot()
     park_arms()
     perform(a.motion(type="looking", target=a.location(pose=look_target)))
-    _look_from_above(robot, look_target)
+    look_from_above(a.location(pose=look_target), looked=True)
     seen = perform(a.motion(type="detecting", object=an.object(type=object_type)))
     held = pick_up_object(seen)
     return PickResult(

@@ -26,12 +26,12 @@ from robocram.execution.failures import PlanFailure
 from robocram.knowledge.scene_predicates import SUPPORTING_SURFACE, USUAL_LOCATION
 from robocram.logic import current_kb
 from robocram.plans.attempt_log import AttemptLog
-from robocram.plans.basic_actions import detect, look, move_torso, park_arms
+from robocram.plans.basic_actions import detect, look_from_above, park_arms
 from robocram.plans.container_access import OpenedContainer, is_container, open_from_front
 from robocram.plans.culprits import blamed, culprit_clause
 from robocram.plans.environment_links import environment_link_pose
 from robocram.plans.errors import SearchExhausted
-from robocram.plans.robot_facts import current_robot, has_torso
+from robocram.plans.robot_facts import current_robot
 from robocram.tf import PoseStamped
 
 POSES_PER_PLACE = 2  # CRAM retries a search location a couple of times
@@ -101,9 +101,7 @@ def _look_into(
     try:
         log.opened.append(open_from_front(place.link, log.attempts))
         inside = _pulled_out_middle(closed, place_point(place))
-        if has_torso(current_robot()):
-            move_torso("upper")  # see over the drawer's front, into it
-        look(inside)
+        look_from_above(inside)  # over the drawer's front, into it
         return detect(wanted), inside
     except PlanFailure as failure:
         log.failures.append(failure)
