@@ -3,13 +3,15 @@
 ``with simulated_robot(world, "pr2"):`` starts the projected robot's process modules
 (base, torso, head, perception, grippers, arms; flight and range sensing for flying
 robots) and PERFORM sends motions to them. ``with recorded_robot("pr2", objects=...):``
-runs the same plans without physics, only logging commands.
+runs the same plans without physics, only logging commands. ``prospect(world, "pr2",
+plan)`` projects a plan and puts the world back: what it would do, to choose before doing.
 """
 
 from robocram.projection.errors import ProjectionError
 from robocram.projection.neck import looking_orientation
 from robocram.projection.perception import PerceivedObject
 from robocram.projection.projected_robot import ProjectedRobot
+from robocram.projection.prospection import Prospect, prospect
 from robocram.projection.recording import (
     RecordedState,
     RecordingRun,
@@ -24,6 +26,7 @@ __all__ = [
     "LiveTransformTree",
     "PerceivedObject",
     "ProjectedRobot",
+    "Prospect",
     "ProjectionError",
     "RecordedState",
     "RecordingRun",
@@ -31,6 +34,7 @@ __all__ = [
     "WorldFrames",
     "looking_orientation",
     "projection_environment",
+    "prospect",
     "recorded_robot",
     "recording_environment",
     "simulated_robot",
