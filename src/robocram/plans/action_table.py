@@ -27,7 +27,14 @@ from robocram.execution import perform as perform_designator
 from robocram.execution import perform_plan, register_plan
 from robocram.logic import KnowledgeBase, Term
 from robocram.plans.action_type import ActionType
-from robocram.plans.basic_actions import detect, look, move_torso, navigate, park_arms
+from robocram.plans.basic_actions import (
+    detect,
+    look,
+    move_torso,
+    navigate,
+    park_arms,
+    set_gripper,
+)
 from robocram.plans.containers import close_container, open_container
 from robocram.plans.deliver import deliver
 from robocram.plans.fetch import fetch
@@ -84,6 +91,7 @@ ACTIONS = ActionTable.of(
     ActionType("searching", ("object",), ("poses_per_place",), search),
     ActionType("parking-arms", (), ("arm",), park_arms),
     ActionType("moving-torso", ("joint_angle",), (), move_torso),
+    ActionType("setting-gripper", ("gripper", "motion"), (), set_gripper),
     ActionType("opening", ("object",), ("arm", "distance", "angle"), open_container),
     ActionType("closing", ("object",), ("arm",), close_container),
     ActionType("picking-up", ("object",), ("arm", "grasp"), pick_up_object),

@@ -98,6 +98,24 @@ def move_torso(joint_angle: float | str) -> Any:
     return perform(a.motion(type="moving-torso", joint_angle=joint_angle))
 
 
+GRIPPER_MOTIONS = {"open": "opening", "close": "closing"}  # CRAM's :open and :close
+
+
+def set_gripper(gripper: str, motion: str | float) -> Any:
+    """Open or close ``gripper`` (an arm's name or side), or move it to a joint value [m |
+    rad]: CRAM's ``setting-gripper`` action. Closing stops on what is between the fingers
+    but does not hold it (``gripping`` does)."""
+    if isinstance(motion, str):
+        kind = GRIPPER_MOTIONS.get(motion)
+        if kind is None:
+            raise PlanSetupError(
+                f"setting-gripper motion {motion!r} is neither of {sorted(GRIPPER_MOTIONS)} "
+                "nor a joint value [m | rad]"
+            )
+        return perform(a.motion(type=kind, gripper=gripper))
+    return perform(a.motion(type="moving-gripper-joint", gripper=gripper, joint_angle=motion))
+
+
 def look(target: object) -> Any:
     """Point the camera at ``target``."""
     return perform(a.motion(type="looking", target=target))
