@@ -41,3 +41,16 @@ def test_a_motion_that_is_neither_names_the_valid_ones(pr2: TabletopScene) -> No
     with simulated_robot(pr2.world, "pr2"), pytest.raises(DesignatorPropertyError) as missing:
         perform(an.action(type="setting-gripper", gripper="right"))
     assert "motion" in str(missing.value)
+
+
+def test_a_misspelled_action_type_names_the_closest_and_every_known_one(
+    pr2: TabletopScene,
+) -> None:
+    from robocram.execution.failures import DesignatorReferenceFailure
+    from robocram.plans import ACTIONS
+
+    with simulated_robot(pr2.world, "pr2"), pytest.raises(DesignatorReferenceFailure) as err:
+        perform(an.action(type="transportng", object="mug"))
+    message = str(err.value)
+    assert message.startswith("no action type 'transportng'; did you mean 'transporting'? ")
+    assert all(name in message for name in ACTIONS)  # not "none", as it was

@@ -17,14 +17,17 @@ table passed to :func:`perform` and :func:`install_actions` (docs/transport.md).
 
 from __future__ import annotations
 
+import difflib
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Any
 
 from robocram.designators import ActionDesignator, Designator, install_designator_predicates
+from robocram.designators.errors import GroundingError
 from robocram.execution import perform as perform_designator
 from robocram.execution import perform_plan, register_plan
+from robocram.execution.failures import DesignatorReferenceFailure
 from robocram.logic import KnowledgeBase, Term
 from robocram.plans.action_type import ActionType
 from robocram.plans.basic_actions import (
@@ -119,7 +122,32 @@ def perform(designator: Designator[object], actions: ActionTable = ACTIONS) -> A
     if isinstance(designator, ActionDesignator) and designator.type in actions:
         action = actions[designator.type]
         return perform_plan(designator, lambda: action.perform(designator))
-    return perform_designator(designator)
+    try:
+        return perform_designator(designator)
+    except DesignatorReferenceFailure as failure:
+        unknown = _unknown_action(designator, actions, failure)
+        if unknown is None:
+            raise
+        raise unknown from failure
+
+
+def _unknown_action(
+    designator: Designator[object], actions: ActionTable, failure: DesignatorReferenceFailure
+) -> DesignatorReferenceFailure | None:
+    """For an action whose type neither the table nor the KB's rules know: the failure
+    naming every known type and the closest (a misspelling), else None."""
+    cause = failure.__cause__
+    if not isinstance(designator, ActionDesignator) or not isinstance(cause, GroundingError):
+        return None
+    known = sorted({*actions, *cause.grounded_types})
+    if designator.type in known:
+        return None
+    close = difflib.get_close_matches(str(designator.type), known, n=1)
+    hint = f"did you mean {close[0]!r}? " if close else ""
+    return DesignatorReferenceFailure(
+        f"no action type {designator.type!r}; {hint}known types: {', '.join(known)}",
+        designator=designator,
+    )
 
 
 def perform_action(designator: Designator[object], actions: ActionTable = ACTIONS) -> Any:
