@@ -74,3 +74,31 @@ def test_the_prolog_grounding_rule_is_written_from_the_table() -> None:
         assert perform_in_kb(an.action(type="counting", object="x", times=2), kb=kb) == "xx"
         with pytest.raises(DesignatorPropertyError, match="no key 'size'"):
             perform_in_kb(an.action(type="counting", object="x", size=2), kb=kb)
+
+
+def test_there_is_one_perform_and_each_type_names_its_result() -> None:
+    from robocram import execution, plans
+    from robocram.plans.transport import TransportResult
+
+    assert plans.perform is execution.perform
+    assert ACTIONS["transporting"].result is TransportResult
+    assert ACTIONS["picking-up"].result is plans.Held
+
+
+def test_a_type_the_knowledge_base_grounds_by_its_own_rule_is_performed_by_that_rule() -> None:
+    """As the turtle's ``navigating``: the KB's first grounding decides (CRAM's way)."""
+    from robocram.designators import install_designator_predicates
+
+    kb = install_designator_predicates(KnowledgeBase())
+    kb.consult(
+        "action_grounding(D, own_navigation(D)) :-\n"
+        "    action_desig(D), desig_prop(D, type, navigating).",
+        group="own",
+    )
+    ran: list[object] = []
+    from robocram.execution import register_plan
+
+    register_plan(kb, "own_navigation", lambda d: ran.append(d) or "own")
+    with top_level():
+        assert perform_in_kb(an.action(type="navigating", target=(1, 2)), kb=kb) == "own"
+    assert len(ran) == 1

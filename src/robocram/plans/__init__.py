@@ -1,14 +1,14 @@
 """Robot-independent plans: they ask the knowledge base about the robot and PERFORM designators."""
 
+from robocram.execution import perform  # the one PERFORM; importing plans gives it ACTIONS
+from robocram.execution.action_table import ActionTable
+from robocram.execution.action_type import ActionType
 from robocram.plans.action_table import (
     ACTION_TYPES,
     ACTIONS,
-    ActionTable,
     install_actions,
-    perform,
     perform_action,
 )
-from robocram.plans.action_type import ActionType
 from robocram.plans.attempt_log import Attempt, AttemptLog
 from robocram.plans.containers import Container, close_container, container, open_container
 from robocram.plans.deliver import deliver

@@ -1,35 +1,31 @@
 """The action table: each action type robocram's plans understand, and its plan function.
 
 The table is the one place an action type is described (:class:`ActionType`: required
-and optional keys, plan). From it come:
+and optional keys, plan, result). From it come:
 
-- :func:`perform`: PERFORM with the table. An action of the table runs its plan by a plain
-  Python call, ``ACTIONS["transporting"].plan`` is :func:`~robocram.plans.transport.transport`,
-  so a reader and an IDE follow ``perform(an.action(type="transporting", ...))`` to the
-  plan without reading Prolog; anything else goes to :func:`robocram.execution.perform`.
+- PERFORM's default table (:func:`robocram.execution.perform`, also ``robocram.plans.perform``):
+  once this module is imported, an action of the table runs its plan by a plain Python
+  call, ``ACTIONS["transporting"].plan`` is :func:`~robocram.plans.transport.transport`, so
+  a reader and an IDE follow ``perform(an.action(type="transporting", ...))`` to the plan
+  without reading Prolog;
 - :func:`install_actions`: the ``action_grounding/2`` rule and ``robocram_action_type/1``
-  facts written from the table, for users who reason about actions in Prolog or perform
-  them with :func:`robocram.execution.perform`.
+  facts written from the table, for users who reason about actions in Prolog.
 
 A user adds an action type with one registration, ``ACTIONS.adding(ActionType(...))``, a new
-table passed to :func:`perform` and :func:`install_actions` (docs/transport.md).
+table passed to ``perform(d, table)`` and :func:`install_actions` (docs/transport.md).
 """
 
 from __future__ import annotations
 
-import difflib
-from collections.abc import Iterator, Mapping
-from dataclasses import dataclass
-from types import MappingProxyType
+from collections.abc import Mapping
 from typing import Any
 
-from robocram.designators import ActionDesignator, Designator, install_designator_predicates
-from robocram.designators.errors import GroundingError
-from robocram.execution import perform as perform_designator
-from robocram.execution import perform_plan, register_plan
-from robocram.execution.failures import DesignatorReferenceFailure
-from robocram.logic import KnowledgeBase, Term
-from robocram.plans.action_type import ActionType
+from robocram.designators import Designator, install_designator_predicates
+from robocram.execution import register_plan
+from robocram.execution.action_table import ActionTable, use_default_actions
+from robocram.execution.action_type import ActionType
+from robocram.execution.perform import TABLE_PLAN
+from robocram.logic import KnowledgeBase
 from robocram.plans.basic_actions import (
     detect,
     look,
@@ -48,43 +44,9 @@ from robocram.plans.transport import transport
 
 ACTIONS_GROUP = "robocram_actions"
 GROUNDING_RULE = (
-    "action_grounding(D, robocram_action(D)) :-\n"
+    f"action_grounding(D, {TABLE_PLAN}(D)) :-\n"
     "    action_desig(D), desig_prop(D, type, T), robocram_action_type(T).\n"
 )
-
-
-@dataclass(frozen=True)
-class ActionTable:
-    """Action types by their ``type``; immutable, extended by :meth:`adding`."""
-
-    types: Mapping[str, ActionType]
-
-    @classmethod
-    def of(cls, *types: ActionType) -> ActionTable:
-        """A table of ``types``; a type named twice is refused."""
-        return cls(MappingProxyType({})).adding(*types)
-
-    def adding(self, *types: ActionType) -> ActionTable:
-        """This table with ``types`` added (the one registration of a new action type)."""
-        found = dict(self.types)
-        for t in types:
-            if t.type in found:
-                raise ValueError(f"action type {t.type!r} is already in the table")
-            found[t.type] = t
-        return ActionTable(MappingProxyType(found))
-
-    def __getitem__(self, type_: str) -> ActionType:
-        return self.types[type_]
-
-    def __contains__(self, type_: object) -> bool:
-        return type_ in self.types
-
-    def __iter__(self) -> Iterator[str]:
-        return iter(self.types)
-
-    def facts(self) -> list[Term]:
-        """``robocram_action_type(T)`` for every type of the table."""
-        return [Term("robocram_action_type", (t,)) for t in self.types]
 
 
 ACTIONS = ActionTable.of(
@@ -111,53 +73,17 @@ ACTIONS = ActionTable.of(
     ),
 )
 ACTION_TYPES: Mapping[str, ActionType] = ACTIONS.types
-
-
-def perform(designator: Designator[object], actions: ActionTable = ACTIONS) -> Any:
-    """PERFORM ``designator``; an action of ``actions`` runs its plan by a plain call.
-
-    Motions, and actions of types outside the table, go to
-    :func:`robocram.execution.perform` (grounded in the knowledge base).
-    """
-    if isinstance(designator, ActionDesignator) and designator.type in actions:
-        action = actions[designator.type]
-        return perform_plan(designator, lambda: action.perform(designator))
-    try:
-        return perform_designator(designator)
-    except DesignatorReferenceFailure as failure:
-        unknown = _unknown_action(designator, actions, failure)
-        if unknown is None:
-            raise
-        raise unknown from failure
-
-
-def _unknown_action(
-    designator: Designator[object], actions: ActionTable, failure: DesignatorReferenceFailure
-) -> DesignatorReferenceFailure | None:
-    """For an action whose type neither the table nor the KB's rules know: the failure
-    naming every known type and the closest (a misspelling), else None."""
-    cause = failure.__cause__
-    if not isinstance(designator, ActionDesignator) or not isinstance(cause, GroundingError):
-        return None
-    known = sorted({*actions, *cause.grounded_types})
-    if designator.type in known:
-        return None
-    close = difflib.get_close_matches(str(designator.type), known, n=1)
-    hint = f"did you mean {close[0]!r}? " if close else ""
-    return DesignatorReferenceFailure(
-        f"no action type {designator.type!r}; {hint}known types: {', '.join(known)}",
-        designator=designator,
-    )
+use_default_actions(ACTIONS)  # PERFORM runs these by their plans wherever plans are imported
 
 
 def perform_action(designator: Designator[object], actions: ActionTable = ACTIONS) -> Any:
     """Run the plan of ``designator``'s action type with its checked properties."""
-    return actions[str(designator.get("type"))].perform(designator)
+    return actions[str(designator.get("type"))].run(designator)
 
 
 def install_actions(kb: KnowledgeBase, actions: ActionTable = ACTIONS) -> KnowledgeBase:
     """Ground the action types of ``actions`` in ``kb`` to their plans, in Prolog."""
     install_designator_predicates(kb)
     kb.add_fact_group(ACTIONS_GROUP, [*actions.facts(), GROUNDING_RULE])
-    register_plan(kb, "robocram_action", lambda d: perform_action(d, actions))
+    register_plan(kb, TABLE_PLAN, lambda d: perform_action(d, actions))
     return kb

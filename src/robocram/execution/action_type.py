@@ -1,12 +1,15 @@
-"""One action type of the action table: its keys and the plan that performs it.
+"""One action type of an action table: its keys, the plan that performs it, its result.
 
 An action designator's properties are checked before its plan runs: a key the type does
 not know, or a required key left out, raises :class:`DesignatorPropertyError` naming the
-key and every valid one, so a typo never silently falls back to a default.
+key and every valid one, so a typo never silently falls back to a default. What PERFORM
+returns for the type is what its plan returns: :attr:`ActionType.result` names that class
+(read from the plan's annotation), so a reader of the table knows what to expect.
 """
 
 from __future__ import annotations
 
+import typing
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
@@ -49,6 +52,16 @@ class ActionType:
                 )
         return given
 
-    def perform(self, designator: Designator[object]) -> Any:
+    @property
+    def result(self) -> object:
+        """The class (or type expression) the plan returns, from its annotation; ``Any``
+        when the plan does not say."""
+        try:
+            hints = typing.get_type_hints(self.plan)
+        except (NameError, TypeError):  # an annotation that does not resolve here
+            return Any
+        return hints.get("return", Any)
+
+    def run(self, designator: Designator[object]) -> Any:
         """Check ``designator`` and run the plan with its properties."""
         return self.plan(**self.arguments(designator))
