@@ -6,7 +6,9 @@ the search opens and the transport closes again), prints the task tree and write
 ``out/demo_before.png`` and ``out/demo_after.png``. The run is traced to a fresh
 ``out/demo.db`` (``robocram replay out/demo.db`` shows it), and ``out/demo.gif`` is rendered
 from that trace: the stored trajectories, seen from the pictures' viewpoint. The tabletop
-pick-up demo lives on as ``examples/pick_mug.py``.
+pick-up demo lives on as ``examples/pick_mug.py``. Another robot's files go to
+``out/<robot>/``; a transport that fails is one line after the tree, and the demo goes on
+(the exit code is 1).
 """
 
 from __future__ import annotations
@@ -14,9 +16,11 @@ from __future__ import annotations
 import argparse
 import time
 from collections.abc import Sequence
+from dataclasses import dataclass
 from pathlib import Path
 
 from robocram.designators import a, an
+from robocram.execution import PlanFailure
 from robocram.plans import perform
 from robocram.projection import looking_orientation, simulated_robot
 from robocram.scenes import kitchen_scene
@@ -28,6 +32,7 @@ VIEW_FROM = (2.4, -2.2, 3.3)  # [m] in map, where the pictures are taken from
 VIEW_AT = (-0.7, 0.3, 0.4)  # [m] in map, what they look at
 TABLE = ("kitchen", "table_top")
 ITEMS = (("mug", "mug-1"), ("bowl", "bowl-1"))  # (type searched for, item placed for)
+MAX_REASON = 200  # characters of a failure's message on its one line
 
 
 CAMERA = Pose(VIEW_FROM, looking_orientation(VIEW_FROM, VIEW_AT))
@@ -45,30 +50,58 @@ def fresh_database(path: Path) -> Path:
     return path
 
 
+@dataclass(frozen=True)
+class DemoRun:
+    """What the demo wrote, and one line per transport that failed."""
+
+    written: list[Path]
+    failures: list[str]
+
+
+def output_folder(out_dir: Path, robot: str, name: str) -> Path:
+    """Where a robot's demo files go: ``out_dir`` for the PR2 (as the README says),
+    ``out_dir/<name>`` for any other, so two robots' runs never mix."""
+    return out_dir if robot == "pr2" else out_dir / name
+
+
 def main(out_dir: Path = Path("out"), robot: str = "pr2", verbose: bool = False) -> list[Path]:
     """Run both transports, print the task tree, write and return the pictures and the GIF.
 
     ``robot`` is a built-in robot's name or a description file (``my_robot.py``); the tree
     folds the tries the plan recovered from unless ``verbose``.
     """
+    return run_demo(out_dir, robot, verbose).written
+
+
+def run_demo(out_dir: Path = Path("out"), robot: str = "pr2", verbose: bool = False) -> DemoRun:
+    """:func:`main`, keeping going past a failed transport: its reason is printed on one
+    line after the task tree, and the pictures and the GIF show what was done."""
     start = time.perf_counter()
     scene = kitchen_scene(robot)
     world = scene.world
+    out_dir = output_folder(out_dir, robot, world.robot(scene.robot).description.name)
     out_dir.mkdir(parents=True, exist_ok=True)
     pictures = [picture(world, out_dir / "demo_before.png")]
     db_path = fresh_database(out_dir / "demo.db")
+    failures: list[str] = []
     with (
         trace_to(db_path, world=world) as tracer,
         simulated_robot(world, scene.robot, name="kitchen-transport") as run,
     ):
         for kind, item in ITEMS:
             target = a.location(on=TABLE, for_=item)
-            perform(an.action(type="transporting", object=kind, target=target))
+            try:
+                perform(an.action(type="transporting", object=kind, target=target))
+            except PlanFailure as failure:
+                failures.append(f"the {kind} was not transported: {one_line(failure)}")
     print(run.tree.render(verbose=verbose))
+    for line in failures:
+        print(line)
     for _, item in ITEMS:
         x, y, z = world.pose(item).position
         links = sorted({p.link_b for p in world.contact_points(item, "kitchen")})
-        print(f"{item} rests on {', '.join(links)} at ({x:.2f}, {y:.2f}, {z:.2f}) m in map")
+        where = f"rests on {', '.join(links)} at" if links else "is at"
+        print(f"{item} {where} ({x:.2f}, {y:.2f}, {z:.2f}) m in map")
     pictures.append(picture(world, out_dir / "demo_after.png"))
     world.close()
     gif = animate_run(db_path, tracer.runs[-1], out_dir / "demo.gif", CAMERA)
@@ -78,7 +111,14 @@ def main(out_dir: Path = Path("out"), robot: str = "pr2", verbose: bool = False)
     )
     pictures.append(gif.path)
     print(f"wrote {', '.join(str(p) for p in pictures)} in {time.perf_counter() - start:.2f} s")
-    return pictures
+    return DemoRun(pictures, failures)
+
+
+def one_line(failure: PlanFailure) -> str:
+    """The failure's type and the start of its message, on one line (the tree has more)."""
+    text = " ".join(str(failure).split())
+    cut = text if len(text) <= MAX_REASON else text[: MAX_REASON - 3].rstrip() + "..."
+    return f"{type(failure).__name__}: {cut}"
 
 
 def command_line(argv: Sequence[str] | None = None) -> list[Path]:
@@ -94,7 +134,10 @@ def command_line(argv: Sequence[str] | None = None) -> list[Path]:
         "--verbose", action="store_true", help="print every task and full failure texts"
     )
     args = parser.parse_args(argv)
-    return main(args.out, args.robot, args.verbose)
+    done = run_demo(args.out, args.robot, args.verbose)
+    if done.failures:
+        raise SystemExit(1)
+    return done.written
 
 
 if __name__ == "__main__":

@@ -39,3 +39,18 @@ def test_example_script_runs(
     monkeypatch.setattr(sys, "argv", [str(example), "hsrb"])
     runpy.run_path(str(example), run_name="__main__")
     assert "hsrb: arm arm holds mug-1" in capsys.readouterr().out
+
+
+def test_another_robots_files_go_to_its_own_folder(tmp_path: Path) -> None:
+    assert demo.output_folder(tmp_path, "pr2", "pr2") == tmp_path  # as the README says
+    drafted = Path("examples/robots/tiago_pro.py")
+    assert demo.output_folder(tmp_path, str(drafted), "tiago_pro") == tmp_path / "tiago_pro"
+
+
+def test_a_failed_transport_is_one_line_naming_the_failure() -> None:
+    from robocram.plans import FetchExhausted
+
+    failure = FetchExhausted("no stand found for mug-1:\n LocationNotFound: " + "x" * 400)
+    line = demo.one_line(failure)
+    assert "\n" not in line and line.startswith("FetchExhausted: no stand found for mug-1: ")
+    assert len(line) <= len("FetchExhausted: ") + demo.MAX_REASON and line.endswith("...")
