@@ -8,6 +8,7 @@ See docs/motion.md.
 
 from robocram.motion.arm_motion import ArmMotion, MotionSettings, plan_arm_motion, plan_tool_line
 from robocram.motion.base_path import BasePath, plan_base_path
+from robocram.motion.carried_joint import CarriedJoint
 from robocram.motion.collision_scene import CollisionScene
 from robocram.motion.contact_allowance import ContactAllowance
 from robocram.motion.errors import MotionError
@@ -21,6 +22,7 @@ __all__ = [
     "BASE_JOINTS",
     "BasePath",
     "CollisionScene",
+    "CarriedJoint",
     "ContactAllowance",
     "JointLimits",
     "JointTrajectory",

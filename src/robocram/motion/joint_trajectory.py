@@ -21,6 +21,7 @@ from typing import overload
 import numpy as np
 import numpy.typing as npt
 
+from robocram.motion.carried_joint import CarriedJoint
 from robocram.motion.contact_allowance import ContactAllowance
 
 FloatArray = npt.NDArray[np.float64]
@@ -140,7 +141,8 @@ class JointTrajectory:
     """Joint names and timed points; ``kind`` says which motion made it (``arm``, ``base``).
 
     ``allowed_contacts`` are the contacts its motion was allowed beyond the description's
-    (the audit of a trace honours them up to their depth).
+    (the audit of a trace honours them up to their depth); ``carried`` the joints of other
+    objects it moves along (a drawer the hand pulls), which a replay moves with it.
     """
 
     robot: str
@@ -148,6 +150,7 @@ class JointTrajectory:
     points: tuple[TrajectoryPoint, ...] | PointTable
     kind: str = "arm"
     allowed_contacts: tuple[ContactAllowance, ...] = ()
+    carried: tuple[CarriedJoint, ...] = ()
 
     def __post_init__(self) -> None:
         width = len(self.joint_names)

@@ -11,7 +11,7 @@ from __future__ import annotations
 import threading
 from dataclasses import dataclass, field
 
-from robocram.motion import MotionSettings
+from robocram.motion import CarriedJoint, MotionSettings
 from robocram.projection.errors import ProjectionError, unknown_name
 from robocram.robots import ArmDescription, LoadedDescription
 from robocram.tf import Pose, PoseLike, PoseStamped
@@ -28,6 +28,10 @@ class ProjectedRobot:
     name: str
     ik_lock: threading.Lock = field(default_factory=threading.Lock, compare=False)
     motion: MotionSettings = field(default_factory=MotionSettings, compare=False)
+    carried: list[CarriedJoint] = field(default_factory=list, compare=False)
+    """Other objects' joints the robot's next trajectories move along (a drawer its hand
+    pulls: :mod:`~robocram.projection.articulation` sets them per step): reported with
+    each trajectory, so a replay moves them too."""
 
     @classmethod
     def of(

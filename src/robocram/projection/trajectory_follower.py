@@ -32,10 +32,20 @@ def follow(robot: ProjectedRobot, trajectory: JointTrajectory) -> None:
     except BaseException:
         part = replace(trajectory, points=points[:reached])
         _apply(robot, trajectory.joint_names, points[max(reached - 1, 0)])
-        report_executed(part)
+        report_executed(_with_carried(robot, part, trajectory.duration))
         raise
     _apply(robot, trajectory.joint_names, points[-1])
-    report_executed(trajectory)
+    report_executed(_with_carried(robot, trajectory, trajectory.duration))
+
+
+def _with_carried(robot: ProjectedRobot, done: JointTrajectory, whole: float) -> JointTrajectory:
+    """``done`` (all or the start of a trajectory lasting ``whole`` [s]) with the joints the
+    robot moves along, as far as it got."""
+    if not robot.carried:
+        return done
+    share = done.duration / whole if whole > 0.0 else 1.0
+    carried = tuple(replace(c, end=c.at(share)) for c in robot.carried)
+    return replace(done, carried=carried)
 
 
 def _apply(robot: ProjectedRobot, joints: tuple[str, ...], point: TrajectoryPoint) -> None:

@@ -122,6 +122,13 @@ class PenetrationProbe:
             boxes[rows] = np.array(read, dtype=float)
         return boxes
 
+    def others_moved(self, bodies: Collection[str]) -> None:
+        """Read again the bounds of ``bodies``' parts: they moved with the robot (a drawer
+        its hand pulls, :class:`~robocram.motion.CarriedJoint`)."""
+        rows = [i for i, part in enumerate(self.others) if part.body in bodies]
+        if rows:
+            self._other_boxes[rows] = self._boxes([self.others[i] for i in rows])
+
     def check(self, first: bool) -> Iterator[Penetration]:
         """Penetrations now: at the ``first`` configuration of all parts, later only of
         the parts that move and the pairs that move relative to each other."""

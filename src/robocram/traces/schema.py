@@ -28,10 +28,13 @@ from sqlalchemy import (
 from sqlalchemy.orm import DeclarativeBase, Mapped, mapped_column
 
 # 2: world state rows, task ids per run; 3: costmaps; 4: trajectories; 5: URDFs;
-# 6: trajectories' allowed contacts
-SCHEMA_VERSION = 6
+# 6: trajectories' allowed contacts; 7: the joints of other objects trajectories carry
+SCHEMA_VERSION = 7
 ADDED_TABLES = {4: ("trajectories",), 5: ("robot_models",)}  # version -> tables it added
-ADDED_COLUMNS = {6: (("trajectories", "allowed_contacts"),)}  # version -> (table, column)
+ADDED_COLUMNS = {  # version -> (table, column)
+    6: (("trajectories", "allowed_contacts"),),
+    7: (("trajectories", "carried"),),
+}
 
 
 def upgradable(version: int) -> bool:
@@ -164,6 +167,8 @@ class TrajectoryRow(Base):
     accelerations: Mapped[bytes] = mapped_column(LargeBinary)  # [rad/s^2 | m/s^2]
     # JSON [[robot side, other, depth [m]], ...]; NULL (files before version 6): none
     allowed_contacts: Mapped[str | None] = mapped_column(Text, nullable=True)
+    # JSON [[object, joint, start, end], ...]: joints it moved along; NULL (before 7): none
+    carried: Mapped[str | None] = mapped_column(Text, nullable=True)
 
     __table_args__ = (Index("ix_trajectories_run", "run_id", "sequence"),)
 

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from robocram.motion import ContactAllowance, MotionError, joint_limits
+from robocram.motion import CarriedJoint, ContactAllowance, MotionError, joint_limits
 from robocram.traces.audit_bounds import AuditBounds
 from robocram.traces.audit_findings import (
     AuditFinding,
@@ -174,8 +174,9 @@ class _RunAudit:
             )
         )  # fmt: skip
         self._sweep_configurations(
-            robot, trajectory.joint_names, place, samples, trajectory.allowed_contacts
-        )
+            robot, trajectory.joint_names, place, samples, trajectory.allowed_contacts,
+            trajectory.carried, trajectory.duration,
+        )  # fmt: skip
 
     def _held(self, robot: str) -> dict[str, str]:
         return {a.obj: a.link for a in self.world.all_attachments() if a.robot == robot}
@@ -187,12 +188,15 @@ class _RunAudit:
         place: FindingPlace,
         samples: Iterable[tuple[float, dict[str, float] | None]],
         allowances: tuple[ContactAllowance, ...] = (),
+        carried: tuple[CarriedJoint, ...] = (),
+        duration: float = 0.0,
     ) -> None:
         """Put the robot in each sample (None: as it is) and keep what penetrates.
 
         ``moved``: the joints moving; pairs of the robot's parts that they do not move
         relative to each other are not judged again; at the robot's first configuration in
-        the run every pair is judged).
+        the run every pair is judged). ``carried``: other objects' joints the motion moves
+        along, set at each sample's share of ``duration`` [s].
         """
         description = self.world.robot(robot).description
         held = self._held(robot)
@@ -206,9 +210,15 @@ class _RunAudit:
             self.world, robot, description, held, allowances, self.bounds, self.skipped[robot],
             groups,
         )  # fmt: skip
+        bodies = {c.obj for c in carried}
         for k, (t, positions) in enumerate(samples):
             if positions is not None:
                 set_robot_joints(self.world, robot, positions)
+            if carried:
+                share = t / duration if duration > 0.0 else 1.0
+                for joint in carried:
+                    self.world.set_joint_states(joint.obj, {joint.joint: joint.at(share)})
+                probe.others_moved(bodies)
             self.configurations += 1
             for p in probe.check(first=k == 0):
                 self.findings.append(place.finding(p.kind, t, p.what, p.depth, p.bound))

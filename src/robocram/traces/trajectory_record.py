@@ -16,7 +16,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from sqlalchemy import select
 
-from robocram.motion import ContactAllowance, JointTrajectory, TrajectoryPoint
+from robocram.motion import CarriedJoint, ContactAllowance, JointTrajectory, TrajectoryPoint
 from robocram.traces.database import TraceDatabase
 from robocram.traces.queries import require_run, world_state_times
 from robocram.traces.replay_clock import ReplayClock, replay_starts
@@ -36,6 +36,7 @@ class StoredTrajectory:
     time: float  # [s] since the epoch (wall clock) when it was reported, its motion's end
     start: float  # [s] from the run's start on the replay clock (traces/replay_clock.py)
     allowed_contacts: tuple[ContactAllowance, ...] = ()  # beyond the description's
+    carried: tuple[CarriedJoint, ...] = ()  # other objects' joints it moved along
 
     @property
     def duration(self) -> float:
@@ -50,8 +51,9 @@ class StoredTrajectory:
     def trajectory(self) -> JointTrajectory:
         """The trajectory as the motion layer made it."""
         return JointTrajectory(
-            self.robot, self.joint_names, self.points, self.kind, self.allowed_contacts
-        )
+            self.robot, self.joint_names, self.points, self.kind, self.allowed_contacts,
+            self.carried,
+        )  # fmt: skip
 
 
 def trajectory_row(
@@ -72,6 +74,7 @@ def trajectory_row(
         "velocities": _pack([p.velocities for p in points]),
         "accelerations": _pack([p.accelerations for p in points]),
         "allowed_contacts": _allowances_text(trajectory.allowed_contacts),
+        "carried": _carried_text(trajectory.carried),
     }
 
 
@@ -133,6 +136,7 @@ def _loaded(row: TrajectoryRow, path: str | None) -> StoredTrajectory:
         time=row.time,
         start=0.0,
         allowed_contacts=_allowances(row.allowed_contacts),
+        carried=_carried(row.carried),
     )
 
 
@@ -148,6 +152,22 @@ def _allowances(text: str | None) -> tuple[ContactAllowance, ...]:
     if not text:
         return ()
     return tuple(ContactAllowance(side, other, depth) for side, other, depth in json.loads(text))
+
+
+def _carried_text(carried: tuple[CarriedJoint, ...]) -> str | None:
+    """JSON ``[[object, joint, start, end], ...]``; None (NULL) when there are none."""
+    if not carried:
+        return None
+    return json.dumps([[c.obj, c.joint, c.start, c.end] for c in carried])
+
+
+def _carried(text: str | None) -> tuple[CarriedJoint, ...]:
+    """The carried joints of a row; NULL (none, or a file before version 7): none."""
+    if not text:
+        return ()
+    return tuple(
+        CarriedJoint(obj, joint, start, end) for obj, joint, start, end in json.loads(text)
+    )
 
 
 def _pack(values: ArrayLike) -> bytes:
