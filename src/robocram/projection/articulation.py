@@ -27,6 +27,7 @@ from robocram.execution.failures import (
     NavigationLowLevelFailure,
 )
 from robocram.kinematics import PlanarBase, forward_kinematics
+from robocram.motion import CarriedJoint
 from robocram.motion.part_path import (
     BACK_OFF,
     PRE_GRASP,
@@ -103,6 +104,7 @@ def _follow(
     for value in path:
         checkpoint()  # a stopped task ends here, holding the handle at the last step
         world.set_joint_states(part, {joint: value})
+        robot.carried[:] = [CarriedJoint(part, joint, held, value)]  # the hand moves it
         try:
             move_tcp(
                 robot, arm, world.link_pose(part, handle) * pull * grasp, HOLD_MODE, move_base=True,
@@ -114,6 +116,8 @@ def _follow(
         except TaskStopped:  # stopped inside IK: the hand did not follow, undo the step
             world.set_joint_states(part, {joint: held})
             raise
+        finally:
+            robot.carried.clear()
         held = value
     return held
 
