@@ -57,10 +57,8 @@ def test_hostile_name_stays_one_name(name: str) -> None:
 
 def test_a_directive_in_a_name_runs_nothing() -> None:
     kb = KnowledgeBase()
-    kb.consult(
-        f"supporting_surface(kitchen, table).\nsupporting_surface(kitchen, {name_atom(HOSTILE[0])}).",
-        group="kitchen",
-    )
+    facts = [f"supporting_surface(kitchen, {name_atom(n)})." for n in ("table", HOSTILE[0])]
+    kb.consult("\n".join(facts), group="kitchen")
     surfaces = [a["L"] for a in kb.query("supporting_surface(kitchen, L)")]
     assert surfaces == ["table", HOSTILE[0]]
     assert not kb.defines("pwned/0")

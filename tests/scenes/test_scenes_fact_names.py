@@ -7,7 +7,6 @@ matching facts all write names through ``name_atom``.
 
 from __future__ import annotations
 
-from dataclasses import replace
 from pathlib import Path
 
 import pytest
