@@ -32,6 +32,7 @@ from robocram.motion.collision_modes import (
     allowed_links,
     ik_collision_check,
 )
+from robocram.motion.joint_goal import motion_goal
 from robocram.robots import LoadedDescription
 from robocram.ros.errors import RosCommandError, RosConfigError
 from robocram.tf import Pose
@@ -140,7 +141,7 @@ class MotionPlanner:
                 min(max(current[j], lim.lower), lim.upper)
                 for j, lim in zip(joints, limits, strict=True)
             ]
-            end = [float(goal[j]) for j in joints]
+            end = motion_goal(self.desc, joints, start, goal)
             return time_parameterize(self.desc.name, joints, [start, end], limits, kind=kind)
         mode = _mode(mode)
         settings = replace(self.settings, check=False) if mode == "allow_all" else self.settings
