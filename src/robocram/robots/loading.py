@@ -14,7 +14,9 @@ from pathlib import Path
 from robocram.robots.derived_values import derive_arm, derive_camera, derive_links
 from robocram.robots.description import LoadedDescription, RobotDescription
 from robocram.robots.description_check import (
+    check_acceleration_limits,
     check_names,
+    check_rate_limits,
     check_values,
     infer_arm,
     semantic_findings,
@@ -41,6 +43,7 @@ def load_description(
             fault of the semantic checks (a tool frame pointing back, swapped heights, ...).
         GripperDescriptionError: a gripper that cannot open or close.
         JointValueError: a parking, carrying or neck value lies outside its joint limits.
+        LimitValueError: an acceleration limit that is not finite and positive.
         UrdfError: the URDF cannot be read.
     """
     if isinstance(name_or_desc, str):
@@ -55,6 +58,8 @@ def load_description(
     paths = tuple(dict.fromkeys([*desc.package_paths, *(Path(p) for p in package_paths)]))
     model = desc.model or _shared_model(desc, paths)
     check_names(desc, model)
+    check_rate_limits(model)
+    check_acceleration_limits(desc.name, desc.acceleration_limits)
     arms = {
         key: derive_arm(desc.name, infer_arm(arm, model), model) for key, arm in desc.arms.items()
     }
