@@ -11,6 +11,7 @@ from pathlib import Path
 
 import pytest
 
+from robocram.cli import main
 from robocram.execution import matching_facts
 from robocram.knowledge.scene_predicates import (
     CONTAINER,
@@ -26,6 +27,7 @@ from robocram.scenes import (
     draft_environment,
     environment_scene,
 )
+from robocram.scenes.environment_check import environment_from
 from robocram.scenes.environment_scene import ItemPlace, usual_location_facts
 from robocram.scenes.kitchen_scene import kitchen_urdf
 
@@ -96,3 +98,21 @@ def test_environment_scene_items_on_hostile_links(tmp_path: Path) -> None:
         assert not USUAL_LOCATION.holds(kb, type="bowl", link="sink_area_surface")
     finally:
         scene.world.close()
+
+
+def test_a_draft_of_hostile_link_names_loads_back_with_them(tmp_path: Path) -> None:
+    names = {"a&#10;b": "a\nb", "&quot;&quot;&quot;": '"""', "back\\slash": "back\\slash"}
+    board = '<collision><geometry><box size="0.6 0.6 0.05"/></geometry></collision>'
+    parts = ['<link name="floor"/>']
+    for i, xml_name in enumerate(names):
+        parts.append(f'<link name="{xml_name}">{board}</link>')
+        parts.append(
+            f'<joint name="j{i}" type="fixed"><parent link="floor"/><child link="{xml_name}"/>'
+            f'<origin xyz="{i} 0 0.8"/></joint>'
+        )
+    urdf = tmp_path / "boards.urdf"
+    urdf.write_text(f'<robot name="boards">{"".join(parts)}</robot>', "utf-8")
+    out = tmp_path / "boards.py"
+    assert main(["env", "draft", str(urdf), "-o", str(out)]) == 0
+    loaded = environment_from(out)
+    assert {s.link for s in loaded.surfaces} == set(names.values())
