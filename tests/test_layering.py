@@ -84,6 +84,7 @@ ALLOWED: dict[str, set[str]] = {
         "world",
         "execution",
         "designators",
+        "robots",
         "tf",
     },
     "robot_check": {
