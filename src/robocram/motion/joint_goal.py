@@ -36,14 +36,20 @@ def motion_goal(
     """
     end = []
     for name, here in zip(joints, start, strict=True):
-        value = _number(name, goal[name])
+        value = finite_goal(name, goal[name])
         if desc.model.joints[name].type == "continuous":
             value = _short_way(name, here, value)
         end.append(value)
     return end
 
 
-def _number(joint: str, raw: object) -> float:
+def finite_goal(joint: str, raw: object) -> float:
+    """``raw`` as the goal [rad | m] of ``joint``, refused unless a finite number: callers
+    that clamp goals to limits check first (inf must not become the upper limit).
+
+    Raises:
+        MotionInputError: naming the joint.
+    """
     try:
         value = float(raw)  # type: ignore[arg-type]
     except (TypeError, ValueError):

@@ -32,7 +32,7 @@ from robocram.motion.collision_modes import (
     allowed_links,
     ik_collision_check,
 )
-from robocram.motion.joint_goal import motion_goal
+from robocram.motion.joint_goal import finite_goal, motion_goal
 from robocram.robots import LoadedDescription
 from robocram.ros.errors import RosCommandError, RosConfigError
 from robocram.tf import Pose
@@ -80,7 +80,7 @@ def clamp_goal(desc: LoadedDescription, goal: Mapping[str, float]) -> ClampedGoa
         spec = desc.model.joints.get(joint)
         if spec is None or not spec.movable:
             raise RosCommandError(f"{joint!r} is not a movable joint of {desc.name}")
-        asked = float(value)
+        asked = finite_goal(joint, value)
         low, high = _bounds((spec.lower, spec.upper))
         soft_low, soft_high = _bounds(spec.working_limits)
         clamped[joint] = min(max(asked, soft_low), soft_high)
