@@ -27,9 +27,7 @@ CASES = {
     "looking": (a.motion(type="looking", target=(0.0, INF, 1.0)), PoseValueError),
     "torso": (a.motion(type="moving-torso", joint_angle=INF), MotionInputError),
     "arm": (
-        a.motion(
-            type="moving-arm-joints", arm="right", configuration={"r_elbow_flex_joint": -INF}
-        ),
+        a.motion(type="moving-arm-joints", arm="right", configuration={"r_elbow_flex_joint": -INF}),
         MotionInputError,
     ),
 }
