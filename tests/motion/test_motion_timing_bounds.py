@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from robocram.motion import joint_limits
+from robocram.motion import JointLimits, joint_limits
 from robocram.motion.errors import MotionInputError
 from robocram.motion.time_parameterization import (
     MAX_TRAJECTORY_POINTS,
@@ -41,3 +41,13 @@ def test_sizes_within_the_bounds_are_timed() -> None:
     trajectory = time_parameterize("pr2", ARM, [START, END], LIMITS, period=1e-3)
     assert 1_000 < len(trajectory.points) < MAX_TRAJECTORY_POINTS
     assert trajectory.points[-1].positions == pytest.approx(END.tolist(), abs=1e-12)
+
+
+@pytest.mark.parametrize(("velocity", "acceleration"), [(1e-300, 1.0), (1.0, 1e-300), (1e300, 1.0)])
+def test_rates_ruckig_cannot_time_are_refused_naming_the_joint(
+    velocity: float, acceleration: float
+) -> None:
+    limits = (JointLimits("j", -10.0, 10.0, velocity, acceleration, 10.0 * acceleration),)
+    with pytest.raises(MotionInputError) as caught:
+        time_parameterize("r", ["j"], [[0.0], [1.0]], limits)
+    assert caught.value.joint == "j" and "MIN_RATE_LIMIT" in str(caught.value)

@@ -36,6 +36,7 @@ from robocram.motion.errors import MotionError, MotionInputError
 from robocram.motion.joint_limits import JointLimits
 from robocram.motion.joint_trajectory import FloatArray, JointTrajectory, PointTable, still
 from robocram.motion.straight_segment import straight_segment
+from robocram.robots.description_check import MIN_RATE_LIMIT
 
 COLLINEAR = 1e-9  # [rad | m] a waypoint this close to its neighbours' line is no corner
 SAME_POINT = 1e-12  # [rad | m] consecutive waypoints closer than this are one waypoint
@@ -47,6 +48,7 @@ LIMIT_SLACK = 1e-9  # [rad | m] a waypoint this far outside a position limit sti
 # (a period of 1e-9 s asked for 7.45 GiB). Planned paths have tens of waypoints, and a
 # 0.05 s period gives an hour of motion in 72,000 points.
 MAX_WAYPOINTS = 10_000
+MAX_RATE_LIMIT = 1e9  # [/s, /s^2, /s^3] ruckig fails on 1e300 (and on 1e-300: MIN_RATE_LIMIT)
 MAX_TRAJECTORY_POINTS = 200_000
 
 State = tuple[FloatArray, FloatArray, FloatArray]
@@ -267,13 +269,15 @@ def checked_path(
         dtype=float,
     ).reshape(len(limits), 5)
     rates = bounds[:, 2:]
-    if not ((rates > 0.0) & (rates < math.inf)).all():  # positive and finite, NaN neither
+    if not ((rates >= MIN_RATE_LIMIT) & (rates <= MAX_RATE_LIMIT)).all():  # NaN neither
         for lim in limits:
             given = (lim.velocity, lim.acceleration, lim.jerk)
-            if not all(math.isfinite(v) and v > 0.0 for v in given):
-                raise MotionError(
+            if not all(MIN_RATE_LIMIT <= v <= MAX_RATE_LIMIT for v in given):
+                raise MotionInputError(
                     f"joint {lim.name!r} has velocity/acceleration/jerk limits {given}; "
-                    "each must be positive and finite"
+                    f"each must be positive and finite, from {MIN_RATE_LIMIT:g} (MIN_RATE_LIMIT) "
+                    f"to {MAX_RATE_LIMIT:g} (MAX_RATE_LIMIT): ruckig cannot time the others",
+                    joint=lim.name,
                 )
     if len(path) == 0:
         raise MotionError("the path has no waypoints; give at least the start")
