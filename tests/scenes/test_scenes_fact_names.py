@@ -7,9 +7,12 @@ matching facts all write names through ``name_atom``.
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from robocram.cli import main
 from robocram.execution import matching_facts
@@ -54,6 +57,18 @@ def test_description_facts_read_back_exactly(name: str) -> None:
     assert [r.kind for r in CONTAINER_KIND.answers(kb)] == ["drawer"]
     assert [(r.type, r.link) for r in USUAL_LOCATION.answers(kb)] == [(name, name)]
     assert not kb.defines("pwned/0")
+
+
+@settings(max_examples=100, deadline=None, database=None)
+@given(st.text(), st.text())
+def test_every_name_pair_reads_back_from_the_description_facts(link: str, kind: str) -> None:
+    desc = replace(_description(link), name=kind, usual_locations=((kind, link),))
+    kb = KnowledgeBase()
+    kb.consult(desc.facts(), group="semantics")
+    assert [(r.environment, r.link) for r in SUPPORTING_SURFACE.answers(kb)] == [(kind, link)]
+    assert [(r.type, r.environment, r.link) for r in USUAL_LOCATION.answers(kb)] == [
+        (kind, kind, link)
+    ]
 
 
 @pytest.mark.parametrize("name", HOSTILE)
