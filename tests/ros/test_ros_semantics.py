@@ -17,7 +17,7 @@ from robocram.execution.failures import (
     NavigationGoalNotReached,
     TorsoGoalNotReached,
 )
-from robocram.ros import RosConnectionLost, RosJointStateInvalid, Roscore, ros_robot
+from robocram.ros import RosConnectionLost, Roscore, RosJointStateInvalid, ros_robot
 from robocram.ros.ros_config import default_facts
 from robocram.ros_driver.driver_process import DriverProcess
 from robocram.tf import Pose
