@@ -16,7 +16,7 @@ from robocram.robots import (
     UrdfError,
     load_description,
 )
-from robocram.robots.description_check import MIN_RATE_LIMIT
+from robocram.robots.limit_check import MIN_RATE_LIMIT
 
 FULL = 'velocity="1" effort="1"'
 

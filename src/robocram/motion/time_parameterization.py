@@ -36,7 +36,7 @@ from robocram.motion.errors import MotionError, MotionInputError
 from robocram.motion.joint_limits import JointLimits
 from robocram.motion.joint_trajectory import FloatArray, JointTrajectory, PointTable, still
 from robocram.motion.straight_segment import straight_segment
-from robocram.robots.description_check import MIN_RATE_LIMIT
+from robocram.robots.limit_check import MIN_RATE_LIMIT
 
 COLLINEAR = 1e-9  # [rad | m] a waypoint this close to its neighbours' line is no corner
 SAME_POINT = 1e-12  # [rad | m] consecutive waypoints closer than this are one waypoint

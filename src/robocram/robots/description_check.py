@@ -21,9 +21,7 @@ from robocram.robots.description import (
 from robocram.robots.errors import (
     DescriptionCheckError,
     JointValueError,
-    LimitValueError,
     NameProblem,
-    UrdfError,
     closest_names,
 )
 from robocram.robots.findings import Finding
@@ -32,10 +30,6 @@ from robocram.robots.robot_model import RobotModel
 from robocram.tf.quaternion import rotate
 
 _LIMIT_SLACK = 1e-6  # [rad | m] tolerance on description values at a limit
-# [/s | /s^2] the smallest velocity or acceleration limit taken: a joint slower than this
-# is none that moves (ruckig fails on limits of 1e-300, and a trajectory's samples grow
-# with the inverse of the limit)
-MIN_RATE_LIMIT = 1e-6
 
 
 class _Checker:
@@ -101,38 +95,6 @@ def check_names(desc: RobotDescription, model: RobotModel) -> None:
         raise DescriptionCheckError(desc.name, model.source, check.problems)
 
 
-_RATES = {"velocity": "speed [rad/s | m/s]", "effort": "effort [N m | N]"}
-
-
-def check_rate_limits(model: RobotModel) -> None:
-    """Refuse a revolute or prismatic joint whose URDF ``<limit>`` lacks velocity or effort,
-    or whose velocity limit is below :data:`MIN_RATE_LIMIT` (0 stands for "none given").
-
-    The URDF standard requires both, and the robot's kinematics (pinocchio) refuses the
-    model without them: every arm motion would fail there, far from the cause.
-
-    Raises:
-        UrdfError: naming the first such joint and what to add.
-    """
-    for joint in model.joints.values():
-        if joint.type not in ("revolute", "prismatic"):
-            continue
-        for key, what in _RATES.items():
-            if getattr(joint, key) is None:
-                raise UrdfError(
-                    model.source,
-                    f"{joint.type} joint {joint.name!r} has no {key} limit; give its largest "
-                    f"{what} in its <limit {key}=...> (the URDF standard and pinocchio "
-                    "require it)",
-                )
-        if joint.velocity is not None and 0.0 < joint.velocity < MIN_RATE_LIMIT:
-            raise UrdfError(
-                model.source,
-                f"{joint.type} joint {joint.name!r} has velocity limit {joint.velocity}, below "
-                f"{MIN_RATE_LIMIT:g} (MIN_RATE_LIMIT); give its real largest speed",
-            )
-
-
 def infer_arm(arm: ArmDescription, model: RobotModel) -> ArmDescription:
     """Fill an arm's empty joints and links from the chain ``base_link..end_effector_link``."""
     if arm.base_link is None:
@@ -175,14 +137,6 @@ def check_values(robot: str, model: RobotModel, states: Mapping[str, float]) -> 
         upper = math.inf if joint.upper is None else joint.upper
         if not (math.isfinite(value) and lower - _LIMIT_SLACK <= value <= upper + _LIMIT_SLACK):
             raise JointValueError(robot, name, value, lower, upper)
-
-
-def check_acceleration_limits(robot: str, limits: Mapping[str, float]) -> None:
-    """Raise :class:`LimitValueError` for an acceleration limit that is not a finite
-    number of at least :data:`MIN_RATE_LIMIT` (0, negative, NaN, inf, 1e-300)."""
-    for name, value in limits.items():
-        if not (math.isfinite(value) and value >= MIN_RATE_LIMIT):
-            raise LimitValueError(robot, name, "acceleration limit [/s^2]", value, MIN_RATE_LIMIT)
 
 
 def semantic_findings(desc: LoadedDescription) -> tuple[Finding, ...]:

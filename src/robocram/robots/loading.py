@@ -14,9 +14,7 @@ from pathlib import Path
 from robocram.robots.derived_values import derive_arm, derive_camera, derive_links
 from robocram.robots.description import LoadedDescription, RobotDescription
 from robocram.robots.description_check import (
-    check_acceleration_limits,
     check_names,
-    check_rate_limits,
     check_values,
     infer_arm,
     semantic_findings,
@@ -24,6 +22,7 @@ from robocram.robots.description_check import (
 from robocram.robots.description_source import description_from
 from robocram.robots.errors import DescriptionCheckError
 from robocram.robots.findings import warn
+from robocram.robots.limit_check import check_acceleration_limits, check_rate_limits
 from robocram.robots.package_resolver import PackageResolver
 from robocram.robots.robot_model import MODELS, RobotModel
 
