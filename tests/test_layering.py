@@ -21,7 +21,7 @@ ALLOWED: dict[str, set[str]] = {
     "execution": {"designators", "logic", "tf"},
     "world": {"robots", "knowledge", "logic", "tf"},
     "kinematics": {"robots", "tf"},
-    "scenes": {"world", "kinematics", "robots", "tf"},
+    "scenes": {"world", "kinematics", "robots", "logic", "tf"},
     "grasping": {"world", "kinematics", "robots", "knowledge", "logic", "tf"},
     "costmaps": {"grasping", "world", "kinematics", "designators", "robots", "logic", "tf"},
     "motion": {"world", "kinematics", "execution", "robots", "logic", "tf"},
@@ -84,6 +84,7 @@ ALLOWED: dict[str, set[str]] = {
         "world",
         "execution",
         "designators",
+        "robots",
         "tf",
     },
     "robot_check": {

@@ -16,6 +16,7 @@ INPUT_ERRORS = (  # (module, class): the root errors of input a command cannot w
     ("robocram.robots.errors", "DescriptionError"),
     ("robocram.scenes.errors", "SceneError"),
     ("robocram.viewer.errors", "ViewerError"),
+    ("robocram.world.errors", "BodyLoadError"),
 )
 
 

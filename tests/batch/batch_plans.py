@@ -99,3 +99,21 @@ def run_killing_the_first(backend: str, pid_file: Path) -> tuple[list[VariantRes
     if killed[0] in (results[1].worker, results[2].worker):
         raise AssertionError(f"the killed worker {killed[0]} answered later: {results}")
     return results, killed[0]
+
+
+class Unprintable(RuntimeError):
+    """An error that cannot be turned into text."""
+
+    def __str__(self) -> str:
+        raise ValueError("no text")
+
+
+def misbehave(look_target: PoseStamped, how: str = "") -> object:
+    """Raise what ``how`` names (``exit``, ``interrupt``, ``unprintable``), else pick up."""
+    if how == "exit":
+        raise SystemExit(3)
+    if how == "interrupt":
+        raise KeyboardInterrupt
+    if how == "unprintable":
+        raise Unprintable
+    return pick_up(look_target)

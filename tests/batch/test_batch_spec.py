@@ -106,3 +106,22 @@ def test_bad_files_are_named(tmp_path: Path) -> None:
     with pytest.raises(BadSpec, match="not valid yaml"):
         load_spec(broken)
     assert "backend" in SPEC_KEYS
+
+
+@pytest.mark.parametrize(
+    ("robot", "culprit"),
+    [
+        ("/nowhere/robot.py", r"robot='/nowhere/robot.py': no file /nowhere/robot.py"),
+        ("{folder}", "no built-in robot"),
+        ("{folder}/robot.urdf", "a URDF is no robot description; draft one"),
+        ("{folder}/empty.py", "empty.py"),
+        ("empty.py", "empty.py"),
+    ],
+)
+def test_the_robot_is_checked_up_front(tmp_path: Path, robot: str, culprit: str) -> None:
+    (tmp_path / "empty.py").write_text("", "utf-8")
+    (tmp_path / "robot.urdf").write_text("<robot name='r'/>", "utf-8")
+    data = {"variants": 1, "robot": robot.format(folder=tmp_path)}
+    with pytest.raises(BadSpec, match=culprit) as caught:
+        load_spec(_write(tmp_path, data))
+    assert caught.value.key == "robot"

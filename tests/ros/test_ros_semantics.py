@@ -17,7 +17,7 @@ from robocram.execution.failures import (
     NavigationGoalNotReached,
     TorsoGoalNotReached,
 )
-from robocram.ros import RosConnectionLost, Roscore, ros_robot
+from robocram.ros import RosConnectionLost, Roscore, RosJointStateInvalid, ros_robot
 from robocram.ros.ros_config import default_facts
 from robocram.ros_driver.driver_process import DriverProcess
 from robocram.tf import Pose
@@ -148,3 +148,18 @@ def test_a_driver_dying_mid_goal_gives_a_typed_failure_not_a_hang(
     assert "no status from /move_base" in failure.value.reason
     assert math.isfinite(start.position[0])
     _nothing_left(threads, node, master_nodes())
+
+
+def test_a_joint_state_that_is_not_a_number_names_the_topic_and_the_joint(
+    roscore: Roscore,
+) -> None:
+    with (
+        DriverProcess(roscore.uri, fault="nan_joint_state"),
+        ros_robot("pr2", roscore.uri),
+        pytest.raises(RosJointStateInvalid) as failure,
+    ):
+        perform(a.motion(type="moving-torso", joint_angle=0.1))
+    assert (failure.value.topic, failure.value.joint) == ("/joint_states", "torso_lift_joint")
+    assert math.isnan(failure.value.value)  # type: ignore[arg-type]
+    assert "'torso_lift_joint' at nan on /joint_states" in str(failure.value)
+    assert "bug in the module" not in str(failure.value)

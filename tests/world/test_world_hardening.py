@@ -80,7 +80,7 @@ def test_a_robot_too_big_even_folded_is_refused_before_loading(
     links = "".join(f'<link name="l{i}"/>' for i in range(131))
     joints = "".join(
         f'<joint name="j{i}" type="revolute"><parent link="l{i}"/><child link="l{i + 1}"/>'
-        '<limit lower="-1" upper="1"/></joint>'
+        '<limit lower="-1" upper="1" velocity="1" effort="1"/></joint>'
         for i in range(130)
     )
     urdf = tmp_path / "snake.urdf"

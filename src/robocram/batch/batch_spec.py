@@ -27,6 +27,8 @@ from robocram.batch.kitchen_transport import transport_item
 from robocram.batch.variant import MAX_SEED, Variant  # a variant's seed is `seed + index`
 from robocram.batch.worker import Plan, SceneFactory
 from robocram.plans import pick_up
+from robocram.robots import DescriptionError
+from robocram.robots.description_source import description_from
 from robocram.scenes import kitchen_scene, tabletop_scene
 
 SPEC_KEYS = (
@@ -106,15 +108,25 @@ def _string(path: Path, key: str, value: object) -> str:
 
 
 def _robot(path: Path, value: object) -> str:
-    """A built-in robot's name, ``pkg.mod:NAME``, or a description file (relative: to the spec)."""
+    """A built-in robot's name, ``pkg.mod:NAME``, or a description file (relative: to the
+    spec), checked now: a missing file, a folder, a URDF or a file that defines no
+    description would otherwise fail in every worker."""
     spec = _string(path, "robot", value)
     where, colon, name = spec.partition(":")
-    if not where.endswith(".py") or Path(where).is_absolute():
-        return spec
-    file = path.resolve().parent / where
-    if not file.is_file():
-        raise BadSpec(path, "robot", spec, f"no file {file}; give a built-in robot or a .py file")
-    return f"{file}{colon}{name}"
+    if where.endswith(".py") and not Path(where).is_absolute():
+        spec = f"{path.resolve().parent / where}{colon}{name}"
+    if Path(where).suffix.lower() in (".urdf", ".xacro"):
+        raise BadSpec(
+            path, "robot", value, "a URDF is no robot description; draft one with "
+            "`robocram robot draft URDF -o robot.py` and name robot.py",
+        )  # fmt: skip
+    try:
+        description_from(spec)
+    except DescriptionError as err:
+        raise BadSpec(path, "robot", value, str(err)) from err
+    except Exception as err:  # the user's file itself fails to run
+        raise BadSpec(path, "robot", value, f"{spec} fails: {type(err).__name__}: {err}") from err
+    return spec
 
 
 def _optional_string(path: Path, key: str, value: object) -> str | None:

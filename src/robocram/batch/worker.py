@@ -47,6 +47,9 @@ class Scene(Protocol):
 
 
 T = TypeVar("T")
+# What a plan may raise that ends its variant, not its worker: a plan calling sys.exit()
+# or raising KeyboardInterrupt itself (a worker ignores Ctrl-C: the parent handles it)
+PLAN_EXITS = (Exception, SystemExit, KeyboardInterrupt)
 SceneFactory = Callable[[str], Scene]
 Plan = Callable[..., Any]  # plan(look_target, **parameters), run inside simulated_robot
 
@@ -98,10 +101,11 @@ class VariantRunner:
                     clock.mark("robot")
                 clock.mark("trace")
             clock.mark("restore")
-        except Exception as err:  # a variant's failure is data, the batch goes on
+        except PLAN_EXITS as err:  # a variant's failure is data, the batch goes on
             return VariantResult(
-                index, variant.name, VariantStatus.FAILED, type(err).__name__, str(err),
-                clock.total(), run_id=runs[-1] if runs else None, split=clock.split(),
+                index, variant.name, VariantStatus.FAILED, type(err).__name__,
+                error_text(err), clock.total(), run_id=runs[-1] if runs else None,
+                split=clock.split(),
             )  # fmt: skip
         return _success(index, variant, chosen, clock, runs)
 
@@ -109,6 +113,14 @@ class VariantRunner:
         if self.config.traces is None:
             return nullcontext(None)
         return trace_to(self.config.traces, world=world)
+
+
+def error_text(err: BaseException) -> str:
+    """``str(err)``, or a stand-in naming its type when turning it into text fails."""
+    try:
+        return str(err)
+    except Exception as failed:  # the plan's error is still reported, and the worker kept
+        return f"<{type(err).__name__} that cannot be shown: {type(failed).__name__}>"
 
 
 def _place_objects(scene: Scene, variant: Variant) -> PoseStamped:

@@ -17,6 +17,7 @@ from robocram.costmaps.errors import (
     CostmapInputError,
     LocationKeyError,
     LocationNotFound,
+    LocationOutsideArea,
 )
 from robocram.costmaps.grid import CostmapGrid
 from robocram.costmaps.reach_reasoning import (
@@ -45,6 +46,7 @@ __all__ = [
     "CostmapObserver",
     "LocationKeyError",
     "LocationNotFound",
+    "LocationOutsideArea",
     "LocationQuery",
     "Reach",
     "ReachabilityMap",

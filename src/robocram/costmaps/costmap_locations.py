@@ -23,7 +23,7 @@ from robocram.costmaps.cost_layer import CellRefiner, CostFunction, CostLayer, L
 from robocram.costmaps.cost_registry import BUILTIN_COST_FUNCTIONS, BUILTIN_VALIDATORS
 from robocram.costmaps.costmap import Costmap
 from robocram.costmaps.costmap_observers import notify_costmap
-from robocram.costmaps.errors import CostmapInputError, LocationNotFound
+from robocram.costmaps.errors import CostmapInputError, LocationNotFound, LocationOutsideArea
 from robocram.costmaps.grid import CostmapGrid
 from robocram.costmaps.location_blame import Culprits
 from robocram.costmaps.location_keys import LocationPlan, install_location_keys, plan_location
@@ -34,7 +34,7 @@ from robocram.costmaps.validators import Validator, parked
 from robocram.designators import LocationDesignator, LocationResolver
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
-from robocram.world import RobotObject, World
+from robocram.world import PlanningArea, RobotObject, World
 
 Sampling = Literal["random", "best"]
 _Function = TypeVar("_Function")
@@ -89,6 +89,7 @@ class CostmapLocations:
         size = designator.get("size", self.size)
         probe = LocationQuery(self.world, designator, CostmapGrid((0, 0), 1.0, (1, 1)), robot)
         centre = _anchor(probe, plan)
+        _refuse_far_anchor(self.world, designator, centre, robot)
         grid = CostmapGrid.around(centre[:2], size, resolution)
         return LocationQuery(self.world, designator, grid, robot, self.reach_maps)
 
@@ -277,6 +278,25 @@ def _anchor(query: LocationQuery, plan: LocationPlan) -> tuple[float, float, flo
             designator,
         )
     return query.point(designator.get(key), key)
+
+
+def _refuse_far_anchor(
+    world: World, designator: Any, centre: tuple[float, float, float], robot: RobotObject | None
+) -> None:
+    """Refuse to search round a point outside the world's :class:`PlanningArea` (of its
+    obstacles and the robot): a target 100 km away has no stand the robot can mean."""
+    floors = [o.name for o in world.objects("floor")]
+    here = [tuple(world.pose(robot).position[:2])] if robot is not None else []
+    area = PlanningArea.of(world.obstacle_boxes(floors), here)  # type: ignore[arg-type]
+    if area.contains(centre[0], centre[1]):
+        return
+    x, y, z = centre
+    raise LocationOutsideArea(
+        f"{designator.description}: its anchor ({x:.6g}, {y:.6g}, {z:.6g}) m is outside the "
+        f"area plans search in: {area}; give a point near the world (in map)",
+        centre,
+        area,
+    )
 
 
 def _facing_point(query: LocationQuery, plan: LocationPlan) -> tuple[float, float, float] | None:

@@ -27,6 +27,20 @@ class CostmapInputError(CostmapError, ValueError):
         self.culprit = culprit
 
 
+class LocationOutsideArea(CostmapInputError):
+    """A location searched round a point outside the world's planning area: no stand or
+    spot there is one the robot can mean (a typo in a coordinate, another frame).
+
+    Attributes:
+        culprit: the point (map x, y, z [m]).
+        area: the :class:`~robocram.world.PlanningArea` it lies outside.
+    """
+
+    def __init__(self, message: str, point: object, area: object) -> None:
+        super().__init__(message, point)
+        self.area = area
+
+
 class LocationKeyError(CostmapInputError):
     """A location designator uses a key no rule knows, or two keys that exclude each other."""
 

@@ -17,6 +17,7 @@ from enum import Enum
 from typing import TYPE_CHECKING
 
 from robocram.designators.errors import MotionPropertyError
+from robocram.logic import name_atom
 
 if TYPE_CHECKING:
     from robocram.designators.designator import Designator
@@ -196,24 +197,21 @@ def _var(key: str, suffix: str = "") -> str:
     return "".join(part.capitalize() for part in key.split("_")) + suffix
 
 
-def _atom(name: str) -> str:
-    plain = name.replace("_", "").isalnum() and name[:1].islower()
-    return name if plain else "'" + name.replace("'", "\\'") + "'"
-
-
 def _rule(motion: MotionType, command: Command, table: str) -> str:
     args: list[str] = []
     reads: list[str] = []
     resolves: list[str] = []
     for arg in command.args:
         if isinstance(arg, Atom):
-            args.append(_atom(arg.name))
+            args.append(name_atom(arg.name))
             continue
         prop = motion.prop(arg)
         value = _var(arg, "Value") if prop.target else _var(arg)
         args.append(_var(arg))
         if prop.default is not None:
-            resolves.append(f"common_prop_or_default(D, {arg}, {_atom(prop.default)}, {_var(arg)})")
+            resolves.append(
+                f"common_prop_or_default(D, {arg}, {name_atom(prop.default)}, {_var(arg)})"
+            )
             continue
         reads.append(f"desig_prop(D, {arg}, {value})")
         if prop.target:
@@ -223,7 +221,7 @@ def _rule(motion: MotionType, command: Command, table: str) -> str:
         both = ", ".join(f"desig_prop(D, {key}, _)" for key in command.unless_all)
         body.append(f"\\+ ({both})")
     body.extend(resolves)
-    head = f"{table}({_atom(motion.type)}, D, {command.name}({', '.join(args)}))"
+    head = f"{table}({name_atom(motion.type)}, D, {command.name}({', '.join(args)}))"
     return head + (" :-\n    " + ",\n    ".join(body) if body else "") + "."
 
 
@@ -243,7 +241,7 @@ def grounding_rules(
         f"    motion_desig(D),\n    desig_prop(D, type, T),\n    {table}(T, D, G).\n"
     )
     rules = "\n".join(_rule(m, c, table) for m in motions for c in m.commands)
-    types = "".join(f"grounded_motion_type({_atom(m.type)}).\n" for m in motions if m.commands)
+    types = "".join(f"grounded_motion_type({name_atom(m.type)}).\n" for m in motions if m.commands)
     return dispatch + rules + "\n" + types
 
 

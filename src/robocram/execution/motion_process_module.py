@@ -17,7 +17,7 @@ from typing import Any
 
 from robocram.designators import MOTION_TYPES, Command, MotionType, commands_of
 from robocram.execution.process_module import ProcessModule
-from robocram.logic import Term
+from robocram.logic import Term, name_atom
 
 
 def module_atom(prefix: str, resource: str) -> str:
@@ -43,12 +43,12 @@ def matching_facts(
     """
     lines = [
         "matching_process_module(D, PM) :-"
-        f" desig_prop(D, type, T), motion_process_module(T, {prefix}, PM)."
+        f" desig_prop(D, type, T), motion_process_module(T, {name_atom(prefix)}, PM)."
     ]
     for resource in resources:
-        pm = module_atom(prefix, resource)
+        pm = name_atom(module_atom(prefix, resource))
         for motion in motion_types_of(resource, motions):
-            lines.append(f"motion_process_module('{motion}', {prefix}, {pm}).")
+            lines.append(f"motion_process_module({name_atom(motion)}, {name_atom(prefix)}, {pm}).")
         lines.append(f"available_process_module({pm}).")
     return "\n".join(lines) + "\n"
 

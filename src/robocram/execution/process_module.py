@@ -30,6 +30,7 @@ from robocram.execution.failures import (
     SetupFailure,
 )
 from robocram.execution.task_context import checkpoint, wait_until
+from robocram.tf import PoseValueError
 
 
 class ProcessModule:
@@ -160,7 +161,7 @@ class ProcessModule:
     def _execute_named(self, command: object) -> Any:
         try:
             return self.execute(command)
-        except SetupFailure as err:  # the command is wrong: the caller's mistake
+        except (SetupFailure, PoseValueError) as err:  # the command is wrong: the caller's mistake
             raise ProcessModuleInputError(
                 f"process module {self.name!r} refused {command}: {err}",
                 module=self.name,

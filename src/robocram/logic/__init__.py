@@ -21,6 +21,7 @@ from robocram.logic.errors import (
 )
 from robocram.logic.gc_pacing import fast_queries
 from robocram.logic.knowledge_base import KnowledgeBase
+from robocram.logic.name_atom import name_atom
 from robocram.logic.terms import Term, Var
 from robocram.logic.value import Value
 
@@ -47,5 +48,6 @@ __all__ = [
     "Var",
     "current_kb",
     "fast_queries",
+    "name_atom",
     "using_kb",
 ]

@@ -34,6 +34,7 @@ from robocram.motion.coal_clearance import CoalClearance
 from robocram.motion.collision_scene import CollisionScene
 from robocram.motion.configuration_checker import LinkPair
 from robocram.motion.corner_blend import blend_radii
+from robocram.motion.joint_goal import motion_goal
 from robocram.motion.joint_limits import joint_limits
 from robocram.motion.joint_path import PLANNING_BUDGET, JointPath, plan_joint_path
 from robocram.motion.joint_trajectory import FloatArray, JointTrajectory
@@ -130,15 +131,18 @@ def plan_arm_motion(
     names the motion in its trajectory). ``allowed_pairs`` ``(robot link, other)`` may
     touch besides the contacts the motion starts with (fingers squeezing what they grip).
 
+    A continuous joint turns the short way to its goal (:mod:`joint_goal`).
+
     Raises:
         ManipulationPathBlocked: the goal collides, or no way there was found; it names the
             colliding pairs and where along the straight path they are.
+        MotionInputError: a goal value is not finite, or a continuous joint's is absurd.
     """
     desc = world.robot(robot).description
     joints = planned_joints(desc, goal)
     current = world.joint_states(robot)
     start = [current[j] for j in joints]
-    end = [float(goal[j]) for j in joints]
+    end = motion_goal(desc, joints, start, goal)
     limits = joint_limits(desc, joints)
     if not settings.check or _unmoved(start, end):  # nothing to check: the start is allowed
         path = JointPath(joints, (tuple(start), tuple(end)), "straight", 0)

@@ -20,13 +20,14 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from robocram.execution.failures import NavigationGoalOutsideArea
 from robocram.motion.cleared_poses import ClearedPoses
 from robocram.motion.height_bins import HeightBins
 from robocram.motion.obstacle_grid import Box, ObstacleGrid
 from robocram.motion.robot_footprint import FloatArray, RobotFootprint
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
-from robocram.world import ObstacleBoxes, World
+from robocram.world import ObstacleBoxes, PlanningArea, World
 
 CELL = 0.01  # [m] obstacle grid cells
 SPACING = 0.02  # [m] robot sample squares: more than the 1 cm a dense check moves
@@ -39,6 +40,22 @@ GAP_QUERY = 0.1  # [m] how far an exact check looks for the gap that lets it ski
 FOOTPRINTS_KEPT = 8  # robot postures whose footprints a world keeps
 LOCAL_MARGIN = 0.6  # [m] the first grid covers the start's and goal's box grown by this
 GROWN_ROUNDING = 1e-9  # [m] kept off the grown footprint's reach for rounding of travel
+
+
+def _refuse_far_goal(
+    robot: str, start: Pose, goal_xy: tuple[float, float], obstacles: ObstacleBoxes
+) -> None:
+    """Refuse a goal outside the :class:`PlanningArea` of the obstacles and the start."""
+    here = (float(start.position[0]), float(start.position[1]))
+    area = PlanningArea.of(obstacles, [here])
+    x, y = (float(v) for v in goal_xy)
+    if area.contains(x, y):
+        return
+    raise NavigationGoalOutsideArea(
+        f"{robot}'s goal ({x:.6g}, {y:.6g}) m is outside the area it drives in: {area}",
+        area=(area.low, area.high),
+        margin=area.margin,
+    )
 
 
 @dataclass
@@ -80,12 +97,17 @@ class BaseCollisionChecker:
         The grid first covers only the box round the start and the goal (what the direct
         motion sweeps); a pose beyond it widens the grid to the whole world at its first
         fast check (:meth:`_widen`), so detours and planning see everything.
+
+        Raises:
+            NavigationGoalOutsideArea: the goal is outside the world's
+                :class:`~robocram.world.PlanningArea` (before anything is rasterised).
         """
         start = world.pose(robot)
         carried = _carried(world, robot)
         bins, footprint = _footprint(world, robot, carried, start)
         skip = {robot, *carried} | {o.name for o in world.objects("floor")}
         obstacles = world.obstacle_boxes(skip)
+        _refuse_far_goal(robot, start, goal_xy, obstacles)
         ends = np.array([start.position[:2], goal_xy], dtype=float)
         low = np.minimum(ends.min(axis=0), obstacles.low[:, :2].min(axis=0, initial=np.inf))
         high = np.maximum(ends.max(axis=0), obstacles.high[:, :2].max(axis=0, initial=-np.inf))

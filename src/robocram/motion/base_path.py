@@ -21,7 +21,7 @@ import numpy as np
 from robocram.execution.failures import NavigationPathBlocked, NavigationPoseUnreachable
 from robocram.motion.base_collision import ESCAPE, BaseCollisionChecker, blockers_at, yaw_of
 from robocram.motion.car_timing import time_car_path
-from robocram.motion.errors import MotionError
+from robocram.motion.errors import MotionError, MotionInputError
 from robocram.motion.joint_limits import joint_limits
 from robocram.motion.joint_trajectory import BASE_JOINTS, JointTrajectory
 from robocram.motion.ompl_base_planner import Area, motion_poses, planned_waypoints
@@ -242,7 +242,7 @@ def _wrap(angle: float) -> float:
 
 def _check_request(goal: Pose, budget: int, turning_radius: float) -> None:
     if not all(np.isfinite(goal.position)) or not all(np.isfinite(goal.orientation)):
-        raise MotionError(f"base goal {goal} is not finite; give a pose in map")
+        raise MotionInputError(f"base goal {goal} is not finite; give a pose in map")
     if budget <= 0:
         raise MotionError(f"planning budget must be a positive number of checks, got {budget}")
     if not turning_radius > 0.0:

@@ -32,16 +32,24 @@ from typing import Protocol
 import numpy as np
 
 from robocram.motion.corner_blend import blended_run
-from robocram.motion.errors import MotionError
+from robocram.motion.errors import MotionError, MotionInputError
 from robocram.motion.joint_limits import JointLimits
 from robocram.motion.joint_trajectory import FloatArray, JointTrajectory, PointTable, still
 from robocram.motion.straight_segment import straight_segment
+from robocram.robots.limit_check import MIN_RATE_LIMIT
 
 COLLINEAR = 1e-9  # [rad | m] a waypoint this close to its neighbours' line is no corner
 SAME_POINT = 1e-12  # [rad | m] consecutive waypoints closer than this are one waypoint
 SAME_TIME = 1e-9  # [s] a periodic sample this close to a waypoint's time is dropped
 BREAK_GAP = 1e-6  # [s] a jerk switch this close to another sample gets no sample
 LIMIT_SLACK = 1e-9  # [rad | m] a waypoint this far outside a position limit still counts
+# Sizes that grow with the input are bounded (each named in its error): ruckig times each
+# corner (10^5 sharp waypoints took over 120 s), and the samples are allocated at once
+# (a period of 1e-9 s asked for 7.45 GiB). Planned paths have tens of waypoints, and a
+# 0.05 s period gives an hour of motion in 72,000 points.
+MAX_WAYPOINTS = 10_000
+MAX_RATE_LIMIT = 1e9  # [/s, /s^2, /s^3] ruckig fails on 1e300 (and on 1e-300: MIN_RATE_LIMIT)
+MAX_TRAJECTORY_POINTS = 200_000
 
 State = tuple[FloatArray, FloatArray, FloatArray]
 
@@ -83,8 +91,17 @@ def time_parameterize(
     Raises:
         MotionError: widths that do not match, non-finite values, a waypoint outside a
             position limit, a non-positive period or limit (each named).
+        MotionInputError: more than :data:`MAX_WAYPOINTS` waypoints, or more than
+            :data:`MAX_TRAJECTORY_POINTS` samples at this period.
     """
     names = tuple(joint_names)
+    if len(path) > MAX_WAYPOINTS:
+        raise MotionInputError(
+            f"the path has {len(path)} waypoints, more than the bound of {MAX_WAYPOINTS} "
+            "(MAX_WAYPOINTS); simplify it or time it in parts",
+            value=len(path),
+            bound=MAX_WAYPOINTS,
+        )
     points = checked_path(names, path, limits, period)
     distinct = [points[0]]
     for point in points[1:]:
@@ -160,8 +177,13 @@ def sampled_trajectory(
 ) -> JointTrajectory:
     """The pieces one after another (piece ``k`` from rest at ``stops[k]`` to rest at
     ``stops[k + 1]``), sampled every ``period`` [s] and at every stop (its exact position,
-    at rest)."""
+    at rest).
+
+    Raises:
+        MotionInputError: more than :data:`MAX_TRAJECTORY_POINTS` samples, before any is made.
+    """
     ends = np.cumsum([0.0] + [piece.duration for piece in pieces])
+    _check_sample_count(float(ends[-1]), period, len(ends))
     ticks = _with_breaks(_ticks(ends, period), ends, pieces)
     count, width = len(ticks) + len(ends), stops.shape[1]
     tick_rows = np.arange(len(ticks)) + ends.searchsorted(ticks)  # none is a stop
@@ -183,6 +205,20 @@ def sampled_trajectory(
         rates[0][rows] = values[1]
         rates[1][rows] = values[2]
     return JointTrajectory(robot, names, PointTable(positions, *rates, times), kind)
+
+
+def _check_sample_count(duration: float, period: float, stops: int) -> None:
+    """Refuse a trajectory of more than :data:`MAX_TRAJECTORY_POINTS` samples (its
+    periodic samples and its stops; the few jerk switches of each piece come on top)."""
+    count = duration / period + stops
+    if not count <= MAX_TRAJECTORY_POINTS:
+        raise MotionInputError(
+            f"{duration:.3g} s sampled every {period:g} s is {count:.3g} trajectory points, "
+            f"more than the bound of {MAX_TRAJECTORY_POINTS} (MAX_TRAJECTORY_POINTS); "
+            "sample less often (a larger period) or move less far",
+            value=count,
+            bound=MAX_TRAJECTORY_POINTS,
+        )
 
 
 def _with_breaks(ticks: FloatArray, ends: FloatArray, pieces: Sequence[TimedPiece]) -> FloatArray:
@@ -233,13 +269,15 @@ def checked_path(
         dtype=float,
     ).reshape(len(limits), 5)
     rates = bounds[:, 2:]
-    if not ((rates > 0.0) & (rates < math.inf)).all():  # positive and finite, NaN neither
+    if not ((rates >= MIN_RATE_LIMIT) & (rates <= MAX_RATE_LIMIT)).all():  # NaN neither
         for lim in limits:
             given = (lim.velocity, lim.acceleration, lim.jerk)
-            if not all(math.isfinite(v) and v > 0.0 for v in given):
-                raise MotionError(
+            if not all(MIN_RATE_LIMIT <= v <= MAX_RATE_LIMIT for v in given):
+                raise MotionInputError(
                     f"joint {lim.name!r} has velocity/acceleration/jerk limits {given}; "
-                    "each must be positive and finite"
+                    f"each must be positive and finite, from {MIN_RATE_LIMIT:g} (MIN_RATE_LIMIT) "
+                    f"to {MAX_RATE_LIMIT:g} (MAX_RATE_LIMIT): ruckig cannot time the others",
+                    joint=lim.name,
                 )
     if len(path) == 0:
         raise MotionError("the path has no waypoints; give at least the start")

@@ -25,6 +25,7 @@ from robocram.execution.failures import (
 )
 from robocram.kinematics import BaseMotion, IKResult, PlanarBase, base_in_ik, solve_ik
 from robocram.motion import ArmMotion, plan_arm_motion, plan_tool_line
+from robocram.motion.joint_goal import finite_goal
 from robocram.motion.reach_failure import unreachable
 from robocram.motion.tool_goal import (
     IK_RANDOM_SEED,
@@ -217,7 +218,8 @@ def move_joints(robot: ProjectedRobot, arm: str, configuration: object) -> dict[
         if joint not in allowed:
             raise unknown_name("joint", joint, f"{robot.name}'s {arm} arm", allowed)
     limits = {j: robot.world.joint_limits(robot.name, j) for j in values}
-    inside = {j: limits[j].clamp(float(v)) for j, v in values.items()}  # moved to, then failed
+    values = {j: finite_goal(j, v) for j, v in values.items()}  # inf is no limit to move to
+    inside = {j: limits[j].clamp(v) for j, v in values.items()}  # moved to, then failed
     what = f"{robot.name}'s {arm} arm"
     motion = plan_arm_motion(robot.world, robot.name, inside, settings=robot.motion, what=what)
     follow(robot, motion.trajectory)

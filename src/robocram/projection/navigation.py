@@ -25,6 +25,7 @@ from robocram.motion import (
     plan_base_path,
     time_parameterize,
 )
+from robocram.projection.errors import ProjectionError
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.projection.trajectory_follower import follow
 from robocram.tf import Pose, PoseLike, PoseStamped
@@ -53,7 +54,9 @@ def drive(
     start = robot.base_pose()
     goal = planar(robot.in_map(target), start.position[2])
     if not all(math.isfinite(v) for v in goal.position):
-        raise ValueError(f"navigation target {target!r} has a non-finite position")
+        raise ProjectionError(
+            f"navigation target {target!r} has a position that is not finite; give numbers"
+        )
     if robot.description.drive == "fixed" and (
         start.distance_to(goal) > FIXED_TOLERANCE or start.angle_to(goal) > FIXED_TOLERANCE
     ):

@@ -14,6 +14,7 @@ from robocram.execution.failures import (
     TorsoGoalNotReached,
     TorsoPathBlocked,
 )
+from robocram.motion.joint_goal import finite_goal
 from robocram.projection.errors import ProjectionError
 from robocram.projection.joint_motion import move_along_checked
 from robocram.projection.projected_robot import ProjectedRobot
@@ -38,9 +39,10 @@ def move_torso(robot: ProjectedRobot, goal: float) -> float:
         TorsoPathBlocked: the way there runs into something; the torso did not move.
         TorsoGoalNotReached: ``goal`` was outside the limits; the torso moved to the
             nearest limit.
+        MotionInputError: ``goal`` is not a finite number (nothing moved).
     """
     joint = torso_joint(robot)
-    value = float(goal)
+    value = finite_goal(joint, goal)
     limits = robot.world.joint_limits(robot.name, joint)
     inside = limits.clamp(value)
     start = robot.world.joint_states(robot.name)[joint]

@@ -87,6 +87,7 @@ def check_names(desc: RobotDescription, model: RobotModel) -> None:
         check.links([pt.pan_link, pt.tilt_link], "pan_tilt links")
         check.joints([pt.pan_joint, pt.tilt_joint], "pan_tilt joints")
     check.joints(desc.neck_parking, "neck_parking")
+    check.joints(desc.acceleration_limits, "acceleration_limits")
     if desc.neck_arm is not None and desc.neck_arm not in desc.arms:
         close = closest_names(desc.neck_arm, desc.arms)
         check.problems.append(NameProblem("arm", desc.neck_arm, "neck_arm", close))
@@ -128,12 +129,13 @@ def _replace_arm(
 
 
 def check_values(robot: str, model: RobotModel, states: Mapping[str, float]) -> None:
-    """Raise :class:`JointValueError` for a joint value outside the joint's limits."""
+    """Raise :class:`JointValueError` for a joint value that is not finite or lies outside
+    the joint's limits (a continuous joint's included: inf is no angle)."""
     for name, value in states.items():
         joint = model.joints[name]
         lower = -math.inf if joint.lower is None else joint.lower
         upper = math.inf if joint.upper is None else joint.upper
-        if not lower - _LIMIT_SLACK <= value <= upper + _LIMIT_SLACK:
+        if not (math.isfinite(value) and lower - _LIMIT_SLACK <= value <= upper + _LIMIT_SLACK):
             raise JointValueError(robot, name, value, lower, upper)
 
 

@@ -113,6 +113,21 @@ class JointValueError(DescriptionError):
         )
 
 
+class LimitValueError(DescriptionError):
+    """A limit a description gives (an acceleration limit) is no usable rate."""
+
+    def __init__(self, robot: str, joint: str, what: str, value: float, bound: float) -> None:
+        self.robot = robot
+        self.joint = joint
+        self.what = what
+        self.value = value
+        self.bound = bound
+        super().__init__(
+            f"{robot}: {what} {value} for joint {joint!r} is not a finite number of at least "
+            f"{bound:g} (MIN_RATE_LIMIT); give the joint's real limit"
+        )
+
+
 def closest_names(name: str, candidates: Iterable[str], n: int = 3) -> tuple[str, ...]:
     """Names among ``candidates`` closest to ``name``: typos first, then substring matches."""
     pool = list(candidates)

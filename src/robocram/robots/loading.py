@@ -22,6 +22,7 @@ from robocram.robots.description_check import (
 from robocram.robots.description_source import description_from
 from robocram.robots.errors import DescriptionCheckError
 from robocram.robots.findings import warn
+from robocram.robots.limit_check import check_acceleration_limits, check_rate_limits
 from robocram.robots.package_resolver import PackageResolver
 from robocram.robots.robot_model import MODELS, RobotModel
 
@@ -41,6 +42,7 @@ def load_description(
             fault of the semantic checks (a tool frame pointing back, swapped heights, ...).
         GripperDescriptionError: a gripper that cannot open or close.
         JointValueError: a parking, carrying or neck value lies outside its joint limits.
+        LimitValueError: an acceleration limit that is not finite and positive.
         UrdfError: the URDF cannot be read.
     """
     if isinstance(name_or_desc, str):
@@ -55,6 +57,8 @@ def load_description(
     paths = tuple(dict.fromkeys([*desc.package_paths, *(Path(p) for p in package_paths)]))
     model = desc.model or _shared_model(desc, paths)
     check_names(desc, model)
+    check_rate_limits(model)
+    check_acceleration_limits(desc.name, desc.acceleration_limits)
     arms = {
         key: derive_arm(desc.name, infer_arm(arm, model), model) for key, arm in desc.arms.items()
     }

@@ -71,6 +71,15 @@ def _check_inside(uri: str, package: str, rest: str) -> None:
         raise PackagePathError(uri, package, f"{rest!r} leaves the folder of {package!r}")
 
 
+def _check_relative_inside(uri: str, base_dir: Path, resolved: Path) -> None:
+    """Refuse a relative path that climbs out of the package holding the URDF (the nearest
+    folder with a ``package.xml``), as ``package://`` paths may not leave theirs."""
+    base = base_dir.resolve()
+    package = next((p for p in (base, *base.parents) if (p / "package.xml").is_file()), None)
+    if package is not None and not resolved.is_relative_to(package):
+        raise PackagePathError(uri, package.name, f"{uri!r} leaves the folder of {package.name!r}")
+
+
 @dataclass(frozen=True)
 class PackageResolver:
     """Turns ``package://`` URIs into absolute paths.
@@ -116,5 +125,7 @@ class PackageResolver:
             return Path(uri[len("file://") :])
         path = Path(uri)
         if not path.is_absolute() and base_dir is not None:
-            path = base_dir / path
+            resolved = (base_dir / path).resolve()
+            _check_relative_inside(uri, base_dir, resolved)
+            return resolved
         return path.resolve()

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import dataclasses
 import warnings
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TypeVar, cast
@@ -26,6 +26,7 @@ from robocram.robots.urdf_writer import write_urdf
 _FRAME_INERTIA = Inertial(0.001, (1e-9, 0.0, 0.0, 1e-9, 0.0, 1e-9))
 
 T = TypeVar("T")
+MIMIC_BOUND = 1e3  # largest |multiplier| [-] and |offset| [rad | m] of a mimic joint
 
 
 def kinematic_loop(links: Iterable[str], parent_joint: dict[str, Joint]) -> list[Joint]:
@@ -45,6 +46,23 @@ def kinematic_loop(links: Iterable[str], parent_joint: dict[str, Joint]) -> list
             path.append(link)
             joint = parent_joint.get(link)
             link = None if joint is None else joint.parent
+        done.update(path)
+    return []
+
+
+def mimic_loop(joints: Mapping[str, Joint]) -> list[str]:
+    """The joints of one loop of mimic masters (each followed by the joint it mimics), or
+    ``[]``; masters that are not joints end a chain (reported elsewhere)."""
+    done: set[str] = set()
+    for start in joints:
+        path: list[str] = []
+        name: str | None = start
+        while name is not None and name not in done:
+            if name in path:
+                return path[path.index(name) :]
+            path.append(name)
+            joint = joints.get(name)
+            name = None if joint is None or joint.mimic is None else joint.mimic.joint
         done.update(path)
     return []
 
@@ -97,6 +115,31 @@ class RobotModel:
                 raise self._unknown(
                     "joint", joint.mimic.joint, self.joints, f"mimic of {joint.name!r}"
                 )
+        self._check_mimics()
+
+    def _check_mimics(self) -> None:
+        """Refuse a mimic whose factors are past :data:`MIMIC_BOUND`, and mimic loops
+        (joints following each other have no value)."""
+        for joint in self.joints.values():
+            mimic = joint.mimic
+            if mimic is None:
+                continue
+            for what, value in (("multiplier", mimic.multiplier), ("offset", mimic.offset)):
+                if abs(value) > MIMIC_BOUND:
+                    raise UrdfError(
+                        self.source,
+                        f"joint {joint.name!r} mimics {mimic.joint!r} with {what} {value:g}, "
+                        f"beyond the bound of {MIMIC_BOUND:g} (MIMIC_BOUND); give the real "
+                        "gear ratio",
+                    )
+        loop = mimic_loop(self.joints)
+        if loop:
+            path = " -> ".join(repr(name) for name in [*loop, loop[0]])
+            raise UrdfError(
+                self.source,
+                f"mimic joints follow each other in a loop ({path}); one of them must be "
+                "a master: remove its <mimic>",
+            )
 
     def _unknown(self, kind: str, name: str, pool: Iterable[str], where: str) -> UrdfError:
         close = closest_names(name, pool)

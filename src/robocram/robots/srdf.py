@@ -9,6 +9,7 @@ here, naming the element, rather than as a strange draft.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Collection, Mapping
 from dataclasses import dataclass
 from pathlib import Path
@@ -17,6 +18,8 @@ from robocram.robots.errors import DescriptionError, SrdfError, UrdfError, close
 from robocram.robots.robot_model import RobotModel
 from robocram.robots.safe_xml import XmlNode, decode_xml, parse_xml
 from robocram.robots.urdf_elements import Joint
+
+_LIMIT_SLACK = 1e-6  # [rad | m] a state this far past a limit is at it (as descriptions)
 
 
 @dataclass(frozen=True)
@@ -134,13 +137,30 @@ class _Reader:
             if joint.attrib.get("name") in self.virtual:
                 continue  # the base's pose, not a joint of the URDF
             name = self.name(joint, "name", "joint")
-            text = self.attr(joint, "value").split()
-            try:
-                values[name] = float(text[0])
-            except ValueError as err:
-                raise self.fail(joint, f"value {text[0]!r} is no number; give one") from err
+            values[name] = self.joint_value(joint, name)
         group = self.name(node, "group", "group")
         return SrdfState(self.attr(node, "name"), group, values)
+
+    def joint_value(self, node: XmlNode, name: str) -> float:
+        """The ``value`` of a group state's joint: a finite number within its limits (the
+        state may become a parking pose)."""
+        text = self.attr(node, "value").split()
+        if not text:
+            raise self.fail(node, f"joint {name!r} has a blank value; give a number")
+        try:
+            value = float(text[0])
+        except ValueError as err:
+            raise self.fail(node, f"value {text[0]!r} is no number; give one") from err
+        joint = self.model.joints[name]
+        lower = -math.inf if joint.lower is None else joint.lower
+        upper = math.inf if joint.upper is None else joint.upper
+        if not (math.isfinite(value) and lower - _LIMIT_SLACK <= value <= upper + _LIMIT_SLACK):
+            raise self.fail(
+                node,
+                f"value {text[0]!r} of joint {name!r} is not a finite number within its "
+                f"limits [{lower}, {upper}]; give one",
+            )
+        return value
 
     def end_effector(self, node: XmlNode) -> SrdfEndEffector:
         parent_group = None

@@ -28,6 +28,8 @@ from robocram.tf import Pose
 
 _DEFAULT_BOX = 0.05  # [m] edge of a stand-in box when nothing tells the link's size
 _MIN_AXIS = 1e-9  # a joint axis shorter than this has no direction
+# Mesh formats PyBullet or trimesh read: a mesh named otherwise (../../etc/passwd) is refused
+MESH_SUFFIXES = frozenset({".stl", ".dae", ".obj", ".ply", ".off", ".glb", ".gltf", ".3mf"})
 
 
 @dataclass
@@ -110,6 +112,11 @@ class _Reader:
                 raise
             self.missing_packages.append(err.package)
             return stand_in()
+        if path.suffix.lower() not in MESH_SUFFIXES:
+            raise self.fail(
+                shape,
+                f"mesh {uri!r} is no mesh file; give one of {', '.join(sorted(MESH_SUFFIXES))}",
+            )
         if not path.is_file():
             self.missing_meshes.append(uri)
             return stand_in()

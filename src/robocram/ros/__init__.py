@@ -20,6 +20,7 @@ from robocram.ros.errors import (  # noqa: E402 - only once the extra is known t
     RosConnectionLost,
     RosError,
     RosExtraMissing,
+    RosJointStateInvalid,
     RosMasterUnreachable,
     RosNodeError,
 )
@@ -67,6 +68,7 @@ __all__ = [
     "RosConfig",
     "RosConfigError",
     "RosConnectionLost",
+    "RosJointStateInvalid",
     "RosEnvironment",
     "RosError",
     "RosExtraMissing",

@@ -41,6 +41,16 @@ class RosConnectionLost(LowLevelFailure):
     hint = "check that the robot's driver and the ROS master are running, then retry"
 
 
+class RosJointStateInvalid(LowLevelFailure):
+    """The robot reported a joint position that is not a finite number."""
+
+    topic: str | None = None
+    joint: str | None = None
+    value: float | None = None
+    summary = "the robot reported a joint state that is not a number"
+    hint = "check the robot's driver and the joint's encoder; nothing was sent"
+
+
 class RosMasterUnreachable(RosNodeError):
     """No ROS master answered at the URI within the master timeout."""
 

@@ -32,6 +32,7 @@ from robocram.motion.collision_modes import (
     allowed_links,
     ik_collision_check,
 )
+from robocram.motion.joint_goal import finite_goal, motion_goal
 from robocram.robots import LoadedDescription
 from robocram.ros.errors import RosCommandError, RosConfigError
 from robocram.tf import Pose
@@ -79,7 +80,7 @@ def clamp_goal(desc: LoadedDescription, goal: Mapping[str, float]) -> ClampedGoa
         spec = desc.model.joints.get(joint)
         if spec is None or not spec.movable:
             raise RosCommandError(f"{joint!r} is not a movable joint of {desc.name}")
-        asked = float(value)
+        asked = finite_goal(joint, value)
         low, high = _bounds((spec.lower, spec.upper))
         soft_low, soft_high = _bounds(spec.working_limits)
         clamped[joint] = min(max(asked, soft_low), soft_high)
@@ -140,7 +141,7 @@ class MotionPlanner:
                 min(max(current[j], lim.lower), lim.upper)
                 for j, lim in zip(joints, limits, strict=True)
             ]
-            end = [float(goal[j]) for j in joints]
+            end = motion_goal(self.desc, joints, start, goal)
             return time_parameterize(self.desc.name, joints, [start, end], limits, kind=kind)
         mode = _mode(mode)
         settings = replace(self.settings, check=False) if mode == "allow_all" else self.settings

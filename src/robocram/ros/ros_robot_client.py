@@ -9,6 +9,7 @@ with a world, the world is then put into that state (``world_mirror.py``).
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Mapping
 
 from robocram.motion import JointTrajectory, MotionSettings, report_executed
@@ -18,6 +19,7 @@ from robocram.ros.errors import (
     RosCancelIgnored,
     RosCommandError,
     RosConnectionLost,
+    RosJointStateInvalid,
     RosNodeError,
 )
 from robocram.ros.goal_runner import Accept, FailureFactory, checked, finish_goal
@@ -256,8 +258,23 @@ class RosRobotClient:
             )
 
     def joint_states(self) -> dict[str, float]:
-        """The latest joint positions [rad | m]."""
-        return self.transport.joint_states()
+        """The latest joint positions [rad | m].
+
+        Raises:
+            RosJointStateInvalid: a position is not a finite number (naming the topic
+                and the joint): a plan must not start from it.
+        """
+        states = self.transport.joint_states()
+        for joint, value in states.items():
+            if not math.isfinite(value):
+                topic = self.config.joint_states_topic
+                raise RosJointStateInvalid(
+                    f"{self.name} reported {joint!r} at {value} on {topic}",
+                    topic=topic,
+                    joint=joint,
+                    value=value,
+                )
+        return states
 
     def actuated_joint_states(self) -> dict[str, float]:
         """The latest positions of the joints that are not mimic joints (IK and FK seeds)."""

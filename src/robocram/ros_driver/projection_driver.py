@@ -8,7 +8,8 @@ result, with the joint states of each articulated environment (the kitchen's dra
 doors) on ``/<name>/joint_states``, as iai_kitchen publishes them. ``fault`` makes every
 goal end badly on purpose, to exercise clients: ``"silent"`` never answers (until
 cancelled), ``"abort"`` aborts with a status text, ``"ignore_cancel"`` never answers and
-ignores cancels. ``controllers="pr2"`` behaves as the real PR2's controllers
+ignores cancels; ``"nan_joint_state"`` publishes the torso's position as NaN.
+``controllers="pr2"`` behaves as the real PR2's controllers
 (``pr2_controllers.py``: a gripper gap in metres that stalls on objects, joints clamped
 to the soft limits, results without status text); ``clock_offset`` [s] shifts the stamps
 of everything published, as a robot clock ahead (+) or behind (-) of ours.
@@ -17,6 +18,7 @@ of everything published, as a robot clock ahead (+) or behind (-) of ours.
 from __future__ import annotations
 
 import json
+import math
 import threading
 import time
 from collections.abc import Callable
@@ -35,7 +37,8 @@ from robocram.ros_driver.motion import MotionOptions, Stepper
 from robocram.world import RobotObject, World
 
 PUBLISH_RATE = 30.0  # [Hz]
-FAULTS = ("none", "silent", "abort", "ignore_cancel")
+FAULTS = ("none", "silent", "abort", "ignore_cancel", "nan_joint_state")
+NAN_JOINT = "torso_lift_joint"  # fault="nan_joint_state": its position is published as NaN
 CONTROLLERS = ("projection", "pr2")
 Handler = Callable[[Any, goals.GoalContext], goals.Outcome]
 
@@ -217,6 +220,8 @@ class ProjectionDriver:
             poses = self.frames.frame_poses()
             environments = {e: self.world.joint_states(e) for e in self.environments}
         stamp = rospy.Time.now() + rospy.Duration.from_sec(self.clock_offset)
+        if self.fault == "nan_joint_state" and NAN_JOINT in joints:  # an encoder gone bad
+            joints = {**joints, NAN_JOINT: math.nan}
         state = JointState(name=list(joints), position=list(joints.values()))
         state.header.stamp = stamp
         transforms = []

@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Literal
 
+from robocram.logic import name_atom
 from robocram.scenes.stand_in import StandIn
 
 ContainerKind = Literal["drawer", "door"]
@@ -73,22 +74,16 @@ class EnvironmentDescription:
 
     def facts(self, environment: str | None = None) -> str:
         """The KB facts (Prolog text) for this environment, named ``environment``."""
-        env = _atom(environment or self.name)
-        lines = [f"supporting_surface({env}, {_atom(s.link)})." for s in self.surfaces]
+        env = name_atom(environment or self.name)
+        lines = [f"supporting_surface({env}, {name_atom(s.link)})." for s in self.surfaces]
         for c in self.containers:
-            link = _atom(c.link)
-            lines.append(f"container({env}, {link}, {_atom(c.joint)}, {_atom(c.handle)}).")
-            lines.append(f"container_kind({env}, {link}, {c.kind}).")
+            link = name_atom(c.link)
+            lines.append(f"container({env}, {link}, {name_atom(c.joint)}, {name_atom(c.handle)}).")
+            lines.append(f"container_kind({env}, {link}, {name_atom(c.kind)}).")
             lines.append(f"container_opening({env}, {link}, {float(c.opening)!r}).")
             lines.append(f"container_front({env}, {link}, {float(c.front)!r}).")
         lines += [
-            f"usual_location({_atom(t)}, {env}, {_atom(p)})." for t, p in self.usual_locations
+            f"usual_location({name_atom(t)}, {env}, {name_atom(p)})."
+            for t, p in self.usual_locations
         ]
         return "\n".join(lines) + "\n"
-
-
-def _atom(name: str) -> str:
-    """``name`` as a Prolog atom, quoted unless it is a plain lower-case identifier."""
-    if name[:1].islower() and all(ch.isalnum() or ch == "_" for ch in name):
-        return name
-    return "'" + name.replace("\\", "\\\\").replace("'", "\\'") + "'"

@@ -10,16 +10,19 @@ from __future__ import annotations
 import hashlib
 import math
 import tempfile
+import warnings
 from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from robocram.robots import MissingMeshWarning, RobotModel
 from robocram.robots.safe_xml import XmlNode, decode_xml, parse_xml
 from robocram.scenes.errors import SceneError
 from robocram.scenes.stand_in import StandIn
 from robocram.tf import Pose, Vector3
 from robocram.tf import quaternion as quat
+from robocram.world.robot_urdf import check_link_count
 
 if TYPE_CHECKING:
     import xml.etree.ElementTree as ET
@@ -75,11 +78,17 @@ class EnvironmentModel:
     def from_file(cls, path: str | Path) -> EnvironmentModel:
         """Read the URDF at ``path``.
 
+        The robots' URDF door reads it first, so an environment is refused for what a
+        robot's URDF is: a link with two parents, a loop, an undefined link, numbers that
+        are not finite, crossed limits (and the tree walks below always end).
+
         Raises:
-            UrdfError: malformed or unsafe XML.
-            SceneError: no links, or not a tree.
+            UrdfError: malformed or unsafe XML, or not a tree (naming the link or joints).
+            TooManyLinksError: more links than PyBullet holds (``MAX_LINKS``).
+            SceneError: no links.
         """
         file = Path(path)
+        check_urdf(file)
         root = parse_xml(decode_xml(file.read_bytes(), file), file)
         boxes = {n.attrib["name"]: tuple(_boxes(n)) for n in root.findall("link")}
         meshes = {n.attrib["name"]: _count_meshes(n) for n in root.findall("link")}
@@ -136,6 +145,20 @@ class EnvironmentModel:
                 return True
             link = self.joints[link].parent
         return False
+
+
+def check_urdf(file: Path) -> RobotModel:
+    """Read ``file`` through the robots' URDF door: the checks every URDF passes.
+
+    Missing meshes and packages are the draft's to report (as unfound links), not warned
+    about here. A file with more links than PyBullet holds is refused before the draft's
+    walks (quadratic in the links) start: it could not be loaded anyway.
+    """
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", MissingMeshWarning)
+        model = RobotModel.from_file(file, missing_packages_as_boxes=True)
+    check_link_count(model.name, str(file), model)
+    return model
 
 
 def _floats(text: str | None, default: tuple[float, ...]) -> tuple[float, ...]:

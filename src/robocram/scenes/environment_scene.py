@@ -11,6 +11,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass
 
+from robocram.logic import name_atom
 from robocram.robots import RobotDescription, load_description
 from robocram.scenes.environment_description import EnvironmentDescription
 from robocram.scenes.environment_model import loadable_urdf
@@ -76,13 +77,27 @@ def environment_scene(
     park_arms(world, robot_name)
     placed = list(items)
     objects = {p.name: place_item(world, name, p) for p in placed}
-    known = {kind for kind, _ in environment.usual_locations}
-    usual = sorted(
-        {f"usual_location({p.kind}, {name}, {p.link})." for p in placed if p.kind not in known}
-    )
+    usual = usual_location_facts(environment, placed, name)
     if usual:
-        world.kb.consult("\n".join(usual), group=f"{name}_contents")
+        world.kb.consult(usual, group=f"{name}_contents")
     return EnvironmentScene(world, robot_name, name, objects)
+
+
+def usual_location_facts(
+    environment: EnvironmentDescription, placed: Iterable[ItemPlace], name: str
+) -> str:
+    """The ``usual_location/3`` facts (Prolog text) of items whose kind has no usual place.
+
+    Every name is written by :func:`name_atom`, so a link named ``X`` stays that link.
+    """
+    known = {kind for kind, _ in environment.usual_locations}
+    env = name_atom(name)
+    usual = {
+        f"usual_location({name_atom(p.kind)}, {env}, {name_atom(p.link)})."
+        for p in placed
+        if p.kind not in known
+    }
+    return "".join(f"{fact}\n" for fact in sorted(usual))
 
 
 def place_item(world: World, environment: str, place: ItemPlace) -> WorldObject:

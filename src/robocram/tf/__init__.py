@@ -1,6 +1,6 @@
 """Frames and poses: positions [m], quaternions (x, y, z, w), stamped poses and transforms."""
 
-from robocram.tf.errors import RosMessageError, TfError, TransformError
+from robocram.tf.errors import PoseValueError, RosMessageError, TfError, TransformError
 from robocram.tf.pose import Pose, PoseLike, Vector3
 from robocram.tf.quaternion import Quaternion
 from robocram.tf.ros_messages import (
@@ -23,6 +23,7 @@ __all__ = [
     "Pose",
     "PoseLike",
     "PoseStamped",
+    "PoseValueError",
     "Quaternion",
     "RosMessageError",
     "TfError",

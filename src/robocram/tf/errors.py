@@ -36,6 +36,12 @@ class RosMessageError(TfError, ValueError):
         self.path = path
 
 
+class PoseValueError(TfError, ValueError):
+    """A position, orientation or pose given with values no pose has: the wrong count of
+    components, a component that is not finite, a quaternion of no length. Always the
+    giver's mistake: a process module reports it as its caller's, not as its own bug."""
+
+
 def closest_names(name: str, candidates: Iterable[str], n: int = 3) -> list[str]:
     """Return up to ``n`` names of ``candidates`` that look like ``name`` (for "did you mean")."""
     pool = list(candidates)

@@ -16,6 +16,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from robocram.tf import quaternion as quat
+from robocram.tf.errors import PoseValueError
 
 Vector3 = tuple[float, float, float]
 PoseLike = Union["Pose", Sequence[float], tuple[Sequence[float], Sequence[float]]]
@@ -23,10 +24,10 @@ PoseLike = Union["Pose", Sequence[float], tuple[Sequence[float], Sequence[float]
 
 def _vector3(v: Sequence[float], what: str) -> Vector3:
     if len(v) != 3:
-        raise ValueError(f"{what} needs 3 components (x, y, z) [m], got {len(v)}: {v!r}")
+        raise PoseValueError(f"{what} needs 3 components (x, y, z) [m], got {len(v)}: {v!r}")
     x, y, z = float(v[0]), float(v[1]), float(v[2])
     if not (math.isfinite(x) and math.isfinite(y) and math.isfinite(z)):  # poses are hot
-        raise ValueError(f"{what} {v!r} has a non-finite component")
+        raise PoseValueError(f"{what} {v!r} has a non-finite component")
     return (x, y, z)
 
 

@@ -10,6 +10,8 @@ import math
 import numpy as np
 from numpy.typing import NDArray
 
+from robocram.tf.errors import PoseValueError
+
 Quaternion = tuple[float, float, float, float]
 IDENTITY: Quaternion = (0.0, 0.0, 0.0, 1.0)
 
@@ -17,11 +19,13 @@ IDENTITY: Quaternion = (0.0, 0.0, 0.0, 1.0)
 def normalized(q: tuple[float, ...] | list[float]) -> Quaternion:
     """Return ``q`` scaled to unit length; raise on a zero or non-4 vector."""
     if len(q) != 4:
-        raise ValueError(f"a quaternion has 4 components (x, y, z, w), got {len(q)}: {q!r}")
+        raise PoseValueError(f"a quaternion has 4 components (x, y, z, w), got {len(q)}: {q!r}")
     x, y, z, w = float(q[0]), float(q[1]), float(q[2]), float(q[3])
     n = math.sqrt(x * x + y * y + z * z + w * w)  # the same sum, bit for bit, as ever
-    if n < 1e-12 or not math.isfinite(n):
-        raise ValueError(f"quaternion {q!r} has no direction; use (0, 0, 0, 1) for no rotation")
+    if not math.isfinite(n):
+        raise PoseValueError(f"quaternion {q!r} has a component that is not finite")
+    if n < 1e-12:
+        raise PoseValueError(f"quaternion {q!r} has no direction; use (0, 0, 0, 1) for no rotation")
     return (x / n, y / n, z / n, w / n)
 
 

@@ -22,6 +22,8 @@ if TYPE_CHECKING:  # the names, for type checkers; at run time each loads on fir
     from robocram.traces.database import TraceDatabase
     from robocram.traces.errors import (
         DamagedTrace,
+        DamagedTrajectory,
+        DamagedTrajectoryWarning,
         MissingRobotDescription,
         NoSceneStored,
         NotATraceDatabase,
@@ -62,6 +64,8 @@ _WHERE = {  # name -> the module that defines it: `robocram runs list` needs no 
     "AuditFinding": "robocram.traces.audit_findings",
     "AuditReport": "robocram.traces.audit_findings",
     "DamagedTrace": "robocram.traces.errors",
+    "DamagedTrajectory": "robocram.traces.errors",
+    "DamagedTrajectoryWarning": "robocram.traces.errors",
     "DurationStats": "robocram.traces.queries",
     "FailureRecord": "robocram.traces.queries",
     "FindingKind": "robocram.traces.audit_findings",
@@ -137,6 +141,8 @@ __all__ = [
     "AuditFinding",
     "AuditReport",
     "DamagedTrace",
+    "DamagedTrajectory",
+    "DamagedTrajectoryWarning",
     "DurationStats",
     "FailureRecord",
     "FindingKind",

@@ -122,3 +122,19 @@ class RobotNotRebuilt(TraceError):  # noqa: N818 - reads as what went wrong
             "'FILE.py'}} in code)"
         )
         self.robot, self.source, self.problem = robot, source, problem
+
+
+class DamagedTrajectory(TraceError):  # noqa: N818 - reads as what the row is
+    """A stored trajectory row that does not decode to a trajectory: bad JSON, a truncated
+    blob, numbers that are not finite, times running backwards."""
+
+    def __init__(self, run: int, trajectory: int, reason: str) -> None:
+        super().__init__(
+            f"run {run}, trajectory {trajectory}: the stored row is damaged ({reason}); "
+            "record the run again (replays skip the row)"
+        )
+        self.run, self.trajectory, self.reason = run, trajectory, reason
+
+
+class DamagedTrajectoryWarning(UserWarning):
+    """A replay skipped a damaged trajectory row (the message names the run and the row)."""

@@ -26,6 +26,7 @@ import json
 import warnings
 from collections.abc import Iterable, Mapping
 from pathlib import Path
+from typing import Any
 
 from robocram.traces.database import TraceDatabase
 from robocram.traces.errors import MissingRobotDescription, TraceError
@@ -43,6 +44,7 @@ from robocram.traces.tf_frames import (
     static_transforms,
     world_frames,
 )
+from robocram.traces.trajectory_record import run_trajectories
 from robocram.traces.world_record import build_scene
 from robocram.world import World
 
@@ -69,6 +71,11 @@ def export_mcap(
     files by robot name, for robots whose file moved since the run (see
     :func:`~robocram.traces.world_record.build_scene`).
 
+    The file appears only once it is whole: written beside ``out`` first, then renamed.
+
+    Raises:
+        DamagedTrajectory: a stored trajectory of the run is damaged (nothing is written).
+
     Warns:
         MissingRobotDescription: the trace stored no URDF of the run's robot (written by
             an older robocram); the rest is exported without ``/robot_description``.
@@ -84,9 +91,31 @@ def export_mcap(
     if row.scene is None:
         raise TraceError(f"run {run} stored no scene; trace with trace_to(db, world=world)")
     urdf = _robot_description(db, run, row.scene)
+    run_trajectories(db, run)  # a damaged row is refused before any file is made
+    target = Path(out)
+    part = target.with_name(f".{target.name}.part")
+    try:
+        written = _write(db, run, row.scene, urdf, part, period, Writer, robots)
+        part.replace(target)
+    finally:
+        part.unlink(missing_ok=True)  # no stub is left where the export failed
+    return written
+
+
+def _write(
+    db: TraceDatabase,
+    run: int,
+    scene: str,
+    urdf: str | None,
+    out: Path,
+    period: float,
+    writer_class: type[Any],
+    robots: Mapping[str, str] | None,
+) -> int:
+    """Write the run's messages to ``out``; return how many."""
     written = 0
-    with build_scene(row.scene, robots=robots) as world, open(out, "wb") as stream:
-        writer = Writer(stream)
+    with build_scene(scene, robots=robots) as world, open(out, "wb") as stream:
+        writer = writer_class(stream)
         schemas = {name: writer.register_msgdef(name, message_definition(name)) for name in SCHEMAS}
         bodies = world_frames(world)
         for index, frame in enumerate(replay_frames(db, run, world, period)):

@@ -50,11 +50,14 @@ def replay_frames(
     Raises:
         UnknownRun: no run ``run`` in ``db``.
         TraceError: a non-positive period, or a trajectory of a robot ``world`` lacks.
+
+    Warns:
+        DamagedTrajectoryWarning: a damaged trajectory row was skipped (named).
     """
     if not period > 0.0:
         raise TraceError(f"the replay sampling period must be positive, got {period} s")
     start = require_run(db, run).start
-    trajectories = run_trajectories(db, run)
+    trajectories = run_trajectories(db, run, skip_damaged=True)  # the rest still replays
     states = world_state_times(db, run)
     clock = ReplayClock(
         start, [(t.time, t.duration) for t in trajectories], [t for _, t, _ in states]

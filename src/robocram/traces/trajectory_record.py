@@ -9,6 +9,7 @@ Points are stored as exact float64 arrays, one row per trajectory.
 from __future__ import annotations
 
 import json
+import warnings
 from dataclasses import dataclass, replace
 from pathlib import Path
 
@@ -18,6 +19,7 @@ from sqlalchemy import select
 
 from robocram.motion import CarriedJoint, ContactAllowance, JointTrajectory, TrajectoryPoint
 from robocram.traces.database import TraceDatabase
+from robocram.traces.errors import DamagedTrajectory, DamagedTrajectoryWarning
 from robocram.traces.queries import require_run, world_state_times
 from robocram.traces.replay_clock import ReplayClock, replay_starts
 from robocram.traces.schema import TaskRow, TrajectoryRow
@@ -78,17 +80,23 @@ def trajectory_row(
     }
 
 
-def run_trajectories(db: TraceDatabase | str | Path, run: int) -> list[StoredTrajectory]:
+def run_trajectories(
+    db: TraceDatabase | str | Path, run: int, skip_damaged: bool = False
+) -> list[StoredTrajectory]:
     """The trajectories run ``run`` executed, in execution order.
 
     ``db`` is an open database or the path of one (opened for this query only).
+    ``skip_damaged``: leave out rows that do not decode, each with a
+    :class:`DamagedTrajectoryWarning` naming it (a replay shows the rest).
 
     Raises:
         UnknownRun: the database has no run ``run`` (the message lists those it has).
+        DamagedTrajectory: a row does not decode (unless ``skip_damaged``); it names the
+            run and the trajectory.
     """
     if not isinstance(db, TraceDatabase):
         with TraceDatabase(db, create=False) as opened:
-            return run_trajectories(opened, run)
+            return run_trajectories(opened, run, skip_damaged)
     run_start = require_run(db, run).start
     query = (
         select(TrajectoryRow, TaskRow.path)
@@ -98,7 +106,7 @@ def run_trajectories(db: TraceDatabase | str | Path, run: int) -> list[StoredTra
     )
     with db.read() as session:
         rows = [(row, path) for row, path in session.execute(query)]
-    loaded = [_loaded(row, path) for row, path in rows]
+    loaded = [t for t in (_checked(row, path, skip_damaged) for row, path in rows) if t]
     states = [time for _, time, _ in world_state_times(db, run)]
     starts = replay_starts(run_start, [(t.time, t.duration) for t in loaded], states)
     return [replace(t, start=start - run_start) for t, start in zip(loaded, starts, strict=True)]
@@ -111,12 +119,29 @@ def replay_clock(db: TraceDatabase, run: int) -> ReplayClock:
     return ReplayClock(require_run(db, run).start, reported, states)
 
 
+def _checked(row: TrajectoryRow, path: str | None, skip: bool) -> StoredTrajectory | None:
+    """The row's trajectory; None for a damaged row when ``skip`` (with a warning)."""
+    try:
+        return _loaded(row, path)
+    except DamagedTrajectory as damaged:
+        if not skip:
+            raise
+        warnings.warn(f"skipped: {damaged}", DamagedTrajectoryWarning, stacklevel=4)
+        return None
+
+
 def _loaded(row: TrajectoryRow, path: str | None) -> StoredTrajectory:
-    names = tuple(json.loads(row.joint_names))
-    times = np.frombuffer(row.times, dtype="<f8")
-    shape = (len(times), len(names))
-    columns = [_unpack(data, shape) for data in (row.positions, row.velocities)]
-    columns.append(_unpack(row.accelerations, shape))
+    """The row as a trajectory, after checking everything it decodes to.
+
+    Raises:
+        DamagedTrajectory: naming the run, the trajectory and what is wrong with the row.
+    """
+    try:
+        names, times, columns = _decoded(row)
+        allowed = _allowances(row.allowed_contacts)
+        carried = _carried(row.carried)
+    except (ValueError, TypeError, KeyError) as err:  # json.JSONDecodeError is a ValueError
+        raise DamagedTrajectory(row.run_id, row.sequence, str(err)) from err
     points = tuple(
         TrajectoryPoint(
             tuple(columns[0][i].tolist()),
@@ -135,9 +160,42 @@ def _loaded(row: TrajectoryRow, path: str | None) -> StoredTrajectory:
         task_path=path,
         time=row.time,
         start=0.0,
-        allowed_contacts=_allowances(row.allowed_contacts),
-        carried=_carried(row.carried),
+        allowed_contacts=allowed,
+        carried=carried,
     )
+
+
+def _decoded(
+    row: TrajectoryRow,
+) -> tuple[tuple[str, ...], NDArray[np.float64], list[NDArray[np.float64]]]:
+    """Joint names, times and (positions, velocities, accelerations) of a row, checked:
+    whole float64 blobs of one row per point, finite numbers, times never going back."""
+    names = json.loads(row.joint_names)
+    if not isinstance(names, list) or not all(isinstance(n, str) for n in names):
+        raise ValueError(f"joint names {row.joint_names!r} are not a JSON list of names")
+    times = _floats(row.times, "times")
+    shape = (len(times), len(names))
+    columns = [
+        _rows(_floats(data, what), shape, what, empty_ok=what != "positions")
+        for data, what in (
+            (row.positions, "positions"),
+            (row.velocities, "velocities"),
+            (row.accelerations, "accelerations"),
+        )
+    ]
+    if len(times) and not (np.diff(times) >= 0.0).all():
+        raise ValueError("its times run backwards")
+    return tuple(names), times, columns
+
+
+def _floats(data: bytes, what: str) -> NDArray[np.float64]:
+    """A blob of float64s, all finite."""
+    if len(data) % 8:
+        raise ValueError(f"its {what} blob of {len(data)} bytes is cut short")
+    values = np.frombuffer(data, dtype="<f8")
+    if not np.isfinite(values).all():
+        raise ValueError(f"its {what} hold numbers that are not finite")
+    return values
 
 
 def _allowances_text(allowances: tuple[ContactAllowance, ...]) -> str | None:
@@ -175,7 +233,10 @@ def _pack(values: ArrayLike) -> bytes:
     return np.ascontiguousarray(values, dtype="<f8").tobytes()
 
 
-def _unpack(data: bytes, shape: tuple[int, int]) -> NDArray[np.float64]:
+def _rows(
+    values: NDArray[np.float64], shape: tuple[int, int], what: str, empty_ok: bool
+) -> NDArray[np.float64]:
     """Rows of one point each; velocities a driver left empty come back empty."""
-    values = np.frombuffer(data, dtype="<f8")
+    if values.size != shape[0] * shape[1] and not (empty_ok and values.size == 0):
+        raise ValueError(f"its {what} hold {values.size} numbers, not {shape[0]} x {shape[1]}")
     return values.reshape(shape[0], -1) if shape[0] else values.reshape(shape)

@@ -15,7 +15,7 @@ from robocram.execution.environment import Environment
 from robocram.execution.perform import register_plan
 from robocram.execution.process_module import ProcessModule
 from robocram.execution.process_module_matching import install_process_module_interface
-from robocram.logic import KnowledgeBase
+from robocram.logic import KnowledgeBase, name_atom
 from robocram.turtlesim.locations import turtle_location_resolver
 from robocram.turtlesim.plans import draw_house, navigate
 from robocram.turtlesim.process_modules import (
@@ -40,7 +40,8 @@ def turtle_knowledge_base() -> KnowledgeBase:
     return kb
 
 
-def _matching_facts(navigation: str) -> str:
+def _matching_facts(navigation_name: str) -> str:
+    navigation = name_atom(navigation_name)
     return f"""
 matching_process_module(D, {navigation}) :- desig_prop(D, type, driving).
 matching_process_module(D, {navigation}) :- desig_prop(D, type, moving).

@@ -23,6 +23,7 @@ from robocram.world.errors import (
 )
 from robocram.world.joint_state import ClampedJoint, JointLimits
 from robocram.world.obstacle_boxes import ObstacleBoxes
+from robocram.world.planning_area import AREA_MARGIN, PlanningArea
 from robocram.world.raw_distances import LinkGap, RawDistances
 from robocram.world.ray_hit import RayHit
 from robocram.world.visibility import Visibility
@@ -31,6 +32,7 @@ from robocram.world.world_object import RobotObject, WorldObject
 from robocram.world.world_state import WorldState
 
 __all__ = [
+    "AREA_MARGIN",
     "Attachment",
     "AttachmentCycleError",
     "BodyLoadError",
@@ -45,6 +47,7 @@ __all__ = [
     "NoCameraError",
     "NotARobotError",
     "ObstacleBoxes",
+    "PlanningArea",
     "RawDistances",
     "RayHit",
     "RobotObject",

@@ -44,6 +44,7 @@ from robocram.execution.failures.manipulation import (
 from robocram.execution.failures.navigation import (
     NavigationGoalInCollision,
     NavigationGoalNotReached,
+    NavigationGoalOutsideArea,
     NavigationLowLevelFailure,
     NavigationPathBlocked,
     NavigationPoseUnreachable,
@@ -100,6 +101,7 @@ __all__ = [
     "ManipulationPoseUnreachable",
     "NavigationGoalInCollision",
     "NavigationGoalNotReached",
+    "NavigationGoalOutsideArea",
     "NavigationLowLevelFailure",
     "NavigationPathBlocked",
     "NavigationPoseUnreachable",

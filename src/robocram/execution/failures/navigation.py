@@ -21,6 +21,16 @@ class NavigationPoseUnreachable(NavigationLowLevelFailure):
     hint = "sample another base pose from the location designator"
 
 
+class NavigationGoalOutsideArea(NavigationPoseUnreachable):
+    """The goal lies farther outside the world's obstacles than any drive plans (a typo in
+    a coordinate, a pose in another frame): refused before any grid is made for it."""
+
+    area: tuple[tuple[float, float], tuple[float, float]] | None = None  # [m] low, high x y
+    margin: float | None = None  # [m] how far outside the area a goal may be
+    summary = "the navigation goal is outside the area the robot drives in"
+    hint = "give a goal near the environment (in map), or check the pose's frame and units"
+
+
 class NavigationPathBlocked(NavigationPoseUnreachable):
     """The goal is free, but no collision-free path of the base leads there."""
 

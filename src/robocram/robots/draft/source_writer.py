@@ -73,8 +73,17 @@ def _flat(value: object) -> str:
 
 
 def quoted(text: str) -> str:
-    """``text`` as a double-quoted Python string literal (ruff format's quotes)."""
-    return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
+    """``text`` as a double-quoted Python string literal (ruff format's quotes); a name
+    with a newline or a quote in it stays one string the draft loads back."""
+    return '"' + "".join(_escaped(c) for c in text) + '"'
+
+
+def _escaped(c: str) -> str:
+    if c == "\\":
+        return "\\\\"
+    if c == '"':
+        return '\\"'
+    return c if c.isprintable() else repr(c)[1:-1]  # \n, \t, \x00, \u2028, ...
 
 
 def _flat_item(item: Item) -> str:
