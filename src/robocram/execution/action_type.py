@@ -54,13 +54,14 @@ class ActionType:
 
     @property
     def result(self) -> object:
-        """The class (or type expression) the plan returns, from its annotation; ``Any``
+        """The class (or type expression) the plan returns, from its annotation; ``object``
         when the plan does not say."""
         try:
             hints = typing.get_type_hints(self.plan)
         except (NameError, TypeError):  # an annotation that does not resolve here
-            return Any
-        return hints.get("return", Any)
+            return object
+        found: object = hints.get("return", object)
+        return found
 
     def run(self, designator: Designator[object]) -> Any:
         """Check ``designator`` and run the plan with its properties."""

@@ -88,7 +88,7 @@ def perform(
         raise unknown from failure
 
 
-def _perform_grounded(designator: Designator, kb: KnowledgeBase | None) -> Any:
+def _perform_grounded(designator: Designator, kb: KnowledgeBase | None) -> object:
     """PERFORM by the knowledge base's grounding rules."""
     with sub_task(f"perform {designator.type}") as task:
         notify_performing(task, designator)

@@ -42,7 +42,7 @@ import itertools
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Any
+from typing import cast
 
 import numpy as np
 
@@ -88,7 +88,7 @@ class SelfCollisionMatrix:
         desc = world.robot(robot).description
         return _work_out(world, robot), matrix_digest(desc, _description_key(desc))
 
-    def to_data(self) -> dict[str, Any]:
+    def to_data(self) -> dict[str, object]:
         """The matrix as JSON data (pairs in a fixed order)."""
         return {
             "checked": [list(p) for p in self.checked],
@@ -97,12 +97,15 @@ class SelfCollisionMatrix:
         }
 
     @classmethod
-    def from_data(cls, data: Mapping[str, Any]) -> SelfCollisionMatrix:
+    def from_data(cls, data: Mapping[str, object]) -> SelfCollisionMatrix:
         """The matrix :meth:`to_data` gave."""
+        checked = cast(list[list[str]], data["checked"])
+        skipped = cast(list[list[str]], data["skipped"])
+        depths = cast(list[tuple[str, str, float]], data["rest_depths"])
         return cls(
-            tuple((str(a), str(b)) for a, b in data["checked"]),
-            {frozenset((str(a), str(b))): str(why) for a, b, why in data["skipped"]},
-            {frozenset((str(a), str(b))): float(d) for a, b, d in data["rest_depths"]},
+            tuple((str(a), str(b)) for a, b in checked),
+            {frozenset((str(a), str(b))): str(why) for a, b, why in skipped},
+            {frozenset((str(a), str(b))): float(d) for a, b, d in depths},
         )
 
     def reason(self, a: str, b: str) -> str | None:

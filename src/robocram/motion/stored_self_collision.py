@@ -16,7 +16,6 @@ import hashlib
 import json
 from importlib import resources
 from pathlib import Path
-from typing import Any
 
 from robocram.robots import LoadedDescription, RobotModel
 
@@ -41,16 +40,16 @@ def stored_file(name: str) -> Path:
     return Path(str(folder)) / f"{name}.json"
 
 
-def read_stored(name: str, digest: str) -> dict[str, Any] | None:
+def read_stored(name: str, digest: str) -> dict[str, object] | None:
     """The stored matrix of robot ``name`` as JSON data, if one is stored for ``digest``."""
     path = stored_file(name)
     if not path.is_file():
         return None
-    data: dict[str, Any] = json.loads(path.read_text(encoding="utf-8"))
+    data: dict[str, object] = json.loads(path.read_text(encoding="utf-8"))
     return data if data.get("digest") == digest else None
 
 
-def write_stored(name: str, digest: str, data: dict[str, Any]) -> Path:
+def write_stored(name: str, digest: str, data: dict[str, object]) -> Path:
     """Store ``data`` (a matrix as JSON data) for robot ``name`` under ``digest``."""
     path = stored_file(name)
     path.parent.mkdir(parents=True, exist_ok=True)

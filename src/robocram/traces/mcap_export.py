@@ -26,7 +26,7 @@ import json
 import warnings
 from collections.abc import Iterable, Mapping
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING
 
 from robocram.traces.database import TraceDatabase
 from robocram.traces.errors import MissingRobotDescription, TraceError
@@ -47,6 +47,9 @@ from robocram.traces.tf_frames import (
 from robocram.traces.trajectory_record import run_trajectories
 from robocram.traces.world_record import build_scene
 from robocram.world import World
+
+if TYPE_CHECKING:  # mcap-ros2 is imported where an export needs it
+    from mcap_ros2.writer import Writer as McapWriter
 
 TF = "tf2_msgs/msg/TFMessage"
 JOINT_STATE = "sensor_msgs/msg/JointState"
@@ -109,7 +112,7 @@ def _write(
     urdf: str | None,
     out: Path,
     period: float,
-    writer_class: type[Any],
+    writer_class: type[McapWriter],
     robots: Mapping[str, str] | None,
 ) -> int:
     """Write the run's messages to ``out``; return how many."""
