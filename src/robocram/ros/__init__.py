@@ -10,9 +10,9 @@ world. Importing this package without the extra raises :class:`RosExtraMissing`.
 
 from typing import TYPE_CHECKING, Any
 
-from robocram.ros.availability import require_ros_extra
+from robocram.ros.availability import require_some_ros
 
-require_ros_extra()
+require_some_ros()
 
 from robocram.ros.errors import (  # noqa: E402 - only once the extra is known to be there
     RosCancelIgnored,
