@@ -4,6 +4,7 @@ The child runs with the ROS 2 prefix on its path and ROS 1's off it
 (``ros2_environment.py``), on the ``ROS_DOMAIN_ID`` of the node's config; the plan
 process never imports rclpy. There is no master to ask first: a robot that is absent
 shows when a goal's server does not appear within ``ros_server_timeout``.
+Entering waits for the robot's first state (discovery takes a moment on ROS 2).
 """
 
 from __future__ import annotations
@@ -23,3 +24,10 @@ class Ros2Transport(NodeProcessTransport):
 
     def _joining(self) -> str:
         return f"ROS 2 domain {self.config.domain_id}"
+
+    def _start(self) -> None:
+        """Start the node, then wait (up to ``connect_timeout``) for the robot's first joint
+        states and base transform: ROS 2's discovery takes a moment, and plans read the
+        state first. A robot that stays silent shows as its servers' absence later."""
+        super()._start()
+        self.wait_for_state((0, 0), self.config.connect_timeout)

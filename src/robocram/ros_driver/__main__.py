@@ -1,8 +1,9 @@
 """Run the projection driver as a ROS node on a scene (tabletop or kitchen) of a robot.
 
 ``python -m robocram.ros_driver --robot pr2 --master-uri http://127.0.0.1:11311
-[--scene kitchen]`` prints ``ready <node name>`` on stdout once its action servers run,
-then serves until killed (SIGTERM or SIGINT) or the master goes away.
+[--scene kitchen]`` (or ``--ros 2 [--domain-id N]`` for ROS 2) prints
+``ready <node name>`` on stdout once its action servers run, then serves until killed
+(SIGTERM or SIGINT) or the master goes away.
 """
 
 from __future__ import annotations
@@ -43,12 +44,21 @@ def _arguments() -> argparse.Namespace:
         "--controllers", choices=CONTROLLERS, default="projection", help="pr2: the real PR2's"
     )
     parser.add_argument("--clock-offset", type=float, default=0.0, help="[s] added to stamps")
+    parser.add_argument("--ros", type=int, choices=(1, 2), default=1, help="ROS 1 or ROS 2")
+    parser.add_argument(
+        "--domain-id", type=int, default=int(os.environ.get("ROS_DOMAIN_ID", 0)), help="ROS 2"
+    )
     return parser.parse_args()
 
 
 def main() -> None:
     """Build the scene, join ROS, serve."""
     args = _arguments()
+    if args.ros == 2:
+        from robocram.ros_driver.ros2_main import ros2_main
+
+        ros2_main(args, _build_scene)
+        return
     if not args.master_uri:
         raise SystemExit("give --master-uri or set ROS_MASTER_URI")
     os.environ["ROS_MASTER_URI"] = args.master_uri

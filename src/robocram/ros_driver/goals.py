@@ -32,6 +32,8 @@ RosMessage = Any  # a genpy message (goal, result, pose): Debian's rospy ships n
 Outcome = tuple[bool, dict[str, Any], str] | None
 INVALID_JOINTS = -2
 GOAL_TOLERANCE_VIOLATED = -5
+NAV2_GOAL_OCCUPIED = 206  # nav2_msgs ComputePathToPose's, passed on by NavigateToPose
+NAV2_FAILED_TO_MAKE_PROGRESS = 105  # nav2_msgs FollowPath's
 DEFAULT_GOAL_TOLERANCE = 0.01  # [rad | m] for joints whose goal gives 0 (the default)
 GRIP_TOLERANCE = 1e-6  # [rad | m] a command this close to the lower limit closes fully
 
@@ -76,9 +78,17 @@ def _stamped_in_map(robot: ProjectedRobot, frame: str, pose: Pose) -> Pose:
     return robot.in_map(PoseStamped.from_pose(frame or "map", pose))
 
 
-def move_base(goal: RosMessage, ctx: GoalContext) -> Outcome:
-    """``move_base_msgs/MoveBase``: refuse a goal in collision, else drive straight there."""
-    target = goal.target_pose
+def seconds(duration: RosMessage) -> float:
+    """A duration message in seconds: ROS 1's (``to_sec``) or ROS 2's (``sec``, ``nanosec``)."""
+    if hasattr(duration, "to_sec"):
+        return float(duration.to_sec())
+    return float(duration.sec) + float(duration.nanosec) * 1e-9
+
+
+def _drive(target: RosMessage, ctx: GoalContext) -> tuple[int, str] | None:
+    """Drive straight to the stamped pose ``target`` unless the goal is in collision:
+    ``(0, text)`` reached, ``(NAV2_GOAL_OCCUPIED | NAV2_FAILED_TO_MAKE_PROGRESS, why)``,
+    None if preempted."""
     robot = ctx.robot
     with ctx.stepper.lock:
         in_map = _stamped_in_map(robot, target.header.frame_id, _pose(target.pose))
@@ -86,7 +96,7 @@ def move_base(goal: RosMessage, ctx: GoalContext) -> Outcome:
         try:
             drive(robot, in_map)  # checks the goal pose; leaves the robot where it was if bad
         except PlanFailure as failure:
-            return False, {}, str(failure)
+            return NAV2_GOAL_OCCUPIED, str(failure)
         robot.world.set_pose(robot.name, start)
         duration, step = base_motion(robot, in_map, ctx.options)
     if not ctx.stepper.run(duration, step):
@@ -95,8 +105,27 @@ def move_base(goal: RosMessage, ctx: GoalContext) -> Outcome:
         try:
             reached = drive(robot, in_map)
         except PlanFailure as failure:  # something moved into the way meanwhile
-            return False, {}, str(failure)
-    return True, {}, f"reached {reached.position}"
+            return NAV2_FAILED_TO_MAKE_PROGRESS, str(failure)
+    return 0, f"reached {reached.position}"
+
+
+def move_base(goal: RosMessage, ctx: GoalContext) -> Outcome:
+    """``move_base_msgs/MoveBase``: refuse a goal in collision, else drive straight there."""
+    driven = _drive(goal.target_pose, ctx)
+    if driven is None:
+        return None
+    code, text = driven
+    return code == 0, {}, text
+
+
+def navigate_to_pose(goal: RosMessage, ctx: GoalContext) -> Outcome:
+    """``nav2_msgs/NavigateToPose``: as ``move_base``; a failure's result carries Nav2's
+    error code (the failing planner's or controller's, as bt_navigator passes it on)."""
+    driven = _drive(goal.pose, ctx)
+    if driven is None:
+        return None
+    code, text = driven
+    return code == 0, {"error_code": code, "error_msg": "" if code == 0 else text}, text
 
 
 def follow_joint_trajectory(goal: RosMessage, ctx: GoalContext) -> Outcome:
@@ -116,10 +145,10 @@ def follow_joint_trajectory(goal: RosMessage, ctx: GoalContext) -> Outcome:
     elapsed = 0.0
     for point in goal.trajectory.points:
         target = _soft_clamped(dict(zip(names, map(float, point.positions), strict=True)), ctx)
-        seconds = point.time_from_start.to_sec() - elapsed
-        elapsed = point.time_from_start.to_sec()
+        at = seconds(point.time_from_start)
+        span, elapsed = at - elapsed, at
         with ctx.stepper.lock:
-            duration, step = joint_motion(ctx.robot, target, seconds, ctx.options)
+            duration, step = joint_motion(ctx.robot, target, span, ctx.options)
         if not ctx.stepper.run(duration, partial(_pulling, step, ctx)):
             return None
         with ctx.stepper.lock:
@@ -144,7 +173,7 @@ def single_joint_position(goal: RosMessage, ctx: GoalContext, joint: str) -> Out
     position over ``min_duration``; the result has no fields, the status text says more."""
     target = _soft_clamped({joint: float(goal.position)}, ctx)
     with ctx.stepper.lock:
-        duration, step = joint_motion(ctx.robot, target, goal.min_duration.to_sec(), ctx.options)
+        duration, step = joint_motion(ctx.robot, target, seconds(goal.min_duration), ctx.options)
     if not ctx.stepper.run(duration, step):
         return None
     with ctx.stepper.lock:
@@ -177,7 +206,7 @@ def _at_goal(goal: RosMessage, names: list[str], ctx: GoalContext) -> Outcome:
         return _trajectory_outcome(False, GOAL_TOLERANCE_VIOLATED, text, ctx)
     text = (
         f"reached the last of {len(goal.trajectory.points)} points "
-        f"({goal.trajectory.points[-1].time_from_start.to_sec():.3f} s); "
+        f"({seconds(goal.trajectory.points[-1].time_from_start):.3f} s); "
         f"largest error {errors[worst]:.2e} ({worst})"
     )
     return _trajectory_outcome(True, 0, text, ctx)

@@ -53,6 +53,7 @@ def _handler(resource: str, action_type: str, config: RosConfig, controllers: st
         return partial(goals.single_joint_position, joint=joint)
     return {
         "move_base_msgs/MoveBase": goals.move_base,
+        "nav2_msgs/NavigateToPose": goals.navigate_to_pose,
         "control_msgs/FollowJointTrajectory": goals.follow_joint_trajectory,
         "pr2_controllers_msgs/JointTrajectory": goals.follow_joint_trajectory,
         "control_msgs/PointHead": goals.point_head,
