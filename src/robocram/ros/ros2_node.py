@@ -239,7 +239,8 @@ def node_main(conn: Connection, config: NodeConfig) -> None:
     except Exception as err:
         conn.send(("failed", f"{type(err).__name__}: {err}"))
         return
-    threading.Thread(target=executor.spin, daemon=True).start()
+    spinning = threading.Thread(target=executor.spin, daemon=True)
+    spinning.start()
     conn.send(("ready", node.get_fully_qualified_name()))
     threading.Thread(target=serving.monitor, daemon=True).start()
     while serving.running:
@@ -254,7 +255,8 @@ def node_main(conn: Connection, config: NodeConfig) -> None:
         else:
             handle_request(serving, request_id, op, args)
     serving.running = False
-    executor.shutdown(timeout_sec=1.0)
+    executor.shutdown(timeout_sec=1.0)  # ends spin; rclpy's threads end before the process
+    spinning.join(timeout=1.0)
     node.destroy_node()
     rclpy.shutdown(context=context)
 

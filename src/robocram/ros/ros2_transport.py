@@ -13,6 +13,7 @@ from robocram.ros.node_process import NodeProcessTransport
 from robocram.ros.ros2_environment import child_argv, require_ros2
 
 CHILD_CODE = "from robocram.ros.ros2_node import child_main; child_main()"
+FIRST_STATE_TIMEOUT = 5.0  # [s] for the robot's first state after our node started
 
 
 class Ros2Transport(NodeProcessTransport):
@@ -26,8 +27,8 @@ class Ros2Transport(NodeProcessTransport):
         return f"ROS 2 domain {self.config.domain_id}"
 
     def _start(self) -> None:
-        """Start the node, then wait (up to ``connect_timeout``) for the robot's first joint
-        states and base transform: ROS 2's discovery takes a moment, and plans read the
-        state first. A robot that stays silent shows as its servers' absence later."""
+        """Start the node, then wait (up to ``FIRST_STATE_TIMEOUT``) for the robot's first
+        joint states and base transform: ROS 2's discovery takes a moment, and plans read
+        the state first. A robot that stays silent shows as its servers' absence later."""
         super()._start()
-        self.wait_for_state((0, 0), self.config.connect_timeout)
+        self.wait_for_state((0, 0), FIRST_STATE_TIMEOUT)

@@ -1,0 +1,129 @@
+"""ROS 2: the same plans through rclpy, ros2_control's and Nav2's interfaces, against the
+projection driver serving them in another process, each test on a ROS 2 domain of its own."""
+
+from __future__ import annotations
+
+import multiprocessing
+import threading
+import time
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from robocram.designators import a
+from robocram.execution import perform
+from robocram.execution.failures import NavigationGoalNotReached
+from robocram.motion import JointTrajectory, trajectory_listener
+from robocram.plans import pick_up
+from robocram.projection import simulated_robot
+from robocram.ros import RosConnectionLost, RosExtraMissing, ros_robot
+from robocram.ros.ros_config import default_facts
+from robocram.ros_driver.driver_process import DriverProcess
+from robocram.scenes import tabletop_scene
+from robocram.tf import Pose, PoseStamped, transform_pose
+
+AGREE = 0.01  # [m] ROS 2 and direct projection agree this closely
+SAME = 1e-9  # [rad | s] what crosses ROS unchanged (float64; times to the nanosecond)
+TRAJECTORY_SERVERS = {
+    "torso": "/torso_controller/follow_joint_trajectory",
+    "head": "/head_controller/follow_joint_trajectory",
+    "left": "/l_arm_controller/follow_joint_trajectory",
+    "right": "/r_arm_controller/follow_joint_trajectory",
+}
+
+
+def _seconds(duration: dict[str, int]) -> float:
+    return duration["secs"] + duration["nsecs"] * 1e-9
+
+
+def _assert_same(received: dict[str, Any], sent: JointTrajectory) -> None:
+    """The goal the driver got is ``sent``: names, points, times, velocities, accelerations."""
+    trajectory = received["trajectory"]
+    assert trajectory["joint_names"] == list(sent.joint_names)
+    assert len(trajectory["points"]) == len(sent.points)
+    for got, want in zip(trajectory["points"], sent.points, strict=True):
+        assert _seconds(got["time_from_start"]) == pytest.approx(want.time_from_start, abs=SAME)
+        for key in ("positions", "velocities", "accelerations"):
+            assert got[key] == pytest.approx(list(getattr(want, key)), abs=SAME)
+
+
+def _server_of(trajectory: JointTrajectory) -> str:
+    joint = trajectory.joint_names[0]
+    side = {"l": "left", "r": "right"}.get(joint.split("_")[0], "")
+    return TRAJECTORY_SERVERS[side or joint.split("_")[0]]
+
+
+def test_pick_up_through_ros2_agrees_with_projection_goal_by_goal(
+    ros2_domain: int, tmp_path: Path
+) -> None:
+    scene = tabletop_scene("pr2")
+    with simulated_robot(scene.world, "pr2"):
+        direct = pick_up(scene.look_target)
+    tool, mug = scene.world.link_pose("pr2", direct.tool_frame), scene.world.pose("mug-1")
+    world = tabletop_scene("pr2").world  # the mirror: motions planned and checked in it
+    threads = set(threading.enumerate())
+    sent: list[JointTrajectory] = []
+    with (
+        DriverProcess("", "pr2", ros=2, domain_id=ros2_domain, goal_log=tmp_path / "g") as driver,
+        ros_robot("pr2", ros=2, world=world) as run,
+        trajectory_listener(sent.append),
+    ):
+        result = pick_up(scene.look_target)
+        ros_tool = transform_pose(PoseStamped(result.tool_frame), "map").pose
+        ros_mug = run.transforms.lookup("map", "mug-1")
+        in_world = run.transforms.lookup("world", "mug-1")  # map's parent: /tf_static
+        grippers = driver.received_goals("/l_gripper_controller/gripper_cmd")
+        grippers += driver.received_goals("/r_gripper_controller/gripper_cmd")
+        by_server = {s: driver.received_goals(s) for s in TRAJECTORY_SERVERS.values()}
+    assert run.tree.root.status.name == "SUCCEEDED"
+    assert result.arm == direct.arm
+    assert ros_tool.distance_to(tool) < AGREE
+    assert ros_mug.distance_to(mug) < AGREE
+    assert in_world.distance_to(ros_mug) < 1e-9
+    assert ros_mug.position[2] > 0.09 + scene.look_target.position[2]  # lifted
+    assert len(sent) == sum(len(goals) for goals in by_server.values()) >= 4
+    for trajectory in sent:  # every trajectory goal, in order per controller, as planned
+        _assert_same(by_server[_server_of(trajectory)].pop(0), trajectory)
+    assert [g["command"]["position"] for g in grippers] == pytest.approx([0.085, 0.0])
+    assert set(threading.enumerate()) == threads
+    assert multiprocessing.active_children() == []
+
+
+def test_without_the_set_up_ros2_names_the_command(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    monkeypatch.setenv("ROBOCRAM_ROS2_PREFIX", str(tmp_path / "no_ros2"))
+    with pytest.raises(RosExtraMissing, match=r"rclpy.*make setup.*tools/setup_ros2.sh"):
+        ros_robot("pr2", ros=2).__enter__()
+
+
+def test_an_absent_controller_fails_typed_within_its_server_timeout(ros2_domain: int) -> None:
+    facts = default_facts("pr2", ros=2).replace(
+        "ros_server_timeout(pr2, 5.0)", "ros_server_timeout(pr2, 1.0)"
+    )
+    facts = facts.replace("/torso_controller/", "/no_torso_controller/")
+    with (
+        DriverProcess("", "pr2", ros=2, domain_id=ros2_domain),
+        ros_robot("pr2", ros=2, ros_facts=facts),
+    ):
+        start = time.monotonic()
+        with pytest.raises(RosConnectionLost, match="no_torso_controller.*1.0 s") as lost:
+            perform(a.motion(type="moving-torso", joint_angle=0.2))
+        waited = time.monotonic() - start
+    assert lost.value.server == "/no_torso_controller/follow_joint_trajectory"
+    assert 1.0 <= waited < 3.0
+
+
+def test_nav2_failing_gives_the_typed_failure_with_its_error_code(ros2_domain: int) -> None:
+    x, y, _ = tabletop_scene("pr2").world.pose("table").position
+    into_the_table = Pose((x, y, 0.0))  # the base inside the table
+    with DriverProcess("", "pr2", ros=2, domain_id=ros2_domain), ros_robot("pr2", ros=2) as run:
+        before = run.environment.client.base_pose()
+        with pytest.raises(NavigationGoalNotReached, match="ABORTED") as failed:
+            perform(a.motion(type="going", target=into_the_table))
+        after = run.environment.client.base_pose()
+    assert failed.value.context["error_code"] == 206
+    assert "error_code 206 (GOAL_OCCUPIED)" in str(failed.value)
+    assert "would collide with ['mug-1', 'table']" in str(failed.value)  # Nav2's error_msg
+    assert after.distance_to(before) < 1e-6  # refused: the robot did not move
