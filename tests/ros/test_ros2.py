@@ -16,14 +16,19 @@ from robocram.execution import perform
 from robocram.execution.failures import NavigationGoalNotReached
 from robocram.motion import JointTrajectory, trajectory_listener
 from robocram.plans import pick_up
+from robocram.plans.transport import transport
 from robocram.projection import simulated_robot
 from robocram.ros import RosConnectionLost, RosExtraMissing, ros_robot
 from robocram.ros.ros_config import default_facts
 from robocram.ros_driver.driver_process import DriverProcess
-from robocram.scenes import tabletop_scene
+from robocram.scenes import kitchen_scene, tabletop_scene
 from robocram.tf import Pose, PoseStamped, transform_pose
 
 AGREE = 0.01  # [m] ROS 2 and direct projection agree this closely
+TABLE = ("kitchen", "table_top")
+DRAWER_JOINT = "drawer_unit_drawer_3_joint"
+RESTING = 0.015  # [m] the driver lets go without simulating: the bowl may stand this high
+DRAWN = 0.005  # [m] stands in a world whose drawer the driver's hand moved
 SAME = 1e-9  # [rad | s] what crosses ROS unchanged (float64; times to the nanosecond)
 TRAJECTORY_SERVERS = {
     "torso": "/torso_controller/follow_joint_trajectory",
@@ -127,3 +132,36 @@ def test_nav2_failing_gives_the_typed_failure_with_its_error_code(ros2_domain: i
     assert "error_code 206 (GOAL_OCCUPIED)" in str(failed.value)
     assert "would collide with ['mug-1', 'table']" in str(failed.value)  # Nav2's error_msg
     assert after.distance_to(before) < 1e-6  # refused: the robot did not move
+
+
+def test_the_bowl_comes_out_of_the_drawer_over_ros2_with_the_robot_clock_behind(
+    ros2_domain: int,
+) -> None:
+    scene = kitchen_scene("pr2")
+    with simulated_robot(scene.world, scene.robot):
+        expected = transport("bowl", a.location(on=TABLE, for_="bowl-1"))
+    scene.world.close()
+    scene = kitchen_scene("pr2")
+    driver = DriverProcess(
+        "", "pr2", ros=2, domain_id=ros2_domain, controllers="pr2", clock_offset=-10.0,
+        scene="kitchen",
+    )  # fmt: skip
+    with driver, ros_robot("pr2", ros=2, world=scene.world) as run:
+        result = transport("bowl", a.location(on=TABLE, for_="bowl-1"))
+        bowl = run.transforms.lookup("map", "bowl-1")
+        drawer = run.environment.client.transport.environment_joint_states()
+        skew = run.environment.client.clock_skew
+    assert run.tree.root.status.name == "SUCCEEDED"
+    assert skew == pytest.approx(-10.0, abs=0.5)
+    assert [opened.container.joint for opened in result.opened] == [DRAWER_JOINT]
+    low, _ = scene.world.aabb("bowl-1")
+    table_low, table_high = scene.world.link_aabb("kitchen", "table_top")
+    assert low[2] == pytest.approx(table_high[2], abs=RESTING)  # on the table top, inside it
+    assert table_low[0] < bowl.position[0] < table_high[0]
+    assert table_low[1] < bowl.position[1] < table_high[1]
+    assert drawer["/kitchen/joint_states"][DRAWER_JOINT] == pytest.approx(0.0, abs=0.01)  # shut
+    stages = [(attempt.stage, attempt.stand) for attempt in result.log.attempts]
+    projected = [(attempt.stage, attempt.stand) for attempt in expected.log.attempts]
+    assert [stage for stage, _ in stages] == [stage for stage, _ in projected]
+    for (_, stand), (_, want) in zip(stages, projected, strict=True):
+        assert stand.distance_to(want) < DRAWN  # the same seeds, the same stands

@@ -82,7 +82,7 @@ def default_facts(robot: str, ros: int = 1) -> str:
     if not path.is_file():
         have = "pr2, hsrb" if ros == 1 else "pr2"
         raise RosConfigError(
-            f"robocram.ros ships no ROS {ros} facts for {robot!r} (have {have}); pass "
+            f"robocram.ros ships no ROS facts for {robot!r} (ROS {ros}: have {have}); pass "
             "ros_facts= with ros_action/4, ros_topic/3, ros_action_timeout/3 facts for it"
         )
     return path.read_text()
