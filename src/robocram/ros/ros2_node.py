@@ -17,6 +17,7 @@ from __future__ import annotations
 import sys
 import threading
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 from multiprocessing.connection import Connection
 from typing import Any
@@ -49,7 +50,7 @@ class _Server:
 class Ros2Node:
     """The node's state and request handlers; one instance per child process."""
 
-    def __init__(self, conn: Connection, config: NodeConfig, node: Any) -> None:
+    def __init__(self, conn: Connection, config: NodeConfig, node: Any, executor: Any) -> None:
         from rclpy.action import ActionClient
         from rclpy.qos import DurabilityPolicy, QoSProfile
         from sensor_msgs.msg import JointState
@@ -58,6 +59,7 @@ class Ros2Node:
         self.conn = conn
         self.config = config
         self.node = node
+        self.executor = executor  # rclpy calls go through it (see _in_executor)
         self._send_lock = threading.Lock()
         self._state = threading.Condition()
         self._joints: dict[str, float] = {}
@@ -129,9 +131,24 @@ class Ros2Node:
         with self._state:
             entry.goal_id, entry.handle, entry.cancel_pending = goal_id, None, False
             entry.seen = time.monotonic()
-        future = entry.client.send_goal_async(message)
-        future.add_done_callback(lambda done: self._accepted(entry, goal_id, done.result()))
+
+        sent = threading.Event()
+
+        def send() -> None:
+            future = entry.client.send_goal_async(message)
+            future.add_done_callback(lambda done: self._accepted(entry, goal_id, done.result()))
+            sent.set()
+
+        self._in_executor(send)
+        if not sent.wait(self.config.connect_timeout):
+            raise ConnectionError(f"our node's executor did not send the goal to {server!r}")
         return time.monotonic()
+
+    def _in_executor(self, call: Callable[[], None]) -> None:
+        """Run ``call`` on the executor's thread. rclpy's ActionClient registers a goal's
+        sequence number only after sending it: sent from another thread, a quick server's
+        answer can arrive first and is dropped ("Ignoring unexpected goal response")."""
+        self.executor.create_task(call)
 
     def _accepted(self, entry: _Server, goal_id: int, handle: Any) -> None:
         if not handle.accepted:
@@ -143,7 +160,7 @@ class Ros2Node:
             entry.handle = handle
             cancel = entry.cancel_pending
         if cancel:
-            handle.cancel_goal_async()
+            handle.cancel_goal_async()  # on the executor's thread already
         result = handle.get_result_async()
         result.add_done_callback(lambda done: self._ended(entry, goal_id, done.result()))
 
@@ -173,7 +190,7 @@ class Ros2Node:
                 handle = entry.handle
                 entry.cancel_pending = handle is None
             if handle is not None:
-                handle.cancel_goal_async()
+                self._in_executor(handle.cancel_goal_async)
 
     def op_joint_states(self) -> dict[str, float]:
         """The latest joint positions."""
@@ -228,14 +245,14 @@ def node_main(conn: Connection, config: NodeConfig) -> None:
     """The child process: join ROS 2, report ready, serve requests until shutdown."""
     try:
         import rclpy
-        from rclpy.executors import MultiThreadedExecutor
+        from rclpy.executors import SingleThreadedExecutor
 
         context = rclpy.Context()
         rclpy.init(context=context, signal_handler_options=rclpy.SignalHandlerOptions.NO)
         node = rclpy.create_node(config.node_name, context=context)
-        serving = Ros2Node(conn, config, node)
-        executor = MultiThreadedExecutor(num_threads=2, context=context)
+        executor = SingleThreadedExecutor(context=context)  # one thread: see _in_executor
         executor.add_node(node)
+        serving = Ros2Node(conn, config, node, executor)
     except Exception as err:
         conn.send(("failed", f"{type(err).__name__}: {err}"))
         return
