@@ -21,6 +21,7 @@ from robocram.ros.errors import RosExtraMissing
 PREFIX_VARIABLE = "ROBOCRAM_ROS2_PREFIX"  # overrides <venv>/ros2
 HIDDEN_VARIABLE = "ROBOCRAM_HIDDEN_PATHS"  # ROS 1's path entries, taken off a child's path
 ROS1_PTH = "robocram_ros.pth"
+PROFILE_VARIABLE = "FASTRTPS_DEFAULT_PROFILES_FILE"  # ours (quick discovery) unless set
 INTERFACES = ("rclpy", "control_msgs", "nav2_msgs", "tf2_msgs", "robocram_msgs")
 SETUP_HINT = (
     "set it up with `make setup` (or `bash tools/setup_ros2.sh .venv`): it pip-installs ROS 2 "
@@ -74,6 +75,7 @@ class Ros2Prefix:
             _ROS_WHEELS_BOOTSTRAP_COMPLETE="1",  # the wheels' re-exec hook: done here
         )
         env[HIDDEN_VARIABLE] = os.pathsep.join(sorted(hidden))
+        env.setdefault(PROFILE_VARIABLE, str(Path(__file__).with_name("fastdds_profile.xml")))
         return env
 
 

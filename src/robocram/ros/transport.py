@@ -1,9 +1,9 @@
 """The one small interface between the ROS process modules and a ROS implementation.
 
 Process modules speak plain dictionaries in the layout of the ROS messages (as rosbridge
-does) and never import rospy. :class:`Ros1Transport` implements this with rospy and
-actionlib in a child process; a ROS 2 (rclpy or rosbridge) transport would implement the
-same methods (docs/ros.md).
+does: times ``{"secs", "nsecs"}``) and never import rospy or rclpy. :class:`Ros1Transport`
+implements this with rospy and actionlib in a child process, :class:`Ros2Transport` with
+rclpy (docs/ros.md, docs/ros2.md); both through ``node_process.py``.
 """
 
 from __future__ import annotations
