@@ -18,7 +18,7 @@ from robocram.motion import JointTrajectory, trajectory_listener
 from robocram.plans import pick_up
 from robocram.plans.transport import transport
 from robocram.projection import simulated_robot
-from robocram.ros import RosConnectionLost, RosExtraMissing, ros_robot
+from robocram.ros import RosCancelIgnored, RosConnectionLost, RosExtraMissing, ros_robot
 from robocram.ros.ros_config import default_facts
 from robocram.ros_driver.driver_process import DriverProcess
 from robocram.scenes import kitchen_scene, tabletop_scene
@@ -29,6 +29,8 @@ TABLE = ("kitchen", "table_top")
 DRAWER_JOINT = "drawer_unit_drawer_3_joint"
 RESTING = 0.015  # [m] the driver lets go without simulating: the bowl may stand this high
 DRAWN = 0.005  # [m] stands in a world whose drawer the driver's hand moved
+MOVED = 0.05  # [m] the base has started moving
+LEASE = 4.0  # [s] a dead process is gone from the ROS graph after it (fastdds_profile.xml)
 SAME = 1e-9  # [rad | s] what crosses ROS unchanged (float64; times to the nanosecond)
 TRAJECTORY_SERVERS = {
     "torso": "/torso_controller/follow_joint_trajectory",
@@ -165,3 +167,53 @@ def test_the_bowl_comes_out_of_the_drawer_over_ros2_with_the_robot_clock_behind(
     assert [stage for stage, _ in stages] == [stage for stage, _ in projected]
     for (_, stand), (_, want) in zip(stages, projected, strict=True):
         assert stand.distance_to(want) < DRAWN  # the same seeds, the same stands
+
+
+def test_a_controller_killed_mid_goal_gives_a_typed_failure_in_bounded_time(
+    ros2_domain: int,
+) -> None:
+    driver = DriverProcess("", "pr2", base_speed=0.3, ros=2, domain_id=ros2_domain)
+    with driver, ros_robot("pr2", ros=2) as run:
+        client = run.environment.client
+        start = client.base_pose()
+        killed: list[float] = []
+
+        def kill_once_moving() -> None:
+            while client.base_pose().distance_to(start) < MOVED:
+                time.sleep(0.02)
+            driver.kill()
+            killed.append(time.monotonic())
+
+        killer = threading.Thread(target=kill_once_moving)
+        killer.start()
+        try:
+            with pytest.raises(RosConnectionLost) as lost:
+                perform(a.motion(type="going", target=Pose((-2.0, 0.0, 0.0))))
+        finally:
+            killer.join()
+        noticed = time.monotonic() - killed[0]
+    assert lost.value.server == "/navigate_to_pose"
+    assert "left the ROS graph" in str(lost.value)
+    assert noticed < LEASE + 2.0 + 1.5  # the dead process's lease, ros_connection_timeout
+    assert multiprocessing.active_children() == []
+
+
+def test_a_cancel_the_server_refuses_raises_that_the_robot_may_still_move(
+    ros2_domain: int,
+) -> None:
+    facts = (
+        "ros_action_timeout(pr2, navigation, 1.0).\nros_cancel_timeout(pr2, 0.5).\n"
+        + default_facts("pr2", ros=2)
+    )
+    start = time.monotonic()
+    with (
+        DriverProcess("", "pr2", fault="ignore_cancel", ros=2, domain_id=ros2_domain),
+        ros_robot("pr2", ros=2, ros_facts=facts),
+        pytest.raises(RosCancelIgnored) as ignored,
+    ):
+        start = time.monotonic()
+        perform(a.motion(type="going", target=Pose((-1.0, 0.0, 0.0))))
+    assert time.monotonic() - start == pytest.approx(1.5, abs=1.0)  # timeout, then cancel
+    assert ignored.value.server == "/navigate_to_pose"
+    assert ignored.value.timeout == 0.5
+    assert ignored.value.stopping is False

@@ -17,7 +17,6 @@ from __future__ import annotations
 import sys
 import threading
 import time
-from collections.abc import Callable
 from dataclasses import dataclass
 from multiprocessing.connection import Connection
 from typing import Any
@@ -32,6 +31,41 @@ MONITOR_PERIOD = 0.05  # [s]
 # action_msgs/GoalStatus numbers -> how the goal ended
 STATUS = {4: GoalState.SUCCEEDED, 5: GoalState.PREEMPTED, 6: GoalState.ABORTED}
 TF_STATIC_DEPTH = 100
+
+
+def locked_action_client(node: Any, action: Any, name: str) -> Any:
+    """An rclpy ``ActionClient`` whose requests may be sent from any thread.
+
+    rclpy registers a request's sequence number only after sending it: from a thread
+    other than the executor's, a quick server's answer could be taken first and dropped
+    ("Ignoring unexpected goal response"), leaving the goal hanging. Here sending holds a
+    lock that handling an answer waits for, so the number is always registered first.
+    """
+    from rclpy.action import ActionClient
+
+    class LockedActionClient(ActionClient):
+        def __init__(self) -> None:
+            super().__init__(node, action, name)
+            self.sending = threading.Lock()
+
+        def send_goal_async(self, *args: Any, **kwargs: Any) -> Any:
+            with self.sending:
+                return super().send_goal_async(*args, **kwargs)
+
+        def _cancel_goal_async(self, *args: Any, **kwargs: Any) -> Any:
+            with self.sending:
+                return super()._cancel_goal_async(*args, **kwargs)
+
+        def _get_result_async(self, *args: Any, **kwargs: Any) -> Any:
+            with self.sending:
+                return super()._get_result_async(*args, **kwargs)
+
+        async def execute(self, taken_data: Any) -> None:
+            with self.sending:  # a request being sent now is registered before its answer
+                pass
+            await super().execute(taken_data)
+
+    return LockedActionClient()
 
 
 @dataclass
@@ -50,8 +84,7 @@ class _Server:
 class Ros2Node:
     """The node's state and request handlers; one instance per child process."""
 
-    def __init__(self, conn: Connection, config: NodeConfig, node: Any, executor: Any) -> None:
-        from rclpy.action import ActionClient
+    def __init__(self, conn: Connection, config: NodeConfig, node: Any) -> None:
         from rclpy.qos import DurabilityPolicy, QoSProfile
         from sensor_msgs.msg import JointState
         from tf2_msgs.msg import TFMessage
@@ -59,13 +92,13 @@ class Ros2Node:
         self.conn = conn
         self.config = config
         self.node = node
-        self.executor = executor  # rclpy calls go through it (see _in_executor)
         self._send_lock = threading.Lock()
         self._state = threading.Condition()
         self._joints: dict[str, float] = {}
         self._joint_arrivals = 0
         self._base_arrivals = 0
-        self.tree = TransformTree()
+        self._transforms: dict[str, tuple[str, Any, Any]] = {}  # child: parent, t, q
+        self._tree: TransformTree | None = None  # built from them when asked
         static = QoSProfile(depth=TF_STATIC_DEPTH, durability=DurabilityPolicy.TRANSIENT_LOCAL)
         node.create_subscription(TFMessage, "/tf", self._on_tf, 100)
         node.create_subscription(TFMessage, "/tf_static", self._on_tf, static)
@@ -78,7 +111,7 @@ class Ros2Node:
         self.servers = {}
         for name, kind in config.servers.items():
             action = action_class(kind)
-            self.servers[name] = _Server(name, action, ActionClient(node, action, name))
+            self.servers[name] = _Server(name, action, locked_action_client(node, action, name))
         self.running = True
 
     def send(self, message: tuple[object, ...]) -> None:
@@ -101,18 +134,29 @@ class Ros2Node:
             self._environment[topic].update(zip(msg.name, map(float, msg.position), strict=False))
 
     def _on_tf(self, msg: Any) -> None:
-        """Keep each frame's latest transform; count the arrival of the base frame's."""
-        base = False
+        """Keep each frame's latest transform; count the arrival of the base frame's.
+        Only kept here (a robot publishes hundreds at 30 Hz): the tree is built on asking."""
+        latest = {
+            t.child_frame_id.lstrip("/"): (
+                t.header.frame_id.lstrip("/"), t.transform.translation, t.transform.rotation
+            )
+            for t in msg.transforms
+        }  # fmt: skip
         with self._state:
-            for t in msg.transforms:
-                p, q = t.transform.translation, t.transform.rotation
-                child = t.child_frame_id.lstrip("/")
-                pose = Pose((p.x, p.y, p.z), (q.x, q.y, q.z, q.w))
-                self.tree.set_transform(t.header.frame_id.lstrip("/"), child, pose)
-                base = base or child == self.config.base_frame
-            if base:
+            self._transforms.update(latest)
+            self._tree = None
+            if self.config.base_frame in latest:
                 self._base_arrivals += 1
                 self._state.notify_all()
+
+    def _frames(self) -> TransformTree:
+        """The tree of the latest transforms (call holding ``_state``)."""
+        if self._tree is None:
+            tree = TransformTree()
+            for child, (parent, p, q) in self._transforms.items():
+                tree.set_transform(parent, child, Pose((p.x, p.y, p.z), (q.x, q.y, q.z, q.w)))
+            self._tree = tree
+        return self._tree
 
     def _mark(self) -> tuple[int, int]:
         with self._state:
@@ -132,23 +176,10 @@ class Ros2Node:
             entry.goal_id, entry.handle, entry.cancel_pending = goal_id, None, False
             entry.seen = time.monotonic()
 
-        sent = threading.Event()
-
-        def send() -> None:
-            future = entry.client.send_goal_async(message)
-            future.add_done_callback(lambda done: self._accepted(entry, goal_id, done.result()))
-            sent.set()
-
-        self._in_executor(send)
-        if not sent.wait(self.config.connect_timeout):
-            raise ConnectionError(f"our node's executor did not send the goal to {server!r}")
-        return time.monotonic()
-
-    def _in_executor(self, call: Callable[[], None]) -> None:
-        """Run ``call`` on the executor's thread. rclpy's ActionClient registers a goal's
-        sequence number only after sending it: sent from another thread, a quick server's
-        answer can arrive first and is dropped ("Ignoring unexpected goal response")."""
-        self.executor.create_task(call)
+        future = entry.client.send_goal_async(message)
+        sent = time.monotonic()
+        future.add_done_callback(lambda done: self._accepted(entry, goal_id, done.result()))
+        return sent
 
     def _accepted(self, entry: _Server, goal_id: int, handle: Any) -> None:
         if not handle.accepted:
@@ -160,7 +191,7 @@ class Ros2Node:
             entry.handle = handle
             cancel = entry.cancel_pending
         if cancel:
-            handle.cancel_goal_async()  # on the executor's thread already
+            handle.cancel_goal_async()
         result = handle.get_result_async()
         result.add_done_callback(lambda done: self._ended(entry, goal_id, done.result()))
 
@@ -190,7 +221,7 @@ class Ros2Node:
                 handle = entry.handle
                 entry.cancel_pending = handle is None
             if handle is not None:
-                self._in_executor(handle.cancel_goal_async)
+                handle.cancel_goal_async()
 
     def op_joint_states(self) -> dict[str, float]:
         """The latest joint positions."""
@@ -213,13 +244,13 @@ class Ros2Node:
     def op_lookup(self, target: str, source: str) -> tuple[tuple[float, ...], tuple[float, ...]]:
         """The latest pose of ``source`` in ``target`` as (position, quaternion)."""
         with self._state:
-            pose = self.tree.lookup(target, source)
+            pose = self._frames().lookup(target, source)
         return tuple(pose.position), tuple(pose.orientation)
 
     def op_frames(self) -> list[str]:
         """Every frame the transforms name."""
         with self._state:
-            return sorted(self.tree.frames())
+            return sorted(self._frames().frames())
 
     def op_shutdown(self) -> None:
         """Leave ROS; the serve loop ends after the reply."""
@@ -250,9 +281,9 @@ def node_main(conn: Connection, config: NodeConfig) -> None:
         context = rclpy.Context()
         rclpy.init(context=context, signal_handler_options=rclpy.SignalHandlerOptions.NO)
         node = rclpy.create_node(config.node_name, context=context)
-        executor = SingleThreadedExecutor(context=context)  # one thread: see _in_executor
+        executor = SingleThreadedExecutor(context=context)
         executor.add_node(node)
-        serving = Ros2Node(conn, config, node, executor)
+        serving = Ros2Node(conn, config, node)
     except Exception as err:
         conn.send(("failed", f"{type(err).__name__}: {err}"))
         return

@@ -131,12 +131,23 @@ class Ros2ProjectionDriver(ProjectionDriver):
         message = fill(message_class("geometry_msgs/TransformStamped")(), root)
         self._publishers["tf_static"].publish(TFMessage(transforms=[message]))
 
+    def _stamp(self) -> Any:
+        """Now on the robot's clock (ours + ``clock_offset``) as a ROS 2 Time."""
+        from builtin_interfaces.msg import Time
+
+        now = time.time() + self.clock_offset
+        return Time(sec=int(now // 1), nanosec=int(now % 1 * 1e9))
+
     def _header(self, frame: str) -> dict[str, Any]:
-        stamp = time.time() + self.clock_offset
-        return {"frame_id": frame, "stamp": {"sec": int(stamp), "nanosec": int(stamp % 1 * 1e9)}}
+        stamp = self._stamp()
+        return {"frame_id": frame, "stamp": {"sec": stamp.sec, "nanosec": stamp.nanosec}}
 
     def publish_state(self) -> None:
-        """Publish the joint states and every frame of the world in ``map`` now."""
+        """Publish the joint states and every frame of the world in ``map`` now.
+
+        Messages are built field by field, not through the generic ``fill``: hundreds of
+        transforms go out at ``PUBLISH_RATE``."""
+        from geometry_msgs.msg import TransformStamped
         from sensor_msgs.msg import JointState
         from tf2_msgs.msg import TFMessage
 
@@ -144,30 +155,25 @@ class Ros2ProjectionDriver(ProjectionDriver):
             joints = self.world.joint_states(self.robot.name)
             poses = self.frames.frame_poses()
             environments = {e: self.world.joint_states(e) for e in self.environments}
-        header = self._header("map")
-        transform_type = message_class("geometry_msgs/TransformStamped")
-        transforms = [
-            fill(
-                transform_type(),
-                {
-                    "header": header,
-                    "child_frame_id": frame,
-                    "transform": {
-                        "translation": dict(zip("xyz", pose.position, strict=True)),
-                        "rotation": dict(zip("xyzw", pose.orientation, strict=True)),
-                    },
-                },
-            )
-            for frame, pose in poses.items()
-        ]
+        stamp = self._stamp()
+        transforms = []
+        for frame, pose in poses.items():
+            t = TransformStamped()
+            t.header.stamp, t.header.frame_id, t.child_frame_id = stamp, "map", frame
+            translation, rotation = t.transform.translation, t.transform.rotation
+            translation.x, translation.y, translation.z = map(float, pose.position)
+            rotation.x, rotation.y, rotation.z, rotation.w = map(float, pose.orientation)
+            transforms.append(t)
         self._publishers["tf"].publish(TFMessage(transforms=transforms))
         for environment, values in environments.items():
-            state = fill(JointState(), {"header": header, "name": list(values)})
-            state.position = [float(v) for v in values.values()]
-            self._publishers[environment].publish(state)
-        state = fill(JointState(), {"header": header, "name": list(joints)})
-        state.position = [float(v) for v in joints.values()]
-        self._publishers["joints"].publish(state)
+            self._publishers[environment].publish(_joint_state(JointState, stamp, values))
+        self._publishers["joints"].publish(_joint_state(JointState, stamp, joints))
+
+
+def _joint_state(kind: Any, stamp: Any, values: dict[str, float]) -> Any:
+    state = kind(name=list(values), position=[float(v) for v in values.values()])
+    state.header.stamp = stamp
+    return state
 
 
 def _known(message: Any, fields: dict[str, Any]) -> dict[str, Any]:
