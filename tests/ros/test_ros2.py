@@ -4,6 +4,7 @@ projection driver serving them in another process, each test on a ROS 2 domain o
 from __future__ import annotations
 
 import multiprocessing
+import subprocess
 import threading
 import time
 from pathlib import Path
@@ -19,6 +20,7 @@ from robocram.plans import pick_up
 from robocram.plans.transport import transport
 from robocram.projection import simulated_robot
 from robocram.ros import RosCancelIgnored, RosConnectionLost, RosExtraMissing, ros_robot
+from robocram.ros.ros2_environment import child_argv, ros2_prefix
 from robocram.ros.ros_config import default_facts
 from robocram.ros_driver.driver_process import DriverProcess
 from robocram.scenes import kitchen_scene, tabletop_scene
@@ -217,3 +219,51 @@ def test_a_cancel_the_server_refuses_raises_that_the_robot_may_still_move(
     assert ignored.value.server == "/navigate_to_pose"
     assert ignored.value.timeout == 0.5
     assert ignored.value.stopping is False
+
+
+def test_a_parallel_gripper_takes_a_joint_state_command_and_reports_its_state(
+    ros2_domain: int, tmp_path: Path
+) -> None:
+    facts = default_facts("pr2", ros=2).replace(
+        "'control_msgs/GripperCommand'", "'control_msgs/ParallelGripperCommand'"
+    )
+    facts_file = tmp_path / "pr2_parallel.pl"
+    facts_file.write_text(facts)
+    log = tmp_path / "goals.jsonl"
+    driver = DriverProcess(
+        "", "pr2", ros=2, domain_id=ros2_domain, ros_facts=facts_file, goal_log=log
+    )
+    with driver, ros_robot("pr2", ros=2, ros_facts=facts) as run:
+        opened = perform(a.motion(type="opening", gripper="left"))
+        closed = perform(a.motion(type="closing", gripper="left"))
+        finger = run.environment.client.joint_states()["l_gripper_l_finger_joint"]
+        (open_goal, close_goal) = driver.received_goals("/l_gripper_controller/gripper_cmd")
+    assert open_goal["command"]["name"] == ["l_gripper_l_finger_joint"]
+    assert open_goal["command"]["position"] == pytest.approx([0.085])  # a gap [m], the facts
+    assert close_goal["command"]["position"] == pytest.approx([0.0])
+    assert opened == pytest.approx(0.548, abs=1e-3)  # 0.085 m is open: the finger's upper limit
+    assert closed == pytest.approx(0.0, abs=1e-3) and finger == pytest.approx(0.0, abs=1e-3)
+
+
+CDR_CHECK = """
+from rclpy.serialization import serialize_message
+from geometry_msgs.msg import TransformStamped
+from tf2_msgs.msg import TFMessage
+from robocram.ros.tf_cdr import read_tf_message
+transforms = []
+for i in range(50):  # names of every length mod 4, so each alignment is crossed
+    t = TransformStamped(child_frame_id="link" + "x" * i)
+    t.header.frame_id, t.header.stamp.sec = ("map", "base_footprint")[i % 2], i
+    t.transform.translation.x, t.transform.translation.z = 0.1 * i, -2.0 * i
+    t.transform.rotation.y, t.transform.rotation.w = 0.6, 0.8
+    transforms.append(t)
+want = [(t.header.frame_id, t.child_frame_id, (0.1 * i, 0.0, -2.0 * i), (0.0, 0.6, 0.0, 0.8))
+        for i, t in enumerate(transforms)]
+assert read_tf_message(serialize_message(TFMessage(transforms=transforms))) == want
+assert read_tf_message(serialize_message(TFMessage())) == []
+"""
+
+
+def test_tf_is_read_from_its_cdr_bytes_as_rclpy_writes_them() -> None:
+    environment = ros2_prefix().environment(0)
+    subprocess.run(child_argv(CDR_CHECK), env=environment, check=True, timeout=60)

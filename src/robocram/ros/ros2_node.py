@@ -24,8 +24,9 @@ from typing import Any
 from robocram.ros.node_config import NodeConfig
 from robocram.ros.ros1_node import BLOCKING_OPS, handle_request
 from robocram.ros.ros2_messages import action_class, fill, to_dict
+from robocram.ros.tf_cdr import read_tf_message
 from robocram.ros.transport import GoalState
-from robocram.tf import Pose, TransformTree
+from robocram.tf import Pose, Quaternion, TransformTree, Vector3
 
 MONITOR_PERIOD = 0.05  # [s]
 # action_msgs/GoalStatus numbers -> how the goal ended
@@ -97,11 +98,12 @@ class Ros2Node:
         self._joints: dict[str, float] = {}
         self._joint_arrivals = 0
         self._base_arrivals = 0
-        self._transforms: dict[str, tuple[str, Any, Any]] = {}  # child: parent, t, q
+        self._transforms: dict[str, tuple[str, Vector3, Quaternion]] = {}  # child: parent, t, q
         self._tree: TransformTree | None = None  # built from them when asked
         static = QoSProfile(depth=TF_STATIC_DEPTH, durability=DurabilityPolicy.TRANSIENT_LOCAL)
-        node.create_subscription(TFMessage, "/tf", self._on_tf, 100)
-        node.create_subscription(TFMessage, "/tf_static", self._on_tf, static)
+        # raw: read by tf_cdr.py, 20 times quicker than rclpy's message objects
+        node.create_subscription(TFMessage, "/tf", self._on_tf, 100, raw=True)
+        node.create_subscription(TFMessage, "/tf_static", self._on_tf, static, raw=True)
         node.create_subscription(JointState, config.joint_states_topic, self._on_joints, 10)
         self._environment: dict[str, dict[str, float]] = {t: {} for t in config.environment_topics}
         for topic in config.environment_topics:
@@ -133,15 +135,13 @@ class Ros2Node:
         with self._state:
             self._environment[topic].update(zip(msg.name, map(float, msg.position), strict=False))
 
-    def _on_tf(self, msg: Any) -> None:
+    def _on_tf(self, raw: bytes) -> None:
         """Keep each frame's latest transform; count the arrival of the base frame's.
         Only kept here (a robot publishes hundreds at 30 Hz): the tree is built on asking."""
         latest = {
-            t.child_frame_id.lstrip("/"): (
-                t.header.frame_id.lstrip("/"), t.transform.translation, t.transform.rotation
-            )
-            for t in msg.transforms
-        }  # fmt: skip
+            child.lstrip("/"): (parent.lstrip("/"), translation, rotation)
+            for parent, child, translation, rotation in read_tf_message(raw)
+        }
         with self._state:
             self._transforms.update(latest)
             self._tree = None
@@ -153,8 +153,8 @@ class Ros2Node:
         """The tree of the latest transforms (call holding ``_state``)."""
         if self._tree is None:
             tree = TransformTree()
-            for child, (parent, p, q) in self._transforms.items():
-                tree.set_transform(parent, child, Pose((p.x, p.y, p.z), (q.x, q.y, q.z, q.w)))
+            for child, (parent, translation, rotation) in self._transforms.items():
+                tree.set_transform(parent, child, Pose(translation, rotation))
             self._tree = tree
         return self._tree
 

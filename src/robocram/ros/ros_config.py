@@ -24,6 +24,7 @@ ACTION_TYPES = (
     "control_msgs/FollowJointTrajectory",
     "control_msgs/PointHead",
     "control_msgs/GripperCommand",
+    "control_msgs/ParallelGripperCommand",
     "robocram_msgs/DetectObjects",
     "pr2_controllers_msgs/JointTrajectory",
     "pr2_controllers_msgs/SingleJointPosition",

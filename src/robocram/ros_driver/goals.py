@@ -11,6 +11,7 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import partial
+from types import SimpleNamespace
 from typing import Any
 
 import numpy as np
@@ -301,3 +302,23 @@ def detect_objects(goal: RosMessage, ctx: GoalContext) -> Outcome:
             for obj in seen
         ]
     return True, {"objects": objects}, f"{len(objects)} objects seen"
+
+
+def parallel_gripper_command(
+    goal: RosMessage, ctx: GoalContext, semantics: GripperSemantics
+) -> Outcome:
+    """``control_msgs/ParallelGripperCommand`` (ros2_controllers' parallel gripper): the
+    command's first position, as ``gripper_command`` runs it; the result's ``state`` is a
+    JointState of the gripper joint."""
+    efforts = list(goal.command.effort)
+    command = SimpleNamespace(position=goal.command.position[0], max_effort=(efforts or [0.0])[0])
+    outcome = gripper_command(SimpleNamespace(command=command), ctx, semantics)
+    if outcome is None:
+        return None
+    succeeded, result, text = outcome
+    if "position" not in result:  # failed before moving: no state to report
+        return outcome
+    joint = gripper_joints(ctx.robot, semantics.arm)[0]
+    state = {"name": [joint], "position": [result["position"]], "effort": [result["effort"]]}
+    fields = {"state": state, "stalled": result["stalled"], "reached_goal": result["reached_goal"]}
+    return succeeded, fields, text

@@ -43,6 +43,8 @@ Handler = Callable[[Any, goals.GoalContext], goals.Outcome]
 def _handler(resource: str, action_type: str, config: RosConfig, controllers: str) -> Handler:
     if action_type.endswith("GripperCommand"):  # control_msgs' or the PR2's Pr2GripperCommand
         arm = resource.removeprefix("gripper(").removesuffix(")")
+        if action_type == "control_msgs/ParallelGripperCommand":
+            return partial(goals.parallel_gripper_command, semantics=config.grippers[arm])
         if controllers == "pr2":
             return partial(pr2_controllers.gripper_command, arm=arm)
         return partial(goals.gripper_command, semantics=config.grippers[arm])

@@ -1,0 +1,60 @@
+"""A ``tf2_msgs/TFMessage`` read straight from its serialized (CDR) bytes.
+
+A robot publishes hundreds of transforms on ``/tf`` at 30 Hz or more. rclpy turns each
+into Python message objects, field by field, holding the interpreter's lock long enough
+to delay our node's answers to the plan process; our ROS 2 node subscribes raw instead
+and reads the few fields it keeps here (frames, translation, rotation; not the stamps).
+
+Layout (XCDR1, as Fast DDS writes it): a 4-byte encapsulation header whose second byte
+is 1 for little-endian, then ``uint32`` count of TransformStamped, each: ``int32 sec``,
+``uint32 nanosec``, ``string frame_id``, ``string child_frame_id`` (``uint32`` length
+with the terminating NUL, then the bytes), 7 ``float64`` (translation xyz, rotation xyzw)
+aligned to 8 bytes; offsets aligned from the end of the encapsulation header.
+"""
+
+from __future__ import annotations
+
+import struct
+
+Transform = tuple[str, str, tuple[float, float, float], tuple[float, float, float, float]]
+
+
+def _align(offset: int, size: int) -> int:
+    return (offset + size - 1) & ~(size - 1)
+
+
+def read_tf_message(raw: bytes) -> list[Transform]:
+    """``(parent, child, translation, rotation)`` of every transform in the message.
+
+    Raises:
+        ValueError: the bytes are not a CDR-encoded TFMessage (truncated, bad header).
+    """
+    if len(raw) < 8:
+        raise ValueError(f"a TFMessage needs at least 8 bytes, got {len(raw)}")
+    order = "<" if raw[1] == 1 else ">"
+    data = memoryview(raw)[4:]
+    try:
+        (count,) = struct.unpack_from(order + "I", data, 0)
+        offset = 4
+        transforms: list[Transform] = []
+        for _ in range(count):
+            offset += 8  # stamp: sec, nanosec (aligned: every field before is 4-byte)
+            parent, offset = _string(data, offset, order)
+            child, offset = _string(data, _align(offset, 4), order)
+            offset = _align(offset, 8)
+            x, y, z, qx, qy, qz, qw = struct.unpack_from(order + "7d", data, offset)
+            offset += 56
+            transforms.append((parent, child, (x, y, z), (qx, qy, qz, qw)))
+            offset = _align(offset, 4)
+    except struct.error as err:
+        raise ValueError(f"not a CDR TFMessage: {err}") from err
+    return transforms
+
+
+def _string(data: memoryview, offset: int, order: str) -> tuple[str, int]:
+    (length,) = struct.unpack_from(order + "I", data, offset)
+    start = offset + 4
+    end = start + length
+    if end > len(data) or length == 0:
+        raise struct.error(f"a string of {length} bytes at {offset} runs past the message")
+    return bytes(data[start : end - 1]).decode(), end
