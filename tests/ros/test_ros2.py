@@ -249,7 +249,8 @@ CDR_CHECK = """
 from rclpy.serialization import serialize_message
 from geometry_msgs.msg import TransformStamped
 from tf2_msgs.msg import TFMessage
-from robocram.ros.tf_cdr import read_tf_message
+from rclpy.serialization import deserialize_message
+from robocram.ros.tf_cdr import read_tf_message, write_tf_message
 transforms = []
 for i in range(50):  # names of every length mod 4, so each alignment is crossed
     t = TransformStamped(child_frame_id="link" + "x" * i)
@@ -261,9 +262,13 @@ want = [(t.header.frame_id, t.child_frame_id, (0.1 * i, 0.0, -2.0 * i), (0.0, 0.
         for i, t in enumerate(transforms)]
 assert read_tf_message(serialize_message(TFMessage(transforms=transforms))) == want
 assert read_tf_message(serialize_message(TFMessage())) == []
+written = deserialize_message(write_tf_message((7, 9), want), TFMessage)
+assert [t.header.stamp.sec for t in written.transforms] == [7] * 50
+assert serialize_message(written) == write_tf_message((7, 9), want)
+assert deserialize_message(write_tf_message((7, 9), []), TFMessage).transforms == []
 """
 
 
-def test_tf_is_read_from_its_cdr_bytes_as_rclpy_writes_them() -> None:
+def test_tf_is_read_from_and_written_to_its_cdr_bytes_as_rclpy_does() -> None:
     environment = ros2_prefix().environment(0)
     subprocess.run(child_argv(CDR_CHECK), env=environment, check=True, timeout=60)

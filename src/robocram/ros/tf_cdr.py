@@ -1,9 +1,10 @@
-"""A ``tf2_msgs/TFMessage`` read straight from its serialized (CDR) bytes.
+"""A ``tf2_msgs/TFMessage`` read from and written to its serialized (CDR) bytes.
 
 A robot publishes hundreds of transforms on ``/tf`` at 30 Hz or more. rclpy turns each
 into Python message objects, field by field, holding the interpreter's lock long enough
 to delay our node's answers to the plan process; our ROS 2 node subscribes raw instead
-and reads the few fields it keeps here (frames, translation, rotation; not the stamps).
+and reads the few fields it keeps here (frames, translation, rotation; not the stamps),
+and the projection driver publishes the bytes written here.
 
 Layout (XCDR1, as Fast DDS writes it): a 4-byte encapsulation header whose second byte
 is 1 for little-endian, then ``uint32`` count of TransformStamped, each: ``int32 sec``,
@@ -15,6 +16,7 @@ aligned to 8 bytes; offsets aligned from the end of the encapsulation header.
 from __future__ import annotations
 
 import struct
+from collections.abc import Iterable
 
 Transform = tuple[str, str, tuple[float, float, float], tuple[float, float, float, float]]
 
@@ -49,6 +51,35 @@ def read_tf_message(raw: bytes) -> list[Transform]:
     except struct.error as err:
         raise ValueError(f"not a CDR TFMessage: {err}") from err
     return transforms
+
+
+def write_tf_message(stamp: tuple[int, int], transforms: Iterable[Transform]) -> bytes:
+    """The little-endian CDR bytes of a TFMessage of ``transforms``, all stamped
+    ``stamp`` (sec, nanosec); rclpy publishes them as they are (``publish(bytes)``)."""
+    out = bytearray(b"\x00\x01\x00\x00\x00\x00\x00\x00")  # header, count (set below)
+    count = 0
+    for parent, child, translation, rotation in transforms:
+        _pad(out, 4)
+        out += struct.pack("<iI", *stamp)
+        _put_string(out, parent)
+        _pad(out, 4)
+        _put_string(out, child)
+        _pad(out, 8)
+        out += struct.pack("<7d", *translation, *rotation)
+        count += 1
+    struct.pack_into("<I", out, 4, count)
+    return bytes(out)
+
+
+def _pad(out: bytearray, size: int) -> None:
+    """Zero bytes that align the end of ``out`` (counted from the header's end) to ``size``."""
+    offset = len(out) - 4
+    out += bytes(_align(offset, size) - offset)
+
+
+def _put_string(out: bytearray, text: str) -> None:
+    encoded = text.encode() + b"\x00"
+    out += struct.pack("<I", len(encoded)) + encoded
 
 
 def _string(data: memoryview, offset: int, order: str) -> tuple[str, int]:

@@ -20,6 +20,7 @@ from functools import partial
 from typing import Any
 
 from robocram.ros.ros2_messages import action_class, fill, message_class, to_dict
+from robocram.ros.tf_cdr import write_tf_message
 from robocram.ros_driver import goals
 from robocram.ros_driver.motion import Stepper
 from robocram.ros_driver.projection_driver import PUBLISH_RATE, Handler, ProjectionDriver, _handler
@@ -145,26 +146,19 @@ class Ros2ProjectionDriver(ProjectionDriver):
     def publish_state(self) -> None:
         """Publish the joint states and every frame of the world in ``map`` now.
 
-        Messages are built field by field, not through the generic ``fill``: hundreds of
-        transforms go out at ``PUBLISH_RATE``."""
-        from geometry_msgs.msg import TransformStamped
+        The transforms go out as CDR bytes written here (``tf_cdr.py``): hundreds of
+        them at ``PUBLISH_RATE`` as rclpy message objects would take the driver's time."""
         from sensor_msgs.msg import JointState
-        from tf2_msgs.msg import TFMessage
 
         with self.lock:
             joints = self.world.joint_states(self.robot.name)
             poses = self.frames.frame_poses()
             environments = {e: self.world.joint_states(e) for e in self.environments}
         stamp = self._stamp()
-        transforms = []
-        for frame, pose in poses.items():
-            t = TransformStamped()
-            t.header.stamp, t.header.frame_id, t.child_frame_id = stamp, "map", frame
-            translation, rotation = t.transform.translation, t.transform.rotation
-            translation.x, translation.y, translation.z = map(float, pose.position)
-            rotation.x, rotation.y, rotation.z, rotation.w = map(float, pose.orientation)
-            transforms.append(t)
-        self._publishers["tf"].publish(TFMessage(transforms=transforms))
+        transforms = [
+            ("map", frame, pose.position, pose.orientation) for frame, pose in poses.items()
+        ]
+        self._publishers["tf"].publish(write_tf_message((stamp.sec, stamp.nanosec), transforms))
         for environment, values in environments.items():
             self._publishers[environment].publish(_joint_state(JointState, stamp, values))
         self._publishers["joints"].publish(_joint_state(JointState, stamp, joints))
