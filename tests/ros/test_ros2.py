@@ -13,7 +13,7 @@ from typing import Any
 import pytest
 
 from robocram.designators import a
-from robocram.execution import perform
+from robocram.execution import perform, pursue, sleep
 from robocram.execution.failures import NavigationGoalNotReached
 from robocram.motion import JointTrajectory, trajectory_listener
 from robocram.plans import pick_up
@@ -63,7 +63,7 @@ def _server_of(trajectory: JointTrajectory) -> str:
     return TRAJECTORY_SERVERS[side or joint.split("_")[0]]
 
 
-def test_pick_up_through_ros2_agrees_with_projection_goal_by_goal(
+def test_pick_up_through_ros2_agrees_with_projection_goal_by_goal_with_the_clock_ahead(
     ros2_domain: int, tmp_path: Path
 ) -> None:
     scene = tabletop_scene("pr2")
@@ -74,7 +74,9 @@ def test_pick_up_through_ros2_agrees_with_projection_goal_by_goal(
     threads = set(threading.enumerate())
     sent: list[JointTrajectory] = []
     with (
-        DriverProcess("", "pr2", ros=2, domain_id=ros2_domain, goal_log=tmp_path / "g") as driver,
+        DriverProcess(
+            "", "pr2", ros=2, domain_id=ros2_domain, goal_log=tmp_path / "g", clock_offset=10.0
+        ) as driver,
         ros_robot("pr2", ros=2, world=world) as run,
         trajectory_listener(sent.append),
     ):
@@ -85,7 +87,9 @@ def test_pick_up_through_ros2_agrees_with_projection_goal_by_goal(
         grippers = driver.received_goals("/l_gripper_controller/gripper_cmd")
         grippers += driver.received_goals("/r_gripper_controller/gripper_cmd")
         by_server = {s: driver.received_goals(s) for s in TRAJECTORY_SERVERS.values()}
+        skew = run.environment.client.clock_skew
     assert run.tree.root.status.name == "SUCCEEDED"
+    assert skew == pytest.approx(10.0, abs=0.5)  # the robot's clock ahead: no matter
     assert result.arm == direct.arm
     assert ros_tool.distance_to(tool) < AGREE
     assert ros_mug.distance_to(mug) < AGREE
@@ -272,3 +276,31 @@ assert deserialize_message(write_tf_message((7, 9), []), TFMessage).transforms =
 def test_tf_is_read_from_and_written_to_its_cdr_bytes_as_rclpy_does() -> None:
     environment = ros2_prefix().environment(0)
     subprocess.run(child_argv(CDR_CHECK), env=environment, check=True, timeout=60)
+
+
+def test_stopping_mid_navigation_cancels_the_nav2_goal_and_the_base_stops(
+    ros2_domain: int, tmp_path: Path
+) -> None:
+    far = Pose((-4.0, 3.0, 0.0))  # free floor, far from the robot at the origin
+    log = tmp_path / "goals.jsonl"
+    driver = DriverProcess("", "pr2", base_speed=0.3, ros=2, domain_id=ros2_domain, goal_log=log)
+    with driver, ros_robot("pr2", ros=2) as run:
+        client = run.environment.client
+        start = client.base_pose()
+        stops: list[float] = []
+
+        def until_moving() -> None:
+            while client.base_pose().distance_to(start) < MOVED:
+                sleep(0.02)
+            stops.append(time.monotonic())
+
+        pursue(lambda: perform(a.motion(type="going", target=far)), until_moving)
+        stopped = client.base_pose()
+        for _ in range(3):  # several state messages later the base is still there
+            assert client.transport.wait_for_state(None, 5.0)
+        later = client.base_pose()
+        (cancel,) = driver.cancels_seen("/navigate_to_pose")
+    assert stopped.distance_to(start) >= MOVED
+    assert stopped.distance_to(far) > 1.0
+    assert later.distance_to(stopped) < 1e-6
+    assert 0.0 < cancel - stops[0] < 0.05  # [s] the stop reached the driver within 50 ms
