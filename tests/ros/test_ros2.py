@@ -17,7 +17,7 @@ from robocram.execution import perform, pursue, sleep
 from robocram.execution.failures import NavigationGoalNotReached
 from robocram.motion import JointTrajectory, trajectory_listener
 from robocram.plans import pick_up
-from robocram.plans.transport import transport
+from robocram.plans.transport import TransportResult, transport
 from robocram.projection import simulated_robot
 from robocram.ros import RosCancelIgnored, RosConnectionLost, RosExtraMissing, ros_robot
 from robocram.ros.ros2_environment import child_argv, ros2_prefix
@@ -25,6 +25,7 @@ from robocram.ros.ros_config import default_facts
 from robocram.ros_driver.driver_process import DriverProcess
 from robocram.scenes import kitchen_scene, tabletop_scene
 from robocram.tf import Pose, PoseStamped, transform_pose
+from robocram.world import World
 
 AGREE = 0.01  # [m] ROS 2 and direct projection agree this closely
 TABLE = ("kitchen", "table_top")
@@ -142,37 +143,60 @@ def test_nav2_failing_gives_the_typed_failure_with_its_error_code(ros2_domain: i
     assert after.distance_to(before) < 1e-6  # refused: the robot did not move
 
 
-def test_the_bowl_comes_out_of_the_drawer_over_ros2_with_the_robot_clock_behind(
-    ros2_domain: int,
-) -> None:
+def _in_projection(object_type: str, item: str) -> TransportResult:
     scene = kitchen_scene("pr2")
     with simulated_robot(scene.world, scene.robot):
-        expected = transport("bowl", a.location(on=TABLE, for_="bowl-1"))
+        result = transport(object_type, a.location(on=TABLE, for_=item))
     scene.world.close()
-    scene = kitchen_scene("pr2")
-    driver = DriverProcess(
-        "", "pr2", ros=2, domain_id=ros2_domain, controllers="pr2", clock_offset=-10.0,
-        scene="kitchen",
-    )  # fmt: skip
-    with driver, ros_robot("pr2", ros=2, world=scene.world) as run:
-        result = transport("bowl", a.location(on=TABLE, for_="bowl-1"))
-        bowl = run.transforms.lookup("map", "bowl-1")
-        drawer = run.environment.client.transport.environment_joint_states()
-        skew = run.environment.client.clock_skew
-    assert run.tree.root.status.name == "SUCCEEDED"
-    assert skew == pytest.approx(-10.0, abs=0.5)
-    assert [opened.container.joint for opened in result.opened] == [DRAWER_JOINT]
-    low, _ = scene.world.aabb("bowl-1")
-    table_low, table_high = scene.world.link_aabb("kitchen", "table_top")
-    assert low[2] == pytest.approx(table_high[2], abs=RESTING)  # on the table top, inside it
-    assert table_low[0] < bowl.position[0] < table_high[0]
-    assert table_low[1] < bowl.position[1] < table_high[1]
-    assert drawer["/kitchen/joint_states"][DRAWER_JOINT] == pytest.approx(0.0, abs=0.01)  # shut
+    return result
+
+
+def _on_the_table_top(world: World, item: str, pose: Pose) -> None:
+    """``item`` (at ``pose`` in the driver's world) stands on the table top, inside it."""
+    low, _ = world.aabb(item)
+    table_low, table_high = world.link_aabb("kitchen", "table_top")
+    assert world.pose(item).distance_to(pose) < 1e-6  # the mirror shows it there too
+    assert low[2] == pytest.approx(table_high[2], abs=RESTING)
+    assert table_low[0] < pose.position[0] < table_high[0]
+    assert table_low[1] < pose.position[1] < table_high[1]
+
+
+def _same_stands(result: TransportResult, expected: TransportResult, within: float) -> None:
+    """The stages tried in the same order, from stands at most ``within`` [m] apart."""
     stages = [(attempt.stage, attempt.stand) for attempt in result.log.attempts]
     projected = [(attempt.stage, attempt.stand) for attempt in expected.log.attempts]
     assert [stage for stage, _ in stages] == [stage for stage, _ in projected]
     for (_, stand), (_, want) in zip(stages, projected, strict=True):
-        assert stand.distance_to(want) < DRAWN  # the same seeds, the same stands
+        assert stand.distance_to(want) < within
+
+
+@pytest.mark.parametrize(
+    ("object_type", "item", "clock_offset"), [("mug", "mug-1", 0.0), ("bowl", "bowl-1", -10.0)]
+)
+def test_the_kitchen_transport_over_ros2_on_the_real_pr2s_controllers(
+    ros2_domain: int, object_type: str, item: str, clock_offset: float
+) -> None:
+    expected = _in_projection(object_type, item)
+    scene = kitchen_scene("pr2")
+    driver = DriverProcess(
+        "", "pr2", ros=2, domain_id=ros2_domain, controllers="pr2", clock_offset=clock_offset,
+        scene="kitchen",
+    )  # fmt: skip
+    with driver, ros_robot("pr2", ros=2, world=scene.world) as run:
+        result = transport(object_type, a.location(on=TABLE, for_=item))
+        placed = run.transforms.lookup("map", item)
+        drawers = run.environment.client.transport.environment_joint_states()
+        skew = run.environment.client.clock_skew
+    assert run.tree.root.status.name == "SUCCEEDED"
+    assert skew == pytest.approx(clock_offset, abs=0.5)
+    _on_the_table_top(scene.world, item, placed)
+    assert scene.world.attachments("pr2") == {}  # let go in the mirror too
+    if object_type == "bowl":  # out of the drawer, which is shut again
+        assert [opened.container.joint for opened in result.opened] == [DRAWER_JOINT]
+        assert drawers["/kitchen/joint_states"][DRAWER_JOINT] == pytest.approx(0.0, abs=0.01)
+    else:
+        assert result.opened == []
+    _same_stands(result, expected, DRAWN)  # the same seeds, the same stands
 
 
 def test_a_controller_killed_mid_goal_gives_a_typed_failure_in_bounded_time(
