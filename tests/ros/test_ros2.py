@@ -24,7 +24,7 @@ from robocram.ros.ros2_environment import child_argv, ros2_prefix
 from robocram.ros.ros_config import default_facts
 from robocram.ros_driver.driver_process import DriverProcess
 from robocram.scenes import kitchen_scene, tabletop_scene
-from robocram.tf import Pose, PoseStamped, transform_pose
+from robocram.tf import Pose, PoseStamped, pose_to_ros, transform_pose
 from robocram.world import World
 
 AGREE = 0.01  # [m] ROS 2 and direct projection agree this closely
@@ -129,18 +129,32 @@ def test_an_absent_controller_fails_typed_within_its_server_timeout(ros2_domain:
     assert 1.0 <= waited < 3.0
 
 
-def test_nav2_failing_gives_the_typed_failure_with_its_error_code(ros2_domain: int) -> None:
+def test_nav2_failing_gives_the_typed_failure_with_its_error_code_and_feedback_is_read(
+    ros2_domain: int,
+) -> None:
     x, y, _ = tabletop_scene("pr2").world.pose("table").position
     into_the_table = Pose((x, y, 0.0))  # the base inside the table
-    with DriverProcess("", "pr2", ros=2, domain_id=ros2_domain), ros_robot("pr2", ros=2) as run:
-        before = run.environment.client.base_pose()
+    back = Pose((-1.0, 0.0, 0.0))  # [m] 1 m behind the robot: 2 s at 0.5 m/s
+    driver = DriverProcess("", "pr2", base_speed=0.5, ros=2, domain_id=ros2_domain)
+    with driver, ros_robot("pr2", ros=2) as run:
+        client = run.environment.client
+        before = client.base_pose()
         with pytest.raises(NavigationGoalNotReached, match="ABORTED") as failed:
             perform(a.motion(type="going", target=into_the_table))
-        after = run.environment.client.base_pose()
+        after = client.base_pose()
+        goal = {"pose": {"header": {"frame_id": "map"}, "pose": pose_to_ros(back)}}
+        handle = client.transport.send_goal("/navigate_to_pose", goal)
+        with handle.done:
+            assert handle.done.wait_for(lambda: handle.outcome is not None, 10.0)
     assert failed.value.context["error_code"] == 206
     assert "error_code 206 (GOAL_OCCUPIED)" in str(failed.value)
     assert "would collide with ['mug-1', 'table']" in str(failed.value)  # Nav2's error_msg
     assert after.distance_to(before) < 1e-6  # refused: the robot did not move
+    assert handle.outcome is not None and handle.outcome.state.name == "SUCCEEDED"
+    feedback = handle.outcome.feedback  # the last the server sent while driving
+    assert feedback["distance_remaining"] < 0.2
+    assert _seconds(feedback["navigation_time"]) > 1.5
+    assert feedback["current_pose"]["header"]["frame_id"] == "map"
 
 
 def _in_projection(object_type: str, item: str) -> TransportResult:

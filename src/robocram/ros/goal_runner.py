@@ -166,10 +166,13 @@ def checked(
             reason=outcome.status_text,
         )
     error = failure(f"{server} {state.name}: {controller_words(outcome)}")
-    raise error.add_context(
+    error.add_context(
         controller=server,
         status=state.name,
         status_text=outcome.status_text,
         error_code=outcome.result.get("error_code"),
         error_string=outcome.result.get("error_string", outcome.result.get("error_msg")),
     )
+    if outcome.feedback:  # where the server last said it was (Nav2: distance remaining)
+        error.add_context(feedback=outcome.feedback)
+    raise error

@@ -125,11 +125,14 @@ class NodeProcessTransport:
                     self._replies[request_id] = (ok, payload)
                     self._cond.notify_all()
             elif message[0] == "goal":
-                _, goal_id, state, text, result, mark, arrived = message
+                _, goal_id, state, text, result, mark, arrived, *feedback = message
                 with self._cond:
                     handle = self._goals.pop(goal_id, None)
                 if handle is not None:
-                    outcome = GoalOutcome(GoalState(state), text, result, tuple(mark), arrived)
+                    last = feedback[0] if feedback else {}  # the ROS 1 node sends none
+                    outcome = GoalOutcome(
+                        GoalState(state), text, result, tuple(mark), arrived, last
+                    )
                     handle.finish(outcome)
             elif message[0] == "skew":
                 self._on_skew(float(message[1]))

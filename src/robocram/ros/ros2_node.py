@@ -17,7 +17,7 @@ from __future__ import annotations
 import sys
 import threading
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from multiprocessing.connection import Connection
 from typing import Any
 
@@ -79,6 +79,7 @@ class _Server:
     goal_id: int | None = None
     handle: Any = None  # rclpy's ClientGoalHandle, once the server accepted the goal
     cancel_pending: bool = False  # cancelled before the server accepted it
+    feedback: dict[str, Any] = field(default_factory=dict)  # the running goal's last
     seen: float = 0.0  # monotonic [s] the server was last in the ROS graph
 
 
@@ -174,12 +175,22 @@ class Ros2Node:
         message = fill(entry.action.Goal(), goal)
         with self._state:
             entry.goal_id, entry.handle, entry.cancel_pending = goal_id, None, False
+            entry.feedback = {}
             entry.seen = time.monotonic()
 
-        future = entry.client.send_goal_async(message)
+        future = entry.client.send_goal_async(
+            message, feedback_callback=lambda fed: self._on_feedback(entry, goal_id, fed)
+        )
         sent = time.monotonic()
         future.add_done_callback(lambda done: self._accepted(entry, goal_id, done.result()))
         return sent
+
+    def _on_feedback(self, entry: _Server, goal_id: int, message: Any) -> None:
+        """Keep the goal's last feedback (Nav2: pose, time, distance remaining)."""
+        feedback = to_dict(message.feedback)
+        with self._state:
+            if entry.goal_id == goal_id:
+                entry.feedback = feedback
 
     def _accepted(self, entry: _Server, goal_id: int, handle: Any) -> None:
         if not handle.accepted:
@@ -210,7 +221,8 @@ class Ros2Node:
             if entry.goal_id != goal_id:
                 return
             entry.goal_id, entry.handle = None, None
-        self.send(("goal", goal_id, state.value, text, result, mark, arrived))
+            feedback = entry.feedback
+        self.send(("goal", goal_id, state.value, text, result, mark, arrived, feedback))
 
     def op_cancel(self, goal_id: int) -> None:
         """Cancel the goal if it still runs (once the server has accepted it)."""

@@ -32,14 +32,16 @@ class GoalState(Enum):
 
 @dataclass(frozen=True)
 class GoalOutcome:
-    """How a goal ended: its state, the server's status text, the result, and the state
-    messages that had arrived when it did (state arriving after ``mark`` shows its end)."""
+    """How a goal ended: its state, the server's status text, the result, the state
+    messages that had arrived when it did (state arriving after ``mark`` shows its end)
+    and the last feedback the server sent (e.g. Nav2's distance remaining; may be empty)."""
 
     state: GoalState
     status_text: str
     result: RosDict
     mark: StateMark = (0, 0)
     arrived: float = 0.0  # [s] time.monotonic() when our node got the result (benchmarks)
+    feedback: RosDict = field(default_factory=dict)
 
 
 @dataclass

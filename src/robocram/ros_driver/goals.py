@@ -8,6 +8,7 @@ reuse projection's low-level functions, so a robot behind ROS behaves as in proj
 from __future__ import annotations
 
 import math
+import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import partial
@@ -46,6 +47,7 @@ class GoalContext:
     ``soft_limits`` (the real PR2's controllers): joint targets are clamped into them
     silently, as its safety controller does, and trajectory results carry no status text.
     ``handles``: the handles the grippers hold (their parts move with the hands).
+    ``feedback``: publishes the goal's feedback fields (ROS 2's servers; else ignored).
     """
 
     robot: ProjectedRobot
@@ -53,6 +55,7 @@ class GoalContext:
     stepper: Stepper
     soft_limits: dict[str, tuple[float, float]] | None = None
     handles: HeldHandles = field(default_factory=HeldHandles)
+    feedback: Callable[[dict[str, Any]], None] = lambda _: None
 
 
 def _soft_clamped(target: dict[str, float], ctx: GoalContext) -> dict[str, float]:
@@ -86,7 +89,9 @@ def seconds(duration: RosMessage) -> float:
     return float(duration.sec) + float(duration.nanosec) * 1e-9
 
 
-def _drive(target: RosMessage, ctx: GoalContext) -> tuple[int, str] | None:
+def _drive(
+    target: RosMessage, ctx: GoalContext, step_done: Callable[[], None] = lambda: None
+) -> tuple[int, str] | None:
     """Drive straight to the stamped pose ``target`` unless the goal is in collision:
     ``(0, text)`` reached, ``(NAV2_GOAL_OCCUPIED | NAV2_FAILED_TO_MAKE_PROGRESS, why)``,
     None if preempted."""
@@ -100,7 +105,12 @@ def _drive(target: RosMessage, ctx: GoalContext) -> tuple[int, str] | None:
             return NAV2_GOAL_OCCUPIED, str(failure)
         robot.world.set_pose(robot.name, start)
         duration, step = base_motion(robot, in_map, ctx.options)
-    if not ctx.stepper.run(duration, step):
+
+    def stepping(fraction: float) -> None:
+        step(fraction)
+        step_done()
+
+    if not ctx.stepper.run(duration, stepping):
         return None
     with ctx.stepper.lock:
         try:
@@ -121,8 +131,26 @@ def move_base(goal: RosMessage, ctx: GoalContext) -> Outcome:
 
 def navigate_to_pose(goal: RosMessage, ctx: GoalContext) -> Outcome:
     """``nav2_msgs/NavigateToPose``: as ``move_base``; a failure's result carries Nav2's
-    error code (the failing planner's or controller's, as bt_navigator passes it on)."""
-    driven = _drive(goal.pose, ctx)
+    error code (the failing planner's or controller's, as bt_navigator passes it on).
+    While driving, feedback: the base's pose, the time so far and the distance left."""
+    robot, started = ctx.robot, time.monotonic()
+    frame, goal_xy = (
+        goal.pose.header.frame_id,
+        (goal.pose.pose.position.x, goal.pose.pose.position.y),
+    )
+
+    def feedback() -> None:  # under the stepper's lock
+        here = robot.base_pose()
+        elapsed = time.monotonic() - started
+        ctx.feedback(
+            {
+                "current_pose": pose_stamped_to_ros(PoseStamped.from_pose(frame or "map", here)),
+                "navigation_time": {"secs": int(elapsed), "nsecs": int(elapsed % 1 * 1e9)},
+                "distance_remaining": math.dist(here.position[:2], goal_xy),
+            }
+        )
+
+    driven = _drive(goal.pose, ctx, feedback)
     if driven is None:
         return None
     code, text = driven

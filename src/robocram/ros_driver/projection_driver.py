@@ -198,11 +198,17 @@ class ProjectionDriver:
         else:
             server.set_aborted(message, text)
 
-    def _handle(self, handler: Handler, goal: RosMessage, stepper: Stepper) -> goals.Outcome:
+    def _handle(
+        self,
+        handler: Handler,
+        goal: RosMessage,
+        stepper: Stepper,
+        feedback: Callable[[dict[str, Any]], None] = lambda _: None,
+    ) -> goals.Outcome:
         """Run the handler; an error in it aborts the goal with the error as status text."""
         try:
             context = goals.GoalContext(
-                self.robot, self.options, stepper, self.soft_limits, self.handles
+                self.robot, self.options, stepper, self.soft_limits, self.handles, feedback
             )
             return handler(goal, context)
         except Exception as err:  # reported to the client, never a goal left hanging

@@ -16,6 +16,7 @@ import contextlib
 import json
 import threading
 import time
+from collections.abc import Callable
 from functools import partial
 from typing import Any
 
@@ -28,6 +29,7 @@ from robocram.ros_driver.projection_driver import PUBLISH_RATE, Handler, Project
 POLL = 0.02  # [s] how often a faulty goal looks at its cancel request
 THREADS = 8  # executor threads: goals of several resources run at once
 STATIC_PARENT = "world"  # map's parent on /tf_static
+FEEDBACK_PERIOD = 0.1  # [s] between a goal's feedback messages
 
 
 class Ros2ProjectionDriver(ProjectionDriver):
@@ -107,7 +109,8 @@ class Ros2ProjectionDriver(ProjectionDriver):
         elif self.fault == "abort":
             outcome = goals.aborted_on_purpose(action_type, bare=True)
         else:
-            outcome = self._handle(handler, handle.request, Stepper(self.lock, cancelled))
+            feedback = _feeder(handle, action_class(action_type).Feedback)
+            outcome = self._handle(handler, handle.request, Stepper(self.lock, cancelled), feedback)
         self.publish_state()
         if outcome is None:
             handle.canceled()
@@ -168,6 +171,19 @@ def _joint_state(kind: Any, stamp: Any, values: dict[str, float]) -> Any:
     state = kind(name=list(values), position=[float(v) for v in values.values()])
     state.header.stamp = stamp
     return state
+
+
+def _feeder(handle: Any, kind: Any) -> Callable[[dict[str, Any]], None]:
+    """Publishes the goal's feedback, at most one message every ``FEEDBACK_PERIOD``."""
+    last = [0.0]  # [s] monotonic, when the last one went out
+
+    def feed(fields: dict[str, Any]) -> None:
+        now = time.monotonic()
+        if now - last[0] >= FEEDBACK_PERIOD:
+            last[0] = now
+            handle.publish_feedback(fill(kind(), fields))
+
+    return feed
 
 
 def _known(message: Any, fields: dict[str, Any]) -> dict[str, Any]:
