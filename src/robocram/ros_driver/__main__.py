@@ -12,7 +12,7 @@ import argparse
 import os
 from pathlib import Path
 
-from robocram.robots import load_description
+from robocram.robots import RobotDescription, load_description
 from robocram.ros.ros_config import install_ros_facts, read_ros_config
 from robocram.ros_driver.motion import MotionOptions
 from robocram.ros_driver.projection_driver import CONTROLLERS, FAULTS, ProjectionDriver
@@ -22,7 +22,7 @@ from robocram.world import World
 SCENES = ("tabletop", "kitchen")
 
 
-def _build_scene(scene: str, robot: str, world: World) -> str:
+def _build_scene(scene: str, robot: str | RobotDescription, world: World) -> str:
     """Build ``scene`` with ``robot`` in ``world``; return the robot's name there."""
     if scene == "kitchen":
         return kitchen_scene(robot, world).robot

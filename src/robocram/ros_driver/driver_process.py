@@ -94,8 +94,9 @@ class DriverProcess:
         deadline = time.monotonic() + START_TIMEOUT
         while "ready" not in self.log:
             if self.process.poll() is not None or time.monotonic() > deadline:
+                printed = self.log  # before stop() removes the log file
                 self.stop()
-                raise RosNodeError(f"the driver did not start ({' '.join(self.args)}):\n{self.log}")
+                raise RosNodeError(f"the driver did not start ({' '.join(self.args)}):\n{printed}")
             time.sleep(0.05)
         return self
 

@@ -15,7 +15,7 @@ import sys
 import threading
 from collections.abc import Callable
 
-from robocram.robots import load_description
+from robocram.robots import RobotDescription, load_description
 from robocram.ros.ros2_environment import child_argv, require_ros2
 from robocram.ros.ros_config import install_ros_facts, read_ros_config
 from robocram.ros_driver.motion import MotionOptions
@@ -24,7 +24,9 @@ from robocram.world import World
 RUN_AGAIN = "import runpy; runpy.run_module('robocram.ros_driver', run_name='__main__')"
 
 
-def ros2_main(args: argparse.Namespace, build_scene: Callable[[str, str, World], str]) -> None:
+def ros2_main(
+    args: argparse.Namespace, build_scene: Callable[[str, str | RobotDescription, World], str]
+) -> None:
     """Build the scene, join ROS 2 on ``args.domain_id``, serve."""
     if importlib.util.find_spec("rclpy") is None:  # in the venv: again, in ROS 2's environment
         environment = require_ros2().environment(args.domain_id)
@@ -34,10 +36,11 @@ def ros2_main(args: argparse.Namespace, build_scene: Callable[[str, str, World],
     from robocram.ros_driver.ros2_driver import Ros2ProjectionDriver, serve
 
     world = World()
-    robot = build_scene(args.scene, args.robot, world)
+    desc = load_description(args.robot)  # a built-in's name or a description file
+    robot = build_scene(args.scene, desc, world)
     facts = args.ros_facts.read_text() if args.ros_facts else None
     install_ros_facts(world.kb, robot, facts, ros=2)
-    config = read_ros_config(world.kb, load_description(robot))
+    config = read_ros_config(world.kb, desc)
     options = MotionOptions(base_speed=args.base_speed, time_scale=args.time_scale)
     driver = Ros2ProjectionDriver(
         world, config, options, args.fault, args.goal_log, args.controllers, args.clock_offset
