@@ -16,6 +16,7 @@ import logging
 import socket
 import subprocess
 import threading
+from collections.abc import Sequence
 from multiprocessing.connection import Connection
 from typing import Any, TypeVar
 
@@ -208,6 +209,11 @@ class NodeProcessTransport:
         """The latest pose of ``source_frame`` in ``target_frame`` from tf2."""
         position, orientation = self.request("lookup", target_frame, source_frame)
         return Pose(tuple(position), tuple(orientation))
+
+    def lookup_transforms(self, target_frame: str, source_frames: Sequence[str]) -> dict[str, Pose]:
+        """The latest poses of ``source_frames`` in ``target_frame``, in one request."""
+        found = self.request("lookups", target_frame, list(source_frames))
+        return {frame: Pose(tuple(p), tuple(q)) for frame, (p, q) in found.items()}
 
     def frames(self) -> tuple[str, ...]:
         """Every frame in the node's tf2 buffer."""

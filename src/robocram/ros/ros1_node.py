@@ -207,6 +207,12 @@ class RosNode:
             (t.rotation.x, t.rotation.y, t.rotation.z, t.rotation.w),
         )
 
+    def op_lookups(
+        self, target: str, sources: list[str]
+    ) -> dict[str, tuple[tuple[float, ...], tuple[float, ...]]]:
+        """``op_lookup`` of each of ``sources``, in one reply."""
+        return {source: self.op_lookup(target, source) for source in sources}
+
     def op_frames(self) -> list[str]:
         """Every frame in the tf buffer."""
         return sorted(self.buffer._getFrameStrings())

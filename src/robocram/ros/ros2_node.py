@@ -259,6 +259,12 @@ class Ros2Node:
             pose = self._frames().lookup(target, source)
         return tuple(pose.position), tuple(pose.orientation)
 
+    def op_lookups(
+        self, target: str, sources: list[str]
+    ) -> dict[str, tuple[tuple[float, ...], tuple[float, ...]]]:
+        """``op_lookup`` of each of ``sources``, in one reply."""
+        return {source: self.op_lookup(target, source) for source in sources}
+
     def op_frames(self) -> list[str]:
         """Every frame the transforms name."""
         with self._state:

@@ -184,11 +184,13 @@ class RosRobotClient:
             return
         transport = self.transport
         tracked = names_in(transport.frames(), mirror.movable_objects())
+        base = self.desc.base_frame
+        poses = transport.lookup_transforms(self.fixed_frame, [base, *tracked])  # one request
         mirror.sync(
             self.joint_states(),
-            self.base_pose(),
+            poses[base],
             transport.environment_joint_states(),
-            {obj: self.frame_pose(obj) for obj in tracked},
+            {obj: poses[obj] for obj in tracked},
         )
 
     def move_joints(

@@ -9,6 +9,7 @@ rclpy (docs/ros.md, docs/ros2.md); both through ``node_process.py``.
 from __future__ import annotations
 
 import threading
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from enum import Enum
 from typing import Any, Protocol
@@ -88,6 +89,11 @@ class Transport(Protocol):
 
     def lookup_transform(self, target_frame: str, source_frame: str) -> Pose:
         """The latest pose of ``source_frame`` in ``target_frame``."""
+        ...
+
+    def lookup_transforms(self, target_frame: str, source_frames: Sequence[str]) -> dict[str, Pose]:
+        """The latest poses of ``source_frames`` in ``target_frame``, in one request (the
+        world mirror reads the base and every object after each goal)."""
         ...
 
     def frames(self) -> tuple[str, ...]:

@@ -30,6 +30,7 @@ POLL = 0.02  # [s] how often a faulty goal looks at its cancel request
 THREADS = 8  # executor threads: goals of several resources run at once
 STATIC_PARENT = "world"  # map's parent on /tf_static
 FEEDBACK_PERIOD = 0.1  # [s] between a goal's feedback messages
+AFTER_RESULT = 0.01  # [s] after a goal's result, the state is published once more
 
 
 class Ros2ProjectionDriver(ProjectionDriver):
@@ -121,7 +122,20 @@ class Ros2ProjectionDriver(ProjectionDriver):
             handle.succeed()
         else:
             handle.abort()
+        self._publish_after_result()
         return result
+
+    def _publish_after_result(self) -> None:
+        """Publish the state again just after the result has gone out (rclpy sends it when
+        this callback returns), as a robot streaming its state fast would: the client
+        waits for state that arrives after the result."""
+        later = threading.Timer(AFTER_RESULT, self._publish_if_running)
+        later.daemon = True
+        later.start()
+
+    def _publish_if_running(self) -> None:
+        if self.node.context.ok():
+            self.publish_state()
 
     def _publish_static(self) -> None:
         """The map's root frame on /tf_static (latched: late subscribers get it too)."""
