@@ -10,6 +10,7 @@ import time
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 import pytest
 
 from robocram.designators import a
@@ -342,3 +343,31 @@ def test_stopping_mid_navigation_cancels_the_nav2_goal_and_the_base_stops(
     assert stopped.distance_to(far) > 1.0
     assert later.distance_to(stopped) < 1e-6
     assert 0.0 < cancel - stops[0] < 0.05  # [s] the stop reached the driver within 50 ms
+
+
+def test_a_point_head_controller_aims_the_camera_at_the_target(
+    ros2_domain: int, tmp_path: Path
+) -> None:
+    facts = default_facts("pr2", ros=2).replace(
+        "ros_action(pr2, head, '/head_controller/follow_joint_trajectory',\n"
+        "           'control_msgs/FollowJointTrajectory').",
+        "ros_action(pr2, head, '/head_controller/point_head', 'control_msgs/PointHead').",
+    )
+    assert "control_msgs/PointHead" in facts
+    facts_file = tmp_path / "pr2_point_head.pl"
+    facts_file.write_text(facts)
+    target = Pose((1.5, 0.5, 0.6))  # [m] in map, ahead and to the left, low
+    log = tmp_path / "goals.jsonl"
+    driver = DriverProcess(
+        "", "pr2", ros=2, domain_id=ros2_domain, ros_facts=facts_file, goal_log=log
+    )
+    with driver, ros_robot("pr2", ros=2, ros_facts=facts) as run:
+        pan_tilt = perform(a.motion(type="looking", target=a.location(pose=target)))
+        camera = run.transforms.lookup("map", "wide_stereo_optical_frame")
+        (goal,) = driver.received_goals("/head_controller/point_head")
+    assert goal["target"]["point"] == pytest.approx({"x": 1.5, "y": 0.5, "z": 0.6})
+    assert goal["pointing_frame"] == "wide_stereo_optical_frame"
+    assert pan_tilt["head_pan_joint"] > 0.1 and pan_tilt["head_tilt_joint"] > 0.1  # left, down
+    axis = camera.matrix()[:3, 2]  # the optical axis: z
+    to_target = np.subtract(target.position, camera.position)
+    assert float(axis @ to_target) / float(np.linalg.norm(to_target)) > 0.99  # aimed

@@ -272,7 +272,8 @@ def point_head(goal: RosMessage, ctx: GoalContext) -> Outcome:
         camera = robot.world.camera(robot.name).pose.matrix()
     wanted = np.subtract(target.position, camera[:3, 3])
     cos = float(camera[:3, 2] @ wanted) / max(float(np.linalg.norm(wanted)), 1e-9)
-    return True, {}, f"pointing angle error {math.acos(max(-1.0, min(1.0, cos))):.4f} rad"
+    error = math.acos(max(-1.0, min(1.0, cos)))  # [rad]
+    return True, {"pointing_angle_error": error}, f"pointing angle error {error:.4f} rad"
 
 
 def gripper_command(goal: RosMessage, ctx: GoalContext, semantics: GripperSemantics) -> Outcome:
