@@ -5,6 +5,8 @@ BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 ROS_STAMP := $(VENV)/.ros_installed
 ROS_DEFINITIONS := $(wildcard src/robocram/ros/definitions/*/*/*)
+ROS2_STAMP := $(VENV)/.ros2_installed
+ROS2_DEFINITIONS := $(wildcard src/robocram/ros/definitions2/*/*/* src/robocram/ros/definitions2/*/*.*)
 
 .PHONY: demo test setup installed lint typecheck unit bench clean
 
@@ -26,7 +28,13 @@ $(ROS_STAMP): $(STAMP) tools/setup_ros.sh tools/generate_ros_messages.py $(ROS_D
 	bash tools/setup_ros.sh $(VENV)
 	touch $(ROS_STAMP)
 
-setup: $(STAMP) $(ROS_STAMP)
+# robocram.ros with ROS 2: Jazzy's wheels and generated interfaces in $(VENV)/ros2, a prefix
+# of its own (ROS 1's and ROS 2's messages share package names; docs/architecture.md)
+$(ROS2_STAMP): $(STAMP) tools/setup_ros2.sh tools/ros2_cmake_fix.cmake $(ROS2_DEFINITIONS)
+	bash tools/setup_ros2.sh $(VENV)
+	touch $(ROS2_STAMP)
+
+setup: $(STAMP) $(ROS_STAMP) $(ROS2_STAMP)
 
 # `make demo ROBOT=path/to/my_robot.py` runs the kitchen demo on a description file
 ROBOT ?= pr2
@@ -38,10 +46,10 @@ lint: installed
 	$(BIN)/ruff check src tests benchmarks examples tools
 	$(BIN)/ruff format --check src tests benchmarks examples tools
 
-typecheck: installed $(ROS_STAMP)
+typecheck: installed $(ROS_STAMP) $(ROS2_STAMP)
 	$(BIN)/mypy
 
-unit: installed $(ROS_STAMP)
+unit: installed $(ROS_STAMP) $(ROS2_STAMP)
 	$(BIN)/pytest
 
 test: lint typecheck unit

@@ -1,18 +1,19 @@
-"""robocram.ros: run the same plans on real robots through ROS 1 (an optional extra).
+"""robocram.ros: run the same plans on real robots through ROS 1 or ROS 2 (an optional extra).
 
 ``with ros_robot("pr2", master_uri=...):`` is CRAM's ``on-real-pr2``: PERFORM goes to
 process modules that send ``move_base``, ``FollowJointTrajectory``, ``PointHead``,
 ``GripperCommand`` and our ``DetectObjects`` goals, with controller names from the
 robot's ROS facts. Our ROS node runs in a child process behind the :class:`Transport`
 interface. ``python -m robocram.ros_driver`` serves the same interfaces from a projection
-world. Importing this package without the extra raises :class:`RosExtraMissing`.
+world. ``ros_robot(..., ros=2)`` speaks ROS 2 (ros2_control, Nav2; docs/ros2.md).
+Importing this package with neither ROS set up raises :class:`RosExtraMissing`.
 """
 
 from typing import TYPE_CHECKING, Any
 
-from robocram.ros.availability import require_ros_extra
+from robocram.ros.availability import require_some_ros
 
-require_ros_extra()
+require_some_ros()
 
 from robocram.ros.errors import (  # noqa: E402 - only once the extra is known to be there
     RosCancelIgnored,

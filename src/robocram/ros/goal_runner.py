@@ -33,6 +33,16 @@ ERROR_CODES = {
     -4: "PATH_TOLERANCE_VIOLATED",
     -5: "GOAL_TOLERANCE_VIOLATED",
 }
+# nav2_msgs (Jazzy) error codes NavigateToPose passes on from its planner (2xx, from
+# ComputePathToPose) and controller (1xx, from FollowPath); its result says them with
+# ``error_msg`` where control_msgs say ``error_string``
+NAV2_ERROR_CODES = {
+    100: "UNKNOWN", 101: "INVALID_CONTROLLER", 102: "TF_ERROR", 103: "INVALID_PATH",
+    104: "PATIENCE_EXCEEDED", 105: "FAILED_TO_MAKE_PROGRESS", 106: "NO_VALID_CONTROL",
+    107: "CONTROLLER_TIMED_OUT", 200: "UNKNOWN", 201: "INVALID_PLANNER", 202: "TF_ERROR",
+    203: "START_OUTSIDE_MAP", 204: "GOAL_OUTSIDE_MAP", 205: "START_OCCUPIED",
+    206: "GOAL_OCCUPIED", 207: "TIMEOUT", 208: "NO_VALID_PATH",
+}  # fmt: skip
 
 
 def _wait(handle: GoalHandle, timeout: float | None) -> bool:
@@ -122,12 +132,14 @@ def finish_goal(
 
 
 def controller_words(outcome: GoalOutcome) -> str:
-    """The status text, ``error_code`` (named) and ``error_string`` of an outcome, joined."""
+    """The status text, ``error_code`` (named) and ``error_string`` (Nav2: ``error_msg``)
+    of an outcome, joined."""
     words = [outcome.status_text] if outcome.status_text else []
     code = outcome.result.get("error_code")
+    names = NAV2_ERROR_CODES if "error_msg" in outcome.result else ERROR_CODES
     if isinstance(code, int) and code != 0:
-        words.append(f"error_code {code} ({ERROR_CODES.get(code, 'unknown code')})")
-    detail = outcome.result.get("error_string")
+        words.append(f"error_code {code} ({names.get(code, 'unknown code')})")
+    detail = outcome.result.get("error_string", outcome.result.get("error_msg"))
     if detail and detail != outcome.status_text:
         words.append(str(detail))
     return "; ".join(words) or "no status text, error code or error string"
@@ -154,10 +166,13 @@ def checked(
             reason=outcome.status_text,
         )
     error = failure(f"{server} {state.name}: {controller_words(outcome)}")
-    raise error.add_context(
+    error.add_context(
         controller=server,
         status=state.name,
         status_text=outcome.status_text,
         error_code=outcome.result.get("error_code"),
-        error_string=outcome.result.get("error_string"),
+        error_string=outcome.result.get("error_string", outcome.result.get("error_msg")),
     )
+    if outcome.feedback:  # where the server last said it was (Nav2: distance remaining)
+        error.add_context(feedback=outcome.feedback)
+    raise error

@@ -10,9 +10,32 @@ letting go of a handle) both send their goals through here.
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from robocram.execution.failures import GripperClosedCompletely, GripperGoalNotReached
 from robocram.ros.errors import RosCommandError
 from robocram.ros.ros_robot_client import RosRobotClient
+from robocram.ros.transport import GoalOutcome, RosDict
+
+PARALLEL = "control_msgs/ParallelGripperCommand"  # ros2_controllers' parallel gripper
+
+
+def _goal(parallel: bool, joint: str, command: float, force: float) -> RosDict:
+    """A GripperCommand goal, or a ParallelGripperCommand's (its command a JointState)."""
+    if parallel:
+        return {"command": {"name": [joint], "position": [command], "effort": [force]}}
+    return {"command": {"position": command, "max_effort": force}}
+
+
+def _flat(outcome: GoalOutcome) -> GoalOutcome:
+    """A ParallelGripperCommand result's ``state`` (a JointState) as GripperCommand's
+    ``position`` and ``effort``, so both read alike; others unchanged."""
+    state = outcome.result.get("state")
+    if not isinstance(state, dict) or not state.get("position"):
+        return outcome
+    efforts = state.get("effort") or [0.0]
+    flat = {**outcome.result, "position": state["position"][0], "effort": efforts[0]}
+    return replace(outcome, result=flat)
 
 
 def move_gripper(client: RosRobotClient, gripper: str, action: object, effort: object) -> float:
@@ -37,13 +60,18 @@ def move_gripper(client: RosRobotClient, gripper: str, action: object, effort: o
         raise RosCommandError(f"gripper goal {action!r} is none of open, close, grip or a position")
     force = float(effort) if isinstance(effort, int | float) else semantics.effort
     command = semantics.command(position)
-    goal = {"command": {"position": command, "max_effort": force}}
+    resource = f"gripper({arm})"
+    parallel = client.config.action(resource).action_type == PARALLEL
+    joint = client.arm(arm).gripper_joints[0] if parallel else ""
+    goal = _goal(parallel, joint, command, force)
     closing = action in ("close", "grip")
-    outcome = client.run(
-        f"gripper({arm})",
-        goal,
-        lambda text: GripperGoalNotReached(text, gripper=arm, goal=position),
-        accept=semantics.holds if closing else None,
+    outcome = _flat(
+        client.run(
+            resource,
+            goal,
+            lambda text: GripperGoalNotReached(text, gripper=arm, goal=position),
+            accept=(lambda end: semantics.holds(_flat(end))) if closing else None,
+        )
     )
     reached = semantics.joint_value(float(outcome.result.get("position", command)))
     holding = closing and semantics.holds(outcome)

@@ -42,13 +42,14 @@ class RosProcessModule(MotionProcessModule):
 
 
 class NavigationPM(RosProcessModule):
-    """The base over ``move_base_msgs/MoveBase``: ``move_base(Pose)``."""
+    """The base over ``move_base_msgs/MoveBase`` (ROS 1) or Nav2's
+    ``nav2_msgs/NavigateToPose`` (ROS 2): ``move_base(Pose)``."""
 
     name = "ros_navigation"
     resource = "navigation"
 
     def move_base(self, target: PoseStamped | PoseLike) -> Pose:
-        """Send a MoveBase goal; return the base pose reached.
+        """Send a MoveBase or NavigateToPose goal; return the base pose reached.
 
         The robot plans its own path; with a world given to ``ros_robot``, the path is
         first checked there (``plan_base_path``), and no goal is sent if none exists.
@@ -59,12 +60,13 @@ class NavigationPM(RosProcessModule):
         """
         goal_in_map = self.client.in_map(target)
         self.client.planner().base_path(goal_in_map)
-        goal = {
-            "target_pose": {
-                "header": {"frame_id": self.client.fixed_frame},
-                "pose": pose_to_ros(goal_in_map),
-            }
+        stamped = {
+            "header": {"frame_id": self.client.fixed_frame},
+            "pose": pose_to_ros(goal_in_map),
         }
+        kind = self.client.config.action("navigation").action_type
+        # Nav2 names the goal's pose "pose" and runs its default behaviour tree for ""
+        goal = {"pose": stamped} if kind == "nav2_msgs/NavigateToPose" else {"target_pose": stamped}
         self.client.run(
             "navigation",
             goal,

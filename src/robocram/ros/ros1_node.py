@@ -25,32 +25,16 @@ import os
 import sys
 import threading
 import time
-from dataclasses import dataclass
 from multiprocessing.connection import Connection
-from typing import Any
+from typing import Any, Protocol
 
 from robocram.ros.message_dicts import message_class, to_dict, to_message
+from robocram.ros.node_config import NodeConfig
 from robocram.ros.transport import GoalState
 
 MONITOR_PERIOD = 0.05  # [s] how often running goals are checked for a silent server
 TERMINAL = frozenset(state.value for state in GoalState)
 TF_AUTHORITY = "robocram"
-
-
-@dataclass(frozen=True)
-class NodeConfig:
-    """What the node connects to: servers -> action types, the state topic, timeouts."""
-
-    master_uri: str
-    node_name: str
-    servers: dict[str, str]  # server name -> action type, e.g. "control_msgs/PointHead"
-    joint_states_topic: str
-    base_frame: str  # the robot's base frame, waited for in tf after each motion
-    connect_timeout: float  # [s] to wait for an action server to appear
-    lost_after: float  # [s] of status silence that count as a lost connection
-    clock_skew_bound: float = 0.5  # [s] a larger robot clock offset is reported
-    master_timeout: float = 5.0  # [s] for the master to answer before entering fails
-    environment_topics: tuple[str, ...] = ()  # joint states of articulated environments
 
 
 class _Server:
@@ -223,6 +207,12 @@ class RosNode:
             (t.rotation.x, t.rotation.y, t.rotation.z, t.rotation.w),
         )
 
+    def op_lookups(
+        self, target: str, sources: list[str]
+    ) -> dict[str, tuple[tuple[float, ...], tuple[float, ...]]]:
+        """``op_lookup`` of each of ``sources``, in one reply."""
+        return {source: self.op_lookup(target, source) for source in sources}
+
     def op_frames(self) -> list[str]:
         """Every frame in the tf buffer."""
         return sorted(self.buffer._getFrameStrings())
@@ -247,7 +237,16 @@ class RosNode:
             time.sleep(MONITOR_PERIOD)
 
 
-def _handle(node: RosNode, request_id: int, op: str, args: tuple[object, ...]) -> None:
+class Serving(Protocol):
+    """A node that answers the pipe's requests (``op_<name>`` methods): ROS 1's or ROS 2's."""
+
+    def send(self, message: tuple[object, ...]) -> None:
+        """Write one message to the plan process."""
+        ...
+
+
+def handle_request(node: Serving, request_id: int, op: str, args: tuple[object, ...]) -> None:
+    """Run ``node.op_<op>(*args)`` and send its reply (an error is a failed reply)."""
     try:
         payload = getattr(node, f"op_{op}")(*args)
     except Exception as err:  # the reply carries it to the plan process
@@ -278,9 +277,11 @@ def node_main(conn: Connection, config: NodeConfig) -> None:
         except (EOFError, OSError):
             break
         if op in BLOCKING_OPS:
-            threading.Thread(target=_handle, args=(node, request_id, op, args), daemon=True).start()
+            threading.Thread(
+                target=handle_request, args=(node, request_id, op, args), daemon=True
+            ).start()
         else:
-            _handle(node, request_id, op, args)
+            handle_request(node, request_id, op, args)
     rospy.signal_shutdown("robocram environment exited")
 
 

@@ -22,6 +22,7 @@ from robocram.logic import KnowledgeBase
 from robocram.motion import MotionSettings
 from robocram.robots import RobotDescription, install_description, load_description
 from robocram.ros.arm_module import ArmPM
+from robocram.ros.availability import require_ros_extra
 from robocram.ros.errors import RosConfigError
 from robocram.ros.process_modules import (
     GripperPM,
@@ -31,6 +32,7 @@ from robocram.ros.process_modules import (
     RosProcessModule,
     TorsoPM,
 )
+from robocram.ros.ros2_environment import require_ros2
 from robocram.ros.ros_config import install_ros_facts, read_ros_config
 from robocram.ros.ros_robot_client import DEFAULT_MASTER_TIMEOUT, RosRobotClient
 from robocram.ros.ros_transform_tree import RosTransformTree
@@ -97,11 +99,13 @@ def ros_environment(
     motion: MotionSettings | None = None,
     master_timeout: float = DEFAULT_MASTER_TIMEOUT,
     locations: CostmapLocations | None = None,
+    ros: int = 1,
+    domain_id: int | None = None,
 ) -> RosEnvironment:
-    """The environment of ``robot`` behind the ROS master at ``master_uri``.
+    """The environment of ``robot`` behind ROS 1's master at ``master_uri`` or on ROS 2.
 
     Args:
-        master_uri: default ``$ROS_MASTER_URI``.
+        master_uri: ROS 1's master; default ``$ROS_MASTER_URI``.
         ros_facts: Prolog text with the robot's ``ros_action/4`` ... facts (docs/ros.md);
             default: the packaged ones of a built-in robot.
         world: a projection world of the robot's environment with the robot in it (e.g.
@@ -116,15 +120,15 @@ def ros_environment(
             raises ``RosMasterUnreachable``.
         locations: resolves location designators (default with a world: costmaps on
             it, seed 0, as in projection).
+        ros: 1 (rospy, a master) or 2 (rclpy, ros2_control and Nav2; docs/ros2.md).
+        domain_id: ROS 2's ``ROS_DOMAIN_ID`` (0..101); default ``$ROS_DOMAIN_ID``, else 0.
     """
-    uri = master_uri or os.environ.get("ROS_MASTER_URI")
-    if not uri:
-        raise RosConfigError("no ROS master: pass master_uri= or set ROS_MASTER_URI")
+    uri, domain = _connection(ros, master_uri, domain_id)
     desc = load_description(robot)
     kb = world.kb if world is not None else KnowledgeBase()  # the scene's facts for plans
     install_description(kb, desc)
     install_common_motions(kb)
-    install_ros_facts(kb, desc.name, ros_facts)
+    install_ros_facts(kb, desc.name, ros_facts, ros=ros)
     if world is None:
         install_grasp_predicates(kb, description=desc)  # by the perceived type and pose
     else:
@@ -138,8 +142,27 @@ def ros_environment(
         world=world,
         motion=motion,
         master_timeout=master_timeout,
+        ros=ros,
+        domain_id=domain,
     )
     return RosEnvironment(client, kb, locations)
+
+
+def _connection(ros: int, master_uri: str | None, domain_id: int | None) -> tuple[str, int]:
+    """The master URI (ROS 1) or domain (ROS 2), checked; the ROS asked for must be set up."""
+    if ros == 1:
+        require_ros_extra()
+        uri = master_uri or os.environ.get("ROS_MASTER_URI")
+        if not uri:
+            raise RosConfigError("no ROS master: pass master_uri= or set ROS_MASTER_URI")
+        return uri, 0
+    if ros == 2:
+        require_ros2()
+        domain = domain_id if domain_id is not None else int(os.environ.get("ROS_DOMAIN_ID", 0))
+        if not 0 <= domain <= 101:
+            raise RosConfigError(f"ROS_DOMAIN_ID must be in 0..101, got {domain}")
+        return "", domain
+    raise RosConfigError(f"ros={ros!r}: robocram speaks ROS 1 (ros=1) and ROS 2 (ros=2)")
 
 
 @dataclass(frozen=True)
@@ -166,9 +189,12 @@ def ros_robot(
     motion: MotionSettings | None = None,
     master_timeout: float = DEFAULT_MASTER_TIMEOUT,
     locations: CostmapLocations | None = None,
+    ros: int = 1,
+    domain_id: int | None = None,
 ) -> Iterator[RosRun]:
     """Run the block as a top level on ``robot`` behind ROS (see :func:`ros_environment`;
-    ``world`` is the environment motions are checked and planned in)."""
+    ``world`` is the environment motions are checked and planned in; ``ros=2`` speaks
+    ROS 2 on ``domain_id``)."""
     environment = ros_environment(
         robot,
         master_uri,
@@ -177,6 +203,8 @@ def ros_robot(
         motion=motion,
         master_timeout=master_timeout,
         locations=locations,
+        ros=ros,
+        domain_id=domain_id,
     )
     transforms = RosTransformTree(lambda: environment.client.transport)
     runner = top_level(name=name)

@@ -20,9 +20,11 @@ from robocram.ros.gripper_semantics import GripperSemantics, read_gripper_semant
 ROS_FACTS_GROUP = "ros_interfaces"
 ACTION_TYPES = (
     "move_base_msgs/MoveBase",
+    "nav2_msgs/NavigateToPose",
     "control_msgs/FollowJointTrajectory",
     "control_msgs/PointHead",
     "control_msgs/GripperCommand",
+    "control_msgs/ParallelGripperCommand",
     "robocram_msgs/DetectObjects",
     "pr2_controllers_msgs/JointTrajectory",
     "pr2_controllers_msgs/SingleJointPosition",
@@ -73,13 +75,16 @@ class RosConfig:
         return {a.server: a.action_type for a in self.actions.values()}
 
 
-def default_facts(robot: str) -> str:
-    """The packaged ROS facts of a built-in robot (``robots/<robot>.pl``)."""
-    path = resources.files("robocram.ros").joinpath("robots", f"{robot}.pl")
+def default_facts(robot: str, ros: int = 1) -> str:
+    """The packaged ROS facts of a built-in robot (``robots/<robot>.pl``; for ROS 2
+    ``robots/<robot>_ros2.pl``: ros2_control's and Nav2's names)."""
+    name = f"{robot}.pl" if ros == 1 else f"{robot}_ros2.pl"
+    path = resources.files("robocram.ros").joinpath("robots", name)
     if not path.is_file():
+        have = "pr2, hsrb" if ros == 1 else "pr2"
         raise RosConfigError(
-            f"robocram.ros ships no ROS facts for {robot!r} (have pr2, hsrb); pass ros_facts="
-            "with ros_action/4, ros_topic/3, ros_action_timeout/3 facts for it"
+            f"robocram.ros ships no ROS facts for {robot!r} (ROS {ros}: have {have}); pass "
+            "ros_facts= with ros_action/4, ros_topic/3, ros_action_timeout/3 facts for it"
         )
     return path.read_text()
 
@@ -174,6 +179,9 @@ def read_ros_config(kb: KnowledgeBase, desc: RobotDescription) -> RosConfig:
     )
 
 
-def install_ros_facts(kb: KnowledgeBase, robot: str, facts: str | None = None) -> None:
-    """Load ``facts`` (default: the robot's packaged ROS facts) into ``kb``."""
-    kb.consult(facts if facts is not None else default_facts(robot), group=ROS_FACTS_GROUP)
+def install_ros_facts(
+    kb: KnowledgeBase, robot: str, facts: str | None = None, ros: int = 1
+) -> None:
+    """Load ``facts`` (default: the robot's packaged facts for ROS ``ros``) into ``kb``."""
+    text = facts if facts is not None else default_facts(robot, ros)
+    kb.consult(text, group=ROS_FACTS_GROUP)

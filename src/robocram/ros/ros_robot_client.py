@@ -24,8 +24,9 @@ from robocram.ros.errors import (
 )
 from robocram.ros.goal_runner import Accept, FailureFactory, checked, finish_goal
 from robocram.ros.motion_planner import MotionPlanner, clamp_goal
-from robocram.ros.ros1_node import NodeConfig
+from robocram.ros.node_config import NodeConfig
 from robocram.ros.ros1_transport import Ros1Transport
+from robocram.ros.ros2_transport import Ros2Transport
 from robocram.ros.ros_config import RosConfig
 from robocram.ros.trajectory_goal import trajectory_goal
 from robocram.ros.transport import GoalOutcome, RosDict, Transport
@@ -37,6 +38,7 @@ STATE_TIMEOUT = 5.0  # [s] for the state after a goal to arrive
 DEFAULT_MASTER_TIMEOUT = 5.0  # [s] for the ROS master to answer when entering
 RESOURCE_KINDS = {"torso": "torso", "head": "head"}  # a trajectory's kind; arms': "arm"
 TransportFactory = Callable[[NodeConfig], Transport]
+TRANSPORTS: dict[int, TransportFactory] = {1: Ros1Transport.open, 2: Ros2Transport.open}
 
 
 class RosRobotClient:
@@ -49,14 +51,18 @@ class RosRobotClient:
         master_uri: str,
         node_name: str = "robocram",
         fixed_frame: str = "map",
-        transport_factory: TransportFactory = Ros1Transport.open,
+        transport_factory: TransportFactory | None = None,
         world: World | None = None,
         motion: MotionSettings | None = None,
         master_timeout: float = DEFAULT_MASTER_TIMEOUT,
+        ros: int = 1,
+        domain_id: int = 0,
     ) -> None:
         """``world``: a projection world of the robot's environment to plan motions in
         (kept in sync with the robot's state); None plans straight joint moves.
-        ``master_timeout`` [s]: how long ``connect`` waits for the ROS master to answer."""
+        ``master_timeout`` [s]: how long ``connect`` waits for the ROS master to answer.
+        ``ros``: 1 or 2 (the transport, unless ``transport_factory`` is given);
+        ``domain_id``: ROS 2's ``ROS_DOMAIN_ID``."""
         self.desc = desc
         self.config = config
         self.fixed_frame = fixed_frame
@@ -76,8 +82,10 @@ class RosRobotClient:
             clock_skew_bound=config.clock_skew_bound,
             master_timeout=master_timeout,
             environment_topics=tuple(self.mirror.topics.values()) if self.mirror else (),
+            ros=ros,
+            domain_id=domain_id,
         )
-        self._factory = transport_factory
+        self._factory = transport_factory or TRANSPORTS[ros]
         self._transport: Transport | None = None
         self._planner = MotionPlanner(desc, world, motion)
         self.unconfirmed_cancels: list[RosCancelIgnored] = []
@@ -178,11 +186,13 @@ class RosRobotClient:
             return
         transport = self.transport
         tracked = names_in(transport.frames(), mirror.movable_objects())
+        base = self.desc.base_frame
+        poses = transport.lookup_transforms(self.fixed_frame, [base, *tracked])  # one request
         mirror.sync(
             self.joint_states(),
-            self.base_pose(),
+            poses[base],
             transport.environment_joint_states(),
-            {obj: self.frame_pose(obj) for obj in tracked},
+            {obj: poses[obj] for obj in tracked},
         )
 
     def move_joints(

@@ -1,14 +1,15 @@
 """The one small interface between the ROS process modules and a ROS implementation.
 
 Process modules speak plain dictionaries in the layout of the ROS messages (as rosbridge
-does) and never import rospy. :class:`Ros1Transport` implements this with rospy and
-actionlib in a child process; a ROS 2 (rclpy or rosbridge) transport would implement the
-same methods (docs/ros.md).
+does: times ``{"secs", "nsecs"}``) and never import rospy or rclpy. :class:`Ros1Transport`
+implements this with rospy and actionlib in a child process, :class:`Ros2Transport` with
+rclpy (docs/ros.md, docs/ros2.md); both through ``node_process.py``.
 """
 
 from __future__ import annotations
 
 import threading
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from enum import Enum
 from typing import Any, Protocol
@@ -32,14 +33,16 @@ class GoalState(Enum):
 
 @dataclass(frozen=True)
 class GoalOutcome:
-    """How a goal ended: its state, the server's status text, the result, and the state
-    messages that had arrived when it did (state arriving after ``mark`` shows its end)."""
+    """How a goal ended: its state, the server's status text, the result, the state
+    messages that had arrived when it did (state arriving after ``mark`` shows its end)
+    and the last feedback the server sent (e.g. Nav2's distance remaining; may be empty)."""
 
     state: GoalState
     status_text: str
     result: RosDict
     mark: StateMark = (0, 0)
     arrived: float = 0.0  # [s] time.monotonic() when our node got the result (benchmarks)
+    feedback: RosDict = field(default_factory=dict)
 
 
 @dataclass
@@ -86,6 +89,11 @@ class Transport(Protocol):
 
     def lookup_transform(self, target_frame: str, source_frame: str) -> Pose:
         """The latest pose of ``source_frame`` in ``target_frame``."""
+        ...
+
+    def lookup_transforms(self, target_frame: str, source_frames: Sequence[str]) -> dict[str, Pose]:
+        """The latest poses of ``source_frames`` in ``target_frame``, in one request (the
+        world mirror reads the base and every object after each goal)."""
         ...
 
     def frames(self) -> tuple[str, ...]:

@@ -1,8 +1,9 @@
 """Run the projection driver as a ROS node on a scene (tabletop or kitchen) of a robot.
 
 ``python -m robocram.ros_driver --robot pr2 --master-uri http://127.0.0.1:11311
-[--scene kitchen]`` prints ``ready <node name>`` on stdout once its action servers run,
-then serves until killed (SIGTERM or SIGINT) or the master goes away.
+[--scene kitchen]`` (or ``--ros 2 [--domain-id N]`` for ROS 2) prints
+``ready <node name>`` on stdout once its action servers run, then serves until killed
+(SIGTERM or SIGINT) or the master goes away.
 """
 
 from __future__ import annotations
@@ -11,7 +12,7 @@ import argparse
 import os
 from pathlib import Path
 
-from robocram.robots import load_description
+from robocram.robots import RobotDescription, load_description
 from robocram.ros.ros_config import install_ros_facts, read_ros_config
 from robocram.ros_driver.motion import MotionOptions
 from robocram.ros_driver.projection_driver import CONTROLLERS, FAULTS, ProjectionDriver
@@ -21,7 +22,7 @@ from robocram.world import World
 SCENES = ("tabletop", "kitchen")
 
 
-def _build_scene(scene: str, robot: str, world: World) -> str:
+def _build_scene(scene: str, robot: str | RobotDescription, world: World) -> str:
     """Build ``scene`` with ``robot`` in ``world``; return the robot's name there."""
     if scene == "kitchen":
         return kitchen_scene(robot, world).robot
@@ -43,12 +44,21 @@ def _arguments() -> argparse.Namespace:
         "--controllers", choices=CONTROLLERS, default="projection", help="pr2: the real PR2's"
     )
     parser.add_argument("--clock-offset", type=float, default=0.0, help="[s] added to stamps")
+    parser.add_argument("--ros", type=int, choices=(1, 2), default=1, help="ROS 1 or ROS 2")
+    parser.add_argument(
+        "--domain-id", type=int, default=int(os.environ.get("ROS_DOMAIN_ID", 0)), help="ROS 2"
+    )
     return parser.parse_args()
 
 
 def main() -> None:
     """Build the scene, join ROS, serve."""
     args = _arguments()
+    if args.ros == 2:
+        from robocram.ros_driver.ros2_main import ros2_main
+
+        ros2_main(args, _build_scene)
+        return
     if not args.master_uri:
         raise SystemExit("give --master-uri or set ROS_MASTER_URI")
     os.environ["ROS_MASTER_URI"] = args.master_uri

@@ -39,15 +39,19 @@ class DriverProcess:
         controllers: str = "projection",
         clock_offset: float = 0.0,
         scene: str = "tabletop",
+        ros: int = 1,
+        domain_id: int = 0,
     ) -> None:
         """``goal_log``: the driver appends each goal it receives there (``received_goals``);
         ``controllers="pr2"``: the real PR2's controllers; ``clock_offset`` [s] on stamps;
-        ``scene``: ``"tabletop"`` or ``"kitchen"`` (``kitchen_scene``)."""
+        ``scene``: ``"tabletop"`` or ``"kitchen"`` (``kitchen_scene``); ``ros=2``: a ROS 2
+        robot on ``domain_id`` (``master_uri`` is then not used)."""
         self.args = [
             sys.executable, "-m", "robocram.ros_driver", "--robot", robot,
             "--master-uri", master_uri, "--base-speed", str(base_speed),
             "--time-scale", str(time_scale), "--fault", fault,
             "--controllers", controllers, "--clock-offset", str(clock_offset), "--scene", scene,
+            "--ros", str(ros), "--domain-id", str(domain_id),
         ]  # fmt: skip
         if ros_facts is not None:
             self.args += ["--ros-facts", str(ros_facts)]
@@ -83,15 +87,16 @@ class DriverProcess:
 
     def start(self) -> DriverProcess:
         """Start the node and wait for its ``ready`` line."""
-        env = dict(os.environ, ROS_MASTER_URI=self.master_uri)
+        env = dict(os.environ, ROS_MASTER_URI=self.master_uri) if self.master_uri else None
         self.process = subprocess.Popen(
             self.args, stdout=self._log, stderr=subprocess.STDOUT, env=env
         )
         deadline = time.monotonic() + START_TIMEOUT
         while "ready" not in self.log:
             if self.process.poll() is not None or time.monotonic() > deadline:
+                printed = self.log  # before stop() removes the log file
                 self.stop()
-                raise RosNodeError(f"the driver did not start ({' '.join(self.args)}):\n{self.log}")
+                raise RosNodeError(f"the driver did not start ({' '.join(self.args)}):\n{printed}")
             time.sleep(0.05)
         return self
 

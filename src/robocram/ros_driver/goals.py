@@ -8,9 +8,11 @@ reuse projection's low-level functions, so a robot behind ROS behaves as in proj
 from __future__ import annotations
 
 import math
+import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import partial
+from types import SimpleNamespace
 from typing import Any
 
 import numpy as np
@@ -32,6 +34,8 @@ RosMessage = Any  # a genpy message (goal, result, pose): Debian's rospy ships n
 Outcome = tuple[bool, dict[str, Any], str] | None
 INVALID_JOINTS = -2
 GOAL_TOLERANCE_VIOLATED = -5
+NAV2_GOAL_OCCUPIED = 206  # nav2_msgs ComputePathToPose's, passed on by NavigateToPose
+NAV2_FAILED_TO_MAKE_PROGRESS = 105  # nav2_msgs FollowPath's
 DEFAULT_GOAL_TOLERANCE = 0.01  # [rad | m] for joints whose goal gives 0 (the default)
 GRIP_TOLERANCE = 1e-6  # [rad | m] a command this close to the lower limit closes fully
 
@@ -43,6 +47,7 @@ class GoalContext:
     ``soft_limits`` (the real PR2's controllers): joint targets are clamped into them
     silently, as its safety controller does, and trajectory results carry no status text.
     ``handles``: the handles the grippers hold (their parts move with the hands).
+    ``feedback``: publishes the goal's feedback fields (ROS 2's servers; else ignored).
     """
 
     robot: ProjectedRobot
@@ -50,6 +55,7 @@ class GoalContext:
     stepper: Stepper
     soft_limits: dict[str, tuple[float, float]] | None = None
     handles: HeldHandles = field(default_factory=HeldHandles)
+    feedback: Callable[[dict[str, Any]], None] = lambda _: None
 
 
 def _soft_clamped(target: dict[str, float], ctx: GoalContext) -> dict[str, float]:
@@ -76,9 +82,19 @@ def _stamped_in_map(robot: ProjectedRobot, frame: str, pose: Pose) -> Pose:
     return robot.in_map(PoseStamped.from_pose(frame or "map", pose))
 
 
-def move_base(goal: RosMessage, ctx: GoalContext) -> Outcome:
-    """``move_base_msgs/MoveBase``: refuse a goal in collision, else drive straight there."""
-    target = goal.target_pose
+def seconds(duration: RosMessage) -> float:
+    """A duration message in seconds: ROS 1's (``to_sec``) or ROS 2's (``sec``, ``nanosec``)."""
+    if hasattr(duration, "to_sec"):
+        return float(duration.to_sec())
+    return float(duration.sec) + float(duration.nanosec) * 1e-9
+
+
+def _drive(
+    target: RosMessage, ctx: GoalContext, step_done: Callable[[], None] = lambda: None
+) -> tuple[int, str] | None:
+    """Drive straight to the stamped pose ``target`` unless the goal is in collision:
+    ``(0, text)`` reached, ``(NAV2_GOAL_OCCUPIED | NAV2_FAILED_TO_MAKE_PROGRESS, why)``,
+    None if preempted."""
     robot = ctx.robot
     with ctx.stepper.lock:
         in_map = _stamped_in_map(robot, target.header.frame_id, _pose(target.pose))
@@ -86,17 +102,59 @@ def move_base(goal: RosMessage, ctx: GoalContext) -> Outcome:
         try:
             drive(robot, in_map)  # checks the goal pose; leaves the robot where it was if bad
         except PlanFailure as failure:
-            return False, {}, str(failure)
+            return NAV2_GOAL_OCCUPIED, str(failure)
         robot.world.set_pose(robot.name, start)
         duration, step = base_motion(robot, in_map, ctx.options)
-    if not ctx.stepper.run(duration, step):
+
+    def stepping(fraction: float) -> None:
+        step(fraction)
+        step_done()
+
+    if not ctx.stepper.run(duration, stepping):
         return None
     with ctx.stepper.lock:
         try:
             reached = drive(robot, in_map)
         except PlanFailure as failure:  # something moved into the way meanwhile
-            return False, {}, str(failure)
-    return True, {}, f"reached {reached.position}"
+            return NAV2_FAILED_TO_MAKE_PROGRESS, str(failure)
+    return 0, f"reached {reached.position}"
+
+
+def move_base(goal: RosMessage, ctx: GoalContext) -> Outcome:
+    """``move_base_msgs/MoveBase``: refuse a goal in collision, else drive straight there."""
+    driven = _drive(goal.target_pose, ctx)
+    if driven is None:
+        return None
+    code, text = driven
+    return code == 0, {}, text
+
+
+def navigate_to_pose(goal: RosMessage, ctx: GoalContext) -> Outcome:
+    """``nav2_msgs/NavigateToPose``: as ``move_base``; a failure's result carries Nav2's
+    error code (the failing planner's or controller's, as bt_navigator passes it on).
+    While driving, feedback: the base's pose, the time so far and the distance left."""
+    robot, started = ctx.robot, time.monotonic()
+    frame, goal_xy = (
+        goal.pose.header.frame_id,
+        (goal.pose.pose.position.x, goal.pose.pose.position.y),
+    )
+
+    def feedback() -> None:  # under the stepper's lock
+        here = robot.base_pose()
+        elapsed = time.monotonic() - started
+        ctx.feedback(
+            {
+                "current_pose": pose_stamped_to_ros(PoseStamped.from_pose(frame or "map", here)),
+                "navigation_time": {"secs": int(elapsed), "nsecs": int(elapsed % 1 * 1e9)},
+                "distance_remaining": math.dist(here.position[:2], goal_xy),
+            }
+        )
+
+    driven = _drive(goal.pose, ctx, feedback)
+    if driven is None:
+        return None
+    code, text = driven
+    return code == 0, {"error_code": code, "error_msg": "" if code == 0 else text}, text
 
 
 def follow_joint_trajectory(goal: RosMessage, ctx: GoalContext) -> Outcome:
@@ -116,10 +174,10 @@ def follow_joint_trajectory(goal: RosMessage, ctx: GoalContext) -> Outcome:
     elapsed = 0.0
     for point in goal.trajectory.points:
         target = _soft_clamped(dict(zip(names, map(float, point.positions), strict=True)), ctx)
-        seconds = point.time_from_start.to_sec() - elapsed
-        elapsed = point.time_from_start.to_sec()
+        at = seconds(point.time_from_start)
+        span, elapsed = at - elapsed, at
         with ctx.stepper.lock:
-            duration, step = joint_motion(ctx.robot, target, seconds, ctx.options)
+            duration, step = joint_motion(ctx.robot, target, span, ctx.options)
         if not ctx.stepper.run(duration, partial(_pulling, step, ctx)):
             return None
         with ctx.stepper.lock:
@@ -144,7 +202,7 @@ def single_joint_position(goal: RosMessage, ctx: GoalContext, joint: str) -> Out
     position over ``min_duration``; the result has no fields, the status text says more."""
     target = _soft_clamped({joint: float(goal.position)}, ctx)
     with ctx.stepper.lock:
-        duration, step = joint_motion(ctx.robot, target, goal.min_duration.to_sec(), ctx.options)
+        duration, step = joint_motion(ctx.robot, target, seconds(goal.min_duration), ctx.options)
     if not ctx.stepper.run(duration, step):
         return None
     with ctx.stepper.lock:
@@ -177,7 +235,7 @@ def _at_goal(goal: RosMessage, names: list[str], ctx: GoalContext) -> Outcome:
         return _trajectory_outcome(False, GOAL_TOLERANCE_VIOLATED, text, ctx)
     text = (
         f"reached the last of {len(goal.trajectory.points)} points "
-        f"({goal.trajectory.points[-1].time_from_start.to_sec():.3f} s); "
+        f"({seconds(goal.trajectory.points[-1].time_from_start):.3f} s); "
         f"largest error {errors[worst]:.2e} ({worst})"
     )
     return _trajectory_outcome(True, 0, text, ctx)
@@ -214,7 +272,8 @@ def point_head(goal: RosMessage, ctx: GoalContext) -> Outcome:
         camera = robot.world.camera(robot.name).pose.matrix()
     wanted = np.subtract(target.position, camera[:3, 3])
     cos = float(camera[:3, 2] @ wanted) / max(float(np.linalg.norm(wanted)), 1e-9)
-    return True, {}, f"pointing angle error {math.acos(max(-1.0, min(1.0, cos))):.4f} rad"
+    error = math.acos(max(-1.0, min(1.0, cos)))  # [rad]
+    return True, {"pointing_angle_error": error}, f"pointing angle error {error:.4f} rad"
 
 
 def gripper_command(goal: RosMessage, ctx: GoalContext, semantics: GripperSemantics) -> Outcome:
@@ -272,3 +331,23 @@ def detect_objects(goal: RosMessage, ctx: GoalContext) -> Outcome:
             for obj in seen
         ]
     return True, {"objects": objects}, f"{len(objects)} objects seen"
+
+
+def parallel_gripper_command(
+    goal: RosMessage, ctx: GoalContext, semantics: GripperSemantics
+) -> Outcome:
+    """``control_msgs/ParallelGripperCommand`` (ros2_controllers' parallel gripper): the
+    command's first position, as ``gripper_command`` runs it; the result's ``state`` is a
+    JointState of the gripper joint."""
+    efforts = list(goal.command.effort)
+    command = SimpleNamespace(position=goal.command.position[0], max_effort=(efforts or [0.0])[0])
+    outcome = gripper_command(SimpleNamespace(command=command), ctx, semantics)
+    if outcome is None:
+        return None
+    succeeded, result, text = outcome
+    if "position" not in result:  # failed before moving: no state to report
+        return outcome
+    joint = gripper_joints(ctx.robot, semantics.arm)[0]
+    state = {"name": [joint], "position": [result["position"]], "effort": [result["effort"]]}
+    fields = {"state": state, "stalled": result["stalled"], "reached_goal": result["reached_goal"]}
+    return succeeded, fields, text

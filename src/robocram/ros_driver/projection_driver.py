@@ -46,6 +46,8 @@ Handler = Callable[[Any, goals.GoalContext], goals.Outcome]
 def _handler(resource: str, action_type: str, config: RosConfig, controllers: str) -> Handler:
     if action_type.endswith("GripperCommand"):  # control_msgs' or the PR2's Pr2GripperCommand
         arm = resource.removeprefix("gripper(").removesuffix(")")
+        if action_type == "control_msgs/ParallelGripperCommand":
+            return partial(goals.parallel_gripper_command, semantics=config.grippers[arm])
         if controllers == "pr2":
             return partial(pr2_controllers.gripper_command, arm=arm)
         return partial(goals.gripper_command, semantics=config.grippers[arm])
@@ -56,6 +58,7 @@ def _handler(resource: str, action_type: str, config: RosConfig, controllers: st
         return partial(goals.single_joint_position, joint=joint)
     return {
         "move_base_msgs/MoveBase": goals.move_base,
+        "nav2_msgs/NavigateToPose": goals.navigate_to_pose,
         "control_msgs/FollowJointTrajectory": goals.follow_joint_trajectory,
         "pr2_controllers_msgs/JointTrajectory": goals.follow_joint_trajectory,
         "control_msgs/PointHead": goals.point_head,
@@ -198,11 +201,17 @@ class ProjectionDriver:
         else:
             server.set_aborted(message, text)
 
-    def _handle(self, handler: Handler, goal: RosMessage, stepper: Stepper) -> goals.Outcome:
+    def _handle(
+        self,
+        handler: Handler,
+        goal: RosMessage,
+        stepper: Stepper,
+        feedback: Callable[[dict[str, Any]], None] = lambda _: None,
+    ) -> goals.Outcome:
         """Run the handler; an error in it aborts the goal with the error as status text."""
         try:
             context = goals.GoalContext(
-                self.robot, self.options, stepper, self.soft_limits, self.handles
+                self.robot, self.options, stepper, self.soft_limits, self.handles, feedback
             )
             return handler(goal, context)
         except Exception as err:  # reported to the client, never a goal left hanging

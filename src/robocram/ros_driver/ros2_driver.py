@@ -1,0 +1,219 @@
+"""The projection driver as a ROS 2 robot: ros2_control's and Nav2's interfaces, served.
+
+The same goals, faults and controller semantics as the ROS 1 driver
+(:class:`ProjectionDriver`), served with rclpy: one ``ActionServer`` per server of the
+robot's ROS 2 facts (``/<controller>/follow_joint_trajectory``,
+``/<controller>/gripper_cmd``, ``navigate_to_pose``, ...), ``/joint_states`` and ``/tf``
+at ``PUBLISH_RATE`` and after every goal, before its result, and the map's root frame on
+``/tf_static`` (transient local, as tf2's static broadcaster). ROS 2 results carry no
+status text: a trajectory's words are in ``error_string``, Nav2's in ``error_msg``.
+Runs only in a process with the ROS 2 prefix on its path (``ros2_environment.py``).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import json
+import threading
+import time
+from collections.abc import Callable
+from functools import partial
+from typing import Any
+
+from robocram.ros.ros2_messages import action_class, fill, message_class, to_dict
+from robocram.ros.tf_cdr import write_tf_message
+from robocram.ros_driver import goals
+from robocram.ros_driver.motion import Stepper
+from robocram.ros_driver.projection_driver import PUBLISH_RATE, Handler, ProjectionDriver, _handler
+
+POLL = 0.02  # [s] how often a faulty goal looks at its cancel request
+THREADS = 8  # executor threads: goals of several resources run at once
+STATIC_PARENT = "world"  # map's parent on /tf_static
+FEEDBACK_PERIOD = 0.1  # [s] between a goal's feedback messages
+AFTER_RESULT = 0.01  # [s] after a goal's result, the state is published once more
+
+
+class Ros2ProjectionDriver(ProjectionDriver):
+    """The projection driver's servers and publishers on an rclpy node (``start(node)``)."""
+
+    node: Any = None
+
+    def start_ros2(self, node: Any) -> None:
+        """Advertise the state topics and start one action server per configured server."""
+        from rclpy.action import ActionServer, CancelResponse
+        from rclpy.callback_groups import ReentrantCallbackGroup
+        from rclpy.qos import DurabilityPolicy, QoSProfile
+        from sensor_msgs.msg import JointState
+        from tf2_msgs.msg import TFMessage
+
+        self.node = node
+        group = ReentrantCallbackGroup()
+        static = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+        self._publishers = {
+            "joints": node.create_publisher(JointState, self.config.joint_states_topic, 10),
+            "tf": node.create_publisher(TFMessage, "/tf", 100),
+            "tf_static": node.create_publisher(TFMessage, "/tf_static", static),
+        }
+        for environment in self.environments:
+            self._publishers[environment] = node.create_publisher(
+                JointState, f"/{environment}/joint_states", 10
+            )
+        served: dict[str, tuple[str, str]] = {}
+        for interface in self.config.actions.values():
+            served.setdefault(interface.server, (interface.resource, interface.action_type))
+        refuse = self.fault == "ignore_cancel"
+        for server, (resource, action_type) in served.items():
+            handler = _handler(resource, action_type, self.config, self.controllers)
+            self._servers.append(
+                ActionServer(
+                    node,
+                    action_class(action_type),
+                    server,
+                    execute_callback=partial(self._execute2, server, action_type, handler),
+                    cancel_callback=partial(self._on_cancel, server, refuse, CancelResponse),
+                    callback_group=group,
+                )
+            )
+        self._publish_static()
+        node.create_timer(1.0 / PUBLISH_RATE, self.publish_state, callback_group=group)
+
+    def _on_cancel(self, server: str, refuse: bool, response: Any, _: Any) -> Any:
+        """Log when a cancel reached the server; accept it unless told to ignore cancels."""
+        if self.goal_log is not None:
+            line = json.dumps({"server": server, "cancel_seen": time.monotonic()})
+            with self._log_lock, self.goal_log.open("a") as log:
+                log.write(line + "\n")
+        return response.REJECT if refuse else response.ACCEPT
+
+    def _record(self, server: str, action_type: str, goal: object) -> None:
+        """Append the goal (as the transport's dicts) to the goal log, if there is one."""
+        if self.goal_log is None:
+            return
+        line = json.dumps({"server": server, "action_type": action_type, "goal": to_dict(goal)})
+        with self._log_lock, self.goal_log.open("a") as log:
+            log.write(line + "\n")
+
+    def _execute2(self, server: str, action_type: str, handler: Handler, handle: Any) -> Any:
+        """Run one goal to its end; returns the result message (rclpy's execute callback)."""
+        result_type = action_class(action_type).Result
+        self._record(server, action_type, handle.request)
+        cancelled = lambda: bool(handle.is_cancel_requested)  # noqa: E731
+        if self.fault == "ignore_cancel":  # a controller that never stops
+            while self.node.context.ok():
+                time.sleep(POLL)
+            handle.abort()
+            return result_type()
+        if self.fault == "silent":
+            while not cancelled() and self.node.context.ok():
+                time.sleep(POLL)
+            outcome: goals.Outcome = None
+        elif self.fault == "abort":
+            outcome = goals.aborted_on_purpose(action_type, bare=True)
+        else:
+            feedback = _feeder(handle, action_class(action_type).Feedback)
+            outcome = self._handle(handler, handle.request, Stepper(self.lock, cancelled), feedback)
+        self.publish_state()
+        if outcome is None:
+            handle.canceled()
+            return result_type()
+        succeeded, fields, _ = outcome  # ROS 2 has no status text: the words are in fields
+        result = fill(result_type(), _known(result_type(), fields))
+        if succeeded:
+            handle.succeed()
+        else:
+            handle.abort()
+        self._publish_after_result()
+        return result
+
+    def _publish_after_result(self) -> None:
+        """Publish the state again just after the result has gone out (rclpy sends it when
+        this callback returns), as a robot streaming its state fast would: the client
+        waits for state that arrives after the result."""
+        later = threading.Timer(AFTER_RESULT, self._publish_if_running)
+        later.daemon = True
+        later.start()
+
+    def _publish_if_running(self) -> None:
+        if self.node.context.ok():
+            self.publish_state()
+
+    def _publish_static(self) -> None:
+        """The map's root frame on /tf_static (latched: late subscribers get it too)."""
+        from tf2_msgs.msg import TFMessage
+
+        root = {
+            "header": self._header(STATIC_PARENT),
+            "child_frame_id": "map",
+            "transform": {"rotation": {"w": 1.0}},  # the identity
+        }
+        message = fill(message_class("geometry_msgs/TransformStamped")(), root)
+        self._publishers["tf_static"].publish(TFMessage(transforms=[message]))
+
+    def _stamp(self) -> Any:
+        """Now on the robot's clock (ours + ``clock_offset``) as a ROS 2 Time."""
+        from builtin_interfaces.msg import Time
+
+        now = time.time() + self.clock_offset
+        return Time(sec=int(now // 1), nanosec=int(now % 1 * 1e9))
+
+    def _header(self, frame: str) -> dict[str, Any]:
+        stamp = self._stamp()
+        return {"frame_id": frame, "stamp": {"sec": stamp.sec, "nanosec": stamp.nanosec}}
+
+    def publish_state(self) -> None:
+        """Publish the joint states and every frame of the world in ``map`` now.
+
+        The transforms go out as CDR bytes written here (``tf_cdr.py``): hundreds of
+        them at ``PUBLISH_RATE`` as rclpy message objects would take the driver's time."""
+        from sensor_msgs.msg import JointState
+
+        with self.lock:
+            joints = self.world.joint_states(self.robot.name)
+            poses = self.frames.frame_poses()
+            environments = {e: self.world.joint_states(e) for e in self.environments}
+        stamp = self._stamp()
+        transforms = [
+            ("map", frame, pose.position, pose.orientation) for frame, pose in poses.items()
+        ]
+        self._publishers["tf"].publish(write_tf_message((stamp.sec, stamp.nanosec), transforms))
+        for environment, values in environments.items():
+            self._publishers[environment].publish(_joint_state(JointState, stamp, values))
+        self._publishers["joints"].publish(_joint_state(JointState, stamp, joints))
+
+
+def _joint_state(kind: Any, stamp: Any, values: dict[str, float]) -> Any:
+    state = kind(name=list(values), position=[float(v) for v in values.values()])
+    state.header.stamp = stamp
+    return state
+
+
+def _feeder(handle: Any, kind: Any) -> Callable[[dict[str, Any]], None]:
+    """Publishes the goal's feedback, at most one message every ``FEEDBACK_PERIOD``."""
+    last = [0.0]  # [s] monotonic, when the last one went out
+
+    def feed(fields: dict[str, Any]) -> None:
+        now = time.monotonic()
+        if now - last[0] >= FEEDBACK_PERIOD:
+            last[0] = now
+            handle.publish_feedback(fill(kind(), fields))
+
+    return feed
+
+
+def _known(message: Any, fields: dict[str, Any]) -> dict[str, Any]:
+    """The fields the result type has (a handler's words for ROS 1 may not fit)."""
+    have = message.get_fields_and_field_types()
+    return {k: v for k, v in fields.items() if k in have}
+
+
+def serve(driver: Ros2ProjectionDriver, node: Any, ready: threading.Event) -> None:
+    """Spin the node with enough threads for concurrent goals until its context ends."""
+    from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor
+
+    executor = MultiThreadedExecutor(num_threads=THREADS, context=node.context)
+    executor.add_node(node)
+    driver.start_ros2(node)
+    driver.publish_state()
+    ready.set()
+    with contextlib.suppress(ExternalShutdownException):  # SIGTERM, SIGINT
+        executor.spin()

@@ -1,0 +1,373 @@
+"""ROS 2: the same plans through rclpy, ros2_control's and Nav2's interfaces, against the
+projection driver serving them in another process, each test on a ROS 2 domain of its own."""
+
+from __future__ import annotations
+
+import multiprocessing
+import subprocess
+import threading
+import time
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+
+from robocram.designators import a
+from robocram.execution import perform, pursue, sleep
+from robocram.execution.failures import NavigationGoalNotReached
+from robocram.motion import JointTrajectory, trajectory_listener
+from robocram.plans import pick_up
+from robocram.plans.transport import TransportResult, transport
+from robocram.projection import simulated_robot
+from robocram.ros import RosCancelIgnored, RosConnectionLost, RosExtraMissing, ros_robot
+from robocram.ros.ros2_environment import child_argv, ros2_prefix
+from robocram.ros.ros_config import default_facts
+from robocram.ros_driver.driver_process import DriverProcess
+from robocram.scenes import kitchen_scene, tabletop_scene
+from robocram.tf import Pose, PoseStamped, pose_to_ros, transform_pose
+from robocram.world import World
+
+AGREE = 0.01  # [m] ROS 2 and direct projection agree this closely
+TABLE = ("kitchen", "table_top")
+DRAWER_JOINT = "drawer_unit_drawer_3_joint"
+RESTING = 0.015  # [m] the driver lets go without simulating: the bowl may stand this high
+DRAWN = 0.005  # [m] stands in a world whose drawer the driver's hand moved
+MOVED = 0.05  # [m] the base has started moving
+LEASE = 4.0  # [s] a dead process is gone from the ROS graph after it (fastdds_profile.xml)
+SAME = 1e-9  # [rad | s] what crosses ROS unchanged (float64; times to the nanosecond)
+TRAJECTORY_SERVERS = {
+    "torso": "/torso_controller/follow_joint_trajectory",
+    "head": "/head_controller/follow_joint_trajectory",
+    "left": "/l_arm_controller/follow_joint_trajectory",
+    "right": "/r_arm_controller/follow_joint_trajectory",
+}
+
+
+def _seconds(duration: dict[str, int]) -> float:
+    return duration["secs"] + duration["nsecs"] * 1e-9
+
+
+def _assert_same(received: dict[str, Any], sent: JointTrajectory) -> None:
+    """The goal the driver got is ``sent``: names, points, times, velocities, accelerations."""
+    trajectory = received["trajectory"]
+    assert trajectory["joint_names"] == list(sent.joint_names)
+    assert len(trajectory["points"]) == len(sent.points)
+    for got, want in zip(trajectory["points"], sent.points, strict=True):
+        assert _seconds(got["time_from_start"]) == pytest.approx(want.time_from_start, abs=SAME)
+        for key in ("positions", "velocities", "accelerations"):
+            assert got[key] == pytest.approx(list(getattr(want, key)), abs=SAME)
+
+
+def _server_of(trajectory: JointTrajectory) -> str:
+    joint = trajectory.joint_names[0]
+    side = {"l": "left", "r": "right"}.get(joint.split("_")[0], "")
+    return TRAJECTORY_SERVERS[side or joint.split("_")[0]]
+
+
+def test_pick_up_through_ros2_agrees_with_projection_goal_by_goal_with_the_clock_ahead(
+    ros2_domain: int, tmp_path: Path
+) -> None:
+    scene = tabletop_scene("pr2")
+    with simulated_robot(scene.world, "pr2"):
+        direct = pick_up(scene.look_target)
+    tool, mug = scene.world.link_pose("pr2", direct.tool_frame), scene.world.pose("mug-1")
+    world = tabletop_scene("pr2").world  # the mirror: motions planned and checked in it
+    threads = set(threading.enumerate())
+    sent: list[JointTrajectory] = []
+    with (
+        DriverProcess(
+            "", "pr2", ros=2, domain_id=ros2_domain, goal_log=tmp_path / "g", clock_offset=10.0
+        ) as driver,
+        ros_robot("pr2", ros=2, world=world) as run,
+        trajectory_listener(sent.append),
+    ):
+        result = pick_up(scene.look_target)
+        ros_tool = transform_pose(PoseStamped(result.tool_frame), "map").pose
+        ros_mug = run.transforms.lookup("map", "mug-1")
+        in_world = run.transforms.lookup("world", "mug-1")  # map's parent: /tf_static
+        grippers = driver.received_goals("/l_gripper_controller/gripper_cmd")
+        grippers += driver.received_goals("/r_gripper_controller/gripper_cmd")
+        by_server = {s: driver.received_goals(s) for s in TRAJECTORY_SERVERS.values()}
+        skew = run.environment.client.clock_skew
+    assert run.tree.root.status.name == "SUCCEEDED"
+    assert skew == pytest.approx(10.0, abs=0.5)  # the robot's clock ahead: no matter
+    assert result.arm == direct.arm
+    assert ros_tool.distance_to(tool) < AGREE
+    assert ros_mug.distance_to(mug) < AGREE
+    assert in_world.distance_to(ros_mug) < 1e-9
+    assert ros_mug.position[2] > 0.09 + scene.look_target.position[2]  # lifted
+    assert len(sent) == sum(len(goals) for goals in by_server.values()) >= 4
+    for trajectory in sent:  # every trajectory goal, in order per controller, as planned
+        _assert_same(by_server[_server_of(trajectory)].pop(0), trajectory)
+    assert [g["command"]["position"] for g in grippers] == pytest.approx([0.085, 0.0])
+    assert set(threading.enumerate()) == threads
+    assert multiprocessing.active_children() == []
+
+
+def test_without_the_set_up_ros2_names_the_command(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    monkeypatch.setenv("ROBOCRAM_ROS2_PREFIX", str(tmp_path / "no_ros2"))
+    with pytest.raises(RosExtraMissing, match=r"rclpy.*make setup.*tools/setup_ros2.sh"):
+        ros_robot("pr2", ros=2).__enter__()
+
+
+def test_an_absent_controller_fails_typed_within_its_server_timeout(ros2_domain: int) -> None:
+    facts = default_facts("pr2", ros=2).replace(
+        "ros_server_timeout(pr2, 5.0)", "ros_server_timeout(pr2, 1.0)"
+    )
+    facts = facts.replace("/torso_controller/", "/no_torso_controller/")
+    with (
+        DriverProcess("", "pr2", ros=2, domain_id=ros2_domain),
+        ros_robot("pr2", ros=2, ros_facts=facts),
+    ):
+        start = time.monotonic()
+        with pytest.raises(RosConnectionLost, match="no_torso_controller.*1.0 s") as lost:
+            perform(a.motion(type="moving-torso", joint_angle=0.2))
+        waited = time.monotonic() - start
+    assert lost.value.server == "/no_torso_controller/follow_joint_trajectory"
+    assert 1.0 <= waited < 3.0
+
+
+def test_nav2_failing_gives_the_typed_failure_with_its_error_code_and_feedback_is_read(
+    ros2_domain: int,
+) -> None:
+    x, y, _ = tabletop_scene("pr2").world.pose("table").position
+    into_the_table = Pose((x, y, 0.0))  # the base inside the table
+    back = Pose((-1.0, 0.0, 0.0))  # [m] 1 m behind the robot: 2 s at 0.5 m/s
+    driver = DriverProcess("", "pr2", base_speed=0.5, ros=2, domain_id=ros2_domain)
+    with driver, ros_robot("pr2", ros=2) as run:
+        client = run.environment.client
+        before = client.base_pose()
+        with pytest.raises(NavigationGoalNotReached, match="ABORTED") as failed:
+            perform(a.motion(type="going", target=into_the_table))
+        after = client.base_pose()
+        goal = {"pose": {"header": {"frame_id": "map"}, "pose": pose_to_ros(back)}}
+        handle = client.transport.send_goal("/navigate_to_pose", goal)
+        with handle.done:
+            assert handle.done.wait_for(lambda: handle.outcome is not None, 10.0)
+    assert failed.value.context["error_code"] == 206
+    assert "error_code 206 (GOAL_OCCUPIED)" in str(failed.value)
+    assert "would collide with ['mug-1', 'table']" in str(failed.value)  # Nav2's error_msg
+    assert after.distance_to(before) < 1e-6  # refused: the robot did not move
+    assert handle.outcome is not None and handle.outcome.state.name == "SUCCEEDED"
+    feedback = handle.outcome.feedback  # the last the server sent while driving
+    assert feedback["distance_remaining"] < 0.2
+    assert _seconds(feedback["navigation_time"]) > 1.5
+    assert feedback["current_pose"]["header"]["frame_id"] == "map"
+
+
+def _in_projection(object_type: str, item: str) -> TransportResult:
+    scene = kitchen_scene("pr2")
+    with simulated_robot(scene.world, scene.robot):
+        result = transport(object_type, a.location(on=TABLE, for_=item))
+    scene.world.close()
+    return result
+
+
+def _on_the_table_top(world: World, item: str, pose: Pose) -> None:
+    """``item`` (at ``pose`` in the driver's world) stands on the table top, inside it."""
+    low, _ = world.aabb(item)
+    table_low, table_high = world.link_aabb("kitchen", "table_top")
+    assert world.pose(item).distance_to(pose) < 1e-6  # the mirror shows it there too
+    assert low[2] == pytest.approx(table_high[2], abs=RESTING)
+    assert table_low[0] < pose.position[0] < table_high[0]
+    assert table_low[1] < pose.position[1] < table_high[1]
+
+
+def _same_stands(result: TransportResult, expected: TransportResult, within: float) -> None:
+    """The stages tried in the same order, from stands at most ``within`` [m] apart."""
+    stages = [(attempt.stage, attempt.stand) for attempt in result.log.attempts]
+    projected = [(attempt.stage, attempt.stand) for attempt in expected.log.attempts]
+    assert [stage for stage, _ in stages] == [stage for stage, _ in projected]
+    for (_, stand), (_, want) in zip(stages, projected, strict=True):
+        assert stand.distance_to(want) < within
+
+
+@pytest.mark.parametrize(
+    ("object_type", "item", "clock_offset"), [("mug", "mug-1", 0.0), ("bowl", "bowl-1", -10.0)]
+)
+def test_the_kitchen_transport_over_ros2_on_the_real_pr2s_controllers(
+    ros2_domain: int, object_type: str, item: str, clock_offset: float
+) -> None:
+    expected = _in_projection(object_type, item)
+    scene = kitchen_scene("pr2")
+    driver = DriverProcess(
+        "", "pr2", ros=2, domain_id=ros2_domain, controllers="pr2", clock_offset=clock_offset,
+        scene="kitchen",
+    )  # fmt: skip
+    with driver, ros_robot("pr2", ros=2, world=scene.world) as run:
+        result = transport(object_type, a.location(on=TABLE, for_=item))
+        placed = run.transforms.lookup("map", item)
+        drawers = run.environment.client.transport.environment_joint_states()
+        skew = run.environment.client.clock_skew
+    assert run.tree.root.status.name == "SUCCEEDED"
+    assert skew == pytest.approx(clock_offset, abs=0.5)
+    _on_the_table_top(scene.world, item, placed)
+    assert scene.world.attachments("pr2") == {}  # let go in the mirror too
+    if object_type == "bowl":  # out of the drawer, which is shut again
+        assert [opened.container.joint for opened in result.opened] == [DRAWER_JOINT]
+        assert drawers["/kitchen/joint_states"][DRAWER_JOINT] == pytest.approx(0.0, abs=0.01)
+    else:
+        assert result.opened == []
+    _same_stands(result, expected, DRAWN)  # the same seeds, the same stands
+
+
+def test_a_controller_killed_mid_goal_gives_a_typed_failure_in_bounded_time(
+    ros2_domain: int,
+) -> None:
+    driver = DriverProcess("", "pr2", base_speed=0.3, ros=2, domain_id=ros2_domain)
+    with driver, ros_robot("pr2", ros=2) as run:
+        client = run.environment.client
+        start = client.base_pose()
+        killed: list[float] = []
+
+        def kill_once_moving() -> None:
+            while client.base_pose().distance_to(start) < MOVED:
+                time.sleep(0.02)
+            driver.kill()
+            killed.append(time.monotonic())
+
+        killer = threading.Thread(target=kill_once_moving)
+        killer.start()
+        try:
+            with pytest.raises(RosConnectionLost) as lost:
+                perform(a.motion(type="going", target=Pose((-2.0, 0.0, 0.0))))
+        finally:
+            killer.join()
+        noticed = time.monotonic() - killed[0]
+    assert lost.value.server == "/navigate_to_pose"
+    assert "left the ROS graph" in str(lost.value)
+    assert noticed < LEASE + 2.0 + 1.5  # the dead process's lease, ros_connection_timeout
+    assert multiprocessing.active_children() == []
+
+
+def test_a_cancel_the_server_refuses_raises_that_the_robot_may_still_move(
+    ros2_domain: int,
+) -> None:
+    facts = (
+        "ros_action_timeout(pr2, navigation, 1.0).\nros_cancel_timeout(pr2, 0.5).\n"
+        + default_facts("pr2", ros=2)
+    )
+    start = time.monotonic()
+    with (
+        DriverProcess("", "pr2", fault="ignore_cancel", ros=2, domain_id=ros2_domain),
+        ros_robot("pr2", ros=2, ros_facts=facts),
+        pytest.raises(RosCancelIgnored) as ignored,
+    ):
+        start = time.monotonic()
+        perform(a.motion(type="going", target=Pose((-1.0, 0.0, 0.0))))
+    assert time.monotonic() - start == pytest.approx(1.5, abs=1.0)  # timeout, then cancel
+    assert ignored.value.server == "/navigate_to_pose"
+    assert ignored.value.timeout == 0.5
+    assert ignored.value.stopping is False
+
+
+def test_a_parallel_gripper_takes_a_joint_state_command_and_reports_its_state(
+    ros2_domain: int, tmp_path: Path
+) -> None:
+    facts = default_facts("pr2", ros=2).replace(
+        "'control_msgs/GripperCommand'", "'control_msgs/ParallelGripperCommand'"
+    )
+    facts_file = tmp_path / "pr2_parallel.pl"
+    facts_file.write_text(facts)
+    log = tmp_path / "goals.jsonl"
+    driver = DriverProcess(
+        "", "pr2", ros=2, domain_id=ros2_domain, ros_facts=facts_file, goal_log=log
+    )
+    with driver, ros_robot("pr2", ros=2, ros_facts=facts) as run:
+        opened = perform(a.motion(type="opening", gripper="left"))
+        closed = perform(a.motion(type="closing", gripper="left"))
+        finger = run.environment.client.joint_states()["l_gripper_l_finger_joint"]
+        (open_goal, close_goal) = driver.received_goals("/l_gripper_controller/gripper_cmd")
+    assert open_goal["command"]["name"] == ["l_gripper_l_finger_joint"]
+    assert open_goal["command"]["position"] == pytest.approx([0.085])  # a gap [m], the facts
+    assert close_goal["command"]["position"] == pytest.approx([0.0])
+    assert opened == pytest.approx(0.548, abs=1e-3)  # 0.085 m is open: the finger's upper limit
+    assert closed == pytest.approx(0.0, abs=1e-3) and finger == pytest.approx(0.0, abs=1e-3)
+
+
+CDR_CHECK = """
+from rclpy.serialization import serialize_message
+from geometry_msgs.msg import TransformStamped
+from tf2_msgs.msg import TFMessage
+from rclpy.serialization import deserialize_message
+from robocram.ros.tf_cdr import read_tf_message, write_tf_message
+transforms = []
+for i in range(50):  # names of every length mod 4, so each alignment is crossed
+    t = TransformStamped(child_frame_id="link" + "x" * i)
+    t.header.frame_id, t.header.stamp.sec = ("map", "base_footprint")[i % 2], i
+    t.transform.translation.x, t.transform.translation.z = 0.1 * i, -2.0 * i
+    t.transform.rotation.y, t.transform.rotation.w = 0.6, 0.8
+    transforms.append(t)
+want = [(t.header.frame_id, t.child_frame_id, (0.1 * i, 0.0, -2.0 * i), (0.0, 0.6, 0.0, 0.8))
+        for i, t in enumerate(transforms)]
+assert read_tf_message(serialize_message(TFMessage(transforms=transforms))) == want
+assert read_tf_message(serialize_message(TFMessage())) == []
+written = deserialize_message(write_tf_message((7, 9), want), TFMessage)
+assert [t.header.stamp.sec for t in written.transforms] == [7] * 50
+assert serialize_message(written) == write_tf_message((7, 9), want)
+assert deserialize_message(write_tf_message((7, 9), []), TFMessage).transforms == []
+"""
+
+
+def test_tf_is_read_from_and_written_to_its_cdr_bytes_as_rclpy_does() -> None:
+    environment = ros2_prefix().environment(0)
+    subprocess.run(child_argv(CDR_CHECK), env=environment, check=True, timeout=60)
+
+
+def test_stopping_mid_navigation_cancels_the_nav2_goal_and_the_base_stops(
+    ros2_domain: int, tmp_path: Path
+) -> None:
+    far = Pose((-4.0, 3.0, 0.0))  # free floor, far from the robot at the origin
+    log = tmp_path / "goals.jsonl"
+    driver = DriverProcess("", "pr2", base_speed=0.3, ros=2, domain_id=ros2_domain, goal_log=log)
+    with driver, ros_robot("pr2", ros=2) as run:
+        client = run.environment.client
+        start = client.base_pose()
+        stops: list[float] = []
+
+        def until_moving() -> None:
+            while client.base_pose().distance_to(start) < MOVED:
+                sleep(0.02)
+            stops.append(time.monotonic())
+
+        pursue(lambda: perform(a.motion(type="going", target=far)), until_moving)
+        stopped = client.base_pose()
+        for _ in range(3):  # several state messages later the base is still there
+            assert client.transport.wait_for_state(None, 5.0)
+        later = client.base_pose()
+        (cancel,) = driver.cancels_seen("/navigate_to_pose")
+    assert stopped.distance_to(start) >= MOVED
+    assert stopped.distance_to(far) > 1.0
+    assert later.distance_to(stopped) < 1e-6
+    assert 0.0 < cancel - stops[0] < 0.05  # [s] the stop reached the driver within 50 ms
+
+
+def test_a_point_head_controller_aims_the_camera_at_the_target(
+    ros2_domain: int, tmp_path: Path
+) -> None:
+    facts = default_facts("pr2", ros=2).replace(
+        "ros_action(pr2, head, '/head_controller/follow_joint_trajectory',\n"
+        "           'control_msgs/FollowJointTrajectory').",
+        "ros_action(pr2, head, '/head_controller/point_head', 'control_msgs/PointHead').",
+    )
+    assert "control_msgs/PointHead" in facts
+    facts_file = tmp_path / "pr2_point_head.pl"
+    facts_file.write_text(facts)
+    target = Pose((1.5, 0.5, 0.6))  # [m] in map, ahead and to the left, low
+    log = tmp_path / "goals.jsonl"
+    driver = DriverProcess(
+        "", "pr2", ros=2, domain_id=ros2_domain, ros_facts=facts_file, goal_log=log
+    )
+    with driver, ros_robot("pr2", ros=2, ros_facts=facts) as run:
+        pan_tilt = perform(a.motion(type="looking", target=a.location(pose=target)))
+        camera = run.transforms.lookup("map", "wide_stereo_optical_frame")
+        (goal,) = driver.received_goals("/head_controller/point_head")
+    assert goal["target"]["point"] == pytest.approx({"x": 1.5, "y": 0.5, "z": 0.6})
+    assert goal["pointing_frame"] == "wide_stereo_optical_frame"
+    assert pan_tilt["head_pan_joint"] > 0.1 and pan_tilt["head_tilt_joint"] > 0.1  # left, down
+    axis = camera.matrix()[:3, 2]  # the optical axis: z
+    to_target = np.subtract(target.position, camera.position)
+    assert float(axis @ to_target) / float(np.linalg.norm(to_target)) > 0.99  # aimed
