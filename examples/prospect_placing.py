@@ -10,7 +10,7 @@ Run: python examples/prospect_placing.py
 from __future__ import annotations
 
 from robocram.designators import a
-from robocram.plans.transport import transport
+from robocram.plans import transport
 from robocram.projection import prospect, simulated_robot
 from robocram.scenes import kitchen_scene
 

@@ -101,7 +101,7 @@ def move_torso(joint_angle: float | str) -> Any:
 GRIPPER_MOTIONS = {"open": "opening", "close": "closing"}  # CRAM's :open and :close
 
 
-def set_gripper(gripper: str, motion: str | float) -> Any:
+def set_gripper(gripper: str, motion: str | float) -> object:
     """Open or close ``gripper`` (an arm's name or side), or move it to a joint value [m |
     rad]: CRAM's ``setting-gripper`` action. Closing stops on what is between the fingers
     but does not hold it (``gripping`` does)."""

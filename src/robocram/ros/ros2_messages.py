@@ -12,7 +12,11 @@ from __future__ import annotations
 import importlib
 from typing import Any
 
-RosDict = dict[str, Any]
+from robocram.ros.transport import RosDict
+
+# rclpy's nodes, clients, goal handles and generated message classes: the wheels ship no
+# type information, so these stay untyped, under one name that says why
+RclpyObject = Any
 TIME_TYPES = ("Time", "Duration")
 DROPPED = frozenset({"seq"})  # ROS 1 fields ROS 2 has no more
 FLOATS = frozenset({"double", "float"})
@@ -21,7 +25,7 @@ INTEGERS = frozenset(
 )
 
 
-def action_class(type_name: str) -> Any:
+def action_class(type_name: str) -> RclpyObject:
     """The rclpy action class of ``pkg/Name`` (``pkg/action/Name`` also works)."""
     package, _, name = type_name.replace("/action/", "/").partition("/")
     if not name:
@@ -29,7 +33,7 @@ def action_class(type_name: str) -> Any:
     return getattr(importlib.import_module(f"{package}.action"), name)
 
 
-def message_class(type_name: str) -> Any:
+def message_class(type_name: str) -> RclpyObject:
     """The rclpy message class of ``pkg/Name`` (``pkg/msg/Name`` also works)."""
     package, _, name = type_name.replace("/msg/", "/").partition("/")
     if not name:
@@ -37,13 +41,13 @@ def message_class(type_name: str) -> Any:
     return getattr(importlib.import_module(f"{package}.msg"), name)
 
 
-def _is_time(message: Any) -> bool:
+def _is_time(message: RclpyObject) -> bool:
     return type(message).__module__.startswith("builtin_interfaces") and (
         type(message).__name__ in TIME_TYPES
     )
 
 
-def _element_class(slot_type: Any) -> Any | None:
+def _element_class(slot_type: RclpyObject) -> RclpyObject | None:
     """The message class of a sequence's elements, None for primitives."""
     value_type = getattr(slot_type, "value_type", None)
     namespaces = getattr(value_type, "namespaces", None)
@@ -52,7 +56,7 @@ def _element_class(slot_type: Any) -> Any | None:
     return getattr(importlib.import_module(".".join(namespaces)), value_type.name)
 
 
-def _primitive(kind: str, value: Any) -> Any:
+def _primitive(kind: str, value: RclpyObject) -> RclpyObject:
     """``value`` as the Python type rclpy's setters demand for a field of ``kind``."""
     base = kind.split("<", 1)[-1].split("[", 1)[0].rstrip(">")
     convert = float if base in FLOATS else int if base in INTEGERS else None
@@ -63,7 +67,7 @@ def _primitive(kind: str, value: Any) -> Any:
     return convert(value)
 
 
-def fill(message: Any, data: RosDict, path: str = "") -> Any:
+def fill(message: RclpyObject, data: RosDict, path: str = "") -> RclpyObject:
     """Set ``message``'s fields from ``data`` (missing fields keep their defaults)."""
     if _is_time(message) and ("secs" in data or "nsecs" in data):
         data = {"sec": data.get("secs", 0), "nanosec": data.get("nsecs", 0)}
@@ -87,7 +91,7 @@ def fill(message: Any, data: RosDict, path: str = "") -> Any:
     return message
 
 
-def to_dict(message: Any) -> Any:
+def to_dict(message: RclpyObject) -> RclpyObject:
     """The message as nested dicts, lists and numbers (times as ``{"secs", "nsecs"}``)."""
     if hasattr(message, "get_fields_and_field_types"):
         if _is_time(message):

@@ -19,11 +19,10 @@ import threading
 import time
 from dataclasses import dataclass, field
 from multiprocessing.connection import Connection
-from typing import Any
 
 from robocram.ros.node_config import NodeConfig
 from robocram.ros.ros1_node import BLOCKING_OPS, handle_request
-from robocram.ros.ros2_messages import action_class, fill, to_dict
+from robocram.ros.ros2_messages import RclpyObject, RosDict, action_class, fill, to_dict
 from robocram.ros.tf_cdr import read_tf_message
 from robocram.ros.transport import GoalState
 from robocram.tf import Pose, Quaternion, TransformTree, Vector3
@@ -34,7 +33,7 @@ STATUS = {4: GoalState.SUCCEEDED, 5: GoalState.PREEMPTED, 6: GoalState.ABORTED}
 TF_STATIC_DEPTH = 100
 
 
-def locked_action_client(node: Any, action: Any, name: str) -> Any:
+def locked_action_client(node: RclpyObject, action: RclpyObject, name: str) -> RclpyObject:
     """An rclpy ``ActionClient`` whose requests may be sent from any thread.
 
     rclpy registers a request's sequence number only after sending it: from a thread
@@ -49,19 +48,19 @@ def locked_action_client(node: Any, action: Any, name: str) -> Any:
             super().__init__(node, action, name)
             self.sending = threading.Lock()
 
-        def send_goal_async(self, *args: Any, **kwargs: Any) -> Any:
+        def send_goal_async(self, *args: RclpyObject, **kwargs: RclpyObject) -> RclpyObject:
             with self.sending:
                 return super().send_goal_async(*args, **kwargs)
 
-        def _cancel_goal_async(self, *args: Any, **kwargs: Any) -> Any:
+        def _cancel_goal_async(self, *args: RclpyObject, **kwargs: RclpyObject) -> RclpyObject:
             with self.sending:
                 return super()._cancel_goal_async(*args, **kwargs)
 
-        def _get_result_async(self, *args: Any, **kwargs: Any) -> Any:
+        def _get_result_async(self, *args: RclpyObject, **kwargs: RclpyObject) -> RclpyObject:
             with self.sending:
                 return super()._get_result_async(*args, **kwargs)
 
-        async def execute(self, taken_data: Any) -> None:
+        async def execute(self, taken_data: RclpyObject) -> None:
             with self.sending:  # a request being sent now is registered before its answer
                 pass
             await super().execute(taken_data)
@@ -74,19 +73,19 @@ class _Server:
     """One action server: its client, the running goal and when the server was last seen."""
 
     name: str
-    action: Any
-    client: Any
+    action: RclpyObject
+    client: RclpyObject
     goal_id: int | None = None
-    handle: Any = None  # rclpy's ClientGoalHandle, once the server accepted the goal
+    handle: RclpyObject = None  # rclpy's ClientGoalHandle, once the server accepted the goal
     cancel_pending: bool = False  # cancelled before the server accepted it
-    feedback: dict[str, Any] = field(default_factory=dict)  # the running goal's last
+    feedback: RosDict = field(default_factory=dict)  # the running goal's last
     seen: float = 0.0  # monotonic [s] the server was last in the ROS graph
 
 
 class Ros2Node:
     """The node's state and request handlers; one instance per child process."""
 
-    def __init__(self, conn: Connection, config: NodeConfig, node: Any) -> None:
+    def __init__(self, conn: Connection, config: NodeConfig, node: RclpyObject) -> None:
         from rclpy.qos import DurabilityPolicy, QoSProfile
         from sensor_msgs.msg import JointState
         from tf2_msgs.msg import TFMessage
@@ -122,7 +121,7 @@ class Ros2Node:
         with self._send_lock:
             self.conn.send(message)
 
-    def _on_joints(self, msg: Any) -> None:
+    def _on_joints(self, msg: RclpyObject) -> None:
         with self._state:
             self._joints.update(zip(msg.name, map(float, msg.position), strict=False))
             self._joint_arrivals += 1
@@ -132,7 +131,7 @@ class Ros2Node:
         if first and stamp > 0:  # the robot clock's offset, once
             self.send(("skew", stamp - time.time()))
 
-    def _on_environment(self, msg: Any, topic: str) -> None:
+    def _on_environment(self, msg: RclpyObject, topic: str) -> None:
         with self._state:
             self._environment[topic].update(zip(msg.name, map(float, msg.position), strict=False))
 
@@ -185,14 +184,14 @@ class Ros2Node:
         future.add_done_callback(lambda done: self._accepted(entry, goal_id, done.result()))
         return sent
 
-    def _on_feedback(self, entry: _Server, goal_id: int, message: Any) -> None:
+    def _on_feedback(self, entry: _Server, goal_id: int, message: RclpyObject) -> None:
         """Keep the goal's last feedback (Nav2: pose, time, distance remaining)."""
         feedback = to_dict(message.feedback)
         with self._state:
             if entry.goal_id == goal_id:
                 entry.feedback = feedback
 
-    def _accepted(self, entry: _Server, goal_id: int, handle: Any) -> None:
+    def _accepted(self, entry: _Server, goal_id: int, handle: RclpyObject) -> None:
         if not handle.accepted:
             self._finish(entry, goal_id, GoalState.REJECTED, "the server rejected the goal", {})
             return
@@ -206,14 +205,14 @@ class Ros2Node:
         result = handle.get_result_async()
         result.add_done_callback(lambda done: self._ended(entry, goal_id, done.result()))
 
-    def _ended(self, entry: _Server, goal_id: int, response: Any) -> None:
+    def _ended(self, entry: _Server, goal_id: int, response: RclpyObject) -> None:
         result = to_dict(response.result)
         state = STATUS.get(response.status, GoalState.LOST)
         text = str(result.get("error_string") or result.get("error_msg") or "")
         self._finish(entry, goal_id, state, text, result)
 
     def _finish(
-        self, entry: _Server, goal_id: int, state: GoalState, text: str, result: dict[str, Any]
+        self, entry: _Server, goal_id: int, state: GoalState, text: str, result: RosDict
     ) -> None:
         arrived = time.monotonic()
         mark = self._mark()  # state arriving from now on shows the end of the goal

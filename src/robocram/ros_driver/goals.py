@@ -25,7 +25,7 @@ from robocram.projection.navigation import drive
 from robocram.projection.neck import look_at
 from robocram.projection.perception import visible_matches
 from robocram.ros.gripper_semantics import GripperSemantics
-from robocram.ros.transport import GoalState
+from robocram.ros.transport import GoalState, RosDict
 from robocram.ros_driver.held_handles import HeldHandles
 from robocram.ros_driver.motion import MotionOptions, Stepper, base_motion, joint_motion
 from robocram.tf import Pose, PoseStamped, pose_stamped_to_ros
@@ -55,7 +55,7 @@ class GoalContext:
     stepper: Stepper
     soft_limits: dict[str, tuple[float, float]] | None = None
     handles: HeldHandles = field(default_factory=HeldHandles)
-    feedback: Callable[[dict[str, Any]], None] = lambda _: None
+    feedback: Callable[[RosDict], None] = lambda _: None
 
 
 def _soft_clamped(target: dict[str, float], ctx: GoalContext) -> dict[str, float]:

@@ -30,6 +30,7 @@ from robocram.projection import ProjectedRobot, WorldFrames
 from robocram.robots import load_description
 from robocram.ros.message_dicts import message_class, to_dict, to_message
 from robocram.ros.ros_config import RosConfig
+from robocram.ros.transport import RosDict
 from robocram.ros_driver import goals, pr2_controllers
 from robocram.ros_driver.goals import RosMessage
 from robocram.ros_driver.held_handles import HeldHandles
@@ -206,7 +207,7 @@ class ProjectionDriver:
         handler: Handler,
         goal: RosMessage,
         stepper: Stepper,
-        feedback: Callable[[dict[str, Any]], None] = lambda _: None,
+        feedback: Callable[[RosDict], None] = lambda _: None,
     ) -> goals.Outcome:
         """Run the handler; an error in it aborts the goal with the error as status text."""
         try:

@@ -18,9 +18,15 @@ import threading
 import time
 from collections.abc import Callable
 from functools import partial
-from typing import Any
 
-from robocram.ros.ros2_messages import action_class, fill, message_class, to_dict
+from robocram.ros.ros2_messages import (
+    RclpyObject,
+    RosDict,
+    action_class,
+    fill,
+    message_class,
+    to_dict,
+)
 from robocram.ros.tf_cdr import write_tf_message
 from robocram.ros_driver import goals
 from robocram.ros_driver.motion import Stepper
@@ -36,9 +42,9 @@ AFTER_RESULT = 0.01  # [s] after a goal's result, the state is published once mo
 class Ros2ProjectionDriver(ProjectionDriver):
     """The projection driver's servers and publishers on an rclpy node (``start(node)``)."""
 
-    node: Any = None
+    node: RclpyObject = None
 
-    def start_ros2(self, node: Any) -> None:
+    def start_ros2(self, node: RclpyObject) -> None:
         """Advertise the state topics and start one action server per configured server."""
         from rclpy.action import ActionServer, CancelResponse
         from rclpy.callback_groups import ReentrantCallbackGroup
@@ -77,7 +83,9 @@ class Ros2ProjectionDriver(ProjectionDriver):
         self._publish_static()
         node.create_timer(1.0 / PUBLISH_RATE, self.publish_state, callback_group=group)
 
-    def _on_cancel(self, server: str, refuse: bool, response: Any, _: Any) -> Any:
+    def _on_cancel(
+        self, server: str, refuse: bool, response: RclpyObject, _: RclpyObject
+    ) -> RclpyObject:
         """Log when a cancel reached the server; accept it unless told to ignore cancels."""
         if self.goal_log is not None:
             line = json.dumps({"server": server, "cancel_seen": time.monotonic()})
@@ -93,7 +101,9 @@ class Ros2ProjectionDriver(ProjectionDriver):
         with self._log_lock, self.goal_log.open("a") as log:
             log.write(line + "\n")
 
-    def _execute2(self, server: str, action_type: str, handler: Handler, handle: Any) -> Any:
+    def _execute2(
+        self, server: str, action_type: str, handler: Handler, handle: RclpyObject
+    ) -> RclpyObject:
         """Run one goal to its end; returns the result message (rclpy's execute callback)."""
         result_type = action_class(action_type).Result
         self._record(server, action_type, handle.request)
@@ -149,14 +159,14 @@ class Ros2ProjectionDriver(ProjectionDriver):
         message = fill(message_class("geometry_msgs/TransformStamped")(), root)
         self._publishers["tf_static"].publish(TFMessage(transforms=[message]))
 
-    def _stamp(self) -> Any:
+    def _stamp(self) -> RclpyObject:
         """Now on the robot's clock (ours + ``clock_offset``) as a ROS 2 Time."""
         from builtin_interfaces.msg import Time
 
         now = time.time() + self.clock_offset
         return Time(sec=int(now // 1), nanosec=int(now % 1 * 1e9))
 
-    def _header(self, frame: str) -> dict[str, Any]:
+    def _header(self, frame: str) -> RosDict:
         stamp = self._stamp()
         return {"frame_id": frame, "stamp": {"sec": stamp.sec, "nanosec": stamp.nanosec}}
 
@@ -181,17 +191,17 @@ class Ros2ProjectionDriver(ProjectionDriver):
         self._publishers["joints"].publish(_joint_state(JointState, stamp, joints))
 
 
-def _joint_state(kind: Any, stamp: Any, values: dict[str, float]) -> Any:
+def _joint_state(kind: RclpyObject, stamp: RclpyObject, values: dict[str, float]) -> RclpyObject:
     state = kind(name=list(values), position=[float(v) for v in values.values()])
     state.header.stamp = stamp
     return state
 
 
-def _feeder(handle: Any, kind: Any) -> Callable[[dict[str, Any]], None]:
+def _feeder(handle: RclpyObject, kind: RclpyObject) -> Callable[[RosDict], None]:
     """Publishes the goal's feedback, at most one message every ``FEEDBACK_PERIOD``."""
     last = [0.0]  # [s] monotonic, when the last one went out
 
-    def feed(fields: dict[str, Any]) -> None:
+    def feed(fields: RosDict) -> None:
         now = time.monotonic()
         if now - last[0] >= FEEDBACK_PERIOD:
             last[0] = now
@@ -200,13 +210,13 @@ def _feeder(handle: Any, kind: Any) -> Callable[[dict[str, Any]], None]:
     return feed
 
 
-def _known(message: Any, fields: dict[str, Any]) -> dict[str, Any]:
+def _known(message: RclpyObject, fields: RosDict) -> RosDict:
     """The fields the result type has (a handler's words for ROS 1 may not fit)."""
     have = message.get_fields_and_field_types()
     return {k: v for k, v in fields.items() if k in have}
 
 
-def serve(driver: Ros2ProjectionDriver, node: Any, ready: threading.Event) -> None:
+def serve(driver: Ros2ProjectionDriver, node: RclpyObject, ready: threading.Event) -> None:
     """Spin the node with enough threads for concurrent goals until its context ends."""
     from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor
 

@@ -169,15 +169,17 @@ def build_scene(
     return world
 
 
-def _add_robot(world: World, recipe: dict[str, Any], robots: dict[str, str]) -> None:
+def _add_robot(world: World, recipe: Mapping[str, object], robots: dict[str, str]) -> None:
     """The recipe's robot, from its built-in name or its description file, as it ran."""
-    robot = recipe["robot"]
-    source = robots.get(robot) or recipe.get("source")
+    robot = str(recipe["robot"])
+    stored = recipe.get("source")
+    source = robots.get(robot) or (str(stored) if stored else None)
+    name = str(recipe["name"])
     if source is None:
-        world.add_robot(robot, name=recipe["name"])
+        world.add_robot(robot, name=name)
         return
     try:
-        handle = world.add_robot(source, name=recipe["name"])
+        handle = world.add_robot(source, name=name)
     except DescriptionError as err:
         raise RobotNotRebuilt(robot, source, f"does not load ({err})") from err
     if urdf_digest(handle.description.model) != recipe["urdf_digest"]:
