@@ -28,9 +28,9 @@ Motion ``type`` (properties) -> command, resource:
 A ``target`` is a pose, a ``PoseStamped`` or a location designator (one command per
 solution). ``Effort`` is the ``effort`` property [N] or ``none``; ``Mode`` the
 ``collision_mode`` or ``avoid_all``; ``Touching`` the object (or ``object/link``) an
-``allow_hand`` motion's hand may touch, or ``none`` (any object, within the same bound). ``left``/``right`` name the sides of a two-armed
-robot; its process modules map them to its arms. Repeated ``gripper`` properties give one
-command per gripper, in order.
+``allow_hand`` motion's hand may touch, or ``none`` (any object, within the same
+bound). ``left``/``right`` name the sides of a two-armed robot; its process modules map
+them to its arms. Repeated ``gripper`` properties give one command per gripper, in order.
 """
 
 from __future__ import annotations

@@ -64,8 +64,12 @@ def _moving_tcp() -> MotionType:
     return MotionType(
         "moving-tcp",
         (
-            _target("left_target"), _target("right_target"), _atom("arm"), _target("target"),
-            _MODE, _TOUCHING,
+            _target("left_target"),
+            _target("right_target"),
+            _atom("arm"),
+            _target("target"),
+            _MODE,
+            _TOUCHING,
         ),
         (
             Command("move_tcp_both", ("left_target", "right_target", "collision_mode"), (0, 1, 2)),

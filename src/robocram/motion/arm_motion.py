@@ -96,7 +96,7 @@ def _scene(
     holds) already has at the start: a hand on a handle, a held bowl still on its table."""
     judge = BulletScene(world, robot, joints, allowed, allowed_pairs=pairs, hand=hand)
     scene = CoalClearance(judge)
-    touching = scene.colliding(start)
+    touching = _start_contacts(scene, start, hand)
     if touching:
         judge = BulletScene(
             world, robot, joints, allowed, allowed_pairs={*pairs, *touching}, hand=hand
@@ -117,11 +117,28 @@ def _judge(
     """The world itself as the checker, allowing ``pairs``, the ``hand``'s bounded contact
     and the start's contacts."""
     judge = BulletScene(world, robot, joints, allowed, allowed_pairs=pairs, hand=hand)
-    touching = judge.colliding(start)
+    touching = _start_contacts(judge, start, hand)
     if touching:
         pairs = {*pairs, *touching}
         judge = BulletScene(world, robot, joints, allowed, allowed_pairs=pairs, hand=hand)
     return judge
+
+
+def _start_contacts(
+    checker: BulletScene | CoalClearance, start: list[float], hand: HandContact | None
+) -> list[LinkPair]:
+    """The contacts at ``start`` that the motion may keep: the colliding pairs, and the
+    hand's on what it acts on at any depth (a hand on a handle the drawer's step pulled
+    deeper must follow it); the bound holds for contacts the motion makes."""
+    if hand is None:
+        return checker.colliding(start)
+    judge = checker.judge if isinstance(checker, CoalClearance) else checker
+    joints, pairs = judge.joints, judge.allowed_pairs
+    touching = replace(hand, depth=0.0)  # any depth counts: every contact of the hand
+    every = BulletScene(
+        judge.world, judge.robot, joints, judge.allowed_links, allowed_pairs=pairs, hand=touching
+    )
+    return every.colliding(start)
 
 
 def plan_arm_motion(

@@ -27,6 +27,4 @@ class ContactAllowance:
 
     def covers(self, robot_side: str, other: str, other_link: str) -> bool:
         """Whether it allows ``robot_side`` against ``other`` (or its link ``other_link``)."""
-        return self.robot_side == robot_side and self.other in (
-            "*", other, f"{other}/{other_link}"
-        )
+        return self.robot_side == robot_side and self.other in ("*", other, f"{other}/{other_link}")

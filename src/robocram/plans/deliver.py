@@ -56,7 +56,10 @@ def _carry_above(held: Held, spot: Pose) -> None:
     lifted = PoseStamped.from_pose("map", Pose((x, y, z + rise), tool.orientation))
     perform(
         a.motion(
-            type="moving-tcp", arm=held.arm, target=a.location(pose=lifted), **GRASPING,
+            type="moving-tcp",
+            arm=held.arm,
+            target=a.location(pose=lifted),
+            **GRASPING,
             touching=held.object_name,
         )  # fmt: skip
     )

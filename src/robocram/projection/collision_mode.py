@@ -3,9 +3,10 @@
 ``avoid_all``: no link of the robot may touch anything (the floor and objects the robot
 holds excepted). ``allow_hand``: the moving arm's hand and gripper links may touch what
 the motion acts on (grasping; :class:`~robocram.motion.hand_contact.HandContact`), no
-deeper than its bound. ``allow_all``: no check. A candidate configuration is tried on the world and the
-joints are put back before the check returns (inside :func:`putting_back_once`, when the
-query ends: the next candidate moves on from the last), so IK never leaves the robot moved.
+deeper than its bound. ``allow_all``: no check. A candidate configuration is tried on the
+world and the joints are put back before the check returns (inside
+:func:`putting_back_once`, when the query ends: the next candidate moves on from the
+last), so IK never leaves the robot moved.
 
 One check serves one IK query, while only the robot moves: the links a candidate's joints
 do not move touch at every candidate what they touch where the robot stands, so what they
