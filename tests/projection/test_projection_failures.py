@@ -24,6 +24,9 @@ from robocram.tf import Pose, PoseStamped
 from robocram.world import World
 
 
+GRASP_Z = 0.763  # [m] a top grasp of the mug: 4 cm under the top of its box (issue 35)
+
+
 @pytest.fixture(scope="module")
 def scene() -> Iterator[World]:
     world = World()
@@ -122,8 +125,8 @@ def test_gripping_nothing_closes_completely(world: World) -> None:
 
 
 def test_gripping_beside_the_mug_closes_completely(world: World) -> None:
-    down = (0.0, 0.7071068, 0.0, 0.7071068)  # tool x axis pointing down
-    beside = PoseStamped("base_footprint", (0.7, -0.15, 0.75), down)
+    down = (-0.5, -0.5, 0.5, -0.5)  # tool x down, the fingers across the body (not the handle)
+    beside = PoseStamped("base_footprint", (0.7, -0.15, GRASP_Z), (0.0, 0.7071068, 0.0, 0.7071068))
     with simulated_robot(world, "pr2"):
         perform(a.motion(type="moving-torso", joint_angle=0.3))
         perform(a.motion(type="opening", gripper="right"))
@@ -135,15 +138,17 @@ def test_gripping_beside_the_mug_closes_completely(world: World) -> None:
             perform(a.motion(type="gripping", gripper="right"))
         assert world.attachments("pr2") == {}
         perform(a.motion(type="opening", gripper="right"))
-        above = PoseStamped("base_footprint", (0.7, 0.0, 0.75), down)
+        over = PoseStamped("base_footprint", (0.7, 0.0, GRASP_Z + 0.1), down)  # not through it
+        perform(a.motion(type="moving-tcp", arm="right", target=a.location(pose=over)))
+        above = PoseStamped("base_footprint", (0.7, 0.0, GRASP_Z), down)
         perform(a.motion(type="moving-tcp", arm="right", target=a.location(pose=above), **grasping))
         assert perform(a.motion(type="gripping", gripper="right")) == "mug-1"
     assert world.attachments("pr2") == {"mug-1": "r_wrist_roll_link"}
 
 
 def test_avoid_all_refuses_a_grasp_pose_that_allow_hand_accepts(world: World) -> None:
-    down = (0.0, 0.7071068, 0.0, 0.7071068)  # tool x axis pointing down
-    at_mug = PoseStamped("base_footprint", (0.7, 0.0, 0.75), down)
+    down = (-0.5, -0.5, 0.5, -0.5)  # tool x down, the fingers across the body (not the handle)
+    at_mug = PoseStamped("base_footprint", (0.7, 0.0, GRASP_Z - 0.006), down)  # 0.8 mm in
     before = world.joint_states("pr2")
     with simulated_robot(world, "pr2"):
         perform(a.motion(type="moving-torso", joint_angle=0.3))
