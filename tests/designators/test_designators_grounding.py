@@ -68,7 +68,10 @@ def test_interface_predicates_fail_until_extended() -> None:
         ),
         (
             a.motion(
-                type="moving-tcp", arm="left", target=(1, 0, 1), collision_mode="allow_hand",
+                type="moving-tcp",
+                arm="left",
+                target=(1, 0, 1),
+                collision_mode="allow_hand",
                 touching="mug-1",
             ),  # fmt: skip
             Term("move_tcp", ("left", (1, 0, 1), "allow_hand", "mug-1")),

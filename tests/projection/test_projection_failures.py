@@ -23,7 +23,6 @@ from robocram.projection import ProjectionError, simulated_robot
 from robocram.tf import Pose, PoseStamped
 from robocram.world import World
 
-
 GRASP_Z = 0.763  # [m] a top grasp of the mug: 4 cm under the top of its box (issue 35)
 
 
