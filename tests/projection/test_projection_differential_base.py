@@ -136,7 +136,21 @@ FINGER_IN_THE_MUG = pytest.mark.xfail(
 )
 
 
-@pytest.mark.parametrize("robot", [pytest.param("stretch", marks=FINGER_IN_THE_MUG), "fetch"])
+PALM_IN_THE_MUG = pytest.mark.xfail(
+    reason="the drafted Fetch's palm (gripper_link) goes more than 5 mm into the mug at its "
+    "top and side grasps (issue 35 measured it 79 mm inside while carrying): bounded "
+    "allow_hand refuses them",
+    strict=True,
+)
+
+
+@pytest.mark.parametrize(
+    "robot",
+    [
+        pytest.param("stretch", marks=FINGER_IN_THE_MUG),
+        pytest.param("fetch", marks=PALM_IN_THE_MUG),
+    ],
+)
 def test_the_kitchen_transport_drives_without_sliding(
     robot: str, request: pytest.FixtureRequest
 ) -> None:
