@@ -15,8 +15,8 @@ checks; the planned path is then checked again on the world. Contacts the robot 
 has when the motion starts (a hand resting on a handle) are allowed for that motion: the
 links touching may move away from them. The hand of an ``allow_hand`` motion
 (:class:`~robocram.motion.hand_contact.HandContact`) may touch only what it acts on, at most
-its bound deep, on every way tried (OMPL's snapshot lets the hand touch anything; the
-world confirms the plan); the trajectory stores that allowance.
+its bound deep, on every way tried (OMPL's snapshot lets the hand touch what it acts on at
+any depth; the world confirms the plan); the trajectory stores that allowance.
 
 The answer is a :class:`ArmMotion`: the path, how it was found, and the timed trajectory.
 Nothing moves here; projection follows the trajectory, ROS sends it.
@@ -283,14 +283,16 @@ def _planned(
     it ran the robot into itself (it costs as much as the world's walk); a snapshot with a
     margin is taken only when the world refuses a planned path."""
     links = set(world.link_names(robot))
-    start_links = {link for link, _ in scene.judge.allowed_pairs if link in links}
-    if scene.judge.hand is not None:  # the snapshot's hulls cannot bound it: the world does
-        start_links |= scene.judge.hand.links
+    hand = scene.judge.hand  # the snapshot lets it touch what it acts on, at any depth
+    start_links = {  # links touching at the start may touch anything in the snapshot
+        link for link, other in scene.judge.allowed_pairs
+        if link in links and not (hand is not None and hand.covers(link, other))
+    }  # fmt: skip
     failures: list[ManipulationPathBlocked] = []
     for margin in SNAPSHOT_MARGINS:  # the snapshot's hulls and Bullet's can differ by mm
         snapshot = CollisionScene.of(  # the goal passed the finer check on the meshes
             world, robot, scene.joints, allowed_links=scene.judge.allowed_links | start_links,
-            margin=margin, allow_at=[end],
+            margin=margin, allow_at=[end], hand=hand,
         )  # fmt: skip
         for apart in (False, True):
             judge = _WorldJudge(scene, bound, own if apart else None)
