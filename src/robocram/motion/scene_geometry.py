@@ -181,7 +181,10 @@ def _add_pairs(
         for j, b in enumerate(owners):
             if i == j:
                 continue
-            touch = hand is not None and a.link in hand.links and b.kind == "static"
+            touch = (
+                hand is not None and a.kind == "robot" and a.link in hand.links
+                and b.kind == "static"
+            )  # fmt: skip
             key = (a.kind, a.link, a.other, b.kind, b.link, b.other, touch and b.label)
             checked = decided.get(key)
             if checked is None:
