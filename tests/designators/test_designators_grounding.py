@@ -60,11 +60,21 @@ def test_interface_predicates_fail_until_extended() -> None:
         ),
         (
             a.motion(type="moving-tcp", left_target=(1, 0, 1)),
-            Term("move_tcp", ("left", (1, 0, 1), "avoid_all")),
+            Term("move_tcp", ("left", (1, 0, 1), "avoid_all", "none")),
         ),
         (
             a.motion(type="moving-tcp", arm="right", target=(1, 0, 1), collision_mode="allow_all"),
-            Term("move_tcp", ("right", (1, 0, 1), "allow_all")),
+            Term("move_tcp", ("right", (1, 0, 1), "allow_all", "none")),
+        ),
+        (
+            a.motion(
+                type="moving-tcp",
+                arm="left",
+                target=(1, 0, 1),
+                collision_mode="allow_hand",
+                touching="mug-1",
+            ),  # fmt: skip
+            Term("move_tcp", ("left", (1, 0, 1), "allow_hand", "mug-1")),
         ),
         (
             a.motion(type="moving-tcp", left_target=(1, 0, 1), right_target=(2, 0, 1)),

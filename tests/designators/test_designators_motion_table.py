@@ -66,7 +66,7 @@ def test_the_table_has_one_entry_per_type_and_flying_is_its_own_family() -> None
     assert [m.type for m in motion_types("flying")] == ["flying", "distance-sensing"]
     assert len(motion_types()) == len(MOTION_TYPES) == 14
     assert set(commands_of(MOTION_TYPES, "arms")) == {
-        ("move_tcp", 3),
+        ("move_tcp", 4),
         ("move_tcp_both", 3),
         ("move_joints", 2),
         ("move_joints_both", 2),

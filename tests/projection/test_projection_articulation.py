@@ -118,12 +118,20 @@ BESIDE_THE_WALL = pytest.mark.xfail(
 )
 
 
+FINGERS_IN_THE_HANDLE = pytest.mark.xfail(
+    reason="the PR2 held the fridge's vertical handle with its open fingertips 14-22 mm inside "
+    "it (the roll that reached put the opening along the bar); bounded allow_hand (5 mm, "
+    "issue 35) refuses that grasp, and the rolls across the bar sweep the tips through it",
+    strict=True,
+)
+
+
 @pytest.mark.parametrize(
     ("door", "robot", "arm", "aside"),  # aside: the arm's shoulder before the handle
     [
         pytest.param("cupboard", "pr2", "right", -0.19, marks=BESIDE_THE_WALL),
         ("cupboard", "hsrb", "arm", -0.08),
-        ("fridge", "pr2", "right", -0.19),
+        pytest.param("fridge", "pr2", "right", -0.19, marks=FINGERS_IN_THE_HANDLE),
         ("fridge", "hsrb", "arm", -0.08),
     ],
 )

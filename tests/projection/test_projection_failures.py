@@ -23,6 +23,8 @@ from robocram.projection import ProjectionError, simulated_robot
 from robocram.tf import Pose, PoseStamped
 from robocram.world import World
 
+GRASP_Z = 0.763  # [m] a top grasp of the mug: 4 cm under the top of its box (issue 35)
+
 
 @pytest.fixture(scope="module")
 def scene() -> Iterator[World]:
@@ -122,8 +124,8 @@ def test_gripping_nothing_closes_completely(world: World) -> None:
 
 
 def test_gripping_beside_the_mug_closes_completely(world: World) -> None:
-    down = (0.0, 0.7071068, 0.0, 0.7071068)  # tool x axis pointing down
-    beside = PoseStamped("base_footprint", (0.7, -0.15, 0.75), down)
+    down = (-0.5, -0.5, 0.5, -0.5)  # tool x down, the fingers across the body (not the handle)
+    beside = PoseStamped("base_footprint", (0.7, -0.15, GRASP_Z), (0.0, 0.7071068, 0.0, 0.7071068))
     with simulated_robot(world, "pr2"):
         perform(a.motion(type="moving-torso", joint_angle=0.3))
         perform(a.motion(type="opening", gripper="right"))
@@ -135,15 +137,17 @@ def test_gripping_beside_the_mug_closes_completely(world: World) -> None:
             perform(a.motion(type="gripping", gripper="right"))
         assert world.attachments("pr2") == {}
         perform(a.motion(type="opening", gripper="right"))
-        above = PoseStamped("base_footprint", (0.7, 0.0, 0.75), down)
+        over = PoseStamped("base_footprint", (0.7, 0.0, GRASP_Z + 0.1), down)  # not through it
+        perform(a.motion(type="moving-tcp", arm="right", target=a.location(pose=over)))
+        above = PoseStamped("base_footprint", (0.7, 0.0, GRASP_Z), down)
         perform(a.motion(type="moving-tcp", arm="right", target=a.location(pose=above), **grasping))
         assert perform(a.motion(type="gripping", gripper="right")) == "mug-1"
     assert world.attachments("pr2") == {"mug-1": "r_wrist_roll_link"}
 
 
 def test_avoid_all_refuses_a_grasp_pose_that_allow_hand_accepts(world: World) -> None:
-    down = (0.0, 0.7071068, 0.0, 0.7071068)  # tool x axis pointing down
-    at_mug = PoseStamped("base_footprint", (0.7, 0.0, 0.75), down)
+    down = (-0.5, -0.5, 0.5, -0.5)  # tool x down, the fingers across the body (not the handle)
+    at_mug = PoseStamped("base_footprint", (0.7, 0.0, GRASP_Z - 0.006), down)  # 0.8 mm in
     before = world.joint_states("pr2")
     with simulated_robot(world, "pr2"):
         perform(a.motion(type="moving-torso", joint_angle=0.3))
@@ -159,6 +163,32 @@ def test_avoid_all_refuses_a_grasp_pose_that_allow_hand_accepts(world: World) ->
         )
     assert reached.distance_to(world.pose("pr2") * at_mug.pose) < 0.01
     assert before != world.joint_states("pr2")
+
+
+def test_allow_hand_touching_another_object_refuses_the_mug_and_names_it(world: World) -> None:
+    """The hand 0.8 mm in the mug: allowed when the motion names the mug, refused (naming
+    it) when it names the table, before anything moves."""
+    down = (-0.5, -0.5, 0.5, -0.5)  # tool x down, the fingers across the body (not the handle)
+    at_mug = a.location(pose=PoseStamped("base_footprint", (0.7, 0.0, GRASP_Z - 0.006), down))
+    mode = {"collision_mode": "allow_hand"}
+    with simulated_robot(world, "pr2"):
+        perform(a.motion(type="moving-torso", joint_angle=0.3))
+        perform(a.motion(type="opening", gripper="right"))
+        opened = world.joint_states("pr2")
+        with pytest.raises(ManipulationPoseUnreachable) as info:
+            perform(
+                a.motion(type="moving-tcp", arm="right", target=at_mug, touching="table", **mode)
+            )
+        links = set(world.link_names("pr2"))  # candidates may also touch the robot itself
+        hit = {other for _, other in info.value.colliding_pairs or ()} - links
+        assert hit == {"mug-1"}
+        assert "mug-1" in str(info.value)
+        assert world.joint_states("pr2") == pytest.approx(opened)
+        perform(a.motion(type="moving-tcp", arm="right", target=at_mug, touching="mug-1", **mode))
+    fingers = [
+        -p.distance for p in world.contact_points("pr2", "mug-1") if p.link_a.startswith("r_")
+    ]
+    assert fingers and 0.0 < max(fingers) <= 0.005  # touching the mug, within the bound
 
 
 def test_opening_releases_the_held_object(world: World) -> None:

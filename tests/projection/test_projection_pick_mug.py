@@ -97,9 +97,9 @@ def test_the_same_plan_runs_in_the_recording_environment() -> None:
     assert run.log[3][1].args == (0.31,)
     assert [run.log[i][1].args[1] for i in (6, 9)] == ["open", "grip"]
     assert result.arm == "right"  # the nearer arm to a mug on the right
-    # 5 cm over the bottom of the mug's box, which has pybullet's 3 mm collision margin
-    assert result.grasp.position == pytest.approx((0.62, -0.15, 0.747))
-    assert result.lifted.position == pytest.approx((0.62, -0.15, 0.847))
+    # 4 cm under the top of the mug's box (which has pybullet's 3 mm collision margin)
+    assert result.grasp.position == pytest.approx((0.62, -0.15, 0.763))
+    assert result.lifted.position == pytest.approx((0.62, -0.15, 0.863))
 
 
 def test_pick_up_in_an_environment_without_a_robot_says_how_to_run_it() -> None:

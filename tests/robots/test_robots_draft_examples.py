@@ -81,7 +81,21 @@ def test_example_checks_clean(name: str) -> None:
     assert len(card.results) >= 6
 
 
-@pytest.mark.parametrize("name", ["tiago_pro", "tiago"])
+HAND_IN_THE_MUG = pytest.mark.xfail(
+    reason="at their top grasps the drafted Tiago Pro's gripper base link and the Tiago "
+    "hand's finger links go more than 5 mm into the mug: bounded allow_hand (issue 35) "
+    "refuses them; their grasp depth must come from their hands' shapes",
+    strict=True,
+)
+
+
+@pytest.mark.parametrize(
+    "name",
+    [
+        pytest.param("tiago_pro", marks=HAND_IN_THE_MUG),
+        pytest.param("tiago", marks=HAND_IN_THE_MUG),
+    ],
+)
 def test_pick_up_runs_unchanged_on_drafted_robots(name: str) -> None:
     """The arm whose parked hand is nearest the mug picks (the plan tries arms nearest
     first), whichever side the drafted parking poses leave it on."""

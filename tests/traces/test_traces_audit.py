@@ -358,19 +358,14 @@ def test_a_pr2_kitchen_transport_moves_its_head_and_grippers_only_along_trajecto
     assert kitchen_report.of(FindingKind.SELF_PENETRATION) == []
 
 
-def test_a_pr2_kitchen_transport_closes_its_fingers_into_the_mug(
+def test_a_pr2_kitchen_transport_keeps_its_fingers_out_of_the_mug(
     kitchen_report: AuditReport,
 ) -> None:
-    into_mug = [f for f in kitchen_report.of(FindingKind.WORLD_PENETRATION) if "mug-1" in f.what]
-    assert {f.what.split(" / ")[0] for f in into_mug} == {
-        "pr2:r_gripper_l_finger_link",
-        "pr2:r_gripper_r_finger_link",
-    }
-    assert max(f.amount for f in into_mug) == pytest.approx(0.0065, abs=0.001)
-    held = kitchen_report.of(FindingKind.ALLOWED_CONTACT_TOO_DEEP)  # held: 5 mm allowed
-    assert held and all("mug-1" in f.what and f.bound == pytest.approx(0.005) for f in held)
-    others = [f for f in kitchen_report.of(FindingKind.WORLD_PENETRATION) if f not in into_mug]
-    assert not others  # nothing else of the kitchen is touched, drives included
+    """Its top grasp put the finger links 6.5 mm into the mug's wall (issue 35): the grasp
+    now straddles 4 cm under the top; the hand's contacts are bounded (5 mm) and stored."""
+    assert kitchen_report.of(FindingKind.WORLD_PENETRATION) == []  # drives included
+    assert kitchen_report.of(FindingKind.ALLOWED_CONTACT_TOO_DEEP) == []
+    assert kitchen_report.clean, kitchen_report.summary_lines()
 
 
 def test_a_pr2_kitchen_transport_keeps_every_limit(kitchen_report: AuditReport) -> None:

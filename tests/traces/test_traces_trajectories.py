@@ -215,3 +215,16 @@ def test_allowed_contacts_round_trip_and_old_files_read_none(tmp_path: Path) -> 
 def test_a_contact_allowance_refuses_a_negative_depth() -> None:
     with pytest.raises(ValueError, match="depth is a bound in metres"):
         ContactAllowance("r_gripper_palm_link", "kitchen", -0.001)
+
+
+def test_a_contact_allowance_names_an_object_a_link_of_it_or_any_object() -> None:
+    """A hand contact naming no object (``allow_hand`` with ``touching`` none) is ``*``."""
+    mug = ContactAllowance("r_gripper_palm_link", "mug-1", 0.005)
+    handle = ContactAllowance("r_gripper_palm_link", "kitchen/handle", 0.005)
+    anything = ContactAllowance("r_gripper_palm_link", "*", 0.005)
+    assert mug.covers("r_gripper_palm_link", "mug-1", "base_link")
+    assert not mug.covers("r_gripper_palm_link", "kitchen", "handle")
+    assert handle.covers("r_gripper_palm_link", "kitchen", "handle")
+    assert not handle.covers("r_gripper_palm_link", "kitchen", "counter")
+    assert anything.covers("r_gripper_palm_link", "kitchen", "counter")
+    assert not anything.covers("r_forearm_link", "kitchen", "counter")  # the hand's link only

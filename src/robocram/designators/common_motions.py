@@ -17,8 +17,9 @@ Motion ``type`` (properties) -> command, resource:
   ``move_gripper_joint(Gripper, open | close | grip, Effort)``, grippers
 - moving-gripper-joint (gripper, joint_angle[, effort]) ->
   ``move_gripper_joint(Gripper, Position, Effort)``, grippers
-- moving-tcp (left_target / right_target / arm + target[, collision_mode]) ->
-  ``move_tcp(Arm, Pose, Mode)``; with both side targets ``move_tcp_both(Left, Right, Mode)``
+- moving-tcp (left_target / right_target / arm + target[, collision_mode, touching]) ->
+  ``move_tcp(Arm, Pose, Mode, Touching)``; with both side targets
+  ``move_tcp_both(Left, Right, Mode)``
 - moving-arm-joints (left_configuration / right_configuration / arm + configuration) ->
   ``move_joints(Arm, Config)``; with both ``move_joints_both(Left, Right)``, arms
 - flying (target) -> ``fly(Pose)``, flying; distance-sensing (direction) ->
@@ -26,9 +27,10 @@ Motion ``type`` (properties) -> command, resource:
 
 A ``target`` is a pose, a ``PoseStamped`` or a location designator (one command per
 solution). ``Effort`` is the ``effort`` property [N] or ``none``; ``Mode`` the
-``collision_mode`` or ``avoid_all``. ``left``/``right`` name the sides of a two-armed
-robot; its process modules map them to its arms. Repeated ``gripper`` properties give one
-command per gripper, in order.
+``collision_mode`` or ``avoid_all``; ``Touching`` the object (or ``object/link``) an
+``allow_hand`` motion's hand may touch, or ``none`` (any object, within the same
+bound). ``left``/``right`` name the sides of a two-armed robot; its process modules map
+them to its arms. Repeated ``gripper`` properties give one command per gripper, in order.
 """
 
 from __future__ import annotations

@@ -47,6 +47,7 @@ def _configuration(key: str) -> MotionProperty:
 
 _EFFORT = _number("effort", "[N]", default="none")
 _MODE = _atom("collision_mode", default="avoid_all")
+_TOUCHING = _atom("touching", default="none")  # allow_hand: what the hand acts on
 _OBJECT = MotionProperty("object", (ObjectDesignator,), "an object designator")
 _DIRECTION = MotionProperty("direction", (tuple, list, PoseStamped, str), "a 3-D vector")
 
@@ -58,17 +59,22 @@ def _gripper_action(type_: str, action: str) -> MotionType:
 
 def _moving_tcp() -> MotionType:
     both = ("left_target", "right_target")
-    one = [
-        Command("move_tcp", (Atom(side), f"{side}_target", "collision_mode"), (1,), both)
-        for side in SIDES
-    ]
+    mode = ("collision_mode", "touching")
+    one = [Command("move_tcp", (Atom(side), f"{side}_target", *mode), (1,), both) for side in SIDES]
     return MotionType(
         "moving-tcp",
-        (_target("left_target"), _target("right_target"), _atom("arm"), _target("target"), _MODE),
+        (
+            _target("left_target"),
+            _target("right_target"),
+            _atom("arm"),
+            _target("target"),
+            _MODE,
+            _TOUCHING,
+        ),
         (
             Command("move_tcp_both", ("left_target", "right_target", "collision_mode"), (0, 1, 2)),
             *one,
-            Command("move_tcp", ("arm", "target", "collision_mode"), (1,), both),
+            Command("move_tcp", ("arm", "target", *mode), (1,), both),
         ),
         "arms",
         Answer.GOAL,

@@ -13,7 +13,10 @@ is blocked too is a coal snapshot
 (:class:`~robocram.motion.collision_scene.CollisionScene`) built, for OMPL's thousands of
 checks; the planned path is then checked again on the world. Contacts the robot already
 has when the motion starts (a hand resting on a handle) are allowed for that motion: the
-links touching may move away from them.
+links touching may move away from them. The hand of an ``allow_hand`` motion
+(:class:`~robocram.motion.hand_contact.HandContact`) may touch only what it acts on, at most
+its bound deep, on every way tried (OMPL's snapshot lets the hand touch what it acts on at
+any depth; the world confirms the plan); the trajectory stores that allowance.
 
 The answer is a :class:`ArmMotion`: the path, how it was found, and the timed trajectory.
 Nothing moves here; projection follows the trajectory, ROS sends it.
@@ -22,7 +25,7 @@ Nothing moves here; projection follows the trajectory, ROS sends it.
 from __future__ import annotations
 
 from collections.abc import Collection, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -34,6 +37,7 @@ from robocram.motion.coal_clearance import CoalClearance
 from robocram.motion.collision_scene import CollisionScene
 from robocram.motion.configuration_checker import LinkPair
 from robocram.motion.corner_blend import blend_radii
+from robocram.motion.hand_contact import HandContact
 from robocram.motion.joint_goal import motion_goal
 from robocram.motion.joint_limits import joint_limits
 from robocram.motion.joint_path import PLANNING_BUDGET, JointPath, plan_joint_path
@@ -86,14 +90,18 @@ def _scene(
     allowed: Collection[str],
     start: list[float],
     pairs: Collection[LinkPair] = (),
+    hand: HandContact | None = None,
 ) -> CoalClearance:
     """The world checker (clearances from coal, contacts judged on the world), allowing
-    ``pairs`` and the contacts the robot (and what it holds) already has at the start: a
-    hand on a handle, a held bowl still on its table."""
-    scene = CoalClearance(BulletScene(world, robot, joints, allowed, allowed_pairs=pairs))
-    touching = scene.colliding(start)
+    ``pairs``, the ``hand``'s bounded contact and the contacts the robot (and what it
+    holds) already has at the start: a hand on a handle, a held bowl still on its table."""
+    judge = BulletScene(world, robot, joints, allowed, allowed_pairs=pairs, hand=hand)
+    scene = CoalClearance(judge)
+    touching = _start_contacts(scene, start, hand)
     if touching:
-        judge = BulletScene(world, robot, joints, allowed, allowed_pairs={*pairs, *touching})
+        judge = BulletScene(
+            world, robot, joints, allowed, allowed_pairs={*pairs, *touching}, hand=hand
+        )
         scene = CoalClearance(judge)
     return scene
 
@@ -105,13 +113,33 @@ def _judge(
     allowed: Collection[str],
     start: list[float],
     pairs: Collection[LinkPair],
+    hand: HandContact | None = None,
 ) -> BulletScene:
-    """The world itself as the checker, allowing ``pairs`` and the start's contacts."""
-    judge = BulletScene(world, robot, joints, allowed, allowed_pairs=pairs)
-    touching = judge.colliding(start)
+    """The world itself as the checker, allowing ``pairs``, the ``hand``'s bounded contact
+    and the start's contacts."""
+    judge = BulletScene(world, robot, joints, allowed, allowed_pairs=pairs, hand=hand)
+    touching = _start_contacts(judge, start, hand)
     if touching:
-        judge = BulletScene(world, robot, joints, allowed, allowed_pairs={*pairs, *touching})
+        pairs = {*pairs, *touching}
+        judge = BulletScene(world, robot, joints, allowed, allowed_pairs=pairs, hand=hand)
     return judge
+
+
+def _start_contacts(
+    checker: BulletScene | CoalClearance, start: list[float], hand: HandContact | None
+) -> list[LinkPair]:
+    """The contacts at ``start`` that the motion may keep: the colliding pairs, and the
+    hand's on what it acts on at any depth (a hand on a handle the drawer's step pulled
+    deeper must follow it); the bound holds for contacts the motion makes."""
+    if hand is None:
+        return checker.colliding(start)
+    judge = checker.judge if isinstance(checker, CoalClearance) else checker
+    joints, pairs = judge.joints, judge.allowed_pairs
+    touching = replace(hand, depth=0.0)  # any depth counts: every contact of the hand
+    every = BulletScene(
+        judge.world, judge.robot, joints, judge.allowed_links, allowed_pairs=pairs, hand=touching
+    )
+    return every.colliding(start)
 
 
 def plan_arm_motion(
@@ -124,12 +152,14 @@ def plan_arm_motion(
     what: str = "the arm",
     kind: str = "arm",
     allowed_pairs: Collection[LinkPair] = (),
+    hand: HandContact | None = None,
 ) -> ArmMotion:
     """A timed, collision-free motion of the joints in ``goal`` from where they are now.
 
     Any joints of the robot: an arm's, the torso, the head's, a gripper's (``kind``
     names the motion in its trajectory). ``allowed_pairs`` ``(robot link, other)`` may
-    touch besides the contacts the motion starts with (fingers squeezing what they grip).
+    touch besides the contacts the motion starts with (fingers squeezing what they grip);
+    ``hand`` may touch what it acts on within its bound (the trajectory stores it).
 
     A continuous joint turns the short way to its goal (:mod:`joint_goal`).
 
@@ -148,12 +178,20 @@ def plan_arm_motion(
         path = JointPath(joints, (tuple(start), tuple(end)), "straight", 0)
     else:
         path = _checked_path(
-            world, robot, joints, allowed_links, start, end, settings, what, allowed_pairs
-        )
+            world, robot, joints, allowed_links, start, end, settings, what, allowed_pairs,
+            hand,
+        )  # fmt: skip
     trajectory = time_parameterize(
         robot, joints, path.waypoints, limits, kind=kind, period=settings.period
     )
-    return ArmMotion(path, trajectory)
+    return ArmMotion(path, _with_hand(trajectory, hand))
+
+
+def _with_hand(trajectory: JointTrajectory, hand: HandContact | None) -> JointTrajectory:
+    """``trajectory`` storing the hand's bounded contact, for whoever audits it."""
+    if hand is None:
+        return trajectory
+    return replace(trajectory, allowed_contacts=(*trajectory.allowed_contacts, *hand.allowances()))
 
 
 def _unmoved(start: list[float], end: list[float]) -> bool:
@@ -170,16 +208,17 @@ def _straight_checker(
     start: list[float],
     pairs: Collection[LinkPair],
     travel: float,
+    hand: HandContact | None = None,
 ) -> BulletScene | CoalClearance | None:
     """What checks the straight segment from ``start`` (where the robot stands) on which
     no point moves farther than ``travel`` [m]: None when nothing it may not touch is that
     near (it is free); the world itself for a short one; else coal's clearances."""
     if travel > LIGHT_TRAVEL:
-        return _scene(world, robot, joints, allowed, start, pairs)
-    judge = BulletScene(world, robot, joints, allowed, allowed_pairs=pairs)
+        return _scene(world, robot, joints, allowed, start, pairs, hand)
+    judge = BulletScene(world, robot, joints, allowed, allowed_pairs=pairs, hand=hand)
     if judge.clearance_now(travel + FAST_MARGIN) > travel:
         return None
-    return _judge(world, robot, joints, allowed, start, pairs)
+    return _judge(world, robot, joints, allowed, start, pairs, hand)
 
 
 def _checked_path(
@@ -192,6 +231,7 @@ def _checked_path(
     settings: MotionSettings,
     what: str,
     pairs: Collection[LinkPair] = (),
+    hand: HandContact | None = None,
 ) -> JointPath:
     bound = TravelBound.of(world, robot, joints)
     desc = world.robot(robot).description
@@ -200,7 +240,7 @@ def _checked_path(
     own = SelfPathCheck.of(world, robot, joints)
     _goal_apart(own, end, what)
     travel = bound.travel(np.array(start), np.array(end))
-    checker = _straight_checker(world, robot, joints, allowed, start, pairs, travel)
+    checker = _straight_checker(world, robot, joints, allowed, start, pairs, travel, hand)
     try:
         straight = (
             JointPath(joints, (tuple(start), tuple(end)), "straight", 1)
@@ -219,7 +259,7 @@ def _checked_path(
         if not settings.plan:
             raise
     if checker is None:  # free of the world, but into itself: plan round on coal
-        checker = _scene(world, robot, joints, allowed, start, pairs)
+        checker = _scene(world, robot, joints, allowed, start, pairs, hand)
     # a way round is planned on coal's clearances
     scene = checker if isinstance(checker, CoalClearance) else CoalClearance(checker)
     height = ToolHeight.of(world, robot, joints)
@@ -247,12 +287,16 @@ def _planned(
     it ran the robot into itself (it costs as much as the world's walk); a snapshot with a
     margin is taken only when the world refuses a planned path."""
     links = set(world.link_names(robot))
-    start_links = {link for link, _ in scene.judge.allowed_pairs if link in links}
+    hand = scene.judge.hand  # the snapshot lets it touch what it acts on, at any depth
+    start_links = {  # links touching at the start may touch anything in the snapshot
+        link for link, other in scene.judge.allowed_pairs
+        if link in links and not (hand is not None and hand.covers(link, other))
+    }  # fmt: skip
     failures: list[ManipulationPathBlocked] = []
     for margin in SNAPSHOT_MARGINS:  # the snapshot's hulls and Bullet's can differ by mm
         snapshot = CollisionScene.of(  # the goal passed the finer check on the meshes
             world, robot, scene.joints, allowed_links=scene.judge.allowed_links | start_links,
-            margin=margin, allow_at=[end],
+            margin=margin, allow_at=[end], hand=hand,
         )  # fmt: skip
         for apart in (False, True):
             judge = _WorldJudge(scene, bound, own if apart else None)
@@ -357,9 +401,11 @@ def plan_tool_line(
     *,
     allowed_links: Collection[str] = (),
     settings: MotionSettings = MotionSettings(),
+    hand: HandContact | None = None,
 ) -> ArmMotion:
     """The straight line of ``arm``'s tool to ``target_in_base`` (the robot's root link),
-    as far as it can be followed: ``fraction`` says how far (1: all of it)."""
+    as far as it can be followed: ``fraction`` says how far (1: all of it). ``hand`` may
+    touch what it acts on within its bound (the trajectory stores it)."""
     desc = world.robot(robot).description
     spec = desc.arms[arm]
     joints = tuple(spec.joints)
@@ -367,7 +413,7 @@ def plan_tool_line(
     start = [current[j] for j in joints]
     base = world.pose(robot)
     tool = base.inverse() * world.link_pose(robot, spec.tool_frame)
-    scene = _scene(world, robot, joints, allowed_links, start)
+    scene = _scene(world, robot, joints, allowed_links, start, hand=hand)
     bound = TravelBound.of(world, robot, joints)
     line = cartesian_path(
         desc, arm, scene, current, tool, target_in_base, bound, random_seed=settings.seed
@@ -385,4 +431,4 @@ def plan_tool_line(
         robot, joints, line.path.waypoints, limits, kind="cartesian", period=settings.period,
         corner_radii=radii,
     )  # fmt: skip
-    return ArmMotion(line.path, trajectory, fraction)
+    return ArmMotion(line.path, _with_hand(trajectory, hand), fraction)

@@ -4,7 +4,9 @@ The robot is put at each configuration, asked for contacts through Bullet's broa
 and put back. Held objects are checked against the world too (they ride with the hand);
 the robot touching what it holds, the contacts its description allows
 (``allowed_contacts``: anything on the floor), contacts the motion starts with
-(``allowed_pairs``) and the ``allowed_links`` (CRAM's ``allow_hand``) do not count.
+(``allowed_pairs``) and the ``allowed_links`` do not count; the hand of CRAM's
+``allow_hand`` (a :class:`~robocram.motion.hand_contact.HandContact`) may touch only what it
+acts on, no deeper than its bound.
 Slower than a coal snapshot, but it sees exactly what projection sees: it checks straight
 segments and tool lines, and tests use it as the judge of planned paths.
 """
@@ -20,6 +22,7 @@ from numpy.typing import NDArray
 from robocram.motion.allowed_contacts import AllowedContacts, Other
 from robocram.motion.configuration_checker import Configuration, LinkPair
 from robocram.motion.errors import MotionError
+from robocram.motion.hand_contact import HandContact, contact_depth
 from robocram.motion.joint_levers import LeverData, cross, links_below
 from robocram.motion.joint_trajectory import FloatArray
 from robocram.world import ObstacleBoxes, World, WorldObject
@@ -39,8 +42,10 @@ class BulletScene:
         allowed_links: Collection[str] = (),
         distance: float = 0.0,
         allowed_pairs: Collection[LinkPair] = (),
+        hand: HandContact | None = None,
     ) -> None:
         self.world = world
+        self.hand = hand  # the hand's bounded contact (allow_hand), None: no such contact
         self.robot = robot
         self._joints = tuple(joints)
         known = world.joint_states(robot)
@@ -212,6 +217,10 @@ class BulletScene:
         ):
             if self._counts(link, obj, other_link):
                 gaps[link] = min(gaps.get(link, reach), gap - self.distance)
+            elif self._bounded(link, obj, other_link):  # clear until deeper than the bound
+                assert self.hand is not None
+                gap += self.hand.depth
+                gaps[link] = min(gaps.get(link, reach), gap - self.distance)
         for item in held:
             skip = [world.robot(self.robot), *(h for h in held if h is not item), *anywhere]
             for _, obj, other_link, gap in world.link_distances(item, skip, reach, obstacles=boxes):
@@ -220,10 +229,28 @@ class BulletScene:
         return gaps
 
     def _counts(self, link: str, obj: WorldObject, other_link: str) -> bool:
-        """Whether robot ``link`` touching ``obj`` is a collision (rules, start contacts)."""
+        """Whether robot ``link`` touching ``obj`` is a collision (rules, start contacts,
+        the hand on what it acts on: :meth:`_bounded`)."""
         if self.rules.allows(link, Other(obj.name, obj.type)):
             return False
-        return (link, _named(self.world, obj, other_link)) not in self.allowed_pairs
+        named = _named(self.world, obj, other_link)
+        if (link, named) in self.allowed_pairs:
+            return False
+        return self.hand is None or not self.hand.covers(link, named)
+
+    def _bounded(self, link: str, obj: WorldObject, other_link: str) -> bool:
+        """Whether robot ``link`` touching ``obj`` is the hand's contact, a collision only
+        deeper than its bound (not a contact allowed otherwise)."""
+        if self.hand is None or self.rules.allows(link, Other(obj.name, obj.type)):
+            return False
+        named = _named(self.world, obj, other_link)
+        return (link, named) not in self.allowed_pairs and self.hand.covers(link, named)
+
+    def _too_deep(self, link: str, obj: WorldObject, other_link: str) -> bool:
+        """Whether the hand's ``link`` is deeper in ``obj`` than its contact allows."""
+        assert self.hand is not None
+        named = _named(self.world, obj, other_link)
+        return contact_depth(self.world, self.robot, link, named) > self.hand.depth
 
     def anywhere(self) -> list[WorldObject]:
         """Objects every link may touch by the description's rules (the floor)."""
@@ -243,7 +270,9 @@ class BulletScene:
             self.robot, [*held, *anywhere], self.distance, links=self.moving_links,
             obstacles=boxes,
         ):  # fmt: skip
-            if self._counts(link, obj, other_link):
+            if self._counts(link, obj, other_link) or (
+                self._bounded(link, obj, other_link) and self._too_deep(link, obj, other_link)
+            ):
                 hits[(link, _named(world, obj, other_link))] = None
                 if first_only:
                     return list(hits)

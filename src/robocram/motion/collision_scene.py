@@ -19,6 +19,7 @@ import numpy as np
 import pinocchio as pin
 from numpy.typing import NDArray
 
+from robocram.motion.hand_contact import HandContact
 from robocram.motion.joint_slots import JointSlots
 from robocram.motion.scene_geometry import SceneGeometry, build_geometry
 from robocram.motion.scene_snapshot import SceneSnapshot
@@ -61,14 +62,16 @@ class CollisionScene:
         allowed_links: Collection[str] = (),
         margin: float = 0.0,
         allow_at: Sequence[Sequence[float] | NDArray[np.float64]] = (),
+        hand: HandContact | None = None,
     ) -> CollisionScene:
         """Take ``world`` around ``robot`` now, to check values of ``joints``.
 
         ``allowed_links`` may touch anything (CRAM's ``allow_hand``); ``margin`` [m]
         grows every shape, for a safety distance; the robot's own contacts at the
-        configurations ``allow_at`` (a goal a finer check accepted) are left out.
+        configurations ``allow_at`` (a goal a finer check accepted) are left out; ``hand``'s
+        links are not checked against what it may touch (the world bounds how deep).
         """
-        snapshot = SceneSnapshot.take(world, robot, joints, allowed_links, margin)
+        snapshot = SceneSnapshot.take(world, robot, joints, allowed_links, margin, hand)
         return cls(snapshot, allow_at=allow_at)
 
     def _new_data(self) -> None:

@@ -15,7 +15,7 @@ class ContactAllowance:
     """``robot_side`` may touch ``other`` during the motion, penetrating at most ``depth``."""
 
     robot_side: str  # a robot link, or the name of an object the robot holds
-    other: str  # an object name, or "object/link" for one link of it
+    other: str  # an object name, "object/link" for one link of it, or "*": any object
     depth: float  # [m] the deepest penetration allowed
 
     def __post_init__(self) -> None:
@@ -27,4 +27,4 @@ class ContactAllowance:
 
     def covers(self, robot_side: str, other: str, other_link: str) -> bool:
         """Whether it allows ``robot_side`` against ``other`` (or its link ``other_link``)."""
-        return self.robot_side == robot_side and self.other in (other, f"{other}/{other_link}")
+        return self.robot_side == robot_side and self.other in ("*", other, f"{other}/{other_link}")

@@ -172,6 +172,7 @@ def _add_pairs(
     model = snap.description.model
     adjacent = adjacent_pairs(model, with_geometry) | set(snap.skipped_self)
     labels: list[tuple[str, str]] = []
+    hand = snap.hand  # its links may touch what it acts on: not checked against it here
     near = _sphere_overlaps(spheres)
     decided: dict[tuple[object, ...], bool] = {}  # geometries of one link share the answer
     for i, a in enumerate(owners):
@@ -180,10 +181,16 @@ def _add_pairs(
         for j, b in enumerate(owners):
             if i == j:
                 continue
-            key = (a.kind, a.link, a.other, b.kind, b.link, b.other)
+            touch = (
+                hand is not None and a.kind == "robot" and a.link in hand.links
+                and b.kind == "static"
+            )  # fmt: skip
+            key = (a.kind, a.link, a.other, b.kind, b.link, b.other, touch and b.label)
             checked = decided.get(key)
             if checked is None:
-                checked = decided[key] = _checked(a, b, group, adjacent, rules)
+                checked = decided[key] = _checked(a, b, group, adjacent, rules) and not (
+                    touch and hand is not None and hand.covers(a.link, b.label)
+                )
             if not checked:
                 continue
             if j < i and b.kind != "static" and group[b.link]:

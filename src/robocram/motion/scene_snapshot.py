@@ -12,6 +12,7 @@ from collections.abc import Collection, Sequence
 from dataclasses import dataclass
 
 from robocram.motion.errors import MotionError
+from robocram.motion.hand_contact import HandContact
 from robocram.motion.self_collision_matrix import SelfCollisionMatrix
 from robocram.robots import LoadedDescription
 from robocram.tf import Pose
@@ -43,6 +44,7 @@ class SceneSnapshot:
     allowed_links: frozenset[str]
     margin: float  # [m]
     skipped_self: frozenset[frozenset[str]] = frozenset()  # own pairs the matrix skips
+    hand: HandContact | None = None  # the hand may touch what it acts on (bounded on the world)
 
     @classmethod
     def take(
@@ -52,8 +54,11 @@ class SceneSnapshot:
         joints: Sequence[str],
         allowed_links: Collection[str] = (),
         margin: float = 0.0,
+        hand: HandContact | None = None,
     ) -> SceneSnapshot:
-        """Read the world once: the robot's state, what it holds, every other object."""
+        """Read the world once: the robot's state, what it holds, every other object
+        (``hand``'s links are not checked against what it may touch; its bound is the
+        world's to judge)."""
         if not margin >= 0.0:
             raise MotionError(f"collision margin must be >= 0 [m], got {margin!r}")
         handle = world.robot(robot)
@@ -71,7 +76,7 @@ class SceneSnapshot:
             tuple(_held_shapes(world, handle.name, desc)),
             tuple(_static_shapes(world, handle.name, held_names)),
             frozenset(allowed_links), float(margin),
-            frozenset(SelfCollisionMatrix.of(world, handle.name).skipped),
+            frozenset(SelfCollisionMatrix.of(world, handle.name).skipped), hand,
         )  # fmt: skip
 
 

@@ -54,7 +54,15 @@ def _carry_above(held: Held, spot: Pose) -> None:
     tool = map_pose(held.tool_frame)
     x, y, z = tool.position
     lifted = PoseStamped.from_pose("map", Pose((x, y, z + rise), tool.orientation))
-    perform(a.motion(type="moving-tcp", arm=held.arm, target=a.location(pose=lifted), **GRASPING))
+    perform(
+        a.motion(
+            type="moving-tcp",
+            arm=held.arm,
+            target=a.location(pose=lifted),
+            **GRASPING,
+            touching=held.object_name,
+        )  # fmt: skip
+    )
 
 
 def _try_spot(

@@ -26,7 +26,8 @@ from robocram.plans.grasp_failures import ObjectUngraspable, PickUpFailed, PickU
 from robocram.plans.robot_facts import current_robot, grasping_arms, tool_frame
 from robocram.tf import Pose, PoseStamped, TfError, transform_pose
 
-GRASPING = {"collision_mode": "allow_hand"}  # the fingers may touch what they close on
+GRASPING = {"collision_mode": "allow_hand"}  # the fingers may touch what they close on:
+# a motion names it too (``touching``), and the hand may touch nothing else, 5 mm at most
 TRIES = (ManipulationLowLevelFailure, GripperLowLevelFailure)  # a try ends, the next starts
 
 
@@ -122,12 +123,12 @@ def _try_grasp(
 ) -> Held:
     perform(a.motion(type="opening", gripper=arm))
     _move(arm, choice.pre_grasp)
-    _move(arm, choice.grasp_pose, **GRASPING)
+    _move(arm, choice.grasp_pose, **GRASPING, touching=name)
     gripped = perform(a.motion(type="gripping", gripper=arm))
     if isinstance(gripped, str) and gripped != name:  # projection names what it holds
         perform(a.motion(type="opening", gripper=arm))
         raise PickUpFailed(f"the {arm} hand gripped {gripped!r}, not {name!r}", object_name=name)
-    _move(arm, choice.lift, **GRASPING)
+    _move(arm, choice.lift, **GRASPING, touching=name)
     frame = tool_frame(robot, arm)
     if object_in_map is None:
         object_in_map = transform_pose(PoseStamped(name), "map").pose

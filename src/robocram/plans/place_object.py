@@ -97,7 +97,8 @@ def _retreat(robot: str, held: Held) -> None:
         back = (d[0] / norm, d[1] / norm, d[2] / norm)
     for distance in RETREATS:
         try:
-            _move(held.arm, _shifted(tool, *(distance * c for c in back)), **GRASPING)
+            back_off = _shifted(tool, *(distance * c for c in back))
+            _move(held.arm, back_off, **GRASPING, touching=held.object_name)
             return
         except ManipulationLowLevelFailure:
             continue
@@ -132,11 +133,11 @@ def _put_down(robot: str, held: Held, put: Pose) -> None:
     tool = put * held.object_in_tool.inverse()
     for height in CARRY_HEIGHTS:
         try:
-            _move(held.arm, _shifted(tool, 0.0, 0.0, height), **GRASPING)
+            _move(held.arm, _shifted(tool, 0.0, 0.0, height), **GRASPING, touching=held.object_name)
             break
         except ManipulationLowLevelFailure:
             continue  # at the edge of its reach the arm comes in lower
-    _move(held.arm, tool, **GRASPING)
+    _move(held.arm, tool, **GRASPING, touching=held.object_name)
     perform(a.motion(type="opening", gripper=held.arm))
     try:
         _retreat(robot, held)

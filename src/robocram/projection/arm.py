@@ -25,6 +25,7 @@ from robocram.execution.failures import (
 )
 from robocram.kinematics import BaseMotion, IKResult, PlanarBase, base_in_ik, solve_ik
 from robocram.motion import ArmMotion, plan_arm_motion, plan_tool_line
+from robocram.motion.hand_contact import HandContact
 from robocram.motion.joint_goal import finite_goal
 from robocram.motion.reach_failure import unreachable
 from robocram.motion.tool_goal import (
@@ -32,7 +33,12 @@ from robocram.motion.tool_goal import (
     ensure_reached,
     joint_values,
 )
-from robocram.projection.collision_mode import allowed_links, collision_check, putting_back_once
+from robocram.projection.collision_mode import (
+    allowed_links,
+    collision_check,
+    hand_contact,
+    putting_back_once,
+)
 from robocram.projection.errors import unknown_name
 from robocram.projection.navigation import drive, moved_base, unchecked_base_motion
 from robocram.projection.projected_robot import ProjectedRobot
@@ -68,8 +74,9 @@ def _solve(
     move_base: bool | None = None,
     max_restarts: int = IK_RESTARTS,
     base_travel: PlanarBase = BASE_TRAVEL,
+    touching: str | None = None,
 ) -> IKResult:
-    check = collision_check(robot, arm, mode)
+    check = collision_check(robot, arm, mode, touching)
     seed = robot.world.joint_states(robot.name)
     result = IKResult(False)
     with robot.ik_lock, putting_back_once(check):  # the robot stands as before after
@@ -100,10 +107,14 @@ def move_tcp(
     move_base: bool | None = None,
     max_restarts: int = IK_RESTARTS,
     base_travel: PlanarBase = BASE_TRAVEL,
+    touching: str | None = None,
 ) -> Pose:
     """Put ``arm``'s tool frame at ``target`` (map unless stamped); return it in ``map``.
 
     ``collision_mode`` is CRAM's: ``avoid_all``, ``allow_hand`` (grasping) or ``allow_all``.
+    Under ``allow_hand`` the hand may touch only ``touching`` (an object, or
+    ``object/link`` for a handle; None: any object), at most
+    :data:`~robocram.motion.hand_contact.HAND_CONTACT_DEPTH` deep.
     ``random_seed`` seeds IK's restarts: the same world, target and seed give the same joints.
     ``move_base``: whether IK may move the base (within :data:`BASE_TRAVEL`) when the arm
     alone cannot reach; None lets the description decide (``kinematics.base_in_ik``). A
@@ -122,29 +133,36 @@ def move_tcp(
     target_in_base = robot.base_pose().inverse() * target_in_map
     result = _solve(
         robot, arm, target_in_base, collision_mode, random_seed, move_base, max_restarts,
-        base_travel,
+        base_travel, touching,
     )  # fmt: skip
     if not result.success:
         desc = robot.description
         raise unreachable(desc, arm, target, target_in_map, collision_mode, result)
     motion = result.base_motion
+    hand = hand_contact(robot, arm, collision_mode, touching)
     if motion is not None and motion != BaseMotion():
-        if _arm_then_base(robot, arm, result, moved_base(robot, motion), collision_mode):
+        if _arm_then_base(robot, arm, result, moved_base(robot, motion), collision_mode, hand):
             reached = robot.world.link_pose(robot.name, spec.tool_frame)
             return ensure_reached(robot.name, arm, reached, target, target_in_map)
         target_in_base = robot.base_pose().inverse() * target_in_map
-    arm_motion = _arm_motion(robot, arm, result, target_in_base, collision_mode)
+    arm_motion = _arm_motion(robot, arm, result, target_in_base, collision_mode, hand)
     follow(robot, arm_motion.trajectory)
     reached = robot.world.link_pose(robot.name, spec.tool_frame)
     return ensure_reached(robot.name, arm, reached, target, target_in_map)
 
 
 def _arm_then_base(
-    robot: ProjectedRobot, arm: str, result: IKResult, base_goal: Pose, mode: str
+    robot: ProjectedRobot,
+    arm: str,
+    result: IKResult,
+    base_goal: Pose,
+    mode: str,
+    hand: HandContact | None,
 ) -> bool:
     """Move the base for a solution that needs it: first the base with the arm as it is
     (False: the arm moves after it); if the arm as it is does not fit there (over a table),
-    the arm first, then the base (True: both done). Each motion is checked on its own.
+    the arm first, then the base (True: both done). Each motion is checked on its own
+    (the drive lets the hand's links touch, the arm's motion bounds them by ``hand``).
 
     Raises:
         NavigationLowLevelFailure: neither order works (the base's failure).
@@ -152,9 +170,9 @@ def _arm_then_base(
     if mode.replace("-", "_") == "allow_all":  # nothing checked, the base neither
         follow(robot, unchecked_base_motion(robot, base_goal))
         return False
-    hand = allowed_links(robot, arm, mode)
+    free = allowed_links(robot, arm, mode)
     try:
-        drive(robot, base_goal, hand)
+        drive(robot, base_goal, free)
         return False
     except NavigationLowLevelFailure as failure:
         first = failure
@@ -162,40 +180,45 @@ def _arm_then_base(
         settings = replace(robot.motion, check=mode.replace("-", "_") != "allow_all")
         motion = plan_arm_motion(
             robot.world, robot.name, dict(result.joint_positions),
-            allowed_links=hand, settings=settings,
+            settings=settings, hand=hand,
         )  # fmt: skip
     except ManipulationPathBlocked:
         raise first from None
     follow(robot, motion.trajectory)
     try:
-        drive(robot, base_goal, hand)
+        drive(robot, base_goal, free)
     except NavigationLowLevelFailure:
         raise first from None
     return True
 
 
 def _arm_motion(
-    robot: ProjectedRobot, arm: str, result: IKResult, target_in_base: Pose, mode: str
+    robot: ProjectedRobot,
+    arm: str,
+    result: IKResult,
+    target_in_base: Pose,
+    mode: str,
+    hand: HandContact | None,
 ) -> ArmMotion:
     """The checked, timed motion to IK's answer: a straight tool line for ``allow_hand``
     motions (approach, lift, put, retreat) when the whole line can be followed, else a
-    joint-space path (straight, or planned round what is in the way)."""
+    joint-space path (straight, or planned round what is in the way). Either way the
+    ``hand`` may touch only what it acts on, within its bound."""
     settings = robot.motion
     mode = mode.replace("-", "_")
     if mode == "allow_all":
         settings = replace(settings, check=False)
-    allowed = allowed_links(robot, arm, mode)
     goal = dict(result.joint_positions)
     what = f"{robot.name}'s {arm} arm"
     if mode == "allow_hand" and robot.description.torso_joint not in goal:
         line = plan_tool_line(
-            robot.world, robot.name, arm, target_in_base, allowed_links=allowed, settings=settings
+            robot.world, robot.name, arm, target_in_base, settings=settings, hand=hand
         )
         if line.fraction >= 1.0:
             return line
     try:
         return plan_arm_motion(
-            robot.world, robot.name, goal, allowed_links=allowed, settings=settings, what=what
+            robot.world, robot.name, goal, settings=settings, what=what, hand=hand
         )
     except ManipulationPathBlocked as failure:
         failure.arm = arm

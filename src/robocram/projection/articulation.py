@@ -108,7 +108,7 @@ def _follow(
         try:
             move_tcp(
                 robot, arm, world.link_pose(part, handle) * pull * grasp, HOLD_MODE, move_base=True,
-                base_travel=STEP_TRAVEL,
+                base_travel=STEP_TRAVEL, touching=f"{part}/{handle}",
             )  # fmt: skip
         except (ManipulationPoseUnreachable, ManipulationGoalNotReached, NavigationLowLevelFailure):
             world.set_joint_states(part, {joint: held})
@@ -147,7 +147,10 @@ def _take_handle(
         if not opened:
             open_gripper(robot, arm)
         checkpoint()
-        move_tcp(robot, arm, at_handle, HOLD_MODE, move_base=True, base_travel=STEP_TRAVEL)
+        move_tcp(
+            robot, arm, at_handle, HOLD_MODE, move_base=True, base_travel=STEP_TRAVEL,
+            touching=f"{part}/{handle}",
+        )  # fmt: skip
     except (
         ManipulationPoseUnreachable,
         ManipulationGoalNotReached,
@@ -237,7 +240,10 @@ def _let_go(
     for distance in BACK_OFF:
         back = world.link_pose(part, handle) * pull * Pose((distance, 0.0, 0.0)) * grasp
         try:
-            move_tcp(robot, arm, back, HOLD_MODE, move_base=True, max_restarts=LET_GO_RESTARTS)
+            move_tcp(
+                robot, arm, back, HOLD_MODE, move_base=True, max_restarts=LET_GO_RESTARTS,
+                touching=f"{part}/{handle}",
+            )  # fmt: skip
         except (ManipulationPoseUnreachable, ManipulationGoalNotReached):
             continue
         if not opened:

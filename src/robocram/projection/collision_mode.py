@@ -1,10 +1,12 @@
 """CRAM's collision modes for arm motions, as IK collision checks on the projected world.
 
 ``avoid_all``: no link of the robot may touch anything (the floor and objects the robot
-holds excepted). ``allow_hand``: the moving arm's hand and gripper links may touch (for
-grasping). ``allow_all``: no check. A candidate configuration is tried on the world and the
-joints are put back before the check returns (inside :func:`putting_back_once`, when the
-query ends: the next candidate moves on from the last), so IK never leaves the robot moved.
+holds excepted). ``allow_hand``: the moving arm's hand and gripper links may touch what
+the motion acts on (grasping; :class:`~robocram.motion.hand_contact.HandContact`), no
+deeper than its bound. ``allow_all``: no check. A candidate configuration is tried on the
+world and the joints are put back before the check returns (inside
+:func:`putting_back_once`, when the query ends: the next candidate moves on from the
+last), so IK never leaves the robot moved.
 
 One check serves one IK query, while only the robot moves: the links a candidate's joints
 do not move touch at every candidate what they touch where the robot stands, so what they
@@ -19,6 +21,7 @@ from dataclasses import dataclass, field
 
 from robocram.kinematics import split_base_motion
 from robocram.motion.collision_modes import COLLISION_MODES, hand_links
+from robocram.motion.hand_contact import HandContact
 from robocram.motion.self_collision_matrix import SelfCollisionMatrix
 from robocram.projection.errors import ProjectionError
 from robocram.projection.ik_start import IKStart
@@ -30,9 +33,10 @@ CONTACT_DISTANCE = 0.0  # [m] closer than this is a collision (touching counts)
 
 
 def collision_check(
-    robot: ProjectedRobot, arm: str, mode: str
+    robot: ProjectedRobot, arm: str, mode: str, touching: str | None = None
 ) -> Callable[[Mapping[str, float]], list[tuple[str, str]]] | None:
-    """An IK ``collision_check`` for ``mode`` (None for ``allow_all``).
+    """An IK ``collision_check`` for ``mode`` (None for ``allow_all``); under
+    ``allow_hand`` the hand may touch ``touching`` (None: any object) within its bound.
 
     It returns the colliding ``(robot link, object)`` pairs, so a failure can name them.
     """
@@ -43,7 +47,7 @@ def collision_check(
         )
     if mode == "allow_all":
         return None
-    return _Check(robot, arm, allowed_links(robot, arm, mode))
+    return _Check(robot, arm, set(), hand_contact(robot, arm, mode, touching))
 
 
 @dataclass
@@ -55,6 +59,7 @@ class _Check:
     robot: ProjectedRobot
     arm: str
     allowed: set[str]
+    hand: HandContact | None = None  # the hand's bounded contact (allow_hand)
     _start: IKStart | None = field(default=None, repr=False)
     _once: bool = field(default=False, repr=False)  # put back after the query only
 
@@ -66,7 +71,7 @@ class _Check:
             start = self._start = IKStart.read(self.robot, CONTACT_DISTANCE, pairs)
         defer = self._once and motion is None  # a moved base goes back at every candidate
         with base_moved_by(self.robot, motion):
-            return start.colliding(joints, self.allowed, motion is not None, defer)
+            return start.colliding(joints, self.allowed, motion is not None, defer, self.hand)
 
     @contextlib.contextmanager
     def putting_back_once(self) -> Iterator[None]:
@@ -86,6 +91,16 @@ def putting_back_once(check: object) -> contextlib.AbstractContextManager[None]:
     if isinstance(check, _Check):
         return check.putting_back_once()
     return contextlib.nullcontext()
+
+
+def hand_contact(
+    robot: ProjectedRobot, arm: str, mode: str, touching: str | None
+) -> HandContact | None:
+    """The contact ``allow_hand`` lets ``arm``'s hand make: ``touching`` (None: any
+    object), within the bound; None in the other modes."""
+    if mode.replace("-", "_") != "allow_hand":
+        return None
+    return HandContact.of(hand_links(robot.arm(arm)), touching)
 
 
 def allowed_links(robot: ProjectedRobot, arm: str, mode: str) -> set[str]:

@@ -14,9 +14,10 @@ Closing stops where the fingers squeeze something, as a real gripper does: where
 gripper's links first touch one object from opposing sides (two contact normals more than
 :data:`OPPOSED` apart), found by probing the closing in steps and bisecting the step where
 that first happens; the fingers then close to there, touching what they squeeze (those
-contacts are allowed). Gripping squeezes only movable objects and attaches the one
-squeezed to the arm's end-effector link; with none squeezed, the fingers close as closing
-does and ``GripperClosedCompletely`` is raised, as in CRAM. Closing without gripping
+contacts are allowed, and stored with the trajectory bounded to 5 mm). Gripping
+squeezes only movable objects and attaches the one squeezed to the arm's end-effector
+link; with none squeezed, the fingers close as closing does and
+``GripperClosedCompletely`` is raised, as in CRAM. Closing without gripping
 closes fully, or, when something is in the way, stops where the fingers squeeze it or
 first touch it (a handle's face), and attaches nothing.
 """
@@ -32,6 +33,7 @@ from robocram.execution.failures import (
     ManipulationPathBlocked,
 )
 from robocram.motion.configuration_checker import LinkPair
+from robocram.motion.hand_contact import HandContact
 from robocram.projection.errors import ProjectionError
 from robocram.projection.joint_motion import move_along_checked
 from robocram.projection.projected_robot import ProjectedRobot
@@ -73,7 +75,9 @@ def _move_to(
     robot: ProjectedRobot, arm: str, fraction: float, squeezed: Collection[LinkPair] = ()
 ) -> dict[str, float]:
     """Move the gripper ``fraction`` of the way from closed (0) to open (1) along a checked
-    trajectory (``squeezed`` pairs may touch); return its joints' values.
+    trajectory (``squeezed`` pairs may touch where the closing stopped; the trajectory
+    stores them as the hand's contact, :data:`~robocram.motion.hand_contact.HAND_CONTACT_DEPTH`
+    deep, for the audit to hold the squeeze to); return its joints' values.
 
     Raises:
         GripperPathBlocked: the fingers' way runs into something; they did not move.
@@ -85,7 +89,14 @@ def _move_to(
     }
     what = f"{robot.name}'s {arm} gripper"
     try:
-        return move_along_checked(robot, goal, kind="gripper", what=what, allowed_pairs=squeezed)
+        hand = (
+            HandContact(frozenset(link for link, _ in squeezed), frozenset(o for _, o in squeezed))
+            if squeezed
+            else None
+        )
+        return move_along_checked(
+            robot, goal, kind="gripper", what=what, allowed_pairs=squeezed, hand=hand
+        )
     except ManipulationPathBlocked as blocked:
         master = gripper_of(robot, arm).names[0]
         raise GripperPathBlocked(

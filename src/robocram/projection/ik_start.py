@@ -13,6 +13,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
+from robocram.motion.hand_contact import HandContact, contact_depth
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robots import RobotModel
 from robocram.world import WorldObject
@@ -85,10 +86,12 @@ class IKStart:
         allowed: set[str],
         base_moves: bool,
         defer: bool = False,
+        hand: HandContact | None = None,
     ) -> list[LinkPair]:
         """The ``(robot link, object)`` and self pairs in contact at ``joints``, links in
-        ``allowed`` excepted; ``base_moves``: every link moved. The robot is put back after,
-        or with ``defer`` left there until the next candidate or :meth:`put_back`."""
+        ``allowed`` and the ``hand`` on what it acts on within its bound excepted;
+        ``base_moves``: every link moved. The robot is put back after, or with ``defer``
+        left there until the next candidate or :meth:`put_back`."""
         world = self.robot.world
         body = world.object(self.robot.name)
         moved, pairs = self._moved(body, tuple(joints), base_moves or not self.alone)
@@ -106,6 +109,10 @@ class IKStart:
             self._dirty.update(before)
         try:
             hits, touching = self._contacts(body, moved, pairs, allowed, base_moves)
+            if hand is not None:  # measured while the robot stands at the candidate
+                for link, named in [p for p in hits if hand.covers(*p)]:
+                    if contact_depth(world, body, link, named) <= hand.depth:
+                        del hits[(link, named)]
         finally:
             if not defer:
                 world.set_joint_states(body, before, carry)

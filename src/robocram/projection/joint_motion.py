@@ -16,6 +16,7 @@ from dataclasses import replace
 
 from robocram.motion import plan_arm_motion
 from robocram.motion.configuration_checker import LinkPair
+from robocram.motion.hand_contact import HandContact
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.projection.trajectory_follower import follow
 
@@ -28,10 +29,12 @@ def move_along_checked(
     what: str,
     allowed_pairs: Collection[LinkPair] = (),
     plan: bool = False,
+    hand: HandContact | None = None,
 ) -> dict[str, float]:
     """Move the joints of ``goal`` [rad | m] (within their limits) along a checked, timed
     trajectory; return their values reached. ``plan``: search a way round what blocks
-    the straight one (a pan-tilt head can tilt up to pan past a shelf).
+    the straight one (a pan-tilt head can tilt up to pan past a shelf); ``hand``: what
+    the fingers may squeeze, within its bound (the trajectory stores it).
 
     Raises:
         ManipulationPathBlocked: the way there collides (nothing moved); it names the
@@ -40,7 +43,7 @@ def move_along_checked(
     settings = robot.motion if plan else replace(robot.motion, plan=False)
     motion = plan_arm_motion(
         robot.world, robot.name, goal, settings=settings, what=what, kind=kind,
-        allowed_pairs=allowed_pairs,
+        allowed_pairs=allowed_pairs, hand=hand,
     )  # fmt: skip
     follow(robot, motion.trajectory)
     now = robot.world.joint_states(robot.name)

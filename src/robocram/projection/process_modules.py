@@ -11,7 +11,7 @@ grounds for its resource, one method per command, dispatched by
   designator (the simulated camera reports all it knows of an object at once, so
   inspecting answers what detecting does)
 - grippers: ``move_gripper_joint(Arm, open | close | grip | Position, Effort)``
-- arms: ``move_tcp(Arm, Pose, Mode)``, ``move_tcp_both(Left, Right, Mode)``,
+- arms: ``move_tcp(Arm, Pose, Mode, Touching)``, ``move_tcp_both(Left, Right, Mode)``,
   ``move_joints(Arm, Config)``, ``move_joints_both(Left, Right)``,
   ``move_part(Arm, Part, Joint, Handle, Goal)`` (open or close a drawer or door)
 - flying: ``fly(Pose)``; distance sensor: ``sense_distance(Direction)`` [body frame]
@@ -159,9 +159,11 @@ class ArmPM(ProjectionProcessModule):
     def _arm(self, word: str) -> str:
         return self.robot.description.arm_called(word)
 
-    def move_tcp(self, arm: str, pose: Target, mode: str) -> Pose:
-        """Put ``arm``'s tool frame at ``pose``, avoiding collisions as ``mode`` says."""
-        return move_tcp(self.robot, self._arm(arm), pose, mode)
+    def move_tcp(self, arm: str, pose: Target, mode: str, touching: str = "none") -> Pose:
+        """Put ``arm``'s tool frame at ``pose``, avoiding collisions as ``mode`` says (an
+        ``allow_hand`` hand may touch ``touching`` only; ``none``: any object)."""
+        named = None if touching == "none" else str(touching)
+        return move_tcp(self.robot, self._arm(arm), pose, mode, touching=named)
 
     def move_tcp_both(self, left: Target, right: Target, mode: str) -> tuple[Pose, ...]:
         """Move the tool frames of the arms on the left and the right side."""

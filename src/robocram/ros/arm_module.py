@@ -72,9 +72,16 @@ class ArmPM(RosProcessModule):
         return result
 
     def move_tcp(
-        self, arm: str, target: PoseStamped | Any, collision_mode: str = "avoid_all"
+        self,
+        arm: str,
+        target: PoseStamped | Any,
+        collision_mode: str = "avoid_all",
+        touching: str = "none",
     ) -> Pose:
         """Put ``arm``'s tool frame at ``target``; return the reached pose in the fixed frame.
+
+        ``touching`` (what an ``allow_hand`` hand acts on) is accepted and not used yet:
+        the ROS planner lets the hand touch anything (issue 35, item 4, is projection's).
 
         Raises:
             ManipulationPoseUnreachable: IK found no (collision-free, with a world) solution.

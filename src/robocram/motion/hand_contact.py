@@ -1,0 +1,60 @@
+"""The contact CRAM's ``allow_hand`` allows: the hand on what it acts on, and not deep.
+
+A hand closing round a mug, or round a drawer's handle, must touch it. Letting the hand's
+links touch anything at any depth let a joint-space fallback sweep the fingers through a
+counter (issue 35). A :class:`HandContact` names what the hand acts on (an object, or
+``object/link`` for a handle; :data:`ANY_OBJECT` when the caller names none) and bounds
+how deep the hand may go into it (:data:`HAND_CONTACT_DEPTH`). Every other contact of
+the hand is a collision. A trajectory stores it as :class:`ContactAllowance` s, so the
+audit (``robocram runs audit``) holds the motion to the same bound.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Collection
+from dataclasses import dataclass
+
+from robocram.motion.contact_allowance import ContactAllowance
+from robocram.world import World
+from robocram.world.world_core import ObjectRef
+
+HAND_CONTACT_DEPTH = 0.005  # [m] the deepest the hand may go into what it acts on
+ANY_OBJECT = "*"  # a hand contact naming no object: any object, within the same bound
+
+
+@dataclass(frozen=True)
+class HandContact:
+    """``links`` may touch ``touchable`` (names or ``object/link``), at most ``depth`` deep."""
+
+    links: frozenset[str]
+    touchable: frozenset[str]
+    depth: float = HAND_CONTACT_DEPTH
+
+    @classmethod
+    def of(cls, links: Collection[str], touching: str | None) -> HandContact:
+        """The hand ``links`` on ``touching`` (None: any object, within the bound)."""
+        return cls(frozenset(links), frozenset({touching or ANY_OBJECT}))
+
+    def covers(self, link: str, named: str) -> bool:
+        """Whether robot ``link`` touching ``named`` (an object or ``object/link``) is
+        this contact (then only its depth can make it a collision)."""
+        if link not in self.links:
+            return False
+        touchable = self.touchable
+        return ANY_OBJECT in touchable or named in touchable or named.split("/")[0] in touchable
+
+    def allowances(self) -> tuple[ContactAllowance, ...]:
+        """The contact as a trajectory stores it: per hand link and thing touched."""
+        return tuple(
+            ContactAllowance(link, other, self.depth)
+            for link in sorted(self.links)
+            for other in sorted(self.touchable)
+        )
+
+
+def contact_depth(world: World, robot: ObjectRef, link: str, named: str) -> float:
+    """How deep [m] robot ``link`` is in ``named`` (an object or ``object/link``) as they
+    stand: 0 when they only touch or are apart."""
+    name, _, other_link = named.partition("/")
+    points = world.contact_points(robot, name, link, other_link or None, 0.0)
+    return max((-p.distance for p in points), default=0.0)
