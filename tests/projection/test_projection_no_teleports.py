@@ -211,18 +211,7 @@ def test_a_head_turned_into_a_post_beside_it_fails_naming_it_and_nothing_moves()
     world.close()
 
 
-ROLL_RESET = pytest.mark.xfail(
-    reason="the PR2's first grasp roll on the drawer's handle stops where its upper arm roll "
-    "nears its limit: IK turns the arm over and the joint-space move swept the fingertips "
-    "through the handle, which bounded allow_hand (5 mm, issue 35) refuses; articulation "
-    "then sets the robot back for the next roll without a trajectory (docs/status.md)",
-    strict=True,
-)
-
-
-@pytest.mark.parametrize(
-    ("robot", "kind"), [pytest.param("pr2", "bowl", marks=ROLL_RESET), ("hsrb", "mug")]
-)
+@pytest.mark.parametrize(("robot", "kind"), [("pr2", "bowl"), ("hsrb", "mug")])
 def test_a_kitchen_transport_moves_the_robot_only_along_its_trajectories(
     robot: str, kind: str
 ) -> None:

@@ -89,13 +89,12 @@ def test_a_kitchen_mug_transport_is_clean_with_the_hand_bounded_on_the_mug(
 
 
 def test_the_pr2_takes_the_bowl_from_its_drawer_with_the_hand_bounded(tmp_path: Path) -> None:
-    """The drawer's handle and the bowl are named in turn. The audit replays the hand
-    against the drawer as it stood before ``moving-articulation`` moved it (its joint is
-    stored after, docs/motion.md), so it finds the hand in the drawer there; elsewhere the
-    run is clean."""
+    """The drawer's handle and the bowl are named in turn. The audit moves the drawer
+    with the hand (each step's trajectory carries its joint), and a grasp roll that did
+    not hold goes back by trajectories: the whole run is clean, the drawer's opening and
+    closing included."""
     report, ends = _traced(tmp_path, "pr2", "bowl")
-    outside = [f for f in report.findings if "moving-articulation" not in (f.task_path or "")]
-    assert outside == [], [f.line() for f in outside]
+    assert report.clean, [f.line() for f in report.findings]
     assert not [f for f in report.of(FindingKind.ALLOWED_CONTACT_TOO_DEEP) if "bowl" in f.what]
     handle = {"kitchen/drawer_unit_drawer_3_handle"}
     assert {frozenset(n) for n in ends.named} == {frozenset(handle), frozenset({"bowl-1"})}

@@ -23,8 +23,10 @@ from robocram.execution.failures import (
     EnvironmentManipulationImpossible,
     GripperPathBlocked,
     ManipulationGoalNotReached,
+    ManipulationPathBlocked,
     ManipulationPoseUnreachable,
     NavigationLowLevelFailure,
+    NavigationPoseUnreachable,
 )
 from robocram.kinematics import PlanarBase, forward_kinematics
 from robocram.motion import CarriedJoint
@@ -39,7 +41,8 @@ from robocram.motion.part_path import (
 from robocram.projection.arm import move_tcp
 from robocram.projection.errors import ProjectionError
 from robocram.projection.gripper import close_gripper, open_gripper
-from robocram.projection.navigation import place_base
+from robocram.projection.joint_motion import move_along_checked
+from robocram.projection.navigation import drive, place_base
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.tf import Pose
 
@@ -211,9 +214,8 @@ def move_part(
                 if abs(reached - goal) <= 1e-9:
                     _let_go(robot, arm, part, handle, grasp, pull)
                     return ArticulationResult(joint, start, reached, roll, tuple(riders))
-            world.set_joint_states(part, {joint: start})
-            place_base(robot, base_start)
-            world.set_joint_states(robot.name, robot_start)
+            held = _Held(arm, part, joint, handle, grasp, pull)
+            _back_to_start(robot, held, start, base_start, robot_start)
     finally:
         for name in riders:
             world.detach(name)
@@ -223,6 +225,66 @@ def move_part(
         environment_part=joint,
         action="opening" if goal > start else "closing",
     )
+
+
+@dataclass(frozen=True)
+class _Held:
+    """How a roll holds the part: the arm, the part's joint and handle, the grasp."""
+
+    arm: str
+    part: str
+    joint: str
+    handle: str
+    grasp: Pose
+    pull: Pose
+
+
+def _back_to_start(
+    robot: ProjectedRobot,
+    held: _Held,
+    start: float,
+    base_start: Pose,
+    robot_start: dict[str, float],
+) -> None:
+    """After a grasp roll that did not hold all the way: the part and the robot back where
+    they started, by motions, for the next roll. A part the roll had moved is taken back
+    holding its handle, the hand lets go, the joints and the base go back along checked
+    trajectories. Where any of that is blocked, what is left is put back by setting it
+    (a jump the trace's audit reports)."""
+    world = robot.world
+    arm, part, joint = held.arm, held.part, held.joint
+    try:
+        if abs(world.joint_states(part)[joint] - start) > 1e-9:
+            back = part_path(world, part, joint, held.handle, start)
+            reached = _follow(robot, arm, part, joint, held.handle, held.grasp, back, held.pull)
+            if abs(reached - start) > 1e-9:
+                raise EnvironmentManipulationImpossible(
+                    f"{part}'s {joint!r} did not go back to {start:.3f}", environment_part=joint
+                )
+            _let_go(robot, arm, part, held.handle, held.grasp, held.pull)
+        else:
+            _opened(robot, arm)
+        moved = {
+            j: v for j, v in robot_start.items()
+            if abs(world.joint_states(robot.name)[j] - v) > 1e-9
+        }  # fmt: skip
+        if moved:
+            move_along_checked(
+                robot, moved, kind="arm", what=f"{robot.name}'s way back from {part}", plan=True
+            )  # fmt: skip
+        if robot.base_pose().distance_to(base_start) > 1e-6:
+            drive(robot, base_start)
+        return
+    except (
+        ManipulationPathBlocked,
+        NavigationPoseUnreachable,
+        GripperPathBlocked,
+        EnvironmentManipulationImpossible,
+    ):
+        pass
+    world.set_joint_states(part, {joint: start})
+    place_base(robot, base_start)
+    world.set_joint_states(robot.name, robot_start)
 
 
 def _let_go(
