@@ -30,6 +30,7 @@ from typing import Any, Protocol
 
 from robocram.ros.message_dicts import message_class, to_dict, to_message
 from robocram.ros.node_config import NodeConfig
+from robocram.ros.node_state import NodeState
 from robocram.ros.transport import GoalState
 
 MONITOR_PERIOD = 0.05  # [s] how often running goals are checked for a silent server
@@ -63,7 +64,7 @@ class _Server:
         self.heard = time.monotonic()
 
 
-class RosNode:
+class RosNode(NodeState):
     """The node's state and request handlers; one instance per child process."""
 
     def __init__(self, conn: Connection, config: NodeConfig) -> None:
@@ -72,20 +73,13 @@ class RosNode:
         from sensor_msgs.msg import JointState
         from tf2_msgs.msg import TFMessage
 
-        self.conn = conn
-        self.config = config
-        self._send_lock = threading.Lock()
-        self._state = threading.Condition()
-        self._joints: dict[str, float] = {}
-        self._joint_arrivals = 0  # joint-state messages received so far
-        self._base_arrivals = 0  # /tf messages with the base frame received so far
+        super().__init__(conn, config)
         self.buffer = tf2_ros.Buffer(cache_time=rospy.Duration(10.0))
         self._tf_subs = [
             rospy.Subscriber("/tf", TFMessage, self._on_tf, callback_args=False),
             rospy.Subscriber("/tf_static", TFMessage, self._on_tf, callback_args=True),
         ]
         self._joint_sub = rospy.Subscriber(config.joint_states_topic, JointState, self._on_joints)
-        self._environment: dict[str, dict[str, float]] = {t: {} for t in config.environment_topics}
         self._environment_subs = [
             rospy.Subscriber(topic, JointState, self._on_environment, callback_args=topic)
             for topic in config.environment_topics
@@ -93,25 +87,15 @@ class RosNode:
         self.servers = {name: _Server(name, kind) for name, kind in config.servers.items()}
         self.running = True
 
-    def send(self, message: tuple[object, ...]) -> None:
-        """Write one message to the plan process (from any thread)."""
-        with self._send_lock:
-            self.conn.send(message)
-
     def _on_joints(self, msg: Any) -> None:
         import rospy
 
-        with self._state:
-            self._joints.update(zip(msg.name, map(float, msg.position), strict=False))
-            self._joint_arrivals += 1
-            first = self._joint_arrivals == 1
-            self._state.notify_all()
+        first = self._joints_arrived(msg.name, msg.position)
         if first and not msg.header.stamp.is_zero():  # the robot clock's offset, once
             self.send(("skew", msg.header.stamp.to_sec() - rospy.get_time()))
 
     def _on_environment(self, msg: Any, topic: str) -> None:
-        with self._state:
-            self._environment[topic].update(zip(msg.name, map(float, msg.position), strict=False))
+        self._environment_arrived(topic, msg.name, msg.position)
 
     def _on_tf(self, msg: Any, static: bool) -> None:
         """Feed the buffer, then count the arrival if the base frame is in the message."""
@@ -124,12 +108,7 @@ class RosNode:
             base = base or transform.child_frame_id.lstrip("/") == self.config.base_frame
         if base:
             with self._state:
-                self._base_arrivals += 1
-                self._state.notify_all()
-
-    def _mark(self) -> tuple[int, int]:
-        with self._state:
-            return (self._joint_arrivals, self._base_arrivals)
+                self._base_arrived()
 
     def op_send_goal(self, goal_id: int, server: str, goal: dict[str, object]) -> float:
         """Send a goal once the server is there; its end arrives as a ``goal`` message.
@@ -177,25 +156,6 @@ class RosNode:
             handle = entry.handle
             if entry.goal_id == goal_id and handle is not None:
                 handle.cancel()
-
-    def op_joint_states(self) -> dict[str, float]:
-        """The latest joint positions."""
-        with self._state:
-            return dict(self._joints)
-
-    def op_environment_joint_states(self) -> dict[str, dict[str, float]]:
-        """The latest joint positions of each environment topic (empty until heard)."""
-        with self._state:
-            return {topic: dict(joints) for topic, joints in self._environment.items()}
-
-    def op_wait_for_state(self, after: tuple[int, int] | None, timeout: float) -> bool:
-        """Wait until joint states and a base transform arrived after the mark ``after``
-        (None: after this request); no robot stamp is compared with our clock."""
-        joints, base = after if after is not None else self._mark()
-        with self._state:
-            return self._state.wait_for(
-                lambda: self._joint_arrivals > joints and self._base_arrivals > base, timeout
-            )
 
     def op_lookup(self, target: str, source: str) -> tuple[tuple[float, ...], tuple[float, ...]]:
         """The latest pose of ``source`` in ``target`` as (position, quaternion)."""

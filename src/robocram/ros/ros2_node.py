@@ -21,6 +21,7 @@ from dataclasses import dataclass, field
 from multiprocessing.connection import Connection
 
 from robocram.ros.node_config import NodeConfig
+from robocram.ros.node_state import NodeState
 from robocram.ros.ros1_node import BLOCKING_OPS, handle_request
 from robocram.ros.ros2_messages import RclpyObject, RosDict, action_class, fill, to_dict
 from robocram.ros.tf_cdr import read_tf_message
@@ -82,7 +83,7 @@ class _Server:
     seen: float = 0.0  # monotonic [s] the server was last in the ROS graph
 
 
-class Ros2Node:
+class Ros2Node(NodeState):
     """The node's state and request handlers; one instance per child process."""
 
     def __init__(self, conn: Connection, config: NodeConfig, node: RclpyObject) -> None:
@@ -90,14 +91,8 @@ class Ros2Node:
         from sensor_msgs.msg import JointState
         from tf2_msgs.msg import TFMessage
 
-        self.conn = conn
-        self.config = config
+        super().__init__(conn, config)
         self.node = node
-        self._send_lock = threading.Lock()
-        self._state = threading.Condition()
-        self._joints: dict[str, float] = {}
-        self._joint_arrivals = 0
-        self._base_arrivals = 0
         self._transforms: dict[str, tuple[str, Vector3, Quaternion]] = {}  # child: parent, t, q
         self._tree: TransformTree | None = None  # built from them when asked
         static = QoSProfile(depth=TF_STATIC_DEPTH, durability=DurabilityPolicy.TRANSIENT_LOCAL)
@@ -105,7 +100,6 @@ class Ros2Node:
         node.create_subscription(TFMessage, "/tf", self._on_tf, 100, raw=True)
         node.create_subscription(TFMessage, "/tf_static", self._on_tf, static, raw=True)
         node.create_subscription(JointState, config.joint_states_topic, self._on_joints, 10)
-        self._environment: dict[str, dict[str, float]] = {t: {} for t in config.environment_topics}
         for topic in config.environment_topics:
             node.create_subscription(
                 JointState, topic, lambda msg, topic=topic: self._on_environment(msg, topic), 10
@@ -116,24 +110,14 @@ class Ros2Node:
             self.servers[name] = _Server(name, action, locked_action_client(node, action, name))
         self.running = True
 
-    def send(self, message: tuple[object, ...]) -> None:
-        """Write one message to the plan process (from any thread)."""
-        with self._send_lock:
-            self.conn.send(message)
-
     def _on_joints(self, msg: RclpyObject) -> None:
-        with self._state:
-            self._joints.update(zip(msg.name, map(float, msg.position), strict=False))
-            self._joint_arrivals += 1
-            first = self._joint_arrivals == 1
-            self._state.notify_all()
+        first = self._joints_arrived(msg.name, msg.position)
         stamp = msg.header.stamp.sec + msg.header.stamp.nanosec * 1e-9
         if first and stamp > 0:  # the robot clock's offset, once
             self.send(("skew", stamp - time.time()))
 
     def _on_environment(self, msg: RclpyObject, topic: str) -> None:
-        with self._state:
-            self._environment[topic].update(zip(msg.name, map(float, msg.position), strict=False))
+        self._environment_arrived(topic, msg.name, msg.position)
 
     def _on_tf(self, raw: bytes) -> None:
         """Keep each frame's latest transform; count the arrival of the base frame's.
@@ -146,8 +130,7 @@ class Ros2Node:
             self._transforms.update(latest)
             self._tree = None
             if self.config.base_frame in latest:
-                self._base_arrivals += 1
-                self._state.notify_all()
+                self._base_arrived()
 
     def _frames(self) -> TransformTree:
         """The tree of the latest transforms (call holding ``_state``)."""
@@ -157,10 +140,6 @@ class Ros2Node:
                 tree.set_transform(parent, child, Pose(translation, rotation))
             self._tree = tree
         return self._tree
-
-    def _mark(self) -> tuple[int, int]:
-        with self._state:
-            return (self._joint_arrivals, self._base_arrivals)
 
     def op_send_goal(self, goal_id: int, server: str, goal: dict[str, object]) -> float:
         """Send a goal once the server is there; its end arrives as a ``goal`` message."""
@@ -233,24 +212,6 @@ class Ros2Node:
                 entry.cancel_pending = handle is None
             if handle is not None:
                 handle.cancel_goal_async()
-
-    def op_joint_states(self) -> dict[str, float]:
-        """The latest joint positions."""
-        with self._state:
-            return dict(self._joints)
-
-    def op_environment_joint_states(self) -> dict[str, dict[str, float]]:
-        """The latest joint positions of each environment topic (empty until heard)."""
-        with self._state:
-            return {topic: dict(joints) for topic, joints in self._environment.items()}
-
-    def op_wait_for_state(self, after: tuple[int, int] | None, timeout: float) -> bool:
-        """Wait until joint states and a base transform arrived after the mark ``after``."""
-        joints, base = after if after is not None else self._mark()
-        with self._state:
-            return self._state.wait_for(
-                lambda: self._joint_arrivals > joints and self._base_arrivals > base, timeout
-            )
 
     def op_lookup(self, target: str, source: str) -> tuple[tuple[float, ...], tuple[float, ...]]:
         """The latest pose of ``source`` in ``target`` as (position, quaternion)."""
