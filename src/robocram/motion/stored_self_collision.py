@@ -14,13 +14,16 @@ from __future__ import annotations
 
 import hashlib
 import json
+import re
 from importlib import resources
-from pathlib import Path
+from pathlib import Path, PurePosixPath
 
 from robocram.robots import LoadedDescription, RobotModel
 
 FOLDER = "self_collision"  # under robocram.robots.builtin
 VERSION = 1  # of the file's layout and of how the matrix is worked out
+MESH_FILE = re.compile(r'filename="([^"]*)"')
+MESH_NAME_PARTS = 4  # a mesh is named by its package's folder, ...: pr2_description/meshes/...
 
 
 def matrix_digest(desc: LoadedDescription, key: tuple[object, ...]) -> str:
@@ -31,7 +34,16 @@ def matrix_digest(desc: LoadedDescription, key: tuple[object, ...]) -> str:
 
 
 def _urdf_sha1(model: RobotModel) -> str:
-    return hashlib.sha1(model.to_urdf().encode("utf-8")).hexdigest()
+    """The SHA-1 of the URDF as loaded, its mesh files named by their last
+    :data:`MESH_NAME_PARTS` path parts: the same wherever the checkout or venv lies."""
+    text = MESH_FILE.sub(_mesh_name, model.to_urdf())
+    return hashlib.sha1(text.encode("utf-8")).hexdigest()
+
+
+def _mesh_name(found: re.Match[str]) -> str:
+    parts = PurePosixPath(found.group(1)).parts[-MESH_NAME_PARTS:]
+    name = "/".join(parts)
+    return f'filename="{name}"'
 
 
 def stored_file(name: str) -> Path:
