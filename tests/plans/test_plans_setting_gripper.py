@@ -54,3 +54,19 @@ def test_a_misspelled_action_type_names_the_closest_and_every_known_one(
     message = str(err.value)
     assert message.startswith("no action type 'transportng'; did you mean 'transporting'? ")
     assert all(name in message for name in ACTIONS)  # not "none", as it was
+
+
+def test_grasping_closes_on_the_object_where_it_stands() -> None:
+    from robocram.designators import a
+
+    scene = tabletop_scene("pr2")
+    world = scene.world
+    before = world.pose("mug-1").position
+    with simulated_robot(world, "pr2"):
+        perform(an.action(type="looking", target=a.location(pose=scene.look_target)))
+        seen = perform(an.action(type="detecting", object=an.object(type="mug")))
+        held = perform(an.action(type="grasping", object=seen))
+    assert "mug-1" in world.attachments("pr2") and held.object_name == "mug-1"  # in the hand
+    assert world.pose("mug-1").position[2] == pytest.approx(before[2], abs=0.01)  # not lifted
+    assert held.lifted == held.grasp_pose
+    world.close()

@@ -37,7 +37,7 @@ from robocram.plans.basic_actions import (
 from robocram.plans.containers import close_container, open_container
 from robocram.plans.deliver import deliver
 from robocram.plans.fetch import fetch
-from robocram.plans.pick_object import pick_up_object
+from robocram.plans.pick_object import grasp_object, pick_up_object
 from robocram.plans.place_object import place_object
 from robocram.plans.search import search
 from robocram.plans.transport import transport
@@ -60,6 +60,7 @@ ACTIONS = ActionTable.of(
     ActionType("opening", ("object",), ("arm", "distance", "angle"), open_container),
     ActionType("closing", ("object",), ("arm",), close_container),
     ActionType("picking-up", ("object",), ("arm", "grasp"), pick_up_object),
+    ActionType("grasping", ("object",), ("arm", "grasp"), grasp_object),
     ActionType("placing", ("object", "target"), ("arm",), place_object),
     ActionType("fetching", ("object",), ("arm", "grasp", "stand_retries"), fetch),
     ActionType(

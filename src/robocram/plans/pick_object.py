@@ -119,7 +119,12 @@ def _move(arm: str, pose: PoseStamped, **mode: str) -> None:
 
 
 def _try_grasp(
-    robot: str, name: str, arm: str, choice: ObjectGrasp, object_in_map: Pose | None
+    robot: str,
+    name: str,
+    arm: str,
+    choice: ObjectGrasp,
+    object_in_map: Pose | None,
+    lift: bool = True,
 ) -> Held:
     perform(a.motion(type="opening", gripper=arm))
     _move(arm, choice.pre_grasp)
@@ -128,20 +133,34 @@ def _try_grasp(
     if isinstance(gripped, str) and gripped != name:  # projection names what it holds
         perform(a.motion(type="opening", gripper=arm))
         raise PickUpFailed(f"the {arm} hand gripped {gripped!r}, not {name!r}", object_name=name)
-    _move(arm, choice.lift, **GRASPING, touching=name)
+    if lift:
+        _move(arm, choice.lift, **GRASPING, touching=name)
     frame = tool_frame(robot, arm)
     if object_in_map is None:
         object_in_map = transform_pose(PoseStamped(name), "map").pose
     held = choice.grasp_pose.pose.inverse() * object_in_map  # as gripped: the grasp keeps it
-    return Held(arm, choice.grasp, name, frame, choice.grasp_pose, choice.lift, held)
+    raised = choice.lift if lift else choice.grasp_pose
+    return Held(arm, choice.grasp, name, frame, choice.grasp_pose, raised, held)
+
+
+def grasp_object(
+    object: ObjectDesignator | str,  # noqa: A002 - CRAM's key
+    arm: str | None = None,
+    grasp: str | None = None,
+) -> Held:
+    """Grasp the (detected) object where it stands: open, approach, close on it; CRAM's
+    and PyCRAM's ``grasping`` (:func:`pick_up_object` without the lift)."""
+    return pick_up_object(object, arm, grasp, lift=False)
 
 
 def pick_up_object(
     object: ObjectDesignator | str,  # noqa: A002 - CRAM's key
     arm: str | None = None,
     grasp: str | None = None,
+    lift: bool = True,
 ) -> Held:
-    """Pick up the (detected) object with ``arm`` and ``grasp``, or the first that works.
+    """Pick up the (detected) object with ``arm`` and ``grasp``, or the first that works
+    (``lift`` False: grasp it where it stands).
 
     Raises:
         ObjectUngraspable: the only arm asked for is too narrow for every grasp.
@@ -163,7 +182,7 @@ def pick_up_object(
             continue
         for choice in choices:
             try:
-                return _try_grasp(robot, name, choice_arm, choice, pose)
+                return _try_grasp(robot, name, choice_arm, choice, pose, lift)
             except TRIES as failure:
                 causes.append(failure)
             except PickUpFailed as failure:
