@@ -1,7 +1,8 @@
 """What the independent audit finds in the runs issue 35 names: kitchen transports (the
 mug from the counter, the bowl from its drawer) of the PR2, HSR and Boxy and of the
 drafted Fetch and Stretch, and seeded cluttered-counter transports of the PR2 (2 to 4
-boxes round the mug, none within 12 cm of it).
+boxes round the mug, none within 12 cm of it, nor within 1 cm of
+the mug or another box: a box drawn into the mug's handle is drawn again).
 
 Each run is traced into a fresh SQLite store and replayed by ``robocram runs audit``'s
 code (raw PyBullet queries, none of the planner's checks). A failed transport is listed
@@ -47,11 +48,15 @@ def _cluttered(seed: int) -> KitchenScene:
     for k in range(int(rng.integers(2, 5))):
         while True:
             dx, dy = rng.uniform(-0.45, 0.45), rng.uniform(-0.2, 0.15)
+            size = (rng.uniform(0.04, 0.12), rng.uniform(0.04, 0.12), rng.uniform(0.05, 0.25))
+            where = (MUG[0] + dx, MUG[1] + dy, MUG[2] + size[2] / 2 + 0.002)
             if abs(dx) > 0.12 or abs(dy) > 0.12:
-                break
-        size = (rng.uniform(0.04, 0.12), rng.uniform(0.04, 0.12), rng.uniform(0.05, 0.25))
-        where = (MUG[0] + dx, MUG[1] + dy, MUG[2] + size[2] / 2 + 0.002)
-        scene.world.add_box(f"clutter-{k}", size, Pose(where))
+                scene.world.add_box(f"clutter-{k}", size, Pose(where))
+                near = ["mug-1", *(f"clutter-{j}" for j in range(k))]
+                if not any(scene.world.contact_points(f"clutter-{k}", o, distance=0.01)
+                           for o in near):  # fmt: skip
+                    break  # a box clear of the mug and of the boxes before it
+                scene.world.remove(f"clutter-{k}")
     return scene
 
 
