@@ -9,8 +9,14 @@ from pathlib import Path
 
 import pytest
 
-from robocram.execution.failures import GripperClosedCompletely, GripperGoalNotReached
+from robocram.execution.failures import (
+    GripperClosedCompletely,
+    GripperGoalNotReached,
+    GripperMetOneSide,
+)
+from robocram.motion.hand_contact import HAND_CONTACT_DEPTH
 from robocram.projection import ProjectedRobot
+from robocram.projection.arm import move_tcp
 from robocram.projection.gripper import close_gripper, grip, open_gripper, set_gripper
 from robocram.robots import (
     ArmDescription,
@@ -19,6 +25,8 @@ from robocram.robots import (
     RobotDescription,
 )
 from robocram.robots.example_robot_data import example_robot_data_folder
+from robocram.tf import Pose
+from robocram.tf import quaternion as quat
 from robocram.world import World
 
 pytestmark = pytest.mark.filterwarnings("ignore::robocram.robots.DescriptionWarning")
@@ -170,3 +178,31 @@ def test_the_allegro_hand_opens_and_closes_every_finger_it_declares(world: World
     open_gripper(robot, "hand")  # no finger curls while "opening"
     assert all(world.joint_states("allegro")[j] == pytest.approx(0.0) for j in curls)
     assert world.joint_states("allegro")["joint_12.0"] == thumb_turn  # not declared: stays
+
+
+def test_a_can_off_centre_is_met_on_one_side_and_gripped_once_the_hand_moves_by_the_shift(
+    world: World,
+) -> None:
+    """The PR2's left finger meets a can 2.5 cm off the tool frame long before the right
+    one: the grip fails naming how far to move the hand (half the misfit, towards the can's
+    side), and after that move both tips squeeze it, neither deeper than 5 mm."""
+    world.add_robot("pr2")
+    robot = ProjectedRobot.of(world, "pr2")
+    move_tcp(robot, "right", Pose((0.6, -0.25, 0.8)))  # well within reach, facing ahead
+    open_gripper(robot, "right")
+    tool = world.link_pose("pr2", "r_gripper_tool_frame")
+    across = quat.rotate(tool.orientation, (0.0, 1.0, 0.0))  # the fingers close along y
+    at = tuple(p + 0.025 * a for p, a in zip(tool.position, across, strict=True))
+    world.add_cylinder("can", 0.02, 0.1, pose=at, mass=0.1)
+    with pytest.raises(GripperMetOneSide, match="on one side only") as info:
+        grip(robot, "right")
+    assert world.attachments("pr2") == {}  # the fingers did not move
+    shift = info.value.shift
+    assert shift is not None
+    assert sum(s * a for s, a in zip(shift, across, strict=True)) == pytest.approx(0.025, abs=0.004)
+    moved = tuple(p + s for p, s in zip(tool.position, shift, strict=True))
+    move_tcp(robot, "right", Pose(moved, tool.orientation), collision_mode="allow_hand")
+    assert grip(robot, "right") == "can"
+    for tip in ("r_gripper_l_finger_tip_link", "r_gripper_r_finger_tip_link"):
+        points = world.contact_points("pr2", "can", link_a=tip, distance=0.005)
+        assert points and min(p.distance for p in points) > -HAND_CONTACT_DEPTH

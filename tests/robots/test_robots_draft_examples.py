@@ -38,7 +38,22 @@ EDITS = {  # lines each example changed from its draft
     "tiago_pro": 0,
     "z1": 0,
 }
-CHECKED_CLEAN = ("baxter", "panda", "so101", "talos", "tiago", "tiago_pro", "z1")
+SINGLE_JAW = pytest.mark.xfail(
+    strict=True,
+    reason="a single-jaw draft's tool frame lies inside its fixed jaw, so the check's mug "
+    "starts deep in it (z1 73 mm, so101 58 mm) and, put clear of the hand, is not between the "
+    "jaws; the grip passed only while one-sided squeezes were unbounded (issue 37: the draft "
+    "must put the tool frame where the jaws meet)",
+)
+CHECKED_CLEAN = (
+    "baxter",
+    "panda",
+    pytest.param("so101", marks=SINGLE_JAW),
+    "talos",
+    "tiago",
+    "tiago_pro",
+    pytest.param("z1", marks=SINGLE_JAW),
+)
 
 
 def _module(path: Path) -> ModuleType:

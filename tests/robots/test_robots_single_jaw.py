@@ -16,6 +16,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from robocram.execution.failures import GripperMetOneSide
 from robocram.projection.arm import move_tcp
 from robocram.projection.gripper import grip, open_gripper
 from robocram.projection.projected_robot import ProjectedRobot
@@ -134,6 +135,14 @@ def test_so101_jaw_opens_at_the_upper_limit_with_a_derived_opening() -> None:
     assert float(tool[:3, 0] @ out) / float(np.linalg.norm(out)) > math.cos(math.radians(30))
 
 
+@pytest.mark.xfail(
+    strict=True,
+    raises=GripperMetOneSide,
+    reason="the drafted z1's tool frame lies inside its fixed jaw (gripperStator's hull spans "
+    "it), so a mug put at the tool frame starts 73 mm inside the jaw; the grip passed only "
+    "while one-sided squeezes were unbounded. The draft must put the tool frame where the jaws "
+    "meet (issue 37)",
+)
 def test_z1_grips_a_mug_by_contact_with_its_one_moving_jaw() -> None:
     """Closing stops where the moving jaw and the fixed one squeeze the mug, part way."""
     examples = Path(__file__).resolve().parents[2] / "examples" / "robots"

@@ -2,7 +2,8 @@
 
 Grasps (CRAM's names), in the object's frame (x forward, z up):
 
-- ``top``: from above, over the body's axis; the fingertips go :data:`TOP_STRADDLE` (or
+- ``top``: from above, over the body's axis, centred on the span the hand closes across
+  (a handle widens it); the fingertips go :data:`TOP_STRADDLE` (or
   the hand's finger depth, if less) below the top, but no lower than half the height.
   Four turns: the opening along the object's x (width: its x size) or y.
 - ``front``, ``left``, ``right``: sideways at half height, from the -x, +y and -y side
@@ -76,13 +77,19 @@ def _grasp(
 
 
 def _top(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
+    """Over the body's axis, the hand centred on the span it closes across: a mug's
+    handle widens it to one side, and a hand over the body's axis met the handle with one
+    finger 2 cm before the other finger met the body."""
     cx, cy = shape.centre
     sx, sy, height = shape.size
+    mx, my = (shape.low[0] + shape.high[0]) / 2, (shape.low[1] + shape.high[1]) / 2
     z = max(shape.low[2] + height / 2, shape.high[2] - min(hand.finger_depth, TOP_STRADDLE))
     for turn in (0.0, math.pi, math.pi / 2, -math.pi / 2):
         opening = (round(math.cos(turn), 12), round(math.sin(turn), 12), 0.0)
-        width = sx if abs(opening[0]) > 0.5 else sy
-        yield _grasp(hand, "top", turn, (cx, cy, z), DOWN, opening, width)
+        along_x = abs(opening[0]) > 0.5
+        width = sx if along_x else sy
+        at = (mx, cy, z) if along_x else (cx, my, z)
+        yield _grasp(hand, "top", turn, at, DOWN, opening, width)
 
 
 def _side(shape: ObjectShape, hand: Hand, name: str) -> Iterator[Grasp]:

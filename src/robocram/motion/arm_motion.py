@@ -37,7 +37,7 @@ from robocram.motion.coal_clearance import CoalClearance
 from robocram.motion.collision_scene import CollisionScene
 from robocram.motion.configuration_checker import LinkPair
 from robocram.motion.corner_blend import blend_radii
-from robocram.motion.hand_contact import HandContact
+from robocram.motion.hand_contact import HandContact, hand_at_start
 from robocram.motion.joint_goal import motion_goal
 from robocram.motion.joint_limits import joint_limits
 from robocram.motion.joint_path import PLANNING_BUDGET, JointPath, plan_joint_path
@@ -128,18 +128,10 @@ def _judge(
 def _start_contacts(
     checker: BulletScene | CoalClearance, start: list[float], hand: HandContact | None
 ) -> list[LinkPair]:
-    """The contacts at ``start`` that the motion may keep: the colliding pairs, and the
-    hand's on what it acts on at any depth (a hand on a handle the drawer's step pulled
-    deeper must follow it); the bound holds for contacts the motion makes."""
-    if hand is None:
-        return checker.colliding(start)
-    judge = checker.judge if isinstance(checker, CoalClearance) else checker
-    joints, pairs = judge.joints, judge.allowed_pairs
-    touching = replace(hand, depth=0.0)  # any depth counts: every contact of the hand
-    every = BulletScene(
-        judge.world, judge.robot, joints, judge.allowed_links, allowed_pairs=pairs, hand=touching
-    )
-    return every.colliding(start)
+    """The contacts at ``start`` that the motion may keep: the colliding pairs. The hand's
+    on what it acts on are not among them: :func:`hand_at_start` bounds them at their
+    depth."""
+    return checker.colliding(start)
 
 
 def plan_arm_motion(
@@ -170,6 +162,7 @@ def plan_arm_motion(
     """
     desc = world.robot(robot).description
     joints = planned_joints(desc, goal)
+    hand = hand_at_start(world, robot, hand)
     current = world.joint_states(robot)
     start = [current[j] for j in joints]
     end = motion_goal(desc, joints, start, goal)
@@ -413,6 +406,7 @@ def plan_tool_line(
     start = [current[j] for j in joints]
     base = world.pose(robot)
     tool = base.inverse() * world.link_pose(robot, spec.tool_frame)
+    hand = hand_at_start(world, robot, hand)
     scene = _scene(world, robot, joints, allowed_links, start, hand=hand)
     bound = TravelBound.of(world, robot, joints)
     line = cartesian_path(

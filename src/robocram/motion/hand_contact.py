@@ -12,13 +12,14 @@ audit (``robocram runs audit``) holds the motion to the same bound.
 from __future__ import annotations
 
 from collections.abc import Collection
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from robocram.motion.contact_allowance import ContactAllowance
 from robocram.world import World
 from robocram.world.world_core import ObjectRef
 
 HAND_CONTACT_DEPTH = 0.005  # [m] the deepest the hand may go into what it acts on
+KEEP_DEPTH = 0.0005  # [m] a contact a motion starts with may deepen by this (numerics)
 ANY_OBJECT = "*"  # a hand contact naming no object: any object, within the same bound
 
 
@@ -58,3 +59,23 @@ def contact_depth(world: World, robot: ObjectRef, link: str, named: str) -> floa
     name, _, other_link = named.partition("/")
     points = world.contact_points(robot, name, link, other_link or None, 0.0)
     return max((-p.distance for p in points), default=0.0)
+
+
+def hand_at_start(world: World, robot: ObjectRef, hand: HandContact | None) -> HandContact | None:
+    """``hand`` bounded for a motion starting where ``robot`` stands: its bound, or, where
+    its links are already deeper in what they act on (a drawer's step pulled the hand into
+    the handle), that depth and :data:`KEEP_DEPTH` more. A contact the motion starts with
+    is kept, never deepened: a hand backing off a mug it had let go swept a finger 29 mm
+    into it while its start contact was allowed at any depth (issue 35)."""
+    if hand is None:
+        return None
+    deepest = 0.0
+    body = world.object(robot)
+    links = [link for link in hand.links if link in body.link_index]
+    for link, other, other_link, gap in world.link_distances(robot, distance=0.0, links=links):
+        named = f"{other.name}/{other_link}" if len(other.link_index) > 1 else other.name
+        if gap < 0.0 and hand.covers(link, named):
+            deepest = max(deepest, -gap)
+    if deepest + KEEP_DEPTH <= hand.depth:
+        return hand
+    return replace(hand, depth=deepest + KEEP_DEPTH)

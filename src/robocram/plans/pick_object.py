@@ -9,13 +9,14 @@ cause.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 from robocram.designators import ObjectDesignator, a
 from robocram.execution import perform
 from robocram.execution.failures import (
     GripperLowLevelFailure,
+    GripperMetOneSide,
     ManipulationLowLevelFailure,
     ManipulationPoseUnreachable,
 )
@@ -26,6 +27,7 @@ from robocram.plans.grasp_failures import ObjectUngraspable, PickUpFailed, PickU
 from robocram.plans.robot_facts import current_robot, grasping_arms, tool_frame
 from robocram.tf import Pose, PoseStamped, TfError, transform_pose
 
+CENTRINGS = 2  # a grip meeting the object on one side moves the hand this often at most
 GRASPING = {"collision_mode": "allow_hand"}  # the fingers may touch what they close on:
 # a motion names it too (``touching``), and the hand may touch nothing else, 5 mm at most
 TRIES = (ManipulationLowLevelFailure, GripperLowLevelFailure)  # a try ends, the next starts
@@ -129,10 +131,7 @@ def _try_grasp(
     perform(a.motion(type="opening", gripper=arm))
     _move(arm, choice.pre_grasp)
     _move(arm, choice.grasp_pose, **GRASPING, touching=name)
-    gripped = perform(a.motion(type="gripping", gripper=arm))
-    if isinstance(gripped, str) and gripped != name:  # projection names what it holds
-        perform(a.motion(type="opening", gripper=arm))
-        raise PickUpFailed(f"the {arm} hand gripped {gripped!r}, not {name!r}", object_name=name)
+    choice = _gripped(arm, name, choice)
     if lift:
         _move(arm, choice.lift, **GRASPING, touching=name)
     frame = tool_frame(robot, arm)
@@ -141,6 +140,40 @@ def _try_grasp(
     held = choice.grasp_pose.pose.inverse() * object_in_map  # as gripped: the grasp keeps it
     raised = choice.lift if lift else choice.grasp_pose
     return Held(arm, choice.grasp, name, frame, choice.grasp_pose, raised, held)
+
+
+def _gripped(arm: str, name: str, choice: ObjectGrasp) -> ObjectGrasp:
+    """Grip ``name`` at ``choice``'s grasp pose; where the fingers meet it on one side
+    only, move the open hand by the shift the failure names and grip again (at most
+    :data:`CENTRINGS` times). The grasp as gripped: its grasp and lift poses moved so.
+
+    Raises:
+        GripperMetOneSide: still one-sided after the centrings (or no shift was named).
+        PickUpFailed: the hand gripped another object.
+    """
+    for centring in range(CENTRINGS + 1):
+        try:
+            gripped = perform(a.motion(type="gripping", gripper=arm))
+            break
+        except GripperMetOneSide as one_sided:
+            if one_sided.shift is None or centring == CENTRINGS:
+                raise
+            choice = _shifted(choice, one_sided.shift)
+            _move(arm, choice.grasp_pose, **GRASPING, touching=name)
+    if isinstance(gripped, str) and gripped != name:  # projection names what it holds
+        perform(a.motion(type="opening", gripper=arm))
+        raise PickUpFailed(f"the {arm} hand gripped {gripped!r}, not {name!r}", object_name=name)
+    return choice
+
+
+def _shifted(choice: ObjectGrasp, shift: tuple[float, float, float]) -> ObjectGrasp:
+    """``choice`` with its grasp and lift poses (``map``) moved by ``shift`` [m]."""
+
+    def moved(pose: PoseStamped) -> PoseStamped:
+        x, y, z = pose.position
+        return replace(pose, position=(x + shift[0], y + shift[1], z + shift[2]))
+
+    return replace(choice, grasp_pose=moved(choice.grasp_pose), lift=moved(choice.lift))
 
 
 def grasp_object(

@@ -18,7 +18,7 @@ import math
 
 from robocram.designators import LocationDesignator, ObjectDesignator, a
 from robocram.execution import perform
-from robocram.execution.failures import ManipulationLowLevelFailure
+from robocram.execution.failures import ManipulationLowLevelFailure, NavigationLowLevelFailure
 from robocram.knowledge.world_predicates import ATTACHED, SETTLING
 from robocram.logic import UnknownPredicateError, current_kb
 from robocram.plans.basic_actions import park_arms
@@ -100,8 +100,8 @@ def _retreat(robot: str, held: Held) -> None:
             back_off = _shifted(tool, *(distance * c for c in back))
             _move(held.arm, back_off, **GRASPING, touching=held.object_name)
             return
-        except ManipulationLowLevelFailure:
-            continue
+        except (ManipulationLowLevelFailure, NavigationLowLevelFailure):
+            continue  # a planar arm backs off with its base: a drive may be blocked too
     park_arms(held.arm)
 
 

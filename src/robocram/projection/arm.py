@@ -172,7 +172,7 @@ def _arm_then_base(
         return False
     free = allowed_links(robot, arm, mode)
     try:
-        drive(robot, base_goal, free)
+        drive(robot, base_goal, free, hand)
         return False
     except NavigationLowLevelFailure as failure:
         first = failure
@@ -186,7 +186,7 @@ def _arm_then_base(
         raise first from None
     follow(robot, motion.trajectory)
     try:
-        drive(robot, base_goal, free)
+        drive(robot, base_goal, free, hand)
     except NavigationLowLevelFailure:
         raise first from None
     return True

@@ -49,6 +49,7 @@ from robocram.tf import Pose
 LET_GO_RESTARTS = 8  # IK restarts per backing-off try: it is best effort
 RESTING = 0.005  # [m] objects this close to the moving link move with it
 HOLD_MODE = "allow_hand"  # the fingers close around the handle
+STEP_HALVINGS = 2  # a step the hand cannot follow is tried in halves, then quarters
 STEP_TRAVEL = PlanarBase(0.15, 0.15, 0.5)  # [m, m, rad] the base's move per step of the arc
 REACH_TRAVEL = PlanarBase(0.5, 0.5, 1.0)  # [m, m, rad] to get the hand before the handle
 
@@ -101,28 +102,63 @@ def _follow(
     path: list[float],
     pull: Pose,
 ) -> float:
-    """Move the joint along ``path`` with the tool on the handle; return the last value held."""
+    """Move the joint along ``path`` with the tool on the handle; return the last value held.
+
+    A step the hand cannot follow is tried again in halves (:data:`STEP_HALVINGS` times):
+    where the base drives along, the handle moves in proportion to the drive's time, and a
+    shorter step keeps the hand nearer its bounded contact on the handle."""
     world = robot.world
     held = world.joint_states(part)[joint]
     for value in path:
         checkpoint()  # a stopped task ends here, holding the handle at the last step
-        world.set_joint_states(part, {joint: value})
-        robot.carried[:] = [CarriedJoint(part, joint, held, value)]  # the hand moves it
-        try:
-            move_tcp(
-                robot, arm, world.link_pose(part, handle) * pull * grasp, HOLD_MODE, move_base=True,
-                base_travel=STEP_TRAVEL, touching=f"{part}/{handle}",
-            )  # fmt: skip
-        except (ManipulationPoseUnreachable, ManipulationGoalNotReached, NavigationLowLevelFailure):
-            world.set_joint_states(part, {joint: held})
+        for halving in range(STEP_HALVINGS + 1):
+            steps = 2**halving
+            done = held
+            for k in range(1, steps + 1):
+                goal = held + (value - held) * k / steps
+                if not _step(robot, arm, part, joint, handle, grasp, pull, done, goal):
+                    break
+                done = goal
+            if done == value:
+                break
+            if done != held:
+                return done  # part of the way: the halves after it were out of reach
+        else:
             return held
-        except TaskStopped:  # stopped inside IK: the hand did not follow, undo the step
-            world.set_joint_states(part, {joint: held})
-            raise
-        finally:
-            robot.carried.clear()
         held = value
     return held
+
+
+def _step(
+    robot: ProjectedRobot,
+    arm: str,
+    part: str,
+    joint: str,
+    handle: str,
+    grasp: Pose,
+    pull: Pose,
+    held: float,
+    value: float,
+) -> bool:
+    """Move the joint from ``held`` to ``value`` with the tool on the handle; whether the
+    hand followed (if not, the joint is back at ``held``)."""
+    world = robot.world
+    world.set_joint_states(part, {joint: value})
+    robot.carried[:] = [CarriedJoint(part, joint, held, value)]  # the hand moves it
+    try:
+        move_tcp(
+            robot, arm, world.link_pose(part, handle) * pull * grasp, HOLD_MODE, move_base=True,
+            base_travel=STEP_TRAVEL, touching=f"{part}/{handle}",
+        )  # fmt: skip
+    except (ManipulationPoseUnreachable, ManipulationGoalNotReached, NavigationLowLevelFailure):
+        world.set_joint_states(part, {joint: held})
+        return False
+    except TaskStopped:  # stopped inside IK: the hand did not follow, undo the step
+        world.set_joint_states(part, {joint: held})
+        raise
+    finally:
+        robot.carried.clear()
+    return True
 
 
 def moving_link(robot: ProjectedRobot, part: str, joint: str) -> str:

@@ -29,15 +29,17 @@ from collections.abc import Callable, Collection
 from robocram.execution.failures import (
     GripperClosedCompletely,
     GripperGoalNotReached,
+    GripperMetOneSide,
     GripperPathBlocked,
     ManipulationPathBlocked,
 )
 from robocram.motion.configuration_checker import LinkPair
-from robocram.motion.hand_contact import HandContact
+from robocram.motion.hand_contact import HAND_CONTACT_DEPTH, HandContact
 from robocram.projection.errors import ProjectionError
 from robocram.projection.joint_motion import move_along_checked
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robots import ArmDescription, GripperDescription
+from robocram.tf import Vector3
 from robocram.world import WorldObject
 
 TOUCH = 1e-3  # [m] a link this close to an object touches it
@@ -45,6 +47,9 @@ OPPOSED = -0.3  # cos: two contact normals over ~107 degrees apart squeeze the o
 # fingers spaced 120 degrees around an object do)
 CLOSING_STEPS = 20  # steps from the current opening to closed
 BISECTION_STEPS = 8  # halvings of the step in which the object was first squeezed
+SINK = HAND_CONTACT_DEPTH - 0.001  # [m] a finger this deep in what it grips stops the
+# closing: the other side must then be within the hand's bound (5 mm), else the grip fails
+CENTRING_REACH = 0.05  # [m] how far the other side of a one-sided grip is looked for
 NEAR = 0.02  # [m] margin around the hand's bounding box for objects worth testing
 Stop = tuple[float, WorldObject, set[LinkPair]]  # opening, what is squeezed, touching pairs
 
@@ -195,15 +200,112 @@ def release(robot: ProjectedRobot, arm: str) -> list[str]:
     return held
 
 
-def _squeezed(robot: ProjectedRobot, links: set[str], obj: WorldObject) -> bool:
-    """Whether ``links`` touch ``obj`` from opposing sides."""
-    points = robot.world.contact_points(robot.name, obj, distance=TOUCH)
-    normals = [p.normal_on_b for p in points if p.link_a in links and p.distance <= TOUCH]
+def _squeezed(
+    robot: ProjectedRobot, links: set[str], obj: WorldObject, reach: float = TOUCH
+) -> bool:
+    """Whether ``links`` touch ``obj`` (come within ``reach`` [m]) from opposing sides."""
+    points = robot.world.contact_points(robot.name, obj, distance=reach)
+    normals = [p.normal_on_b for p in points if p.link_a in links and p.distance <= reach]
     return any(
         sum(a * b for a, b in zip(n, m, strict=True)) < OPPOSED
         for i, n in enumerate(normals)
         for m in normals[i + 1 :]
     )
+
+
+def _depths(robot: ProjectedRobot, links: set[str], obj: WorldObject) -> dict[str, float]:
+    """How deep [m] each of ``links`` is in ``obj`` now (those touching it)."""
+    found: dict[str, float] = {}
+    for p in robot.world.contact_points(robot.name, obj, distance=0.0):
+        if p.link_a in links:
+            found[p.link_a] = max(found.get(p.link_a, 0.0), -p.distance)
+    return found
+
+
+def _sunk(
+    robot: ProjectedRobot, links: set[str], obj: WorldObject, start: dict[str, float]
+) -> str | None:
+    """The link of ``links`` sunk deeper than :data:`SINK` into ``obj`` since the closing
+    began (``start``: the depths then; a jaw that does not move keeps its own), if any: one
+    finger met it long before the other (an off-centre grasp, or a curved finger's hull)."""
+    now = _depths(robot, links, obj)
+    return next((k for k, d in now.items() if d > max(SINK, start.get(k, 0.0) + TOUCH)), None)
+
+
+def _held_between(
+    robot: ProjectedRobot,
+    arm: str,
+    links: set[str],
+    fraction: float,
+    obj: WorldObject,
+    start: dict[str, float],
+) -> None:
+    """Check that the closing stopped at ``fraction`` holds ``obj`` between the fingers:
+    squeezed, or, where a finger sank to :data:`SINK` first, the other side within the
+    hand's bound of it (the object would slide that far into the grip).
+
+    Raises:
+        GripperMetOneSide: one finger met ``obj`` and the other side is farther than
+            the bound; the fingers did not move.
+    """
+    states = robot.world.joint_states(robot.name)
+    before = {j: states[j] for j in gripper_joints(robot, arm)}
+    try:
+        _probe(robot, arm, fraction)
+        if _squeezed(robot, links, obj, HAND_CONTACT_DEPTH):
+            return
+        sunk = _sunk(robot, links, obj, start)
+        shift = _centring_shift(robot, arm, links, obj, fraction)
+    finally:
+        robot.world.set_joint_states(robot.name, before)
+    raise GripperMetOneSide(
+        f"{robot.name}'s {arm} gripper met {obj.name} on one side only: {sunk} is "
+        f"{SINK * 1000:.0f} mm in while no finger on the other side is within "
+        f"{HAND_CONTACT_DEPTH * 1000:.0f} mm; grasp it centred between the fingers",
+        gripper=arm,
+        position=gripper_of(robot, arm).at(fraction)[gripper_joints(robot, arm)[0]],
+        shift=shift,
+    )
+
+
+def _centring_shift(
+    robot: ProjectedRobot, arm: str, links: set[str], obj: WorldObject, fraction: float
+) -> tuple[float, float, float] | None:
+    """[m, map] how far to move the open hand so the fingers meet ``obj`` together, as
+    the gripper stands at ``fraction`` (one side in, the other ``gap`` away): along the
+    first side's contact normal (away from the object), by half the misfit when the other
+    side closes too, by the gap when it stays (a fixed jaw). None: no other side in sight."""
+    points = robot.world.contact_points(robot.name, obj, distance=CENTRING_REACH)
+    mine = [p for p in points if p.link_a in links]
+    first = min(mine, key=lambda p: p.distance, default=None)
+    if first is None:
+        return None
+    normal = first.normal_on_b
+    others = [
+        p for p in mine if sum(a * b for a, b in zip(normal, p.normal_on_b, strict=True)) < OPPOSED
+    ]
+    if not others:
+        return None
+    other = min(others, key=lambda p: p.distance)
+    moving = _moves_when_closing(robot, arm, other.link_a, fraction)
+    misfit = other.distance - first.distance  # [m] the gap plus the first side's depth
+    travel = misfit / 2 if moving else other.distance
+    return (normal[0] * travel, normal[1] * travel, normal[2] * travel)
+
+
+def _moves_when_closing(robot: ProjectedRobot, arm: str, link: str, fraction: float) -> bool:
+    """Whether ``link`` moves as the gripper closes from ``fraction`` (not a fixed jaw)."""
+    world = robot.world
+    here = world.link_pose(robot.name, link).position
+    _probe(robot, arm, max(fraction - 0.1, 0.0))
+    there = world.link_pose(robot.name, link).position
+    _probe(robot, arm, fraction)
+    return _moved(here, there) > 1e-8
+
+
+def _moved(a: Vector3, b: Vector3) -> float:
+    """The squared distance [m^2] between two points."""
+    return sum((p - q) ** 2 for p, q in zip(a, b, strict=True))
 
 
 def _near_hand(robot: ProjectedRobot, links: set[str]) -> list[WorldObject]:
@@ -239,9 +341,13 @@ def grip(robot: ProjectedRobot, arm: str) -> str:
         GripperPathBlocked: the fingers' way runs into something else; they did not move.
     """
     links = _squeezing_links(robot, arm)
+    near = _near_hand(robot, links)
+    depths = {obj.name: _depths(robot, links, obj) for obj in near}
     found = _closing_stop(
-        robot, arm, links, _near_hand(robot, links), lambda obj: _squeezed(robot, links, obj)
-    )
+        robot, arm, links, near,
+        lambda obj: _squeezed(robot, links, obj)
+        or _sunk(robot, links, obj, depths[obj.name]) is not None,
+    )  # fmt: skip
     if found is None:  # closes as closing does: fully, or onto a handle's bar
         closed = close_gripper(robot, arm)[gripper_joints(robot, arm)[0]]
         raise GripperClosedCompletely(
@@ -251,6 +357,7 @@ def grip(robot: ProjectedRobot, arm: str) -> str:
             position=closed,
         )
     fraction, held, touching = found
+    _held_between(robot, arm, links, fraction, held, depths[held.name])
     _move_to(robot, arm, fraction, touching)
     robot.world.attach(held, robot.name, robot.arm(arm).end_effector_link)
     return held.name

@@ -15,8 +15,9 @@ from __future__ import annotations
 import contextlib
 import math
 from collections.abc import Collection, Iterator
+from dataclasses import replace
 
-from robocram.execution.failures import NavigationPoseUnreachable
+from robocram.execution.failures import NavigationPathBlocked, NavigationPoseUnreachable
 from robocram.kinematics import BaseMotion
 from robocram.motion import (
     BASE_JOINTS,
@@ -25,6 +26,8 @@ from robocram.motion import (
     plan_base_path,
     time_parameterize,
 )
+from robocram.motion.hand_contact import HandContact
+from robocram.motion.hand_sweep import hand_breach
 from robocram.projection.errors import ProjectionError
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.projection.trajectory_follower import follow
@@ -41,11 +44,16 @@ def planar(pose: Pose, z: float) -> Pose:
 
 
 def drive(
-    robot: ProjectedRobot, target: PoseStamped | PoseLike, allowed_links: Collection[str] = ()
+    robot: ProjectedRobot,
+    target: PoseStamped | PoseLike,
+    allowed_links: Collection[str] = (),
+    hand: HandContact | None = None,
 ) -> Pose:
     """Put the robot's base at ``target`` (map unless stamped); return the reached pose.
 
-    ``allowed_links`` may touch things on the way (the hand holding a door's handle).
+    ``allowed_links`` may touch things on the way (the hand holding a door's handle);
+    ``hand`` bounds what they touch and how deep (a drive inside ``move_tcp``): the
+    planned drive is walked densely for it, and its trajectory stores the bound.
 
     Raises:
         NavigationPoseUnreachable: the robot would collide there, or its base is fixed
@@ -72,8 +80,35 @@ def drive(
     except NavigationPoseUnreachable as failure:
         failure.target = target
         raise
-    follow(robot, path.trajectory)
+    trajectory = path.trajectory
+    if hand is not None and allowed_links:
+        _hand_kept(robot, trajectory, hand, target)
+        allowances = (*trajectory.allowed_contacts, *hand.allowances())
+        trajectory = replace(trajectory, allowed_contacts=allowances)
+    follow(robot, trajectory)
     return goal
+
+
+def _hand_kept(
+    robot: ProjectedRobot, trajectory: JointTrajectory, hand: HandContact, target: object
+) -> None:
+    """Refuse a drive that takes the hand beyond its contact (:func:`hand_breach`).
+
+    Raises:
+        NavigationPathBlocked: names the hand link, what it goes into, how deep and where.
+    """
+    breach = hand_breach(robot.world, robot.name, trajectory, hand, robot.carried)
+    if breach is None:
+        return
+    allowed = (
+        f"its bound is {breach.bound * 1000:.0f} mm" if breach.bound else "it may not touch it"
+    )
+    raise NavigationPathBlocked(
+        f"{robot.name}'s drive takes its hand's {breach.link} {breach.depth * 1000:.1f} mm into "
+        f"{breach.other} ({allowed}) {breach.time:.2f} s along; the base stays",
+        target=target,
+        path_fraction=breach.time / trajectory.duration if trajectory.duration > 0 else 0.0,
+    )
 
 
 def unchecked_base_motion(robot: ProjectedRobot, goal: Pose) -> JointTrajectory:

@@ -9,14 +9,21 @@ close on it, which fails if the tool frame is not between the fingertips.
 from __future__ import annotations
 
 import math
+from itertools import combinations
 
 import numpy as np
 
 from robocram.execution import PlanFailure
+from robocram.execution.failures import GripperMetOneSide
 from robocram.kinematics import base_in_ik
 from robocram.motion.self_collision_matrix import SelfCollisionMatrix
 from robocram.projection.arm import move_joints, move_tcp
-from robocram.projection.gripper import close_gripper, grip, open_gripper, release
+from robocram.projection.gripper import (
+    close_gripper,
+    grip,
+    open_gripper,
+    release,
+)
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robot_check.report_card import CheckResult
 from robocram.robots import ArmDescription
@@ -191,11 +198,15 @@ def reach_and_grip(robot: ProjectedRobot, key: str, arm: ArmDescription) -> list
 def _grip(robot: ProjectedRobot, key: str, tool: Pose) -> CheckResult:
     name = f"{key} arm: grip"
     x, y, z = tool.position
-    probe = robot.world.add_item("robot_check_mug", "mug", pose=(x, y, z - GRASP_HEIGHT))
+    open_gripper(robot, key)
+    turned = quat.from_euler(0.0, 0.0, _opening_yaw(robot, key))  # the handle out of the way
+    probe = robot.world.add_item("robot_check_mug", "mug", Pose((x, y, z - GRASP_HEIGHT), turned))
     try:
-        open_gripper(robot, key)
-        held = grip(robot, key)
-        return CheckResult(name, True, f"closed on {held} at the tool frame", "")
+        held, moved = _centred_grip(robot, key, tool)
+        where = (
+            "at the tool frame" if moved < 1e-4 else f"with the hand centred {moved * 1000:.0f} mm"
+        )
+        return CheckResult(name, True, f"closed on {held} {where}", "")
     except PlanFailure as failure:
         fix = "put the tool frame between the fingertips (where an object is held)"
         return CheckResult(name, False, str(failure), fix)
@@ -203,6 +214,43 @@ def _grip(robot: ProjectedRobot, key: str, tool: Pose) -> CheckResult:
         release(robot, key)
         robot.world.remove(probe)
         open_gripper(robot, key)
+
+
+def _centred_grip(robot: ProjectedRobot, key: str, tool: Pose) -> tuple[str, float]:
+    """Grip as the pick-up plan does: where the fingers meet the object on one side only,
+    move the hand by the shift the failure names and grip again (twice at most). What was
+    gripped and how far [m] the hand moved."""
+    for _ in range(2):
+        try:
+            return grip(robot, key), float(
+                np.linalg.norm(np.subtract(tool.position, _at(robot, key)))
+            )
+        except GripperMetOneSide as one_sided:
+            if one_sided.shift is None:
+                raise
+            x, y, z = _at(robot, key)
+            dx, dy, dz = one_sided.shift
+            move_tcp(robot, key, Pose((x + dx, y + dy, z + dz), tool.orientation))
+    return grip(robot, key), float(np.linalg.norm(np.subtract(tool.position, _at(robot, key))))
+
+
+def _at(robot: ProjectedRobot, key: str) -> tuple[float, float, float]:
+    """Where ``key``'s tool frame is [m, map]."""
+    position = robot.world.link_pose(robot.name, robot.arm(key).tool_frame).position
+    return (float(position[0]), float(position[1]), float(position[2]))
+
+
+def _opening_yaw(robot: ProjectedRobot, key: str) -> float:
+    """[rad] the heading of the line through the two gripper links farthest apart: a mug
+    turned so that its x axis lies along it keeps its handle (+y) clear of the fingers, as
+    the grasp model's top grasps do."""
+    arm = robot.arm(key)
+    links = [link for link in arm.gripper_links if link in robot.body.link_index]
+    points = [np.asarray(robot.world.link_pose(robot.name, link).position) for link in links]
+    if len(points) < 2:
+        return 0.0
+    a, b = max(combinations(points, 2), key=lambda p: float(np.linalg.norm(p[0] - p[1])))
+    return math.atan2(float(a[1] - b[1]), float(a[0] - b[0]))
 
 
 def _fmt(point: tuple[float, float, float]) -> str:

@@ -57,6 +57,19 @@ class GripperClosedCompletely(GripperLowLevelFailure):
     hint = "perceive the object again and regrasp"
 
 
+class GripperMetOneSide(GripperClosedCompletely):
+    """One finger sank into the object before the other side came near: no grip.
+
+    ``shift`` [m, map] moves the open hand so that the fingers meet the object together (a
+    plan recovers by moving the tool by it and gripping again, as a robot centres its hand
+    on what it sees between the fingers).
+    """
+
+    shift: tuple[float, float, float] | None = None
+    summary = "the gripper met the object on one side only, so it holds nothing"
+    hint = "grasp the object centred between the fingers, or take another grasp"
+
+
 class GripperGoalNotReached(GripperLowLevelFailure):
     """The gripper stopped away from the commanded opening."""
 
