@@ -30,6 +30,7 @@ from robocram.projection.tool_motion import PathPose, answer, plan_from_start, t
 from robocram.projection.trajectory_follower import follow
 from robocram.tf import Pose, PoseLike
 from robocram.world import World
+from robocram.world.kinematic_body import kinematic
 
 ML_PER_PARTICLE = 2.0  # [ml] of contents one particle stands for
 PARTICLE_RADIUS = 0.005  # [m]
@@ -37,7 +38,8 @@ PARTICLE_MASS = 0.002  # [kg]
 MAX_PARTICLES = 400  # more is refused (each is a body stepped by physics)
 WALL = 0.006  # [m] a container's wall and bottom, kept clear when filling and counting
 RIM_MARGIN = 0.02  # [m] a particle this far above the target's rim still counts as in it
-SETTLE_TIME = 1.5  # [s] of physics for the particles to come to rest, before and after
+SETTLE_BEFORE = 0.3  # [s] of physics for the particles to settle in the source
+SETTLE_TIME = 1.5  # [s] at most for the poured particles to come to rest
 PARTICLE_COLOUR = (0.95, 0.85, 0.55, 1.0)
 
 
@@ -128,9 +130,10 @@ def pour(
     seed = robot.motion.seed
     names = _fill(world, source, count, seed)
     try:
-        world.simulate(SETTLE_TIME, stop_check=checkpoint)
-        _follow_with_physics(robot, planned.motion.trajectory)
-        world.simulate(SETTLE_TIME, stop_check=checkpoint)
+        with kinematic(world, source):  # the hand moves it; the grains do not push it
+            world.simulate(SETTLE_BEFORE, stop_check=checkpoint)
+            _follow_with_physics(robot, planned.motion.trajectory)
+            _settle(world, names)
         landed = _landed(world, target, names)
     finally:
         for name in names:
@@ -166,6 +169,20 @@ def _follow_with_physics(robot: ProjectedRobot, trajectory: JointTrajectory) -> 
         world.set_joint_states(robot.name, dict(zip(trajectory.joint_names, values, strict=True)))
         world.step()
     follow(robot, trajectory)
+
+
+def _settle(world: World, names: list[str]) -> None:
+    """Run physics until no particle moves more than 1 mm in 0.1 s, or :data:`SETTLE_TIME`."""
+    look = max(1, round(0.1 / world.time_step))
+    before = [world.pose(n).position for n in names]
+    for _ in range(math.ceil(SETTLE_TIME / (look * world.time_step))):
+        for _ in range(look):
+            checkpoint()
+            world.step()
+        now = [world.pose(n).position for n in names]
+        if all(math.dist(a, b) <= 0.001 for a, b in zip(before, now, strict=True)):
+            return
+        before = now
 
 
 def _landed(world: World, target: str, names: list[str]) -> int:
