@@ -7,8 +7,9 @@ from dataclasses import dataclass
 
 from robocram.designators import a
 from robocram.execution import perform
+from robocram.projection import simulated_robot
 from robocram.scenes import tabletop_scene
-from robocram.scenes.tool_objects import add_tool_object, hold
+from robocram.scenes.tool_objects import add_tool_object
 from robocram.tf import Pose
 from robocram.world import World
 
@@ -19,7 +20,7 @@ GRIPS = {
     "spoon": ((-0.05, 0.0, 0.3), DOWN, Pose((0.13, 0.0, 0.0), UPRIGHT_IN_DOWN)),
     "sponge": ((-0.05, 0.0, 0.2), DOWN, Pose((0.01, 0.0, 0.0), UPRIGHT_IN_DOWN)),
     "knife": ((-0.2, 0.0, 0.25), DOWN, Pose((0.0, 0.0, 0.0), UPRIGHT_IN_DOWN)),
-    "cup": ((-0.15, 0.1, 0.15), (0.0, 0.0, 0.0, 1.0), Pose((0.0, 0.0, -0.05))),
+    "cup": ((-0.15, -0.05, 0.2), (0.0, 0.0, 0.0, 1.0), Pose((0.0, 0.0, -0.05))),
 }
 
 
@@ -34,19 +35,24 @@ class ToolScene:
 
 
 def tool_scene(robot: str, tool: str, arm: str = "right") -> ToolScene:
-    """A tabletop for ``robot`` without its mug; ``arm`` holds a ``tool`` (``<tool>-1``)."""
+    """A tabletop for ``robot`` without its mug and bottle; ``arm`` has gripped a
+    ``tool`` (``<tool>-1``) put between its open fingers, over the table."""
     scene = tabletop_scene(robot)
     world = scene.world
     world.remove("mug-1")
     world.remove("bottle-1")
     x, y, h = scene.look_target.pose.position
     offset, down, object_in_tcp = GRIPS[tool]
-    from robocram.projection import simulated_robot
-
+    name = f"{tool}-1"
     with simulated_robot(world, scene.robot):
         perform(a.motion(type="moving-torso", joint_angle=0.2))
         target = Pose((x + offset[0], y + offset[1], h + offset[2]), down)
         perform(a.motion(type="moving-tcp", arm=arm, target=target))
-    add_tool_object(world, f"{tool}-1", tool, Pose((0.0, 0.0, 5.0)))
-    hold(world, scene.robot, arm, f"{tool}-1", object_in_tcp)
+        perform(a.motion(type="opening", gripper=arm))
+        spec = world.robot(scene.robot).description.arms[arm]
+        tcp = world.link_pose(scene.robot, spec.tool_frame)
+        add_tool_object(world, name, tool, tcp * object_in_tcp)
+        gripped = perform(a.motion(type="gripping", gripper=arm))
+    if gripped != name:
+        raise AssertionError(f"{robot}'s {arm} hand gripped {gripped!r}, not {name!r}")
     return ToolScene(world, scene.robot, arm, (x, y, h))

@@ -7,8 +7,9 @@ the source, at seeded spots, and settle there; the arm follows the planned traje
 while physics runs (the robot's joints set at every physics step, the source riding in
 the hand), and the particles settle again afterwards. Each particle counts as landed
 when its centre is inside the target's opening (the cylinder within its walls, up to its
-rim plus a margin), else as spilled. The particles are then taken out of the world: the
-world keeps no contents, only the count says what was poured.
+rim plus a margin), else as spilled. The particles stay where they settled (objects of
+type ``particle``, named ``<source>-contents-<k>``): the target's contents, and what
+spilled.
 """
 
 from __future__ import annotations
@@ -29,7 +30,7 @@ from robocram.projection.projected_robot import ProjectedRobot
 from robocram.projection.tool_motion import PathPose, answer, plan_from_start, tool_grip
 from robocram.projection.trajectory_follower import follow
 from robocram.tf import Pose, PoseLike
-from robocram.world import World
+from robocram.world import ShapeSpec, World
 from robocram.world.kinematic_body import kinematic
 
 ML_PER_PARTICLE = 2.0  # [ml] of contents one particle stands for
@@ -129,15 +130,11 @@ def pour(
     planned = plan_from_start(robot, grip, path)
     seed = robot.motion.seed
     names = _fill(world, source, count, seed)
-    try:
-        with kinematic(world, source):  # the hand moves it; the grains do not push it
-            world.simulate(SETTLE_BEFORE, stop_check=checkpoint)
-            _follow_with_physics(robot, planned.motion.trajectory)
-            _settle(world, names)
-        landed = _landed(world, target, names)
-    finally:
-        for name in names:
-            world.remove(name)
+    with kinematic(world, source):  # the hand moves it; the grains do not push it
+        world.simulate(SETTLE_BEFORE, stop_check=checkpoint)
+        _follow_with_physics(robot, planned.motion.trajectory)
+        _settle(world, names)
+    landed = _landed(world, target, names)
     return PouringAnswer(answer(robot, grip, planned), count, landed, count - landed)
 
 
@@ -147,9 +144,8 @@ def _fill(world: World, source: str, count: int, seed: int) -> list[str]:
     names = []
     for k, spot in enumerate(particle_spots(Opening.of(world, source), count, seed)):
         name = f"{source}-contents-{k}"
-        world.add_sphere(
-            name, PARTICLE_RADIUS, pose * Pose(spot), mass=PARTICLE_MASS, color=PARTICLE_COLOUR
-        )
+        spec = ShapeSpec("sphere", (2 * PARTICLE_RADIUS,) * 3, PARTICLE_MASS, PARTICLE_COLOUR)
+        world.add_object(name, "particle", spec, pose * Pose(spot))
         names.append(name)
     return names
 

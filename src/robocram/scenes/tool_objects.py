@@ -4,8 +4,7 @@ Each is made of simple shapes so PyBullet collides it as it is: the cup is hollo
 holds the particles a pour simulates), the knife a handle with a thin blade, the spoon a
 stick with a flat head (``tools/make_tool_urdfs.py`` writes their URDFs into
 ``tool_data/``). The sponge and the loaf are boxes; the bowl is the catalogue's hollow
-bowl. :func:`hold` puts an object into a hand as a grasp would leave it, for scenes that
-start with the robot holding its tool.
+bowl.
 """
 
 from __future__ import annotations
@@ -15,7 +14,7 @@ from pathlib import Path
 from types import MappingProxyType
 
 from robocram.scenes.errors import SceneError
-from robocram.tf import Pose, PoseLike
+from robocram.tf import PoseLike
 from robocram.world import ShapeSpec, UrdfSpec, World, WorldObject
 from robocram.world.body_spec import BodySpec
 
@@ -58,12 +57,3 @@ def add_tool_object(world: World, name: str, kind: str, pose: PoseLike) -> World
     if spec is None:
         raise UnknownToolKind(kind, tool_kinds())
     return world.add_object(name, kind, spec, pose)
-
-
-def hold(world: World, robot: str, arm: str, name: str, object_in_tcp: PoseLike) -> None:
-    """Put object ``name`` at ``object_in_tcp`` in ``arm``'s tool frame and attach it to
-    the arm's end effector, as a grasp leaves it (the hand does not move)."""
-    spec = world.robot(robot).description.arms[arm]
-    tcp = world.link_pose(robot, spec.tool_frame)
-    world.set_pose(name, tcp * Pose.coerce(object_in_tcp))
-    world.attach(name, robot, spec.end_effector_link)
