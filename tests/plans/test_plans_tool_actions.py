@@ -89,7 +89,9 @@ def _replayed_cells(
     body, cid = world.object("sponge-1").body_id, world.physics_client()
     for trajectory in trajectories:
         for point in trajectory.points:
-            world.set_joint_states("pr2", dict(zip(trajectory.joint_names, point.positions)))
+            world.set_joint_states(
+                "pr2", dict(zip(trajectory.joint_names, point.positions, strict=True))
+            )
             low, high = pybullet.getAABB(body, physicsClientId=cid)
             if low[2] <= top + 0.001:
                 marked |= (gx >= low[0]) & (gx <= high[0]) & (gy >= low[1]) & (gy <= high[1])
@@ -153,10 +155,10 @@ def test_mixing_keeps_the_spoon_clear_of_the_rim(tmp_path: Path) -> None:
     nearest = math.inf
     for trajectory in (t for t in seen if t.kind == "tool-path"):
         points = np.array([p.positions for p in trajectory.points])
-        for a, b in zip(points, points[1:]):
+        for a, b in zip(points, points[1:], strict=False):
             for s in np.linspace(0.0, 1.0, 4, endpoint=False):  # between the points too
                 q = a + (b - a) * s
-                world.set_joint_states("pr2", dict(zip(trajectory.joint_names, q)))
+                world.set_joint_states("pr2", dict(zip(trajectory.joint_names, q, strict=True)))
                 found = pybullet.getClosestPoints(spoon, bowl, 0.05, physicsClientId=cid)
                 nearest = min([nearest, *(p[8] for p in found)])
     assert nearest > 0.0
