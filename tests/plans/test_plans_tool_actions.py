@@ -17,8 +17,8 @@ import pybullet
 import pytest
 
 from robocram.designators import an
-from robocram.execution import perform
 from robocram.motion import JointTrajectory, trajectory_listener
+from robocram.plans import perform
 from robocram.plans.tool_failures import TargetCovered
 from robocram.plans.tool_results import CuttingResult, PouringResult, WipingResult
 from robocram.projection import simulated_robot
