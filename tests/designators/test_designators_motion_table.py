@@ -36,6 +36,13 @@ SAMPLES: dict[str, object] = {
     "part": "kitchen",
     "joint": "drawer_1_joint",
     "handle": "drawer_1_handle",
+    "path": [(1.0, 0.0, 1.0), (1.1, 0.0, 1.0)],
+    "tool": "knife-1",
+    "source": "cup-1",
+    "destination": "bowl-1",
+    "amount": 50.0,
+    "item": "bread-1",
+    "cuts": [0.0],
 }
 
 
@@ -64,7 +71,7 @@ def test_every_table_command_is_grounded_from_its_required_properties(
 
 def test_the_table_has_one_entry_per_type_and_flying_is_its_own_family() -> None:
     assert [m.type for m in motion_types("flying")] == ["flying", "distance-sensing"]
-    assert len(motion_types()) == len(MOTION_TYPES) == 14
+    assert len(motion_types()) == len(MOTION_TYPES) == 17
     assert set(commands_of(MOTION_TYPES, "arms")) == {
         ("move_tcp", 4),
         ("move_tcp_both", 3),

@@ -111,6 +111,50 @@ def _looking() -> MotionType:
     )
 
 
+_PATH = MotionProperty("path", (list, tuple), "a list of poses (map) of the tool point")
+_POINT = MotionProperty(
+    "tool_point", (Pose, tuple, list), "the tool point's pose in the tool's frame", default="none"
+)
+_CONTACTS = MotionProperty(
+    "contacts", (list, tuple), "[[object, depth], ...]: what the tool may touch [m]",
+    default="none",
+)  # fmt: skip
+
+
+def _tool_motions() -> tuple[MotionType, ...]:
+    """Motions of a held tool along a path (resource ``tools``, docs/tool_actions.md)."""
+    path = (_atom("arm"), _PATH, _POINT)
+    return (
+        MotionType(
+            "moving-tool-path",
+            (*path, _atom("tool"), _CONTACTS),
+            (Command("move_tool_path", ("arm", "path", "tool", "tool_point", "contacts")),),
+            "tools",
+            Answer.GOAL,
+        ),
+        MotionType(
+            "pouring",
+            (*path, _atom("source"), _atom("destination"), _number("amount", "[ml]")),
+            (Command("pour", ("arm", "path", "source", "tool_point", "destination", "amount")),),
+            "tools",
+            Answer.GOAL,
+        ),
+        MotionType(
+            "cutting",
+            (
+                *path,
+                _atom("tool"),
+                _CONTACTS,
+                _atom("item"),
+                MotionProperty("cuts", (list, tuple), "offsets [m] along the object's axis"),
+            ),
+            (Command("cut", ("arm", "path", "tool", "tool_point", "contacts", "item", "cuts")),),
+            "tools",
+            Answer.GOAL,
+        ),
+    )
+
+
 def _table() -> tuple[MotionType, ...]:
     return (
         MotionType(
@@ -164,6 +208,7 @@ def _table() -> tuple[MotionType, ...]:
             "arms",
             Answer.GOAL,
         ),
+        *_tool_motions(),
         MotionType(
             "flying",
             (_target("target"),),

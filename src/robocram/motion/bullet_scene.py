@@ -6,7 +6,8 @@ the robot touching what it holds, the contacts its description allows
 (``allowed_contacts``: anything on the floor), contacts the motion starts with
 (``allowed_pairs``) and the ``allowed_links`` do not count; the hand of CRAM's
 ``allow_hand`` (a :class:`~robocram.motion.hand_contact.HandContact`) may touch only what it
-acts on, no deeper than its bound.
+acts on, no deeper than its bound. A held tool's contacts (``contacts``: a sponge on the
+table, a knife in the bread it cuts) are allowed by name, each up to its own depth.
 Slower than a coal snapshot, but it sees exactly what projection sees: it checks straight
 segments and tool lines, and tests use it as the judge of planned paths.
 """
@@ -21,6 +22,7 @@ from numpy.typing import NDArray
 
 from robocram.motion.allowed_contacts import AllowedContacts, Other
 from robocram.motion.configuration_checker import Configuration, LinkPair
+from robocram.motion.contact_allowance import ContactAllowance
 from robocram.motion.errors import MotionError
 from robocram.motion.hand_contact import HandContact, contact_depth
 from robocram.motion.joint_levers import LeverData, cross, links_below
@@ -43,8 +45,10 @@ class BulletScene:
         distance: float = 0.0,
         allowed_pairs: Collection[LinkPair] = (),
         hand: HandContact | None = None,
+        contacts: Collection[ContactAllowance] = (),
     ) -> None:
         self.world = world
+        self.contacts = tuple(contacts)  # held objects' named contacts, each bounded
         self.hand = hand  # the hand's bounded contact (allow_hand), None: no such contact
         self.robot = robot
         self._joints = tuple(joints)
@@ -225,8 +229,25 @@ class BulletScene:
             skip = [world.robot(self.robot), *(h for h in held if h is not item), *anywhere]
             for _, obj, other_link, gap in world.link_distances(item, skip, reach, obstacles=boxes):
                 if (item.name, _named(world, obj, other_link)) not in self.allowed_pairs:
+                    gap += self._tool_depth(item.name, obj, other_link)  # clear until deeper
                     gaps[item.name] = min(gaps.get(item.name, reach), gap - self.distance)
         return gaps
+
+    def _tool_depth(self, held: str, obj: WorldObject, other_link: str) -> float:
+        """How deep [m] held object ``held`` may go into ``obj`` by the named contacts
+        (0: not at all)."""
+        return max(
+            (c.depth for c in self.contacts if c.covers(held, obj.name, other_link)), default=0.0
+        )
+
+    def _tool_too_deep(self, held: WorldObject, obj: WorldObject, other_link: str) -> bool:
+        """Whether ``held`` is deeper in ``obj`` than its named contacts allow (any
+        contact at all when none names the pair)."""
+        bound = self._tool_depth(held.name, obj, other_link)
+        if bound <= 0.0:
+            return True
+        points = self.world.contact_points(held, obj, None, other_link or None, 0.0)
+        return max((-p.distance for p in points), default=0.0) > bound
 
     def _counts(self, link: str, obj: WorldObject, other_link: str) -> bool:
         """Whether robot ``link`` touching ``obj`` is a collision (rules, start contacts,
@@ -282,7 +303,7 @@ class BulletScene:
                 item, skip, self.distance, obstacles=boxes
             ):
                 pair = (item.name, _named(world, obj, other_link))
-                if pair not in self.allowed_pairs:
+                if pair not in self.allowed_pairs and self._tool_too_deep(item, obj, other_link):
                     hits[pair] = None
                     if first_only:
                         return list(hits)

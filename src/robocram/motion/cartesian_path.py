@@ -14,7 +14,7 @@ the kitchen's tool lines the tool stays within 0.95 mm of the line (0.38 mm medi
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -104,11 +104,30 @@ def cartesian_path(
 
     ``current`` holds every joint's value now; the checker's joints are the ones moved.
     """
+    poses = line_poses(tool_in_base, target_in_base, max_step, max_rotation)
+    return follow_poses(
+        desc, arm, checker, current, poses, bound,
+        random_seed=random_seed, jump_threshold=jump_threshold,
+    )  # fmt: skip
+
+
+def follow_poses(
+    desc: LoadedDescription,
+    arm: str,
+    checker: ConfigurationChecker,
+    current: Mapping[str, float],
+    poses: Sequence[Pose],
+    bound: TravelBound,
+    *,
+    random_seed: int = 0,
+    jump_threshold: float = JUMP_THRESHOLD,
+) -> CartesianPath:
+    """Follow ``arm``'s tool through ``poses`` (the robot's root link, each a small step
+    from the one before), as far as IK and the checker allow; the fraction is of poses."""
     joints = checker.joints
     q = np.array([current[j] for j in joints])
     waypoints = [tuple(q.tolist())]
     counter = CheckCounter()
-    poses = line_poses(tool_in_base, target_in_base, max_step, max_rotation)
     stopped = ""
     answers = track_ik(desc, arm, poses, current, random_seed=random_seed)
     clearance = _Clearance(checker)
@@ -132,6 +151,6 @@ def cartesian_path(
                 break
             q = nxt
             waypoints.append(tuple(q.tolist()))
-    fraction = (len(waypoints) - 1) / len(poses)
+    fraction = (len(waypoints) - 1) / max(len(poses), 1)
     path = JointPath(joints, tuple(waypoints), "cartesian", counter.checks)
     return CartesianPath(path, fraction, stopped)

@@ -40,6 +40,7 @@ from robocram.plans.fetch import fetch
 from robocram.plans.pick_object import grasp_object, pick_up_object
 from robocram.plans.place_object import place_object
 from robocram.plans.search import search
+from robocram.plans.tool_actions import cut, mix, pour, wipe
 from robocram.plans.transport import transport
 
 ACTIONS_GROUP = "robocram_actions"
@@ -72,6 +73,10 @@ ACTIONS = ActionTable.of(
         ("arm", "grasp", "stand_retries", "place_retries", "placing_stands"),
         transport,
     ),
+    ActionType("pouring", ("source", "target", "amount"), ("arm",), pour),
+    ActionType("wiping", ("surface", "region", "tool"), ("arm",), wipe),
+    ActionType("cutting", ("object", "tool", "slices"), ("arm",), cut),
+    ActionType("mixing", ("container", "tool"), ("arm", "turns"), mix),
 )
 ACTION_TYPES: Mapping[str, ActionType] = ACTIONS.types
 use_default_actions(ACTIONS)  # PERFORM runs these by their plans wherever plans are imported

@@ -14,6 +14,9 @@ grounds for its resource, one method per command, dispatched by
 - arms: ``move_tcp(Arm, Pose, Mode, Touching)``, ``move_tcp_both(Left, Right, Mode)``,
   ``move_joints(Arm, Config)``, ``move_joints_both(Left, Right)``,
   ``move_part(Arm, Part, Joint, Handle, Goal)`` (open or close a drawer or door)
+- tools: ``move_tool_path(Arm, Path, Tool, Point, Contacts)``,
+  ``pour(Arm, Path, Source, Point, Target, Amount)``,
+  ``cut(Arm, Path, Tool, Point, Contacts, Object, Cuts)`` (docs/tool_actions.md)
 - flying: ``fly(Pose)``; distance sensor: ``sense_distance(Direction)`` [body frame]
 
 Arm and gripper words are the robot's arm names or the sides ``left``/``right``
@@ -28,16 +31,20 @@ from typing import ClassVar
 import numpy as np
 
 from robocram.designators import SIDES, ObjectDesignator
+from robocram.designators.tool_answers import CuttingAnswer, PouringAnswer, ToolPathAnswer
 from robocram.execution import MotionProcessModule
 from robocram.projection.arm import move_joints, move_tcp
 from robocram.projection.articulation import move_part
+from robocram.projection.cutting import cut
 from robocram.projection.errors import ProjectionError
 from robocram.projection.flying import fly, sense_distance
 from robocram.projection.gripper import close_gripper, grip, open_gripper, set_gripper
 from robocram.projection.navigation import drive
 from robocram.projection.neck import look_at
 from robocram.projection.perception import detect
+from robocram.projection.pouring import pour
 from robocram.projection.projected_robot import ProjectedRobot
+from robocram.projection.tool_motion import PathPose, follow_tool_path
 from robocram.projection.torso import move_torso
 from robocram.tf import Pose, PoseLike, PoseStamped, Vector3
 
@@ -184,6 +191,59 @@ class ArmPM(ProjectionProcessModule):
         return move_part(self.robot, self._arm(arm), part, joint, handle, float(goal)).reached
 
 
+def _named(word: str) -> str | None:
+    return None if word == "none" else str(word)
+
+
+def _point(point: object) -> PoseLike | None:
+    if point == "none":
+        return None
+    return Pose.coerce(point)  # type: ignore[arg-type]  # a pose or its tuples; Pose says
+
+
+class ToolPM(ProjectionProcessModule):
+    """Held tools along paths: ``move_tool_path``, ``pour`` and ``cut``."""
+
+    name = "projection_tools"
+    resource = "tools"
+
+    def _arm(self, word: str) -> str:
+        return self.robot.description.arm_called(word)
+
+    def move_tool_path(
+        self, arm: str, path: Sequence[PathPose], tool: str, point: object, contacts: object
+    ) -> ToolPathAnswer:
+        """Move the held ``tool``'s ``point`` along ``path``, touching only ``contacts``."""
+        robot, named = self.robot, _named(tool)
+        return follow_tool_path(robot, self._arm(arm), path, named, _point(point), contacts)
+
+    def pour(
+        self,
+        arm: str,
+        path: Sequence[PathPose],
+        source: str,
+        point: object,
+        target: str,
+        amount: float,
+    ) -> PouringAnswer:
+        """Tilt the held ``source`` along ``path`` over ``target``, pouring ``amount`` [ml]."""
+        return pour(self.robot, self._arm(arm), path, source, _point(point), target, amount)
+
+    def cut(
+        self,
+        arm: str,
+        path: Sequence[PathPose],
+        tool: str,
+        point: object,
+        contacts: object,
+        obj: str,
+        cuts: Sequence[float],
+    ) -> CuttingAnswer:
+        """Saw ``obj`` with the held ``tool`` along ``path``, at ``cuts`` along its axis."""
+        arm_name = self._arm(arm)
+        return cut(self.robot, arm_name, path, tool, _point(point), contacts, obj, cuts)
+
+
 class FlyingPM(ProjectionProcessModule):
     """The body of a flying robot: ``fly(Pose)``."""
 
@@ -215,6 +275,7 @@ PROJECTION_MODULES: dict[str, type[ProjectionProcessModule]] = {
         PerceptionPM,
         GripperPM,
         ArmPM,
+        ToolPM,
         FlyingPM,
         DistanceSensorPM,
     )

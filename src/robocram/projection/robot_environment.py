@@ -36,6 +36,11 @@ def install_motions(kb: KnowledgeBase, desc: RobotDescription) -> KnowledgeBase:
     return kb
 
 
+def with_tools(resources: tuple[str, ...]) -> tuple[str, ...]:
+    """``resources`` and, where the robot has arms, ``tools`` (held tools along paths)."""
+    return (*resources, "tools") if "arms" in resources else resources
+
+
 def projection_environment(
     world: World,
     robot: str | RobotObject | None = None,
@@ -49,7 +54,7 @@ def projection_environment(
     """
     projected = ProjectedRobot.of(world, robot, motion)
     desc = projected.description
-    resources = desc.resources()
+    resources = with_tools(desc.resources())
     kb = install_motions(world.kb, desc)
     install_grasp_predicates(kb, world)
     return Environment(

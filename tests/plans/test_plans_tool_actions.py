@@ -1,0 +1,167 @@
+"""The tool actions on the PR2, judged by raw PyBullet and the trace audit.
+
+Pouring lands most particles in the bowl and a covered bowl fails naming its cover;
+wiping covers the region (cells marked under the sponge's own bounds, read from PyBullet,
+where it touches the table); cutting gives the slices asked for, of even widths; the
+spoon never comes nearer the bowl than it may; the wipe and the stir pass the audit.
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+from pathlib import Path
+
+import numpy as np
+import pybullet
+import pytest
+
+from robocram.designators import an
+from robocram.motion import JointTrajectory, trajectory_listener
+from robocram.plans import perform
+from robocram.plans.tool_failures import TargetCovered
+from robocram.plans.tool_results import CuttingResult, PouringResult, WipingResult
+from robocram.projection import simulated_robot
+from robocram.scenes.tool_objects import add_tool_object
+from robocram.tf import Pose
+from robocram.traces import TraceDatabase, trace_to
+from robocram.traces.trajectory_audit import audit_runs
+from robocram.world import World
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from tool_setup import tool_scene  # noqa: E402
+
+BOWL_INSIDE = 0.074  # [m] the catalogue bowl's radius within its wall
+BOWL_RIM = 0.06  # [m]
+
+
+def _raw_position(world: World, name: str) -> tuple[float, float, float]:
+    pos, _ = pybullet.getBasePositionAndOrientation(
+        world.object(name).body_id, physicsClientId=world.physics_client()
+    )
+    return (pos[0], pos[1], pos[2])
+
+
+def test_pouring_lands_the_particles_in_the_bowl() -> None:
+    scene = tool_scene("pr2", "cup")
+    x, y, h = scene.spot
+    add_tool_object(scene.world, "bowl-1", "bowl", Pose((x + 0.05, y - 0.1, h)))
+    with simulated_robot(scene.world, scene.robot):
+        result = perform(an.action(type="pouring", source="cup-1", target="bowl-1", amount=60))
+    assert isinstance(result, PouringResult)
+    world = scene.world
+    bowl = _raw_position(world, "bowl-1")
+    grains = [o.name for o in world.objects("particle")]
+    inside = 0
+    for name in grains:
+        px, py, pz = _raw_position(world, name)
+        if math.hypot(px - bowl[0], py - bowl[1]) < BOWL_INSIDE and pz < bowl[2] + BOWL_RIM:
+            inside += 1
+    assert len(grains) == result.particles == 30
+    assert inside == result.landed and inside >= 0.9 * len(grains)
+    assert result.spilled == len(grains) - inside
+    assert result.fraction == 1.0
+
+
+def test_pouring_into_a_covered_bowl_fails_naming_the_cover() -> None:
+    scene = tool_scene("pr2", "cup")
+    x, y, h = scene.spot
+    world = scene.world
+    add_tool_object(world, "bowl-1", "bowl", Pose((x + 0.05, y - 0.1, h)))
+    world.add_item("plate-1", "plate", Pose((x + 0.05, y - 0.1, h + BOWL_RIM + 0.0105)))
+    before = world.joint_states(scene.robot)
+    with simulated_robot(world, scene.robot), pytest.raises(TargetCovered) as caught:
+        perform(an.action(type="pouring", source="cup-1", target="bowl-1", amount=60))
+    assert (caught.value.target, caught.value.cover) == ("bowl-1", "plate-1")
+    assert world.joint_states(scene.robot) == before  # refused before anything moved
+
+
+def _replayed_cells(
+    world: World, trajectories: list[JointTrajectory], region: tuple[float, ...], top: float
+) -> float:
+    """The share of the region's 5 mm cells under the sponge's PyBullet bounds at a
+    trajectory point where the bounds reach the table top."""
+    x, y, sx, sy = region
+    xs = np.arange(x - sx / 2 + 0.0025, x + sx / 2, 0.005)
+    ys = np.arange(y - sy / 2 + 0.0025, y + sy / 2, 0.005)
+    gx, gy = np.meshgrid(xs, ys, indexing="ij")
+    marked = np.zeros(gx.shape, dtype=bool)
+    body, cid = world.object("sponge-1").body_id, world.physics_client()
+    for trajectory in trajectories:
+        for point in trajectory.points:
+            world.set_joint_states(
+                "pr2", dict(zip(trajectory.joint_names, point.positions, strict=True))
+            )
+            low, high = pybullet.getAABB(body, physicsClientId=cid)
+            if low[2] <= top + 0.001:
+                marked |= (gx >= low[0]) & (gx <= high[0]) & (gy >= low[1]) & (gy <= high[1])
+    return float(marked.mean())
+
+
+def test_wiping_covers_the_region_and_touches_only_the_table(tmp_path: Path) -> None:
+    scene = tool_scene("pr2", "sponge")
+    x, y, h = scene.spot
+    seen: list[JointTrajectory] = []
+    region = ((x, y), (0.2, 0.14))
+    with (
+        trace_to(tmp_path / "wipe.db", world=scene.world),
+        trajectory_listener(seen.append),
+        simulated_robot(scene.world, scene.robot),
+    ):
+        result = perform(an.action(type="wiping", surface="table", region=region, tool="sponge-1"))
+    assert isinstance(result, WipingResult) and result.fraction == 1.0
+    paths = [t for t in seen if t.kind == "tool-path"]
+    covered = _replayed_cells(scene.world, paths, (x, y, 0.2, 0.14), h)
+    assert covered >= 0.9 and result.covered >= 0.9
+    assert abs(covered - result.covered) < 0.1
+    with TraceDatabase(tmp_path / "wipe.db") as db:
+        report = audit_runs(db)
+    assert not report.findings, report.summary_lines()
+
+
+def test_cutting_gives_the_slices_of_even_widths() -> None:
+    scene = tool_scene("pr2", "knife")
+    x, y, h = scene.spot
+    world = scene.world
+    add_tool_object(world, "bread-1", "bread", Pose((x, y, h + 0.04)))
+    with simulated_robot(world, scene.robot):
+        result = perform(an.action(type="cutting", object="bread-1", tool="knife-1", slices=4))
+    assert isinstance(result, CuttingResult) and len(result.slices) == 4
+    assert "bread-1" not in [o.name for o in world.objects()]
+    cid = world.physics_client()
+    widths = []
+    for name in result.slices:
+        low, high = pybullet.getAABB(world.object(name).body_id, physicsClientId=cid)
+        widths.append(high[1] - low[1])  # the loaf lies along map y
+    assert max(widths) <= 1.2 * min(widths)
+    assert sum(widths) == pytest.approx(0.24, abs=0.02)
+
+
+def test_mixing_keeps_the_spoon_clear_of_the_rim(tmp_path: Path) -> None:
+    scene = tool_scene("pr2", "spoon")
+    x, y, h = scene.spot
+    world = scene.world
+    add_tool_object(world, "bowl-1", "bowl", Pose((x, y, h)))
+    seen: list[JointTrajectory] = []
+    with (
+        trace_to(tmp_path / "mix.db", world=world),
+        trajectory_listener(seen.append),
+        simulated_robot(world, scene.robot),
+    ):
+        result = perform(an.action(type="mixing", container="bowl-1", tool="spoon-1"))
+    assert result.fraction == 1.0
+    cid = world.physics_client()
+    spoon, bowl = world.object("spoon-1").body_id, world.object("bowl-1").body_id
+    nearest = math.inf
+    for trajectory in (t for t in seen if t.kind == "tool-path"):
+        points = np.array([p.positions for p in trajectory.points])
+        for a, b in zip(points, points[1:], strict=False):
+            for s in np.linspace(0.0, 1.0, 4, endpoint=False):  # between the points too
+                q = a + (b - a) * s
+                world.set_joint_states("pr2", dict(zip(trajectory.joint_names, q, strict=True)))
+                found = pybullet.getClosestPoints(spoon, bowl, 0.05, physicsClientId=cid)
+                nearest = min([nearest, *(p[8] for p in found)])
+    assert nearest > 0.0
+    with TraceDatabase(tmp_path / "mix.db") as db:
+        report = audit_runs(db)
+    assert not report.findings, report.summary_lines()
