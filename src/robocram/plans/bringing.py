@@ -30,9 +30,9 @@ from robocram.plans.container_access import (
 )
 from robocram.plans.environment_links import environment_link_pose
 from robocram.plans.search import Place, SearchLog, place_point, search
+from robocram.tf import PoseStamped
 
 CABINET_DEPTH = 0.25  # [m] behind a door's front, where a robot looks into its cabinet
-from robocram.tf import PoseStamped
 
 
 def usual_place(object_type: str) -> Place | None:
@@ -138,4 +138,3 @@ def find(
 def wanted_object(object_type: str, name: str | None = None) -> ObjectDesignator:
     """An object designator of ``object_type`` (and ``name``, when one thing is meant)."""
     return an.object(type=object_type, name=name) if name else an.object(type=object_type)
-

@@ -5,9 +5,9 @@ in the table link's frame, facing into the table). A place setting is a list of
 :class:`Setting` rows in the seat's frame (x into the table from its edge, y to the
 person's left): the standard one puts the bowl 0.2 m in front of the person, the spoon to
 its right and the cup beyond the spoon, as far apart as the ``on`` location keeps things
-(its 3 cm margin round each thing's footprint circle). Shared things (milk, cereal) stand on the table's
-middle line, spread evenly. Every spot is a map pose at the table link's height; the
-height the object rests at comes from the ``on`` location resolved for it.
+(its 3 cm margin round each thing's footprint circle). Shared things (milk, cereal)
+stand on the table's middle line, spread evenly. Every spot is a map pose at the table
+link's height; the height the object rests at comes from the ``on`` location.
 """
 
 from __future__ import annotations
@@ -97,7 +97,9 @@ def spots(
     for row in seats[:people]:
         seat = origin * Pose((row.x, row.y, 0.0), quat.from_euler(0.0, 0.0, row.yaw))
         for item in setting:
-            found.append(Spot(item.type, row.seat, _flat(seat * Pose((item.forward, -item.right, 0.0)))))
+            found.append(
+                Spot(item.type, row.seat, _flat(seat * Pose((item.forward, -item.right, 0.0))))
+            )
     middle = (len(shared) - 1) / 2
     for i, kind in enumerate(shared):
         found.append(Spot(kind, 0, _flat(origin * Pose(((i - middle) * SHARED_SPACING, 0.0, 0.0)))))
