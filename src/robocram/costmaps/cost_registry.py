@@ -7,7 +7,7 @@ from collections.abc import Mapping
 from types import MappingProxyType
 
 from robocram.costmaps.cost_layer import CostFunction
-from robocram.costmaps.distance_costs import near_cost
+from robocram.costmaps.distance_costs import at_cost, near_cost
 from robocram.costmaps.occupancy import occupancy_cost
 from robocram.costmaps.reachability_cost import reachability_cost
 from robocram.costmaps.relation_costs import (
@@ -28,6 +28,7 @@ from robocram.costmaps.visibility_cost import visibility_cost
 
 BUILTIN_COST_FUNCTIONS: Mapping[str, CostFunction] = MappingProxyType(
     {
+        "at": at_cost,
         "behind": behind_cost,
         "in_front_of": in_front_of_cost,
         "inside": in_cost,

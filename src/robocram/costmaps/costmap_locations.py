@@ -39,7 +39,7 @@ from robocram.world import PlanningArea, RobotObject, World
 Sampling = Literal["random", "best"]
 _Function = TypeVar("_Function")
 REFINE_CHUNK = 8  # cells whose lazy factors are computed together
-ANCHOR_KEYS = ("object", "target", "on", "in_", "near", "left_of", "right_of",
+ANCHOR_KEYS = ("at", "object", "target", "on", "in_", "near", "left_of", "right_of",
                "in_front_of", "behind")  # fmt: skip
 
 

@@ -1,4 +1,4 @@
-"""Cost functions of distance alone: a gaussian around a point, a ring, and ``near``."""
+"""Cost functions of distance alone: a gaussian around a point, a ring, ``near`` and ``at``."""
 
 from __future__ import annotations
 
@@ -9,6 +9,7 @@ from robocram.costmaps.errors import CostmapInputError
 from robocram.costmaps.grid import BoolGrid, CostmapGrid, FloatGrid
 
 NEAR_DISTANCE = 1.0  # [m] beyond this from the reference object's bounds nothing is "near"
+AT_DISTANCE = 0.02  # [m] ``at`` keeps the cells this close to its point (one cell at least)
 
 
 def gaussian(
@@ -49,3 +50,13 @@ def near_cost(query: LocationQuery, value: object, alive: BoolGrid) -> CostLayer
     dy = np.maximum(np.maximum(low[1] - y, y - high[1]), 0.0)
     gap = np.hypot(dx, dy)
     return CostLayer(np.clip(1.0 - gap / NEAR_DISTANCE, 0.0, 1.0))
+
+
+def at_cost(query: LocationQuery, value: object, alive: BoolGrid) -> CostLayer:
+    """``at=point`` (map): the cells within :data:`AT_DISTANCE` of it, or the cell nearest it
+    on a coarser grid, the nearest weighted most: a spot a plan has chosen (a place
+    setting), whose height and checks still come from the other keys (``on``, ``for_``)."""
+    cx, cy, _ = query.point(value, "at")
+    x, y = query.centres()
+    reach = max(AT_DISTANCE, query.grid.resolution * 0.75)
+    return CostLayer(np.clip(1.0 - np.hypot(x - cx, y - cy) / reach, 0.0, 1.0))

@@ -14,6 +14,7 @@ GENERIC_ADVICE = "widen the search area, loosen the keys or clear the obstacles"
 
 _SIDE = "no cell {} the reference object lies in the search area: widen `size` or pick another"
 LAYER_ADVICE: Mapping[str, str] = {
+    "at": "the point lies outside the search area or off the other keys' cells: move it",
     "behind": _SIDE.format("behind"),
     "in_front_of": _SIDE.format("in front of"),
     "inside": "the container has no free floor: empty it or choose another container",

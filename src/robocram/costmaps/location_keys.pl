@@ -11,6 +11,7 @@ location_cost(reachable_for, occupancy).
 location_cost(on, on).
 location_cost(in_, inside).
 location_cost(near, near).
+location_cost(at, at).
 location_cost(left_of, left_of).
 location_cost(right_of, right_of).
 location_cost(in_front_of, in_front_of).

@@ -1,4 +1,4 @@
-"""Facts a scene provides about its environment: containers, surfaces, usual places.
+"""Facts a scene provides about its environment: containers, surfaces, usual places, seats.
 
 ``tools/make_kitchen_urdf.py`` writes them for robocram's kitchen (``kitchen.pl``);
 plans ask these and never name a link.
@@ -63,6 +63,18 @@ class UsualLocation:
 
 
 @dataclass(frozen=True)
+class Seat:
+    """Where person ``seat`` sits at a table, in the table's link frame, facing into it."""
+
+    environment: str
+    link: str
+    seat: int
+    x: float = unit("m")
+    y: float = unit("m")
+    yaw: float = unit("rad")
+
+
+@dataclass(frozen=True)
 class SupportingSurface:
     """A link of an environment things can stand on."""
 
@@ -83,6 +95,7 @@ USUAL_LOCATION = Predicate("usual_location", UsualLocation, _S, "where a type of
 SUPPORTING_SURFACE = Predicate(
     "supporting_surface", SupportingSurface, _S, "a surface objects can stand on"
 )
+SEAT = Predicate("seat", Seat, _S, "where a person sits at a table")
 
 SCENE_PREDICATES: tuple[Predicate[Any], ...] = (
     CONTAINER,
@@ -91,4 +104,5 @@ SCENE_PREDICATES: tuple[Predicate[Any], ...] = (
     CONTAINER_FRONT,
     USUAL_LOCATION,
     SUPPORTING_SURFACE,
+    SEAT,
 )

@@ -34,12 +34,16 @@ from robocram.plans.basic_actions import (
     park_arms,
     set_gripper,
 )
+from robocram.plans.carrying import carry
+from robocram.plans.clearing_table import clear_table
 from robocram.plans.containers import close_container, open_container
 from robocram.plans.deliver import deliver
+from robocram.plans.facing import face
 from robocram.plans.fetch import fetch
 from robocram.plans.pick_object import grasp_object, pick_up_object
 from robocram.plans.place_object import place_object
 from robocram.plans.search import search
+from robocram.plans.setting_table import set_table
 from robocram.plans.tool_actions import cut, mix, pour, wipe
 from robocram.plans.transport import transport
 
@@ -77,6 +81,10 @@ ACTIONS = ActionTable.of(
     ActionType("wiping", ("surface", "region", "tool"), ("arm",), wipe),
     ActionType("cutting", ("object", "tool", "slices"), ("arm",), cut),
     ActionType("mixing", ("container", "tool"), ("arm", "turns"), mix),
+    ActionType("setting-table", (), ("people", "table", "setting", "shared"), set_table),
+    ActionType("clearing-table", (), ("table", "objects"), clear_table),
+    ActionType("facing", ("target",), (), face),
+    ActionType("carrying", (), ("target", "arm"), carry),
 )
 ACTION_TYPES: Mapping[str, ActionType] = ACTIONS.types
 use_default_actions(ACTIONS)  # PERFORM runs these by their plans wherever plans are imported

@@ -45,7 +45,8 @@ def _handle_pose(part: Container) -> Pose:
     return environment_link_pose(part.environment, part.handle, "a handle")
 
 
-def _is_drawer(part: Container) -> bool:
+def is_drawer(part: Container) -> bool:
+    """Whether the KB names ``part`` a drawer (else a door)."""
     return CONTAINER_KIND.holds(
         current_kb(), environment=part.environment, link=part.link, kind="drawer"
     )
@@ -71,7 +72,7 @@ def opening_stands(part: Container) -> Iterator[HandleStand]:
     """Stands in front of ``part``'s handle for the current robot, each arm in the KB's order."""
     robot = current_robot()
     handle = _handle_pose(part)
-    drawer = _is_drawer(part)
+    drawer = is_drawer(part)
     return handle_stands(robot, robot_arms(robot), handle, part.opened, drawer, front_in_map(part))
 
 

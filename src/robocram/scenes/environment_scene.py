@@ -26,12 +26,17 @@ ORIGIN = Pose()
 
 @dataclass(frozen=True)
 class ItemPlace:
-    """An item ``name`` of catalogue ``kind`` at ``xy`` [m] in ``link``'s frame, on its top."""
+    """An item ``name`` of catalogue ``kind`` at ``xy`` [m] in ``link``'s frame, on its top.
+
+    ``below`` [m], in the link's frame, puts it on the first face under that height instead
+    (a shelf inside a closed cabinet, whose top is the cabinet's roof).
+    """
 
     name: str
     kind: str
     link: str
     xy: tuple[float, float]
+    below: float | None = None
 
 
 @dataclass(frozen=True)
@@ -103,7 +108,7 @@ def usual_location_facts(
 def place_item(world: World, environment: str, place: ItemPlace) -> WorldObject:
     """Put the item on the top face of ``place.link`` (its floor, for a drawer)."""
     spot = world.link_pose(environment, place.link) * Pose((*place.xy, 0.0))
-    top = support_top(world, environment, place.link, spot)
+    top = support_top(world, environment, place.link, spot, place.below)
     item = world.add_item(place.name, place.kind, Pose((0.0, 0.0, 100.0)))
     below_origin = 100.0 - world.aabb(item)[0][2]  # [m] from the item's origin down
     x, y, _ = spot.position
@@ -111,11 +116,15 @@ def place_item(world: World, environment: str, place: ItemPlace) -> WorldObject:
     return item
 
 
-def support_top(world: World, environment: str, link: str, spot: Pose) -> float:
-    """Height [m] of the first surface of ``link`` below ``spot`` (a ray cast down)."""
-    x, y, _ = spot.position
+def support_top(
+    world: World, environment: str, link: str, spot: Pose, below: float | None = None
+) -> float:
+    """Height [m] of the first surface of ``link`` below ``spot`` (a ray cast down from
+    over the link, or from ``below`` [m] over ``spot``, which is at the link frame's height)."""
+    x, y, z = spot.position
     _, high = world.link_aabb(environment, link)
-    hit = world.ray_cast((x, y, high[2] + 0.01), (x, y, high[2] - 1.0))
+    start = high[2] + 0.01 if below is None else z + below
+    hit = world.ray_cast((x, y, start), (x, y, start - 1.01))
     if hit is None or hit.link != link:
         raise SceneError(
             f"no surface of {link!r} under ({x:.2f}, {y:.2f}) m; put the item elsewhere on it"

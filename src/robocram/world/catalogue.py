@@ -29,9 +29,16 @@ _ITEMS: Mapping[str, BodySpec] = MappingProxyType(
         "cup": ShapeSpec("cylinder", (0.08, 0.08, 0.09), mass=0.15, color=(0.2, 0.3, 0.8, 1)),
         "cereal_box": ShapeSpec("box", (0.07, 0.19, 0.28), mass=0.45, color=(0.95, 0.7, 0.1, 1)),
         "milk": ShapeSpec("box", (0.07, 0.07, 0.2), mass=1.05, color=(1.0, 1.0, 1.0, 1)),
+        # flatware as a hand meets it: a handle, as high as a bowl or blade lying in a drawer
+        "spoon": ShapeSpec("box", (0.16, 0.035, 0.045), mass=0.05, color=(0.75, 0.75, 0.8, 1)),
+        "knife": ShapeSpec("box", (0.22, 0.03, 0.045), mass=0.08, color=(0.6, 0.6, 0.65, 1)),
+        "sponge": ShapeSpec("box", (0.1, 0.065, 0.04), mass=0.03, color=(0.95, 0.85, 0.2, 1)),
+        "bread": ShapeSpec("box", (0.24, 0.1, 0.1), mass=0.5, color=(0.75, 0.5, 0.25, 1)),
     }
 )
-_ALIASES: Mapping[str, str] = MappingProxyType({"cereal": "cereal_box", "cereal box": "cereal_box"})
+_ALIASES: Mapping[str, str] = MappingProxyType(
+    {"cereal": "cereal_box", "cereal box": "cereal_box", "loaf": "bread"}
+)
 
 
 def catalogue_names() -> list[str]:

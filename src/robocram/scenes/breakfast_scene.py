@@ -1,0 +1,83 @@
+"""The breakfast kitchen: robocram's kitchen holding what a breakfast for two is made of.
+
+The same kitchen as :func:`kitchen_scene` (its URDF, its drafted facts), stocked as a
+household keeps things: bowls in the top drawer of the drawer unit, cups and spoons in
+the cutlery unit's top drawer, the knife in the one below, the milk on the fridge's upper
+shelf, the cereal on the east counter, the bread and the sponge on the north counter.
+Each item type's usual place is a ``usual_location/3`` fact (group ``kitchen_semantics``),
+so a plan reads it and a user changes it with one fact (``kb.consult(..., group=...)``).
+The seats at the table are facts too (:data:`SEATS`, group ``kitchen_seats``).
+
+A separate builder, so the plain kitchen scene and every result on it stay as they were.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import replace
+from functools import cache
+
+from robocram.logic import name_atom
+from robocram.robots import RobotDescription
+from robocram.scenes.environment_description import EnvironmentDescription
+from robocram.scenes.environment_scene import EnvironmentScene, ItemPlace, environment_scene
+from robocram.scenes.kitchen_scene import KITCHEN, ROBOT_START, kitchen_description
+from robocram.world import World
+
+FRIDGE_UPPER_SHELF = 1.3  # [m] over the fridge's floor: items go on the first shelf below
+
+# Unit frames have x out of the front, so negative x is inside a drawer or behind an edge.
+BREAKFAST_PLACES = (
+    ItemPlace("bowl-1", "bowl", "drawer_unit_drawer_3", (-0.26, 0.12)),
+    ItemPlace("bowl-2", "bowl", "drawer_unit_drawer_3", (-0.26, -0.12)),
+    ItemPlace("cup-1", "cup", "cutlery_unit_drawer_4", (-0.24, 0.18)),
+    ItemPlace("cup-2", "cup", "cutlery_unit_drawer_4", (-0.24, -0.18)),
+    ItemPlace("spoon-1", "spoon", "cutlery_unit_drawer_4", (-0.22, 0.05)),
+    ItemPlace("spoon-2", "spoon", "cutlery_unit_drawer_4", (-0.22, -0.05)),
+    ItemPlace("knife-1", "knife", "cutlery_unit_drawer_3", (-0.16, 0.0)),
+    ItemPlace("milk-1", "milk", "fridge_body", (-0.2, 0.05), below=FRIDGE_UPPER_SHELF),
+    ItemPlace("cereal-1", "cereal_box", "counter_top_north", (0.4, -0.1)),
+    ItemPlace("bread-1", "bread", "counter_top_north", (0.85, -0.05)),
+    ItemPlace("sponge-1", "sponge", "counter_top_north", (-0.55, -0.15)),
+)
+
+# seat(Env, Surface, Seat, X, Y, Yaw): where a person sits at a table, in the table top's
+# frame [m], and the way [rad] they face (into the table). The kitchen's table is 1.4 m
+# along x and 0.9 m along y; people sit along its long sides, the north side first.
+SEATS = (
+    ("table_top", 1, -0.35, 0.45, -1.5707963267948966),
+    ("table_top", 2, 0.35, 0.45, -1.5707963267948966),
+    ("table_top", 3, -0.35, -0.45, 1.5707963267948966),
+    ("table_top", 4, 0.35, -0.45, 1.5707963267948966),
+)
+
+
+def seat_facts(environment: str, seats: Iterable[tuple[str, int, float, float, float]]) -> str:
+    """``seat/6`` facts (Prolog text) of ``environment``'s seats."""
+    env = name_atom(environment)
+    return "".join(
+        f"seat({env}, {name_atom(link)}, {n}, {x!r}, {y!r}, {yaw!r}).\n"
+        for link, n, x, y, yaw in seats
+    )
+
+
+@cache
+def breakfast_description() -> EnvironmentDescription:
+    """The kitchen's description with the breakfast items' usual places."""
+    usual = tuple(sorted({(p.kind, p.link) for p in BREAKFAST_PLACES}))
+    return replace(kitchen_description(), usual_locations=usual)
+
+
+def breakfast_scene(
+    robot: str | RobotDescription,
+    world: World | None = None,
+    places: Iterable[ItemPlace] = BREAKFAST_PLACES,
+) -> EnvironmentScene:
+    """The kitchen with the breakfast items in ``places`` (default: where they are kept),
+    ``robot`` (arms parked) in the middle, and the table's seats as facts.
+
+    Items moved from their usual place (a seeded variant) keep the usual place's fact.
+    """
+    scene = environment_scene(breakfast_description(), robot, places, ROBOT_START, world)
+    scene.world.kb.consult(seat_facts(KITCHEN, SEATS), group=f"{KITCHEN}_seats")
+    return scene
