@@ -50,7 +50,7 @@ typecheck: installed $(ROS_STAMP) $(ROS2_STAMP)
 	$(BIN)/mypy
 
 unit: installed $(ROS_STAMP) $(ROS2_STAMP)
-	$(BIN)/pytest
+	$(BIN)/pytest -n auto --dist loadgroup
 
 test: lint typecheck unit
 

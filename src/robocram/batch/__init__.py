@@ -10,7 +10,14 @@ or the backend. ``load_spec`` reads the YAML/JSON specs of ``robocram batch``.
 from robocram.batch.batch_run import BatchRun
 from robocram.batch.batch_spec import BatchSpec, load_spec
 from robocram.batch.batch_summary import BatchSummary
-from robocram.batch.errors import BackendMissing, BadSpec, BadVariant, BatchError, UnknownBackend
+from robocram.batch.errors import (
+    BackendMissing,
+    BadSpec,
+    BadVariant,
+    BatchError,
+    UnguardedBatch,
+    UnknownBackend,
+)
 from robocram.batch.project_variants import BACKENDS, project_variants
 from robocram.batch.result import VariantResult, VariantStatus
 from robocram.batch.variant import Variant
@@ -24,6 +31,7 @@ __all__ = [
     "BatchRun",
     "BatchSpec",
     "BatchSummary",
+    "UnguardedBatch",
     "UnknownBackend",
     "Variant",
     "VariantResult",

@@ -40,3 +40,17 @@ class BadSpec(BatchError):
         self.path = path
         self.key = key
         self.value = value
+
+
+class UnguardedBatch(BatchError):
+    """A script starts a process batch at its top level, outside ``if __name__ ==
+    "__main__":``: each spawned worker imports the script and would start the batch again."""
+
+    def __init__(self, script: str, line: int) -> None:
+        super().__init__(
+            f"{script}, line {line}: the batch starts at the script's top level; spawned "
+            "workers import the script and would start it again (every variant LOST). Put "
+            'it under `if __name__ == "__main__":`, or pass backend="ray"'
+        )
+        self.script = script
+        self.line = line

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import pickle
+import sys
 from collections.abc import Iterable
 from pathlib import Path
 from typing import TextIO
@@ -10,6 +11,7 @@ from typing import TextIO
 from robocram.batch.batch_run import BatchRun, WorkerPool
 from robocram.batch.drawn_variants import DrawnVariants
 from robocram.batch.errors import BatchError, UnknownBackend
+from robocram.batch.main_guard import require_main_guard
 from robocram.batch.process_pool import ProcessPool
 from robocram.batch.progress import ProgressBar
 from robocram.batch.variant import Variant
@@ -46,6 +48,8 @@ def project_variants(
         BackendMissing: the backend's package is not installed.
         BatchError: ``workers`` is not a positive integer, a variant is not a Variant, or
             ``plan`` or ``scene`` cannot be pickled (a lambda, a local function).
+        UnguardedBatch: a script starts the process batch at its top level, outside
+            ``if __name__ == "__main__":`` (spawned workers would start it again).
     """
     if backend not in BACKENDS:
         raise UnknownBackend(backend, BACKENDS)
@@ -64,6 +68,7 @@ def project_variants(
 
         pool = RayPool(config, workers)
     else:
+        require_main_guard(sys._getframe(1))  # spawned workers import the script
         pool = ProcessPool(config, workers)
     return BatchRun(pool, batch, ProgressBar(len(batch), progress, progress_stream))
 
