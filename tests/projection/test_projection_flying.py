@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Iterator
+from pathlib import Path
 
 import pytest
 
@@ -11,6 +12,10 @@ from robocram.execution import perform
 from robocram.execution.failures import FlyingGoalInCollision, NoMatchingProcessModule
 from robocram.projection import simulated_robot
 from robocram.tf import Pose, PoseStamped
+from robocram.traces import TraceDatabase, trace_to
+from robocram.traces.audit_findings import FindingKind
+from robocram.traces.trajectory_audit import audit_runs
+from robocram.traces.trajectory_record import run_trajectories
 from robocram.world import World
 
 
@@ -61,3 +66,28 @@ def test_flying_through_the_crate_fails_and_stays(world: World) -> None:
 def test_a_quadrotor_has_no_torso_module(world: World) -> None:
     with simulated_robot(world, "quadrotor"), pytest.raises(NoMatchingProcessModule):
         perform(a.motion(type="moving-torso", joint_angle=0.1))
+
+
+def test_flights_are_traced_trajectories_the_audit_finds_clean_and_a_jump_is_found(
+    world: World, tmp_path: Path
+) -> None:
+    """Each flight is a timed trajectory of the body (x, y, z, roll, pitch, yaw): the trace
+    stores it, the independent audit replays it on raw PyBullet and finds no penetration,
+    no limit exceeded and no jump; a body put 0.5 m higher with no flight is a jump."""
+    db = tmp_path / "flights.db"
+    waypoints = [(0.0, 0.0, 1.0), (1.5, 1.0, 1.5), (1.5, -1.0, 0.8)]
+    with trace_to(db, world=world), simulated_robot(world, "quadrotor", name="flights"):
+        for point in waypoints:
+            perform(a.motion(type="flying", target=a.location(pose=PoseStamped("map", point))))
+        x, y, z = world.pose("quadrotor").position
+        world.set_pose("quadrotor", Pose((x, y, z + 0.5)))  # a jump: no trajectory
+        perform(a.motion(type="flying", target=a.location(pose=PoseStamped("map", (0, 0, 1)))))
+    flights = run_trajectories(db, 1)
+    assert [t.kind for t in flights] == ["flight"] * 4
+    assert flights[0].joint_names == ("x", "y", "z", "roll", "pitch", "yaw")
+    assert flights[0].points[-1].positions[:3] == pytest.approx(waypoints[0], abs=1e-9)
+    with TraceDatabase(db, create=False) as opened:
+        report = audit_runs(opened)
+    jumps = report.of(FindingKind.TELEPORT)
+    assert [f.kind for f in report.findings] == [FindingKind.TELEPORT]
+    assert "base z" in jumps[0].what and jumps[0].amount == pytest.approx(0.5, abs=1e-6)

@@ -13,13 +13,20 @@ from robocram.motion.collision_scene import CollisionScene
 from robocram.motion.contact_allowance import ContactAllowance
 from robocram.motion.errors import MotionError
 from robocram.motion.joint_limits import JointLimits, joint_limits
-from robocram.motion.joint_trajectory import BASE_JOINTS, JointTrajectory, TrajectoryPoint, still
+from robocram.motion.joint_trajectory import (
+    BASE_JOINTS,
+    BODY_JOINTS,
+    JointTrajectory,
+    TrajectoryPoint,
+    still,
+)
 from robocram.motion.time_parameterization import time_parameterize
 from robocram.motion.trajectory_log import report_executed, trajectory_listener
 
 __all__ = [
     "ArmMotion",
     "BASE_JOINTS",
+    "BODY_JOINTS",
     "BasePath",
     "CollisionScene",
     "CarriedJoint",

@@ -17,10 +17,13 @@ from robocram.robots import LoadedDescription
 DEFAULT_VELOCITY = 0.5  # [rad/s | m/s] for joints whose URDF gives no velocity limit
 DEFAULT_ACCELERATION = {"revolute": 1.5, "continuous": 1.5, "prismatic": 0.5}  # [/s^2]
 JERK_PER_ACCELERATION = 10.0  # [1/s] jerk limit = this x acceleration limit
-BASE_LIMITS = {  # the planar base's joints x, y [m], yaw [rad]
+BASE_LIMITS = {  # the planar base's joints x, y [m], yaw [rad]; a flying body's z, roll, pitch
     "x": (0.5, 0.5),  # velocity [m/s], acceleration [m/s^2]
     "y": (0.5, 0.5),
-    "yaw": (1.0, 1.0),  # [rad/s], [rad/s^2]
+    "z": (0.5, 0.5),
+    "roll": (1.0, 1.0),  # [rad/s], [rad/s^2]
+    "pitch": (1.0, 1.0),
+    "yaw": (1.0, 1.0),
 }
 
 
@@ -44,7 +47,8 @@ def joint_limits(desc: LoadedDescription, joints: Sequence[str]) -> tuple[JointL
     """
     found = []
     for name in joints:
-        if name in BASE_LIMITS:
+        named = desc.model.joints.get(name)
+        if name in BASE_LIMITS and (named is None or not named.movable):  # a URDF's own first
             velocity, acceleration = BASE_LIMITS[name]
             found.append(
                 JointLimits(

@@ -26,6 +26,7 @@ from robocram.motion.contact_allowance import ContactAllowance
 
 FloatArray = npt.NDArray[np.float64]
 BASE_JOINTS = ("x", "y", "yaw")  # [m, m, rad] in map: a base path's joints
+BODY_JOINTS = ("x", "y", "z", "roll", "pitch", "yaw")  # [m, rad] in map: a flight's joints
 
 
 @dataclass(frozen=True)

@@ -1,9 +1,12 @@
 """A flying robot in projection: straight flights checked for collisions, and a range sensor.
 
-``fly`` moves the body along the straight segment to the target in steps of at most
-``PATH_STEP``; every step must be free (contacts the robot already had where it started
-do not count for the first ``TAKE_OFF`` metres, so it can lift off the floor). A collision
-on the way or at the goal leaves it where it was and raises ``FlyingGoalInCollision``.
+``fly`` checks the straight segment to the target (position and each of roll, pitch and
+yaw the short way) with no point of the body moving more than ``PATH_STEP`` between two
+checks; every step must be free (contacts the robot already had where it started do not
+count for the first ``TAKE_OFF`` metres, so it can lift off the floor). A collision on the
+way or at the goal leaves it where it was and raises ``FlyingGoalInCollision``. A free
+flight is a timed trajectory of the body's joints (``BODY_JOINTS``), followed and traced
+like every other motion: the body no longer jumps to its goal.
 ``sense_distance`` casts a ray from the body origin along a direction in the body frame.
 """
 
@@ -15,28 +18,33 @@ from collections.abc import Sequence
 import numpy as np
 
 from robocram.execution.failures import FlyingGoalInCollision
+from robocram.motion import BODY_JOINTS, joint_limits, time_parameterize
 from robocram.projection.errors import ProjectionError
 from robocram.projection.projected_robot import ProjectedRobot
+from robocram.projection.trajectory_follower import follow
 from robocram.tf import Pose, PoseLike, PoseStamped
 from robocram.tf import quaternion as quat
 
-PATH_STEP = 0.05  # [m] between collision checks along a flight
+PATH_STEP = 0.01  # [m] the most a point of the body moves between two collision checks
 TAKE_OFF = 0.1  # [m] along the path in which start contacts are tolerated
 MAX_RANGE = 20.0  # [m] of the distance sensor
 
 
-def _interpolate(start: Pose, goal: Pose, t: float) -> Pose:
-    p = (1 - t) * np.asarray(start.position) + t * np.asarray(goal.position)
-    q0, q1 = np.asarray(start.orientation), np.asarray(goal.orientation)
-    if float(q0 @ q1) < 0:
-        q1 = -q1
-    q = (1 - t) * q0 + t * q1
-    q /= np.linalg.norm(q)
-    return Pose((p[0], p[1], p[2]), (q[0], q[1], q[2], q[3]))
+def _values(pose: Pose) -> np.ndarray:
+    """The body's joints (:data:`BODY_JOINTS`: x, y, z, roll, pitch, yaw) of ``pose``."""
+    return np.array([*pose.position, *quat.to_euler(pose.orientation)])
+
+
+def _pose(values: np.ndarray) -> Pose:
+    x, y, z, roll, pitch, yaw = (float(v) for v in values)
+    return Pose((x, y, z), quat.from_euler(roll, pitch, yaw))
 
 
 def fly(robot: ProjectedRobot, target: PoseStamped | PoseLike) -> Pose:
-    """Fly the robot's body in a straight line to ``target``; return the reached pose.
+    """Fly the robot's body in a straight line to ``target`` (each angle the short way
+    round); return the reached pose. The flight is checked for collisions with no point
+    of the body moving more than :data:`PATH_STEP` between two checks, then timed under the
+    body's velocity, acceleration and jerk limits and followed, so traces store it.
 
     Raises:
         FlyingGoalInCollision: the path or the goal hits something; the robot stays put.
@@ -44,23 +52,32 @@ def fly(robot: ProjectedRobot, target: PoseStamped | PoseLike) -> Pose:
     world = robot.world
     start = robot.base_pose()
     goal = robot.in_map(target)
-    length = start.distance_to(goal)
-    steps = max(1, math.ceil(length / PATH_STEP))
+    a, b = _values(start), _values(goal)
+    b[3:] = a[3:] + np.array([math.remainder(float(d), math.tau) for d in b[3:] - a[3:]])
+    radius = max(world.link_radii(robot.name).values(), default=0.0)
+    travel = float(np.linalg.norm(b[:3] - a[:3])) + radius * float(np.abs(b[3:] - a[3:]).sum())
+    length = float(np.linalg.norm(b[:3] - a[:3]))
+    steps = max(1, math.ceil(travel / PATH_STEP))
     at_start = {o.name for o in world.collisions(robot.name)}
-    for k in range(1, steps + 1):
-        pose = _interpolate(start, goal, k / steps)
-        world.set_pose(robot.name, pose)
-        hit = {o.name for o in world.collisions(robot.name)}
-        if k * length / steps <= TAKE_OFF and k < steps:
-            hit -= at_start
-        if hit:
-            world.set_pose(robot.name, start)
-            raise FlyingGoalInCollision(
-                f"{robot.name} flying to {goal.position} hits {sorted(hit)} at {pose.position}",
-                target=target,
-                colliding=sorted(hit),
-            )
-    return goal
+    try:
+        for k in range(1, steps + 1):
+            values = a + (b - a) * (k / steps)
+            world.set_pose(robot.name, _pose(values))
+            hit = {o.name for o in world.collisions(robot.name)}
+            if k * length / steps <= TAKE_OFF and k < steps:
+                hit -= at_start
+            if hit:
+                raise FlyingGoalInCollision(
+                    f"{robot.name} flying to {goal.position} hits {sorted(hit)} at "
+                    f"{tuple(round(float(v), 3) for v in values[:3])}",
+                    target=target,
+                    colliding=sorted(hit),
+                )
+    finally:
+        world.set_pose(robot.name, start)  # the trajectory moves it
+    limits = joint_limits(robot.description, BODY_JOINTS)
+    follow(robot, time_parameterize(robot.name, BODY_JOINTS, [a, b], limits, kind="flight"))
+    return robot.base_pose()
 
 
 def sense_distance(robot: ProjectedRobot, direction: Sequence[float]) -> float:

@@ -12,7 +12,13 @@ from __future__ import annotations
 from dataclasses import replace
 
 from robocram.execution import checkpoint, current_task
-from robocram.motion import BASE_JOINTS, JointTrajectory, TrajectoryPoint, report_executed
+from robocram.motion import (
+    BASE_JOINTS,
+    BODY_JOINTS,
+    JointTrajectory,
+    TrajectoryPoint,
+    report_executed,
+)
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
@@ -50,6 +56,10 @@ def _with_carried(robot: ProjectedRobot, done: JointTrajectory, whole: float) ->
 
 def _apply(robot: ProjectedRobot, joints: tuple[str, ...], point: TrajectoryPoint) -> None:
     values = dict(zip(joints, point.positions, strict=True))
+    if joints == BODY_JOINTS:  # a flight: the body in map
+        turn = quat.from_euler(values["roll"], values["pitch"], values["yaw"])
+        robot.world.set_pose(robot.name, Pose((values["x"], values["y"], values["z"]), turn))
+        return
     if joints == BASE_JOINTS:  # what the robot holds rides along
         height = robot.base_pose().position[2]
         yaw = quat.from_euler(0.0, 0.0, values["yaw"])

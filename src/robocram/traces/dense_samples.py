@@ -48,7 +48,8 @@ class Levers:
         for joint in model.movable_joints():
             if joint.mimic is not None and joint.mimic.joint in levers:
                 levers[joint.mimic.joint] += abs(joint.mimic.multiplier) * levers[joint.name]
-        levers |= {"x": 1.0, "y": 1.0, "yaw": reach[model.root_link]}
+        turn = reach[model.root_link]
+        levers |= {"x": 1.0, "y": 1.0, "z": 1.0, "roll": turn, "pitch": turn, "yaw": turn}
         return cls(levers)
 
     def steps(

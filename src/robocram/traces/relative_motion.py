@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Collection
 
-from robocram.motion import BASE_JOINTS
+from robocram.motion import BODY_JOINTS
 from robocram.robots import RobotModel
 
 
@@ -24,7 +24,7 @@ def moving_groups(model: RobotModel, joints: Collection[str]) -> dict[str, str]:
         }
         changed = not followers <= active
         active |= followers
-    root = "base" if active & set(BASE_JOINTS) else ""
+    root = "base" if active & set(BODY_JOINTS) else ""
     group: dict[str, str] = {}
 
     def find(link: str) -> str:

@@ -13,7 +13,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from dataclasses import dataclass
 
-from robocram.motion import BASE_JOINTS
+from robocram.motion import BODY_JOINTS
 from robocram.tf import Pose
 from robocram.tf.quaternion import from_euler, to_euler
 from robocram.traces.database import TraceDatabase
@@ -111,8 +111,9 @@ def robot_in(world: World, name: str) -> str:
 
 
 def set_robot_joints(world: World, robot: str, positions: dict[str, float]) -> None:
-    """Set ``robot``'s joints; the planar base joints ``x``, ``y``, ``yaw`` move its pose in map."""
-    base = {name: positions[name] for name in BASE_JOINTS if name in positions}
+    """Set ``robot``'s joints; the base joints ``x``, ``y``, ``yaw`` (and a flight's ``z``,
+    ``roll``, ``pitch``) move its pose in map."""
+    base = {name: positions[name] for name in BODY_JOINTS if name in positions}
     joints = {name: value for name, value in positions.items() if name not in base}
     if base:
         world.set_pose(robot, _moved_base(world.pose(robot), base))
@@ -121,8 +122,9 @@ def set_robot_joints(world: World, robot: str, positions: dict[str, float]) -> N
 
 
 def _moved_base(pose: Pose, base: dict[str, float]) -> Pose:
-    """``pose`` with the given planar joints replaced (z, roll and pitch kept)."""
+    """``pose`` with the given base joints replaced (the others kept)."""
     x, y, z = pose.position
     roll, pitch, yaw = to_euler(pose.orientation)
-    position = (base.get("x", x), base.get("y", y), z)
-    return Pose(position, from_euler(roll, pitch, base.get("yaw", yaw)))
+    position = (base.get("x", x), base.get("y", y), base.get("z", z))
+    turn = from_euler(base.get("roll", roll), base.get("pitch", pitch), base.get("yaw", yaw))
+    return Pose(position, turn)

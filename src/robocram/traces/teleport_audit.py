@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator, Mapping
 
-from robocram.motion import BASE_JOINTS
+from robocram.motion import BODY_JOINTS
 from robocram.robots import RobotModel
 from robocram.tf import Pose
 from robocram.tf.quaternion import to_euler
@@ -30,15 +30,14 @@ class TeleportWatch:
         self.jumped: set[str] = set()  # the joints (and base joints) of the last jumps
         self._judged = {j.name for j in model.movable_joints() if j.mimic is None}
         self._angles = {j.name for j in model.movable_joints() if j.type == "continuous"}
-        self._angles.add("yaw")
+        self._angles |= {"roll", "pitch", "yaw"}
 
     def state(
         self, joints: Mapping[str, float], pose: Pose, place: FindingPlace
     ) -> Iterator[AuditFinding]:
         """Jumps to a stored state (its robot's joints and base pose); then it is known."""
-        x, y, _ = pose.position
         now = {j: v for j, v in joints.items() if j in self._judged}
-        now |= dict(zip(BASE_JOINTS, (x, y, to_euler(pose.orientation)[2]), strict=True))
+        now |= dict(zip(BODY_JOINTS, (*pose.position, *to_euler(pose.orientation)), strict=True))
         yield from self._jumps(now, place, "set by a stored state")
         self.known.update(now)
 
@@ -46,7 +45,7 @@ class TeleportWatch:
         self, start: Mapping[str, float], end: Mapping[str, float], place: FindingPlace
     ) -> Iterator[AuditFinding]:
         """Jumps to a trajectory's first point; then its joints are known at its last."""
-        judged = self._judged.union(BASE_JOINTS)
+        judged = self._judged.union(BODY_JOINTS)
         yield from self._jumps(
             {j: v for j, v in start.items() if j in judged}, place, "where its trajectory starts"
         )
@@ -70,4 +69,4 @@ class TeleportWatch:
 
 
 def _named(joint: str) -> str:
-    return f"base {joint}" if joint in BASE_JOINTS else f"joint {joint}"
+    return f"base {joint}" if joint in BODY_JOINTS else f"joint {joint}"

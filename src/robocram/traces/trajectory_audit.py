@@ -157,7 +157,7 @@ class _RunAudit:
         except MotionError as err:
             raise TraceError(f"run {self.run}, trajectory {trajectory.index}: {err}") from err
         wrapping = {j.name for j in description.model.joints.values() if j.type == "continuous"}
-        wrapping.add("yaw")
+        wrapping |= {"roll", "pitch", "yaw"}
         self.findings += limit_findings(trajectory, limits, self.bounds, place, wrapping)
         start = dict(zip(trajectory.joint_names, trajectory.points[0].positions, strict=True))
         end = dict(zip(trajectory.joint_names, trajectory.points[-1].positions, strict=True))
