@@ -76,7 +76,8 @@ def fly(robot: ProjectedRobot, target: PoseStamped | PoseLike) -> Pose:
     finally:
         world.set_pose(robot.name, start)  # the trajectory moves it
     limits = joint_limits(robot.description, BODY_JOINTS)
-    follow(robot, time_parameterize(robot.name, BODY_JOINTS, [a, b], limits, kind="flight"))
+    path = np.array([a, b])
+    follow(robot, time_parameterize(robot.name, BODY_JOINTS, path, limits, kind="flight"))
     return robot.base_pose()
 
 
