@@ -20,7 +20,7 @@ from robocram.costmaps.errors import CostmapInputError
 from robocram.costmaps.grasps import GRASP_YAWS, approach_axis, grasp_point, grasp_poses, top_down
 from robocram.costmaps.reachability_map import ReachabilityMaps
 from robocram.kinematics import BaseMotion, IKResult, PlanarBase, base_in_ik, solve_ik
-from robocram.robots import RobotDescription
+from robocram.robots import ArmDescription, RobotDescription
 from robocram.tf import Pose, Vector3
 from robocram.world import Camera, RayHit, RobotObject, World, WorldObject
 from robocram.world.link_contacts import link_contacts
@@ -50,12 +50,15 @@ def placed(world: World, obj: WorldObject, pose: Pose) -> Iterator[None]:
 
 @contextmanager
 def parked(world: World, robot: RobotObject) -> Iterator[None]:
-    """Arms (not the neck) at their parking joint values for the block, as when driving."""
+    """Arms (not the neck) at their parking joint values for the block, as when driving;
+    an arm that holds something stays as it is (the plan carries it so: Boxy's bowl,
+    carried above the table's height, hit the table at every stand a parked check passed)."""
     desc = robot.description
+    holding = set(world.attachments(robot).values())
     parking = {
         joint: value
         for name, arm in desc.arms.items()
-        if name != desc.neck_arm
+        if name != desc.neck_arm and not holding & _hand_of(arm)
         for joint, value in arm.parking.items()
     }
     before = world.joint_states(robot)
@@ -67,6 +70,11 @@ def parked(world: World, robot: RobotObject) -> Iterator[None]:
         yield
     finally:
         world.set_joint_states(robot, {j: before[j] for j in parking})
+
+
+def _hand_of(arm: ArmDescription) -> set[str]:
+    """The links an arm holds things by."""
+    return {arm.end_effector_link, arm.tool_frame, *arm.hand_links, *arm.gripper_links}
 
 
 def query_robot(query: LocationQuery) -> RobotObject:

@@ -12,6 +12,7 @@ from collections.abc import Callable, Mapping
 from robocram.motion.bullet_scene import BulletScene
 from robocram.motion.configuration_checker import LinkPair
 from robocram.motion.errors import MotionError
+from robocram.motion.hand_contact import HandContact
 from robocram.robots import ArmDescription
 from robocram.world import World
 
@@ -37,6 +38,16 @@ def hand_links(spec: ArmDescription) -> set[str]:
 def allowed_links(spec: ArmDescription, mode: str) -> set[str]:
     """The links that may touch things in ``mode``: the hand's for ``allow_hand``."""
     return hand_links(spec) if collision_mode(mode) == "allow_hand" else set()
+
+
+def hand_bound(spec: ArmDescription, mode: str, touching: str | None) -> HandContact | None:
+    """The contact ``allow_hand`` lets ``spec``'s hand make: ``touching`` (an object or
+    ``object/link``; None or ``"none"``: any object), within the bound; None in the other
+    modes. Projection and the ROS planner both bound the hand by it."""
+    if collision_mode(mode) != "allow_hand":
+        return None
+    named = None if touching in (None, "none") else touching
+    return HandContact.of(hand_links(spec), named)
 
 
 def ik_collision_check(

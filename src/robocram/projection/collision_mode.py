@@ -20,7 +20,7 @@ from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 
 from robocram.kinematics import split_base_motion
-from robocram.motion.collision_modes import COLLISION_MODES, hand_links
+from robocram.motion.collision_modes import COLLISION_MODES, hand_bound, hand_links
 from robocram.motion.hand_contact import HandContact
 from robocram.motion.self_collision_matrix import SelfCollisionMatrix
 from robocram.projection.errors import ProjectionError
@@ -98,9 +98,7 @@ def hand_contact(
 ) -> HandContact | None:
     """The contact ``allow_hand`` lets ``arm``'s hand make: ``touching`` (None: any
     object), within the bound; None in the other modes."""
-    if mode.replace("-", "_") != "allow_hand":
-        return None
-    return HandContact.of(hand_links(robot.arm(arm)), touching)
+    return hand_bound(robot.arm(arm), mode.replace("-", "_"), touching)
 
 
 def allowed_links(robot: ProjectedRobot, arm: str, mode: str) -> set[str]:
