@@ -181,9 +181,27 @@ def test_objects_are_drawn_as_markers_in_their_frames(exported: Any) -> None:
     assert (table.scale.x, table.scale.y, table.scale.z) == pytest.approx((0.6, 1.0, 0.615675))
     assert (bottle.type, bottle.header.frame_id) == (3, "bottle-1")  # CYLINDER
     assert (bottle.scale.x, bottle.scale.z) == pytest.approx((0.07, 0.25))
-    assert (mug.type, mug.header.frame_id) == (10, "mug-1")  # MESH_RESOURCE from the URDF
-    assert mug.mesh_resource.startswith("file:///") and Path(mug.mesh_resource[7:]).is_file()
+    assert (mug.type, mug.header.frame_id) == (11, "mug-1")  # TRIANGLE_LIST: embedded
+    assert mug.mesh_resource == "" and len(mug.points) % 3 == 0 and len(mug.points) > 30
     assert all(m.frame_locked for m in message.markers)
+
+
+def test_the_robot_is_drawn_from_embedded_meshes_in_its_link_frames(exported: Any) -> None:
+    """Another machine, without the mesh files, shows the robot: every link visual of the
+    URDF is a marker in the link's frame, a mesh as its triangles (no file named)."""
+    trace, by_topic = exported
+    ((_, _, message),) = by_topic["/robot_meshes"]
+    with TraceDatabase(trace.db_path, create=False) as db:
+        world = build_scene(require_run(db, trace.run).scene)
+    model = world.robots()[0].description.model
+    visuals = sum(len(link.visuals) for link in model.links.values())
+    meshes = [m for m in message.markers if m.type == 11]
+    assert len(message.markers) == visuals and len(meshes) >= 40  # the PR2: 45 meshes
+    assert all(m.mesh_resource == "" and len(m.points) % 3 == 0 for m in meshes)
+    assert {m.header.frame_id for m in message.markers} <= set(model.links)
+    points = sum(len(m.points) for m in meshes)
+    assert 3 * 27_000 < points < 3 * 28_000  # the PR2's visual triangles, every one
+    world.close()
 
 
 def test_every_schema_is_a_ros2_name(exported: Any) -> None:

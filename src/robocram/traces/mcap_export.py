@@ -7,7 +7,9 @@ What a real robot would send, so that Foxglove shows the robot and its world:
 - ``/robot_description`` once (``std_msgs/msg/String``): the URDF the trace stored for
   the run's robot; a trace of an older robocram has none, and the export warns;
 - ``/scene_markers`` once (``visualization_msgs/msg/MarkerArray``): the objects' shapes
-  (:mod:`~robocram.traces.scene_markers`);
+  (:mod:`~robocram.traces.scene_markers`), meshes embedded as triangles;
+- ``/robot_meshes`` once (``MarkerArray``): every robot link's visuals, embedded, in the
+  link's TF frame, so the robot shows on a machine without its mesh files;
 - at each stored world state (the run's start and every motion's end): ``/tf`` (each
   body's root and movable joints), ``/joint_states`` (one per articulated body,
   ``header.frame_id`` naming the body) and ``/object_poses/<name>`` in map;
@@ -35,7 +37,7 @@ from robocram.traces.robot_model_record import stored_urdf
 from robocram.traces.ros2_messages import message_definition
 from robocram.traces.ros2_values import Value, header, pose_value, transform
 from robocram.traces.run_replay import SAMPLE_PERIOD, ReplayFrame, replay_frames, robot_in
-from robocram.traces.scene_markers import scene_markers
+from robocram.traces.scene_markers import robot_markers, scene_markers
 from robocram.traces.tf_frames import (
     MAP_FRAME,
     BodyFrames,
@@ -151,6 +153,7 @@ def _once(world: World, bodies: list[BodyFrames], time: float, urdf: str | None)
     if urdf is not None:
         once.append(("/robot_description", STRING, {"data": urdf}))
     once.append(("/scene_markers", MARKER_ARRAY, scene_markers(world, bodies, time)))
+    once.append(("/robot_meshes", MARKER_ARRAY, robot_markers(world, bodies, time)))
     return once
 
 
