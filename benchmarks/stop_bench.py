@@ -3,7 +3,8 @@
 For each command a thread runs it inside its own task in the PR2 kitchen; after a delay
 the main thread stops that task and times how long the command takes to end. Cases: an
 arm motion whose IK fails (every solution collides with the torso, ~90 ms unstopped), two
-seconds of physics, a drive, and opening a drawer by 0.3 m. The world is put back after
+seconds of physics, a drive, an arm's joint motion (``moving-arm-joints``), and opening a
+drawer by 0.3 m. The world is put back after
 every run. Then a PR2 kitchen transport is stopped at 20 seeded moments of its run
 (issue 24: max <= 100 ms idle). Run: ``python benchmarks/stop_bench.py``.
 """
@@ -25,7 +26,7 @@ from robocram.execution.failures import PlanFailure
 from robocram.execution.task_context import binding_task
 from robocram.plans import transport
 from robocram.projection import ProjectedRobot, SimulatedRun, simulated_robot
-from robocram.projection.arm import move_tcp
+from robocram.projection.arm import move_joints, move_tcp
 from robocram.projection.articulation import move_part
 from robocram.projection.navigation import drive
 from robocram.scenes import kitchen_scene
@@ -57,8 +58,19 @@ def _open_drawer(robot: ProjectedRobot) -> object:
     return move_part(robot, "right", "kitchen", f"{DRAWER}_joint", f"{DRAWER}_handle", 0.3)
 
 
+def _arm_joints(robot: ProjectedRobot) -> object:
+    """``moving-arm-joints``: the right arm from stretched out ahead over to the left, a
+    joint-space path round the counter (the campaign's slow stops, issue 42)."""
+    arm = robot.description.arms["right"]
+    ahead = {j: 0.0 for j in arm.joints}
+    robot.world.set_joint_states(robot.name, ahead)
+    across = dict(ahead, r_shoulder_pan_joint=0.6, r_elbow_flex_joint=-1.8)
+    return move_joints(robot, "right", across)
+
+
 CASES: dict[str, Command] = {
     "arm motion whose IK fails": _unreachable,
+    "moving-arm-joints": _arm_joints,
     "simulate 2 s": _simulate,
     "drive 0.3 m": _drive,
     "open a drawer 0.3 m": _open_drawer,

@@ -27,7 +27,7 @@ from robocram.motion import JointTrajectory, trajectory_listener
 from robocram.motion.tool_goal import POSITION_TOLERANCE
 from robocram.plans import transport
 from robocram.projection import ProjectedRobot, simulated_robot
-from robocram.projection.arm import move_tcp
+from robocram.projection.arm import move_joints, move_tcp
 from robocram.projection.articulation import move_part
 from robocram.scenes import KitchenScene, kitchen_scene
 from robocram.tf import Pose, PoseStamped
@@ -191,3 +191,30 @@ def test_a_transport_stopped_at_its_nth_task_moves_no_further(n: int) -> None:
     held = world.attached_to("mug-1")
     assert held is None or held.robot == "pr2"  # on its counter, or in the hand: whole
     world.close()
+
+
+def test_a_stop_ends_an_arm_joint_motion_while_it_is_planned_and_the_arm_stays(
+    kitchen: tuple[KitchenScene, ProjectedRobot],
+) -> None:
+    """``moving-arm-joints`` out of parking towards the counter: its checks pass stop
+    points, and a stop at any of them leaves the arm where it was (the campaign's slowest
+    stops were in this command, issue 42)."""
+    scene, robot = kitchen
+    world = scene.world
+    across = dict(robot.description.arms["right"].parking, r_shoulder_pan_joint=-0.8)
+    with world.stored_state():
+        before = world.joint_states(robot.name)
+        unstopped = StopAtPoint(10**9)
+        with world.stored_state(), binding_task(unstopped):
+            move_joints(robot, "right", across)
+        assert unstopped.reached > 5
+        for n in (1, unstopped.reached // 2, unstopped.reached - 1):
+            task = StopAtPoint(n)
+            with binding_task(task), pytest.raises(TaskStopped):
+                move_joints(robot, "right", across)
+            assert task.reached == n
+            now = world.joint_states(robot.name)  # where the planning or the motion ended
+            for joint, start in before.items():
+                end = across.get(joint, start)
+                assert min(start, end) - 1e-9 <= now[joint] <= max(start, end) + 1e-9
+            world.set_joint_states(robot.name, before)

@@ -29,6 +29,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from robocram.execution import checkpoint
 from robocram.execution.failures import ManipulationPathBlocked
 from robocram.motion.arm_detours import ToolHeight, detour_path
 from robocram.motion.bullet_scene import BulletScene
@@ -327,6 +328,7 @@ class _WorldJudge:
         self.free: set[bytes] = set()
 
     def __call__(self, a: FloatArray, b: FloatArray) -> bool:
+        checkpoint()  # simplifying asks for many segments: a stopped task ends it here
         key = np.asarray(a, dtype=float).tobytes() + np.asarray(b, dtype=float).tobytes()
         if key in self.free:
             return True

@@ -18,6 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from robocram.execution import checkpoint
 from robocram.motion.allowed_contacts import AllowedContacts, Other
 from robocram.motion.carried_joint import CarriedJoint
 from robocram.motion.hand_contact import HandContact, hand_at_start
@@ -62,6 +63,7 @@ def hand_breach(
     duration = trajectory.duration
     try:
         for time, (x, y, yaw) in _dense(trajectory, reach):
+            checkpoint()  # a stopped task ends the walk here
             world.set_pose(robot, Pose((x, y, start.position[2]), quat.from_euler(0.0, 0.0, yaw)))
             for c in carried:
                 world.set_joint_states(c.obj, {c.joint: c.at(time / duration if duration else 1.0)})

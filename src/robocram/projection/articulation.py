@@ -115,6 +115,7 @@ def _follow(
             steps = 2**halving
             done = held
             for k in range(1, steps + 1):
+                checkpoint()  # a stopped task ends here, holding the handle at the last step
                 goal = held + (value - held) * k / steps
                 if not _step(robot, arm, part, joint, handle, grasp, pull, done, goal):
                     break

@@ -26,6 +26,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Collection
 
+from robocram.execution import checkpoint
 from robocram.execution.failures import (
     GripperClosedCompletely,
     GripperGoalNotReached,
@@ -380,6 +381,7 @@ def _closing_stop(
     start = {j: states[j] for j in gripper_joints(robot, arm)}
     try:
         for step in range(1, CLOSING_STEPS + 1):
+            checkpoint()  # a stopped task ends the probing here; the fingers go back
             fraction = before * (1 - step / CLOSING_STEPS)
             _probe(robot, arm, fraction)
             held = next((o for o in candidates if stops(o)), None)
@@ -404,6 +406,7 @@ def _first_stop(
     """Bisect the opening between ``inside`` (``obj`` stops the fingers) and ``outside``
     (it does not); the former."""
     for _ in range(BISECTION_STEPS):
+        checkpoint()
         middle = (inside + outside) / 2
         _probe(robot, arm, middle)
         if stops(obj):
