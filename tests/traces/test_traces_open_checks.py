@@ -13,6 +13,7 @@ import sqlite3
 from pathlib import Path
 
 import pytest
+from sqlalchemy import event
 
 from robocram.traces import (
     DamagedTrace,
@@ -148,3 +149,44 @@ def test_locked_is_retried_and_only_locked(tmp_path: Path, monkeypatch: pytest.M
     with pytest.raises(DamagedTrace):
         database_module.retry_while_locked(damaged)
     assert len(pauses) == 2
+
+
+def _page_limit(pages: int) -> object:
+    """A connect hook that caps the file at ``pages`` SQLite pages: a disk that fills."""
+
+    def hook(connection: sqlite3.Connection, _record: object) -> None:
+        connection.execute(f"PRAGMA max_page_count = {pages}")
+
+    return hook
+
+
+def test_a_disk_that_fills_while_appending_is_named_and_what_fit_is_kept(tmp_path: Path) -> None:
+    path = tmp_path / "runs.db"
+    db = TraceDatabase(path)
+    with db.write() as session:
+        session.connection().exec_driver_sql("CREATE TABLE filler (data BLOB)")
+    event.listen(db.engine, "connect", _page_limit(40))
+    db.engine.dispose()  # the next connections fill up at 40 pages
+    written = 0
+    with pytest.raises(TraceStorageError) as info:
+        for _ in range(1000):
+            with db.write() as session:
+                session.connection().exec_driver_sql("INSERT INTO filler VALUES (zeroblob(8000))")
+            written += 1
+    assert info.value.kind == "disk full" and "free some space" in str(info.value)
+    assert 0 < written < 1000
+    db.close()
+    with TraceDatabase(path, create=False) as again, again.read() as session:
+        rows = session.connection().exec_driver_sql("SELECT COUNT(*) FROM filler").scalar()
+    assert rows == written  # every transaction that committed is there
+
+
+def test_a_trace_the_disk_cannot_hold_is_named_and_no_empty_file_is_left(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(database_module, "_configure_connection", _page_limit(1))
+    path = tmp_path / "runs.db"
+    with pytest.raises(TraceStorageError) as info:
+        TraceDatabase(path)
+    assert info.value.kind == "disk full"
+    assert sorted(p.name for p in tmp_path.iterdir()) == []

@@ -20,7 +20,7 @@ from pathlib import Path
 from typing import Any, TypeVar
 
 from sqlalchemy import Connection, create_engine, event, inspect, select, update
-from sqlalchemy.exc import DatabaseError
+from sqlalchemy.exc import DatabaseError, OperationalError
 from sqlalchemy.orm import Session
 
 from robocram.traces.errors import SchemaVersionMismatch, TraceError, TraceLocked
@@ -32,7 +32,7 @@ from robocram.traces.schema import (
     SchemaInfo,
     upgradable,
 )
-from robocram.traces.trace_probe import probe_trace, sqlite_error, storage_error
+from robocram.traces.trace_probe import probe_trace, sqlite_error, storage_error, storage_problem
 
 BUSY_TIMEOUT = 60_000  # [ms] a writer waits this long for another process's transaction
 _WRITE = "robocram_write"
@@ -46,7 +46,8 @@ class TraceDatabase:
 
     def __init__(self, path: str | Path, create: bool = True) -> None:
         self.path = Path(path)
-        if not create and not self.path.exists():
+        existed = self.path.exists()
+        if not create and not existed:
             raise TraceError(f"no trace database at {self.path}; record one with trace_to(path)")
         fresh = retry_while_locked(lambda: probe_trace(self.path))
         if fresh and not create:
@@ -65,6 +66,12 @@ class TraceDatabase:
             self._open_schema(fresh)
         except BaseException:
             self.engine.dispose()
+            if not existed:  # a file this call made and could not fill: none is left behind
+                for made in (
+                    self.path,
+                    *(self.path.with_name(self.path.name + x) for x in ("-wal", "-shm")),
+                ):
+                    made.unlink(missing_ok=True)
             raise
 
     def _open_schema(self, create: bool) -> None:
@@ -106,18 +113,41 @@ class TraceDatabase:
 
     @contextmanager
     def write(self) -> Iterator[Session]:
-        """One write transaction (committed on leaving, rolled back on an error)."""
-        with self._lock, Session(self._writer, expire_on_commit=False) as session, session.begin():
+        """One write transaction (committed on leaving, rolled back on an error).
+
+        Raises:
+            TraceStorageError: the disk is full, or the file became read-only.
+            TraceLocked: another process holds the file longer than SQLite waits.
+        """
+        with (
+            self._storage_errors(),
+            self._lock,
+            Session(self._writer, expire_on_commit=False) as session,
+            session.begin(),
+        ):
             yield session
 
     @contextmanager
     def append(self) -> Iterator[Connection]:
-        """One write transaction on the writer's own long-lived connection (fast, Core)."""
-        with self._lock:
+        """One write transaction on the writer's own long-lived connection (fast, Core);
+        storage errors as :meth:`write` raises them."""
+        with self._storage_errors(), self._lock:
             if self._connection is None:
                 self._connection = self._writer.connect()
             with self._connection.begin():
                 yield self._connection
+
+    @contextmanager
+    def _storage_errors(self) -> Iterator[None]:
+        """SQLite's storage errors while writing as typed errors naming the file and the
+        fix (a full disk said "not an SQLite trace database", issue 42); others as raised."""
+        try:
+            yield
+        except OperationalError as err:
+            typed = storage_problem(self.path, err.orig or err)
+            if typed is None:
+                raise
+            raise typed from err
 
     @contextmanager
     def read(self) -> Iterator[Session]:

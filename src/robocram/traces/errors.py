@@ -81,7 +81,7 @@ class DamagedTrace(TraceError):  # noqa: N818 - reads as what the file is
 class TraceStorageError(TraceError):
     """The storage, not the file, is the problem: read-only, full, or no folder to write in.
 
-    ``kind`` is ``"read-only"``, ``"disk full"`` or ``"path"``.
+    ``kind`` is ``"read-only"``, ``"disk full"``, ``"I/O error"`` or ``"path"``.
     """
 
     def __init__(self, path: Path, kind: str, problem: str, fix: str) -> None:

@@ -9,6 +9,7 @@ the storage's problems (read-only, full, locked) and the file's (not a trace).
 from __future__ import annotations
 
 import errno
+import shutil
 import sqlite3
 from pathlib import Path
 from urllib.parse import quote
@@ -26,6 +27,7 @@ from robocram.traces.schema import ADDED_TABLES, SCHEMA_VERSION, Base, upgradabl
 SQLITE_HEADER = b"SQLite format 3\x00"
 _READ_ONLY = "the file or its folder is read-only (read-only media or permissions)"
 _FULL = "the disk is full"
+FULL_BELOW = 1 << 20  # [bytes] a file system with less free than this counts as full
 
 
 def probe_trace(path: Path) -> bool:
@@ -93,15 +95,48 @@ def _read_only_look(path: Path) -> tuple[set[str], int | None]:
     return tables, None if row is None else int(row[0])
 
 
-def sqlite_error(path: Path, err: Exception) -> TraceError:
-    """The typed error of an SQLite error on ``path``: storage problems apart from the file's."""
+def storage_problem(path: Path, err: Exception) -> TraceError | None:
+    """The typed error of an SQLite error that is the storage's (locked, read-only, full),
+    or None: the error is not about where the file lies."""
     text = str(err).lower()
     if "locked" in text or "busy" in text:
         return TraceLocked(path)
     if "readonly" in text or "read-only" in text:
         return TraceStorageError(path, "read-only", _READ_ONLY, "copy it to a writable folder")
-    if "disk is full" in text or "disk full" in text:
+    if (
+        "disk is full" in text
+        or "disk full" in text
+        or (
+            "disk i/o error" in text
+            and _nearly_full(path)  # SQLite's word when the WAL cannot grow
+        )
+    ):
         return TraceStorageError(path, "disk full", _FULL, "free some space or write elsewhere")
+    if "disk i/o error" in text:
+        return TraceStorageError(
+            path,
+            "I/O error",
+            "the storage failed to read or write",
+            "check the disk, or write elsewhere",
+        )
+    return None
+
+
+def _nearly_full(path: Path) -> bool:
+    """Whether the file system holding ``path`` has less than :data:`FULL_BELOW` free."""
+    folder = next((p for p in (path, *path.parents) if p.exists()), Path("."))
+    try:
+        return shutil.disk_usage(folder).free < FULL_BELOW
+    except OSError:
+        return False
+
+
+def sqlite_error(path: Path, err: Exception) -> TraceError:
+    """The typed error of an SQLite error on ``path``: storage problems apart from the file's."""
+    storage = storage_problem(path, err)
+    if storage is not None:
+        return storage
+    text = str(err).lower()
     if "unable to open" in text:
         return TraceStorageError(
             path,
