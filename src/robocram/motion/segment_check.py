@@ -69,7 +69,7 @@ def _advance_free(
         if travel > LOCAL_LEVERS_FROM and not bound.mimicked and can_tell_levers(checker)
         else None
     )
-    by_link = {}  # [m] per link: the most a point of it moves from qa to qb
+    by_link: dict[str, float] = {}  # [m] per link: the most a point of it moves from qa to qb
     reach = checker.reach
     nearby = can_tell_near(checker)
     bounded = local is not None and nearby
