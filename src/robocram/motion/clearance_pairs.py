@@ -242,14 +242,15 @@ class NearPairs:
         self._placed: dict[int, pin.SE3] = {}  # per part: its placement now
         self._query: tuple[coal.DistanceRequest, coal.DistanceResult] | None = None
 
-    def gap(self, k: int) -> float:
-        """Near label ``k``'s least distance [m] less the slack; the reach if it is farther."""
+    def gap(self, k: int, below: float | None = None) -> float:
+        """Near label ``k``'s least distance [m] less the slack; the reach (or ``below``,
+        if given) if it is farther."""
         if self._query is None:
             self._query = (coal.DistanceRequest(), coal.DistanceResult())
         request, result = self._query
         distance, pairs, placed = coal.distance, self._pairs, self._placed
         geometries, placements, parts = pairs.geometries, pairs.placements, pairs.parts
-        best = self._reach
+        best = self._reach if below is None else below
         for bound, m, piece in self._runs[k]:
             if bound >= best:
                 break  # the label's other pairs are farther still
@@ -265,6 +266,18 @@ class NearPairs:
             )
             if found < best:
                 best = found
+        return best
+
+    def least(self) -> float:
+        """The least gap of every label (the reach if none is nearer): the minimum of
+        :meth:`gaps`, to the bit, measuring labels nearest bound first and only while a
+        bound is below the least gap found."""
+        bounds = self.bounds
+        best = self._reach
+        for k in sorted(range(len(bounds)), key=bounds.__getitem__):
+            if bounds[k] >= best:
+                break
+            best = min(best, self.gap(k, best))
         return best
 
     def gaps(self) -> dict[str, float]:

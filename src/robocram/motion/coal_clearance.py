@@ -94,7 +94,11 @@ class CoalClearance:
     def clearance(self, q: Configuration) -> float:
         """The distance [m] from the moving links to what they may not touch (<= 0: near
         enough that the judge must be asked)."""
-        return min(self.clearances(q).values(), default=CLEARANCE_REACH)
+        values = np.asarray(q, dtype=float)
+        if self._last is not None and self._last[0] == values.tobytes():
+            return min(self._last[1].values(), default=CLEARANCE_REACH)
+        self._last = None  # the pose changes: a kept answer no longer describes it
+        return self._posed(values).least()  # the labels that can be least, measured
 
     def clearances(self, q: Configuration) -> dict[str, float]:
         """Per moving link (or held object) nearer than the reach to something it may not

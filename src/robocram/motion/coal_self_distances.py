@@ -52,22 +52,30 @@ class SelfParts:
     sums: FloatArray  # per part pair: the two balls' radii summed
     starts: NDArray[np.intp]  # per link pair: where its part pairs start (reduceat)
     empty: NDArray[np.bool_]  # per link pair: coal has no parts for one of its links
-    _moved: dict[tuple[str, ...], tuple[NDArray[np.intp], list[int], NDArray[np.intp]]] = field(
-        default_factory=dict, compare=False
-    )
+    single: bool  # every link pair has one pair of parts: the per-pair minimum is a no-op
+    _moved: dict[tuple[str, ...], _Moving] = field(default_factory=dict, compare=False)
+    _part_pairs: dict[int, list[tuple[int, int]]] = field(default_factory=dict, compare=False)
 
-    def moved(
-        self, kin: RobotKinematics, slots: JointSlots
-    ) -> tuple[NDArray[np.intp], list[int], NDArray[np.intp]]:
-        """For motions of ``slots``' joints: the rows of :attr:`joints` they move, those
-        joints, and the parts riding on them (kept: every motion of those joints asks)."""
+    def moved(self, kin: RobotKinematics, slots: JointSlots) -> _Moving:
+        """For motions of ``slots``' joints: the joints they move and the parts riding on
+        them, as a check reads them (kept: every motion of those joints asks)."""
         found = self._moved.get(slots.names)
         if found is None:
             rows = _moved_rows(kin, slots, self.joints)
-            found = self._moved[slots.names] = (
-                rows,
-                [self.joints[k] for k in rows.tolist()],
-                np.flatnonzero(np.isin(self.part_row, rows)),
+            found = self._moved[slots.names] = _Moving.of(self, rows)
+        return found
+
+    def part_pairs(self, k: int) -> list[tuple[int, int]]:
+        """Link pair ``k``'s pairs of parts (kept: a walk measures a pair many times)."""
+        found = self._part_pairs.get(k)
+        if found is None:
+            end = self.starts[k + 1] if k + 1 < len(self.starts) else len(self.first)
+            found = self._part_pairs[k] = list(
+                zip(
+                    self.first[self.starts[k] : end].tolist(),
+                    self.second[self.starts[k] : end].tolist(),
+                    strict=True,
+                )
             )
         return found
 
@@ -123,6 +131,37 @@ class SelfParts:
             radii[firsts] + radii[seconds] if parts else np.zeros(len(firsts)),
             np.array(starts, dtype=np.intp),
             np.array(empty, dtype=bool),
+            starts == list(range(len(first))),
+        )
+
+
+@dataclass(frozen=True)
+class _Moving:
+    """What a check of some planned joints reads: the rows of :attr:`SelfParts.joints`
+    they move (pinocchio ``ids``), the parts riding on those, and per such part its
+    joint's position among the rows, its ball centre (4, 1) and its scaled box axes."""
+
+    rows: NDArray[np.intp]
+    ids: list[int]
+    parts: NDArray[np.intp]
+    carrier: NDArray[np.intp]
+    centres: FloatArray  # (moved parts, 4, 1)
+    boxes: FloatArray  # (moved parts, 3, 3)
+    parts_set: frozenset[int]  # ``parts``
+
+    @classmethod
+    def of(cls, parts: SelfParts, rows: NDArray[np.intp]) -> _Moving:
+        moved = np.flatnonzero(np.isin(parts.part_row, rows))
+        position = {row: k for k, row in enumerate(rows.tolist())}
+        carrier = np.array([position[r] for r in parts.part_row[moved].tolist()], dtype=np.intp)
+        return cls(
+            rows,
+            [parts.joints[k] for k in rows.tolist()],
+            moved,
+            carrier,
+            parts.centres[moved][:, :, None],
+            parts.boxes[moved],
+            frozenset(moved.tolist()),
         )
 
 
@@ -144,7 +183,8 @@ class SelfDistances:
         self._slots = JointSlots(kin, joints, kin.configuration(standing))
         self._parts = parts
         self._margin = margin
-        self._placed: dict[int, pin.SE3] = {}
+        self._placed: dict[int, pin.SE3] = {}  # the moved parts' poses at the last check
+        self._still: dict[int, pin.SE3] = {}  # the other parts' poses: they never move
         self._query = (coal.DistanceRequest(), coal.DistanceResult())
         pin.forwardKinematics(self._model, self._data, self._slots.q0)
         placed = self._data.oMi.tolist()  # views: read them now
@@ -152,23 +192,23 @@ class SelfDistances:
             [placed[j].homogeneous for j in parts.joints], dtype=float
         ).reshape(-1, 4, 4)
         # only the joints below a planned one move: the others' parts are placed once
-        self._moved, self._moved_ids, self._moved_parts = parts.moved(kin, self._slots)
+        self._moving = parts.moved(kin, self._slots)
         self._centres, self._halves = _placed_boxes(self._frames, parts, parts.part_row)
 
     def bounds(self, q: FloatArray) -> FloatArray:
         """Per pair, with the joints at ``q``: a lower bound [m] on PyBullet's distance
         between its links, from the parts' balls and boxes (the larger bound of the two
         per pair of parts; :data:`NO_PARTS` where coal has none)."""
-        parts = self._parts
+        parts, moving = self._parts, self._moving
         pin.forwardKinematics(self._model, self._data, self._slots.full(q))
-        placed = self._data.oMi  # one by one: a list of all costs ~4x as much
-        self._frames[self._moved] = [placed[j].homogeneous for j in self._moved_ids]
-        self._placed = {}
-        moved = self._moved_parts
+        placed = self._data.oMi.tolist()  # views: read them now
+        frames = np.array([placed[j].homogeneous for j in moving.ids]).reshape(-1, 4, 4)
+        self._frames[moving.rows] = frames
+        self._placed = dict(self._still)
+        on = frames[moving.carrier]  # each moved part's joint placement
         centres, halves = self._centres, self._halves
-        centres[moved], halves[moved] = _placed_boxes(
-            self._frames, parts, parts.part_row[moved], moved
-        )
+        centres[moving.parts] = (on @ moving.centres)[:, :3, 0]
+        halves[moving.parts] = np.abs(on[:, :3, :3] @ moving.boxes).sum(axis=2)
         first, second = parts.first, parts.second
         apart = np.abs(centres[first] - centres[second])
         boxes = apart - halves[first] - halves[second]  # per axis: the boxes' gap
@@ -177,7 +217,11 @@ class SelfDistances:
         apart *= apart
         balls = np.sqrt(apart.sum(axis=1)) - parts.sums
         np.maximum(balls, np.sqrt(boxes.sum(axis=1)), out=balls)
-        lower: FloatArray = np.minimum.reduceat(balls, parts.starts) - self._margin
+        if parts.single:  # one pair of parts per pair: its minimum is itself
+            balls -= self._margin
+            lower: FloatArray = balls
+        else:
+            lower = np.minimum.reduceat(balls, parts.starts) - self._margin
         lower[parts.empty] = NO_PARTS
         return lower
 
@@ -189,15 +233,11 @@ class SelfDistances:
             return NO_PARTS
         request, result = self._query
         best = np.inf
-        end = parts.starts[k + 1] if k + 1 < len(parts.starts) else len(parts.first)
-        for m, n in zip(
-            parts.first[parts.starts[k] : end].tolist(),
-            parts.second[parts.starts[k] : end].tolist(),
-            strict=True,
-        ):
+        geometries = parts.parts
+        for m, n in parts.part_pairs(k):
             result.clear()  # a result keeps the least distance of all its calls
             found = coal.distance(
-                parts.parts[m].geometry, self._pose(m), parts.parts[n].geometry, self._pose(n),
+                geometries[m].geometry, self._pose(m), geometries[n].geometry, self._pose(n),
                 request, result,
             )  # fmt: skip
             best = min(best, found)
@@ -212,6 +252,8 @@ class SelfDistances:
         if pose is None:
             part = self._parts.parts[m]
             pose = self._placed[m] = pin.SE3(self._frames[self._parts.part_row[m]]) * part.placement
+            if m not in self._moving.parts_set:
+                self._still[m] = pose
         return pose
 
 

@@ -47,10 +47,12 @@ from robocram.motion.configuration_checker import (
     ClearanceChecker,
     ConfigurationChecker,
     can_tell_clearance,
+    can_tell_near,
     posed,
 )
 from robocram.motion.joint_limits import JointLimits
 from robocram.motion.joint_trajectory import FloatArray
+from robocram.motion.segment_check import rigid_step
 from robocram.motion.straight_segment import (
     along_line_segment,
     profile_states,
@@ -184,24 +186,46 @@ def _blend_free(
     if speed <= 0.0:
         return True
     by_link: dict[str, float] = {}
+    nearby = can_tell_near(checker)
     floor = bound.max_link_travel / speed
     s = 0.0
     for _ in range(MAX_WALK):
         x = np.array([min(s / (2.0 * b), 1.0)])
         q = blend_state(corner[None, :], u1[None, :], u2[None, :], np.array([b]), x)[0][0]
+        if nearby:  # only the labels that can limit the step are measured
+            step, touching = rigid_step(
+                checker.near(q),  # type: ignore[attr-defined]
+                checker.reach,
+                checker.reach / speed,
+                lambda link: _link_travel(by_link, bound, link, rate),
+            )
+            if touching and not checker.is_free(q):
+                return False
+            s += max(step, floor)
+            if s >= 2.0 * b:
+                return True
+            continue
         gaps = checker.clearances(q)
         if min(gaps.values(), default=1.0) <= 0.0 and not checker.is_free(q):
             return False
         step = checker.reach / speed
         for link, gap in gaps.items():
-            if link not in by_link:
-                by_link[link] = bound.link_travel(link, np.zeros_like(rate), rate)
-            if by_link[link] > 0.0:
+            if _link_travel(by_link, bound, link, rate) > 0.0:
                 step = min(step, gap / by_link[link])
         s += max(step, floor)
         if s >= 2.0 * b:  # the rest is within this step (its end is on the polyline)
             return True
     return False
+
+
+def _link_travel(
+    by_link: dict[str, float], bound: TravelBound, link: str, rate: FloatArray
+) -> float:
+    """The most [m] a point of ``link`` moves per unit of ``s`` (kept in ``by_link``)."""
+    found = by_link.get(link)
+    if found is None:
+        found = by_link[link] = bound.link_travel(link, np.zeros_like(rate), rate)
+    return found
 
 
 def _length(vector: FloatArray) -> float:

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 from collections import deque
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
 import numpy as np
@@ -69,9 +69,10 @@ def _advance_free(
         if travel > LOCAL_LEVERS_FROM and not bound.mimicked and can_tell_levers(checker)
         else None
     )
-    by_link = {}  # [m] per link: the most a point of it moves from qa to qb
+    by_link: dict[str, float] = {}  # [m] per link: the most a point of it moves from qa to qb
     reach = checker.reach
-    bounded = local is not None and can_tell_near(checker)
+    nearby = can_tell_near(checker)
+    bounded = local is not None and nearby
     s = 0.0
     while True:
         q = qa + (qb - qa) * s
@@ -82,6 +83,19 @@ def _advance_free(
                 checker.near(q),  # type: ignore[attr-defined]
                 reach,
                 bound.max_link_travel,
+            )
+            if touching and not checker.is_free(q):
+                return False  # the contact check decides, as everywhere
+            s += max(step, floor)
+            if s >= 1.0:
+                return True
+            continue
+        if local is None and nearby:  # rigid steps: only the labels that can limit one
+            step, touching = rigid_step(
+                checker.near(q),  # type: ignore[attr-defined]
+                reach,
+                reach / travel,
+                lambda link: _link_travel(by_link, bound, link, qa, qb),
             )
             if touching and not checker.is_free(q):
                 return False  # the contact check decides, as everywhere
@@ -104,6 +118,45 @@ def _advance_free(
         s += max(step, floor)
         if s >= 1.0:
             return True
+
+
+def _link_travel(
+    by_link: dict[str, float], bound: TravelBound, link: str, qa: FloatArray, qb: FloatArray
+) -> float:
+    """``bound.link_travel(link, qa, qb)``, kept in ``by_link`` (a walk asks per check)."""
+    found = by_link.get(link)
+    if found is None:
+        found = by_link[link] = bound.link_travel(link, qa, qb)
+    return found
+
+
+def rigid_step(
+    near: LabelGaps, reach: float, first: float, travel_of: Callable[[str], float]
+) -> tuple[float, bool]:
+    """The step of a walk on rigid levers: the least of ``first`` and, per label nearer
+    than ``reach`` that travels (``travel_of`` it > 0 [m] per unit of the walk), its gap
+    over that travel; the same to the bit as from every label's gap, measuring only the
+    labels whose bound can make it smaller (a label's gap is at least its bound), nearest
+    first. And whether a label touches (a gap <= 0: the contact check must decide)."""
+    exact: dict[int, float] = {}
+    touching = False
+    for k, lower in enumerate(near.bounds):
+        if lower <= 0.0:
+            exact[k] = near.gap(k)
+            touching = touching or exact[k] <= 0.0
+    hopeful = []
+    for k, name in enumerate(near.names):
+        travel = travel_of(name)
+        if travel > 0.0:
+            hopeful.append((near.bounds[k] / travel, k, travel))
+    step = first
+    for lowest, k, travel in sorted(hopeful):
+        if lowest >= step:
+            break  # no label left can make the step smaller
+        gap = exact[k] if k in exact else near.gap(k)
+        if gap < reach:  # farther labels are clear by the reach, as ``first`` says
+            step = min(step, gap / travel)
+    return step, touching
 
 
 @dataclass

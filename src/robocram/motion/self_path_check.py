@@ -56,13 +56,12 @@ class SelfPathCheck:
         """The check of a motion of ``joints`` from where the robot is now."""
         joints = tuple(joints)
         pairs, levers, parts = world.derived(_kept_pairs).of(world, robot, joints)
-        floors = np.minimum(world.self_distances(robot, pairs, 0.0), 0.0) - DEEPEN
         model = world.robot(robot).description.model
-        standing = {
-            j: v for j, v in world.joint_states(robot).items() if model.joints[j].mimic is None
-        }  # fmt: skip
+        now = world.joint_states(robot)
+        standing = {j: v for j, v in now.items() if model.joints[j].mimic is None}
         geometry = model.derived(RobotGeometry.of)
         distances = SelfDistances(geometry, parts, joints, standing, SELF_MARGIN)
+        floors = _floors(world, robot, pairs, distances.bounds(np.array([now[j] for j in joints])))
         return cls(world, robot, joints, pairs, levers, floors, distances)
 
     def colliding(self, q: Sequence[float]) -> list[LinkPair]:
@@ -85,19 +84,19 @@ class SelfPathCheck:
         if not self.pairs or len(points) < 2:
             return None
         travel = np.abs(np.diff(points, axis=0)) @ self.levers.T  # (segments, pairs)
+        steps = _Steps(travel)
         segment, s = 0, 0.0
         posing = _Posing(self.world, self.robot, self.joints)
         try:
             while True:
                 q = points[segment] + (points[segment + 1] - points[segment]) * s
                 gaps = self._gaps(q, travel[segment], posing)
-                hit = np.flatnonzero(gaps < 0.0)
-                if hit.size:
+                if gaps.min() < 0.0:
                     fraction = (segment + s) / (len(points) - 1)
-                    return fraction, [self.pairs[k] for k in hit.tolist()]
+                    return fraction, [self.pairs[k] for k in np.flatnonzero(gaps < 0.0).tolist()]
                 if segment == len(points) - 2 and s >= 1.0:
                     return None
-                segment, s = _advance(travel, segment, s, np.maximum(gaps, MIN_STEP))
+                segment, s = steps.advance(segment, s, np.maximum(gaps, MIN_STEP))
         finally:
             posing.restore()
 
@@ -109,6 +108,7 @@ class SelfPathCheck:
         floors = self.floors
         lower = self.distances.bounds(q) - floors
         gaps = lower.copy()
+        rates = rate.tolist()  # the loops below read single values: floats cost less
 
         def measure(k: int) -> float:
             found = self.distances.distance(k)
@@ -117,15 +117,16 @@ class SelfPathCheck:
                 found = float(
                     self.world.self_distances(self.robot, self.pairs, REACH, lambda _: (k,))[k]
                 )
-            gaps[k] = found - floors[k]
-            return max(float(gaps[k]), MIN_STEP)
+            gap = found - float(floors[k])
+            gaps[k] = gap
+            return max(gap, MIN_STEP)
 
         touching = np.flatnonzero(lower < 0.0).tolist()
         best = np.inf
         for k in touching:
             step = measure(k)
-            if rate[k] > 0.0:
-                best = min(best, step / rate[k])
+            if rates[k] > 0.0:
+                best = min(best, step / rates[k])
         ratio = np.full(len(rate), np.inf)
         np.divide(np.maximum(lower, MIN_STEP), rate, out=ratio, where=rate > 0.0)
         for k in np.argsort(ratio, kind="stable").tolist():
@@ -133,25 +134,50 @@ class SelfPathCheck:
                 break
             if lower[k] < 0.0:
                 continue
-            best = min(best, measure(k) / rate[k])
+            best = min(best, measure(k) / rates[k])
         return gaps
 
 
-def _advance(travel: FloatArray, segment: int, s: float, budget: FloatArray) -> tuple[int, float]:
-    """The furthest ``(segment, s)`` from here no pair can travel its ``budget`` by."""
-    left = budget.copy()
-    last = len(travel) - 1
-    while True:
-        rest = travel[segment] * (1.0 - s)
-        if (rest <= left).all():
-            if segment == last:
-                return segment, 1.0
-            left -= rest
-            segment, s = segment + 1, 0.0
-            continue
-        moving = travel[segment] > 0.0
-        share = np.min(left[moving] / travel[segment][moving])
-        return segment, min(s + float(share), 1.0)
+class _Steps:
+    """Steps along a path whose pairs travel ``travel`` (segments, pairs) per segment."""
+
+    def __init__(self, travel: FloatArray) -> None:
+        self.travel = travel
+        moving = travel > 0.0
+        self.moving = list(moving)
+        self.rates = [row[mask] for row, mask in zip(travel, moving, strict=True)]
+
+    def advance(self, segment: int, s: float, budget: FloatArray) -> tuple[int, float]:
+        """The furthest ``(segment, s)`` from here no pair can travel its ``budget`` by
+        (``budget`` is spent: it is the caller's fresh array)."""
+        left = budget
+        travel = self.travel
+        last = len(travel) - 1
+        while True:
+            rest = travel[segment] * (1.0 - s)
+            if (rest <= left).all():
+                if segment == last:
+                    return segment, 1.0
+                left -= rest
+                segment, s = segment + 1, 0.0
+                continue
+            share = (left[self.moving[segment]] / self.rates[segment]).min()
+            return segment, min(s + float(share), 1.0)
+
+
+def _floors(
+    world: World, robot: str, pairs: tuple[LinkPair, ...], bounds: FloatArray
+) -> FloatArray:
+    """Per pair: nearer than this [m] is a collision; a pair touching now may stay as deep
+    (:data:`DEEPEN` more). PyBullet measures only the pairs coal's ``bounds`` (lower
+    bounds on PyBullet's distances, as the robot stands) do not find apart: the others'
+    floor is -DEEPEN, as PyBullet's positive distance would make it."""
+    floors = np.full(len(pairs), -DEEPEN)
+    near = np.flatnonzero(~(bounds > 0.0)).tolist()
+    if near:
+        measured = world.self_distances(robot, [pairs[k] for k in near], 0.0)
+        floors[near] = np.minimum(measured, 0.0) - DEEPEN
+    return floors
 
 
 @dataclass
