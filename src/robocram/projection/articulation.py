@@ -92,6 +92,17 @@ def resting_in(robot: ProjectedRobot, part: str, link: str) -> list[str]:
     return out
 
 
+@dataclass(frozen=True)
+class _Hold:
+    """How the tool holds a part's handle while its joint moves."""
+
+    part: str
+    joint: str
+    handle: str
+    grasp: Pose
+    pull: Pose
+
+
 def _follow(
     robot: ProjectedRobot,
     arm: str,
@@ -107,17 +118,16 @@ def _follow(
     A step the hand cannot follow is tried again in halves (:data:`STEP_HALVINGS` times):
     where the base drives along, the handle moves in proportion to the drive's time, and a
     shorter step keeps the hand nearer its bounded contact on the handle."""
-    world = robot.world
-    held = world.joint_states(part)[joint]
+    hold = _Hold(part, joint, handle, grasp, pull)
+    held = robot.world.joint_states(part)[joint]
     for value in path:
-        checkpoint()  # a stopped task ends here, holding the handle at the last step
         for halving in range(STEP_HALVINGS + 1):
             steps = 2**halving
             done = held
             for k in range(1, steps + 1):
                 checkpoint()  # a stopped task ends here, holding the handle at the last step
                 goal = held + (value - held) * k / steps
-                if not _step(robot, arm, part, joint, handle, grasp, pull, done, goal):
+                if not _step(robot, arm, hold, done, goal):
                     break
                 done = goal
             if done == value:
@@ -130,26 +140,17 @@ def _follow(
     return held
 
 
-def _step(
-    robot: ProjectedRobot,
-    arm: str,
-    part: str,
-    joint: str,
-    handle: str,
-    grasp: Pose,
-    pull: Pose,
-    held: float,
-    value: float,
-) -> bool:
+def _step(robot: ProjectedRobot, arm: str, hold: _Hold, held: float, value: float) -> bool:
     """Move the joint from ``held`` to ``value`` with the tool on the handle; whether the
     hand followed (if not, the joint is back at ``held``)."""
     world = robot.world
+    part, joint, handle = hold.part, hold.joint, hold.handle
     world.set_joint_states(part, {joint: value})
     robot.carried[:] = [CarriedJoint(part, joint, held, value)]  # the hand moves it
     try:
         move_tcp(
-            robot, arm, world.link_pose(part, handle) * pull * grasp, HOLD_MODE, move_base=True,
-            base_travel=STEP_TRAVEL, touching=f"{part}/{handle}",
+            robot, arm, world.link_pose(part, handle) * hold.pull * hold.grasp, HOLD_MODE,
+            move_base=True, base_travel=STEP_TRAVEL, touching=f"{part}/{handle}",
         )  # fmt: skip
     except (ManipulationPoseUnreachable, ManipulationGoalNotReached, NavigationLowLevelFailure):
         world.set_joint_states(part, {joint: held})
