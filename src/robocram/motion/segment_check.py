@@ -72,31 +72,19 @@ def _advance_free(
     by_link: dict[str, float] = {}  # [m] per link: the most a point of it moves from qa to qb
     reach = checker.reach
     nearby = can_tell_near(checker)
-    bounded = local is not None and nearby
     s = 0.0
     while True:
         q = qa + (qb - qa) * s
         counter.checks += 1
-        if bounded:  # only the labels that can limit the step are measured
-            assert local is not None
-            step, touching = local.bounded_step(
-                checker.near(q),  # type: ignore[attr-defined]
-                reach,
-                bound.max_link_travel,
-            )
-            if touching and not checker.is_free(q):
-                return False  # the contact check decides, as everywhere
-            s += max(step, floor)
-            if s >= 1.0:
-                return True
-            continue
-        if local is None and nearby:  # rigid steps: only the labels that can limit one
-            step, touching = rigid_step(
-                checker.near(q),  # type: ignore[attr-defined]
-                reach,
-                reach / travel,
-                lambda link: _link_travel(by_link, bound, link, qa, qb),
-            )
+        if nearby:  # only the labels that can limit a step are measured
+            near = checker.near(q)  # type: ignore[attr-defined]
+            if local is not None:
+                step, touching = local.bounded_step(near, reach, bound.max_link_travel)
+            else:  # rigid steps
+                step, touching = rigid_step(
+                    near, reach, reach / travel,
+                    lambda link: _link_travel(by_link, bound, link, qa, qb),
+                )  # fmt: skip
             if touching and not checker.is_free(q):
                 return False  # the contact check decides, as everywhere
             s += max(step, floor)
