@@ -22,7 +22,7 @@ from robocram.scenes.errors import SceneError
 from robocram.scenes.stand_in import StandIn
 from robocram.tf import Pose, Vector3
 from robocram.tf import quaternion as quat
-from robocram.world.robot_urdf import check_link_count
+from robocram.world.robot_urdf import check_loadable
 
 if TYPE_CHECKING:
     import xml.etree.ElementTree as ET
@@ -84,7 +84,8 @@ class EnvironmentModel:
 
         Raises:
             UrdfError: malformed or unsafe XML, or not a tree (naming the link or joints).
-            TooManyLinksError: more links than PyBullet holds (``MAX_LINKS``).
+            TooManyLinksError: more links than PyBullet holds (``MAX_LINKS``), even cut
+                into bodies at subtrees hung on fixed joints from the root.
             SceneError: no links.
         """
         file = Path(path)
@@ -152,12 +153,13 @@ def check_urdf(file: Path) -> RobotModel:
 
     Missing meshes and packages are the draft's to report (as unfound links), not warned
     about here. A file with more links than PyBullet holds is refused before the draft's
-    walks (quadratic in the links) start: it could not be loaded anyway.
+    walks (quadratic in the links) start, unless it loads as several bodies (cut at
+    subtrees hung on fixed joints from the root): it could not be loaded anyway.
     """
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", MissingMeshWarning)
         model = RobotModel.from_file(file, missing_packages_as_boxes=True)
-    check_link_count(model.name, str(file), model)
+    check_loadable(model.name, str(file), model)
     return model
 
 
