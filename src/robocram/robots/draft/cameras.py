@@ -23,7 +23,8 @@ from robocram.tf import Pose
 
 CAMERA_WORDS = ("optical", "camera", "rgb", "kinect", "xtion", "realsense", "stereo")
 NOT_CAMERAS = ("depth", "infra", "_ir", "projector", "laser", "imu", "gazebo", "info")
-FORWARD = 0.7  # x share in the root link of an axis that looks forward
+FORWARD = 0.7  # x share in the root link of an axis that looks squarely forward
+LOOKS_AHEAD = 0.5  # x share of an optical axis that `robot check` counts as looking ahead
 OPTICAL_FROM_BODY = Pose.from_xyz_rpy((0.0, 0.0, 0.0), (-math.pi / 2, 0.0, -math.pi / 2))
 DEFAULT_HFOV = math.radians(60.0)  # [rad] a common RGB-D camera; URDF links carry no FOV
 DEFAULT_VFOV = math.radians(45.0)  # [rad]
@@ -76,13 +77,18 @@ def find_camera(
     poses = link_poses(tree.model)
     axes = poses[frame].matrix()[:3, :3]
     added, why, doubt = None, f"camera frame by name ({len(frames)} found, best first)", None
-    if axes[0, 2] >= FORWARD:
+    z_ahead, x_ahead = float(axes[0, 2]), float(axes[0, 0])
+    if z_ahead >= FORWARD or (z_ahead >= LOOKS_AHEAD and z_ahead >= x_ahead):
         why += "; optical: z looks forward"
-    elif axes[0, 0] >= FORWARD:
+    elif x_ahead >= LOOKS_AHEAD:
         added = FrameSpec(f"{frame}_optical", frame, OPTICAL_FROM_BODY)
         why += "; its x looks forward (body convention): optical frame added, z forward"
     else:
-        doubt = "neither its z nor its x looks forward at zero joints; add an optical frame"
+        doubt = (
+            f"neither its z (x share {z_ahead:.2f}) nor its x ({x_ahead:.2f}) looks ahead "
+            f"(at least {LOOKS_AHEAD}, as `robot check` asks) at zero joints; add an "
+            "optical frame (z forward, x right, y down) with a FrameSpec"
+        )
     low, high = _heights(tree, frame, torso)
     camera_frame = added.name if added is not None else frame
     sensor = sensor_for(frame, tree.rigid_group(frame), sensors)
