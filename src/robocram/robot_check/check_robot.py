@@ -12,6 +12,7 @@ from collections.abc import Callable
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robot_check import arm_checks, head_checks
 from robocram.robot_check.loading_check import load_for_check
+from robocram.robot_check.part_presence import part_presence
 from robocram.robot_check.report_card import CheckResult, ReportCard
 from robocram.robots import ArmDescription, RobotDescription
 from robocram.world import World
@@ -45,7 +46,7 @@ def _guarded(name: str, check: Callable[[], CheckResult | list[CheckResult]]) ->
 
 def _drive(robot: ProjectedRobot) -> list[CheckResult]:
     desc = robot.description
-    results: list[CheckResult] = []
+    results: list[CheckResult] = part_presence(desc)
     _park(robot)
     if desc.cameras:
         results += _guarded("camera", lambda: head_checks.camera_forward(robot))

@@ -101,7 +101,24 @@ class _Reader:
             return Geometry("sphere", radius=self.number(shape, "radius", 0.0) or 0.0)
         if shape.tag == "mesh":
             return self.mesh(shape, stand_in)
-        raise self.fail(shape, f"unknown geometry <{shape.tag}>; use box, cylinder, sphere or mesh")
+        if shape.tag == "capsule":  # its middle; the caps come from :meth:`capsule_caps`
+            radius, length = self.number(shape, "radius", 0.0), self.number(shape, "length", 0.0)
+            return Geometry("cylinder", radius=radius or 0.0, length=length or 0.0)
+        raise self.fail(
+            shape, f"unknown geometry <{shape.tag}>; use box, cylinder, capsule, sphere or mesh"
+        )
+
+    def capsule_caps(self, node: XmlNode) -> tuple[tuple[Geometry, Pose], ...]:
+        """The two spheres ending a ``<capsule>`` (a cylinder along z with round ends, as
+        PyBullet and Gazebo read it), in the element's frame; none for other shapes."""
+        geom = node.find("geometry")
+        shape = geom.children[0] if geom is not None and geom.children else None
+        if shape is None or shape.tag != "capsule":
+            return ()
+        radius = self.number(shape, "radius", 0.0) or 0.0
+        half = (self.number(shape, "length", 0.0) or 0.0) / 2
+        ball = Geometry("sphere", radius=radius)
+        return ((ball, Pose((0.0, 0.0, half))), (ball, Pose((0.0, 0.0, -half))))
 
     def mesh(self, shape: XmlNode, stand_in: Callable[[], Geometry]) -> Geometry:
         uri = self.attr(shape, "filename")
@@ -143,10 +160,27 @@ class _Reader:
         def stand_in() -> Geometry:
             return Geometry("box", size=extents or (_DEFAULT_BOX,) * 3)
 
-        visuals = tuple(self.visual(v, stand_in) for v in node.findall("visual"))
+        visuals = tuple(
+            shape
+            for v in node.findall("visual")
+            for shape in (
+                self.visual(v, stand_in),
+                *(
+                    Visual(ball, self.origin(v) * at, v.attrib.get("name"))
+                    for ball, at in self.capsule_caps(v)
+                ),
+            )
+        )
         collisions = tuple(
-            Collision(self.geometry(c, stand_in), self.origin(c), c.attrib.get("name"))
+            shape
             for c in node.findall("collision")
+            for shape in (
+                Collision(self.geometry(c, stand_in), self.origin(c), c.attrib.get("name")),
+                *(
+                    Collision(ball, self.origin(c) * at, c.attrib.get("name"))
+                    for ball, at in self.capsule_caps(c)
+                ),
+            )
         )
         return Link(self.attr(node, "name"), visuals, collisions, inertial)
 
