@@ -81,7 +81,10 @@ def _span(joints: Mapping[str, Joint], parent_of: Mapping[str, Joint]) -> float:
     for joint in joints.values():
         pose = joint.origin
         above = joint.parent
-        while (parent := parent_of.get(above)) is not None:
+        for _ in range(len(joints)):  # a loop (refused by RobotModel afterwards) ends too
+            parent = parent_of.get(above)
+            if parent is None:
+                break
             pose = parent.origin * pose
             above = parent.parent
         positions.append(pose.position)
