@@ -12,9 +12,7 @@ from collections.abc import Callable
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robot_check import arm_checks, head_checks
 from robocram.robot_check.loading_check import load_for_check
-from robocram.robot_check.part_presence import part_presence
 from robocram.robot_check.report_card import CheckResult, ReportCard
-from robocram.robot_check.stand_in_blame import blame_stand_ins
 from robocram.robots import ArmDescription, RobotDescription
 from robocram.world import World
 
@@ -32,8 +30,7 @@ def check_robot(desc: RobotDescription) -> ReportCard:
         results += _drive(robot)
     finally:
         world.close()
-    hands = {k: (*a.hand_links, *a.gripper_links) for k, a in loaded.arms.items()}
-    return ReportCard(desc.name, tuple(blame_stand_ins(loaded.model, results, hands)))
+    return ReportCard(desc.name, tuple(results))
 
 
 def _guarded(name: str, check: Callable[[], CheckResult | list[CheckResult]]) -> list[CheckResult]:
@@ -48,7 +45,7 @@ def _guarded(name: str, check: Callable[[], CheckResult | list[CheckResult]]) ->
 
 def _drive(robot: ProjectedRobot) -> list[CheckResult]:
     desc = robot.description
-    results: list[CheckResult] = part_presence(desc)
+    results: list[CheckResult] = []
     _park(robot)
     if desc.cameras:
         results += _guarded("camera", lambda: head_checks.camera_forward(robot))

@@ -84,8 +84,7 @@ def check_environment(desc: EnvironmentDescription) -> EnvironmentCard:
     world = World()
     try:
         world.add_floor()
-        loadable = loadable_urdf(desc.urdf, desc.stand_ins, package_paths=desc.package_paths)
-        world.add_urdf(desc.name, loadable, type="environment")
+        world.add_urdf(desc.name, loadable_urdf(desc.urdf, desc.stand_ins), type="environment")
         lines = [_check_container(world, desc.name, c) for c in desc.containers]
         lines += [_check_surface(world, desc.name, s) for s in desc.surfaces]
     finally:

@@ -117,29 +117,18 @@ class BodyLoadError(WorldError):
 
 
 class TooManyLinksError(BodyLoadError):
-    """A body with more links (or moving joints) than PyBullet can hold, even after a
-    fixed-base model was cut into parts at subtrees rigid with its root; ``hint`` says why
-    it could not be cut further."""
+    """A body with more links (or moving joints) than PyBullet can hold."""
 
     def __init__(
-        self,
-        name: str,
-        source: str,
-        links: int,
-        limit: int,
-        what: str = "links below its root",
-        hint: str = "",
+        self, name: str, source: str, links: int, limit: int, what: str = "links below its root"
     ) -> None:
         self.links = links
         self.limit = limit
-        self.hint = hint
-        why = f" ({hint})" if hint else ""
         super().__init__(
             name,
             source,
-            f"it has {links} {what} and PyBullet holds at most {limit} in one body{why}; "
-            "hang groups of links (a cabinet with its drawers) on fixed joints from the root "
-            "so they load as bodies of their own, or drop links the projection does not need",
+            f"it has {links} {what} and PyBullet holds at most {limit}; drop links the "
+            "projection does not need or merge chains of fixed joints in the URDF",
         )
 
 
