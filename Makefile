@@ -36,10 +36,12 @@ $(ROS2_STAMP): $(STAMP) tools/setup_ros2.sh tools/ros2_cmake_fix.cmake $(ROS2_DE
 
 setup: $(STAMP) $(ROS_STAMP) $(ROS2_STAMP)
 
-# `make demo ROBOT=path/to/my_robot.py` runs the kitchen demo on a description file
+# `make demo ROBOT=path/to/my_robot.py` runs the kitchen demo on a description file;
+# `make demo ROBOT=... DEMO_ARGS="--stand-retries 10"` passes options on
 ROBOT ?= pr2
+DEMO_ARGS ?=
 demo: installed
-	$(BIN)/python -m robocram.demo --robot $(ROBOT)
+	$(BIN)/python -m robocram.demo --robot $(ROBOT) $(DEMO_ARGS)
 	@echo "the robocram command: 'source $(BIN)/activate' then 'robocram --help', or '$(BIN)/robocram --help'"
 
 lint: installed

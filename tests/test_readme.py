@@ -9,6 +9,7 @@ import pytest
 
 README = Path(__file__).resolve().parents[1] / "README.md"
 ROBOT_LINE = re.compile(r'^robot = "(\w+)" +# or ((?:"\w+"(?:, )?)+).*$', re.M)
+STRETCH = Path(__file__).resolve().parent / "data" / "stretch" / "stretch.py"
 
 
 def example() -> str:
@@ -43,4 +44,19 @@ def test_readme_example_runs_on_each_robot_it_names(robot: str) -> None:
     quarter = limits.lower + (limits.upper - limits.lower) / 4
     assert world.joint_states(robot)[torso] == pytest.approx(quarter, abs=1e-6)
     assert namespace["up"] == pytest.approx(quarter, abs=1e-12)
+    world.close()
+
+
+def test_readme_example_runs_on_a_description_file_without_a_torso() -> None:
+    """Issue 37: ``R=robot`` was the file's path, and ``torso`` None on a robot without a
+    lifting torso (Stretch's lift carries its arm only)."""
+    code = ROBOT_LINE.sub(f"robot = {str(STRETCH)!r}", example(), count=1)
+    namespace: dict[str, object] = {}
+    exec(compile(code, str(README), "exec"), namespace)
+    scene = namespace["scene"]
+    world, name = scene.world, scene.robot  # type: ignore[attr-defined]
+    assert namespace["torso"] is None and "up" not in namespace
+    pose = namespace["mug"].get("pose")  # type: ignore[attr-defined]
+    placed = world.pose(name).inverse() * world.pose("mug-1")
+    assert pose.position == pytest.approx(placed.position, abs=1e-3)
     world.close()

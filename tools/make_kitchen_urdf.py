@@ -15,6 +15,7 @@ the knowledge base and never hard-code a link name. Run ``python tools/make_kitc
 from __future__ import annotations
 
 import math
+import sys
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -93,6 +94,25 @@ EAST = (
     Unit("east_drawers_3", (EAST_FRONT, 0.3, 0.0), FACING_WEST, drawers=3),
     Unit("east_cupboard", (EAST_FRONT, -0.3, 0.0), FACING_WEST, shelves=(0.45,)),
 )
+FACING_EAST = 0.0  # unit yaw: its front faces +x
+WEST_FRONT = -ROOM[0] / 2 + DEPTH  # [m] x of the west run's fronts (the big kitchen's)
+WEST = tuple(
+    Unit(f"west_drawers_{i + 1}", (WEST_FRONT, 1.2 - 0.6 * i, 0.0), FACING_EAST, drawers=4)
+    for i in range(5)
+)  # the big kitchen's: a counter run of drawer units along the west wall
+WEST_CUPBOARDS = tuple(
+    Unit(
+        f"west_cupboard_{i + 1}",
+        (-ROOM[0] / 2 + 0.35, u.xyz[1], 1.4),
+        FACING_EAST,
+        depth=0.35,
+        height=0.6,
+        closed_top=True,
+        shelves=(0.2, 0.4),
+    )
+    for i, u in enumerate(WEST)
+)
+BIG = Path(__file__).resolve().parents[1] / "tests/data/big_kitchen"
 TABLE = ((0.0, -1.4), (1.4, 0.9), 0.75)  # centre [m], top extents [m], top height [m]
 
 
@@ -260,25 +280,40 @@ def table(b: UrdfBuilder, facts: Facts) -> None:
     facts.surfaces.append("table_top")
 
 
-def build() -> tuple[str, str]:
-    """The kitchen URDF and its fact group."""
-    b = UrdfBuilder("kitchen", COMMENT)
+def west_counter(b: UrdfBuilder, facts: Facts) -> None:
+    """The big kitchen's counter top over its west run."""
+    depth = DEPTH + 0.02
+    ys = (WEST[-1].xyz[1] - WIDTH / 2, WEST[0].xyz[1] + WIDTH / 2)
+    size = (depth, ys[1] - ys[0], TOP_THICKNESS)
+    centre = (-ROOM[0] / 2 + depth / 2, (ys[0] + ys[1]) / 2, BASE_HEIGHT + TOP_THICKNESS / 2)
+    slab(b, "counter_top_west", centre, size, "grey", facts)
+
+
+def build(big: bool = False) -> tuple[str, str]:
+    """The kitchen URDF and its fact group; ``big``: with a west run of five drawer
+    units and five wall cupboards over it (139 links, more than one PyBullet body holds)."""
+    b = UrdfBuilder("big_kitchen" if big else "kitchen", COMMENT)
     facts = Facts()
     b.link("kitchen_root")
     walls(b)
-    for u in (*NORTH, FRIDGE, *WALL_CUPBOARDS, *EAST):
+    extra = (*WEST, *WEST_CUPBOARDS) if big else ()
+    for u in (*NORTH, FRIDGE, *WALL_CUPBOARDS, *EAST, *extra):
         unit(b, u, facts)
     counters(b, facts)
+    if big:
+        west_counter(b, facts)
     table(b, facts)
     return b.xml(), facts.text()
 
 
 def main() -> None:
-    """Write the URDF next to the scenes package."""
-    urdf, _ = build()
-    DATA.mkdir(parents=True, exist_ok=True)
-    (DATA / "kitchen.urdf").write_text(urdf, encoding="utf-8")
-    print(f"wrote {DATA / 'kitchen.urdf'}")
+    """Write the URDF next to the scenes package (``--big``: the big kitchen, as test data)."""
+    big = "--big" in sys.argv[1:]
+    urdf, _ = build(big)
+    folder, name = (BIG, "big_kitchen.urdf") if big else (DATA, "kitchen.urdf")
+    folder.mkdir(parents=True, exist_ok=True)
+    (folder / name).write_text(urdf, encoding="utf-8")
+    print(f"wrote {folder / name}")
 
 
 if __name__ == "__main__":

@@ -57,6 +57,9 @@ def description() -> RobotDescription:
                 ),
             ),
         },
+        # TODO doubt: no camera link found by name: draft again with `--camera LINK` (likely
+        #   'link06') to look and detect objects
+        cameras=(),
         extra_frames=(
             FrameSpec(
                 name="arm_standard_tool_frame",

@@ -23,6 +23,7 @@ from robocram.designators import a, an
 from robocram.execution import PlanFailure
 from robocram.plans import perform
 from robocram.projection import looking_orientation, simulated_robot
+from robocram.robots.description_source import is_description_spec
 from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
 from robocram.traces import animate_run, trace_to
@@ -73,13 +74,33 @@ def main(out_dir: Path = Path("out"), robot: str = "pr2", verbose: bool = False)
     return run_demo(out_dir, robot, verbose).written
 
 
-def run_demo(out_dir: Path = Path("out"), robot: str = "pr2", verbose: bool = False) -> DemoRun:
+@dataclass(frozen=True)
+class Retries:
+    """How many stands fetching and delivering try (None: the plans' defaults)."""
+
+    stand: int | None = None
+    place: int | None = None
+
+    def keys(self) -> dict[str, int]:
+        """The transporting designator's keys for the retries that are set."""
+        given = {"stand_retries": self.stand, "place_retries": self.place}
+        return {key: value for key, value in given.items() if value is not None}
+
+
+def run_demo(
+    out_dir: Path = Path("out"),
+    robot: str = "pr2",
+    verbose: bool = False,
+    retries: Retries = Retries(),  # noqa: B008 - frozen
+) -> DemoRun:
     """:func:`main`, keeping going past a failed transport: its reason is printed on one
-    line after the task tree, and the pictures and the GIF show what was done."""
+    line after the task tree, and the pictures and the GIF show what was done. The GIF
+    is rendered with the robot as it ran: a description file is read again from its path."""
     start = time.perf_counter()
     scene = kitchen_scene(robot)
     world = scene.world
-    out_dir = output_folder(out_dir, robot, world.robot(scene.robot).description.name)
+    description = world.robot(scene.robot).description
+    out_dir = output_folder(out_dir, robot, description.name)
     out_dir.mkdir(parents=True, exist_ok=True)
     pictures = [picture(world, out_dir / "demo_before.png")]
     db_path = fresh_database(out_dir / "demo.db")
@@ -91,7 +112,9 @@ def run_demo(out_dir: Path = Path("out"), robot: str = "pr2", verbose: bool = Fa
         for kind, item in ITEMS:
             target = a.location(on=TABLE, for_=item)
             try:
-                perform(an.action(type="transporting", object=kind, target=target))
+                perform(
+                    an.action(type="transporting", object=kind, target=target, **retries.keys())
+                )
             except PlanFailure as failure:
                 failures.append(f"the {kind} was not transported: {one_line(failure)}")
     print(run.tree.render(verbose=verbose))
@@ -104,7 +127,8 @@ def run_demo(out_dir: Path = Path("out"), robot: str = "pr2", verbose: bool = Fa
         print(f"{item} {where} ({x:.2f}, {y:.2f}, {z:.2f}) m in map")
     pictures.append(picture(world, out_dir / "demo_after.png"))
     world.close()
-    gif = animate_run(db_path, tracer.runs[-1], out_dir / "demo.gif", CAMERA)
+    files = {description.name: robot} if is_description_spec(robot) else {}
+    gif = animate_run(db_path, tracer.runs[-1], out_dir / "demo.gif", CAMERA, robots=files)
     print(
         f"traced to {db_path}; {gif.path}: {gif.frames} frames over {gif.replay_duration:.1f} s "
         f"of motion, {gif.size / 1e6:.2f} MB in {gif.render_seconds:.1f} s"
@@ -133,11 +157,31 @@ def command_line(argv: Sequence[str] | None = None) -> list[Path]:
     parser.add_argument(
         "--verbose", action="store_true", help="print every task and full failure texts"
     )
+    parser.add_argument(
+        "--stand-retries",
+        type=_count,
+        help="stands fetching and delivering try before giving up (default: the plans' 3)",
+    )
+    parser.add_argument(
+        "--place-retries", type=_count, help="placing spots delivering tries (default: 6)"
+    )
     args = parser.parse_args(argv)
-    done = run_demo(args.out, args.robot, args.verbose)
+    retries = Retries(args.stand_retries, args.place_retries)
+    done = run_demo(args.out, args.robot, args.verbose, retries)
     if done.failures:
         raise SystemExit(1)
     return done.written
+
+
+def _count(text: str) -> int:
+    """A retry count from the command line: a whole number of at least 1."""
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"{text!r} is no count; give a whole number >= 1")
+    return value
 
 
 if __name__ == "__main__":

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+from dataclasses import replace
 from pathlib import Path
 
 EXIT_OK, EXIT_FAILED = 0, 1
@@ -24,16 +25,29 @@ def add_environment_commands(
     draft.add_argument("urdf", type=Path, help="the environment's URDF file")
     draft.add_argument("-o", "--output", type=Path, help="write the Python module here")
     draft.add_argument("--name", help="the environment's name (default: the URDF's)")
+    _package_path_option(draft)
     draft.set_defaults(handler=_draft)
     check = sub.add_parser("check", help="drive every container and surface once: report card")
     check.add_argument("description", type=Path, help="a .py file defining description()")
+    _package_path_option(check)
     check.set_defaults(handler=_check)
+
+
+def _package_path_option(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "--package-path",
+        type=Path,
+        action="append",
+        default=[],
+        metavar="DIR",
+        help="a folder holding ROS packages for package:// mesh URIs (repeatable)",
+    )
 
 
 def _draft(args: argparse.Namespace) -> int:
     from robocram.scenes import draft_environment
 
-    draft = draft_environment(args.urdf, name=args.name)
+    draft = draft_environment(args.urdf, name=args.name, package_paths=args.package_path)
     if args.output is None:
         sys.stdout.write(draft.source())
         return EXIT_OK
@@ -45,6 +59,8 @@ def _draft(args: argparse.Namespace) -> int:
 def _check(args: argparse.Namespace) -> int:
     from robocram.scenes.environment_check import check_environment, environment_from
 
-    card = check_environment(environment_from(args.description))
+    desc = environment_from(args.description)
+    paths = tuple(dict.fromkeys([*desc.package_paths, *args.package_path]))
+    card = check_environment(replace(desc, package_paths=paths))
     print(card.render())
     return EXIT_OK if card.passed else EXIT_FAILED

@@ -27,6 +27,12 @@ def add_robot_commands(commands: argparse._SubParsersAction[argparse.ArgumentPar
     draft.add_argument(
         "--srdf", type=Path, help="the robot's SRDF (MoveIt): arms, parking state, self-contacts"
     )
+    draft.add_argument(
+        "--camera",
+        metavar="LINK",
+        help="the camera's link, where none is named like one (an optical frame is added "
+        "if its x looks ahead)",
+    )
     _package_path_option(draft)
     draft.set_defaults(handler=_draft)
     check = sub.add_parser("check", help="drive every part of a description once: report card")
@@ -52,7 +58,11 @@ def _draft(args: argparse.Namespace) -> int:
     from robocram.robots import draft_description
 
     draft = draft_description(
-        args.urdf, name=args.name, srdf=args.srdf, package_paths=args.package_path
+        args.urdf,
+        name=args.name,
+        srdf=args.srdf,
+        package_paths=args.package_path,
+        camera=args.camera,
     )
     if args.output is None:
         sys.stdout.write(draft.source())

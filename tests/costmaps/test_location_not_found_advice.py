@@ -141,3 +141,17 @@ def test_a_stream_that_runs_dry_says_how_many_it_accepted(scene: TabletopScene) 
     assert "(first_two rejected 5; 2 accepted before)" in message
     assert "the stream ran dry after 2 accepted (5 refused in a row): first_two (5)" in message
     assert WIDEN not in message
+
+
+def test_a_wide_search_area_is_not_told_to_widen(scene: TabletopScene) -> None:
+    """Issue 37: "widen `size`" was advised when a 6 m square did not help."""
+    world = scene.world
+    x, y, _ = world.pose("mug-1").position
+    with world.stored_state():
+        world.add_box("slab", (3.0, 3.0, 0.05), Pose((x, y, 0.025)))  # no base fits anywhere
+        wide = CostmapLocations(world, size=6.0, resolution=0.1)
+        error = _not_found(wide, a.location(reachable_for="pr2", object="mug-1"))
+    message = str(error)
+    assert error.emptied_by == ("occupancy",) and error.area == pytest.approx(6.0, abs=0.1)
+    assert "widen `size`" not in message and "widening the search area cannot help" in message
+    assert "clear the obstacles there" in message

@@ -41,17 +41,14 @@ EDITS = {  # lines each example changed from its draft
 SINGLE_JAW = pytest.mark.xfail(
     strict=True,
     reason="a single-jaw draft's tool frame lies inside its fixed jaw, so the check's mug "
-    "starts deep in it (z1 73 mm, so101 58 mm) and, put clear of the hand, is not between the "
-    "jaws; the grip passed only while one-sided squeezes were unbounded (issue 37: the draft "
-    "must put the tool frame where the jaws meet)",
+    "starts deep in it (z1 73 mm, so101 58 mm) and its grip fails too; the grip passed only "
+    "while one-sided squeezes were unbounded (issue 37: the draft must put the tool frame "
+    "where the jaws meet)",
 )
-CHECKED_CLEAN = (
-    "baxter",
+CHECKED_CLEAN = ("baxter", "talos", "tiago", "tiago_pro")
+NO_CAMERA = (  # their checks pass but for the missing camera
     "panda",
     pytest.param("so101", marks=SINGLE_JAW),
-    "talos",
-    "tiago",
-    "tiago_pro",
     pytest.param("z1", marks=SINGLE_JAW),
 )
 
@@ -94,6 +91,17 @@ def test_example_checks_clean(name: str) -> None:
         card = check_robot(description_from(str(EXAMPLES / f"{name}.py")))
     assert card.passed, card.render()
     assert len(card.results) >= 6
+
+
+@pytest.mark.parametrize("name", NO_CAMERA)
+def test_an_example_without_a_camera_fails_its_check_naming_the_link_to_add(name: str) -> None:
+    """Issue 37: a robot without a camera passed its check, then failed every pick-up."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        card = check_robot(description_from(str(EXAMPLES / f"{name}.py")))
+    assert [r.name for r in card.failures()] == ["camera"], card.render()
+    assert "--camera LINK" in card.result("camera").fix
+    assert len(card.results) >= 7
 
 
 HAND_IN_THE_MUG = pytest.mark.xfail(

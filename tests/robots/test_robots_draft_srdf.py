@@ -106,12 +106,13 @@ def test_srdf_draft_runs_and_loads(tucked_srdf: Path, tmp_path: Path) -> None:
 
 
 def test_srdf_draft_checks_as_the_plain_draft_does(tucked_srdf: Path) -> None:
-    """Only the grip fails, as for the plain draft: boxes stand in for the finger meshes."""
+    """Every check passes, as for the plain draft: the boxes standing in for the hand's
+    meshes are sized from its joints (issue 37; from the inertia, the palm's reached 5 cm
+    past the fingers' base and the grip closed on nothing)."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         card = check_robot(_draft(FETCH_URDF, tucked_srdf).description)
-    failed = [r.name for r in card.results if not r.passed]
-    assert failed == ["arm arm: grip"], card.render()
+    assert card.passed, card.render()
     assert "arm arm: parking" in [r.name for r in card.results]
 
 
@@ -142,7 +143,7 @@ def test_the_fetchs_own_srdf_has_no_named_state_so_it_parks_stowed() -> None:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         card = check_robot(desc)
-    assert [r.name for r in card.results if not r.passed] == ["arm arm: grip"]  # boxed fingers
+    assert card.passed, card.render()  # its boxed hand sized from the joints (issue 37)
 
 
 def test_srdf_state_named_like_stow_wins_over_tuck(tmp_path: Path) -> None:

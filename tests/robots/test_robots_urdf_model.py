@@ -96,7 +96,11 @@ def test_two_roots_and_unknown_joint_type_are_errors() -> None:
         RobotModel.from_string(xml)
 
 
-def test_missing_mesh_becomes_inertia_box_with_one_warning(tiny_package: Path) -> None:
+def test_missing_mesh_becomes_a_box_spanning_its_joints_with_one_warning(
+    tiny_package: Path,
+) -> None:
+    """Issue 37: sized from the kinematics (the base reaches the arm's joint 0.5 m up),
+    never from the inertia (its solid box would be sqrt(0.3) = 0.55 m each way)."""
     (tiny_package / "tiny_pkg" / "meshes" / "body.stl").unlink()
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
@@ -104,10 +108,14 @@ def test_missing_mesh_becomes_inertia_box_with_one_warning(tiny_package: Path) -
     mesh_warnings = [w for w in caught if issubclass(w.category, MissingMeshWarning)]
     assert len(mesh_warnings) == 1
     assert "body.stl" in str(mesh_warnings[0].message)
-    box = model.links["base"].visuals[0].geometry
-    # Solid box of mass 2 kg and inertia 0.1 on each axis: edge sqrt(6 * 0.1 / 2).
-    assert box.kind == "box"
-    assert box.size == pytest.approx((math.sqrt(0.3),) * 3)
+    visual = model.links["base"].visuals[0]
+    box = visual.geometry
+    assert box.kind == "box" and box.filename.endswith("body.stl")  # marked as a stand-in
+    arm = model.joints["arm_joint"].origin.position[2]
+    assert box.size[0] == box.size[1] == pytest.approx(0.08)  # as thick as allowed
+    assert arm <= box.size[2] <= arm + 0.08
+    assert visual.origin.position == pytest.approx((0.0, 0.0, arm / 2))
+    assert box.size != pytest.approx((math.sqrt(0.3),) * 3)
 
 
 def test_frames_and_boxes_added_in_code_reach_pybullet(tiny_package: Path, tmp_path: Path) -> None:

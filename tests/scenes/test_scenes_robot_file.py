@@ -10,6 +10,7 @@ import runpy
 import sys
 import textwrap
 import warnings
+from dataclasses import replace
 from pathlib import Path
 
 import pytest
@@ -85,9 +86,28 @@ def test_perception_names_the_robots_own_link_in_the_way() -> None:
         scene.world.set_joint_states(scene.robot, dict.fromkeys(parking, 0.0))  # arm hangs
         with pytest.raises(PerceptionBlockedByRobot) as caught:
             _readme_snippet(scene.robot, scene)
-        assert caught.value.link == "upperarm_roll_link"
+        arm = scene.world.robot(scene.robot).description.arms["arm"]
+        assert caught.value.link in arm.links  # the hanging arm's (stand-in boxes: issue 37)
         assert caught.value.target == "mug-1"
         assert "parking-arms" in str(caught.value)
+        assert caught.value.arm_parked is False
+    finally:
+        scene.world.close()
+
+
+def test_a_parked_arm_in_the_view_is_told_to_park_elsewhere_not_to_park() -> None:
+    """Issue 37: "park the arms before looking" was said when they were parked."""
+    desc = load_description(str(FETCH))
+    arm = desc.arms["arm"]
+    hanging = replace(arm, parking=dict.fromkeys(arm.parking, 0.0))  # parked where it hangs
+    scene = tabletop_scene(replace(desc, arms={"arm": hanging}))
+    try:
+        with pytest.raises(PerceptionBlockedByRobot) as caught:
+            _readme_snippet(scene.robot, scene)
+        text = str(caught.value)
+        assert caught.value.arm_parked is True
+        assert "arm 'arm' is parked" in text and "parking pose" in text
+        assert "park the arms before looking" not in text
     finally:
         scene.world.close()
 

@@ -123,7 +123,10 @@ class CostmapLocations:
                 raise LocationNotFound(designator, rejected, accepted, in_a_row, (), culprits)
         if accepted == 0:
             emptied_by, culprits = layers.emptied_by(), _culprits(query)
-            raise LocationNotFound(designator, rejected, accepted, in_a_row, emptied_by, culprits)
+            area = query.grid.shape[0] * query.grid.resolution
+            raise LocationNotFound(
+                designator, rejected, accepted, in_a_row, emptied_by, culprits, area
+            )
 
     def _robot(self, designator: Any, plan: LocationPlan) -> RobotObject | None:
         if plan.robot_key is None:

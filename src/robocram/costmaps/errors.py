@@ -62,6 +62,7 @@ class LocationNotFound(CostmapError, GroundingError):
         blocked_by: the objects the robot would have touched at (nearly) every refused
             stand, standing or reaching, most frequent first.
         culprits: the same with how often each was blamed (what the message says).
+        area: the side [m] of the square searched (its ``size``), None if not known.
     """
 
     def __init__(
@@ -72,8 +73,10 @@ class LocationNotFound(CostmapError, GroundingError):
         in_a_row: int,
         emptied_by: tuple[str, ...] = (),
         culprits: Culprits | None = None,
+        area: float | None = None,
     ) -> None:
         self.rejections = dict(rejections)
+        self.area = area
         self.accepted = accepted
         self.in_a_row = in_a_row
         self.emptied_by = emptied_by
@@ -81,7 +84,7 @@ class LocationNotFound(CostmapError, GroundingError):
         self.description: str = designator.description
         self.occluded_by = culprits.occluded_by if culprits else ()
         self.blocked_by = culprits.blocked_by if culprits else ()
-        advice = not_found_advice(self.rejections, accepted, in_a_row, emptied_by)
+        advice = not_found_advice(self.rejections, accepted, in_a_row, emptied_by, area)
         if culprits:  # the named objects first: the most specific remedy
             advice = f"{culprit_sentence(culprits)}; {advice}"
         counts = ", ".join(f"{name} rejected {n}" for name, n in sorted(self.rejections.items()))
@@ -105,6 +108,7 @@ class LocationNotFound(CostmapError, GroundingError):
                 self.in_a_row,
                 self.emptied_by,
                 self.culprits,
+                self.area,
             ),
         )
 

@@ -11,6 +11,9 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 GENERIC_ADVICE = "widen the search area, loosen the keys or clear the obstacles"
+WIDE_ENOUGH = 5.0  # [m] a search square this wide holds every cell a camera (2.5 m range) or
+# an arm could use round its target: widening it further cannot help, and is not advised
+WIDEN = "widen `size`"  # the advice that holds only for a narrower search area
 
 _SIDE = "no cell {} the reference object lies in the search area: widen `size` or pick another"
 LAYER_ADVICE: Mapping[str, str] = {
@@ -28,6 +31,19 @@ LAYER_ADVICE: Mapping[str, str] = {
     "visibility": "no cell within the camera's range (0.4 to 2.5 m) sees the target: "
     "remove what hides it, or widen `size` if the search area is smaller than that",
 }
+WIDE_LAYER_ADVICE: Mapping[str, str] = {  # the same where the search area is wide enough
+    "behind": "no free cell behind the reference object: pick another relation or clear it",
+    "in_front_of": "no free cell in front of the reference object: pick another relation "
+    "or clear it",
+    "left_of": "no free cell left of the reference object: pick another relation or clear it",
+    "near": "no free cell near the reference object: clear its surroundings",
+    "occupancy": "every cell round the target is blocked for the robot's footprint: clear "
+    "the obstacles there (widening the search area cannot help: it holds every cell within "
+    "the robot's reach), or give the robot a narrower footprint",
+    "right_of": "no free cell right of the reference object: pick another relation or clear it",
+    "visibility": "no cell within the camera's range (0.4 to 2.5 m) sees the target: remove "
+    "what hides it, or check the camera's heights and range in the robot's description",
+}
 
 VALIDATOR_ADVICE: Mapping[str, str] = {
     "object_collision_free": "the object touches something at each place: clear the "
@@ -41,13 +57,17 @@ VALIDATOR_ADVICE: Mapping[str, str] = {
 }
 
 
-def layer_advice(layers: tuple[str, ...]) -> str:
-    """Why no cell had weight: the layers that zeroed the grid, with their remedies."""
+def layer_advice(layers: tuple[str, ...], area: float | None = None) -> str:
+    """Why no cell had weight: the layers that zeroed the grid, with their remedies;
+    ``area`` [m], the search square's side: from :data:`WIDE_ENOUGH` on, widening it is
+    not advised (it would not help)."""
     if not layers:
         return GENERIC_ADVICE
+    wide = area is not None and area >= WIDE_ENOUGH
+    table = {**LAYER_ADVICE, **WIDE_LAYER_ADVICE} if wide else LAYER_ADVICE
     return "; ".join(
         f"the {name} layer left no cell: "
-        + LAYER_ADVICE.get(name, f"check what cost function {name!r} rules out")
+        + table.get(name, f"check what cost function {name!r} rules out")
         for name in layers
     )
 
@@ -63,11 +83,15 @@ def validator_advice(rejections: Mapping[str, int]) -> str:
 
 
 def not_found_advice(
-    rejections: Mapping[str, int], accepted: int, in_a_row: int, emptied_by: tuple[str, ...]
+    rejections: Mapping[str, int],
+    accepted: int,
+    in_a_row: int,
+    emptied_by: tuple[str, ...],
+    area: float | None = None,
 ) -> str:
     """The tail of a :class:`LocationNotFound` message: only the advice that applies."""
     if not rejections:
-        return layer_advice(emptied_by)
+        return layer_advice(emptied_by, area)
     if accepted > 0:
         return (
             f"the stream ran dry after {accepted} accepted ({in_a_row} refused in a row): "

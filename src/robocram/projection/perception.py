@@ -23,6 +23,7 @@ from robocram.designators.perceived_object import PerceivedObject
 from robocram.execution import checkpoint
 from robocram.execution.failures import PerceptionBlockedByRobot, PerceptionObjectNotFound
 from robocram.projection.projected_robot import ProjectedRobot
+from robocram.projection.view_blocker import blocking_fix
 from robocram.tf import PoseStamped, Vector3
 from robocram.world import Camera, WorldObject
 
@@ -160,12 +161,14 @@ def detect(
     blocked = None if seen else own_link_blocking(robot, designator)
     if blocked is not None:
         link, target = blocked
+        fix, parked = blocking_fix(robot, link)
         raise PerceptionBlockedByRobot(
             f"{robot.name} sees no object fitting {designator.description}: its own link "
-            f"{link!r} blocks the view of {target!r}",
+            f"{link!r} blocks the view of {target!r}; {fix}",
             object_designator=designator,
             link=link,
             target=target,
+            arm_parked=parked,
         )
     if not seen:
         hidden = hidden_by(robot, designator)

@@ -12,7 +12,9 @@ from collections.abc import Callable
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robot_check import arm_checks, head_checks
 from robocram.robot_check.loading_check import load_for_check
+from robocram.robot_check.part_presence import part_presence
 from robocram.robot_check.report_card import CheckResult, ReportCard
+from robocram.robot_check.stand_in_blame import blame_stand_ins
 from robocram.robots import ArmDescription, RobotDescription
 from robocram.world import World
 
@@ -30,7 +32,8 @@ def check_robot(desc: RobotDescription) -> ReportCard:
         results += _drive(robot)
     finally:
         world.close()
-    return ReportCard(desc.name, tuple(results))
+    hands = {k: (*a.hand_links, *a.gripper_links) for k, a in loaded.arms.items()}
+    return ReportCard(desc.name, tuple(blame_stand_ins(loaded.model, results, hands)))
 
 
 def _guarded(name: str, check: Callable[[], CheckResult | list[CheckResult]]) -> list[CheckResult]:
@@ -45,7 +48,7 @@ def _guarded(name: str, check: Callable[[], CheckResult | list[CheckResult]]) ->
 
 def _drive(robot: ProjectedRobot) -> list[CheckResult]:
     desc = robot.description
-    results: list[CheckResult] = []
+    results: list[CheckResult] = part_presence(desc)
     _park(robot)
     if desc.cameras:
         results += _guarded("camera", lambda: head_checks.camera_forward(robot))

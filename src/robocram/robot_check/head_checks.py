@@ -18,11 +18,13 @@ from robocram.projection.perception import detect
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.projection.torso import move_torso
 from robocram.robot_check.report_card import CheckResult
+from robocram.robots.draft.cameras import LOOKS_AHEAD
 
 HEIGHT_TOLERANCE = 0.05  # [m] between a camera height given and one measured
 LIFT_SHARE = 0.5  # of the torso's range the arms' bases must rise at least
 LOOK_TOLERANCE = math.radians(5.0)  # [rad] between the optical axis and the look target
-FORWARD = 0.5  # x share in the base frame of an optical axis that looks ahead
+FORWARD = LOOKS_AHEAD  # x share in the base frame of an optical axis that looks ahead (the
+# draft's threshold: a camera the draft doubts is one this check fails)
 LOOK_AHEAD = 1.0  # [m] ahead of the camera to look and detect at, at least
 LOOK_DOWN = math.radians(20.0)  # [rad] at most: a neck arm's own links hide steeper views
 LOOK_HEIGHT = 0.75  # [m] over the floor: a table top

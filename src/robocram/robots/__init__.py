@@ -30,6 +30,7 @@ from robocram.robots.loading import load_description
 from robocram.robots.mimic import mimic_followers
 from robocram.robots.model_additions import BoxSpec, FrameSpec, JointCoupling
 from robocram.robots.model_pose import joint_transform, link_pose
+from robocram.robots.model_split import ModelPart, SplitModel, split_model
 from robocram.robots.robot_model import RobotModel
 from robocram.robots.urdf_elements import Geometry, Inertial, Joint, Link, Mimic
 
@@ -58,11 +59,13 @@ __all__ = [
     "MergedModel",
     "Mimic",
     "MissingMeshWarning",
+    "ModelPart",
     "PackageNotFoundError",
     "PackagePathError",
     "PanTiltDescription",
     "RobotDescription",
     "RobotModel",
+    "SplitModel",
     "SrdfError",
     "UrdfError",
     "draft_description",
@@ -73,4 +76,5 @@ __all__ = [
     "load_description",
     "merge_fixed_links",
     "mimic_followers",
+    "split_model",
 ]

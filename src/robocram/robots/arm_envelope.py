@@ -10,6 +10,9 @@ the convention every description keeps) unless fewer than :data:`MIN_AHEAD_SHARE
 are ahead; then towards the fullest quarter. An arm on a sideways mount that turns ahead
 too (Boxy's, TALOS's, Baxter's: an eighth or more) keeps +x; Stretch's, ahead only when
 retracted, works along -y.
+Where the robot has a body (links no joint moves, with shapes), the far samples are counted
+by the side of the body's footprint they lie beyond instead (``robots/body_clearance.py``):
+an arm on the side of a long base, turning all round, works to that side, not across it.
 A lift (the arm's leading vertical prismatic joints) is held at the middle of its range;
 the shoulder is where the first joint after it starts.
 """
@@ -22,6 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from robocram.robots.body_clearance import beyond_body
 from robocram.robots.description import ArmDescription
 from robocram.robots.model_pose import finite_limits, joint_transform, link_pose
 from robocram.robots.robot_model import RobotModel
@@ -173,19 +177,26 @@ def _working_yaw(
         return 0.0
     held = {**_middle(model, lift), **(fixed or {})}
     shoulder = _shoulder(model, rest[0], held).position
-    offsets = np.array(
+    wrists = np.array(
         [
-            np.subtract(link_pose(model, arm.end_effector_link, {**held, **s}).position, shoulder)
+            link_pose(model, arm.end_effector_link, {**held, **s}).position
             for s in joint_samples(model, rest)
         ]
     )
+    offsets = wrists - shoulder
     distances = np.hypot(offsets[:, 0], offsets[:, 1])
-    far = offsets[distances >= FAR_SHARE * distances.max()]
-    bearings = np.arctan2(far[:, 1], far[:, 0])
-    shares = [
-        float(np.mean(np.abs((bearings - q + math.pi) % (2 * math.pi) - math.pi) <= math.pi / 4))
-        for q in QUARTERS
-    ]
+    far = distances >= FAR_SHARE * distances.max()
+    beyond = beyond_body(model, wrists[far])
+    if beyond is not None and beyond.any():  # which side of the body the clear wrists are
+        shares = [float(np.mean(side)) for side in beyond.T]
+    else:
+        bearings = np.arctan2(offsets[far, 1], offsets[far, 0])
+        shares = [
+            float(
+                np.mean(np.abs((bearings - q + math.pi) % (2 * math.pi) - math.pi) <= math.pi / 4)
+            )
+            for q in QUARTERS
+        ]
     if shares[0] >= MIN_AHEAD_SHARE:
         return 0.0
     return QUARTERS[int(np.argmax(shares))]

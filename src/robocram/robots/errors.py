@@ -138,6 +138,11 @@ def closest_names(name: str, candidates: Iterable[str], n: int = 3) -> tuple[str
     return tuple(close)
 
 
+class DanglingMimicWarning(UserWarning):
+    """A ``<mimic>`` names a joint the URDF lacks: the joint is read as moving on its own
+    (PyBullet ignores the mimic too), as Boardwalk's Alex hands publish some fingers."""
+
+
 class MissingMeshWarning(UserWarning):
     """Mesh files of a URDF were not found and boxes stand in for them."""
 

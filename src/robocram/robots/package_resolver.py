@@ -43,12 +43,13 @@ def ros_package_path() -> tuple[Path, ...]:
 
 
 @lru_cache(maxsize=256)
-def _find_package(root: Path, package: str) -> Path | None:
-    """Breadth-first search for a folder named ``package`` under ``root``."""
+def _find_package(root: Path, package: str, depth: int = _MAX_DEPTH) -> Path | None:
+    """Breadth-first search for a folder named ``package`` under ``root``, at most
+    ``depth`` levels down."""
     if root.name == package and root.is_dir():
         return root
     level = [root]
-    for _ in range(_MAX_DEPTH):
+    for _ in range(depth):
         next_level: list[Path] = []
         for folder in level:
             direct = folder / package
@@ -85,7 +86,8 @@ class PackageResolver:
     """Turns ``package://`` URIs into absolute paths.
 
     Search order: ``search_roots`` (user folders, ``ROS_PACKAGE_PATH``), then the folders
-    around the URDF (so a URDF finds the package it lives in), then ``installed`` prefixes.
+    around the URDF (so a URDF finds the package it lives in, or one kept beside it: below
+    its folder, or next to that folder), then ``installed`` prefixes.
     """
 
     search_roots: tuple[Path, ...]
@@ -108,6 +110,9 @@ class PackageResolver:
             own = next((p for p in (near, *near.parents) if p.name == package), None)
             if own is not None and own.is_dir():
                 return own
+            beside = _find_package(near, package) or _find_package(near.parent, package, 1)
+            if beside is not None:  # below the URDF's folder, or beside that folder
+                return beside
         for root in self.installed:
             found = _find_package(root, package)
             if found is not None:

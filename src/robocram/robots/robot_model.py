@@ -13,7 +13,13 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TypeVar, cast
 
-from robocram.robots.errors import DescriptionError, MissingMeshWarning, UrdfError, closest_names
+from robocram.robots.errors import (
+    DanglingMimicWarning,
+    DescriptionError,
+    MissingMeshWarning,
+    UrdfError,
+    closest_names,
+)
 from robocram.robots.model_additions import BoxSpec, FrameSpec, JointCoupling
 from robocram.robots.model_memo import ModelMemo
 from robocram.robots.package_resolver import PackageResolver
@@ -322,6 +328,14 @@ class RobotModel:
                 f"{source}: package(s) {names} not found, boxes stand in for their meshes; "
                 "pass `--package-path DIR` (package_paths=[DIR]) with the folder holding them",
                 MissingMeshWarning,
+                stacklevel=2,
+            )
+        if parts.dangling_mimics:
+            listed = ", ".join(f"{j!r} (mimics {t!r})" for j, t in parts.dangling_mimics)
+            warnings.warn(
+                f"{source}: a <mimic> names a joint the URDF lacks, read as moving on its own: "
+                f"{listed}; name the joint it follows to couple them",
+                DanglingMimicWarning,
                 stacklevel=2,
             )
         if parts.missing_meshes:

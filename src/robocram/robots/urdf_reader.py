@@ -1,19 +1,21 @@
 """Read URDF XML into links and joints, resolving mesh URIs to absolute paths.
 
-A mesh whose package resolves but whose file is missing becomes a box the size of the
-link (from its inertia, else from its other shapes); the caller warns once per model.
+A mesh whose package resolves but whose file is missing becomes a box spanning the link's
+joints (``robots/stand_in_size.py``), marked with the mesh it stands in for; the caller
+warns once per model.
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from robocram.robots.errors import PackageNotFoundError, UrdfError, closest_names
 from robocram.robots.package_resolver import PackageResolver
 from robocram.robots.safe_xml import XmlNode
+from robocram.robots.stand_in_size import StandInBox, is_stand_in, stand_in_boxes
 from robocram.robots.urdf_elements import (
     JOINT_TYPES,
     Collision,
@@ -41,6 +43,7 @@ class UrdfParts:
     joints: dict[str, Joint]
     missing_meshes: list[str] = field(default_factory=list)
     missing_packages: list[str] = field(default_factory=list)
+    dangling_mimics: list[tuple[str, str]] = field(default_factory=list)  # (joint, its target)
 
 
 @dataclass
@@ -52,6 +55,7 @@ class _Reader:
     missing_meshes: list[str] = field(default_factory=list)
     missing_packages: list[str] = field(default_factory=list)
     colors: dict[str, tuple[float, ...]] = field(default_factory=dict)  # named materials
+    stand_in_boxes: dict[str, StandInBox] = field(default_factory=dict)  # by link
 
     def fail(self, node: XmlNode, problem: str) -> UrdfError:
         return UrdfError(self.source, problem, node.line)
@@ -87,7 +91,7 @@ class _Reader:
         rpy = self.floats(origin, "rpy", (0.0, 0.0, 0.0))
         return Pose.from_xyz_rpy(xyz, rpy)
 
-    def geometry(self, node: XmlNode, stand_in: Callable[[], Geometry]) -> Geometry:
+    def geometry(self, node: XmlNode, stand_in: Callable[[str], Geometry]) -> Geometry:
         geom = node.find("geometry")
         shape = geom.children[0] if geom is not None and geom.children else None
         if shape is None:
@@ -101,9 +105,26 @@ class _Reader:
             return Geometry("sphere", radius=self.number(shape, "radius", 0.0) or 0.0)
         if shape.tag == "mesh":
             return self.mesh(shape, stand_in)
-        raise self.fail(shape, f"unknown geometry <{shape.tag}>; use box, cylinder, sphere or mesh")
+        if shape.tag == "capsule":  # its middle; the caps come from :meth:`capsule_caps`
+            radius, length = self.number(shape, "radius", 0.0), self.number(shape, "length", 0.0)
+            return Geometry("cylinder", radius=radius or 0.0, length=length or 0.0)
+        raise self.fail(
+            shape, f"unknown geometry <{shape.tag}>; use box, cylinder, capsule, sphere or mesh"
+        )
 
-    def mesh(self, shape: XmlNode, stand_in: Callable[[], Geometry]) -> Geometry:
+    def capsule_caps(self, node: XmlNode) -> tuple[tuple[Geometry, Pose], ...]:
+        """The two spheres ending a ``<capsule>`` (a cylinder along z with round ends, as
+        PyBullet and Gazebo read it), in the element's frame; none for other shapes."""
+        geom = node.find("geometry")
+        shape = geom.children[0] if geom is not None and geom.children else None
+        if shape is None or shape.tag != "capsule":
+            return ()
+        radius = self.number(shape, "radius", 0.0) or 0.0
+        half = (self.number(shape, "length", 0.0) or 0.0) / 2
+        ball = Geometry("sphere", radius=radius)
+        return ((ball, Pose((0.0, 0.0, half))), (ball, Pose((0.0, 0.0, -half))))
+
+    def mesh(self, shape: XmlNode, stand_in: Callable[[str], Geometry]) -> Geometry:
         uri = self.attr(shape, "filename")
         try:
             path = self.resolver.resolve(uri, self.base_dir)
@@ -111,7 +132,7 @@ class _Reader:
             if not self.missing_packages_as_boxes:
                 raise
             self.missing_packages.append(err.package)
-            return stand_in()
+            return stand_in(uri)
         if path.suffix.lower() not in MESH_SUFFIXES:
             raise self.fail(
                 shape,
@@ -119,7 +140,7 @@ class _Reader:
             )
         if not path.is_file():
             self.missing_meshes.append(uri)
-            return stand_in()
+            return stand_in(uri)
         scale = self.floats(shape, "scale", (1.0, 1.0, 1.0))
         return Geometry("mesh", filename=str(path), scale=scale)  # type: ignore[arg-type]
 
@@ -135,28 +156,70 @@ class _Reader:
 
     def link(self, node: XmlNode) -> Link:
         inertial = self.inertial(node)
+        name = self.attr(node, "name")
+        box = self.stand_in_boxes.get(name)
         shapes = [
             self.primitive_extents(n) for n in node.findall("visual") + node.findall("collision")
         ]
-        extents = inertia_box(inertial) or next((e for e in shapes if e), None)
+        extents = next((e for e in shapes if e), None)
 
-        def stand_in() -> Geometry:
-            return Geometry("box", size=extents or (_DEFAULT_BOX,) * 3)
+        def stand_in(uri: str) -> Geometry:
+            """From the kinematics (``robots/stand_in_size.py``); a link no joint names: its
+            other shapes' size, else a small cube. Never from the inertia."""
+            if box is not None:
+                return box.geometry(uri)
+            return Geometry("box", size=extents or (_DEFAULT_BOX,) * 3, filename=uri)
 
-        visuals = tuple(self.visual(v, stand_in) for v in node.findall("visual"))
-        collisions = tuple(
-            Collision(self.geometry(c, stand_in), self.origin(c), c.attrib.get("name"))
-            for c in node.findall("collision")
+        def placed(element: XmlNode, geometry: Geometry) -> Pose:
+            if box is not None and is_stand_in(geometry):
+                return box.centre  # the box spans the link's joints, whatever the mesh's origin
+            return self.origin(element)
+
+        visuals = tuple(
+            shape
+            for v in node.findall("visual")
+            for shape in (
+                self.visual(v, stand_in, placed),
+                *(
+                    Visual(ball, self.origin(v) * at, v.attrib.get("name"))
+                    for ball, at in self.capsule_caps(v)
+                ),
+            )
         )
-        return Link(self.attr(node, "name"), visuals, collisions, inertial)
+        collisions = tuple(
+            shape
+            for c in node.findall("collision")
+            for shape in (
+                self.collision(c, stand_in, placed),
+                *(
+                    Collision(ball, self.origin(c) * at, c.attrib.get("name"))
+                    for ball, at in self.capsule_caps(c)
+                ),
+            )
+        )
+        return Link(name, visuals, collisions, inertial)
+
+    def collision(
+        self,
+        node: XmlNode,
+        stand_in: Callable[[str], Geometry],
+        placed: Callable[[XmlNode, Geometry], Pose],
+    ) -> Collision:
+        geometry = self.geometry(node, stand_in)
+        return Collision(geometry, placed(node, geometry), node.attrib.get("name"))
 
     def primitive_extents(self, node: XmlNode) -> tuple[float, float, float] | None:
         geom = node.find("geometry")
         if geom is None or not geom.children or geom.children[0].tag == "mesh":
             return None
-        return self.geometry(node, lambda: Geometry("box")).extents()
+        return self.geometry(node, lambda _: Geometry("box")).extents()
 
-    def visual(self, node: XmlNode, stand_in: Callable[[], Geometry]) -> Visual:
+    def visual(
+        self,
+        node: XmlNode,
+        stand_in: Callable[[str], Geometry],
+        placed: Callable[[XmlNode, Geometry], Pose],
+    ) -> Visual:
         material = node.find("material")
         name = material.attrib.get("name") if material is not None else None
         color = material.find("color") if material is not None else None
@@ -164,7 +227,7 @@ class _Reader:
         if rgba is None and name is not None:
             rgba = self.colors.get(name)
         geometry = self.geometry(node, stand_in)
-        return Visual(geometry, self.origin(node), node.attrib.get("name"), name, rgba)  # type: ignore[arg-type]
+        return Visual(geometry, placed(node, geometry), node.attrib.get("name"), name, rgba)  # type: ignore[arg-type]
 
     def joint(self, node: XmlNode) -> Joint:
         name, kind = self.attr(node, "name"), self.attr(node, "type")
@@ -240,17 +303,6 @@ def joint_limits(
     return None, None
 
 
-def inertia_box(inertial: Inertial | None) -> tuple[float, float, float] | None:
-    """Extents [m] of the solid box with the same mass and principal inertia, if positive."""
-    if inertial is None or inertial.mass <= 0:
-        return None
-    ixx, _, _, iyy, _, izz = inertial.inertia
-    squares = (iyy + izz - ixx, ixx + izz - iyy, ixx + iyy - izz)
-    if any(s <= 0 for s in squares):
-        return None
-    return tuple(math.sqrt(6.0 * s / inertial.mass) for s in squares)  # type: ignore[return-value]
-
-
 def read_urdf(
     root: XmlNode,
     source: str,
@@ -272,16 +324,22 @@ def read_urdf(
             reader.colors[material.attrib["name"]] = reader.floats(color, "rgba", (0.0,) * 4)
     links: dict[str, Link] = {}
     joints: dict[str, Joint] = {}
-    for node in root.findall("link"):
-        link = reader.link(node)
-        if link.name in links:
-            raise reader.fail(node, f"link {link.name!r} is defined twice")
-        links[link.name] = link
     for node in root.findall("joint"):
         joint = reader.joint(node)
         if joint.name in joints:
             raise reader.fail(node, f"joint {joint.name!r} is defined twice")
         joints[joint.name] = joint
+    dangling = [
+        (n, j.mimic.joint) for n, j in joints.items() if j.mimic and j.mimic.joint not in joints
+    ]
+    for joint_name, _ in dangling:
+        joints[joint_name] = replace(joints[joint_name], mimic=None)
+    reader.stand_in_boxes = stand_in_boxes(joints)
+    for node in root.findall("link"):
+        link = reader.link(node)
+        if link.name in links:
+            raise reader.fail(node, f"link {link.name!r} is defined twice")
+        links[link.name] = link
     for node in root.findall("joint"):
         joint = joints[node.attrib["name"]]
         for role, link_name in (("parent", joint.parent), ("child", joint.child)):
@@ -293,7 +351,7 @@ def read_urdf(
                     f"which the URDF does not define{hint}",
                 )
     name = reader.attr(root, "name")
-    return UrdfParts(name, links, joints, reader.missing_meshes, reader.missing_packages)
+    return UrdfParts(name, links, joints, reader.missing_meshes, reader.missing_packages, dangling)
 
 
 def _did_you_mean(name: str, candidates: dict[str, Link]) -> str:

@@ -84,7 +84,8 @@ def check_environment(desc: EnvironmentDescription) -> EnvironmentCard:
     world = World()
     try:
         world.add_floor()
-        world.add_urdf(desc.name, loadable_urdf(desc.urdf, desc.stand_ins), type="environment")
+        loadable = loadable_urdf(desc.urdf, desc.stand_ins, package_paths=desc.package_paths)
+        world.add_urdf(desc.name, loadable, type="environment")
         lines = [_check_container(world, desc.name, c) for c in desc.containers]
         lines += [_check_surface(world, desc.name, s) for s in desc.surfaces]
     finally:

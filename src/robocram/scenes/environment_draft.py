@@ -19,7 +19,7 @@
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -61,10 +61,15 @@ class EnvironmentDraft:
         )
 
 
-def draft_environment(urdf: str | Path, name: str | None = None) -> EnvironmentDraft:
-    """Draft the description of the environment in ``urdf``."""
+def draft_environment(
+    urdf: str | Path, name: str | None = None, package_paths: Iterable[str | Path] = ()
+) -> EnvironmentDraft:
+    """Draft the description of the environment in ``urdf``; ``package_paths``: folders
+    holding the packages its ``package://`` meshes name (``ROS_PACKAGE_PATH`` and a
+    package beside the URDF are searched too)."""
     path = Path(urdf)
-    model = EnvironmentModel.from_file(path)
+    paths = tuple(Path(p).expanduser().resolve() for p in package_paths)
+    model = EnvironmentModel.from_file(path, paths)
     reasons: dict[str, str] = {}
     doubts: list[str] = []
     containers = list(_containers(model, reasons, doubts))
@@ -87,6 +92,7 @@ def draft_environment(urdf: str | Path, name: str | None = None) -> EnvironmentD
         path,
         tuple(surfaces),
         tuple(containers),
+        package_paths=paths,
         stand_ins=tuple(s.stand_in for s in stand_ins),
     )
     return EnvironmentDraft(description, reasons, doubts, stand_ins)

@@ -1,8 +1,11 @@
 """An environment URDF's links, joints and collision boxes, and their poses at any joint values.
 
 Read for drafting (:mod:`robocram.scenes.environment_draft`): only the tree, the joints'
-origins, axes and limits, and the collision shapes' sizes matter. A mesh's size is unknown
-without its file, so a mesh shape counts as none here (the draft says so where it matters).
+origins, axes and limits, and the collision shapes' sizes matter. Mesh URIs are found as
+the robots' are (``package_paths``, ``ROS_PACKAGE_PATH``, a package beside the URDF,
+relative paths); a mesh found counts as the box of its vertices' bounds, so surfaces and
+their sizes come from the meshes. A mesh not found has no size: the draft says so where it
+matters, and its stand-ins guess one.
 """
 
 from __future__ import annotations
@@ -16,13 +19,20 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from robocram.robots import MissingMeshWarning, RobotModel
+from robocram.robots import (
+    MissingMeshWarning,
+    PackageNotFoundError,
+    PackagePathError,
+    RobotModel,
+)
+from robocram.robots.link_centre import mesh_box
+from robocram.robots.package_resolver import PackageResolver
 from robocram.robots.safe_xml import XmlNode, decode_xml, parse_xml
 from robocram.scenes.errors import SceneError
 from robocram.scenes.stand_in import StandIn
 from robocram.tf import Pose, Vector3
 from robocram.tf import quaternion as quat
-from robocram.world.robot_urdf import check_link_count
+from robocram.world.robot_urdf import check_loadable
 
 if TYPE_CHECKING:
     import xml.etree.ElementTree as ET
@@ -75,8 +85,10 @@ class EnvironmentModel:
     unfound: frozenset[str] = frozenset()  # links with a mesh file that is not there
 
     @classmethod
-    def from_file(cls, path: str | Path) -> EnvironmentModel:
-        """Read the URDF at ``path``.
+    def from_file(
+        cls, path: str | Path, package_paths: Iterable[str | Path] = ()
+    ) -> EnvironmentModel:
+        """Read the URDF at ``path``; ``package_paths`` hold packages its meshes name.
 
         The robots' URDF door reads it first, so an environment is refused for what a
         robot's URDF is: a link with two parents, a loop, an undefined link, numbers that
@@ -84,13 +96,19 @@ class EnvironmentModel:
 
         Raises:
             UrdfError: malformed or unsafe XML, or not a tree (naming the link or joints).
-            TooManyLinksError: more links than PyBullet holds (``MAX_LINKS``).
+            TooManyLinksError: more links than PyBullet holds (``MAX_LINKS``), even cut
+                into bodies at subtrees hung on fixed joints from the root.
             SceneError: no links.
         """
         file = Path(path)
-        check_urdf(file)
+        paths = tuple(package_paths)
+        check_urdf(file, paths)
         root = parse_xml(decode_xml(file.read_bytes(), file), file)
-        boxes = {n.attrib["name"]: tuple(_boxes(n)) for n in root.findall("link")}
+        resolver = PackageResolver.default(paths)
+        boxes = {
+            n.attrib["name"]: (*_boxes(n), *_mesh_boxes(n, file.parent, resolver))
+            for n in root.findall("link")
+        }
         meshes = {n.attrib["name"]: _count_meshes(n) for n in root.findall("link")}
         joints = {j.child: j for j in (_joint(n) for n in root.findall("joint"))}
         roots = sorted(set(boxes) - set(joints))
@@ -100,7 +118,7 @@ class EnvironmentModel:
             n.attrib["name"]
             for n in root.findall("link")
             for uri in _mesh_files(n)
-            if not _mesh_exists(uri, file.parent)
+            if mesh_file(uri, file.parent, resolver) is None
         )
         name = root.attrib.get("name", file.stem)
         return cls(name, boxes, meshes, joints, roots[0], unfound)
@@ -147,17 +165,18 @@ class EnvironmentModel:
         return False
 
 
-def check_urdf(file: Path) -> RobotModel:
+def check_urdf(file: Path, package_paths: Iterable[str | Path] = ()) -> RobotModel:
     """Read ``file`` through the robots' URDF door: the checks every URDF passes.
 
     Missing meshes and packages are the draft's to report (as unfound links), not warned
     about here. A file with more links than PyBullet holds is refused before the draft's
-    walks (quadratic in the links) start: it could not be loaded anyway.
+    walks (quadratic in the links) start, unless it loads as several bodies (cut at
+    subtrees hung on fixed joints from the root): it could not be loaded anyway.
     """
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", MissingMeshWarning)
-        model = RobotModel.from_file(file, missing_packages_as_boxes=True)
-    check_link_count(model.name, str(file), model)
+        model = RobotModel.from_file(file, package_paths, missing_packages_as_boxes=True)
+    check_loadable(model.name, str(file), model)
     return model
 
 
@@ -185,6 +204,24 @@ def _boxes(link: XmlNode) -> Iterator[Box]:
         elif kind.tag == "cylinder":
             r, length = float(kind.attrib["radius"]), float(kind.attrib["length"])
             yield Box(_origin(shape.find("origin")), (2 * r, 2 * r, length))
+
+
+def _mesh_boxes(link: XmlNode, base: Path, resolver: PackageResolver) -> Iterator[Box]:
+    """The bounds of each collision mesh of ``link`` that is found and read, as boxes."""
+    for shape in link.findall("collision"):
+        geometry = shape.find("geometry")
+        mesh = geometry.find("mesh") if geometry is not None else None
+        if mesh is None:
+            continue
+        found = mesh_file(mesh.attrib.get("filename", ""), base, resolver)
+        bounds = mesh_box(str(found)) if found is not None else None
+        if bounds is None:
+            continue
+        scale = _floats(mesh.attrib.get("scale"), (1.0, 1.0, 1.0))
+        low, high = ([v * s for v, s in zip(c, scale, strict=True)] for c in bounds)
+        centre = tuple((lo + hi) / 2 for lo, hi in zip(low, high, strict=True))
+        size = tuple(abs(hi - lo) for lo, hi in zip(low, high, strict=True))
+        yield Box(_origin(shape.find("origin")) * Pose(centre), size)  # type: ignore[arg-type]
 
 
 def _count_meshes(link: XmlNode) -> int:
@@ -226,28 +263,41 @@ def _joint(node: XmlNode) -> EnvJoint:
 
 
 def loadable_urdf(
-    urdf: str | Path, stand_ins: Iterable[StandIn] = (), folder: Path | None = None
+    urdf: str | Path,
+    stand_ins: Iterable[StandIn] = (),
+    folder: Path | None = None,
+    package_paths: Iterable[str | Path] = (),
 ) -> Path:
     """``urdf`` itself, or a copy in ``folder`` without the shapes PyBullet cannot load.
 
-    Mesh files that are not there (``package://`` URIs without their package, as in
-    URDFs taken out of a ROS workspace) are left out of the copy: the links stay, as
-    frames that move with their joints, unless ``stand_ins`` give them boxes instead
-    (as collision and visual shapes).
+    Meshes found (``package_paths``, ``ROS_PACKAGE_PATH``, a package beside the URDF) are
+    named by their absolute paths in the copy, since PyBullet resolves no ``package://``.
+    Mesh files that are not there are left out of the copy: the links stay, as frames
+    that move with their joints, unless ``stand_ins`` give them boxes instead (as
+    collision and visual shapes).
     """
     import xml.etree.ElementTree as ET  # the file was read safely by from_file first
 
     path = Path(urdf)
-    EnvironmentModel.from_file(path)  # refuses unsafe XML before ElementTree sees it
+    paths = tuple(package_paths)
+    EnvironmentModel.from_file(path, paths)  # refuses unsafe XML before ElementTree sees it
     tree = ET.parse(path)
+    resolver = PackageResolver.default(paths)
     shapes = tuple(stand_ins)
     by_link = {s.link: s for s in shapes}
     dropped = 0
     for link in tree.getroot().iter("link"):
         for shape in [*link.findall("visual"), *link.findall("collision")]:
             mesh = shape.find("geometry/mesh")
-            if mesh is not None and not _mesh_exists(mesh.get("filename", ""), path.parent):
+            if mesh is None:
+                continue
+            uri = mesh.get("filename", "")
+            found = mesh_file(uri, path.parent, resolver)
+            if found is None:
                 link.remove(shape)
+                dropped += 1
+            elif uri != str(found):
+                mesh.set("filename", str(found))
                 dropped += 1
         stand_in = by_link.pop(link.get("name", ""), None)
         if stand_in is not None:
@@ -257,7 +307,7 @@ def loadable_urdf(
         raise SceneError(f"{path.name} has no links {sorted(by_link)} for the stand-ins")
     if not dropped:
         return path
-    key = hashlib.sha1(f"{path.resolve()}{sorted(map(repr, shapes))}".encode())
+    key = hashlib.sha1(f"{path.resolve()}{sorted(map(repr, shapes))}{paths}".encode())
     folder = folder or Path(tempfile.gettempdir()) / "robocram-environments" / key.hexdigest()[:12]
     folder.mkdir(parents=True, exist_ok=True)
     copy = folder / f"{path.stem}.loadable.urdf"
@@ -276,7 +326,10 @@ def _add_boxes(link: ET.Element, stand_in: StandIn) -> None:
             ET.SubElement(geometry, "box", size=" ".join(f"{v:.6g}" for v in size))
 
 
-def _mesh_exists(uri: str, base: Path) -> bool:
-    if uri.startswith("package://"):
-        return False  # no ROS workspace: PyBullet cannot resolve it either
-    return (base / uri.removeprefix("file://")).is_file()
+def mesh_file(uri: str, base: Path, resolver: PackageResolver) -> Path | None:
+    """The mesh file ``uri`` names (from the URDF's folder ``base``), None if not there."""
+    try:
+        found = resolver.resolve(uri, base)
+    except (PackageNotFoundError, PackagePathError):
+        return None
+    return found if found.is_file() else None

@@ -76,7 +76,10 @@ def environment_scene(
     world = world if world is not None else World()
     world.add_floor()
     name = environment.name
-    world.add_urdf(name, loadable_urdf(environment.urdf, environment.stand_ins), type="environment")
+    loadable = loadable_urdf(
+        environment.urdf, environment.stand_ins, package_paths=environment.package_paths
+    )
+    world.add_urdf(name, loadable, type="environment")
     world.kb.consult(environment.facts(name), group=f"{name}_semantics")
     robot_name = world.add_robot(desc, pose=Pose.coerce(robot_pose)).name
     park_arms(world, robot_name)

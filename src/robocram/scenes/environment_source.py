@@ -82,6 +82,9 @@ def _body(
     desc: EnvironmentDescription, reasons: Mapping[str, str], drafted: Sequence[DraftedStandIn]
 ) -> Call:
     fields = [Item("name", desc.name), Item("urdf", Code("URDF"))]
+    if desc.package_paths:  # where its meshes were found; as given, or make them relative
+        paths = tuple(Code(f"Path({quoted(Path(p).as_posix())})") for p in desc.package_paths)
+        fields.append(Item("package_paths", paths, ("why: folders holding its mesh packages",)))
     surfaces = [
         Item(
             None,

@@ -163,6 +163,7 @@ class UrdfSpec:
     mass: float | None = None
     frames: tuple[tuple[str, str, Pose], ...] = ()  # (frame, host link, pose in host)
     checked: bool = False
+    parts: tuple[tuple[Path, Pose], ...] = ()  # (subtree's URDF, its root in the root link)
 
     def create(self, client: int) -> int:
         """Load the URDF into ``client`` at the origin; return its body id."""

@@ -49,28 +49,44 @@ def closest_points(
     link_b: str | None = None,
 ) -> list[ContactPoint]:
     """Closest points of ``a`` and ``b`` (or of the given links) nearer than ``distance``."""
-    filters: dict[str, int] = {}
-    if link_a is not None:
-        filters["linkIndexA"] = _index(a, link_a)
-    if link_b is not None:
-        filters["linkIndexB"] = _index(b, link_b)
-    points = pybullet.getClosestPoints(
-        a.body_id, b.body_id, distance, physicsClientId=world.physics_client(), **filters
-    )
+    cid = world.physics_client()
+    points = [
+        point
+        for body_a, body_b, filters in _body_pairs(a, b, link_a, link_b)
+        for point in pybullet.getClosestPoints(
+            body_a, body_b, distance, physicsClientId=cid, **filters
+        )
+        or ()
+    ]
     names_a, names_b = _link_names(a), _link_names(b)
     return [
         ContactPoint(
             a.name,
             b.name,
-            names_a[p[3]],
-            names_b[p[4]],
+            names_a[a.slot(p[1], p[3])],
+            names_b[b.slot(p[2], p[4])],
             tuple(p[5]),
             tuple(p[6]),
             tuple(p[7]),
             float(p[8]),
         )  # fmt: skip
-        for p in points or ()
+        for p in points
     ]
+
+
+def _body_pairs(
+    a: WorldObject, b: WorldObject, link_a: str | None, link_b: str | None
+) -> list[tuple[int, int, dict[str, int]]]:
+    """The pybullet bodies to ask for closest points of ``a`` and ``b`` (or their links),
+    each pair with its link filters: an object cut in parts is several bodies."""
+    sides: list[list[tuple[int, dict[str, int]]]] = []
+    for obj, link, key in ((a, link_a, "linkIndexA"), (b, link_b, "linkIndexB")):
+        if link is None:
+            sides.append([(body, {}) for body in obj.bodies])
+        else:
+            body, index = obj.locate(_index(obj, link))
+            sides.append([(body, {key: index})])
+    return [(ba, bb, fa | fb) for ba, fa in sides[0] for bb, fb in sides[1]]
 
 
 def contact(world: WorldCore, a: WorldObject, b: WorldObject) -> bool:

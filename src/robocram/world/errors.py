@@ -117,18 +117,29 @@ class BodyLoadError(WorldError):
 
 
 class TooManyLinksError(BodyLoadError):
-    """A body with more links (or moving joints) than PyBullet can hold."""
+    """A body with more links (or moving joints) than PyBullet can hold, even after a
+    fixed-base model was cut into parts at subtrees rigid with its root; ``hint`` says why
+    it could not be cut further."""
 
     def __init__(
-        self, name: str, source: str, links: int, limit: int, what: str = "links below its root"
+        self,
+        name: str,
+        source: str,
+        links: int,
+        limit: int,
+        what: str = "links below its root",
+        hint: str = "",
     ) -> None:
         self.links = links
         self.limit = limit
+        self.hint = hint
+        why = f" ({hint})" if hint else ""
         super().__init__(
             name,
             source,
-            f"it has {links} {what} and PyBullet holds at most {limit}; drop links the "
-            "projection does not need or merge chains of fixed joints in the URDF",
+            f"it has {links} {what} and PyBullet holds at most {limit} in one body{why}; "
+            "hang groups of links (a cabinet with its drawers) on fixed joints from the root "
+            "so they load as bodies of their own, or drop links the projection does not need",
         )
 
 

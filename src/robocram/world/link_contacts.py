@@ -34,7 +34,7 @@ def link_bounds(world: WorldCore, obj: WorldObject, indices: Iterable[int]) -> d
     both what its links touch and which pairs of its own links touch.
     """
     cid = world.physics_client()
-    return {i: pybullet.getAABB(obj.body_id, i, physicsClientId=cid) for i in indices}
+    return {i: pybullet.getAABB(*obj.locate(i), physicsClientId=cid) for i in indices}
 
 
 def _bounds_of(
@@ -44,7 +44,7 @@ def _bounds_of(
         found = bounds.get(index)
         if found is not None:
             return found
-    return pybullet.getAABB(obj.body_id, index, physicsClientId=cid)
+    return pybullet.getAABB(*obj.locate(index), physicsClientId=cid)
 
 
 def _overlaps(
@@ -70,7 +70,7 @@ def _overlaps(
     if obstacles is not None and obstacles.covers(obj, skip):
         yield from _overlaps_in(obstacles, obj, indices, names, skip, distance, bounds, cid)
         return
-    by_body = {o.body_id: o for o in world.objects() if o.name not in skip}
+    by_body = {b: o for o in world.objects() if o.name not in skip for b in o.bodies}
     other_names: dict[int, dict[int, str]] = {}
     for index, link in indices.items():
         low, high = _bounds_of(obj, index, bounds, cid)
@@ -82,10 +82,11 @@ def _overlaps(
         ):
             other = by_body.get(body)
             if other is not None:
-                if body not in other_names:
-                    other_names[body] = _link_names(other)
-                other_name = other_names[body].get(other_link, other.name)
-                yield names.get(index, link), other, other_link, index, other_name
+                if other.body_id not in other_names:
+                    other_names[other.body_id] = _link_names(other)
+                other_slot = other.slot(body, other_link)
+                other_name = other_names[other.body_id].get(other_slot, other.name)
+                yield names.get(index, link), other, other_slot, index, other_name
 
 
 def _overlaps_in(
@@ -112,12 +113,20 @@ def _overlaps_in(
 
 
 def _near(world: WorldCore, a: WorldObject, b: WorldObject, la: int, lb: int, d: float) -> bool:
-    return bool(
-        pybullet.getClosestPoints(
-            a.body_id, b.body_id, d, linkIndexA=la, linkIndexB=lb,
-            physicsClientId=world.physics_client(),
-        )
+    return bool(_closest(world, a, b, la, lb, d))
+
+
+def _closest(
+    world: WorldCore, a: WorldObject, b: WorldObject, la: int, lb: int, d: float
+) -> list[float]:
+    """The distances [m] of Bullet's closest points of link slot ``la`` of ``a`` and
+    ``lb`` of ``b`` within ``d`` (none: farther)."""
+    (body_a, index_a), (body_b, index_b) = a.locate(la), b.locate(lb)
+    points = pybullet.getClosestPoints(
+        body_a, body_b, d, linkIndexA=index_a, linkIndexB=index_b,
+        physicsClientId=world.physics_client(),
     )  # fmt: skip
+    return [float(p[8]) for p in points or ()]
 
 
 def link_contacts(
@@ -178,17 +187,13 @@ def link_distances(
     nearer than ``distance``, with the smallest distance between them (negative when they
     penetrate). ``links`` limits the links of ``obj`` asked about (default: all)."""
     skip = {obj.name} | {o.name for o in ignore}
-    cid = world.physics_client()
     found: dict[tuple[str, str, str], tuple[str, WorldObject, str, float]] = {}
     overlaps = _overlaps(world, obj, links, skip, distance, obstacles)
     for link, other, other_link, index, other_name in overlaps:
-        points = pybullet.getClosestPoints(
-            obj.body_id, other.body_id, distance, linkIndexA=index, linkIndexB=other_link,
-            physicsClientId=cid,
-        )  # fmt: skip
+        points = _closest(world, obj, other, index, other_link, distance)
         if not points:
             continue
-        nearest = min(float(p[8]) for p in points)
+        nearest = min(points)
         key = (link, other.name, other_name)
         if key not in found or nearest < found[key][3]:
             found[key] = (link, other, other_name, nearest)
@@ -220,11 +225,8 @@ def self_contacts(
     found = []
     ask = max(distance, SELF_QUERY)
     for k in np.flatnonzero((below & below.T).ravel()[rows.cells]).tolist():
-        points = pybullet.getClosestPoints(
-            obj.body_id, obj.body_id, ask, linkIndexA=int(rows.firsts[k]),
-            linkIndexB=int(rows.seconds[k]), physicsClientId=cid,
-        )  # fmt: skip
-        if points and min(float(p[8]) for p in points) <= distance:
+        points = _closest(world, obj, obj, int(rows.firsts[k]), int(rows.seconds[k]), ask)
+        if points and min(points) <= distance:
             found.append(key[k])
     return found
 
@@ -249,7 +251,7 @@ def self_distances(
         return gaps
     cid = world.physics_client()
     rows = obj.pair_rows(tuple(pairs))
-    boxes = [pybullet.getAABB(obj.body_id, i, physicsClientId=cid) for i in rows.used]
+    boxes = [pybullet.getAABB(*obj.locate(i), physicsClientId=cid) for i in rows.used]
     table = np.array(boxes, dtype=float).reshape(-1, 2, 3)
     first = np.searchsorted(rows.used, rows.firsts)
     second = np.searchsorted(rows.used, rows.seconds)
@@ -259,10 +261,9 @@ def self_distances(
     gaps[:] = np.sqrt((np.maximum(apart, 0.0) ** 2).sum(axis=1))
     picked = np.flatnonzero(gaps <= reach).tolist() if exact is None else exact(gaps)
     for k in picked:
-        points = pybullet.getClosestPoints(
-            obj.body_id, obj.body_id, max(reach, SELF_QUERY), linkIndexA=int(rows.firsts[k]),
-            linkIndexB=int(rows.seconds[k]), physicsClientId=cid,
-        )  # fmt: skip
+        points = _closest(
+            world, obj, obj, int(rows.firsts[k]), int(rows.seconds[k]), max(reach, SELF_QUERY)
+        )
         far = np.nextafter(max(gaps[k], reach), np.inf)  # no points: farther than reach
-        gaps[k] = min(float(p[8]) for p in points) if points else far
+        gaps[k] = min(points) if points else far
     return gaps

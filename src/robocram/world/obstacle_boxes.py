@@ -104,7 +104,7 @@ class _BodyBoxes:
         cid = world.physics_client()
         links = [(i, n) for i, n in _link_names(obj).items() if i in obj.colliders]
         table = np.array(
-            [pybullet.getAABB(obj.body_id, i, physicsClientId=cid) for i, _ in links],
+            [pybullet.getAABB(*obj.locate(i), physicsClientId=cid) for i, _ in links],
             dtype=float,
         ).reshape(-1, 6)
         return cls(

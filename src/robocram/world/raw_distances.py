@@ -43,7 +43,7 @@ class RawDistances:
         cid = self.world.physics_client()
         found = []
         for link in links:
-            low, high = pybullet.getAABB(handle.body_id, _index(handle, link), physicsClientId=cid)
+            low, high = pybullet.getAABB(*handle.locate(_index(handle, link)), physicsClientId=cid)
             found.append((tuple(low), tuple(high)))
         return found
 
@@ -53,12 +53,15 @@ class RawDistances:
         """The nearest points of ``link_a`` of ``a`` and ``link_b`` of ``b`` within ``reach``
         [m] (``None``: farther apart); the least of PyBullet's closest points."""
         first, second = self.world.object(a), self.world.object(b)
+        (body_a, index_a), (body_b, index_b) = (
+            first.locate(_index(first, link_a)), second.locate(_index(second, link_b))
+        )  # fmt: skip
         points = pybullet.getClosestPoints(
-            first.body_id,
-            second.body_id,
+            body_a,
+            body_b,
             reach,
-            linkIndexA=_index(first, link_a),
-            linkIndexB=_index(second, link_b),
+            linkIndexA=index_a,
+            linkIndexB=index_b,
             physicsClientId=self.world.physics_client(),
         )
         if not points:

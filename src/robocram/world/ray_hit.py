@@ -12,7 +12,7 @@ from numpy.typing import NDArray
 from robocram.tf import Vector3
 from robocram.world.pybullet_backend import pybullet
 from robocram.world.world_core import WorldCore
-from robocram.world.world_object import WorldObject
+from robocram.world.world_object import PART_STRIDE, WorldObject
 
 RAY_BATCH = 16000  # pybullet takes at most 16384 rays per call
 
@@ -32,22 +32,22 @@ def cast_rays(
     world: WorldCore, starts: Sequence[Vector3], ends: Sequence[Vector3]
 ) -> list[RayHit | None]:
     """The first hit of each segment ``starts[i]``..``ends[i]`` [m], in one pybullet call."""
-    by_body = {o.body_id: o for o in world.objects()}
     hits = pybullet.rayTestBatch(
         [list(s) for s in starts], [list(e) for e in ends], physicsClientId=world.physics_client()
     )
-    links: dict[int, dict[int, str]] = {}  # body -> link index -> name, built on first hit
+    links: dict[int, dict[int, str]] = {}  # body -> link slot -> name, built on first hit
     out: list[RayHit | None] = []
     for start, end, hit in zip(starts, ends, hits, strict=True):
-        obj = by_body.get(hit[0])
+        obj = world.owner(hit[0])
         if obj is None:
             out.append(None)
             continue
-        names = links.get(hit[0])
+        names = links.get(obj.body_id)
         if names is None:
-            names = links[hit[0]] = _link_names(obj)
+            names = links[obj.body_id] = _link_names(obj)
         length = math.dist(end, start)
-        out.append(RayHit(obj, names.get(hit[1]), tuple(hit[3]), tuple(hit[4]), hit[2] * length))
+        link = names.get(obj.slot(hit[0], hit[1]))
+        out.append(RayHit(obj, link, tuple(hit[3]), tuple(hit[4]), hit[2] * length))
     return out
 
 
@@ -75,6 +75,18 @@ def first_hit_bodies(
             physicsClientId=cid,
         )
         out[i : i + len(hits)] = [h[0] for h in hits]
+    return main_bodies(world, out)
+
+
+def main_bodies(world: WorldCore, bodies: NDArray[np.int64]) -> NDArray[np.int64]:
+    """``bodies`` (ids, -1 for none) with each part of an object cut in parts (see
+    :class:`~robocram.world.world_object.WorldObject`) read as its object's ``body_id``."""
+    split = [o for o in world.objects() if o.parts]
+    if not split:
+        return bodies
+    out = bodies.copy()
+    for obj in split:
+        out[np.isin(bodies, obj.parts)] = obj.body_id
     return out
 
 
@@ -101,9 +113,14 @@ def ray_hits(world: WorldCore, starts: NDArray[np.float64], ends: NDArray[np.flo
         )
     count = len(rows)
     columns = list(zip(*rows, strict=True)) if rows else [(), (), (), (), ()]
+    bodies = np.array(columns[0], dtype=np.int64).reshape(count)
+    links = np.array(columns[1], dtype=np.int64).reshape(count)
+    for obj in world.objects():
+        for part, body in enumerate(obj.parts[1:], start=1):
+            links[bodies == body] += part * PART_STRIDE
     return RayHits(
-        np.array(columns[0], dtype=np.int64).reshape(count),
-        np.array(columns[1], dtype=np.int64).reshape(count),
+        main_bodies(world, bodies),
+        links,
         np.array(columns[3], dtype=np.float64).reshape(count, 3),
         np.array(columns[4], dtype=np.float64).reshape(count, 3),
     )

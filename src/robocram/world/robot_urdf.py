@@ -24,7 +24,9 @@ from robocram.robots import (
     MissingMeshWarning,
     RobotDescription,
     RobotModel,
+    SplitModel,
     merge_fixed_links,
+    split_model,
 )
 from robocram.world.body_spec import UrdfSpec
 from robocram.world.errors import BodyLoadError, TooManyLinksError
@@ -89,18 +91,50 @@ def checked_urdf_spec(name: str, spec: UrdfSpec) -> UrdfSpec:
         raise BodyLoadError(name, source, str(err)) from err
     except RecursionError as err:
         raise BodyLoadError(name, source, "its XML is nested too deeply to read") from err
-    check_link_count(name, source, model)
-    path = spec.path if as_is else model_urdf_file(model.name, model)
-    return dataclasses.replace(spec, path=path, checked=True)
+    if _fits(model):
+        path = spec.path if as_is else model_urdf_file(model.name, model)
+        return dataclasses.replace(spec, path=path, checked=True)
+    return _split_spec(name, source, spec, model)
 
 
-def check_link_count(name: str, source: str, model: RobotModel) -> None:
+def _fits(model: RobotModel) -> bool:
+    return len(model.joints) <= MAX_LINKS and len(model.movable_joints()) <= MAX_MOVING_JOINTS
+
+
+def check_loadable(name: str, source: str, model: RobotModel) -> SplitModel:
+    """``model`` as the fixed bodies it loads as: one if it fits, else cut at subtrees
+    rigid with its root (``robots/model_split.py``).
+
+    Raises:
+        TooManyLinksError: even cut, its root part holds too many links or moving joints.
+    """
+    split = split_model(model, MAX_LINKS, MAX_MOVING_JOINTS)
+    hint = "no more subtree hung on fixed joints from the root could be cut off into a body"
+    check_link_count(name, source, split.main, hint if split.parts else "")
+    return split
+
+
+def _split_spec(name: str, source: str, spec: UrdfSpec, model: RobotModel) -> UrdfSpec:
+    """``spec`` as several fixed bodies, cut at subtrees rigid with the root."""
+    if not spec.fixed_base:
+        check_link_count(name, source, model, "load it with a fixed base to cut it in parts")
+    split = check_loadable(name, source, model)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", MissingMeshWarning)
+        main = model_urdf_file(split.main.name, split.main)
+        parts = tuple(
+            (model_urdf_file(part.model.name, part.model), part.root_T_base) for part in split.parts
+        )
+    return dataclasses.replace(spec, path=main, checked=True, parts=parts)
+
+
+def check_link_count(name: str, source: str, model: RobotModel, hint: str = "") -> None:
     """Refuse a model with more links or moving joints than PyBullet holds."""
     if len(model.joints) > MAX_LINKS:
-        raise TooManyLinksError(name, source, len(model.joints), MAX_LINKS)
+        raise TooManyLinksError(name, source, len(model.joints), MAX_LINKS, hint=hint)
     moving = len(model.movable_joints())
     if moving > MAX_MOVING_JOINTS:
-        raise TooManyLinksError(name, source, moving, MAX_MOVING_JOINTS, "moving joints")
+        raise TooManyLinksError(name, source, moving, MAX_MOVING_JOINTS, "moving joints", hint=hint)
 
 
 def _utf8(data: bytes) -> bool:

@@ -130,18 +130,17 @@ def lone_body(world: WorldCore, obj: WorldObject) -> LoneBody | None:
     """``obj``'s collision pieces where they are now; None if one of them is not modelled."""
     cid = world.physics_client()
     placed: list[tuple[Piece, Pose]] = []
-    links = [-1, *range(pybullet.getNumJoints(obj.body_id, physicsClientId=cid))]
-    for link in links:
-        shapes = pybullet.getCollisionShapeData(obj.body_id, link, physicsClientId=cid)
+    for body, link in _all_links(obj, cid):
+        shapes = pybullet.getCollisionShapeData(body, link, physicsClientId=cid)
         if not shapes:
             continue
-        inertial = _inertial_pose(obj.body_id, link, cid)
+        inertial = _inertial_pose(body, link, cid)
         for index, shape in enumerate(shapes):
             pieces = _pieces(shape[2], tuple(shape[3]), shape[4])
             if pieces is None and shape[2] == pybullet.GEOM_MESH and shape[4] == b"unknown_file":
                 # a URDF cylinder pybullet made a convex mesh of: its vertices, from Bullet
                 data = pybullet.getMeshData(
-                    obj.body_id, link, collisionShapeIndex=index, physicsClientId=cid
+                    body, link, collisionShapeIndex=index, physicsClientId=cid
                 )
                 pieces = (_vertex_hull(tuple(map(tuple, data[1]))),) if data[0] >= 4 else None
             if pieces is None:
@@ -149,6 +148,15 @@ def lone_body(world: WorldCore, obj: WorldObject) -> LoneBody | None:
             frame = inertial * Pose(tuple(shape[5]), tuple(shape[6]))
             placed.extend((piece, frame) for piece in pieces)
     return LoneBody(tuple(placed))
+
+
+def _all_links(obj: WorldObject, cid: int) -> list[tuple[int, int]]:
+    """``(body, pybullet link index)`` of every link of every body of ``obj``."""
+    return [
+        (body, link)
+        for body in obj.bodies
+        for link in (-1, *range(pybullet.getNumJoints(body, physicsClientId=cid)))
+    ]
 
 
 def _inertial_pose(body: int, link: int, cid: int) -> Pose:

@@ -20,7 +20,7 @@ from numpy.typing import NDArray
 from robocram.tf import Vector3
 from robocram.world.camera import Camera
 from robocram.world.pybullet_backend import pybullet
-from robocram.world.ray_hit import first_hit_bodies
+from robocram.world.ray_hit import first_hit_bodies, main_bodies
 from robocram.world.shape_rays import lone_body
 from robocram.world.world_core import WorldCore
 from robocram.world.world_object import WorldObject
@@ -44,9 +44,11 @@ class Visibility:
 def aabb(world: WorldCore, obj: WorldObject) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """World axis-aligned bounds ``(lower, upper)`` [m] over all of ``obj``'s links."""
     cid = world.physics_client()
-    boxes = [pybullet.getAABB(obj.body_id, -1, physicsClientId=cid)]
-    for i in range(pybullet.getNumJoints(obj.body_id, physicsClientId=cid)):
-        boxes.append(pybullet.getAABB(obj.body_id, i, physicsClientId=cid))
+    boxes = []
+    for body in obj.bodies:
+        boxes.append(pybullet.getAABB(body, -1, physicsClientId=cid))
+        for i in range(pybullet.getNumJoints(body, physicsClientId=cid)):
+            boxes.append(pybullet.getAABB(body, i, physicsClientId=cid))
     lows = np.array([b[0] for b in boxes])
     highs = np.array([b[1] for b in boxes])
     return lows.min(axis=0), highs.max(axis=0)
@@ -54,7 +56,7 @@ def aabb(world: WorldCore, obj: WorldObject) -> tuple[NDArray[np.float64], NDArr
 
 def link_aabb(world: WorldCore, obj: WorldObject, index: int) -> tuple[Vector3, Vector3]:
     """World axis-aligned bounds ``(lower, upper)`` [m] of link ``index`` of ``obj``."""
-    low, high = pybullet.getAABB(obj.body_id, index, physicsClientId=world.physics_client())
+    low, high = pybullet.getAABB(*obj.locate(index), physicsClientId=world.physics_client())
     return (float(low[0]), float(low[1]), float(low[2])), (
         float(high[0]),
         float(high[1]),
@@ -66,15 +68,19 @@ def link_aabb(world: WorldCore, obj: WorldObject, index: int) -> tuple[Vector3, 
 def isolated(world: WorldCore, obj: WorldObject) -> Iterator[None]:
     """Shift ``obj`` by :data:`ISOLATION_OFFSET`; put it back exactly afterwards."""
     cid = world.physics_client()
-    pos, orn = pybullet.getBasePositionAndOrientation(obj.body_id, physicsClientId=cid)
-    lin, ang = pybullet.getBaseVelocity(obj.body_id, physicsClientId=cid)
-    moved = [p + o for p, o in zip(pos, ISOLATION_OFFSET, strict=True)]
-    pybullet.resetBasePositionAndOrientation(obj.body_id, moved, orn, physicsClientId=cid)
+    kept = []
+    for body in obj.bodies:
+        pos, orn = pybullet.getBasePositionAndOrientation(body, physicsClientId=cid)
+        lin, ang = pybullet.getBaseVelocity(body, physicsClientId=cid)
+        kept.append((body, pos, orn, lin, ang))
+        moved = [p + o for p, o in zip(pos, ISOLATION_OFFSET, strict=True)]
+        pybullet.resetBasePositionAndOrientation(body, moved, orn, physicsClientId=cid)
     try:
         yield
     finally:
-        pybullet.resetBasePositionAndOrientation(obj.body_id, pos, orn, physicsClientId=cid)
-        pybullet.resetBaseVelocity(obj.body_id, lin, ang, physicsClientId=cid)
+        for body, pos, orn, lin, ang in kept:
+            pybullet.resetBasePositionAndOrientation(body, pos, orn, physicsClientId=cid)
+            pybullet.resetBaseVelocity(body, lin, ang, physicsClientId=cid)
 
 
 def _tangent_grid(
@@ -100,7 +106,8 @@ def _tangent_grid(
 def _first_hits(world: WorldCore, camera: Camera, tangents: NDArray[np.float64]) -> list[int]:
     starts, ends = camera.ray_ends(tangents)
     hits = pybullet.rayTestBatch(starts, ends, physicsClientId=world.physics_client())
-    return [int(h[0]) for h in hits]
+    bodies = np.array([int(h[0]) for h in hits], dtype=np.int64)
+    return [int(b) for b in main_bodies(world, bodies)]
 
 
 def ray_visibility(
@@ -166,7 +173,7 @@ def segmentation(world: WorldCore, camera: Camera, width: int, height: int) -> N
         renderer=pybullet.ER_TINY_RENDERER,
         physicsClientId=world.physics_client(),
     )
-    return np.reshape(np.asarray(seg, dtype=np.int64), (height, width))
+    return main_bodies(world, np.reshape(np.asarray(seg, dtype=np.int64), (height, width)))
 
 
 def render_visibility(

@@ -61,6 +61,8 @@ class WorldCore:
         self._objects: dict[str, WorldObject] = {}
         self._limits: dict[tuple[int, str], JointLimits] = {}  # (body, joint): fixed at load
         self._inertial: dict[str, Pose] = {}  # base link frame -> pybullet base (COM) frame
+        self._part_bases: dict[str, tuple[Pose, ...]] = {}  # a cut model's: root -> part base
+        self._owners: dict[int, WorldObject] = {}  # every body id (parts too) -> its object
         self._attachments: dict[str, Attachment] = {}  # by attached object name
         self._holds: dict[str, dict[int, float]] = {}  # robot -> joint index -> held value
         self._motors = HeldMotors()  # a robot's held joints need no motor
@@ -90,29 +92,33 @@ class WorldCore:
         if handle.name in self._objects:
             raise DuplicateObjectError(handle.name)
         cid = self.physics_client()
-        handle.body_id = create_body(handle.name, handle.spec, cid)
+        loaded = create_body(handle.name, handle.spec, cid)
+        handle.body_id = loaded.bodies[0]
+        several = len(loaded.bodies) > 1
+        handle.parts = loaded.bodies if several else ()
+        handle.part_offsets = loaded.offsets if several else ()
         self._motors.forget(handle.body_id)
         dyn = pybullet.getDynamicsInfo(handle.body_id, -1, physicsClientId=cid)
         self._inertial[handle.name] = Pose(dyn[3], dyn[4])
+        if several:
+            self._part_bases[handle.name] = tuple(
+                offset * Pose(*pybullet.getDynamicsInfo(body, -1, physicsClientId=cid)[3:5])
+                for body, offset in zip(loaded.bodies, loaded.offsets, strict=True)
+            )
         handle.joint_index.clear()
         handle.link_index.clear()
         handle.movable_joints.clear()
         handle.forget_indices()
-        base_name = pybullet.getBodyInfo(handle.body_id, physicsClientId=cid)[0].decode()
-        handle.link_index[base_name] = -1
-        for i in range(pybullet.getNumJoints(handle.body_id, physicsClientId=cid)):
-            info = pybullet.getJointInfo(handle.body_id, i, physicsClientId=cid)
-            handle.joint_index[info[1].decode()] = i
-            handle.link_index[info[12].decode()] = i
-            if info[2] in _MOVABLE_TYPES:
-                handle.movable_joints.append(info[1].decode())
+        for body in handle.bodies:
+            self._owners[body] = handle
+            _index_body(handle, body, cid)
         handle.link_offset.clear()
         for frame, host, host_T_frame in getattr(handle.spec, "frames", ()):
             handle.link_index[frame] = handle.link_index[host]
             handle.link_offset[frame] = host_T_frame
         handle.colliders = frozenset(
             i for i in handle.index_names()
-            if pybullet.getCollisionShapeData(handle.body_id, i, physicsClientId=cid)
+            if pybullet.getCollisionShapeData(*handle.locate(i), physicsClientId=cid)
         )  # fmt: skip
         self._objects[handle.name] = handle
         if handle.joint_index:
@@ -135,6 +141,10 @@ class WorldCore:
             raise NotARobotError(obj.name)
         return obj
 
+    def owner(self, body: int) -> WorldObject | None:
+        """The object a pybullet body id (a part's too) belongs to; None if no object's."""
+        return self._owners.get(body)
+
     def objects(self, type: str | None = None) -> list[WorldObject]:  # noqa: A002
         """All objects in creation order, or those of one ``type``."""
         return [o for o in self._objects.values() if type is None or o.type == type]
@@ -156,11 +166,14 @@ class WorldCore:
         for name, att in list(self._attachments.items()):
             if handle.name in (name, att.robot):
                 del self._attachments[name]
-        pybullet.removeBody(handle.body_id, physicsClientId=self.physics_client())
+        for body in handle.bodies:
+            pybullet.removeBody(body, physicsClientId=self.physics_client())
+            self._owners.pop(body, None)
         self._motors.forget(handle.body_id)
         self._limits = {k: v for k, v in self._limits.items() if k[0] != handle.body_id}
         del self._objects[handle.name]
         self._inertial.pop(handle.name, None)
+        self._part_bases.pop(handle.name, None)
         self._holds.pop(handle.name, None)
 
     def pose(self, obj: ObjectRef) -> Pose:
@@ -177,12 +190,7 @@ class WorldCore:
         Placing an attached object moves it relative to its link; it stays attached.
         """
         handle = self.object(obj)
-        base = Pose.coerce(pose) * self._inertial[handle.name]
-        cid = self.physics_client()
-        pybullet.resetBasePositionAndOrientation(
-            handle.body_id, base.position, base.orientation, physicsClientId=cid
-        )
-        pybullet.resetBaseVelocity(handle.body_id, (0, 0, 0), (0, 0, 0), physicsClientId=cid)
+        self._place(handle, Pose.coerce(pose))
         att = self._attachments.get(handle.name)
         if att is not None:
             link_pose = self.link_pose(att.robot, att.link)
@@ -190,6 +198,17 @@ class WorldCore:
                 att.obj, att.robot, att.link, link_pose.inverse() * Pose.coerce(pose)
             )
         self._follow(handle.name)
+
+    def _place(self, handle: WorldObject, pose: Pose) -> None:
+        """Put every body of ``handle`` at rest with its root link frame at ``pose``."""
+        cid = self.physics_client()
+        bases = self._part_bases.get(handle.name) or (self._inertial[handle.name],)
+        for body, base_in_root in zip(handle.bodies, bases, strict=True):
+            base = pose * base_in_root
+            pybullet.resetBasePositionAndOrientation(
+                body, base.position, base.orientation, physicsClientId=cid
+            )
+            pybullet.resetBaseVelocity(body, (0, 0, 0), (0, 0, 0), physicsClientId=cid)
 
     def body_state(self, obj: ObjectRef) -> tuple[float, ...]:
         """Numbers that change whenever ``obj``'s shapes move: its body id, base pose and
@@ -202,9 +221,7 @@ class WorldCore:
         )
         joints: tuple[float, ...] = ()
         if handle.movable_joints:
-            indices = [handle.joint_index[n] for n in handle.movable_joints]
-            states = pybullet.getJointStates(handle.body_id, indices, physicsClientId=cid)
-            joints = tuple(float(st[0]) for st in states or ())
+            joints = tuple(self.joint_states(handle).values())
         return (float(handle.body_id), *position, *orientation, *joints)
 
     def link_pose(self, obj: ObjectRef, link: str) -> Pose:
@@ -214,11 +231,11 @@ class WorldCore:
         offset = handle.link_offset.get(link, ORIGIN)
         if index < 0:
             return self.pose(handle) * offset
+        body, at = handle.locate(index)
+        if at < 0:  # a part's root link, fixed in the root link's frame
+            return self.pose(handle) * handle.part_offsets[handle.parts.index(body)] * offset
         state = pybullet.getLinkState(
-            handle.body_id,
-            index,
-            computeForwardKinematics=True,
-            physicsClientId=self.physics_client(),
+            body, at, computeForwardKinematics=True, physicsClientId=self.physics_client()
         )
         return Pose(state[4], state[5]) * offset
 
@@ -231,7 +248,11 @@ class WorldCore:
             indices = [index[link] for link in links]
         except KeyError:
             indices = [self._link_index(handle, link) for link in links]  # names the culprit
-        if min(indices, default=0) >= 0 and not handle.link_offset.keys() & set(links):
+        if (
+            min(indices, default=0) >= 0
+            and not handle.parts
+            and not handle.link_offset.keys() & set(links)
+        ):
             states = pybullet.getLinkStates(
                 handle.body_id, indices, computeForwardKinematics=True,
                 physicsClientId=self.physics_client(),
@@ -267,7 +288,7 @@ class WorldCore:
             lower = -math.inf if spec.lower is None else spec.lower
             upper = math.inf if spec.upper is None else spec.upper
             return JointLimits(lower, upper)
-        info = pybullet.getJointInfo(handle.body_id, index, physicsClientId=self.physics_client())
+        info = pybullet.getJointInfo(*handle.locate(index), physicsClientId=self.physics_client())
         if info[8] > info[9]:  # pybullet marks unlimited joints with lower > upper
             return JointLimits(-math.inf, math.inf)
         return JointLimits(info[8], info[9])
@@ -290,10 +311,11 @@ class WorldCore:
         """Every movable joint's value [rad | m] by name."""
         handle = self.object(obj)
         names = self._movable_names(handle)
+        cid = self.physics_client()
+        if handle.parts:
+            return _part_joint_states(handle, names, cid)
         indices = [handle.joint_index[n] for n in names]
-        states = pybullet.getJointStates(
-            handle.body_id, indices, physicsClientId=self.physics_client()
-        )
+        states = pybullet.getJointStates(handle.body_id, indices, physicsClientId=cid)
         return {n: float(s[0]) for n, s in zip(names, states or (), strict=True)}
 
     def set_joint_states(
@@ -312,7 +334,7 @@ class WorldCore:
         applied, clamped = clamp_values(values, limits)
         applied.update(self._mimic_values(handle, applied))
         by_index = {handle.joint_index[name]: value for name, value in applied.items()}
-        _reset_joints(body, by_index, self.physics_client())
+        _reset_slots(handle, by_index, self.physics_client())
         self._holds.setdefault(handle.name, {}).update(by_index)
         if carry:
             self._follow(handle.name)
@@ -388,17 +410,11 @@ class WorldCore:
 
     def _follow(self, carrier: str) -> None:
         """Re-place the objects attached to ``carrier`` (and theirs, recursively)."""
-        cid = self.physics_client()
         for att in list(self._attachments.values()):
             if att.robot != carrier:
                 continue
             target = self._objects[att.obj]
-            pose = self.link_pose(carrier, att.link) * att.link_T_obj
-            base = pose * self._inertial[att.obj]
-            pybullet.resetBasePositionAndOrientation(
-                target.body_id, base.position, base.orientation, physicsClientId=cid
-            )
-            pybullet.resetBaseVelocity(target.body_id, (0, 0, 0), (0, 0, 0), physicsClientId=cid)
+            self._place(target, self.link_pose(carrier, att.link) * att.link_T_obj)
             self._follow(att.obj)
 
     def step(self) -> None:
@@ -449,7 +465,7 @@ class WorldCore:
             return 0
         look = max(1, round(LOOK / self.time_step))
         cid = self.physics_client()
-        others = [o.body_id for o in self._objects.values() if o is not handle]
+        others = [b for o in self._objects.values() if o is not handle for b in o.bodies]
         done = 0
         try:
             with asleep(others, cid):
@@ -474,6 +490,44 @@ class WorldCore:
             raise WorldValueError(f"simulate needs a finite duration >= 0 [s], got {seconds!r}")
         _check_time_step(self.time_step)
         return round(seconds / self.time_step)
+
+
+def _index_body(handle: WorldObject, body: int, cid: int) -> None:
+    """Name ``body``'s links and joints in ``handle``'s tables, by slot."""
+    base_name = pybullet.getBodyInfo(body, physicsClientId=cid)[0].decode()
+    handle.link_index[base_name] = handle.slot(body, -1)
+    for i in range(pybullet.getNumJoints(body, physicsClientId=cid)):
+        info = pybullet.getJointInfo(body, i, physicsClientId=cid)
+        handle.joint_index[info[1].decode()] = handle.slot(body, i)
+        handle.link_index[info[12].decode()] = handle.slot(body, i)
+        if info[2] in _MOVABLE_TYPES:
+            handle.movable_joints.append(info[1].decode())
+
+
+def _part_joint_states(handle: WorldObject, names: list[str], cid: int) -> dict[str, float]:
+    """:meth:`WorldCore.joint_states` of an object of several bodies, one call per body."""
+    by_body: dict[int, list[tuple[str, int]]] = {}
+    for name in names:
+        body, index = handle.locate(handle.joint_index[name])
+        by_body.setdefault(body, []).append((name, index))
+    values: dict[str, float] = {}
+    for body, joints in by_body.items():
+        states = pybullet.getJointStates(body, [i for _, i in joints], physicsClientId=cid)
+        values.update((n, float(s[0])) for (n, _), s in zip(joints, states or (), strict=True))
+    return {name: values[name] for name in names}
+
+
+def _reset_slots(handle: WorldObject, values: Mapping[int, float], cid: int) -> None:
+    """:func:`_reset_joints` by slot, for each body of ``handle``."""
+    if not handle.parts:
+        _reset_joints(handle.body_id, values, cid)
+        return
+    by_body: dict[int, dict[int, float]] = {}
+    for slot, value in values.items():
+        body, index = handle.locate(slot)
+        by_body.setdefault(body, {})[index] = value
+    for body, part in by_body.items():
+        _reset_joints(body, part, cid)
 
 
 def _reset_joints(body: int, values: Mapping[int, float], cid: int) -> None:

@@ -14,6 +14,7 @@ from robocram.world.body_spec import BodySpec
 from robocram.world.link_pair_rows import LinkPairRows
 
 PAIR_ROWS_KEPT = 8  # sets of link pairs whose rows a handle keeps (one per arm and mode)
+PART_STRIDE = 1024  # link slots per part: part p's link i (pybullet's index) is p * 1024 + i
 
 
 @dataclass(eq=False)
@@ -27,6 +28,12 @@ class WorldObject:
     its pose in the host in ``link_offset``. ``movable_joints`` lists the joints that have
     a state, in index order, read once at load so joint queries need no backend round trip
     per joint.
+
+    A model too big for one pybullet body is several bodies (``parts``, the first being
+    ``body_id``), each fixed at ``part_offsets`` (its base link in the root link's frame).
+    Link and joint indices are then *slots*: part ``p``'s pybullet index ``i`` is
+    ``p * PART_STRIDE + i`` (part 0's slots are pybullet's indices); :meth:`locate` turns a
+    slot into ``(body, index)`` and :meth:`slot` back.
     """
 
     name: str
@@ -37,6 +44,8 @@ class WorldObject:
     link_index: dict[str, int] = field(default_factory=dict, kw_only=True)
     link_offset: dict[str, Pose] = field(default_factory=dict, kw_only=True)
     movable_joints: list[str] = field(default_factory=list, kw_only=True)
+    parts: tuple[int, ...] = field(default=(), kw_only=True)
+    part_offsets: tuple[Pose, ...] = field(default=(), kw_only=True)
     _index_names: dict[int, str] | None = field(default=None, init=False, repr=False)
     _collider_names: dict[int, str] | None = field(default=None, init=False, repr=False)
     colliders: frozenset[int] = field(default=frozenset(), init=False, repr=False)
@@ -45,6 +54,28 @@ class WorldObject:
     _pair_rows: dict[tuple[tuple[str, str], ...], LinkPairRows] = field(
         default_factory=dict, init=False, repr=False
     )
+
+    @property
+    def bodies(self) -> tuple[int, ...]:
+        """Every pybullet body of this object, the root part first."""
+        return self.parts or (self.body_id,)
+
+    def locate(self, slot: int) -> tuple[int, int]:
+        """``(body, pybullet link index)`` of a link slot (see the class docstring)."""
+        if not self.parts:
+            return self.body_id, slot
+        part = (slot + 1) // PART_STRIDE
+        return self.parts[part], slot - part * PART_STRIDE
+
+    def slot(self, body: int, index: int) -> int:
+        """The link slot of pybullet link ``index`` of ``body``, one of :attr:`bodies`."""
+        if not self.parts or body == self.body_id:
+            return index
+        return self.parts.index(body) * PART_STRIDE + index
+
+    def slots(self) -> list[int]:
+        """Every link slot of every part (each part's base too), whether named or not."""
+        return sorted(set(self.link_index.values()))
 
     def forget_indices(self) -> None:
         """Drop what was read from the last body: a new one is being indexed."""

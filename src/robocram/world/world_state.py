@@ -30,7 +30,7 @@ class WorldState:
     """Everything :meth:`restore` needs to put a world back as it was."""
 
     handles: tuple[WorldObject, ...]
-    bodies: tuple[BodyState, ...]
+    bodies: tuple[tuple[BodyState, ...], ...]  # per handle, per body (a cut model's parts)
     attachments: tuple[Attachment, ...]
     holds: tuple[tuple[str, tuple[tuple[str, float], ...]], ...]  # object -> held joints
     time: float
@@ -43,7 +43,9 @@ class WorldState:
         handles = tuple(world.objects())
         return cls(
             handles=handles,
-            bodies=tuple(_body_state(world.physics_client(), h.body_id) for h in handles),
+            bodies=tuple(
+                tuple(_body_state(world.physics_client(), b) for b in h.bodies) for h in handles
+            ),
             attachments=tuple(world.all_attachments()),
             holds=tuple((h.name, tuple(world.held_joints(h).items())) for h in handles),
             time=world.time,
@@ -72,12 +74,13 @@ class WorldState:
 
     def _apply(self, world: WorldCore) -> None:
         cid = world.physics_client()
-        for handle, body in zip(self.handles, self.bodies, strict=True):
-            target = world.object(handle.name).body_id
-            pybullet.resetBasePositionAndOrientation(target, *body.base, physicsClientId=cid)
-            pybullet.resetBaseVelocity(target, *body.velocity, physicsClientId=cid)
-            for index, position, velocity in body.joints:
-                pybullet.resetJointState(target, index, position, velocity, physicsClientId=cid)
+        for handle, states in zip(self.handles, self.bodies, strict=True):
+            targets = world.object(handle.name).bodies
+            for target, body in zip(targets, states, strict=True):
+                pybullet.resetBasePositionAndOrientation(target, *body.base, physicsClientId=cid)
+                pybullet.resetBaseVelocity(target, *body.velocity, physicsClientId=cid)
+                for index, position, velocity in body.joints:
+                    pybullet.resetJointState(target, index, position, velocity, physicsClientId=cid)
         world.set_attachments(self.attachments)
         for name, held in self.holds:
             world.set_held_joints(name, dict(held))

@@ -27,11 +27,9 @@ class PerceptionBlockedByRobot(PerceptionObjectNotFound):
 
     link: str | None = None
     target: str | None = None
+    arm_parked: bool | None = None  # the blocking link's arm is parked (None: on no arm)
     summary = "the robot's own link blocks the camera's view"
-    hint = (
-        "park the arms before looking (perform(an.action(type='parking-arms'))); "
-        "the scenes park them at the start"
-    )
+    hint = "the message says what moves that link out of the view"
 
 
 class PtuLowLevelFailure(LowLevelFailure):

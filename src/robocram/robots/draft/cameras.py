@@ -23,7 +23,8 @@ from robocram.tf import Pose
 
 CAMERA_WORDS = ("optical", "camera", "rgb", "kinect", "xtion", "realsense", "stereo")
 NOT_CAMERAS = ("depth", "infra", "_ir", "projector", "laser", "imu", "gazebo", "info")
-FORWARD = 0.7  # x share in the root link of an axis that looks forward
+FORWARD = 0.7  # x share in the root link of an axis that looks squarely forward
+LOOKS_AHEAD = 0.5  # x share of an optical axis that `robot check` counts as looking ahead
 OPTICAL_FROM_BODY = Pose.from_xyz_rpy((0.0, 0.0, 0.0), (-math.pi / 2, 0.0, -math.pi / 2))
 DEFAULT_HFOV = math.radians(60.0)  # [rad] a common RGB-D camera; URDF links carry no FOV
 DEFAULT_VFOV = math.radians(45.0)  # [rad]
@@ -62,27 +63,68 @@ def camera_frames(tree: ModelTree, hands: list[str]) -> list[str]:
     return sorted(found, key=lambda link: -_score(tree, link, hands))
 
 
+HEAD_HEIGHT = 0.5  # [m] over the root: a link off the arms this high may carry a camera
+LIKELY_WORDS = ("head", "sensor", "eye", "vision", "cam", "kinect", "xtion", "mast")
+
+
+def likely_camera_link(tree: ModelTree, hands: Sequence[str]) -> str:
+    """The link a camera most likely sits on when none is named like one (for ``--camera
+    LINK``): off the arms, named like a head or a sensor, else high up; an arm on its own
+    (nothing off it is named so or stands 0.5 m up): its wrist, for a hand camera."""
+    poses = link_poses(tree.model)
+    off_arms = [
+        link
+        for link in tree.model.links
+        if not any(tree.below(hand, link) or tree.below(link, hand) for hand in hands)
+    ]
+
+    def score(link: str) -> tuple[int, float]:
+        words = sum(word in link.lower() for word in LIKELY_WORDS)
+        return words, poses[link].position[2]
+
+    best = max(off_arms, key=score, default=None)
+    if best is not None and (score(best)[0] > 0 or score(best)[1] >= HEAD_HEIGHT or not hands):
+        return best
+    return hands[0] if hands else tree.model.root_link
+
+
 def find_camera(
-    tree: ModelTree, hands: list[str], torso: str | None, sensors: Sequence[CameraSensor] = ()
+    tree: ModelTree,
+    hands: list[str],
+    torso: str | None,
+    sensors: Sequence[CameraSensor] = (),
+    given: str | None = None,
 ) -> Camera | None:
     """The robot's main camera with heights at the torso's limits, or None.
 
-    ``sensors`` (the URDF's Gazebo cameras) give its fields of view where one images it.
+    ``sensors`` (the URDF's Gazebo cameras) give its fields of view where one images it;
+    ``given``: the link the user named (``--camera LINK``), first whatever its name.
     """
     frames = camera_frames(tree, hands)
+    if given is not None:
+        tree.model.link(given)  # a DescriptionError names close links
+        frames = [given, *(f for f in frames if f != given)]
     if not frames:
         return None
     frame, others = frames[0], tuple(frames[1:4])
     poses = link_poses(tree.model)
     axes = poses[frame].matrix()[:3, :3]
-    added, why, doubt = None, f"camera frame by name ({len(frames)} found, best first)", None
-    if axes[0, 2] >= FORWARD:
+    found = f"camera frame by name ({len(frames)} found, best first)"
+    if given is not None:
+        found = "camera frame as given (--camera)"
+    added, why, doubt = None, found, None
+    z_ahead, x_ahead = float(axes[0, 2]), float(axes[0, 0])
+    if z_ahead >= FORWARD or (z_ahead >= LOOKS_AHEAD and z_ahead >= x_ahead):
         why += "; optical: z looks forward"
-    elif axes[0, 0] >= FORWARD:
+    elif x_ahead >= LOOKS_AHEAD:
         added = FrameSpec(f"{frame}_optical", frame, OPTICAL_FROM_BODY)
         why += "; its x looks forward (body convention): optical frame added, z forward"
     else:
-        doubt = "neither its z nor its x looks forward at zero joints; add an optical frame"
+        doubt = (
+            f"neither its z (x share {z_ahead:.2f}) nor its x ({x_ahead:.2f}) looks ahead "
+            f"(at least {LOOKS_AHEAD}, as `robot check` asks) at zero joints; add an "
+            "optical frame (z forward, x right, y down) with a FrameSpec"
+        )
     low, high = _heights(tree, frame, torso)
     camera_frame = added.name if added is not None else frame
     sensor = sensor_for(frame, tree.rigid_group(frame), sensors)

@@ -22,7 +22,13 @@ from robocram.robots.description_check import infer_arm
 from robocram.robots.draft.arms import arm_names, draft_arm
 from robocram.robots.draft.base_drive import find_base_drive
 from robocram.robots.draft.camera_sensors import camera_sensors
-from robocram.robots.draft.cameras import DEFAULT_HFOV, DEFAULT_VFOV, find_camera, find_neck
+from robocram.robots.draft.cameras import (
+    DEFAULT_HFOV,
+    DEFAULT_VFOV,
+    find_camera,
+    find_neck,
+    likely_camera_link,
+)
 from robocram.robots.draft.draft_source import draft_source
 from robocram.robots.draft.hands import find_hands
 from robocram.robots.draft.link_poses import within_limits
@@ -67,13 +73,15 @@ def draft_description(
     name: str | None = None,
     srdf: str | Path | None = None,
     package_paths: Iterable[str | Path] = (),
+    camera: str | None = None,
 ) -> DraftDescription:
     """Guess a description of the robot in ``urdf`` (its name from the URDF unless given).
 
     An ``srdf`` (its MoveIt configuration) gives the arms' joints, parking states and
     self-contacts instead of guesses. ``package_paths`` are searched for ``package://``
     URIs; a package found nowhere gets boxes and a :class:`MissingMeshWarning`, so a
-    draft can start before every mesh package is at hand.
+    draft can start before every mesh package is at hand. ``camera``: the camera's link
+    where none is named like one (``robocram robot draft --camera LINK``).
 
     Raises:
         UrdfError: the URDF cannot be read or is not a tree.
@@ -93,7 +101,7 @@ def draft_description(
     drive = find_base_drive(tree)
     _note(why, doubts, "base_type", drive.why, drive.doubt)
     hands = find_hands(tree)
-    cameras = [c for c in _camera_guess(tree, [h.end_effector_link for h in hands])]
+    cameras = [c for c in _camera_guess(tree, [h.end_effector_link for h in hands], camera)]
     torso = find_torso(tree, [h.end_effector_link for h in hands], cameras)
     _note(why, doubts, "torso_joint", torso.why, torso.doubt)
     names, names_why, names_doubt = arm_names(tree, hands) if hands else ([], "", None)
@@ -129,7 +137,7 @@ def draft_description(
         extra_frames=tuple(frames),
         coupled_joints=tuple(t.coupling for t in telescopes),
     )
-    desc = _with_camera(tree, desc, why, doubts, cut)
+    desc = _with_camera(tree, desc, why, doubts, cut, camera)
     if semantics is not None:
         desc = srdf_arms(model, desc, semantics, why, doubts)
     inferred = frozenset(
@@ -152,8 +160,8 @@ def _roles(model: RobotModel, arm: ArmDescription, telescopes: list[Telescope]) 
     return "; ".join(parts)
 
 
-def _camera_guess(tree: ModelTree, hands: list[str]) -> list[str]:
-    camera = find_camera(tree, hands, None)
+def _camera_guess(tree: ModelTree, hands: list[str], given: str | None) -> list[str]:
+    camera = find_camera(tree, hands, None, given=given)
     return [] if camera is None else [camera.added.parent if camera.added else camera.frame]
 
 
@@ -171,12 +179,18 @@ def _with_camera(
     why: dict[str, str],
     doubts: dict[str, str],
     cut: str | None,
+    given: str | None = None,
 ) -> RobotDescription:
     """``desc`` with its camera, heights at the torso limits, and pan-tilt or neck arm."""
     hands = [arm.end_effector_link for arm in desc.arms.values()]
-    camera = find_camera(tree, hands, desc.torso_joint, camera_sensors(Path(desc.urdf)))
+    sensors = camera_sensors(Path(desc.urdf))
+    camera = find_camera(tree, hands, desc.torso_joint, sensors, given)
     if camera is None:
-        doubts["cameras"] = "no camera frame found by name: add one to detect objects"
+        likely = likely_camera_link(tree, hands)
+        doubts["cameras"] = (
+            f"no camera link found by name: draft again with `--camera LINK` (likely "
+            f"{likely!r}) to look and detect objects"
+        )
         return desc
     others = f"; others: {', '.join(camera.others)}" if camera.others else ""
     _note(why, doubts, "cameras.0", camera.why + others, camera.doubt)

@@ -160,6 +160,8 @@ def _body(desc: RobotDescription, notes: _Notes) -> object:
     fields.append(notes.item("arms", "arms", Call("{", keyed, "}")))
     if desc.cameras:
         fields.append(notes.item("cameras.0", "cameras", (_camera(desc.cameras[0], notes),)))
+    elif "cameras" in notes.doubts:  # the one line saying what to add
+        fields.append(notes.item("cameras", "cameras", ()))
     if desc.pan_tilt is not None:
         fields.append(notes.item("pan_tilt", "pan_tilt", _pan_tilt(desc.pan_tilt)))
     if desc.neck_arm is not None:

@@ -14,6 +14,8 @@ from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.urdf_elements import Joint
 
 MIN_ARM_JOINTS = 4  # movable joints from the root to the wrist: fewer is no arm
+MANY_FINGERS = 3  # chains of phalanges below one link that make it a hand
+MAX_PHALANGES = 4  # joints of one finger, at most (a human finger has 3 or 4)
 
 
 @dataclass(frozen=True)
@@ -59,10 +61,26 @@ def _finger_like(tree: ModelTree, joint: Joint, siblings: int) -> bool:
     return siblings >= 2 or any(word in joint.name.lower() for word in FINGER_WORDS)
 
 
+def _finger_chain(tree: ModelTree, joint: Joint) -> bool:
+    """Whether ``joint`` starts a finger of a many-fingered hand: a chain of at most
+    :data:`MAX_PHALANGES` revolute joints, one after the other, with nothing branching."""
+    chain = [j for j in tree.subtree_joints(joint.child) if j.movable]
+    if joint.type not in ("revolute", "continuous") or len(chain) >= MAX_PHALANGES:
+        return False
+    links = [joint.child, *(j.child for j in chain)]
+    return all(len([j for j in tree.movable_roots(link) if j.movable]) <= 1 for link in links)
+
+
 def _fingers(tree: ModelTree, link: str) -> list[Joint]:
-    """The finger joints among the first movable joints below ``link``."""
+    """The finger joints among the first movable joints below ``link``: prismatic, coupled or
+    leaves (a gripper's); else, where at least :data:`MANY_FINGERS` chains of phalanges start
+    (Armar6's, Justin's, Alex's five- and four-fingered hands), those chains' first joints."""
     roots = tree.movable_roots(link)
-    return [root for root in roots if _finger_like(tree, root, len(roots))]
+    found = [root for root in roots if _finger_like(tree, root, len(roots))]
+    if found:
+        return found
+    chains = [root for root in roots if _finger_chain(tree, root)]
+    return chains if len(chains) >= MANY_FINGERS else []
 
 
 def _is_hand(tree: ModelTree, joint: Joint) -> bool:

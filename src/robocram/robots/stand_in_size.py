@@ -1,0 +1,92 @@
+"""How big a box stands in for a link whose mesh is missing: from the kinematics.
+
+A link's body joins its own frame (where its parent joint turns it) to the joints of its
+children, so the box spans those points, as thick as a fraction of the link's length in
+the chain (a palm is thinner than an upper arm). Placeholder inertias (``ixx = 1``) gave
+boxes of several metres that made every check fail far from the cause; nothing here reads
+the inertia, and no box is longer than the robot's own span.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+from robocram.robots.urdf_elements import Geometry, Joint
+from robocram.tf import Pose
+
+THICKNESS_SHARE = 0.25  # of the link's length in the chain: the box's thickness
+MIN_THICKNESS = 0.02  # [m]
+MAX_THICKNESS = 0.08  # [m] an arm link; the base is allowed its children's span
+LONE_THICKNESS = 0.04  # [m] a link with no offset anywhere near it (a frame on a frame)
+
+
+@dataclass(frozen=True)
+class StandInBox:
+    """A stand-in box: its centre in the link frame and its extents [m]."""
+
+    centre: Pose
+    size: tuple[float, float, float]
+
+    def geometry(self, uri: str) -> Geometry:
+        """The box, marked (``filename``) with the mesh it stands in for."""
+        return Geometry("box", size=self.size, filename=uri)
+
+
+def is_stand_in(geometry: Geometry) -> bool:
+    """Whether ``geometry`` is a box standing in for a missing mesh (see :class:`StandInBox`)."""
+    return geometry.kind == "box" and bool(geometry.filename)
+
+
+def stand_in_boxes(joints: Mapping[str, Joint]) -> dict[str, StandInBox]:
+    """Per link named by a joint: the box that stands in for its missing mesh."""
+    children: dict[str, list[Joint]] = {}
+    parent_of: dict[str, Joint] = {}
+    for joint in joints.values():
+        children.setdefault(joint.parent, []).append(joint)
+        parent_of[joint.child] = joint
+    span = _span(joints, parent_of)
+    boxes: dict[str, StandInBox] = {}
+    for link in {*children, *parent_of}:
+        points = [(0.0, 0.0, 0.0), *(j.origin.position for j in children.get(link, []))]
+        length = _length(link, parent_of, children)
+        thickness = min(max(THICKNESS_SHARE * length, MIN_THICKNESS), MAX_THICKNESS)
+        if length <= 0.0:
+            thickness = LONE_THICKNESS
+        low = [min(p[i] for p in points) for i in range(3)]
+        high = [max(p[i] for p in points) for i in range(3)]
+        size = tuple(min(high[i] - low[i] + thickness, span) for i in range(3))
+        centre = Pose(tuple((low[i] + high[i]) / 2 for i in range(3)))  # type: ignore[arg-type]
+        boxes[link] = StandInBox(centre, size)  # type: ignore[arg-type]
+    return boxes
+
+
+def _length(
+    link: str, parent_of: Mapping[str, Joint], children: Mapping[str, list[Joint]]
+) -> float:
+    """The link's length in the chain: its parent joint's offset, else its farthest child's."""
+    parent = parent_of.get(link)
+    offset = math.dist((0.0, 0.0, 0.0), parent.origin.position) if parent is not None else 0.0
+    if offset > 0.0:
+        return offset
+    return max((math.dist((0.0, 0.0, 0.0), j.origin.position) for j in children.get(link, [])),
+               default=0.0)  # fmt: skip
+
+
+def _span(joints: Mapping[str, Joint], parent_of: Mapping[str, Joint]) -> float:
+    """The robot's span [m]: the widest extent of its joints' positions at zero, at least
+    :data:`MAX_THICKNESS` (a robot of one link)."""
+    positions: list[tuple[float, ...]] = [(0.0, 0.0, 0.0)]
+    for joint in joints.values():
+        pose = joint.origin
+        above = joint.parent
+        for _ in range(len(joints)):  # a loop (refused by RobotModel afterwards) ends too
+            parent = parent_of.get(above)
+            if parent is None:
+                break
+            pose = parent.origin * pose
+            above = parent.parent
+        positions.append(pose.position)
+    extents = [max(p[i] for p in positions) - min(p[i] for p in positions) for i in range(3)]
+    return max(max(extents), MAX_THICKNESS)
