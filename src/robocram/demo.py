@@ -23,7 +23,7 @@ from robocram.designators import a, an
 from robocram.execution import PlanFailure
 from robocram.plans import perform
 from robocram.projection import looking_orientation, simulated_robot
-from robocram.robots.description_source import is_description_spec
+from robocram.robots import is_description_spec
 from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
 from robocram.traces import animate_run, trace_to

@@ -7,6 +7,7 @@ from pathlib import Path
 import pytest
 
 from robocram.robots import DescriptionError, RobotModel, load_description, mimic_followers
+from robocram.robots.errors import DanglingMimicWarning
 
 DATA = Path(__file__).parents[2] / "src" / "robocram" / "robots" / "data"
 
@@ -54,10 +55,14 @@ def test_unknown_joint_suggests_the_right_name() -> None:
         mimic_followers(model, {"mastr": 0.0})
 
 
-def test_mimic_of_a_missing_joint_is_a_urdf_error() -> None:
+def test_mimic_of_a_missing_joint_is_read_as_a_free_joint_with_a_warning() -> None:
+    """Issue 37: Alex's hands publish mimics of joints their URDF lacks; PyBullet and the
+    other readers load them, so robocram does too, naming the culprit and its fix."""
     xml = CHAIN_URDF.replace('<mimic joint="master"', '<mimic joint="mastr"')
-    with pytest.raises(DescriptionError, match="joint 'mastr' .*did you mean 'master'"):
-        RobotModel.from_string(xml)
+    with pytest.warns(DanglingMimicWarning, match="mimics 'mastr'; did you mean 'master'"):
+        model = RobotModel.from_string(xml)
+    assert all(j.mimic is None or j.mimic.joint in model.joints for j in model.joints.values())
+    assert not any(j.mimic is not None and j.mimic.joint == "mastr" for j in model.joints.values())
 
 
 @pytest.mark.skipif(not (DATA / "hsrb.urdf").is_file(), reason="the HSR model is not written yet")

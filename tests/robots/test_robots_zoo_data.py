@@ -38,7 +38,7 @@ def test_a_kept_robot_has_its_licence_and_source_and_stays_small(name: str) -> N
 def test_no_stand_in_box_is_longer_than_the_robot(name: str) -> None:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        model = RobotModel.from_file(ZOO / name / f"{name}.urdf")
+        model = RobotModel.from_file(ZOO / name / f"{name}.urdf", missing_packages_as_boxes=True)
     origins = np.array([pose.position for pose in link_poses(model).values()])
     span = float((origins.max(axis=0) - origins.min(axis=0)).max())
     boxes = [

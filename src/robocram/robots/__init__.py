@@ -8,6 +8,7 @@ from robocram.robots.description import (
     PanTiltDescription,
     RobotDescription,
 )
+from robocram.robots.description_source import is_description_spec
 from robocram.robots.draft import DraftDescription, draft_description
 from robocram.robots.errors import (
     DescriptionCheckError,
@@ -71,6 +72,7 @@ __all__ = [
     "draft_description",
     "example_robot_data_folder",
     "install_description",
+    "is_description_spec",
     "joint_transform",
     "link_pose",
     "load_description",

@@ -331,7 +331,9 @@ class RobotModel:
                 stacklevel=2,
             )
         if parts.dangling_mimics:
-            listed = ", ".join(f"{j!r} (mimics {t!r})" for j, t in parts.dangling_mimics)
+            listed = ", ".join(
+                f"{j!r} (mimics {t!r}{_guess(t, parts.joints)})" for j, t in parts.dangling_mimics
+            )
             warnings.warn(
                 f"{source}: a <mimic> names a joint the URDF lacks, read as moving on its own: "
                 f"{listed}; name the joint it follows to couple them",
@@ -352,6 +354,11 @@ class RobotModel:
             parts.joints,
             Path(source).name if source != "<string>" else source,
         )
+
+
+def _guess(name: str, pool: Iterable[str]) -> str:
+    close = closest_names(name, pool)
+    return f"; did you mean {' or '.join(repr(c) for c in close)}?" if close else ""
 
 
 MODELS: ModelMemo[RobotModel] = ModelMemo()  # the process's: equal files share one model

@@ -52,15 +52,15 @@ def description() -> RobotDescription:
                 # why: the finger joints (prismatic, or leaves) right below the wrist; fingers and
                 #   hand links are found at load
                 gripper_joints=("joint_gripper_finger_right", "joint_gripper_finger_left"),
-                # why: stowed: within limits, the telescope retracted, the arm within 0.25 m of the
+                # why: stowed: within limits, the telescope retracted, the arm within 0.26 m of the
                 #   base's middle (the sampled pose: touching), 1 cm clear of its other links
                 #   (meshes)
                 parking={
-                    "joint_lift": 0.248,
+                    "joint_lift": 0.175,
                     "joint_arm_l3": 0.0,
-                    "joint_wrist_yaw": 1.985,
-                    "joint_wrist_pitch": -0.774,
-                    "joint_wrist_roll": 0.811,
+                    "joint_wrist_yaw": 2.192,
+                    "joint_wrist_pitch": -0.48,
+                    "joint_wrist_roll": 0.426,
                 },
             ),
         },
