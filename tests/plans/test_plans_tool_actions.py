@@ -3,12 +3,15 @@
 Pouring lands most particles in the bowl and a covered bowl fails naming its cover;
 wiping covers the region (cells marked under the sponge's own bounds, read from PyBullet,
 where it touches the table); cutting gives the slices asked for, of even widths; the
-spoon never comes nearer the bowl than it may; the wipe and the stir pass the audit.
+spoon never comes nearer the bowl than it may; every traced run passes the audit (the
+grains poured and the slices cut are stored with the world states and replayed).
 """
 
 from __future__ import annotations
 
+import json
 import math
+import sqlite3
 import sys
 from pathlib import Path
 
@@ -42,11 +45,24 @@ def _raw_position(world: World, name: str) -> tuple[float, float, float]:
     return (pos[0], pos[1], pos[2])
 
 
-def test_pouring_lands_the_particles_in_the_bowl() -> None:
+def _added_in_last_state(db_path: Path) -> tuple[set[str], set[str]]:
+    """Of the run's last stored world state, read with raw SQL: the bodies it stores with
+    their recipe (added mid-run) and the bodies it has."""
+    with sqlite3.connect(db_path) as con:
+        added, poses = con.execute(
+            "SELECT added, poses FROM world_states ORDER BY time DESC, id DESC LIMIT 1"
+        ).fetchone()
+    return set(json.loads(added or "{}")), set(json.loads(poses))
+
+
+def test_pouring_lands_the_particles_in_the_bowl(tmp_path: Path) -> None:
     scene = tool_scene("pr2", "cup")
     x, y, h = scene.spot
     add_tool_object(scene.world, "bowl-1", "bowl", Pose((x + 0.05, y - 0.1, h)))
-    with simulated_robot(scene.world, scene.robot):
+    with (
+        trace_to(tmp_path / "pour.db", world=scene.world),
+        simulated_robot(scene.world, scene.robot),
+    ):
         result = perform(an.action(type="pouring", source="cup-1", target="bowl-1", amount=60))
     assert isinstance(result, PouringResult)
     world = scene.world
@@ -61,6 +77,11 @@ def test_pouring_lands_the_particles_in_the_bowl() -> None:
     assert inside == result.landed and inside >= 0.9 * len(grains)
     assert result.spilled == len(grains) - inside
     assert result.fraction == 1.0
+    added, present = _added_in_last_state(tmp_path / "pour.db")
+    assert added == set(grains) and added <= present  # the grains, stored with their recipe
+    with TraceDatabase(tmp_path / "pour.db") as db:
+        report = audit_runs(db)  # replays the grains poured mid-run
+    assert report.clean, report.summary_lines()
 
 
 def test_pouring_into_a_covered_bowl_fails_naming_the_cover() -> None:
@@ -119,12 +140,12 @@ def test_wiping_covers_the_region_and_touches_only_the_table(tmp_path: Path) -> 
     assert not report.findings, report.summary_lines()
 
 
-def test_cutting_gives_the_slices_of_even_widths() -> None:
+def test_cutting_gives_the_slices_of_even_widths(tmp_path: Path) -> None:
     scene = tool_scene("pr2", "knife")
     x, y, h = scene.spot
     world = scene.world
     add_tool_object(world, "bread-1", "bread", Pose((x, y, h + 0.04)))
-    with simulated_robot(world, scene.robot):
+    with trace_to(tmp_path / "cut.db", world=world), simulated_robot(world, scene.robot):
         result = perform(an.action(type="cutting", object="bread-1", tool="knife-1", slices=4))
     assert isinstance(result, CuttingResult) and len(result.slices) == 4
     assert "bread-1" not in [o.name for o in world.objects()]
@@ -135,6 +156,11 @@ def test_cutting_gives_the_slices_of_even_widths() -> None:
         widths.append(high[1] - low[1])  # the loaf lies along map y
     assert max(widths) <= 1.2 * min(widths)
     assert sum(widths) == pytest.approx(0.24, abs=0.02)
+    added, present = _added_in_last_state(tmp_path / "cut.db")
+    assert added == set(result.slices) and "bread-1" not in present  # the loaf removed
+    with TraceDatabase(tmp_path / "cut.db") as db:
+        report = audit_runs(db)  # replays the loaf's removal and the slices' adding
+    assert report.clean, report.summary_lines()
 
 
 def test_mixing_keeps_the_spoon_clear_of_the_rim(tmp_path: Path) -> None:

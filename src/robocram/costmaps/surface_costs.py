@@ -4,6 +4,16 @@ Rays cast straight down over the grid find the support's top (or the container's
 bottom) cell by cell; cells where something else is hit first are taken. The free cells
 are then shrunk by the margin plus the placed object's footprint radius, so the object
 fits, and each cell's height is set so the object's bottom rests on the surface.
+
+Inside a container, cells open from above (the part of an opened drawer out of its
+cabinet) weigh :data:`OPEN_ABOVE` times as much as those under a top or a shelf: a hand
+puts things down from above there, and a spot under the counter has no stand. A container
+with no cell open above (a fridge's shelf) weighs all its cells alike.
+
+Inside a container the radius is the object's outline about its frame
+(:func:`~robocram.world.footprint.footprint_radius`: a bowl needs its own 8 cm circle, so
+two fit side by side in a drawer); on a surface it is still its bounds' half diagonal
+(11.5 cm for the bowl), which keeps every placing on counters and tables as it was.
 """
 
 from __future__ import annotations
@@ -16,6 +26,7 @@ from robocram.costmaps.cost_layer import CostLayer, LocationQuery
 from robocram.costmaps.grid import BoolGrid, erode
 from robocram.costmaps.out_of_the_way import out_of_the_way
 from robocram.world import World, WorldObject
+from robocram.world.footprint import footprint_radius
 from robocram.world.ray_hit import ray_hits
 
 SURFACE_MARGIN = 0.03  # [m] kept free between the placed object and the support's edges
@@ -23,14 +34,18 @@ INNER_DEPTH = 0.02  # [m] an inside bottom lies at least this far below a contai
 FLAT = 0.9  # a hit counts as a surface if its normal's z is at least this
 RESTING_GAP = 0.002  # [m] the object is put this far above the surface
 BOTTOM_RAYS = 7  # rays per side of the grid that finds a placed object's bottom
+OPEN_ABOVE = 20.0  # how much more a cell inside a container weighs when open from above
+ABOVE = 0.5  # [m] over a support's top, where rays down start (nothing stands that high on it)
 
 
-def _placed(query: LocationQuery) -> tuple[WorldObject | None, float]:
-    """The ``for_`` object and its footprint radius [m]."""
+def _placed(query: LocationQuery, inside: bool) -> tuple[WorldObject | None, float]:
+    """The ``for_`` object and its footprint radius [m] (its outline ``inside`` a container)."""
     value = query.designator.get("for_")
     if value is None:
         return None, 0.0
     obj = query.object(value, "for_")
+    if inside:
+        return obj, footprint_radius(query.world, obj)
     low, high = query.world.aabb(obj)
     return obj, math.hypot(high[0] - low[0], high[1] - low[1]) / 2
 
@@ -62,11 +77,11 @@ def _surface(query: LocationQuery, value: object, key: str, alive: BoolGrid) -> 
     world, inside = query.world, key == "in_"
     support, link = query.part(value, key)
     low, high = query.bounds(value, key)
-    placed, radius = _placed(query)
+    placed, radius = _placed(query, inside)
     x, y = query.centres()
     over = (x >= low[0]) & (x <= high[0]) & (y >= low[1]) & (y <= high[1])
     rows, cols = np.nonzero(alive & over)  # a ray straight down elsewhere cannot meet it
-    top = high[2] - 0.01 if inside else high[2] + 0.5
+    top = high[2] - 0.01 if inside else high[2] + ABOVE
     starts = np.column_stack([x[rows, cols], y[rows, cols], np.full(len(rows), top)])
     ends = starts.copy()
     ends[:, 2] = low[2] - 0.01
@@ -82,8 +97,26 @@ def _surface(query: LocationQuery, value: object, key: str, alive: BoolGrid) -> 
     free = np.zeros(query.grid.shape, dtype=bool)
     free[rows[ok], cols[ok]] = True
     heights[rows[ok], cols[ok]] = hits.positions[ok, 2] + lift + RESTING_GAP
-    fits = erode(free, (SURFACE_MARGIN + radius) / query.grid.resolution)
-    return CostLayer(fits.astype(float), heights=heights)
+    fits = erode(free, (SURFACE_MARGIN + radius) / query.grid.resolution).astype(float)
+    if inside and ok.any():
+        with out_of_the_way(world, [placed]):
+            open_ = _open_above(world, support, link, starts[ok, :2], high[2])
+        fits[rows[ok][open_], cols[ok][open_]] *= OPEN_ABOVE
+    return CostLayer(fits, heights=heights)
+
+
+def _open_above(
+    world: World, support: WorldObject, link: str | None, points: np.ndarray, top: float
+) -> np.ndarray:
+    """Per map point (x, y) inside a container whose top is at ``top`` [m]: whether a ray
+    down from :data:`ABOVE` over it meets the container's inside first (nothing covers it)."""
+    starts = np.column_stack([points, np.full(len(points), top + ABOVE)])
+    ends = np.column_stack([points, np.full(len(points), top - 1.0)])
+    hits = ray_hits(world, starts, ends)
+    found = hits.bodies == support.body_id
+    if link is not None:
+        found &= hits.links == support.link_index[link]
+    return np.asarray(found)
 
 
 def on_cost(query: LocationQuery, value: object, alive: BoolGrid) -> CostLayer:

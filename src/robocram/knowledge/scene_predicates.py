@@ -1,4 +1,5 @@
-"""Facts a scene provides about its environment: containers, surfaces, usual places, seats.
+"""Facts a scene provides about its environment: containers, surfaces, usual places and
+spots, seats.
 
 ``tools/make_kitchen_urdf.py`` writes them for robocram's kitchen (``kitchen.pl``);
 plans ask these and never name a link.
@@ -63,6 +64,17 @@ class UsualLocation:
 
 
 @dataclass(frozen=True)
+class UsualSpot:
+    """A spot, in a usual place's link frame, where a thing of a type is put back."""
+
+    type: str
+    environment: str
+    link: str
+    x: float = unit("m")
+    y: float = unit("m")
+
+
+@dataclass(frozen=True)
 class Seat:
     """Where person ``seat`` sits at a table, in the table's link frame, facing into it."""
 
@@ -95,6 +107,7 @@ USUAL_LOCATION = Predicate("usual_location", UsualLocation, _S, "where a type of
 SUPPORTING_SURFACE = Predicate(
     "supporting_surface", SupportingSurface, _S, "a surface objects can stand on"
 )
+USUAL_SPOT = Predicate("usual_spot", UsualSpot, _S, "a spot in a usual place for a type")
 SEAT = Predicate("seat", Seat, _S, "where a person sits at a table")
 
 SCENE_PREDICATES: tuple[Predicate[Any], ...] = (
@@ -103,6 +116,7 @@ SCENE_PREDICATES: tuple[Predicate[Any], ...] = (
     CONTAINER_OPENING,
     CONTAINER_FRONT,
     USUAL_LOCATION,
+    USUAL_SPOT,
     SUPPORTING_SURFACE,
     SEAT,
 )

@@ -21,7 +21,7 @@ from robocram.designators import a, all_, an
 from robocram.designators.errors import DesignatorError
 from robocram.execution import perform, sub_task
 from robocram.execution.failures import PlanFailure
-from robocram.knowledge.scene_predicates import SEAT, USUAL_LOCATION
+from robocram.knowledge.scene_predicates import SEAT, USUAL_LOCATION, USUAL_SPOT
 from robocram.knowledge.world_predicates import OBJECT_TYPE
 from robocram.logic import current_kb
 from robocram.plans.activity_failures import ActivityIncomplete
@@ -31,11 +31,14 @@ from robocram.plans.bringing import Visit, usual_place
 from robocram.plans.container_access import is_container
 from robocram.plans.deliver import deliver
 from robocram.plans.environment_links import environment_link_pose
-from robocram.plans.errors import PlanSetupError
+from robocram.plans.errors import DeliveryExhausted, PlanSetupError
 from robocram.plans.fetch import fetch
+from robocram.plans.location_poses import location_poses
 from robocram.plans.pick_object import Held
-from robocram.plans.robot_facts import current_robot
+from robocram.plans.robot_facts import current_robot, robot_arms
 from robocram.plans.search import LOOK_ABOVE, Place, search
+from robocram.plans.setting_table import SPOT_AREA, SPOT_RESOLUTION
+from robocram.plans.stands import map_pose
 from robocram.plans.table_arrangement import Table, table_with_seats
 from robocram.tf import Pose, PoseStamped, transform_pose
 from robocram.tf import quaternion as quat
@@ -44,6 +47,8 @@ TABLE_MARGIN = 0.25  # [m] past the farthest seat from the table's middle, still
 LOOKS = 2  # views of the table the robot takes
 MIDDLE_ABOVE = 0.3  # [m] the middle looked at is this far over the table top's frame
 SETTING_DEPTH = 0.25  # [m] a place setting's middle, in from the table's edge
+SPOT_TRIES = 2  # cells round a usual spot tried, one stand each, before anywhere in its place
+Point = tuple[float, float, float]  # [m] in map
 
 
 @dataclass
@@ -57,7 +62,7 @@ class TableClearing:
     log: AttemptLog = field(default_factory=AttemptLog)
 
 
-def _on_table(table: Table, point: tuple[float, float, float]) -> bool:
+def _on_table(table: Table, point: Point) -> bool:
     """Whether ``point`` (map) lies over the table: no farther from its middle than its
     farthest seat plus :data:`TABLE_MARGIN`, and above its top's frame."""
     middle = environment_link_pose(table.environment, table.link, "a table").position
@@ -67,7 +72,7 @@ def _on_table(table: Table, point: tuple[float, float, float]) -> bool:
     return off <= reach and middle[2] - 0.05 <= point[2] <= middle[2] + 0.5
 
 
-def look_targets(table: Table) -> list[tuple[float, float, float]]:
+def look_targets(table: Table) -> list[Point]:
     """Points (map) to look at to see what is on ``table``: over its middle (high enough
     to see past a milk carton there), then over each seat's place setting."""
     origin = environment_link_pose(table.environment, table.link, "a table")
@@ -80,11 +85,11 @@ def look_targets(table: Table) -> list[tuple[float, float, float]]:
     return points
 
 
-def things_on(table: Table) -> dict[str, tuple[str, tuple[float, float, float]]]:
+def things_on(table: Table) -> dict[str, tuple[str, Point]]:
     """What the robot sees on ``table``: name -> (type, map point), for every type the KB
     keeps somewhere, from up to :data:`LOOKS` views (a view that cannot be had is skipped)."""
     kinds = sorted({row.type for row in USUAL_LOCATION.answers(current_kb())})
-    found: dict[str, tuple[str, tuple[float, float, float]]] = {}
+    found: dict[str, tuple[str, Point]] = {}
     looks = 0
     for point in look_targets(table):
         with contextlib.suppress(PlanFailure, DesignatorError):
@@ -99,7 +104,7 @@ def things_on(table: Table) -> dict[str, tuple[str, tuple[float, float, float]]]
     return found
 
 
-def _seen_of(kind: str, table: Table) -> dict[str, tuple[str, tuple[float, float, float]]]:
+def _seen_of(kind: str, table: Table) -> dict[str, tuple[str, Point]]:
     try:
         seen = perform(a.motion(type="detecting", object=all_.objects(type=kind)))
     except PlanFailure:
@@ -112,17 +117,56 @@ def _seen_of(kind: str, table: Table) -> dict[str, tuple[str, tuple[float, float
     return found
 
 
-def _fetch_again(name: str, kind: str, point: tuple[float, float, float], log: AttemptLog) -> Held:
-    """Fetch ``name`` from where it was seen (``point``, map: fetching looks there again
-    from its stands); where it is gone from there, search for it and fetch it."""
+def _fetch_again(
+    name: str, kind: str, point: Point, log: AttemptLog, arm: str | None = None
+) -> Held:
+    """Fetch ``name`` (with ``arm``, or any) from where it was seen (``point``, map:
+    fetching looks there again from its stands); where it is gone from there, search for
+    it and fetch it."""
     remembered = an.object(type=kind, name=name, pose=PoseStamped("map", point))
     try:
-        return fetch(remembered, log=log)
+        return fetch(remembered, arm=arm, log=log)
     except PlanFailure:
-        return fetch(search(an.object(type=kind, name=name)), log=log)
+        return fetch(search(an.object(type=kind, name=name)), arm=arm, log=log)
 
 
-def _named(name: str) -> tuple[str, tuple[float, float, float]]:
+def _return_one(name: str, kind: str, point: Point, place: Place, done: TableClearing) -> None:
+    """Fetch ``name`` from the table and put it back in ``place``. A hand that holds it so
+    that no stand reaches its spot there (a carton past a fridge's open door, held from the
+    other side) puts it down again where it was, and the next hand takes it.
+
+    Raises:
+        PlanFailure: fetching failed, or the last hand could not put it back either.
+    """
+    arms = robot_arms(current_robot())
+    tried: list[str] = []
+    while True:
+        was = map_pose(name)
+        untried = [arm for arm in arms if arm not in tried]
+        held = _fetch_again(name, kind, point, done.log, untried[0] if tried else None)
+        tried.append(held.arm)
+        if len(tried) >= len(arms) or _reaches_back(held, place, kind):
+            _deliver_back(held, place, kind, done.log)
+            return
+        deliver(held, was, held.arm, log=done.log)  # from where it stands: the pick undone
+
+
+def _reaches_back(held: Held, place: Place, kind: str) -> bool:
+    """Whether some stand lets ``held.arm`` put the held thing at a free spot in ``place``
+    (a ``reachable_for`` location for the spot, as it is held now)."""
+    name = held.object_name
+    heading = map_pose(name).orientation
+    for spot in [*usual_spots(kind, place), None]:
+        with contextlib.suppress(DesignatorError, StopIteration):
+            where = next(location_poses(back_to(place, name, spot)))
+            target = PoseStamped.from_pose("map", Pose(where.position, heading))
+            reach = a.location(reachable_for=current_robot(), target=target, arm=held.arm)
+            next(location_poses(reach))
+            return True
+    return False
+
+
+def _named(name: str) -> tuple[str, Point]:
     """The type and map point of the thing ``name``, from the KB."""
     row = OBJECT_TYPE.first(current_kb(), object=name)
     if row is None:
@@ -130,16 +174,46 @@ def _named(name: str) -> tuple[str, tuple[float, float, float]]:
     return row.type, transform_pose(PoseStamped(name), "map").pose.position
 
 
-def back_to(place: Place, name: str) -> object:
-    """Where ``name`` goes back to: on its surface, or in its container."""
+def back_to(place: Place, name: str, spot: Point | None = None) -> object:
+    """Where ``name`` goes back to: on its surface, or in its container; ``at`` ``spot``
+    (map) if given."""
     where = (place.environment, place.link)
+    near = {"at": spot, "size": SPOT_AREA, "resolution": SPOT_RESOLUTION} if spot else {}
     if is_container(place.environment, place.link):
-        return a.location(in_=where, for_=name)
-    return a.location(on=where, for_=name)
+        return a.location(in_=where, for_=name, **near)
+    return a.location(on=where, for_=name, **near)
+
+
+def usual_spots(kind: str, place: Place) -> list[Point]:
+    """The map points of the KB's ``usual_spot/5`` of ``kind`` in ``place`` (its link as
+    it stands now: an opened drawer's spots have moved out with it)."""
+    rows = USUAL_SPOT.answers(
+        current_kb(), type=kind, environment=place.environment, link=place.link
+    )
+    frame = environment_link_pose(place.environment, place.link, "a usual place")
+    return [(frame * Pose((row.x, row.y, 0.0))).position for row in rows]
+
+
+def _deliver_back(held: Held, place: Place, kind: str, log: AttemptLog) -> None:
+    """Put ``held`` at the first usual spot of its kind in ``place`` that takes it (one
+    another thing took fails at once: no free cell), else anywhere in ``place``.
+
+    Raises:
+        DeliveryExhausted: not even anywhere in ``place``.
+    """
+    name = held.object_name
+    for spot in usual_spots(kind, place):
+        with contextlib.suppress(DeliveryExhausted):  # one stand per spot: then anywhere
+            deliver(
+                held, back_to(place, name, spot), held.arm, stand_retries=1,
+                place_retries=SPOT_TRIES, log=log, reach_stands=True,
+            )  # fmt: skip
+            return
+    deliver(held, back_to(place, name), held.arm, log=log, reach_stands=True)
 
 
 def _return_group(
-    place: Place, things: list[tuple[str, str, tuple[float, float, float]]], done: TableClearing
+    place: Place, things: list[tuple[str, str, Point]], done: TableClearing
 ) -> list[Exception]:
     visit = Visit(place)
     failures: list[Exception] = []
@@ -148,8 +222,7 @@ def _return_group(
         for name, kind, point in things:
             with sub_task(f"returning {name}"):
                 try:
-                    held = _fetch_again(name, kind, point, done.log)
-                    deliver(held, back_to(place, name), held.arm, log=done.log)
+                    _return_one(name, kind, point, place, done)
                     done.returned[name] = place
                 except PlanFailure as failure:
                     failures.append(failure)
@@ -173,7 +246,7 @@ def clear_table(
     chosen = table_with_seats(table)
     done = TableClearing(chosen)
     seen = things_on(chosen) if objects is None else {n: _named(n) for n in objects}
-    groups: dict[Place, list[tuple[str, str, tuple[float, float, float]]]] = {}
+    groups: dict[Place, list[tuple[str, str, Point]]] = {}
     failures: list[Exception] = []
     for name, (kind, point) in seen.items():
         place = usual_place(kind)

@@ -4,15 +4,21 @@ The target is a location designator (``a.location(on=..., for_=...)``) or a pose
 each placing spot (bounded by ``place_retries``) the robot tries stands that hold the
 object over the spot as the arm holds it now (:func:`placing_stands`): a stand where it
 would collide is skipped at once; a stand where placing fails gives the next one, at most
-``stand_retries`` per spot. When all fail, :class:`DeliveryExhausted` (an
-``ObjectUndeliverable``) carries every cause in order.
+``stand_retries`` per spot. With ``reach_stands`` the stands from which the arm reaches the
+spot by IK (a ``reachable_for`` location) come after those: a spot deep in a fridge is
+reached slanting past its open door, not with the arm as it holds the thing now. When all
+fail, :class:`DeliveryExhausted` (an ``ObjectUndeliverable``) carries every cause in order.
 """
 
 from __future__ import annotations
 
+import contextlib
+import itertools
+from collections.abc import Iterator
 from typing import Any
 
 from robocram.designators import ObjectDesignator, a
+from robocram.designators.errors import DesignatorError
 from robocram.execution import perform
 from robocram.execution.failures import (
     ManipulationLowLevelFailure,
@@ -31,6 +37,7 @@ from robocram.tf import Pose, PoseStamped
 
 STAND_RETRIES = 3  # stands per placing spot where placing is tried
 PLACE_RETRIES = 6  # placing spots tried (a spot in the middle of a table has no stand)
+REACH_STANDS = 6  # stands from the reachable_for costmap tried per spot, at most
 CARRY_CLEARANCE = 0.08  # [m] the held object's frame is carried this far over the spot
 
 
@@ -65,8 +72,29 @@ def _carry_above(held: Held, spot: Pose) -> None:
     )
 
 
+def _stands(held: Held, spot: Pose, arm: str | None, reach_stands: bool) -> Iterator[Pose]:
+    """The stands to put ``held`` down at ``spot`` from: those holding it over the spot as
+    the arm holds it now, then (``reach_stands``) the costmap's that reach it by IK."""
+    robot = current_robot()
+    yield from placing_stands(robot, held.object_name, spot)
+    if not reach_stands:
+        return
+    heading = map_pose(held.object_name).orientation
+    keys: dict[str, Any] = {"arm": arm} if arm is not None else {}
+    target = PoseStamped.from_pose("map", Pose(spot.position, heading))
+    with contextlib.suppress(DesignatorError):  # no stand reaches it: the spot fails
+        yield from itertools.islice(
+            location_poses(a.location(reachable_for=robot, target=target, **keys)), REACH_STANDS
+        )
+
+
 def _try_spot(
-    held: Held, spot: Pose, arm: str | None, stand_retries: int, log: AttemptLog
+    held: Held,
+    spot: Pose,
+    arm: str | None,
+    stand_retries: int,
+    log: AttemptLog,
+    reach_stands: bool = False,
 ) -> list[Exception]:
     """Try the stands of one spot; the failures met (empty: the object was placed)."""
     causes: list[Exception] = []
@@ -75,7 +103,7 @@ def _try_spot(
     except ManipulationLowLevelFailure as failure:  # carried low: some stands will collide
         causes.append(failure)
     tried = 0
-    for stand in placing_stands(current_robot(), held.object_name, spot):
+    for stand in _stands(held, spot, arm, reach_stands):
         try:
             navigate(stand)
         except NavigationPoseUnreachable as failure:  # a stand in the way: the next turn
@@ -103,10 +131,13 @@ def deliver(
     stand_retries: int = STAND_RETRIES,
     place_retries: int = PLACE_RETRIES,
     log: AttemptLog | None = None,
+    reach_stands: bool = False,
 ) -> Pose:
     """Place the held object at ``target`` (a location designator or a pose); the spot.
 
     ``object`` is what fetching returned (a :class:`Held`), or the held object's name.
+    ``reach_stands``: after the stands that hold it over a spot as the arm holds it now,
+    try those from which the arm reaches the spot (a spot inside a container).
 
     Raises:
         DeliveryExhausted: no spot within ``place_retries`` and no stand within
@@ -125,7 +156,7 @@ def deliver(
         spot = next_pose(spots, causes)
         if spot is None:
             break
-        failures = _try_spot(held, spot, arm, stand_retries, log)
+        failures = _try_spot(held, spot, arm, stand_retries, log, reach_stands)
         if not failures:
             return spot
         causes.extend(failures)

@@ -14,7 +14,7 @@ are tried in order, each with the whole path, from the same start.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -117,11 +117,14 @@ def _follow(
 
     A step the hand cannot follow is tried again in halves (:data:`STEP_HALVINGS` times):
     where the base drives along, the handle moves in proportion to the drive's time, and a
-    shorter step keeps the hand nearer its bounded contact on the handle."""
+    shorter step keeps the hand nearer its bounded contact on the handle. The steps after
+    one that needed halves start at its size (a door's arc that wants them keeps wanting
+    them), so each costs one try, not one failure per coarser size first."""
     hold = _Hold(part, joint, handle, grasp, pull)
     held = robot.world.joint_states(part)[joint]
+    halving = 0
     for value in path:
-        for halving in range(STEP_HALVINGS + 1):
+        while True:
             steps = 2**halving
             done = held
             for k in range(1, steps + 1):
@@ -134,10 +137,18 @@ def _follow(
                 break
             if done != held:
                 return done  # part of the way: the halves after it were out of reach
-        else:
-            return held
+            if halving == STEP_HALVINGS:
+                return held
+            halving += 1
         held = value
     return held
+
+
+def _straight_only(robot: ProjectedRobot) -> ProjectedRobot:
+    """``robot`` with motions that do not plan round obstacles (a blocked one fails at
+    once): letting go part of the way, a hand that cannot back off straight stays at the
+    handle, where the next roll takes it anyway."""
+    return replace(robot, motion=replace(robot.motion, plan=False))
 
 
 def _step(robot: ProjectedRobot, arm: str, hold: _Hold, held: float, value: float) -> bool:
@@ -212,10 +223,21 @@ def _opened(robot: ProjectedRobot, arm: str) -> bool:
     return True
 
 
+def rolls_for(robot: ProjectedRobot, arm: str, part: str, handle: str) -> list[float]:
+    """The grasp rolls to try on ``handle``: the one that last held it all the way first
+    (a drawer is closed with the roll that opened it), then the one that last held any
+    handle with ``arm`` (a kitchen's drawers have the same handles), then :data:`ROLLS`."""
+    known = (robot.held_rolls.get((part, handle)), robot.held_rolls.get(("", arm)))
+    return list(dict.fromkeys([*(r for r in known if r is not None), *ROLLS]))
+
+
 def move_part(
     robot: ProjectedRobot, arm: str, part: str, joint: str, handle: str, goal: float
 ) -> ArticulationResult:
     """Hold ``handle`` with ``arm`` and move ``joint`` of ``part`` to ``goal`` [m | rad].
+
+    A roll that moves the part only part of the way lets go there, and the next roll goes
+    on from where it is (a door too wide open for one grasp is finished with another).
 
     Raises:
         ProjectionError: ``goal`` is outside the joint's limits.
@@ -232,28 +254,29 @@ def move_part(
             f"[{limits.lower:.3f}, {limits.upper:.3f}]; ask for a value within them"
         )
     start = world.joint_states(part)[joint]
-    path = part_path(world, part, joint, handle, goal)
     axis = approach_axis(robot, arm)
     pull = pull_frame(world, part, joint, handle)
-    model = robot.description.model
-    robot_start = {  # mimic joints follow their masters when those are set back
-        j: v for j, v in world.joint_states(robot.name).items() if model.joints[j].mimic is None
-    }
-    base_start = robot.base_pose()
+    first = _RobotAt.now(robot)
     riders = resting_in(robot, part, moving_link(robot, part, joint))
     for name in riders:
         world.attach(name, part, moving_link(robot, part, joint))
+    moved: _Held | None = None  # the last roll that moved the part
     try:
-        for roll in ROLLS:
+        for roll in rolls_for(robot, arm, part, handle):
             checkpoint()
-            grasp = grasp_in_handle(axis, roll)
-            if _take_handle(robot, arm, part, handle, grasp, pull):
-                reached = _follow(robot, arm, part, joint, handle, grasp, path, pull)
-                if abs(reached - goal) <= 1e-9:
-                    _let_go(robot, arm, part, handle, grasp, pull)
-                    return ArticulationResult(joint, start, reached, roll, tuple(riders))
-            held = _Held(arm, part, joint, handle, grasp, pull)
-            _back_to_start(robot, held, start, base_start, robot_start)
+            held = _Held(arm, part, joint, handle, grasp_in_handle(axis, roll), pull)
+            here, now = _RobotAt.now(robot), world.joint_states(part)[joint]
+            reached = _try_roll(robot, held, goal)
+            if abs(reached - goal) <= 1e-9:
+                robot.held_rolls[(part, handle)] = robot.held_rolls[("", arm)] = roll
+                return ArticulationResult(joint, start, reached, roll, tuple(riders))
+            if abs(reached - now) > 1e-9:  # part of the way: let go, the next roll goes on
+                _let_go(_straight_only(robot), arm, part, handle, held.grasp, pull)
+                moved = held
+            else:
+                _back_to_start(robot, held, now, here.base, here.joints)
+        if moved is not None:
+            _undo(robot, moved, start, first)
     finally:
         for name in riders:
             world.detach(name)
@@ -263,6 +286,50 @@ def move_part(
         environment_part=joint,
         action="opening" if goal > start else "closing",
     )
+
+
+def _try_roll(robot: ProjectedRobot, held: _Held, goal: float) -> float:
+    """Take the handle with ``held``'s grasp and follow it towards ``goal``; the joint
+    value reached (let go of when it is the goal, still held otherwise)."""
+    world = robot.world
+    start = world.joint_states(held.part)[held.joint]
+    if not _take_handle(robot, held.arm, held.part, held.handle, held.grasp, held.pull):
+        return start
+    path = part_path(world, held.part, held.joint, held.handle, goal)
+    reached = _follow(
+        robot, held.arm, held.part, held.joint, held.handle, held.grasp, path, held.pull
+    )
+    if abs(reached - goal) <= 1e-9:
+        _let_go(robot, held.arm, held.part, held.handle, held.grasp, held.pull)
+    return reached
+
+
+@dataclass(frozen=True)
+class _RobotAt:
+    """Where the robot stood and how its joints were (mimic joints left out: they follow
+    their masters when those are set back)."""
+
+    base: Pose
+    joints: dict[str, float]
+
+    @classmethod
+    def now(cls, robot: ProjectedRobot) -> _RobotAt:
+        model = robot.description.model
+        joints = robot.world.joint_states(robot.name)
+        kept = {j: v for j, v in joints.items() if model.joints[j].mimic is None}
+        return cls(robot.base_pose(), kept)
+
+
+def _undo(robot: ProjectedRobot, moved: _Held, start: float, first: _RobotAt) -> None:
+    """After every roll failed: take the handle again with the last roll that moved the
+    part, take it back to ``start`` and the robot to ``first`` (set, where that is blocked)."""
+    world = robot.world
+    if _take_handle(robot, moved.arm, moved.part, moved.handle, moved.grasp, moved.pull):
+        _back_to_start(robot, moved, start, first.base, first.joints)
+        return
+    world.set_joint_states(moved.part, {moved.joint: start})
+    place_base(robot, first.base)
+    world.set_joint_states(robot.name, first.joints)
 
 
 @dataclass(frozen=True)
@@ -344,8 +411,8 @@ def _let_go(
                 robot, arm, back, HOLD_MODE, move_base=True, max_restarts=LET_GO_RESTARTS,
                 touching=f"{part}/{handle}",
             )  # fmt: skip
-        except (ManipulationPoseUnreachable, ManipulationGoalNotReached):
-            continue
+        except (ManipulationPoseUnreachable, ManipulationGoalNotReached, NavigationLowLevelFailure):
+            continue  # a door wide open can leave the base no room to back off either
         if not opened:
             _opened(robot, arm)
         return

@@ -32,6 +32,10 @@ class ProjectedRobot:
     """Other objects' joints the robot's next trajectories move along (a drawer its hand
     pulls: :mod:`~robocram.projection.articulation` sets them per step): reported with
     each trajectory, so a replay moves them too."""
+    held_rolls: dict[tuple[str, str], float] = field(default_factory=dict, compare=False)
+    """The grasp roll [rad] that last held each ``(part, handle)`` all the way, and
+    ``("", arm)`` any handle with that arm: a drawer opened with one roll is closed with
+    it first (:mod:`~robocram.projection.articulation`)."""
 
     @classmethod
     def of(

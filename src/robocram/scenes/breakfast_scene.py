@@ -6,7 +6,9 @@ the cutlery unit's top drawer, the knife in the one below, the milk on the fridg
 shelf, the cereal on the east counter, the bread and the sponge on the north counter.
 Each item type's usual place is a ``usual_location/3`` fact (group ``kitchen_semantics``),
 so a plan reads it and a user changes it with one fact (``kb.consult(..., group=...)``).
-The seats at the table are facts too (:data:`SEATS`, group ``kitchen_seats``).
+The seats at the table are facts too (:data:`SEATS`, group ``kitchen_seats``), and so are
+the spots in those places where each type is put back (``usual_spot/5``, group
+``kitchen_spots``: clearing puts a bowl back where bowls are kept, not anywhere in the drawer).
 
 A separate builder, so the plain kitchen scene and every result on it stay as they were.
 """
@@ -61,6 +63,15 @@ def seat_facts(environment: str, seats: Iterable[tuple[str, int, float, float, f
     )
 
 
+def usual_spot_facts(environment: str, places: Iterable[ItemPlace]) -> str:
+    """``usual_spot/5`` facts (Prolog text): each place's spot, in its link's frame [m]."""
+    env = name_atom(environment)
+    return "".join(
+        f"usual_spot({name_atom(p.kind)}, {env}, {name_atom(p.link)}, {p.xy[0]!r}, {p.xy[1]!r}).\n"
+        for p in places
+    )
+
+
 @cache
 def breakfast_description() -> EnvironmentDescription:
     """The kitchen's description with the breakfast items' usual places."""
@@ -76,8 +87,10 @@ def breakfast_scene(
     """The kitchen with the breakfast items in ``places`` (default: where they are kept),
     ``robot`` (arms parked) in the middle, and the table's seats as facts.
 
-    Items moved from their usual place (a seeded variant) keep the usual place's fact.
+    Items moved from their usual place (a seeded variant) keep the usual place's and
+    spots' facts (:data:`BREAKFAST_PLACES`).
     """
     scene = environment_scene(breakfast_description(), robot, places, ROBOT_START, world)
     scene.world.kb.consult(seat_facts(KITCHEN, SEATS), group=f"{KITCHEN}_seats")
+    scene.world.kb.consult(usual_spot_facts(KITCHEN, BREAKFAST_PLACES), group=f"{KITCHEN}_spots")
     return scene

@@ -56,7 +56,8 @@ def replay_frames(
     """
     if not period > 0.0:
         raise TraceError(f"the replay sampling period must be positive, got {period} s")
-    start = require_run(db, run).start
+    row = require_run(db, run)
+    start = row.start
     trajectories = run_trajectories(db, run, skip_damaged=True)  # the rest still replays
     states = world_state_times(db, run)
     clock = ReplayClock(
@@ -74,7 +75,7 @@ def replay_frames(
         else:
             with db.read() as session:
                 state = load_world_state(session, what)
-            state.apply(world)
+            state.apply(world, row.scene)
             yield ReplayFrame(clock.at(wall), wall, path, state, None)
         last_wall = wall
 

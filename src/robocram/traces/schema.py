@@ -28,12 +28,14 @@ from sqlalchemy import (
 from sqlalchemy.orm import DeclarativeBase, Mapped, mapped_column
 
 # 2: world state rows, task ids per run; 3: costmaps; 4: trajectories; 5: URDFs;
-# 6: trajectories' allowed contacts; 7: the joints of other objects trajectories carry
-SCHEMA_VERSION = 7
+# 6: trajectories' allowed contacts; 7: the joints of other objects trajectories carry;
+# 8: the bodies a run added after its start (particles, slices), with each world state
+SCHEMA_VERSION = 8
 ADDED_TABLES = {4: ("trajectories",), 5: ("robot_models",)}  # version -> tables it added
 ADDED_COLUMNS = {  # version -> (table, column)
     6: (("trajectories", "allowed_contacts"),),
     7: (("trajectories", "carried"),),
+    8: (("world_states", "added"),),
 }
 
 
@@ -106,7 +108,9 @@ class WorldStateRow(Base):
     """The world at one moment of a run: after a motion, or at the run's start.
 
     Stored compactly, one row per state: poses, joints and attachments as JSON text
-    (Python's float text round-trips exactly, so a restored state is bit-identical).
+    (Python's float text round-trips exactly, so a restored state is bit-identical). A
+    body the run's scene lacks (added mid-run) is stored with its recipe; a body of the
+    scene missing from ``poses`` was removed.
     """
 
     __tablename__ = "world_states"
@@ -118,6 +122,9 @@ class WorldStateRow(Base):
     poses: Mapped[str] = mapped_column(Text)  # {object: [x, y, z, qx, qy, qz, qw]} in map
     joints: Mapped[str] = mapped_column(Text)  # {object: {joint: [rad] or [m]}}
     attachments: Mapped[str] = mapped_column(Text)  # [[object, robot, link, pose], ...]
+    # JSON {object: body recipe} of the bodies not in the run's scene (added since it
+    # started: poured particles, cut slices); NULL (none, or a file before version 8)
+    added: Mapped[str | None] = mapped_column(Text, nullable=True)
 
     __table_args__ = (Index("ix_world_states_run_time", "run_id", "time"),)
 

@@ -76,6 +76,7 @@ class RunBuffer:
     started: int = 0  # tasks started so far: the next one's order
     executed: int = 0  # trajectories reported so far: the next one's sequence number
     ended: tuple[str, float | None] = ("running", None)  # (status, end) of the top level
+    scene: frozenset[str] = frozenset()  # the bodies of its scene: others are kept as added
 
     def key(self, order: int) -> int:
         """The database id of this run's ``order``-th task (the run must have been written)."""

@@ -29,7 +29,7 @@ from robocram.traces.database import TraceDatabase
 from robocram.traces.json_values import dumps
 from robocram.traces.robot_model_record import model_row
 from robocram.traces.trace_buffer import Pending, RunBuffer, TaskEntry, TrajectoryEntry, write
-from robocram.traces.world_record import StoredWorldState, scene_of
+from robocram.traces.world_record import StoredWorldState, scene_names, scene_of
 from robocram.world import World
 
 TRACE_ENV = "ROBOCRAM_TRACE"  # environment option: trace top levels to this database file
@@ -76,10 +76,11 @@ class Tracer(TaskListener):
     def _new_run(self, task: Task) -> RunBuffer:
         scene = scene_of(self.world) if self.world is not None else None
         row = {"name": task.name, "status": task.status.value, "start": task.start_time}
-        run = RunBuffer({**row, "pid": os.getpid(), "scene": scene})
+        names = scene_names(scene) if scene is not None else frozenset()
+        run = RunBuffer({**row, "pid": os.getpid(), "scene": scene}, scene=names)
         self._pending.runs.append(run)
         if self.world is not None:
-            state = StoredWorldState.capture(self.world, task.start_time or 0.0)
+            state = StoredWorldState.capture(self.world, task.start_time or 0.0, names)
             self._pending.states.append((None, run, state))
             self._keep_models(self.world)
         return run
@@ -107,7 +108,7 @@ class Tracer(TaskListener):
             return
         state = None
         if isinstance(designator, MotionDesignator) and self.world is not None:
-            state = StoredWorldState.capture(self.world, task.end_time or 0.0)
+            state = StoredWorldState.capture(self.world, task.end_time or 0.0, entry.run.scene)
         snap = TaskSnapshot.of(task)
         properties = [] if designator is None else _properties(designator)
         top = entry.parent is None

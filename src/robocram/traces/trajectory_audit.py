@@ -83,7 +83,7 @@ def audit_run(
         raise NoSceneStored(run)
     trajectories = run_trajectories(db, run)
     with build_scene(row.scene, robots=robots) as world:
-        audit = _RunAudit(db, run, world, bounds)
+        audit = _RunAudit(db, run, world, bounds, row.scene)
         for event in _events(db, run, trajectories):
             if isinstance(event, StoredTrajectory):
                 audit.trajectory(event)
@@ -119,6 +119,7 @@ class _RunAudit:
     run: int
     world: World
     bounds: AuditBounds
+    scene: str  # the run's scene (JSON): a body it removed and a later state has again
 
     def __post_init__(self) -> None:
         self.findings: list[AuditFinding] = []
@@ -137,7 +138,7 @@ class _RunAudit:
         """Apply a stored state; jumps to it are findings, and it is checked if any."""
         with self.db.read() as session:
             state = load_world_state(session, state_id)
-        state.apply(self.world)
+        state.apply(self.world, self.scene)
         place = FindingPlace(self.run, None, path, time)
         for robot, watch in self.watches.items():
             jumps = list(watch.state(state.joints.get(robot, {}), state.poses[robot], place))

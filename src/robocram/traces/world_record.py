@@ -3,14 +3,16 @@
 A :class:`StoredWorldState` is what a motion leaves behind: every object's root pose, the
 joint positions of articulated bodies and the attachments. A scene is the list of body
 recipes (robots by description name and URDF digest, shapes, meshes, URDFs) from which a
-replay rebuilds the world in a fresh physics client.
+replay rebuilds the world in a fresh physics client. Bodies a run adds after its start
+(a pour's particles, a cut loaf's slices) are kept with each state as recipes too, and a
+body of the scene a state lacks was removed: applying the state adds and removes them.
 """
 
 from __future__ import annotations
 
 import json
-from collections.abc import Mapping
-from dataclasses import dataclass
+from collections.abc import Collection, Mapping
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -33,25 +35,43 @@ class StoredWorldState:
     poses: dict[str, Pose]
     joints: dict[str, dict[str, float]]  # object -> joint -> [rad] or [m]
     attachments: tuple[Attachment, ...]
+    added: dict[str, dict[str, Any]] = field(default_factory=dict)  # name -> body recipe
 
     @classmethod
-    def capture(cls, world: World, time: float) -> StoredWorldState:
-        """Read the state of ``world`` now; ``time`` [s since the epoch] stamps it."""
+    def capture(
+        cls, world: World, time: float, scene: Collection[str] | None = None
+    ) -> StoredWorldState:
+        """Read the state of ``world`` now; ``time`` [s since the epoch] stamps it.
+
+        ``scene``: the names of the run's scene; the recipe of every other body is kept
+        (None: none kept, the world is taken to hold the scene's bodies only).
+        """
         objects = world.objects()
         attached = (world.attached_to(obj) for obj in objects)
+        added = (
+            {}
+            if scene is None
+            else {o.name: body_recipe(o) for o in objects if o.name not in scene}
+        )
         return cls(
             time=time,
             sim_time=world.time,
             poses={obj.name: world.pose(obj) for obj in objects},
             joints={obj.name: js for obj in objects if (js := world.joint_states(obj))},
             attachments=tuple(a for a in attached if a is not None),
+            added=added,
         )
 
-    def apply(self, world: World) -> None:
-        """Put ``world`` (holding the same objects) into this state."""
-        missing = sorted(set(self.poses) - {obj.name for obj in world.objects()})
-        if missing:
-            raise TraceError(f"the world has no objects {missing}; replay into the run's scene")
+    def apply(self, world: World, scene: str | None = None) -> None:
+        """Put ``world`` (built from the run's scene) into this state: the bodies the state
+        adds are made from their recipes, those it lacks are removed, and ``scene`` (the
+        run's scene, JSON) brings back a body of it removed earlier (a replay going back).
+
+        Raises:
+            TraceError: the state names a body neither the world, its recipes nor
+                ``scene`` has (apply it to the world of the run's scene).
+        """
+        self._add_and_remove(world, scene)
         for obj in world.objects():
             if world.attached_to(obj) is not None:
                 world.detach(obj)
@@ -61,6 +81,20 @@ class StoredWorldState:
             _set_joints(world, name, joints)
         for att in self.attachments:
             world.attach(att.obj, att.robot, att.link)
+
+    def _add_and_remove(self, world: World, scene: str | None) -> None:
+        present = {obj.name for obj in world.objects()}
+        recipes = dict(self.added)
+        if scene is not None:
+            recipes |= {r["name"]: r for r in json.loads(scene) if r["name"] not in recipes}
+        missing = sorted(set(self.poses) - present - set(recipes))
+        if missing:
+            raise TraceError(f"the world has no objects {missing}; replay into the run's scene")
+        for name in sorted(set(self.poses) - present):
+            add_body(world, recipes[name])
+        for obj in world.objects():
+            if obj.name not in self.poses:  # removed by the run (a loaf cut into slices)
+                world.remove(obj)
 
 
 def _set_joints(world: World, name: str, joints: dict[str, float]) -> None:
@@ -86,6 +120,7 @@ def state_row(run_id: int, task_id: int | None, state: StoredWorldState) -> dict
         "poses": json.dumps({n: _pose_list(p) for n, p in state.poses.items()}),
         "joints": json.dumps(state.joints),
         "attachments": json.dumps(attachments),
+        "added": json.dumps(state.added) if state.added else None,
     }
 
 
@@ -99,6 +134,7 @@ def load_world_state(session: Session, state_id: int) -> StoredWorldState:
         poses={n: _pose_of(p) for n, p in json.loads(row.poses).items()},
         joints=json.loads(row.joints),
         attachments=tuple(Attachment(o, r, link, _pose_of(p)) for o, r, link, p in attachments),
+        added=json.loads(row.added) if row.added else {},
     )
 
 
@@ -113,10 +149,17 @@ def _pose_of(values: list[float]) -> Pose:
 
 def scene_of(world: World) -> str:
     """The recipes of the world's bodies as JSON text, in insertion order."""
-    return json.dumps([_body_recipe(obj) for obj in world.objects()])
+    return json.dumps([body_recipe(obj) for obj in world.objects()])
 
 
-def _body_recipe(obj: Any) -> dict[str, Any]:
+def scene_names(scene: str) -> frozenset[str]:
+    """The names of the bodies of a stored scene (JSON from :func:`scene_of`)."""
+    return frozenset(recipe["name"] for recipe in json.loads(scene))
+
+
+def body_recipe(obj: Any) -> dict[str, Any]:
+    """What rebuilds ``obj`` in another world: its name, type and robot or shape, mesh or
+    URDF (JSON-ready)."""
     recipe: dict[str, Any] = {"name": obj.name, "type": obj.type}
     spec = obj.spec
     if isinstance(obj, RobotObject):
@@ -150,23 +193,30 @@ def build_scene(
     """
     world = world if world is not None else World()
     for recipe in json.loads(scene):
-        name, kind = recipe["name"], recipe["type"]
-        if "robot" in recipe:
-            _add_robot(world, recipe, dict(robots or {}))
-        elif "shape" in recipe:
-            s = recipe["shape"]
-            spec = ShapeSpec(s["shape"], tuple(s["size"]), s["mass"], tuple(s["color"]))
-            world.add_object(name, kind, spec)
-        elif "mesh" in recipe:
-            m = recipe["mesh"]
-            world.add_object(
-                name, kind, MeshSpec(Path(m["path"]), m["scale"], m["mass"], tuple(m["color"]))
-            )
-        elif "urdf" in recipe:
-            u = recipe["urdf"]
-            urdf = UrdfSpec(Path(u["path"]), u["fixed_base"], u["scale"], u["mass"])
-            world.add_object(name, kind, urdf)
+        add_body(world, recipe, robots)
     return world
+
+
+def add_body(
+    world: World, recipe: Mapping[str, Any], robots: Mapping[str, str] | None = None
+) -> None:
+    """Add the body of ``recipe`` (from :func:`body_recipe`) to ``world``."""
+    name, kind = recipe["name"], recipe["type"]
+    if "robot" in recipe:
+        _add_robot(world, recipe, dict(robots or {}))
+    elif "shape" in recipe:
+        s = recipe["shape"]
+        spec = ShapeSpec(s["shape"], tuple(s["size"]), s["mass"], tuple(s["color"]))
+        world.add_object(name, kind, spec)
+    elif "mesh" in recipe:
+        m = recipe["mesh"]
+        world.add_object(
+            name, kind, MeshSpec(Path(m["path"]), m["scale"], m["mass"], tuple(m["color"]))
+        )
+    elif "urdf" in recipe:
+        u = recipe["urdf"]
+        urdf = UrdfSpec(Path(u["path"]), u["fixed_base"], u["scale"], u["mass"])
+        world.add_object(name, kind, urdf)
 
 
 def _add_robot(world: World, recipe: Mapping[str, object], robots: dict[str, str]) -> None:
