@@ -26,10 +26,6 @@ ELSEWHERE = {  # page -> the test that runs its blocks
     "new_robot.md": "tests/test_new_robot_doc.py",
 }
 PYCRAM = ROOT / "tests" / "data" / "pycram"
-PENDING = {  # page -> why its blocks do not run yet (issue 38's second round mends them)
-    "activities.md": "clearing the whole table is not done: the second bowl finds no room",
-    "tool_actions.md": "the block performs an action outside a top level (NotInTopLevel)",
-}
 
 
 def runnable_blocks(text: str) -> list[str]:
@@ -64,15 +60,7 @@ def test_every_page_with_code_is_run_here_or_elsewhere() -> None:
         assert (ROOT / test).is_file(), page
 
 
-@pytest.mark.parametrize(
-    "page",
-    [
-        pytest.param(p, marks=pytest.mark.xfail(strict=True, reason=PENDING[p]))
-        if p in PENDING
-        else p
-        for p in _pages()
-    ],
-)
+@pytest.mark.parametrize("page", _pages())
 def test_the_blocks_of_a_page_run_as_written(
     page: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
