@@ -2,7 +2,8 @@
 
 Run: ``.venv/bin/python benchmarks/activity_bench.py [variants] [robots...]`` (defaults 5
 and the PR2, the HSR and Boxy). A variant moves every breakfast item up to
-:data:`JITTER` from where it is kept (seeded), in its drawer, shelf or counter. Per robot
+:data:`JITTER` from where it is kept (seeded), deeper into or out of its drawer, shelf or
+counter (along its link's x: things kept side by side stay apart). Per robot
 it prints how often setting the table succeeded (every thing at its seat) and how often
 clearing a set table did (every thing back), and the wall time of each activity: cold is a fresh
 scene's first activity (the scene built before the clock starts), warm a second breakfast
@@ -30,13 +31,10 @@ ROBOTS = ("pr2", "hsrb", "boxy")
 
 
 def variant(seed: int) -> list[ItemPlace]:
-    """The breakfast items, each moved up to :data:`JITTER` from its spot (seeded)."""
+    """The breakfast items, each moved up to :data:`JITTER` along its link's x (seeded)."""
     rng = random.Random(seed)
     return [
-        replace(
-            p, xy=(p.xy[0] + rng.uniform(-JITTER, JITTER), p.xy[1] + rng.uniform(-JITTER, JITTER))
-        )
-        for p in BREAKFAST_PLACES
+        replace(p, xy=(p.xy[0] + rng.uniform(-JITTER, JITTER), p.xy[1])) for p in BREAKFAST_PLACES
     ]
 
 
