@@ -16,6 +16,7 @@ from pathlib import Path
 
 import pybullet
 
+from robocram.activity_demo import set_table_picture
 from robocram.designators import an
 from robocram.plans import perform
 from robocram.plans.table_arrangement import Setting
@@ -50,3 +51,5 @@ def test_a_traced_spoon_setting_and_clearing_is_clean(tmp_path: Path) -> None:
         report = audit_runs(db)
     assert report.trajectories > 100  # the drawer's steps, the arm's and base's motions
     assert report.clean, report.summary_lines()
+    picture = set_table_picture(db_path, report.runs[0], tmp_path / "set.png")
+    assert picture is not None and picture.stat().st_size > 4_000  # rendered from the trace

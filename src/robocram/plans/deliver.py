@@ -80,7 +80,7 @@ def _stands(held: Held, spot: Pose, arm: str | None, reach_stands: bool) -> Iter
     if not reach_stands:
         return
     heading = map_pose(held.object_name).orientation
-    keys: dict[str, Any] = {"arm": arm} if arm is not None else {}
+    keys = {"arm": arm} if arm is not None else {}
     target = PoseStamped.from_pose("map", Pose(spot.position, heading))
     with contextlib.suppress(DesignatorError):  # no stand reaches it: the spot fails
         yield from itertools.islice(
