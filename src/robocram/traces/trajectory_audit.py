@@ -42,7 +42,7 @@ from robocram.traces.run_replay import robot_in, set_robot_joints
 from robocram.traces.teleport_audit import TeleportWatch
 from robocram.traces.trajectory_record import StoredTrajectory, run_trajectories
 from robocram.traces.world_record import build_scene, load_world_state
-from robocram.world import RobotObject, World
+from robocram.world import RawDistances, RobotObject, World
 
 RESTING = 0.005  # [m] a body this near a link a trajectory carries rides with it
 
@@ -100,18 +100,20 @@ def audit_run(
 def riding(world: World, carried: tuple[CarriedJoint, ...]) -> Iterator[None]:
     """Within the block, what rests on a link a carried joint moves rides with it (spoons
     in a drawer the hand closes), as projection attaches them (``articulation.resting_in``):
-    free bodies within :data:`RESTING` of the link, held by nothing, at the start."""
+    free bodies within :data:`RESTING` of the link, held by nothing, at the start, by
+    PyBullet's raw closest points."""
     riders: list[str] = []
+    raw = RawDistances(world)
     for joint in carried:
         body = world.object(joint.obj)
         index = body.joint_index[joint.joint]
         link = next(name for name, i in body.link_index.items() if i == index)
         for obj in world.objects():
-            if obj.is_static or obj.name == joint.obj or world.attached_to(obj) is not None:
+            if obj.is_static or obj.name == joint.obj or isinstance(obj, RobotObject):
                 continue
-            if not isinstance(obj, RobotObject) and world.contact_points(
-                obj, body, link_b=link, distance=RESTING
-            ):
+            parts = raw.collision_links(obj)
+            near = (raw.closest(obj, part, body, link, RESTING) for part in parts)
+            if world.attached_to(obj) is None and any(gap is not None for gap in near):
                 world.attach(obj, body, link)
                 riders.append(obj.name)
     try:
