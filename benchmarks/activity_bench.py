@@ -1,8 +1,11 @@
 """Breakfast for two, then clearing, over seeded variants per robot: success and wall time.
 
 Run: ``.venv/bin/python benchmarks/activity_bench.py [variants] [robots...]`` (defaults 5
-and the PR2, the HSR and Boxy). A variant moves every breakfast item up to
-:data:`JITTER` from where it is kept (seeded), in its drawer, shelf or counter. Per robot
+and the PR2, the HSR and Boxy; a robot may be a description file, e.g. the drafted
+``tests/data/fetch/fetch.py`` and ``tests/data/stretch/stretch.py``). A variant moves
+every breakfast item up to :data:`JITTER` from where it is kept (seeded), deeper into or
+out of its drawer, shelf or counter (along its link's x: things kept side by side stay
+apart). Per robot
 it prints how often setting the table succeeded (every thing at its seat) and how often
 clearing a set table did (every thing back), and the wall time of each activity: cold is a fresh
 scene's first activity (the scene built before the clock starts), warm a second breakfast
@@ -17,6 +20,7 @@ import statistics
 import sys
 import time
 from dataclasses import replace
+from pathlib import Path
 
 from robocram.designators import an
 from robocram.execution.failures import PlanFailure
@@ -30,13 +34,10 @@ ROBOTS = ("pr2", "hsrb", "boxy")
 
 
 def variant(seed: int) -> list[ItemPlace]:
-    """The breakfast items, each moved up to :data:`JITTER` from its spot (seeded)."""
+    """The breakfast items, each moved up to :data:`JITTER` along its link's x (seeded)."""
     rng = random.Random(seed)
     return [
-        replace(
-            p, xy=(p.xy[0] + rng.uniform(-JITTER, JITTER), p.xy[1] + rng.uniform(-JITTER, JITTER))
-        )
-        for p in BREAKFAST_PLACES
+        replace(p, xy=(p.xy[0] + rng.uniform(-JITTER, JITTER), p.xy[1])) for p in BREAKFAST_PLACES
     ]
 
 
@@ -68,7 +69,7 @@ def run_robot(robot: str, variants: int) -> None:
             warm.append(_timed(scene, "setting-table", people=2)[1])
         scene.world.close()
     print(
-        f"{robot:6s} setting {set_ok}/{variants} ({100 * set_ok / variants:.0f} %), "
+        f"{Path(robot).stem:6s} setting {set_ok}/{variants} ({100 * set_ok / variants:.0f} %), "
         f"clearing {clear_ok}/{variants} ({100 * clear_ok / variants:.0f} %); wall [s]: "
         f"breakfast cold median {statistics.median(cold):.1f} (max {max(cold):.1f}), "
         f"warm {warm[0]:.1f}; clearing median {statistics.median(clearing):.1f}"

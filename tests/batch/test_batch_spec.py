@@ -77,7 +77,7 @@ def test_a_plan_next_to_the_spec_is_imported(tmp_path: Path) -> None:
         ({"variants": 0}, "variants=0: give a count"),
         ({"variants": "many"}, "variants='many'"),
         ({"variants": 2, "seed": -3}, "seed=-3"),
-        ({"variants": 2, "plan": "fly"}, "plan='fly': use pick_up, transport or module:function"),
+        ({"variants": 2, "plan": "fly"}, "plan=.fly.: use breakfast, pick_up, transport or module"),
         ({"variants": 2, "scene": "nowhere:scene"}, "scene='nowhere:scene': cannot import"),
         ({"variants": 2, "workers": 0}, "workers=0: give a positive integer"),
         ({"variants": 2, "place": {"mug-1": {"x": [1, 0]}}}, r"place\['mug-1'\].x=\[1, 0\]"),

@@ -128,6 +128,7 @@ def test_breakfast_for_two_puts_each_thing_at_its_seat(breakfast: Breakfast) -> 
 def test_every_container_opened_is_closed_again(breakfast: Breakfast) -> None:
     assert set(breakfast.setting.opened) == {
         "drawer_unit_drawer_3",
+        "cutlery_unit_drawer_3",
         "cutlery_unit_drawer_4",
         "fridge_body",
     }

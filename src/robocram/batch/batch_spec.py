@@ -21,6 +21,7 @@ from typing import Any
 
 import yaml
 
+from robocram.batch.breakfast_activity import breakfast
 from robocram.batch.drawn_variants import Axis, DrawnVariants
 from robocram.batch.errors import BadSpec, BatchError
 from robocram.batch.kitchen_transport import transport_item
@@ -30,6 +31,7 @@ from robocram.plans import pick_up
 from robocram.robots import DescriptionError
 from robocram.robots.description_source import description_from
 from robocram.scenes import kitchen_scene, tabletop_scene
+from robocram.scenes.breakfast_scene import breakfast_scene
 
 SPEC_KEYS = (
     "scene", "robot", "plan", "seed", "variants", "place", "look_at", "parameters", "jitter",
@@ -38,8 +40,10 @@ SPEC_KEYS = (
 MAX_VARIANTS = 100_000  # a spec asks for more with `max_variants:` (docs/batch.md)
 PLACE_KEYS = ("frame", "x", "y", "z", "yaw")
 FRAMES = ("scene", "map")  # shift from the scene's pose, or an absolute pose
-SCENES: dict[str, SceneFactory] = {"tabletop": tabletop_scene, "kitchen": kitchen_scene}
-PLANS: dict[str, Plan] = {"pick_up": pick_up, "transport": transport_item}
+SCENES: dict[str, SceneFactory] = {
+    "tabletop": tabletop_scene, "kitchen": kitchen_scene, "breakfast": breakfast_scene,
+}  # fmt: skip
+PLANS: dict[str, Plan] = {"pick_up": pick_up, "transport": transport_item, "breakfast": breakfast}
 
 
 @dataclass(frozen=True)

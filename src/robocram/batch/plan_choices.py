@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from robocram.batch.breakfast_activity import BreakfastOutcome
 from robocram.batch.result import Pose7
 from robocram.plans import PickResult
 from robocram.plans.transport import TransportResult
@@ -49,6 +50,8 @@ def choices_of(result: object) -> Choices:
             held.grasp_pose.frame_id,
             (*stands, ("placed at", pose7(result.spot))),
         )
+    if isinstance(result, BreakfastOutcome):
+        return Choices(locations=tuple((f"placed {name}", pose) for name, pose in result.placed))
     if isinstance(result, PickResult):
         return Choices(
             result.arm,

@@ -12,9 +12,11 @@ from __future__ import annotations
 
 import contextlib
 import math
+from collections.abc import Collection
 from dataclasses import dataclass, field
 
-from robocram.designators import ObjectDesignator, an
+from robocram.designators import ObjectDesignator, a, all_, an
+from robocram.execution import perform
 from robocram.execution.failures import PlanFailure
 from robocram.knowledge.scene_predicates import USUAL_LOCATION
 from robocram.logic import current_kb
@@ -97,22 +99,29 @@ def inside_point(opened: OpenedContainer) -> PoseStamped:
     return PoseStamped("map", (x - back * math.cos(yaw), y - back * math.sin(yaw), z))
 
 
-def _look_into(opened: OpenedContainer, wanted: ObjectDesignator) -> ObjectDesignator | None:
-    """Stand where ``opened`` was opened from, look into it, detect ``wanted`` there."""
+def _look_into(
+    opened: OpenedContainer, wanted: ObjectDesignator, skip: Collection[str]
+) -> ObjectDesignator | None:
+    """Stand where ``opened`` was opened from, look into it, detect ``wanted`` there (the
+    first seen that is not in ``skip``: a spoon already on the table may be in view)."""
     try:
         park_arms()
         navigate(opened.stand.pose)
         look_from_above(inside_point(opened))
-        return detect(wanted)
+        if wanted.get("name") is not None:
+            return detect(wanted)
+        seen = perform(a.motion(type="detecting", object=all_.objects(type=wanted.get("type"))))
     except PlanFailure:
         return None
+    return next((thing for thing in seen if str(thing.get("name")) not in skip), None)
 
 
 def find(
-    wanted: ObjectDesignator, visit: Visit, log: AttemptLog
+    wanted: ObjectDesignator, visit: Visit, log: AttemptLog, skip: Collection[str] = ()
 ) -> tuple[ObjectDesignator, OpenedContainer | None]:
     """Find ``wanted`` at its place (opening it once), else anywhere; the perceived object
-    and the opened container it lies in.
+    and the opened container it lies in. Things named in ``skip`` (already brought) are
+    not taken for it where it is kept.
 
     Raises:
         SearchExhausted: it is nowhere the search looked.
@@ -120,7 +129,7 @@ def find(
     with contextlib.suppress(PlanFailure):
         inside = visit.open(log)
         if inside is not None:
-            seen = _look_into(inside, wanted)
+            seen = _look_into(inside, wanted, skip)
             if seen is not None:
                 return seen, inside
     searched = SearchLog(attempts=log)

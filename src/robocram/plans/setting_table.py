@@ -74,7 +74,7 @@ def by_place(wanted: Sequence[Spot]) -> list[tuple[Place | None, list[Spot]]]:
 
 def _bring(spot: Spot, visit: Visit, done: TableSetting) -> Held:
     """Find a thing of the spot's type not yet on the table, fetch it, put it at the spot."""
-    seen, inside = find(wanted_object(spot.type), visit, done.log)
+    seen, inside = find(wanted_object(spot.type), visit, done.log, skip=done.placed)
     held = fetch(seen, log=done.log, opened=inside)
     deliver(held, spot_location(done.table, spot, held.object_name), held.arm, log=done.log)
     done.placed[held.object_name] = spot

@@ -1,8 +1,8 @@
 """The breakfast kitchen: robocram's kitchen holding what a breakfast for two is made of.
 
 The same kitchen as :func:`kitchen_scene` (its URDF, its drafted facts), stocked as a
-household keeps things: bowls in the top drawer of the drawer unit, cups and spoons in
-the cutlery unit's top drawer, the knife in the one below, the milk on the fridge's upper
+household keeps things: bowls in the top drawer of the drawer unit, cups in the cutlery
+unit's top drawer, the spoons and the knife in the one below, the milk on the fridge's upper
 shelf, the cereal on the east counter, the bread and the sponge on the north counter.
 Each item type's usual place is a ``usual_location/3`` fact (group ``kitchen_semantics``),
 so a plan reads it and a user changes it with one fact (``kb.consult(..., group=...)``).
@@ -34,9 +34,9 @@ BREAKFAST_PLACES = (
     ItemPlace("bowl-2", "bowl", "drawer_unit_drawer_3", (-0.26, -0.12)),
     ItemPlace("cup-1", "cup", "cutlery_unit_drawer_4", (-0.24, 0.18)),
     ItemPlace("cup-2", "cup", "cutlery_unit_drawer_4", (-0.24, -0.18)),
-    ItemPlace("spoon-1", "spoon", "cutlery_unit_drawer_4", (-0.22, 0.05)),
-    ItemPlace("spoon-2", "spoon", "cutlery_unit_drawer_4", (-0.22, -0.05)),
-    ItemPlace("knife-1", "knife", "cutlery_unit_drawer_3", (-0.16, 0.0)),
+    ItemPlace("spoon-1", "spoon", "cutlery_unit_drawer_3", (-0.24, 0.09)),  # 16 cm along y
+    ItemPlace("spoon-2", "spoon", "cutlery_unit_drawer_3", (-0.24, -0.09)),
+    ItemPlace("knife-1", "knife", "cutlery_unit_drawer_3", (-0.1, 0.0)),
     ItemPlace("milk-1", "milk", "fridge_body", (-0.2, 0.05), below=FRIDGE_UPPER_SHELF),
     ItemPlace("cereal-1", "cereal_box", "counter_top_north", (0.4, -0.1)),
     ItemPlace("bread-1", "bread", "counter_top_north", (0.85, -0.05)),

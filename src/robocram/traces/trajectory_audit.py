@@ -17,6 +17,7 @@ its stored trajectories are replayed in the order they ran, densely
 from __future__ import annotations
 
 from collections.abc import Collection, Iterable, Iterator, Mapping
+from contextlib import contextmanager
 from dataclasses import dataclass
 
 import numpy as np
@@ -41,7 +42,9 @@ from robocram.traces.run_replay import robot_in, set_robot_joints
 from robocram.traces.teleport_audit import TeleportWatch
 from robocram.traces.trajectory_record import StoredTrajectory, run_trajectories
 from robocram.traces.world_record import build_scene, load_world_state
-from robocram.world import World
+from robocram.world import RawDistances, RobotObject, World
+
+RESTING = 0.005  # [m] a body this near a link a trajectory carries rides with it
 
 
 def audit_runs(
@@ -91,6 +94,33 @@ def audit_run(
                 audit.state(*event)
     findings = tuple(worst_per_culprit(audit.findings))
     return AuditReport((run,), findings, len(trajectories), audit.configurations)
+
+
+@contextmanager
+def riding(world: World, carried: tuple[CarriedJoint, ...]) -> Iterator[None]:
+    """Within the block, what rests on a link a carried joint moves rides with it (spoons
+    in a drawer the hand closes), as projection attaches them (``articulation.resting_in``):
+    free bodies within :data:`RESTING` of the link, held by nothing, at the start, by
+    PyBullet's raw closest points."""
+    riders: list[str] = []
+    raw = RawDistances(world)
+    for joint in carried:
+        body = world.object(joint.obj)
+        index = body.joint_index[joint.joint]
+        link = next(name for name, i in body.link_index.items() if i == index)
+        for obj in world.objects():
+            if obj.is_static or obj.name == joint.obj or isinstance(obj, RobotObject):
+                continue
+            parts = raw.collision_links(obj)
+            near = (raw.closest(obj, part, body, link, RESTING) for part in parts)
+            if world.attached_to(obj) is None and any(gap is not None for gap in near):
+                world.attach(obj, body, link)
+                riders.append(obj.name)
+    try:
+        yield
+    finally:
+        for name in riders:
+            world.detach(name)
 
 
 def _events(
@@ -174,10 +204,11 @@ class _RunAudit:
                 self.bounds.joint_step, self.bounds.point_step,
             )
         )  # fmt: skip
-        self._sweep_configurations(
-            robot, trajectory.joint_names, place, samples, trajectory.allowed_contacts,
-            trajectory.carried, trajectory.duration,
-        )  # fmt: skip
+        with riding(self.world, trajectory.carried):
+            self._sweep_configurations(
+                robot, trajectory.joint_names, place, samples, trajectory.allowed_contacts,
+                trajectory.carried, trajectory.duration,
+            )  # fmt: skip
 
     def _held(self, robot: str) -> dict[str, str]:
         return {a.obj: a.link for a in self.world.all_attachments() if a.robot == robot}

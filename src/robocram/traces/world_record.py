@@ -25,7 +25,7 @@ from robocram.traces.robot_model_record import urdf_digest
 from robocram.traces.schema import WorldStateRow
 from robocram.world import Attachment, MeshSpec, RobotObject, ShapeSpec, UrdfSpec, World
 
-Recipe = dict[str, Any]  # a body's recipe as JSON: name, type, and its shape, mesh, URDF or robot
+BodyRecipe = dict[str, Any]  # JSON-ready: name, type, and robot, shape, mesh or URDF
 
 
 @dataclass(frozen=True)
@@ -37,7 +37,7 @@ class StoredWorldState:
     poses: dict[str, Pose]
     joints: dict[str, dict[str, float]]  # object -> joint -> [rad] or [m]
     attachments: tuple[Attachment, ...]
-    added: dict[str, Recipe] = field(default_factory=dict)  # name -> body recipe
+    added: dict[str, BodyRecipe] = field(default_factory=dict)  # name -> body recipe
 
     @classmethod
     def capture(
@@ -159,10 +159,10 @@ def scene_names(scene: str) -> frozenset[str]:
     return frozenset(recipe["name"] for recipe in json.loads(scene))
 
 
-def body_recipe(obj: Any) -> Recipe:
+def body_recipe(obj: Any) -> BodyRecipe:
     """What rebuilds ``obj`` in another world: its name, type and robot or shape, mesh or
     URDF (JSON-ready)."""
-    recipe: Recipe = {"name": obj.name, "type": obj.type}
+    recipe: BodyRecipe = {"name": obj.name, "type": obj.type}
     spec = obj.spec
     if isinstance(obj, RobotObject):
         recipe["robot"] = obj.description.name
@@ -199,7 +199,7 @@ def build_scene(
     return world
 
 
-def add_body(world: World, recipe: Recipe, robots: Mapping[str, str] | None = None) -> None:
+def add_body(world: World, recipe: BodyRecipe, robots: Mapping[str, str] | None = None) -> None:
     """Add the body of ``recipe`` (from :func:`body_recipe`) to ``world``."""
     name, kind = recipe["name"], recipe["type"]
     if "robot" in recipe:

@@ -1,0 +1,61 @@
+"""Breakfast on the other robots: what stops it, found and named (strict xfails).
+
+Each test asks what the PR2's test asks and fails for the cause in its mark, judged by
+raw PyBullet (the joint of the drawer opened, the things' bodies on the table).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pybullet
+import pytest
+
+from robocram.designators import an
+from robocram.plans import perform
+from robocram.plans.container_access import open_from_front
+from robocram.projection import simulated_robot
+from robocram.scenes.breakfast_scene import breakfast_scene
+
+FETCH = str(Path(__file__).resolve().parents[1] / "data" / "fetch" / "fetch.py")
+BOWLS = "drawer_unit_drawer_3"
+TABLE_TOP = 0.75  # [m] the kitchen table's top
+
+
+@pytest.mark.xfail(
+    strict=True,
+    reason="the HSR's parking configuration puts its hand into its head_tilt_link at the "
+    "lift it raised to look (every park before a fetch is ManipulationPathBlocked), and it "
+    "does not see the bowls in their drawer past its hand (SearchExhausted, docs/status.md)",
+)
+def test_the_hsr_sets_the_table_for_two() -> None:
+    scene = breakfast_scene("hsrb")
+    world = scene.world
+    try:
+        with simulated_robot(world, scene.robot):
+            perform(an.action(type="setting-table", people=2))
+        for name in ("bowl-1", "cup-1", "spoon-1", "milk-1"):
+            low, _ = pybullet.getAABB(world.object(name).body_id, physicsClientId=world.client)
+            assert low[2] == pytest.approx(TABLE_TOP, abs=0.01), name
+    finally:
+        world.close()
+
+
+@pytest.mark.xfail(
+    strict=True,
+    reason="the drafted Fetch's palm is a stand-in box (its meshes are missing): at the "
+    "handle every IK solution puts gripper_link into the drawer's front and handle beyond "
+    "the hand's 5 mm bound, so no drawer opens and nothing kept in one is seen",
+)
+def test_the_drafted_fetch_opens_the_bowls_drawer() -> None:
+    scene = breakfast_scene(FETCH)
+    world = scene.world
+    try:
+        with simulated_robot(world, scene.robot):
+            open_from_front(BOWLS)
+        body = world.object("kitchen")
+        index = body.joint_index[f"{BOWLS}_joint"]
+        opened = pybullet.getJointState(body.body_id, index, physicsClientId=world.client)[0]
+        assert opened == pytest.approx(0.4, abs=0.01)
+    finally:
+        world.close()
