@@ -30,6 +30,7 @@ from robocram.logic import (
 from robocram.logic.builtin_spec import Builtin
 from robocram.logic.clause import Clause
 from robocram.logic.control import CONTROL_NAMES
+from robocram.logic.errors import LogicArgumentError
 from robocram.logic.fact_groups import LIBRARY_OWNER
 from robocram.logic.library import LIBRARY
 from robocram.logic.loader import compile_clause
@@ -67,7 +68,7 @@ def system_predicates() -> Mapping[Key, Pred]:
         for b in builtins:
             for arity in b.arities:
                 if (b.name, arity) in table:
-                    raise ValueError(f"built-in {b.name}/{arity} is listed twice")
+                    raise LogicArgumentError(f"built-in {b.name}/{arity} is listed twice")
                 table[(b.name, arity)] = FrozenPred(b.name, arity, b.kind, b.fn)
     return MappingProxyType(table)
 

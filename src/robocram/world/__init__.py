@@ -17,8 +17,10 @@ from robocram.world.errors import (
     UnknownJointError,
     UnknownLinkError,
     UnknownObjectError,
+    WorldArgumentError,
     WorldClosedError,
     WorldError,
+    WorldUsageError,
     WorldValueError,
 )
 from robocram.world.joint_state import ClampedJoint, JointLimits
@@ -60,10 +62,12 @@ __all__ = [
     "UrdfSpec",
     "Visibility",
     "World",
+    "WorldArgumentError",
     "WorldClosedError",
     "WorldError",
-    "WorldValueError",
     "WorldObject",
     "WorldState",
+    "WorldUsageError",
+    "WorldValueError",
     "catalogue_names",
 ]

@@ -155,3 +155,17 @@ class AttachmentCycleError(WorldError):
             f"cannot attach {obj!r} to {carrier!r}: {carrier!r} already hangs from {obj!r}, "
             f"so {loop}; detach one of them first"
         )
+
+
+class WorldArgumentError(WorldError, ValueError):
+    """A value given to the world is outside what it accepts."""
+
+    summary = "a value given to the world is outside what it accepts"
+    hint = "fix the value the message names: it says the range or the choices"
+
+
+class WorldUsageError(WorldError, TypeError):
+    """The world was handed the wrong kind of thing: the caller's mistake."""
+
+    summary = "the world was handed the wrong kind of thing"
+    hint = "pass what the message asks for"
