@@ -4,9 +4,6 @@ from robocram.logic.context import current_kb, using_kb
 from robocram.logic.errors import (
     FactGroupError,
     InferenceLimitExceeded,
-    LogicArgumentError,
-    LogicError,
-    LogicUsageError,
     PrologDomainError,
     PrologError,
     PrologEvaluationError,
@@ -26,6 +23,7 @@ from robocram.logic.gc_pacing import fast_queries
 from robocram.logic.knowledge_base import KnowledgeBase
 from robocram.logic.name_atom import name_atom
 from robocram.logic.terms import Term, Var
+from robocram.logic.usage_errors import LogicArgumentError, LogicError, LogicUsageError
 from robocram.logic.value import Value
 
 __all__ = [

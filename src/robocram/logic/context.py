@@ -6,8 +6,9 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from contextvars import ContextVar
 
-from robocram.logic.errors import LogicUsageError, PrologError
+from robocram.logic.errors import PrologError
 from robocram.logic.knowledge_base import KnowledgeBase
+from robocram.logic.usage_errors import LogicUsageError
 
 __all__ = ["current_kb", "using_kb"]
 

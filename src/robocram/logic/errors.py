@@ -214,21 +214,3 @@ def error_from_ball(ball: Value) -> PrologError:
             PrologError.__init__(err, msg, ball)
             return err
     return PrologThrow(ball)
-
-
-class LogicError(Exception):
-    """Root of misuse of robocram.logic's Python API (Prolog's own errors are PrologError)."""
-
-
-class LogicArgumentError(LogicError, ValueError):
-    """A value given to the Prolog engine's Python side is outside what it accepts."""
-
-    summary = "a value given to the Prolog engine's Python side is outside what it accepts"
-    hint = "fix the value the message names: it says the range or the choices"
-
-
-class LogicUsageError(LogicError, TypeError):
-    """The Prolog engine's Python side was handed the wrong kind of thing: the caller's mistake."""
-
-    summary = "the Prolog engine's Python side was handed the wrong kind of thing"
-    hint = "pass what the message asks for"

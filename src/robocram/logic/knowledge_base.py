@@ -17,7 +17,6 @@ from robocram.logic.bulk import paused_gc
 from robocram.logic.clause import Clause
 from robocram.logic.convert import SelfContainingValue, to_prolog, to_python
 from robocram.logic.errors import (
-    LogicUsageError,
     PrologError,
     PrologPermissionError,
     PrologResourceError,
@@ -33,6 +32,7 @@ from robocram.logic.reader import read_query, read_terms
 from robocram.logic.system import PRIVATE_PREFIX, library_predicates, system_predicates
 from robocram.logic.template import Slot, build, compile_term
 from robocram.logic.terms import Term, Var, deref
+from robocram.logic.usage_errors import LogicUsageError
 from robocram.logic.value import Value
 
 __all__ = ["KnowledgeBase"]

@@ -16,10 +16,10 @@ from contextvars import ContextVar
 
 from robocram.logic.errors import (
     InferenceLimitExceeded,
-    LogicArgumentError,
     PrologThrow,
     TimeLimitExceeded,
 )
+from robocram.logic.usage_errors import LogicArgumentError
 
 __all__ = [
     "CHECK_EVERY",

@@ -10,7 +10,7 @@ import threading
 from collections import OrderedDict
 from typing import Generic, TypeVar
 
-from robocram.logic.errors import LogicArgumentError
+from robocram.logic.usage_errors import LogicArgumentError
 
 __all__ = ["LRUCache"]
 

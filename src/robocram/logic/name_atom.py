@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import re
 
-from robocram.logic.errors import LogicUsageError
+from robocram.logic.usage_errors import LogicUsageError
 
 __all__ = ["name_atom"]
 

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from robocram.logic.errors import LogicArgumentError
+from robocram.logic.usage_errors import LogicArgumentError
 
 __all__ = ["OperatorTable"]
 

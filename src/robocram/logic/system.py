@@ -30,13 +30,13 @@ from robocram.logic import (
 from robocram.logic.builtin_spec import Builtin
 from robocram.logic.clause import Clause
 from robocram.logic.control import CONTROL_NAMES
-from robocram.logic.errors import LogicArgumentError
 from robocram.logic.fact_groups import LIBRARY_OWNER
 from robocram.logic.library import LIBRARY
 from robocram.logic.loader import compile_clause
 from robocram.logic.predicate import CONTROL, FrozenPred, Key, Pred
 from robocram.logic.reader import read_terms
 from robocram.logic.terms import Term
+from robocram.logic.usage_errors import LogicArgumentError
 from robocram.logic.value import Value
 
 __all__ = ["PRIVATE_PREFIX", "library_predicates", "system_predicates"]
