@@ -22,7 +22,7 @@ from robocram.world.camera import Camera
 from robocram.world.catalogue import catalogue_item
 from robocram.world.collision_shapes import CollisionShape, collision_shapes
 from robocram.world.contact_point import ContactPoint
-from robocram.world.errors import NoCameraError, WorldArgumentError, WorldValueError
+from robocram.world.errors import NoCameraError, WorldValueError
 from robocram.world.obstacle_boxes import KeptObstacleBoxes, ObstacleBoxes
 from robocram.world.png import write_png
 from robocram.world.pybullet_backend import pybullet
@@ -425,7 +425,7 @@ class World(WorldCore):
             return visibility.ray_visibility(self, camera, handle)
         if method == "render":
             return visibility.render_visibility(self, camera, handle)
-        raise WorldArgumentError(f"unknown visibility method {method!r}; use 'ray' or 'render'")
+        raise WorldValueError(f"unknown visibility method {method!r}; use 'ray' or 'render'")
 
     def visibility_fraction(
         self,
