@@ -18,7 +18,7 @@ import pytest
 
 from robocram.designators import a
 from robocram.execution.failures import NavigationPoseUnreachable
-from robocram.kinematics import PlanarBase, forward_kinematics, solve_ik
+from robocram.kinematics import IKOptions, PlanarBase, forward_kinematics, solve_ik
 from robocram.motion import JointTrajectory, plan_base_path, trajectory_listener
 from robocram.plans import pick_up
 from robocram.plans.transport import transport
@@ -88,8 +88,9 @@ def test_ik_moves_a_differential_base_along_its_heading_only(
     solved, offsets = 0, {"differential": [], "holonomic": []}
     for seed, target in enumerate(_targets(np.random.default_rng(7), working_yaw)):
         for kind, d in (("differential", desc), ("holonomic", holonomic)):
-            result = solve_ik(d, arm, target, base=PlanarBase(), random_seed=seed,
-                              collision_check=seen if d is desc else None)  # fmt: skip
+            options = IKOptions(base=PlanarBase(), random_seed=seed)
+            check = seen if d is desc else None
+            result = solve_ik(d, arm, target, options=options, collision_check=check)
             if not result.success:
                 continue
             motion = result.base_motion

@@ -7,6 +7,7 @@ from collections.abc import Iterator
 
 import pytest
 
+from robocram.kinematics import IKOptions, forward_kinematics, solve_ik
 from robocram.tf import Pose
 from robocram.world import (
     ClampedJoint,
@@ -14,8 +15,8 @@ from robocram.world import (
     RobotHandle,
     RobotObject,
     UnknownJointError,
-    UnknownObjectError,
     UnknownLinkError,
+    UnknownObjectError,
     World,
 )
 
@@ -58,6 +59,18 @@ def test_a_handle_carries_the_robot_looked_up_once(world: World, pr2: RobotObjec
         RobotHandle.of(world, "pr")
     with pytest.raises(NotARobotError):
         RobotHandle.of(world, "floor")
+
+
+def test_ik_takes_the_handle_as_its_robot(world: World, pr2: RobotObject) -> None:
+    handle = RobotHandle.of(world, pr2)
+    seed = handle.joint_states()
+    bent = {**seed, "r_elbow_flex_joint": -1.0}
+    target = forward_kinematics(handle, bent, "r_gripper_tool_frame")
+    options = IKOptions(random_seed=5, use_torso=True)
+    by_handle = solve_ik(handle, "right", target, seed=seed, options=options)
+    by_description = solve_ik(pr2.description, "right", target, seed=seed, options=options)
+    assert by_handle.success and by_handle.position_error < 1e-3
+    assert by_handle.joint_positions == by_description.joint_positions  # bit for bit
 
 
 def test_out_of_range_torso_is_clamped_and_reported(world: World, pr2: RobotObject) -> None:

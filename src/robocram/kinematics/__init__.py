@@ -3,7 +3,9 @@
 from robocram.kinematics.arm_selection import arm_joints
 from robocram.kinematics.base_ik_solver import BaseIKSolver
 from robocram.kinematics.descent import IKSettings
+from robocram.kinematics.described_robot import DescribedRobot, RobotRef
 from robocram.kinematics.errors import KinematicsError, TargetFrameError, UnknownNameError
+from robocram.kinematics.ik_options import IKOptions
 from robocram.kinematics.ik_result import IKResult
 from robocram.kinematics.ik_solver import CollisionCheck, IKSolver
 from robocram.kinematics.kinematics_cache import KinematicsCache
@@ -16,6 +18,8 @@ __all__ = [
     "BaseIKSolver",
     "BaseMotion",
     "CollisionCheck",
+    "DescribedRobot",
+    "IKOptions",
     "IKResult",
     "IKSettings",
     "IKSolver",
@@ -23,6 +27,7 @@ __all__ = [
     "KinematicsError",
     "PlanarBase",
     "ReachBound",
+    "RobotRef",
     "TargetFrameError",
     "UnknownNameError",
     "arm_joints",

@@ -23,7 +23,14 @@ from robocram.execution.failures import (
     ManipulationPathBlocked,
     NavigationLowLevelFailure,
 )
-from robocram.kinematics import BaseMotion, IKResult, PlanarBase, base_in_ik, solve_ik
+from robocram.kinematics import (
+    BaseMotion,
+    IKOptions,
+    IKResult,
+    PlanarBase,
+    base_in_ik,
+    solve_ik,
+)
 from robocram.motion import ArmMotion, plan_arm_motion, plan_tool_line
 from robocram.motion.hand_contact import HandContact
 from robocram.motion.joint_goal import finite_goal
@@ -86,12 +93,14 @@ def _solve(
                 arm,
                 target_in_base,
                 seed=seed,
-                use_torso=use_torso,
+                options=IKOptions(
+                    use_torso=use_torso,
+                    base=base,
+                    max_restarts=max_restarts,
+                    random_seed=random_seed,
+                ),
                 collision_check=check,
-                random_seed=random_seed,
                 stop_check=checkpoint,  # a stopped task ends the search within one descent
-                base=base,
-                max_restarts=max_restarts,
             )
             if result.success:
                 break
