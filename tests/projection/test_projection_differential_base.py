@@ -29,7 +29,7 @@ from robocram.scenes import kitchen_scene, tabletop_scene
 from robocram.scenes.placement import TABLE_DEPTH
 from robocram.tf import Pose, PoseStamped
 from robocram.tf import quaternion as quat
-from robocram.world import World
+from robocram.world import RobotHandle, World
 
 DATA = Path(__file__).resolve().parents[1] / "data"
 QUERIES = 40  # seeded IK queries per robot
@@ -119,7 +119,9 @@ def test_base_paths_of_a_differential_base_never_slide(stretch: LoadedDescriptio
         robot = world.add_robot(stretch)
         for _ in range(12):
             x, y, yaw = rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-3, 3)
-            path = plan_base_path(world, robot, Pose((x, y, 0.0), quat.from_euler(0, 0, yaw)))
+            path = plan_base_path(
+                RobotHandle.of(world, robot), Pose((x, y, 0.0), quat.from_euler(0, 0, yaw))
+            )
             assert path.planner == "reeds_shepp"
             assert (sideways(path.poses) <= SIDEWAYS).all()
             assert (sideways(path.trajectory.positions()) <= SIDEWAYS).all()

@@ -22,7 +22,7 @@ from dataclasses import dataclass, field
 
 from robocram.motion.self_collision_matrix import SelfCollisionMatrix
 from robocram.traces.link_adjacency import LinkPair, adjacent_links
-from robocram.world import World
+from robocram.world import RobotHandle, World
 
 SkippedSelfPairs = Callable[[World, str], Collection[LinkPair]]  # (world, robot) -> pairs
 
@@ -38,7 +38,7 @@ def matrix_pairs_of(world: World, robot: str) -> frozenset[LinkPair]:
     hulls that always overlap, or at rest, or bridge a flexed joint; pairs the
     description allows). Only which pairs are read from it: every distance is the
     audit's own."""
-    matrix = SelfCollisionMatrix.of(world, robot)
+    matrix = SelfCollisionMatrix.of(RobotHandle.of(world, robot))
     return adjacent_pairs_of(world, robot) | frozenset(matrix.skipped)
 
 
