@@ -34,7 +34,7 @@ KEPT_RULES = 32  # judges' rules and moving links kept per world (per joints, al
 
 
 class BulletScene:
-    """Checks configurations of ``joints`` of ``robot`` in ``world`` (one thread at a time)."""
+    """Checks configurations of ``joints`` of ``robot`` in its world (one thread at a time)."""
 
     def __init__(
         self,

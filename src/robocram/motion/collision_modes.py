@@ -53,7 +53,7 @@ def hand_bound(spec: ArmDescription, mode: str, touching: str | None) -> HandCon
 def ik_collision_check(
     robot: RobotHandle, spec: ArmDescription, joints: tuple[str, ...], mode: str
 ) -> IKCollisionCheck | None:
-    """An IK ``collision_check`` on ``world`` for ``joints`` in ``mode`` (None: allow_all).
+    """An IK ``collision_check`` on the robot's world for ``joints`` in ``mode`` (None: allow_all).
 
     It returns the colliding ``(robot link, other)`` pairs, so a failure can name them;
     contacts the robot has now (a held object on its table) stay allowed, as in planning.

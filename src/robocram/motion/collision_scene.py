@@ -63,7 +63,7 @@ class CollisionScene:
         allow_at: Sequence[Sequence[float] | NDArray[np.float64]] = (),
         hand: HandContact | None = None,
     ) -> CollisionScene:
-        """Take ``world`` around ``robot`` now, to check values of ``joints``.
+        """Take the world around ``robot`` now, to check values of ``joints``.
 
         ``allowed_links`` may touch anything (CRAM's ``allow_hand``); ``margin`` [m]
         grows every shape, for a safety distance; the robot's own contacts at the
