@@ -250,15 +250,17 @@ def test_a_cancel_the_server_refuses_raises_that_the_robot_may_still_move(
         "ros_action_timeout(pr2, navigation, 1.0).\nros_cancel_timeout(pr2, 0.5).\n"
         + default_facts("pr2", ros=2)
     )
-    start = time.monotonic()
     with (
         DriverProcess("", "pr2", fault="ignore_cancel", ros=2, domain_id=ros2_domain),
         ros_robot("pr2", ros=2, ros_facts=facts),
-        pytest.raises(RosCancelIgnored) as ignored,
     ):
         start = time.monotonic()
-        perform(a.motion(type="going", target=Pose((-1.0, 0.0, 0.0))))
-    assert time.monotonic() - start == pytest.approx(1.5, abs=1.0)  # timeout, then cancel
+        with pytest.raises(RosCancelIgnored) as ignored:
+            perform(a.motion(type="going", target=Pose((-1.0, 0.0, 0.0))))
+        waited = time.monotonic() - start
+    # the action's timeout (1 s), then the cancel's (0.5 s), both waited out; the upper
+    # bound only says it did not hang (a loaded machine took 3.8 s with teardown)
+    assert 1.5 - 0.05 <= waited < 1.5 + 8.0
     assert ignored.value.server == "/navigate_to_pose"
     assert ignored.value.timeout == 0.5
     assert ignored.value.stopping is False

@@ -15,6 +15,7 @@ from robocram.costmaps.distance_costs import gaussian, ring
 from robocram.costmaps.errors import (
     CostmapError,
     CostmapInputError,
+    CostmapUsageError,
     LocationKeyError,
     LocationNotFound,
     LocationOutsideArea,
@@ -44,6 +45,7 @@ __all__ = [
     "CostmapInputError",
     "CostmapLocations",
     "CostmapObserver",
+    "CostmapUsageError",
     "LocationKeyError",
     "LocationNotFound",
     "LocationOutsideArea",

@@ -15,6 +15,7 @@ from contextvars import ContextVar
 from typing import Any
 
 from robocram.costmaps.costmap import Costmap
+from robocram.costmaps.errors import CostmapUsageError
 
 CostmapObserver = Callable[[Any, Costmap], None]
 """Called with the location designator being resolved and the costmap built for it."""
@@ -28,7 +29,7 @@ _OBSERVERS: ContextVar[tuple[CostmapObserver, ...]] = ContextVar(
 def observing_costmaps(observer: CostmapObserver) -> Iterator[CostmapObserver]:
     """Call ``observer`` with every costmap built for a location inside the block."""
     if not callable(observer):
-        raise TypeError(f"observing_costmaps() needs a callable, got {observer!r}")
+        raise CostmapUsageError(f"observing_costmaps() needs a callable, got {observer!r}")
     token = _OBSERVERS.set((*_OBSERVERS.get(), observer))
     try:
         yield observer

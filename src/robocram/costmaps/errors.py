@@ -118,3 +118,10 @@ class DescribedAs:
     """A designator's description standing in for it where the designator cannot go."""
 
     description: str
+
+
+class CostmapUsageError(CostmapError, TypeError):
+    """A costmap was handed the wrong kind of thing: the caller's mistake."""
+
+    summary = "a costmap was handed the wrong kind of thing"
+    hint = "pass what the message asks for"

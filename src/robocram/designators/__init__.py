@@ -10,8 +10,11 @@ solution and caches it; ``next_solution()`` returns a designator for the next on
 from robocram.designators.common_motions import install_common_motions, install_motion_family
 from robocram.designators.designator import Designator, Kind, Quantifier, desig_equal
 from robocram.designators.errors import (
+    DesignatorArgumentError,
     DesignatorError,
     DesignatorPropertyError,
+    DesignatorUnknownKey,
+    DesignatorUsageError,
     GroundingError,
     MotionPropertyError,
 )
@@ -44,26 +47,29 @@ from robocram.designators.prolog_access import install_designator_predicates
 from robocram.designators.quantifiers import a, all_, an
 
 __all__ = [
-    "MOTION_TYPES",
-    "SIDES",
     "ActionDesignator",
     "Answer",
     "Atom",
     "Command",
     "Designator",
+    "DesignatorArgumentError",
     "DesignatorError",
     "DesignatorPropertyError",
+    "DesignatorUnknownKey",
+    "DesignatorUsageError",
     "GroundingError",
     "HumanDesignator",
     "Kind",
     "LocationDesignator",
     "LocationResolver",
+    "MOTION_TYPES",
     "MotionDesignator",
     "MotionProperty",
     "MotionPropertyError",
     "MotionType",
     "ObjectDesignator",
     "Quantifier",
+    "SIDES",
     "Verdict",
     "a",
     "all_",

@@ -38,6 +38,7 @@ from __future__ import annotations
 import functools
 import weakref
 
+from robocram.designators.errors import DesignatorArgumentError
 from robocram.designators.motion_table import motion_types
 from robocram.designators.motion_type import grounding_rules
 from robocram.designators.prolog_access import install_designator_predicates
@@ -67,7 +68,9 @@ def common_motions_text(family: str = "common") -> str:
 def install_motion_family(kb: KnowledgeBase, family: str) -> KnowledgeBase:
     """Install the designator predicates and the groundings of ``family`` in ``kb``."""
     if family not in FAMILY_GROUPS:
-        raise ValueError(f"motion family {family!r} is none of {sorted(FAMILY_GROUPS)}")
+        raise DesignatorArgumentError(
+            f"motion family {family!r} is none of {sorted(FAMILY_GROUPS)}"
+        )
     install_designator_predicates(kb)
     if family != "common" and not kb.defines("common_target_pose/2"):
         install_motion_family(kb, "common")

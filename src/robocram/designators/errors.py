@@ -83,3 +83,24 @@ class MotionPropertyError(DesignatorPropertyError, GroundingError):
         self.grounded_types = tuple(sorted(set(grounded_types)))
         self.motion = motion
         self.expected = expected
+
+
+class DesignatorArgumentError(DesignatorError, ValueError):
+    """A value given to a designator is outside what it accepts."""
+
+    summary = "a value given to a designator is outside what it accepts"
+    hint = "fix the value the message names: it says the range or the choices"
+
+
+class DesignatorUsageError(DesignatorError, TypeError):
+    """A designator was handed the wrong kind of thing: the caller's mistake."""
+
+    summary = "a designator was handed the wrong kind of thing"
+    hint = "pass what the message asks for"
+
+
+class DesignatorUnknownKey(DesignatorError, KeyError):
+    """A name that a designator does not know; the message lists the known ones."""
+
+    summary = "a name that a designator does not know"
+    hint = "use one of the names the message lists"

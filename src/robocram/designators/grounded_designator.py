@@ -13,7 +13,11 @@ from collections.abc import Iterator
 from typing import ClassVar
 
 from robocram.designators.designator import Designator, Kind, S_co
-from robocram.designators.errors import DesignatorPropertyError, GroundingError
+from robocram.designators.errors import (
+    DesignatorPropertyError,
+    DesignatorUsageError,
+    GroundingError,
+)
 from robocram.designators.motion_table import MOTION_TYPES
 from robocram.designators.motion_type import (
     check_known_keys,
@@ -48,7 +52,7 @@ class GroundedDesignator(Designator[S_co]):
     def _resolution_context(self, kb: KnowledgeBase | None) -> KnowledgeBase:
         if kb is not None:
             if not isinstance(kb, KnowledgeBase):
-                raise TypeError(f"kb must be a robocram.logic.KnowledgeBase, got {kb!r}")
+                raise DesignatorUsageError(f"kb must be a robocram.logic.KnowledgeBase, got {kb!r}")
             return kb
         bound = bound_kb()
         if bound is None:

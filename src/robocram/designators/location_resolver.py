@@ -20,6 +20,12 @@ from dataclasses import dataclass, replace
 from enum import Enum
 from typing import Any, TypeVar
 
+from robocram.designators.errors import (
+    DesignatorArgumentError,
+    DesignatorUnknownKey,
+    DesignatorUsageError,
+)
+
 GeneratorFunction = Callable[[Any], Iterable[object]]
 ValidatorFunction = Callable[[Any, Any], "Verdict"]
 _Item = TypeVar("_Item", "LocationGenerator", "LocationValidator")
@@ -85,14 +91,16 @@ class LocationResolver:
 
     def __post_init__(self) -> None:
         if self.max_consecutive_rejections < 1:
-            raise ValueError(
+            raise DesignatorArgumentError(
                 f"max_consecutive_rejections must be >= 1, got {self.max_consecutive_rejections}"
             )
         for items, what in ((self.generators, "generator"), (self.validators, "validator")):
             names = [item.name for item in items]
             duplicates = sorted({n for n in names if names.count(n) > 1})
             if duplicates:
-                raise ValueError(f"location {what} names must be unique, repeated: {duplicates}")
+                raise DesignatorArgumentError(
+                    f"location {what} names must be unique, repeated: {duplicates}"
+                )
         object.__setattr__(self, "generators", _by_priority(self.generators))
         object.__setattr__(self, "validators", _by_priority(self.validators))
 
@@ -127,7 +135,7 @@ class LocationResolver:
             verdicts = [v.function(designator, candidate) for v in self.validators]
             for validator, verdict in zip(self.validators, verdicts, strict=True):
                 if not isinstance(verdict, Verdict):
-                    raise TypeError(
+                    raise DesignatorUsageError(
                         f"location validator {validator.name!r} returned {verdict!r}; "
                         "it must return a Verdict (ACCEPT, MAYBE_REJECT, UNKNOWN or REJECT)"
                     )
@@ -150,7 +158,7 @@ def _by_priority(items: tuple[_Item, ...]) -> tuple[_Item, ...]:
 
 def _require(name: str, names: list[str], what: str) -> None:
     if name not in names:
-        raise KeyError(f"no location {what} named {name!r}; registered: {names}")
+        raise DesignatorUnknownKey(f"no location {what} named {name!r}; registered: {names}")
 
 
 _CURRENT_RESOLVER: contextvars.ContextVar[LocationResolver | None] = contextvars.ContextVar(

@@ -11,7 +11,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
 
 from robocram.designators.designator import Designator, Kind, Quantifier
-from robocram.designators.errors import GroundingError
+from robocram.designators.errors import DesignatorArgumentError, GroundingError
 from robocram.designators.properties import PropertyPair
 
 if TYPE_CHECKING:
@@ -49,7 +49,9 @@ class ObjectDesignator(Designator[object]):
         New properties replace same-named old ones; the others are kept.
         """
         if data is None:
-            raise ValueError(f"make_effective of {self.description} needs data, got None")
+            raise DesignatorArgumentError(
+                f"make_effective of {self.description} needs data, got None"
+            )
         kept = [(k, v) for k, v in self.properties if k not in new_properties]
         successor = type(self)(*kept, quantifier=self.quantifier, data=data, **new_properties)
         self.current_desig().equate(successor)

@@ -21,6 +21,7 @@ import itertools
 from collections.abc import Iterator
 
 from robocram.designators.designator import Designator, Kind
+from robocram.designators.errors import DesignatorArgumentError
 from robocram.designators.grounded_designator import TypeProbe
 from robocram.logic import KnowledgeBase, Var
 
@@ -94,7 +95,7 @@ def _install_kind_test(kb: KnowledgeBase, name: str, kind: Kind) -> None:
 
 def _require_bound(d: object, predicate: str) -> None:
     if isinstance(d, Var):
-        raise ValueError(
+        raise DesignatorArgumentError(
             f"{predicate} needs a designator as first argument, got an unbound variable"
         )
 

@@ -11,6 +11,7 @@ import queue
 import threading
 from collections.abc import Callable, Iterable, Iterator, Sequence
 
+from robocram.execution.errors import ExecutionUsageError
 from robocram.execution.task import Task
 from robocram.execution.task_context import start_in_thread
 
@@ -28,7 +29,7 @@ def named_steps(form: str, steps: Iterable[Step]) -> list[tuple[str, Callable[[]
             name = getattr(fn, "__name__", "")
             name = name if name.isidentifier() else f"{form}[{i}]"
         if not callable(fn):
-            raise TypeError(
+            raise ExecutionUsageError(
                 f"{form} step {i} is {fn!r}, not a callable; "
                 f"wrap the call in a lambda: {form}(lambda: f(...), ...)"
             )

@@ -20,6 +20,7 @@ from robocram.designators import (
     install_designator_predicates,
     using_location_resolver,
 )
+from robocram.execution.errors import ExecutionUnknownKey
 from robocram.execution.process_module import ProcessModule
 from robocram.execution.process_module_matching import (
     install_process_module_interface,
@@ -72,7 +73,9 @@ class Environment:
             if module.name == name:
                 return module
         names = [m.name for m in self.process_modules]
-        raise KeyError(f"environment {self.name!r} has no process module {name!r}; it has {names}")
+        raise ExecutionUnknownKey(
+            f"environment {self.name!r} has no process module {name!r}; it has {names}"
+        )
 
     @contextmanager
     def running(self) -> Iterator[Environment]:

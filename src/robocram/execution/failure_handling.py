@@ -14,6 +14,7 @@ import functools
 from collections.abc import Callable, Mapping
 from typing import Any, NoReturn, TypeVar
 
+from robocram.execution.errors import ExecutionArgumentError, ExecutionUsageError
 from robocram.execution.failures import RetryOutsideHandler
 from robocram.execution.task import TaskStopped
 
@@ -78,7 +79,9 @@ class RetryCounter:
 
     def __init__(self, retries: int) -> None:
         if retries < 0:
-            raise ValueError(f"RetryCounter needs a non-negative number of retries, got {retries}")
+            raise ExecutionArgumentError(
+                f"RetryCounter needs a non-negative number of retries, got {retries}"
+            )
         self.remaining = retries
 
     def retry(self) -> None:
@@ -129,14 +132,14 @@ def _decide(handler: Handler, control: FailureControl) -> tuple[str, Any]:
 def _check_handlers(handlers: Mapping[Any, Handler]) -> None:
     for kind, handler in handlers.items():
         if not (isinstance(kind, type) and issubclass(kind, BaseException)):
-            raise TypeError(f"handler key {kind!r} is not an exception type")
+            raise ExecutionUsageError(f"handler key {kind!r} is not an exception type")
         if issubclass(TaskStopped, kind) or not issubclass(kind, Exception):
-            raise TypeError(
+            raise ExecutionUsageError(
                 f"cannot handle {kind.__name__}: stopping a task is not a failure; "
                 f"use PlanFailure (or a subclass) as the key"
             )
         if not callable(handler):
-            raise TypeError(f"handler for {kind.__name__} is {handler!r}, not a callable")
+            raise ExecutionUsageError(f"handler for {kind.__name__} is {handler!r}, not a callable")
 
 
 def failure_handled(

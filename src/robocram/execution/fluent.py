@@ -16,6 +16,7 @@ import weakref
 from collections.abc import Callable
 from typing import Any
 
+from robocram.execution.errors import ExecutionUsageError
 from robocram.execution.failures import FluentWaitTimeout
 from robocram.execution.task_context import wait_until
 
@@ -47,7 +48,7 @@ class Fluent:
         return f"Fluent({self.name!r}, {self.get()!r})"
 
     def __bool__(self) -> bool:
-        raise TypeError(
+        raise ExecutionUsageError(
             f"the truth of fluent {self.name!r} changes over time; "
             f"use .get() for its value now or .wait_for() to wait until it holds"
         )
@@ -62,7 +63,9 @@ class Fluent:
     def set(self, value: object) -> None:
         """Change the value; waiters and derived fluents see it if it differs."""
         if self._compute is not None:
-            raise TypeError(f"fluent {self.name!r} is derived; set its source fluents instead")
+            raise ExecutionUsageError(
+                f"fluent {self.name!r} is derived; set its source fluents instead"
+            )
         self._assign(value, pulse=False)
 
     @property

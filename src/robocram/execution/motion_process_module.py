@@ -16,6 +16,7 @@ from functools import cached_property
 from typing import Any
 
 from robocram.designators import MOTION_TYPES, Command, MotionType, commands_of
+from robocram.execution.errors import ExecutionUsageError
 from robocram.execution.process_module import ProcessModule
 from robocram.logic import Term, name_atom
 
@@ -71,7 +72,7 @@ class MotionProcessModule(ProcessModule):
             - {n for n in dir(cls) if callable(getattr(cls, n, None))}
         )
         if missing:
-            raise TypeError(
+            raise ExecutionUsageError(
                 f"{cls.__name__} executes the {cls.resource!r} commands of the motion table "
                 f"but has no method for {missing}; define one per command"
             )

@@ -5,6 +5,7 @@ from __future__ import annotations
 from typing import Any
 
 from robocram.execution.child_group import ChildGroup, Step, named_steps
+from robocram.execution.errors import ExecutionStateError
 from robocram.execution.task import Task, TaskStatus
 from robocram.execution.task_context import require_task, sub_task
 
@@ -32,5 +33,5 @@ def par(*steps: Step, name: str = "par") -> list[Any]:
 def raise_failure_of(task: Task) -> None:
     """Re-raise the failure recorded on a failed task in the calling thread."""
     if task.failure is None:
-        raise RuntimeError(f"task {task.path} is {task.status.value}, it has no failure")
+        raise ExecutionStateError(f"task {task.path} is {task.status.value}, it has no failure")
     raise task.failure

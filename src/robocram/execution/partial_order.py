@@ -7,6 +7,7 @@ import threading
 from collections.abc import Callable, Iterable, Mapping
 
 from robocram.execution.child_group import ChildGroup
+from robocram.execution.errors import ExecutionArgumentError
 from robocram.execution.par import raise_failure_of
 from robocram.execution.task import TaskStatus
 from robocram.execution.task_context import require_task, sub_task, wait_until
@@ -56,12 +57,16 @@ def _predecessors(
     before: dict[str, set[str]] = {step: set() for step in steps}
     for pair in orderings:
         if len(pair) != 2:
-            raise ValueError(f"ordering {pair!r} must be a (before, after) pair of step names")
+            raise ExecutionArgumentError(
+                f"ordering {pair!r} must be a (before, after) pair of step names"
+            )
         for step in pair:
             if step not in steps:
                 close = difflib.get_close_matches(step, list(steps), n=1)
                 guess = f"; did you mean {close[0]!r}?" if close else ""
-                raise ValueError(f"ordering {pair!r} names unknown step {step!r}{guess}")
+                raise ExecutionArgumentError(
+                    f"ordering {pair!r} names unknown step {step!r}{guess}"
+                )
         before[pair[1]].add(pair[0])
     _reject_cycles(before)
     return before
@@ -73,5 +78,7 @@ def _reject_cycles(before: dict[str, set[str]]) -> None:
         ready = {s for s, deps in before.items() if s not in placed and deps <= placed}
         if not ready:
             stuck = sorted(set(before) - placed)
-            raise ValueError(f"orderings form a cycle among steps {stuck}; remove one pair")
+            raise ExecutionArgumentError(
+                f"orderings form a cycle among steps {stuck}; remove one pair"
+            )
         placed |= ready

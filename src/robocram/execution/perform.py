@@ -27,6 +27,7 @@ from robocram.designators import (
 )
 from robocram.designators.errors import GroundingError
 from robocram.execution.action_table import ActionTable, default_actions
+from robocram.execution.errors import ExecutionUsageError
 from robocram.execution.failures import (
     DesignatorFailure,
     DesignatorReferenceFailure,
@@ -219,7 +220,7 @@ def _registered_plans(kb: KnowledgeBase) -> dict[str, Callable[..., object]]:
 def register_plan(kb: KnowledgeBase, name: str, function: Callable[..., object]) -> None:
     """Let action groundings name ``function`` as ``name(Args...)`` in ``kb``."""
     if not callable(function):
-        raise TypeError(f"register_plan({name!r}) needs a callable, got {function!r}")
+        raise ExecutionUsageError(f"register_plan({name!r}) needs a callable, got {function!r}")
     if not kb.defines("plan_function/2"):
         kb.consult(
             "plan_function(_, _) :- fail.",

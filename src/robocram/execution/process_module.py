@@ -23,6 +23,7 @@ from collections import deque
 from collections.abc import Iterable
 from typing import Any, ClassVar
 
+from robocram.execution.errors import ExecutionStateError, ExecutionUsageError
 from robocram.execution.failures import (
     PlanFailure,
     ProcessModuleFailure,
@@ -40,7 +41,7 @@ class ProcessModule:
 
     def __init__(self) -> None:
         if not self.name or not isinstance(self.name, str):
-            raise TypeError(
+            raise ExecutionUsageError(
                 f"{type(self).__name__} needs a class attribute name = '<atom>', the name "
                 "matching_process_module/2 facts use for it"
             )
@@ -92,7 +93,7 @@ class ProcessModule:
         """Start accepting commands (runs ``initialise``)."""
         with self._cond:
             if self._running:
-                raise RuntimeError(f"process module {self.name!r} is already running")
+                raise ExecutionStateError(f"process module {self.name!r} is already running")
         self.initialise()
         with self._cond:
             self._running = True

@@ -15,6 +15,7 @@ import contextvars
 from collections.abc import Iterator
 from contextlib import contextmanager
 
+from robocram.execution.errors import ExecutionArgumentError, ExecutionUsageError
 from robocram.execution.process_module import ProcessModule
 from robocram.logic import KnowledgeBase
 
@@ -56,12 +57,12 @@ def process_modules_running(*modules: ProcessModule) -> Iterator[tuple[ProcessMo
     outer = _RUNNING.get()
     for module in modules:
         if not isinstance(module, ProcessModule):
-            raise TypeError(
+            raise ExecutionUsageError(
                 f"process_modules_running takes ProcessModule instances, got {module!r}"
             )
         clash = next((m for m in outer if m.name == module.name and m is not module), None)
         if clash is not None:
-            raise ValueError(
+            raise ExecutionArgumentError(
                 f"process module name {module.name!r} is already taken by running {clash!r}; "
                 "give each module of an environment its own name"
             )

@@ -14,6 +14,7 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager, nullcontext
 from typing import Any
 
+from robocram.execution.errors import ExecutionArgumentError
 from robocram.execution.failures import NotInTopLevel
 from robocram.execution.task import Task, TaskStatus, TaskStopped
 from robocram.logic.limits import checking_stop
@@ -78,7 +79,7 @@ def wait_until(
 def sleep(seconds: float) -> None:
     """Sleep ``seconds`` [s], waking early to unwind if the current task is stopped."""
     if seconds < 0:
-        raise ValueError(f"sleep needs a non-negative duration [s], got {seconds}")
+        raise ExecutionArgumentError(f"sleep needs a non-negative duration [s], got {seconds}")
     checkpoint()
     wait_until(threading.Condition(), lambda: False, seconds)
     checkpoint()

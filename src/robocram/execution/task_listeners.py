@@ -14,6 +14,7 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from typing import Any
 
+from robocram.execution.errors import ExecutionUsageError
 from robocram.execution.task import TASK_OBSERVERS, Task
 
 
@@ -34,7 +35,7 @@ class TaskListener:
 def listening(listener: TaskListener) -> Iterator[TaskListener]:
     """Tell ``listener`` about every task started inside the block (also in its threads)."""
     if not isinstance(listener, TaskListener):
-        raise TypeError(f"listening() needs a TaskListener, got {listener!r}")
+        raise ExecutionUsageError(f"listening() needs a TaskListener, got {listener!r}")
     token = TASK_OBSERVERS.set((*TASK_OBSERVERS.get(), listener))
     try:
         yield listener

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from robocram.execution.errors import ExecutionUnknownKey
 from robocram.execution.task import Task
 from robocram.execution.task_snapshot import TaskSnapshot
 from robocram.execution.tree_text import tree_text
@@ -37,7 +38,7 @@ class TaskTree:
         if path in tasks:
             return tasks[path]
         near = [p for p in tasks if p.endswith(path.rsplit("/", 1)[-1])][:3]
-        raise KeyError(f"no task at {path!r}; paths ending alike: {near or 'none'}")
+        raise ExecutionUnknownKey(f"no task at {path!r}; paths ending alike: {near or 'none'}")
 
     def find_tag(self, tag: str) -> list[Task]:
         """Every task tagged ``tag``, depth first."""

@@ -22,6 +22,7 @@ from collections.abc import Callable
 from types import FrameType, FunctionType, TracebackType
 from typing import Any, TypeVar, overload
 
+from robocram.execution.errors import ExecutionStateError, ExecutionUsageError
 from robocram.execution.par import raise_failure_of
 from robocram.execution.task import Task, TaskStatus, TaskStopped
 from robocram.execution.task_context import (
@@ -49,7 +50,7 @@ class TopLevel:
     def task(self) -> Task:
         """The root task of the current or last run."""
         if self._task is None:
-            raise RuntimeError(f"top level {self.name!r} has not run yet; no task")
+            raise ExecutionStateError(f"top level {self.name!r} has not run yet; no task")
         return self._task
 
     @property
@@ -77,7 +78,7 @@ class TopLevel:
 
     def __enter__(self) -> TopLevel:
         if self._token is not None:
-            raise RuntimeError(f"top level {self.name!r} is already running; make a new one")
+            raise ExecutionStateError(f"top level {self.name!r} is already running; make a new one")
         task = self._task = self._new_root()
         task.begin()
         self._token = _CURRENT_TASK.set(task)
@@ -131,10 +132,12 @@ def top_level(fn: Callable[..., Any] | None = None, *args: object, name: str | N
     """
     if fn is None:
         if args:
-            raise TypeError("top_level() got plan arguments but no plan; use run_top_level")
+            raise ExecutionUsageError(
+                "top_level() got plan arguments but no plan; use run_top_level"
+            )
         return TopLevel(name or "top-level")
     if args or not _decorating(fn, sys._getframe(1)):
-        raise TypeError(AMBIGUOUS.format(plan=getattr(fn, "__name__", repr(fn))))
+        raise ExecutionUsageError(AMBIGUOUS.format(plan=getattr(fn, "__name__", repr(fn))))
     return TopLevel(name or _name_of(fn))(fn)
 
 

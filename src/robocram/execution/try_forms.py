@@ -11,6 +11,7 @@ from collections.abc import Callable
 from typing import Any
 
 from robocram.execution.child_group import ChildGroup, Step, named_steps
+from robocram.execution.errors import ExecutionArgumentError
 from robocram.execution.failures import CompositeFailure, PlanFailure
 from robocram.execution.par import raise_failure_of
 from robocram.execution.seq import run_step
@@ -64,5 +65,5 @@ def _is_bug(task: Task) -> bool:
 
 def _alternatives(form: str, steps: tuple[Step, ...]) -> list[tuple[str, Callable[[], Any]]]:
     if not steps:
-        raise ValueError(f"{form} needs at least one alternative; got none")
+        raise ExecutionArgumentError(f"{form} needs at least one alternative; got none")
     return named_steps(form, steps)

@@ -3,7 +3,13 @@
 from robocram.kinematics.arm_selection import arm_joints
 from robocram.kinematics.base_ik_solver import BaseIKSolver
 from robocram.kinematics.descent import IKSettings
-from robocram.kinematics.errors import KinematicsError, TargetFrameError, UnknownNameError
+from robocram.kinematics.errors import (
+    KinematicsArgumentError,
+    KinematicsError,
+    KinematicsUsageError,
+    TargetFrameError,
+    UnknownNameError,
+)
 from robocram.kinematics.ik_result import IKResult
 from robocram.kinematics.ik_solver import CollisionCheck, IKSolver
 from robocram.kinematics.kinematics_cache import KinematicsCache
@@ -19,8 +25,10 @@ __all__ = [
     "IKResult",
     "IKSettings",
     "IKSolver",
+    "KinematicsArgumentError",
     "KinematicsCache",
     "KinematicsError",
+    "KinematicsUsageError",
     "PlanarBase",
     "ReachBound",
     "TargetFrameError",

@@ -53,3 +53,17 @@ class TargetFrameError(KinematicsError):
             f"target frame {frame!r} is no frame of {robot}; transform the target into "
             f"{root!r} first (robocram.tf.transform_pose(target, {root!r}))"
         )
+
+
+class KinematicsArgumentError(KinematicsError, ValueError):
+    """A value given to the kinematics is outside what it accepts."""
+
+    summary = "a value given to the kinematics is outside what it accepts"
+    hint = "fix the value the message names: it says the range or the choices"
+
+
+class KinematicsUsageError(KinematicsError, TypeError):
+    """The kinematics was handed the wrong kind of thing: the caller's mistake."""
+
+    summary = "the kinematics was handed the wrong kind of thing"
+    hint = "pass what the message asks for"

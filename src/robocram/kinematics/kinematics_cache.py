@@ -20,6 +20,7 @@ from collections.abc import Callable
 from typing import Generic, TypeVar
 
 from robocram.kinematics.arm_chain import ArmChain
+from robocram.kinematics.errors import KinematicsArgumentError
 from robocram.kinematics.planar_base import PlanarBase, with_planar_base
 from robocram.kinematics.seed_table import SeedTable, geometry_key
 from robocram.robots import RobotModel
@@ -37,7 +38,9 @@ class BoundedMap(Generic[K, V]):
 
     def __init__(self, size: int) -> None:
         if size < 1:
-            raise ValueError(f"a bounded map keeps at least one entry, got size={size}")
+            raise KinematicsArgumentError(
+                f"a bounded map keeps at least one entry, got size={size}"
+            )
         self.size = size
         self._entries: OrderedDict[K, V] = OrderedDict()
         self._lock = threading.Lock()  # plans run IK from several threads (par)

@@ -17,7 +17,7 @@ import numpy as np
 import pinocchio as pin
 from numpy.typing import NDArray
 
-from robocram.kinematics.errors import TargetFrameError, UnknownNameError
+from robocram.kinematics.errors import KinematicsUsageError, TargetFrameError, UnknownNameError
 from robocram.robots import RobotModel
 from robocram.robots.mimic import mimic_followers
 from robocram.tf import Pose, PoseStamped
@@ -143,7 +143,7 @@ class RobotKinematics:
         if isinstance(target, Pose):
             return target
         if not isinstance(target, PoseStamped):
-            raise TypeError(f"a target must be a Pose or a PoseStamped, got {target!r}")
+            raise KinematicsUsageError(f"a target must be a Pose or a PoseStamped, got {target!r}")
         if target.frame_id == self.root_link:
             return target.pose
         if not self.model.existFrame(target.frame_id):

@@ -11,6 +11,7 @@ from robocram.knowledge.description_check import check_facts, missing_in_facts, 
 from robocram.knowledge.errors import (
     ImplementationMismatch,
     KnowledgeError,
+    KnowledgeUsageError,
     MissingFact,
     MissingFactsError,
     UnknownArgumentError,
@@ -20,15 +21,16 @@ from robocram.knowledge.predicate_table import PREDICATE_TABLE, indicators_of, p
 from robocram.knowledge.registration import register_predicates
 
 __all__ = [
-    "PREDICATE_TABLE",
     "Argument",
     "ImplementationMismatch",
     "JointStates",
     "KnowledgeError",
+    "KnowledgeUsageError",
     "MissingFact",
     "MissingFactsError",
     "Names",
     "Need",
+    "PREDICATE_TABLE",
     "Predicate",
     "Source",
     "UnknownArgumentError",

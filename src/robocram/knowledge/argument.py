@@ -14,6 +14,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
+from robocram.knowledge.errors import KnowledgeUsageError
 from robocram.logic.convert import to_python
 from robocram.logic.terms import make_list
 from robocram.logic.value import Value
@@ -38,7 +39,7 @@ def _joint_states(value: object) -> JointStates:
 
 def _pose_stamped(value: object) -> PoseStamped:
     if not isinstance(value, PoseStamped):
-        raise TypeError(f"expected a PoseStamped, got {value!r}")
+        raise KnowledgeUsageError(f"expected a PoseStamped, got {value!r}")
     return value
 
 
@@ -95,6 +96,6 @@ def arguments_of(row: type) -> tuple[Argument, ...]:
     for f in dataclasses.fields(row):
         kind = hints[f.name]
         if kind not in _CONVERTERS:
-            raise TypeError(f"{row.__name__}.{f.name}: no converter for {kind!r}")
+            raise KnowledgeUsageError(f"{row.__name__}.{f.name}: no converter for {kind!r}")
         found.append(Argument(f.name, kind, f.metadata.get("unit", ""), _CONVERTERS[kind]))
     return tuple(found)

@@ -56,3 +56,10 @@ class MissingFactsError(KnowledgeError):
             + "\n".join(f"  - {m}" for m in missing)
         )
         self.missing = tuple(missing)
+
+
+class KnowledgeUsageError(KnowledgeError, TypeError):
+    """A typed predicate was handed the wrong kind of thing: the caller's mistake."""
+
+    summary = "a typed predicate was handed the wrong kind of thing"
+    hint = "pass what the message asks for"

@@ -16,7 +16,7 @@ from functools import cached_property
 from typing import Any, Generic, Protocol, TypeVar
 
 from robocram.knowledge.argument import Argument, arguments_of, to_prolog
-from robocram.knowledge.errors import UnknownArgumentError
+from robocram.knowledge.errors import KnowledgeUsageError, UnknownArgumentError
 from robocram.logic.terms import Term
 
 
@@ -110,5 +110,5 @@ class Predicate(Generic[Row]):
     def fact(self, row: Row) -> Term:
         """The fact that states ``row`` (tuples become Prolog lists)."""
         if not isinstance(row, self.row):
-            raise TypeError(f"{self.indicator} states a {self.row.__name__}, not {row!r}")
+            raise KnowledgeUsageError(f"{self.indicator} states a {self.row.__name__}, not {row!r}")
         return Term(self.name, tuple(to_prolog(getattr(row, a.name)) for a in self.arguments))

@@ -23,12 +23,16 @@ from robocram.logic.gc_pacing import fast_queries
 from robocram.logic.knowledge_base import KnowledgeBase
 from robocram.logic.name_atom import name_atom
 from robocram.logic.terms import Term, Var
+from robocram.logic.usage_errors import LogicArgumentError, LogicError, LogicUsageError
 from robocram.logic.value import Value
 
 __all__ = [
     "FactGroupError",
     "InferenceLimitExceeded",
     "KnowledgeBase",
+    "LogicArgumentError",
+    "LogicError",
+    "LogicUsageError",
     "PrologDomainError",
     "PrologError",
     "PrologEvaluationError",

@@ -8,6 +8,7 @@ from contextvars import ContextVar
 
 from robocram.logic.errors import PrologError
 from robocram.logic.knowledge_base import KnowledgeBase
+from robocram.logic.usage_errors import LogicUsageError
 
 __all__ = ["current_kb", "using_kb"]
 
@@ -32,7 +33,7 @@ def current_kb() -> KnowledgeBase:
 def using_kb(kb: KnowledgeBase) -> Iterator[KnowledgeBase]:
     """Make `kb` the current knowledge base inside the block (per thread / task)."""
     if not isinstance(kb, KnowledgeBase):
-        raise TypeError(f"using_kb expects a KnowledgeBase, got {type(kb).__name__}")
+        raise LogicUsageError(f"using_kb expects a KnowledgeBase, got {type(kb).__name__}")
     token = _CURRENT.set(kb)
     try:
         yield kb

@@ -16,7 +16,11 @@ from robocram.logic.builtin_flags import default_flags
 from robocram.logic.bulk import paused_gc
 from robocram.logic.clause import Clause
 from robocram.logic.convert import SelfContainingValue, to_prolog, to_python
-from robocram.logic.errors import PrologError, PrologPermissionError, PrologResourceError
+from robocram.logic.errors import (
+    PrologError,
+    PrologPermissionError,
+    PrologResourceError,
+)
 from robocram.logic.fact_groups import LIBRARY_OWNER, GroupEdit, Groups, refuse_system
 from robocram.logic.limits import Budget, QueryStopped
 from robocram.logic.loader import compile_clause, parse_indicator
@@ -28,6 +32,7 @@ from robocram.logic.reader import read_query, read_terms
 from robocram.logic.system import PRIVATE_PREFIX, library_predicates, system_predicates
 from robocram.logic.template import Slot, build, compile_term
 from robocram.logic.terms import Term, Var, deref
+from robocram.logic.usage_errors import LogicUsageError
 from robocram.logic.value import Value
 
 __all__ = ["KnowledgeBase"]
@@ -282,7 +287,7 @@ class KnowledgeBase:
     def add_predicate(self, name: str, arity: int, fn: PyPredicate) -> None:
         """Register `fn(*args)` yielding tuples of `arity` values (or None) as name/arity."""
         if not callable(fn):
-            raise TypeError(f"add_predicate({name!r}, {arity}): {fn!r} is not callable")
+            raise LogicUsageError(f"add_predicate({name!r}, {arity}): {fn!r} is not callable")
         with self._lock:
             self._user_pred((name, arity)).pyfn = fn
             self.mark_changed()
@@ -290,7 +295,7 @@ class KnowledgeBase:
     def register_function(self, name: str, fn: Callable[..., object]) -> None:
         """Make `fn` callable by name from py_fun/N and py_pred/N."""
         if not callable(fn):
-            raise TypeError(f"register_function({name!r}): {fn!r} is not callable")
+            raise LogicUsageError(f"register_function({name!r}): {fn!r} is not callable")
         self._functions[name] = fn
         self.mark_changed()
 

@@ -14,7 +14,12 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from contextvars import ContextVar
 
-from robocram.logic.errors import InferenceLimitExceeded, PrologThrow, TimeLimitExceeded
+from robocram.logic.errors import (
+    InferenceLimitExceeded,
+    PrologThrow,
+    TimeLimitExceeded,
+)
+from robocram.logic.usage_errors import LogicArgumentError
 
 __all__ = [
     "CHECK_EVERY",
@@ -89,9 +94,9 @@ class Budget:
 
     def __init__(self, max_inferences: int | None, time_limit: float | None) -> None:
         if max_inferences is not None and max_inferences < 0:
-            raise ValueError(f"max_inferences must be >= 0, got {max_inferences}")
+            raise LogicArgumentError(f"max_inferences must be >= 0, got {max_inferences}")
         if time_limit is not None and not (math.isfinite(time_limit) and time_limit >= 0):
-            raise ValueError(
+            raise LogicArgumentError(
                 f"time_limit must be a finite number >= 0 [s], got {time_limit}; "
                 "pass None for no limit"
             )

@@ -10,6 +10,8 @@ import threading
 from collections import OrderedDict
 from typing import Generic, TypeVar
 
+from robocram.logic.usage_errors import LogicArgumentError
+
 __all__ = ["LRUCache"]
 
 K = TypeVar("K")
@@ -27,7 +29,7 @@ class LRUCache(Generic[K, V]):
 
     def __init__(self, size: int) -> None:
         if size < 1:
-            raise ValueError(f"LRUCache size must be at least 1, got {size}")
+            raise LogicArgumentError(f"LRUCache size must be at least 1, got {size}")
         self.size = size
         self._items: OrderedDict[K, V] = OrderedDict()
         self._lock = threading.Lock()  # queries on one KB may run in several threads

@@ -11,6 +11,8 @@ from __future__ import annotations
 
 import re
 
+from robocram.logic.usage_errors import LogicUsageError
+
 __all__ = ["name_atom"]
 
 _PLAIN = re.compile(r"[a-z][A-Za-z0-9_]*")
@@ -26,7 +28,7 @@ def name_atom(name: str) -> str:
     ("'[]'", "'a\\\\nb'")
     """
     if not isinstance(name, str):
-        raise TypeError(f"a name written into a fact must be a str, not {name!r}")
+        raise LogicUsageError(f"a name written into a fact must be a str, not {name!r}")
     if _PLAIN.fullmatch(name):
         return name
     return "'" + "".join(_escaped(c) for c in name) + "'"

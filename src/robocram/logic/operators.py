@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from robocram.logic.usage_errors import LogicArgumentError
+
 __all__ = ["OperatorTable"]
 
 _STANDARD: list[tuple[int, str, str]] = [
@@ -42,9 +44,9 @@ class OperatorTable:
     def add(self, priority: int, kind: str, name: str) -> None:
         """Define (or with priority 0 remove) an operator, as `op/3` does."""
         if kind not in ("xfx", "xfy", "yfx", "fy", "fx", "xf", "yf"):
-            raise ValueError(f"operator type {kind!r} is not one of xfx, xfy, yfx, fy, fx")
+            raise LogicArgumentError(f"operator type {kind!r} is not one of xfx, xfy, yfx, fy, fx")
         if not 0 <= priority <= 1200:
-            raise ValueError(f"operator priority {priority} is outside 0..1200")
+            raise LogicArgumentError(f"operator priority {priority} is outside 0..1200")
         table = self.prefix if kind in ("fy", "fx") else self.infix
         if priority == 0:
             table.pop(name, None)

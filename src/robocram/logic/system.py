@@ -36,6 +36,7 @@ from robocram.logic.loader import compile_clause
 from robocram.logic.predicate import CONTROL, FrozenPred, Key, Pred
 from robocram.logic.reader import read_terms
 from robocram.logic.terms import Term
+from robocram.logic.usage_errors import LogicArgumentError
 from robocram.logic.value import Value
 
 __all__ = ["PRIVATE_PREFIX", "library_predicates", "system_predicates"]
@@ -67,7 +68,7 @@ def system_predicates() -> Mapping[Key, Pred]:
         for b in builtins:
             for arity in b.arities:
                 if (b.name, arity) in table:
-                    raise ValueError(f"built-in {b.name}/{arity} is listed twice")
+                    raise LogicArgumentError(f"built-in {b.name}/{arity} is listed twice")
                 table[(b.name, arity)] = FrozenPred(b.name, arity, b.kind, b.fn)
     return MappingProxyType(table)
 

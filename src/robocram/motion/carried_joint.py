@@ -12,6 +12,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from robocram.motion.errors import MotionError
+
 
 @dataclass(frozen=True)
 class CarriedJoint:
@@ -24,7 +26,7 @@ class CarriedJoint:
 
     def __post_init__(self) -> None:
         if not (math.isfinite(self.start) and math.isfinite(self.end)):
-            raise ValueError(
+            raise MotionError(
                 f"a carried joint's values are finite [m | rad], got {self.start} and "
                 f"{self.end} for {self.obj!r}'s {self.joint!r}"
             )

@@ -9,6 +9,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from robocram.motion.errors import MotionError
+
 
 @dataclass(frozen=True)
 class ContactAllowance:
@@ -20,7 +22,7 @@ class ContactAllowance:
 
     def __post_init__(self) -> None:
         if not self.depth >= 0.0:
-            raise ValueError(
+            raise MotionError(
                 f"a contact allowance's depth is a bound in metres >= 0, got {self.depth} "
                 f"for {self.robot_side!r} and {self.other!r}"
             )

@@ -23,6 +23,7 @@ import numpy.typing as npt
 
 from robocram.motion.carried_joint import CarriedJoint
 from robocram.motion.contact_allowance import ContactAllowance
+from robocram.motion.errors import MotionError
 
 FloatArray = npt.NDArray[np.float64]
 BASE_JOINTS = ("x", "y", "yaw")  # [m, m, rad] in map: a base path's joints
@@ -61,7 +62,7 @@ class PointTable(Sequence[TrajectoryPoint]):
         stamps = np.array(times, dtype=float)
         if stamps.ndim != 1 or any(c.ndim != 2 or len(c) != len(stamps) for c in columns):
             shapes = [c.shape for c in columns]
-            raise ValueError(
+            raise MotionError(
                 f"a point table needs (points, joints) positions, velocities and "
                 f"accelerations and (points,) times, got {shapes} and {stamps.shape}"
             )
@@ -160,12 +161,12 @@ class JointTrajectory:
             return
         for i, point in enumerate(self.points):
             if len(point.positions) != width:
-                raise ValueError(
+                raise MotionError(
                     f"trajectory point {i} has {len(point.positions)} positions for "
                     f"{width} joints {self.joint_names}"
                 )
             if i and point.time_from_start <= self.points[i - 1].time_from_start:
-                raise ValueError(
+                raise MotionError(
                     f"trajectory point {i} is at {point.time_from_start} s, not after point "
                     f"{i - 1} at {self.points[i - 1].time_from_start} s"
                 )
@@ -173,7 +174,7 @@ class JointTrajectory:
     def _check_table(self, table: PointTable, width: int) -> None:
         """The checks of the points one by one, on the arrays at once (same messages)."""
         if len(table) and table.positions.shape[1] != width:
-            raise ValueError(
+            raise MotionError(
                 f"trajectory point 0 has {table.positions.shape[1]} positions for "
                 f"{width} joints {self.joint_names}"
             )
@@ -181,7 +182,7 @@ class JointTrajectory:
         late = np.flatnonzero(times[1:] <= times[:-1])
         if len(late):
             i = int(late[0]) + 1
-            raise ValueError(
+            raise MotionError(
                 f"trajectory point {i} is at {float(times[i])} s, not after point "
                 f"{i - 1} at {float(times[i - 1])} s"
             )
@@ -232,7 +233,7 @@ class JointTrajectory:
     def sampled(self, period: float) -> Iterator[tuple[float, dict[str, float]]]:
         """``(t, {joint: position})`` every ``period`` [s], the last point included."""
         if period <= 0.0:
-            raise ValueError(f"sampling period must be positive, got {period} s")
+            raise MotionError(f"sampling period must be positive, got {period} s")
         steps = int(np.ceil(self.duration / period))  # a motion of no time: one sample
         for k in range(steps + 1):
             t = min(k * period, self.duration)

@@ -9,6 +9,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 from robocram.execution.failures import ManipulationGoalNotReached
+from robocram.motion.errors import MotionError
 from robocram.tf import Pose
 
 POSITION_TOLERANCE = 0.01  # [m] between the reached tool frame and the target
@@ -48,7 +49,7 @@ def joint_values(configuration: object) -> dict[str, float]:
         isinstance(p, list | tuple) and len(p) == 2 for p in configuration
     ):
         return {str(k): float(v) for k, v in configuration}
-    raise ValueError(
+    raise MotionError(
         f"an arm configuration is a {{joint: value}} mapping or [[joint, value], ...], "
         f"got {configuration!r}"
     )

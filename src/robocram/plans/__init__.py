@@ -12,7 +12,13 @@ from robocram.plans.action_table import (
 from robocram.plans.attempt_log import Attempt, AttemptLog
 from robocram.plans.containers import Container, close_container, container, open_container
 from robocram.plans.deliver import deliver
-from robocram.plans.errors import DeliveryExhausted, FetchExhausted, PlanSetupError, SearchExhausted
+from robocram.plans.errors import (
+    DeliveryExhausted,
+    FetchExhausted,
+    PlanArgumentError,
+    PlanSetupError,
+    SearchExhausted,
+)
 from robocram.plans.fetch import fetch
 from robocram.plans.grasp_failures import (
     ObjectUngraspable,
@@ -41,6 +47,7 @@ __all__ = [
     "PickUpFailed",
     "PickUpUnreachable",
     "PlacingFailed",
+    "PlanArgumentError",
     "PlanSetupError",
     "SearchExhausted",
     "TransportResult",

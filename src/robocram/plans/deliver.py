@@ -27,7 +27,7 @@ from robocram.execution.failures import (
 )
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import navigate
-from robocram.plans.errors import DeliveryExhausted
+from robocram.plans.errors import DeliveryExhausted, PlanArgumentError
 from robocram.plans.location_poses import location_poses, next_pose
 from robocram.plans.pick_object import GRASPING, Held
 from robocram.plans.place_object import held_object, place_object
@@ -144,7 +144,7 @@ def deliver(
             ``stand_retries`` per spot let the robot put the object down.
     """
     if stand_retries < 1 or place_retries < 1:
-        raise ValueError(
+        raise PlanArgumentError(
             f"stand_retries and place_retries must be at least 1, got {stand_retries} "
             f"and {place_retries}"
         )

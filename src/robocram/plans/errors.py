@@ -38,3 +38,10 @@ class DeliveryExhausted(ObjectUndeliverable):
     causes: tuple[Exception, ...] | None = None  # one failure per attempt, in order
     attempts: int | None = None  # stands tried
     hint = "give a target the robot can stand beside, or raise place_retries / stand_retries"
+
+
+class PlanArgumentError(ValueError):
+    """A value given to a plan is outside what it accepts."""
+
+    summary = "a value given to a plan is outside what it accepts"
+    hint = "fix the value the message names: it says the range or the choices"

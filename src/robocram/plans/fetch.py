@@ -22,7 +22,7 @@ from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import detect, look, navigate, park_arms
 from robocram.plans.container_access import OpenedContainer
 from robocram.plans.culprits import blamed, culprit_clause
-from robocram.plans.errors import FetchExhausted
+from robocram.plans.errors import FetchExhausted, PlanArgumentError
 from robocram.plans.location_poses import location_poses, next_pose
 from robocram.plans.pick_object import Held, pick_up_object
 from robocram.plans.robot_facts import base_frame, current_robot, robot_arms
@@ -136,7 +136,7 @@ def fetch(
         FetchExhausted: no stand within ``stand_retries`` led to the object being held.
     """
     if stand_retries < 1:
-        raise ValueError(f"stand_retries must be at least 1, got {stand_retries}")
+        raise PlanArgumentError(f"stand_retries must be at least 1, got {stand_retries}")
     log = log if log is not None else AttemptLog()
     seen = perceived(object)
     where = transform_pose(seen.get("pose"), "map")  # before the base moves: its frame moves

@@ -16,7 +16,7 @@ from robocram.designators.tool_answers import CuttingAnswer, PouringAnswer, Tool
 from robocram.execution import perform
 from robocram.knowledge.world_predicates import OBJECT_POSE
 from robocram.logic import current_kb
-from robocram.plans.errors import PlanSetupError
+from robocram.plans.errors import PlanArgumentError, PlanSetupError
 from robocram.plans.robot_facts import current_robot
 from robocram.plans.tool_coverage import covered_share
 from robocram.plans.tool_objects import (
@@ -137,7 +137,7 @@ def _region(region: object) -> tuple[tuple[float, float], tuple[float, float]]:
     try:
         flat = [float(v) for pair in region for v in pair]  # type: ignore[attr-defined]
         if len(flat) != 4 or len(region) != 2:  # type: ignore[arg-type]
-            raise ValueError(region)
+            raise PlanArgumentError(region)
         values = (flat[0], flat[1], flat[2], flat[3])
     except (TypeError, ValueError) as err:
         raise PlanSetupError(

@@ -7,7 +7,10 @@ runs the same plans without physics, only logging commands. ``prospect(world, "p
 plan)`` projects a plan and puts the world back: what it would do, to choose before doing.
 """
 
-from robocram.projection.errors import ProjectionError
+from robocram.projection.errors import (
+    ProjectionError,
+    ProjectionUsageError,
+)
 from robocram.projection.neck import looking_orientation
 from robocram.projection.perception import PerceivedObject
 from robocram.projection.projected_robot import ProjectedRobot
@@ -26,8 +29,9 @@ __all__ = [
     "LiveTransformTree",
     "PerceivedObject",
     "ProjectedRobot",
-    "Prospect",
     "ProjectionError",
+    "ProjectionUsageError",
+    "Prospect",
     "RecordedState",
     "RecordingRun",
     "SimulatedRun",

@@ -29,3 +29,10 @@ def unknown_name(kind: str, name: object, owner: str, known: Iterable[str]) -> P
     else:
         hint = f"; {owner} has {len(pool)} {kind}s"
     return ProjectionError(f"{kind} {name!r} not in {owner}{hint}")
+
+
+class ProjectionUsageError(TypeError):
+    """Projection was handed the wrong kind of thing: the caller's mistake."""
+
+    summary = "projection was handed the wrong kind of thing"
+    hint = "pass what the message asks for"

@@ -22,6 +22,7 @@ from robocram.designators import ObjectDesignator, Quantifier
 from robocram.designators.perceived_object import PerceivedObject
 from robocram.execution import checkpoint
 from robocram.execution.failures import PerceptionBlockedByRobot, PerceptionObjectNotFound
+from robocram.projection.errors import ProjectionUsageError
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.projection.view_blocker import blocking_fix
 from robocram.tf import PoseStamped, Vector3
@@ -154,7 +155,7 @@ def detect(
         PerceptionObjectNotFound: no visible object fits the designator.
     """
     if not isinstance(designator, ObjectDesignator):
-        raise TypeError(
+        raise ProjectionUsageError(
             f"detecting needs an object designator (an.object(type=...)), got {designator!r}"
         )
     seen = visible_matches(robot, designator)

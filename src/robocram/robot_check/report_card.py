@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from robocram.robot_check.errors import CheckUnknownKey
+
 
 @dataclass(frozen=True)
 class CheckResult:
@@ -42,7 +44,9 @@ class ReportCard:
         for r in self.results:
             if r.name == name:
                 return r
-        raise KeyError(f"no check {name!r} on {self.robot}; made: {[r.name for r in self.results]}")
+        raise CheckUnknownKey(
+            f"no check {name!r} on {self.robot}; made: {[r.name for r in self.results]}"
+        )
 
     def render(self) -> str:
         """The card as text: a title, one line per check, a summary."""

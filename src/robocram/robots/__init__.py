@@ -13,6 +13,7 @@ from robocram.robots.draft import DraftDescription, draft_description
 from robocram.robots.errors import (
     DescriptionCheckError,
     DescriptionError,
+    DescriptionUsageError,
     GripperDescriptionError,
     JointValueError,
     LimitValueError,
@@ -42,6 +43,7 @@ __all__ = [
     "CameraDescription",
     "DescriptionCheckError",
     "DescriptionError",
+    "DescriptionUsageError",
     "DescriptionWarning",
     "DraftDescription",
     "Finding",

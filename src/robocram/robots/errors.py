@@ -155,3 +155,10 @@ class GripperDescriptionError(DescriptionError):
         self.arm = arm
         self.problem = problem
         super().__init__(f"{robot}: gripper of arm {arm!r}: {problem}; {fix}")
+
+
+class DescriptionUsageError(DescriptionError, TypeError):
+    """A robot description was handed the wrong kind of thing: the caller's mistake."""
+
+    summary = "a robot description was handed the wrong kind of thing"
+    hint = "pass what the message asks for"

@@ -20,7 +20,7 @@ from robocram.robots.description_check import (
     semantic_findings,
 )
 from robocram.robots.description_source import description_from
-from robocram.robots.errors import DescriptionCheckError
+from robocram.robots.errors import DescriptionCheckError, DescriptionUsageError
 from robocram.robots.findings import warn
 from robocram.robots.limit_check import check_acceleration_limits, check_rate_limits
 from robocram.robots.package_resolver import PackageResolver
@@ -50,7 +50,7 @@ def load_description(
     elif isinstance(name_or_desc, RobotDescription):
         desc = name_or_desc
     else:
-        raise TypeError(
+        raise DescriptionUsageError(
             "load_description takes a robot name or a RobotDescription, got a "
             f"{type(name_or_desc).__name__}"
         )

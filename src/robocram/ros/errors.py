@@ -73,3 +73,24 @@ class RosCommandError(SetupFailure):
 
     summary = "the command does not fit the robot behind ROS"
     hint = "fix the name or value in the motion designator"
+
+
+class RosArgumentError(RosError, ValueError):
+    """A value given to the ROS layer is outside what it accepts."""
+
+    summary = "a value given to the ROS layer is outside what it accepts"
+    hint = "fix the value the message names: it says the range or the choices"
+
+
+class RosUsageError(RosError, TypeError):
+    """The ROS layer was handed the wrong kind of thing: the caller's mistake."""
+
+    summary = "the ROS layer was handed the wrong kind of thing"
+    hint = "pass what the message asks for"
+
+
+class RosUnknownKey(RosError, KeyError):
+    """A name that the ROS layer does not know; the message lists the known ones."""
+
+    summary = "a name that the ROS layer does not know"
+    hint = "use one of the names the message lists"

@@ -10,6 +10,8 @@ from __future__ import annotations
 import importlib
 from typing import Any
 
+from robocram.ros.errors import RosArgumentError
+
 RosDict = dict[str, Any]
 
 
@@ -17,7 +19,7 @@ def message_class(type_name: str) -> Any:
     """The genpy class of ``pkg/Name``, e.g. ``control_msgs/FollowJointTrajectoryGoal``."""
     package, _, name = type_name.partition("/")
     if not name:
-        raise ValueError(f"message type {type_name!r} is not of the form package/Name")
+        raise RosArgumentError(f"message type {type_name!r} is not of the form package/Name")
     return getattr(importlib.import_module(f"{package}.msg"), name)
 
 

@@ -23,7 +23,7 @@ from robocram.execution.failures import (
     TorsoPathBlocked,
 )
 from robocram.logic import Value
-from robocram.ros.errors import RosCommandError
+from robocram.ros.errors import RosCommandError, RosUsageError
 from robocram.ros.gripper_goal import move_gripper
 from robocram.ros.head_aim import pan_tilt_towards
 from robocram.ros.ros_robot_client import RosRobotClient
@@ -175,7 +175,7 @@ class PerceptionPM(RosProcessModule):
     def detect(self, designator: object) -> ObjectDesignator | list[ObjectDesignator]:
         """Ask the perception server for the objects fitting ``designator``."""
         if not isinstance(designator, ObjectDesignator):
-            raise TypeError(
+            raise RosUsageError(
                 f"detecting needs an object designator (an.object(type=...)), got {designator!r}"
             )
         goal = {

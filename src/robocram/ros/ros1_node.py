@@ -28,6 +28,7 @@ import time
 from multiprocessing.connection import Connection
 from typing import Any, Protocol
 
+from robocram.ros.errors import RosUnknownKey
 from robocram.ros.message_dicts import message_class, to_dict, to_message
 from robocram.ros.node_config import NodeConfig
 from robocram.ros.node_state import NodeState
@@ -117,7 +118,9 @@ class RosNode(NodeState):
 
         entry = self.servers.get(server)
         if entry is None:
-            raise KeyError(f"no action server {server!r} configured; have {sorted(self.servers)}")
+            raise RosUnknownKey(
+                f"no action server {server!r} configured; have {sorted(self.servers)}"
+            )
         if not entry.client.wait_for_server(rospy.Duration(self.config.connect_timeout)):
             raise ConnectionError(
                 f"no action server {server!r} answered within {self.config.connect_timeout} s"

@@ -16,7 +16,7 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
-from robocram.ros.errors import RosExtraMissing
+from robocram.ros.errors import RosArgumentError, RosExtraMissing
 
 PREFIX_VARIABLE = "ROBOCRAM_ROS2_PREFIX"  # overrides <venv>/ros2
 HIDDEN_VARIABLE = "ROBOCRAM_HIDDEN_PATHS"  # ROS 1's path entries, taken off a child's path
@@ -59,7 +59,7 @@ class Ros2Prefix:
     def environment(self, domain_id: int, base: dict[str, str] | None = None) -> dict[str, str]:
         """The environment of a child process on ROS 2 domain ``domain_id`` (0..101)."""
         if not 0 <= domain_id <= 101:
-            raise ValueError(f"ROS_DOMAIN_ID must be in 0..101, got {domain_id}")
+            raise RosArgumentError(f"ROS_DOMAIN_ID must be in 0..101, got {domain_id}")
         env = dict(os.environ if base is None else base)
         hidden = ros1_paths()
         python_path = [str(self.site_packages)]

@@ -12,6 +12,7 @@ from __future__ import annotations
 import importlib
 from typing import Any
 
+from robocram.ros.errors import RosArgumentError, RosUnknownKey
 from robocram.ros.transport import RosDict
 
 # rclpy's nodes, clients, goal handles and generated message classes: the wheels ship no
@@ -29,7 +30,7 @@ def action_class(type_name: str) -> RclpyObject:
     """The rclpy action class of ``pkg/Name`` (``pkg/action/Name`` also works)."""
     package, _, name = type_name.replace("/action/", "/").partition("/")
     if not name:
-        raise ValueError(f"action type {type_name!r} is not of the form package/Name")
+        raise RosArgumentError(f"action type {type_name!r} is not of the form package/Name")
     return getattr(importlib.import_module(f"{package}.action"), name)
 
 
@@ -37,7 +38,7 @@ def message_class(type_name: str) -> RclpyObject:
     """The rclpy message class of ``pkg/Name`` (``pkg/msg/Name`` also works)."""
     package, _, name = type_name.replace("/msg/", "/").partition("/")
     if not name:
-        raise ValueError(f"message type {type_name!r} is not of the form package/Name")
+        raise RosArgumentError(f"message type {type_name!r} is not of the form package/Name")
     return getattr(importlib.import_module(f"{package}.msg"), name)
 
 
@@ -77,7 +78,7 @@ def fill(message: RclpyObject, data: RosDict, path: str = "") -> RclpyObject:
         if key not in fields:
             if key in DROPPED:
                 continue
-            raise KeyError(
+            raise RosUnknownKey(
                 f"{type(message).__name__} has no field {path}{key!r}; it has {sorted(fields)}"
             )
         current = getattr(message, key)

@@ -20,6 +20,7 @@ import time
 from dataclasses import dataclass, field
 from multiprocessing.connection import Connection
 
+from robocram.ros.errors import RosUnknownKey
 from robocram.ros.node_config import NodeConfig
 from robocram.ros.node_state import NodeState
 from robocram.ros.ros1_node import BLOCKING_OPS, handle_request
@@ -145,7 +146,9 @@ class Ros2Node(NodeState):
         """Send a goal once the server is there; its end arrives as a ``goal`` message."""
         entry = self.servers.get(server)
         if entry is None:
-            raise KeyError(f"no action server {server!r} configured; have {sorted(self.servers)}")
+            raise RosUnknownKey(
+                f"no action server {server!r} configured; have {sorted(self.servers)}"
+            )
         if not entry.client.wait_for_server(timeout_sec=self.config.connect_timeout):
             raise ConnectionError(
                 f"no action server {server!r} answered within {self.config.connect_timeout} s"

@@ -18,6 +18,8 @@ from __future__ import annotations
 import struct
 from collections.abc import Iterable
 
+from robocram.ros.errors import RosArgumentError
+
 Transform = tuple[str, str, tuple[float, float, float], tuple[float, float, float, float]]
 
 
@@ -32,7 +34,7 @@ def read_tf_message(raw: bytes) -> list[Transform]:
         ValueError: the bytes are not a CDR-encoded TFMessage (truncated, bad header).
     """
     if len(raw) < 8:
-        raise ValueError(f"a TFMessage needs at least 8 bytes, got {len(raw)}")
+        raise RosArgumentError(f"a TFMessage needs at least 8 bytes, got {len(raw)}")
     order = "<" if raw[1] == 1 else ">"
     data = memoryview(raw)[4:]
     try:
@@ -49,7 +51,7 @@ def read_tf_message(raw: bytes) -> list[Transform]:
             transforms.append((parent, child, (x, y, z), (qx, qy, qz, qw)))
             offset = _align(offset, 4)
     except struct.error as err:
-        raise ValueError(f"not a CDR TFMessage: {err}") from err
+        raise RosArgumentError(f"not a CDR TFMessage: {err}") from err
     return transforms
 
 

@@ -32,6 +32,7 @@ from robocram.ros.message_dicts import message_class, to_dict, to_message
 from robocram.ros.ros_config import RosConfig
 from robocram.ros.transport import RosDict
 from robocram.ros_driver import goals, pr2_controllers
+from robocram.ros_driver.errors import DriverArgumentError
 from robocram.ros_driver.goals import RosMessage
 from robocram.ros_driver.held_handles import HeldHandles
 from robocram.ros_driver.motion import MotionOptions, Stepper
@@ -55,7 +56,9 @@ def _handler(resource: str, action_type: str, config: RosConfig, controllers: st
     if action_type == "pr2_controllers_msgs/SingleJointPosition":
         joint = load_description(config.robot).torso_joint
         if resource != "torso" or joint is None:
-            raise ValueError(f"the driver serves SingleJointPosition for a torso, not {resource}")
+            raise DriverArgumentError(
+                f"the driver serves SingleJointPosition for a torso, not {resource}"
+            )
         return partial(goals.single_joint_position, joint=joint)
     return {
         "move_base_msgs/MoveBase": goals.move_base,
@@ -92,9 +95,11 @@ class ProjectionDriver:
         ``{"server", "action_type", "goal"}`` (goal as message dicts), before it runs.
         ``controllers``: ``"projection"`` or ``"pr2"``; ``clock_offset`` [s]."""
         if fault not in FAULTS:
-            raise ValueError(f"driver fault {fault!r} is none of {FAULTS}")
+            raise DriverArgumentError(f"driver fault {fault!r} is none of {FAULTS}")
         if controllers not in CONTROLLERS:
-            raise ValueError(f"driver controllers {controllers!r} are none of {CONTROLLERS}")
+            raise DriverArgumentError(
+                f"driver controllers {controllers!r} are none of {CONTROLLERS}"
+            )
         self.controllers = controllers
         self.clock_offset = clock_offset
         self.world = world

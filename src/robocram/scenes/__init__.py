@@ -7,7 +7,11 @@ from robocram.scenes.environment_description import (
 )
 from robocram.scenes.environment_draft import EnvironmentDraft, draft_environment
 from robocram.scenes.environment_scene import EnvironmentScene, environment_scene
-from robocram.scenes.errors import SceneError, UnfitRobotError
+from robocram.scenes.errors import (
+    SceneArgumentError,
+    SceneError,
+    UnfitRobotError,
+)
 from robocram.scenes.kitchen_scene import KitchenScene, kitchen_scene, kitchen_urdf
 from robocram.scenes.placement import TabletopPlacement, tabletop_placement
 from robocram.scenes.stand_in import StandIn
@@ -19,11 +23,12 @@ __all__ = [
     "EnvironmentDraft",
     "EnvironmentScene",
     "KitchenScene",
+    "SceneArgumentError",
     "SceneError",
     "StandIn",
+    "SurfaceDescription",
     "TabletopPlacement",
     "TabletopScene",
-    "SurfaceDescription",
     "UnfitRobotError",
     "draft_environment",
     "environment_scene",

@@ -14,3 +14,10 @@ class UnfitRobotError(SceneError):
         self.robot = robot
         self.why = why
         super().__init__(f"cannot build the scene for {robot!r}: {why}")
+
+
+class SceneArgumentError(SceneError, ValueError):
+    """A value given to a scene is outside what it accepts."""
+
+    summary = "a value given to a scene is outside what it accepts"
+    hint = "fix the value the message names: it says the range or the choices"

@@ -14,6 +14,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal
 
+from robocram.scenes.errors import SceneArgumentError
 from robocram.tf import Vector3
 
 StandInKind = Literal["box", "open_box", "table"]
@@ -33,11 +34,13 @@ class StandIn:
 
     def __post_init__(self) -> None:
         if min(self.size) <= 0.0:
-            raise ValueError(f"stand-in of {self.link!r}: size {self.size} must be positive")
+            raise SceneArgumentError(
+                f"stand-in of {self.link!r}: size {self.size} must be positive"
+            )
         if self.kind == "open_box" and min(self.size) <= 2 * WALL:
-            raise ValueError(f"open stand-in of {self.link!r}: {self.size} leaves no room")
+            raise SceneArgumentError(f"open stand-in of {self.link!r}: {self.size} leaves no room")
         if self.kind == "table" and (min(self.size[:2]) <= 2 * LEG or self.size[2] <= TABLE_TOP):
-            raise ValueError(f"table stand-in of {self.link!r}: {self.size} leaves no legs")
+            raise SceneArgumentError(f"table stand-in of {self.link!r}: {self.size} leaves no legs")
 
     def boxes(self) -> tuple[tuple[Vector3, Vector3], ...]:
         """``(centre, size)`` of each box making the shape, in the link's frame."""

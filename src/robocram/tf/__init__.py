@@ -1,6 +1,13 @@
 """Frames and poses: positions [m], quaternions (x, y, z, w), stamped poses and transforms."""
 
-from robocram.tf.errors import PoseValueError, RosMessageError, TfError, TransformError
+from robocram.tf.errors import (
+    PoseValueError,
+    RosMessageError,
+    TfArgumentError,
+    TfError,
+    TfUsageError,
+    TransformError,
+)
 from robocram.tf.pose import Pose, PoseLike, Vector3
 from robocram.tf.quaternion import Quaternion
 from robocram.tf.ros_messages import (
@@ -26,7 +33,9 @@ __all__ = [
     "PoseValueError",
     "Quaternion",
     "RosMessageError",
+    "TfArgumentError",
     "TfError",
+    "TfUsageError",
     "TransformError",
     "TransformSource",
     "TransformStamped",

@@ -59,3 +59,17 @@ def unknown_frame(frame: str, known: Iterable[str], what: str = "frame") -> Tran
     if not known:
         hint = "; the transform tree is empty: feed it with set_transform or update_from"
     return TransformError(f"unknown {what} {frame!r}{hint}", frame, known)
+
+
+class TfArgumentError(TfError, ValueError):
+    """A value given to the transform layer is outside what it accepts."""
+
+    summary = "a value given to the transform layer is outside what it accepts"
+    hint = "fix the value the message names: it says the range or the choices"
+
+
+class TfUsageError(TfError, TypeError):
+    """The transform layer was handed the wrong kind of thing: the caller's mistake."""
+
+    summary = "the transform layer was handed the wrong kind of thing"
+    hint = "pass what the message asks for"

@@ -16,7 +16,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from robocram.tf import quaternion as quat
-from robocram.tf.errors import PoseValueError
+from robocram.tf.errors import PoseValueError, TfUsageError
 
 Vector3 = tuple[float, float, float]
 PoseLike = Union["Pose", Sequence[float], tuple[Sequence[float], Sequence[float]]]
@@ -62,7 +62,7 @@ class Pose:
                 return cls(tuple(pos), tuple(ori))  # type: ignore[arg-type]
         if isinstance(value, Sequence) and len(value) == 3:
             return cls(tuple(value))  # type: ignore[arg-type]
-        raise TypeError(
+        raise TfUsageError(
             f"cannot read a pose from {value!r}; give Pose((x, y, z), (qx, qy, qz, qw)), "
             "(x, y, z) or ((x, y, z), (qx, qy, qz, qw))"
         )

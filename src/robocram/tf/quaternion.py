@@ -10,7 +10,7 @@ import math
 import numpy as np
 from numpy.typing import NDArray
 
-from robocram.tf.errors import PoseValueError
+from robocram.tf.errors import PoseValueError, TfArgumentError
 
 Quaternion = tuple[float, float, float, float]
 IDENTITY: Quaternion = (0.0, 0.0, 0.0, 1.0)
@@ -128,7 +128,7 @@ def from_axis_angle(axis: tuple[float, float, float], angle: float) -> Quaternio
     """Quaternion rotating by ``angle`` [rad] about ``axis`` (need not be unit)."""
     n = math.sqrt(sum(c * c for c in axis))
     if n < 1e-12:
-        raise ValueError(f"rotation axis {axis!r} has zero length")
+        raise TfArgumentError(f"rotation axis {axis!r} has zero length")
     s = math.sin(angle / 2) / n
     return (axis[0] * s, axis[1] * s, axis[2] * s, math.cos(angle / 2))
 

@@ -12,19 +12,20 @@ import math
 from dataclasses import dataclass
 
 from robocram.tf import quaternion as quat
+from robocram.tf.errors import TfArgumentError
 from robocram.tf.pose import Pose, PoseLike, Vector3, _vector3
 
 
 def _frame_name(name: str, what: str) -> str:
     if not isinstance(name, str) or not name:
-        raise ValueError(f"{what} must be a non-empty frame name, got {name!r}")
+        raise TfArgumentError(f"{what} must be a non-empty frame name, got {name!r}")
     return name
 
 
 def _stamp(stamp: float) -> float:
     value = float(stamp)
     if not math.isfinite(value):
-        raise ValueError(f"stamp must be a finite time [s], got {stamp!r}")
+        raise TfArgumentError(f"stamp must be a finite time [s], got {stamp!r}")
     return value
 
 
@@ -93,7 +94,7 @@ class TransformStamped:
             self, "child_frame_id", _frame_name(self.child_frame_id, "child_frame_id")
         )
         if self.frame_id == self.child_frame_id:
-            raise ValueError(f"a transform from {self.frame_id!r} to itself is meaningless")
+            raise TfArgumentError(f"a transform from {self.frame_id!r} to itself is meaningless")
         object.__setattr__(self, "translation", _vector3(self.translation, "translation"))
         object.__setattr__(self, "rotation", quat.normalized(self.rotation))
         object.__setattr__(self, "stamp", _stamp(self.stamp))

@@ -11,7 +11,7 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from contextvars import ContextVar
 
-from robocram.tf.errors import TfError
+from robocram.tf.errors import TfError, TfUsageError
 from robocram.tf.stamped import PoseStamped
 from robocram.tf.transform_tree import TransformTree
 
@@ -35,7 +35,7 @@ def current_transform_tree() -> TransformTree:
 def using_transform_tree(tree: TransformTree) -> Iterator[TransformTree]:
     """Bind ``tree`` as the current transform tree inside the ``with`` block."""
     if not isinstance(tree, TransformTree):
-        raise TypeError(f"using_transform_tree needs a TransformTree, got {tree!r}")
+        raise TfUsageError(f"using_transform_tree needs a TransformTree, got {tree!r}")
     token = _CURRENT_TREE.set(tree)
     try:
         yield tree

@@ -12,7 +12,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Protocol, overload, runtime_checkable
 
-from robocram.tf.errors import TransformError, unknown_frame
+from robocram.tf.errors import TfUsageError, TransformError, unknown_frame
 from robocram.tf.pose import Pose, PoseLike
 from robocram.tf.stamped import PoseStamped, TransformStamped
 
@@ -72,7 +72,7 @@ class TransformTree:
         if isinstance(transform, TransformStamped):
             t = transform
         elif child is None or pose_in_parent is None:
-            raise TypeError("set_transform takes a TransformStamped or (parent, child, pose)")
+            raise TfUsageError("set_transform takes a TransformStamped or (parent, child, pose)")
         else:
             t = TransformStamped.from_pose(transform, child, pose_in_parent, stamp)
         self._check_no_cycle(t.frame_id, t.child_frame_id)
@@ -166,7 +166,7 @@ class TransformTree:
     def transform_pose(self, pose: PoseStamped, target_frame: str) -> PoseStamped:
         """The same pose expressed in ``target_frame``; the stamp is kept."""
         if not isinstance(pose, PoseStamped):
-            raise TypeError(
+            raise TfUsageError(
                 f"transform_pose needs a PoseStamped (a pose with its frame), got {pose!r}"
             )
         if pose.frame_id == target_frame:

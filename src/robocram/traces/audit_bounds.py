@@ -21,6 +21,7 @@ from collections.abc import Callable, Collection
 from dataclasses import dataclass, field
 
 from robocram.motion.self_collision_matrix import SelfCollisionMatrix
+from robocram.traces.errors import TraceArgumentError
 from robocram.traces.link_adjacency import LinkPair, adjacent_links
 from robocram.world import World
 
@@ -57,7 +58,11 @@ class AuditBounds:
     def __post_init__(self) -> None:
         for name in ("penetration", "held_depth", "limit_tolerance", "teleport"):
             if not getattr(self, name) >= 0.0:
-                raise ValueError(f"audit bound {name} must be >= 0, got {getattr(self, name)}")
+                raise TraceArgumentError(
+                    f"audit bound {name} must be >= 0, got {getattr(self, name)}"
+                )
         for name in ("joint_step", "point_step"):
             if not getattr(self, name) > 0.0:
-                raise ValueError(f"audit step {name} must be > 0, got {getattr(self, name)}")
+                raise TraceArgumentError(
+                    f"audit step {name} must be > 0, got {getattr(self, name)}"
+                )

@@ -138,3 +138,24 @@ class DamagedTrajectory(TraceError):  # noqa: N818 - reads as what the row is
 
 class DamagedTrajectoryWarning(UserWarning):
     """A replay skipped a damaged trajectory row (the message names the run and the row)."""
+
+
+class TraceArgumentError(TraceError, ValueError):
+    """A value given to the trace store is outside what it accepts."""
+
+    summary = "a value given to the trace store is outside what it accepts"
+    hint = "fix the value the message names: it says the range or the choices"
+
+
+class TraceUnknownKey(TraceError, KeyError):
+    """A name that the trace store does not know; the message lists the known ones."""
+
+    summary = "a name that the trace store does not know"
+    hint = "use one of the names the message lists"
+
+
+class TraceStateError(TraceError, RuntimeError):
+    """The trace store was used out of order; the message says what must happen first."""
+
+    summary = "the trace store was used out of order"
+    hint = "the message says what must happen first"

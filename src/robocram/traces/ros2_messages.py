@@ -8,6 +8,8 @@ below are ROS 2 Humble's.
 
 from __future__ import annotations
 
+from robocram.traces.errors import TraceUnknownKey
+
 _MARKER = """int32 ARROW=0
 int32 CUBE=1
 int32 SPHERE=2
@@ -114,7 +116,7 @@ def message_definition(name: str) -> str:
     Dependencies are headed ``MSG: package/Type``, as ``ros2 bag`` writes them.
     """
     if name not in _DEFINITIONS:
-        raise KeyError(f"no ROS 2 definition for {name!r}; known: {sorted(_DEFINITIONS)}")
+        raise TraceUnknownKey(f"no ROS 2 definition for {name!r}; known: {sorted(_DEFINITIONS)}")
     parts = [_DEFINITIONS[name]]
     for dep in _dependencies(name):
         package, _, kind = dep.split("/")

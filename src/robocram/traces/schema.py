@@ -27,6 +27,8 @@ from sqlalchemy import (
 )
 from sqlalchemy.orm import DeclarativeBase, Mapped, mapped_column
 
+from robocram.traces.errors import TraceArgumentError
+
 # 2: world state rows, task ids per run; 3: costmaps; 4: trajectories; 5: URDFs;
 # 6: trajectories' allowed contacts; 7: the joints of other objects trajectories carry;
 # 8: the bodies a run added after its start (particles, slices), with each world state
@@ -199,7 +201,7 @@ TASKS_PER_RUN = 1 << 32  # task keys of one run: run id * TASKS_PER_RUN + start 
 def task_key(run_id: int, order: int) -> int:
     """The database-wide id of the ``order``-th task (0: the top level) of run ``run_id``."""
     if not 0 <= order < TASKS_PER_RUN:
-        raise ValueError(f"a run holds at most {TASKS_PER_RUN} tasks, got task {order}")
+        raise TraceArgumentError(f"a run holds at most {TASKS_PER_RUN} tasks, got task {order}")
     return run_id * TASKS_PER_RUN + order
 
 
@@ -212,5 +214,5 @@ def new_id(result: CursorResult[Any]) -> int:
     """The primary key an INSERT just made."""
     key = result.inserted_primary_key
     if key is None:
-        raise ValueError("the statement inserted no row")
+        raise TraceArgumentError("the statement inserted no row")
     return int(key[0])

@@ -16,6 +16,7 @@ from sqlalchemy import Connection, insert
 from robocram.costmaps import Costmap
 from robocram.motion import JointTrajectory
 from robocram.traces.costmap_record import costmap_row
+from robocram.traces.errors import TraceStateError
 from robocram.traces.robot_model_record import INSERT_MODEL
 from robocram.traces.schema import (
     Base,
@@ -81,7 +82,7 @@ class RunBuffer:
     def key(self, order: int) -> int:
         """The database id of this run's ``order``-th task (the run must have been written)."""
         if self.run_id is None:
-            raise RuntimeError("a run's task ids are known once its row is written")
+            raise TraceStateError("a run's task ids are known once its row is written")
         return task_key(self.run_id, order)
 
 
@@ -195,5 +196,5 @@ def _task_row(entry: TaskEntry) -> dict[str, Any]:
 
 def _run_id(run: RunBuffer) -> int:
     if run.run_id is None:
-        raise RuntimeError("a run's row is written before its tasks")
+        raise TraceStateError("a run's row is written before its tasks")
     return run.run_id

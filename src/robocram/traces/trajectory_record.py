@@ -19,7 +19,7 @@ from sqlalchemy import select
 
 from robocram.motion import CarriedJoint, ContactAllowance, JointTrajectory, TrajectoryPoint
 from robocram.traces.database import TraceDatabase
-from robocram.traces.errors import DamagedTrajectory, DamagedTrajectoryWarning
+from robocram.traces.errors import DamagedTrajectory, DamagedTrajectoryWarning, TraceArgumentError
 from robocram.traces.queries import require_run, world_state_times
 from robocram.traces.replay_clock import ReplayClock, replay_starts
 from robocram.traces.schema import TaskRow, TrajectoryRow
@@ -172,7 +172,7 @@ def _decoded(
     whole float64 blobs of one row per point, finite numbers, times never going back."""
     names = json.loads(row.joint_names)
     if not isinstance(names, list) or not all(isinstance(n, str) for n in names):
-        raise ValueError(f"joint names {row.joint_names!r} are not a JSON list of names")
+        raise TraceArgumentError(f"joint names {row.joint_names!r} are not a JSON list of names")
     times = _floats(row.times, "times")
     shape = (len(times), len(names))
     columns = [
@@ -184,17 +184,17 @@ def _decoded(
         )
     ]
     if len(times) and not (np.diff(times) >= 0.0).all():
-        raise ValueError("its times run backwards")
+        raise TraceArgumentError("its times run backwards")
     return tuple(names), times, columns
 
 
 def _floats(data: bytes, what: str) -> NDArray[np.float64]:
     """A blob of float64s, all finite."""
     if len(data) % 8:
-        raise ValueError(f"its {what} blob of {len(data)} bytes is cut short")
+        raise TraceArgumentError(f"its {what} blob of {len(data)} bytes is cut short")
     values = np.frombuffer(data, dtype="<f8")
     if not np.isfinite(values).all():
-        raise ValueError(f"its {what} hold numbers that are not finite")
+        raise TraceArgumentError(f"its {what} hold numbers that are not finite")
     return values
 
 
@@ -238,5 +238,7 @@ def _rows(
 ) -> NDArray[np.float64]:
     """Rows of one point each; velocities a driver left empty come back empty."""
     if values.size != shape[0] * shape[1] and not (empty_ok and values.size == 0):
-        raise ValueError(f"its {what} hold {values.size} numbers, not {shape[0]} x {shape[1]}")
+        raise TraceArgumentError(
+            f"its {what} hold {values.size} numbers, not {shape[0]} x {shape[1]}"
+        )
     return values.reshape(shape[0], -1) if shape[0] else values.reshape(shape)

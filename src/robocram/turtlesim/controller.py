@@ -11,6 +11,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from robocram.execution.failures import NavigationGoalNotReached
+from robocram.turtlesim.errors import TurtleArgumentError
 from robocram.turtlesim.world import TurtlePose, TurtleWorld, wrap_angle
 
 
@@ -40,7 +41,7 @@ def go_to(
         NavigationGoalNotReached: still away from the goal after ``gains.max_time``.
     """
     if not (math.isfinite(x) and math.isfinite(y)):
-        raise ValueError(f"turtle goal must be finite, got ({x}, {y})")
+        raise TurtleArgumentError(f"turtle goal must be finite, got ({x}, {y})")
     g = gains or GoToGains()
     pose = world.pose
     for _ in range(math.ceil(g.max_time / world.time_step)):

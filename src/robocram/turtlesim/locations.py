@@ -11,6 +11,7 @@ from collections.abc import Iterator
 from typing import Any
 
 from robocram.designators import LocationResolver, Verdict
+from robocram.turtlesim.errors import TurtleArgumentError
 
 HORIZONTAL = ("left", "center", "right")
 VERTICAL = ("bottom", "center", "top")
@@ -45,7 +46,7 @@ def _index(value: object, names: tuple[str, ...], key: str) -> int:
     if value is None:
         return 1
     if value not in names:
-        raise ValueError(f"{key} must be one of {names}, got {value!r}")
+        raise TurtleArgumentError(f"{key} must be one of {names}, got {value!r}")
     return names.index(value)
 
 

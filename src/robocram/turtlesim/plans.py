@@ -9,6 +9,7 @@ from collections.abc import Sequence
 
 from robocram.designators import a, an
 from robocram.execution.perform import perform
+from robocram.turtlesim.errors import TurtleArgumentError
 from robocram.turtlesim.world import Point, TurtlePose
 
 
@@ -25,7 +26,9 @@ def house_corners(origin: Sequence[float], size: float) -> list[Point]:
     apex is ``size / 2`` above the square.
     """
     if len(origin) != 2 or size <= 0:
-        raise ValueError(f"a house needs an origin (x, y) and a size > 0, got {origin}, {size}")
+        raise TurtleArgumentError(
+            f"a house needs an origin (x, y) and a size > 0, got {origin}, {size}"
+        )
     x, y, s = float(origin[0]), float(origin[1]), float(size)
     bottom_left, bottom_right = (x, y), (x + s, y)
     top_left, top_right, apex = (x, y + s), (x + s, y + s), (x + s / 2, y + 1.5 * s)

@@ -19,6 +19,7 @@ from robocram.execution.process_module import ProcessModule
 from robocram.execution.task_context import checkpoint
 from robocram.logic import Term
 from robocram.turtlesim.controller import GoToGains, go_to
+from robocram.turtlesim.errors import TurtleArgumentError
 from robocram.turtlesim.world import TurtlePose, TurtleWorld
 
 
@@ -31,7 +32,9 @@ def goal_xy(goal: object) -> tuple[float, float]:
         x, y = position[0], position[1]
         if isinstance(x, (int, float)) and isinstance(y, (int, float)):
             return float(x), float(y)
-    raise ValueError(f"cannot read a turtle goal from {goal!r}; give (x, y), (x, y, 0) or a Pose")
+    raise TurtleArgumentError(
+        f"cannot read a turtle goal from {goal!r}; give (x, y), (x, y, 0) or a Pose"
+    )
 
 
 class TurtleNavigationPM(ProcessModule):
@@ -83,7 +86,7 @@ class NoisyTurtleNavigationPM(TurtleNavigationPM):
     ) -> None:
         super().__init__(world)
         if sigma < 0 or not math.isfinite(sigma):
-            raise ValueError(f"noise sigma must be a finite value >= 0 [m], got {sigma}")
+            raise TurtleArgumentError(f"noise sigma must be a finite value >= 0 [m], got {sigma}")
         self.sigma = sigma
         self._rng = random.Random(seed)
         self._log = log
@@ -111,7 +114,7 @@ class TurtlePenPM(ProcessModule):
         if isinstance(command, Term) and command.name == "set_pen" and command.arity == 2:
             state, colour = command.args
             if state not in ("down", "up"):
-                raise ValueError(f"pen state must be 'down' or 'up', got {state!r}")
+                raise TurtleArgumentError(f"pen state must be 'down' or 'up', got {state!r}")
             self.world.set_pen(state == "down", None if colour == "keep" else str(colour))
             return None
         raise self.unsupported(command, ["set_pen/2"])

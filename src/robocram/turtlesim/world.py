@@ -15,6 +15,8 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from robocram.turtlesim.errors import TurtleArgumentError
+
 Point = tuple[float, float]
 _MERGE_ANGLE = 0.1  # [rad] a step this close to a line's direction extends the line
 
@@ -75,7 +77,7 @@ class TurtleWorld:
         step_delay: float = 0.0,
     ) -> None:
         if size <= 0 or time_step <= 0 or step_delay < 0:
-            raise ValueError(
+            raise TurtleArgumentError(
                 f"TurtleWorld needs size > 0, time_step > 0 and step_delay >= 0, got "
                 f"size={size}, time_step={time_step}, step_delay={step_delay}"
             )
@@ -147,7 +149,9 @@ class TurtleWorld:
     def step(self, linear: float, angular: float) -> TurtlePose:
         """Integrate velocities ``linear`` [m/s] and ``angular`` [rad/s] over one time step."""
         if not (math.isfinite(linear) and math.isfinite(angular)):
-            raise ValueError(f"turtle velocities must be finite, got ({linear}, {angular})")
+            raise TurtleArgumentError(
+                f"turtle velocities must be finite, got ({linear}, {angular})"
+            )
         dt = self.time_step
         with self._lock:
             old = self._pose
@@ -171,7 +175,7 @@ class TurtleWorld:
     def drive(self, linear: float, angular: float, duration: float = 1.0) -> TurtlePose:
         """Apply the velocities for ``duration`` [s] (turtlesim applies a twist for 1 s)."""
         if duration < 0:
-            raise ValueError(f"drive duration must be >= 0 [s], got {duration}")
+            raise TurtleArgumentError(f"drive duration must be >= 0 [s], got {duration}")
         pose = self.pose
         for _ in range(round(duration / self.time_step)):
             pose = self.step(linear, angular)

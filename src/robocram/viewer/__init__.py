@@ -6,7 +6,14 @@ Needs the ``viewer`` extra (viser). ``Viewer(world)`` serves on 127.0.0.1:8080;
 samples of its trajectories between them, and a button that plays them.
 """
 
-from robocram.viewer.errors import NoWorld, PortInUse, ViewerError, ViewerUnavailable
+from robocram.viewer.errors import (
+    NoWorld,
+    PortInUse,
+    ViewerArgumentError,
+    ViewerError,
+    ViewerUnavailable,
+    ViewerUnknownKey,
+)
 from robocram.viewer.live_listener import LiveFeed
 from robocram.viewer.player import Player
 from robocram.viewer.timeline import Moment, Timeline
@@ -22,8 +29,10 @@ __all__ = [
     "PortInUse",
     "Timeline",
     "Viewer",
+    "ViewerArgumentError",
     "ViewerError",
     "ViewerUnavailable",
+    "ViewerUnknownKey",
     "check_port",
     "replay_viewer",
 ]

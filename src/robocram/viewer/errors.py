@@ -35,3 +35,17 @@ class ViewerUnavailable(ViewerError):  # noqa: N818
         super().__init__(
             f"the browser viewer needs {missing!r}; install it with pip install 'robocram[viewer]'"
         )
+
+
+class ViewerArgumentError(ViewerError, ValueError):
+    """A value given to the viewer is outside what it accepts."""
+
+    summary = "a value given to the viewer is outside what it accepts"
+    hint = "fix the value the message names: it says the range or the choices"
+
+
+class ViewerUnknownKey(ViewerError, KeyError):
+    """A name that the viewer does not know; the message lists the known ones."""
+
+    summary = "a name that the viewer does not know"
+    hint = "use one of the names the message lists"

@@ -27,6 +27,7 @@ from robocram.designators import MotionDesignator
 from robocram.execution import Task, TaskListener, TaskSnapshot, current_task
 from robocram.motion import JointTrajectory, trajectory_listener
 from robocram.traces import StoredCostmap, StoredWorldState
+from robocram.viewer.errors import ViewerArgumentError
 from robocram.viewer.timeline import Moment
 from robocram.viewer.viewer import Viewer
 from robocram.world import World
@@ -43,7 +44,7 @@ class LiveFeed(TaskListener):
 
     def __init__(self, viewer: Viewer, world: World, speed: float | None = None) -> None:
         if speed is not None and not speed > 0.0:
-            raise ValueError(f"the viewing speed must be positive, got {speed}")
+            raise ViewerArgumentError(f"the viewing speed must be positive, got {speed}")
         self.viewer = viewer
         self.world = world
         self.speed = speed  # None: the plan runs at full speed, the page skips states

@@ -11,6 +11,7 @@ from __future__ import annotations
 import threading
 from collections.abc import Callable
 
+from robocram.viewer.errors import ViewerArgumentError
 from robocram.viewer.timeline import Timeline
 
 MAX_PAUSE = 0.5  # [s] longest wait between two moments, however far apart they are
@@ -22,7 +23,7 @@ class Player:
 
     def __init__(self, timeline: Timeline, show: Callable[[int], None], speed: float = 1.0):
         if not speed > 0.0:
-            raise ValueError(f"the replay speed must be positive, got {speed}")
+            raise ViewerArgumentError(f"the replay speed must be positive, got {speed}")
         self.timeline = timeline
         self.show = show
         self.speed = speed

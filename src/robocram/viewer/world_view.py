@@ -16,6 +16,7 @@ import trimesh
 import viser
 
 from robocram.tf import Pose
+from robocram.viewer.errors import ViewerUnknownKey
 from robocram.viewer.visual_parts import Rgba, VisualPart, visual_parts
 from robocram.world import World
 
@@ -91,7 +92,7 @@ class WorldView:
     def set_visible(self, body: str, visible: bool) -> None:
         """Show or hide ``body`` (all its links)."""
         if body not in self.bodies:
-            raise KeyError(f"no body {body!r} in the view; bodies: {sorted(self.bodies)}")
+            raise ViewerUnknownKey(f"no body {body!r} in the view; bodies: {sorted(self.bodies)}")
         self.bodies[body].visible = visible
 
     @contextmanager

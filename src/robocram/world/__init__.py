@@ -19,6 +19,7 @@ from robocram.world.errors import (
     UnknownObjectError,
     WorldClosedError,
     WorldError,
+    WorldUsageError,
     WorldValueError,
 )
 from robocram.world.joint_state import ClampedJoint, JointLimits
@@ -60,10 +61,11 @@ __all__ = [
     "UrdfSpec",
     "Visibility",
     "World",
+    "WorldValueError",
     "WorldClosedError",
     "WorldError",
-    "WorldValueError",
     "WorldObject",
     "WorldState",
+    "WorldUsageError",
     "catalogue_names",
 ]

@@ -17,6 +17,7 @@ from pathlib import Path
 from typing import Literal
 
 from robocram.tf import Pose, Vector3
+from robocram.world.errors import WorldValueError
 from robocram.world.pybullet_backend import pybullet
 
 Rgba = tuple[float, float, float, float]
@@ -85,11 +86,13 @@ class ShapeSpec:
 
     def __post_init__(self) -> None:
         if self.shape not in ("box", "cylinder", "sphere", "plane"):
-            raise ValueError(f"unknown shape {self.shape!r}; use box, cylinder, sphere or plane")
+            raise WorldValueError(
+                f"unknown shape {self.shape!r}; use box, cylinder, sphere or plane"
+            )
         if self.shape != "plane" and min(self.size) <= 0:
-            raise ValueError(f"{self.shape} size {self.size} [m] must be positive")
+            raise WorldValueError(f"{self.shape} size {self.size} [m] must be positive")
         if self.mass < 0:
-            raise ValueError(f"mass {self.mass} [kg] must be >= 0 (0 = static)")
+            raise WorldValueError(f"mass {self.mass} [kg] must be >= 0 (0 = static)")
 
     def create(self, client: int) -> int:
         """Create the body in ``client`` at the origin; return its body id."""

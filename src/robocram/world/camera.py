@@ -13,6 +13,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from robocram.tf import Pose
+from robocram.world.errors import WorldValueError
 from robocram.world.pybullet_backend import pybullet
 
 
@@ -30,9 +31,9 @@ class Camera:
         for name in ("horizontal_fov", "vertical_fov"):
             fov = getattr(self, name)
             if not 0 < fov < math.pi:
-                raise ValueError(f"{name} {fov} [rad] must be in (0, pi)")
+                raise WorldValueError(f"{name} {fov} [rad] must be in (0, pi)")
         if not 0 < self.near < self.far:
-            raise ValueError(f"need 0 < near ({self.near}) < far ({self.far}) [m]")
+            raise WorldValueError(f"need 0 < near ({self.near}) < far ({self.far}) [m]")
 
     @property
     def tan_half(self) -> tuple[float, float]:

@@ -17,6 +17,7 @@ from robocram.robots import RobotModel
 from robocram.robots.urdf_elements import Geometry
 from robocram.tf import Pose, Vector3
 from robocram.world.body_spec import MeshSpec, ShapeSpec, UrdfSpec
+from robocram.world.errors import WorldUsageError, WorldValueError
 from robocram.world.world_core import WorldCore
 from robocram.world.world_object import RobotObject, WorldObject
 
@@ -51,7 +52,7 @@ def _scaled(geometry: Geometry, scale: float) -> tuple[CollisionKind, Vector3]:
         return "mesh", (sx * scale, sy * scale, sz * scale)
     extents = geometry.extents()
     if extents is None:  # pragma: no cover - every kind but mesh has extents
-        raise ValueError(f"geometry {geometry!r} has no extents")
+        raise WorldValueError(f"geometry {geometry!r} has no extents")
     return geometry.kind, (extents[0] * scale, extents[1] * scale, extents[2] * scale)
 
 
@@ -91,4 +92,6 @@ def collision_shapes(world: WorldCore, obj: WorldObject) -> list[CollisionShape]
         return [CollisionShape(obj.name, obj.name, "mesh", scale, pose, str(spec.path))]
     if isinstance(spec, ShapeSpec):
         return [CollisionShape(obj.name, obj.name, spec.shape, spec.size, pose)]
-    raise TypeError(f"object {obj.name!r} has an unknown body spec {spec!r}")  # pragma: no cover
+    raise WorldUsageError(
+        f"object {obj.name!r} has an unknown body spec {spec!r}"
+    )  # pragma: no cover

@@ -105,6 +105,9 @@ class WorldClosedError(WorldError):
 class WorldValueError(WorldError, ValueError):
     """An argument out of its range (a time step, a duration); the message names it."""
 
+    summary = "a value given to the world is outside what it accepts"
+    hint = "fix the value the message names: it says the range or the choices"
+
 
 class BodyLoadError(WorldError):
     """PyBullet could not make a body from a file; the world is left as it was."""
@@ -155,3 +158,10 @@ class AttachmentCycleError(WorldError):
             f"cannot attach {obj!r} to {carrier!r}: {carrier!r} already hangs from {obj!r}, "
             f"so {loop}; detach one of them first"
         )
+
+
+class WorldUsageError(WorldError, TypeError):
+    """The world was handed the wrong kind of thing: the caller's mistake."""
+
+    summary = "the world was handed the wrong kind of thing"
+    hint = "pass what the message asks for"

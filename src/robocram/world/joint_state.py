@@ -6,6 +6,8 @@ import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 
+from robocram.world.errors import WorldValueError
+
 
 @dataclass(frozen=True)
 class ClampedJoint:
@@ -39,7 +41,7 @@ def clamp_values(
     for name, raw in values.items():
         value = float(raw)
         if not math.isfinite(value):
-            raise ValueError(f"joint {name!r}: value {raw!r} is not a finite number")
+            raise WorldValueError(f"joint {name!r}: value {raw!r} is not a finite number")
         lim = limits[name]
         applied[name] = lim.clamp(value)
         if applied[name] != value:

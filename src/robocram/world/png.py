@@ -9,6 +9,8 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
+from robocram.world.errors import WorldValueError
+
 
 def _chunk(kind: bytes, data: bytes) -> bytes:
     crc = zlib.crc32(kind + data) & 0xFFFFFFFF
@@ -19,7 +21,7 @@ def encode_png(rgb: NDArray[np.uint8]) -> bytes:
     """PNG bytes of an ``H x W x 3`` (RGB) or ``H x W x 4`` (RGBA) uint8 image."""
     image = np.asarray(rgb)
     if image.ndim != 3 or image.shape[2] not in (3, 4) or image.dtype != np.uint8:
-        raise ValueError(f"need an H x W x 3|4 uint8 image, got {image.shape} {image.dtype}")
+        raise WorldValueError(f"need an H x W x 3|4 uint8 image, got {image.shape} {image.dtype}")
     height, width, channels = image.shape
     colour_type = 2 if channels == 3 else 6
     header = struct.pack(">IIBBBBB", width, height, 8, colour_type, 0, 0, 0)

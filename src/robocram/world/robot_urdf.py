@@ -29,7 +29,7 @@ from robocram.robots import (
     split_model,
 )
 from robocram.world.body_spec import UrdfSpec
-from robocram.world.errors import BodyLoadError, TooManyLinksError
+from robocram.world.errors import BodyLoadError, TooManyLinksError, WorldValueError
 
 URDF_CACHE = Path(tempfile.gettempdir()) / "robocram-urdf"
 # Links below the root that PyBullet's joint state queries handle: with 128 (a 129-link
@@ -47,7 +47,7 @@ def robot_urdf_file(description: RobotDescription) -> Path:
     description gets a new file. Written atomically: parallel test workers are safe.
     """
     if description.model is None:
-        raise ValueError(
+        raise WorldValueError(
             f"description {description.name!r} is not loaded; pass it through load_description()"
         )
     return model_urdf_file(description.name, description.model)

@@ -20,6 +20,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from robocram.tf import Pose
+from robocram.world.errors import WorldValueError
 from robocram.world.pybullet_backend import pybullet
 from robocram.world.world_core import WorldCore
 from robocram.world.world_object import WorldObject
@@ -262,7 +263,7 @@ def _tetrahedron(points: FloatArray) -> list[tuple[int, int, int]]:
     normal = np.cross(line, points[c] - points[a])
     d = int(np.argmax(np.abs((points - points[a]) @ normal)))
     if abs(float((points[d] - points[a]) @ normal)) < HULL_TOLERANCE:
-        raise ValueError("a mesh part is flat: it has no convex volume to hit")
+        raise WorldValueError("a mesh part is flat: it has no convex volume to hit")
     if (points[d] - points[a]) @ normal > 0:
         b, c = c, b  # so that (a, b, c) faces away from d
     return [(a, b, c), (a, d, b), (b, d, c), (c, d, a)]

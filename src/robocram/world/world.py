@@ -425,7 +425,7 @@ class World(WorldCore):
             return visibility.ray_visibility(self, camera, handle)
         if method == "render":
             return visibility.render_visibility(self, camera, handle)
-        raise ValueError(f"unknown visibility method {method!r}; use 'ray' or 'render'")
+        raise WorldValueError(f"unknown visibility method {method!r}; use 'ray' or 'render'")
 
     def visibility_fraction(
         self,

@@ -13,6 +13,8 @@ import difflib
 import re
 from typing import Any, ClassVar, Self
 
+from robocram.execution.errors import ExecutionUnknownKey, ExecutionUsageError
+
 
 def cram_name(class_name: str) -> str:
     """Turn ``TorsoGoalNotReached`` into CRAM's ``torso-goal-not-reached``."""
@@ -40,7 +42,7 @@ class PlanFailure(Exception):
     def __init__(self, message: str | None = None, **data: object) -> None:
         unknown = [key for key in data if key not in self.fields]
         if unknown:
-            raise TypeError(self._unknown_field_message(unknown[0]))
+            raise ExecutionUsageError(self._unknown_field_message(unknown[0]))
         self.message = message
         for name in self.fields:
             setattr(self, name, data.get(name))
@@ -96,7 +98,7 @@ def failure_class(name: str) -> type[PlanFailure]:
         return by_name[name]
     close = difflib.get_close_matches(name, list(by_name), n=1)
     guess = f"; did you mean {close[0]!r}?" if close else ""
-    raise KeyError(f"no plan failure named {name!r}{guess}")
+    raise ExecutionUnknownKey(f"no plan failure named {name!r}{guess}")
 
 
 def _all_subclasses(cls: type[PlanFailure]) -> list[type[PlanFailure]]:
