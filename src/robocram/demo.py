@@ -34,6 +34,7 @@ VIEW_AT = (-0.7, 0.3, 0.4)  # [m] in map, what they look at
 TABLE = ("kitchen", "table_top")
 ITEMS = (("mug", "mug-1"), ("bowl", "bowl-1"))  # (type searched for, item placed for)
 MAX_REASON = 200  # characters of a failure's message on its one line
+GIF_SIZE = (480, 360)  # [px], with the camera following the robot: the drawer it opens shows
 
 
 CAMERA = Pose(VIEW_FROM, looking_orientation(VIEW_FROM, VIEW_AT))
@@ -128,7 +129,10 @@ def run_demo(
     pictures.append(picture(world, out_dir / "demo_after.png"))
     world.close()
     files = {description.name: robot} if is_description_spec(robot) else {}
-    gif = animate_run(db_path, tracer.runs[-1], out_dir / "demo.gif", CAMERA, robots=files)
+    gif = animate_run(  # framed on the robot: the drawer's handle shows in the picture
+        db_path, tracer.runs[-1], out_dir / "demo.gif", width=GIF_SIZE[0],
+        height=GIF_SIZE[1], robots=files,
+    )  # fmt: skip
     print(
         f"traced to {db_path}; {gif.path}: {gif.frames} frames over {gif.replay_duration:.1f} s "
         f"of motion, {gif.size / 1e6:.2f} MB in {gif.render_seconds:.1f} s"

@@ -63,3 +63,19 @@ def test_animation_input_errors_say_what_to_do(trajectory_run: Any, tmp_path: Pa
         animate_run(
             trajectory_run.db_path, trajectory_run.run, tmp_path / "x.gif", CAMERA, period=0
         )
+
+
+def test_with_no_camera_the_film_follows_the_robot(trajectory_run: Any, tmp_path: Path) -> None:
+    fixed = animate_run(
+        trajectory_run.db_path, trajectory_run.run, tmp_path / "fixed.gif", CAMERA,
+        width=WIDTH, height=HEIGHT, period=PERIOD,
+    )  # fmt: skip
+    followed = animate_run(
+        trajectory_run.db_path, trajectory_run.run, tmp_path / "followed.gif",
+        width=WIDTH, height=HEIGHT, period=PERIOD,
+    )  # fmt: skip
+    assert followed.frames == fixed.frames  # the same moments, from another camera
+    with Image.open(tmp_path / "fixed.gif") as a, Image.open(tmp_path / "followed.gif") as b:
+        first_a = np.asarray(a.convert("RGB"), dtype=np.int16)
+        first_b = np.asarray(b.convert("RGB"), dtype=np.int16)
+    assert (np.abs(first_a - first_b).max(axis=2) > 40).mean() > 0.05

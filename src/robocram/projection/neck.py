@@ -33,6 +33,7 @@ from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robots import PanTiltDescription
 from robocram.tf import Pose, Vector3
 from robocram.tf import quaternion as quat
+from robocram.tf.optical_look_at import optical_look_at
 from robocram.tf.signed_angle import signed_angle
 from robocram.world import JointLimits
 
@@ -145,18 +146,9 @@ def _aimed(robot: ProjectedRobot, pt: PanTiltDescription, target: np.ndarray) ->
 
 def looking_orientation(camera_position: Vector3, target: Vector3) -> quat.Quaternion:
     """Optical-frame orientation (z forward, x right, y down) facing ``target`` from the camera."""
-    z = np.subtract(target, camera_position).astype(float)
-    if np.linalg.norm(z) < 1e-6:
+    if np.linalg.norm(np.subtract(target, camera_position)) < 1e-6:
         raise ProjectionError(f"look target {target} is at the camera; look somewhere else")
-    z /= np.linalg.norm(z)
-    x = np.cross((0.0, 0.0, -1.0), z)
-    if np.linalg.norm(x) < 1e-6:  # looking straight up or down: any right-hand axis works
-        x = np.array((0.0, -1.0, 0.0))
-    x /= np.linalg.norm(x)
-    y = np.cross(z, x)
-    m = np.eye(4)
-    m[:3, :3] = np.column_stack((x, y, z))
-    return Pose.from_matrix(m).orientation
+    return optical_look_at(camera_position, target)
 
 
 def _camera_positions(robot: ProjectedRobot, frame: str) -> list[Vector3]:

@@ -12,7 +12,7 @@ stores only what changed between frames.
 from __future__ import annotations
 
 import time
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -26,6 +26,8 @@ from robocram.traces.queries import require_run, world_state_times
 from robocram.traces.run_replay import replay_frames
 from robocram.traces.trajectory_record import replay_clock, run_trajectories
 from robocram.traces.world_record import build_scene
+from robocram.world import Camera, World
+from robocram.world.view_framing import Follower
 
 GIF_PERIOD = 0.2  # [s] of replay time between two rendered frames
 MAX_FRAMES = 100  # frames rendered (at most one more); a longer run gets a wider period
@@ -49,7 +51,7 @@ def animate_run(
     db: TraceDatabase | str | Path,
     run: int,
     out: str | Path,
-    camera: Pose,
+    camera: Pose | None = None,
     *,
     width: int = 400,
     height: int = 300,
@@ -57,7 +59,9 @@ def animate_run(
     max_frames: int = MAX_FRAMES,
     robots: Mapping[str, str] | None = None,
 ) -> RunAnimation:
-    """Render run ``run`` from ``camera`` (an optical-frame pose in map) into the GIF ``out``.
+    """Render run ``run`` from ``camera`` (an optical-frame pose in map) into the GIF ``out``;
+    with no camera, from over the robot's shoulder, following it as it drives
+    (:class:`~robocram.world.view_framing.Follower`).
 
     Raises:
         UnknownRun: no run ``run`` in ``db``.
@@ -82,14 +86,15 @@ def animate_run(
     images: list[np.ndarray] = []
     first, due, last, shown = None, -np.inf, 0.0, False
     with build_scene(row.scene, robots=robots) as world:
+        aim = _aim(world, run, camera)
         for frame in replay_frames(db, run, world, period=min(step, period)):
             first = frame.time if first is None else first
             last, shown = frame.time, frame.time >= due
             if shown:
-                images.append(world.render(camera, width, height))
+                images.append(world.render(aim(), width, height))
                 due = frame.time + step * (1.0 - 1e-9)
         if first is not None and not shown:  # the run's end is always in the picture
-            images.append(world.render(camera, width, height))
+            images.append(world.render(aim(), width, height))
     if not images:
         raise TraceError(f"run {run} has no world states nor trajectories to animate")
     path = _write_gif(Path(out), images)
@@ -101,6 +106,24 @@ def animate_run(
         render_seconds=time.perf_counter() - began,
         size=path.stat().st_size,
     )
+
+
+def _aim(world: World, run: int, camera: Pose | None) -> Callable[[], Pose]:
+    """The camera pose for the world as it is now: ``camera``, or following the run's first
+    robot from over its shoulder as it started (the scene's state before the run)."""
+    if camera is not None:
+        return lambda: camera
+    robots = world.robots()
+    if not robots:
+        raise TraceError(f"run {run}'s scene holds no robot to follow; give a camera")
+    follower: list[Follower] = []  # aimed at the first frame: the scene's robot as it started
+
+    def aim() -> Pose:
+        if not follower:
+            follower.append(Follower.of(world, robots[0], Camera(Pose()).vertical_fov))
+        return follower[0].framing(world, robots[0]).pose()
+
+    return aim
 
 
 def _replay_span(db: TraceDatabase, run: int) -> float:

@@ -14,6 +14,7 @@ import queue
 import socket
 import threading
 import time
+from collections.abc import Iterable
 from typing import Any
 
 import viser
@@ -37,6 +38,7 @@ from robocram.viewer.task_panel import TaskPanel
 from robocram.viewer.timeline import REPLAY_PERIOD, Moment, Timeline
 from robocram.viewer.world_view import WorldView
 from robocram.world import RobotHandle, World
+from robocram.world.view_framing import Bounds, frame_task
 
 DEFAULT_HOST = "127.0.0.1"
 DEFAULT_PORT = 8080
@@ -74,14 +76,17 @@ class Viewer:
         self.view = WorldView(self.server, self.display)
         self.timeline = Timeline()
         self._lock = threading.Lock()
+        self.frame(world)
         gui = self.server.gui
-        self.caption = gui.add_markdown(f"**{title}**: waiting for a run")
+        gui.add_markdown(f"**{title}**")
         self.follow = gui.add_checkbox("Follow live", initial_value=True)
         self.slider = gui.add_slider("World state", min=0, max=1, step=1, initial_value=0)
         self.slider.on_update(lambda _event: self._slider_moved())
         self.player = Player(self.timeline, self._play_step)
         self.play_button = gui.add_button("Play / stop")
         self.play_button.on_click(lambda _event: self.toggle_play())
+        # below the controls: a caption of two lines or one never moves the slider
+        self.caption = gui.add_markdown("waiting for a run")
         self.costmaps: list[StoredCostmap] = []  # in time order
         self.overlay = CostmapOverlay(self.server)
         toggle = gui.add_checkbox("Costmaps", initial_value=True)
@@ -90,6 +95,16 @@ class Viewer:
         self.shown = -1  # index of the moment on screen
         self._browsers: queue.Queue[viser.ClientHandle] = queue.Queue()
         self.server.on_client_connect(self._browsers.put)
+
+    def frame(self, world: World, more: Iterable[Bounds] = ()) -> None:
+        """Aim the page's first camera over the shoulder of ``world``'s first robot, with
+        the items near it and ``more`` bounds in view (none: viser's default view)."""
+        robots = world.robots()
+        if not robots:
+            return
+        camera = self.server.initial_camera
+        framing = frame_task(world, robots[0], float(camera.fov), more)
+        camera.position, camera.look_at = framing.eye, framing.target
 
     @property
     def url(self) -> str:
@@ -151,6 +166,7 @@ class Viewer:
             self.view.show(self.display)
             self.overlay.show(self.costmap_at(moment.time))
             self.shown = index
+        self.tasks.highlight(moment.task_path)
         where = moment.task_path or "the start"
         if moment.trajectory is None:
             self.caption.content = f"**state {index}**: after {where}"
@@ -215,6 +231,7 @@ class Viewer:
             self.add_costmap(costmap)
         with self._lock:  # the display world plays the run through once
             stored = Timeline.of_replay(db, run, self.display, period)
+            self.frame(self.display, _robot_bounds(self.display, stored))
         self.add_moments([stored[index] for index in range(len(stored))])
         _set_value(self.slider, len(self.timeline) - 1)
         self.show(len(self.timeline) - 1)
@@ -230,6 +247,19 @@ class Viewer:
 
     def __exit__(self, *exc: Any) -> None:
         self.close()
+
+
+def _robot_bounds(world: World, timeline: Timeline) -> list[Bounds]:
+    """The first robot's bounds in each stored world state of ``timeline`` (applied to
+    ``world``, which is left in the last): everywhere the run took it."""
+    robots = world.robots()
+    found = []
+    for index in range(len(timeline)):
+        moment = timeline[index]
+        if robots and moment.trajectory is None:
+            moment.state.apply(world)
+            found.append(world.aabb(robots[0]))
+    return found
 
 
 def _drawn(browser: viser.ClientHandle, timeout: float | None) -> bool:

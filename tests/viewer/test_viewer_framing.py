@@ -1,0 +1,95 @@
+"""The viewer's first camera frames the robot at its task, the task whose world is shown is
+marked, and a caption that grows never moves the slider (issue 41, the viewer items)."""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from robocram.scenes import kitchen_scene
+from robocram.traces import TraceDatabase
+from robocram.viewer import Viewer, replay_viewer
+from robocram.viewer.headless_browser import HeadlessChromium
+from robocram.viewer.page_picture import open_viewer
+from robocram.viewer.task_panel import CURRENT
+from tests.viewer.conftest import free_port
+
+SLIDER_TOP = """(() => {
+  const label = [...document.querySelectorAll('label, p, span, div')]
+    .find(e => e.childElementCount === 0 && e.textContent.trim() === 'World state');
+  return label ? label.getBoundingClientRect().top : -1;
+})()"""
+LONG = "a caption long enough to wrap onto several lines " * 6
+
+
+def _in_view(points: np.ndarray, eye: np.ndarray, target: np.ndarray, fov: float) -> np.ndarray:
+    """Each point's (horizontal, vertical) offset from the view's centre, as a share of the
+    half-height of a square view ``fov`` [rad] high: inside if both are within 1."""
+    forward = (target - eye) / np.linalg.norm(target - eye)
+    right = np.cross(forward, (0.0, 0.0, 1.0))
+    right /= np.linalg.norm(right)
+    up = np.cross(right, forward)
+    rel = points - eye
+    depth = rel @ forward
+    assert (depth > 0).all(), "a point behind the camera"
+    half = math.tan(fov / 2) * depth
+    return np.stack([(rel @ right) / half, (rel @ up) / half], axis=1)
+
+
+def _corners(low: Any, high: Any) -> np.ndarray:
+    return np.array([[x, y, z] for x in (low[0], high[0]) for y in (low[1], high[1])
+                     for z in (low[2], high[2])])  # fmt: skip
+
+
+def test_the_first_camera_frames_the_robot_from_behind_at_a_useful_size() -> None:
+    scene = kitchen_scene("pr2")
+    with scene.world as world, Viewer(world, port=free_port()) as viewer:
+        camera = viewer.server.initial_camera
+        eye, target = np.asarray(camera.position), np.asarray(camera.look_at)
+        fov = float(camera.fov)
+        robot = _corners(*world.aabb("pr2"))
+        offsets = _in_view(robot, eye, target, fov)
+        assert np.abs(offsets).max() <= 1.0  # the whole robot is in view
+        height = offsets[:, 1].max() - offsets[:, 1].min()
+        assert height > 0.35  # and more than a sixth of the picture high (0.35 of 2)
+        mug = _corners(*world.aabb("mug-1"))  # the item its task is about, 2 m away
+        assert np.abs(_in_view(mug, eye, target, fov)).max() <= 1.0
+        base = np.asarray(world.pose("pr2").position)
+        x, y, z, w = world.pose("pr2").orientation
+        facing = np.array([1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 0.0])
+        assert float((eye - base) @ facing) < 0.0  # seen from behind: the counter is beyond
+
+
+def test_replay_marks_the_task_whose_world_is_shown(live_run: Any) -> None:
+    with TraceDatabase(live_run.db_path, create=False) as db:
+        viewer = replay_viewer(db, live_run.run, port=free_port())
+    with viewer:
+        panel = viewer.tasks
+        first_motion = next(i for i in range(len(viewer.timeline)) if viewer.timeline[i].task_path)
+        moment = viewer.timeline[first_motion]
+        viewer.show(first_motion)
+        assert panel.current == moment.task_path
+        marked = [b.label for b in panel._buttons.values() if b.label.startswith(CURRENT)]
+        assert len(marked) == 1 and panel._buttons[moment.task_path].label == marked[0]
+        viewer.show(len(viewer.timeline) - 1)
+        last = viewer.timeline[len(viewer.timeline) - 1].task_path
+        assert panel.current == (last or None)
+        assert not panel._buttons[moment.task_path].label.startswith(CURRENT) or (
+            moment.task_path == last
+        )
+        assert panel.labels() == live_run.viewer.tasks.labels()  # the mark is not a label
+
+
+def test_a_long_caption_leaves_the_slider_where_it_was(live_run: Any) -> None:
+    viewer = live_run.viewer
+    with HeadlessChromium(1024, 640) as browser:
+        open_viewer(browser, viewer, "World state")
+        viewer.caption.content = "one line"
+        browser.wait_for_text("one line")
+        before = browser.evaluate(SLIDER_TOP)
+        viewer.caption.content = LONG
+        browser.wait_for_text("several lines")
+        after = browser.evaluate(SLIDER_TOP)
+    assert before > 0 and after == before
