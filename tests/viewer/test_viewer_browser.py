@@ -20,6 +20,7 @@ from robocram.viewer.page_picture import (
     open_viewer,
     settled_screenshot,
 )
+from tests.pinhole import view_axes
 
 OUT = Path(__file__).resolve().parents[2] / "out"
 WIDTH, HEIGHT = 1024, 640  # [px] of the page
@@ -42,12 +43,8 @@ def _project(
     looking_at: tuple[float, float, float] = CAMERA_AT,
 ) -> np.ndarray:
     """Pixel (column, row) of map points seen by the page's initial camera."""
-    eye, target = np.asarray(eye_at), np.asarray(looking_at)
-    forward = (target - eye) / np.linalg.norm(target - eye)
-    right = np.cross(forward, (0.0, 0.0, 1.0))
-    right /= np.linalg.norm(right)
-    up = np.cross(right, forward)
-    rel = points - eye
+    forward, right, up = view_axes(eye_at, looking_at)
+    rel = points - np.asarray(eye_at)
     depth = rel @ forward
     half_h = math.tan(FOV / 2)
     ndc_x = (rel @ right) / (depth * half_h * WIDTH / HEIGHT)

@@ -3,7 +3,6 @@ marked, and a caption that grows never moves the slider (issue 41, the viewer it
 
 from __future__ import annotations
 
-import math
 from typing import Any
 
 import numpy as np
@@ -14,6 +13,7 @@ from robocram.viewer import Viewer, replay_viewer
 from robocram.viewer.headless_browser import HeadlessChromium
 from robocram.viewer.page_picture import open_viewer
 from robocram.viewer.task_panel import CURRENT
+from tests.pinhole import box_corners, view_offsets
 from tests.viewer.conftest import free_port
 
 SLIDER_TOP = """(() => {
@@ -24,38 +24,19 @@ SLIDER_TOP = """(() => {
 LONG = "a caption long enough to wrap onto several lines " * 6
 
 
-def _in_view(points: np.ndarray, eye: np.ndarray, target: np.ndarray, fov: float) -> np.ndarray:
-    """Each point's (horizontal, vertical) offset from the view's centre, as a share of the
-    half-height of a square view ``fov`` [rad] high: inside if both are within 1."""
-    forward = (target - eye) / np.linalg.norm(target - eye)
-    right = np.cross(forward, (0.0, 0.0, 1.0))
-    right /= np.linalg.norm(right)
-    up = np.cross(right, forward)
-    rel = points - eye
-    depth = rel @ forward
-    assert (depth > 0).all(), "a point behind the camera"
-    half = math.tan(fov / 2) * depth
-    return np.stack([(rel @ right) / half, (rel @ up) / half], axis=1)
-
-
-def _corners(low: Any, high: Any) -> np.ndarray:
-    return np.array([[x, y, z] for x in (low[0], high[0]) for y in (low[1], high[1])
-                     for z in (low[2], high[2])])  # fmt: skip
-
-
 def test_the_first_camera_frames_the_robot_from_behind_at_a_useful_size() -> None:
     scene = kitchen_scene("pr2")
     with scene.world as world, Viewer(world, port=free_port()) as viewer:
         camera = viewer.server.initial_camera
         eye, target = np.asarray(camera.position), np.asarray(camera.look_at)
         fov = float(camera.fov)
-        robot = _corners(*world.aabb("pr2"))
-        offsets = _in_view(robot, eye, target, fov)
+        robot = box_corners(*world.aabb("pr2"))
+        offsets = view_offsets(robot, eye, target, fov)
         assert np.abs(offsets).max() <= 1.0  # the whole robot is in view
         height = offsets[:, 1].max() - offsets[:, 1].min()
         assert height > 0.35  # and more than a sixth of the picture high (0.35 of 2)
-        mug = _corners(*world.aabb("mug-1"))  # the item its task is about, 2 m away
-        assert np.abs(_in_view(mug, eye, target, fov)).max() <= 1.0
+        mug = box_corners(*world.aabb("mug-1"))  # the item its task is about, 2 m away
+        assert np.abs(view_offsets(mug, eye, target, fov)).max() <= 1.0
         base = np.asarray(world.pose("pr2").position)
         x, y, z, w = world.pose("pr2").orientation
         facing = np.array([1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 0.0])

@@ -13,28 +13,17 @@ from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
 from robocram.world import World
 from robocram.world.view_framing import Follower, Framing, frame_task
+from tests.pinhole import box_corners, view_offsets
 
 FOV = math.radians(45.0)
 
 
 def _offsets(points: np.ndarray, framing: Framing) -> np.ndarray:
-    """(right, up) of each point as a share of the half-height of a view FOV high."""
-    eye, target = np.asarray(framing.eye), np.asarray(framing.target)
-    forward = (target - eye) / np.linalg.norm(target - eye)
-    right = np.cross(forward, (0.0, 0.0, 1.0))
-    right /= np.linalg.norm(right)
-    up = np.cross(right, forward)
-    rel = points - eye
-    depth = rel @ forward
-    assert (depth > 0).all()
-    half = math.tan(FOV / 2) * depth
-    return np.stack([(rel @ right) / half, (rel @ up) / half], axis=1)
+    return view_offsets(points, framing.eye, framing.target, FOV)
 
 
 def _corners(world: World, name: str) -> np.ndarray:
-    low, high = world.aabb(name)
-    return np.array([[x, y, z] for x in (low[0], high[0]) for y in (low[1], high[1])
-                     for z in (low[2], high[2])])  # fmt: skip
+    return box_corners(*world.aabb(name))
 
 
 @pytest.fixture(scope="module")
