@@ -25,7 +25,7 @@ from robocram.motion import plan_base_path
 from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
-from robocram.world import World
+from robocram.world import RobotHandle, World
 
 STANDS = {
     "start": (-0.8, 0.2, math.pi / 2),
@@ -59,7 +59,7 @@ def run(
         for _ in range(repeats):
             begin = time.process_time()
             try:
-                path = plan_base_path(world, "pr2", _pose(*STANDS[b]))
+                path = plan_base_path(RobotHandle.of(world, "pr2"), _pose(*STANDS[b]))
             except NavigationPathBlocked:
                 outcomes["blocked"] += 1
                 continue

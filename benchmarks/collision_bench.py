@@ -18,6 +18,7 @@ from robocram.projection.collision_mode import colliding_pairs
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
+from robocram.world import RobotHandle
 
 
 def main(samples: int = 300, repeats: int = 3) -> None:
@@ -35,7 +36,7 @@ def main(samples: int = 300, repeats: int = 3) -> None:
 
     start = time.process_time()
     for _ in range(5):
-        coal_scene = CollisionScene.of(world, robot, joints)
+        coal_scene = CollisionScene.of(RobotHandle.of(world, robot), joints)
     build = (time.process_time() - start) / 5
     projected = ProjectedRobot.of(world, robot)
     links = set(world.link_names(robot))

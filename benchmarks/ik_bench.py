@@ -41,7 +41,7 @@ from pathlib import Path
 import numpy as np
 import pybullet as pb
 
-from robocram.kinematics import IKResult, IKSolver, forward_kinematics, solve_ik
+from robocram.kinematics import IKOptions, IKResult, IKSolver, forward_kinematics, solve_ik
 from robocram.robots import RobotDescription, RobotModel, load_description
 from robocram.tf import Pose
 
@@ -137,7 +137,9 @@ def run(name: str, desc: RobotDescription, arm: str, poses: list[Pose], solve: S
 def ours(
     desc: RobotDescription, arm: str, start: dict[str, float], use_torso: bool = False
 ) -> Callable[[Pose], IKResult]:
-    return lambda target: solve_ik(desc, arm, target, seed=start, use_torso=use_torso)
+    return lambda target: solve_ik(
+        desc, arm, target, seed=start, options=IKOptions(use_torso=use_torso)
+    )
 
 
 def arm_only_urdf(desc: RobotDescription, folder: str) -> Path:
@@ -308,7 +310,9 @@ def hsr_top_grasps(count: int, seed: int) -> None:
     for base in (None, PlanarBase()):
         answers, cpu = [], time.process_time()
         for target in poses:
-            answers.append(solve_ik(hsr, "arm", target, use_torso=True, base=base))
+            answers.append(
+                solve_ik(hsr, "arm", target, options=IKOptions(use_torso=True, base=base))
+            )
         cpu = (time.process_time() - cpu) * 1e3 / count
         ok = sum(a.success for a in answers)
         label = "arm alone" if base is None else "arm and base (+-0.5 m, +-pi)"

@@ -59,6 +59,7 @@ from robocram.projection.projected_robot import ProjectedRobot
 from robocram.scenes import kitchen_scene
 from robocram.tf import PoseStamped
 from robocram.tf import quaternion as quat
+from robocram.world import RobotHandle
 
 BEFORE = "d35812c"  # the last commit before robocram.motion: arms and base jump to goals
 ROOT = Path(__file__).resolve().parents[1]
@@ -150,13 +151,13 @@ def ompl_fallback(runs: int) -> Fallback:
     world, robot, start, goal, joints = _shelf_setup()
     limits = joint_limits(robot.description, joints)
     box = ([lim.lower for lim in limits], [lim.upper for lim in limits])
-    bound = TravelBound.of(world, "pr2", joints)
+    bound = TravelBound.of(RobotHandle.of(world, "pr2"), joints)
     tool = _tool_length(robot, joints)
     straight = float(np.linalg.norm(np.subtract(goal, start)))
     out = Fallback()
     for seed in range(runs):
         t0 = time.process_time()
-        scene = CollisionScene.of(world, "pr2", joints)
+        scene = CollisionScene.of(RobotHandle.of(world, "pr2"), joints)
         t1 = time.process_time()
         path = plan_joint_path(scene, start, goal, bound, box, seed=seed)
         t2 = time.process_time()
@@ -197,9 +198,9 @@ def impossible_query() -> tuple[float, int]:
     world, robot, start, goal, joints = _shelf_setup()
     limits = joint_limits(robot.description, joints)
     box = ([lim.lower for lim in limits], [lim.upper for lim in limits])
-    bound = TravelBound.of(world, "pr2", joints)
+    bound = TravelBound.of(RobotHandle.of(world, "pr2"), joints)
     begin = time.process_time()
-    scene = CollisionScene.of(world, "pr2", joints)
+    scene = CollisionScene.of(RobotHandle.of(world, "pr2"), joints)
     caged = _Caged(scene, np.array(goal))
     with contextlib.suppress(ManipulationPathBlocked):  # it must fail: the goal is caged
         plan_joint_path(caged, start, goal, bound, box)
@@ -233,8 +234,8 @@ def checks_per_second(samples: int = 2000) -> dict[str, float]:
     low = np.array([max(lim.lower, -math.pi) for lim in limits])
     high = np.array([min(lim.upper, math.pi) for lim in limits])
     qs = [low + rng.random(len(joints)) * (high - low) for _ in range(samples)]
-    coal = CollisionScene.of(world, "pr2", joints)
-    bullet = BulletScene(world, "pr2", joints)
+    coal = CollisionScene.of(RobotHandle.of(world, "pr2"), joints)
+    bullet = BulletScene(RobotHandle.of(world, "pr2"), joints)
     clearance = CoalClearance(bullet)
     rates = {}
     for name, fn in (

@@ -13,6 +13,7 @@ from robocram.designators import a
 from robocram.plans import transport
 from robocram.projection import prospect, simulated_robot
 from robocram.scenes import kitchen_scene
+from robocram.world import RobotHandle
 
 PLACES = {"table": "table_top", "east counter": "counter_top_east"}
 
@@ -24,7 +25,9 @@ def main() -> str:
         name: a.location(on=("kitchen", link), for_="mug-1") for name, link in PLACES.items()
     }
     prospects = {
-        name: prospect(scene.world, scene.robot, lambda target=target: transport("mug", target))
+        name: prospect(
+            RobotHandle.of(scene.world, scene.robot), lambda target=target: transport("mug", target)
+        )
         for name, target in targets.items()
     }
     for name, seen in prospects.items():

@@ -14,7 +14,7 @@ import sys
 from robocram.motion.self_collision_matrix import SelfCollisionMatrix
 from robocram.motion.stored_self_collision import write_stored
 from robocram.robots.builtin import builtin_names
-from robocram.world import World
+from robocram.world import RobotHandle, World
 
 
 def main(robots: list[str]) -> None:
@@ -25,7 +25,7 @@ def main(robots: list[str]) -> None:
             name = handle.description.name  # an alias (hsr) names the same robot (hsrb)
             if name in stored:
                 continue
-            matrix, digest = SelfCollisionMatrix.worked_out(world, handle.name)
+            matrix, digest = SelfCollisionMatrix.worked_out(RobotHandle.of(world, handle.name))
         stored.add(name)
         path = write_stored(name, digest, matrix.to_data())
         print(f"{name}: {len(matrix.checked)} checked, {len(matrix.skipped)} skipped: {path}")

@@ -10,6 +10,7 @@ import pytest
 
 from robocram.kinematics import (
     BaseMotion,
+    IKOptions,
     IKSolver,
     KinematicsError,
     PlanarBase,
@@ -62,11 +63,16 @@ def test_top_grasps_the_arm_alone_misses_are_reached_with_the_base(
     hsr: LoadedDescription, x: float, y: float, z: float, yaw: float
 ) -> None:
     target = top_grasp(x, y, z, yaw)
-    still = solve_ik(hsr, "arm", target, use_torso=True, orientation_tolerance=1e-3)
+    still = solve_ik(
+        hsr, "arm", target, options=IKOptions(use_torso=True, orientation_tolerance=1e-3)
+    )
     assert not still.success
     assert still.base_motion is None
     result = solve_ik(
-        hsr, "arm", target, use_torso=True, base=PlanarBase(), orientation_tolerance=1e-3
+        hsr,
+        "arm",
+        target,
+        options=IKOptions(use_torso=True, base=PlanarBase(), orientation_tolerance=1e-3),
     )
     assert result.success
     motion = result.base_motion
@@ -85,17 +91,21 @@ def test_a_target_the_arm_reaches_alone_needs_no_base_motion(hsr: LoadedDescript
     for _ in range(10):
         truth = dict(zip(arm.variables, rng.uniform(arm.chain.lower, arm.chain.upper), strict=True))
         target = forward_kinematics(hsr, truth, TOOL)
-        result = solve_ik(hsr, "arm", target, use_torso=True, base=PlanarBase())
+        result = solve_ik(hsr, "arm", target, options=IKOptions(use_torso=True, base=PlanarBase()))
         assert result.success
         assert result.base_motion == BaseMotion(0.0, 0.0, 0.0)
 
 
 def test_the_base_stays_within_its_travel(hsr: LoadedDescription) -> None:
     far = top_grasp(1.3, 0.0, 0.7, 0.0)  # about 0.7 m beyond the arm's reach from the base
-    short = solve_ik(hsr, "arm", far, use_torso=True, base=PlanarBase(0.3, 0.3, 1.0))
+    short = solve_ik(
+        hsr, "arm", far, options=IKOptions(use_torso=True, base=PlanarBase(0.3, 0.3, 1.0))
+    )
     assert not short.success
     assert short.base_motion is not None and abs(short.base_motion.x) <= 0.3 + 1e-9
-    long = solve_ik(hsr, "arm", far, use_torso=True, base=PlanarBase(1.0, 0.5, math.pi))
+    long = solve_ik(
+        hsr, "arm", far, options=IKOptions(use_torso=True, base=PlanarBase(1.0, 0.5, math.pi))
+    )
     assert long.success and long.base_motion is not None
     assert 0.3 < long.base_motion.x <= 1.0
     tool = reached(hsr, dict(long.joint_positions), long.base_motion)
@@ -105,7 +115,9 @@ def test_the_base_stays_within_its_travel(hsr: LoadedDescription) -> None:
 def test_the_same_query_gives_the_same_answer(hsr: LoadedDescription) -> None:
     target = top_grasp(0.5, -0.2, 0.7, 0.8)
     answers = [
-        solve_ik(hsr, "arm", target, use_torso=True, base=PlanarBase(), random_seed=3)
+        solve_ik(
+            hsr, "arm", target, options=IKOptions(use_torso=True, base=PlanarBase(), random_seed=3)
+        )
         for _ in range(2)
     ]
     assert answers[0].joint_positions == answers[1].joint_positions
@@ -122,7 +134,11 @@ def test_collision_checks_see_the_base_motion(hsr: LoadedDescription) -> None:
 
     target = top_grasp(0.45, 0.10, 0.75, 0.0)
     result = solve_ik(
-        hsr, "arm", target, use_torso=True, base=PlanarBase(), collision_check=refuse_moves_forward
+        hsr,
+        "arm",
+        target,
+        options=IKOptions(use_torso=True, base=PlanarBase()),
+        collision_check=refuse_moves_forward,
     )
     assert any(m is not None for m in seen)
     if result.success:

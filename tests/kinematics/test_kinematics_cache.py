@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from robocram.kinematics import IKSolver, KinematicsCache, PlanarBase, solve_ik
+from robocram.kinematics import IKOptions, IKSolver, KinematicsCache, PlanarBase, solve_ik
 from robocram.kinematics.kinematics_cache import BoundedMap
 from robocram.kinematics.robot_kinematics import RobotKinematics, robot_kinematics
 from robocram.robots import load_description
@@ -115,7 +115,13 @@ def test_answers_do_not_depend_on_the_cache() -> None:
     hsr = load_description("hsrb")
     target = Pose((0.9, 0.3, 0.7))
     answers = [
-        solve_ik(hsr, "arm", target, use_torso=True, base=PlanarBase(), random_seed=3, cache=c)
+        solve_ik(
+            hsr,
+            "arm",
+            target,
+            options=IKOptions(use_torso=True, base=PlanarBase(), random_seed=3),
+            cache=c,
+        )
         for c in (None, KinematicsCache(), KinematicsCache(solvers=1, tables=1, planar_models=1))
     ]
     assert answers[0].success and answers[0].base_motion is not None

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from robocram.kinematics import solve_ik
+from robocram.kinematics import IKOptions, solve_ik
 from robocram.tf import Pose
 
 
@@ -17,7 +17,9 @@ def test_rejected_solutions_carry_their_colliding_pairs_most_frequent_first() ->
         return pairs + [("r_forearm_link", "table")] if len(calls) % 2 else pairs
 
     target = Pose((0.6, -0.2, 0.9))
-    result = solve_ik("pr2", "right", target, collision_check=collides, max_restarts=5)
+    result = solve_ik(
+        "pr2", "right", target, options=IKOptions(max_restarts=5), collision_check=collides
+    )
     assert not result.success
     assert result.rejected_in_collision == len(calls) >= 2
     assert result.colliding_pairs == (("r_gripper_palm_link", "mug-1"), ("r_forearm_link", "table"))

@@ -7,7 +7,7 @@ import warnings
 
 import pytest
 
-from robocram.kinematics import forward_kinematics, solve_ik
+from robocram.kinematics import IKOptions, forward_kinematics, solve_ik
 from robocram.robots import (
     ArmDescription,
     FrameSpec,
@@ -57,6 +57,8 @@ def test_a_reachable_turn_is_found_to_the_tolerance(wrist_only: LoadedDescriptio
 def test_a_pose_off_the_circle_fails_cleanly(wrist_only: LoadedDescription) -> None:
     here = forward_kinematics(wrist_only, {}, "wrist_tool")
     off = dataclasses.replace(here, position=(here.position[0] + 0.1, *here.position[1:]))
-    result = solve_ik(wrist_only, "arm", Pose(off.position, off.orientation), max_restarts=5)
+    result = solve_ik(
+        wrist_only, "arm", Pose(off.position, off.orientation), options=IKOptions(max_restarts=5)
+    )
     assert not result.success
     assert result.position_error > 0.05

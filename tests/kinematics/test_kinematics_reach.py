@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from robocram.kinematics import IKSolver, forward_kinematics, reachable, solve_ik
+from robocram.kinematics import IKOptions, IKSolver, forward_kinematics, reachable, solve_ik
 from robocram.kinematics.seed_table import random_configurations
 from robocram.robots import RobotDescription, load_description
 from robocram.tf import Pose
@@ -42,7 +42,7 @@ def test_every_sampled_pose_lies_inside_the_bound(robot: str, arm: str, use_tors
     for x in xs:
         joints = dict(zip(solver.variables, x.tolist(), strict=True))
         tool = forward_kinematics(desc, joints, solver.frame)
-        assert reachable(desc, arm, tool, use_torso=use_torso)
+        assert reachable(desc, arm, tool, options=IKOptions(use_torso=use_torso))
         _, in_base, _ = solver.locate(tool, joints)
         assert solver.reach.distance_outside(in_base.translation) <= 1e-9
         assert solver.reach.pose_outside(in_base) <= 1e-9
@@ -85,7 +85,9 @@ def test_torso_extends_the_reach(pr2: RobotDescription) -> None:
     high = forward_kinematics(pr2, {"torso_lift_joint": 0.33, "r_shoulder_lift_joint": -1.2}, TOOL)
     above = Pose((high.position[0], high.position[1], high.position[2] + 0.2), high.orientation)
     assert not reachable(pr2, "right", above, seed={"torso_lift_joint": 0.0})
-    assert reachable(pr2, "right", above, seed={"torso_lift_joint": 0.0}, use_torso=True)
+    assert reachable(
+        pr2, "right", above, seed={"torso_lift_joint": 0.0}, options=IKOptions(use_torso=True)
+    )
     assert not math.isclose(IKSolver.cached(pr2, "right", True).reach.radius, 1.001)
 
 

@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from robocram.kinematics import IKSolver, forward_kinematics, reachable, solve_ik
+from robocram.kinematics import IKOptions, IKSolver, forward_kinematics, reachable, solve_ik
 from robocram.kinematics.chain_sweep import chain_base, sweep_tip_poses
 from robocram.kinematics.seed_table import SeedTable, random_configurations
 from robocram.robots import load_description
@@ -74,7 +74,7 @@ def test_hsr_without_its_lift_gives_up_after_fruitless_descents() -> None:
         },
         "hand_tool_frame",
     )
-    assert solve_ik(hsr, "arm", target, use_torso=True).success
+    assert solve_ik(hsr, "arm", target, options=IKOptions(use_torso=True)).success
     assert reachable(hsr, "arm", target, seed={"arm_lift_joint": 0.0})
     result = solve_ik(hsr, "arm", target, seed={"arm_lift_joint": 0.0})
     assert not result.success

@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
 import pytest
 
 from robocram.kinematics import (
+    IKOptions,
+    IKSettings,
     IKSolver,
     KinematicsError,
     TargetFrameError,
@@ -68,7 +71,9 @@ def test_known_pose_of_the_tool_frame(pr2: RobotDescription) -> None:
 
 
 def test_unreachable_target_fails_within_its_budget(pr2: RobotDescription) -> None:
-    result = solve_ik(pr2, "right", Pose((5.0, 0.0, 1.0)), max_restarts=20, max_iterations=30)
+    result = solve_ik(
+        pr2, "right", Pose((5.0, 0.0, 1.0)), options=IKOptions(max_restarts=20, max_iterations=30)
+    )
     assert not result.success and not result
     assert result.restarts <= 20 and result.iterations <= 21 * 30
     assert result.position_error > 3.5  # the arm reaches about 1.2 m from the base
@@ -83,7 +88,7 @@ def test_torso_moves_when_the_target_is_too_high(pr2: RobotDescription) -> None:
         pr2, {"torso_lift_joint": 0.3, "r_shoulder_lift_joint": -0.3, **bent}, TOOL
     )
     assert not solve_ik(pr2, "right", high, seed=seed)
-    result = solve_ik(pr2, "right", high, seed=seed, use_torso=True)
+    result = solve_ik(pr2, "right", high, seed=seed, options=IKOptions(use_torso=True))
     assert result.success
     assert result.joint_positions["torso_lift_joint"] > 0.1
     reached = forward_kinematics(pr2, result.joint_positions, TOOL)
@@ -130,7 +135,9 @@ def test_collision_check_rejections_force_restarts(pr2: RobotDescription) -> Non
 
 def test_always_colliding_fails_after_restarts(pr2: RobotDescription) -> None:
     target = forward_kinematics(pr2, {"r_elbow_flex_joint": -1.2}, TOOL)
-    result = solve_ik(pr2, "right", target, collision_check=lambda j: True, max_restarts=5)
+    result = solve_ik(
+        pr2, "right", target, options=IKOptions(max_restarts=5), collision_check=lambda j: True
+    )
     assert not result.success and result.restarts == 5 and result.rejected_in_collision >= 1
 
 
@@ -138,7 +145,7 @@ def test_bad_names(pr2: RobotDescription) -> None:
     with pytest.raises(UnknownNameError, match=r"arm 'rigth' not in pr2; did you mean 'right'"):
         solve_ik(pr2, "rigth", Pose((0.5, 0, 1)))
     with pytest.raises(UnknownNameError, match="r_gripper_tool_frame"):
-        solve_ik(pr2, "right", Pose((0.5, 0, 1)), frame="r_gripper_tool_fram")
+        solve_ik(pr2, "right", Pose((0.5, 0, 1)), options=IKOptions(frame="r_gripper_tool_fram"))
     with pytest.raises(UnknownNameError, match="r_elbow_flex_joint"):
         forward_kinematics(pr2, {"r_elbow_flex": 0.1}, TOOL)
     quad = load_description("quadrotor")
@@ -151,7 +158,7 @@ def test_hsr_torso_mimic_follows_arm_lift() -> None:
     assert hsr.torso_joint == "arm_lift_joint"
     truth = {"arm_lift_joint": 0.4, "arm_flex_joint": -0.8, "wrist_flex_joint": -0.7}
     target = forward_kinematics(hsr, truth, "hand_tool_frame")
-    result = solve_ik(hsr, "arm", target, use_torso=True)
+    result = solve_ik(hsr, "arm", target, options=IKOptions(use_torso=True))
     assert result.success
     lift = result.joint_positions["arm_lift_joint"]
     assert result.joint_positions["torso_lift_joint"] == pytest.approx(0.5 * lift)
@@ -200,13 +207,13 @@ def test_mimic_follower_on_the_chain(mimic_arm: RobotDescription) -> None:
     assert result.joint_positions["j2"] == pytest.approx(0.7, abs=2e-3)
     assert result.joint_positions["j3"] == pytest.approx(0.5, abs=1e-2)
     with pytest.raises(KinematicsError, match="no torso joint"):
-        solve_ik(mimic_arm, "arm", target, use_torso=True)
+        solve_ik(mimic_arm, "arm", target, options=IKOptions(use_torso=True))
 
 
 def test_mimic_target_only_reachable_beyond_follower_limit(mimic_arm: RobotDescription) -> None:
     # j1 = 0.5 would put j2 at 1.1, past its limit: the solver must not go there.
     target = forward_kinematics(mimic_arm, {"j1": 0.5, "j2": 1.1, "j3": 0.0}, "tip")
-    result = solve_ik(mimic_arm, "arm", target, max_restarts=10)
+    result = solve_ik(mimic_arm, "arm", target, options=IKOptions(max_restarts=10))
     assert not result.success
     assert result.joint_positions["j2"] <= 1.0 + 1e-9
 
@@ -234,10 +241,23 @@ def test_same_random_seed_same_answer(pr2: RobotDescription) -> None:
     target = forward_kinematics(pr2, {"r_elbow_flex_joint": -1.2}, TOOL)
     runs = [
         solve_ik(
-            pr2, "right", target, max_restarts=8, random_seed=s, collision_check=lambda j: True
+            pr2,
+            "right",
+            target,
+            options=IKOptions(max_restarts=8, random_seed=s),
+            collision_check=lambda j: True,
         )
         for s in (3, 3, 4)
     ]
     assert runs[0].joint_positions == runs[1].joint_positions
     assert runs[0].iterations == runs[1].iterations
     assert runs[0].joint_positions != runs[2].joint_positions
+
+
+def test_options_default_to_the_descents_settings() -> None:
+    """IKOptions() asks what the descent's defaults ask: no budget or tolerance changes."""
+    defaults = IKSettings()
+    assert IKOptions().settings() == defaults
+    assert IKOptions(max_restarts=3).settings().max_restarts == 3
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        IKOptions().use_torso = True  # type: ignore[misc]

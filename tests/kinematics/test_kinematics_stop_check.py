@@ -7,7 +7,7 @@ import math
 
 import pytest
 
-from robocram.kinematics import solve_ik
+from robocram.kinematics import IKOptions, solve_ik
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
 
@@ -25,13 +25,15 @@ def _always(values: dict[str, float]) -> bool:
 
 def test_a_hook_that_never_stops_changes_nothing() -> None:
     for check in (None, _always):
-        plain = solve_ik("pr2", "right", HARD, random_seed=3, collision_check=check)
+        plain = solve_ik(
+            "pr2", "right", HARD, options=IKOptions(random_seed=3), collision_check=check
+        )
         calls: list[int] = []
         hooked = solve_ik(
             "pr2",
             "right",
             HARD,
-            random_seed=3,
+            options=IKOptions(random_seed=3),
             collision_check=check,
             stop_check=functools.partial(calls.append, 1),
         )

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from robocram.kinematics import forward_kinematics, solve_ik, track_ik
+from robocram.kinematics import IKOptions, forward_kinematics, solve_ik, track_ik
 from robocram.robots import RobotDescription, load_description
 from robocram.tf import Pose
 
@@ -38,7 +38,7 @@ def test_each_answer_is_the_one_solve_ik_gives_from_the_answer_before(
     poses = _line(pr2, 10, 0.007)
     seed = dict(SEED)
     for pose, tracked in zip(poses, track_ik(pr2, "right", poses, SEED), strict=True):
-        alone = solve_ik(pr2, "right", pose, seed=seed, max_restarts=0)
+        alone = solve_ik(pr2, "right", pose, seed=seed, options=IKOptions(max_restarts=0))
         assert tracked.success and alone.success
         assert tracked.joint_positions == alone.joint_positions
         assert tracked.iterations <= 3 and tracked.position_error < 1e-3

@@ -10,7 +10,7 @@ from robocram.motion.base_collision import BaseCollisionChecker
 from robocram.motion.planar_motion import straight_poses
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
-from robocram.world import World
+from robocram.world import RobotHandle, World
 
 
 def _first_touching(checker: BaseCollisionChecker, poses: np.ndarray) -> int | None:
@@ -37,12 +37,12 @@ def test_first_blocked_equals_the_exact_check_at_every_pose(
     with kitchen.stored_state():
         poses = straight_poses(np.array(start), np.array(end), 1.0)
         kitchen.set_pose("pr2", _pose(*start))
-        with BaseCollisionChecker.build(kitchen, "pr2", end[:2]) as checker:
+        with BaseCollisionChecker.build(RobotHandle.of(kitchen, "pr2"), end[:2]) as checker:
             truth = _first_touching(checker, poses)
             found = checker.first_blocked(poses)
         assert found == truth
         assert truth is None or truth > 5  # the case drives some way before it touches
-        with BaseCollisionChecker.build(kitchen, "pr2", end[:2]) as whole:
+        with BaseCollisionChecker.build(RobotHandle.of(kitchen, "pr2"), end[:2]) as whole:
             whole._widen()  # noqa: SLF001 - the same question on the whole world's grid
             assert whole.first_blocked(poses) == truth
 
@@ -50,7 +50,7 @@ def test_first_blocked_equals_the_exact_check_at_every_pose(
 def test_the_grid_widens_for_a_pose_beyond_the_start_and_goal(kitchen: World) -> None:
     with kitchen.stored_state():
         kitchen.set_pose("pr2", _pose(-0.8, 0.2, 1.5708))
-        with BaseCollisionChecker.build(kitchen, "pr2", (-0.5, 0.2)) as checker:
+        with BaseCollisionChecker.build(RobotHandle.of(kitchen, "pr2"), (-0.5, 0.2)) as checker:
             local = checker.grid.masks.shape
             assert checker.covered != checker.bounds
             far = np.array([[1.5, -1.0, 0.0]])
@@ -66,7 +66,7 @@ def test_a_gap_skips_exact_checks_near_furniture(kitchen: World) -> None:
         start, end = (-2.0, 1.5, 1.5708), (-0.4, 1.5, 1.5708)
         kitchen.set_pose("pr2", _pose(*start))
         poses = straight_poses(np.array(start), np.array(end), 1.0)
-        with BaseCollisionChecker.build(kitchen, "pr2", end[:2]) as checker:
+        with BaseCollisionChecker.build(RobotHandle.of(kitchen, "pr2"), end[:2]) as checker:
             flagged = int(checker.fast_hits(poses, boundary=False).sum())
             checker.exact_checks = 0
             result = checker.first_blocked(poses)
@@ -82,7 +82,7 @@ def test_a_motion_asked_again_needs_no_exact_check(kitchen: World) -> None:
         start, end = (-2.0, 1.5, 1.5708), (-0.4, 1.56, 1.5708)
         kitchen.set_pose("pr2", _pose(*start))
         poses = straight_poses(np.array(start), np.array(end), 1.0)
-        with BaseCollisionChecker.build(kitchen, "pr2", end[:2]) as checker:
+        with BaseCollisionChecker.build(RobotHandle.of(kitchen, "pr2"), end[:2]) as checker:
             first = checker.first_blocked(poses)
             exact = checker.exact_checks
             assert first is not None and exact > 0
@@ -97,14 +97,14 @@ def _pose(x: float, y: float, yaw: float) -> Pose:
 def test_a_footprint_is_kept_per_posture(kitchen: World) -> None:
     with kitchen.stored_state():
         kitchen.set_pose("pr2", _pose(-0.8, 0.2, 1.5708))
-        with BaseCollisionChecker.build(kitchen, "pr2", (0.0, 0.0)) as first:
+        with BaseCollisionChecker.build(RobotHandle.of(kitchen, "pr2"), (0.0, 0.0)) as first:
             pass
         kitchen.set_pose("pr2", _pose(0.5, -0.3, 0.4))  # moving the base keeps the posture
-        with BaseCollisionChecker.build(kitchen, "pr2", (0.0, 0.0)) as second:
+        with BaseCollisionChecker.build(RobotHandle.of(kitchen, "pr2"), (0.0, 0.0)) as second:
             pass
         assert second.footprint is first.footprint
         kitchen.set_joint_states("pr2", {"torso_lift_joint": 0.25})
-        with BaseCollisionChecker.build(kitchen, "pr2", (0.0, 0.0)) as raised:
+        with BaseCollisionChecker.build(RobotHandle.of(kitchen, "pr2"), (0.0, 0.0)) as raised:
             pass
         assert raised.footprint is not first.footprint
         assert raised._bins is not None and first._bins is not None  # noqa: SLF001
@@ -114,7 +114,7 @@ def test_a_footprint_is_kept_per_posture(kitchen: World) -> None:
 def test_the_unclipped_lookup_equals_the_clipped_one(kitchen: World) -> None:
     with kitchen.stored_state():
         kitchen.set_pose("pr2", _pose(-0.8, 0.2, 1.5708))
-        with BaseCollisionChecker.build(kitchen, "pr2", (1.0, 1.2)) as checker:
+        with BaseCollisionChecker.build(RobotHandle.of(kitchen, "pr2"), (1.0, 1.2)) as checker:
             rng = np.random.default_rng(7)
             (x0, y0), (x1, y1) = checker.covered
             poses = np.column_stack(
@@ -134,7 +134,7 @@ def test_a_drive_through_open_floor_is_proven_in_blocks(kitchen: World) -> None:
         start, end = (-0.8, 0.2, 1.5708), (0.3, -0.2, 0.0)
         kitchen.set_pose("pr2", _pose(*start))
         poses = straight_poses(np.array(start), np.array(end), 1.0)
-        with BaseCollisionChecker.build(kitchen, "pr2", end[:2]) as checker:
+        with BaseCollisionChecker.build(RobotHandle.of(kitchen, "pr2"), end[:2]) as checker:
             runs = checker._unproven(poses)  # noqa: SLF001 - the blocks left to check
             left = sum(stop - first for first, stop in runs)
             assert left < len(poses) / 2
@@ -146,5 +146,5 @@ def test_a_motion_standing_still_is_checked_as_it_is(kitchen: World) -> None:
         start = (-0.8, 0.2, 1.5708)
         kitchen.set_pose("pr2", _pose(*start))
         poses = np.array([start] * 40, dtype=float)
-        with BaseCollisionChecker.build(kitchen, "pr2", start[:2]) as checker:
+        with BaseCollisionChecker.build(RobotHandle.of(kitchen, "pr2"), start[:2]) as checker:
             assert checker.first_blocked(poses) == _first_touching(checker, poses)

@@ -20,7 +20,7 @@ from robocram.motion.travel_bound import TravelBound
 from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
-from robocram.world import World
+from robocram.world import RobotHandle, World
 
 JOINTS = (
     "torso_lift_joint", "r_shoulder_pan_joint", "r_shoulder_lift_joint",
@@ -71,7 +71,7 @@ def _dense_free(judge: BulletScene, qa: np.ndarray, qb: np.ndarray, bound: Trave
 
 def _verdicts(world: World, judge: BulletScene, checker: ClearanceChecker, seed: int) -> int:
     """Compare both checks on seeded segments; return how many were blocked."""
-    bound = TravelBound.of(world, "pr2", JOINTS)
+    bound = TravelBound.of(RobotHandle.of(world, "pr2"), JOINTS)
     blocked = 0
     for qa, qb in _segments(world, judge, seed, SEGMENTS):
         fast = segment_free(checker, qa, qb, bound, CheckCounter())
@@ -91,13 +91,13 @@ def world() -> World:
 
 @pytest.mark.parametrize("seed", range(3))
 def test_advancement_on_coal_agrees_with_the_dense_check(world: World, seed: int) -> None:
-    judge = BulletScene(world, "pr2", JOINTS)
+    judge = BulletScene(RobotHandle.of(world, "pr2"), JOINTS)
     blocked = _verdicts(world, judge, CoalClearance(judge), seed)
     assert 0 < blocked < SEGMENTS  # both kinds are met
 
 
 def test_advancement_on_the_world_agrees_with_the_dense_check(world: World) -> None:
-    judge = BulletScene(world, "pr2", JOINTS)
+    judge = BulletScene(RobotHandle.of(world, "pr2"), JOINTS)
     blocked = _verdicts(world, judge, judge, 3)
     assert 0 < blocked < SEGMENTS
 
@@ -105,7 +105,7 @@ def test_advancement_on_the_world_agrees_with_the_dense_check(world: World) -> N
 def test_advancement_holding_the_mug_agrees_with_the_dense_check(world: World) -> None:
     world.attach("mug-1", "pr2", "r_wrist_roll_link")
     try:
-        judge = BulletScene(world, "pr2", JOINTS)
+        judge = BulletScene(RobotHandle.of(world, "pr2"), JOINTS)
         blocked = _verdicts(world, judge, CoalClearance(judge), 4)
     finally:
         world.detach("mug-1")

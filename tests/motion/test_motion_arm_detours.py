@@ -31,6 +31,7 @@ from robocram.projection.collision_mode import collision_check
 from robocram.scenes import KitchenScene, kitchen_scene
 from robocram.tf import PoseStamped
 from robocram.tf import quaternion as quat
+from robocram.world import RobotHandle
 
 NORTH = quat.from_euler(0.0, 0.0, math.pi / 2)
 LOW_BOX = ((0.12, 0.12, 0.36), (-0.97, 2.02, 1.04))  # [m] size, centre: the hand lifts over
@@ -81,10 +82,10 @@ def _detour_setup(scene: KitchenScene) -> tuple:
     world = scene.world
     limits = joint_limits(world.robot("pr2").description, JOINTS)
     box = ([lim.lower for lim in limits], [lim.upper for lim in limits])
-    bound = TravelBound.of(world, "pr2", JOINTS)
-    height = ToolHeight.of(world, "pr2", JOINTS)
+    bound = TravelBound.of(RobotHandle.of(world, "pr2"), JOINTS)
+    height = ToolHeight.of(RobotHandle.of(world, "pr2"), JOINTS)
     assert height is not None
-    return CoalClearance(BulletScene(world, "pr2", JOINTS)), bound, box, height
+    return CoalClearance(BulletScene(RobotHandle.of(world, "pr2"), JOINTS)), bound, box, height
 
 
 def _tool_height(scene: KitchenScene, q: tuple[float, ...]) -> float:
@@ -102,7 +103,7 @@ def _tool_height(scene: KitchenScene, q: tuple[float, ...]) -> float:
 def test_the_hand_is_lifted_over_the_box_and_never_touches_it(motion: tuple) -> None:
     scene, start, end = motion
     checker, bound, limits, height = _detour_setup(scene)
-    judge = BulletScene(scene.world, "pr2", JOINTS)
+    judge = BulletScene(RobotHandle.of(scene.world, "pr2"), JOINTS)
     blocked = first_collision(judge, np.array(start), np.array(end), bound, CheckCounter())
     assert blocked is not None and any(other == "box" for _, other in blocked[1])
     path = detour_path(checker, start, end, bound, limits, height)
@@ -139,7 +140,7 @@ def test_an_arm_motion_takes_the_detour_before_planning(motion: tuple) -> None:
     scene, start, end = motion
     world = scene.world
     before = world.joint_states("pr2")
-    motion = plan_arm_motion(world, "pr2", dict(zip(JOINTS, end, strict=True)))
+    motion = plan_arm_motion(RobotHandle.of(world, "pr2"), dict(zip(JOINTS, end, strict=True)))
     assert motion.path.planner == "detour"
     assert np.allclose(motion.path.waypoints[0], start, atol=1e-12)
     assert world.joint_states("pr2") == before  # nothing moved
@@ -149,7 +150,9 @@ def test_an_arm_motion_takes_the_detour_before_planning(motion: tuple) -> None:
 def test_a_box_too_tall_to_lift_over_is_left_to_the_planner(motion: tuple) -> None:
     scene, start, end = motion
     assert detour_path(*_split(scene, start, end)) is None
-    motion = plan_arm_motion(scene.world, "pr2", dict(zip(JOINTS, end, strict=True)))
+    motion = plan_arm_motion(
+        RobotHandle.of(scene.world, "pr2"), dict(zip(JOINTS, end, strict=True))
+    )
     assert motion.path.planner == "rrt_connect"
 
 
@@ -157,7 +160,7 @@ def test_a_box_too_tall_to_lift_over_is_left_to_the_planner(motion: tuple) -> No
 def test_a_goal_inside_the_box_gets_no_detour(motion: tuple) -> None:
     scene, start, end = motion
     checker, bound, limits, height = _detour_setup(scene)
-    judge = BulletScene(scene.world, "pr2", JOINTS)
+    judge = BulletScene(RobotHandle.of(scene.world, "pr2"), JOINTS)
     hit = first_collision(judge, np.array(start), np.array(end), bound, CheckCounter())
     assert hit is not None
     inside = np.array(start) + (np.array(end) - np.array(start)) * hit[0]
@@ -179,7 +182,7 @@ def test_a_lift_one_joint_leaves_short_is_carried_on_by_the_next(
     current = world.joint_states("pr2")
     q = np.array([current[j] for j in joints])
     q[0] = box[1][0] - 0.1
-    height = ToolHeight.of(world, "pr2", joints)
+    height = ToolHeight.of(RobotHandle.of(world, "pr2"), joints)
     assert height is not None
     here = height.height(q)
     alone = height.raised(q, 0.3, box)
@@ -203,7 +206,7 @@ def test_a_detour_and_a_planned_path_keep_the_joint_limits(
     world = scene.world
     goal = dict(zip(JOINTS, end, strict=True))
     coarse, dense = (
-        plan_arm_motion(world, "pr2", goal, settings=MotionSettings(period=period))
+        plan_arm_motion(RobotHandle.of(world, "pr2"), goal, settings=MotionSettings(period=period))
         for period in (0.05, timing_judge.DENSE)
     )
     assert coarse.path.planner in ("detour", "rrt_connect") and len(coarse.path.waypoints) >= 3

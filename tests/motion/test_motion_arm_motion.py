@@ -13,6 +13,7 @@ import pytest
 
 from robocram.motion import plan_arm_motion
 from robocram.scenes import KitchenScene, kitchen_scene
+from robocram.world import RobotHandle
 
 PARKING = ("r_shoulder_pan_joint", "r_shoulder_lift_joint", "r_elbow_flex_joint")
 
@@ -27,7 +28,7 @@ def scene() -> Iterator[KitchenScene]:
 def test_a_motion_to_where_the_arm_is_needs_no_check(scene: KitchenScene) -> None:
     world = scene.world
     now = world.joint_states("pr2")
-    motion = plan_arm_motion(world, "pr2", {j: now[j] for j in PARKING})
+    motion = plan_arm_motion(RobotHandle.of(world, "pr2"), {j: now[j] for j in PARKING})
     assert motion.path.planner == "straight" and motion.path.checks == 0
     assert motion.path.waypoints == (tuple(now[j] for j in PARKING),) * 2
     assert motion.trajectory.joint_names == PARKING
@@ -41,5 +42,5 @@ def test_a_motion_that_moves_is_checked(scene: KitchenScene) -> None:
     now = world.joint_states("pr2")
     goal = {j: now[j] for j in PARKING}
     goal["r_elbow_flex_joint"] -= 0.1
-    motion = plan_arm_motion(world, "pr2", goal)
+    motion = plan_arm_motion(RobotHandle.of(world, "pr2"), goal)
     assert motion.path.planner == "straight" and motion.path.checks > 0

@@ -13,7 +13,7 @@ from robocram.motion.base_path import BasePath, plan_base_path
 from robocram.motion.planar_motion import straight_poses
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
-from robocram.world import World
+from robocram.world import RobotHandle, World
 
 DRAWER = "drawer_unit_drawer_3"
 FAST_CLEARANCE = 0.05  # [m] the fast check's 2 cm squares on 1 cm cells flag nearer poses
@@ -56,7 +56,7 @@ def _collisions_along(
 
 def test_a_clear_drive_is_one_straight_segment(world: World) -> None:
     start = world.pose("pr2")
-    path = plan_base_path(world, "pr2", _pose(0.3, 0.1, 0.0))
+    path = plan_base_path(RobotHandle.of(world, "pr2"), _pose(0.3, 0.1, 0.0))
     assert path.planner == "straight" and len(path.poses) == 2
     assert path.poses[0] == pytest.approx((-0.8, 0.2, math.pi / 2))
     assert path.poses[1] == pytest.approx((0.3, 0.1, 0.0))
@@ -70,11 +70,11 @@ def test_a_box_in_the_way_is_driven_around(world: World) -> None:
     world.add_box("crate", (0.5, 0.5, 0.6), (-0.2, 0.2, 0.3))
     world.set_pose("pr2", _pose(-1.2, 0.2, 0.0))
     goal = _pose(0.9, 0.2, 0.0)
-    path = plan_base_path(world, "pr2", goal, seed=3)
+    path = plan_base_path(RobotHandle.of(world, "pr2"), goal, seed=3)
     assert path.planner == "RRTConnect" and len(path.poses) >= 3
     assert path.poses[-1][:2] == pytest.approx((0.9, 0.2))
     assert _exactly_free(world, path) == []
-    again = plan_base_path(world, "pr2", goal, seed=3)
+    again = plan_base_path(RobotHandle.of(world, "pr2"), goal, seed=3)
     assert again.poses == path.poses and again.fast_checks == path.fast_checks
 
 
@@ -85,7 +85,7 @@ def test_no_waypoint_of_a_planned_drive_can_be_dropped(world: World) -> None:
     a planned path keeps that clearance), and it is hardly longer than the way round."""
     world.add_box("crate", (0.5, 0.5, 0.6), (-0.2, 0.2, 0.3))
     world.set_pose("pr2", _pose(-1.2, 0.2, 0.0))
-    path = plan_base_path(world, "pr2", _pose(0.9, 0.2, 0.0), seed=3)
+    path = plan_base_path(RobotHandle.of(world, "pr2"), _pose(0.9, 0.2, 0.0), seed=3)
     poses = list(path.poses)
     assert path.planner == "RRTConnect" and len(poses) >= 3
     assert _collisions_along(world, poses) == []
@@ -101,7 +101,7 @@ def test_a_crate_beside_the_way_is_passed_backing_out_and_arriving_straight(worl
     straight along the goal's; here only the 0.6 m one clears the crate."""
     world.set_pose("pr2", _pose(-1.0, 0.2, math.pi / 2))
     world.add_box("crate", (0.3, 0.3, 0.8), (-0.2, 0.2, 0.4))
-    path = plan_base_path(world, "pr2", _pose(0.6, 0.2, math.pi / 2))
+    path = plan_base_path(RobotHandle.of(world, "pr2"), _pose(0.6, 0.2, math.pi / 2))
     assert path.planner == "detour"
     expected = [(-1.0, 0.2), (-1.0, -0.4), (0.6, -0.4), (0.6, 0.2)]
     assert [p[:2] for p in path.poses] == [pytest.approx(xy) for xy in expected]
@@ -112,10 +112,12 @@ def test_a_crate_beside_the_way_is_passed_backing_out_and_arriving_straight(worl
 def test_an_open_drawer_is_never_driven_through(world: World) -> None:
     world.set_pose("pr2", _pose(-2.5, 1.05, 0.0))
     goal = _pose(-0.5, 1.05, 0.0)
-    assert plan_base_path(world, "pr2", goal).planner == "straight"  # drawer shut: clear
+    assert (
+        plan_base_path(RobotHandle.of(world, "pr2"), goal).planner == "straight"
+    )  # drawer shut: clear
     world.set_joint_states("kitchen", {f"{DRAWER}_joint": 0.4})
     try:
-        path = plan_base_path(world, "pr2", goal)
+        path = plan_base_path(RobotHandle.of(world, "pr2"), goal)
     except NavigationPathBlocked as blocked:
         assert f"kitchen/{DRAWER}" in (blocked.colliding or [])
         assert 0.2 < (blocked.path_fraction or 0.0) < 0.6
@@ -128,22 +130,22 @@ def test_a_path_blocked_within_the_budget_names_the_drawer(world: World) -> None
     world.set_pose("pr2", _pose(-2.5, 1.05, 0.0))
     world.set_joint_states("kitchen", {f"{DRAWER}_joint": 0.4})
     with pytest.raises(NavigationPathBlocked) as raised:
-        plan_base_path(world, "pr2", _pose(-0.5, 1.05, 0.0), budget=50)
+        plan_base_path(RobotHandle.of(world, "pr2"), _pose(-0.5, 1.05, 0.0), budget=50)
     assert f"kitchen/{DRAWER}" in (raised.value.colliding or [])
     assert raised.value.path_fraction == pytest.approx(0.33, abs=0.1)
 
 
 def test_a_goal_in_collision_is_unreachable(world: World) -> None:
     with pytest.raises(NavigationPoseUnreachable) as raised:
-        plan_base_path(world, "pr2", _pose(-1.4, 1.9, math.pi / 2))
+        plan_base_path(RobotHandle.of(world, "pr2"), _pose(-1.4, 1.9, math.pi / 2))
     assert not isinstance(raised.value, NavigationPathBlocked)
     assert any(name.startswith("kitchen/") for name in raised.value.colliding or [])
 
 
 def test_a_car_follows_reeds_shepp_curves(world: World) -> None:
     radius = 0.5
-    path = plan_base_path(world, "pr2", _pose(0.4, -0.3, -math.pi / 2), holonomic=False,
-                          turning_radius=radius)  # fmt: skip
+    path = plan_base_path(RobotHandle.of(world, "pr2"), _pose(0.4, -0.3, -math.pi / 2),
+                          holonomic=False, turning_radius=radius)  # fmt: skip
     assert path.planner in ("reeds_shepp", "RRTConnect/ReedsShepp")
     poses = np.array(path.poses)
     step = np.diff(poses, axis=0)
@@ -185,7 +187,7 @@ def test_a_way_round_far_beyond_the_start_and_goal_is_still_found() -> None:
         world.add_robot("pr2", _pose(-0.5, 0.0, 0.0))
         for arm in world.robot("pr2").description.arms.values():
             world.set_joint_states("pr2", dict(arm.parking))
-        path = plan_base_path(world, "pr2", _pose(2.5, 0.0, 0.0), seed=1)
+        path = plan_base_path(RobotHandle.of(world, "pr2"), _pose(2.5, 0.0, 0.0), seed=1)
     assert path.planner == "RRTConnect"
     assert min(y for _, y, _ in path.poses) < -2.6 < -NEAR_MARGIN
     assert path.poses[-1][:2] == pytest.approx((2.5, 0.0))

@@ -20,7 +20,7 @@ from robocram.motion.obstacle_shapes import obstacle_cache
 from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
-from robocram.world import World
+from robocram.world import RobotHandle, World
 
 JOINTS = (
     "torso_lift_joint", "r_shoulder_pan_joint", "r_shoulder_lift_joint",
@@ -71,7 +71,7 @@ def _compare(world: World, judge: BulletScene, seed: int) -> tuple[int, int, flo
 def test_coal_clearances_never_exceed_bullets_and_agree_near_contact(
     world: World, seed: int
 ) -> None:
-    compared, near, worst = _compare(world, BulletScene(world, "pr2", JOINTS), seed)
+    compared, near, worst = _compare(world, BulletScene(RobotHandle.of(world, "pr2"), JOINTS), seed)
     assert compared > 150 and near > 10  # the arm reaches into the counter
     assert worst < BULLET_MARGIN + 0.001  # [m] within a few mm where it matters
 
@@ -80,7 +80,7 @@ def test_held_objects_and_allowed_hands_follow_the_judges_rules(world: World) ->
     spec = world.robot("pr2").description.arms["right"]
     with world.stored_state():
         world.attach("mug-1", "pr2", spec.tool_frame)  # the mug rides on the hand
-        judge = BulletScene(world, "pr2", JOINTS, allowed_links=hand_links(spec))
+        judge = BulletScene(RobotHandle.of(world, "pr2"), JOINTS, allowed_links=hand_links(spec))
         compared, near, worst = _compare(world, judge, 7)
         assert "mug-1" in judge.lever_links()
     assert compared > 100 and near > 5
@@ -97,14 +97,16 @@ def test_checkers_after_a_base_move_follow_the_judge(world: World) -> None:
             x, y, z = AT_COUNTER.position
             place = (x + 0.95 * shift, y + 0.3 * shift, z)
             world.set_pose("pr2", Pose(place, AT_COUNTER.orientation))
-            judge = BulletScene(world, "pr2", JOINTS, allowed_links=hand_links(spec))
+            judge = BulletScene(
+                RobotHandle.of(world, "pr2"), JOINTS, allowed_links=hand_links(spec)
+            )
             compared, near, worst = _compare(world, judge, 20 + k)
             assert compared > 80 and near > 20
             assert worst < BULLET_MARGIN + 0.001
 
 
 def test_levers_match_the_worlds_at_the_configuration_checked_last(world: World) -> None:
-    judge = BulletScene(world, "pr2", JOINTS)
+    judge = BulletScene(RobotHandle.of(world, "pr2"), JOINTS)
     coal = CoalClearance(judge)
     links = judge.lever_links()
     for q in _configurations(world, 11, 5):
@@ -120,7 +122,7 @@ def test_link_speeds_match_the_worlds_at_the_configuration_checked_last(world: W
     spec = world.robot("pr2").description.arms["right"]
     with world.stored_state():
         world.attach("mug-1", "pr2", spec.tool_frame)  # its radius rides on the hand
-        judge = BulletScene(world, "pr2", JOINTS)
+        judge = BulletScene(RobotHandle.of(world, "pr2"), JOINTS)
         coal = CoalClearance(judge)
         links = judge.lever_links()
         assert "mug-1" in links

@@ -15,7 +15,7 @@ import pytest
 
 from robocram.motion.self_path_check import SelfPathCheck
 from robocram.scenes import tabletop_scene
-from robocram.world import World
+from robocram.world import RobotHandle, World
 from robocram.world.raw_distances import RawDistances
 
 SAMPLES = 40
@@ -41,7 +41,7 @@ def test_coal_bounds_never_exceed_pybullet(scene: tuple[World, str]) -> None:
     compared = 0
     for arm in description.arms.values():
         joints = list(arm.joints)
-        check = SelfPathCheck.of(world, robot, joints)
+        check = SelfPathCheck.of(RobotHandle.of(world, robot), joints)
         limits = [world.joint_limits(robot, j) for j in joints]
         start = world.joint_states(robot)
         for _ in range(SAMPLES):
@@ -73,7 +73,7 @@ def test_colliding_agrees_with_pybullet(scene: tuple[World, str]) -> None:
     found = 0
     for arm in description.arms.values():
         joints = list(arm.joints)
-        check = SelfPathCheck.of(world, robot, joints)
+        check = SelfPathCheck.of(RobotHandle.of(world, robot), joints)
         limits = [world.joint_limits(robot, j) for j in joints]
         start = world.joint_states(robot)
         for _ in range(SAMPLES):

@@ -10,7 +10,7 @@ import pytest
 from robocram.motion import CollisionScene, joint_limits
 from robocram.scenes import kitchen_scene, tabletop_scene
 from robocram.tf import Pose
-from robocram.world import World
+from robocram.world import RobotHandle, World
 
 NEAR = 0.01  # [m] closer than this, the engines may disagree (hull margins, tolerances)
 
@@ -49,7 +49,7 @@ def _world_pairs(
 
 
 def _agreement(world: World, robot: str, joints: list[str], n: int, seed: int) -> dict[str, int]:
-    scene = CollisionScene.of(world, robot, joints)
+    scene = CollisionScene.of(RobotHandle.of(world, robot), joints)
     links = set(world.link_names(robot))
     counts = {"agree": 0, "colliding": 0, "near": 0, "missed_deep": 0}
     before = world.joint_states(robot)
@@ -111,7 +111,7 @@ def test_pr2_agrees_with_pybullet_on_random_right_arm_configurations(make, near_
 
 def test_start_configuration_is_free(kitchen):
     joints = _arm_joints(kitchen.world, kitchen.robot, "right")
-    scene = CollisionScene.of(kitchen.world, kitchen.robot, joints)
+    scene = CollisionScene.of(RobotHandle.of(kitchen.world, kitchen.robot), joints)
     q0 = _start(kitchen.world, kitchen.robot, joints)
     assert scene.colliding(q0) == []
     assert scene.is_free(q0)
@@ -124,7 +124,7 @@ def test_box_where_the_forearm_is_is_found_and_named(kitchen):
     where = world.link_pose(robot, "r_forearm_link") * Pose((0.2, 0.0, 0.0))
     world.add_box("obstacle", (0.08, 0.08, 0.08), where.position)
     try:
-        scene = CollisionScene.of(world, robot, joints)
+        scene = CollisionScene.of(RobotHandle.of(world, robot), joints)
         q0 = _start(world, robot, joints)
         pairs = scene.colliding(q0)
         assert ("r_forearm_link", "obstacle") in pairs
@@ -145,7 +145,7 @@ def test_held_mug_hitting_the_counter_is_found_fingers_on_it_are_not(kitchen):
         world.attach("mug-1", robot, arm.end_effector_link)
         touching = {p.link_b for p in world.contact_points("mug-1", robot)}
         assert touching & set(arm.gripper_links)  # the fingers do touch the mug
-        scene = CollisionScene.of(world, robot, joints)
+        scene = CollisionScene.of(RobotHandle.of(world, robot), joints)
         q0 = _start(world, robot, joints)
         at_start = scene.colliding(q0)
         assert not any(b == "mug-1" for _, b in at_start)  # the fingers on it are fine
@@ -169,7 +169,7 @@ def test_self_collision_of_the_right_arm_is_found(kitchen):
     arms = world.robot(robot).description.arms.values()
     world.set_joint_states(robot, {j: 0.0 for arm in arms for j in arm.joints})  # stretched
     try:
-        scene = CollisionScene.of(world, robot, joints)
+        scene = CollisionScene.of(RobotHandle.of(world, robot), joints)
         q = _start(world, robot, joints)
         q[joints.index("r_shoulder_pan_joint")] = 0.7  # swung in across the chest
         q[joints.index("r_elbow_flex_joint")] = -0.2
@@ -189,7 +189,7 @@ def test_self_collision_of_the_right_arm_is_found(kitchen):
 
 def test_copy_and_pickle_give_the_same_answers(kitchen):
     joints = _arm_joints(kitchen.world, kitchen.robot, "right")
-    scene = CollisionScene.of(kitchen.world, kitchen.robot, joints)
+    scene = CollisionScene.of(RobotHandle.of(kitchen.world, kitchen.robot), joints)
     qs = _samples(kitchen.world, kitchen.robot, joints, 40, seed=3)
     answers = [scene.colliding(q) for q in qs]
     for other in (scene.copy(), pickle.loads(pickle.dumps(scene))):
@@ -203,7 +203,7 @@ def test_other_robots_build_a_scene_and_agree_at_start(robot, arm):
     try:
         world = scene.world
         joints = _arm_joints(world, scene.robot, arm)
-        coal_scene = CollisionScene.of(world, scene.robot, joints)
+        coal_scene = CollisionScene.of(RobotHandle.of(world, scene.robot), joints)
         q0 = _start(world, scene.robot, joints)
         links = set(world.link_names(scene.robot))
         ours = _world_pairs(coal_scene, q0, links)

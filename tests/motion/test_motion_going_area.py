@@ -15,7 +15,7 @@ from robocram.execution.failures import NavigationGoalOutsideArea
 from robocram.motion import plan_base_path
 from robocram.projection import simulated_robot
 from robocram.tf import Pose, PoseStamped
-from robocram.world import AREA_MARGIN, World
+from robocram.world import AREA_MARGIN, RobotHandle, World
 
 
 def test_a_goal_10_km_away_is_refused_at_once(kitchen: World) -> None:
@@ -24,7 +24,7 @@ def test_a_goal_10_km_away_is_refused_at_once(kitchen: World) -> None:
     began = time.perf_counter()
     try:
         with pytest.raises(NavigationGoalOutsideArea) as caught:
-            plan_base_path(kitchen, "pr2", Pose((10_000.0, 0.0, 0.0)))
+            plan_base_path(RobotHandle.of(kitchen, "pr2"), Pose((10_000.0, 0.0, 0.0)))
         _, peak = tracemalloc.get_traced_memory()
     finally:
         tracemalloc.stop()
@@ -39,7 +39,7 @@ def test_a_goal_10_km_away_is_refused_at_once(kitchen: World) -> None:
 def test_a_goal_within_the_margin_is_still_planned(kitchen: World) -> None:
     here = kitchen.pose("pr2")
     goal = Pose((here.position[0], here.position[1] - 0.5, 0.0), here.orientation)
-    path = plan_base_path(kitchen, "pr2", goal)
+    path = plan_base_path(RobotHandle.of(kitchen, "pr2"), goal)
     assert path.poses[-1][:2] == pytest.approx(goal.position[:2], abs=1e-9)
     assert kitchen.pose("pr2") == here
 

@@ -20,7 +20,7 @@ from robocram.motion import ContactAllowance, MotionSettings, plan_arm_motion
 from robocram.motion.collision_modes import hand_links
 from robocram.motion.hand_contact import HAND_CONTACT_DEPTH, HandContact
 from robocram.tf import Pose
-from robocram.world import RawDistances, World
+from robocram.world import RawDistances, RobotHandle, World
 
 PALM = "r_gripper_palm_link"
 STRAIGHT = MotionSettings(plan=False)  # the straight segment only: a blocked one fails
@@ -90,11 +90,15 @@ def test_the_hand_touching_another_body_is_refused_and_named(world: World) -> No
         assert depth == pytest.approx(0.001, abs=TOLERANCE)
         goal = _goal(world)
         with pytest.raises(ManipulationPathBlocked) as info:
-            plan_arm_motion(world, "pr2", goal, settings=STRAIGHT, hand=_hand(world, "cup"))
+            plan_arm_motion(
+                RobotHandle.of(world, "pr2"), goal, settings=STRAIGHT, hand=_hand(world, "cup")
+            )
         assert (PALM, "block") in info.value.colliding_pairs
         assert "block" in str(info.value)
         links = hand_links(world.robot("pr2").description.arms["right"])
-        anything = plan_arm_motion(world, "pr2", goal, allowed_links=links, settings=STRAIGHT)
+        anything = plan_arm_motion(
+            RobotHandle.of(world, "pr2"), goal, allowed_links=links, settings=STRAIGHT
+        )
         assert anything.path.waypoints[-1] == pytest.approx([goal[j] for j in anything.path.joints])
     finally:
         _clear(world)
@@ -105,7 +109,12 @@ def test_the_named_object_deeper_than_5_mm_is_refused(world: World) -> None:
     try:
         assert depth == pytest.approx(0.008, abs=TOLERANCE) and depth > HAND_CONTACT_DEPTH
         with pytest.raises(ManipulationPathBlocked) as info:
-            plan_arm_motion(world, "pr2", _goal(world), settings=STRAIGHT, hand=_hand(world, "cup"))
+            plan_arm_motion(
+                RobotHandle.of(world, "pr2"),
+                _goal(world),
+                settings=STRAIGHT,
+                hand=_hand(world, "cup"),
+            )
         assert (PALM, "cup") in info.value.colliding_pairs
     finally:
         _clear(world)
@@ -118,7 +127,9 @@ def test_the_named_object_within_5_mm_is_allowed_and_the_trajectory_stores_it(
     try:
         assert depth == pytest.approx(0.003, abs=TOLERANCE) and depth < HAND_CONTACT_DEPTH
         hand = _hand(world, "cup")
-        motion = plan_arm_motion(world, "pr2", _goal(world), settings=STRAIGHT, hand=hand)
+        motion = plan_arm_motion(
+            RobotHandle.of(world, "pr2"), _goal(world), settings=STRAIGHT, hand=hand
+        )
         stored = motion.trajectory.allowed_contacts
         assert ContactAllowance(PALM, "cup", HAND_CONTACT_DEPTH) in stored
         assert {a.other for a in stored} == {"cup"}  # the named object, nothing else

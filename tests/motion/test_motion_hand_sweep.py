@@ -14,7 +14,7 @@ import pytest
 from robocram.motion import BASE_JOINTS, joint_limits, time_parameterize
 from robocram.motion.hand_contact import HAND_CONTACT_DEPTH, KEEP_DEPTH, HandContact, hand_at_start
 from robocram.motion.hand_sweep import hand_breach
-from robocram.world import World
+from robocram.world import RobotHandle, World
 
 HAND = ("r_gripper_palm_link", "r_gripper_l_finger_link", "r_gripper_r_finger_link",
         "r_gripper_l_finger_tip_link", "r_gripper_r_finger_tip_link")  # fmt: skip
@@ -66,10 +66,10 @@ def test_a_drive_sweeping_the_hand_through_a_box_it_does_not_act_on_is_a_breach(
     world.add_box("mug", (0.05, 0.05, 0.05), (x - 0.5, y, z))  # what the hand acts on
     limits = joint_limits(world.robot("pr2").description, BASE_JOINTS)
     drive = time_parameterize("pr2", BASE_JOINTS, [(0.0, 0.0, 0.0), (0.4, 0.0, 0.0)], limits)
-    found = hand_breach(world, "pr2", drive, HandContact.of(HAND, "mug"))
+    found = hand_breach(RobotHandle.of(world, "pr2"), drive, HandContact.of(HAND, "mug"))
     assert found is not None and found.other == "box" and found.bound == 0.0
     assert 0.0 < found.time < drive.duration
     world.set_pose("pr2", (found_x := 0.0, 0.0, 0.0))
     assert world.pose("pr2").position[0] == found_x  # put back where it stood
     back = time_parameterize("pr2", BASE_JOINTS, [(0.0, 0.0, 0.0), (-0.2, 0.0, 0.0)], limits)
-    assert hand_breach(world, "pr2", back, HandContact.of(HAND, "mug")) is None
+    assert hand_breach(RobotHandle.of(world, "pr2"), back, HandContact.of(HAND, "mug")) is None

@@ -23,7 +23,7 @@ from robocram.motion.segment_check import (
 )
 from robocram.motion.travel_bound import TravelBound, link_radii
 from robocram.scenes import tabletop_scene
-from robocram.world import World
+from robocram.world import RobotHandle, World
 
 JOINTS = (
     "torso_lift_joint", "r_shoulder_pan_joint", "r_shoulder_lift_joint",
@@ -113,7 +113,7 @@ def test_the_speed_bound_grows_no_faster_than_the_growth_term(seed: int) -> None
     (whose radius rides on the wrist)."""
     world = tabletop_scene("pr2").world
     world.attach("mug-1", "pr2", "r_wrist_roll_link")
-    checker = CoalClearance(BulletScene(world, "pr2", JOINTS))
+    checker = CoalClearance(BulletScene(RobotHandle.of(world, "pr2"), JOINTS))
     rng = np.random.default_rng(200 + seed)
     fractions = np.linspace(0.0, 1.0, 101)
     tight = 0.0
@@ -140,8 +140,8 @@ def test_the_speed_bound_grows_no_faster_than_the_growth_term(seed: int) -> None
 
 def test_local_steps_agree_with_the_rigid_ones_on_what_is_free() -> None:
     world = tabletop_scene("pr2").world
-    scene = BulletScene(world, "pr2", JOINTS)
-    bound = TravelBound.of(world, "pr2", JOINTS)
+    scene = BulletScene(RobotHandle.of(world, "pr2"), JOINTS)
+    bound = TravelBound.of(RobotHandle.of(world, "pr2"), JOINTS)
     rng = np.random.default_rng(7)
     verdicts = []
     for _ in range(8):
@@ -163,9 +163,9 @@ def test_one_arm_sweeps_while_the_other_holds_something() -> None:
     world = tabletop_scene("pr2").world
     world.attach("mug-1", "pr2", "r_wrist_roll_link")
     left = tuple(j.replace("r_", "l_", 1) for j in JOINTS[1:])
-    scene = BulletScene(world, "pr2", left)
+    scene = BulletScene(RobotHandle.of(world, "pr2"), left)
     assert "mug-1" not in scene.lever_links()
-    bound = TravelBound.of(world, "pr2", left)
+    bound = TravelBound.of(RobotHandle.of(world, "pr2"), left)
     qa = np.array([world.joint_states("pr2")[j] for j in left])
     qb = qa + np.array([0.6, 0.3, 0.5, -0.4, 1.0, -0.3, 1.5])
     assert bound.travel(qa, qb) > 1.0  # long enough for the local levers
@@ -191,13 +191,20 @@ def _lever_case(
     """A PR2 tabletop checker, a seeded generator, the travel bound, the moving links with
     their radii and 64 unit directions to probe points on their balls."""
     world = tabletop_scene("pr2").world
-    scene = BulletScene(world, "pr2", JOINTS)
+    scene = BulletScene(RobotHandle.of(world, "pr2"), JOINTS)
     rng = np.random.default_rng(seed)
     links = scene.lever_links()
-    radii = np.array([link_radii(world, "pr2").get(link, 0.0) for link in links])
+    radii = np.array([link_radii(RobotHandle.of(world, "pr2")).get(link, 0.0) for link in links])
     directions = rng.normal(size=(64, 3))
     directions /= np.linalg.norm(directions, axis=1)[:, None]
-    return scene, rng, TravelBound.of(world, "pr2", JOINTS), links, radii, directions
+    return (
+        scene,
+        rng,
+        TravelBound.of(RobotHandle.of(world, "pr2"), JOINTS),
+        links,
+        radii,
+        directions,
+    )
 
 
 @pytest.mark.parametrize("seed", range(3))
@@ -207,8 +214,8 @@ def test_a_step_from_bounds_equals_the_step_from_every_gap(seed: int) -> None:
     near the table and the held mug's (about 200 checks per seed)."""
     world = tabletop_scene("pr2").world
     world.attach("mug-1", "pr2", "r_wrist_roll_link")
-    checker = CoalClearance(BulletScene(world, "pr2", JOINTS))
-    bound = TravelBound.of(world, "pr2", JOINTS)
+    checker = CoalClearance(BulletScene(RobotHandle.of(world, "pr2"), JOINTS))
+    bound = TravelBound.of(RobotHandle.of(world, "pr2"), JOINTS)
     rng = np.random.default_rng(300 + seed)
     measured = labelled = 0
     for _ in range(20):

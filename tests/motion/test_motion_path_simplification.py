@@ -37,7 +37,7 @@ from robocram.projection.collision_mode import collision_check
 from robocram.scenes import kitchen_scene
 from robocram.tf import PoseStamped
 from robocram.tf import quaternion as quat
-from robocram.world import World
+from robocram.world import RobotHandle, World
 
 PENETRATION = 0.001  # [m] the audit's bound: checks 1 cm apart may graze between them
 SHELF = ((0.12, 0.12, 0.36), (-0.97, 2.02, 1.04))  # size, centre [m]: on the counter
@@ -78,7 +78,7 @@ def shelf() -> Iterator[Shelf]:
         world, joints, np.array([current[j] for j in joints]),
         np.array([goal.joint_positions[j] for j in joints]),
         ([lim.lower for lim in limits], [lim.upper for lim in limits]),
-        TravelBound.of(world, "pr2", joints),
+        TravelBound.of(RobotHandle.of(world, "pr2"), joints),
     )  # fmt: skip
     world.close()
 
@@ -103,12 +103,14 @@ def test_no_inner_waypoint_of_a_planned_path_can_be_dropped(
 ) -> None:
     monkeypatch.setattr(arm_motion.ToolHeight, "of", lambda *args: None)  # no detour: plan
     goal = dict(zip(shelf.joints, shelf.goal, strict=True))
-    path = plan_arm_motion(shelf.world, "pr2", goal, settings=MotionSettings(seed=seed)).path
+    path = plan_arm_motion(
+        RobotHandle.of(shelf.world, "pr2"), goal, settings=MotionSettings(seed=seed)
+    ).path
     assert path.planner == "rrt_connect"
     points = [np.array(w) for w in path.waypoints]
     assert len(points) >= 3  # the straight segment is blocked: a corner at least
     assert np.allclose(points[0], shelf.start) and np.allclose(points[-1], shelf.goal)
-    judge = BulletScene(shelf.world, "pr2", shelf.joints)
+    judge = BulletScene(RobotHandle.of(shelf.world, "pr2"), shelf.joints)
     with judge.posed():
         assert not _dense_collision(judge, points, shelf.bound, PENETRATION)
         for k in range(1, len(points) - 1):
@@ -119,7 +121,7 @@ def test_no_inner_waypoint_of_a_planned_path_can_be_dropped(
 
 def test_simplifying_keeps_the_ends_and_never_lengthens(shelf: Shelf) -> None:
     zigzag = [shelf.start, (shelf.start + shelf.goal) / 2 + 0.3, shelf.goal]
-    snapshot = CollisionScene.of(shelf.world, "pr2", shelf.joints)
+    snapshot = CollisionScene.of(RobotHandle.of(shelf.world, "pr2"), shelf.joints)
     counter = CheckCounter()
     out = simplify(snapshot, zigzag, shelf.bound, counter)
     assert np.array_equal(out.waypoints[0], shelf.start)
@@ -196,7 +198,7 @@ class _Caged:
 
 
 def test_an_enclosed_goal_fails_within_the_counted_budget(shelf: Shelf) -> None:
-    snapshot = CollisionScene.of(shelf.world, "pr2", shelf.joints)
+    snapshot = CollisionScene.of(RobotHandle.of(shelf.world, "pr2"), shelf.joints)
     asked = []
     for _ in range(2):
         caged = _Caged(snapshot, shelf.goal)

@@ -19,7 +19,7 @@ from robocram.execution.failures import ManipulationPathBlocked
 from robocram.motion import MotionSettings, plan_arm_motion
 from robocram.motion.self_collision_matrix import SelfCollisionMatrix
 from robocram.scenes import tabletop_scene
-from robocram.world import World
+from robocram.world import RobotHandle, World
 
 SAMPLE = 0.005  # [rad | m] between the judge's samples
 DEEPER = 0.001  # [m] deeper than at the start counts
@@ -81,7 +81,7 @@ def _deepening(world: World, robot: str, joints: tuple[str, ...], waypoints) -> 
 
 
 def test_the_matrix_checks_a_forearm_against_its_own_fingers(pr2: World) -> None:
-    matrix = SelfCollisionMatrix.of(pr2, "pr2")
+    matrix = SelfCollisionMatrix.of(RobotHandle.of(pr2, "pr2"))
     assert matrix.reason("r_forearm_link", "r_gripper_l_finger_link") is None
     assert ("r_forearm_link", "r_gripper_l_finger_link") in matrix.checked or (
         "r_gripper_l_finger_link",
@@ -99,7 +99,9 @@ def test_a_wrist_flexed_into_the_open_fingers_is_refused_before_it_moves(pr2: Wo
         start = pr2.joint_states("pr2")[joint]
         assert _deepening(pr2, "pr2", (joint,), [[start], [-2.09]])  # the judge sees it
         with pytest.raises(ManipulationPathBlocked) as failure:
-            plan_arm_motion(pr2, "pr2", {joint: -2.09}, settings=MotionSettings(plan=False))
+            plan_arm_motion(
+                RobotHandle.of(pr2, "pr2"), {joint: -2.09}, settings=MotionSettings(plan=False)
+            )
         assert ("r_forearm_link", "r_gripper_l_finger_link") in failure.value.colliding_pairs
         assert "into itself" in str(failure.value)
         assert pr2.joint_states("pr2")[joint] == pytest.approx(start, abs=1e-12)
@@ -113,7 +115,7 @@ def test_a_planned_arm_motion_never_sinks_links_into_each_other(pr2: World) -> N
         joints = desc.arms["right"].joints
         goal = {**{j: pr2.joint_states("pr2")[j] for j in joints}, "r_wrist_flex_joint": -2.09}
         try:
-            motion = plan_arm_motion(pr2, "pr2", goal)
+            motion = plan_arm_motion(RobotHandle.of(pr2, "pr2"), goal)
         except ManipulationPathBlocked:
             return
         assert _deepening(pr2, "pr2", motion.path.joints, motion.path.waypoints) == []

@@ -15,14 +15,14 @@ import pytest
 from robocram.motion.self_collision_matrix import SelfCollisionMatrix
 from robocram.motion.stored_self_collision import read_stored
 from robocram.robots import load_description
-from robocram.world import World
+from robocram.world import RobotHandle, World
 
 
 @pytest.mark.parametrize("robot", ["pr2", "hsrb", "boxy"])
 def test_the_stored_matrix_is_the_one_worked_out_now(robot: str) -> None:
     with World() as world:
         handle = world.add_robot(robot)
-        fresh, digest = SelfCollisionMatrix.worked_out(world, handle.name)
+        fresh, digest = SelfCollisionMatrix.worked_out(RobotHandle.of(world, handle.name))
     stored = read_stored(robot, digest)
     assert stored is not None, (
         f"no current matrix stored: run tools/store_self_collision.py {robot}"
@@ -42,7 +42,7 @@ def test_a_description_that_changes_what_the_matrix_reads_finds_no_stored_one() 
     changed = replace(desc, arms={**desc.arms, "right": replace(arm, parking=parking)})
     with World() as world:
         world.add_robot(changed)
-        _, digest = SelfCollisionMatrix.worked_out(world, "pr2")
-        _, same = SelfCollisionMatrix.worked_out(world, "pr2")
+        _, digest = SelfCollisionMatrix.worked_out(RobotHandle.of(world, "pr2"))
+        _, same = SelfCollisionMatrix.worked_out(RobotHandle.of(world, "pr2"))
     assert digest == same  # the digest is a function of what the matrix reads
     assert read_stored("pr2", digest) is None  # so the PR2's stored matrix is not used

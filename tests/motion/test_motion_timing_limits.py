@@ -32,7 +32,7 @@ from robocram.motion import (
 )
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
-from robocram.world import World
+from robocram.world import RobotHandle, World
 
 
 @pytest.fixture
@@ -53,7 +53,7 @@ def test_a_pr2_tool_line_in_the_kitchen_keeps_its_limits(world: World, timing_ju
 
     def line(period: float) -> JointTrajectory:
         settings = MotionSettings(period=period)
-        motion = plan_tool_line(world, "pr2", "right", target, settings=settings)
+        motion = plan_tool_line(RobotHandle.of(world, "pr2"), "right", target, settings=settings)
         assert motion.fraction == 1.0 and len(motion.path.waypoints) >= 8
         return motion.trajectory
 
@@ -88,7 +88,9 @@ def test_an_arm_path_of_several_waypoints_keeps_its_limits(world: World, timing_
 
 def _base(world: World, goal: Pose, **options: object) -> Callable[[float], JointTrajectory]:
     def timed(period: float) -> JointTrajectory:
-        return plan_base_path(world, "pr2", goal, period=period, **options).trajectory  # type: ignore[arg-type]
+        return plan_base_path(
+            RobotHandle.of(world, "pr2"), goal, period=period, **options
+        ).trajectory  # type: ignore[arg-type]
 
     return timed
 
@@ -100,7 +102,7 @@ def test_a_holonomic_base_path_round_a_crate_that_turns_keeps_its_limits(
     world.add_box("crate", (0.3, 0.3, 0.8), (-0.2, 0.2, 0.4))
     try:
         goal = _pose(0.6, 0.2, math.pi / 2 + 0.8)
-        path = plan_base_path(world, "pr2", goal)
+        path = plan_base_path(RobotHandle.of(world, "pr2"), goal)
         assert path.planner in ("detour", "RRTConnect") and len(path.poses) >= 3
         timed = _base(world, goal)
         coarse, dense = timed(0.05), timed(timing_judge.DENSE)
@@ -114,7 +116,7 @@ def test_a_car_path_with_a_cusp_keeps_its_limits(world: World, timing_judge: Any
     """Sideways by 0.3 m: a Reeds-Shepp path that reverses (a cusp) and changes curvature."""
     world.set_pose("pr2", _pose(-0.8, 0.2, math.pi / 2))
     goal = _pose(-0.5, 0.3, math.pi / 2)
-    path = plan_base_path(world, "pr2", goal, holonomic=False)
+    path = plan_base_path(RobotHandle.of(world, "pr2"), goal, holonomic=False)
     poses = np.array(path.poses)
     step = np.diff(poses, axis=0)
     forward = np.cos(poses[:-1, 2]) * step[:, 0] + np.sin(poses[:-1, 2]) * step[:, 1]

@@ -15,7 +15,7 @@ from robocram.kinematics import forward_kinematics
 from robocram.motion import plan_tool_line
 from robocram.motion.cartesian_path import MAX_STEP
 from robocram.tf import Pose
-from robocram.world import World
+from robocram.world import RobotHandle, World
 
 LINE_TOLERANCE = 0.001  # [m] IK's position tolerance
 
@@ -33,7 +33,7 @@ def test_the_tool_stays_on_its_line_between_waypoints(kitchen: World) -> None:
     length = 0.09  # [m] forward and down, as an approach (4.5 steps: 5)
     shift = np.array((0.072, 0.0, -0.054))
     target = Pose(tuple((np.array(tool.position) + shift).tolist()), tool.orientation)
-    line = plan_tool_line(world, "pr2", "right", target)
+    line = plan_tool_line(RobotHandle.of(world, "pr2"), "right", target)
     assert line.fraction == 1.0
     assert world.joint_states("pr2") == before  # planning moves nothing
     waypoints = [np.array(w) for w in line.path.waypoints]

@@ -42,6 +42,7 @@ from robocram.projection.collision_mode import collision_check
 from robocram.scenes import KitchenScene, kitchen_scene
 from robocram.tf import PoseStamped
 from robocram.tf import quaternion as quat
+from robocram.world import RobotHandle
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 NORTH = quat.from_euler(0.0, 0.0, math.pi / 2)
@@ -83,7 +84,7 @@ def _move(scene: KitchenScene, target: PoseStamped, settings: MotionSettings | N
 
 def _dense_configurations(scene: KitchenScene, trajectory: JointTrajectory) -> Iterator[dict]:
     """Every configuration 1 cm of link travel / 0.02 rad apart along the trajectory."""
-    bound = TravelBound.of(scene.world, "pr2", trajectory.joint_names)
+    bound = TravelBound.of(RobotHandle.of(scene.world, "pr2"), trajectory.joint_names)
     points = trajectory.positions()
     for qa, qb in zip(points, points[1:], strict=False):
         n = bound.steps(qa, qb)
@@ -101,7 +102,7 @@ def test_the_arm_goes_round_the_shelf_and_never_through_it(scene: KitchenScene) 
     assert len(arm) == 1
     trajectory = arm[0]
     assert len(trajectory.points) > 2
-    judge = BulletScene(world, "pr2", trajectory.joint_names)
+    judge = BulletScene(RobotHandle.of(world, "pr2"), trajectory.joint_names)
     world.set_joint_states("pr2", {j: start[j] for j in trajectory.joint_names})
     checked = 0
     for configuration in _dense_configurations(scene, trajectory):
@@ -168,8 +169,8 @@ def test_a_stopped_task_ends_the_planner_at_once_and_nothing_moves(scene: Kitche
         np.array(start), np.array(end),
         ([lim.lower for lim in limits], [lim.upper for lim in limits]),
     )  # fmt: skip
-    bound = TravelBound.of(world, "pr2", joints)
-    snapshot = CollisionScene.of(world, "pr2", joints)
+    bound = TravelBound.of(RobotHandle.of(world, "pr2"), joints)
+    snapshot = CollisionScene.of(RobotHandle.of(world, "pr2"), joints)
     counter = CheckCounter()
     task = Task("stopped-while-planning")
     task.stop()

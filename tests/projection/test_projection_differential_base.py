@@ -18,7 +18,7 @@ import pytest
 
 from robocram.designators import a
 from robocram.execution.failures import NavigationPoseUnreachable
-from robocram.kinematics import PlanarBase, forward_kinematics, solve_ik
+from robocram.kinematics import IKOptions, PlanarBase, forward_kinematics, solve_ik
 from robocram.motion import JointTrajectory, plan_base_path, trajectory_listener
 from robocram.plans import pick_up
 from robocram.plans.transport import transport
@@ -29,7 +29,7 @@ from robocram.scenes import kitchen_scene, tabletop_scene
 from robocram.scenes.placement import TABLE_DEPTH
 from robocram.tf import Pose, PoseStamped
 from robocram.tf import quaternion as quat
-from robocram.world import World
+from robocram.world import RobotHandle, World
 
 DATA = Path(__file__).resolve().parents[1] / "data"
 QUERIES = 40  # seeded IK queries per robot
@@ -88,8 +88,9 @@ def test_ik_moves_a_differential_base_along_its_heading_only(
     solved, offsets = 0, {"differential": [], "holonomic": []}
     for seed, target in enumerate(_targets(np.random.default_rng(7), working_yaw)):
         for kind, d in (("differential", desc), ("holonomic", holonomic)):
-            result = solve_ik(d, arm, target, base=PlanarBase(), random_seed=seed,
-                              collision_check=seen if d is desc else None)  # fmt: skip
+            options = IKOptions(base=PlanarBase(), random_seed=seed)
+            check = seen if d is desc else None
+            result = solve_ik(d, arm, target, options=options, collision_check=check)
             if not result.success:
                 continue
             motion = result.base_motion
@@ -118,7 +119,9 @@ def test_base_paths_of_a_differential_base_never_slide(stretch: LoadedDescriptio
         robot = world.add_robot(stretch)
         for _ in range(12):
             x, y, yaw = rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-3, 3)
-            path = plan_base_path(world, robot, Pose((x, y, 0.0), quat.from_euler(0, 0, yaw)))
+            path = plan_base_path(
+                RobotHandle.of(world, robot), Pose((x, y, 0.0), quat.from_euler(0, 0, yaw))
+            )
             assert path.planner == "reeds_shepp"
             assert (sideways(path.poses) <= SIDEWAYS).all()
             assert (sideways(path.trajectory.positions()) <= SIDEWAYS).all()

@@ -16,7 +16,7 @@ from robocram.plans.transport import transport
 from robocram.projection import simulated_robot
 from robocram.projection.prospection import prospect
 from robocram.scenes import KitchenScene, kitchen_scene
-from robocram.world import World
+from robocram.world import RobotHandle, World
 from robocram.world.world_state import WorldState
 
 TABLE = ("kitchen", "table_top")
@@ -53,7 +53,7 @@ def test_a_prospect_leaves_the_world_as_it_was_and_performing_does_what_it_showe
 ) -> None:
     world = kitchen.world
     before = _bodies(world)
-    seen = prospect(world, kitchen.robot, _mug_transport)
+    seen = prospect(RobotHandle.of(world, kitchen.robot), _mug_transport)
     assert seen.succeeded and seen.failure is None
     assert _bodies(world) == before  # byte for byte: poses, velocities, joints, attachments
     table_z = world.link_pose("kitchen", "table_top").position[2]
@@ -75,7 +75,7 @@ def test_a_plan_can_prospect_inside_its_run_unheard_by_its_listeners(
     with trajectory_listener(heard.append), simulated_robot(world, kitchen.robot) as run:
         perform(a.motion(type="moving-torso", joint_angle=0.1))
         before, count = _bodies(world), len(heard)
-        seen = prospect(world, kitchen.robot, _mug_transport)
+        seen = prospect(RobotHandle.of(world, kitchen.robot), _mug_transport)
         assert _bodies(world) == before and len(heard) == count  # nothing moved, nothing heard
         perform(a.motion(type="moving-torso", joint_angle=0.2))  # the run goes on
     assert seen.succeeded and seen.tree.root.name == "prospection"
@@ -88,7 +88,8 @@ def test_a_failing_plan_is_the_prospects_outcome(kitchen: KitchenScene) -> None:
     world = kitchen.world
     before = _bodies(world)
     seen = prospect(
-        world, kitchen.robot, lambda: perform(a.motion(type="moving-torso", joint_angle=5.0))
+        RobotHandle.of(world, kitchen.robot),
+        lambda: perform(a.motion(type="moving-torso", joint_angle=5.0)),
     )
     assert not seen.succeeded and isinstance(seen.failure, PlanFailure)
     assert "torso" in str(seen.failure)

@@ -16,7 +16,7 @@ from robocram.motion.bullet_scene import BulletScene
 from robocram.motion.travel_bound import TravelBound
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
-from robocram.world import World
+from robocram.world import RobotHandle, World
 
 
 class Judge:
@@ -47,11 +47,11 @@ class Judge:
         end = world.joint_states(self.robot)
         points = trajectory.positions()
         start = dict(zip(joints, points[0], strict=True))
-        judge = BulletScene(world, self.robot, joints, self._hand_links(joints))
+        judge = BulletScene(RobotHandle.of(world, self.robot), joints, self._hand_links(joints))
         allowed = set(judge.colliding_at(start))
         if trajectory.kind == "gripper":  # the fingers may sink into what they squeeze
             allowed |= self._squeezed(judge, trajectory)
-        bound = TravelBound.of(world, self.robot, joints)
+        bound = TravelBound.of(RobotHandle.of(world, self.robot), joints)
         checked = 0
         for qa, qb in zip(points, points[1:], strict=False):
             n = bound.steps(qa, qb)
@@ -78,7 +78,7 @@ class Judge:
         end = world.pose(robot)
         height = end.position[2]
         points = trajectory.positions()
-        judge = BulletScene(world, robot, ())
+        judge = BulletScene(RobotHandle.of(world, robot), ())
 
         def put(x: float, y: float, yaw: float) -> None:
             world.set_pose(robot, Pose((x, y, height), quat.from_euler(0.0, 0.0, yaw)))

@@ -16,7 +16,7 @@ from types import ModuleType
 
 import pytest
 
-from robocram.kinematics import solve_ik
+from robocram.kinematics import IKOptions, solve_ik
 from robocram.plans import pick_up
 from robocram.projection import simulated_robot
 from robocram.robot_check import check_robot, description_from
@@ -163,7 +163,7 @@ def test_a_floor_standing_arm_stands_on_a_pedestal_at_a_lab_table(name: str) -> 
         mug = world.pose("mug-1").position
         down = quat.from_euler(0.0, math.pi / 2, 0.0)  # the tool's x (its approach) down
         grasp = world.pose(robot).inverse() * Pose((mug[0], mug[1], mug[2] + 0.05), down)
-        result = solve_ik(desc, arm.name, grasp, orientation_tolerance=0.2)
+        result = solve_ik(desc, arm.name, grasp, options=IKOptions(orientation_tolerance=0.2))
         assert result.success, f"{name} cannot grasp the mug from above"
     finally:
         world.close()

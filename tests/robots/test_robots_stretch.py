@@ -21,7 +21,7 @@ import pytest
 from robocram.costmaps.batch_fk import batch_frame_poses
 from robocram.costmaps.occupancy import facing_radius, footprint_radii
 from robocram.designators import a
-from robocram.kinematics import solve_ik
+from robocram.kinematics import IKOptions, solve_ik
 from robocram.kinematics.robot_kinematics import robot_kinematics
 from robocram.motion import JointTrajectory
 from robocram.motion.joint_trajectory import TrajectoryPoint
@@ -130,7 +130,7 @@ def test_robot_check_passes_on_the_unedited_draft(stretch: LoadedDescription) ->
 
 def test_ik_moves_the_telescope_as_one(stretch: LoadedDescription) -> None:
     tool = Pose((-0.05, -0.75, 0.6), quat.from_euler(0.0, math.pi / 2, 0.0))
-    result = solve_ik(stretch, "arm", tool, frame="link_wrist_roll")
+    result = solve_ik(stretch, "arm", tool, options=IKOptions(frame="link_wrist_roll"))
     values = [result.joint_positions[j] for j in TELESCOPE]
     assert values[0] > 0.05  # extended
     assert values == pytest.approx([values[0]] * 4, abs=1e-9)

@@ -189,7 +189,7 @@ def test_an_arm_swung_into_the_other_shoulder_is_a_self_penetration(
     assert planted.swing_depth > 0.03
     # the skipped pairs are a parameter: skipping this one, it is not found
     skip = frozenset({a_link, b_link})
-    bounds = AuditBounds(skipped_self_pairs=lambda w, r: adjacent_pairs_of(w, r) | {skip})
+    bounds = AuditBounds(skipped_self_pairs=lambda robot: adjacent_pairs_of(robot) | {skip})
     with TraceDatabase(planted.db_path, create=False) as db:
         again = audit_runs(db, planted.run, bounds)
     assert deepest.what not in {

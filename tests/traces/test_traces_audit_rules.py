@@ -24,7 +24,7 @@ from robocram.traces.audit_findings import FindingKind, FindingPlace
 from robocram.traces.dense_samples import Levers, dense_configurations
 from robocram.traces.limit_audit import limit_findings
 from robocram.traces.link_adjacency import adjacent_links
-from robocram.world import World
+from robocram.world import RobotHandle, World
 
 LIMIT = JointLimits("j", -10.0, 10.0, velocity=1.0, acceleration=2.0, jerk=20.0)
 PLACE = FindingPlace(run=1, trajectory=0, task_path="t", start=10.0)
@@ -127,7 +127,8 @@ def test_dense_samples_move_no_point_more_than_five_mm(motion: str) -> None:
         start = [desc.arms["right"].parking[j] for j in names[:-1]] + [0.0]
         path = [start, [0.3, 0.5, -1.0, -0.4, 1.0, -0.5, 2.0, 0.2]]
     timed = time_parameterize("pr2", names, path, joint_limits(desc, names))
-    levers = Levers.of(world, "pr2", desc.model, {})
+    pr2 = RobotHandle.of(world, "pr2")
+    levers = Levers.of(pr2, desc.model, {})
     radii = world.link_radii("pr2")
     links = [link for link in desc.model.links if desc.model.links[link].collisions]
     offsets = [
@@ -138,7 +139,7 @@ def test_dense_samples_move_no_point_more_than_five_mm(motion: str) -> None:
     before, before_q = None, None
     steps = 0
     for _, q in dense_configurations(names, timed.times(), timed.positions(), levers, 0.005, 0.005):
-        set_robot_joints(world, "pr2", dict(zip(names, q.tolist(), strict=True)))
+        set_robot_joints(pr2, dict(zip(names, q.tolist(), strict=True)))
         frames = [world.link_pose("pr2", link) for link in links]
         now = np.array([(frames[k // 4] * o).position for k, o in enumerate(offsets)])
         if before is not None and before_q is not None:

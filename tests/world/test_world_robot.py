@@ -7,13 +7,16 @@ from collections.abc import Iterator
 
 import pytest
 
+from robocram.kinematics import IKOptions, forward_kinematics, solve_ik
 from robocram.tf import Pose
 from robocram.world import (
     ClampedJoint,
     NotARobotError,
+    RobotHandle,
     RobotObject,
     UnknownJointError,
     UnknownLinkError,
+    UnknownObjectError,
     World,
 )
 
@@ -38,6 +41,36 @@ def test_robot_is_indexed_by_name(world: World, pr2: RobotObject) -> None:
     assert "r_gripper_tool_frame" in world.link_names(pr2)
     assert len(world.joint_states(pr2)) == 30  # movable joints of the example-robot-data PR2
     assert world.collisions(pr2) == []  # standing on the floor is not touching it
+
+
+def test_a_handle_carries_the_robot_looked_up_once(world: World, pr2: RobotObject) -> None:
+    handle = RobotHandle.of(world, "pr2")
+    assert handle.body is pr2 and handle.world is world and handle.name == "pr2"
+    assert RobotHandle.of(world, handle) is handle and RobotHandle.of(world, pr2) == handle
+    assert handle.model.root_link == "base_footprint" == handle.base_frame
+    assert handle.model is handle.description.model and handle.drive == "holonomic"
+    assert set(handle.arms) == {"left", "right"} == set(handle.grippers)
+    assert handle.grippers["right"].joints[0].name == "r_gripper_l_finger_joint"
+    assert handle.camera is not None and handle.camera.frame == "wide_stereo_optical_frame"
+    assert handle.joint_states() == world.joint_states("pr2")
+    with pytest.raises(AttributeError):
+        handle.body = pr2  # type: ignore[misc]
+    with pytest.raises(UnknownObjectError, match="pr"):
+        RobotHandle.of(world, "pr")
+    with pytest.raises(NotARobotError):
+        RobotHandle.of(world, "floor")
+
+
+def test_ik_takes_the_handle_as_its_robot(world: World, pr2: RobotObject) -> None:
+    handle = RobotHandle.of(world, pr2)
+    seed = handle.joint_states()
+    bent = {**seed, "r_elbow_flex_joint": -1.0}
+    target = forward_kinematics(handle, bent, "r_gripper_tool_frame")
+    options = IKOptions(random_seed=5, use_torso=True)
+    by_handle = solve_ik(handle, "right", target, seed=seed, options=options)
+    by_description = solve_ik(pr2.description, "right", target, seed=seed, options=options)
+    assert by_handle.success and by_handle.position_error < 1e-3
+    assert by_handle.joint_positions == by_description.joint_positions  # bit for bit
 
 
 def test_out_of_range_torso_is_clamped_and_reported(world: World, pr2: RobotObject) -> None:

@@ -18,7 +18,7 @@ from robocram.costmaps.validators import (
     reach_object,
     robot_arms,
 )
-from robocram.kinematics import base_in_ik, solve_ik
+from robocram.kinematics import IKOptions, base_in_ik, solve_ik
 from robocram.logic import KnowledgeBase, Value, Var
 from robocram.tf import Pose, PoseStamped
 from robocram.world import RobotObject, World, WorldObject
@@ -53,9 +53,11 @@ def pose_reachable(
             name,
             target,
             seed=seed,
-            use_torso=use_torso,
-            max_restarts=IK_RESTARTS,
-            base=STAND_TRAVEL if base_in_ik(desc, name) else None,
+            options=IKOptions(
+                use_torso=use_torso,
+                max_restarts=IK_RESTARTS,
+                base=STAND_TRAVEL if base_in_ik(desc, name) else None,
+            ),
         )
         for name in robot_arms(body, arm)
     )

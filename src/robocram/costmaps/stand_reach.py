@@ -27,7 +27,7 @@ from robocram.costmaps.validators import (
     reach_point,
     solve_at_stand,
 )
-from robocram.kinematics import BaseMotion, IKResult, solve_ik
+from robocram.kinematics import BaseMotion, IKOptions, IKResult, solve_ik
 from robocram.robots import RobotDescription
 from robocram.tf import Pose, PoseStamped, Vector3
 from robocram.world import RobotObject, World, WorldObject
@@ -126,9 +126,8 @@ def _solve_near(
     start = {**seed, **near.joint_positions}
     motion = near.base_motion
     here = target if motion is None else motion.pose().inverse() * target
-    still = solve_ik(
-        desc, arm, here, seed=start, use_torso=desc.torso_joint is not None, max_restarts=restarts
-    )
+    options = IKOptions(use_torso=desc.torso_joint is not None, max_restarts=restarts)
+    still = solve_ik(desc, arm, here, seed=start, options=options)
     if still.success:
         return replace(still, base_motion=motion)
     return solve_at_stand(desc, arm, target, start, restarts) if motion is not None else still

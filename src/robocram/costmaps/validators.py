@@ -19,7 +19,14 @@ from robocram.costmaps.cost_layer import LocationQuery
 from robocram.costmaps.errors import CostmapInputError
 from robocram.costmaps.grasps import GRASP_YAWS, approach_axis, grasp_point, grasp_poses, top_down
 from robocram.costmaps.reachability_map import ReachabilityMaps
-from robocram.kinematics import BaseMotion, IKResult, PlanarBase, base_in_ik, solve_ik
+from robocram.kinematics import (
+    BaseMotion,
+    IKOptions,
+    IKResult,
+    PlanarBase,
+    base_in_ik,
+    solve_ik,
+)
 from robocram.robots import ArmDescription, RobotDescription
 from robocram.tf import Pose, Vector3
 from robocram.world import Camera, RayHit, RobotObject, World, WorldObject
@@ -277,7 +284,9 @@ def solve_at_stand(
         arm,
         target,
         seed=seed,
-        use_torso=desc.torso_joint is not None,
-        max_restarts=restarts,
-        base=STAND_TRAVEL if base_in_ik(desc, arm) else None,
+        options=IKOptions(
+            use_torso=desc.torso_joint is not None,
+            max_restarts=restarts,
+            base=STAND_TRAVEL if base_in_ik(desc, arm) else None,
+        ),
     )

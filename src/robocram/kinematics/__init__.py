@@ -3,6 +3,7 @@
 from robocram.kinematics.arm_selection import arm_joints
 from robocram.kinematics.base_ik_solver import BaseIKSolver
 from robocram.kinematics.descent import IKSettings
+from robocram.kinematics.described_robot import DescribedRobot, RobotRef
 from robocram.kinematics.errors import (
     KinematicsArgumentError,
     KinematicsError,
@@ -10,6 +11,7 @@ from robocram.kinematics.errors import (
     TargetFrameError,
     UnknownNameError,
 )
+from robocram.kinematics.ik_options import IKOptions
 from robocram.kinematics.ik_result import IKResult
 from robocram.kinematics.ik_solver import CollisionCheck, IKSolver
 from robocram.kinematics.kinematics_cache import KinematicsCache
@@ -22,6 +24,8 @@ __all__ = [
     "BaseIKSolver",
     "BaseMotion",
     "CollisionCheck",
+    "DescribedRobot",
+    "IKOptions",
     "IKResult",
     "IKSettings",
     "IKSolver",
@@ -31,6 +35,7 @@ __all__ = [
     "KinematicsUsageError",
     "PlanarBase",
     "ReachBound",
+    "RobotRef",
     "TargetFrameError",
     "UnknownNameError",
     "arm_joints",

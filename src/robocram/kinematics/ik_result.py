@@ -14,7 +14,7 @@ class IKResult:
 
     ``joint_positions`` holds the arm joints, the torso joint when it was allowed to move,
     and every mimic joint following them, [rad | m]; ``base_motion`` the base's move when
-    IK could move the base (``solve_ik(..., base=PlanarBase())``). On failure it holds the best
+    IK could move the base (``IKOptions(base=PlanarBase())``). On failure it holds the best
     configuration found (closest to the target), still within limits. Errors are those of
     that configuration: ``position_error`` [m], ``orientation_error`` [rad].
 

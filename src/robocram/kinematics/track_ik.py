@@ -33,7 +33,8 @@ def track_ik(
     random_seed: int = 0,
 ) -> Iterator[IKResult]:
     """Lazily, the answer for each of ``targets`` (root link, in order), solved from the
-    answer before (the first from ``seed``), as ``solve_ik(..., max_restarts=0)`` would.
+    answer before (the first from ``seed``), as ``solve_ik`` would with
+    ``IKOptions(max_restarts=0)``.
 
     The torso and every joint not of the arm stay at their ``seed`` values. Stop asking
     after a failure: the next pose would start from the failed answer.

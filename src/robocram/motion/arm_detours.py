@@ -28,7 +28,7 @@ from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.robot_geometry import RobotGeometry
 from robocram.motion.segment_check import CheckCounter, segment_free
 from robocram.motion.travel_bound import TravelBound
-from robocram.world import World
+from robocram.world import RobotHandle
 
 DETOUR_LIFTS = (0.3, 0.5)  # [m] tool lifts tried, in order, each by one joint
 SHARED_LIFT = 0.5  # [m] then this lift, shared by the two steepest joints
@@ -49,9 +49,10 @@ class ToolHeight:
     frame: int  # pinocchio frame of the tool
 
     @classmethod
-    def of(cls, world: World, robot: str, joints: Sequence[str]) -> ToolHeight | None:
+    def of(cls, robot: RobotHandle, joints: Sequence[str]) -> ToolHeight | None:
         """The height of the tool of the arm moved by most of ``joints``; None if none is."""
-        desc = world.robot(robot).description
+        world = robot.world
+        desc = robot.description
         arms = [arm for arm in desc.arms.values() if set(arm.joints) & set(joints)]
         if not arms:
             return None
@@ -59,7 +60,7 @@ class ToolHeight:
         geometry = desc.model.derived(RobotGeometry.of)
         kin = geometry.kinematics
         masters = {
-            j: v for j, v in world.joint_states(robot).items()
+            j: v for j, v in world.joint_states(robot.name).items()
             if kin.robot_model.joints[j].mimic is None
         }  # fmt: skip
         slots = JointSlots(kin, joints, kin.configuration(masters))

@@ -49,7 +49,7 @@ from robocram.motion.time_parameterization import time_parameterize
 from robocram.motion.travel_bound import TravelBound
 from robocram.robots import LoadedDescription
 from robocram.tf import Pose
-from robocram.world import World
+from robocram.world import RobotHandle
 
 SNAPSHOT_MARGINS = (0.0, 0.015)  # [m] planning again with a margin when the world disagrees
 UNMOVED = 1e-9  # [rad | m] a joint changing less than this does not move
@@ -85,8 +85,7 @@ def planned_joints(desc: LoadedDescription, goal: Mapping[str, float]) -> tuple[
 
 
 def _scene(
-    world: World,
-    robot: str,
+    robot: RobotHandle,
     joints: tuple[str, ...],
     allowed: Collection[str],
     start: list[float],
@@ -96,20 +95,17 @@ def _scene(
     """The world checker (clearances from coal, contacts judged on the world), allowing
     ``pairs``, the ``hand``'s bounded contact and the contacts the robot (and what it
     holds) already has at the start: a hand on a handle, a held bowl still on its table."""
-    judge = BulletScene(world, robot, joints, allowed, allowed_pairs=pairs, hand=hand)
+    judge = BulletScene(robot, joints, allowed, allowed_pairs=pairs, hand=hand)
     scene = CoalClearance(judge)
     touching = _start_contacts(scene, start, hand)
     if touching:
-        judge = BulletScene(
-            world, robot, joints, allowed, allowed_pairs={*pairs, *touching}, hand=hand
-        )
+        judge = BulletScene(robot, joints, allowed, allowed_pairs={*pairs, *touching}, hand=hand)
         scene = CoalClearance(judge)
     return scene
 
 
 def _judge(
-    world: World,
-    robot: str,
+    robot: RobotHandle,
     joints: tuple[str, ...],
     allowed: Collection[str],
     start: list[float],
@@ -118,11 +114,11 @@ def _judge(
 ) -> BulletScene:
     """The world itself as the checker, allowing ``pairs``, the ``hand``'s bounded contact
     and the start's contacts."""
-    judge = BulletScene(world, robot, joints, allowed, allowed_pairs=pairs, hand=hand)
+    judge = BulletScene(robot, joints, allowed, allowed_pairs=pairs, hand=hand)
     touching = _start_contacts(judge, start, hand)
     if touching:
         pairs = {*pairs, *touching}
-        judge = BulletScene(world, robot, joints, allowed, allowed_pairs=pairs, hand=hand)
+        judge = BulletScene(robot, joints, allowed, allowed_pairs=pairs, hand=hand)
     return judge
 
 
@@ -136,8 +132,7 @@ def _start_contacts(
 
 
 def plan_arm_motion(
-    world: World,
-    robot: str,
+    robot: RobotHandle,
     goal: Mapping[str, float],
     *,
     allowed_links: Collection[str] = (),
@@ -161,10 +156,11 @@ def plan_arm_motion(
             colliding pairs and where along the straight path they are.
         MotionInputError: a goal value is not finite, or a continuous joint's is absurd.
     """
-    desc = world.robot(robot).description
+    world = robot.world
+    desc = robot.description
     joints = planned_joints(desc, goal)
-    hand = hand_at_start(world, robot, hand)
-    current = world.joint_states(robot)
+    hand = hand_at_start(world, robot.name, hand)
+    current = world.joint_states(robot.name)
     start = [current[j] for j in joints]
     end = motion_goal(desc, joints, start, goal)
     limits = joint_limits(desc, joints)
@@ -172,11 +168,11 @@ def plan_arm_motion(
         path = JointPath(joints, (tuple(start), tuple(end)), "straight", 0)
     else:
         path = _checked_path(
-            world, robot, joints, allowed_links, start, end, settings, what, allowed_pairs,
+            robot, joints, allowed_links, start, end, settings, what, allowed_pairs,
             hand,
         )  # fmt: skip
     trajectory = time_parameterize(
-        robot, joints, path.waypoints, limits, kind=kind, period=settings.period
+        robot.name, joints, path.waypoints, limits, kind=kind, period=settings.period
     )
     return ArmMotion(path, _with_hand(trajectory, hand))
 
@@ -195,8 +191,7 @@ def _unmoved(start: list[float], end: list[float]) -> bool:
 
 
 def _straight_checker(
-    world: World,
-    robot: str,
+    robot: RobotHandle,
     joints: tuple[str, ...],
     allowed: Collection[str],
     start: list[float],
@@ -208,16 +203,15 @@ def _straight_checker(
     no point moves farther than ``travel`` [m]: None when nothing it may not touch is that
     near (it is free); the world itself for a short one; else coal's clearances."""
     if travel > LIGHT_TRAVEL:
-        return _scene(world, robot, joints, allowed, start, pairs, hand)
-    judge = BulletScene(world, robot, joints, allowed, allowed_pairs=pairs, hand=hand)
+        return _scene(robot, joints, allowed, start, pairs, hand)
+    judge = BulletScene(robot, joints, allowed, allowed_pairs=pairs, hand=hand)
     if judge.clearance_now(travel + FAST_MARGIN) > travel:
         return None
-    return _judge(world, robot, joints, allowed, start, pairs, hand)
+    return _judge(robot, joints, allowed, start, pairs, hand)
 
 
 def _checked_path(
-    world: World,
-    robot: str,
+    robot: RobotHandle,
     joints: tuple[str, ...],
     allowed: Collection[str],
     start: list[float],
@@ -227,14 +221,14 @@ def _checked_path(
     pairs: Collection[LinkPair] = (),
     hand: HandContact | None = None,
 ) -> JointPath:
-    bound = TravelBound.of(world, robot, joints)
-    desc = world.robot(robot).description
+    bound = TravelBound.of(robot, joints)
+    desc = robot.description
     limits = joint_limits(desc, joints)
     box = ([lim.lower for lim in limits], [lim.upper for lim in limits])
-    own = SelfPathCheck.of(world, robot, joints)
+    own = SelfPathCheck.of(robot, joints)
     _goal_apart(own, end, what)
     travel = bound.travel(np.array(start), np.array(end))
-    checker = _straight_checker(world, robot, joints, allowed, start, pairs, travel, hand)
+    checker = _straight_checker(robot, joints, allowed, start, pairs, travel, hand)
     try:
         straight = (
             JointPath(joints, (tuple(start), tuple(end)), "straight", 1)
@@ -253,20 +247,19 @@ def _checked_path(
         if not settings.plan:
             raise
     if checker is None:  # free of the world, but into itself: plan round on coal
-        checker = _scene(world, robot, joints, allowed, start, pairs, hand)
+        checker = _scene(robot, joints, allowed, start, pairs, hand)
     # a way round is planned on coal's clearances
     scene = checker if isinstance(checker, CoalClearance) else CoalClearance(checker)
-    height = ToolHeight.of(world, robot, joints)
+    height = ToolHeight.of(robot, joints)
     if height is not None:
         detour = detour_path(scene, start, end, bound, box, height)
         if detour is not None and own.first_collision(detour.waypoints) is None:
             return detour
-    return _planned(world, robot, scene, own, start, end, bound, box, settings, what)
+    return _planned(robot, scene, own, start, end, bound, box, settings, what)
 
 
 def _planned(
-    world: World,
-    robot: str,
+    robot: RobotHandle,
     scene: CoalClearance,
     own: SelfPathCheck,
     start: list[float],
@@ -280,7 +273,8 @@ def _planned(
     confirmed on the world. The self walk judges the simplifier only once a plan without
     it ran the robot into itself (it costs as much as the world's walk); a snapshot with a
     margin is taken only when the world refuses a planned path."""
-    links = set(world.link_names(robot))
+    world = robot.world
+    links = set(world.link_names(robot.name))
     hand = scene.judge.hand  # the snapshot lets it touch what it acts on, at any depth
     start_links = {  # links touching at the start may touch anything in the snapshot
         link for link, other in scene.judge.allowed_pairs
@@ -289,7 +283,7 @@ def _planned(
     failures: list[ManipulationPathBlocked] = []
     for margin in SNAPSHOT_MARGINS:  # the snapshot's hulls and Bullet's can differ by mm
         snapshot = CollisionScene.of(  # the goal passed the finer check on the meshes
-            world, robot, scene.joints, allowed_links=scene.judge.allowed_links | start_links,
+            robot, scene.joints, allowed_links=scene.judge.allowed_links | start_links,
             margin=margin, allow_at=[end], hand=hand,
         )  # fmt: skip
         for apart in (False, True):
@@ -389,8 +383,7 @@ def _named(pairs: list[tuple[str, str]]) -> str:
 
 
 def plan_tool_line(
-    world: World,
-    robot: str,
+    robot: RobotHandle,
     arm: str,
     target_in_base: Pose,
     *,
@@ -401,22 +394,23 @@ def plan_tool_line(
     """The straight line of ``arm``'s tool to ``target_in_base`` (the robot's root link),
     as far as it can be followed: ``fraction`` says how far (1: all of it). ``hand`` may
     touch what it acts on within its bound (the trajectory stores it)."""
-    desc = world.robot(robot).description
+    world = robot.world
+    desc = robot.description
     spec = desc.arms[arm]
     joints = tuple(spec.joints)
-    current = world.joint_states(robot)
+    current = world.joint_states(robot.name)
     start = [current[j] for j in joints]
-    base = world.pose(robot)
-    tool = base.inverse() * world.link_pose(robot, spec.tool_frame)
-    hand = hand_at_start(world, robot, hand)
-    scene = _scene(world, robot, joints, allowed_links, start, hand=hand)
-    bound = TravelBound.of(world, robot, joints)
+    base = world.pose(robot.name)
+    tool = base.inverse() * world.link_pose(robot.name, spec.tool_frame)
+    hand = hand_at_start(world, robot.name, hand)
+    scene = _scene(robot, joints, allowed_links, start, hand=hand)
+    bound = TravelBound.of(robot, joints)
     line = cartesian_path(
         desc, arm, scene, current, tool, target_in_base, bound, random_seed=settings.seed
     )
     fraction = line.fraction
     if fraction >= 1.0:  # a line cut short is not followed: no need to walk it
-        blocked = SelfPathCheck.of(world, robot, joints).first_collision(line.path.waypoints)
+        blocked = SelfPathCheck.of(robot, joints).first_collision(line.path.waypoints)
         if blocked is not None:  # not followed: the caller moves in joint space instead
             fraction = blocked[0] if blocked[0] < 1.0 else 0.0
     limits = joint_limits(desc, joints)
@@ -424,7 +418,7 @@ def plan_tool_line(
         blend_radii(scene, bound, line.path.waypoints) if fraction >= 1.0 else None
     )
     trajectory = time_parameterize(
-        robot, joints, line.path.waypoints, limits, kind="cartesian", period=settings.period,
+        robot.name, joints, line.path.waypoints, limits, kind="cartesian", period=settings.period,
         corner_radii=radii,
     )  # fmt: skip
     return ArmMotion(line.path, _with_hand(trajectory, hand), fraction)

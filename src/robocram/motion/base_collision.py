@@ -27,7 +27,7 @@ from robocram.motion.obstacle_grid import Box, ObstacleGrid
 from robocram.motion.robot_footprint import FloatArray, RobotFootprint
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
-from robocram.world import ObstacleBoxes, PlanningArea, World
+from robocram.world import ObstacleBoxes, PlanningArea, RobotHandle, World
 
 CELL = 0.01  # [m] obstacle grid cells
 SPACING = 0.02  # [m] robot sample squares: more than the 1 cm a dense check moves
@@ -86,8 +86,7 @@ class BaseCollisionChecker:
     @classmethod
     def build(
         cls,
-        world: World,
-        robot: str,
+        robot: RobotHandle,
         goal_xy: tuple[float, float],
         allowed_links: frozenset[str] = frozenset(),
     ) -> BaseCollisionChecker:
@@ -102,12 +101,13 @@ class BaseCollisionChecker:
             NavigationGoalOutsideArea: the goal is outside the world's
                 :class:`~robocram.world.PlanningArea` (before anything is rasterised).
         """
-        start = world.pose(robot)
-        carried = _carried(world, robot)
-        bins, footprint = _footprint(world, robot, carried, start)
-        skip = {robot, *carried} | {o.name for o in world.objects("floor")}
+        world = robot.world
+        start = world.pose(robot.name)
+        carried = _carried(robot)
+        bins, footprint = _footprint(robot, carried, start)
+        skip = {robot.name, *carried} | {o.name for o in world.objects("floor")}
         obstacles = world.obstacle_boxes(skip)
-        _refuse_far_goal(robot, start, goal_xy, obstacles)
+        _refuse_far_goal(robot.name, start, goal_xy, obstacles)
         ends = np.array([start.position[:2], goal_xy], dtype=float)
         low = np.minimum(ends.min(axis=0), obstacles.low[:, :2].min(axis=0, initial=np.inf))
         high = np.maximum(ends.max(axis=0), obstacles.high[:, :2].max(axis=0, initial=-np.inf))
@@ -124,7 +124,7 @@ class BaseCollisionChecker:
             (min(near[1][0], bounds[1][0]), min(near[1][1], bounds[1][1])),
         )
         grid = _grid(obstacles, covered, footprint, bins)
-        checker = cls(world, robot, start, carried, footprint, grid, bounds)
+        checker = cls(world, robot.name, start, carried, footprint, grid, bounds)
         checker.allowed_links = allowed_links
         checker.covered = covered
         checker._obstacles = obstacles
@@ -389,39 +389,41 @@ def _contacts_now(
 
 
 def blockers_at(
-    world: World, robot: str, pose: FloatArray, allowed_links: frozenset[str] = frozenset()
+    robot: RobotHandle, pose: FloatArray, allowed_links: frozenset[str] = frozenset()
 ) -> list[str]:
     """What the robot (and what it carries) touches standing at ``pose`` (map x, y, yaw),
     by the exact check, without the grid a path needs: a goal that is plainly blocked (a
     stand under a table's edge) costs a millisecond, not a checker. It is put back."""
-    start = world.pose(robot)
+    world = robot.world
+    start = world.pose(robot.name)
     x, y, yaw = (float(v) for v in pose)
-    world.set_pose(robot, Pose((x, y, start.position[2]), quat.from_euler(0.0, 0.0, yaw)))
+    world.set_pose(robot.name, Pose((x, y, start.position[2]), quat.from_euler(0.0, 0.0, yaw)))
     try:
-        pairs = _contacts_now(world, robot, _carried(world, robot), allowed_links)
+        pairs = _contacts_now(world, robot.name, _carried(robot), allowed_links)
         return sorted({other for _, other in pairs})
     finally:
-        world.set_pose(robot, start)
+        world.set_pose(robot.name, start)
 
 
 def _footprint(
-    world: World, robot: str, carried: tuple[str, ...], start: Pose
+    robot: RobotHandle, carried: tuple[str, ...], start: Pose
 ) -> tuple[HeightBins, RobotFootprint]:
     """The height bins and footprint of the robot as it stands, kept with the world for
     the last few postures: a robot drives in few postures (arms parked, or carrying), so
     most drives find theirs. The key is everything the footprint depends on: the joints,
     the height of the base and where each carried object is in the base frame."""
+    world = robot.world
     base_z = start.position[2]
     key = (
-        robot,
-        tuple(world.joint_states(robot).items()),
+        robot.name,
+        tuple(world.joint_states(robot.name).items()),
         base_z,
         tuple((name, _in_base(start, world.pose(name))) for name in carried),
     )
     kept = world.derived(_kept_footprints)
     found = kept.pop(key, None)
     if found is None:
-        boxes = _boxes_in_base(world, robot, carried, start)
+        boxes = _boxes_in_base(robot, carried, start)
         bins = HeightBins.up_to(base_z + max(b[1][2] for b in boxes) + CONTACT)
         found = (bins, RobotFootprint.build(boxes, base_z, bins, SPACING, CONTACT))
     kept[key] = found  # most recent last
@@ -440,10 +442,11 @@ def _kept_footprints(world: World) -> dict[tuple[object, ...], tuple[HeightBins,
     return {}
 
 
-def _carried(world: World, robot: str) -> tuple[str, ...]:
+def _carried(robot: RobotHandle) -> tuple[str, ...]:
     """Objects the robot holds, and what they hold, recursively."""
+    world = robot.world
     found: list[str] = []
-    frontier = [robot]
+    frontier = [robot.name]
     while frontier:
         held = list(world.attachments(frontier.pop()))
         found += held
@@ -451,14 +454,15 @@ def _carried(world: World, robot: str) -> tuple[str, ...]:
     return tuple(found)
 
 
-def _boxes_in_base(world: World, robot: str, carried: tuple[str, ...], start: Pose) -> list[Box]:
+def _boxes_in_base(robot: RobotHandle, carried: tuple[str, ...], start: Pose) -> list[Box]:
     """Every link box of the robot and what it holds, in the base frame (robot at yaw 0)."""
+    world = robot.world
     x, y, z = start.position
-    world.set_pose(robot, Pose((x, y, z)))
+    world.set_pose(robot.name, Pose((x, y, z)))
     try:
-        found = [box for body in (robot, *carried) for box in world.link_aabbs(body).values()]
+        found = [box for body in (robot.name, *carried) for box in world.link_aabbs(body).values()]
     finally:
-        world.set_pose(robot, start)
+        world.set_pose(robot.name, start)
     return [((lo[0] - x, lo[1] - y, lo[2] - z), (hi[0] - x, hi[1] - y, hi[2] - z))
             for lo, hi in found]  # fmt: skip
 

@@ -27,7 +27,7 @@ from robocram.motion.joint_trajectory import BASE_JOINTS, JointTrajectory
 from robocram.motion.ompl_base_planner import Area, motion_poses, planned_waypoints
 from robocram.motion.time_parameterization import time_parameterize
 from robocram.tf import Pose
-from robocram.world import World
+from robocram.world import RobotHandle
 
 DEFAULT_BUDGET = 20_000  # fast checks OMPL may spend planning (a quarter more for shortening)
 DEFAULT_TURNING_RADIUS = 0.5  # [m] of a base that is not holonomic
@@ -65,8 +65,7 @@ class BasePath:
 
 
 def plan_base_path(
-    world: World,
-    robot: str,
+    robot: RobotHandle,
     goal: Pose,
     *,
     seed: int = 0,
@@ -96,13 +95,13 @@ def plan_base_path(
             obstacle and how far along it is.
         MotionError: a non-finite goal or a non-positive budget or turning radius.
     """
-    drive = world.robot(robot).description.drive
+    drive = robot.description.drive
     car = holonomic is False or (holonomic is None and drive != "holonomic")
     _check_request(goal, budget, turning_radius)
     radius = turning_radius if car else None
     allowed = frozenset(allowed_links)
-    goal_checked = _refuse_blocked_goal(world, robot, goal, allowed)
-    with BaseCollisionChecker.build(world, robot, goal.position[:2], allowed) as checker:
+    goal_checked = _refuse_blocked_goal(robot, goal, allowed)
+    with BaseCollisionChecker.build(robot, goal.position[:2], allowed) as checker:
         start_yaw = yaw_of(checker.start)
         start = np.array([*checker.start.position[:2], start_yaw])
         end = np.array([goal.position[0], goal.position[1], yaw_of(goal)])
@@ -112,7 +111,7 @@ def plan_base_path(
         colliding = [] if fits or goal_checked else checker.blockers(end)
         if colliding:
             raise NavigationPoseUnreachable(
-                f"{robot} at {_shown(end)} would collide with {colliding}",
+                f"{robot.name} at {_shown(end)} would collide with {colliding}",
                 target=goal,
                 colliding=colliding,
             )
@@ -134,7 +133,7 @@ def plan_base_path(
                 names = checker.blockers(direct[blocked])
                 fraction = blocked / max(len(direct) - 1, 1)
                 raise NavigationPathBlocked(
-                    f"no path of {robot} to {_shown(end)} within {budget} checks; the "
+                    f"no path of {robot.name} to {_shown(end)} within {budget} checks; the "
                     f"direct way runs into {names} {fraction:.0%} of the way",
                     target=goal,
                     colliding=names,
@@ -142,30 +141,31 @@ def plan_base_path(
                 )
             waypoints = found
         poses = tuple((float(p[0]), float(p[1]), float(p[2])) for p in waypoints)
-        limits = joint_limits(world.robot(robot).description, BASE_JOINTS)
+        limits = joint_limits(robot.description, BASE_JOINTS)
         if car:  # on its curves, resting where the curvature changes
-            trajectory = time_car_path(robot, poses, limits, period=period)
+            trajectory = time_car_path(robot.name, poses, limits, period=period)
         else:
             trajectory = time_parameterize(
-                robot, BASE_JOINTS, poses, limits, kind="base", period=period
+                robot.name, BASE_JOINTS, poses, limits, kind="base", period=period
             )
         return BasePath(
-            robot, poses, planner, trajectory, checker.fast_checks, checker.exact_checks
+            robot.name, poses, planner, trajectory, checker.fast_checks, checker.exact_checks
         )
 
 
-def _refuse_blocked_goal(world: World, robot: str, goal: Pose, allowed: frozenset[str]) -> bool:
+def _refuse_blocked_goal(robot: RobotHandle, goal: Pose, allowed: frozenset[str]) -> bool:
     """Raise before any grid is built when the robot plainly collides at ``goal``; a goal
     within :data:`ESCAPE` of the start is left to the checker (start contacts count there).
     Whether the goal was checked (and is free), so the checker need not ask again."""
-    here = world.pose(robot)
+    world = robot.world
+    here = world.pose(robot.name)
     end = np.array([goal.position[0], goal.position[1], yaw_of(goal)])
     if np.hypot(end[0] - here.position[0], end[1] - here.position[1]) <= ESCAPE:
         return False
-    colliding = blockers_at(world, robot, end, allowed)
+    colliding = blockers_at(robot, end, allowed)
     if colliding:
         raise NavigationPoseUnreachable(
-            f"{robot} at {_shown(end)} would collide with {colliding}",
+            f"{robot.name} at {_shown(end)} would collide with {colliding}",
             target=goal,
             colliding=colliding,
         )

@@ -27,19 +27,18 @@ from robocram.motion.errors import MotionError
 from robocram.motion.hand_contact import HandContact, contact_depth
 from robocram.motion.joint_levers import LeverData, cross, links_below
 from robocram.motion.joint_trajectory import FloatArray
-from robocram.world import ObstacleBoxes, World, WorldObject
+from robocram.world import ObstacleBoxes, RobotHandle, World, WorldObject
 
 CLEARANCE_REACH = 0.1  # [m] distances asked for: a free configuration clears this much
 KEPT_RULES = 32  # judges' rules and moving links kept per world (per joints, allowed links)
 
 
 class BulletScene:
-    """Checks configurations of ``joints`` of ``robot`` in ``world`` (one thread at a time)."""
+    """Checks configurations of ``joints`` of ``robot`` in its world (one thread at a time)."""
 
     def __init__(
         self,
-        world: World,
-        robot: str,
+        robot: RobotHandle,
         joints: Sequence[str],
         allowed_links: Collection[str] = (),
         distance: float = 0.0,
@@ -47,28 +46,29 @@ class BulletScene:
         hand: HandContact | None = None,
         contacts: Collection[ContactAllowance] = (),
     ) -> None:
+        world = robot.world
         self.world = world
         self.contacts = tuple(contacts)  # held objects' named contacts, each bounded
         self.hand = hand  # the hand's bounded contact (allow_hand), None: no such contact
-        self.robot = robot
+        self.robot = robot.name
         self._joints = tuple(joints)
-        known = world.joint_states(robot)
+        known = world.joint_states(robot.name)
         unknown = [j for j in self._joints if j not in known]
         if unknown:
             raise MotionError(
-                f"joints {unknown} are not movable joints of {robot}; known: {sorted(known)}"
+                f"joints {unknown} are not movable joints of {robot.name}; known: {sorted(known)}"
             )
         self.allowed_links = frozenset(allowed_links)
-        handle = world.robot(robot)
+        handle = robot.body
         kept = world.derived(_kept_rules)
-        key = (robot, self._joints, self.allowed_links)
+        key = (robot.name, self._joints, self.allowed_links)
         found = kept.get(key)
         if found is None or found[0] is not handle or found[3] is not handle.description:
             rules = AllowedContacts.of(handle.description, allowed_links)
             moving = (  # only these can touch anything new; no joints: the base
-                links_below(world, robot, self._joints)
+                links_below(robot, self._joints)
                 if self._joints
-                else tuple(world.link_names(robot))
+                else tuple(world.link_names(robot.name))
             )
             found = kept[key] = (handle, rules, moving, handle.description)
             if len(kept) > KEPT_RULES:

@@ -14,7 +14,7 @@ from robocram.motion.configuration_checker import LinkPair
 from robocram.motion.errors import MotionError
 from robocram.motion.hand_contact import HandContact
 from robocram.robots import ArmDescription
-from robocram.world import World
+from robocram.world import RobotHandle
 
 COLLISION_MODES = ("avoid_all", "allow_hand", "allow_all")
 IKCollisionCheck = Callable[[Mapping[str, float]], list[LinkPair]]
@@ -51,21 +51,22 @@ def hand_bound(spec: ArmDescription, mode: str, touching: str | None) -> HandCon
 
 
 def ik_collision_check(
-    world: World, robot: str, spec: ArmDescription, joints: tuple[str, ...], mode: str
+    robot: RobotHandle, spec: ArmDescription, joints: tuple[str, ...], mode: str
 ) -> IKCollisionCheck | None:
-    """An IK ``collision_check`` on ``world`` for ``joints`` in ``mode`` (None: allow_all).
+    """An IK ``collision_check`` on the robot's world for ``joints`` in ``mode`` (None: allow_all).
 
     It returns the colliding ``(robot link, other)`` pairs, so a failure can name them;
     contacts the robot has now (a held object on its table) stay allowed, as in planning.
     """
+    world = robot.world
     if collision_mode(mode) == "allow_all":
         return None
     allowed = allowed_links(spec, mode)
-    scene = BulletScene(world, robot, joints, allowed)
-    now = world.joint_states(robot)
+    scene = BulletScene(robot, joints, allowed)
+    now = world.joint_states(robot.name)
     touching = scene.colliding([now[j] for j in joints])
     if touching:
-        scene = BulletScene(world, robot, joints, allowed, allowed_pairs=touching)
+        scene = BulletScene(robot, joints, allowed, allowed_pairs=touching)
 
     def colliding(candidate: Mapping[str, float]) -> list[LinkPair]:
         return scene.colliding_at({j: candidate[j] for j in joints if j in candidate})

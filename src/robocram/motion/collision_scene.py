@@ -23,7 +23,7 @@ from robocram.motion.hand_contact import HandContact
 from robocram.motion.joint_slots import JointSlots
 from robocram.motion.scene_geometry import SceneGeometry, build_geometry
 from robocram.motion.scene_snapshot import SceneSnapshot
-from robocram.world import World
+from robocram.world import RobotHandle
 
 _Manager = pin.BroadPhaseManager_DynamicAABBTreeCollisionManager
 
@@ -55,8 +55,7 @@ class CollisionScene:
     @classmethod
     def of(
         cls,
-        world: World,
-        robot: str,
+        robot: RobotHandle,
         joints: Sequence[str],
         *,
         allowed_links: Collection[str] = (),
@@ -64,14 +63,14 @@ class CollisionScene:
         allow_at: Sequence[Sequence[float] | NDArray[np.float64]] = (),
         hand: HandContact | None = None,
     ) -> CollisionScene:
-        """Take ``world`` around ``robot`` now, to check values of ``joints``.
+        """Take the world around ``robot`` now, to check values of ``joints``.
 
         ``allowed_links`` may touch anything (CRAM's ``allow_hand``); ``margin`` [m]
         grows every shape, for a safety distance; the robot's own contacts at the
         configurations ``allow_at`` (a goal a finer check accepted) are left out; ``hand``'s
         links are not checked against what it may touch (the world bounds how deep).
         """
-        snapshot = SceneSnapshot.take(world, robot, joints, allowed_links, margin, hand)
+        snapshot = SceneSnapshot.take(robot, joints, allowed_links, margin, hand)
         return cls(snapshot, allow_at=allow_at)
 
     def _new_data(self) -> None:

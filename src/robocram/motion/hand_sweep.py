@@ -25,7 +25,7 @@ from robocram.motion.hand_contact import HandContact, hand_at_start
 from robocram.motion.joint_trajectory import BASE_JOINTS, JointTrajectory
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
-from robocram.world import World
+from robocram.world import RobotHandle
 
 HAND_STEP = 0.005  # [m] the most a point of the hand moves between two looks
 
@@ -43,8 +43,7 @@ class HandBreach:
 
 
 def hand_breach(
-    world: World,
-    robot: str,
+    robot: RobotHandle,
     trajectory: JointTrajectory,
     hand: HandContact,
     carried: Sequence[CarriedJoint] = (),
@@ -52,23 +51,26 @@ def hand_breach(
     """The first place ``trajectory`` (a base drive from where ``robot`` stands) takes the
     hand beyond ``hand``'s contact, or None; ``carried`` joints (a door the hand pulls
     round) move along in proportion to time. The robot and the joints are put back."""
+    world = robot.world
     if trajectory.joint_names != BASE_JOINTS or len(trajectory.points) < 2:
         return None
-    hand = hand_at_start(world, robot, hand) or hand
-    rules = AllowedContacts.of(world.robot(robot).description, ())
-    links = sorted(link for link in hand.links if link in world.robot(robot).link_index)
-    start = world.pose(robot)
-    reach = _hand_reach(world, robot, links, start)
+    hand = hand_at_start(world, robot.name, hand) or hand
+    rules = AllowedContacts.of(robot.description, ())
+    links = sorted(link for link in hand.links if link in robot.body.link_index)
+    start = world.pose(robot.name)
+    reach = _hand_reach(robot, links, start)
     before = [(c.obj, c.joint, world.joint_states(c.obj)[c.joint]) for c in carried]
     duration = trajectory.duration
     try:
         for time, (x, y, yaw) in _dense(trajectory, reach):
             checkpoint()  # a stopped task ends the walk here
-            world.set_pose(robot, Pose((x, y, start.position[2]), quat.from_euler(0.0, 0.0, yaw)))
+            world.set_pose(
+                robot.name, Pose((x, y, start.position[2]), quat.from_euler(0.0, 0.0, yaw))
+            )
             for c in carried:
                 world.set_joint_states(c.obj, {c.joint: c.at(time / duration if duration else 1.0)})
             for link, obj, other_link, gap in world.link_distances(
-                robot, distance=0.0, links=links
+                robot.name, distance=0.0, links=links
             ):
                 if gap >= 0.0 or rules.allows(link, Other(obj.name, obj.type)):
                     continue
@@ -77,18 +79,19 @@ def hand_breach(
                 if -gap > max(bound, 0.001):
                     return HandBreach(time, link, named, -gap, bound)
     finally:
-        world.set_pose(robot, start)
+        world.set_pose(robot.name, start)
         for part, joint, value in before:
             world.set_joint_states(part, {joint: value})
     return None
 
 
-def _hand_reach(world: World, robot: str, links: list[str], base: Pose) -> float:
+def _hand_reach(robot: RobotHandle, links: list[str], base: Pose) -> float:
     """[m] the farthest a point of the hand lies from the base's vertical axis."""
-    radii = world.link_radii(robot)
+    world = robot.world
+    radii = world.link_radii(robot.name)
     far = 0.0
     for link in links:
-        x, y, _ = world.link_pose(robot, link).position
+        x, y, _ = world.link_pose(robot.name, link).position
         far = max(
             far, math.hypot(x - base.position[0], y - base.position[1]) + radii.get(link, 0.0)
         )

@@ -19,7 +19,7 @@ from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.mimic_family import mimic_family
 from robocram.motion.travel_bound import link_radii
 from robocram.robots import RobotModel
-from robocram.world import World
+from robocram.world import RobotHandle, World
 
 
 @dataclass(frozen=True)
@@ -49,7 +49,7 @@ class LeverData:
         children = [model.joints[j].child for j in joints]
         frame_links = tuple(dict.fromkeys([*moving, *children]))
         at = {link: k for k, link in enumerate(frame_links)}
-        radii = link_radii(world, robot)
+        radii = link_radii(RobotHandle.of(world, robot))
         tree = model.derived(_tree)
         chains = [_chains(tree, child) for child in children]  # per joint: link -> length
         return cls(
@@ -138,10 +138,11 @@ def cross(a: FloatArray, b: FloatArray) -> FloatArray:
     return np.stack((a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0), axis=-1)
 
 
-def links_below(world: World, robot: str, joints: Sequence[str]) -> tuple[str, ...]:
+def links_below(robot: RobotHandle, joints: Sequence[str]) -> tuple[str, ...]:
     """The links some joint of ``joints`` moves (those below it, or below a joint that
     mimics it), in the world's link order."""
-    model = world.robot(robot).description.model
+    world = robot.world
+    model = robot.description.model
     tree = model.derived(_tree)
     todo = [model.joints[m].child for j in joints for m, _, _ in mimic_family(model, j)]
     below = set(todo)
@@ -150,7 +151,7 @@ def links_below(world: World, robot: str, joints: Sequence[str]) -> tuple[str, .
             if child not in below:
                 below.add(child)
                 todo.append(child)
-    return tuple(link for link in world.link_names(robot) if link in below)
+    return tuple(link for link in world.link_names(robot.name) if link in below)
 
 
 _Tree = dict[str, list[tuple[str, float]]]  # per link: its children, the joint offset [m] to each

@@ -16,7 +16,7 @@ from robocram.motion.hand_contact import HandContact
 from robocram.motion.self_collision_matrix import SelfCollisionMatrix
 from robocram.robots import LoadedDescription
 from robocram.tf import Pose
-from robocram.world import CollisionShape, World
+from robocram.world import CollisionShape, RobotHandle, World
 
 
 @dataclass(frozen=True)
@@ -49,8 +49,7 @@ class SceneSnapshot:
     @classmethod
     def take(
         cls,
-        world: World,
-        robot: str,
+        robot: RobotHandle,
         joints: Sequence[str],
         allowed_links: Collection[str] = (),
         margin: float = 0.0,
@@ -59,9 +58,10 @@ class SceneSnapshot:
         """Read the world once: the robot's state, what it holds, every other object
         (``hand``'s links are not checked against what it may touch; its bound is the
         world's to judge)."""
+        world = robot.world
         if not margin >= 0.0:
             raise MotionError(f"collision margin must be >= 0 [m], got {margin!r}")
-        handle = world.robot(robot)
+        handle = robot.body
         desc = handle.description
         _check_joints(desc, joints)
         model = desc.model
@@ -73,10 +73,10 @@ class SceneSnapshot:
         held_names = set(world.attachments(handle))
         return cls(
             handle.name, desc, tuple(joints), values,
-            tuple(_held_shapes(world, handle.name, desc)),
-            tuple(_static_shapes(world, handle.name, held_names)),
+            tuple(_held_shapes(robot, desc)),
+            tuple(_static_shapes(robot, held_names)),
             frozenset(allowed_links), float(margin),
-            frozenset(SelfCollisionMatrix.of(world, handle.name).skipped), hand,
+            frozenset(SelfCollisionMatrix.of(robot).skipped), hand,
         )  # fmt: skip
 
 
@@ -111,10 +111,11 @@ def _label(world: World, obj: str, link: str) -> str:
     return obj if len(world.link_names(obj)) == 1 else f"{obj}/{link}"
 
 
-def _held_shapes(world: World, robot: str, desc: LoadedDescription) -> list[PlacedShape]:
+def _held_shapes(robot: RobotHandle, desc: LoadedDescription) -> list[PlacedShape]:
+    world = robot.world
     placed = []
-    for obj, link in world.attachments(robot).items():
-        link_T_map = world.link_pose(robot, link).inverse()
+    for obj, link in world.attachments(robot.name).items():
+        link_T_map = world.link_pose(robot.name, link).inverse()
         kind = world.object(obj).type
         for shape in world.collision_shapes(obj):
             placed.append(
@@ -126,11 +127,12 @@ def _held_shapes(world: World, robot: str, desc: LoadedDescription) -> list[Plac
     return placed
 
 
-def _static_shapes(world: World, robot: str, held: set[str]) -> list[PlacedShape]:
-    root_T_map = world.pose(robot).inverse()
+def _static_shapes(robot: RobotHandle, held: set[str]) -> list[PlacedShape]:
+    world = robot.world
+    root_T_map = world.pose(robot.name).inverse()
     placed = []
     for obj in world.objects():
-        if obj.name == robot or obj.name in held:
+        if obj.name == robot.name or obj.name in held:
             continue
         for shape in world.collision_shapes(obj):
             label = _label(world, obj.name, shape.link)

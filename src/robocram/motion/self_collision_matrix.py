@@ -50,7 +50,7 @@ from robocram.motion.allowed_contacts import AllowedContacts, Other
 from robocram.motion.self_collision import adjacent_pairs
 from robocram.motion.stored_self_collision import matrix_digest, read_stored
 from robocram.robots import LoadedDescription, RobotModel
-from robocram.world import World
+from robocram.world import RobotHandle
 
 SAMPLES = 64  # configurations sampled to find pairs always in contact
 SEED = 0
@@ -67,9 +67,9 @@ class SelfCollisionMatrix:
     rest_depths: Mapping[frozenset[str], float] = field(default_factory=dict)  # [m] default
 
     @classmethod
-    def of(cls, world: World, robot: str) -> SelfCollisionMatrix:
+    def of(cls, robot: RobotHandle) -> SelfCollisionMatrix:
         """The matrix of ``robot`` (worked out on first use, kept with its model)."""
-        handle = world.robot(robot)
+        handle = robot.body
         desc = handle.description
         kept = desc.model.derived(_Kept).matrices
         key = _description_key(desc)
@@ -77,16 +77,16 @@ class SelfCollisionMatrix:
         if found is None:
             digest = matrix_digest(desc, key)
             stored = read_stored(desc.name, digest)
-            found = cls.from_data(stored) if stored is not None else _work_out(world, robot)
+            found = cls.from_data(stored) if stored is not None else _work_out(robot)
             kept[key] = found
         return found
 
     @classmethod
-    def worked_out(cls, world: World, robot: str) -> tuple[SelfCollisionMatrix, str]:
+    def worked_out(cls, robot: RobotHandle) -> tuple[SelfCollisionMatrix, str]:
         """The matrix of ``robot`` worked out anew (nothing stored or kept is read), and
         the digest it is stored under (``tools/store_self_collision.py``)."""
-        desc = world.robot(robot).description
-        return _work_out(world, robot), matrix_digest(desc, _description_key(desc))
+        desc = robot.description
+        return _work_out(robot), matrix_digest(desc, _description_key(desc))
 
     def to_data(self) -> dict[str, object]:
         """The matrix as JSON data (pairs in a fixed order)."""
@@ -133,8 +133,8 @@ def _description_key(desc: LoadedDescription) -> tuple[object, ...]:
     return (tuple(desc.allowed_contacts), arms, tuple(sorted(desc.neck_parking.items())))
 
 
-def _work_out(world: World, robot: str) -> SelfCollisionMatrix:
-    handle = world.robot(robot)
+def _work_out(robot: RobotHandle) -> SelfCollisionMatrix:
+    handle = robot.body
     desc = handle.description
     names = handle.collider_names()
     links = sorted(set(names.values()))
@@ -159,75 +159,76 @@ def _work_out(world: World, robot: str) -> SelfCollisionMatrix:
     candidates = [
         (a, b) for a, b in itertools.combinations(links, 2) if frozenset((a, b)) not in skipped
     ]
-    for always in _always_touching(world, robot, candidates):
+    for always in _always_touching(robot, candidates):
         skipped[frozenset(always)] = "always"
     left = [p for p in candidates if frozenset(p) not in skipped]
     rest_depths: dict[frozenset[str], float] = {}
-    for resting, depth in _touching_at_rest(world, robot, left).items():
+    for resting, depth in _touching_at_rest(robot, left).items():
         skipped[frozenset(resting)] = "default"
         rest_depths[frozenset(resting)] = depth
     left = [p for p in candidates if frozenset(p) not in skipped]
-    for never in _never_near(world, robot, left):
+    for never in _never_near(robot, left):
         skipped[frozenset(never)] = "never"
     checked = tuple(p for p in candidates if frozenset(p) not in skipped)
     return SelfCollisionMatrix(checked, skipped, rest_depths)
 
 
 def _always_touching(
-    world: World, robot: str, candidates: list[tuple[str, str]]
+    robot: RobotHandle, candidates: list[tuple[str, str]]
 ) -> list[tuple[str, str]]:
     """The pairs among ``candidates`` touching in every sampled configuration: a pair
     apart in one sample is dropped, so later samples ask only the survivors."""
-    model = world.robot(robot).description.model
+    world = robot.world
+    model = robot.description.model
     movable = [
-        j for j in world.joint_states(robot)
+        j for j in world.joint_states(robot.name)
         if model.joints[j].mimic is None
     ]  # fmt: skip
-    before = {j: v for j, v in world.joint_states(robot).items() if j in movable}
+    before = {j: v for j, v in world.joint_states(robot.name).items() if j in movable}
     rng = np.random.default_rng(SEED)
     survivors = list(candidates)
     try:
         for _ in range(SAMPLES):
             if not survivors:
                 break
-            world.set_joint_states(robot, _sample(model, movable, rng), carry=False)
-            touching = world.self_distances(robot, survivors, 0.0)
+            world.set_joint_states(robot.name, _sample(model, movable, rng), carry=False)
+            touching = world.self_distances(robot.name, survivors, 0.0)
             survivors = [p for k, p in enumerate(survivors) if touching[k] <= 0.0]
     finally:
-        world.set_joint_states(robot, before, carry=False)
+        world.set_joint_states(robot.name, before, carry=False)
     return survivors
 
 
-def _never_near(
-    world: World, robot: str, candidates: list[tuple[str, str]]
-) -> list[tuple[str, str]]:
+def _never_near(robot: RobotHandle, candidates: list[tuple[str, str]]) -> list[tuple[str, str]]:
     """The pairs among ``candidates`` never nearer than :data:`NEVER_GAP` in the samples
     (a pair found near once is asked no more)."""
-    model = world.robot(robot).description.model
-    movable = [j for j in world.joint_states(robot) if model.joints[j].mimic is None]
-    before = {j: v for j, v in world.joint_states(robot).items() if j in movable}
+    world = robot.world
+    model = robot.description.model
+    movable = [j for j in world.joint_states(robot.name) if model.joints[j].mimic is None]
+    before = {j: v for j, v in world.joint_states(robot.name).items() if j in movable}
     rng = np.random.default_rng(SEED + 1)
     far = list(candidates)
     try:
         for _ in range(NEVER_SAMPLES):
-            world.set_joint_states(robot, _sample(model, movable, rng), carry=False)
-            gaps = world.self_distances(robot, far, NEVER_GAP)
+            world.set_joint_states(robot.name, _sample(model, movable, rng), carry=False)
+            gaps = world.self_distances(robot.name, far, NEVER_GAP)
             far = [p for p, gap in zip(far, gaps.tolist(), strict=True) if gap >= NEVER_GAP]
     finally:
-        world.set_joint_states(robot, before, carry=False)
+        world.set_joint_states(robot.name, before, carry=False)
     return far
 
 
 def _touching_at_rest(
-    world: World, robot: str, candidates: list[tuple[str, str]]
+    robot: RobotHandle, candidates: list[tuple[str, str]]
 ) -> dict[tuple[str, str], float]:
     """The pairs among ``candidates`` touching with every arm and the neck parked, the
     grippers closed or open, the other joints at zero (within their limits), each with
     its deepest penetration [m] there (>= 0)."""
-    desc = world.robot(robot).description
+    world = robot.world
+    desc = robot.description
     model = desc.model
-    movable = [j for j in world.joint_states(robot) if model.joints[j].mimic is None]
-    before = {j: v for j, v in world.joint_states(robot).items() if j in movable}
+    movable = [j for j in world.joint_states(robot.name) if model.joints[j].mimic is None]
+    before = {j: v for j, v in world.joint_states(robot.name).items() if j in movable}
     rest = {j: _clamped(model, j, 0.0) for j in movable}
     for arm in desc.arms.values():
         rest.update({j: v for j, v in arm.parking.items() if j in rest})
@@ -239,13 +240,13 @@ def _touching_at_rest(
             values = dict(rest)
             for j in grippers:
                 values[j] = _clamped(model, j, getattr(model.joints[j], end) or 0.0)
-            world.set_joint_states(robot, values, carry=False)
-            touching = world.self_distances(robot, candidates, 0.0)
+            world.set_joint_states(robot.name, values, carry=False)
+            touching = world.self_distances(robot.name, candidates, 0.0)
             for pair, gap in zip(candidates, touching.tolist(), strict=True):
                 if gap <= 0.0:
                     found[pair] = max(found.get(pair, 0.0), -gap)
     finally:
-        world.set_joint_states(robot, before, carry=False)
+        world.set_joint_states(robot.name, before, carry=False)
     return {p: found[p] for p in candidates if p in found}
 
 

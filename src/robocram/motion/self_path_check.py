@@ -31,7 +31,7 @@ from robocram.motion.robot_geometry import RobotGeometry
 from robocram.motion.self_collision import active_joints
 from robocram.motion.self_collision_matrix import SelfCollisionMatrix
 from robocram.motion.travel_bound import TravelBound
-from robocram.world import World
+from robocram.world import RobotHandle, World
 
 REACH = 1.0  # [m] closest points are asked this far (a farther pair is clear by it)
 MIN_STEP = 0.002  # [m] of a pair's relative travel between two checks near contact
@@ -52,17 +52,18 @@ class SelfPathCheck:
     distances: SelfDistances  # lower bounds on the pairs' distances, from coal
 
     @classmethod
-    def of(cls, world: World, robot: str, joints: Sequence[str]) -> SelfPathCheck:
+    def of(cls, robot: RobotHandle, joints: Sequence[str]) -> SelfPathCheck:
         """The check of a motion of ``joints`` from where the robot is now."""
+        world = robot.world
         joints = tuple(joints)
-        pairs, levers, parts = world.derived(_kept_pairs).of(world, robot, joints)
-        model = world.robot(robot).description.model
-        now = world.joint_states(robot)
+        pairs, levers, parts = world.derived(_kept_pairs).of(world, robot.name, joints)
+        model = robot.description.model
+        now = world.joint_states(robot.name)
         standing = {j: v for j, v in now.items() if model.joints[j].mimic is None}
         geometry = model.derived(RobotGeometry.of)
         distances = SelfDistances(geometry, parts, joints, standing, SELF_MARGIN)
-        floors = _floors(world, robot, pairs, distances.bounds(np.array([now[j] for j in joints])))
-        return cls(world, robot, joints, pairs, levers, floors, distances)
+        floors = _floors(robot, pairs, distances.bounds(np.array([now[j] for j in joints])))
+        return cls(world, robot.name, joints, pairs, levers, floors, distances)
 
     def colliding(self, q: Sequence[float]) -> list[LinkPair]:
         """The pairs colliding at ``q``."""
@@ -165,17 +166,16 @@ class _Steps:
             return segment, min(s + float(share), 1.0)
 
 
-def _floors(
-    world: World, robot: str, pairs: tuple[LinkPair, ...], bounds: FloatArray
-) -> FloatArray:
+def _floors(robot: RobotHandle, pairs: tuple[LinkPair, ...], bounds: FloatArray) -> FloatArray:
     """Per pair: nearer than this [m] is a collision; a pair touching now may stay as deep
     (:data:`DEEPEN` more). PyBullet measures only the pairs coal's ``bounds`` (lower
     bounds on PyBullet's distances, as the robot stands) do not find apart: the others'
     floor is -DEEPEN, as PyBullet's positive distance would make it."""
+    world = robot.world
     floors = np.full(len(pairs), -DEEPEN)
     near = np.flatnonzero(~(bounds > 0.0)).tolist()
     if near:
-        measured = world.self_distances(robot, [pairs[k] for k in near], 0.0)
+        measured = world.self_distances(robot.name, [pairs[k] for k in near], 0.0)
         floors[near] = np.minimum(measured, 0.0) - DEEPEN
     return floors
 
@@ -210,9 +210,9 @@ def _moved_pairs(world: World, robot: str, joints: tuple[str, ...]) -> _MovedPai
     pair and joint the most a point of either link moves relative to the other per unit
     change of the joint (joints above both move neither relative to the other)."""
     model = world.robot(robot).description.model
-    matrix = SelfCollisionMatrix.of(world, robot)
+    matrix = SelfCollisionMatrix.of(RobotHandle.of(world, robot))
     active = sorted(active_joints(model, joints))
-    bound = TravelBound.of(world, robot, active, held=False)
+    bound = TravelBound.of(RobotHandle.of(world, robot), active, held=False)
     column = {j: i for i, j in enumerate(active)}
     fold = np.zeros((len(active), len(joints)))  # follower columns onto their masters
     for i, name in enumerate(joints):

@@ -39,7 +39,7 @@ from robocram.motion.self_path_check import SelfPathCheck
 from robocram.motion.time_parameterization import MAX_WAYPOINTS, time_parameterize
 from robocram.motion.travel_bound import TravelBound
 from robocram.tf import Pose
-from robocram.world import World
+from robocram.world import RobotHandle
 
 AT_TCP = Pose()  # a tool point at the arm's tool frame itself
 DEFAULT_SETTINGS = MotionSettings()
@@ -68,8 +68,7 @@ def densified(poses: Sequence[Pose], max_step: float = MAX_STEP) -> list[Pose]:
 
 
 def plan_tool_path(
-    world: World,
-    robot: str,
+    robot: RobotHandle,
     arm: str,
     path_in_base: Sequence[Pose],
     *,
@@ -86,33 +85,34 @@ def plan_tool_path(
     Raises:
         MotionInputError: the path is empty or has more steps than a trajectory holds.
     """
+    world = robot.world
     if not path_in_base:
         raise MotionInputError(
-            f"a tool path of {robot}'s {arm} arm needs at least one pose; got none"
+            f"a tool path of {robot.name}'s {arm} arm needs at least one pose; got none"
         )
-    desc = world.robot(robot).description
+    desc = robot.description
     joints = tuple(desc.arms[arm].joints)
-    current = world.joint_states(robot)
+    current = world.joint_states(robot.name)
     start = [current[j] for j in joints]
-    base = world.pose(robot)
-    tcp = base.inverse() * world.link_pose(robot, desc.arms[arm].tool_frame)
+    base = world.pose(robot.name)
+    tcp = base.inverse() * world.link_pose(robot.name, desc.arms[arm].tool_frame)
     steps = densified([tcp * point_in_tcp, *path_in_base])[1:]
     if len(steps) > MAX_WAYPOINTS:
         raise MotionInputError(
-            f"a tool path of {robot}'s {arm} arm has {len(steps)} steps of "
+            f"a tool path of {robot.name}'s {arm} arm has {len(steps)} steps of "
             f"{MAX_STEP} m; at most {MAX_WAYPOINTS}: give a shorter path"
         )
     point_inverse = point_in_tcp.inverse()
     targets = [pose * point_inverse for pose in steps]
-    judge = _judge(world, robot, joints, start, tuple(contacts))
-    bound = TravelBound.of(world, robot, joints)
+    judge = _judge(robot, joints, start, tuple(contacts))
+    bound = TravelBound.of(robot, joints)
     line = follow_poses(desc, arm, judge, current, targets, bound, random_seed=settings.seed)
-    path, fraction, stopped = _apart(world, robot, line.path, line.fraction, line.stopped_by)
+    path, fraction, stopped = _apart(robot, line.path, line.fraction, line.stopped_by)
     full = fraction >= 1.0
     radii = blend_radii(judge, bound, path.waypoints) if full else None
     limits = joint_limits(desc, joints)
     trajectory = time_parameterize(
-        robot, joints, path.waypoints, limits, kind=TOOL_PATH_KIND, period=settings.period,
+        robot.name, joints, path.waypoints, limits, kind=TOOL_PATH_KIND, period=settings.period,
         corner_radii=radii,
     )  # fmt: skip
     stored = replace(trajectory, allowed_contacts=(*trajectory.allowed_contacts, *contacts))
@@ -120,28 +120,27 @@ def plan_tool_path(
 
 
 def _judge(
-    world: World,
-    robot: str,
+    robot: RobotHandle,
     joints: tuple[str, ...],
     start: list[float],
     contacts: tuple[ContactAllowance, ...],
 ) -> BulletScene:
     """The world itself as the checker, the named contacts bounded, and the contacts the
     robot already has at the start (beyond those bounds) allowed to end."""
-    judge = BulletScene(world, robot, joints, contacts=contacts)
+    judge = BulletScene(robot, joints, contacts=contacts)
     touching = judge.colliding(start)
     if touching:
-        judge = BulletScene(world, robot, joints, allowed_pairs=touching, contacts=contacts)
+        judge = BulletScene(robot, joints, allowed_pairs=touching, contacts=contacts)
     return judge
 
 
 def _apart(
-    world: World, robot: str, path: JointPath, fraction: float, stopped: str
+    robot: RobotHandle, path: JointPath, fraction: float, stopped: str
 ) -> tuple[JointPath, float, str]:
     """The path cut where it would first run the robot into itself."""
     if len(path.waypoints) < 2:
         return path, fraction, stopped
-    blocked = SelfPathCheck.of(world, robot, path.joints).first_collision(path.waypoints)
+    blocked = SelfPathCheck.of(robot, path.joints).first_collision(path.waypoints)
     if blocked is None:
         return path, fraction, stopped
     where, pairs = blocked

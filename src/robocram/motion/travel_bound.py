@@ -22,7 +22,7 @@ from robocram.motion.errors import MotionError
 from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.mimic_family import mimic_family
 from robocram.robots import RobotModel
-from robocram.world import World
+from robocram.world import RobotHandle
 
 MAX_LINK_TRAVEL = 0.01  # [m] between two checked configurations
 MAX_JOINT_STEP = 0.02  # [rad | m] of any joint between two checked configurations
@@ -63,8 +63,7 @@ class TravelBound:
     @classmethod
     def of(
         cls,
-        world: World,
-        robot: str,
+        robot: RobotHandle,
         joints: Sequence[str],
         max_link_travel: float = MAX_LINK_TRAVEL,
         max_joint_step: float = MAX_JOINT_STEP,
@@ -72,13 +71,14 @@ class TravelBound:
     ) -> TravelBound:
         """The bound for ``joints`` of ``robot`` as it stands (held objects included
         unless ``held`` is False: the robot's own links alone)."""
+        world = robot.world
         if max_link_travel <= 0.0 or max_joint_step <= 0.0:
             raise MotionError(
                 f"check resolution must be positive, got {max_link_travel} m and "
                 f"{max_joint_step} rad"
             )
-        model = world.robot(robot).description.model
-        radius = link_radii(world, robot) if held else world.link_radii(robot)
+        model = robot.description.model
+        radius = link_radii(robot) if held else world.link_radii(robot.name)
         children = model.derived(_children)
         lever = []
         per_link: dict[str, FloatArray] = {}
@@ -86,7 +86,7 @@ class TravelBound:
         for i, name in enumerate(joints):
             joint = model.joints.get(name)
             if joint is None or not joint.movable:
-                raise MotionError(f"{name!r} is not a movable joint of {robot}")
+                raise MotionError(f"{name!r} is not a movable joint of {robot.name}")
             reach = _family_reaches(model, name, children, radius)
             mimicked = mimicked or len(mimic_family(model, name)) > 1
             for link, value in reach.items():
@@ -95,7 +95,7 @@ class TravelBound:
                     row = per_link[link] = np.zeros(len(joints))
                 row[i] = value
             lever.append(max(reach.values(), default=0.0))
-        carriers = dict(world.attachments(robot)) if held else {}
+        carriers = dict(world.attachments(robot.name)) if held else {}
         return cls(
             tuple(joints), np.array(lever), max_link_travel, max_joint_step, per_link, carriers,
             mimicked,
@@ -146,11 +146,12 @@ def _reaches(
     return found
 
 
-def link_radii(world: World, robot: str) -> dict[str, float]:
+def link_radii(robot: RobotHandle) -> dict[str, float]:
     """Per link: a radius about its frame holding its shapes (and what it holds now)."""
-    radii = world.link_radii(robot)
-    for obj, link in world.attachments(robot).items():
-        origin = np.array(world.link_pose(robot, link).position)
+    world = robot.world
+    radii = world.link_radii(robot.name)
+    for obj, link in world.attachments(robot.name).items():
+        origin = np.array(world.link_pose(robot.name, link).position)
         radii[link] = max(radii.get(link, 0.0), _corner_distance(origin, world.aabb(obj)))
     return radii
 

@@ -3,8 +3,9 @@
 ``with simulated_robot(world, "pr2"):`` starts the projected robot's process modules
 (base, torso, head, perception, grippers, arms; flight and range sensing for flying
 robots) and PERFORM sends motions to them. ``with recorded_robot("pr2", objects=...):``
-runs the same plans without physics, only logging commands. ``prospect(world, "pr2",
-plan)`` projects a plan and puts the world back: what it would do, to choose before doing.
+runs the same plans without physics, only logging commands. ``prospect(robot, plan)``
+(``robot = RobotHandle.of(world, "pr2")``) projects a plan and puts the world back: what
+it would do, to choose before doing.
 """
 
 from robocram.projection.errors import (

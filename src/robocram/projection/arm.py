@@ -23,7 +23,14 @@ from robocram.execution.failures import (
     ManipulationPathBlocked,
     NavigationLowLevelFailure,
 )
-from robocram.kinematics import BaseMotion, IKResult, PlanarBase, base_in_ik, solve_ik
+from robocram.kinematics import (
+    BaseMotion,
+    IKOptions,
+    IKResult,
+    PlanarBase,
+    base_in_ik,
+    solve_ik,
+)
 from robocram.motion import ArmMotion, plan_arm_motion, plan_tool_line
 from robocram.motion.hand_contact import HandContact
 from robocram.motion.joint_goal import finite_goal
@@ -86,12 +93,14 @@ def _solve(
                 arm,
                 target_in_base,
                 seed=seed,
-                use_torso=use_torso,
+                options=IKOptions(
+                    use_torso=use_torso,
+                    base=base,
+                    max_restarts=max_restarts,
+                    random_seed=random_seed,
+                ),
                 collision_check=check,
-                random_seed=random_seed,
                 stop_check=checkpoint,  # a stopped task ends the search within one descent
-                base=base,
-                max_restarts=max_restarts,
             )
             if result.success:
                 break
@@ -179,7 +188,7 @@ def _arm_then_base(
     try:
         settings = replace(robot.motion, check=mode.replace("-", "_") != "allow_all")
         motion = plan_arm_motion(
-            robot.world, robot.name, dict(result.joint_positions),
+            robot.handle, dict(result.joint_positions),
             settings=settings, hand=hand,
         )  # fmt: skip
     except ManipulationPathBlocked:
@@ -211,15 +220,11 @@ def _arm_motion(
     goal = dict(result.joint_positions)
     what = f"{robot.name}'s {arm} arm"
     if mode == "allow_hand" and robot.description.torso_joint not in goal:
-        line = plan_tool_line(
-            robot.world, robot.name, arm, target_in_base, settings=settings, hand=hand
-        )
+        line = plan_tool_line(robot.handle, arm, target_in_base, settings=settings, hand=hand)
         if line.fraction >= 1.0:
             return line
     try:
-        return plan_arm_motion(
-            robot.world, robot.name, goal, settings=settings, what=what, hand=hand
-        )
+        return plan_arm_motion(robot.handle, goal, settings=settings, what=what, hand=hand)
     except ManipulationPathBlocked as failure:
         failure.arm = arm
         failure.target = target_in_base
@@ -244,7 +249,7 @@ def move_joints(robot: ProjectedRobot, arm: str, configuration: object) -> dict[
     values = {j: finite_goal(j, v) for j, v in values.items()}  # inf is no limit to move to
     inside = {j: limits[j].clamp(v) for j, v in values.items()}  # moved to, then failed
     what = f"{robot.name}'s {arm} arm"
-    motion = plan_arm_motion(robot.world, robot.name, inside, settings=robot.motion, what=what)
+    motion = plan_arm_motion(robot.handle, inside, settings=robot.motion, what=what)
     follow(robot, motion.trajectory)
     now = robot.world.joint_states(robot.name)
     reached = {j: now[j] for j in values}

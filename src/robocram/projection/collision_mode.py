@@ -113,7 +113,7 @@ def arm_pairs(robot: ProjectedRobot, arm: str) -> list[tuple[str, str]]:
     """The pairs of the robot's self-collision matrix with a link of ``arm``: against the
     robot's other links and within the arm itself (a forearm against its own fingers),
     as every motion checks them. A check counts those apart where the robot starts."""
-    matrix = SelfCollisionMatrix.of(robot.world, robot.name)
+    matrix = SelfCollisionMatrix.of(robot.handle)
     first = robot.arm(arm).joints[0]
     return robot.description.model.derived(_ArmPairs).of(first, matrix.checked)
 

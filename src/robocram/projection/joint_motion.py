@@ -42,7 +42,7 @@ def move_along_checked(
     """
     settings = robot.motion if plan else replace(robot.motion, plan=False)
     motion = plan_arm_motion(
-        robot.world, robot.name, goal, settings=settings, what=what, kind=kind,
+        robot.handle, goal, settings=settings, what=what, kind=kind,
         allowed_pairs=allowed_pairs, hand=hand,
     )  # fmt: skip
     follow(robot, motion.trajectory)

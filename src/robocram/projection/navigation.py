@@ -75,7 +75,7 @@ def drive(
         )
     try:
         path = plan_base_path(
-            robot.world, robot.name, goal, seed=robot.motion.seed, allowed_links=allowed_links
+            robot.handle, goal, seed=robot.motion.seed, allowed_links=allowed_links
         )
     except NavigationPoseUnreachable as failure:
         failure.target = target
@@ -97,7 +97,7 @@ def _hand_kept(
     Raises:
         NavigationPathBlocked: names the hand link, what it goes into, how deep and where.
     """
-    breach = hand_breach(robot.world, robot.name, trajectory, hand, robot.carried)
+    breach = hand_breach(robot.handle, trajectory, hand, robot.carried)
     if breach is None:
         return
     allowed = (

@@ -25,7 +25,7 @@ from robocram.execution.failures import (
     PtuGoalUnreachable,
     PtuPathBlocked,
 )
-from robocram.kinematics import forward_kinematics, solve_ik
+from robocram.kinematics import IKOptions, forward_kinematics, solve_ik
 from robocram.kinematics.robot_kinematics import robot_kinematics
 from robocram.projection.errors import ProjectionError
 from robocram.projection.joint_motion import move_along_checked
@@ -185,7 +185,7 @@ def _aim_neck_arm(robot: ProjectedRobot, neck: str, target_in_map: Vector3) -> d
         view = Pose(place, looking_orientation(place, target_in_map))
         target_in_base = robot.base_pose().inverse() * view
         with robot.ik_lock:
-            result = solve_ik(desc, neck, target_in_base, seed=seed, frame=frame)
+            result = solve_ik(desc, neck, target_in_base, seed=seed, options=IKOptions(frame=frame))
         if not result.success:
             errors.append(result.position_error)
             continue

@@ -15,7 +15,7 @@ from robocram.motion import CarriedJoint, MotionSettings
 from robocram.projection.errors import ProjectionError, unknown_name
 from robocram.robots import ArmDescription, LoadedDescription
 from robocram.tf import Pose, PoseLike, PoseStamped
-from robocram.world import RobotObject, World
+from robocram.world import RobotHandle, RobotObject, World
 
 MAP_FRAME = "map"
 
@@ -36,6 +36,11 @@ class ProjectedRobot:
     """The grasp roll [rad] that last held each ``(part, handle)`` all the way, and
     ``("", arm)`` any handle with that arm: a drawer opened with one roll is closed with
     it first (:mod:`~robocram.projection.articulation`)."""
+    handle: RobotHandle = field(init=False, compare=False, repr=False)
+    """The robot of the world, looked up once: what the motion layer takes."""
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "handle", RobotHandle.of(self.world, self.name))
 
     @classmethod
     def of(
@@ -62,8 +67,8 @@ class ProjectedRobot:
 
     @property
     def body(self) -> RobotObject:
-        """The robot's handle in the world."""
-        return self.world.robot(self.name)
+        """The robot's body in the world."""
+        return self.handle.body
 
     @property
     def description(self) -> LoadedDescription:

@@ -2,7 +2,7 @@
 
 CRAM projects a plan to choose between plans and parameters before the robot commits to
 one: which grasp, which placing location, which of two ways to clear a table. Here
-``prospect(world, robot, plan)`` runs ``plan`` on the projected robot exactly as
+``prospect(robot, plan)`` runs ``plan`` on the projected robot exactly as
 ``simulated_robot`` would, then puts the world back (objects, poses, velocities, joints,
 attachments; :meth:`~robocram.world.World.stored_state`) and returns a :class:`Prospect`:
 the outcome, the task tree, the trajectories that would be executed and where every
@@ -28,7 +28,7 @@ from robocram.execution.failures import PlanFailure
 from robocram.motion import JointTrajectory, MotionSettings, trajectory_listener
 from robocram.projection.simulated_robot import simulated_robot
 from robocram.tf import Pose
-from robocram.world import World
+from robocram.world import RobotHandle
 
 T = TypeVar("T")
 
@@ -56,26 +56,26 @@ class Prospect(Generic[T]):
 
 
 def prospect(
-    world: World,
-    robot: str,
+    robot: RobotHandle,
     plan: Callable[[], T],
     *,
     name: str = "prospection",
     locations: CostmapLocations | None = None,
     motion: MotionSettings | None = None,
 ) -> Prospect[T]:
-    """Project ``plan`` on ``robot`` in ``world``; the world is as before when it returns.
+    """Project ``plan`` on ``robot`` in its world; the world is as before when it returns.
 
     A plan failure is the prospect's outcome (:attr:`Prospect.failure`); any other error
     is a fault of the plan or its set-up and is raised (the world put back first).
     """
+    world = robot.world
     found: list[JointTrajectory] = []
 
     def projected() -> Prospect[T]:
         with world.stored_state(), trajectory_listener(found.append):
             result: T | None = None
             failure: PlanFailure | None = None
-            with simulated_robot(world, robot, name, locations, motion) as run:
+            with simulated_robot(world, robot.name, name, locations, motion) as run:
                 try:
                     result = plan()
                 except PlanFailure as caught:

@@ -103,7 +103,7 @@ def plan_from_start(
     move_tcp(robot, grip.arm, in_map[0] * grip.point_in_tcp.inverse(), "avoid_all")
     base = robot.base_pose().inverse()
     return plan_tool_path(
-        robot.world, robot.name, grip.arm, [base * p for p in in_map[1:]] or [base * in_map[0]],
+        robot.handle, grip.arm, [base * p for p in in_map[1:]] or [base * in_map[0]],
         point_in_tcp=grip.point_in_tcp, contacts=contacts, settings=robot.motion,
     )  # fmt: skip
 

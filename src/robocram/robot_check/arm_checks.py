@@ -72,7 +72,7 @@ def _self_contacts(robot: ProjectedRobot, arm: ArmDescription) -> list[str]:
     """The self-collision matrix's pairs with a link of ``arm`` that touch now."""
     world = robot.world
     mine = {*arm.links, *arm.hand_links, *arm.gripper_links}
-    pairs = [p for p in SelfCollisionMatrix.of(world, robot.name).checked if mine & set(p)]
+    pairs = [p for p in SelfCollisionMatrix.of(robot.handle).checked if mine & set(p)]
     gaps = world.self_distances(robot.name, pairs, 0.0)
     return [
         f"{a} in {b} ({-gap * 1000:.1f} mm)"

@@ -16,7 +16,7 @@ from typing import Any
 
 from robocram.designators import SIDES
 from robocram.execution.failures import ManipulationGoalNotReached, ManipulationPathBlocked
-from robocram.kinematics import IKResult, solve_ik
+from robocram.kinematics import IKOptions, IKResult, solve_ik
 from robocram.motion.reach_failure import unreachable
 from robocram.motion.tool_goal import IK_RANDOM_SEED, ensure_reached, joint_values
 from robocram.ros.errors import RosCommandError
@@ -63,9 +63,8 @@ class ArmPM(RosProcessModule):
                 arm,
                 target_in_base,
                 seed=seed,
-                use_torso=use_torso,
+                options=IKOptions(use_torso=use_torso, random_seed=IK_RANDOM_SEED),
                 collision_check=check,
-                random_seed=IK_RANDOM_SEED,
             )
             if result.success:
                 break

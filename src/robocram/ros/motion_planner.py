@@ -36,7 +36,7 @@ from robocram.motion.joint_goal import finite_goal, motion_goal
 from robocram.robots import LoadedDescription
 from robocram.ros.errors import RosCommandError, RosConfigError
 from robocram.tf import Pose
-from robocram.world import World
+from robocram.world import RobotHandle, World
 
 
 @dataclass(frozen=True)
@@ -110,6 +110,7 @@ class MotionPlanner:
                     f"the world given for {desc.name} has robots {names}, not {desc.name!r}; "
                     f"pass a world with the robot in it (e.g. tabletop_scene({desc.name!r}).world)"
                 )
+        self.robot = None if world is None else RobotHandle.of(world, desc.name)
 
     def joint_motion(
         self,
@@ -134,7 +135,7 @@ class MotionPlanner:
             ManipulationPathBlocked: the world blocks every way there (nothing was sent).
         """
         joints = tuple(j for j in goal if self.desc.model.joints[j].mimic is None)
-        if self.world is None:
+        if self.robot is None:
             limits = joint_limits(self.desc, joints)
             # a real robot may report a joint a hair beyond its limit; a trajectory cannot
             start = [
@@ -148,8 +149,7 @@ class MotionPlanner:
         settings = settings if plan else replace(settings, plan=False)
         allowed = allowed_links(self.desc.arms[arm], mode) if arm is not None else set()
         motion = plan_arm_motion(
-            self.world,
-            self.desc.name,
+            self.robot,
             {j: float(goal[j]) for j in joints},
             allowed_links=allowed,
             settings=settings,
@@ -161,12 +161,11 @@ class MotionPlanner:
     def tool_line(self, arm: str, target_in_base: Pose, mode: str) -> JointTrajectory | None:
         """The arm's straight tool line to ``target_in_base`` if the world lets it all be
         followed (``allow_hand`` motions: approach, lift, retreat), else None."""
-        if self.world is None or _mode(mode) != "allow_hand":
+        if self.robot is None or _mode(mode) != "allow_hand":
             return None
         allowed: Collection[str] = allowed_links(self.desc.arms[arm], "allow_hand")
         line = plan_tool_line(
-            self.world,
-            self.desc.name,
+            self.robot,
             arm,
             target_in_base,
             allowed_links=allowed,
@@ -181,16 +180,16 @@ class MotionPlanner:
             NavigationPoseUnreachable: the robot would collide at the goal.
             NavigationPathBlocked: no path leads there in the world.
         """
-        if self.world is None:
+        if self.robot is None:
             return None
-        return plan_base_path(self.world, self.desc.name, goal_in_map, seed=self.settings.seed)
+        return plan_base_path(self.robot, goal_in_map, seed=self.settings.seed)
 
     def ik_check(self, arm: str, joints: tuple[str, ...], mode: str) -> IKCollisionCheck | None:
         """IK's collision check for ``arm`` moving ``joints`` in ``mode`` (None without a
         world, or for ``allow_all``); the world must show the robot's state now."""
-        if self.world is None:
+        if self.robot is None:
             return None
-        return ik_collision_check(self.world, self.desc.name, self.desc.arms[arm], joints, mode)
+        return ik_collision_check(self.robot, self.desc.arms[arm], joints, mode)
 
 
 def _mode(mode: str) -> str:

@@ -27,7 +27,7 @@ from robocram.execution.failures import (
     TorsoGoalNotReached,
 )
 from robocram.grasping import approach_axis
-from robocram.kinematics import solve_ik
+from robocram.kinematics import IKOptions, solve_ik
 from robocram.motion import JointTrajectory, joint_limits, time_parameterize
 from robocram.motion.part_path import BACK_OFF, PRE_GRASP, ROLLS, grasp_in_handle, part_path
 from robocram.motion.tool_goal import IK_RANDOM_SEED
@@ -41,6 +41,8 @@ from robocram.world import World
 TORSO_MOVE = 1e-4  # [m] smaller torso changes are not sent
 PART_TOLERANCE = 0.01  # [m | rad] the part's joint ends this close to the goal
 MAX_JUMP = 0.5  # [rad | m] an IK step moving a joint further is a flip, not a follow
+_RANDOM_SEED = IKOptions(random_seed=IK_RANDOM_SEED)  # following the handle, arm alone
+_TORSO = IKOptions(use_torso=True)  # a torso height from which the arm reaches
 REACHING = (ManipulationPoseUnreachable, ManipulationPathBlocked, ManipulationGoalNotReached)
 
 
@@ -185,7 +187,7 @@ def _waypoints(
             world.set_joint_states(part, {joint: value})
             target = to_base * world.link_pose(part, handle) * grasp
             result = solve_ik(
-                desc, arm, target, seed=seed, collision_check=check, random_seed=IK_RANDOM_SEED
+                desc, arm, target, seed=seed, options=_RANDOM_SEED, collision_check=check
             )
             if not result.success:
                 return None
@@ -225,7 +227,7 @@ def _torso_for_path(
             world.set_joint_states(part, {joint: end})
             target = to_base * world.link_pose(part, handle) * grasp
             world.set_joint_states(part, {joint: start})
-            free = solve_ik(client.desc, arm, target, seed=current, use_torso=True)
+            free = solve_ik(client.desc, arm, target, seed=current, options=_TORSO)
             if free.success:
                 heights.append(free.joint_positions[torso])
     for height in heights:

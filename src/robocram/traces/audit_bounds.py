@@ -9,7 +9,7 @@ of its difference quotient. Density: checked configurations are at most ``joint_
 more than ``point_step`` (5 mm) between them. Jumps: a joint or the base may change by
 ``teleport`` (1e-4 rad or m) without a trajectory.
 
-``skipped_self_pairs(world, robot)`` says which pairs of a robot's own links are not
+``skipped_self_pairs(robot)`` says which pairs of a robot's own links are not
 judged: by default the adjacent ones (:func:`~robocram.traces.link_adjacency.adjacent_links`
 of its model) and those the robot's self-collision matrix skips (:func:`matrix_pairs_of`);
 ``adjacent_pairs_of`` judges every other pair.
@@ -23,24 +23,24 @@ from dataclasses import dataclass, field
 from robocram.motion.self_collision_matrix import SelfCollisionMatrix
 from robocram.traces.errors import TraceArgumentError
 from robocram.traces.link_adjacency import LinkPair, adjacent_links
-from robocram.world import World
+from robocram.world import RobotHandle
 
-SkippedSelfPairs = Callable[[World, str], Collection[LinkPair]]  # (world, robot) -> pairs
+SkippedSelfPairs = Callable[[RobotHandle], Collection[LinkPair]]  # robot -> pairs
 
 
-def adjacent_pairs_of(world: World, robot: str) -> frozenset[LinkPair]:
+def adjacent_pairs_of(robot: RobotHandle) -> frozenset[LinkPair]:
     """The adjacent pairs of ``robot``'s links, as the audit works them out itself."""
-    return adjacent_links(world.robot(robot).description.model)
+    return adjacent_links(robot.description.model)
 
 
-def matrix_pairs_of(world: World, robot: str) -> frozenset[LinkPair]:
+def matrix_pairs_of(robot: RobotHandle) -> frozenset[LinkPair]:
     """The pairs the audit skips by default: its own adjacent ones and those the robot's
     :class:`~robocram.motion.self_collision_matrix.SelfCollisionMatrix` skips (convex
     hulls that always overlap, or at rest, or bridge a flexed joint; pairs the
     description allows). Only which pairs are read from it: every distance is the
     audit's own."""
-    matrix = SelfCollisionMatrix.of(world, robot)
-    return adjacent_pairs_of(world, robot) | frozenset(matrix.skipped)
+    matrix = SelfCollisionMatrix.of(robot)
+    return adjacent_pairs_of(robot) | frozenset(matrix.skipped)
 
 
 @dataclass(frozen=True)

@@ -26,7 +26,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from robocram.robots import RobotModel
-from robocram.world import RawDistances, World
+from robocram.world import RawDistances, RobotHandle
 
 FloatArray = NDArray[np.float64]
 
@@ -38,9 +38,9 @@ class Levers:
     per_joint: Mapping[str, float]
 
     @classmethod
-    def of(cls, world: World, robot: str, model: RobotModel, held: Mapping[str, str]) -> Levers:
+    def of(cls, robot: RobotHandle, model: RobotModel, held: Mapping[str, str]) -> Levers:
         """The levers of ``robot`` as it stands, holding ``held`` (object -> link)."""
-        radius = _radii(world, robot, held)
+        radius = _radii(robot, held)
         reach = _reach_below(model, radius)
         levers: dict[str, float] = {}
         for joint in model.movable_joints():
@@ -79,16 +79,17 @@ def dense_configurations(
             )
 
 
-def _radii(world: World, robot: str, held: Mapping[str, str]) -> dict[str, float]:
+def _radii(robot: RobotHandle, held: Mapping[str, str]) -> dict[str, float]:
     """Per link: how far its shapes (and what it holds) reach from its frame [m]."""
+    world = robot.world
     raw = RawDistances(world)
     radius: dict[str, float] = {}
-    links = raw.collision_links(robot)
-    for link, box in zip(links, raw.link_bounds(robot, links), strict=True):
-        radius[link] = _far_corner(world.link_pose(robot, link).position, box)
+    links = raw.collision_links(robot.name)
+    for link, box in zip(links, raw.link_bounds(robot.name, links), strict=True):
+        radius[link] = _far_corner(world.link_pose(robot.name, link).position, box)
     for obj, link in held.items():
         parts = raw.collision_links(obj)
-        origin = world.link_pose(robot, link).position
+        origin = world.link_pose(robot.name, link).position
         for box in raw.link_bounds(obj, parts):
             radius[link] = max(radius.get(link, 0.0), _far_corner(origin, box))
     return radius

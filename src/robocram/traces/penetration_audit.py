@@ -28,7 +28,7 @@ from robocram.robots import LoadedDescription
 from robocram.traces.audit_bounds import AuditBounds
 from robocram.traces.audit_findings import FindingKind
 from robocram.traces.link_adjacency import LinkPair
-from robocram.world import RawDistances, World
+from robocram.world import RawDistances, RobotHandle
 
 FloatArray = NDArray[np.float64]
 # [m] how far apart pairs are asked for: asked for exactly 0, Bullet sometimes reports no
@@ -65,9 +65,7 @@ class PenetrationProbe:
 
     def __init__(
         self,
-        world: World,
-        robot: str,
-        description: LoadedDescription,
+        robot: RobotHandle,
         held: dict[str, str],  # held object -> the robot link it is attached to
         allowances: Sequence[ContactAllowance],
         bounds: AuditBounds,
@@ -78,20 +76,24 @@ class PenetrationProbe:
         ``groups``: per part of :func:`robot_side_parts`, its moving group
         (:func:`~robocram.traces.relative_motion.moving_groups`; ``""`` does not move);
         None: every part moves and every pair is judged."""
+        world = robot.world
         self.raw = RawDistances(world)
         self.bounds = bounds
         self.allowances = tuple(allowances)
-        self.robot = robot
-        self.parts = robot_side_parts(world, robot, held)
+        self.robot = robot.name
+        self.parts = robot_side_parts(robot, held)
         labels = np.array(groups if groups is not None else range(len(self.parts)), dtype=object)
         self._moving = np.flatnonzero(labels != "") if groups is not None else None
         floors = {o.name for o in world.objects(type="floor")}
-        others = [o.name for o in world.objects() if o.name != robot and o.name not in held]
+        others = [o.name for o in world.objects() if o.name != robot.name and o.name not in held]
         self.others = [part for o in others for part in _parts_of(self.raw, o)]
         self._other_boxes = self._boxes(self.others)
-        self._hand_of = _hands(description, held)
+        self._hand_of = _hands(robot.description, held)
         self._world_mask = np.array(
-            [[not (p.body == robot and o.body in floors) for o in self.others] for p in self.parts],
+            [
+                [not (p.body == robot.name and o.body in floors) for o in self.others]
+                for p in self.parts
+            ],
             dtype=bool,
         ).reshape(len(self.parts), len(self.others))
         pairs = self._judged_pairs(skipped)
@@ -204,10 +206,11 @@ class PenetrationProbe:
         return max(found) if found else None
 
 
-def robot_side_parts(world: World, robot: str, held: Iterable[str]) -> list[Part]:
+def robot_side_parts(robot: RobotHandle, held: Iterable[str]) -> list[Part]:
     """The robot's links with collision shapes, then those of each held object."""
+    world = robot.world
     raw = RawDistances(world)
-    parts = [Part(robot, link) for link in raw.collision_links(robot)]
+    parts = [Part(robot.name, link) for link in raw.collision_links(robot.name)]
     return parts + [part for obj in held for part in _parts_of(raw, obj)]
 
 

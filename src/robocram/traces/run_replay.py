@@ -22,7 +22,7 @@ from robocram.traces.queries import require_run, world_state_times
 from robocram.traces.replay_clock import ReplayClock
 from robocram.traces.trajectory_record import StoredTrajectory, run_trajectories
 from robocram.traces.world_record import StoredWorldState, load_world_state
-from robocram.world import World
+from robocram.world import RobotHandle, World
 
 SAMPLE_PERIOD = 0.05  # [s] of motion time between two frames of a trajectory
 
@@ -86,10 +86,10 @@ def _samples(
     """Frames along ``trajectory``; wall times spread over (``after``, its report]."""
     if not trajectory.points:  # stopped before its first point: nothing moved
         return
-    robot = robot_in(world, trajectory.robot)
+    robot = RobotHandle.of(world, robot_in(world, trajectory.robot))
     span = trajectory.time - after
     for t, positions in trajectory.trajectory().sampled(period):
-        set_robot_joints(world, robot, positions)
+        set_robot_joints(robot, positions)
         share = t / trajectory.duration if trajectory.duration > 0.0 else 1.0
         wall = after + span * share
         time = run_start + trajectory.start + t
@@ -111,15 +111,16 @@ def robot_in(world: World, name: str) -> str:
     )
 
 
-def set_robot_joints(world: World, robot: str, positions: dict[str, float]) -> None:
+def set_robot_joints(robot: RobotHandle, positions: dict[str, float]) -> None:
     """Set ``robot``'s joints; the base joints ``x``, ``y``, ``yaw`` (and a flight's ``z``,
     ``roll``, ``pitch``) move its pose in map."""
+    world = robot.world
     base = {name: positions[name] for name in BODY_JOINTS if name in positions}
     joints = {name: value for name, value in positions.items() if name not in base}
     if base:
-        world.set_pose(robot, _moved_base(world.pose(robot), base))
+        world.set_pose(robot.name, _moved_base(world.pose(robot.name), base))
     if joints:
-        world.set_joint_states(robot, joints)
+        world.set_joint_states(robot.name, joints)
 
 
 def _moved_base(pose: Pose, base: dict[str, float]) -> Pose:

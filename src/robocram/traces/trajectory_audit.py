@@ -42,7 +42,7 @@ from robocram.traces.run_replay import robot_in, set_robot_joints
 from robocram.traces.teleport_audit import TeleportWatch
 from robocram.traces.trajectory_record import StoredTrajectory, run_trajectories
 from robocram.traces.world_record import build_scene, load_world_state
-from robocram.world import RawDistances, RobotObject, World
+from robocram.world import RawDistances, RobotHandle, RobotObject, World
 
 RESTING = 0.005  # [m] a body this near a link a trajectory carries rides with it
 
@@ -163,7 +163,7 @@ class _RunAudit:
         self.findings: list[AuditFinding] = []
         self.judged: set[str] = set()  # robots whose every pair was judged once
         self.skipped = {  # per robot: the pairs of its own links not judged
-            r.name: frozenset(self.bounds.skipped_self_pairs(self.world, r.name))
+            r.name: frozenset(self.bounds.skipped_self_pairs(RobotHandle.of(self.world, r)))
             for r in self.world.robots()
         }
         self.configurations = 0
@@ -182,14 +182,15 @@ class _RunAudit:
             jumps = list(watch.state(state.joints.get(robot, {}), state.poses[robot], place))
             self.findings += jumps
             if jumps or robot not in self.judged:
-                self._sweep_configurations(robot, watch.jumped, place, [(0.0, None)])
+                handle = RobotHandle.of(self.world, robot)  # after the state: bodies may be new
+                self._sweep_configurations(handle, watch.jumped, place, [(0.0, None)])
 
     def trajectory(self, trajectory: StoredTrajectory) -> None:
         """Limits, the jump to its start, and a dense sweep of its configurations."""
         if not trajectory.points:
             return
-        robot = robot_in(self.world, trajectory.robot)
-        description = self.world.robot(robot).description
+        handle = RobotHandle.of(self.world, robot_in(self.world, trajectory.robot))
+        robot, description = handle.name, handle.description
         place = FindingPlace(self.run, trajectory.index, trajectory.task_path, trajectory.start)
         try:
             limits = joint_limits(description, trajectory.joint_names)
@@ -204,7 +205,7 @@ class _RunAudit:
         times = np.array([p.time_from_start for p in trajectory.points])
         positions = np.array([p.positions for p in trajectory.points], dtype=float)
         held = self._held(robot)
-        levers = Levers.of(self.world, robot, description.model, held)
+        levers = Levers.of(handle, description.model, held)
         samples = (
             (t, dict(zip(trajectory.joint_names, q.tolist(), strict=True)))
             for t, q in dense_configurations(
@@ -214,7 +215,7 @@ class _RunAudit:
         )  # fmt: skip
         with riding(self.world, trajectory.carried):
             self._sweep_configurations(
-                robot, trajectory.joint_names, place, samples, trajectory.allowed_contacts,
+                handle, trajectory.joint_names, place, samples, trajectory.allowed_contacts,
                 trajectory.carried, trajectory.duration,
             )  # fmt: skip
 
@@ -223,7 +224,7 @@ class _RunAudit:
 
     def _sweep_configurations(
         self,
-        robot: str,
+        handle: RobotHandle,
         moved: Collection[str],
         place: FindingPlace,
         samples: Iterable[tuple[float, dict[str, float] | None]],
@@ -239,22 +240,21 @@ class _RunAudit:
         along: where the link holding the part is along its line, or at each sample's
         share of ``duration`` [s].
         """
-        description = self.world.robot(robot).description
+        robot, description = handle.name, handle.description
         held = self._held(robot)
         groups = None
         if robot in self.judged:
             by_link = moving_groups(description.model, moved)
-            parts = robot_side_parts(self.world, robot, held)
+            parts = robot_side_parts(handle, held)
             groups = [by_link.get(held.get(p.body, p.link), "") for p in parts]
         self.judged.add(robot)
         probe = PenetrationProbe(
-            self.world, robot, description, held, allowances, self.bounds, self.skipped[robot],
-            groups,
+            handle, held, allowances, self.bounds, self.skipped[robot], groups
         )  # fmt: skip
         bodies = {c.obj for c in carried}
         for k, (t, positions) in enumerate(samples):
             if positions is not None:
-                set_robot_joints(self.world, robot, positions)
+                set_robot_joints(handle, positions)
             if carried:
                 share = t / duration if duration > 0.0 else 1.0
                 for joint in carried:

@@ -36,7 +36,7 @@ from robocram.viewer.player import Player
 from robocram.viewer.task_panel import TaskPanel
 from robocram.viewer.timeline import REPLAY_PERIOD, Moment, Timeline
 from robocram.viewer.world_view import WorldView
-from robocram.world import World
+from robocram.world import RobotHandle, World
 
 DEFAULT_HOST = "127.0.0.1"
 DEFAULT_PORT = 8080
@@ -128,7 +128,7 @@ class Viewer:
         where = f"**state {self.shown}**, then moving ({trajectory.kind})"
         for t, positions in trajectory.sampled(REPLAY_PERIOD):
             with self._lock:
-                set_robot_joints(self.display, robot, positions)
+                set_robot_joints(RobotHandle.of(self.display, robot), positions)
                 self.view.show(self.display)
             self.caption.content = f"{where}: {t:.1f} of {trajectory.duration:.1f} s"
             time.sleep(REPLAY_PERIOD / speed)

@@ -27,6 +27,7 @@ from robocram.world.obstacle_boxes import ObstacleBoxes
 from robocram.world.planning_area import AREA_MARGIN, PlanningArea
 from robocram.world.raw_distances import LinkGap, RawDistances
 from robocram.world.ray_hit import RayHit
+from robocram.world.robot_handle import RobotHandle
 from robocram.world.visibility import Visibility
 from robocram.world.world import World
 from robocram.world.world_object import RobotObject, WorldObject
@@ -51,6 +52,7 @@ __all__ = [
     "PlanningArea",
     "RawDistances",
     "RayHit",
+    "RobotHandle",
     "RobotObject",
     "ShapeSpec",
     "TooManyLinksError",
