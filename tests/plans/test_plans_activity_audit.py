@@ -4,10 +4,8 @@ A spoon is fetched from the cutlery drawer (the other spoon and the knife ride o
 with it), set at the seat, and cleared back into the drawer, which is opened and closed
 twice. The audit replays every stored trajectory densely on raw PyBullet, the drawer moved
 with the hand and what rests in it moved with the drawer, and finds nothing. The whole
-breakfast's audit (``python benchmarks/audit_bench.py breakfast``) is not clean yet: a cup
-put on the table rests 1.3 mm into it (PyBullet's resting contact; the audit's bound is
-1 mm), and the fridge door's first closing steps put the fingertips 12 mm into the door
-(each step is planned against the door where the step ends).
+breakfast's audit is not clean yet: one drive with the fingers round the fridge door's
+handle (docs/activities.md, known limits; tests/traces/test_traces_door_audit.py).
 """
 
 from __future__ import annotations

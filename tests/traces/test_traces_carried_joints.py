@@ -58,3 +58,23 @@ def test_a_carried_joint_is_finite_and_moves_in_proportion() -> None:
     assert DRAWER.at(0.5) == pytest.approx(0.125) and DRAWER.at(2.0) == DRAWER.end
     with pytest.raises(ValueError, match="finite"):
         CarriedJoint("kitchen", "j", 0.0, float("nan"))
+
+
+ALONG = CarriedJoint(
+    "kitchen", "fridge_door_joint", 1.2, 1.0, "l_gripper_tool_frame",
+    ((1.0, 0.0, 1.0), (1.0, 0.2, 1.0)),
+)  # fmt: skip
+
+
+def test_a_joint_moved_along_a_line_goes_where_the_holding_link_is(tmp_path: Path) -> None:
+    assert ALONG.share((1.0, 0.05, 1.0)) == pytest.approx(0.25)
+    assert ALONG.share((1.3, 0.05, 0.7)) == pytest.approx(0.25)  # off the line: its foot
+    assert ALONG.share((1.0, -0.3, 1.0)) == 0.0 and ALONG.share((1.0, 0.9, 1.0)) == 1.0
+    assert ALONG.at(ALONG.share((1.0, 0.1, 1.0))) == pytest.approx(1.1)
+    db_path = tmp_path / "runs.db"
+    moved = replace(still("pr2", ["torso_lift_joint"], [0.2]), carried=(ALONG, DRAWER))
+    with trace_to(db_path), top_level(name="along"):
+        report_executed(moved)
+    with TraceDatabase(db_path, create=False) as db:
+        (stored,) = run_trajectories(db, run_ids(db)[0])
+    assert stored.carried == (ALONG, DRAWER)  # the line kept, and a joint by time beside it

@@ -156,12 +156,16 @@ def _step(robot: ProjectedRobot, arm: str, hold: _Hold, held: float, value: floa
     hand followed (if not, the joint is back at ``held``)."""
     world = robot.world
     part, joint, handle = hold.part, hold.joint, hold.handle
+    tool = robot.arm(arm).tool_frame
+    begin = world.link_pose(robot.name, tool).position
     world.set_joint_states(part, {joint: value})
-    robot.carried[:] = [CarriedJoint(part, joint, held, value)]  # the hand moves it
+    goal = world.link_pose(part, handle) * hold.pull * hold.grasp
+    # the hand moves it: where the tool has got to on its way, the part has too
+    robot.carried[:] = [CarriedJoint(part, joint, held, value, tool, (begin, goal.position))]
     try:
         move_tcp(
-            robot, arm, world.link_pose(part, handle) * hold.pull * hold.grasp, HOLD_MODE,
-            move_base=True, base_travel=STEP_TRAVEL, touching=f"{part}/{handle}",
+            robot, arm, goal, HOLD_MODE, move_base=True, base_travel=STEP_TRAVEL,
+            touching=f"{part}/{handle}",
         )  # fmt: skip
     except (ManipulationPoseUnreachable, ManipulationGoalNotReached, NavigationLowLevelFailure):
         world.set_joint_states(part, {joint: held})

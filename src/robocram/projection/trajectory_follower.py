@@ -46,11 +46,12 @@ def follow(robot: ProjectedRobot, trajectory: JointTrajectory) -> None:
 
 def _with_carried(robot: ProjectedRobot, done: JointTrajectory, whole: float) -> JointTrajectory:
     """``done`` (all or the start of a trajectory lasting ``whole`` [s]) with the joints the
-    robot moves along, as far as it got."""
+    robot moves along: by time, as far as it got; along a link's line, the whole step (the
+    joint is wherever the link is on the line, stopped part of the way or not)."""
     if not robot.carried:
         return done
     share = done.duration / whole if whole > 0.0 else 1.0
-    carried = tuple(replace(c, end=c.at(share)) for c in robot.carried)
+    carried = tuple(c if c.line else replace(c, end=c.at(share)) for c in robot.carried)
     return replace(done, carried=carried)
 
 

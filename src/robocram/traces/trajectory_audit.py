@@ -96,6 +96,14 @@ def audit_run(
     return AuditReport((run,), findings, len(trajectories), audit.configurations)
 
 
+def _hand_share(world: World, robot: str, joint: CarriedJoint, by_time: float) -> float:
+    """How far ``joint`` has gone: with the robot's holding link along its line (the
+    link's position read from PyBullet as the robot is now), else ``by_time``."""
+    if joint.line is None:
+        return by_time
+    return joint.share(world.link_pose(robot, joint.link).position)
+
+
 @contextmanager
 def riding(world: World, carried: tuple[CarriedJoint, ...]) -> Iterator[None]:
     """Within the block, what rests on a link a carried joint moves rides with it (spoons
@@ -229,7 +237,8 @@ class _RunAudit:
         ``moved``: the joints moving; pairs of the robot's parts that they do not move
         relative to each other are not judged again; at the robot's first configuration in
         the run every pair is judged). ``carried``: other objects' joints the motion moves
-        along, set at each sample's share of ``duration`` [s].
+        along: where the link holding the part is along its line, or at each sample's
+        share of ``duration`` [s].
         """
         robot, description = handle.name, handle.description
         held = self._held(robot)
@@ -249,7 +258,8 @@ class _RunAudit:
             if carried:
                 share = t / duration if duration > 0.0 else 1.0
                 for joint in carried:
-                    self.world.set_joint_states(joint.obj, {joint.joint: joint.at(share)})
+                    value = joint.at(_hand_share(self.world, robot, joint, share))
+                    self.world.set_joint_states(joint.obj, {joint.joint: value})
                 probe.others_moved(bodies)
             self.configurations += 1
             for p in probe.check(first=k == 0):

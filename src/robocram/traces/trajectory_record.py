@@ -213,19 +213,33 @@ def _allowances(text: str | None) -> tuple[ContactAllowance, ...]:
 
 
 def _carried_text(carried: tuple[CarriedJoint, ...]) -> str | None:
-    """JSON ``[[object, joint, start, end], ...]``; None (NULL) when there are none."""
+    """JSON ``[[object, joint, start, end], ...]``, with ``link, [from, to]`` after ``end``
+    for a joint moved along a link's line; None (NULL) when there are none."""
     if not carried:
         return None
-    return json.dumps([[c.obj, c.joint, c.start, c.end] for c in carried])
+    return json.dumps([_carried_row(c) for c in carried])
+
+
+def _carried_row(c: CarriedJoint) -> list[object]:
+    row: list[object] = [c.obj, c.joint, c.start, c.end]
+    if c.line is not None:
+        row += [c.link, [list(c.line[0]), list(c.line[1])]]
+    return row
 
 
 def _carried(text: str | None) -> tuple[CarriedJoint, ...]:
-    """The carried joints of a row; NULL (none, or a file before version 7): none."""
+    """The carried joints of a row; NULL (none, or a file before version 7): none. A row of
+    four (a file before the line was kept) moves by time."""
     if not text:
         return ()
-    return tuple(
-        CarriedJoint(obj, joint, start, end) for obj, joint, start, end in json.loads(text)
-    )
+    found = []
+    for obj, joint, start, end, *along in json.loads(text):
+        if along:
+            link, (begin, finish) = along
+            found.append(CarriedJoint(obj, joint, start, end, link, (tuple(begin), tuple(finish))))
+        else:
+            found.append(CarriedJoint(obj, joint, start, end))
+    return tuple(found)
 
 
 def _pack(values: ArrayLike) -> bytes:

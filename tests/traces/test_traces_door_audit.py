@@ -1,0 +1,58 @@
+"""Opening and closing the fridge's door, traced and audited: the door goes where the hand
+takes it, so the fingers never go into the door's panel.
+
+Each 2 cm step of the hand may drive the base first and move the arm after; the door used
+to be moved by each trajectory's clock from the step's start, so the arm's part began with
+the door set back where the base's part had found it, 11.8 mm into the fingertips. Now the
+door is where the tool frame is along its line (``CarriedJoint.line``), across both parts.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+import pytest
+
+from robocram.plans.container_access import close_again, open_from_front
+from robocram.projection import simulated_robot
+from robocram.scenes.breakfast_scene import breakfast_scene
+from robocram.traces import AuditReport, TraceDatabase, trace_to
+from robocram.traces.trajectory_audit import audit_runs
+
+DOOR = "fridge_door_joint"
+
+
+@pytest.fixture(scope="module")
+def door_run(tmp_path_factory: pytest.TempPathFactory) -> Iterator[tuple[float, AuditReport]]:
+    db_path = tmp_path_factory.mktemp("door") / "runs.db"
+    scene = breakfast_scene("pr2")
+    world = scene.world
+    with trace_to(db_path, world=world), simulated_robot(world, scene.robot):
+        close_again(open_from_front("fridge_body"))
+    closed = world.joint_states("kitchen")[DOOR]
+    world.close()
+    with TraceDatabase(db_path, create=False) as db:
+        yield closed, audit_runs(db)
+
+
+def test_the_fingers_stay_out_of_the_door_while_it_moves(
+    door_run: tuple[float, AuditReport],
+) -> None:
+    closed, report = door_run
+    assert closed == pytest.approx(0.0, abs=1e-6)
+    assert report.trajectories > 100  # the door's steps, both ways
+    panel = [f for f in report.findings if f.what.endswith("kitchen:fridge_door")]
+    assert panel == []  # was 13 findings, 11.8 mm deep
+    too_deep = [f for f in report.findings if f.kind.value == "allowed-contact-too-deep"]
+    assert too_deep == []  # was 2, 5.7 mm on the handle (bound 5 mm)
+
+
+@pytest.mark.xfail(
+    strict=True,
+    reason="a roll that leaves the door part of the way open cannot open the fingers at "
+    "the handle nor back off, and the next roll's approach drives the base with the "
+    "fingers still round the handle: 5.95 mm into it with no allowance (docs/status.md)",
+)
+def test_the_whole_door_audit_is_clean(door_run: tuple[float, AuditReport]) -> None:
+    _, report = door_run
+    assert report.clean, report.summary_lines()
