@@ -6,6 +6,7 @@ from robocram.world.camera import Camera
 from robocram.world.catalogue import catalogue_names
 from robocram.world.collision_shapes import CollisionShape
 from robocram.world.contact_point import ContactPoint
+from robocram.world.derived import Derived
 from robocram.world.errors import (
     AttachmentCycleError,
     BodyLoadError,
@@ -26,6 +27,7 @@ from robocram.world.obstacle_boxes import ObstacleBoxes
 from robocram.world.planning_area import AREA_MARGIN, PlanningArea
 from robocram.world.raw_distances import LinkGap, RawDistances
 from robocram.world.ray_hit import RayHit
+from robocram.world.versions import Stamp, Versions
 from robocram.world.visibility import Visibility
 from robocram.world.world import World
 from robocram.world.world_object import RobotObject, WorldObject
@@ -40,6 +42,7 @@ __all__ = [
     "ClampedJoint",
     "CollisionShape",
     "ContactPoint",
+    "Derived",
     "DuplicateObjectError",
     "JointLimits",
     "LinkGap",
@@ -52,12 +55,14 @@ __all__ = [
     "RayHit",
     "RobotObject",
     "ShapeSpec",
+    "Stamp",
     "TooManyLinksError",
     "UnknownItemError",
     "UnknownJointError",
     "UnknownLinkError",
     "UnknownObjectError",
     "UrdfSpec",
+    "Versions",
     "Visibility",
     "World",
     "WorldClosedError",
