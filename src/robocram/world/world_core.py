@@ -13,6 +13,7 @@ from robocram.robots import RobotModel, mimic_followers
 from robocram.tf import Pose, PoseLike
 from robocram.world.attachment import Attachment, check_acyclic
 from robocram.world.body_loading import create_body
+from robocram.world.derived import Derived
 from robocram.world.errors import (
     DuplicateObjectError,
     NotARobotError,
@@ -68,6 +69,7 @@ class WorldCore:
         self._holds: dict[str, dict[int, float]] = {}  # robot -> joint index -> held value
         self._motors = HeldMotors()  # a robot's held joints need no motor
         self._versions = Versions()  # stamped by every write below
+        self._stepping: Derived[None, tuple[list[str], list[str]]] = Derived(_structure)
 
     @property
     def versions(self) -> Versions:
@@ -445,7 +447,7 @@ class WorldCore:
             self._motors.match(body, held.keys(), self.time_step, cid)
         pybullet.stepSimulation(physicsClientId=cid)
         self.time += self.time_step
-        self._versions.stepped(*self._stepped())
+        self._versions.stepped(*self._stepping.get(None, self._stepped, self._versions))
         for body, held in robots:
             _reset_joints(body, held, cid)
         for carrier in {a.robot for a in self._attachments.values()}:
@@ -571,6 +573,10 @@ def _reset_joints(body: int, values: Mapping[int, float], cid: int) -> None:
 def _mimic_masters(model: RobotModel) -> frozenset[str]:
     """The joints some mimic joint of ``model`` follows."""
     return frozenset(j.mimic.joint for j in model.joints.values() if j.mimic is not None)
+
+
+def _structure(versions: Versions, key: None) -> int:
+    return versions.structure
 
 
 def _check_time_step(time_step: float) -> None:
