@@ -27,7 +27,7 @@ from robocram.world.obstacle_boxes import ObstacleBoxes
 from robocram.world.planning_area import AREA_MARGIN, PlanningArea
 from robocram.world.raw_distances import LinkGap, RawDistances
 from robocram.world.ray_hit import RayHit
-from robocram.world.versions import Stamp, Versions
+from robocram.world.versions import BodyStamps, Stamp, Versions, body_stamps, changed_bodies
 from robocram.world.visibility import Visibility
 from robocram.world.world import World
 from robocram.world.world_object import RobotObject, WorldObject
@@ -37,6 +37,7 @@ __all__ = [
     "AREA_MARGIN",
     "Attachment",
     "AttachmentCycleError",
+    "BodyStamps",
     "BodyLoadError",
     "Camera",
     "ClampedJoint",
@@ -70,5 +71,7 @@ __all__ = [
     "WorldValueError",
     "WorldObject",
     "WorldState",
+    "body_stamps",
     "catalogue_names",
+    "changed_bodies",
 ]

@@ -12,6 +12,8 @@ looks unchanged. Reading a stamp is a dictionary lookup; reads never change a st
 from __future__ import annotations
 
 from collections.abc import Iterable
+from dataclasses import dataclass
+from typing import Protocol
 
 from robocram.world.errors import UnknownObjectError
 
@@ -103,3 +105,58 @@ class Versions:
     def _next(self) -> int:
         self._tick += 1
         return self._tick
+
+
+@dataclass(frozen=True)
+class BodyStamps:
+    """Some bodies' counters and states at one time, to ask later which of them changed:
+    what a planned motion was checked against (:func:`changed_bodies`)."""
+
+    tick: int  # the world's clock then: unchanged, nothing at all changed
+    stamps: tuple[tuple[str, Stamp], ...]
+    states: tuple[tuple[float, ...], ...]  # per body, its state then (body_state)
+
+
+class _StampedWorld(Protocol):
+    """What :class:`BodyStamps` reads of a world."""
+
+    @property
+    def versions(self) -> Versions: ...
+
+    def body_state(self, obj: str) -> tuple[float, ...]: ...
+
+
+MOVED = 1e-6  # [m | rad] a body's state changed by less (Bullet's round trips, creep): still
+
+
+def body_stamps(world: _StampedWorld, names: Iterable[str]) -> BodyStamps:
+    """The counters and states of the bodies called ``names`` now."""
+    names = list(names)
+    versions = world.versions
+    return BodyStamps(
+        versions.tick,
+        tuple((n, versions.body(n)) for n in names),
+        tuple(world.body_state(n) for n in names),
+    )
+
+
+def changed_bodies(world: _StampedWorld, then: BodyStamps, names: Iterable[str]) -> list[str]:
+    """Which of the bodies called ``names`` are new since ``then``, or were written since
+    and stand otherwise (by more than :data:`MOVED`; the counters say where to look)."""
+    versions = world.versions
+    if versions.tick == then.tick:
+        return []
+    kept = {n: (s, state) for (n, s), state in zip(then.stamps, then.states, strict=True)}
+    found = []
+    for name in names:
+        old = kept.get(name)
+        if old is not None and old[0] == versions.body(name):
+            continue
+        if old is not None and _same_state(old[1], world.body_state(name)):
+            continue
+        found.append(name)
+    return found
+
+
+def _same_state(old: tuple[float, ...], now: tuple[float, ...]) -> bool:
+    return len(old) == len(now) and all(abs(a - b) <= MOVED for a, b in zip(old, now, strict=True))
