@@ -414,7 +414,7 @@ def _footprint(
     the height of the base and where each carried object is in the base frame."""
     base_z = start.position[2]
     key = (
-        robot,
+        world.object(robot).name,  # a handle passed for the name too
         tuple(world.joint_states(robot).items()),
         base_z,
         tuple((name, _in_base(start, world.pose(name))) for name in carried),

@@ -60,7 +60,7 @@ class BulletScene:
                 f"joints {unknown} are not movable joints of {robot}; known: {sorted(known)}"
             )
         self.allowed_links = frozenset(allowed_links)
-        key = (robot, self._joints, self.allowed_links)
+        key = (world.object(robot).name, self._joints, self.allowed_links)  # a handle too
         found = world.derived(_kept_rules).get(key, partial(_rules, world, key), world.versions)
         self.rules = found[0]
         self.allowed_pairs = frozenset(allowed_pairs)  # (robot link | held object, other)

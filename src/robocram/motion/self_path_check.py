@@ -58,7 +58,7 @@ class SelfPathCheck:
         joints = tuple(joints)
         build = partial(_moved_pairs, world, robot, joints)
         pairs, levers, parts = world.derived(_kept_pairs).get(
-            (robot, joints), build, world.versions
+            (world.object(robot).name, joints), build, world.versions
         )
         model = world.robot(robot).description.model
         now = world.joint_states(robot)
