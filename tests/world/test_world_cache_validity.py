@@ -25,7 +25,7 @@ from robocram.motion.self_path_check import SelfPathCheck
 from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
-from robocram.world import World
+from robocram.world import UnknownObjectError, World
 
 JOINTS = (
     "torso_lift_joint", "r_shoulder_pan_joint", "r_shoulder_lift_joint",
@@ -258,9 +258,8 @@ def test_reading_leaves_every_counter_alone() -> None:
 
 
 def test_a_counter_of_a_body_not_in_the_world_is_a_typed_error() -> None:
-    from robocram.world import UnknownObjectError
-
     with World() as world:
-        world.add_box("box", (0.1, 0.1, 0.1))
+        box = world.add_box("box", (0.1, 0.1, 0.1))
+        assert world.versions.body(box) == world.versions.body("box")  # a handle or a name
         with pytest.raises(UnknownObjectError, match="no object 'bx'.*'box'"):
             world.versions.pose("bx")

@@ -16,8 +16,10 @@ from dataclasses import dataclass
 from typing import Protocol
 
 from robocram.world.errors import UnknownObjectError
+from robocram.world.world_object import WorldObject
 
 Stamp = tuple[int, ...]  # counters compared as one value
+Named = str | WorldObject  # a body by its name or its handle
 
 
 class Versions:
@@ -41,31 +43,32 @@ class Versions:
         """The last tick handed out: it grows with every write the world sees."""
         return self._tick
 
-    def created(self, name: str) -> int:
+    def created(self, name: Named) -> int:
         """When the body called ``name`` got its current physics body (its identity)."""
         return self._read(self._created, name)
 
-    def pose(self, name: str) -> int:
+    def pose(self, name: Named) -> int:
         """When the base of the body called ``name`` last moved."""
         return self._read(self._pose, name)
 
-    def joints(self, name: str) -> int:
+    def joints(self, name: Named) -> int:
         """When a joint of the body called ``name`` last changed."""
         return self._read(self._joints, name)
 
-    def body(self, name: str) -> Stamp:
+    def body(self, name: Named) -> Stamp:
         """Everything the shapes of the body called ``name`` depend on: its identity, its
         pose and its joints (one value to compare)."""
         return (self.created(name), self.pose(name), self.joints(name))
 
-    def bodies(self, names: Iterable[str]) -> Stamp:
+    def bodies(self, names: Iterable[Named]) -> Stamp:
         """:meth:`body` of each of ``names``, in their order, as one flat stamp."""
         return tuple(t for name in names for t in self.body(name))
 
-    def _read(self, table: dict[str, int], name: str) -> int:
-        found = table.get(name)
+    def _read(self, table: dict[str, int], name: Named) -> int:
+        key = name.name if isinstance(name, WorldObject) else name
+        found = table.get(key)
         if found is None:
-            raise UnknownObjectError(name, self._created)
+            raise UnknownObjectError(key, self._created)
         return found
 
     # -- writes: only the world's own write paths call these --------------------------
