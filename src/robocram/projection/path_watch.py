@@ -25,7 +25,7 @@ from robocram.world import BodyStamps, World, WorldObject, body_stamps, changed_
 
 def planned_against(robot: ProjectedRobot) -> BodyStamps:
     """What a motion of ``robot`` planned now is checked against: every other body."""
-    return body_stamps(robot.world, _others(robot.world, robot.name))
+    return body_stamps(robot.world, _others(robot))
 
 
 @dataclass
@@ -45,7 +45,7 @@ class PathWatch:
         if tick == (self.checked.tick if self.seen < 0 else self.seen):
             return None  # nothing was written since: nothing to look at
         self.seen = tick
-        changed = changed_bodies(world, self.checked, _others(world, self.robot.name))
+        changed = changed_bodies(world, self.checked, _others(self.robot))
         if not changed:
             return None
         hit = self._first_contact(reached, set(changed))
@@ -60,7 +60,7 @@ class PathWatch:
         """The first point from ``start`` where the robot or what it carries touches one
         of ``watched`` as it does not where it stands: ``(index, its link, the body)``."""
         world = self.robot.world
-        moving = [self.robot.name, *_carried(world, self.robot.name)]
+        moving = [self.robot.name, *_carried(self.robot)]
         ignore = [o for o in world.objects() if o.name not in watched or o.name in moving]
         before = _contacts(world, moving, ignore)
         names = self.trajectory.joint_names
@@ -68,7 +68,7 @@ class PathWatch:
         pose, joints = world.pose(self.robot.name), world.joint_states(self.robot.name)
         try:
             for index in range(start, len(points)):
-                _pose(world, self.robot.name, names, tuple(points[index].positions))
+                _pose(self.robot, names, tuple(points[index].positions))
                 new = _contacts(world, moving, ignore) - before
                 if new:
                     part, body = min(new)
@@ -95,16 +95,17 @@ class PathWatch:
         )
 
 
-def _others(world: World, robot: str) -> list[str]:
+def _others(robot: ProjectedRobot) -> list[str]:
     """Every body but the robot and what it carries."""
-    skip = {robot, *_carried(world, robot)}
-    return [o.name for o in world.objects() if o.name not in skip]
+    skip = {robot.name, *_carried(robot)}
+    return [o.name for o in robot.world.objects() if o.name not in skip]
 
 
-def _carried(world: World, robot: str) -> list[str]:
+def _carried(robot: ProjectedRobot) -> list[str]:
     """What the robot holds, and what that holds, recursively."""
+    world = robot.world
     found: list[str] = []
-    frontier = [robot]
+    frontier = [robot.name]
     while frontier:
         held = list(world.attachments(frontier.pop()))
         found += held
@@ -121,15 +122,16 @@ def _contacts(world: World, moving: list[str], ignore: list[WorldObject]) -> set
     return found
 
 
-def _pose(world: World, robot: str, names: tuple[str, ...], values: tuple[float, ...]) -> None:
+def _pose(robot: ProjectedRobot, names: tuple[str, ...], values: tuple[float, ...]) -> None:
     """Put the robot at ``values`` of ``names`` (what it carries follows)."""
+    world, name = robot.world, robot.name
     named = dict(zip(names, values, strict=True))
     if names == BODY_JOINTS:
         turn = quat.from_euler(named["roll"], named["pitch"], named["yaw"])
-        world.set_pose(robot, Pose((named["x"], named["y"], named["z"]), turn))
+        world.set_pose(name, Pose((named["x"], named["y"], named["z"]), turn))
     elif names == BASE_JOINTS:
-        height = world.pose(robot).position[2]
+        height = world.pose(name).position[2]
         turn = quat.from_euler(0.0, 0.0, named["yaw"])
-        world.set_pose(robot, Pose((named["x"], named["y"], height), turn))
+        world.set_pose(name, Pose((named["x"], named["y"], height), turn))
     else:
-        world.set_joint_states(robot, named)
+        world.set_joint_states(name, named)
