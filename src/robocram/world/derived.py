@@ -5,7 +5,9 @@ A cache says once what its values depend on (``depends``: from the world's
 body's pose and joints, or the structure); asked for a key, it answers the kept value
 while that stamp is unchanged and builds it again otherwise. No caller compares states,
 poses or handles by hand, so a value cannot outlive what it was read from. A bound
-(``size``) drops the oldest key, or with ``lru`` the least recently asked.
+(``size``) drops the oldest key, or with ``lru`` the least recently asked. A store that
+depends on counters serves one world (each world's clock starts at 0): keep it with
+that world (:meth:`~robocram.world.World.derived`).
 
 Values that depend on nothing but their key (an answer per posture, a table per set of
 inputs) declare no ``depends`` and keep only the bound.
