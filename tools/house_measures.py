@@ -6,8 +6,13 @@ effect in the same terms.
 - functions with a ``robot: str`` parameter, and those also taking ``world`` (goal 0
   outside the public edges: scenes, the command line, ``simulated_robot``);
 - public methods of ``World`` and ``WorldCore`` (goal <= 25 on the facade);
-- caches kept by hand: functions decorated with ``functools`` caches, ``derived(...)``
-  stores, and module-level dictionaries written inside functions (goal 0);
+- caches kept by hand: bounded caches that evict by hand (``popitem(last=False)``,
+  ``del d[next(iter(d))]``, ``d.pop(next(iter(d)))``; goal 0, the world's one rule,
+  ``world/derived.py``, aside), state reads compared as a cache's validity
+  (``body_state(...)`` outside the world's core), functions decorated with ``functools``
+  caches, ``derived(...)`` stores (a world's, declared with ``Derived``, apart from a
+  robot model's, which depend on nothing but the model), ``Derived`` declarations, and
+  module-level dictionaries written inside functions (goal 0);
 - bare built-in raises (``ValueError``, ``RuntimeError``, ``TypeError``, ``KeyError``)
   in library code (goal <= 10).
 
@@ -108,6 +113,34 @@ def _written_in_functions(tree: ast.Module, names: set[str]) -> set[str]:
     return written
 
 
+def _evicts_by_hand(node: ast.AST) -> bool:
+    """Whether ``node`` drops a cache's oldest entry by hand."""
+    if isinstance(node, ast.Delete):
+        return any(isinstance(t, ast.Subscript) and _is_first_key(t.slice) for t in node.targets)
+    if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute):
+        if node.func.attr == "popitem":
+            return any(k.arg == "last" for k in node.keywords)
+        return node.func.attr == "pop" and bool(node.args) and _is_first_key(node.args[0])
+    return False
+
+
+def _is_first_key(node: ast.expr) -> bool:
+    """``next(iter(...))``: the oldest key of a dictionary."""
+    return (
+        isinstance(node, ast.Call)
+        and _decorator_name(node) == "next"
+        and bool(node.args)
+        and isinstance(node.args[0], ast.Call)
+        and _decorator_name(node.args[0]) == "iter"
+    )
+
+
+def _derived_kind(node: ast.Call) -> str:
+    """Which store a ``derived(...)`` call uses: a robot model's or a world's."""
+    receiver = ast.unparse(node.func.value) if isinstance(node.func, ast.Attribute) else ""
+    return "model derived stores" if "model" in receiver else "world derived stores"
+
+
 def measure() -> dict[str, list[str]]:
     """Per measure, the places that count (``file:line name``)."""
     found: dict[str, list[str]] = {
@@ -115,8 +148,12 @@ def measure() -> dict[str, list[str]]:
         "robot: str parameters": [],
         "robot: str with world": [],
         "World public methods": [],
+        "hand-written caches": [],
+        "state compares": [],
         "functools caches": [],
-        "derived stores": [],
+        "world derived stores": [],
+        "model derived stores": [],
+        "Derived declarations": [],
         "module-level memos": [],
         "bare built-in raises": [],
     }
@@ -141,7 +178,17 @@ def measure() -> dict[str, list[str]]:
                     ):
                         found["World public methods"].append(f"{node.name}.{item.name}")
             if isinstance(node, ast.Call) and _decorator_name(node) == "derived":
-                found["derived stores"].append(f"{name}:{node.lineno}")
+                found[_derived_kind(node)].append(f"{name}:{node.lineno}")
+            if isinstance(node, ast.Call) and _decorator_name(node) == "Derived":
+                found["Derived declarations"].append(f"{name}:{node.lineno}")
+            if _evicts_by_hand(node) and name != "world/derived.py":
+                found["hand-written caches"].append(f"{name}:{node.lineno}")
+            if (
+                isinstance(node, ast.Call)
+                and _decorator_name(node) == "body_state"
+                and name != "world/world_core.py"
+            ):
+                found["state compares"].append(f"{name}:{node.lineno}")
             if (
                 isinstance(node, ast.Raise)
                 and node.exc is not None

@@ -17,6 +17,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator
 from dataclasses import dataclass, field
+from functools import partial
 
 import numpy as np
 
@@ -27,7 +28,7 @@ from robocram.motion.obstacle_grid import Box, ObstacleGrid
 from robocram.motion.robot_footprint import FloatArray, RobotFootprint
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
-from robocram.world import ObstacleBoxes, PlanningArea, RobotHandle, World
+from robocram.world import Derived, ObstacleBoxes, PlanningArea, RobotHandle, Versions, World
 
 CELL = 0.01  # [m] obstacle grid cells
 SPACING = 0.02  # [m] robot sample squares: more than the 1 cm a dense check moves
@@ -420,16 +421,17 @@ def _footprint(
         base_z,
         tuple((name, _in_base(start, world.pose(name))) for name in carried),
     )
-    kept = world.derived(_kept_footprints)
-    found = kept.pop(key, None)
-    if found is None:
-        boxes = _boxes_in_base(robot, carried, start)
-        bins = HeightBins.up_to(base_z + max(b[1][2] for b in boxes) + CONTACT)
-        found = (bins, RobotFootprint.build(boxes, base_z, bins, SPACING, CONTACT))
-    kept[key] = found  # most recent last
-    while len(kept) > FOOTPRINTS_KEPT:
-        kept.pop(next(iter(kept)))
-    return found
+    build = partial(_built_footprint, robot, carried, start)
+    return world.derived(_kept_footprints).get(key, build, world.versions)
+
+
+def _built_footprint(
+    robot: RobotHandle, carried: tuple[str, ...], start: Pose
+) -> tuple[HeightBins, RobotFootprint]:
+    base_z = start.position[2]
+    boxes = _boxes_in_base(robot, carried, start)
+    bins = HeightBins.up_to(base_z + max(b[1][2] for b in boxes) + CONTACT)
+    return bins, RobotFootprint.build(boxes, base_z, bins, SPACING, CONTACT)
 
 
 def _in_base(base: Pose, pose: Pose) -> tuple[float, ...]:
@@ -437,9 +439,17 @@ def _in_base(base: Pose, pose: Pose) -> tuple[float, ...]:
     return (*relative.position, *relative.orientation)
 
 
-def _kept_footprints(world: World) -> dict[tuple[object, ...], tuple[HeightBins, RobotFootprint]]:
-    """The footprints a world keeps (the key under which :meth:`World.derived` keeps them)."""
-    return {}
+def _kept_footprints(world: World) -> Derived[_PostureKey, tuple[HeightBins, RobotFootprint]]:
+    """The footprints a world keeps (the key under which :meth:`World.derived` keeps them):
+    the robot's posture is their key, and they stay while its body is the same."""
+    return Derived(_robot_created, size=FOOTPRINTS_KEPT, lru=True)
+
+
+_PostureKey = tuple[object, ...]  # the robot's name first
+
+
+def _robot_created(versions: Versions, key: _PostureKey) -> int:
+    return versions.created(str(key[0]))
 
 
 def _carried(robot: RobotHandle) -> tuple[str, ...]:

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import contextlib
 from collections.abc import Collection, Iterator, Mapping, Sequence
+from functools import partial
 
 import numpy as np
 from numpy.typing import NDArray
@@ -27,7 +28,7 @@ from robocram.motion.errors import MotionError
 from robocram.motion.hand_contact import HandContact, contact_depth
 from robocram.motion.joint_levers import LeverData, cross, links_below
 from robocram.motion.joint_trajectory import FloatArray
-from robocram.world import ObstacleBoxes, RobotHandle, World, WorldObject
+from robocram.world import Derived, ObstacleBoxes, RobotHandle, Versions, World, WorldObject
 
 CLEARANCE_REACH = 0.1  # [m] distances asked for: a free configuration clears this much
 KEPT_RULES = 32  # judges' rules and moving links kept per world (per joints, allowed links)
@@ -59,24 +60,12 @@ class BulletScene:
                 f"joints {unknown} are not movable joints of {robot.name}; known: {sorted(known)}"
             )
         self.allowed_links = frozenset(allowed_links)
-        handle = robot.body
-        kept = world.derived(_kept_rules)
         key = (robot.name, self._joints, self.allowed_links)
-        found = kept.get(key)
-        if found is None or found[0] is not handle or found[3] is not handle.description:
-            rules = AllowedContacts.of(handle.description, allowed_links)
-            moving = (  # only these can touch anything new; no joints: the base
-                links_below(robot, self._joints)
-                if self._joints
-                else tuple(world.link_names(robot.name))
-            )
-            found = kept[key] = (handle, rules, moving, handle.description)
-            if len(kept) > KEPT_RULES:
-                del kept[next(iter(kept))]  # the oldest
-        self.rules = found[1]
+        found = world.derived(_kept_rules).get(key, partial(_rules, robot, key), world.versions)
+        self.rules = found[0]
         self.allowed_pairs = frozenset(allowed_pairs)  # (robot link | held object, other)
         self.distance = distance  # [m] nearer than this counts as touching
-        self.moving_links = found[2]
+        self.moving_links = found[1]
         self._posed = False
         self._obstacles: ObstacleBoxes | None = None  # read once per posed block
         self._levers: LeverData | None = None  # what joint_levers needs, read once
@@ -323,11 +312,25 @@ def _named(world: World, obj: WorldObject, link: str) -> str:
 
 
 _JudgeKey = tuple[str, tuple[str, ...], frozenset[str]]  # robot, joints, allowed links
-_KeptRules = dict[_JudgeKey, tuple[WorldObject, AllowedContacts, tuple[str, ...], object]]
+_KeptRules = Derived[_JudgeKey, tuple[AllowedContacts, tuple[str, ...]]]
 
 
 def _kept_rules(world: World) -> _KeptRules:
-    """Per (robot, joints, allowed links): the robot object they were made for, its rules,
-    its moving links and the description they were read from, kept with the world (a
-    judge is made per motion, and reading them again cost a quarter of its making)."""
-    return {}
+    """Per (robot, joints, allowed links): the robot's rules and its moving links, kept
+    with the world while the robot's body is the same (a judge is made per motion, and
+    reading them again cost a quarter of its making)."""
+    return Derived(_robot_created, size=KEPT_RULES)
+
+
+def _robot_created(versions: Versions, key: _JudgeKey) -> int:
+    return versions.created(key[0])
+
+
+def _rules(robot: RobotHandle, key: _JudgeKey) -> tuple[AllowedContacts, tuple[str, ...]]:
+    """The rules of ``robot`` (named ``key[0]``) and the links moved by ``key[1]``."""
+    _, joints, allowed_links = key
+    rules = AllowedContacts.of(robot.description, allowed_links)
+    moving = (  # only these can touch anything new; no joints: the base
+        links_below(robot, joints) if joints else tuple(robot.world.link_names(robot.name))
+    )
+    return rules, moving

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from functools import partial
 
 import numpy as np
 import pinocchio as pin
@@ -27,7 +28,7 @@ from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.obstacle_shapes import DRIFT, StackedShapes, obstacle_cache
 from robocram.motion.robot_geometry import Part, RobotGeometry, part
 from robocram.tf import Pose
-from robocram.world import World, WorldObject
+from robocram.world import Derived, World, WorldObject
 
 KEPT_SETUPS = 8  # checker setups kept per world (a stand's motions use a few)
 KEPT_ANSWERS = 64  # rule answer tables kept per world (one per judge, held set, objects)
@@ -50,15 +51,19 @@ class SetupCache:
     """The setups of one world's last checkers, and what outlives them."""
 
     world: World
-    _kept: dict[tuple[object, ...], Setup] = field(default_factory=dict)
-    _answers: dict[tuple[object, ...], NDArray[np.bool_]] = field(default_factory=dict)
+    _kept: Derived[tuple[object, ...], Setup] = field(
+        default_factory=lambda: Derived(size=KEPT_SETUPS)
+    )
+    _answers: Derived[tuple[object, ...], NDArray[np.bool_]] = field(
+        default_factory=lambda: Derived(size=KEPT_ANSWERS)
+    )
     _held: dict[tuple[str, str, str], tuple[WorldObject, tuple[float, ...], list[Part]]] = field(
         default_factory=dict
     )
     # per the ids of the part groups (the links' kept tuple, held objects' kept lists):
     # the groups (held, so the ids are not reused while kept) and their arrays
-    _arrays: dict[tuple[int, ...], tuple[tuple[Sequence[Part], ...], PartArrays]] = field(
-        default_factory=dict
+    _arrays: Derived[tuple[int, ...], tuple[tuple[Sequence[Part], ...], PartArrays]] = field(
+        default_factory=lambda: Derived(size=KEPT_PARTS)
     )
     # per (rules, object name, type): whether a "*" rule lets every link touch it
     _anywhere: dict[tuple[tuple[tuple[str, str], ...], str, str], bool] = field(
@@ -77,12 +82,9 @@ class SetupCache:
         joints as ``data`` is posed: a kept one if everything it depends on is as it was."""
         obstacles = self._obstacles(judge)
         key = (id(obstacles), margin, *_setup_key(judge, geometry, data, base))
-        found = self._kept.get(key)
-        if found is None or found.obstacles is not obstacles:
-            found = self._kept[key] = self._made(judge, geometry, data, base, obstacles, margin)
-            if len(self._kept) > KEPT_SETUPS:
-                del self._kept[next(iter(self._kept))]  # the oldest
-        return found
+        # a kept setup holds its obstacles, so their id in its key is not reused
+        build = partial(self._made, judge, geometry, data, base, obstacles, margin)
+        return self._kept.get(key, build)
 
     def _obstacles(self, judge: BulletScene) -> StackedShapes:
         """The shapes of every object the judge checks against: all but the robot, what
@@ -136,13 +138,8 @@ class SetupCache:
         held = frozenset(self.world.attachments(judge.robot))
         objects = tuple((s.obj.name, s.obj.type) for s in obstacles.shapes)
         key = (judge.robot, judge.allowed_links, held, labels, objects)
-        found = self._answers.get(key)
-        if found is None:
-            rules = PairRules(judge.rules, held)
-            found = self._answers[key] = rules.matrix(labels, obstacles.shapes)
-            if len(self._answers) > KEPT_ANSWERS:
-                del self._answers[next(iter(self._answers))]
-        return found
+        rules = partial(PairRules, judge.rules, held)
+        return self._answers.get(key, lambda: rules().matrix(labels, obstacles.shapes))
 
     def _parts(self, judge: BulletScene, geometry: RobotGeometry) -> PartArrays:
         """The parts the judge asks about: its moving links but the allowed ones (named
@@ -165,13 +162,11 @@ class SetupCache:
         for obj, link in world.attachments(handle).items():
             groups.append(self._held_parts(geometry, handle, obj, link))
         key = tuple(id(group) for group in groups)
-        found = self._arrays.get(key)
-        if found is None:
-            arrays = PartArrays.of([p for group in groups for p in group])
-            found = self._arrays[key] = (tuple(groups), arrays)
-            if len(self._arrays) > KEPT_PARTS:
-                del self._arrays[next(iter(self._arrays))]  # the oldest
-        return found[1]
+
+        def made() -> tuple[tuple[Sequence[Part], ...], PartArrays]:
+            return tuple(groups), PartArrays.of([p for group in groups for p in group])
+
+        return self._arrays.get(key, made)[1]  # the groups kept: their ids are not reused
 
     def _held_parts(
         self, geometry: RobotGeometry, robot: WorldObject, name: str, link: str

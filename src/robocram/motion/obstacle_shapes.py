@@ -14,6 +14,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 from dataclasses import dataclass, field
+from functools import partial
 from itertools import chain
 
 import coal
@@ -24,7 +25,7 @@ from numpy.typing import NDArray
 from robocram.kinematics.robot_kinematics import pose_to_se3
 from robocram.motion.coal_shapes import coal_geometries
 from robocram.motion.joint_trajectory import FloatArray
-from robocram.world import World, WorldObject
+from robocram.world import Derived, Stamp, World, WorldObject
 
 # Shapes are reused while an object's position [m], quaternion and joint values [rad | m]
 # each stay within this of the state they were read in.
@@ -147,30 +148,27 @@ class ObstacleCache:
         default_factory=dict
     )
     builds: int = 0  # how many times shapes were read (for tests and figures)
-    _stacked: dict[tuple[int, ...], StackedShapes] = field(default_factory=dict)
-    _read: dict[str, tuple[float, ...]] = field(default_factory=dict)  # state last seen equal
+    _stacked: Derived[tuple[int, ...], StackedShapes] = field(
+        default_factory=lambda: Derived(size=KEPT_STACKS)
+    )
+    _read: dict[str, Stamp] = field(default_factory=dict)  # counters when last seen so
 
     def stacked(self, shapes: list[ObstacleShapes]) -> StackedShapes:
         """``shapes`` as one table, kept for the last :data:`KEPT_STACKS` sets asked for
         (checkers with and without a held object alternate). A kept stack holds its
         shapes, so the ids in its key are not reused while it is kept."""
         key = tuple(id(s) for s in shapes)
-        found = self._stacked.get(key)
-        if found is None:
-            found = self._stacked[key] = StackedShapes.of(shapes)
-            if len(self._stacked) > KEPT_STACKS:
-                del self._stacked[next(iter(self._stacked))]  # the oldest
-        return found
+        return self._stacked.get(key, partial(StackedShapes.of, shapes))
 
     def shapes(self, world: World, obj: WorldObject) -> ObstacleShapes:
         """``obj``'s shapes as it stands now: the kept ones if its state is unchanged."""
-        raw = world.body_state(obj)
+        stamp = world.versions.body(obj.name)
         entry = self._entries.get(obj.name)
-        if entry is not None and entry[0] is obj and self._read.get(obj.name) == raw:
-            return entry[2]  # read exactly so before: no need to compare as numbers
-        state = np.array(raw, dtype=float)
+        if entry is not None and entry[0] is obj and self._read.get(obj.name) == stamp:
+            return entry[2]  # nothing wrote to it since it was last seen: no compare
+        state = np.array(world.body_state(obj), dtype=float)
         if entry is not None and entry[0] is obj and _near(entry[1], state):
-            self._read[obj.name] = raw
+            self._read[obj.name] = stamp
             return entry[2]
         base = _base(state)
         if entry is not None and entry[0] is obj and _rigidly_moved(entry[1], state):
@@ -179,7 +177,7 @@ class ObstacleCache:
             shapes = ObstacleShapes.of(world, obj)
             self.builds += 1
         self._entries[obj.name] = (obj, state, shapes, base)
-        self._read[obj.name] = raw
+        self._read[obj.name] = stamp
         return shapes
 
 

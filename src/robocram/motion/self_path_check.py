@@ -21,6 +21,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from functools import partial
 
 import numpy as np
 
@@ -31,7 +32,7 @@ from robocram.motion.robot_geometry import RobotGeometry
 from robocram.motion.self_collision import active_joints
 from robocram.motion.self_collision_matrix import SelfCollisionMatrix
 from robocram.motion.travel_bound import TravelBound
-from robocram.world import RobotHandle, World
+from robocram.world import Derived, RobotHandle, Versions, World
 
 REACH = 1.0  # [m] closest points are asked this far (a farther pair is clear by it)
 MIN_STEP = 0.002  # [m] of a pair's relative travel between two checks near contact
@@ -56,7 +57,10 @@ class SelfPathCheck:
         """The check of a motion of ``joints`` from where the robot is now."""
         world = robot.world
         joints = tuple(joints)
-        pairs, levers, parts = world.derived(_kept_pairs).of(world, robot.name, joints)
+        build = partial(_moved_pairs, world, robot.name, joints)
+        pairs, levers, parts = world.derived(_kept_pairs).get(
+            (robot.name, joints), build, world.versions
+        )
         model = robot.description.model
         now = world.joint_states(robot.name)
         standing = {j: v for j, v in now.items() if model.joints[j].mimic is None}
@@ -180,29 +184,18 @@ def _floors(robot: RobotHandle, pairs: tuple[LinkPair, ...], bounds: FloatArray)
     return floors
 
 
-@dataclass
-class _KeptPairs:
-    """Per robot and planned joints: the pairs they move apart and their levers, kept
-    with the world (every arm motion asks; they change only with the description)."""
-
-    found: dict[tuple[str, tuple[str, ...]], tuple[object, _MovedPairs]]
-
-    def of(self, world: World, robot: str, joints: tuple[str, ...]) -> _MovedPairs:
-        desc = world.robot(robot).description
-        key = (robot, joints)
-        kept = self.found.get(key)
-        if kept is None or kept[0] is not desc:
-            kept = self.found[key] = (desc, _moved_pairs(world, robot, joints))
-            if len(self.found) > KEPT:
-                del self.found[next(iter(self.found))]
-        return kept[1]
-
-
 _MovedPairs = tuple[tuple[LinkPair, ...], FloatArray, SelfParts]  # pairs, levers, parts
 
 
-def _kept_pairs(world: World) -> _KeptPairs:
-    return _KeptPairs({})
+def _kept_pairs(world: World) -> Derived[tuple[str, tuple[str, ...]], _MovedPairs]:
+    """Per robot and planned joints: the pairs they move apart and their levers, kept
+    with the world while the robot's body is the same (every arm motion asks; they
+    change only with the description)."""
+    return Derived(_robot_created, size=KEPT)
+
+
+def _robot_created(versions: Versions, key: tuple[str, tuple[str, ...]]) -> int:
+    return versions.created(key[0])
 
 
 def _moved_pairs(world: World, robot: str, joints: tuple[str, ...]) -> _MovedPairs:

@@ -4,7 +4,8 @@ Nothing between the points needs simulating (the path was checked before it was 
 so following is a walk over the points with a stop point at each: a stop during the
 motion leaves the robot, and what it holds, at the point it had reached. Every executed
 trajectory, or its part up to a stop, is reported to the motion layer's listeners
-(traces, viewers).
+(traces, viewers). A trajectory is checked again from the point reached whenever the
+world changed meanwhile (:mod:`~robocram.projection.path_watch`).
 """
 
 from __future__ import annotations
@@ -19,21 +20,39 @@ from robocram.motion import (
     TrajectoryPoint,
     report_executed,
 )
+from robocram.projection.path_watch import PathWatch, planned_against
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
+from robocram.world import BodyStamps
 
 
-def follow(robot: ProjectedRobot, trajectory: JointTrajectory) -> None:
-    """Move ``robot`` along ``trajectory``; a stopped task leaves it where it had got to."""
+def follow(
+    robot: ProjectedRobot, trajectory: JointTrajectory, checked: BodyStamps | None = None
+) -> None:
+    """Move ``robot`` along ``trajectory``; a stopped task leaves it where it had got to.
+
+    ``checked`` is what the trajectory was planned against (:func:`planned_against` when
+    it was planned; default: the world as it stands now). A body changed since that the
+    rest of the path would touch stops the robot before it.
+
+    Raises:
+        NavigationPathBlocked: a base's or body's path meets a changed body.
+        ManipulationPathBlocked: a joint motion meets a changed body.
+    """
     points = trajectory.points
     count = len(points)
     task = current_task()  # the same at every point: asked once, its stop point per point
     stop_point = checkpoint if task is None else task.check_stop
+    watch = PathWatch(robot, trajectory, checked or planned_against(robot))
     reached = 1
     try:
         while reached < count:
             stop_point()
+            blocked = watch.blocked(reached)  # changed since planned, or meanwhile
+            if blocked is not None:
+                reached = blocked[0]  # the robot gets to the point before
+                raise blocked[1]
             reached += 1
     except BaseException:
         part = replace(trajectory, points=points[:reached])

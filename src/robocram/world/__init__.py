@@ -6,6 +6,7 @@ from robocram.world.camera import Camera
 from robocram.world.catalogue import catalogue_names
 from robocram.world.collision_shapes import CollisionShape
 from robocram.world.contact_point import ContactPoint
+from robocram.world.derived import Derived
 from robocram.world.errors import (
     AttachmentCycleError,
     BodyLoadError,
@@ -28,6 +29,7 @@ from robocram.world.planning_area import AREA_MARGIN, PlanningArea
 from robocram.world.raw_distances import LinkGap, RawDistances
 from robocram.world.ray_hit import RayHit
 from robocram.world.robot_handle import RobotHandle
+from robocram.world.versions import BodyStamps, Stamp, Versions, body_stamps, changed_bodies
 from robocram.world.visibility import Visibility
 from robocram.world.world import World
 from robocram.world.world_object import RobotObject, WorldObject
@@ -37,11 +39,13 @@ __all__ = [
     "AREA_MARGIN",
     "Attachment",
     "AttachmentCycleError",
+    "BodyStamps",
     "BodyLoadError",
     "Camera",
     "ClampedJoint",
     "CollisionShape",
     "ContactPoint",
+    "Derived",
     "DuplicateObjectError",
     "JointLimits",
     "LinkGap",
@@ -55,12 +59,14 @@ __all__ = [
     "RobotHandle",
     "RobotObject",
     "ShapeSpec",
+    "Stamp",
     "TooManyLinksError",
     "UnknownItemError",
     "UnknownJointError",
     "UnknownLinkError",
     "UnknownObjectError",
     "UrdfSpec",
+    "Versions",
     "Visibility",
     "World",
     "WorldValueError",
@@ -69,5 +75,7 @@ __all__ = [
     "WorldObject",
     "WorldState",
     "WorldUsageError",
+    "body_stamps",
     "catalogue_names",
+    "changed_bodies",
 ]

@@ -11,12 +11,15 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
+from functools import partial
 
 import numpy as np
 from numpy.typing import NDArray
 
 from robocram.world.contacts import _link_names
+from robocram.world.derived import Derived
 from robocram.world.pybullet_backend import pybullet
+from robocram.world.versions import Stamp, Versions
 from robocram.world.world_core import WorldCore
 from robocram.world.world_object import WorldObject
 
@@ -43,7 +46,7 @@ class ObstacleBoxes:
     def of(cls, world: WorldCore, skip: Iterable[str]) -> ObstacleBoxes:
         """Read the bounds of every link of every object not named in ``skip``."""
         skipped = frozenset(skip)
-        rows = [_BodyBoxes.read(world, o, ()) for o in world.objects() if o.name not in skipped]
+        rows = [_BodyBoxes.read(world, o) for o in world.objects() if o.name not in skipped]
         return cls.joined(skipped, rows)
 
     @classmethod
@@ -89,18 +92,17 @@ class ObstacleBoxes:
 
 @dataclass(frozen=True)
 class _BodyBoxes:
-    """The bounds of one body's links with shapes, and the body state they were read at."""
+    """The bounds of one body's links with shapes."""
 
     obj: WorldObject
-    state: tuple[float, ...]
     indices: tuple[int, ...]
     names: tuple[str, ...]
     low: FloatArray  # (links, 3)
     high: FloatArray  # (links, 3)
 
     @classmethod
-    def read(cls, world: WorldCore, obj: WorldObject, state: tuple[float, ...]) -> _BodyBoxes:
-        """Read ``obj``'s bounds; ``state`` is its body state now (or empty: unkept)."""
+    def read(cls, world: WorldCore, obj: WorldObject) -> _BodyBoxes:
+        """Read ``obj``'s bounds as it stands now."""
         cid = world.physics_client()
         links = [(i, n) for i, n in _link_names(obj).items() if i in obj.colliders]
         table = np.array(
@@ -108,38 +110,38 @@ class _BodyBoxes:
             dtype=float,
         ).reshape(-1, 6)
         return cls(
-            obj, state, tuple(i for i, _ in links), tuple(n for _, n in links),
+            obj, tuple(i for i, _ in links), tuple(n for _, n in links),
             table[:, :3], table[:, 3:],
         )  # fmt: skip
 
 
+def _table_stamp(versions: Versions, key: tuple[frozenset[str], tuple[str, ...]]) -> Stamp:
+    """A table of the bodies named in ``key[1]`` depends on each one's pose and joints."""
+    return versions.bodies(key[1])
+
+
 @dataclass
 class KeptObstacleBoxes:
-    """Obstacle bounds kept with a world: a body's are read again only when its state
-    (:meth:`WorldCore.body_state`: body id, base pose, joints) changed, two backend calls
-    to ask instead of one per link. Arm motion checks and base drives ask for them many
-    times per plan while only the robot and what it holds move."""
+    """Obstacle bounds kept with a world: a body's are read again only when its pose or
+    joints changed (:meth:`Versions.body`), instead of one backend call per link. Arm
+    motion checks and base drives ask for them many times per plan while only the robot
+    and what it holds move."""
 
-    _bodies: dict[str, _BodyBoxes] = field(default_factory=dict)
-    _last: ObstacleBoxes | None = None  # the table last asked for, of these rows
-    _rows: list[_BodyBoxes] = field(default_factory=list)
+    _bodies: Derived[str, _BodyBoxes] = field(default_factory=lambda: Derived(Versions.body))
+    _tables: Derived[tuple[frozenset[str], tuple[str, ...]], ObstacleBoxes] = field(
+        default_factory=lambda: Derived(_table_stamp, size=1)
+    )  # the table last asked for
 
     def boxes(self, world: WorldCore, skip: Iterable[str]) -> ObstacleBoxes:
         """:meth:`ObstacleBoxes.of`, from the bodies' bounds kept while they stay put."""
         skipped = frozenset(skip)
-        rows = []
-        for obj in world.objects():
-            if obj.name in skipped:
-                continue
-            kept = self._bodies.get(obj.name)
-            state = world.body_state(obj)
-            if kept is None or kept.obj is not obj or kept.state != state:
-                kept = self._bodies[obj.name] = _BodyBoxes.read(world, obj, state)
-            rows.append(kept)
-        same = len(rows) == len(self._rows) and all(
-            a is b for a, b in zip(rows, self._rows, strict=True)
-        )
-        if self._last is None or not same or self._last.skipped != skipped:
-            self._last = ObstacleBoxes.joined(skipped, rows)
-            self._rows = rows
-        return self._last
+        versions = world.versions
+        objects = [obj for obj in world.objects() if obj.name not in skipped]
+
+        def joined() -> ObstacleBoxes:
+            kept = self._bodies
+            rows = [kept.get(o.name, partial(_BodyBoxes.read, world, o), versions) for o in objects]
+            return ObstacleBoxes.joined(skipped, rows)
+
+        key = (skipped, tuple(o.name for o in objects))
+        return self._tables.get(key, joined, versions)

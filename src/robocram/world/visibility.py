@@ -75,12 +75,14 @@ def isolated(world: WorldCore, obj: WorldObject) -> Iterator[None]:
         kept.append((body, pos, orn, lin, ang))
         moved = [p + o for p, o in zip(pos, ISOLATION_OFFSET, strict=True)]
         pybullet.resetBasePositionAndOrientation(body, moved, orn, physicsClientId=cid)
+    world.versions.moved(obj.name)
     try:
         yield
     finally:
         for body, pos, orn, lin, ang in kept:
             pybullet.resetBasePositionAndOrientation(body, pos, orn, physicsClientId=cid)
             pybullet.resetBaseVelocity(body, lin, ang, physicsClientId=cid)
+        world.versions.moved(obj.name)  # back, maybe not to the bit: a new stamp
 
 
 def _tangent_grid(

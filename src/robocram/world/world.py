@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import contextlib
 from collections.abc import Callable, Iterable, Iterator, Sequence
+from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING, Literal, TypeVar, cast
 
@@ -22,12 +23,14 @@ from robocram.world.camera import Camera
 from robocram.world.catalogue import catalogue_item
 from robocram.world.collision_shapes import CollisionShape, collision_shapes
 from robocram.world.contact_point import ContactPoint
+from robocram.world.derived import Derived
 from robocram.world.errors import NoCameraError, WorldValueError
 from robocram.world.obstacle_boxes import KeptObstacleBoxes, ObstacleBoxes
 from robocram.world.png import write_png
 from robocram.world.pybullet_backend import pybullet
 from robocram.world.ray_hit import RayHit, cast_rays
 from robocram.world.robot_urdf import robot_body_spec
+from robocram.world.versions import Versions
 from robocram.world.visibility import Visibility
 from robocram.world.world_core import ORIGIN, ObjectRef, WorldCore
 from robocram.world.world_object import RobotObject, WorldObject
@@ -48,7 +51,7 @@ class World(WorldCore):
         super().__init__(gui, gravity, time_step)
         self._gui = gui
         self._kb: KnowledgeBase | None = None
-        self._radii: dict[int, dict[str, float]] = {}  # body -> link -> radius [m]
+        self._radii: Derived[str, dict[str, float]] = Derived(Versions.created)  # link -> [m]
         self._derived: dict[Callable[[World], object], object] = {}
 
     def derived(self, make: Callable[[World], T]) -> T:
@@ -56,8 +59,10 @@ class World(WorldCore):
 
         Upper layers keep what they derive from a world here (the motion layer its coal
         obstacle shapes), so it lives exactly as long as the world and no module holds a
-        cache. Unlike a robot model a world changes: what is kept must check that it is
-        still right (a copy of the world starts with none).
+        cache. Unlike a robot model a world changes: what is kept is a
+        :class:`~robocram.world.derived.Derived` store (or made of them) that declares
+        what its values depend on, and builds again when the world's
+        :attr:`versions` say that changed (a copy of the world starts with none).
         """
         found = self._derived.get(make)
         if found is None:
@@ -180,7 +185,6 @@ class World(WorldCore):
     def remove(self, obj: ObjectRef) -> None:
         """Take ``obj`` out (see :meth:`WorldCore.remove`); a robot's facts leave the KB."""
         handle = self.object(obj)
-        self._radii.pop(handle.body_id, None)
         super().remove(handle)
         if isinstance(handle, RobotObject) and self._kb is not None:
             name = handle.description.name
@@ -312,18 +316,16 @@ class World(WorldCore):
         forever: the shapes are rigid in the link's frame).
         """
         handle = self.object(obj)
-        cached = self._radii.get(handle.body_id)
-        if cached is None:
-            cached = {}
-            for link in self.link_names(handle):
-                origin = np.array(self.link_pose(handle, link).position)
-                low, high = self.link_aabb(handle, link)
-                far = np.maximum(
-                    np.abs(np.subtract(low, origin)), np.abs(np.subtract(high, origin))
-                )
-                cached[link] = float(np.linalg.norm(far))
-            self._radii[handle.body_id] = cached
-        return dict(cached)
+        return dict(self._radii.get(handle.name, partial(self._link_radii, handle), self.versions))
+
+    def _link_radii(self, handle: WorldObject) -> dict[str, float]:
+        radii = {}
+        for link in self.link_names(handle):
+            origin = np.array(self.link_pose(handle, link).position)
+            low, high = self.link_aabb(handle, link)
+            far = np.maximum(np.abs(np.subtract(low, origin)), np.abs(np.subtract(high, origin)))
+            radii[link] = float(np.linalg.norm(far))
+        return radii
 
     def link_distances(
         self,

@@ -13,6 +13,7 @@ from robocram.robots import RobotModel, mimic_followers
 from robocram.tf import Pose, PoseLike
 from robocram.world.attachment import Attachment, check_acyclic
 from robocram.world.body_loading import create_body
+from robocram.world.derived import Derived
 from robocram.world.errors import (
     DuplicateObjectError,
     NotARobotError,
@@ -28,6 +29,7 @@ from robocram.world.joint_state import ClampedJoint, JointLimits, clamp_values
 from robocram.world.pybullet_backend import pybullet
 from robocram.world.settling import LOOK, at_rest
 from robocram.world.sleeping import asleep
+from robocram.world.versions import Versions
 from robocram.world.world_object import RobotObject, WorldObject
 
 ObjectRef = WorldObject | str
@@ -66,6 +68,14 @@ class WorldCore:
         self._attachments: dict[str, Attachment] = {}  # by attached object name
         self._holds: dict[str, dict[int, float]] = {}  # robot -> joint index -> held value
         self._motors = HeldMotors()  # a robot's held joints need no motor
+        self._versions = Versions()  # stamped by every write below
+        self._stepping: Derived[None, tuple[list[str], list[str]]] = Derived(_structure)
+
+    @property
+    def versions(self) -> Versions:
+        """The world's change counters: per body its pose and joints, and the structure
+        (what a cache compares instead of states; see :mod:`robocram.world.derived`)."""
+        return self._versions
 
     def close(self) -> None:
         """Disconnect the physics client; the world is unusable afterwards."""
@@ -121,6 +131,7 @@ class WorldCore:
             if pybullet.getCollisionShapeData(*handle.locate(i), physicsClientId=cid)
         )  # fmt: skip
         self._objects[handle.name] = handle
+        self._versions.added(handle.name)
         if handle.joint_index:
             self._holds[handle.name] = {}
         self.set_pose(handle, pose)
@@ -175,6 +186,7 @@ class WorldCore:
         self._inertial.pop(handle.name, None)
         self._part_bases.pop(handle.name, None)
         self._holds.pop(handle.name, None)
+        self._versions.removed(handle.name)
 
     def pose(self, obj: ObjectRef) -> Pose:
         """Pose of the object's root link frame in the world."""
@@ -197,6 +209,7 @@ class WorldCore:
             self._attachments[handle.name] = Attachment(
                 att.obj, att.robot, att.link, link_pose.inverse() * Pose.coerce(pose)
             )
+            self._versions.restructured()  # held the same, at another grip
         self._follow(handle.name)
 
     def _place(self, handle: WorldObject, pose: Pose) -> None:
@@ -209,6 +222,7 @@ class WorldCore:
                 body, base.position, base.orientation, physicsClientId=cid
             )
             pybullet.resetBaseVelocity(body, (0, 0, 0), (0, 0, 0), physicsClientId=cid)
+        self._versions.moved(handle.name)
 
     def body_state(self, obj: ObjectRef) -> tuple[float, ...]:
         """Numbers that change whenever ``obj``'s shapes move: its body id, base pose and
@@ -335,6 +349,7 @@ class WorldCore:
         applied.update(self._mimic_values(handle, applied))
         by_index = {handle.joint_index[name]: value for name, value in applied.items()}
         _reset_slots(handle, by_index, self.physics_client())
+        self._versions.jointed(handle.name)
         self._holds.setdefault(handle.name, {}).update(by_index)
         if carry:
             self._follow(handle.name)
@@ -364,12 +379,14 @@ class WorldCore:
         link_pose = self.link_pose(carrier, link)
         rel = link_pose.inverse() * self.pose(handle)
         self._attachments[handle.name] = Attachment(handle.name, carrier.name, link, rel)
+        self._versions.restructured()
 
     def detach(self, obj: ObjectRef) -> None:
         """Let ``obj`` go; it stays where it is. Detaching a free object is an error."""
         handle = self.object(obj)
         if self._attachments.pop(handle.name, None) is None:
             raise WorldValueError(f"{handle.name!r} is not attached to anything; nothing to detach")
+        self._versions.restructured()
 
     def all_attachments(self) -> list[Attachment]:
         """Every attachment of the world, in the order they were made."""
@@ -383,6 +400,7 @@ class WorldCore:
             check_acyclic(new, self.object(att.obj).name, att.robot)
             new[att.obj] = att
         self._attachments = new
+        self._versions.restructured()
 
     def held_joints(self, obj: ObjectRef) -> dict[str, float]:
         """The joint values [rad | m] that simulation holds ``obj``'s joints at, by name."""
@@ -429,10 +447,20 @@ class WorldCore:
             self._motors.match(body, held.keys(), self.time_step, cid)
         pybullet.stepSimulation(physicsClientId=cid)
         self.time += self.time_step
+        self._versions.stepped(*self._stepping.get(None, self._stepped, self._versions))
         for body, held in robots:
             _reset_joints(body, held, cid)
         for carrier in {a.robot for a in self._attachments.values()}:
             self._follow(carrier)
+
+    def _stepped(self) -> tuple[list[str], list[str]]:
+        """The objects a physics step may move (all but static ones; a cut model's parts
+        are bodies of their own), and those whose joints it may change (all with some)."""
+        objects = self._objects.values()
+        return (
+            [o.name for o in objects if not o.is_static or o.parts],
+            [o.name for o in objects if o.movable_joints],
+        )
 
     def simulate(self, seconds: float, stop_check: Callable[[], None] | None = None) -> int:
         """Run physics for ``seconds`` [s] of simulated time; return the number of steps.
@@ -545,6 +573,10 @@ def _reset_joints(body: int, values: Mapping[int, float], cid: int) -> None:
 def _mimic_masters(model: RobotModel) -> frozenset[str]:
     """The joints some mimic joint of ``model`` follows."""
     return frozenset(j.mimic.joint for j in model.joints.values() if j.mimic is not None)
+
+
+def _structure(versions: Versions, key: None) -> int:
+    return versions.structure
 
 
 def _check_time_step(time_step: float) -> None:

@@ -81,6 +81,8 @@ class WorldState:
                 pybullet.resetBaseVelocity(target, *body.velocity, physicsClientId=cid)
                 for index, position, velocity in body.joints:
                     pybullet.resetJointState(target, index, position, velocity, physicsClientId=cid)
+            world.versions.moved(handle.name)
+            world.versions.jointed(handle.name)
         world.set_attachments(self.attachments)
         for name, held in self.holds:
             world.set_held_joints(name, dict(held))
