@@ -45,7 +45,7 @@ def _drive(robot: ProjectedRobot) -> tuple[object, object]:
     start = robot.world.pose("pr2")
     checked = planned_against(robot)
     goal = Pose((start.position[0] + 1.0, start.position[1], 0.0), start.orientation)
-    return plan_base_path(robot.world, "pr2", goal).trajectory, checked
+    return plan_base_path(robot.handle, goal).trajectory, checked
 
 
 def test_a_body_added_after_planning_stops_the_drive_before_it(robot: ProjectedRobot) -> None:
@@ -67,7 +67,7 @@ def test_a_body_added_after_planning_stops_the_drive_before_it(robot: ProjectedR
 def test_a_body_moved_into_the_arm_path_stops_the_arm(robot: ProjectedRobot) -> None:
     world = robot.world
     checked = planned_against(robot)
-    motion = plan_arm_motion(world, "pr2", ARM)
+    motion = plan_arm_motion(robot.handle, ARM)
     start = world.joint_states("pr2")
     world.set_joint_states("pr2", ARM)  # where the forearm ends up, to put a box there
     wrist = world.link_pose("pr2", "r_wrist_flex_link").position

@@ -25,7 +25,7 @@ from robocram.motion.self_path_check import SelfPathCheck
 from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
-from robocram.world import UnknownObjectError, World
+from robocram.world import RobotHandle, UnknownObjectError, World
 
 JOINTS = (
     "torso_lift_joint", "r_shoulder_pan_joint", "r_shoulder_lift_joint",
@@ -66,11 +66,11 @@ def _answers(world: World) -> Answers:
         if obj.name != "pr2":
             shapes = cache.shapes(world, obj)
             found[f"shapes {obj.name}"] = (shapes.labels, shapes.centres, shapes.halves)
-    coal = CoalClearance(BulletScene(world, "pr2", JOINTS))
+    coal = CoalClearance(BulletScene(RobotHandle.of(world, "pr2"), JOINTS))
     found["clearances"] = [coal.clearances(q) for q in _configurations(world)]
-    check = SelfPathCheck.of(world, "pr2", JOINTS)
+    check = SelfPathCheck.of(RobotHandle.of(world, "pr2"), JOINTS)
     found["self pairs"] = check.pairs  # levers bound travel with radii read once per body
-    with BaseCollisionChecker.build(world, "pr2", GOAL) as checker:
+    with BaseCollisionChecker.build(RobotHandle.of(world, "pr2"), GOAL) as checker:
         footprint = checker.footprint
         poses = np.array([[-1.12, 1.24, 1.88], [-1.0, 0.8, 0.0], [-1.3, 1.0, 3.0]])
         found["footprint"] = (footprint.points, footprint.masks, checker.fast_hits(poses, False))
@@ -251,8 +251,10 @@ def test_reading_leaves_every_counter_alone() -> None:
         world.ray_cast((-1.12, 1.24, 1.5), (-1.12, 1.24, -0.1))
         world.attachments("pr2")
         world.kb.first("robot(R)")
-        CoalClearance(BulletScene(world, "pr2", JOINTS)).clearances(_configurations(world)[0])
-        SelfPathCheck.of(world, "pr2", JOINTS)
+        CoalClearance(BulletScene(RobotHandle.of(world, "pr2"), JOINTS)).clearances(
+            _configurations(world)[0]
+        )
+        SelfPathCheck.of(RobotHandle.of(world, "pr2"), JOINTS)
         assert _stamps(world) == before
         assert world.versions.tick == tick
 
