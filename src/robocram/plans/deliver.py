@@ -31,7 +31,7 @@ from robocram.plans.errors import DeliveryExhausted
 from robocram.plans.location_poses import location_poses, next_pose
 from robocram.plans.pick_object import GRASPING, Held
 from robocram.plans.place_object import held_object, place_object
-from robocram.plans.robot_facts import current_robot
+from robocram.plans.robot_facts import current_robot, neck_links
 from robocram.plans.stands import map_pose, placing_stands
 from robocram.tf import Pose, PoseStamped
 
@@ -39,6 +39,7 @@ STAND_RETRIES = 3  # stands per placing spot where placing is tried
 PLACE_RETRIES = 6  # placing spots tried (a spot in the middle of a table has no stand)
 REACH_STANDS = 6  # stands from the reachable_for costmap tried per spot, at most
 CARRY_CLEARANCE = 0.08  # [m] the held object's frame is carried this far over the spot
+AHEAD = (1.0, 0.0, 0.0)  # the direction a robot looks in to drive, in its base frame
 
 
 def _place_at(held: Held, spot: Pose, arm: str | None) -> Any:
@@ -48,16 +49,8 @@ def _place_at(held: Held, spot: Pose, arm: str | None) -> Any:
     return place_object(held, put, arm=arm)
 
 
-def _carry_above(held: Held, spot: Pose) -> None:
-    """Lift the held object over ``spot``'s height (plus a margin) if it hangs lower.
-
-    An object taken out of a drawer is held below a table's top; driving up to the table
-    with it would run the hand into the table.
-    """
-    low = map_pose(held.object_name).position[2]
-    rise = spot.position[2] + CARRY_CLEARANCE - low
-    if rise <= 0.0:
-        return
+def _lift(held: Held, rise: float) -> None:
+    """Raise the held object by ``rise`` [m], the hand's orientation kept."""
     tool = map_pose(held.tool_frame)
     x, y, z = tool.position
     lifted = PoseStamped.from_pose("map", Pose((x, y, z + rise), tool.orientation))
@@ -70,6 +63,36 @@ def _carry_above(held: Held, spot: Pose) -> None:
             touching=held.object_name,
         )  # fmt: skip
     )
+
+
+def _neck_in_the_way(failure: ManipulationLowLevelFailure) -> bool:
+    """Whether ``failure`` names one of the robot's neck links among what the arm hits."""
+    pairs = getattr(failure, "colliding_pairs", None) or ()
+    neck = set(neck_links(current_robot()))
+    return any(link in neck for pair in pairs for link in pair)
+
+
+def _carry_above(held: Held, spot: Pose) -> None:
+    """Lift the held object over ``spot``'s height (plus a margin) if it hangs lower.
+
+    An object taken out of a drawer is held below a table's top; driving up to the table
+    with it would run the hand into the table. A head still turned down at what was
+    picked up may be in the lift's way (a Stretch's lift carriage meets its tilted head):
+    then the robot looks ahead, as it does to drive, and lifts again.
+    """
+    rise = spot.position[2] + CARRY_CLEARANCE - map_pose(held.object_name).position[2]
+    if rise <= 0.0:
+        return
+    try:
+        _lift(held, rise)
+    except ManipulationLowLevelFailure as failure:
+        if not _neck_in_the_way(failure):
+            raise
+        try:
+            perform(a.motion(type="looking", direction=AHEAD))
+        except PlanFailure:  # a head that cannot turn: the lift's own failure stands
+            raise failure from None
+        _lift(held, rise)
 
 
 def _stands(held: Held, spot: Pose, arm: str | None, reach_stands: bool) -> Iterator[Pose]:
