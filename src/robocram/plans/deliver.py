@@ -26,12 +26,12 @@ from robocram.execution.failures import (
     PlanFailure,
 )
 from robocram.plans.attempt_log import AttemptLog
-from robocram.plans.basic_actions import navigate
+from robocram.plans.basic_actions import look_ahead, navigate, neck_in_the_way
 from robocram.plans.errors import DeliveryExhausted
 from robocram.plans.location_poses import location_poses, next_pose
 from robocram.plans.pick_object import GRASPING, Held
 from robocram.plans.place_object import held_object, place_object
-from robocram.plans.robot_facts import current_robot, neck_links
+from robocram.plans.robot_facts import current_robot
 from robocram.plans.stands import map_pose, placing_stands
 from robocram.tf import Pose, PoseStamped
 
@@ -39,7 +39,6 @@ STAND_RETRIES = 3  # stands per placing spot where placing is tried
 PLACE_RETRIES = 6  # placing spots tried (a spot in the middle of a table has no stand)
 REACH_STANDS = 6  # stands from the reachable_for costmap tried per spot, at most
 CARRY_CLEARANCE = 0.08  # [m] the held object's frame is carried this far over the spot
-AHEAD = (1.0, 0.0, 0.0)  # the direction a robot looks in to drive, in its base frame
 
 
 def _place_at(held: Held, spot: Pose, arm: str | None) -> Any:
@@ -65,13 +64,6 @@ def _lift(held: Held, rise: float) -> None:
     )
 
 
-def _neck_in_the_way(failure: ManipulationLowLevelFailure) -> bool:
-    """Whether ``failure`` names one of the robot's neck links among what the arm hits."""
-    pairs = getattr(failure, "colliding_pairs", None) or ()
-    neck = set(neck_links(current_robot()))
-    return any(link in neck for pair in pairs for link in pair)
-
-
 def _carry_above(held: Held, spot: Pose) -> None:
     """Lift the held object over ``spot``'s height (plus a margin) if it hangs lower.
 
@@ -86,12 +78,8 @@ def _carry_above(held: Held, spot: Pose) -> None:
     try:
         _lift(held, rise)
     except ManipulationLowLevelFailure as failure:
-        if not _neck_in_the_way(failure):
+        if not (neck_in_the_way(failure) and look_ahead()):
             raise
-        try:
-            perform(a.motion(type="looking", direction=AHEAD))
-        except PlanFailure:  # a head that cannot turn: the lift's own failure stands
-            raise failure from None
         _lift(held, rise)
 
 
