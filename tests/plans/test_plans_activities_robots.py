@@ -41,12 +41,6 @@ def test_the_hsr_sets_the_table_for_two() -> None:
         world.close()
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="the drafted Fetch's palm is a stand-in box (its meshes are missing): at the "
-    "handle every IK solution puts gripper_link into the drawer's front and handle beyond "
-    "the hand's 5 mm bound, so no drawer opens and nothing kept in one is seen",
-)
 def test_the_drafted_fetch_opens_the_bowls_drawer() -> None:
     scene = breakfast_scene(FETCH)
     world = scene.world
