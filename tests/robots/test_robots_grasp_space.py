@@ -84,3 +84,13 @@ def test_the_closed_fingers_meet(fetch: tuple[World, LoadedDescription]) -> None
 def test_a_robot_with_its_meshes_is_left_alone() -> None:
     pr2 = load_description("pr2")
     assert clear_grasp_space(pr2.model, pr2.arms) is pr2.model
+
+
+def test_loading_again_shares_the_cut_model(fetch: tuple[World, LoadedDescription]) -> None:
+    """The cut model is kept with the parsed one: a second load builds no new kinematics."""
+    _, desc = fetch
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        again = load_description(str(FETCH))
+    assert again.model is desc.model
+    assert load_description(desc).model is desc.model  # a loaded description, loaded again

@@ -33,7 +33,34 @@ CUT_TOLERANCE = 1e-9  # [m]
 
 def clear_grasp_space(model: RobotModel, arms: Mapping[str, ArmDescription]) -> RobotModel:
     """``model`` with the stand-in boxes of each gripper's rigid hand cut back behind its
-    tool frame by half the widest opening; ``model`` itself when no box was cut."""
+    tool frame by half the widest opening; ``model`` itself when no box was cut.
+
+    The result is kept with ``model`` (``RobotModel.derived``), so loading a description
+    again shares one model and what is derived from it (its kinematics)."""
+    key = tuple(sorted((name, _hand_key(arm)) for name, arm in arms.items()))
+    kept = model.derived(_cut_models)
+    if key not in kept:
+        kept[key] = _cleared(model, arms)
+    return kept[key]
+
+
+HandKey = tuple[object, ...]
+
+
+def _hand_key(arm: ArmDescription) -> HandKey:
+    """What of ``arm`` the cut reads."""
+    gripper = arm.gripper
+    closed = tuple(sorted(gripper.at(0.0).items())) if gripper is not None else ()
+    opening = gripper.max_opening if gripper is not None else None
+    return (arm.tool_frame, arm.end_effector_link, tuple(arm.gripper_links), closed, opening)
+
+
+def _cut_models(model: RobotModel) -> dict[tuple[tuple[str, HandKey], ...], RobotModel]:
+    """The models cut from ``model``, by the hands they were cut for (kept with it)."""
+    return {}
+
+
+def _cleared(model: RobotModel, arms: Mapping[str, ArmDescription]) -> RobotModel:
     links = dict(model.links)
     for arm in arms.values():
         gripper = arm.gripper
