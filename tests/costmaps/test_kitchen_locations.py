@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import itertools
+import math
 from collections.abc import Iterator
 
 import pytest
@@ -81,3 +82,18 @@ def test_an_object_shut_in_a_box_is_visible_from_nowhere(kitchen: KitchenScene) 
         with pytest.raises(LocationNotFound) as caught:
             next(CostmapLocations(world).poses(a.location(visible_for="pr2", object="milk-1")))
     assert caught.value.accepted == 0
+
+
+def test_near_a_part_weighs_cells_by_the_parts_bounds(kitchen: KitchenScene) -> None:
+    """``near`` takes a part, ``(object, link)``, as ``on`` does: the search looks into an
+    opened drawer from stands near the drawer, not near the whole kitchen (whose bounds
+    cover the room, so every cell in it was equally near)."""
+    world = kitchen.world
+    locations = CostmapLocations(world)
+    low, high = world.link_aabb(*DRAWER)
+    poses = list(itertools.islice(locations.poses(a.location(near=DRAWER)), 10))
+    assert len(poses) == 10
+    for pose in poses:
+        x, y, _ = pose.position
+        gap = math.hypot(max(low[0] - x, x - high[0], 0.0), max(low[1] - y, y - high[1], 0.0))
+        assert gap < 1.0, pose  # beyond 1 m of the drawer's bounds nothing is near it

@@ -24,9 +24,9 @@ TABLE_TOP = 0.75  # [m] the kitchen table's top
 
 @pytest.mark.xfail(
     strict=True,
-    reason="the HSR's parking configuration puts its hand into its head_tilt_link at the "
-    "lift it raised to look (every park before a fetch is ManipulationPathBlocked), and it "
-    "does not see the bowls in their drawer past its hand (SearchExhausted, docs/status.md)",
+    reason="the HSR sets 4 of 7 things (the cups and spoons): from no stand does it see the "
+    "two bowls in their drawer nor the milk in the fridge (SearchExhausted), and it cannot "
+    "hold the fridge's handle while closing its door (EnvironmentManipulationImpossible)",
 )
 def test_the_hsr_sets_the_table_for_two() -> None:
     scene = breakfast_scene("hsrb")
@@ -41,12 +41,6 @@ def test_the_hsr_sets_the_table_for_two() -> None:
         world.close()
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="the drafted Fetch's palm is a stand-in box (its meshes are missing): at the "
-    "handle every IK solution puts gripper_link into the drawer's front and handle beyond "
-    "the hand's 5 mm bound, so no drawer opens and nothing kept in one is seen",
-)
 def test_the_drafted_fetch_opens_the_bowls_drawer() -> None:
     scene = breakfast_scene(FETCH)
     world = scene.world

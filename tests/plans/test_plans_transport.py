@@ -2,7 +2,8 @@
 
 The mug goes from the north counter to the table; afterwards the KB says it rests on the
 kitchen's table top and stays put when simulated, the arms are parked and any drawer the
-search opened is closed again. On the PR2 the bowl comes out of the top drawer too.
+search opened is closed again. On the PR2 and the HSR the bowl comes out of the top drawer
+too.
 """
 
 from __future__ import annotations
@@ -78,8 +79,13 @@ def test_the_mug_goes_from_the_counter_to_the_table(kitchen: KitchenScene) -> No
     assert world.joint_states("kitchen")[DRAWER_JOINT] == pytest.approx(0.0, abs=0.01)
 
 
-def test_the_pr2_takes_the_bowl_out_of_the_drawer_to_the_table() -> None:
-    scene = kitchen_scene("pr2")
+@pytest.mark.parametrize("robot", ["pr2", "hsrb"])
+def test_the_bowl_comes_out_of_the_drawer_to_the_table(robot: str) -> None:
+    """The HSR sees into the opened drawer from beside it, not from the handle stand (its
+    camera too low over the drawer's front) nor from a metre away (over the drawer's side
+    it saw 67 % of the bowl); its parking pose, hitting the head still turned down at the
+    drawer with the lift up, is taken after it looks ahead."""
+    scene = kitchen_scene(robot)
     world = scene.world
     result = _transport(scene, "bowl", "bowl-1")
     assert [o.container.link for o in result.opened] == ["drawer_unit_drawer_3"]

@@ -131,21 +131,7 @@ def _base_steps(trajectories: list[JointTrajectory]) -> list[np.ndarray]:
     return [sideways(t.positions()) for t in trajectories if t.kind == "base"]
 
 
-PALM_IN_THE_MUG = pytest.mark.xfail(
-    reason="the drafted Fetch's tool frame is its palm link (gripper_link, a stand-in box: "
-    "meshes left out), so every grasp puts the palm 46-79 mm into the mug; bounded "
-    "allow_hand (5 mm, issue 35) refuses it: the draft needs a tool frame at the fingertips",
-    strict=True,
-)
-
-
-@pytest.mark.parametrize(
-    "robot",
-    [
-        "stretch",
-        pytest.param("fetch", marks=PALM_IN_THE_MUG),
-    ],
-)
+@pytest.mark.parametrize("robot", ["stretch", "fetch"])
 def test_the_kitchen_transport_drives_without_sliding(
     robot: str, request: pytest.FixtureRequest
 ) -> None:

@@ -102,17 +102,9 @@ def _went_as_planned(result: TransportResult, drawer: str) -> None:
     assert stages == ["open", "fetch", "deliver", "close"]
 
 
-PALM_IN_THE_HANDLE = pytest.mark.xfail(
-    reason="the drafted Fetch's tool frame is its palm link (gripper_link, a stand-in box: meshes "
-    "left out), so every grasp puts the palm 46-79 mm into the mug (or a handle); bounded "
-    "allow_hand (5 mm, issue 35) refuses it: the draft needs a tool frame at the fingertips",
-    strict=True,
-)
-
-
 @pytest.mark.parametrize(
     "kitchen",
-    ["pr2", pytest.param(str(FETCH), marks=PALM_IN_THE_HANDLE)],
+    ["pr2", str(FETCH)],
     indirect=True,
     ids=["pr2", "fetch"],
 )

@@ -112,15 +112,6 @@ def test_a_parked_arm_in_the_view_is_told_to_park_elsewhere_not_to_park() -> Non
         scene.world.close()
 
 
-PALM_IN_THE_MUG = pytest.mark.xfail(
-    reason="the drafted Fetch's tool frame is its palm link (gripper_link, a stand-in box: meshes "
-    "left out), so every grasp puts the palm 46-79 mm into the mug (or a handle); bounded "
-    "allow_hand (5 mm, issue 35) refuses it: the draft needs a tool frame at the fingertips",
-    strict=True,
-)
-
-
-@PALM_IN_THE_MUG
 def test_demo_command_runs_a_robot_file(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["demo", "--robot", str(FETCH)]) == 0
     out = capsys.readouterr().out
@@ -135,7 +126,6 @@ def test_demo_command_names_the_ways_for_an_unknown_robot(
     assert "no built-in robot 'fetch'" in err and ".py file" in err
 
 
-@PALM_IN_THE_MUG
 def test_example_script_runs_a_robot_file(
     monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
 ) -> None:

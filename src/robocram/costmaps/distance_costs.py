@@ -43,8 +43,9 @@ def ring(
 
 
 def near_cost(query: LocationQuery, value: object, alive: BoolGrid) -> CostLayer:
-    """``near=obj``: weight falls off linearly from the object's bounds to 1 m away."""
-    low, high = query.world.aabb(query.object(value, "near"))
+    """``near=obj`` (or ``(obj, link)``, a part such as a drawer): weight falls off linearly
+    from its bounds to 1 m away."""
+    low, high = query.bounds(value, "near")
     x, y = query.centres()
     dx = np.maximum(np.maximum(low[0] - x, x - high[0]), 0.0)
     dy = np.maximum(np.maximum(low[1] - y, y - high[1]), 0.0)

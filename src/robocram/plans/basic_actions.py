@@ -11,8 +11,11 @@ from typing import Any
 from robocram.designators import ObjectDesignator, a, an
 from robocram.execution import perform
 from robocram.execution.failures import (
+    ManipulationLowLevelFailure,
     ManipulationPathBlocked,
+    ManipulationPoseUnreachable,
     NavigationLowLevelFailure,
+    PlanFailure,
     PtuPathBlocked,
     TorsoPathBlocked,
 )
@@ -20,6 +23,7 @@ from robocram.plans.errors import PlanSetupError
 from robocram.plans.robot_facts import (
     base_frame,
     current_robot,
+    neck_links,
     parking,
     robot_arms,
     torso_limit,
@@ -32,6 +36,7 @@ from robocram.tf import Pose, PoseStamped, transform_pose
 # tried again, highest first (an HSR's head turned down meets its parked hand with the
 # lift high, and sees nothing in a drawer with it low)
 LOOK_HEIGHTS = (0.5, 0.25, 0.0)
+AHEAD = (1.0, 0.0, 0.0)  # the direction a robot looks in to drive, in its base frame
 PARKING_BACKOFFS = ((-0.15, 0.0), (-0.45, 0.0), (0.0, 0.2), (0.0, -0.2), (-0.2, 0.2), (-0.2, -0.2))
 
 
@@ -57,16 +62,41 @@ def park_arms(arm: str | None = None) -> list[str]:
     return parked
 
 
+def neck_in_the_way(failure: ManipulationLowLevelFailure) -> bool:
+    """Whether ``failure`` names one of the robot's neck links among what the arm hits."""
+    if not isinstance(failure, ManipulationPoseUnreachable):
+        return False
+    neck = set(neck_links(current_robot()))
+    return any(link in neck for pair in failure.colliding_pairs or () for link in pair)
+
+
+def look_ahead() -> bool:
+    """Look ahead (:data:`AHEAD`), as a robot does to drive; whether the head turned."""
+    try:
+        perform(a.motion(type="looking", direction=AHEAD))
+    except PlanFailure:
+        return False
+    return True
+
+
 def _park(robot: str, arm: str, states: list[list[object]]) -> None:
-    """Park ``arm``; when its parking pose would hit what the robot stands at (a table the
-    hand just put something on, a wall beside it), move the base away and try again: back
-    first, then to either side (:data:`PARKING_BACKOFFS`); a move that cannot be driven is
-    skipped. The parking failure is raised when every move was tried."""
+    """Park ``arm``; when its parking pose would hit the head, still turned down at what the
+    robot looked at (an HSR's, with its lift up), look ahead and try again; when it would
+    hit what the robot stands at (a table the hand just put something on, a wall beside
+    it), move the base away and try again: back first, then to either side
+    (:data:`PARKING_BACKOFFS`); a move that cannot be driven is skipped. The parking
+    failure is raised when every move was tried."""
     try:
         perform(a.motion(type="moving-arm-joints", arm=arm, configuration=states))
         return
     except ManipulationPathBlocked as failure:
         blocked = failure
+    if neck_in_the_way(blocked) and look_ahead():
+        try:
+            perform(a.motion(type="moving-arm-joints", arm=arm, configuration=states))
+            return
+        except ManipulationPathBlocked as failure:
+            blocked = failure
     origin = transform_pose(PoseStamped(base_frame(robot)), "map").pose
     for forward, left in PARKING_BACKOFFS:
         moved = origin * Pose((forward, left, 0.0))

@@ -26,7 +26,7 @@ from robocram.execution.failures import (
     PlanFailure,
 )
 from robocram.plans.attempt_log import AttemptLog
-from robocram.plans.basic_actions import navigate
+from robocram.plans.basic_actions import look_ahead, navigate, neck_in_the_way
 from robocram.plans.errors import DeliveryExhausted, PlanArgumentError
 from robocram.plans.location_poses import location_poses, next_pose
 from robocram.plans.pick_object import GRASPING, Held
@@ -48,16 +48,8 @@ def _place_at(held: Held, spot: Pose, arm: str | None) -> Any:
     return place_object(held, put, arm=arm)
 
 
-def _carry_above(held: Held, spot: Pose) -> None:
-    """Lift the held object over ``spot``'s height (plus a margin) if it hangs lower.
-
-    An object taken out of a drawer is held below a table's top; driving up to the table
-    with it would run the hand into the table.
-    """
-    low = map_pose(held.object_name).position[2]
-    rise = spot.position[2] + CARRY_CLEARANCE - low
-    if rise <= 0.0:
-        return
+def _lift(held: Held, rise: float) -> None:
+    """Raise the held object by ``rise`` [m], the hand's orientation kept."""
     tool = map_pose(held.tool_frame)
     x, y, z = tool.position
     lifted = PoseStamped.from_pose("map", Pose((x, y, z + rise), tool.orientation))
@@ -70,6 +62,25 @@ def _carry_above(held: Held, spot: Pose) -> None:
             touching=held.object_name,
         )  # fmt: skip
     )
+
+
+def _carry_above(held: Held, spot: Pose) -> None:
+    """Lift the held object over ``spot``'s height (plus a margin) if it hangs lower.
+
+    An object taken out of a drawer is held below a table's top; driving up to the table
+    with it would run the hand into the table. A head still turned down at what was
+    picked up may be in the lift's way (a Stretch's lift carriage meets its tilted head):
+    then the robot looks ahead, as it does to drive, and lifts again.
+    """
+    rise = spot.position[2] + CARRY_CLEARANCE - map_pose(held.object_name).position[2]
+    if rise <= 0.0:
+        return
+    try:
+        _lift(held, rise)
+    except ManipulationLowLevelFailure as failure:
+        if not (neck_in_the_way(failure) and look_ahead()):
+            raise
+        _lift(held, rise)
 
 
 def _stands(held: Held, spot: Pose, arm: str | None, reach_stands: bool) -> Iterator[Pose]:

@@ -96,6 +96,12 @@ def first_arm_link(robot: str, arm: str) -> str | None:
     return row.links[0] if row is not None and row.links else None
 
 
+def neck_links(robot: str) -> tuple[str, ...]:
+    """The links of the robot's neck (a pan-tilt head's, or a neck arm's); empty if none."""
+    row = rp.ROBOT_NECK_LINKS.first(current_kb(), robot=robot)
+    return tuple(row.links) if row is not None else ()
+
+
 def grasping_arms(robot: str) -> list[str]:
     """The robot's arms with a gripper (``grasping_arm/2`` of the grasp model)."""
     try:

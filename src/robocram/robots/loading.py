@@ -22,6 +22,7 @@ from robocram.robots.description_check import (
 from robocram.robots.description_source import description_from
 from robocram.robots.errors import DescriptionCheckError, DescriptionUsageError
 from robocram.robots.findings import warn
+from robocram.robots.grasp_space import clear_grasp_space
 from robocram.robots.limit_check import check_acceleration_limits, check_rate_limits
 from robocram.robots.package_resolver import PackageResolver
 from robocram.robots.robot_model import MODELS, RobotModel
@@ -62,6 +63,7 @@ def load_description(
     arms = {
         key: derive_arm(desc.name, infer_arm(arm, model), model) for key, arm in desc.arms.items()
     }
+    model = clear_grasp_space(model, arms)  # stand-in boxes out of the grippers' grasp
     for arm in arms.values():
         check_values(desc.name, model, arm.parking)
         check_values(desc.name, model, arm.carrying)

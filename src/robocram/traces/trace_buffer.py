@@ -78,6 +78,7 @@ class RunBuffer:
     executed: int = 0  # trajectories reported so far: the next one's sequence number
     ended: tuple[str, float | None] = ("running", None)  # (status, end) of the top level
     scene: frozenset[str] = frozenset()  # the bodies of its scene: others are kept as added
+    sim_time: float | None = None  # [s] the world's simulated time at its last state kept
 
     def key(self, order: int) -> int:
         """The database id of this run's ``order``-th task (the run must have been written)."""
