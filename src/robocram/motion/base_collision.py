@@ -104,7 +104,7 @@ class BaseCollisionChecker:
         """
         world = robot.world
         start = world.pose(robot.name)
-        carried = _carried(robot)
+        carried = robot.holding()
         bins, footprint = _footprint(robot, carried, start)
         skip = {robot.name, *carried} | {o.name for o in world.objects("floor")}
         obstacles = world.obstacle_boxes(skip)
@@ -400,7 +400,7 @@ def blockers_at(
     x, y, yaw = (float(v) for v in pose)
     world.set_pose(robot.name, Pose((x, y, start.position[2]), quat.from_euler(0.0, 0.0, yaw)))
     try:
-        pairs = _contacts_now(world, robot.name, _carried(robot), allowed_links)
+        pairs = _contacts_now(world, robot.name, robot.holding(), allowed_links)
         return sorted({other for _, other in pairs})
     finally:
         world.set_pose(robot.name, start)
@@ -450,18 +450,6 @@ _PostureKey = tuple[object, ...]  # the robot's name first
 
 def _robot_created(versions: Versions, key: _PostureKey) -> int:
     return versions.created(str(key[0]))
-
-
-def _carried(robot: RobotHandle) -> tuple[str, ...]:
-    """Objects the robot holds, and what they hold, recursively."""
-    world = robot.world
-    found: list[str] = []
-    frontier = [robot.name]
-    while frontier:
-        held = list(world.attachments(frontier.pop()))
-        found += held
-        frontier += held
-    return tuple(found)
 
 
 def _boxes_in_base(robot: RobotHandle, carried: tuple[str, ...], start: Pose) -> list[Box]:

@@ -60,7 +60,7 @@ class PathWatch:
         """The first point from ``start`` where the robot or what it carries touches one
         of ``watched`` as it does not where it stands: ``(index, its link, the body)``."""
         world = self.robot.world
-        moving = [self.robot.name, *_carried(self.robot)]
+        moving = [self.robot.name, *self.robot.handle.holding()]
         ignore = [o for o in world.objects() if o.name not in watched or o.name in moving]
         before = _contacts(world, moving, ignore)
         names = self.trajectory.joint_names
@@ -97,20 +97,8 @@ class PathWatch:
 
 def _others(robot: ProjectedRobot) -> list[str]:
     """Every body but the robot and what it carries."""
-    skip = {robot.name, *_carried(robot)}
+    skip = {robot.name, *robot.handle.holding()}
     return [o.name for o in robot.world.objects() if o.name not in skip]
-
-
-def _carried(robot: ProjectedRobot) -> list[str]:
-    """What the robot holds, and what that holds, recursively."""
-    world = robot.world
-    found: list[str] = []
-    frontier = [robot.name]
-    while frontier:
-        held = list(world.attachments(frontier.pop()))
-        found += held
-        frontier += held
-    return found
 
 
 def _contacts(world: World, moving: list[str], ignore: list[WorldObject]) -> set[tuple[str, str]]:

@@ -96,5 +96,15 @@ class RobotHandle:
         """The robot's joint values now [rad | m]."""
         return self.world.joint_states(self.body)
 
+    def holding(self) -> tuple[str, ...]:
+        """What the robot holds, and what that holds, recursively (they move with it)."""
+        found: list[str] = []
+        frontier = [self.name]
+        while frontier:
+            held = list(self.world.attachments(frontier.pop()))
+            found += held
+            frontier += held
+        return tuple(found)
+
     def __repr__(self) -> str:
         return f"RobotHandle({self.name!r}, {self.description.name!r})"
