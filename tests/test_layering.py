@@ -20,7 +20,7 @@ ALLOWED: dict[str, set[str]] = {
     "robots": {"knowledge", "logic", "tf"},
     "execution": {"designators", "logic", "tf"},
     "world": {"robots", "knowledge", "logic", "tf"},
-    "kinematics": {"robots", "tf"},
+    "kinematics": {"robots", "logic", "tf"},
     "scenes": {"world", "kinematics", "robots", "logic", "tf"},
     "grasping": {"world", "kinematics", "robots", "knowledge", "logic", "tf"},
     "costmaps": {"grasping", "world", "kinematics", "designators", "robots", "logic", "tf"},

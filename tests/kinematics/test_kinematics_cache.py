@@ -11,8 +11,8 @@ from pathlib import Path
 import pytest
 
 from robocram.kinematics import IKOptions, IKSolver, KinematicsCache, PlanarBase, solve_ik
-from robocram.kinematics.kinematics_cache import BoundedMap
 from robocram.kinematics.robot_kinematics import RobotKinematics, robot_kinematics
+from robocram.logic.lru import LRUCache
 from robocram.robots import load_description
 from robocram.robots.robot_model import MODELS
 from robocram.tf import Pose
@@ -58,15 +58,19 @@ def test_the_finder_sees_a_module_cache(tmp_path: Path) -> None:
     assert _module_level_caches(source) == ["m.py:2", "m.py:3", "m.py:5"]
 
 
-def test_a_bounded_map_drops_the_least_recently_used() -> None:
-    kept: BoundedMap[str, int] = BoundedMap(2)
+def test_the_bounded_store_drops_the_least_recently_used() -> None:
+    kept: LRUCache[str, int] = LRUCache(2)
     kept.put("a", 1)
     kept.put("b", 2)
     assert kept.get("a") == 1  # now "b" is the least recently used
     kept.put("c", 3)
     assert (len(kept), kept.get("b"), kept.get("a"), kept.get("c")) == (2, None, 1, 3)
-    with pytest.raises(ValueError, match="at least one"):
-        BoundedMap(0)
+    builds = iter((4, 5))
+    assert kept.get_or_build("d", lambda: next(builds)) == 4
+    assert kept.get_or_build("d", lambda: next(builds)) == 4  # kept: not built again
+    assert kept.get("a") is None  # "a" was the least recent
+    with pytest.raises(ValueError, match="at least 1"):
+        LRUCache(0)
 
 
 def test_the_model_keeps_its_kinematics_and_its_cache() -> None:

@@ -8,7 +8,6 @@ convention (x approach, y opening) is what every built-in robot gives.
 
 from __future__ import annotations
 
-import threading
 from dataclasses import dataclass
 from itertools import combinations
 
@@ -16,6 +15,7 @@ import numpy as np
 
 from robocram.grasping.errors import GraspingError
 from robocram.kinematics import forward_kinematics
+from robocram.logic.lru import LRUCache
 from robocram.robots import RobotDescription
 
 FINGER_DEPTH = 0.06  # [m] how far past an object's edge the fingertips may reach
@@ -71,21 +71,15 @@ class HandCache:
     """
 
     def __init__(self, size: int = 16) -> None:
-        self.size = size
-        self.entries: dict[tuple[int, str], tuple[RobotDescription, Hand]] = {}
-        self.lock = threading.Lock()
+        self.entries: LRUCache[tuple[int, str], tuple[RobotDescription, Hand]] = LRUCache(size)
 
     def get(self, desc: RobotDescription, arm: str) -> Hand:
         """The hand of ``desc``'s ``arm``, read from the kinematics the first time."""
-        with self.lock:
-            entry = self.entries.get((id(desc), arm))
+        entry = self.entries.get((id(desc), arm))
         if entry is not None and entry[0] is desc:
             return entry[1]
         hand = _read_hand(desc, arm)
-        with self.lock:
-            if len(self.entries) >= self.size:
-                self.entries.pop(next(iter(self.entries)))
-            self.entries[(id(desc), arm)] = (desc, hand)
+        self.entries.put((id(desc), arm), (desc, hand))
         return hand
 
 

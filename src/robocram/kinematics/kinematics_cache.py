@@ -14,61 +14,15 @@ sampled by a fixed seed, so a solver built twice answers bit for bit the same.
 
 from __future__ import annotations
 
-import threading
-from collections import OrderedDict
-from collections.abc import Callable
-from typing import Generic, TypeVar
-
 from robocram.kinematics.arm_chain import ArmChain
-from robocram.kinematics.errors import KinematicsArgumentError
 from robocram.kinematics.planar_base import PlanarBase, with_planar_base
 from robocram.kinematics.seed_table import SeedTable, geometry_key
+from robocram.logic.lru import LRUCache
 from robocram.robots import RobotModel
-
-K = TypeVar("K")  # hashable
-V = TypeVar("V")
 
 SOLVERS_KEPT = 32  # solvers: arms x torso x frame x base of the models a cache serves
 TABLES_KEPT = 16  # start tables of different chains (a few MB each)
 PLANAR_MODELS_KEPT = 4  # models extended by a planar base (one per travel)
-
-
-class BoundedMap(Generic[K, V]):
-    """At most ``size`` entries; adding one more drops the least recently used."""
-
-    def __init__(self, size: int) -> None:
-        if size < 1:
-            raise KinematicsArgumentError(
-                f"a bounded map keeps at least one entry, got size={size}"
-            )
-        self.size = size
-        self._entries: OrderedDict[K, V] = OrderedDict()
-        self._lock = threading.Lock()  # plans run IK from several threads (par)
-
-    def __len__(self) -> int:
-        return len(self._entries)
-
-    def get(self, key: K) -> V | None:
-        """The value kept for ``key`` (now the most recently used), or None."""
-        with self._lock:
-            value = self._entries.get(key)
-            if value is not None:
-                self._entries.move_to_end(key)
-            return value
-
-    def put(self, key: K, value: V) -> V:
-        """Keep ``value`` for ``key``, dropping the least recently used beyond ``size``."""
-        with self._lock:
-            self._entries[key] = value
-            self._entries.move_to_end(key)
-            while len(self._entries) > self.size:
-                self._entries.popitem(last=False)
-        return value
-
-    def get_or_build(self, key: K, build: Callable[[], V]) -> V:
-        """The value kept for ``key``, built (outside the lock) and kept if there is none."""
-        found = self.get(key)
-        return self.put(key, build()) if found is None else found
 
 
 class KinematicsCache:
@@ -84,9 +38,9 @@ class KinematicsCache:
         tables: int = TABLES_KEPT,
         planar_models: int = PLANAR_MODELS_KEPT,
     ) -> None:
-        self.solvers: BoundedMap[tuple[object, ...], object] = BoundedMap(solvers)
-        self.tables: BoundedMap[tuple[object, ...], SeedTable] = BoundedMap(tables)
-        self.planar_models: BoundedMap[tuple[RobotModel, PlanarBase], RobotModel] = BoundedMap(
+        self.solvers: LRUCache[tuple[object, ...], object] = LRUCache(solvers)
+        self.tables: LRUCache[tuple[object, ...], SeedTable] = LRUCache(tables)
+        self.planar_models: LRUCache[tuple[RobotModel, PlanarBase], RobotModel] = LRUCache(
             planar_models
         )
 

@@ -1,13 +1,18 @@
-"""A bounded least-recently-used cache, for generated code and compiled query texts.
+"""A bounded least-recently-used cache: the one bounded store of the layers below the world.
 
 Caches keyed by program text grow with every distinct query or clause shape a long-lived
-process sees; the bound keeps memory flat while the working set stays hot.
+process sees; the bound keeps memory flat while the working set stays hot. The same store
+keeps the kinematics' solvers and start tables, the parsed robot models and the hands read
+from descriptions: values derived from immutable inputs, so an entry is never stale, only
+dropped when the bound is reached. (What depends on a world that changes is kept in a
+``world.Derived``, which compares the world's change counters.)
 """
 
 from __future__ import annotations
 
 import threading
 from collections import OrderedDict
+from collections.abc import Callable
 from typing import Generic, TypeVar
 
 from robocram.logic.usage_errors import LogicArgumentError
@@ -51,6 +56,19 @@ class LRUCache(Generic[K, V]):
             items.move_to_end(key)
             if len(items) > self.size:
                 items.popitem(last=False)
+
+    def get_or_build(self, key: K, build: Callable[[], V]) -> V:
+        """The value for ``key``, or ``build()`` (called outside the lock) kept for it."""
+        found = self.get(key)
+        if found is None:
+            found = build()
+            self.put(key, found)
+        return found
+
+    def clear(self) -> None:
+        """Forget every entry."""
+        with self._lock:
+            self._items.clear()
 
     def keys(self) -> list[K]:
         """The keys, least recently used first."""

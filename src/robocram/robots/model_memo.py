@@ -12,13 +12,12 @@ The process's memo is ``robocram.robots.robot_model.MODELS``.
 from __future__ import annotations
 
 import hashlib
-import threading
 import warnings
-from collections import OrderedDict
 from collections.abc import Callable
 from pathlib import Path
 from typing import Generic, TypeVar
 
+from robocram.logic.lru import LRUCache
 from robocram.robots.model_additions import BoxSpec, FrameSpec, JointCoupling
 
 M = TypeVar("M")  # the model type (RobotModel, which keeps the process's memo)
@@ -41,8 +40,7 @@ class ModelMemo(Generic[M]):
 
     def __init__(self, size: int = MODELS_KEPT) -> None:
         self.size = size
-        self._models: OrderedDict[ModelKey, tuple[M, list[warnings.WarningMessage]]] = OrderedDict()
-        self._lock = threading.Lock()
+        self._models: LRUCache[ModelKey, tuple[M, list[warnings.WarningMessage]]] = LRUCache(size)
 
     def model(
         self,
@@ -73,24 +71,19 @@ class ModelMemo(Generic[M]):
             lenient,
             couplings,
         )
-        with self._lock:
-            found = self._models.get(key)
-            if found is not None:
-                self._models.move_to_end(key)
-        if found is None:
-            with warnings.catch_warnings(record=True) as caught:
-                warnings.simplefilter("always")
-                model = build()
-            found = (model, list(caught))
-            with self._lock:
-                self._models[key] = found
-                while len(self._models) > self.size:
-                    self._models.popitem(last=False)
+        found = self._models.get_or_build(key, lambda: _built(build))
         for w in found[1]:
             warnings.warn_explicit(w.message, w.category, w.filename, w.lineno, source=w.source)
         return found[0]
 
     def clear(self) -> None:
         """Forget every model (they live on while something else holds them)."""
-        with self._lock:
-            self._models.clear()
+        self._models.clear()
+
+
+def _built(build: Callable[[], M]) -> tuple[M, list[warnings.WarningMessage]]:
+    """``build()`` and the warnings it gave, recorded to be given again on every load."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        model = build()
+    return model, list(caught)
