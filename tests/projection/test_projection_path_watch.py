@@ -12,7 +12,11 @@ import numpy as np
 import pybullet
 import pytest
 
-from robocram.execution.failures import ManipulationPathBlocked, NavigationPathBlocked
+from robocram.execution.failures import (
+    ManipulationPathBlocked,
+    NavigationPathBlocked,
+    TorsoPathBlocked,
+)
 from robocram.motion import plan_arm_motion, plan_base_path
 from robocram.projection.path_watch import planned_against
 from robocram.projection.projected_robot import ProjectedRobot
@@ -101,3 +105,21 @@ def test_nothing_changed_costs_no_check(robot: ProjectedRobot) -> None:
     end = trajectory.points[-1].positions
     assert world.pose("pr2").position[:2] == pytest.approx(end[:2], abs=1e-9)
     assert world.versions.tick == before + 1  # the one write: the robot put at the end
+
+
+def test_a_board_put_over_the_head_after_planning_stops_the_torso_as_a_torso_failure(
+    robot: ProjectedRobot,
+) -> None:
+    world = robot.world
+    checked = planned_against(robot)
+    start = world.joint_states("pr2")["torso_lift_joint"]
+    goal = start + 0.15  # [m] up
+    lift = plan_arm_motion(robot.handle, {"torso_lift_joint": goal}, kind="torso")
+    x, y, _ = world.link_pose("pr2", "head_tilt_link").position
+    top = world.aabb("pr2")[1][2]
+    world.add_box("board", (0.6, 0.6, 0.02), Pose((x, y, top + 0.08)))  # rising into it
+    with pytest.raises(TorsoPathBlocked, match="'board'") as caught:
+        follow(robot, lift.trajectory, checked)
+    assert caught.value.colliding_pairs[0][1] == "board"
+    assert _gap(world, "pr2", "board") > 0.0  # stopped short of it
+    assert start < world.joint_states("pr2")["torso_lift_joint"] < goal

@@ -6,21 +6,35 @@ have added or moved a body meanwhile. The world's change counters say whether an
 was written at all (one comparison per point) and which bodies to look at; those that
 really stand otherwise are checked against the rest of the path: the robot and what it
 carries are put at each remaining point, and a contact with a changed body they did not
-have where they stand stops the motion before that point, with ``NavigationPathBlocked``
-or ``ManipulationPathBlocked`` naming the body.
+have where they stand stops the motion before that point, with ``NavigationPathBlocked``,
+``TorsoPathBlocked``, ``PtuPathBlocked``, ``GripperPathBlocked`` or ``ManipulationPathBlocked``
+(by the motion's kind) naming the body.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 
-from robocram.execution.failures import ManipulationPathBlocked, NavigationPathBlocked
+from robocram.execution.failures import (
+    GripperPathBlocked,
+    ManipulationPathBlocked,
+    NavigationPathBlocked,
+    PtuPathBlocked,
+    TorsoPathBlocked,
+)
 from robocram.execution.failures.plan_failure import PlanFailure
 from robocram.motion import BASE_JOINTS, BODY_JOINTS, JointTrajectory
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
 from robocram.world import BodyStamps, World, WorldObject, body_stamps, changed_bodies
+
+# the failure a blocked motion of each kind raises (CRAM's, as the planners raise them)
+BLOCKED_BY_KIND: dict[str, type[PlanFailure]] = {
+    "torso": TorsoPathBlocked,
+    "head": PtuPathBlocked,
+    "gripper": GripperPathBlocked,
+}
 
 
 def planned_against(robot: ProjectedRobot) -> BodyStamps:
@@ -90,9 +104,10 @@ class PathWatch:
         )
         if self.trajectory.joint_names in (BASE_JOINTS, BODY_JOINTS):
             return NavigationPathBlocked(message, colliding=[body], path_fraction=fraction)
-        return ManipulationPathBlocked(
-            message, colliding_pairs=((part, body),), path_fraction=fraction
+        blocked: type[PlanFailure] = BLOCKED_BY_KIND.get(
+            self.trajectory.kind, ManipulationPathBlocked
         )
+        return blocked(message, colliding_pairs=((part, body),), path_fraction=fraction)
 
 
 def _others(robot: ProjectedRobot) -> list[str]:
