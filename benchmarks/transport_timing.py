@@ -150,7 +150,7 @@ def transport_times(robot: str, runs: int) -> TransportTimes:
         projected_arm.solve_ik = timed(split, "ik", solve_ik)
         World.simulate = timed(split, "settling", simulate)  # type: ignore[method-assign]
         World.settle = timed(split, "settling", settle)  # type: ignore[method-assign]
-        with world.stored_state():
+        with world.snapshots.stored_state():
             z = world.pose("mug-1").position[2]
             world.set_pose("mug-1", Pose((*spot.position[:2], z), spot.orientation))
             target = a.location(on=("kitchen", "table_top"), for_="mug-1")

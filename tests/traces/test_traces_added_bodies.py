@@ -29,14 +29,14 @@ from robocram.world import World
 
 def _world() -> World:
     world = World()
-    world.add_floor()
+    world.bodies.add_floor()
     world.add_box("loaf", (0.24, 0.1, 0.1), pose=(0.0, 0.0, 0.05))
     return world
 
 
 def _position(world: World, name: str) -> tuple[float, ...]:
     position, _ = pybullet.getBasePositionAndOrientation(
-        world.object(name).body_id, physicsClientId=world.physics_client()
+        world.object(name).body_id, physicsClientId=world.physics.client()
     )
     return tuple(position)
 
@@ -46,7 +46,7 @@ def test_a_state_adds_what_the_run_added_and_removes_what_it_removed() -> None:
         scene = scene_of(ran)
         before = StoredWorldState.capture(ran, 0.0, scene_names(scene))
         ran.remove("loaf")
-        ran.add_sphere("grain-1", 0.005, pose=(0.1, 0.2, 0.3))
+        ran.bodies.add_sphere("grain-1", 0.005, pose=(0.1, 0.2, 0.3))
         state = StoredWorldState.capture(ran, 1.0, scene_names(scene))
     assert set(state.added) == {"grain-1"} and before.added == {}
     with build_scene(scene) as replay:
@@ -54,7 +54,7 @@ def test_a_state_adds_what_the_run_added_and_removes_what_it_removed() -> None:
         assert {o.name for o in replay.objects()} == {"floor", "grain-1"}
         assert _position(replay, "grain-1") == pytest.approx((0.1, 0.2, 0.3), abs=1e-9)
         low, high = pybullet.getAABB(
-            replay.object("grain-1").body_id, physicsClientId=replay.physics_client()
+            replay.object("grain-1").body_id, physicsClientId=replay.physics.client()
         )
         assert high[0] - low[0] == pytest.approx(0.01, abs=0.002)  # its recipe's size
         before.apply(replay, scene)  # going back: the loaf from the scene again

@@ -27,63 +27,63 @@ def world() -> Iterator[World]:
 
 
 def test_contact_points_are_signed_distances_between_named_bodies(world: World) -> None:
-    points = world.contact_points("a", "b")
+    points = world.contacts.contact_points("a", "b")
     assert points and all(isinstance(p, ContactPoint) for p in points)
     assert {(p.obj_a, p.obj_b) for p in points} == {("a", "b")}
     assert min(p.distance for p in points) == pytest.approx(-0.01, abs=1e-4)
-    assert world.contact_points("a", "c") == []
-    near = world.contact_points("a", "c", distance=0.06)
+    assert world.contacts.contact_points("a", "c") == []
+    near = world.contacts.contact_points("a", "c", distance=0.06)
     assert min(p.distance for p in near) == pytest.approx(0.05, abs=1e-4)
     assert near[0].normal_on_b[1] == pytest.approx(-1.0, abs=1e-6)  # from c towards a
 
 
 def test_contact_points_with_every_other_object(world: World) -> None:
-    assert {p.obj_b for p in world.contact_points("a")} == {"b"}
-    assert {p.obj_b for p in world.contact_points("a", distance=0.06)} == {"b", "c"}
+    assert {p.obj_b for p in world.contacts.contact_points("a")} == {"b"}
+    assert {p.obj_b for p in world.contacts.contact_points("a", distance=0.06)} == {"b", "c"}
 
 
 def test_contact_points_filtered_by_link() -> None:
     with World() as world:
         world.add_robot("pr2")
         world.add_box("post", (0.05, 0.05, 0.3), Pose((0.0, 0.0, 0.15)))  # inside the base
-        base = world.contact_points("pr2", "post", link_a="base_link")
+        base = world.contacts.contact_points("pr2", "post", link_a="base_link")
         assert base and {p.link_a for p in base} == {"base_link"}
-        assert world.contact_points("pr2", "post", link_a="head_tilt_link") == []
+        assert world.contacts.contact_points("pr2", "post", link_a="head_tilt_link") == []
         with pytest.raises(UnknownLinkError, match="base_lnk"):
-            world.contact_points("pr2", "post", link_a="base_lnk")
+            world.contacts.contact_points("pr2", "post", link_a="base_lnk")
 
 
 def test_attachments_are_public_state(world: World) -> None:
     world.attach("b", "a", "link0")
-    [att] = world.all_attachments()
+    [att] = world.snapshots.all_attachments()
     assert (att.obj, att.robot, att.link) == ("b", "a", "link0")
     assert att.link_T_obj.position == pytest.approx((0.19, 0.0, 0.0), abs=1e-6)
     moved = Attachment("b", "a", "link0", Pose((0.0, 0.0, 0.3)))
-    world.set_attachments([moved])
+    world.snapshots.set_attachments([moved])
     world.set_pose("a", Pose((1.0, 0.0, 0.1)))
     assert world.pose("b").position == pytest.approx((1.0, 0.0, 0.4), abs=1e-6)
     with pytest.raises(UnknownObjectError):
-        world.set_attachments([Attachment("nope", "a", "link0", Pose())])
-    assert world.all_attachments() == [moved]  # a bad list changes nothing
+        world.snapshots.set_attachments([Attachment("nope", "a", "link0", Pose())])
+    assert world.snapshots.all_attachments() == [moved]  # a bad list changes nothing
 
 
 def test_held_joints_are_public_state() -> None:
     with World() as world:
         world.add_robot("pr2")
         world.set_joint_states("pr2", {"torso_lift_joint": 0.2})
-        assert world.held_joints("pr2")["torso_lift_joint"] == pytest.approx(0.2)
-        world.set_held_joints("pr2", {"torso_lift_joint": 0.1})
-        assert world.held_joints("pr2") == {"torso_lift_joint": 0.1}
-        world.step()  # holding puts the joint at the held value
+        assert world.snapshots.held_joints("pr2")["torso_lift_joint"] == pytest.approx(0.2)
+        world.snapshots.set_held_joints("pr2", {"torso_lift_joint": 0.1})
+        assert world.snapshots.held_joints("pr2") == {"torso_lift_joint": 0.1}
+        world.physics.step()  # holding puts the joint at the held value
         assert world.joint_states("pr2")["torso_lift_joint"] == pytest.approx(0.1)
         with pytest.raises(UnknownJointError, match="base_footprint_joint"):
-            world.set_held_joints("pr2", {"base_footprint_joint": 0.0})
+            world.snapshots.set_held_joints("pr2", {"base_footprint_joint": 0.0})
 
 
 def test_insert_brings_back_a_removed_handle(world: World) -> None:
     box = world.object("c")
     world.remove(box)
-    assert world.insert(box, Pose((2.0, 0.0, 0.1))) is box
+    assert world.bodies.insert(box, Pose((2.0, 0.0, 0.1))) is box
     assert world.object("c") is box
     assert world.pose("c").position == pytest.approx((2.0, 0.0, 0.1), abs=1e-9)
 
@@ -101,8 +101,8 @@ def test_self_contacts_match_closest_points_of_every_pair() -> None:
             for distance in (0.0, 0.3):
                 expected = [
                     (a, b) for a, b in pairs
-                    if world.contact_points(pr2, pr2, a, b, distance=distance)
+                    if world.contacts.contact_points(pr2, pr2, a, b, distance=distance)
                 ]  # fmt: skip
-                assert world.self_contacts(pr2, pairs, distance) == expected
+                assert world.contacts.self_contacts(pr2, pairs, distance) == expected
         assert expected  # the far distance finds some
-        assert world.self_contacts(pr2, []) == []
+        assert world.contacts.self_contacts(pr2, []) == []

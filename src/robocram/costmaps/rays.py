@@ -16,5 +16,5 @@ def cast_rays(
     """:meth:`World.ray_cast_batch` in chunks pybullet accepts."""
     hits: list[RayHit | None] = []
     for i in range(0, len(starts), BATCH):
-        hits.extend(world.ray_cast_batch(starts[i : i + BATCH], ends[i : i + BATCH]))
+        hits.extend(world.view.ray_cast_batch(starts[i : i + BATCH], ends[i : i + BATCH]))
     return hits

@@ -131,7 +131,7 @@ def pour(
     seed = robot.motion.seed
     names = _fill(world, source, count, seed)
     with kinematic(world, source):  # the hand moves it; the grains do not push it
-        world.simulate(SETTLE_BEFORE, stop_check=checkpoint)
+        world.physics.simulate(SETTLE_BEFORE, stop_check=checkpoint)
         _follow_with_physics(robot, planned.motion.trajectory)
         _settle(world, names)
     landed = _landed(world, target, names)
@@ -163,7 +163,7 @@ def _follow_with_physics(robot: ProjectedRobot, trajectory: JointTrajectory) -> 
         t = min(k * world.time_step, trajectory.duration)
         values = [float(np.interp(t, times, positions[:, j])) for j in range(positions.shape[1])]
         world.set_joint_states(robot.name, dict(zip(trajectory.joint_names, values, strict=True)))
-        world.step()
+        world.physics.step()
     follow(robot, trajectory)
 
 
@@ -174,7 +174,7 @@ def _settle(world: World, names: list[str]) -> None:
     for _ in range(math.ceil(SETTLE_TIME / (look * world.time_step))):
         for _ in range(look):
             checkpoint()
-            world.step()
+            world.physics.step()
         now = [world.pose(n).position for n in names]
         if all(math.dist(a, b) <= 0.001 for a, b in zip(before, now, strict=True)):
             return

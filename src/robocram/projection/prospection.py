@@ -72,7 +72,7 @@ def prospect(
     found: list[JointTrajectory] = []
 
     def projected() -> Prospect[T]:
-        with world.stored_state(), trajectory_listener(found.append):
+        with world.snapshots.stored_state(), trajectory_listener(found.append):
             result: T | None = None
             failure: PlanFailure | None = None
             with simulated_robot(world, robot.name, name, locations, motion) as run:

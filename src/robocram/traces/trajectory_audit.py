@@ -121,7 +121,7 @@ def riding(world: World, carried: tuple[CarriedJoint, ...]) -> Iterator[None]:
                 continue
             parts = raw.collision_links(obj)
             near = (raw.closest(obj, part, body, link, RESTING) for part in parts)
-            if world.attached_to(obj) is None and any(gap is not None for gap in near):
+            if world.bodies.attached_to(obj) is None and any(gap is not None for gap in near):
                 world.attach(obj, body, link)
                 riders.append(obj.name)
     try:
@@ -220,7 +220,7 @@ class _RunAudit:
             )  # fmt: skip
 
     def _held(self, robot: str) -> dict[str, str]:
-        return {a.obj: a.link for a in self.world.all_attachments() if a.robot == robot}
+        return {a.obj: a.link for a in self.world.snapshots.all_attachments() if a.robot == robot}
 
     def _sweep_configurations(
         self,

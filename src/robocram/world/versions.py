@@ -13,10 +13,13 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass
-from typing import Protocol
+from typing import TYPE_CHECKING, Protocol
 
 from robocram.world.errors import UnknownObjectError
 from robocram.world.world_object import WorldObject
+
+if TYPE_CHECKING:
+    from robocram.world.snapshots import Snapshots
 
 Stamp = tuple[int, ...]  # counters compared as one value
 Named = str | WorldObject  # a body by its name or its handle
@@ -126,7 +129,8 @@ class _StampedWorld(Protocol):
     @property
     def versions(self) -> Versions: ...
 
-    def body_state(self, obj: str) -> tuple[float, ...]: ...
+    @property
+    def snapshots(self) -> Snapshots: ...
 
 
 MOVED = 1e-6  # [m | rad] a body's state changed by less (Bullet's round trips, creep): still
@@ -139,7 +143,7 @@ def body_stamps(world: _StampedWorld, names: Iterable[str]) -> BodyStamps:
     return BodyStamps(
         versions.tick,
         tuple((n, versions.body(n)) for n in names),
-        tuple(world.body_state(n) for n in names),
+        tuple(world.snapshots.body_state(n) for n in names),
     )
 
 
@@ -155,7 +159,7 @@ def changed_bodies(world: _StampedWorld, then: BodyStamps, names: Iterable[str])
         old = kept.get(name)
         if old is not None and old[0] == versions.body(name):
             continue
-        if old is not None and _same_state(old[1], world.body_state(name)):
+        if old is not None and _same_state(old[1], world.snapshots.body_state(name)):
             continue
         found.append(name)
     return found

@@ -7,13 +7,12 @@
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from collections.abc import Iterator, Mapping
 
 from robocram.robots import RobotModel, mimic_followers
 from robocram.tf import Pose, PoseLike
 from robocram.world.attachment import Attachment, check_acyclic
 from robocram.world.body_loading import create_body
-from robocram.world.derived import Derived
 from robocram.world.errors import (
     DuplicateObjectError,
     NotARobotError,
@@ -27,8 +26,6 @@ from robocram.world.errors import (
 from robocram.world.held_motors import HeldMotors
 from robocram.world.joint_state import ClampedJoint, JointLimits, clamp_values
 from robocram.world.pybullet_backend import pybullet
-from robocram.world.settling import LOOK, at_rest
-from robocram.world.sleeping import asleep
 from robocram.world.versions import Versions
 from robocram.world.world_object import RobotObject, WorldObject
 
@@ -41,7 +38,7 @@ class WorldCore:
     """One pybullet client, its named bodies, attachments and the joints robots hold."""
 
     def __init__(self, gui: bool = False, gravity: float = -9.81, time_step: float = 1 / 240):
-        _check_time_step(time_step)
+        check_time_step(time_step)
         if not math.isfinite(gravity):
             raise WorldValueError(f"gravity must be a finite number [m/s^2], got {gravity!r}")
         try:
@@ -69,7 +66,6 @@ class WorldCore:
         self._holds: dict[str, dict[int, float]] = {}  # robot -> joint index -> held value
         self._motors = HeldMotors()  # a robot's held joints need no motor
         self._versions = Versions()  # stamped by every write below
-        self._stepping: Derived[None, tuple[list[str], list[str]]] = Derived(_structure)
 
     @property
     def versions(self) -> Versions:
@@ -88,20 +84,14 @@ class WorldCore:
         """Whether :meth:`close` was called."""
         return self.client < 0
 
-    def physics_client(self) -> int:
-        """The pybullet client id, for the world's own helper modules; closed: an error."""
-        if self.client < 0:
-            raise WorldClosedError()
-        return self.client
-
-    def insert(self, handle: WorldObject, pose: PoseLike = ORIGIN) -> WorldObject:
+    def _insert(self, handle: WorldObject, pose: PoseLike = ORIGIN) -> WorldObject:
         """Create ``handle``'s body from its spec, index it, place it at ``pose``; return it.
 
         The handle may be one removed earlier: it gets a new body and keeps its identity.
         """
         if handle.name in self._objects:
             raise DuplicateObjectError(handle.name)
-        cid = self.physics_client()
+        cid = self._cid()
         loaded = create_body(handle.name, handle.spec, cid)
         handle.body_id = loaded.bodies[0]
         several = len(loaded.bodies) > 1
@@ -137,6 +127,12 @@ class WorldCore:
         self.set_pose(handle, pose)
         return handle
 
+    def _cid(self) -> int:
+        """The pybullet client id; closed: :class:`WorldClosedError`."""
+        if self.client < 0:
+            raise WorldClosedError()
+        return self.client
+
     def object(self, name: ObjectRef) -> WorldObject:
         """The object called ``name`` (a handle is checked to still belong to this world)."""
         key = name.name if isinstance(name, WorldObject) else name
@@ -151,10 +147,6 @@ class WorldCore:
         if not isinstance(obj, RobotObject):
             raise NotARobotError(obj.name)
         return obj
-
-    def owner(self, body: int) -> WorldObject | None:
-        """The object a pybullet body id (a part's too) belongs to; None if no object's."""
-        return self._owners.get(body)
 
     def objects(self, type: str | None = None) -> list[WorldObject]:  # noqa: A002
         """All objects in creation order, or those of one ``type``."""
@@ -171,14 +163,14 @@ class WorldCore:
     def __iter__(self) -> Iterator[WorldObject]:
         return iter(list(self._objects.values()))
 
-    def remove(self, obj: ObjectRef) -> None:
+    def _remove(self, obj: ObjectRef) -> None:
         """Take ``obj`` out of the world, with its attachments (either end)."""
         handle = self.object(obj)
         for name, att in list(self._attachments.items()):
             if handle.name in (name, att.robot):
                 del self._attachments[name]
         for body in handle.bodies:
-            pybullet.removeBody(body, physicsClientId=self.physics_client())
+            pybullet.removeBody(body, physicsClientId=self._cid())
             self._owners.pop(body, None)
         self._motors.forget(handle.body_id)
         self._limits = {k: v for k, v in self._limits.items() if k[0] != handle.body_id}
@@ -192,7 +184,7 @@ class WorldCore:
         """Pose of the object's root link frame in the world."""
         handle = self.object(obj)
         pos, orn = pybullet.getBasePositionAndOrientation(
-            handle.body_id, physicsClientId=self.physics_client()
+            handle.body_id, physicsClientId=self._cid()
         )
         return Pose(pos, orn) * self._inertial[handle.name].inverse()
 
@@ -214,7 +206,7 @@ class WorldCore:
 
     def _place(self, handle: WorldObject, pose: Pose) -> None:
         """Put every body of ``handle`` at rest with its root link frame at ``pose``."""
-        cid = self.physics_client()
+        cid = self._cid()
         bases = self._part_bases.get(handle.name) or (self._inertial[handle.name],)
         for body, base_in_root in zip(handle.bodies, bases, strict=True):
             base = pose * base_in_root
@@ -223,20 +215,6 @@ class WorldCore:
             )
             pybullet.resetBaseVelocity(body, (0, 0, 0), (0, 0, 0), physicsClientId=cid)
         self._versions.moved(handle.name)
-
-    def body_state(self, obj: ObjectRef) -> tuple[float, ...]:
-        """Numbers that change whenever ``obj``'s shapes move: its body id, base pose and
-        joint positions as the backend holds them, read in two calls (a cache of derived
-        geometry compares them, cheaper than :meth:`pose` and :meth:`joint_states`)."""
-        handle = self.object(obj)
-        cid = self.physics_client()
-        position, orientation = pybullet.getBasePositionAndOrientation(
-            handle.body_id, physicsClientId=cid
-        )
-        joints: tuple[float, ...] = ()
-        if handle.movable_joints:
-            joints = tuple(self.joint_states(handle).values())
-        return (float(handle.body_id), *position, *orientation, *joints)
 
     def link_pose(self, obj: ObjectRef, link: str) -> Pose:
         """Pose of ``link`` (a URDF link or a frame added in code) in the world."""
@@ -249,31 +227,9 @@ class WorldCore:
         if at < 0:  # a part's root link, fixed in the root link's frame
             return self.pose(handle) * handle.part_offsets[handle.parts.index(body)] * offset
         state = pybullet.getLinkState(
-            body, at, computeForwardKinematics=True, physicsClientId=self.physics_client()
+            body, at, computeForwardKinematics=True, physicsClientId=self._cid()
         )
         return Pose(state[4], state[5]) * offset
-
-    def link_frames(self, obj: ObjectRef, links: Sequence[str]) -> list[tuple[float, ...]]:
-        """Per link of ``links``: its frame in the world as ``(x, y, z, qx, qy, qz, qw)``,
-        read from the backend in one call (checks read tens of links per configuration)."""
-        handle = self.object(obj)
-        index = handle.link_index
-        try:
-            indices = [index[link] for link in links]
-        except KeyError:
-            indices = [self._link_index(handle, link) for link in links]  # names the culprit
-        if (
-            min(indices, default=0) >= 0
-            and not handle.parts
-            and not handle.link_offset.keys() & set(links)
-        ):
-            states = pybullet.getLinkStates(
-                handle.body_id, indices, computeForwardKinematics=True,
-                physicsClientId=self.physics_client(),
-            )  # fmt: skip
-            return [(*st[4], *st[5]) for st in states]
-        poses = [self.link_pose(handle, link) for link in links]  # the root or added frames
-        return [(*p.position, *p.orientation) for p in poses]
 
     def link_names(self, obj: ObjectRef) -> list[str]:
         """Names of all links and frames of ``obj``, the root first."""
@@ -285,7 +241,7 @@ class WorldCore:
             raise UnknownLinkError(handle.name, link, handle.link_index)
         return index
 
-    def joint_limits(self, obj: ObjectRef, joint: str) -> JointLimits:
+    def _limits_of(self, obj: ObjectRef, joint: str) -> JointLimits:
         """Position limits [rad | m] of a movable joint; continuous ones are -inf/inf."""
         handle = self.object(obj)
         cached = self._limits.get((handle.body_id, joint))
@@ -302,7 +258,7 @@ class WorldCore:
             lower = -math.inf if spec.lower is None else spec.lower
             upper = math.inf if spec.upper is None else spec.upper
             return JointLimits(lower, upper)
-        info = pybullet.getJointInfo(*handle.locate(index), physicsClientId=self.physics_client())
+        info = pybullet.getJointInfo(*handle.locate(index), physicsClientId=self._cid())
         if info[8] > info[9]:  # pybullet marks unlimited joints with lower > upper
             return JointLimits(-math.inf, math.inf)
         return JointLimits(info[8], info[9])
@@ -318,14 +274,14 @@ class WorldCore:
         return index
 
     def _movable_names(self, handle: WorldObject) -> list[str]:
-        self.physics_client()  # a closed world answers with its typed error
+        self._cid()  # a closed world answers with its typed error
         return list(handle.movable_joints)
 
     def joint_states(self, obj: ObjectRef) -> dict[str, float]:
         """Every movable joint's value [rad | m] by name."""
         handle = self.object(obj)
         names = self._movable_names(handle)
-        cid = self.physics_client()
+        cid = self._cid()
         if handle.parts:
             return _part_joint_states(handle, names, cid)
         indices = [handle.joint_index[n] for n in names]
@@ -344,11 +300,11 @@ class WorldCore:
         """
         handle = self.object(obj)
         kept, body = self._limits, handle.body_id
-        limits = {n: kept.get((body, n)) or self.joint_limits(handle, n) for n in values}
+        limits = {n: kept.get((body, n)) or self._limits_of(handle, n) for n in values}
         applied, clamped = clamp_values(values, limits)
         applied.update(self._mimic_values(handle, applied))
         by_index = {handle.joint_index[name]: value for name, value in applied.items()}
-        _reset_slots(handle, by_index, self.physics_client())
+        _reset_slots(handle, by_index, self._cid())
         self._versions.jointed(handle.name)
         self._holds.setdefault(handle.name, {}).update(by_index)
         if carry:
@@ -366,7 +322,7 @@ class WorldCore:
         for name, value in followers.items():
             if name in applied or name not in handle.joint_index:
                 continue
-            out[name] = self.joint_limits(handle, name).clamp(float(value))
+            out[name] = self._limits_of(handle, name).clamp(float(value))
         return out
 
     def attach(self, obj: ObjectRef, robot: ObjectRef, link: str) -> None:
@@ -388,44 +344,6 @@ class WorldCore:
             raise WorldValueError(f"{handle.name!r} is not attached to anything; nothing to detach")
         self._versions.restructured()
 
-    def all_attachments(self) -> list[Attachment]:
-        """Every attachment of the world, in the order they were made."""
-        return list(self._attachments.values())
-
-    def set_attachments(self, attachments: Iterable[Attachment]) -> None:
-        """Replace every attachment by ``attachments`` (kept relative poses, nothing moves)."""
-        new: dict[str, Attachment] = {}
-        for att in attachments:
-            self._link_index(self.object(att.robot), att.link)
-            check_acyclic(new, self.object(att.obj).name, att.robot)
-            new[att.obj] = att
-        self._attachments = new
-        self._versions.restructured()
-
-    def held_joints(self, obj: ObjectRef) -> dict[str, float]:
-        """The joint values [rad | m] that simulation holds ``obj``'s joints at, by name."""
-        handle = self.object(obj)
-        names = {i: n for n, i in handle.joint_index.items()}
-        return {names[i]: v for i, v in self._holds.get(handle.name, {}).items()}
-
-    def set_held_joints(self, obj: ObjectRef, values: Mapping[str, float]) -> None:
-        """Hold exactly ``values`` (joint name -> [rad | m]) from now on; nothing moves now."""
-        handle = self.object(obj)
-        movable = set(self._movable_names(handle))
-        for name in values:
-            if name not in movable:
-                self._movable_index(handle, name)  # raises the typed error naming it
-        self._holds[handle.name] = {handle.joint_index[n]: float(v) for n, v in values.items()}
-
-    def attachments(self, robot: ObjectRef) -> dict[str, str]:
-        """Objects attached to ``robot``: object name -> link name."""
-        name = self.object(robot).name
-        return {a.obj: a.link for a in self._attachments.values() if a.robot == name}
-
-    def attached_to(self, obj: ObjectRef) -> Attachment | None:
-        """The attachment holding ``obj``, if any."""
-        return self._attachments.get(self.object(obj).name)
-
     def _follow(self, carrier: str) -> None:
         """Re-place the objects attached to ``carrier`` (and theirs, recursively)."""
         for att in list(self._attachments.values()):
@@ -434,90 +352,6 @@ class WorldCore:
             target = self._objects[att.obj]
             self._place(target, self.link_pose(carrier, att.link) * att.link_T_obj)
             self._follow(att.obj)
-
-    def step(self) -> None:
-        """Advance physics one time step; robots hold their joints, attachments follow.
-
-        Held joints of robots are put back after the step, so their motors are off.
-        """
-        cid = self.physics_client()
-        robots = [(self._objects[n].body_id, held) for n, held in self._holds.items()
-                  if isinstance(self._objects[n], RobotObject)]  # fmt: skip
-        for body, held in robots:
-            self._motors.match(body, held.keys(), self.time_step, cid)
-        pybullet.stepSimulation(physicsClientId=cid)
-        self.time += self.time_step
-        self._versions.stepped(*self._stepping.get(None, self._stepped, self._versions))
-        for body, held in robots:
-            _reset_joints(body, held, cid)
-        for carrier in {a.robot for a in self._attachments.values()}:
-            self._follow(carrier)
-
-    def _stepped(self) -> tuple[list[str], list[str]]:
-        """The objects a physics step may move (all but static ones; a cut model's parts
-        are bodies of their own), and those whose joints it may change (all with some)."""
-        objects = self._objects.values()
-        return (
-            [o.name for o in objects if not o.is_static or o.parts],
-            [o.name for o in objects if o.movable_joints],
-        )
-
-    def simulate(self, seconds: float, stop_check: Callable[[], None] | None = None) -> int:
-        """Run physics for ``seconds`` [s] of simulated time; return the number of steps.
-
-        ``stop_check`` (e.g. a task's ``checkpoint``) is called before every step; it ends
-        the simulation by raising, leaving the world after the last whole step.
-        """
-        steps = self._steps(seconds)
-        for _ in range(steps):
-            if stop_check is not None:
-                stop_check()
-            self.step()
-        return steps
-
-    def settle(
-        self, obj: ObjectRef, seconds: float, stop_check: Callable[[], None] | None = None
-    ) -> int:
-        """Run physics until ``obj`` rests or ``seconds`` [s] have passed; return the steps.
-
-        ``obj`` is looked at every :data:`~robocram.world.settling.LOOK` and rests when it
-        stayed still between two looks (:func:`~robocram.world.settling.at_rest`). The
-        other bodies sleep meanwhile unless something moving touches them (a fifth of
-        the cost of a kitchen step; see :mod:`~robocram.world.sleeping`); woken, they
-        take one more step with ``obj``, which leaves them as awake as before. A stop
-        (``stop_check`` raising) takes that step too, then passes on.
-        """
-        handle = self.object(obj)
-        steps = self._steps(seconds)
-        if steps == 0:
-            return 0
-        look = max(1, round(LOOK / self.time_step))
-        cid = self.physics_client()
-        others = [b for o in self._objects.values() if o is not handle for b in o.bodies]
-        done = 0
-        try:
-            with asleep(others, cid):
-                before = self.pose(handle)
-                while done < steps:
-                    for _ in range(min(look, steps - done)):
-                        if stop_check is not None:
-                            stop_check()
-                        self.step()
-                        done += 1
-                    now = self.pose(handle)
-                    if at_rest(before, now):
-                        break
-                    before = now
-        finally:
-            self.step()  # Bullet marks the woken bodies awake at the end of a step
-        return done + 1
-
-    def _steps(self, seconds: float) -> int:
-        """Physics steps in ``seconds`` [s] of simulated time."""
-        if not (seconds >= 0 and math.isfinite(seconds)):
-            raise WorldValueError(f"simulate needs a finite duration >= 0 [s], got {seconds!r}")
-        _check_time_step(self.time_step)
-        return round(seconds / self.time_step)
 
 
 def _index_body(handle: WorldObject, body: int, cid: int) -> None:
@@ -546,19 +380,19 @@ def _part_joint_states(handle: WorldObject, names: list[str], cid: int) -> dict[
 
 
 def _reset_slots(handle: WorldObject, values: Mapping[int, float], cid: int) -> None:
-    """:func:`_reset_joints` by slot, for each body of ``handle``."""
+    """:func:`reset_joints` by slot, for each body of ``handle``."""
     if not handle.parts:
-        _reset_joints(handle.body_id, values, cid)
+        reset_joints(handle.body_id, values, cid)
         return
     by_body: dict[int, dict[int, float]] = {}
     for slot, value in values.items():
         body, index = handle.locate(slot)
         by_body.setdefault(body, {})[index] = value
     for body, part in by_body.items():
-        _reset_joints(body, part, cid)
+        reset_joints(body, part, cid)
 
 
-def _reset_joints(body: int, values: Mapping[int, float], cid: int) -> None:
+def reset_joints(body: int, values: Mapping[int, float], cid: int) -> None:
     """Put one-DoF joints (by index) at ``values`` [rad | m] at rest, in one call."""
     if values:
         pybullet.resetJointStatesMultiDof(
@@ -575,11 +409,7 @@ def _mimic_masters(model: RobotModel) -> frozenset[str]:
     return frozenset(j.mimic.joint for j in model.joints.values() if j.mimic is not None)
 
 
-def _structure(versions: Versions, key: None) -> int:
-    return versions.structure
-
-
-def _check_time_step(time_step: float) -> None:
+def check_time_step(time_step: float) -> None:
     if not (time_step > 0 and math.isfinite(time_step)):
         raise WorldValueError(
             f"time_step must be a finite number of seconds > 0 (e.g. 1/240), got {time_step!r}"

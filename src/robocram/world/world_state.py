@@ -8,12 +8,15 @@ seeds a copy of the world in another physics client.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from robocram.world.attachment import Attachment
 from robocram.world.errors import WorldClosedError
 from robocram.world.pybullet_backend import pybullet
-from robocram.world.world_core import WorldCore
 from robocram.world.world_object import RobotObject, WorldObject
+
+if TYPE_CHECKING:
+    from robocram.world.world import World
 
 
 @dataclass(frozen=True)
@@ -36,7 +39,7 @@ class WorldState:
     time: float
 
     @classmethod
-    def capture(cls, world: WorldCore) -> WorldState:
+    def capture(cls, world: World) -> WorldState:
         """Snapshot ``world`` now."""
         if world.closed:
             raise WorldClosedError()
@@ -44,14 +47,14 @@ class WorldState:
         return cls(
             handles=handles,
             bodies=tuple(
-                tuple(_body_state(world.physics_client(), b) for b in h.bodies) for h in handles
+                tuple(_body_state(world.physics.client(), b) for b in h.bodies) for h in handles
             ),
-            attachments=tuple(world.all_attachments()),
-            holds=tuple((h.name, tuple(world.held_joints(h).items())) for h in handles),
+            attachments=tuple(world.snapshots.all_attachments()),
+            holds=tuple((h.name, tuple(world.snapshots.held_joints(h).items())) for h in handles),
             time=world.time,
         )
 
-    def restore(self, world: WorldCore) -> None:
+    def restore(self, world: World) -> None:
         """Put ``world`` (the one captured) back: objects, poses, joints, attachments.
 
         Objects are matched by identity: one added under a name that an object had when
@@ -63,17 +66,17 @@ class WorldState:
                 world.remove(obj)
         for handle in self.handles:
             if handle.name not in world:
-                world.insert(handle)
+                world.bodies.insert(handle)
         self._apply(world)
 
-    def recreate(self, world: WorldCore) -> None:
+    def recreate(self, world: World) -> None:
         """Fill an empty ``world`` (another client) with new handles in this state."""
         for handle in self.handles:
-            world.insert(_clone(handle))
+            world.bodies.insert(_clone(handle))
         self._apply(world)
 
-    def _apply(self, world: WorldCore) -> None:
-        cid = world.physics_client()
+    def _apply(self, world: World) -> None:
+        cid = world.physics.client()
         for handle, states in zip(self.handles, self.bodies, strict=True):
             targets = world.object(handle.name).bodies
             for target, body in zip(targets, states, strict=True):
@@ -83,9 +86,9 @@ class WorldState:
                     pybullet.resetJointState(target, index, position, velocity, physicsClientId=cid)
             world.versions.moved(handle.name)
             world.versions.jointed(handle.name)
-        world.set_attachments(self.attachments)
+        world.snapshots.set_attachments(self.attachments)
         for name, held in self.holds:
-            world.set_held_joints(name, dict(held))
+            world.snapshots.set_held_joints(name, dict(held))
         world.time = self.time
 
 
