@@ -17,17 +17,14 @@ from robocram.world.joint_state import JointLimits
 from robocram.world.pybullet_backend import pybullet
 from robocram.world.world_core import ORIGIN, ObjectRef
 from robocram.world.world_object import WorldObject
+from robocram.world.world_part import WorldPart
 
 if TYPE_CHECKING:
     from robocram.tf import PoseLike
-    from robocram.world.world import World
 
 
-class Bodies:
+class Bodies(WorldPart):
     """Adding floors, primitives and meshes; body ids, link frames, limits, attachments."""
-
-    def __init__(self, world: World):
-        self._world = world
 
     def insert(self, handle: WorldObject, pose: PoseLike = ORIGIN) -> WorldObject:
         """Create ``handle``'s body from its spec, index it, place it at ``pose``; return it.

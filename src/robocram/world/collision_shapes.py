@@ -11,17 +11,15 @@ from __future__ import annotations
 import functools
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Literal
+from typing import Literal
 
 from robocram.robots import RobotModel
 from robocram.robots.urdf_elements import Geometry
 from robocram.tf import Pose, Vector3
 from robocram.world.body_spec import MeshSpec, ShapeSpec, UrdfSpec
 from robocram.world.errors import WorldUsageError, WorldValueError
+from robocram.world.world_core import WorldCore
 from robocram.world.world_object import RobotObject, WorldObject
-
-if TYPE_CHECKING:
-    from robocram.world.world import World
 
 CollisionKind = Literal["box", "cylinder", "sphere", "mesh", "plane"]
 
@@ -59,7 +57,7 @@ def _scaled(geometry: Geometry, scale: float) -> tuple[CollisionKind, Vector3]:
 
 
 def _urdf_shapes(
-    world: World, obj: WorldObject, model: RobotModel, scale: float
+    world: WorldCore, obj: WorldObject, model: RobotModel, scale: float
 ) -> list[CollisionShape]:
     shapes: list[CollisionShape] = []
     for link in model.links.values():
@@ -79,7 +77,7 @@ def _urdf_shapes(
     return shapes
 
 
-def collision_shapes(world: World, obj: WorldObject) -> list[CollisionShape]:
+def collision_shapes(world: WorldCore, obj: WorldObject) -> list[CollisionShape]:
     """Every collision shape of ``obj`` at its current pose, in its links' order."""
     spec = obj.spec
     if isinstance(obj, RobotObject):

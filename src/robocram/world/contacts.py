@@ -9,7 +9,6 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Sequence
 from functools import partial
-from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import NDArray
@@ -21,19 +20,18 @@ from robocram.world.contact_point import ContactPoint
 from robocram.world.derived import Derived
 from robocram.world.obstacle_boxes import KeptObstacleBoxes, ObstacleBoxes
 from robocram.world.versions import Versions
-from robocram.world.world_core import ObjectRef
+from robocram.world.world_core import ObjectRef, WorldCore
 from robocram.world.world_object import WorldObject
-
-if TYPE_CHECKING:
-    from robocram.world.world import World
+from robocram.world.world_part import WorldPart
 
 
-class Contacts:
+class Contacts(WorldPart):
     """Collisions, contact points, link distances and link bounds of one world."""
 
-    def __init__(self, world: World):
-        self._world = world
+    def __init__(self, world: WorldCore):
+        super().__init__(world)
         self._radii: Derived[str, dict[str, float]] = Derived(Versions.created)  # link -> [m]
+        self._boxes = KeptObstacleBoxes()
 
     def link_aabb(self, obj: ObjectRef, link: str) -> tuple[Vector3, Vector3]:
         """World-aligned bounds ``(lower, upper)`` [m] of one link of ``obj``."""
@@ -112,7 +110,7 @@ class Contacts:
         :meth:`link_distances` and :meth:`link_pairs_in_contact` while nothing else moves."""
         w = self._world
         names = [w.object(o).name for o in ignore]
-        return w.derived(_kept_obstacle_boxes).boxes(w, names)
+        return self._boxes.boxes(w, names)
 
     def link_radii(self, obj: ObjectRef) -> dict[str, float]:
         """Per link of ``obj``: a radius [m] about the link's frame that holds its shapes.
@@ -198,8 +196,3 @@ class Contacts:
         """Whether ``a`` and ``b`` touch (within 2 mm)."""
         w = self._world
         return closest_points.contact(w, w.object(a), w.object(b))
-
-
-def _kept_obstacle_boxes(world: World) -> KeptObstacleBoxes:
-    """The obstacle bounds a world keeps (the key under which ``World.derived`` keeps them)."""
-    return KeptObstacleBoxes()

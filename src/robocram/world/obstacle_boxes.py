@@ -12,7 +12,6 @@ from __future__ import annotations
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from functools import partial
-from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import NDArray
@@ -21,10 +20,8 @@ from robocram.world.closest_points import _link_names
 from robocram.world.derived import Derived
 from robocram.world.pybullet_backend import pybullet
 from robocram.world.versions import Stamp, Versions
+from robocram.world.world_core import WorldCore
 from robocram.world.world_object import WorldObject
-
-if TYPE_CHECKING:
-    from robocram.world.world import World
 
 FloatArray = NDArray[np.float64]
 
@@ -46,7 +43,7 @@ class ObstacleBoxes:
     high: FloatArray  # (links, 3)
 
     @classmethod
-    def of(cls, world: World, skip: Iterable[str]) -> ObstacleBoxes:
+    def of(cls, world: WorldCore, skip: Iterable[str]) -> ObstacleBoxes:
         """Read the bounds of every link of every object not named in ``skip``."""
         skipped = frozenset(skip)
         rows = [_BodyBoxes.read(world, o) for o in world.objects() if o.name not in skipped]
@@ -104,9 +101,9 @@ class _BodyBoxes:
     high: FloatArray  # (links, 3)
 
     @classmethod
-    def read(cls, world: World, obj: WorldObject) -> _BodyBoxes:
+    def read(cls, world: WorldCore, obj: WorldObject) -> _BodyBoxes:
         """Read ``obj``'s bounds as it stands now."""
-        cid = world.physics.client()
+        cid = world._cid()
         links = [(i, n) for i, n in _link_names(obj).items() if i in obj.colliders]
         table = np.array(
             [pybullet.getAABB(*obj.locate(i), physicsClientId=cid) for i, _ in links],
@@ -135,7 +132,7 @@ class KeptObstacleBoxes:
         default_factory=lambda: Derived(_table_stamp, size=1)
     )  # the table last asked for
 
-    def boxes(self, world: World, skip: Iterable[str]) -> ObstacleBoxes:
+    def boxes(self, world: WorldCore, skip: Iterable[str]) -> ObstacleBoxes:
         """:meth:`ObstacleBoxes.of`, from the bodies' bounds kept while they stay put."""
         skipped = frozenset(skip)
         versions = world.versions

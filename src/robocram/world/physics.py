@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from typing import TYPE_CHECKING
 
 from robocram.world import spatial_relations
 from robocram.world.derived import Derived
@@ -17,18 +16,16 @@ from robocram.world.pybullet_backend import pybullet
 from robocram.world.settling import LOOK, at_rest
 from robocram.world.sleeping import asleep
 from robocram.world.versions import Versions
-from robocram.world.world_core import ObjectRef, check_time_step, reset_joints
+from robocram.world.world_core import ObjectRef, WorldCore, check_time_step, reset_joints
 from robocram.world.world_object import RobotObject, WorldObject
-
-if TYPE_CHECKING:
-    from robocram.world.world import World
+from robocram.world.world_part import WorldPart
 
 
-class Physics:
+class Physics(WorldPart):
     """Simulated time of one world: its client, steps, settling and resting relations."""
 
-    def __init__(self, world: World):
-        self._world = world
+    def __init__(self, world: WorldCore):
+        super().__init__(world)
         self._stepping: Derived[None, tuple[list[str], list[str]]] = Derived(_structure)
 
     def client(self) -> int:
@@ -125,9 +122,9 @@ class Physics:
         """Whether ``obj`` (default: all free objects) stays within 5 mm / 0.15 rad."""
         w = self._world
         if obj is None:
-            return spatial_relations.stable(w)
+            return spatial_relations.stable(w, self.simulate)
         refs = [obj] if isinstance(obj, str | WorldObject) else list(obj)
-        return spatial_relations.stable(w, [w.object(o) for o in refs])
+        return spatial_relations.stable(w, self.simulate, [w.object(o) for o in refs])
 
     def supported_by(self, obj: ObjectRef, support: ObjectRef) -> bool:
         """Whether ``obj`` touches ``support`` and is above it."""

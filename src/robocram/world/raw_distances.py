@@ -9,16 +9,12 @@ skipped here: attachments, allowed contacts and adjacency are the caller's to de
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 from robocram.tf import Vector3
 from robocram.world.errors import UnknownLinkError
 from robocram.world.pybullet_backend import pybullet
-from robocram.world.world_core import ObjectRef
+from robocram.world.world_core import ObjectRef, WorldCore
 from robocram.world.world_object import WorldObject
-
-if TYPE_CHECKING:
-    from robocram.world.world import World
 
 
 @dataclass(frozen=True)
@@ -33,7 +29,7 @@ class LinkGap:
 class RawDistances:
     """Link bounds and closest points of the bodies of one world, straight from PyBullet."""
 
-    def __init__(self, world: World) -> None:
+    def __init__(self, world: WorldCore) -> None:
         self.world = world
 
     def collision_links(self, obj: ObjectRef) -> list[str]:
@@ -44,7 +40,7 @@ class RawDistances:
     def link_bounds(self, obj: ObjectRef, links: list[str]) -> list[tuple[Vector3, Vector3]]:
         """PyBullet's world-aligned bounds ``(low, high)`` [m] of each of ``links`` now."""
         handle = self.world.object(obj)
-        cid = self.world.physics.client()
+        cid = self.world._cid()
         found = []
         for link in links:
             low, high = pybullet.getAABB(*handle.locate(_index(handle, link)), physicsClientId=cid)
@@ -66,7 +62,7 @@ class RawDistances:
             reach,
             linkIndexA=index_a,
             linkIndexB=index_b,
-            physicsClientId=self.world.physics.client(),
+            physicsClientId=self.world._cid(),
         )
         if not points:
             return None

@@ -9,22 +9,16 @@ from __future__ import annotations
 
 import contextlib
 from collections.abc import Iterable, Iterator, Mapping
-from typing import TYPE_CHECKING
 
-from robocram.world.attachment import Attachment, check_acyclic
+from robocram.world.attachment import Attachment
 from robocram.world.pybullet_backend import pybullet
 from robocram.world.world_core import ObjectRef
+from robocram.world.world_part import WorldPart
 from robocram.world.world_state import WorldState
 
-if TYPE_CHECKING:
-    from robocram.world.world import World
 
-
-class Snapshots:
+class Snapshots(WorldPart):
     """Capture and restore of one world, and the state beyond poses that it carries."""
-
-    def __init__(self, world: World):
-        self._world = world
 
     @contextlib.contextmanager
     def stored_state(self) -> Iterator[WorldState]:
@@ -52,31 +46,16 @@ class Snapshots:
 
     def all_attachments(self) -> list[Attachment]:
         """Every attachment of the world, in the order they were made."""
-        return list(self._world._attachments.values())
+        return self._world._all_attachments()
 
     def set_attachments(self, attachments: Iterable[Attachment]) -> None:
         """Replace every attachment by ``attachments`` (kept relative poses, nothing moves)."""
-        w = self._world
-        new: dict[str, Attachment] = {}
-        for att in attachments:
-            w._link_index(w.object(att.robot), att.link)
-            check_acyclic(new, w.object(att.obj).name, att.robot)
-            new[att.obj] = att
-        w._attachments = new
-        w.versions.restructured()
+        self._world._set_attachments(attachments)
 
     def held_joints(self, obj: ObjectRef) -> dict[str, float]:
         """The joint values [rad | m] that simulation holds ``obj``'s joints at, by name."""
-        handle = self._world.object(obj)
-        names = {i: n for n, i in handle.joint_index.items()}
-        return {names[i]: v for i, v in self._world._holds.get(handle.name, {}).items()}
+        return self._world._held_joints(obj)
 
     def set_held_joints(self, obj: ObjectRef, values: Mapping[str, float]) -> None:
         """Hold exactly ``values`` (joint name -> [rad | m]) from now on; nothing moves now."""
-        w = self._world
-        handle = w.object(obj)
-        movable = set(w._movable_names(handle))
-        for name in values:
-            if name not in movable:
-                w._movable_index(handle, name)  # raises the typed error naming it
-        w._holds[handle.name] = {handle.joint_index[n]: float(v) for n, v in values.items()}
+        self._world._set_held_joints(obj, values)

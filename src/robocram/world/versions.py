@@ -13,13 +13,10 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Protocol
+from typing import Protocol
 
 from robocram.world.errors import UnknownObjectError
 from robocram.world.world_object import WorldObject
-
-if TYPE_CHECKING:
-    from robocram.world.snapshots import Snapshots
 
 Stamp = tuple[int, ...]  # counters compared as one value
 Named = str | WorldObject  # a body by its name or its handle
@@ -123,6 +120,12 @@ class BodyStamps:
     states: tuple[tuple[float, ...], ...]  # per body, its state then (body_state)
 
 
+class _StateReader(Protocol):
+    """The part of a world that reads a body's state (its snapshots)."""
+
+    def body_state(self, obj: str) -> tuple[float, ...]: ...
+
+
 class _StampedWorld(Protocol):
     """What :class:`BodyStamps` reads of a world."""
 
@@ -130,7 +133,7 @@ class _StampedWorld(Protocol):
     def versions(self) -> Versions: ...
 
     @property
-    def snapshots(self) -> Snapshots: ...
+    def snapshots(self) -> _StateReader: ...
 
 
 MOVED = 1e-6  # [m | rad] a body's state changed by less (Bullet's round trips, creep): still

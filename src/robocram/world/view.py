@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, Literal
+from typing import Literal
 
 import numpy as np
 from numpy.typing import NDArray
@@ -23,19 +23,14 @@ from robocram.world.ray_hit import RayHit, cast_rays
 from robocram.world.visibility import Visibility
 from robocram.world.world_core import ObjectRef
 from robocram.world.world_object import WorldObject
-
-if TYPE_CHECKING:
-    from robocram.world.world import World
+from robocram.world.world_part import WorldPart
 
 VisibilityMethod = Literal["ray", "render"]
 DEFAULT_VISIBILITY: VisibilityMethod = "ray"
 
 
-class View:
+class View(WorldPart):
     """Cameras, visibility, rendering and ray casts in one world."""
-
-    def __init__(self, world: World):
-        self._world = world
 
     def camera(self, robot: ObjectRef, camera: str | None = None) -> Camera:
         """The robot's camera (by name; default the first) at its current pose."""

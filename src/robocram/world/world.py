@@ -15,7 +15,7 @@ from robocram.robots import RobotDescription, install_description, load_descript
 from robocram.tf import PoseLike, Vector3
 from robocram.world import visibility
 from robocram.world.bodies import Bodies
-from robocram.world.body_spec import GREY, BodySpec, Rgba, ShapeSpec, UrdfSpec
+from robocram.world.body_spec import GREY, Rgba, ShapeSpec, UrdfSpec
 from robocram.world.catalogue import catalogue_item
 from robocram.world.contacts import Contacts
 from robocram.world.physics import Physics
@@ -71,14 +71,6 @@ class World(WorldCore):
         with contextlib.suppress(Exception):
             self.close()
 
-    def add_object(
-        self, name: str, type: str, spec: BodySpec, pose: PoseLike = ORIGIN
-    ) -> WorldObject:  # noqa: A002
-        """Add a body made from ``spec``, called ``name``, of type ``type``, at ``pose``."""
-        handle = WorldObject(name, type, -1, spec)
-        self._insert(handle, pose)
-        return handle
-
     def add_box(
         self,
         name: str,
@@ -125,6 +117,15 @@ class World(WorldCore):
         self._start_within_limits(handle)
         return handle
 
+    def _remove(self, obj: ObjectRef) -> None:
+        """Take ``obj`` out (see :meth:`WorldCore._remove`); a robot's facts leave the KB."""
+        handle = self.object(obj)
+        super()._remove(handle)
+        if isinstance(handle, RobotObject) and self._kb is not None:
+            name = handle.description.name
+            if not any(r.description.name == name for r in self.robots()):
+                self._kb.add_fact_group(f"{name}_description", [])
+
     def _insert(self, handle: WorldObject, pose: PoseLike = ORIGIN) -> WorldObject:
         """Add ``handle``'s body (see :meth:`WorldCore._insert`); a robot's facts join the KB."""
         super()._insert(handle, pose)
@@ -135,12 +136,7 @@ class World(WorldCore):
     def remove(self, obj: ObjectRef) -> None:
         """Take ``obj`` out of the world, with its attachments (either end); a robot's facts
         leave the knowledge base."""
-        handle = self.object(obj)
-        self._remove(handle)
-        if isinstance(handle, RobotObject) and self._kb is not None:
-            name = handle.description.name
-            if not any(r.description.name == name for r in self.robots()):
-                self._kb.add_fact_group(f"{name}_description", [])
+        self._remove(obj)
 
     def _start_within_limits(self, robot: RobotObject) -> None:
         """Put every joint at its in-limit value nearest 0 (some grippers exclude 0), and

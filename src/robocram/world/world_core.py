@@ -7,12 +7,13 @@
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterable, Iterator, Mapping
 
 from robocram.robots import RobotModel, mimic_followers
 from robocram.tf import Pose, PoseLike
 from robocram.world.attachment import Attachment, check_acyclic
 from robocram.world.body_loading import create_body
+from robocram.world.body_spec import BodySpec
 from robocram.world.errors import (
     DuplicateObjectError,
     NotARobotError,
@@ -83,6 +84,14 @@ class WorldCore:
     def closed(self) -> bool:
         """Whether :meth:`close` was called."""
         return self.client < 0
+
+    def add_object(
+        self, name: str, type: str, spec: BodySpec, pose: PoseLike = ORIGIN
+    ) -> WorldObject:  # noqa: A002
+        """Add a body made from ``spec``, called ``name``, of type ``type``, at ``pose``."""
+        handle = WorldObject(name, type, -1, spec)
+        self._insert(handle, pose)
+        return handle
 
     def _insert(self, handle: WorldObject, pose: PoseLike = ORIGIN) -> WorldObject:
         """Create ``handle``'s body from its spec, index it, place it at ``pose``; return it.
@@ -343,6 +352,31 @@ class WorldCore:
         if self._attachments.pop(handle.name, None) is None:
             raise WorldValueError(f"{handle.name!r} is not attached to anything; nothing to detach")
         self._versions.restructured()
+
+    def _all_attachments(self) -> list[Attachment]:
+        return list(self._attachments.values())
+
+    def _set_attachments(self, attachments: Iterable[Attachment]) -> None:
+        new: dict[str, Attachment] = {}
+        for att in attachments:
+            self._link_index(self.object(att.robot), att.link)
+            check_acyclic(new, self.object(att.obj).name, att.robot)
+            new[att.obj] = att
+        self._attachments = new
+        self._versions.restructured()
+
+    def _held_joints(self, obj: ObjectRef) -> dict[str, float]:
+        handle = self.object(obj)
+        names = {i: n for n, i in handle.joint_index.items()}
+        return {names[i]: v for i, v in self._holds.get(handle.name, {}).items()}
+
+    def _set_held_joints(self, obj: ObjectRef, values: Mapping[str, float]) -> None:
+        handle = self.object(obj)
+        movable = set(self._movable_names(handle))
+        for name in values:
+            if name not in movable:
+                self._movable_index(handle, name)  # raises the typed error naming it
+        self._holds[handle.name] = {handle.joint_index[n]: float(v) for n, v in values.items()}
 
     def _follow(self, carrier: str) -> None:
         """Re-place the objects attached to ``carrier`` (and theirs, recursively)."""

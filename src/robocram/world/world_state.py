@@ -8,15 +8,12 @@ seeds a copy of the world in another physics client.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 from robocram.world.attachment import Attachment
 from robocram.world.errors import WorldClosedError
 from robocram.world.pybullet_backend import pybullet
+from robocram.world.world_core import WorldCore
 from robocram.world.world_object import RobotObject, WorldObject
-
-if TYPE_CHECKING:
-    from robocram.world.world import World
 
 
 @dataclass(frozen=True)
@@ -39,22 +36,20 @@ class WorldState:
     time: float
 
     @classmethod
-    def capture(cls, world: World) -> WorldState:
+    def capture(cls, world: WorldCore) -> WorldState:
         """Snapshot ``world`` now."""
         if world.closed:
             raise WorldClosedError()
         handles = tuple(world.objects())
         return cls(
             handles=handles,
-            bodies=tuple(
-                tuple(_body_state(world.physics.client(), b) for b in h.bodies) for h in handles
-            ),
-            attachments=tuple(world.snapshots.all_attachments()),
-            holds=tuple((h.name, tuple(world.snapshots.held_joints(h).items())) for h in handles),
+            bodies=tuple(tuple(_body_state(world._cid(), b) for b in h.bodies) for h in handles),
+            attachments=tuple(world._all_attachments()),
+            holds=tuple((h.name, tuple(world._held_joints(h).items())) for h in handles),
             time=world.time,
         )
 
-    def restore(self, world: World) -> None:
+    def restore(self, world: WorldCore) -> None:
         """Put ``world`` (the one captured) back: objects, poses, joints, attachments.
 
         Objects are matched by identity: one added under a name that an object had when
@@ -63,20 +58,20 @@ class WorldState:
         keep = {id(h) for h in self.handles}
         for obj in world.objects():
             if id(obj) not in keep:
-                world.remove(obj)
+                world._remove(obj)
         for handle in self.handles:
             if handle.name not in world:
-                world.bodies.insert(handle)
+                world._insert(handle)
         self._apply(world)
 
-    def recreate(self, world: World) -> None:
+    def recreate(self, world: WorldCore) -> None:
         """Fill an empty ``world`` (another client) with new handles in this state."""
         for handle in self.handles:
-            world.bodies.insert(_clone(handle))
+            world._insert(_clone(handle))
         self._apply(world)
 
-    def _apply(self, world: World) -> None:
-        cid = world.physics.client()
+    def _apply(self, world: WorldCore) -> None:
+        cid = world._cid()
         for handle, states in zip(self.handles, self.bodies, strict=True):
             targets = world.object(handle.name).bodies
             for target, body in zip(targets, states, strict=True):
@@ -86,9 +81,9 @@ class WorldState:
                     pybullet.resetJointState(target, index, position, velocity, physicsClientId=cid)
             world.versions.moved(handle.name)
             world.versions.jointed(handle.name)
-        world.snapshots.set_attachments(self.attachments)
+        world._set_attachments(self.attachments)
         for name, held in self.holds:
-            world.snapshots.set_held_joints(name, dict(held))
+            world._set_held_joints(name, dict(held))
         world.time = self.time
 
 
