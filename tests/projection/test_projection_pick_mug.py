@@ -23,7 +23,7 @@ ANGLE_TOL = 0.05  # [rad]
 
 def _assert_joints_within_limits(world: World, robot: str) -> None:
     for joint, value in world.joint_states(robot).items():
-        limits = world.bodies.joint_limits(robot, joint)
+        limits = world.joint_limits(robot, joint)
         assert limits.lower - 1e-9 <= value <= limits.upper + 1e-9, (joint, value, limits)
 
 
@@ -57,7 +57,7 @@ def test_the_same_plan_picks_the_mug(robot: str) -> None:
     assert math.dist(mug_after.position[:2], mug_before.position[:2]) < POSITION_TOL
     fingers = world.joint_states(robot)[arm.gripper_joints[0]]
     assert (
-        fingers > world.bodies.joint_limits(robot, arm.gripper_joints[0]).lower + 1e-3
+        fingers > world.joint_limits(robot, arm.gripper_joints[0]).lower + 1e-3
     )  # holds it
 
 

@@ -111,7 +111,7 @@ def test_a_stop_while_a_drawer_opens_leaves_no_attachment_and_the_bowl_in_the_dr
             tool = world.link_pose(robot.name, robot.arm("right").tool_frame)
             assert tool.distance_to(world.link_pose("kitchen", handle)) < POSITION_TOLERANCE
         assert world.bodies.attached_to("bowl-1") is None
-        assert all(att.obj != "bowl-1" for att in world.snapshots.all_attachments())
+        assert all(att.obj != "bowl-1" for att in world.all_attachments())
         bowl = world.pose("bowl-1").position
         assert bowl[1] == pytest.approx(bowl_before[1] - opened, abs=1e-6)  # rode along
         assert bowl[0] == pytest.approx(bowl_before[0], abs=1e-6)

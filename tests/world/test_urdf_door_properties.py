@@ -109,7 +109,7 @@ def test_add_urdf_loads_what_the_parser_reads_or_refuses_cleanly(
         assert set(world.link_names("drawn")) == set(model.links)
         assert set(world.joint_states("drawn")) == {j.name for j in model.movable_joints()}
         for joint in model.movable_joints():
-            limits = world.bodies.joint_limits("drawn", joint.name)
+            limits = world.joint_limits("drawn", joint.name)
             assert (limits.lower, limits.upper) == pytest.approx((joint.lower, joint.upper))
 
 

@@ -81,12 +81,12 @@ def _snapshot(world: World) -> dict[str, Any]:
             o.type,
             world.pose(o).matrix(),
             world.joint_states(o),
-            world.snapshots.held_joints(o),
+            world.held_joints(o),
         )
         for o in world.objects()
     }
     attachments = {
-        (a.obj, a.robot, a.link): a.link_T_obj.matrix() for a in world.snapshots.all_attachments()
+        (a.obj, a.robot, a.link): a.link_T_obj.matrix() for a in world.all_attachments()
     }
     facts = sorted(str(a["R"]) for a in world.kb.query("robot(R)"))
     return {"objects": objects, "attachments": attachments, "facts": facts, "time": world.time}

@@ -32,7 +32,7 @@ from robocram.world import Derived, ObstacleBoxes, PlanningArea, RobotHandle, Ve
 
 CELL = 0.01  # [m] obstacle grid cells
 SPACING = 0.02  # [m] robot sample squares: more than the 1 cm a dense check moves
-CONTACT = 0.002  # [m] nearer than this counts as touching, as in World.collisions
+CONTACT = 0.002  # [m] nearer than this counts as touching, as in World.contacts.collisions
 CHUNK = 128  # poses per batch of fast checks along a motion
 MARGIN = 0.5  # [m] room around the obstacles, start and goal for going around
 ESCAPE = 0.1  # [m] travel from the start during which its contacts are tolerated

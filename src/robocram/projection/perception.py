@@ -2,7 +2,7 @@
 
 An object designator's ``type`` and ``name`` properties filter the world's objects (the
 robot and floors are never perceived); the robot's camera must see at least 90 % of an
-object (``World.visible``). The answer is a new object designator carrying the object's
+object (``World.view.visible``). The answer is a new object designator carrying the object's
 name, type and pose in the robot's base frame, equated with the one asked for; with
 ``all_.objects(...)`` every visible match is returned, nearest first, as fresh designators
 (they describe different things, so they are not equated with the question).

@@ -4,7 +4,7 @@ CRAM projects a plan to choose between plans and parameters before the robot com
 one: which grasp, which placing location, which of two ways to clear a table. Here
 ``prospect(robot, plan)`` runs ``plan`` on the projected robot exactly as
 ``simulated_robot`` would, then puts the world back (objects, poses, velocities, joints,
-attachments; :meth:`~robocram.world.World.stored_state`) and returns a :class:`Prospect`:
+attachments; ``world.snapshots.stored_state``) and returns a :class:`Prospect`:
 the outcome, the task tree, the trajectories that would be executed and where every
 object would end up.
 

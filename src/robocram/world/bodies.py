@@ -13,9 +13,8 @@ from typing import TYPE_CHECKING
 
 from robocram.world.attachment import Attachment
 from robocram.world.body_spec import GREY, MeshSpec, Rgba, ShapeSpec
-from robocram.world.joint_state import JointLimits
 from robocram.world.pybullet_backend import pybullet
-from robocram.world.world_core import ORIGIN, ObjectRef
+from robocram.world.world_core import ORIGIN, ObjectRef, link_slot
 from robocram.world.world_object import WorldObject
 from robocram.world.world_part import WorldPart
 
@@ -25,14 +24,6 @@ if TYPE_CHECKING:
 
 class Bodies(WorldPart):
     """Adding floors, primitives and meshes; body ids, link frames, limits, attachments."""
-
-    def insert(self, handle: WorldObject, pose: PoseLike = ORIGIN) -> WorldObject:
-        """Create ``handle``'s body from its spec, index it, place it at ``pose``; return it.
-
-        The handle may be one removed earlier: it gets a new body and keeps its identity.
-        A robot's facts join the world's knowledge base.
-        """
-        return self._world._insert(handle, pose)
 
     def add_floor(self, name: str = "floor") -> WorldObject:
         """Add the static ground plane z = 0 (type ``floor``)."""
@@ -77,10 +68,6 @@ class Bodies(WorldPart):
         spec = MeshSpec(Path(path), scale, mass, color)
         return self._world.add_object(name, type, spec, pose)
 
-    def owner(self, body: int) -> WorldObject | None:
-        """The object a pybullet body id (a part's too) belongs to; None if no object's."""
-        return self._world._owners.get(body)
-
     def link_frames(self, obj: ObjectRef, links: Sequence[str]) -> list[tuple[float, ...]]:
         """Per link of ``links``: its frame in the world as ``(x, y, z, qx, qy, qz, qw)``,
         read from the backend in one call (checks read tens of links per configuration)."""
@@ -90,7 +77,7 @@ class Bodies(WorldPart):
         try:
             indices = [index[link] for link in links]
         except KeyError:
-            indices = [w._link_index(handle, link) for link in links]  # names the culprit
+            indices = [link_slot(handle, link) for link in links]  # names the culprit
         if (
             min(indices, default=0) >= 0
             and not handle.parts
@@ -98,21 +85,18 @@ class Bodies(WorldPart):
         ):
             states = pybullet.getLinkStates(
                 handle.body_id, indices, computeForwardKinematics=True,
-                physicsClientId=w._cid(),
+                physicsClientId=w.physics_client(),
             )  # fmt: skip
             return [(*st[4], *st[5]) for st in states]
         poses = [w.link_pose(handle, link) for link in links]  # the root or added frames
         return [(*p.position, *p.orientation) for p in poses]
 
-    def joint_limits(self, obj: ObjectRef, joint: str) -> JointLimits:
-        """Position limits [rad | m] of a movable joint; continuous ones are -inf/inf."""
-        return self._world._limits_of(obj, joint)
-
     def attachments(self, robot: ObjectRef) -> dict[str, str]:
         """Objects attached to ``robot``: object name -> link name."""
         name = self._world.object(robot).name
-        return {a.obj: a.link for a in self._world._attachments.values() if a.robot == name}
+        return {a.obj: a.link for a in self._world.all_attachments() if a.robot == name}
 
     def attached_to(self, obj: ObjectRef) -> Attachment | None:
         """The attachment holding ``obj``, if any."""
-        return self._world._attachments.get(self._world.object(obj).name)
+        name = self._world.object(obj).name
+        return next((a for a in self._world.all_attachments() if a.obj == name), None)

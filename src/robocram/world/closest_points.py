@@ -21,7 +21,7 @@ def _carried_with(world: WorldCore, obj: WorldObject) -> set[str]:
     changed = True
     while changed:
         changed = False
-        for att in world._all_attachments():
+        for att in world.all_attachments():
             if (att.obj in group) != (att.robot in group):
                 group |= {att.obj, att.robot}
                 changed = True
@@ -49,7 +49,7 @@ def closest_points(
     link_b: str | None = None,
 ) -> list[ContactPoint]:
     """Closest points of ``a`` and ``b`` (or of the given links) nearer than ``distance``."""
-    cid = world._cid()
+    cid = world.physics_client()
     points = [
         point
         for body_a, body_b, filters in _body_pairs(a, b, link_a, link_b)

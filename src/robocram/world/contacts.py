@@ -20,7 +20,7 @@ from robocram.world.contact_point import ContactPoint
 from robocram.world.derived import Derived
 from robocram.world.obstacle_boxes import KeptObstacleBoxes, ObstacleBoxes
 from robocram.world.versions import Versions
-from robocram.world.world_core import ObjectRef, WorldCore
+from robocram.world.world_core import ObjectRef, WorldCore, link_slot
 from robocram.world.world_object import WorldObject
 from robocram.world.world_part import WorldPart
 
@@ -37,7 +37,7 @@ class Contacts(WorldPart):
         """World-aligned bounds ``(lower, upper)`` [m] of one link of ``obj``."""
         w = self._world
         handle = w.object(obj)
-        low, high = visibility.link_aabb(w, handle, w._link_index(handle, link))
+        low, high = visibility.link_aabb(w, handle, link_slot(handle, link))
         return (low[0], low[1], low[2]), (high[0], high[1], high[2])
 
     def link_aabbs(self, obj: ObjectRef) -> dict[str, tuple[Vector3, Vector3]]:

@@ -20,7 +20,7 @@ from robocram.world.world_core import ObjectRef, WorldCore
 def kinematic(world: WorldCore, obj: ObjectRef) -> Iterator[None]:
     """Inside the block ``obj`` is moved only by whoever sets its pose (its carrier)."""
     handle = world.object(obj)
-    cid = world._cid()
+    cid = world.physics_client()
     mass = float(pybullet.getDynamicsInfo(handle.body_id, -1, physicsClientId=cid)[0])
     pybullet.changeDynamics(handle.body_id, -1, mass=0.0, physicsClientId=cid)
     try:

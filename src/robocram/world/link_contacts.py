@@ -33,7 +33,7 @@ def link_bounds(world: WorldCore, obj: WorldObject, indices: Iterable[int]) -> d
     Queries about one configuration share them (pass them as ``bounds``): a check asks
     both what its links touch and which pairs of its own links touch.
     """
-    cid = world._cid()
+    cid = world.physics_client()
     return {i: pybullet.getAABB(*obj.locate(i), physicsClientId=cid) for i in indices}
 
 
@@ -60,7 +60,7 @@ def _overlaps(
     name)`` per pair of links whose bounds, grown by ``distance``, overlap; objects named in
     ``skip`` left out. ``obstacles``, when it covers the query, stands in for the
     broadphase; ``bounds`` holds links' bounds read before (:func:`link_bounds`)."""
-    cid = world._cid()
+    cid = world.physics_client()
     names = _link_names(obj)
     if links is None:
         indices = obj.collider_names()  # no shape, no hit
@@ -124,7 +124,7 @@ def _closest(
     (body_a, index_a), (body_b, index_b) = a.locate(la), b.locate(lb)
     points = pybullet.getClosestPoints(
         body_a, body_b, d, linkIndexA=index_a, linkIndexB=index_b,
-        physicsClientId=world._cid(),
+        physicsClientId=world.physics_client(),
     )  # fmt: skip
     return [float(p[8]) for p in points or ()]
 
@@ -216,7 +216,7 @@ def self_contacts(
     key = tuple(pairs)
     if not key:
         return []
-    cid = world._cid()
+    cid = world.physics_client()
     rows = obj.pair_rows(key)
     boxes = [_bounds_of(obj, i, bounds, cid) for i in rows.used]
     table = np.array(boxes, dtype=float).reshape(-1, 2, 3)
@@ -249,7 +249,7 @@ def self_distances(
     gaps = np.zeros(len(pairs))
     if not pairs:
         return gaps
-    cid = world._cid()
+    cid = world.physics_client()
     rows = obj.pair_rows(tuple(pairs))
     boxes = [pybullet.getAABB(*obj.locate(i), physicsClientId=cid) for i in rows.used]
     table = np.array(boxes, dtype=float).reshape(-1, 2, 3)

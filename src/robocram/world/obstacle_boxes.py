@@ -103,7 +103,7 @@ class _BodyBoxes:
     @classmethod
     def read(cls, world: WorldCore, obj: WorldObject) -> _BodyBoxes:
         """Read ``obj``'s bounds as it stands now."""
-        cid = world._cid()
+        cid = world.physics_client()
         links = [(i, n) for i, n in _link_names(obj).items() if i in obj.colliders]
         table = np.array(
             [pybullet.getAABB(*obj.locate(i), physicsClientId=cid) for i, _ in links],

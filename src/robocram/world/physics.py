@@ -10,55 +10,16 @@ import math
 from collections.abc import Callable, Sequence
 
 from robocram.world import spatial_relations
-from robocram.world.derived import Derived
 from robocram.world.errors import WorldValueError
-from robocram.world.pybullet_backend import pybullet
 from robocram.world.settling import LOOK, at_rest
 from robocram.world.sleeping import asleep
-from robocram.world.versions import Versions
-from robocram.world.world_core import ObjectRef, WorldCore, check_time_step, reset_joints
-from robocram.world.world_object import RobotObject, WorldObject
+from robocram.world.world_core import ObjectRef, check_time_step
+from robocram.world.world_object import WorldObject
 from robocram.world.world_part import WorldPart
 
 
 class Physics(WorldPart):
     """Simulated time of one world: its client, steps, settling and resting relations."""
-
-    def __init__(self, world: WorldCore):
-        super().__init__(world)
-        self._stepping: Derived[None, tuple[list[str], list[str]]] = Derived(_structure)
-
-    def client(self) -> int:
-        """The pybullet client id, for the world's own helper modules; closed: an error."""
-        return self._world._cid()
-
-    def step(self) -> None:
-        """Advance physics one time step; robots hold their joints, attachments follow.
-
-        Held joints of robots are put back after the step, so their motors are off.
-        """
-        w = self._world
-        cid = w._cid()
-        robots = [(w._objects[n].body_id, held) for n, held in w._holds.items()
-                  if isinstance(w._objects[n], RobotObject)]  # fmt: skip
-        for body, held in robots:
-            w._motors.match(body, held.keys(), w.time_step, cid)
-        pybullet.stepSimulation(physicsClientId=cid)
-        w.time += w.time_step
-        w.versions.stepped(*self._stepping.get(None, self._stepped, w.versions))
-        for body, held in robots:
-            reset_joints(body, held, cid)
-        for carrier in {a.robot for a in w._attachments.values()}:
-            w._follow(carrier)
-
-    def _stepped(self) -> tuple[list[str], list[str]]:
-        """The objects a physics step may move (all but static ones; a cut model's parts
-        are bodies of their own), and those whose joints it may change (all with some)."""
-        objects = self._world._objects.values()
-        return (
-            [o.name for o in objects if not o.is_static or o.parts],
-            [o.name for o in objects if o.movable_joints],
-        )
 
     def simulate(self, seconds: float, stop_check: Callable[[], None] | None = None) -> int:
         """Run physics for ``seconds`` [s] of simulated time; return the number of steps.
@@ -70,7 +31,7 @@ class Physics(WorldPart):
         for _ in range(steps):
             if stop_check is not None:
                 stop_check()
-            self.step()
+            self._world.step()
         return steps
 
     def settle(
@@ -91,8 +52,8 @@ class Physics(WorldPart):
         if steps == 0:
             return 0
         look = max(1, round(LOOK / w.time_step))
-        cid = w._cid()
-        others = [b for o in w._objects.values() if o is not handle for b in o.bodies]
+        cid = w.physics_client()
+        others = [b for o in w.objects() if o is not handle for b in o.bodies]
         done = 0
         try:
             with asleep(others, cid):
@@ -101,14 +62,14 @@ class Physics(WorldPart):
                     for _ in range(min(look, steps - done)):
                         if stop_check is not None:
                             stop_check()
-                        self.step()
+                        w.step()
                         done += 1
                     now = w.pose(handle)
                     if at_rest(before, now):
                         break
                     before = now
         finally:
-            self.step()  # Bullet marks the woken bodies awake at the end of a step
+            w.step()  # Bullet marks the woken bodies awake at the end of a step
         return done + 1
 
     def _steps(self, seconds: float) -> int:
@@ -138,7 +99,3 @@ class Physics(WorldPart):
     def below(self, a: ObjectRef, b: ObjectRef) -> bool:
         """Whether ``a`` is under ``b``."""
         return spatial_relations.below(self._world, self._world.object(a), self._world.object(b))
-
-
-def _structure(versions: Versions, key: None) -> int:
-    return versions.structure

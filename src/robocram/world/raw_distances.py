@@ -40,7 +40,7 @@ class RawDistances:
     def link_bounds(self, obj: ObjectRef, links: list[str]) -> list[tuple[Vector3, Vector3]]:
         """PyBullet's world-aligned bounds ``(low, high)`` [m] of each of ``links`` now."""
         handle = self.world.object(obj)
-        cid = self.world._cid()
+        cid = self.world.physics_client()
         found = []
         for link in links:
             low, high = pybullet.getAABB(*handle.locate(_index(handle, link)), physicsClientId=cid)
@@ -62,7 +62,7 @@ class RawDistances:
             reach,
             linkIndexA=index_a,
             linkIndexB=index_b,
-            physicsClientId=self.world._cid(),
+            physicsClientId=self.world.physics_client(),
         )
         if not points:
             return None

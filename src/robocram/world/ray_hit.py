@@ -33,12 +33,12 @@ def cast_rays(
 ) -> list[RayHit | None]:
     """The first hit of each segment ``starts[i]``..``ends[i]`` [m], in one pybullet call."""
     hits = pybullet.rayTestBatch(
-        [list(s) for s in starts], [list(e) for e in ends], physicsClientId=world._cid()
+        [list(s) for s in starts], [list(e) for e in ends], physicsClientId=world.physics_client()
     )
     links: dict[int, dict[int, str]] = {}  # body -> link slot -> name, built on first hit
     out: list[RayHit | None] = []
     for start, end, hit in zip(starts, ends, hits, strict=True):
-        obj = world._owners.get(hit[0])
+        obj = world.owner(hit[0])
         if obj is None:
             out.append(None)
             continue
@@ -66,7 +66,7 @@ def first_hit_bodies(
 
     The cheap form of :func:`cast_rays` for many rays that only ask "anything there?".
     """
-    cid = world._cid()
+    cid = world.physics_client()
     out = np.full(len(starts), -1, dtype=np.int64)
     for i in range(0, len(starts), RAY_BATCH):
         hits = pybullet.rayTestBatch(  # arrays go in as they are: 4x faster than lists
@@ -103,7 +103,7 @@ class RayHits:
 
 def ray_hits(world: WorldCore, starts: NDArray[np.float64], ends: NDArray[np.float64]) -> RayHits:
     """First hits of the segments ``starts[i]``..``ends[i]`` (N x 3 arrays [m])."""
-    cid = world._cid()
+    cid = world.physics_client()
     rows: list[tuple[object, ...]] = []
     for i in range(0, len(starts), RAY_BATCH):
         rows += pybullet.rayTestBatch(

@@ -129,7 +129,7 @@ def _box_hits(
 
 def lone_body(world: WorldCore, obj: WorldObject) -> LoneBody | None:
     """``obj``'s collision pieces where they are now; None if one of them is not modelled."""
-    cid = world._cid()
+    cid = world.physics_client()
     placed: list[tuple[Piece, Pose]] = []
     for body, link in _all_links(obj, cid):
         shapes = pybullet.getCollisionShapeData(body, link, physicsClientId=cid)

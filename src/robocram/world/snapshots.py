@@ -8,9 +8,8 @@ read and written here, with the block that restores everything on leaving.
 from __future__ import annotations
 
 import contextlib
-from collections.abc import Iterable, Iterator, Mapping
+from collections.abc import Iterator
 
-from robocram.world.attachment import Attachment
 from robocram.world.pybullet_backend import pybullet
 from robocram.world.world_core import ObjectRef
 from robocram.world.world_part import WorldPart
@@ -35,7 +34,7 @@ class Snapshots(WorldPart):
         geometry compares them, cheaper than ``pose`` and ``joint_states``)."""
         w = self._world
         handle = w.object(obj)
-        cid = w._cid()
+        cid = w.physics_client()
         position, orientation = pybullet.getBasePositionAndOrientation(
             handle.body_id, physicsClientId=cid
         )
@@ -43,19 +42,3 @@ class Snapshots(WorldPart):
         if handle.movable_joints:
             joints = tuple(w.joint_states(handle).values())
         return (float(handle.body_id), *position, *orientation, *joints)
-
-    def all_attachments(self) -> list[Attachment]:
-        """Every attachment of the world, in the order they were made."""
-        return self._world._all_attachments()
-
-    def set_attachments(self, attachments: Iterable[Attachment]) -> None:
-        """Replace every attachment by ``attachments`` (kept relative poses, nothing moves)."""
-        self._world._set_attachments(attachments)
-
-    def held_joints(self, obj: ObjectRef) -> dict[str, float]:
-        """The joint values [rad | m] that simulation holds ``obj``'s joints at, by name."""
-        return self._world._held_joints(obj)
-
-    def set_held_joints(self, obj: ObjectRef, values: Mapping[str, float]) -> None:
-        """Hold exactly ``values`` (joint name -> [rad | m]) from now on; nothing moves now."""
-        self._world._set_held_joints(obj, values)

@@ -56,7 +56,7 @@ def stable(
     Runs the simulation in place and restores the world exactly afterwards, which is the
     same as simulating a copy but avoids re-creating the bodies.
     """
-    carried = {att.obj for att in world._all_attachments()}
+    carried = {att.obj for att in world.all_attachments()}
     watched = [
         o
         for o in (objects if objects is not None else world.objects())

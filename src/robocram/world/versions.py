@@ -121,7 +121,7 @@ class BodyStamps:
 
 
 class _StateReader(Protocol):
-    """The part of a world that reads a body's state (its snapshots)."""
+    """The part of a world that reads a body's state (``world.snapshots``)."""
 
     def body_state(self, obj: str) -> tuple[float, ...]: ...
 

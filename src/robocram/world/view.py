@@ -104,7 +104,7 @@ class View(WorldPart):
         cam = cam.with_aspect(width / height)
         _, _, rgba, _, _ = pybullet.getCameraImage(
             width, height, cam.view_matrix(), cam.projection_matrix(),
-            renderer=pybullet.ER_TINY_RENDERER, physicsClientId=self._world._cid(),
+            renderer=pybullet.ER_TINY_RENDERER, physicsClientId=self._world.physics_client(),
         )  # fmt: skip
         return np.reshape(np.asarray(rgba, dtype=np.uint8), (height, width, 4))[:, :, :3].copy()
 

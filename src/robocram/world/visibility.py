@@ -43,7 +43,7 @@ class Visibility:
 
 def aabb(world: WorldCore, obj: WorldObject) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """World axis-aligned bounds ``(lower, upper)`` [m] over all of ``obj``'s links."""
-    cid = world._cid()
+    cid = world.physics_client()
     boxes = []
     for body in obj.bodies:
         boxes.append(pybullet.getAABB(body, -1, physicsClientId=cid))
@@ -56,7 +56,7 @@ def aabb(world: WorldCore, obj: WorldObject) -> tuple[NDArray[np.float64], NDArr
 
 def link_aabb(world: WorldCore, obj: WorldObject, index: int) -> tuple[Vector3, Vector3]:
     """World axis-aligned bounds ``(lower, upper)`` [m] of link ``index`` of ``obj``."""
-    low, high = pybullet.getAABB(*obj.locate(index), physicsClientId=world._cid())
+    low, high = pybullet.getAABB(*obj.locate(index), physicsClientId=world.physics_client())
     return (float(low[0]), float(low[1]), float(low[2])), (
         float(high[0]),
         float(high[1]),
@@ -67,7 +67,7 @@ def link_aabb(world: WorldCore, obj: WorldObject, index: int) -> tuple[Vector3, 
 @contextmanager
 def isolated(world: WorldCore, obj: WorldObject) -> Iterator[None]:
     """Shift ``obj`` by :data:`ISOLATION_OFFSET`; put it back exactly afterwards."""
-    cid = world._cid()
+    cid = world.physics_client()
     kept = []
     for body in obj.bodies:
         pos, orn = pybullet.getBasePositionAndOrientation(body, physicsClientId=cid)
@@ -107,7 +107,7 @@ def _tangent_grid(
 
 def _first_hits(world: WorldCore, camera: Camera, tangents: NDArray[np.float64]) -> list[int]:
     starts, ends = camera.ray_ends(tangents)
-    hits = pybullet.rayTestBatch(starts, ends, physicsClientId=world._cid())
+    hits = pybullet.rayTestBatch(starts, ends, physicsClientId=world.physics_client())
     bodies = np.array([int(h[0]) for h in hits], dtype=np.int64)
     return [int(b) for b in main_bodies(world, bodies)]
 
@@ -173,7 +173,7 @@ def segmentation(world: WorldCore, camera: Camera, width: int, height: int) -> N
         camera.view_matrix(),
         camera.projection_matrix(),
         renderer=pybullet.ER_TINY_RENDERER,
-        physicsClientId=world._cid(),
+        physicsClientId=world.physics_client(),
     )
     return main_bodies(world, np.reshape(np.asarray(seg, dtype=np.int64), (height, width)))
 

@@ -112,31 +112,22 @@ class World(WorldCore):
         desc = load_description(robot)
         spec = robot_body_spec(name or desc.name, desc)
         handle = RobotObject(name or desc.name, "robot", -1, spec, description=desc)
-        self._insert(handle, pose)
-        self.snapshots.set_held_joints(handle, dict.fromkeys(self.joint_states(handle), 0.0))
+        self.insert(handle, pose)
+        self.set_held_joints(handle, dict.fromkeys(self.joint_states(handle), 0.0))
         self._start_within_limits(handle)
         return handle
 
-    def _remove(self, obj: ObjectRef) -> None:
-        """Take ``obj`` out (see :meth:`WorldCore._remove`); a robot's facts leave the KB."""
-        handle = self.object(obj)
-        super()._remove(handle)
+    def _inserted(self, handle: WorldObject) -> None:
+        """A robot's facts join the knowledge base."""
+        if isinstance(handle, RobotObject) and self._kb is not None:
+            self._install_description(handle.description)
+
+    def _removed(self, handle: WorldObject) -> None:
+        """A robot's facts leave the knowledge base (when no robot of its kind is left)."""
         if isinstance(handle, RobotObject) and self._kb is not None:
             name = handle.description.name
             if not any(r.description.name == name for r in self.robots()):
                 self._kb.add_fact_group(f"{name}_description", [])
-
-    def _insert(self, handle: WorldObject, pose: PoseLike = ORIGIN) -> WorldObject:
-        """Add ``handle``'s body (see :meth:`WorldCore._insert`); a robot's facts join the KB."""
-        super()._insert(handle, pose)
-        if isinstance(handle, RobotObject) and self._kb is not None:
-            self._install_description(handle.description)
-        return handle
-
-    def remove(self, obj: ObjectRef) -> None:
-        """Take ``obj`` out of the world, with its attachments (either end); a robot's facts
-        leave the knowledge base."""
-        self._remove(obj)
 
     def _start_within_limits(self, robot: RobotObject) -> None:
         """Put every joint at its in-limit value nearest 0 (some grippers exclude 0), and
@@ -145,7 +136,7 @@ class World(WorldCore):
         model = robot.description.model
         masters = {j.mimic.joint for j in model.joints.values() if j.mimic is not None}
         start = {
-            name: self._limits_of(robot, name).clamp(0.0)
+            name: self.joint_limits(robot, name).clamp(0.0)
             for name in self.joint_states(robot)
             if model.joints[name].mimic is None
         }

@@ -14,6 +14,7 @@ from robocram.tf import Pose, PoseLike
 from robocram.world.attachment import Attachment, check_acyclic
 from robocram.world.body_loading import create_body
 from robocram.world.body_spec import BodySpec
+from robocram.world.derived import Derived
 from robocram.world.errors import (
     DuplicateObjectError,
     NotARobotError,
@@ -67,6 +68,7 @@ class WorldCore:
         self._holds: dict[str, dict[int, float]] = {}  # robot -> joint index -> held value
         self._motors = HeldMotors()  # a robot's held joints need no motor
         self._versions = Versions()  # stamped by every write below
+        self._stepping: Derived[None, tuple[list[str], list[str]]] = Derived(_structure)
 
     @property
     def versions(self) -> Versions:
@@ -85,22 +87,28 @@ class WorldCore:
         """Whether :meth:`close` was called."""
         return self.client < 0
 
+    def physics_client(self) -> int:
+        """The pybullet client id, for the world's own helper modules; closed: an error."""
+        if self.client < 0:
+            raise WorldClosedError()
+        return self.client
+
     def add_object(
         self, name: str, type: str, spec: BodySpec, pose: PoseLike = ORIGIN
     ) -> WorldObject:  # noqa: A002
         """Add a body made from ``spec``, called ``name``, of type ``type``, at ``pose``."""
         handle = WorldObject(name, type, -1, spec)
-        self._insert(handle, pose)
+        self.insert(handle, pose)
         return handle
 
-    def _insert(self, handle: WorldObject, pose: PoseLike = ORIGIN) -> WorldObject:
+    def insert(self, handle: WorldObject, pose: PoseLike = ORIGIN) -> WorldObject:
         """Create ``handle``'s body from its spec, index it, place it at ``pose``; return it.
 
         The handle may be one removed earlier: it gets a new body and keeps its identity.
         """
         if handle.name in self._objects:
             raise DuplicateObjectError(handle.name)
-        cid = self._cid()
+        cid = self.physics_client()
         loaded = create_body(handle.name, handle.spec, cid)
         handle.body_id = loaded.bodies[0]
         several = len(loaded.bodies) > 1
@@ -134,13 +142,14 @@ class WorldCore:
         if handle.joint_index:
             self._holds[handle.name] = {}
         self.set_pose(handle, pose)
+        self._inserted(handle)
         return handle
 
-    def _cid(self) -> int:
-        """The pybullet client id; closed: :class:`WorldClosedError`."""
-        if self.client < 0:
-            raise WorldClosedError()
-        return self.client
+    def _inserted(self, handle: WorldObject) -> None:
+        """Called once ``handle``'s body is in the world (the facade adds a robot's facts)."""
+
+    def _removed(self, handle: WorldObject) -> None:
+        """Called once ``handle``'s body left the world (the facade drops a robot's facts)."""
 
     def object(self, name: ObjectRef) -> WorldObject:
         """The object called ``name`` (a handle is checked to still belong to this world)."""
@@ -157,6 +166,10 @@ class WorldCore:
             raise NotARobotError(obj.name)
         return obj
 
+    def owner(self, body: int) -> WorldObject | None:
+        """The object a pybullet body id (a part's too) belongs to; None if no object's."""
+        return self._owners.get(body)
+
     def objects(self, type: str | None = None) -> list[WorldObject]:  # noqa: A002
         """All objects in creation order, or those of one ``type``."""
         return [o for o in self._objects.values() if type is None or o.type == type]
@@ -172,14 +185,14 @@ class WorldCore:
     def __iter__(self) -> Iterator[WorldObject]:
         return iter(list(self._objects.values()))
 
-    def _remove(self, obj: ObjectRef) -> None:
+    def remove(self, obj: ObjectRef) -> None:
         """Take ``obj`` out of the world, with its attachments (either end)."""
         handle = self.object(obj)
         for name, att in list(self._attachments.items()):
             if handle.name in (name, att.robot):
                 del self._attachments[name]
         for body in handle.bodies:
-            pybullet.removeBody(body, physicsClientId=self._cid())
+            pybullet.removeBody(body, physicsClientId=self.physics_client())
             self._owners.pop(body, None)
         self._motors.forget(handle.body_id)
         self._limits = {k: v for k, v in self._limits.items() if k[0] != handle.body_id}
@@ -188,12 +201,13 @@ class WorldCore:
         self._part_bases.pop(handle.name, None)
         self._holds.pop(handle.name, None)
         self._versions.removed(handle.name)
+        self._removed(handle)
 
     def pose(self, obj: ObjectRef) -> Pose:
         """Pose of the object's root link frame in the world."""
         handle = self.object(obj)
         pos, orn = pybullet.getBasePositionAndOrientation(
-            handle.body_id, physicsClientId=self._cid()
+            handle.body_id, physicsClientId=self.physics_client()
         )
         return Pose(pos, orn) * self._inertial[handle.name].inverse()
 
@@ -215,7 +229,7 @@ class WorldCore:
 
     def _place(self, handle: WorldObject, pose: Pose) -> None:
         """Put every body of ``handle`` at rest with its root link frame at ``pose``."""
-        cid = self._cid()
+        cid = self.physics_client()
         bases = self._part_bases.get(handle.name) or (self._inertial[handle.name],)
         for body, base_in_root in zip(handle.bodies, bases, strict=True):
             base = pose * base_in_root
@@ -236,7 +250,7 @@ class WorldCore:
         if at < 0:  # a part's root link, fixed in the root link's frame
             return self.pose(handle) * handle.part_offsets[handle.parts.index(body)] * offset
         state = pybullet.getLinkState(
-            body, at, computeForwardKinematics=True, physicsClientId=self._cid()
+            body, at, computeForwardKinematics=True, physicsClientId=self.physics_client()
         )
         return Pose(state[4], state[5]) * offset
 
@@ -245,12 +259,9 @@ class WorldCore:
         return list(self.object(obj).link_index)
 
     def _link_index(self, handle: WorldObject, link: str) -> int:
-        index = handle.link_index.get(link)
-        if index is None:
-            raise UnknownLinkError(handle.name, link, handle.link_index)
-        return index
+        return link_slot(handle, link)
 
-    def _limits_of(self, obj: ObjectRef, joint: str) -> JointLimits:
+    def joint_limits(self, obj: ObjectRef, joint: str) -> JointLimits:
         """Position limits [rad | m] of a movable joint; continuous ones are -inf/inf."""
         handle = self.object(obj)
         cached = self._limits.get((handle.body_id, joint))
@@ -267,7 +278,7 @@ class WorldCore:
             lower = -math.inf if spec.lower is None else spec.lower
             upper = math.inf if spec.upper is None else spec.upper
             return JointLimits(lower, upper)
-        info = pybullet.getJointInfo(*handle.locate(index), physicsClientId=self._cid())
+        info = pybullet.getJointInfo(*handle.locate(index), physicsClientId=self.physics_client())
         if info[8] > info[9]:  # pybullet marks unlimited joints with lower > upper
             return JointLimits(-math.inf, math.inf)
         return JointLimits(info[8], info[9])
@@ -283,14 +294,14 @@ class WorldCore:
         return index
 
     def _movable_names(self, handle: WorldObject) -> list[str]:
-        self._cid()  # a closed world answers with its typed error
+        self.physics_client()  # a closed world answers with its typed error
         return list(handle.movable_joints)
 
     def joint_states(self, obj: ObjectRef) -> dict[str, float]:
         """Every movable joint's value [rad | m] by name."""
         handle = self.object(obj)
         names = self._movable_names(handle)
-        cid = self._cid()
+        cid = self.physics_client()
         if handle.parts:
             return _part_joint_states(handle, names, cid)
         indices = [handle.joint_index[n] for n in names]
@@ -309,11 +320,11 @@ class WorldCore:
         """
         handle = self.object(obj)
         kept, body = self._limits, handle.body_id
-        limits = {n: kept.get((body, n)) or self._limits_of(handle, n) for n in values}
+        limits = {n: kept.get((body, n)) or self.joint_limits(handle, n) for n in values}
         applied, clamped = clamp_values(values, limits)
         applied.update(self._mimic_values(handle, applied))
         by_index = {handle.joint_index[name]: value for name, value in applied.items()}
-        _reset_slots(handle, by_index, self._cid())
+        _reset_slots(handle, by_index, self.physics_client())
         self._versions.jointed(handle.name)
         self._holds.setdefault(handle.name, {}).update(by_index)
         if carry:
@@ -331,7 +342,7 @@ class WorldCore:
         for name, value in followers.items():
             if name in applied or name not in handle.joint_index:
                 continue
-            out[name] = self._limits_of(handle, name).clamp(float(value))
+            out[name] = self.joint_limits(handle, name).clamp(float(value))
         return out
 
     def attach(self, obj: ObjectRef, robot: ObjectRef, link: str) -> None:
@@ -353,10 +364,12 @@ class WorldCore:
             raise WorldValueError(f"{handle.name!r} is not attached to anything; nothing to detach")
         self._versions.restructured()
 
-    def _all_attachments(self) -> list[Attachment]:
+    def all_attachments(self) -> list[Attachment]:
+        """Every attachment of the world, in the order they were made."""
         return list(self._attachments.values())
 
-    def _set_attachments(self, attachments: Iterable[Attachment]) -> None:
+    def set_attachments(self, attachments: Iterable[Attachment]) -> None:
+        """Replace every attachment by ``attachments`` (kept relative poses, nothing moves)."""
         new: dict[str, Attachment] = {}
         for att in attachments:
             self._link_index(self.object(att.robot), att.link)
@@ -365,12 +378,14 @@ class WorldCore:
         self._attachments = new
         self._versions.restructured()
 
-    def _held_joints(self, obj: ObjectRef) -> dict[str, float]:
+    def held_joints(self, obj: ObjectRef) -> dict[str, float]:
+        """The joint values [rad | m] that simulation holds ``obj``'s joints at, by name."""
         handle = self.object(obj)
         names = {i: n for n, i in handle.joint_index.items()}
         return {names[i]: v for i, v in self._holds.get(handle.name, {}).items()}
 
-    def _set_held_joints(self, obj: ObjectRef, values: Mapping[str, float]) -> None:
+    def set_held_joints(self, obj: ObjectRef, values: Mapping[str, float]) -> None:
+        """Hold exactly ``values`` (joint name -> [rad | m]) from now on; nothing moves now."""
         handle = self.object(obj)
         movable = set(self._movable_names(handle))
         for name in values:
@@ -386,6 +401,33 @@ class WorldCore:
             target = self._objects[att.obj]
             self._place(target, self.link_pose(carrier, att.link) * att.link_T_obj)
             self._follow(att.obj)
+
+    def step(self) -> None:
+        """Advance physics one time step; robots hold their joints, attachments follow.
+
+        Held joints of robots are put back after the step, so their motors are off.
+        """
+        cid = self.physics_client()
+        robots = [(self._objects[n].body_id, held) for n, held in self._holds.items()
+                  if isinstance(self._objects[n], RobotObject)]  # fmt: skip
+        for body, held in robots:
+            self._motors.match(body, held.keys(), self.time_step, cid)
+        pybullet.stepSimulation(physicsClientId=cid)
+        self.time += self.time_step
+        self._versions.stepped(*self._stepping.get(None, self._stepped, self._versions))
+        for body, held in robots:
+            _reset_joints(body, held, cid)
+        for carrier in {a.robot for a in self._attachments.values()}:
+            self._follow(carrier)
+
+    def _stepped(self) -> tuple[list[str], list[str]]:
+        """The objects a physics step may move (all but static ones; a cut model's parts
+        are bodies of their own), and those whose joints it may change (all with some)."""
+        objects = self._objects.values()
+        return (
+            [o.name for o in objects if not o.is_static or o.parts],
+            [o.name for o in objects if o.movable_joints],
+        )
 
 
 def _index_body(handle: WorldObject, body: int, cid: int) -> None:
@@ -414,19 +456,19 @@ def _part_joint_states(handle: WorldObject, names: list[str], cid: int) -> dict[
 
 
 def _reset_slots(handle: WorldObject, values: Mapping[int, float], cid: int) -> None:
-    """:func:`reset_joints` by slot, for each body of ``handle``."""
+    """:func:`_reset_joints` by slot, for each body of ``handle``."""
     if not handle.parts:
-        reset_joints(handle.body_id, values, cid)
+        _reset_joints(handle.body_id, values, cid)
         return
     by_body: dict[int, dict[int, float]] = {}
     for slot, value in values.items():
         body, index = handle.locate(slot)
         by_body.setdefault(body, {})[index] = value
     for body, part in by_body.items():
-        reset_joints(body, part, cid)
+        _reset_joints(body, part, cid)
 
 
-def reset_joints(body: int, values: Mapping[int, float], cid: int) -> None:
+def _reset_joints(body: int, values: Mapping[int, float], cid: int) -> None:
     """Put one-DoF joints (by index) at ``values`` [rad | m] at rest, in one call."""
     if values:
         pybullet.resetJointStatesMultiDof(
@@ -441,6 +483,18 @@ def reset_joints(body: int, values: Mapping[int, float], cid: int) -> None:
 def _mimic_masters(model: RobotModel) -> frozenset[str]:
     """The joints some mimic joint of ``model`` follows."""
     return frozenset(j.mimic.joint for j in model.joints.values() if j.mimic is not None)
+
+
+def _structure(versions: Versions, key: None) -> int:
+    return versions.structure
+
+
+def link_slot(handle: WorldObject, link: str) -> int:
+    """The slot of ``handle``'s link (or added frame) called ``link``; unknown: an error."""
+    index = handle.link_index.get(link)
+    if index is None:
+        raise UnknownLinkError(handle.name, link, handle.link_index)
+    return index
 
 
 def check_time_step(time_step: float) -> None:

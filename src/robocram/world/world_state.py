@@ -43,9 +43,11 @@ class WorldState:
         handles = tuple(world.objects())
         return cls(
             handles=handles,
-            bodies=tuple(tuple(_body_state(world._cid(), b) for b in h.bodies) for h in handles),
-            attachments=tuple(world._all_attachments()),
-            holds=tuple((h.name, tuple(world._held_joints(h).items())) for h in handles),
+            bodies=tuple(
+                tuple(_body_state(world.physics_client(), b) for b in h.bodies) for h in handles
+            ),
+            attachments=tuple(world.all_attachments()),
+            holds=tuple((h.name, tuple(world.held_joints(h).items())) for h in handles),
             time=world.time,
         )
 
@@ -58,20 +60,20 @@ class WorldState:
         keep = {id(h) for h in self.handles}
         for obj in world.objects():
             if id(obj) not in keep:
-                world._remove(obj)
+                world.remove(obj)
         for handle in self.handles:
             if handle.name not in world:
-                world._insert(handle)
+                world.insert(handle)
         self._apply(world)
 
     def recreate(self, world: WorldCore) -> None:
         """Fill an empty ``world`` (another client) with new handles in this state."""
         for handle in self.handles:
-            world._insert(_clone(handle))
+            world.insert(_clone(handle))
         self._apply(world)
 
     def _apply(self, world: WorldCore) -> None:
-        cid = world._cid()
+        cid = world.physics_client()
         for handle, states in zip(self.handles, self.bodies, strict=True):
             targets = world.object(handle.name).bodies
             for target, body in zip(targets, states, strict=True):
@@ -81,9 +83,9 @@ class WorldState:
                     pybullet.resetJointState(target, index, position, velocity, physicsClientId=cid)
             world.versions.moved(handle.name)
             world.versions.jointed(handle.name)
-        world._set_attachments(self.attachments)
+        world.set_attachments(self.attachments)
         for name, held in self.holds:
-            world._set_held_joints(name, dict(held))
+            world.set_held_joints(name, dict(held))
         world.time = self.time
 
 
