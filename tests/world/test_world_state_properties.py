@@ -85,9 +85,7 @@ def _snapshot(world: World) -> dict[str, Any]:
         )
         for o in world.objects()
     }
-    attachments = {
-        (a.obj, a.robot, a.link): a.link_T_obj.matrix() for a in world.all_attachments()
-    }
+    attachments = {(a.obj, a.robot, a.link): a.link_T_obj.matrix() for a in world.all_attachments()}
     facts = sorted(str(a["R"]) for a in world.kb.query("robot(R)"))
     return {"objects": objects, "attachments": attachments, "facts": facts, "time": world.time}
 

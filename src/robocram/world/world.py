@@ -33,7 +33,9 @@ T = TypeVar("T")
 
 
 class World(WorldCore):
-    """A scene of named objects and robots in one PyBullet client, with reasoning."""
+    """A scene of named objects and robots in one PyBullet client: the everyday methods,
+    and the rest in parts (``world.bodies``, ``world.contacts``, ``world.physics``,
+    ``world.snapshots``, ``world.view``)."""
 
     def __init__(self, gui: bool = False, gravity: float = -9.81, time_step: float = 1 / 240):
         super().__init__(gui, gravity, time_step)

@@ -1,7 +1,9 @@
 """The physics client of a world and its bodies: creation, removal, poses and joints.
 
-:class:`WorldCore` owns one pybullet client and the name-to-handle table. The public
-:class:`~robocram.world.world.World` adds reasoning, visibility and the knowledge base.
+:class:`WorldCore` owns one pybullet client and the tables of bodies, attachments and
+held joints, and is the only class that writes them. The public
+:class:`~robocram.world.world.World` adds the knowledge base and its parts (``bodies``,
+``contacts``, ``physics``, ``snapshots``, ``view``), which use the core's public methods.
 """
 
 from __future__ import annotations
