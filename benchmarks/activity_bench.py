@@ -58,7 +58,7 @@ def run_robot(robot: str, variants: int) -> None:
     set_ok, clear_ok, cold, clearing, warm = 0, 0, [], [], []
     for seed in range(variants):
         scene = breakfast_scene(robot, places=variant(seed))
-        with scene.world.stored_state():
+        with scene.world.snapshots.stored_state():
             ok, wall = _timed(scene, "setting-table", people=2)
             set_ok += ok
             cold.append(wall)

@@ -53,7 +53,7 @@ def _cluttered(seed: int) -> KitchenScene:
             if abs(dx) > 0.12 or abs(dy) > 0.12:
                 scene.world.add_box(f"clutter-{k}", size, Pose(where))
                 near = ["mug-1", *(f"clutter-{j}" for j in range(k))]
-                if not any(scene.world.contact_points(f"clutter-{k}", o, distance=0.01)
+                if not any(scene.world.contacts.contact_points(f"clutter-{k}", o, distance=0.01)
                            for o in near):  # fmt: skip
                     break  # a box clear of the mug and of the boxes before it
                 scene.world.remove(f"clutter-{k}")

@@ -47,7 +47,7 @@ class ColdTimes:
 def _timed_transport(scene: KitchenScene, spot: Pose) -> tuple[float, float, bool]:
     """Wall and CPU [ms] of one transport from ``spot``; whether it succeeded."""
     world = scene.world
-    with world.stored_state():
+    with world.snapshots.stored_state():
         z = world.pose("mug-1").position[2]
         world.set_pose("mug-1", Pose((*spot.position[:2], z), spot.orientation))
         wall, cpu = time.perf_counter(), time.process_time()

@@ -46,14 +46,14 @@ def _closing_on_nothing(robot: ProjectedRobot, arm: str) -> None:
 def bench(name: str, runs: int) -> None:
     """Print grip, open and empty-grip times [ms] for robot ``name``."""
     with World() as world:
-        world.add_floor()
+        world.bodies.add_floor()
         world.add_robot(name)
         robot = ProjectedRobot.of(world, name)
         arm = next(k for k, a in robot.description.arms.items() if a.gripper is not None)
         times: dict[str, list[float]] = {"grip": [], "open": [], "empty grip": []}
         for _ in range(runs):
             open_gripper(robot, arm)
-            world.add_cylinder("can", 0.02, 0.1, pose=_between_fingers(robot, arm), mass=0.1)
+            world.bodies.add_cylinder("can", 0.02, 0.1, pose=_between_fingers(robot, arm), mass=0.1)
             times["grip"].append(_ms(lambda: grip(robot, arm)))
             times["open"].append(_ms(lambda: open_gripper(robot, arm)))
             world.remove("can")

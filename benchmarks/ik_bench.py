@@ -275,13 +275,13 @@ def hsr_pick_success(count: int, seed: int, base_in_ik: bool | None) -> None:
     held, moves, times = 0, [], []
     for _ in range(count):
         x, y = rng.uniform(front + 0.05, front + TABLE_DEPTH / 2), rng.uniform(-0.4, 0.4)
-        with world.stored_state():
+        with world.snapshots.stored_state():
             world.set_pose("mug-1", Pose((x, y, height)))
             t0 = time.perf_counter()
             with contextlib.suppress(PlanFailure), simulated_robot(world, scene.robot):
                 pick_up(PoseStamped("map", (x, y, height)))
             times.append((time.perf_counter() - t0) * 1e3)
-            if world.attached_to("mug-1") is not None:
+            if world.bodies.attached_to("mug-1") is not None:
                 held += 1
                 moves.append(math.hypot(*world.pose(scene.robot).position[:2]))
     label = "arm alone (base_in_ik=False)" if base_in_ik is False else "arm and base (default)"

@@ -74,7 +74,7 @@ def search_and_detect(robot: str, runs: int) -> tuple[int, list[float], list[flo
     for seed in range(runs):
         locations = CostmapLocations(world, seed=seed)
         with (
-            world.stored_state(),
+            world.snapshots.stored_state(),
             simulated_robot(world, scene.robot),
             using_location_resolver(locations.resolver()),
         ):

@@ -125,7 +125,7 @@ def time_stream(
 
 def _placing_spot(locs: CostmapLocations) -> Pose:
     """A place for the mug on the table within 20 cm of its north edge, where robots stand."""
-    edge = locs.world.link_aabb("kitchen", "table_top")[1][1]
+    edge = locs.world.contacts.link_aabb("kitchen", "table_top")[1][1]
     places = locs.poses(a.location(on=("kitchen", "table_top"), for_="mug-1"))
     return next(p for p in places if p.position[1] > edge - 0.2)
 
@@ -135,7 +135,7 @@ def holding_the_mug(scene: KitchenScene) -> Iterator[None]:
     """The robot, standing where it picked the mug up, holds it for the block."""
     world, robot = scene.world, scene.robot
     install_actions(world.kb)
-    with world.stored_state(), simulated_robot(world, robot):
+    with world.snapshots.stored_state(), simulated_robot(world, robot):
         stand = a.location(reachable_for=robot, object="mug-1").reference()
         perform(an.action(type="parking-arms"))
         perform(an.action(type="navigating", target=stand))

@@ -43,7 +43,7 @@ def variants(count: int) -> None:
     t0 = time.perf_counter()
     succeeded = 0
     for i in range(count):
-        with world.stored_state():
+        with world.snapshots.stored_state():
             dy = 0.1 * ((i % 5) - 2) / 2  # [m] -0.1 .. 0.1
             world.set_pose(mug, Pose((base.position[0], base.position[1] + dy, base.position[2])))
             look = PoseStamped("map", (base.position[0], base.position[1] + dy, base.position[2]))

@@ -47,7 +47,7 @@ def _unreachable(robot: ProjectedRobot) -> object:
 
 
 def _simulate(robot: ProjectedRobot) -> object:
-    return robot.world.simulate(2.0, stop_check=checkpoint)
+    return robot.world.physics.simulate(2.0, stop_check=checkpoint)
 
 
 def _drive(robot: ProjectedRobot) -> object:
@@ -151,14 +151,14 @@ def transport_case(moments: int = TRANSPORT_MOMENTS, seed: int = 0) -> None:
     """Stop a PR2 kitchen transport at ``moments`` seeded moments of its run (wall time)."""
     scene = kitchen_scene("pr2")
     world = scene.world
-    with world.stored_state():
+    with world.snapshots.stored_state():
         _transport_once(world, None)  # warm: IK start tables, reachability maps
-    with world.stored_state():
+    with world.snapshots.stored_state():
         lasted, _ = _transport_once(world, None)
     delays = sorted(np.random.default_rng(seed).uniform(0.0, lasted, moments))
     latencies = []
     for delay in delays:
-        with world.stored_state():
+        with world.snapshots.stored_state():
             latencies.append(_transport_once(world, float(delay))[1])
     print(
         f"  {'transport, ' + str(moments) + ' moments':28s} median "
@@ -171,15 +171,15 @@ def transport_case(moments: int = TRANSPORT_MOMENTS, seed: int = 0) -> None:
 def main() -> None:
     robot = kitchen_robot()
     world = robot.world
-    with contextlib.suppress(PlanFailure), world.stored_state():
+    with contextlib.suppress(PlanFailure), world.snapshots.stored_state():
         _unreachable(robot)  # builds the IK start tables once, as any first motion does
     print("stopping a task during a projection command (goal: max <= 100 ms)")
     for name, command in CASES.items():
-        with world.stored_state():
+        with world.snapshots.stored_state():
             unstopped = _unstopped(robot, command)
         latencies = []
         for delay in DELAYS:
-            with world.stored_state():
+            with world.snapshots.stored_state():
                 latencies.append(stop_latency(robot, command, delay))
         print(
             f"  {name:28s} median {statistics.median(latencies) * 1e3:6.1f} ms, "

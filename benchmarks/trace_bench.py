@@ -35,7 +35,7 @@ def _plan_times(scene: TabletopScene, around: Callable[[], Any]) -> tuple[float,
     CPU time is the steadier figure on a loaded machine (other processes' work is not in
     it); the tracer runs in the plan's thread, so it counts all the tracer's work.
     """
-    with scene.world.stored_state():
+    with scene.world.snapshots.stored_state():
         start, cpu = time.perf_counter(), time.process_time()
         with around(), simulated_robot(scene.world, scene.robot, name="pick-mug"):
             pick_up(scene.look_target)

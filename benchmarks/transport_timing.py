@@ -32,7 +32,7 @@ from robocram.projection import simulated_robot
 from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
-from robocram.world import World
+from robocram.world.physics import Physics
 
 COUNTER_X = (-1.7, -1.15)  # [m] map x between the sink and the stove
 COUNTER_Y = (1.96, 2.14)  # [m] map y: 8 to 26 cm in from the counter's front edge
@@ -141,16 +141,16 @@ def transport_times(robot: str, runs: int) -> TransportTimes:
     world = scene.world
     maps = ReachabilityMaps()
     out = TransportTimes(runs=runs)
-    solve_ik, simulate, settle = projected_arm.solve_ik, World.simulate, World.settle
+    solve_ik, simulate, settle = projected_arm.solve_ik, Physics.simulate, Physics.settle
     for seed in range(runs):
         spot = _mug_spot(seed)
         split = Split()
         locations = TimedLocations(world, seed=seed, reach_maps=maps)
         locations.split = split
         projected_arm.solve_ik = timed(split, "ik", solve_ik)
-        World.simulate = timed(split, "settling", simulate)  # type: ignore[method-assign]
-        World.settle = timed(split, "settling", settle)  # type: ignore[method-assign]
-        with world.stored_state():
+        Physics.simulate = timed(split, "settling", simulate)  # type: ignore[method-assign]
+        Physics.settle = timed(split, "settling", settle)  # type: ignore[method-assign]
+        with world.snapshots.stored_state():
             z = world.pose("mug-1").position[2]
             world.set_pose("mug-1", Pose((*spot.position[:2], z), spot.orientation))
             target = a.location(on=("kitchen", "table_top"), for_="mug-1")
@@ -168,8 +168,8 @@ def transport_times(robot: str, runs: int) -> TransportTimes:
                 out.totals.append((time.process_time() - start) * 1e3)
                 out.splits.append(split.finish())
         projected_arm.solve_ik = solve_ik
-        World.simulate = simulate  # type: ignore[method-assign]
-        World.settle = settle  # type: ignore[method-assign]
+        Physics.simulate = simulate  # type: ignore[method-assign]
+        Physics.settle = settle  # type: ignore[method-assign]
     world.close()
     return out
 

@@ -32,7 +32,7 @@ def _ms(fn: Callable[[], object], repeats: int) -> float:
 def build() -> World:
     """Floor, PR2, a table and nine catalogue items on it (eleven objects besides the floor)."""
     world = World()
-    world.add_floor()
+    world.bodies.add_floor()
     pr2 = world.add_robot("pr2")
     world.set_joint_states(pr2, {"torso_lift_joint": 0.3, "head_tilt_joint": 0.45})
     world.add_box("table", (0.7, 1.5, 0.75), Pose((1.4, 0, 0.375)), color=(0.6, 0.4, 0.2, 1))
@@ -56,8 +56,8 @@ def agreement(world: World, scenes: int, seed: int = 1) -> tuple[float, float]:
         pitch = math.atan2(z - tz, math.hypot(tx - x, ty - y)) + rng.gauss(0, 0.1)
         pose = Pose.from_xyz_rpy((x, y, z), (-math.pi / 2 - pitch, 0, yaw - math.pi / 2))
         camera = Camera(pose, math.radians(90), math.radians(73.7))
-        ray = world.visibility_from(camera, target, "ray").fraction
-        render = world.visibility_from(camera, target, "render").fraction
+        ray = world.view.visibility_from(camera, target, "ray").fraction
+        render = world.view.visibility_from(camera, target, "render").fraction
         agree += (ray >= 0.9) == (render >= 0.9)
         diffs.append(abs(ray - render))
     return agree / scenes, statistics.mean(diffs)
@@ -74,26 +74,26 @@ def main(repeats: int = 10) -> None:
         joints_ms = _ms(lambda: world.set_joint_states(pr2, values), repeats)
         print(f"  set_joint_states ({len(values)} joints)       {joints_ms:8.2f} ms")
         world.set_joint_states(pr2, {"torso_lift_joint": 0.3, "head_tilt_joint": 0.45})
-        world.simulate(1.0)
+        world.physics.simulate(1.0)
         for method in ("ray", "render"):
-            vis_ms = _ms(lambda m=method: world.visible(pr2, "pot-0", method=m), repeats)  # type: ignore[misc]
+            vis_ms = _ms(lambda m=method: world.view.visible(pr2, "pot-0", method=m), repeats)  # type: ignore[misc]
             print(f"  visible ({method:6})                    {vis_ms:8.2f} ms")
-        contact_ms = _ms(lambda: world.contact("pot-0", "table"), repeats)
+        contact_ms = _ms(lambda: world.contacts.contact("pot-0", "table"), repeats)
         print(f"  contact query                        {contact_ms:8.3f} ms")
-        coll_ms = _ms(lambda: world.collisions(pr2), repeats)
+        coll_ms = _ms(lambda: world.contacts.collisions(pr2), repeats)
         print(f"  collisions(pr2) against all          {coll_ms:8.2f} ms")
 
         def round_trip() -> None:
-            with world.stored_state():
+            with world.snapshots.stored_state():
                 world.remove("mug-1")
                 world.set_pose("pot-0", Pose((0, 0, 3)))
 
         print(f"  stored_state round trip (+remove)    {_ms(round_trip, repeats):8.2f} ms")
         copy_ms = _ms(lambda: world.copy().close(), repeats)
         print(f"  copy()                               {copy_ms:8.2f} ms")
-        stable_ms = _ms(lambda: world.stable("pot-0"), max(1, repeats // 2))
+        stable_ms = _ms(lambda: world.physics.stable("pot-0"), max(1, repeats // 2))
         print(f"  stable(pot) (0.5 s simulated)        {stable_ms:8.2f} ms")
-        sim_ms = _ms(lambda: world.simulate(1.0), max(1, repeats // 2))
+        sim_ms = _ms(lambda: world.physics.simulate(1.0), max(1, repeats // 2))
         factor = 1e3 / sim_ms
         print(f"  simulate(1.0)                        {sim_ms:8.2f} ms  real-time x{factor:.1f}")
         share, diff = agreement(world, 60)

@@ -31,12 +31,12 @@ def _draw(locations: CostmapLocations, designator: LocationDesignator, path: Pat
 def visibility_picture(path: Path) -> Path:
     """Boxy, seed 001's table and pot: the cells from which Boxy sees the pot."""
     with World() as world:
-        world.add_floor()
+        world.bodies.add_floor()
         world.add_robot("boxy", pose=Pose((0.0, 0.0, 0.0)))
         world.add_box("table", (0.7, 1.5, 1.0), Pose((1.6, 0.0, 0.5)))
         world.add_box("shelf", (0.3, 0.6, 1.8), Pose((2.15, 0.75, 0.9)))
         world.add_item("pot", "pot", Pose((1.6, 0.0, 1.4)))
-        world.simulate(2.0)
+        world.physics.simulate(2.0)
         return _draw(CostmapLocations(world), a.location(visible_for="boxy", object="pot"), path)
 
 

@@ -78,11 +78,11 @@ def draw(path: Path) -> Path:
     tool = world.robot("pr2").description.arms["right"].tool_frame
     straight = JointTrajectory("pr2", planned.joint_names, (planned.points[0], planned.points[-1]))
     for k, where in enumerate(_tool_positions(world, planned, tool, 40)):
-        world.add_sphere(f"planned-{k}", 0.012, Pose(where), color=GREEN)
+        world.bodies.add_sphere(f"planned-{k}", 0.012, Pose(where), color=GREEN)
     for k, where in enumerate(_tool_positions(world, straight, tool, 25)):
-        world.add_sphere(f"straight-{k}", 0.01, Pose(where), color=RED)
+        world.bodies.add_sphere(f"straight-{k}", 0.01, Pose(where), color=RED)
     camera = looking((-1.9, 1.0, 2.1), (-1.0, 1.95, 1.05))
-    out = world.save_png(path, camera, width=800, height=600)
+    out = world.view.save_png(path, camera, width=800, height=600)
     world.close()
     return out
 

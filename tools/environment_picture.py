@@ -52,7 +52,7 @@ def main() -> None:
     with simulated_robot(scene.world, scene.robot):
         transport("bowl", a.location(on=(scene.environment, "table_area_main"), for_="bowl-1"))
     print(f"transport: {time.perf_counter() - began:.1f} s")
-    print("wrote", scene.world.save_png(PICTURE, look_at(EYE, TARGET), 960, 720))
+    print("wrote", scene.world.view.save_png(PICTURE, look_at(EYE, TARGET), 960, 720))
     scene.world.close()
 
 

@@ -87,4 +87,4 @@ def set_table_picture(db_path: Path, run: int, path: Path) -> Path | None:
             state = load_world_state(session, states[-1])
     with build_scene(scene) as world:
         state.apply(world, scene)
-        return world.save_png(path, CAMERA, width=800, height=600)
+        return world.view.save_png(path, CAMERA, width=800, height=600)

@@ -42,7 +42,7 @@ CAMERA = Pose(VIEW_FROM, looking_orientation(VIEW_FROM, VIEW_AT))
 
 def picture(world: World, path: Path) -> Path:
     """Render the kitchen from :data:`VIEW_FROM` into ``path``."""
-    return world.save_png(path, CAMERA, width=800, height=600)
+    return world.view.save_png(path, CAMERA, width=800, height=600)
 
 
 def fresh_database(path: Path) -> Path:
@@ -123,7 +123,7 @@ def run_demo(
         print(line)
     for _, item in ITEMS:
         x, y, z = world.pose(item).position
-        links = sorted({p.link_b for p in world.contact_points(item, "kitchen")})
+        links = sorted({p.link_b for p in world.contacts.contact_points(item, "kitchen")})
         where = f"rests on {', '.join(links)} at" if links else "is at"
         print(f"{item} {where} ({x:.2f}, {y:.2f}, {z:.2f}) m in map")
     pictures.append(picture(world, out_dir / "demo_after.png"))

@@ -20,7 +20,7 @@ def test_a_stand_is_found_for_a_mug_deep_on_the_counter() -> None:
     scene = kitchen_scene("pr2")
     world = scene.world
     world.set_pose("mug-1", DEEP_MUG)
-    front = world.link_aabb("kitchen", "counter_top_north")[0][1]  # [m] its front edge's y
+    front = world.contacts.link_aabb("kitchen", "counter_top_north")[0][1]  # [m] its front edge's y
     locations = CostmapLocations(world, seed=0)
     designator = a.location(reachable_for="pr2", object=an.object(name="mug-1"))
     stand = next(locations.poses(designator))  # raised LocationNotFound before

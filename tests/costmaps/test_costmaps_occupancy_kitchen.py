@@ -23,7 +23,7 @@ def test_no_cell_near_a_wall_is_free() -> None:
     free = occupancy_cost(query, None, np.ones(query.grid.shape, dtype=bool)).weights
     radius, outer = footprint_radii(world, world.robot("pr2"))
     _, y = query.centres()
-    low, high = world.link_aabb("kitchen", "wall_south")
+    low, high = world.contacts.link_aabb("kitchen", "wall_south")
     # the PR2's base is 0.668 m square: half that inside, the corners 0.47 m out
     assert radius == pytest.approx(0.334, abs=0.01) and outer == pytest.approx(0.472, abs=0.01)
     assert high[2] > 1.9  # a 2 m wall: probes from the robot's top missed it

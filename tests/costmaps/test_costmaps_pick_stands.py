@@ -32,7 +32,7 @@ def test_the_pick_works_from_the_stands_given(scene: KitchenScene) -> None:
     world, robot = scene.world, scene.robot
     start = world.pose("mug-1")
     for seed in range(3):
-        with world.stored_state():
+        with world.snapshots.stored_state():
             locations = CostmapLocations(world, seed=seed)
             with simulated_robot(world, robot, locations=locations):
                 stand = a.location(reachable_for=robot, object="mug-1").reference()
@@ -72,9 +72,9 @@ def test_broadphase_contacts_agree_with_closest_points(scene: KitchenScene) -> N
     floors = world.objects(type="floor")
     counter = world.pose("mug-1").position
     for dx in (-1.0, -0.6, -0.3, 0.0):
-        with world.stored_state():
+        with world.snapshots.stored_state():
             world.set_pose(robot, Pose((counter[0] + dx, counter[1] - 0.5, 0.0)))
-            expected = {o.name for o in world.collisions(robot, floors)}
+            expected = {o.name for o in world.contacts.collisions(robot, floors)}
             found = {other for _, other in link_contacts(world, robot, ignore=floors)}
             assert found == expected
 
@@ -85,25 +85,25 @@ def world_robot(scene: KitchenScene) -> RobotObject:
 
 def test_the_place_works_from_the_stands_given(scene: KitchenScene) -> None:
     world, robot = scene.world, scene.robot
-    with world.stored_state(), simulated_robot(world, robot):
+    with world.snapshots.stored_state(), simulated_robot(world, robot):
         spot = _near_the_edge(world)
         stand = a.location(reachable_for=robot, object="mug-1").reference()
         perform(an.action(type="parking-arms"))
         perform(an.action(type="navigating", target=stand))
         held = pick_up_object("mug-1")
         for seed in range(2):
-            with world.stored_state():
+            with world.snapshots.stored_state():
                 locations = CostmapLocations(world, seed=seed)
                 there = next(locations.poses(a.location(reachable_for=robot, target=spot.position)))
                 perform(an.action(type="navigating", target=there))
                 put = place_object(held, PoseStamped.from_pose("map", spot))  # its frame there
                 assert math.dist(put.pose.position[:2], spot.position[:2]) < 0.03  # [m]
-                table_top = world.link_aabb("kitchen", "table_top")[1][2]
+                table_top = world.contacts.link_aabb("kitchen", "table_top")[1][2]
                 assert world.aabb("mug-1")[0][2] == pytest.approx(table_top, abs=0.01)
 
 
 def _near_the_edge(world: World) -> Pose:
     """A place for the mug on the table near its north edge, where robots stand."""
-    edge = world.link_aabb("kitchen", "table_top")[1][1]
+    edge = world.contacts.link_aabb("kitchen", "table_top")[1][1]
     places = CostmapLocations(world).poses(a.location(on=("kitchen", "table_top"), for_="mug-1"))
     return next(p for p in places if p.position[1] > edge - 0.2)

@@ -24,7 +24,7 @@ def kitchen(request: pytest.FixtureRequest) -> Iterator[KitchenScene]:
 def _spot_on_table(scene: KitchenScene) -> tuple[float, float, float]:
     """8 cm over the table, 15 cm in from its long edge facing the room (its centre is out
     of the PR2's reach from every side: the table is 0.9 m deep)."""
-    low, high = scene.world.link_aabb("kitchen", "table_top")
+    low, high = scene.world.contacts.link_aabb("kitchen", "table_top")
     return ((low[0] + high[0]) / 2, high[1] - 0.15, high[2] + 0.08)
 
 

@@ -22,7 +22,7 @@ def test_boxy_sees_over_the_counter_from_inside_its_camera_housing() -> None:
     standing = Pose((-1.4, 0.8, 0.0), quat.from_euler(0.0, 0.0, math.pi / 2))
     with placed(world, robot, standing), parked(world, robot):
         camera = aimed_camera(world, robot, OVER_NORTH_COUNTER)
-        from_origin = world.ray_cast(camera.pose.position, OVER_NORTH_COUNTER)
+        from_origin = world.view.ray_cast(camera.pose.position, OVER_NORTH_COUNTER)
         assert from_origin is not None and from_origin.obj.name == "boxy"  # its own Kinect
         assert from_origin.distance < camera.near
         assert sees_point(world, camera, OVER_NORTH_COUNTER)

@@ -28,7 +28,7 @@ def away_from_cost(query: LocationQuery, value: Any, alive: np.ndarray) -> CostL
 
 def test_a_new_key_needs_one_rule_and_one_function() -> None:
     with World() as world:
-        world.add_floor()
+        world.bodies.add_floor()
         world.add_robot("pr2")
         world.add_box("table", (0.6, 1.0, 0.7), Pose((1.5, 0.0, 0.35)))
         world.add_box("sink", (0.5, 0.5, 0.9), Pose((1.5, 1.5, 0.45)))
@@ -64,7 +64,7 @@ def test_the_example_draws_both_pictures(tmp_path: Path) -> None:
 
 def test_a_rule_without_its_python_function_is_named() -> None:
     with World() as world:
-        world.add_floor()
+        world.bodies.add_floor()
         world.add_box("table", (0.6, 1.0, 0.7), Pose((1.5, 0.0, 0.35)))
         world.kb.consult("location_cost(under, under_cost).", group="half_done")
         with pytest.raises(CostmapInputError, match="add_cost_function") as caught:

@@ -26,7 +26,7 @@ def kitchen() -> Iterator[KitchenScene]:
 def test_a_cup_put_in_the_drawer_rests_inside_it(kitchen: KitchenScene) -> None:
     world = kitchen.world
     locations = CostmapLocations(world, resolution=0.02)
-    low, high = world.link_aabb(*DRAWER)
+    low, high = world.contacts.link_aabb(*DRAWER)
     poses = list(itertools.islice(locations.poses(a.location(in_=DRAWER, for_="cup-1")), 5))
     bowl = world.pose("bowl-1").position
     for pose in poses:
@@ -34,18 +34,19 @@ def test_a_cup_put_in_the_drawer_rests_inside_it(kitchen: KitchenScene) -> None:
         assert low[0] < x < high[0] and low[1] < y < high[1]
         assert low[2] < z < high[2] - 0.02  # below the rim
         assert (x - bowl[0]) ** 2 + (y - bowl[1]) ** 2 > 0.1**2  # beside the bowl
-    with world.stored_state():
+    with world.snapshots.stored_state():
         world.set_pose("cup-1", poses[0])
-        world.simulate(1.0)
+        world.physics.simulate(1.0)
         assert world.pose("cup-1").distance_to(poses[0]) < 0.01
-        assert world.contact("cup-1", "kitchen")
+        assert world.contacts.contact("cup-1", "kitchen")
 
 
 def test_standing_places_in_the_room_avoid_the_walls(kitchen: KitchenScene) -> None:
     world = kitchen.world
     locations = CostmapLocations(world)
     walls = [
-        world.link_aabb("kitchen", f"wall_{side}") for side in ("north", "south", "east", "west")
+        world.contacts.link_aabb("kitchen", f"wall_{side}")
+        for side in ("north", "south", "east", "west")
     ]
     walls_low = [min(w[0][i] for w in walls) for i in range(2)]  # the room's outer bounds
     walls_high = [max(w[1][i] for w in walls) for i in range(2)]
@@ -74,7 +75,7 @@ def test_thirty_rejections_in_a_row_name_the_validators(kitchen: KitchenScene) -
 def test_an_object_shut_in_a_box_is_visible_from_nowhere(kitchen: KitchenScene) -> None:
     world = kitchen.world
     x, y, z = world.pose("milk-1").position
-    with world.stored_state():
+    with world.snapshots.stored_state():
         world.add_box("lid", (0.3, 0.3, 0.02), Pose((x, y, z + 0.25)))
         for dx, dy in ((0.16, 0), (-0.16, 0), (0, 0.16), (0, -0.16)):
             world.add_box(f"wall{dx}{dy}", (0.02 + abs(dy) * 2, 0.02 + abs(dx) * 2, 0.25),
@@ -90,7 +91,7 @@ def test_near_a_part_weighs_cells_by_the_parts_bounds(kitchen: KitchenScene) -> 
     cover the room, so every cell in it was equally near)."""
     world = kitchen.world
     locations = CostmapLocations(world)
-    low, high = world.link_aabb(*DRAWER)
+    low, high = world.contacts.link_aabb(*DRAWER)
     poses = list(itertools.islice(locations.poses(a.location(near=DRAWER)), 10))
     assert len(poses) == 10
     for pose in poses:

@@ -52,7 +52,7 @@ def add_pen(kitchen: KitchenScene) -> None:
 
 
 def test_a_board_hiding_the_mug_from_every_stand_is_named(kitchen: KitchenScene) -> None:
-    with kitchen.world.stored_state():
+    with kitchen.world.snapshots.stored_state():
         add_screen(kitchen)
         error = _not_found(kitchen, a.location(visible_for="pr2", object="mug-1"))
     message = str(error)
@@ -67,7 +67,7 @@ def test_a_board_hiding_the_mug_from_every_stand_is_named(kitchen: KitchenScene)
 def test_a_board_hiding_a_target_point_is_named(kitchen: KitchenScene) -> None:
     """A point over the mug (as the search looks at a place): one ray per stand."""
     x, y, z = MUG
-    with kitchen.world.stored_state():
+    with kitchen.world.snapshots.stored_state():
         add_screen(kitchen)
         error = _not_found(kitchen, a.location(visible_for="pr2", target=(x, y, z + 0.2)))
     assert error.occluded_by == ("box-3",)
@@ -75,7 +75,7 @@ def test_a_board_hiding_a_target_point_is_named(kitchen: KitchenScene) -> None:
 
 
 def test_boards_blocking_every_reaching_stand_are_named(kitchen: KitchenScene) -> None:
-    with kitchen.world.stored_state():
+    with kitchen.world.snapshots.stored_state():
         add_pen(kitchen)
         error = _not_found(kitchen, a.location(reachable_for="pr2", object="mug-1"))
     message = str(error)
@@ -90,7 +90,7 @@ def test_boards_blocking_every_reaching_stand_are_named(kitchen: KitchenScene) -
 
 def test_a_crate_taking_every_stand_on_the_floor_is_named(kitchen: KitchenScene) -> None:
     x, _, _ = MUG
-    with kitchen.world.stored_state():
+    with kitchen.world.snapshots.stored_state():
         kitchen.world.add_box("crate-1", (2.0, 0.7, 0.5), Pose((x, 1.45, 0.25)))
         error = _not_found(kitchen, a.location(reachable_for="pr2", object="mug-1"))
     assert error.blocked_by == ("crate-1",)
@@ -102,7 +102,7 @@ def test_the_visible_validator_blames_what_hides_the_target(kitchen: KitchenScen
     world = kitchen.world
     x, y, _ = MUG
     stand = Pose((x, y - 1.0, 0.0), quat.from_euler(0.0, 0.0, 1.5708))  # [m] facing the mug
-    with world.stored_state():
+    with world.snapshots.stored_state():
         query = CostmapLocations(world).query(a.location(visible_for="pr2", object="mug-1"))
         assert visible(query, stand) and query.blame == LocationBlame()  # seen: no blame
         add_screen(kitchen)
@@ -113,7 +113,7 @@ def test_the_visible_validator_blames_what_hides_the_target(kitchen: KitchenScen
 def test_the_collision_validator_blames_what_the_base_touches(kitchen: KitchenScene) -> None:
     world = kitchen.world
     stand = Pose((-1.0, 0.8, 0.0))  # [m] open floor
-    with world.stored_state():
+    with world.snapshots.stored_state():
         query = CostmapLocations(world).query(a.location(reachable_for="pr2", object="mug-1"))
         assert robot_collision_free(query, stand) and query.blame == LocationBlame()
         world.add_box("crate-2", (0.3, 0.3, 0.3), Pose((-1.0, 0.8, 0.15)))

@@ -46,7 +46,7 @@ def test_every_builtin_layer_and_validator_has_its_own_advice() -> None:
 def test_an_object_out_of_reach_blames_the_reachability_layer(scene: TabletopScene) -> None:
     world = scene.world
     x, y, _ = world.pose("mug-1").position
-    with world.stored_state():
+    with world.snapshots.stored_state():
         world.set_pose("mug-1", Pose((x, y, 3.0)))  # 3 m up: no arm gets there
         error = _not_found(CostmapLocations(world), a.location(reachable_for="pr2", object="mug-1"))
     message = str(error)
@@ -61,7 +61,7 @@ def test_an_object_out_of_reach_blames_the_reachability_layer(scene: TabletopSce
 def test_a_walled_in_stand_area_blames_the_occupancy_layer(scene: TabletopScene) -> None:
     world = scene.world
     x, y, _ = world.pose("mug-1").position
-    with world.stored_state():
+    with world.snapshots.stored_state():
         world.add_box("slab", (3.0, 3.0, 0.05), Pose((x, y, 0.025)))  # no base fits anywhere
         error = _not_found(CostmapLocations(world), a.location(reachable_for="pr2", object="mug-1"))
     message = str(error)
@@ -73,7 +73,7 @@ def test_a_walled_in_stand_area_blames_the_occupancy_layer(scene: TabletopScene)
 def test_a_hidden_target_blames_the_visibility_layer(scene: TabletopScene) -> None:
     world = scene.world
     x, y, z = world.pose("mug-1").position
-    with world.stored_state():
+    with world.snapshots.stored_state():
         _shut_in(scene, (x, y, z))
         locations = CostmapLocations(world, size=2.0, resolution=0.1)
         error = _not_found(locations, a.location(visible_for="pr2", target=(x, y, z + 0.05)))
@@ -147,7 +147,7 @@ def test_a_wide_search_area_is_not_told_to_widen(scene: TabletopScene) -> None:
     """Issue 37: "widen `size`" was advised when a 6 m square did not help."""
     world = scene.world
     x, y, _ = world.pose("mug-1").position
-    with world.stored_state():
+    with world.snapshots.stored_state():
         world.add_box("slab", (3.0, 3.0, 0.05), Pose((x, y, 0.025)))  # no base fits anywhere
         wide = CostmapLocations(world, size=6.0, resolution=0.1)
         error = _not_found(wide, a.location(reachable_for="pr2", object="mug-1"))

@@ -47,7 +47,7 @@ def test_blocking_names_what_the_arm_would_hit(scene: TabletopScene) -> None:
     joints = world.joint_states("pr2")
     assert blocking(world, "pr2", "right", "mug-1") == []
     x, y, z = world.pose("mug-1").position
-    with world.stored_state():
+    with world.snapshots.stored_state():
         world.add_box("obstacle", (0.1, 0.1, 0.1), Pose((x - 0.1, y, z + 0.3)))
         assert blocking(world, "pr2", "right", "mug-1") == ["obstacle"]
         answer = world.kb.first("blocking(pr2, right, 'mug-1', B)")

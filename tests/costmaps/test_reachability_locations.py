@@ -39,12 +39,12 @@ def test_first_five_poses_reach_a_grasp_of_the_mug(robot: str) -> None:
         low, high = world.aabb(mug)
         x, y, _ = reached_in_map.position
         assert low[0] <= x <= high[0] and low[1] <= y <= high[1]  # over the mug
-        with world.stored_state():
+        with world.snapshots.stored_state():
             world.set_pose(body, pose)
             for name, arm in desc.arms.items():  # it arrives with its arms parked
                 if name != desc.neck_arm:
                     world.set_joint_states(body, dict(arm.parking))
-            assert not world.in_collision(body)
+            assert not world.contacts.in_collision(body)
     world.close()
 
 

@@ -20,7 +20,7 @@ TABLE_SIZE = (0.6, 1.0)
 @pytest.fixture(scope="module")
 def world() -> Iterator[World]:
     with World() as w:
-        w.add_floor()
+        w.bodies.add_floor()
         w.add_robot("pr2")
         w.add_box("table", (*TABLE_SIZE, TABLE[2]), pose=Pose((TABLE[0], TABLE[1], TABLE[2] / 2)))
         w.add_item("mug", "mug", pose=(0.0, 2.0, 0.0))
@@ -47,12 +47,12 @@ def test_a_mug_put_on_the_table_stays_there(world: World) -> None:
     locs = CostmapLocations(world, resolution=0.02, seed=3)
     with using_location_resolver(locs.resolver()):
         pose = a.location(on="table", for_="mug").reference()
-    with world.stored_state():
+    with world.snapshots.stored_state():
         world.set_pose("mug", pose)
-        world.simulate(1.0)
-        assert world.supported_by("mug", "table")
+        world.physics.simulate(1.0)
+        assert world.physics.supported_by("mug", "table")
         assert world.pose("mug").distance_to(pose) < 0.01
-        assert world.stable("mug")
+        assert world.physics.stable("mug")
 
 
 def test_same_seed_same_poses(world: World) -> None:
@@ -87,7 +87,7 @@ def test_bad_input_gets_a_typed_error(
 
 def test_visible_for_a_robot_without_a_camera() -> None:
     with World() as w:
-        w.add_floor()
+        w.bodies.add_floor()
         w.add_robot("quadrotor")
         w.add_item("mug", "mug", pose=(1.0, 0.0, 0.0))
         with pytest.raises(CostmapInputError, match="no camera") as caught:

@@ -23,12 +23,12 @@ SHADOW = (3.1, 0.35)  # [m] x beyond this (and the wall's footprint), |y| under 
 @pytest.fixture(scope="module")
 def world() -> Iterator[World]:
     with World() as w:
-        w.add_floor()
+        w.bodies.add_floor()
         w.add_robot("boxy", pose=Pose((0.0, 0.0, 0.0)))
         w.add_box("table", (0.7, 1.5, TABLE_TOP), Pose((1.6, 0.0, TABLE_TOP / 2)))
         w.add_item("pot", "pot", Pose((1.6, 0.0, 1.4)))
-        w.simulate(2.0)  # the pot falls onto the table and comes to rest
-        assert w.supported_by("pot", "table")
+        w.physics.simulate(2.0)  # the pot falls onto the table and comes to rest
+        assert w.physics.supported_by("pot", "table")
         yield w
 
 
@@ -57,12 +57,15 @@ def test_boxy_sees_the_pot_from_each_of_ten_lazy_poses(world: World) -> None:
     robot = ProjectedRobot.of(world, "boxy")
     pot = world.pose("pot").position
     for pose in poses:
-        with world.stored_state():
+        with world.snapshots.stored_state():
             world.set_pose("boxy", pose)
             park_arms(world, "boxy")  # Boxy arrives as it drives, arms parked
-            assert not world.in_collision("boxy"), pose
+            assert not world.contacts.in_collision("boxy"), pose
             look_at(robot, pot)
-            assert world.visible("boxy", "pot"), (pose, world.visibility_fraction("boxy", "pot"))
+            assert world.view.visible("boxy", "pot"), (
+                pose,
+                world.view.visibility_fraction("boxy", "pot"),
+            )
 
 
 def _in_shadow(x: float, y: float) -> bool:
@@ -75,7 +78,7 @@ def test_a_wall_between_removes_the_poses_behind_it(world: World) -> None:
     x, y = before.grid.centres()
     shadow = (x > SHADOW[0]) & (np.abs(y) < SHADOW[1])
     assert np.count_nonzero(before.weights[shadow]) > 0.9 * np.count_nonzero(shadow)
-    with world.stored_state():
+    with world.snapshots.stored_state():
         world.add_box("wall", (0.1, 1.6, 2.5), Pose((WALL_X, 0.0, 1.25)))
         after = locs.costmap(_visible_for_boxy())
         assert np.count_nonzero(after.weights[shadow]) == 0

@@ -57,7 +57,7 @@ def test_shapes_carry_the_type_facts(kitchen: KitchenScene) -> None:
 def test_a_turned_object_keeps_its_sizes(kitchen: KitchenScene) -> None:
     world = kitchen.world
     milk = world.object("milk-1")
-    with world.stored_state():
+    with world.snapshots.stored_state():
         here = world.pose(milk)
         turned = Pose(here.position, quat.from_euler(0.0, 0.0, math.pi / 4))
         world.set_pose(milk, turned)

@@ -34,7 +34,7 @@ def _first_touching(checker: BaseCollisionChecker, poses: np.ndarray) -> int | N
 def test_first_blocked_equals_the_exact_check_at_every_pose(
     kitchen: World, start: tuple[float, float, float], end: tuple[float, float, float]
 ) -> None:
-    with kitchen.stored_state():
+    with kitchen.snapshots.stored_state():
         poses = straight_poses(np.array(start), np.array(end), 1.0)
         kitchen.set_pose("pr2", _pose(*start))
         with BaseCollisionChecker.build(RobotHandle.of(kitchen, "pr2"), end[:2]) as checker:
@@ -48,7 +48,7 @@ def test_first_blocked_equals_the_exact_check_at_every_pose(
 
 
 def test_the_grid_widens_for_a_pose_beyond_the_start_and_goal(kitchen: World) -> None:
-    with kitchen.stored_state():
+    with kitchen.snapshots.stored_state():
         kitchen.set_pose("pr2", _pose(-0.8, 0.2, 1.5708))
         with BaseCollisionChecker.build(RobotHandle.of(kitchen, "pr2"), (-0.5, 0.2)) as checker:
             local = checker.grid.masks.shape
@@ -62,7 +62,7 @@ def test_the_grid_widens_for_a_pose_beyond_the_start_and_goal(kitchen: World) ->
 def test_a_gap_skips_exact_checks_near_furniture(kitchen: World) -> None:
     """Driving along the counter a few centimetres off it: fewer exact checks than poses
     the fast check flags, and no touching pose missed (the first test's equality)."""
-    with kitchen.stored_state():
+    with kitchen.snapshots.stored_state():
         start, end = (-2.0, 1.5, 1.5708), (-0.4, 1.5, 1.5708)
         kitchen.set_pose("pr2", _pose(*start))
         poses = straight_poses(np.array(start), np.array(end), 1.0)
@@ -78,7 +78,7 @@ def test_a_gap_skips_exact_checks_near_furniture(kitchen: World) -> None:
 
 def test_a_motion_asked_again_needs_no_exact_check(kitchen: World) -> None:
     """OMPL asks about motions from the same node again: the answers are kept."""
-    with kitchen.stored_state():
+    with kitchen.snapshots.stored_state():
         start, end = (-2.0, 1.5, 1.5708), (-0.4, 1.56, 1.5708)
         kitchen.set_pose("pr2", _pose(*start))
         poses = straight_poses(np.array(start), np.array(end), 1.0)
@@ -95,7 +95,7 @@ def _pose(x: float, y: float, yaw: float) -> Pose:
 
 
 def test_a_footprint_is_kept_per_posture(kitchen: World) -> None:
-    with kitchen.stored_state():
+    with kitchen.snapshots.stored_state():
         kitchen.set_pose("pr2", _pose(-0.8, 0.2, 1.5708))
         with BaseCollisionChecker.build(RobotHandle.of(kitchen, "pr2"), (0.0, 0.0)) as first:
             pass
@@ -112,7 +112,7 @@ def test_a_footprint_is_kept_per_posture(kitchen: World) -> None:
 
 
 def test_the_unclipped_lookup_equals_the_clipped_one(kitchen: World) -> None:
-    with kitchen.stored_state():
+    with kitchen.snapshots.stored_state():
         kitchen.set_pose("pr2", _pose(-0.8, 0.2, 1.5708))
         with BaseCollisionChecker.build(RobotHandle.of(kitchen, "pr2"), (1.0, 1.2)) as checker:
             rng = np.random.default_rng(7)
@@ -130,7 +130,7 @@ def test_the_unclipped_lookup_equals_the_clipped_one(kitchen: World) -> None:
 def test_a_drive_through_open_floor_is_proven_in_blocks(kitchen: World) -> None:
     """Far from the furniture the grown footprint proves most poses free in blocks; the
     answer is the exact check's at every pose."""
-    with kitchen.stored_state():
+    with kitchen.snapshots.stored_state():
         start, end = (-0.8, 0.2, 1.5708), (0.3, -0.2, 0.0)
         kitchen.set_pose("pr2", _pose(*start))
         poses = straight_poses(np.array(start), np.array(end), 1.0)
@@ -142,7 +142,7 @@ def test_a_drive_through_open_floor_is_proven_in_blocks(kitchen: World) -> None:
 
 
 def test_a_motion_standing_still_is_checked_as_it_is(kitchen: World) -> None:
-    with kitchen.stored_state():
+    with kitchen.snapshots.stored_state():
         start = (-0.8, 0.2, 1.5708)
         kitchen.set_pose("pr2", _pose(*start))
         poses = np.array([start] * 40, dtype=float)

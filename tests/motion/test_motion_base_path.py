@@ -25,7 +25,7 @@ def _pose(x: float, y: float, yaw: float) -> Pose:
 
 @pytest.fixture
 def world(kitchen: World) -> Iterator[World]:
-    with kitchen.stored_state():
+    with kitchen.snapshots.stored_state():
         yield kitchen
 
 
@@ -46,8 +46,8 @@ def _collisions_along(
         for a, b in zip(poses[:-1], poses[1:], strict=True):
             for x, y, yaw in straight_poses(np.array(a), np.array(b), 1.0):
                 world.set_pose("pr2", _pose(x, y, yaw))
-                near = within > 0.0 and world.link_distances("pr2", floors, within)
-                if near or world.collisions("pr2", ignore=floors):
+                near = within > 0.0 and world.contacts.link_distances("pr2", floors, within)
+                if near or world.contacts.collisions("pr2", ignore=floors):
                     bad.append((x, y, yaw))
     finally:
         world.set_pose("pr2", start)
@@ -181,7 +181,7 @@ def test_a_way_round_far_beyond_the_start_and_goal_is_still_found() -> None:
     from robocram.motion.base_path import NEAR_MARGIN
 
     with World() as world:
-        world.add_floor()
+        world.bodies.add_floor()
         world.add_box("wall", (0.1, 8.6, 1.0), (1.0, 1.7, 0.5))  # y -2.6 .. 6.0
         world.add_box("marker", (0.2, 0.2, 0.2), (0.0, -6.0, 0.1))  # the area reaches y -6.1
         world.add_robot("pr2", _pose(-0.5, 0.0, 0.0))

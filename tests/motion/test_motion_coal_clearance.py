@@ -78,7 +78,7 @@ def test_coal_clearances_never_exceed_bullets_and_agree_near_contact(
 
 def test_held_objects_and_allowed_hands_follow_the_judges_rules(world: World) -> None:
     spec = world.robot("pr2").description.arms["right"]
-    with world.stored_state():
+    with world.snapshots.stored_state():
         world.attach("mug-1", "pr2", spec.tool_frame)  # the mug rides on the hand
         judge = BulletScene(RobotHandle.of(world, "pr2"), JOINTS, allowed_links=hand_links(spec))
         compared, near, worst = _compare(world, judge, 7)
@@ -91,7 +91,7 @@ def test_checkers_after_a_base_move_follow_the_judge(world: World) -> None:
     """A checker made at a second stand, holding the mug, reuses what outlives a stand
     (the held mug's parts, the rules' answers) and still answers as the judge does."""
     spec = world.robot("pr2").description.arms["right"]
-    with world.stored_state():
+    with world.snapshots.stored_state():
         world.attach("mug-1", "pr2", spec.tool_frame)
         for k, shift in enumerate((0.0, 0.2)):  # along the counter
             x, y, z = AT_COUNTER.position
@@ -120,7 +120,7 @@ def test_levers_match_the_worlds_at_the_configuration_checked_last(world: World)
 def test_link_speeds_match_the_worlds_at_the_configuration_checked_last(world: World) -> None:
     """Coal's speeds come from pinocchio's joint velocities, the world's from its frames."""
     spec = world.robot("pr2").description.arms["right"]
-    with world.stored_state():
+    with world.snapshots.stored_state():
         world.attach("mug-1", "pr2", spec.tool_frame)  # its radius rides on the hand
         judge = BulletScene(RobotHandle.of(world, "pr2"), JOINTS)
         coal = CoalClearance(judge)
@@ -145,7 +145,7 @@ def test_obstacle_shapes_follow_what_moved_and_are_read_only_when_joints_move(
     before = cache.shapes(world, mug)
     reads = cache.builds
     assert cache.shapes(world, mug) is before  # nothing moved: nothing read
-    with world.stored_state():
+    with world.snapshots.stored_state():
         x, y, z = world.pose(mug).position
         world.set_pose(mug, Pose((x + 0.05, y, z), quat.from_euler(0.0, 0.0, 0.3)))
         moved = cache.shapes(world, mug)

@@ -35,10 +35,12 @@ def _samples(world: World, robot: str, joints: list[str], n: int, seed: int) -> 
 
 def _bullet_pairs(world: World, robot: str, distance: float) -> set[tuple[str, str]]:
     """PyBullet's (robot link, other) pairs within ``distance``, as colliding_pairs names them."""
-    skip = [o for o in world.objects() if o.type == "floor" or o.name in world.attachments(robot)]
+    skip = [
+        o for o in world.objects() if o.type == "floor" or o.name in world.bodies.attachments(robot)
+    ]
     return {
         (link, obj.name if len(world.link_names(obj)) == 1 else f"{obj.name}/{other}")
-        for link, obj, other in world.link_pairs_in_contact(robot, skip, distance)
+        for link, obj, other in world.contacts.link_pairs_in_contact(robot, skip, distance)
     }
 
 
@@ -64,7 +66,9 @@ def _agreement(world: World, robot: str, joints: list[str], n: int, seed: int) -
                 continue
             counts["near"] += 1
             if theirs and not ours:  # coal says free: PyBullet's deepest penetration
-                depth = min(p.distance for p in world.contact_points(robot) if p.object_b != robot)
+                depth = min(
+                    p.distance for p in world.contacts.contact_points(robot) if p.object_b != robot
+                )
                 if depth < -NEAR:
                     counts["missed_deep"] += 1
             elif not _bullet_pairs(world, robot, NEAR):
@@ -139,11 +143,11 @@ def test_held_mug_hitting_the_counter_is_found_fingers_on_it_are_not(kitchen):
     desc = world.robot(robot).description
     arm = desc.arms["right"]
     joints = _arm_joints(world, robot, "right")
-    with world.stored_state():
+    with world.snapshots.stored_state():
         _at_counter(world, robot)
         world.set_pose("mug-1", world.link_pose(robot, arm.tool_frame).position)
         world.attach("mug-1", robot, arm.end_effector_link)
-        touching = {p.link_b for p in world.contact_points("mug-1", robot)}
+        touching = {p.link_b for p in world.contacts.contact_points("mug-1", robot)}
         assert touching & set(arm.gripper_links)  # the fingers do touch the mug
         scene = CollisionScene.of(RobotHandle.of(world, robot), joints)
         q0 = _start(world, robot, joints)
@@ -157,7 +161,7 @@ def test_held_mug_hitting_the_counter_is_found_fingers_on_it_are_not(kitchen):
         assert hits, "no sampled configuration pushed the held mug into the kitchen"
         q, pairs = hits[0]
         world.set_joint_states(robot, dict(zip(joints, q, strict=True)))
-        bullet = [p for p in world.contact_points("mug-1", "kitchen") if p.distance < NEAR]
+        bullet = [p for p in world.contacts.contact_points("mug-1", "kitchen") if p.distance < NEAR]
         assert bullet  # PyBullet sees the mug on the kitchen too
         assert not any(a in arm.gripper_links and b == "mug-1" for a, b in pairs)
 
@@ -180,7 +184,7 @@ def test_self_collision_of_the_right_arm_is_found(kitchen):
         world.set_joint_states(robot, dict(zip(joints, q, strict=True)))
         gaps = [  # PyBullet finds one of those pairs touching too
             p.distance for a, b in selfs
-            for p in world.contact_points(robot, robot, a, b, distance=NEAR)
+            for p in world.contacts.contact_points(robot, robot, a, b, distance=NEAR)
         ]  # fmt: skip
         assert gaps and min(gaps) < NEAR
     finally:

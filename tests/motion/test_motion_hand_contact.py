@@ -30,7 +30,7 @@ TOLERANCE = 2e-4  # [m] how near the planted depth comes to the one asked for
 @pytest.fixture(scope="module")
 def world() -> Iterator[World]:
     world = World()
-    world.add_floor()
+    world.bodies.add_floor()
     world.add_robot("pr2")
     for arm in world.robot("pr2").description.arms.values():
         world.set_joint_states("pr2", dict(arm.parking))
@@ -48,7 +48,7 @@ def _goal(world: World) -> dict[str, float]:
 
 def _palm_at(world: World, joints: dict[str, float]) -> np.ndarray:
     world.set_joint_states("pr2", joints)
-    low, high = world.link_aabb("pr2", PALM)
+    low, high = world.contacts.link_aabb("pr2", PALM)
     return (np.array(low) + np.array(high)) / 2
 
 

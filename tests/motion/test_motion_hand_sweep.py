@@ -23,7 +23,7 @@ HAND = ("r_gripper_palm_link", "r_gripper_l_finger_link", "r_gripper_r_finger_li
 @pytest.fixture
 def world() -> Iterator[World]:
     with World() as w:
-        w.add_floor()
+        w.bodies.add_floor()
         w.add_robot("pr2")
         yield w
 
@@ -35,7 +35,8 @@ def _tip(world: World) -> tuple[float, float, float]:
 
 def _depth(world: World, box: str) -> float:
     return max(
-        (-p.distance for p in world.contact_points("pr2", box) if p.link_a in HAND), default=0.0
+        (-p.distance for p in world.contacts.contact_points("pr2", box) if p.link_a in HAND),
+        default=0.0,
     )
 
 

@@ -36,7 +36,7 @@ def _ball_points(
     world: World, links: tuple[str, ...], radii: np.ndarray, directions: np.ndarray
 ) -> np.ndarray:
     """(links, points, 3): points fixed in each link, on the ball of its radius [m]."""
-    frames = np.array(world.link_frames("pr2", links))
+    frames = np.array(world.bodies.link_frames("pr2", links))
     q, w = frames[:, None, 3:6], frames[:, None, 6:7]
     v = directions[None, :, :] * radii[:, None, None]
     t = 2.0 * np.cross(q, v)

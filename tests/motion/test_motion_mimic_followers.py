@@ -16,7 +16,7 @@ from robocram.world import RobotHandle, World
 
 def test_the_hsr_lift_moves_its_head_at_half_its_speed() -> None:
     with World() as world:
-        world.add_floor()
+        world.bodies.add_floor()
         world.add_robot("hsrb")
         moving = BulletScene(RobotHandle.of(world, "hsrb"), ("arm_lift_joint",)).moving_links
         assert {"arm_lift_link", "torso_lift_link", "head_pan_link", "head_tilt_link"} <= set(
@@ -34,7 +34,7 @@ def test_the_hsr_lift_moves_its_head_at_half_its_speed() -> None:
 
 def test_the_pr2_right_finger_moves_with_the_left_finger_joint() -> None:
     with World() as world:
-        world.add_floor()
+        world.bodies.add_floor()
         world.add_robot("pr2")
         joints = ("r_gripper_l_finger_joint",)
         moving = set(BulletScene(RobotHandle.of(world, "pr2"), joints).moving_links)

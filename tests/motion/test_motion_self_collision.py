@@ -93,7 +93,7 @@ def test_the_matrix_checks_a_forearm_against_its_own_fingers(pr2: World) -> None
 def test_a_wrist_flexed_into_the_open_fingers_is_refused_before_it_moves(pr2: World) -> None:
     """The straight wrist flex runs the forearm into the open fingers (the judge agrees);
     without planning it is refused naming the pair, and nothing moves."""
-    with pr2.stored_state():
+    with pr2.snapshots.stored_state():
         pr2.set_joint_states("pr2", {"r_gripper_l_finger_joint": 0.548, "r_wrist_roll_joint": 0.0})
         joint = "r_wrist_flex_joint"
         start = pr2.joint_states("pr2")[joint]
@@ -109,7 +109,7 @@ def test_a_wrist_flexed_into_the_open_fingers_is_refused_before_it_moves(pr2: Wo
 
 def test_a_planned_arm_motion_never_sinks_links_into_each_other(pr2: World) -> None:
     """With planning, the motion either goes round (the judge finds nothing) or fails."""
-    with pr2.stored_state():
+    with pr2.snapshots.stored_state():
         pr2.set_joint_states("pr2", {"r_gripper_l_finger_joint": 0.548, "r_wrist_roll_joint": 0.0})
         desc = pr2.robot("pr2").description
         joints = desc.arms["right"].joints

@@ -37,7 +37,7 @@ from robocram.world import RobotHandle, World
 
 @pytest.fixture
 def world(kitchen: World) -> Iterator[World]:
-    with kitchen.stored_state():
+    with kitchen.snapshots.stored_state():
         yield kitchen
 
 

@@ -99,4 +99,4 @@ def test_searching_is_an_action_too(pr2_kitchen: KitchenScene) -> None:
     ):
         seen = perform(an.action(type="searching", object=an.object(type="cereal_box")))
     assert seen.get("name") == "cereal-1"
-    assert pr2_kitchen.world.visible(pr2_kitchen.robot, "cereal-1")
+    assert pr2_kitchen.world.view.visible(pr2_kitchen.robot, "cereal-1")

@@ -91,7 +91,7 @@ def test_detecting_names_what_hides_the_mug_in_view(kitchen: KitchenScene) -> No
     world = kitchen.world
     with simulated_robot(world, kitchen.robot):
         search("mug")  # the robot sees the mug now
-        camera = np.asarray(world.camera(kitchen.robot).pose.position)
+        camera = np.asarray(world.view.camera(kitchen.robot).pose.position)
         mug = np.asarray(world.pose("mug-1").position)
         between = camera + 0.5 * (mug - camera)
         world.add_box("screen", (0.3, 0.3, 0.3), Pose(tuple(between.tolist())))

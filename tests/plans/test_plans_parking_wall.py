@@ -20,7 +20,7 @@ RIGHT_ARM = ("r_shoulder_pan_joint", "r_shoulder_lift_joint", "r_upper_arm_roll_
 
 def test_the_base_steps_away_from_a_wall_beside_it_to_park() -> None:
     world = kitchen_scene("pr2").world
-    wall_y = world.link_aabb("kitchen", "wall_south")[1][1]  # [m] its face into the room
+    wall_y = world.contacts.link_aabb("kitchen", "wall_south")[1][1]  # [m] its face into the room
     world.set_pose("pr2", Pose((2.0, wall_y + 0.72, 0.0)))  # facing +x: the wall on its right
     world.set_joint_states("pr2", dict.fromkeys(RIGHT_ARM, 0.0))
     with simulated_robot(world, "pr2"):

@@ -65,12 +65,12 @@ def _before_the_table(scene: KitchenScene) -> PoseStamped:
 
 
 def _rests_on_the_table(world: World, item: str) -> None:
-    touching = world.contact_points(item, "kitchen", link_b="table_top")
+    touching = world.contacts.contact_points(item, "kitchen", link_b="table_top")
     assert touching, f"{item} does not touch the table top"
     low, _ = world.aabb(item)
     assert low[2] == pytest.approx(TABLE_TOP, abs=0.01)
-    assert world.attached_to(item) is None
-    assert world.stable(item)
+    assert world.bodies.attached_to(item) is None
+    assert world.physics.stable(item)
 
 
 @pytest.mark.parametrize("scene", ["pr2", "hsrb", "boxy"], indirect=True)
@@ -106,7 +106,7 @@ def test_the_pr2_takes_the_bowl_out_of_the_open_drawer_by_its_rim(scene: Kitchen
         in_drawer = world.pose("bowl-1")
         held = pick_up_object("bowl-1")
     assert held.grasp == "rim"
-    assert world.attached_to("bowl-1") is not None
+    assert world.bodies.attached_to("bowl-1") is not None
     lifted = world.pose("bowl-1")
     assert lifted.position[2] - in_drawer.position[2] == pytest.approx(0.10, abs=0.01)
     assert lifted.angle_to(in_drawer) < 0.05  # held level by its rim
@@ -128,7 +128,7 @@ def test_each_robot_holds_the_hollow_bowl_by_its_rim(scene: KitchenScene, surfac
     else:
         spot, stand, height = TARGET, _before_the_table(scene), TABLE_TOP
     world.set_pose("bowl-1", Pose((*spot, height + 0.003)))
-    world.simulate(0.2)
+    world.physics.simulate(0.2)
     resting = world.pose("bowl-1")
     with simulated_robot(world, scene.robot):
         park_arms()
@@ -154,13 +154,13 @@ def test_the_tiago_pros_narrow_hand_takes_the_bowl_by_its_rim() -> None:
     mug = world.pose("mug-1").position
     world.remove("mug-1")
     world.add_item("bowl-1", "bowl", Pose((mug[0], mug[1], mug[2] + 0.005)))
-    world.simulate(0.2)
+    world.physics.simulate(0.2)
     try:
         with simulated_robot(world, scene.robot):
             park_arms()
             held = pick_up_object("bowl-1")
         assert held.grasp == "rim"  # 7.1 cm of opening: the rim, not the 16 cm bowl
-        assert world.attached_to("bowl-1") is not None
+        assert world.bodies.attached_to("bowl-1") is not None
     finally:
         world.close()
 
@@ -177,8 +177,8 @@ def test_the_milk_box_is_put_down_by_its_frame_pose(scene: KitchenScene) -> None
         rests = place_object(held, PoseStamped("map", (x, y - 0.15, z)))
     assert held.grasp in ("top", "front")  # 7 cm across: any hand; 20 cm tall
     assert rests.position == pytest.approx((x, y - 0.15, z), abs=0.01)
-    assert world.contact_points("milk-1", "kitchen", link_b="counter_top_east")
-    assert world.stable("milk-1") and world.attached_to("milk-1") is None
+    assert world.contacts.contact_points("milk-1", "kitchen", link_b="counter_top_east")
+    assert world.physics.stable("milk-1") and world.bodies.attached_to("milk-1") is None
 
 
 def test_a_location_designator_says_where_to_put_it(scene: KitchenScene) -> None:
@@ -191,7 +191,7 @@ def test_a_location_designator_says_where_to_put_it(scene: KitchenScene) -> None
         held = pick_up_object("mug-1")
         rests = place_object(held, spot)
     assert rests.position == pytest.approx((x + 0.12, y - 0.05, z), abs=0.01)
-    assert world.contact_points("mug-1", "kitchen", link_b="counter_top_north")
+    assert world.contacts.contact_points("mug-1", "kitchen", link_b="counter_top_north")
 
 
 def test_letting_go_in_the_air_is_no_placing(scene: KitchenScene) -> None:
@@ -202,7 +202,7 @@ def test_letting_go_in_the_air_is_no_placing(scene: KitchenScene) -> None:
         navigate(_before_the_counter(scene))
         held = pick_up_object("mug-1")
         place_object(held, PoseStamped("map", (x + 0.1, y, z + 0.06)))  # 6 cm over the top
-    assert world.attached_to("mug-1") is None
+    assert world.bodies.attached_to("mug-1") is None
 
 
 def test_the_action_designators_pick_and_place(scene: KitchenScene) -> None:
@@ -248,7 +248,7 @@ def test_out_of_reach_the_pick_up_fails_with_every_cause(scene: KitchenScene) ->
         pick_up_object("mug-1", grasp="top")  # from the kitchen's middle: far away
     causes = info.value.causes
     assert causes is not None and len(causes) == 4  # two turns for each of two arms
-    assert world.attached_to("mug-1") is None
+    assert world.bodies.attached_to("mug-1") is None
 
 
 def test_placing_what_is_not_held_or_out_of_reach_fails(scene: KitchenScene) -> None:
@@ -262,4 +262,4 @@ def test_placing_what_is_not_held_or_out_of_reach_fails(scene: KitchenScene) -> 
         with pytest.raises(PlacingFailed) as info:
             place_object(held, PoseStamped("map", (*TARGET, TABLE_TOP)))  # the table is far
     assert info.value.causes is not None and len(info.value.causes) == 4  # every turn
-    assert world.attached_to("mug-1") is not None  # still held
+    assert world.bodies.attached_to("mug-1") is not None  # still held

@@ -32,9 +32,9 @@ def _search(scene: KitchenScene, object_type: str, log: SearchLog, poses: int = 
 
 def test_the_mug_is_found_at_its_usual_place_first(kitchen: KitchenScene) -> None:
     log = SearchLog()
-    with kitchen.world.stored_state():
+    with kitchen.world.snapshots.stored_state():
         seen = _search(kitchen, "mug", log)
-        assert kitchen.world.visible(kitchen.robot, "mug-1")
+        assert kitchen.world.view.visible(kitchen.robot, "mug-1")
     assert seen.get("name") == "mug-1"  # type: ignore[attr-defined]
     assert [p.link for p in log.searched] == ["counter_top_north"]
 
@@ -44,7 +44,7 @@ def test_an_absent_object_is_searched_for_everywhere_then_not_found(
     kitchen: KitchenScene, poses: int
 ) -> None:
     log = SearchLog()
-    with kitchen.world.stored_state(), pytest.raises(SearchExhausted) as caught:
+    with kitchen.world.snapshots.stored_state(), pytest.raises(SearchExhausted) as caught:
         _search(kitchen, "pot", log, poses)
     assert isinstance(caught.value, PerceptionObjectNotFound)
     assert caught.value.searched == tuple(SURFACES)  # every supporting surface, in KB order

@@ -66,7 +66,7 @@ def test_grasping_closes_on_the_object_where_it_stands() -> None:
         perform(an.action(type="looking", target=a.location(pose=scene.look_target)))
         seen = perform(an.action(type="detecting", object=an.object(type="mug")))
         held = perform(an.action(type="grasping", object=seen))
-    assert "mug-1" in world.attachments("pr2") and held.object_name == "mug-1"  # in the hand
+    assert "mug-1" in world.bodies.attachments("pr2") and held.object_name == "mug-1"  # in the hand
     assert world.pose("mug-1").position[2] == pytest.approx(before[2], abs=0.01)  # not lifted
     assert held.lifted == held.grasp_pose
     world.close()

@@ -45,14 +45,14 @@ def _on_the_table(world: World, item: str) -> None:
     """
     assert world.kb.holds("world(W), contact(W, O, kitchen)", O=item)
     assert world.kb.holds("world(W), stable(W, O)", O=item)
-    touching = {p.link_b for p in world.contact_points(item, "kitchen")}
+    touching = {p.link_b for p in world.contacts.contact_points(item, "kitchen")}
     assert touching == {"table_top"}
     low, high = world.aabb(item)
-    table_low, table_high = world.link_aabb("kitchen", "table_top")
+    table_low, table_high = world.contacts.link_aabb("kitchen", "table_top")
     assert low[2] == pytest.approx(table_high[2], abs=0.01)
     centre = ((low[0] + high[0]) / 2, (low[1] + high[1]) / 2)
     assert table_low[0] < centre[0] < table_high[0] and table_low[1] < centre[1] < table_high[1]
-    assert world.attached_to(item) is None
+    assert world.bodies.attached_to(item) is None
 
 
 def _arms_parked(world: World, robot: str) -> None:

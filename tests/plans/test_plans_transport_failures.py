@@ -72,7 +72,7 @@ def test_an_unreachable_target_surface_makes_the_mug_undeliverable(
     assert failure.attempts == len(tries)
     assert len(tries) <= 2 * STAND_TURNS  # two spots, at most every turn about each
     assert len(placing) <= 2 * 2  # at most stand_retries placings per spot
-    assert pr2_kitchen.world.attached_to("mug-1") is not None  # still in the hand
+    assert pr2_kitchen.world.bodies.attached_to("mug-1") is not None  # still in the hand
 
 
 def test_an_absent_object_is_not_found_after_every_place_was_visited(

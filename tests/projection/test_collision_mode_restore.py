@@ -22,5 +22,5 @@ def test_a_check_puts_back_what_it_moved_and_names_the_same_contacts() -> None:
     world.set_joint_states("pr2", reaching)
     floors = [o for o in world.objects() if o.type == "floor"]
     touching = {(link, other.name) for link, other, _ in
-                world.link_pairs_in_contact("pr2", floors)}  # fmt: skip
+                world.contacts.link_pairs_in_contact("pr2", floors)}  # fmt: skip
     assert {(link, other.split("/")[0]) for link, other in found} == touching

@@ -55,7 +55,7 @@ def test_self_pairs_touching_at_the_start_stay_allowed(world: World) -> None:
     world.set_pose("pr2", ((-0.8, 0.2, 0.0), (0.0, 0.0, 0.0, 1.0)))  # in the open
     on_base = dict(zip(ARM, ON_THE_BASE, strict=True))
     world.set_joint_states("pr2", on_base)
-    touching = set(world.self_contacts("pr2", arm_pairs(robot, "right")))
+    touching = set(world.contacts.self_contacts("pr2", arm_pairs(robot, "right")))
     assert ("r_gripper_l_finger_tip_link", "base_link") in touching
     nudged = {**on_base, "r_wrist_roll_joint": 0.7}
     found = _fresh(robot, nudged)

@@ -51,14 +51,14 @@ def test_the_hsr_picks_a_mug_its_arm_alone_cannot_reach(scene: TabletopScene) ->
         with pytest.raises(ManipulationPoseUnreachable), simulated_robot(world, scene.robot):
             pick_up(target)
         assert world.pose(scene.robot).position == pytest.approx((0.0, 0.0, 0.0), abs=1e-9)
-        assert world.attached_to("mug-1") is None
+        assert world.bodies.attached_to("mug-1") is None
         return
     with simulated_robot(world, scene.robot):
         result = pick_up(target)
     base = world.pose(scene.robot).position
     assert math.hypot(base[0], base[1]) > 0.05  # the base moved towards the mug
     assert base[2] == pytest.approx(0.0, abs=1e-9)
-    assert world.attached_to("mug-1") is not None
+    assert world.bodies.attached_to("mug-1") is not None
     mug = world.pose("mug-1").position
     assert mug[0] == pytest.approx(target.position[0], abs=0.01)
     assert mug[1] == pytest.approx(target.position[1], abs=0.01)

@@ -134,7 +134,7 @@ def test_the_same_seed_gives_the_same_trajectory(scene: KitchenScene) -> None:
     target = _stand(scene)
     world = scene.world
     world.add_box("shelf", SHELF_SIZE, SHELF_CENTRE)
-    with world.stored_state():
+    with world.snapshots.stored_state():
         first = _move(scene, target, None)
     second = _move(scene, target, None)
     assert [t.points for t in first] == [t.points for t in second]

@@ -48,7 +48,7 @@ def test_opening_moves_the_drawer_and_the_bowl_in_it(
     assert bowl[1] == pytest.approx(bowl_before[1] - 0.30, abs=0.01)  # the front faces -y
     assert bowl[0] == pytest.approx(bowl_before[0], abs=1e-3)
     assert bowl[2] == pytest.approx(bowl_before[2], abs=1e-3)
-    assert world.attached_to("bowl-1") is None  # it lies in the drawer again, free
+    assert world.bodies.attached_to("bowl-1") is None  # it lies in the drawer again, free
     tool = world.link_pose(robot.name, robot.arm("right").tool_frame).position
     in_front = world.link_pose("kitchen", handle).position
     assert tool[1] < in_front[1] - 0.05  # the gripper let go and backed off
@@ -108,7 +108,7 @@ def test_a_stopped_task_ends_the_opening_at_its_next_step(
     with binding_task(task), pytest.raises(TaskStopped):
         move_part(robot, "right", "kitchen", joint, handle, 0.30)
     assert world.joint_states("kitchen")[joint] == pytest.approx(0.0, abs=1e-9)
-    assert world.attached_to("bowl-1") is None  # the bowl no longer rides on the drawer
+    assert world.bodies.attached_to("bowl-1") is None  # the bowl no longer rides on the drawer
 
 
 BESIDE_THE_WALL = pytest.mark.xfail(
@@ -151,7 +151,7 @@ def test_doors_open_wide_with_the_base_following_the_arc(
     assert result.reached == pytest.approx(1.2, abs=1e-9)
     assert world.joint_states("kitchen")[joint] == pytest.approx(1.2, abs=0.03)
     assert world.pose(scene.robot).distance_to(standing) > 0.05  # the arm alone stops early
-    touching = {p.link_a for p in world.contact_points(scene.robot, "kitchen")}
+    touching = {p.link_a for p in world.contacts.contact_points(scene.robot, "kitchen")}
     hand = {*desc.arms[arm].hand_links, *desc.arms[arm].gripper_links}
     assert touching <= hand  # at most the open hand still at the handle of a wide door
     world.close()

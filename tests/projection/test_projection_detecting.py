@@ -33,7 +33,7 @@ def _detect() -> ObjectDesignator:
 
 def test_detecting_gives_the_mug_and_its_pose(scene: KitchenScene) -> None:
     world = scene.world
-    with world.stored_state(), simulated_robot(world, scene.robot):
+    with world.snapshots.stored_state(), simulated_robot(world, scene.robot):
         search("mug")
         found = _detect()
         assert found.get("name") == "mug-1"
@@ -45,14 +45,16 @@ def test_detecting_gives_the_mug_and_its_pose(scene: KitchenScene) -> None:
 
 def test_an_occluded_mug_is_not_detected(scene: KitchenScene) -> None:
     world = scene.world
-    with world.stored_state(), simulated_robot(world, scene.robot):
+    with world.snapshots.stored_state(), simulated_robot(world, scene.robot):
         search("mug")
-        camera = np.asarray(world.camera(scene.robot).pose.position)
+        camera = np.asarray(world.view.camera(scene.robot).pose.position)
         mug = np.asarray(world.pose("mug-1").position)
         between = camera + 0.5 * (mug - camera)
         screen = world.add_box("screen", (0.3, 0.3, 0.3), Pose(tuple(between.tolist())))
         try:
-            assert [o.name for o in world.occluding_objects(scene.robot, "mug-1")] == ["screen"]
+            assert [o.name for o in world.view.occluding_objects(scene.robot, "mug-1")] == [
+                "screen"
+            ]
             with pytest.raises(PerceptionObjectNotFound):
                 _detect()
         finally:
@@ -62,11 +64,11 @@ def test_an_occluded_mug_is_not_detected(scene: KitchenScene) -> None:
 
 def test_a_mug_out_of_view_is_not_detected(scene: KitchenScene) -> None:
     world = scene.world
-    with world.stored_state(), simulated_robot(world, scene.robot):
+    with world.snapshots.stored_state(), simulated_robot(world, scene.robot):
         search("mug")
         stand = world.pose(scene.robot)
         turned = stand * Pose((0.0, 0.0, 0.0), quat.from_euler(0.0, 0.0, math.pi))
         world.set_pose(scene.robot, turned)  # the mug is now behind the robot
-        assert world.visibility_fraction(scene.robot, "mug-1") == 0.0
+        assert world.view.visibility_fraction(scene.robot, "mug-1") == 0.0
         with pytest.raises(PerceptionObjectNotFound):
             _detect()

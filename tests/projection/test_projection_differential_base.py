@@ -115,7 +115,7 @@ def test_ik_moves_a_differential_base_along_its_heading_only(
 def test_base_paths_of_a_differential_base_never_slide(stretch: LoadedDescription) -> None:
     rng = np.random.default_rng(3)
     with World() as world:
-        world.add_floor()
+        world.bodies.add_floor()
         robot = world.add_robot(stretch)
         for _ in range(12):
             x, y, yaw = rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-3, 3)
@@ -143,7 +143,7 @@ def test_the_kitchen_transport_drives_without_sliding(
         with trajectory_listener(executed.append), simulated_robot(scene.world, scene.robot):
             result = transport("mug", a.location(on=("kitchen", "table_top"), for_="mug-1"))
         assert result.object_name == "mug-1"
-        assert scene.world.attached_to("mug-1") is None
+        assert scene.world.bodies.attached_to("mug-1") is None
     finally:
         scene.world.close()
     steps = _base_steps(executed)
@@ -163,7 +163,7 @@ def test_an_hsr_on_two_wheels_reaches_a_mug_beside_it_without_sliding() -> None:
         world.set_pose("mug-1", Pose(spot))
         with trajectory_listener(executed.append), simulated_robot(world, scene.robot):
             pick_up(PoseStamped("map", spot))
-        assert world.attached_to("mug-1") is not None
+        assert world.bodies.attached_to("mug-1") is not None
     finally:
         world.close()
     steps = _base_steps(executed)
@@ -174,7 +174,7 @@ def test_an_hsr_on_two_wheels_reaches_a_mug_beside_it_without_sliding() -> None:
 def test_a_fixed_base_stays_where_it_stands() -> None:
     desc = dataclasses.replace(load_description("pr2"), base_type="fixed")
     with World() as world:
-        world.add_floor()
+        world.bodies.add_floor()
         robot = ProjectedRobot.of(world, world.add_robot(desc).name)
         drive(robot, Pose())  # where it stands: nothing to do
         with pytest.raises(NavigationPoseUnreachable, match="fixed"):

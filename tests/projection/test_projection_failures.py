@@ -29,7 +29,7 @@ GRASP_Z = 0.763  # [m] a top grasp of the mug: 4 cm under the top of its box (is
 @pytest.fixture(scope="module")
 def scene() -> Iterator[World]:
     world = World()
-    world.add_floor()
+    world.bodies.add_floor()
     world.add_robot("pr2")
     world.add_box("table", (0.6, 1.0, 0.7), pose=Pose((0.9, 0.0, 0.35)))
     world.add_item("mug-1", "mug", pose=Pose((0.7, 0.0, 0.7)))
@@ -39,7 +39,7 @@ def scene() -> Iterator[World]:
 
 @pytest.fixture
 def world(scene: World) -> Iterator[World]:
-    with scene.stored_state():
+    with scene.snapshots.stored_state():
         yield scene
 
 
@@ -120,7 +120,7 @@ def test_gripping_nothing_closes_completely(world: World) -> None:
             perform(a.motion(type="gripping", gripper="right"))
     assert info.value.gripper == "right"
     assert world.joint_states("pr2")["r_gripper_l_finger_joint"] == pytest.approx(0.0)
-    assert world.attachments("pr2") == {}
+    assert world.bodies.attachments("pr2") == {}
 
 
 def test_gripping_beside_the_mug_closes_completely(world: World) -> None:
@@ -135,14 +135,14 @@ def test_gripping_beside_the_mug_closes_completely(world: World) -> None:
         )
         with pytest.raises(GripperClosedCompletely):
             perform(a.motion(type="gripping", gripper="right"))
-        assert world.attachments("pr2") == {}
+        assert world.bodies.attachments("pr2") == {}
         perform(a.motion(type="opening", gripper="right"))
         over = PoseStamped("base_footprint", (0.7, 0.0, GRASP_Z + 0.1), down)  # not through it
         perform(a.motion(type="moving-tcp", arm="right", target=a.location(pose=over)))
         above = PoseStamped("base_footprint", (0.7, 0.0, GRASP_Z), down)
         perform(a.motion(type="moving-tcp", arm="right", target=a.location(pose=above), **grasping))
         assert perform(a.motion(type="gripping", gripper="right")) == "mug-1"
-    assert world.attachments("pr2") == {"mug-1": "r_wrist_roll_link"}
+    assert world.bodies.attachments("pr2") == {"mug-1": "r_wrist_roll_link"}
 
 
 def test_avoid_all_refuses_a_grasp_pose_that_allow_hand_accepts(world: World) -> None:
@@ -186,7 +186,9 @@ def test_allow_hand_touching_another_object_refuses_the_mug_and_names_it(world: 
         assert world.joint_states("pr2") == pytest.approx(opened)
         perform(a.motion(type="moving-tcp", arm="right", target=at_mug, touching="mug-1", **mode))
     fingers = [
-        -p.distance for p in world.contact_points("pr2", "mug-1") if p.link_a.startswith("r_")
+        -p.distance
+        for p in world.contacts.contact_points("pr2", "mug-1")
+        if p.link_a.startswith("r_")
     ]
     assert fingers and 0.0 < max(fingers) <= 0.005  # touching the mug, within the bound
 
@@ -195,7 +197,7 @@ def test_opening_releases_the_held_object(world: World) -> None:
     world.attach("mug-1", "pr2", "r_wrist_roll_link")
     with simulated_robot(world, "pr2"):
         perform(a.motion(type="opening", gripper="right"))
-    assert world.attachments("pr2") == {}
+    assert world.bodies.attachments("pr2") == {}
     assert world.joint_states("pr2")["r_gripper_l_finger_joint"] == pytest.approx(0.548)
 
 

@@ -22,7 +22,7 @@ from robocram.world import World
 @pytest.fixture
 def world() -> Iterator[World]:
     w = World()
-    w.add_floor()
+    w.bodies.add_floor()
     w.add_robot("quadrotor", pose=Pose((0.0, 0.0, 0.2)))
     w.add_box("crate", (1.0, 1.0, 1.0), pose=Pose((3.0, 0.0, 0.5)))
     yield w

@@ -99,7 +99,7 @@ def claw(tmp_path: Path) -> RobotDescription:
 @pytest.fixture
 def world() -> Iterator[World]:
     with World() as world:
-        world.add_floor()
+        world.bodies.add_floor()
         yield world
 
 
@@ -116,28 +116,30 @@ def test_opening_and_closing_move_every_declared_finger_joint(world: World, tmp_
 
 def test_the_hand_grips_a_can_between_its_fingers_by_contact(world: World, tmp_path: Path) -> None:
     world.add_robot(claw(tmp_path))
-    can = world.add_cylinder("can", 0.025, 0.06, pose=(0.0, 0.0, PALM_HEIGHT - 0.06), mass=0.1)
+    can = world.bodies.add_cylinder(
+        "can", 0.025, 0.06, pose=(0.0, 0.0, PALM_HEIGHT - 0.06), mass=0.1
+    )
     robot = ProjectedRobot.of(world, "claw")
     open_gripper(robot, "hand")
     assert grip(robot, "hand") == "can"
-    assert world.attachments("claw") == {"can": "palm"}
+    assert world.bodies.attachments("claw") == {"can": "palm"}
     states = world.joint_states("claw")
     assert OPEN["proximal"] < states["f1_proximal_joint"] < CLOSED["proximal"] - 0.1  # on it
     for i in range(3):  # every finger touches the can, none sinks into it
-        points = world.contact_points("claw", can, distance=0.005)
+        points = world.contacts.contact_points("claw", can, distance=0.005)
         gaps = [p.distance for p in points if p.link_a.startswith(f"f{i}_")]
         assert gaps and -0.002 < min(gaps) < 0.002
 
 
 def test_closing_on_nothing_ends_fully_closed(world: World, tmp_path: Path) -> None:
     world.add_robot(claw(tmp_path))
-    world.add_cylinder("can", 0.025, 0.06, pose=(0.3, 0.0, PALM_HEIGHT - 0.06), mass=0.1)
+    world.bodies.add_cylinder("can", 0.025, 0.06, pose=(0.3, 0.0, PALM_HEIGHT - 0.06), mass=0.1)
     robot = ProjectedRobot.of(world, "claw")
     open_gripper(robot, "hand")
     with pytest.raises(GripperClosedCompletely, match="closed on nothing") as info:
         grip(robot, "hand")
     assert info.value.position == pytest.approx(CLOSED["proximal"])
-    assert world.attachments("claw") == {}
+    assert world.bodies.attachments("claw") == {}
 
 
 def test_a_position_beyond_open_is_clamped_and_reported(world: World, tmp_path: Path) -> None:
@@ -154,12 +156,12 @@ def test_the_pr2_holds_a_can_with_both_finger_tips_on_it(world: World) -> None:
     robot = ProjectedRobot.of(world, "pr2")
     open_gripper(robot, "right")
     tool = world.link_pose("pr2", "r_gripper_tool_frame").position
-    world.add_cylinder("can", 0.02, 0.1, pose=tool, mass=0.1)  # 4 cm across, fingers 9.4 cm
+    world.bodies.add_cylinder("can", 0.02, 0.1, pose=tool, mass=0.1)  # 4 cm across, fingers 9.4 cm
     assert grip(robot, "right") == "can"
     finger = world.joint_states("pr2")["r_gripper_l_finger_joint"]
     assert 0.05 < finger < 0.4  # stopped on the can, neither open (0.548) nor closed (0)
     for tip in ("r_gripper_l_finger_tip_link", "r_gripper_r_finger_tip_link"):
-        points = world.contact_points("pr2", "can", link_a=tip, distance=0.005)
+        points = world.contacts.contact_points("pr2", "can", link_a=tip, distance=0.005)
         assert points and -0.002 < min(p.distance for p in points) < 0.002
 
 
@@ -193,10 +195,10 @@ def test_a_can_off_centre_is_met_on_one_side_and_gripped_once_the_hand_moves_by_
     tool = world.link_pose("pr2", "r_gripper_tool_frame")
     across = quat.rotate(tool.orientation, (0.0, 1.0, 0.0))  # the fingers close along y
     at = tuple(p + 0.025 * a for p, a in zip(tool.position, across, strict=True))
-    world.add_cylinder("can", 0.02, 0.1, pose=at, mass=0.1)
+    world.bodies.add_cylinder("can", 0.02, 0.1, pose=at, mass=0.1)
     with pytest.raises(GripperMetOneSide, match="on one side only") as info:
         grip(robot, "right")
-    assert world.attachments("pr2") == {}  # the fingers did not move
+    assert world.bodies.attachments("pr2") == {}  # the fingers did not move
     shift = info.value.shift
     assert shift is not None
     assert sum(s * a for s, a in zip(shift, across, strict=True)) == pytest.approx(0.025, abs=0.004)
@@ -204,5 +206,5 @@ def test_a_can_off_centre_is_met_on_one_side_and_gripped_once_the_hand_moves_by_
     move_tcp(robot, "right", Pose(moved, tool.orientation), collision_mode="allow_hand")
     assert grip(robot, "right") == "can"
     for tip in ("r_gripper_l_finger_tip_link", "r_gripper_r_finger_tip_link"):
-        points = world.contact_points("pr2", "can", link_a=tip, distance=0.005)
+        points = world.contacts.contact_points("pr2", "can", link_a=tip, distance=0.005)
         assert points and min(p.distance for p in points) > -HAND_CONTACT_DEPTH

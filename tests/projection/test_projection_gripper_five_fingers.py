@@ -81,7 +81,7 @@ def test_the_unchanged_pick_up_plan_runs_on_tiago_with_its_hand() -> None:
     placed = world.pose("mug-1").position
     with simulated_robot(world, scene.robot):
         result = pick_up(scene.look_target)
-    assert result.arm == "arm" and world.attachments("tiago") == {"mug-1": "arm_7_link"}
+    assert result.arm == "arm" and world.bodies.attachments("tiago") == {"mug-1": "arm_7_link"}
     assert world.pose("mug-1").position[2] > placed[2] + 0.05  # lifted off the table
     hand = world.joint_states("tiago")
     curled = [hand[j] for j in CURLS]

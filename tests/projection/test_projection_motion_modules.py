@@ -34,7 +34,7 @@ def sided() -> Iterator[World]:
         "starboard": replace(pr2.arms["right"], name="starboard", side="right"),
     }
     world = World()
-    world.add_floor()
+    world.bodies.add_floor()
     world.add_robot(replace(pr2, name="sided", arms=arms, model=None))
     world.add_box("table", (0.6, 1.0, 0.7), pose=Pose((0.9, 0.0, 0.35)))
     world.add_item("mug-1", "mug", pose=Pose((0.7, 0.0, 0.7)))
@@ -47,7 +47,7 @@ def test_two_armed_motions_reach_the_arms_on_each_side_whatever_their_names(
 ) -> None:
     left = PoseStamped("base_footprint", (0.6, 0.3, 0.9))
     right = PoseStamped("base_footprint", (0.6, -0.3, 0.9))
-    with sided.stored_state(), simulated_robot(sided, "sided"):
+    with sided.snapshots.stored_state(), simulated_robot(sided, "sided"):
         perform(a.motion(type="moving-tcp", left_target=left, right_target=right))
         perform(a.motion(type="opening", gripper="starboard"))
         base = sided.pose("sided").inverse()
@@ -59,7 +59,7 @@ def test_two_armed_motions_reach_the_arms_on_each_side_whatever_their_names(
 
 def test_inspecting_answers_the_perceived_object(sided: World) -> None:
     look = PoseStamped("map", (0.7, 0.0, 0.7))
-    with sided.stored_state(), simulated_robot(sided, "sided"):
+    with sided.snapshots.stored_state(), simulated_robot(sided, "sided"):
         perform(a.motion(type="looking", target=look))
         seen = perform(a.motion(type="inspecting", object=an.object(type="mug")))
     assert seen.get("name") == "mug-1"

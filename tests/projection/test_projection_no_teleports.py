@@ -143,9 +143,9 @@ def test_a_gripper_closing_on_a_can_stops_on_it_along_its_trajectory() -> None:
     with trajectory_listener(ledger), simulated_robot(world, "pr2"):
         ledger.perform(a.motion(type="opening", gripper="right"))
         tool = world.link_pose("pr2", "r_gripper_tool_frame").position
-        world.add_cylinder("can", 0.02, 0.1, pose=tool, mass=0.1)  # 4 cm across
+        world.bodies.add_cylinder("can", 0.02, 0.1, pose=tool, mass=0.1)  # 4 cm across
         held, (closing,) = ledger.perform(a.motion(type="gripping", gripper="right"))
-    assert held == "can" and world.attached_to("can") is not None
+    assert held == "can" and world.bodies.attached_to("can") is not None
     finger = closing.end["r_gripper_l_finger_joint"]
     assert finger == pytest.approx(world.joint_states("pr2")["r_gripper_l_finger_joint"], abs=TOL)
     assert 0.05 < finger < 0.4  # on the can: neither open (0.548) nor closed (0)
@@ -175,7 +175,7 @@ def test_a_torso_goal_beyond_the_limit_moves_to_it_then_fails() -> None:
 def test_a_torso_raised_under_a_board_fails_naming_it_and_nothing_moves() -> None:
     scene = tabletop_scene("pr2")
     world = scene.world
-    tops = [world.link_aabb("pr2", link)[1][2] for link in world.link_names("pr2")]
+    tops = [world.contacts.link_aabb("pr2", link)[1][2] for link in world.link_names("pr2")]
     x, y, _ = world.pose("pr2").position
     world.add_box("board", (0.8, 0.8, 0.02), pose=(x, y, max(tops) + 0.06))  # 5 cm above it
     before, pose = dict(world.joint_states("pr2")), world.pose("pr2")
@@ -196,7 +196,9 @@ def test_a_torso_raised_under_a_board_fails_naming_it_and_nothing_moves() -> Non
 def test_a_head_turned_into_a_post_beside_it_fails_naming_it_and_nothing_moves() -> None:
     scene = tabletop_scene("pr2")
     world = scene.world
-    world.add_cylinder("post", 0.015, 0.3, pose=(-0.1, -0.22, 1.25))  # behind the head's right
+    world.bodies.add_cylinder(
+        "post", 0.015, 0.3, pose=(-0.1, -0.22, 1.25)
+    )  # behind the head's right
     before, pose = dict(world.joint_states("pr2")), world.pose("pr2")
     ledger = Ledger(world, "pr2")
     with (

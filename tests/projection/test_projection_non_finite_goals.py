@@ -36,7 +36,7 @@ CASES = {
 @pytest.fixture(scope="module")
 def world() -> Iterator[World]:
     with World() as made:
-        made.add_floor()
+        made.bodies.add_floor()
         made.add_robot("pr2")
         yield made
 

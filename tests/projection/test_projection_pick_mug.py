@@ -48,7 +48,7 @@ def test_the_same_plan_picks_the_mug(robot: str) -> None:
     assert approach_down[2] == pytest.approx(-1.0, abs=0.01)  # top-down grasp
     _assert_joints_within_limits(world, robot)
     arm = world.robot(robot).description.arms[result.arm]
-    assert world.attachments(robot) == {"mug-1": arm.end_effector_link}
+    assert world.bodies.attachments(robot) == {"mug-1": arm.end_effector_link}
     mug_after = world.pose("mug-1")
     grasp = _in_map(world, robot, result.grasp)
     dz_tool = lifted.position[2] - grasp.position[2]

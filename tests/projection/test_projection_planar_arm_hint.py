@@ -36,7 +36,7 @@ def _stretch(base_in_ik: bool | None) -> LoadedDescription:
 
 def test_a_planar_arm_without_its_base_is_told_to_use_it() -> None:
     with World() as world:
-        world.add_floor()
+        world.bodies.add_floor()
         robot = ProjectedRobot.of(world, world.add_robot(_stretch(False)).name)
         with pytest.raises(ManipulationPoseUnreachable) as failure:
             move_tcp(robot, "arm", OFF_THE_PLANE, collision_mode="allow_all")
@@ -48,7 +48,7 @@ def test_a_planar_arm_without_its_base_is_told_to_use_it() -> None:
 
 def test_with_its_base_the_planar_arm_reaches_it() -> None:
     with World() as world:
-        world.add_floor()
+        world.bodies.add_floor()
         robot = ProjectedRobot.of(world, world.add_robot(_stretch(None)).name)
         reached = move_tcp(robot, "arm", OFF_THE_PLANE, collision_mode="allow_all")
         assert reached.distance_to(OFF_THE_PLANE) < 0.01

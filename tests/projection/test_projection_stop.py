@@ -75,7 +75,11 @@ def test_a_stop_ends_a_failing_ik_search_between_descents_and_the_arm_stays(
     world = scene.world
     target = robot.base_pose() * INSIDE_TORSO
     unstopped = StopAtPoint(10**9)
-    with world.stored_state(), binding_task(unstopped), pytest.raises(Exception) as failed:
+    with (
+        world.snapshots.stored_state(),
+        binding_task(unstopped),
+        pytest.raises(Exception) as failed,
+    ):
         move_tcp(robot, "right", target)
     assert type(failed.value).__name__ == "ManipulationPoseUnreachable"
     assert unstopped.reached > 10  # the search passed many stop points: one per descent
@@ -95,7 +99,7 @@ def test_a_stop_while_a_drawer_opens_leaves_no_attachment_and_the_bowl_in_the_dr
     scene, robot = kitchen
     world = scene.world
     joint, handle = f"{DRAWER}_joint", f"{DRAWER}_handle"
-    with world.stored_state():
+    with world.snapshots.stored_state():
         bowl_before = world.pose("bowl-1").position
         task = StopAtPoint(n)
         with binding_task(task), pytest.raises(TaskStopped):
@@ -106,7 +110,7 @@ def test_a_stop_while_a_drawer_opens_leaves_no_attachment_and_the_bowl_in_the_dr
         if 0.0 < opened < 0.30:  # the hand holds the handle where the drawer stopped
             tool = world.link_pose(robot.name, robot.arm("right").tool_frame)
             assert tool.distance_to(world.link_pose("kitchen", handle)) < POSITION_TOLERANCE
-        assert world.attached_to("bowl-1") is None
+        assert world.bodies.attached_to("bowl-1") is None
         assert all(att.obj != "bowl-1" for att in world.all_attachments())
         bowl = world.pose("bowl-1").position
         assert bowl[1] == pytest.approx(bowl_before[1] - opened, abs=1e-6)  # rode along
@@ -117,11 +121,11 @@ def test_a_stop_ends_a_simulation_after_a_whole_step(
     kitchen: tuple[KitchenScene, ProjectedRobot],
 ) -> None:
     world = kitchen[0].world
-    with world.stored_state():
+    with world.snapshots.stored_state():
         start = world.time
         task = StopAtPoint(10)
         with binding_task(task), pytest.raises(TaskStopped):
-            world.simulate(2.0, stop_check=checkpoint)
+            world.physics.simulate(2.0, stop_check=checkpoint)
         assert task.reached == 10
         assert world.time - start == pytest.approx(9 * world.time_step, abs=1e-12)
 
@@ -130,7 +134,7 @@ def test_a_stop_ends_the_prolog_simulate_predicate_of_a_task(
     kitchen: tuple[KitchenScene, ProjectedRobot],
 ) -> None:
     world = kitchen[0].world
-    with world.stored_state():
+    with world.snapshots.stored_state():
         start = world.time
         task = StopAtPoint(4)
         with binding_task(task), pytest.raises(TaskStopped):
@@ -144,7 +148,7 @@ def test_a_stopped_plan_does_not_drive_and_a_stopped_drive_is_whole(
     scene, robot = kitchen
     world = scene.world
     goal = PoseStamped("base_footprint", (0.3, 0.0, 0.0))
-    with world.stored_state():
+    with world.snapshots.stored_state():
         before = world.pose(robot.name)
         with pytest.raises(TaskStopped), simulated_robot(world, robot.name) as run:
             run.top_level.stop()
@@ -188,7 +192,7 @@ def test_a_transport_stopped_at_its_nth_task_moves_no_further(n: int) -> None:
             transport("mug", a.location(on=("kitchen", "table_top"), for_="mug-1"))
     assert stopper.executed_at_stop is not None  # the stop came during the transport
     assert len(executed) <= stopper.executed_at_stop + 1  # at most the motion under way
-    held = world.attached_to("mug-1")
+    held = world.bodies.attached_to("mug-1")
     assert held is None or held.robot == "pr2"  # on its counter, or in the hand: whole
     world.close()
 
@@ -202,10 +206,10 @@ def test_a_stop_ends_an_arm_joint_motion_while_it_is_planned_and_the_arm_stays(
     scene, robot = kitchen
     world = scene.world
     across = dict(robot.description.arms["right"].parking, r_shoulder_pan_joint=-0.8)
-    with world.stored_state():
+    with world.snapshots.stored_state():
         before = world.joint_states(robot.name)
         unstopped = StopAtPoint(10**9)
-        with world.stored_state(), binding_task(unstopped):
+        with world.snapshots.stored_state(), binding_task(unstopped):
             move_joints(robot, "right", across)
         assert unstopped.reached > 5
         for n in (1, unstopped.reached // 2, unstopped.reached - 1):

@@ -44,9 +44,9 @@ def test_every_motion_of_the_transport_is_collision_free(
     kinds = {kind for kind, _ in judge.judged}
     assert {"base", "arm"} <= kinds
     assert sum(n for _, n in judge.judged) > 100
-    assert world.attached_to("mug-1") is None
+    assert world.bodies.attached_to("mug-1") is None
     low, _ = world.aabb("mug-1")
-    assert low[2] == pytest.approx(world.link_aabb("kitchen", "table_top")[1][2], abs=0.01)
+    assert low[2] == pytest.approx(world.contacts.link_aabb("kitchen", "table_top")[1][2], abs=0.01)
 
 
 def test_trajectories_respect_limits_and_time_runs_forward(kitchen: KitchenScene) -> None:
@@ -74,7 +74,7 @@ def test_going_past_an_open_drawer_goes_round_it_or_names_it(
     world = scene.world
     judge = make_judge(world, "pr2")
     world.set_joint_states("kitchen", {"drawer_unit_drawer_3_joint": 0.4})
-    drawer = world.link_aabb("kitchen", "drawer_unit_drawer_3")
+    drawer = world.contacts.link_aabb("kitchen", "drawer_unit_drawer_3")
     x = (drawer[0][0] + drawer[1][0]) / 2
     world.set_pose("pr2", Pose((x - 1.0, 1.05, 0.0)))  # west of the drawer, before the counter
     goal = PoseStamped("map", (x + 1.0, 1.05, 0.0))  # east of it: straight through is blocked
@@ -101,7 +101,7 @@ def test_the_pr2_takes_the_bowl_out_of_the_drawer_along_free_paths(
     assert result.object_name == "bowl-1" and result.opened  # it came out of a drawer
     assert sum(n for _, n in judge.judged) > 100
     low, _ = world.aabb("bowl-1")
-    assert low[2] == pytest.approx(world.link_aabb("kitchen", "table_top")[1][2], abs=0.01)
+    assert low[2] == pytest.approx(world.contacts.link_aabb("kitchen", "table_top")[1][2], abs=0.01)
     assert world.joint_states("kitchen")["drawer_unit_drawer_3_joint"] == pytest.approx(
         0.0, abs=0.01
     )  # closed again

@@ -13,7 +13,7 @@ from robocram.world import World
 
 def test_transform_pose_follows_the_robot() -> None:
     with World() as world:
-        world.add_floor()
+        world.bodies.add_floor()
         world.add_robot("pr2")
         world.add_box("crate", (0.2, 0.2, 0.2), pose=Pose((3.0, 1.0, 0.1)))
         with simulated_robot(world, "pr2"):
@@ -30,7 +30,7 @@ def test_transform_pose_follows_the_robot() -> None:
 
 def test_the_live_tree_reads_a_frame_when_it_is_first_named() -> None:
     with World() as world:
-        world.add_floor()
+        world.bodies.add_floor()
         world.add_robot("pr2")
         world.add_box("crate", (0.2, 0.2, 0.2), pose=Pose((3.0, 1.0, 0.1)))
         tree = LiveTransformTree(WorldFrames(world))

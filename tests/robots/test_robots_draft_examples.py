@@ -157,7 +157,7 @@ def test_a_floor_standing_arm_stands_on_a_pedestal_at_a_lab_table(name: str) -> 
         top = world.aabb("pedestal")[1][2]
         assert world.aabb(robot)[0][2] - top == pytest.approx(PEDESTAL_GAP, abs=1e-3)
         assert world.object("pedestal").type == "pedestal"
-        assert not world.collisions(robot, ignore=["floor"])
+        assert not world.contacts.collisions(robot, ignore=["floor"])
         desc = world.robot(robot).description
         arm = next(a for a in desc.arms.values() if a.gripper_joints)
         mug = world.pose("mug-1").position

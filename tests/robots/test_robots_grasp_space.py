@@ -73,7 +73,7 @@ def test_the_closed_fingers_meet(fetch: tuple[World, LoadedDescription]) -> None
     arm = desc.arms["arm"]
     assert arm.gripper is not None
     obj = world.object("fetch")
-    with world.stored_state():
+    with world.snapshots.stored_state():
         world.set_joint_states("fetch", arm.gripper.at(0.0))
         left, right = (obj.link_index[link] for link in arm.gripper_links)
         near = pybullet.getClosestPoints(obj.body_id, obj.body_id, 0.05, left, right,

@@ -147,7 +147,7 @@ def test_z1_grips_a_mug_by_contact_with_its_one_moving_jaw() -> None:
     """Closing stops where the moving jaw and the fixed one squeeze the mug, part way."""
     examples = Path(__file__).resolve().parents[2] / "examples" / "robots"
     with World() as world:
-        world.add_floor()
+        world.bodies.add_floor()
         name = world.add_robot(description_from(str(examples / "z1.py"))).name
         robot = ProjectedRobot.of(world, name)
         down = quaternion.from_euler(0.0, math.pi / 2, 0.0)  # tool x (approach) down
@@ -157,6 +157,6 @@ def test_z1_grips_a_mug_by_contact_with_its_one_moving_jaw() -> None:
         open_gripper(robot, "arm")
         held = grip(robot, "arm")
         jaw = world.joint_states(name)["jointGripper"]
-        attached = world.attachments(name)
+        attached = world.bodies.attachments(name)
     assert held == "mug-1" and attached == {"mug-1": "link06"}
     assert -1.5707 < jaw < -0.05  # stopped on the mug, not closed (0) nor open

@@ -157,7 +157,7 @@ def test_the_unchanged_pick_up_runs_in_the_tabletop_scene(stretch: LoadedDescrip
         with simulated_robot(world, scene.robot):
             result = pick_up(scene.look_target)
         assert (result.object_name, result.arm) == ("mug-1", "arm")
-        assert world.attached_to("mug-1") is not None
+        assert world.bodies.attached_to("mug-1") is not None
         assert world.pose("mug-1").position[2] > start + 0.05
         joints = world.joint_states(scene.robot)
         telescope = [joints[j] for j in TELESCOPE]
@@ -175,8 +175,8 @@ def test_the_unchanged_transport_carries_the_mug_to_the_kitchen_table(
         with simulated_robot(world, scene.robot):
             result = transport("mug", a.location(on=("kitchen", "table_top"), for_="mug-1"))
         assert result.object_name == "mug-1"
-        assert world.attached_to("mug-1") is None
-        touching = {p.link_b for p in world.contact_points("mug-1", "kitchen")}
+        assert world.bodies.attached_to("mug-1") is None
+        touching = {p.link_b for p in world.contacts.contact_points("mug-1", "kitchen")}
         assert touching == {"table_top"}
         assert world.pose("mug-1").position[:2] == pytest.approx(result.spot.position[:2], abs=0.03)
         joints = world.joint_states(scene.robot)
@@ -209,8 +209,10 @@ def test_the_unchanged_transport_takes_the_bowl_out_of_the_drawer(
             "deliver",
             "close",
         ]
-        assert world.attached_to("bowl-1") is None
-        assert {p.link_b for p in world.contact_points("bowl-1", "kitchen")} == {"table_top"}
+        assert world.bodies.attached_to("bowl-1") is None
+        assert {p.link_b for p in world.contacts.contact_points("bowl-1", "kitchen")} == {
+            "table_top"
+        }
         drawer = world.joint_states("kitchen")[result.opened[0].container.joint]
         assert drawer == pytest.approx(0.0, abs=0.01)  # closed again
     finally:

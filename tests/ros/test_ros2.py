@@ -169,7 +169,7 @@ def _in_projection(object_type: str, item: str) -> TransportResult:
 def _on_the_table_top(world: World, item: str, pose: Pose) -> None:
     """``item`` (at ``pose`` in the driver's world) stands on the table top, inside it."""
     low, _ = world.aabb(item)
-    table_low, table_high = world.link_aabb("kitchen", "table_top")
+    table_low, table_high = world.contacts.link_aabb("kitchen", "table_top")
     assert world.pose(item).distance_to(pose) < 1e-6  # the mirror shows it there too
     assert low[2] == pytest.approx(table_high[2], abs=RESTING)
     assert table_low[0] < pose.position[0] < table_high[0]
@@ -205,7 +205,7 @@ def test_the_kitchen_transport_over_ros2_on_the_real_pr2s_controllers(
     assert run.tree.root.status.name == "SUCCEEDED"
     assert skew == pytest.approx(clock_offset, abs=0.5)
     _on_the_table_top(scene.world, item, placed)
-    assert scene.world.attachments("pr2") == {}  # let go in the mirror too
+    assert scene.world.bodies.attachments("pr2") == {}  # let go in the mirror too
     if object_type == "bowl":  # out of the drawer, which is shut again
         assert [opened.container.joint for opened in result.opened] == [DRAWER_JOINT]
         assert drawers["/kitchen/joint_states"][DRAWER_JOINT] == pytest.approx(0.0, abs=0.01)

@@ -40,7 +40,7 @@ def _on_the_table_top(world: World, item: str, pose: Pose) -> None:
     """``item`` (at ``pose`` in the driver's world) stands upright on the table top,
     inside its outline; the mirror shows it there too."""
     low, _ = world.aabb(item)
-    table_low, table_high = world.link_aabb("kitchen", "table_top")
+    table_low, table_high = world.contacts.link_aabb("kitchen", "table_top")
     assert world.pose(item).distance_to(pose) < 1e-6
     assert low[2] == pytest.approx(table_high[2], abs=RESTING)
     assert table_low[0] < pose.position[0] < table_high[0]
@@ -82,7 +82,7 @@ def test_the_mug_goes_to_the_table_on_the_real_pr2_with_its_clock_ahead(
     assert result.opened == []
     _on_the_table_top(scene.world, "mug-1", mug)
     assert mug.position[:2] == pytest.approx(result.spot.position[:2], abs=0.01)
-    assert scene.world.attachments("pr2") == {}  # let go in the mirror too
+    assert scene.world.bodies.attachments("pr2") == {}  # let go in the mirror too
     _same_stands(result, expected, SAME)  # the same seeds in the same world
 
 
@@ -136,5 +136,5 @@ def test_what_the_gripper_holds_moves_with_the_hand_in_the_mirror(roscore: Rosco
         result = pick_up(scene.look_target)
         mug = run.transforms.lookup("map", "mug-1")
     hand = world.robot("pr2").description.arms[result.arm].end_effector_link
-    assert world.attachments("pr2") == {"mug-1": hand}
+    assert world.bodies.attachments("pr2") == {"mug-1": hand}
     assert world.pose("mug-1").distance_to(mug) < 1e-3  # lifted with the hand, as there

@@ -207,7 +207,7 @@ def test_a_torso_blocked_by_a_board_in_the_world_sends_nothing(
     roscore: Roscore, tmp_path: Path
 ) -> None:
     world = tabletop_scene("pr2").world
-    top = max(world.link_aabb("pr2", link)[1][2] for link in world.link_names("pr2"))
+    top = max(world.contacts.link_aabb("pr2", link)[1][2] for link in world.link_names("pr2"))
     world.add_box("board", (0.8, 0.8, 0.02), Pose((0.0, 0.0, top + 0.06)))  # 5 cm above
     with (
         DriverProcess(roscore.uri, goal_log=tmp_path / "goals.jsonl") as driver,

@@ -66,7 +66,8 @@ def pr2_kitchen() -> Iterator[World]:
 
 def test_the_room_is_six_by_five_metres(pr2_kitchen: World) -> None:
     walls = [
-        pr2_kitchen.link_aabb("kitchen", f"wall_{s}") for s in ("north", "south", "east", "west")
+        pr2_kitchen.contacts.link_aabb("kitchen", f"wall_{s}")
+        for s in ("north", "south", "east", "west")
     ]
     low = [min(w[0][i] for w in walls) for i in range(3)]
     high = [max(w[1][i] for w in walls) for i in range(3)]
@@ -78,7 +79,7 @@ def test_every_container_opens_by_its_joint_and_moves_its_handle(pr2_kitchen: Wo
     world = pr2_kitchen
     containers = list(world.kb.query("container(kitchen, L, J, H), container_kind(kitchen, L, K)"))
     assert len(containers) == 27
-    with world.stored_state():
+    with world.snapshots.stored_state():
         for c in containers:
             before = world.link_pose("kitchen", c["H"]).position
             upper = world.joint_limits("kitchen", c["J"]).upper
@@ -97,17 +98,19 @@ def test_items_rest_where_the_kb_says_they_are_kept(pr2_kitchen: World) -> None:
     assert usual["mug"] == "counter_top_north"
     for obj in world.objects():
         if obj.type in usual:
-            touching = world.contact_points(obj, "kitchen", link_b=usual[obj.type], distance=0.005)
+            touching = world.contacts.contact_points(
+                obj, "kitchen", link_b=usual[obj.type], distance=0.005
+            )
             assert touching, f"{obj.name} does not rest on {usual[obj.type]}"
-    with world.stored_state():
-        world.simulate(0.5)
-        assert world.stable()
+    with world.snapshots.stored_state():
+        world.physics.simulate(0.5)
+        assert world.physics.stable()
 
 
 def test_surfaces_face_up_at_counter_and_table_height(pr2_kitchen: World) -> None:
     world = pr2_kitchen
     tops = {
-        a["L"]: world.link_aabb("kitchen", a["L"])[1][2]
+        a["L"]: world.contacts.link_aabb("kitchen", a["L"])[1][2]
         for a in world.kb.query("supporting_surface(kitchen, L)")
     }
     assert tops["counter_top_north"] == pytest.approx(0.85, abs=2e-3)
@@ -118,6 +121,6 @@ def test_surfaces_face_up_at_counter_and_table_height(pr2_kitchen: World) -> Non
 @pytest.mark.parametrize("robot", ["pr2", "hsrb", "boxy"])
 def test_the_robot_starts_free_in_the_middle(robot: str) -> None:
     scene = kitchen_scene(robot)
-    assert scene.world.collisions(scene.robot, ignore=["floor"]) == []
+    assert scene.world.contacts.collisions(scene.robot, ignore=["floor"]) == []
     assert scene.world.pose(scene.robot).position[:2] == pytest.approx((-0.8, 0.2))
     scene.world.close()

@@ -58,7 +58,7 @@ def test_the_pr2_carries_the_mug_and_the_bowl_from_its_drawer_to_the_table() -> 
                 transport(item, a.location(on=(env, "table_top"), for_=f"{item}-1"))
         for item in ("mug-1", "bowl-1"):
             assert world.aabb(item)[0][2] == pytest.approx(0.75, abs=0.02)
-            assert "table_top" in {p.link_b for p in world.contact_points(item, env)}
+            assert "table_top" in {p.link_b for p in world.contacts.contact_points(item, env)}
         assert world.joint_states(env)[f"{DRAWER}_joint"] == pytest.approx(0.0, abs=0.01)
     finally:
         world.close()

@@ -89,11 +89,11 @@ def _rests_on(scene: EnvironmentScene, surface: str, height: float) -> None:
     world, env = scene.world, scene.environment
     low, high = world.aabb("bowl-1")
     assert low[2] == pytest.approx(height, abs=0.02)
-    top_low, top_high = world.link_aabb(env, surface)
+    top_low, top_high = world.contacts.link_aabb(env, surface)
     middle = ((low[0] + high[0]) / 2, (low[1] + high[1]) / 2)
     assert top_low[0] < middle[0] < top_high[0] and top_low[1] < middle[1] < top_high[1]
-    assert surface in {p.link_b for p in world.contact_points("bowl-1", env)}
-    assert world.attached_to("bowl-1") is None
+    assert surface in {p.link_b for p in world.contacts.contact_points("bowl-1", env)}
+    assert world.bodies.attached_to("bowl-1") is None
 
 
 def _went_as_planned(result: TransportResult, drawer: str) -> None:
@@ -125,7 +125,7 @@ def test_the_pr2_takes_the_bowl_from_a_drawer_to_the_counter_in_pycrams_apartmen
         _went_as_planned(result, APARTMENT_DRAWER)
         joints = scene.world.joint_states(scene.environment)
         assert joints[f"{APARTMENT_DRAWER}_joint"] == pytest.approx(0.0, abs=0.01)
-        counter = scene.world.link_aabb(scene.environment, "countertop")[1][2]
+        counter = scene.world.contacts.link_aabb(scene.environment, "countertop")[1][2]
         _rests_on(scene, "countertop", counter)
     finally:
         scene.world.close()

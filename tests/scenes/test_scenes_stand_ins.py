@@ -80,7 +80,7 @@ def test_the_loadable_copy_gives_the_stand_ins_collision_boxes(tmp_path: Path) -
     world = World()
     try:
         env = world.add_urdf("kitchen", copy, type="environment")
-        low, high = world.link_aabb(env, "table_area_main")
+        low, high = world.contacts.link_aabb(env, "table_area_main")
         assert high[2] == pytest.approx(0.75, abs=0.01)
         assert high[0] - low[0] == pytest.approx(1.2, abs=0.01)
     finally:

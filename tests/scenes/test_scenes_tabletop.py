@@ -29,7 +29,7 @@ def test_placement_follows_reach_and_footprint(
     assert scene.look_target.position == pytest.approx((*mug_xy, height), abs=1e-3)
     assert tabletop_placement(world, robot).arm == arm
     table_front = world.aabb("table")[0][0]
-    assert world.link_aabb(robot, "base_link")[1][0] < table_front  # the base clears it
+    assert world.contacts.link_aabb(robot, "base_link")[1][0] < table_front  # the base clears it
     world.close()
 
 

@@ -29,7 +29,7 @@ from robocram.world import World
 
 def _world() -> World:
     world = World()
-    world.add_floor()
+    world.bodies.add_floor()
     world.add_box("loaf", (0.24, 0.1, 0.1), pose=(0.0, 0.0, 0.05))
     return world
 
@@ -46,7 +46,7 @@ def test_a_state_adds_what_the_run_added_and_removes_what_it_removed() -> None:
         scene = scene_of(ran)
         before = StoredWorldState.capture(ran, 0.0, scene_names(scene))
         ran.remove("loaf")
-        ran.add_sphere("grain-1", 0.005, pose=(0.1, 0.2, 0.3))
+        ran.bodies.add_sphere("grain-1", 0.005, pose=(0.1, 0.2, 0.3))
         state = StoredWorldState.capture(ran, 1.0, scene_names(scene))
     assert set(state.added) == {"grain-1"} and before.added == {}
     with build_scene(scene) as replay:

@@ -95,7 +95,7 @@ def _deepest_pair(world: World, mine: str, theirs: str) -> tuple[tuple[str, str]
     """The deepest pair of the robot's links named ``mine*`` and ``theirs*`` now."""
     found = [
         (p.distance, (p.link_a, p.link_b))
-        for p in world.contact_points("pr2", "pr2")
+        for p in world.contacts.contact_points("pr2", "pr2")
         if p.link_a.startswith(mine) and p.link_b.startswith(theirs)
     ]
     distance, pair = min(found)
@@ -105,13 +105,15 @@ def _deepest_pair(world: World, mine: str, theirs: str) -> tuple[tuple[str, str]
 def planted_run(db_path: Path) -> PlantedRun:
     """Trace a PR2 at a low wall through the planted faults (see the module docstring)."""
     world = World()
-    world.add_floor()
+    world.bodies.add_floor()
     world.add_robot("pr2")
     desc = world.robot("pr2").description
     for arm in desc.arms.values():
         world.set_joint_states("pr2", dict(arm.parking))
     world.add_box("wall", (0.2, 1.0, 0.2), ((WALL_X, 0.0, 0.2), (0.0, 0.0, 0.0, 1.0)))
-    (gap,) = [p.distance for p in world.contact_points("pr2", "wall", "base_link", distance=0.5)]
+    (gap,) = [
+        p.distance for p in world.contacts.contact_points("pr2", "wall", "base_link", distance=0.5)
+    ]
     base = ("x", "y", "yaw")
     right = desc.arms["right"].joints
     parked = [desc.arms["right"].parking[j] for j in right]
@@ -234,17 +236,17 @@ def test_a_held_object_driven_into_a_shelf_is_found_and_a_base_put_aside_jumps(
     tmp_path: Path,
 ) -> None:
     world = World()
-    world.add_floor()
+    world.bodies.add_floor()
     world.add_robot("pr2")
     for arm in world.robot("pr2").description.arms.values():
         world.set_joint_states("pr2", dict(arm.parking))
-    low, high = world.link_aabb("pr2", "r_gripper_palm_link")
+    low, high = world.contacts.link_aabb("pr2", "r_gripper_palm_link")
     y, z = (low[1] + high[1]) / 2, (low[2] + high[2]) / 2
-    front = max(world.link_aabb("pr2", link)[1][0] for link in world.link_names("pr2"))
+    front = max(world.contacts.link_aabb("pr2", link)[1][0] for link in world.link_names("pr2"))
     world.add_box("stick", (0.3, 0.03, 0.03), ((front + 0.16, y, z), (0.0, 0.0, 0.0, 1.0)))
     world.attach("stick", "pr2", "r_gripper_tool_frame")
     world.add_box("shelf", (0.1, 0.3, 0.3), ((front + 0.4, y, z), (0.0, 0.0, 0.0, 1.0)))
-    (gap,) = [p.distance for p in world.contact_points("stick", "shelf", distance=0.5)]
+    (gap,) = [p.distance for p in world.contacts.contact_points("stick", "shelf", distance=0.5)]
     db_path = tmp_path / "held.db"
     with trace_to(db_path, world=world), simulated_robot(world, "pr2", name="held"):
         _execute(
@@ -277,7 +279,7 @@ def test_the_cli_exits_1_on_findings_and_prints_one_line_each(
 def _traced_drive(db_path: Path, robot: str) -> World:
     """Trace ``robot`` driving 0.3 m on an empty floor; the world is returned open."""
     world = World()
-    world.add_floor()
+    world.bodies.add_floor()
     world.add_robot(robot)
     names = ("x", "y", "yaw")
     limits = joint_limits(world.robot(robot).description, names)

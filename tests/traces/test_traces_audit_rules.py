@@ -129,7 +129,7 @@ def test_dense_samples_move_no_point_more_than_five_mm(motion: str) -> None:
     timed = time_parameterize("pr2", names, path, joint_limits(desc, names))
     pr2 = RobotHandle.of(world, "pr2")
     levers = Levers.of(pr2, desc.model, {})
-    radii = world.link_radii("pr2")
+    radii = world.contacts.link_radii("pr2")
     links = [link for link in desc.model.links if desc.model.links[link].collisions]
     offsets = [
         Pose(tuple(radii[link] * e for e in axis))
@@ -174,7 +174,8 @@ PLANNER_CHECKS = (
     "robocram.motion.bullet_scene", "robocram.motion.coal_clearance",
     "robocram.motion.segment_check", "robocram.motion.self_collision",
     "robocram.motion.collision_scene", "robocram.motion.travel_bound",
-    "robocram.world.link_contacts", "robocram.world.contacts", "robocram.world.obstacle_boxes",
+    "robocram.world.link_contacts", "robocram.world.closest_points",
+    "robocram.world.obstacle_boxes",
 )  # fmt: skip
 
 

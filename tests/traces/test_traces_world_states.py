@@ -61,7 +61,7 @@ def test_last_state_rebuilds_the_final_world_in_a_new_client(pick_up_trace: Any)
     with build_scene(run.scene) as world:
         stored.apply(world)
         assert_same_state(StoredWorldState.capture(world, 0.0), pick_up_trace.final)
-        assert world.attached_to("mug-1") is not None  # the lifted mug hangs from the hand
+        assert world.bodies.attached_to("mug-1") is not None  # the lifted mug hangs from the hand
 
 
 def test_mid_run_state_restores_the_live_world(pick_up_trace: Any) -> None:
@@ -73,7 +73,7 @@ def test_mid_run_state_restores_the_live_world(pick_up_trace: Any) -> None:
         first = world_state_at(db, pick_up_trace.run, times[0][1])
     stored.apply(world)
     assert_same_state(StoredWorldState.capture(world, 0.0), stored)
-    assert world.attached_to("mug-1") is None  # the gripper opened, the mug is on the table
+    assert world.bodies.attached_to("mug-1") is None  # the gripper opened, the mug is on the table
     torso = "torso_lift_joint"
     assert stored.joints["pr2"][torso] > first.joints["pr2"][torso] + 0.1  # torso was raised
     pick_up_trace.final.apply(world)  # leave the shared world as the run left it
@@ -93,7 +93,7 @@ def test_a_world_simulated_between_motions_is_kept_before_the_next(tmp_path: Pat
             perform(a.motion(type="moving-torso", joint_angle=0.1))
             x, y, z = world.pose("mug-1").position
             world.set_pose("mug-1", Pose((x + 0.05, y, z + 0.03)))
-            world.simulate(0.3)  # it drops onto the table, 5 cm along
+            world.physics.simulate(0.3)  # it drops onto the table, 5 cm along
             settled, _ = pybullet.getBasePositionAndOrientation(
                 mug.body_id, physicsClientId=world.client
             )

@@ -36,13 +36,13 @@ def test_task_links_to_the_world_when_it_ended(live_run: Any) -> None:
     opening = _task(live_run.tree, "perform opening")
     viewer.show_task(opening)
     assert viewer.timeline[viewer.shown].task_path == opening.path
-    assert viewer.display.attached_to("mug-1") is None  # not yet gripped
+    assert viewer.display.bodies.attached_to("mug-1") is None  # not yet gripped
     ((_, link), frame) = next(kv for kv in viewer.view.frames.items() if kv[0][0] == "mug-1")
     mug = viewer.display.pose("mug-1") if link == ROOT else viewer.display.link_pose("mug-1", link)
     assert np.allclose(frame.position, mug.position, atol=1e-9)
     viewer.show_task(live_run.tree)  # the root ended last: the final world again
     assert viewer.shown == len(viewer.timeline) - 1
-    assert viewer.display.attached_to("mug-1") is not None
+    assert viewer.display.bodies.attached_to("mug-1") is not None
 
 
 def test_replay_shows_the_stored_run(live_run: Any) -> None:

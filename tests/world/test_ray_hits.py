@@ -21,7 +21,7 @@ def test_rays_down_onto_a_box_hit_its_top_and_miss_beside_it() -> None:
         assert list(hits.bodies[~on_top]) == [-1] * int((~on_top).sum())
         np.testing.assert_allclose(hits.positions[on_top, 2], 0.3, atol=1e-6)
         np.testing.assert_allclose(hits.normals[on_top], [[0.0, 0.0, 1.0]] * 4, atol=1e-6)
-        singles = world.ray_cast_batch([tuple(s) for s in starts], [tuple(e) for e in ends])
+        singles = world.view.ray_cast_batch([tuple(s) for s in starts], [tuple(e) for e in ends])
         for k, single in enumerate(singles):
             if single is None:
                 assert hits.bodies[k] == -1

@@ -20,7 +20,7 @@ from robocram.world import BodyLoadError, TooManyLinksError, World
 @pytest.fixture
 def world() -> Iterator[World]:
     with World() as w:
-        w.add_floor()
+        w.bodies.add_floor()
         yield w
 
 

@@ -54,7 +54,7 @@ def _configurations(world: World) -> list[np.ndarray]:
 
 def _answers(world: World) -> Answers:
     """Every cached question, asked of ``world`` (its caches) as they stand."""
-    boxes = world.obstacle_boxes(["pr2"])
+    boxes = world.contacts.obstacle_boxes(["pr2"])
     found: Answers = {
         "boxes": {
             (o.name, n): (lo, hi)
@@ -140,7 +140,7 @@ def _attach(world: World) -> None:
 
 
 def _restore(world: World, refill: Callable[[], object]) -> None:
-    with world.stored_state():
+    with world.snapshots.stored_state():
         _moved(world, "mug-1", dx=0.2)
         world.remove("milk-1")
         world.add_box("crate", (0.3, 0.3, 0.3), Pose((-1.2, 0.6, 0.15)))
@@ -151,7 +151,7 @@ def _restore(world: World, refill: Callable[[], object]) -> None:
 def _replace(world: World, refill: Callable[[], object]) -> None:
     pose = world.pose("mug-1")
     world.remove("mug-1")
-    world.add_cylinder("mug-1", 0.15, 0.4, pose)  # the same name, a bigger body
+    world.bodies.add_cylinder("mug-1", 0.15, 0.4, pose)  # the same name, a bigger body
 
 
 CASES = [
@@ -178,7 +178,8 @@ CASES = [
     Case("restore a snapshot", _nothing, _restore,
          frozenset({"structure", "created milk-1", "pose mug-1", "joints pr2"}), only=False),
     Case("step physics", lambda w: _moved(w, "mug-1", dz=0.05),
-         lambda w, _: w.simulate(0.2), frozenset({"pose mug-1", "joints kitchen"}), only=False),
+         lambda w, _: w.physics.simulate(0.2), frozenset({"pose mug-1", "joints kitchen"}),
+         only=False),
 ]  # fmt: skip
 
 
@@ -204,7 +205,7 @@ def test_every_cache_answers_as_a_fresh_build_after(case: Case) -> None:
 
 def _assert_same_as_pybullet(world: World) -> None:
     """The kept obstacle bounds are PyBullet's bounds of each link, to the bit."""
-    boxes = world.obstacle_boxes(["pr2"])
+    boxes = world.contacts.obstacle_boxes(["pr2"])
     cid = world.physics_client()
     for obj, index, low, high in zip(
         boxes.objects, boxes.indices, boxes.low, boxes.high, strict=True
@@ -218,7 +219,7 @@ def _assert_radii_hold_the_links(world: World) -> None:
     link's shapes now: their bounds, as PyBullet reads them, lie within it."""
     cid = world.physics_client()
     for obj in world.objects():
-        radii = world.link_radii(obj)
+        radii = world.contacts.link_radii(obj)
         for link in world.link_names(obj):
             index = obj.link_index[link]
             if index not in obj.colliders or link in obj.link_offset:
@@ -237,19 +238,19 @@ def test_reading_leaves_every_counter_alone() -> None:
         for obj in world.objects():
             world.pose(obj)
             world.joint_states(obj)
-            world.body_state(obj)
+            world.snapshots.body_state(obj)
             world.aabb(obj)
-            world.link_aabbs(obj)
-            world.link_radii(obj)
+            world.contacts.link_aabbs(obj)
+            world.contacts.link_radii(obj)
             world.held_joints(obj)
-            world.link_frames(obj, world.link_names(obj)[:3])
+            world.bodies.link_frames(obj, world.link_names(obj)[:3])
         world.link_pose("pr2", PALM)
-        world.collisions("pr2")
-        world.link_distances("pr2", distance=0.05)
-        world.contact_points("mug-1")
-        world.obstacle_boxes(["pr2"])
-        world.ray_cast((-1.12, 1.24, 1.5), (-1.12, 1.24, -0.1))
-        world.attachments("pr2")
+        world.contacts.collisions("pr2")
+        world.contacts.link_distances("pr2", distance=0.05)
+        world.contacts.contact_points("mug-1")
+        world.contacts.obstacle_boxes(["pr2"])
+        world.view.ray_cast((-1.12, 1.24, 1.5), (-1.12, 1.24, -0.1))
+        world.bodies.attachments("pr2")
         world.kb.first("robot(R)")
         CoalClearance(BulletScene(RobotHandle.of(world, "pr2"), JOINTS)).clearances(
             _configurations(world)[0]

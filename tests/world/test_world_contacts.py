@@ -27,30 +27,30 @@ def world() -> Iterator[World]:
 
 
 def test_contact_points_are_signed_distances_between_named_bodies(world: World) -> None:
-    points = world.contact_points("a", "b")
+    points = world.contacts.contact_points("a", "b")
     assert points and all(isinstance(p, ContactPoint) for p in points)
     assert {(p.obj_a, p.obj_b) for p in points} == {("a", "b")}
     assert min(p.distance for p in points) == pytest.approx(-0.01, abs=1e-4)
-    assert world.contact_points("a", "c") == []
-    near = world.contact_points("a", "c", distance=0.06)
+    assert world.contacts.contact_points("a", "c") == []
+    near = world.contacts.contact_points("a", "c", distance=0.06)
     assert min(p.distance for p in near) == pytest.approx(0.05, abs=1e-4)
     assert near[0].normal_on_b[1] == pytest.approx(-1.0, abs=1e-6)  # from c towards a
 
 
 def test_contact_points_with_every_other_object(world: World) -> None:
-    assert {p.obj_b for p in world.contact_points("a")} == {"b"}
-    assert {p.obj_b for p in world.contact_points("a", distance=0.06)} == {"b", "c"}
+    assert {p.obj_b for p in world.contacts.contact_points("a")} == {"b"}
+    assert {p.obj_b for p in world.contacts.contact_points("a", distance=0.06)} == {"b", "c"}
 
 
 def test_contact_points_filtered_by_link() -> None:
     with World() as world:
         world.add_robot("pr2")
         world.add_box("post", (0.05, 0.05, 0.3), Pose((0.0, 0.0, 0.15)))  # inside the base
-        base = world.contact_points("pr2", "post", link_a="base_link")
+        base = world.contacts.contact_points("pr2", "post", link_a="base_link")
         assert base and {p.link_a for p in base} == {"base_link"}
-        assert world.contact_points("pr2", "post", link_a="head_tilt_link") == []
+        assert world.contacts.contact_points("pr2", "post", link_a="head_tilt_link") == []
         with pytest.raises(UnknownLinkError, match="base_lnk"):
-            world.contact_points("pr2", "post", link_a="base_lnk")
+            world.contacts.contact_points("pr2", "post", link_a="base_lnk")
 
 
 def test_attachments_are_public_state(world: World) -> None:
@@ -101,8 +101,8 @@ def test_self_contacts_match_closest_points_of_every_pair() -> None:
             for distance in (0.0, 0.3):
                 expected = [
                     (a, b) for a, b in pairs
-                    if world.contact_points(pr2, pr2, a, b, distance=distance)
+                    if world.contacts.contact_points(pr2, pr2, a, b, distance=distance)
                 ]  # fmt: skip
-                assert world.self_contacts(pr2, pairs, distance) == expected
+                assert world.contacts.self_contacts(pr2, pairs, distance) == expected
         assert expected  # the far distance finds some
-        assert world.self_contacts(pr2, []) == []
+        assert world.contacts.self_contacts(pr2, []) == []

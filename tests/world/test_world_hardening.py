@@ -33,7 +33,7 @@ from robocram.world import (
 @pytest.fixture
 def world() -> Iterator[World]:
     with World() as w:
-        w.add_floor()
+        w.bodies.add_floor()
         w.add_item("mug", "mug", Pose((1, -0.2, 0.7)))
         yield w
 
@@ -103,7 +103,7 @@ def test_a_failed_load_names_the_file_and_leaves_the_world(world: World, tmp_pat
 
 def test_restore_brings_back_the_object_not_a_namesake(world: World) -> None:
     mug = world.object("mug")
-    with world.stored_state():
+    with world.snapshots.stored_state():
         world.remove("mug")
         world.add_box("mug", (0.1, 0.1, 0.1), Pose((0, 0, 2)))
     assert world.object("mug") is mug and world.object("mug").type == "mug"
@@ -112,7 +112,7 @@ def test_restore_brings_back_the_object_not_a_namesake(world: World) -> None:
 
 
 def test_restore_takes_the_facts_of_a_robot_added_inside(world: World) -> None:
-    with world.stored_state():
+    with world.snapshots.stored_state():
         world.add_robot("hsrb")
         assert world.kb.first("robot(R)") == {"R": "hsrb"}
     assert "hsrb" not in world
@@ -123,7 +123,7 @@ def test_a_robot_removed_inside_comes_back_with_its_facts() -> None:
     with World() as world:
         world.add_robot("hsrb")
         assert world.kb.first("robot(R)") == {"R": "hsrb"}
-        with world.stored_state():
+        with world.snapshots.stored_state():
             world.remove("hsrb")
             assert world.kb.first("robot(R)") is None
         assert world.kb.first("robot(R)") == {"R": "hsrb"}
@@ -156,18 +156,18 @@ def test_copying_a_closed_world_says_it_is_closed(world: World) -> None:
     with pytest.raises(WorldClosedError):
         world.copy()
     with pytest.raises(WorldClosedError):
-        world.ray_cast((0, 0, 1), (0, 0, -1))
+        world.view.ray_cast((0, 0, 1), (0, 0, -1))
 
 
 def test_every_query_on_a_closed_world_says_it_is_closed(world: World) -> None:
     world.close()
     queries = [
         lambda: world.aabb("mug"),
-        lambda: world.link_aabb("mug", world.link_names("mug")[0]),
-        lambda: world.contact_points("mug"),
-        lambda: world.collisions("mug"),
-        lambda: world.visible_from(Pose((0, 0, 2)), "mug"),
-        lambda: world.stable(),
+        lambda: world.contacts.link_aabb("mug", world.link_names("mug")[0]),
+        lambda: world.contacts.contact_points("mug"),
+        lambda: world.contacts.collisions("mug"),
+        lambda: world.view.visible_from(Pose((0, 0, 2)), "mug"),
+        lambda: world.physics.stable(),
         lambda: world.pose("mug"),
     ]
     for query in queries:

@@ -25,14 +25,14 @@ from robocram.world import (
 @pytest.fixture
 def world() -> Iterator[World]:
     with World() as w:
-        w.add_floor()
+        w.bodies.add_floor()
         yield w
 
 
 def test_shapes_have_their_size_and_pose(world: World) -> None:
     box = world.add_box("box", (0.2, 0.4, 0.6), Pose((1, 2, 0.3)), mass=2.0)
-    ball = world.add_sphere("ball", 0.1, ((0, 0, 1), (0, 0, 0, 1)))
-    can = world.add_cylinder("can", 0.05, 0.2, (3, 0, 0.1))
+    ball = world.bodies.add_sphere("ball", 0.1, ((0, 0, 1), (0, 0, 0, 1)))
+    can = world.bodies.add_cylinder("can", 0.05, 0.2, (3, 0, 0.1))
     low, high = world.aabb(box)
     assert np.subtract(high, low) == pytest.approx((0.2, 0.4, 0.6), abs=0.005)
     assert world.pose(ball).position == pytest.approx((0, 0, 1))
@@ -66,23 +66,23 @@ def test_names_are_unique_and_looked_up_with_suggestions(world: World) -> None:
 
 def test_ray_cast_reports_the_first_body(world: World) -> None:
     box = world.add_box("box", (1, 1, 1), (2, 0, 0.5))
-    hit = world.ray_cast((0, 0, 0.5), (5, 0, 0.5))
+    hit = world.view.ray_cast((0, 0, 0.5), (5, 0, 0.5))
     assert hit is not None and hit.obj is box
     assert hit.distance == pytest.approx(1.5, abs=1e-4)
     assert hit.position == pytest.approx((1.5, 0, 0.5), abs=1e-4)
-    assert world.ray_cast((0, 0, 2), (5, 0, 2)) is None
-    down = world.ray_cast_batch([(0, 0, 1)], [(0, 0, -1)])[0]
+    assert world.view.ray_cast((0, 0, 2), (5, 0, 2)) is None
+    down = world.view.ray_cast_batch([(0, 0, 1)], [(0, 0, -1)])[0]
     assert down is not None and down.obj.name == "floor"
 
 
 def test_render_and_png(world: World, tmp_path: Path) -> None:
     world.add_box("red", (0.5, 0.5, 0.5), (2, 0, 0.25), color=(1, 0, 0, 1))
     camera = Pose.from_xyz_rpy((0, 0, 0.25), (-np.pi / 2, 0, -np.pi / 2))  # optical: z along +x
-    rgb = world.render(camera, 64, 48)
+    rgb = world.view.render(camera, 64, 48)
     assert rgb.shape == (48, 64, 3) and rgb.dtype == np.uint8
     centre = rgb[24, 32]
     assert centre[0] > 100 and centre[1] < 60 and centre[2] < 60
-    path = world.save_png(tmp_path / "scene.png", camera, 64, 48)
+    path = world.view.save_png(tmp_path / "scene.png", camera, 64, 48)
     data = path.read_bytes()
     assert data[:8] == b"\x89PNG\r\n\x1a\n"
     width, height = struct.unpack(">II", data[16:24])
@@ -96,4 +96,4 @@ def test_closed_world_says_so() -> None:
     world = World()
     world.close()
     with pytest.raises(WorldClosedError):
-        world.add_floor()
+        world.bodies.add_floor()

@@ -13,7 +13,7 @@ from robocram.world import World
 @pytest.fixture(scope="module")
 def world() -> Iterator[World]:
     with World() as w:
-        w.add_floor()
+        w.bodies.add_floor()
         pr2 = w.add_robot("pr2")
         w.set_joint_states(pr2, {"torso_lift_joint": 0.3, "head_tilt_joint": 0.4})
         w.add_box("table", (0.7, 1.5, 1.0), Pose((1.6, 0, 0.5)))
@@ -24,7 +24,7 @@ def world() -> Iterator[World]:
 
 @pytest.fixture
 def kb(world: World):  # noqa: ANN201  (the logic layer's KnowledgeBase)
-    with world.stored_state():
+    with world.snapshots.stored_state():
         yield world.kb
 
 

@@ -24,14 +24,14 @@ from robocram.world import (
 @pytest.fixture(scope="module")
 def world() -> Iterator[World]:
     with World() as w:
-        w.add_floor()
+        w.bodies.add_floor()
         w.add_robot("pr2")
         yield w
 
 
 @pytest.fixture
 def pr2(world: World) -> Iterator[RobotObject]:
-    with world.stored_state():
+    with world.snapshots.stored_state():
         yield world.robot("pr2")
 
 
@@ -40,7 +40,7 @@ def test_robot_is_indexed_by_name(world: World, pr2: RobotObject) -> None:
     assert pr2.link_index["base_footprint"] == -1
     assert "r_gripper_tool_frame" in world.link_names(pr2)
     assert len(world.joint_states(pr2)) == 30  # movable joints of the example-robot-data PR2
-    assert world.collisions(pr2) == []  # standing on the floor is not touching it
+    assert world.contacts.collisions(pr2) == []  # standing on the floor is not touching it
 
 
 def test_a_handle_carries_the_robot_looked_up_once(world: World, pr2: RobotObject) -> None:
@@ -121,32 +121,32 @@ def test_attached_object_follows_joints_base_and_simulation(world: World, pr2: R
     tool = world.link_pose(pr2, "r_gripper_tool_frame")
     cup = world.add_item("cup", "cup", tool * Pose((0.02, 0, 0)))
     world.attach(cup, pr2, "r_gripper_tool_frame")
-    assert world.attachments(pr2) == {"cup": "r_gripper_tool_frame"}
-    assert world.collisions(pr2) == [] and not world.contact(cup, pr2)
+    assert world.bodies.attachments(pr2) == {"cup": "r_gripper_tool_frame"}
+    assert world.contacts.collisions(pr2) == [] and not world.contacts.contact(cup, pr2)
     world.set_joint_states(pr2, {"r_shoulder_pan_joint": -0.8, "torso_lift_joint": 0.2})
     world.set_pose(pr2, Pose((1.0, 0.5, 0), (0, 0, math.sin(0.3), math.cos(0.3))))
-    world.simulate(0.5)
+    world.physics.simulate(0.5)
     expected = world.link_pose(pr2, "r_gripper_tool_frame") * Pose((0.02, 0, 0))
     assert world.pose(cup).distance_to(expected) < 1e-6
     assert world.pose(cup).angle_to(expected) < 1e-6
     world.detach(cup)
-    world.simulate(0.5)
+    world.physics.simulate(0.5)
     assert world.pose(cup).position[2] < expected.position[2] - 0.05  # now it falls
-    assert world.attachments(pr2) == {}
+    assert world.bodies.attachments(pr2) == {}
 
 
 @pytest.mark.parametrize("name", ["hsrb", "boxy", "quadrotor"])
 def test_other_builtin_robots_spawn_and_hold_still(name: str) -> None:
     with World() as world:
-        world.add_floor()
+        world.bodies.add_floor()
         robot = world.add_robot(name, Pose((0, 0, 1.0 if name == "quadrotor" else 0.0)))
         before = world.joint_states(robot)
-        world.simulate(0.2)
+        world.physics.simulate(0.2)
         assert world.joint_states(robot) == pytest.approx(before, abs=1e-9)
         assert world.pose(robot).position == pytest.approx((0, 0, world.pose(robot).position[2]))
-        assert not world.in_collision(robot)  # standing on the floor does not count
+        assert not world.contacts.in_collision(robot)  # standing on the floor does not count
         for cam in robot.description.cameras:
-            assert world.camera(robot, cam.name).pose.position[2] > 0.1
+            assert world.view.camera(robot, cam.name).pose.position[2] > 0.1
 
 
 def test_robots_start_with_every_joint_within_its_limits() -> None:
@@ -164,12 +164,12 @@ def test_a_joint_let_go_is_stiff_again_after_being_held() -> None:
     """Held joints simulate without their motors; one no longer held gets its motor back
     (without it the shoulder would fall ~0.6 rad in 0.3 s)."""
     with World() as world:
-        world.add_floor()
+        world.bodies.add_floor()
         pr2 = world.add_robot("pr2")
-        world.simulate(0.05)  # every joint held: their motors are off
+        world.physics.simulate(0.05)  # every joint held: their motors are off
         held = world.held_joints(pr2)
         del held["r_shoulder_lift_joint"]
         world.set_held_joints(pr2, held)
-        world.simulate(0.3)
+        world.physics.simulate(0.3)
         assert world.joint_states(pr2)["r_shoulder_lift_joint"] == pytest.approx(0.0, abs=0.01)
         assert world.joint_states(pr2)["l_shoulder_lift_joint"] == 0.0  # still held exactly

@@ -14,7 +14,7 @@ from robocram.world.settling import at_rest
 @pytest.fixture
 def world() -> Iterator[World]:
     w = World()
-    w.add_floor()
+    w.bodies.add_floor()
     w.add_box("resting", (0.1, 0.1, 0.1), Pose((0.0, 0.0, 0.05)), mass=0.1)
     w.add_box("far", (0.1, 0.1, 0.1), Pose((1.0, 0.0, 0.05)), mass=1.0)
     w.add_box("dropped", (0.1, 0.1, 0.1), Pose((0.08, 0.0, 0.3)), mass=1.0)  # on its edge
@@ -27,13 +27,13 @@ def test_the_object_moves_as_among_awake_bodies_until_it_rests(world: World) -> 
     try:
         for w in (world, awake):
             w.set_pose("dropped", Pose((0.5, 0.0, 0.055)))  # 5 mm above the floor
-        steps = world.settle("dropped", 1.0)
+        steps = world.physics.settle("dropped", 1.0)
         assert 4 < steps < 60  # it landed and rested well before the second was up
-        awake.simulate(steps * world.time_step)
+        awake.physics.simulate(steps * world.time_step)
         assert world.pose("dropped") == awake.pose("dropped")
         assert world.pose("far").distance_to(Pose((1.0, 0.0, 0.05))) < 1e-3
         before = world.pose("dropped")
-        world.simulate(2 * world.time_step)
+        world.physics.simulate(2 * world.time_step)
         assert at_rest(before, world.pose("dropped"))
     finally:
         awake.close()
@@ -42,8 +42,8 @@ def test_the_object_moves_as_among_awake_bodies_until_it_rests(world: World) -> 
 def test_a_sleeping_body_wakes_when_touched(world: World) -> None:
     awake = world.copy()
     try:
-        steps = world.settle("dropped", 0.5)
-        awake.simulate(steps * world.time_step)
+        steps = world.physics.settle("dropped", 0.5)
+        awake.physics.simulate(steps * world.time_step)
         for name in ("resting", "dropped"):
             assert world.pose(name).distance_to(awake.pose(name)) < 1e-3
         assert world.pose("resting").distance_to(Pose((0.0, 0.0, 0.05))) > 0.01  # pushed
@@ -53,15 +53,15 @@ def test_a_sleeping_body_wakes_when_touched(world: World) -> None:
 
 def test_the_bodies_are_awake_afterwards(world: World) -> None:
     world.add_box("hanging", (0.1, 0.1, 0.1), Pose((2.0, 0.0, 0.5)), mass=1.0)
-    world.settle("dropped", 0.05)
+    world.physics.settle("dropped", 0.05)
     z = world.pose("hanging").position[2]
     assert z > 0.499  # asleep in the air: it fell only before the first step's end
-    world.simulate(world.time_step)
+    world.physics.simulate(world.time_step)
     assert world.pose("hanging").position[2] < z  # it falls in the very next step
 
 
 def test_no_time_no_step(world: World) -> None:
-    assert world.settle("dropped", 0.0) == 0
+    assert world.physics.settle("dropped", 0.0) == 0
     assert world.pose("dropped") == Pose((0.08, 0.0, 0.3))
 
 
@@ -75,7 +75,7 @@ def test_a_stop_leaves_the_bodies_awake(world: World) -> None:
             raise RuntimeError("stopped")
 
     with pytest.raises(RuntimeError, match="stopped"):
-        world.settle("dropped", 1.0, stop_check=stop)
+        world.physics.settle("dropped", 1.0, stop_check=stop)
     z = world.pose("hanging").position[2]
-    world.simulate(world.time_step)
+    world.physics.simulate(world.time_step)
     assert world.pose("hanging").position[2] < z

@@ -33,7 +33,7 @@ def model() -> RobotModel:
 @pytest.fixture
 def world() -> Iterator[World]:
     with World() as w:
-        w.add_floor()
+        w.bodies.add_floor()
         w.add_urdf("kitchen", BIG, pose=AT)
         yield w
 
@@ -67,17 +67,17 @@ def test_contacts_rays_and_states_name_the_links_of_every_part(world: World) -> 
     world.set_joint_states("kitchen", {f"{DRAWER}_joint": 0.4})
     inside = world.link_pose("kitchen", DRAWER) * Pose((-0.26, 0.0, 0.1))
     world.add_item("bowl", "bowl", inside)
-    world.simulate(1.0)
-    assert {p.link_b for p in world.contact_points("bowl", "kitchen")} == {DRAWER}
+    world.physics.simulate(1.0)
+    assert {p.link_b for p in world.contacts.contact_points("bowl", "kitchen")} == {DRAWER}
     x, y, _ = world.pose("bowl").position
-    hit = world.ray_cast((x, y, 1.2), (x, y, 0.0))
+    hit = world.view.ray_cast((x, y, 1.2), (x, y, 0.0))
     assert hit is not None and hit.obj.name == "bowl"
     floor = world.link_pose("kitchen", DRAWER) * Pose((-0.05, 0.15, 0.0))
     fx, fy, _ = floor.position
-    hit = world.ray_cast((fx, fy, 1.2), (fx, fy, 0.0))
+    hit = world.view.ray_cast((fx, fy, 1.2), (fx, fy, 0.0))
     assert hit is not None and (hit.obj.name, hit.link) == ("kitchen", DRAWER)
     before = world.joint_states("kitchen")
-    with world.stored_state():
+    with world.snapshots.stored_state():
         world.set_joint_states("kitchen", {f"{DRAWER}_joint": 0.0})
     assert world.joint_states("kitchen") == before
     copy = world.copy()

@@ -13,7 +13,7 @@ from robocram.world import UnknownObjectError, World
 @pytest.fixture
 def world() -> Iterator[World]:
     with World() as w:
-        w.add_floor()
+        w.bodies.add_floor()
         w.add_box("table", (0.8, 0.8, 0.7), Pose((1, 0, 0.35)))
         w.add_item("bottle", "bottle", Pose((1, 0.1, 0.9)))
         w.add_item("mug", "mug", Pose((1, -0.2, 0.7)))
@@ -32,44 +32,44 @@ def _assert_same(a: dict[str, Pose], b: dict[str, Pose]) -> None:
 
 
 def test_stored_state_restores_poses_and_the_set_of_objects(world: World) -> None:
-    world.simulate(0.2)  # the bottle is falling: velocities matter too
+    world.physics.simulate(0.2)  # the bottle is falling: velocities matter too
     before = _snapshot(world)
     bottle = world.object("bottle")
-    with world.stored_state():
+    with world.snapshots.stored_state():
         world.add_item("plate", "plate", Pose((1, 0.2, 0.8)))
         world.remove("mug")
         world.set_pose("table", Pose((3, 3, 0.35)))
-        world.simulate(0.5)
+        world.physics.simulate(0.5)
     _assert_same(before, _snapshot(world))
     assert [o.name for o in world.objects()] == ["floor", "table", "bottle", "mug"]
     assert world.object("bottle") is bottle  # handles survive
     with pytest.raises(UnknownObjectError, match="did you mean 'plate'|known"):
         world.object("plate")
-    world.simulate(0.3)
+    world.physics.simulate(0.3)
     assert world.pose("mug").position[2] == pytest.approx(0.7, abs=0.01)
 
 
 def test_restore_replays_the_same_fall(world: World) -> None:
-    with world.stored_state():
-        world.simulate(0.3)
+    with world.snapshots.stored_state():
+        world.physics.simulate(0.3)
         first = world.pose("bottle")
-    world.simulate(0.3)
+    world.physics.simulate(0.3)
     assert world.pose("bottle").distance_to(first) < 1e-3
 
 
 def test_removed_object_comes_back_with_its_handle_and_body(world: World) -> None:
     mug = world.object("mug")
     place = world.pose(mug)
-    with world.stored_state():
+    with world.snapshots.stored_state():
         world.remove(mug)
         assert "mug" not in world
     assert world.object("mug") is mug
     assert world.pose(mug).distance_to(place) < 1e-6
-    assert world.ray_cast((1, -0.2, 2.0), (1, -0.2, 0.0)).obj is mug
+    assert world.view.ray_cast((1, -0.2, 2.0), (1, -0.2, 0.0)).obj is mug
 
 
 def test_copy_is_an_independent_world(world: World) -> None:
-    world.simulate(0.1)
+    world.physics.simulate(0.1)
     before = _snapshot(world)
     with world.copy() as other:
         assert other.client != world.client
@@ -77,7 +77,7 @@ def test_copy_is_an_independent_world(world: World) -> None:
         assert other.object("mug") is not world.object("mug")
         other.set_pose("mug", Pose((5, 5, 0.05)))
         other.remove("bottle")
-        other.simulate(0.5)
+        other.physics.simulate(0.5)
         assert "bottle" in world
     _assert_same(before, _snapshot(world))
 
@@ -89,7 +89,7 @@ def test_copy_keeps_robot_joints_and_attachments(world: World) -> None:
     world.attach("bottle", pr2, "r_gripper_tool_frame")
     with world.copy() as other:
         assert other.joint_states("pr2") == pytest.approx(world.joint_states(pr2), abs=1e-9)
-        assert other.attachments("pr2") == {"bottle": "r_gripper_tool_frame"}
+        assert other.bodies.attachments("pr2") == {"bottle": "r_gripper_tool_frame"}
         other.set_joint_states("pr2", {"torso_lift_joint": 0.0})
         tool = other.link_pose("pr2", "r_gripper_tool_frame")
         assert other.pose("bottle").distance_to(tool) < 1e-6

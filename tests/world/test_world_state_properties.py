@@ -42,7 +42,7 @@ operations = st.one_of(
 @pytest.fixture(scope="module")
 def world() -> Iterator[World]:
     with World() as w:
-        w.add_floor()
+        w.bodies.add_floor()
         w.add_robot("hsrb")
         w.add_item("mug", "mug", Pose((0.6, 0.0, 0.0)))
         w.add_box("tray", (0.3, 0.3, 0.02), Pose((0.6, 0.3, 0.5)), mass=0.5)
@@ -65,7 +65,7 @@ def _apply(world: World, op: Op) -> None:
     elif kind == "pose":
         world.set_pose(args[0], args[1])
     elif kind == "simulate":
-        world.simulate(args[0])
+        world.physics.simulate(args[0])
     elif kind == "attach":
         world.attach(args[0], args[1], world.link_names(args[1])[-1])
     elif kind == "detach":
@@ -113,7 +113,7 @@ def _assert_same(before: dict[str, Any], after: dict[str, Any]) -> None:
 @given(ops=st.lists(operations, min_size=1, max_size=8))
 def test_any_operations_inside_stored_state_are_undone(world: World, ops: list[Op]) -> None:
     before = _snapshot(world)
-    with world.stored_state():
+    with world.snapshots.stored_state():
         for op in ops:
             with contextlib.suppress(WorldError):  # refusals (unknown names, cycles) are typed
                 _apply(world, op)

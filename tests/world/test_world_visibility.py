@@ -18,7 +18,7 @@ CAMERA = Camera(LOOK_X, math.radians(60), math.radians(45))
 @pytest.fixture(scope="module")
 def world() -> Iterator[World]:
     with World() as w:
-        w.add_floor()
+        w.bodies.add_floor()
         w.add_box("target", (0.4, 0.4, 0.4), (3, 0, 0.5))
         w.add_box("wall", (0.05, 1.0, 1.0), (2, 5, 0.5))  # parked out of the way
         yield w
@@ -44,7 +44,7 @@ def _arrange(world: World, wall: tuple[float, ...] | None, target: tuple[float, 
 def test_fraction_matches_the_geometry(world: World, scene: str, method: str) -> None:
     wall, target, expected = SCENES[scene]
     _arrange(world, wall, target)
-    seen = world.visibility_from(CAMERA, "target", method)  # type: ignore[arg-type]
+    seen = world.view.visibility_from(CAMERA, "target", method)  # type: ignore[arg-type]
     assert seen.fraction == pytest.approx(expected, abs=0.08)
     hidden_by_wall = wall is not None
     assert seen.occluders == (("wall",) if hidden_by_wall else ())
@@ -53,35 +53,37 @@ def test_fraction_matches_the_geometry(world: World, scene: str, method: str) ->
 def test_ray_and_render_agree_on_every_scene(world: World) -> None:
     for wall, target, _ in SCENES.values():
         _arrange(world, wall, target)
-        ray = world.visibility_from(CAMERA, "target", "ray").fraction
-        render = world.visibility_from(CAMERA, "target", "render").fraction
+        ray = world.view.visibility_from(CAMERA, "target", "ray").fraction
+        render = world.view.visibility_from(CAMERA, "target", "render").fraction
         assert ray == pytest.approx(render, abs=0.06)
 
 
 def test_visible_from_uses_the_threshold(world: World) -> None:
     _arrange(world, (2, 0.5, 0.5), (3, 0, 0.5))
-    assert not world.visible_from(CAMERA, "target")
-    assert world.visible_from(CAMERA, "target", threshold=0.4)
-    assert world.visible_from(LOOK_X, "wall")  # a bare pose gets the default field of view
+    assert not world.view.visible_from(CAMERA, "target")
+    assert world.view.visible_from(CAMERA, "target", threshold=0.4)
+    assert world.view.visible_from(LOOK_X, "wall")  # a bare pose gets the default field of view
     before = world.pose("target")
-    world.visibility_from(CAMERA, "target", "render")
+    world.view.visibility_from(CAMERA, "target", "render")
     assert world.pose("target") == before  # the isolation trick puts it back exactly
     with pytest.raises(ValueError, match="'ray' or 'render'"):
-        world.visibility_from(CAMERA, "target", "magic")  # type: ignore[arg-type]
+        world.view.visibility_from(CAMERA, "target", "magic")  # type: ignore[arg-type]
 
 
 def test_robot_camera_sees_through_its_description() -> None:
     with World() as world:
-        world.add_floor()
+        world.bodies.add_floor()
         pr2 = world.add_robot("pr2")
         world.set_joint_states(pr2, {"head_tilt_joint": 0.3})
         world.add_box("shelf", (0.3, 0.3, 0.3), (2.5, 0, 0.6))
         world.add_box("screen", (0.05, 0.6, 0.6), (1.5, 0, 0.7))
-        camera = world.camera(pr2)
+        camera = world.view.camera(pr2)
         assert camera.horizontal_fov == pytest.approx(math.radians(90))
-        assert not world.visible(pr2, "shelf")
-        assert [o.name for o in world.occluding_objects(pr2, "shelf")] == ["screen"]
+        assert not world.view.visible(pr2, "shelf")
+        assert [o.name for o in world.view.occluding_objects(pr2, "shelf")] == ["screen"]
         world.remove("screen")
-        assert world.visible(pr2, "shelf") and world.visible(pr2, "shelf", method="render")
+        assert world.view.visible(pr2, "shelf") and world.view.visible(
+            pr2, "shelf", method="render"
+        )
         with pytest.raises(NoCameraError, match="no camera 'thermal'; known: 'wide_stereo'"):
-            world.camera(pr2, camera="thermal")
+            world.view.camera(pr2, camera="thermal")

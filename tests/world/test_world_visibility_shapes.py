@@ -27,11 +27,11 @@ CAMERAS = (
 @pytest.fixture(scope="module")
 def world() -> Iterator[World]:
     with World() as w:
-        w.add_floor()
+        w.bodies.add_floor()
         for index, kind in enumerate(BODIES):
             pose = Pose((10.0 * index, 0.0, 0.5), TILTED)
             if kind == "sphere":
-                w.add_sphere(kind, 0.12, pose)
+                w.bodies.add_sphere(kind, 0.12, pose)
             else:
                 w.add_item(kind, kind, pose)
         yield w
@@ -84,7 +84,7 @@ def test_a_ray_from_inside_meets_the_body_at_once(world: World) -> None:
 
 def test_unmodelled_shapes_fall_back_to_bullet() -> None:
     with World() as w:
-        floor = w.add_floor()
+        floor = w.bodies.add_floor()
         assert lone_body(w, floor) is None  # a plane: Bullet answers
         w.add_box("box", (0.2, 0.2, 0.2), (0, 0, 0.1))
         camera = Camera(Pose.from_xyz_rpy((0, 0, 1.0), (math.pi, 0, 0)))  # looking down
@@ -111,7 +111,7 @@ def test_an_articulated_body_is_placed_link_by_link() -> None:
     lone = lone_body(world, kitchen)
     assert lone is not None
     ours = lone.first_hit(starts, (ends - starts) / length[:, None], length)
-    hits = world.ray_cast_batch([tuple(s) for s in starts], [tuple(e) for e in ends])
+    hits = world.view.ray_cast_batch([tuple(s) for s in starts], [tuple(e) for e in ends])
     bullet = np.array([h.distance if h is not None else np.inf for h in hits])
     assert np.mean(np.isfinite(ours) == np.isfinite(bullet)) >= 0.98
     both = np.isfinite(ours) & np.isfinite(bullet)

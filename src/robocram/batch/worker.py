@@ -87,7 +87,9 @@ class VariantRunner:
         runs: list[int] = []  # the tracer's run ids, filled as the run starts
         try:
             scene = clock.after("scene", self._scene(variant.robot or self.config.robot))
-            with scene.world.stored_state():  # the next variant starts from the scene as built
+            with (
+                scene.world.snapshots.stored_state()
+            ):  # the next variant starts from the scene as built
                 clock.mark("restore")
                 look_target = clock.after("place", _place_objects(scene, variant))
                 _seed_everything(variant.seed)

@@ -38,7 +38,7 @@ def camera_description(world: World, robot: RobotObject, key: str = "visible_for
             "description; use a robot with a camera or another key",
             robot.name,
         )
-    return world.camera(robot)
+    return world.view.camera(robot)
 
 
 def aimed_camera(world: World, robot: RobotObject, target: Vector3) -> Camera:

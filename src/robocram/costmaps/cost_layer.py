@@ -82,7 +82,7 @@ class LocationQuery:
     def bounds(self, value: Value, key: str) -> tuple[Vector3, Vector3]:
         """World-aligned bounds [m] of the object or ``(object, link)`` ``value`` names."""
         obj, link = self.part(value, key)
-        return self.world.aabb(obj) if link is None else self.world.link_aabb(obj, link)
+        return self.world.aabb(obj) if link is None else self.world.contacts.link_aabb(obj, link)
 
     def point(self, value: Value, key: str) -> tuple[float, float, float]:
         """Map (x, y, z) [m] of a pose, a point, or the centre of an object's (link's) bounds."""

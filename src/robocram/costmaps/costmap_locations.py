@@ -256,7 +256,7 @@ def _culprits(query: LocationQuery) -> Culprits:
         if designator.get(key) is not None:
             spared.add(query.object(designator.get(key), key).name)
     if query.robot is not None:
-        spared |= {query.robot.name, *query.world.attachments(query.robot)}
+        spared |= {query.robot.name, *query.world.bodies.attachments(query.robot)}
     if designator.get("object") is not None:
         target = query.object(designator.get("object"), "object").name
     elif designator.get("target") is not None:
@@ -290,7 +290,7 @@ def _refuse_far_anchor(
     obstacles and the robot): a target 100 km away has no stand the robot can mean."""
     floors = [o.name for o in world.objects("floor")]
     here = [tuple(world.pose(robot).position[:2])] if robot is not None else []
-    area = PlanningArea.of(world.obstacle_boxes(floors), here)  # type: ignore[arg-type]
+    area = PlanningArea.of(world.contacts.obstacle_boxes(floors), here)  # type: ignore[arg-type]
     if area.contains(centre[0], centre[1]):
         return
     x, y, z = centre

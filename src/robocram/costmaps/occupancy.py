@@ -66,7 +66,7 @@ def footprint_extents(world: World, robot: RobotObject) -> tuple[float, float, f
     highs: list[tuple[float, float]] = []
     with placed_for_a_moment(world, robot, upright):
         for link in base_links(robot):
-            low, high = world.link_aabb(robot, link)
+            low, high = world.contacts.link_aabb(robot, link)
             if high[2] - low[2] <= 0 or high[0] - low[0] > 5:  # frames without geometry
                 continue
             lows.append((low[0] - x0, low[1] - y0))
@@ -137,14 +137,14 @@ def named_obstacle_boxes(
     world: World, robot: RobotObject | None, top: float
 ) -> tuple[list[tuple[str, Box]], bool]:
     """:func:`obstacle_boxes`, each box with the name of its object."""
-    carried = set(world.attachments(robot)) if robot is not None else set()
+    carried = set(world.bodies.attachments(robot)) if robot is not None else set()
     boxes: list[tuple[str, Box]] = []
     large = False
     for obj in world.objects():
         if obj is robot or obj.type == "floor" or obj.name in carried:
             continue
         links = world.link_names(obj) if len(obj.link_index) > 1 else []
-        parts = [world.link_aabb(obj, link) for link in links]
+        parts = [world.contacts.link_aabb(obj, link) for link in links]
         for low, high in parts or [world.aabb(obj)]:
             if not (high[2] > FLOOR_CLEARANCE and low[2] < top):
                 continue
@@ -167,7 +167,7 @@ def probed_free(
     xs, ys = x[cells], y[cells]
     starts = np.column_stack([xs, ys, np.full(len(xs), top)])
     ends = np.column_stack([xs, ys, np.full(len(xs), FLOOR_CLEARANCE)])
-    carried = [query.world.object(name) for name in query.world.attachments(robot)]
+    carried = [query.world.object(name) for name in query.world.bodies.attachments(robot)]
     with out_of_the_way(query.world, [robot, *carried]):
         bodies = first_hit_bodies(query.world, starts, ends)
     free = np.ones(query.grid.shape, dtype=bool)

@@ -31,7 +31,7 @@ def top_down(
     hfov = 2 * math.atan((x1 - x0) / 2 / VIEW_HEIGHT)
     vfov = 2 * math.atan((y1 - y0) / 2 / VIEW_HEIGHT)
     camera = Camera(Pose.from_matrix(m), hfov, vfov, near=1.0, far=2 * VIEW_HEIGHT)
-    return world.render(camera, width, height)
+    return world.view.render(camera, width, height)
 
 
 def draw_costmap(

@@ -13,8 +13,8 @@ BATCH = 16000
 def cast_rays(
     world: World, starts: Sequence[Vector3], ends: Sequence[Vector3]
 ) -> list[RayHit | None]:
-    """:meth:`World.ray_cast_batch` in chunks pybullet accepts."""
+    """``world.view.ray_cast_batch`` in chunks pybullet accepts."""
     hits: list[RayHit | None] = []
     for i in range(0, len(starts), BATCH):
-        hits.extend(world.ray_cast_batch(starts[i : i + BATCH], ends[i : i + BATCH]))
+        hits.extend(world.view.ray_cast_batch(starts[i : i + BATCH], ends[i : i + BATCH]))
     return hits

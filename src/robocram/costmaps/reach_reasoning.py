@@ -89,7 +89,7 @@ def blocking(
         with placed(world, body, moved):  # as the arm would adjust its base to grasp
             world.set_joint_states(body, reach.joint_positions)
             skip = [target, *world.objects(type="floor")]
-            return sorted(o.name for o in world.collisions(body, skip))
+            return sorted(o.name for o in world.contacts.collisions(body, skip))
     finally:
         world.set_joint_states(body, before)
 

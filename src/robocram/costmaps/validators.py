@@ -61,7 +61,7 @@ def parked(world: World, robot: RobotObject) -> Iterator[None]:
     an arm that holds something stays as it is (the plan carries it so: Boxy's bowl,
     carried above the table's height, hit the table at every stand a parked check passed)."""
     desc = robot.description
-    holding = set(world.attachments(robot).values())
+    holding = set(world.bodies.attachments(robot).values())
     parking = {
         joint: value
         for name, arm in desc.arms.items()
@@ -101,7 +101,7 @@ def robot_collision_free(query: LocationQuery, pose: Pose) -> bool:
         if not touched:
             touched = [
                 pair
-                for held in world.attachments(robot)
+                for held in world.bodies.attachments(robot)
                 for pair in link_contacts(world, world.object(held), ignore=floors)
             ]
     if touched:
@@ -115,7 +115,7 @@ def object_collision_free(query: LocationQuery, pose: Pose) -> bool:
     supports = [(k, query.designator.get(k)) for k in ("on", "in_")]
     ignore = [query.part(value, key)[0] for key, value in supports if value is not None]
     with placed(query.world, obj, pose):
-        return not query.world.collisions(obj, ignore)
+        return not query.world.contacts.collisions(obj, ignore)
 
 
 def visible(query: LocationQuery, pose: Pose) -> bool:
@@ -158,7 +158,7 @@ def point_blocker(world: World, camera: Camera, point: Vector3) -> RayHit | None
     if length <= camera.near:
         return None
     start = origin + ahead * (camera.near / length)
-    hit = world.ray_cast(tuple(start.tolist()), point)
+    hit = world.view.ray_cast(tuple(start.tolist()), point)
     return None if hit is None or math.dist(hit.position, point) < SEEN_WITHIN else hit
 
 

@@ -32,7 +32,7 @@ from robocram.world import Derived, ObstacleBoxes, PlanningArea, RobotHandle, Ve
 
 CELL = 0.01  # [m] obstacle grid cells
 SPACING = 0.02  # [m] robot sample squares: more than the 1 cm a dense check moves
-CONTACT = 0.002  # [m] nearer than this counts as touching, as in World.collisions
+CONTACT = 0.002  # [m] nearer than this counts as touching, as in World.contacts.collisions
 CHUNK = 128  # poses per batch of fast checks along a motion
 MARGIN = 0.5  # [m] room around the obstacles, start and goal for going around
 ESCAPE = 0.1  # [m] travel from the start during which its contacts are tolerated
@@ -107,7 +107,7 @@ class BaseCollisionChecker:
         carried = robot.holding()
         bins, footprint = _footprint(robot, carried, start)
         skip = {robot.name, *carried} | {o.name for o in world.objects("floor")}
-        obstacles = world.obstacle_boxes(skip)
+        obstacles = world.contacts.obstacle_boxes(skip)
         _refuse_far_goal(robot.name, start, goal_xy, obstacles)
         ends = np.array([start.position[:2], goal_xy], dtype=float)
         low = np.minimum(ends.min(axis=0), obstacles.low[:, :2].min(axis=0, initial=np.inf))
@@ -313,7 +313,7 @@ class BaseCollisionChecker:
         floors = [o.name for o in self.world.objects("floor")]
         for body in group:
             ignore = floors + [g for g in group if g != body]
-            for link, _, _, distance in self.world.link_distances(
+            for link, _, _, distance in self.world.contacts.link_distances(
                 body, ignore=ignore, distance=GAP_QUERY, obstacles=self._obstacles
             ):
                 if body != self.robot or link not in self.allowed_links:
@@ -337,7 +337,9 @@ class BaseCollisionChecker:
         """``(part of the robot, object/link it touches)`` pairs where the robot is now."""
         if self._obstacles is None:  # only the robot and what it carries move here
             floors = [o.name for o in self.world.objects("floor")]
-            self._obstacles = self.world.obstacle_boxes([self.robot, *self.carried, *floors])
+            self._obstacles = self.world.contacts.obstacle_boxes(
+                [self.robot, *self.carried, *floors]
+            )
         return _contacts_now(
             self.world, self.robot, self.carried, self.allowed_links, self._obstacles
         )
@@ -380,7 +382,7 @@ def _contacts_now(
     group = [robot, *carried]
     for body in group:
         ignore = floors + [g for g in group if g != body]
-        for link, other, other_link in world.link_pairs_in_contact(
+        for link, other, other_link in world.contacts.link_pairs_in_contact(
             body, ignore=ignore, distance=CONTACT, obstacles=obstacles
         ):
             if body == robot and link in allowed_links:
@@ -458,7 +460,11 @@ def _boxes_in_base(robot: RobotHandle, carried: tuple[str, ...], start: Pose) ->
     x, y, z = start.position
     world.set_pose(robot.name, Pose((x, y, z)))
     try:
-        found = [box for body in (robot.name, *carried) for box in world.link_aabbs(body).values()]
+        found = [
+            box
+            for body in (robot.name, *carried)
+            for box in world.contacts.link_aabbs(body).values()
+        ]
     finally:
         world.set_pose(robot.name, start)
     return [((lo[0] - x, lo[1] - y, lo[2] - z), (hi[0] - x, hi[1] - y, hi[2] - z))

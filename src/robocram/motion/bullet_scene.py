@@ -105,7 +105,7 @@ class BulletScene:
         """The others' bounds: inside a posed block only this robot's joints move, so they
         are read once per block."""
         if self._obstacles is None:
-            self._obstacles = self.world.obstacle_boxes([self.robot, *held, *anywhere])
+            self._obstacles = self.world.contacts.obstacle_boxes([self.robot, *held, *anywhere])
         return self._obstacles
 
     def _current(self) -> dict[str, float]:
@@ -152,7 +152,7 @@ class BulletScene:
         held by a moving link (they ride on it); what the other hand holds stays put."""
         moving = set(self.moving_links)
         handle = self.world.robot(self.robot)
-        held = self.world.attachments(self.robot)
+        held = self.world.bodies.attachments(self.robot)
         shaped = (
             link for link in self.moving_links
             if link not in self.allowed_links
@@ -174,7 +174,7 @@ class BulletScene:
         do: a folded arm's hand is near the shoulder's axis, not an arm's length away.
         """
         data = self.lever_data()
-        frames = np.array(self.world.link_frames(self.robot, data.frame_links))
+        frames = np.array(self.world.bodies.link_frames(self.robot, data.frame_links))
         joints = frames[data.joint_rows]
         axes = _rotated(joints[:, 3:], data.local_axes)  # (joints, 3)
         return data.levers(links, frames[:, :3], joints[:, :3], axes)
@@ -184,7 +184,7 @@ class BulletScene:
         whose joints change by ``delta``, as the robot is posed now (its frame's speed
         plus its angular speed times its radius; see :meth:`LeverData.speeds`)."""
         data = self.lever_data()
-        frames = np.array(self.world.link_frames(self.robot, data.frame_links))
+        frames = np.array(self.world.bodies.link_frames(self.robot, data.frame_links))
         joints = frames[data.joint_rows]
         axes = _rotated(joints[:, 3:], data.local_axes)  # (joints, 3)
         return data.speeds(links, frames[:, :3], joints[:, :3], axes, delta)
@@ -200,12 +200,12 @@ class BulletScene:
 
     def _clearances_now(self, reach: float) -> dict[str, float]:
         world = self.world
-        held = [world.object(name) for name in world.attachments(self.robot)]
+        held = [world.object(name) for name in world.bodies.attachments(self.robot)]
         anywhere = self.anywhere()
         gaps: dict[str, float] = {}
         links = [link for link in self.moving_links if link not in self.allowed_links]
         boxes = self._obstacles_now(held, anywhere)
-        for link, obj, other_link, gap in world.link_distances(
+        for link, obj, other_link, gap in world.contacts.link_distances(
             self.robot, [*held, *anywhere], reach, links=links, obstacles=boxes
         ):
             if self._counts(link, obj, other_link):
@@ -216,7 +216,9 @@ class BulletScene:
                 gaps[link] = min(gaps.get(link, reach), gap - self.distance)
         for item in held:
             skip = [world.robot(self.robot), *(h for h in held if h is not item), *anywhere]
-            for _, obj, other_link, gap in world.link_distances(item, skip, reach, obstacles=boxes):
+            for _, obj, other_link, gap in world.contacts.link_distances(
+                item, skip, reach, obstacles=boxes
+            ):
                 if (item.name, _named(world, obj, other_link)) not in self.allowed_pairs:
                     gap += self._tool_depth(item.name, obj, other_link)  # clear until deeper
                     gaps[item.name] = min(gaps.get(item.name, reach), gap - self.distance)
@@ -235,7 +237,7 @@ class BulletScene:
         bound = self._tool_depth(held.name, obj, other_link)
         if bound <= 0.0:
             return True
-        points = self.world.contact_points(held, obj, None, other_link or None, 0.0)
+        points = self.world.contacts.contact_points(held, obj, None, other_link or None, 0.0)
         return max((-p.distance for p in points), default=0.0) > bound
 
     def _counts(self, link: str, obj: WorldObject, other_link: str) -> bool:
@@ -272,11 +274,11 @@ class BulletScene:
     def colliding_now(self, first_only: bool = False) -> list[LinkPair]:
         """The colliding pairs of the robot (and what it holds) as it is in the world now."""
         world = self.world
-        held = [world.object(name) for name in world.attachments(self.robot)]
+        held = [world.object(name) for name in world.bodies.attachments(self.robot)]
         anywhere = self.anywhere()
         hits: dict[LinkPair, None] = {}
         boxes = self._obstacles_now(held, anywhere) if self._posed else None
-        for link, obj, other_link in world.link_pairs_in_contact(
+        for link, obj, other_link in world.contacts.link_pairs_in_contact(
             self.robot, [*held, *anywhere], self.distance, links=self.moving_links,
             obstacles=boxes,
         ):  # fmt: skip
@@ -288,7 +290,7 @@ class BulletScene:
                     return list(hits)
         for item in held:
             skip = [world.robot(self.robot), *(h for h in held if h is not item), *anywhere]
-            for _, obj, other_link in world.link_pairs_in_contact(
+            for _, obj, other_link in world.contacts.link_pairs_in_contact(
                 item, skip, self.distance, obstacles=boxes
             ):
                 pair = (item.name, _named(world, obj, other_link))

@@ -91,7 +91,7 @@ class SetupCache:
         it holds and what any link may touch (the floor, as ``judge.anywhere``; the
         answers are kept per rules and object)."""
         world = self.world
-        skip = {judge.robot, *world.attachments(judge.robot)}
+        skip = {judge.robot, *world.bodies.attachments(judge.robot)}
         rules = judge.rules
         anywhere = self._anywhere
         cache = obstacle_cache(world)
@@ -135,7 +135,7 @@ class SetupCache:
     ) -> NDArray[np.bool_]:
         """``[label, object]``: whether the judge's rules check them (asked once per
         judge's rules, held objects, labels and objects)."""
-        held = frozenset(self.world.attachments(judge.robot))
+        held = frozenset(self.world.bodies.attachments(judge.robot))
         objects = tuple((s.obj.name, s.obj.type) for s in obstacles.shapes)
         key = (judge.robot, judge.allowed_links, held, labels, objects)
         rules = partial(PairRules, judge.rules, held)
@@ -159,7 +159,7 @@ class SetupCache:
             if (index := handle.link_index.get(link, -2)) in asked
         )
         groups: list[Sequence[Part]] = [geometry.named_parts(labels)]
-        for obj, link in world.attachments(handle).items():
+        for obj, link in world.bodies.attachments(handle).items():
             groups.append(self._held_parts(geometry, handle, obj, link))
         key = tuple(id(group) for group in groups)
 
@@ -175,7 +175,7 @@ class SetupCache:
         object held the same way (a grip is kept from grasp to release)."""
         world = self.world
         obj = world.object(name)
-        attachment = world.attached_to(obj)
+        attachment = world.bodies.attached_to(obj)
         grip = _pose_key(attachment.link_T_obj) if attachment is not None else None
         kept = self._held.get((robot.name, name, link))
         if grip is not None and kept is not None and kept[0] is obj and kept[1] == grip:
@@ -183,7 +183,7 @@ class SetupCache:
         joint, frame = geometry.frame(link)
         link_T_map = world.link_pose(robot, link).inverse()
         parts = []
-        for shape in world.collision_shapes(obj):
+        for shape in world.contacts.collision_shapes(obj):
             placement = pin.SE3(frame) * pose_to_se3(link_T_map * shape.pose)
             for piece in coal_geometries(shape.kind, shape.extents, shape.mesh):
                 parts.append(part(name, joint, placement, piece))
@@ -201,8 +201,8 @@ def _setup_key(
     kin = geometry.kinematics
     held = []
     carriers = [kin.joint(j).pin_id for j in judge.joints]
-    for obj, link in sorted(world.attachments(judge.robot).items()):
-        attachment = world.attached_to(obj)
+    for obj, link in sorted(world.bodies.attachments(judge.robot).items()):
+        attachment = world.bodies.attached_to(obj)
         grip = _pose_key(attachment.link_T_obj) if attachment is not None else None
         held.append((obj, link, grip))
         carriers.append(geometry.frame(link)[0])

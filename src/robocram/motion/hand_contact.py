@@ -57,7 +57,7 @@ def contact_depth(world: World, robot: ObjectRef, link: str, named: str) -> floa
     """How deep [m] robot ``link`` is in ``named`` (an object or ``object/link``) as they
     stand: 0 when they only touch or are apart."""
     name, _, other_link = named.partition("/")
-    points = world.contact_points(robot, name, link, other_link or None, 0.0)
+    points = world.contacts.contact_points(robot, name, link, other_link or None, 0.0)
     return max((-p.distance for p in points), default=0.0)
 
 
@@ -72,7 +72,9 @@ def hand_at_start(world: World, robot: ObjectRef, hand: HandContact | None) -> H
     deepest = 0.0
     body = world.object(robot)
     links = [link for link in hand.links if link in body.link_index]
-    for link, other, other_link, gap in world.link_distances(robot, distance=0.0, links=links):
+    for link, other, other_link, gap in world.contacts.link_distances(
+        robot, distance=0.0, links=links
+    ):
         named = f"{other.name}/{other_link}" if len(other.link_index) > 1 else other.name
         if gap < 0.0 and hand.covers(link, named):
             deepest = max(deepest, -gap)

@@ -69,7 +69,7 @@ def hand_breach(
             )
             for c in carried:
                 world.set_joint_states(c.obj, {c.joint: c.at(time / duration if duration else 1.0)})
-            for link, obj, other_link, gap in world.link_distances(
+            for link, obj, other_link, gap in world.contacts.link_distances(
                 robot.name, distance=0.0, links=links
             ):
                 if gap >= 0.0 or rules.allows(link, Other(obj.name, obj.type)):
@@ -88,7 +88,7 @@ def hand_breach(
 def _hand_reach(robot: RobotHandle, links: list[str], base: Pose) -> float:
     """[m] the farthest a point of the hand lies from the base's vertical axis."""
     world = robot.world
-    radii = world.link_radii(robot.name)
+    radii = world.contacts.link_radii(robot.name)
     far = 0.0
     for link in links:
         x, y, _ = world.link_pose(robot.name, link).position

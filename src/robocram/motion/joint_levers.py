@@ -55,7 +55,7 @@ class LeverData:
         return cls(
             frame_links,
             {link: k for k, link in enumerate(moving)},
-            dict(world.attachments(robot)),
+            dict(world.bodies.attachments(robot)),
             np.array([at[link] for link in moving], dtype=np.intp),
             np.array([at[c] for c in children], dtype=np.intp),
             np.array([model.joints[j].axis for j in joints], dtype=float).reshape(-1, 3),

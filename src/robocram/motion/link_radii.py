@@ -1,6 +1,6 @@
 """How far a robot link's collision shapes reach from the link's own frame, exactly.
 
-The world's radii (:meth:`World.link_radii`) come from world-aligned bounds read at load
+The world's radii (``world.contacts.link_radii``) come from world-aligned bounds read at load
 and may be 1.7 times the true reach of a link turned across them (a PR2's shoulder pan
 link: 0.58 m against 0.27 m). A walk that steps by levers (joint axis to frame plus the
 radius) takes steps in proportion: here the radius is read off the shapes themselves, as

@@ -68,7 +68,7 @@ class ObstacleShapes:
         many = len(obj.link_index) > 1
         geometries, placements, labels = [], [], []
         centres, halves = [], []
-        for shape in world.collision_shapes(obj):
+        for shape in world.contacts.collision_shapes(obj):
             index = obj.link_index.get(shape.link)
             link = names.get(index, shape.link) if index is not None else shape.link
             label = f"{obj.name}/{link}" if many else obj.name
@@ -166,7 +166,7 @@ class ObstacleCache:
         entry = self._entries.get(obj.name)
         if entry is not None and entry[0] is obj and self._read.get(obj.name) == stamp:
             return entry[2]  # nothing wrote to it since it was last seen: no compare
-        state = np.array(world.body_state(obj), dtype=float)
+        state = np.array(world.snapshots.body_state(obj), dtype=float)
         if entry is not None and entry[0] is obj and _near(entry[1], state):
             self._read[obj.name] = stamp
             return entry[2]

@@ -70,7 +70,7 @@ class SceneSnapshot:
             for name, value in world.joint_states(handle).items()
             if model.joints[name].mimic is None
         )
-        held_names = set(world.attachments(handle))
+        held_names = set(world.bodies.attachments(handle))
         return cls(
             handle.name, desc, tuple(joints), values,
             tuple(_held_shapes(robot, desc)),
@@ -114,10 +114,10 @@ def _label(world: World, obj: str, link: str) -> str:
 def _held_shapes(robot: RobotHandle, desc: LoadedDescription) -> list[PlacedShape]:
     world = robot.world
     placed = []
-    for obj, link in world.attachments(robot.name).items():
+    for obj, link in world.bodies.attachments(robot.name).items():
         link_T_map = world.link_pose(robot.name, link).inverse()
         kind = world.object(obj).type
-        for shape in world.collision_shapes(obj):
+        for shape in world.contacts.collision_shapes(obj):
             placed.append(
                 PlacedShape(
                     shape, link_T_map * shape.pose, _label(world, obj, shape.link), kind,
@@ -134,7 +134,7 @@ def _static_shapes(robot: RobotHandle, held: set[str]) -> list[PlacedShape]:
     for obj in world.objects():
         if obj.name == robot.name or obj.name in held:
             continue
-        for shape in world.collision_shapes(obj):
+        for shape in world.contacts.collision_shapes(obj):
             label = _label(world, obj.name, shape.link)
             placed.append(PlacedShape(shape, root_T_map * shape.pose, label, obj.type))
     return placed

@@ -192,7 +192,7 @@ def _always_touching(
             if not survivors:
                 break
             world.set_joint_states(robot.name, _sample(model, movable, rng), carry=False)
-            touching = world.self_distances(robot.name, survivors, 0.0)
+            touching = world.contacts.self_distances(robot.name, survivors, 0.0)
             survivors = [p for k, p in enumerate(survivors) if touching[k] <= 0.0]
     finally:
         world.set_joint_states(robot.name, before, carry=False)
@@ -211,7 +211,7 @@ def _never_near(robot: RobotHandle, candidates: list[tuple[str, str]]) -> list[t
     try:
         for _ in range(NEVER_SAMPLES):
             world.set_joint_states(robot.name, _sample(model, movable, rng), carry=False)
-            gaps = world.self_distances(robot.name, far, NEVER_GAP)
+            gaps = world.contacts.self_distances(robot.name, far, NEVER_GAP)
             far = [p for p, gap in zip(far, gaps.tolist(), strict=True) if gap >= NEVER_GAP]
     finally:
         world.set_joint_states(robot.name, before, carry=False)
@@ -241,7 +241,7 @@ def _touching_at_rest(
             for j in grippers:
                 values[j] = _clamped(model, j, getattr(model.joints[j], end) or 0.0)
             world.set_joint_states(robot.name, values, carry=False)
-            touching = world.self_distances(robot.name, candidates, 0.0)
+            touching = world.contacts.self_distances(robot.name, candidates, 0.0)
             for pair, gap in zip(candidates, touching.tolist(), strict=True):
                 if gap <= 0.0:
                     found[pair] = max(found.get(pair, 0.0), -gap)

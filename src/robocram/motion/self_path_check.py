@@ -120,7 +120,9 @@ class SelfPathCheck:
             if self.distances.touching(found):  # PyBullet's own word, on the posed robot
                 posing.pose(q)
                 found = float(
-                    self.world.self_distances(self.robot, self.pairs, REACH, lambda _: (k,))[k]
+                    self.world.contacts.self_distances(
+                        self.robot, self.pairs, REACH, lambda _: (k,)
+                    )[k]
                 )
             gap = found - float(floors[k])
             gaps[k] = gap
@@ -179,7 +181,7 @@ def _floors(robot: RobotHandle, pairs: tuple[LinkPair, ...], bounds: FloatArray)
     floors = np.full(len(pairs), -DEEPEN)
     near = np.flatnonzero(~(bounds > 0.0)).tolist()
     if near:
-        measured = world.self_distances(robot.name, [pairs[k] for k in near], 0.0)
+        measured = world.contacts.self_distances(robot.name, [pairs[k] for k in near], 0.0)
         floors[near] = np.minimum(measured, 0.0) - DEEPEN
     return floors
 

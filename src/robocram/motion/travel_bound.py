@@ -78,7 +78,7 @@ class TravelBound:
                 f"{max_joint_step} rad"
             )
         model = robot.description.model
-        radius = link_radii(robot) if held else world.link_radii(robot.name)
+        radius = link_radii(robot) if held else world.contacts.link_radii(robot.name)
         children = model.derived(_children)
         lever = []
         per_link: dict[str, FloatArray] = {}
@@ -95,7 +95,7 @@ class TravelBound:
                     row = per_link[link] = np.zeros(len(joints))
                 row[i] = value
             lever.append(max(reach.values(), default=0.0))
-        carriers = dict(world.attachments(robot.name)) if held else {}
+        carriers = dict(world.bodies.attachments(robot.name)) if held else {}
         return cls(
             tuple(joints), np.array(lever), max_link_travel, max_joint_step, per_link, carriers,
             mimicked,
@@ -149,8 +149,8 @@ def _reaches(
 def link_radii(robot: RobotHandle) -> dict[str, float]:
     """Per link: a radius about its frame holding its shapes (and what it holds now)."""
     world = robot.world
-    radii = world.link_radii(robot.name)
-    for obj, link in world.attachments(robot.name).items():
+    radii = world.contacts.link_radii(robot.name)
+    for obj, link in world.bodies.attachments(robot.name).items():
         origin = np.array(world.link_pose(robot.name, link).position)
         radii[link] = max(radii.get(link, 0.0), _corner_distance(origin, world.aabb(obj)))
     return radii

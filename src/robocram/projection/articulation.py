@@ -85,9 +85,9 @@ def resting_in(robot: ProjectedRobot, part: str, link: str) -> list[str]:
     world = robot.world
     out = []
     for obj in world.objects():
-        if obj.is_static or obj.name in (part, robot.name) or world.attached_to(obj):
+        if obj.is_static or obj.name in (part, robot.name) or world.bodies.attached_to(obj):
             continue
-        if world.contact_points(obj, part, link_b=link, distance=RESTING):
+        if world.contacts.contact_points(obj, part, link_b=link, distance=RESTING):
             out.append(obj.name)
     return out
 

@@ -54,16 +54,16 @@ def fly(robot: ProjectedRobot, target: PoseStamped | PoseLike) -> Pose:
     goal = robot.in_map(target)
     a, b = _values(start), _values(goal)
     b[3:] = a[3:] + np.array([math.remainder(float(d), math.tau) for d in b[3:] - a[3:]])
-    radius = max(world.link_radii(robot.name).values(), default=0.0)
+    radius = max(world.contacts.link_radii(robot.name).values(), default=0.0)
     travel = float(np.linalg.norm(b[:3] - a[:3])) + radius * float(np.abs(b[3:] - a[3:]).sum())
     length = float(np.linalg.norm(b[:3] - a[:3]))
     steps = max(1, math.ceil(travel / PATH_STEP))
-    at_start = {o.name for o in world.collisions(robot.name)}
+    at_start = {o.name for o in world.contacts.collisions(robot.name)}
     try:
         for k in range(1, steps + 1):
             values = a + (b - a) * (k / steps)
             world.set_pose(robot.name, _pose(values))
-            hit = {o.name for o in world.collisions(robot.name)}
+            hit = {o.name for o in world.contacts.collisions(robot.name)}
             if k * length / steps <= TAKE_OFF and k < steps:
                 hit -= at_start
             if hit:
@@ -94,7 +94,7 @@ def sense_distance(robot: ProjectedRobot, direction: Sequence[float]) -> float:
     origin = np.asarray(base.position)
     start = origin
     for _ in range(16):  # rays starting inside the robot's own shapes re-start past them
-        hit = robot.world.ray_cast(tuple(start), tuple(origin + MAX_RANGE * d_map))
+        hit = robot.world.view.ray_cast(tuple(start), tuple(origin + MAX_RANGE * d_map))
         if hit is None:
             return math.inf
         if hit.obj.name != robot.name:

@@ -195,7 +195,7 @@ def _arm_links(spec: ArmDescription) -> set[str]:
 def release(robot: ProjectedRobot, arm: str) -> list[str]:
     """Detach every object held by ``arm``'s hand; return their names."""
     links = _arm_links(robot.arm(arm))
-    held = [o for o, link in robot.world.attachments(robot.name).items() if link in links]
+    held = [o for o, link in robot.world.bodies.attachments(robot.name).items() if link in links]
     for name in held:
         robot.world.detach(name)
     return held
@@ -205,7 +205,7 @@ def _squeezed(
     robot: ProjectedRobot, links: set[str], obj: WorldObject, reach: float = TOUCH
 ) -> bool:
     """Whether ``links`` touch ``obj`` (come within ``reach`` [m]) from opposing sides."""
-    points = robot.world.contact_points(robot.name, obj, distance=reach)
+    points = robot.world.contacts.contact_points(robot.name, obj, distance=reach)
     normals = [p.normal_on_b for p in points if p.link_a in links and p.distance <= reach]
     return any(
         sum(a * b for a, b in zip(n, m, strict=True)) < OPPOSED
@@ -217,7 +217,7 @@ def _squeezed(
 def _depths(robot: ProjectedRobot, links: set[str], obj: WorldObject) -> dict[str, float]:
     """How deep [m] each of ``links`` is in ``obj`` now (those touching it)."""
     found: dict[str, float] = {}
-    for p in robot.world.contact_points(robot.name, obj, distance=0.0):
+    for p in robot.world.contacts.contact_points(robot.name, obj, distance=0.0):
         if p.link_a in links:
             found[p.link_a] = max(found.get(p.link_a, 0.0), -p.distance)
     return found
@@ -276,7 +276,7 @@ def _centring_shift(
     the gripper stands at ``fraction`` (one side in, the other ``gap`` away): along the
     first side's contact normal (away from the object), by half the misfit when the other
     side closes too, by the gap when it stays (a fixed jaw). None: no other side in sight."""
-    points = robot.world.contact_points(robot.name, obj, distance=CENTRING_REACH)
+    points = robot.world.contacts.contact_points(robot.name, obj, distance=CENTRING_REACH)
     mine = [p for p in points if p.link_a in links]
     first = min(mine, key=lambda p: p.distance, default=None)
     if first is None:
@@ -312,10 +312,10 @@ def _moved(a: Vector3, b: Vector3) -> float:
 def _near_hand(robot: ProjectedRobot, links: set[str]) -> list[WorldObject]:
     """Movable objects, not held, whose bounding box comes within :data:`NEAR` of the hand."""
     world = robot.world
-    boxes = [world.link_aabb(robot.name, link) for link in links]
+    boxes = [world.contacts.link_aabb(robot.name, link) for link in links]
     low = [min(b[0][k] for b in boxes) - NEAR for k in range(3)]
     high = [max(b[1][k] for b in boxes) + NEAR for k in range(3)]
-    held = set(world.attachments(robot.name))
+    held = set(world.bodies.attachments(robot.name))
     found = []
     for obj in world.objects():
         if obj.name == robot.name or obj.is_static or obj.name in held:
@@ -424,6 +424,6 @@ def _touching(robot: ProjectedRobot, links: set[str], obj: WorldObject) -> set[L
     several = len(obj.link_index) > 1
     return {
         (p.link_a, f"{obj.name}/{p.link_b}" if several else obj.name)
-        for p in robot.world.contact_points(robot.name, obj, distance=TOUCH)
+        for p in robot.world.contacts.contact_points(robot.name, obj, distance=TOUCH)
         if p.link_a in links and p.distance <= TOUCH
     }

@@ -56,11 +56,11 @@ class IKStart:
         world = robot.world
         model = robot.description.model
         body = world.object(robot.name)
-        state = world.body_state(body)  # its joints last, in joint_states' order
+        state = world.snapshots.body_state(body)  # its joints last, in joint_states' order
         names = body.movable_joints
         joints = dict(zip(names, state[len(state) - len(names) :], strict=True))
         held = world.held_joints(body)
-        carried = set(world.attachments(body))
+        carried = set(world.bodies.attachments(body))
         ignore = [o for o in world.objects() if o.name in carried or o.type == "floor"]
         carries_more = any(a.robot in carried for a in world.all_attachments())
         return cls(
@@ -78,7 +78,10 @@ class IKStart:
     def holds(self) -> bool:
         """Whether the robot stands as it did at the start (base and joints), or where the
         last candidate left it, to be put back (:meth:`put_back`)."""
-        return bool(self._dirty) or self.robot.world.body_state(self.robot.name) == self.state
+        return (
+            bool(self._dirty)
+            or self.robot.world.snapshots.body_state(self.robot.name) == self.state
+        )
 
     def colliding(
         self,

@@ -120,7 +120,7 @@ def _contacts(world: World, moving: list[str], ignore: list[WorldObject]) -> set
     """``(robot link or carried object, body)`` pairs in contact, ``ignore`` left out."""
     found = set()
     for name in moving:
-        for link, other, _ in world.link_pairs_in_contact(name, ignore):
+        for link, other, _ in world.contacts.link_pairs_in_contact(name, ignore):
             found.add((link if name == moving[0] else name, other.name))
     return found
 

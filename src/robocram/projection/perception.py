@@ -2,7 +2,7 @@
 
 An object designator's ``type`` and ``name`` properties filter the world's objects (the
 robot and floors are never perceived); the robot's camera must see at least 90 % of an
-object (``World.visible``). The answer is a new object designator carrying the object's
+object (``World.view.visible``). The answer is a new object designator carrying the object's
 name, type and pose in the robot's base frame, equated with the one asked for; with
 ``all_.objects(...)`` every visible match is returned, nearest first, as fresh designators
 (they describe different things, so they are not equated with the question).
@@ -43,7 +43,7 @@ def _matches(designator: ObjectDesignator, obj: WorldObject) -> bool:
 def visible_matches(robot: ProjectedRobot, designator: ObjectDesignator) -> list[WorldObject]:
     """The objects fitting ``designator`` that the robot sees, nearest to the camera first."""
     world = robot.world
-    camera = world.camera(robot.name).pose
+    camera = world.view.camera(robot.name).pose
     found = [
         o
         for o in world.objects()
@@ -52,7 +52,7 @@ def visible_matches(robot: ProjectedRobot, designator: ObjectDesignator) -> list
     seen = []
     for obj in found:
         checkpoint()  # a stopped task ends here, between one object's rays and the next's
-        if world.visible(robot.name, obj):
+        if world.view.visible(robot.name, obj):
             seen.append(obj)
     return sorted(seen, key=lambda o: world.pose(o).distance_to(camera))
 
@@ -80,7 +80,7 @@ def own_link_blocking(
     inside each fitting object's bounds; None when no ray meets the robot before the object.
     """
     world = robot.world
-    cam = world.camera(robot.name)
+    cam = world.view.camera(robot.name)
     camera = cam.pose.position
     hits: Counter[tuple[str, str]] = Counter()
     for obj in world.objects():
@@ -98,7 +98,7 @@ def own_link_blocking(
             for sx, sy, sz in product(BLOCK_SAMPLES, repeat=3)
         ]
         starts = [_near(camera, point, cam.near) for point in points]
-        for hit in world.ray_cast_batch(starts, points):
+        for hit in world.view.ray_cast_batch(starts, points):
             if hit is not None and hit.obj.name == robot.name and hit.link is not None:
                 hits[(hit.link, obj.name)] += 1
     return hits.most_common(1)[0][0] if hits else None
@@ -112,14 +112,14 @@ def hidden_by(
     (a counter's edge) is no occluder to move. None when no such object is in view. Only
     asked when nothing fitting was seen."""
     world = robot.world
-    cam = world.camera(robot.name)
+    cam = world.view.camera(robot.name)
     for obj in world.objects():
         if obj.name == robot.name or obj.type == "floor" or not _matches(designator, obj):
             continue
         low, high = world.aabb(obj)
         if not _in_view(cam, [(lo + hi) / 2 for lo, hi in zip(low, high, strict=True)]):
             continue
-        names = world.visibility_from(cam, obj).occluders
+        names = world.view.visibility_from(cam, obj).occluders
         others = [world.object(n) for n in names if n not in (robot.name, obj.name)]
         movable = tuple(o.name for o in others if o.type != "environment")
         if movable:

@@ -131,7 +131,7 @@ def pour(
     seed = robot.motion.seed
     names = _fill(world, source, count, seed)
     with kinematic(world, source):  # the hand moves it; the grains do not push it
-        world.simulate(SETTLE_BEFORE, stop_check=checkpoint)
+        world.physics.simulate(SETTLE_BEFORE, stop_check=checkpoint)
         _follow_with_physics(robot, planned.motion.trajectory)
         _settle(world, names)
     landed = _landed(world, target, names)

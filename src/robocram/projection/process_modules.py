@@ -112,7 +112,7 @@ class PtuPM(ProjectionProcessModule):
         if d.shape != (3,) or np.linalg.norm(d) < 1e-9:
             raise ProjectionError(f"looking direction must be a non-zero 3-D vector, got {vector}")
         base = self.robot.base_pose()
-        camera = self.robot.world.camera(self.robot.name).pose.position
+        camera = self.robot.world.view.camera(self.robot.name).pose.position
         rotated = base.matrix()[:3, :3] @ (d / np.linalg.norm(d))
         far = np.asarray(camera) + DIRECTION_REACH * rotated
         return (float(far[0]), float(far[1]), float(far[2]))

@@ -4,7 +4,7 @@ CRAM projects a plan to choose between plans and parameters before the robot com
 one: which grasp, which placing location, which of two ways to clear a table. Here
 ``prospect(robot, plan)`` runs ``plan`` on the projected robot exactly as
 ``simulated_robot`` would, then puts the world back (objects, poses, velocities, joints,
-attachments; :meth:`~robocram.world.World.stored_state`) and returns a :class:`Prospect`:
+attachments; ``world.snapshots.stored_state``) and returns a :class:`Prospect`:
 the outcome, the task tree, the trajectories that would be executed and where every
 object would end up.
 
@@ -72,7 +72,7 @@ def prospect(
     found: list[JointTrajectory] = []
 
     def projected() -> Prospect[T]:
-        with world.stored_state(), trajectory_listener(found.append):
+        with world.snapshots.stored_state(), trajectory_listener(found.append):
             result: T | None = None
             failure: PlanFailure | None = None
             with simulated_robot(world, robot.name, name, locations, motion) as run:

@@ -49,7 +49,7 @@ def tool_grip(
     point = Pose() if tool_point is None else Pose.coerce(tool_point)
     if tool is None:
         return ToolGrip(arm, None, point)
-    held = world.attachments(robot.name)
+    held = world.bodies.attachments(robot.name)
     hand = {*spec.hand_links, *spec.gripper_links, spec.tool_frame, spec.end_effector_link}
     if held.get(tool) not in hand:
         raise ProjectionError(

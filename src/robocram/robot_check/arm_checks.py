@@ -58,7 +58,7 @@ def parking(robot: ProjectedRobot, key: str, arm: ArmDescription) -> CheckResult
     low = [
         p.link_a
         for floor in floors
-        for p in robot.world.contact_points(robot.name, floor)
+        for p in robot.world.contacts.contact_points(robot.name, floor)
         if p.link_a in arm.links or p.link_a in arm.hand_links
     ]
     if low:
@@ -73,7 +73,7 @@ def _self_contacts(robot: ProjectedRobot, arm: ArmDescription) -> list[str]:
     world = robot.world
     mine = {*arm.links, *arm.hand_links, *arm.gripper_links}
     pairs = [p for p in SelfCollisionMatrix.of(robot.handle).checked if mine & set(p)]
-    gaps = world.self_distances(robot.name, pairs, 0.0)
+    gaps = world.contacts.self_distances(robot.name, pairs, 0.0)
     return [
         f"{a} in {b} ({-gap * 1000:.1f} mm)"
         for (a, b), gap in zip(pairs, gaps.tolist(), strict=True)

@@ -27,7 +27,7 @@ def check_robot(desc: RobotDescription) -> ReportCard:
         return ReportCard(desc.name, tuple(results))
     world = World()
     try:
-        world.add_floor()
+        world.bodies.add_floor()
         robot = ProjectedRobot.of(world, world.add_robot(loaded).name)
         results += _drive(robot)
     finally:

@@ -51,7 +51,7 @@ class WorldMirror:
             for obj in world.objects()
             if not isinstance(obj, RobotObject)
             and not obj.is_static
-            and world.attached_to(obj) is None
+            and world.bodies.attached_to(obj) is None
         ]
 
     def sync(
@@ -77,7 +77,7 @@ class WorldMirror:
             heard = environment_joints.get(topic, {})
             have = world.joint_states(environment)
             world.set_joint_states(environment, {j: v for j, v in heard.items() if j in have})
-        held = set(world.attachments(name))
+        held = set(world.bodies.attachments(name))
         for obj, pose in object_poses.items():
             if obj in world and obj not in held:
                 world.set_pose(obj, pose)
@@ -108,7 +108,9 @@ class WorldMirror:
     def _held_by(self, arm: str) -> list[str]:
         spec = self.desc.arms[arm]
         links = {spec.end_effector_link, spec.tool_frame, *spec.gripper_links, *spec.hand_links}
-        return [o for o, link in self.world.attachments(self.desc.name).items() if link in links]
+        return [
+            o for o, link in self.world.bodies.attachments(self.desc.name).items() if link in links
+        ]
 
     def _distance(self, obj: str, point: np.ndarray) -> float:
         low, high = self.world.aabb(obj)

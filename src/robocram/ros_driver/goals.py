@@ -269,7 +269,7 @@ def point_head(goal: RosMessage, ctx: GoalContext) -> Outcome:
             look_at(robot, target.position)
         except PlanFailure as failure:
             return False, {}, str(failure)
-        camera = robot.world.camera(robot.name).pose.matrix()
+        camera = robot.world.view.camera(robot.name).pose.matrix()
     wanted = np.subtract(target.position, camera[:3, 3])
     cos = float(camera[:3, 2] @ wanted) / max(float(np.linalg.norm(wanted)), 1e-9)
     error = math.acos(max(-1.0, min(1.0, cos)))  # [rad]

@@ -83,7 +83,7 @@ def check_environment(desc: EnvironmentDescription) -> EnvironmentCard:
     """Load ``desc`` alone in a world and drive each container and surface once."""
     world = World()
     try:
-        world.add_floor()
+        world.bodies.add_floor()
         loadable = loadable_urdf(desc.urdf, desc.stand_ins, package_paths=desc.package_paths)
         world.add_urdf(desc.name, loadable, type="environment")
         lines = [_check_container(world, desc.name, c) for c in desc.containers]
@@ -116,13 +116,13 @@ def _check_container(world: World, env: str, c: ContainerDescription) -> CheckLi
 
 def _check_surface(world: World, env: str, s: SurfaceDescription) -> CheckLine:
     part = f"surface {s.link}"
-    low, high = world.link_aabb(env, s.link)
+    low, high = world.contacts.link_aabb(env, s.link)
     x, y = (low[0] + high[0]) / 2, (low[1] + high[1]) / 2
     item = world.add_item(f"test-{s.link}", TEST_ITEM, Pose((x, y, s.height + 0.05)))
     try:
-        world.simulate(1.0)
+        world.physics.simulate(1.0)
         bottom = world.aabb(item)[0][2]
-        on = sorted({p.link_b for p in world.contact_points(item, env) if p.link_b})
+        on = sorted({p.link_b for p in world.contacts.contact_points(item, env) if p.link_b})
     finally:
         world.remove(item)
     if s.link not in on or abs(bottom - s.height) > HEIGHT_TOLERANCE:

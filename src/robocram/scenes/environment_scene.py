@@ -74,7 +74,7 @@ def environment_scene(
     """
     desc = load_description(robot)
     world = world if world is not None else World()
-    world.add_floor()
+    world.bodies.add_floor()
     name = environment.name
     loadable = loadable_urdf(
         environment.urdf, environment.stand_ins, package_paths=environment.package_paths
@@ -125,9 +125,9 @@ def support_top(
     """Height [m] of the first surface of ``link`` below ``spot`` (a ray cast down from
     over the link, or from ``below`` [m] over ``spot``, which is at the link frame's height)."""
     x, y, z = spot.position
-    _, high = world.link_aabb(environment, link)
+    _, high = world.contacts.link_aabb(environment, link)
     start = high[2] + 0.01 if below is None else z + below
-    hit = world.ray_cast((x, y, start), (x, y, start - 1.01))
+    hit = world.view.ray_cast((x, y, start), (x, y, start - 1.01))
     if hit is None or hit.link != link:
         raise SceneError(
             f"no surface of {link!r} under ({x:.2f}, {y:.2f}) m; put the item elsewhere on it"

@@ -179,7 +179,7 @@ def _footprint_front(world: World, robot: str, below: float) -> float:
     desc = world.robot(robot).description
     front = 0.0
     for link in sorted(root_fixed_links(desc) & set(world.link_names(robot))):
-        low, high = world.link_aabb(robot, link)
+        low, high = world.contacts.link_aabb(robot, link)
         if low[0] <= high[0] and low[2] < below:
             front = max(front, high[0])
     return front

@@ -43,7 +43,9 @@ def stand_on_a_pedestal(world: World, robot: str, rise: float) -> str:
     desc = world.robot(robot).description
     links = sorted(root_fixed_links(desc) & set(world.link_names(robot)))
     boxes = [
-        box for box in (world.link_aabb(robot, link) for link in links) if box[0][0] <= box[1][0]
+        box
+        for box in (world.contacts.link_aabb(robot, link) for link in links)
+        if box[0][0] <= box[1][0]
     ]
     low = [min(b[0][k] for b in boxes or [world.aabb(robot)]) for k in range(2)]
     high = [max(b[1][k] for b in boxes or [world.aabb(robot)]) for k in range(2)]

@@ -50,7 +50,7 @@ def tabletop_scene(robot: str | RobotDescription, world: World | None = None) ->
     """
     desc = load_description(robot)
     world = world if world is not None else World()
-    world.add_floor()
+    world.bodies.add_floor()
     turned = quat.from_euler(0.0, 0.0, facing_yaw(desc))
     name = world.add_robot(desc, pose=Pose((0.0, 0.0, 0.0), turned)).name
     park_arms(world, name)

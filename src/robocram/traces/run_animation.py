@@ -91,10 +91,10 @@ def animate_run(
             first = frame.time if first is None else first
             last, shown = frame.time, frame.time >= due
             if shown:
-                images.append(world.render(aim(), width, height))
+                images.append(world.view.render(aim(), width, height))
                 due = frame.time + step * (1.0 - 1e-9)
         if first is not None and not shown:  # the run's end is always in the picture
-            images.append(world.render(aim(), width, height))
+            images.append(world.view.render(aim(), width, height))
     if not images:
         raise TraceError(f"run {run} has no world states nor trajectories to animate")
     path = _write_gif(Path(out), images)

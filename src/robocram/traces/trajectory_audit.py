@@ -121,7 +121,7 @@ def riding(world: World, carried: tuple[CarriedJoint, ...]) -> Iterator[None]:
                 continue
             parts = raw.collision_links(obj)
             near = (raw.closest(obj, part, body, link, RESTING) for part in parts)
-            if world.attached_to(obj) is None and any(gap is not None for gap in near):
+            if world.bodies.attached_to(obj) is None and any(gap is not None for gap in near):
                 world.attach(obj, body, link)
                 riders.append(obj.name)
     try:

@@ -49,7 +49,7 @@ class StoredWorldState:
         (None: none kept, the world is taken to hold the scene's bodies only).
         """
         objects = world.objects()
-        attached = (world.attached_to(obj) for obj in objects)
+        attached = (world.bodies.attached_to(obj) for obj in objects)
         added = (
             {}
             if scene is None
@@ -75,7 +75,7 @@ class StoredWorldState:
         """
         self._add_and_remove(world, scene)
         for obj in world.objects():
-            if world.attached_to(obj) is not None:
+            if world.bodies.attached_to(obj) is not None:
                 world.detach(obj)
         for name, pose in self.poses.items():
             world.set_pose(name, pose)

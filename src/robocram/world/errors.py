@@ -82,7 +82,7 @@ class NoCameraError(WorldError):
         else:
             msg = (
                 f"robot {robot!r} has no camera in its description; "
-                "use World.visible_from(Camera(pose, ...), obj) instead"
+                "use world.view.visible_from(Camera(pose, ...), obj) instead"
             )
         super().__init__(msg)
 

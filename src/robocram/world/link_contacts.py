@@ -4,7 +4,7 @@ Asking Bullet for the closest points of a robot and a whole kitchen (hundreds of
 costs ~2 ms; a location validator asks that for every candidate stand, and an IK collision
 check for every converged configuration. Here each link's bounds (grown by the contact
 distance) ask the broadphase which links of other bodies overlap them, and only those
-pairs get closest points. What counts as touching is what :mod:`~robocram.world.contacts`
+pairs get closest points. What counts as touching is what :mod:`~robocram.world.closest_points`
 says: the body's carried objects and itself never do.
 """
 
@@ -15,7 +15,7 @@ from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 import numpy as np
 from numpy.typing import NDArray
 
-from robocram.world.contacts import CONTACT_DISTANCE, _carried_with, _link_names
+from robocram.world.closest_points import CONTACT_DISTANCE, _carried_with, _link_names
 from robocram.world.obstacle_boxes import ObstacleBoxes
 from robocram.world.pybullet_backend import pybullet
 from robocram.world.world_core import WorldCore

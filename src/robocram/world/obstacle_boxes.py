@@ -16,7 +16,7 @@ from functools import partial
 import numpy as np
 from numpy.typing import NDArray
 
-from robocram.world.contacts import _link_names
+from robocram.world.closest_points import _link_names
 from robocram.world.derived import Derived
 from robocram.world.pybullet_backend import pybullet
 from robocram.world.versions import Stamp, Versions

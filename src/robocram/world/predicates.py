@@ -83,12 +83,12 @@ def _objects(world: PredicateWorld) -> dict[str, Implementation]:
 
     def simulate(w: object, seconds: Value) -> Solutions:
         if _ours(world, w):
-            world.simulate(float(seconds), stop_check=current_stop_check())  # a task's stop
+            world.physics.simulate(float(seconds), stop_check=current_stop_check())  # a task's stop
             yield (world, seconds)
 
     def settle(w: object, name: Value, seconds: Value) -> Solutions:
         if _ours(world, w) and not isinstance(name, Var):
-            world.settle(name, float(seconds), stop_check=current_stop_check())
+            world.physics.settle(name, float(seconds), stop_check=current_stop_check())
             yield (world, name, seconds)
 
     return {
@@ -149,7 +149,7 @@ def _attachments(world: PredicateWorld) -> dict[str, Implementation]:
         if not _ours(world, w):
             return
         for name in _names(world, rob):
-            for carried, at in world.attachments(name).items():
+            for carried, at in world.bodies.attachments(name).items():
                 yield (world, name, at, carried)
 
     def attach(w: object, obj: Value, rob: Value, link: Value) -> Solutions:
@@ -168,10 +168,10 @@ def _attachments(world: PredicateWorld) -> dict[str, Implementation]:
 def _reasoning(world: PredicateWorld) -> dict[str, Implementation]:
     def stable(w: object, obj: object) -> Solutions:
         if _ours(world, w):
-            yield from ((world, n) for n in _names(world, obj) if world.stable(n))
+            yield from ((world, n) for n in _names(world, obj) if world.physics.stable(n))
 
     def stable_all(w: object) -> Solutions:
-        if _ours(world, w) and world.stable():
+        if _ours(world, w) and world.physics.stable():
             yield (world,)
 
     def visible(w: object, rob: object, obj: object) -> Solutions:
@@ -179,7 +179,7 @@ def _reasoning(world: PredicateWorld) -> dict[str, Implementation]:
             return
         for name in _names(world, rob, robots_only=True):
             for seen in _names(world, obj):
-                if seen != name and world.visible(name, seen):
+                if seen != name and world.view.visible(name, seen):
                     yield (world, name, seen)
 
     def occluding_objects(w: object, rob: object, obj: object, occluders: object) -> Solutions:
@@ -188,14 +188,14 @@ def _reasoning(world: PredicateWorld) -> dict[str, Implementation]:
         for name in _names(world, rob, robots_only=True):
             for target in _names(world, obj):
                 if target != name:
-                    found = [o.name for o in world.occluding_objects(name, target)]
+                    found = [o.name for o in world.view.occluding_objects(name, target)]
                     yield (world, name, target, found)
 
     return {
-        "contact/3": _relation(world, world.contact),
-        "supported_by/3": _relation(world, world.supported_by),
-        "above/3": _relation(world, world.above),
-        "below/3": _relation(world, world.below),
+        "contact/3": _relation(world, world.contacts.contact),
+        "supported_by/3": _relation(world, world.physics.supported_by),
+        "above/3": _relation(world, world.physics.above),
+        "below/3": _relation(world, world.physics.below),
         "stable/2": stable,
         "stable/1": stable_all,
         "visible/3": visible,

@@ -101,7 +101,7 @@ class RobotHandle:
         found: list[str] = []
         frontier = [self.name]
         while frontier:
-            held = list(self.world.attachments(frontier.pop()))
+            held = list(self.world.bodies.attachments(frontier.pop()))
             found += held
             frontier += held
         return tuple(found)

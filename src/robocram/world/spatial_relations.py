@@ -7,9 +7,9 @@ for a while moves nothing by more than 5 mm or 0.15 rad.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
-from robocram.world.contacts import contact
+from robocram.world.closest_points import contact
 from robocram.world.visibility import aabb
 from robocram.world.world_core import WorldCore
 from robocram.world.world_object import RobotObject, WorldObject
@@ -45,9 +45,13 @@ def supported_by(world: WorldCore, a: WorldObject, b: WorldObject) -> bool:
 
 
 def stable(
-    world: WorldCore, objects: Sequence[WorldObject] | None = None, seconds: float = STABLE_SECONDS
+    world: WorldCore,
+    simulate: Callable[[float], object],
+    objects: Sequence[WorldObject] | None = None,
+    seconds: float = STABLE_SECONDS,
 ) -> bool:
-    """Whether ``objects`` (default: every free movable object) stay put when simulated.
+    """Whether ``objects`` (default: every free movable object) stay put when ``simulate``
+    runs the world on.
 
     Runs the simulation in place and restores the world exactly afterwards, which is the
     same as simulating a copy but avoids re-creating the bodies.
@@ -63,7 +67,7 @@ def stable(
     before = {o.name: world.pose(o) for o in watched}
     state = WorldState.capture(world)
     try:
-        world.simulate(seconds)
+        simulate(seconds)
         after = {o.name: world.pose(o) for o in watched}
     finally:
         state.restore(world)

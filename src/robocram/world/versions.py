@@ -120,13 +120,20 @@ class BodyStamps:
     states: tuple[tuple[float, ...], ...]  # per body, its state then (body_state)
 
 
+class _StateReader(Protocol):
+    """The part of a world that reads a body's state (``world.snapshots``)."""
+
+    def body_state(self, obj: str) -> tuple[float, ...]: ...
+
+
 class _StampedWorld(Protocol):
     """What :class:`BodyStamps` reads of a world."""
 
     @property
     def versions(self) -> Versions: ...
 
-    def body_state(self, obj: str) -> tuple[float, ...]: ...
+    @property
+    def snapshots(self) -> _StateReader: ...
 
 
 MOVED = 1e-6  # [m | rad] a body's state changed by less (Bullet's round trips, creep): still
@@ -139,7 +146,7 @@ def body_stamps(world: _StampedWorld, names: Iterable[str]) -> BodyStamps:
     return BodyStamps(
         versions.tick,
         tuple((n, versions.body(n)) for n in names),
-        tuple(world.body_state(n) for n in names),
+        tuple(world.snapshots.body_state(n) for n in names),
     )
 
 
@@ -155,7 +162,7 @@ def changed_bodies(world: _StampedWorld, then: BodyStamps, names: Iterable[str])
         old = kept.get(name)
         if old is not None and old[0] == versions.body(name):
             continue
-        if old is not None and _same_state(old[1], world.body_state(name)):
+        if old is not None and _same_state(old[1], world.snapshots.body_state(name)):
             continue
         found.append(name)
     return found

@@ -36,7 +36,7 @@ class Framing:
     target: tuple[float, float, float]
 
     def pose(self) -> Pose:
-        """The camera's optical-frame pose, as :meth:`World.render` takes it."""
+        """The camera's optical-frame pose, as ``world.view.render`` takes it."""
         return Pose(self.eye, optical_look_at(self.eye, self.target))
 
 

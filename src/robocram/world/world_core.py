@@ -1,18 +1,21 @@
 """The physics client of a world and its bodies: creation, removal, poses and joints.
 
-:class:`WorldCore` owns one pybullet client and the name-to-handle table. The public
-:class:`~robocram.world.world.World` adds reasoning, visibility and the knowledge base.
+:class:`WorldCore` owns one pybullet client and the tables of bodies, attachments and
+held joints, and is the only class that writes them. The public
+:class:`~robocram.world.world.World` adds the knowledge base and its parts (``bodies``,
+``contacts``, ``physics``, ``snapshots``, ``view``), which use the core's public methods.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from collections.abc import Iterable, Iterator, Mapping
 
 from robocram.robots import RobotModel, mimic_followers
 from robocram.tf import Pose, PoseLike
 from robocram.world.attachment import Attachment, check_acyclic
 from robocram.world.body_loading import create_body
+from robocram.world.body_spec import BodySpec
 from robocram.world.derived import Derived
 from robocram.world.errors import (
     DuplicateObjectError,
@@ -27,8 +30,6 @@ from robocram.world.errors import (
 from robocram.world.held_motors import HeldMotors
 from robocram.world.joint_state import ClampedJoint, JointLimits, clamp_values
 from robocram.world.pybullet_backend import pybullet
-from robocram.world.settling import LOOK, at_rest
-from robocram.world.sleeping import asleep
 from robocram.world.versions import Versions
 from robocram.world.world_object import RobotObject, WorldObject
 
@@ -41,7 +42,7 @@ class WorldCore:
     """One pybullet client, its named bodies, attachments and the joints robots hold."""
 
     def __init__(self, gui: bool = False, gravity: float = -9.81, time_step: float = 1 / 240):
-        _check_time_step(time_step)
+        check_time_step(time_step)
         if not math.isfinite(gravity):
             raise WorldValueError(f"gravity must be a finite number [m/s^2], got {gravity!r}")
         try:
@@ -94,6 +95,14 @@ class WorldCore:
             raise WorldClosedError()
         return self.client
 
+    def add_object(
+        self, name: str, type: str, spec: BodySpec, pose: PoseLike = ORIGIN
+    ) -> WorldObject:  # noqa: A002
+        """Add a body made from ``spec``, called ``name``, of type ``type``, at ``pose``."""
+        handle = WorldObject(name, type, -1, spec)
+        self.insert(handle, pose)
+        return handle
+
     def insert(self, handle: WorldObject, pose: PoseLike = ORIGIN) -> WorldObject:
         """Create ``handle``'s body from its spec, index it, place it at ``pose``; return it.
 
@@ -135,7 +144,14 @@ class WorldCore:
         if handle.joint_index:
             self._holds[handle.name] = {}
         self.set_pose(handle, pose)
+        self._inserted(handle)
         return handle
+
+    def _inserted(self, handle: WorldObject) -> None:
+        """Called once ``handle``'s body is in the world (the facade adds a robot's facts)."""
+
+    def _removed(self, handle: WorldObject) -> None:
+        """Called once ``handle``'s body left the world (the facade drops a robot's facts)."""
 
     def object(self, name: ObjectRef) -> WorldObject:
         """The object called ``name`` (a handle is checked to still belong to this world)."""
@@ -187,6 +203,7 @@ class WorldCore:
         self._part_bases.pop(handle.name, None)
         self._holds.pop(handle.name, None)
         self._versions.removed(handle.name)
+        self._removed(handle)
 
     def pose(self, obj: ObjectRef) -> Pose:
         """Pose of the object's root link frame in the world."""
@@ -224,20 +241,6 @@ class WorldCore:
             pybullet.resetBaseVelocity(body, (0, 0, 0), (0, 0, 0), physicsClientId=cid)
         self._versions.moved(handle.name)
 
-    def body_state(self, obj: ObjectRef) -> tuple[float, ...]:
-        """Numbers that change whenever ``obj``'s shapes move: its body id, base pose and
-        joint positions as the backend holds them, read in two calls (a cache of derived
-        geometry compares them, cheaper than :meth:`pose` and :meth:`joint_states`)."""
-        handle = self.object(obj)
-        cid = self.physics_client()
-        position, orientation = pybullet.getBasePositionAndOrientation(
-            handle.body_id, physicsClientId=cid
-        )
-        joints: tuple[float, ...] = ()
-        if handle.movable_joints:
-            joints = tuple(self.joint_states(handle).values())
-        return (float(handle.body_id), *position, *orientation, *joints)
-
     def link_pose(self, obj: ObjectRef, link: str) -> Pose:
         """Pose of ``link`` (a URDF link or a frame added in code) in the world."""
         handle = self.object(obj)
@@ -253,37 +256,12 @@ class WorldCore:
         )
         return Pose(state[4], state[5]) * offset
 
-    def link_frames(self, obj: ObjectRef, links: Sequence[str]) -> list[tuple[float, ...]]:
-        """Per link of ``links``: its frame in the world as ``(x, y, z, qx, qy, qz, qw)``,
-        read from the backend in one call (checks read tens of links per configuration)."""
-        handle = self.object(obj)
-        index = handle.link_index
-        try:
-            indices = [index[link] for link in links]
-        except KeyError:
-            indices = [self._link_index(handle, link) for link in links]  # names the culprit
-        if (
-            min(indices, default=0) >= 0
-            and not handle.parts
-            and not handle.link_offset.keys() & set(links)
-        ):
-            states = pybullet.getLinkStates(
-                handle.body_id, indices, computeForwardKinematics=True,
-                physicsClientId=self.physics_client(),
-            )  # fmt: skip
-            return [(*st[4], *st[5]) for st in states]
-        poses = [self.link_pose(handle, link) for link in links]  # the root or added frames
-        return [(*p.position, *p.orientation) for p in poses]
-
     def link_names(self, obj: ObjectRef) -> list[str]:
         """Names of all links and frames of ``obj``, the root first."""
         return list(self.object(obj).link_index)
 
     def _link_index(self, handle: WorldObject, link: str) -> int:
-        index = handle.link_index.get(link)
-        if index is None:
-            raise UnknownLinkError(handle.name, link, handle.link_index)
-        return index
+        return link_slot(handle, link)
 
     def joint_limits(self, obj: ObjectRef, joint: str) -> JointLimits:
         """Position limits [rad | m] of a movable joint; continuous ones are -inf/inf."""
@@ -417,15 +395,6 @@ class WorldCore:
                 self._movable_index(handle, name)  # raises the typed error naming it
         self._holds[handle.name] = {handle.joint_index[n]: float(v) for n, v in values.items()}
 
-    def attachments(self, robot: ObjectRef) -> dict[str, str]:
-        """Objects attached to ``robot``: object name -> link name."""
-        name = self.object(robot).name
-        return {a.obj: a.link for a in self._attachments.values() if a.robot == name}
-
-    def attached_to(self, obj: ObjectRef) -> Attachment | None:
-        """The attachment holding ``obj``, if any."""
-        return self._attachments.get(self.object(obj).name)
-
     def _follow(self, carrier: str) -> None:
         """Re-place the objects attached to ``carrier`` (and theirs, recursively)."""
         for att in list(self._attachments.values()):
@@ -461,63 +430,6 @@ class WorldCore:
             [o.name for o in objects if not o.is_static or o.parts],
             [o.name for o in objects if o.movable_joints],
         )
-
-    def simulate(self, seconds: float, stop_check: Callable[[], None] | None = None) -> int:
-        """Run physics for ``seconds`` [s] of simulated time; return the number of steps.
-
-        ``stop_check`` (e.g. a task's ``checkpoint``) is called before every step; it ends
-        the simulation by raising, leaving the world after the last whole step.
-        """
-        steps = self._steps(seconds)
-        for _ in range(steps):
-            if stop_check is not None:
-                stop_check()
-            self.step()
-        return steps
-
-    def settle(
-        self, obj: ObjectRef, seconds: float, stop_check: Callable[[], None] | None = None
-    ) -> int:
-        """Run physics until ``obj`` rests or ``seconds`` [s] have passed; return the steps.
-
-        ``obj`` is looked at every :data:`~robocram.world.settling.LOOK` and rests when it
-        stayed still between two looks (:func:`~robocram.world.settling.at_rest`). The
-        other bodies sleep meanwhile unless something moving touches them (a fifth of
-        the cost of a kitchen step; see :mod:`~robocram.world.sleeping`); woken, they
-        take one more step with ``obj``, which leaves them as awake as before. A stop
-        (``stop_check`` raising) takes that step too, then passes on.
-        """
-        handle = self.object(obj)
-        steps = self._steps(seconds)
-        if steps == 0:
-            return 0
-        look = max(1, round(LOOK / self.time_step))
-        cid = self.physics_client()
-        others = [b for o in self._objects.values() if o is not handle for b in o.bodies]
-        done = 0
-        try:
-            with asleep(others, cid):
-                before = self.pose(handle)
-                while done < steps:
-                    for _ in range(min(look, steps - done)):
-                        if stop_check is not None:
-                            stop_check()
-                        self.step()
-                        done += 1
-                    now = self.pose(handle)
-                    if at_rest(before, now):
-                        break
-                    before = now
-        finally:
-            self.step()  # Bullet marks the woken bodies awake at the end of a step
-        return done + 1
-
-    def _steps(self, seconds: float) -> int:
-        """Physics steps in ``seconds`` [s] of simulated time."""
-        if not (seconds >= 0 and math.isfinite(seconds)):
-            raise WorldValueError(f"simulate needs a finite duration >= 0 [s], got {seconds!r}")
-        _check_time_step(self.time_step)
-        return round(seconds / self.time_step)
 
 
 def _index_body(handle: WorldObject, body: int, cid: int) -> None:
@@ -579,7 +491,15 @@ def _structure(versions: Versions, key: None) -> int:
     return versions.structure
 
 
-def _check_time_step(time_step: float) -> None:
+def link_slot(handle: WorldObject, link: str) -> int:
+    """The slot of ``handle``'s link (or added frame) called ``link``; unknown: an error."""
+    index = handle.link_index.get(link)
+    if index is None:
+        raise UnknownLinkError(handle.name, link, handle.link_index)
+    return index
+
+
+def check_time_step(time_step: float) -> None:
     if not (time_step > 0 and math.isfinite(time_step)):
         raise WorldValueError(
             f"time_step must be a finite number of seconds > 0 (e.g. 1/240), got {time_step!r}"
