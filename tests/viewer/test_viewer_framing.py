@@ -3,6 +3,7 @@ marked, and a caption that grows never moves the slider (issue 41, the viewer it
 
 from __future__ import annotations
 
+import time
 from typing import Any
 
 import numpy as np
@@ -11,7 +12,7 @@ from robocram.scenes import kitchen_scene
 from robocram.traces import TraceDatabase
 from robocram.viewer import Viewer, replay_viewer
 from robocram.viewer.headless_browser import HeadlessChromium
-from robocram.viewer.page_picture import open_viewer
+from robocram.viewer.page_picture import DISMISS_NOTICES, open_viewer
 from robocram.viewer.task_panel import CURRENT
 from tests.pinhole import box_corners, view_offsets
 from tests.viewer.conftest import free_port
@@ -21,6 +22,7 @@ SLIDER_TOP = """(() => {
     .find(e => e.childElementCount === 0 && e.textContent.trim() === 'World state');
   return label ? label.getBoundingClientRect().top : -1;
 })()"""
+SETTLE_LOOKS = 150  # 0.2 s apart: a guard against a page that never settles
 LONG = "a caption long enough to wrap onto several lines " * 6
 
 
@@ -63,14 +65,28 @@ def test_replay_marks_the_task_whose_world_is_shown(live_run: Any) -> None:
         assert panel.labels() == live_run.viewer.tasks.labels()  # the mark is not a label
 
 
+def _settled_top(browser: HeadlessChromium) -> float:
+    """The slider label's top [px] once the page stops moving (notices dismissed): a page
+    still loading, or showing a connection notice, moves everything below."""
+    last = -1.0
+    for _ in range(SETTLE_LOOKS):
+        browser.evaluate(DISMISS_NOTICES)
+        top = float(browser.evaluate(SLIDER_TOP))
+        if top > 0 and top == last:
+            return top
+        last = top
+        time.sleep(0.2)
+    raise AssertionError(f"the slider did not settle in {SETTLE_LOOKS} looks")
+
+
 def test_a_long_caption_leaves_the_slider_where_it_was(live_run: Any) -> None:
     viewer = live_run.viewer
     with HeadlessChromium(1024, 640) as browser:
         open_viewer(browser, viewer, "World state")
         viewer.caption.content = "one line"
         browser.wait_for_text("one line")
-        before = browser.evaluate(SLIDER_TOP)
+        before = _settled_top(browser)
         viewer.caption.content = LONG
         browser.wait_for_text("several lines")
-        after = browser.evaluate(SLIDER_TOP)
-    assert before > 0 and after == before
+        after = _settled_top(browser)
+    assert after == before
