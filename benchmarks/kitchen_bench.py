@@ -106,7 +106,7 @@ def drawer_times(runs: int) -> tuple[float, float]:
         for _ in range(runs):
             act = an.action(type="opening", object=f"{DRAWER}_handle", distance=0.3)
             opening.append(_timed(lambda act=act: perform(act)))
-            shut = an.action(type="closing", object=DRAWER, arm="right")
+            shut = an.action(type="closing", object=DRAWER)
             closing.append(_timed(lambda shut=shut: perform(shut)))
     world.close()
     return statistics.median(opening), statistics.median(closing)

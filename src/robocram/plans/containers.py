@@ -19,6 +19,8 @@ from robocram.logic import current_kb
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.robot_facts import current_robot, robot_arms
 
+VERBS = {"opening": "open", "closing": "close"}  # an action and what its arm does
+
 
 @dataclass(frozen=True)
 class Container:
@@ -66,7 +68,7 @@ def move_container(name: str, goal: float, arm: str | None, action: str) -> floa
         except EnvironmentManipulationImpossible as failure:
             failures.append(failure)
     raise EnvironmentManipulationImpossible(
-        f"no arm of {arms} could {action[:-3]} {part.link!r}: "
+        f"no arm of {arms} could {VERBS.get(action, action)} {part.link!r}: "
         + "; ".join(str(f) for f in failures),
         environment_part=part.link,
         action=action,
