@@ -90,6 +90,7 @@ def test_the_model_keeps_its_kinematics_and_its_cache() -> None:
 
 
 def test_what_a_model_keeps_goes_with_it() -> None:
+    MODELS.clear()  # a model of its own: an earlier test's world may still hold the shared one
     pr2 = load_description("pr2")
     assert solve_ik(pr2, "right", TARGET).success
     model = weakref.ref(pr2.model)
