@@ -18,6 +18,7 @@ from robocram.execution.failures import (
     TorsoPathBlocked,
 )
 from robocram.motion import plan_arm_motion, plan_base_path
+from robocram.projection import navigation
 from robocram.projection.path_watch import planned_against
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.projection.trajectory_follower import follow
@@ -123,3 +124,25 @@ def test_a_board_put_over_the_head_after_planning_stops_the_torso_as_a_torso_fai
     assert caught.value.colliding_pairs[0][1] == "board"
     assert _gap(world, "pr2", "board") > 0.0  # stopped short of it
     assert start < world.joint_states("pr2")["torso_lift_joint"] < goal
+
+
+def test_a_drive_is_watched_from_when_it_was_planned(
+    robot: ProjectedRobot, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A body added while the planner worked (as another task may do) stops the drive: the
+    mark is taken before planning, not when following starts."""
+    world = robot.world
+    start = world.pose("pr2")
+    goal = Pose((start.position[0] + 1.0, start.position[1], 0.0), start.orientation)
+
+    def planned_then_crate_added(*args: object, **kwargs: object) -> object:
+        path = plan_base_path(*args, **kwargs)  # the real planner, on the world as it was
+        y = start.position[1]
+        world.add_box("crate", (0.2, 0.2, 0.6), Pose((start.position[0] + 0.7, y, 0.3)))
+        return path
+
+    monkeypatch.setattr(navigation, "plan_base_path", planned_then_crate_added)
+    with pytest.raises(NavigationPathBlocked, match="'crate'"):
+        navigation.drive(robot, goal)
+    assert _gap(world, "pr2", "crate") > 0.0  # it stopped short of the crate
+    assert world.pose("pr2").position[0] > start.position[0] + 0.05  # after driving on

@@ -48,6 +48,7 @@ from robocram.projection.collision_mode import (
 )
 from robocram.projection.errors import unknown_name
 from robocram.projection.navigation import drive, moved_base, unchecked_base_motion
+from robocram.projection.path_watch import planned_against
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.projection.trajectory_follower import follow
 from robocram.tf import Pose, PoseLike, PoseStamped
@@ -140,6 +141,7 @@ def move_tcp(
     spec = robot.arm(arm)
     target_in_map = robot.in_map(target)
     target_in_base = robot.base_pose().inverse() * target_in_map
+    checked = planned_against(robot)  # what IK and the motion are planned against
     result = _solve(
         robot, arm, target_in_base, collision_mode, random_seed, move_base, max_restarts,
         base_travel, touching,
@@ -155,7 +157,7 @@ def move_tcp(
             return ensure_reached(robot.name, arm, reached, target, target_in_map)
         target_in_base = robot.base_pose().inverse() * target_in_map
     arm_motion = _arm_motion(robot, arm, result, target_in_base, collision_mode, hand)
-    follow(robot, arm_motion.trajectory)
+    follow(robot, arm_motion.trajectory, checked)
     reached = robot.world.link_pose(robot.name, spec.tool_frame)
     return ensure_reached(robot.name, arm, reached, target, target_in_map)
 
@@ -185,6 +187,7 @@ def _arm_then_base(
         return False
     except NavigationLowLevelFailure as failure:
         first = failure
+    checked = planned_against(robot)
     try:
         settings = replace(robot.motion, check=mode.replace("-", "_") != "allow_all")
         motion = plan_arm_motion(
@@ -193,7 +196,7 @@ def _arm_then_base(
         )  # fmt: skip
     except ManipulationPathBlocked:
         raise first from None
-    follow(robot, motion.trajectory)
+    follow(robot, motion.trajectory, checked)
     try:
         drive(robot, base_goal, free, hand)
     except NavigationLowLevelFailure:
@@ -249,8 +252,9 @@ def move_joints(robot: ProjectedRobot, arm: str, configuration: object) -> dict[
     values = {j: finite_goal(j, v) for j, v in values.items()}  # inf is no limit to move to
     inside = {j: limits[j].clamp(v) for j, v in values.items()}  # moved to, then failed
     what = f"{robot.name}'s {arm} arm"
+    checked = planned_against(robot)
     motion = plan_arm_motion(robot.handle, inside, settings=robot.motion, what=what)
-    follow(robot, motion.trajectory)
+    follow(robot, motion.trajectory, checked)
     now = robot.world.joint_states(robot.name)
     reached = {j: now[j] for j in values}
     if inside != values:

@@ -18,6 +18,7 @@ from collections.abc import Sequence
 from robocram.designators.tool_answers import CuttingAnswer
 from robocram.grasping import ObjectShape, shape_of
 from robocram.projection.errors import ProjectionError
+from robocram.projection.path_watch import planned_against
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.projection.tool_motion import (
     PathPose,
@@ -53,8 +54,9 @@ def cut(
     axis = _longest(shape)
     offsets = _checked_cuts(obj, shape, axis, cuts)
     grip = tool_grip(robot, arm, tool, tool_point)
+    checked = planned_against(robot)
     planned = plan_from_start(robot, grip, path, allowances(tool, contacts))
-    follow(robot, planned.motion.trajectory)
+    follow(robot, planned.motion.trajectory, checked)
     followed = answer(robot, grip, planned)
     made = _made(world, obj, shape, axis, offsets, followed.tool_poses)
     slices = _sliced(world, obj, shape, axis, made) if made else ()

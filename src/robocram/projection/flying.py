@@ -20,6 +20,7 @@ import numpy as np
 from robocram.execution.failures import FlyingGoalInCollision
 from robocram.motion import BODY_JOINTS, joint_limits, time_parameterize
 from robocram.projection.errors import ProjectionError
+from robocram.projection.path_watch import planned_against
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.projection.trajectory_follower import follow
 from robocram.tf import Pose, PoseLike, PoseStamped
@@ -54,6 +55,7 @@ def fly(robot: ProjectedRobot, target: PoseStamped | PoseLike) -> Pose:
     goal = robot.in_map(target)
     a, b = _values(start), _values(goal)
     b[3:] = a[3:] + np.array([math.remainder(float(d), math.tau) for d in b[3:] - a[3:]])
+    checked = planned_against(robot)  # what the flight is checked against
     radius = max(world.contacts.link_radii(robot.name).values(), default=0.0)
     travel = float(np.linalg.norm(b[:3] - a[:3])) + radius * float(np.abs(b[3:] - a[3:]).sum())
     length = float(np.linalg.norm(b[:3] - a[:3]))
@@ -77,7 +79,8 @@ def fly(robot: ProjectedRobot, target: PoseStamped | PoseLike) -> Pose:
         world.set_pose(robot.name, start)  # the trajectory moves it
     limits = joint_limits(robot.description, BODY_JOINTS)
     path = np.array([a, b])
-    follow(robot, time_parameterize(robot.name, BODY_JOINTS, path, limits, kind="flight"))
+    flight = time_parameterize(robot.name, BODY_JOINTS, path, limits, kind="flight")
+    follow(robot, flight, checked)
     return robot.base_pose()
 
 

@@ -17,6 +17,7 @@ from dataclasses import replace
 from robocram.motion import plan_arm_motion
 from robocram.motion.configuration_checker import LinkPair
 from robocram.motion.hand_contact import HandContact
+from robocram.projection.path_watch import planned_against
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.projection.trajectory_follower import follow
 
@@ -41,10 +42,11 @@ def move_along_checked(
             colliding pairs and where along the way they are.
     """
     settings = robot.motion if plan else replace(robot.motion, plan=False)
+    checked = planned_against(robot)
     motion = plan_arm_motion(
         robot.handle, goal, settings=settings, what=what, kind=kind,
         allowed_pairs=allowed_pairs, hand=hand,
     )  # fmt: skip
-    follow(robot, motion.trajectory)
+    follow(robot, motion.trajectory, checked)
     now = robot.world.joint_states(robot.name)
     return {joint: now[joint] for joint in goal}

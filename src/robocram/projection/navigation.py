@@ -29,6 +29,7 @@ from robocram.motion import (
 from robocram.motion.hand_contact import HandContact
 from robocram.motion.hand_sweep import hand_breach
 from robocram.projection.errors import ProjectionError
+from robocram.projection.path_watch import planned_against
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.projection.trajectory_follower import follow
 from robocram.tf import Pose, PoseLike, PoseStamped
@@ -73,6 +74,7 @@ def drive(
             "stand the robot where it works, or give the base type it has",
             target=target,
         )
+    checked = planned_against(robot)  # what the path is planned against
     try:
         path = plan_base_path(
             robot.handle, goal, seed=robot.motion.seed, allowed_links=allowed_links
@@ -85,7 +87,7 @@ def drive(
         _hand_kept(robot, trajectory, hand, target)
         allowances = (*trajectory.allowed_contacts, *hand.allowances())
         trajectory = replace(trajectory, allowed_contacts=allowances)
-    follow(robot, trajectory)
+    follow(robot, trajectory, checked)
     return goal
 
 

@@ -19,6 +19,7 @@ from robocram.motion import ContactAllowance, JointTrajectory
 from robocram.motion.tool_path import ToolPathMotion, plan_tool_path
 from robocram.projection.arm import move_tcp
 from robocram.projection.errors import ProjectionError
+from robocram.projection.path_watch import planned_against
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.projection.trajectory_follower import follow
 from robocram.tf import Pose, PoseLike, PoseStamped
@@ -118,8 +119,9 @@ def follow_tool_path(
 ) -> ToolPathAnswer:
     """Move ``tool`` (held by ``arm``) so that its point follows ``path``."""
     grip = tool_grip(robot, arm, tool, tool_point)
+    checked = planned_against(robot)
     planned = plan_from_start(robot, grip, path, allowances(tool, contacts))
-    follow(robot, planned.motion.trajectory)
+    follow(robot, planned.motion.trajectory, checked)
     return answer(robot, grip, planned)
 
 
