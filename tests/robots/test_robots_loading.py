@@ -149,8 +149,13 @@ def test_arm_without_joints_or_base_link_says_what_to_give() -> None:
 
 
 def test_not_a_description_is_a_type_error() -> None:
-    with pytest.raises(TypeError, match="robot name or a RobotDescription"):
+    with pytest.raises(TypeError, match="robot name, a description file or a RobotDescription"):
         load_description(42)  # type: ignore[arg-type]
+
+
+def test_a_description_file_may_be_a_path() -> None:
+    stretch = Path(__file__).resolve().parents[1] / "data" / "stretch" / "stretch.py"
+    assert load_description(stretch).name == load_description(str(stretch)).name
 
 
 def test_loading_gives_a_loaded_description_whose_model_is_set() -> None:

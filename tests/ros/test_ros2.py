@@ -20,6 +20,7 @@ from robocram.motion import JointTrajectory, trajectory_listener
 from robocram.plans import pick_up
 from robocram.plans.transport import TransportResult, transport
 from robocram.projection import simulated_robot
+from robocram.robots import RobotDescription, load_description
 from robocram.ros import RosCancelIgnored, RosConnectionLost, RosExtraMissing, ros_robot
 from robocram.ros.ros2_environment import child_argv, ros2_prefix
 from robocram.ros.ros_config import default_facts
@@ -36,6 +37,8 @@ DRAWN = 0.005  # [m] stands in a world whose drawer the driver's hand moved
 MOVED = 0.05  # [m] the base has started moving
 LEASE = 4.0  # [s] a dead process is gone from the ROS graph after it (fastdds_profile.xml)
 SAME = 1e-9  # [rad | s] what crosses ROS unchanged (float64; times to the nanosecond)
+STRETCH = Path(__file__).resolve().parents[1] / "data" / "stretch" / "stretch.py"
+STRETCH_FACTS = STRETCH.with_name("stretch_ros2.pl")
 TRAJECTORY_SERVERS = {
     "torso": "/torso_controller/follow_joint_trajectory",
     "head": "/head_controller/follow_joint_trajectory",
@@ -158,8 +161,10 @@ def test_nav2_failing_gives_the_typed_failure_with_its_error_code_and_feedback_i
     assert feedback["current_pose"]["header"]["frame_id"] == "map"
 
 
-def _in_projection(object_type: str, item: str) -> TransportResult:
-    scene = kitchen_scene("pr2")
+def _in_projection(
+    object_type: str, item: str, robot: str | RobotDescription = "pr2"
+) -> TransportResult:
+    scene = kitchen_scene(robot)
     with simulated_robot(scene.world, scene.robot):
         result = transport(object_type, a.location(on=TABLE, for_=item))
     scene.world.close()
@@ -212,6 +217,43 @@ def test_the_kitchen_transport_over_ros2_on_the_real_pr2s_controllers(
     else:
         assert result.opened == []
     _same_stands(result, expected, DRAWN)  # the same seeds, the same stands
+
+
+def test_the_stretch_carries_the_mug_over_ros2_turning_its_base_for_its_sideways_arm(
+    ros2_domain: int, tmp_path: Path
+) -> None:
+    """A differential base with coupled joints: IK moves the base with the arm (Nav2
+    goals), a finger meeting the mug first pushes it into the grip (the robot side), and
+    every trajectory goal is the one the plan side planned."""
+    desc = load_description(STRETCH)
+    expected = _in_projection("mug", "mug-1", desc)
+    scene = kitchen_scene(desc)
+    sent: list[JointTrajectory] = []
+    driver = DriverProcess(
+        "", str(STRETCH), ros=2, domain_id=ros2_domain, scene="kitchen",
+        ros_facts=STRETCH_FACTS, goal_log=tmp_path / "g",
+    )  # fmt: skip
+    facts = STRETCH_FACTS.read_text(encoding="utf-8")
+    with (
+        driver,
+        ros_robot(desc, ros=2, world=scene.world, ros_facts=facts) as run,
+        trajectory_listener(sent.append),
+    ):
+        result = transport("mug", a.location(on=TABLE, for_="mug-1"))
+        placed = run.transforms.lookup("map", "mug-1")
+        servers = ("/stretch_controller/follow_joint_trajectory",
+                   "/head_controller/follow_joint_trajectory")  # fmt: skip
+        received = {s: driver.received_goals(s) for s in servers}
+        drives = driver.received_goals("/navigate_to_pose")
+    assert run.tree.root.status.name == "SUCCEEDED"
+    _on_the_table_top(scene.world, "mug-1", placed)
+    _same_stands(result, expected, DRAWN)
+    stands = [attempt.stand for attempt in result.log.attempts if attempt.stand is not None]
+    assert len(drives) > len(stands)  # IK's base moves went to Nav2 as goals of their own
+    assert len(sent) == sum(len(goals) for goals in received.values()) >= 6
+    for trajectory in sent:  # in order per controller, as planned
+        server = servers[trajectory.joint_names[0].startswith("joint_head")]
+        _assert_same(received[server].pop(0), trajectory)
 
 
 def test_a_controller_killed_mid_goal_gives_a_typed_failure_in_bounded_time(

@@ -41,9 +41,15 @@ HSR_HEAD = (
 )
 
 
-@pytest.mark.parametrize("with_world", [False, True], ids=["no_world", "world"])
 @pytest.mark.parametrize(
-    "robot", ["pr2", pytest.param("hsrb", marks=pytest.mark.xfail(strict=False, reason=HSR_HEAD))]
+    ("robot", "with_world"),
+    [
+        ("pr2", False),
+        ("pr2", True),
+        ("hsrb", False),
+        pytest.param("hsrb", True, marks=pytest.mark.xfail(strict=True, reason=HSR_HEAD)),
+    ],
+    ids=["pr2-no_world", "pr2-world", "hsrb-no_world", "hsrb-world"],
 )
 def test_pick_up_through_ros_agrees_with_projection(
     roscore: Roscore, master_nodes: Callable[[], set[str]], robot: str, with_world: bool

@@ -39,12 +39,7 @@ def base_links(robot: RobotObject) -> list[str]:
     model = robot.description.model
     if model is None:
         raise CostmapInputError(f"robot {robot.name!r} has no loaded model", robot.name)
-    found = [model.root_link]
-    for link in found:
-        found.extend(
-            j.child for j in model.joints.values() if j.parent == link and j.type == "fixed"
-        )
-    return found
+    return model.base_links()
 
 
 def footprint_radius(world: World, robot: RobotObject) -> float:

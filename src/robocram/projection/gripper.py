@@ -266,6 +266,7 @@ def _held_between(
         gripper=arm,
         position=gripper_of(robot, arm).at(fraction)[gripper_joints(robot, arm)[0]],
         shift=shift,
+        met=obj.name,
     )
 
 

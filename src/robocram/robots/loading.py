@@ -29,7 +29,7 @@ from robocram.robots.robot_model import MODELS, RobotModel
 
 
 def load_description(
-    name_or_desc: str | RobotDescription, package_paths: Iterable[str | Path] = ()
+    name_or_desc: str | Path | RobotDescription, package_paths: Iterable[str | Path] = ()
 ) -> LoadedDescription:
     """The checked description with ``model`` set and left-out values derived.
 
@@ -46,13 +46,13 @@ def load_description(
         LimitValueError: an acceleration limit that is not finite and positive.
         UrdfError: the URDF cannot be read.
     """
-    if isinstance(name_or_desc, str):
-        desc = description_from(name_or_desc)
+    if isinstance(name_or_desc, str | Path):  # a built-in's name or a description file
+        desc = description_from(str(name_or_desc))
     elif isinstance(name_or_desc, RobotDescription):
         desc = name_or_desc
     else:
         raise DescriptionUsageError(
-            "load_description takes a robot name or a RobotDescription, got a "
+            "load_description takes a robot name, a description file or a RobotDescription, got a "
             f"{type(name_or_desc).__name__}"
         )
     paths = tuple(dict.fromkeys([*desc.package_paths, *(Path(p) for p in package_paths)]))

@@ -195,6 +195,16 @@ class RobotModel:
             link = joint.parent
         return joints[::-1]
 
+    def base_links(self) -> list[str]:
+        """The root link and every link fixed to it: the part that is the mobile base (what
+        a navigation stack's footprint stands for), root first."""
+        found = [self.root_link]
+        for link in found:
+            found.extend(
+                j.child for j in self.joints.values() if j.parent == link and j.type == "fixed"
+            )
+        return found
+
     def movable_joints(self) -> list[Joint]:
         """Joints with one degree of freedom (revolute, continuous, prismatic), in file order."""
         return [j for j in self.joints.values() if j.movable]

@@ -12,20 +12,37 @@ in the environment is checked: the path is the straight joint segment.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 from robocram.designators import SIDES
-from robocram.execution.failures import ManipulationGoalNotReached, ManipulationPathBlocked
-from robocram.kinematics import IKOptions, IKResult, solve_ik
+from robocram.execution.failures import (
+    ManipulationGoalNotReached,
+    ManipulationPathBlocked,
+    NavigationPathBlocked,
+    NavigationPoseUnreachable,
+)
+from robocram.kinematics import (
+    BaseMotion,
+    IKOptions,
+    IKResult,
+    PlanarBase,
+    base_in_ik,
+    solve_ik,
+)
+from robocram.motion.collision_modes import hand_links
 from robocram.motion.reach_failure import unreachable
 from robocram.motion.tool_goal import IK_RANDOM_SEED, ensure_reached, joint_values
+from robocram.robots import RobotDescription
 from robocram.ros.errors import RosCommandError
 from robocram.ros.goal_runner import FailureFactory
 from robocram.ros.part_motion import move_part
-from robocram.ros.process_modules import RosProcessModule
+from robocram.ros.process_modules import RosProcessModule, send_base_goal
 from robocram.tf import Pose, PoseStamped
+from robocram.tf import quaternion as quat
 
 TORSO_MOVE = 1e-4  # [m | rad] IK torso changes smaller than this are not sent
+BASE_TRAVEL = PlanarBase()  # how far IK may move the base, as in projection
 
 
 class ArmPM(RosProcessModule):
@@ -55,7 +72,7 @@ class ArmPM(RosProcessModule):
         seed = self.client.actuated_joint_states()
         planner = self.client.planner()  # its world (if any) in the robot's state now
         result = IKResult(False)
-        for use_torso in [False, True] if desc.torso_joint is not None else [False]:
+        for use_torso, base in _attempts(desc, arm):
             moving = desc.arms[arm].joints + ((desc.torso_joint,) if use_torso else ())
             check = planner.ik_check(arm, tuple(j for j in moving if j is not None), mode)
             result = solve_ik(
@@ -63,12 +80,51 @@ class ArmPM(RosProcessModule):
                 arm,
                 target_in_base,
                 seed=seed,
-                options=IKOptions(use_torso=use_torso, random_seed=IK_RANDOM_SEED),
+                options=IKOptions(use_torso=use_torso, base=base, random_seed=IK_RANDOM_SEED),
                 collision_check=check,
             )
             if result.success:
                 break
         return result
+
+    def _move_base(
+        self, arm: str, motion: BaseMotion, mode: str, arm_first: Callable[[], None]
+    ) -> bool:
+        """Drive the base by IK's ``motion`` (its own frame) with the arm as it is; if the
+        arm as it is does not fit there, ``arm_first`` and then the base (True: the arm is
+        there already). The hand's links may touch things under ``allow_hand``.
+
+        Raises:
+            NavigationPathBlocked, NavigationPoseUnreachable: neither order works (the
+                first order's failure); no base goal was sent.
+        """
+        client = self.client
+        start = client.base_pose()
+        moved = start * motion.pose()
+        yaw = quat.to_euler(moved.orientation)[2]
+        base_goal = Pose((moved.position[0], moved.position[1], start.position[2]),
+                         quat.from_euler(0.0, 0.0, yaw))  # fmt: skip
+        free = hand_links(client.arm(arm)) if mode.replace("-", "_") == "allow_hand" else set()
+        arm_moved = False
+        try:
+            client.planner().base_path(base_goal, free)
+        except (NavigationPathBlocked, NavigationPoseUnreachable) as failure:
+            arm_first()
+            arm_moved = True
+            try:
+                client.planner().base_path(base_goal, free)
+            except (NavigationPathBlocked, NavigationPoseUnreachable):
+                raise failure from None
+        send_base_goal(client, base_goal)
+        return arm_moved
+
+    def _torso(self, arm: str, solution: dict[str, float], target: object, mode: str) -> None:
+        """Send the torso to IK's value in ``solution``, if it moves."""
+        torso = self.client.desc.torso_joint
+        if torso in solution and (
+            abs(solution[torso] - self.client.joint_states()[torso]) > TORSO_MOVE
+        ):
+            self._move("torso", {torso: solution[torso]}, arm, target, mode)
 
     def move_tcp(
         self,
@@ -96,12 +152,18 @@ class ArmPM(RosProcessModule):
             mode = collision_mode if client.has_world else "allow_all"
             raise unreachable(client.desc, arm, target, target_in_map, mode, result)
         solution = dict(result.joint_positions)
-        torso = client.desc.torso_joint
-        if torso in solution:
-            value = solution.pop(torso)
-            if abs(value - client.joint_states()[torso]) > TORSO_MOVE:
-                self._move("torso", {torso: value}, arm, target, collision_mode)
         goal = {j: solution[j] for j in spec.joints}
+        motion = result.base_motion
+        if motion is not None and motion != BaseMotion():
+
+            def arm_first() -> None:
+                self._torso(arm, solution, target, collision_mode)
+                self._move(f"arm({arm})", goal, arm, target, collision_mode)
+
+            if self._move_base(arm, motion, collision_mode, arm_first):
+                reached = client.frame_pose(spec.tool_frame)
+                return ensure_reached(client.name, arm, reached, target, target_in_map)
+        self._torso(arm, solution, target, collision_mode)
         target_in_base = client.base_pose().inverse() * target_in_map
         line = client.planner().tool_line(arm, target_in_base, collision_mode)
         if line is not None:
@@ -140,3 +202,13 @@ class ArmPM(RosProcessModule):
     @staticmethod
     def _failure(arm: str, target: object) -> FailureFactory:
         return lambda text: ManipulationGoalNotReached(text, arm=arm, target=target)
+
+
+def _attempts(desc: RobotDescription, arm: str) -> list[tuple[bool, PlanarBase | None]]:
+    """(use_torso, base) of each IK query, in order, as projection asks them: the arm, then
+    the torso; or, for an arm that reaches with its base (``base_in_ik``), one query with
+    the torso and the base within :data:`BASE_TRAVEL`."""
+    torso = desc.torso_joint is not None
+    if base_in_ik(desc, arm):
+        return [(torso, BASE_TRAVEL)]
+    return [(False, None), (True, None)] if torso else [(False, None)]

@@ -173,8 +173,9 @@ class MotionPlanner:
         )
         return line.trajectory if line.fraction >= 1.0 else None
 
-    def base_path(self, goal_in_map: Pose) -> BasePath | None:
-        """The base's checked path to ``goal_in_map`` in the world (None without a world).
+    def base_path(self, goal_in_map: Pose, allowed_links: Collection[str] = ()) -> BasePath | None:
+        """The base's checked path to ``goal_in_map`` in the world (None without a world);
+        ``allowed_links`` may touch things on the way (a hand at what it grasps).
 
         Raises:
             NavigationPoseUnreachable: the robot would collide at the goal.
@@ -182,7 +183,9 @@ class MotionPlanner:
         """
         if self.robot is None:
             return None
-        return plan_base_path(self.robot, goal_in_map, seed=self.settings.seed)
+        return plan_base_path(
+            self.robot, goal_in_map, seed=self.settings.seed, allowed_links=allowed_links
+        )
 
     def ik_check(self, arm: str, joints: tuple[str, ...], mode: str) -> IKCollisionCheck | None:
         """IK's collision check for ``arm`` moving ``joints`` in ``mode`` (None without a

@@ -60,19 +60,18 @@ class NavigationPM(RosProcessModule):
         """
         goal_in_map = self.client.in_map(target)
         self.client.planner().base_path(goal_in_map)
-        stamped = {
-            "header": {"frame_id": self.client.fixed_frame},
-            "pose": pose_to_ros(goal_in_map),
-        }
-        kind = self.client.config.action("navigation").action_type
-        # Nav2 names the goal's pose "pose" and runs its default behaviour tree for ""
-        goal = {"pose": stamped} if kind == "nav2_msgs/NavigateToPose" else {"target_pose": stamped}
-        self.client.run(
-            "navigation",
-            goal,
-            lambda text: NavigationGoalNotReached(text, target=goal_in_map),
-        )
-        return self.client.base_pose()
+        return send_base_goal(self.client, goal_in_map)
+
+
+def send_base_goal(client: RosRobotClient, goal_in_map: Pose) -> Pose:
+    """Send the base to ``goal_in_map`` as the robot's navigation action (MoveBase or
+    NavigateToPose, by its fact); return the base pose reached. Check the path first."""
+    stamped = {"header": {"frame_id": client.fixed_frame}, "pose": pose_to_ros(goal_in_map)}
+    kind = client.config.action("navigation").action_type
+    # Nav2 names the goal's pose "pose" and runs its default behaviour tree for ""
+    goal = {"pose": stamped} if kind == "nav2_msgs/NavigateToPose" else {"target_pose": stamped}
+    client.run("navigation", goal, lambda text: NavigationGoalNotReached(text, target=goal_in_map))
+    return client.base_pose()
 
 
 class TorsoPM(RosProcessModule):

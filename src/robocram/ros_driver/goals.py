@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 
 from robocram.designators import ObjectDesignator
-from robocram.execution.failures import GripperClosedCompletely, PlanFailure
+from robocram.execution.failures import GripperClosedCompletely, GripperMetOneSide, PlanFailure
 from robocram.projection import ProjectedRobot
 from robocram.projection.gripper import grip, gripper_joints, open_gripper, set_gripper
 from robocram.projection.navigation import drive
@@ -99,8 +99,8 @@ def _drive(
     with ctx.stepper.lock:
         in_map = _stamped_in_map(robot, target.header.frame_id, _pose(target.pose))
         start = robot.base_pose()
-        try:
-            drive(robot, in_map)  # checks the goal pose; leaves the robot where it was if bad
+        try:  # checks the goal for the base, leaves the robot where it was if bad
+            drive(robot, in_map, _above_base(robot))
         except PlanFailure as failure:
             return NAV2_GOAL_OCCUPIED, str(failure)
         robot.world.set_pose(robot.name, start)
@@ -114,10 +114,17 @@ def _drive(
         return None
     with ctx.stepper.lock:
         try:
-            reached = drive(robot, in_map)
+            reached = drive(robot, in_map, _above_base(robot))
         except PlanFailure as failure:  # something moved into the way meanwhile
             return NAV2_FAILED_TO_MAKE_PROGRESS, str(failure)
     return 0, f"reached {reached.position}"
+
+
+def _above_base(robot: ProjectedRobot) -> set[str]:
+    """The links a navigation stack does not see: all but the base's footprint (Nav2 and
+    move_base check the base's footprint in their costmaps, not the arms)."""
+    model = robot.description.model
+    return set(model.links) - set(model.base_links())
 
 
 def move_base(goal: RosMessage, ctx: GoalContext) -> Outcome:
@@ -292,7 +299,7 @@ def gripper_command(goal: RosMessage, ctx: GoalContext, semantics: GripperSemant
         stalled = False
         try:
             if position <= limits.lower + GRIP_TOLERANCE:
-                stalled = bool(grip(robot, arm))
+                stalled = bool(_grip_pushing(robot, arm))
             elif position >= limits.upper - GRIP_TOLERANCE:
                 ctx.handles.release(robot, arm)
                 open_gripper(robot, arm)
@@ -312,6 +319,35 @@ def gripper_command(goal: RosMessage, ctx: GoalContext, semantics: GripperSemant
     }
     succeeded = not (stalled and semantics.holding_status is GoalState.ABORTED)
     return succeeded, result, "holding an object" if stalled else ""
+
+
+def _grip_pushing(robot: ProjectedRobot, arm: str) -> str:
+    """Close the gripper on what is between its fingers; return what it holds. A finger
+    that meets a light object first pushes it towards the other, as on a real robot: the
+    object slides by the hand's centring shift, where nothing is in its way, and is held.
+
+    Raises:
+        GripperMetOneSide: the object cannot slide there (it would hit something).
+        GripperClosedCompletely: nothing between the fingers.
+    """
+    try:
+        return grip(robot, arm)
+    except GripperMetOneSide as one_sided:
+        if one_sided.shift is None or one_sided.met is None:
+            raise
+        world, met = robot.world, one_sided.met
+        before = world.pose(met)
+        (x, y, z), (dx, dy, dz) = before.position, one_sided.shift
+        world.set_pose(met, Pose((x - dx, y - dy, z - dz), before.orientation))
+        hit = [o.name for o in world.contacts.collisions(met) if o.name != robot.name]
+        if hit:
+            world.set_pose(met, before)
+            raise
+        try:
+            return grip(robot, arm)
+        except PlanFailure:
+            world.set_pose(met, before)
+            raise one_sided from None
 
 
 def detect_objects(goal: RosMessage, ctx: GoalContext) -> Outcome:

@@ -66,6 +66,7 @@ class GripperMetOneSide(GripperClosedCompletely):
     """
 
     shift: tuple[float, float, float] | None = None
+    met: str | None = None  # the object the one finger met
     summary = "the gripper met the object on one side only, so it holds nothing"
     hint = "grasp the object centred between the fingers, or take another grasp"
 
