@@ -22,7 +22,14 @@ from typing import Any, TypeVar
 
 from robocram.ros.errors import RosConnectionLost, RosNodeError
 from robocram.ros.node_config import NodeConfig
-from robocram.ros.transport import GoalHandle, GoalOutcome, GoalState, RosDict, StateMark
+from robocram.ros.transport import (
+    GoalHandle,
+    GoalOutcome,
+    GoalState,
+    RosDict,
+    StateMark,
+    StateSnapshot,
+)
 from robocram.tf import Pose
 
 LOG = logging.getLogger("robocram.ros")
@@ -218,6 +225,15 @@ class NodeProcessTransport:
     def frames(self) -> tuple[str, ...]:
         """Every frame in the node's tf2 buffer."""
         return tuple(self.request("frames"))
+
+    def snapshot(self, target_frame: str, base_frame: str, objects: Sequence[str]) -> StateSnapshot:
+        """Joints, environment joints, the base's and the known objects' poses, in one request."""
+        joints, environment, found = self.request(
+            "snapshot", target_frame, base_frame, list(objects)
+        )
+        poses = {frame: Pose(tuple(p), tuple(q)) for frame, (p, q) in found.items()}
+        base = poses.pop(base_frame)
+        return StateSnapshot(dict(joints), dict(environment), base, poses)
 
     def close(self) -> None:
         """Cancel running goals, stop the node process and the reader thread."""

@@ -10,13 +10,14 @@ one lock for writing to the plan process.
 from __future__ import annotations
 
 import threading
+from abc import ABC, abstractmethod
 from collections.abc import Iterable
 from multiprocessing.connection import Connection
 
 from robocram.ros.node_config import NodeConfig
 
 
-class NodeState:
+class NodeState(ABC):
     """The state and the state requests both nodes share (see the module docstring)."""
 
     def __init__(self, conn: Connection, config: NodeConfig) -> None:
@@ -66,6 +67,33 @@ class NodeState:
         """The latest joint positions of each environment topic (empty until heard)."""
         with self._state:
             return {topic: dict(joints) for topic, joints in self._environment.items()}
+
+    def op_snapshot(
+        self, target: str, base: str, objects: list[str]
+    ) -> tuple[
+        dict[str, float],
+        dict[str, dict[str, float]],
+        dict[str, tuple[tuple[float, ...], tuple[float, ...]]],
+    ]:
+        """The joints, the environments' joints and the poses in ``target`` of ``base`` and
+        of those ``objects`` tf knows (tf2 frames may carry a leading slash), in one reply."""
+        known = {frame.lstrip("/") for frame in self.op_frames()}
+        sources = [base, *(o for o in objects if o in known and o != base)]
+        return (
+            self.op_joint_states(),
+            self.op_environment_joint_states(),
+            self.op_lookups(target, sources),
+        )
+
+    @abstractmethod
+    def op_frames(self) -> list[str]:
+        """Every frame the transforms name (each node's own)."""
+
+    @abstractmethod
+    def op_lookups(
+        self, target: str, sources: list[str]
+    ) -> dict[str, tuple[tuple[float, ...], tuple[float, ...]]]:
+        """The poses of ``sources`` in ``target`` (each node's own)."""
 
     def op_wait_for_state(self, after: tuple[int, int] | None, timeout: float) -> bool:
         """Wait until joint states and a base transform arrived after the mark ``after``

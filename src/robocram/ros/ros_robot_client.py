@@ -30,7 +30,7 @@ from robocram.ros.ros2_transport import Ros2Transport
 from robocram.ros.ros_config import RosConfig
 from robocram.ros.trajectory_goal import trajectory_goal
 from robocram.ros.transport import GoalOutcome, RosDict, Transport
-from robocram.ros.world_mirror import WorldMirror, environment_topics, names_in
+from robocram.ros.world_mirror import WorldMirror, environment_topics
 from robocram.tf import Pose, PoseLike, PoseStamped
 from robocram.world import World
 
@@ -184,16 +184,10 @@ class RosRobotClient:
         mirror = self.mirror
         if mirror is None:
             return
-        transport = self.transport
-        tracked = names_in(transport.frames(), mirror.movable_objects())
-        base = self.desc.base_frame
-        poses = transport.lookup_transforms(self.fixed_frame, [base, *tracked])  # one request
-        mirror.sync(
-            self.joint_states(),
-            poses[base],
-            transport.environment_joint_states(),
-            {obj: poses[obj] for obj in tracked},
-        )
+        state = self.transport.snapshot(
+            self.fixed_frame, self.desc.base_frame, mirror.movable_objects()
+        )  # one request
+        mirror.sync(self._finite(state.joints), state.base, state.environment, state.objects)
 
     def move_joints(
         self,
@@ -274,7 +268,14 @@ class RosRobotClient:
             RosJointStateInvalid: a position is not a finite number (naming the topic
                 and the joint): a plan must not start from it.
         """
-        states = self.transport.joint_states()
+        return self._finite(self.transport.joint_states())
+
+    def _finite(self, states: dict[str, float]) -> dict[str, float]:
+        """``states``, checked: every position a finite number.
+
+        Raises:
+            RosJointStateInvalid: naming the topic and the joint.
+        """
         for joint, value in states.items():
             if not math.isfinite(value):
                 topic = self.config.joint_states_topic

@@ -63,6 +63,16 @@ class GoalHandle:
             self.done.notify_all()
 
 
+@dataclass(frozen=True)
+class StateSnapshot:
+    """The robot's state as ROS reports it at one moment (:meth:`Transport.snapshot`)."""
+
+    joints: dict[str, float]
+    environment: dict[str, dict[str, float]]  # by topic
+    base: Pose  # the base frame in the target frame
+    objects: dict[str, Pose]  # the objects tf knows, in the target frame
+
+
 class Transport(Protocol):
     """What the process modules need from ROS: actions, joint states and transforms."""
 
@@ -98,6 +108,11 @@ class Transport(Protocol):
 
     def frames(self) -> tuple[str, ...]:
         """Every frame the transforms name, sorted."""
+        ...
+
+    def snapshot(self, target_frame: str, base_frame: str, objects: Sequence[str]) -> StateSnapshot:
+        """What the world mirror reads after each goal, in one request: the joints, the
+        environments' joints, the base's pose and the poses of the ``objects`` tf knows."""
         ...
 
     def close(self) -> None:

@@ -13,7 +13,7 @@ it go again.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping
+from collections.abc import Mapping
 
 import numpy as np
 
@@ -116,9 +116,3 @@ class WorldMirror:
         low, high = self.world.aabb(obj)
         centre = (np.asarray(low) + np.asarray(high)) / 2.0
         return float(np.linalg.norm(centre - point))
-
-
-def names_in(frames: Iterable[str], wanted: Iterable[str]) -> list[str]:
-    """The ``wanted`` frame names tf knows (tf2 frames may carry a leading slash)."""
-    have = {f.lstrip("/") for f in frames}
-    return [w for w in wanted if w in have]
