@@ -219,14 +219,16 @@ def test_the_kitchen_transport_over_ros2_on_the_real_pr2s_controllers(
     _same_stands(result, expected, DRAWN)  # the same seeds, the same stands
 
 
-def test_the_stretch_carries_the_mug_over_ros2_turning_its_base_for_its_sideways_arm(
-    ros2_domain: int, tmp_path: Path
+@pytest.mark.parametrize(("object_type", "item"), [("mug", "mug-1"), ("bowl", "bowl-1")])
+def test_the_stretch_transports_over_ros2_turning_its_base_for_its_sideways_arm(
+    ros2_domain: int, tmp_path: Path, object_type: str, item: str
 ) -> None:
     """A differential base with coupled joints: IK moves the base with the arm (Nav2
-    goals), a finger meeting the mug first pushes it into the grip (the robot side), and
-    every trajectory goal is the one the plan side planned."""
+    goals; the drawer is opened and shut a step at a time, base and arm), a finger meeting
+    the mug first pushes it into the grip (the robot side), and every trajectory goal is
+    the one the plan side planned."""
     desc = load_description(STRETCH)
-    expected = _in_projection("mug", "mug-1", desc)
+    expected = _in_projection(object_type, item, desc)
     scene = kitchen_scene(desc)
     sent: list[JointTrajectory] = []
     driver = DriverProcess(
@@ -239,15 +241,17 @@ def test_the_stretch_carries_the_mug_over_ros2_turning_its_base_for_its_sideways
         ros_robot(desc, ros=2, world=scene.world, ros_facts=facts) as run,
         trajectory_listener(sent.append),
     ):
-        result = transport("mug", a.location(on=TABLE, for_="mug-1"))
-        placed = run.transforms.lookup("map", "mug-1")
+        result = transport(object_type, a.location(on=TABLE, for_=item))
+        placed = run.transforms.lookup("map", item)
+        drawers = run.environment.client.transport.environment_joint_states()
         servers = ("/stretch_controller/follow_joint_trajectory",
                    "/head_controller/follow_joint_trajectory")  # fmt: skip
         received = {s: driver.received_goals(s) for s in servers}
         drives = driver.received_goals("/navigate_to_pose")
     assert run.tree.root.status.name == "SUCCEEDED"
-    _on_the_table_top(scene.world, "mug-1", placed)
+    _on_the_table_top(scene.world, item, placed)
     _same_stands(result, expected, DRAWN)
+    assert drawers["/kitchen/joint_states"][DRAWER_JOINT] == pytest.approx(0.0, abs=0.01)
     stands = [attempt.stand for attempt in result.log.attempts if attempt.stand is not None]
     assert len(drives) > len(stands)  # IK's base moves went to Nav2 as goals of their own
     assert len(sent) == sum(len(goals) for goals in received.values()) >= 6

@@ -9,11 +9,14 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 
+from robocram.kinematics import split_base_motion
 from robocram.motion.bullet_scene import BulletScene
 from robocram.motion.configuration_checker import LinkPair
 from robocram.motion.errors import MotionError
 from robocram.motion.hand_contact import HandContact
 from robocram.robots import ArmDescription
+from robocram.tf import Pose
+from robocram.tf import quaternion as quat
 from robocram.world import RobotHandle
 
 COLLISION_MODES = ("avoid_all", "allow_hand", "allow_all")
@@ -69,6 +72,18 @@ def ik_collision_check(
         scene = BulletScene(robot, joints, allowed, allowed_pairs=touching)
 
     def colliding(candidate: Mapping[str, float]) -> list[LinkPair]:
-        return scene.colliding_at({j: candidate[j] for j in joints if j in candidate})
+        values, motion = split_base_motion(candidate)  # IK that moves the base too
+        arm = {j: values[j] for j in joints if j in values}
+        if motion is None:
+            return scene.colliding_at(arm)
+        start = world.pose(robot.name)
+        moved = start * motion.pose()
+        yaw = quat.to_euler(moved.orientation)[2]
+        where = (moved.position[0], moved.position[1], start.position[2])
+        world.set_pose(robot.name, Pose(where, quat.from_euler(0.0, 0.0, yaw)))
+        try:
+            return scene.colliding_at(arm)
+        finally:
+            world.set_pose(robot.name, start)
 
     return colliding

@@ -67,12 +67,14 @@ class ArmPM(RosProcessModule):
         side = self.client.desc.arm_called(arm)
         return move_part(self.client, self, side, part, joint, handle, float(goal))
 
-    def _solve(self, arm: str, target_in_base: Pose, mode: str) -> IKResult:
+    def _solve(
+        self, arm: str, target_in_base: Pose, mode: str, travel: PlanarBase = BASE_TRAVEL
+    ) -> IKResult:
         desc = self.client.desc
         seed = self.client.actuated_joint_states()
         planner = self.client.planner()  # its world (if any) in the robot's state now
         result = IKResult(False)
-        for use_torso, base in _attempts(desc, arm):
+        for use_torso, base in _attempts(desc, arm, travel):
             moving = desc.arms[arm].joints + ((desc.torso_joint,) if use_torso else ())
             check = planner.ik_check(arm, tuple(j for j in moving if j is not None), mode)
             result = solve_ik(
@@ -132,8 +134,10 @@ class ArmPM(RosProcessModule):
         target: PoseStamped | Any,
         collision_mode: str = "avoid_all",
         touching: str = "none",
+        base_travel: PlanarBase = BASE_TRAVEL,
     ) -> Pose:
         """Put ``arm``'s tool frame at ``target``; return the reached pose in the fixed frame.
+        ``base_travel`` bounds how far IK may move the base of an arm that reaches with it.
 
         ``touching`` (what an ``allow_hand`` hand acts on) is accepted and not used yet:
         the ROS planner lets the hand touch anything (issue 35, item 4, is projection's).
@@ -147,7 +151,8 @@ class ArmPM(RosProcessModule):
         arm = client.desc.arm_called(arm)
         spec = client.arm(arm)
         target_in_map = client.in_map(target)
-        result = self._solve(arm, client.base_pose().inverse() * target_in_map, collision_mode)
+        to_base = client.base_pose().inverse()
+        result = self._solve(arm, to_base * target_in_map, collision_mode, base_travel)
         if not result.success:
             mode = collision_mode if client.has_world else "allow_all"
             raise unreachable(client.desc, arm, target, target_in_map, mode, result)
@@ -204,11 +209,13 @@ class ArmPM(RosProcessModule):
         return lambda text: ManipulationGoalNotReached(text, arm=arm, target=target)
 
 
-def _attempts(desc: RobotDescription, arm: str) -> list[tuple[bool, PlanarBase | None]]:
+def _attempts(
+    desc: RobotDescription, arm: str, travel: PlanarBase
+) -> list[tuple[bool, PlanarBase | None]]:
     """(use_torso, base) of each IK query, in order, as projection asks them: the arm, then
     the torso; or, for an arm that reaches with its base (``base_in_ik``), one query with
-    the torso and the base within :data:`BASE_TRAVEL`."""
+    the torso and the base within ``travel``."""
     torso = desc.torso_joint is not None
     if base_in_ik(desc, arm):
-        return [(torso, BASE_TRAVEL)]
+        return [(torso, travel)]
     return [(False, None), (True, None)] if torso else [(False, None)]

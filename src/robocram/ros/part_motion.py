@@ -21,13 +21,17 @@ import numpy as np
 
 from robocram.execution.failures import (
     EnvironmentManipulationImpossible,
+    GripperGoalNotReached,
     ManipulationGoalNotReached,
     ManipulationPathBlocked,
     ManipulationPoseUnreachable,
+    NavigationGoalNotReached,
+    NavigationPathBlocked,
+    NavigationPoseUnreachable,
     TorsoGoalNotReached,
 )
 from robocram.grasping import approach_axis
-from robocram.kinematics import IKOptions, solve_ik
+from robocram.kinematics import IKOptions, PlanarBase, base_in_ik, solve_ik
 from robocram.motion import JointTrajectory, joint_limits, time_parameterize
 from robocram.motion.part_path import BACK_OFF, PRE_GRASP, ROLLS, grasp_in_handle, part_path
 from robocram.motion.tool_goal import IK_RANDOM_SEED
@@ -44,12 +48,21 @@ MAX_JUMP = 0.5  # [rad | m] an IK step moving a joint further is a flip, not a f
 _RANDOM_SEED = IKOptions(random_seed=IK_RANDOM_SEED)  # following the handle, arm alone
 _TORSO = IKOptions(use_torso=True)  # a torso height from which the arm reaches
 REACHING = (ManipulationPoseUnreachable, ManipulationPathBlocked, ManipulationGoalNotReached)
+DRIVING = (NavigationPathBlocked, NavigationPoseUnreachable, NavigationGoalNotReached)
+STEP_TRAVEL = PlanarBase(0.15, 0.15, 0.5)  # [m, m, rad] the base's move per step, as projection
 
 
 class ToolMover(Protocol):
     """What moves a tool frame to a pose in map (the ROS arms' process module)."""
 
-    def move_tcp(self, arm: str, target: Pose, collision_mode: str = "avoid_all") -> Pose: ...
+    def move_tcp(
+        self,
+        arm: str,
+        target: Pose,
+        collision_mode: str = "avoid_all",
+        touching: str = "none",
+        base_travel: PlanarBase = ...,
+    ) -> Pose: ...
 
 
 def move_part(
@@ -75,10 +88,9 @@ def move_part(
     axis = np.asarray(approach_axis(client.desc, arm))
     action = "opening" if goal > start else "closing"
     failures: list[str] = []
+    follow = _with_base_steps if base_in_ik(client.desc, arm) else _with_grasp
     for roll in ROLLS:
-        why = _with_grasp(
-            client, tools, arm, (part, joint, handle), grasp_in_handle(axis, roll), goal
-        )
+        why = follow(client, tools, arm, (part, joint, handle), grasp_in_handle(axis, roll), goal)
         if why is not None:
             failures.append(f"roll {roll:.2f}: {why}")
             continue
@@ -126,6 +138,40 @@ def _with_grasp(
     return None if path is not None else "the arm cannot keep the tool on the handle"
 
 
+def _with_base_steps(
+    client: RosRobotClient,
+    tools: ToolMover,
+    arm: str,
+    moving: tuple[str, str, str],
+    grasp: Pose,
+    goal: float,
+) -> str | None:
+    """Move the part holding its handle with ``grasp`` a step of the joint at a time, the
+    base moving with the arm at each step (an arm that reaches with its base: Stretch's
+    sideways arm cannot follow a drawer alone), as projection does; each step's base part
+    goes to the navigation stack, then the arm's. None if done, else why not (the hand
+    then is open and off the handle)."""
+    part, joint, handle = moving
+    world = _world(client, part, joint, goal)
+    values = part_path(world, part, joint, handle, goal)
+    try:
+        _take_handle(client, tools, arm, world.link_pose(part, handle), grasp)
+    except (*REACHING, *DRIVING) as failure:
+        return str(failure)
+    why = None
+    try:
+        for value in values:
+            start = world.joint_states(part)[joint]
+            world.set_joint_states(part, {joint: value})
+            target = world.link_pose(part, handle) * grasp
+            world.set_joint_states(part, {joint: start})
+            tools.move_tcp(arm, target, "allow_hand", base_travel=STEP_TRAVEL)
+    except (*REACHING, *DRIVING) as failure:
+        why = f"the arm and base cannot keep the tool on the handle: {failure}"
+    _let_go(client, tools, arm, world.link_pose(part, handle), grasp)
+    return why
+
+
 def _world(client: RosRobotClient, part: str, joint: str, goal: float) -> World:
     """The world of the robot's environment, with ``goal`` inside the joint's limits."""
     if client.mirror is None:
@@ -154,14 +200,30 @@ def _take_handle(
 
 
 def _let_go(client: RosRobotClient, tools: ToolMover, arm: str, handle: Pose, grasp: Pose) -> None:
-    """Open the gripper and back the tool off the handle (as far as there is room)."""
-    move_gripper(client, arm, "open", None)
+    """Open the gripper and back the tool off the handle (as far as there is room).
+
+    Fingers that cannot open at the handle (a drawer shut under a counter's top) open
+    once the hand has backed off, if they can there, as in projection; the robot side
+    let go of the handle when it was asked to open.
+    """
+    opened = _opened(client, arm)
     for distance in BACK_OFF:
         try:
             tools.move_tcp(arm, handle * Pose((distance, 0.0, 0.0)) * grasp, "allow_hand")
-            return
-        except REACHING:
+            break
+        except (*REACHING, *DRIVING):
             continue
+    if not opened:
+        _opened(client, arm)
+
+
+def _opened(client: RosRobotClient, arm: str) -> bool:
+    """Open the gripper where the hand is; False if the controller could not."""
+    try:
+        move_gripper(client, arm, "open", None)
+    except GripperGoalNotReached:
+        return False
+    return True
 
 
 def _waypoints(

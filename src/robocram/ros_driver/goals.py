@@ -108,6 +108,7 @@ def _drive(
 
     def stepping(fraction: float) -> None:
         step(fraction)
+        ctx.handles.follow(robot)  # a drawer held by the hand comes along
         step_done()
 
     if not ctx.stepper.run(duration, stepping):
@@ -115,6 +116,7 @@ def _drive(
     with ctx.stepper.lock:
         try:
             reached = drive(robot, in_map, _above_base(robot))
+            ctx.handles.follow(robot)
         except PlanFailure as failure:  # something moved into the way meanwhile
             return NAV2_FAILED_TO_MAKE_PROGRESS, str(failure)
     return 0, f"reached {reached.position}"
