@@ -3,7 +3,8 @@
 MCAP's ``ros2msg`` schema encoding stores a type's definition followed by every type it
 uses, each after a line of 80 ``=`` and ``MSG: package/Type``. Schemas are named as ROS 2
 names them (``tf2_msgs/msg/TFMessage``), so Foxglove's panels recognise them; the types
-below are ROS 2 Humble's.
+below are ROS 2 Jazzy's (a test reads the installed ``.msg`` files; Humble's have the same
+fields).
 """
 
 from __future__ import annotations
@@ -55,7 +56,7 @@ _DEFINITIONS: dict[str, str] = {
     "std_msgs/msg/ColorRGBA": "float32 r\nfloat32 g\nfloat32 b\nfloat32 a\n",
     "geometry_msgs/msg/Vector3": "float64 x\nfloat64 y\nfloat64 z\n",
     "geometry_msgs/msg/Point": "float64 x\nfloat64 y\nfloat64 z\n",
-    "geometry_msgs/msg/Quaternion": "float64 x\nfloat64 y\nfloat64 z\nfloat64 w\n",
+    "geometry_msgs/msg/Quaternion": "float64 x 0\nfloat64 y 0\nfloat64 z 0\nfloat64 w 1\n",
     "geometry_msgs/msg/Transform": "Vector3 translation\nQuaternion rotation\n",
     "geometry_msgs/msg/Pose": "Point position\nQuaternion orientation\n",
     "geometry_msgs/msg/TransformStamped": (
