@@ -11,15 +11,17 @@ from __future__ import annotations
 import functools
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Literal
+from typing import TYPE_CHECKING, Literal
 
 from robocram.robots import RobotModel
 from robocram.robots.urdf_elements import Geometry
 from robocram.tf import Pose, Vector3
 from robocram.world.body_spec import MeshSpec, ShapeSpec, UrdfSpec
 from robocram.world.errors import WorldUsageError, WorldValueError
-from robocram.world.world_core import WorldCore
 from robocram.world.world_object import RobotObject, WorldObject
+
+if TYPE_CHECKING:
+    from robocram.world.world_facade import WorldFacade
 
 CollisionKind = Literal["box", "cylinder", "sphere", "mesh", "plane"]
 
@@ -57,7 +59,7 @@ def _scaled(geometry: Geometry, scale: float) -> tuple[CollisionKind, Vector3]:
 
 
 def _urdf_shapes(
-    world: WorldCore, obj: WorldObject, model: RobotModel, scale: float
+    world: WorldFacade, obj: WorldObject, model: RobotModel, scale: float
 ) -> list[CollisionShape]:
     shapes: list[CollisionShape] = []
     for link in model.links.values():
@@ -77,7 +79,7 @@ def _urdf_shapes(
     return shapes
 
 
-def collision_shapes(world: WorldCore, obj: WorldObject) -> list[CollisionShape]:
+def collision_shapes(world: WorldFacade, obj: WorldObject) -> list[CollisionShape]:
     """Every collision shape of ``obj`` at its current pose, in its links' order."""
     spec = obj.spec
     if isinstance(obj, RobotObject):
