@@ -139,6 +139,7 @@ class WorldTables:
         several = len(loaded.bodies) > 1
         handle.parts = loaded.bodies if several else ()
         handle.part_offsets = loaded.offsets if several else ()
+        handle.urdf_model = loaded.model
         self._motors.forget(handle.body_id)
         dyn = pybullet.getDynamicsInfo(handle.body_id, -1, physicsClientId=cid)
         self._inertial[handle.name] = Pose(dyn[3], dyn[4])
