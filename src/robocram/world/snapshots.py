@@ -44,6 +44,14 @@ class Snapshots(WorldPart):
             joints = tuple(w.joint_states(handle).values())
         return (float(handle.body_id), *position, *orientation, *joints)
 
+    def capture(self) -> WorldState:
+        """The world's state now, whole (objects, bodies, attachments, holds, time)."""
+        return WorldState.capture(self._tables)
+
+    def restore(self, state: WorldState) -> None:
+        """Put the world back to ``state`` (captured from it): objects, poses, joints."""
+        state.restore(self._tables)
+
     def recreate(self, state: WorldState) -> None:
         """Fill this empty world (a copy's, in its own client) with new handles in ``state``."""
         state.recreate(self._tables)

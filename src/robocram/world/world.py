@@ -30,7 +30,6 @@ from robocram.world.snapshots import Snapshots
 from robocram.world.versions import Versions
 from robocram.world.view import View
 from robocram.world.world_object import RobotObject, WorldObject
-from robocram.world.world_state import WorldState
 from robocram.world.world_tables import ORIGIN, ObjectRef, WorldTables
 
 if TYPE_CHECKING:
@@ -146,7 +145,7 @@ class World:
 
     def copy(self, gui: bool = False) -> World:
         """An independent world (its own client) with the same objects and state."""
-        state = WorldState.capture(self._tables)  # a closed world raises WorldClosedError
+        state = self.snapshots.capture()  # a closed world raises WorldClosedError
         other = World(gui=gui, gravity=self.gravity, time_step=self.time_step)
         other.snapshots.recreate(state)
         return other
