@@ -10,7 +10,7 @@ effect in the same terms.
 - caches kept by hand: bounded caches that evict by hand (``popitem(last=False)``,
   ``del d[next(iter(d))]``, ``d.pop(next(iter(d)))``; goal 0, the world's one rule,
   ``world/derived.py``, aside), state reads compared as a cache's validity
-  (``body_state(...)`` outside the world's core), functions decorated with ``functools``
+  (``body_state(...)`` outside the world's tables), functions decorated with ``functools``
   caches, ``derived(...)`` stores (a world's, declared with ``Derived``, apart from a
   robot model's, which depend on nothing but the model), ``Derived`` declarations, and
   module-level dictionaries written inside functions and module-level cache objects
