@@ -8,6 +8,7 @@ rim. Judged on the loaded world by raw PyBullet: link bounds and closest points.
 
 from __future__ import annotations
 
+import gc
 import warnings
 from collections.abc import Iterator
 from pathlib import Path
@@ -89,6 +90,7 @@ def test_a_robot_with_its_meshes_is_left_alone() -> None:
 def test_loading_again_shares_the_cut_model(fetch: tuple[World, LoadedDescription]) -> None:
     """The cut model is kept with the parsed one: a second load builds no new kinematics."""
     _, desc = fetch
+    gc.collect()  # the memo holds the parse weakly: the cut model must hold it
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         again = load_description(str(FETCH))
