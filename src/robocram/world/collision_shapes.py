@@ -8,7 +8,6 @@ with its first shape missing and frames relative to the centre of mass.
 
 from __future__ import annotations
 
-import functools
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Literal
@@ -40,12 +39,6 @@ class CollisionShape:
     extents: Vector3
     pose: Pose
     mesh: str = ""  # absolute path of a mesh file
-
-
-@functools.lru_cache(maxsize=64)
-def _urdf_model(path: str, mtime: float) -> RobotModel:
-    """The parsed URDF of an object (cached per file version: kitchens are big)."""
-    return RobotModel.from_file(path)
 
 
 def _scaled(geometry: Geometry, scale: float) -> tuple[CollisionKind, Vector3]:
@@ -85,8 +78,8 @@ def collision_shapes(world: WorldFacade, obj: WorldObject) -> list[CollisionShap
     if isinstance(obj, RobotObject):
         return _urdf_shapes(world, obj, obj.description.model, 1.0)
     if isinstance(spec, UrdfSpec):
-        path = Path(spec.path).resolve()
-        model = _urdf_model(str(path), path.stat().st_mtime)
+        # the model the body was loaded from (a spec checked by its caller has none kept)
+        model = obj.urdf_model or RobotModel.from_file(Path(spec.path).resolve())
         return _urdf_shapes(world, obj, model, spec.scale)
     pose = world.pose(obj)
     if isinstance(spec, MeshSpec):
