@@ -6,8 +6,9 @@ each run builds ``kitchen_scene(robot)`` from the robot's name, binds the defaul
 resolver (``simulated_robot`` without ``locations``) and transports the mug from the same
 seeded spot as ``transport_timing``; then it transports again in that scene (the user's
 second plan). Wall and CPU time are both printed. The process's first transport is timed
-apart: it builds what is kept for the process (the parsed URDFs, and on them IK's solvers
-and start tables) and is excluded from the cold figure, as the issue asks.
+apart: it builds what the scenes after it share (the parsed URDFs, and on them IK's solvers
+and start tables, kept while a scene holds them) and is excluded from the cold figure, as
+the issue asks.
 """
 
 from __future__ import annotations
@@ -26,10 +27,11 @@ from robocram.scenes import KitchenScene, kitchen_scene
 from robocram.tf import Pose
 
 KEPT = (
-    "kept per process: the parsed URDF models (robocram.robots.model_memo) and what is "
-    "kept on them (IK's solvers and start tables, the reachability maps read from disk "
-    "once); per scene: the world and what it keeps (coal obstacle shapes, base "
-    "footprints); nothing else carries over"
+    "kept while something holds them: the parsed URDF models (robocram.robots.model_memo "
+    "holds them weakly; the previous scene holds them while the next is built) and what "
+    "is kept on them (IK's solvers and start tables, the hands, the reachability maps "
+    "read from disk once); per scene: the world and what it keeps (coal obstacle shapes, "
+    "base footprints); nothing else carries over"
 )
 
 

@@ -1,9 +1,13 @@
 """World is the only door to PyBullet, and its helpers respect other classes' privacy.
 
 Checked on the source text: nothing outside ``robocram.world`` imports ``pybullet`` or
-``pybullet_data``; no module in ``world`` (nor in ``scenes``, the demo or the examples)
-reads or writes an underscored attribute of an object other than ``self``/``cls``; the
-demo and the examples import only the names packages export in ``__all__``.
+``pybullet_data``; only the :class:`World` facade, the base of its parts and its snapshots
+name the world's tables (:class:`WorldTables`), so the parts reach them only through the
+tables given them, and nothing else at all; no module in ``world`` (nor in ``scenes``, the
+demo or the examples) reads or writes an underscored attribute of an object other than
+``self``/``cls`` (so a part uses the tables' and PyBullet's public API only); the facade
+keeps at most 25 public methods; the demo and the examples import only the names packages
+export in ``__all__``.
 """
 
 from __future__ import annotations
@@ -51,6 +55,53 @@ def test_only_world_imports_pybullet(path: Path) -> None:
         f"{path.relative_to(SRC)} imports {backend}: only robocram.world may talk to "
         "PyBullet; add a public World method instead"
     )
+
+
+TABLE_HOLDERS = {"world.py", "world_part.py", "world_state.py", "world_tables.py"}
+WORLD_PUBLIC_METHODS_MAX = 25  # issue 39; the rest lives in the parts
+
+
+def _names_tables(tree: ast.Module) -> bool:
+    """Whether a module imports :class:`WorldTables` (at any level, typing too)."""
+    return any(
+        isinstance(node, ast.ImportFrom)
+        and (node.module or "").endswith("world_tables")
+        and any(a.name == "WorldTables" for a in node.names)
+        for node in ast.walk(tree)
+    )
+
+
+def _is_part(tree: ast.Module) -> bool:
+    return any(
+        isinstance(node, ast.ClassDef)
+        and any(isinstance(b, ast.Name) and b.id == "WorldPart" for b in node.bases)
+        for node in ast.walk(tree)
+    )
+
+
+@pytest.mark.parametrize("path", sorted(SRC.rglob("*.py")), ids=lambda p: str(p.relative_to(SRC)))
+def test_only_the_facade_and_its_parts_hold_the_tables(path: Path) -> None:
+    tree = _tree(path)
+    in_world = path.parent == SRC / "world"
+    allowed = in_world and (path.name in TABLE_HOLDERS or _is_part(tree))
+    assert allowed or not _names_tables(tree), (
+        f"{path.relative_to(SRC)} names WorldTables: only World, its parts and its "
+        "snapshots hold the tables; ask the world (or the right part) instead"
+    )
+
+
+def test_the_facade_stays_small() -> None:
+    from robocram.world import World
+
+    public = [n for n in vars(World) if not n.startswith("_") and _callable_or_property(World, n)]
+    assert len(public) <= WORLD_PUBLIC_METHODS_MAX, (
+        f"World has {len(public)} public methods ({sorted(public)}); put the new one in a part"
+    )
+
+
+def _callable_or_property(cls: type, name: str) -> bool:
+    value = vars(cls)[name]
+    return callable(value) or isinstance(value, property)
 
 
 def _foreign_private(tree: ast.Module) -> list[str]:

@@ -40,13 +40,15 @@ def test_a_cylinder_needs_its_radius_and_a_box_its_half_diagonal(
     kitchen: EnvironmentScene,
 ) -> None:
     world = kitchen.world
-    cup = pybullet.getCollisionShapeData(_body(world, "cup-1"), -1, physicsClientId=world.client)
+    cup = pybullet.getCollisionShapeData(
+        _body(world, "cup-1"), -1, physicsClientId=world.physics.client()
+    )
     radius = cup[0][3][1]  # a cylinder's (length, radius, ...)
     assert footprint_radius(world, world.object("cup-1")) == pytest.approx(
         radius, abs=FOOTPRINT_SLACK + 0.001
     )
     spoon = pybullet.getCollisionShapeData(
-        _body(world, "spoon-1"), -1, physicsClientId=world.client
+        _body(world, "spoon-1"), -1, physicsClientId=world.physics.client()
     )
     sx, sy, _ = spoon[0][3]
     assert footprint_radius(world, world.object("spoon-1")) == pytest.approx(
@@ -57,7 +59,7 @@ def test_a_cylinder_needs_its_radius_and_a_box_its_half_diagonal(
 def test_a_round_bowl_needs_less_than_its_bounds_say(kitchen: EnvironmentScene) -> None:
     world = kitchen.world
     bowl = world.object("bowl-1")
-    low, high = pybullet.getAABB(bowl.body_id, physicsClientId=world.client)
+    low, high = pybullet.getAABB(bowl.body_id, physicsClientId=world.physics.client())
     rim = (high[0] - low[0]) / 2  # the bowl is round: its bounds' half width is its rim
     assert footprint_radius(world, bowl) == pytest.approx(rim, abs=0.004)
     assert bounds_radius(world, bowl) == pytest.approx(rim * math.sqrt(2), abs=0.002)
@@ -80,7 +82,7 @@ def test_a_second_bowl_fits_beside_the_first_as_near_the_wall_as_the_margin_allo
         assert poses
         kitchen_id = _body(world, "kitchen")
         drawer = world.object("kitchen").link_index[DRAWER]
-        low, high = pybullet.getAABB(kitchen_id, drawer, physicsClientId=world.client)
+        low, high = pybullet.getAABB(kitchen_id, drawer, physicsClientId=world.physics.client())
         for pose in poses:
             world.set_pose("bowl-2", pose)
             x, y, _ = pose.position
@@ -88,7 +90,7 @@ def test_a_second_bowl_fits_beside_the_first_as_near_the_wall_as_the_margin_allo
             assert math.dist((x, y), kept.position[:2]) <= AT_DISTANCE + 0.005
             near = pybullet.getClosestPoints(
                 _body(world, "bowl-2"), _body(world, "bowl-1"), 0.01,
-                physicsClientId=world.client,
+                physicsClientId=world.physics.client(),
             )  # fmt: skip
             assert not near  # at least 1 cm from the first bowl
     finally:

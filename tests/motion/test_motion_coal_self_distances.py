@@ -42,7 +42,7 @@ def test_coal_bounds_never_exceed_pybullet(scene: tuple[World, str]) -> None:
     for arm in description.arms.values():
         joints = list(arm.joints)
         check = SelfPathCheck.of(RobotHandle.of(world, robot), joints)
-        limits = [world.joint_limits(robot, j) for j in joints]
+        limits = [world.bodies.joint_limits(robot, j) for j in joints]
         start = world.joint_states(robot)
         for _ in range(SAMPLES):
             q = np.array([rng.uniform(max(lim.lower, -3.0), min(lim.upper, 3.0)) for lim in limits])
@@ -74,7 +74,7 @@ def test_colliding_agrees_with_pybullet(scene: tuple[World, str]) -> None:
     for arm in description.arms.values():
         joints = list(arm.joints)
         check = SelfPathCheck.of(RobotHandle.of(world, robot), joints)
-        limits = [world.joint_limits(robot, j) for j in joints]
+        limits = [world.bodies.joint_limits(robot, j) for j in joints]
         start = world.joint_states(robot)
         for _ in range(SAMPLES):
             q = [rng.uniform(max(lim.lower, -3.0), min(lim.upper, 3.0)) for lim in limits]

@@ -49,7 +49,7 @@ def _judged_pairs(world: World, robot: str) -> list[tuple[int, int, str, str]]:
 
 def _depths(world: World, robot: str, pairs: list[tuple[int, int, str, str]]) -> np.ndarray:
     body = world.object(robot).body_id
-    cid = world.physics_client()
+    cid = world.physics.client()
     out = np.zeros(len(pairs))
     for k, (i, j, _, _) in enumerate(pairs):
         points = pybullet.getClosestPoints(

@@ -44,7 +44,7 @@ def _body(world: World, name: str) -> int:
 
 def _position(world: World, name: str) -> tuple[float, float, float]:
     position, _ = pybullet.getBasePositionAndOrientation(
-        _body(world, name), physicsClientId=world.client
+        _body(world, name), physicsClientId=world.physics.client()
     )
     return (position[0], position[1], position[2])
 
@@ -52,32 +52,41 @@ def _position(world: World, name: str) -> tuple[float, float, float]:
 def _tilt(world: World, name: str) -> float:
     """The angle [rad] between the body's z axis and the vertical."""
     _, orientation = pybullet.getBasePositionAndOrientation(
-        _body(world, name), physicsClientId=world.client
+        _body(world, name), physicsClientId=world.physics.client()
     )
     matrix = pybullet.getMatrixFromQuaternion(orientation)
     return math.acos(max(-1.0, min(1.0, matrix[8])))
 
 
 def _bottom(world: World, name: str) -> float:
-    low, _ = pybullet.getAABB(_body(world, name), physicsClientId=world.client)
+    low, _ = pybullet.getAABB(_body(world, name), physicsClientId=world.physics.client())
     return float(low[2])
 
 
 def _joint(world: World, body: str, joint: str) -> float:
     bid = _body(world, body)
-    for index in range(pybullet.getNumJoints(bid, physicsClientId=world.client)):
-        info = pybullet.getJointInfo(bid, index, physicsClientId=world.client)
+    for index in range(pybullet.getNumJoints(bid, physicsClientId=world.physics.client())):
+        info = pybullet.getJointInfo(bid, index, physicsClientId=world.physics.client())
         if info[1].decode() == joint:
-            return float(pybullet.getJointState(bid, index, physicsClientId=world.client)[0])
+            return float(
+                pybullet.getJointState(bid, index, physicsClientId=world.physics.client())[0]
+            )
     raise KeyError(joint)
 
 
 def _touches_link(world: World, name: str, body: str, link: str) -> bool:
     bid = _body(world, body)
-    for index in range(pybullet.getNumJoints(bid, physicsClientId=world.client)):
-        if pybullet.getJointInfo(bid, index, physicsClientId=world.client)[12].decode() == link:
+    for index in range(pybullet.getNumJoints(bid, physicsClientId=world.physics.client())):
+        if (
+            pybullet.getJointInfo(bid, index, physicsClientId=world.physics.client())[12].decode()
+            == link
+        ):
             points = pybullet.getClosestPoints(
-                _body(world, name), bid, 0.005, linkIndexB=index, physicsClientId=world.client
+                _body(world, name),
+                bid,
+                0.005,
+                linkIndexB=index,
+                physicsClientId=world.physics.client(),
             )
             return bool(points)
     raise KeyError(link)

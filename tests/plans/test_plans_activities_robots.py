@@ -35,7 +35,9 @@ def test_the_hsr_sets_the_table_for_two() -> None:
         with simulated_robot(world, scene.robot):
             perform(an.action(type="setting-table", people=2))
         for name in ("bowl-1", "cup-1", "spoon-1", "milk-1"):
-            low, _ = pybullet.getAABB(world.object(name).body_id, physicsClientId=world.client)
+            low, _ = pybullet.getAABB(
+                world.object(name).body_id, physicsClientId=world.physics.client()
+            )
             assert low[2] == pytest.approx(TABLE_TOP, abs=0.01), name
     finally:
         world.close()
@@ -49,7 +51,9 @@ def test_the_drafted_fetch_opens_the_bowls_drawer() -> None:
             open_from_front(BOWLS)
         body = world.object("kitchen")
         index = body.joint_index[f"{BOWLS}_joint"]
-        opened = pybullet.getJointState(body.body_id, index, physicsClientId=world.client)[0]
+        opened = pybullet.getJointState(
+            body.body_id, index, physicsClientId=world.physics.client()
+        )[0]
         assert opened == pytest.approx(0.4, abs=0.01)
     finally:
         world.close()

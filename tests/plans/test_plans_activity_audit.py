@@ -41,7 +41,7 @@ def test_a_traced_spoon_setting_and_clearing_is_clean(tmp_path: Path) -> None:
     drawer = kitchen.link_index[DRAWER]
     near = pybullet.getClosestPoints(
         world.object("spoon-1").body_id, kitchen.body_id, 0.005, linkIndexB=drawer,
-        physicsClientId=world.physics_client(),
+        physicsClientId=world.physics.client(),
     )  # fmt: skip
     assert near  # back in its drawer
     world.close()

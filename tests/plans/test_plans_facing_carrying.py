@@ -29,7 +29,7 @@ def _base(scene: TabletopScene) -> tuple[float, float, float]:
     """The base's (x, y, yaw) [m, m, rad] as PyBullet has it."""
     world = scene.world
     position, orientation = pybullet.getBasePositionAndOrientation(
-        world.object(scene.robot).body_id, physicsClientId=world.client
+        world.object(scene.robot).body_id, physicsClientId=world.physics.client()
     )
     yaw = pybullet.getEulerFromQuaternion(orientation)[2]
     return position[0], position[1], yaw
@@ -62,15 +62,15 @@ def test_carrying_tucks_the_held_mug_in_and_needs_something_held(pr2: TabletopSc
     desc = world.robot(pr2.robot).description
     body = world.object(pr2.robot).body_id
     names = {
-        pybullet.getJointInfo(body, i, physicsClientId=world.client)[1].decode(): i
-        for i in range(pybullet.getNumJoints(body, physicsClientId=world.client))
+        pybullet.getJointInfo(body, i, physicsClientId=world.physics.client())[1].decode(): i
+        for i in range(pybullet.getNumJoints(body, physicsClientId=world.physics.client()))
     }
     for joint, value in desc.arms[held.arm].parking.items():
-        now = pybullet.getJointState(body, names[joint], physicsClientId=world.client)[0]
+        now = pybullet.getJointState(body, names[joint], physicsClientId=world.physics.client())[0]
         off = math.remainder(now - value, 2 * math.pi)
         assert off == pytest.approx(0.0, abs=0.01), joint
     mug, _ = pybullet.getBasePositionAndOrientation(
-        world.object("mug-1").body_id, physicsClientId=world.client
+        world.object("mug-1").body_id, physicsClientId=world.physics.client()
     )
     tool = world.link_pose(pr2.robot, desc.arms[held.arm].tool_frame).position
     assert math.dist(mug, tool) < 0.15  # still in the hand, tucked in with it

@@ -24,7 +24,7 @@ def pr2() -> Iterator[TabletopScene]:
 
 def test_open_close_and_a_value_move_the_fingers_there(pr2: TabletopScene) -> None:
     world = pr2.world
-    limits = world.joint_limits("pr2", FINGER)
+    limits = world.bodies.joint_limits("pr2", FINGER)
     with simulated_robot(world, "pr2"):
         perform(an.action(type="setting-gripper", gripper="right", motion="open"))
         assert world.joint_states("pr2")[FINGER] == pytest.approx(limits.upper, abs=1e-3)

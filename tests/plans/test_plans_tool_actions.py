@@ -40,7 +40,7 @@ BOWL_RIM = 0.06  # [m]
 
 def _raw_position(world: World, name: str) -> tuple[float, float, float]:
     pos, _ = pybullet.getBasePositionAndOrientation(
-        world.object(name).body_id, physicsClientId=world.physics_client()
+        world.object(name).body_id, physicsClientId=world.physics.client()
     )
     return (pos[0], pos[1], pos[2])
 
@@ -107,7 +107,7 @@ def _replayed_cells(
     ys = np.arange(y - sy / 2 + 0.0025, y + sy / 2, 0.005)
     gx, gy = np.meshgrid(xs, ys, indexing="ij")
     marked = np.zeros(gx.shape, dtype=bool)
-    body, cid = world.object("sponge-1").body_id, world.physics_client()
+    body, cid = world.object("sponge-1").body_id, world.physics.client()
     for trajectory in trajectories:
         for point in trajectory.points:
             world.set_joint_states(
@@ -149,7 +149,7 @@ def test_cutting_gives_the_slices_of_even_widths(tmp_path: Path) -> None:
         result = perform(an.action(type="cutting", object="bread-1", tool="knife-1", slices=4))
     assert isinstance(result, CuttingResult) and len(result.slices) == 4
     assert "bread-1" not in [o.name for o in world.objects()]
-    cid = world.physics_client()
+    cid = world.physics.client()
     widths = []
     for name in result.slices:
         low, high = pybullet.getAABB(world.object(name).body_id, physicsClientId=cid)
@@ -176,7 +176,7 @@ def test_mixing_keeps_the_spoon_clear_of_the_rim(tmp_path: Path) -> None:
     ):
         result = perform(an.action(type="mixing", container="bowl-1", tool="spoon-1"))
     assert result.fraction == 1.0
-    cid = world.physics_client()
+    cid = world.physics.client()
     spoon, bowl = world.object("spoon-1").body_id, world.object("bowl-1").body_id
     nearest = math.inf
     for trajectory in (t for t in seen if t.kind == "tool-path"):

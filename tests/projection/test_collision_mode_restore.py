@@ -12,13 +12,13 @@ def test_a_check_puts_back_what_it_moved_and_names_the_same_contacts() -> None:
     world = kitchen_scene("pr2").world
     robot = ProjectedRobot.of(world, "pr2")
     world.set_joint_states("pr2", {"head_pan_joint": 0.3})  # held where it was set
-    joints, held = world.joint_states("pr2"), world.held_joints("pr2")
+    joints, held = world.joint_states("pr2"), world.snapshots.held_joints("pr2")
     check = collision_check(robot, "right", "avoid_all")
     assert check is not None
     reaching = {"r_shoulder_lift_joint": -0.3, "r_elbow_flex_joint": -0.2,
                 "r_shoulder_pan_joint": 0.2}  # fmt: skip
     found = check(reaching)
-    assert world.joint_states("pr2") == joints and world.held_joints("pr2") == held
+    assert world.joint_states("pr2") == joints and world.snapshots.held_joints("pr2") == held
     world.set_joint_states("pr2", reaching)
     floors = [o for o in world.objects() if o.type == "floor"]
     touching = {(link, other.name) for link, other, _ in

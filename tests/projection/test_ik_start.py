@@ -67,7 +67,7 @@ def test_self_pairs_touching_at_the_start_stay_allowed(world: World) -> None:
 def test_a_query_puts_the_robot_back_once_even_when_it_raises(world: World) -> None:
     robot = ProjectedRobot.of(world, "pr2")
     world.set_pose("pr2", AT_THE_COUNTER)
-    joints, held = world.joint_states("pr2"), world.held_joints("pr2")
+    joints, held = world.joint_states("pr2"), world.snapshots.held_joints("pr2")
     candidates = [
         dict(zip(ARM, REACHING, strict=True)),
         dict(zip(ARM, ON_THE_BASE, strict=True)),  # a self pair: put back to ask the start
@@ -80,7 +80,7 @@ def test_a_query_puts_the_robot_back_once_even_when_it_raises(world: World) -> N
         seen = [check(candidate) for candidate in candidates]
         assert world.joint_states("pr2") != joints  # left at the last candidate
         raise RuntimeError("a stopped task")
-    assert world.joint_states("pr2") == joints and world.held_joints("pr2") == held
+    assert world.joint_states("pr2") == joints and world.snapshots.held_joints("pr2") == held
     assert seen == [_fresh(robot, candidate) for candidate in candidates]
 
 

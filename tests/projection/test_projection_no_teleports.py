@@ -165,7 +165,7 @@ def test_a_torso_goal_beyond_the_limit_moves_to_it_then_fails() -> None:
     ):
         ledger.perform(a.motion(type="moving-torso", joint_angle=0.5))
     (torso,) = ledger.seen
-    upper = world.joint_limits("pr2", "torso_lift_joint").upper
+    upper = world.bodies.joint_limits("pr2", "torso_lift_joint").upper
     assert info.value.reached == pytest.approx(upper, abs=TOL)
     assert torso.end["torso_lift_joint"] == pytest.approx(upper, abs=TOL)
     assert world.joint_states("pr2")["torso_lift_joint"] == pytest.approx(upper, abs=TOL)

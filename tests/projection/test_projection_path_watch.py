@@ -38,7 +38,7 @@ def robot() -> ProjectedRobot:
 
 def _gap(world: World, a: str, b: str) -> float:
     """The least distance [m] between two bodies, from PyBullet itself."""
-    cid = world.physics_client()
+    cid = world.physics.client()
     points = pybullet.getClosestPoints(
         world.object(a).body_id, world.object(b).body_id, 1.0, physicsClientId=cid
     )

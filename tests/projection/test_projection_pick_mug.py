@@ -23,7 +23,7 @@ ANGLE_TOL = 0.05  # [rad]
 
 def _assert_joints_within_limits(world: World, robot: str) -> None:
     for joint, value in world.joint_states(robot).items():
-        limits = world.joint_limits(robot, joint)
+        limits = world.bodies.joint_limits(robot, joint)
         assert limits.lower - 1e-9 <= value <= limits.upper + 1e-9, (joint, value, limits)
 
 
@@ -56,7 +56,9 @@ def test_the_same_plan_picks_the_mug(robot: str) -> None:
     assert mug_after.position[2] - mug_before.position[2] == pytest.approx(dz_tool, abs=0.01)
     assert math.dist(mug_after.position[:2], mug_before.position[:2]) < POSITION_TOL
     fingers = world.joint_states(robot)[arm.gripper_joints[0]]
-    assert fingers > world.joint_limits(robot, arm.gripper_joints[0]).lower + 1e-3  # holds it
+    assert (
+        fingers > world.bodies.joint_limits(robot, arm.gripper_joints[0]).lower + 1e-3
+    )  # holds it
 
 
 def test_detection_is_equated_and_in_the_base_frame() -> None:

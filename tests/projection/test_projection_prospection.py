@@ -17,7 +17,6 @@ from robocram.projection import simulated_robot
 from robocram.projection.prospection import prospect
 from robocram.scenes import KitchenScene, kitchen_scene
 from robocram.world import RobotHandle, World
-from robocram.world.world_state import WorldState
 
 TABLE = ("kitchen", "table_top")
 
@@ -31,7 +30,7 @@ def kitchen() -> Iterator[KitchenScene]:
 
 def _bodies(world: World) -> tuple[object, ...]:
     """Every body's pose, velocities and joints, attachments and held joints, exactly."""
-    state = WorldState.capture(world)
+    state = world.snapshots.capture()
     return (tuple(h.name for h in state.handles), state.bodies, state.attachments, state.holds)
 
 

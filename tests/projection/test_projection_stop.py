@@ -111,7 +111,7 @@ def test_a_stop_while_a_drawer_opens_leaves_no_attachment_and_the_bowl_in_the_dr
             tool = world.link_pose(robot.name, robot.arm("right").tool_frame)
             assert tool.distance_to(world.link_pose("kitchen", handle)) < POSITION_TOLERANCE
         assert world.bodies.attached_to("bowl-1") is None
-        assert all(att.obj != "bowl-1" for att in world.all_attachments())
+        assert all(att.obj != "bowl-1" for att in world.bodies.all_attachments())
         bowl = world.pose("bowl-1").position
         assert bowl[1] == pytest.approx(bowl_before[1] - opened, abs=1e-6)  # rode along
         assert bowl[0] == pytest.approx(bowl_before[0], abs=1e-6)
@@ -122,12 +122,12 @@ def test_a_stop_ends_a_simulation_after_a_whole_step(
 ) -> None:
     world = kitchen[0].world
     with world.snapshots.stored_state():
-        start = world.time
+        start = world.physics.time
         task = StopAtPoint(10)
         with binding_task(task), pytest.raises(TaskStopped):
             world.physics.simulate(2.0, stop_check=checkpoint)
         assert task.reached == 10
-        assert world.time - start == pytest.approx(9 * world.time_step, abs=1e-12)
+        assert world.physics.time - start == pytest.approx(9 * world.time_step, abs=1e-12)
 
 
 def test_a_stop_ends_the_prolog_simulate_predicate_of_a_task(
@@ -135,11 +135,11 @@ def test_a_stop_ends_the_prolog_simulate_predicate_of_a_task(
 ) -> None:
     world = kitchen[0].world
     with world.snapshots.stored_state():
-        start = world.time
+        start = world.physics.time
         task = StopAtPoint(4)
         with binding_task(task), pytest.raises(TaskStopped):
             world.kb.holds("world(W), simulate(W, 2.0)")
-        assert world.time - start < 4 * world.time_step + 1e-12
+        assert world.physics.time - start < 4 * world.time_step + 1e-12
 
 
 def test_a_stopped_plan_does_not_drive_and_a_stopped_drive_is_whole(

@@ -1,7 +1,10 @@
-"""Loads of one robot file share one parsed model; a changed file is parsed anew."""
+"""Loads of one robot file share one parsed model while it is held; a changed file is
+parsed anew, and a model nobody holds is not kept by the memo."""
 
 from __future__ import annotations
 
+import gc
+import weakref
 from pathlib import Path
 
 import pytest
@@ -20,7 +23,7 @@ ARM = """<robot name="arm">
 def test_equal_bytes_share_a_model_and_a_changed_file_is_read_again(tmp_path: Path) -> None:
     file = tmp_path / "arm.urdf"
     file.write_text(ARM.format(upper=1.0))
-    memo: ModelMemo[RobotModel] = ModelMemo(size=2)
+    memo: ModelMemo[RobotModel] = ModelMemo()
     built: list[RobotModel] = []
 
     def build() -> RobotModel:
@@ -46,18 +49,21 @@ def test_a_shared_model_warns_again_on_every_load(tmp_path: Path) -> None:
             RobotModel.from_file(file)
 
 
-def test_the_memo_keeps_at_most_its_size(tmp_path: Path) -> None:
-    memo: ModelMemo[RobotModel] = ModelMemo(size=2)
-    files = []
-    for k in range(3):
-        files.append(tmp_path / f"arm{k}.urdf")
-        files[-1].write_text(ARM.format(upper=1.0 + k))
-    models = [
-        memo.model(f, (), (), (), lambda f=f: RobotModel.from_string(f.read_text())) for f in files
-    ]
-    rebuilt = memo.model(files[0], (), (), (), lambda: RobotModel.from_string(files[0].read_text()))
-    assert rebuilt is not models[0]  # the oldest was dropped
-    assert (
-        memo.model(files[2], (), (), (), lambda: RobotModel.from_string(files[2].read_text()))
-        is models[2]
-    )
+def test_the_memo_keeps_no_model_alive(tmp_path: Path) -> None:
+    memo: ModelMemo[RobotModel] = ModelMemo()
+    file = tmp_path / "arm.urdf"
+    file.write_text(ARM.format(upper=1.0))
+    built: list[int] = []
+
+    def build() -> RobotModel:
+        built.append(1)
+        return RobotModel.from_string(file.read_text())
+
+    held = memo.model(file, (), (), (), build)
+    assert memo.model(file, (), (), (), build) is held and len(memo) == 1
+    dead = weakref.ref(held)
+    del held
+    gc.collect()
+    assert dead() is None and len(memo) == 0  # nothing but its users kept it
+    again = memo.model(file, (), (), (), build)
+    assert again.joints["j"].upper == 1.0 and len(built) == 2  # parsed anew

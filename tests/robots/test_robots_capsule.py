@@ -38,6 +38,6 @@ def test_a_capsule_is_a_cylinder_with_round_ends(tmp_path: Path) -> None:
     with World() as world:
         robot = world.add_robot(RobotDescription("stick", path, base_frame="base_link"))
         index = robot.link_index["pole"]
-        low, high = pybullet.getAABB(robot.body_id, index, physicsClientId=world.client)
+        low, high = pybullet.getAABB(robot.body_id, index, physicsClientId=world.physics.client())
         assert high[2] - low[2] == pytest.approx(0.7, abs=0.01)  # 0.6 + two 0.05 caps
         assert low[2] == pytest.approx(0.05 + 0.4 - 0.35, abs=0.01)

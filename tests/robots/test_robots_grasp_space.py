@@ -8,6 +8,7 @@ rim. Judged on the loaded world by raw PyBullet: link bounds and closest points.
 
 from __future__ import annotations
 
+import gc
 import warnings
 from collections.abc import Iterator
 from pathlib import Path
@@ -39,7 +40,7 @@ def _link_state(world: World, link: str) -> tuple[np.ndarray, np.ndarray]:
     obj = world.object("fetch")
     state = pybullet.getLinkState(
         obj.body_id, obj.link_index[link], computeForwardKinematics=True,
-        physicsClientId=world.client,
+        physicsClientId=world.physics.client(),
     )  # fmt: skip
     rotation = np.reshape(pybullet.getMatrixFromQuaternion(state[5]), (3, 3))
     return np.asarray(state[4]), rotation
@@ -58,10 +59,10 @@ def test_the_hand_ends_half_the_opening_behind_the_tool_frame(
     assert {"wrist_roll_link", "gripper_link"} <= set(hand)
     for link in hand:
         if not pybullet.getCollisionShapeData(obj.body_id, obj.link_index[link],
-                                              physicsClientId=world.client):  # fmt: skip
+                                              physicsClientId=world.physics.client()):  # fmt: skip
             continue  # the palm's box lay wholly in the grasp space: dropped
         low, high = pybullet.getAABB(obj.body_id, obj.link_index[link],
-                                     physicsClientId=world.client)  # fmt: skip
+                                     physicsClientId=world.physics.client())  # fmt: skip
         corners = np.array([[x, y, z] for x in (low[0], high[0]) for y in (low[1], high[1])
                             for z in (low[2], high[2])])  # fmt: skip
         ahead = float(np.max((corners - tool) @ approach))
@@ -77,7 +78,7 @@ def test_the_closed_fingers_meet(fetch: tuple[World, LoadedDescription]) -> None
         world.set_joint_states("fetch", arm.gripper.at(0.0))
         left, right = (obj.link_index[link] for link in arm.gripper_links)
         near = pybullet.getClosestPoints(obj.body_id, obj.body_id, 0.05, left, right,
-                                         physicsClientId=world.client)  # fmt: skip
+                                         physicsClientId=world.physics.client())  # fmt: skip
     assert min(p[8] for p in near) == pytest.approx(0.0, abs=0.003)
 
 
@@ -89,6 +90,7 @@ def test_a_robot_with_its_meshes_is_left_alone() -> None:
 def test_loading_again_shares_the_cut_model(fetch: tuple[World, LoadedDescription]) -> None:
     """The cut model is kept with the parsed one: a second load builds no new kinematics."""
     _, desc = fetch
+    gc.collect()  # the memo holds the parse weakly: the cut model must hold it
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         again = load_description(str(FETCH))

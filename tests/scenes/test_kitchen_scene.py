@@ -82,7 +82,7 @@ def test_every_container_opens_by_its_joint_and_moves_its_handle(pr2_kitchen: Wo
     with world.snapshots.stored_state():
         for c in containers:
             before = world.link_pose("kitchen", c["H"]).position
-            upper = world.joint_limits("kitchen", c["J"]).upper
+            upper = world.bodies.joint_limits("kitchen", c["J"]).upper
             world.set_joint_states("kitchen", {c["J"]: upper})
             moved = math.dist(before, world.link_pose("kitchen", c["H"]).position)
             if c["K"] == "drawer":

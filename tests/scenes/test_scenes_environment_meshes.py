@@ -98,7 +98,7 @@ def test_env_draft_takes_package_path_and_the_scene_loads_the_mesh(tmp_path: Pat
     with World() as world:
         table = world.add_urdf("dining", loadable)
         index = table.link_index["dining_table"]
-        low, high = pybullet.getAABB(table.body_id, index, physicsClientId=world.client)
+        low, high = pybullet.getAABB(table.body_id, index, physicsClientId=world.physics.client())
         extents = [h - lo for lo, h in zip(low, high, strict=True)]
     assert extents == pytest.approx(list(TABLE), abs=0.02)  # Bullet's margin
 

@@ -36,7 +36,7 @@ def _world() -> World:
 
 def _position(world: World, name: str) -> tuple[float, ...]:
     position, _ = pybullet.getBasePositionAndOrientation(
-        world.object(name).body_id, physicsClientId=world.physics_client()
+        world.object(name).body_id, physicsClientId=world.physics.client()
     )
     return tuple(position)
 
@@ -54,7 +54,7 @@ def test_a_state_adds_what_the_run_added_and_removes_what_it_removed() -> None:
         assert {o.name for o in replay.objects()} == {"floor", "grain-1"}
         assert _position(replay, "grain-1") == pytest.approx((0.1, 0.2, 0.3), abs=1e-9)
         low, high = pybullet.getAABB(
-            replay.object("grain-1").body_id, physicsClientId=replay.physics_client()
+            replay.object("grain-1").body_id, physicsClientId=replay.physics.client()
         )
         assert high[0] - low[0] == pytest.approx(0.01, abs=0.002)  # its recipe's size
         before.apply(replay, scene)  # going back: the loaf from the scene again

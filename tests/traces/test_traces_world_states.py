@@ -95,7 +95,7 @@ def test_a_world_simulated_between_motions_is_kept_before_the_next(tmp_path: Pat
             world.set_pose("mug-1", Pose((x + 0.05, y, z + 0.03)))
             world.physics.simulate(0.3)  # it drops onto the table, 5 cm along
             settled, _ = pybullet.getBasePositionAndOrientation(
-                mug.body_id, physicsClientId=world.client
+                mug.body_id, physicsClientId=world.physics.client()
             )
             perform(a.motion(type="moving-torso", joint_angle=0.15))
         run = tracer.runs[-1]

@@ -25,7 +25,7 @@ def world() -> Iterator[World]:
 
 
 def _bodies(world: World) -> int:
-    return int(pybullet.getNumBodies(physicsClientId=world.client))
+    return int(pybullet.getNumBodies(physicsClientId=world.physics.client()))
 
 
 def _chain(n_joints: int, name: str = "snake") -> str:
@@ -108,7 +108,7 @@ def test_a_latin1_file_declaring_its_encoding_loads(world: World, tmp_path: Path
     urdf.write_bytes(text.encode("latin-1"))
     world.add_urdf("latin", urdf)
     assert world.link_names("latin") == ["l0", "bras_\xe9"]
-    assert world.joint_limits("latin", "j0").upper == pytest.approx(1.0)
+    assert world.bodies.joint_limits("latin", "j0").upper == pytest.approx(1.0)
 
 
 def test_a_utf16_file_loads(world: World, tmp_path: Path) -> None:

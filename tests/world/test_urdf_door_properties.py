@@ -103,13 +103,13 @@ def test_add_urdf_loads_what_the_parser_reads_or_refuses_cleanly(
             with pytest.raises(BodyLoadError):
                 world.add_urdf("drawn", path)
             assert [o.name for o in world.objects()] == ["box"]
-            assert pybullet.getNumBodies(physicsClientId=world.client) == 1
+            assert pybullet.getNumBodies(physicsClientId=world.physics.client()) == 1
             return
         world.add_urdf("drawn", path)
         assert set(world.link_names("drawn")) == set(model.links)
         assert set(world.joint_states("drawn")) == {j.name for j in model.movable_joints()}
         for joint in model.movable_joints():
-            limits = world.joint_limits("drawn", joint.name)
+            limits = world.bodies.joint_limits("drawn", joint.name)
             assert (limits.lower, limits.upper) == pytest.approx((joint.lower, joint.upper))
 
 

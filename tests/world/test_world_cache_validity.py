@@ -206,7 +206,7 @@ def test_every_cache_answers_as_a_fresh_build_after(case: Case) -> None:
 def _assert_same_as_pybullet(world: World) -> None:
     """The kept obstacle bounds are PyBullet's bounds of each link, to the bit."""
     boxes = world.contacts.obstacle_boxes(["pr2"])
-    cid = world.physics_client()
+    cid = world.physics.client()
     for obj, index, low, high in zip(
         boxes.objects, boxes.indices, boxes.low, boxes.high, strict=True
     ):
@@ -217,7 +217,7 @@ def _assert_same_as_pybullet(world: World) -> None:
 def _assert_radii_hold_the_links(world: World) -> None:
     """Each kept link radius (taken once per body, at whatever pose it stood) holds the
     link's shapes now: their bounds, as PyBullet reads them, lie within it."""
-    cid = world.physics_client()
+    cid = world.physics.client()
     for obj in world.objects():
         radii = world.contacts.link_radii(obj)
         for link in world.link_names(obj):
@@ -242,7 +242,7 @@ def test_reading_leaves_every_counter_alone() -> None:
             world.aabb(obj)
             world.contacts.link_aabbs(obj)
             world.contacts.link_radii(obj)
-            world.held_joints(obj)
+            world.snapshots.held_joints(obj)
             world.bodies.link_frames(obj, world.link_names(obj)[:3])
         world.link_pose("pr2", PALM)
         world.contacts.collisions("pr2")

@@ -55,35 +55,35 @@ def test_contact_points_filtered_by_link() -> None:
 
 def test_attachments_are_public_state(world: World) -> None:
     world.attach("b", "a", "link0")
-    [att] = world.all_attachments()
+    [att] = world.bodies.all_attachments()
     assert (att.obj, att.robot, att.link) == ("b", "a", "link0")
     assert att.link_T_obj.position == pytest.approx((0.19, 0.0, 0.0), abs=1e-6)
     moved = Attachment("b", "a", "link0", Pose((0.0, 0.0, 0.3)))
-    world.set_attachments([moved])
+    world.snapshots.set_attachments([moved])
     world.set_pose("a", Pose((1.0, 0.0, 0.1)))
     assert world.pose("b").position == pytest.approx((1.0, 0.0, 0.4), abs=1e-6)
     with pytest.raises(UnknownObjectError):
-        world.set_attachments([Attachment("nope", "a", "link0", Pose())])
-    assert world.all_attachments() == [moved]  # a bad list changes nothing
+        world.snapshots.set_attachments([Attachment("nope", "a", "link0", Pose())])
+    assert world.bodies.all_attachments() == [moved]  # a bad list changes nothing
 
 
 def test_held_joints_are_public_state() -> None:
     with World() as world:
         world.add_robot("pr2")
         world.set_joint_states("pr2", {"torso_lift_joint": 0.2})
-        assert world.held_joints("pr2")["torso_lift_joint"] == pytest.approx(0.2)
-        world.set_held_joints("pr2", {"torso_lift_joint": 0.1})
-        assert world.held_joints("pr2") == {"torso_lift_joint": 0.1}
-        world.step()  # holding puts the joint at the held value
+        assert world.snapshots.held_joints("pr2")["torso_lift_joint"] == pytest.approx(0.2)
+        world.snapshots.set_held_joints("pr2", {"torso_lift_joint": 0.1})
+        assert world.snapshots.held_joints("pr2") == {"torso_lift_joint": 0.1}
+        world.physics.step()  # holding puts the joint at the held value
         assert world.joint_states("pr2")["torso_lift_joint"] == pytest.approx(0.1)
         with pytest.raises(UnknownJointError, match="base_footprint_joint"):
-            world.set_held_joints("pr2", {"base_footprint_joint": 0.0})
+            world.snapshots.set_held_joints("pr2", {"base_footprint_joint": 0.0})
 
 
 def test_insert_brings_back_a_removed_handle(world: World) -> None:
     box = world.object("c")
     world.remove(box)
-    assert world.insert(box, Pose((2.0, 0.0, 0.1))) is box
+    assert world.bodies.insert(box, Pose((2.0, 0.0, 0.1))) is box
     assert world.object("c") is box
     assert world.pose("c").position == pytest.approx((2.0, 0.0, 0.1), abs=1e-9)
 

@@ -39,7 +39,7 @@ def world() -> Iterator[World]:
 
 
 def _bodies(world: World) -> int:
-    return int(pybullet.getNumBodies(physicsClientId=world.client))
+    return int(pybullet.getNumBodies(physicsClientId=world.physics.client()))
 
 
 def _tiago_dual() -> Path:

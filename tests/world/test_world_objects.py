@@ -48,7 +48,7 @@ def test_catalogue_items_are_typed_and_sized(world: World) -> None:
     assert (mug.type, cereal.type) == ("mug", "cereal_box")
     low, high = world.aabb(mug)
     assert high[2] - low[2] == pytest.approx(0.106, abs=0.005)  # pybullet's own mug
-    mass = pybullet.getDynamicsInfo(mug.body_id, -1, physicsClientId=world.client)[0]
+    mass = pybullet.getDynamicsInfo(mug.body_id, -1, physicsClientId=world.physics.client())[0]
     assert mass == pytest.approx(0.3)
     with pytest.raises(UnknownItemError, match="did you mean 'bowl'"):
         world.add_item("b", "bowel")

@@ -79,11 +79,11 @@ def test_out_of_range_torso_is_clamped_and_reported(world: World, pr2: RobotObje
     states = world.joint_states(pr2)
     assert states["torso_lift_joint"] == pytest.approx(0.31, abs=1e-9)
     assert states["head_pan_joint"] == pytest.approx(0.2, abs=1e-9)
-    assert world.joint_limits(pr2, "torso_lift_joint").upper == pytest.approx(0.31)
+    assert world.bodies.joint_limits(pr2, "torso_lift_joint").upper == pytest.approx(0.31)
 
 
 def test_continuous_joints_are_never_clamped(world: World, pr2: RobotObject) -> None:
-    limits = world.joint_limits(pr2, "r_wrist_roll_joint")
+    limits = world.bodies.joint_limits(pr2, "r_wrist_roll_joint")
     assert limits.lower == -math.inf and limits.upper == math.inf
     assert world.set_joint_states(pr2, {"r_wrist_roll_joint": 7.5}) == []
     assert world.joint_states(pr2)["r_wrist_roll_joint"] == pytest.approx(7.5)
@@ -154,7 +154,7 @@ def test_robots_start_with_every_joint_within_its_limits() -> None:
         boxy = world.add_robot("boxy")
         states = world.joint_states(boxy)
         for name, value in states.items():
-            limits = world.joint_limits(boxy, name)
+            limits = world.bodies.joint_limits(boxy, name)
             assert limits.lower - 1e-9 <= value <= limits.upper + 1e-9, name
         assert states["left_gripper_joint"] == pytest.approx(0.0065, abs=1e-9)  # 0 is outside
         assert states["left_gripper_base_gripper_left_joint"] == pytest.approx(-0.00325, abs=1e-9)
@@ -167,9 +167,9 @@ def test_a_joint_let_go_is_stiff_again_after_being_held() -> None:
         world.bodies.add_floor()
         pr2 = world.add_robot("pr2")
         world.physics.simulate(0.05)  # every joint held: their motors are off
-        held = world.held_joints(pr2)
+        held = world.snapshots.held_joints(pr2)
         del held["r_shoulder_lift_joint"]
-        world.set_held_joints(pr2, held)
+        world.snapshots.set_held_joints(pr2, held)
         world.physics.simulate(0.3)
         assert world.joint_states(pr2)["r_shoulder_lift_joint"] == pytest.approx(0.0, abs=0.01)
         assert world.joint_states(pr2)["l_shoulder_lift_joint"] == 0.0  # still held exactly

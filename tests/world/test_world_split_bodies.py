@@ -44,9 +44,10 @@ def test_the_big_kitchen_loads_as_several_bodies_under_one_name(
     kitchen = world.object("kitchen")
     assert len(model.joints) > MAX_LINKS
     assert len(kitchen.bodies) >= 2
-    assert pybullet.getNumBodies(physicsClientId=world.client) == 1 + len(kitchen.bodies)
+    assert pybullet.getNumBodies(physicsClientId=world.physics.client()) == 1 + len(kitchen.bodies)
     assert all(
-        pybullet.getNumJoints(b, physicsClientId=world.client) <= MAX_LINKS for b in kitchen.bodies
+        pybullet.getNumJoints(b, physicsClientId=world.physics.client()) <= MAX_LINKS
+        for b in kitchen.bodies
     )
     assert set(world.link_names(kitchen)) == set(model.links)
     assert set(world.joint_states(kitchen)) == {j.name for j in model.movable_joints()}

@@ -81,13 +81,20 @@ def _snapshot(world: World) -> dict[str, Any]:
             o.type,
             world.pose(o).matrix(),
             world.joint_states(o),
-            world.held_joints(o),
+            world.snapshots.held_joints(o),
         )
         for o in world.objects()
     }
-    attachments = {(a.obj, a.robot, a.link): a.link_T_obj.matrix() for a in world.all_attachments()}
+    attachments = {
+        (a.obj, a.robot, a.link): a.link_T_obj.matrix() for a in world.bodies.all_attachments()
+    }
     facts = sorted(str(a["R"]) for a in world.kb.query("robot(R)"))
-    return {"objects": objects, "attachments": attachments, "facts": facts, "time": world.time}
+    return {
+        "objects": objects,
+        "attachments": attachments,
+        "facts": facts,
+        "time": world.physics.time,
+    }
 
 
 def _assert_same(before: dict[str, Any], after: dict[str, Any]) -> None:

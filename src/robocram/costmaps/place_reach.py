@@ -37,7 +37,7 @@ def held_objects(world: World, robot: RobotObject) -> list[tuple[str, Pose]]:
     """``(arm, object pose in the arm's tool frame)`` for each object the robot's hands hold."""
     desc = robot.description
     held = []
-    for attachment in world.all_attachments():
+    for attachment in world.bodies.all_attachments():
         if attachment.robot != robot.name:
             continue
         for name, spec in desc.arms.items():

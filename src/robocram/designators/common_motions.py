@@ -36,7 +36,6 @@ them to its arms. Repeated ``gripper`` properties give one command per gripper, 
 from __future__ import annotations
 
 import functools
-import weakref
 
 from robocram.designators.errors import DesignatorArgumentError
 from robocram.designators.motion_table import motion_types
@@ -46,9 +45,6 @@ from robocram.logic import KnowledgeBase
 
 COMMON_MOTIONS_GROUP = "common_motions"
 FAMILY_GROUPS = {"common": COMMON_MOTIONS_GROUP, "flying": "flying_motions"}
-# the text last consulted per knowledge base and family: entering projection again with
-# the same motion table (every ``simulated_robot`` does) need not parse it again
-_INSTALLED: weakref.WeakKeyDictionary[KnowledgeBase, dict[str, str]] = weakref.WeakKeyDictionary()
 
 _HELPERS = """
 common_target_pose(Target, Pose) :- loc_desig(Target), !, designator_grounding(Target, Pose).
@@ -74,17 +70,11 @@ def install_motion_family(kb: KnowledgeBase, family: str) -> KnowledgeBase:
     install_designator_predicates(kb)
     if family != "common" and not kb.defines("common_target_pose/2"):
         install_motion_family(kb, "common")
-    text = common_motions_text(family)
-    installed = _INSTALLED.setdefault(kb, {})
-    if installed.get(family) != text or not _still_there(kb, family):
-        kb.consult(text, group=FAMILY_GROUPS[family])
-        installed[family] = text
+    # entering projection again (every ``simulated_robot`` does) consults the same text:
+    # the knowledge base's own consult cache spares the parse, and the same clauses again
+    # leave its predicates as they are
+    kb.consult(common_motions_text(family), group=FAMILY_GROUPS[family])
     return kb
-
-
-def _still_there(kb: KnowledgeBase, family: str) -> bool:
-    """Whether the family's groundings are (still) in ``kb``: its first rule's predicate."""
-    return kb.defines(f"{family}_target_pose/2") if family == "common" else True
 
 
 def install_common_motions(kb: KnowledgeBase) -> KnowledgeBase:

@@ -16,7 +16,7 @@ import numpy as np
 from robocram.grasping.errors import GraspingError
 from robocram.kinematics import forward_kinematics
 from robocram.logic.lru import LRUCache
-from robocram.robots import RobotDescription
+from robocram.robots import RobotDescription, RobotModel
 
 FINGER_DEPTH = 0.06  # [m] how far past an object's edge the fingertips may reach
 Axis = tuple[float, float, float]
@@ -64,13 +64,18 @@ def approach_axis(desc: RobotDescription, arm: str) -> Axis:
     return _unit(-np.asarray((tool.inverse() * wrist).position), (0.0, 0.0, 1.0))
 
 
+HANDS_KEPT = 16  # descriptions' hands kept per model (one description per world's robot)
+
+
 class HandCache:
-    """The hands of recently asked descriptions, by identity (a description is immutable).
+    """The hands of recently asked descriptions of one model, by identity (a description
+    is immutable). Kept on the model (``model.derived(HandCache)``), so it lives exactly as
+    long as the model and no module holds one.
 
     Each entry holds its description, so an ``id`` is never reused while it is cached.
     """
 
-    def __init__(self, size: int = 16) -> None:
+    def __init__(self, model: RobotModel | None = None, size: int = HANDS_KEPT) -> None:
         self.entries: LRUCache[tuple[int, str], tuple[RobotDescription, Hand]] = LRUCache(size)
 
     def get(self, desc: RobotDescription, arm: str) -> Hand:
@@ -83,16 +88,15 @@ class HandCache:
         return hand
 
 
-HANDS = HandCache()  # a memo of pure results; descriptions are frozen
-
-
 def hand_of(desc: RobotDescription, arm: str) -> Hand:
-    """The hand of ``desc``'s ``arm`` (remembered per description).
+    """The hand of ``desc``'s ``arm`` (remembered on the description's model).
 
     Raises:
         GraspingError: the arm has no gripper (nothing to grasp with).
     """
-    return HANDS.get(desc, arm)
+    if desc.model is None:  # not loaded: no model to keep it on
+        return _read_hand(desc, arm)
+    return desc.model.derived(HandCache).get(desc, arm)
 
 
 def _read_hand(desc: RobotDescription, arm: str) -> Hand:

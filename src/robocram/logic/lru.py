@@ -2,8 +2,8 @@
 
 Caches keyed by program text grow with every distinct query or clause shape a long-lived
 process sees; the bound keeps memory flat while the working set stays hot. The same store
-keeps the kinematics' solvers and start tables, the parsed robot models and the hands read
-from descriptions: values derived from immutable inputs, so an entry is never stale, only
+keeps the kinematics' solvers and start tables and the hands read from descriptions (on
+their models): values derived from immutable inputs, so an entry is never stale, only
 dropped when the bound is reached. (What depends on a world that changes is kept in a
 ``world.Derived``, which compares the world's change counters.)
 """

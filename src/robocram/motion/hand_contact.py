@@ -16,7 +16,7 @@ from dataclasses import dataclass, replace
 
 from robocram.motion.contact_allowance import ContactAllowance
 from robocram.world import World
-from robocram.world.world_core import ObjectRef
+from robocram.world.world_tables import ObjectRef
 
 HAND_CONTACT_DEPTH = 0.005  # [m] the deepest the hand may go into what it acts on
 KEEP_DEPTH = 0.0005  # [m] a contact a motion starts with may deepen by this (numerics)

@@ -40,7 +40,7 @@ def grasp_in_handle(axis_in_tool: np.ndarray, roll: float) -> Pose:
 def handle_speed(world: World, part: str, joint: str, handle: str) -> float:
     """How far [m] the handle moves per unit of the joint [m | rad] near its current value."""
     start = world.joint_states(part)[joint]
-    limits = world.joint_limits(part, joint)
+    limits = world.bodies.joint_limits(part, joint)
     probe = 1e-3 if start + 1e-3 <= limits.upper else -1e-3
     before = world.link_pose(part, handle).position
     world.set_joint_states(part, {joint: start + probe})
@@ -66,7 +66,7 @@ def pull_frame(world: World, part: str, joint: str, handle: str) -> Pose:
     handle goes as the joint opens, level, with z up: the hand still comes from the front.
     """
     start = world.joint_states(part)[joint]
-    limits = world.joint_limits(part, joint)
+    limits = world.bodies.joint_limits(part, joint)
     far = limits.upper if abs(limits.upper) >= abs(limits.lower) else limits.lower
     toward = math.copysign(PROBE, far)  # the joint's opening way
     sign = 1.0 if abs(start + toward) <= abs(far) else -1.0  # at its far limit: step back

@@ -248,7 +248,7 @@ def move_joints(robot: ProjectedRobot, arm: str, configuration: object) -> dict[
     for joint in values:
         if joint not in allowed:
             raise unknown_name("joint", joint, f"{robot.name}'s {arm} arm", allowed)
-    limits = {j: robot.world.joint_limits(robot.name, j) for j in values}
+    limits = {j: robot.world.bodies.joint_limits(robot.name, j) for j in values}
     values = {j: finite_goal(j, v) for j, v in values.items()}  # inf is no limit to move to
     inside = {j: limits[j].clamp(v) for j, v in values.items()}  # moved to, then failed
     what = f"{robot.name}'s {arm} arm"

@@ -251,7 +251,7 @@ def move_part(
             reached and nothing rides along any more.
     """
     world = robot.world
-    limits = world.joint_limits(part, joint)
+    limits = world.bodies.joint_limits(part, joint)
     if not limits.lower - 1e-9 <= goal <= limits.upper + 1e-9:
         raise ProjectionError(
             f"goal {goal:.3f} of {part}'s joint {joint!r} is outside its limits "

@@ -90,7 +90,7 @@ def _move_to(
     """
     world = robot.world
     goal = {
-        j: world.joint_limits(robot.name, j).clamp(v)
+        j: world.bodies.joint_limits(robot.name, j).clamp(v)
         for j, v in gripper_of(robot, arm).at(fraction).items()
     }
     what = f"{robot.name}'s {arm} gripper"

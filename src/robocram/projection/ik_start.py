@@ -59,10 +59,10 @@ class IKStart:
         state = world.snapshots.body_state(body)  # its joints last, in joint_states' order
         names = body.movable_joints
         joints = dict(zip(names, state[len(state) - len(names) :], strict=True))
-        held = world.held_joints(body)
+        held = world.snapshots.held_joints(body)
         carried = set(world.bodies.attachments(body))
         ignore = [o for o in world.objects() if o.name in carried or o.type == "floor"]
-        carries_more = any(a.robot in carried for a in world.all_attachments())
+        carries_more = any(a.robot in carried for a in world.bodies.all_attachments())
         return cls(
             robot,
             distance,

@@ -69,7 +69,7 @@ def _aim_pan_tilt(
 ) -> dict[str, float]:
     world, target = robot.world, np.asarray(target_in_map, float)
     wanted = _aimed(robot, pt, target)
-    bounds = {j: world.joint_limits(robot.name, j) for j in wanted}
+    bounds = {j: world.bodies.joint_limits(robot.name, j) for j in wanted}
     inside = {j: bounds[j].clamp(v) for j, v in wanted.items()}
     reached = _turn_head(robot, inside, target_in_map)
     if inside != wanted:
@@ -122,7 +122,7 @@ def _aimed(robot: ProjectedRobot, pt: PanTiltDescription, target: np.ndarray) ->
     axes = pt.axes()
     frames = [kin.frame_id(link) for _, link in axes] + [kin.frame_id(desc.cameras[0].frame)]
     local_axes = [np.asarray(desc.model.joints[joint].axis, float) for joint, _ in axes]
-    limits = [world.joint_limits(robot.name, joint) for joint, _ in axes]
+    limits = [world.bodies.joint_limits(robot.name, joint) for joint, _ in axes]
     state = world.joint_states(robot.name)
     q = kin.configuration({j: v for j, v in state.items() if desc.model.joints[j].mimic is None})
     root = world.pose(robot.name).matrix()

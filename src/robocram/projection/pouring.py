@@ -163,7 +163,7 @@ def _follow_with_physics(robot: ProjectedRobot, trajectory: JointTrajectory) -> 
         t = min(k * world.time_step, trajectory.duration)
         values = [float(np.interp(t, times, positions[:, j])) for j in range(positions.shape[1])]
         world.set_joint_states(robot.name, dict(zip(trajectory.joint_names, values, strict=True)))
-        world.step()
+        world.physics.step()
     follow(robot, trajectory)
 
 
@@ -174,7 +174,7 @@ def _settle(world: World, names: list[str]) -> None:
     for _ in range(math.ceil(SETTLE_TIME / (look * world.time_step))):
         for _ in range(look):
             checkpoint()
-            world.step()
+            world.physics.step()
         now = [world.pose(n).position for n in names]
         if all(math.dist(a, b) <= 0.001 for a, b in zip(before, now, strict=True)):
             return

@@ -43,7 +43,7 @@ def move_torso(robot: ProjectedRobot, goal: float) -> float:
     """
     joint = torso_joint(robot)
     value = finite_goal(joint, goal)
-    limits = robot.world.joint_limits(robot.name, joint)
+    limits = robot.world.bodies.joint_limits(robot.name, joint)
     inside = limits.clamp(value)
     start = robot.world.joint_states(robot.name)[joint]
     try:

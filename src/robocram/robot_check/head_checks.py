@@ -36,7 +36,7 @@ def torso(robot: ProjectedRobot) -> list[CheckResult]:
     joint = desc.torso_joint
     if joint is None:
         return []
-    limits = world.joint_limits(robot.name, joint)
+    limits = world.bodies.joint_limits(robot.name, joint)
     bases = [arm.links[0] for key, arm in desc.arms.items() if key != desc.neck_arm and arm.links]
     heights = {}
     try:

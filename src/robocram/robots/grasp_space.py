@@ -40,8 +40,20 @@ def clear_grasp_space(model: RobotModel, arms: Mapping[str, ArmDescription]) -> 
     key = tuple(sorted((name, _hand_key(arm)) for name, arm in arms.items()))
     kept = model.derived(_cut_models)
     if key not in kept:
-        kept[key] = _cleared(model, arms)
+        cut = _cleared(model, arms)
+        if cut is not model:
+            cut.derived(CutFrom).source = model
+        kept[key] = cut
     return kept[key]
+
+
+class CutFrom:
+    """The model a cut model was cut from, held by the cut one: a description holds only
+    the cut model, and the model memo holds the parse only weakly, so without this each
+    load of the file would parse it and cut it again."""
+
+    def __init__(self, cut: RobotModel) -> None:
+        self.source: RobotModel | None = None
 
 
 HandKey = tuple[object, ...]

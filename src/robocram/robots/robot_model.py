@@ -302,7 +302,7 @@ class RobotModel:
         ``missing_packages_as_boxes``: a package found nowhere gets boxes and a warning,
         as a missing mesh file does, instead of :class:`PackageNotFoundError`.
 
-        Equal files share one model for the process (:mod:`~robocram.robots.model_memo`).
+        Equal files share one model while it is held (:mod:`~robocram.robots.model_memo`).
         """
         file = Path(path).expanduser()
         paths = tuple(Path(p) for p in package_paths)
@@ -371,4 +371,4 @@ def _guess(name: str, pool: Iterable[str]) -> str:
     return f"; did you mean {' or '.join(repr(c) for c in close)}?" if close else ""
 
 
-MODELS: ModelMemo[RobotModel] = ModelMemo()  # the process's: equal files share one model
+MODELS: ModelMemo[RobotModel] = ModelMemo()  # weak: equal files share a model while it is held

@@ -180,7 +180,7 @@ def _world(client: RosRobotClient, part: str, joint: str, goal: float) -> World:
             "environment (ros_robot(..., world=...)): the handle's pose and path are read there"
         )
     world = client.mirror.world
-    limits = world.joint_limits(part, joint)
+    limits = world.bodies.joint_limits(part, joint)
     if not limits.lower - 1e-9 <= goal <= limits.upper + 1e-9:
         raise RosCommandError(
             f"goal {goal:.3f} of {part}'s joint {joint!r} is outside its limits "

@@ -297,7 +297,7 @@ def gripper_command(goal: RosMessage, ctx: GoalContext, semantics: GripperSemant
     position = semantics.joint_value(float(goal.command.position))
     with ctx.stepper.lock:
         joint = gripper_joints(robot, arm)[0]
-        limits = robot.world.joint_limits(robot.name, joint)
+        limits = robot.world.bodies.joint_limits(robot.name, joint)
         stalled = False
         try:
             if position <= limits.lower + GRIP_TOLERANCE:

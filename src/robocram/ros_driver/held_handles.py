@@ -83,7 +83,7 @@ class HeldHandles:
         for held in self.held:
             tool = world.link_pose(robot.name, robot.arm(held.arm).tool_frame)
             wanted = np.asarray((tool * held.in_tool).position)
-            limits = world.joint_limits(held.part, held.joint)
+            limits = world.bodies.joint_limits(held.part, held.joint)
             value = world.joint_states(held.part)[held.joint]
             for _ in range(FOLLOW_STEPS):
                 here = _handle_at(robot, held, value)
@@ -106,7 +106,7 @@ def _moving_joint(robot: ProjectedRobot, part: str, link: str) -> str | None:
     start = world.joint_states(part)
     before = world.link_pose(part, link).position
     for joint, value in start.items():
-        limits = world.joint_limits(part, joint)
+        limits = world.bodies.joint_limits(part, joint)
         probe = value + PROBE if value + PROBE <= limits.upper else value - PROBE
         world.set_joint_states(part, {joint: probe})
         moved = math.dist(before, world.link_pose(part, link).position) > PROBE / 10

@@ -46,7 +46,7 @@ def gripper_command(goal: RosMessage, ctx: GoalContext, arm: str) -> Outcome:
     robot, wanted = ctx.robot, float(goal.command.position)
     with ctx.stepper.lock:
         joint = gripper_joints(robot, arm)[0]
-        upper = robot.world.joint_limits(robot.name, joint).upper
+        upper = robot.world.bodies.joint_limits(robot.name, joint).upper
         per_metre = upper / GAP_AT_UPPER  # [rad/m]
         if wanted <= CLOSED:
             try:

@@ -9,12 +9,13 @@ place is that link (group ``<name>_contents``) unless the description says other
 from __future__ import annotations
 
 from collections.abc import Iterable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from pathlib import Path
 
 from robocram.logic import name_atom
-from robocram.robots import RobotDescription, load_description
+from robocram.robots import RobotDescription, RobotModel, load_description
 from robocram.scenes.environment_description import EnvironmentDescription
-from robocram.scenes.environment_model import loadable_urdf
+from robocram.scenes.environment_model import check_urdf, loadable_urdf
 from robocram.scenes.errors import SceneError
 from robocram.scenes.parking import park_arms
 from robocram.tf import Pose, PoseLike, PoseStamped
@@ -47,6 +48,9 @@ class EnvironmentScene:
     robot: str
     environment: str
     items: dict[str, WorldObject]
+    # the environment's URDF as the scene's check parsed it, held so that a scene built
+    # while this one lives shares the parse (the model memo holds models only weakly)
+    checked: RobotModel | None = field(default=None, compare=False, repr=False)
 
     @property
     def kitchen(self) -> str:
@@ -76,6 +80,7 @@ def environment_scene(
     world = world if world is not None else World()
     world.bodies.add_floor()
     name = environment.name
+    checked = check_urdf(Path(environment.urdf), tuple(environment.package_paths))
     loadable = loadable_urdf(
         environment.urdf, environment.stand_ins, package_paths=environment.package_paths
     )
@@ -88,7 +93,7 @@ def environment_scene(
     usual = usual_location_facts(environment, placed, name)
     if usual:
         world.kb.consult(usual, group=f"{name}_contents")
-    return EnvironmentScene(world, robot_name, name, objects)
+    return EnvironmentScene(world, robot_name, name, objects, checked)
 
 
 def usual_location_facts(

@@ -109,7 +109,7 @@ class Tracer(TaskListener):
     def _keep_if_simulated(self, task: Task, world: World) -> None:
         with self._lock:
             entry = self._entries.get(id(task))
-        if entry is None or world.time == entry.run.sim_time:
+        if entry is None or world.physics.time == entry.run.sim_time:
             return
         state = StoredWorldState.capture(world, task.start_time or 0.0, entry.run.scene)
         with self._lock:

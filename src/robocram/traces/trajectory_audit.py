@@ -220,7 +220,7 @@ class _RunAudit:
             )  # fmt: skip
 
     def _held(self, robot: str) -> dict[str, str]:
-        return {a.obj: a.link for a in self.world.all_attachments() if a.robot == robot}
+        return {a.obj: a.link for a in self.world.bodies.all_attachments() if a.robot == robot}
 
     def _sweep_configurations(
         self,

@@ -57,7 +57,7 @@ class StoredWorldState:
         )
         return cls(
             time=time,
-            sim_time=world.time,
+            sim_time=world.physics.time,
             poses={obj.name: world.pose(obj) for obj in objects},
             joints={obj.name: js for obj in objects if (js := world.joint_states(obj))},
             attachments=tuple(a for a in attached if a is not None),

@@ -13,10 +13,11 @@ from typing import TYPE_CHECKING
 
 from robocram.world.attachment import Attachment
 from robocram.world.body_spec import GREY, MeshSpec, Rgba, ShapeSpec
+from robocram.world.joint_state import JointLimits
 from robocram.world.pybullet_backend import pybullet
-from robocram.world.world_core import ORIGIN, ObjectRef, link_slot
 from robocram.world.world_object import WorldObject
 from robocram.world.world_part import WorldPart
+from robocram.world.world_tables import ORIGIN, ObjectRef, link_slot
 
 if TYPE_CHECKING:
     from robocram.tf import PoseLike
@@ -85,7 +86,7 @@ class Bodies(WorldPart):
         ):
             states = pybullet.getLinkStates(
                 handle.body_id, indices, computeForwardKinematics=True,
-                physicsClientId=w.physics_client(),
+                physicsClientId=self._tables.physics_client(),
             )  # fmt: skip
             return [(*st[4], *st[5]) for st in states]
         poses = [w.link_pose(handle, link) for link in links]  # the root or added frames
@@ -94,9 +95,28 @@ class Bodies(WorldPart):
     def attachments(self, robot: ObjectRef) -> dict[str, str]:
         """Objects attached to ``robot``: object name -> link name."""
         name = self._world.object(robot).name
-        return {a.obj: a.link for a in self._world.all_attachments() if a.robot == name}
+        return {a.obj: a.link for a in self._tables.all_attachments() if a.robot == name}
 
     def attached_to(self, obj: ObjectRef) -> Attachment | None:
         """The attachment holding ``obj``, if any."""
         name = self._world.object(obj).name
-        return next((a for a in self._world.all_attachments() if a.obj == name), None)
+        return next((a for a in self._tables.all_attachments() if a.obj == name), None)
+
+    def all_attachments(self) -> list[Attachment]:
+        """Every attachment of the world, in the order they were made."""
+        return self._tables.all_attachments()
+
+    def insert(self, handle: WorldObject, pose: PoseLike = ORIGIN) -> WorldObject:
+        """Create ``handle``'s body from its spec, index it, place it at ``pose``; return it.
+
+        The handle may be one removed earlier: it gets a new body and keeps its identity.
+        """
+        return self._tables.insert(handle, pose)
+
+    def owner(self, body: int) -> WorldObject | None:
+        """The object a pybullet body id (a part's too) belongs to; None if no object's."""
+        return self._tables.owner(body)
+
+    def joint_limits(self, obj: ObjectRef, joint: str) -> JointLimits:
+        """Position limits [rad | m] of a movable joint; continuous ones are -inf/inf."""
+        return self._tables.joint_limits(obj, joint)

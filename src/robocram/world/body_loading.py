@@ -9,12 +9,16 @@ any other kind is refused.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from robocram.tf import Pose
 from robocram.world.body_spec import BodySpec, MeshSpec, UrdfSpec
 from robocram.world.errors import BodyLoadError, TooManyLinksError
 from robocram.world.pybullet_backend import pybullet
 from robocram.world.robot_urdf import MAX_LINKS, checked_urdf_spec
+
+if TYPE_CHECKING:
+    from robocram.robots import RobotModel
 
 
 @dataclass(frozen=True)
@@ -24,6 +28,7 @@ class LoadedBodies:
 
     bodies: tuple[int, ...]
     offsets: tuple[Pose, ...]
+    model: RobotModel | None = None  # the parsed URDF (checked before PyBullet read it)
 
 
 def create_body(name: str, spec: BodySpec, cid: int) -> LoadedBodies:
@@ -46,7 +51,8 @@ def create_body(name: str, spec: BodySpec, cid: int) -> LoadedBodies:
         raise
     scale = spec.scale if isinstance(spec, UrdfSpec) else 1.0
     offsets = tuple(_scaled(where, scale) for _, where in parts)
-    return LoadedBodies(tuple(made), (Pose(), *offsets))
+    model = spec.model if isinstance(spec, UrdfSpec) else None
+    return LoadedBodies(tuple(made), (Pose(), *offsets), model)
 
 
 def _one_body(name: str, source: str, spec: BodySpec, cid: int) -> int:

@@ -12,13 +12,16 @@ import re
 import sys
 import tempfile
 from collections.abc import Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Literal
+from typing import TYPE_CHECKING, Literal
 
 from robocram.tf import Pose, Vector3
 from robocram.world.errors import WorldValueError
 from robocram.world.pybullet_backend import pybullet
+
+if TYPE_CHECKING:
+    from robocram.robots import RobotModel
 
 Rgba = tuple[float, float, float, float]
 ShapeKind = Literal["box", "cylinder", "sphere", "plane"]
@@ -167,6 +170,9 @@ class UrdfSpec:
     frames: tuple[tuple[str, str, Pose], ...] = ()  # (frame, host link, pose in host)
     checked: bool = False
     parts: tuple[tuple[Path, Pose], ...] = ()  # (subtree's URDF, its root in the root link)
+    # the model the file was checked with, held so that loads of the file while a world
+    # holds this body share the parse (the model memo holds models only weakly)
+    model: RobotModel | None = field(default=None, compare=False, repr=False)
 
     def create(self, client: int) -> int:
         """Load the URDF into ``client`` at the origin; return its body id."""

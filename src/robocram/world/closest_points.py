@@ -6,22 +6,26 @@ count as colliding with each other; a robot's self-collisions are not checked ei
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from robocram.world.contact_point import ContactPoint
 from robocram.world.errors import UnknownLinkError
 from robocram.world.pybullet_backend import pybullet
-from robocram.world.world_core import WorldCore
 from robocram.world.world_object import WorldObject
+
+if TYPE_CHECKING:
+    from robocram.world.world_facade import WorldFacade
 
 CONTACT_DISTANCE = 0.002  # [m] closer than this counts as touching
 
 
-def _carried_with(world: WorldCore, obj: WorldObject) -> set[str]:
+def _carried_with(world: WorldFacade, obj: WorldObject) -> set[str]:
     """Names of bodies rigidly linked to ``obj`` through attachments, ``obj`` included."""
     group = {obj.name}
     changed = True
     while changed:
         changed = False
-        for att in world.all_attachments():
+        for att in world.bodies.all_attachments():
             if (att.obj in group) != (att.robot in group):
                 group |= {att.obj, att.robot}
                 changed = True
@@ -41,7 +45,7 @@ def _index(obj: WorldObject, link: str) -> int:
 
 
 def closest_points(
-    world: WorldCore,
+    world: WorldFacade,
     a: WorldObject,
     b: WorldObject,
     distance: float,
@@ -49,7 +53,7 @@ def closest_points(
     link_b: str | None = None,
 ) -> list[ContactPoint]:
     """Closest points of ``a`` and ``b`` (or of the given links) nearer than ``distance``."""
-    cid = world.physics_client()
+    cid = world.physics.client()
     points = [
         point
         for body_a, body_b, filters in _body_pairs(a, b, link_a, link_b)
@@ -89,7 +93,7 @@ def _body_pairs(
     return [(ba, bb, fa | fb) for ba, fa in sides[0] for bb, fb in sides[1]]
 
 
-def contact(world: WorldCore, a: WorldObject, b: WorldObject) -> bool:
+def contact(world: WorldFacade, a: WorldObject, b: WorldObject) -> bool:
     """Whether ``a`` and ``b`` touch; never for a robot and what it carries."""
     if a is b or b.name in _carried_with(world, a):
         return False

@@ -8,18 +8,19 @@ with its first shape missing and frames relative to the centre of mass.
 
 from __future__ import annotations
 
-import functools
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Literal
+from typing import TYPE_CHECKING, Literal
 
 from robocram.robots import RobotModel
 from robocram.robots.urdf_elements import Geometry
 from robocram.tf import Pose, Vector3
 from robocram.world.body_spec import MeshSpec, ShapeSpec, UrdfSpec
 from robocram.world.errors import WorldUsageError, WorldValueError
-from robocram.world.world_core import WorldCore
 from robocram.world.world_object import RobotObject, WorldObject
+
+if TYPE_CHECKING:
+    from robocram.world.world_facade import WorldFacade
 
 CollisionKind = Literal["box", "cylinder", "sphere", "mesh", "plane"]
 
@@ -40,12 +41,6 @@ class CollisionShape:
     mesh: str = ""  # absolute path of a mesh file
 
 
-@functools.lru_cache(maxsize=64)
-def _urdf_model(path: str, mtime: float) -> RobotModel:
-    """The parsed URDF of an object (cached per file version: kitchens are big)."""
-    return RobotModel.from_file(path)
-
-
 def _scaled(geometry: Geometry, scale: float) -> tuple[CollisionKind, Vector3]:
     if geometry.kind == "mesh":
         sx, sy, sz = geometry.scale
@@ -57,7 +52,7 @@ def _scaled(geometry: Geometry, scale: float) -> tuple[CollisionKind, Vector3]:
 
 
 def _urdf_shapes(
-    world: WorldCore, obj: WorldObject, model: RobotModel, scale: float
+    world: WorldFacade, obj: WorldObject, model: RobotModel, scale: float
 ) -> list[CollisionShape]:
     shapes: list[CollisionShape] = []
     for link in model.links.values():
@@ -77,14 +72,14 @@ def _urdf_shapes(
     return shapes
 
 
-def collision_shapes(world: WorldCore, obj: WorldObject) -> list[CollisionShape]:
+def collision_shapes(world: WorldFacade, obj: WorldObject) -> list[CollisionShape]:
     """Every collision shape of ``obj`` at its current pose, in its links' order."""
     spec = obj.spec
     if isinstance(obj, RobotObject):
         return _urdf_shapes(world, obj, obj.description.model, 1.0)
     if isinstance(spec, UrdfSpec):
-        path = Path(spec.path).resolve()
-        model = _urdf_model(str(path), path.stat().st_mtime)
+        # the model the body was loaded from (a spec checked by its caller has none kept)
+        model = obj.urdf_model or RobotModel.from_file(Path(spec.path).resolve())
         return _urdf_shapes(world, obj, model, spec.scale)
     pose = world.pose(obj)
     if isinstance(spec, MeshSpec):

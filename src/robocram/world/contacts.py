@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Sequence
 from functools import partial
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import NDArray
@@ -20,16 +21,19 @@ from robocram.world.contact_point import ContactPoint
 from robocram.world.derived import Derived
 from robocram.world.obstacle_boxes import KeptObstacleBoxes, ObstacleBoxes
 from robocram.world.versions import Versions
-from robocram.world.world_core import ObjectRef, WorldCore, link_slot
 from robocram.world.world_object import WorldObject
 from robocram.world.world_part import WorldPart
+from robocram.world.world_tables import ObjectRef, WorldTables, link_slot
+
+if TYPE_CHECKING:
+    from robocram.world.world_facade import WorldFacade
 
 
 class Contacts(WorldPart):
     """Collisions, contact points, link distances and link bounds of one world."""
 
-    def __init__(self, world: WorldCore):
-        super().__init__(world)
+    def __init__(self, world: WorldFacade, tables: WorldTables):
+        super().__init__(world, tables)
         self._radii: Derived[str, dict[str, float]] = Derived(Versions.created)  # link -> [m]
         self._boxes = KeptObstacleBoxes()
 

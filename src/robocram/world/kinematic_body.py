@@ -11,16 +11,20 @@ from __future__ import annotations
 
 import contextlib
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 from robocram.world.pybullet_backend import pybullet
-from robocram.world.world_core import ObjectRef, WorldCore
+from robocram.world.world_tables import ObjectRef
+
+if TYPE_CHECKING:
+    from robocram.world.world_facade import WorldFacade
 
 
 @contextlib.contextmanager
-def kinematic(world: WorldCore, obj: ObjectRef) -> Iterator[None]:
+def kinematic(world: WorldFacade, obj: ObjectRef) -> Iterator[None]:
     """Inside the block ``obj`` is moved only by whoever sets its pose (its carrier)."""
     handle = world.object(obj)
-    cid = world.physics_client()
+    cid = world.physics.client()
     mass = float(pybullet.getDynamicsInfo(handle.body_id, -1, physicsClientId=cid)[0])
     pybullet.changeDynamics(handle.body_id, -1, mass=0.0, physicsClientId=cid)
     try:

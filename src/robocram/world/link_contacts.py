@@ -11,6 +11,7 @@ says: the body's carried objects and itself never do.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import NDArray
@@ -18,8 +19,10 @@ from numpy.typing import NDArray
 from robocram.world.closest_points import CONTACT_DISTANCE, _carried_with, _link_names
 from robocram.world.obstacle_boxes import ObstacleBoxes
 from robocram.world.pybullet_backend import pybullet
-from robocram.world.world_core import WorldCore
 from robocram.world.world_object import WorldObject
+
+if TYPE_CHECKING:
+    from robocram.world.world_facade import WorldFacade
 
 Bounds = tuple[Sequence[float], Sequence[float]]  # a link's (low, high) corners [m]
 SELF_QUERY = 1e-6  # [m] least distance asked of two links of one body: asked for 0, Bullet
@@ -27,13 +30,13 @@ SELF_QUERY = 1e-6  # [m] least distance asked of two links of one body: asked fo
 # base), so touching is asked a hair farther and the distance compared
 
 
-def link_bounds(world: WorldCore, obj: WorldObject, indices: Iterable[int]) -> dict[int, Bounds]:
+def link_bounds(world: WorldFacade, obj: WorldObject, indices: Iterable[int]) -> dict[int, Bounds]:
     """The bounds of ``obj``'s links ``indices`` (pybullet link indices) as they are now.
 
     Queries about one configuration share them (pass them as ``bounds``): a check asks
     both what its links touch and which pairs of its own links touch.
     """
-    cid = world.physics_client()
+    cid = world.physics.client()
     return {i: pybullet.getAABB(*obj.locate(i), physicsClientId=cid) for i in indices}
 
 
@@ -48,7 +51,7 @@ def _bounds_of(
 
 
 def _overlaps(
-    world: WorldCore,
+    world: WorldFacade,
     obj: WorldObject,
     links: Iterable[str] | None,
     skip: set[str],
@@ -60,7 +63,7 @@ def _overlaps(
     name)`` per pair of links whose bounds, grown by ``distance``, overlap; objects named in
     ``skip`` left out. ``obstacles``, when it covers the query, stands in for the
     broadphase; ``bounds`` holds links' bounds read before (:func:`link_bounds`)."""
-    cid = world.physics_client()
+    cid = world.physics.client()
     names = _link_names(obj)
     if links is None:
         indices = obj.collider_names()  # no shape, no hit
@@ -112,25 +115,25 @@ def _overlaps_in(
         )  # fmt: skip
 
 
-def _near(world: WorldCore, a: WorldObject, b: WorldObject, la: int, lb: int, d: float) -> bool:
+def _near(world: WorldFacade, a: WorldObject, b: WorldObject, la: int, lb: int, d: float) -> bool:
     return bool(_closest(world, a, b, la, lb, d))
 
 
 def _closest(
-    world: WorldCore, a: WorldObject, b: WorldObject, la: int, lb: int, d: float
+    world: WorldFacade, a: WorldObject, b: WorldObject, la: int, lb: int, d: float
 ) -> list[float]:
     """The distances [m] of Bullet's closest points of link slot ``la`` of ``a`` and
     ``lb`` of ``b`` within ``d`` (none: farther)."""
     (body_a, index_a), (body_b, index_b) = a.locate(la), b.locate(lb)
     points = pybullet.getClosestPoints(
         body_a, body_b, d, linkIndexA=index_a, linkIndexB=index_b,
-        physicsClientId=world.physics_client(),
+        physicsClientId=world.physics.client(),
     )  # fmt: skip
     return [float(p[8]) for p in points or ()]
 
 
 def link_contacts(
-    world: WorldCore,
+    world: WorldFacade,
     obj: WorldObject,
     links: Iterable[str] | None = None,
     ignore: Iterable[WorldObject] = (),
@@ -151,7 +154,7 @@ def link_contacts(
 
 
 def link_pairs_in_contact(
-    world: WorldCore,
+    world: WorldFacade,
     obj: WorldObject,
     ignore: Iterable[WorldObject] = (),
     distance: float = CONTACT_DISTANCE,
@@ -176,7 +179,7 @@ def link_pairs_in_contact(
 
 
 def link_distances(
-    world: WorldCore,
+    world: WorldFacade,
     obj: WorldObject,
     ignore: Iterable[WorldObject] = (),
     distance: float = CONTACT_DISTANCE,
@@ -201,7 +204,7 @@ def link_distances(
 
 
 def self_contacts(
-    world: WorldCore,
+    world: WorldFacade,
     obj: WorldObject,
     pairs: Iterable[tuple[str, str]],
     distance: float = CONTACT_DISTANCE,
@@ -216,7 +219,7 @@ def self_contacts(
     key = tuple(pairs)
     if not key:
         return []
-    cid = world.physics_client()
+    cid = world.physics.client()
     rows = obj.pair_rows(key)
     boxes = [_bounds_of(obj, i, bounds, cid) for i in rows.used]
     table = np.array(boxes, dtype=float).reshape(-1, 2, 3)
@@ -232,7 +235,7 @@ def self_contacts(
 
 
 def self_distances(
-    world: WorldCore,
+    world: WorldFacade,
     obj: WorldObject,
     pairs: Sequence[tuple[str, str]],
     reach: float,
@@ -249,7 +252,7 @@ def self_distances(
     gaps = np.zeros(len(pairs))
     if not pairs:
         return gaps
-    cid = world.physics_client()
+    cid = world.physics.client()
     rows = obj.pair_rows(tuple(pairs))
     boxes = [pybullet.getAABB(*obj.locate(i), physicsClientId=cid) for i in rows.used]
     table = np.array(boxes, dtype=float).reshape(-1, 2, 3)

@@ -12,6 +12,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from functools import partial
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import NDArray
@@ -20,8 +21,10 @@ from robocram.world.closest_points import _link_names
 from robocram.world.derived import Derived
 from robocram.world.pybullet_backend import pybullet
 from robocram.world.versions import Stamp, Versions
-from robocram.world.world_core import WorldCore
 from robocram.world.world_object import WorldObject
+
+if TYPE_CHECKING:
+    from robocram.world.world_facade import WorldFacade
 
 FloatArray = NDArray[np.float64]
 
@@ -43,7 +46,7 @@ class ObstacleBoxes:
     high: FloatArray  # (links, 3)
 
     @classmethod
-    def of(cls, world: WorldCore, skip: Iterable[str]) -> ObstacleBoxes:
+    def of(cls, world: WorldFacade, skip: Iterable[str]) -> ObstacleBoxes:
         """Read the bounds of every link of every object not named in ``skip``."""
         skipped = frozenset(skip)
         rows = [_BodyBoxes.read(world, o) for o in world.objects() if o.name not in skipped]
@@ -101,9 +104,9 @@ class _BodyBoxes:
     high: FloatArray  # (links, 3)
 
     @classmethod
-    def read(cls, world: WorldCore, obj: WorldObject) -> _BodyBoxes:
+    def read(cls, world: WorldFacade, obj: WorldObject) -> _BodyBoxes:
         """Read ``obj``'s bounds as it stands now."""
-        cid = world.physics_client()
+        cid = world.physics.client()
         links = [(i, n) for i, n in _link_names(obj).items() if i in obj.colliders]
         table = np.array(
             [pybullet.getAABB(*obj.locate(i), physicsClientId=cid) for i, _ in links],
@@ -132,7 +135,7 @@ class KeptObstacleBoxes:
         default_factory=lambda: Derived(_table_stamp, size=1)
     )  # the table last asked for
 
-    def boxes(self, world: WorldCore, skip: Iterable[str]) -> ObstacleBoxes:
+    def boxes(self, world: WorldFacade, skip: Iterable[str]) -> ObstacleBoxes:
         """:meth:`ObstacleBoxes.of`, from the bodies' bounds kept while they stay put."""
         skipped = frozenset(skip)
         versions = world.versions

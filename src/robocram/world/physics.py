@@ -13,13 +13,29 @@ from robocram.world import spatial_relations
 from robocram.world.errors import WorldValueError
 from robocram.world.settling import LOOK, at_rest
 from robocram.world.sleeping import asleep
-from robocram.world.world_core import ObjectRef, check_time_step
 from robocram.world.world_object import WorldObject
 from robocram.world.world_part import WorldPart
+from robocram.world.world_tables import ObjectRef, check_time_step
 
 
 class Physics(WorldPart):
     """Simulated time of one world: its client, steps, settling and resting relations."""
+
+    def client(self) -> int:
+        """The pybullet client id, for the world's own helper modules; closed: an error."""
+        return self._tables.physics_client()
+
+    @property
+    def time(self) -> float:
+        """Simulated time [s] so far (put back by a restored snapshot)."""
+        return self._tables.time
+
+    def step(self) -> None:
+        """Advance physics one time step; robots hold their joints, attachments follow.
+
+        Held joints of robots are put back after the step, so their motors are off.
+        """
+        self._tables.step()
 
     def simulate(self, seconds: float, stop_check: Callable[[], None] | None = None) -> int:
         """Run physics for ``seconds`` [s] of simulated time; return the number of steps.
@@ -31,7 +47,7 @@ class Physics(WorldPart):
         for _ in range(steps):
             if stop_check is not None:
                 stop_check()
-            self._world.step()
+            self._tables.step()
         return steps
 
     def settle(
@@ -52,7 +68,7 @@ class Physics(WorldPart):
         if steps == 0:
             return 0
         look = max(1, round(LOOK / w.time_step))
-        cid = w.physics_client()
+        cid = self._tables.physics_client()
         others = [b for o in w.objects() if o is not handle for b in o.bodies]
         done = 0
         try:
@@ -62,14 +78,14 @@ class Physics(WorldPart):
                     for _ in range(min(look, steps - done)):
                         if stop_check is not None:
                             stop_check()
-                        w.step()
+                        self._tables.step()
                         done += 1
                     now = w.pose(handle)
                     if at_rest(before, now):
                         break
                     before = now
         finally:
-            w.step()  # Bullet marks the woken bodies awake at the end of a step
+            self._tables.step()  # Bullet marks the woken bodies awake at the end of a step
         return done + 1
 
     def _steps(self, seconds: float) -> int:

@@ -12,8 +12,8 @@ from typing import TYPE_CHECKING, Protocol
 
 from robocram.tf import Pose, PoseLike
 from robocram.world.joint_state import ClampedJoint
-from robocram.world.world_core import ObjectRef
 from robocram.world.world_object import RobotObject, WorldObject
+from robocram.world.world_tables import ObjectRef
 
 if TYPE_CHECKING:
     from robocram.world.bodies import Bodies

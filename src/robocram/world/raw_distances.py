@@ -9,12 +9,16 @@ skipped here: attachments, allowed contacts and adjacency are the caller's to de
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from robocram.tf import Vector3
 from robocram.world.errors import UnknownLinkError
 from robocram.world.pybullet_backend import pybullet
-from robocram.world.world_core import ObjectRef, WorldCore
 from robocram.world.world_object import WorldObject
+from robocram.world.world_tables import ObjectRef
+
+if TYPE_CHECKING:
+    from robocram.world.world_facade import WorldFacade
 
 
 @dataclass(frozen=True)
@@ -29,7 +33,7 @@ class LinkGap:
 class RawDistances:
     """Link bounds and closest points of the bodies of one world, straight from PyBullet."""
 
-    def __init__(self, world: WorldCore) -> None:
+    def __init__(self, world: WorldFacade) -> None:
         self.world = world
 
     def collision_links(self, obj: ObjectRef) -> list[str]:
@@ -40,7 +44,7 @@ class RawDistances:
     def link_bounds(self, obj: ObjectRef, links: list[str]) -> list[tuple[Vector3, Vector3]]:
         """PyBullet's world-aligned bounds ``(low, high)`` [m] of each of ``links`` now."""
         handle = self.world.object(obj)
-        cid = self.world.physics_client()
+        cid = self.world.physics.client()
         found = []
         for link in links:
             low, high = pybullet.getAABB(*handle.locate(_index(handle, link)), physicsClientId=cid)
@@ -62,7 +66,7 @@ class RawDistances:
             reach,
             linkIndexA=index_a,
             linkIndexB=index_b,
-            physicsClientId=self.world.physics_client(),
+            physicsClientId=self.world.physics.client(),
         )
         if not points:
             return None

@@ -5,14 +5,17 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import NDArray
 
 from robocram.tf import Vector3
 from robocram.world.pybullet_backend import pybullet
-from robocram.world.world_core import WorldCore
 from robocram.world.world_object import PART_STRIDE, WorldObject
+
+if TYPE_CHECKING:
+    from robocram.world.world_facade import WorldFacade
 
 RAY_BATCH = 16000  # pybullet takes at most 16384 rays per call
 
@@ -29,16 +32,16 @@ class RayHit:
 
 
 def cast_rays(
-    world: WorldCore, starts: Sequence[Vector3], ends: Sequence[Vector3]
+    world: WorldFacade, starts: Sequence[Vector3], ends: Sequence[Vector3]
 ) -> list[RayHit | None]:
     """The first hit of each segment ``starts[i]``..``ends[i]`` [m], in one pybullet call."""
     hits = pybullet.rayTestBatch(
-        [list(s) for s in starts], [list(e) for e in ends], physicsClientId=world.physics_client()
+        [list(s) for s in starts], [list(e) for e in ends], physicsClientId=world.physics.client()
     )
     links: dict[int, dict[int, str]] = {}  # body -> link slot -> name, built on first hit
     out: list[RayHit | None] = []
     for start, end, hit in zip(starts, ends, hits, strict=True):
-        obj = world.owner(hit[0])
+        obj = world.bodies.owner(hit[0])
         if obj is None:
             out.append(None)
             continue
@@ -60,13 +63,13 @@ def _link_names(obj: WorldObject) -> dict[int, str]:
 
 
 def first_hit_bodies(
-    world: WorldCore, starts: NDArray[np.float64], ends: NDArray[np.float64]
+    world: WorldFacade, starts: NDArray[np.float64], ends: NDArray[np.float64]
 ) -> NDArray[np.int64]:
     """Body id (-1 for none) of the first hit of each segment (N x 3 arrays [m]).
 
     The cheap form of :func:`cast_rays` for many rays that only ask "anything there?".
     """
-    cid = world.physics_client()
+    cid = world.physics.client()
     out = np.full(len(starts), -1, dtype=np.int64)
     for i in range(0, len(starts), RAY_BATCH):
         hits = pybullet.rayTestBatch(  # arrays go in as they are: 4x faster than lists
@@ -78,7 +81,7 @@ def first_hit_bodies(
     return main_bodies(world, out)
 
 
-def main_bodies(world: WorldCore, bodies: NDArray[np.int64]) -> NDArray[np.int64]:
+def main_bodies(world: WorldFacade, bodies: NDArray[np.int64]) -> NDArray[np.int64]:
     """``bodies`` (ids, -1 for none) with each part of an object cut in parts (see
     :class:`~robocram.world.world_object.WorldObject`) read as its object's ``body_id``."""
     split = [o for o in world.objects() if o.parts]
@@ -101,9 +104,9 @@ class RayHits:
     normals: NDArray[np.float64]  # (N, 3)
 
 
-def ray_hits(world: WorldCore, starts: NDArray[np.float64], ends: NDArray[np.float64]) -> RayHits:
+def ray_hits(world: WorldFacade, starts: NDArray[np.float64], ends: NDArray[np.float64]) -> RayHits:
     """First hits of the segments ``starts[i]``..``ends[i]`` (N x 3 arrays [m])."""
-    cid = world.physics_client()
+    cid = world.physics.client()
     rows: list[tuple[object, ...]] = []
     for i in range(0, len(starts), RAY_BATCH):
         rows += pybullet.rayTestBatch(

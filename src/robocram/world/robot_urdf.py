@@ -93,7 +93,7 @@ def checked_urdf_spec(name: str, spec: UrdfSpec) -> UrdfSpec:
         raise BodyLoadError(name, source, "its XML is nested too deeply to read") from err
     if _fits(model):
         path = spec.path if as_is else model_urdf_file(model.name, model)
-        return dataclasses.replace(spec, path=path, checked=True)
+        return dataclasses.replace(spec, path=path, checked=True, model=model)
     return _split_spec(name, source, spec, model)
 
 
@@ -125,7 +125,7 @@ def _split_spec(name: str, source: str, spec: UrdfSpec, model: RobotModel) -> Ur
         parts = tuple(
             (model_urdf_file(part.model.name, part.model), part.root_T_base) for part in split.parts
         )
-    return dataclasses.replace(spec, path=main, checked=True, parts=parts)
+    return dataclasses.replace(spec, path=main, checked=True, parts=parts, model=model)
 
 
 def check_link_count(name: str, source: str, model: RobotModel, hint: str = "") -> None:

@@ -15,6 +15,7 @@ from __future__ import annotations
 import functools
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import NDArray
@@ -22,8 +23,10 @@ from numpy.typing import NDArray
 from robocram.tf import Pose
 from robocram.world.errors import WorldValueError
 from robocram.world.pybullet_backend import pybullet
-from robocram.world.world_core import WorldCore
 from robocram.world.world_object import WorldObject
+
+if TYPE_CHECKING:
+    from robocram.world.world_facade import WorldFacade
 
 FloatArray = NDArray[np.float64]
 HULL_TOLERANCE = 1e-7  # [m] points this close to a face plane lie on it
@@ -127,9 +130,9 @@ def _box_hits(
     return np.asarray((enter <= leave) & (leave >= 0) & (enter <= length[None, :]))
 
 
-def lone_body(world: WorldCore, obj: WorldObject) -> LoneBody | None:
+def lone_body(world: WorldFacade, obj: WorldObject) -> LoneBody | None:
     """``obj``'s collision pieces where they are now; None if one of them is not modelled."""
-    cid = world.physics_client()
+    cid = world.physics.client()
     placed: list[tuple[Piece, Pose]] = []
     for body, link in _all_links(obj, cid):
         shapes = pybullet.getCollisionShapeData(body, link, physicsClientId=cid)

@@ -2,18 +2,19 @@
 
 Reached as ``world.snapshots``. Besides poses and joint values a world's state holds
 what is attached to what and the joint values simulation holds robots at; those are
-read and written here, with the block that restores everything on leaving.
+written here (and the holds read), with the block that restores everything on leaving.
 """
 
 from __future__ import annotations
 
 import contextlib
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator, Mapping
 
+from robocram.world.attachment import Attachment
 from robocram.world.pybullet_backend import pybullet
-from robocram.world.world_core import ObjectRef
 from robocram.world.world_part import WorldPart
 from robocram.world.world_state import WorldState
+from robocram.world.world_tables import ObjectRef
 
 
 class Snapshots(WorldPart):
@@ -22,11 +23,11 @@ class Snapshots(WorldPart):
     @contextlib.contextmanager
     def stored_state(self) -> Iterator[WorldState]:
         """Restore the world exactly on leaving the block (objects added/removed included)."""
-        state = WorldState.capture(self._world)
+        state = WorldState.capture(self._tables)
         try:
             yield state
         finally:
-            state.restore(self._world)
+            state.restore(self._tables)
 
     def body_state(self, obj: ObjectRef) -> tuple[float, ...]:
         """Numbers that change whenever ``obj``'s shapes move: its body id, base pose and
@@ -34,7 +35,7 @@ class Snapshots(WorldPart):
         geometry compares them, cheaper than ``pose`` and ``joint_states``)."""
         w = self._world
         handle = w.object(obj)
-        cid = w.physics_client()
+        cid = self._tables.physics_client()
         position, orientation = pybullet.getBasePositionAndOrientation(
             handle.body_id, physicsClientId=cid
         )
@@ -42,3 +43,27 @@ class Snapshots(WorldPart):
         if handle.movable_joints:
             joints = tuple(w.joint_states(handle).values())
         return (float(handle.body_id), *position, *orientation, *joints)
+
+    def capture(self) -> WorldState:
+        """The world's state now, whole (objects, bodies, attachments, holds, time)."""
+        return WorldState.capture(self._tables)
+
+    def restore(self, state: WorldState) -> None:
+        """Put the world back to ``state`` (captured from it): objects, poses, joints."""
+        state.restore(self._tables)
+
+    def recreate(self, state: WorldState) -> None:
+        """Fill this empty world (a copy's, in its own client) with new handles in ``state``."""
+        state.recreate(self._tables)
+
+    def set_attachments(self, attachments: Iterable[Attachment]) -> None:
+        """Replace every attachment by ``attachments`` (kept relative poses, nothing moves)."""
+        self._tables.set_attachments(attachments)
+
+    def held_joints(self, obj: ObjectRef) -> dict[str, float]:
+        """The joint values [rad | m] that simulation holds ``obj``'s joints at, by name."""
+        return self._tables.held_joints(obj)
+
+    def set_held_joints(self, obj: ObjectRef, values: Mapping[str, float]) -> None:
+        """Hold exactly ``values`` (joint name -> [rad | m]) from now on; nothing moves now."""
+        self._tables.set_held_joints(obj, values)

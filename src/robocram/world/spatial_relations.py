@@ -8,12 +8,14 @@ for a while moves nothing by more than 5 mm or 0.15 rad.
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
+from typing import TYPE_CHECKING
 
 from robocram.world.closest_points import contact
 from robocram.world.visibility import aabb
-from robocram.world.world_core import WorldCore
 from robocram.world.world_object import RobotObject, WorldObject
-from robocram.world.world_state import WorldState
+
+if TYPE_CHECKING:
+    from robocram.world.world_facade import WorldFacade
 
 STABLE_DISTANCE = 0.005  # [m]
 STABLE_ANGLE = 0.15  # [rad]
@@ -21,7 +23,7 @@ STABLE_SECONDS = 0.5  # [s] simulated to see whether anything moves
 OVERLAP_MARGIN = 0.0  # [m]
 
 
-def above(world: WorldCore, a: WorldObject, b: WorldObject) -> bool:
+def above(world: WorldFacade, a: WorldObject, b: WorldObject) -> bool:
     """Whether ``a`` is over ``b``: x-y overlap and a's centre higher than b's top."""
     if a is b:
         return False
@@ -34,18 +36,18 @@ def above(world: WorldCore, a: WorldObject, b: WorldObject) -> bool:
     return bool(overlap and (low_a[2] + high_a[2]) / 2 > high_b[2])
 
 
-def below(world: WorldCore, a: WorldObject, b: WorldObject) -> bool:
+def below(world: WorldFacade, a: WorldObject, b: WorldObject) -> bool:
     """Whether ``a`` is under ``b`` (``b`` above ``a``)."""
     return above(world, b, a)
 
 
-def supported_by(world: WorldCore, a: WorldObject, b: WorldObject) -> bool:
+def supported_by(world: WorldFacade, a: WorldObject, b: WorldObject) -> bool:
     """Whether ``a`` rests on ``b``: they touch and ``a`` is above ``b``."""
     return contact(world, a, b) and above(world, a, b)
 
 
 def stable(
-    world: WorldCore,
+    world: WorldFacade,
     simulate: Callable[[float], object],
     objects: Sequence[WorldObject] | None = None,
     seconds: float = STABLE_SECONDS,
@@ -56,7 +58,7 @@ def stable(
     Runs the simulation in place and restores the world exactly afterwards, which is the
     same as simulating a copy but avoids re-creating the bodies.
     """
-    carried = {att.obj for att in world.all_attachments()}
+    carried = {att.obj for att in world.bodies.all_attachments()}
     watched = [
         o
         for o in (objects if objects is not None else world.objects())
@@ -65,12 +67,9 @@ def stable(
     if not watched:
         return True
     before = {o.name: world.pose(o) for o in watched}
-    state = WorldState.capture(world)
-    try:
+    with world.snapshots.stored_state():
         simulate(seconds)
         after = {o.name: world.pose(o) for o in watched}
-    finally:
-        state.restore(world)
     return all(
         before[n].distance_to(after[n]) <= STABLE_DISTANCE
         and before[n].angle_to(after[n]) <= STABLE_ANGLE

@@ -21,9 +21,9 @@ from robocram.world.png import write_png
 from robocram.world.pybullet_backend import pybullet
 from robocram.world.ray_hit import RayHit, cast_rays
 from robocram.world.visibility import Visibility
-from robocram.world.world_core import ObjectRef
 from robocram.world.world_object import WorldObject
 from robocram.world.world_part import WorldPart
+from robocram.world.world_tables import ObjectRef
 
 VisibilityMethod = Literal["ray", "render"]
 DEFAULT_VISIBILITY: VisibilityMethod = "ray"
@@ -104,7 +104,7 @@ class View(WorldPart):
         cam = cam.with_aspect(width / height)
         _, _, rgba, _, _ = pybullet.getCameraImage(
             width, height, cam.view_matrix(), cam.projection_matrix(),
-            renderer=pybullet.ER_TINY_RENDERER, physicsClientId=self._world.physics_client(),
+            renderer=pybullet.ER_TINY_RENDERER, physicsClientId=self._tables.physics_client(),
         )  # fmt: skip
         return np.reshape(np.asarray(rgba, dtype=np.uint8), (height, width, 4))[:, :, :3].copy()
 

@@ -13,6 +13,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import NDArray
@@ -22,8 +23,10 @@ from robocram.world.camera import Camera
 from robocram.world.pybullet_backend import pybullet
 from robocram.world.ray_hit import first_hit_bodies, main_bodies
 from robocram.world.shape_rays import lone_body
-from robocram.world.world_core import WorldCore
 from robocram.world.world_object import WorldObject
+
+if TYPE_CHECKING:
+    from robocram.world.world_facade import WorldFacade
 
 ISOLATION_OFFSET = (0.0, 0.0, 1000.0)  # [m] far above any scene, beyond every camera's far
 SURFACE_GAP = 1e-3  # [m] scene rays stop this short of the object's surface
@@ -41,9 +44,9 @@ class Visibility:
     samples: int
 
 
-def aabb(world: WorldCore, obj: WorldObject) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+def aabb(world: WorldFacade, obj: WorldObject) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """World axis-aligned bounds ``(lower, upper)`` [m] over all of ``obj``'s links."""
-    cid = world.physics_client()
+    cid = world.physics.client()
     boxes = []
     for body in obj.bodies:
         boxes.append(pybullet.getAABB(body, -1, physicsClientId=cid))
@@ -54,9 +57,9 @@ def aabb(world: WorldCore, obj: WorldObject) -> tuple[NDArray[np.float64], NDArr
     return lows.min(axis=0), highs.max(axis=0)
 
 
-def link_aabb(world: WorldCore, obj: WorldObject, index: int) -> tuple[Vector3, Vector3]:
+def link_aabb(world: WorldFacade, obj: WorldObject, index: int) -> tuple[Vector3, Vector3]:
     """World axis-aligned bounds ``(lower, upper)`` [m] of link ``index`` of ``obj``."""
-    low, high = pybullet.getAABB(*obj.locate(index), physicsClientId=world.physics_client())
+    low, high = pybullet.getAABB(*obj.locate(index), physicsClientId=world.physics.client())
     return (float(low[0]), float(low[1]), float(low[2])), (
         float(high[0]),
         float(high[1]),
@@ -65,9 +68,9 @@ def link_aabb(world: WorldCore, obj: WorldObject, index: int) -> tuple[Vector3, 
 
 
 @contextmanager
-def isolated(world: WorldCore, obj: WorldObject) -> Iterator[None]:
+def isolated(world: WorldFacade, obj: WorldObject) -> Iterator[None]:
     """Shift ``obj`` by :data:`ISOLATION_OFFSET`; put it back exactly afterwards."""
-    cid = world.physics_client()
+    cid = world.physics.client()
     kept = []
     for body in obj.bodies:
         pos, orn = pybullet.getBasePositionAndOrientation(body, physicsClientId=cid)
@@ -86,7 +89,7 @@ def isolated(world: WorldCore, obj: WorldObject) -> Iterator[None]:
 
 
 def _tangent_grid(
-    world: WorldCore, camera: Camera, obj: WorldObject, grid: int
+    world: WorldFacade, camera: Camera, obj: WorldObject, grid: int
 ) -> NDArray[np.float64] | None:
     """Image tangents ``(x/z, y/z)`` of a grid over the projection of ``obj``'s bounds."""
     low, high = aabb(world, obj)
@@ -105,15 +108,15 @@ def _tangent_grid(
     return np.stack([xs.ravel(), ys.ravel()], axis=1)
 
 
-def _first_hits(world: WorldCore, camera: Camera, tangents: NDArray[np.float64]) -> list[int]:
+def _first_hits(world: WorldFacade, camera: Camera, tangents: NDArray[np.float64]) -> list[int]:
     starts, ends = camera.ray_ends(tangents)
-    hits = pybullet.rayTestBatch(starts, ends, physicsClientId=world.physics_client())
+    hits = pybullet.rayTestBatch(starts, ends, physicsClientId=world.physics.client())
     bodies = np.array([int(h[0]) for h in hits], dtype=np.int64)
     return [int(b) for b in main_bodies(world, bodies)]
 
 
 def ray_visibility(
-    world: WorldCore, camera: Camera, obj: WorldObject, grid: int = 24
+    world: WorldFacade, camera: Camera, obj: WorldObject, grid: int = 24
 ) -> Visibility:
     """Visibility of ``obj`` from ``camera`` by ``grid`` x ``grid`` rays over its outline.
 
@@ -150,7 +153,7 @@ def _in_view(camera: Camera, tangents: NDArray[np.float64]) -> NDArray[np.bool_]
 
 
 def _bullet_ray_visibility(
-    world: WorldCore, camera: Camera, obj: WorldObject, tangents: NDArray[np.float64]
+    world: WorldFacade, camera: Camera, obj: WorldObject, tangents: NDArray[np.float64]
 ) -> Visibility:
     """:func:`ray_visibility` with Bullet casting against the object alone too (slower)."""
     with isolated(world, obj):
@@ -165,7 +168,7 @@ def _bullet_ray_visibility(
     return Visibility(seen / len(on_object), _names(world, blockers), len(on_object))
 
 
-def segmentation(world: WorldCore, camera: Camera, width: int, height: int) -> NDArray[np.int64]:
+def segmentation(world: WorldFacade, camera: Camera, width: int, height: int) -> NDArray[np.int64]:
     """Per-pixel body ids (-1 for nothing) of a TINY-renderer image of ``camera``."""
     _, _, _, _, seg = pybullet.getCameraImage(
         width,
@@ -173,13 +176,13 @@ def segmentation(world: WorldCore, camera: Camera, width: int, height: int) -> N
         camera.view_matrix(),
         camera.projection_matrix(),
         renderer=pybullet.ER_TINY_RENDERER,
-        physicsClientId=world.physics_client(),
+        physicsClientId=world.physics.client(),
     )
     return main_bodies(world, np.reshape(np.asarray(seg, dtype=np.int64), (height, width)))
 
 
 def render_visibility(
-    world: WorldCore, camera: Camera, obj: WorldObject, height: int = 120
+    world: WorldFacade, camera: Camera, obj: WorldObject, height: int = 120
 ) -> Visibility:
     """Visibility of ``obj`` from ``camera`` by comparing segmentation renders.
 
@@ -204,6 +207,6 @@ def render_visibility(
     return Visibility(min(1.0, seen / total), _names(world, blockers), total)
 
 
-def _names(world: WorldCore, bodies: set[int]) -> tuple[str, ...]:
+def _names(world: WorldFacade, bodies: set[int]) -> tuple[str, ...]:
     by_body = {o.body_id: o.name for o in world.objects()}
     return tuple(sorted(by_body[b] for b in bodies if b in by_body))

@@ -2,29 +2,35 @@
 
 Each :class:`World` is its own headless physics client (a GUI window on request); there is
 no global "current world". Close a world (or use it as a context manager) when done.
+:class:`World` is a facade: the everyday questions and changes (poses, joints,
+attachments, adding and removing bodies) are answered by its
+:class:`~robocram.world.world_tables.WorldTables`, which no caller reaches, and the rest
+by its parts.
 """
 
 from __future__ import annotations
 
 import contextlib
-from collections.abc import Callable
+from collections.abc import Callable, Iterator, Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING, TypeVar, cast
 
-from robocram.robots import RobotDescription, install_description, load_description
-from robocram.tf import PoseLike, Vector3
+from robocram.robots import RobotDescription, load_description
+from robocram.tf import Pose, PoseLike, Vector3
 from robocram.world import visibility
 from robocram.world.bodies import Bodies
-from robocram.world.body_spec import GREY, Rgba, ShapeSpec, UrdfSpec
+from robocram.world.body_spec import GREY, BodySpec, Rgba, ShapeSpec, UrdfSpec
 from robocram.world.catalogue import catalogue_item
 from robocram.world.contacts import Contacts
+from robocram.world.joint_state import ClampedJoint
 from robocram.world.physics import Physics
+from robocram.world.robot_facts import RobotFacts
 from robocram.world.robot_urdf import robot_body_spec
 from robocram.world.snapshots import Snapshots
+from robocram.world.versions import Versions
 from robocram.world.view import View
-from robocram.world.world_core import ORIGIN, ObjectRef, WorldCore
 from robocram.world.world_object import RobotObject, WorldObject
-from robocram.world.world_state import WorldState
+from robocram.world.world_tables import ORIGIN, ObjectRef, WorldTables
 
 if TYPE_CHECKING:
     from robocram.logic import KnowledgeBase
@@ -32,21 +38,24 @@ if TYPE_CHECKING:
 T = TypeVar("T")
 
 
-class World(WorldCore):
+class World:
     """A scene of named objects and robots in one PyBullet client: the everyday methods,
     and the rest in parts (``world.bodies``, ``world.contacts``, ``world.physics``,
     ``world.snapshots``, ``world.view``)."""
 
     def __init__(self, gui: bool = False, gravity: float = -9.81, time_step: float = 1 / 240):
-        super().__init__(gui, gravity, time_step)
+        self._facts = RobotFacts()
+        self._tables = WorldTables(gui, gravity, time_step, self._facts)
+        self.gravity = gravity  # [m/s^2] along z
+        self.time_step = time_step  # [s] per physics step
         self._gui = gui
         self._kb: KnowledgeBase | None = None
         self._derived: dict[Callable[[World], object], object] = {}
-        self.bodies = Bodies(self)
-        self.contacts = Contacts(self)
-        self.physics = Physics(self)
-        self.snapshots = Snapshots(self)
-        self.view = View(self)
+        self.bodies = Bodies(self, self._tables)
+        self.contacts = Contacts(self, self._tables)
+        self.physics = Physics(self, self._tables)
+        self.snapshots = Snapshots(self, self._tables)
+        self.view = View(self, self._tables)
 
     def derived(self, make: Callable[[World], T]) -> T:
         """``make(self)``, built on first use and kept with this world, one per ``make``.
@@ -114,22 +123,10 @@ class World(WorldCore):
         desc = load_description(robot)
         spec = robot_body_spec(name or desc.name, desc)
         handle = RobotObject(name or desc.name, "robot", -1, spec, description=desc)
-        self.insert(handle, pose)
-        self.set_held_joints(handle, dict.fromkeys(self.joint_states(handle), 0.0))
+        self._tables.insert(handle, pose)
+        self._tables.set_held_joints(handle, dict.fromkeys(self.joint_states(handle), 0.0))
         self._start_within_limits(handle)
         return handle
-
-    def _inserted(self, handle: WorldObject) -> None:
-        """A robot's facts join the knowledge base."""
-        if isinstance(handle, RobotObject) and self._kb is not None:
-            self._install_description(handle.description)
-
-    def _removed(self, handle: WorldObject) -> None:
-        """A robot's facts leave the knowledge base (when no robot of its kind is left)."""
-        if isinstance(handle, RobotObject) and self._kb is not None:
-            name = handle.description.name
-            if not any(r.description.name == name for r in self.robots()):
-                self._kb.add_fact_group(f"{name}_description", [])
 
     def _start_within_limits(self, robot: RobotObject) -> None:
         """Put every joint at its in-limit value nearest 0 (some grippers exclude 0), and
@@ -138,7 +135,7 @@ class World(WorldCore):
         model = robot.description.model
         masters = {j.mimic.joint for j in model.joints.values() if j.mimic is not None}
         start = {
-            name: self.joint_limits(robot, name).clamp(0.0)
+            name: self._tables.joint_limits(robot, name).clamp(0.0)
             for name in self.joint_states(robot)
             if model.joints[name].mimic is None
         }
@@ -146,14 +143,11 @@ class World(WorldCore):
             robot, {name: v for name, v in start.items() if v != 0.0 or name in masters}
         )
 
-    def _install_description(self, desc: RobotDescription) -> None:
-        install_description(self.kb, desc)
-
     def copy(self, gui: bool = False) -> World:
         """An independent world (its own client) with the same objects and state."""
-        state = WorldState.capture(self)  # a closed world raises WorldClosedError here
+        state = self.snapshots.capture()  # a closed world raises WorldClosedError
         other = World(gui=gui, gravity=self.gravity, time_step=self.time_step)
-        state.recreate(other)
+        other.snapshots.recreate(state)
         return other
 
     def aabb(self, obj: ObjectRef) -> tuple[Vector3, Vector3]:
@@ -172,10 +166,101 @@ class World(WorldCore):
             from robocram.world.predicates import world_knowledge_base
 
             self._kb = world_knowledge_base(self)
-            for robot in self.robots():
-                self._install_description(robot.description)
+            self._facts.start(self._kb, self.robots())
         return self._kb
 
     def __repr__(self) -> str:
         names = ", ".join(o.name for o in self.objects())
-        return f"World(client={self.client}, objects=[{names}])"
+        return f"World(client={self._tables.client}, objects=[{names}])"
+
+    # The everyday questions and changes, answered by the tables.
+
+    @property
+    def versions(self) -> Versions:
+        """The world's change counters: per body its pose and joints, and the structure
+        (what a cache compares instead of states; see :mod:`robocram.world.derived`)."""
+        return self._tables.versions
+
+    def close(self) -> None:
+        """Disconnect the physics client; the world is unusable afterwards."""
+        self._tables.close()
+
+    @property
+    def closed(self) -> bool:
+        """Whether :meth:`close` was called."""
+        return self._tables.closed
+
+    def add_object(
+        self, name: str, type: str, spec: BodySpec, pose: PoseLike = ORIGIN
+    ) -> WorldObject:  # noqa: A002
+        """Add a body made from ``spec``, called ``name``, of type ``type``, at ``pose``."""
+        return self._tables.add_object(name, type, spec, pose)
+
+    def object(self, name: ObjectRef) -> WorldObject:
+        """The object called ``name`` (a handle is checked to still belong to this world)."""
+        return self._tables.object(name)
+
+    def robot(self, name: ObjectRef) -> RobotObject:
+        """The robot called ``name``."""
+        return self._tables.robot(name)
+
+    def objects(self, type: str | None = None) -> list[WorldObject]:  # noqa: A002
+        """All objects in creation order, or those of one ``type``."""
+        return self._tables.objects(type)
+
+    def robots(self) -> list[RobotObject]:
+        """All robots in creation order."""
+        return self._tables.robots()
+
+    def __contains__(self, name: ObjectRef) -> bool:
+        return name in self._tables
+
+    def __iter__(self) -> Iterator[WorldObject]:
+        return iter(self._tables)
+
+    def remove(self, obj: ObjectRef) -> None:
+        """Take ``obj`` out of the world, with its attachments (either end)."""
+        self._tables.remove(obj)
+
+    def pose(self, obj: ObjectRef) -> Pose:
+        """Pose of the object's root link frame in the world."""
+        return self._tables.pose(obj)
+
+    def set_pose(self, obj: ObjectRef, pose: PoseLike) -> None:
+        """Teleport ``obj`` (at rest) to ``pose``; its attached objects follow.
+
+        Placing an attached object moves it relative to its link; it stays attached.
+        """
+        self._tables.set_pose(obj, pose)
+
+    def link_pose(self, obj: ObjectRef, link: str) -> Pose:
+        """Pose of ``link`` (a URDF link or a frame added in code) in the world."""
+        return self._tables.link_pose(obj, link)
+
+    def link_names(self, obj: ObjectRef) -> list[str]:
+        """Names of all links and frames of ``obj``, the root first."""
+        return self._tables.link_names(obj)
+
+    def joint_states(self, obj: ObjectRef) -> dict[str, float]:
+        """Every movable joint's value [rad | m] by name."""
+        return self._tables.joint_states(obj)
+
+    def set_joint_states(
+        self, obj: ObjectRef, values: Mapping[str, float], carry: bool = True
+    ) -> list[ClampedJoint]:
+        """Set joints by name, clamped to their limits; mimic joints follow their masters.
+
+        Returns the joints whose requested value was outside the limits (empty if none).
+        The values are held during simulation; attached objects follow unless ``carry`` is
+        False: a check that puts the joints back before anything else looks, and ignores
+        what the robot holds, saves moving it there and back.
+        """
+        return self._tables.set_joint_states(obj, values, carry)
+
+    def attach(self, obj: ObjectRef, robot: ObjectRef, link: str) -> None:
+        """Fix ``obj`` to ``link`` of ``robot`` at their current relative pose."""
+        self._tables.attach(obj, robot, link)
+
+    def detach(self, obj: ObjectRef) -> None:
+        """Let ``obj`` go; it stays where it is. Detaching a free object is an error."""
+        self._tables.detach(obj)

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from robocram.robots import LoadedDescription
+from robocram.robots import LoadedDescription, RobotModel
 from robocram.tf import Pose
 from robocram.world.body_spec import BodySpec
 from robocram.world.link_pair_rows import LinkPairRows
@@ -46,6 +46,9 @@ class WorldObject:
     movable_joints: list[str] = field(default_factory=list, kw_only=True)
     parts: tuple[int, ...] = field(default=(), kw_only=True)
     part_offsets: tuple[Pose, ...] = field(default=(), kw_only=True)
+    # the parsed URDF the body was loaded from (None for shapes and meshes), held so that
+    # loads of the file share the parse while the body lives (the memo holds models weakly)
+    urdf_model: RobotModel | None = field(default=None, kw_only=True, repr=False)
     _index_names: dict[int, str] | None = field(default=None, init=False, repr=False)
     _collider_names: dict[int, str] | None = field(default=None, init=False, repr=False)
     colliders: frozenset[int] = field(default=frozenset(), init=False, repr=False)

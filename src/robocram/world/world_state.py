@@ -12,8 +12,8 @@ from dataclasses import dataclass
 from robocram.world.attachment import Attachment
 from robocram.world.errors import WorldClosedError
 from robocram.world.pybullet_backend import pybullet
-from robocram.world.world_core import WorldCore
 from robocram.world.world_object import RobotObject, WorldObject
+from robocram.world.world_tables import WorldTables
 
 
 @dataclass(frozen=True)
@@ -36,7 +36,7 @@ class WorldState:
     time: float
 
     @classmethod
-    def capture(cls, world: WorldCore) -> WorldState:
+    def capture(cls, world: WorldTables) -> WorldState:
         """Snapshot ``world`` now."""
         if world.closed:
             raise WorldClosedError()
@@ -51,7 +51,7 @@ class WorldState:
             time=world.time,
         )
 
-    def restore(self, world: WorldCore) -> None:
+    def restore(self, world: WorldTables) -> None:
         """Put ``world`` (the one captured) back: objects, poses, joints, attachments.
 
         Objects are matched by identity: one added under a name that an object had when
@@ -66,13 +66,13 @@ class WorldState:
                 world.insert(handle)
         self._apply(world)
 
-    def recreate(self, world: WorldCore) -> None:
+    def recreate(self, world: WorldTables) -> None:
         """Fill an empty ``world`` (another client) with new handles in this state."""
         for handle in self.handles:
             world.insert(_clone(handle))
         self._apply(world)
 
-    def _apply(self, world: WorldCore) -> None:
+    def _apply(self, world: WorldTables) -> None:
         cid = world.physics_client()
         for handle, states in zip(self.handles, self.bodies, strict=True):
             targets = world.object(handle.name).bodies

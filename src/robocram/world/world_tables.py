@@ -1,15 +1,19 @@
-"""The physics client of a world and its bodies: creation, removal, poses and joints.
+"""The tables of one world: its physics client, bodies, attachments and held joints.
 
-:class:`WorldCore` owns one pybullet client and the tables of bodies, attachments and
-held joints, and is the only class that writes them. The public
-:class:`~robocram.world.world.World` adds the knowledge base and its parts (``bodies``,
-``contacts``, ``physics``, ``snapshots``, ``view``), which use the core's public methods.
+:class:`WorldTables` owns one pybullet client and the tables beside it (the bodies by
+name and body id, joint limits, attachments, the joint values robots are held at, the
+change counters) and is the only class that writes them: creating and removing bodies,
+placing them, setting joints and stepping all go through it. It is no public API: the
+:class:`~robocram.world.world.World` facade answers the everyday questions with it, and
+the world's parts (``bodies``, ``contacts``, ``physics``, ``snapshots``, ``view``) are
+given it and use its public methods.
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Iterator, Mapping
+from typing import Protocol
 
 from robocram.robots import RobotModel, mimic_followers
 from robocram.tf import Pose, PoseLike
@@ -34,14 +38,32 @@ from robocram.world.versions import Versions
 from robocram.world.world_object import RobotObject, WorldObject
 
 ObjectRef = WorldObject | str
+
+
+class BodyHook(Protocol):
+    """What is told when a body joins or leaves the tables (the facade's knowledge base)."""
+
+    def inserted(self, handle: WorldObject) -> None:
+        """``handle``'s body is in the world now."""
+
+    def removed(self, handle: WorldObject, robots: list[RobotObject]) -> None:
+        """``handle``'s body left the world, which still holds ``robots``."""
+
+
 ORIGIN = Pose()
 _MOVABLE_TYPES = (pybullet.JOINT_REVOLUTE, pybullet.JOINT_PRISMATIC)
 
 
-class WorldCore:
+class WorldTables:
     """One pybullet client, its named bodies, attachments and the joints robots hold."""
 
-    def __init__(self, gui: bool = False, gravity: float = -9.81, time_step: float = 1 / 240):
+    def __init__(
+        self,
+        gui: bool = False,
+        gravity: float = -9.81,
+        time_step: float = 1 / 240,
+        hook: BodyHook | None = None,
+    ):
         check_time_step(time_step)
         if not math.isfinite(gravity):
             raise WorldValueError(f"gravity must be a finite number [m/s^2], got {gravity!r}")
@@ -71,6 +93,7 @@ class WorldCore:
         self._motors = HeldMotors()  # a robot's held joints need no motor
         self._versions = Versions()  # stamped by every write below
         self._stepping: Derived[None, tuple[list[str], list[str]]] = Derived(_structure)
+        self._hook = hook  # told of each body added or removed (the knowledge base's facts)
 
     @property
     def versions(self) -> Versions:
@@ -116,6 +139,7 @@ class WorldCore:
         several = len(loaded.bodies) > 1
         handle.parts = loaded.bodies if several else ()
         handle.part_offsets = loaded.offsets if several else ()
+        handle.urdf_model = loaded.model
         self._motors.forget(handle.body_id)
         dyn = pybullet.getDynamicsInfo(handle.body_id, -1, physicsClientId=cid)
         self._inertial[handle.name] = Pose(dyn[3], dyn[4])
@@ -144,14 +168,9 @@ class WorldCore:
         if handle.joint_index:
             self._holds[handle.name] = {}
         self.set_pose(handle, pose)
-        self._inserted(handle)
+        if self._hook is not None:
+            self._hook.inserted(handle)
         return handle
-
-    def _inserted(self, handle: WorldObject) -> None:
-        """Called once ``handle``'s body is in the world (the facade adds a robot's facts)."""
-
-    def _removed(self, handle: WorldObject) -> None:
-        """Called once ``handle``'s body left the world (the facade drops a robot's facts)."""
 
     def object(self, name: ObjectRef) -> WorldObject:
         """The object called ``name`` (a handle is checked to still belong to this world)."""
@@ -203,7 +222,8 @@ class WorldCore:
         self._part_bases.pop(handle.name, None)
         self._holds.pop(handle.name, None)
         self._versions.removed(handle.name)
-        self._removed(handle)
+        if self._hook is not None:
+            self._hook.removed(handle, self.robots())
 
     def pose(self, obj: ObjectRef) -> Pose:
         """Pose of the object's root link frame in the world."""
@@ -445,7 +465,7 @@ def _index_body(handle: WorldObject, body: int, cid: int) -> None:
 
 
 def _part_joint_states(handle: WorldObject, names: list[str], cid: int) -> dict[str, float]:
-    """:meth:`WorldCore.joint_states` of an object of several bodies, one call per body."""
+    """:meth:`WorldTables.joint_states` of an object of several bodies, one call per body."""
     by_body: dict[int, list[tuple[str, int]]] = {}
     for name in names:
         body, index = handle.locate(handle.joint_index[name])
