@@ -29,7 +29,6 @@ from robocram.scenes.environment_description import (
     SurfaceDescription,
 )
 from robocram.scenes.environment_model import Box, EnvironmentModel, EnvJoint
-from robocram.scenes.environment_source import environment_source
 from robocram.scenes.stand_in_draft import DraftedStandIn, draft_stand_ins, drawer_fronts
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
@@ -56,6 +55,9 @@ class EnvironmentDraft:
 
     def source(self, module_file: Path | None = None) -> str:
         """The draft as a ready-to-edit Python module defining ``description()``."""
+        # the source writer is the robot drafter's (pinocchio, coal): loaded when written
+        from robocram.scenes.environment_source import environment_source
+
         return environment_source(
             self.description, self.reasons, self.doubts, self.stand_ins, module_file
         )
