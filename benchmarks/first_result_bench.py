@@ -16,7 +16,12 @@ Each child is this file run with ``--child KIND``; it imports robocram only ther
 figures include the interpreter's start as the user pays it. Rows alternate per round so
 load from other processes biases none. The CPU load average is printed: compare old and
 new trees back to back (``PYTHONPATH=<tree>/src``), not against the goals' idle figures.
-Usage: python benchmarks/first_result_bench.py [N]   (default 10)
+As an installed package runs: children write and use bytecode (``PYTHONDONTWRITEBYTECODE``
+is dropped for them) and one untimed child per row runs first, writing the bytecode and
+robocram's disk cache. ``--empty-cache`` gives every child a new cache folder instead
+(``ROBOCRAM_CACHE_DIR``): a user's very first run on a machine, reachability maps included.
+Usage: python benchmarks/first_result_bench.py [N] [--empty-cache] [--only KIND]
+(N fresh processes per row, default 10)
 """
 
 from __future__ import annotations
@@ -28,6 +33,7 @@ import resource
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 
 GOALS = {
@@ -75,13 +81,22 @@ def child(kind: str) -> dict[str, float]:
     return out
 
 
-def run_child(kind: str) -> dict[str, float]:
+def run_child(kind: str, empty_cache: bool = False) -> dict[str, float]:
     """One fresh process of ``kind``: its wall and CPU seen from here, and its own split."""
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+    with tempfile.TemporaryDirectory() as folder:
+        if empty_cache:
+            env["ROBOCRAM_CACHE_DIR"] = folder
+        return _timed_child(kind, env)
+
+
+def _timed_child(kind: str, env: dict[str, str]) -> dict[str, float]:
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
     done = subprocess.run(
-        [sys.executable, __file__, "--child", kind], capture_output=True, text=True, check=False
-    )
+        [sys.executable, __file__, "--child", kind],
+        capture_output=True, text=True, check=False, env=env,
+    )  # fmt: skip
     wall = time.perf_counter() - start
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     if done.returncode != 0:
@@ -123,17 +138,21 @@ def main() -> None:
     parser.add_argument("runs", type=int, nargs="?", default=10, help="fresh processes per row")
     parser.add_argument("--child", choices=KINDS, help=argparse.SUPPRESS)
     parser.add_argument("--only", choices=KINDS, action="append", help="rows to run")
+    parser.add_argument("--empty-cache", action="store_true", help="a new cache per child")
     args = parser.parse_args()
     if args.child:
         print(json.dumps(child(args.child)))
         return
     kinds = tuple(args.only or KINDS)
     load = ", ".join(f"{x:.1f}" for x in os.getloadavg())
-    print(f"first result: median of {args.runs} fresh processes, load average {load}")
+    cache = "an empty robocram cache each" if args.empty_cache else "robocram's cache warm"
+    print(f"first result: median of {args.runs} fresh processes ({cache}), load average {load}")
+    for kind in kinds:  # untimed: writes the bytecode (and the cache) as an install would
+        run_child(kind, args.empty_cache)
     runs: dict[str, list[dict[str, float]]] = {kind: [] for kind in kinds}
     for r in range(args.runs):
         for kind in kinds if r % 2 == 0 else kinds[::-1]:
-            runs[kind].append(run_child(kind))
+            runs[kind].append(run_child(kind, args.empty_cache))
     for kind in kinds:
         report(kind, runs[kind])
     load = ", ".join(f"{x:.1f}" for x in os.getloadavg())
