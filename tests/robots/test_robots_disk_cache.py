@@ -4,6 +4,7 @@ the ones built."""
 
 from __future__ import annotations
 
+import pickle
 import threading
 from pathlib import Path
 
@@ -13,6 +14,7 @@ import pytest
 from robocram.kinematics import IKSolver
 from robocram.kinematics.seed_table import SeedTable
 from robocram.robots import load_description
+from robocram.robots.arm_envelope import _working_yaw, working_yaw
 from robocram.robots.arm_slice import _flatness, _sampled
 from robocram.robots.disk_cache import kept_arrays
 
@@ -118,3 +120,14 @@ def test_arm_flatness_read_equals_computed(cache: Path) -> None:
     assert _flatness(pr2.model, arm) == computed  # read
     assert len(list((cache.parent / "arm-slices").glob("*.npz"))) == 1
     assert 0.35 < computed < 1.0  # the PR2's arm spreads in three directions
+
+
+def test_working_direction_read_equals_computed(cache: Path) -> None:
+    pr2 = load_description("pr2")
+    assert pr2.model is not None
+    arm = pr2.arms["left"]
+    computed = _working_yaw(pr2.model, arm, None)
+    for _ in range(2):  # a copy keeps nothing derived in memory: written, then read
+        fresh = pickle.loads(pickle.dumps(pr2.model))
+        assert working_yaw(fresh, arm) == computed == 0.0  # the PR2 works ahead
+    assert len(list((cache.parent / "arm-directions").glob("*.npz"))) == 1

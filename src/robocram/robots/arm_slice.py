@@ -27,7 +27,8 @@ SMALL_REACH = 0.4  # [m] an arm reaching less past its shoulder is small
 # the modules whose code computes the flatness (kept on disk: :mod:`~robocram.robots.disk_cache`)
 BUILT_BY = (
     __name__, "robocram.robots.arm_envelope", "robocram.robots.model_pose",
-    "robocram.robots.mimic", "robocram.tf.pose", "robocram.tf.quaternion",
+    "robocram.robots.mimic", "robocram.robots.robot_model", "robocram.tf.pose",
+    "robocram.tf.quaternion",
 )  # fmt: skip
 
 
