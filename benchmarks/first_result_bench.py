@@ -20,8 +20,9 @@ As an installed package runs: children write and use bytecode (``PYTHONDONTWRITE
 is dropped for them) and one untimed child per row runs first, writing the bytecode and
 robocram's disk cache. ``--empty-cache`` gives every child a new cache folder instead
 (``ROBOCRAM_CACHE_DIR``): a user's very first run on a machine, reachability maps included.
-Usage: python benchmarks/first_result_bench.py [N] [--empty-cache] [--only KIND]
-(N fresh processes per row, default 10)
+``--against OLD/src`` times another checkout in the same rounds, alternating, and prints
+the ratios. Usage: python benchmarks/first_result_bench.py [N] [--empty-cache]
+[--only KIND] [--against SRC]   (N fresh processes per row, default 10)
 """
 
 from __future__ import annotations
@@ -81,9 +82,12 @@ def child(kind: str) -> dict[str, float]:
     return out
 
 
-def run_child(kind: str, empty_cache: bool = False) -> dict[str, float]:
-    """One fresh process of ``kind``: its wall and CPU seen from here, and its own split."""
+def run_child(kind: str, empty_cache: bool = False, src: str | None = None) -> dict[str, float]:
+    """One fresh process of ``kind`` (importing robocram from ``src``, else as this one
+    does): its wall and CPU seen from here, and its own split."""
     env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+    if src is not None:
+        env["PYTHONPATH"] = src
     with tempfile.TemporaryDirectory() as folder:
         if empty_cache:
             env["ROBOCRAM_CACHE_DIR"] = folder
@@ -111,9 +115,11 @@ def _median(runs: list[dict[str, float]], key: str) -> float:
     return statistics.median(r[key] for r in runs)
 
 
-def report(kind: str, runs: list[dict[str, float]]) -> None:
+def report(kind: str, runs: list[dict[str, float]], label: str = "") -> None:
     """The medians of ``kind``'s runs beside its goal."""
     m = {key: _median(runs, key) for key in runs[0]}
+    if label:
+        print(f"  {label}:")
     if kind == "import":
         line = f"import   process wall {m['process']:5.2f} s  CPU {m['process_cpu']:5.2f} s"
         line += f"   (the imports alone {m['import']:5.2f} s)"
@@ -133,12 +139,23 @@ def report(kind: str, runs: list[dict[str, float]]) -> None:
     print(f"{line}   [{GOALS[kind]}]", flush=True)
 
 
+def _ratios(kind: str, this: list[dict[str, float]], other: list[dict[str, float]]) -> None:
+    """This tree's medians over the other's, wall and CPU."""
+    key = "transport" if kind == "first" else "process"
+    wall = _median(this, key) / _median(other, key)
+    cpu = _median(this, f"{key}_cpu") / _median(other, f"{key}_cpu")
+    print(f"  {kind}: this tree / the other: wall {wall:4.2f}x  CPU {cpu:4.2f}x", flush=True)
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("runs", type=int, nargs="?", default=10, help="fresh processes per row")
     parser.add_argument("--child", choices=KINDS, help=argparse.SUPPRESS)
     parser.add_argument("--only", choices=KINDS, action="append", help="rows to run")
     parser.add_argument("--empty-cache", action="store_true", help="a new cache per child")
+    parser.add_argument(
+        "--against", metavar="SRC", help="another tree's src folder, timed in the same rounds"
+    )
     args = parser.parse_args()
     if args.child:
         print(json.dumps(child(args.child)))
@@ -147,14 +164,21 @@ def main() -> None:
     load = ", ".join(f"{x:.1f}" for x in os.getloadavg())
     cache = "an empty robocram cache each" if args.empty_cache else "robocram's cache warm"
     print(f"first result: median of {args.runs} fresh processes ({cache}), load average {load}")
+    trees: tuple[str | None, ...] = (None, args.against) if args.against else (None,)
     for kind in kinds:  # untimed: writes the bytecode (and the cache) as an install would
-        run_child(kind, args.empty_cache)
-    runs: dict[str, list[dict[str, float]]] = {kind: [] for kind in kinds}
+        for src in trees:
+            run_child(kind, args.empty_cache, src)
+    runs: dict[tuple[str, str | None], list[dict[str, float]]] = {}
     for r in range(args.runs):
         for kind in kinds if r % 2 == 0 else kinds[::-1]:
-            runs[kind].append(run_child(kind, args.empty_cache))
+            for src in trees if r % 2 == 0 else trees[::-1]:
+                runs.setdefault((kind, src), []).append(run_child(kind, args.empty_cache, src))
     for kind in kinds:
-        report(kind, runs[kind])
+        for src in trees:
+            label = "" if not args.against else f"robocram from {src or 'PYTHONPATH'}"
+            report(kind, runs[(kind, src)], label)
+        if args.against:
+            _ratios(kind, runs[(kind, None)], runs[(kind, args.against)])
     load = ", ".join(f"{x:.1f}" for x in os.getloadavg())
     print(f"load average at the end {load}")
 
