@@ -5,7 +5,8 @@ only ask the knowledge base and PERFORM designators, so they load none of the he
 libraries. Projection builds its process modules from the motion and kinematics layers at
 import (pinocchio for kinematics, coal for collision shapes, OMPL and ruckig for arm
 paths and their timing, PyBullet for the world): those it must load, and nothing more.
-Scenes build worlds (PyBullet) and place robots with kinematics (pinocchio, coal).
+Scenes build worlds (PyBullet) and place robots with kinematics (pinocchio, coal). The
+batch needs what projection needs; its trace store (SQLAlchemy) only once a batch traces.
 """
 
 from __future__ import annotations
@@ -31,6 +32,7 @@ NEEDED: dict[str, frozenset[str]] = {
     "robocram.plans": frozenset(),
     "robocram.projection": WORLD | KINEMATICS | MOTION,
     "robocram.scenes": WORLD | KINEMATICS,
+    "robocram.batch": WORLD | KINEMATICS | MOTION,
 }
 
 
@@ -57,7 +59,7 @@ def test_plans_load_no_heavy_library() -> None:
     assert _heavy_loaded("robocram.plans") == set()
 
 
-@pytest.mark.parametrize("module", ["robocram.projection", "robocram.scenes"])
+@pytest.mark.parametrize("module", ["robocram.projection", "robocram.scenes", "robocram.batch"])
 def test_projection_and_scenes_load_only_what_they_need(module: str) -> None:
     assert _heavy_loaded(module) == NEEDED[module]
 

@@ -31,6 +31,8 @@ def worker_context(config: WorkerConfig) -> ForkServerContext | SpawnContext:
         return multiprocessing.get_context("spawn")
     context = multiprocessing.get_context("forkserver")
     own = {f.__module__ for f in (config.plan, config.scene) if _is_robocram(f.__module__)}
+    if config.traces is not None:  # the trace store (SQLAlchemy) only for a traced batch
+        own.add("robocram.traces")
     # read when the server starts: a server already running keeps what it imported
     context.set_forkserver_preload([*PRELOAD, *sorted(own - set(PRELOAD))])
     return context
