@@ -4,6 +4,7 @@ the ones built."""
 
 from __future__ import annotations
 
+import io
 import pickle
 import threading
 from pathlib import Path
@@ -70,6 +71,21 @@ def test_a_cut_short_file_is_rebuilt_and_replaced(cache: Path) -> None:
     assert _same(kept_arrays(KIND, "key", BUILT_BY, build), build())
     assert build.count == 3  # rebuilt (the third call is the comparison's)
     assert _same(kept_arrays(KIND, "key", BUILT_BY, build), build()) and build.count == 4
+
+
+def _npy() -> bytes:
+    out = io.BytesIO()
+    np.save(out, np.arange(3.0))
+    return out.getvalue()
+
+
+@pytest.mark.parametrize("junk", [b"", b"not a zip at all", _npy()[:20], _npy()])
+def test_a_file_that_is_no_entry_is_rebuilt(cache: Path, junk: bytes) -> None:
+    build = Builder()
+    kept_arrays(KIND, "key", BUILT_BY, build)
+    (entry,) = cache.glob("*.npz")
+    entry.write_bytes(junk)
+    assert _same(kept_arrays(KIND, "key", BUILT_BY, build), build()) and build.count == 3
 
 
 def test_changed_contents_are_not_trusted(cache: Path) -> None:

@@ -30,7 +30,15 @@ Arrays = Mapping[str, NDArray[np.generic]]
 _HASH = "_hash"  # the entry's full hash, stored in its file
 _DIGEST = "_digest"  # the digest of its arrays
 # what a damaged or foreign file raises when read: it is rebuilt
-_UNREADABLE = (OSError, ValueError, KeyError, EOFError, zipfile.BadZipFile)
+_UNREADABLE = (
+    OSError,
+    ValueError,
+    KeyError,
+    EOFError,
+    TypeError,
+    AttributeError,
+    zipfile.BadZipFile,
+)
 
 
 def cache_dir() -> Path:
@@ -74,9 +82,7 @@ def _read(path: Path, full: str) -> dict[str, NDArray[np.generic]] | None:
     try:
         with np.load(path, allow_pickle=False) as data:
             arrays = {name: data[name] for name in data.files}
-    except FileNotFoundError:
-        return None
-    except _UNREADABLE:
+    except _UNREADABLE:  # missing (OSError) too
         return None
     stored_hash, stored_digest = arrays.pop(_HASH, None), arrays.pop(_DIGEST, None)
     if stored_hash is None or str(stored_hash) != full:
