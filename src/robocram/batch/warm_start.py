@@ -20,8 +20,12 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     from robocram.batch.worker import WorkerConfig
 
-# imported by the server before it forks a worker: what every worker needs
-PRELOAD = ("robocram.batch.worker", "robocram.plans", "robocram.scenes")
+# imported by the server before it forks a worker: what every worker needs (the last two
+# are imported by a first variant's world and plan otherwise)
+PRELOAD = (
+    "robocram.batch.worker", "robocram.plans", "robocram.scenes", "robocram.world.predicates",
+    "numpy.random",
+)  # fmt: skip
 
 
 def worker_context(config: WorkerConfig) -> ForkServerContext | SpawnContext:
@@ -33,6 +37,8 @@ def worker_context(config: WorkerConfig) -> ForkServerContext | SpawnContext:
     own = {f.__module__ for f in (config.plan, config.scene) if _is_robocram(f.__module__)}
     if config.traces is not None:  # the trace store (SQLAlchemy) only for a traced batch
         own.add("robocram.traces")
+    if config.robot.isidentifier():  # a built-in robot's description (the server skips a
+        own.add(f"robocram.robots.builtin.{config.robot}")  # module it cannot import)
     # read when the server starts: a server already running keeps what it imported
     context.set_forkserver_preload([*PRELOAD, *sorted(own - set(PRELOAD))])
     return context
