@@ -15,16 +15,23 @@ the first result within 2 s), where each variant's time went in its worker (scen
 restore, placing, tracer, robot set-up, plan), what the parent waited beyond the
 workers' own time (IPC and scheduling), and the same variants' plan run in this one
 process for comparison (goal: a worker's per-variant cost within 20 % of it).
+Then issue 40's small-batch row (``--small``, default 96 variants): the tabletop batch as
+a user's command runs it, each run a fresh process (import, the workers' start, the batch),
+2 workers against 1 (goal >= 1.6x), with the time from the command's start to its first
+result (goal <= 1 s).
 Usage: python benchmarks/batch_bench.py [--kitchen 1000] [--variants 40] [--rounds 2]
-[--robot pr2] [--no-ray] [--no-tabletop]
+[--robot pr2] [--no-ray] [--no-tabletop] [--small 96]
 """
 
 from __future__ import annotations
 
 import argparse
+import json
 import os
 import re
 import statistics
+import subprocess
+import sys
 import tempfile
 import time
 from dataclasses import dataclass
@@ -181,15 +188,64 @@ def in_process(spec: BatchSpec, count: int) -> None:
     )
 
 
+def small_batch(count: int, robot: str, rounds: int) -> None:
+    """Issue 40's row: ``count`` variants in a fresh process per run, 2 workers against 1."""
+    runs: dict[int, list[dict[str, float]]] = {1: [], 2: []}
+    for r in range(rounds):
+        for workers in (1, 2) if r % 2 == 0 else (2, 1):
+            runs[workers].append(_fresh_batch(count, workers, robot))
+    one, two = (min(runs[w], key=lambda f: f["wall"]) for w in (1, 2))
+    for workers, f in ((1, one), (2, two)):
+        print(
+            f"small batch x{workers}: {count} variants in {f['wall']:5.2f} s from the command's "
+            f"start ({f['succeeded']:.0f} picked), first result after {f['first']:4.2f} s "
+            f"(goal <= 1 s)  (load {os.getloadavg()[0]:.1f})",
+            flush=True,
+        )
+    print(
+        f"small batch: speed-up 2 vs 1 workers {one['wall'] / two['wall']:.2f}x (best of "
+        f"{rounds} rounds, fresh processes; issue 40's goal >= 1.6x)",
+        flush=True,
+    )
+
+
+def _fresh_batch(count: int, workers: int, robot: str) -> dict[str, float]:
+    """One run of the small batch as its own command: its wall time and first result [s]."""
+    start = time.time()
+    command = [sys.executable, __file__, "--small-child", str(count), str(workers)]
+    done = subprocess.run([*command, "--robot", robot], capture_output=True, text=True, check=False)
+    wall = time.time() - start
+    if done.returncode != 0:
+        sys.exit(f"the small batch's process failed:\n{done.stderr}")
+    child: dict[str, float] = json.loads(done.stdout.strip().splitlines()[-1])
+    return {"wall": wall, "first": child["first"] - start, "succeeded": child["succeeded"]}
+
+
+def _small_child(count: int, workers: int, robot: str) -> None:
+    """The child's side: run the batch, print when its first result came (epoch [s])."""
+    first, succeeded = 0.0, 0
+    for result in project_variants(
+        variants(count), plan=pick_and_settle, robot=robot, workers=workers
+    ):
+        first = first or time.time()
+        succeeded += result.succeeded
+    print(json.dumps({"first": first, "succeeded": succeeded}))
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--variants", type=int, default=40)
+    parser.add_argument("--variants", type=int, default=40, help="tabletop variants (0: none)")
     parser.add_argument("--robot", default="pr2")
     parser.add_argument("--rounds", type=int, default=2, help="runs of each, fastest kept")
     parser.add_argument("--no-ray", action="store_true", help="only the process backend")
     parser.add_argument("--kitchen", type=int, default=1000, help="kitchen variants (0: none)")
     parser.add_argument("--no-tabletop", action="store_true", help="only the kitchen figure")
+    parser.add_argument("--small", type=int, default=96, help="small-batch variants (0: none)")
+    parser.add_argument("--small-child", type=int, nargs=2, help=argparse.SUPPRESS)
     args = parser.parse_args()
+    if args.small_child:
+        _small_child(*args.small_child, args.robot)
+        return
     if args.kitchen:
         kitchen_batch(args.kitchen, 2)
     if args.no_tabletop:
@@ -202,7 +258,10 @@ def main() -> None:
         "this on an idle machine",
         flush=True,
     )
-    compare("processes", batch, args.robot, args.rounds)
+    if args.variants:
+        compare("processes", batch, args.robot, args.rounds)
+    if args.small:
+        small_batch(args.small, args.robot, args.rounds)
     if args.no_ray:
         return
     import ray

@@ -27,9 +27,29 @@ from robocram.plans import pick_up
 from robocram.scenes import tabletop_scene
 from robocram.traces import TraceDatabase, runs
 
+HELPERS = ("forkserver", "resource_tracker")
+
 
 def _children() -> set[int]:
-    return {p.pid for p in psutil.Process().children(recursive=True) if p.is_running()}
+    """Live descendants but multiprocessing's own helpers: the forkserver the workers come
+    from (kept for the next batch) and its resource tracker."""
+    return {
+        p.pid
+        for p in psutil.Process().children(recursive=True)
+        if p.is_running() and not _multiprocessing_helper(p)
+    }
+
+
+def _multiprocessing_helper(process: psutil.Process) -> bool:
+    """Whether ``process`` is a helper this process started (a worker forked by the server
+    shows the server's command line too, but the server is its parent)."""
+    try:
+        command = " ".join(process.cmdline())
+        if process.ppid() != os.getpid():
+            return False
+    except psutil.NoSuchProcess:
+        return False
+    return any(f"from multiprocessing.{m} import main" in command for m in HELPERS)
 
 
 def test_one_and_two_workers_give_equal_results(

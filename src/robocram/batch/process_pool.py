@@ -1,4 +1,7 @@
-"""The ``"processes"`` backend: spawned workers, one variant in flight per worker.
+"""The ``"processes"`` backend: worker processes, one variant in flight per worker.
+
+Workers are forked from a server with robocram imported (:mod:`~robocram.batch.warm_start`),
+so they start warm; the batch's plan and scene travel once per worker, at its start.
 
 Each worker talks to the parent over its own pipe, so the parent always knows which variant
 a worker holds: when a worker dies (a crash, ``kill -9``) its variant is reported lost and a
@@ -9,7 +12,6 @@ every worker before control returns.
 from __future__ import annotations
 
 import contextlib
-import multiprocessing
 import os
 import socket
 from collections.abc import Iterator
@@ -18,6 +20,7 @@ from multiprocessing.connection import Connection, wait
 from multiprocessing.process import BaseProcess
 
 from robocram.batch.result import VariantResult
+from robocram.batch.warm_start import worker_context
 from robocram.batch.worker import WorkerConfig, worker_main
 from robocram.batch.worker_pool import Pending, WorkerPool
 
@@ -36,12 +39,12 @@ class _Worker:
 
 
 class ProcessPool(WorkerPool):
-    """Spawned workers running the variants of one batch; iterate :meth:`results`."""
+    """Worker processes running the variants of one batch; iterate :meth:`results`."""
 
     def __init__(self, config: WorkerConfig, workers: int) -> None:
         super().__init__(workers)
         self.config = config
-        self._context = multiprocessing.get_context("spawn")
+        self._context = worker_context(config)
         self._workers: list[_Worker] = []
 
     def pids(self) -> list[int]:

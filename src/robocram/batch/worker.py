@@ -18,7 +18,7 @@ from contextlib import AbstractContextManager, nullcontext
 from dataclasses import dataclass, replace
 from multiprocessing.connection import Connection
 from pathlib import Path
-from typing import Any, Protocol, TypeVar
+from typing import TYPE_CHECKING, Any, Protocol, TypeVar
 
 import numpy as np
 
@@ -29,8 +29,10 @@ from robocram.batch.result import VariantResult, VariantStatus
 from robocram.batch.variant import Variant
 from robocram.projection import simulated_robot
 from robocram.tf import PoseStamped
-from robocram.traces import Tracer, trace_to
 from robocram.world import World
+
+if TYPE_CHECKING:
+    from robocram.traces import Tracer
 
 
 class Scene(Protocol):
@@ -114,6 +116,8 @@ class VariantRunner:
     def _tracing(self, world: World) -> AbstractContextManager[Tracer | None]:
         if self.config.traces is None:
             return nullcontext(None)
+        from robocram.traces import trace_to  # SQLAlchemy: loaded by a batch that traces
+
         return trace_to(self.config.traces, world=world)
 
 

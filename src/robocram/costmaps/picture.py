@@ -7,7 +7,6 @@ from pathlib import Path
 
 import numpy as np
 from numpy.typing import NDArray
-from PIL import Image, ImageDraw
 
 from robocram.costmaps.grid import CostmapGrid, FloatGrid
 from robocram.tf import Pose
@@ -54,6 +53,8 @@ def draw_costmap(
     alpha = np.kron(share[::-1], np.ones((pixels_per_cell, pixels_per_cell)))[..., None]
     blended = np.where(alpha > 0, (1 - 0.75 * alpha) * background + 0.75 * alpha * HEAT,
                        background)  # fmt: skip
+    from PIL import Image, ImageDraw  # only a picture needs Pillow; a costmap does not
+
     image = Image.fromarray(blended.clip(0, 255).astype(np.uint8))
     draw = ImageDraw.Draw(image)
     radius = max(2, pixels_per_cell)

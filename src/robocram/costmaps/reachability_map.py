@@ -26,6 +26,7 @@ from robocram.costmaps.grasps import approach_axis
 from robocram.kinematics import arm_joints
 from robocram.kinematics.robot_kinematics import robot_kinematics
 from robocram.robots import RobotDescription, load_description
+from robocram.robots.disk_cache import cache_dir
 
 SAMPLES = 100_000  # FK samples per arm
 RADIUS_STEP = 0.05  # [m]
@@ -35,15 +36,6 @@ HEIGHT_STEP = 0.05  # [m]
 HEIGHT_MAX = 2.4  # [m]
 MAX_TILT = math.radians(30)  # approach axis within this of straight down counts as a grasp
 FORMAT = 4  # bump when the map's meaning changes: old cache files are then ignored
-
-
-def cache_dir() -> Path:
-    """``$ROBOCRAM_CACHE_DIR``, else ``$XDG_CACHE_HOME/robocram``, else ``~/.cache/robocram``."""
-    explicit = os.environ.get("ROBOCRAM_CACHE_DIR")
-    if explicit:
-        return Path(explicit)
-    xdg = os.environ.get("XDG_CACHE_HOME")
-    return (Path(xdg) if xdg else Path.home() / ".cache") / "robocram"
 
 
 @dataclass(frozen=True, eq=False)

@@ -6,6 +6,7 @@ configurations drawn uniformly within the limits by a seeded generator (so every
 repeatable), with their tool poses in the chain base (:mod:`chain_sweep`). A grid on the
 tool positions finds the samples around a target; the nearest of them by position and
 orientation (rotation matrices, weighted by ``ROTATION_WEIGHT`` [m]) start the descents.
+A table is kept on disk (:mod:`robocram.robots.disk_cache`): a new process reads it.
 """
 
 from __future__ import annotations
@@ -18,11 +19,14 @@ import pinocchio as pin
 
 from robocram.kinematics.arm_chain import ArmChain, FloatArray
 from robocram.kinematics.chain_sweep import sweep_tip_poses
+from robocram.robots.disk_cache import kept_arrays
 
 ROTATION_WEIGHT = 0.1  # [m] per unit of rotation-matrix difference
 TABLE_SEED = 0  # seeds the sampled configurations; fixed, so IK answers are repeatable
 CELLS_ACROSS_REACH = 8  # grid cells along the arm's reach
 CACHED_CELLS = 64  # neighbourhoods a table keeps gathered (a batch visits a dozen)
+# the modules whose code computes a table: a change to any of them makes new tables
+BUILT_BY = (__name__, "robocram.kinematics.chain_sweep", "robocram.kinematics.arm_chain")
 _AROUND = np.array([(x, y, z) for x in (-1, 0, 1) for y in (-1, 0, 1) for z in (-1, 0, 1)])
 
 
@@ -60,29 +64,24 @@ class SeedTable:
     """
 
     def __init__(self, chain: ArmChain, size: int, reach: float) -> None:
-        rng = np.random.default_rng(TABLE_SEED)
-        configurations = random_configurations(chain, rng, size, np.zeros(len(chain.variables)))
-        position, rotation = sweep_tip_poses(chain, configurations @ chain.a.T + chain.offsets({}))
-        self.cell = max(reach, 1e-3) / CELLS_ACROSS_REACH  # [m]
-        cells = np.floor(position / self.cell).astype(np.int64)
-        self._low = cells.min(axis=0) - 1
-        self._shape = cells.max(axis=0) - self._low + 2
-        keys = self._keys(cells)
-        order = np.argsort(keys, kind="stable")
-        self.configurations = configurations[order]
-        features = np.hstack((position, ROTATION_WEIGHT * rotation.reshape(size, 9)))
-        self.features = features[order]
-        self._keys_sorted = keys[order]
-        self._squares = np.einsum("ij,ij->i", self.features, self.features)
+        key = repr((geometry_key(chain), size, reach))
+        versions = (pin.__version__,)
+        table = kept_arrays(
+            "seed-tables", key, BUILT_BY, lambda: _sampled(chain, size, reach), versions
+        )
+        self.cell = float(table["cell"])  # [m]
+        self._low, self._shape = table["low"], table["shape"]
+        # typed as built (asarray copies nothing: the arrays were built as float64)
+        self.configurations = np.asarray(table["configurations"], np.float64)
+        self.features = np.asarray(table["features"], np.float64)
+        self._keys_sorted = table["keys"]
+        self._squares = np.asarray(table["squares"], np.float64)
         # cell -> the rows' configurations, features and squared features
         self._around: dict[tuple[int, int, int], _Rows] = {}
 
     def _keys(self, cells: np.ndarray) -> np.ndarray:
         """One integer per grid cell (cells outside the sampled box map to -1)."""
-        local = cells - self._low
-        inside = np.all((local >= 0) & (local < self._shape), axis=-1)
-        key = (local[..., 0] * self._shape[1] + local[..., 1]) * self._shape[2] + local[..., 2]
-        return np.where(inside, key, -1)
+        return _cell_keys(cells, self._low, self._shape)
 
     def _neighbourhood(self, cell: tuple[int, int, int]) -> _Rows:
         """The samples in ``cell`` and the 26 cells around it (cached per cell, with their
@@ -118,6 +117,33 @@ class SeedTable:
         else:
             pick = np.argsort(distance)
         return rows.configurations[pick], np.sqrt(np.maximum(distance[pick], 0.0))
+
+
+def _sampled(chain: ArmChain, size: int, reach: float) -> dict[str, FloatArray]:
+    """A new table's arrays: ``size`` seeded samples, sorted by grid cell."""
+    rng = np.random.default_rng(TABLE_SEED)
+    configurations = random_configurations(chain, rng, size, np.zeros(len(chain.variables)))
+    position, rotation = sweep_tip_poses(chain, configurations @ chain.a.T + chain.offsets({}))
+    cell = max(reach, 1e-3) / CELLS_ACROSS_REACH  # [m]
+    cells = np.floor(position / cell).astype(np.int64)
+    low = cells.min(axis=0) - 1
+    shape = cells.max(axis=0) - low + 2
+    keys = _cell_keys(cells, low, shape)
+    order = np.argsort(keys, kind="stable")
+    features = np.hstack((position, ROTATION_WEIGHT * rotation.reshape(size, 9)))[order]
+    return {
+        "cell": np.array(cell), "low": low, "shape": shape,
+        "configurations": configurations[order], "features": features, "keys": keys[order],
+        "squares": np.einsum("ij,ij->i", features, features),
+    }  # fmt: skip
+
+
+def _cell_keys(cells: np.ndarray, low: np.ndarray, shape: np.ndarray) -> np.ndarray:
+    """One integer per grid cell of the box from ``low`` of ``shape`` (outside: -1)."""
+    local = cells - low
+    inside = np.all((local >= 0) & (local < shape), axis=-1)
+    key = (local[..., 0] * shape[1] + local[..., 1]) * shape[2] + local[..., 2]
+    return np.where(inside, key, -1)
 
 
 class _Rows(NamedTuple):

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 from robocram.logic.bigint import text_int
@@ -40,23 +41,17 @@ def syntax_error(text: str, pos: int, reason: str) -> PrologSyntaxError:
     return PrologSyntaxError(reason, line, col, snippet)
 
 
+# layout: white space (``str.isspace``, as ``\s`` matches), ``%`` line comments and
+# ``/* */`` block comments; one match skips a whole run of them
+_LAYOUT = re.compile(r"(?:\s+|%[^\n]*\n?|/\*.*?\*/)*", re.DOTALL)
+
+
 def _skip_layout(text: str, i: int) -> int:
-    n = len(text)
-    while i < n:
-        c = text[i]
-        if c.isspace():
-            i += 1
-        elif c == "%":
-            j = text.find("\n", i)
-            i = n if j < 0 else j + 1
-        elif c == "/" and text.startswith("/*", i):
-            j = text.find("*/", i + 2)
-            if j < 0:
-                raise syntax_error(text, i, "unterminated block comment")
-            i = j + 2
-        else:
-            break
-    return i
+    found = _LAYOUT.match(text, i)
+    end = found.end() if found is not None else i  # (`*` always matches, if only nothing)
+    if text.startswith("/*", end):  # a block comment the match could not close
+        raise syntax_error(text, end, "unterminated block comment")
+    return end
 
 
 def _read_quoted(text: str, i: int, quote: str) -> tuple[str, int]:

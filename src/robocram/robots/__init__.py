@@ -1,4 +1,12 @@
-"""Robots: URDF models, typed robot descriptions, built-in robots and interface facts."""
+"""Robots: URDF models, typed robot descriptions, built-in robots and interface facts.
+
+The description drafter (:mod:`robocram.robots.draft`) is loaded when first asked for: it
+pulls pinocchio and coal in, which a script that only loads a robot does not need yet.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
 
 from robocram.robots.description import (
     ArmDescription,
@@ -9,7 +17,6 @@ from robocram.robots.description import (
     RobotDescription,
 )
 from robocram.robots.description_source import is_description_spec
-from robocram.robots.draft import DraftDescription, draft_description
 from robocram.robots.errors import (
     DescriptionCheckError,
     DescriptionError,
@@ -35,6 +42,9 @@ from robocram.robots.model_pose import joint_transform, link_pose
 from robocram.robots.model_split import ModelPart, SplitModel, split_model
 from robocram.robots.robot_model import RobotModel
 from robocram.robots.urdf_elements import Geometry, Inertial, Joint, Link, Mimic
+
+if TYPE_CHECKING:
+    from robocram.robots.draft import DraftDescription, draft_description
 
 __all__ = [
     "ArmDescription",
@@ -82,3 +92,12 @@ __all__ = [
     "mimic_followers",
     "split_model",
 ]
+
+
+def __getattr__(name: str) -> object:
+    """The drafter's names, imported on first use (see the module's docstring)."""
+    if name in ("DraftDescription", "draft_description"):
+        from robocram.robots import draft
+
+        return getattr(draft, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

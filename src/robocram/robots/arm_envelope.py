@@ -27,6 +27,7 @@ import numpy as np
 
 from robocram.robots.body_clearance import beyond_body
 from robocram.robots.description import ArmDescription
+from robocram.robots.disk_cache import kept_arrays
 from robocram.robots.model_pose import finite_limits, joint_transform, link_pose
 from robocram.robots.robot_model import RobotModel
 from robocram.tf import Pose
@@ -36,6 +37,12 @@ FAR_SHARE = 0.5  # of the farthest horizontal wrist distance: the samples that c
 MIN_AHEAD_SHARE = 0.05  # of the far wrist samples ahead of the shoulder, else it works aside
 QUARTERS = (0.0, math.pi / 2, -math.pi / 2, math.pi)  # [rad] ahead first: it wins ties
 VERTICAL = 0.9  # |z| of a unit axis in the root link above which it is vertical
+# the modules whose code finds the working direction (kept on disk: robots/disk_cache.py)
+BUILT_BY = (
+    __name__, "robocram.robots.body_clearance", "robocram.robots.link_centre",
+    "robocram.robots.model_pose", "robocram.robots.mimic", "robocram.robots.robot_model",
+    "robocram.tf.pose", "robocram.tf.quaternion",
+)  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -163,8 +170,12 @@ def working_yaw(
     """
     key = (arm.joints, arm.end_effector_link, tuple(sorted((fixed or {}).items())))
     found = model.derived(_Directions).found
-    if key not in found:
-        found[key] = _working_yaw(model, arm, fixed)
+    if key not in found:  # a new process reads it from disk once computed
+        kept = kept_arrays(
+            "arm-directions", f"{model.to_urdf()}\n{key}", BUILT_BY,
+            lambda: {"yaw": np.array(_working_yaw(model, arm, fixed))},
+        )  # fmt: skip
+        found[key] = float(kept["yaw"])
     return found[key]
 
 

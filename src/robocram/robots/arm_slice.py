@@ -18,11 +18,18 @@ import numpy as np
 
 from robocram.robots.arm_envelope import arm_reach, joint_samples
 from robocram.robots.description import ArmDescription, RobotDescription
+from robocram.robots.disk_cache import kept_arrays
 from robocram.robots.model_pose import link_pose
 from robocram.robots.robot_model import RobotModel
 
 THIN = 0.35  # smallest over largest spread of the hand's positions: below, a thin slice
 SMALL_REACH = 0.4  # [m] an arm reaching less past its shoulder is small
+# the modules whose code computes the flatness (kept on disk: :mod:`~robocram.robots.disk_cache`)
+BUILT_BY = (
+    __name__, "robocram.robots.arm_envelope", "robocram.robots.model_pose",
+    "robocram.robots.mimic", "robocram.robots.robot_model", "robocram.tf.pose",
+    "robocram.tf.quaternion",
+)  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -65,12 +72,21 @@ def arm_slice(model: RobotModel, arm: ArmDescription) -> ArmSlice:
 
 
 def _flatness(model: RobotModel, arm: ArmDescription) -> float:
+    """The flatness of the hand's sampled positions, read from disk once computed."""
     joints = tuple(j for j in arm.joints if model.joints[j].mimic is None)
     if not joints:
         return 0.0
-    points = np.array(
-        [link_pose(model, arm.end_effector_link, s).position for s in joint_samples(model, joints)]
+    tip = arm.end_effector_link
+    key = f"{model.to_urdf()}\n{joints}\n{tip}"
+    kept = kept_arrays(
+        "arm-slices", key, BUILT_BY, lambda: {"flatness": np.array(_sampled(model, tip, joints))}
     )
+    return float(kept["flatness"])
+
+
+def _sampled(model: RobotModel, tip: str, joints: tuple[str, ...]) -> float:
+    """Smallest over largest principal spread of ``tip``'s positions over seeded values."""
+    points = np.array([link_pose(model, tip, s).position for s in joint_samples(model, joints)])
     spreads = np.linalg.svd(points - points.mean(axis=0), compute_uv=False)
     spreads /= math.sqrt(len(points))
     return float(spreads[2] / spreads[0]) if spreads[0] > 1e-9 else 0.0

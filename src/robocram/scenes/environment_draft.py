@@ -29,7 +29,6 @@ from robocram.scenes.environment_description import (
     SurfaceDescription,
 )
 from robocram.scenes.environment_model import Box, EnvironmentModel, EnvJoint
-from robocram.scenes.environment_source import environment_source
 from robocram.scenes.stand_in_draft import DraftedStandIn, draft_stand_ins, drawer_fronts
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
@@ -56,6 +55,9 @@ class EnvironmentDraft:
 
     def source(self, module_file: Path | None = None) -> str:
         """The draft as a ready-to-edit Python module defining ``description()``."""
+        # the source writer is the robot drafter's (pinocchio, coal): loaded when written
+        from robocram.scenes.environment_source import environment_source
+
         return environment_source(
             self.description, self.reasons, self.doubts, self.stand_ins, module_file
         )
@@ -200,27 +202,44 @@ def _top(model: EnvironmentModel, link: str, box: Box) -> tuple[float, Pose, flo
     return pose.position[2] + sz / 2, pose, sx, sy
 
 
-def _covered(model: EnvironmentModel, link: str, height: float, centre: Pose) -> bool:
+BoxFrame = tuple[str, Pose, tuple[float, float, float]]  # link, box_T_root, size [m]
+
+
+def _box_frames(model: EnvironmentModel) -> list[BoxFrame]:
+    """Every box as ``(link, root_T_box inverted, size)``: computed once for all the
+    faces :func:`_covered` asks about (a link's pose walks its chain)."""
+    return [
+        (link, (model.pose(link) * box.origin).inverse(), box.size)
+        for link, boxes in model.boxes.items()
+        for box in boxes
+    ]
+
+
+def _covered(
+    frames: list[BoxFrame],
+    link: str,
+    height: float,
+    centre: Pose,
+) -> bool:
     x, y, _ = centre.position
-    for other, boxes in model.boxes.items():
+    for other, box_T_root, size in frames:
         if other == link:
             continue
-        for box in boxes:
-            pose = model.pose(other) * box.origin
-            local = (pose.inverse() * Pose((x, y, height + COVER_GAP / 2))).position
-            if all(abs(c) <= s / 2 + 1e-6 for c, s in zip(local, box.size, strict=True)):
-                return True
+        local = (box_T_root * Pose((x, y, height + COVER_GAP / 2))).position
+        if all(abs(c) <= s / 2 + 1e-6 for c, s in zip(local, size, strict=True)):
+            return True
     return False
 
 
 def _surfaces(model: EnvironmentModel, reasons: dict[str, str]) -> Iterator[SurfaceDescription]:
     low, high = SURFACE_HEIGHTS
+    frames = _box_frames(model)
     for link, boxes in model.boxes.items():  # in the URDF's order: the KB's order
         if model.moved_by_joint(link):
             continue
         tops = [t for b in boxes if (t := _top(model, link, b)) is not None]
         tops = [t for t in tops if min(t[2], t[3]) >= MIN_SURFACE_SIDE and low <= t[0] <= high]
-        tops = [t for t in tops if not _covered(model, link, t[0], t[1])]
+        tops = [t for t in tops if not _covered(frames, link, t[0], t[1])]
         if tops:
             height, _, sx, sy = max(tops, key=lambda t: t[0])
             reasons[link] = f"an upward face {sx:.2f} x {sy:.2f} m at {height:.3f} m"
