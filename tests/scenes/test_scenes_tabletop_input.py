@@ -26,7 +26,9 @@ def test_a_description_without_a_gripper_says_what_to_give() -> None:
 
 
 def test_something_else_than_a_robot_is_a_type_error_naming_its_type() -> None:
-    with pytest.raises(TypeError, match=r"robot name or a RobotDescription, got a dict$"):
+    with pytest.raises(
+        TypeError, match=r"robot name, a description file or a RobotDescription, got a dict$"
+    ):
         tabletop_scene({"name": "pr2"})  # type: ignore[arg-type]
 
 
