@@ -5,6 +5,12 @@ from the grasp model, docs/grasping.md), best first for each arm; arms are tried
 first. A try that fails (the pose is out of reach, the grip closes on nothing) moves on to
 the next grasp, then the next arm; when all fail, :class:`PickUpFailed` carries every
 cause.
+
+An object in an opened drawer is lifted out of it (``out_of``): the lift rises until its
+bottom clears the drawer's top (``lift_clearance/4``), and IK must reach that lift from
+where the robot stands (``pose_reachable/3``) before the hand moves; a grasp whose lift
+is out of reach is not tried. Boxy once gripped the bowl from a stand where its arm
+could not raise it over the drawer's front panel, and no delivery could start.
 """
 
 from __future__ import annotations
@@ -21,7 +27,7 @@ from robocram.execution.failures import (
     ManipulationPoseUnreachable,
 )
 from robocram.knowledge.grasp_predicates import OBJECT_GRASP, OBJECT_UNGRASPABLE, ObjectGrasp
-from robocram.logic import Term, current_kb
+from robocram.logic import Term, UnknownPredicateError, current_kb
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.grasp_failures import ObjectUngraspable, PickUpFailed, PickUpUnreachable
 from robocram.plans.robot_facts import current_robot, grasping_arms, tool_frame
@@ -120,6 +126,34 @@ def _move(arm: str, pose: PoseStamped, **mode: str) -> None:
     perform(a.motion(type="moving-tcp", arm=arm, target=a.location(pose=pose), **mode))
 
 
+def _lifted_out(
+    robot: str, name: str, arm: str, choice: ObjectGrasp, out_of: tuple[str, str]
+) -> ObjectGrasp:
+    """``choice`` with its lift raised until ``name`` clears the top of ``out_of``
+    (environment, link), checked by IK from where the robot stands. A KB without the
+    reach predicates (no world to ask) keeps the lift as it is.
+
+    Raises:
+        ManipulationPoseUnreachable: ``arm`` cannot reach the raised lift from here.
+    """
+    kb = current_kb()
+    environment, link = out_of
+    try:
+        answer = kb.first("lift_clearance(O, E, L, R)", O=name, E=environment, L=link)
+    except UnknownPredicateError:
+        return choice
+    rise = 0.0 if answer is None else float(str(answer["R"]))
+    x, y, z = choice.lift.position
+    lift = replace(choice.lift, position=(x, y, max(z, choice.grasp_pose.position[2] + rise)))
+    if not kb.holds("pose_reachable(R, A, P)", R=robot, A=arm, P=lift):
+        raise ManipulationPoseUnreachable(
+            f"{robot}'s {arm} arm cannot lift {name!r} out of {link!r} from here: the tool "
+            f"does not reach {lift.position[2]:.3f} m over the grasp; stand elsewhere",
+            target=lift,
+        )
+    return replace(choice, lift=lift)
+
+
 def _try_grasp(
     robot: str,
     name: str,
@@ -191,9 +225,11 @@ def pick_up_object(
     arm: str | None = None,
     grasp: str | None = None,
     lift: bool = True,
+    out_of: tuple[str, str] | None = None,
 ) -> Held:
     """Pick up the (detected) object with ``arm`` and ``grasp``, or the first that works
-    (``lift`` False: grasp it where it stands).
+    (``lift`` False: grasp it where it stands; ``out_of``: the opened drawer, environment
+    and link, it lies in, which the lift must clear).
 
     Raises:
         ObjectUngraspable: the only arm asked for is too narrow for every grasp.
@@ -215,6 +251,8 @@ def pick_up_object(
             continue
         for choice in choices:
             try:
+                if lift and out_of is not None:
+                    choice = _lifted_out(robot, name, choice_arm, choice, out_of)
                 return _try_grasp(robot, name, choice_arm, choice, pose, lift)
             except TRIES as failure:
                 causes.append(failure)
