@@ -19,7 +19,7 @@ from typing import Any
 from robocram.designators import ObjectDesignator, a, an
 from robocram.execution.failures import NavigationPoseUnreachable, PlanFailure, failure_line
 from robocram.plans.attempt_log import AttemptLog
-from robocram.plans.basic_actions import detect, look, navigate, park_arms
+from robocram.plans.basic_actions import detect, look_lowering, navigate, park_arms
 from robocram.plans.container_access import OpenedContainer, is_drawer
 from robocram.plans.culprits import blamed, culprit_clause
 from robocram.plans.errors import FetchExhausted, PlanArgumentError
@@ -58,7 +58,7 @@ def _pick_from(
     up (lifting it out of ``out_of``, the opened drawer it lies in, if any)."""
     park_arms()
     navigate(stand)
-    look(where)
+    look_lowering(where)
     again = detect(an.object(type=seen.get("type"), name=seen.get("name")))
     return pick_up_object(again, arm=arm, grasp=grasp, out_of=out_of)
 
