@@ -28,6 +28,7 @@ from robocram.execution.failures import (
 )
 from robocram.knowledge.grasp_predicates import OBJECT_GRASP, OBJECT_UNGRASPABLE, ObjectGrasp
 from robocram.logic import Term, UnknownPredicateError, current_kb
+from robocram.plans.basic_actions import look_ahead, neck_in_the_way
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.grasp_failures import ObjectUngraspable, PickUpFailed, PickUpUnreachable
 from robocram.plans.robot_facts import current_robot, grasping_arms, tool_frame
@@ -167,13 +168,25 @@ def _try_grasp(
     _move(arm, choice.grasp_pose, **GRASPING, touching=name)
     choice = _gripped(arm, name, choice)
     if lift:
-        _move(arm, choice.lift, **GRASPING, touching=name)
+        _lifted(arm, choice.lift, name)
     frame = tool_frame(robot, arm)
     if object_in_map is None:
         object_in_map = transform_pose(PoseStamped(name), "map").pose
     held = choice.grasp_pose.pose.inverse() * object_in_map  # as gripped: the grasp keeps it
     raised = choice.lift if lift else choice.grasp_pose
     return Held(arm, choice.grasp, name, frame, choice.grasp_pose, raised, held)
+
+
+def _lifted(arm: str, lift: PoseStamped, name: str) -> None:
+    """Lift the gripped ``name`` to ``lift``; where the head, still turned down at it, is
+    in the way (a Stretch's lift carriage meets its tilted head on a lift out of a drawer),
+    look ahead and lift again."""
+    try:
+        _move(arm, lift, **GRASPING, touching=name)
+    except ManipulationLowLevelFailure as failure:
+        if not (neck_in_the_way(failure) and look_ahead()):
+            raise
+        _move(arm, lift, **GRASPING, touching=name)
 
 
 def _gripped(arm: str, name: str, choice: ObjectGrasp) -> ObjectGrasp:
