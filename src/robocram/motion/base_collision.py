@@ -157,7 +157,7 @@ class BaseCollisionChecker:
 
     def start_allowances(self) -> tuple[ContactAllowance, ...]:
         """The start contacts a drive was allowed, as its trajectory stores them: each
-        penetrating one at most as deep as it started (and :data:`KEEP_DEPTH`). None when
+        penetrating one at most as deep as it started (and :data:`KEEP_DEPTH`). Empty when
         no pose near the start needed the exact check: then the robot touched nothing
         there (the fast check is conservative)."""
         if self._tolerated is None:
@@ -368,12 +368,11 @@ class BaseCollisionChecker:
     def _contact_depths(self) -> dict[_Pair, float]:
         """``(part of the robot, object/link it touches)`` pairs where the robot is now,
         each with how deep [m] it penetrates (0: touching, or within :data:`CONTACT`)."""
+        floors = [o.name for o in self.world.objects("floor")]
         if self._obstacles is None:  # only the robot and what it carries move here
-            floors = [o.name for o in self.world.objects("floor")]
             self._obstacles = self.world.contacts.obstacle_boxes(
                 [self.robot, *self.carried, *floors]
             )
-        floors = [o.name for o in self.world.objects("floor")]
         group = [self.robot, *self.carried]
         depths: dict[_Pair, float] = {}
         for body in group:
