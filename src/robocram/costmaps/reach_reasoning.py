@@ -21,6 +21,7 @@ from robocram.costmaps.validators import (
     robot_arms,
 )
 from robocram.kinematics import IKOptions, base_in_ik, solve_ik
+from robocram.knowledge import Source, register_predicates
 from robocram.logic import KnowledgeBase, Value, Var
 from robocram.tf import Pose, PoseStamped
 from robocram.world import RobotObject, World, WorldObject
@@ -136,7 +137,6 @@ def install_reach_predicates(kb: KnowledgeBase, world: World) -> None:
                 (r, pose) for r in _names(world, rob, True) if pose_reachable(world, r, pose)
             )
 
-    @kb.predicate("pose_reachable", 3)
     def pose_reachable_arm(rob: object, arm: Value, pose: Value) -> Solutions:
         if isinstance(pose, Var):
             return
@@ -145,13 +145,18 @@ def install_reach_predicates(kb: KnowledgeBase, world: World) -> None:
             asked = arms if isinstance(arm, Var) else [a for a in arms if a == arm]
             yield from ((r, a, pose) for a in asked if pose_reachable(world, r, pose, a))
 
-    @kb.predicate("lift_clearance", 4)
     def lift_clearance_(obj: object, body: object, link: object, rise: Value) -> Solutions:
         names = _names(world, obj, robots=False)
         if not (isinstance(body, str) and body in world and isinstance(link, str)):
             return
         if link in world.contacts.link_aabbs(body):
             yield from ((o, body, link, lift_clearance(world, o, body, link)) for o in names)
+
+    register_predicates(
+        kb,
+        Source.REASONING,
+        {"pose_reachable/3": pose_reachable_arm, "lift_clearance/4": lift_clearance_},
+    )
 
     @kb.predicate("blocking", 4)
     def blocking_(rob: object, arm: Value, obj: object, blockers: object) -> Solutions:

@@ -27,6 +27,7 @@ from robocram.execution.failures import (
     ManipulationPoseUnreachable,
 )
 from robocram.knowledge.grasp_predicates import OBJECT_GRASP, OBJECT_UNGRASPABLE, ObjectGrasp
+from robocram.knowledge.reasoning_predicates import ARM_POSE_REACHABLE, LIFT_CLEARANCE
 from robocram.logic import Term, UnknownPredicateError, current_kb
 from robocram.plans.basic_actions import look_ahead, neck_in_the_way
 from robocram.plans.errors import PlanSetupError
@@ -140,13 +141,13 @@ def _lifted_out(
     kb = current_kb()
     environment, link = out_of
     try:
-        answer = kb.first("lift_clearance(O, E, L, R)", O=name, E=environment, L=link)
+        answer = LIFT_CLEARANCE.first(kb, object=name, body=environment, link=link)
     except UnknownPredicateError:
         return choice
-    rise = 0.0 if answer is None else float(str(answer["R"]))
+    rise = 0.0 if answer is None else answer.rise
     x, y, z = choice.lift.position
     lift = replace(choice.lift, position=(x, y, max(z, choice.grasp_pose.position[2] + rise)))
-    if not kb.holds("pose_reachable(R, A, P)", R=robot, A=arm, P=lift):
+    if not ARM_POSE_REACHABLE.holds(kb, robot=robot, arm=arm, pose=lift):
         raise ManipulationPoseUnreachable(
             f"{robot}'s {arm} arm cannot lift {name!r} out of {link!r} from here: the tool "
             f"does not reach {lift.position[2]:.3f} m over the grasp; stand elsewhere",
