@@ -23,7 +23,16 @@ ALLOWED: dict[str, set[str]] = {
     "kinematics": {"robots", "logic", "tf"},
     "scenes": {"world", "kinematics", "robots", "logic", "tf"},
     "grasping": {"world", "kinematics", "robots", "knowledge", "logic", "tf"},
-    "costmaps": {"grasping", "world", "kinematics", "designators", "robots", "logic", "tf"},
+    "costmaps": {
+        "grasping",
+        "world",
+        "kinematics",
+        "designators",
+        "robots",
+        "knowledge",
+        "logic",
+        "tf",
+    },
     "motion": {"world", "kinematics", "execution", "robots", "logic", "tf"},
     "projection": {
         "motion",

@@ -3,7 +3,9 @@
 In Python and as predicates of the world's knowledge base. Robots stay where they stand
 (an arm that reaches with the base adjusts it a little, ``validators.STAND_TRAVEL``);
 IK decides (torso free, grasps from above), and ``blocking`` puts the arm at the grasp to
-see what it would hit, then restores the joints.
+see what it would hit, then restores the joints. ``pose_reachable/3`` asks of one arm;
+``lift_clearance/4`` says how far an object must rise to clear a link (a bowl out of its
+drawer), so a pick can ask, before it grips, whether that lift is in reach.
 """
 
 from __future__ import annotations
@@ -19,11 +21,13 @@ from robocram.costmaps.validators import (
     robot_arms,
 )
 from robocram.kinematics import IKOptions, base_in_ik, solve_ik
+from robocram.knowledge import Source, register_predicates
 from robocram.logic import KnowledgeBase, Value, Var
 from robocram.tf import Pose, PoseStamped
 from robocram.world import RobotObject, World, WorldObject
 
 Solutions = Iterator[tuple[Value, ...] | None]
+LIFT_MARGIN = 0.02  # [m] an object lifted out of a link clears its top by this
 
 
 def _pose_in_map(pose: Value) -> Pose:
@@ -61,6 +65,23 @@ def pose_reachable(
         )
         for name in robot_arms(body, arm)
     )
+
+
+def lift_clearance(world: World, obj: str | WorldObject, body: str, link: str) -> float:
+    """How far [m] ``obj`` must rise, as it is now, for its bottom to clear the top of
+    ``link`` of ``body`` by :data:`LIFT_MARGIN` (0 when it already does): PyBullet's
+    bounds of both.
+
+    Raises:
+        CostmapInputError: ``body`` has no link ``link`` with bounds.
+    """
+    boxes = world.contacts.link_aabbs(body)
+    if link not in boxes:
+        raise CostmapInputError(
+            f"{body!r} has no link {link!r} to lift out of; it has {sorted(boxes)}", link
+        )
+    low = min(lo[2] for lo, _ in world.contacts.link_aabbs(obj).values())
+    return max(0.0, boxes[link][1][2] + LIFT_MARGIN - low)
 
 
 def reachable(
@@ -115,6 +136,27 @@ def install_reach_predicates(kb: KnowledgeBase, world: World) -> None:
             yield from (
                 (r, pose) for r in _names(world, rob, True) if pose_reachable(world, r, pose)
             )
+
+    def pose_reachable_arm(rob: object, arm: Value, pose: Value) -> Solutions:
+        if isinstance(pose, Var):
+            return
+        for r in _names(world, rob, True):
+            arms = robot_arms(world.robot(r), None)
+            asked = arms if isinstance(arm, Var) else [a for a in arms if a == arm]
+            yield from ((r, a, pose) for a in asked if pose_reachable(world, r, pose, a))
+
+    def lift_clearance_(obj: object, body: object, link: object, rise: Value) -> Solutions:
+        names = _names(world, obj, robots=False)
+        if not (isinstance(body, str) and body in world and isinstance(link, str)):
+            return
+        if link in world.contacts.link_aabbs(body):
+            yield from ((o, body, link, lift_clearance(world, o, body, link)) for o in names)
+
+    register_predicates(
+        kb,
+        Source.REASONING,
+        {"pose_reachable/3": pose_reachable_arm, "lift_clearance/4": lift_clearance_},
+    )
 
     @kb.predicate("blocking", 4)
     def blocking_(rob: object, arm: Value, obj: object, blockers: object) -> Solutions:

@@ -27,6 +27,7 @@ class Source(Enum):
     WORLD = "world"  # computed by the world (first argument: the world, bound by world/1)
     GRASPING = "grasping"  # computed by the grasp model
     SCENE = "scene"  # facts a scene (kitchen, ...) provides
+    REASONING = "reasoning"  # computed by the location costmaps' reach reasoning
 
 
 class Need(Enum):

@@ -1,8 +1,9 @@
 """The predicate table: every predicate robocram's own code asks or provides, once.
 
 Rows by source live in ``robot_predicates.py`` (description facts), ``world_predicates.py``
-(computed by the world), ``grasp_predicates.py`` (computed by the grasp model) and
-``scene_predicates.py`` (scene facts); this module collects them. The table is the
+(computed by the world), ``grasp_predicates.py`` (computed by the grasp model),
+``scene_predicates.py`` (scene facts) and ``reasoning_predicates.py`` (the costmaps'
+reach reasoning); this module collects them. The table is the
 library's contract: users may still query the knowledge base in Prolog.
 """
 
@@ -14,6 +15,7 @@ from typing import Any
 
 from robocram.knowledge.grasp_predicates import GRASP_PREDICATES
 from robocram.knowledge.predicate import Predicate, Source
+from robocram.knowledge.reasoning_predicates import REASONING_PREDICATES
 from robocram.knowledge.robot_predicates import DESCRIPTION_PREDICATES
 from robocram.knowledge.scene_predicates import SCENE_PREDICATES
 from robocram.knowledge.world_predicates import WORLD_PREDICATES
@@ -26,6 +28,7 @@ PREDICATE_TABLE: Mapping[str, Predicate[Any]] = MappingProxyType(
             *WORLD_PREDICATES,
             *GRASP_PREDICATES,
             *SCENE_PREDICATES,
+            *REASONING_PREDICATES,
         )
     }
 )

@@ -15,6 +15,7 @@ _HEADINGS = {
     Source.WORLD: "Computed by the world",
     Source.GRASPING: "Computed by the grasp model",
     Source.SCENE: "Facts a scene provides",
+    Source.REASONING: "Computed by the costmaps' reach reasoning",
 }
 _INTRO = """# Predicates
 

@@ -8,8 +8,11 @@ exact PyBullet check decides (the robot put there, then back), and a goal that f
 refused; away from them the fast answer stands. Both kinds of check are counted.
 
 Contacts the robot already has where it stands (a finger on a handle) are tolerated for
-its first :data:`ESCAPE` of travel, to get away; the floor and objects of type ``floor``
-may always be touched.
+its first :data:`ESCAPE` of travel, to get away, but never deeper than they start
+(:data:`~robocram.motion.hand_contact.KEEP_DEPTH` for numerics): fingers round a handle
+once went 5.95 mm into it while the base left (issue 35). :meth:`start_allowances` says
+so in the trajectory, so the audit holds the drive to the same bound. The floor and
+objects of type ``floor`` may always be touched.
 """
 
 from __future__ import annotations
@@ -23,12 +26,22 @@ import numpy as np
 
 from robocram.execution.failures import NavigationGoalOutsideArea
 from robocram.motion.cleared_poses import ClearedPoses
+from robocram.motion.contact_allowance import ContactAllowance
+from robocram.motion.hand_contact import KEEP_DEPTH
 from robocram.motion.height_bins import HeightBins
 from robocram.motion.obstacle_grid import Box, ObstacleGrid
 from robocram.motion.robot_footprint import FloatArray, RobotFootprint
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
-from robocram.world import Derived, ObstacleBoxes, PlanningArea, RobotHandle, Versions, World
+from robocram.world import (
+    Derived,
+    ObstacleBoxes,
+    PlanningArea,
+    RobotHandle,
+    Versions,
+    World,
+    WorldObject,
+)
 
 CELL = 0.01  # [m] obstacle grid cells
 SPACING = 0.02  # [m] robot sample squares: more than the 1 cm a dense check moves
@@ -82,7 +95,7 @@ class BaseCollisionChecker:
     _obstacles: ObstacleBoxes | None = field(default=None, repr=False)  # read once
     _bins: HeightBins | None = field(default=None, repr=False)
     _cleared_poses: ClearedPoses | None = field(default=None, repr=False)  # exact answers
-    _tolerated: frozenset[tuple[str, str]] | None = field(default=None, repr=False)
+    _tolerated: dict[_Pair, float] | None = field(default=None, repr=False)  # [m] depths
 
     @classmethod
     def build(
@@ -133,13 +146,36 @@ class BaseCollisionChecker:
         return checker
 
     @property
-    def tolerated(self) -> frozenset[tuple[str, str]]:
-        """The contacts the robot has at its start (read when first asked: most drives
-        never check a pose within :data:`ESCAPE` of it exactly). It is left at its start."""
+    def tolerated(self) -> dict[_Pair, float]:
+        """The contacts the robot has at its start and how deep [m] each is there (read
+        when first asked: most drives never check a pose within :data:`ESCAPE` of it
+        exactly). It is left at its start."""
         if self._tolerated is None:
             self.world.set_pose(self.robot, self.start)
-            self._tolerated = frozenset(self._contacts())
+            self._tolerated = self._contact_depths()
         return self._tolerated
+
+    def start_allowances(self) -> tuple[ContactAllowance, ...]:
+        """The start contacts a drive was allowed, as its trajectory stores them: each
+        penetrating one at most as deep as it started (and :data:`KEEP_DEPTH`). Empty when
+        no pose near the start needed the exact check: then the robot touched nothing
+        there (the fast check is conservative)."""
+        if self._tolerated is None:
+            return ()
+        return tuple(
+            ContactAllowance(_robot_side(side, self.robot), other, depth + KEEP_DEPTH)
+            for (side, other), depth in sorted(self._tolerated.items())
+            if depth > 0.0
+        )
+
+    def _deepened(self, tolerated: dict[_Pair, float]) -> list[_Pair]:
+        """The contacts where the robot is now that are not among ``tolerated`` or deeper
+        than they started (by more than :data:`KEEP_DEPTH`)."""
+        return [
+            pair
+            for pair, depth in self._contact_depths().items()
+            if pair not in tolerated or depth > tolerated[pair] + KEEP_DEPTH
+        ]
 
     def __enter__(self) -> BaseCollisionChecker:
         return self
@@ -289,10 +325,10 @@ class BaseCollisionChecker:
         """:meth:`_exact_gap` by the exact check itself."""
         self.exact_checks += 1
         start = np.array([*self.start.position[:2], yaw_of(self.start)])
-        tolerated = self.tolerated if self._travel(start, pose) <= ESCAPE else frozenset()
+        tolerated = self.tolerated if self._travel(start, pose) <= ESCAPE else {}
         self._place(pose)
         if tolerated:
-            return None if self._touching(tolerated) else 0.0
+            return None if self._deepened(tolerated) else 0.0
         nearest = min(self._distances(), default=GAP_QUERY)
         return None if nearest <= CONTACT else nearest - CONTACT
 
@@ -301,9 +337,6 @@ class BaseCollisionChecker:
         self.world.set_pose(
             self.robot, Pose((x, y, self.start.position[2]), quat.from_euler(0.0, 0.0, yaw))
         )
-
-    def _touching(self, tolerated: frozenset[tuple[str, str]]) -> bool:
-        return any(pair not in tolerated for pair in self._contacts())
 
     def _distances(self) -> Iterator[float]:
         """Distances [m] below :data:`GAP_QUERY` from the robot (and what it carries, but
@@ -328,21 +361,45 @@ class BaseCollisionChecker:
         """What the robot touches at ``pose`` by the exact check (``object/link`` names)."""
         self.exact_checks += 1
         start = np.array([*self.start.position[:2], yaw_of(self.start)])
-        tolerated = self.tolerated if self._travel(start, pose) <= ESCAPE else frozenset()
+        tolerated = self.tolerated if self._travel(start, pose) <= ESCAPE else {}
         self._place(pose)
-        return sorted({other for pair in self._contacts() if pair not in tolerated
-                       for other in pair[1:]})  # fmt: skip
+        return sorted({other for _, other in self._deepened(tolerated)})
 
-    def _contacts(self) -> Iterator[tuple[str, str]]:
-        """``(part of the robot, object/link it touches)`` pairs where the robot is now."""
+    def _contact_depths(self) -> dict[_Pair, float]:
+        """``(part of the robot, object/link it touches)`` pairs where the robot is now,
+        each with how deep [m] it penetrates (0: touching, or within :data:`CONTACT`)."""
+        floors = [o.name for o in self.world.objects("floor")]
         if self._obstacles is None:  # only the robot and what it carries move here
-            floors = [o.name for o in self.world.objects("floor")]
             self._obstacles = self.world.contacts.obstacle_boxes(
                 [self.robot, *self.carried, *floors]
             )
-        return _contacts_now(
-            self.world, self.robot, self.carried, self.allowed_links, self._obstacles
-        )
+        group = [self.robot, *self.carried]
+        depths: dict[_Pair, float] = {}
+        for body in group:
+            ignore = floors + [g for g in group if g != body]
+            for link, other, other_link, gap in self.world.contacts.link_distances(
+                body, ignore=ignore, distance=CONTACT, obstacles=self._obstacles
+            ):
+                if body == self.robot and link in self.allowed_links:
+                    continue
+                pair = (f"{body}/{link}", _named(other, other_link))
+                depths[pair] = max(depths.get(pair, 0.0), -gap)
+        return depths
+
+
+_Pair = tuple[str, str]  # (body/link of the robot or what it carries, object or object/link)
+
+
+def _named(other: WorldObject, link: str) -> str:
+    """``other``'s name, with ``/link`` when it has several links."""
+    return f"{other.name}/{link}" if len(other.link_index) > 1 else other.name
+
+
+def _robot_side(side: str, robot: str) -> str:
+    """A pair's ``body/link`` as a :class:`ContactAllowance` names it: the robot's link,
+    or the held object's name."""
+    body, _, link = side.partition("/")
+    return link if body == robot else body
 
 
 def _grid(
@@ -387,8 +444,7 @@ def _contacts_now(
         ):
             if body == robot and link in allowed_links:
                 continue
-            several = len(other.link_index) > 1
-            yield f"{body}/{link}", f"{other.name}/{other_link}" if several else other.name
+            yield f"{body}/{link}", _named(other, other_link)
 
 
 def blockers_at(

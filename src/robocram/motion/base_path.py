@@ -14,7 +14,7 @@ blocked too does OMPL plan around (:mod:`robocram.motion.ompl_base_planner`). A 
 from __future__ import annotations
 
 from collections.abc import Collection
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -89,6 +89,9 @@ def plan_base_path(
         allowed_links: Robot links that may touch anything on the way (a hand holding a
             handle while the base follows a door's arc).
 
+    The trajectory stores the contacts the robot started with as allowances no deeper
+    than they started (:meth:`BaseCollisionChecker.start_allowances`).
+
     Raises:
         NavigationPoseUnreachable: the robot would collide at ``goal`` (named).
         NavigationPathBlocked: no path within the budget; names the direct motion's first
@@ -148,6 +151,7 @@ def plan_base_path(
             trajectory = time_parameterize(
                 robot.name, BASE_JOINTS, poses, limits, kind="base", period=period
             )
+        trajectory = replace(trajectory, allowed_contacts=checker.start_allowances())
         return BasePath(
             robot.name, poses, planner, trajectory, checker.fast_checks, checker.exact_checks
         )

@@ -19,8 +19,8 @@ from typing import Any
 from robocram.designators import ObjectDesignator, a, an
 from robocram.execution.failures import NavigationPoseUnreachable, PlanFailure, failure_line
 from robocram.plans.attempt_log import AttemptLog
-from robocram.plans.basic_actions import detect, look, navigate, park_arms
-from robocram.plans.container_access import OpenedContainer
+from robocram.plans.basic_actions import detect, look_lowering, navigate, park_arms
+from robocram.plans.container_access import OpenedContainer, is_drawer
 from robocram.plans.culprits import blamed, culprit_clause
 from robocram.plans.errors import FetchExhausted, PlanArgumentError
 from robocram.plans.location_poses import location_poses, next_pose
@@ -47,14 +47,28 @@ def perceived(object: ObjectDesignator | str) -> ObjectDesignator:  # noqa: A002
 
 
 def _pick_from(
-    stand: Pose, seen: ObjectDesignator, where: PoseStamped, arm: str | None, grasp: str | None
+    stand: Pose,
+    seen: ObjectDesignator,
+    where: PoseStamped,
+    arm: str | None,
+    grasp: str | None,
+    out_of: tuple[str, str] | None = None,
 ) -> Held:
-    """Drive to ``stand``, look at the object (``where``, map), detect it again, pick it up."""
+    """Drive to ``stand``, look at the object (``where``, map), detect it again, pick it
+    up (lifting it out of ``out_of``, the opened drawer it lies in, if any)."""
     park_arms()
     navigate(stand)
-    look(where)
+    look_lowering(where)
     again = detect(an.object(type=seen.get("type"), name=seen.get("name")))
-    return pick_up_object(again, arm=arm, grasp=grasp)
+    return pick_up_object(again, arm=arm, grasp=grasp, out_of=out_of)
+
+
+def _drawer_of(opened: OpenedContainer | None) -> tuple[str, str] | None:
+    """The opened drawer (environment, link) a pick must lift the object out of; a door's
+    shelf is left sideways, so None for it (and for no container)."""
+    if opened is None or not is_drawer(opened.container):
+        return None
+    return opened.container.environment, opened.container.link
 
 
 def square_up(robot: str) -> None:
@@ -143,9 +157,10 @@ def fetch(
     causes: list[Exception] = []
     tries = 0
     stands = _stands(seen, where, arm, opened, causes)
+    out_of = _drawer_of(opened)
     for pose, use_arm in itertools.islice(stands, stand_retries + MAX_BLOCKED):
         try:
-            held = _pick_from(pose, seen, where, use_arm, grasp)
+            held = _pick_from(pose, seen, where, use_arm, grasp, out_of)
         except NavigationPoseUnreachable as failure:  # in the way: the next stand, no try
             causes.append(failure)
             log.record("fetch", pose, failure)

@@ -5,6 +5,12 @@ from the grasp model, docs/grasping.md), best first for each arm; arms are tried
 first. A try that fails (the pose is out of reach, the grip closes on nothing) moves on to
 the next grasp, then the next arm; when all fail, :class:`PickUpFailed` carries every
 cause.
+
+An object in an opened drawer is lifted out of it (``out_of``): the lift rises until its
+bottom clears the drawer's top (``lift_clearance/4``), and IK must reach that lift from
+where the robot stands (``pose_reachable/3``) before the hand moves; a grasp whose lift
+is out of reach is not tried. Boxy once gripped the bowl from a stand where its arm
+could not raise it over the drawer's front panel, and no delivery could start.
 """
 
 from __future__ import annotations
@@ -21,7 +27,9 @@ from robocram.execution.failures import (
     ManipulationPoseUnreachable,
 )
 from robocram.knowledge.grasp_predicates import OBJECT_GRASP, OBJECT_UNGRASPABLE, ObjectGrasp
-from robocram.logic import Term, current_kb
+from robocram.knowledge.reasoning_predicates import ARM_POSE_REACHABLE, LIFT_CLEARANCE
+from robocram.logic import Term, UnknownPredicateError, current_kb
+from robocram.plans.basic_actions import look_ahead, neck_in_the_way
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.grasp_failures import ObjectUngraspable, PickUpFailed, PickUpUnreachable
 from robocram.plans.robot_facts import current_robot, grasping_arms, tool_frame
@@ -120,6 +128,34 @@ def _move(arm: str, pose: PoseStamped, **mode: str) -> None:
     perform(a.motion(type="moving-tcp", arm=arm, target=a.location(pose=pose), **mode))
 
 
+def _lifted_out(
+    robot: str, name: str, arm: str, choice: ObjectGrasp, out_of: tuple[str, str]
+) -> ObjectGrasp:
+    """``choice`` with its lift raised until ``name`` clears the top of ``out_of``
+    (environment, link), checked by IK from where the robot stands. A KB without the
+    reach predicates (no world to ask) keeps the lift as it is.
+
+    Raises:
+        ManipulationPoseUnreachable: ``arm`` cannot reach the raised lift from here.
+    """
+    kb = current_kb()
+    environment, link = out_of
+    try:
+        answer = LIFT_CLEARANCE.first(kb, object=name, body=environment, link=link)
+    except UnknownPredicateError:
+        return choice
+    rise = 0.0 if answer is None else answer.rise
+    x, y, z = choice.lift.position
+    lift = replace(choice.lift, position=(x, y, max(z, choice.grasp_pose.position[2] + rise)))
+    if not ARM_POSE_REACHABLE.holds(kb, robot=robot, arm=arm, pose=lift):
+        raise ManipulationPoseUnreachable(
+            f"{robot}'s {arm} arm cannot lift {name!r} out of {link!r} from here: the tool "
+            f"does not reach {lift.position[2]:.3f} m over the grasp; stand elsewhere",
+            target=lift,
+        )
+    return replace(choice, lift=lift)
+
+
 def _try_grasp(
     robot: str,
     name: str,
@@ -133,13 +169,25 @@ def _try_grasp(
     _move(arm, choice.grasp_pose, **GRASPING, touching=name)
     choice = _gripped(arm, name, choice)
     if lift:
-        _move(arm, choice.lift, **GRASPING, touching=name)
+        _lifted(arm, choice.lift, name)
     frame = tool_frame(robot, arm)
     if object_in_map is None:
         object_in_map = transform_pose(PoseStamped(name), "map").pose
     held = choice.grasp_pose.pose.inverse() * object_in_map  # as gripped: the grasp keeps it
     raised = choice.lift if lift else choice.grasp_pose
     return Held(arm, choice.grasp, name, frame, choice.grasp_pose, raised, held)
+
+
+def _lifted(arm: str, lift: PoseStamped, name: str) -> None:
+    """Lift the gripped ``name`` to ``lift``; where the head, still turned down at it, is
+    in the way (a Stretch's lift carriage meets its tilted head on a lift out of a drawer),
+    look ahead and lift again."""
+    try:
+        _move(arm, lift, **GRASPING, touching=name)
+    except ManipulationLowLevelFailure as failure:
+        if not (neck_in_the_way(failure) and look_ahead()):
+            raise
+        _move(arm, lift, **GRASPING, touching=name)
 
 
 def _gripped(arm: str, name: str, choice: ObjectGrasp) -> ObjectGrasp:
@@ -191,9 +239,11 @@ def pick_up_object(
     arm: str | None = None,
     grasp: str | None = None,
     lift: bool = True,
+    out_of: tuple[str, str] | None = None,
 ) -> Held:
     """Pick up the (detected) object with ``arm`` and ``grasp``, or the first that works
-    (``lift`` False: grasp it where it stands).
+    (``lift`` False: grasp it where it stands; ``out_of``: the opened drawer, environment
+    and link, it lies in, which the lift must clear).
 
     Raises:
         ObjectUngraspable: the only arm asked for is too narrow for every grasp.
@@ -215,6 +265,8 @@ def pick_up_object(
             continue
         for choice in choices:
             try:
+                if lift and out_of is not None:
+                    choice = _lifted_out(robot, name, choice_arm, choice, out_of)
                 return _try_grasp(robot, name, choice_arm, choice, pose, lift)
             except TRIES as failure:
                 causes.append(failure)

@@ -12,6 +12,7 @@ from typing import Literal
 
 from robocram.knowledge import grasp_predicates as gp
 from robocram.knowledge import robot_predicates as rp
+from robocram.knowledge.world_predicates import JOINT_STATE
 from robocram.logic import UnknownPredicateError, current_kb
 from robocram.plans.errors import PlanSetupError
 
@@ -55,6 +56,19 @@ def torso_limit(robot: str, which: Literal["upper", "lower"]) -> float | None:
     limit = rp.JOINT_UPPER_LIMIT if which == "upper" else rp.JOINT_LOWER_LIMIT
     row = limit.first(kb, robot=robot, joint=torso.joint)
     return None if row is None else row.limit
+
+
+def torso_position(robot: str) -> float | None:
+    """The torso joint's value [m | rad] now; None without a torso (or a world to ask)."""
+    kb = current_kb()
+    torso = rp.ROBOT_TORSO_LINK_JOINT.first(kb, robot=robot)
+    if torso is None:
+        return None
+    try:
+        row = JOINT_STATE.first(kb, robot=robot, joint=torso.joint)
+    except UnknownPredicateError:
+        return None
+    return None if row is None else row.value
 
 
 def has_torso(robot: str) -> bool:

@@ -52,6 +52,7 @@ HOLD_MODE = "allow_hand"  # the fingers close around the handle
 STEP_HALVINGS = 2  # a step the hand cannot follow is tried in halves, then quarters
 STEP_TRAVEL = PlanarBase(0.15, 0.15, 0.5)  # [m, m, rad] the base's move per step of the arc
 REACH_TRAVEL = PlanarBase(0.5, 0.5, 1.0)  # [m, m, rad] to get the hand before the handle
+RELEASE_STEPS = 8  # steps a part is taken back to where the fingers can open to let go
 
 
 @dataclass(frozen=True)
@@ -275,7 +276,8 @@ def move_part(
                 robot.held_rolls[(part, handle)] = robot.held_rolls[("", arm)] = roll
                 return ArticulationResult(joint, start, reached, roll, tuple(riders))
             if abs(reached - now) > 1e-9:  # part of the way: let go, the next roll goes on
-                _let_go(_straight_only(robot), arm, part, handle, held.grasp, pull)
+                opened = _released(robot, held, now)
+                _let_go(_straight_only(robot), arm, part, handle, held.grasp, pull, opened)
                 moved = held
             else:
                 _back_to_start(robot, held, now, here.base, here.joints)
@@ -306,6 +308,27 @@ def _try_roll(robot: ProjectedRobot, held: _Held, goal: float) -> float:
     if abs(reached - goal) <= 1e-9:
         _let_go(robot, held.arm, held.part, held.handle, held.grasp, held.pull)
     return reached
+
+
+def _released(robot: ProjectedRobot, held: _Held, start: float) -> bool:
+    """Open the gripper where a roll stopped part of the way; where the fingers cannot
+    open (a wrist flexed far puts them into the forearm), take the part back towards
+    ``start``, holding it, up to :data:`RELEASE_STEPS` steps, until they can. Whether they
+    opened. Fingers left closed round a handle could neither back off nor let the next
+    roll's approach drive the base away without going into the handle (issue 35)."""
+    if _opened(robot, held.arm):
+        return True
+    world = robot.world
+    hold = _Hold(held.part, held.joint, held.handle, held.grasp, held.pull)
+    now = world.joint_states(held.part)[held.joint]
+    back = part_path(world, held.part, held.joint, held.handle, start)
+    for value in back[:RELEASE_STEPS]:
+        if not _step(robot, held.arm, hold, now, value):
+            return False
+        now = value
+        if _opened(robot, held.arm):
+            return True
+    return False
 
 
 @dataclass(frozen=True)
@@ -397,16 +420,23 @@ def _back_to_start(
 
 
 def _let_go(
-    robot: ProjectedRobot, arm: str, part: str, handle: str, grasp: Pose, pull: Pose
+    robot: ProjectedRobot,
+    arm: str,
+    part: str,
+    handle: str,
+    grasp: Pose,
+    pull: Pose,
+    opened: bool | None = None,
 ) -> None:
-    """Open the gripper and back the tool off the handle along its approach axis.
+    """Open the gripper (unless ``opened`` says whether it was) and back the tool off the
+    handle along its approach axis.
 
     A wide-open door can leave no room to back off the whole way: shorter moves are
     tried, and if none fits the open hand stays at the handle (the part is where asked).
     Fingers that cannot open at the handle (a drawer under a counter's top) open once the
     hand has backed off, if they can there.
     """
-    opened = _opened(robot, arm)
+    opened = _opened(robot, arm) if opened is None else opened
     world = robot.world
     for distance in BACK_OFF:
         back = world.link_pose(part, handle) * pull * Pose((distance, 0.0, 0.0)) * grasp
