@@ -25,7 +25,7 @@ def test_a_look_blocked_by_the_raised_hand_lowers_the_torso_first() -> None:
     stand = (mug[0] - 0.14, mug[1] - 0.55)  # a fetch stand before the counter
     yaw = math.atan2(mug[1] - stand[1], mug[0] - stand[0])
     world.set_pose("hsrb", Pose((*stand, 0.0), quat.from_euler(0.0, 0.0, yaw)))
-    upper = world.joint_limits("hsrb", LIFT).upper
+    upper = world.bodies.joint_limits("hsrb", LIFT).upper
     target = PoseStamped.from_pose("map", Pose(mug))
     with simulated_robot(world, "hsrb"):
         park_arms()
