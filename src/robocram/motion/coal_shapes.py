@@ -3,7 +3,8 @@
 PyBullet collides a mesh of a moving body with its convex hull, and an OBJ file with one
 hull per object (``o``) or group (``g``) in it (a mug: the cup and each handle piece).
 Coal makes the same hulls here, so both engines see the same shapes. Hulls are cached per
-process by file and scale: they are read-only and scenes share them.
+process by file and scale: they are read-only and scenes share them. The points of each
+part are kept on disk by the file's content, so a new process does not load the mesh.
 """
 
 from __future__ import annotations
@@ -16,8 +17,10 @@ import numpy as np
 from numpy.typing import NDArray
 
 from robocram.motion.errors import MotionError
+from robocram.robots.disk_cache import file_key, kept_arrays
 from robocram.tf import Vector3
 
+_BUILT_BY = ("robocram.motion.coal_shapes",)  # what computes the kept mesh parts
 # The floor: a half-space z <= 0 of its frame.
 _UP = np.array([0.0, 0.0, 1.0])
 
@@ -50,10 +53,28 @@ def mesh_hulls(path: str, scale: Vector3) -> tuple[coal.ConvexBase, ...]:
     file = Path(path)
     if not file.is_file():
         raise MotionError(f"mesh file {path} does not exist; fix the URDF or the object's spec")
-    obj = file.suffix.lower() == ".obj"
-    parts = _obj_parts(file) if obj else [_loaded_vertices(file)]
     factor = np.asarray(scale, dtype=float)
+    parts = _kept_parts(file)
     return tuple(_hull(points * factor, path) for points in parts if len(points) >= 4)
+
+
+def _kept_parts(file: Path) -> list[NDArray[np.float64]]:
+    """The vertices of each part of a mesh file, kept on disk by the file's content: coal's
+    mesh loader builds a BVH a hull does not need (most of a hull's cost, ~1 ms a mesh)."""
+    kept = kept_arrays(
+        "mesh_parts", f"mesh {file_key(file)} {file.suffix.lower()}", _BUILT_BY,
+        lambda: _parts_arrays(file), versions=(coal.__version__,),
+    )  # fmt: skip
+    ends = np.cumsum(kept["counts"])[:-1]
+    return np.split(np.asarray(kept["points"], dtype=float), ends)
+
+
+def _parts_arrays(file: Path) -> dict[str, NDArray[np.float64] | NDArray[np.int64]]:
+    parts = _obj_parts(file) if file.suffix.lower() == ".obj" else [_loaded_vertices(file)]
+    return {
+        "points": np.concatenate(parts) if parts else np.zeros((0, 3)),
+        "counts": np.array([len(p) for p in parts], dtype=np.int64),
+    }
 
 
 def _loaded_vertices(file: Path) -> NDArray[np.float64]:

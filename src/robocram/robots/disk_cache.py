@@ -78,6 +78,12 @@ def kept_arrays(
     return arrays
 
 
+def file_key(path: Path) -> str:
+    """A key for what a file holds: a hash of its bytes (a mesh moved or copied keeps its
+    entries; one edited in place gets new ones)."""
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
 def _read(path: Path, full: str) -> dict[str, NDArray[np.generic]] | None:
     """The arrays of the entry at ``path``, or None when it is missing or not to be trusted."""
     try:

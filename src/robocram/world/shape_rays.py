@@ -13,6 +13,8 @@ or DAE files) give None, and callers ask Bullet instead.
 from __future__ import annotations
 
 import functools
+import hashlib
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -20,6 +22,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import NDArray
 
+from robocram.robots.disk_cache import file_key, kept_arrays
 from robocram.tf import Pose
 from robocram.world.errors import WorldValueError
 from robocram.world.pybullet_backend import pybullet
@@ -31,6 +34,8 @@ if TYPE_CHECKING:
 FloatArray = NDArray[np.float64]
 HULL_TOLERANCE = 1e-7  # [m] points this close to a face plane lie on it
 HULL_MARGIN = 0.001  # [m] pybullet's collision margin around the convex hulls of meshes
+_KIND = "ray_hulls"  # the disk cache's folder for the hulls below
+_BUILT_BY = ("robocram.world.shape_rays",)
 
 
 @dataclass(frozen=True, eq=False)
@@ -201,17 +206,47 @@ def _cylinder(radius: float, half: float) -> Piece:
 
 @functools.lru_cache(maxsize=64)
 def _mesh_hulls(path: str, scale: tuple[float, float, float]) -> tuple[Piece, ...] | None:
-    """One convex hull per object (``o``/``g`` group) of an OBJ file, as pybullet builds them."""
-    groups = _obj_groups(Path(path))
-    if not groups:
-        return None
-    return tuple(_hull(points * np.asarray(scale)) for points in groups)
+    """One convex hull per object (``o``/``g`` group) of an OBJ file, as pybullet builds them;
+    kept on disk by the file's content, so a new process reads them instead (tens of ms)."""
+    file = Path(path)
+    key = f"obj {file_key(file)} scale {scale!r}"
+    kept = kept_arrays(_KIND, key, _BUILT_BY, lambda: _hull_arrays(_mesh_pieces(file, scale)))
+    return _pieces_of(kept) or None
+
+
+def _mesh_pieces(file: Path, scale: tuple[float, float, float]) -> tuple[Piece, ...]:
+    return tuple(_hull(points * np.asarray(scale)) for points in _obj_groups(file))
 
 
 @functools.lru_cache(maxsize=256)
 def _vertex_hull(vertices: tuple[tuple[float, ...], ...]) -> Piece:
-    """The convex hull of a mesh pybullet built itself (no file to read)."""
-    return _hull(np.asarray(vertices, dtype=float))
+    """The convex hull of a mesh pybullet built itself (no file to read), kept on disk by
+    its vertices."""
+    points = np.asarray(vertices, dtype=float)
+    key = f"vertices {hashlib.sha256(points.tobytes()).hexdigest()} {points.shape}"
+    kept = kept_arrays(_KIND, key, _BUILT_BY, lambda: _hull_arrays((_hull(points),)))
+    (piece,) = _pieces_of(kept)
+    return piece
+
+
+def _hull_arrays(pieces: tuple[Piece, ...]) -> dict[str, FloatArray | NDArray[np.int64]]:
+    """Hull pieces as the arrays of a disk cache entry: their planes end to end, the count
+    of planes of each and their boxes."""
+    return {
+        "planes": np.concatenate([p.planes for p in pieces]) if pieces else np.zeros((0, 4)),
+        "counts": np.array([len(p.planes) for p in pieces], dtype=np.int64),
+        "boxes": np.array([p.box for p in pieces]).reshape(-1, 2, 3),
+    }
+
+
+def _pieces_of(kept: Mapping[str, NDArray[np.generic]]) -> tuple[Piece, ...]:
+    """The hull pieces :func:`_hull_arrays` stored."""
+    ends = np.cumsum(kept["counts"])
+    planes = np.split(np.asarray(kept["planes"], dtype=float), ends[:-1]) if len(ends) else []
+    boxes = np.asarray(kept["boxes"], dtype=float)
+    return tuple(
+        Piece("planes", np.array(p), 0.0, np.array(b)) for p, b in zip(planes, boxes, strict=True)
+    )
 
 
 def _obj_groups(path: Path) -> list[FloatArray]:
