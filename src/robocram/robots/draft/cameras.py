@@ -2,8 +2,10 @@
 
 Camera frames are found by name (optical, camera, rgb, kinect, xtion, ...), scored: an
 optical frame (z forward) first, then one on the head, then colour over depth. A frame
-with x forward (ROS body convention) gets an optical frame added in code. Two joints
-between the torso and the camera are a pan-tilt unit; more are a neck arm.
+with x forward (ROS body convention) gets an optical frame added in code. Where no link is
+named like a camera, the draft uses the likely link (as ``--camera LINK`` would), judged
+with the arms parked, and adds a frame aimed ahead and down if its axes do not look ahead.
+Two joints between the torso and the camera are a pan-tilt unit; more are a neck arm.
 """
 
 from __future__ import annotations

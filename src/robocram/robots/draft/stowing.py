@@ -10,7 +10,8 @@ its retracted limit. Candidates are checked on the collision meshes
 (:class:`~robocram.robots.self_contacts.SelfContacts`).
 The stowed pose replaces the sampled one (:mod:`~robocram.robots.draft.parking`) where
 it touches nothing and is more compact, or where the sampled one touches and the stowed
-one is about as compact (:func:`better_parking`).
+one is about as compact (:func:`better_parking`). An arm carrying the camera parks
+otherwise (:func:`looking_pose`): stowed, its camera would see the robot's own body.
 """
 
 from __future__ import annotations
