@@ -5,7 +5,15 @@ Check it with `robocram robot check so101.py`; look at each `TODO doubt`.
 
 from __future__ import annotations
 
-from robocram.robots import ArmDescription, FrameSpec, RobotDescription, example_robot_data_folder
+import math
+
+from robocram.robots import (
+    ArmDescription,
+    CameraDescription,
+    FrameSpec,
+    RobotDescription,
+    example_robot_data_folder,
+)
 from robocram.tf import Pose
 
 URDF = example_robot_data_folder() / "so_arm_description/urdf/so101.urdf"
@@ -36,25 +44,44 @@ def description() -> RobotDescription:
                 # why: the finger joints (prismatic, or leaves) right below the wrist; fingers and
                 #   hand links are found at load
                 gripper_joints=("gripper",),
-                # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
-                # TODO doubt: no collision check here: `robocram robot check` drives it
+                # why: it carries the camera: the wrist 0.25 m ahead of and 0.2 m above the
+                #   shoulder, the hand below it, 1 cm clear of its other links (meshes)
                 parking={
-                    "shoulder_pan": 0.055,
-                    "shoulder_lift": -1.506,
-                    "elbow_flex": 0.152,
-                    "wrist_flex": 1.089,
-                    "wrist_roll": -1.618,
+                    "shoulder_pan": -0.006,
+                    "shoulder_lift": 0.203,
+                    "elbow_flex": -0.674,
+                    "wrist_flex": 0.924,
+                    "wrist_roll": 1.316,
                 },
             ),
         },
-        # TODO doubt: no camera link found by name: draft again with `--camera LINK` (likely
-        #   'gripper_link') to look and detect objects
-        cameras=(),
+        # why: camera frame inferred: no link is named like a camera; the link off the arms named
+        #   like a head or sensor, else the highest, else a wrist; neither its z (x share -0.90) nor
+        #   its x (0.13) looks ahead, the arms parked: optical frame added looking ahead (the base's
+        #   x), 13 deg down
+        # TODO doubt: inferred, not read from the URDF: the camera is put on 'gripper_link'; if the
+        #   robot's camera sits elsewhere, draft again with `robocram robot draft URDF --camera
+        #   LINK`, or edit this frame
+        cameras=(
+            CameraDescription(
+                # why: heights 0.234 to 0.234 m over the base (torso at its limits) are derived at
+                #   load; give minimal_height and maximal_height to override
+                frame="gripper_link_optical",
+                # TODO doubt: the URDF gives no field of view: take the sensor's
+                horizontal_fov=math.radians(60),
+                vertical_fov=math.radians(45),
+            ),
+        ),
         extra_frames=(
             FrameSpec(
                 name="arm_standard_tool_frame",
                 parent="gripper_frame_link",
                 pose=Pose((0.0, 0.0, 0.0), (-0.500001, 0.499999, -0.499999, -0.500001)),
+            ),
+            FrameSpec(
+                name="gripper_link_optical",
+                parent="gripper_link",
+                pose=Pose((0.0, 0.0, 0.0), (-0.149142, 0.981878, -0.115978, 0.014864)),
             ),
         ),
     )

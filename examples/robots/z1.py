@@ -5,8 +5,11 @@ Check it with `robocram robot check z1.py`; look at each `TODO doubt`.
 
 from __future__ import annotations
 
+import math
+
 from robocram.robots import (
     ArmDescription,
+    CameraDescription,
     FrameSpec,
     GripperDescription,
     GripperJoint,
@@ -40,15 +43,15 @@ def description() -> RobotDescription:
                 tool_frame="arm_standard_tool_frame",
                 # why: parent of the first arm joint; its joints down to the wrist are found at load
                 base_link="link00",
-                # why: stowed: within limits, the arm within 0.18 m of the base's middle (the
-                #   sampled pose: 0.32 m out), 1 cm clear of its other links (meshes)
+                # why: it carries the camera: the wrist 0.25 m ahead of and 0.2 m above the
+                #   shoulder, the hand below it, 1 cm clear of its other links (meshes)
                 parking={
-                    "joint1": 1.228,
-                    "joint2": 1.799,
-                    "joint3": -0.128,
-                    "joint4": 0.802,
-                    "joint5": -1.304,
-                    "joint6": 2.184,
+                    "joint1": 0.2,
+                    "joint2": 1.894,
+                    "joint3": -1.082,
+                    "joint4": 1.518,
+                    "joint5": -1.343,
+                    "joint6": -1.06,
                 },
                 # why: the finger joints (prismatic, or leaves) right below the wrist; open at the
                 #   lower limit, where the fingers part
@@ -57,14 +60,33 @@ def description() -> RobotDescription:
                 ),
             ),
         },
-        # TODO doubt: no camera link found by name: draft again with `--camera LINK` (likely
-        #   'link06') to look and detect objects
-        cameras=(),
+        # why: camera frame inferred: no link is named like a camera; the link off the arms named
+        #   like a head or sensor, else the highest, else a wrist; neither its z (x share -0.26) nor
+        #   its x (0.04) looks ahead, the arms parked: optical frame added looking ahead (the base's
+        #   x), 12 deg down
+        # TODO doubt: inferred, not read from the URDF: the camera is put on 'link06'; if the
+        #   robot's camera sits elsewhere, draft again with `robocram robot draft URDF --camera
+        #   LINK`, or edit this frame
+        cameras=(
+            CameraDescription(
+                # why: heights 0.161 to 0.161 m over the base (torso at its limits) are derived at
+                #   load; give minimal_height and maximal_height to override
+                frame="link06_optical",
+                # TODO doubt: the URDF gives no field of view: take the sensor's
+                horizontal_fov=math.radians(60),
+                vertical_fov=math.radians(45),
+            ),
+        ),
         extra_frames=(
             FrameSpec(
                 name="arm_standard_tool_frame",
                 parent="link06",
                 pose=Pose((0.139501, 0.0, 0.002626), (0.707107, 0.0, 0.0, 0.707107)),
+            ),
+            FrameSpec(
+                name="link06_optical",
+                parent="link06",
+                pose=Pose((0.0, 0.0, 0.0), (0.721476, 0.081014, -0.024924, 0.687232)),
             ),
         ),
     )

@@ -221,7 +221,8 @@ def test_cli_writes_a_draft_that_runs(tmp_path: Path, capsys: pytest.CaptureFixt
     assert "robocram robot check" in capsys.readouterr().out
     desc = load_description(_run_source(out.read_text(encoding="utf-8"), out))
     assert desc.arms["arm"].gripper_joints == ("panda_finger_joint1",)
-    assert desc.cameras == ()  # the Panda has no camera
+    # the Panda's URDF names no camera: the draft puts one on its wrist (issue 37)
+    assert [c.frame for c in desc.cameras] == ["panda_link7_optical"]
 
 
 BOXY_TORSO = (

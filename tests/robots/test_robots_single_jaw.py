@@ -98,7 +98,7 @@ def test_z1_draft_opens_its_jaw_at_the_lower_limit_and_turns_the_tool_frame() ->
     assert arm.gripper is not None
     (jaw,) = arm.gripper.joints
     assert (jaw.name, jaw.open, jaw.closed) == ("jointGripper", -1.5707, 0.0)
-    (frame,) = draft.description.extra_frames
+    frame = next(f for f in draft.description.extra_frames if f.name == arm.tool_frame)
     assert frame.parent == "link06"
     # at the closed jaw's middle: the pivot 0.100 m out, plus the mesh's middle
     assert frame.pose.position == pytest.approx((0.1 + MOVER_MIDDLE[0], 0.0, 0.0026), abs=1e-3)

@@ -214,7 +214,9 @@ def _camera_findings(desc: LoadedDescription, i: int, camera: CameraDescription)
                 "swap them, or leave both None to derive them from the torso's limits",
             )
         )
-    rotation = link_pose(desc.model, camera.frame, desc.neck_parking).orientation
+    # as the robot looks: an arm carrying the camera (a hand camera) parked, the neck too
+    parked = {j: v for arm in desc.arms.values() for j, v in arm.parking.items()}
+    rotation = link_pose(desc.model, camera.frame, {**parked, **desc.neck_parking}).orientation
     z_forward = rotate(rotation, (0.0, 0.0, 1.0))[0]
     x_forward = rotate(rotation, (1.0, 0.0, 0.0))[0]
     if z_forward > _CAMERA_FORWARD:
@@ -235,8 +237,9 @@ def _camera_findings(desc: LoadedDescription, i: int, camera: CameraDescription)
             "fault",
             f"{where}.frame",
             f"{camera.frame!r} looks {_degrees(z_forward)} deg away from the robot's forward "
-            f"x (its z in {desc.base_frame!r} at the neck's parking pose)",
-            "name the camera's optical frame (z forward), or fix neck_parking to face ahead",
+            f"x (its z in {desc.base_frame!r} with the neck and arms parked)",
+            "name the camera's optical frame (z forward), or fix neck_parking to face ahead "
+            "(for a hand camera: the parking of the arm carrying it)",
         )
     )
     return found

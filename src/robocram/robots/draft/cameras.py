@@ -2,14 +2,16 @@
 
 Camera frames are found by name (optical, camera, rgb, kinect, xtion, ...), scored: an
 optical frame (z forward) first, then one on the head, then colour over depth. A frame
-with x forward (ROS body convention) gets an optical frame added in code. Two joints
-between the torso and the camera are a pan-tilt unit; more are a neck arm.
+with x forward (ROS body convention) gets an optical frame added in code. Where no link is
+named like a camera, the draft uses the likely link (as ``--camera LINK`` would), judged
+with the arms parked, and adds a frame aimed ahead and down if its axes do not look ahead.
+Two joints between the torso and the camera are a pan-tilt unit; more are a neck arm.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -20,6 +22,7 @@ from robocram.robots.draft.link_poses import axis_in_root, link_poses
 from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.model_additions import FrameSpec
 from robocram.tf import Pose
+from robocram.tf import quaternion as quat
 
 CAMERA_WORDS = ("optical", "camera", "rgb", "kinect", "xtion", "realsense", "stereo")
 NOT_CAMERAS = ("depth", "infra", "_ir", "projector", "laser", "imu", "gazebo", "info")
@@ -28,6 +31,8 @@ LOOKS_AHEAD = 0.5  # x share of an optical axis that `robot check` counts as loo
 OPTICAL_FROM_BODY = Pose.from_xyz_rpy((0.0, 0.0, 0.0), (-math.pi / 2, 0.0, -math.pi / 2))
 DEFAULT_HFOV = math.radians(60.0)  # [rad] a common RGB-D camera; URDF links carry no FOV
 DEFAULT_VFOV = math.radians(45.0)  # [rad]
+AIM_DOWN = math.radians(30.0)  # [rad] an added optical frame looks this far below ahead,
+AIM_FLOOR = 1.2  # [m] or less, so that its axis meets the floor no nearer than this
 
 
 @dataclass(frozen=True)
@@ -65,12 +70,14 @@ def camera_frames(tree: ModelTree, hands: list[str]) -> list[str]:
 
 HEAD_HEIGHT = 0.5  # [m] over the root: a link off the arms this high may carry a camera
 LIKELY_WORDS = ("head", "sensor", "eye", "vision", "cam", "kinect", "xtion", "mast")
+LIKELY_RULE = "the link off the arms named like a head or sensor, else the highest, else a wrist"
 
 
 def likely_camera_link(tree: ModelTree, hands: Sequence[str]) -> str:
     """The link a camera most likely sits on when none is named like one (for ``--camera
-    LINK``): off the arms, named like a head or a sensor, else high up; an arm on its own
-    (nothing off it is named so or stands 0.5 m up): its wrist, for a hand camera."""
+    LINK``): off the arms, named like a head or a sensor, else high up (of links alike, the
+    deepest); an arm on its own (nothing off it is named so or stands 0.5 m up): its wrist,
+    for a hand camera."""
     poses = link_poses(tree.model)
     off_arms = [
         link
@@ -78,9 +85,10 @@ def likely_camera_link(tree: ModelTree, hands: Sequence[str]) -> str:
         if not any(tree.below(hand, link) or tree.below(link, hand) for hand in hands)
     ]
 
-    def score(link: str) -> tuple[int, float]:
+    def score(link: str) -> tuple[int, float, int]:
         words = sum(word in link.lower() for word in LIKELY_WORDS)
-        return words, poses[link].position[2]
+        # among links alike and level, the deepest: past the joints that turn a head
+        return words, round(poses[link].position[2], 3), len(tree.ancestors(link))
 
     best = max(off_arms, key=score, default=None)
     if best is not None and (score(best)[0] > 0 or score(best)[1] >= HEAD_HEIGHT or not hands):
@@ -94,11 +102,15 @@ def find_camera(
     torso: str | None,
     sensors: Sequence[CameraSensor] = (),
     given: str | None = None,
+    parked: Mapping[str, float] | None = None,
+    inferred: bool = False,
 ) -> Camera | None:
     """The robot's main camera with heights at the torso's limits, or None.
 
     ``sensors`` (the URDF's Gazebo cameras) give its fields of view where one images it;
-    ``given``: the link the user named (``--camera LINK``), first whatever its name.
+    ``given``: the link the user named (``--camera LINK``), first whatever its name, its
+    axes judged with the arms at ``parked`` (as ``robot check`` judges them); ``inferred``:
+    ``given`` is :func:`likely_camera_link`'s guess, not the user's, and says so in a doubt.
     """
     frames = camera_frames(tree, hands)
     if given is not None:
@@ -107,28 +119,83 @@ def find_camera(
     if not frames:
         return None
     frame, others = frames[0], tuple(frames[1:4])
-    poses = link_poses(tree.model)
-    axes = poses[frame].matrix()[:3, :3]
-    found = f"camera frame by name ({len(frames)} found, best first)"
-    if given is not None:
-        found = "camera frame as given (--camera)"
-    added, why, doubt = None, found, None
-    z_ahead, x_ahead = float(axes[0, 2]), float(axes[0, 0])
-    if z_ahead >= FORWARD or (z_ahead >= LOOKS_AHEAD and z_ahead >= x_ahead):
-        why += "; optical: z looks forward"
-    elif x_ahead >= LOOKS_AHEAD:
-        added = FrameSpec(f"{frame}_optical", frame, OPTICAL_FROM_BODY)
-        why += "; its x looks forward (body convention): optical frame added, z forward"
+    if given is None:
+        found = f"camera frame by name ({len(frames)} found, best first)"
+        added, why, doubt = _named_optics(tree, frame, found)
     else:
-        doubt = (
-            f"neither its z (x share {z_ahead:.2f}) nor its x ({x_ahead:.2f}) looks ahead "
-            f"(at least {LOOKS_AHEAD}, as `robot check` asks) at zero joints; add an "
-            "optical frame (z forward, x right, y down) with a FrameSpec"
-        )
+        added, why, doubt = _given_optics(tree, frame, parked or {}, inferred)
     low, high = _heights(tree, frame, torso)
     camera_frame = added.name if added is not None else frame
     sensor = sensor_for(frame, tree.rigid_group(frame), sensors)
     return Camera(camera_frame, added, low, high, why, others, doubt, sensor)
+
+
+def _named_optics(
+    tree: ModelTree, frame: str, found: str
+) -> tuple[FrameSpec | None, str, str | None]:
+    """A named camera's optical frame (maybe added), why, and a doubt, at zero joints."""
+    axes = link_poses(tree.model)[frame].matrix()[:3, :3]
+    z_ahead, x_ahead = float(axes[0, 2]), float(axes[0, 0])
+    if z_ahead >= FORWARD or (z_ahead >= LOOKS_AHEAD and z_ahead >= x_ahead):
+        return None, found + "; optical: z looks forward", None
+    if x_ahead >= LOOKS_AHEAD:
+        added = FrameSpec(f"{frame}_optical", frame, OPTICAL_FROM_BODY)
+        why = "; its x looks forward (body convention): optical frame added, z forward"
+        return added, found + why, None
+    doubt = (
+        f"neither its z (x share {z_ahead:.2f}) nor its x ({x_ahead:.2f}) looks ahead "
+        f"(at least {LOOKS_AHEAD}, as `robot check` asks) at zero joints; add an "
+        "optical frame (z forward, x right, y down) with a FrameSpec"
+    )
+    return None, found, doubt
+
+
+def _given_optics(
+    tree: ModelTree, frame: str, parked: Mapping[str, float], inferred: bool
+) -> tuple[FrameSpec | None, str, str | None]:
+    """A given or inferred camera link's optical frame: its own axes where they look ahead
+    with the arms parked, else an added frame aimed ahead and down (:func:`aim_down`)."""
+    found = "camera frame as given (--camera)"
+    doubt = None
+    if inferred:
+        found = "camera frame inferred: no link is named like a camera; " + LIKELY_RULE
+        doubt = (
+            f"inferred, not read from the URDF: the camera is put on {frame!r}; if the "
+            "robot's camera sits elsewhere, draft again with `robocram robot draft URDF "
+            "--camera LINK`, or edit this frame"
+        )
+    pose = link_poses(tree.model, parked)[frame]
+    axes = pose.matrix()[:3, :3]
+    z_ahead, x_ahead = float(axes[0, 2]), float(axes[0, 0])
+    if z_ahead >= FORWARD or (z_ahead >= LOOKS_AHEAD and z_ahead >= x_ahead):
+        return None, found + "; optical: z looks forward, the arms parked", doubt
+    if x_ahead >= LOOKS_AHEAD:
+        added = FrameSpec(f"{frame}_optical", frame, OPTICAL_FROM_BODY)
+        why = "; its x looks forward (body convention), the arms parked: optical frame added"
+        return added, found + why, doubt
+    down = aim_down(pose.position[2])
+    added = FrameSpec(f"{frame}_optical", frame, aimed_optics(axes, down))
+    why = (
+        f"; neither its z (x share {z_ahead:.2f}) nor its x ({x_ahead:.2f}) looks ahead, "
+        f"the arms parked: optical frame added looking ahead (the base's x), "
+        f"{math.degrees(down):.0f} deg down"
+    )
+    return added, found + why, doubt
+
+
+def aim_down(height: float) -> float:
+    """How far [rad] below ahead a camera ``height`` [m] over the root looks: :data:`AIM_DOWN`,
+    less where a low camera would look into the floor nearer than :data:`AIM_FLOOR`."""
+    return min(AIM_DOWN, math.asin(min(1.0, max(0.0, height) / AIM_FLOOR)))
+
+
+def aimed_optics(link_axes: np.ndarray, angle_down: float = AIM_DOWN) -> Pose:
+    """The pose in a link (its axes in the root: ``link_axes``) of an optical frame that
+    looks along the root's x, ``angle_down`` [rad] down, its image's x to the robot's right."""
+    down, ahead = math.sin(angle_down), math.cos(angle_down)
+    optical = np.column_stack(((0.0, -1.0, 0.0), (-down, 0.0, -ahead), (ahead, 0.0, -down)))
+    local = np.asarray(link_axes).T @ optical
+    return Pose(orientation=quat.normalized([round(v, 6) for v in quat.from_matrix(local)]))
 
 
 def _heights(tree: ModelTree, frame: str, torso: str | None) -> tuple[float, float]:
@@ -149,6 +216,15 @@ class Neck:
     arm_joints: tuple[str, ...]
     why: str
     doubt: str | None = None
+
+
+def carrying_arm(
+    tree: ModelTree, camera: str, arm_joints: Mapping[str, Sequence[str]]
+) -> str | None:
+    """The arm (of ``arm_joints``, its joints by key) that carries ``camera``, or None: its
+    parking aims the camera, and its joints must not be drafted again as a neck arm."""
+    ancestors = {j.name for j in tree.movable_ancestors(camera)}
+    return next((key for key, joints in arm_joints.items() if ancestors & set(joints)), None)
 
 
 def find_neck(tree: ModelTree, camera: str, torso: str | None) -> Neck:

@@ -25,6 +25,9 @@ from robocram.robots.draft.camera_sensors import camera_sensors
 from robocram.robots.draft.cameras import (
     DEFAULT_HFOV,
     DEFAULT_VFOV,
+    Neck,
+    camera_frames,
+    carrying_arm,
     find_camera,
     find_neck,
     likely_camera_link,
@@ -35,6 +38,7 @@ from robocram.robots.draft.link_poses import within_limits
 from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.draft.parking import neck_pose
 from robocram.robots.draft.srdf_arms import srdf_arms
+from robocram.robots.draft.stowing import ABOVE, AHEAD, looking_pose
 from robocram.robots.draft.telescope import Telescope, find_telescopes
 from robocram.robots.draft.torso import find_torso
 from robocram.robots.draft.trunk import find_trunk
@@ -101,6 +105,9 @@ def draft_description(
     drive = find_base_drive(tree)
     _note(why, doubts, "base_type", drive.why, drive.doubt)
     hands = find_hands(tree)
+    guessed = camera is None and not camera_frames(tree, [h.end_effector_link for h in hands])
+    if guessed:  # as `--camera LINK` with the link the check would name
+        camera = likely_camera_link(tree, [h.end_effector_link for h in hands])
     cameras = [c for c in _camera_guess(tree, [h.end_effector_link for h in hands], camera)]
     torso = find_torso(tree, [h.end_effector_link for h in hands], cameras)
     _note(why, doubts, "torso_joint", torso.why, torso.doubt)
@@ -137,7 +144,7 @@ def draft_description(
         extra_frames=tuple(frames),
         coupled_joints=tuple(t.coupling for t in telescopes),
     )
-    desc = _with_camera(tree, desc, why, doubts, cut, camera)
+    desc = _with_camera(tree, desc, why, doubts, cut, camera, guessed)
     if semantics is not None:
         desc = srdf_arms(model, desc, semantics, why, doubts)
     inferred = frozenset(
@@ -180,11 +187,17 @@ def _with_camera(
     doubts: dict[str, str],
     cut: str | None,
     given: str | None = None,
+    inferred: bool = False,
 ) -> RobotDescription:
-    """``desc`` with its camera, heights at the torso limits, and pan-tilt or neck arm."""
+    """``desc`` with its camera, heights at the torso limits, and pan-tilt or neck arm;
+    ``given`` (or ``inferred``) is judged with the arms parked, as the check does."""
     hands = [arm.end_effector_link for arm in desc.arms.values()]
     sensors = camera_sensors(Path(desc.urdf))
-    camera = find_camera(tree, hands, desc.torso_joint, sensors, given)
+    carrier = None if given is None else _park_carrier(tree, desc, given, why, doubts)
+    if carrier is not None:
+        desc = replace(desc, arms={**desc.arms, carrier.name: carrier})
+    parked = {j: v for arm in desc.arms.values() for j, v in arm.parking.items()}
+    camera = find_camera(tree, hands, desc.torso_joint, sensors, given, parked, inferred)
     if camera is None:
         likely = likely_camera_link(tree, hands)
         doubts["cameras"] = (
@@ -212,6 +225,8 @@ def _with_camera(
     )
     looked_from = camera.added.parent if camera.added else camera.frame
     neck = find_neck(tree, looked_from, cut)
+    if carrier is not None:  # the arm's joints are not a neck too
+        neck = Neck(None, (), f"the camera rides on arm {carrier.name!r}: its parking aims it")
     _note(why, doubts, "pan_tilt", neck.why, neck.doubt)
     offset = camera.added.pose if camera.added else Pose()
     parking = neck_pose(tree.model, neck.arm_joints, looked_from, offset) if neck.arm_joints else {}
@@ -240,3 +255,28 @@ def _with_camera(
         neck_parking=parking,
         extra_frames=frames,
     )
+
+
+def _park_carrier(
+    tree: ModelTree,
+    desc: RobotDescription,
+    camera: str,
+    why: dict[str, str],
+    doubts: dict[str, str],
+) -> ArmDescription | None:
+    """The arm carrying the given ``camera`` re-parked to look ahead over the robot (a
+    stowed hand camera sees the robot's own body), or None if no arm carries it."""
+    joints = {key: arm.joints or tuple(arm.parking) for key, arm in desc.arms.items()}
+    key = carrying_arm(tree, camera, joints)
+    if key is None:
+        return None
+    arm = desc.arms[key]
+    looking = looking_pose(tree.model, tuple(arm.parking), arm.end_effector_link)
+    if looking is None:
+        return arm
+    why[f"arms.{key}.parking"] = (
+        f"it carries the camera: the wrist {AHEAD} m ahead of and {ABOVE} m above the "
+        "shoulder, the hand below it, 1 cm clear of its other links (meshes)"
+    )
+    doubts.pop(f"arms.{key}.parking", None)
+    return replace(arm, parking=looking.values)

@@ -10,7 +10,8 @@ its retracted limit. Candidates are checked on the collision meshes
 (:class:`~robocram.robots.self_contacts.SelfContacts`).
 The stowed pose replaces the sampled one (:mod:`~robocram.robots.draft.parking`) where
 it touches nothing and is more compact, or where the sampled one touches and the stowed
-one is about as compact (:func:`better_parking`).
+one is about as compact (:func:`better_parking`). An arm carrying the camera parks
+otherwise (:func:`looking_pose`): stowed, its camera would see the robot's own body.
 """
 
 from __future__ import annotations
@@ -164,7 +165,11 @@ def stowed_pose(
 ) -> Stowed | None:
     """The stowed pose of the arm (see the module docstring), or None if every candidate
     touches; values within limits, to 3 decimals."""
-    search = _Search(model, joints, wrist, contacts or SelfContacts(model))
+    return _best(_Search(model, joints, wrist, contacts or SelfContacts(model)), seed)
+
+
+def _best(search: _Search, seed: int) -> Stowed | None:
+    """The cheapest seeded sample that touches nothing, refined; None if all touch."""
     rng = random.Random(seed)
     ranked = sorted((search.sample(rng) for _ in range(SAMPLES)), key=search.cost)
     for values in ranked[:CANDIDATES]:
@@ -224,3 +229,34 @@ def drafted_parking(model: RobotModel, joints: Sequence[str], wrist: str) -> Dra
         pairs = ", ".join("/".join(p) for p in contacts.meeting(sampled.values)[:2])
         doubt = f"its links touch ({pairs}) and no stowed pose was found: give one"
     return DraftedParking(sampled.values, why, doubt)
+
+
+AHEAD = 0.25  # [m] a camera-carrying arm parks its wrist this far ahead of its shoulder
+ABOVE = 0.2  # [m] and this far above it, so that the camera looks over the robot's body
+
+
+class _LookingSearch(_Search):
+    """A parked arm that carries the camera: wrist ahead of and above the shoulder, the
+    hand hanging below the wrist (out of the camera's view), above the floor."""
+
+    def __init__(
+        self, model: RobotModel, joints: Sequence[str], wrist: str, contacts: SelfContacts
+    ) -> None:
+        super().__init__(model, joints, wrist, contacts)
+        shoulder = (self.chain.base * self.chain.chain[0].origin).position
+        self.goal = np.asarray(shoulder) + (AHEAD, 0.0, ABOVE)
+
+    def cost(self, values: Sequence[float]) -> float:
+        points = self.points(values)
+        wrist = self.chain.poses(values)[-1].position
+        low = np.maximum(FLOOR_CLEARANCE - points[:, 2], 0.0).sum()
+        hand = np.maximum(points[-len(self.hand) :, 2] - wrist[2], 0.0).sum()
+        return float(np.linalg.norm(np.subtract(wrist, self.goal)) + 2.0 * low + hand)
+
+
+def looking_pose(
+    model: RobotModel, joints: Sequence[str], wrist: str, seed: int = 0
+) -> Stowed | None:
+    """A parking pose for an arm whose wrist carries the camera (see
+    :class:`_LookingSearch`), touching nothing, or None; within limits, to 3 decimals."""
+    return _best(_LookingSearch(model, joints, wrist, model.derived(SelfContacts)), seed)
