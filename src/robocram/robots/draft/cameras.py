@@ -130,15 +130,25 @@ def find_camera(
     return Camera(camera_frame, added, low, high, why, others, doubt, sensor)
 
 
+def _looking_axis(axes: np.ndarray) -> str | None:
+    """Which axis of a frame (rotation ``axes`` in the root link) looks ahead: ``"z"`` (an
+    optical frame), ``"x"`` (ROS body convention), or None."""
+    z_ahead, x_ahead = float(axes[0, 2]), float(axes[0, 0])
+    if z_ahead >= FORWARD or (z_ahead >= LOOKS_AHEAD and z_ahead >= x_ahead):
+        return "z"
+    return "x" if x_ahead >= LOOKS_AHEAD else None
+
+
 def _named_optics(
     tree: ModelTree, frame: str, found: str
 ) -> tuple[FrameSpec | None, str, str | None]:
     """A named camera's optical frame (maybe added), why, and a doubt, at zero joints."""
     axes = link_poses(tree.model)[frame].matrix()[:3, :3]
     z_ahead, x_ahead = float(axes[0, 2]), float(axes[0, 0])
-    if z_ahead >= FORWARD or (z_ahead >= LOOKS_AHEAD and z_ahead >= x_ahead):
+    looking = _looking_axis(axes)
+    if looking == "z":
         return None, found + "; optical: z looks forward", None
-    if x_ahead >= LOOKS_AHEAD:
+    if looking == "x":
         added = FrameSpec(f"{frame}_optical", frame, OPTICAL_FROM_BODY)
         why = "; its x looks forward (body convention): optical frame added, z forward"
         return added, found + why, None
@@ -167,9 +177,10 @@ def _given_optics(
     pose = link_poses(tree.model, parked)[frame]
     axes = pose.matrix()[:3, :3]
     z_ahead, x_ahead = float(axes[0, 2]), float(axes[0, 0])
-    if z_ahead >= FORWARD or (z_ahead >= LOOKS_AHEAD and z_ahead >= x_ahead):
+    looking = _looking_axis(axes)
+    if looking == "z":
         return None, found + "; optical: z looks forward, the arms parked", doubt
-    if x_ahead >= LOOKS_AHEAD:
+    if looking == "x":
         added = FrameSpec(f"{frame}_optical", frame, OPTICAL_FROM_BODY)
         why = "; its x looks forward (body convention), the arms parked: optical frame added"
         return added, found + why, doubt
