@@ -24,10 +24,20 @@ RAY = str(Path(sys.executable).with_name("ray"))
 START_LIMIT = 90.0  # [s] for one `ray start`; a guard against a hang, not a measure
 
 
+# ports Ray's components take by default (the dashboard agent's HTTP 52365, GCS 6379, the
+# dashboard 8265, the client server 10001, metrics 8080) and its workers' range
+RAY_DEFAULT_PORTS = {52365, 6379, 8265, 10001, 8080, *range(10002, 20000)}
+
+
 def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return int(s.getsockname()[1])
+    """A free port none of Ray's components takes by default (the OS may hand out 52365,
+    and `ray start` then refuses two components on one port)."""
+    while True:
+        with socket.socket() as s:
+            s.bind(("127.0.0.1", 0))
+            port = int(s.getsockname()[1])
+        if port not in RAY_DEFAULT_PORTS:
+            return port
 
 
 class LocalCluster:
