@@ -10,6 +10,9 @@ from __future__ import annotations
 
 import json
 import sqlite3
+import subprocess
+import sys
+from contextlib import closing
 from pathlib import Path
 
 import pytest
@@ -50,13 +53,14 @@ def _move_source(db_path: Path, tmp_path: Path, to: str) -> Path:
     """A copy of the store whose robot was read from ``to`` (a file moved or changed)."""
     copy = tmp_path / "moved.db"
     copy.write_bytes(db_path.read_bytes())
-    with sqlite3.connect(copy) as db:
+    with closing(sqlite3.connect(copy)) as db:  # closed: the write leaves the WAL
         (scene,) = db.execute("SELECT scene FROM runs").fetchone()
         recipes = json.loads(scene)
         for recipe in recipes:
             if "robot" in recipe:
                 recipe["source"] = to
         db.execute("UPDATE runs SET scene = ?", (json.dumps(recipes),))
+        db.commit()
     return copy
 
 
@@ -71,20 +75,63 @@ def test_the_trace_keeps_the_file_and_the_audit_rebuilds_the_robot(fetch_run: Pa
 def test_a_moved_file_is_named_with_the_fix_and_can_be_given(
     fetch_run: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
+    """A trace of an older robocram keeps no copy: its moved file is asked for."""
     moved = _move_source(fetch_run, tmp_path, str(tmp_path / "gone.py") + ":description")
-    with TraceDatabase(moved, create=False) as db, pytest.raises(RobotNotRebuilt) as err:
+    older = _drop_copies(moved, tmp_path)
+    with TraceDatabase(older, create=False) as db, pytest.raises(RobotNotRebuilt) as err:
         audit_runs(db)
     assert "gone.py" in str(err.value) and "--robot-file" in str(err.value)
-    assert main(["runs", "audit", str(moved)]) == 3  # bad input: one line, no traceback
+    assert main(["runs", "audit", str(older)]) == 3  # bad input: one line, no traceback
     assert "gone.py" in capsys.readouterr().err
-    assert main(["runs", "audit", str(moved), "--robot-file", str(FETCH)]) == 0
+    assert main(["runs", "audit", str(older), "--robot-file", str(FETCH)]) == 0
     out = tmp_path / "run.mcap"
-    assert main(["runs", "export", str(moved), "--mcap", str(out), "--robot-file", str(FETCH)]) == 0
+    assert main(["runs", "export", str(older), "--mcap", str(out), "--robot-file", str(FETCH)]) == 0
     assert out.stat().st_size > 10_000
 
 
-def test_a_file_that_now_describes_another_urdf_is_refused(fetch_run: Path, tmp_path: Path) -> None:
-    changed = _move_source(fetch_run, tmp_path, f"{STRETCH}:description")
-    with TraceDatabase(changed, create=False) as db, pytest.raises(RobotNotRebuilt) as err:
-        audit_runs(db)
+def test_a_file_given_that_describes_another_urdf_is_refused(fetch_run: Path) -> None:
+    with TraceDatabase(fetch_run, create=False) as db, pytest.raises(RobotNotRebuilt) as err:
+        audit_runs(db, robots={"fetch": f"{STRETCH}:description"})
     assert "another URDF" in str(err.value)
+
+
+def test_a_file_changed_since_gives_way_to_the_traces_copy(fetch_run: Path, tmp_path: Path) -> None:
+    changed = _move_source(fetch_run, tmp_path, f"{STRETCH}:description")
+    with TraceDatabase(changed, create=False) as db:
+        report = audit_runs(db)
+    assert report.clean, report.summary_lines()
+    assert report.trajectories == 1 and report.configurations > 10
+
+
+def _drop_copies(db_path: Path, tmp_path: Path) -> Path:
+    """A copy of the store as an older robocram wrote it: no copy of the description."""
+    older = tmp_path / "older.db"
+    older.write_bytes(db_path.read_bytes())
+    with closing(sqlite3.connect(older)) as db:  # closed: the write leaves the WAL
+        db.execute("DELETE FROM robot_descriptions")
+        db.commit()
+    return older
+
+
+def test_the_trace_keeps_a_copy_of_the_description(fetch_run: Path) -> None:
+    with sqlite3.connect(fetch_run) as db:
+        rows = db.execute("SELECT name, description FROM robot_descriptions").fetchall()
+    assert [name for name, _ in rows] == ["fetch"]
+    stored = json.loads(rows[0][1])
+    assert stored["torso_joint"] == "torso_lift_joint" and "arm" in stored["arms"]
+
+
+def test_a_moved_file_is_rebuilt_from_the_traces_copy_in_a_fresh_process(
+    fetch_run: Path, tmp_path: Path
+) -> None:
+    moved = _move_source(fetch_run, tmp_path, str(tmp_path / "gone.py") + ":description")
+    out = tmp_path / "run.mcap"
+    code = (
+        "import sys; from robocram.cli import main; "
+        f"sys.exit(main(['runs', 'audit', {str(moved)!r}]) or "
+        f"main(['runs', 'export', {str(moved)!r}, '--mcap', {str(out)!r}]))"
+    )
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr[-2000:]
+    assert "0 findings" in done.stdout or "clean" in done.stdout, done.stdout[-2000:]
+    assert out.stat().st_size > 10_000

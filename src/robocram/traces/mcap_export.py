@@ -119,7 +119,7 @@ def _write(
 ) -> int:
     """Write the run's messages to ``out``; return how many."""
     written = 0
-    with build_scene(scene, robots=robots) as world, open(out, "wb") as stream:
+    with build_scene(scene, robots=robots, db=db) as world, open(out, "wb") as stream:
         writer = writer_class(stream)
         schemas = {name: writer.register_msgdef(name, message_definition(name)) for name in SCHEMAS}
         bodies = world_frames(world)

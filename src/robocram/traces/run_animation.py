@@ -85,7 +85,7 @@ def animate_run(
     step = max(period, _replay_span(db, run) / (max_frames - 1))
     images: list[np.ndarray] = []
     first, due, last, shown = None, -np.inf, 0.0, False
-    with build_scene(row.scene, robots=robots) as world:
+    with build_scene(row.scene, robots=robots, db=db) as world:
         aim = _aim(world, run, camera)
         for frame in replay_frames(db, run, world, period=min(step, period)):
             first = frame.time if first is None else first

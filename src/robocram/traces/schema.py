@@ -31,9 +31,11 @@ from robocram.traces.errors import TraceArgumentError
 
 # 2: world state rows, task ids per run; 3: costmaps; 4: trajectories; 5: URDFs;
 # 6: trajectories' allowed contacts; 7: the joints of other objects trajectories carry;
-# 8: the bodies a run added after its start (particles, slices), with each world state
-SCHEMA_VERSION = 8
-ADDED_TABLES = {4: ("trajectories",), 5: ("robot_models",)}  # version -> tables it added
+# 8: the bodies a run added after its start (particles, slices), with each world state;
+# 9: the descriptions of robots read from files
+SCHEMA_VERSION = 9
+# version -> tables it added
+ADDED_TABLES = {4: ("trajectories",), 5: ("robot_models",), 9: ("robot_descriptions",)}
 ADDED_COLUMNS = {  # version -> (table, column)
     6: (("trajectories", "allowed_contacts"),),
     7: (("trajectories", "carried"),),
@@ -193,6 +195,19 @@ class RobotModelRow(Base):
     digest: Mapped[str] = mapped_column(String, primary_key=True)  # SHA-1 of the text, hex
     name: Mapped[str] = mapped_column(String)  # the description's name
     urdf: Mapped[str] = mapped_column(Text)
+
+
+class RobotDescriptionRow(Base):
+    """The description of a robot read from a file, once per content (its SHA-1 digest).
+
+    With the model's URDF text it builds the robot again when the file has moved, changed
+    or stayed on another machine: a scene names it by ``description_digest``.
+    """
+
+    __tablename__ = "robot_descriptions"
+    digest: Mapped[str] = mapped_column(String, primary_key=True)  # SHA-1 of the JSON, hex
+    name: Mapped[str] = mapped_column(String)  # the description's name
+    description: Mapped[str] = mapped_column(Text)  # robots.description_json's JSON
 
 
 TASKS_PER_RUN = 1 << 32  # task keys of one run: run id * TASKS_PER_RUN + start order

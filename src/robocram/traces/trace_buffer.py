@@ -17,7 +17,7 @@ from robocram.costmaps import Costmap
 from robocram.motion import JointTrajectory
 from robocram.traces.costmap_record import costmap_row
 from robocram.traces.errors import TraceStateError
-from robocram.traces.robot_model_record import INSERT_MODEL
+from robocram.traces.robot_model_record import INSERT_DESCRIPTION, INSERT_MODEL
 from robocram.traces.schema import (
     Base,
     CostmapRow,
@@ -111,6 +111,7 @@ class Pending:
     costmaps: list[tuple[TaskEntry, float, Any, Costmap]] = field(default_factory=list)
     trajectories: list[TrajectoryEntry] = field(default_factory=list)
     robot_models: list[dict[str, str]] = field(default_factory=list)  # robot_models rows
+    robot_descriptions: list[dict[str, str]] = field(default_factory=list)  # of file robots
 
     def __bool__(self) -> bool:
         return bool(
@@ -121,6 +122,7 @@ class Pending:
             or self.costmaps
             or self.trajectories
             or self.robot_models
+            or self.robot_descriptions
         )
 
 
@@ -176,6 +178,7 @@ def write(connection: Connection, pending: Pending) -> None:
         (_INSERT_COSTMAPS, costmaps),
         (_INSERT_TRAJECTORIES, trajectories),
         (INSERT_MODEL, pending.robot_models),
+        (INSERT_DESCRIPTION, pending.robot_descriptions),
     ):
         if rows:
             cursor.executemany(sql, rows)

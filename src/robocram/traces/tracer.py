@@ -27,7 +27,7 @@ from robocram.execution import Task, TaskListener, TaskSnapshot, current_task, l
 from robocram.motion import JointTrajectory, trajectory_listener
 from robocram.traces.database import TraceDatabase
 from robocram.traces.json_values import dumps
-from robocram.traces.robot_model_record import model_row
+from robocram.traces.robot_model_record import description_row, model_row
 from robocram.traces.trace_buffer import Pending, RunBuffer, TaskEntry, TrajectoryEntry, write
 from robocram.traces.world_record import StoredWorldState, scene_names, scene_of
 from robocram.world import World
@@ -49,7 +49,7 @@ class Tracer(TaskListener):
         self._motion_ended = False  # since the last write
         self._lock = threading.Lock()  # guards the entries and the pending rows; writes
         self._last_flush = time.process_time()
-        self._models_kept: set[str] = set()  # digests of the URDFs written or pending
+        self._models_kept: set[str] = set()  # digests of URDFs, descriptions written or pending
 
     def task_started(self, task: Task) -> None:
         """Give the task its id (its run's start order); a new top level starts a run."""
@@ -87,12 +87,17 @@ class Tracer(TaskListener):
         return run
 
     def _keep_models(self, world: World) -> None:
-        """Queue the URDF of each robot not yet written by this tracer (once per content)."""
+        """Queue the URDF of each robot not yet written by this tracer (once per content),
+        and the description of each robot read from a file."""
         for robot in world.robots():
-            row = model_row(robot.description.name, robot.description.model)
-            if row["digest"] not in self._models_kept:
-                self._models_kept.add(row["digest"])
-                self._pending.robot_models.append(row)
+            desc = robot.description
+            rows = [(model_row(desc.name, desc.model), self._pending.robot_models)]
+            if desc.source:
+                rows.append((description_row(desc), self._pending.robot_descriptions))
+            for row, pending in rows:
+                if row["digest"] not in self._models_kept:
+                    self._models_kept.add(row["digest"])
+                    pending.append(row)
 
     def performing(self, task: Task, designator: Any) -> None:
         """Remember the designator; it is written with the task's end. Before a motion, keep

@@ -85,7 +85,7 @@ def audit_run(
     if row.scene is None:
         raise NoSceneStored(run)
     trajectories = run_trajectories(db, run)
-    with build_scene(row.scene, robots=robots) as world:
+    with build_scene(row.scene, robots=robots, db=db) as world:
         audit = _RunAudit(db, run, world, bounds, row.scene)
         for event in _events(db, run, trajectories):
             if isinstance(event, StoredTrajectory):

@@ -18,10 +18,11 @@ from typing import Any
 
 from sqlalchemy.orm import Session
 
-from robocram.robots import DescriptionError
 from robocram.tf import Pose
-from robocram.traces.errors import RobotNotRebuilt, TraceError
-from robocram.traces.robot_model_record import urdf_digest
+from robocram.traces.database import TraceDatabase
+from robocram.traces.errors import TraceError
+from robocram.traces.robot_model_record import description_row, urdf_digest
+from robocram.traces.robot_rebuild import add_traced_robot
 from robocram.traces.schema import WorldStateRow
 from robocram.world import Attachment, MeshSpec, RobotObject, ShapeSpec, UrdfSpec, World
 
@@ -169,6 +170,7 @@ def body_recipe(obj: Any) -> BodyRecipe:
         recipe["urdf_digest"] = urdf_digest(obj.description.model)  # robot_models key
         if obj.description.source:  # a description file or module: the name is not enough
             recipe["source"] = obj.description.source
+            recipe["description_digest"] = description_row(obj.description)["digest"]
     elif isinstance(spec, ShapeSpec):
         recipe["shape"] = {"shape": spec.shape, "size": spec.size, "mass": spec.mass}
         recipe["shape"]["color"] = spec.color
@@ -182,28 +184,38 @@ def body_recipe(obj: Any) -> BodyRecipe:
 
 
 def build_scene(
-    scene: str, world: World | None = None, robots: Mapping[str, str] | None = None
+    scene: str,
+    world: World | None = None,
+    robots: Mapping[str, str] | None = None,
+    db: TraceDatabase | None = None,
 ) -> World:
     """Re-create the bodies of a stored scene (JSON from :func:`scene_of`) in a world.
 
-    A robot described by a file is read from the file it ran with, or from
-    ``robots[description name]`` (a file moved since, or a trace from elsewhere).
+    A robot described by a file is built from ``robots[description name]`` if given, else
+    from the file it ran with, else from ``db``'s copy of it (see
+    :mod:`robocram.traces.robot_rebuild`).
 
     Raises:
-        RobotNotRebuilt: a robot's description file is missing, fails to load, or now
-            describes another URDF than the one that ran.
+        RobotNotRebuilt: a robot's description file is given but fails to load or
+            describes another URDF than the one that ran; or, with no copy in ``db``, the
+            file it ran with is missing, fails or changed.
     """
     world = world if world is not None else World()
     for recipe in json.loads(scene):
-        add_body(world, recipe, robots)
+        add_body(world, recipe, robots, db)
     return world
 
 
-def add_body(world: World, recipe: BodyRecipe, robots: Mapping[str, str] | None = None) -> None:
+def add_body(
+    world: World,
+    recipe: BodyRecipe,
+    robots: Mapping[str, str] | None = None,
+    db: TraceDatabase | None = None,
+) -> None:
     """Add the body of ``recipe`` (from :func:`body_recipe`) to ``world``."""
     name, kind = recipe["name"], recipe["type"]
     if "robot" in recipe:
-        _add_robot(world, recipe, dict(robots or {}))
+        add_traced_robot(world, recipe, dict(robots or {}), db)
     elif "shape" in recipe:
         s = recipe["shape"]
         spec = ShapeSpec(s["shape"], tuple(s["size"]), s["mass"], tuple(s["color"]))
@@ -217,21 +229,3 @@ def add_body(world: World, recipe: BodyRecipe, robots: Mapping[str, str] | None 
         u = recipe["urdf"]
         urdf = UrdfSpec(Path(u["path"]), u["fixed_base"], u["scale"], u["mass"])
         world.add_object(name, kind, urdf)
-
-
-def _add_robot(world: World, recipe: Mapping[str, object], robots: dict[str, str]) -> None:
-    """The recipe's robot, from its built-in name or its description file, as it ran."""
-    robot = str(recipe["robot"])
-    stored = recipe.get("source")
-    source = robots.get(robot) or (str(stored) if stored else None)
-    name = str(recipe["name"])
-    if source is None:
-        world.add_robot(robot, name=name)
-        return
-    try:
-        handle = world.add_robot(source, name=name)
-    except DescriptionError as err:
-        raise RobotNotRebuilt(robot, source, f"does not load ({err})") from err
-    if urdf_digest(handle.description.model) != recipe["urdf_digest"]:
-        world.remove(handle)
-        raise RobotNotRebuilt(robot, source, "now describes another URDF than the one that ran")

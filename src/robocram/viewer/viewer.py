@@ -291,7 +291,7 @@ def replay_viewer(
     row = require_run(db, run)
     if row.scene is None:
         raise NoWorld()
-    with build_scene(row.scene) as world:
+    with build_scene(row.scene, db=db) as world:
         viewer = Viewer(world, host, port, title=f"run {run}: {row.name}")
     viewer.load_run(db, run, period)
     return viewer
