@@ -139,8 +139,10 @@ class ArmPM(RosProcessModule):
         """Put ``arm``'s tool frame at ``target``; return the reached pose in the fixed frame.
         ``base_travel`` bounds how far IK may move the base of an arm that reaches with it.
 
-        ``touching`` (what an ``allow_hand`` hand acts on) is accepted and not used yet:
-        the ROS planner lets the hand touch anything (issue 35, item 4, is projection's).
+        Under ``allow_hand`` the hand may touch ``touching`` (an object or ``object/link``;
+        ``"none"``: any object) no deeper than projection's bound, in the arm's motion and
+        tool line; IK's check lets the hand's links touch, so a goal that puts the hand
+        deeper fails in planning (``ManipulationPathBlocked``), with nothing sent.
 
         Raises:
             ManipulationPoseUnreachable: IK found no (collision-free, with a world) solution.
@@ -163,18 +165,18 @@ class ArmPM(RosProcessModule):
 
             def arm_first() -> None:
                 self._torso(arm, solution, target, collision_mode)
-                self._move(f"arm({arm})", goal, arm, target, collision_mode)
+                self._move(f"arm({arm})", goal, arm, target, collision_mode, touching)
 
             if self._move_base(arm, motion, collision_mode, arm_first):
                 reached = client.frame_pose(spec.tool_frame)
                 return ensure_reached(client.name, arm, reached, target, target_in_map)
         self._torso(arm, solution, target, collision_mode)
         target_in_base = client.base_pose().inverse() * target_in_map
-        line = client.planner().tool_line(arm, target_in_base, collision_mode)
+        line = client.planner().tool_line(arm, target_in_base, collision_mode, touching)
         if line is not None:
             client.follow_trajectory(f"arm({arm})", line, self._failure(arm, target))
         else:
-            self._move(f"arm({arm})", goal, arm, target, collision_mode)
+            self._move(f"arm({arm})", goal, arm, target, collision_mode, touching)
         reached = client.frame_pose(spec.tool_frame)
         return ensure_reached(client.name, arm, reached, target, target_in_map)
 
@@ -193,12 +195,19 @@ class ArmPM(RosProcessModule):
         return {j: joints[j] for j in values}
 
     def _move(
-        self, resource: str, goal: dict[str, float], arm: str, target: object, mode: str
+        self,
+        resource: str,
+        goal: dict[str, float],
+        arm: str,
+        target: object,
+        mode: str,
+        touching: str | None = None,
     ) -> None:
         """Plan the timed motion (in the world, if any) and send it; a blocked path raises
         ``ManipulationPathBlocked`` naming the arm and target before anything is sent."""
+        failure = self._failure(arm, target)
         try:
-            self.client.move_joints(resource, goal, self._failure(arm, target), arm=arm, mode=mode)
+            self.client.move_joints(resource, goal, failure, arm=arm, mode=mode, touching=touching)
         except ManipulationPathBlocked as failure:
             failure.arm = arm
             failure.target = target

@@ -29,7 +29,7 @@ from robocram.motion import (
 from robocram.motion.collision_modes import (
     COLLISION_MODES,
     IKCollisionCheck,
-    allowed_links,
+    hand_bound,
     ik_collision_check,
 )
 from robocram.motion.joint_goal import finite_goal, motion_goal
@@ -122,12 +122,14 @@ class MotionPlanner:
         what: str = "the joints",
         kind: str = "arm",
         plan: bool = True,
+        touching: str | None = None,
     ) -> JointTrajectory:
         """The timed motion of the joints in ``goal`` (within limits) from where they are.
 
         With a world it is checked (and planned round obstacles unless ``plan`` is False:
-        a lift has one way) in the collision mode of the motion; ``arm``'s hand may touch
-        things under ``allow_hand``. The world must show the robot's state now
+        a lift has one way) in the collision mode of the motion; under ``allow_hand``
+        ``arm``'s hand may touch ``touching`` (None or ``"none"``: any object) no deeper
+        than the bound projection keeps (``HandContact``). The world must show the robot's state now
         (``world_mirror.py``). Without a world, ``current`` is the start of a straight
         move. ``kind`` names the motion in the trajectory (``arm``, ``torso``, ``head``).
 
@@ -147,30 +149,27 @@ class MotionPlanner:
         mode = _mode(mode)
         settings = replace(self.settings, check=False) if mode == "allow_all" else self.settings
         settings = settings if plan else replace(settings, plan=False)
-        allowed = allowed_links(self.desc.arms[arm], mode) if arm is not None else set()
+        hand = hand_bound(self.desc.arms[arm], mode, touching) if arm is not None else None
         motion = plan_arm_motion(
             self.robot,
             {j: float(goal[j]) for j in joints},
-            allowed_links=allowed,
             settings=settings,
             what=what,
             kind=kind,
+            hand=hand,
         )
         return motion.trajectory
 
-    def tool_line(self, arm: str, target_in_base: Pose, mode: str) -> JointTrajectory | None:
+    def tool_line(
+        self, arm: str, target_in_base: Pose, mode: str, touching: str | None = None
+    ) -> JointTrajectory | None:
         """The arm's straight tool line to ``target_in_base`` if the world lets it all be
-        followed (``allow_hand`` motions: approach, lift, retreat), else None."""
+        followed (``allow_hand`` motions: approach, lift, retreat), else None; the hand
+        may touch ``touching`` within its bound, as in :meth:`joint_motion`."""
         if self.robot is None or _mode(mode) != "allow_hand":
             return None
-        allowed: Collection[str] = allowed_links(self.desc.arms[arm], "allow_hand")
-        line = plan_tool_line(
-            self.robot,
-            arm,
-            target_in_base,
-            allowed_links=allowed,
-            settings=self.settings,
-        )
+        hand = hand_bound(self.desc.arms[arm], "allow_hand", touching)
+        line = plan_tool_line(self.robot, arm, target_in_base, settings=self.settings, hand=hand)
         return line.trajectory if line.fraction >= 1.0 else None
 
     def base_path(self, goal_in_map: Pose, allowed_links: Collection[str] = ()) -> BasePath | None:

@@ -197,8 +197,10 @@ class RosRobotClient:
         *,
         arm: str | None = None,
         mode: str = "avoid_all",
+        touching: str | None = None,
     ) -> JointTrajectory:
-        """Move the joints of ``goal`` [rad | m] there by a timed trajectory on ``resource``.
+        """Move the joints of ``goal`` [rad | m] there by a timed trajectory on ``resource``;
+        under ``allow_hand`` the hand may touch ``touching`` within its bound.
 
         The trajectory is planned by :class:`MotionPlanner` (checked in the world if one
         was given; the torso's straight only, as in projection) and named by the
@@ -219,7 +221,7 @@ class RosRobotClient:
         what = f"{self.name}'s {arm} arm" if arm is not None else f"{self.name}'s {resource}"
         trajectory = self.planner().joint_motion(
             clamped.goal, current, arm=arm, mode=mode, what=what,
-            kind=RESOURCE_KINDS.get(resource, "arm"), plan=resource != "torso",
+            kind=RESOURCE_KINDS.get(resource, "arm"), plan=resource != "torso", touching=touching,
         )  # fmt: skip
         self.follow_trajectory(resource, trajectory, failure)
         if clamped.culprits:
