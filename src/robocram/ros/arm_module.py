@@ -133,7 +133,7 @@ class ArmPM(RosProcessModule):
         arm: str,
         target: PoseStamped | Any,
         collision_mode: str = "avoid_all",
-        touching: str = "none",
+        touching: str | None = "none",
         base_travel: PlanarBase = BASE_TRAVEL,
     ) -> Pose:
         """Put ``arm``'s tool frame at ``target``; return the reached pose in the fixed frame.
@@ -141,8 +141,9 @@ class ArmPM(RosProcessModule):
 
         Under ``allow_hand`` the hand may touch ``touching`` (an object or ``object/link``;
         ``"none"``: any object) no deeper than projection's bound, in the arm's motion and
-        tool line; IK's check lets the hand's links touch, so a goal that puts the hand
-        deeper fails in planning (``ManipulationPathBlocked``), with nothing sent.
+        tool line (None: anything, unbounded, as articulations over ROS still ask); IK's
+        check lets the hand's links touch, so a goal that puts the hand deeper fails in
+        planning (``ManipulationPathBlocked``), with nothing sent.
 
         Raises:
             ManipulationPoseUnreachable: IK found no (collision-free, with a world) solution.

@@ -29,6 +29,7 @@ from robocram.motion import (
 from robocram.motion.collision_modes import (
     COLLISION_MODES,
     IKCollisionCheck,
+    allowed_links,
     hand_bound,
     ik_collision_check,
 )
@@ -128,10 +129,11 @@ class MotionPlanner:
 
         With a world it is checked (and planned round obstacles unless ``plan`` is False:
         a lift has one way) in the collision mode of the motion; under ``allow_hand``
-        ``arm``'s hand may touch ``touching`` (None or ``"none"``: any object) no deeper
-        than the bound projection keeps (``HandContact``). The world must show the robot's state now
-        (``world_mirror.py``). Without a world, ``current`` is the start of a straight
-        move. ``kind`` names the motion in the trajectory (``arm``, ``torso``, ``head``).
+        ``arm``'s hand may touch ``touching`` (``"none"``: any object) no deeper than the
+        bound projection keeps (``HandContact``); None: its links touch anything,
+        unbounded. The world must show the robot's state now (``world_mirror.py``).
+        Without a world, ``current`` is the start of a straight move. ``kind`` names the
+        motion in the trajectory (``arm``, ``torso``, ``head``).
 
         Raises:
             ManipulationPathBlocked: the world blocks every way there (nothing was sent).
@@ -149,10 +151,13 @@ class MotionPlanner:
         mode = _mode(mode)
         settings = replace(self.settings, check=False) if mode == "allow_all" else self.settings
         settings = settings if plan else replace(settings, plan=False)
-        hand = hand_bound(self.desc.arms[arm], mode, touching) if arm is not None else None
+        spec = self.desc.arms[arm] if arm is not None else None
+        hand = hand_bound(spec, mode, touching) if spec and touching is not None else None
+        unbounded = allowed_links(spec, mode) if spec and touching is None else set()
         motion = plan_arm_motion(
             self.robot,
             {j: float(goal[j]) for j in joints},
+            allowed_links=unbounded,
             settings=settings,
             what=what,
             kind=kind,
@@ -165,11 +170,20 @@ class MotionPlanner:
     ) -> JointTrajectory | None:
         """The arm's straight tool line to ``target_in_base`` if the world lets it all be
         followed (``allow_hand`` motions: approach, lift, retreat), else None; the hand
-        may touch ``touching`` within its bound, as in :meth:`joint_motion`."""
+        may touch ``touching`` as in :meth:`joint_motion`."""
         if self.robot is None or _mode(mode) != "allow_hand":
             return None
-        hand = hand_bound(self.desc.arms[arm], "allow_hand", touching)
-        line = plan_tool_line(self.robot, arm, target_in_base, settings=self.settings, hand=hand)
+        spec = self.desc.arms[arm]
+        hand = hand_bound(spec, "allow_hand", touching) if touching is not None else None
+        unbounded = allowed_links(spec, "allow_hand") if touching is None else set()
+        line = plan_tool_line(
+            self.robot,
+            arm,
+            target_in_base,
+            allowed_links=unbounded,
+            settings=self.settings,
+            hand=hand,
+        )
         return line.trajectory if line.fraction >= 1.0 else None
 
     def base_path(self, goal_in_map: Pose, allowed_links: Collection[str] = ()) -> BasePath | None:

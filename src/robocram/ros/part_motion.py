@@ -49,6 +49,8 @@ _RANDOM_SEED = IKOptions(random_seed=IK_RANDOM_SEED)  # following the handle, ar
 _TORSO = IKOptions(use_torso=True)  # a torso height from which the arm reaches
 REACHING = (ManipulationPoseUnreachable, ManipulationPathBlocked, ManipulationGoalNotReached)
 DRIVING = (NavigationPathBlocked, NavigationPoseUnreachable, NavigationGoalNotReached)
+HANDLE = None  # what the hand touches at a handle: anything, unbounded (projection bounds it;
+# over ROS the PR2's approach onto a drawer's handle grazes it deeper, see docs/motion.md)
 STEP_TRAVEL = PlanarBase(0.15, 0.15, 0.5)  # [m, m, rad] the base's move per step, as projection
 
 
@@ -60,7 +62,7 @@ class ToolMover(Protocol):
         arm: str,
         target: Pose,
         collision_mode: str = "avoid_all",
-        touching: str = "none",
+        touching: str | None = "none",
         base_travel: PlanarBase = ...,
     ) -> Pose: ...
 
@@ -128,13 +130,13 @@ def _with_grasp(
         return "no torso height lets the arm follow the handle"
     try:
         _raise_torso(client, torso)
-        _take_handle(client, tools, arm, world.link_pose(part, handle), grasp, f"{part}/{handle}")
+        _take_handle(client, tools, arm, world.link_pose(part, handle), grasp)
     except REACHING as failure:
         return str(failure)
     path = _follow_path(client, world, arm, moving, grasp, goal)
     if path is not None:
         client.follow_trajectory(f"arm({arm})", path, _failure(arm, handle))
-    _let_go(client, tools, arm, world.link_pose(part, handle), grasp, f"{part}/{handle}")
+    _let_go(client, tools, arm, world.link_pose(part, handle), grasp)
     return None if path is not None else "the arm cannot keep the tool on the handle"
 
 
@@ -155,7 +157,7 @@ def _with_base_steps(
     world = _world(client, part, joint, goal)
     values = part_path(world, part, joint, handle, goal)
     try:
-        _take_handle(client, tools, arm, world.link_pose(part, handle), grasp, f"{part}/{handle}")
+        _take_handle(client, tools, arm, world.link_pose(part, handle), grasp)
     except (*REACHING, *DRIVING) as failure:
         return str(failure)
     why = None
@@ -165,10 +167,10 @@ def _with_base_steps(
             world.set_joint_states(part, {joint: value})
             target = world.link_pose(part, handle) * grasp
             world.set_joint_states(part, {joint: start})
-            tools.move_tcp(arm, target, "allow_hand", f"{part}/{handle}", base_travel=STEP_TRAVEL)
+            tools.move_tcp(arm, target, "allow_hand", HANDLE, base_travel=STEP_TRAVEL)
     except (*REACHING, *DRIVING) as failure:
         why = f"the arm and base cannot keep the tool on the handle: {failure}"
-    _let_go(client, tools, arm, world.link_pose(part, handle), grasp, f"{part}/{handle}")
+    _let_go(client, tools, arm, world.link_pose(part, handle), grasp)
     return why
 
 
@@ -190,19 +192,16 @@ def _world(client: RosRobotClient, part: str, joint: str, goal: float) -> World:
 
 
 def _take_handle(
-    client: RosRobotClient, tools: ToolMover, arm: str, handle: Pose, grasp: Pose, touching: str
+    client: RosRobotClient, tools: ToolMover, arm: str, handle: Pose, grasp: Pose
 ) -> None:
-    """Open the gripper, come from the front onto the handle (``touching``: ``part/link``),
-    close the gripper."""
+    """Open the gripper, come from the front onto the handle, close the gripper."""
     move_gripper(client, arm, "open", None)
     tools.move_tcp(arm, handle * Pose((PRE_GRASP, 0.0, 0.0)) * grasp, "avoid_all")
-    tools.move_tcp(arm, handle * grasp, "allow_hand", touching)
+    tools.move_tcp(arm, handle * grasp, "allow_hand", HANDLE)
     move_gripper(client, arm, "close", None)
 
 
-def _let_go(
-    client: RosRobotClient, tools: ToolMover, arm: str, handle: Pose, grasp: Pose, touching: str
-) -> None:
+def _let_go(client: RosRobotClient, tools: ToolMover, arm: str, handle: Pose, grasp: Pose) -> None:
     """Open the gripper and back the tool off the handle (as far as there is room).
 
     Fingers that cannot open at the handle (a drawer shut under a counter's top) open
@@ -212,7 +211,7 @@ def _let_go(
     opened = _opened(client, arm)
     for distance in BACK_OFF:
         try:
-            tools.move_tcp(arm, handle * Pose((distance, 0.0, 0.0)) * grasp, "allow_hand", touching)
+            tools.move_tcp(arm, handle * Pose((distance, 0.0, 0.0)) * grasp, "allow_hand", HANDLE)
             break
         except (*REACHING, *DRIVING):
             continue
