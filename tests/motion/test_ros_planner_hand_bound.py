@@ -1,5 +1,6 @@
 """The ROS planner bounds the hand as projection does (issue 35: it let the hand touch
-anything under ``allow_hand``). Planned without ROS (``MotionPlanner`` takes a world), so it runs outside the ROS group.
+anything under ``allow_hand``). Planned without ROS (``MotionPlanner`` takes a world),
+so it runs outside the ROS group.
 
 The judge is raw PyBullet: the deepest contact between the hand and the mug at the goal
 (``getClosestPoints``), against the 5 mm the bound allows.
