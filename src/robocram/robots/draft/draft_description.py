@@ -33,7 +33,7 @@ from robocram.robots.draft.cameras import (
     likely_camera_link,
 )
 from robocram.robots.draft.draft_source import draft_source
-from robocram.robots.draft.hands import find_hands
+from robocram.robots.draft.hands import find_fixed_hands, find_hands
 from robocram.robots.draft.link_poses import within_limits
 from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.draft.parking import neck_pose
@@ -104,7 +104,7 @@ def draft_description(
     tree = ModelTree(model)
     drive = find_base_drive(tree)
     _note(why, doubts, "base_type", drive.why, drive.doubt)
-    hands = find_hands(tree)
+    hands = find_hands(tree) or find_fixed_hands(tree)
     guessed = camera is None and not camera_frames(tree, [h.end_effector_link for h in hands])
     if guessed:  # as `--camera LINK` with the link the check would name
         camera = likely_camera_link(tree, [h.end_effector_link for h in hands])
