@@ -4,9 +4,10 @@ Two driven wheels on one axle (their joints turn about one horizontal line, both
 the body) can only drive forward, backward and turn: a differential base (Stretch, the
 Fetch, TIAGo). Wheels on steering joints (the PR2's casters, the HSR's turning drive unit)
 or four fixed wheels (mecanum, TIAGo Pro's) drive any way: holonomic. A lone arm is
-fixed: a root link called ``world`` (the URDF bolts it there), or one chain of joints with
-no wheels on a mount no wider than :data:`MOUNT` (a Kinova, an xArm). Any other URDF with
-no wheels says nothing; the draft keeps the holonomic default and marks the doubt.
+fixed: a root link called ``world`` (the URDF bolts it there; unless a link is named like
+a mobile base, as Armar6's platform), or one chain of joints with no wheels on a mount no
+wider than :data:`MOUNT` (a Kinova, an SO-100). Any other URDF with no wheels says
+nothing; the draft keeps the holonomic default and marks the doubt.
 """
 
 from __future__ import annotations
@@ -28,6 +29,8 @@ COAXIAL = 0.01  # [m] two wheel origins this close to one axis line share the ax
 MIN_TRACK = 0.1  # [m] between the wheels of one axle
 LOW = 0.3  # [m] a wheel's axle is at most this high over the lowest link (the floor)
 MOUNT = 0.3  # [m] a lone arm's root is no wider than this: an arm's mount, not a platform
+MOBILE_WORDS = ("platform", "mobile", "omni", "wheel", "caster", "footprint")  # a link so
+# named is a mobile base, even under a root called 'world' (Armar6's platform)
 
 
 @dataclass(frozen=True)
@@ -129,10 +132,12 @@ def find_base_drive(tree: ModelTree) -> BaseDrive:
 
 def _lone_arm(tree: ModelTree, body: set[str]) -> str | None:
     """Why the robot is an arm fixed where it stands, or None: its root link is called
-    ``world``, or its movable joints form one chain from a mount no wider than
-    :data:`MOUNT` (a platform under it would be a mobile base the URDF does not drive)."""
+    ``world`` (and no link is named like a mobile base), or its movable joints form one
+    chain from a mount no wider than :data:`MOUNT` (a platform under it would be a mobile
+    base the URDF does not drive)."""
     model = tree.model
-    if model.root_link.lower() == "world":
+    mobile = [k for k in model.links if any(w in k.lower() for w in MOBILE_WORDS)]
+    if model.root_link.lower() == "world" and not mobile:
         return "the URDF's root link is 'world': the robot is fixed to it"
     movable = [j for j in model.joints.values() if j.movable]
     leaves = [j for j in movable if not any(k.movable for k in tree.subtree_joints(j.child))]

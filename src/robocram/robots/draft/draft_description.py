@@ -119,8 +119,14 @@ def draft_description(
     if trunk.joint is not None and trunk.joint != torso.joint:
         cut = trunk.joint
         trunk_why = f"; below the trunk that turns them all ({', '.join(trunk.joints)})"
+    arms_cut = cut
+    waist = find_trunk(tree, [h.end_effector_link for h in hands])
+    if trunk.joint is None and waist.joint is not None and waist.joint != torso.joint:
+        arms_cut = waist.joint  # a waist turning the arms and the head (Centauro's): the
+        # arms share it, so each arm's parking would set it otherwise; the head pans with it
+        trunk_why = f"; below the waist that turns both ({', '.join(waist.joints)})"
     for hand, arm_name in zip(hands, names, strict=True):
-        drafted = draft_arm(tree, hand, arm_name, cut)
+        drafted = draft_arm(tree, hand, arm_name, arms_cut)
         arms[arm_name] = drafted.arm
         roles = _roles(model, drafted.arm, telescopes)
         if roles:
