@@ -26,6 +26,7 @@ from robocram.robots import (
 )
 from robocram.scenes import UnfitRobotError, kitchen_scene, tabletop_scene
 from robocram.tf import Pose
+from robocram.traces import TraceDatabase, audit_runs, trace_to
 
 pytestmark = pytest.mark.filterwarnings("ignore::robocram.robots.DescriptionWarning")
 
@@ -120,10 +121,10 @@ def test_a_tool_frame_inside_the_hand_fails_the_check_in_one_line(
     assert "tool frame on the tip of the hand" in grip.fix
 
 
-def test_the_tabletop_pick_up_lifts_the_mug_touching_its_top(module: Path) -> None:
+def test_the_tabletop_pick_up_lifts_the_mug_touching_its_top(module: Path, tmp_path: Path) -> None:
     """Checked with raw PyBullet: the mug rose by the lift, and the hand touches it, no
-    more than the hand's 5 mm bound in. (Looking needs a neck, which a bare arm lacks: the
-    pick-up starts at the grasp.)"""
+    more than the hand's 5 mm bound in; the trajectory audit finds nothing. (Looking needs
+    a neck, which a bare arm lacks: the pick-up starts at the grasp.)"""
     scene = tabletop_scene(str(module))
     world = scene.world
     try:
@@ -131,7 +132,7 @@ def test_the_tabletop_pick_up_lifts_the_mug_touching_its_top(module: Path) -> No
         mug = world.object("mug-1").body_id
         robot = world.object(scene.robot).body_id
         before = pybullet.getBasePositionAndOrientation(mug, physicsClientId=client)[0][2]
-        with simulated_robot(world, scene.robot):
+        with trace_to(tmp_path / "pick.db", world=world), simulated_robot(world, scene.robot):
             park_arms()
             held = pick_up_object("mug-1")
         after = pybullet.getBasePositionAndOrientation(mug, physicsClientId=client)[0][2]
@@ -141,6 +142,9 @@ def test_the_tabletop_pick_up_lifts_the_mug_touching_its_top(module: Path) -> No
     assert held.grasp == "top"
     assert after - before == pytest.approx(0.10, abs=0.005)
     assert gaps and -0.005 <= min(gaps) <= 0.005
+    with TraceDatabase(tmp_path / "pick.db") as db:
+        report = audit_runs(db)
+    assert not report.findings, report.summary_lines()
 
 
 def test_the_kitchen_refuses_a_fixed_base_in_one_line(described: RobotDescription) -> None:
