@@ -6,17 +6,19 @@ the hand touches (within :data:`SEAL`), the one touched nearest the tool frame (
 put the tool frame on its surface; PyBullet reports one point of a flat contact, maybe
 at its edge, so the touch is not required at the tool frame's origin). Touching
 nothing, gripping fails with ``GripperClosedCompletely`` as a gripper closing on nothing
-does.
+does. A handle is held on its front face (:func:`on_the_face`), not round its bar.
 """
 
 from __future__ import annotations
 
+import itertools
 import math
 
 from robocram.execution.failures import GripperClosedCompletely
 from robocram.motion.hand_contact import HAND_CONTACT_DEPTH
 from robocram.projection.projected_robot import ProjectedRobot
-from robocram.tf import Vector3
+from robocram.tf import Pose, Vector3
+from robocram.tf import quaternion as quat
 from robocram.world import WorldObject
 
 SEAL = HAND_CONTACT_DEPTH  # [m] the hand this near an object (or this deep in it) holds it
@@ -70,3 +72,19 @@ def suction_grip(robot: ProjectedRobot, arm: str) -> str:
         )
     robot.world.attach(obj, robot.name, spec.end_effector_link)
     return obj.name
+
+
+def on_the_face(robot: ProjectedRobot, part: str, handle: str, pull: Pose) -> Pose:
+    """``pull`` (the frame a hand holds ``handle`` of ``part`` in, x out of the front)
+    moved out to the handle's front face: a suction hand holds the face it touches, where
+    fingers close round the bar (:mod:`~robocram.projection.articulation`)."""
+    world = robot.world
+    frame = world.link_pose(part, handle) * pull
+    low, high = world.contacts.link_aabb(part, handle)
+    out = quat.rotate(frame.orientation, (1.0, 0.0, 0.0))
+    corners = itertools.product(*zip(low, high, strict=True))
+    front = max(
+        sum((c - o) * a for c, o, a in zip(corner, frame.position, out, strict=True))
+        for corner in corners
+    )
+    return pull * Pose((max(front, 0.0), 0.0, 0.0))
