@@ -26,10 +26,9 @@ def description() -> RobotDescription:
         urdf=URDF,
         # why: the URDF's root link: the robot's base
         base_frame="base_link",
-        # why: no driven wheels in the URDF: the default
-        # TODO doubt: holonomic assumed; say 'differential' for two wheels on one axle, 'fixed' for
-        #   a base that stays
-        base_type="holonomic",
+        # why: one chain of 6 joints on a 0.11 m mount, no wheels: a lone arm
+        # TODO doubt: say 'holonomic' (or 'differential') if the arm rides on a mobile base
+        base_type="fixed",
         # why: one gripper-like end
         arms={
             "arm": ArmDescription(

@@ -28,10 +28,9 @@ def description() -> RobotDescription:
         urdf=URDF,
         # why: the URDF's root link: the robot's base
         base_frame="world",
-        # why: no driven wheels in the URDF: the default
-        # TODO doubt: holonomic assumed; say 'differential' for two wheels on one axle, 'fixed' for
-        #   a base that stays
-        base_type="holonomic",
+        # why: the URDF's root link is 'world': the robot is fixed to it
+        # TODO doubt: say 'holonomic' (or 'differential') if the arm rides on a mobile base
+        base_type="fixed",
         # why: one gripper-like end
         arms={
             "arm": ArmDescription(

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 
 class GraspingError(Exception):
     """Root of the grasp model's errors."""
@@ -34,3 +36,19 @@ class UnknownGraspError(GraspingError, ValueError):
         self.name = name
         self.known = known
         super().__init__(f"unknown grasp {name!r}; grasps: {', '.join(known)}")
+
+
+class ObjectUntouchable(ObjectUngraspable):
+    """No face of the object a suction hand may touch from above among the grasps allowed."""
+
+    def __init__(self, object: str, allowed: tuple[str, ...]) -> None:  # noqa: A002
+        self.object = object
+        self.hand_width = 0.0
+        self.needed_width = math.inf
+        self.allowed = allowed
+        GraspingError.__init__(
+            self,
+            f"a suction hand holds {object!r} only from above (top, or rim if hollow), and "
+            f"its grasps allow {', '.join(allowed) or 'none'}: allow 'top' or 'rim' "
+            "(object_grasps/2), or use a hand with fingers",
+        )

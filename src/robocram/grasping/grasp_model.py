@@ -16,22 +16,23 @@ Grasps (CRAM's names), in the object's frame (x forward, z up):
 
 Each needs its width plus :data:`CLEARANCE`; a grasp needing more than the hand opens is
 not offered, and when none is left :class:`ObjectUngraspable` names both widths.
+
+A suction hand (``Hand.suction``) closes on nothing: it touches. Its grasps come from above
+onto a face (``suction_grasps.py``): ``top`` puts the tool frame on the top face over the
+body's axis, ``rim`` on a hollow object's rim; it needs no opening.
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Iterator, Sequence
-from functools import lru_cache
-
-import numpy as np
 
 from robocram.grasping.errors import ObjectUngraspable, UnknownGraspError
 from robocram.grasping.grasp import Grasp
-from robocram.grasping.hand import Hand
+from robocram.grasping.hand import Hand, tool_orientation
 from robocram.grasping.object_shape import ObjectShape
+from robocram.grasping.suction_grasps import touching_grasps
 from robocram.tf import Pose, Vector3
-from robocram.tf import quaternion as quat
 
 GRASP_NAMES = ("top", "front", "left", "right", "rim", "handle")
 CLEARANCE = 0.002  # [m] added to an object's width: the hand must open this much wider
@@ -45,22 +46,6 @@ LIFT = 0.10  # [m] the object is lifted this far
 HANDLE_MARGIN = 0.005  # [m] the box sticking out this far past the body is a handle
 DOWN: Vector3 = (0.0, 0.0, -1.0)
 SIDES: tuple[Vector3, ...] = ((1.0, 0.0, 0.0), (-1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, -1.0, 0.0))
-
-
-def _cross(a: Vector3, b: Vector3) -> Vector3:
-    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
-
-
-@lru_cache(maxsize=64)
-def _hand_axes(hand: Hand) -> np.ndarray:
-    """The hand's approach, opening and third axis as the columns of a matrix."""
-    return np.column_stack([hand.approach, hand.opening, _cross(hand.approach, hand.opening)])
-
-
-def tool_orientation(hand: Hand, approach: Vector3, opening: Vector3) -> quat.Quaternion:
-    """Tool orientation putting the hand's approach and opening axes onto the given ones."""
-    grasp_axes = np.column_stack([approach, opening, _cross(approach, opening)])
-    return quat.from_matrix(grasp_axes @ _hand_axes(hand).T)
 
 
 def _grasp(
@@ -174,6 +159,8 @@ def grasps(shape: ObjectShape, hand: Hand, names: Sequence[str] = GRASP_NAMES) -
         ObjectUngraspable: none of them fits the hand (the error names both widths).
         UnknownGraspError: a name is not one of :data:`GRASP_NAMES`.
     """
+    if hand.suction:
+        return touching_grasps(shape, hand, names)
     every = [g for name in names for g in _of_name(shape, hand, name)]
     fitting = [g for g in every if g.opening <= hand.max_opening]
     if not fitting:

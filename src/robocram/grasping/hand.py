@@ -3,12 +3,15 @@
 The axes are read from the robot's kinematics, not assumed: the approach axis runs from
 the wrist (the arm's end-effector link) to the tool frame, the opening axis joins the two
 fingers farthest apart with the gripper open (made perpendicular to the approach). Our
-convention (x approach, y opening) is what every built-in robot gives.
+convention (x approach, y opening) is what every built-in robot gives. A suction hand
+(``GripperDescription.suction()``) has no opening: it holds what its tool frame touches,
+so it opens to no width and fits any object it can touch from above.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 from itertools import combinations
 
 import numpy as np
@@ -17,6 +20,7 @@ from robocram.grasping.errors import GraspingError
 from robocram.kinematics import forward_kinematics
 from robocram.logic.lru import LRUCache
 from robocram.robots import RobotDescription, RobotModel
+from robocram.tf import quaternion as quat
 
 FINGER_DEPTH = 0.06  # [m] how far past an object's edge the fingertips may reach
 Axis = tuple[float, float, float]
@@ -24,12 +28,14 @@ Axis = tuple[float, float, float]
 
 @dataclass(frozen=True)
 class Hand:
-    """Approach and opening axes (unit, tool frame), widest opening and finger depth [m]."""
+    """Approach and opening axes (unit, tool frame), widest opening and finger depth [m];
+    ``suction``: it holds by touching (no fingers; ``max_opening`` is then infinite)."""
 
     approach: Axis = (1.0, 0.0, 0.0)
     opening: Axis = (0.0, 1.0, 0.0)
     max_opening: float = 0.1
     finger_depth: float = FINGER_DEPTH
+    suction: bool = False
 
 
 def _unit(v: np.ndarray, fallback: Axis) -> Axis:
@@ -42,7 +48,7 @@ def _unit(v: np.ndarray, fallback: Axis) -> Axis:
 
 def _opening_axis(desc: RobotDescription, arm: str, approach: np.ndarray) -> Axis:
     spec = desc.arms[arm]
-    if spec.gripper is None or len(spec.gripper_links) < 2:
+    if spec.gripper is None or spec.gripper.is_suction or len(spec.gripper_links) < 2:
         return _unit(np.cross(approach, (0.0, 0.0, 1.0)), (0.0, 1.0, 0.0))
     tool = forward_kinematics(desc, {}, spec.tool_frame).inverse()
     opened = spec.gripper.at(1.0)
@@ -57,11 +63,30 @@ def _opening_axis(desc: RobotDescription, arm: str, approach: np.ndarray) -> Axi
 
 
 def approach_axis(desc: RobotDescription, arm: str) -> Axis:
-    """The unit approach axis of ``arm``'s tool (tool frame): from the wrist to the tool."""
+    """The unit approach axis of ``arm``'s tool (tool frame): from the wrist to the tool
+    (a suction hand's tool frame on the wrist's own origin, a bare flange: its x)."""
     spec = desc.arms[arm]
     tool = forward_kinematics(desc, {}, spec.tool_frame)
     wrist = forward_kinematics(desc, {}, spec.end_effector_link)
-    return _unit(-np.asarray((tool.inverse() * wrist).position), (0.0, 0.0, 1.0))
+    suction = spec.gripper is not None and spec.gripper.is_suction
+    fallback = (1.0, 0.0, 0.0) if suction else (0.0, 0.0, 1.0)  # a flange's face: on the wrist
+    return _unit(-np.asarray((tool.inverse() * wrist).position), fallback)
+
+
+def _cross(a: Axis, b: Axis) -> Axis:
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+@lru_cache(maxsize=64)
+def _hand_axes(hand: Hand) -> np.ndarray:
+    """The hand's approach, opening and third axis as the columns of a matrix."""
+    return np.column_stack([hand.approach, hand.opening, _cross(hand.approach, hand.opening)])
+
+
+def tool_orientation(hand: Hand, approach: Axis, opening: Axis) -> quat.Quaternion:
+    """Tool orientation putting the hand's approach and opening axes onto the given ones."""
+    grasp_axes = np.column_stack([approach, opening, _cross(approach, opening)])
+    return quat.from_matrix(grasp_axes @ _hand_axes(hand).T)
 
 
 HANDS_KEPT = 16  # descriptions' hands kept per model (one description per world's robot)
@@ -103,6 +128,11 @@ def _read_hand(desc: RobotDescription, arm: str) -> Hand:
     spec = desc.arms.get(arm)
     if spec is None:
         raise GraspingError(f"{desc.name} has no arm {arm!r}; arms: {sorted(desc.arms)}")
+    if spec.gripper is not None and spec.gripper.is_suction:
+        approach = np.asarray(approach_axis(desc, arm))
+        opening = _unit(np.cross(approach, (0.0, 0.0, 1.0)), (0.0, 1.0, 0.0))
+        axis = (float(approach[0]), float(approach[1]), float(approach[2]))
+        return Hand(axis, opening, float("inf"), 0.0, suction=True)
     if spec.gripper is None or spec.gripper.max_opening is None:
         raise GraspingError(
             f"arm {arm!r} of {desc.name} has no gripper with a known max_opening; give its "

@@ -108,6 +108,10 @@ def _obj_parts(file: Path) -> list[NDArray[np.float64]]:
 def _hull(points: NDArray[np.float64], path: str) -> coal.ConvexBase:
     try:
         return coal.Convex.convexHull(_vec3s(points), False, "Qt")
+    except Exception:  # noqa: BLE001 - triangulated, a vertex may get too many neighbours
+        pass  # (Centauro's pelvis): joggled, qhull gives a hull coal takes
+    try:
+        return coal.Convex.convexHull(_vec3s(points), False, "QJ")
     except Exception as err:  # qhull refuses flat or degenerate point sets
         raise MotionError(f"no convex hull of a part of mesh {path}: {err}") from err
 

@@ -44,6 +44,7 @@ from robocram.projection.gripper import close_gripper, open_gripper
 from robocram.projection.joint_motion import move_along_checked
 from robocram.projection.navigation import drive, place_base
 from robocram.projection.projected_robot import ProjectedRobot
+from robocram.projection.suction import on_the_face
 from robocram.tf import Pose
 
 LET_GO_RESTARTS = 8  # IK restarts per backing-off try: it is best effort
@@ -73,6 +74,8 @@ def approach_axis(robot: ProjectedRobot, arm: str) -> np.ndarray:
     tool = forward_kinematics(robot.description, {}, spec.tool_frame)
     axis = -np.asarray((tool.inverse() * wrist).position, float)
     norm = float(np.linalg.norm(axis))
+    if norm < 1e-6 and spec.gripper is not None and spec.gripper.is_suction:
+        return np.array((1.0, 0.0, 0.0))  # a bare flange holds with its face: the tool's x
     if norm < 1e-6:
         raise ProjectionError(
             f"{robot.name}'s {arm} tool frame sits on its wrist; give the arm a tool frame "
@@ -261,6 +264,9 @@ def move_part(
     start = world.joint_states(part)[joint]
     axis = approach_axis(robot, arm)
     pull = pull_frame(world, part, joint, handle)
+    gripper = robot.arm(arm).gripper
+    if gripper is not None and gripper.is_suction:
+        pull = on_the_face(robot, part, handle, pull)
     first = _RobotAt.now(robot)
     riders = resting_in(robot, part, moving_link(robot, part, joint))
     for name in riders:

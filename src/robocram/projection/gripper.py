@@ -19,7 +19,8 @@ squeezes only movable objects and attaches the one squeezed to the arm's end-eff
 link; with none squeezed, the fingers close as closing does and
 ``GripperClosedCompletely`` is raised, as in CRAM. Closing without gripping
 closes fully, or, when something is in the way, stops where the fingers squeeze it or
-first touch it (a handle's face), and attaches nothing.
+first touch it (a handle's face), and attaches nothing. A suction hand (no fingers) only
+releases, moves nothing and holds what its tool frame touches (``suction.py``).
 """
 
 from __future__ import annotations
@@ -39,6 +40,7 @@ from robocram.motion.hand_contact import HAND_CONTACT_DEPTH, HandContact
 from robocram.projection.errors import ProjectionError
 from robocram.projection.joint_motion import move_along_checked
 from robocram.projection.projected_robot import ProjectedRobot
+from robocram.projection.suction import suction_grip
 from robocram.robots import ArmDescription, GripperDescription
 from robocram.tf import Vector3
 from robocram.world import WorldObject
@@ -127,7 +129,7 @@ def open_gripper(robot: ProjectedRobot, arm: str) -> dict[str, float]:
     Raises:
         GripperPathBlocked: the fingers cannot open; they did not move and hold on.
     """
-    reached = _move_to(robot, arm, 1.0)
+    reached = {} if gripper_of(robot, arm).is_suction else _move_to(robot, arm, 1.0)
     release(robot, arm)
     return reached
 
@@ -139,6 +141,8 @@ def close_gripper(robot: ProjectedRobot, arm: str) -> dict[str, float]:
     Raises:
         GripperPathBlocked: the fingers meet it at once (no closing is free).
     """
+    if gripper_of(robot, arm).is_suction:
+        return {}  # no finger to move
     try:  # mostly nothing is in the way: one checked motion, no probing
         return _move_to(robot, arm, 0.0)
     except GripperPathBlocked as blocked:
@@ -172,6 +176,8 @@ def set_gripper(robot: ProjectedRobot, arm: str, position: float) -> dict[str, f
         GripperPathBlocked: the fingers' way runs into something; they did not move.
     """
     gripper = gripper_of(robot, arm)
+    if gripper.is_suction:
+        return {}  # no finger to set
     fraction = gripper.fraction_of(float(position))
     reached = _move_to(robot, arm, min(max(fraction, 0.0), 1.0))
     if not 0.0 <= fraction <= 1.0:
@@ -342,6 +348,8 @@ def grip(robot: ProjectedRobot, arm: str) -> str:
             (fully, or onto what does not move, as :func:`close_gripper` does).
         GripperPathBlocked: the fingers' way runs into something else; they did not move.
     """
+    if gripper_of(robot, arm).is_suction:
+        return suction_grip(robot, arm)
     links = _squeezing_links(robot, arm)
     near = _near_hand(robot, links)
     depths = {obj.name: _depths(robot, links, obj) for obj in near}

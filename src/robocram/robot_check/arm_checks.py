@@ -3,7 +3,8 @@
 The reach goes to a point ahead of the shoulder along the arm's working direction
 (straight ahead, or sideways for an arm such as Stretch's), tool pointing down as the
 pick-up plan holds it; a small box then appears between the fingers and the gripper must
-close on it, which fails if the tool frame is not between the fingertips.
+close on it, which fails if the tool frame is not between the fingertips. A suction hand
+touches a mug's top instead (``suction_checks.py``).
 """
 
 from __future__ import annotations
@@ -26,6 +27,7 @@ from robocram.projection.gripper import (
 )
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robot_check.report_card import CheckResult
+from robocram.robot_check.suction_checks import suction_grip
 from robocram.robots import ArmDescription
 from robocram.robots.arm_envelope import arm_reach, working_yaw
 from robocram.robots.arm_slice import slice_advice
@@ -87,7 +89,12 @@ def tool_frame(robot: ProjectedRobot, key: str, arm: ArmDescription) -> CheckRes
     wrist = robot.world.link_pose(robot.name, arm.end_effector_link)
     tool = robot.world.link_pose(robot.name, arm.tool_frame)
     out = np.subtract(tool.position, wrist.position)
-    if np.linalg.norm(out) < 0.02:
+    suction = arm.gripper is not None and arm.gripper.is_suction
+    if suction and np.linalg.norm(out) < 0.02:
+        # a bare flange holds with its face, at the wrist frame: out of the wrist's body
+        middle = wrist * Pose(link_centre(robot.description.model.link(arm.end_effector_link)))
+        out = np.subtract(tool.position, middle.position)
+    if np.linalg.norm(out) < (0.005 if suction else 0.02):
         return CheckResult(
             name,
             False,
@@ -189,7 +196,10 @@ def reach_and_grip(robot: ProjectedRobot, key: str, arm: ArmDescription) -> list
                 errors.append(str(failure))
                 continue
             detail = f"tool at {_fmt(reached.position)} (map)"
-            return [CheckResult(f"{key} arm: reach", True, detail, ""), _grip(robot, key, reached)]
+            gripper = arm.gripper
+            touch = gripper is not None and gripper.is_suction
+            held = suction_grip(robot, key, reached) if touch else _grip(robot, key, reached)
+            return [CheckResult(f"{key} arm: reach", True, detail, ""), held]
     fix = "check the arm's joints and base_link, and that the tool frame is at the fingers"
     planar = slice_advice(robot.description, arm, base_in_ik(robot.description, key))
     return [CheckResult(f"{key} arm: reach", False, errors[0], planar or fix)]

@@ -6,7 +6,8 @@
   closed to open; for a single jaw moving against a fixed one (whose link frames sit on
   the pivot and do not part), how far the middle of the moving jaw leaves the tool
   frame's approach axis;
-- the hand (``hand_links``): the wrist and every link below it;
+- the hand (``hand_links``): the wrist and every link below it; a suction hand's
+  ``gripper_links`` are its hand links (what touches what it holds);
 - a camera's minimal and maximal height: its frame's height with the torso at its lower
   and upper limit, the neck parked.
 """
@@ -37,6 +38,11 @@ def derive_arm(robot: str, arm: ArmDescription, model: RobotModel) -> ArmDescrip
     hand = arm.hand_links or subtree_links(model, arm.end_effector_link)
     if gripper is None:
         return replace(arm, hand_links=hand)
+    if gripper.is_suction:
+        touching = arm.gripper_links or hand
+        return replace(
+            arm, gripper=gripper, gripper_joints=(), gripper_links=touching, hand_links=hand
+        )
     fingers = arm.gripper_links or moved_links(model, gripper.names)
     if gripper.max_opening is None:
         opening = widest_opening(model, gripper, fingers)
@@ -108,6 +114,15 @@ def _from_limits(robot: str, arm: str, model: RobotModel, name: str) -> GripperJ
 
 
 def _check_gripper(robot: str, arm: str, model: RobotModel, gripper: GripperDescription) -> None:
+    if gripper.is_suction:
+        if gripper.joints or gripper.max_opening is not None:
+            raise GripperDescriptionError(
+                robot,
+                arm,
+                "a suction gripper has no joints and no opening",
+                "give GripperDescription.suction() alone, or a gripper of fingers",
+            )
+        return
     if not gripper.joints and gripper.curled_hand:
         raise GripperDescriptionError(
             robot,

@@ -309,7 +309,7 @@ def _arm_gaps(where: str, arm: ArmDescription) -> list[Finding]:
                 "give gripper_joints (or gripper=GripperDescription(...))",
             )
         )
-    elif arm.gripper.max_opening is None:
+    elif arm.gripper.max_opening is None and not arm.gripper.is_suction:
         found.append(
             _gap(
                 f"{where}.gripper",

@@ -12,11 +12,24 @@ an object's size; left ``None`` it is derived from the URDF at load.
 ``GripperDescription.curling()`` says the same of a hand without writing its joints out:
 every finger joint below the wrist that is straight at 0 curls to its upper limit (the
 TIAGo's Hey5 has 29); the joints are found at load, in the URDF's order.
+
+``GripperDescription.suction()`` is a hand that cannot close: no finger joints, an end
+effector fixed to the wrist (a suction cup, a tool flange, a ball). It holds what its tool
+frame touches: the grasp brings the tool frame onto the object's surface, gripping
+attaches the object there, and opening releases it. It has no opening (``max_opening``
+stays ``None``) and no joints to move.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Literal, get_args
+
+from robocram.robots.errors import DescriptionError
+
+GripperKind = Literal["fingers", "suction"]
+"""``fingers``: joints open and close it; ``suction``: it holds what its tool frame touches."""
+GRIPPER_KINDS: tuple[str, ...] = get_args(GripperKind)
 
 
 @dataclass(frozen=True)
@@ -34,12 +47,27 @@ class GripperDescription:
 
     Attributes:
         joints: the commanded joints, master first; their URDF mimic followers follow.
-        max_opening: [m] widest gap between the fingers; ``None``: derived at load.
+        max_opening: [m] widest gap between the fingers; ``None``: derived at load (a
+            suction hand has none).
+        kind: ``fingers`` (joints move it) or ``suction`` (fixed, holds what it touches).
     """
 
-    joints: tuple[GripperJoint, ...]
+    joints: tuple[GripperJoint, ...] = ()
     max_opening: float | None = None
     curled_hand: bool = False  # joints left out: the curling joints, found at load
+    kind: GripperKind = "fingers"
+
+    def __post_init__(self) -> None:
+        if self.kind not in GRIPPER_KINDS:
+            raise DescriptionError(
+                f"gripper kind {self.kind!r} is none of {GRIPPER_KINDS}: fingers (joints "
+                "open and close it) or suction (it holds what its tool frame touches)"
+            )
+
+    @property
+    def is_suction(self) -> bool:
+        """Whether it holds by touch (no fingers to move, no opening)."""
+        return self.kind == "suction"
 
     @property
     def names(self) -> tuple[str, ...]:
@@ -63,6 +91,15 @@ class GripperDescription:
         below the arm's ``end_effector_link``) are found at load.
         """
         return cls((), max_opening, curled_hand=True)
+
+    @classmethod
+    def suction(cls) -> GripperDescription:
+        """A fixed end effector that holds what its tool frame touches (no finger joints).
+
+        The tool frame must sit on the hand's tip, x pointing out of it: a grasp puts that
+        point on the object's surface, and nothing of the hand may go into the object.
+        """
+        return cls((), None, kind="suction")
 
     @classmethod
     def parallel(cls, joints: tuple[tuple[str, float, float], ...]) -> GripperDescription:

@@ -37,7 +37,10 @@ class SelfContacts:
         for item in self.geometry.geometryObjects:  # as PyBullet collides a moving mesh
             shape = item.geometry
             if hasattr(shape, "buildConvexHull") and shape.num_vertices > 3:
-                shape.buildConvexHull(False, "Qt")
+                try:
+                    shape.buildConvexHull(False, "Qt")
+                except RuntimeError:  # a vertex with too many neighbours (Centauro's pelvis)
+                    shape.buildConvexHull(False, "QJ")  # joggled: qhull gives one coal takes
                 item.geometry = shape.convex
         self.links = [
             self.kinematics.frames[g.parentFrame].name for g in self.geometry.geometryObjects

@@ -16,10 +16,11 @@ from functools import cache
 from importlib import resources
 from pathlib import Path
 
-from robocram.robots import RobotDescription
+from robocram.robots import RobotDescription, load_description
 from robocram.scenes.environment_description import EnvironmentDescription
 from robocram.scenes.environment_draft import draft_environment
 from robocram.scenes.environment_scene import EnvironmentScene, ItemPlace, environment_scene
+from robocram.scenes.errors import UnfitRobotError
 from robocram.tf import Pose
 from robocram.world import World
 
@@ -58,5 +59,15 @@ def kitchen_scene(robot: str | RobotDescription, world: World | None = None) -> 
     """Floor, kitchen, ``robot`` (arms parked) in the middle facing the north counter, items.
 
     ``robot`` is a built-in robot's name, a description file or a ``RobotDescription``.
+
+    Raises:
+        UnfitRobotError: its base is fixed: a kitchen transport drives between counters.
     """
+    desc = load_description(robot)
+    if desc.drive == "fixed":
+        raise UnfitRobotError(
+            desc.name,
+            "its base is fixed (base_type='fixed') and a kitchen transport drives between "
+            "counters: mount it on a mobile base (base_type), or use the tabletop scene",
+        )
     return environment_scene(kitchen_description(), robot, PLACES, ROBOT_START, world)

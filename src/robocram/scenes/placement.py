@@ -98,7 +98,7 @@ def _pans(desc: LoadedDescription, arm: ArmDescription, torso: dict[str, float])
 
 def placement_arm(desc: LoadedDescription) -> ArmDescription | None:
     """The arm the scene places the mug for: the right-most with a gripper (base y)."""
-    arms = [a for a in desc.arms.values() if a.gripper_joints and a.joints]
+    arms = [a for a in desc.arms.values() if a.gripper is not None and a.joints]
     if not arms:
         return None
     return min(arms, key=lambda a: (_shoulder(desc, a, _joints_for_torso(desc, a))[1], a.name))

@@ -2,6 +2,8 @@
 
 Two alike arms (as many joints of the same types) side by side are ``left`` (larger y)
 and ``right``; one hand is ``arm``; other layouts are ``arm_1``, ``arm_2``, ... with a doubt.
+A hand without moving fingers gets a suction gripper and a tool frame on its tip, with a
+doubt saying so.
 """
 
 from __future__ import annotations
@@ -15,6 +17,7 @@ from robocram.robots.draft.link_poses import link_poses
 from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.draft.stowing import drafted_parking
 from robocram.robots.draft.tool_frames import approach_and_opening, tool_frame
+from robocram.robots.draft.tool_tips import tip_frame
 from robocram.robots.gripper import GripperDescription, GripperJoint
 from robocram.robots.model_additions import FrameSpec
 
@@ -62,13 +65,57 @@ def _gripper(tree: ModelTree, hand: Hand, reversed_joints: list[str]) -> Gripper
     return GripperDescription(tuple(joints))
 
 
-def draft_arm(tree: ModelTree, hand: Hand, name: str, torso: str | None) -> DraftedArm:
-    """The arm ending in ``hand``: chain joints after the torso, tool frame, parking."""
+SUCTION_DOUBT = (
+    "no finger joint moves below {wrist}: drafted as a fixed, suction-like end effector that "
+    "holds what its tool frame (on the hand's tip) touches, from above; if the hand has "
+    "fingers, give their joints as gripper_joints (or a GripperDescription) instead"
+)
+
+
+def _arm_joints(tree: ModelTree, hand: Hand, torso: str | None) -> tuple[str, ...]:
+    """The arm's joints: the movable ancestors of the wrist after the torso, no mimics."""
     chain = tree.movable_ancestors(hand.end_effector_link)
     names = [j.name for j in chain]
     if torso in names:
         chain = chain[names.index(torso) + 1 :]
-    joints = tuple(j.name for j in chain if j.mimic is None)
+    return tuple(j.name for j in chain if j.mimic is None)
+
+
+def draft_fixed_arm(tree: ModelTree, hand: Hand, name: str, torso: str | None) -> DraftedArm:
+    """The arm ending in a hand with no moving finger: a suction gripper on its tip."""
+    joints = _arm_joints(tree, hand, torso)
+    tool = tip_frame(tree, hand, name)
+    parking = drafted_parking(tree.model, joints, hand.end_effector_link)
+    arm = ArmDescription(
+        name=name,
+        end_effector_link=hand.end_effector_link,
+        tool_frame=tool.name,
+        base_link=tree.model.joints[joints[0]].parent,
+        joints=joints,
+        parking=parking.values,
+        side=name if name in ("left", "right") else None,
+        gripper=GripperDescription.suction(),
+    )
+    why = {
+        "end_effector_link": f"child of {hand.wrist_joint}, the chain's last joint",
+        "base_link": "parent of the first arm joint"
+        + (" after the torso" if torso else "")
+        + "; its joints down to the wrist are found at load",
+        "tool_frame": tool.why,
+        "gripper": f"{hand.why_gripper}: it holds what its tool frame touches",
+        "parking": parking.why,
+    }
+    doubts = {"gripper": SUCTION_DOUBT.format(wrist=hand.end_effector_link)}
+    if parking.doubt:
+        doubts["parking"] = parking.doubt
+    return DraftedArm(arm, tool.added, why, doubts)
+
+
+def draft_arm(tree: ModelTree, hand: Hand, name: str, torso: str | None) -> DraftedArm:
+    """The arm ending in ``hand``: chain joints after the torso, tool frame, parking."""
+    if hand.fixed:
+        return draft_fixed_arm(tree, hand, name, torso)
+    joints = _arm_joints(tree, hand, torso)
     base = tree.model.joints[joints[0]].parent
     tool = tool_frame(tree, hand, name)
     parking = drafted_parking(tree.model, joints, hand.end_effector_link)

@@ -3,8 +3,11 @@
 Two driven wheels on one axle (their joints turn about one horizontal line, both fixed to
 the body) can only drive forward, backward and turn: a differential base (Stretch, the
 Fetch, TIAGo). Wheels on steering joints (the PR2's casters, the HSR's turning drive unit)
-or four fixed wheels (mecanum, TIAGo Pro's) drive any way: holonomic. A URDF with no
-wheels says nothing; the draft keeps the holonomic default and marks the doubt.
+or four fixed wheels (mecanum, TIAGo Pro's) drive any way: holonomic. A lone arm is
+fixed: a root link called ``world`` (the URDF bolts it there; unless a link is named like
+a mobile base, as Armar6's platform), or one chain of joints with no wheels on a mount no
+wider than :data:`MOUNT` (a Kinova, an SO-100). Any other URDF with no wheels says
+nothing; the draft keeps the holonomic default and marks the doubt.
 """
 
 from __future__ import annotations
@@ -17,6 +20,7 @@ import numpy as np
 from robocram.robots.description import BaseType
 from robocram.robots.draft.link_poses import axis_in_root, link_poses
 from robocram.robots.draft.model_tree import ModelTree
+from robocram.robots.link_centre import link_box
 from robocram.robots.urdf_elements import Joint
 
 HORIZONTAL = 0.1  # |z| of a unit axis in the root link below which it is horizontal
@@ -24,6 +28,9 @@ VERTICAL = 0.9  # |z| above which it is vertical (a steering joint)
 COAXIAL = 0.01  # [m] two wheel origins this close to one axis line share the axle
 MIN_TRACK = 0.1  # [m] between the wheels of one axle
 LOW = 0.3  # [m] a wheel's axle is at most this high over the lowest link (the floor)
+MOUNT = 0.3  # [m] a lone arm's root is no wider than this: an arm's mount, not a platform
+MOBILE_WORDS = ("platform", "mobile", "omni", "wheel", "caster", "footprint")  # a link so
+# named is a mobile base, even under a root called 'world' (Armar6's platform)
 
 
 @dataclass(frozen=True)
@@ -77,7 +84,8 @@ def _axles(tree: ModelTree, wheels: list[Joint]) -> list[tuple[Joint, Joint]]:
 
 
 def _steered(tree: ModelTree, body: set[str]) -> list[Joint]:
-    """Joints on the body that turn freely about a vertical axis and carry a wheel."""
+    """Joints on the body that turn freely about a vertical axis and carry a wheel right
+    below (an arm's shoulder pan carries its whole arm, whose wrist may look like one)."""
     model, poses = tree.model, link_poses(tree.model)
     return [
         joint
@@ -85,7 +93,7 @@ def _steered(tree: ModelTree, body: set[str]) -> list[Joint]:
         if joint.parent in body
         and _turns_freely(joint)
         and abs(axis_in_root(model, joint.name, poses)[2]) > VERTICAL
-        and _wheels(tree, {joint.child, *tree.subtree_links(joint.child)})
+        and _wheels(tree, set(tree.fixed_closure(joint.child)))
     ]
 
 
@@ -96,6 +104,10 @@ def find_base_drive(tree: ModelTree) -> BaseDrive:
     if planar:
         return BaseDrive("holonomic", f"planar joint {planar[0]} moves the base any way")
     body = tree.rigid_group(model.root_link)
+    lone = _lone_arm(tree, body)  # before the wheels: a wrist's last joint may look like one
+    if lone is not None:
+        doubt = "say 'holonomic' (or 'differential') if the arm rides on a mobile base"
+        return BaseDrive("fixed", lone, doubt)
     fixed = _wheels(tree, body)
     axles = _axles(tree, fixed)
     if len(fixed) == 2 and len(axles) == 1:
@@ -116,3 +128,23 @@ def find_base_drive(tree: ModelTree) -> BaseDrive:
         "on one axle, 'fixed' for a base that stays"
     )
     return BaseDrive("holonomic", "no driven wheels in the URDF: the default", doubt)
+
+
+def _lone_arm(tree: ModelTree, body: set[str]) -> str | None:
+    """Why the robot is an arm fixed where it stands, or None: its root link is called
+    ``world`` (and no link is named like a mobile base), or its movable joints form one
+    chain from a mount no wider than :data:`MOUNT` (a platform under it would be a mobile
+    base the URDF does not drive)."""
+    model = tree.model
+    mobile = [k for k in model.links if any(w in k.lower() for w in MOBILE_WORDS)]
+    if model.root_link.lower() == "world" and not mobile:
+        return "the URDF's root link is 'world': the robot is fixed to it"
+    movable = [j for j in model.joints.values() if j.movable]
+    leaves = [j for j in movable if not any(k.movable for k in tree.subtree_joints(j.child))]
+    if len(leaves) != 1 or len(tree.movable_ancestors(leaves[0].child)) != len(movable):
+        return None
+    boxes = [box for link in body if (box := link_box(model.link(link))) is not None]
+    width = max((max(h[0] - l[0], h[1] - l[1]) for l, h in boxes), default=0.0)
+    if width > MOUNT:
+        return None
+    return f"one chain of {len(movable)} joints on a {width:.2f} m mount, no wheels: a lone arm"

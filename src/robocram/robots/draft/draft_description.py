@@ -33,7 +33,7 @@ from robocram.robots.draft.cameras import (
     likely_camera_link,
 )
 from robocram.robots.draft.draft_source import draft_source
-from robocram.robots.draft.hands import find_hands
+from robocram.robots.draft.hands import find_fixed_hands, find_hands
 from robocram.robots.draft.link_poses import within_limits
 from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.draft.parking import neck_pose
@@ -104,7 +104,7 @@ def draft_description(
     tree = ModelTree(model)
     drive = find_base_drive(tree)
     _note(why, doubts, "base_type", drive.why, drive.doubt)
-    hands = find_hands(tree)
+    hands = find_hands(tree) or find_fixed_hands(tree)
     guessed = camera is None and not camera_frames(tree, [h.end_effector_link for h in hands])
     if guessed:  # as `--camera LINK` with the link the check would name
         camera = likely_camera_link(tree, [h.end_effector_link for h in hands])
@@ -119,8 +119,14 @@ def draft_description(
     if trunk.joint is not None and trunk.joint != torso.joint:
         cut = trunk.joint
         trunk_why = f"; below the trunk that turns them all ({', '.join(trunk.joints)})"
+    arms_cut = cut
+    waist = find_trunk(tree, [h.end_effector_link for h in hands])
+    if trunk.joint is None and waist.joint is not None and waist.joint != torso.joint:
+        arms_cut = waist.joint  # a waist turning the arms and the head (Centauro's): the
+        # arms share it, so each arm's parking would set it otherwise; the head pans with it
+        trunk_why = f"; below the waist that turns both ({', '.join(waist.joints)})"
     for hand, arm_name in zip(hands, names, strict=True):
-        drafted = draft_arm(tree, hand, arm_name, cut)
+        drafted = draft_arm(tree, hand, arm_name, arms_cut)
         arms[arm_name] = drafted.arm
         roles = _roles(model, drafted.arm, telescopes)
         if roles:

@@ -88,6 +88,8 @@ def _arm(arm: ArmDescription, notes: _Notes) -> object:
 
 
 def _gripper(gripper: GripperDescription) -> object:
+    if gripper.is_suction:
+        return call("GripperDescription.suction")
     if gripper.curled_hand:
         return call("GripperDescription.curling")
     joints = tuple(

@@ -4,6 +4,11 @@ A hand hangs below the last joint of an arm (at least :data:`MIN_ARM_JOINTS` mov
 from the root) and is where finger joints start: the first movable joints below the wrist
 link include a finger, which is prismatic, coupled by ``<mimic>``, or a leaf. The gripper
 joints are the masters the most other hand joints mimic; without mimics, the finger joints.
+
+A robot with no such hand may still have arms: chains of at least :data:`MIN_ARM_JOINTS`
+joints whose last joint moves nothing below it (a UR's flange, a Kinova with its fingers
+fixed, a ball). :func:`find_fixed_hands` gives those ends as hands without fingers, which
+the draft describes as suction grippers; chains named like legs or wheels are left out.
 """
 
 from __future__ import annotations
@@ -31,9 +36,11 @@ class Hand:
     why_gripper: str
     doubt_gripper: str | None = None
     opens_at_lower: bool = False  # curling fingers: open straight (0), closed curled
+    fixed: bool = False  # no moving finger: it can only hold what it touches (suction)
 
 
 FINGER_WORDS = ("finger", "gripper", "jaw", "thumb", "hand")  # in a lone leaf joint's name
+LEG_WORDS = ("wheel", "foot", "leg", "hip", "knee", "ankle", "shank", "thigh", "toe", "caster")
 
 
 def _leaf(tree: ModelTree, joint: Joint) -> bool:
@@ -161,3 +168,32 @@ def _hand(tree: ModelTree, wrist: Joint) -> Hand:
         doubt_gripper=doubt,
         opens_at_lower=why.startswith("no <mimic> couples"),
     )
+
+
+def find_fixed_hands(tree: ModelTree) -> list[Hand]:
+    """Arm ends with no moving finger, in file order: the last joint of a chain of at least
+    :data:`MIN_ARM_JOINTS` movable joints, with nothing movable below it, named like no leg
+    or wheel (a legged or wheeled base's chains end so too)."""
+    found = []
+    for joint in tree.model.joints.values():
+        if not joint.movable or joint.mimic is not None or not _leaf(tree, joint):
+            continue
+        chain = tree.movable_ancestors(joint.child)
+        if len(chain) < MIN_ARM_JOINTS:
+            continue
+        names = [n for j in chain for n in (j.name, j.child)] + tree.subtree_links(joint.child)
+        if any(word in name.lower() for name in names for word in LEG_WORDS):
+            continue
+        found.append(
+            Hand(
+                wrist_joint=joint.name,
+                end_effector_link=joint.child,
+                hand_joints=(),
+                gripper_joints=(),
+                gripper_links=(),
+                hand_links=tuple(tree.subtree_links(joint.child)),
+                why_gripper=f"no finger joint moves below {joint.child}",
+                fixed=True,
+            )
+        )
+    return found

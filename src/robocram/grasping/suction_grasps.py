@@ -1,0 +1,86 @@
+"""Grasps of a suction hand: the tool frame onto a face from above, no fingers, no opening.
+
+A suction-like hand (``GripperDescription.suction()``) holds what its tool frame touches,
+so a grasp puts the tool frame on the object's surface, the approach pointing down:
+
+- ``top``: on the top face over the body's axis (a mug's handle is left aside);
+- ``rim`` (a hollow object, ``object_wall/2``): on the rim, over the middle of the wall,
+  one place per side the box shows no handle; a hollow object's top face is its opening.
+
+The tool goes to the top of the object's box, which PyBullet's collision margin widens
+1-2 mm past the shape: the hand touches the face within the 5 mm a suction hand holds by
+(``projection/suction.py``), and a hand whose parts reach past its tool frame (fixed
+fingers) goes no deeper into the object than that. Four turns about the vertical each,
+for the arm to choose from.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator, Sequence
+
+from robocram.grasping.errors import ObjectUntouchable
+from robocram.grasping.grasp import Grasp
+from robocram.grasping.hand import Hand, tool_orientation
+from robocram.grasping.object_shape import ObjectShape
+from robocram.tf import Pose, Vector3
+
+PRE_GRASP = 0.10  # [m] the tool starts this far above
+LIFT = 0.10  # [m] the object is lifted this far
+HANDLE_MARGIN = 0.005  # [m] the box sticking out this far past the body is a handle
+DOWN: Vector3 = (0.0, 0.0, -1.0)
+TURNS = (0.0, math.pi, math.pi / 2, -math.pi / 2)
+SIDES: tuple[Vector3, ...] = ((1.0, 0.0, 0.0), (-1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, -1.0, 0.0))
+SUCTION_NAMES = ("top", "rim")
+
+
+def _touch(hand: Hand, name: str, turn: float, at: Vector3) -> Grasp:
+    """The tool at ``at`` pointing down, its opening axis turned ``turn`` about the vertical."""
+    across: Vector3 = (round(math.cos(turn), 12), round(math.sin(turn), 12), 0.0)
+    pose = Pose(at, tool_orientation(hand, DOWN, across))
+    return Grasp(name, turn, pose, DOWN, PRE_GRASP, LIFT, 0.0, across)
+
+
+def _reach(shape: ObjectShape, side: Vector3) -> float:
+    cx, cy = shape.centre
+    if side[0]:
+        return shape.high[0] - cx if side[0] > 0 else cx - shape.low[0]
+    return shape.high[1] - cy if side[1] > 0 else cy - shape.low[1]
+
+
+def _top(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
+    if shape.wall is not None:
+        return  # hollow: the top is an opening
+    cx, cy = shape.centre
+    for turn in TURNS:
+        yield _touch(hand, "top", turn, (cx, cy, shape.high[2]))
+
+
+def _rim(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
+    if shape.wall is None:
+        return
+    cx, cy = shape.centre
+    d = shape.radius - shape.wall / 2
+    for side in SIDES:
+        if _reach(shape, side) > shape.radius + HANDLE_MARGIN:
+            continue  # a handle on this side
+        at = (cx + side[0] * d, cy + side[1] * d, shape.high[2])
+        for turn in TURNS:
+            yield _touch(hand, "rim", turn, at)
+
+
+def touching_grasps(shape: ObjectShape, hand: Hand, names: Sequence[str]) -> list[Grasp]:
+    """The grasps of ``shape`` a suction ``hand`` can take, in ``names``' order.
+
+    Raises:
+        ObjectUntouchable: ``names`` allows neither ``top`` nor ``rim`` for this shape.
+    """
+    found = [
+        g
+        for name in names
+        if name in SUCTION_NAMES
+        for g in (_top(shape, hand) if name == "top" else _rim(shape, hand))
+    ]
+    if not found:
+        raise ObjectUntouchable(shape.name, tuple(names))
+    return found
