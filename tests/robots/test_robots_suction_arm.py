@@ -24,6 +24,7 @@ from robocram.robots import (
     example_robot_data_folder,
     load_description,
 )
+from robocram.robots.description_json import description_from_json, description_to_json
 from robocram.scenes import UnfitRobotError, kitchen_scene, tabletop_scene
 from robocram.tf import Pose
 from robocram.traces import TraceDatabase, audit_runs, trace_to
@@ -160,3 +161,11 @@ def test_a_suction_gripper_with_joints_is_refused(described: RobotDescription) -
         load_description(replace(described, arms={arm.name: replace(arm, gripper=bad)}))
     with pytest.raises(DescriptionError, match="none of"):
         GripperDescription(kind="sticky")  # type: ignore[arg-type]
+
+
+def test_a_trace_keeps_the_suction_gripper_as_data(described: RobotDescription) -> None:
+    loaded = load_description(described)
+    back = description_from_json(description_to_json(loaded), loaded.model)
+    (arm,) = back.arms.values()
+    gripper = arm.gripper
+    assert gripper is not None and gripper.is_suction and gripper.joints == ()
