@@ -9,6 +9,7 @@ that now describes another URDF is refused rather than replayed wrongly.
 from __future__ import annotations
 
 import json
+import socket
 import sqlite3
 import subprocess
 import sys
@@ -121,17 +122,22 @@ def test_the_trace_keeps_a_copy_of_the_description(fetch_run: Path) -> None:
     assert stored["torso_joint"] == "torso_lift_joint" and "arm" in stored["arms"]
 
 
-def test_a_moved_file_is_rebuilt_from_the_traces_copy_in_a_fresh_process(
+def test_a_moved_file_is_audited_exported_and_replayed_from_the_traces_copy(
     fetch_run: Path, tmp_path: Path
 ) -> None:
     moved = _move_source(fetch_run, tmp_path, str(tmp_path / "gone.py") + ":description")
     out = tmp_path / "run.mcap"
+    with socket.socket() as probe:  # a free port for the replay's viewer
+        probe.bind(("127.0.0.1", 0))
+        port = probe.getsockname()[1]
     code = (
         "import sys; from robocram.cli import main; "
         f"sys.exit(main(['runs', 'audit', {str(moved)!r}]) or "
-        f"main(['runs', 'export', {str(moved)!r}, '--mcap', {str(out)!r}]))"
+        f"main(['runs', 'export', {str(moved)!r}, '--mcap', {str(out)!r}]) or "
+        f"main(['replay', {str(moved)!r}, '--port', '{port}', '--seconds', '0.2']))"
     )
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
     assert done.returncode == 0, done.stderr[-2000:]
     assert "0 findings" in done.stdout or "clean" in done.stdout, done.stdout[-2000:]
     assert out.stat().st_size > 10_000
+    assert f"run 1 at http://127.0.0.1:{port}" in done.stdout  # the replay built its world
