@@ -112,6 +112,22 @@ def test_a_wrist_camera_looks_by_moving_its_arm(
     assert math.hypot(right, down) < 0.02  # [rad] on the optical axis (IK's tolerance)
 
 
+def test_a_five_joint_arm_aims_its_wrist_camera_joint_by_joint() -> None:
+    """The SO-101's five joints cannot hold a whole camera pose; its joints are aimed."""
+    world = _world("so101")
+    try:
+        name = world.robots()[0].name
+        camera = world.robot(name).description.cameras[0].frame
+        eye = world.link_pose(name, camera)
+        target = eye.transform_point((0.3, 0.0, 0.8))  # ahead of the camera, to its right
+        with simulated_robot(world, name):
+            perform(a.motion(type="looking", target=a.location(pose=Pose(target))))
+        right, down, depth = _image_angles(world, name, target)
+        assert depth > 0.5 and math.hypot(right, down) < math.radians(1.0)
+    finally:
+        world.close()
+
+
 def test_a_pan_only_head_pans_onto_a_target_in_its_view(baxter: World) -> None:
     robot = ProjectedRobot.of(baxter, "baxter")
     x, y, z = baxter.link_pose("baxter", robot.description.cameras[0].frame).position

@@ -4,10 +4,13 @@ The camera frame is put, by IK on the arm's chain with the camera as its tip, at
 from which its optical axis (z) meets the target with the image upright. The places are
 tried in order: where the camera is now (the arm only turns it), then on a ring over the
 target on the side of the arm's base, at a few distances and elevations (a step back
-and up, so the hand does not hide what it looks at). Each IK solution is collision-checked
-as an arm motion avoiding everything, and the arm moves there along a checked, timed
-trajectory (planned round obstacles). IK is counted and seeded: the same look gives the
-same joints on any machine.
+and up, so the hand does not hide what it looks at); at each, the image upright first,
+then turned about the optical axis (where the arm's limits want it). Each IK solution is
+collision-checked as an arm motion avoiding everything, and the arm moves there along a
+checked, timed trajectory (planned round obstacles). An arm too short of joints to hold
+a whole camera pose (the SO-101's five) is aimed joint by joint instead, as a head is
+(``joint_aim.py``), the camera staying where its joints take it. IK is counted and
+seeded: the same look gives the same joints on any machine.
 """
 
 from __future__ import annotations
@@ -21,16 +24,23 @@ from robocram.execution.failures import ManipulationPathBlocked, PtuGoalUnreacha
 from robocram.kinematics import IKOptions, IKResult, solve_ik
 from robocram.motion.tool_goal import IK_RANDOM_SEED
 from robocram.projection.collision_mode import collision_check, putting_back_once
+from robocram.projection.joint_aim import aimed_joints
 from robocram.projection.joint_motion import move_along_checked
 from robocram.projection.look_failures import look_blocked
 from robocram.projection.projected_robot import ProjectedRobot
+from robocram.robots import link_pose
 from robocram.tf import Pose, Vector3
+from robocram.tf import quaternion as quat
 from robocram.tf.optical_look_at import optical_look_at
 
 VIEW_DISTANCES = (0.45, 0.35, 0.6)  # [m] from the camera to the target on the ring
 VIEW_ELEVATIONS = (math.radians(55.0), math.radians(35.0), math.radians(75.0))
+VIEW_ROLLS = (0.0, math.pi, math.pi / 2, -math.pi / 2)  # [rad] about the optical axis:
+# upright first; a turned image sees the target as well, where the arm's limits want it
 VIEW_RESTARTS = 20  # IK descents after the first per viewing place
 MIN_DISTANCE = 0.05  # [m] a camera this close to its target cannot look at it
+AIM_TOLERANCE = math.radians(1.0)  # [rad] an arm aimed joint by joint ends this near
+TURNING = ("revolute", "continuous")
 
 
 def _ring(robot: ProjectedRobot, arm: str, target: np.ndarray) -> list[np.ndarray]:
@@ -58,11 +68,13 @@ def _places(robot: ProjectedRobot, arm: str, target: np.ndarray) -> list[np.ndar
     return [p for p in places if float(np.linalg.norm(target - p)) > MIN_DISTANCE]
 
 
-def _solve_view(robot: ProjectedRobot, arm: str, place: np.ndarray, target: np.ndarray) -> IKResult:
+def _solve_view(
+    robot: ProjectedRobot, arm: str, place: np.ndarray, target: np.ndarray, roll: float
+) -> IKResult:
     frame = robot.description.cameras[0].frame
     eye = (float(place[0]), float(place[1]), float(place[2]))
     aim = (float(target[0]), float(target[1]), float(target[2]))
-    view = Pose(eye, optical_look_at(eye, aim))
+    view = Pose(eye, optical_look_at(eye, aim)) * Pose(orientation=quat.from_euler(0, 0, roll))
     target_in_base = robot.base_pose().inverse() * view
     check = collision_check(robot, arm, "avoid_all")
     options = IKOptions(frame=frame, max_restarts=VIEW_RESTARTS, random_seed=IK_RANDOM_SEED)
@@ -84,8 +96,8 @@ def look_by_arm(robot: ProjectedRobot, arm: str, target_in_map: Vector3) -> dict
     target = np.asarray(target_in_map, float)
     blocked: list[ManipulationPathBlocked] = []
     places = _places(robot, arm, target)
-    for place in places:
-        result = _solve_view(robot, arm, place, target)
+    for place, roll in ((p, r) for p in places for r in VIEW_ROLLS):
+        result = _solve_view(robot, arm, place, target, roll)
         if not result.success:
             continue
         try:
@@ -95,6 +107,9 @@ def look_by_arm(robot: ProjectedRobot, arm: str, target_in_map: Vector3) -> dict
             )  # fmt: skip
         except ManipulationPathBlocked as failure:  # another viewing place may be free
             blocked.append(failure)
+    aimed = _aim_joints(robot, arm, target_in_map)
+    if aimed is not None:
+        return aimed
     if blocked:
         raise look_blocked(robot, target_in_map, blocked[0], f"{arm} arm") from blocked[0]
     frame = robot.description.cameras[0].frame
@@ -103,3 +118,39 @@ def look_by_arm(robot: ProjectedRobot, arm: str, target_in_map: Vector3) -> dict
         f"from any of {len(places)} viewing places without a collision; move the base closer",
         target=tuple(target_in_map),
     )
+
+
+def _aim_joints(robot: ProjectedRobot, arm: str, target_in_map: Vector3) -> dict[str, float] | None:
+    """The arm's joints aimed one by one at the target, turned to when the optical axis
+    then ends within :data:`AIM_TOLERANCE` of it and the way is free; else None (nothing
+    moved)."""
+    desc, world = robot.description, robot.world
+    model = desc.model
+    chain = model.chain(model.root_link, desc.cameras[0].frame)
+    turning = {j for j in robot.arm(arm).joints if model.joints[j].type in TURNING}
+    axes = [(j.name, j.child) for j in chain if j.name in turning]
+    if not axes:
+        return None
+    target = np.asarray(target_in_map, float)
+    wanted = aimed_joints(robot, axes, target)
+    goal = {j: world.bodies.joint_limits(robot.name, j).clamp(v) for j, v in wanted.items()}
+    if _off_axis(robot, goal, target) > AIM_TOLERANCE:
+        return None
+    try:
+        return move_along_checked(
+            robot, goal, kind="arm", what=f"{robot.name}'s {arm} arm (looking)", plan=True
+        )
+    except ManipulationPathBlocked:
+        return None
+
+
+def _off_axis(robot: ProjectedRobot, goal: dict[str, float], target: np.ndarray) -> float:
+    """[rad] between the optical axis and the target with the joints at ``goal``, placed
+    by the kinematic model from the robot's base pose in the world."""
+    desc, world = robot.description, robot.world
+    state = {**world.joint_states(robot.name), **goal}
+    camera = world.pose(robot.name) * link_pose(desc.model, desc.cameras[0].frame, state)
+    view = camera.matrix()
+    to_target = target - view[:3, 3]
+    cosine = float(view[:3, 2] @ to_target / np.linalg.norm(to_target))
+    return math.acos(max(-1.0, min(1.0, cosine)))
