@@ -20,11 +20,11 @@ from robocram.designators import a
 from robocram.execution import perform
 from robocram.execution.failures import PtuGoalNotReached
 from robocram.projection import simulated_robot
-from robocram.projection.looking_means import looking_means, with_looking
 from robocram.projection.neck import look_at
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robot_check import description_from
 from robocram.robots import load_description
+from robocram.robots.looking_means import looking_means, with_looking
 from robocram.tf import Pose
 from robocram.world import World
 

@@ -31,9 +31,9 @@ from robocram.projection.joint_motion import move_along_checked
 from robocram.projection.look_by_arm import look_by_arm
 from robocram.projection.look_by_pan import look_by_pan
 from robocram.projection.look_failures import look_blocked
-from robocram.projection.looking_means import looking_means
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robots import PanTiltDescription
+from robocram.robots.looking_means import looking_means
 from robocram.tf import Pose, Vector3
 from robocram.tf import quaternion as quat
 from robocram.tf.optical_look_at import optical_look_at

@@ -21,10 +21,10 @@ from robocram.execution import Environment, matching_facts
 from robocram.grasping import install_grasp_predicates
 from robocram.logic import KnowledgeBase
 from robocram.motion import MotionSettings
-from robocram.projection.looking_means import with_looking
 from robocram.projection.process_modules import PROJECTION_MODULES
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robots import RobotDescription
+from robocram.robots.looking_means import with_looking
 from robocram.world import RobotObject, World
 
 PREFIX = "projection"  # module atoms: projection_arms, projection_ptu, ...

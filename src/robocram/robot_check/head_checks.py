@@ -13,13 +13,13 @@ import numpy as np
 
 from robocram.designators import an
 from robocram.execution import PlanFailure
-from robocram.projection.looking_means import looking_means
 from robocram.projection.neck import look_at
 from robocram.projection.perception import detect
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.projection.torso import move_torso
 from robocram.robot_check.report_card import CheckResult
 from robocram.robots.draft.cameras import LOOKS_AHEAD
+from robocram.robots.looking_means import looking_means
 from robocram.tf import Pose
 
 HEIGHT_TOLERANCE = 0.05  # [m] between a camera height given and one measured

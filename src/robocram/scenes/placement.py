@@ -20,7 +20,11 @@ Nothing is keyed on robot names, so a new robot gets a scene too. The rules:
   panned towards the table and tilted down as far as it goes with the torso up, meets
   it: looking aims that axis at the target, and a camera close above a low table cannot
   look that steeply;
-- the shoulder must reach the wrist's grasp position, else the robot is unfit;
+- the shoulder must reach the wrist's grasp position; where it cannot (a camera that
+  cannot look down steeply puts the mug beyond the arm: TALOS, TIAGo dual), the table
+  rises in steps until the wrist is 0.3 m above the shoulder
+  (:data:`WRISTS_BELOW_SHOULDER`), the mug then within :data:`RAISED_REACH_SHARE` of the
+  reach; else the robot is unfit;
 - heights are the map's: a robot lifted onto the floor or a pedestal
   (:mod:`robocram.scenes.standing`) gets its table that much higher.
 """
@@ -42,6 +46,10 @@ from robocram.world import World
 
 GRASP_HEIGHT = 0.05  # [m] above the mug's bottom, where a top grasp holds it
 WRIST_BELOW_SHOULDER = 0.10  # [m] at the grasp, with the torso half raised
+WRISTS_BELOW_SHOULDER = (WRIST_BELOW_SHOULDER, 0.0, -0.1, -0.2, -0.3)  # [m] tried in turn:
+# a higher table brings the mug nearer a camera that cannot look down steeply (TALOS, TIAGo)
+RAISED_REACH_SHARE = 0.85  # of the reach a raised table's mug may be from the shoulder at
+# most: the hand comes from above it, so the arm needs room past the grasp
 TABLE_GAP = 0.15  # [m] between the base footprint and the table's front edge
 MUG_INSET = 0.10  # [m] from the table's front edge to the mug
 REACH_SHARE = 0.65  # of the arm's stretched length: the mug's x distance from the shoulder
@@ -223,17 +231,21 @@ def tabletop_placement(world: World, robot: str) -> TabletopPlacement:
             f"for a table under its hand (it would stand {height:.2f} m high): stand it "
             "higher (tabletop_scene puts such an arm on a pedestal)",
         )
-    placed, unfit = _placement_at(world, robot, arm, WRIST_BELOW_SHOULDER)
-    if placed is None:
-        raise UnfitRobotError(robot, unfit)
-    return placed
+    reasons = []
+    for below in WRISTS_BELOW_SHOULDER:
+        share = 1.0 if below == WRIST_BELOW_SHOULDER else RAISED_REACH_SHARE
+        placed, unfit = _placement_at(world, robot, arm, below, share)
+        if placed is not None:
+            return placed
+        reasons.append(unfit)
+    raise UnfitRobotError(robot, reasons[0])
 
 
 def _placement_at(
-    world: World, robot: str, arm: ArmDescription, below: float
+    world: World, robot: str, arm: ArmDescription, below: float, share: float = 1.0
 ) -> tuple[TabletopPlacement | None, str]:
-    """The placement with the grasping wrist ``below`` [m] under the shoulder, or None and
-    why it does not fit."""
+    """The placement with the grasping wrist ``below`` [m] under the shoulder and the mug
+    within ``share`` of the arm's reach, or None and why it does not fit."""
     desc = world.robot(robot).description
     torso = _joints_for_torso(desc, arm)
     root = world.pose(robot)
@@ -246,7 +258,7 @@ def _placement_at(
     seen = _nearest_in_view(desc, height - root.position[2], yaw)
     mug_x = max(past_base, shoulder[0] + REACH_SHARE * reach, seen)
     needed = math.dist(shoulder, (mug_x, shoulder[1], wrist_z))
-    if needed > reach:
+    if needed > share * reach:
         return None, (
             f"its {arm.name} arm reaches {reach:.2f} m but the mug in front of its base "
             f"and in its camera's view (from x = {seen:.2f} m) is {needed:.2f} m from the "

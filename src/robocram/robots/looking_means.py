@@ -13,7 +13,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal
 
-from robocram.robots import LoadedDescription, RobotDescription
+from robocram.robots.description import LoadedDescription, RobotDescription
 
 MeansKind = Literal["pan_tilt", "neck_arm", "arm", "pan"]
 
