@@ -223,3 +223,27 @@ def test_a_robot_whose_root_is_not_at_its_feet_stands_on_the_floor() -> None:
         assert abs(math.atan2(y, z)) < loaded.vertical_fov / 2
         shoulder = np.asarray(state("arm_right_1_link")[4])
         assert float(np.linalg.norm(mug - shoulder)) < 0.68
+
+
+def test_a_head_that_only_pans_puts_the_mug_where_its_view_reaches() -> None:
+    """Baxter's head only pans: its camera's tilt stays, so the scene puts the mug no
+    nearer than the lower edge of its view, and here that is beyond its arm's reach; the
+    message says so. The edge is judged on PyBullet's link state of the camera."""
+    desc = description_from(str(EXAMPLES / "baxter.py"))
+    with World() as world:
+        with pytest.raises(UnfitRobotError, match=r"head only pans \(head_pan\)") as info:
+            tabletop_scene(desc, world)
+        client, body = world.physics.client(), world.object("baxter").body_id
+        index = next(
+            i
+            for i in range(pybullet.getNumJoints(body, physicsClientId=client))
+            if pybullet.getJointInfo(body, i, physicsClientId=client)[12].decode()
+            == "head_camera_link"
+        )
+        orientation = pybullet.getLinkState(
+            body, index, computeForwardKinematics=True, physicsClientId=client
+        )[5]
+        axis = np.array(pybullet.getMatrixFromQuaternion(orientation)).reshape(3, 3)[:, 2]
+        lowest = math.degrees(math.asin(-axis[2])) + 22.5  # half baxter.py's 45 degree field
+    said = float(str(info.value).split("sees ")[1].split(" degrees")[0])
+    assert said == pytest.approx(lowest, abs=1.0)
