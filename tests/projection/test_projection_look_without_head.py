@@ -20,6 +20,7 @@ from robocram.designators import a
 from robocram.execution import perform
 from robocram.execution.failures import PtuGoalNotReached
 from robocram.projection import simulated_robot
+from robocram.projection.look_by_arm import _sight_blocked
 from robocram.projection.neck import look_at
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robot_check import description_from
@@ -149,3 +150,20 @@ def test_a_pan_only_head_says_where_a_target_it_cannot_tilt_to_lies(baxter: Worl
     right, down, _ = _image_angles(baxter, "baxter", target)
     assert abs(right) < 0.01  # it panned towards it all the same
     assert abs(down) > robot.description.cameras[0].vertical_fov / 2
+
+
+def test_a_view_through_the_robots_own_hand_counts_as_hidden(panda: World) -> None:
+    """The Panda's wrist camera looks across its hand's axis: a target beyond the hand is
+    hidden by it, one ahead along the optical axis is not (rays cast in PyBullet)."""
+    robot = ProjectedRobot.of(panda, "panda")
+    before = panda.joint_states("panda")
+    joints = {j: v for j, v in before.items() if j in robot.arm("arm").joints}
+    camera = panda.link_pose("panda", robot.description.cameras[0].frame)
+    hand = np.asarray(panda.link_pose("panda", "panda_hand").position)
+    beyond = hand + 0.3 * (hand - np.asarray(camera.position)) / np.linalg.norm(
+        hand - np.asarray(camera.position)
+    )
+    ahead = np.asarray(camera.transform_point((0.0, 0.0, 0.6)))
+    assert _sight_blocked(robot, joints, beyond)
+    assert not _sight_blocked(robot, joints, ahead)
+    assert panda.joint_states("panda") == before  # the world is as it was

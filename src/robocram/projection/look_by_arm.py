@@ -7,10 +7,11 @@ target on the side of the arm's base, at a few distances and elevations (a step 
 and up, so the hand does not hide what it looks at); at each, the image upright first,
 then turned about the optical axis (where the arm's limits want it). Each IK solution is
 collision-checked as an arm motion avoiding everything, and the arm moves there along a
-checked, timed trajectory (planned round obstacles). An arm too short of joints to hold
-a whole camera pose (the SO-101's five) is aimed joint by joint instead, as a head is
-(``joint_aim.py``), the camera staying where its joints take it. IK is counted and
-seeded: the same look gives the same joints on any machine.
+checked, timed trajectory (planned round obstacles); a pose from which the robot's own
+links hide the target (rays from the camera) is taken only if no other is found. An arm
+too short of joints to hold a whole camera pose (the SO-101's five) is aimed joint by
+joint instead, as a head is (``joint_aim.py``), the camera staying where its joints take
+it. IK is counted and seeded: the same look gives the same joints on any machine.
 """
 
 from __future__ import annotations
@@ -41,6 +42,10 @@ VIEW_RESTARTS = 20  # IK descents after the first per viewing place
 MIN_DISTANCE = 0.05  # [m] a camera this close to its target cannot look at it
 AIM_TOLERANCE = math.radians(1.0)  # [rad] an arm aimed joint by joint ends this near
 TURNING = ("revolute", "continuous")
+SIGHT_NEAR = 0.05  # [m] rays start this far out of the camera (as the world's do)
+SIGHT_OFFSETS = tuple(
+    (dx, dy, dz) for dx in (-0.03, 0.03) for dy in (-0.03, 0.03) for dz in (0.0, 0.06)
+)  # [m] round the target: a mug's size
 
 
 def _ring(robot: ProjectedRobot, arm: str, target: np.ndarray) -> list[np.ndarray]:
@@ -96,16 +101,23 @@ def look_by_arm(robot: ProjectedRobot, arm: str, target_in_map: Vector3) -> dict
     target = np.asarray(target_in_map, float)
     blocked: list[ManipulationPathBlocked] = []
     places = _places(robot, arm, target)
+    hidden: list[dict[str, float]] = []  # solutions the robot's own links hide it from
     for place, roll in ((p, r) for p in places for r in VIEW_ROLLS):
         result = _solve_view(robot, arm, place, target, roll)
         if not result.success:
             continue
+        goal = dict(result.joint_positions)
+        if _sight_blocked(robot, goal, target):
+            hidden.append(goal)
+            continue
         try:
-            return move_along_checked(
-                robot, dict(result.joint_positions), kind="arm",
-                what=f"{robot.name}'s {arm} arm (looking)", plan=True,
-            )  # fmt: skip
+            return _turn_arm(robot, arm, goal)
         except ManipulationPathBlocked as failure:  # another viewing place may be free
+            blocked.append(failure)
+    for goal in hidden:  # no clear view: the first reachable one (detecting says what hides)
+        try:
+            return _turn_arm(robot, arm, goal)
+        except ManipulationPathBlocked as failure:
             blocked.append(failure)
     aimed = _aim_joints(robot, arm, target_in_map)
     if aimed is not None:
@@ -118,6 +130,34 @@ def look_by_arm(robot: ProjectedRobot, arm: str, target_in_map: Vector3) -> dict
         f"from any of {len(places)} viewing places without a collision; move the base closer",
         target=tuple(target_in_map),
     )
+
+
+def _turn_arm(robot: ProjectedRobot, arm: str, goal: dict[str, float]) -> dict[str, float]:
+    return move_along_checked(
+        robot, goal, kind="arm", what=f"{robot.name}'s {arm} arm (looking)", plan=True
+    )
+
+
+def _sight_blocked(robot: ProjectedRobot, goal: dict[str, float], target: np.ndarray) -> bool:
+    """Whether, with the joints at ``goal``, most rays from the camera to points round the
+    target meet the robot itself (its hand before a wrist camera). The world is as before
+    after."""
+    world = robot.world
+    before = {j: v for j, v in world.joint_states(robot.name).items() if j in goal}
+    world.set_joint_states(robot.name, goal)
+    try:
+        eye = np.asarray(world.link_pose(robot.name, robot.description.cameras[0].frame).position)
+        ends = [target + np.asarray(offset) for offset in SIGHT_OFFSETS]
+        starts = [eye + SIGHT_NEAR * (end - eye) / np.linalg.norm(end - eye) for end in ends]
+        hits = world.view.ray_cast_batch([_point(p) for p in starts], [_point(p) for p in ends])
+    finally:
+        world.set_joint_states(robot.name, before)
+    own = sum(1 for hit in hits if hit is not None and hit.obj.name == robot.name)
+    return own * 2 > len(hits)
+
+
+def _point(vector: np.ndarray) -> tuple[float, float, float]:
+    return (float(vector[0]), float(vector[1]), float(vector[2]))
 
 
 def _aim_joints(robot: ProjectedRobot, arm: str, target_in_map: Vector3) -> dict[str, float] | None:
@@ -137,9 +177,7 @@ def _aim_joints(robot: ProjectedRobot, arm: str, target_in_map: Vector3) -> dict
     if _off_axis(robot, goal, target) > AIM_TOLERANCE:
         return None
     try:
-        return move_along_checked(
-            robot, goal, kind="arm", what=f"{robot.name}'s {arm} arm (looking)", plan=True
-        )
+        return _turn_arm(robot, arm, goal)
     except ManipulationPathBlocked:
         return None
 
