@@ -114,14 +114,14 @@ def look_by_arm(robot: ProjectedRobot, arm: str, target_in_map: Vector3) -> dict
             return _turn_arm(robot, arm, goal)
         except ManipulationPathBlocked as failure:  # another viewing place may be free
             blocked.append(failure)
-    for goal in hidden:  # no clear view: the first reachable one (detecting says what hides)
+    aimed = _aimed_goal(robot, arm, target)  # the joints aimed one by one: a clear view of
+    if aimed is not None:  # it before the hidden ones (detecting then says what hides)
+        hidden.insert(len(hidden) if _sight_blocked(robot, aimed, target) else 0, aimed)
+    for goal in hidden:
         try:
             return _turn_arm(robot, arm, goal)
         except ManipulationPathBlocked as failure:
             blocked.append(failure)
-    aimed = _aim_joints(robot, arm, target_in_map)
-    if aimed is not None:
-        return aimed
     if blocked:
         raise look_blocked(robot, target_in_map, blocked[0], f"{arm} arm") from blocked[0]
     frame = robot.description.cameras[0].frame
@@ -139,9 +139,9 @@ def _turn_arm(robot: ProjectedRobot, arm: str, goal: dict[str, float]) -> dict[s
 
 
 def _sight_blocked(robot: ProjectedRobot, goal: dict[str, float], target: np.ndarray) -> bool:
-    """Whether, with the joints at ``goal``, most rays from the camera to points round the
-    target meet the robot itself (its hand before a wrist camera). The world is as before
-    after."""
+    """Whether, with the joints at ``goal``, a ray from the camera to a point round the
+    target meets the robot itself (its hand before a wrist camera: detecting wants nine
+    tenths of an object in sight). The world is as before after."""
     world = robot.world
     before = {j: v for j, v in world.joint_states(robot.name).items() if j in goal}
     world.set_joint_states(robot.name, goal)
@@ -152,18 +152,16 @@ def _sight_blocked(robot: ProjectedRobot, goal: dict[str, float], target: np.nda
         hits = world.view.ray_cast_batch([_point(p) for p in starts], [_point(p) for p in ends])
     finally:
         world.set_joint_states(robot.name, before)
-    own = sum(1 for hit in hits if hit is not None and hit.obj.name == robot.name)
-    return own * 2 > len(hits)
+    return any(hit is not None and hit.obj.name == robot.name for hit in hits)
 
 
 def _point(vector: np.ndarray) -> tuple[float, float, float]:
     return (float(vector[0]), float(vector[1]), float(vector[2]))
 
 
-def _aim_joints(robot: ProjectedRobot, arm: str, target_in_map: Vector3) -> dict[str, float] | None:
-    """The arm's joints aimed one by one at the target, turned to when the optical axis
-    then ends within :data:`AIM_TOLERANCE` of it and the way is free; else None (nothing
-    moved)."""
+def _aimed_goal(robot: ProjectedRobot, arm: str, target: np.ndarray) -> dict[str, float] | None:
+    """The arm's joints aimed one by one at the target, when the optical axis then ends
+    within :data:`AIM_TOLERANCE` of it; else None. Nothing moves."""
     desc, world = robot.description, robot.world
     model = desc.model
     chain = model.chain(model.root_link, desc.cameras[0].frame)
@@ -171,15 +169,9 @@ def _aim_joints(robot: ProjectedRobot, arm: str, target_in_map: Vector3) -> dict
     axes = [(j.name, j.child) for j in chain if j.name in turning]
     if not axes:
         return None
-    target = np.asarray(target_in_map, float)
     wanted = aimed_joints(robot, axes, target)
     goal = {j: world.bodies.joint_limits(robot.name, j).clamp(v) for j, v in wanted.items()}
-    if _off_axis(robot, goal, target) > AIM_TOLERANCE:
-        return None
-    try:
-        return _turn_arm(robot, arm, goal)
-    except ManipulationPathBlocked:
-        return None
+    return None if _off_axis(robot, goal, target) > AIM_TOLERANCE else goal
 
 
 def _off_axis(robot: ProjectedRobot, goal: dict[str, float], target: np.ndarray) -> float:
