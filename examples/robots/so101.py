@@ -35,8 +35,9 @@ def description() -> RobotDescription:
                 name="arm",
                 # why: child of wrist_roll, the last joint before the fingers
                 end_effector_link="gripper_link",
-                # why: gripper_frame_link is at the fingers but its axes differ: turned to x =
-                #   approach, y = opening
+                # why: one jaw turns against a fixed one: added in the middle of the opening between
+                #   the fixed jaw's inner face and the moving jaw open, 0.080 m out along the
+                #   approach
                 tool_frame="arm_standard_tool_frame",
                 # why: parent of the first arm joint; its joints down to the wrist are found at load
                 base_link="base_link",
@@ -74,8 +75,8 @@ def description() -> RobotDescription:
         extra_frames=(
             FrameSpec(
                 name="arm_standard_tool_frame",
-                parent="gripper_frame_link",
-                pose=Pose((0.0, 0.0, 0.0), (-0.500001, 0.499999, -0.499999, -0.500001)),
+                parent="gripper_link",
+                pose=Pose((0.024335, -0.0001, -0.080306), (-0.5, -0.5, 0.5, -0.5)),
             ),
             FrameSpec(
                 name="gripper_link_optical",

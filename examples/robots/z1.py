@@ -37,7 +37,8 @@ def description() -> RobotDescription:
                 name="arm",
                 # why: child of joint6, the last joint before the fingers
                 end_effector_link="link06",
-                # why: no frame of the URDF reaches the fingers: added 0.140 m out along the
+                # why: one jaw turns against a fixed one: added in the middle of the opening between
+                #   the fixed jaw's inner face and the moving jaw open, 0.170 m out along the
                 #   approach
                 tool_frame="arm_standard_tool_frame",
                 # why: parent of the first arm joint; its joints down to the wrist are found at load
@@ -80,7 +81,7 @@ def description() -> RobotDescription:
             FrameSpec(
                 name="arm_standard_tool_frame",
                 parent="link06",
-                pose=Pose((0.139501, 0.0, 0.002626), (0.707107, 0.0, 0.0, 0.707107)),
+                pose=Pose((0.169751, 0.0, 0.015251), (0.707107, 0.0, 0.0, 0.707107)),
             ),
             FrameSpec(
                 name="link06_optical",

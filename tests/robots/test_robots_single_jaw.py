@@ -14,6 +14,7 @@ import warnings
 from pathlib import Path
 
 import numpy as np
+import pybullet
 import pytest
 
 from robocram.execution.failures import GripperMetOneSide
@@ -100,8 +101,12 @@ def test_z1_draft_opens_its_jaw_at_the_lower_limit_and_turns_the_tool_frame() ->
     assert (jaw.name, jaw.open, jaw.closed) == ("jointGripper", -1.5707, 0.0)
     frame = next(f for f in draft.description.extra_frames if f.name == arm.tool_frame)
     assert frame.parent == "link06"
-    # at the closed jaw's middle: the pivot 0.100 m out, plus the mesh's middle
-    assert frame.pose.position == pytest.approx((0.1 + MOVER_MIDDLE[0], 0.0, 0.0026), abs=1e-3)
+    # in the middle of the opening (issue 37): along x, the middle of the closed jaw's outer
+    # half (the pivot 0.100 m out, the jaw reaching 0.100 m past it, its middle 0.0395);
+    # along z, between z1_GripperStator.STL's inner face there (z -0.009) and the open
+    # jaw's middle (the pivot's z, plus MOVER_MIDDLE[0] turned 90 degrees up)
+    out = 0.1 + (0.1 + MOVER_MIDDLE[0]) / 2
+    assert frame.pose.position == pytest.approx((out, 0.0, (-0.009 + 0.0395) / 2), abs=1e-3)
     axes = frame.pose.matrix()[:3, :3]
     assert axes[:, 0] == pytest.approx((1.0, 0.0, 0.0), abs=1e-6)  # approach: out along x
     assert axes[:, 1] == pytest.approx((0.0, 0.0, 1.0), abs=1e-6)  # the jaw opens upwards
@@ -115,8 +120,10 @@ def test_z1_widest_opening_is_how_far_the_jaw_middle_rises() -> None:
     # turned 90 degrees about y, the middle (0.0395, 0, 0.0026) goes to (-0.0026, 0, 0.0395)
     assert gripper.max_opening == pytest.approx(0.0395 - 0.0026, abs=1e-3)
     opened = link_pose(desc.model, "gripperMover", gripper.at(1.0)) * Pose(MOVER_MIDDLE)
-    tool = link_pose(desc.model, desc.arms["arm"].tool_frame)
-    assert (tool.inverse() * opened).position[1] == pytest.approx(gripper.max_opening, abs=1e-3)
+    closed = link_pose(desc.model, "gripperMover", gripper.at(0.0)) * Pose(MOVER_MIDDLE)
+    tool = link_pose(desc.model, desc.arms["arm"].tool_frame).inverse()
+    rise = (tool * opened).position[1] - (tool * closed).position[1]  # along the opening (y)
+    assert rise == pytest.approx(gripper.max_opening, abs=1e-3)
     assert not [f for f in desc.findings if "widest opening" in f.problem]
 
 
@@ -135,13 +142,84 @@ def test_so101_jaw_opens_at_the_upper_limit_with_a_derived_opening() -> None:
     assert float(tool[:3, 0] @ out) / float(np.linalg.norm(out)) > math.cos(math.radians(30))
 
 
+JAWS = [  # example, fixed jaw link, moving jaw link
+    ("z1", "gripperStator", "gripperMover"),
+    ("so101", "gripper_link", "moving_jaw_so101_v1_link"),
+]
+
+
+def _link_index(body: int, name: str, client: int) -> int:
+    return next(
+        i
+        for i in range(pybullet.getNumJoints(body, physicsClientId=client))
+        if pybullet.getJointInfo(body, i, physicsClientId=client)[12].decode() == name
+    )
+
+
+def _ball_distances(world: World, robot: str, tool: str) -> dict[str, float]:
+    """[m] from a 2 mm ball at the tool frame (PyBullet's link state) to each robot link
+    within 5 cm, by PyBullet's closest points."""
+    client, body = world.physics.client(), world.object(robot).body_id
+    state = pybullet.getLinkState(
+        body, _link_index(body, tool, client), computeForwardKinematics=True,
+        physicsClientId=client,
+    )  # fmt: skip
+    shape = pybullet.createCollisionShape(
+        pybullet.GEOM_SPHERE, radius=0.002, physicsClientId=client
+    )
+    ball = pybullet.createMultiBody(0.0, shape, basePosition=state[4], physicsClientId=client)
+    near = pybullet.getClosestPoints(ball, body, 0.05, physicsClientId=client)
+    pybullet.removeBody(ball, physicsClientId=client)
+    names = {
+        i: pybullet.getJointInfo(body, i, physicsClientId=client)[12].decode()
+        for i in {p[4] for p in near}
+    }
+    found: dict[str, float] = {}
+    for p in near:
+        found[names[p[4]]] = min(found.get(names[p[4]], 1.0), p[8])
+    return found
+
+
+@pytest.mark.parametrize(("example", "fixed", "moving"), JAWS)
+def test_a_one_sided_jaws_tool_frame_is_in_the_opening(
+    example: str, fixed: str, moving: str
+) -> None:
+    """Issue 37: the tool frame lay inside the fixed jaw. Judged in PyBullet: with the jaw
+    open, a 2 mm ball at the tool frame touches nothing of the robot and a ray from it
+    against the opening (-y) meets the fixed jaw within 5 cm; closing, the moving jaw
+    sweeps over the ball (so a grip closes what is there against the fixed jaw)."""
+    examples = Path(__file__).resolve().parents[2] / "examples" / "robots"
+    with World() as world:
+        robot = world.add_robot(description_from(str(examples / f"{example}.py")))
+        arm = robot.description.arms["arm"]
+        assert arm.gripper is not None
+        client, body = world.physics.client(), world.object(robot.name).body_id
+        world.set_joint_states(robot.name, arm.gripper.at(1.0))
+        free = _ball_distances(world, robot.name, arm.tool_frame)
+        assert min(free.values(), default=1.0) > 0.0, free  # nothing of the robot there
+        state = pybullet.getLinkState(
+            body, _link_index(body, arm.tool_frame, client), computeForwardKinematics=True,
+            physicsClientId=client,
+        )  # fmt: skip
+        y = np.array(pybullet.getMatrixFromQuaternion(state[5])).reshape(3, 3)[:, 1]
+        ray = pybullet.rayTest(
+            state[4], tuple(np.asarray(state[4]) - 0.05 * y), physicsClientId=client
+        )
+        assert ray[0][:2] == (body, _link_index(body, fixed, client))
+        swept = []
+        for fraction in np.linspace(1.0, 0.0, 21):
+            world.set_joint_states(robot.name, arm.gripper.at(float(fraction)))
+            swept.append(_ball_distances(world, robot.name, arm.tool_frame).get(moving, 1.0))
+        assert min(swept) <= 0.0  # the moving jaw passes through the tool frame closing
+
+
 @pytest.mark.xfail(
     strict=True,
     raises=GripperMetOneSide,
-    reason="the drafted z1's tool frame lies inside its fixed jaw (gripperStator's hull spans "
-    "it), so a mug put at the tool frame starts 73 mm inside the jaw; the grip passed only "
-    "while one-sided squeezes were unbounded. The draft must put the tool frame where the jaws "
-    "meet (issue 37)",
+    reason="the mug (88 mm across, its top 56 mm above the tool frame) does not fit the Z1's "
+    "jaw: closing, the moving jaw meets the mug's top rim some 50 degrees open, not opposite "
+    "the fixed jaw, whose convex hull (what PyBullet collides) slopes up to its housing; "
+    "the tool frame is in the opening since issue 37, the mug is too big for this hand",
 )
 def test_z1_grips_a_mug_by_contact_with_its_one_moving_jaw() -> None:
     """Closing stops where the moving jaw and the fixed one squeeze the mug, part way."""
@@ -151,7 +229,7 @@ def test_z1_grips_a_mug_by_contact_with_its_one_moving_jaw() -> None:
         name = world.add_robot(description_from(str(examples / "z1.py"))).name
         robot = ProjectedRobot.of(world, name)
         down = quaternion.from_euler(0.0, math.pi / 2, 0.0)  # tool x (approach) down
-        tool = move_tcp(robot, "arm", Pose((0.35, 0.0, 0.20), down))
+        tool = move_tcp(robot, "arm", Pose((0.30, 0.0, 0.20), down))
         x, y, z = tool.position
         world.add_item("mug-1", "mug", pose=(x, y, z - 0.05))
         open_gripper(robot, "arm")

@@ -23,6 +23,32 @@ from robocram.robots.mimic import mimic_followers
 FloatArray = NDArray[np.float64]
 
 
+LOCKED_SUFFIX = "#locked"  # appended to a locked joint named like a link, in the reduction
+
+
+def _renamed_locked(model: pin.Model, lock: list[int]) -> pin.Model:
+    """``model``, or a copy whose locked joints named like one of its links are renamed.
+
+    A locked joint becomes a fixed frame of its name, which pinocchio's reduction looks up
+    by name: a joint named like a link (the SO-100's ``gripper`` joint and link) matches
+    two frames there and the reduction fails. The locked joints leave the reduced model,
+    so their names are never looked up in it.
+    """
+    links = {f.name for f in model.frames if f.type == pin.FrameType.BODY}
+    clashing = {model.names[j] for j in lock if model.names[j] in links}
+    if not clashing:
+        return model
+    copy = pin.Model(model)
+    for j in lock:
+        if copy.names[j] in clashing:
+            copy.names[j] = copy.names[j] + LOCKED_SUFFIX
+    for i, frame in enumerate(copy.frames):
+        if frame.type == pin.FrameType.JOINT and frame.name in clashing:
+            frame.name = frame.name + LOCKED_SUFFIX
+            copy.frames[i] = frame
+    return copy
+
+
 class ArmChain:
     """Variables, limits and the reduced model for moving ``tip_frame`` with ``joints``."""
 
@@ -34,7 +60,9 @@ class ArmChain:
         parent = kin.model.frames[tip_id].parentJoint
         path_ids = {int(j) for j in kin.model.supports[parent] if j != 0}
         lock = [j for j in range(1, kin.model.njoints) if j not in path_ids]
-        self.model: pin.Model = pin.buildReducedModel(kin.model, lock, pin.neutral(kin.model))
+        self.model: pin.Model = pin.buildReducedModel(
+            _renamed_locked(kin.model, lock), lock, pin.neutral(kin.model)
+        )
         self.data: pin.Data = self.model.createData()
         # the reduced model holds only the path joints, root to tip, velocity index = order
         self.path: tuple[str, ...] = tuple(self.model.names[1:])

@@ -10,12 +10,12 @@ head moves. Angles outside the limits are clamped and turned to, then
 ``PtuGoalNotReached`` is raised (CRAM's semantics). A neck that is an arm (Boxy) is aimed
 by IK: the camera turns to face the target from its current place, else from the neck's
 parking place or a step away from the current one; ``PtuGoalUnreachable`` if IK finds no
-solution for any of them.
+solution for any of them. A robot with neither looks with what turns its camera
+(``looking_means.py``): the arm carrying it (``look_by_arm.py``) or a head that only pans
+(``look_by_pan.py``).
 """
 
 from __future__ import annotations
-
-import math
 
 import numpy as np
 
@@ -23,52 +23,51 @@ from robocram.execution.failures import (
     ManipulationPathBlocked,
     PtuGoalNotReached,
     PtuGoalUnreachable,
-    PtuPathBlocked,
 )
 from robocram.kinematics import IKOptions, forward_kinematics, solve_ik
-from robocram.kinematics.robot_kinematics import robot_kinematics
 from robocram.projection.errors import ProjectionError
+from robocram.projection.joint_aim import aimed_joints
 from robocram.projection.joint_motion import move_along_checked
+from robocram.projection.look_by_arm import look_by_arm
+from robocram.projection.look_by_pan import look_by_pan
+from robocram.projection.look_failures import look_blocked
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robots import PanTiltDescription
+from robocram.robots.looking_means import looking_means
 from robocram.tf import Pose, Vector3
 from robocram.tf import quaternion as quat
 from robocram.tf.optical_look_at import optical_look_at
-from robocram.tf.signed_angle import signed_angle
-from robocram.world import JointLimits
 
-AIM_ROUNDS = 6
-AIM_TOLERANCE = 1e-4  # [rad] a round changing the joints less than this ends the aiming
 NECK_STEP = 0.15  # [m] how far from its current place a neck arm may move the camera
 
 
 def look_at(robot: ProjectedRobot, target_in_map: Vector3) -> dict[str, float]:
-    """Point the robot's first camera at ``target_in_map`` [m]; return the neck joints set."""
+    """Point the robot's first camera at ``target_in_map`` [m]; return the joints set."""
     desc = robot.description
     if not desc.cameras:
         raise ProjectionError(f"{robot.name} has no camera to look with")
-    if desc.pan_tilt is not None:
+    means = looking_means(desc)
+    if means is None:
+        raise ProjectionError(
+            f"{robot.name} has neither a pan-tilt unit, a neck arm, an arm carrying its camera "
+            "nor a joint turning it; it cannot look around"
+        )
+    if means.kind == "pan_tilt" and desc.pan_tilt is not None:
         return _aim_pan_tilt(robot, desc.pan_tilt, target_in_map)
-    if desc.neck_arm is not None:
+    if means.kind == "neck_arm" and desc.neck_arm is not None:
         return _aim_neck_arm(robot, desc.neck_arm, target_in_map)
-    raise ProjectionError(
-        f"{robot.name} has neither a pan-tilt unit nor a neck arm; it cannot look around"
-    )
-
-
-def _nearest_in_limits(value: float, limits: JointLimits) -> float:
-    """``value`` or a 2*pi turn of it that lies within ``limits``, else ``value``."""
-    for candidate in (value, value - 2 * math.pi, value + 2 * math.pi):
-        if limits.lower <= candidate <= limits.upper:
-            return candidate
-    return value
+    if means.kind == "arm" and means.arm is not None:
+        return look_by_arm(robot, means.arm, target_in_map)
+    if means.joint is None or means.link is None:
+        raise ProjectionError(f"{robot.name}'s looking means {means} names no joint to turn")
+    return look_by_pan(robot, means.joint, means.link, target_in_map)
 
 
 def _aim_pan_tilt(
     robot: ProjectedRobot, pt: PanTiltDescription, target_in_map: Vector3
 ) -> dict[str, float]:
     world, target = robot.world, np.asarray(target_in_map, float)
-    wanted = _aimed(robot, pt, target)
+    wanted = aimed_joints(robot, pt.axes(), target)
     bounds = {j: world.bodies.joint_limits(robot.name, j) for j in wanted}
     inside = {j: bounds[j].clamp(v) for j, v in wanted.items()}
     reached = _turn_head(robot, inside, target_in_map)
@@ -94,54 +93,7 @@ def _turn_head(
     try:
         return move_along_checked(robot, goal, kind="head", what=f"{robot.name}'s head", plan=True)
     except ManipulationPathBlocked as blocked:
-        raise _blocked(robot, target_in_map, blocked) from blocked
-
-
-def _blocked(
-    robot: ProjectedRobot, target_in_map: Vector3, blocked: ManipulationPathBlocked
-) -> PtuPathBlocked:
-    return PtuPathBlocked(
-        f"{robot.name} cannot turn its head to look at {tuple(target_in_map)}: {blocked}; "
-        "the head did not move",
-        target=tuple(target_in_map),
-        colliding_pairs=blocked.colliding_pairs,
-        path_fraction=blocked.path_fraction,
-    )
-
-
-def _aimed(robot: ProjectedRobot, pt: PanTiltDescription, target: np.ndarray) -> dict[str, float]:
-    """The pan and tilt values that point the camera at ``target`` (map), unclamped.
-
-    The rounds turn each joint in turn with the other held where the last turn (clamped
-    to its limits, as setting it would) left it. The links are placed by the robot's
-    kinematic model from its base pose in the world: a round costs microseconds, where
-    setting the joints in the world and reading its links back cost a millisecond a look.
-    """
-    world, desc = robot.world, robot.description
-    kin = robot_kinematics(desc.model)
-    axes = pt.axes()
-    frames = [kin.frame_id(link) for _, link in axes] + [kin.frame_id(desc.cameras[0].frame)]
-    local_axes = [np.asarray(desc.model.joints[joint].axis, float) for joint, _ in axes]
-    limits = [world.bodies.joint_limits(robot.name, joint) for joint, _ in axes]
-    state = world.joint_states(robot.name)
-    q = kin.configuration({j: v for j, v in state.items() if desc.model.joints[j].mimic is None})
-    root = world.pose(robot.name).matrix()
-    values = [state[joint] for joint, _ in axes]
-    wanted: dict[str, float] = {}
-    for _ in range(AIM_ROUNDS):
-        before = list(values)
-        for k, (joint, _) in enumerate(axes):
-            placed = kin.frame_matrices(q, (frames[k], frames[-1]))
-            link, view = root @ placed[0], root @ placed[1]
-            axis = link[:3, :3] @ local_axes[k]
-            axis /= np.linalg.norm(axis)
-            turn = signed_angle(view[:3, 2], target - view[:3, 3], axis)
-            wanted[joint] = _nearest_in_limits(values[k] + turn, limits[k])
-            values[k] = limits[k].clamp(wanted[joint])
-            kin.put(q, joint, values[k])
-        if max(abs(a - b) for a, b in zip(values, before, strict=True)) < AIM_TOLERANCE:
-            break
-    return wanted
+        raise look_blocked(robot, target_in_map, blocked, "head") from blocked
 
 
 def looking_orientation(camera_position: Vector3, target: Vector3) -> quat.Quaternion:
@@ -189,7 +141,7 @@ def _aim_neck_arm(robot: ProjectedRobot, neck: str, target_in_map: Vector3) -> d
         except ManipulationPathBlocked as failure:  # another camera place may be free
             blocked.append(failure)
     if blocked:
-        raise _blocked(robot, target_in_map, blocked[0]) from blocked[0]
+        raise look_blocked(robot, target_in_map, blocked[0], "head") from blocked[0]
     raise PtuGoalUnreachable(
         f"{robot.name}'s neck cannot point {frame} at {tuple(target_in_map)} from any of "
         f"{len(errors)} camera positions tried (best IK miss {min(errors):.3f} m)",

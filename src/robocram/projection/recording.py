@@ -51,6 +51,7 @@ from robocram.robots import (
     install_description,
     load_description,
 )
+from robocram.robots.looking_means import with_looking
 from robocram.tf import Pose, PoseStamped, using_transform_tree
 
 LogEntry = tuple[str, Term]
@@ -177,7 +178,7 @@ def recording_environment(
     install_description(kb, desc)
     install_motions(kb, desc)
     install_grasp_predicates(kb, description=desc)  # objects by type and pose
-    resources = desc.resources()
+    resources = with_looking(desc, desc.resources())
     modules = [RecordingPM(resource, state) for resource in resources]
     facts = matching_facts(PREFIX, resources)
     env = Environment(f"recording_{desc.name}", modules, facts=facts, kb=kb)

@@ -4,7 +4,8 @@
 knowledge base (world predicates and the robot's description facts are already there),
 adds the motion groundings of the motion table (common ones, and flying ones for flying
 robots) and one process module per resource the robot has
-(``RobotDescription.resources()``), with the ``matching_process_module/2`` facts the
+(``RobotDescription.resources()``, and ``ptu`` where an arm or a pan joint turns the camera:
+``looking_means.py``), with the ``matching_process_module/2`` facts the
 table gives for those resources. The grasp model answers ``object_grasp/7`` and its
 siblings (``robocram.grasping``, docs/grasping.md) so plans reach grasps through the KB.
 Location designators resolve through costmaps
@@ -23,6 +24,7 @@ from robocram.motion import MotionSettings
 from robocram.projection.process_modules import PROJECTION_MODULES
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robots import RobotDescription
+from robocram.robots.looking_means import with_looking
 from robocram.world import RobotObject, World
 
 PREFIX = "projection"  # module atoms: projection_arms, projection_ptu, ...
@@ -54,7 +56,7 @@ def projection_environment(
     """
     projected = ProjectedRobot.of(world, robot, motion)
     desc = projected.description
-    resources = with_tools(desc.resources())
+    resources = with_tools(with_looking(desc, desc.resources()))
     kb = install_motions(world.kb, desc)
     install_grasp_predicates(kb, world)
     return Environment(

@@ -2,14 +2,17 @@
 
 The reach goes to a point ahead of the shoulder along the arm's working direction
 (straight ahead, or sideways for an arm such as Stretch's), tool pointing down as the
-pick-up plan holds it; a small box then appears between the fingers and the gripper must
-close on it, which fails if the tool frame is not between the fingertips. A suction hand
-touches a mug's top instead (``suction_checks.py``).
+pick-up plan holds it; a mug then appears between the fingers and the gripper must close
+on it, which fails if the tool frame is not between the fingertips. A hand the mug is too
+wide for (a small one-sided jaw) closes on a short cylinder sized to its opening instead,
+centred on the tool frame; it passes saying that plans cannot pick mugs with it. A suction
+hand touches a mug's top instead (``suction_checks.py``).
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from itertools import combinations
 
 import numpy as np
@@ -34,6 +37,7 @@ from robocram.robots.arm_slice import slice_advice
 from robocram.robots.link_centre import link_centre
 from robocram.tf import Pose, Vector3
 from robocram.tf import quaternion as quat
+from robocram.world import World, WorldObject
 
 APPROACH_AGREEMENT = math.cos(math.radians(30.0))  # tool x vs the wrist-to-tool direction
 MIN_OPENING = 0.005  # [m] the fingers must move apart at least this much when opening
@@ -41,6 +45,10 @@ REACH_SHARES = (0.65, 0.5, 0.8, 0.95)  # of the shoulder-to-wrist length: the wr
 WRISTS_BELOW = (0.10, -0.10)  # [m] the wrist below the shoulder, the tool a hand lower
 GRASP_HEIGHT = 0.05  # [m] above a mug's bottom, where the pick-up plan grasps it
 YAWS = (0.0, math.pi / 2, math.pi, -math.pi / 2)  # [rad] tool turns about the vertical
+PROBE = "robot_check_mug"  # the object the grip closes on
+FIT_SHARE = 2 / 3  # of the widest opening: a probe for a hand the mug is too wide for
+FIT_HEIGHT = 0.03  # [m] the probe's height, centred on the tool frame: within short jaws
+FIT_MASS = 0.1  # [kg] the probe is movable, as a grasped object is
 
 
 def parking(robot: ProjectedRobot, key: str, arm: ArmDescription) -> CheckResult:
@@ -207,23 +215,69 @@ def reach_and_grip(robot: ProjectedRobot, key: str, arm: ArmDescription) -> list
 
 def _grip(robot: ProjectedRobot, key: str, tool: Pose) -> CheckResult:
     name = f"{key} arm: grip"
+    fix = "put the tool frame between the fingertips (where an object is held)"
     x, y, z = tool.position
-    open_gripper(robot, key)
     turned = quat.from_euler(0.0, 0.0, _opening_yaw(robot, key))  # the handle out of the way
-    probe = robot.world.add_item("robot_check_mug", "mug", Pose((x, y, z - GRASP_HEIGHT), turned))
+    mug = Pose((x, y, z - GRASP_HEIGHT), turned)
+    held, detail, width = _grip_on(
+        robot, key, tool, mug, lambda w: w.add_item(PROBE, "mug", mug.position)
+    )
+    if held:
+        return CheckResult(name, True, detail, "")
+    opening = _widest_opening(robot, key)
+    if opening is None or width <= opening:
+        return CheckResult(name, False, detail, fix)
+    try:  # the hand may have moved to centre itself on the mug
+        move_tcp(robot, key, tool)
+    except PlanFailure:
+        return CheckResult(name, False, detail, fix)
+    radius = FIT_SHARE * opening / 2
+    held, small, _ = _grip_on(
+        robot, key, tool, Pose(tool.position),
+        lambda w: w.bodies.add_cylinder(PROBE, radius, FIT_HEIGHT, tool.position, mass=FIT_MASS),
+    )  # fmt: skip
+    too_wide = (
+        f"the mug is {width * 1000:.0f} mm across, wider than the hand opens "
+        f"({opening * 1000:.0f} mm): plans cannot pick mugs with it"
+    )
+    if not held:
+        return CheckResult(name, False, f"{too_wide}; a {radius * 2000:.0f} mm probe: {small}", fix)
+    return CheckResult(name, True, f"{small} ({radius * 2000:.0f} mm across); {too_wide}", "")
+
+
+def _grip_on(
+    robot: ProjectedRobot,
+    key: str,
+    tool: Pose,
+    pose: Pose,
+    add: Callable[[World], WorldObject],
+) -> tuple[bool, str, float]:
+    """Open the hand, ``add`` an object (unturned), put it at ``pose`` and grip it centred:
+    whether it held, what happened in words, and the object's width [m] across (the
+    narrower side of its box, unturned)."""
+    open_gripper(robot, key)
+    probe = add(robot.world)
+    low, high = robot.world.aabb(probe.name)
+    width = min(high[0] - low[0], high[1] - low[1])
+    robot.world.set_pose(probe.name, pose)
     try:
         held, moved = _centred_grip(robot, key, tool)
         where = (
             "at the tool frame" if moved < 1e-4 else f"with the hand centred {moved * 1000:.0f} mm"
         )
-        return CheckResult(name, True, f"closed on {held} {where}", "")
+        return True, f"closed on {held} {where}", width
     except PlanFailure as failure:
-        fix = "put the tool frame between the fingertips (where an object is held)"
-        return CheckResult(name, False, str(failure), fix)
+        return False, str(failure), width
     finally:
         release(robot, key)
         robot.world.remove(probe)
         open_gripper(robot, key)
+
+
+def _widest_opening(robot: ProjectedRobot, key: str) -> float | None:
+    """[m] how wide ``key``'s hand opens, as its gripper says (None: not known)."""
+    gripper = robot.arm(key).gripper
+    return gripper.max_opening if gripper is not None else None
 
 
 def _centred_grip(robot: ProjectedRobot, key: str, tool: Pose) -> tuple[str, float]:

@@ -19,6 +19,8 @@ from robocram.projection.projected_robot import ProjectedRobot
 from robocram.projection.torso import move_torso
 from robocram.robot_check.report_card import CheckResult
 from robocram.robots.draft.cameras import LOOKS_AHEAD
+from robocram.robots.looking_means import looking_means
+from robocram.tf import Pose
 
 HEIGHT_TOLERANCE = 0.05  # [m] between a camera height given and one measured
 LIFT_SHARE = 0.5  # of the torso's range the arms' bases must rise at least
@@ -28,6 +30,13 @@ FORWARD = LOOKS_AHEAD  # x share in the base frame of an optical axis that looks
 LOOK_AHEAD = 1.0  # [m] ahead of the camera to look and detect at, at least
 LOOK_DOWN = math.radians(20.0)  # [rad] at most: a neck arm's own links hide steeper views
 LOOK_HEIGHT = 0.75  # [m] over the floor: a table top
+LOOK_ASIDE = math.radians(25.0)  # [rad] a camera on an arm or a pan-only head turns this far
+LOOK_FIX = {
+    "pan_tilt": "check pan_tilt joints",
+    "neck_arm": "check neck_arm joints",
+    "arm": "check the arm carrying the camera: its joints and limits must turn the camera",
+    "pan": "check the joint turning the camera (the head's pan joint) and its limits",
+}
 
 
 def torso(robot: ProjectedRobot) -> list[CheckResult]:
@@ -115,23 +124,30 @@ def camera_forward(robot: ProjectedRobot) -> CheckResult:
 def look_and_detect(robot: ProjectedRobot) -> list[CheckResult]:
     """Look at a point ahead of the camera, then detect a mug put there.
 
-    A camera that cannot turn (no pan-tilt, no neck arm) gets the mug on its optical axis.
+    A camera turned by the arm carrying it or by a head that only pans looks at a point
+    turned aside from its optical axis (``looking_means.py``); one nothing turns gets the
+    mug on its optical axis.
     """
     world, desc = robot.world, robot.description
     camera = desc.cameras[0]
     eye = world.link_pose(robot.name, camera.frame)
-    if desc.pan_tilt is None and desc.neck_arm is None:
+    means = looking_means(desc)
+    if means is None:
         target = eye.transform_point((0.0, 0.0, LOOK_AHEAD))
         return [_detect(robot, target, LOOK_AHEAD)]
-    base = robot.base_pose()
-    distance = max(LOOK_AHEAD, (eye.position[2] - LOOK_HEIGHT) / math.tan(LOOK_DOWN))
-    ahead = base.transform_point((distance, 0.0, 0.0))
-    shift = np.subtract(eye.position, base.position)
-    target = (ahead[0] + shift[0], ahead[1] + shift[1], LOOK_HEIGHT)
+    if means.kind in ("arm", "pan"):
+        distance = LOOK_AHEAD
+        target = _aside(eye, LOOK_AHEAD, LOOK_ASIDE)
+    else:
+        base = robot.base_pose()
+        distance = max(LOOK_AHEAD, (eye.position[2] - LOOK_HEIGHT) / math.tan(LOOK_DOWN))
+        ahead = base.transform_point((distance, 0.0, 0.0))
+        shift = np.subtract(eye.position, base.position)
+        target = (ahead[0] + shift[0], ahead[1] + shift[1], LOOK_HEIGHT)
     try:
         look_at(robot, target)
     except PlanFailure as failure:
-        return [CheckResult("look", False, str(failure), "check pan_tilt or neck_arm joints")]
+        return [CheckResult("look", False, str(failure), LOOK_FIX[means.kind])]
     pose = world.link_pose(robot.name, camera.frame)
     wanted = np.subtract(target, pose.position)
     off = math.acos(min(1.0, float(pose.matrix()[:3, 2] @ wanted / np.linalg.norm(wanted))))
@@ -142,6 +158,16 @@ def look_and_detect(robot: ProjectedRobot) -> list[CheckResult]:
         "the camera frame must be optical (z forward) and turned by the pan-tilt or neck",
     )
     return [look, _detect(robot, target, distance)]
+
+
+def _aside(eye: Pose, distance: float, turn: float) -> tuple[float, float, float]:
+    """The point ``distance`` [m] along the optical axis turned by ``turn`` [rad] about
+    the vertical through the camera: what a look must turn to, at the height it sees."""
+    ahead = np.subtract(eye.transform_point((0.0, 0.0, distance)), eye.position)
+    c, s = math.cos(turn), math.sin(turn)
+    turned = (c * ahead[0] - s * ahead[1], s * ahead[0] + c * ahead[1], ahead[2])
+    x, y, z = (float(v) for v in np.add(eye.position, turned))
+    return (x, y, z)
 
 
 def _detect(

@@ -186,26 +186,26 @@ def widest_opening(
 def single_jaw_opening(
     model: RobotModel, gripper: GripperDescription, fingers: tuple[str, ...], tool_frame: str
 ) -> float | None:
-    """Largest growth [m] of a moving jaw's distance from the tool frame's approach axis.
+    """Largest travel [m] of a moving jaw along the tool frame's opening axis (its y).
 
     A jaw turning against a fixed one keeps its link frame on the pivot; the middle of its
-    collision shapes moves off the axis along which the hand approaches (the tool frame's
-    x, through its origin: between the closed jaws). ``None`` without a tool frame in the
-    model or when no jaw moves off the axis.
+    collision shapes moves across the way the hand approaches, along the opening. Measured
+    along the axis, not as a distance from the tool frame's origin, so it holds wherever
+    between the jaws the tool frame sits. ``None`` without a tool frame in the model or
+    when no jaw moves along the opening.
     """
     if tool_frame not in model.links:
         return None
     tool = link_pose(model, tool_frame, gripper.at(0.0)).matrix()
-    origin, approach = tool[:3, 3], tool[:3, 0]
+    origin, opening = tool[:3, 3], tool[:3, 1]
 
-    def off_axis(finger: str, fraction: float) -> float:
+    def across(finger: str, fraction: float) -> float:
         centre = link_pose(model, finger, gripper.at(fraction)) * Pose(
             link_centre(model.link(finger))
         )
-        offset = np.asarray(centre.position) - origin
-        return float(np.linalg.norm(offset - (offset @ approach) * approach))
+        return float((np.asarray(centre.position) - origin) @ opening)
 
-    growth = max((off_axis(f, 1.0) - off_axis(f, 0.0) for f in fingers), default=0.0)
+    growth = max((abs(across(f, 1.0) - across(f, 0.0)) for f in fingers), default=0.0)
     return growth if growth > MIN_OPENING else None
 
 

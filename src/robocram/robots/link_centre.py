@@ -54,9 +54,9 @@ def _collada_points(text: str) -> np.ndarray | None:
     return np.vstack(points) * scale if points else None
 
 
-@lru_cache(maxsize=256)
-def mesh_box(filename: str) -> Box | None:
-    """Bounding box [m, unscaled] of a mesh file's vertices, or None if it cannot be read.
+@lru_cache(maxsize=64)
+def mesh_points(filename: str) -> np.ndarray | None:
+    """The vertices [m, unscaled, N x 3] of a mesh file, or None if it cannot be read.
 
     COLLADA files are read in their unit but without their node transforms, which
     suffices for the middle of a finger; STL and OBJ are exact.
@@ -75,7 +75,17 @@ def mesh_box(filename: str) -> Box | None:
         points = _collada_points(data.decode("utf-8", errors="ignore"))
     else:
         points = None
-    if points is None or not np.isfinite(points).all():
+    if points is None or not len(points) or not np.isfinite(points).all():
+        return None
+    points.setflags(write=False)
+    return points
+
+
+@lru_cache(maxsize=256)
+def mesh_box(filename: str) -> Box | None:
+    """Bounding box [m, unscaled] of a mesh file's vertices, or None if it cannot be read."""
+    points = mesh_points(filename)
+    if points is None:
         return None
     low, high = points.min(axis=0), points.max(axis=0)
     return (
@@ -134,3 +144,20 @@ def link_centre(link: Link) -> tuple[float, float, float]:
         return (0.0, 0.0, 0.0)
     centre = (np.asarray(box[0]) + np.asarray(box[1])) / 2
     return (float(centre[0]), float(centre[1]), float(centre[2]))
+
+
+def link_points(link: Link) -> np.ndarray | None:
+    """Points [m, link frame, N x 3] on ``link``'s collision shapes: a mesh's vertices, a
+    primitive's box corners; None when it has no shape whose size can be read. Where a
+    jaw's face lies needs the shape, which a box around a jaw and its housing hides."""
+    found: list[np.ndarray] = []
+    for collision in link.collisions:
+        geometry = collision.geometry
+        vertices = mesh_points(geometry.filename) if geometry.kind == "mesh" else None
+        if vertices is None:
+            found += [c[None, :] for c in _corners(collision)]
+            continue
+        scaled = vertices * np.asarray(geometry.scale)
+        matrix = collision.origin.matrix()
+        found.append(scaled @ matrix[:3, :3].T + matrix[:3, 3])
+    return np.vstack(found) if found else None

@@ -16,11 +16,17 @@ Nothing is keyed on robot names, so a new robot gets a scene too. The rules:
   telescope extended) ahead of the shoulder,
   or further if needed for the table's front edge to clear the robot's base footprint
   (its links fixed to the root) by :data:`TABLE_GAP`, the mug :data:`MUG_INSET` behind it;
+- with a head that only pans (Baxter's), the mug lies at least as far out as the lower
+  edge of the camera's view, panned towards the table;
 - with a pan-tilt head, the mug lies at least as far out as the camera's optical axis,
   panned towards the table and tilted down as far as it goes with the torso up, meets
   it: looking aims that axis at the target, and a camera close above a low table cannot
   look that steeply;
-- the shoulder must reach the wrist's grasp position, else the robot is unfit;
+- the shoulder must reach the wrist's grasp position; where it cannot (a camera that
+  cannot look down steeply puts the mug beyond the arm: TALOS, TIAGo dual), the table
+  rises in steps until the wrist is 0.3 m above the shoulder
+  (:data:`WRISTS_BELOW_SHOULDER`), the mug then within :data:`RAISED_REACH_SHARE` of the
+  reach; else the robot is unfit;
 - heights are the map's: a robot lifted onto the floor or a pedestal
   (:mod:`robocram.scenes.standing`) gets its table that much higher.
 """
@@ -33,6 +39,7 @@ from dataclasses import dataclass
 from robocram.kinematics import forward_kinematics
 from robocram.robots import ArmDescription, LoadedDescription
 from robocram.robots.arm_envelope import arm_envelope, lift_joints
+from robocram.robots.looking_means import looking_means
 from robocram.robots.model_pose import finite_limits
 from robocram.scenes.errors import UnfitRobotError
 from robocram.scenes.standing import root_fixed_links
@@ -42,6 +49,10 @@ from robocram.world import World
 
 GRASP_HEIGHT = 0.05  # [m] above the mug's bottom, where a top grasp holds it
 WRIST_BELOW_SHOULDER = 0.10  # [m] at the grasp, with the torso half raised
+WRISTS_BELOW_SHOULDER = (WRIST_BELOW_SHOULDER, 0.0, -0.1, -0.2, -0.3)  # [m] tried in turn:
+# a higher table brings the mug nearer a camera that cannot look down steeply (TALOS, TIAGo)
+RAISED_REACH_SHARE = 0.85  # of the reach a raised table's mug may be from the shoulder at
+# most: the hand comes from above it, so the arm needs room past the grasp
 TABLE_GAP = 0.15  # [m] between the base footprint and the table's front edge
 MUG_INSET = 0.10  # [m] from the table's front edge to the mug
 REACH_SHARE = 0.65  # of the arm's stretched length: the mug's x distance from the shoulder
@@ -131,30 +142,37 @@ def _heading(desc: LoadedDescription, joints: dict[str, float]) -> float:
     return math.atan2(z[1], z[0])
 
 
-def _pan_to(desc: LoadedDescription, yaw: float) -> float:
+def _pan_to(desc: LoadedDescription, yaw: float, pan: str | None = None) -> float:
     """The pan value [rad] (0 for a robot facing along its arm) that looks along the
-    map's x for a robot standing at ``yaw``: the one of a few within limits nearest it."""
+    map's x for a robot standing at ``yaw``: the one of a few within limits nearest it.
+    ``pan``: the joint (default: the pan-tilt head's)."""
     pt = desc.pan_tilt
-    limits = finite_limits(desc.model.joints[pt.pan_joint]) if pt is not None else None
-    if pt is None or limits is None or yaw == 0.0:
+    joint = pan if pan is not None else (pt.pan_joint if pt is not None else None)
+    limits = finite_limits(desc.model.joints[joint]) if joint is not None else None
+    if joint is None or limits is None or yaw == 0.0:
         return 0.0
     values = [limits[0] + (limits[1] - limits[0]) * i / PAN_STEPS for i in range(PAN_STEPS + 1)]
 
     def off(value: float) -> float:
-        heading = _heading(desc, {pt.pan_joint: value}) + yaw
+        heading = _heading(desc, {joint: value}) + yaw
         return abs(math.remainder(heading, 2 * math.pi))
 
     return min(values, key=off)
 
 
 def _nearest_in_view(desc: LoadedDescription, height: float, yaw: float = 0.0) -> float:
-    """Nearest x [m] at which the pan-tilt camera sees a point ``height`` [m] high.
+    """Nearest x [m] at which the camera sees a point ``height`` [m] high.
 
-    The robot stands at map ``yaw`` [rad]; the camera is panned towards the map's x and
-    tilted down as far as its limits allow, with the torso up (where the pick-up plan
-    looks from); -inf without a pan-tilt head, inf if it cannot look down.
+    The robot stands at map ``yaw`` [rad]; a pan-tilt camera is panned towards the map's x
+    and tilted down as far as its limits allow, with the torso up (where the pick-up plan
+    looks from), and aims its optical axis there; a head that only pans keeps its tilt and
+    sees down to the lower edge of its view. -inf when nothing limits it (no head, or a
+    camera an arm turns), inf if it cannot look down.
     """
     pt = desc.pan_tilt
+    means = looking_means(desc)
+    if pt is None and means is not None and means.kind == "pan" and means.joint is not None:
+        return _nearest_in_pan_view(desc, means.joint, height, yaw)
     tilt = finite_limits(desc.model.joints[pt.tilt_joint]) if pt is not None else None
     if pt is None or tilt is None or not desc.cameras:
         return -math.inf
@@ -167,7 +185,35 @@ def _nearest_in_view(desc: LoadedDescription, height: float, yaw: float = 0.0) -
     turn = Pose(orientation=quat.from_euler(0.0, 0.0, yaw))
     views = [turn * forward_kinematics(desc, {**joints, pt.tilt_joint: v}, frame) for v in tilt]
     view = max(views, key=_look_down)
-    angle = math.asin(min(_look_down(view), 1.0)) - LOOK_MARGIN
+    return _seen_from(view, math.asin(min(_look_down(view), 1.0)) - LOOK_MARGIN, height)
+
+
+def _nearest_in_pan_view(desc: LoadedDescription, pan: str, height: float, yaw: float) -> float:
+    """:func:`_nearest_in_view` for a head that only pans: its tilt stays, so the lower
+    edge of its view (half the vertical field below the optical axis) bounds it."""
+    camera = desc.cameras[0]
+    turn = Pose(orientation=quat.from_euler(0.0, 0.0, yaw))
+    view = turn * forward_kinematics(desc, {pan: _pan_to(desc, yaw, pan)}, camera.frame)
+    down = math.asin(max(-1.0, min(_look_down(view), 1.0))) + camera.vertical_fov / 2
+    return _seen_from(view, down - LOOK_MARGIN, height)
+
+
+def _view_note(desc: LoadedDescription) -> str:
+    """Why the view bounds the mug, where a head that only pans bounds it; else ''."""
+    means = looking_means(desc)
+    if desc.pan_tilt is not None or means is None or means.kind != "pan":
+        return ""
+    camera = desc.cameras[0]
+    down = math.asin(max(-1.0, min(_look_down(forward_kinematics(desc, {}, camera.frame)), 1.0)))
+    lowest = math.degrees(down + camera.vertical_fov / 2)
+    return (
+        f"; its head only pans ({means.joint}): its camera sees {lowest:.0f} degrees down at most"
+    )
+
+
+def _seen_from(view: Pose, angle: float, height: float) -> float:
+    """Nearest x [m] a camera at ``view`` sees a point ``height`` [m] high at, looking
+    down at most ``angle`` [rad]."""
     if angle <= 0.0:
         return math.inf
     x, _, z = view.position
@@ -223,17 +269,21 @@ def tabletop_placement(world: World, robot: str) -> TabletopPlacement:
             f"for a table under its hand (it would stand {height:.2f} m high): stand it "
             "higher (tabletop_scene puts such an arm on a pedestal)",
         )
-    placed, unfit = _placement_at(world, robot, arm, WRIST_BELOW_SHOULDER)
-    if placed is None:
-        raise UnfitRobotError(robot, unfit)
-    return placed
+    reasons = []
+    for below in WRISTS_BELOW_SHOULDER:
+        share = 1.0 if below == WRIST_BELOW_SHOULDER else RAISED_REACH_SHARE
+        placed, unfit = _placement_at(world, robot, arm, below, share)
+        if placed is not None:
+            return placed
+        reasons.append(unfit)
+    raise UnfitRobotError(robot, reasons[0])
 
 
 def _placement_at(
-    world: World, robot: str, arm: ArmDescription, below: float
+    world: World, robot: str, arm: ArmDescription, below: float, share: float = 1.0
 ) -> tuple[TabletopPlacement | None, str]:
-    """The placement with the grasping wrist ``below`` [m] under the shoulder, or None and
-    why it does not fit."""
+    """The placement with the grasping wrist ``below`` [m] under the shoulder and the mug
+    within ``share`` of the arm's reach, or None and why it does not fit."""
     desc = world.robot(robot).description
     torso = _joints_for_torso(desc, arm)
     root = world.pose(robot)
@@ -246,11 +296,11 @@ def _placement_at(
     seen = _nearest_in_view(desc, height - root.position[2], yaw)
     mug_x = max(past_base, shoulder[0] + REACH_SHARE * reach, seen)
     needed = math.dist(shoulder, (mug_x, shoulder[1], wrist_z))
-    if needed > reach:
+    if needed > share * reach:
         return None, (
             f"its {arm.name} arm reaches {reach:.2f} m but the mug in front of its base "
             f"and in its camera's view (from x = {seen:.2f} m) is {needed:.2f} m from the "
-            f"shoulder (table height {height:.2f} m)"
+            f"shoulder (table height {height:.2f} m){_view_note(desc)}"
         )
     side = SIDE_SHARE if _pans(desc, arm, torso) else 1.0
     return TabletopPlacement(arm.name, height, (mug_x, side * shoulder[1])), ""

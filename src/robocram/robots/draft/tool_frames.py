@@ -4,9 +4,11 @@ The approach is the direction from the wrist link to the middle of the hand's li
 opening is how the finger that moves most moves when the gripper opens (the joints'
 upper limits). A jaw turning about its own frame's origin against a fixed jaw (Unitree's
 Z1, the SO-101) moves no link frame: there the middles of the links' collision shapes
-are measured, the opening points the way the jaw opens, and an added frame sits at the
-middle of the closed jaw. An existing frame rigid with the wrist, named like a tool frame
-and reaching the fingers, is kept when its axes agree; otherwise a frame is added in code.
+are measured, the opening points the way the jaw opens, and an added frame sits in the
+middle of the opening, between the fixed jaw's inner face and the moving jaw open
+(``jaw_opening.py``; the closed jaw's middle lies inside the fixed jaw). An existing
+frame rigid with the wrist, named like a tool frame and reaching the fingers, is kept
+when its axes agree; otherwise a frame is added in code.
 """
 
 from __future__ import annotations
@@ -18,6 +20,7 @@ import numpy as np
 
 from robocram.robots.draft.finger_spread import opens_at_upper
 from robocram.robots.draft.hands import Hand
+from robocram.robots.draft.jaw_opening import jaw_opening_centre
 from robocram.robots.draft.link_poses import link_poses
 from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.link_centre import link_centre
@@ -68,9 +71,13 @@ def _closed(tree: ModelTree, hand: Hand, jaw: bool) -> dict[str, float]:
     """The gripper joints where the fingers close: the lower limits, or a turning jaw's own."""
     if not jaw:
         return _gripper_at(tree, hand, "closed")
+    return _gripper_at(tree, hand, "open" if _upper_closes(tree, hand) else "closed")
+
+
+def _upper_closes(tree: ModelTree, hand: Hand) -> bool:
+    """Whether a turning jaw closes at its joints' upper limits (the Z1's does)."""
     approach, _ = approach_and_opening(tree, hand)
-    upper = opens_at_upper(tree, hand, hand.gripper_joints[0], approach) is False
-    return _gripper_at(tree, hand, "open" if upper else "closed")
+    return opens_at_upper(tree, hand, hand.gripper_joints[0], approach) is False
 
 
 def _gripper_at(tree: ModelTree, hand: Hand, where: str) -> dict[str, float]:
@@ -143,6 +150,37 @@ def _fallback_opening(approach: np.ndarray) -> np.ndarray:
     return np.eye(3)[axis]
 
 
+def _between_jaws(
+    tree: ModelTree,
+    hand: Hand,
+    arm: str,
+    directions: tuple[np.ndarray, np.ndarray],
+    doubt: str | None,
+) -> ToolFrame | None:
+    """A one-sided jaw's frame at the middle of its opening (``jaw_opening.py``), or None
+    where the shapes show no fixed jaw facing the moving one."""
+    upper = _upper_closes(tree, hand)
+    closed = _gripper_at(tree, hand, "open" if upper else "closed")
+    opened = _gripper_at(tree, hand, "closed" if upper else "open")
+    centre = jaw_opening_centre(tree, hand, directions, closed, opened)
+    if centre is None:
+        return None
+    spec = FrameSpec(
+        f"{arm}_standard_tool_frame",
+        hand.end_effector_link,
+        Pose(
+            (float(centre[0]), float(centre[1]), float(centre[2])),
+            _orientation(*directions).orientation,
+        ),
+    )
+    out = float(centre @ directions[0])
+    why = (
+        "one jaw turns against a fixed one: added in the middle of the opening between the "
+        f"fixed jaw's inner face and the moving jaw open, {out:.3f} m out along the approach"
+    )
+    return ToolFrame(spec.name, spec, why, doubt)
+
+
 def tool_frame(tree: ModelTree, hand: Hand, arm: str) -> ToolFrame:
     """An existing tool frame that follows the convention, or one to add and why."""
     approach, opening = approach_and_opening(tree, hand)
@@ -153,6 +191,10 @@ def tool_frame(tree: ModelTree, hand: Hand, arm: str) -> ToolFrame:
         doubt = "the fingers did not move apart between the joint limits; check y = opening"
     elif jaw and opens_at_upper(tree, hand, hand.gripper_joints[0], approach) is False:
         opening = -opening  # measured towards the upper limits, where this jaw closes
+    if jaw:
+        between = _between_jaws(tree, hand, arm, (approach, opening), doubt)
+        if between is not None:
+            return between
     reach = _reach(tree, hand, approach, jaw)
     at_rest = _in_wrist(tree, hand, {})
     poses = link_poses(tree.model)

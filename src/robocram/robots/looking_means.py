@@ -1,0 +1,64 @@
+"""How a robot turns its camera towards a target: which joints looking may move.
+
+A pan-tilt head or a neck arm is described; other robots are read off the joints between
+the camera and the root link. A camera moved only by an arm's joints (a wrist camera, no
+neck: the Panda) looks by moving that arm to a viewing pose; a camera moved by one joint
+that belongs to no arm (Baxter's head, which only pans) looks by turning that joint and
+accepts the tilt it cannot change. A camera no joint moves (the torso aside) cannot look
+around: such a robot has no looking module, and a look fails as no matching module.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Literal
+
+from robocram.robots.description import LoadedDescription, RobotDescription
+
+MeansKind = Literal["pan_tilt", "neck_arm", "arm", "pan"]
+
+
+@dataclass(frozen=True)
+class LookingMeans:
+    """What turns the camera: ``arm`` names the arm carrying it, ``joint``/``link`` the
+    one joint (and its child link) of a head that only pans."""
+
+    kind: MeansKind
+    arm: str | None = None
+    joint: str | None = None
+    link: str | None = None
+
+
+def looking_means(desc: LoadedDescription) -> LookingMeans | None:
+    """How ``desc``'s first camera is aimed, or None when nothing can turn it."""
+    if not desc.cameras:
+        return None
+    if desc.pan_tilt is not None:
+        return LookingMeans("pan_tilt")
+    if desc.neck_arm is not None:
+        return LookingMeans("neck_arm")
+    model = desc.model
+    chain = model.chain(model.root_link, desc.cameras[0].frame)
+    moving = [
+        j for j in chain if j.type != "fixed" and j.mimic is None and j.name != desc.torso_joint
+    ]
+    if not moving:
+        return None
+    names = {j.name for j in moving}
+    for key, arm in desc.arms.items():
+        if names <= set(arm.joints):
+            return LookingMeans("arm", arm=key)
+    if len(moving) == 1 and moving[0].type in ("revolute", "continuous"):
+        return LookingMeans("pan", joint=moving[0].name, link=moving[0].child)
+    return None
+
+
+def with_looking(desc: RobotDescription, resources: tuple[str, ...]) -> tuple[str, ...]:
+    """``resources`` and, where a camera can be turned without a described head, ``ptu``
+    (after ``perception``, where a head's module starts)."""
+    if "ptu" in resources or not isinstance(desc, LoadedDescription):
+        return resources
+    if looking_means(desc) is None:
+        return resources
+    at = resources.index("perception") + 1
+    return (*resources[:at], "ptu", *resources[at:])
