@@ -11,6 +11,7 @@ from robocram.tf import Pose, Vector3
 from robocram.world import Camera, RobotObject, World
 
 FAR_MARGIN = 1.0  # [m] the aimed camera sees this far behind its target
+RAISE_MIN = 0.05  # [m] a wrist camera raised less than this is not tried apart
 
 
 def facing(camera_position: Vector3, target: Vector3) -> Pose:
@@ -55,6 +56,29 @@ def aimed_camera(world: World, robot: RobotObject, target: Vector3) -> Camera:
         camera.near,
         max(camera.near * 2, min(camera.far, beyond)),
     )
+
+
+def aimed_cameras(world: World, robot: RobotObject, target: Vector3) -> list[Camera]:
+    """The cameras a stand's check may look with: the robot's first camera where it is,
+    aimed at ``target``; for a camera an arm carries (no head, no neck: a wrist camera),
+    also that camera raised to the description's maximal height, where the arm can hold it
+    when it looks (``projection/look_by_arm.py``)."""
+    now = aimed_camera(world, robot, target)
+    desc = robot.description
+    base_z = world.pose(robot).position[2]
+    top = desc.cameras[0].maximal_height
+    if desc.pan_tilt is not None or desc.neck_arm is not None or top is None:
+        return [now]
+    x, y, z = now.pose.position
+    if base_z + top <= z + RAISE_MIN:
+        return [now]
+    high = (x, y, base_z + top)
+    beyond = math.dist(high, target) + FAR_MARGIN
+    raised = Camera(
+        facing(high, target), now.horizontal_fov, now.vertical_fov, now.near,
+        max(now.near * 2, min(camera_description(world, robot).far, beyond)),
+    )  # fmt: skip
+    return [now, raised]
 
 
 def pitch_to(camera_position: Vector3, target: Vector3) -> float:

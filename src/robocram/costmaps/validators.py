@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from robocram.costmaps.camera_aim import aimed_camera
+from robocram.costmaps.camera_aim import aimed_cameras
 from robocram.costmaps.cost_layer import LocationQuery
 from robocram.costmaps.errors import CostmapInputError
 from robocram.costmaps.grasps import GRASP_YAWS, approach_axis, grasp_point, grasp_poses, top_down
@@ -127,16 +127,19 @@ def visible(query: LocationQuery, pose: Pose) -> bool:
     with placed(world, robot, pose), parked(world, robot):
         if target is None:
             point = query.point(query.designator.get("target"), "target")
-            hit = point_blocker(world, aimed_camera(world, robot, point), point)
-            if hit is not None:
-                query.blame.occluding([hit.obj.name])
-            return hit is None
+            hits = [point_blocker(world, c, point) for c in aimed_cameras(world, robot, point)]
+            if all(hit is not None for hit in hits):
+                query.blame.occluding([hit.obj.name for hit in hits[:1] if hit is not None])
+                return False
+            return True
         obj = query.object(target, "object")
-        camera = aimed_camera(world, robot, query.point(obj, "object"))
-        seen = ray_visibility(world, camera, obj, VISIBILITY_RAYS)
-    if seen.fraction >= VISIBLE_FRACTION:
+        views = [
+            ray_visibility(world, camera, obj, VISIBILITY_RAYS)
+            for camera in aimed_cameras(world, robot, query.point(obj, "object"))
+        ]
+    if any(seen.fraction >= VISIBLE_FRACTION for seen in views):
         return True
-    query.blame.occluding(seen.occluders)
+    query.blame.occluding(views[0].occluders)
     return False
 
 

@@ -42,6 +42,7 @@ VIEW_RESTARTS = 20  # IK descents after the first per viewing place
 MIN_DISTANCE = 0.05  # [m] a camera this close to its target cannot look at it
 AIM_TOLERANCE = math.radians(1.0)  # [rad] an arm aimed joint by joint ends this near
 TURNING = ("revolute", "continuous")
+OCCLUDED = 0.1  # [m] a ray stopped farther than this from its end met what hides the target
 SIGHT_NEAR = 0.05  # [m] rays start this far out of the camera (as the world's do)
 SIGHT_OFFSETS = tuple(
     (dx, dy, dz) for dx in (-0.03, 0.03) for dy in (-0.03, 0.03) for dz in (0.0, 0.06)
@@ -141,7 +142,9 @@ def _turn_arm(robot: ProjectedRobot, arm: str, goal: dict[str, float]) -> dict[s
 def _sight_blocked(robot: ProjectedRobot, goal: dict[str, float], target: np.ndarray) -> bool:
     """Whether, with the joints at ``goal``, a ray from the camera to a point round the
     target meets the robot itself (its hand before a wrist camera: detecting wants nine
-    tenths of an object in sight). The world is as before after."""
+    tenths of an object in sight), or anything else short of the target by more than
+    :data:`OCCLUDED` (a counter's top before a camera held under it). The world is as
+    before after."""
     world = robot.world
     before = {j: v for j, v in world.joint_states(robot.name).items() if j in goal}
     world.set_joint_states(robot.name, goal)
@@ -152,7 +155,11 @@ def _sight_blocked(robot: ProjectedRobot, goal: dict[str, float], target: np.nda
         hits = world.view.ray_cast_batch([_point(p) for p in starts], [_point(p) for p in ends])
     finally:
         world.set_joint_states(robot.name, before)
-    return any(hit is not None and hit.obj.name == robot.name for hit in hits)
+    return any(
+        hit is not None
+        and (hit.obj.name == robot.name or math.dist(hit.position, _point(end)) > OCCLUDED)
+        for hit, end in zip(hits, ends, strict=True)
+    )
 
 
 def _point(vector: np.ndarray) -> tuple[float, float, float]:

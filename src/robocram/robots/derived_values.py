@@ -29,6 +29,10 @@ from robocram.robots.model_pose import finite_limits, link_pose, subtree_links
 from robocram.robots.robot_model import RobotModel
 from robocram.tf import Pose
 
+ARM_CAMERA_JOINTS = 3  # a camera this many joints move (no head) rides on an arm
+ARM_CAMERA_SAMPLES = 128  # arm configurations sampled for a wrist camera's heights
+ARM_CAMERA_SHARE = 0.9  # the quantile of those heights taken as its maximal height
+ARM_CAMERA_SEED = 0  # the configurations are the same at every load
 MIN_OPENING = 1e-4  # [m] a smaller growth of the finger gap means no opening was found
 
 
@@ -220,11 +224,39 @@ def derive_camera(
     limits = finite_limits(model.joints[torso]) if torso is not None else None
     stops = [base] if limits is None else [{**base, torso: value} for value in limits]
     heights = [link_pose(model, cam.frame, joints).position[2] for joints in stops]
+    heights.append(max(heights[-1], _arm_raised_height(desc, model, cam.frame, stops[-1])))
     return replace(
         cam,
         minimal_height=min(heights) if cam.minimal_height is None else cam.minimal_height,
         maximal_height=max(heights) if cam.maximal_height is None else cam.maximal_height,
     )
+
+
+def _arm_raised_height(
+    desc: RobotDescription, model: RobotModel, frame: str, joints: dict[str, float]
+) -> float:
+    """How high an arm carrying the camera (no head, no neck: a wrist camera) commonly
+    holds it: the :data:`ARM_CAMERA_SHARE` quantile of its height over seeded arm
+    configurations within the limits (``joints`` held). A camera no arm carries: -inf.
+
+    Plans choose where to look from by the camera's heights; a wrist camera's parked
+    height (a mobile arm's, under a counter's top) would rule out every counter.
+    """
+    if desc.pan_tilt is not None or desc.neck_arm is not None:
+        return -math.inf
+    chain = model.chain(model.root_link, frame)
+    moving = [j for j in chain if j.movable and j.mimic is None and j.name != desc.torso_joint]
+    if len(moving) < ARM_CAMERA_JOINTS:
+        return -math.inf
+    low, high = zip(*(finite_limits(j) or (-math.pi, math.pi) for j in moving), strict=True)
+    rng = np.random.default_rng(ARM_CAMERA_SEED)
+    samples = rng.uniform(low, high, (ARM_CAMERA_SAMPLES, len(moving)))
+    names = [j.name for j in moving]
+    heights = [
+        link_pose(model, frame, {**joints, **dict(zip(names, row, strict=True))}).position[2]
+        for row in samples.tolist()
+    ]
+    return float(np.quantile(heights, ARM_CAMERA_SHARE))
 
 
 def derive_links(desc: RobotDescription, model: RobotModel) -> dict[str, object]:
