@@ -243,10 +243,27 @@ class NearPairs:
         self._firsts = firsts or []  # per near label: where its run starts in ``runs``
         self._placed: dict[int, pin.SE3] = {}  # per part: its placement now
         self._query: tuple[coal.DistanceRequest, coal.DistanceResult] | None = None
+        self._gaps: dict[int, float] = {}  # per label measured to the reach: its gap
 
     def gap(self, k: int, below: float | None = None) -> float:
         """Near label ``k``'s least distance [m] less the slack; the reach (or ``below``,
-        if given) if it is farther."""
+        if given) if it is farther.
+
+        A gap measured to the reach is kept: asked again (a walk comes back to a
+        configuration, a contact check follows a clearance), it answers at once, the same
+        to the bit (below the reach, the least of the label's pairs nearer than ``below``
+        is its gap, when its gap is nearer than that)."""
+        kept = self._gaps.get(k)
+        if kept is not None and (below is None or below <= self._reach):
+            return kept if below is None or kept < below else below
+        best = self._measure(k, below)
+        if below is None:
+            self._gaps[k] = best
+        return best
+
+    def _measure(self, k: int, below: float | None) -> float:
+        """:meth:`gap` from coal: the label's pairs nearest bound first, while a bound is
+        below the least distance found."""
         if self._query is None:
             self._query = (coal.DistanceRequest(), coal.DistanceResult())
         request, result = self._query

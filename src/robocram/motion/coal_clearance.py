@@ -139,7 +139,7 @@ class CoalClearance:
     def colliding(self, q: Configuration, first_only: bool = False) -> list[LinkPair]:
         """The colliding pairs at ``q``: none when coal finds everything clear, else the
         judge's answer."""
-        if min(self.clearances(q).values(), default=CLEARANCE_REACH) > 0.0:
+        if self.clearance(q) > 0.0:  # the least of the clearances, to the bit
             return []
         return self.judge.colliding(q, first_only)
 
