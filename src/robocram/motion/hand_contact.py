@@ -72,7 +72,8 @@ def hand_at_start(world: World, robot: ObjectRef, hand: HandContact | None) -> H
     deepest = 0.0
     body = world.object(robot)
     links = [link for link in hand.links if link in body.link_index]
-    boxes = world.contacts.obstacle_boxes([body])  # one comparison for all its links
+    held = world.bodies.attachments(body)  # they move with it: their bounds change
+    boxes = None if held else world.contacts.obstacle_boxes([body])  # one comparison
     for link, other, other_link, gap in world.contacts.link_distances(
         robot, distance=0.0, links=links, obstacles=boxes
     ):

@@ -75,7 +75,7 @@ class IKStart:
             ignore,
             not carries_more,
             pairs,
-            None if carries_more else world.contacts.obstacle_boxes([robot.name]),  # as kept
+            None if carries_more else world.contacts.obstacle_boxes([body, *ignore]),
             dict.fromkeys(pairs, False) if apart else {},
         )
 
