@@ -210,9 +210,9 @@ class SelfDistances:
         key = np.asarray(q, dtype=float).tobytes()
         kept = self._kept.get(key)
         if kept is not None:  # the same values give the same answers, to the bit
-            lower, frames, self._placed, self._measured = kept
-            self._frames[moving.rows] = frames
-            return lower
+            self._frames[moving.rows] = kept[1]
+            self._placed, self._measured = kept[2], kept[3]
+            return kept[0]
         pin.forwardKinematics(self._model, self._data, self._slots.full(q))
         placed = self._data.oMi.tolist()  # views: read them now
         frames = np.array([placed[j].homogeneous for j in moving.ids]).reshape(-1, 4, 4)
