@@ -4,10 +4,8 @@ A candidate moves the links below its joints (the arm's, the torso's); the other
 where they start, so what they touch is the same at every candidate of the query and is
 asked once, as are their bounds. Self pairs touching at the start stay allowed; the start
 is asked about a pair only when it touches at a candidate. What each candidate puts back
-is read once too, and so are the other bodies' bounds (one comparison finds what a
-candidate's links overlap, not a broadphase query per link). A check asks
-:meth:`IKStart.holds` before each candidate and reads the start again if the robot stands
-otherwise; nothing but the robot may move in between.
+is read once too. A check asks :meth:`IKStart.holds` before each candidate and reads the
+start again if the robot stands otherwise; nothing but the robot may move in between.
 """
 
 from __future__ import annotations
@@ -18,7 +16,7 @@ from dataclasses import dataclass, field
 from robocram.motion.hand_contact import HandContact, contact_depth
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robots import RobotModel
-from robocram.world import ObstacleBoxes, WorldObject
+from robocram.world import WorldObject
 from robocram.world.link_contacts import Bounds, link_bounds, link_pairs_in_contact, self_contacts
 
 LinkPair = tuple[str, str]  # (robot link, object or object/link | robot link)
@@ -36,7 +34,6 @@ class IKStart:
     ignore: list[WorldObject]  # what may touch: the floor, what the robot holds
     alone: bool  # only the robot and what it holds (ignored) move: nothing they carry
     pairs: list[LinkPair]  # self pairs to check, unless they touch at the start
-    obstacles: ObstacleBoxes | None  # the others' bounds, read once (None: ask the broadphase)
     _at_start: dict[LinkPair, bool] = field(default_factory=dict)  # pair -> touching
     _dirty: dict[str, float] = field(default_factory=dict)  # deferred: values to put back
     _touching: set[LinkPair] = field(default_factory=set)  # the pairs touching at the start
@@ -75,7 +72,6 @@ class IKStart:
             ignore,
             not carries_more,
             pairs,
-            None if carries_more else world.contacts.obstacle_boxes([body, *ignore]),
             dict.fromkeys(pairs, False) if apart else {},
         )
 
@@ -152,7 +148,7 @@ class IKStart:
         ask = [n for i, n in colliders.items() if i in moved or n not in self._kept]
         found: dict[str, list[LinkPair]] = {n: [] for n in ask}
         for link, obj, other in link_pairs_in_contact(
-            world, body, self.ignore, self.distance, ask, self.obstacles, bounds
+            world, body, self.ignore, self.distance, ask, None, bounds
         ):
             several = len(obj.link_index) > 1
             found[link].append((link, f"{obj.name}/{other}" if several else obj.name))
