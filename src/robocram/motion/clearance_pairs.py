@@ -178,30 +178,30 @@ class ClearancePairs:
         """The pairs whose bound is below ``reach`` with the joints placed at ``frames``
         (rows, 4, 4, in map), per label: coal measures a label's only when asked."""
         if not self.table.size:
-            return NearPairs(self, frames, slack, reach, [], [], [])
+            return NearPairs(self, frames, slack, reach, [], [])
         boxes = frames[self.part_row] @ self.part_boxes  # the parts' boxes in map
         centres = boxes[:, :3, 3].T
         table = self._focused(centres, slack, reach).table
         if not table.size:
-            return NearPairs(self, frames, slack, reach, [], [], [])
+            return NearPairs(self, frames, slack, reach, [], [])
         halves = np.abs(boxes[:, :3, :3]).sum(axis=2).T  # three terms: summed in order
         lower = table.box_bounds(centres, halves, slack)
         near = (lower < reach).nonzero()[0]
         if not near.size:
-            return NearPairs(self, frames, slack, reach, [], [], [])
-        ints = table.ints[:, near].tolist()
-        # by label, nearest bound first (ties: in table order)
-        order = sorted(zip(ints[1], lower[near].tolist(), ints[0], ints[2], strict=True))
-        labels: list[int] = []
-        bounds: list[float] = []
-        runs: list[list[tuple[float, int, int]]] = []
-        for label, bound, m, piece in order:
-            if not labels or labels[-1] != label:
-                labels.append(label)
-                bounds.append(bound)
-                runs.append([])
-            runs[-1].append((bound, m, piece))
-        return NearPairs(self, frames, slack, reach, labels, bounds, runs)
+            return NearPairs(self, frames, slack, reach, [], [])
+        ints = table.ints[:, near]
+        found = lower[near]
+        # by label, nearest bound first (ties: part, then piece), as tuples would sort
+        order = np.lexsort((ints[2], ints[0], found, ints[1]))
+        labels = ints[1, order]
+        starts = np.flatnonzero(labels[1:] != labels[:-1]) + 1
+        firsts = [0, *starts.tolist()]
+        runs = _Runs(found[order].tolist(), ints[0, order].tolist(), ints[2, order].tolist(),
+                     [*firsts[1:], len(order)])  # fmt: skip
+        return NearPairs(
+            self, frames, slack, reach, labels[firsts].tolist(), [runs.bounds[k] for k in firsts],
+            runs, firsts,
+        )  # fmt: skip
 
     def _focused(self, centres: FloatArray, slack: float, reach: float) -> _Focus:
         """The focus for balls at ``centres`` (3, parts): the last one unless a ball has
@@ -230,7 +230,8 @@ class NearPairs:
         reach: float,
         labels: list[int],
         bounds: list[float],
-        runs: list[list[tuple[float, int, int]]],
+        runs: _Runs | None = None,
+        firsts: list[int] | None = None,
     ) -> None:
         self.names = [pairs.names[label] for label in labels]  # the near labels' names
         self.bounds = bounds  # per near label: a lower bound [m] on its gap
@@ -238,22 +239,45 @@ class NearPairs:
         self._frames = frames
         self._slack = slack
         self._reach = reach
-        self._runs = runs  # per near label: (bound, part, piece), least bound first
+        self._runs = runs  # the near pairs by label, each label's least bound first
+        self._firsts = firsts or []  # per near label: where its run starts in ``runs``
         self._placed: dict[int, pin.SE3] = {}  # per part: its placement now
         self._query: tuple[coal.DistanceRequest, coal.DistanceResult] | None = None
+        self._gaps: dict[int, float] = {}  # per label measured to the reach: its gap
 
     def gap(self, k: int, below: float | None = None) -> float:
         """Near label ``k``'s least distance [m] less the slack; the reach (or ``below``,
-        if given) if it is farther."""
+        if given) if it is farther.
+
+        A gap measured to the reach is kept: asked again (a walk comes back to a
+        configuration, a contact check follows a clearance), it answers at once, the same
+        to the bit (below the reach, the least of the label's pairs nearer than ``below``
+        is its gap, when its gap is nearer than that)."""
+        kept = self._gaps.get(k)
+        if kept is not None and (below is None or below <= self._reach):
+            return kept if below is None or kept < below else below
+        best = self._measure(k, below)
+        if below is None:
+            self._gaps[k] = best
+        return best
+
+    def _measure(self, k: int, below: float | None) -> float:
+        """:meth:`gap` from coal: the label's pairs nearest bound first, while a bound is
+        below the least distance found."""
         if self._query is None:
             self._query = (coal.DistanceRequest(), coal.DistanceResult())
         request, result = self._query
         distance, pairs, placed = coal.distance, self._pairs, self._placed
         geometries, placements, parts = pairs.geometries, pairs.placements, pairs.parts
         best = self._reach if below is None else below
-        for bound, m, piece in self._runs[k]:
-            if bound >= best:
+        runs = self._runs
+        if runs is None:
+            return best
+        bounds, part_of, piece_of = runs.bounds, runs.parts, runs.pieces
+        for row in range(self._firsts[k], runs.ends[k]):
+            if bounds[row] >= best:
                 break  # the label's other pairs are farther still
+            m, piece = part_of[row], piece_of[row]
             pose = placed.get(m)
             if pose is None:
                 pose = placed[m] = pin.SE3(self._frames[pairs.part_row[m]]) * parts[m].placement
@@ -288,6 +312,18 @@ class NearPairs:
             if found < self._reach:
                 gaps[name] = found
         return gaps
+
+
+@dataclass(frozen=True)
+class _Runs:
+    """A check's near pairs sorted by label, then bound: per row its bound, part and
+    piece (lists: :meth:`NearPairs.gap` reads single values), and per label where its
+    rows end."""
+
+    bounds: list[float]
+    parts: list[int]
+    pieces: list[int]
+    ends: list[int]
 
 
 @dataclass(frozen=True)

@@ -43,6 +43,7 @@ from robocram.robots import RobotModel
 # to ~0.7 mm more; coal's distances are lowered by this so they never exceed PyBullet's
 # (tests/motion/test_motion_coal_clearance.py measures it near the kitchen counter).
 BULLET_MARGIN = 0.002
+POSED_KEPT = 8  # configurations a checker keeps posed: walks come back to a segment's ends
 
 
 class CoalClearance:
@@ -80,6 +81,7 @@ class CoalClearance:
         self._carriers = _Carriers.of(tree, self._data, self._slots, setup.joints)
         self._frames: FloatArray = np.zeros((len(self._joints), 4, 4))  # placements, last check
         self._last: tuple[bytes, dict[str, float]] | None = None  # q -> its clearances
+        self._kept: dict[bytes, tuple[FloatArray, FloatArray, NearPairs]] = {}  # q -> posed
 
     @property
     def joints(self) -> tuple[str, ...]:
@@ -118,15 +120,26 @@ class CoalClearance:
         return self._posed(np.asarray(q, dtype=float))
 
     def _posed(self, values: FloatArray) -> NearPairs:
-        self._q = self._slots.full(values)
-        pin.forwardKinematics(self._model, self._data, self._q)
-        self._frames = self._carriers.frames(self._data, self._base_matrix)
-        return self._pairs.near(self._frames, self._slack, CLEARANCE_REACH)
+        """The robot posed at ``values``: pinocchio's configuration, the joints' frames and
+        the near pairs, kept for the last :data:`POSED_KEPT` configurations (the same
+        values give the same answer, to the bit)."""
+        key = values.tobytes()
+        kept = self._kept.get(key)
+        if kept is None:
+            q = self._slots.full(values)
+            pin.forwardKinematics(self._model, self._data, q)
+            frames = self._carriers.frames(self._data, self._base_matrix)
+            kept = (q, frames, self._pairs.near(frames, self._slack, CLEARANCE_REACH))
+            if len(self._kept) >= POSED_KEPT:
+                del self._kept[next(iter(self._kept))]  # the oldest
+            self._kept[key] = kept
+        self._q, self._frames, near = kept
+        return near
 
     def colliding(self, q: Configuration, first_only: bool = False) -> list[LinkPair]:
         """The colliding pairs at ``q``: none when coal finds everything clear, else the
         judge's answer."""
-        if min(self.clearances(q).values(), default=CLEARANCE_REACH) > 0.0:
+        if self.clearance(q) > 0.0:  # the least of the clearances, to the bit
             return []
         return self.judge.colliding(q, first_only)
 

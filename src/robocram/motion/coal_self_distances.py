@@ -34,6 +34,7 @@ from robocram.motion.robot_geometry import Part, RobotGeometry
 # 2.01 mm), and its GJK errs by up to ~0.7 mm more (:mod:`coal_clearance`)
 SELF_MARGIN = 0.003
 NO_PARTS = -np.inf  # the bound of a pair coal has no parts for: PyBullet must measure it
+KEPT_POSES = 4  # configurations whose bounds and distances a motion's check keeps
 
 
 @dataclass(frozen=True)
@@ -184,6 +185,12 @@ class SelfDistances:
         self._parts = parts
         self._margin = margin
         self._placed: dict[int, pin.SE3] = {}  # the moved parts' poses at the last check
+        self._measured: dict[int, float] = {}  # per pair: its distance at the last check
+        # per configuration checked lately: its bounds, moved frames, poses and distances
+        # (a walk starts where the check was made, a plan's segments share their ends)
+        self._kept: dict[
+            bytes, tuple[FloatArray, FloatArray, dict[int, pin.SE3], dict[int, float]]
+        ] = {}
         self._still: dict[int, pin.SE3] = {}  # the other parts' poses: they never move
         self._query = (coal.DistanceRequest(), coal.DistanceResult())
         pin.forwardKinematics(self._model, self._data, self._slots.q0)
@@ -200,6 +207,12 @@ class SelfDistances:
         between its links, from the parts' balls and boxes (the larger bound of the two
         per pair of parts; :data:`NO_PARTS` where coal has none)."""
         parts, moving = self._parts, self._moving
+        key = np.asarray(q, dtype=float).tobytes()
+        kept = self._kept.get(key)
+        if kept is not None:  # the same values give the same answers, to the bit
+            self._frames[moving.rows] = kept[1]
+            self._placed, self._measured = kept[2], kept[3]
+            return kept[0]
         pin.forwardKinematics(self._model, self._data, self._slots.full(q))
         placed = self._data.oMi.tolist()  # views: read them now
         frames = np.array([placed[j].homogeneous for j in moving.ids]).reshape(-1, 4, 4)
@@ -223,6 +236,10 @@ class SelfDistances:
         else:
             lower = np.minimum.reduceat(balls, parts.starts) - self._margin
         lower[parts.empty] = NO_PARTS
+        self._measured = {}
+        if len(self._kept) >= KEPT_POSES:
+            del self._kept[next(iter(self._kept))]  # the oldest
+        self._kept[key] = (lower, frames, self._placed, self._measured)
         return lower
 
     def distance(self, k: int) -> float:
@@ -231,6 +248,9 @@ class SelfDistances:
         parts = self._parts
         if parts.empty[k]:
             return NO_PARTS
+        kept = self._measured.get(k)
+        if kept is not None:
+            return kept
         request, result = self._query
         best = np.inf
         geometries = parts.parts
@@ -241,7 +261,8 @@ class SelfDistances:
                 request, result,
             )  # fmt: skip
             best = min(best, found)
-        return float(best) - self._margin
+        self._measured[k] = float(best) - self._margin
+        return self._measured[k]
 
     def touching(self, distance: float) -> bool:
         """Whether a :meth:`distance` is too near for coal's word: PyBullet must measure."""

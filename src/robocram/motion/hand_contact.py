@@ -72,8 +72,10 @@ def hand_at_start(world: World, robot: ObjectRef, hand: HandContact | None) -> H
     deepest = 0.0
     body = world.object(robot)
     links = [link for link in hand.links if link in body.link_index]
+    held = world.bodies.attachments(body)  # they move with it: their bounds change
+    boxes = None if held else world.contacts.obstacle_boxes([body])  # one comparison
     for link, other, other_link, gap in world.contacts.link_distances(
-        robot, distance=0.0, links=links
+        robot, distance=0.0, links=links, obstacles=boxes
     ):
         named = f"{other.name}/{other_link}" if len(other.link_index) > 1 else other.name
         if gap < 0.0 and hand.covers(link, named):

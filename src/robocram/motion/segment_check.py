@@ -222,17 +222,13 @@ class _LocalSteps:
                 touching = touching or exact[k] <= 0.0
         if not self.links:
             return 1.0, touching
-        speed = self.checker.link_speeds(self.links, self.delta).tolist()
+        speeds = self.checker.link_speeds(self.links, self.delta)
+        speed = speeds.tolist()
         grow = self.grow
         rows = {
             k: row for k, name in enumerate(near.names) if (row := self.index.get(name)) is not None
         }
-        free = max(reach, least)
-        taken = set(rows.values())
-        best = min(
-            (_step_of(speed[r], grow[r], free) for r in range(len(speed)) if r not in taken),
-            default=math.inf,
-        )
+        best = _least_free_step(speeds, self.turn, max(reach, least), list(rows.values()))
         hopeful = sorted(
             (_step_of(speed[row], grow[row], max(near.bounds[k], least)), k, row)
             for k, row in rows.items()
@@ -243,6 +239,22 @@ class _LocalSteps:
             gap = exact[k] if k in exact else near.gap(k)
             best = min(best, _step_of(speed[row], grow[row], max(gap, least)))
         return best, touching
+
+
+def _least_free_step(speed: FloatArray, turn: FloatArray, free: float, taken: list[int]) -> float:
+    """The least :func:`_step_of` of the links not ``taken`` (rows), each clear by ``free``
+    [m], on arrays: the same operations on the same values (the same bits) at a
+    fraction of a call per link."""
+    if taken:
+        keep = np.ones(len(speed), dtype=bool)
+        keep[taken] = False
+        speed, turn = speed[keep], turn[keep]
+    if not len(speed):
+        return math.inf
+    denominator = speed + np.sqrt(speed * speed + 4.0 * (turn / 2) * free)
+    steps = np.full(len(speed), math.inf)
+    np.divide(2.0 * free, denominator, out=steps, where=denominator > 0.0)
+    return float(steps.min())
 
 
 def _step_of(speed: float, grow: float, gap: float) -> float:

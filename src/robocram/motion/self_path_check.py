@@ -66,7 +66,7 @@ class SelfPathCheck:
         standing = {j: v for j, v in now.items() if model.joints[j].mimic is None}
         geometry = model.derived(RobotGeometry.of)
         distances = SelfDistances(geometry, parts, joints, standing, SELF_MARGIN)
-        floors = _floors(robot, pairs, distances.bounds(np.array([now[j] for j in joints])))
+        floors = _floors(robot, pairs, distances, np.array([now[j] for j in joints]))
         return cls(world, robot.name, joints, pairs, levers, floors, distances)
 
     def colliding(self, q: Sequence[float]) -> list[LinkPair]:
@@ -172,14 +172,19 @@ class _Steps:
             return segment, min(s + float(share), 1.0)
 
 
-def _floors(robot: RobotHandle, pairs: tuple[LinkPair, ...], bounds: FloatArray) -> FloatArray:
-    """Per pair: nearer than this [m] is a collision; a pair touching now may stay as deep
-    (:data:`DEEPEN` more). PyBullet measures only the pairs coal's ``bounds`` (lower
-    bounds on PyBullet's distances, as the robot stands) do not find apart: the others'
-    floor is -DEEPEN, as PyBullet's positive distance would make it."""
+def _floors(
+    robot: RobotHandle, pairs: tuple[LinkPair, ...], distances: SelfDistances, q: FloatArray
+) -> FloatArray:
+    """Per pair: nearer than this [m] is a collision; a pair touching now (at ``q``) may
+    stay as deep (:data:`DEEPEN` more). PyBullet measures only the pairs coal does not
+    find apart, first by their bounds, then by coal's distance (both lower bounds on
+    PyBullet's distance, as the robot stands): the others' floor is -DEEPEN, as PyBullet's
+    positive distance would make it."""
     world = robot.world
     floors = np.full(len(pairs), -DEEPEN)
-    near = np.flatnonzero(~(bounds > 0.0)).tolist()
+    bounds = distances.bounds(q)
+    near = [k for k in np.flatnonzero(~(bounds > 0.0)).tolist()
+            if distances.touching(distances.distance(k))]  # fmt: skip
     if near:
         measured = world.contacts.self_distances(robot.name, [pairs[k] for k in near], 0.0)
         floors[near] = np.minimum(measured, 0.0) - DEEPEN

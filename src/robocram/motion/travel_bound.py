@@ -15,6 +15,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from functools import partial
 
 import numpy as np
 
@@ -22,10 +23,11 @@ from robocram.motion.errors import MotionError
 from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.mimic_family import mimic_family
 from robocram.robots import RobotModel
-from robocram.world import RobotHandle
+from robocram.world import Derived, RobotHandle, Versions, World
 
 MAX_LINK_TRAVEL = 0.01  # [m] between two checked configurations
 MAX_JOINT_STEP = 0.02  # [rad | m] of any joint between two checked configurations
+KEPT_BOUNDS = 32  # bounds a world keeps (robots, joint sets, what they hold)
 
 
 @dataclass(frozen=True)
@@ -77,29 +79,57 @@ class TravelBound:
                 f"check resolution must be positive, got {max_link_travel} m and "
                 f"{max_joint_step} rad"
             )
-        model = robot.description.model
         radius = link_radii(robot) if held else world.contacts.link_radii(robot.name)
-        children = model.derived(_children)
-        lever = []
-        per_link: dict[str, FloatArray] = {}
-        mimicked = False
-        for i, name in enumerate(joints):
-            joint = model.joints.get(name)
-            if joint is None or not joint.movable:
-                raise MotionError(f"{name!r} is not a movable joint of {robot.name}")
-            reach = _family_reaches(model, name, children, radius)
-            mimicked = mimicked or len(mimic_family(model, name)) > 1
-            for link, value in reach.items():
-                row = per_link.get(link)
-                if row is None:
-                    row = per_link[link] = np.zeros(len(joints))
-                row[i] = value
-            lever.append(max(reach.values(), default=0.0))
         carriers = dict(world.bodies.attachments(robot.name)) if held else {}
-        return cls(
-            tuple(joints), np.array(lever), max_link_travel, max_joint_step, per_link, carriers,
-            mimicked,
+        key = (
+            robot.name, tuple(joints), max_link_travel, max_joint_step,
+            tuple(sorted(carriers.items())),
+            tuple((link, radius.get(link)) for link in sorted(set(carriers.values()))),
         )  # fmt: skip
+        made = partial(_made, robot, key[1], radius, carriers, max_link_travel, max_joint_step)
+        return world.derived(_kept_bounds).get(key, made, world.versions)
+
+
+def _made(
+    robot: RobotHandle,
+    joints: tuple[str, ...],
+    radius: dict[str, float],
+    carriers: dict[str, str],
+    max_link_travel: float,
+    max_joint_step: float,
+) -> TravelBound:
+    """:meth:`TravelBound.of` from the links' radii and what the robot holds."""
+    model = robot.description.model
+    children = model.derived(_children)
+    lever = []
+    per_link: dict[str, FloatArray] = {}
+    mimicked = False
+    for i, name in enumerate(joints):
+        joint = model.joints.get(name)
+        if joint is None or not joint.movable:
+            raise MotionError(f"{name!r} is not a movable joint of {robot.name}")
+        reach = _family_reaches(model, name, children, radius)
+        mimicked = mimicked or len(mimic_family(model, name)) > 1
+        for link, value in reach.items():
+            row = per_link.get(link)
+            if row is None:
+                row = per_link[link] = np.zeros(len(joints))
+            row[i] = value
+        lever.append(max(reach.values(), default=0.0))
+    return TravelBound(
+        joints, np.array(lever), max_link_travel, max_joint_step, per_link, carriers, mimicked
+    )
+
+
+def _kept_bounds(world: World) -> Derived[tuple[object, ...], TravelBound]:
+    """Bounds kept with the world while the robot's body is the same: they follow from
+    its model, its links' radii (read once per body) and what it holds at which radius
+    (in the key); every checked motion asks for one."""
+    return Derived(_robot_created, size=KEPT_BOUNDS)
+
+
+def _robot_created(versions: Versions, key: tuple[object, ...]) -> int:
+    return versions.created(str(key[0]))
 
 
 def _family_reaches(

@@ -132,8 +132,8 @@ class KeptObstacleBoxes:
 
     _bodies: Derived[str, _BodyBoxes] = field(default_factory=lambda: Derived(Versions.body))
     _tables: Derived[tuple[frozenset[str], tuple[str, ...]], ObstacleBoxes] = field(
-        default_factory=lambda: Derived(_table_stamp, size=1)
-    )  # the table last asked for
+        default_factory=lambda: Derived(_table_stamp, size=4)
+    )  # the tables last asked for (a motion's checks and IK's skip different bodies)
 
     def boxes(self, world: WorldFacade, skip: Iterable[str]) -> ObstacleBoxes:
         """:meth:`ObstacleBoxes.of`, from the bodies' bounds kept while they stay put."""
