@@ -79,7 +79,7 @@ def _top(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
 
 def _side(shape: ObjectShape, hand: Hand, name: str) -> Iterator[Grasp]:
     facing = {"front": SIDES[1], "left": SIDES[2], "right": SIDES[3]}[name]
-    if shape.handle is not None and _reach(shape, facing) > shape.radius + HANDLE_MARGIN:
+    if shape.handle is not None and shape.reach(facing) > shape.radius + HANDLE_MARGIN:
         return  # the hand would come in through the handle
     cx, cy = shape.centre
     sx, sy, height = shape.size
@@ -99,21 +99,13 @@ def _side(shape: ObjectShape, hand: Hand, name: str) -> Iterator[Grasp]:
         yield _grasp(hand, name, turn, at, approach, opening, width)
 
 
-def _reach(shape: ObjectShape, side: Vector3) -> float:
-    """[m] from the body's axis to the box's side in direction ``side``."""
-    cx, cy = shape.centre
-    if side[0]:
-        return shape.high[0] - cx if side[0] > 0 else cx - shape.low[0]
-    return shape.high[1] - cy if side[1] > 0 else cy - shape.low[1]
-
-
 def _rim(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
     if shape.wall is None:
         return
     cx, cy = shape.centre
     r = shape.radius
     for side in SIDES:
-        if _reach(shape, side) > r + HANDLE_MARGIN:
+        if shape.reach(side) > r + HANDLE_MARGIN:
             continue  # a handle on this side
         d = r - shape.wall / 2
         at = (cx + side[0] * d, cy + side[1] * d, shape.high[2] - RIM_DEPTH)
@@ -126,8 +118,8 @@ def _handle(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
     if shape.handle is None:
         return
     r = shape.radius
-    side = max(SIDES, key=lambda s: _reach(shape, s))
-    out = _reach(shape, side)
+    side = max(SIDES, key=lambda s: shape.reach(s))
+    out = shape.reach(side)
     if out <= r + HANDLE_MARGIN:
         return
     cx, cy = shape.centre

@@ -53,6 +53,13 @@ class ObjectShape:
         cx, cy = self.centre
         return min(self.high[0] - cx, cx - self.low[0], self.high[1] - cy, cy - self.low[1])
 
+    def reach(self, side: Vector3) -> float:
+        """[m] from the body's axis to the box's side in direction ``side`` (an axis)."""
+        cx, cy = self.centre
+        if side[0]:
+            return self.high[0] - cx if side[0] > 0 else cx - self.low[0]
+        return self.high[1] - cy if side[1] > 0 else cy - self.low[1]
+
 
 def _inside(value: float, low: float, high: float) -> float:
     return value if low < value < high else (low + high) / 2

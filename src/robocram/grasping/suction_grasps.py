@@ -41,13 +41,6 @@ def _touch(hand: Hand, name: str, turn: float, at: Vector3) -> Grasp:
     return Grasp(name, turn, pose, DOWN, PRE_GRASP, LIFT, 0.0, across)
 
 
-def _reach(shape: ObjectShape, side: Vector3) -> float:
-    cx, cy = shape.centre
-    if side[0]:
-        return shape.high[0] - cx if side[0] > 0 else cx - shape.low[0]
-    return shape.high[1] - cy if side[1] > 0 else cy - shape.low[1]
-
-
 def _top(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
     if shape.wall is not None:
         return  # hollow: the top is an opening
@@ -62,7 +55,7 @@ def _rim(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
     cx, cy = shape.centre
     d = shape.radius - shape.wall / 2
     for side in SIDES:
-        if _reach(shape, side) > shape.radius + HANDLE_MARGIN:
+        if shape.reach(side) > shape.radius + HANDLE_MARGIN:
             continue  # a handle on this side
         at = (cx + side[0] * d, cy + side[1] * d, shape.high[2])
         for turn in TURNS:
