@@ -427,22 +427,22 @@ def _grid(
 
 
 def _contacts_now(
-    world: World,
-    robot: str,
+    robot: RobotHandle,
     carried: tuple[str, ...],
     allowed_links: frozenset[str],
     obstacles: ObstacleBoxes | None = None,
 ) -> Iterator[tuple[str, str]]:
     """``(part of the robot, object/link it touches)`` pairs where the robot is now, the
     floor and the ``allowed_links`` left out."""
+    world, name = robot.world, robot.name
     floors = [o.name for o in world.objects("floor")]
-    group = [robot, *carried]
+    group = [name, *carried]
     for body in group:
         ignore = floors + [g for g in group if g != body]
         for link, other, other_link in world.contacts.link_pairs_in_contact(
             body, ignore=ignore, distance=CONTACT, obstacles=obstacles
         ):
-            if body == robot and link in allowed_links:
+            if body == name and link in allowed_links:
                 continue
             yield f"{body}/{link}", _named(other, other_link)
 
@@ -458,7 +458,7 @@ def blockers_at(
     x, y, yaw = (float(v) for v in pose)
     world.set_pose(robot.name, Pose((x, y, start.position[2]), quat.from_euler(0.0, 0.0, yaw)))
     try:
-        pairs = _contacts_now(world, robot.name, robot.holding(), allowed_links)
+        pairs = _contacts_now(robot, robot.holding(), allowed_links)
         return sorted({other for _, other in pairs})
     finally:
         world.set_pose(robot.name, start)

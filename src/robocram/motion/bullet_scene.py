@@ -52,6 +52,7 @@ class BulletScene:
         self.contacts = tuple(contacts)  # held objects' named contacts, each bounded
         self.hand = hand  # the hand's bounded contact (allow_hand), None: no such contact
         self.robot = robot.name
+        self.handle = robot  # the robot the scene is of (its name is ``robot``)
         self._joints = tuple(joints)
         known = world.joint_states(robot.name)
         unknown = [j for j in self._joints if j not in known]
@@ -192,7 +193,7 @@ class BulletScene:
     def lever_data(self) -> LeverData:
         """What :meth:`joint_levers` needs beyond the frames, read once."""
         if self._levers is None:
-            self._levers = LeverData.of(self.world, self.robot, self._joints, self.moving_links)
+            self._levers = LeverData.of(self.handle, self._joints, self.moving_links)
         return self._levers
 
     def _clearance_now(self, reach: float) -> float:

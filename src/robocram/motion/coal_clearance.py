@@ -28,6 +28,7 @@ import pinocchio as pin
 from numpy.typing import NDArray
 
 from robocram.kinematics.robot_kinematics import pose_to_se3, robot_kinematics
+from robocram.logic.lru import LRUCache
 from robocram.motion.bullet_scene import CLEARANCE_REACH, BulletScene
 from robocram.motion.clearance_pairs import NearPairs
 from robocram.motion.clearance_setup import SetupCache
@@ -81,7 +82,9 @@ class CoalClearance:
         self._carriers = _Carriers.of(tree, self._data, self._slots, setup.joints)
         self._frames: FloatArray = np.zeros((len(self._joints), 4, 4))  # placements, last check
         self._last: tuple[bytes, dict[str, float]] | None = None  # q -> its clearances
-        self._kept: dict[bytes, tuple[FloatArray, FloatArray, NearPairs]] = {}  # q -> posed
+        self._kept: LRUCache[bytes, tuple[FloatArray, FloatArray, NearPairs]] = LRUCache(
+            POSED_KEPT
+        )  # q -> posed
 
     @property
     def joints(self) -> tuple[str, ...]:
@@ -130,9 +133,7 @@ class CoalClearance:
             pin.forwardKinematics(self._model, self._data, q)
             frames = self._carriers.frames(self._data, self._base_matrix)
             kept = (q, frames, self._pairs.near(frames, self._slack, CLEARANCE_REACH))
-            if len(self._kept) >= POSED_KEPT:
-                del self._kept[next(iter(self._kept))]  # the oldest
-            self._kept[key] = kept
+            self._kept.put(key, kept)
         self._q, self._frames, near = kept
         return near
 

@@ -24,6 +24,7 @@ import pinocchio as pin
 from numpy.typing import NDArray
 
 from robocram.kinematics.robot_kinematics import RobotKinematics
+from robocram.logic.lru import LRUCache
 from robocram.motion.configuration_checker import LinkPair
 from robocram.motion.joint_slots import JointSlots
 from robocram.motion.joint_trajectory import FloatArray
@@ -188,9 +189,9 @@ class SelfDistances:
         self._measured: dict[int, float] = {}  # per pair: its distance at the last check
         # per configuration checked lately: its bounds, moved frames, poses and distances
         # (a walk starts where the check was made, a plan's segments share their ends)
-        self._kept: dict[
+        self._kept: LRUCache[
             bytes, tuple[FloatArray, FloatArray, dict[int, pin.SE3], dict[int, float]]
-        ] = {}
+        ] = LRUCache(KEPT_POSES)
         self._still: dict[int, pin.SE3] = {}  # the other parts' poses: they never move
         self._query = (coal.DistanceRequest(), coal.DistanceResult())
         pin.forwardKinematics(self._model, self._data, self._slots.q0)
@@ -237,9 +238,7 @@ class SelfDistances:
             lower = np.minimum.reduceat(balls, parts.starts) - self._margin
         lower[parts.empty] = NO_PARTS
         self._measured = {}
-        if len(self._kept) >= KEPT_POSES:
-            del self._kept[next(iter(self._kept))]  # the oldest
-        self._kept[key] = (lower, frames, self._placed, self._measured)
+        self._kept.put(key, (lower, frames, self._placed, self._measured))
         return lower
 
     def distance(self, k: int) -> float:

@@ -19,7 +19,7 @@ from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.mimic_family import mimic_family
 from robocram.motion.travel_bound import link_radii
 from robocram.robots import RobotModel
-from robocram.world import RobotHandle, World
+from robocram.world import RobotHandle
 
 
 @dataclass(frozen=True)
@@ -42,20 +42,18 @@ class LeverData:
     _masks: dict[bytes, tuple[FloatArray, FloatArray]] = field(default_factory=dict)
 
     @classmethod
-    def of(
-        cls, world: World, robot: str, joints: Sequence[str], moving: Sequence[str]
-    ) -> LeverData:
-        model = world.robot(robot).description.model
+    def of(cls, robot: RobotHandle, joints: Sequence[str], moving: Sequence[str]) -> LeverData:
+        world, model = robot.world, robot.description.model
         children = [model.joints[j].child for j in joints]
         frame_links = tuple(dict.fromkeys([*moving, *children]))
         at = {link: k for k, link in enumerate(frame_links)}
-        radii = link_radii(RobotHandle.of(world, robot))
+        radii = link_radii(robot)
         tree = model.derived(_tree)
         chains = [_chains(tree, child) for child in children]  # per joint: link -> length
         return cls(
             frame_links,
             {link: k for k, link in enumerate(moving)},
-            dict(world.bodies.attachments(robot)),
+            dict(world.bodies.attachments(robot.name)),
             np.array([at[link] for link in moving], dtype=np.intp),
             np.array([at[c] for c in children], dtype=np.intp),
             np.array([model.joints[j].axis for j in joints], dtype=float).reshape(-1, 3),

@@ -44,8 +44,7 @@ KEPT = 32  # robots and joint sets whose pairs a world keeps
 class SelfPathCheck:
     """The self pairs one motion of ``joints`` must keep apart, with their levers."""
 
-    world: World
-    robot: str
+    robot: RobotHandle
     joints: tuple[str, ...]
     pairs: tuple[LinkPair, ...]
     levers: FloatArray  # (pairs, joints) [m per unit]: relative travel per joint change
@@ -57,7 +56,7 @@ class SelfPathCheck:
         """The check of a motion of ``joints`` from where the robot is now."""
         world = robot.world
         joints = tuple(joints)
-        build = partial(_moved_pairs, world, robot.name, joints)
+        build = partial(_moved_pairs, robot, joints)
         pairs, levers, parts = world.derived(_kept_pairs).get(
             (robot.name, joints), build, world.versions
         )
@@ -67,13 +66,13 @@ class SelfPathCheck:
         geometry = model.derived(RobotGeometry.of)
         distances = SelfDistances(geometry, parts, joints, standing, SELF_MARGIN)
         floors = _floors(robot, pairs, distances, np.array([now[j] for j in joints]))
-        return cls(world, robot.name, joints, pairs, levers, floors, distances)
+        return cls(robot, joints, pairs, levers, floors, distances)
 
     def colliding(self, q: Sequence[float]) -> list[LinkPair]:
         """The pairs colliding at ``q``."""
         if not self.pairs:
             return []
-        posing = _Posing(self.world, self.robot, self.joints)
+        posing = _Posing(self.robot, self.joints)
         try:
             gaps = self._gaps(np.asarray(q, dtype=float), np.zeros(len(self.pairs)), posing)
         finally:
@@ -91,7 +90,7 @@ class SelfPathCheck:
         travel = np.abs(np.diff(points, axis=0)) @ self.levers.T  # (segments, pairs)
         steps = _Steps(travel)
         segment, s = 0, 0.0
-        posing = _Posing(self.world, self.robot, self.joints)
+        posing = _Posing(self.robot, self.joints)
         try:
             while True:
                 q = points[segment] + (points[segment + 1] - points[segment]) * s
@@ -120,8 +119,8 @@ class SelfPathCheck:
             if self.distances.touching(found):  # PyBullet's own word, on the posed robot
                 posing.pose(q)
                 found = float(
-                    self.world.contacts.self_distances(
-                        self.robot, self.pairs, REACH, lambda _: (k,)
+                    self.robot.world.contacts.self_distances(
+                        self.robot.name, self.pairs, REACH, lambda _: (k,)
                     )[k]
                 )
             gap = found - float(floors[k])
@@ -205,14 +204,14 @@ def _robot_created(versions: Versions, key: tuple[str, tuple[str, ...]]) -> int:
     return versions.created(key[0])
 
 
-def _moved_pairs(world: World, robot: str, joints: tuple[str, ...]) -> _MovedPairs:
+def _moved_pairs(robot: RobotHandle, joints: tuple[str, ...]) -> _MovedPairs:
     """The matrix's checked pairs that ``joints`` move relative to each other, and per
     pair and joint the most a point of either link moves relative to the other per unit
     change of the joint (joints above both move neither relative to the other)."""
-    model = world.robot(robot).description.model
-    matrix = SelfCollisionMatrix.of(RobotHandle.of(world, robot))
+    model = robot.description.model
+    matrix = SelfCollisionMatrix.of(robot)
     active = sorted(active_joints(model, joints))
-    bound = TravelBound.of(RobotHandle.of(world, robot), active, held=False)
+    bound = TravelBound.of(robot, active, held=False)
     column = {j: i for i, j in enumerate(active)}
     fold = np.zeros((len(active), len(joints)))  # follower columns onto their masters
     for i, name in enumerate(joints):
@@ -223,7 +222,7 @@ def _moved_pairs(world: World, robot: str, joints: tuple[str, ...]) -> _MovedPai
             fold[column[name], joints.index(mimic.joint)] = abs(mimic.multiplier)
     every = list(matrix.checked)
     geometry = model.derived(RobotGeometry.of)
-    link_index = world.object(robot).link_index
+    link_index = robot.world.object(robot.name).link_index
     if not every:
         return (), np.zeros((0, len(joints))), SelfParts.of(geometry, link_index, ())
     names = sorted({link for pair in every for link in pair})
@@ -244,8 +243,9 @@ class _Posing:
     """Poses the robot in PyBullet only when a pair needs PyBullet's own distance, and
     puts its joints back afterwards (coal answers most checks with nothing posed)."""
 
-    def __init__(self, world: World, robot: str, joints: tuple[str, ...]) -> None:
-        self.world, self.robot, self.joints = world, robot, joints
+    def __init__(self, robot: RobotHandle, joints: tuple[str, ...]) -> None:
+        self.world, self.robot, self.joints = robot.world, robot.name, joints
+        self.model = robot.description.model
         self.before: dict[str, float] | None = None
         self.at: FloatArray | None = None
 
@@ -254,7 +254,7 @@ class _Posing:
         if self.at is q:
             return
         if self.before is None:
-            model = self.world.robot(self.robot).description.model
+            model = self.model
             self.before = {
                 j: v for j, v in self.world.joint_states(self.robot).items()
                 if model.joints[j].mimic is None

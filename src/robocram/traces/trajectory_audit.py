@@ -96,12 +96,12 @@ def audit_run(
     return AuditReport((run,), findings, len(trajectories), audit.configurations)
 
 
-def _hand_share(world: World, robot: str, joint: CarriedJoint, by_time: float) -> float:
+def _hand_share(robot: RobotHandle, joint: CarriedJoint, by_time: float) -> float:
     """How far ``joint`` has gone: with the robot's holding link along its line (the
     link's position read from PyBullet as the robot is now), else ``by_time``."""
     if joint.line is None:
         return by_time
-    return joint.share(world.link_pose(robot, joint.link).position)
+    return joint.share(robot.world.link_pose(robot.name, joint.link).position)
 
 
 @contextmanager
@@ -258,7 +258,7 @@ class _RunAudit:
             if carried:
                 share = t / duration if duration > 0.0 else 1.0
                 for joint in carried:
-                    value = joint.at(_hand_share(self.world, robot, joint, share))
+                    value = joint.at(_hand_share(handle, joint, share))
                     self.world.set_joint_states(joint.obj, {joint.joint: value})
                 probe.others_moved(bodies)
             self.configurations += 1
