@@ -98,9 +98,7 @@ def draft_fixed_arm(tree: ModelTree, hand: Hand, name: str, torso: str | None) -
     )
     why = {
         "end_effector_link": f"child of {hand.wrist_joint}, the chain's last joint",
-        "base_link": "parent of the first arm joint"
-        + (" after the torso" if torso else "")
-        + "; its joints down to the wrist are found at load",
+        "base_link": _base_why(torso),
         "tool_frame": tool.why,
         "gripper": f"{hand.why_gripper}: it holds what its tool frame touches",
         "parking": parking.why,
@@ -109,6 +107,12 @@ def draft_fixed_arm(tree: ModelTree, hand: Hand, name: str, torso: str | None) -
     if parking.doubt:
         doubts["parking"] = parking.doubt
     return DraftedArm(arm, tool.added, why, doubts)
+
+
+def _base_why(torso: str | None) -> str:
+    """Why the arm's base link is the one drafted (the same for every kind of hand)."""
+    after = " after the torso" if torso else ""
+    return f"parent of the first arm joint{after}; its joints down to the wrist are found at load"
 
 
 def draft_arm(tree: ModelTree, hand: Hand, name: str, torso: str | None) -> DraftedArm:
@@ -138,9 +142,7 @@ def draft_arm(tree: ModelTree, hand: Hand, name: str, torso: str | None) -> Draf
     )
     why = {
         "end_effector_link": f"child of {hand.wrist_joint}, the last joint before the fingers",
-        "base_link": "parent of the first arm joint"
-        + (" after the torso" if torso else "")
-        + "; its joints down to the wrist are found at load",
+        "base_link": _base_why(torso),
         "tool_frame": tool.why,
         "gripper_joints": hand.why_gripper + "; fingers and hand links are found at load",
         "gripper": f"{hand.why_gripper}; open at the lower limit, where the fingers part",
