@@ -35,7 +35,6 @@ from robocram.tf import Pose, PoseLike, PoseStamped
 from robocram.world import World
 
 STATE_TIMEOUT = 5.0  # [s] for the state after a goal to arrive
-AT_END = 1e-6  # [rad | m] joints this near a goal's end show the state after it
 DEFAULT_MASTER_TIMEOUT = 5.0  # [s] for the ROS master to answer when entering
 RESOURCE_KINDS = {"torso": "torso", "head": "head"}  # a trajectory's kind; arms': "arm"
 TransportFactory = Callable[[NodeConfig], Transport]
@@ -128,19 +127,17 @@ class RosRobotClient:
         goal: RosDict,
         failure: FailureFactory,
         accept: Accept | None = None,
-        ends_at: Mapping[str, float] | None = None,
     ) -> GoalOutcome:
         """Run ``goal`` on ``resource``'s action server, then wait for the state after it.
 
         ``accept(outcome)`` says whether an outcome other than SUCCEEDED is a success too
-        (a PR2 gripper holding an object ends ABORTED with ``stalled``). ``ends_at``: the
-        joint values the goal ends at; a state already showing them is the state after
-        it (nothing newer is waited for).
+        (a PR2 gripper holding an object ends ABORTED with ``stalled``).
         """
         interface = self.config.action(resource)
-        settle = lambda end: self._settle(interface.server, end, ends_at)  # noqa: E731
         try:
-            outcome = finish_goal(self.transport, interface, goal, settle)
+            outcome = finish_goal(
+                self.transport, interface, goal, lambda end: self._settle(interface.server, end)
+            )
         except RosCancelIgnored as ignored:
             if ignored.stopping:  # a stopped task's failure may be dropped (pursue): keep it
                 self.unconfirmed_cancels.append(ignored)
@@ -160,16 +157,8 @@ class RosRobotClient:
                 stopping=True,
             )
 
-    def _settle(
-        self, server: str, end: GoalOutcome, ends_at: Mapping[str, float] | None = None
-    ) -> None:
-        """Wait for the state published after ``end`` (failed goals moved the robot too),
-        unless the latest state already shows the joints at ``ends_at`` (within
-        :data:`AT_END`: a robot standing there has nothing newer to report; a real one's
-        state rarely matches so closely, and then it is waited for)."""
-        if ends_at and self._at(ends_at):
-            self.mirror_state()
-            return
+    def _settle(self, server: str, end: GoalOutcome) -> None:
+        """Wait for the state published after ``end`` (failed goals moved the robot too)."""
         if not self.transport.wait_for_state(end.mark, STATE_TIMEOUT):
             raise RosConnectionLost(
                 f"no joint states or transforms of {self.name} arrived within {STATE_TIMEOUT} s "
@@ -178,10 +167,6 @@ class RosRobotClient:
                 reason="state not published",
             )
         self.mirror_state()
-
-    def _at(self, ends_at: Mapping[str, float]) -> bool:
-        now = self.transport.joint_states()
-        return all(j in now and abs(now[j] - v) <= AT_END for j, v in ends_at.items())
 
     @property
     def has_world(self) -> bool:
@@ -259,7 +244,7 @@ class RosRobotClient:
         if interface.action_type != "pr2_controllers_msgs/SingleJointPosition":
             trajectory = with_coupled_followers(self.desc, trajectory)
         goal = trajectory_goal(interface.action_type, trajectory, self.config.goal_tolerances)
-        outcome = self.run(resource, goal, failure, ends_at=trajectory.end)
+        outcome = self.run(resource, goal, failure)
         self._check_reached(trajectory, failure)
         report_executed(trajectory)
         return outcome
