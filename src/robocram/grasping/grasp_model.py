@@ -35,6 +35,7 @@ from robocram.grasping.suction_grasps import touching_grasps
 from robocram.tf import Pose, Vector3
 
 GRASP_NAMES = ("top", "front", "left", "right", "rim", "handle")
+BODY_GRASPS = ("top", "front", "left", "right")  # around the body: a hand as wide as it
 CLEARANCE = 0.002  # [m] added to an object's width: the hand must open this much wider
 TOP_STRADDLE = 0.04  # [m] a top grasp's fingertips go at most this far below the top: a
 # hand is as wide as its open tips only near them (the PR2's finger links behind the tips
@@ -44,6 +45,9 @@ RIM_DEPTH = 0.02  # [m] a rim grasp's tool frame below the rim
 PRE_GRASP = 0.10  # [m] the tool starts this far back along its approach
 LIFT = 0.10  # [m] the object is lifted this far
 HANDLE_MARGIN = 0.005  # [m] the box sticking out this far past the body is a handle
+HANDLE_OUTWARD = (0.0, 0.015, 0.03)  # [m] a handle from above: the tool this far out past
+# the bar's middle (the model knows no finger's breadth: the Z1's jaw is a plate 88 mm
+# broad, which over the bar's middle goes 1 cm into the mug's body)
 DOWN: Vector3 = (0.0, 0.0, -1.0)
 SIDES: tuple[Vector3, ...] = ((1.0, 0.0, 0.0), (-1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, -1.0, 0.0))
 
@@ -114,14 +118,20 @@ def _rim(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
             yield _grasp(hand, "rim", turn, at, DOWN, opening, shape.wall)
 
 
-def _handle(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
+def _handle_side(shape: ObjectShape) -> Vector3 | None:
+    """The side the handle sticks out on (None: no handle, or the box shows none)."""
     if shape.handle is None:
+        return None
+    side = max(SIDES, key=lambda s: shape.reach(s))
+    return side if shape.reach(side) > shape.radius + HANDLE_MARGIN else None
+
+
+def _handle(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
+    side = _handle_side(shape)
+    if side is None or shape.handle is None:
         return
     r = shape.radius
-    side = max(SIDES, key=lambda s: shape.reach(s))
     out = shape.reach(side)
-    if out <= r + HANDLE_MARGIN:
-        return
     cx, cy = shape.centre
     d = out - min((out - r) / 2, hand.finger_depth)
     at = (cx + side[0] * d, cy + side[1] * d, shape.low[2] + shape.size[2] / 2)
@@ -130,6 +140,26 @@ def _handle(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
     for turn in (0.0, math.pi):
         opening = across if turn == 0.0 else (-across[0], -across[1], 0.0)
         yield _grasp(hand, "handle", turn, at, approach, opening, shape.handle)
+
+
+def _handle_from_above(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
+    """The handle taken from above, a small hand's grip: the fingers straddle its outer
+    bar across its width, the tool frame on the bar's middle (a loop handle's middle, where
+    the side grasp puts the tool, is its hole), :data:`TOP_STRADDLE` (or the finger depth)
+    below the top; then the tool farther out by :data:`HANDLE_OUTWARD`, the bar nearer
+    the fingers' inner edge, for fingers so broad that they would meet the body."""
+    side = _handle_side(shape)
+    if side is None or shape.handle is None:
+        return
+    cx, cy = shape.centre
+    z = max(shape.low[2] + shape.size[2] / 2, shape.high[2] - min(hand.finger_depth, TOP_STRADDLE))
+    across = (-side[1], side[0], 0.0)
+    for out in HANDLE_OUTWARD:
+        d = shape.reach(side) - shape.handle / 2 + out
+        at = (cx + side[0] * d, cy + side[1] * d, z)
+        for turn in (0.0, math.pi):
+            opening = across if turn == 0.0 else (-across[0], -across[1], 0.0)
+            yield _grasp(hand, "handle", turn, at, DOWN, opening, shape.handle)
 
 
 def _of_name(shape: ObjectShape, hand: Hand, name: str) -> Iterator[Grasp]:
@@ -155,6 +185,8 @@ def grasps(shape: ObjectShape, hand: Hand, names: Sequence[str] = GRASP_NAMES) -
         return touching_grasps(shape, hand, names)
     every = [g for name in names for g in _of_name(shape, hand, name)]
     fitting = [g for g in every if g.opening <= hand.max_opening]
+    if "handle" in names and not any(g.name in BODY_GRASPS for g in fitting):
+        fitting += [g for g in _handle_from_above(shape, hand) if g.opening <= hand.max_opening]
     if not fitting:
         needed = min((g.opening for g in every), default=math.inf)
         raise ObjectUngraspable(shape.name, hand.max_opening, needed)
