@@ -40,6 +40,7 @@ VIEW_ROLLS = (0.0, math.pi, math.pi / 2, -math.pi / 2)  # [rad] about the optica
 # upright first; a turned image sees the target as well, where the arm's limits want it
 VIEW_RESTARTS = 20  # IK descents after the first per viewing place
 MIN_DISTANCE = 0.05  # [m] a camera this close to its target cannot look at it
+RAISE_MIN = 0.05  # [m] a camera this much under its maximal height may be raised to it
 AIM_TOLERANCE = math.radians(1.0)  # [rad] an arm aimed joint by joint ends this near
 TURNING = ("revolute", "continuous")
 OCCLUDED = 0.1  # [m] a ray stopped farther than this from its end met what hides the target
@@ -70,8 +71,19 @@ def _ring(robot: ProjectedRobot, arm: str, target: np.ndarray) -> list[np.ndarra
 def _places(robot: ProjectedRobot, arm: str, target: np.ndarray) -> list[np.ndarray]:
     frame = robot.description.cameras[0].frame
     now = np.asarray(robot.world.link_pose(robot.name, frame).position, float)
-    places = [now, *_ring(robot, arm, target)]
+    places = [now, *_ring(robot, arm, target), *_raised(robot, now)]
     return [p for p in places if float(np.linalg.norm(target - p)) > MIN_DISTANCE]
+
+
+def _raised(robot: ProjectedRobot, now: np.ndarray) -> list[np.ndarray]:
+    """The camera straight up from where it is, at the description's maximal height: where
+    a stand's check looked from (``costmaps/camera_aim.aimed_cameras``), a target too far
+    for the ring (a Panda's wrist camera, parked under a counter's top 1.5 m away)."""
+    top = robot.description.cameras[0].maximal_height
+    if top is None:
+        return []
+    high = robot.base_pose().position[2] + top
+    return [np.array((now[0], now[1], high))] if high > now[2] + RAISE_MIN else []
 
 
 def _solve_view(
