@@ -98,6 +98,28 @@ def test_a_narrow_hand_takes_the_mug_by_its_handle_only() -> None:
     assert x == pytest.approx(0.0) and 0.041 < y < 0.081 and z == pytest.approx(0.05)
 
 
+def test_a_hand_narrower_than_the_body_takes_the_handle_from_above_too() -> None:
+    """After the side grasps: from above, the tool on the bar's middle (the box's end less
+    half the bar), then 1.5 and 3 cm farther out, the fingers across the bar (x)."""
+    found = [g for g in grasps(MUG, Hand(max_opening=0.08)) if g.approach == (0.0, 0.0, -1.0)]
+    assert {g.name for g in found} == {"handle"} and len(found) == 6
+    places = sorted({round(g.tool.position[1], 6) for g in found})
+    assert places == pytest.approx([0.081 - 0.006, 0.081 - 0.006 + 0.015, 0.081 - 0.006 + 0.03])
+    for g in found:
+        x, _, z = g.tool.position
+        assert x == pytest.approx(0.0) and z == pytest.approx(0.1 - TOP_STRADDLE)
+        assert abs(g.across[0]) == pytest.approx(1.0)
+        _, opening = _axes(g.tool.orientation, Hand())
+        assert abs(opening[0]) == pytest.approx(1.0)
+
+
+def test_a_hand_wide_enough_for_the_body_gets_no_handle_from_above() -> None:
+    found = grasps(MUG, PR2_HAND)
+    assert not [g for g in found if g.name == "handle" and g.approach == (0.0, 0.0, -1.0)]
+    only_handle = grasps(MUG, PR2_HAND, ("handle",))  # the body not allowed: it does not fit
+    assert any(g.approach == (0.0, 0.0, -1.0) for g in only_handle)
+
+
 def test_no_side_grasp_comes_in_through_the_handle() -> None:
     names = [g.name for g in grasps(MUG, Hand(max_opening=0.13))]
     assert "left" not in names  # the handle sticks out on +y

@@ -12,7 +12,11 @@ Grasps (CRAM's names), in the object's frame (x forward, z up):
   straddling it ``RIM_DEPTH`` below the rim; one place per side the box shows no handle.
   Width: the wall's thickness.
 - ``handle`` (``object_handle/2``): sideways onto the bar that sticks out of the body,
-  at half height; width: the bar's.
+  at half height; width: the bar's. A hand that fits no grasp round the body (top,
+  front, left, right: a Panda's 80 mm against the mug's 88) also gets it from above, as
+  a person with a small hand takes a mug: the fingers straddle the bar, the tool on its
+  middle, then farther out. (Not by the rim: pybullet's mug collides as a closed
+  cylinder, a finger inside its wall would be 2 cm in it; it has no ``object_wall``.)
 
 Each needs its width plus :data:`CLEARANCE`; a grasp needing more than the hand opens is
 not offered, and when none is left :class:`ObjectUngraspable` names both widths.

@@ -23,6 +23,7 @@ from robocram.execution import perform
 from robocram.execution.failures import (
     GripperLowLevelFailure,
     GripperMetOneSide,
+    GripperPathBlocked,
     ManipulationLowLevelFailure,
     ManipulationPoseUnreachable,
 )
@@ -32,7 +33,13 @@ from robocram.logic import Term, UnknownPredicateError, current_kb
 from robocram.plans.basic_actions import look_ahead, neck_in_the_way
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.grasp_failures import ObjectUngraspable, PickUpFailed, PickUpUnreachable
-from robocram.plans.robot_facts import current_robot, grasping_arms, tool_frame
+from robocram.plans.robot_facts import (
+    current_robot,
+    grasping_arms,
+    gripper_links,
+    limb_links,
+    tool_frame,
+)
 from robocram.tf import Pose, PoseStamped, TfError, transform_pose
 
 CENTRINGS = 2  # a grip meeting the object on one side moves the hand this often at most
@@ -164,8 +171,7 @@ def _try_grasp(
     object_in_map: Pose | None,
     lift: bool = True,
 ) -> Held:
-    perform(a.motion(type="opening", gripper=arm))
-    _move(arm, choice.pre_grasp)
+    _opened_at(arm, choice.pre_grasp)
     _move(arm, choice.grasp_pose, **GRASPING, touching=name)
     choice = _gripped(arm, name, choice)
     if lift:
@@ -176,6 +182,32 @@ def _try_grasp(
     held = choice.grasp_pose.pose.inverse() * object_in_map  # as gripped: the grasp keeps it
     raised = choice.lift if lift else choice.grasp_pose
     return Held(arm, choice.grasp, name, frame, choice.grasp_pose, raised, held)
+
+
+def _opened_at(arm: str, pre_grasp: PoseStamped) -> None:
+    """Open the gripper and move to the pre-grasp; where the fingers opening would meet the
+    robot's body (the Z1 on a B1 looked with its jaw beside a leg), move there first and
+    open there."""
+    try:
+        perform(a.motion(type="opening", gripper=arm))
+    except GripperPathBlocked as blocked:
+        if not _fingers_meet_body(arm, blocked):
+            raise
+        _move(arm, pre_grasp)
+        perform(a.motion(type="opening", gripper=arm))
+        return
+    _move(arm, pre_grasp)
+
+
+def _fingers_meet_body(arm: str, blocked: GripperPathBlocked) -> bool:
+    """Whether every pair ``blocked`` names is a finger of ``arm`` and a link of the
+    robot's body (no arm's, hand's or neck's: those and the world a move may not clear)."""
+    robot = current_robot()
+    fingers, limbs = gripper_links(robot, arm), limb_links(robot)
+    pairs = blocked.colliding_pairs or ()
+    return bool(pairs) and all(
+        other in fingers and link not in limbs for link, other in pairs
+    )  # (robot link, what it meets): a robot meeting itself names its own link second
 
 
 def _lifted(arm: str, lift: PoseStamped, name: str) -> None:

@@ -13,8 +13,10 @@ from dataclasses import dataclass
 
 from robocram.designators import ObjectDesignator, a, an
 from robocram.execution import perform
+from robocram.execution.failures import PerceptionBlockedByRobot
 from robocram.plans.basic_actions import look_from_above, park_arms
 from robocram.plans.pick_object import Held, pick_up_object
+from robocram.plans.robot_facts import current_robot, grasping_arms
 from robocram.tf import PoseStamped
 
 
@@ -36,8 +38,24 @@ def pick_up(look_target: PoseStamped, object_type: str = "mug") -> PickResult:
     park_arms()
     perform(a.motion(type="looking", target=a.location(pose=look_target)))
     look_from_above(a.location(pose=look_target), looked=True)
-    seen = perform(a.motion(type="detecting", object=an.object(type=object_type)))
+    seen = _detected(object_type)
     held = pick_up_object(seen)
     return PickResult(
         held.arm, held.tool_frame, held.object_name, held.grasp_pose, held.lifted, seen, held
     )
+
+
+def _detected(object_type: str) -> ObjectDesignator:
+    """Detect an ``object_type``; where an arm's own link hides it, open the grippers and
+    detect again: a wrist camera's jaw (the SO-101's moving jaw, closed before its camera)
+    swings out of the view, as the pick-up opens it next anyway."""
+    wanted = an.object(type=object_type)
+    try:
+        found: ObjectDesignator = perform(a.motion(type="detecting", object=wanted))
+    except PerceptionBlockedByRobot as blocked:
+        if blocked.arm_parked is None:  # a body link: no gripper moves it
+            raise
+        for arm in grasping_arms(current_robot()):
+            perform(a.motion(type="opening", gripper=arm))
+        found = perform(a.motion(type="detecting", object=wanted))
+    return found

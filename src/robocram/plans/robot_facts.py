@@ -122,3 +122,19 @@ def grasping_arms(robot: str) -> list[str]:
         return [row.arm for row in gp.GRASPING_ARM.answers(current_kb(), robot=robot)]
     except UnknownPredicateError as err:
         raise PlanSetupError(NO_GRASP_MODEL) from err
+
+
+def limb_links(robot: str) -> set[str]:
+    """Every link of the robot's arms, hands and neck: what is not its body."""
+    kb = current_kb()
+    links = set(neck_links(robot))
+    for arm in robot_arms(robot):
+        for predicate in (rp.ARM_LINKS, rp.HAND_LINKS):
+            row = predicate.first(kb, robot=robot, arm=arm)
+            links.update(row.links if row is not None else ())
+    return links
+
+
+def gripper_links(robot: str, arm: str) -> set[str]:
+    """The links ``arm``'s gripper joints move (its fingers, jaws)."""
+    return {row.link for row in rp.GRIPPER_LINK.answers(current_kb(), robot=robot, arm=arm)}
