@@ -3,7 +3,8 @@
 The Panda's hand opens 80 mm, the mug's body is 88 mm: the tabletop pick-up takes the
 handle from above, the fingers on both sides of its bar. A PR2 allowed only the handle
 (``object_grasps(mug, [handle])``) carries the mug so from the counter to the table. Both
-are checked with raw PyBullet, not with the planner's own account.
+are checked with raw PyBullet, not with the planner's own account. In the kitchen the
+Panda's wrist camera, parked under the counter's top, rises over it to find the mug.
 """
 
 from __future__ import annotations
@@ -142,3 +143,24 @@ def test_a_mug_held_by_its_handle_keeps_its_pose_in_the_hand_and_is_put_down() -
     assert low[2] == pytest.approx(table_high[2], abs=0.01)  # standing on the table's top
     middle = ((low[0] + high[0]) / 2, (low[1] + high[1]) / 2)
     assert all(table_low[i] < middle[i] < table_high[i] for i in (0, 1))
+
+
+def test_the_pandas_wrist_camera_rises_over_the_counter_to_find_the_mug() -> None:
+    """Parked, the Panda's wrist camera is under the kitchen counter's top (0.85 m): from
+    there the counter hides the place it looks at. It looks from its maximal height
+    instead and finds the mug; the camera link's height is PyBullet's own."""
+    scene = kitchen_scene(str(PANDA))
+    world = scene.world
+    try:
+        client = world.physics.client()
+        robot = world.object(scene.robot).body_id
+        camera = _links(robot, client)["panda_link7"]
+        with simulated_robot(world, scene.robot):
+            seen = search("mug")
+        state = pybullet.getLinkState(robot, camera, computeForwardKinematics=1,
+                                      physicsClientId=client)  # fmt: skip
+        counter = world.link_pose("kitchen", "counter_top_north").position[2]
+    finally:
+        world.close()
+    assert seen.get("name") == "mug-1"
+    assert state[4][2] > counter + 0.1
