@@ -179,7 +179,8 @@ def _of_name(shape: ObjectShape, hand: Hand, name: str) -> Iterator[Grasp]:
 
 
 def grasps(shape: ObjectShape, hand: Hand, names: Sequence[str] = GRASP_NAMES) -> list[Grasp]:
-    """The grasps of ``shape`` that ``hand`` opens wide enough for, in ``names``' order.
+    """The grasps of ``shape`` that ``hand`` opens wide enough for, in ``names``' order;
+    when none round the body fits (or ``names`` allows none), the handle from above last.
 
     Raises:
         ObjectUngraspable: none of them fits the hand (the error names both widths).
