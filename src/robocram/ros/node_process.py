@@ -16,7 +16,7 @@ import logging
 import socket
 import subprocess
 import threading
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from multiprocessing.connection import Connection
 from typing import Any, TypeVar
 
@@ -200,9 +200,19 @@ class NodeProcessTransport:
         if self._dead is None:
             self.request("cancel", handle.goal_id)
 
-    def wait_for_state(self, after: StateMark | None, timeout: float) -> bool:
-        """Wait for joint states and the base frame's transform arriving after ``after``."""
-        return bool(self.request("wait_for_state", after, timeout, timeout=timeout + REPLY_TIMEOUT))
+    def wait_for_state(
+        self,
+        after: StateMark | None,
+        timeout: float,
+        ends_at: Mapping[str, float] | None = None,
+    ) -> bool:
+        """Wait for joint states and the base frame's transform arriving after ``after``,
+        or for the state held to show a trajectory's end ``ends_at`` (see Transport)."""
+        ends = None if ends_at is None else dict(ends_at)
+        reply = self.request(
+            "wait_for_state", after, timeout, ends, timeout=timeout + REPLY_TIMEOUT
+        )
+        return bool(reply)
 
     def joint_states(self) -> dict[str, float]:
         """The latest ``/joint_states`` positions by joint name."""
