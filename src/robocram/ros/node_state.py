@@ -130,11 +130,35 @@ class NodeState(ABC):
         joints, base, result = after if after is not None else self._mark()
         with self._state:
             return self._state.wait_for(
-                lambda: (self._joint_arrivals > joints and self._base_arrivals > base)
-                or (result > 0.0 and self._stamped_after(result))
-                or (ends_at is not None and self._shows_end(ends_at)),
+                lambda: (
+                    (self._joint_arrivals > joints and self._base_arrivals > base)
+                    or (result > 0.0 and self._stamped_after(result))
+                    or (ends_at is not None and self._shows_end(ends_at))
+                ),
                 timeout,
             )
+
+    def op_settle(
+        self,
+        after: tuple[int, int, float],
+        timeout: float,
+        ends_at: Mapping[str, float] | None,
+        target: str,
+        base: str,
+        objects: list[str],
+    ) -> (
+        tuple[
+            dict[str, float],
+            dict[str, dict[str, float]],
+            dict[str, tuple[tuple[float, ...], tuple[float, ...]]],
+        ]
+        | None
+    ):
+        """:meth:`op_wait_for_state`, then :meth:`op_snapshot` in the same reply (None if
+        no state came within ``timeout``): a goal's end costs the plan process one request."""
+        if not self.op_wait_for_state(after, timeout, ends_at):
+            return None
+        return self.op_snapshot(target, base, objects)
 
     def _stamped_after(self, result: float) -> bool:
         """Whether the latest joint state, every moving frame and every environment state

@@ -232,7 +232,7 @@ def handle_request(node: Serving, request_id: int, op: str, args: tuple[object, 
         node.send(("reply", request_id, True, payload))
 
 
-BLOCKING_OPS = frozenset({"send_goal", "wait_for_state"})
+BLOCKING_OPS = frozenset({"send_goal", "wait_for_state", "settle"})
 
 
 def node_main(conn: Connection, config: NodeConfig) -> None:

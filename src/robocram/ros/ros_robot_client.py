@@ -29,7 +29,7 @@ from robocram.ros.ros1_transport import Ros1Transport
 from robocram.ros.ros2_transport import Ros2Transport
 from robocram.ros.ros_config import RosConfig
 from robocram.ros.trajectory_goal import trajectory_goal
-from robocram.ros.transport import GoalOutcome, GoalState, RosDict, Transport
+from robocram.ros.transport import GoalOutcome, GoalState, RosDict, StateSnapshot, Transport
 from robocram.ros.world_mirror import WorldMirror, environment_topics
 from robocram.tf import Pose, PoseLike, PoseStamped
 from robocram.world import World
@@ -161,17 +161,25 @@ class RosRobotClient:
     def _settle(
         self, server: str, end: GoalOutcome, ends_at: Mapping[str, float] | None = None
     ) -> None:
-        """Wait for the state published after ``end`` (failed goals moved the robot too);
-        a succeeded trajectory's state may show its end ``ends_at`` already."""
+        """Wait for the state published after ``end`` (failed goals moved the robot too)
+        and put the world in it; a succeeded trajectory's state may show its end
+        ``ends_at`` already."""
         shown = ends_at if end.state is GoalState.SUCCEEDED else None
-        if not self.transport.wait_for_state(end.mark, STATE_TIMEOUT, shown):
+        mirror = self.mirror
+        if mirror is None:
+            settled = self.transport.wait_for_state(end.mark, STATE_TIMEOUT, shown)
+        else:
+            read = (self.fixed_frame, self.desc.base_frame, mirror.movable_objects())
+            state = self.transport.settle(end.mark, STATE_TIMEOUT, shown, read)
+            if settled := state is not None:
+                self._sync(mirror, state)
+        if not settled:
             raise RosConnectionLost(
                 f"no joint states or transforms of {self.name} arrived within {STATE_TIMEOUT} s "
                 f"after {server} finished",
                 server=server,
                 reason="state not published",
             )
-        self.mirror_state()
 
     @property
     def has_world(self) -> bool:
@@ -192,6 +200,9 @@ class RosRobotClient:
         state = self.transport.snapshot(
             self.fixed_frame, self.desc.base_frame, mirror.movable_objects()
         )  # one request
+        self._sync(mirror, state)
+
+    def _sync(self, mirror: WorldMirror, state: StateSnapshot) -> None:
         mirror.sync(self._finite(state.joints), state.base, state.environment, state.objects)
 
     def move_joints(

@@ -100,6 +100,17 @@ class Transport(Protocol):
         shows them, every transform stamped no earlier, is the state after it."""
         ...
 
+    def settle(
+        self,
+        after: StateMark,
+        timeout: float,
+        ends_at: Mapping[str, float] | None,
+        snapshot: tuple[str, str, Sequence[str]],
+    ) -> StateSnapshot | None:
+        """:meth:`wait_for_state`, then :meth:`snapshot` of ``(target_frame, base_frame,
+        objects)``, in one request; None if no state came within ``timeout``."""
+        ...
+
     def joint_states(self) -> dict[str, float]:
         """The latest joint positions [rad | m] by joint name."""
         ...

@@ -4,8 +4,8 @@ For tests and demos the robot behind real ROS is then a simulated one: the actio
 servers named by the robot's ``ros_action/4`` facts move the projected robot (as
 ``goals.py`` says per action type), and ``/joint_states`` plus ``/tf`` (every robot link
 and object in ``map``) are published at ``PUBLISH_RATE`` and after every goal, before its
-result and again after it, with the joint states of each articulated environment (the kitchen's drawers and
-doors) on ``/<name>/joint_states``, as iai_kitchen publishes them. ``fault`` makes every
+result and again after it, with the joint states of each articulated environment (the
+kitchen's drawers and doors) on ``/<name>/joint_states``, as iai_kitchen publishes them. ``fault`` makes every
 goal end badly on purpose, to exercise clients: ``"silent"`` never answers (until
 cancelled), ``"abort"`` aborts with a status text, ``"ignore_cancel"`` never answers and
 ignores cancels; ``"nan_joint_state"`` publishes the torso's position as NaN.
