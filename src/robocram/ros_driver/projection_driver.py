@@ -5,9 +5,9 @@ servers named by the robot's ``ros_action/4`` facts move the projected robot (as
 ``goals.py`` says per action type), and ``/joint_states`` plus ``/tf`` (every robot link
 and object in ``map``) are published at ``PUBLISH_RATE`` and after every goal, before its
 result and again after it, with the joint states of each articulated environment (the
-kitchen's drawers and doors) on ``/<name>/joint_states``, as iai_kitchen publishes them. ``fault`` makes every
-goal end badly on purpose, to exercise clients: ``"silent"`` never answers (until
-cancelled), ``"abort"`` aborts with a status text, ``"ignore_cancel"`` never answers and
+kitchen's drawers and doors) on ``/<name>/joint_states``, as iai_kitchen publishes them.
+``fault`` makes every goal end badly on purpose, to exercise clients: ``"silent"`` never
+answers (until cancelled), ``"abort"`` aborts with a status text, ``"ignore_cancel"`` never answers and
 ignores cancels; ``"nan_joint_state"`` publishes the torso's position as NaN.
 ``controllers="pr2"`` behaves as the real PR2's controllers
 (``pr2_controllers.py``: a gripper gap in metres that stalls on objects, joints clamped
