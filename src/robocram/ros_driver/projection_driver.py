@@ -7,8 +7,8 @@ and object in ``map``) are published at ``PUBLISH_RATE`` and after every goal, b
 result and again after it, with the joint states of each articulated environment (the
 kitchen's drawers and doors) on ``/<name>/joint_states``, as iai_kitchen publishes them.
 ``fault`` makes every goal end badly on purpose, to exercise clients: ``"silent"`` never
-answers (until cancelled), ``"abort"`` aborts with a status text, ``"ignore_cancel"`` never answers and
-ignores cancels; ``"nan_joint_state"`` publishes the torso's position as NaN.
+answers (until cancelled), ``"abort"`` aborts with a status text, ``"ignore_cancel"``
+never answers and ignores cancels; ``"nan_joint_state"`` publishes the torso's position as NaN.
 ``controllers="pr2"`` behaves as the real PR2's controllers
 (``pr2_controllers.py``: a gripper gap in metres that stalls on objects, joints clamped
 to the soft limits, results without status text); ``clock_offset`` [s] shifts the stamps
