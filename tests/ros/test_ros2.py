@@ -341,11 +341,12 @@ from rclpy.serialization import serialize_message
 from geometry_msgs.msg import TransformStamped
 from tf2_msgs.msg import TFMessage
 from rclpy.serialization import deserialize_message
-from robocram.ros.tf_cdr import read_tf_message, write_tf_message
+from robocram.ros.tf_cdr import read_stamped_tf_message, read_tf_message, write_tf_message
 transforms = []
 for i in range(50):  # names of every length mod 4, so each alignment is crossed
     t = TransformStamped(child_frame_id="link" + "x" * i)
     t.header.frame_id, t.header.stamp.sec = ("map", "base_footprint")[i % 2], i
+    t.header.stamp.nanosec = 0
     t.transform.translation.x, t.transform.translation.z = 0.1 * i, -2.0 * i
     t.transform.rotation.y, t.transform.rotation.w = 0.6, 0.8
     transforms.append(t)
@@ -353,6 +354,8 @@ want = [(t.header.frame_id, t.child_frame_id, (0.1 * i, 0.0, -2.0 * i), (0.0, 0.
         for i, t in enumerate(transforms)]
 assert read_tf_message(serialize_message(TFMessage(transforms=transforms))) == want
 assert read_tf_message(serialize_message(TFMessage())) == []
+stamped = read_stamped_tf_message(serialize_message(TFMessage(transforms=transforms)))
+assert [stamp for stamp, _ in stamped] == [float(i) for i in range(50)]
 written = deserialize_message(write_tf_message((7, 9), want), TFMessage)
 assert [t.header.stamp.sec for t in written.transforms] == [7] * 50
 assert serialize_message(written) == write_tf_message((7, 9), want)

@@ -16,7 +16,7 @@ import logging
 import socket
 import subprocess
 import threading
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from multiprocessing.connection import Connection
 from typing import Any, TypeVar
 
@@ -200,9 +200,41 @@ class NodeProcessTransport:
         if self._dead is None:
             self.request("cancel", handle.goal_id)
 
-    def wait_for_state(self, after: StateMark | None, timeout: float) -> bool:
-        """Wait for joint states and the base frame's transform arriving after ``after``."""
-        return bool(self.request("wait_for_state", after, timeout, timeout=timeout + REPLY_TIMEOUT))
+    def wait_for_state(
+        self,
+        after: StateMark | None,
+        timeout: float,
+        ends_at: Mapping[str, float] | None = None,
+    ) -> bool:
+        """Wait for joint states and the base frame's transform arriving after ``after``,
+        or for the state held to show a trajectory's end ``ends_at`` (see Transport)."""
+        ends = None if ends_at is None else dict(ends_at)
+        reply = self.request(
+            "wait_for_state", after, timeout, ends, timeout=timeout + REPLY_TIMEOUT
+        )
+        return bool(reply)
+
+    def settle(
+        self,
+        after: StateMark,
+        timeout: float,
+        ends_at: Mapping[str, float] | None,
+        snapshot: tuple[str, str, Sequence[str]],
+    ) -> StateSnapshot | None:
+        """Wait for the state after a goal and read it, in one request (see Transport)."""
+        target, base, objects = snapshot
+        ends = None if ends_at is None else dict(ends_at)
+        reply = self.request(
+            "settle",
+            after,
+            timeout,
+            ends,
+            target,
+            base,
+            list(objects),
+            timeout=timeout + REPLY_TIMEOUT,
+        )
+        return None if reply is None else _snapshot(base, reply)
 
     def joint_states(self) -> dict[str, float]:
         """The latest ``/joint_states`` positions by joint name."""
@@ -228,12 +260,8 @@ class NodeProcessTransport:
 
     def snapshot(self, target_frame: str, base_frame: str, objects: Sequence[str]) -> StateSnapshot:
         """Joints, environment joints, the base's and the known objects' poses, in one request."""
-        joints, environment, found = self.request(
-            "snapshot", target_frame, base_frame, list(objects)
-        )
-        poses = {frame: Pose(tuple(p), tuple(q)) for frame, (p, q) in found.items()}
-        base = poses.pop(base_frame)
-        return StateSnapshot(dict(joints), dict(environment), base, poses)
+        reply = self.request("snapshot", target_frame, base_frame, list(objects))
+        return _snapshot(base_frame, reply)
 
     def close(self) -> None:
         """Cancel running goals, stop the node process and the reader thread."""
@@ -261,3 +289,18 @@ class NodeProcessTransport:
             self._conn.close()
         if self._reader is not None and self._reader is not threading.current_thread():
             self._reader.join()
+
+
+SnapshotReply = tuple[
+    dict[str, float],
+    dict[str, dict[str, float]],
+    dict[str, tuple[tuple[float, float, float], tuple[float, float, float, float]]],
+]
+
+
+def _snapshot(base_frame: str, reply: SnapshotReply) -> StateSnapshot:
+    """The node's snapshot reply (joints, environments' joints, poses) as a snapshot."""
+    joints, environment, found = reply
+    poses = {frame: Pose(p, q) for frame, (p, q) in found.items()}
+    base = poses.pop(base_frame)
+    return StateSnapshot(dict(joints), dict(environment), base, poses)

@@ -3,18 +3,25 @@
 The ROS 1 node (rospy) and the ROS 2 node (rclpy) subscribe differently, but keep the same
 state for the plan process: the latest joint positions of the robot and of each
 environment topic, how many joint-state and base-transform messages have arrived (a
-plan-side mark waits for newer ones, never comparing the robot's clock with ours), and
-one lock for writing to the plan process.
+plan-side mark waits for newer ones, never comparing the robot's clock with ours), the
+robot's stamps of the latest joint state, environment states and transforms (compared
+only with each other: see :meth:`NodeState.op_wait_for_state`), and one lock for writing
+to the plan process.
 """
 
 from __future__ import annotations
 
 import threading
 from abc import ABC, abstractmethod
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from multiprocessing.connection import Connection
 
 from robocram.ros.node_config import NodeConfig
+
+AT_END = 1e-6  # [rad | m] joints this near a trajectory's end show the robot standing there
+# [s] a state stamped this soon at or after a result's stamp is the state after it; later
+# stamps (a clock jumped, publishers' clocks apart) leave the wait to the arrivals
+AFTER_RESULT_WINDOW = 1.0
 
 
 class NodeState(ABC):
@@ -29,34 +36,48 @@ class NodeState(ABC):
         self._joint_arrivals = 0  # joint-state messages received so far
         self._base_arrivals = 0  # transforms of the base frame received so far
         self._environment: dict[str, dict[str, float]] = {t: {} for t in config.environment_topics}
+        self._joint_stamp = 0.0  # [s] of the robot's clock; 0: unstamped or none yet
+        self._environment_stamps: dict[str, float] = {}  # by topic
+        self._frame_stamps: dict[str, float] = {}  # of each moving frame, by child frame
 
     def send(self, message: tuple[object, ...]) -> None:
         """Write one message to the plan process (from any thread)."""
         with self._send_lock:
             self.conn.send(message)
 
-    def _joints_arrived(self, names: Iterable[str], positions: Iterable[float]) -> bool:
-        """Keep a joint-state message's positions; whether it is the first one."""
+    def _joints_arrived(
+        self, names: Iterable[str], positions: Iterable[float], stamp: float = 0.0
+    ) -> bool:
+        """Keep a joint-state message's positions and stamp [s]; whether it is the first."""
         with self._state:
             self._joints.update(zip(names, map(float, positions), strict=False))
             self._joint_arrivals += 1
+            self._joint_stamp = stamp
             self._state.notify_all()
             return self._joint_arrivals == 1
 
     def _environment_arrived(
-        self, topic: str, names: Iterable[str], positions: Iterable[float]
+        self, topic: str, names: Iterable[str], positions: Iterable[float], stamp: float = 0.0
     ) -> None:
         with self._state:
             self._environment[topic].update(zip(names, map(float, positions), strict=False))
+            self._environment_stamps[topic] = stamp
+            self._state.notify_all()
+
+    def _frames_stamped(self, stamps: Iterable[tuple[str, float]]) -> None:
+        """Keep the stamps [s] of moving frames' transforms (with ``_state`` held)."""
+        self._frame_stamps.update(stamps)
+        self._state.notify_all()
 
     def _base_arrived(self) -> None:
         """Count a message holding the base frame's transform (with ``_state`` held)."""
         self._base_arrivals += 1
         self._state.notify_all()
 
-    def _mark(self) -> tuple[int, int]:
+    def _mark(self, result_stamp: float = 0.0) -> tuple[int, int, float]:
+        """The arrivals so far and the robot's stamp [s] of the result being marked."""
         with self._state:
-            return (self._joint_arrivals, self._base_arrivals)
+            return (self._joint_arrivals, self._base_arrivals, result_stamp)
 
     def op_joint_states(self) -> dict[str, float]:
         """The latest joint positions."""
@@ -95,11 +116,83 @@ class NodeState(ABC):
     ) -> dict[str, tuple[tuple[float, ...], tuple[float, ...]]]:
         """The poses of ``sources`` in ``target`` (each node's own)."""
 
-    def op_wait_for_state(self, after: tuple[int, int] | None, timeout: float) -> bool:
+    def op_wait_for_state(
+        self,
+        after: tuple[int, int, float] | None,
+        timeout: float,
+        ends_at: Mapping[str, float] | None = None,
+    ) -> bool:
         """Wait until joint states and a base transform arrived after the mark ``after``
-        (None: after this request); no robot stamp is compared with our clock."""
-        joints, base = after if after is not None else self._mark()
+        (None: after this request), or until the state already held is the one after the
+        goal: stamped just after the result (:meth:`_stamped_after`), or showing a
+        finished trajectory's end (:meth:`_shows_end`). No robot stamp is compared with
+        our clock."""
+        joints, base, result = after if after is not None else self._mark()
         with self._state:
             return self._state.wait_for(
-                lambda: self._joint_arrivals > joints and self._base_arrivals > base, timeout
+                lambda: (
+                    (self._joint_arrivals > joints and self._base_arrivals > base)
+                    or (result > 0.0 and self._stamped_after(result))
+                    or (ends_at is not None and self._shows_end(ends_at))
+                ),
+                timeout,
             )
+
+    def op_settle(
+        self,
+        after: tuple[int, int, float],
+        timeout: float,
+        ends_at: Mapping[str, float] | None,
+        target: str,
+        base: str,
+        objects: list[str],
+    ) -> (
+        tuple[
+            dict[str, float],
+            dict[str, dict[str, float]],
+            dict[str, tuple[tuple[float, ...], tuple[float, ...]]],
+        ]
+        | None
+    ):
+        """:meth:`op_wait_for_state`, then :meth:`op_snapshot` in the same reply (None if
+        no state came within ``timeout``): a goal's end costs the plan process one request."""
+        if not self.op_wait_for_state(after, timeout, ends_at):
+            return None
+        return self.op_snapshot(target, base, objects)
+
+    def _stamped_after(self, result: float) -> bool:
+        """Whether the latest joint state, every moving frame and every environment state
+        are stamped at or after the result's stamp ``result`` [s] (within
+        :data:`AFTER_RESULT_WINDOW`): the robot reported them after the goal ended, by its
+        own clock, in whatever order the topics arrived (call holding ``_state``)."""
+        stamp = self._joint_stamp
+        if not result <= stamp <= result + AFTER_RESULT_WINDOW:
+            return False
+        return self._all_stamped_since(result)
+
+    def _all_stamped_since(self, stamp: float) -> bool:
+        """Every moving frame and environment state stamped at ``stamp`` [s] or later."""
+        return (
+            bool(self._frame_stamps)
+            and all(s >= stamp for s in self._frame_stamps.values())
+            and all(self._environment_stamps.get(t, 0.0) >= stamp for t in self._environment)
+        )
+
+    def _shows_end(self, ends_at: Mapping[str, float]) -> bool:
+        """Whether the latest joint state shows the joints at a finished trajectory's end
+        ``ends_at`` (within :data:`AT_END`), and every moving frame's transform and every
+        environment state is stamped at or after it, so none of them predates it.
+
+        A robot standing at the end has nothing newer to report, so waiting for the next
+        state would only wait for its publishing period. The stamps are the robot's own,
+        compared with each other (its clock may be off ours); unstamped states, or a
+        publisher whose stamps lag, leave the wait to the arrivals. A real robot's joints
+        rarely match so closely, and then the arrivals decide (call holding ``_state``).
+        """
+        stamp = self._joint_stamp
+        if stamp <= 0.0:
+            return False
+        now = self._joints
+        if any(j not in now or abs(now[j] - v) > AT_END for j, v in ends_at.items()):
+            return False
+        return self._all_stamped_since(stamp)

@@ -91,12 +91,12 @@ class RosNode(NodeState):
     def _on_joints(self, msg: Any) -> None:
         import rospy
 
-        first = self._joints_arrived(msg.name, msg.position)
+        first = self._joints_arrived(msg.name, msg.position, msg.header.stamp.to_sec())
         if first and not msg.header.stamp.is_zero():  # the robot clock's offset, once
             self.send(("skew", msg.header.stamp.to_sec() - rospy.get_time()))
 
     def _on_environment(self, msg: Any, topic: str) -> None:
-        self._environment_arrived(topic, msg.name, msg.position)
+        self._environment_arrived(topic, msg.name, msg.position, msg.header.stamp.to_sec())
 
     def _on_tf(self, msg: Any, static: bool) -> None:
         """Feed the buffer, then count the arrival if the base frame is in the message."""
@@ -107,8 +107,12 @@ class RosNode(NodeState):
             else:
                 self.buffer.set_transform(transform, TF_AUTHORITY)
             base = base or transform.child_frame_id.lstrip("/") == self.config.base_frame
-        if base:
-            with self._state:
+        with self._state:
+            if not static:
+                self._frames_stamped(
+                    (t.child_frame_id.lstrip("/"), t.header.stamp.to_sec()) for t in msg.transforms
+                )
+            if base:
                 self._base_arrived()
 
     def op_send_goal(self, goal_id: int, server: str, goal: dict[str, object]) -> float:
@@ -141,7 +145,8 @@ class RosNode(NodeState):
         if handle.get_comm_state() != CommState.DONE:
             return
         arrived = time.monotonic()
-        mark = self._mark()  # state arriving from now on shows the end of the goal
+        # state arriving from now on, or stamped after the result, shows the end of the goal
+        mark = self._mark(_result_stamp(handle))
         with self._state:
             if entry.goal_id != goal_id:
                 return
@@ -200,6 +205,15 @@ class RosNode(NodeState):
             time.sleep(MONITOR_PERIOD)
 
 
+def _result_stamp(handle: Any) -> float:
+    """The robot's stamp [s] of the goal's result message (actionlib keeps the last
+    ``ActionResult`` on the handle's state machine), 0.0 if there is none."""
+    latest = getattr(getattr(handle, "comm_state_machine", None), "latest_result", None)
+    if latest is None:
+        return 0.0
+    return float(latest.header.stamp.to_sec())
+
+
 class Serving(Protocol):
     """A node that answers the pipe's requests (``op_<name>`` methods): ROS 1's or ROS 2's."""
 
@@ -218,7 +232,7 @@ def handle_request(node: Serving, request_id: int, op: str, args: tuple[object, 
         node.send(("reply", request_id, True, payload))
 
 
-BLOCKING_OPS = frozenset({"send_goal", "wait_for_state"})
+BLOCKING_OPS = frozenset({"send_goal", "wait_for_state", "settle"})
 
 
 def node_main(conn: Connection, config: NodeConfig) -> None:

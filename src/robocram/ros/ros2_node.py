@@ -25,7 +25,7 @@ from robocram.ros.node_config import NodeConfig
 from robocram.ros.node_state import NodeState
 from robocram.ros.ros1_node import BLOCKING_OPS, handle_request
 from robocram.ros.ros2_messages import RclpyObject, RosDict, action_class, fill, to_dict
-from robocram.ros.tf_cdr import read_tf_message
+from robocram.ros.tf_cdr import read_stamped_tf_message
 from robocram.ros.transport import GoalState
 from robocram.tf import Pose, Quaternion, TransformTree, Vector3
 
@@ -70,6 +70,11 @@ def locked_action_client(node: RclpyObject, action: RclpyObject, name: str) -> R
     return LockedActionClient()
 
 
+def _seconds(stamp: RclpyObject) -> float:
+    """A ``builtin_interfaces/Time`` in seconds."""
+    return float(stamp.sec + stamp.nanosec * 1e-9)
+
+
 @dataclass
 class _Server:
     """One action server: its client, the running goal and when the server was last seen."""
@@ -99,7 +104,9 @@ class Ros2Node(NodeState):
         static = QoSProfile(depth=TF_STATIC_DEPTH, durability=DurabilityPolicy.TRANSIENT_LOCAL)
         # raw: read by tf_cdr.py, 20 times quicker than rclpy's message objects
         node.create_subscription(TFMessage, "/tf", self._on_tf, 100, raw=True)
-        node.create_subscription(TFMessage, "/tf_static", self._on_tf, static, raw=True)
+        node.create_subscription(
+            TFMessage, "/tf_static", lambda raw: self._on_tf(raw, static=True), static, raw=True
+        )
         node.create_subscription(JointState, config.joint_states_topic, self._on_joints, 10)
         for topic in config.environment_topics:
             node.create_subscription(
@@ -112,24 +119,28 @@ class Ros2Node(NodeState):
         self.running = True
 
     def _on_joints(self, msg: RclpyObject) -> None:
-        first = self._joints_arrived(msg.name, msg.position)
-        stamp = msg.header.stamp.sec + msg.header.stamp.nanosec * 1e-9
+        stamp = _seconds(msg.header.stamp)
+        first = self._joints_arrived(msg.name, msg.position, stamp)
         if first and stamp > 0:  # the robot clock's offset, once
             self.send(("skew", stamp - time.time()))
 
     def _on_environment(self, msg: RclpyObject, topic: str) -> None:
-        self._environment_arrived(topic, msg.name, msg.position)
+        self._environment_arrived(topic, msg.name, msg.position, _seconds(msg.header.stamp))
 
-    def _on_tf(self, raw: bytes) -> None:
-        """Keep each frame's latest transform; count the arrival of the base frame's.
-        Only kept here (a robot publishes hundreds at 30 Hz): the tree is built on asking."""
+    def _on_tf(self, raw: bytes, static: bool = False) -> None:
+        """Keep each frame's latest transform (and a moving one's stamp); count the arrival
+        of the base frame's. Only kept here (a robot publishes hundreds at 30 Hz): the tree
+        is built on asking."""
+        stamped = read_stamped_tf_message(raw)
         latest = {
             child.lstrip("/"): (parent.lstrip("/"), translation, rotation)
-            for parent, child, translation, rotation in read_tf_message(raw)
+            for _, (parent, child, translation, rotation) in stamped
         }
         with self._state:
             self._transforms.update(latest)
             self._tree = None
+            if not static:
+                self._frames_stamped((t[1].lstrip("/"), stamp) for stamp, t in stamped)
             if self.config.base_frame in latest:
                 self._base_arrived()
 

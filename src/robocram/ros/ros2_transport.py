@@ -31,4 +31,4 @@ class Ros2Transport(NodeProcessTransport):
         joint states and base transform: ROS 2's discovery takes a moment, and plans read
         the state first. A robot that stays silent shows as its servers' absence later."""
         super()._start()
-        self.wait_for_state((0, 0), FIRST_STATE_TIMEOUT)
+        self.wait_for_state((0, 0, 0.0), FIRST_STATE_TIMEOUT)

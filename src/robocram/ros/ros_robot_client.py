@@ -29,7 +29,7 @@ from robocram.ros.ros1_transport import Ros1Transport
 from robocram.ros.ros2_transport import Ros2Transport
 from robocram.ros.ros_config import RosConfig
 from robocram.ros.trajectory_goal import trajectory_goal
-from robocram.ros.transport import GoalOutcome, RosDict, Transport
+from robocram.ros.transport import GoalOutcome, GoalState, RosDict, StateSnapshot, Transport
 from robocram.ros.world_mirror import WorldMirror, environment_topics
 from robocram.tf import Pose, PoseLike, PoseStamped
 from robocram.world import World
@@ -127,17 +127,18 @@ class RosRobotClient:
         goal: RosDict,
         failure: FailureFactory,
         accept: Accept | None = None,
+        ends_at: Mapping[str, float] | None = None,
     ) -> GoalOutcome:
         """Run ``goal`` on ``resource``'s action server, then wait for the state after it.
 
         ``accept(outcome)`` says whether an outcome other than SUCCEEDED is a success too
-        (a PR2 gripper holding an object ends ABORTED with ``stalled``).
+        (a PR2 gripper holding an object ends ABORTED with ``stalled``). ``ends_at``: the
+        joint values a trajectory goal ends at (see :meth:`Transport.wait_for_state`).
         """
         interface = self.config.action(resource)
+        settle = lambda end: self._settle(interface.server, end, ends_at)  # noqa: E731
         try:
-            outcome = finish_goal(
-                self.transport, interface, goal, lambda end: self._settle(interface.server, end)
-            )
+            outcome = finish_goal(self.transport, interface, goal, settle)
         except RosCancelIgnored as ignored:
             if ignored.stopping:  # a stopped task's failure may be dropped (pursue): keep it
                 self.unconfirmed_cancels.append(ignored)
@@ -157,16 +158,28 @@ class RosRobotClient:
                 stopping=True,
             )
 
-    def _settle(self, server: str, end: GoalOutcome) -> None:
-        """Wait for the state published after ``end`` (failed goals moved the robot too)."""
-        if not self.transport.wait_for_state(end.mark, STATE_TIMEOUT):
+    def _settle(
+        self, server: str, end: GoalOutcome, ends_at: Mapping[str, float] | None = None
+    ) -> None:
+        """Wait for the state published after ``end`` (failed goals moved the robot too)
+        and put the world in it; a succeeded trajectory's state may show its end
+        ``ends_at`` already."""
+        shown = ends_at if end.state is GoalState.SUCCEEDED else None
+        mirror = self.mirror
+        if mirror is None:
+            settled = self.transport.wait_for_state(end.mark, STATE_TIMEOUT, shown)
+        else:
+            read = (self.fixed_frame, self.desc.base_frame, mirror.movable_objects())
+            state = self.transport.settle(end.mark, STATE_TIMEOUT, shown, read)
+            if settled := state is not None:
+                self._sync(mirror, state)
+        if not settled:
             raise RosConnectionLost(
                 f"no joint states or transforms of {self.name} arrived within {STATE_TIMEOUT} s "
                 f"after {server} finished",
                 server=server,
                 reason="state not published",
             )
-        self.mirror_state()
 
     @property
     def has_world(self) -> bool:
@@ -187,6 +200,9 @@ class RosRobotClient:
         state = self.transport.snapshot(
             self.fixed_frame, self.desc.base_frame, mirror.movable_objects()
         )  # one request
+        self._sync(mirror, state)
+
+    def _sync(self, mirror: WorldMirror, state: StateSnapshot) -> None:
         mirror.sync(self._finite(state.joints), state.base, state.environment, state.objects)
 
     def move_joints(
@@ -244,7 +260,7 @@ class RosRobotClient:
         if interface.action_type != "pr2_controllers_msgs/SingleJointPosition":
             trajectory = with_coupled_followers(self.desc, trajectory)
         goal = trajectory_goal(interface.action_type, trajectory, self.config.goal_tolerances)
-        outcome = self.run(resource, goal, failure)
+        outcome = self.run(resource, goal, failure, ends_at=trajectory.end)
         self._check_reached(trajectory, failure)
         report_executed(trajectory)
         return outcome

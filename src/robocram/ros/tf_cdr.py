@@ -3,7 +3,7 @@
 A robot publishes hundreds of transforms on ``/tf`` at 30 Hz or more. rclpy turns each
 into Python message objects, field by field, holding the interpreter's lock long enough
 to delay our node's answers to the plan process; our ROS 2 node subscribes raw instead
-and reads the few fields it keeps here (frames, translation, rotation; not the stamps),
+and reads the few fields it keeps here (stamps, frames, translation, rotation),
 and the projection driver publishes the bytes written here.
 
 Layout (XCDR1, as Fast DDS writes it): a 4-byte encapsulation header whose second byte
@@ -31,7 +31,16 @@ def read_tf_message(raw: bytes) -> list[Transform]:
     """``(parent, child, translation, rotation)`` of every transform in the message.
 
     Raises:
-        ValueError: the bytes are not a CDR-encoded TFMessage (truncated, bad header).
+        RosArgumentError: the bytes are not a CDR-encoded TFMessage (truncated, bad header).
+    """
+    return [transform for _, transform in read_stamped_tf_message(raw)]
+
+
+def read_stamped_tf_message(raw: bytes) -> list[tuple[float, Transform]]:
+    """``(stamp [s], (parent, child, translation, rotation))`` of every transform.
+
+    Raises:
+        RosArgumentError: the bytes are not a CDR-encoded TFMessage (truncated, bad header).
     """
     if len(raw) < 8:
         raise RosArgumentError(f"a TFMessage needs at least 8 bytes, got {len(raw)}")
@@ -40,15 +49,17 @@ def read_tf_message(raw: bytes) -> list[Transform]:
     try:
         (count,) = struct.unpack_from(order + "I", data, 0)
         offset = 4
-        transforms: list[Transform] = []
+        transforms: list[tuple[float, Transform]] = []
         for _ in range(count):
-            offset += 8  # stamp: sec, nanosec (aligned: every field before is 4-byte)
+            sec, nanosec = struct.unpack_from(order + "iI", data, offset)
+            offset += 8  # aligned: every field before is 4-byte
             parent, offset = _string(data, offset, order)
             child, offset = _string(data, _align(offset, 4), order)
             offset = _align(offset, 8)
             x, y, z, qx, qy, qz, qw = struct.unpack_from(order + "7d", data, offset)
             offset += 56
-            transforms.append((parent, child, (x, y, z), (qx, qy, qz, qw)))
+            stamp = sec + nanosec * 1e-9
+            transforms.append((stamp, (parent, child, (x, y, z), (qx, qy, qz, qw))))
             offset = _align(offset, 4)
     except struct.error as err:
         raise RosArgumentError(f"not a CDR TFMessage: {err}") from err

@@ -9,7 +9,7 @@ rclpy (docs/ros.md, docs/ros2.md); both through ``node_process.py``.
 from __future__ import annotations
 
 import threading
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from enum import Enum
 from typing import Any, Protocol
@@ -17,7 +17,9 @@ from typing import Any, Protocol
 from robocram.tf import Pose
 
 RosDict = dict[str, Any]
-StateMark = tuple[int, int]  # joint-state and base-transform messages arrived so far
+# joint-state and base-transform messages arrived so far, and the robot's stamp [s] of the
+# result the mark is taken at (0.0: unknown; ROS 2 results carry none)
+StateMark = tuple[int, int, float]
 
 
 class GoalState(Enum):
@@ -34,13 +36,14 @@ class GoalState(Enum):
 @dataclass(frozen=True)
 class GoalOutcome:
     """How a goal ended: its state, the server's status text, the result, the state
-    messages that had arrived when it did (state arriving after ``mark`` shows its end)
+    messages that had arrived when it did (state arriving after ``mark``, or stamped at or
+    just after its result's stamp, shows its end)
     and the last feedback the server sent (e.g. Nav2's distance remaining; may be empty)."""
 
     state: GoalState
     status_text: str
     result: RosDict
-    mark: StateMark = (0, 0)
+    mark: StateMark = (0, 0, 0.0)
     arrived: float = 0.0  # [s] time.monotonic() when our node got the result (benchmarks)
     feedback: RosDict = field(default_factory=dict)
 
@@ -84,9 +87,28 @@ class Transport(Protocol):
         """Ask the server to cancel the goal (its outcome arrives as PREEMPTED or RECALLED)."""
         ...
 
-    def wait_for_state(self, after: StateMark | None, timeout: float) -> bool:
+    def wait_for_state(
+        self,
+        after: StateMark | None,
+        timeout: float,
+        ends_at: Mapping[str, float] | None = None,
+    ) -> bool:
         """Wait until joint states and the base's transform arrived after ``after`` (an
-        outcome's mark; None: from now on). Arrival, not stamps: robot clocks may differ."""
+        outcome's mark; None: from now on), or a state stamped at or just after the result
+        (the robot's stamps compared with each other, never with our clock).
+        ``ends_at``: the joints a finished trajectory ends at; a state held already that
+        shows them, every transform stamped no earlier, is the state after it."""
+        ...
+
+    def settle(
+        self,
+        after: StateMark,
+        timeout: float,
+        ends_at: Mapping[str, float] | None,
+        snapshot: tuple[str, str, Sequence[str]],
+    ) -> StateSnapshot | None:
+        """:meth:`wait_for_state`, then :meth:`snapshot` of ``(target_frame, base_frame,
+        objects)``, in one request; None if no state came within ``timeout``."""
         ...
 
     def joint_states(self) -> dict[str, float]:

@@ -4,11 +4,11 @@ For tests and demos the robot behind real ROS is then a simulated one: the actio
 servers named by the robot's ``ros_action/4`` facts move the projected robot (as
 ``goals.py`` says per action type), and ``/joint_states`` plus ``/tf`` (every robot link
 and object in ``map``) are published at ``PUBLISH_RATE`` and after every goal, before its
-result, with the joint states of each articulated environment (the kitchen's drawers and
-doors) on ``/<name>/joint_states``, as iai_kitchen publishes them. ``fault`` makes every
-goal end badly on purpose, to exercise clients: ``"silent"`` never answers (until
-cancelled), ``"abort"`` aborts with a status text, ``"ignore_cancel"`` never answers and
-ignores cancels; ``"nan_joint_state"`` publishes the torso's position as NaN.
+result and again after it, with the joint states of each articulated environment (the
+kitchen's drawers and doors) on ``/<name>/joint_states``, as iai_kitchen publishes them.
+``fault`` makes every goal end badly on purpose, to exercise clients: ``"silent"`` never
+answers (until cancelled), ``"abort"`` aborts with a status text, ``"ignore_cancel"``
+never answers and ignores cancels; ``"nan_joint_state"`` publishes the torso's position as NaN.
 ``controllers="pr2"`` behaves as the real PR2's controllers
 (``pr2_controllers.py``: a gripper gap in metres that stalls on objects, joints clamped
 to the soft limits, results without status text); ``clock_offset`` [s] shifts the stamps
@@ -199,13 +199,14 @@ class ProjectionDriver:
         self.publish_state()
         if outcome is None:
             server.set_preempted(to_message(result_type, {}), "cancelled; stopped where it was")
-            return
-        succeeded, result, text = outcome
-        message = _result(result_type, result)
-        if succeeded:
-            server.set_succeeded(message, text)
         else:
-            server.set_aborted(message, text)
+            succeeded, result, text = outcome
+            message = _result(result_type, result)
+            if succeeded:
+                server.set_succeeded(message, text)
+            else:
+                server.set_aborted(message, text)
+        self.publish_state()  # stamped after the result, as a robot streaming its state is
 
     def _handle(
         self,

@@ -36,7 +36,7 @@ POLL = 0.02  # [s] how often a faulty goal looks at its cancel request
 THREADS = 8  # executor threads: goals of several resources run at once
 STATIC_PARENT = "world"  # map's parent on /tf_static
 FEEDBACK_PERIOD = 0.1  # [s] between a goal's feedback messages
-AFTER_RESULT = 0.01  # [s] after a goal's result, the state is published once more
+AFTER_RESULT = 0.003  # [s] after a goal's result, the state is published once more
 
 
 class Ros2ProjectionDriver(ProjectionDriver):
