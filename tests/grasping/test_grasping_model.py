@@ -98,6 +98,22 @@ def test_a_narrow_hand_takes_the_mug_by_its_handle_only() -> None:
     assert x == pytest.approx(0.0) and 0.041 < y < 0.081 and z == pytest.approx(0.05)
 
 
+def test_a_hand_too_narrow_for_the_body_also_takes_the_handle_from_above() -> None:
+    """Issue 37: in the kitchen the mug's handle faces the wall, out of the TIAGo Pro's
+    sideways reach; from above, the fingers close across the bar below the top."""
+    found = grasps(MUG, Hand(max_opening=0.071))
+    sideways = [g for g in found if g.approach == (0.0, -1.0, 0.0)]
+    above = [g for g in found if g.approach == (0.0, 0.0, -1.0)]
+    assert len(sideways) == len(above) == 2 and found[:2] == sideways  # sideways first
+    for grasp in above:
+        x, y, z = grasp.tool.position
+        assert (x, z) == pytest.approx((0.0, 0.1 - RIM_DEPTH)) and 0.041 < y < 0.081
+        assert grasp.opening == pytest.approx(0.012 + CLEARANCE)
+        assert abs(grasp.across[0]) == pytest.approx(1.0)  # across the bar
+    wide = [g for g in grasps(MUG, PR2_HAND) if g.name == "handle"]  # the body fits it
+    assert {g.approach for g in wide} == {(0.0, -1.0, 0.0)}
+
+
 def test_no_side_grasp_comes_in_through_the_handle() -> None:
     names = [g.name for g in grasps(MUG, Hand(max_opening=0.13))]
     assert "left" not in names  # the handle sticks out on +y

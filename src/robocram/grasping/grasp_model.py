@@ -12,7 +12,9 @@ Grasps (CRAM's names), in the object's frame (x forward, z up):
   straddling it ``RIM_DEPTH`` below the rim; one place per side the box shows no handle.
   Width: the wall's thickness.
 - ``handle`` (``object_handle/2``): sideways onto the bar that sticks out of the body,
-  at half height; width: the bar's.
+  at half height; width: the bar's. A hand too narrow for the body also takes the bar
+  from above, :data:`RIM_DEPTH` below the top, the fingers closing across it: a narrow
+  hand's only grasp of a mug whose handle faces a wall (issue 37: the TIAGo Pro's).
 
 Each needs its width plus :data:`CLEARANCE`; a grasp needing more than the hand opens is
 not offered, and when none is left :class:`ObjectUngraspable` names both widths.
@@ -130,6 +132,12 @@ def _handle(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
     for turn in (0.0, math.pi):
         opening = across if turn == 0.0 else (-across[0], -across[1], 0.0)
         yield _grasp(hand, "handle", turn, at, approach, opening, shape.handle)
+    if 2 * r + CLEARANCE <= hand.max_opening:
+        return  # the body fits the hand: it is taken by the body from above
+    above = (at[0], at[1], shape.high[2] - RIM_DEPTH)
+    for turn in (0.0, math.pi):
+        opening = across if turn == 0.0 else (-across[0], -across[1], 0.0)
+        yield _grasp(hand, "handle", turn, above, DOWN, opening, shape.handle)
 
 
 def _of_name(shape: ObjectShape, hand: Hand, name: str) -> Iterator[Grasp]:
