@@ -8,7 +8,9 @@ are measured, the opening points the way the jaw opens, and an added frame sits 
 middle of the opening, between the fixed jaw's inner face and the moving jaw open
 (``jaw_opening.py``; the closed jaw's middle lies inside the fixed jaw). An existing
 frame rigid with the wrist, named like a tool frame and reaching the fingers, is kept
-when its axes agree; otherwise a frame is added in code.
+when its axes agree; otherwise a frame is added in code, along the approach amid the
+outer half of the closed fingers' shapes (a finger link's frame can sit on the gripper's
+base, as the TIAGo Pro's do); a curling hand's at its links' reach, as before.
 """
 
 from __future__ import annotations
