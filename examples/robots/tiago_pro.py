@@ -39,8 +39,8 @@ def description() -> RobotDescription:
                 name="left",
                 # why: child of arm_left_7_joint, the last joint before the fingers
                 end_effector_link="arm_left_7_link",
-                # why: no frame of the URDF reaches the fingers: added 0.129 m out along the
-                #   approach
+                # why: no frame of the URDF reaches the fingers: added 0.163 m out along the
+                #   approach, amid the outer half of the closed fingers
                 tool_frame="left_standard_tool_frame",
                 # why: parent of the first arm joint after the torso; its joints down to the wrist
                 #   are found at load
@@ -67,8 +67,8 @@ def description() -> RobotDescription:
                 name="right",
                 # why: child of arm_right_7_joint, the last joint before the fingers
                 end_effector_link="arm_right_7_link",
-                # why: no frame of the URDF reaches the fingers: added 0.129 m out along the
-                #   approach
+                # why: no frame of the URDF reaches the fingers: added 0.163 m out along the
+                #   approach, amid the outer half of the closed fingers
                 tool_frame="right_standard_tool_frame",
                 # why: parent of the first arm joint after the torso; its joints down to the wrist
                 #   are found at load
@@ -112,12 +112,12 @@ def description() -> RobotDescription:
             FrameSpec(
                 name="left_standard_tool_frame",
                 parent="arm_left_7_link",
-                pose=Pose((0.0, 0.0, 0.129288), (0.0, -0.707107, 0.0, 0.707107)),
+                pose=Pose((0.0, 0.0, 0.163436), (0.0, -0.707107, 0.0, 0.707107)),
             ),
             FrameSpec(
                 name="right_standard_tool_frame",
                 parent="arm_right_7_link",
-                pose=Pose((0.0, 0.0, 0.129288), (0.707107, 0.0, 0.707107, 0.0)),
+                pose=Pose((0.0, 0.0, 0.163436), (0.707107, 0.0, 0.707107, 0.0)),
             ),
             FrameSpec(
                 name="head_front_camera_link_optical",

@@ -86,10 +86,12 @@ def test_printed_draft_runs_and_loads(tmp_path: Path) -> None:
     assert camera.maximal_height - camera.minimal_height == pytest.approx(0.35, abs=1e-3)
     poses = link_poses(loaded.model)
     for arm in loaded.arms.values():
-        # the URDF's tool link is the flange: a frame is added 12.9 cm out, x pointing there
+        # the URDF's tool link is the flange: a frame is added 16.3 cm out, x pointing there,
+        # amid the closed fingers' outer half (their links' origins lie at 12.9 cm, on the
+        # gripper's base: a frame there put the base into what the hand grasped, issue 37)
         tool, wrist = poses[arm.tool_frame], poses[arm.end_effector_link]
         out = np.subtract(tool.position, wrist.position)
-        assert np.linalg.norm(out) == pytest.approx(0.129, abs=1e-3)
+        assert np.linalg.norm(out) == pytest.approx(0.163, abs=1e-3)
         assert tool.matrix()[:3, 0] @ (out / np.linalg.norm(out)) == pytest.approx(1.0, abs=1e-6)
 
 

@@ -108,9 +108,8 @@ def test_an_example_naming_no_camera_gets_one_that_looks_and_detects(name: str) 
 
 
 HAND_IN_THE_MUG = pytest.mark.xfail(
-    reason="at their top grasps the drafted Tiago Pro's gripper base link and the Tiago "
-    "hand's finger links go more than 5 mm into the mug: bounded allow_hand (issue 35) "
-    "refuses them; their grasp depth must come from their hands' shapes",
+    reason="at its top grasps the Tiago's Hey5 hand's straight finger links go more than "
+    "5 mm into the mug: bounded allow_hand (issue 35) refuses them",
     strict=True,
 )
 
@@ -118,7 +117,7 @@ HAND_IN_THE_MUG = pytest.mark.xfail(
 @pytest.mark.parametrize(
     "name",
     [
-        pytest.param("tiago_pro", marks=HAND_IN_THE_MUG),
+        "tiago_pro",  # its tool frame amid its closed fingers, no longer on the base (issue 37)
         pytest.param("tiago", marks=HAND_IN_THE_MUG),
     ],
 )
@@ -141,11 +140,42 @@ def test_pick_up_runs_unchanged_on_drafted_robots(name: str) -> None:
             with simulated_robot(world, scene.robot):
                 result = pick_up(scene.look_target)
             lifted = world.pose("mug-1").position[2]
+            raw_lift, touched = _raw_lift_and_hand_contacts(world, scene.robot, result.arm, mug)
         finally:
             world.close()
     assert (result.object_name, result.arm) == ("mug-1", nearest)
     # lifted by the plan's 10 cm with the gripper holding it
     assert lifted == pytest.approx(scene.look_target.position[2] + 0.10, abs=0.02)
+    assert raw_lift >= 0.05  # PyBullet's own base position of the mug
+    assert touched == {"mug-1"}, touched  # the hand holds the mug and touches nothing else
+
+
+def _raw_lift_and_hand_contacts(
+    world: World, robot: str, arm: str, start: tuple[float, float, float]
+) -> tuple[float, set[str]]:
+    """How far [m] PyBullet says the mug rose from ``start``, and the bodies the arm's
+    hand links come within 1 mm of (PyBullet's closest points, not our contact code)."""
+    client = world.physics.client()
+    mug = world.object("mug-1").body_id
+    rise = pybullet.getBasePositionAndOrientation(mug, physicsClientId=client)[0][2] - start[2]
+    body = world.object(robot).body_id
+    index = {
+        pybullet.getJointInfo(body, i, physicsClientId=client)[12].decode(): i
+        for i in range(pybullet.getNumJoints(body, physicsClientId=client))
+    }
+    spec = world.robot(robot).description.arms[arm]
+    hand = [index[link] for link in spec.hand_links if link in index]
+    touched = set()
+    for other in world:
+        if other.body_id == body:
+            continue
+        for link in hand:
+            near = pybullet.getClosestPoints(
+                body, other.body_id, 0.001, linkIndexA=link, physicsClientId=client
+            )
+            if near:
+                touched.add(other.name)
+    return rise, touched
 
 
 @pytest.mark.filterwarnings("ignore::robocram.robots.DescriptionWarning")  # no camera

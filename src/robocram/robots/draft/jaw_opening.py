@@ -27,7 +27,7 @@ from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.link_centre import link_points
 
 
-def _points(
+def shape_points(
     tree: ModelTree, links: Iterable[str], values: Mapping[str, float], wrist_link: str
 ) -> np.ndarray:
     """Points [m, wrist link, N x 3] on the shapes of ``links`` with the joints at ``values``."""
@@ -67,19 +67,19 @@ def jaw_opening_centre(
     across = np.cross(approach, opening)
     wrist, movers = hand.end_effector_link, tuple(hand.gripper_links)
     fixed = (wrist, *(link for link in hand.hand_links if link not in movers))
-    shut = _points(tree, movers, closed, wrist)
+    shut = shape_points(tree, movers, closed, wrist)
     if not len(shut):
         return None
     reach, width = shut @ approach, shut @ across
     bounds = np.array(
         ((reach.min() + reach.max()) / 2, reach.max(), width.min(), width.max()), float
     )
-    jaw = _zone(_points(tree, fixed, closed, wrist), approach, across, bounds)
+    jaw = _zone(shape_points(tree, fixed, closed, wrist), approach, across, bounds)
     jaw = jaw[jaw @ opening <= float(np.max(shut @ opening))]  # below the moving jaw's top
     if not len(jaw):
         return None
     face = float(np.max(jaw @ opening))
-    wide = _points(tree, movers, opened, wrist)
+    wide = shape_points(tree, movers, opened, wrist)
     standing = _zone(wide, approach, across, bounds)
     if len(standing):
         far = float(np.min(standing @ opening))

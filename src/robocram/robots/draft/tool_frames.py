@@ -8,7 +8,9 @@ are measured, the opening points the way the jaw opens, and an added frame sits 
 middle of the opening, between the fixed jaw's inner face and the moving jaw open
 (``jaw_opening.py``; the closed jaw's middle lies inside the fixed jaw). An existing
 frame rigid with the wrist, named like a tool frame and reaching the fingers, is kept
-when its axes agree; otherwise a frame is added in code.
+when its axes agree; otherwise a frame is added in code, along the approach amid the
+outer half of the closed fingers' shapes (a finger link's frame can sit on the gripper's
+base, as the TIAGo Pro's do); a curling hand's at its links' reach, as before.
 """
 
 from __future__ import annotations
@@ -20,7 +22,7 @@ import numpy as np
 
 from robocram.robots.draft.finger_spread import opens_at_upper
 from robocram.robots.draft.hands import Hand
-from robocram.robots.draft.jaw_opening import jaw_opening_centre
+from robocram.robots.draft.jaw_opening import jaw_opening_centre, shape_points
 from robocram.robots.draft.link_poses import link_poses
 from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.link_centre import link_centre
@@ -212,11 +214,44 @@ def tool_frame(tree: ModelTree, hand: Hand, arm: str) -> ToolFrame:
         return ToolFrame(spec.name, spec, why, doubt)
     closed = _in_wrist(tree, hand, _closed(tree, hand, jaw), jaw)
     middle = np.mean([closed[link] for link in hand.gripper_links] or [approach * reach], axis=0)
-    centre = middle + (reach - float(middle @ approach)) * approach
+    grip = None if jaw or hand.opens_at_lower else _grip_depth(tree, hand, approach)
+    depth = reach if grip is None else grip
+    centre = middle + (depth - float(middle @ approach)) * approach
     spec = FrameSpec(
         f"{arm}_standard_tool_frame",
         hand.end_effector_link,
         Pose(tuple(float(v) for v in centre), _orientation(approach, opening).orientation),  # type: ignore[arg-type]
     )
-    why = f"no frame of the URDF reaches the fingers: added {reach:.3f} m out along the approach"
+    where = "" if grip is None else ", amid the outer half of the closed fingers"
+    why = (
+        f"no frame of the URDF reaches the fingers: added {depth:.3f} m out along the "
+        f"approach{where}"
+    )
     return ToolFrame(spec.name, spec, why, doubt)
+
+
+def _shut(tree: ModelTree, hand: Hand, approach: np.ndarray) -> dict[str, float]:
+    """The gripper joints at the limits where the fingers stand nearer (lower where the
+    shapes cannot tell)."""
+    values = {}
+    for name in hand.gripper_joints:
+        joint = tree.model.joints[name]
+        limit = joint.upper if opens_at_upper(tree, hand, name, approach) is False else joint.lower
+        values[name] = limit if limit is not None and math.isfinite(limit) else 0.0
+    return values
+
+
+def _grip_depth(tree: ModelTree, hand: Hand, approach: np.ndarray) -> float | None:
+    """How far [m] out along ``approach`` the fingers hold what they close on: the middle
+    of the outer half of the closed gripper links' shapes, where a jaw holds too
+    (``jaw_opening.py``); None where no shape can be read.
+
+    Link frames say little: the Tiago Pro's fingertip links' origins lie at the gripper's
+    base, their pads 7 to 64 mm beyond, and a tool frame there put the base 17 mm into a
+    mug's handle it grasped (issue 37)."""
+    wrist = hand.end_effector_link
+    points = shape_points(tree, hand.gripper_links, _shut(tree, hand, approach), wrist)
+    if not len(points):
+        return None
+    along = points @ approach
+    return float(along.min() + 3.0 * along.max()) / 4.0
