@@ -75,7 +75,7 @@ def test_the_tabletop_pick_up_lifts_the_mug_from_the_side(module: Path) -> None:
         with simulated_robot(world, scene.robot):
             held = pick_up(scene.look_target)
         after = pybullet.getBasePositionAndOrientation(mug, physicsClientId=client)[0][2]
-        arm = world.object(scene.robot).description.arms[held.arm]
+        arm = world.robot(scene.robot).description.arms[held.arm]
         links = _links(robot, client)
         hand = [links[name] for name in arm.hand_links if name in links]
         others = [o.body_id for o in world.objects() if o.body_id not in (mug, robot)]
