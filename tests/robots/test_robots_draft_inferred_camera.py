@@ -98,7 +98,8 @@ def test_an_aimed_optical_frame_looks_ahead_and_down_whatever_the_link(
 
 @pytest.mark.parametrize("name", ["iai_donbot", "kevin"])
 def test_a_urdf_naming_a_camera_is_drafted_as_before(name: str) -> None:
-    """The kept texts were drafted before inferred cameras existed."""
+    """The kept texts were drafted before inferred cameras existed (Kevin's tool frame since
+    the approach follows the fingers, not the links on its wrist)."""
     module = DATA / "drafts" / f"{name}.py"
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")

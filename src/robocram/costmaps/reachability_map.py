@@ -3,7 +3,9 @@
 Built once per robot arm from the URDF: joint values (the torso's too) are drawn from a
 seeded generator, batched FK places the tool, and samples whose approach axis points
 down (a grasp from above) are counted in polar bins around the base: horizontal
-distance, bearing and height. Used inverted around a target, the map scores the base
+distance, bearing and height. An arm whose tool (almost) never points down (a SCARA
+arm's wrist turns about the vertical only: IAI's Kevin) grasps from the side: its level
+samples are counted instead. Used inverted around a target, the map scores the base
 poses from which the target falls into well-filled bins.
 Maps are cached on disk under :func:`cache_dir`, keyed by the URDF's content.
 """
@@ -35,7 +37,8 @@ BEARINGS = 24  # bins over a full turn
 HEIGHT_STEP = 0.05  # [m]
 HEIGHT_MAX = 2.4  # [m]
 MAX_TILT = math.radians(30)  # approach axis within this of straight down counts as a grasp
-FORMAT = 4  # bump when the map's meaning changes: old cache files are then ignored
+MIN_DOWN_SHARE = 0.001  # of the samples pointing down, below which level ones count instead
+FORMAT = 5  # bump when the map's meaning changes: old cache files are then ignored
 
 
 @dataclass(frozen=True, eq=False)
@@ -72,7 +75,8 @@ class ReachabilityMap:
 
 
 def _sample_tool_points(desc: RobotDescription, arm: str, samples: int) -> NDArray[np.float64]:
-    """Tool positions (N x 3, base frame) of seeded random configurations grasping from above."""
+    """Tool positions (N x 3, base frame) of seeded random configurations grasping from
+    above (or from the side, for an arm that cannot point its tool down)."""
     kin = robot_kinematics(load_description(desc).model)
     joints = [kin.joint(name) for name in arm_joints(desc, arm, desc.torso_joint is not None)]
     rng = np.random.default_rng(0)
@@ -84,7 +88,10 @@ def _sample_tool_points(desc: RobotDescription, arm: str, samples: int) -> NDArr
     }
     rotations, positions = batch_frame_poses(kin, desc.arms[arm].tool_frame, values)
     approach = rotations @ approach_axis(desc, arm)
-    return positions[approach[:, 2] <= -math.cos(MAX_TILT)]
+    down = approach[:, 2] <= -math.cos(MAX_TILT)
+    if np.count_nonzero(down) >= MIN_DOWN_SHARE * samples:
+        return positions[down]
+    return positions[np.abs(approach[:, 2]) <= math.sin(MAX_TILT)]
 
 
 def build_reachability_map(

@@ -3,13 +3,17 @@
 The axes are read from the robot's kinematics, not assumed: the approach axis runs from
 the wrist (the arm's end-effector link) to the tool frame, the opening axis joins the two
 fingers farthest apart with the gripper open (made perpendicular to the approach). Our
-convention (x approach, y opening) is what every built-in robot gives. A suction hand
-(``GripperDescription.suction()``) has no opening: it holds what its tool frame touches,
-so it opens to no width and fits any object it can touch from above.
+convention (x approach, y opening) is what every built-in robot gives. A wrist that sits
+off the fingers' line (Kevin's hand hangs 7 cm below its SCARA wrist: the line is 23
+degrees off the fingers) would tilt every grasp; beyond :data:`OFF_AXIS_WRIST` the tool
+frame's own x is the approach (``robot check`` holds it within 30 degrees of the line).
+A suction hand (``GripperDescription.suction()``) has no opening: it holds what its tool
+frame touches, so it opens to no width and fits any object it can touch from above.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from functools import lru_cache
 from itertools import combinations
@@ -22,6 +26,7 @@ from robocram.logic.lru import LRUCache
 from robocram.robots import RobotDescription, RobotModel
 from robocram.tf import quaternion as quat
 
+OFF_AXIS_WRIST = math.radians(10.0)  # [rad] a wrist-to-tool line this far off the tool's x
 FINGER_DEPTH = 0.06  # [m] how far past an object's edge the fingertips may reach
 Axis = tuple[float, float, float]
 
@@ -70,7 +75,11 @@ def approach_axis(desc: RobotDescription, arm: str) -> Axis:
     wrist = forward_kinematics(desc, {}, spec.end_effector_link)
     suction = spec.gripper is not None and spec.gripper.is_suction
     fallback = (1.0, 0.0, 0.0) if suction else (0.0, 0.0, 1.0)  # a flange's face: on the wrist
-    return _unit(-np.asarray((tool.inverse() * wrist).position), fallback)
+    measured = _unit(-np.asarray((tool.inverse() * wrist).position), fallback)
+    fingers = spec.gripper is not None and not suction
+    if fingers and math.acos(max(-1.0, min(1.0, measured[0]))) > OFF_AXIS_WRIST:
+        return (1.0, 0.0, 0.0)  # the wrist off the fingers' line: the tool's x (see below)
+    return measured
 
 
 def _cross(a: Axis, b: Axis) -> Axis:

@@ -12,7 +12,7 @@ hand touches a mug's top instead (``suction_checks.py``).
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from itertools import combinations
 
 import numpy as np
@@ -160,6 +160,23 @@ def gripper(robot: ProjectedRobot, key: str, arm: ArmDescription) -> CheckResult
     return CheckResult(name, True, f"fingers span {opened:.3f} m open, {closed:.3f} m closed", "")
 
 
+def _reaches(
+    robot: ProjectedRobot, arm: ArmDescription
+) -> Iterator[tuple[Vector3, quat.Quaternion, bool]]:
+    """Targets and tool orientations to try: tool down first at every target and yaw,
+    then level (a side grasp: approach along the working direction, the wrist where the
+    tool was, turned either way about the approach), marked True."""
+    targets = reach_targets(robot, arm)
+    for target in targets:
+        for yaw in YAWS:
+            yield target, _down(yaw), False
+    heading = quat.to_euler(robot.world.pose(robot.name).orientation)[2]
+    heading += working_yaw(robot.description.model, arm)
+    for x, y, z in targets:
+        for roll in (0.0, math.pi):
+            yield (x, y, z), quat.from_euler(roll, 0.0, heading), True
+
+
 def _down(yaw: float) -> quat.Quaternion:
     """A tool orientation with its approach axis (x) pointing down, turned by ``yaw``."""
     pitch = quat.from_euler(0.0, math.pi / 2, 0.0)
@@ -194,20 +211,22 @@ def reach_targets(robot: ProjectedRobot, arm: ArmDescription) -> list[Vector3]:
 
 
 def reach_and_grip(robot: ProjectedRobot, key: str, arm: ArmDescription) -> list[CheckResult]:
-    """Reach ahead, tool down; then close the gripper on a mug put where plans grasp one."""
-    errors = []
-    for target in reach_targets(robot, arm):
-        for yaw in YAWS:
-            try:
-                reached = move_tcp(robot, key, Pose(target, _down(yaw)))
-            except PlanFailure as failure:
-                errors.append(str(failure))
-                continue
-            detail = f"tool at {_fmt(reached.position)} (map)"
-            gripper = arm.gripper
-            touch = gripper is not None and gripper.is_suction
-            held = suction_grip(robot, key, reached) if touch else _grip(robot, key, reached)
-            return [CheckResult(f"{key} arm: reach", True, detail, ""), held]
+    """Reach ahead, tool down; then close the gripper on a mug put where plans grasp one.
+
+    An arm whose tool cannot point down anywhere (a SCARA arm's wrist turns about the
+    vertical only: IAI's Kevin) reaches with its tool level instead, as a side grasp."""
+    errors: list[str] = []
+    for target, orientation, level in _reaches(robot, arm):
+        try:
+            reached = move_tcp(robot, key, Pose(target, orientation))
+        except PlanFailure as failure:
+            errors.append(str(failure))
+            continue
+        detail = f"tool at {_fmt(reached.position)} (map)" + (", level" if level else "")
+        gripper = arm.gripper
+        touch = gripper is not None and gripper.is_suction
+        held = suction_grip(robot, key, reached) if touch else _grip(robot, key, reached)
+        return [CheckResult(f"{key} arm: reach", True, detail, ""), held]
     fix = "check the arm's joints and base_link, and that the tool frame is at the fingers"
     planar = slice_advice(robot.description, arm, base_in_ik(robot.description, key))
     return [CheckResult(f"{key} arm: reach", False, errors[0], planar or fix)]

@@ -4,8 +4,11 @@ A pan-tilt head or a neck arm is described; other robots are read off the joints
 the camera and the root link. A camera moved only by an arm's joints (a wrist camera, no
 neck: the Panda) looks by moving that arm to a viewing pose; a camera moved by one joint
 that belongs to no arm (Baxter's head, which only pans) looks by turning that joint and
-accepts the tilt it cannot change. A camera no joint moves (the torso aside) cannot look
-around: such a robot has no looking module, and a look fails as no matching module.
+accepts the tilt it cannot change. A camera no joint moves (the torso aside) on a robot
+that drives (IAI's Kevin, its camera fixed on a mast) "looks" by checking that the target
+is in its view: the robot turns towards what it looks at by standing so (a failed look
+says so). A fixed camera on a robot that stays cannot look around: it has no looking
+module, and a look fails as no matching module.
 """
 
 from __future__ import annotations
@@ -15,7 +18,7 @@ from typing import Literal
 
 from robocram.robots.description import LoadedDescription, RobotDescription
 
-MeansKind = Literal["pan_tilt", "neck_arm", "arm", "pan"]
+MeansKind = Literal["pan_tilt", "neck_arm", "arm", "pan", "fixed"]
 
 
 @dataclass(frozen=True)
@@ -43,7 +46,7 @@ def looking_means(desc: LoadedDescription) -> LookingMeans | None:
         j for j in chain if j.type != "fixed" and j.mimic is None and j.name != desc.torso_joint
     ]
     if not moving:
-        return None
+        return LookingMeans("fixed") if desc.drive != "fixed" else None
     names = {j.name for j in moving}
     for key, arm in desc.arms.items():
         if names <= set(arm.joints):

@@ -173,6 +173,8 @@ def _nearest_in_view(desc: LoadedDescription, height: float, yaw: float = 0.0) -
     means = looking_means(desc)
     if pt is None and means is not None and means.kind == "pan" and means.joint is not None:
         return _nearest_in_pan_view(desc, means.joint, height, yaw)
+    if pt is None and means is not None and means.kind == "fixed":
+        return _nearest_in_pan_view(desc, None, height, yaw)
     tilt = finite_limits(desc.model.joints[pt.tilt_joint]) if pt is not None else None
     if pt is None or tilt is None or not desc.cameras:
         return -math.inf
@@ -188,12 +190,16 @@ def _nearest_in_view(desc: LoadedDescription, height: float, yaw: float = 0.0) -
     return _seen_from(view, math.asin(min(_look_down(view), 1.0)) - LOOK_MARGIN, height)
 
 
-def _nearest_in_pan_view(desc: LoadedDescription, pan: str, height: float, yaw: float) -> float:
-    """:func:`_nearest_in_view` for a head that only pans: its tilt stays, so the lower
-    edge of its view (half the vertical field below the optical axis) bounds it."""
+def _nearest_in_pan_view(
+    desc: LoadedDescription, pan: str | None, height: float, yaw: float
+) -> float:
+    """:func:`_nearest_in_view` for a head that only pans (or a fixed camera, ``pan``
+    None): its tilt stays, so the lower edge of its view (half the vertical field below
+    the optical axis) bounds it."""
     camera = desc.cameras[0]
     turn = Pose(orientation=quat.from_euler(0.0, 0.0, yaw))
-    view = turn * forward_kinematics(desc, {pan: _pan_to(desc, yaw, pan)}, camera.frame)
+    joints = {pan: _pan_to(desc, yaw, pan)} if pan is not None else {}
+    view = turn * forward_kinematics(desc, joints, camera.frame)
     down = math.asin(max(-1.0, min(_look_down(view), 1.0))) + camera.vertical_fov / 2
     return _seen_from(view, down - LOOK_MARGIN, height)
 
@@ -201,14 +207,13 @@ def _nearest_in_pan_view(desc: LoadedDescription, pan: str, height: float, yaw: 
 def _view_note(desc: LoadedDescription) -> str:
     """Why the view bounds the mug, where a head that only pans bounds it; else ''."""
     means = looking_means(desc)
-    if desc.pan_tilt is not None or means is None or means.kind != "pan":
+    if desc.pan_tilt is not None or means is None or means.kind not in ("pan", "fixed"):
         return ""
     camera = desc.cameras[0]
     down = math.asin(max(-1.0, min(_look_down(forward_kinematics(desc, {}, camera.frame)), 1.0)))
     lowest = math.degrees(down + camera.vertical_fov / 2)
-    return (
-        f"; its head only pans ({means.joint}): its camera sees {lowest:.0f} degrees down at most"
-    )
+    how = f"its head only pans ({means.joint})" if means.kind == "pan" else "its camera is fixed"
+    return f"; {how}: its camera sees {lowest:.0f} degrees down at most"
 
 
 def _seen_from(view: Pose, angle: float, height: float) -> float:

@@ -33,6 +33,7 @@ TOOL_WORDS = ("tool", "tcp", "grasp", "endpoint", "end_effector", "gripper")
 AXIS_AGREEMENT = math.cos(math.radians(20.0))  # an axis within 20 degrees of the wanted one
 SNAP = math.cos(math.radians(15.0))  # a measured direction this close to a link axis is it
 REACH_SHARE = 0.9  # of the fingers' reach past the wrist a kept tool frame must reach
+FINGER_REACH = 0.01  # [m] a finger's shape middle this far from its frame shows its reach
 
 
 @dataclass(frozen=True)
@@ -93,12 +94,32 @@ def _gripper_at(tree: ModelTree, hand: Hand, where: str) -> dict[str, float]:
 
 def approach_and_opening(tree: ModelTree, hand: Hand) -> tuple[np.ndarray, np.ndarray | None]:
     """Unit approach and opening directions in the wrist link (opening None if unseen)."""
-    opened = _in_wrist(tree, hand, _gripper_at(tree, hand, "open"))
-    approach = _snapped(np.mean(list(opened.values()), axis=0))
+    approach = _finger_extension(tree, hand)
+    if approach is None:
+        opened = _in_wrist(tree, hand, _gripper_at(tree, hand, "open"))
+        approach = _snapped(np.mean(list(opened.values()), axis=0))
     opening = _opening(tree, hand, approach, centres=False)
     if opening is None:
         opening = _opening(tree, hand, approach, centres=True)
     return approach, opening
+
+
+def _finger_extension(tree: ModelTree, hand: Hand) -> np.ndarray | None:
+    """The way the fingers reach out, from their frames to their shapes' middles, where
+    that lies along a wrist axis (within ``SNAP``): a finger is longer than it is thick.
+    None where the fingers' shapes sit on their frames or point no clear way; the mean
+    of the hand's links decides then (it counts cameras and plates on the wrist too, and
+    a wrist camera behind the fingers turns it: IAI's Kevin)."""
+    if not hand.gripper_links:
+        return None
+    values = _gripper_at(tree, hand, "open")
+    frames = _in_wrist(tree, hand, values)
+    centres = _in_wrist(tree, hand, values, centres=True)
+    reach = np.sum([centres[link] - frames[link] for link in hand.gripper_links], axis=0)
+    if np.linalg.norm(reach) < FINGER_REACH * len(hand.gripper_links):
+        return None
+    snapped = _snapped(reach)
+    return snapped if np.count_nonzero(snapped) == 1 else None
 
 
 def turning_jaw(tree: ModelTree, hand: Hand) -> bool:
