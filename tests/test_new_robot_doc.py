@@ -17,12 +17,6 @@ def python_blocks(text: str) -> list[str]:
     return re.findall(r"^```python\n(.*?)^```", text, flags=re.S | re.M)
 
 
-@pytest.mark.xfail(
-    reason="the guide's drafted Tiago Pro picks the mug up with its gripper base link more "
-    "than 5 mm inside it (its tool frame sits ~5 cm behind its fingertips' ends): bounded "
-    "allow_hand (issue 35) refuses it; the draft needs a tool frame at the fingertips",
-    strict=True,
-)
 def test_every_block_of_the_guide_runs(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.chdir(ROOT)  # the guide names files from the repository's root
     blocks = python_blocks(DOC.read_text(encoding="utf-8"))

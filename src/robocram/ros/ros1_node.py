@@ -205,13 +205,12 @@ class RosNode(NodeState):
             time.sleep(MONITOR_PERIOD)
 
 
-def _result_stamp(handle: Any) -> float:
+def _result_stamp(handle: object) -> float:
     """The robot's stamp [s] of the goal's result message (actionlib keeps the last
     ``ActionResult`` on the handle's state machine), 0.0 if there is none."""
     latest = getattr(getattr(handle, "comm_state_machine", None), "latest_result", None)
-    if latest is None:
-        return 0.0
-    return float(latest.header.stamp.to_sec())
+    to_sec = getattr(getattr(getattr(latest, "header", None), "stamp", None), "to_sec", None)
+    return float(to_sec()) if callable(to_sec) else 0.0
 
 
 class Serving(Protocol):
