@@ -49,39 +49,51 @@ def _tucked(held: Held) -> Pose:
 
 
 def _hold_out(held: Held, out: Pose, spot: Spot) -> None:
-    """Bring the tucked ``held`` out again: the tool at ``out`` (base frame), raised so
-    the thing hangs :data:`OVER_TABLE` over its spot; backs the base off once if the arm
-    cannot come out where it stands."""
+    """Bring the tucked ``held`` out again: the tool where ``out`` (base frame) puts it,
+    raised so the thing hangs :data:`OVER_TABLE` over its spot, turned as it was just
+    after the pick (a thing turned off the map's axes has wider bounds, and the ``on``
+    location keeps their half diagonal free round it), else as ``out`` turns it; backs
+    the base off once if the arm cannot come out where it stands."""
     for attempt in range(2):
         base = map_pose(base_frame(current_robot()))
         tool = base * out
-        thing = tool * held.object_in_tool
-        rise = max(0.0, spot.pose.position[2] + OVER_TABLE - thing.position[2])
-        x, y, z = tool.position
-        target = PoseStamped.from_pose("map", Pose((x, y, z + rise), tool.orientation))
-        try:
-            perform(
-                a.motion(
-                    type="moving-tcp",
-                    arm=held.arm,
-                    target=a.location(pose=target),
-                    **GRASPING,
-                    touching=held.object_name,
-                )  # fmt: skip
-            )
-            return
-        except ManipulationLowLevelFailure:
-            if attempt:
-                raise
+        for turn in (held.lifted.pose.orientation, tool.orientation):
+            thing = Pose(tool.position, turn) * held.object_in_tool
+            rise = max(0.0, spot.pose.position[2] + OVER_TABLE - thing.position[2])
+            x, y, z = tool.position
+            target = PoseStamped.from_pose("map", Pose((x, y, z + rise), turn))
+            try:
+                _move_tool(held, target)
+                return
+            except ManipulationLowLevelFailure:
+                if attempt and turn is tool.orientation:
+                    raise
         yaw = yaw_of(base)
         bx, by, _ = base.position
         navigate(planar_pose(bx - BACK_OFF * math.cos(yaw), by - BACK_OFF * math.sin(yaw), yaw))
 
 
+def _move_tool(held: Held, target: PoseStamped) -> None:
+    """Move the tool holding ``held`` to ``target`` (map)."""
+    perform(
+        a.motion(
+            type="moving-tcp",
+            arm=held.arm,
+            target=a.location(pose=target),
+            **GRASPING,
+            touching=held.object_name,
+        )  # fmt: skip
+    )
+
+
 def _put(held: Held, spot: Spot, done: TableSetting) -> None:
-    """Deliver ``held`` to ``spot``, the table seen past the robot; record it placed."""
+    """Deliver ``held`` to ``spot``, the table seen past the robot; record it placed.
+
+    After the stands that hold it over the spot as the arm holds it now come those from
+    which the arm reaches the spot: a thing picked up close to the body (a cup from a
+    drawer's back) would put the other shoulder into the table."""
     where = spot_location(done.table, spot, held.object_name, see_through=(current_robot(),))
-    deliver(held, where, held.arm, log=done.log)
+    deliver(held, where, held.arm, log=done.log, reach_stands=True)
     done.placed[held.object_name] = spot
 
 
