@@ -115,7 +115,7 @@ def breakfast() -> Iterator[Breakfast]:
 
 
 def test_the_activities_are_action_types() -> None:
-    assert ACTIONS["setting-table"].keys == ("people", "setting", "shared", "table")
+    assert ACTIONS["setting-table"].keys == ("people", "setting", "shared", "table", "two_arms")
     assert ACTIONS["clearing-table"].keys == ("objects", "table")
     assert ACTIONS["facing"].required == ("target",)
     assert ACTIONS["carrying"].keys == ("arm", "target")

@@ -116,6 +116,20 @@ def _look_into(
     return next((thing for thing in seen if str(thing.get("name")) not in skip), None)
 
 
+def find_in_place(
+    wanted: ObjectDesignator, visit: Visit, log: AttemptLog, skip: Collection[str] = ()
+) -> tuple[ObjectDesignator, OpenedContainer] | None:
+    """``wanted`` seen in the visit's place, a container opened once, and the container;
+    None when it is not a container, cannot be opened or ``wanted`` is not seen there."""
+    with contextlib.suppress(PlanFailure):
+        inside = visit.open(log)
+        if inside is not None:
+            seen = _look_into(inside, wanted, skip)
+            if seen is not None:
+                return seen, inside
+    return None
+
+
 def find(
     wanted: ObjectDesignator, visit: Visit, log: AttemptLog, skip: Collection[str] = ()
 ) -> tuple[ObjectDesignator, OpenedContainer | None]:
@@ -126,12 +140,9 @@ def find(
     Raises:
         SearchExhausted: it is nowhere the search looked.
     """
-    with contextlib.suppress(PlanFailure):
-        inside = visit.open(log)
-        if inside is not None:
-            seen = _look_into(inside, wanted, skip)
-            if seen is not None:
-                return seen, inside
+    found = find_in_place(wanted, visit, log, skip)
+    if found is not None:
+        return found
     searched = SearchLog(attempts=log)
     try:
         seen = search(wanted, log=searched)

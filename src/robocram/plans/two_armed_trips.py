@@ -18,10 +18,11 @@ from __future__ import annotations
 import math
 
 from robocram.designators import a
+from robocram.designators.errors import GroundingError
 from robocram.execution import perform
 from robocram.execution.failures import ManipulationLowLevelFailure, PlanFailure
 from robocram.plans.basic_actions import navigate, park_arms
-from robocram.plans.bringing import Visit, find, wanted_object
+from robocram.plans.bringing import Visit, find, find_in_place, wanted_object
 from robocram.plans.deliver import deliver
 from robocram.plans.fetch import fetch
 from robocram.plans.pick_object import GRASPING, Held
@@ -114,11 +115,8 @@ def bring_two(first: Spot, second: Spot, visit: Visit, done: TableSetting) -> li
         other = None
     if other is None:
         return failures + _deliver_alone(held, first, done) + _alone(second, visit, done)
-    skip = {*done.placed, held.object_name}
-    try:
-        seen, inside = find(wanted_object(second.type), visit, done.log, skip=skip)
-        second_held = fetch(seen, arm=other, log=done.log, opened=inside)
-    except PlanFailure:  # the other hand cannot take it: the first alone, then the second
+    second_held = _second(second, other, visit, done, skip={*done.placed, held.object_name})
+    if second_held is None:  # the other hand cannot take it: the first alone, the second
         return _held_out_alone(held, out, first, done) + _alone(second, visit, done)
     carried: list[str] = []
     try:
@@ -128,6 +126,21 @@ def bring_two(first: Spot, second: Spot, visit: Visit, done: TableSetting) -> li
         failures.append(failure)
     failures += _held_out_alone(held, out, first, done, trip=carried)
     return failures
+
+
+def _second(spot: Spot, arm: str, visit: Visit, done: TableSetting, skip: set[str]) -> Held | None:
+    """The thing of ``spot`` picked up with ``arm`` where the first was kept, or None.
+
+    Only the visit's place is looked into: a thing kept elsewhere is searched for on a
+    trip of its own, hands free, rather than all over the kitchen with one hand full.
+    """
+    found = find_in_place(wanted_object(spot.type), visit, done.log, skip)
+    if found is None:
+        return None
+    try:
+        return fetch(found[0], arm=arm, log=done.log, opened=found[1])
+    except (PlanFailure, GroundingError):
+        return None
 
 
 def _held_out_alone(
