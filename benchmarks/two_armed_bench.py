@@ -12,6 +12,7 @@ two modes of one run.
 
 from __future__ import annotations
 
+import json
 import statistics
 import sys
 import tempfile
@@ -61,8 +62,9 @@ def _drives(robot: str, two_arms: bool) -> tuple[int, float]:
             length = 0.0
             count = 0
             for row in rows:
-                points = np.frombuffer(row.positions, "<f8").reshape(-1, len(row.joint_names))
-                xy = points[:, [row.joint_names.index("x"), row.joint_names.index("y")]]
+                names = json.loads(row.joint_names)  # stored as JSON text
+                points = np.frombuffer(row.positions, "<f8").reshape(-1, len(names))
+                xy = points[:, [names.index("x"), names.index("y")]]
                 length += float(np.linalg.norm(np.diff(xy, axis=0), axis=1).sum())
                 count += 1
             return count, length

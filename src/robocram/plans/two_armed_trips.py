@@ -131,10 +131,11 @@ def bring_two(first: Spot, second: Spot, visit: Visit, done: TableSetting) -> li
 def _second(spot: Spot, arm: str, visit: Visit, done: TableSetting, skip: set[str]) -> Held | None:
     """The thing of ``spot`` picked up with ``arm`` where the first was kept, or None.
 
-    Only the visit's place is looked into: a thing kept elsewhere is searched for on a
-    trip of its own, hands free, rather than all over the kitchen with one hand full.
+    Only the visit's place is looked into, first from where the first was picked up: a
+    thing kept elsewhere is searched for on a trip of its own, hands free, rather than all
+    over the kitchen with one hand full.
     """
-    found = find_in_place(wanted_object(spot.type), visit, done.log, skip)
+    found = find_in_place(wanted_object(spot.type), visit, done.log, skip, from_here=True)
     if found is None:
         return None
     try:
