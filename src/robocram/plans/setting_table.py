@@ -86,12 +86,13 @@ def set_table(
     table: Table | tuple[str, str] | None = None,
     setting: Sequence[Setting] = STANDARD_SETTING,
     shared: Sequence[str] = SHARED,
-    two_arms: bool = False,
+    two_arms: bool = True,
 ) -> TableSetting:
     """Set ``table`` (default: the KB's table with seats) for ``people``; what was done.
 
-    ``two_arms``: a robot with two arms carries two things of one place per trip where it
-    can (:mod:`robocram.plans.two_armed_trips`); a robot with one arm ignores it.
+    ``two_arms`` (default): a robot with two arms carries two things of one place per
+    trip where it can (:mod:`robocram.plans.two_armed_trips`); False brings one thing per
+    trip. A robot with one arm ignores it.
 
     Raises:
         PlanSetupError: fewer seats than people, or no table with seats.
