@@ -9,12 +9,15 @@ table's free spots are found looking past the robot and what it holds (the ``on`
 location's ``see_through``): its own arm over the table is no obstacle there.
 
 Whenever the second thing cannot be fetched the first is put down alone and the second
-is brought on a trip of its own, so a trip for two never sets fewer things than two
-trips would.
+is brought on a trip of its own, hands free; a second thing that cannot be put down
+while the first is tucked is tried again once the first is on the table; a first thing
+the arm cannot hold out again still tries the stands from which the arm reaches its spot.
+A trip for two is meant to set no fewer things than two trips would.
 """
 
 from __future__ import annotations
 
+import contextlib
 import math
 
 from robocram.designators import a
@@ -58,7 +61,8 @@ def _hold_out(held: Held, out: Pose, spot: Spot) -> None:
     for attempt in range(2):
         base = map_pose(base_frame(current_robot()))
         tool = base * out
-        for turn in (held.lifted.pose.orientation, tool.orientation):
+        turns = (held.lifted.pose.orientation, tool.orientation)
+        for index, turn in enumerate(turns):
             thing = Pose(tool.position, turn) * held.object_in_tool
             rise = max(0.0, spot.pose.position[2] + OVER_TABLE - thing.position[2])
             x, y, z = tool.position
@@ -67,7 +71,7 @@ def _hold_out(held: Held, out: Pose, spot: Spot) -> None:
                 _move_tool(held, target)
                 return
             except ManipulationLowLevelFailure:
-                if attempt and turn is tool.orientation:
+                if attempt and index == len(turns) - 1:
                     raise
         yaw = yaw_of(base)
         bx, by, _ = base.position
@@ -101,31 +105,26 @@ def _put(held: Held, spot: Spot, done: TableSetting) -> None:
 def bring_two(first: Spot, second: Spot, visit: Visit, done: TableSetting) -> list[Exception]:
     """Bring the things of ``first`` and ``second`` in one trip if the robot can, else one
     by one; the failures (an empty list: both are set)."""
-    failures: list[Exception] = []
     try:
         seen, inside = find(wanted_object(first.type), visit, done.log, skip=done.placed)
         held = fetch(seen, log=done.log, opened=inside)
     except PlanFailure as failure:  # no first thing: the second alone, as one-armed
-        failures.append(failure)
-        return failures + _alone(second, visit, done)
+        return [failure, *_alone(second, visit, done)]
     other = other_arm(held.arm)
     try:
         out = _tucked(held)
     except PlanFailure:  # too big to tuck in: this one alone, the second on its own trip
         other = None
     if other is None:
-        return failures + _deliver_alone(held, first, done) + _alone(second, visit, done)
+        return _deliver_alone(held, first, done) + _alone(second, visit, done)
     second_held = _second(second, other, visit, done, skip={*done.placed, held.object_name})
     if second_held is None:  # the other hand cannot take it: the first alone, the second
         return _held_out_alone(held, out, first, done) + _alone(second, visit, done)
-    carried: list[str] = []
     try:
         _put(second_held, second, done)
-        carried.append(second_held.object_name)
-    except PlanFailure as failure:
-        failures.append(failure)
-    failures += _held_out_alone(held, out, first, done, trip=carried)
-    return failures
+    except PlanFailure:  # with the first out of the way, once more after it
+        return _held_out_alone(held, out, first, done) + _put_alone(second_held, second, done)
+    return _held_out_alone(held, out, first, done, trip=[second_held.object_name])
 
 
 def _second(spot: Spot, arm: str, visit: Visit, done: TableSetting, skip: set[str]) -> Held | None:
@@ -148,15 +147,27 @@ def _held_out_alone(
     held: Held, out: Pose, spot: Spot, done: TableSetting, trip: list[str] | None = None
 ) -> list[Exception]:
     """Bring the tucked ``held`` out and put it at ``spot``; record the trip (with the
-    things in ``trip`` put before on it); the failures."""
-    try:
+    things in ``trip`` put before on it); the failures. An arm that cannot come out
+    still tries the stands from which it reaches the spot by IK."""
+    with contextlib.suppress(PlanFailure):
         _hold_out(held, out, spot)
+    try:
         _put(held, spot, done)
     except PlanFailure as failure:
         if trip:
             done.trips.append(tuple(trip))
         return [failure]
     done.trips.append((*(trip or ()), held.object_name))
+    return []
+
+
+def _put_alone(held: Held, spot: Spot, done: TableSetting) -> list[Exception]:
+    """Put ``held`` (in the hand, the other hand empty) at ``spot``; the failures."""
+    try:
+        _put(held, spot, done)
+    except PlanFailure as failure:
+        return [failure]
+    done.trips.append((held.object_name,))
     return []
 
 
