@@ -45,7 +45,7 @@ def _set(robot: str, two_arms: bool, trace: Path | None = None) -> tuple[int, in
                 done = perform(an.action(type="setting-table", people=2, two_arms=two_arms))
                 placed, trips = len(done.placed), len(done.trips)
             except ActivityIncomplete as failure:
-                placed, trips = len(failure.done or ()), -1
+                placed, trips = len(failure.done or ()), 0  # incomplete: not counted
         return placed, trips, time.process_time() - start
     finally:
         scene.world.close()
@@ -85,7 +85,8 @@ def main() -> None:
             drives, metres = _drives(robot, mode)
             print(
                 f"{robot:5s} {'two-armed' if mode else 'one-armed'}: set {placed}/7, "
-                f"{trips} trips to the table, {drives} drives ({metres:.1f} m), "
+                f"{f'{trips} trips to the table' if trips else 'incomplete'}, "
+                f"{drives} drives ({metres:.1f} m), "
                 f"CPU {cpu[mode]:.1f} s"
             )
         print(f"{robot:5s} CPU two-armed / one-armed: {cpu[True] / cpu[False]:.2f}")
