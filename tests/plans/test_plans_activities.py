@@ -1,4 +1,4 @@
-"""Everyday activities on the PR2: breakfast for two, then clearing the table again.
+"""Everyday activities on the PR2: breakfast for two (two-armed), then clearing the table.
 
 Judged by raw PyBullet queries, not by the plans' own results: where each body is, how
 far it is tilted, which joint stands where, what touches what.
@@ -115,7 +115,7 @@ def breakfast() -> Iterator[Breakfast]:
 
 
 def test_the_activities_are_action_types() -> None:
-    assert ACTIONS["setting-table"].keys == ("people", "setting", "shared", "table")
+    assert ACTIONS["setting-table"].keys == ("people", "setting", "shared", "table", "two_arms")
     assert ACTIONS["clearing-table"].keys == ("objects", "table")
     assert ACTIONS["facing"].required == ("target",)
     assert ACTIONS["carrying"].keys == ("arm", "target")
@@ -132,6 +132,13 @@ def test_breakfast_for_two_puts_each_thing_at_its_seat(breakfast: Breakfast) -> 
         assert math.hypot(x - sx, y - sy) <= TOLERANCE, name
         assert tilt <= UPRIGHT, name
         assert bottom == pytest.approx(TABLE_TOP, abs=0.01), name
+
+
+def test_two_arms_carry_two_things_per_trip_where_they_can(breakfast: Breakfast) -> None:
+    trips = breakfast.setting.trips  # the PR2 has two arms: two_arms is the default
+    assert sorted(n for trip in trips for n in trip) == sorted(breakfast.setting.placed)
+    assert any(len(trip) == 2 for trip in trips)
+    assert len(trips) < len(breakfast.setting.placed)  # fewer drives to the table than things
 
 
 def test_every_container_opened_is_closed_again(breakfast: Breakfast) -> None:

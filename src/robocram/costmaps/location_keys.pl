@@ -30,6 +30,7 @@ location_option(pose).
 location_option(resolution).
 location_option(size).
 location_option(seed).
+location_option(see_through).  % bodies the on/in_ rays look past (the robot asking)
 
 % location_conflict(A, B): a designator may not have both keys.
 location_conflict(on, in_).

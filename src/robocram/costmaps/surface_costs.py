@@ -14,6 +14,11 @@ Inside a container the radius is the object's outline about its frame
 (:func:`~robocram.world.footprint.footprint_radius`: a bowl needs its own 8 cm circle, so
 two fit side by side in a drawer); on a surface it is still its bounds' half diagonal
 (11.5 cm for the bowl), which keeps every placing on counters and tables as it was.
+
+``see_through`` (a name or names, e.g. the robot asking) makes the rays go on past those
+bodies and what they hold: a robot standing at a table with a second thing in its other
+hand is not an obstacle on the table, as a person choosing a free spot ignores their own
+arm. Without it every body counts.
 """
 
 from __future__ import annotations
@@ -27,7 +32,7 @@ from robocram.costmaps.grid import BoolGrid, erode
 from robocram.costmaps.out_of_the_way import out_of_the_way
 from robocram.world import World, WorldObject
 from robocram.world.footprint import footprint_radius
-from robocram.world.ray_hit import ray_hits
+from robocram.world.ray_hit import RayHits, ray_hits, ray_hits_past
 
 SURFACE_MARGIN = 0.03  # [m] kept free between the placed object and the support's edges
 INNER_DEPTH = 0.02  # [m] an inside bottom lies at least this far below a container's rim
@@ -73,6 +78,25 @@ def _frame_over_bottom(world: World, obj: WorldObject | None) -> float:
     return world.pose(obj).position[2] - bottom
 
 
+def seen_through(query: LocationQuery) -> list[WorldObject]:
+    """The bodies the ``see_through`` key names, and everything they hold."""
+    value = query.designator.get("see_through")
+    if value is None:
+        return []
+    names = list(value) if isinstance(value, list | tuple) else [value]
+    bodies = [query.object(name, "see_through") for name in names]
+    held = [query.world.object(n) for b in bodies for n in query.world.bodies.attachments(b)]
+    return list(dict.fromkeys(bodies + held))
+
+
+def _down(world: World, starts: np.ndarray, ends: np.ndarray, past: list[WorldObject]) -> RayHits:
+    """The rays' first hits, past the bodies ``past`` (if any)."""
+    if not past:
+        return ray_hits(world, starts, ends)
+    ids = np.array([obj.body_id for obj in past], dtype=np.int64)
+    return ray_hits_past(world, starts, ends, ids)
+
+
 def _surface(query: LocationQuery, value: object, key: str, alive: BoolGrid) -> CostLayer:
     world, inside = query.world, key == "in_"
     support, link = query.part(value, key)
@@ -86,7 +110,7 @@ def _surface(query: LocationQuery, value: object, key: str, alive: BoolGrid) -> 
     ends = starts.copy()
     ends[:, 2] = low[2] - 0.01
     with out_of_the_way(world, [placed]):
-        hits = ray_hits(world, starts, ends)
+        hits = _down(world, starts, ends, seen_through(query))
         lift = _frame_over_bottom(world, placed)
     ok = (hits.bodies == support.body_id) & (hits.normals[:, 2] >= FLAT)
     if link is not None:

@@ -19,6 +19,7 @@ from robocram.costmaps.cost_layer import LocationQuery
 from robocram.costmaps.errors import CostmapInputError
 from robocram.costmaps.grasps import GRASP_YAWS, approach_axis, grasp_point, grasp_poses, top_down
 from robocram.costmaps.reachability_map import ReachabilityMaps
+from robocram.costmaps.surface_costs import seen_through
 from robocram.kinematics import (
     BaseMotion,
     IKOptions,
@@ -110,10 +111,12 @@ def robot_collision_free(query: LocationQuery, pose: Pose) -> bool:
 
 
 def object_collision_free(query: LocationQuery, pose: Pose) -> bool:
-    """Whether the ``for_`` object at ``pose`` touches nothing but its support."""
+    """Whether the ``for_`` object at ``pose`` touches nothing but its support (and the
+    bodies ``see_through`` names: the robot asking moves out of the way before it puts it)."""
     obj = query.object(query.designator.get("for_"), "for_")
     supports = [(k, query.designator.get(k)) for k in ("on", "in_")]
     ignore = [query.part(value, key)[0] for key, value in supports if value is not None]
+    ignore += [body for body in seen_through(query) if body is not obj]
     with placed(query.world, obj, pose):
         return not query.world.contacts.collisions(obj, ignore)
 

@@ -81,7 +81,9 @@ ACTIONS = ActionTable.of(
     ActionType("wiping", ("surface", "region", "tool"), ("arm",), wipe),
     ActionType("cutting", ("object", "tool", "slices"), ("arm",), cut),
     ActionType("mixing", ("container", "tool"), ("arm", "turns"), mix),
-    ActionType("setting-table", (), ("people", "table", "setting", "shared"), set_table),
+    ActionType(
+        "setting-table", (), ("people", "table", "setting", "shared", "two_arms"), set_table
+    ),
     ActionType("clearing-table", (), ("table", "objects"), clear_table),
     ActionType("facing", ("target",), (), face),
     ActionType("carrying", (), ("target", "arm"), carry),

@@ -100,13 +100,15 @@ def inside_point(opened: OpenedContainer) -> PoseStamped:
 
 
 def _look_into(
-    opened: OpenedContainer, wanted: ObjectDesignator, skip: Collection[str]
+    opened: OpenedContainer, wanted: ObjectDesignator, skip: Collection[str], move: bool = True
 ) -> ObjectDesignator | None:
-    """Stand where ``opened`` was opened from, look into it, detect ``wanted`` there (the
-    first seen that is not in ``skip``: a spoon already on the table may be in view)."""
+    """Stand where ``opened`` was opened from (unless not ``move``: from where the robot
+    stands), look into it, detect ``wanted`` there (the first seen that is not in
+    ``skip``: a spoon already on the table may be in view)."""
     try:
         park_arms()
-        navigate(opened.stand.pose)
+        if move:
+            navigate(opened.stand.pose)
         look_from_above(inside_point(opened))
         if wanted.get("name") is not None:
             return detect(wanted)
@@ -114,6 +116,26 @@ def _look_into(
     except PlanFailure:
         return None
     return next((thing for thing in seen if str(thing.get("name")) not in skip), None)
+
+
+def find_in_place(
+    wanted: ObjectDesignator,
+    visit: Visit,
+    log: AttemptLog,
+    skip: Collection[str] = (),
+    from_here: bool = False,
+) -> tuple[ObjectDesignator, OpenedContainer] | None:
+    """``wanted`` seen in the visit's place, a container opened once, and the container;
+    None when it is not a container, cannot be opened or ``wanted`` is not seen there.
+    ``from_here``: look from where the robot stands first (it just took a thing there)."""
+    with contextlib.suppress(PlanFailure):
+        inside = visit.open(log)
+        if inside is not None:
+            seen = _look_into(inside, wanted, skip, move=False) if from_here else None
+            seen = seen or _look_into(inside, wanted, skip)
+            if seen is not None:
+                return seen, inside
+    return None
 
 
 def find(
@@ -126,12 +148,9 @@ def find(
     Raises:
         SearchExhausted: it is nowhere the search looked.
     """
-    with contextlib.suppress(PlanFailure):
-        inside = visit.open(log)
-        if inside is not None:
-            seen = _look_into(inside, wanted, skip)
-            if seen is not None:
-                return seen, inside
+    found = find_in_place(wanted, visit, log, skip)
+    if found is not None:
+        return found
     searched = SearchLog(attempts=log)
     try:
         seen = search(wanted, log=searched)

@@ -14,18 +14,13 @@ from __future__ import annotations
 
 import contextlib
 from collections.abc import Sequence
-from dataclasses import dataclass, field
 
-from robocram.designators import LocationDesignator, a
 from robocram.execution import sub_task
 from robocram.execution.failures import PlanFailure
 from robocram.plans.activity_failures import ActivityIncomplete
-from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import park_arms
-from robocram.plans.bringing import Visit, find, usual_place, wanted_object
-from robocram.plans.deliver import deliver
-from robocram.plans.fetch import fetch
-from robocram.plans.pick_object import Held
+from robocram.plans.bringing import Visit, usual_place
+from robocram.plans.robot_facts import current_robot, grasping_arms
 from robocram.plans.search import Place
 from robocram.plans.table_arrangement import (
     SHARED,
@@ -36,32 +31,16 @@ from robocram.plans.table_arrangement import (
     spots,
     table_with_seats,
 )
+from robocram.plans.table_trips import (
+    SPOT_AREA,
+    SPOT_RESOLUTION,
+    TableSetting,
+    bring_one,
+    spot_location,
+)
+from robocram.plans.two_armed_trips import bring_two
 
-SPOT_AREA = 0.3  # [m] side of the square searched round a spot
-SPOT_RESOLUTION = 0.01  # [m] cells of that square: a spot is met within about a cell
-
-
-@dataclass
-class TableSetting:
-    """What setting the table did: each thing put and its spot, what it opened (and closed
-    again), the things found away from their usual place, every attempt."""
-
-    table: Table
-    placed: dict[str, Spot] = field(default_factory=dict)  # object name -> its spot
-    opened: list[str] = field(default_factory=list)  # container links, in opening order
-    searched: list[str] = field(default_factory=list)  # objects found by a search elsewhere
-    log: AttemptLog = field(default_factory=AttemptLog)
-
-
-def spot_location(table: Table, spot: Spot, name: str) -> LocationDesignator:
-    """Where ``name`` goes: on the table, at ``spot`` (a fine costmap round it)."""
-    return a.location(
-        on=(table.environment, table.link),
-        for_=name,
-        at=spot.pose.position,
-        size=SPOT_AREA,
-        resolution=SPOT_RESOLUTION,
-    )
+__all__ = ["SPOT_AREA", "SPOT_RESOLUTION", "TableSetting", "set_table", "spot_location"]
 
 
 def by_place(wanted: Sequence[Spot]) -> list[tuple[Place | None, list[Spot]]]:
@@ -72,24 +51,27 @@ def by_place(wanted: Sequence[Spot]) -> list[tuple[Place | None, list[Spot]]]:
     return list(groups.items())
 
 
-def _bring(spot: Spot, visit: Visit, done: TableSetting) -> Held:
-    """Find a thing of the spot's type not yet on the table, fetch it, put it at the spot."""
-    seen, inside = find(wanted_object(spot.type), visit, done.log, skip=done.placed)
-    held = fetch(seen, log=done.log, opened=inside)
-    deliver(held, spot_location(done.table, spot, held.object_name), held.arm, log=done.log)
-    done.placed[held.object_name] = spot
-    return held
+def trips(group: list[Spot], two_arms: bool) -> list[list[Spot]]:
+    """The spots of one place, by the trip that brings their things: two by two with
+    ``two_arms`` (an odd one last, alone), else one by one."""
+    size = 2 if two_arms else 1
+    return [group[i : i + size] for i in range(0, len(group), size)]
 
 
-def _serve(place: Place | None, group: list[Spot], done: TableSetting) -> list[Exception]:
+def _serve(
+    place: Place | None, group: list[Spot], done: TableSetting, two_arms: bool = False
+) -> list[Exception]:
     """Bring every spot's thing of one place, then close what was opened; the failures."""
     visit = Visit(place)
     failures: list[Exception] = []
     try:
-        for spot in group:
-            with sub_task(f"bringing {spot.type}"):
+        for trip in trips(group, two_arms):
+            with sub_task(f"bringing {' and '.join(spot.type for spot in trip)}"):
+                if len(trip) == 2:
+                    failures += bring_two(trip[0], trip[1], visit, done)
+                    continue
                 try:
-                    _bring(spot, visit, done)
+                    bring_one(trip[0], visit, done)
                 except PlanFailure as failure:
                     failures.append(failure)
     finally:
@@ -104,8 +86,13 @@ def set_table(
     table: Table | tuple[str, str] | None = None,
     setting: Sequence[Setting] = STANDARD_SETTING,
     shared: Sequence[str] = SHARED,
+    two_arms: bool = True,
 ) -> TableSetting:
     """Set ``table`` (default: the KB's table with seats) for ``people``; what was done.
+
+    ``two_arms`` (default): a robot with two arms carries two things of one place per
+    trip where it can (:mod:`robocram.plans.two_armed_trips`); False brings one thing per
+    trip. A robot with one arm ignores it.
 
     Raises:
         PlanSetupError: fewer seats than people, or no table with seats.
@@ -116,9 +103,10 @@ def set_table(
     wanted = spots(chosen, people, setting, shared)
     done = TableSetting(chosen)
     failures: list[Exception] = []
+    pairs = two_arms and len(grasping_arms(current_robot())) >= 2
     for place, group in by_place(wanted):
         with sub_task(f"setting from {place.link if place else 'anywhere'}"):
-            failures += _serve(place, group, done)
+            failures += _serve(place, group, done, pairs)
     with contextlib.suppress(PlanFailure):
         park_arms()
     if failures:

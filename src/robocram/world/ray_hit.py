@@ -127,3 +127,39 @@ def ray_hits(world: WorldFacade, starts: NDArray[np.float64], ends: NDArray[np.f
         np.array(columns[3], dtype=np.float64).reshape(count, 3),
         np.array(columns[4], dtype=np.float64).reshape(count, 3),
     )
+
+
+PAST_STEP = 0.005  # [m] a ray that met a body seen through goes on this far beyond the hit
+PAST_ROUNDS = 12  # bodies seen through one after another along a ray, at most
+
+
+def ray_hits_past(
+    world: WorldFacade,
+    starts: NDArray[np.float64],
+    ends: NDArray[np.float64],
+    past: NDArray[np.int64],
+) -> RayHits:
+    """First hits of the segments, looking past the bodies ``past`` (ids).
+
+    A ray that meets one of them goes on from :data:`PAST_STEP` beyond the hit, as a
+    person looking for a free spot on a table looks past their own arm. A ray still on
+    such a body after :data:`PAST_ROUNDS` rounds reports that body.
+    """
+    hits = ray_hits(world, starts, ends)
+    bodies, links = hits.bodies.copy(), hits.links.copy()
+    positions, normals = hits.positions.copy(), hits.normals.copy()
+    length = np.linalg.norm(ends - starts, axis=1)
+    along = (ends - starts) / np.where(length > 0.0, length, 1.0)[:, None]
+    for _ in range(PAST_ROUNDS):
+        again = np.flatnonzero(np.isin(bodies, past))
+        if again.size == 0:
+            break
+        beyond = positions[again] + along[again] * PAST_STEP
+        left = np.einsum("ij,ij->i", ends[again] - beyond, along[again]) > 0.0
+        again, beyond = again[left], beyond[left]
+        if again.size == 0:
+            break
+        more = ray_hits(world, beyond, ends[again])
+        bodies[again], links[again] = more.bodies, more.links
+        positions[again], normals[again] = more.positions, more.normals
+    return RayHits(bodies, links, positions, normals)

@@ -1,0 +1,61 @@
+"""One trip of table setting: find a thing where it is kept, fetch it, put it at its spot.
+
+The result type of setting the table lives here too, so one-armed and two-armed trips
+(:mod:`robocram.plans.two_armed_trips`) record what they did in the same place.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+from robocram.designators import LocationDesignator, a
+from robocram.plans.attempt_log import AttemptLog
+from robocram.plans.bringing import Visit, find, wanted_object
+from robocram.plans.deliver import deliver
+from robocram.plans.fetch import fetch
+from robocram.plans.pick_object import Held
+from robocram.plans.table_arrangement import Spot, Table
+
+SPOT_AREA = 0.3  # [m] side of the square searched round a spot
+SPOT_RESOLUTION = 0.01  # [m] cells of that square: a spot is met within about a cell
+
+
+@dataclass
+class TableSetting:
+    """What setting the table did: each thing put and its spot, what it opened (and closed
+    again), the things found away from their usual place, every attempt, and the things
+    each trip to the table carried (two, when two arms carried them together)."""
+
+    table: Table
+    placed: dict[str, Spot] = field(default_factory=dict)  # object name -> its spot
+    opened: list[str] = field(default_factory=list)  # container links, in opening order
+    searched: list[str] = field(default_factory=list)  # objects found by a search elsewhere
+    log: AttemptLog = field(default_factory=AttemptLog)
+    trips: list[tuple[str, ...]] = field(default_factory=list)  # things put, per trip
+
+
+def spot_location(
+    table: Table, spot: Spot, name: str, see_through: Sequence[str] = ()
+) -> LocationDesignator:
+    """Where ``name`` goes: on the table, at ``spot`` (a fine costmap round it); the rays
+    look past the bodies ``see_through`` names (the robot, when it holds a second thing)."""
+    keys: dict[str, object] = {"see_through": tuple(see_through)} if see_through else {}
+    return a.location(
+        on=(table.environment, table.link),
+        for_=name,
+        at=spot.pose.position,
+        size=SPOT_AREA,
+        resolution=SPOT_RESOLUTION,
+        **keys,
+    )
+
+
+def bring_one(spot: Spot, visit: Visit, done: TableSetting) -> Held:
+    """Find a thing of the spot's type not yet on the table, fetch it, put it at the spot."""
+    seen, inside = find(wanted_object(spot.type), visit, done.log, skip=done.placed)
+    held = fetch(seen, log=done.log, opened=inside)
+    deliver(held, spot_location(done.table, spot, held.object_name), held.arm, log=done.log)
+    done.placed[held.object_name] = spot
+    done.trips.append((held.object_name,))
+    return held
