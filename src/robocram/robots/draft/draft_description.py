@@ -7,6 +7,7 @@ each part, and where the URDF left doubt. ``source()`` prints it as ready-to-edi
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -34,17 +35,28 @@ from robocram.robots.draft.cameras import (
 )
 from robocram.robots.draft.draft_source import draft_source
 from robocram.robots.draft.hands import find_fixed_hands, find_hands
-from robocram.robots.draft.link_poses import within_limits
+from robocram.robots.draft.link_poses import link_poses, within_limits
 from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.draft.parking import neck_pose
 from robocram.robots.draft.srdf_arms import srdf_arms
-from robocram.robots.draft.stowing import ABOVE, AHEAD, looking_pose
+from robocram.robots.draft.stowing import (
+    ABOVE,
+    AHEAD,
+    CameraView,
+    looking_pose,
+    parked_unclear,
+    stowed_pose,
+)
 from robocram.robots.draft.telescope import Telescope, find_telescopes
 from robocram.robots.draft.torso import find_torso
 from robocram.robots.draft.trunk import find_trunk
 from robocram.robots.robot_model import RobotModel
+from robocram.robots.self_contacts import SelfContacts
 from robocram.robots.srdf import read_srdf
 from robocram.tf import Pose
+
+PAN_SWEEP = math.radians(60.0)  # [rad] a head's pan a parked arm it turns stays clear in
+PAN_STEPS = 4  # turns checked each way within the sweep (every 15 degrees)
 
 
 @dataclass(frozen=True)
@@ -151,6 +163,7 @@ def draft_description(
         coupled_joints=tuple(t.coupling for t in telescopes),
     )
     desc = _with_camera(tree, desc, why, doubts, cut, camera, guessed)
+    desc = _parked_clear(tree, desc, why, doubts)
     if semantics is not None:
         desc = srdf_arms(model, desc, semantics, why, doubts)
     inferred = frozenset(
@@ -261,6 +274,76 @@ def _with_camera(
         neck_parking=parking,
         extra_frames=frames,
     )
+
+
+def _camera_view(tree: ModelTree, desc: RobotDescription) -> CameraView | None:
+    """The first camera's view in the root link with the neck parked, or None (no camera,
+    or one an arm carries: its parking aims it)."""
+    if not desc.cameras:
+        return None
+    camera = desc.cameras[0]
+    added = {f.name: f for f in desc.extra_frames}
+    spec = added.get(camera.frame)
+    link = spec.parent if spec is not None else camera.frame
+    if link not in tree.model.links or any(
+        link in tree.subtree_links(arm.end_effector_link) or link == arm.end_effector_link
+        for key, arm in desc.arms.items()
+        if key != desc.neck_arm
+    ):
+        return None
+    pose = link_poses(tree.model, dict(desc.neck_parking))[link]
+    pose = pose * spec.pose if spec is not None else pose
+    return CameraView(pose, camera.horizontal_fov, camera.vertical_fov)
+
+
+def _pan_sweep(tree: ModelTree, desc: RobotDescription, arm: str) -> list[dict[str, float]]:
+    """States of the head's pan joint a parked ``arm`` must stay clear in: at zero and
+    every 15 degrees to :data:`PAN_SWEEP` each way (within limits), where the pan turns the arm too (a waist
+    that turns the head and both arms, Centauro's); else only the robot as it is."""
+    pan = desc.pan_tilt.pan_joint if desc.pan_tilt is not None else None
+    base = desc.arms[arm].base_link
+    if pan is None or base is None:
+        return [{}]
+    turned = tree.model.joints[pan].child
+    if base != turned and base not in tree.subtree_links(turned):
+        return [{}]
+    turns = [PAN_SWEEP * k / PAN_STEPS for k in range(-PAN_STEPS, PAN_STEPS + 1) if k != 0]
+    return [{}] + [{pan: within_limits(tree.model, pan, turn)} for turn in turns]
+
+
+def _parked_clear(
+    tree: ModelTree, desc: RobotDescription, why: dict[str, str], doubts: dict[str, str]
+) -> RobotDescription:
+    """``desc`` with each arm parked in the body camera's view, or into the robot when the
+    head pans with it, stowed again clear of both (Centauro's elbow hung before its head
+    camera; its waist pans the head and swung the parked hand into the pelvis)."""
+    view = _camera_view(tree, desc)
+    arms = dict(desc.arms)
+    for key, arm in desc.arms.items():
+        if key == desc.neck_arm or not arm.parking:
+            continue
+        swept = _pan_sweep(tree, desc, key)
+        wrist = arm.end_effector_link
+        if not parked_unclear(tree.model, arm.parking, wrist, view, swept):
+            continue
+        stowed = stowed_pose(
+            tree.model, tuple(arm.parking), wrist, tree.model.derived(SelfContacts),
+            view=view, swept=swept,
+        )  # fmt: skip
+        if stowed is None:
+            doubts[f"arms.{key}.parking"] = (
+                "parked, the arm hangs in the camera's view (or meets the robot as the head "
+                "pans) and no stowed pose clear of both was found: give one"
+            )
+            continue
+        arms[key] = replace(arm, parking=stowed.values)
+        turning = " and clear as the head pans" if len(swept) > 1 else ""
+        why[f"arms.{key}.parking"] = (
+            f"stowed out of the camera's view{turning}: within limits, the arm within "
+            f"{stowed.extent:.2f} m of the base's middle, 1 cm clear of its other links (meshes)"
+        )
+        doubts.pop(f"arms.{key}.parking", None)
+    return replace(desc, arms=arms)
 
 
 def _park_carrier(

@@ -12,6 +12,10 @@ The stowed pose replaces the sampled one (:mod:`~robocram.robots.draft.parking`)
 it touches nothing and is more compact, or where the sampled one touches and the stowed
 one is about as compact (:func:`better_parking`). An arm carrying the camera parks
 otherwise (:func:`looking_pose`): stowed, its camera would see the robot's own body.
+Where a stowed arm hangs in a body camera's view (Centauro's elbow before its head
+camera), the search is run again keeping the arm out of the view (:class:`CameraView`);
+where the head pans with a waist that turns the arms too (Centauro's ``torso_yaw``), the
+parked arm must touch nothing with the waist turned either way as well (``swept``).
 """
 
 from __future__ import annotations
@@ -42,6 +46,28 @@ REFINE_ROUNDS = 4
 BETTER = 0.02  # [m] closer to the base's middle than the sampled pose by this, to replace it
 SLACK = 0.1  # [m] farther out than a sampled pose that touches, at most, to replace it
 VERTICAL = 0.9  # |z| of a unit axis above which a sliding joint is a lift, not a telescope
+NEAR = 0.05  # [m] points nearer the camera than this are its own housing, not in view
+
+
+@dataclass(frozen=True)
+class CameraView:
+    """A camera's view in the root link: its optical frame (z forward) and fields of view
+    [rad]; what lies within ``depth`` [m] in front of it, inside both, is in view."""
+
+    pose: Pose
+    horizontal_fov: float
+    vertical_fov: float
+    depth: float = 2.0
+
+    def sees_any(self, points: np.ndarray) -> bool:
+        """Whether any of ``points`` (N x 3, root link) lies in the view."""
+        inverse = self.pose.inverse().matrix()
+        local = points @ inverse[:3, :3].T + inverse[:3, 3]
+        x, y, z = local[:, 0], local[:, 1], local[:, 2]
+        ahead = (z > NEAR) & (z < self.depth)
+        across = np.abs(np.arctan2(x, z)) < self.horizontal_fov / 2
+        along = np.abs(np.arctan2(y, z)) < self.vertical_fov / 2
+        return bool(np.any(ahead & across & along))
 
 
 @dataclass(frozen=True)
@@ -69,9 +95,17 @@ class _Search:
     """The arm's points for a pose, their cost, and the contact check."""
 
     def __init__(
-        self, model: RobotModel, joints: Sequence[str], wrist: str, contacts: SelfContacts
+        self,
+        model: RobotModel,
+        joints: Sequence[str],
+        wrist: str,
+        contacts: SelfContacts,
+        view: CameraView | None = None,
+        swept: Sequence[Mapping[str, float]] = ({},),
     ) -> None:
         self.joints = tuple(joints)
+        self.view = view
+        self.swept = tuple(swept)
         self.chain = ChainPoses(model, joints, wrist)
         self.limits = [joint_range(model, j) for j in joints]
         self.fixed = _retracted(model, joints)
@@ -101,6 +135,16 @@ class _Search:
         found = [p.position for p in poses] + [(poses[-1] * h).position for h in self.hand]
         return np.asarray(found)
 
+    def in_view(self, values: Sequence[float]) -> bool:
+        """Whether the arm at ``values`` hangs in the camera's view (its joints, the
+        middles between them and its hand's shapes), where a view is given."""
+        if self.view is None:
+            return False
+        points = self.points(values)
+        chain = points[: -len(self.hand)] if self.hand else points
+        middles = (chain[1:] + chain[:-1]) / 2
+        return self.view.sees_any(np.vstack((points, middles)))
+
     def extent(self, values: Sequence[float]) -> float:
         return float(np.linalg.norm(self.points(values)[:, :2] - self.middle, axis=1).max())
 
@@ -116,7 +160,11 @@ class _Search:
     def touches(self, values: Sequence[float]) -> bool:
         """Whether the arm at ``values`` touches itself with the hand closed or open."""
         arm = dict(zip(self.joints, values, strict=True))
-        return any(self.contacts.touches({**arm, **hand}) for hand in self.hand_states)
+        return any(
+            self.contacts.touches({**above, **arm, **hand})
+            for above in self.swept
+            for hand in self.hand_states
+        )
 
     def sample(self, rng: random.Random) -> list[float]:
         return [
@@ -135,7 +183,7 @@ class _Search:
                     trial = list(best)
                     trial[i] = min(max(trial[i] + delta, lo), hi)
                     cost = self.cost(trial)
-                    if cost < best_cost and not self.touches(trial):
+                    if cost < best_cost and not self.in_view(trial) and not self.touches(trial):
                         best, best_cost = trial, cost
             step /= 2
         return best
@@ -162,16 +210,36 @@ def stowed_pose(
     wrist: str,
     contacts: SelfContacts | None = None,
     seed: int = 0,
+    view: CameraView | None = None,
+    swept: Sequence[Mapping[str, float]] = ({},),
 ) -> Stowed | None:
     """The stowed pose of the arm (see the module docstring), or None if every candidate
-    touches; values within limits, to 3 decimals."""
-    return _best(_Search(model, joints, wrist, contacts or SelfContacts(model)), seed)
+    touches (in any of the ``swept`` states of the joints above it) or, with a ``view``,
+    hangs in it; values within limits, to 3 decimals."""
+    search = _Search(model, joints, wrist, contacts or SelfContacts(model), view, swept)
+    return _best(search, seed)
+
+
+def parked_unclear(
+    model: RobotModel,
+    parking: Mapping[str, float],
+    wrist: str,
+    view: CameraView | None,
+    swept: Sequence[Mapping[str, float]],
+) -> bool:
+    """Whether the arm parked at ``parking`` hangs in ``view`` or touches the robot in one
+    of the ``swept`` states of the joints above it."""
+    search = _Search(model, list(parking), wrist, model.derived(SelfContacts), view, swept)
+    values = list(parking.values())
+    return search.in_view(values) or (len(swept) > 1 and search.touches(values))
 
 
 def _best(search: _Search, seed: int) -> Stowed | None:
     """The cheapest seeded sample that touches nothing, refined; None if all touch."""
     rng = random.Random(seed)
     ranked = sorted((search.sample(rng) for _ in range(SAMPLES)), key=search.cost)
+    if search.view is not None:
+        ranked = [values for values in ranked if not search.in_view(values)]
     for values in ranked[:CANDIDATES]:
         if not search.touches(values):
             best = search.refine(values)
