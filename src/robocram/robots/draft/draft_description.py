@@ -42,6 +42,7 @@ from robocram.robots.draft.stowing import ABOVE, AHEAD, looking_pose
 from robocram.robots.draft.telescope import Telescope, find_telescopes
 from robocram.robots.draft.torso import find_torso
 from robocram.robots.draft.trunk import find_trunk
+from robocram.robots.hand_shapes import with_hand_shapes
 from robocram.robots.robot_model import RobotModel
 from robocram.robots.srdf import read_srdf
 from robocram.tf import Pose
@@ -105,6 +106,9 @@ def draft_description(
     drive = find_base_drive(tree)
     _note(why, doubts, "base_type", drive.why, drive.doubt)
     hands = find_hands(tree) or find_fixed_hands(tree)
+    shaped = with_hand_shapes(model, [h.end_effector_link for h in hands])
+    if shaped is not model:  # as loading shapes them: the jaws' opening is measured on them
+        model, tree = shaped, ModelTree(shaped)
     guessed = camera is None and not camera_frames(tree, [h.end_effector_link for h in hands])
     if guessed:  # as `--camera LINK` with the link the check would name
         camera = likely_camera_link(tree, [h.end_effector_link for h in hands])
