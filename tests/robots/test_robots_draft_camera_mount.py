@@ -15,7 +15,11 @@ from pathlib import Path
 
 import numpy as np
 import pybullet
+import pytest
 
+from robocram.execution.failures import PtuGoalNotReached
+from robocram.projection.neck import look_at
+from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robot_check import description_from
 from robocram.robots import draft_description
 from robocram.world import World
@@ -47,3 +51,34 @@ def test_tracys_drafted_camera_is_the_one_on_the_pole_and_sees_past_the_robot(
     assert camera in ("camera_link", "camera_link_optical")
     assert start[2] > 0.8  # on top of the pole, not at its foot
     assert hit[0] != body, (camera, hit)
+
+
+def test_a_camera_nothing_turns_looks_only_at_what_is_in_its_view(tmp_path: Path) -> None:
+    """Tracy's camera is fixed: the plans' look found no process module. A look moves
+    nothing now; it passes for a point on the optical axis (PyBullet's camera link state)
+    and fails, saying so, for one behind the camera."""
+    module = tmp_path / "tracy.py"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        module.write_text(draft_description(TRACY).source(module), "utf-8")
+        with World() as world:
+            name = world.add_robot(description_from(str(module))).name
+            robot = ProjectedRobot.of(world, name)
+            camera = robot.description.cameras[0].frame
+            client, body = world.physics.client(), world.object(name).body_id
+            index = next(
+                i
+                for i in range(pybullet.getNumJoints(body, physicsClientId=client))
+                if pybullet.getJointInfo(body, i, physicsClientId=client)[12].decode() == camera
+            )
+            state = pybullet.getLinkState(
+                body, index, computeForwardKinematics=True, physicsClientId=client
+            )
+            z = np.array(pybullet.getMatrixFromQuaternion(state[5])).reshape(3, 3)[:, 2]
+            before = world.joint_states(name)
+            ahead = tuple(float(v) for v in np.asarray(state[4]) + z)
+            behind = tuple(float(v) for v in np.asarray(state[4]) - z)
+            assert look_at(robot, ahead) == {}
+            with pytest.raises(PtuGoalNotReached, match="cannot turn"):
+                look_at(robot, behind)
+            assert world.joint_states(name) == before

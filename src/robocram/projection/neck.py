@@ -12,7 +12,8 @@ by IK: the camera turns to face the target from its current place, else from the
 parking place or a step away from the current one; ``PtuGoalUnreachable`` if IK finds no
 solution for any of them. A robot with neither looks with what turns its camera
 (``looking_means.py``): the arm carrying it (``look_by_arm.py``) or a head that only pans
-(``look_by_pan.py``).
+(``look_by_pan.py``); one whose camera nothing turns only checks the target is in view
+(``look_fixed.py``).
 """
 
 from __future__ import annotations
@@ -31,6 +32,7 @@ from robocram.projection.joint_motion import move_along_checked
 from robocram.projection.look_by_arm import look_by_arm
 from robocram.projection.look_by_pan import look_by_pan
 from robocram.projection.look_failures import look_blocked
+from robocram.projection.look_fixed import look_fixed
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robots import PanTiltDescription
 from robocram.robots.looking_means import looking_means
@@ -47,11 +49,8 @@ def look_at(robot: ProjectedRobot, target_in_map: Vector3) -> dict[str, float]:
     if not desc.cameras:
         raise ProjectionError(f"{robot.name} has no camera to look with")
     means = looking_means(desc)
-    if means is None:
-        raise ProjectionError(
-            f"{robot.name} has neither a pan-tilt unit, a neck arm, an arm carrying its camera "
-            "nor a joint turning it; it cannot look around"
-        )
+    if means is None:  # nothing turns the camera: the target must be in its view
+        return look_fixed(robot, target_in_map)
     if means.kind == "pan_tilt" and desc.pan_tilt is not None:
         return _aim_pan_tilt(robot, desc.pan_tilt, target_in_map)
     if means.kind == "neck_arm" and desc.neck_arm is not None:

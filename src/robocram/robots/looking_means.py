@@ -54,11 +54,12 @@ def looking_means(desc: LoadedDescription) -> LookingMeans | None:
 
 
 def with_looking(desc: RobotDescription, resources: tuple[str, ...]) -> tuple[str, ...]:
-    """``resources`` and, where a camera can be turned without a described head, ``ptu``
-    (after ``perception``, where a head's module starts)."""
+    """``resources`` and, where a camera can be turned without a described head or nothing
+    turns it on a robot that does not fly (a look then checks that the target is in
+    view), ``ptu`` (after ``perception``, where a head's module starts)."""
     if "ptu" in resources or not isinstance(desc, LoadedDescription):
         return resources
-    if looking_means(desc) is None:
-        return resources
+    if "perception" not in resources or (desc.flying and looking_means(desc) is None):
+        return resources  # a flying robot turns itself to look
     at = resources.index("perception") + 1
     return (*resources[:at], "ptu", *resources[at:])
