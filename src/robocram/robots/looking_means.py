@@ -5,7 +5,8 @@ the camera and the root link. A camera moved only by an arm's joints (a wrist ca
 neck: the Panda) looks by moving that arm to a viewing pose; a camera moved by one joint
 that belongs to no arm (Baxter's head, which only pans) looks by turning that joint and
 accepts the tilt it cannot change. A camera no joint moves (the torso aside) cannot look
-around: such a robot has no looking module, and a look fails as no matching module.
+around: a look only checks the target is in view (``projection/look_fixed.py``). A neck
+arm that is a manipulator's arm (its joints all the arm's) looks as that arm does.
 """
 
 from __future__ import annotations
@@ -36,7 +37,8 @@ def looking_means(desc: LoadedDescription) -> LookingMeans | None:
     if desc.pan_tilt is not None:
         return LookingMeans("pan_tilt")
     if desc.neck_arm is not None:
-        return LookingMeans("neck_arm")
+        carrier = _manipulator_as_neck(desc, desc.neck_arm)
+        return LookingMeans("arm", arm=carrier) if carrier else LookingMeans("neck_arm")
     model = desc.model
     chain = model.chain(model.root_link, desc.cameras[0].frame)
     moving = [
@@ -50,6 +52,18 @@ def looking_means(desc: LoadedDescription) -> LookingMeans | None:
             return LookingMeans("arm", arm=key)
     if len(moving) == 1 and moving[0].type in ("revolute", "continuous"):
         return LookingMeans("pan", joint=moving[0].name, link=moving[0].child)
+    return None
+
+
+def _manipulator_as_neck(desc: LoadedDescription, neck: str) -> str | None:
+    """The arm with a gripper whose joints are all the neck arm's, or None: a camera on a
+    manipulator's wrist (the Donbot's) described as a neck looks as an arm's camera does,
+    from viewing poses the robot's own body does not hide, not from where the arm is parked
+    beside the base."""
+    joints = set(desc.arms[neck].joints) if neck in desc.arms else set()
+    for key, arm in desc.arms.items():
+        if key != neck and arm.gripper is not None and joints and joints == set(arm.joints):
+            return key
     return None
 
 
