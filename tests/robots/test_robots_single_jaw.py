@@ -32,6 +32,7 @@ from robocram.world import World
 pytestmark = pytest.mark.filterwarnings("ignore::robocram.robots.DescriptionWarning")
 Z1 = example_robot_data_folder() / "z1_description" / "urdf" / "z1.urdf"
 SO101 = example_robot_data_folder() / "so_arm_description" / "urdf" / "so101.urdf"
+SO100 = example_robot_data_folder() / "so_arm_description" / "urdf" / "so100.urdf"
 # z1_GripperMover.STL spans x -0.021..0.100, y -0.041..0.041, z -0.021..0.026 (its pivot
 # at the origin); the pivot is 0.100 m out from link06 along x.
 MOVER_MIDDLE = (0.0395, 0.0, 0.0026)
@@ -189,11 +190,30 @@ def test_a_one_sided_jaws_tool_frame_is_in_the_opening(
     against the opening (-y) meets the fixed jaw within 5 cm; closing, the moving jaw
     sweeps over the ball (so a grip closes what is there against the fixed jaw)."""
     examples = Path(__file__).resolve().parents[2] / "examples" / "robots"
+    _judge_the_opening(str(examples / f"{example}.py"), fixed, moving)
+
+
+def test_the_so100s_drawn_jaws_take_shapes_and_a_tool_frame_in_their_opening(
+    tmp_path: Path,
+) -> None:
+    """The SO-100's jaws (``gripper``, ``jaw``) have visual meshes and no collision shape:
+    its fingers passed through everything and the check found them 0 m apart. Drafted
+    now, their drawings are their shapes and the tool frame lies in the opening, judged in
+    PyBullet as the SO-101's and the Z1's are."""
+    module = tmp_path / "so100.py"
+    module.write_text(_draft(SO100).source(module), "utf-8")
+    _judge_the_opening(str(module), "gripper", "jaw")
+
+
+def _judge_the_opening(source: str, fixed: str, moving: str) -> None:
     with World() as world:
-        robot = world.add_robot(description_from(str(examples / f"{example}.py")))
+        robot = world.add_robot(description_from(source))
         arm = robot.description.arms["arm"]
         assert arm.gripper is not None
         client, body = world.physics.client(), world.object(robot.name).body_id
+        for link in (fixed, moving):
+            index = _link_index(body, link, client)
+            assert pybullet.getCollisionShapeData(body, index, physicsClientId=client), link
         world.set_joint_states(robot.name, arm.gripper.at(1.0))
         free = _ball_distances(world, robot.name, arm.tool_frame)
         assert min(free.values(), default=1.0) > 0.0, free  # nothing of the robot there

@@ -11,6 +11,7 @@ import warnings
 from pathlib import Path
 
 import numpy as np
+import pybullet as p
 import pytest
 
 from robocram.robots import RobotModel
@@ -48,3 +49,42 @@ def test_no_stand_in_box_is_longer_than_the_robot(name: str) -> None:
         if is_stand_in(c.geometry)
     ]
     assert all(max(size) <= max(span, 0.08) + 1e-9 for size in boxes), (name, span)
+
+
+def test_a_torso_lowered_to_its_limit_stays_clear_of_the_column_box_below(
+    tmp_path: Path,
+) -> None:
+    """Armar6's platform box reached the torso joint at zero (1.235 m up), 0.365 m above
+    where the torso goes down to: lowered, the neck sat in it. Its box ends where the
+    torso's travel comes nearest now; measured in a raw PyBullet, torso at its lower limit."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        model = RobotModel.from_file(ZOO / "armar6" / "armar6.urdf", missing_packages_as_boxes=True)
+    path = tmp_path / "armar6.urdf"
+    model.to_urdf(path)
+    client = p.connect(p.DIRECT)
+    try:
+        body = p.loadURDF(str(path), useFixedBase=True, physicsClientId=client)
+        infos = [
+            p.getJointInfo(body, i, physicsClientId=client)
+            for i in range(p.getNumJoints(body, physicsClientId=client))
+        ]
+        links = {info[12].decode(): info[0] for info in infos}
+        torso = next(info[0] for info in infos if info[1] == b"torso_joint")
+        assert infos[torso][8] == pytest.approx(-0.365)  # the lower limit
+        p.resetJointState(body, torso, infos[torso][8], physicsClientId=client)
+        gaps = {
+            name: min(
+                (
+                    c[8]
+                    for c in p.getClosestPoints(
+                        body, body, 0.5, links["platform"], links[name], physicsClientId=client
+                    )
+                ),
+                default=0.5,
+            )
+            for name in ("lower_neck", "middle_neck", "upper_neck")
+        }
+        assert min(gaps.values()) > 0.0, gaps
+    finally:
+        p.disconnect(client)

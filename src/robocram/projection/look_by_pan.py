@@ -1,5 +1,4 @@
 """Looking with a head that only pans (Baxter's): turn it, and accept the tilt it has.
-A camera nothing turns (Kevin's, on a mast) looks without moving: the target in view.
 
 The pan joint is aimed as a pan-tilt head's is (``joint_aim.py``) and turned along a
 checked, timed trajectory. The camera's tilt is fixed, so the look succeeds when the
@@ -51,24 +50,6 @@ def _outside(robot: ProjectedRobot, target_in_map: Vector3) -> str | None:
     to_target = np.subtract(target_in_map, pose.position)
     word = "below" if _elevation(to_target) < _elevation(axis) else "above"
     return f"{math.degrees(max(misses)):.0f} degrees outside the camera's view ({word} it)"
-
-
-def look_fixed(robot: ProjectedRobot, target_in_map: Vector3) -> dict[str, float]:
-    """A camera nothing turns looks at ``target_in_map`` if it is in view; moves nothing.
-
-    Raises:
-        PtuGoalNotReached: the target lies outside the camera's view (how far, which side).
-    """
-    missed = _outside(robot, target_in_map)
-    if missed is not None:
-        at = ", ".join(f"{v:.2f}" for v in target_in_map)
-        raise PtuGoalNotReached(
-            f"{robot.name}'s camera is fixed ({robot.description.cameras[0].frame}): the "
-            f"target ({at}) lies {missed}; stand farther away or turn the base towards it",
-            target=tuple(target_in_map),
-            reached={},
-        )
-    return {}
 
 
 def look_by_pan(

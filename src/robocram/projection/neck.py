@@ -11,9 +11,9 @@ head moves. Angles outside the limits are clamped and turned to, then
 by IK: the camera turns to face the target from its current place, else from the neck's
 parking place or a step away from the current one; ``PtuGoalUnreachable`` if IK finds no
 solution for any of them. A robot with neither looks with what turns its camera
-(``looking_means.py``): the arm carrying it (``look_by_arm.py``), a head that only pans
-(``look_by_pan.py``), or nothing: a fixed camera on a robot that drives sees what is in
-view (``look_by_pan.look_fixed``).
+(``looking_means.py``): the arm carrying it (``look_by_arm.py``) or a head that only pans
+(``look_by_pan.py``); one whose camera nothing turns only checks the target is in view
+(``look_fixed.py``).
 """
 
 from __future__ import annotations
@@ -30,8 +30,9 @@ from robocram.projection.errors import ProjectionError
 from robocram.projection.joint_aim import aimed_joints
 from robocram.projection.joint_motion import move_along_checked
 from robocram.projection.look_by_arm import look_by_arm
-from robocram.projection.look_by_pan import look_by_pan, look_fixed
+from robocram.projection.look_by_pan import look_by_pan
 from robocram.projection.look_failures import look_blocked
+from robocram.projection.look_fixed import look_fixed
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robots import PanTiltDescription
 from robocram.robots.looking_means import looking_means
@@ -48,19 +49,14 @@ def look_at(robot: ProjectedRobot, target_in_map: Vector3) -> dict[str, float]:
     if not desc.cameras:
         raise ProjectionError(f"{robot.name} has no camera to look with")
     means = looking_means(desc)
-    if means is None:
-        raise ProjectionError(
-            f"{robot.name} has neither a pan-tilt unit, a neck arm, an arm carrying its camera "
-            "nor a joint turning it; it cannot look around"
-        )
+    if means is None:  # nothing turns the camera: the target must be in its view
+        return look_fixed(robot, target_in_map)
     if means.kind == "pan_tilt" and desc.pan_tilt is not None:
         return _aim_pan_tilt(robot, desc.pan_tilt, target_in_map)
     if means.kind == "neck_arm" and desc.neck_arm is not None:
         return _aim_neck_arm(robot, desc.neck_arm, target_in_map)
     if means.kind == "arm" and means.arm is not None:
         return look_by_arm(robot, means.arm, target_in_map)
-    if means.kind == "fixed":
-        return look_fixed(robot, target_in_map)
     if means.joint is None or means.link is None:
         raise ProjectionError(f"{robot.name}'s looking means {means} names no joint to turn")
     return look_by_pan(robot, means.joint, means.link, target_in_map)

@@ -36,7 +36,6 @@ LOOK_FIX = {
     "neck_arm": "check neck_arm joints",
     "arm": "check the arm carrying the camera: its joints and limits must turn the camera",
     "pan": "check the joint turning the camera (the head's pan joint) and its limits",
-    "fixed": "check the camera frame (z forward, optical)",
 }
 
 
@@ -133,7 +132,7 @@ def look_and_detect(robot: ProjectedRobot) -> list[CheckResult]:
     camera = desc.cameras[0]
     eye = world.link_pose(robot.name, camera.frame)
     means = looking_means(desc)
-    if means is None or means.kind == "fixed":  # nothing turns it: the mug straight ahead
+    if means is None:
         target = eye.transform_point((0.0, 0.0, LOOK_AHEAD))
         return [_detect(robot, target, LOOK_AHEAD)]
     if means.kind in ("arm", "pan"):

@@ -91,10 +91,23 @@ def _cleared(model: RobotModel, arms: Mapping[str, ArmDescription]) -> RobotMode
         tool_closed = link_pose(model, arm.tool_frame, closed)
         for name in fingers:
             at = link_pose(model, name, closed)
-            links[name] = _to_middle(links[name], at, tool_closed, approach)
+            tip = _sliding_tip(model, name)
+            links[name] = _to_middle(links[name], at, tool_closed, approach, tip)
     if all(links[name] is model.links[name] for name in links):
         return model
     return RobotModel(model.name, links, model.joints, model.source)
+
+
+def _sliding_tip(model: RobotModel, link: str) -> bool:
+    """Whether ``link`` is a parallel gripper's fingertip: a leaf (no joint sizes its box
+    along the approach) that a prismatic joint moves, so it keeps its orientation and its
+    body runs along the approach to where the fingers hold."""
+    if any(joint.parent == link for joint in model.joints.values()):
+        return False
+    joint = model.parent_joint(link)
+    while joint is not None and not joint.movable:
+        joint = model.parent_joint(joint.parent)
+    return joint is not None and joint.type == "prismatic"
 
 
 def _approach(model: RobotModel, arm: ArmDescription, tool: Pose) -> np.ndarray | None:
@@ -165,18 +178,24 @@ def _cut_box(
     return [(replace(geometry, size=(size[0], size[1], size[2])), moved)]
 
 
-def _to_middle(link: Link, at: Pose, tool: Pose, approach: np.ndarray) -> Link:
+def _to_middle(link: Link, at: Pose, tool: Pose, approach: np.ndarray, tip: bool) -> Link:
     """Finger ``link`` (posed ``at``, gripper closed) with its stand-in boxes grown across
-    to the plane through ``tool`` that splits the fingers."""
+    to the plane through ``tool`` that splits the fingers, and, a parallel gripper's
+    fingertip (``tip``), out along the approach to ``tool`` where they end short of it."""
+
+    def grown(geometry: Geometry, origin: Pose) -> tuple[Geometry, Pose]:
+        geometry, origin = _grown(geometry, origin, at, tool, approach)
+        return _reaching(geometry, origin, at, tool, approach) if tip else (geometry, origin)
+
     collisions = tuple(
         replace(c, geometry=g, origin=o)
         for c in link.collisions
-        for g, o in [_grown(c.geometry, c.origin, at, tool, approach)]
+        for g, o in [grown(c.geometry, c.origin)]
     )
     visuals = tuple(
         replace(v, geometry=g, origin=o)
         for v in link.visuals
-        for g, o in [_grown(v.geometry, v.origin, at, tool, approach)]
+        for g, o in [grown(v.geometry, v.origin)]
     )
     if collisions == link.collisions and visuals == link.visuals:
         return link
@@ -203,5 +222,32 @@ def _grown(
     size[axis] += gap
     shift = [0.0, 0.0, 0.0]
     shift[axis] = -float(np.sign(along[axis])) * gap / 2
+    moved = origin * Pose((shift[0], shift[1], shift[2]))
+    return replace(geometry, size=(size[0], size[1], size[2])), moved
+
+
+def _reaching(
+    geometry: Geometry, origin: Pose, at: Pose, tool: Pose, approach: np.ndarray
+) -> tuple[Geometry, Pose]:
+    """A parallel gripper's fingertip's stand-in box grown out along the approach until it
+    reaches ``tool``: a leaf has no joint to size it by (the box is a cube at its root),
+    and the tool frame is where the fingers hold (the Donbot's WSG 50: cubes 23 mm past
+    the guides, the tool frame 144 mm out, so the fingers closed under every mug). Any
+    other shape, a box turned across the approach or one that reaches it, unchanged."""
+    if not is_stand_in(geometry):
+        return geometry, origin
+    box = at * origin
+    along = box.matrix()[:3, :3].T @ approach  # the approach in the box's own axes
+    axis = int(np.argmax(np.abs(along)))
+    if abs(float(along[axis])) < ALIGNED:
+        return geometry, origin
+    end = float(np.dot(box.position, approach)) + geometry.size[axis] / 2
+    gap = float(np.dot(tool.position, approach)) - end
+    if gap <= CUT_TOLERANCE:
+        return geometry, origin
+    size = list(geometry.size)
+    size[axis] += gap
+    shift = [0.0, 0.0, 0.0]
+    shift[axis] = float(np.sign(along[axis])) * gap / 2
     moved = origin * Pose((shift[0], shift[1], shift[2]))
     return replace(geometry, size=(size[0], size[1], size[2])), moved

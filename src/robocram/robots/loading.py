@@ -23,6 +23,7 @@ from robocram.robots.description_source import description_from
 from robocram.robots.errors import DescriptionCheckError, DescriptionUsageError
 from robocram.robots.findings import warn
 from robocram.robots.grasp_space import clear_grasp_space
+from robocram.robots.hand_shapes import with_hand_shapes
 from robocram.robots.limit_check import check_acceleration_limits, check_rate_limits
 from robocram.robots.package_resolver import PackageResolver
 from robocram.robots.robot_model import MODELS, RobotModel
@@ -60,9 +61,9 @@ def load_description(
     check_names(desc, model)
     check_rate_limits(model)
     check_acceleration_limits(desc.name, desc.acceleration_limits)
-    arms = {
-        key: derive_arm(desc.name, infer_arm(arm, model), model) for key, arm in desc.arms.items()
-    }
+    inferred = {key: infer_arm(arm, model) for key, arm in desc.arms.items()}
+    model = with_hand_shapes(model, [arm.end_effector_link for arm in inferred.values()])
+    arms = {key: derive_arm(desc.name, arm, model) for key, arm in inferred.items()}
     model = clear_grasp_space(model, arms)  # stand-in boxes out of the grippers' grasp
     for arm in arms.values():
         check_values(desc.name, model, arm.parking)

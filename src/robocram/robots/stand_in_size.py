@@ -2,9 +2,13 @@
 
 A link's body joins its own frame (where its parent joint turns it) to the joints of its
 children, so the box spans those points, as thick as a fraction of the link's length in
-the chain (a palm is thinner than an upper arm). Placeholder inertias (``ixx = 1``) gave
-boxes of several metres that made every check fail far from the cause; nothing here reads
-the inertia, and no box is longer than the robot's own span.
+the chain (a palm is thinner than an upper arm). A child that slides (a prismatic joint)
+counts where its travel comes nearest the link's frame, if nearer than its origin: the
+link's body ends where the child's begins at that end of the travel, so lowering a torso
+does not sink it into a box of the column below (Armar6's platform reached its neck).
+Placeholder inertias (``ixx = 1``) gave boxes of several metres that made every check fail
+far from the cause; nothing here reads the inertia, and no box is longer than the robot's
+own span.
 """
 
 from __future__ import annotations
@@ -12,6 +16,8 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
+
+import numpy as np
 
 from robocram.robots.urdf_elements import Geometry, Joint
 from robocram.tf import Pose
@@ -49,7 +55,7 @@ def stand_in_boxes(joints: Mapping[str, Joint]) -> dict[str, StandInBox]:
     span = _span(joints, parent_of)
     boxes: dict[str, StandInBox] = {}
     for link in {*children, *parent_of}:
-        points = [(0.0, 0.0, 0.0), *(j.origin.position for j in children.get(link, []))]
+        points = [(0.0, 0.0, 0.0), *(_nearest(j) for j in children.get(link, []))]
         length = _length(link, parent_of, children)
         thickness = min(max(THICKNESS_SHARE * length, MIN_THICKNESS), MAX_THICKNESS)
         if length <= 0.0:
@@ -70,8 +76,25 @@ def _length(
     offset = math.dist((0.0, 0.0, 0.0), parent.origin.position) if parent is not None else 0.0
     if offset > 0.0:
         return offset
-    return max((math.dist((0.0, 0.0, 0.0), j.origin.position) for j in children.get(link, [])),
+    return max((math.dist((0.0, 0.0, 0.0), _nearest(j)) for j in children.get(link, [])),
                default=0.0)  # fmt: skip
+
+
+def _nearest(joint: Joint) -> tuple[float, float, float]:
+    """Where ``joint``'s child frame comes nearest its parent's frame [m, parent frame]: its
+    origin, or for a prismatic joint with limits the nearest point of its travel and its
+    origin (a box only ever shortens: fingers sliding across a palm leave it as it was)."""
+    origin = joint.origin.position
+    if joint.type != "prismatic" or joint.lower is None or joint.upper is None:
+        return origin
+    if not (math.isfinite(joint.lower) and math.isfinite(joint.upper)):
+        return origin
+    axis = joint.origin.matrix()[:3, :3] @ np.asarray(joint.axis, float)
+    axis /= max(float(np.linalg.norm(axis)), 1e-12)
+    low, high = min(joint.lower, 0.0), max(joint.upper, 0.0)
+    along = min(max(-float(axis @ np.asarray(origin)), low), high)
+    x, y, z = (float(v) for v in np.asarray(origin) + along * axis)
+    return (x, y, z)
 
 
 def _span(joints: Mapping[str, Joint], parent_of: Mapping[str, Joint]) -> float:

@@ -173,7 +173,7 @@ def _nearest_in_view(desc: LoadedDescription, height: float, yaw: float = 0.0) -
     means = looking_means(desc)
     if pt is None and means is not None and means.kind == "pan" and means.joint is not None:
         return _nearest_in_pan_view(desc, means.joint, height, yaw)
-    if pt is None and means is not None and means.kind == "fixed":
+    if pt is None and means is None and desc.cameras and not desc.flying:  # nothing turns it
         return _nearest_in_pan_view(desc, None, height, yaw)
     tilt = finite_limits(desc.model.joints[pt.tilt_joint]) if pt is not None else None
     if pt is None or tilt is None or not desc.cameras:
@@ -207,12 +207,12 @@ def _nearest_in_pan_view(
 def _view_note(desc: LoadedDescription) -> str:
     """Why the view bounds the mug, where a head that only pans bounds it; else ''."""
     means = looking_means(desc)
-    if desc.pan_tilt is not None or means is None or means.kind not in ("pan", "fixed"):
+    if desc.pan_tilt is not None or not desc.cameras or (means is not None and means.kind != "pan"):
         return ""
     camera = desc.cameras[0]
     down = math.asin(max(-1.0, min(_look_down(forward_kinematics(desc, {}, camera.frame)), 1.0)))
     lowest = math.degrees(down + camera.vertical_fov / 2)
-    how = f"its head only pans ({means.joint})" if means.kind == "pan" else "its camera is fixed"
+    how = f"its head only pans ({means.joint})" if means is not None else "its camera is fixed"
     return f"; {how}: its camera sees {lowest:.0f} degrees down at most"
 
 

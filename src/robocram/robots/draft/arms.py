@@ -8,12 +8,13 @@ doubt saying so.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from robocram.robots.description import ArmDescription
 from robocram.robots.draft.finger_spread import opens_at_upper
 from robocram.robots.draft.hands import Hand
 from robocram.robots.draft.link_poses import link_poses
+from robocram.robots.draft.loaded_hand import hand_as_loaded
 from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.draft.stowing import drafted_parking
 from robocram.robots.draft.tool_frames import approach_and_opening, tool_frame
@@ -122,7 +123,6 @@ def draft_arm(tree: ModelTree, hand: Hand, name: str, torso: str | None) -> Draf
     joints = _arm_joints(tree, hand, torso)
     base = tree.model.joints[joints[0]].parent
     tool = tool_frame(tree, hand, name)
-    parking = drafted_parking(tree.model, joints, hand.end_effector_link)
     reversed_joints = (
         list(hand.gripper_joints) if hand.opens_at_lower else _closing_upwards(tree, hand)
     )
@@ -136,10 +136,12 @@ def draft_arm(tree: ModelTree, hand: Hand, name: str, torso: str | None) -> Draf
         base_link=base,
         joints=joints,
         gripper_joints=() if gripper else hand.gripper_joints,
-        parking=parking.values,
         side=name if name in ("left", "right") else None,
         gripper=gripper,
     )
+    loaded = hand_as_loaded(tree.model, arm, tool.added)
+    parking = drafted_parking(loaded, joints, hand.end_effector_link)
+    arm = replace(arm, parking=parking.values)
     why = {
         "end_effector_link": f"child of {hand.wrist_joint}, the last joint before the fingers",
         "base_link": _base_why(torso),

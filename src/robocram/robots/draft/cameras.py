@@ -20,6 +20,7 @@ from robocram.robots.description import PanTiltDescription
 from robocram.robots.draft.camera_sensors import CameraSensor, sensor_for
 from robocram.robots.draft.link_poses import axis_in_root, link_poses
 from robocram.robots.draft.model_tree import ModelTree
+from robocram.robots.link_centre import link_points
 from robocram.robots.model_additions import FrameSpec
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
@@ -33,6 +34,7 @@ DEFAULT_HFOV = math.radians(60.0)  # [rad] a common RGB-D camera; URDF links car
 DEFAULT_VFOV = math.radians(45.0)  # [rad]
 AIM_DOWN = math.radians(30.0)  # [rad] an added optical frame looks this far below ahead,
 AIM_FLOOR = 1.2  # [m] or less, so that its axis meets the floor no nearer than this
+CAMERA_SIZE = 0.3  # [m] a camera's body spans less (a Kinect 0.28 m): a larger link carries one
 
 
 @dataclass(frozen=True)
@@ -58,14 +60,29 @@ def _score(tree: ModelTree, link: str, hands: list[str]) -> float:
 
 
 def camera_frames(tree: ModelTree, hands: list[str]) -> list[str]:
-    """Frames that look like cameras, best first; hand cameras last."""
+    """Frames that look like cameras, best first; hand cameras last. Where the best is a
+    body larger than any camera (:data:`CAMERA_SIZE`) carrying others rigidly below it, it
+    is their mount (Tracy's ``camera_pole``, a metre tall, its frame at the pole's foot,
+    holds ``camera_mount`` and ``camera_link``): the best of those it carries that carries
+    none itself comes first."""
     found = [
         link
         for link in tree.model.links
         if any(w in link.lower() for w in CAMERA_WORDS)
         and not any(w in link.lower() for w in NOT_CAMERAS)
     ]
-    return sorted(found, key=lambda link: -_score(tree, link, hands))
+    ranked = sorted(found, key=lambda link: -_score(tree, link, hands))
+    if not ranked or not _structure(tree, ranked[0]):
+        return ranked
+    carried = [link for link in ranked if link in tree.fixed_closure(ranked[0])[1:]]
+    ends = [link for link in carried if not set(found) & set(tree.fixed_closure(link)[1:])]
+    return [*ends[:1], *(link for link in ranked if link not in ends[:1])]
+
+
+def _structure(tree: ModelTree, link: str) -> bool:
+    """Whether ``link``'s collision shapes span more than a camera's body does."""
+    points = link_points(tree.model.link(link))
+    return points is not None and float(np.ptp(points, axis=0).max()) > CAMERA_SIZE
 
 
 HEAD_HEIGHT = 0.5  # [m] over the root: a link off the arms this high may carry a camera

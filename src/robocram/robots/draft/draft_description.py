@@ -50,6 +50,7 @@ from robocram.robots.draft.stowing import (
 from robocram.robots.draft.telescope import Telescope, find_telescopes
 from robocram.robots.draft.torso import find_torso
 from robocram.robots.draft.trunk import find_trunk
+from robocram.robots.hand_shapes import with_hand_shapes
 from robocram.robots.robot_model import RobotModel
 from robocram.robots.self_contacts import SelfContacts
 from robocram.robots.srdf import read_srdf
@@ -117,6 +118,9 @@ def draft_description(
     drive = find_base_drive(tree)
     _note(why, doubts, "base_type", drive.why, drive.doubt)
     hands = find_hands(tree) or find_fixed_hands(tree)
+    shaped = with_hand_shapes(model, [h.end_effector_link for h in hands])
+    if shaped is not model:  # as loading shapes them: the jaws' opening is measured on them
+        model, tree = shaped, ModelTree(shaped)
     guessed = camera is None and not camera_frames(tree, [h.end_effector_link for h in hands])
     if guessed:  # as `--camera LINK` with the link the check would name
         camera = likely_camera_link(tree, [h.end_effector_link for h in hands])
@@ -298,8 +302,9 @@ def _camera_view(tree: ModelTree, desc: RobotDescription) -> CameraView | None:
 
 def _pan_sweep(tree: ModelTree, desc: RobotDescription, arm: str) -> list[dict[str, float]]:
     """States of the head's pan joint a parked ``arm`` must stay clear in: at zero and
-    every 15 degrees to :data:`PAN_SWEEP` each way (within limits), where the pan turns the arm too (a waist
-    that turns the head and both arms, Centauro's); else only the robot as it is."""
+    every 15 degrees to :data:`PAN_SWEEP` each way (within limits), where the pan turns
+    the arm too (a waist that turns the head and both arms, Centauro's); else only the
+    robot as it is."""
     pan = desc.pan_tilt.pan_joint if desc.pan_tilt is not None else None
     base = desc.arms[arm].base_link
     if pan is None or base is None:

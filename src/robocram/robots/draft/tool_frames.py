@@ -92,12 +92,30 @@ def _gripper_at(tree: ModelTree, hand: Hand, where: str) -> dict[str, float]:
     return values
 
 
+def _pivots(tree: ModelTree, hand: Hand, opened: dict[str, np.ndarray]) -> bool:
+    """Whether ``hand``'s fingers turn about their own frames (which stay put between open,
+    ``opened``, and closed) and have collision shapes to measure their bodies on."""
+    closed = _in_wrist(tree, hand, _gripper_at(tree, hand, "closed"))
+    links = hand.gripper_links
+    still = all(np.linalg.norm(opened[k] - closed[k]) < 1e-6 for k in links)
+    return bool(links) and still and all(tree.model.link(k).collisions for k in links)
+
+
 def approach_and_opening(tree: ModelTree, hand: Hand) -> tuple[np.ndarray, np.ndarray | None]:
     """Unit approach and opening directions in the wrist link (opening None if unseen)."""
     approach = _finger_extension(tree, hand)
     if approach is None:
         opened = _in_wrist(tree, hand, _gripper_at(tree, hand, "open"))
         approach = _snapped(np.mean(list(opened.values()), axis=0))
+        if np.max(np.abs(approach)) < 1.0 and _pivots(tree, hand, opened):
+            # no axis of the wrist within 15 degrees, and the fingers' frames are the pivots
+            # they turn about: a jaw's pivot off to the side (the SO-100's) says little; the
+            # middle of the hand's bodies at the URDF's zeros, the wrist link's (a fixed
+            # jaw's) and the fingers', does
+            at_zero = _in_wrist(tree, hand, {}, centres=True)
+            wrist = np.asarray(link_centre(tree.model.link(hand.end_effector_link)))
+            middles = [wrist, *(at_zero[link] for link in hand.gripper_links)]
+            approach = _snapped(np.mean(middles, axis=0))
     opening = _opening(tree, hand, approach, centres=False)
     if opening is None:
         opening = _opening(tree, hand, approach, centres=True)

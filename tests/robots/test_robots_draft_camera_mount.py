@@ -1,0 +1,84 @@
+"""A link carrying the camera is not the camera: Tracy's ``camera_pole``.
+
+Tracy's URDF names three frames like cameras: ``camera_pole`` (a metre-tall pole on a
+plate, its frame at the pole's foot), ``camera_mount`` on its top and ``camera_link``
+below that. The draft took the pole, whose own body blocked every view. A body larger
+than any camera that carries other camera frames is their mount now: the draft takes the
+camera at the end. Judged in a raw PyBullet: a ray along the camera's optical axis meets
+nothing of the robot within a metre.
+"""
+
+from __future__ import annotations
+
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pybullet
+import pytest
+
+from robocram.execution.failures import PtuGoalNotReached
+from robocram.projection.neck import look_at
+from robocram.projection.projected_robot import ProjectedRobot
+from robocram.robot_check import description_from
+from robocram.robots import draft_description
+from robocram.world import World
+
+TRACY = Path(__file__).resolve().parents[1] / "data" / "zoo" / "tracy" / "tracy.urdf"
+
+
+def test_tracys_drafted_camera_is_the_one_on_the_pole_and_sees_past_the_robot(
+    tmp_path: Path,
+) -> None:
+    module = tmp_path / "tracy.py"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        module.write_text(draft_description(TRACY).source(module), "utf-8")
+        with World() as world:
+            robot = world.add_robot(description_from(str(module)))
+            camera = robot.description.cameras[0].frame
+            client, body = world.physics.client(), world.object(robot.name).body_id
+            names = {
+                pybullet.getJointInfo(body, i, physicsClientId=client)[12].decode(): i
+                for i in range(pybullet.getNumJoints(body, physicsClientId=client))
+            }
+            state = pybullet.getLinkState(
+                body, names[camera], computeForwardKinematics=True, physicsClientId=client
+            )
+            z = np.array(pybullet.getMatrixFromQuaternion(state[5])).reshape(3, 3)[:, 2]
+            start = np.asarray(state[4])
+            hit = pybullet.rayTest(start, start + 1.0 * z, physicsClientId=client)[0]
+    assert camera in ("camera_link", "camera_link_optical")
+    assert start[2] > 0.8  # on top of the pole, not at its foot
+    assert hit[0] != body, (camera, hit)
+
+
+def test_a_camera_nothing_turns_looks_only_at_what_is_in_its_view(tmp_path: Path) -> None:
+    """Tracy's camera is fixed: the plans' look found no process module. A look moves
+    nothing now; it passes for a point on the optical axis (PyBullet's camera link state)
+    and fails, saying so, for one behind the camera."""
+    module = tmp_path / "tracy.py"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        module.write_text(draft_description(TRACY).source(module), "utf-8")
+        with World() as world:
+            name = world.add_robot(description_from(str(module))).name
+            robot = ProjectedRobot.of(world, name)
+            camera = robot.description.cameras[0].frame
+            client, body = world.physics.client(), world.object(name).body_id
+            index = next(
+                i
+                for i in range(pybullet.getNumJoints(body, physicsClientId=client))
+                if pybullet.getJointInfo(body, i, physicsClientId=client)[12].decode() == camera
+            )
+            state = pybullet.getLinkState(
+                body, index, computeForwardKinematics=True, physicsClientId=client
+            )
+            z = np.array(pybullet.getMatrixFromQuaternion(state[5])).reshape(3, 3)[:, 2]
+            before = world.joint_states(name)
+            ahead = tuple(float(v) for v in np.asarray(state[4]) + z)
+            behind = tuple(float(v) for v in np.asarray(state[4]) - z)
+            assert look_at(robot, ahead) == {}
+            with pytest.raises(PtuGoalNotReached, match="cannot turn"):
+                look_at(robot, behind)
+            assert world.joint_states(name) == before
