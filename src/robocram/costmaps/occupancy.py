@@ -115,10 +115,13 @@ def placed_for_a_moment(world: World, robot: RobotObject, pose: Pose) -> Iterato
         world.set_pose(robot, before)
 
 
-def robot_height(world: World, robot: RobotObject) -> float:
-    """Top [m] of the robot's bounds over its base origin."""
-    low, high = world.aabb(robot)
-    return high[2] - world.pose(robot).position[2]
+def robot_top(world: World, robot: RobotObject) -> float:
+    """Top [m, map] of the robot's bounds: from the floor up to there it can hit things.
+
+    In the map, not over the base origin: a legged robot's origin (its trunk) stands
+    0.6 m over its feet, and a counter's top under its parked arm is in its way.
+    """
+    return world.aabb(robot)[1][2]
 
 
 def obstacle_boxes(world: World, robot: RobotObject | None, top: float) -> tuple[list[Box], bool]:
@@ -213,7 +216,7 @@ def occupancy_cost(query: LocationQuery, value: object, alive: BoolGrid) -> Cost
     if robot is None:
         return CostLayer(np.ones(query.grid.shape))
     radius = facing_radius(query.world, robot)
-    top = robot_height(query.world, robot)
+    top = robot_top(query.world, robot)
     named, large = named_obstacle_boxes(query.world, robot, top)
     free = free_cells(query, [box for _, box in named], radius, alive)
     if large:  # parts whose bounds would cover the room are probed cell by cell
