@@ -4,9 +4,9 @@
 - its fingers (``gripper_links``): the links its joints (and their mimic followers) move;
 - its widest opening [m]: the largest growth of a distance between two finger links from
   closed to open, plus the gap their shapes keep closed where that is a jaw's stop (3 cm
-  or more: Kevin's 59 mm) rather than pads; for a single jaw moving against a fixed one (whose link frames sit on
-  the pivot and do not part), how far the middle of the moving jaw leaves the tool
-  frame's approach axis;
+  or more: Kevin's 59 mm) rather than pads; for a single jaw moving against a fixed one
+  (whose link frames sit on the pivot and do not part), how far the middle of the moving
+  jaw leaves the tool frame's approach axis;
 - the hand (``hand_links``): the wrist and every link below it; a suction hand's
   ``gripper_links`` are its hand links (what touches what it holds);
 - a camera's minimal and maximal height: its frame's height with the torso at its lower
