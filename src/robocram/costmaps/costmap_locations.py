@@ -165,6 +165,8 @@ class CostmapLocations:
                 zeroed_by = name  # later layers only see zeros: this one is the cause
             heights = layer.heights if layer.heights is not None else heights
             yaws = layer.yaws if layer.yaws is not None else yaws
+        if heights is None and query.robot is not None and query.designator.get("for_") is None:
+            heights = _standing_heights(query)
         costmap = Costmap.from_layers(query.grid, weights, heights)
         return _Layers(costmap, yaws, refiners, plan, zeroed_by, tuple(refined_by))
 
@@ -300,6 +302,15 @@ def _refuse_far_anchor(
         centre,
         area,
     )
+
+
+def _standing_heights(query: LocationQuery) -> np.ndarray:
+    """A stand's height: where the robot's base stands now (the floor it is on). A legged
+    robot's base, its trunk, stands 0.6 m over its feet; at 0 its legs would be in the
+    floor and its arm 0.6 m too low at every stand checked."""
+    robot = query.robot
+    assert robot is not None
+    return np.full(query.grid.shape, query.world.pose(robot).position[2])
 
 
 def _facing_point(query: LocationQuery, plan: LocationPlan) -> tuple[float, float, float] | None:

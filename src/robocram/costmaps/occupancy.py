@@ -24,6 +24,7 @@ from robocram.costmaps.errors import CostmapInputError
 from robocram.costmaps.grasps import arm_working_yaw
 from robocram.costmaps.grid import BoolGrid, FloatGrid, dilate, erode
 from robocram.costmaps.out_of_the_way import out_of_the_way
+from robocram.robots.model_pose import subtree_links
 from robocram.tf import Pose, Vector3
 from robocram.world import RobotObject, World
 from robocram.world.ray_hit import first_hit_bodies
@@ -95,10 +96,43 @@ def facing_radius(world: World, robot: RobotObject) -> float:
         arm_working_yaw(desc, k) for k, a in desc.arms.items() if k != desc.neck_arm and a.joints
     }
     if not turns or 0.0 in turns:
-        return inner
+        return max(inner, _legs_ahead(world, robot))
     low_x, low_y, high_x, high_y = footprint_extents(world, robot)
     ways = {0.0: high_x, math.pi / 2: high_y, -math.pi / 2: -low_y, math.pi: -low_x}
     return max(inner, min(ways.get(turn, inner) for turn in turns))
+
+
+def leg_links(robot: RobotObject) -> list[str]:
+    """Links neither of the base (fixed to the root) nor moved by a joint the description
+    names (arms, grippers, torso, pan-tilt): a legged robot's legs, a wheeled one's wheels."""
+    desc, model = robot.description, robot.description.model
+    if model is None:
+        raise CostmapInputError(f"robot {robot.name!r} has no loaded model", robot.name)
+    named = {j for arm in desc.arms.values() for j in (*arm.joints, *arm.gripper_joints)}
+    named |= {desc.torso_joint} if desc.torso_joint is not None else set()
+    pan_tilt = desc.pan_tilt
+    named |= {pan_tilt.pan_joint, pan_tilt.tilt_joint} if pan_tilt is not None else set()
+    moved = {
+        link
+        for j in named
+        if j in model.joints
+        for link in subtree_links(model, model.joints[j].child)
+    }
+    base = set(model.base_links())
+    return [link for link in robot.link_index if link not in base and link not in moved]
+
+
+def _legs_ahead(world: World, robot: RobotObject) -> float:
+    """How far [m] ahead of the base origin its legs reach (0 without legs): B1's feet,
+    at its URDF's zero stance, stand 0.58 m ahead of its origin, its trunk 0.39 m."""
+    base = world.pose(robot)
+    ahead = 0.0
+    with placed_for_a_moment(world, robot, Pose(base.position)):
+        for link in leg_links(robot):
+            low, high = world.contacts.link_aabb(robot, link)
+            if high[2] - low[2] > 0 and high[0] - low[0] <= 5:  # frames have no geometry
+                ahead = max(ahead, high[0] - base.position[0])
+    return ahead
 
 
 @contextmanager
@@ -115,10 +149,13 @@ def placed_for_a_moment(world: World, robot: RobotObject, pose: Pose) -> Iterato
         world.set_pose(robot, before)
 
 
-def robot_height(world: World, robot: RobotObject) -> float:
-    """Top [m] of the robot's bounds over its base origin."""
-    low, high = world.aabb(robot)
-    return high[2] - world.pose(robot).position[2]
+def robot_top(world: World, robot: RobotObject) -> float:
+    """Top [m, map] of the robot's bounds: from the floor up to there it can hit things.
+
+    In the map, not over the base origin: a legged robot's origin (its trunk) stands
+    0.6 m over its feet, and a counter's top under its parked arm is in its way.
+    """
+    return world.aabb(robot)[1][2]
 
 
 def obstacle_boxes(world: World, robot: RobotObject | None, top: float) -> tuple[list[Box], bool]:
@@ -213,7 +250,7 @@ def occupancy_cost(query: LocationQuery, value: object, alive: BoolGrid) -> Cost
     if robot is None:
         return CostLayer(np.ones(query.grid.shape))
     radius = facing_radius(query.world, robot)
-    top = robot_height(query.world, robot)
+    top = robot_top(query.world, robot)
     named, large = named_obstacle_boxes(query.world, robot, top)
     free = free_cells(query, [box for _, box in named], radius, alive)
     if large:  # parts whose bounds would cover the room are probed cell by cell

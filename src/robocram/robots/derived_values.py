@@ -3,9 +3,10 @@
 - a gripper's open and closed positions: its joints' upper and lower limits;
 - its fingers (``gripper_links``): the links its joints (and their mimic followers) move;
 - its widest opening [m]: the largest growth of a distance between two finger links from
-  closed to open; for a single jaw moving against a fixed one (whose link frames sit on
-  the pivot and do not part), how far the middle of the moving jaw leaves the tool
-  frame's approach axis;
+  closed to open, plus the gap their shapes keep closed where that is a jaw's stop (3 cm
+  or more: Kevin's 59 mm) rather than pads; for a single jaw moving against a fixed one
+  (whose link frames sit on the pivot and do not part), how far the middle of the moving
+  jaw leaves the tool frame's approach axis;
 - the hand (``hand_links``): the wrist and every link below it; a suction hand's
   ``gripper_links`` are its hand links (what touches what it holds);
 - a camera's minimal and maximal height: its frame's height with the torso at its lower
@@ -24,7 +25,7 @@ from robocram.robots.description import ArmDescription, CameraDescription, Robot
 from robocram.robots.description_check import check_values
 from robocram.robots.errors import GripperDescriptionError
 from robocram.robots.gripper import GripperDescription, GripperJoint
-from robocram.robots.link_centre import link_centre
+from robocram.robots.link_centre import link_centre, link_points
 from robocram.robots.model_pose import finite_limits, link_pose, subtree_links
 from robocram.robots.robot_model import RobotModel
 from robocram.tf import Pose
@@ -34,6 +35,7 @@ ARM_CAMERA_SAMPLES = 128  # arm configurations sampled for a wrist camera's heig
 ARM_CAMERA_SHARE = 0.9  # the quantile of those heights taken as its maximal height
 ARM_CAMERA_SEED = 0  # the configurations are the same at every load
 MIN_OPENING = 1e-4  # [m] a smaller growth of the finger gap means no opening was found
+MIN_CLOSED_GAP = 0.03  # [m] closed fingers this far apart are stopped by their joints' limits
 
 
 def derive_arm(robot: str, arm: ArmDescription, model: RobotModel) -> ArmDescription:
@@ -172,19 +174,47 @@ def moved_links(model: RobotModel, joints: tuple[str, ...]) -> tuple[str, ...]:
 def widest_opening(
     model: RobotModel, gripper: GripperDescription, fingers: tuple[str, ...]
 ) -> float | None:
-    """Largest growth [m] of the distance between two finger links from closed to open.
+    """Largest growth [m] of the distance between two finger links from closed to open,
+    plus the gap their shapes keep when closed if that is :data:`MIN_CLOSED_GAP` or more.
 
-    With fingers that touch when closed this is the widest gap between them; ``None``
+    With fingers that touch when closed the growth is the widest gap between them; ``None``
     when no two fingers move apart (a single finger, or links the joints do not move).
+    Fingers whose joints' limits stop them apart (Kevin's stay 59 mm apart) open by the
+    growth beyond that gap; a smaller closed gap is finger pads or the bounds of meshes
+    (Boxy 6.5 mm, Baxter 16 mm) and is not added.
     """
     closed = [link_pose(model, f, gripper.at(0.0)).position for f in fingers]
     opened = [link_pose(model, f, gripper.at(1.0)).position for f in fingers]
     pairs = itertools.combinations(range(len(fingers)), 2)
-    growth = max(
-        (math.dist(opened[i], opened[j]) - math.dist(closed[i], closed[j]) for i, j in pairs),
-        default=0.0,
+    growth, i, j = max(
+        (
+            (math.dist(opened[i], opened[j]) - math.dist(closed[i], closed[j]), i, j)
+            for i, j in pairs
+        ),
+        default=(0.0, 0, 0),
     )
-    return growth if growth > MIN_OPENING else None
+    if growth <= MIN_OPENING:
+        return None
+    if gripper.curled_hand:
+        return growth
+    apart = np.asarray(opened[i]) - np.asarray(opened[j])
+    gap = closed_gap(model, gripper, (fingers[i], fingers[j]), apart / np.linalg.norm(apart))
+    return growth + gap if gap >= MIN_CLOSED_GAP else growth
+
+
+def closed_gap(
+    model: RobotModel, gripper: GripperDescription, pair: tuple[str, str], apart: np.ndarray
+) -> float:
+    """Gap [m] between two closed fingers' collision shapes along ``apart`` (the way the
+    first moves from the second when opening); 0 when either has no readable shape."""
+    faces = []
+    for finger in pair:
+        points = link_points(model.link(finger))
+        if points is None:
+            return 0.0
+        pose = link_pose(model, finger, gripper.at(0.0)).matrix()
+        faces.append((points @ pose[:3, :3].T + pose[:3, 3]) @ apart)
+    return float(faces[0].min() - faces[1].max())
 
 
 def single_jaw_opening(

@@ -1,0 +1,98 @@
+"""Issue 37: legged robots in the kitchen. ANYmal's and B1's root link is their trunk,
+0.58 and 0.68 m over their feet: the kitchen stands them on the floor (not with their legs
+in it), their stands are at that height, and they face a counter no nearer than their feet
+reach ahead (B1's, at its URDF's zero stance, 0.58 m ahead of its origin; its trunk's front
+0.39 m). Judged with raw PyBullet: the links' bounds, the mug's place on the table.
+"""
+
+from __future__ import annotations
+
+import warnings
+from pathlib import Path
+
+import pybullet
+import pytest
+
+from robocram.costmaps.occupancy import facing_radius
+from robocram.designators import a, an
+from robocram.plans import perform
+from robocram.projection import simulated_robot
+from robocram.robots import draft_description
+from robocram.robots.example_robot_data import example_robot_data_folder
+from robocram.scenes import kitchen_scene
+from robocram.tf import Pose
+
+ROBOTS = example_robot_data_folder()
+ANYMAL = ROBOTS / "anymal_b_simple_description" / "robots" / "anymal-kinova.urdf"
+B1 = ROBOTS / "b1_description" / "urdf" / "b1-z1.urdf"
+ON_THE_FLOOR = 0.01  # [m] the lowest point's height, Bullet's margin allowed
+
+pytestmark = pytest.mark.filterwarnings("ignore::robocram.robots.DescriptionWarning")
+
+
+def _drafted(urdf: Path, folder: Path) -> str:
+    path = folder / f"{urdf.stem.replace('-', '_')}.py"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        path.write_text(draft_description(urdf).source(path), encoding="utf-8")
+    return str(path)
+
+
+@pytest.fixture(scope="module")
+def folder(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return tmp_path_factory.mktemp("legged")
+
+
+def _bounds(body: int, client: int) -> list[tuple[str, tuple[float, ...], tuple[float, ...]]]:
+    """Each link's name and PyBullet bounds (the base's too, as ``""``)."""
+    count = pybullet.getNumJoints(body, physicsClientId=client)
+    names = [""] + [
+        pybullet.getJointInfo(body, i, physicsClientId=client)[12].decode() for i in range(count)
+    ]
+    return [
+        (name, *pybullet.getAABB(body, i, physicsClientId=client))
+        for i, name in zip(range(-1, count), names, strict=True)
+    ]
+
+
+def test_anymal_stands_on_the_floor_and_brings_the_mug_to_the_table(folder: Path) -> None:
+    scene = kitchen_scene(_drafted(ANYMAL, folder))
+    world = scene.world
+    try:
+        client = world.physics.client()
+        robot = world.object(scene.robot).body_id
+        lowest = min(low[2] for _, low, _ in _bounds(robot, client))
+        trunk = pybullet.getBasePositionAndOrientation(robot, physicsClientId=client)[0][2]
+        with simulated_robot(world, scene.robot):
+            target = a.location(on=("kitchen", "table_top"), for_="mug-1")
+            perform(an.action(type="transporting", object="mug", target=target))
+        kitchen = world.object("kitchen").body_id
+        table = next(b for b in _bounds(kitchen, client) if b[0] == "table_top")
+        mug_low, mug_high = pybullet.getAABB(world.object("mug-1").body_id, physicsClientId=client)
+    finally:
+        world.close()
+    assert abs(lowest) <= ON_THE_FLOOR and trunk > 0.4
+    _, low, high = table
+    middle = [(mug_low[k] + mug_high[k]) / 2 for k in range(2)]
+    assert low[0] <= middle[0] <= high[0] and low[1] <= middle[1] <= high[1]
+    assert mug_low[2] == pytest.approx(high[2], abs=0.01)  # standing on it
+
+
+def test_b1_faces_a_counter_no_nearer_than_its_feet_reach(folder: Path) -> None:
+    """Its facing radius covers its legs' reach ahead (PyBullet, the robot turned to the
+    map's x), which lies 0.19 m beyond its trunk's front."""
+    scene = kitchen_scene(_drafted(B1, folder))
+    world = scene.world
+    try:
+        client = world.physics.client()
+        robot = world.object(scene.robot)
+        x, y, z = world.pose(robot).position
+        world.set_pose(robot, Pose((x, y, z)))
+        bounds = _bounds(robot.body_id, client)
+        feet = max(high[0] for name, _, high in bounds if "foot" in name) - x
+        trunk = next(high[0] for name, _, high in bounds if name == "trunk") - x
+        radius = facing_radius(world, robot)
+    finally:
+        world.close()
+    assert feet > trunk + 0.15
+    assert radius == pytest.approx(feet, abs=0.02)
