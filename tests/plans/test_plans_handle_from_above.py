@@ -24,18 +24,12 @@ from robocram.plans.search import search
 from robocram.projection import simulated_robot
 from robocram.scenes import kitchen_scene, tabletop_scene
 from robocram.tf import PoseStamped
+from tests.bullet_links import link_indices
 
 pytestmark = pytest.mark.filterwarnings("ignore::robocram.robots.DescriptionWarning")
 PANDA = Path(__file__).resolve().parents[2] / "examples" / "robots" / "panda.py"
 PANDA_HAND = ("panda_hand", "panda_leftfinger", "panda_rightfinger")
 BODY_RADIUS = 0.044  # [m] the mug's body, its collision margin included; the handle beyond
-
-
-def _links(body: int, client: int) -> dict[str, int]:
-    count = pybullet.getNumJoints(body, physicsClientId=client)
-    return {
-        pybullet.getJointInfo(body, i, physicsClientId=client)[12].decode(): i for i in range(count)
-    }
 
 
 def _in_frame(client: int, body: int, point: tuple[float, ...]) -> tuple[float, ...]:
@@ -59,7 +53,7 @@ def test_the_panda_lifts_the_mug_by_its_handle_from_above() -> None:
         with simulated_robot(world, scene.robot):
             result = pick_up(scene.look_target)
         after = pybullet.getBasePositionAndOrientation(mug, physicsClientId=client)[0][2]
-        links = _links(robot, client)
+        links = link_indices(robot, client)
         sides = {}
         for finger in PANDA_HAND[1:]:
             near = pybullet.getClosestPoints(
@@ -122,7 +116,7 @@ def test_a_mug_held_by_its_handle_keeps_its_pose_in_the_hand_and_is_put_down() -
         start = world.pose(world.robot(scene.robot))
         with simulated_robot(world, scene.robot):
             held = fetch(search("mug"))
-            tool = _links(robot, client)[held.tool_frame]
+            tool = link_indices(robot, client)[held.tool_frame]
             lifted = _mug_in_tool(client, robot, tool, mug)
             back = PoseStamped("map", start.position, start.orientation)
             perform(a.motion(type="going", target=a.location(pose=back)))
@@ -131,7 +125,7 @@ def test_a_mug_held_by_its_handle_keeps_its_pose_in_the_hand_and_is_put_down() -
         upright = pybullet.getBasePositionAndOrientation(mug, physicsClientId=client)[1]
         low, high = pybullet.getAABB(mug, physicsClientId=client)
         kitchen = world.object("kitchen").body_id
-        table_index = _links(kitchen, client)["table_top"]
+        table_index = link_indices(kitchen, client)["table_top"]
         table_low, table_high = pybullet.getAABB(kitchen, table_index, physicsClientId=client)
     finally:
         world.close()
@@ -154,7 +148,7 @@ def test_the_pandas_wrist_camera_rises_over_the_counter_to_find_the_mug() -> Non
     try:
         client = world.physics.client()
         robot = world.object(scene.robot).body_id
-        camera = _links(robot, client)["panda_link7"]
+        camera = link_indices(robot, client)["panda_link7"]
         with simulated_robot(world, scene.robot):
             seen = search("mug")
         state = pybullet.getLinkState(robot, camera, computeForwardKinematics=1,

@@ -27,6 +27,7 @@ from robocram.projection import simulated_robot
 from robocram.robot_check import check_robot, description_from
 from robocram.robots import draft_description, load_description
 from robocram.scenes import kitchen_scene, tabletop_scene
+from tests.bullet_links import link_indices
 
 URDF = Path(__file__).resolve().parents[1] / "data" / "zoo" / "kevin" / "kevin.urdf"
 LIFTED = 0.05  # [m] the mug rises at least this much
@@ -60,13 +61,6 @@ def test_the_check_passes_reaching_with_the_tool_level(module: Path) -> None:
     assert "closed on" in grip.detail
 
 
-def _links(body: int, client: int) -> dict[str, int]:
-    count = pybullet.getNumJoints(body, physicsClientId=client)
-    return {
-        pybullet.getJointInfo(body, i, physicsClientId=client)[12].decode(): i for i in range(count)
-    }
-
-
 def test_the_tabletop_pick_up_lifts_the_mug_from_the_side(module: Path) -> None:
     """The mug rose 5 cm; the hand touches nothing but the mug; its approach (the tool's x,
     read from PyBullet's link state) is level."""
@@ -81,7 +75,7 @@ def test_the_tabletop_pick_up_lifts_the_mug_from_the_side(module: Path) -> None:
             held = pick_up(scene.look_target)
         after = pybullet.getBasePositionAndOrientation(mug, physicsClientId=client)[0][2]
         arm = world.robot(scene.robot).description.arms[held.arm]
-        links = _links(robot, client)
+        links = link_indices(robot, client)
         hand = [links[name] for name in arm.hand_links if name in links]
         others = [o.body_id for o in world.objects() if o.body_id not in (mug, robot)]
         touched = [
@@ -116,7 +110,7 @@ def _finger_gap(value: float) -> float:
     client = pybullet.connect(pybullet.DIRECT)
     try:
         body = pybullet.loadURDF(str(URDF), useFixedBase=True, physicsClientId=client)
-        links = _links(body, client)
+        links = link_indices(body, client)
         count = pybullet.getNumJoints(body, physicsClientId=client)
         joints = {
             pybullet.getJointInfo(body, i, physicsClientId=client)[1].decode(): i
@@ -151,7 +145,7 @@ def test_it_brings_the_kitchen_mug_to_the_table(module: Path) -> None:
             perform(an.action(type="transporting", object="mug", target=target))
         client = world.physics.client()
         kitchen = world.object("kitchen").body_id
-        table = _links(kitchen, client)["table_top"]
+        table = link_indices(kitchen, client)["table_top"]
         low, high = pybullet.getAABB(kitchen, table, physicsClientId=client)
         mug_low, mug_high = pybullet.getAABB(world.object("mug-1").body_id, physicsClientId=client)
     finally:
