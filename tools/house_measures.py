@@ -4,7 +4,10 @@ effect in the same terms.
 
 - ``perform`` definitions (goal 1);
 - functions with a ``robot: str`` parameter, and those also taking ``world`` (goal 0
-  outside the public edges: scenes, the command line, ``simulated_robot``);
+  outside the public edges: scenes, the command line, ``simulated_robot``); a robot's
+  name kept as a label (in an error, a trajectory record, a KB query's atom) is a
+  ``robot_name: str`` parameter, counted apart, and such a function must not look the
+  robot up from it (``robot_name lookups``, goal 0);
 - public methods of the ``World`` facade (goal <= 25; its tables, ``WorldTables``, are
   reached only by the world and its parts);
 - caches kept by hand: bounded caches that evict by hand (``popitem(last=False)``,
@@ -30,7 +33,22 @@ from collections.abc import Iterator
 from pathlib import Path
 
 SRC = Path(__file__).resolve().parents[1] / "src" / "robocram"
-EDGES = ("scenes/", "cli.py", "_commands.py", "projection/simulated_robot.py", "demo.py")
+# Where a robot's name comes in from outside and is looked up once: scenes, the command line,
+# ``simulated_robot``, the demos, a batch's specs (the worker builds its scene from them) and
+# the Prolog door of the grasp predicates (a query's robot arrives as an atom).
+EDGES = (
+    "scenes/",
+    "cli.py",
+    "_commands.py",
+    "projection/simulated_robot.py",
+    "demo.py",
+    "batch/project_variants.py",
+    "batch/worker.py",
+    "grasping/grasp_predicates.py",
+)
+# Calls that find a robot from its name: a function given only a name as a label must not
+# make them (its name says so: ``robot_name``).
+LOOKUPS = {"robot", "object", "of", "robot_description", "load_description", "description"}
 BARE = {"ValueError", "RuntimeError", "TypeError", "KeyError"}
 CACHES = {"cache", "lru_cache", "cached_property"}
 # Module-level memos that keep no world or model state, and why (``file name`` -> reason).
@@ -63,6 +81,31 @@ def _takes_robot_name(fn: ast.FunctionDef | ast.AsyncFunctionDef) -> tuple[bool,
         for a in args
     )
     return robot, robot and "world" in names
+
+
+def _name_lookups(fn: ast.FunctionDef | ast.AsyncFunctionDef) -> list[int]:
+    """Lines where ``fn``, given a ``robot_name``, finds the robot from it."""
+    args = [*fn.args.posonlyargs, *fn.args.args, *fn.args.kwonlyargs]
+    if not any(a.arg == "robot_name" for a in args):
+        return []
+    return [
+        node.lineno
+        for node in ast.walk(fn)
+        if isinstance(node, ast.Call)
+        and _decorator_name(node) in LOOKUPS
+        and any(
+            isinstance(v, ast.Name) and v.id == "robot_name"
+            for v in [*node.args, *(k.value for k in node.keywords)]
+        )
+    ]
+
+
+def _takes_name_label(fn: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
+    args = [*fn.args.posonlyargs, *fn.args.args, *fn.args.kwonlyargs]
+    return any(
+        a.arg == "robot_name" and a.annotation is not None and ast.unparse(a.annotation) == "str"
+        for a in args
+    )
 
 
 def _decorator_name(node: ast.expr) -> str:
@@ -159,6 +202,8 @@ def measure() -> dict[str, list[str]]:
         "perform definitions": [],
         "robot: str parameters": [],
         "robot: str with world": [],
+        "robot_name: str labels": [],
+        "robot_name lookups": [],
         "World public methods": [],
         "hand-written caches": [],
         "state compares": [],
@@ -181,6 +226,11 @@ def measure() -> dict[str, list[str]]:
                 found["robot: str parameters"].append(where)
             if with_world and not edge:
                 found["robot: str with world"].append(where)
+            if _takes_name_label(fn):
+                found["robot_name: str labels"].append(where)
+            found["robot_name lookups"] += [
+                f"{name}:{line} {fn.name}" for line in _name_lookups(fn)
+            ]
             if any(_decorator_name(d) in CACHES for d in fn.decorator_list):
                 found["functools caches"].append(where)
         for node in ast.walk(tree):

@@ -9,6 +9,7 @@ from collections.abc import Iterator
 import pytest
 
 from robocram.plans.fetch import fetch
+from robocram.plans.known_robot import KnownRobot
 from robocram.plans.stands import STAND_TURNS, handle_stands, placing_stands, yaw_of
 from robocram.projection import simulated_robot
 from robocram.scenes import KitchenScene, kitchen_scene
@@ -28,7 +29,7 @@ def test_every_placing_stand_holds_the_object_over_the_spot(pr2_kitchen: Kitchen
     world = pr2_kitchen.world
     with simulated_robot(world, pr2_kitchen.robot):
         fetch("mug")
-        stands = list(placing_stands(pr2_kitchen.robot, "mug-1", SPOT))
+        stands = list(placing_stands(KnownRobot(pr2_kitchen.robot), "mug-1", SPOT))
         assert len(stands) == STAND_TURNS
         yaws = sorted(round(math.degrees(yaw_of(s))) % 360 for s in stands)
         assert len(set(yaws)) == STAND_TURNS  # each a different turn about the spot
@@ -44,7 +45,9 @@ def test_handle_stands_face_the_handle_with_the_shoulder_in_line(
     world = pr2_kitchen.world
     handle = world.link_pose("kitchen", "drawer_unit_drawer_3_handle")
     with simulated_robot(world, pr2_kitchen.robot):
-        stands = list(handle_stands(pr2_kitchen.robot, ["left", "right"], handle, 0.4, True))
+        stands = list(
+            handle_stands(KnownRobot(pr2_kitchen.robot), ["left", "right"], handle, 0.4, True)
+        )
     assert [s.arm for s in stands] == ["left"] * 3 + ["right"] * 3
     for stand in stands:
         assert yaw_of(stand.pose) == pytest.approx(math.pi / 2, abs=1e-6)  # facing north

@@ -24,19 +24,19 @@ class UnknownNameError(KinematicsError, KeyError):
         suggestions: the closest existing names.
     """
 
-    def __init__(self, kind: str, name: str, robot: str, known: Iterable[str]) -> None:
+    def __init__(self, kind: str, name: str, robot_name: str, known: Iterable[str]) -> None:
         pool = list(known)
         close = difflib.get_close_matches(name, pool, n=3, cutoff=0.5)
         if not close:
             close = sorted((c for c in pool if name and name in c), key=len)[:3]
         self.kind = kind
         self.name = name
-        self.robot = robot
+        self.robot = robot_name
         self.suggestions = tuple(close)
         hint = f"; did you mean {' or '.join(repr(c) for c in close)}?" if close else ""
         if not close and len(pool) <= 8:
             hint = f"; known {kind}s: {', '.join(repr(p) for p in sorted(pool)) or 'none'}"
-        super().__init__(f"{kind} {name!r} not in {robot}{hint}")
+        super().__init__(f"{kind} {name!r} not in {robot_name}{hint}")
 
     def __str__(self) -> str:
         return str(self.args[0])
@@ -45,12 +45,12 @@ class UnknownNameError(KinematicsError, KeyError):
 class TargetFrameError(KinematicsError):
     """A target pose is given in a frame that is not part of the robot."""
 
-    def __init__(self, frame: str, robot: str, root: str) -> None:
+    def __init__(self, frame: str, robot_name: str, root: str) -> None:
         self.frame = frame
-        self.robot = robot
+        self.robot = robot_name
         self.root = root
         super().__init__(
-            f"target frame {frame!r} is no frame of {robot}; transform the target into "
+            f"target frame {frame!r} is no frame of {robot_name}; transform the target into "
             f"{root!r} first (robocram.tf.transform_pose(target, {root!r}))"
         )
 

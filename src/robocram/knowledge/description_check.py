@@ -55,18 +55,18 @@ def _states(kb: Answers, p: Predicate[Any], **bound: str) -> bool:
         return False
 
 
-def missing_in_kb(kb: Answers, robot: str) -> list[MissingFact]:
+def missing_in_kb(kb: Answers, robot_name: str) -> list[MissingFact]:
     """The required facts about ``robot`` that the knowledge base ``kb`` does not state."""
     missing = []
-    arms = [row.arm for row in ARM.answers(kb, robot=robot)] if _states(kb, ARM) else []
+    arms = [row.arm for row in ARM.answers(kb, robot=robot_name)] if _states(kb, ARM) else []
     for p in predicates_of(Source.DESCRIPTION):
-        if p.need is Need.ROBOT and not _states(kb, p, robot=robot):
-            missing.append(MissingFact(robot, None, p.indicator, p.meaning))
+        if p.need is Need.ROBOT and not _states(kb, p, robot=robot_name):
+            missing.append(MissingFact(robot_name, None, p.indicator, p.meaning))
         elif p.need is Need.ARM:
             missing += [
-                MissingFact(robot, a, p.indicator, p.meaning)
+                MissingFact(robot_name, a, p.indicator, p.meaning)
                 for a in arms
-                if not _states(kb, p, robot=robot, arm=a)
+                if not _states(kb, p, robot=robot_name, arm=a)
             ]
     return missing
 

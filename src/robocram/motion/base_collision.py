@@ -57,7 +57,7 @@ GROWN_ROUNDING = 1e-9  # [m] kept off the grown footprint's reach for rounding o
 
 
 def _refuse_far_goal(
-    robot: str, start: Pose, goal_xy: tuple[float, float], obstacles: ObstacleBoxes
+    robot_name: str, start: Pose, goal_xy: tuple[float, float], obstacles: ObstacleBoxes
 ) -> None:
     """Refuse a goal outside the :class:`PlanningArea` of the obstacles and the start."""
     here = (float(start.position[0]), float(start.position[1]))
@@ -66,7 +66,7 @@ def _refuse_far_goal(
     if area.contains(x, y):
         return
     raise NavigationGoalOutsideArea(
-        f"{robot}'s goal ({x:.6g}, {y:.6g}) m is outside the area it drives in: {area}",
+        f"{robot_name}'s goal ({x:.6g}, {y:.6g}) m is outside the area it drives in: {area}",
         area=(area.low, area.high),
         margin=area.margin,
     )
@@ -395,11 +395,11 @@ def _named(other: WorldObject, link: str) -> str:
     return f"{other.name}/{link}" if len(other.link_index) > 1 else other.name
 
 
-def _robot_side(side: str, robot: str) -> str:
+def _robot_side(side: str, robot_name: str) -> str:
     """A pair's ``body/link`` as a :class:`ContactAllowance` names it: the robot's link,
     or the held object's name."""
     body, _, link = side.partition("/")
-    return link if body == robot else body
+    return link if body == robot_name else body
 
 
 def _grid(

@@ -78,8 +78,7 @@ def plan_base_path(
     """A checked path of ``robot``'s base from where it stands to ``goal`` (map x, y, yaw).
 
     Args:
-        world: The world; the robot is back at its start when this returns or raises.
-        robot: The robot's object name.
+        robot: The robot (its handle); it is back at its start when this returns or raises.
         goal: Where the base should end; only x, y and the yaw count.
         seed: Seeds OMPL when the direct motion is blocked: same seed, same path.
         budget: Fast checks OMPL may spend (counted, never timed).

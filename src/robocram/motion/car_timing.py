@@ -102,7 +102,7 @@ class CarCurve:
 
 
 def time_car_path(
-    robot: str,
+    robot_name: str,
     poses: Sequence[Sequence[float]] | np.ndarray,
     limits: Sequence[JointLimits],
     *,
@@ -117,9 +117,9 @@ def time_car_path(
     keep = np.concatenate([[True], np.abs(np.diff(points, axis=0)).max(axis=1) > SAME_POINT])
     points = points[keep]
     if len(points) < 3:
-        return time_parameterize(robot, BASE_JOINTS, points, limits, kind="base", period=period)
+        return time_parameterize(robot_name, BASE_JOINTS, points, limits, kind="base", period=period)
     stops, pieces = _pieces(points, limits)
-    return sampled_trajectory(robot, BASE_JOINTS, np.array(stops), pieces, period, "base")
+    return sampled_trajectory(robot_name, BASE_JOINTS, np.array(stops), pieces, period, "base")
 
 
 def _steps(points: FloatArray) -> tuple[BoolArray, FloatArray, FloatArray]:

@@ -66,7 +66,7 @@ class TimedPiece(Protocol):
 
 
 def time_parameterize(
-    robot: str,
+    robot_name: str,
     joint_names: Sequence[str],
     path: Sequence[Sequence[float]] | np.ndarray,
     limits: Sequence[JointLimits],
@@ -78,7 +78,7 @@ def time_parameterize(
     """Time ``path`` (waypoints of ``joint_names``) under ``limits``, on the polyline.
 
     Args:
-        robot: The robot the trajectory is for.
+        robot_name: The robot the trajectory is for (its name, kept in the trajectory).
         joint_names: The joints, in the order of each waypoint's values.
         path: Waypoints [rad | m], already collision-checked along straight lines.
         limits: One :class:`JointLimits` per joint, same order (``joint_limits(desc, names)``).
@@ -108,17 +108,17 @@ def time_parameterize(
         if _length(point - distinct[-1]) > SAME_POINT:
             distinct.append(point)
     if len(distinct) == 1:
-        return JointTrajectory(robot, names, still(robot, names, distinct[0].tolist()).points, kind)
+        return JointTrajectory(robot_name, names, still(robot_name, names, distinct[0].tolist()).points, kind)
     if corner_radii is not None and len(distinct) == len(points) > 2:
         if len(corner_radii) != len(points) - 2:
             raise MotionError(
                 f"{len(corner_radii)} corner radii for {len(points) - 2} inner waypoints"
             )
         stops, pieces = _blended(np.array(distinct), np.array(corner_radii, dtype=float), limits)
-        return sampled_trajectory(robot, names, stops, pieces, period, kind)
+        return sampled_trajectory(robot_name, names, stops, pieces, period, kind)
     corners = _corners(distinct)
     straight = [straight_segment(a, b, limits) for a, b in zip(corners, corners[1:], strict=False)]
-    return sampled_trajectory(robot, names, np.array(corners), straight, period, kind)
+    return sampled_trajectory(robot_name, names, np.array(corners), straight, period, kind)
 
 
 def _blended(
@@ -168,7 +168,7 @@ def _length(vector: FloatArray) -> float:
 
 
 def sampled_trajectory(
-    robot: str,
+    robot_name: str,
     names: tuple[str, ...],
     stops: FloatArray,
     pieces: Sequence[TimedPiece],
@@ -204,7 +204,7 @@ def sampled_trajectory(
         positions[rows] = values[0]
         rates[0][rows] = values[1]
         rates[1][rows] = values[2]
-    return JointTrajectory(robot, names, PointTable(positions, *rates, times), kind)
+    return JointTrajectory(robot_name, names, PointTable(positions, *rates, times), kind)
 
 
 def _check_sample_count(duration: float, period: float, stops: int) -> None:

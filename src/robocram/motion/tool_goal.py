@@ -18,7 +18,7 @@ IK_RANDOM_SEED = 0  # seeds IK's random restarts in every move_tcp without its o
 
 
 def ensure_reached(
-    robot: str, arm: str, reached: Pose, target: object, target_in_map: Pose
+    robot_name: str, arm: str, reached: Pose, target: object, target_in_map: Pose
 ) -> Pose:
     """Return ``reached`` if it is within tolerance of ``target_in_map``, else raise.
 
@@ -31,7 +31,7 @@ def ensure_reached(
     error = (reached.distance_to(target_in_map), reached.angle_to(target_in_map))
     if error[0] > POSITION_TOLERANCE or error[1] > ORIENTATION_TOLERANCE:
         raise ManipulationGoalNotReached(
-            f"{robot}'s {arm} tool frame stopped {error[0]:.3f} m / {error[1]:.3f} rad "
+            f"{robot_name}'s {arm} tool frame stopped {error[0]:.3f} m / {error[1]:.3f} rad "
             "from its target",
             arm=arm,
             target=target,

@@ -20,15 +20,7 @@ from robocram.execution.failures import (
     TorsoPathBlocked,
 )
 from robocram.plans.errors import PlanSetupError
-from robocram.plans.robot_facts import (
-    base_frame,
-    current_robot,
-    neck_links,
-    parking,
-    robot_arms,
-    torso_limit,
-    torso_position,
-)
+from robocram.plans.known_robot import KnownRobot, current_robot
 from robocram.tf import Pose, PoseStamped, transform_pose
 
 # [m] (forward, left) base moves, in its frame where parking first failed, before each
@@ -50,8 +42,8 @@ def park_arms(arm: str | None = None) -> list[str]:
     """Put ``arm`` (default: every arm) into its parking configuration; return the arms."""
     robot = current_robot()
     parked = []
-    for name in robot_arms(robot):
-        pose = parking(robot, name)
+    for name in robot.arms():
+        pose = robot.parking(name)
         if pose is None or (arm is not None and name != arm):
             continue
         if pose.joint_states:
@@ -59,7 +51,7 @@ def park_arms(arm: str | None = None) -> list[str]:
             _park(robot, name, states)
         parked.append(name)
     if arm is not None and not parked:
-        raise PlanSetupError(f"{robot} has no arm {arm!r} with a parking configuration")
+        raise PlanSetupError(f"{robot.name} has no arm {arm!r} with a parking configuration")
     return parked
 
 
@@ -67,7 +59,7 @@ def neck_in_the_way(failure: ManipulationLowLevelFailure) -> bool:
     """Whether ``failure`` names one of the robot's neck links among what the arm hits."""
     if not isinstance(failure, ManipulationPoseUnreachable):
         return False
-    neck = set(neck_links(current_robot()))
+    neck = set(current_robot().neck_links())
     return any(link in neck for pair in failure.colliding_pairs or () for link in pair)
 
 
@@ -80,7 +72,7 @@ def look_ahead() -> bool:
     return True
 
 
-def _park(robot: str, arm: str, states: list[list[object]]) -> None:
+def _park(robot: KnownRobot, arm: str, states: list[list[object]]) -> None:
     """Park ``arm``; when its parking pose would hit the head, still turned down at what the
     robot looked at (an HSR's, with its lift up), look ahead and try again; when it would
     hit what the robot stands at (a table the hand just put something on, a wall beside
@@ -98,7 +90,7 @@ def _park(robot: str, arm: str, states: list[list[object]]) -> None:
             return
         except ManipulationPathBlocked as failure:
             blocked = failure
-    origin = transform_pose(PoseStamped(base_frame(robot)), "map").pose
+    origin = transform_pose(PoseStamped(robot.base_frame()), "map").pose
     for forward, left in PARKING_BACKOFFS:
         moved = origin * Pose((forward, left, 0.0))
         try:
@@ -119,11 +111,11 @@ def move_torso(joint_angle: float | str) -> Any:
         robot = current_robot()
         limit = None
         if joint_angle in ("upper", "lower"):
-            limit = torso_limit(robot, "upper" if joint_angle == "upper" else "lower")
+            limit = robot.torso_limit("upper" if joint_angle == "upper" else "lower")
         if limit is None:
             raise PlanSetupError(
                 f"torso goal {joint_angle!r} is no number and not upper/lower of a torso "
-                f"joint of {robot}"
+                f"joint of {robot.name}"
             )
         joint_angle = limit
     return perform(a.motion(type="moving-torso", joint_angle=joint_angle))
@@ -181,10 +173,10 @@ def look_lowering(target: object) -> Any:
     return look(target)
 
 
-def _heights_below(robot: str) -> list[float]:
+def _heights_below(robot: KnownRobot) -> list[float]:
     """The torso heights [m | rad] of :data:`LOOK_HEIGHTS` below where it is now."""
-    upper, lower = torso_limit(robot, "upper"), torso_limit(robot, "lower")
-    now = torso_position(robot)
+    upper, lower = robot.torso_limit("upper"), robot.torso_limit("lower")
+    now = robot.torso_position()
     if upper is None or lower is None or now is None:
         return []
     heights = [lower + fraction * (upper - lower) for fraction in LOOK_HEIGHTS]
@@ -199,7 +191,7 @@ def look_from_above(target: object, looked: bool = False) -> None:
     ``looked`` already), and after a look that is blocked the torso goes down in steps
     (:data:`LOOK_HEIGHTS` of its travel) until the head can look from there."""
     robot = current_robot()
-    upper = torso_limit(robot, "upper")
+    upper = robot.torso_limit("upper")
     raised = upper is not None
     if upper is not None:
         try:
@@ -208,7 +200,7 @@ def look_from_above(target: object, looked: bool = False) -> None:
             raised = False
     if not raised and looked:
         return
-    lower = torso_limit(robot, "lower")
+    lower = robot.torso_limit("lower")
     heights = [] if upper is None or lower is None or not raised else LOOK_HEIGHTS
     for fraction in (None, *heights):
         if fraction is not None:

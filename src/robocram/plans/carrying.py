@@ -15,7 +15,7 @@ from robocram.knowledge.world_predicates import ATTACHED
 from robocram.logic import current_kb
 from robocram.plans.basic_actions import navigate, park_arms
 from robocram.plans.errors import PlanSetupError
-from robocram.plans.robot_facts import base_frame, current_robot, end_effector_link, grasping_arms
+from robocram.plans.known_robot import KnownRobot, current_robot
 from robocram.plans.stands import map_pose
 from robocram.tf import Pose
 
@@ -28,13 +28,13 @@ class Carried:
     base: Pose
 
 
-def held_objects(robot: str) -> dict[str, str]:
+def held_objects(robot: KnownRobot) -> dict[str, str]:
     """The object each arm of ``robot`` holds now (arms holding nothing left out)."""
     kb = current_kb()
     held = {}
-    for arm in grasping_arms(robot):
-        link = end_effector_link(robot, arm)
-        row = ATTACHED.first(kb, robot=robot, link=link) if link is not None else None
+    for arm in robot.grasping_arms():
+        link = robot.end_effector_link(arm)
+        row = ATTACHED.first(kb, robot=robot.name, link=link) if link is not None else None
         if row is not None:
             held[arm] = row.object
     return held
@@ -55,11 +55,11 @@ def carry(target: object = None, arm: str | None = None) -> Carried:
         held = {arm: held[arm]} if arm in held else {}
     if not held:
         raise PlanSetupError(
-            f"{robot} holds nothing{f' in its {arm} arm' if arm else ''} to carry; pick "
+            f"{robot.name} holds nothing{f' in its {arm} arm' if arm else ''} to carry; pick "
             "something up first (picking-up, fetching)"
         )
     for holding in held:
         park_arms(holding)
     if target is not None:
         navigate(target)
-    return Carried(held, map_pose(base_frame(robot)))
+    return Carried(held, map_pose(robot.base_frame()))

@@ -33,9 +33,9 @@ from robocram.plans.deliver import deliver
 from robocram.plans.environment_links import environment_link_pose
 from robocram.plans.errors import DeliveryExhausted, PlanSetupError
 from robocram.plans.fetch import fetch
+from robocram.plans.known_robot import current_robot
 from robocram.plans.location_poses import location_poses
 from robocram.plans.pick_object import Held
-from robocram.plans.robot_facts import current_robot, robot_arms
 from robocram.plans.search import LOOK_ABOVE, Place, search
 from robocram.plans.setting_table import SPOT_AREA, SPOT_RESOLUTION
 from robocram.plans.stands import map_pose
@@ -94,7 +94,7 @@ def things_on(table: Table) -> dict[str, tuple[str, Point]]:
     for point in look_targets(table):
         with contextlib.suppress(PlanFailure, DesignatorError):
             park_arms()
-            navigate(a.location(visible_for=current_robot(), target=point))
+            navigate(a.location(visible_for=current_robot().name, target=point))
             look_from_above(PoseStamped("map", point))
             looks += 1
             for kind in kinds:
@@ -138,7 +138,7 @@ def _return_one(name: str, kind: str, point: Point, place: Place, done: TableCle
     Raises:
         PlanFailure: fetching failed, or the last hand could not put it back either.
     """
-    arms = robot_arms(current_robot())
+    arms = current_robot().arms()
     tried: list[str] = []
     while True:
         was = map_pose(name)
@@ -160,7 +160,7 @@ def _reaches_back(held: Held, place: Place, kind: str) -> bool:
         with contextlib.suppress(DesignatorError, StopIteration):
             where = next(location_poses(back_to(place, name, spot)))
             target = PoseStamped.from_pose("map", Pose(where.position, heading))
-            reach = a.location(reachable_for=current_robot(), target=target, arm=held.arm)
+            reach = a.location(reachable_for=current_robot().name, target=target, arm=held.arm)
             next(location_poses(reach))
             return True
     return False

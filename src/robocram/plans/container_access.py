@@ -21,7 +21,7 @@ from robocram.plans.basic_actions import navigate, park_arms
 from robocram.plans.containers import Container, close_container, container, open_container
 from robocram.plans.environment_links import environment_link_pose
 from robocram.plans.errors import PlanSetupError
-from robocram.plans.robot_facts import current_robot, robot_arms
+from robocram.plans.known_robot import current_robot
 from robocram.plans.stands import HandleStand, handle_stands, yaw_of
 from robocram.tf import Pose
 
@@ -73,7 +73,7 @@ def opening_stands(part: Container) -> Iterator[HandleStand]:
     robot = current_robot()
     handle = _handle_pose(part)
     drawer = is_drawer(part)
-    return handle_stands(robot, robot_arms(robot), handle, part.opened, drawer, front_in_map(part))
+    return handle_stands(robot, robot.arms(), handle, part.opened, drawer, front_in_map(part))
 
 
 def open_from_front(

@@ -17,7 +17,7 @@ from robocram.execution.failures import EnvironmentManipulationImpossible, PlanF
 from robocram.knowledge.scene_predicates import CONTAINER, CONTAINER_OPENING
 from robocram.logic import current_kb
 from robocram.plans.errors import PlanSetupError
-from robocram.plans.robot_facts import current_robot, robot_arms
+from robocram.plans.known_robot import current_robot
 
 VERBS = {"opening": "open", "closing": "close"}  # an action and what its arm does
 
@@ -52,7 +52,7 @@ def container(name: str) -> Container:
 def move_container(name: str, goal: float, arm: str | None, action: str) -> float:
     """Move the container's joint to ``goal`` with ``arm`` or the first arm that can."""
     part = container(name)
-    arms = [arm] if arm is not None else robot_arms(current_robot())
+    arms = [arm] if arm is not None else current_robot().arms()
     failures: list[PlanFailure] = []
     for choice in arms:
         motion = a.motion(

@@ -28,10 +28,10 @@ from robocram.execution.failures import (
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import look_ahead, navigate, neck_in_the_way
 from robocram.plans.errors import DeliveryExhausted, PlanArgumentError
+from robocram.plans.known_robot import current_robot
 from robocram.plans.location_poses import location_poses, next_pose
 from robocram.plans.pick_object import GRASPING, Held
 from robocram.plans.place_object import held_object, place_object
-from robocram.plans.robot_facts import current_robot
 from robocram.plans.stands import map_pose, placing_stands
 from robocram.tf import Pose, PoseStamped
 
@@ -95,7 +95,8 @@ def _stands(held: Held, spot: Pose, arm: str | None, reach_stands: bool) -> Iter
     target = PoseStamped.from_pose("map", Pose(spot.position, heading))
     with contextlib.suppress(DesignatorError):  # no stand reaches it: the spot fails
         yield from itertools.islice(
-            location_poses(a.location(reachable_for=robot, target=target, **keys)), REACH_STANDS
+            location_poses(a.location(reachable_for=robot.name, target=target, **keys)),
+            REACH_STANDS,
         )
 
 

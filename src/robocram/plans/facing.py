@@ -12,8 +12,8 @@ import math
 
 from robocram.plans.basic_actions import navigate
 from robocram.plans.errors import PlanSetupError
+from robocram.plans.known_robot import current_robot
 from robocram.plans.location_poses import as_map_pose, location_poses
-from robocram.plans.robot_facts import base_frame, current_robot
 from robocram.plans.stands import map_pose, planar_pose
 from robocram.tf import Pose, PoseStamped
 
@@ -34,7 +34,7 @@ def face(target: object) -> Pose:
         NavigationPoseUnreachable: the turn would collide.
         PlanSetupError: the target lies on the base's own axis.
     """
-    here = map_pose(base_frame(current_robot()))
+    here = map_pose(current_robot().base_frame())
     x, y, _ = here.position
     tx, ty, _ = target_point(target)
     if math.hypot(tx - x, ty - y) < CLOSE:

@@ -23,9 +23,9 @@ from robocram.plans.basic_actions import detect, look_lowering, navigate, park_a
 from robocram.plans.container_access import OpenedContainer, is_drawer
 from robocram.plans.culprits import blamed, culprit_clause
 from robocram.plans.errors import FetchExhausted, PlanArgumentError
+from robocram.plans.known_robot import KnownRobot, current_robot
 from robocram.plans.location_poses import location_poses, next_pose
 from robocram.plans.pick_object import Held, pick_up_object
-from robocram.plans.robot_facts import base_frame, current_robot, robot_arms
 from robocram.plans.stands import (
     REACH_DISTANCES,
     front_stands,
@@ -71,7 +71,7 @@ def _drawer_of(opened: OpenedContainer | None) -> tuple[str, str] | None:
     return opened.container.environment, opened.container.link
 
 
-def square_up(robot: str) -> None:
+def square_up(robot: KnownRobot) -> None:
     """Turn the base in place to the nearest quarter turn (a costmaps workaround).
 
     The occupancy layer measures the base's footprint from world-aligned bounds, which
@@ -79,7 +79,7 @@ def square_up(robot: str) -> None:
     ``reachable_for`` costmap keeps the cells near a counter. A turn that would collide is
     skipped; the stand is then resolved from where the robot stands.
     """
-    here = map_pose(base_frame(robot))
+    here = map_pose(robot.base_frame())
     yaw = yaw_of(here)
     squared = round(yaw / (math.pi / 2)) * (math.pi / 2)
     if abs(squared - yaw) < 1e-3:
@@ -99,13 +99,13 @@ def _stands(
     costmap keeps a whole base radius off its open drawer), then ``reachable_for``'s."""
     robot = current_robot()
     if opened is not None:
-        arms = [arm] if arm is not None else robot_arms(robot)
+        arms = [arm] if arm is not None else robot.arms()
         out = yaw_of(opened.stand.pose) + math.pi  # the container's front faces the stand
         for stand in front_stands(robot, arms, where.pose, out, REACH_DISTANCES):
             yield stand.pose, stand.arm
     square_up(robot)
     keys: dict[str, Any] = {"arm": arm} if arm is not None else {}
-    poses = location_poses(a.location(reachable_for=robot, object=seen.get("name"), **keys))
+    poses = location_poses(a.location(reachable_for=robot.name, object=seen.get("name"), **keys))
     while (pose := next_pose(poses, causes)) is not None:
         yield pose, arm
 

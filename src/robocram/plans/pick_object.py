@@ -33,13 +33,7 @@ from robocram.logic import Term, UnknownPredicateError, current_kb
 from robocram.plans.basic_actions import look_ahead, neck_in_the_way
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.grasp_failures import ObjectUngraspable, PickUpFailed, PickUpUnreachable
-from robocram.plans.robot_facts import (
-    current_robot,
-    grasping_arms,
-    gripper_links,
-    limb_links,
-    tool_frame,
-)
+from robocram.plans.known_robot import KnownRobot, current_robot
 from robocram.tf import Pose, PoseStamped, TfError, transform_pose
 
 CENTRINGS = 2  # a grip meeting the object on one side moves the hand this often at most
@@ -89,24 +83,26 @@ def object_name(obj: ObjectDesignator | str) -> str:
     return str(name)
 
 
-def arms_nearest_first(robot: str, target: Pose | None, arm: str | None) -> list[str]:
+def arms_nearest_first(robot: KnownRobot, target: Pose | None, arm: str | None) -> list[str]:
     """``[arm]``, or the robot's arms with a gripper, their tool frames nearest first."""
     if arm is not None:
         return [arm]
-    arms = grasping_arms(robot)
+    arms = robot.grasping_arms()
     if not arms:
-        raise PlanSetupError(f"{robot} has no arm with a gripper (grasping_arm/2)")
+        raise PlanSetupError(f"{robot.name} has no arm with a gripper (grasping_arm/2)")
     if target is None:
         return arms
 
     def distance(choice: str) -> float:
-        tool = transform_pose(PoseStamped(tool_frame(robot, choice)), "map").pose
+        tool = transform_pose(PoseStamped(robot.tool_frame(choice)), "map").pose
         return tool.distance_to(target)
 
     return sorted(arms, key=distance)
 
 
-def grasp_choices(robot: str, spec: object, arm: str, grasp: str | None) -> list[ObjectGrasp]:
+def grasp_choices(
+    robot: KnownRobot, spec: object, arm: str, grasp: str | None
+) -> list[ObjectGrasp]:
     """The KB's grasps of ``name`` by ``arm`` (only ``grasp`` if given), best first.
 
     Raises:
@@ -115,12 +111,12 @@ def grasp_choices(robot: str, spec: object, arm: str, grasp: str | None) -> list
     kb = current_kb()
     name = str(spec.args[0]) if isinstance(spec, Term) else str(spec)
     named = {} if grasp is None else {"grasp": grasp}
-    found = list(OBJECT_GRASP.answers(kb, object=spec, robot=robot, arm=arm, **named))
+    found = list(OBJECT_GRASP.answers(kb, object=spec, robot=robot.name, arm=arm, **named))
     if not found:
-        refusal = OBJECT_UNGRASPABLE.first(kb, object=spec, robot=robot, arm=arm)
+        refusal = OBJECT_UNGRASPABLE.first(kb, object=spec, robot=robot.name, arm=arm)
         if refusal is not None:
             raise ObjectUngraspable(
-                f"no grasp of {name!r} fits the {arm} hand of {robot}: it opens "
+                f"no grasp of {name!r} fits the {arm} hand of {robot.name}: it opens "
                 f"{refusal.hand_width:.3f} m, the narrowest grasp needs "
                 f"{refusal.needed_width:.3f} m",
                 object_name=name,
@@ -136,7 +132,7 @@ def _move(arm: str, pose: PoseStamped, **mode: str) -> None:
 
 
 def _lifted_out(
-    robot: str, name: str, arm: str, choice: ObjectGrasp, out_of: tuple[str, str]
+    robot: KnownRobot, name: str, arm: str, choice: ObjectGrasp, out_of: tuple[str, str]
 ) -> ObjectGrasp:
     """``choice`` with its lift raised until ``name`` clears the top of ``out_of``
     (environment, link), checked by IK from where the robot stands. A KB without the
@@ -154,9 +150,9 @@ def _lifted_out(
     rise = 0.0 if answer is None else answer.rise
     x, y, z = choice.lift.position
     lift = replace(choice.lift, position=(x, y, max(z, choice.grasp_pose.position[2] + rise)))
-    if not ARM_POSE_REACHABLE.holds(kb, robot=robot, arm=arm, pose=lift):
+    if not ARM_POSE_REACHABLE.holds(kb, robot=robot.name, arm=arm, pose=lift):
         raise ManipulationPoseUnreachable(
-            f"{robot}'s {arm} arm cannot lift {name!r} out of {link!r} from here: the tool "
+            f"{robot.name}'s {arm} arm cannot lift {name!r} out of {link!r} from here: the tool "
             f"does not reach {lift.position[2]:.3f} m over the grasp; stand elsewhere",
             target=lift,
         )
@@ -164,7 +160,7 @@ def _lifted_out(
 
 
 def _try_grasp(
-    robot: str,
+    robot: KnownRobot,
     name: str,
     arm: str,
     choice: ObjectGrasp,
@@ -176,7 +172,7 @@ def _try_grasp(
     choice = _gripped(arm, name, choice)
     if lift:
         _lifted(arm, choice.lift, name)
-    frame = tool_frame(robot, arm)
+    frame = robot.tool_frame(arm)
     if object_in_map is None:
         object_in_map = transform_pose(PoseStamped(name), "map").pose
     held = choice.grasp_pose.pose.inverse() * object_in_map  # as gripped: the grasp keeps it
@@ -203,7 +199,7 @@ def _fingers_meet_body(arm: str, blocked: GripperPathBlocked) -> bool:
     """Whether every pair ``blocked`` names is a finger of ``arm`` and a link of the
     robot's body (no arm's, hand's or neck's: those and the world a move may not clear)."""
     robot = current_robot()
-    fingers, limbs = gripper_links(robot, arm), limb_links(robot)
+    fingers, limbs = robot.gripper_links(arm), robot.limb_links()
     pairs = blocked.colliding_pairs or ()
     return bool(pairs) and all(
         other in fingers and link not in limbs for link, other in pairs

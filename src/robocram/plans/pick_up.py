@@ -15,8 +15,8 @@ from robocram.designators import ObjectDesignator, a, an
 from robocram.execution import perform
 from robocram.execution.failures import PerceptionBlockedByRobot
 from robocram.plans.basic_actions import look_from_above, park_arms
+from robocram.plans.known_robot import current_robot
 from robocram.plans.pick_object import Held, pick_up_object
-from robocram.plans.robot_facts import current_robot, grasping_arms
 from robocram.tf import PoseStamped
 
 
@@ -55,7 +55,7 @@ def _detected(object_type: str) -> ObjectDesignator:
     except PerceptionBlockedByRobot as blocked:
         if blocked.arm_parked is None:  # a body link: no gripper moves it
             raise
-        for arm in grasping_arms(current_robot()):
+        for arm in current_robot().grasping_arms():
             perform(a.motion(type="opening", gripper=arm))
         found = perform(a.motion(type="detecting", object=wanted))
     return found

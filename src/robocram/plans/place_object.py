@@ -24,8 +24,8 @@ from robocram.logic import UnknownPredicateError, current_kb
 from robocram.plans.basic_actions import park_arms
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.grasp_failures import PlacingFailed
+from robocram.plans.known_robot import KnownRobot, current_robot
 from robocram.plans.pick_object import GRASPING, Held, object_name
-from robocram.plans.robot_facts import current_robot, end_effector_link, grasping_arms, tool_frame
 from robocram.tf import Pose, PoseStamped, transform_pose
 from robocram.tf import quaternion as quat
 
@@ -45,16 +45,16 @@ def held_object(obj: Held | ObjectDesignator | str, arm: str | None) -> Held:
         return obj
     robot, name = current_robot(), object_name(obj)
     kb = current_kb()
-    for choice in grasping_arms(robot):
-        link = end_effector_link(robot, choice)
+    for choice in robot.grasping_arms():
+        link = robot.end_effector_link(choice)
         if link is None or (arm is not None and choice != arm):
             continue
-        if ATTACHED.holds(kb, object=name, robot=robot, link=link):
-            frame = tool_frame(robot, choice)
+        if ATTACHED.holds(kb, object=name, robot=robot.name, link=link):
+            frame = robot.tool_frame(choice)
             here = transform_pose(PoseStamped(frame), "map")
             held = transform_pose(PoseStamped(name), frame).pose
             return Held(choice, "unknown", name, frame, here, here, held)
-    raise PlanSetupError(f"{robot} holds no {name!r}" + (f" in its {arm} hand" if arm else ""))
+    raise PlanSetupError(f"{robot.name} holds no {name!r}" + (f" in its {arm} hand" if arm else ""))
 
 
 def _shifted(pose: Pose, dx: float, dy: float, dz: float) -> Pose:
@@ -85,9 +85,9 @@ def _move(arm: str, pose: Pose, **mode: str) -> None:
     perform(a.motion(type="moving-tcp", arm=arm, target=a.location(pose=target), **mode))
 
 
-def _retreat(robot: str, held: Held) -> None:
+def _retreat(robot: KnownRobot, held: Held) -> None:
     """Back the open hand off towards the wrist; park the arm if it cannot."""
-    wrist_link = end_effector_link(robot, held.arm)
+    wrist_link = robot.end_effector_link(held.arm)
     tool = transform_pose(PoseStamped(held.tool_frame), "map").pose
     back = (0.0, 0.0, 1.0)
     if wrist_link is not None:
@@ -129,7 +129,7 @@ def _settled(name: str, put: Pose, seconds: float) -> str | None:
     return None
 
 
-def _put_down(robot: str, held: Held, put: Pose) -> None:
+def _put_down(robot: KnownRobot, held: Held, put: Pose) -> None:
     tool = put * held.object_in_tool.inverse()
     for height in CARRY_HEIGHTS:
         try:
@@ -186,7 +186,7 @@ def place_object(
             )
         return transform_pose(PoseStamped(held.object_name), "map")
     raise PlacingFailed(
-        f"{robot} could not put {held.object_name!r} down at {target} in any of "
+        f"{robot.name} could not put {held.object_name!r} down at {target} in any of "
         f"{len(TURNS)} turns (causes: "
         + ", ".join(sorted({type(c).__name__ for c in causes}))
         + ")",

@@ -33,7 +33,7 @@ from robocram.plans.container_access import OpenedContainer, is_container, open_
 from robocram.plans.culprits import blamed, culprit_clause
 from robocram.plans.environment_links import environment_link_pose
 from robocram.plans.errors import SearchExhausted
-from robocram.plans.robot_facts import current_robot
+from robocram.plans.known_robot import KnownRobot, current_robot
 from robocram.tf import PoseStamped
 
 POSES_PER_PLACE = 2  # CRAM retries a search location a couple of times
@@ -74,7 +74,7 @@ def place_point(place: Place) -> PoseStamped:
 
 
 def _look_from_places(
-    robot: str,
+    robot: KnownRobot,
     target: PoseStamped,
     wanted: ObjectDesignator,
     poses: int,
@@ -87,7 +87,7 @@ def _look_from_places(
     in it; from right beside a cabinet a PR2's camera, higher, missed a bowl under the
     counter top's edge, so these come after the others)."""
     keys = {"near": (near.environment, near.link)} if near is not None else {}
-    stand = a.location(visible_for=robot, target=target.position, **keys)
+    stand = a.location(visible_for=robot.name, target=target.position, **keys)
     for _ in range(poses):
         try:
             perform(a.motion(type="going", target=stand))

@@ -20,7 +20,7 @@ from robocram.execution.failures import PlanFailure
 from robocram.plans.activity_failures import ActivityIncomplete
 from robocram.plans.basic_actions import park_arms
 from robocram.plans.bringing import Visit, usual_place
-from robocram.plans.robot_facts import current_robot, grasping_arms
+from robocram.plans.known_robot import current_robot
 from robocram.plans.search import Place
 from robocram.plans.table_arrangement import (
     SHARED,
@@ -103,7 +103,7 @@ def set_table(
     wanted = spots(chosen, people, setting, shared)
     done = TableSetting(chosen)
     failures: list[Exception] = []
-    pairs = two_arms and len(grasping_arms(current_robot())) >= 2
+    pairs = two_arms and len(current_robot().grasping_arms()) >= 2
     for place, group in by_place(wanted):
         with sub_task(f"setting from {place.link if place else 'anywhere'}"):
             failures += _serve(place, group, done, pairs)

@@ -18,7 +18,7 @@ import math
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 
-from robocram.plans.robot_facts import base_frame, first_arm_link, working_yaw
+from robocram.plans.known_robot import KnownRobot
 from robocram.tf import Pose, PoseStamped, transform_pose
 from robocram.tf import quaternion as quat
 
@@ -52,9 +52,9 @@ def _turns() -> list[float]:
     return turns
 
 
-def placing_stands(robot: str, held_object: str, spot: Pose) -> Iterator[Pose]:
+def placing_stands(robot: KnownRobot, held_object: str, spot: Pose) -> Iterator[Pose]:
     """Base poses (map) that hold ``held_object`` over ``spot`` as the arm holds it now."""
-    base = base_frame(robot)
+    base = robot.base_frame()
     held_in_base = transform_pose(PoseStamped(held_object), base).pose.position
     here = map_pose(base).position
     sx, sy = spot.position[0], spot.position[1]
@@ -77,19 +77,19 @@ class HandleStand:
     arm: str
 
 
-def shoulder_offset(robot: str, arm: str) -> float:
+def shoulder_offset(robot: KnownRobot, arm: str) -> float:
     """Sideways offset [m] of ``arm``'s first link from the base (its reaching line),
     across the arm's working direction (the base's y for an arm working ahead)."""
-    shoulder = first_arm_link(robot, arm)
+    shoulder = robot.first_arm_link(arm)
     if shoulder is None:
         return 0.0
-    x, y, _ = transform_pose(PoseStamped(shoulder), base_frame(robot)).pose.position
-    turn = working_yaw(robot, arm)
+    x, y, _ = transform_pose(PoseStamped(shoulder), robot.base_frame()).pose.position
+    turn = robot.working_yaw(arm)
     return -math.sin(turn) * x + math.cos(turn) * y
 
 
 def handle_stands(
-    robot: str,
+    robot: KnownRobot,
     arms: list[str],
     handle_pose: Pose,
     opening: float,
@@ -107,7 +107,7 @@ def handle_stands(
 
 
 def front_stands(
-    robot: str, arms: list[str], point: Pose, out_yaw: float, distances: Iterable[float]
+    robot: KnownRobot, arms: list[str], point: Pose, out_yaw: float, distances: Iterable[float]
 ) -> Iterator[HandleStand]:
     """Stands facing ``point`` from the direction ``out_yaw`` [rad] (a unit's front), each
     arm's shoulder in line with it, ``distances`` [m] away, per arm in order."""
@@ -118,7 +118,7 @@ def front_stands(
     distances = list(distances)
     for arm in arms:
         side = shoulder_offset(robot, arm)
-        yaw = facing - working_yaw(robot, arm)
+        yaw = facing - robot.working_yaw(arm)
         for distance in distances:
             x = hx + out[0] * distance - left[0] * side
             y = hy + out[1] * distance - left[1] * side

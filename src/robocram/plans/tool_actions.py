@@ -17,7 +17,7 @@ from robocram.execution import perform
 from robocram.knowledge.world_predicates import OBJECT_POSE
 from robocram.logic import current_kb
 from robocram.plans.errors import PlanArgumentError, PlanSetupError
-from robocram.plans.robot_facts import current_robot
+from robocram.plans.known_robot import current_robot
 from robocram.plans.tool_coverage import covered_share
 from robocram.plans.tool_objects import (
     WALL,
@@ -73,7 +73,7 @@ def pour(source: str, target: str, amount: float, arm: str | None = None) -> Pou
     arm = holding_arm("pouring", source, arm)
     ensure_uncovered("pouring", target)
     src, tgt = object_box("pouring", source), object_box("pouring", target)
-    robot = OBJECT_POSE.first(current_kb(), object=current_robot())
+    robot = OBJECT_POSE.first(current_kb(), object=current_robot().name)
     base = robot.pose.position if robot is not None else (0.0, 0.0, 0.0)
     reach = _unit((src.pose.position[0] - base[0], src.pose.position[1] - base[1], 0.0))
     toward = (-reach[1], reach[0], 0.0)  # the lip on the side, across the hand's reach

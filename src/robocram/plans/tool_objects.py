@@ -9,7 +9,7 @@ from robocram.knowledge import grasp_predicates as gp
 from robocram.knowledge import robot_predicates as rp
 from robocram.knowledge.world_predicates import ATTACHED, OBJECT_POSE, SUPPORTED_BY
 from robocram.logic import current_kb
-from robocram.plans.robot_facts import current_robot, robot_arms
+from robocram.plans.known_robot import current_robot
 from robocram.plans.tool_failures import TargetCovered, ToolNotHeld, UnknownToolObject
 from robocram.tf import Pose, Vector3
 
@@ -79,16 +79,16 @@ def holding_arm(action: str, tool: str, arm: str | None = None) -> str:
     """
     kb = current_kb()
     robot = current_robot()
-    held = ATTACHED.first(kb, robot=robot, object=tool)
-    for candidate in robot_arms(robot) if arm is None else [arm]:
-        link = rp.END_EFFECTOR_LINK.first(kb, robot=robot, arm=candidate)
+    held = ATTACHED.first(kb, robot=robot.name, object=tool)
+    for candidate in robot.arms() if arm is None else [arm]:
+        link = rp.END_EFFECTOR_LINK.first(kb, robot=robot.name, arm=candidate)
         if held is not None and link is not None and link.link == held.link:
             return candidate
     raise ToolNotHeld(
-        f"{action}: {robot}'s {arm or 'hands'} do not hold {tool!r}",
+        f"{action}: {robot.name}'s {arm or 'hands'} do not hold {tool!r}",
         action=action,
         tool=tool,
-        robot=robot,
+        robot=robot.name,
     )
 
 

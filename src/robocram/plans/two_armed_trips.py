@@ -28,8 +28,8 @@ from robocram.plans.basic_actions import navigate, park_arms
 from robocram.plans.bringing import Visit, find, find_in_place, wanted_object
 from robocram.plans.deliver import deliver
 from robocram.plans.fetch import fetch
+from robocram.plans.known_robot import current_robot
 from robocram.plans.pick_object import GRASPING, Held
-from robocram.plans.robot_facts import base_frame, current_robot, grasping_arms
 from robocram.plans.stands import map_pose, planar_pose, yaw_of
 from robocram.plans.table_arrangement import Spot
 from robocram.plans.table_trips import TableSetting, bring_one, spot_location
@@ -41,13 +41,13 @@ BACK_OFF = 0.25  # [m] the base backs off this far when the arm cannot come out 
 
 def other_arm(arm: str) -> str | None:
     """The current robot's other arm with a gripper than ``arm``, if it has one."""
-    return next((other for other in grasping_arms(current_robot()) if other != arm), None)
+    return next((other for other in current_robot().grasping_arms() if other != arm), None)
 
 
 def _tucked(held: Held) -> Pose:
     """Put the arm holding ``held`` into its carrying pose; its tool pose before, in the
     base frame (where the arm holds it out again at the table)."""
-    out = transform_pose(held.lifted, base_frame(current_robot())).pose
+    out = transform_pose(held.lifted, current_robot().base_frame()).pose
     park_arms(held.arm)
     return out
 
@@ -59,7 +59,7 @@ def _hold_out(held: Held, out: Pose, spot: Spot) -> None:
     location keeps their half diagonal free round it), else as ``out`` turns it; backs
     the base off once if the arm cannot come out where it stands."""
     for attempt in range(2):
-        base = map_pose(base_frame(current_robot()))
+        base = map_pose(current_robot().base_frame())
         tool = base * out
         turns = (held.lifted.pose.orientation, tool.orientation)
         for index, turn in enumerate(turns):
@@ -97,7 +97,7 @@ def _put(held: Held, spot: Spot, done: TableSetting) -> None:
     After the stands that hold it over the spot as the arm holds it now come those from
     which the arm reaches the spot: a thing picked up close to the body (a cup from a
     drawer's back) would put the other shoulder into the table."""
-    where = spot_location(done.table, spot, held.object_name, see_through=(current_robot(),))
+    where = spot_location(done.table, spot, held.object_name, see_through=(current_robot().name,))
     deliver(held, where, held.arm, log=done.log, reach_stands=True)
     done.placed[held.object_name] = spot
 

@@ -38,9 +38,9 @@ MIN_OPENING = 1e-4  # [m] a smaller growth of the finger gap means no opening wa
 MIN_CLOSED_GAP = 0.03  # [m] closed fingers this far apart are stopped by their joints' limits
 
 
-def derive_arm(robot: str, arm: ArmDescription, model: RobotModel) -> ArmDescription:
+def derive_arm(robot_name: str, arm: ArmDescription, model: RobotModel) -> ArmDescription:
     """``arm`` with its gripper, fingers and hand filled in from the model where empty."""
-    gripper = _gripper(robot, arm, model)
+    gripper = _gripper(robot_name, arm, model)
     hand = arm.hand_links or subtree_links(model, arm.end_effector_link)
     if gripper is None:
         return replace(arm, hand_links=hand)
@@ -64,7 +64,7 @@ def derive_arm(robot: str, arm: ArmDescription, model: RobotModel) -> ArmDescrip
     )
 
 
-def _gripper(robot: str, arm: ArmDescription, model: RobotModel) -> GripperDescription | None:
+def _gripper(robot_name: str, arm: ArmDescription, model: RobotModel) -> GripperDescription | None:
     """The arm's gripper as given, or the parallel default from its gripper joints' limits."""
     gripper = arm.gripper
     if gripper is not None and gripper.curled_hand and not gripper.joints:
@@ -73,16 +73,16 @@ def _gripper(robot: str, arm: ArmDescription, model: RobotModel) -> GripperDescr
         if not arm.gripper_joints:
             return None
         gripper = GripperDescription(
-            tuple(_from_limits(robot, arm.name, model, j) for j in arm.gripper_joints)
+            tuple(_from_limits(robot_name, arm.name, model, j) for j in arm.gripper_joints)
         )
     elif arm.gripper_joints and tuple(arm.gripper_joints) != gripper.names:
         raise GripperDescriptionError(
-            robot,
+            robot_name,
             arm.name,
             f"gripper_joints {arm.gripper_joints} differ from the gripper's {gripper.names}",
             "give only ArmDescription.gripper (gripper_joints follow from it)",
         )
-    _check_gripper(robot, arm.name, model, gripper)
+    _check_gripper(robot_name, arm.name, model, gripper)
     return gripper
 
 
@@ -106,11 +106,11 @@ def curling_joints(model: RobotModel, wrist: str) -> tuple[GripperJoint, ...]:
     return tuple(found)
 
 
-def _from_limits(robot: str, arm: str, model: RobotModel, name: str) -> GripperJoint:
+def _from_limits(robot_name: str, arm: str, model: RobotModel, name: str) -> GripperJoint:
     limits = finite_limits(model.joints[name])
     if limits is None:
         raise GripperDescriptionError(
-            robot,
+            robot_name,
             arm,
             f"joint {name!r} has no finite limits to open and close between",
             f"give ArmDescription.gripper=GripperDescription((GripperJoint({name!r}, "
@@ -119,11 +119,11 @@ def _from_limits(robot: str, arm: str, model: RobotModel, name: str) -> GripperJ
     return GripperJoint(name, open=limits[1], closed=limits[0])
 
 
-def _check_gripper(robot: str, arm: str, model: RobotModel, gripper: GripperDescription) -> None:
+def _check_gripper(robot_name: str, arm: str, model: RobotModel, gripper: GripperDescription) -> None:
     if gripper.is_suction:
         if gripper.joints or gripper.max_opening is not None:
             raise GripperDescriptionError(
-                robot,
+                robot_name,
                 arm,
                 "a suction gripper has no joints and no opening",
                 "give GripperDescription.suction() alone, or a gripper of fingers",
@@ -131,7 +131,7 @@ def _check_gripper(robot: str, arm: str, model: RobotModel, gripper: GripperDesc
         return
     if not gripper.joints and gripper.curled_hand:
         raise GripperDescriptionError(
-            robot,
+            robot_name,
             arm,
             "GripperDescription.curling() found no joint below the wrist that is straight "
             "at 0 and curls to a positive upper limit",
@@ -139,22 +139,22 @@ def _check_gripper(robot: str, arm: str, model: RobotModel, gripper: GripperDesc
         )
     if not gripper.joints:
         raise GripperDescriptionError(
-            robot, arm, "the gripper has no joints", "list at least one GripperJoint"
+            robot_name, arm, "the gripper has no joints", "list at least one GripperJoint"
         )
     for joint in gripper.joints:
         if joint.open == joint.closed:
             raise GripperDescriptionError(
-                robot,
+                robot_name,
                 arm,
                 f"joint {joint.name!r} is open and closed at the same value {joint.open}",
                 "give different open and closed values (within the joint's limits)",
             )
-        check_values(robot, model, {joint.name: joint.open})
-        check_values(robot, model, {joint.name: joint.closed})
+        check_values(robot_name, model, {joint.name: joint.open})
+        check_values(robot_name, model, {joint.name: joint.closed})
     opening = gripper.max_opening
     if opening is not None and not (math.isfinite(opening) and opening > 0):
         raise GripperDescriptionError(
-            robot,
+            robot_name,
             arm,
             f"max_opening {opening} is no positive distance",
             "give the widest gap between the fingers in metres, or None to derive it",

@@ -128,7 +128,7 @@ def _replace_arm(
     return replace(arm, joints=joints, links=links)
 
 
-def check_values(robot: str, model: RobotModel, states: Mapping[str, float]) -> None:
+def check_values(robot_name: str, model: RobotModel, states: Mapping[str, float]) -> None:
     """Raise :class:`JointValueError` for a joint value that is not finite or lies outside
     the joint's limits (a continuous joint's included: inf is no angle)."""
     for name, value in states.items():
@@ -136,7 +136,7 @@ def check_values(robot: str, model: RobotModel, states: Mapping[str, float]) -> 
         lower = -math.inf if joint.lower is None else joint.lower
         upper = math.inf if joint.upper is None else joint.upper
         if not (math.isfinite(value) and lower - _LIMIT_SLACK <= value <= upper + _LIMIT_SLACK):
-            raise JointValueError(robot, name, value, lower, upper)
+            raise JointValueError(robot_name, name, value, lower, upper)
 
 
 def semantic_findings(desc: LoadedDescription) -> tuple[Finding, ...]:

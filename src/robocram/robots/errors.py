@@ -90,25 +90,25 @@ class DescriptionCheckError(DescriptionError):
     the semantic checks) for values.
     """
 
-    def __init__(self, robot: str, model_name: str, problems: Iterable[Problem]) -> None:
-        self.robot = robot
+    def __init__(self, robot_name: str, model_name: str, problems: Iterable[Problem]) -> None:
+        self.robot = robot_name
         self.model_name = model_name
         self.problems = tuple(problems)
         lines = [p.message(model_name) for p in self.problems]
-        super().__init__(f"description {robot!r} fails its check: " + "; ".join(lines))
+        super().__init__(f"description {robot_name!r} fails its check: " + "; ".join(lines))
 
 
 class JointValueError(DescriptionError):
     """A joint value given in a description lies outside the joint's limits."""
 
-    def __init__(self, robot: str, joint: str, value: float, lower: float, upper: float) -> None:
-        self.robot = robot
+    def __init__(self, robot_name: str, joint: str, value: float, lower: float, upper: float) -> None:
+        self.robot = robot_name
         self.joint = joint
         self.value = value
         self.lower = lower
         self.upper = upper
         super().__init__(
-            f"{robot}: value {value} for joint {joint!r} is outside its limits "
+            f"{robot_name}: value {value} for joint {joint!r} is outside its limits "
             f"[{lower}, {upper}]; pick a value within them"
         )
 
@@ -116,14 +116,14 @@ class JointValueError(DescriptionError):
 class LimitValueError(DescriptionError):
     """A limit a description gives (an acceleration limit) is no usable rate."""
 
-    def __init__(self, robot: str, joint: str, what: str, value: float, bound: float) -> None:
-        self.robot = robot
+    def __init__(self, robot_name: str, joint: str, what: str, value: float, bound: float) -> None:
+        self.robot = robot_name
         self.joint = joint
         self.what = what
         self.value = value
         self.bound = bound
         super().__init__(
-            f"{robot}: {what} {value} for joint {joint!r} is not a finite number of at least "
+            f"{robot_name}: {what} {value} for joint {joint!r} is not a finite number of at least "
             f"{bound:g} (MIN_RATE_LIMIT); give the joint's real limit"
         )
 
@@ -150,11 +150,11 @@ class MissingMeshWarning(UserWarning):
 class GripperDescriptionError(DescriptionError):
     """A gripper description that cannot open or close: a value that makes no sense."""
 
-    def __init__(self, robot: str, arm: str, problem: str, fix: str) -> None:
-        self.robot = robot
+    def __init__(self, robot_name: str, arm: str, problem: str, fix: str) -> None:
+        self.robot = robot_name
         self.arm = arm
         self.problem = problem
-        super().__init__(f"{robot}: gripper of arm {arm!r}: {problem}; {fix}")
+        super().__init__(f"{robot_name}: gripper of arm {arm!r}: {problem}; {fix}")
 
 
 class DescriptionUsageError(DescriptionError, TypeError):

@@ -35,10 +35,10 @@ class Finding:
         return f"{self.subject}: {self.problem}; {self.fix}"
 
 
-def warn(robot: str, findings: Iterable[Finding]) -> None:
+def warn(robot_name: str, findings: Iterable[Finding]) -> None:
     """Log and issue every warning among ``findings``."""
     for finding in findings:
         if finding.severity == "warning":
-            text = f"robot {robot!r}: {finding.message()}"
+            text = f"robot {robot_name!r}: {finding.message()}"
             LOG.warning(text)
             warnings.warn(text, DescriptionWarning, stacklevel=3)

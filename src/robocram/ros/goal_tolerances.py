@@ -53,20 +53,20 @@ class GoalTolerances:
         }
 
 
-def _answers(kb: KnowledgeBase, goal: str, robot: str) -> list[dict[str, object]]:
+def _answers(kb: KnowledgeBase, goal: str, robot_name: str) -> list[dict[str, object]]:
     try:
-        return list(kb.query(goal, R=robot))
+        return list(kb.query(goal, R=robot_name))
     except UnknownPredicateError:
         return []
 
 
-def _positive(robot: str, fact: str, value: object) -> float:
+def _positive(robot_name: str, fact: str, value: object) -> float:
     try:
         number = float(value)  # type: ignore[arg-type]
     except (TypeError, ValueError):
         number = -1.0
     if not number > 0.0:
-        raise RosConfigError(f"{fact} gives {value!r}; a tolerance of {robot} must be > 0")
+        raise RosConfigError(f"{fact} gives {value!r}; a tolerance of {robot_name} must be > 0")
     return number
 
 

@@ -80,7 +80,7 @@ def _first(kb: KnowledgeBase, goal: str, **bindings: object) -> dict[str, Any] |
         return None
 
 
-def _number(robot: str, fact: str, value: object) -> float:
+def _number(robot_name: str, fact: str, value: object) -> float:
     if not isinstance(value, int | float):
         raise RosConfigError(f"{fact} gives {value!r}; it must be a number")
     return float(value)

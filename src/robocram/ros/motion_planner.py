@@ -49,7 +49,7 @@ class ClampedGoal:
     culprits: dict[str, tuple[float, float, float]]
     softened: dict[str, tuple[float, float]] = field(default_factory=dict)  # asked, sent
 
-    def describe(self, robot: str) -> str:
+    def describe(self, robot_name: str) -> str:
         """What was clamped, in words."""
         return (
             "joint goals outside the limits, clamped: "
@@ -57,7 +57,7 @@ class ClampedGoal:
                 f"{j}={asked} not in [{low}, {high}]"
                 for j, (asked, low, high) in self.culprits.items()
             )
-            + f" ({robot})"
+            + f" ({robot_name})"
         )
 
 

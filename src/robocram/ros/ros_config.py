@@ -75,15 +75,15 @@ class RosConfig:
         return {a.server: a.action_type for a in self.actions.values()}
 
 
-def default_facts(robot: str, ros: int = 1) -> str:
+def default_facts(robot_name: str, ros: int = 1) -> str:
     """The packaged ROS facts of a built-in robot (``robots/<robot>.pl``; for ROS 2
     ``robots/<robot>_ros2.pl``: ros2_control's and Nav2's names)."""
-    name = f"{robot}.pl" if ros == 1 else f"{robot}_ros2.pl"
+    name = f"{robot_name}.pl" if ros == 1 else f"{robot_name}_ros2.pl"
     path = resources.files("robocram.ros").joinpath("robots", name)
     if not path.is_file():
         have = "pr2, hsrb" if ros == 1 else "pr2"
         raise RosConfigError(
-            f"robocram.ros ships no ROS facts for {robot!r} (ROS {ros}: have {have}); pass "
+            f"robocram.ros ships no ROS facts for {robot_name!r} (ROS {ros}: have {have}); pass "
             "ros_facts= with ros_action/4, ros_topic/3, ros_action_timeout/3 facts for it"
         )
     return path.read_text()
@@ -104,36 +104,36 @@ def _first(kb: KnowledgeBase, goal: str, **bindings: object) -> dict[str, Any] |
         return None
 
 
-def _number(kb: KnowledgeBase, predicate: str, robot: str, unit: str) -> float:
-    answer = _first(kb, f"{predicate}(R, S)", R=robot)
+def _number(kb: KnowledgeBase, predicate: str, robot_name: str, unit: str) -> float:
+    answer = _first(kb, f"{predicate}(R, S)", R=robot_name)
     if answer is None:
-        raise RosConfigError(f"{robot} lacks the fact {predicate}({robot}, Value) [{unit}]")
+        raise RosConfigError(f"{robot_name} lacks the fact {predicate}({robot_name}, Value) [{unit}]")
     return float(answer["S"])
 
 
-def _optional(kb: KnowledgeBase, predicate: str, robot: str, default: float) -> float:
-    answer = _first(kb, f"{predicate}(R, S)", R=robot)
+def _optional(kb: KnowledgeBase, predicate: str, robot_name: str, default: float) -> float:
+    answer = _first(kb, f"{predicate}(R, S)", R=robot_name)
     if answer is None:
         return default
     value = answer["S"]
     if not isinstance(value, int | float) or value <= 0:
-        raise RosConfigError(f"{predicate}({robot}, {value!r}): give a number of seconds > 0")
+        raise RosConfigError(f"{predicate}({robot_name}, {value!r}): give a number of seconds > 0")
     return float(value)
 
 
-def _interface(kb: KnowledgeBase, robot: str, answer: dict[str, Any]) -> ActionInterface:
+def _interface(kb: KnowledgeBase, robot_name: str, answer: dict[str, Any]) -> ActionInterface:
     resource, server, kind = answer["Res"], str(answer["Server"]), str(answer["Type"])
     if kind not in ACTION_TYPES:
         raise RosConfigError(
-            f"ros_action({robot}, {resource_key(resource)}, {server}, {kind}): unknown action "
+            f"ros_action({robot_name}, {resource_key(resource)}, {server}, {kind}): unknown action "
             f"type; use one of {list(ACTION_TYPES)}"
         )
-    timeout = _first(kb, "ros_action_timeout(R, Res, S)", R=robot, Res=resource)
+    timeout = _first(kb, "ros_action_timeout(R, Res, S)", R=robot_name, Res=resource)
     if timeout is None:
         raise RosConfigError(
-            f"{robot} lacks ros_action_timeout({robot}, {resource_key(resource)}, Seconds)"
+            f"{robot_name} lacks ros_action_timeout({robot_name}, {resource_key(resource)}, Seconds)"
         )
-    cancel = _optional(kb, "ros_cancel_timeout", robot, DEFAULT_CANCEL_TIMEOUT)
+    cancel = _optional(kb, "ros_cancel_timeout", robot_name, DEFAULT_CANCEL_TIMEOUT)
     return ActionInterface(resource_key(resource), server, kind, float(timeout["S"]), cancel)
 
 
@@ -180,8 +180,8 @@ def read_ros_config(kb: KnowledgeBase, desc: RobotDescription) -> RosConfig:
 
 
 def install_ros_facts(
-    kb: KnowledgeBase, robot: str, facts: str | None = None, ros: int = 1
+    kb: KnowledgeBase, robot_name: str, facts: str | None = None, ros: int = 1
 ) -> None:
     """Load ``facts`` (default: the robot's packaged facts for ROS ``ros``) into ``kb``."""
-    text = facts if facts is not None else default_facts(robot, ros)
+    text = facts if facts is not None else default_facts(robot_name, ros)
     kb.consult(text, group=ROS_FACTS_GROUP)

@@ -30,7 +30,7 @@ class DriverProcess:
     def __init__(
         self,
         master_uri: str,
-        robot: str = "pr2",
+        robot_name: str = "pr2",
         base_speed: float = 0.0,
         time_scale: float = 0.0,
         fault: str = "none",
@@ -47,7 +47,7 @@ class DriverProcess:
         ``scene``: ``"tabletop"`` or ``"kitchen"`` (``kitchen_scene``); ``ros=2``: a ROS 2
         robot on ``domain_id`` (``master_uri`` is then not used)."""
         self.args = [
-            sys.executable, "-m", "robocram.ros_driver", "--robot", robot,
+            sys.executable, "-m", "robocram.ros_driver", "--robot", robot_name,
             "--master-uri", master_uri, "--base-speed", str(base_speed),
             "--time-scale", str(time_scale), "--fault", fault,
             "--controllers", controllers, "--clock-offset", str(clock_offset), "--scene", scene,

@@ -10,10 +10,10 @@ class SceneError(Exception):
 class UnfitRobotError(SceneError):
     """The robot's description lacks what the scene needs (a gripper arm, enough reach)."""
 
-    def __init__(self, robot: str, why: str) -> None:
-        self.robot = robot
+    def __init__(self, robot_name: str, why: str) -> None:
+        self.robot = robot_name
         self.why = why
-        super().__init__(f"cannot build the scene for {robot!r}: {why}")
+        super().__init__(f"cannot build the scene for {robot_name!r}: {why}")
 
 
 class SceneArgumentError(SceneError, ValueError):

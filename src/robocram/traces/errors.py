@@ -102,26 +102,26 @@ class TraceLocked(TraceError):  # noqa: N818
 class MissingRobotDescription(UserWarning):  # noqa: N818 - reads as what is missing
     """A run's trace holds no URDF of its robot: it was written before robocram stored them."""
 
-    def __init__(self, run: int, robot: str) -> None:
+    def __init__(self, run: int, robot_name: str) -> None:
         super().__init__(
-            f"run {run}'s trace stores no URDF of robot {robot!r} (written by an older "
+            f"run {run}'s trace stores no URDF of robot {robot_name!r} (written by an older "
             "robocram): the MCAP file has no /robot_description, so Foxglove draws no robot; "
             "trace the run again to get it"
         )
-        self.run, self.robot = run, robot
+        self.run, self.robot = run, robot_name
 
 
 class RobotNotRebuilt(TraceError):  # noqa: N818 - reads as what went wrong
     """A traced robot cannot be built again as it ran: its description file is gone, does
     not load, or describes another URDF now."""
 
-    def __init__(self, robot: str, source: str, problem: str) -> None:
+    def __init__(self, robot_name: str, source: str, problem: str) -> None:
         super().__init__(
-            f"robot {robot!r} of this trace was described by {source}, which {problem}; "
-            f"give the file it ran with (--robot-file FILE.py, or robots={{{robot!r}: "
+            f"robot {robot_name!r} of this trace was described by {source}, which {problem}; "
+            f"give the file it ran with (--robot-file FILE.py, or robots={{{robot_name!r}: "
             "'FILE.py'}} in code)"
         )
-        self.robot, self.source, self.problem = robot, source, problem
+        self.robot, self.source, self.problem = robot_name, source, problem
 
 
 class DamagedTrajectory(TraceError):  # noqa: N818 - reads as what the row is

@@ -219,9 +219,9 @@ def _parts_of(raw: RawDistances, body: str) -> list[Part]:
     return [Part(body, link, only=len(links) == 1) for link in links]
 
 
-def _side(part: Part, robot: str) -> str:
+def _side(part: Part, robot_name: str) -> str:
     """The robot side's name in an allowance: a robot link, or a held object's name."""
-    return part.link if part.body == robot else part.body
+    return part.link if part.body == robot_name else part.body
 
 
 def _hands(description: LoadedDescription, held: dict[str, str]) -> dict[str, frozenset[str]]:

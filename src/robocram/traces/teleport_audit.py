@@ -23,8 +23,8 @@ from robocram.traces.audit_findings import AuditFinding, FindingKind, FindingPla
 class TeleportWatch:
     """Where one robot is known to be, and the jumps found on the way."""
 
-    def __init__(self, robot: str, model: RobotModel, tolerance: float) -> None:
-        self.robot = robot
+    def __init__(self, robot_name: str, model: RobotModel, tolerance: float) -> None:
+        self.robot = robot_name
         self.tolerance = tolerance  # [rad | m]
         self.known: dict[str, float] = {}
         self.jumped: set[str] = set()  # the joints (and base joints) of the last jumps

@@ -219,8 +219,8 @@ class _RunAudit:
                 trajectory.carried, trajectory.duration,
             )  # fmt: skip
 
-    def _held(self, robot: str) -> dict[str, str]:
-        return {a.obj: a.link for a in self.world.bodies.all_attachments() if a.robot == robot}
+    def _held(self, robot_name: str) -> dict[str, str]:
+        return {a.obj: a.link for a in self.world.bodies.all_attachments() if a.robot == robot_name}
 
     def _sweep_configurations(
         self,

@@ -43,22 +43,22 @@ class DuplicateObjectError(WorldError):
 class UnknownJointError(WorldError):
     """A joint name that the robot's model does not have (or that cannot move)."""
 
-    def __init__(self, robot: str, joint: str, known: Iterable[str], why: str = "") -> None:
-        self.robot = robot
+    def __init__(self, robot_name: str, joint: str, known: Iterable[str], why: str = "") -> None:
+        self.robot = robot_name
         self.joint = joint
         self.known = tuple(sorted(known))
-        reason = why or f"joint {joint!r} not in {robot}'s model"
+        reason = why or f"joint {joint!r} not in {robot_name}'s model"
         super().__init__(f"{reason}{did_you_mean(joint, self.known)}")
 
 
 class UnknownLinkError(WorldError):
     """A link or frame name that the robot's model does not have."""
 
-    def __init__(self, robot: str, link: str, known: Iterable[str]) -> None:
-        self.robot = robot
+    def __init__(self, robot_name: str, link: str, known: Iterable[str]) -> None:
+        self.robot = robot_name
         self.link = link
         self.known = tuple(sorted(known))
-        super().__init__(f"link {link!r} not in {robot}'s model{did_you_mean(link, self.known)}")
+        super().__init__(f"link {link!r} not in {robot_name}'s model{did_you_mean(link, self.known)}")
 
 
 class UnknownItemError(WorldError):
@@ -73,15 +73,15 @@ class UnknownItemError(WorldError):
 class NoCameraError(WorldError):
     """A robot without a camera was asked what it sees."""
 
-    def __init__(self, robot: str, camera: str | None = None, known: Iterable[str] = ()) -> None:
-        self.robot = robot
+    def __init__(self, robot_name: str, camera: str | None = None, known: Iterable[str] = ()) -> None:
+        self.robot = robot_name
         self.camera = camera
         self.known = tuple(sorted(known))
         if camera is not None and self.known:
-            msg = f"robot {robot!r} has no camera {camera!r}{did_you_mean(camera, self.known)}"
+            msg = f"robot {robot_name!r} has no camera {camera!r}{did_you_mean(camera, self.known)}"
         else:
             msg = (
-                f"robot {robot!r} has no camera in its description; "
+                f"robot {robot_name!r} has no camera in its description; "
                 "use world.view.visible_from(Camera(pose, ...), obj) instead"
             )
         super().__init__(msg)
