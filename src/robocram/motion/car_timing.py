@@ -117,7 +117,9 @@ def time_car_path(
     keep = np.concatenate([[True], np.abs(np.diff(points, axis=0)).max(axis=1) > SAME_POINT])
     points = points[keep]
     if len(points) < 3:
-        return time_parameterize(robot_name, BASE_JOINTS, points, limits, kind="base", period=period)
+        return time_parameterize(
+            robot_name, BASE_JOINTS, points, limits, kind="base", period=period
+        )
     stops, pieces = _pieces(points, limits)
     return sampled_trajectory(robot_name, BASE_JOINTS, np.array(stops), pieces, period, "base")
 

@@ -258,7 +258,9 @@ class JointTrajectory:
         return {"joint_names": list(self.joint_names), "points": points}
 
 
-def still(robot_name: str, joint_names: Sequence[str], positions: Sequence[float]) -> JointTrajectory:
+def still(
+    robot_name: str, joint_names: Sequence[str], positions: Sequence[float]
+) -> JointTrajectory:
     """A one-point trajectory that holds ``positions`` (a motion that needs no move)."""
     zeros = tuple(0.0 for _ in joint_names)
     point = TrajectoryPoint(tuple(float(v) for v in positions), zeros, zeros, 0.0)

@@ -108,7 +108,9 @@ def time_parameterize(
         if _length(point - distinct[-1]) > SAME_POINT:
             distinct.append(point)
     if len(distinct) == 1:
-        return JointTrajectory(robot_name, names, still(robot_name, names, distinct[0].tolist()).points, kind)
+        return JointTrajectory(
+            robot_name, names, still(robot_name, names, distinct[0].tolist()).points, kind
+        )
     if corner_radii is not None and len(distinct) == len(points) > 2:
         if len(corner_radii) != len(points) - 2:
             raise MotionError(

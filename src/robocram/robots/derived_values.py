@@ -119,7 +119,9 @@ def _from_limits(robot_name: str, arm: str, model: RobotModel, name: str) -> Gri
     return GripperJoint(name, open=limits[1], closed=limits[0])
 
 
-def _check_gripper(robot_name: str, arm: str, model: RobotModel, gripper: GripperDescription) -> None:
+def _check_gripper(
+    robot_name: str, arm: str, model: RobotModel, gripper: GripperDescription
+) -> None:
     if gripper.is_suction:
         if gripper.joints or gripper.max_opening is not None:
             raise GripperDescriptionError(

@@ -101,7 +101,9 @@ class DescriptionCheckError(DescriptionError):
 class JointValueError(DescriptionError):
     """A joint value given in a description lies outside the joint's limits."""
 
-    def __init__(self, robot_name: str, joint: str, value: float, lower: float, upper: float) -> None:
+    def __init__(
+        self, robot_name: str, joint: str, value: float, lower: float, upper: float
+    ) -> None:
         self.robot = robot_name
         self.joint = joint
         self.value = value

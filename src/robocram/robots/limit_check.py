@@ -52,4 +52,6 @@ def check_acceleration_limits(robot_name: str, limits: Mapping[str, float]) -> N
     number of at least :data:`MIN_RATE_LIMIT` (0, negative, NaN, inf, 1e-300)."""
     for name, value in limits.items():
         if not (math.isfinite(value) and value >= MIN_RATE_LIMIT):
-            raise LimitValueError(robot_name, name, "acceleration limit [/s^2]", value, MIN_RATE_LIMIT)
+            raise LimitValueError(
+                robot_name, name, "acceleration limit [/s^2]", value, MIN_RATE_LIMIT
+            )

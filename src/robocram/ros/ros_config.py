@@ -107,7 +107,9 @@ def _first(kb: KnowledgeBase, goal: str, **bindings: object) -> dict[str, Any] |
 def _number(kb: KnowledgeBase, predicate: str, robot_name: str, unit: str) -> float:
     answer = _first(kb, f"{predicate}(R, S)", R=robot_name)
     if answer is None:
-        raise RosConfigError(f"{robot_name} lacks the fact {predicate}({robot_name}, Value) [{unit}]")
+        raise RosConfigError(
+            f"{robot_name} lacks the fact {predicate}({robot_name}, Value) [{unit}]"
+        )
     return float(answer["S"])
 
 
@@ -131,7 +133,8 @@ def _interface(kb: KnowledgeBase, robot_name: str, answer: dict[str, Any]) -> Ac
     timeout = _first(kb, "ros_action_timeout(R, Res, S)", R=robot_name, Res=resource)
     if timeout is None:
         raise RosConfigError(
-            f"{robot_name} lacks ros_action_timeout({robot_name}, {resource_key(resource)}, Seconds)"
+            f"{robot_name} lacks ros_action_timeout({robot_name}, {resource_key(resource)}, "
+            "Seconds)"
         )
     cancel = _optional(kb, "ros_cancel_timeout", robot_name, DEFAULT_CANCEL_TIMEOUT)
     return ActionInterface(resource_key(resource), server, kind, float(timeout["S"]), cancel)

@@ -58,7 +58,9 @@ class UnknownLinkError(WorldError):
         self.robot = robot_name
         self.link = link
         self.known = tuple(sorted(known))
-        super().__init__(f"link {link!r} not in {robot_name}'s model{did_you_mean(link, self.known)}")
+        super().__init__(
+            f"link {link!r} not in {robot_name}'s model{did_you_mean(link, self.known)}"
+        )
 
 
 class UnknownItemError(WorldError):
@@ -73,7 +75,9 @@ class UnknownItemError(WorldError):
 class NoCameraError(WorldError):
     """A robot without a camera was asked what it sees."""
 
-    def __init__(self, robot_name: str, camera: str | None = None, known: Iterable[str] = ()) -> None:
+    def __init__(
+        self, robot_name: str, camera: str | None = None, known: Iterable[str] = ()
+    ) -> None:
         self.robot = robot_name
         self.camera = camera
         self.known = tuple(sorted(known))
