@@ -11,8 +11,9 @@ effect in the same terms.
 - public methods of the ``World`` facade (goal <= 25; its tables, ``WorldTables``, are
   reached only by the world and its parts);
 - caches kept by hand: bounded caches that evict by hand (``popitem(last=False)``,
-  ``del d[next(iter(d))]``, ``d.pop(next(iter(d)))``; goal 0, the world's one rule,
-  ``world/derived.py``, aside), state reads compared as a cache's validity
+  ``del d[next(iter(d))]``, ``d.pop(next(iter(d)))``; goal 0, the one bounded store,
+  ``logic/lru.py``, which ``world.Derived`` keeps its values in, aside), state reads
+  compared as a cache's validity
   (``body_state(...)`` outside the world's tables), functions decorated with ``functools``
   caches, ``derived(...)`` stores (a world's, declared with ``Derived``, apart from a
   robot model's, which depend on nothing but the model), ``Derived`` declarations, and
@@ -244,7 +245,7 @@ def measure() -> dict[str, list[str]]:
                 found[_derived_kind(node)].append(f"{name}:{node.lineno}")
             if isinstance(node, ast.Call) and _decorator_name(node) == "Derived":
                 found["Derived declarations"].append(f"{name}:{node.lineno}")
-            if _evicts_by_hand(node) and name != "world/derived.py":
+            if _evicts_by_hand(node) and name != "logic/lru.py":
                 found["hand-written caches"].append(f"{name}:{node.lineno}")
             if (
                 isinstance(node, ast.Call)

@@ -1,11 +1,12 @@
-"""A bounded least-recently-used cache: the one bounded store of the layers below the world.
+"""A bounded store: the one place where kept values are dropped when a bound is reached.
 
 Caches keyed by program text grow with every distinct query or clause shape a long-lived
 process sees; the bound keeps memory flat while the working set stays hot. The same store
 keeps the kinematics' solvers and start tables and the hands read from descriptions (on
 their models): values derived from immutable inputs, so an entry is never stale, only
-dropped when the bound is reached. (What depends on a world that changes is kept in a
-``world.Derived``, which compares the world's change counters.)
+dropped when the bound is reached. What depends on a world that changes is kept in a
+``world.Derived``, which keeps its values here with the world's change counters they were
+built at: one store, one rule of validity.
 """
 
 from __future__ import annotations
@@ -24,7 +25,8 @@ V = TypeVar("V")
 
 
 class LRUCache(Generic[K, V]):
-    """Keep at most `size` entries, dropping the least recently used first.
+    """Keep at most `size` entries (None: no bound), dropping the least recently used first,
+    or with ``recency=False`` the first stored (a read or a new value keeps a key's place).
 
     >>> c: LRUCache[str, int] = LRUCache(2)
     >>> c.put("a", 1); c.put("b", 2); _ = c.get("a"); c.put("c", 3)
@@ -32,10 +34,11 @@ class LRUCache(Generic[K, V]):
     ['a', 'c']
     """
 
-    def __init__(self, size: int) -> None:
-        if size < 1:
+    def __init__(self, size: int | None, recency: bool = True) -> None:
+        if size is not None and size < 1:
             raise LogicArgumentError(f"LRUCache size must be at least 1, got {size}")
         self.size = size
+        self.recency = recency
         self._items: OrderedDict[K, V] = OrderedDict()
         self._lock = threading.Lock()  # queries on one KB may run in several threads
 
@@ -44,7 +47,7 @@ class LRUCache(Generic[K, V]):
         with self._lock:
             items = self._items
             value = items.get(key)
-            if value is not None:
+            if value is not None and self.recency:
                 items.move_to_end(key)
             return value
 
@@ -53,8 +56,9 @@ class LRUCache(Generic[K, V]):
         with self._lock:
             items = self._items
             items[key] = value
-            items.move_to_end(key)
-            if len(items) > self.size:
+            if self.recency:
+                items.move_to_end(key)
+            if self.size is not None and len(items) > self.size:
                 items.popitem(last=False)
 
     def get_or_build(self, key: K, build: Callable[[], V]) -> V:

@@ -18,6 +18,7 @@ from __future__ import annotations
 from collections.abc import Callable, Hashable
 from typing import Generic, TypeVar
 
+from robocram.logic.lru import LRUCache
 from robocram.world.errors import WorldValueError
 from robocram.world.versions import Versions
 
@@ -37,9 +38,7 @@ class Derived(Generic[K, V]):
         if size is not None and size < 1:
             raise WorldValueError(f"a derived store keeps at least one value, got size={size}")
         self._depends = depends
-        self._size = size
-        self._lru = lru
-        self._kept: dict[K, tuple[Hashable, V]] = {}
+        self._kept: LRUCache[K, tuple[Hashable, V]] = LRUCache(size, recency=lru)
         self.builds = 0  # values built so far (a test counts them)
 
     def get(self, key: K, build: Callable[[], V], versions: Versions | None = None) -> V:
@@ -53,16 +52,12 @@ class Derived(Generic[K, V]):
                     "world.versions to get()"
                 )
             stamp = self._depends(versions, key)
-        kept = self._kept.pop(key, None) if self._lru else self._kept.get(key)
+        kept = self._kept.get(key)
         if kept is not None and kept[0] == stamp:
-            if self._lru:
-                self._kept[key] = kept  # most recent last
             return kept[1]
         value = build()
         self.builds += 1
-        self._kept[key] = (stamp, value)  # a stale key keeps its place (without lru)
-        if self._size is not None and len(self._kept) > self._size:
-            del self._kept[next(iter(self._kept))]  # the oldest (least recent with lru)
+        self._kept.put(key, (stamp, value))  # a stale key keeps its place (without lru)
         return value
 
     def __len__(self) -> int:
