@@ -12,12 +12,13 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from robocram.world.attachment import Attachment
+from robocram.world.body_slots import link_slot
 from robocram.world.body_spec import GREY, MeshSpec, Rgba, ShapeSpec
 from robocram.world.joint_state import JointLimits
 from robocram.world.pybullet_backend import pybullet
 from robocram.world.world_object import WorldObject
 from robocram.world.world_part import WorldPart
-from robocram.world.world_tables import ORIGIN, ObjectRef, link_slot
+from robocram.world.world_tables import ORIGIN, ObjectRef
 
 if TYPE_CHECKING:
     from robocram.tf import PoseLike

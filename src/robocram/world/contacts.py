@@ -16,6 +16,7 @@ from numpy.typing import NDArray
 
 from robocram.tf import Vector3
 from robocram.world import closest_points, link_contacts, visibility
+from robocram.world.body_slots import link_slot
 from robocram.world.collision_shapes import CollisionShape, collision_shapes
 from robocram.world.contact_point import ContactPoint
 from robocram.world.derived import Derived
@@ -23,7 +24,7 @@ from robocram.world.obstacle_boxes import KeptObstacleBoxes, ObstacleBoxes
 from robocram.world.versions import Versions
 from robocram.world.world_object import WorldObject
 from robocram.world.world_part import WorldPart
-from robocram.world.world_tables import ObjectRef, WorldTables, link_slot
+from robocram.world.world_tables import ObjectRef, WorldTables
 
 if TYPE_CHECKING:
     from robocram.world.world_facade import WorldFacade

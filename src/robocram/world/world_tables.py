@@ -19,13 +19,19 @@ from robocram.robots import RobotModel, mimic_followers
 from robocram.tf import Pose, PoseLike
 from robocram.world.attachment import Attachment, check_acyclic
 from robocram.world.body_loading import create_body
+from robocram.world.body_slots import (
+    index_body,
+    link_slot,
+    part_joint_states,
+    reset_joints,
+    reset_slots,
+)
 from robocram.world.body_spec import BodySpec
 from robocram.world.derived import Derived
 from robocram.world.errors import (
     DuplicateObjectError,
     NotARobotError,
     UnknownJointError,
-    UnknownLinkError,
     UnknownObjectError,
     WorldClosedError,
     WorldError,
@@ -51,7 +57,6 @@ class BodyHook(Protocol):
 
 
 ORIGIN = Pose()
-_MOVABLE_TYPES = (pybullet.JOINT_REVOLUTE, pybullet.JOINT_PRISMATIC)
 
 
 class WorldTables:
@@ -154,7 +159,7 @@ class WorldTables:
         handle.forget_indices()
         for body in handle.bodies:
             self._owners[body] = handle
-            _index_body(handle, body, cid)
+            index_body(handle, body, cid)
         handle.link_offset.clear()
         for frame, host, host_T_frame in getattr(handle.spec, "frames", ()):
             handle.link_index[frame] = handle.link_index[host]
@@ -325,7 +330,7 @@ class WorldTables:
         names = self._movable_names(handle)
         cid = self.physics_client()
         if handle.parts:
-            return _part_joint_states(handle, names, cid)
+            return part_joint_states(handle, names, cid)
         indices = [handle.joint_index[n] for n in names]
         states = pybullet.getJointStates(handle.body_id, indices, physicsClientId=cid)
         return {n: float(s[0]) for n, s in zip(names, states or (), strict=True)}
@@ -346,7 +351,7 @@ class WorldTables:
         applied, clamped = clamp_values(values, limits)
         applied.update(self._mimic_values(handle, applied))
         by_index = {handle.joint_index[name]: value for name, value in applied.items()}
-        _reset_slots(handle, by_index, self.physics_client())
+        reset_slots(handle, by_index, self.physics_client())
         self._versions.jointed(handle.name)
         self._holds.setdefault(handle.name, {}).update(by_index)
         if carry:
@@ -438,7 +443,7 @@ class WorldTables:
         self.time += self.time_step
         self._versions.stepped(*self._stepping.get(None, self._stepped, self._versions))
         for body, held in robots:
-            _reset_joints(body, held, cid)
+            reset_joints(body, held, cid)
         for carrier in {a.robot for a in self._attachments.values()}:
             self._follow(carrier)
 
@@ -452,56 +457,6 @@ class WorldTables:
         )
 
 
-def _index_body(handle: WorldObject, body: int, cid: int) -> None:
-    """Name ``body``'s links and joints in ``handle``'s tables, by slot."""
-    base_name = pybullet.getBodyInfo(body, physicsClientId=cid)[0].decode()
-    handle.link_index[base_name] = handle.slot(body, -1)
-    for i in range(pybullet.getNumJoints(body, physicsClientId=cid)):
-        info = pybullet.getJointInfo(body, i, physicsClientId=cid)
-        handle.joint_index[info[1].decode()] = handle.slot(body, i)
-        handle.link_index[info[12].decode()] = handle.slot(body, i)
-        if info[2] in _MOVABLE_TYPES:
-            handle.movable_joints.append(info[1].decode())
-
-
-def _part_joint_states(handle: WorldObject, names: list[str], cid: int) -> dict[str, float]:
-    """:meth:`WorldTables.joint_states` of an object of several bodies, one call per body."""
-    by_body: dict[int, list[tuple[str, int]]] = {}
-    for name in names:
-        body, index = handle.locate(handle.joint_index[name])
-        by_body.setdefault(body, []).append((name, index))
-    values: dict[str, float] = {}
-    for body, joints in by_body.items():
-        states = pybullet.getJointStates(body, [i for _, i in joints], physicsClientId=cid)
-        values.update((n, float(s[0])) for (n, _), s in zip(joints, states or (), strict=True))
-    return {name: values[name] for name in names}
-
-
-def _reset_slots(handle: WorldObject, values: Mapping[int, float], cid: int) -> None:
-    """:func:`_reset_joints` by slot, for each body of ``handle``."""
-    if not handle.parts:
-        _reset_joints(handle.body_id, values, cid)
-        return
-    by_body: dict[int, dict[int, float]] = {}
-    for slot, value in values.items():
-        body, index = handle.locate(slot)
-        by_body.setdefault(body, {})[index] = value
-    for body, part in by_body.items():
-        _reset_joints(body, part, cid)
-
-
-def _reset_joints(body: int, values: Mapping[int, float], cid: int) -> None:
-    """Put one-DoF joints (by index) at ``values`` [rad | m] at rest, in one call."""
-    if values:
-        pybullet.resetJointStatesMultiDof(
-            body,
-            list(values),
-            targetValues=[[v] for v in values.values()],
-            targetVelocities=[[0.0]] * len(values),
-            physicsClientId=cid,
-        )
-
-
 def _mimic_masters(model: RobotModel) -> frozenset[str]:
     """The joints some mimic joint of ``model`` follows."""
     return frozenset(j.mimic.joint for j in model.joints.values() if j.mimic is not None)
@@ -509,14 +464,6 @@ def _mimic_masters(model: RobotModel) -> frozenset[str]:
 
 def _structure(versions: Versions, key: None) -> int:
     return versions.structure
-
-
-def link_slot(handle: WorldObject, link: str) -> int:
-    """The slot of ``handle``'s link (or added frame) called ``link``; unknown: an error."""
-    index = handle.link_index.get(link)
-    if index is None:
-        raise UnknownLinkError(handle.name, link, handle.link_index)
-    return index
 
 
 def check_time_step(time_step: float) -> None:
