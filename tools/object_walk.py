@@ -4,8 +4,9 @@ plans and execution, and the names it is called by (issue 39's last measure).
 A profile hook watches every call into robocram while the PR2 carries the mug to the
 table. A call *carries the object* when one of its arguments is the object's name, its
 world body, or a value that names it (an ``object_name`` or ``name`` attribute equal to
-it; a designator with a property that is or names it, nested designators included). Per such call it notes the layer (the package
-under ``robocram``: a *room*) and the parameter's name. Printed:
+it; a designator with a property that is or names it, nested designators included). Per
+such call it notes the layer (the package under ``robocram``: a *room*) and the
+parameter's name. Printed:
 
 - rooms: the layers the object is handed through;
 - hops: in the order of those calls, moves from ``plans`` to ``execution`` and back
@@ -91,9 +92,8 @@ def hops(rooms: list[str]) -> tuple[int, int]:
     """Moves plans -> execution and execution -> plans in ``rooms`` (others left out)."""
     path = [r for r in rooms if r in ("plans", "execution")]
     path = [r for i, r in enumerate(path) if i == 0 or r != path[i - 1]]
-    there = sum(1 for x, y in zip(path, path[1:]) if (x, y) == ("plans", "execution"))
-    back = sum(1 for x, y in zip(path, path[1:]) if (x, y) == ("execution", "plans"))
-    return there, back
+    steps = list(zip(path[:-1], path[1:], strict=True))
+    return steps.count(("plans", "execution")), steps.count(("execution", "plans"))
 
 
 def main(argv: list[str]) -> None:
