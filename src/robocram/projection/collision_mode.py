@@ -71,7 +71,10 @@ class _Check:
             start = self._start = IKStart.read(self.robot, CONTACT_DISTANCE, pairs)
         defer = self._once and motion is None  # a moved base goes back at every candidate
         with base_moved_by(self.robot, motion):
-            return start.colliding(joints, self.allowed, motion is not None, defer, self.hand)
+            hits = start.colliding(joints, self.allowed, motion is not None, defer, self.hand)
+        if motion is not None:
+            start.settled()  # the base is back where the start stood
+        return hits
 
     @contextlib.contextmanager
     def putting_back_once(self) -> Iterator[None]:

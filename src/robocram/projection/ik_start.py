@@ -5,7 +5,8 @@ where they start, so what they touch is the same at every candidate of the query
 asked once, as are their bounds. Self pairs touching at the start stay allowed; the start
 is asked about a pair only when it touches at a candidate. What each candidate puts back
 is read once too. A check asks :meth:`IKStart.holds` before each candidate and reads the
-start again if the robot stands otherwise; nothing but the robot may move in between.
+start again if anything but its own put-backs wrote to the robot since (the world's change
+counters say; no state is compared); nothing but the robot may move in between.
 """
 
 from __future__ import annotations
@@ -18,6 +19,7 @@ from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robots import RobotModel
 from robocram.world import WorldObject
 from robocram.world.link_contacts import Bounds, link_bounds, link_pairs_in_contact, self_contacts
+from robocram.world.versions import Stamp
 
 LinkPair = tuple[str, str]  # (robot link, object or object/link | robot link)
 
@@ -28,7 +30,7 @@ class IKStart:
 
     robot: ProjectedRobot
     distance: float  # [m] closer than this is a collision
-    state: tuple[float, ...]  # the robot's body state at the start
+    stamp: Stamp  # the robot's change counters when it last stood as at the start
     joints: dict[str, float]  # the values to put back (mimic followers come with masters)
     unheld: frozenset[str]  # joints simulation does not hold where they are
     ignore: list[WorldObject]  # what may touch: the floor, what the robot holds
@@ -56,9 +58,7 @@ class IKStart:
         world = robot.world
         model = robot.description.model
         body = world.object(robot.name)
-        state = world.snapshots.body_state(body)  # its joints last, in joint_states' order
-        names = body.movable_joints
-        joints = dict(zip(names, state[len(state) - len(names) :], strict=True))
+        joints = world.joint_states(body)
         held = world.snapshots.held_joints(body)
         carried = set(world.bodies.attachments(body))
         ignore = [o for o in world.objects() if o.name in carried or o.type == "floor"]
@@ -66,7 +66,7 @@ class IKStart:
         return cls(
             robot,
             distance,
-            state,
+            world.versions.body(body),
             {j: v for j, v in joints.items() if model.joints[j].mimic is None},
             frozenset(j for j, v in joints.items() if held.get(j) != v),
             ignore,
@@ -78,10 +78,12 @@ class IKStart:
     def holds(self) -> bool:
         """Whether the robot stands as it did at the start (base and joints), or where the
         last candidate left it, to be put back (:meth:`put_back`)."""
-        return (
-            bool(self._dirty)
-            or self.robot.world.snapshots.body_state(self.robot.name) == self.state
-        )
+        return bool(self._dirty) or self.robot.world.versions.body(self.robot.name) == self.stamp
+
+    def settled(self) -> None:
+        """The robot stands as at the start again, put back by the check's own writes (a
+        candidate's joints, a moved base): what it reads now is what the start read."""
+        self.stamp = self.robot.world.versions.body(self.robot.name)
 
     def colliding(
         self,
@@ -119,6 +121,7 @@ class IKStart:
         finally:
             if not defer:
                 world.set_joint_states(body, before, carry)
+                self.settled()
         if any(p not in self._at_start for p in touching):
             self.put_back()  # the start's self contacts are asked where it stands
         hits.update(dict.fromkeys(p for p in touching if not self._touching_at_start([p])))
@@ -130,6 +133,7 @@ class IKStart:
             body = self.robot.world.object(self.robot.name)
             self.robot.world.set_joint_states(body, self._dirty, not self.alone)
             self._dirty = {}
+            self.settled()
 
     def _contacts(
         self,
