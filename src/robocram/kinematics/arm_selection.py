@@ -28,9 +28,7 @@ def arm_description(desc: RobotDescription, arm: str) -> ArmDescription:
     return spec
 
 
-def arm_joints(
-    description: RobotDescription | str, arm: str, use_torso: bool = False
-) -> tuple[str, ...]:
+def arm_joints(description: RobotDescription, arm: str, use_torso: bool = False) -> tuple[str, ...]:
     """The joints IK for ``arm`` may move: the arm's, after the torso joint if allowed."""
     desc, model = loaded(description)
     spec = arm_description(desc, arm)

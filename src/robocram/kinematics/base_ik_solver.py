@@ -50,7 +50,7 @@ class BaseIKSolver(IKSolver):
 
     def __init__(
         self,
-        description: RobotDescription | str,
+        description: RobotDescription,
         arm: str,
         use_torso: bool = False,
         frame: str | None = None,
@@ -58,7 +58,7 @@ class BaseIKSolver(IKSolver):
         *,
         cache: KinematicsCache | None = None,
     ) -> None:
-        desc = loaded(description)[0] if isinstance(description, str) else description
+        desc = description
         self.base = for_robot(desc, base or PlanarBase())
         super().__init__(description, arm, use_torso, frame, cache=cache)
         self.arm_solver = IKSolver.cached(self.description, arm, use_torso, frame, cache=cache)
@@ -70,7 +70,7 @@ class BaseIKSolver(IKSolver):
     @classmethod
     def cached(
         cls,
-        description: RobotDescription | str,
+        description: RobotDescription,
         arm: str,
         use_torso: bool = False,
         frame: str | None = None,

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from typing import Protocol
 
-from robocram.robots import LoadedDescription, RobotDescription
+from robocram.robots import LoadedDescription, RobotDescription, load_description
 
 
 class DescribedRobot(Protocol):
@@ -22,8 +22,12 @@ RobotRef = RobotDescription | str | DescribedRobot
 """A description, a built-in robot's name, or a robot carrying its description."""
 
 
-def description_of(robot: RobotRef) -> RobotDescription | str:
-    """The description (or name) ``robot`` stands for."""
-    if isinstance(robot, (RobotDescription, str)):
+def description_of(robot: RobotRef) -> RobotDescription:
+    """The description ``robot`` stands for: a name is looked up here, once, at the
+    layer's public entry (``solve_ik``, ``reachable``, ``forward_kinematics``); the
+    solvers below take descriptions only."""
+    if isinstance(robot, str):
+        return load_description(robot)
+    if isinstance(robot, RobotDescription):
         return robot
     return robot.description

@@ -55,7 +55,7 @@ class IKSolver:
 
     def __init__(
         self,
-        description: RobotDescription | str,
+        description: RobotDescription,
         arm: str,
         use_torso: bool = False,
         frame: str | None = None,
@@ -86,7 +86,7 @@ class IKSolver:
     @classmethod
     def cached(
         cls,
-        description: RobotDescription | str,
+        description: RobotDescription,
         arm: str,
         use_torso: bool = False,
         frame: str | None = None,

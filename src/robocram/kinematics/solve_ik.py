@@ -94,7 +94,7 @@ def reachable(
 
 
 def _solver(
-    description: RobotDescription | str,
+    description: RobotDescription,
     arm: str,
     options: IKOptions,
     cache: KinematicsCache | None,

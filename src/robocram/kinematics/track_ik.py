@@ -24,7 +24,7 @@ from robocram.tf import Pose
 
 
 def track_ik(
-    description: RobotDescription | str,
+    description: RobotDescription,
     arm: str,
     targets: Iterable[Pose],
     seed: Mapping[str, float],
