@@ -111,7 +111,7 @@ class BulletScene:
 
     def _current(self) -> dict[str, float]:
         world = self.world
-        model = world.robot(self.robot).description.model
+        model = self.handle.model
         return {
             j: v for j, v in world.joint_states(self.robot).items() if model.joints[j].mimic is None
         }
@@ -152,7 +152,7 @@ class BulletScene:
         touch anything: a frame without shapes need not slow a sweep) and the objects
         held by a moving link (they ride on it); what the other hand holds stays put."""
         moving = set(self.moving_links)
-        handle = self.world.robot(self.robot)
+        handle = self.handle.body
         held = self.world.bodies.attachments(self.robot)
         shaped = (
             link for link in self.moving_links
@@ -216,7 +216,7 @@ class BulletScene:
                 gap += self.hand.depth
                 gaps[link] = min(gaps.get(link, reach), gap - self.distance)
         for item in held:
-            skip = [world.robot(self.robot), *(h for h in held if h is not item), *anywhere]
+            skip = [self.handle.body, *(h for h in held if h is not item), *anywhere]
             for _, obj, other_link, gap in world.contacts.link_distances(
                 item, skip, reach, obstacles=boxes
             ):
@@ -290,7 +290,7 @@ class BulletScene:
                 if first_only:
                     return list(hits)
         for item in held:
-            skip = [world.robot(self.robot), *(h for h in held if h is not item), *anywhere]
+            skip = [self.handle.body, *(h for h in held if h is not item), *anywhere]
             for _, obj, other_link in world.contacts.link_pairs_in_contact(
                 item, skip, self.distance, obstacles=boxes
             ):
