@@ -26,7 +26,9 @@ Nothing is keyed on robot names, so a new robot gets a scene too. The rules:
   cannot look down steeply puts the mug beyond the arm: TALOS, TIAGo dual), the table
   rises in steps until the wrist is 0.3 m above the shoulder
   (:data:`WRISTS_BELOW_SHOULDER`), the mug then within :data:`RAISED_REACH_SHARE` of the
-  reach; else the robot is unfit;
+  reach; where none fits, the same tables seen with the torso down (the look lowers it
+  when the head cannot tilt down to the target: Armar6's tilts 46 degrees); else the
+  robot is unfit;
 - heights are the map's: a robot lifted onto the floor or a pedestal
   (:mod:`robocram.scenes.standing`) gets its table that much higher.
 """
