@@ -16,6 +16,7 @@ from robocram.execution.failures import (
     ManipulationPoseUnreachable,
     NavigationLowLevelFailure,
     PlanFailure,
+    PtuGoalNotReached,
     PtuPathBlocked,
     TorsoPathBlocked,
 )
@@ -144,31 +145,45 @@ def look(target: object) -> Any:
     return perform(a.motion(type="looking", target=target))
 
 
+# looks that a lower torso may let succeed: the head blocked, or tilted down to its limit
+LOWER_TO_LOOK = (PtuPathBlocked, PtuGoalNotReached)
+
+
+def _lowering_helps(failure: PlanFailure) -> bool:
+    """Whether a lower torso may let a failed look succeed: the head was blocked, or its
+    tilt stopped at its limit above the target (Armar6's head tilts 46 degrees down)."""
+    return isinstance(failure, PtuPathBlocked) or (
+        isinstance(failure, PtuGoalNotReached) and failure.below_tilt
+    )
+
+
 def look_lowering(target: object) -> Any:
     """Point the camera at ``target``; where the head is blocked (an HSR whose lift an
     earlier reach left up carries its parked hand into the head turned down: 8 of 50
-    kitchen mug fetches failed so), lower the torso in steps (:data:`LOOK_HEIGHTS` of its
-    travel, only those below where it is) until the head can look. The head looks ahead
-    first: still turned down at what the robot looked at before, it would meet the hand
-    on the torso's way down.
+    kitchen mug fetches failed so), or cannot tilt down to it, lower the torso in steps
+    (:data:`LOOK_HEIGHTS` of its travel, only those below where it is) until the head can
+    look. The head looks ahead first: still turned down at what the robot looked at
+    before, it would meet the hand on the torso's way down.
 
     Raises:
         PtuPathBlocked: the head is blocked at the lowest step too, or there is no torso
             to lower.
+        PtuGoalNotReached: the head cannot tilt down to the target at the lowest step.
     """
     try:
         return look(target)
-    except PtuPathBlocked:
+    except LOWER_TO_LOOK as failure:
         heights = _heights_below(current_robot())
-        if not heights:
+        if not heights or not _lowering_helps(failure):
             raise
     look_ahead()
     for height in heights[:-1]:
         move_torso(height)
         try:
             return look(target)
-        except PtuPathBlocked:
-            continue
+        except LOWER_TO_LOOK as failure:
+            if not _lowering_helps(failure):
+                raise
     move_torso(heights[-1])
     return look(target)
 
@@ -189,7 +204,8 @@ def look_from_above(target: object, looked: bool = False) -> None:
     its parked hand twice as fast as its head, into the head turned down), a raise that is
     blocked moves nothing and the robot looks from where it is (not again if it
     ``looked`` already), and after a look that is blocked the torso goes down in steps
-    (:data:`LOOK_HEIGHTS` of its travel) until the head can look from there."""
+    (:data:`LOOK_HEIGHTS` of its travel) until the head can look from there; so too
+    after a look whose tilt stops above the target (a head that tilts down too little)."""
     robot = current_robot()
     upper = robot.torso_limit("upper")
     raised = upper is not None
@@ -209,8 +225,8 @@ def look_from_above(target: object, looked: bool = False) -> None:
         try:
             look(target)
             return
-        except PtuPathBlocked:
-            if fraction == 0.0 or not heights:
+        except LOWER_TO_LOOK as failure:
+            if fraction == 0.0 or not heights or not _lowering_helps(failure):
                 raise
 
 

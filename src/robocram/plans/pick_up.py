@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from robocram.designators import ObjectDesignator, a, an
 from robocram.execution import perform
 from robocram.execution.failures import PerceptionBlockedByRobot
-from robocram.plans.basic_actions import look_from_above, park_arms
+from robocram.plans.basic_actions import look_from_above, look_lowering, park_arms
 from robocram.plans.known_robot import current_robot
 from robocram.plans.pick_object import Held, pick_up_object
 from robocram.tf import PoseStamped
@@ -36,7 +36,7 @@ class PickResult:
 def pick_up(look_target: PoseStamped, object_type: str = "mug") -> PickResult:
     """Look, raise the torso, detect an ``object_type`` and pick it up."""
     park_arms()
-    perform(a.motion(type="looking", target=a.location(pose=look_target)))
+    look_lowering(a.location(pose=look_target))
     look_from_above(a.location(pose=look_target), looked=True)
     seen = _detected(object_type)
     held = pick_up_object(seen)

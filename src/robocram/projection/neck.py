@@ -72,13 +72,25 @@ def _aim_pan_tilt(
     reached = _turn_head(robot, inside, target_in_map)
     if inside != wanted:
         limits = {j: (b.lower, b.upper) for j, b in bounds.items() if inside[j] != wanted[j]}
+        below = pt.tilt_joint in limits and _below_axis(robot, target_in_map)
+        lower = "; the target lies below what it tilts down to: lower the camera" if below else ""
         raise PtuGoalNotReached(
             f"looking at {tuple(target_in_map)} needs {wanted}, outside the limits {limits} "
-            f"of {robot.name}'s head; turned to {reached} instead",
+            f"of {robot.name}'s head; turned to {reached} instead{lower}",
             target=tuple(target_in_map),
             reached=reached,
+            below_tilt=below,
         )
     return reached
+
+
+def _below_axis(robot: ProjectedRobot, target_in_map: Vector3) -> bool:
+    """Whether ``target_in_map`` lies below the camera's optical axis as the head is turned:
+    a tilt stopped at its limit short of it, a lower camera (the torso down) sees it."""
+    view = robot.world.link_pose(robot.name, robot.description.cameras[0].frame)
+    axis = (Pose(orientation=view.orientation) * Pose((0.0, 0.0, 1.0))).position
+    to = np.subtract(target_in_map, view.position)
+    return bool(to[2] / np.linalg.norm(to) < axis[2] - 1e-6)
 
 
 def _turn_head(

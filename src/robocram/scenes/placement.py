@@ -26,7 +26,9 @@ Nothing is keyed on robot names, so a new robot gets a scene too. The rules:
   cannot look down steeply puts the mug beyond the arm: TALOS, TIAGo dual), the table
   rises in steps until the wrist is 0.3 m above the shoulder
   (:data:`WRISTS_BELOW_SHOULDER`), the mug then within :data:`RAISED_REACH_SHARE` of the
-  reach; else the robot is unfit;
+  reach; where none fits, the same tables seen with the torso down (the look lowers it
+  when the head cannot tilt down to the target: Armar6's tilts 46 degrees); else the
+  robot is unfit;
 - heights are the map's: a robot lifted onto the floor or a pedestal
   (:mod:`robocram.scenes.standing`) gets its table that much higher.
 """
@@ -160,14 +162,17 @@ def _pan_to(desc: LoadedDescription, yaw: float, pan: str | None = None) -> floa
     return min(values, key=off)
 
 
-def _nearest_in_view(desc: LoadedDescription, height: float, yaw: float = 0.0) -> float:
+def _nearest_in_view(
+    desc: LoadedDescription, height: float, yaw: float = 0.0, low: bool = False
+) -> float:
     """Nearest x [m] at which the camera sees a point ``height`` [m] high.
 
     The robot stands at map ``yaw`` [rad]; a pan-tilt camera is panned towards the map's x
     and tilted down as far as its limits allow, with the torso up (where the pick-up plan
-    looks from), and aims its optical axis there; a head that only pans keeps its tilt and
-    sees down to the lower edge of its view. -inf when nothing limits it (no head, or a
-    camera an arm turns), inf if it cannot look down.
+    looks from; ``low``: down, where the plan lowers it to when the head cannot tilt down
+    to the target), and aims its optical axis there; a head that only pans keeps its tilt
+    and sees down to the lower edge of its view. -inf when nothing limits it (no head, or
+    a camera an arm turns), inf if it cannot look down.
     """
     pt = desc.pan_tilt
     means = looking_means(desc)
@@ -181,7 +186,7 @@ def _nearest_in_view(desc: LoadedDescription, height: float, yaw: float = 0.0) -
     up = finite_limits(desc.model.joints[desc.torso_joint]) if desc.torso_joint else None
     joints = {
         pt.pan_joint: _pan_to(desc, yaw),
-        **({desc.torso_joint: up[1]} if desc.torso_joint and up else {}),
+        **({desc.torso_joint: up[0] if low else up[1]} if desc.torso_joint and up else {}),
     }
     frame = desc.cameras[0].frame
     turn = Pose(orientation=quat.from_euler(0.0, 0.0, yaw))
@@ -275,20 +280,28 @@ def tabletop_placement(world: World, robot: str) -> TabletopPlacement:
             "higher (tabletop_scene puts such an arm on a pedestal)",
         )
     reasons = []
-    for below in WRISTS_BELOW_SHOULDER:
-        share = 1.0 if below == WRIST_BELOW_SHOULDER else RAISED_REACH_SHARE
-        placed, unfit = _placement_at(world, robot, arm, below, share)
-        if placed is not None:
-            return placed
-        reasons.append(unfit)
+    lows = (False, True) if desc.torso_joint and desc.pan_tilt is not None else (False,)
+    for low in lows:  # the torso lowered: a head that cannot tilt down far enough (Armar6)
+        for below in WRISTS_BELOW_SHOULDER:
+            share = 1.0 if below == WRIST_BELOW_SHOULDER else RAISED_REACH_SHARE
+            placed, unfit = _placement_at(world, robot, arm, below, share, low)
+            if placed is not None:
+                return placed
+            reasons.append(unfit)
     raise UnfitRobotError(robot, reasons[0])
 
 
 def _placement_at(
-    world: World, robot: str, arm: ArmDescription, below: float, share: float = 1.0
+    world: World,
+    robot: str,
+    arm: ArmDescription,
+    below: float,
+    share: float = 1.0,
+    low: bool = False,
 ) -> tuple[TabletopPlacement | None, str]:
     """The placement with the grasping wrist ``below`` [m] under the shoulder and the mug
-    within ``share`` of the arm's reach, or None and why it does not fit."""
+    within ``share`` of the arm's reach, seen with the torso up (``low``: down), or None
+    and why it does not fit."""
     desc = world.robot(robot).description
     torso = _joints_for_torso(desc, arm)
     root = world.pose(robot)
@@ -298,7 +311,7 @@ def _placement_at(
     height = table_height(world, robot, arm, below)
     reach = arm_envelope(desc.model, arm, torso).reach
     past_base = _footprint_front(world, robot, height) + TABLE_GAP + MUG_INSET
-    seen = _nearest_in_view(desc, height - root.position[2], yaw)
+    seen = _nearest_in_view(desc, height - root.position[2], yaw, low)
     mug_x = max(past_base, shoulder[0] + REACH_SHARE * reach, seen)
     needed = math.dist(shoulder, (mug_x, shoulder[1], wrist_z))
     if needed > share * reach:

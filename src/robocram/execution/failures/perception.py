@@ -61,6 +61,7 @@ class PtuGoalNotReached(PtuLowLevelFailure):
 
     target: object | None = None
     reached: object | None = None
+    below_tilt: bool = False  # the target lies below the axis tilted down to its limit
     summary = "the pan-tilt unit did not reach its goal"
     hint = "retry the look"
 
