@@ -39,9 +39,9 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-from ruckig import Trajectory
 
 from robocram.motion.configuration_checker import (
     ClearanceChecker,
@@ -60,6 +60,9 @@ from robocram.motion.straight_segment import (
     rest_to_rest,
 )
 from robocram.motion.travel_bound import TravelBound
+
+if TYPE_CHECKING:
+    from ruckig import Trajectory
 
 SHARP_TURN = 1.0  # [rad | m per rad | m] |u2 - u1| above which the robot rests (60 deg)
 SHARES = (0.25, 0.5, 0.75)  # alpha: the share of acceleration and jerk left to s_ddot

@@ -9,11 +9,14 @@ segment: timing samples each segment twice (its straightness check, then its poi
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-from ruckig import Trajectory
 
 from robocram.motion.joint_trajectory import FloatArray
+
+if TYPE_CHECKING:
+    from ruckig import Trajectory
 
 PHASES = 7  # of constant jerk per joint; phase 7 holds the end state, jerk 0
 _BYTE_SUM = np.uint64(0x0101010101010101)  # times eight bytes: their sum in the top byte

@@ -8,7 +8,6 @@ list says where, so no path is guessed.
 from __future__ import annotations
 
 from functools import lru_cache
-from importlib import metadata
 from pathlib import Path
 
 from robocram.robots.errors import DescriptionError
@@ -20,6 +19,8 @@ DISTRIBUTION = "example-robot-data"
 @lru_cache(maxsize=1)
 def example_robot_data_folder() -> Path:
     """The ``robots`` folder of ``example-robot-data`` (holding ``pr2_description`` etc.)."""
+    from importlib import metadata  # ~15 ms with email, zipfile, socket: only when asked
+
     try:
         files = metadata.distribution(DISTRIBUTION).files or []
     except metadata.PackageNotFoundError:

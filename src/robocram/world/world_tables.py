@@ -51,7 +51,6 @@ class BodyHook(Protocol):
 
 
 ORIGIN = Pose()
-_MOVABLE_TYPES = (pybullet.JOINT_REVOLUTE, pybullet.JOINT_PRISMATIC)
 
 
 class WorldTables:
@@ -460,7 +459,7 @@ def _index_body(handle: WorldObject, body: int, cid: int) -> None:
         info = pybullet.getJointInfo(body, i, physicsClientId=cid)
         handle.joint_index[info[1].decode()] = handle.slot(body, i)
         handle.link_index[info[12].decode()] = handle.slot(body, i)
-        if info[2] in _MOVABLE_TYPES:
+        if info[2] in (pybullet.JOINT_REVOLUTE, pybullet.JOINT_PRISMATIC):
             handle.movable_joints.append(info[1].decode())
 
 
