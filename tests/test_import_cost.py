@@ -23,6 +23,8 @@ HEAVY = frozenset(
     {"pybullet", "pinocchio", "coal", "ompl", "ruckig", "ray", "sqlalchemy", "viser", "mcap",
      "toppra", "scipy", "trimesh", "PIL", "rclpy"}
 )  # fmt: skip
+
+
 def _fresh(code: str) -> str:
     """The last line ``code`` prints, run in a fresh interpreter on this checkout."""
     path = os.pathsep.join([str(SRC), os.environ.get("PYTHONPATH", "")])
