@@ -60,6 +60,7 @@ from robocram.motion.straight_segment import (
     rest_to_rest,
 )
 from robocram.motion.travel_bound import TravelBound
+from robocram.world.sorted_unique import sorted_unique
 
 if TYPE_CHECKING:
     from ruckig import Trajectory
@@ -93,7 +94,7 @@ class BlendedRun:
         edges = np.concatenate([corners - self.radii, corners + self.radii])
         found = [self.profile.get_first_time_at_position(0, float(s)) for s in edges]
         times = np.array([t for t in found if t is not None], dtype=float)
-        return np.unique(np.concatenate([profile_switches(self.profile), times]))
+        return sorted_unique(np.concatenate([profile_switches(self.profile), times]))
 
     def states(self, times: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
         """Positions, velocities, accelerations at ``times`` [s], one row per time."""

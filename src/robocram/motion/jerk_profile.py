@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from robocram.motion.joint_trajectory import FloatArray
+from robocram.world.sorted_unique import sorted_unique
 
 if TYPE_CHECKING:
     from ruckig import Trajectory
@@ -41,7 +42,7 @@ class JerkProfile:
         """The times [s] strictly inside the profile where some joint's jerk changes,
         sorted (between two of them every joint's motion is one cubic polynomial)."""
         ends = self.ends[:, :PHASES]
-        return np.unique(ends[(ends > 0.0) & (ends < ends.max())])
+        return sorted_unique(ends[(ends > 0.0) & (ends < ends.max())])
 
     def positions(self, times: FloatArray) -> FloatArray:
         """The positions of :meth:`states` alone."""
