@@ -56,6 +56,7 @@ def kept_arrays(
     built_by: Sequence[str],
     build: Callable[[], Arrays],
     versions: Sequence[str] = (),
+    accept: Callable[[Arrays], bool] | None = None,
 ) -> dict[str, NDArray[np.generic]]:
     """The arrays ``build()`` returns for ``key``: read from disk, else built and written.
 
@@ -65,13 +66,15 @@ def kept_arrays(
         built_by: names of the imported modules whose source computes the arrays.
         build: computes the arrays (names not starting with ``_``).
         versions: versions of the libraries ``build`` uses.
+        accept: whether arrays read whole are usable too (an entry it refuses is rebuilt
+            and replaced).
     """
     code = map(_source_digest, (__name__, *built_by))  # this file's format and the builders
     text = "\n".join((kind, key, *versions, np.__version__, *code))
     full = hashlib.sha256(text.encode("utf-8")).hexdigest()
     path = cache_dir() / kind / f"{full[:32]}{SUFFIX}"
     found = _read(path, full)
-    if found is not None:
+    if found is not None and (accept is None or accept(found)):
         return found
     arrays = {name: np.asarray(value) for name, value in build().items()}
     _write(path, full, arrays)
