@@ -91,20 +91,21 @@ def _read(path: Path, full: str) -> dict[str, NDArray[np.generic]] | None:
     """The arrays of the entry at ``path``, or None when it is missing or not to be trusted."""
     try:
         with path.open("rb") as file:
-            data = bytearray(os.fstat(file.fileno()).st_size)  # writable: arrays may be
-            if file.readinto(data) != len(data):  # changed in place, as np.load's were
+            # writable, as np.load's arrays were; not zeroed first (a bytearray is: ~2x slower)
+            data = np.empty(os.fstat(file.fileno()).st_size, dtype=np.uint8)
+            if file.readinto(data.data) != len(data):
                 return None
     except OSError:
         return None
     start = len(_MAGIC) + _LENGTHS.size
-    if len(data) < start or data[: len(_MAGIC)] != _MAGIC:
+    if len(data) < start or data[: len(_MAGIC)].tobytes() != _MAGIC:
         return None
-    length, crc = _LENGTHS.unpack_from(data, len(_MAGIC))
-    if start + length > len(data) or zlib.crc32(memoryview(data)[start:]) != crc:
+    length, crc = _LENGTHS.unpack_from(data.data, len(_MAGIC))
+    if start + length > len(data) or zlib.crc32(data.data[start:]) != crc:
         return None
     arrays = {}
     try:
-        table = json.loads(data[start : start + length])
+        table = json.loads(data[start : start + length].tobytes())
         if table["hash"] != full:
             return None
         for name, kind, shape, offset in table["arrays"]:
@@ -118,7 +119,7 @@ def _read(path: Path, full: str) -> dict[str, NDArray[np.generic]] | None:
 
 
 def _view(
-    data: bytearray, at: int, kind: np.dtype[np.generic], shape: tuple[int, ...]
+    data: NDArray[np.uint8], at: int, kind: np.dtype[np.generic], shape: tuple[int, ...]
 ) -> NDArray[np.generic] | None:
     """The array of ``kind`` and ``shape`` whose bytes start at ``at`` in ``data``, or None
     for Python objects (never read from a file, as np.load's ``allow_pickle=False``) or an
