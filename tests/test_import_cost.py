@@ -5,7 +5,8 @@ only ask the knowledge base and PERFORM designators. Projection, scenes and the 
 build worlds (PyBullet), kinematics (pinocchio, coal) and arm paths (OMPL, ruckig), but
 each module binds those as a :class:`~robocram.robots.lazy_library.LazyLibrary`, imported
 at its first use: a script pays for them when it builds a scene, not when it imports.
-The batch's trace store (SQLAlchemy) loads only once a batch traces.
+The batch's trace store (SQLAlchemy) loads only once a batch traces, its progress bar
+(tqdm, with ``importlib.metadata``) only once one is shown.
 """
 
 from __future__ import annotations
@@ -21,7 +22,7 @@ import pytest
 SRC = Path(__file__).resolve().parents[1] / "src"
 HEAVY = frozenset(
     {"pybullet", "pinocchio", "coal", "ompl", "ruckig", "ray", "sqlalchemy", "viser", "mcap",
-     "toppra", "scipy", "trimesh", "PIL", "rclpy"}
+     "toppra", "scipy", "trimesh", "PIL", "rclpy", "tqdm", "importlib.metadata"}
 )  # fmt: skip
 
 
