@@ -4,7 +4,8 @@ Each import runs in a fresh interpreter and reads ``sys.modules`` afterwards. Th
 only ask the knowledge base and PERFORM designators. Projection, scenes and the batch
 build worlds (PyBullet), kinematics (pinocchio, coal) and arm paths (OMPL, ruckig), but
 each module binds those as a :class:`~robocram.robots.lazy_library.LazyLibrary`, imported
-at its first use: a script pays for them when it builds a scene, not when it imports.
+at its first use: a script pays for each when it first needs it (PyBullet with its first
+world, pinocchio and coal with its first motion), not when it imports.
 The batch's trace store (SQLAlchemy) loads only once a batch traces, its progress bar
 (tqdm, with ``importlib.metadata``) only once one is shown.
 """
