@@ -57,7 +57,8 @@ def test_each_subcommand_help_loads_no_heavy_library() -> None:
 
 
 def test_pybullet_loads_without_its_banner(tmp_path: Path) -> None:
-    loaded = _python("import sys, robocram.world\nprint('pybullet' in sys.modules)")
+    code = "import sys\nfrom robocram.world.pybullet_backend import pybullet\n"
+    loaded = _python(code + "pybullet.getNumBodies\nprint('pybullet' in sys.modules)")
     assert loaded.stdout == "True\n"
     assert BANNER not in loaded.stderr
     db = tmp_path / "runs.db"

@@ -58,13 +58,13 @@ def test_hulls_from_kept_parts_equal_the_computed_ones(cache: Path, file: Path, 
     computed = _computed(file)
     assert len(computed) == parts
     built = _kept(file)
-    assert len(list(cache.glob("*.npz"))) == 1
+    assert len(list(cache.glob("*.arrays"))) == 1
     assert _same(built, computed) and _same(_kept(file), computed)
 
 
 def test_a_damaged_entry_is_rebuilt(cache: Path) -> None:
     _kept(STL)
-    (entry,) = cache.glob("*.npz")
+    (entry,) = cache.glob("*.arrays")
     whole = entry.read_bytes()
     entry.write_bytes(b"\0" * len(whole))
     assert _same(_kept(STL), _computed(STL))

@@ -46,14 +46,14 @@ def test_hulls_read_back_equal_the_computed_ones(cache: Path) -> None:
     computed = shape_rays._mesh_pieces(MUG, SCALE)
     assert len(computed) == 6  # the cup and the handle's pieces
     built = _hulls(MUG)
-    assert len(list(cache.glob("*.npz"))) == 1
+    assert len(list(cache.glob("*.arrays"))) == 1
     read = _hulls(MUG)
     assert _same(built, computed) and _same(read, computed)
 
 
 def test_a_damaged_entry_is_rebuilt(cache: Path) -> None:
     _hulls(MUG)
-    (entry,) = cache.glob("*.npz")
+    (entry,) = cache.glob("*.arrays")
     whole = entry.read_bytes()
     entry.write_bytes(whole[: len(whole) // 2])
     assert _same(_hulls(MUG), shape_rays._mesh_pieces(MUG, SCALE))
@@ -66,7 +66,7 @@ def test_a_copy_shares_the_entry_and_an_edited_file_gets_its_own(
     copy = tmp_path / "mug.obj"
     shutil.copyfile(MUG, copy)
     assert _same(_hulls(copy), _hulls(MUG) or ())
-    assert len(list(cache.glob("*.npz"))) == 1
+    assert len(list(cache.glob("*.arrays"))) == 1
     # the same mesh twice as large: new hulls, not the kept ones
     lines = MUG.read_text().splitlines()
     copy.write_text(
@@ -78,7 +78,7 @@ def test_a_copy_shares_the_entry_and_an_edited_file_gets_its_own(
         )
     )
     edited = _hulls(copy)
-    assert edited is not None and len(list(cache.glob("*.npz"))) == 2
+    assert edited is not None and len(list(cache.glob("*.arrays"))) == 2
     assert _same(edited, shape_rays._mesh_pieces(copy, SCALE))
     assert not np.array_equal(edited[0].box, (_hulls(MUG) or ())[0].box)
 
@@ -89,4 +89,4 @@ def test_a_vertex_hull_reads_back_equal(cache: Path) -> None:
     computed = (shape_rays._hull(points),)
     hull = shape_rays._vertex_hull.__wrapped__  # type: ignore[attr-defined]
     assert _same((hull(vertices),), computed) and _same((hull(vertices),), computed)
-    assert len(list(cache.glob("*.npz"))) == 1
+    assert len(list(cache.glob("*.arrays"))) == 1

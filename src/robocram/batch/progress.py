@@ -7,11 +7,12 @@ default) is a TTY, so logs, pipes and CI stay clean; ``True`` or ``False`` decid
 from __future__ import annotations
 
 import sys
-from typing import Any, TextIO
-
-from tqdm import tqdm
+from typing import TYPE_CHECKING, Any, TextIO
 
 from robocram.batch.result import VariantResult, VariantStatus
+
+if TYPE_CHECKING:
+    from tqdm import tqdm
 
 
 class ProgressBar:
@@ -24,6 +25,8 @@ class ProgressBar:
         self.lost = 0
         self._bar: tqdm[Any] | None = None
         if on:
+            from tqdm import tqdm  # ~20 ms with importlib.metadata: only for a bar shown
+
             self._bar = tqdm(total=total, file=out, unit="variant", desc="batch", leave=True)
 
     @property

@@ -8,13 +8,19 @@ joint applied to all samples together. Joints off the sampled set keep their def
 from __future__ import annotations
 
 from collections.abc import Mapping
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pinocchio as pin
 from numpy.typing import NDArray
 
 from robocram.costmaps.errors import CostmapError
 from robocram.kinematics.robot_kinematics import RobotKinematics
+from robocram.robots.lazy_library import LazyLibrary
+
+if TYPE_CHECKING:
+    import pinocchio as pin
+else:
+    pin = LazyLibrary("pinocchio")
 
 _AXES = {"X": (1.0, 0.0, 0.0), "Y": (0.0, 1.0, 0.0), "Z": (0.0, 0.0, 1.0)}
 

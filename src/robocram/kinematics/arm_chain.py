@@ -12,13 +12,19 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Mapping
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pinocchio as pin
 from numpy.typing import NDArray
 
 from robocram.kinematics.robot_kinematics import RobotKinematics
+from robocram.robots.lazy_library import LazyLibrary
 from robocram.robots.mimic import mimic_followers
+
+if TYPE_CHECKING:
+    import pinocchio as pin
+else:
+    pin = LazyLibrary("pinocchio")
 
 FloatArray = NDArray[np.float64]
 

@@ -13,8 +13,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import replace
-
-import pinocchio as pin
+from typing import TYPE_CHECKING
 
 from robocram.kinematics.arm_chain import ArmChain, FloatArray
 from robocram.kinematics.arm_selection import loaded
@@ -31,7 +30,13 @@ from robocram.kinematics.planar_base import (
 from robocram.kinematics.planar_fit import planar_fits
 from robocram.kinematics.robot_kinematics import robot_kinematics
 from robocram.robots import RobotDescription, RobotModel
+from robocram.robots.lazy_library import LazyLibrary
 from robocram.tf import Pose, PoseStamped
+
+if TYPE_CHECKING:
+    import pinocchio as pin
+else:
+    pin = LazyLibrary("pinocchio")
 
 PLANAR_STARTS = 32  # fitted table samples tried before random configurations
 STILL_RESTARTS = 7  # restarts of the arm alone before the base may move (8 descents)

@@ -10,10 +10,17 @@ IK variable's joint hangs from, so held joints before it (the torso) do not matt
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
-import pinocchio as pin
 
 from robocram.kinematics.arm_chain import ArmChain, FloatArray
+from robocram.robots.lazy_library import LazyLibrary
+
+if TYPE_CHECKING:
+    import pinocchio as pin
+else:
+    pin = LazyLibrary("pinocchio")
 
 
 def chain_base(chain: ArmChain) -> pin.SE3:

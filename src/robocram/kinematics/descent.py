@@ -14,12 +14,17 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
-import pinocchio as pin
 
 from robocram.kinematics.arm_chain import ArmChain, FloatArray
+from robocram.robots.lazy_library import LazyLibrary
+
+if TYPE_CHECKING:
+    import pinocchio as pin
+else:
+    pin = LazyLibrary("pinocchio")
 
 
 def _lapack_solve() -> Callable[[FloatArray, FloatArray], FloatArray]:

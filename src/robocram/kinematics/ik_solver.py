@@ -21,9 +21,9 @@ import time
 from collections import Counter
 from collections.abc import Callable, Collection, Iterator, Mapping
 from dataclasses import replace
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pinocchio as pin
 
 from robocram.kinematics.arm_chain import ArmChain, FloatArray
 from robocram.kinematics.arm_selection import arm_description, arm_joints, loaded
@@ -35,7 +35,13 @@ from robocram.kinematics.reach import ReachBound
 from robocram.kinematics.robot_kinematics import pose_to_se3, robot_kinematics
 from robocram.kinematics.seed_table import ROTATION_WEIGHT, SeedTable, random_configurations
 from robocram.robots import RobotDescription, RobotModel
+from robocram.robots.lazy_library import LazyLibrary
 from robocram.tf import Pose, PoseStamped
+
+if TYPE_CHECKING:
+    import pinocchio as pin
+else:
+    pin = LazyLibrary("pinocchio")
 
 LinkPair = tuple[str, str]
 CollisionCheck = Callable[[dict[str, float]], bool | Collection[LinkPair]]

@@ -16,14 +16,19 @@ drive reaches along its heading, not those that need it to turn about near the f
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
-import pinocchio as pin
 
 from robocram.kinematics.arm_chain import FloatArray
 from robocram.kinematics.planar_base import MAX_TURN, PlanarBase
 from robocram.kinematics.seed_table import ROTATION_WEIGHT, SeedTable
+from robocram.robots.lazy_library import LazyLibrary
+
+if TYPE_CHECKING:
+    import pinocchio as pin
+else:
+    pin = LazyLibrary("pinocchio")
 
 MOTION_WEIGHT = 0.1  # cost per metre of base travel, against metres of misfit
 TURN_WEIGHT = 0.3  # [m/rad] a turn of the base counts like this much travel per radian

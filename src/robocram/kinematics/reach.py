@@ -18,11 +18,17 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pinocchio as pin
 
 from robocram.kinematics.arm_chain import ArmChain, FloatArray
+from robocram.robots.lazy_library import LazyLibrary
+
+if TYPE_CHECKING:
+    import pinocchio as pin
+else:
+    pin = LazyLibrary("pinocchio")
 
 _ON_AXIS = 1e-9  # [m] an offset closer than this to a joint's axis lies on it
 # a wrist this near its bound is not ruled out, so that a query that fails still answers

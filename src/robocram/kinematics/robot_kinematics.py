@@ -12,15 +12,21 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pinocchio as pin
 from numpy.typing import NDArray
 
 from robocram.kinematics.errors import KinematicsUsageError, TargetFrameError, UnknownNameError
 from robocram.robots import RobotModel
+from robocram.robots.lazy_library import LazyLibrary
 from robocram.robots.mimic import mimic_followers
 from robocram.tf import Pose, PoseStamped
+
+if TYPE_CHECKING:
+    import pinocchio as pin
+else:
+    pin = LazyLibrary("pinocchio")
 
 
 @dataclass(frozen=True)

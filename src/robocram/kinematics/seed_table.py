@@ -12,14 +12,19 @@ A table is kept on disk (:mod:`robocram.robots.disk_cache`): a new process reads
 from __future__ import annotations
 
 import math
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
-import pinocchio as pin
 
 from robocram.kinematics.arm_chain import ArmChain, FloatArray
 from robocram.kinematics.chain_sweep import sweep_tip_poses
 from robocram.robots.disk_cache import kept_arrays
+from robocram.robots.lazy_library import LazyLibrary
+
+if TYPE_CHECKING:
+    import pinocchio as pin
+else:
+    pin = LazyLibrary("pinocchio")
 
 ROTATION_WEIGHT = 0.1  # [m] per unit of rotation-matrix difference
 TABLE_SEED = 0  # seeds the sampled configurations; fixed, so IK answers are repeatable

@@ -6,7 +6,8 @@ mode when the value is bound, write mode when it is a variable), ISO type tests,
 comparisons, `is/2`, `=/2`, `==/2` and `=../2`. `codegen.ClauseWriter` builds whole
 clauses on it, `procedure.py` whole predicates, and `inline_function` the runs of such
 goals that follow a call (see inline_goal.py). Generated sources become functions
-through `make_factory`, memoised by source text.
+through `make_factory`, memoised by source text (and their code kept on disk:
+`code_cache`).
 """
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ from collections.abc import Callable
 from typing import Any
 
 from robocram.logic.arith import BINARY_FUNCTIONS, apply_binary, evaluate
+from robocram.logic.code_cache import compiled
 from robocram.logic.functor_arg import arg_check, functor_make
 from robocram.logic.goal_terms import TERM_GOALS, emit_term_goal
 from robocram.logic.inline_goal import CALL, INLINE
@@ -82,7 +84,7 @@ def make_factory(source: str) -> Factory:
     if factory is None:
         # exec binds `make` here; what it is shows only in the source, so the values are Any.
         namespace: dict[str, Any] = dict(_NAMESPACE)
-        exec(compile(source, "<robocram clause>", "exec"), namespace)  # noqa: S102
+        exec(compiled(source), namespace)  # noqa: S102
         factory = namespace["make"]
         _FACTORIES.put(source, factory)
     return factory

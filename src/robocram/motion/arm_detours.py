@@ -17,9 +17,9 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pinocchio as pin
 
 from robocram.motion.configuration_checker import ConfigurationChecker
 from robocram.motion.joint_path import JointPath
@@ -28,7 +28,13 @@ from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.robot_geometry import RobotGeometry
 from robocram.motion.segment_check import CheckCounter, segment_free
 from robocram.motion.travel_bound import TravelBound
+from robocram.robots.lazy_library import LazyLibrary
 from robocram.world import RobotHandle
+
+if TYPE_CHECKING:
+    import pinocchio as pin
+else:
+    pin = LazyLibrary("pinocchio")
 
 DETOUR_LIFTS = (0.3, 0.5)  # [m] tool lifts tried, in order, each by one joint
 SHARED_LIFT = 0.5  # [m] then this lift, shared by the two steepest joints

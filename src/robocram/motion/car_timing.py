@@ -24,10 +24,10 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 import numpy.typing as npt
-from ruckig import Trajectory
 
 from robocram.motion.joint_limits import JointLimits
 from robocram.motion.joint_trajectory import BASE_JOINTS, FloatArray, JointTrajectory
@@ -44,6 +44,9 @@ from robocram.motion.time_parameterization import (
     sampled_trajectory,
     time_parameterize,
 )
+
+if TYPE_CHECKING:
+    from ruckig import Trajectory
 
 BoolArray = npt.NDArray[np.bool_]
 ON_CURVE = 1e-7  # [m] a step whose chord is this far off the arc through its ends: mixed

@@ -12,10 +12,9 @@ from __future__ import annotations
 
 from collections.abc import Collection, Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
-import coal
 import numpy as np
-import pinocchio as pin
 from numpy.typing import NDArray
 
 from robocram.motion.allowed_contacts import AllowedContacts, Other
@@ -23,6 +22,14 @@ from robocram.motion.configuration_checker import LinkPair
 from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.obstacle_shapes import ObstacleShapes, StackedShapes
 from robocram.motion.robot_geometry import Part
+from robocram.robots.lazy_library import LazyLibrary
+
+if TYPE_CHECKING:
+    import coal
+    import pinocchio as pin
+else:
+    coal = LazyLibrary("coal")
+    pin = LazyLibrary("pinocchio")
 
 # [m] a check's pairs are those that can be near while no part's ball moves this far
 FOCUS = 0.1

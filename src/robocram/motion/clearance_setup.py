@@ -14,9 +14,9 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from functools import partial
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pinocchio as pin
 from numpy.typing import NDArray
 
 from robocram.kinematics.robot_kinematics import pose_to_se3
@@ -27,8 +27,14 @@ from robocram.motion.coal_shapes import coal_geometries
 from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.obstacle_shapes import DRIFT, StackedShapes, obstacle_cache
 from robocram.motion.robot_geometry import Part, RobotGeometry, part
+from robocram.robots.lazy_library import LazyLibrary
 from robocram.tf import Pose
 from robocram.world import Derived, World, WorldObject
+
+if TYPE_CHECKING:
+    import pinocchio as pin
+else:
+    pin = LazyLibrary("pinocchio")
 
 KEPT_SETUPS = 8  # checker setups kept per world (a stand's motions use a few)
 KEPT_ANSWERS = 64  # rule answer tables kept per world (one per judge, held set, objects)

@@ -22,9 +22,9 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pinocchio as pin
 from numpy.typing import NDArray
 
 from robocram.kinematics.robot_kinematics import pose_to_se3, robot_kinematics
@@ -39,6 +39,12 @@ from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.obstacle_shapes import DRIFT
 from robocram.motion.robot_geometry import RobotGeometry
 from robocram.robots import RobotModel
+from robocram.robots.lazy_library import LazyLibrary
+
+if TYPE_CHECKING:
+    import pinocchio as pin
+else:
+    pin = LazyLibrary("pinocchio")
 
 # [m] PyBullet grows convex hulls by a collision margin of 1 mm and its GJK is off by up
 # to ~0.7 mm more; coal's distances are lowered by this so they never exceed PyBullet's

@@ -17,10 +17,9 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
-import coal
 import numpy as np
-import pinocchio as pin
 from numpy.typing import NDArray
 
 from robocram.kinematics.robot_kinematics import RobotKinematics
@@ -29,6 +28,14 @@ from robocram.motion.configuration_checker import LinkPair
 from robocram.motion.joint_slots import JointSlots
 from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.robot_geometry import Part, RobotGeometry
+from robocram.robots.lazy_library import LazyLibrary
+
+if TYPE_CHECKING:
+    import coal
+    import pinocchio as pin
+else:
+    coal = LazyLibrary("coal")
+    pin = LazyLibrary("pinocchio")
 
 # [m] PyBullet grows each of two hulls by its 1 mm collision margin: its distance between
 # two of a robot's links is coal's less 2.0 mm (seeded PR2, HSR and Boxy arm poses: 1.9 to

@@ -11,14 +11,20 @@ from __future__ import annotations
 
 import functools
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-import coal
 import numpy as np
 from numpy.typing import NDArray
 
 from robocram.motion.errors import MotionError
 from robocram.robots.disk_cache import file_key, kept_arrays
+from robocram.robots.lazy_library import LazyLibrary
 from robocram.tf import Vector3
+
+if TYPE_CHECKING:
+    import coal
+else:
+    coal = LazyLibrary("coal")
 
 _BUILT_BY = ("robocram.motion.coal_shapes",)  # what computes the kept mesh parts
 # The floor: a half-space z <= 0 of its frame.

@@ -14,18 +14,22 @@ pickles as its world snapshot and is rebuilt in the receiving process.
 from __future__ import annotations
 
 from collections.abc import Collection, Sequence
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pinocchio as pin
 from numpy.typing import NDArray
 
 from robocram.motion.hand_contact import HandContact
 from robocram.motion.joint_slots import JointSlots
 from robocram.motion.scene_geometry import SceneGeometry, build_geometry
 from robocram.motion.scene_snapshot import SceneSnapshot
+from robocram.robots.lazy_library import LazyLibrary
 from robocram.world import RobotHandle
 
-_Manager = pin.BroadPhaseManager_DynamicAABBTreeCollisionManager
+if TYPE_CHECKING:
+    import pinocchio as pin
+else:
+    pin = LazyLibrary("pinocchio")
 
 
 class CollisionScene:
@@ -88,8 +92,12 @@ class CollisionScene:
             request.security_margin = self.snapshot.margin
             request.enable_contact = False  # a yes/no answer: GJK only, no EPA
         moving, fixed = geo.sides()
-        self._moving = _Manager(model, moving, self._geometry_data)
-        self._fixed = _Manager(model, fixed, self._geometry_data)
+        self._moving = pin.BroadPhaseManager_DynamicAABBTreeCollisionManager(
+            model, moving, self._geometry_data
+        )
+        self._fixed = pin.BroadPhaseManager_DynamicAABBTreeCollisionManager(
+            model, fixed, self._geometry_data
+        )
         pin.updateGeometryPlacements(model, self._data, geo.geometry, self._geometry_data, geo.q0)
         self._fixed.update(False)
         self._first = pin.CollisionCallBackDefault(geo.geometry, self._geometry_data, True)

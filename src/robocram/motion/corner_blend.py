@@ -39,9 +39,9 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-from ruckig import Trajectory
 
 from robocram.motion.configuration_checker import (
     ClearanceChecker,
@@ -60,6 +60,10 @@ from robocram.motion.straight_segment import (
     rest_to_rest,
 )
 from robocram.motion.travel_bound import TravelBound
+from robocram.world.sorted_unique import sorted_unique
+
+if TYPE_CHECKING:
+    from ruckig import Trajectory
 
 SHARP_TURN = 1.0  # [rad | m per rad | m] |u2 - u1| above which the robot rests (60 deg)
 SHARES = (0.25, 0.5, 0.75)  # alpha: the share of acceleration and jerk left to s_ddot
@@ -90,7 +94,7 @@ class BlendedRun:
         edges = np.concatenate([corners - self.radii, corners + self.radii])
         found = [self.profile.get_first_time_at_position(0, float(s)) for s in edges]
         times = np.array([t for t in found if t is not None], dtype=float)
-        return np.unique(np.concatenate([profile_switches(self.profile), times]))
+        return sorted_unique(np.concatenate([profile_switches(self.profile), times]))
 
     def states(self, times: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
         """Positions, velocities, accelerations at ``times`` [s], one row per time."""

@@ -9,11 +9,15 @@ segment: timing samples each segment twice (its straightness check, then its poi
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-from ruckig import Trajectory
 
 from robocram.motion.joint_trajectory import FloatArray
+from robocram.world.sorted_unique import sorted_unique
+
+if TYPE_CHECKING:
+    from ruckig import Trajectory
 
 PHASES = 7  # of constant jerk per joint; phase 7 holds the end state, jerk 0
 _BYTE_SUM = np.uint64(0x0101010101010101)  # times eight bytes: their sum in the top byte
@@ -38,7 +42,7 @@ class JerkProfile:
         """The times [s] strictly inside the profile where some joint's jerk changes,
         sorted (between two of them every joint's motion is one cubic polynomial)."""
         ends = self.ends[:, :PHASES]
-        return np.unique(ends[(ends > 0.0) & (ends < ends.max())])
+        return sorted_unique(ends[(ends > 0.0) & (ends < ends.max())])
 
     def positions(self, times: FloatArray) -> FloatArray:
         """The positions of :meth:`states` alone."""

@@ -10,11 +10,18 @@ hull, the corners of a primitive's own box.
 
 from __future__ import annotations
 
-import coal
+from typing import TYPE_CHECKING
+
 import numpy as np
 
 from robocram.motion.robot_geometry import RobotGeometry
 from robocram.robots import RobotModel
+from robocram.robots.lazy_library import LazyLibrary
+
+if TYPE_CHECKING:
+    import coal
+else:
+    coal = LazyLibrary("coal")
 
 
 def shape_radii(model: RobotModel) -> dict[str, float]:

@@ -16,16 +16,23 @@ import functools
 from dataclasses import dataclass, field
 from functools import partial
 from itertools import chain
+from typing import TYPE_CHECKING
 
-import coal
 import numpy as np
-import pinocchio as pin
 from numpy.typing import NDArray
 
 from robocram.kinematics.robot_kinematics import pose_to_se3
 from robocram.motion.coal_shapes import coal_geometries
 from robocram.motion.joint_trajectory import FloatArray
+from robocram.robots.lazy_library import LazyLibrary
 from robocram.world import Derived, Stamp, World, WorldObject
+
+if TYPE_CHECKING:
+    import coal
+    import pinocchio as pin
+else:
+    coal = LazyLibrary("coal")
+    pin = LazyLibrary("pinocchio")
 
 # Shapes are reused while an object's position [m], quaternion and joint values [rad | m]
 # each stay within this of the state they were read in.

@@ -12,17 +12,25 @@ so queries take turns (a lock).
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
+from typing import TYPE_CHECKING
 
 import numpy as np
-from ompl import base as ob
-from ompl import geometric as og
 
 from robocram.motion.base_collision import BaseCollisionChecker
 from robocram.motion.ompl_query import POLLS_PER_CHECK, OmplQuery
 from robocram.motion.path_simplification import SegmentTest, simplify_with
 from robocram.motion.planar_motion import reeds_shepp_poses, straight_poses, wrapped
 from robocram.motion.robot_footprint import FloatArray
+from robocram.robots.lazy_library import LazyLibrary
+
+if TYPE_CHECKING:
+    from ompl import base as ob
+    from ompl import geometric as og
+else:
+    ob = LazyLibrary("ompl.base")
+    og = LazyLibrary("ompl.geometric")
 
 Area = tuple[tuple[float, float], tuple[float, float]]  # [m] lower and upper x, y in map
 SIMPLIFY_SHARE = 0.25  # of the budget, added for shortening a car's path (OMPL's simplifier)
@@ -34,15 +42,21 @@ PREVIEW = 8  # the simplifier checks every 8th pose first: a blocked shortcut is
 TREE_STEP = 0.5
 
 
-class _DenseMotions(ob.MotionValidator):
-    """OMPL's question "is this motion free?", answered by our dense check."""
+@functools.cache
+def _dense_motions() -> type:
+    """The motion validator class, made at first use: it subclasses OMPL's, loaded then."""
 
-    def __init__(self, si: ob.SpaceInformation, free: Callable[[object, object], bool]):
-        super().__init__(si)
-        self._free = free
+    class _DenseMotions(ob.MotionValidator):
+        """OMPL's question "is this motion free?", answered by our dense check."""
 
-    def checkMotion(self, s1: object, s2: object) -> bool:  # noqa: N802 (OMPL's name)
-        return self._free(s1, s2)
+        def __init__(self, si: ob.SpaceInformation, free: Callable[[object, object], bool]):
+            super().__init__(si)
+            self._free = free
+
+        def checkMotion(self, s1: object, s2: object) -> bool:  # noqa: N802 (OMPL's name)
+            return self._free(s1, s2)
+
+    return _DenseMotions
 
 
 def motion_poses(
@@ -98,7 +112,7 @@ def planned_waypoints(
             poses = np.concatenate([poses[::coarse], poses[-1:]])
         return checker.first_blocked(poses) is None
 
-    validator = _DenseMotions(info, free)
+    validator = _dense_motions()(info, free)
     info.setMotionValidator(validator)
     planner = og.RRTConnect(info)
     planner.setRange(TREE_STEP)

@@ -11,11 +11,17 @@ from __future__ import annotations
 
 import threading
 from collections.abc import Callable
-
-from ompl import base as ob
-from ompl import util as ou
+from typing import TYPE_CHECKING
 
 from robocram.execution import checkpoint
+from robocram.robots.lazy_library import LazyLibrary
+
+if TYPE_CHECKING:
+    from ompl import base as ob
+    from ompl import util as ou
+else:
+    ob = LazyLibrary("ompl.base")
+    ou = LazyLibrary("ompl.util")
 
 OMPL_LOCK = threading.Lock()  # OMPL's random number generator is one per process
 POLLS_PER_CHECK = 4  # termination polls allowed per budgeted check (OMPL may poll idly)

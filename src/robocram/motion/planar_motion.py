@@ -9,12 +9,18 @@ heading no more than 0.02 rad. Headings come out unwrapped (continuous along the
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
-from ompl import base as ob
 
 from robocram.motion.base_collision import planar_steps
 from robocram.motion.robot_footprint import FloatArray
+from robocram.robots.lazy_library import LazyLibrary
+
+if TYPE_CHECKING:
+    from ompl import base as ob
+else:
+    ob = LazyLibrary("ompl.base")
 
 
 def wrapped(angle: float) -> float:

@@ -11,13 +11,20 @@ from __future__ import annotations
 import math
 from collections.abc import Collection
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
-import coal
 import numpy as np
-import pinocchio as pin
 from numpy.typing import NDArray
 
 from robocram.kinematics.robot_kinematics import RobotKinematics
+from robocram.robots.lazy_library import LazyLibrary
+
+if TYPE_CHECKING:
+    import coal
+    import pinocchio as pin
+else:
+    coal = LazyLibrary("coal")
+    pin = LazyLibrary("pinocchio")
 
 
 @dataclass(frozen=True)

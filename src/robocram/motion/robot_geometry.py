@@ -12,15 +12,22 @@ import dataclasses
 import threading
 from collections.abc import Collection
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
-import coal
 import numpy as np
-import pinocchio as pin
 
 from robocram.kinematics.robot_kinematics import RobotKinematics, pose_to_se3, robot_kinematics
 from robocram.motion.coal_shapes import coal_geometries
 from robocram.motion.joint_trajectory import FloatArray
 from robocram.robots import RobotModel
+from robocram.robots.lazy_library import LazyLibrary
+
+if TYPE_CHECKING:
+    import coal
+    import pinocchio as pin
+else:
+    coal = LazyLibrary("coal")
+    pin = LazyLibrary("pinocchio")
 
 
 @dataclass(frozen=True)

@@ -8,11 +8,11 @@ with the same dense segment check as every other path (:mod:`segment_check`).
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
 import numpy as np
-from ompl import base as ob
-from ompl import geometric as og
 
 from robocram.motion.configuration_checker import ConfigurationChecker
 from robocram.motion.errors import MotionError
@@ -20,34 +20,48 @@ from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.ompl_query import POLLS_PER_CHECK, OmplQuery
 from robocram.motion.segment_check import CheckCounter, segment_free
 from robocram.motion.travel_bound import TravelBound
+from robocram.robots.lazy_library import LazyLibrary
+
+if TYPE_CHECKING:
+    from ompl import base as ob
+    from ompl import geometric as og
+else:
+    ob = LazyLibrary("ompl.base")
+    og = LazyLibrary("ompl.geometric")
 
 RANGE = 1.5  # [rad] longest tree edge: long edges checked coarsely reach round in few states
 
 
-class _DenseMotions(ob.MotionValidator):
-    """OMPL asks whether a tree edge is free; the dense segment check answers."""
+@functools.cache
+def _dense_motions() -> type:
+    """The motion validator class, made at first use: it subclasses OMPL's, loaded then."""
 
-    def __init__(
-        self,
-        si: ob.SpaceInformation,
-        checker: ConfigurationChecker,
-        bound: TravelBound,
-        counter: CheckCounter,
-        width: int,
-    ) -> None:
-        super().__init__(si)
-        self._checker = checker
-        self._bound = bound
-        self._counter = counter
-        self._width = width
+    class _DenseMotions(ob.MotionValidator):
+        """OMPL asks whether a tree edge is free; the dense segment check answers."""
 
-    def checkMotion(self, s1: ob.State, s2: ob.State, *rest: object) -> bool:  # noqa: N802
-        a = np.array([s1[i] for i in range(self._width)])
-        b = np.array([s2[i] for i in range(self._width)])
-        self._counter.checks += 1
-        if not self._checker.is_free(b):  # OMPL takes s1 as valid, not s2
-            return False
-        return segment_free(self._checker, a, b, self._bound, self._counter)
+        def __init__(
+            self,
+            si: ob.SpaceInformation,
+            checker: ConfigurationChecker,
+            bound: TravelBound,
+            counter: CheckCounter,
+            width: int,
+        ) -> None:
+            super().__init__(si)
+            self._checker = checker
+            self._bound = bound
+            self._counter = counter
+            self._width = width
+
+        def checkMotion(self, s1: ob.State, s2: ob.State, *rest: object) -> bool:  # noqa: N802
+            a = np.array([s1[i] for i in range(self._width)])
+            b = np.array([s2[i] for i in range(self._width)])
+            self._counter.checks += 1
+            if not self._checker.is_free(b):  # OMPL takes s1 as valid, not s2
+                return False
+            return segment_free(self._checker, a, b, self._bound, self._counter)
+
+    return _DenseMotions
 
 
 def rrt_connect(
@@ -84,7 +98,7 @@ def rrt_connect(
         return checker.is_free([state[i] for i in range(width)])
 
     setup.setStateValidityChecker(valid)
-    validator = _DenseMotions(si, checker, bound, counter, width)
+    validator = _dense_motions()(si, checker, bound, counter, width)
     si.setMotionValidator(validator)
     a, b = space.allocState(), space.allocState()
     for i in range(width):

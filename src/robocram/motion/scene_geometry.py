@@ -11,9 +11,9 @@ are left out. What is left is tested in C++ through a broadphase, never pair by 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pinocchio as pin
 from numpy.typing import NDArray
 
 from robocram.kinematics.robot_kinematics import RobotKinematics, pose_to_se3, robot_kinematics
@@ -26,6 +26,12 @@ from robocram.motion.self_collision import (
     adjacent_pairs,
     moving_group,
 )
+from robocram.robots.lazy_library import LazyLibrary
+
+if TYPE_CHECKING:
+    import pinocchio as pin
+else:
+    pin = LazyLibrary("pinocchio")
 
 
 @dataclass(frozen=True)

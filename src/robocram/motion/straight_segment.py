@@ -14,14 +14,21 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import cached_property
+from typing import TYPE_CHECKING
 
 import numpy as np
-from ruckig import InputParameter, Result, Ruckig, Synchronization, Trajectory
 
 from robocram.motion.errors import MotionError
 from robocram.motion.jerk_profile import JerkProfile, jerk_profile
 from robocram.motion.joint_limits import JointLimits
 from robocram.motion.joint_trajectory import FloatArray
+from robocram.robots.lazy_library import LazyLibrary
+
+if TYPE_CHECKING:
+    import ruckig
+    from ruckig import Trajectory
+else:
+    ruckig = LazyLibrary("ruckig")
 
 STRAIGHT_TOLERANCE = 1e-6  # [rad | m] largest distance of a ruckig sample from the line
 CHECK_SAMPLES = 64  # samples per segment on which straightness is checked
@@ -153,7 +160,7 @@ def rest_to_rest(
 ) -> Trajectory:
     """Ruckig's offline, phase-synchronised, rest-to-rest profile."""
     dofs = len(start)
-    params = InputParameter(dofs)
+    params = ruckig.InputParameter(dofs)
     params.current_position = [float(v) for v in start]
     params.target_position = [float(v) for v in end]
     params.current_velocity = [0.0] * dofs
@@ -163,10 +170,10 @@ def rest_to_rest(
     params.max_velocity = [float(v) for v in velocity]
     params.max_acceleration = [float(v) for v in acceleration]
     params.max_jerk = [float(v) for v in jerk]
-    params.synchronization = Synchronization.Phase
-    trajectory = Trajectory(dofs)
-    result = Ruckig(dofs).calculate(params, trajectory)
-    if result not in (Result.Working, Result.Finished):
+    params.synchronization = ruckig.Synchronization.Phase
+    trajectory = ruckig.Trajectory(dofs)
+    result = ruckig.Ruckig(dofs).calculate(params, trajectory)
+    if result not in (ruckig.Result.Working, ruckig.Result.Finished):
         raise MotionError(
             f"ruckig could not time the segment {list(start)} -> {list(end)}: {result}; "
             "check that the joint limits are positive and finite"

@@ -14,12 +14,18 @@ from __future__ import annotations
 import itertools
 import math
 from collections.abc import Mapping
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pinocchio as pin
 
+from robocram.robots.lazy_library import LazyLibrary
 from robocram.robots.mimic import mimic_followers
 from robocram.robots.robot_model import RobotModel
+
+if TYPE_CHECKING:
+    import pinocchio as pin
+else:
+    pin = LazyLibrary("pinocchio")
 
 CLEARANCE = 0.01  # [m] links nearer than this on their meshes meet: a pose checked here is
 # checked again on PyBullet's convex hulls, which reach past the meshes (a Fetch's parked

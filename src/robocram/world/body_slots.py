@@ -15,8 +15,6 @@ from robocram.world.errors import UnknownLinkError
 from robocram.world.pybullet_backend import pybullet
 from robocram.world.world_object import WorldObject
 
-_MOVABLE_TYPES = (pybullet.JOINT_REVOLUTE, pybullet.JOINT_PRISMATIC)
-
 
 def index_body(handle: WorldObject, body: int, cid: int) -> None:
     """Name ``body``'s links and joints in ``handle``'s tables, by slot."""
@@ -26,7 +24,7 @@ def index_body(handle: WorldObject, body: int, cid: int) -> None:
         info = pybullet.getJointInfo(body, i, physicsClientId=cid)
         handle.joint_index[info[1].decode()] = handle.slot(body, i)
         handle.link_index[info[12].decode()] = handle.slot(body, i)
-        if info[2] in _MOVABLE_TYPES:
+        if info[2] in (pybullet.JOINT_REVOLUTE, pybullet.JOINT_PRISMATIC):
             handle.movable_joints.append(info[1].decode())
 
 

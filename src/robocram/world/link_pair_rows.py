@@ -13,6 +13,8 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from robocram.world.sorted_unique import sorted_unique
+
 IntArray = NDArray[np.intp]
 
 
@@ -30,6 +32,6 @@ class LinkPairRows:
         """The rows of ``pairs`` of link names; a name not in ``link_index`` raises KeyError."""
         firsts = np.array([link_index[a] for a, _ in pairs], dtype=np.intp)
         seconds = np.array([link_index[b] for _, b in pairs], dtype=np.intp)
-        used = np.union1d(firsts, seconds)
+        used = sorted_unique(np.concatenate([firsts, seconds]))
         cells = np.searchsorted(used, firsts) * len(used) + np.searchsorted(used, seconds)
         return cls(tuple(used.tolist()), firsts, seconds, cells)

@@ -5,15 +5,21 @@ the wheels we use, to standard output in some builds): into every command's outp
 test's captured text. Every module of ``robocram.world`` imports ``pybullet`` from here,
 so the banner is silenced in one place: file descriptors 1 and 2 point at the null device
 while the extension loads, C's output buffers are flushed there, and both are restored.
+It loads at the first use of ``pybullet``, not at import (issue 40).
 """
 
 from __future__ import annotations
 
 import contextlib
 import ctypes
+import importlib
 import os
 import sys
 from collections.abc import Iterator
+from types import ModuleType
+from typing import TYPE_CHECKING
+
+from robocram.robots.lazy_library import LazyLibrary
 
 __all__ = ["pybullet"]
 
@@ -40,5 +46,13 @@ def _silenced(descriptors: tuple[int, ...] = (1, 2)) -> Iterator[None]:
         os.close(null)
 
 
-with _silenced():
+def _silenced_import(name: str) -> ModuleType:
+    """Import ``name`` with its banner sent to the null device."""
+    with _silenced():
+        return importlib.import_module(name)
+
+
+if TYPE_CHECKING:
     import pybullet
+else:
+    pybullet = LazyLibrary("pybullet", _silenced_import)

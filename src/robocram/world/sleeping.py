@@ -19,17 +19,24 @@ from collections.abc import Iterator, Sequence
 
 from robocram.world.pybullet_backend import pybullet
 
-ASLEEP = pybullet.ACTIVATION_STATE_ENABLE_SLEEPING | pybullet.ACTIVATION_STATE_SLEEP
-AWAKE = pybullet.ACTIVATION_STATE_WAKE_UP | pybullet.ACTIVATION_STATE_DISABLE_SLEEPING
+
+def _asleep() -> int:
+    """PyBullet's activation state of a body that may sleep and sleeps now."""
+    return int(pybullet.ACTIVATION_STATE_ENABLE_SLEEPING | pybullet.ACTIVATION_STATE_SLEEP)
+
+
+def _awake() -> int:
+    """PyBullet's activation state of a body awake that never sleeps."""
+    return int(pybullet.ACTIVATION_STATE_WAKE_UP | pybullet.ACTIVATION_STATE_DISABLE_SLEEPING)
 
 
 @contextlib.contextmanager
 def asleep(bodies: Sequence[int], cid: int) -> Iterator[None]:
     """``bodies`` (ids) sleep within the block; afterwards they are awake and never sleep."""
     for body in bodies:
-        pybullet.changeDynamics(body, -1, activationState=ASLEEP, physicsClientId=cid)
+        pybullet.changeDynamics(body, -1, activationState=_asleep(), physicsClientId=cid)
     try:
         yield
     finally:
         for body in bodies:
-            pybullet.changeDynamics(body, -1, activationState=AWAKE, physicsClientId=cid)
+            pybullet.changeDynamics(body, -1, activationState=_awake(), physicsClientId=cid)
