@@ -34,7 +34,7 @@ from robocram.logic.goal_writer import (
     slots_in,
     term_parts,
 )
-from robocram.logic.template import Tmpl
+from robocram.logic.template import Slot, Tmpl
 from robocram.logic.terms import Var
 from robocram.logic.value import Value
 
@@ -181,12 +181,43 @@ class ClauseWriter(GoalWriter):
             return self.build(g)
         name, args = parts
         if (name, len(args)) in _CONTROL:
+            compiled = self.control(name, args)
+            if compiled is not None:
+                return compiled
             inner = "".join(f"{self.goal(a)}, " for a in args)
             return f"new_term(Term, ({self.const(name)}, ({inner})))"
         if type(g) is Tmpl:  # a call: a plain tuple the machine recognises by CALL
             inner = "".join(f"{self.build(a)}, " for a in args)
             return f"({self.const((name, len(args)))}, ({inner}), CALL)"
         return self.build(g)
+
+    def control(self, name: str, args: tuple[Value, ...]) -> str | None:
+        """A conjunction, disjunction or if-then(-else) as a marked goal tuple (see
+        inline_goal.py), so the machine runs it without looking up the construct; None
+        for the others, and for `(X ; B)` with X a variable, which stays a term so that X
+        bound to `(C -> T)` at run time still reads as an if-then-else.
+        """
+        if name == ",":
+            return self.sequence(*args)
+        if name == "->":
+            return f"({self.sequence(args[0])}, {self.sequence(args[1])}, IFTHEN)"
+        if name != ";" or type(args[0]) is Slot:
+            return None
+        left = term_parts(args[0])
+        right = self.sequence(args[1])
+        if left is not None and len(left[1]) == 2 and left[0] in ("->", "*->"):
+            if left[0] == "*->":
+                return None
+            cond, then = self.sequence(left[1][0]), self.sequence(left[1][1])
+            return f"({cond}, ({then}, {right}), ITE)"
+        return f"({self.sequence(args[0])}, {right}, DISJ)"
+
+    def sequence(self, *parts: Value) -> str:
+        """One goal running the conjunction of `parts`: its goal, or a SEQ of its goals."""
+        exprs = self.goals([g for part in parts for g in _conjuncts(part)])
+        if len(exprs) == 1:
+            return exprs[0]
+        return f"(({''.join(e + ', ' for e in exprs)}), None, SEQ)"
 
     def goals(self, body: list[Value]) -> list[str]:
         """Expressions of the continuation's goals: each run of inline goals is one goal."""

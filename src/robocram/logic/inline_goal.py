@@ -9,6 +9,12 @@ of a `Term` to make, and the machine looks the predicate up by the ready-made ke
 private markers tell these from any Python tuple a program passed as a goal (that stays
 a type error); they never appear in a term a program can read.
 
+Control constructs in a clause body are compiled the same way, so that the machine runs
+them without looking up `;/2` or `,/2`: `(goals, None, SEQ)` is a conjunction,
+`(left, right, DISJ)` a disjunction, `(cond, (then, else), ITE)` an if-then-else,
+`(cond, then, IFTHEN)` an if-then, and `(b, None, CUT)` the cut to choicepoint `b` that
+ends a condition. Each part is one goal (a SEQ for several).
+
 >>> goal = (lambda trail, x: x > 1, (2,), INLINE)
 >>> goal[2] is INLINE and goal[0]([], *goal[1])
 True
@@ -16,11 +22,11 @@ True
 
 from __future__ import annotations
 
-__all__ = ["CALL", "INLINE", "GoalMark"]
+__all__ = ["CALL", "CUT", "DISJ", "IFTHEN", "INLINE", "ITE", "MARKS", "SEQ", "GoalMark"]
 
 
 class GoalMark:
-    """The last item of a goal tuple that clause code built: CALL or INLINE."""
+    """The last item of a goal tuple that clause code built: CALL, INLINE or a control mark."""
 
     __slots__ = ("name",)
 
@@ -33,3 +39,9 @@ class GoalMark:
 
 CALL = GoalMark("CALL")
 INLINE = GoalMark("INLINE")
+SEQ = GoalMark("SEQ")
+DISJ = GoalMark("DISJ")
+ITE = GoalMark("ITE")
+IFTHEN = GoalMark("IFTHEN")
+CUT = GoalMark("CUT")
+MARKS = (CALL, INLINE, SEQ, DISJ, ITE, IFTHEN, CUT)
