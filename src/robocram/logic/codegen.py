@@ -145,13 +145,14 @@ class ClauseWriter(GoalWriter):
             body.pop(0)
         if body and self.inline_if(clause, body):
             return
+        held = set(self.known)  # the slots that hold a value before the continuation
         self.fresh(body, 1)
         if len(body) == 1 and _is_self_call(body[0], clause):
             args = "".join(f"{self.build(a)}, " for a in term_parts(body[0])[1])  # type: ignore[index]
             self.self_call(args)
             return
         cont = "nxt"
-        for g in reversed(self.goals(body)):
+        for g in reversed(self.goals(body, held)):
             cont = f"({g}, cb, {cont})"
         self.exit(cont)
 
@@ -219,29 +220,44 @@ class ClauseWriter(GoalWriter):
             return exprs[0]
         return f"(({''.join(e + ', ' for e in exprs)}), None, SEQ)"
 
-    def goals(self, body: list[Value]) -> list[str]:
-        """Expressions of the continuation's goals: each run of inline goals is one goal."""
+    def goals(self, body: list[Value], held: set[int] | None = None) -> list[str]:
+        """Expressions of the continuation's goals: each run of inline goals is one goal.
+
+        `held`: the slots holding a value before `body` runs (the others are new
+        variables); a run of inline goals may bind one that no goal before it names
+        without unifying (see inline_function).
+        """
         out: list[str] = []
+        used = set(held) if held is not None else None
         i = 0
         while i < len(body):
             j = i
             while j < len(body) and inlinable(body[j]):
                 j += 1
-            run = self.inline_run(body[i:j]) if j > i else None
+            run = self.inline_run(body[i:j], used) if j > i else None
             if run is not None:
                 out.append(run)
-                i = j
+                step = j - i
             else:
                 out.append(self.goal(body[i]) if j == i else self.build(body[i]))
-                i += 1
+                step = 1
+            if used is not None:
+                for g in body[i : i + step]:
+                    used.update(slots_in(g, []))
+            i += step
         return out
 
-    def inline_run(self, goals: list[Value]) -> str | None:
-        """Expression of one inline goal running `goals` (their slots all hold values)."""
+    def inline_run(self, goals: list[Value], used: set[int] | None = None) -> str | None:
+        """Expression of one inline goal running `goals` (their slots all hold values).
+
+        `used`: the slots that may be bound or shared when the run starts; None when
+        that is not known.
+        """
         slots: list[int] = []
         for g in goals:
             slots_in(g, slots)
-        fn = inline_function(goals, slots)
+        unbound = set() if used is None else {i for i in slots if i not in used}
+        fn = inline_function(goals, slots, unbound)
         if fn is None:
             return None
         values = "".join(f"v{i}, " for i in slots)
