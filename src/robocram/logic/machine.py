@@ -190,8 +190,9 @@ class Machine:
                         else:
                             cont = self._call_other(goal, len(cps), nxt)
                         continue
-                    p = preds.get(name)  # a call's first item is its (name, arity) key
-                    name = name[0]
+                    # A call's first item is its (name, arity) key; `name` stays that key
+                    # until a path below needs the name itself.
+                    p = preds.get(name)
                 elif tg is Term:
                     name = goal[0]
                     args = goal[1]
@@ -208,7 +209,7 @@ class Machine:
                     cont = self._call_other(goal, len(cps), nxt)
                     continue
                 if p is None:
-                    self._undefined(name, len(args))
+                    self._undefined(name[0] if type(name) is tuple else name, len(args))
                     cont = backtrack(cps)
                     continue
                 proc = p.proc  # only user predicates have one
@@ -239,15 +240,18 @@ class Machine:
                 elif k == NONDET:
                     cps.append([GEN, len(trail), p.fn(self, args), nxt])
                     cont = backtrack(cps)
-                elif name == ",":
-                    cont = (args[0], cutb, (args[1], cutb, nxt))
-                elif name == "$cut":  # the end of an if-then-else's condition
-                    del cps[args[0] :]
-                    cont = nxt
                 else:
-                    cont = run_control(self, name, args, cutb, nxt, cps)
-                    if cont is FAIL:
-                        cont = backtrack(cps)
+                    if type(name) is tuple:
+                        name = name[0]
+                    if name == ",":
+                        cont = (args[0], cutb, (args[1], cutb, nxt))
+                    elif name == "$cut":  # the end of an if-then-else's condition
+                        del cps[args[0] :]
+                        cont = nxt
+                    else:
+                        cont = run_control(self, name, args, cutb, nxt, cps)
+                        if cont is FAIL:
+                            cont = backtrack(cps)
         except PrologError:
             raise
         except Exception as err:  # a built-in's own failure: make it a Prolog error
