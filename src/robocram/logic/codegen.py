@@ -216,9 +216,10 @@ class ClauseWriter(GoalWriter):
     def sequence(self, *parts: Value) -> str:
         """One goal running the conjunction of `parts`: its goal, or a SEQ of its goals."""
         exprs = self.goals([g for part in parts for g in _conjuncts(part)])
-        if len(exprs) == 1:
-            return exprs[0]
-        return f"(({''.join(e + ', ' for e in exprs)}), None, SEQ)"
+        out = exprs[-1]
+        for e in reversed(exprs[:-1]):  # (first, rest, SEQ), the rest nested the same way
+            out = f"({e}, {out}, SEQ)"
+        return out
 
     def goals(self, body: list[Value], held: set[int] | None = None) -> list[str]:
         """Expressions of the continuation's goals: each run of inline goals is one goal.

@@ -154,7 +154,7 @@ _INLINE_BINARY = frozenset(["is", "=", "==", "\\=="])
 def inline_function(
     goals: list[Value], slots: list[int], unbound: set[int] | frozenset[int] = frozenset()
 ) -> Callable[..., bool] | None:
-    """Compile inline goals to `fn(trail, *values of slots)`: true when all succeed.
+    """Compile inline goals to `fn(trail, values of slots)`: true when all succeed.
 
     `unbound`: slots holding a new variable that nothing else can have bound or shared
     when the run starts; `X is E` with such an X binds it without unifying, until a goal
@@ -168,8 +168,9 @@ def inline_function(
             return None
         writer.unbound.difference_update(slots_in(g, []))
     params = ", ".join(f"k{i}" for i in range(len(writer.consts)))
-    values = "".join(f", v{i}" for i in slots)
-    head = [f"def make({params}):", f"  def fn(trail{values}):"]
+    head = [f"def make({params}):", "  def fn(trail, values):"]
+    if slots:  # one tuple, unpacked here: a call with *values costs several times more
+        head.append(f"    {''.join(f'v{i}, ' for i in slots)}= values")
     source = "\n".join([*head, *writer.lines, "    return True", "  return fn", ""])
     return make_factory(source)(*writer.consts)
 

@@ -2,7 +2,7 @@
 
 Clause code runs the tests, `is/2` and `=/2` goals that lead a body in its own frame.
 Those that follow a call cannot: the call runs first, in the machine. Each run of them
-becomes one goal `(fn, values, INLINE)`, and the machine calls `fn(trail, *values)`
+becomes one goal `(fn, values, INLINE)`, and the machine calls `fn(trail, values)`
 (true to go on, false to fail) without looking up a predicate. Calls are built the same
 way, as `((name, arity), args, CALL)` instead of `Term`s: a plain tuple costs a third
 of a `Term` to make, and the machine looks the predicate up by the ready-made key. The
@@ -10,13 +10,13 @@ private markers tell these from any Python tuple a program passed as a goal (tha
 a type error); they never appear in a term a program can read.
 
 Control constructs in a clause body are compiled the same way, so that the machine runs
-them without looking up `;/2` or `,/2`: `(goals, None, SEQ)` is a conjunction,
+them without looking up `;/2` or `,/2`: `(first, rest, SEQ)` is a conjunction,
 `(left, right, DISJ)` a disjunction, `(cond, (then, else), ITE)` an if-then-else,
 `(cond, then, IFTHEN)` an if-then, and `(b, None, CUT)` the cut to choicepoint `b` that
 ends a condition. Each part is one goal (a SEQ for several).
 
->>> goal = (lambda trail, x: x > 1, (2,), INLINE)
->>> goal[2] is INLINE and goal[0]([], *goal[1])
+>>> goal = (lambda trail, values: values[0] > 1, (2,), INLINE)
+>>> goal[2] is INLINE and goal[0]([], goal[1])
 True
 """
 

@@ -169,7 +169,7 @@ class Machine:
                     name, args, mark = goal
                     if mark is not CALL:
                         if mark is INLINE:
-                            cont = nxt if name(trail, *args) else backtrack(cps)
+                            cont = nxt if name(trail, args) else backtrack(cps)
                         elif mark is DISJ:
                             cps.append([ALT, len(trail), (args, cutb, nxt)])
                             cont = (name, cutb, nxt)
@@ -181,9 +181,7 @@ class Machine:
                             del cps[name:]
                             cont = nxt
                         elif mark is SEQ:
-                            for g in reversed(name):
-                                nxt = (g, cutb, nxt)
-                            cont = nxt
+                            cont = (name, cutb, (args, cutb, nxt))
                         elif mark is IFTHEN:
                             b = len(cps)
                             cont = (name, b, ((b, None, CUT), 0, (args, cutb, nxt)))
