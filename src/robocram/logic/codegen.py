@@ -193,7 +193,7 @@ class ClauseWriter(GoalWriter):
         return self.build(g)
 
     def control(self, name: str, args: tuple[Value, ...]) -> str | None:
-        """A conjunction, disjunction or if-then(-else) as a marked goal tuple (see
+        """A conjunction, disjunction, if-then(-else) or negation as a marked goal tuple (see
         inline_goal.py), so the machine runs it without looking up the construct; None
         for the others, and for `(X ; B)` with X a variable, which stays a term so that X
         bound to `(C -> T)` at run time still reads as an if-then-else.
@@ -202,6 +202,8 @@ class ClauseWriter(GoalWriter):
             return self.sequence(*args)
         if name == "->":
             return f"({self.sequence(args[0])}, {self.sequence(args[1])}, IFTHEN)"
+        if name == "\\+":
+            return f"({self.sequence(args[0])}, None, NOT)"
         if name != ";" or type(args[0]) is Slot:
             return None
         left = term_parts(args[0])

@@ -17,7 +17,7 @@ from typing import Any
 from robocram.logic.arith import BINARY_FUNCTIONS, apply_binary, evaluate
 from robocram.logic.functor_arg import arg_check, functor_make
 from robocram.logic.goal_terms import TERM_GOALS, emit_term_goal
-from robocram.logic.inline_goal import CALL, DISJ, IFTHEN, INLINE, ITE, SEQ
+from robocram.logic.inline_goal import CALL, DISJ, IFTHEN, INLINE, ITE, NOT, SEQ
 from robocram.logic.lru import LRUCache
 from robocram.logic.template import Slot, Tmpl
 from robocram.logic.terms import Term, Var, new_term
@@ -49,6 +49,7 @@ _NAMESPACE: dict[str, object] = {
     "DISJ": DISJ,
     "ITE": ITE,
     "IFTHEN": IFTHEN,
+    "NOT": NOT,
     "univ_list": univ_list,
     "univ_compose": univ_compose,
     "new_term": new_term,

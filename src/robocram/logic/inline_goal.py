@@ -12,8 +12,8 @@ a type error); they never appear in a term a program can read.
 Control constructs in a clause body are compiled the same way, so that the machine runs
 them without looking up `;/2` or `,/2`: `(first, rest, SEQ)` is a conjunction,
 `(left, right, DISJ)` a disjunction, `(cond, (then, else), ITE)` an if-then-else,
-`(cond, then, IFTHEN)` an if-then, and `(b, None, CUT)` the cut to choicepoint `b` that
-ends a condition. Each part is one goal (a SEQ for several).
+`(cond, then, IFTHEN)` an if-then, `(goal, None, NOT)` a negation, and `(b, None, CUT)`
+the cut to choicepoint `b` that ends a condition. Each part is one goal (a SEQ for several).
 
 >>> goal = (lambda trail, values: values[0] > 1, (2,), INLINE)
 >>> goal[2] is INLINE and goal[0]([], goal[1])
@@ -22,7 +22,7 @@ True
 
 from __future__ import annotations
 
-__all__ = ["CALL", "CUT", "DISJ", "IFTHEN", "INLINE", "ITE", "MARKS", "SEQ", "GoalMark"]
+__all__ = ["CALL", "CUT", "DISJ", "IFTHEN", "INLINE", "ITE", "MARKS", "NOT", "SEQ", "GoalMark"]
 
 
 class GoalMark:
@@ -44,4 +44,5 @@ DISJ = GoalMark("DISJ")
 ITE = GoalMark("ITE")
 IFTHEN = GoalMark("IFTHEN")
 CUT = GoalMark("CUT")
-MARKS = (CALL, INLINE, SEQ, DISJ, ITE, IFTHEN, CUT)
+NOT = GoalMark("NOT")
+MARKS = (CALL, INLINE, SEQ, DISJ, ITE, IFTHEN, CUT, NOT)

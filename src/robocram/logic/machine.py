@@ -35,7 +35,7 @@ from robocram.logic.errors import (
     PrologTypeError,
     UnknownPredicateError,
 )
-from robocram.logic.inline_goal import CALL, CUT, DISJ, IFTHEN, INLINE, ITE, MARKS, SEQ
+from robocram.logic.inline_goal import CALL, CUT, DISJ, IFTHEN, INLINE, ITE, MARKS, NOT, SEQ
 from robocram.logic.limits import PROC_LOOPS, Budget
 from robocram.logic.occurs import unify_checked
 from robocram.logic.predicate import DET, NONDET, USER, WARM_CALLS, Pred
@@ -185,6 +185,10 @@ class Machine:
                         elif mark is IFTHEN:
                             b = len(cps)
                             cont = (name, b, ((b, None, CUT), 0, (args, cutb, nxt)))
+                        elif mark is NOT:
+                            b = len(cps)
+                            cps.append([ALT, len(trail), nxt])
+                            cont = (name, b + 1, ((b, None, CUT), 0, FAIL))
                         else:
                             cont = self._call_other(goal, len(cps), nxt)
                         continue
