@@ -67,7 +67,7 @@ class Pred:
         self.erased = 0  # retracted clauses still in `clauses` (dropped in batches)
         # (store, lo, i): every clause in store[lo:i] is retracted, so a scan of the
         # clauses from lo may start at i (retracting the first clause again and again).
-        self.skip: tuple[list[Any], int, int] | None = None
+        self.skip: tuple[list[Clause], int, int] | None = None
 
     def warm_up(self) -> None:
         """Count a call; on the third, compile the switching procedure if it qualifies."""
