@@ -343,3 +343,33 @@ def test_control_constructs_in_clause_code_after_a_call() -> None:
     for _ in range(3):
         with pytest.raises(PrologTypeError, match="callable"):
             kb.holds("pyt(T)", T=("a", (), None))
+
+
+def test_is_into_a_new_variable_after_a_call_binds_it_again_on_backtracking() -> None:
+    # `Y is E` after a call binds the new Y directly; backtracking into the call undoes it.
+    kb = KnowledgeBase()
+    kb.consult(
+        "v(1). v(2). v(3).\n"
+        "tens(X, Y) :- v(X), Y is X * 10.\n"
+        "alias(X, Y) :- v(X), Z = Y, Z is X + 1.\n"
+        "twice(X, Y) :- v(X), Y is X + 1, Y is X + 1.\n"
+        "undef(X) :- v(_), X is Y + 1, Y = 1.\n"
+    )
+    assert [(a["X"], a["Y"]) for a in run_twice(kb, "tens(X, Y)")] == [(1, 10), (2, 20), (3, 30)]
+    assert [(a["X"], a["Y"]) for a in run_twice(kb, "alias(X, Y)")] == [(1, 2), (2, 3), (3, 4)]
+    assert [a["Y"] for a in run_twice(kb, "twice(_, Y)")] == [2, 3, 4]
+    assert run_twice(kb, "tens(2, 21)") == []
+    for _ in range(3):
+        with pytest.raises(PrologInstantiationError):
+            kb.holds("undef(_)")
+
+
+def test_small_ground_compounds_in_heads_read_and_bind_like_unify() -> None:
+    kb = KnowledgeBase()
+    kb.consult("g([a, b], f(1, x)).\ng([a], one).\ng(f(2.0), float).\n")
+    assert [a["X"] for a in run_twice(kb, "g(X, _)")] == [["a", "b"], ["a"], Term("f", (2.0,))]
+    assert [a["T"] for a in run_twice(kb, "g([a|T], _)")] == [["b"], []]
+    assert run_twice(kb, "g([a, b], f(N, x))") == [{"N": 1}]
+    assert run_twice(kb, "g([a, c], _)") == []
+    assert run_twice(kb, "g(f(2), _)") == []
+    assert run_twice(kb, "g([a, B|T], Y)") == [{"B": "b", "T": [], "Y": Term("f", (1, "x"))}]

@@ -110,3 +110,26 @@ def test_uncaught_iso_error_surfaces_as_python_exception(kb: KnowledgeBase) -> N
     assert info.value.term.args[0].name == "type_error"
     with pytest.raises(PrologTypeError):
         kb.holds("throw(error(type_error(integer, x), ctx))")
+
+
+def test_compiled_control_constructs_in_clause_bodies() -> None:
+    # Disjunctions, if-then(-else) and conjunctions inside a body run as marked goals;
+    # cut stays transparent in a branch and local to a condition. Checked against swipl.
+    kb = KnowledgeBase()
+    kb.consult(
+        "m(1). m(2). m(3).\n"
+        "t1(X) :- m(X), (X > 1, ! ; fail).\n"
+        "t2(X) :- m(Y), (Y >= 2 -> X = Y ; X = none).\n"
+        "t3(X) :- m(X), (m(Z), Z > 1, !, Z == 2 -> true ; true).\n"
+        "t4(X) :- m(Y), (Y > 5 -> X = Y).\n"
+        "t4(late).\n"
+        "t5(X) :- m(A), (A = 1, m(B) ; A = 2, B = x), X = A-B.\n"
+        "t6(L) :- findall(X-Y, (m(X), (X = 1 -> Y = a ; X = 2 -> Y = b ; Y = c)), L).\n"
+    )
+    assert [a["X"] for a in kb.query("t1(X)")] == [2]
+    assert [a["X"] for a in kb.query("t2(X)")] == ["none", 2, 3]
+    assert [a["X"] for a in kb.query("t3(X)")] == [1, 2, 3]
+    assert [a["X"] for a in kb.query("t4(X)")] == ["late"]
+    assert [str(a["X"]) for a in kb.query("t5(X)")] == ["1-1", "1-2", "1-3", "2-x"]
+    answer = kb.first("t6(L)")
+    assert answer is not None and str(answer["L"]) == "[1-a, 2-b, 3-c]"

@@ -28,3 +28,15 @@ def test_retract_of_many_ground_facts_by_an_unbound_argument() -> None:
     kb.holds("forall(between(1, 3000, I), assertz(e(I)))")
     answer = kb.first("findall(X, retract(e(X)), L), length(L, N), \\+ e(_)")
     assert answer is not None and answer["N"] == 3000
+
+
+def test_retracting_the_first_clause_again_and_again_keeps_the_order() -> None:
+    # A queue: each retract starts past the clauses retracted before it (the skipped run
+    # is remembered), and a clause put in front by asserta/1 is still found first.
+    kb = KnowledgeBase()
+    kb.holds("forall(between(1, 40, I), assertz(q(I)))")
+    answer = kb.first(
+        "findall(_X, (between(1, 5, _), once(retract(q(_X)))), A), asserta(q(0)),"
+        " once(retract(q(Y))), once(retract(q(Z))), findall(_W, q(_W), Rest), length(Rest, N)"
+    )
+    assert answer == {"A": [1, 2, 3, 4, 5], "Y": 0, "Z": 6, "Rest": list(range(7, 41)), "N": 34}

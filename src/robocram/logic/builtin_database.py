@@ -100,7 +100,7 @@ def _snapshot(pred: Pred, head: Value) -> Iterator[Clause]:
     """
     first = deref(head[1][0]) if type(head) is Term and head[1] else None
     if first is None or type(first) is Var:
-        cands, lo = pred.store, pred.head
+        cands, lo = pred.store, pred.first_live()
     else:
         cands, lo = pred.candidates(first), 0
     for i in range(lo, len(cands)):

@@ -34,7 +34,7 @@ from robocram.logic.goal_writer import (
     slots_in,
     term_parts,
 )
-from robocram.logic.template import Tmpl
+from robocram.logic.template import Slot, Tmpl
 from robocram.logic.terms import Var
 from robocram.logic.value import Value
 
@@ -145,13 +145,14 @@ class ClauseWriter(GoalWriter):
             body.pop(0)
         if body and self.inline_if(clause, body):
             return
+        held = set(self.known)  # the slots that hold a value before the continuation
         self.fresh(body, 1)
         if len(body) == 1 and _is_self_call(body[0], clause):
             args = "".join(f"{self.build(a)}, " for a in term_parts(body[0])[1])  # type: ignore[index]
             self.self_call(args)
             return
         cont = "nxt"
-        for g in reversed(self.goals(body)):
+        for g in reversed(self.goals(body, held)):
             cont = f"({g}, cb, {cont})"
         self.exit(cont)
 
@@ -181,6 +182,9 @@ class ClauseWriter(GoalWriter):
             return self.build(g)
         name, args = parts
         if (name, len(args)) in _CONTROL:
+            compiled = self.control(name, args)
+            if compiled is not None:
+                return compiled
             inner = "".join(f"{self.goal(a)}, " for a in args)
             return f"new_term(Term, ({self.const(name)}, ({inner})))"
         if type(g) is Tmpl:  # a call: a plain tuple the machine recognises by CALL
@@ -188,29 +192,75 @@ class ClauseWriter(GoalWriter):
             return f"({self.const((name, len(args)))}, ({inner}), CALL)"
         return self.build(g)
 
-    def goals(self, body: list[Value]) -> list[str]:
-        """Expressions of the continuation's goals: each run of inline goals is one goal."""
+    def control(self, name: str, args: tuple[Value, ...]) -> str | None:
+        """A conjunction, disjunction, if-then(-else) or negation as a marked goal tuple (see
+        inline_goal.py), so the machine runs it without looking up the construct; None
+        for the others, and for `(X ; B)` with X a variable, which stays a term so that X
+        bound to `(C -> T)` at run time still reads as an if-then-else.
+        """
+        if name == ",":
+            return self.sequence(*args)
+        if name == "->":
+            return f"({self.sequence(args[0])}, {self.sequence(args[1])}, IFTHEN)"
+        if name == "\\+":
+            return f"({self.sequence(args[0])}, None, NOT)"
+        if name != ";" or type(args[0]) is Slot:
+            return None
+        left = term_parts(args[0])
+        right = self.sequence(args[1])
+        if left is not None and len(left[1]) == 2 and left[0] in ("->", "*->"):
+            if left[0] == "*->":
+                return None
+            cond, then = self.sequence(left[1][0]), self.sequence(left[1][1])
+            return f"({cond}, ({then}, {right}), ITE)"
+        return f"({self.sequence(args[0])}, {right}, DISJ)"
+
+    def sequence(self, *parts: Value) -> str:
+        """One goal running the conjunction of `parts`: its goal, or a SEQ of its goals."""
+        exprs = self.goals([g for part in parts for g in _conjuncts(part)])
+        out = exprs[-1]
+        for e in reversed(exprs[:-1]):  # (first, rest, SEQ), the rest nested the same way
+            out = f"({e}, {out}, SEQ)"
+        return out
+
+    def goals(self, body: list[Value], held: set[int] | None = None) -> list[str]:
+        """Expressions of the continuation's goals: each run of inline goals is one goal.
+
+        `held`: the slots holding a value before `body` runs (the others are new
+        variables); a run of inline goals may bind one that no goal before it names
+        without unifying (see inline_function).
+        """
         out: list[str] = []
+        used = set(held) if held is not None else None
         i = 0
         while i < len(body):
             j = i
             while j < len(body) and inlinable(body[j]):
                 j += 1
-            run = self.inline_run(body[i:j]) if j > i else None
+            run = self.inline_run(body[i:j], used) if j > i else None
             if run is not None:
                 out.append(run)
-                i = j
+                step = j - i
             else:
                 out.append(self.goal(body[i]) if j == i else self.build(body[i]))
-                i += 1
+                step = 1
+            if used is not None:
+                for g in body[i : i + step]:
+                    used.update(slots_in(g, []))
+            i += step
         return out
 
-    def inline_run(self, goals: list[Value]) -> str | None:
-        """Expression of one inline goal running `goals` (their slots all hold values)."""
+    def inline_run(self, goals: list[Value], used: set[int] | None = None) -> str | None:
+        """Expression of one inline goal running `goals` (their slots all hold values).
+
+        `used`: the slots that may be bound or shared when the run starts; None when
+        that is not known.
+        """
         slots: list[int] = []
         for g in goals:
             slots_in(g, slots)
-        fn = inline_function(goals, slots)
+        unbound = set() if used is None else {i for i in slots if i not in used}
+        fn = inline_function(goals, slots, unbound)
         if fn is None:
             return None
         values = "".join(f"v{i}, " for i in slots)

@@ -7,6 +7,8 @@ fail); `functor_make` builds the term of `functor(T, F, N)` with T unbound.
 
 from __future__ import annotations
 
+from itertools import repeat
+
 from robocram.logic.errors import (
     PrologDomainError,
     PrologInstantiationError,
@@ -51,6 +53,24 @@ def arg_check(n: Value, t: Value) -> int:
     return k
 
 
+def fresh_vars(n: int) -> tuple[Var, ...]:
+    """`n` new unbound variables; small counts spelt out (no comprehension frame to run).
+
+    >>> len(fresh_vars(2)), len(fresh_vars(7))
+    (2, 7)
+    """
+    if n == 1:
+        return (Var(),)
+    if n == 2:
+        return (Var(), Var())
+    if n == 3:
+        return (Var(), Var(), Var())
+    return tuple(map(_make, repeat(Var, n)))
+
+
+_make = type.__call__
+
+
 def functor_make(name: Value, arity: Value) -> Value:
     """The most general term with functor name/arity (`functor(T, F, N)`, T unbound).
 
@@ -60,7 +80,7 @@ def functor_make(name: Value, arity: Value) -> Value:
     name = _deref(name)
     n = _deref(arity)
     if type(name) is str and type(n) is int and n > 0:  # the common case, checked below
-        return new_term(Term, (name, tuple([Var() for _ in range(n)])))
+        return new_term(Term, (name, fresh_vars(n)))
     if type(name) is Var:
         raise PrologInstantiationError("functor/3: both the term and the name are unbound")
     n = need_int(n, "functor/3")

@@ -19,7 +19,7 @@ from robocram.logic.arith import BINARY_FUNCTIONS, apply_binary, evaluate
 from robocram.logic.code_cache import compiled
 from robocram.logic.functor_arg import arg_check, functor_make
 from robocram.logic.goal_terms import TERM_GOALS, emit_term_goal
-from robocram.logic.inline_goal import CALL, INLINE
+from robocram.logic.inline_goal import CALL, DISJ, IFTHEN, INLINE, ITE, NOT, SEQ
 from robocram.logic.lru import LRUCache
 from robocram.logic.template import Slot, Tmpl
 from robocram.logic.terms import Term, Var, new_term
@@ -47,6 +47,11 @@ _NAMESPACE: dict[str, object] = {
     "Term": Term,
     "INLINE": INLINE,
     "CALL": CALL,
+    "SEQ": SEQ,
+    "DISJ": DISJ,
+    "ITE": ITE,
+    "IFTHEN": IFTHEN,
+    "NOT": NOT,
     "univ_list": univ_list,
     "univ_compose": univ_compose,
     "new_term": new_term,
@@ -88,6 +93,22 @@ def make_factory(source: str) -> Factory:
         factory = namespace["make"]
         _FACTORIES.put(source, factory)
     return factory
+
+
+_GROUND_NODES = 8  # a ground compound in a head up to this size is read inline
+
+
+def _nodes(t: Value, budget: int) -> int:
+    """`budget` less the compounds and constants in ground term `t`; <= 0 when it runs out
+    or `t` holds anything but atoms, integers and compounds (a float, a string...)."""
+    if type(t) is Term:
+        budget -= 1
+        for a in t[1]:
+            if budget <= 0:
+                return 0
+            budget = _nodes(a, budget)
+        return budget
+    return budget - 1 if type(t) is str or type(t) is int else 0
 
 
 def deref_line(x: str) -> str:
@@ -133,19 +154,26 @@ def inlinable(g: Value) -> bool:
 _INLINE_BINARY = frozenset(["is", "=", "==", "\\=="])
 
 
-def inline_function(goals: list[Value], slots: list[int]) -> Callable[..., bool] | None:
-    """Compile inline goals to `fn(trail, *values of slots)`: true when all succeed.
+def inline_function(
+    goals: list[Value], slots: list[int], unbound: set[int] | frozenset[int] = frozenset()
+) -> Callable[..., bool] | None:
+    """Compile inline goals to `fn(trail, values of slots)`: true when all succeed.
 
-    None when one of them cannot run inline after all.
+    `unbound`: slots holding a new variable that nothing else can have bound or shared
+    when the run starts; `X is E` with such an X binds it without unifying, until a goal
+    names it. None when one of the goals cannot run inline after all.
     """
     writer = GoalWriter()
     writer.known = set(slots)
+    writer.unbound = set(unbound)
     for g in goals:
         if not writer.inline_goal(g):
             return None
+        writer.unbound.difference_update(slots_in(g, []))
     params = ", ".join(f"k{i}" for i in range(len(writer.consts)))
-    values = "".join(f", v{i}" for i in slots)
-    head = [f"def make({params}):", f"  def fn(trail{values}):"]
+    head = [f"def make({params}):", "  def fn(trail, values):"]
+    if slots:  # one tuple, unpacked here: a call with *values costs several times more
+        head.append(f"    {''.join(f'v{i}, ' for i in slots)}= values")
     source = "\n".join([*head, *writer.lines, "    return True", "  return fn", ""])
     return make_factory(source)(*writer.consts)
 
@@ -158,6 +186,7 @@ class GoalWriter:
         self.consts: list[Value] = []
         self.known: set[int] = set()
         self.dereffed: set[int] = set()
+        self.unbound: set[int] = set()  # slots known to hold a new, unshared variable
         self.temps = 0
         self.base = 0
         self.fail = "return False"  # the statement a failing head or inline goal runs
@@ -206,6 +235,9 @@ class GoalWriter:
                 self.emit(f"v{p.i} = {x}", depth)
                 self.known.add(p.i)
             return
+        if type(p) is Term and _nodes(p, _GROUND_NODES) > 0:
+            self.ground_term(p, x, depth)
+            return
         if type(p) is not Tmpl and type(p) not in _EXACT_TYPES:
             self.emit(f"if not unify({self.const(p)}, {x}, trail): {self.fail}", depth)
             return
@@ -224,6 +256,17 @@ class GoalWriter:
         n = len(p.args)
         self.emit(f"elif type({x}) is Term and {x}[0] == {name} and len({x}[1]) == {n}:", depth)
         self.read_args(p.args, f"{x}[1]", depth + 1)
+        self.emit(f"else: {self.fail}", depth)
+
+    def ground_term(self, p: Term, x: str, depth: int) -> None:
+        """Emit unifying a small ground compound with local `x`: bind it, or read it
+        argument by argument (as a template is read) instead of calling `unify`."""
+        self.emit(deref_line(x), depth)
+        self.emit(f"if type({x}) is Var: {x}.ref = {self.const(p)}; trail.append({x})", depth)
+        name = self.const(p[0])
+        n = len(p[1])
+        self.emit(f"elif type({x}) is Term and {x}[0] == {name} and len({x}[1]) == {n}:", depth)
+        self.read_args(p[1], f"{x}[1]", depth + 1)
         self.emit(f"else: {self.fail}", depth)
 
     def unify_locals(self, a: str, b: str, depth: int) -> None:
@@ -284,6 +327,11 @@ class GoalWriter:
             value = self.expr(right)
             if value is None:
                 return False
+            if type(left) is Slot and left.i in self.unbound and left.i not in slots_in(right, []):
+                v = f"v{left.i}"  # a number: binding the new variable is the unification
+                self.emit(f"{v}.ref = {value}; trail.append({v})", 1)
+                self.dereffed.discard(left.i)
+                return True
             self.assign_or_unify(left, value)
             return True
         if name == "=..":

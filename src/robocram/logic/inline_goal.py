@@ -2,25 +2,31 @@
 
 Clause code runs the tests, `is/2` and `=/2` goals that lead a body in its own frame.
 Those that follow a call cannot: the call runs first, in the machine. Each run of them
-becomes one goal `(fn, values, INLINE)`, and the machine calls `fn(trail, *values)`
+becomes one goal `(fn, values, INLINE)`, and the machine calls `fn(trail, values)`
 (true to go on, false to fail) without looking up a predicate. Calls are built the same
 way, as `((name, arity), args, CALL)` instead of `Term`s: a plain tuple costs a third
 of a `Term` to make, and the machine looks the predicate up by the ready-made key. The
 private markers tell these from any Python tuple a program passed as a goal (that stays
 a type error); they never appear in a term a program can read.
 
->>> goal = (lambda trail, x: x > 1, (2,), INLINE)
->>> goal[2] is INLINE and goal[0]([], *goal[1])
+Control constructs in a clause body are compiled the same way, so that the machine runs
+them without looking up `;/2` or `,/2`: `(first, rest, SEQ)` is a conjunction,
+`(left, right, DISJ)` a disjunction, `(cond, (then, else), ITE)` an if-then-else,
+`(cond, then, IFTHEN)` an if-then, `(goal, None, NOT)` a negation, and `(b, None, CUT)`
+the cut to choicepoint `b` that ends a condition. Each part is one goal (a SEQ for several).
+
+>>> goal = (lambda trail, values: values[0] > 1, (2,), INLINE)
+>>> goal[2] is INLINE and goal[0]([], goal[1])
 True
 """
 
 from __future__ import annotations
 
-__all__ = ["CALL", "INLINE", "GoalMark"]
+__all__ = ["CALL", "CUT", "DISJ", "IFTHEN", "INLINE", "ITE", "MARKS", "NOT", "SEQ", "GoalMark"]
 
 
 class GoalMark:
-    """The last item of a goal tuple that clause code built: CALL or INLINE."""
+    """The last item of a goal tuple that clause code built: CALL, INLINE or a control mark."""
 
     __slots__ = ("name",)
 
@@ -33,3 +39,10 @@ class GoalMark:
 
 CALL = GoalMark("CALL")
 INLINE = GoalMark("INLINE")
+SEQ = GoalMark("SEQ")
+DISJ = GoalMark("DISJ")
+ITE = GoalMark("ITE")
+IFTHEN = GoalMark("IFTHEN")
+CUT = GoalMark("CUT")
+NOT = GoalMark("NOT")
+MARKS = (CALL, INLINE, SEQ, DISJ, ITE, IFTHEN, CUT, NOT)

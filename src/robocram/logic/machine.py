@@ -35,7 +35,7 @@ from robocram.logic.errors import (
     PrologTypeError,
     UnknownPredicateError,
 )
-from robocram.logic.inline_goal import CALL, INLINE
+from robocram.logic.inline_goal import CALL, CUT, DISJ, IFTHEN, INLINE, ITE, MARKS, NOT, SEQ
 from robocram.logic.limits import PROC_LOOPS, Budget
 from robocram.logic.occurs import unify_checked
 from robocram.logic.predicate import DET, NONDET, USER, WARM_CALLS, Pred
@@ -169,12 +169,32 @@ class Machine:
                     name, args, mark = goal
                     if mark is not CALL:
                         if mark is INLINE:
-                            cont = nxt if name(trail, *args) else backtrack(cps)
+                            cont = nxt if name(trail, args) else backtrack(cps)
+                        elif mark is DISJ:
+                            cps.append([ALT, len(trail), (args, cutb, nxt)])
+                            cont = (name, cutb, nxt)
+                        elif mark is ITE:
+                            b = len(cps)
+                            cps.append([ALT, len(trail), (args[1], cutb, nxt)])
+                            cont = (name, b + 1, ((b, None, CUT), 0, (args[0], cutb, nxt)))
+                        elif mark is CUT:
+                            del cps[name:]
+                            cont = nxt
+                        elif mark is SEQ:
+                            cont = (name, cutb, (args, cutb, nxt))
+                        elif mark is IFTHEN:
+                            b = len(cps)
+                            cont = (name, b, ((b, None, CUT), 0, (args, cutb, nxt)))
+                        elif mark is NOT:
+                            b = len(cps)
+                            cps.append([ALT, len(trail), nxt])
+                            cont = (name, b + 1, ((b, None, CUT), 0, FAIL))
                         else:
                             cont = self._call_other(goal, len(cps), nxt)
                         continue
-                    p = preds.get(name)  # a call's first item is its (name, arity) key
-                    name = name[0]
+                    # A call's first item is its (name, arity) key; `name` stays that key
+                    # until a path below needs the name itself.
+                    p = preds.get(name)
                 elif tg is Term:
                     name = goal[0]
                     args = goal[1]
@@ -191,7 +211,7 @@ class Machine:
                     cont = self._call_other(goal, len(cps), nxt)
                     continue
                 if p is None:
-                    self._undefined(name, len(args))
+                    self._undefined(name[0] if type(name) is tuple else name, len(args))
                     cont = backtrack(cps)
                     continue
                 proc = p.proc  # only user predicates have one
@@ -222,15 +242,18 @@ class Machine:
                 elif k == NONDET:
                     cps.append([GEN, len(trail), p.fn(self, args), nxt])
                     cont = backtrack(cps)
-                elif name == ",":
-                    cont = (args[0], cutb, (args[1], cutb, nxt))
-                elif name == "$cut":  # the end of an if-then-else's condition
-                    del cps[args[0] :]
-                    cont = nxt
                 else:
-                    cont = run_control(self, name, args, cutb, nxt, cps)
-                    if cont is FAIL:
-                        cont = backtrack(cps)
+                    if type(name) is tuple:
+                        name = name[0]
+                    if name == ",":
+                        cont = (args[0], cutb, (args[1], cutb, nxt))
+                    elif name == "$cut":  # the end of an if-then-else's condition
+                        del cps[args[0] :]
+                        cont = nxt
+                    else:
+                        cont = run_control(self, name, args, cutb, nxt, cps)
+                        if cont is FAIL:
+                            cont = backtrack(cps)
         except PrologError:
             raise
         except Exception as err:  # a built-in's own failure: make it a Prolog error
@@ -302,8 +325,13 @@ class Machine:
         while cps:
             cp = cps[-1]
             mark = cp[1]
-            while len(trail) > mark:
-                trail.pop().ref = None
+            if len(trail) - mark > 8:  # a long undo: one pass over a slice beats popping
+                for v in trail[mark:]:
+                    v.ref = None
+                del trail[mark:]
+            else:
+                while len(trail) > mark:
+                    trail.pop().ref = None
             kind = cp[0]
             if kind == PROC:  # the commonest: a compiled procedure's later clauses
                 cps.pop()
@@ -396,9 +424,11 @@ def host_error(err: Exception, goal: Value) -> PrologError:
     while type(goal) is Var and goal.ref is not None:
         goal = goal.ref
     if type(goal) is tuple:
-        if len(goal) != 3 or goal[2] not in (CALL, INLINE):  # a Python tuple as a goal
+        if len(goal) != 3 or goal[2] not in MARKS:  # a Python tuple as a goal
             return PrologTypeError("callable", goal, f"{goal!r} is not a callable goal")
         where = f"{goal[0][0]}/{len(goal[1])}" if goal[2] is CALL else "an inline goal"
+        if goal[2] is not CALL and goal[2] is not INLINE:
+            where = "a control construct"
     elif type(goal) is Term:
         where = f"{goal[0]}/{len(goal[1])}"
     else:

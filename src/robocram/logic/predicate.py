@@ -39,6 +39,7 @@ class Pred:
         "owner",
         "proc",
         "pyfn",
+        "skip",
         "store",
         "system",
         "varclauses",
@@ -64,6 +65,9 @@ class Pred:
         self.proc: Procedure | None = None
         self.warm = 0
         self.erased = 0  # retracted clauses still in `clauses` (dropped in batches)
+        # (store, lo, i): every clause in store[lo:i] is retracted, so a scan of the
+        # clauses from lo may start at i (retracting the first clause again and again).
+        self.skip: tuple[list[Clause], int, int] | None = None
 
     def warm_up(self) -> None:
         """Count a call; on the third, compile the switching procedure if it qualifies."""
@@ -111,6 +115,7 @@ class Pred:
         self.store = clauses
         self.head = 0
         self.erased = 0
+        self.skip = None
         self.index = None
         self.proc = None
         self.warm = 0
@@ -180,6 +185,23 @@ class Pred:
         self.varclauses = varclauses
         self.index = index
         return index
+
+    def first_live(self) -> int:
+        """Where a scan of all clauses may start: past the retracted ones at the front.
+
+        Retracted clauses are never restored and the positions from `head` on are only
+        ever appended to, so the run found stays retracted; it is remembered for the
+        next scan while the store and its start are unchanged.
+        """
+        store, i = self.store, self.head
+        skip = self.skip
+        if skip is not None and skip[0] is store and skip[1] == i:
+            i = skip[2]
+        n = len(store)
+        while i < n and store[i].erased:
+            i += 1
+        self.skip = (store, self.head, i)
+        return i
 
     def candidates(self, first: Value) -> list[Clause]:
         """Clauses whose first argument can match the dereferenced call argument `first`."""

@@ -210,12 +210,9 @@ class _ProcWriter(ClauseWriter):
         # every PROC_LOOPS loops, when a long self-recursion is handed to the machine
         # so that it counts the inferences (limits, stop requests) and calls again.
         self.emit("if not cps and trail: del trail[:]", 1)
-        if loops:
-            self.emit("steps = 0", 1)
+        if loops:  # counted where a self-call loops (see self_call)
+            self.emit("steps = 1", 1)
         self.emit("while True:", 1)
-        if loops:
-            self.emit("steps += 1", 2)
-            self.emit(f"if steps >= {PROC_LOOPS}: return [{self.names}None]", 2)
         if re.search(r"\bcb\b", body):
             self.emit("cb = len(cps)", 2)
         self.lines.append(body)
@@ -351,6 +348,8 @@ class _ProcWriter(ClauseWriter):
     def self_call(self, args: str) -> None:
         self.alternatives()
         self.emit(f"{self.names}= {args}", 1)
+        self.emit("steps += 1", 1)
+        self.emit(f"if steps >= {PROC_LOOPS}: return [{self.names}None]", 1)
         if self.next_start is None:
             self.emit("start = 0; continue", 1)
         else:

@@ -149,6 +149,11 @@ def unify_iterative(a: Value, b: Value, trail: list[Var], may_bind: BindCheck | 
 
 def undo(trail: list[Var], mark: int) -> None:
     """Unbind every variable bound since the trail had length `mark`."""
+    if len(trail) - mark > 8:  # a long undo: one pass over a slice beats popping
+        for v in trail[mark:]:
+            v.ref = None
+        del trail[mark:]
+        return
     while len(trail) > mark:
         trail.pop().ref = None
 
