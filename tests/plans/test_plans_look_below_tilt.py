@@ -15,7 +15,6 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import numpy as np
-import pybullet
 import pytest
 
 from robocram.execution.failures import PtuGoalNotReached
@@ -25,6 +24,7 @@ from robocram.robots import draft_description
 from robocram.scenes import TabletopScene, tabletop_scene
 from robocram.tf import PoseStamped
 from robocram.world import World
+from tests.bullet_links import link_frame
 
 ARMAR6 = Path(__file__).parents[1] / "data" / "zoo" / "armar6" / "armar6.urdf"
 
@@ -41,19 +41,12 @@ def scene() -> Iterator[TabletopScene]:
 def _off_axis(world: World, robot: str, target: tuple[float, float, float]) -> float:
     """[rad] between the camera's optical axis (z) and the target, from PyBullet's link
     state of the camera frame."""
-    client = world.physics.client()
-    body = world.object(robot).body_id
-    frame = world.robot(robot).description.cameras[0].frame
-    index = next(
-        i
-        for i in range(pybullet.getNumJoints(body, physicsClientId=client))
-        if pybullet.getJointInfo(body, i, physicsClientId=client)[12].decode() == frame
+    position, rotation = link_frame(
+        world.object(robot).body_id,
+        world.physics.client(),
+        world.robot(robot).description.cameras[0].frame,
     )
-    state = pybullet.getLinkState(
-        body, index, computeForwardKinematics=True, physicsClientId=client
-    )
-    rotation = np.array(pybullet.getMatrixFromQuaternion(state[5])).reshape(3, 3)
-    towards = np.asarray(target) - np.asarray(state[4])
+    towards = np.asarray(target) - position
     cosine = rotation[:, 2] @ towards / np.linalg.norm(towards)
     return math.acos(min(1.0, cosine))
 

@@ -13,7 +13,6 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import numpy as np
-import pybullet
 import pytest
 
 from robocram.designators import a
@@ -28,6 +27,7 @@ from robocram.robots import load_description
 from robocram.robots.looking_means import looking_means, with_looking
 from robocram.tf import Pose
 from robocram.world import World
+from tests.bullet_links import link_frame
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "robots"
 
@@ -59,19 +59,12 @@ def baxter() -> Iterator[World]:
 def _image_angles(world: World, robot: str, target: tuple[float, float, float]) -> tuple:
     """[rad] the target's angles right of and below the optical axis, and its depth [m],
     from PyBullet's link state of the camera frame."""
-    client = world.physics.client()
-    body = world.object(robot).body_id
-    frame = world.robot(robot).description.cameras[0].frame
-    index = next(
-        i
-        for i in range(pybullet.getNumJoints(body, physicsClientId=client))
-        if pybullet.getJointInfo(body, i, physicsClientId=client)[12].decode() == frame
+    position, rotation = link_frame(
+        world.object(robot).body_id,
+        world.physics.client(),
+        world.robot(robot).description.cameras[0].frame,
     )
-    state = pybullet.getLinkState(
-        body, index, computeForwardKinematics=True, physicsClientId=client
-    )
-    rotation = np.array(pybullet.getMatrixFromQuaternion(state[5])).reshape(3, 3)
-    x, y, z = rotation.T @ (np.asarray(target) - np.asarray(state[4]))
+    x, y, z = rotation.T @ (np.asarray(target) - position)
     return math.atan2(x, z), math.atan2(y, z), z
 
 
