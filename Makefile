@@ -52,7 +52,7 @@ typecheck: installed $(ROS_STAMP) $(ROS2_STAMP)
 	$(BIN)/mypy
 
 unit: installed $(ROS_STAMP) $(ROS2_STAMP)
-	$(BIN)/pytest -n auto --dist loadgroup
+	$(BIN)/pytest -n auto --dist loadgroup --durations=15
 
 test: lint typecheck unit
 
