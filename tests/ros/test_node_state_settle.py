@@ -10,6 +10,7 @@ wait going; a robot clock apart from the result's leaves the wait to the arrival
 
 from __future__ import annotations
 
+import threading
 from multiprocessing import Pipe
 
 from robocram.ros.node_config import NodeConfig
@@ -18,6 +19,7 @@ from robocram.ros.node_state import NodeState
 BASE = "base_footprint"
 END = {"torso_lift_joint": 0.2, "r_shoulder_pan_joint": -0.5}
 WAIT = 0.05  # [s] a wait that must not end times out this soon
+SETTLES = 10.0  # [s] a wait that must end is given this long (it ends when fed)
 
 
 class FedState(NodeState):
@@ -90,3 +92,53 @@ def test_unstamped_states_settle_by_arrival_only() -> None:
     assert not node.op_wait_for_state(mark, WAIT, END)
     node.publish(0.0, END)
     assert node.op_wait_for_state(mark, WAIT, END)
+
+
+def test_a_transform_handled_after_the_result_but_stamped_before_it_settles_nothing() -> None:
+    node = fed()
+    node.publish(300.0, END)
+    mark = node._mark(result_stamp=300.01)  # the joints held are on the result's clock
+    node._joints_arrived(list(END), list(END.values()), 300.02)  # after the result
+    with node._state:  # a transform published before the result, handled after it
+        node._frames_stamped([(BASE, 299.99), ("mug-1", 299.99)])
+        node._base_arrived()
+    assert not node.op_wait_for_state(mark, WAIT)
+    node.publish(300.02, END)
+    assert node.op_wait_for_state(mark, WAIT)
+
+
+def test_by_arrivals_a_frame_lagging_behind_the_joints_keeps_the_wait_going() -> None:
+    node = fed()
+    node.publish(410.0, END)
+    mark = node._mark(result_stamp=400.0)  # the result's clock apart: the arrivals decide
+    assert mark[2] == 0.0
+    node._environment_arrived("/kitchen/joint_states", ["drawer"], [0.1], 410.1)
+    node._joints_arrived(list(END), list(END.values()), 410.1)
+    with node._state:
+        node._frames_stamped([(BASE, 410.05), ("mug-1", 410.05)])
+        node._base_arrived()
+    assert not node.op_wait_for_state(mark, WAIT)  # both arrived; tf older than the joints
+
+    def one_publication_behind() -> None:  # tf lagging the joints steadily catches up
+        node._environment_arrived("/kitchen/joint_states", ["drawer"], [0.1], 410.2)
+        node._joints_arrived(list(END), list(END.values()), 410.2)
+        with node._state:
+            node._frames_stamped([(BASE, 410.1), ("mug-1", 410.1)])
+            node._base_arrived()
+
+    with node._state:  # held until the wait below waits: it starts from joints at 410.1
+        threading.Thread(target=one_publication_behind).start()
+        assert node.op_wait_for_state(mark, SETTLES)
+
+
+def test_a_frame_not_published_along_and_an_unheard_environment_hold_no_wait() -> None:
+    node = fed()  # no kitchen publisher: its topic is never heard
+    with node._state:
+        node._frames_stamped([("mug-1", 480.0), (BASE, 500.0)])  # the mug's sent once
+        node._base_arrived()
+    node._joints_arrived(list(END), list(END.values()), 500.0)
+    mark = node._mark(result_stamp=500.01)
+    with node._state:
+        node._frames_stamped([(BASE, 500.02)])
+    node._joints_arrived(list(END), list(END.values()), 500.02)
+    assert node.op_wait_for_state(mark, WAIT)

@@ -83,8 +83,9 @@ class NodeProcessTransport:
             side = "behind" if skew < 0 else "ahead of"
             LOG.warning(
                 "the robot's clock is %.3f s %s ours (joint states on %s stamped %+.3f s from "
-                "their arrival; bound %.3f s). robocram waits for state by arrival, so results "
-                "do not change; synchronise the clocks (chrony/ntp) for stamped data and logs",
+                "their arrival; bound %.3f s). robocram compares the robot's stamps only with "
+                "each other, so results do not change; synchronise the clocks (chrony/ntp) "
+                "for stamped data and logs",
                 abs(skew), side, self.config.joint_states_topic, skew, bound,
             )  # fmt: skip
 

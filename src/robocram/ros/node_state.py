@@ -7,6 +7,11 @@ plan-side mark waits for newer ones, never comparing the robot's clock with ours
 robot's stamps of the latest joint state, environment states and transforms (compared
 only with each other: see :meth:`NodeState.op_wait_for_state`), and one lock for writing
 to the plan process.
+
+Arrivals alone cannot tell the state after a goal: each topic comes in on its own
+connection and thread, so a transform published before the goal ended may be handled
+after its result (a loaded machine's tf thread lags behind the joint states by several
+messages). When the result's stamp and the joint states share a clock, the stamps decide.
 """
 
 from __future__ import annotations
@@ -19,8 +24,10 @@ from multiprocessing.connection import Connection
 from robocram.ros.node_config import NodeConfig
 
 AT_END = 1e-6  # [rad | m] joints this near a trajectory's end show the robot standing there
-# [s] a state stamped this soon at or after a result's stamp is the state after it; later
-# stamps (a clock jumped, publishers' clocks apart) leave the wait to the arrivals
+# [s] robot stamps this close are one clock's: a result and the joint states held when it
+# came (else, a clock jumped or publishers' clocks apart, the arrivals decide), a state
+# stamped this soon after a result, a frame lagging the joints (an older frame is not
+# published with them: sent once, or by a machine with another clock)
 AFTER_RESULT_WINDOW = 1.0
 
 
@@ -75,9 +82,13 @@ class NodeState(ABC):
         self._state.notify_all()
 
     def _mark(self, result_stamp: float = 0.0) -> tuple[int, int, float]:
-        """The arrivals so far and the robot's stamp [s] of the result being marked."""
+        """The arrivals so far and the robot's stamp [s] of the result being marked, kept
+        only if the joint states held are stamped by the same clock (within
+        :data:`AFTER_RESULT_WINDOW` of it; else 0.0: the arrivals decide)."""
         with self._state:
-            return (self._joint_arrivals, self._base_arrivals, result_stamp)
+            shared = abs(self._joint_stamp - result_stamp) <= AFTER_RESULT_WINDOW
+            stamp = result_stamp if result_stamp > 0.0 and shared else 0.0
+            return (self._joint_arrivals, self._base_arrivals, stamp)
 
     def op_joint_states(self) -> dict[str, float]:
         """The latest joint positions."""
@@ -122,21 +133,25 @@ class NodeState(ABC):
         timeout: float,
         ends_at: Mapping[str, float] | None = None,
     ) -> bool:
-        """Wait until joint states and a base transform arrived after the mark ``after``
-        (None: after this request), or until the state already held is the one after the
-        goal: stamped just after the result (:meth:`_stamped_after`), or showing a
-        finished trajectory's end (:meth:`_shows_end`). No robot stamp is compared with
-        our clock."""
+        """Wait until the state held is the one after the goal: stamped just after the
+        result (:meth:`_stamped_after`), or showing a finished trajectory's end
+        (:meth:`_shows_end`); or, if the mark ``after`` (None: this request) has no
+        result stamp, joint states and a base transform arrived after it
+        (:meth:`_arrived_after`). With a result stamp the arrivals do not count: a
+        message handled after the result may have been published before it. No robot
+        stamp is compared with our clock."""
         joints, base, result = after if after is not None else self._mark()
+        since: list[float] = []  # the stamp of a joint state that arrived after the mark
+
+        def settled() -> bool:
+            if ends_at is not None and self._shows_end(ends_at):
+                return True
+            if result > 0.0 and self._joint_stamp <= result + AFTER_RESULT_WINDOW:
+                return self._stamped_after(result)
+            return self._arrived_after(joints, base, since)  # no result stamp, or it jumped
+
         with self._state:
-            return self._state.wait_for(
-                lambda: (
-                    (self._joint_arrivals > joints and self._base_arrivals > base)
-                    or (result > 0.0 and self._stamped_after(result))
-                    or (ends_at is not None and self._shows_end(ends_at))
-                ),
-                timeout,
-            )
+            return self._state.wait_for(settled, timeout)
 
     def op_settle(
         self,
@@ -170,13 +185,31 @@ class NodeState(ABC):
             return False
         return self._all_stamped_since(result)
 
+    def _arrived_after(self, joints: int, base: int, since: list[float]) -> bool:
+        """Whether joint states and a base transform arrived after those counts, with
+        every moving frame and environment state stamped no earlier than the first joint
+        state seen to arrive after them (kept in ``since``; a stream lagging steadily
+        behind the joints catches up with it; unstamped joints: the arrivals alone)
+        (call holding ``_state``)."""
+        if self._joint_arrivals <= joints:
+            return False
+        if not since:
+            since.append(self._joint_stamp)
+        if self._base_arrivals <= base:
+            return False
+        return since[0] <= 0.0 or self._all_stamped_since(since[0])
+
     def _all_stamped_since(self, stamp: float) -> bool:
-        """Every moving frame and environment state stamped at ``stamp`` [s] or later."""
-        return (
-            bool(self._frame_stamps)
-            and all(s >= stamp for s in self._frame_stamps.values())
-            and all(self._environment_stamps.get(t, 0.0) >= stamp for t in self._environment)
-        )
+        """Every moving frame and environment state published along (stamped within
+        :data:`AFTER_RESULT_WINDOW` before ``stamp`` [s], or later) stamped at ``stamp``
+        or later: a stream lagging behind keeps the wait going; a frame sent once, an
+        environment unheard or unstamped, or another clock's stamps cannot tell."""
+        along = [
+            s
+            for s in (*self._frame_stamps.values(), *self._environment_stamps.values())
+            if s >= stamp - AFTER_RESULT_WINDOW
+        ]
+        return bool(self._frame_stamps) and all(s >= stamp for s in along)
 
     def _shows_end(self, ends_at: Mapping[str, float]) -> bool:
         """Whether the latest joint state shows the joints at a finished trajectory's end

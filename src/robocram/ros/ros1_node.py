@@ -8,9 +8,10 @@ the latest ``/joint_states``, the latest joint states of the environment's artic
 objects (``environment_topics``, e.g. ``/kitchen/joint_states``: drawers and doors) and
 a tf2 buffer fed from ``/tf`` and ``/tf_static``.
 
-The robot's clock is never compared with ours: the node counts joint-state messages and
-transforms of the base frame as they *arrive*, and "the state after a goal" is the first
-of each to arrive after the goal's result (its ``mark``). The robot clock's offset is
+The robot's clock is never compared with ours: "the state after a goal" is told by the
+robot's stamps compared with each other (the result's and the states'), or, where they
+cannot tell, by the joint-state messages and transforms of the base frame that *arrive*
+after the goal's result (its ``mark``; ``node_state.py``). The robot clock's offset is
 measured once, on the first joint states, and reported to the plan process.
 
 Pipe protocol (tuples of plain values): requests ``(request_id, op, args)``; replies

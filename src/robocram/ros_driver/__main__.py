@@ -44,6 +44,7 @@ def _arguments() -> argparse.Namespace:
         "--controllers", choices=CONTROLLERS, default="projection", help="pr2: the real PR2's"
     )
     parser.add_argument("--clock-offset", type=float, default=0.0, help="[s] added to stamps")
+    parser.add_argument("--tf-lag", type=float, default=0.0, help="[s] /tf sent late (tests)")
     parser.add_argument("--ros", type=int, choices=(1, 2), default=1, help="ROS 1 or ROS 2")
     parser.add_argument(
         "--domain-id", type=int, default=int(os.environ.get("ROS_DOMAIN_ID", 0)), help="ROS 2"
@@ -72,7 +73,14 @@ def main() -> None:
     options = MotionOptions(base_speed=args.base_speed, time_scale=args.time_scale)
     rospy.init_node(args.node_name)
     driver = ProjectionDriver(
-        world, config, options, args.fault, args.goal_log, args.controllers, args.clock_offset
+        world,
+        config,
+        options,
+        args.fault,
+        args.goal_log,
+        args.controllers,
+        args.clock_offset,
+        args.tf_lag,
     )
     driver.start()
     driver.publish_state()

@@ -41,17 +41,19 @@ class DriverProcess:
         scene: str = "tabletop",
         ros: int = 1,
         domain_id: int = 0,
+        tf_lag: float = 0.0,
     ) -> None:
         """``goal_log``: the driver appends each goal it receives there (``received_goals``);
         ``controllers="pr2"``: the real PR2's controllers; ``clock_offset`` [s] on stamps;
         ``scene``: ``"tabletop"`` or ``"kitchen"`` (``kitchen_scene``); ``ros=2``: a ROS 2
-        robot on ``domain_id`` (``master_uri`` is then not used)."""
+        robot on ``domain_id`` (``master_uri`` is then not used); ``tf_lag`` [s]: ROS 1's
+        transforms sent that late, as a loaded client's tf thread handles them."""
         self.args = [
             sys.executable, "-m", "robocram.ros_driver", "--robot", robot_name,
             "--master-uri", master_uri, "--base-speed", str(base_speed),
             "--time-scale", str(time_scale), "--fault", fault,
             "--controllers", controllers, "--clock-offset", str(clock_offset), "--scene", scene,
-            "--ros", str(ros), "--domain-id", str(domain_id),
+            "--ros", str(ros), "--domain-id", str(domain_id), "--tf-lag", str(tf_lag),
         ]  # fmt: skip
         if ros_facts is not None:
             self.args += ["--ros-facts", str(ros_facts)]

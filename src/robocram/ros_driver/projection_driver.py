@@ -12,7 +12,10 @@ never answers and ignores cancels; ``"nan_joint_state"`` publishes the torso's p
 ``controllers="pr2"`` behaves as the real PR2's controllers
 (``pr2_controllers.py``: a gripper gap in metres that stalls on objects, joints clamped
 to the soft limits, results without status text); ``clock_offset`` [s] shifts the stamps
-of everything published, as a robot clock ahead (+) or behind (-) of ours.
+of everything published (states, transforms, action results, feedback and status), as a
+robot clock ahead (+) or behind (-) of ours. Each publication is one snapshot of the
+world stamped when it was taken, sent before the next is taken: the stamps on a topic
+rise with the state they show. ``tf_lag`` [s] sends the transforms that much late (tests).
 """
 
 from __future__ import annotations
@@ -35,7 +38,9 @@ from robocram.ros_driver import goals, pr2_controllers
 from robocram.ros_driver.errors import DriverArgumentError
 from robocram.ros_driver.goals import RosMessage
 from robocram.ros_driver.held_handles import HeldHandles
+from robocram.ros_driver.lagging_publisher import LaggingPublisher
 from robocram.ros_driver.motion import MotionOptions, Stepper
+from robocram.ros_driver.robot_clock import RobotClock
 from robocram.world import RobotObject, World
 
 PUBLISH_RATE = 30.0  # [Hz]
@@ -90,10 +95,11 @@ class ProjectionDriver:
         goal_log: Path | None = None,
         controllers: str = "projection",
         clock_offset: float = 0.0,
+        tf_lag: float = 0.0,
     ) -> None:
         """``goal_log``: a file each received goal is appended to, one JSON line
         ``{"server", "action_type", "goal"}`` (goal as message dicts), before it runs.
-        ``controllers``: ``"projection"`` or ``"pr2"``; ``clock_offset`` [s]."""
+        ``controllers``: ``"projection"`` or ``"pr2"``; ``clock_offset``, ``tf_lag`` [s]."""
         if fault not in FAULTS:
             raise DriverArgumentError(f"driver fault {fault!r} is none of {FAULTS}")
         if controllers not in CONTROLLERS:
@@ -102,6 +108,9 @@ class ProjectionDriver:
             )
         self.controllers = controllers
         self.clock_offset = clock_offset
+        self.clock = RobotClock(clock_offset)
+        self.tf_lag = tf_lag
+        self._publishing = threading.Lock()  # one publication at a time, in snapshot order
         self.world = world
         self.robot = ProjectedRobot.of(world, config.robot)
         self.config = config
@@ -136,6 +145,8 @@ class ProjectionDriver:
             "joints": rospy.Publisher(self.config.joint_states_topic, JointState, queue_size=10),
             "tf": rospy.Publisher("/tf", TFMessage, queue_size=10),
         }
+        if self.tf_lag > 0.0:
+            self._publishers["tf"] = LaggingPublisher(self._publishers["tf"], self.tf_lag)
         for environment in self.environments:
             self._publishers[environment] = rospy.Publisher(
                 f"/{environment}/joint_states", JointState, queue_size=10
@@ -153,6 +164,7 @@ class ProjectionDriver:
             )
             action.register_preempt_callback(partial(self._on_preempt, server))
             action.start()
+            self.clock.stamp_actions(action)
             self._servers.append(action)
         rospy.Timer(rospy.Duration(1.0 / PUBLISH_RATE), lambda _: self.publish_state())
 
@@ -225,8 +237,15 @@ class ProjectionDriver:
             return False, {}, f"driver error: {type(err).__name__}: {err}"
 
     def publish_state(self) -> None:
-        """Publish the joint states and every frame of the world in ``map`` now."""
-        import rospy
+        """Publish the joint states and every frame of the world in ``map`` now.
+
+        The snapshot is stamped when taken and sent before the next is taken: else a
+        publisher thread held up between the two (a loaded machine) sends a state from
+        before a goal's end, stamped after it, after the goal's result."""
+        with self._publishing:
+            self._publish_state()
+
+    def _publish_state(self) -> None:
         from geometry_msgs.msg import TransformStamped
         from sensor_msgs.msg import JointState
         from tf2_msgs.msg import TFMessage
@@ -235,7 +254,7 @@ class ProjectionDriver:
             joints = self.world.joint_states(self.robot.name)
             poses = self.frames.frame_poses()
             environments = {e: self.world.joint_states(e) for e in self.environments}
-        stamp = rospy.Time.now() + rospy.Duration.from_sec(self.clock_offset)
+            stamp = self.clock.now()
         if self.fault == "nan_joint_state" and NAN_JOINT in joints:  # an encoder gone bad
             joints = {**joints, NAN_JOINT: math.nan}
         state = JointState(name=list(joints), position=list(joints.values()))
