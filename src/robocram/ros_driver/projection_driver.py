@@ -2,9 +2,11 @@
 
 For tests and demos the robot behind real ROS is then a simulated one: the action
 servers named by the robot's ``ros_action/4`` facts move the projected robot (as
-``goals.py`` says per action type), and ``/joint_states`` plus ``/tf`` (every robot link
-and object in ``map``) are published at ``PUBLISH_RATE`` and after every goal, before its
-result and again after it, with the joint states of each articulated environment (the
+``goals.py`` says per action type), and ``/joint_states`` plus ``/tf`` (over ROS 1 every
+robot link and object in ``map``; over ROS 2 a tree, ``ros2_driver.py``) are published
+when the state changed (looked at ``PUBLISH_RATE`` times a second), at least every
+``HEARTBEAT`` while nothing moves, and after every goal, before its result and again
+after it, with the joint states of each articulated environment (the
 kitchen's drawers and doors) on ``/<name>/joint_states``, as iai_kitchen publishes them.
 ``fault`` makes every goal end badly on purpose, to exercise clients: ``"silent"`` never
 answers (until cancelled), ``"abort"`` aborts with a status text, ``"ignore_cancel"``
@@ -26,6 +28,7 @@ from functools import partial
 from pathlib import Path
 from typing import Any
 
+from robocram.motion.robot_geometry import RobotGeometry
 from robocram.projection import ProjectedRobot, WorldFrames
 from robocram.robots import load_description
 from robocram.ros.message_dicts import message_class, to_dict, to_message
@@ -38,7 +41,8 @@ from robocram.ros_driver.held_handles import HeldHandles
 from robocram.ros_driver.motion import MotionOptions, Stepper
 from robocram.world import RobotObject, World
 
-PUBLISH_RATE = 30.0  # [Hz]
+PUBLISH_RATE = 30.0  # [Hz] how often the state is looked at, and published if it changed
+HEARTBEAT = 0.2  # [s] the state is published at least this often, changed or not
 FAULTS = ("none", "silent", "abort", "ignore_cancel", "nan_joint_state")
 NAN_JOINT = "torso_lift_joint"  # fault="nan_joint_state": its position is published as NaN
 CONTROLLERS = ("projection", "pr2")
@@ -124,6 +128,14 @@ class ProjectionDriver:
         self._publishers: dict[str, Any] = {}
         self.goal_log = goal_log
         self._log_lock = threading.Lock()
+        self._published: tuple[object, ...] | None = None  # the state last published
+        self._published_at = -math.inf  # [s] monotonic
+
+    def warm_up(self) -> None:
+        """Build the robot's kinematics and collision geometry now, before serving, as a
+        simulator loads its robot: else the first goal checked for collisions pays for
+        them (a third of the driver's time in a kitchen transport)."""
+        self.robot.description.model.derived(RobotGeometry.of)
 
     def start(self) -> None:
         """Advertise the state topics and start one action server per configured server."""
@@ -154,7 +166,8 @@ class ProjectionDriver:
             action.register_preempt_callback(partial(self._on_preempt, server))
             action.start()
             self._servers.append(action)
-        rospy.Timer(rospy.Duration(1.0 / PUBLISH_RATE), lambda _: self.publish_state())
+        self.warm_up()
+        rospy.Timer(rospy.Duration(1.0 / PUBLISH_RATE), lambda _: self.publish_if_changed())
 
     def _on_goal(self, server: Any, name: str, action_type: str, handler: Handler) -> None:
         goal = server.accept_new_goal()
@@ -224,6 +237,31 @@ class ProjectionDriver:
         except Exception as err:  # reported to the client, never a goal left hanging
             return False, {}, f"driver error: {type(err).__name__}: {err}"
 
+    def publish_if_changed(self) -> None:
+        """Publish the state if it changed since it was last published, or if the last
+        was ``HEARTBEAT`` ago: a robot standing still sends a slow stream, one moving
+        sends every change at ``PUBLISH_RATE`` (and every goal's end publishes anyway)."""
+        with self.lock:
+            state = self._fingerprint()
+        if state == self._published and time.monotonic() - self._published_at < HEARTBEAT:
+            return
+        self.publish_state()
+
+    def _fingerprint(self) -> tuple[object, ...]:
+        """What the published state follows from: the joints of the robot and of the
+        environments and every object's pose (call holding ``lock``; ~0.1 ms)."""
+        world = self.world
+        return (
+            tuple(world.joint_states(self.robot.name).values()),
+            tuple(tuple(world.joint_states(e).values()) for e in self.environments),
+            tuple(world.pose(obj) for obj in world.objects()),
+        )
+
+    def _published_now(self) -> None:
+        """Note the state being published (call holding ``lock``)."""
+        self._published = self._fingerprint()
+        self._published_at = time.monotonic()
+
     def publish_state(self) -> None:
         """Publish the joint states and every frame of the world in ``map`` now."""
         import rospy
@@ -235,6 +273,7 @@ class ProjectionDriver:
             joints = self.world.joint_states(self.robot.name)
             poses = self.frames.frame_poses()
             environments = {e: self.world.joint_states(e) for e in self.environments}
+            self._published_now()
         stamp = rospy.Time.now() + rospy.Duration.from_sec(self.clock_offset)
         if self.fault == "nan_joint_state" and NAN_JOINT in joints:  # an encoder gone bad
             joints = {**joints, NAN_JOINT: math.nan}
