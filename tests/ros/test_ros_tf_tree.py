@@ -1,8 +1,8 @@
 """The ROS 2 driver's tf is a tree as a real robot's; our node composes it into map poses.
 
 No ROS process: the driver's transforms (``TfFrames``) go through the CDR bytes both
-sides use and into the tree our ROS 2 node keeps; its map poses are judged against
-PyBullet's own link states.
+sides use and into what our ROS 2 node keeps of them (``LatestTransforms``); the map
+poses it composes are judged against PyBullet's own link states.
 """
 
 from __future__ import annotations
@@ -12,10 +12,11 @@ from collections.abc import Iterator
 import numpy as np
 import pytest
 
+from robocram.ros.latest_transforms import LatestTransforms
 from robocram.ros.tf_cdr import read_tf_message, write_tf_message
 from robocram.ros_driver.tf_frames import TfFrames
 from robocram.scenes import tabletop_scene
-from robocram.tf import Pose, TransformTree
+from robocram.tf import Pose, TransformError
 from robocram.tf import quaternion as quat
 from robocram.world import World
 from tests.bullet_links import link_frame, link_indices
@@ -36,13 +37,12 @@ def world() -> Iterator[World]:
     scene.world.close()
 
 
-def _tree(*messages: bytes) -> TransformTree:
-    """The tree our ROS 2 node builds from what arrived (``Ros2Node._frames``)."""
-    tree = TransformTree()
+def _heard(*messages: bytes) -> LatestTransforms:
+    """What our ROS 2 node keeps of the messages, in the order they arrived."""
+    latest = LatestTransforms()
     for raw in messages:
-        for parent, child, translation, rotation in read_tf_message(raw):
-            tree.set_transform(parent, child, Pose(translation, rotation))
-    return tree
+        latest.update(read_tf_message(raw))
+    return latest
 
 
 def test_the_tree_composes_into_pybullets_link_frames_and_the_objects_poses(
@@ -51,20 +51,22 @@ def test_the_tree_composes_into_pybullets_link_frames_and_the_objects_poses(
     frames = TfFrames(world)
     static = write_tf_message(STAMP, frames.static_transforms())
     moving = frames.moving_transforms()
-    tree = _tree(static, write_tf_message(STAMP, moving))
+    heard = _heard(write_tf_message(STAMP, moving), static)  # /tf_static may come late
     body, client = world.object("pr2").body_id, world.physics.client()
     links = link_indices(body, client)
     assert len(links) > 80 and len(moving) < 50  # far fewer than every frame in map
+    in_map = heard.lookups("map", [*links, "base_footprint"])
     for link in links:
         position, rotation = link_frame(body, client, link)
-        pose = tree.lookup("map", link)
-        assert np.asarray(pose.position) == pytest.approx(position, abs=BULLET)
-        assert quat.to_matrix(pose.orientation) == pytest.approx(rotation, abs=BULLET)
-    assert tree.lookup("map", "base_footprint").distance_to(world.pose("pr2")) < SAME
-    for obj in world.objects():
-        if obj.name == "pr2":
-            continue  # a robot is its links: the root link's frame is its pose
-        assert tree.lookup("map", obj.name).distance_to(world.pose(obj)) < SAME
+        assert np.asarray(in_map[link].position) == pytest.approx(position, abs=BULLET)
+        assert quat.to_matrix(in_map[link].orientation) == pytest.approx(rotation, abs=BULLET)
+    assert in_map["base_footprint"].distance_to(world.pose("pr2")) < SAME
+    objects = [obj for obj in world.objects() if obj.name != "pr2"]  # a robot is its links
+    in_map = heard.lookups("map", [obj.name for obj in objects])
+    for obj in objects:
+        assert in_map[obj.name].distance_to(world.pose(obj)) < SAME
+    with pytest.raises(TransformError, match="unknown frame 'pr3'"):
+        heard.lookups("map", ["pr3"])
 
 
 def test_fixed_joints_stay_put_and_only_moving_frames_change(world: World) -> None:
