@@ -2,8 +2,8 @@
 
 For tests and demos the robot behind real ROS is then a simulated one: the action
 servers named by the robot's ``ros_action/4`` facts move the projected robot (as
-``goals.py`` says per action type), and ``/joint_states`` plus ``/tf`` (over ROS 1 every
-robot link and object in ``map``; over ROS 2 a tree, ``ros2_driver.py``) are published
+``goals.py`` says per action type), and ``/joint_states`` plus ``/tf`` (a tree as a real
+robot's, ``tf_frames.py``: the fixed joints once on ``/tf_static``, latched) are published
 when the state changed (looked at ``PUBLISH_RATE`` times a second), at least every
 ``HEARTBEAT`` while nothing moves, and after every goal, before its result and again
 after it, with the joint states of each articulated environment (the
@@ -24,21 +24,23 @@ import math
 import threading
 import time
 from collections.abc import Callable
-from functools import partial
+from functools import cached_property, partial
 from pathlib import Path
 from typing import Any
 
 from robocram.motion.robot_geometry import RobotGeometry
-from robocram.projection import ProjectedRobot, WorldFrames
+from robocram.projection import ProjectedRobot
 from robocram.robots import load_description
 from robocram.ros.message_dicts import message_class, to_dict, to_message
 from robocram.ros.ros_config import RosConfig
+from robocram.ros.tf_cdr import Transform
 from robocram.ros.transport import RosDict
 from robocram.ros_driver import goals, pr2_controllers
 from robocram.ros_driver.errors import DriverArgumentError
 from robocram.ros_driver.goals import RosMessage
 from robocram.ros_driver.held_handles import HeldHandles
 from robocram.ros_driver.motion import MotionOptions, Stepper
+from robocram.ros_driver.tf_frames import TfFrames
 from robocram.world import RobotObject, World
 
 PUBLISH_RATE = 30.0  # [Hz] how often the state is looked at, and published if it changed
@@ -112,7 +114,6 @@ class ProjectionDriver:
         self.options = options or MotionOptions()
         self.fault = fault
         self.lock = threading.Lock()
-        self.frames = WorldFrames(world)
         self.handles = HeldHandles()  # a drawer follows the hand holding its handle
         self.environments = [  # articulated objects that are not robots: kitchens, cupboards
             o.name
@@ -147,6 +148,7 @@ class ProjectionDriver:
         self._publishers = {
             "joints": rospy.Publisher(self.config.joint_states_topic, JointState, queue_size=10),
             "tf": rospy.Publisher("/tf", TFMessage, queue_size=10),
+            "tf_static": rospy.Publisher("/tf_static", TFMessage, queue_size=1, latch=True),
         }
         for environment in self.environments:
             self._publishers[environment] = rospy.Publisher(
@@ -167,6 +169,7 @@ class ProjectionDriver:
             action.start()
             self._servers.append(action)
         self.warm_up()
+        self._publish_static()
         rospy.Timer(rospy.Duration(1.0 / PUBLISH_RATE), lambda _: self.publish_if_changed())
 
     def _on_goal(self, server: Any, name: str, action_type: str, handler: Handler) -> None:
@@ -262,16 +265,20 @@ class ProjectionDriver:
         self._published = self._fingerprint()
         self._published_at = time.monotonic()
 
+    @cached_property
+    def tf_frames(self) -> TfFrames:
+        """The world's frames as a tree: which are fixed, which move."""
+        return TfFrames(self.world)
+
     def publish_state(self) -> None:
-        """Publish the joint states and every frame of the world in ``map`` now."""
+        """Publish the joint states and the moving transforms of the tf tree now."""
         import rospy
-        from geometry_msgs.msg import TransformStamped
         from sensor_msgs.msg import JointState
         from tf2_msgs.msg import TFMessage
 
         with self.lock:
             joints = self.world.joint_states(self.robot.name)
-            poses = self.frames.frame_poses()
+            moving = self.tf_frames.moving_transforms()
             environments = {e: self.world.joint_states(e) for e in self.environments}
             self._published_now()
         stamp = rospy.Time.now() + rospy.Duration.from_sec(self.clock_offset)
@@ -279,19 +286,36 @@ class ProjectionDriver:
             joints = {**joints, NAN_JOINT: math.nan}
         state = JointState(name=list(joints), position=list(joints.values()))
         state.header.stamp = stamp
-        transforms = []
-        for frame, pose in poses.items():
-            t = TransformStamped()
-            t.header.stamp, t.header.frame_id, t.child_frame_id = stamp, "map", frame
-            t.transform.translation.x, t.transform.translation.y, t.transform.translation.z = (
-                pose.position
-            )
-            r = t.transform.rotation
-            r.x, r.y, r.z, r.w = pose.orientation
-            transforms.append(t)
-        self._publishers["tf"].publish(TFMessage(transforms=transforms))
+        self._publishers["tf"].publish(TFMessage(transforms=_stamped(stamp, moving)))
         for environment, values in environments.items():
             message = JointState(name=list(values), position=list(values.values()))
             message.header.stamp = stamp
             self._publishers[environment].publish(message)
         self._publishers["joints"].publish(state)
+
+    def _publish_static(self) -> None:
+        """The robot's fixed joints on /tf_static, latched, in one message (as tf2's
+        static broadcaster sends them)."""
+        import rospy
+        from tf2_msgs.msg import TFMessage
+
+        stamp = rospy.Time.now() + rospy.Duration.from_sec(self.clock_offset)
+        fixed = self.tf_frames.static_transforms()
+        self._publishers["tf_static"].publish(TFMessage(transforms=_stamped(stamp, fixed)))
+
+
+def _stamped(stamp: Any, transforms: list[Transform]) -> list[Any]:
+    """rospy's ``TransformStamped`` of each transform, all stamped ``stamp``."""
+    from geometry_msgs.msg import TransformStamped
+
+    out = []
+    for parent, child, translation, rotation in transforms:
+        t = TransformStamped()
+        t.header.stamp, t.header.frame_id, t.child_frame_id = stamp, parent, child
+        t.transform.translation.x, t.transform.translation.y, t.transform.translation.z = (
+            translation
+        )
+        r = t.transform.rotation
+        r.x, r.y, r.z, r.w = rotation
+        out.append(t)
+    return out

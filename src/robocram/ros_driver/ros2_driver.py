@@ -21,7 +21,7 @@ import json
 import threading
 import time
 from collections.abc import Callable
-from functools import cached_property, partial
+from functools import partial
 
 from robocram.ros.ros2_messages import (
     RclpyObject,
@@ -34,7 +34,6 @@ from robocram.ros.tf_cdr import write_tf_message
 from robocram.ros_driver import goals
 from robocram.ros_driver.motion import Stepper
 from robocram.ros_driver.projection_driver import PUBLISH_RATE, Handler, ProjectionDriver, _handler
-from robocram.ros_driver.tf_frames import TfFrames
 
 POLL = 0.02  # [s] how often a faulty goal looks at its cancel request
 THREADS = 8  # executor threads: goals of several resources run at once
@@ -47,11 +46,6 @@ class Ros2ProjectionDriver(ProjectionDriver):
     """The projection driver's servers and publishers on an rclpy node (``start(node)``)."""
 
     node: RclpyObject = None
-
-    @cached_property
-    def tf_frames(self) -> TfFrames:
-        """The world's frames as a tree: which are fixed, which move."""
-        return TfFrames(self.world)
 
     def start_ros2(self, node: RclpyObject) -> None:
         """Advertise the state topics and start one action server per configured server."""
