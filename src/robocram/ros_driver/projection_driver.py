@@ -304,7 +304,7 @@ class ProjectionDriver:
         self._publishers["tf_static"].publish(TFMessage(transforms=_stamped(stamp, fixed)))
 
 
-def _stamped(stamp: Any, transforms: list[Transform]) -> list[Any]:
+def _stamped(stamp: object, transforms: list[Transform]) -> list[object]:
     """rospy's ``TransformStamped`` of each transform, all stamped ``stamp``."""
     from geometry_msgs.msg import TransformStamped
 
