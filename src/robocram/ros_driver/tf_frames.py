@@ -34,8 +34,10 @@ class TfFrames:
     def __init__(self, world: World) -> None:
         self.world = world
         self._robots: list[_RobotJoints] = []
+        self._taken: set[str] = set()  # robots and their links: a frame of that name is theirs
         for robot in world.robots():
             model = robot.description.model
+            self._taken.update((robot.name, *model.links))
             joints = model.joints.values()
             fixed = tuple(j for j in joints if j.type == "fixed")
             moving = tuple(j for j in joints if j.type != "fixed")
@@ -59,11 +61,10 @@ class TfFrames:
                 _transform(j.parent, j.child, joint_transform(j, values[j.name]))
                 for j in robot.moving
             ]
-        robots = {robot.name for robot in self._robots}
         out += [
             _transform(MAP, obj.name, world.pose(obj))
             for obj in world.objects()
-            if obj.name not in robots
+            if obj.name not in self._taken
         ]
         return out
 
