@@ -45,6 +45,9 @@ from robocram.world import RobotObject, World
 
 PUBLISH_RATE = 30.0  # [Hz] how often the state is looked at, and published if it changed
 HEARTBEAT = 0.2  # [s] the state is published at least this often, changed or not
+# [s] after a goal ends the state streams at PUBLISH_RATE, changed or not: a client may
+# get the result after the state published with it and waits for state arriving later
+AFTER_GOAL = 0.1
 FAULTS = ("none", "silent", "abort", "ignore_cancel", "nan_joint_state")
 NAN_JOINT = "torso_lift_joint"  # fault="nan_joint_state": its position is published as NaN
 CONTROLLERS = ("projection", "pr2")
@@ -131,6 +134,7 @@ class ProjectionDriver:
         self._log_lock = threading.Lock()
         self._published: tuple[object, ...] | None = None  # the state last published
         self._published_at = -math.inf  # [s] monotonic
+        self._streaming_until = -math.inf  # [s] monotonic: AFTER_GOAL after the last goal
 
     def warm_up(self) -> None:
         """Build the robot's kinematics and collision geometry now, before serving, as a
@@ -212,7 +216,7 @@ class ProjectionDriver:
             outcome = goals.aborted_on_purpose(action_type, bare=self.controllers == "pr2")
         else:
             outcome = self._handle(handler, goal, stepper)
-        self.publish_state()
+        self.goal_ended()
         if outcome is None:
             server.set_preempted(to_message(result_type, {}), "cancelled; stopped where it was")
         else:
@@ -243,11 +247,22 @@ class ProjectionDriver:
     def publish_if_changed(self) -> None:
         """Publish the state if it changed since it was last published, or if the last
         was ``HEARTBEAT`` ago: a robot standing still sends a slow stream, one moving
-        sends every change at ``PUBLISH_RATE`` (and every goal's end publishes anyway)."""
+        sends every change at ``PUBLISH_RATE``; for ``AFTER_GOAL`` after a goal ended
+        (:meth:`goal_ended`) every look publishes, changed or not."""
         with self.lock:
             state = self._fingerprint()
-        if state == self._published and time.monotonic() - self._published_at < HEARTBEAT:
+        now = time.monotonic()
+        if (
+            state == self._published
+            and now - self._published_at < HEARTBEAT
+            and now > self._streaming_until
+        ):
             return
+        self.publish_state()
+
+    def goal_ended(self) -> None:
+        """Publish the state now and stream it for ``AFTER_GOAL`` (call as a goal ends)."""
+        self._streaming_until = time.monotonic() + AFTER_GOAL
         self.publish_state()
 
     def _fingerprint(self) -> tuple[object, ...]:

@@ -133,7 +133,7 @@ class Ros2ProjectionDriver(ProjectionDriver):
         else:
             feedback = _feeder(handle, action_class(action_type).Feedback)
             outcome = self._handle(handler, handle.request, Stepper(self.lock, cancelled), feedback)
-        self.publish_state()
+        self.goal_ended()
         if outcome is None:
             handle.canceled()
             return result_type()
