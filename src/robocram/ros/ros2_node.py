@@ -3,8 +3,9 @@
 The same pipe protocol and requests as the ROS 1 node (``ros1_node.py``), so the plan
 side is one (``node_process.py``). It runs with the ROS 2 prefix on its path and ROS 1's
 taken off (``ros2_environment.py``). It keeps one rclpy ``ActionClient`` per configured
-server, the latest joint states, the environments' joint states and a tree of the latest
-transforms from ``/tf`` and ``/tf_static`` (transient local, as tf2 publishes it).
+server, the latest joint states, the environments' joint states and the latest transform
+of each frame from ``/tf`` and ``/tf_static`` (transient local, as tf2 publishes it),
+composed into the poses asked for (``latest_transforms.py``).
 
 ROS 2 differs where the plan side must not see it: an action's result has no status
 text, so the controller's words are its ``error_string`` (control_msgs) or ``error_msg``
@@ -21,13 +22,13 @@ from dataclasses import dataclass, field
 from multiprocessing.connection import Connection
 
 from robocram.ros.errors import RosUnknownKey
+from robocram.ros.latest_transforms import LatestTransforms
 from robocram.ros.node_config import NodeConfig
 from robocram.ros.node_state import NodeState
 from robocram.ros.ros1_node import BLOCKING_OPS, handle_request
 from robocram.ros.ros2_messages import RclpyObject, RosDict, action_class, fill, to_dict
 from robocram.ros.tf_cdr import read_stamped_tf_message
 from robocram.ros.transport import GoalState
-from robocram.tf import Pose, Quaternion, TransformTree, Vector3
 
 MONITOR_PERIOD = 0.05  # [s]
 # action_msgs/GoalStatus numbers -> how the goal ended
@@ -99,8 +100,7 @@ class Ros2Node(NodeState):
 
         super().__init__(conn, config)
         self.node = node
-        self._transforms: dict[str, tuple[str, Vector3, Quaternion]] = {}  # child: parent, t, q
-        self._tree: TransformTree | None = None  # built from them when asked
+        self._transforms = LatestTransforms()
         static = QoSProfile(depth=TF_STATIC_DEPTH, durability=DurabilityPolicy.TRANSIENT_LOCAL)
         # raw: read by tf_cdr.py, 20 times quicker than rclpy's message objects
         node.create_subscription(TFMessage, "/tf", self._on_tf, 100, raw=True)
@@ -129,29 +129,16 @@ class Ros2Node(NodeState):
 
     def _on_tf(self, raw: bytes, static: bool = False) -> None:
         """Keep each frame's latest transform (and a moving one's stamp); count the arrival
-        of the base frame's. Only kept here (a robot publishes hundreds at 30 Hz): the tree
-        is built on asking."""
+        of the base frame's. Only kept here (a robot publishes its tf at 30 Hz or more):
+        poses are composed on asking (``latest_transforms.py``)."""
         stamped = read_stamped_tf_message(raw)
-        latest = {
-            child.lstrip("/"): (parent.lstrip("/"), translation, rotation)
-            for _, (parent, child, translation, rotation) in stamped
-        }
+        children = [t[1].lstrip("/") for _, t in stamped]
         with self._state:
-            self._transforms.update(latest)
-            self._tree = None
+            self._transforms.update(t for _, t in stamped)
             if not static:
-                self._frames_stamped((t[1].lstrip("/"), stamp) for stamp, t in stamped)
-            if self.config.base_frame in latest:
+                self._frames_stamped(zip(children, (s for s, _ in stamped), strict=True))
+            if self.config.base_frame in children:
                 self._base_arrived()
-
-    def _frames(self) -> TransformTree:
-        """The tree of the latest transforms (call holding ``_state``)."""
-        if self._tree is None:
-            tree = TransformTree()
-            for child, (parent, translation, rotation) in self._transforms.items():
-                tree.set_transform(parent, child, Pose(translation, rotation))
-            self._tree = tree
-        return self._tree
 
     def op_send_goal(self, goal_id: int, server: str, goal: dict[str, object]) -> float:
         """Send a goal once the server is there; its end arrives as a ``goal`` message."""
@@ -229,20 +216,20 @@ class Ros2Node(NodeState):
 
     def op_lookup(self, target: str, source: str) -> tuple[tuple[float, ...], tuple[float, ...]]:
         """The latest pose of ``source`` in ``target`` as (position, quaternion)."""
-        with self._state:
-            pose = self._frames().lookup(target, source)
-        return tuple(pose.position), tuple(pose.orientation)
+        return self.op_lookups(target, [source])[source]
 
     def op_lookups(
         self, target: str, sources: list[str]
     ) -> dict[str, tuple[tuple[float, ...], tuple[float, ...]]]:
         """``op_lookup`` of each of ``sources``, in one reply."""
-        return {source: self.op_lookup(target, source) for source in sources}
+        with self._state:
+            poses = self._transforms.lookups(target, sources)
+        return {s: (tuple(p.position), tuple(p.orientation)) for s, p in poses.items()}
 
     def op_frames(self) -> list[str]:
         """Every frame the transforms name."""
         with self._state:
-            return sorted(self._frames().frames())
+            return self._transforms.frames()
 
     def op_shutdown(self) -> None:
         """Leave ROS; the serve loop ends after the reply."""

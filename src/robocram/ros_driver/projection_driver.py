@@ -2,9 +2,11 @@
 
 For tests and demos the robot behind real ROS is then a simulated one: the action
 servers named by the robot's ``ros_action/4`` facts move the projected robot (as
-``goals.py`` says per action type), and ``/joint_states`` plus ``/tf`` (every robot link
-and object in ``map``) are published at ``PUBLISH_RATE`` and after every goal, before its
-result and again after it, with the joint states of each articulated environment (the
+``goals.py`` says per action type), and ``/joint_states`` plus ``/tf`` (a tree as a real
+robot's, ``tf_frames.py``: the fixed joints once on ``/tf_static``, latched) are published
+when the state changed (looked at ``PUBLISH_RATE`` times a second), at least every
+``HEARTBEAT`` while nothing moves, and after every goal, before its result and again
+after it, with the joint states of each articulated environment (the
 kitchen's drawers and doors) on ``/<name>/joint_states``, as iai_kitchen publishes them.
 ``fault`` makes every goal end badly on purpose, to exercise clients: ``"silent"`` never
 answers (until cancelled), ``"abort"`` aborts with a status text, ``"ignore_cancel"``
@@ -25,14 +27,16 @@ import math
 import threading
 import time
 from collections.abc import Callable
-from functools import partial
+from functools import cached_property, partial
 from pathlib import Path
 from typing import Any
 
-from robocram.projection import ProjectedRobot, WorldFrames
+from robocram.motion.robot_geometry import RobotGeometry
+from robocram.projection import ProjectedRobot
 from robocram.robots import load_description
 from robocram.ros.message_dicts import message_class, to_dict, to_message
 from robocram.ros.ros_config import RosConfig
+from robocram.ros.tf_cdr import Transform
 from robocram.ros.transport import RosDict
 from robocram.ros_driver import goals, pr2_controllers
 from robocram.ros_driver.errors import DriverArgumentError
@@ -41,9 +45,14 @@ from robocram.ros_driver.held_handles import HeldHandles
 from robocram.ros_driver.lagging_publisher import LaggingPublisher
 from robocram.ros_driver.motion import MotionOptions, Stepper
 from robocram.ros_driver.robot_clock import RobotClock
+from robocram.ros_driver.tf_frames import TfFrames
 from robocram.world import RobotObject, World
 
-PUBLISH_RATE = 30.0  # [Hz]
+PUBLISH_RATE = 30.0  # [Hz] how often the state is looked at, and published if it changed
+HEARTBEAT = 0.2  # [s] the state is published at least this often, changed or not
+# [s] after a goal ends the state streams at PUBLISH_RATE, changed or not: a client may
+# get the result after the state published with it and waits for state arriving later
+AFTER_GOAL = 0.1
 FAULTS = ("none", "silent", "abort", "ignore_cancel", "nan_joint_state")
 NAN_JOINT = "torso_lift_joint"  # fault="nan_joint_state": its position is published as NaN
 CONTROLLERS = ("projection", "pr2")
@@ -117,7 +126,6 @@ class ProjectionDriver:
         self.options = options or MotionOptions()
         self.fault = fault
         self.lock = threading.Lock()
-        self.frames = WorldFrames(world)
         self.handles = HeldHandles()  # a drawer follows the hand holding its handle
         self.environments = [  # articulated objects that are not robots: kitchens, cupboards
             o.name
@@ -133,6 +141,15 @@ class ProjectionDriver:
         self._publishers: dict[str, Any] = {}
         self.goal_log = goal_log
         self._log_lock = threading.Lock()
+        self._published: tuple[object, ...] | None = None  # the state last published
+        self._published_at = -math.inf  # [s] monotonic
+        self._streaming_until = -math.inf  # [s] monotonic: AFTER_GOAL after the last goal
+
+    def warm_up(self) -> None:
+        """Build the robot's kinematics and collision geometry now, before serving, as a
+        simulator loads its robot: else the first goal checked for collisions pays for
+        them (a third of the driver's time in a kitchen transport)."""
+        self.robot.description.model.derived(RobotGeometry.of)
 
     def start(self) -> None:
         """Advertise the state topics and start one action server per configured server."""
@@ -144,6 +161,7 @@ class ProjectionDriver:
         self._publishers = {
             "joints": rospy.Publisher(self.config.joint_states_topic, JointState, queue_size=10),
             "tf": rospy.Publisher("/tf", TFMessage, queue_size=10),
+            "tf_static": rospy.Publisher("/tf_static", TFMessage, queue_size=1, latch=True),
         }
         if self.tf_lag > 0.0:
             self._publishers["tf"] = LaggingPublisher(self._publishers["tf"], self.tf_lag)
@@ -166,7 +184,9 @@ class ProjectionDriver:
             action.start()
             self.clock.stamp_actions(action)
             self._servers.append(action)
-        rospy.Timer(rospy.Duration(1.0 / PUBLISH_RATE), lambda _: self.publish_state())
+        self.warm_up()
+        self._publish_static()
+        rospy.Timer(rospy.Duration(1.0 / PUBLISH_RATE), lambda _: self.publish_if_changed())
 
     def _on_goal(self, server: Any, name: str, action_type: str, handler: Handler) -> None:
         goal = server.accept_new_goal()
@@ -208,7 +228,7 @@ class ProjectionDriver:
             outcome = goals.aborted_on_purpose(action_type, bare=self.controllers == "pr2")
         else:
             outcome = self._handle(handler, goal, stepper)
-        self.publish_state()
+        self.goal_ended()
         if outcome is None:
             server.set_preempted(to_message(result_type, {}), "cancelled; stopped where it was")
         else:
@@ -236,8 +256,49 @@ class ProjectionDriver:
         except Exception as err:  # reported to the client, never a goal left hanging
             return False, {}, f"driver error: {type(err).__name__}: {err}"
 
+    def publish_if_changed(self) -> None:
+        """Publish the state if it changed since it was last published, or if the last
+        was ``HEARTBEAT`` ago: a robot standing still sends a slow stream, one moving
+        sends every change at ``PUBLISH_RATE``; for ``AFTER_GOAL`` after a goal ended
+        (:meth:`goal_ended`) every look publishes, changed or not."""
+        with self.lock:
+            state = self._fingerprint()
+        now = time.monotonic()
+        if (
+            state == self._published
+            and now - self._published_at < HEARTBEAT
+            and now > self._streaming_until
+        ):
+            return
+        self.publish_state()
+
+    def goal_ended(self) -> None:
+        """Publish the state now and stream it for ``AFTER_GOAL`` (call as a goal ends)."""
+        self._streaming_until = time.monotonic() + AFTER_GOAL
+        self.publish_state()
+
+    def _fingerprint(self) -> tuple[object, ...]:
+        """What the published state follows from: the joints of the robot and of the
+        environments and every object's pose (call holding ``lock``; ~0.1 ms)."""
+        world = self.world
+        return (
+            tuple(world.joint_states(self.robot.name).values()),
+            tuple(tuple(world.joint_states(e).values()) for e in self.environments),
+            tuple(world.pose(obj) for obj in world.objects()),
+        )
+
+    def _published_now(self) -> None:
+        """Note the state being published (call holding ``lock``)."""
+        self._published = self._fingerprint()
+        self._published_at = time.monotonic()
+
+    @cached_property
+    def tf_frames(self) -> TfFrames:
+        """The world's frames as a tree: which are fixed, which move."""
+        return TfFrames(self.world)
+
     def publish_state(self) -> None:
-        """Publish the joint states and every frame of the world in ``map`` now.
+        """Publish the joint states and the moving transforms of the tf tree now.
 
         The snapshot is stamped when taken and sent before the next is taken: else a
         publisher thread held up between the two (a loaded machine) sends a state from
@@ -246,32 +307,48 @@ class ProjectionDriver:
             self._publish_state()
 
     def _publish_state(self) -> None:
-        from geometry_msgs.msg import TransformStamped
         from sensor_msgs.msg import JointState
         from tf2_msgs.msg import TFMessage
 
         with self.lock:
             joints = self.world.joint_states(self.robot.name)
-            poses = self.frames.frame_poses()
+            moving = self.tf_frames.moving_transforms()
             environments = {e: self.world.joint_states(e) for e in self.environments}
+            self._published_now()
             stamp = self.clock.now()
         if self.fault == "nan_joint_state" and NAN_JOINT in joints:  # an encoder gone bad
             joints = {**joints, NAN_JOINT: math.nan}
         state = JointState(name=list(joints), position=list(joints.values()))
         state.header.stamp = stamp
-        transforms = []
-        for frame, pose in poses.items():
-            t = TransformStamped()
-            t.header.stamp, t.header.frame_id, t.child_frame_id = stamp, "map", frame
-            t.transform.translation.x, t.transform.translation.y, t.transform.translation.z = (
-                pose.position
-            )
-            r = t.transform.rotation
-            r.x, r.y, r.z, r.w = pose.orientation
-            transforms.append(t)
-        self._publishers["tf"].publish(TFMessage(transforms=transforms))
+        self._publishers["tf"].publish(TFMessage(transforms=_stamped(stamp, moving)))
         for environment, values in environments.items():
             message = JointState(name=list(values), position=list(values.values()))
             message.header.stamp = stamp
             self._publishers[environment].publish(message)
         self._publishers["joints"].publish(state)
+
+    def _publish_static(self) -> None:
+        """The robot's fixed joints on /tf_static, latched, in one message (as tf2's
+        static broadcaster sends them)."""
+        from tf2_msgs.msg import TFMessage
+
+        stamp = self.clock.now()
+        fixed = self.tf_frames.static_transforms()
+        self._publishers["tf_static"].publish(TFMessage(transforms=_stamped(stamp, fixed)))
+
+
+def _stamped(stamp: object, transforms: list[Transform]) -> list[object]:
+    """rospy's ``TransformStamped`` of each transform, all stamped ``stamp``."""
+    from geometry_msgs.msg import TransformStamped
+
+    out = []
+    for parent, child, translation, rotation in transforms:
+        t = TransformStamped()
+        t.header.stamp, t.header.frame_id, t.child_frame_id = stamp, parent, child
+        t.transform.translation.x, t.transform.translation.y, t.transform.translation.z = (
+            translation
+        )
+        r = t.transform.rotation
+        r.x, r.y, r.z, r.w = rotation
+        out.append(t)
+    return out

@@ -4,10 +4,14 @@ The same goals, faults and controller semantics as the ROS 1 driver
 (:class:`ProjectionDriver`), served with rclpy: one ``ActionServer`` per server of the
 robot's ROS 2 facts (``/<controller>/follow_joint_trajectory``,
 ``/<controller>/gripper_cmd``, ``navigate_to_pose``, ...), ``/joint_states`` and ``/tf``
-at ``PUBLISH_RATE`` and after every goal, before its result, and the map's root frame on
-``/tf_static`` (transient local, as tf2's static broadcaster). ROS 2 results carry no
-status text: a trajectory's words are in ``error_string``, Nav2's in ``error_msg``.
-Runs only in a process with the ROS 2 prefix on its path (``ros2_environment.py``).
+when they changed (looked at ``PUBLISH_RATE`` times a second; at least every
+``HEARTBEAT``) and after every goal, before its result and just after it. The tf is a
+tree as a real robot's (``tf_frames.py``): on ``/tf_static`` (transient local, as tf2's
+static broadcaster) the map's root frame and the robot's fixed joints, on ``/tf`` the
+robot's base in ``map``, its moving joints parent -> child and the objects in ``map``.
+ROS 2 results carry no status text: a trajectory's words are in ``error_string``,
+Nav2's in ``error_msg``. Runs only in a process with the ROS 2 prefix on its path
+(``ros2_environment.py``).
 """
 
 from __future__ import annotations
@@ -24,7 +28,6 @@ from robocram.ros.ros2_messages import (
     RosDict,
     action_class,
     fill,
-    message_class,
     to_dict,
 )
 from robocram.ros.tf_cdr import write_tf_message
@@ -80,8 +83,16 @@ class Ros2ProjectionDriver(ProjectionDriver):
                     callback_group=group,
                 )
             )
+        self.warm_up()
         self._publish_static()
-        node.create_timer(1.0 / PUBLISH_RATE, self.publish_state, callback_group=group)
+        threading.Thread(target=self._stream, daemon=True).start()
+
+    def _stream(self) -> None:
+        """Publish the state when it changed (a thread of its own: the executor's timers
+        cost more than the publishing they would run)."""
+        while self.node.context.ok():
+            time.sleep(1.0 / PUBLISH_RATE)
+            self._publish_if_running(changed_only=True)
 
     def _on_cancel(
         self, server: str, refuse: bool, response: RclpyObject, _: RclpyObject
@@ -122,7 +133,7 @@ class Ros2ProjectionDriver(ProjectionDriver):
         else:
             feedback = _feeder(handle, action_class(action_type).Feedback)
             outcome = self._handle(handler, handle.request, Stepper(self.lock, cancelled), feedback)
-        self.publish_state()
+        self.goal_ended()
         if outcome is None:
             handle.canceled()
             return result_type()
@@ -143,21 +154,28 @@ class Ros2ProjectionDriver(ProjectionDriver):
         later.daemon = True
         later.start()
 
-    def _publish_if_running(self) -> None:
-        if self.node.context.ok():
-            self.publish_state()
+    def _publish_if_running(self, changed_only: bool = False) -> None:
+        """Publish unless the node is shutting down (then a publisher may be gone)."""
+        try:
+            if not self.node.context.ok():
+                return
+            if changed_only:
+                self.publish_if_changed()
+            else:
+                self.publish_state()
+        except Exception:  # a publisher destroyed under us at shutdown; else a fault
+            if self.node.context.ok():
+                raise
 
     def _publish_static(self) -> None:
-        """The map's root frame on /tf_static (latched: late subscribers get it too)."""
-        from tf2_msgs.msg import TFMessage
-
-        root = {
-            "header": self._header(STATIC_PARENT),
-            "child_frame_id": "map",
-            "transform": {"rotation": {"w": 1.0}},  # the identity
-        }
-        message = fill(message_class("geometry_msgs/TransformStamped")(), root)
-        self._publishers["tf_static"].publish(TFMessage(transforms=[message]))
+        """The map's root frame and the robot's fixed joints on /tf_static, in one message
+        (latched, depth 1: late subscribers get all of it)."""
+        stamp = self._stamp()
+        with self.lock:
+            fixed = self.tf_frames.static_transforms()
+        root = (STATIC_PARENT, "map", (0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0))  # the identity
+        message = write_tf_message((stamp.sec, stamp.nanosec), [root, *fixed])
+        self._publishers["tf_static"].publish(message)
 
     def _stamp(self) -> RclpyObject:
         """Now on the robot's clock (ours + ``clock_offset``) as a ROS 2 Time."""
@@ -166,25 +184,20 @@ class Ros2ProjectionDriver(ProjectionDriver):
         now = time.time() + self.clock_offset
         return Time(sec=int(now // 1), nanosec=int(now % 1 * 1e9))
 
-    def _header(self, frame: str) -> RosDict:
-        stamp = self._stamp()
-        return {"frame_id": frame, "stamp": {"sec": stamp.sec, "nanosec": stamp.nanosec}}
+    def _publish_state(self) -> None:
+        """Publish the joint states and the moving transforms of the tf tree now (one
+        publication at a time: ``publish_state``), stamped when the snapshot is taken.
 
-    def publish_state(self) -> None:
-        """Publish the joint states and every frame of the world in ``map`` now.
-
-        The transforms go out as CDR bytes written here (``tf_cdr.py``): hundreds of
-        them at ``PUBLISH_RATE`` as rclpy message objects would take the driver's time."""
+        The transforms go out as CDR bytes written here (``tf_cdr.py``): rclpy's
+        message objects would take the driver's time."""
         from sensor_msgs.msg import JointState
 
         with self.lock:
             joints = self.world.joint_states(self.robot.name)
-            poses = self.frames.frame_poses()
+            transforms = self.tf_frames.moving_transforms()
             environments = {e: self.world.joint_states(e) for e in self.environments}
-        stamp = self._stamp()
-        transforms = [
-            ("map", frame, pose.position, pose.orientation) for frame, pose in poses.items()
-        ]
+            self._published_now()
+            stamp = self._stamp()
         self._publishers["tf"].publish(write_tf_message((stamp.sec, stamp.nanosec), transforms))
         for environment, values in environments.items():
             self._publishers[environment].publish(_joint_state(JointState, stamp, values))
