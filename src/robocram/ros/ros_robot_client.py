@@ -29,12 +29,20 @@ from robocram.ros.ros1_transport import Ros1Transport
 from robocram.ros.ros2_transport import Ros2Transport
 from robocram.ros.ros_config import RosConfig
 from robocram.ros.trajectory_goal import trajectory_goal
-from robocram.ros.transport import GoalOutcome, GoalState, RosDict, StateSnapshot, Transport
+from robocram.ros.transport import (
+    GoalOutcome,
+    GoalState,
+    RosDict,
+    StateMark,
+    StateSnapshot,
+    Transport,
+)
 from robocram.ros.world_mirror import WorldMirror, environment_topics
 from robocram.tf import Pose, PoseLike, PoseStamped
 from robocram.world import World
 
 STATE_TIMEOUT = 5.0  # [s] for the state after a goal to arrive
+FIRST_STATE: StateMark = (0, 0, 0.0)  # a mark before anything arrived: any state is after it
 DEFAULT_MASTER_TIMEOUT = 5.0  # [s] for the ROS master to answer when entering
 RESOURCE_KINDS = {"torso": "torso", "head": "head"}  # a trajectory's kind; arms': "arm"
 TransportFactory = Callable[[NodeConfig], Transport]
@@ -280,13 +288,19 @@ class RosRobotClient:
             )
 
     def joint_states(self) -> dict[str, float]:
-        """The latest joint positions [rad | m].
+        """The latest joint positions [rad | m]; before the robot's first joint state has
+        come, up to ``STATE_TIMEOUT`` for it (a robot that publishes when its state changes
+        may not have published since our node joined).
 
         Raises:
             RosJointStateInvalid: a position is not a finite number (naming the topic
                 and the joint): a plan must not start from it.
         """
-        return self._finite(self.transport.joint_states())
+        states = self.transport.joint_states()
+        if not states:
+            self.transport.wait_for_state(FIRST_STATE, STATE_TIMEOUT)
+            states = self.transport.joint_states()
+        return self._finite(states)
 
     def _finite(self, states: dict[str, float]) -> dict[str, float]:
         """``states``, checked: every position a finite number.
