@@ -11,6 +11,7 @@ per worker. Everything else is spread by test.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -32,9 +33,25 @@ def _shares_a_fixture(item: pytest.Item) -> bool:
     )
 
 
-def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+@pytest.hookimpl(wrapper=True)
+def pytest_collection_modifyitems(items: list[pytest.Item]) -> Iterator[None]:
     """Put each test of a grouped folder in its folder's ``xdist_group``, and each test
-    sharing a module's fixture in its module's."""
+    sharing a module's fixture in its module's: before every other plugin's hook (a
+    wrapper's first half runs first), since xdist's names each test by its group there
+    (a plain or ``tryfirst`` hook in a conftest ran after it: no test was grouped)."""
+    _group(items)
+    yield
+    grouped = [i for i in items if i.get_closest_marker("xdist_group") is not None]
+    loadgroup = bool(items) and getattr(items[0].config.option, "loadgroup", False)
+    if loadgroup and grouped and "@" not in grouped[0].nodeid:  # else spread, silently
+        raise pytest.UsageError(
+            f"xdist did not group {grouped[0].nodeid}: this pytest does not take the "
+            "group xdist gives a test (pytest-xdist #1386); install the pytest "
+            "pyproject.toml names (make setup)"
+        )
+
+
+def _group(items: list[pytest.Item]) -> None:
     for item in items:
         try:
             relative = Path(str(item.path)).resolve().relative_to(TESTS)
