@@ -5,7 +5,8 @@ only ask the knowledge base and PERFORM designators. Projection, scenes and the 
 build worlds (PyBullet), kinematics (pinocchio, coal) and arm paths (OMPL, ruckig), but
 each module binds those as a :class:`~robocram.robots.lazy_library.LazyLibrary`, imported
 at its first use: a script pays for each when it first needs it (PyBullet with its first
-world, pinocchio and coal with its first motion), not when it imports.
+world, pinocchio and coal with its first robot in a scene, whose kinematic model the scene
+builds), not when it imports.
 The batch's trace store (SQLAlchemy) loads only once a batch traces, its progress bar
 (tqdm, with ``importlib.metadata``) only once one is shown.
 """
@@ -74,3 +75,13 @@ def test_drafting_is_loaded_when_asked_for() -> None:
         "assert draft_description is made and isinstance(DraftDescription, type); print('ok')"
     )
     assert _fresh(code) == "ok"
+
+
+def test_a_scene_builds_its_robot_s_kinematics_so_the_first_plan_does_not() -> None:
+    code = (
+        "import sys; from robocram.scenes import tabletop_scene; "
+        "assert 'pinocchio' not in sys.modules; "
+        "tabletop_scene('pr2'); "
+        "print(sorted(m for m in ('pinocchio', 'coal') if m in sys.modules))"
+    )
+    assert _fresh(code) == "['coal', 'pinocchio']"

@@ -17,8 +17,7 @@ from robocram.robots import RobotDescription, RobotModel, load_description
 from robocram.scenes.environment_description import EnvironmentDescription
 from robocram.scenes.environment_model import check_urdf, loadable_urdf
 from robocram.scenes.errors import SceneError
-from robocram.scenes.parking import park_arms
-from robocram.scenes.standing import stand_on_the_floor
+from robocram.scenes.scene_robot import place_robot
 from robocram.tf import Pose, PoseLike, PoseStamped
 from robocram.world import World, WorldObject
 
@@ -87,9 +86,7 @@ def environment_scene(
     )
     world.add_urdf(name, loadable, type="environment")
     world.kb.consult(environment.facts(name), group=f"{name}_semantics")
-    robot_name = world.add_robot(desc, pose=Pose.coerce(robot_pose)).name
-    park_arms(world, robot_name)
-    stand_on_the_floor(world, robot_name)  # a legged robot's trunk: its feet on the floor
+    robot_name = place_robot(world, desc, Pose.coerce(robot_pose))
     placed = list(items)
     objects = {p.name: place_item(world, name, p) for p in placed}
     usual = usual_location_facts(environment, placed, name)

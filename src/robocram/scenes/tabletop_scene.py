@@ -10,7 +10,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from robocram.robots import RobotDescription, load_description
-from robocram.scenes.parking import park_arms
 from robocram.scenes.placement import (
     TABLE_DEPTH,
     facing_yaw,
@@ -18,11 +17,11 @@ from robocram.scenes.placement import (
     table_height,
     tabletop_placement,
 )
+from robocram.scenes.scene_robot import place_robot
 from robocram.scenes.standing import (
     LOWEST_TABLE,
     PEDESTAL_TABLE,
     stand_on_a_pedestal,
-    stand_on_the_floor,
 )
 from robocram.tf import Pose, PoseStamped
 from robocram.tf import quaternion as quat
@@ -52,9 +51,7 @@ def tabletop_scene(robot: str | RobotDescription, world: World | None = None) ->
     world = world if world is not None else World()
     world.bodies.add_floor()
     turned = quat.from_euler(0.0, 0.0, facing_yaw(desc))
-    name = world.add_robot(desc, pose=Pose((0.0, 0.0, 0.0), turned)).name
-    park_arms(world, name)
-    stand_on_the_floor(world, name)
+    name = place_robot(world, desc, Pose((0.0, 0.0, 0.0), turned))
     arm = placement_arm(world.robot(name).description)
     if arm is not None and table_height(world, name, arm) < LOWEST_TABLE:
         stand_on_a_pedestal(world, name, PEDESTAL_TABLE - table_height(world, name, arm))
