@@ -21,6 +21,7 @@ from itertools import combinations
 import numpy as np
 
 from robocram.grasping.errors import GraspingError
+from robocram.grasping.palm import Palm, palm_of
 from robocram.kinematics import forward_kinematics
 from robocram.logic.lru import LRUCache
 from robocram.robots import RobotDescription, RobotModel
@@ -34,13 +35,16 @@ Axis = tuple[float, float, float]
 @dataclass(frozen=True)
 class Hand:
     """Approach and opening axes (unit, tool frame), widest opening and finger depth [m];
-    ``suction``: it holds by touching (no fingers; ``max_opening`` is then infinite)."""
+    ``suction``: it holds by touching (no fingers; ``max_opening`` is then infinite);
+    ``palm``: a palm hand's palm, which a grasp puts against the object's side (its
+    approach the way the fingers curl, its opening the way they point)."""
 
     approach: Axis = (1.0, 0.0, 0.0)
     opening: Axis = (0.0, 1.0, 0.0)
     max_opening: float = 0.1
     finger_depth: float = FINGER_DEPTH
     suction: bool = False
+    palm: Palm | None = None  # a palm hand's palm (``palm.py``)
 
 
 def _unit(v: np.ndarray, fallback: Axis) -> Axis:
@@ -147,6 +151,9 @@ def _read_hand(desc: RobotDescription, arm: str) -> Hand:
             f"arm {arm!r} of {desc.name} has no gripper with a known max_opening; give its "
             "ArmDescription gripper_joints (max_opening is derived at load)"
         )
+    palm = palm_of(desc, arm)
+    if palm is not None:
+        return Hand(palm.curl, palm.along, float(spec.gripper.max_opening), palm=palm)
     approach = np.asarray(approach_axis(desc, arm))
     return Hand(
         (float(approach[0]), float(approach[1]), float(approach[2])),
