@@ -59,7 +59,7 @@ def test_the_hands_safety_box_does_not_collide(world: World) -> None:
 def test_a_grasp_puts_the_mug_on_the_palm_clear_of_the_open_fingers(
     world: World, name: str
 ) -> None:
-    desc = world.object("tiago").description
+    desc = world.robot("tiago").description
     arm = desc.arms["arm"]
     world.set_joint_states("tiago", arm.gripper.at(1.0))
     grasp = next(g for g in grasps(object_shape(world, world.object("mug-1")), hand_of(desc, "arm"))
