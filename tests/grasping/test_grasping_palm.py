@@ -61,6 +61,7 @@ def test_a_grasp_puts_the_mug_on_the_palm_clear_of_the_open_fingers(
 ) -> None:
     desc = world.robot("tiago").description
     arm = desc.arms["arm"]
+    assert arm.gripper is not None
     world.set_joint_states("tiago", arm.gripper.at(1.0))
     grasp = next(g for g in grasps(object_shape(world, world.object("mug-1")), hand_of(desc, "arm"))
                  if g.name == name)  # fmt: skip
