@@ -228,10 +228,11 @@ def grasps(shape: ObjectShape, hand: Hand, names: Sequence[str] = GRASP_NAMES) -
     if hand.suction:
         return touching_grasps(shape, hand, names)
     every = [g for name in names for g in _of_name(shape, hand, name)]
-    fitting = [g for g in every if g.opening <= hand.max_opening]
+    widest = hand.max_opening if hand.palm is None else min(hand.max_opening, hand.palm.wraps)
+    fitting = [g for g in every if g.opening <= widest]
     if "handle" in names and not any(g.name in BODY_GRASPS for g in fitting):
-        fitting += [g for g in _handle_from_above(shape, hand) if g.opening <= hand.max_opening]
+        fitting += [g for g in _handle_from_above(shape, hand) if g.opening <= widest]
     if not fitting:
         needed = min((g.opening for g in every), default=math.inf)
-        raise ObjectUngraspable(shape.name, hand.max_opening, needed)
+        raise ObjectUngraspable(shape.name, widest, needed)
     return fitting

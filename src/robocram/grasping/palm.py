@@ -68,6 +68,14 @@ class Palm:
     span: tuple[float, float]
 
     @property
+    def wraps(self) -> float:
+        """The widest body [m] the fingers reach half round, past its far side: a palm hand
+        holds by pressing it from there against the palm (the Hey5's 9 cm fingers curled
+        a quarter round the 88 mm mug and met it on one side only; they close round its
+        12 mm handle)."""
+        return 2 * self.reach / math.pi
+
+    @property
     def across(self) -> Axis:
         """The unit axis across the row: ``curl`` x ``along``."""
         return _axis(np.cross(self.curl, self.along))
