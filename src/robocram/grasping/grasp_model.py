@@ -31,8 +31,6 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator, Sequence
 
-import numpy as np
-
 from robocram.grasping.errors import ObjectUngraspable, UnknownGraspError
 from robocram.grasping.grasp import Grasp
 from robocram.grasping.hand import Hand, tool_orientation
@@ -50,7 +48,6 @@ TOP_STRADDLE = 0.04  # [m] a top grasp's fingertips go at most this far below th
 # hand is as wide as its open tips only near them (the PR2's finger links behind the tips
 # went 6.5 mm into a mug's wall 56 mm down, 5 cm over its bottom; at 40 mm they clear it by
 # 0.7 mm, issue 35)
-PALM_GAP = 0.002  # [m] a palm hand's palm stops this far off the object's side
 PALM_FLOOR = 0.01  # [m] a palm hand held sideways keeps this far over the object's bottom
 RIM_DEPTH = 0.02  # [m] a rim grasp's tool frame below the rim
 PRE_GRASP = 0.10  # [m] the tool starts this far back along its approach
@@ -88,19 +85,16 @@ def _palm_on_side(
     palm: Palm,
     half_width: float,
 ) -> Vector3:
-    """The tool frame's place that puts a palm hand's palm :data:`PALM_GAP` off the side
-    of the object where the approach through ``at`` enters its box, holding a body
-    ``half_width`` across its fingers (:meth:`Palm.place`); raised until the hand's lower
+    """The tool frame's place that puts a palm hand's palm against the side of the object
+    where the approach through ``at`` enters its box, holding a body ``half_width``
+    across its fingers (:meth:`Palm.holding`); raised until the hand's lower
     end (its row standing up, in a grasp from the side) is :data:`PALM_FLOOR` over the
     object's bottom: the TIAGo's little finger went into the table."""
     depth = sum(
         a * (p - low) if a > 0 else -a * (high - p)
         for a, p, low, high in zip(approach, at, shape.low, shape.high, strict=True)
     )
-    middle, out = palm.place(half_width, flat=approach == DOWN)
-    held = np.add(palm.knuckles, np.multiply(middle, palm.along))
-    held += np.multiply(out + PALM_GAP + depth, palm.curl)
-    offset = quat.rotate(orientation, (float(held[0]), float(held[1]), float(held[2])))
+    offset = quat.rotate(orientation, palm.holding(half_width, depth, flat=approach == DOWN))
     knuckles = quat.rotate(orientation, palm.knuckles)
     across = quat.rotate(orientation, palm.across)
     lowest = at[2] - offset[2] + knuckles[2] + min(s * across[2] for s in palm.span)

@@ -160,3 +160,17 @@ def _read_hand(desc: RobotDescription, arm: str) -> Hand:
         _opening_axis(desc, arm, approach),
         float(spec.gripper.max_opening),
     )
+
+
+def palm_hold(desc: RobotDescription, arm: str, half_width: float) -> tuple[Axis, Axis] | None:
+    """How ``arm``'s palm hand holds a bar ``half_width`` [m] thick (a handle), in its tool
+    frame: the way it approaches (its palm first) and the point the bar's middle is held
+    at; None for any other hand."""
+    spec = desc.arms.get(arm)
+    gripper = None if spec is None else spec.gripper
+    if gripper is None or gripper.is_suction or gripper.max_opening is None:
+        return None
+    palm = hand_of(desc, arm).palm
+    if palm is None:
+        return None
+    return palm.curl, palm.holding(half_width, half_width, flat=False)

@@ -32,6 +32,8 @@ from robocram.kinematics import forward_kinematics
 from robocram.robots import GripperDescription, RobotDescription, RobotModel
 from robocram.robots.link_centre import link_points
 
+PALM_GAP = 0.002  # [m] a held body's near side this far off the palm (within a grip's
+# 5 mm, the palm counts as a side the body is squeezed from)
 ROUND_BEHIND = 0.5  # a round body's middle this share of its half width behind the knuckles
 FLAT_BEHIND = 1.1  # a flat face's middle this share of its half width behind them
 FLAT = 0.02  # [m] a place this much higher than the lowest is the palm's heel
@@ -66,6 +68,13 @@ class Palm:
     reach: float
     profile: tuple[tuple[float, float, float], ...]
     span: tuple[float, float]
+
+    def holding(self, half_width: float, depth: float, flat: bool) -> Axis:
+        """The point [m, tool frame] a body ``half_width`` across the fingers is held at,
+        ``depth`` [m] past its near side, which lies :data:`PALM_GAP` off the hand."""
+        middle, out = self.place(half_width, flat)
+        held = np.add(self.knuckles, np.multiply(middle, self.along))
+        return _axis(held + np.multiply(out + PALM_GAP + depth, self.curl))
 
     @property
     def wraps(self) -> float:
