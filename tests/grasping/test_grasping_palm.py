@@ -8,7 +8,7 @@ import numpy as np
 import pybullet
 import pytest
 
-from robocram.grasping import hand_of, object_shape
+from robocram.grasping import hand_of, object_shape, palm_hold
 from robocram.grasping.grasp_model import grasps
 from robocram.robots import load_description
 from robocram.world import World
@@ -94,3 +94,63 @@ def _quaternion(rotation: np.ndarray) -> tuple[float, float, float, float]:
     y = (rotation[0, 2] - rotation[2, 0]) / (4 * w)
     z = (rotation[1, 0] - rotation[0, 1]) / (4 * w)
     return (float(x), float(y), float(z), float(w))
+
+
+def _contacts(world: World, bar: str, links: list[str]) -> list[tuple[float, np.ndarray]]:
+    """(distance [m], normal on the bar) of each of ``links`` within 5 mm of ``bar``."""
+    client = world.physics.client()
+    robot = world.object("tiago").body_id
+    indices = link_indices(robot, client)
+    found = []
+    for link in links:
+        for point in pybullet.getClosestPoints(
+            robot, world.object(bar).body_id, 0.005,
+            linkIndexA=indices[link], physicsClientId=client,
+        ):  # fmt: skip
+            found.append((float(point[8]), np.asarray(point[7])))
+    return found
+
+
+def test_a_palm_hand_holds_a_handle_bar_on_its_palm_the_fingers_closing_round_it(
+    world: World,
+) -> None:
+    desc = world.robot("tiago").description
+    arm = desc.arms["arm"]
+    assert arm.gripper is not None
+    hold, palm = palm_hold(desc, "arm", 0.01), hand_of(desc, "arm").palm
+    assert hold is not None and palm is not None
+    approach, middle = hold
+    assert approach == pytest.approx((0.0, 0.0, 1.0), abs=0.02)  # the palm first
+    across = np.asarray(palm.across)  # the bar lies along the row, the fingers across it
+    body = world.object("tiago").body_id
+    position, rotation = link_frame(body, world.physics.client(), arm.tool_frame)
+    frame = np.column_stack([np.cross(across, approach), across, approach])
+    centre = position + rotation @ np.asarray(middle)
+    bar = world.add_box("bar", (0.02, 0.14, 0.02), (tuple(centre), _quaternion(rotation @ frame)))
+    links = list(arm.hand_links)
+    try:
+        world.set_joint_states("tiago", arm.gripper.at(1.0))
+        assert _closest_to(world, bar.name, "hand_palm_link") == pytest.approx(0.002, abs=0.002)
+        assert min(d for d, _ in _contacts(world, bar.name, links)) > -0.001
+        squeezed = False
+        for fraction in np.linspace(1.0, 0.0, 41).tolist():  # close until a finger is 4 mm in
+            world.set_joint_states("tiago", arm.gripper.at(fraction))
+            touching = _contacts(world, bar.name, links)
+            if min((d for d, _ in touching), default=1.0) < -0.004:
+                break
+            normals = [n for _, n in touching]
+            squeezed |= any(float(a @ b) < -0.3 for a in normals for b in normals)
+        assert squeezed  # pressed from opposite sides (the palm and the curled fingers)
+    finally:
+        world.set_joint_states("tiago", arm.gripper.at(1.0))
+        world.remove(bar.name)
+
+
+def _closest_to(world: World, name: str, link: str) -> float:
+    client = world.physics.client()
+    robot = world.object("tiago").body_id
+    points = pybullet.getClosestPoints(
+        robot, world.object(name).body_id, 0.05,
+        linkIndexA=link_indices(robot, client)[link], physicsClientId=client,
+    )  # fmt: skip
+    return min((p[8] for p in points), default=0.05)
