@@ -14,11 +14,12 @@ Read from the kinematics, in the tool frame, with the hand open:
 - ``curl``: the way the fingertips start to move when the hand closes (across the
   fingers): the palm faces that way, and a grasp approaches along it;
 - ``along``: from the knuckles to the tips: a grasp lays the fingers across the body;
-- ``surface``: the knuckles' middle moved out along ``curl`` to the outermost point of
-  the knuckle and palm links' shapes: where the body touches the palm.
+- ``profile``: how far out along ``curl`` the row and the palm reach, per 5 mm along the
+  fingers: where a body lies clear of them, against the palm.
 
 A hand whose fingers curl different ways (a three-fingered gripper closing from around)
-is no palm hand.
+is no palm hand. Its fingers hold only what they reach half round (:attr:`Palm.wraps`):
+round the mug's body the Hey5's met it on one side only; round its handle they close.
 """
 
 from __future__ import annotations
@@ -38,7 +39,7 @@ ROUND_BEHIND = 0.5  # a round body's middle this share of its half width behind 
 FLAT_BEHIND = 1.1  # a flat face's middle this share of its half width behind them
 FLAT = 0.02  # [m] a place this much higher than the lowest is the palm's heel
 STEP = 0.005  # [m] places tried along the fingers, and the profile's step
-BOX_CORNERS = 8
+BOX_CORNERS = 8  # a box's points: too few to fill a profile's steps
 MIN_ROW = 3  # fingers besides the thumb: fewer are a gripper's jaws
 CURL_PROBE = 0.95  # the hand this far open: where the tips start to curl
 SAME_WAY = 0.5  # cos: each finger's curl this close to the row's
