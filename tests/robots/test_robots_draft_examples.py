@@ -107,18 +107,11 @@ def test_an_example_naming_no_camera_gets_one_that_looks_and_detects(name: str) 
     assert names["look"].passed, card.render()  # the arm aims it
 
 
-HAND_IN_THE_MUG = pytest.mark.xfail(
-    reason="at its top grasps the Tiago's Hey5 hand's straight finger links go more than "
-    "5 mm into the mug: bounded allow_hand (issue 35) refuses them",
-    strict=True,
-)
-
-
 @pytest.mark.parametrize(
     "name",
     [
         "tiago_pro",  # its tool frame amid its closed fingers, no longer on the base (issue 37)
-        pytest.param("tiago", marks=HAND_IN_THE_MUG),
+        "tiago",  # its Hey5 takes the mug by the handle, palm first (a palm hand, issue 37)
     ],
 )
 def test_pick_up_runs_unchanged_on_drafted_robots(name: str) -> None:

@@ -17,7 +17,7 @@ import numpy as np
 import pybullet
 import pytest
 
-from robocram.robots import LoadedDescription, load_description
+from robocram.robots import LoadedDescription, RobotModel, draft_description, load_description
 from robocram.robots.grasp_space import clear_grasp_space
 from robocram.world import World
 
@@ -96,3 +96,20 @@ def test_loading_again_shares_the_cut_model(fetch: tuple[World, LoadedDescriptio
         again = load_description(str(FETCH))
     assert again.model is desc.model
     assert load_description(desc).model is desc.model  # a loaded description, loaded again
+
+
+def test_a_five_fingered_hands_stand_in_fingers_keep_their_size(tmp_path: Path) -> None:
+    """Armar6's fingers (no meshes) curl side by side round what its palm holds: grown to
+    a middle plane lying on their row, they met the mug before the palm did."""
+    urdf = Path(__file__).resolve().parents[1] / "data" / "zoo" / "armar6" / "armar6.urdf"
+    module = tmp_path / "armar6.py"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        module.write_text(draft_description(urdf).source(module), "utf-8")
+        desc = load_description(module)
+        raw = RobotModel.from_file(urdf, missing_packages_as_boxes=True)
+    for arm in desc.arms.values():
+        assert len(arm.gripper_links) == 14  # five fingers: three links each, the thumb two
+        for finger in arm.gripper_links:
+            sizes = [c.geometry.size for c in desc.model.links[finger].collisions]
+            assert sizes == [c.geometry.size for c in raw.links[finger].collisions]

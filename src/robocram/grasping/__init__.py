@@ -10,7 +10,7 @@ from robocram.grasping.errors import GraspingError, ObjectUngraspable, UnknownGr
 from robocram.grasping.grasp import Grasp
 from robocram.grasping.grasp_model import CLEARANCE, GRASP_NAMES, grasps, tool_orientation
 from robocram.grasping.grasp_predicates import install_grasp_predicates
-from robocram.grasping.hand import Hand, approach_axis, hand_of
+from robocram.grasping.hand import Hand, approach_axis, hand_of, palm_hold
 from robocram.grasping.object_grasps import (
     GraspCandidate,
     candidates_at,
@@ -41,6 +41,7 @@ __all__ = [
     "install_grasp_facts",
     "install_grasp_predicates",
     "object_shape",
+    "palm_hold",
     "shape_of",
     "tool_orientation",
 ]

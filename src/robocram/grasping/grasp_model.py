@@ -35,8 +35,11 @@ from robocram.grasping.errors import ObjectUngraspable, UnknownGraspError
 from robocram.grasping.grasp import Grasp
 from robocram.grasping.hand import Hand, tool_orientation
 from robocram.grasping.object_shape import ObjectShape
+from robocram.grasping.palm import Palm
 from robocram.grasping.suction_grasps import touching_grasps
 from robocram.tf import Pose, Vector3
+from robocram.tf import quaternion as quat
+from robocram.tf.quaternion import Quaternion
 
 GRASP_NAMES = ("top", "front", "left", "right", "rim", "handle")
 BODY_GRASPS = ("top", "front", "left", "right")  # around the body: a hand as wide as it
@@ -45,6 +48,7 @@ TOP_STRADDLE = 0.04  # [m] a top grasp's fingertips go at most this far below th
 # hand is as wide as its open tips only near them (the PR2's finger links behind the tips
 # went 6.5 mm into a mug's wall 56 mm down, 5 cm over its bottom; at 40 mm they clear it by
 # 0.7 mm, issue 35)
+PALM_FLOOR = 0.01  # [m] a palm hand held sideways keeps this far over the object's bottom
 RIM_DEPTH = 0.02  # [m] a rim grasp's tool frame below the rim
 PRE_GRASP = 0.10  # [m] the tool starts this far back along its approach
 LIFT = 0.10  # [m] the object is lifted this far
@@ -64,9 +68,38 @@ def _grasp(
     approach: Vector3,
     opening: Vector3,
     width: float,
+    shape: ObjectShape,
 ) -> Grasp:
-    pose = Pose(at, tool_orientation(hand, approach, opening))
+    orientation = tool_orientation(hand, approach, opening)
+    if hand.palm is not None:
+        at = _palm_on_side(shape, at, approach, orientation, hand.palm, width / 2)
+    pose = Pose(at, orientation)
     return Grasp(name, turn, pose, approach, PRE_GRASP, LIFT, width + CLEARANCE, opening)
+
+
+def _palm_on_side(
+    shape: ObjectShape,
+    at: Vector3,
+    approach: Vector3,
+    orientation: Quaternion,
+    palm: Palm,
+    half_width: float,
+) -> Vector3:
+    """The tool frame's place that puts a palm hand's palm against the side of the object
+    where the approach through ``at`` enters its box, holding a body ``half_width``
+    across its fingers (:meth:`Palm.holding`); raised until the hand's lower
+    end (its row standing up, in a grasp from the side) is :data:`PALM_FLOOR` over the
+    object's bottom: the TIAGo's little finger went into the table."""
+    depth = sum(
+        a * (p - low) if a > 0 else -a * (high - p)
+        for a, p, low, high in zip(approach, at, shape.low, shape.high, strict=True)
+    )
+    offset = quat.rotate(orientation, palm.holding(half_width, depth, flat=approach == DOWN))
+    knuckles = quat.rotate(orientation, palm.knuckles)
+    across = quat.rotate(orientation, palm.across)
+    lowest = at[2] - offset[2] + knuckles[2] + min(s * across[2] for s in palm.span)
+    rise = max(0.0, shape.low[2] + PALM_FLOOR - lowest)
+    return (at[0] - offset[0], at[1] - offset[1], at[2] - offset[2] + rise)
 
 
 def _top(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
@@ -82,7 +115,7 @@ def _top(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
         along_x = abs(opening[0]) > 0.5
         width = sx if along_x else sy
         at = (mx, cy, z) if along_x else (cx, my, z)
-        yield _grasp(hand, "top", turn, at, DOWN, opening, width)
+        yield _grasp(hand, "top", turn, at, DOWN, opening, width, shape)
 
 
 def _side(shape: ObjectShape, hand: Hand, name: str) -> Iterator[Grasp]:
@@ -104,7 +137,7 @@ def _side(shape: ObjectShape, hand: Hand, name: str) -> Iterator[Grasp]:
         across, width = (1.0, 0.0, 0.0), sx
     for turn in (0.0, math.pi):
         opening = across if turn == 0.0 else (-across[0], -across[1], 0.0)
-        yield _grasp(hand, name, turn, at, approach, opening, width)
+        yield _grasp(hand, name, turn, at, approach, opening, width, shape)
 
 
 def _rim(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
@@ -119,7 +152,7 @@ def _rim(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
         at = (cx + side[0] * d, cy + side[1] * d, shape.high[2] - RIM_DEPTH)
         for turn in (0.0, math.pi):
             opening = side if turn == 0.0 else (-side[0], -side[1], 0.0)
-            yield _grasp(hand, "rim", turn, at, DOWN, opening, shape.wall)
+            yield _grasp(hand, "rim", turn, at, DOWN, opening, shape.wall, shape)
 
 
 def _handle_side(shape: ObjectShape) -> Vector3 | None:
@@ -143,7 +176,7 @@ def _handle(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
     across = (-side[1], side[0], 0.0)
     for turn in (0.0, math.pi):
         opening = across if turn == 0.0 else (-across[0], -across[1], 0.0)
-        yield _grasp(hand, "handle", turn, at, approach, opening, shape.handle)
+        yield _grasp(hand, "handle", turn, at, approach, opening, shape.handle, shape)
 
 
 def _handle_from_above(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
@@ -163,7 +196,7 @@ def _handle_from_above(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
         at = (cx + side[0] * d, cy + side[1] * d, z)
         for turn in (0.0, math.pi):
             opening = across if turn == 0.0 else (-across[0], -across[1], 0.0)
-            yield _grasp(hand, "handle", turn, at, DOWN, opening, shape.handle)
+            yield _grasp(hand, "handle", turn, at, DOWN, opening, shape.handle, shape)
 
 
 def _of_name(shape: ObjectShape, hand: Hand, name: str) -> Iterator[Grasp]:
@@ -189,10 +222,11 @@ def grasps(shape: ObjectShape, hand: Hand, names: Sequence[str] = GRASP_NAMES) -
     if hand.suction:
         return touching_grasps(shape, hand, names)
     every = [g for name in names for g in _of_name(shape, hand, name)]
-    fitting = [g for g in every if g.opening <= hand.max_opening]
+    widest = hand.max_opening if hand.palm is None else min(hand.max_opening, hand.palm.wraps)
+    fitting = [g for g in every if g.opening <= widest]
     if "handle" in names and not any(g.name in BODY_GRASPS for g in fitting):
-        fitting += [g for g in _handle_from_above(shape, hand) if g.opening <= hand.max_opening]
+        fitting += [g for g in _handle_from_above(shape, hand) if g.opening <= widest]
     if not fitting:
         needed = min((g.opening for g in every), default=math.inf)
-        raise ObjectUngraspable(shape.name, hand.max_opening, needed)
+        raise ObjectUngraspable(shape.name, widest, needed)
     return fitting

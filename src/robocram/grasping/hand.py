@@ -21,6 +21,7 @@ from itertools import combinations
 import numpy as np
 
 from robocram.grasping.errors import GraspingError
+from robocram.grasping.palm import Palm, palm_of
 from robocram.kinematics import forward_kinematics
 from robocram.logic.lru import LRUCache
 from robocram.robots import RobotDescription, RobotModel
@@ -34,13 +35,16 @@ Axis = tuple[float, float, float]
 @dataclass(frozen=True)
 class Hand:
     """Approach and opening axes (unit, tool frame), widest opening and finger depth [m];
-    ``suction``: it holds by touching (no fingers; ``max_opening`` is then infinite)."""
+    ``suction``: it holds by touching (no fingers; ``max_opening`` is then infinite);
+    ``palm``: a palm hand's palm, which a grasp puts against the object's side (its
+    approach the way the fingers curl, its opening the way they point)."""
 
     approach: Axis = (1.0, 0.0, 0.0)
     opening: Axis = (0.0, 1.0, 0.0)
     max_opening: float = 0.1
     finger_depth: float = FINGER_DEPTH
     suction: bool = False
+    palm: Palm | None = None  # a palm hand's palm (``palm.py``)
 
 
 def _unit(v: np.ndarray, fallback: Axis) -> Axis:
@@ -147,9 +151,26 @@ def _read_hand(desc: RobotDescription, arm: str) -> Hand:
             f"arm {arm!r} of {desc.name} has no gripper with a known max_opening; give its "
             "ArmDescription gripper_joints (max_opening is derived at load)"
         )
+    palm = palm_of(desc, arm)
+    if palm is not None:
+        return Hand(palm.curl, palm.along, float(spec.gripper.max_opening), palm=palm)
     approach = np.asarray(approach_axis(desc, arm))
     return Hand(
         (float(approach[0]), float(approach[1]), float(approach[2])),
         _opening_axis(desc, arm, approach),
         float(spec.gripper.max_opening),
     )
+
+
+def palm_hold(desc: RobotDescription, arm: str, half_width: float) -> tuple[Axis, Axis] | None:
+    """How ``arm``'s palm hand holds a bar ``half_width`` [m] thick (a handle), in its tool
+    frame: the way it approaches (its palm first) and the point the bar's middle is held
+    at; None for any other hand."""
+    spec = desc.arms.get(arm)
+    gripper = None if spec is None else spec.gripper
+    if gripper is None or gripper.is_suction or gripper.max_opening is None:
+        return None
+    palm = hand_of(desc, arm).palm
+    if palm is None:
+        return None
+    return palm.curl, palm.holding(half_width, half_width, flat=False)

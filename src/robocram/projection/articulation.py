@@ -28,6 +28,7 @@ from robocram.execution.failures import (
     NavigationLowLevelFailure,
     NavigationPoseUnreachable,
 )
+from robocram.grasping import palm_hold
 from robocram.kinematics import PlanarBase, forward_kinematics
 from robocram.motion import CarriedJoint
 from robocram.motion.part_path import (
@@ -45,7 +46,8 @@ from robocram.projection.joint_motion import move_along_checked
 from robocram.projection.navigation import drive, place_base
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.projection.suction import on_the_face
-from robocram.tf import Pose
+from robocram.tf import Pose, Vector3
+from robocram.tf import quaternion as quat
 
 LET_GO_RESTARTS = 8  # IK restarts per backing-off try: it is best effort
 RESTING = 0.005  # [m] objects this close to the moving link move with it
@@ -53,6 +55,7 @@ HOLD_MODE = "allow_hand"  # the fingers close around the handle
 STEP_HALVINGS = 2  # a step the hand cannot follow is tried in halves, then quarters
 STEP_TRAVEL = PlanarBase(0.15, 0.15, 0.5)  # [m, m, rad] the base's move per step of the arc
 REACH_TRAVEL = PlanarBase(0.5, 0.5, 1.0)  # [m, m, rad] to get the hand before the handle
+HANDLE_HALF_WIDTH = 0.01  # [m] a palm hand holds a handle as a bar this thick (the kitchen's: 2 cm)
 RELEASE_STEPS = 8  # steps a part is taken back to where the fingers can open to let go
 
 
@@ -262,7 +265,8 @@ def move_part(
             f"[{limits.lower:.3f}, {limits.upper:.3f}]; ask for a value within them"
         )
     start = world.joint_states(part)[joint]
-    axis = approach_axis(robot, arm)
+    palm = palm_hold(robot.description, arm, HANDLE_HALF_WIDTH)
+    axis = approach_axis(robot, arm) if palm is None else np.asarray(palm[0])
     pull = pull_frame(world, part, joint, handle)
     gripper = robot.arm(arm).gripper
     if gripper is not None and gripper.is_suction:
@@ -275,7 +279,7 @@ def move_part(
     try:
         for roll in rolls_for(robot, arm, part, handle):
             checkpoint()
-            held = _Held(arm, part, joint, handle, grasp_in_handle(axis, roll), pull)
+            held = _Held(arm, part, joint, handle, _holding(axis, roll, palm), pull)
             here, now = _RobotAt.now(robot), world.joint_states(part)[joint]
             reached = _try_roll(robot, held, goal)
             if abs(reached - goal) <= 1e-9:
@@ -298,6 +302,16 @@ def move_part(
         environment_part=joint,
         action="opening" if goal > start else "closing",
     )
+
+
+def _holding(axis: np.ndarray, roll: float, palm: tuple[Vector3, Vector3] | None) -> Pose:
+    """The tool pose in the handle frame for ``roll``; a palm hand (``palm``: its approach
+    and where it holds a bar, tool frame) with the bar on its palm, the fingers round it."""
+    pose = grasp_in_handle(axis, roll)
+    if palm is None:
+        return pose
+    x, y, z = quat.rotate(pose.orientation, palm[1])
+    return Pose((-x, -y, -z), pose.orientation)
 
 
 def _try_roll(robot: ProjectedRobot, held: _Held, goal: float) -> float:

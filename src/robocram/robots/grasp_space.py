@@ -9,8 +9,10 @@ fingers lies within ``w / 2`` of the tool frame along the approach: a stand-in b
 link fixed to the tool frame is cut back to end there (dropped if nothing is left). The
 fingers close until they meet: a finger's stand-in box, a small cube at its joint, is
 grown across to the tool frame's middle plane with the gripper closed (the Fetch's cubes
-stopped 11 mm apart and closed on nothing over a bowl's rim). Real meshes and primitives
-a URDF gives are never changed.
+stopped 11 mm apart and closed on nothing over a bowl's rim); a five-fingered hand's are
+not: its fingers curl side by side round what its palm holds (``grasping/palm.py``), and
+Armar6's, grown to a middle plane lying on their row, met the mug before its palm did.
+Real meshes and primitives a URDF gives are never changed.
 """
 
 from __future__ import annotations
@@ -29,6 +31,10 @@ from robocram.tf import Pose
 
 ALIGNED = 0.999  # |cos| between the approach and a box axis for the box to be cut
 CUT_TOLERANCE = 1e-9  # [m]
+MANY_FINGERS = 5  # a hand of five fingers curls them side by side round what its palm
+# holds: none is grown to the middle plane, which a parallel gripper's jaws close on and
+# which lies on its finger row (Armar6's grown stand-in fingers met the mug first; a
+# four-linked parallel gripper, Tracy's, still has its fingers grown)
 
 
 def clear_grasp_space(model: RobotModel, arms: Mapping[str, ArmDescription]) -> RobotModel:
@@ -89,13 +95,18 @@ def _cleared(model: RobotModel, arms: Mapping[str, ArmDescription]) -> RobotMode
                 links[name] = _cut(links[name], link_pose(model, name), tool, approach, opening)
         closed = gripper.at(0.0)
         tool_closed = link_pose(model, arm.tool_frame, closed)
-        for name in fingers:
+        for name in fingers if _finger_count(model, fingers) < MANY_FINGERS else ():
             at = link_pose(model, name, closed)
             tip = _sliding_tip(model, name)
             links[name] = _to_middle(links[name], at, tool_closed, approach, tip)
     if all(links[name] is model.links[name] for name in links):
         return model
     return RobotModel(model.name, links, model.joints, model.source)
+
+
+def _finger_count(model: RobotModel, fingers: set[str]) -> int:
+    """How many fingers ``fingers`` make: the links whose parent is no finger."""
+    return sum(1 for j in model.joints.values() if j.child in fingers and j.parent not in fingers)
 
 
 def _sliding_tip(model: RobotModel, link: str) -> bool:

@@ -23,6 +23,7 @@ from robocram.robots.description_source import description_from
 from robocram.robots.errors import DescriptionCheckError, DescriptionUsageError
 from robocram.robots.findings import warn
 from robocram.robots.grasp_space import clear_grasp_space
+from robocram.robots.hand_envelope import without_hand_envelopes
 from robocram.robots.hand_shapes import with_hand_shapes
 from robocram.robots.limit_check import check_acceleration_limits, check_rate_limits
 from robocram.robots.package_resolver import PackageResolver
@@ -65,6 +66,7 @@ def load_description(
     model = with_hand_shapes(model, [arm.end_effector_link for arm in inferred.values()])
     arms = {key: derive_arm(desc.name, arm, model) for key, arm in inferred.items()}
     model = clear_grasp_space(model, arms)  # stand-in boxes out of the grippers' grasp
+    model = without_hand_envelopes(model, arms)  # no safety box round a hand
     for arm in arms.values():
         check_values(desc.name, model, arm.parking)
         check_values(desc.name, model, arm.carrying)
