@@ -17,7 +17,12 @@ from collections.abc import Iterator
 from typing import Any
 
 from robocram.designators import ObjectDesignator, a, an
-from robocram.execution.failures import NavigationPoseUnreachable, PlanFailure, failure_line
+from robocram.execution.failures import (
+    NavigationPoseUnreachable,
+    PerceptionObjectNotFound,
+    PlanFailure,
+    failure_line,
+)
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import detect, look_lowering, navigate, park_arms
 from robocram.plans.container_access import OpenedContainer, is_drawer
@@ -25,6 +30,7 @@ from robocram.plans.culprits import blamed, culprit_clause
 from robocram.plans.errors import FetchExhausted, PlanArgumentError
 from robocram.plans.known_robot import KnownRobot, current_robot
 from robocram.plans.location_poses import location_poses, next_pose
+from robocram.plans.peering import look_again
 from robocram.plans.pick_object import Held, pick_up_object
 from robocram.plans.stands import (
     REACH_DISTANCES,
@@ -59,8 +65,23 @@ def _pick_from(
     park_arms()
     navigate(stand)
     look_lowering(where)
-    again = detect(an.object(type=seen.get("type"), name=seen.get("name")))
+    wanted = an.object(type=seen.get("type"), name=seen.get("name"))
+    try:
+        again = detect(wanted)
+    except PerceptionObjectNotFound:  # hidden at this height: another may show it
+        found = look_again(where, lambda: _detected(wanted))
+        if found is None:
+            raise
+        again = found
     return pick_up_object(again, arm=arm, grasp=grasp, out_of=out_of)
+
+
+def _detected(wanted: ObjectDesignator) -> ObjectDesignator | None:
+    """``wanted`` as the robot sees it now; None if it does not."""
+    try:
+        return detect(wanted)
+    except PerceptionObjectNotFound:
+        return None
 
 
 def _drawer_of(opened: OpenedContainer | None) -> tuple[str, str] | None:
