@@ -43,6 +43,8 @@ from robocram.tf import Pose, PoseStamped, transform_pose
 
 STAND_RETRIES = 3  # stands where picking up is tried before fetching gives up
 MAX_BLOCKED = 8  # stands where the robot would collide, skipped without a try
+FACING_TURNS = (0.0, math.pi / 2, -math.pi / 2, math.pi)  # [rad] from the robot's bearing
+FACING_DISTANCES = (0.75, 0.85)  # [m] base to object, where no reach costmap cell is left
 
 
 def perceived(object: ObjectDesignator | str) -> ObjectDesignator:  # noqa: A002 - CRAM's key
@@ -127,8 +129,29 @@ def _stands(
     square_up(robot)
     keys: dict[str, Any] = {"arm": arm} if arm is not None else {}
     poses = location_poses(a.location(reachable_for=robot.name, object=seen.get("name"), **keys))
+    found = False
     while (pose := next_pose(poses, causes)) is not None:
+        found = True
         yield pose, arm
+    if not found:
+        yield from _facing_stands(robot, where, arm)
+
+
+def _facing_stands(
+    robot: KnownRobot, where: PoseStamped, arm: str | None
+) -> Iterator[tuple[Pose, str | None]]:
+    """Stands facing the object from the robot's side of it, then from either side and
+    the far side, :data:`FACING_DISTANCES` away, arm by arm: where the reach costmap has
+    no cell (an HSR's map reaches 0.65 m at a table's height, and its base stands no
+    nearer than that to the milk in the table's middle, which its arm held out to the
+    side put there from 0.8 m)."""
+    here = map_pose(robot.base_frame()).position
+    x, y, _ = where.pose.position
+    towards = math.atan2(here[1] - y, here[0] - x)
+    arms = [arm] if arm is not None else robot.arms()
+    for turn in FACING_TURNS:
+        for stand in front_stands(robot, arms, where.pose, towards + turn, FACING_DISTANCES):
+            yield stand.pose, stand.arm
 
 
 def exhausted_message(name: str, tries: int, causes: list[Exception]) -> str:
