@@ -17,10 +17,11 @@ from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.bringing import Visit, find_in_place, usual_place
 from robocram.plans.clearing_table import things_on
 from robocram.plans.container_access import close_again
+from robocram.plans.fetch import fetch
 from robocram.plans.table_arrangement import STANDARD_SETTING, spots, table_with_seats
 from robocram.projection import simulated_robot
 from robocram.scenes.breakfast_scene import breakfast_scene
-from robocram.tf import Pose
+from robocram.tf import Pose, PoseStamped, Quaternion
 from robocram.world import World
 
 TABLE_TOP = 0.75  # [m] the kitchen table's top
@@ -90,6 +91,37 @@ def test_the_hsr_closes_the_fridge_it_opened_wide() -> None:
         world.close()
 
 
+def _set_on_table(world: World, name: str, x: float, y: float, orientation: Quaternion) -> None:
+    """Stand ``name`` on the table top at ``(x, y)`` [m]."""
+    low, _ = world.aabb(name)
+    lift = world.pose(name).position[2] - low[2]
+    world.set_pose(name, Pose((x, y, TABLE_TOP + lift + 0.001), orientation))
+
+
+def test_the_hsr_takes_the_milk_from_the_tables_middle() -> None:
+    scene = breakfast_scene("hsrb")
+    world = scene.world
+    try:
+        with simulated_robot(world, scene.robot):
+            table = table_with_seats(None)
+            middle = next(s for s in spots(table, 2, STANDARD_SETTING, ("milk",)) if s.seat == 0)
+            x, y, _ = middle.pose.position
+            _set_on_table(world, "milk-1", x, y, middle.pose.orientation)
+            point = world.pose("milk-1").position
+            fetch(an.object(type="milk", name="milk-1", pose=PoseStamped("map", point)))
+        cid = world.physics.client()
+        low, _ = pybullet.getAABB(world.object("milk-1").body_id, physicsClientId=cid)
+        assert low[2] > TABLE_TOP + 0.02  # lifted off the table
+        bx, by = _base_xy(world)
+        table_low, table_high = pybullet.getAABB(
+            world.object("kitchen").body_id, world.object("kitchen").link_index["table_top"], cid
+        )
+        outside = bx < table_low[0] or bx > table_high[0] or by < table_low[1] or by > table_high[1]
+        assert outside  # from beside the table, not over it
+    finally:
+        world.close()
+
+
 def test_the_hsr_sees_both_place_settings_when_clearing() -> None:
     scene = breakfast_scene("hsrb")
     world = scene.world
@@ -100,11 +132,8 @@ def test_the_hsr_sees_both_place_settings_when_clearing() -> None:
             names = {"bowl": ["bowl-1", "bowl-2"], "spoon": ["spoon-1", "spoon-2"]}
             names |= {"cup": ["cup-1", "cup-2"], "milk": ["milk-1"]}
             for spot in wanted:
-                name = names[spot.type].pop(0)
-                low, _ = world.aabb(name)
-                lift = world.pose(name).position[2] - low[2]
                 x, y, _ = spot.pose.position
-                world.set_pose(name, Pose((x, y, TABLE_TOP + lift + 0.001), spot.pose.orientation))
+                _set_on_table(world, names[spot.type].pop(0), x, y, spot.pose.orientation)
             seen = things_on(table)
         on_table = set()
         for name in seen:
