@@ -43,6 +43,7 @@ from robocram.tf import Pose, PoseStamped, transform_pose
 
 STAND_RETRIES = 3  # stands where picking up is tried before fetching gives up
 MAX_BLOCKED = 8  # stands where the robot would collide, skipped without a try
+STEPPED_IN = 0.05  # [m] nearer the object than the opening stand: the robot peered in
 FACING_TURNS = (0.0, math.pi / 2, -math.pi / 2, math.pi)  # [rad] from the robot's bearing
 FACING_DISTANCES = (0.75, 0.85)  # [m] base to object, where no reach costmap cell is left
 
@@ -122,6 +123,9 @@ def _stands(
     costmap keeps a whole base radius off its open drawer), then ``reachable_for``'s."""
     robot = current_robot()
     if opened is not None:
+        here = map_pose(robot.base_frame())
+        if _stepped_in(here, opened.stand.pose, where.pose):
+            yield here, arm  # where it peered in from: it sees the object there
         arms = [arm] if arm is not None else robot.arms()
         out = yaw_of(opened.stand.pose) + math.pi  # the container's front faces the stand
         for stand in front_stands(robot, arms, where.pose, out, REACH_DISTANCES):
@@ -152,6 +156,15 @@ def _facing_stands(
     for turn in FACING_TURNS:
         for stand in front_stands(robot, arms, where.pose, towards + turn, FACING_DISTANCES):
             yield stand.pose, stand.arm
+
+
+def _stepped_in(here: Pose, stand: Pose, target: Pose) -> bool:
+    """Whether the base at ``here`` stands nearer ``target`` than ``stand`` (where the
+    container was opened from) by more than :data:`STEPPED_IN`: a robot that stepped
+    closer to see into it (``plans/peering.py``)."""
+    x, y, _ = target.position
+    near = math.hypot(here.position[0] - x, here.position[1] - y)
+    return near < math.hypot(stand.position[0] - x, stand.position[1] - y) - STEPPED_IN
 
 
 def exhausted_message(name: str, tries: int, causes: list[Exception]) -> str:
