@@ -40,9 +40,10 @@ def _base_xy(world: World) -> tuple[float, float]:
     return position[0], position[1]
 
 
-def test_the_hsr_sees_a_bowl_in_its_opened_drawer_from_closer() -> None:
+def test_the_hsr_sees_a_bowl_in_its_opened_drawer_from_closer_and_takes_it() -> None:
     scene = breakfast_scene("hsrb")
     world = scene.world
+    cid = world.physics.client()
     try:
         with simulated_robot(world, scene.robot):
             visit = Visit(usual_place("bowl"))
@@ -50,20 +51,24 @@ def test_the_hsr_sees_a_bowl_in_its_opened_drawer_from_closer() -> None:
             assert found is not None
             seen, opened = found
             stand = opened.stand.pose.position
-        name = str(seen.get("name"))
-        cid = world.physics.client()
-        low, high = pybullet.getAABB(world.object(name).body_id, physicsClientId=cid)
-        middle = [(lo + hi) / 2 for lo, hi in zip(low, high, strict=True)]
-        x, y = _base_xy(world)
-        # it stepped towards the drawer: nearer the bowl than the stand it opened it from
-        assert (
-            math.hypot(middle[0] - x, middle[1] - y)
-            < math.hypot(middle[0] - stand[0], middle[1] - stand[1]) - 0.05
-        )
+            name = str(seen.get("name"))
+            low, high = pybullet.getAABB(world.object(name).body_id, physicsClientId=cid)
+            middle = [(lo + hi) / 2 for lo, hi in zip(low, high, strict=True)]
+            x, y = _base_xy(world)
+            # it stepped towards the drawer: nearer the bowl than the stand it opened it from
+            nearer = math.hypot(middle[0] - x, middle[1] - y)
+            assert nearer < math.hypot(middle[0] - stand[0], middle[1] - stand[1]) - 0.05
+            assert middle[2] < 0.7  # the bowl it saw lies in the drawer, under the counter
+            fetch(seen, opened=opened)
         assert _joint(world, "kitchen", "drawer_unit_drawer_3_joint") == pytest.approx(
             0.4, abs=0.01
         )
-        assert middle[2] < 0.7  # the bowl it saw lies in the drawer, under the counter's top
+        drawer = world.object("kitchen")
+        _, top = pybullet.getAABB(
+            drawer.body_id, drawer.link_index["drawer_unit_drawer_3"], physicsClientId=cid
+        )
+        low, _ = pybullet.getAABB(world.object(name).body_id, physicsClientId=cid)
+        assert low[2] > top[2]  # lifted out of the drawer, over its walls
     finally:
         world.close()
 
