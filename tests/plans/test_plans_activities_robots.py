@@ -1,7 +1,7 @@
-"""Breakfast on the other robots: what stops it, found and named (strict xfails).
+"""Breakfast on the other robots: what works, and what stops it, found and named.
 
-Each test asks what the PR2's test asks and fails for the cause in its mark, judged by
-raw PyBullet (the joint of the drawer opened, the things' bodies on the table).
+Each test asks what the PR2's test asks, judged by raw PyBullet (the joint of the drawer
+opened, the things' bodies on the table); one that fails says its cause in a strict xfail.
 """
 
 from __future__ import annotations
@@ -22,23 +22,23 @@ BOWLS = "drawer_unit_drawer_3"
 TABLE_TOP = 0.75  # [m] the kitchen table's top
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="the HSR sets 4 of 7 things (the cups and spoons): from no stand does it see the "
-    "two bowls in their drawer nor the milk in the fridge (SearchExhausted), and it cannot "
-    "hold the fridge's handle while closing its door (EnvironmentManipulationImpossible)",
-)
 def test_the_hsr_sets_the_table_for_two() -> None:
     scene = breakfast_scene("hsrb")
     world = scene.world
     try:
         with simulated_robot(world, scene.robot):
             perform(an.action(type="setting-table", people=2))
-        for name in ("bowl-1", "cup-1", "spoon-1", "milk-1"):
+        for name in ("bowl-1", "bowl-2", "cup-1", "cup-2", "spoon-1", "spoon-2", "milk-1"):
             low, _ = pybullet.getAABB(
                 world.object(name).body_id, physicsClientId=world.physics.client()
             )
             assert low[2] == pytest.approx(TABLE_TOP, abs=0.01), name
+        body = world.object("kitchen")
+        for joint in ("drawer_unit_drawer_3_joint", "fridge_door_joint"):
+            closed = pybullet.getJointState(
+                body.body_id, body.joint_index[joint], physicsClientId=world.physics.client()
+            )[0]
+            assert closed == pytest.approx(0.0, abs=0.01), joint
     finally:
         world.close()
 

@@ -173,7 +173,7 @@ def look_lowering(target: object) -> Any:
     try:
         return look(target)
     except LOWER_TO_LOOK as failure:
-        heights = _heights_below(current_robot())
+        heights = heights_below(current_robot())
         if not heights or not _lowering_helps(failure):
             raise
     look_ahead()
@@ -188,7 +188,7 @@ def look_lowering(target: object) -> Any:
     return look(target)
 
 
-def _heights_below(robot: KnownRobot) -> list[float]:
+def heights_below(robot: KnownRobot) -> list[float]:
     """The torso heights [m | rad] of :data:`LOOK_HEIGHTS` below where it is now."""
     upper, lower = robot.torso_limit("upper"), robot.torso_limit("lower")
     now = robot.torso_position()
@@ -221,13 +221,25 @@ def look_from_above(target: object, looked: bool = False) -> None:
     for fraction in (None, *heights):
         if fraction is not None:
             assert upper is not None and lower is not None
-            move_torso(lower + fraction * (upper - lower))
+            lower_torso(lower + fraction * (upper - lower))
         try:
             look(target)
             return
         except LOWER_TO_LOOK as failure:
             if fraction == 0.0 or not heights or not _lowering_helps(failure):
                 raise
+
+
+def lower_torso(height: float) -> None:
+    """Move the torso down to ``height``; where the head, still turned down at what the
+    robot looked at, meets the parked hand on the way (an HSR's lift goes down twice as
+    fast as its head), look ahead and move again."""
+    try:
+        move_torso(height)
+    except TorsoPathBlocked:
+        if not look_ahead():
+            raise
+        move_torso(height)
 
 
 def detect(object: ObjectDesignator | str) -> ObjectDesignator:  # noqa: A002 - CRAM's key

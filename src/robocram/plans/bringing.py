@@ -31,6 +31,7 @@ from robocram.plans.container_access import (
     open_from_front,
 )
 from robocram.plans.environment_links import environment_link_pose
+from robocram.plans.peering import peer_into
 from robocram.plans.search import Place, SearchLog, place_point, search
 from robocram.tf import PoseStamped
 
@@ -104,12 +105,25 @@ def _look_into(
 ) -> ObjectDesignator | None:
     """Stand where ``opened`` was opened from (unless not ``move``: from where the robot
     stands), look into it, detect ``wanted`` there (the first seen that is not in
-    ``skip``: a spoon already on the table may be in view)."""
+    ``skip``: a spoon already on the table may be in view). Not seen from the opening
+    stand, the robot peers in, lower and closer (:func:`peer_into`)."""
+    point = inside_point(opened)
     try:
         park_arms()
         if move:
             navigate(opened.stand.pose)
-        look_from_above(inside_point(opened))
+        look_from_above(point)
+    except PlanFailure:
+        return None
+    seen = _seen(wanted, skip)
+    if seen is None and move:
+        seen = peer_into(opened, point, lambda: _seen(wanted, skip))
+    return seen
+
+
+def _seen(wanted: ObjectDesignator, skip: Collection[str]) -> ObjectDesignator | None:
+    """``wanted`` as the robot sees it now, the first not in ``skip``; None if not seen."""
+    try:
         if wanted.get("name") is not None:
             return detect(wanted)
         seen = perform(a.motion(type="detecting", object=all_.objects(type=wanted.get("type"))))

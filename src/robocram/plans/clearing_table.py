@@ -47,6 +47,7 @@ TABLE_MARGIN = 0.25  # [m] past the farthest seat from the table's middle, still
 LOOKS = 2  # views of the table the robot takes
 MIDDLE_ABOVE = 0.3  # [m] the middle looked at is this far over the table top's frame
 SETTING_DEPTH = 0.25  # [m] a place setting's middle, in from the table's edge
+SETTING_REACH = 0.3  # [m] things this near a place setting's middle were seen at it
 SPOT_TRIES = 2  # cells round a usual spot tried, one stand each, before anywhere in its place
 Point = tuple[float, float, float]  # [m] in map
 
@@ -87,21 +88,35 @@ def look_targets(table: Table) -> list[Point]:
 
 def things_on(table: Table) -> dict[str, tuple[str, Point]]:
     """What the robot sees on ``table``: name -> (type, map point), for every type the KB
-    keeps somewhere, from up to :data:`LOOKS` views (a view that cannot be had is skipped)."""
+    keeps somewhere, from :data:`LOOKS` views (a view that cannot be had is skipped), and
+    more while each view shows things the ones before did not. A place setting where
+    things were seen already is not looked at again (an HSR's camera, lower than a PR2's,
+    sees the table's middle and the nearer setting, not the other one)."""
     kinds = sorted({row.type for row in USUAL_LOCATION.answers(current_kb())})
     found: dict[str, tuple[str, Point]] = {}
-    looks = 0
-    for point in look_targets(table):
+    looks, new = 0, False
+    for k, point in enumerate(look_targets(table)):
+        if looks >= LOOKS and not new:
+            break
+        if k > 0 and _seen_near(found, point):
+            continue
         with contextlib.suppress(PlanFailure, DesignatorError):
             park_arms()
             navigate(a.location(visible_for=current_robot().name, target=point))
             look_from_above(PoseStamped("map", point))
             looks += 1
+            known = len(found)
             for kind in kinds:
                 found.update(_seen_of(kind, table))
-        if looks >= LOOKS:
-            break
+            new = len(found) > known
     return found
+
+
+def _seen_near(found: dict[str, tuple[str, Point]], point: Point) -> bool:
+    """Whether a thing in ``found`` stands within :data:`SETTING_REACH` of ``point``."""
+    return any(
+        math.hypot(x - point[0], y - point[1]) <= SETTING_REACH for _, (x, y, _z) in found.values()
+    )
 
 
 def _seen_of(kind: str, table: Table) -> dict[str, tuple[str, Point]]:

@@ -12,7 +12,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from dataclasses import dataclass
 
-from robocram.execution.failures import PlanFailure
+from robocram.execution.failures import EnvironmentManipulationImpossible, PlanFailure
 from robocram.knowledge.scene_predicates import CONTAINER, CONTAINER_FRONT, CONTAINER_KIND
 from robocram.knowledge.world_predicates import OBJECT_POSE
 from robocram.logic import current_kb
@@ -22,18 +22,21 @@ from robocram.plans.containers import Container, close_container, container, ope
 from robocram.plans.environment_links import environment_link_pose
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.known_robot import current_robot
-from robocram.plans.stands import HandleStand, handle_stands, yaw_of
+from robocram.plans.stands import HandleStand, handle_stands, map_pose, yaw_of
 from robocram.tf import Pose
 
 OPEN_RETRIES = 6  # stands tried before opening gives up
+NEAR = 0.05  # [m] a base this close to the opening stand after opening stood there
 
 
 @dataclass(frozen=True)
 class OpenedContainer:
-    """A container a plan opened, and the stand and arm that opened it."""
+    """A container a plan opened, the stand and arm that opened it and where the base
+    stood when it was open (a door's arc can take the base a metre along)."""
 
     container: Container
     stand: HandleStand
+    reached: Pose | None = None
 
 
 def is_container(environment: str, link: str) -> bool:
@@ -99,21 +102,35 @@ def open_from_front(
             continue
         log.record("open", stand.pose, None)
         log.opened.append(part.link)
-        return OpenedContainer(part, stand)
+        return OpenedContainer(part, stand, map_pose(current_robot().base_frame()))
     if last is None:
         raise PlanSetupError(f"no stand to open {part.link!r} from (retries={retries})")
     raise last
 
 
 def close_again(opened: OpenedContainer, log: AttemptLog | None = None) -> None:
-    """Go back to where ``opened`` was opened from and close it with the same arm."""
+    """Go back to where ``opened`` was opened from and close it with the same arm; if the
+    arm cannot take the handle from there (a door opened wide swung it out of reach: an
+    HSR's arm follows the fridge door's arc only with its base, a metre along), from
+    where the base stood when it was open, by the handle.
+
+    Raises:
+        PlanFailure: the last failure, when neither stand closed it.
+    """
     log = log if log is not None else AttemptLog()
-    try:
-        park_arms()
-        navigate(opened.stand.pose)
-        close_container(opened.container.link, arm=opened.stand.arm)
-        park_arms()
-    except PlanFailure as failure:
-        log.record("close", opened.stand.pose, failure)
-        raise
-    log.record("close", opened.stand.pose, None)
+    stands = [opened.stand.pose]
+    if opened.reached is not None and opened.reached.distance_to(opened.stand.pose) > NEAR:
+        stands.append(opened.reached)
+    for k, stand in enumerate(stands):
+        try:
+            park_arms()
+            navigate(stand)
+            close_container(opened.container.link, arm=opened.stand.arm)
+            park_arms()
+        except PlanFailure as failure:
+            log.record("close", stand, failure)
+            if k == len(stands) - 1 or not isinstance(failure, EnvironmentManipulationImpossible):
+                raise
+            continue
+        log.record("close", stand, None)
+        return

@@ -17,7 +17,12 @@ from collections.abc import Iterator
 from typing import Any
 
 from robocram.designators import ObjectDesignator, a, an
-from robocram.execution.failures import NavigationPoseUnreachable, PlanFailure, failure_line
+from robocram.execution.failures import (
+    NavigationPoseUnreachable,
+    PerceptionObjectNotFound,
+    PlanFailure,
+    failure_line,
+)
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import detect, look_lowering, navigate, park_arms
 from robocram.plans.container_access import OpenedContainer, is_drawer
@@ -25,6 +30,7 @@ from robocram.plans.culprits import blamed, culprit_clause
 from robocram.plans.errors import FetchExhausted, PlanArgumentError
 from robocram.plans.known_robot import KnownRobot, current_robot
 from robocram.plans.location_poses import location_poses, next_pose
+from robocram.plans.peering import look_again
 from robocram.plans.pick_object import Held, pick_up_object
 from robocram.plans.stands import (
     REACH_DISTANCES,
@@ -37,6 +43,9 @@ from robocram.tf import Pose, PoseStamped, transform_pose
 
 STAND_RETRIES = 3  # stands where picking up is tried before fetching gives up
 MAX_BLOCKED = 8  # stands where the robot would collide, skipped without a try
+STEPPED_IN = 0.05  # [m] nearer the object than the opening stand: the robot peered in
+FACING_TURNS = (0.0, math.pi / 2, -math.pi / 2, math.pi)  # [rad] from the robot's bearing
+FACING_DISTANCES = (0.75, 0.85)  # [m] base to object, where no reach costmap cell is left
 
 
 def perceived(object: ObjectDesignator | str) -> ObjectDesignator:  # noqa: A002 - CRAM's key
@@ -59,8 +68,23 @@ def _pick_from(
     park_arms()
     navigate(stand)
     look_lowering(where)
-    again = detect(an.object(type=seen.get("type"), name=seen.get("name")))
+    wanted = an.object(type=seen.get("type"), name=seen.get("name"))
+    try:
+        again = detect(wanted)
+    except PerceptionObjectNotFound:  # hidden at this height: another may show it
+        found = look_again(where, lambda: _detected(wanted))
+        if found is None:
+            raise
+        again = found
     return pick_up_object(again, arm=arm, grasp=grasp, out_of=out_of)
+
+
+def _detected(wanted: ObjectDesignator) -> ObjectDesignator | None:
+    """``wanted`` as the robot sees it now; None if it does not."""
+    try:
+        return detect(wanted)
+    except PerceptionObjectNotFound:
+        return None
 
 
 def _drawer_of(opened: OpenedContainer | None) -> tuple[str, str] | None:
@@ -99,6 +123,9 @@ def _stands(
     costmap keeps a whole base radius off its open drawer), then ``reachable_for``'s."""
     robot = current_robot()
     if opened is not None:
+        here = map_pose(robot.base_frame())
+        if _stepped_in(here, opened.stand.pose, where.pose):
+            yield here, arm  # where it peered in from: it sees the object there
         arms = [arm] if arm is not None else robot.arms()
         out = yaw_of(opened.stand.pose) + math.pi  # the container's front faces the stand
         for stand in front_stands(robot, arms, where.pose, out, REACH_DISTANCES):
@@ -106,8 +133,38 @@ def _stands(
     square_up(robot)
     keys: dict[str, Any] = {"arm": arm} if arm is not None else {}
     poses = location_poses(a.location(reachable_for=robot.name, object=seen.get("name"), **keys))
+    found = False
     while (pose := next_pose(poses, causes)) is not None:
+        found = True
         yield pose, arm
+    if not found:
+        yield from _facing_stands(robot, where, arm)
+
+
+def _facing_stands(
+    robot: KnownRobot, where: PoseStamped, arm: str | None
+) -> Iterator[tuple[Pose, str | None]]:
+    """Stands facing the object from the robot's side of it, then from either side and
+    the far side, :data:`FACING_DISTANCES` away, arm by arm: where the reach costmap has
+    no cell (an HSR's map reaches 0.65 m at a table's height, and its base stands no
+    nearer than that to the milk in the table's middle, which its arm held out to the
+    side put there from 0.8 m)."""
+    here = map_pose(robot.base_frame()).position
+    x, y, _ = where.pose.position
+    towards = math.atan2(here[1] - y, here[0] - x)
+    arms = [arm] if arm is not None else robot.arms()
+    for turn in FACING_TURNS:
+        for stand in front_stands(robot, arms, where.pose, towards + turn, FACING_DISTANCES):
+            yield stand.pose, stand.arm
+
+
+def _stepped_in(here: Pose, stand: Pose, target: Pose) -> bool:
+    """Whether the base at ``here`` stands nearer ``target`` than ``stand`` (where the
+    container was opened from) by more than :data:`STEPPED_IN`: a robot that stepped
+    closer to see into it (``plans/peering.py``)."""
+    x, y, _ = target.position
+    near = math.hypot(here.position[0] - x, here.position[1] - y)
+    return near < math.hypot(stand.position[0] - x, stand.position[1] - y) - STEPPED_IN
 
 
 def exhausted_message(name: str, tries: int, causes: list[Exception]) -> str:

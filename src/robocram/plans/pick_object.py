@@ -26,6 +26,7 @@ from robocram.execution.failures import (
     GripperPathBlocked,
     ManipulationLowLevelFailure,
     ManipulationPoseUnreachable,
+    NavigationLowLevelFailure,
 )
 from robocram.knowledge.grasp_predicates import OBJECT_GRASP, OBJECT_UNGRASPABLE, ObjectGrasp
 from robocram.knowledge.reasoning_predicates import ARM_POSE_REACHABLE, LIFT_CLEARANCE
@@ -39,7 +40,7 @@ from robocram.tf import Pose, PoseStamped, TfError, transform_pose
 CENTRINGS = 2  # a grip meeting the object on one side moves the hand this often at most
 GRASPING = {"collision_mode": "allow_hand"}  # the fingers may touch what they close on:
 # a motion names it too (``touching``), and the hand may touch nothing else, 5 mm at most
-TRIES = (ManipulationLowLevelFailure, GripperLowLevelFailure)  # a try ends, the next starts
+TRIES = (ManipulationLowLevelFailure, GripperLowLevelFailure, NavigationLowLevelFailure)
 
 
 @dataclass(frozen=True)
