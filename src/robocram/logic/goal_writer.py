@@ -44,6 +44,7 @@ Factory = Callable[..., Any]
 
 _NAMESPACE: dict[str, object] = {
     "Var": Var,
+    "newv": object.__new__,  # `newv(Var)` then setting `ref`: no __init__ frame to run
     "Term": Term,
     "INLINE": INLINE,
     "CALL": CALL,
@@ -209,7 +210,7 @@ class GoalWriter:
             slots_in(t, found)
         for i in found:
             if i not in self.known:
-                self.emit(f"v{i} = Var()", depth)
+                self.emit(f"v{i} = newv(Var); v{i}.ref = None", depth)
                 self.known.add(i)
 
     def build(self, t: Value) -> str:
