@@ -13,7 +13,8 @@ Control constructs in a clause body are compiled the same way, so that the machi
 them without looking up `;/2` or `,/2`: `(first, rest, SEQ)` is a conjunction,
 `(left, right, DISJ)` a disjunction, `(cond, (then, else), ITE)` an if-then-else,
 `(cond, then, IFTHEN)` an if-then, `(goal, None, NOT)` a negation, and `(b, None, CUT)`
-the cut to choicepoint `b` that ends a condition. Each part is one goal (a SEQ for several).
+the cut to choicepoint `b` that ends a condition. Each part is one goal (a SEQ for several);
+a then-branch that is just `true` is None (nothing to run after the cut).
 
 >>> goal = (lambda trail, values: values[0] > 1, (2,), INLINE)
 >>> goal[2] is INLINE and goal[0]([], goal[1])

@@ -173,10 +173,13 @@ class Machine:
                         elif mark is DISJ:
                             cps.append([ALT, len(trail), (args, cutb, nxt)])
                             cont = (name, cutb, nxt)
-                        elif mark is ITE:
+                        elif mark is ITE:  # a then-branch None is `true`
                             b = len(cps)
                             cps.append([ALT, len(trail), (args[1], cutb, nxt)])
-                            cont = (name, b + 1, ((b, None, CUT), 0, (args[0], cutb, nxt)))
+                            then = args[0]
+                            if then is not None:
+                                nxt = (then, cutb, nxt)
+                            cont = (name, b + 1, ((b, None, CUT), 0, nxt))
                         elif mark is CUT:
                             del cps[name:]
                             cont = nxt
@@ -184,7 +187,9 @@ class Machine:
                             cont = (name, cutb, (args, cutb, nxt))
                         elif mark is IFTHEN:
                             b = len(cps)
-                            cont = (name, b, ((b, None, CUT), 0, (args, cutb, nxt)))
+                            if args is not None:
+                                nxt = (args, cutb, nxt)
+                            cont = (name, b, ((b, None, CUT), 0, nxt))
                         elif mark is NOT:
                             b = len(cps)
                             cps.append([ALT, len(trail), nxt])
