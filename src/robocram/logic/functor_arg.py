@@ -17,7 +17,7 @@ from robocram.logic.errors import (
 from robocram.logic.terms import Term, Var, new_term
 from robocram.logic.value import Value
 
-__all__ = ["arg_check", "functor_make"]
+__all__ = ["arg_check", "fresh_vars", "functor_make"]
 
 
 def _deref(t: Value) -> Value:

@@ -220,9 +220,10 @@ class _ProcWriter(ClauseWriter):
     def switch(self, b: _Branches) -> None:
         """Emit the switch on the first argument into each branch's clauses."""
         scan = self.owner is not None and len(b.every) > SCAN_AFTER
-        if not self.arity or not b.compound and not b.atomic and not scan:
-            # No head names a first argument (or there is none): every call runs every
-            # clause, so there is nothing to switch on.
+        keyless = not b.compound and not b.atomic and len(b.open_compound) == len(b.every)
+        if not self.arity or keyless and not scan:
+            # No head names a first argument and no leading type test refuses a compound
+            # there (or there is none): every call runs every clause, so no switch.
             self.branch(b.every, 2, switched=False)
             return
         self.emit("while type(a0) is Var and a0.ref is not None: a0 = a0.ref", 2)
