@@ -133,3 +133,23 @@ def test_compiled_control_constructs_in_clause_bodies() -> None:
     assert [str(a["X"]) for a in kb.query("t5(X)")] == ["1-1", "1-2", "1-3", "2-x"]
     answer = kb.first("t6(L)")
     assert answer is not None and str(answer["L"]) == "[1-a, 2-b, 3-c]"
+
+
+def test_then_branch_true_after_a_call() -> None:
+    # `( C -> true ; E )` and `( C -> true )` after a call leave no goal for the then
+    # branch: the condition's choicepoints still go, the else branch still runs.
+    kb = KnowledgeBase()
+    kb.consult(
+        "m(1). m(2). m(3).\n"
+        "u1(X) :- m(A), ( m(X), X > A -> true ; X = none ).\n"
+        "u2(X) :- m(X), ( m(Y), Y > X -> true ).\n"
+        "u3(X-Y) :- m(X), ( X > 1 -> true, true ; Y = small ).\n"
+        "u4(R) :- m(_), ( fail -> true ; R = else ), !.\n"
+    )
+    for _ in range(4):  # the first calls run clause by clause, later ones a procedure
+        assert [a["X"] for a in kb.query("u1(X)")] == [2, 3, "none"]
+        assert [a["X"] for a in kb.query("u2(X)")] == [1, 2]
+        answers = [str(a["P"]) for a in kb.query("u3(P)")]
+        assert answers[0] == "1-small" and len(answers) == 3
+        assert answers[1].startswith("2-_") and answers[2].startswith("3-_")
+        assert [a["R"] for a in kb.query("u4(R)")] == ["else"]

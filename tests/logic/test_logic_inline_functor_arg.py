@@ -16,6 +16,8 @@ a2(T, A) :- arg(2, T, A), A == b.
 a3(T, F, N) :- functor(T, F, N).
 a5(T, N) :- functor(T, f, N), arg(1, T, x).
 a7(T, F) :- functor(T, F, 2), arg(2, T, z).
+a8(F, N, A) :- functor(X, F, N), functor(X, _, A).
+a9(F, N) :- functor(X, F, N), X =.. [_|As], sort(As, S), length(S, N), \\+ \\+ S = As.
 probe(G, R) :-
     forall(between(1, 6, _), ignore(catch(\\+ \\+ G, _, true))),
     catch((G -> R = G ; R = false), error(E, _), R = E).
@@ -52,6 +54,16 @@ def kb() -> KnowledgeBase:
         ("a5(_, 1)", "a5(f(x),1)"),
         ("a7(h(1, z), _)", "a7(h(1,z),h)"),
         ("a7(h(1, y), _)", "false"),
+        ("a8(g, 3, _)", "a8(g,3,3)"),
+        ("a8(foo, 0, _)", "a8(foo,0,0)"),
+        ("a8(1.5, 0, _)", "a8(1.5,0,0)"),
+        ("a8(_, 2, _)", "instantiation_error"),
+        ("a8(foo, -1, _)", "domain_error(not_less_than_zero,-1)"),
+        ("a8(foo, a, _)", "type_error(integer,a)"),
+        ("a8(f(x), 1, _)", "type_error(atomic,f(x))"),
+        ("a8(1, 2, _)", "type_error(atom,1)"),
+        ("a9(g, 3)", "a9(g,3)"),
+        ("a9(g, 5)", "a9(g,5)"),
     ],
 )
 def test_inline_arg_and_functor(kb: KnowledgeBase, goal: str, expected: str) -> None:

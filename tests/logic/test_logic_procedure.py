@@ -236,3 +236,25 @@ def test_clauses_whose_leading_type_test_refuses_the_switched_argument_are_skipp
     assert answers(kb, "k(2.5, R)", "R") == ["atomic"]
     assert answers(kb, "c(f(1), R)", "R") == []  # the cut commits before the test fails
     assert answers(kb, "c(a, R)", "R") == ["yes"]
+
+
+def test_predicate_without_first_argument_keys_runs_every_clause_unswitched() -> None:
+    # No head names its first argument: the procedure has no switch, and a compound,
+    # an atom, a number or an unbound first argument all see every clause in order.
+    kb = KnowledgeBase()
+    kb.consult(
+        "open(X, a) :- atom(X), !.\n"
+        "open(X, b) :- compound(X).\n"
+        "open(X, c) :- var(X), X = set.\n"
+        "open(_, d).\n"
+    )
+    assert answers(kb, "open(f(1), R)", "R") == ["b", "d"]
+    assert answers(kb, "open(x, R)", "R") == ["a"]
+    assert answers(kb, "open(7, R)", "R") == ["d"]
+    for _ in range(4):
+        found = [(a["X"], a["R"]) for a in kb.query("open(X, R)")]
+        assert [r for _, r in found] == ["c", "d"] and found[0][0] == "set"
+    n = SCAN_AFTER + 3  # past SCAN_AFTER clauses the machine still runs them one by one
+    kb.consult(" ".join(f"many(X, {i}) :- X = x{i}." for i in range(n)), group="many")
+    assert answers(kb, "many(X, R)", "R") == list(range(n))
+    assert answers(kb, "many(x3, R)", "R") == [3]

@@ -34,6 +34,7 @@ from robocram.logic.goal_writer import (
     slots_in,
     term_parts,
 )
+from robocram.logic.keys import pred_key
 from robocram.logic.template import Slot, Tmpl
 from robocram.logic.terms import Var
 from robocram.logic.value import Value
@@ -85,6 +86,10 @@ def _conjuncts(g: Value) -> list[Value]:
     if parts is not None and parts[0] == "," and len(parts[1]) == 2:
         return [*_conjuncts(parts[1][0]), *_conjuncts(parts[1][1])]
     return [g]
+
+
+def _is_true(g: Value) -> bool:
+    return type(g) is str and g == "true"
 
 
 class ClauseWriter(GoalWriter):
@@ -189,7 +194,7 @@ class ClauseWriter(GoalWriter):
             return f"new_term(Term, ({self.const(name)}, ({inner})))"
         if type(g) is Tmpl:  # a call: a plain tuple the machine recognises by CALL
             inner = "".join(f"{self.build(a)}, " for a in args)
-            return f"({self.const((name, len(args)))}, ({inner}), CALL)"
+            return f"({self.const(pred_key(name, len(args)))}, ({inner}), CALL)"
         return self.build(g)
 
     def control(self, name: str, args: tuple[Value, ...]) -> str | None:
@@ -201,7 +206,7 @@ class ClauseWriter(GoalWriter):
         if name == ",":
             return self.sequence(*args)
         if name == "->":
-            return f"({self.sequence(args[0])}, {self.sequence(args[1])}, IFTHEN)"
+            return f"({self.sequence(args[0])}, {self.then(args[1])}, IFTHEN)"
         if name == "\\+":
             return f"({self.sequence(args[0])}, None, NOT)"
         if name != ";" or type(args[0]) is Slot:
@@ -211,9 +216,14 @@ class ClauseWriter(GoalWriter):
         if left is not None and len(left[1]) == 2 and left[0] in ("->", "*->"):
             if left[0] == "*->":
                 return None
-            cond, then = self.sequence(left[1][0]), self.sequence(left[1][1])
+            cond, then = self.sequence(left[1][0]), self.then(left[1][1])
             return f"({cond}, ({then}, {right}), ITE)"
         return f"({self.sequence(args[0])}, {right}, DISJ)"
+
+    def then(self, goal: Value) -> str:
+        """The then-branch of an if-then(-else): None when it is `true` (the machine goes
+        straight on after the condition's cut, with no goal to run)."""
+        return "None" if all(_is_true(g) for g in _conjuncts(goal)) else self.sequence(goal)
 
     def sequence(self, *parts: Value) -> str:
         """One goal running the conjunction of `parts`: its goal, or a SEQ of its goals."""
@@ -230,6 +240,7 @@ class ClauseWriter(GoalWriter):
         variables); a run of inline goals may bind one that no goal before it names
         without unifying (see inline_function).
         """
+        body = [g for g in body if not _is_true(g)] or body  # `true` does nothing
         out: list[str] = []
         used = set(held) if held is not None else None
         i = 0

@@ -17,7 +17,7 @@ from robocram.logic.errors import (
 from robocram.logic.terms import Term, Var, new_term
 from robocram.logic.value import Value
 
-__all__ = ["arg_check", "functor_make"]
+__all__ = ["arg_check", "fresh_vars", "functor_make"]
 
 
 def _deref(t: Value) -> Value:
@@ -54,20 +54,28 @@ def arg_check(n: Value, t: Value) -> int:
 
 
 def fresh_vars(n: int) -> tuple[Var, ...]:
-    """`n` new unbound variables; small counts spelt out (no comprehension frame to run).
+    """`n` new unbound variables; small counts spelt out (no comprehension frame to run,
+    and no `__init__` frame per variable: `object.__new__` and the slot set here).
 
     >>> len(fresh_vars(2)), len(fresh_vars(7))
     (2, 7)
     """
-    if n == 1:
-        return (Var(),)
-    if n == 2:
-        return (Var(), Var())
-    if n == 3:
-        return (Var(), Var(), Var())
+    if 0 < n <= 3:
+        a = _new(Var)
+        a.ref = None
+        if n == 1:
+            return (a,)
+        b = _new(Var)
+        b.ref = None
+        if n == 2:
+            return (a, b)
+        c = _new(Var)
+        c.ref = None
+        return (a, b, c)
     return tuple(map(_make, repeat(Var, n)))
 
 
+_new = object.__new__
 _make = type.__call__
 
 

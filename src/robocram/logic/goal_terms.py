@@ -85,7 +85,13 @@ def _functor(w: GoalWriter, t: Value, f: Value, n: Value) -> bool:
     if type(t) is Slot and t.i not in w.known:
         if fv is None or nv is None:
             return False  # the built-in raises the instantiation error
-        w.emit(f"v{t.i} = functor_make({fv}, {nv})", 1)
+        tf, tn = w.temp(), w.temp()  # the usual case built here, the rest (errors) there
+        w.emit(f"{tf} = {fv}; {tn} = {nv}", 1)
+        w.emit(_deref(tf), 1)
+        w.emit(_deref(tn), 1)
+        w.emit(f"if type({tf}) is str and type({tn}) is int and {tn} > 0:", 1)
+        w.emit(f"v{t.i} = new_term(Term, ({tf}, fresh_vars({tn})))", 2)
+        w.emit(f"else: v{t.i} = functor_make({tf}, {tn})", 1)
         w.known.add(t.i)
         return True
     tv = _value(w, t)

@@ -17,7 +17,7 @@ from typing import Any
 
 from robocram.logic.arith import BINARY_FUNCTIONS, apply_binary, evaluate
 from robocram.logic.code_cache import compiled
-from robocram.logic.functor_arg import arg_check, functor_make
+from robocram.logic.functor_arg import arg_check, fresh_vars, functor_make
 from robocram.logic.goal_terms import TERM_GOALS, emit_term_goal
 from robocram.logic.inline_goal import CALL, DISJ, IFTHEN, INLINE, ITE, NOT, SEQ
 from robocram.logic.lru import LRUCache
@@ -44,6 +44,7 @@ Factory = Callable[..., Any]
 
 _NAMESPACE: dict[str, object] = {
     "Var": Var,
+    "newv": object.__new__,  # `newv(Var)` then setting `ref`: no __init__ frame to run
     "Term": Term,
     "INLINE": INLINE,
     "CALL": CALL,
@@ -61,6 +62,7 @@ _NAMESPACE: dict[str, object] = {
     "ap2": apply_binary,
     "arg_check": arg_check,
     "functor_make": functor_make,
+    "fresh_vars": fresh_vars,
 }
 # Generated factories are pure functions of their source text (constants are parameters),
 # so one bounded memo serves every knowledge base without sharing any resolved state.
@@ -209,7 +211,7 @@ class GoalWriter:
             slots_in(t, found)
         for i in found:
             if i not in self.known:
-                self.emit(f"v{i} = Var()", depth)
+                self.emit(f"v{i} = newv(Var); v{i}.ref = None", depth)
                 self.known.add(i)
 
     def build(self, t: Value) -> str:

@@ -12,8 +12,10 @@ a type error); they never appear in a term a program can read.
 Control constructs in a clause body are compiled the same way, so that the machine runs
 them without looking up `;/2` or `,/2`: `(first, rest, SEQ)` is a conjunction,
 `(left, right, DISJ)` a disjunction, `(cond, (then, else), ITE)` an if-then-else,
-`(cond, then, IFTHEN)` an if-then, `(goal, None, NOT)` a negation, and `(b, None, CUT)`
-the cut to choicepoint `b` that ends a condition. Each part is one goal (a SEQ for several).
+`(cond, then, IFTHEN)` an if-then and `(goal, None, NOT)` a negation; the machine ends a
+condition with the cell `("!", b, next)`, the atom `!` with choicepoint `b` as its cut
+barrier. Each part is one goal (a SEQ for several); a then-branch that is just `true` is
+None (nothing to run after the cut).
 
 >>> goal = (lambda trail, values: values[0] > 1, (2,), INLINE)
 >>> goal[2] is INLINE and goal[0]([], goal[1])
@@ -22,7 +24,7 @@ True
 
 from __future__ import annotations
 
-__all__ = ["CALL", "CUT", "DISJ", "IFTHEN", "INLINE", "ITE", "MARKS", "NOT", "SEQ", "GoalMark"]
+__all__ = ["CALL", "DISJ", "IFTHEN", "INLINE", "ITE", "MARKS", "NOT", "SEQ", "GoalMark"]
 
 
 class GoalMark:
@@ -43,6 +45,5 @@ SEQ = GoalMark("SEQ")
 DISJ = GoalMark("DISJ")
 ITE = GoalMark("ITE")
 IFTHEN = GoalMark("IFTHEN")
-CUT = GoalMark("CUT")
 NOT = GoalMark("NOT")
-MARKS = (CALL, INLINE, SEQ, DISJ, ITE, IFTHEN, CUT, NOT)
+MARKS = (CALL, INLINE, SEQ, DISJ, ITE, IFTHEN, NOT)

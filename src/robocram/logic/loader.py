@@ -5,6 +5,7 @@ from __future__ import annotations
 from robocram.logic.clause import Clause
 from robocram.logic.clause_body import stored_body
 from robocram.logic.errors import PrologInstantiationError, PrologTypeError
+from robocram.logic.keys import pred_key
 from robocram.logic.template import Slot, compile_term
 from robocram.logic.terms import Term, Var, deref
 from robocram.logic.unify import copy_resolved
@@ -62,7 +63,8 @@ def compile_clause(term: Value, group: str | None) -> tuple[tuple[str, int], Cla
     slots: dict[Var, Slot] = {}
     head_t = tuple([compile_term(a, slots) for a in args])
     body_t = [compile_term(g, slots) for g in conjuncts(body)]
-    return (name, len(args)), Clause(head_t, tuple(reversed(body_t)), len(slots), group, term, name)
+    clause = Clause(head_t, tuple(reversed(body_t)), len(slots), group, term, name)
+    return pred_key(name, len(args)), clause
 
 
 def parse_indicator(spec: Value) -> tuple[str, int]:

@@ -35,7 +35,7 @@ from robocram.logic.errors import (
     PrologTypeError,
     UnknownPredicateError,
 )
-from robocram.logic.inline_goal import CALL, CUT, DISJ, IFTHEN, INLINE, ITE, MARKS, NOT, SEQ
+from robocram.logic.inline_goal import CALL, DISJ, IFTHEN, INLINE, ITE, MARKS, NOT, SEQ
 from robocram.logic.limits import PROC_LOOPS, Budget
 from robocram.logic.occurs import unify_checked
 from robocram.logic.predicate import DET, NONDET, USER, WARM_CALLS, Pred
@@ -173,22 +173,24 @@ class Machine:
                         elif mark is DISJ:
                             cps.append([ALT, len(trail), (args, cutb, nxt)])
                             cont = (name, cutb, nxt)
-                        elif mark is ITE:
+                        elif mark is ITE:  # a then-branch None is `true`
                             b = len(cps)
                             cps.append([ALT, len(trail), (args[1], cutb, nxt)])
-                            cont = (name, b + 1, ((b, None, CUT), 0, (args[0], cutb, nxt)))
-                        elif mark is CUT:
-                            del cps[name:]
-                            cont = nxt
+                            then = args[0]
+                            if then is not None:
+                                nxt = (then, cutb, nxt)
+                            cont = (name, b + 1, ("!", b, nxt))  # the cut to b ends it
                         elif mark is SEQ:
                             cont = (name, cutb, (args, cutb, nxt))
                         elif mark is IFTHEN:
                             b = len(cps)
-                            cont = (name, b, ((b, None, CUT), 0, (args, cutb, nxt)))
+                            if args is not None:
+                                nxt = (args, cutb, nxt)
+                            cont = (name, b, ("!", b, nxt))
                         elif mark is NOT:
                             b = len(cps)
                             cps.append([ALT, len(trail), nxt])
-                            cont = (name, b + 1, ((b, None, CUT), 0, FAIL))
+                            cont = (name, b + 1, ("!", b, FAIL))
                         else:
                             cont = self._call_other(goal, len(cps), nxt)
                         continue

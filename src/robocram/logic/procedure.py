@@ -219,7 +219,11 @@ class _ProcWriter(ClauseWriter):
 
     def switch(self, b: _Branches) -> None:
         """Emit the switch on the first argument into each branch's clauses."""
-        if not self.arity:
+        scan = self.owner is not None and len(b.every) > SCAN_AFTER
+        keyless = not b.compound and not b.atomic and len(b.open_compound) == len(b.every)
+        if not self.arity or keyless and not scan:
+            # No head names a first argument and no leading type test refuses a compound
+            # there (or there is none): every call runs every clause, so no switch.
             self.branch(b.every, 2, switched=False)
             return
         self.emit("while type(a0) is Var and a0.ref is not None: a0 = a0.ref", 2)
@@ -235,7 +239,7 @@ class _ProcWriter(ClauseWriter):
         tests = [f"t is {type(k).__name__} and a0 == {self.const(k)}" for k in b.atomic]
         self.dispatch(list(b.atomic.items()), tests, "a0", b.open)
         self.emit("else:", 2)
-        if self.owner is not None and len(b.every) > SCAN_AFTER:
+        if scan:
             self.emit(f"return [{self.names}{self.const(Scan(self.owner))}]", 3)
         else:
             self.branch(b.every, 3, switched=False)

@@ -31,6 +31,7 @@ from robocram.logic.builtin_spec import Builtin
 from robocram.logic.clause import Clause
 from robocram.logic.control import CONTROL_NAMES
 from robocram.logic.fact_groups import LIBRARY_OWNER
+from robocram.logic.keys import pred_key
 from robocram.logic.library import LIBRARY
 from robocram.logic.loader import compile_clause
 from robocram.logic.predicate import CONTROL, FrozenPred, Key, Pred
@@ -63,13 +64,13 @@ def system_predicates() -> Mapping[Key, Pred]:
     """Control constructs and built-ins by name/arity (a read-only view, built once)."""
     table: dict[Key, Pred] = {}
     for name, arity in CONTROL_NAMES:
-        table[(name, arity)] = FrozenPred(name, arity, CONTROL)
+        table[pred_key(name, arity)] = FrozenPred(name, arity, CONTROL)
     for builtins in _TABLES:
         for b in builtins:
             for arity in b.arities:
                 if (b.name, arity) in table:
                     raise LogicArgumentError(f"built-in {b.name}/{arity} is listed twice")
-                table[(b.name, arity)] = FrozenPred(b.name, arity, b.kind, b.fn)
+                table[pred_key(b.name, arity)] = FrozenPred(b.name, arity, b.kind, b.fn)
     return MappingProxyType(table)
 
 

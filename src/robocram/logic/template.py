@@ -64,13 +64,17 @@ def compile_term(term: Value, slots: dict[Var, Slot]) -> Value:
     return new_term(Term, (term[0], args))
 
 
+_new = object.__new__
+
+
 def build(t: Value, regs: list[Value]) -> Value:
     """Instantiate a template against the registers, creating fresh Vars on first use."""
     tt = type(t)
     if tt is Slot:
         v = regs[t.i]
-        if v is None:
-            v = regs[t.i] = Var()
+        if v is None:  # object.__new__ and the slot set here: no __init__ frame to run
+            v = regs[t.i] = _new(Var)
+            v.ref = None
         return v
     if tt is Tmpl:
         return new_term(Term, (t.name, tuple([build(a, regs) for a in t.args])))
