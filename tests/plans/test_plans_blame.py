@@ -57,12 +57,13 @@ def test_a_transport_names_the_crate_that_takes_every_stand(kitchen: KitchenScen
         transport("mug", a.location(on=TABLE, for_="mug-1"))
     error = caught.value
     assert error.blocked_by == ("crate-1",) and error.attempts == 0
+    # no reachable stand left by the costmap, then every stand facing the mug collides
     assert str(error).startswith(
-        "no stand found for mug-1, blocked by crate-1 (move it or stand elsewhere): "
-        "LocationNotFound: "
+        "could not fetch mug-1, blocked by crate-1 (move it or stand elsewhere): "
+        "the robot would collide at each of "
     )
-    assert error.causes is not None and isinstance(error.causes[-1], LocationNotFound)
-    assert error.causes[-1].blocked_by == ("crate-1",)
+    assert error.causes is not None and isinstance(error.causes[0], LocationNotFound)
+    assert error.causes[0].blocked_by == ("crate-1",)
 
 
 def test_fetching_names_the_boards_round_the_mug(kitchen: KitchenScene) -> None:
@@ -78,13 +79,15 @@ def test_fetching_names_the_boards_round_the_mug(kitchen: KitchenScene) -> None:
     assert error.blocked_by is not None
     assert set(error.blocked_by) == {"box-1", "box-2", "box-4"}
     named = f"{', '.join(error.blocked_by[:2])} and {error.blocked_by[2]}"
+    # the costmap's stands are blocked; from the stands facing it, the boards hide the mug
     assert str(error).startswith(
-        f"no stand found for mug-1, blocked by {named} (move them or stand elsewhere): "
+        "could not fetch mug-1 in 3 tries, hidden by box-1 and box-4 (move them or look from "
+        f"elsewhere), blocked by {named} (move them or stand elsewhere)"
     )
     assert error.causes is not None
-    cause = pickle.loads(pickle.dumps(error.causes[-1]))  # a LocationNotFound did not pickle
+    cause = pickle.loads(pickle.dumps(error.causes[0]))  # a LocationNotFound did not pickle
     assert isinstance(cause, LocationNotFound) and cause.blocked_by == error.blocked_by
-    assert str(cause) == str(error.causes[-1])
+    assert str(cause) == str(error.causes[0])
 
 
 def test_detecting_names_what_hides_the_mug_in_view(kitchen: KitchenScene) -> None:

@@ -29,6 +29,7 @@ AT_END = 1e-6  # [rad | m] joints this near a trajectory's end show the robot st
 # stamped this soon after a result, a frame lagging the joints (an older frame is not
 # published with them: sent once, or by a machine with another clock)
 AFTER_RESULT_WINDOW = 1.0
+FIRST_STATE_TIMEOUT = 5.0  # [s] the first snapshot waits this long for a state to come
 
 
 class NodeState(ABC):
@@ -42,6 +43,7 @@ class NodeState(ABC):
         self._joints: dict[str, float] = {}
         self._joint_arrivals = 0  # joint-state messages received so far
         self._base_arrivals = 0  # transforms of the base frame received so far
+        self._first_snapshot_waited = False  # the first snapshot waited for a first state
         self._environment: dict[str, dict[str, float]] = {t: {} for t in config.environment_topics}
         self._joint_stamp = 0.0  # [s] of the robot's clock; 0: unstamped or none yet
         self._environment_stamps: dict[str, float] = {}  # by topic
@@ -108,7 +110,17 @@ class NodeState(ABC):
         dict[str, tuple[tuple[float, ...], tuple[float, ...]]],
     ]:
         """The joints, the environments' joints and the poses in ``target`` of ``base`` and
-        of those ``objects`` tf knows (tf2 frames may carry a leading slash), in one reply."""
+        of those ``objects`` tf knows (tf2 frames may carry a leading slash), in one reply.
+        Asked before the robot's first joint state and base transform came, it waits up to
+        :data:`FIRST_STATE_TIMEOUT` for them, once: a robot that publishes when its state
+        changes (and a lagging tf) may not have sent since our node joined."""
+        with self._state:
+            if not self._first_snapshot_waited:
+                self._first_snapshot_waited = True
+                self._state.wait_for(
+                    lambda: self._joint_arrivals > 0 and self._base_arrivals > 0,
+                    FIRST_STATE_TIMEOUT,
+                )
         known = {frame.lstrip("/") for frame in self.op_frames()}
         sources = [base, *(o for o in objects if o in known and o != base)]
         return (
