@@ -13,9 +13,10 @@ import pytest
 from robocram.cli import EXIT_INPUT, EXIT_OK, main
 from robocram.viewer.headless_browser import HeadlessChromium
 
-SPEED = 4.0  # motions play at 4 times their pace: the run lasts a few seconds
+SPEED = 8.0  # motions play at 8 times their pace: the run lasts a few seconds
 STATES_SEEN = 5  # at least this many different world states reach the page
 SERVE_AFTER = 3.0  # [s] the page is served after the run (its last updates arrive)
+PAGE = (400, 250)  # [px] a small page: SwiftShader draws each frame in a quarter the time
 SERVER_POLLS, POLL = 1200, 0.1  # looks for the server to wait [s apart]: a hang guard
 
 # Installed before the page's own scripts: records every "state N:" the caption shows, from
@@ -60,7 +61,7 @@ def test_view_waits_for_the_browser_then_the_page_sees_the_run(
             break
         time.sleep(POLL)
     assert "waiting for a browser" in said
-    with HeadlessChromium() as browser:
+    with HeadlessChromium(*PAGE) as browser:
         browser.call("Page.enable")
         browser.call("Page.addScriptToEvaluateOnNewDocument", source=WATCHER)
         browser.open(f"http://127.0.0.1:{port}")
