@@ -7,21 +7,35 @@ from dataclasses import dataclass
 
 from robocram.designators import a
 from robocram.execution import perform
+from robocram.grasping.hand import hand_of, tool_orientation
 from robocram.projection import simulated_robot
 from robocram.scenes import tabletop_scene
 from robocram.scenes.tool_objects import add_tool_object
 from robocram.tf import Pose
+from robocram.tf import quaternion as quat
+from robocram.tf.quaternion import Quaternion
 from robocram.world import World
 
-DOWN = (0.0, math.sin(math.pi / 4), 0.0, math.cos(math.pi / 4))  # a tool frame's x down
-UPRIGHT_IN_DOWN = (0.0, -math.sin(math.pi / 4), 0.0, math.cos(math.pi / 4))
-# how each tool sits in a tool frame: (where the hand goes, over the work; object in tcp)
+DOWN = (0.0, 0.0, -1.0)
+# how each tool is held: (where the hand goes, over the work [m], in the robot's heading;
+# the hand's approach, "down" or "ahead"; how far the tool's frame is below the tool frame)
 GRIPS = {
-    "spoon": ((-0.05, 0.0, 0.3), DOWN, Pose((0.13, 0.0, 0.0), UPRIGHT_IN_DOWN)),
-    "sponge": ((-0.05, 0.0, 0.2), DOWN, Pose((0.01, 0.0, 0.0), UPRIGHT_IN_DOWN)),
-    "knife": ((-0.2, 0.0, 0.25), DOWN, Pose((0.0, 0.0, 0.0), UPRIGHT_IN_DOWN)),
-    "cup": ((-0.15, -0.05, 0.2), (0.0, 0.0, 0.0, 1.0), Pose((0.0, 0.0, -0.05))),
+    "spoon": ((-0.05, 0.0, 0.3), "down", 0.13),  # the stick held 13 cm over the head
+    "sponge": ((-0.05, 0.0, 0.2), "down", 0.01),
+    "knife": ((-0.2, 0.0, 0.25), "down", 0.0),  # the handle's middle, blade ahead
+    "cup": ((-0.15, -0.05, 0.2), "ahead", 0.05),  # from the side, 5 cm over its bottom
 }
+
+
+def grip_orientation(world: World, robot: str, arm: str, approach: str) -> Quaternion:
+    """The tool frame's orientation (map) that puts ``arm``'s hand, as the grasp model reads
+    it from the kinematics, onto ``approach`` ("down" or "ahead" along the robot's
+    heading), its fingers closing across the heading: any robot's hand, not one's axes."""
+    yaw = quat.to_euler(world.pose(robot).orientation)[2]
+    ahead = (math.cos(yaw), math.sin(yaw), 0.0)
+    across = (-math.sin(yaw), math.cos(yaw), 0.0)
+    hand = hand_of(world.robot(robot).description, arm)
+    return tool_orientation(hand, DOWN if approach == "down" else ahead, across)
 
 
 @dataclass(frozen=True)
@@ -34,24 +48,31 @@ class ToolScene:
     spot: tuple[float, float, float]  # [m] on the table top, where the work lies
 
 
-def tool_scene(robot: str, tool: str, arm: str = "right") -> ToolScene:
+def tool_scene(robot: str, tool: str, arm: str | None = None) -> ToolScene:
     """A tabletop for ``robot`` without its mug and bottle; ``arm`` has gripped a
-    ``tool`` (``<tool>-1``) put between its open fingers, over the table."""
+    ``tool`` (``<tool>-1``) put between its open fingers, over the table (default: the
+    right arm, else the robot's first)."""
     scene = tabletop_scene(robot)
     world = scene.world
+    arms = world.robot(scene.robot).description.arms
+    arm = arm or ("right" if "right" in arms else next(iter(arms)))
     world.remove("mug-1")
     world.remove("bottle-1")
     x, y, h = scene.look_target.pose.position
-    offset, down, object_in_tcp = GRIPS[tool]
+    offset, approach, below = GRIPS[tool]
     name = f"{tool}-1"
+    yaw = quat.to_euler(world.pose(scene.robot).orientation)[2]
+    c, s = math.cos(yaw), math.sin(yaw)
+    at = (x + c * offset[0] - s * offset[1], y + s * offset[0] + c * offset[1], h + offset[2])
     with simulated_robot(world, scene.robot):
         perform(a.motion(type="moving-torso", joint_angle=0.2))
-        target = Pose((x + offset[0], y + offset[1], h + offset[2]), down)
+        target = Pose(at, grip_orientation(world, scene.robot, arm, approach))
         perform(a.motion(type="moving-tcp", arm=arm, target=target))
         perform(a.motion(type="opening", gripper=arm))
         spec = world.robot(scene.robot).description.arms[arm]
-        tcp = world.link_pose(scene.robot, spec.tool_frame)
-        add_tool_object(world, name, tool, tcp * object_in_tcp)
+        tcp = world.link_pose(scene.robot, spec.tool_frame).position
+        upright = quat.from_euler(0.0, 0.0, yaw)
+        add_tool_object(world, name, tool, Pose((tcp[0], tcp[1], tcp[2] - below), upright))
         gripped = perform(a.motion(type="gripping", gripper=arm))
     if gripped != name:
         raise AssertionError(f"{robot}'s {arm} hand gripped {gripped!r}, not {name!r}")

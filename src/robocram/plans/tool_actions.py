@@ -19,6 +19,7 @@ from robocram.logic import current_kb
 from robocram.plans.errors import PlanArgumentError, PlanSetupError
 from robocram.plans.known_robot import current_robot
 from robocram.plans.tool_coverage import covered_share
+from robocram.plans.tool_failures import ToolPathIncomplete
 from robocram.plans.tool_objects import (
     WALL,
     ObjectBox,
@@ -38,6 +39,29 @@ POUR_ANGLE = 2.1  # [rad] the source is tilted this far (120 degrees)
 STIR_MARGIN = 0.012  # [m] the spoon's head keeps this far from the container's wall
 STIR_HEIGHT = 0.012  # [m] the spoon's tip above the container's bottom
 EDGE_ABOVE = 0.004  # [m] the knife's edge stops this far above the object's underside
+NEEDED = 0.9  # share of a pour's tilt or a stir's spiral reached, or of a region wiped,
+# for the action to count as done (below it: ToolPathIncomplete, never a quiet result)
+
+
+def _incomplete(action: str, what: str, reached: float, needed: float, why: str) -> None:
+    """Raise :class:`ToolPathIncomplete` when ``reached`` falls short of ``needed``."""
+    if reached < needed:
+        raise ToolPathIncomplete(
+            f"{action}: {what} {reached:.0%}, {needed:.0%} needed"
+            + (f"; stopped by {why}" if why else ""),
+            action=action,
+            fraction=reached,
+            needed=needed,
+            stopped_by=why,
+        )
+
+
+def _reached_part(path: list[Pose], fraction: float) -> list[Pose]:
+    """The poses of ``path`` a tool path reached at ``fraction`` (the first is moved to
+    before the path is planned; the fraction counts along the rest)."""
+    if fraction >= 1.0:
+        return path
+    return path[: 1 + int(fraction * (len(path) - 2) + 1e-9)]
 
 
 def _bottom_point(box: ObjectBox) -> Pose:
@@ -69,6 +93,8 @@ def pour(source: str, target: str, amount: float, arm: str | None = None) -> Pou
     Raises:
         TargetCovered: something lies on the target's opening (named).
         ToolNotHeld: no hand holds ``source``.
+        ToolPathIncomplete: the tilt stopped short of :data:`NEEDED` (the source is
+            turned upright again first).
     """
     arm = holding_arm("pouring", source, arm)
     ensure_uncovered("pouring", target)
@@ -91,9 +117,12 @@ def pour(source: str, target: str, amount: float, arm: str | None = None) -> Pou
             destination=target, amount=float(amount),
         )
     )  # fmt: skip
-    _tool_path(arm, list(reversed(path[:-1])), source, lip, [])  # upright again
     if not isinstance(poured, PouringAnswer):
         raise PlanSetupError(f"pouring answered {poured!r}, not a PouringAnswer")
+    back = list(reversed(_reached_part(path, poured.path.fraction)[:-1]))
+    if back:  # upright again, along the part of the tilt it reached
+        _tool_path(arm, back, source, lip, [])
+    _incomplete("pouring", "the tilt reached", poured.path.fraction, NEEDED, poured.path.stopped_by)
     return PouringResult(
         source, target, float(amount), poured.path.fraction, poured.particles, poured.landed,
         poured.spilled,
@@ -112,6 +141,7 @@ def wipe(
 
     Raises:
         ToolNotHeld: no hand holds ``tool``.
+        ToolPathIncomplete: less than :data:`NEEDED` of the region was covered.
         PlanSetupError: the region is not two pairs of numbers, or is empty.
     """
     arm = holding_arm("wiping", tool, arm)
@@ -130,6 +160,7 @@ def wipe(
         raise PlanSetupError(f"moving-tool-path answered {done!r}, not a ToolPathAnswer")
     own = (sponge.size[0], sponge.size[1])  # turned with the tool at each pose
     covered = covered_share(centre, size, own, top, done.tool_poses)
+    _incomplete("wiping", "the region covered", covered, NEEDED, done.stopped_by)
     return WipingResult(surface, tool, covered, done.fraction)
 
 
@@ -154,6 +185,7 @@ def cut(object: str, tool: str, slices: int, arm: str | None = None) -> CuttingR
 
     Raises:
         ToolNotHeld: no hand holds ``tool``.
+        ToolPathIncomplete: the knife did not go through every cut.
         PlanSetupError: ``slices`` is not a whole number of at least 2.
     """
     if isinstance(slices, bool) or not isinstance(slices, int) or slices < 2:
@@ -190,6 +222,8 @@ def cut(object: str, tool: str, slices: int, arm: str | None = None) -> CuttingR
     )  # fmt: skip
     if not isinstance(done, CuttingAnswer):
         raise PlanSetupError(f"cutting answered {done!r}, not a CuttingAnswer")
+    made = len(done.cuts_made) / len(offsets)
+    _incomplete("cutting", "the cuts made", made, 1.0, done.path.stopped_by)
     widths = tuple(_width(name, axis) for name in done.slices)
     return CuttingResult(obj, tool, done.slices, widths, done.path.fraction)
 
@@ -204,6 +238,7 @@ def mix(container: str, tool: str, arm: str | None = None, turns: float = 2.0) -
 
     Raises:
         ToolNotHeld: no hand holds ``tool``.
+        ToolPathIncomplete: the spiral stopped short of :data:`NEEDED`.
         PlanSetupError: the tool's head does not fit inside the container.
     """
     arm = holding_arm("mixing", tool, arm)
@@ -220,5 +255,6 @@ def mix(container: str, tool: str, arm: str | None = None, turns: float = 2.0) -
     done = _tool_path(arm, path, tool, _bottom_point(spoon), [])
     if not isinstance(done, ToolPathAnswer):
         raise PlanSetupError(f"moving-tool-path answered {done!r}, not a ToolPathAnswer")
+    _incomplete("mixing", "the spiral reached", done.fraction, NEEDED, done.stopped_by)
     clearance = bowl.inner_radius() - head - radius
     return MixingResult(container, tool, turns, radius, clearance, done.fraction)
