@@ -1,10 +1,13 @@
-"""The tool actions on the PR2, judged by raw PyBullet and the trace audit.
+"""The tool actions on the PR2, Boxy and the drafted Fetch, judged by raw PyBullet and the
+trace audit.
 
 Pouring lands most particles in the bowl and a covered bowl fails naming its cover;
 wiping covers the region (cells marked under the sponge's own bounds, read from PyBullet,
 where it touches the table); cutting gives the slices asked for, of even widths; the
 spoon never comes nearer the bowl than it may; every traced run passes the audit (the
-grains poured and the slices cut are stored with the world states and replayed).
+grains poured and the slices cut are stored with the world states and replayed). Boxy
+reaches none of the paths from where the tabletop puts it: it carries the tool to stands
+that reach the work (``plans/tool_stands.py``) and works from there.
 """
 
 from __future__ import annotations
@@ -34,6 +37,12 @@ from robocram.world import World
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from tool_setup import tool_scene  # noqa: E402
 
+FETCH = str(Path(__file__).resolve().parents[1] / "data" / "fetch" / "fetch.py")
+ROBOTS = ["pr2", "boxy", FETCH]
+# Boxy's pour (14 s of particles) is left to the bench; its stir does reach the spoon round
+# the bowl from a stand, but the audit finds the long spoon 27 mm in Boxy's base on the way
+# to the path's start: arm motions do not check a held object against the robot's own
+# body (motion/bullet_scene.py skips it), an open finding (docs/tool_actions.md)
 BOWL_INSIDE = 0.074  # [m] the catalogue bowl's radius within its wall
 BOWL_RIM = 0.06  # [m]
 
@@ -55,8 +64,9 @@ def _added_in_last_state(db_path: Path) -> tuple[set[str], set[str]]:
     return set(json.loads(added or "{}")), set(json.loads(poses))
 
 
-def test_pouring_lands_the_particles_in_the_bowl(tmp_path: Path) -> None:
-    scene = tool_scene("pr2", "cup")
+@pytest.mark.parametrize("robot", ["pr2", FETCH], ids=["pr2", "fetch"])
+def test_pouring_lands_the_particles_in_the_bowl(robot: str, tmp_path: Path) -> None:
+    scene = tool_scene(robot, "cup")
     x, y, h = scene.spot
     add_tool_object(scene.world, "bowl-1", "bowl", Pose((x + 0.05, y - 0.1, h)))
     with (
@@ -98,7 +108,11 @@ def test_pouring_into_a_covered_bowl_fails_naming_the_cover() -> None:
 
 
 def _replayed_cells(
-    world: World, trajectories: list[JointTrajectory], region: tuple[float, ...], top: float
+    world: World,
+    robot: str,
+    trajectories: list[JointTrajectory],
+    region: tuple[float, ...],
+    top: float,
 ) -> float:
     """The share of the region's 5 mm cells under the sponge's PyBullet bounds at a
     trajectory point where the bounds reach the table top."""
@@ -111,7 +125,7 @@ def _replayed_cells(
     for trajectory in trajectories:
         for point in trajectory.points:
             world.set_joint_states(
-                "pr2", dict(zip(trajectory.joint_names, point.positions, strict=True))
+                robot, dict(zip(trajectory.joint_names, point.positions, strict=True))
             )
             low, high = pybullet.getAABB(body, physicsClientId=cid)
             if low[2] <= top + 0.001:
@@ -119,8 +133,9 @@ def _replayed_cells(
     return float(marked.mean())
 
 
-def test_wiping_covers_the_region_and_touches_only_the_table(tmp_path: Path) -> None:
-    scene = tool_scene("pr2", "sponge")
+@pytest.mark.parametrize("robot", ROBOTS, ids=["pr2", "boxy", "fetch"])
+def test_wiping_covers_the_region_and_touches_only_the_table(robot: str, tmp_path: Path) -> None:
+    scene = tool_scene(robot, "sponge")
     x, y, h = scene.spot
     seen: list[JointTrajectory] = []
     region = ((x, y), (0.2, 0.14))
@@ -132,7 +147,7 @@ def test_wiping_covers_the_region_and_touches_only_the_table(tmp_path: Path) -> 
         result = perform(an.action(type="wiping", surface="table", region=region, tool="sponge-1"))
     assert isinstance(result, WipingResult) and result.fraction == 1.0
     paths = [t for t in seen if t.kind == "tool-path"]
-    covered = _replayed_cells(scene.world, paths, (x, y, 0.2, 0.14), h)
+    covered = _replayed_cells(scene.world, scene.robot, paths, (x, y, 0.2, 0.14), h)
     assert covered >= 0.9 and result.covered >= 0.9
     assert abs(covered - result.covered) < 0.1
     with TraceDatabase(tmp_path / "wipe.db") as db:
@@ -140,8 +155,9 @@ def test_wiping_covers_the_region_and_touches_only_the_table(tmp_path: Path) -> 
     assert not report.findings, report.summary_lines()
 
 
-def test_cutting_gives_the_slices_of_even_widths(tmp_path: Path) -> None:
-    scene = tool_scene("pr2", "knife")
+@pytest.mark.parametrize("robot", ROBOTS, ids=["pr2", "boxy", "fetch"])
+def test_cutting_gives_the_slices_of_even_widths(robot: str, tmp_path: Path) -> None:
+    scene = tool_scene(robot, "knife")
     x, y, h = scene.spot
     world = scene.world
     add_tool_object(world, "bread-1", "bread", Pose((x, y, h + 0.04)))
@@ -163,8 +179,9 @@ def test_cutting_gives_the_slices_of_even_widths(tmp_path: Path) -> None:
     assert report.clean, report.summary_lines()
 
 
-def test_mixing_keeps_the_spoon_clear_of_the_rim(tmp_path: Path) -> None:
-    scene = tool_scene("pr2", "spoon")
+@pytest.mark.parametrize("robot", ["pr2", FETCH], ids=["pr2", "fetch"])
+def test_mixing_keeps_the_spoon_clear_of_the_rim(robot: str, tmp_path: Path) -> None:
+    scene = tool_scene(robot, "spoon")
     x, y, h = scene.spot
     world = scene.world
     add_tool_object(world, "bowl-1", "bowl", Pose((x, y, h)))
@@ -184,7 +201,8 @@ def test_mixing_keeps_the_spoon_clear_of_the_rim(tmp_path: Path) -> None:
         for a, b in zip(points, points[1:], strict=False):
             for s in np.linspace(0.0, 1.0, 4, endpoint=False):  # between the points too
                 q = a + (b - a) * s
-                world.set_joint_states("pr2", dict(zip(trajectory.joint_names, q, strict=True)))
+                joints = dict(zip(trajectory.joint_names, q, strict=True))
+                world.set_joint_states(scene.robot, joints)
                 found = pybullet.getClosestPoints(spoon, bowl, 0.05, physicsClientId=cid)
                 nearest = min([nearest, *(p[8] for p in found)])
     assert nearest > 0.0

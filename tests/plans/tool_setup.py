@@ -7,6 +7,7 @@ from dataclasses import dataclass
 
 from robocram.designators import a
 from robocram.execution import perform
+from robocram.execution.failures import GripperMetOneSide
 from robocram.grasping.hand import hand_of, tool_orientation
 from robocram.projection import simulated_robot
 from robocram.scenes import tabletop_scene
@@ -17,6 +18,7 @@ from robocram.tf.quaternion import Quaternion
 from robocram.world import World
 
 DOWN = (0.0, 0.0, -1.0)
+TORSO_LIFT = 0.2  # [m] the torso's goal, where its limits allow
 # how each tool is held: (where the hand goes, over the work [m], in the robot's heading;
 # the hand's approach, "down" or "ahead"; how far the tool's frame is below the tool frame)
 GRIPS = {
@@ -65,15 +67,26 @@ def tool_scene(robot: str, tool: str, arm: str | None = None) -> ToolScene:
     c, s = math.cos(yaw), math.sin(yaw)
     at = (x + c * offset[0] - s * offset[1], y + s * offset[0] + c * offset[1], h + offset[2])
     with simulated_robot(world, scene.robot):
-        perform(a.motion(type="moving-torso", joint_angle=0.2))
+        torso = world.robot(scene.robot).description.torso_joint
+        if torso is not None:  # up to 0.2 m, as its limits allow (Boxy's runs below 0)
+            lift = min(TORSO_LIFT, world.bodies.joint_limits(scene.robot, torso).upper)
+            perform(a.motion(type="moving-torso", joint_angle=lift))
         target = Pose(at, grip_orientation(world, scene.robot, arm, approach))
         perform(a.motion(type="moving-tcp", arm=arm, target=target))
         perform(a.motion(type="opening", gripper=arm))
         spec = world.robot(scene.robot).description.arms[arm]
         tcp = world.link_pose(scene.robot, spec.tool_frame).position
         upright = quat.from_euler(0.0, 0.0, yaw)
-        add_tool_object(world, name, tool, Pose((tcp[0], tcp[1], tcp[2] - below), upright))
-        gripped = perform(a.motion(type="gripping", gripper=arm))
+        at = (tcp[0], tcp[1], tcp[2] - below)
+        add_tool_object(world, name, tool, Pose(at, upright))
+        try:
+            gripped = perform(a.motion(type="gripping", gripper=arm))
+        except GripperMetOneSide as one_side:  # a tool frame off the fingers' middle
+            if one_side.shift is None:
+                raise
+            dx, dy, dz = one_side.shift  # the hand's way to centre it: the tool the other
+            world.set_pose(name, Pose((at[0] - dx, at[1] - dy, at[2] - dz), upright))
+            gripped = perform(a.motion(type="gripping", gripper=arm))
     if gripped != name:
         raise AssertionError(f"{robot}'s {arm} hand gripped {gripped!r}, not {name!r}")
     return ToolScene(world, scene.robot, arm, (x, y, h))

@@ -115,6 +115,7 @@ _PATH = MotionProperty("path", (list, tuple), "a list of poses (map) of the tool
 _POINT = MotionProperty(
     "tool_point", (Pose, tuple, list), "the tool point's pose in the tool's frame", default="none"
 )
+_NEEDED = _number("needed", "[0..1]: the share of the path the arm must reach", default="none")
 _CONTACTS = MotionProperty(
     "contacts", (list, tuple), "[[object, depth], ...]: what the tool may touch [m]",
     default="none",
@@ -123,19 +124,28 @@ _CONTACTS = MotionProperty(
 
 def _tool_motions() -> tuple[MotionType, ...]:
     """Motions of a held tool along a path (resource ``tools``, docs/tool_actions.md)."""
-    path = (_atom("arm"), _PATH, _POINT)
+    path = (_atom("arm"), _PATH, _POINT, _NEEDED)
     return (
         MotionType(
             "moving-tool-path",
             (*path, _atom("tool"), _CONTACTS),
-            (Command("move_tool_path", ("arm", "path", "tool", "tool_point", "contacts")),),
+            (
+                Command(
+                    "move_tool_path", ("arm", "path", "tool", "tool_point", "contacts", "needed")
+                ),
+            ),
             "tools",
             Answer.GOAL,
         ),
         MotionType(
             "pouring",
             (*path, _atom("source"), _atom("destination"), _number("amount", "[ml]")),
-            (Command("pour", ("arm", "path", "source", "tool_point", "destination", "amount")),),
+            (
+                Command(
+                    "pour",
+                    ("arm", "path", "source", "tool_point", "destination", "amount", "needed"),
+                ),
+            ),
             "tools",
             Answer.GOAL,
         ),
@@ -148,7 +158,12 @@ def _tool_motions() -> tuple[MotionType, ...]:
                 _atom("item"),
                 MotionProperty("cuts", (list, tuple), "offsets [m] along the object's axis"),
             ),
-            (Command("cut", ("arm", "path", "tool", "tool_point", "contacts", "item", "cuts")),),
+            (
+                Command(
+                    "cut",
+                    ("arm", "path", "tool", "tool_point", "contacts", "item", "cuts", "needed"),
+                ),
+            ),
             "tools",
             Answer.GOAL,
         ),

@@ -45,17 +45,19 @@ def cut(
     contacts: object,
     obj: str,
     cuts: Sequence[float],
+    needed: float = 0.0,
 ) -> CuttingAnswer:
     """Saw ``obj`` with ``tool`` (held by ``arm``) along ``path`` of its ``tool_point``
     (the edge), at ``cuts`` (offsets [m] along the object's longest axis, from its
-    middle); the object becomes the slices between the cuts made."""
+    middle); the object becomes the slices between the cuts made. A path planned to less
+    than ``needed`` is refused before the knife moves along it."""
     world = robot.world
     shape = shape_of(world, world.object(obj))
     axis = _longest(shape)
     offsets = _checked_cuts(obj, shape, axis, cuts)
     grip = tool_grip(robot, arm, tool, tool_point)
     checked = planned_against(robot)
-    planned = plan_from_start(robot, grip, path, allowances(tool, contacts))
+    planned = plan_from_start(robot, grip, path, allowances(tool, contacts), needed)
     follow(robot, planned.motion.trajectory, checked)
     followed = answer(robot, grip, planned)
     made = _made(world, obj, shape, axis, offsets, followed.tool_poses)

@@ -120,14 +120,16 @@ def pour(
     tool_point: PoseLike | None,
     target: str,
     amount: float,
+    needed: float = 0.0,
 ) -> PouringAnswer:
     """Tilt ``source`` (held by ``arm``) along ``path`` of its ``tool_point`` (the lip)
-    over ``target``; its ``amount`` [ml] of contents poured as particles."""
+    over ``target``; its ``amount`` [ml] of contents poured as particles. A tilt planned
+    to less than ``needed`` of the path is refused before the contents appear."""
     count = particle_count(amount)
     world = robot.world
     world.object(target)  # an unknown target is named before anything moves
     grip = tool_grip(robot, arm, source, tool_point)
-    planned = plan_from_start(robot, grip, path)
+    planned = plan_from_start(robot, grip, path, needed=needed)
     seed = robot.motion.seed
     names = _fill(world, source, count, seed)
     with kinematic(world, source):  # the hand moves it; the grains do not push it

@@ -201,6 +201,15 @@ def _point(point: object) -> PoseLike | None:
     return Pose.coerce(point)  # type: ignore[arg-type]  # a pose or its tuples; Pose says
 
 
+def _share(needed: object) -> float:
+    """The share of a tool path a motion asks for (``none``: any, 0)."""
+    if needed == "none":
+        return 0.0
+    if isinstance(needed, bool) or not isinstance(needed, int | float) or not 0 <= needed <= 1:
+        raise ProjectionError(f"a tool path's needed share is a number in [0, 1], got {needed!r}")
+    return float(needed)
+
+
 class ToolPM(ProjectionProcessModule):
     """Held tools along paths: ``move_tool_path``, ``pour`` and ``cut``."""
 
@@ -211,11 +220,18 @@ class ToolPM(ProjectionProcessModule):
         return self.robot.description.arm_called(word)
 
     def move_tool_path(
-        self, arm: str, path: Sequence[PathPose], tool: str, point: object, contacts: object
+        self,
+        arm: str,
+        path: Sequence[PathPose],
+        tool: str,
+        point: object,
+        contacts: object,
+        needed: object = "none",
     ) -> ToolPathAnswer:
         """Move the held ``tool``'s ``point`` along ``path``, touching only ``contacts``."""
-        robot, named = self.robot, _named(tool)
-        return follow_tool_path(robot, self._arm(arm), path, named, _point(point), contacts)
+        robot, named, arm_name = self.robot, _named(tool), self._arm(arm)
+        share = _share(needed)
+        return follow_tool_path(robot, arm_name, path, named, _point(point), contacts, share)
 
     def pour(
         self,
@@ -225,9 +241,11 @@ class ToolPM(ProjectionProcessModule):
         point: object,
         target: str,
         amount: float,
+        needed: object = "none",
     ) -> PouringAnswer:
         """Tilt the held ``source`` along ``path`` over ``target``, pouring ``amount`` [ml]."""
-        return pour(self.robot, self._arm(arm), path, source, _point(point), target, amount)
+        arm_name, share = self._arm(arm), _share(needed)
+        return pour(self.robot, arm_name, path, source, _point(point), target, amount, share)
 
     def cut(
         self,
@@ -238,10 +256,11 @@ class ToolPM(ProjectionProcessModule):
         contacts: object,
         obj: str,
         cuts: Sequence[float],
+        needed: object = "none",
     ) -> CuttingAnswer:
         """Saw ``obj`` with the held ``tool`` along ``path``, at ``cuts`` along its axis."""
-        arm_name = self._arm(arm)
-        return cut(self.robot, arm_name, path, tool, _point(point), contacts, obj, cuts)
+        arm_name, share = self._arm(arm), _share(needed)
+        return cut(self.robot, arm_name, path, tool, _point(point), contacts, obj, cuts, share)
 
 
 class FlyingPM(ProjectionProcessModule):

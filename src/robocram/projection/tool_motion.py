@@ -15,6 +15,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from robocram.designators.tool_answers import ToolPathAnswer
+from robocram.execution.failures import ToolPathUnreachable
 from robocram.motion import ContactAllowance, JointTrajectory
 from robocram.motion.tool_path import ToolPathMotion, plan_tool_path
 from robocram.projection.arm import move_tcp
@@ -90,6 +91,7 @@ def plan_from_start(
     grip: ToolGrip,
     path: Sequence[PathPose],
     contacts: tuple[ContactAllowance, ...] = (),
+    needed: float = 0.0,
 ) -> ToolPathMotion:
     """Move the tool point to the path's first pose (avoiding everything), then plan the
     rest as a tool path from there (nothing of it executed yet).
@@ -97,16 +99,28 @@ def plan_from_start(
     Raises:
         ProjectionError: the path is empty.
         ManipulationPoseUnreachable: the path's first pose cannot be reached.
+        ToolPathUnreachable: the plan reaches less than ``needed`` of the path (before
+            any of it is followed).
     """
     if not path:
         raise ProjectionError(f"the tool path of {robot.name}'s {grip.arm} arm has no poses")
     in_map = [robot.in_map(p) for p in path]
     move_tcp(robot, grip.arm, in_map[0] * grip.point_in_tcp.inverse(), "avoid_all")
     base = robot.base_pose().inverse()
-    return plan_tool_path(
+    planned = plan_tool_path(
         robot.handle, grip.arm, [base * p for p in in_map[1:]] or [base * in_map[0]],
         point_in_tcp=grip.point_in_tcp, contacts=contacts, settings=robot.motion,
     )  # fmt: skip
+    if planned.fraction < needed:
+        raise ToolPathUnreachable(
+            f"{robot.name}'s {grip.arm} arm reaches {planned.fraction:.0%} of the tool path "
+            f"from where it stands, {needed:.0%} needed ({planned.stopped_by})",
+            target=in_map[-1],
+            fraction=planned.fraction,
+            needed=needed,
+            stopped_by=planned.stopped_by,
+        )
+    return planned
 
 
 def follow_tool_path(
@@ -116,11 +130,13 @@ def follow_tool_path(
     tool: str | None,
     tool_point: PoseLike | None,
     contacts: object = "none",
+    needed: float = 0.0,
 ) -> ToolPathAnswer:
-    """Move ``tool`` (held by ``arm``) so that its point follows ``path``."""
+    """Move ``tool`` (held by ``arm``) so that its point follows ``path``; refused (raised,
+    :func:`plan_from_start`) when the plan reaches less than ``needed`` of it."""
     grip = tool_grip(robot, arm, tool, tool_point)
     checked = planned_against(robot)
-    planned = plan_from_start(robot, grip, path, allowances(tool, contacts))
+    planned = plan_from_start(robot, grip, path, allowances(tool, contacts), needed)
     follow(robot, planned.motion.trajectory, checked)
     return answer(robot, grip, planned)
 

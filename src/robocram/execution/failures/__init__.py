@@ -41,6 +41,7 @@ from robocram.execution.failures.manipulation import (
     ObjectUndeliverable,
     ObjectUnfetchable,
     ObjectUnreachable,
+    ToolPathUnreachable,
 )
 from robocram.execution.failures.navigation import (
     NavigationGoalInCollision,
@@ -101,6 +102,7 @@ __all__ = [
     "ManipulationLowLevelFailure",
     "ManipulationPathBlocked",
     "ManipulationPoseUnreachable",
+    "ToolPathUnreachable",
     "NavigationGoalInCollision",
     "NavigationGoalNotReached",
     "NavigationGoalOutsideArea",

@@ -42,6 +42,17 @@ class ManipulationPathBlocked(ManipulationPoseUnreachable):
     hint = "try another grasp, arm or stand, or allow planning around the obstacle"
 
 
+class ToolPathUnreachable(ManipulationPoseUnreachable):
+    """A tool path the arm can follow only part of the way from where the robot stands;
+    refused before the path is followed (the arm has only moved to the path's start)."""
+
+    fraction: float | None = None  # [0..1] of the path the plan reached
+    needed: float | None = None  # [0..1] of the path the motion asked for
+    stopped_by: str | None = None  # why the planned path ended early
+    summary = "the tool path is out of the arm's reach from here"
+    hint = "stand elsewhere (a reachable_for location of the work) and try again"
+
+
 class GripperLowLevelFailure(LowLevelFailure):
     """A gripper motion failed."""
 
