@@ -42,7 +42,8 @@ ROBOTS = ["pr2", "boxy", FETCH]
 # Boxy's pour (14 s of particles) is left to the bench; its stir does reach the spoon round
 # the bowl from a stand, but the audit finds the long spoon 27 mm in Boxy's base on the way
 # to the path's start: arm motions do not check a held object against the robot's own
-# body (motion/bullet_scene.py skips it), an open finding (docs/tool_actions.md)
+# body (the walks' coal clearances and their PyBullet judge measure held objects against
+# the world only), an open finding (docs/tool_actions.md)
 BOWL_INSIDE = 0.074  # [m] the catalogue bowl's radius within its wall
 BOWL_RIM = 0.06  # [m]
 
