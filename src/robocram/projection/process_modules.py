@@ -14,9 +14,10 @@ grounds for its resource, one method per command, dispatched by
 - arms: ``move_tcp(Arm, Pose, Mode, Touching)``, ``move_tcp_both(Left, Right, Mode)``,
   ``move_joints(Arm, Config)``, ``move_joints_both(Left, Right)``,
   ``move_part(Arm, Part, Joint, Handle, Goal)`` (open or close a drawer or door)
-- tools: ``move_tool_path(Arm, Path, Tool, Point, Contacts)``,
-  ``pour(Arm, Path, Source, Point, Target, Amount)``,
-  ``cut(Arm, Path, Tool, Point, Contacts, Object, Cuts)`` (docs/tool_actions.md)
+- tools: ``move_tool_path(Arm, Path, Tool, Point, Contacts, Needed)``,
+  ``pour(Arm, Path, Source, Point, Target, Amount, Needed)``,
+  ``cut(Arm, Path, Tool, Point, Contacts, Object, Cuts, Needed)`` (docs/tool_actions.md;
+  a path planned to less than the ``Needed`` share is refused before it is followed)
 - flying: ``fly(Pose)``; distance sensor: ``sense_distance(Direction)`` [body frame]
 
 Arm and gripper words are the robot's arm names or the sides ``left``/``right``
