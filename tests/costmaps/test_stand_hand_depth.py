@@ -12,6 +12,8 @@ from collections.abc import Iterator
 import pytest
 
 from robocram.costmaps.pick_reach import HAND_DEPTH, touched_objects
+from robocram.costmaps.stand_reach import PALM_IK_RESTARTS, _restarts
+from robocram.costmaps.validators import STAND_IK_RESTARTS
 from robocram.motion.hand_contact import HAND_CONTACT_DEPTH
 from robocram.scenes import TabletopScene, tabletop_scene
 from robocram.world import RobotObject, World
@@ -79,3 +81,15 @@ def test_the_hand_may_touch_the_object_only_within_the_bound(scene: TabletopScen
         assert touched_objects(world, robot, arm, stand, nudged, True, "mug-1") == []  # another
     finally:
         world.remove("block")
+
+
+def test_a_palm_hands_grasps_get_more_ik_restarts_when_a_stand_is_judged() -> None:
+    world = World()
+    try:
+        tiago = world.add_robot("examples/robots/tiago.py")
+        pr2 = world.add_robot("pr2", pose=((3.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0)))
+        assert _restarts(tiago, "arm", STAND_IK_RESTARTS) == PALM_IK_RESTARTS
+        assert _restarts(pr2, "left", STAND_IK_RESTARTS) == STAND_IK_RESTARTS  # as before
+        assert PALM_IK_RESTARTS > STAND_IK_RESTARTS
+    finally:
+        world.close()

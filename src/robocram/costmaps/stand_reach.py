@@ -27,10 +27,13 @@ from robocram.costmaps.validators import (
     reach_point,
     solve_at_stand,
 )
+from robocram.grasping import hand_of
 from robocram.kinematics import BaseMotion, IKOptions, IKResult, solve_ik
 from robocram.robots import RobotDescription
 from robocram.tf import Pose, PoseStamped, Vector3
 from robocram.world import RobotObject, World, WorldObject
+
+PALM_IK_RESTARTS = 5  # per grasp of a palm hand when judging a stand (see _restarts)
 
 
 def reach_to_pick(
@@ -66,14 +69,26 @@ def reach_to_pick(
         record: dict[str, list[int]] = memo.setdefault(("grasp_record", obj.name, name), {})
         targets = pick_targets(world, robot, obj, name, base, memo)
         targets.sort(key=lambda t: _rank(record, t.grasp))
+        tries = _restarts(robot, name, restarts)
         for target in targets:
             tally = record.setdefault(target.grasp, [0, 0])  # [worked, failed]
-            reach = _pick_at(world, robot, name, base, target, seed, restarts, touched, obj)
+            reach = _pick_at(world, robot, name, base, target, seed, tries, touched, obj)
             if reach is not None:
                 tally[0] += 1
                 return reach
             tally[1] += 1
     return None
+
+
+def _restarts(robot: RobotObject, arm: str, restarts: int) -> int:
+    """IK restarts per grasp of ``arm``: at least :data:`PALM_IK_RESTARTS` for a palm hand.
+
+    A palm hand takes a mug by its handle only, in five ways or fewer (a gripper has six
+    to ten), each with the wrist in a narrow range: two restarts missed the TIAGo++'s
+    handle grasp from the side that the pick's IK reached, and no stand was taken."""
+    if robot.description.arms[arm].gripper is None or hand_of(robot.description, arm).palm is None:
+        return restarts
+    return max(restarts, PALM_IK_RESTARTS)
 
 
 def _rank(record: dict[str, list[int]], grasp: str) -> tuple[int, int]:
