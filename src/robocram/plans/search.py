@@ -25,7 +25,7 @@ from robocram.designators import LocationDesignator, ObjectDesignator, a, an
 from robocram.designators.errors import DesignatorError
 from robocram.execution import perform
 from robocram.execution.failures import PlanFailure
-from robocram.knowledge.robot_predicates import CAMERA_MAXIMAL_HEIGHT
+from robocram.knowledge.robot_predicates import ARM_JOINTS, CAMERA_MAXIMAL_HEIGHT
 from robocram.knowledge.scene_predicates import SUPPORTING_SURFACE, USUAL_LOCATION
 from robocram.logic import current_kb
 from robocram.plans.attempt_log import AttemptLog
@@ -76,11 +76,14 @@ def place_point(place: Place) -> PoseStamped:
 
 def camera_below(robot: KnownRobot, places: list[Place]) -> str:
     """A clause saying that the robot's camera, at its highest, is lower than every place in
-    ``places`` (their link frames), so it cannot see onto them; empty otherwise. Alex's
-    head, 0.71 m up, searched counters 0.83 m high and said only that it saw no mug."""
-    heights = [f.height for f in CAMERA_MAXIMAL_HEIGHT.answers(current_kb(), robot=robot.name)]
-    if not heights or not places:
-        return ""
+    ``places`` (their link frames), so it cannot see onto them; empty otherwise, and for a
+    camera a neck arm moves. Alex's head, 0.71 m up, searched counters 0.83 m high and
+    said only that it saw no mug."""
+    kb = current_kb()
+    heights = [f.height for f in CAMERA_MAXIMAL_HEIGHT.answers(kb, robot=robot.name)]
+    moved = {row.arm for row in ARM_JOINTS.answers(kb, robot=robot.name)} - set(robot.arms())
+    if not heights or not places or moved or min(heights) <= 0.0:
+        return ""  # none, or an arm carries the camera (the Donbot's wrist): it rises with it
     frames = [environment_link_pose(p.environment, p.link, "a place") for p in places]
     lowest = min(frame.position[2] for frame in frames)
     if max(heights) >= lowest:
