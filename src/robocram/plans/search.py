@@ -24,7 +24,7 @@ from dataclasses import dataclass, field
 from robocram.designators import LocationDesignator, ObjectDesignator, a, an
 from robocram.designators.errors import DesignatorError
 from robocram.execution import perform
-from robocram.execution.failures import PlanFailure
+from robocram.execution.failures import PlanFailure, failure_line
 from robocram.knowledge.robot_predicates import ARM_JOINTS, CAMERA_MAXIMAL_HEIGHT
 from robocram.knowledge.scene_predicates import SUPPORTING_SURFACE, USUAL_LOCATION
 from robocram.logic import current_kb
@@ -57,6 +57,7 @@ class SearchLog:
     failures: list[PlanFailure | DesignatorError] = field(default_factory=list)
     opened: list[OpenedContainer] = field(default_factory=list)
     attempts: AttemptLog = field(default_factory=AttemptLog)
+    shut: list[tuple[Place, PlanFailure]] = field(default_factory=list)  # not opened, why
 
 
 def candidate_places(object_type: str) -> list[Place]:
@@ -92,6 +93,17 @@ def camera_below(robot: KnownRobot, places: list[Place]) -> str:
         f" (its camera, {max(heights):.2f} m up at most, is below them all, from "
         f"{lowest:.2f} m: mount it higher or add a torso)"
     )
+
+
+def _stayed_shut(log: SearchLog) -> str:
+    """A clause naming the containers the search could not open, with the first one's
+    failure: Armar6 searched every counter for the bowl and said only that it saw none,
+    while its drawer had stayed shut (its palm on the handle met the counter's top)."""
+    if not log.shut:
+        return ""
+    links = ", ".join(dict.fromkeys(place.link for place, _ in log.shut))
+    failure = log.shut[0][1]
+    return f" ({links} stayed shut: {failure_line(type(failure).__name__, str(failure))})"
 
 
 def _look_from_places(
@@ -133,7 +145,13 @@ def _look_into(
     closed = place_point(place)
     inside = closed
     try:
-        log.opened.append(open_from_front(place.link, log.attempts))
+        opened = open_from_front(place.link, log.attempts)
+    except PlanFailure as failure:
+        log.failures.append(failure)
+        log.shut.append((place, failure))
+        return None, inside
+    try:
+        log.opened.append(opened)
         inside = _pulled_out_middle(closed, place_point(place))
         look_from_above(inside)  # over the drawer's front, into it
         return detect(wanted), inside
@@ -181,7 +199,7 @@ def search(
     hidden_by = blamed(log.failures, "occluded_by")
     raise SearchExhausted(
         f"no {object_type} seen from any place searched{camera_below(robot, log.searched)}"
-        f"{culprit_clause(hidden_by, ())}: {', '.join(names) or 'none'}",
+        f"{_stayed_shut(log)}{culprit_clause(hidden_by, ())}: {', '.join(names) or 'none'}",
         object_designator=wanted,
         searched=names,
         occluded_by=hidden_by or None,

@@ -1,4 +1,5 @@
-"""A search that saw nothing says so when the camera is below every place it searched."""
+"""A search that saw nothing says why where it can: a camera below every place searched,
+a container that stayed shut."""
 
 from __future__ import annotations
 
@@ -6,8 +7,9 @@ from dataclasses import replace
 
 import pytest
 
+from robocram.execution.failures import EnvironmentManipulationImpossible
 from robocram.plans.known_robot import current_robot
-from robocram.plans.search import Place, camera_below
+from robocram.plans.search import Place, SearchLog, _stayed_shut, camera_below
 from robocram.projection import simulated_robot
 from robocram.robots import load_description
 from robocram.scenes import kitchen_scene
@@ -41,3 +43,13 @@ def test_a_camera_lower_than_every_place_is_named(camera_top: float | None) -> N
             assert f"from {table:.2f} m" in clause  # the lower place, the table
     finally:
         scene.world.close()
+
+
+def test_a_container_that_stayed_shut_is_named_with_why() -> None:
+    log = SearchLog()
+    assert _stayed_shut(log) == ""
+    why = "no arm of ['right'] could open 'drawer_3': the palm meets the counter's top"
+    log.shut.append((Place("kitchen", "drawer_3"), EnvironmentManipulationImpossible(why)))
+    clause = _stayed_shut(log)
+    assert clause.startswith(" (drawer_3 stayed shut: EnvironmentManipulationImpossible: ")
+    assert "the palm meets the counter's top" in clause
