@@ -88,6 +88,30 @@ def test_the_handle_grasp_puts_the_bar_on_the_palm_clear_of_the_open_fingers(
         world.set_pose("mug-1", FAR)
 
 
+def test_the_handle_from_above_leaves_the_open_hand_clear_of_the_body(world: World) -> None:
+    """The open thumb lay across the mug 6.5 mm below its rim, or a finger over it: closing,
+    it met the mug on one side only. The grasps kept leave every link of the open hand out
+    of the mug (PyBullet's closest points, the mug put where each grasp has it)."""
+    desc = world.robot("tiago").description
+    arm = desc.arms["arm"]
+    assert arm.gripper is not None
+    world.set_joint_states("tiago", arm.gripper.at(1.0))
+    shape = object_shape(world, world.object("mug-1"))
+    above = [g for g in grasps(shape, hand_of(desc, "arm")) if g.approach == (0.0, 0.0, -1.0)]
+    assert above  # the handle from above is still offered
+    body = world.object("tiago").body_id
+    position, rotation = link_frame(body, world.physics.client(), arm.tool_frame)
+    tool = np.eye(4)
+    tool[:3, :3], tool[:3, 3] = rotation, position
+    try:
+        for grasp in above:
+            mug = tool @ np.linalg.inv(grasp.tool.matrix())
+            world.set_pose("mug-1", (tuple(mug[:3, 3]), _quaternion(mug[:3, :3])))
+            assert min(_closest(world, link) for link in arm.hand_links) > -0.001
+    finally:
+        world.set_pose("mug-1", FAR)
+
+
 def _quaternion(rotation: np.ndarray) -> tuple[float, float, float, float]:
     w = np.sqrt(max(0.0, 1.0 + np.trace(rotation))) / 2
     x = (rotation[2, 1] - rotation[1, 2]) / (4 * w)

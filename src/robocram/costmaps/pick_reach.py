@@ -19,6 +19,11 @@ from robocram.tf import Pose
 from robocram.world import RobotObject, World, WorldObject
 from robocram.world.link_contacts import link_contacts
 
+HAND_DEPTH = 0.005  # [m] the deepest a grasping hand may go into the object: the pick's
+# bound (``motion.hand_contact.HAND_CONTACT_DEPTH``), so a stand the validator takes is
+# one the pick's IK can take (the TIAGo's thumb 6.5 mm in the mug passed here, then every
+# IK solution of the pick was refused)
+
 
 @dataclass(frozen=True)
 class PickTarget:
@@ -76,6 +81,7 @@ def touched_objects(
     stand: Pose,
     joints: Mapping[str, float],
     allow_hand: bool = False,
+    touching: str | None = None,
 ) -> list[str]:
     """The objects a link the motion moves touches (the floor left out), each once.
 
@@ -83,8 +89,9 @@ def touched_objects(
     changed joints move, all of them if the robot stands elsewhere than now (the robot
     standing there, parked, is the ``robot_collision_free`` validator's check). With
     ``allow_hand`` the arm's hand and gripper links may touch (the object grasped, the
-    surface a held object is put on), as the plans' ``allow_hand`` mode lets them. Joints
-    and pose are restored afterwards.
+    surface a held object is put on), as the plans' ``allow_hand`` mode lets them; on
+    ``touching`` (the object picked) at most :data:`HAND_DEPTH` deep, as the pick's bound.
+    Joints and pose are restored afterwards.
     """
     spec = robot.description.arms[arm]
     allowed: set[str] = set()
@@ -103,11 +110,26 @@ def touched_objects(
     try:
         floors = world.objects(type="floor")
         hits = link_contacts(world, robot, links=moved, ignore=floors, distance=0.0)
-        return list(dict.fromkeys(other for link, other in hits if link not in allowed))
+        return list(dict.fromkeys(
+            other for link, other in hits
+            if link not in allowed or _too_deep(world, robot, link, other, touching)
+        ))  # fmt: skip
     finally:
         world.set_joint_states(robot, before)
         if not here:
             world.set_pose(robot, pose)
+
+
+def _too_deep(
+    world: World, robot: RobotObject, link: str, other: str, touching: str | None
+) -> bool:
+    """Whether hand ``link`` is in ``other``, the grasp's object ``touching``, deeper than
+    :data:`HAND_DEPTH` (False for anything else: the hand may touch it)."""
+    name, _, other_link = other.partition("/")
+    if touching is None or touching not in (other, name):
+        return False
+    points = world.contacts.contact_points(robot, name, link, other_link or None, 0.0)
+    return max((-p.distance for p in points), default=0.0) > HAND_DEPTH
 
 
 class _Children:

@@ -27,10 +27,13 @@ from robocram.costmaps.validators import (
     reach_point,
     solve_at_stand,
 )
+from robocram.grasping import hand_of
 from robocram.kinematics import BaseMotion, IKOptions, IKResult, solve_ik
 from robocram.robots import RobotDescription
 from robocram.tf import Pose, PoseStamped, Vector3
 from robocram.world import RobotObject, World, WorldObject
+
+PALM_IK_RESTARTS = 5  # per grasp of a palm hand when judging a stand (see _restarts)
 
 
 def reach_to_pick(
@@ -66,14 +69,26 @@ def reach_to_pick(
         record: dict[str, list[int]] = memo.setdefault(("grasp_record", obj.name, name), {})
         targets = pick_targets(world, robot, obj, name, base, memo)
         targets.sort(key=lambda t: _rank(record, t.grasp))
+        tries = _restarts(robot, name, restarts)
         for target in targets:
             tally = record.setdefault(target.grasp, [0, 0])  # [worked, failed]
-            reach = _pick_at(world, robot, name, base, target, seed, restarts, touched)
+            reach = _pick_at(world, robot, name, base, target, seed, tries, touched, obj)
             if reach is not None:
                 tally[0] += 1
                 return reach
             tally[1] += 1
     return None
+
+
+def _restarts(robot: RobotObject, arm: str, restarts: int) -> int:
+    """IK restarts per grasp of ``arm``: at least :data:`PALM_IK_RESTARTS` for a palm hand.
+
+    A palm hand takes a mug by its handle only, in five ways or fewer (a gripper has six
+    to ten), each with the wrist in a narrow range: two restarts missed the TIAGo++'s
+    handle grasp from the side that the pick's IK reached, and no stand was taken."""
+    if robot.description.arms[arm].gripper is None or hand_of(robot.description, arm).palm is None:
+        return restarts
+    return max(restarts, PALM_IK_RESTARTS)
 
 
 def _rank(record: dict[str, list[int]], grasp: str) -> tuple[int, int]:
@@ -90,9 +105,11 @@ def _pick_at(
     seed: Mapping[str, float],
     restarts: int,
     touched: set[str] | None = None,
+    obj: WorldObject | None = None,
 ) -> Reach | None:
     """The pick's motions for one grasp from ``base``: pre-grasp, grasp, collisions (the
-    objects hit added to ``touched``)."""
+    objects hit added to ``touched``); at the grasp the hand may touch only ``obj``, as
+    shallowly as the pick lets it (any object, at any depth, without ``obj``)."""
     desc = robot.description
     pre = solve_at_stand(desc, arm, target.pre_grasp_in_base, seed, restarts)
     if not pre.success:
@@ -101,7 +118,7 @@ def _pick_at(
     if not grasp.success:
         return None
     at_grasp = _moved(base, grasp.base_motion)
-    hit = touched_objects(world, robot, arm, at_grasp, grasp.joint_positions, True)
+    hit = _grasp_hits(world, robot, arm, at_grasp, grasp.joint_positions, obj)
     if not hit:
         hit = _pre_grasp_hits(world, robot, arm, _moved(base, pre.base_motion), pre.joint_positions)
     if hit:
@@ -109,6 +126,27 @@ def _pick_at(
             touched.update(hit)
         return None
     return Reach(arm, dict(grasp.joint_positions), target.grasp_in_base, grasp.base_motion)
+
+
+def _grasp_hits(
+    world: World,
+    robot: RobotObject,
+    arm: str,
+    stand: Pose,
+    joints: Mapping[str, float],
+    obj: WorldObject | None,
+) -> list[str]:
+    """What the robot touches at the grasp but its hand, and, the hand open as the pick
+    has it there, whether the hand goes deeper into ``obj`` than the pick's bound (the
+    TIAGo's thumb went 6.5 mm into the mug: every IK solution of the pick was refused)."""
+    hit = touched_objects(world, robot, arm, stand, joints, allow_hand=True)
+    gripper = robot.description.arms[arm].gripper
+    if hit or obj is None:
+        return hit
+    opened = dict(joints)
+    if gripper is not None and not gripper.is_suction:
+        opened.update(gripper.at(1.0))
+    return touched_objects(world, robot, arm, stand, opened, allow_hand=True, touching=obj.name)
 
 
 def _pre_grasp_hits(

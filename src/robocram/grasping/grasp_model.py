@@ -31,6 +31,8 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator, Sequence
 
+import numpy as np
+
 from robocram.grasping.errors import ObjectUngraspable, UnknownGraspError
 from robocram.grasping.grasp import Grasp
 from robocram.grasping.hand import Hand, tool_orientation
@@ -196,7 +198,22 @@ def _handle_from_above(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
         at = (cx + side[0] * d, cy + side[1] * d, z)
         for turn in (0.0, math.pi):
             opening = across if turn == 0.0 else (-across[0], -across[1], 0.0)
-            yield _grasp(hand, "handle", turn, at, DOWN, opening, shape.handle, shape)
+            grasp = _grasp(hand, "handle", turn, at, DOWN, opening, shape.handle, shape)
+            if hand.palm is None or not _over_body(shape, grasp.tool, hand.palm):
+                yield grasp
+
+
+def _over_body(shape: ObjectShape, tool: Pose, palm: Palm) -> bool:
+    """Whether the open palm hand at ``tool`` (object frame) lies over the body, below
+    its top: closing, that finger or thumb meets the body before the others close round
+    the handle (the TIAGo's Hey5 from above: its thumb across the mug 6.5 mm below the
+    rim, or its little finger 4 mm into it, and it met the mug on one side only)."""
+    if not len(palm.points):
+        return False
+    points = palm.points @ quat.to_matrix(tool.orientation).T + np.asarray(tool.position)
+    cx, cy = shape.centre
+    inside = np.hypot(points[:, 0] - cx, points[:, 1] - cy) < shape.radius
+    return bool((inside & (points[:, 2] < shape.high[2])).any())
 
 
 def _of_name(shape: ObjectShape, hand: Hand, name: str) -> Iterator[Grasp]:

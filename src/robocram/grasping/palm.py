@@ -25,9 +25,10 @@ round the mug's body the Hey5's met it on one side only; round its handle they c
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
+from numpy.typing import NDArray
 
 from robocram.kinematics import forward_kinematics
 from robocram.robots import GripperDescription, RobotDescription, RobotModel
@@ -61,6 +62,8 @@ class Palm:
         span: [m] how far the open hand (thumb too) reaches each way across the row
             (along ``curl`` x ``along``) from the knuckles: a grasp from the side keeps
             the lower end off the table.
+        points: [m] the open hand's shapes' points (tool frame, thumb too): a handle
+            taken from above must leave the body clear of them.
     """
 
     curl: Axis
@@ -69,6 +72,7 @@ class Palm:
     reach: float
     profile: tuple[tuple[float, float, float], ...]
     span: tuple[float, float]
+    points: NDArray[np.float64] = field(default_factory=lambda: np.zeros((0, 3)), compare=False)
 
     def holding(self, half_width: float, depth: float, flat: bool) -> Axis:
         """The point [m, tool frame] a body ``half_width`` across the fingers is held at,
@@ -211,10 +215,11 @@ def palm_of(desc: RobotDescription, arm: str) -> Palm | None:
     )
     if not profile:
         return None
-    sideways = (np.vstack(hand.shapes(set())) - knuckles) @ np.cross(curl, along)
+    shapes = np.vstack(hand.shapes(set()))
+    sideways = (shapes - knuckles) @ np.cross(curl, along)
     span = (float(sideways.min()), float(sideways.max()))
     reach = max(end for _, end, _ in profile)
-    return Palm(_axis(curl), _axis(along), _axis(knuckles), reach, profile, span)
+    return Palm(_axis(curl), _axis(along), _axis(knuckles), reach, profile, span, shapes)
 
 
 def _curl(

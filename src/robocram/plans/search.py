@@ -24,7 +24,8 @@ from dataclasses import dataclass, field
 from robocram.designators import LocationDesignator, ObjectDesignator, a, an
 from robocram.designators.errors import DesignatorError
 from robocram.execution import perform
-from robocram.execution.failures import PlanFailure
+from robocram.execution.failures import PlanFailure, failure_line
+from robocram.knowledge.robot_predicates import ARM_JOINTS, CAMERA_MAXIMAL_HEIGHT
 from robocram.knowledge.scene_predicates import SUPPORTING_SURFACE, USUAL_LOCATION
 from robocram.logic import current_kb
 from robocram.plans.attempt_log import AttemptLog
@@ -56,6 +57,7 @@ class SearchLog:
     failures: list[PlanFailure | DesignatorError] = field(default_factory=list)
     opened: list[OpenedContainer] = field(default_factory=list)
     attempts: AttemptLog = field(default_factory=AttemptLog)
+    shut: list[tuple[Place, PlanFailure]] = field(default_factory=list)  # not opened, why
 
 
 def candidate_places(object_type: str) -> list[Place]:
@@ -71,6 +73,37 @@ def place_point(place: Place) -> PoseStamped:
     pose = environment_link_pose(place.environment, place.link, "a place")
     x, y, z = pose.position
     return PoseStamped("map", (x, y, z + LOOK_ABOVE))
+
+
+def camera_below(robot: KnownRobot, places: list[Place]) -> str:
+    """A clause saying that the robot's camera, at its highest, is lower than every place in
+    ``places`` (their link frames), so it cannot see onto them; empty otherwise, and for a
+    camera a neck arm moves. Alex's head, 0.71 m up, searched counters 0.83 m high and
+    said only that it saw no mug."""
+    kb = current_kb()
+    heights = [f.height for f in CAMERA_MAXIMAL_HEIGHT.answers(kb, robot=robot.name)]
+    moved = {row.arm for row in ARM_JOINTS.answers(kb, robot=robot.name)} - set(robot.arms())
+    if not heights or not places or moved or min(heights) <= 0.0:
+        return ""  # none, or an arm carries the camera (the Donbot's wrist): it rises with it
+    frames = [environment_link_pose(p.environment, p.link, "a place") for p in places]
+    lowest = min(frame.position[2] for frame in frames)
+    if max(heights) >= lowest:
+        return ""
+    return (
+        f" (its camera, {max(heights):.2f} m up at most, is below them all, from "
+        f"{lowest:.2f} m: mount it higher or add a torso)"
+    )
+
+
+def _stayed_shut(log: SearchLog) -> str:
+    """A clause naming the containers the search could not open, with the first one's
+    failure: Armar6 searched every counter for the bowl and said only that it saw none,
+    while its drawer had stayed shut (its palm on the handle met the counter's top)."""
+    if not log.shut:
+        return ""
+    links = ", ".join(dict.fromkeys(place.link for place, _ in log.shut))
+    failure = log.shut[0][1]
+    return f" ({links} stayed shut: {failure_line(type(failure).__name__, str(failure))})"
 
 
 def _look_from_places(
@@ -112,7 +145,13 @@ def _look_into(
     closed = place_point(place)
     inside = closed
     try:
-        log.opened.append(open_from_front(place.link, log.attempts))
+        opened = open_from_front(place.link, log.attempts)
+    except PlanFailure as failure:
+        log.failures.append(failure)
+        log.shut.append((place, failure))
+        return None, inside
+    try:
+        log.opened.append(opened)
         inside = _pulled_out_middle(closed, place_point(place))
         look_from_above(inside)  # over the drawer's front, into it
         return detect(wanted), inside
@@ -159,8 +198,8 @@ def search(
     names = tuple(p.link for p in log.searched)
     hidden_by = blamed(log.failures, "occluded_by")
     raise SearchExhausted(
-        f"no {object_type} seen from any place searched{culprit_clause(hidden_by, ())}: "
-        f"{', '.join(names) or 'none'}",
+        f"no {object_type} seen from any place searched{camera_below(robot, log.searched)}"
+        f"{_stayed_shut(log)}{culprit_clause(hidden_by, ())}: {', '.join(names) or 'none'}",
         object_designator=wanted,
         searched=names,
         occluded_by=hidden_by or None,
