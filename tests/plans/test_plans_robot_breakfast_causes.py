@@ -1,0 +1,77 @@
+"""What stopped the breakfast of the drafted Fetch, Boxy and the drafted Stretch, each on
+its smallest case, judged by raw PyBullet (joint values, contacts, positions).
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pybullet
+import pytest
+
+from robocram.plans.basic_actions import park_arms
+from robocram.projection import simulated_robot
+from robocram.scenes.breakfast_scene import breakfast_scene
+from robocram.tf import Pose
+
+FETCH = str(Path(__file__).resolve().parents[1] / "data" / "fetch" / "fetch.py")
+BOWLS = "drawer_unit_drawer_3"
+# the Fetch as it stood after putting the second bowl into its drawer when clearing: the
+# base turned to the drawer's corner, the open hand 10 cm over the bowl it let go
+FETCH_AFTER_PUTTING = Pose((-1.01825, 1.24766, 0.041), (0.0, 0.0, 0.92232, 0.38644))
+FETCH_ARM_IN_DRAWER = {
+    "torso_lift_joint": 0.17755,
+    "head_pan_joint": -0.02673,
+    "head_tilt_joint": 0.72137,
+    "shoulder_pan_joint": 0.29157,
+    "shoulder_lift_joint": -0.68386,
+    "upperarm_roll_joint": 2.74001,
+    "elbow_flex_joint": -1.35145,
+    "forearm_roll_joint": -2.76771,
+    "wrist_flex_joint": 0.97773,
+    "wrist_roll_joint": -0.82251,
+    "r_gripper_finger_joint": 0.05,
+    "l_gripper_finger_joint": 0.05,
+}
+FETCH_PARKED = {
+    "shoulder_pan_joint": 0.105,
+    "shoulder_lift_joint": 1.198,
+    "upperarm_roll_joint": 1.458,
+    "elbow_flex_joint": -2.155,
+    "forearm_roll_joint": -2.039,
+    "wrist_flex_joint": 1.604,
+    "wrist_roll_joint": 0.162,
+}
+
+
+def test_the_fetch_parks_its_hand_out_of_an_open_drawer_it_stands_at() -> None:
+    scene = breakfast_scene(FETCH)
+    world = scene.world
+    cid = world.physics.client()
+    try:
+        world.set_joint_states("kitchen", {f"{BOWLS}_joint": 0.4})
+        world.set_pose(scene.robot, FETCH_AFTER_PUTTING)
+        world.set_joint_states(scene.robot, FETCH_ARM_IN_DRAWER)
+        kitchen, robot = world.object("kitchen"), world.object(scene.robot)
+        drawer = kitchen.link_index[BOWLS]
+        world.set_joint_states(scene.robot, FETCH_PARKED)
+        pybullet.performCollisionDetection(cid)
+        # parked where it stands, the forearm would be in the drawer
+        assert pybullet.getClosestPoints(
+            robot.body_id, kitchen.body_id, 0.0, linkIndexB=drawer, physicsClientId=cid
+        )
+        world.set_joint_states(scene.robot, FETCH_ARM_IN_DRAWER)
+        with simulated_robot(world, scene.robot):
+            park_arms()
+        for joint, parked in FETCH_PARKED.items():
+            value = pybullet.getJointState(robot.body_id, robot.joint_index[joint], cid)[0]
+            off = math.remainder(value - parked, 2 * math.pi)  # the wrist rolls on and on
+            assert off == pytest.approx(0.0, abs=0.01), joint
+        opened = pybullet.getJointState(kitchen.body_id, kitchen.joint_index[f"{BOWLS}_joint"], cid)
+        assert opened[0] == pytest.approx(0.4, abs=0.005)  # not pushed by the arm
+        assert not pybullet.getClosestPoints(
+            robot.body_id, kitchen.body_id, 0.0, physicsClientId=cid
+        )
+    finally:
+        world.close()
