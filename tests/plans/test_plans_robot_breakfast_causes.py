@@ -10,7 +10,11 @@ from pathlib import Path
 import pybullet
 import pytest
 
+from robocram.designators import an
+from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import park_arms
+from robocram.plans.bringing import Visit, find_in_place, usual_place
+from robocram.plans.fetch import fetch
 from robocram.projection import simulated_robot
 from robocram.scenes.breakfast_scene import breakfast_scene
 from robocram.tf import Pose
@@ -73,5 +77,35 @@ def test_the_fetch_parks_its_hand_out_of_an_open_drawer_it_stands_at() -> None:
         assert not pybullet.getClosestPoints(
             robot.body_id, kitchen.body_id, 0.0, physicsClientId=cid
         )
+    finally:
+        world.close()
+
+
+def test_boxy_sees_the_milk_under_the_fridge_shelf_from_farther_back_and_takes_it() -> None:
+    scene = breakfast_scene("boxy")
+    world = scene.world
+    cid = world.physics.client()
+    try:
+        milk = world.object("milk-1").body_id
+        low_before, _ = pybullet.getAABB(milk, physicsClientId=cid)
+        with simulated_robot(world, scene.robot):
+            found = find_in_place(an.object(type="milk"), Visit(usual_place("milk")), AttemptLog())
+            assert found is not None
+            seen, opened = found
+            base, _ = pybullet.getBasePositionAndOrientation(
+                world.object(scene.robot).body_id, physicsClientId=cid
+            )
+            x, y, _ = world.pose("milk-1").position
+            stand = opened.stand.pose.position
+            # its camera, 1.45 m and more over the floor, saw under the shelf from farther back
+            farther = math.hypot(base[0] - x, base[1] - y)
+            assert farther > math.hypot(stand[0] - x, stand[1] - y) + 0.1
+            fetch(seen, opened=opened)
+        low, _ = pybullet.getAABB(milk, physicsClientId=cid)
+        assert low[2] > low_before[2] + 0.01  # lifted off the shelf
+        hand = pybullet.getClosestPoints(
+            world.object(scene.robot).body_id, milk, 0.005, physicsClientId=cid
+        )
+        assert hand  # in the hand, lifted with it
     finally:
         world.close()
