@@ -10,17 +10,20 @@ from pathlib import Path
 import pybullet
 import pytest
 
-from robocram.designators import an
+from robocram.designators import a, an
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import park_arms
-from robocram.plans.bringing import Visit, find_in_place, usual_place
+from robocram.plans.bringing import Visit, find, find_in_place, usual_place
+from robocram.plans.deliver import deliver
 from robocram.plans.fetch import fetch
 from robocram.projection import simulated_robot
 from robocram.scenes.breakfast_scene import breakfast_scene
 from robocram.tf import Pose
+from robocram.tf import quaternion as quat
 
 FETCH = str(Path(__file__).resolve().parents[1] / "data" / "fetch" / "fetch.py")
 BOWLS = "drawer_unit_drawer_3"
+TABLE_TOP = 0.75  # [m] the kitchen table's top
 # the Fetch as it stood after putting the second bowl into its drawer when clearing: the
 # base turned to the drawer's corner, the open hand 10 cm over the bowl it let go
 FETCH_AFTER_PUTTING = Pose((-1.01825, 1.24766, 0.041), (0.0, 0.0, 0.92232, 0.38644))
@@ -107,5 +110,34 @@ def test_boxy_sees_the_milk_under_the_fridge_shelf_from_farther_back_and_takes_i
             world.object(scene.robot).body_id, milk, 0.005, physicsClientId=cid
         )
         assert hand  # in the hand, lifted with it
+    finally:
+        world.close()
+
+
+def test_boxy_puts_a_spoon_its_parked_hand_holds_askew_down_flat() -> None:
+    scene = breakfast_scene("boxy")
+    world = scene.world
+    cid = world.physics.client()
+    try:
+        with simulated_robot(world, scene.robot):
+            visit = Visit(usual_place("spoon"))
+            seen, opened = find(an.object(type="spoon"), visit, AttemptLog())
+            held = fetch(seen, opened=opened)
+            visit.close(AttemptLog())  # parks the arm: the spoon hangs askew
+            name = held.object_name
+            _, q = pybullet.getBasePositionAndOrientation(world.object(name).body_id, cid)
+            up = quat.rotate(q, (0.0, 0.0, 1.0))
+            assert up[2] < math.cos(math.radians(30.0))  # tilted more than 30 degrees
+            spot = (-0.56, -1.15, TABLE_TOP)
+            where = a.location(on=("kitchen", "table_top"), for_=name, at=spot, size=0.3)
+            deliver(held, where, held.arm)
+        body = world.object(name).body_id
+        low, _ = pybullet.getAABB(body, physicsClientId=cid)
+        assert low[2] == pytest.approx(TABLE_TOP, abs=0.01)  # on the table
+        _, q = pybullet.getBasePositionAndOrientation(body, cid)
+        assert quat.rotate(q, (0.0, 0.0, 1.0))[2] > math.cos(math.radians(3.0))  # lying flat
+        assert not pybullet.getClosestPoints(
+            world.object(scene.robot).body_id, body, 0.005, physicsClientId=cid
+        )  # let go
     finally:
         world.close()
