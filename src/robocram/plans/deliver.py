@@ -43,10 +43,13 @@ CARRY_CLEARANCE = 0.08  # [m] the held object's frame is carried this far over t
 
 
 def _place_at(held: Held, spot: Pose, arm: str | None) -> Any:
-    """Put the held object's frame at ``spot``, keeping the heading it has in the hand now
-    (held askew, upright: :func:`upright_put`)."""
+    """Put the held object's frame at ``spot``, keeping the heading it has in the hand now;
+    where ``spot`` (as a location gives it: turned as the object was held then, its lowest
+    point on the surface) is askew, upright (:func:`upright_put`): a try that levelled it
+    on its way down and failed leaves it level in the hand, the spot's height still that
+    of the askew one."""
     held_so = Pose(spot.position, map_pose(held.object_name).orientation)
-    put = PoseStamped.from_pose("map", upright_put(held.object_name, held_so) or held_so)
+    put = PoseStamped.from_pose("map", upright_put(held.object_name, spot) or held_so)
     return place_object(held, put, arm=arm)
 
 
@@ -91,7 +94,7 @@ def _stands(held: Held, spot: Pose, arm: str | None, reach_stands: bool) -> Iter
     askew, only those: it goes down upright, not as held (:func:`upright_put`)."""
     robot = current_robot()
     held_so = Pose(spot.position, map_pose(held.object_name).orientation)
-    upright = upright_put(held.object_name, held_so)
+    upright = upright_put(held.object_name, spot)
     if upright is None:
         yield from placing_stands(robot, held.object_name, spot)
         if not reach_stands:

@@ -18,6 +18,8 @@ from robocram.tf import Pose
 from robocram.tf import quaternion as quat
 
 LEVEL_TILT = math.radians(10.0)  # [rad] a thing held tilted more than this goes down upright
+UPRIGHT_GAP = 0.005  # [m] put this much higher: the KB's box and the bounds the location's
+# height came from are a few mm apart (a spoon put down level met the table 0.5 mm deep)
 
 
 def _lowest(orientation: quat.Quaternion, low: tuple[float, ...], high: tuple[float, ...]) -> float:
@@ -27,9 +29,9 @@ def _lowest(orientation: quat.Quaternion, low: tuple[float, ...], high: tuple[fl
 
 
 def upright_put(name: str, spot: Pose) -> Pose | None:
-    """Where to put ``name`` upright at ``spot`` (its pose as held now, resting there);
-    None when it is within :data:`LEVEL_TILT` of upright, upside down (no least axis), or
-    the KB knows no box of it."""
+    """Where to put ``name`` upright at ``spot`` (its pose as a location gives it, turned
+    as it was held, resting there); None when it is within :data:`LEVEL_TILT` of upright,
+    upside down (no least axis), or the KB knows no box of it."""
     up = quat.rotate(spot.orientation, (0.0, 0.0, 1.0))
     tilt = math.acos(max(-1.0, min(1.0, up[2])))
     norm = math.hypot(up[0], up[1])
@@ -43,4 +45,4 @@ def upright_put(name: str, spot: Pose) -> Pose | None:
     rise = _lowest(spot.orientation, extent.low, extent.high)
     rise -= _lowest(levelled, extent.low, extent.high)
     x, y, z = spot.position
-    return Pose((x, y, z + rise), levelled)
+    return Pose((x, y, z + rise + UPRIGHT_GAP), levelled)
