@@ -14,6 +14,7 @@ from robocram.designators import a, an
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import park_arms
 from robocram.plans.bringing import Visit, find, find_in_place, usual_place
+from robocram.plans.container_access import close_again
 from robocram.plans.deliver import deliver
 from robocram.plans.fetch import fetch
 from robocram.projection import simulated_robot
@@ -139,5 +140,36 @@ def test_boxy_puts_a_spoon_its_parked_hand_holds_askew_down_flat() -> None:
         assert not pybullet.getClosestPoints(
             world.object(scene.robot).body_id, body, 0.005, physicsClientId=cid
         )  # let go
+    finally:
+        world.close()
+
+
+def test_boxy_closes_the_bowls_drawer_from_where_it_backed_off_pulling_it() -> None:
+    scene = breakfast_scene("boxy")
+    world = scene.world
+    cid = world.physics.client()
+    try:
+        kitchen = world.object("kitchen")
+        joint = kitchen.joint_index[f"{BOWLS}_joint"]
+        with simulated_robot(world, scene.robot):
+            opened = Visit(usual_place("bowl")).open(AttemptLog())
+            assert opened is not None
+            assert pybullet.getJointState(kitchen.body_id, joint, cid)[0] == pytest.approx(
+                0.4, abs=0.01
+            )
+            # its wide base backed off as it pulled: where it opened from, the drawer is now
+            assert opened.reached is not None
+            assert opened.reached.distance_to(opened.stand.pose) > 0.3
+            close_again(opened)
+        assert pybullet.getJointState(kitchen.body_id, joint, cid)[0] == pytest.approx(
+            0.0, abs=0.01
+        )
+        assert not pybullet.getClosestPoints(
+            world.object(scene.robot).body_id,
+            kitchen.body_id,
+            0.0,
+            linkIndexB=kitchen.link_index[BOWLS],
+            physicsClientId=cid,
+        )
     finally:
         world.close()
