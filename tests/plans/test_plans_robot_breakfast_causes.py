@@ -124,7 +124,7 @@ def test_boxy_puts_a_spoon_its_parked_hand_holds_askew_down_flat() -> None:
             visit = Visit(usual_place("spoon"))
             seen, opened = find(an.object(type="spoon"), visit, AttemptLog())
             held = fetch(seen, opened=opened)
-            visit.close(AttemptLog())  # parks the arm: the spoon hangs askew
+            park_arms()  # the spoon hangs askew
             name = held.object_name
             _, q = pybullet.getBasePositionAndOrientation(world.object(name).body_id, cid)
             up = quat.rotate(q, (0.0, 0.0, 1.0))

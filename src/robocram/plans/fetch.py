@@ -63,9 +63,12 @@ def _pick_from(
     arm: str | None,
     grasp: str | None,
     out_of: tuple[str, str] | None = None,
+    in_container: bool = False,
 ) -> Held:
     """Drive to ``stand``, look at the object (``where``, map), detect it again, pick it
-    up (lifting it out of ``out_of``, the opened drawer it lies in, if any)."""
+    up (lifting it out of ``out_of``, the opened drawer it lies in, if any). A thing seen
+    ``in_container`` (one opened for it) that this stand does not show is taken where it
+    was seen, if it is still there."""
     park_arms()
     navigate(stand)
     look_lowering(where)
@@ -74,7 +77,7 @@ def _pick_from(
         again = detect(wanted)
     except PerceptionObjectNotFound as hidden:  # hidden at this height: another may show it
         found = look_again(where, lambda: _detected(wanted))
-        if found is None and not _still_there(seen, where):
+        if found is None and not (in_container and _still_there(seen, where)):
             raise hidden
         again = found or an.object(type=seen.get("type"), name=seen.get("name"), pose=where)
     return pick_up_object(again, arm=arm, grasp=grasp, out_of=out_of)
@@ -229,7 +232,7 @@ def fetch(
     out_of = _drawer_of(opened)
     for pose, use_arm in itertools.islice(stands, stand_retries + MAX_BLOCKED):
         try:
-            held = _pick_from(pose, seen, where, use_arm, grasp, out_of)
+            held = _pick_from(pose, seen, where, use_arm, grasp, out_of, opened is not None)
         except NavigationPoseUnreachable as failure:  # in the way: the next stand, no try
             causes.append(failure)
             log.record("fetch", pose, failure)
