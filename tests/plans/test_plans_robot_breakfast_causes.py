@@ -17,12 +17,14 @@ from robocram.plans.bringing import Visit, find, find_in_place, usual_place
 from robocram.plans.container_access import close_again
 from robocram.plans.deliver import deliver
 from robocram.plans.fetch import fetch
+from robocram.plans.table_arrangement import STANDARD_SETTING, spots, table_with_seats
 from robocram.projection import simulated_robot
 from robocram.scenes.breakfast_scene import breakfast_scene
-from robocram.tf import Pose
+from robocram.tf import Pose, PoseStamped
 from robocram.tf import quaternion as quat
 
 FETCH = str(Path(__file__).resolve().parents[1] / "data" / "fetch" / "fetch.py")
+STRETCH = str(Path(__file__).resolve().parents[1] / "data" / "stretch" / "stretch.py")
 BOWLS = "drawer_unit_drawer_3"
 TABLE_TOP = 0.75  # [m] the kitchen table's top
 # the Fetch as it stood after putting the second bowl into its drawer when clearing: the
@@ -171,5 +173,30 @@ def test_boxy_closes_the_bowls_drawer_from_where_it_backed_off_pulling_it() -> N
             linkIndexB=kitchen.link_index[BOWLS],
             physicsClientId=cid,
         )
+    finally:
+        world.close()
+
+
+def test_the_stretch_takes_a_bowl_from_the_table_looking_ahead_to_reach() -> None:
+    scene = breakfast_scene(STRETCH)
+    world = scene.world
+    cid = world.physics.client()
+    try:
+        with simulated_robot(world, scene.robot):
+            table = table_with_seats(None)
+            setting = next(s for s in spots(table, 2, STANDARD_SETTING, ()) if s.type == "bowl")
+            x, y, _ = setting.pose.position
+            low, _ = world.aabb("bowl-1")
+            lift = world.pose("bowl-1").position[2] - low[2]
+            world.set_pose(
+                "bowl-1", Pose((x, y, TABLE_TOP + lift + 0.001), setting.pose.orientation)
+            )
+            point = world.pose("bowl-1").position
+            fetch(an.object(type="bowl", name="bowl-1", pose=PoseStamped("map", point)))
+        low, _ = pybullet.getAABB(world.object("bowl-1").body_id, physicsClientId=cid)
+        assert low[2] > TABLE_TOP + 0.02  # lifted off the table
+        head = world.object(scene.robot)
+        tilt = pybullet.getJointState(head.body_id, head.joint_index["joint_head_tilt"], cid)[0]
+        assert tilt == pytest.approx(0.0, abs=0.05)  # it looked ahead: the lift passes the head
     finally:
         world.close()
