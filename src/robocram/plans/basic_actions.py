@@ -32,6 +32,8 @@ from robocram.tf import Pose, PoseStamped, transform_pose
 LOOK_HEIGHTS = (0.5, 0.25, 0.0)
 AHEAD = (1.0, 0.0, 0.0)  # the direction a robot looks in to drive, in its base frame
 PARKING_BACKOFFS = ((-0.15, 0.0), (-0.45, 0.0), (0.0, 0.2), (0.0, -0.2), (-0.2, 0.2), (-0.2, -0.2))
+PARKING_LIFTS = (0.3, 0.15)  # [m] the hand rises this far (the first it can) when no backoff
+# could be driven: an arm low over an open drawer drags through its wall
 
 
 def navigate(target: object) -> Any:
@@ -78,8 +80,10 @@ def _park(robot: KnownRobot, arm: str, states: list[list[object]]) -> None:
     robot looked at (an HSR's, with its lift up), look ahead and try again; when it would
     hit what the robot stands at (a table the hand just put something on, a wall beside
     it), move the base away and try again: back first, then to either side
-    (:data:`PARKING_BACKOFFS`); a move that cannot be driven is skipped. The parking
-    failure is raised when every move was tried."""
+    (:data:`PARKING_BACKOFFS`); a move that cannot be driven is skipped. When no move
+    could be driven (the hand, low in an open drawer, would be dragged through its wall),
+    the hand rises first (:data:`PARKING_LIFTS`) and the moves are tried again. The
+    parking failure is raised when every move was tried."""
     try:
         perform(a.motion(type="moving-arm-joints", arm=arm, configuration=states))
         return
@@ -91,19 +95,48 @@ def _park(robot: KnownRobot, arm: str, states: list[list[object]]) -> None:
             return
         except ManipulationPathBlocked as failure:
             blocked = failure
+    still, driven = _park_backing_off(robot, arm, states, blocked)
+    if still is not None and not driven and _lift_hand(robot, arm):
+        still, _ = _park_backing_off(robot, arm, states, still)
+    if still is not None:
+        raise still
+
+
+def _park_backing_off(
+    robot: KnownRobot, arm: str, states: list[list[object]], blocked: ManipulationPathBlocked
+) -> tuple[ManipulationPathBlocked | None, bool]:
+    """Try parking after each of :data:`PARKING_BACKOFFS` (from where the base stands now);
+    the last parking failure (None: parked) and whether any move could be driven."""
     origin = transform_pose(PoseStamped(robot.base_frame()), "map").pose
+    driven = False
     for forward, left in PARKING_BACKOFFS:
         moved = origin * Pose((forward, left, 0.0))
         try:
             perform(a.motion(type="going", target=PoseStamped.from_pose("map", moved)))
         except NavigationLowLevelFailure:
             continue
+        driven = True
         try:
             perform(a.motion(type="moving-arm-joints", arm=arm, configuration=states))
-            return
+            return None, True
         except ManipulationPathBlocked as failure:
             blocked = failure
-    raise blocked
+    return blocked, driven
+
+
+def _lift_hand(robot: KnownRobot, arm: str) -> bool:
+    """Raise ``arm``'s hand straight up, its orientation kept, by the first of
+    :data:`PARKING_LIFTS` it can; whether it rose."""
+    tool = transform_pose(PoseStamped(robot.tool_frame(arm)), "map").pose
+    x, y, z = tool.position
+    for rise in PARKING_LIFTS:
+        up = PoseStamped.from_pose("map", Pose((x, y, z + rise), tool.orientation))
+        try:
+            perform(a.motion(type="moving-tcp", arm=arm, target=a.location(pose=up)))
+        except ManipulationLowLevelFailure:
+            continue
+        return True
+    return False
 
 
 def move_torso(joint_angle: float | str) -> Any:

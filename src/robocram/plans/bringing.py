@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 
 from robocram.designators import ObjectDesignator, a, all_, an
 from robocram.execution import perform
-from robocram.execution.failures import PlanFailure
+from robocram.execution.failures import NavigationLowLevelFailure, PlanFailure
 from robocram.knowledge.scene_predicates import USUAL_LOCATION
 from robocram.logic import current_kb
 from robocram.plans.attempt_log import AttemptLog
@@ -106,12 +106,12 @@ def _look_into(
     """Stand where ``opened`` was opened from (unless not ``move``: from where the robot
     stands), look into it, detect ``wanted`` there (the first seen that is not in
     ``skip``: a spoon already on the table may be in view). Not seen from the opening
-    stand, the robot peers in, lower and closer (:func:`peer_into`)."""
+    stand, the robot peers in, lower, closer and farther back (:func:`peer_into`)."""
     point = inside_point(opened)
     try:
         park_arms()
         if move:
-            navigate(opened.stand.pose)
+            _to_opening_stand(opened)
         look_from_above(point)
     except PlanFailure:
         return None
@@ -119,6 +119,22 @@ def _look_into(
     if seen is None and move:
         seen = peer_into(opened, point, lambda: _seen(wanted, skip))
     return seen
+
+
+def _to_opening_stand(opened: OpenedContainer) -> None:
+    """Drive to where ``opened`` was opened from; where what it opened is in the way
+    there now (a door swung open towards a Boxy's wide base), to where the base stood
+    when it was open.
+
+    Raises:
+        NavigationLowLevelFailure: neither can be driven to.
+    """
+    try:
+        navigate(opened.stand.pose)
+    except NavigationLowLevelFailure:
+        if opened.reached is None:
+            raise
+        navigate(opened.reached)
 
 
 def _seen(wanted: ObjectDesignator, skip: Collection[str]) -> ObjectDesignator | None:

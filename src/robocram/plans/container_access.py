@@ -12,7 +12,11 @@ from __future__ import annotations
 from collections.abc import Iterator
 from dataclasses import dataclass
 
-from robocram.execution.failures import EnvironmentManipulationImpossible, PlanFailure
+from robocram.execution.failures import (
+    EnvironmentManipulationImpossible,
+    NavigationLowLevelFailure,
+    PlanFailure,
+)
 from robocram.knowledge.scene_predicates import CONTAINER, CONTAINER_FRONT, CONTAINER_KIND
 from robocram.knowledge.world_predicates import OBJECT_POSE
 from robocram.logic import current_kb
@@ -27,6 +31,10 @@ from robocram.tf import Pose
 
 OPEN_RETRIES = 6  # stands tried before opening gives up
 NEAR = 0.05  # [m] a base this close to the opening stand after opening stood there
+# closing failures after which the next stand is tried: the arm could not take the handle,
+# or the base cannot stand where it opened the part (a Boxy's wide base meets the drawer
+# it pulled out, and backed off as it pulled)
+ANOTHER_STAND_HELPS = (EnvironmentManipulationImpossible, NavigationLowLevelFailure)
 
 
 @dataclass(frozen=True)
@@ -111,8 +119,9 @@ def open_from_front(
 def close_again(opened: OpenedContainer, log: AttemptLog | None = None) -> None:
     """Go back to where ``opened`` was opened from and close it with the same arm; if the
     arm cannot take the handle from there (a door opened wide swung it out of reach: an
-    HSR's arm follows the fridge door's arc only with its base, a metre along), from
-    where the base stood when it was open, by the handle.
+    HSR's arm follows the fridge door's arc only with its base, a metre along), or the
+    base cannot stand there now, from where the base stood when it was open, by the
+    handle.
 
     Raises:
         PlanFailure: the last failure, when neither stand closed it.
@@ -129,7 +138,7 @@ def close_again(opened: OpenedContainer, log: AttemptLog | None = None) -> None:
             park_arms()
         except PlanFailure as failure:
             log.record("close", stand, failure)
-            if k == len(stands) - 1 or not isinstance(failure, EnvironmentManipulationImpossible):
+            if k == len(stands) - 1 or not isinstance(failure, ANOTHER_STAND_HELPS):
                 raise
             continue
         log.record("close", stand, None)

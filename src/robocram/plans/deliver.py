@@ -33,6 +33,7 @@ from robocram.plans.location_poses import location_poses, next_pose
 from robocram.plans.pick_object import GRASPING, Held
 from robocram.plans.place_object import held_object, place_object
 from robocram.plans.stands import map_pose, placing_stands
+from robocram.plans.upright import upright_put
 from robocram.tf import Pose, PoseStamped
 
 STAND_RETRIES = 3  # stands per placing spot where placing is tried
@@ -42,9 +43,13 @@ CARRY_CLEARANCE = 0.08  # [m] the held object's frame is carried this far over t
 
 
 def _place_at(held: Held, spot: Pose, arm: str | None) -> Any:
-    """Put the held object's frame at ``spot``, keeping the heading it has in the hand now."""
-    heading = map_pose(held.object_name).orientation
-    put = PoseStamped.from_pose("map", Pose(spot.position, heading))
+    """Put the held object's frame at ``spot``, keeping the heading it has in the hand now;
+    where ``spot`` (as a location gives it: turned as the object was held then, its lowest
+    point on the surface) is askew, upright (:func:`upright_put`): a try that levelled it
+    on its way down and failed leaves it level in the hand, the spot's height still that
+    of the askew one."""
+    held_so = Pose(spot.position, map_pose(held.object_name).orientation)
+    put = PoseStamped.from_pose("map", upright_put(held.object_name, spot) or held_so)
     return place_object(held, put, arm=arm)
 
 
@@ -85,14 +90,17 @@ def _carry_above(held: Held, spot: Pose) -> None:
 
 def _stands(held: Held, spot: Pose, arm: str | None, reach_stands: bool) -> Iterator[Pose]:
     """The stands to put ``held`` down at ``spot`` from: those holding it over the spot as
-    the arm holds it now, then (``reach_stands``) the costmap's that reach it by IK."""
+    the arm holds it now, then (``reach_stands``) the costmap's that reach it by IK; held
+    askew, only those: it goes down upright, not as held (:func:`upright_put`)."""
     robot = current_robot()
-    yield from placing_stands(robot, held.object_name, spot)
-    if not reach_stands:
-        return
-    heading = map_pose(held.object_name).orientation
+    held_so = Pose(spot.position, map_pose(held.object_name).orientation)
+    upright = upright_put(held.object_name, spot)
+    if upright is None:
+        yield from placing_stands(robot, held.object_name, spot)
+        if not reach_stands:
+            return
     keys: dict[str, str] = {"arm": arm} if arm is not None else {}
-    target = PoseStamped.from_pose("map", Pose(spot.position, heading))
+    target = PoseStamped.from_pose("map", upright or held_so)
     with contextlib.suppress(DesignatorError):  # no stand reaches it: the spot fails
         yield from itertools.islice(
             location_poses(a.location(reachable_for=robot.name, target=target, **keys)),

@@ -43,6 +43,7 @@ from robocram.tf import Pose, PoseStamped, transform_pose
 
 STAND_RETRIES = 3  # stands where picking up is tried before fetching gives up
 MAX_BLOCKED = 8  # stands where the robot would collide, skipped without a try
+STILL_THERE = 0.01  # [m] a hidden thing this near where it was seen is taken from there
 STEPPED_IN = 0.05  # [m] nearer the object than the opening stand: the robot peered in
 FACING_TURNS = (0.0, math.pi / 2, -math.pi / 2, math.pi)  # [rad] from the robot's bearing
 FACING_DISTANCES = (0.75, 0.85)  # [m] base to object, where no reach costmap cell is left
@@ -62,21 +63,35 @@ def _pick_from(
     arm: str | None,
     grasp: str | None,
     out_of: tuple[str, str] | None = None,
+    in_container: bool = False,
 ) -> Held:
     """Drive to ``stand``, look at the object (``where``, map), detect it again, pick it
-    up (lifting it out of ``out_of``, the opened drawer it lies in, if any)."""
+    up (lifting it out of ``out_of``, the opened drawer it lies in, if any). A thing seen
+    ``in_container`` (one opened for it) that this stand does not show is taken where it
+    was seen, if it is still there."""
     park_arms()
     navigate(stand)
     look_lowering(where)
     wanted = an.object(type=seen.get("type"), name=seen.get("name"))
     try:
         again = detect(wanted)
-    except PerceptionObjectNotFound:  # hidden at this height: another may show it
+    except PerceptionObjectNotFound as hidden:  # hidden at this height: another may show it
         found = look_again(where, lambda: _detected(wanted))
-        if found is None:
-            raise
-        again = found
+        if found is None and not (in_container and _still_there(seen, where)):
+            raise hidden
+        again = found or an.object(type=seen.get("type"), name=seen.get("name"), pose=where)
     return pick_up_object(again, arm=arm, grasp=grasp, out_of=out_of)
+
+
+def _still_there(seen: ObjectDesignator, where: PoseStamped) -> bool:
+    """Whether the named object ``seen`` lies where it was seen (``where``, map) to within
+    :data:`STILL_THERE`: a thing seen from farther back, which the stand that reaches it
+    sees no more (a Boxy's camera, high over a fridge's shelf, sees the milk under it from
+    0.8 m back only), is taken where it was seen."""
+    name = seen.get("name")
+    if name is None:
+        return False
+    return map_pose(str(name)).distance_to(where.pose) <= STILL_THERE
 
 
 def _detected(wanted: ObjectDesignator) -> ObjectDesignator | None:
@@ -217,7 +232,7 @@ def fetch(
     out_of = _drawer_of(opened)
     for pose, use_arm in itertools.islice(stands, stand_retries + MAX_BLOCKED):
         try:
-            held = _pick_from(pose, seen, where, use_arm, grasp, out_of)
+            held = _pick_from(pose, seen, where, use_arm, grasp, out_of, opened is not None)
         except NavigationPoseUnreachable as failure:  # in the way: the next stand, no try
             causes.append(failure)
             log.record("fetch", pose, failure)

@@ -190,10 +190,22 @@ def _opened_at(arm: str, pre_grasp: PoseStamped) -> None:
     except GripperPathBlocked as blocked:
         if not _fingers_meet_body(arm, blocked):
             raise
-        _move(arm, pre_grasp)
+        _to_pre_grasp(arm, pre_grasp)
         perform(a.motion(type="opening", gripper=arm))
         return
-    _move(arm, pre_grasp)
+    _to_pre_grasp(arm, pre_grasp)
+
+
+def _to_pre_grasp(arm: str, pre_grasp: PoseStamped) -> None:
+    """Move the open hand to ``pre_grasp``; where the head, turned down at the object, is
+    in the way (a Stretch's lift carriage, raised to a table's height, meets its tilted
+    head), look ahead and move again."""
+    try:
+        _move(arm, pre_grasp)
+    except ManipulationLowLevelFailure as failure:
+        if not (neck_in_the_way(failure) and look_ahead()):
+            raise
+        _move(arm, pre_grasp)
 
 
 def _fingers_meet_body(arm: str, blocked: GripperPathBlocked) -> bool:
