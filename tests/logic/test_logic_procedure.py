@@ -6,7 +6,7 @@ from typing import Any
 
 import pytest
 
-from robocram.logic import KnowledgeBase, PrologInstantiationError, PrologTypeError
+from robocram.logic import KnowledgeBase, PrologInstantiationError, PrologTypeError, Term
 from robocram.logic.procedure import MAX_CLAUSES, SCAN_AFTER, compile_procedure
 
 PROGRAM = """
@@ -278,3 +278,17 @@ def test_procedures_of_one_shape_keep_their_own_constants_as_globals() -> None:
     assert {"x", "y", "z"} <= consts[1]
     assert p.__globals__ is not q.__globals__
     assert p.__globals__["proc"] is p  # the name a choicepoint pushes
+
+
+def test_a_procedures_locals_do_not_grow_with_its_clauses() -> None:
+    # Each clause numbers its temporaries afresh: a call clears every local on return.
+    def program(name: str, n: int) -> str:
+        return " ".join(f"{name}(X, Y, c{i}) :- Y = g(X, h{i}), X > {i}." for i in range(n))
+
+    kb = KnowledgeBase()
+    kb.consult(program("small", 4) + "\n" + program("large", 40))
+    assert answers(kb, "large(45, Y, c39)", "Y") == [Term("g", (45, "h39"))]
+    assert answers(kb, "small(2, _, W)", "W") == ["c0", "c1"]
+    small, large = kb._preds[("small", 3)].proc, kb._preds[("large", 3)].proc
+    assert small is not None and large is not None
+    assert large.__code__.co_nlocals == small.__code__.co_nlocals

@@ -289,6 +289,9 @@ class _ProcWriter(ClauseWriter):
         if len(members) > 1:
             self.emit("mark = len(trail)", depth)
         for pos, i in enumerate(members):
+            # Each clause's temporaries die with its block: numbering them afresh keeps
+            # the function's locals few (CPython clears every local at each call's end).
+            self.temps = 0
             self.base = 0
             self.committed = False
             last = pos == len(members) - 1
