@@ -6,7 +6,7 @@ from typing import Any
 
 import pytest
 
-from robocram.logic import KnowledgeBase, PrologInstantiationError, PrologTypeError
+from robocram.logic import KnowledgeBase, PrologInstantiationError, PrologTypeError, Term
 from robocram.logic.procedure import MAX_CLAUSES, SCAN_AFTER, compile_procedure
 
 PROGRAM = """
@@ -258,3 +258,37 @@ def test_predicate_without_first_argument_keys_runs_every_clause_unswitched() ->
     kb.consult(" ".join(f"many(X, {i}) :- X = x{i}." for i in range(n)), group="many")
     assert answers(kb, "many(X, R)", "R") == list(range(n))
     assert answers(kb, "many(x3, R)", "R") == [3]
+
+
+def test_procedures_of_one_shape_keep_their_own_constants_as_globals() -> None:
+    # Same source text, different constants: one cached factory, two functions whose
+    # constants are globals (no closure cell to copy into each call's frame).
+    kb = KnowledgeBase()
+    kb.consult("p(a, 1). p(b, 2). p(c, 3).\nq(x, 7). q(y, 8). q(z, 9).")
+    assert answers(kb, "p(b, N)", "N") == [2]
+    assert answers(kb, "q(z, N)", "N") == [9]
+    assert answers(kb, "q(K, 7)", "K") == ["x"]
+    p, q = kb._preds[("p", 2)].proc, kb._preds[("q", 2)].proc
+    assert p is not None and q is not None
+    assert p.__code__.co_freevars == () and p.__code__ is not q.__code__
+    consts = [
+        {v for k, v in f.__globals__.items() if k[0] == "k" and k[1:].isdigit()} for f in (p, q)
+    ]
+    assert {"a", "b", "c"} <= consts[0] and not {"x", "y", "z"} & consts[0]
+    assert {"x", "y", "z"} <= consts[1]
+    assert p.__globals__ is not q.__globals__
+    assert p.__globals__["proc"] is p  # the name a choicepoint pushes
+
+
+def test_a_procedures_locals_do_not_grow_with_its_clauses() -> None:
+    # Each clause numbers its temporaries afresh: a call clears every local on return.
+    def program(name: str, n: int) -> str:
+        return " ".join(f"{name}(X, Y, c{i}) :- Y = g(X, h{i}), X > {i}." for i in range(n))
+
+    kb = KnowledgeBase()
+    kb.consult(program("small", 4) + "\n" + program("large", 40))
+    assert answers(kb, "large(45, Y, c39)", "Y") == [Term("g", (45, "h39"))]
+    assert answers(kb, "small(2, _, W)", "W") == ["c0", "c1"]
+    small, large = kb._preds[("small", 3)].proc, kb._preds[("large", 3)].proc
+    assert small is not None and large is not None
+    assert large.__code__.co_nlocals <= small.__code__.co_nlocals + 2  # 40 clauses, not 4

@@ -6,8 +6,10 @@ mode when the value is bound, write mode when it is a variable), ISO type tests,
 comparisons, `is/2`, `=/2`, `==/2` and `=../2`. `codegen.ClauseWriter` builds whole
 clauses on it, `procedure.py` whole predicates, and `inline_function` the runs of such
 goals that follow a call (see inline_goal.py). Generated sources become functions
-through `make_factory`, memoised by source text (and their code kept on disk:
-`code_cache`).
+through `make_factory` (a clause's and an inline run's constants are closure cells, its
+code shared by every clause of its shape) or `function_factory` (a procedure's constants
+are its globals: see function_factory.py), memoised by source text (and their code kept
+on disk: `code_cache`).
 """
 
 from __future__ import annotations
@@ -17,6 +19,7 @@ from typing import Any
 
 from robocram.logic.arith import BINARY_FUNCTIONS, apply_binary, evaluate
 from robocram.logic.code_cache import compiled
+from robocram.logic.function_factory import FunctionFactory
 from robocram.logic.functor_arg import arg_check, fresh_vars, functor_make
 from robocram.logic.goal_terms import TERM_GOALS, emit_term_goal
 from robocram.logic.inline_goal import CALL, DISJ, IFTHEN, INLINE, ITE, NOT, SEQ
@@ -31,6 +34,7 @@ __all__ = [
     "FACTORY_CACHE_SIZE",
     "GoalWriter",
     "deref_line",
+    "function_factory",
     "inlinable",
     "inline_function",
     "make_factory",
@@ -93,6 +97,16 @@ def make_factory(source: str) -> Factory:
         namespace: dict[str, Any] = dict(_NAMESPACE)
         exec(compiled(source), namespace)  # noqa: S102
         factory = namespace["make"]
+        _FACTORIES.put(source, factory)
+    return factory
+
+
+def function_factory(source: str, name: str) -> Factory:
+    """The factory of function `name` defined by generated `source`, its constants read
+    as globals `k0, k1, ...` (see function_factory.py); once per distinct source text."""
+    factory = _FACTORIES.get(source)
+    if factory is None:
+        factory = FunctionFactory(compiled(source), name, _NAMESPACE)
         _FACTORIES.put(source, factory)
     return factory
 

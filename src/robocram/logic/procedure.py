@@ -28,8 +28,9 @@ import re
 from collections.abc import Callable, Sequence
 
 from robocram.logic.choicepoints import PROC, ChoicePoint, Cont
-from robocram.logic.codegen import ClauseCode, ClauseWriter, make_factory
+from robocram.logic.codegen import ClauseCode, ClauseWriter
 from robocram.logic.exclusive_guards import excludes
+from robocram.logic.goal_writer import function_factory
 from robocram.logic.limits import PROC_LOOPS
 from robocram.logic.template import Slot, Tmpl
 from robocram.logic.terms import Term, Var
@@ -79,12 +80,9 @@ def compile_procedure(stored: Sequence[ClauseCode], owner: object = None) -> Pro
     try:
         writer = _ProcWriter(clauses, owner)
         writer.procedure(branches)
-        params = ", ".join(f"k{i}" for i in range(len(writer.consts)))
-        source = "\n".join(
-            [f"def make({params}):", "  def proc(args, trail, nxt, cps, start):", *writer.lines]
-            + ["  return proc", ""]
-        )
-        proc: Procedure = make_factory(source)(*writer.consts)
+        head = "def proc(args, trail, nxt, cps, start):"
+        source = "\n".join([head, *writer.lines, ""])
+        proc: Procedure = function_factory(source, "proc")(*writer.consts)
     except (SyntaxError, RecursionError, MemoryError):
         return None  # too deeply nested to compile; the clauses run one by one instead
     return proc
@@ -291,6 +289,9 @@ class _ProcWriter(ClauseWriter):
         if len(members) > 1:
             self.emit("mark = len(trail)", depth)
         for pos, i in enumerate(members):
+            # Each clause's temporaries die with its block: numbering them afresh keeps
+            # the function's locals few (CPython clears every local at each call's end).
+            self.temps = 0
             self.base = 0
             self.committed = False
             last = pos == len(members) - 1
