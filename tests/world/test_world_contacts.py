@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+import pybullet
 import pytest
 
 from robocram.tf import Pose
@@ -51,6 +52,30 @@ def test_contact_points_filtered_by_link() -> None:
         assert world.contacts.contact_points("pr2", "post", link_a="head_tilt_link") == []
         with pytest.raises(UnknownLinkError, match="base_lnk"):
             world.contacts.contact_points("pr2", "post", link_a="base_lnk")
+
+
+def test_points_of_some_links_are_the_whole_bodys_points_on_them() -> None:
+    """A hand's links asked alone give the points Bullet gives for the whole robot on
+    them (raw pybullet), in its order; an alias frame's points go by its link's name."""
+    with World() as world:
+        world.add_robot("pr2")
+        hand = world.link_pose("pr2", "r_gripper_palm_link").position
+        world.add_box("block", (0.1, 0.1, 0.1), Pose((hand[0] + 0.1, hand[1], hand[2])))
+        links = {"r_gripper_palm_link", "r_gripper_l_finger_link", "r_gripper_r_finger_link"}
+        cid, robot = world.physics.client(), world.object("pr2")
+        names = {
+            pybullet.getJointInfo(robot.body_id, i, physicsClientId=cid)[12].decode(): i
+            for i in range(pybullet.getNumJoints(robot.body_id, physicsClientId=cid))
+        }
+        raw = pybullet.getClosestPoints(
+            robot.body_id, world.object("block").body_id, 0.02, physicsClientId=cid
+        )
+        wanted = {names[n] for n in links}
+        expected = [(p[3], p[8], tuple(p[7])) for p in raw if p[3] in wanted]
+        points = world.contacts.links_contact_points("pr2", links, "block", distance=0.02)
+        assert len(expected) >= 2  # the palm and a finger at least
+        assert [(names[p.link_a], p.distance, p.normal_on_b) for p in points] == expected
+        assert world.contacts.links_contact_points("pr2", {"head_tilt_link"}, "block") == []
 
 
 def test_attachments_are_public_state(world: World) -> None:
