@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
-from functools import partial
+from functools import cached_property, partial
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -67,6 +67,15 @@ class ObstacleBoxes:
             high,
         )
 
+    @cached_property
+    def low_high(self) -> FloatArray:
+        """(links, 6): each row's low corner and its negated high one, so that one
+        comparison with a query box's high corner and negated low one tells an overlap
+        (negating is exact: the same answer as comparing the corners)."""
+        table = np.concatenate((self.low, -self.high), axis=1)
+        table.flags.writeable = False
+        return table
+
     def covers(self, obj: WorldObject, skip: set[str]) -> bool:
         """Whether every body a query about ``obj`` (skipping ``skip``) must look at is here."""
         return self.skipped <= skip | {obj.name}
@@ -78,15 +87,14 @@ class ObstacleBoxes:
         (boxes, 3); rows of objects named in ``skip`` are left out."""
         if not len(self.names) or not len(low):
             return
+        query = np.concatenate((high, -low), axis=1)  # (boxes, 6): a row's low_high <= it
+        table = self.low_high
         near = np.flatnonzero(
-            (self.low <= high.max(axis=0)).all(axis=1) & (low.min(axis=0) <= self.high).all(axis=1)
+            (table <= query.max(axis=0)).all(axis=1)
         )  # rows within the bounds of all query boxes: few, so the pairwise test is small
         if not near.size:
             return
-        hits = (
-            (low[:, None, :] <= self.high[None, near, :])
-            & (self.low[None, near, :] <= high[:, None, :])
-        ).all(axis=2)
+        hits = (table[near][None, :, :] <= query[:, None, :]).all(axis=2)
         for box, column in zip(*np.nonzero(hits), strict=True):
             row = int(near[column])
             if self.objects[row].name not in skip:
