@@ -78,6 +78,26 @@ def test_points_of_some_links_are_the_whole_bodys_points_on_them() -> None:
         assert world.contacts.links_contact_points("pr2", {"head_tilt_link"}, "block") == []
 
 
+def test_collisions_follow_what_moved_since_the_bounds_were_kept(world: World) -> None:
+    """Collisions read the others' bounds kept with the world; an object moved since is
+    read again: the answers are raw PyBullet's before and after the move."""
+    cid = world.physics.client()
+
+    def raw(name: str) -> set[str]:
+        body = world.object(name).body_id
+        return {
+            o.name for o in world.objects()
+            if o.name != name
+            and pybullet.getClosestPoints(body, o.body_id, 0.002, physicsClientId=cid)
+        }  # fmt: skip
+
+    assert {o.name for o in world.contacts.collisions("a")} == raw("a") == {"b"}
+    world.set_pose("c", Pose((0.0, 0.1995, 0.1)))  # now 0.5 mm from a
+    assert {o.name for o in world.contacts.collisions("a")} == raw("a") == {"b", "c"}
+    world.set_pose("b", Pose((0.5, 0.0, 0.1)))
+    assert {o.name for o in world.contacts.collisions("a")} == raw("a") == {"c"}
+
+
 def test_attachments_are_public_state(world: World) -> None:
     world.attach("b", "a", "link0")
     [att] = world.bodies.all_attachments()

@@ -139,13 +139,15 @@ def link_contacts(
     ignore: Iterable[WorldObject] = (),
     distance: float = CONTACT_DISTANCE,
 ) -> list[tuple[str, str]]:
-    """``(link of obj, other object)`` pairs nearer than ``distance`` [m], each once.
+    """``(link of obj, other object)`` pairs nearer than ``distance`` [m], each once (in
+    no promised order: callers read them as a set).
 
     ``links`` limits the links of ``obj`` asked about (default: all of them).
     """
     skip = _carried_with(world, obj) | {o.name for o in ignore}
+    boxes = world.contacts.obstacle_boxes(skip)  # kept while the others stay: one comparison
     found: dict[tuple[str, str], None] = {}
-    for link, other, other_link, index, _ in _overlaps(world, obj, links, skip, distance):
+    for link, other, other_link, index, _ in _overlaps(world, obj, links, skip, distance, boxes):
         if (link, other.name) not in found and _near(
             world, obj, other, index, other_link, distance
         ):
