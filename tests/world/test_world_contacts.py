@@ -16,6 +16,7 @@ from robocram.world import (
     UnknownObjectError,
     World,
 )
+from robocram.world.link_contacts import link_pairs_in_contact
 
 
 @pytest.fixture
@@ -96,6 +97,25 @@ def test_collisions_follow_what_moved_since_the_bounds_were_kept(world: World) -
     assert {o.name for o in world.contacts.collisions("a")} == raw("a") == {"b", "c"}
     world.set_pose("b", Pose((0.5, 0.0, 0.1)))
     assert {o.name for o in world.contacts.collisions("a")} == raw("a") == {"c"}
+
+
+def test_kept_bounds_leave_out_only_links_near_nothing() -> None:
+    """Link pairs asked with the others' kept bounds are the broadphase's, in its order:
+    only links whose bounds meet nothing go unasked."""
+    with World() as world:
+        world.add_robot("pr2")
+        world.bodies.add_floor()
+        hand = world.link_pose("pr2", "r_gripper_palm_link").position
+        for k, dz in enumerate((-0.06, 0.0, 0.06)):  # three slabs through the hand
+            world.add_box(f"slab{k}", (0.3, 0.3, 0.02), Pose((hand[0], hand[1], hand[2] + dz)))
+        world.add_box("far", (0.1, 0.1, 0.1), Pose((3.0, 0.0, 0.05)))
+        robot, floor = world.object("pr2"), world.object("floor")
+        kept = world.contacts.obstacle_boxes(["pr2", "floor"])
+        asked = link_pairs_in_contact(world, robot, [floor], 0.002)
+        spared = link_pairs_in_contact(world, robot, [floor], 0.002, kept=kept)
+        named = [(link, obj.name, other) for link, obj, other in spared]
+        assert named == [(link, obj.name, other) for link, obj, other in asked]
+        assert {"slab0", "slab1", "slab2"} <= {name for _, name, _ in named}
 
 
 def test_attachments_are_public_state(world: World) -> None:
