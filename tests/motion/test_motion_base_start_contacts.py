@@ -6,9 +6,12 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+import numpy as np
+import pybullet
 import pytest
 
 from robocram.execution.failures import NavigationPoseUnreachable
+from robocram.motion.base_collision import CONTACT, blockers_at
 from robocram.motion.base_path import plan_base_path
 from robocram.motion.hand_contact import KEEP_DEPTH
 from robocram.tf import Pose
@@ -53,3 +56,24 @@ def test_a_drive_never_pushes_a_start_contact_deeper(pressed: tuple[World, float
     with pytest.raises(NavigationPoseUnreachable) as raised:
         plan_base_path(RobotHandle.of(world, "pr2"), deeper)
     assert "crate" in (raised.value.colliding or [])
+
+
+def test_a_plainly_blocked_goal_names_what_pybullet_finds_there(
+    pressed: tuple[World, float],
+) -> None:
+    """The one exact check of a goal (the kept obstacle bounds, not a broadphase query
+    per link) names every object PyBullet finds within touching distance there."""
+    world, _ = pressed
+    robot = RobotHandle.of(world, "pr2")
+    goal = np.array([_x(world) + 0.02, 0.2, 0.0])  # deeper into the crate
+    named = blockers_at(robot, goal)
+    cid, body = world.physics.client(), world.object("pr2").body_id
+    world.set_pose("pr2", Pose((float(goal[0]), 0.2, 0.0)))
+    raw = {
+        other.name for other in world.objects()
+        if other.type != "floor" and other.name != "pr2"
+        and pybullet.getClosestPoints(body, other.body_id, CONTACT, physicsClientId=cid)
+    }  # fmt: skip
+    world.set_pose("pr2", Pose((float(goal[0]) - 0.02, 0.2, 0.0)))
+    assert "crate" in raw
+    assert {name.split("/")[0] for name in named} == raw

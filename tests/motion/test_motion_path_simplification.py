@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator
 from dataclasses import dataclass
+from itertools import pairwise
 
 import numpy as np
 import pytest
@@ -173,6 +174,22 @@ def test_a_path_round_a_square_is_as_short_as_its_corners_allow(seed: int) -> No
     under = [start, np.array([-1.0, -1.0]), np.array([1.0, -1.0]), goal]
     shortest = min(path_length(over), path_length(under))  # round two corners: 6.44
     assert shortest <= path_length(points) < 1.1 * shortest
+
+
+def test_a_start_known_free_is_not_asked_again() -> None:
+    """A caller that made its checker allowing the start's contacts says so; the start is
+    then not asked (a start inside the square would otherwise fail at once)."""
+    inside, goal = np.array([0.5, 0.0]), np.array([3.0, 0.0])
+    bound = TravelBound(("x", "y"), np.ones(2))
+    box = ([-5.0, -5.0], [5.0, 5.0])
+    with pytest.raises(ManipulationPathBlocked, match="start configuration is in collision"):
+        plan_joint_path(_Square(), inside, goal, bound, box, plan=False)
+    with pytest.raises(ManipulationPathBlocked, match="straight path is blocked"):
+        plan_joint_path(_Square(), inside, goal, bound, box, plan=False, start_free=True)
+    outside = np.array([-3.0, 0.0])
+    path = plan_joint_path(_Square(), outside, -outside, bound, box, start_free=True)
+    assert path.planner == "rrt_connect"  # the goal is still asked, and the way round planned
+    assert not any(_crosses_square(a, b) for a, b in pairwise(np.array(path.waypoints)))
 
 
 class _Caged:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+import pybullet
 import pytest
 
 from robocram.tf import Pose
@@ -15,6 +16,7 @@ from robocram.world import (
     UnknownObjectError,
     World,
 )
+from robocram.world.link_contacts import link_pairs_in_contact
 
 
 @pytest.fixture
@@ -51,6 +53,69 @@ def test_contact_points_filtered_by_link() -> None:
         assert world.contacts.contact_points("pr2", "post", link_a="head_tilt_link") == []
         with pytest.raises(UnknownLinkError, match="base_lnk"):
             world.contacts.contact_points("pr2", "post", link_a="base_lnk")
+
+
+def test_points_of_some_links_are_the_whole_bodys_points_on_them() -> None:
+    """A hand's links asked alone give the points Bullet gives for the whole robot on
+    them (raw pybullet), in its order; an alias frame's points go by its link's name."""
+    with World() as world:
+        world.add_robot("pr2")
+        hand = world.link_pose("pr2", "r_gripper_palm_link").position
+        world.add_box("block", (0.1, 0.1, 0.1), Pose((hand[0] + 0.1, hand[1], hand[2])))
+        links = {"r_gripper_palm_link", "r_gripper_l_finger_link", "r_gripper_r_finger_link"}
+        cid, robot = world.physics.client(), world.object("pr2")
+        names = {
+            pybullet.getJointInfo(robot.body_id, i, physicsClientId=cid)[12].decode(): i
+            for i in range(pybullet.getNumJoints(robot.body_id, physicsClientId=cid))
+        }
+        raw = pybullet.getClosestPoints(
+            robot.body_id, world.object("block").body_id, 0.02, physicsClientId=cid
+        )
+        wanted = {names[n] for n in links}
+        expected = [(p[3], p[8], tuple(p[7])) for p in raw if p[3] in wanted]
+        points = world.contacts.links_contact_points("pr2", links, "block", distance=0.02)
+        assert len(expected) >= 2  # the palm and a finger at least
+        assert [(names[p.link_a], p.distance, p.normal_on_b) for p in points] == expected
+        assert world.contacts.links_contact_points("pr2", {"head_tilt_link"}, "block") == []
+
+
+def test_collisions_follow_what_moved_since_the_bounds_were_kept(world: World) -> None:
+    """Collisions read the others' bounds kept with the world; an object moved since is
+    read again: the answers are raw PyBullet's before and after the move."""
+    cid = world.physics.client()
+
+    def raw(name: str) -> set[str]:
+        body = world.object(name).body_id
+        return {
+            o.name for o in world.objects()
+            if o.name != name
+            and pybullet.getClosestPoints(body, o.body_id, 0.002, physicsClientId=cid)
+        }  # fmt: skip
+
+    assert {o.name for o in world.contacts.collisions("a")} == raw("a") == {"b"}
+    world.set_pose("c", Pose((0.0, 0.1995, 0.1)))  # now 0.5 mm from a
+    assert {o.name for o in world.contacts.collisions("a")} == raw("a") == {"b", "c"}
+    world.set_pose("b", Pose((0.5, 0.0, 0.1)))
+    assert {o.name for o in world.contacts.collisions("a")} == raw("a") == {"c"}
+
+
+def test_kept_bounds_leave_out_only_links_near_nothing() -> None:
+    """Link pairs asked with the others' kept bounds are the broadphase's, in its order:
+    only links whose bounds meet nothing go unasked."""
+    with World() as world:
+        world.add_robot("pr2")
+        world.bodies.add_floor()
+        hand = world.link_pose("pr2", "r_gripper_palm_link").position
+        for k, dz in enumerate((-0.06, 0.0, 0.06)):  # three slabs through the hand
+            world.add_box(f"slab{k}", (0.3, 0.3, 0.02), Pose((hand[0], hand[1], hand[2] + dz)))
+        world.add_box("far", (0.1, 0.1, 0.1), Pose((3.0, 0.0, 0.05)))
+        robot, floor = world.object("pr2"), world.object("floor")
+        kept = world.contacts.obstacle_boxes(["pr2", "floor"])
+        asked = link_pairs_in_contact(world, robot, [floor], 0.002)
+        spared = link_pairs_in_contact(world, robot, [floor], 0.002, kept=kept)
+        named = [(link, obj.name, other) for link, obj, other in spared]
+        assert named == [(link, obj.name, other) for link, obj, other in asked]
+        assert {"slab0", "slab1", "slab2"} <= {name for _, name, _ in named}
 
 
 def test_attachments_are_public_state(world: World) -> None:

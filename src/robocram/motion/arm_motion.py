@@ -235,8 +235,8 @@ def _checked_path(
             if checker is None  # nothing of the world near: free at once
             else plan_joint_path(
                 checker, start, end, bound, box, plan=False, what=what,
-                explain=not settings.plan,
-            )  # planning explains a failure from its snapshot
+                explain=not settings.plan, start_free=True,
+            )  # planning explains a failure from its snapshot; the start's contacts allowed
         )  # fmt: skip
         blocked = own.first_collision(straight.waypoints)
         if blocked is None:

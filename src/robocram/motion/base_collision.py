@@ -455,10 +455,13 @@ def blockers_at(
     stand under a table's edge) costs a millisecond, not a checker. It is put back."""
     world = robot.world
     start = world.pose(robot.name)
+    carried = robot.holding()
+    floors = [o.name for o in world.objects("floor")]
+    obstacles = world.contacts.obstacle_boxes([robot.name, *carried, *floors])  # as drives
     x, y, yaw = (float(v) for v in pose)
     world.set_pose(robot.name, Pose((x, y, start.position[2]), quat.from_euler(0.0, 0.0, yaw)))
     try:
-        pairs = _contacts_now(robot, robot.holding(), allowed_links)
+        pairs = _contacts_now(robot, carried, allowed_links, obstacles)
         return sorted({other for _, other in pairs})
     finally:
         world.set_pose(robot.name, start)

@@ -69,6 +69,7 @@ class BulletScene:
         self.moving_links = found[1]
         self._posed = False
         self._obstacles: ObstacleBoxes | None = None  # read once per posed block
+        self._others: tuple[list[WorldObject], list[WorldObject]] | None = None  # too
         self._levers: LeverData | None = None  # what joint_levers needs, read once
 
     @property
@@ -100,7 +101,20 @@ class BulletScene:
         finally:
             self._posed = False
             self._obstacles = None
+            self._others = None
             self.world.set_joint_states(self.robot, before)
+
+    def _others_now(self) -> tuple[list[WorldObject], list[WorldObject]]:
+        """What the robot holds and what it may touch anywhere: inside a posed block only
+        this robot's joints move, so they are read once per block."""
+        others = self._others
+        if others is None:
+            world = self.world
+            held = [world.object(name) for name in world.bodies.attachments(self.robot)]
+            others = (held, self.anywhere())
+            if self._posed:
+                self._others = others
+        return others
 
     def _obstacles_now(self, held: list[WorldObject], anywhere: list[WorldObject]) -> ObstacleBoxes:
         """The others' bounds: inside a posed block only this robot's joints move, so they
@@ -201,8 +215,7 @@ class BulletScene:
 
     def _clearances_now(self, reach: float) -> dict[str, float]:
         world = self.world
-        held = [world.object(name) for name in world.bodies.attachments(self.robot)]
-        anywhere = self.anywhere()
+        held, anywhere = self._others_now()
         gaps: dict[str, float] = {}
         links = [link for link in self.moving_links if link not in self.allowed_links]
         boxes = self._obstacles_now(held, anywhere)
@@ -275,8 +288,7 @@ class BulletScene:
     def colliding_now(self, first_only: bool = False) -> list[LinkPair]:
         """The colliding pairs of the robot (and what it holds) as it is in the world now."""
         world = self.world
-        held = [world.object(name) for name in world.bodies.attachments(self.robot)]
-        anywhere = self.anywhere()
+        held, anywhere = self._others_now()
         hits: dict[LinkPair, None] = {}
         boxes = self._obstacles_now(held, anywhere) if self._posed else None
         for link, obj, other_link in world.contacts.link_pairs_in_contact(

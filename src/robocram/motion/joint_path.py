@@ -51,6 +51,7 @@ def plan_joint_path(
     what: str = "the arm",
     explain: bool = True,
     judge: SegmentJudge | None = None,
+    start_free: bool = False,
 ) -> JointPath:
     """A free path from ``start`` to ``goal`` (both free); ``plan=False``: straight only.
 
@@ -58,7 +59,9 @@ def plan_joint_path(
     False skips finding what the straight segment runs into first (a walk at full
     resolution), for a caller that will plan elsewhere and explain from there. ``judge``:
     a second check every segment of a planned path must pass (the world, when ``checker``
-    is a snapshot of it), while it is simplified and after.
+    is a snapshot of it), while it is simplified and after. ``start_free``: the caller
+    made ``checker`` allowing the contacts it found at ``start`` (the world stands there
+    still), so the start is not asked again.
 
     Raises:
         ManipulationPathBlocked: neither the straight segment nor the planner found a way;
@@ -67,7 +70,8 @@ def plan_joint_path(
     counter = CheckCounter()
     a, b = np.asarray(start, dtype=float), np.asarray(goal, dtype=float)
     joints = checker.joints
-    for end, q, fraction in (("start", a, 0.0), ("goal", b, 1.0)):
+    ends = (("start", a, 0.0), ("goal", b, 1.0))
+    for end, q, fraction in ends[1:] if start_free else ends:
         pairs = checker.colliding(q)
         if pairs:
             raise ManipulationPathBlocked(

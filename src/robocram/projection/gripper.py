@@ -211,7 +211,7 @@ def _squeezed(
     robot: ProjectedRobot, links: set[str], obj: WorldObject, reach: float = TOUCH
 ) -> bool:
     """Whether ``links`` touch ``obj`` (come within ``reach`` [m]) from opposing sides."""
-    points = robot.world.contacts.contact_points(robot.name, obj, distance=reach)
+    points = robot.world.contacts.links_contact_points(robot.name, links, obj, distance=reach)
     normals = [p.normal_on_b for p in points if p.link_a in links and p.distance <= reach]
     return any(
         sum(a * b for a, b in zip(n, m, strict=True)) < OPPOSED
@@ -223,7 +223,7 @@ def _squeezed(
 def _depths(robot: ProjectedRobot, links: set[str], obj: WorldObject) -> dict[str, float]:
     """How deep [m] each of ``links`` is in ``obj`` now (those touching it)."""
     found: dict[str, float] = {}
-    for p in robot.world.contacts.contact_points(robot.name, obj, distance=0.0):
+    for p in robot.world.contacts.links_contact_points(robot.name, links, obj, distance=0.0):
         if p.link_a in links:
             found[p.link_a] = max(found.get(p.link_a, 0.0), -p.distance)
     return found
@@ -283,7 +283,9 @@ def _centring_shift(
     the gripper stands at ``fraction`` (one side in, the other ``gap`` away): along the
     first side's contact normal (away from the object), by half the misfit when the other
     side closes too, by the gap when it stays (a fixed jaw). None: no other side in sight."""
-    points = robot.world.contacts.contact_points(robot.name, obj, distance=CENTRING_REACH)
+    points = robot.world.contacts.links_contact_points(
+        robot.name, links, obj, distance=CENTRING_REACH
+    )
     mine = [p for p in points if p.link_a in links]
     first = min(mine, key=lambda p: p.distance, default=None)
     if first is None:
@@ -433,6 +435,6 @@ def _touching(robot: ProjectedRobot, links: set[str], obj: WorldObject) -> set[L
     several = len(obj.link_index) > 1
     return {
         (p.link_a, f"{obj.name}/{p.link_b}" if several else obj.name)
-        for p in robot.world.contacts.contact_points(robot.name, obj, distance=TOUCH)
+        for p in robot.world.contacts.links_contact_points(robot.name, links, obj, distance=TOUCH)
         if p.link_a in links and p.distance <= TOUCH
     }

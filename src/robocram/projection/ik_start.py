@@ -151,8 +151,9 @@ class IKStart:
         bounds.update(link_bounds(world, body, [i for i in colliders if i not in bounds]))
         ask = [n for i, n in colliders.items() if i in moved or n not in self._kept]
         found: dict[str, list[LinkPair]] = {n: [] for n in ask}
+        kept = world.contacts.obstacle_boxes([body, *self.ignore])  # links near nothing: unasked
         for link, obj, other in link_pairs_in_contact(
-            world, body, self.ignore, self.distance, ask, None, bounds
+            world, body, self.ignore, self.distance, ask, None, bounds, kept
         ):
             several = len(obj.link_index) > 1
             found[link].append((link, f"{obj.name}/{other}" if several else obj.name))

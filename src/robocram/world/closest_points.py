@@ -6,6 +6,7 @@ count as colliding with each other; a robot's self-collisions are not checked ei
 
 from __future__ import annotations
 
+from collections.abc import Collection
 from typing import TYPE_CHECKING
 
 from robocram.world.contact_point import ContactPoint
@@ -53,10 +54,37 @@ def closest_points(
     link_b: str | None = None,
 ) -> list[ContactPoint]:
     """Closest points of ``a`` and ``b`` (or of the given links) nearer than ``distance``."""
+    return _asked(world, a, b, distance, _body_pairs(a, b, link_a, link_b))
+
+
+def links_closest_points(
+    world: WorldFacade, a: WorldObject, links: Collection[str], b: WorldObject, distance: float
+) -> list[ContactPoint]:
+    """:func:`closest_points` of ``a`` and ``b`` whose point on ``a`` is on one of its
+    ``links`` (by the first name of each link): asked of those links alone, so a hand's
+    few links against a handle cost a fraction of the whole robot's (Bullet tests each
+    pair of links it is asked about on its own, so the points are the same)."""
+    slots = sorted(i for i, name in _link_names(a).items() if name in links and i in a.colliders)
+    pairs = [
+        (body_a, body_b, {"linkIndexA": index_a})
+        for body_a, index_a in (a.locate(slot) for slot in slots)
+        for body_b in b.bodies
+    ]
+    return _asked(world, a, b, distance, pairs)
+
+
+def _asked(
+    world: WorldFacade,
+    a: WorldObject,
+    b: WorldObject,
+    distance: float,
+    pairs: list[tuple[int, int, dict[str, int]]],
+) -> list[ContactPoint]:
+    """The closest points of each pair of bodies of ``pairs`` (with its link filters)."""
     cid = world.physics.client()
     points = [
         point
-        for body_a, body_b, filters in _body_pairs(a, b, link_a, link_b)
+        for body_a, body_b, filters in pairs
         for point in pybullet.getClosestPoints(
             body_a, body_b, distance, physicsClientId=cid, **filters
         )

@@ -7,7 +7,7 @@ with each other here, but :meth:`Contacts.contact_points` is the raw geometry.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Collection, Iterable, Sequence
 from functools import partial
 from typing import TYPE_CHECKING
 
@@ -196,6 +196,15 @@ class Contacts(WorldPart):
             for other in others
             for point in closest_points.closest_points(w, first, other, distance, link_a, link_b)
         ]
+
+    def links_contact_points(
+        self, a: ObjectRef, links: Collection[str], b: ObjectRef, distance: float = 0.0
+    ) -> list[ContactPoint]:
+        """:meth:`contact_points` of ``a`` and ``b`` on ``a``'s ``links`` only (points are
+        named by the first name of their link): a gripper's links asked alone cost a
+        fraction of the whole robot."""
+        w = self._world
+        return closest_points.links_closest_points(w, w.object(a), links, w.object(b), distance)
 
     def contact(self, a: ObjectRef, b: ObjectRef) -> bool:
         """Whether ``a`` and ``b`` touch (within 2 mm)."""

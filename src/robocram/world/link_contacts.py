@@ -58,11 +58,14 @@ def _overlaps(
     distance: float,
     obstacles: ObstacleBoxes | None = None,
     bounds: Mapping[int, Bounds] | None = None,
+    kept: ObstacleBoxes | None = None,
 ) -> Iterator[tuple[str, WorldObject, int, int, str]]:
     """``(link of obj, other object, other's link index, obj's link index, other's link
     name)`` per pair of links whose bounds, grown by ``distance``, overlap; objects named in
     ``skip`` left out. ``obstacles``, when it covers the query, stands in for the
-    broadphase; ``bounds`` holds links' bounds read before (:func:`link_bounds`)."""
+    broadphase; ``bounds`` holds links' bounds read before (:func:`link_bounds`). ``kept``
+    bounds covering the query only spare the broadphase the links they find near nothing:
+    the others are asked as before, so the pairs come in the broadphase's order."""
     cid = world.physics.client()
     names = _link_names(obj)
     if links is None:
@@ -75,7 +78,10 @@ def _overlaps(
         return
     by_body = {b: o for o in world.objects() if o.name not in skip for b in o.bodies}
     other_names: dict[int, dict[int, str]] = {}
+    near = _near_somewhere(obj, indices, skip, distance, kept, bounds, cid)
     for index, link in indices.items():
+        if near is not None and index not in near:
+            continue  # its bounds meet no other's: the broadphase would find nothing near
         low, high = _bounds_of(obj, index, bounds, cid)
         if distance:  # IK checks ask for touching: their bounds as read
             low = [v - distance for v in low]
@@ -90,6 +96,23 @@ def _overlaps(
                 other_slot = other.slot(body, other_link)
                 other_name = other_names[other.body_id].get(other_slot, other.name)
                 yield names.get(index, link), other, other_slot, index, other_name
+
+
+def _near_somewhere(
+    obj: WorldObject,
+    indices: dict[int, str],
+    skip: set[str],
+    distance: float,
+    kept: ObstacleBoxes | None,
+    bounds: Mapping[int, Bounds] | None,
+    cid: int,
+) -> set[int] | None:
+    """The link indices whose bounds (grown by ``distance``) meet a link of ``kept``'s
+    table; None when there is no table covering the query (every link is asked)."""
+    if kept is None or not kept.covers(obj, skip):
+        return None
+    near = _overlaps_in(kept, obj, indices, {}, skip, distance, bounds, cid)
+    return {index for _, _, _, index, _ in near}
 
 
 def _overlaps_in(
@@ -139,13 +162,15 @@ def link_contacts(
     ignore: Iterable[WorldObject] = (),
     distance: float = CONTACT_DISTANCE,
 ) -> list[tuple[str, str]]:
-    """``(link of obj, other object)`` pairs nearer than ``distance`` [m], each once.
+    """``(link of obj, other object)`` pairs nearer than ``distance`` [m], each once (in
+    no promised order: callers read them as a set).
 
     ``links`` limits the links of ``obj`` asked about (default: all of them).
     """
     skip = _carried_with(world, obj) | {o.name for o in ignore}
+    boxes = world.contacts.obstacle_boxes(skip)  # kept while the others stay: one comparison
     found: dict[tuple[str, str], None] = {}
-    for link, other, other_link, index, _ in _overlaps(world, obj, links, skip, distance):
+    for link, other, other_link, index, _ in _overlaps(world, obj, links, skip, distance, boxes):
         if (link, other.name) not in found and _near(
             world, obj, other, index, other_link, distance
         ):
@@ -161,16 +186,19 @@ def link_pairs_in_contact(
     links: Iterable[str] | None = None,
     obstacles: ObstacleBoxes | None = None,
     bounds: Mapping[int, Bounds] | None = None,
+    kept: ObstacleBoxes | None = None,
 ) -> list[tuple[str, WorldObject, str]]:
     """``(link of obj, other object, its link)`` triples nearer than ``distance`` [m], each once.
 
     Unlike :func:`link_contacts` nothing is skipped for being carried: the caller says in
     ``ignore`` what may touch (a robot and what it holds, the floor). ``bounds``: links'
     bounds read before at this configuration (:func:`link_bounds`); others are read here.
+    ``kept``: bounds of the others read since they last moved, to skip the links near
+    nothing (the answer and its order as without).
     """
     skip = {obj.name} | {o.name for o in ignore}
     found: dict[tuple[str, str, str], tuple[str, WorldObject, str]] = {}
-    overlaps = _overlaps(world, obj, links, skip, distance, obstacles, bounds)
+    overlaps = _overlaps(world, obj, links, skip, distance, obstacles, bounds, kept)
     for link, other, other_link, index, other_name in overlaps:
         key = (link, other.name, other_name)
         if key not in found and _near(world, obj, other, index, other_link, distance):

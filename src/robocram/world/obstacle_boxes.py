@@ -11,20 +11,33 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
-from functools import partial
-from typing import TYPE_CHECKING
+from functools import cached_property, partial
+from typing import Protocol
 
 import numpy as np
 from numpy.typing import NDArray
 
-from robocram.world.closest_points import _link_names
 from robocram.world.derived import Derived
 from robocram.world.pybullet_backend import pybullet
 from robocram.world.versions import Stamp, Versions
 from robocram.world.world_object import WorldObject
 
-if TYPE_CHECKING:
-    from robocram.world.world_facade import WorldFacade
+
+class _Client(Protocol):
+    def client(self) -> int: ...
+
+
+class BoxWorld(Protocol):
+    """What reading obstacle bounds asks of a world (not the whole facade, which names
+    this module's table: the layering test forbids the cycle)."""
+
+    @property
+    def physics(self) -> _Client: ...
+    @property
+    def versions(self) -> Versions: ...
+
+    def objects(self, type: str | None = None) -> list[WorldObject]: ...  # noqa: A002
+
 
 FloatArray = NDArray[np.float64]
 
@@ -46,7 +59,7 @@ class ObstacleBoxes:
     high: FloatArray  # (links, 3)
 
     @classmethod
-    def of(cls, world: WorldFacade, skip: Iterable[str]) -> ObstacleBoxes:
+    def of(cls, world: BoxWorld, skip: Iterable[str]) -> ObstacleBoxes:
         """Read the bounds of every link of every object not named in ``skip``."""
         skipped = frozenset(skip)
         rows = [_BodyBoxes.read(world, o) for o in world.objects() if o.name not in skipped]
@@ -67,6 +80,15 @@ class ObstacleBoxes:
             high,
         )
 
+    @cached_property
+    def low_high(self) -> FloatArray:
+        """(links, 6): each row's low corner and its negated high one, so that one
+        comparison with a query box's high corner and negated low one tells an overlap
+        (negating is exact: the same answer as comparing the corners)."""
+        table = np.concatenate((self.low, -self.high), axis=1)
+        table.flags.writeable = False
+        return table
+
     def covers(self, obj: WorldObject, skip: set[str]) -> bool:
         """Whether every body a query about ``obj`` (skipping ``skip``) must look at is here."""
         return self.skipped <= skip | {obj.name}
@@ -78,15 +100,14 @@ class ObstacleBoxes:
         (boxes, 3); rows of objects named in ``skip`` are left out."""
         if not len(self.names) or not len(low):
             return
+        query = np.concatenate((high, -low), axis=1)  # (boxes, 6): a row's low_high <= it
+        table = self.low_high
         near = np.flatnonzero(
-            (self.low <= high.max(axis=0)).all(axis=1) & (low.min(axis=0) <= self.high).all(axis=1)
+            (table <= query.max(axis=0)).all(axis=1)
         )  # rows within the bounds of all query boxes: few, so the pairwise test is small
         if not near.size:
             return
-        hits = (
-            (low[:, None, :] <= self.high[None, near, :])
-            & (self.low[None, near, :] <= high[:, None, :])
-        ).all(axis=2)
+        hits = (table[near][None, :, :] <= query[:, None, :]).all(axis=2)
         for box, column in zip(*np.nonzero(hits), strict=True):
             row = int(near[column])
             if self.objects[row].name not in skip:
@@ -104,10 +125,10 @@ class _BodyBoxes:
     high: FloatArray  # (links, 3)
 
     @classmethod
-    def read(cls, world: WorldFacade, obj: WorldObject) -> _BodyBoxes:
+    def read(cls, world: BoxWorld, obj: WorldObject) -> _BodyBoxes:
         """Read ``obj``'s bounds as it stands now."""
         cid = world.physics.client()
-        links = [(i, n) for i, n in _link_names(obj).items() if i in obj.colliders]
+        links = [(i, n) for i, n in obj.index_names().items() if i in obj.colliders]
         table = np.array(
             [pybullet.getAABB(*obj.locate(i), physicsClientId=cid) for i, _ in links],
             dtype=float,
@@ -135,7 +156,7 @@ class KeptObstacleBoxes:
         default_factory=lambda: Derived(_table_stamp, size=4)
     )  # the tables last asked for (a motion's checks and IK's skip different bodies)
 
-    def boxes(self, world: WorldFacade, skip: Iterable[str]) -> ObstacleBoxes:
+    def boxes(self, world: BoxWorld, skip: Iterable[str]) -> ObstacleBoxes:
         """:meth:`ObstacleBoxes.of`, from the bodies' bounds kept while they stay put."""
         skipped = frozenset(skip)
         versions = world.versions

@@ -7,13 +7,14 @@ A protocol, so that the parts and helpers, which ``world.py`` imports, need not 
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from contextlib import AbstractContextManager
 from typing import Protocol
 
 from robocram.tf import Pose, PoseLike
 from robocram.world.attachment import Attachment
 from robocram.world.body_spec import BodySpec
+from robocram.world.obstacle_boxes import ObstacleBoxes
 from robocram.world.versions import Versions
 from robocram.world.world_object import RobotObject, WorldObject
 from robocram.world.world_tables import ObjectRef
@@ -38,6 +39,12 @@ class StatePart(Protocol):
     def stored_state(self) -> AbstractContextManager[object]: ...
 
 
+class BoundsPart(Protocol):
+    """The contacts part, as the helpers use it: the others' bounds, kept while they stay."""
+
+    def obstacle_boxes(self, ignore: Iterable[ObjectRef] = ()) -> ObstacleBoxes: ...
+
+
 class WorldFacade(Protocol):
     """The world a part or helper serves."""
 
@@ -51,6 +58,8 @@ class WorldFacade(Protocol):
     def snapshots(self) -> StatePart: ...
     @property
     def versions(self) -> Versions: ...
+    @property
+    def contacts(self) -> BoundsPart: ...
 
     def add_object(
         self, name: str, type: str, spec: BodySpec, pose: PoseLike = ...
