@@ -68,7 +68,9 @@ def _pick_from(
     """Drive to ``stand``, look at the object (``where``, map), detect it again, pick it
     up (lifting it out of ``out_of``, the opened drawer it lies in, if any). A thing seen
     ``in_container`` (one opened for it) that this stand does not show is taken where it
-    was seen, if it is still there."""
+    was seen, if it is still there: :func:`fetch` asks that only after every stand failed
+    (a PR2 that took a bowl blind from a drawer of PyCRAM's apartment held it where no
+    stand could put it down; from a later stand that saw it, it delivers)."""
     park_arms()
     navigate(stand)
     look_lowering(where)
@@ -230,9 +232,10 @@ def fetch(
     tries = 0
     stands = _stands(seen, where, arm, opened, causes)
     out_of = _drawer_of(opened)
+    hidden: list[tuple[Pose, str | None]] = []  # stands that did not show it in its container
     for pose, use_arm in itertools.islice(stands, stand_retries + MAX_BLOCKED):
         try:
-            held = _pick_from(pose, seen, where, use_arm, grasp, out_of, opened is not None)
+            held = _pick_from(pose, seen, where, use_arm, grasp, out_of)
         except NavigationPoseUnreachable as failure:  # in the way: the next stand, no try
             causes.append(failure)
             log.record("fetch", pose, failure)
@@ -240,9 +243,20 @@ def fetch(
         except PlanFailure as failure:
             causes.append(failure)
             log.record("fetch", pose, failure)
+            if isinstance(failure, PerceptionObjectNotFound) and opened is not None:
+                hidden.append((pose, use_arm))
             tries += 1
             if tries >= stand_retries:
                 break
+            continue
+        log.record("fetch", pose, None)
+        return held
+    for pose, use_arm in hidden:  # last: where it was seen, from a stand that did not see it
+        try:
+            held = _pick_from(pose, seen, where, use_arm, grasp, out_of, in_container=True)
+        except PlanFailure as failure:
+            causes.append(failure)
+            log.record("fetch", pose, failure)
             continue
         log.record("fetch", pose, None)
         return held
