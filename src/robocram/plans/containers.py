@@ -15,9 +15,10 @@ from robocram.designators import a
 from robocram.execution import perform
 from robocram.execution.failures import EnvironmentManipulationImpossible, PlanFailure
 from robocram.knowledge.scene_predicates import CONTAINER, CONTAINER_OPENING
+from robocram.knowledge.world_predicates import ATTACHED
 from robocram.logic import current_kb
 from robocram.plans.errors import PlanSetupError
-from robocram.plans.known_robot import current_robot
+from robocram.plans.known_robot import KnownRobot, current_robot
 
 VERBS = {"opening": "open", "closing": "close"}  # an action and what its arm does
 
@@ -50,9 +51,26 @@ def container(name: str) -> Container:
 
 
 def move_container(name: str, goal: float, arm: str | None, action: str) -> float:
-    """Move the container's joint to ``goal`` with ``arm`` or the first arm that can."""
+    """Move the container's joint to ``goal`` with ``arm`` or the first arm that can; an
+    arm that holds something is not asked (its hand would let go of it on the handle).
+
+    Raises:
+        PlanSetupError: ``arm`` holds something, or every arm does (named).
+    """
     part = container(name)
-    arms = [arm] if arm is not None else current_robot().arms()
+    robot = current_robot()
+    holding = _holding(robot)
+    if arm is not None and arm in holding:
+        raise PlanSetupError(
+            f"{robot.name}'s {arm} arm holds {holding[arm]!r} and cannot "
+            f"{VERBS.get(action, action)} {part.link!r}; put it down first or use another arm"
+        )
+    arms = [arm] if arm is not None else [a for a in robot.arms() if a not in holding]
+    if not arms:
+        raise PlanSetupError(
+            f"every arm of {robot.name} holds something ({holding}); put a thing down "
+            f"before you {VERBS.get(action, action)} {part.link!r}"
+        )
     failures: list[PlanFailure] = []
     for choice in arms:
         motion = a.motion(
@@ -73,6 +91,18 @@ def move_container(name: str, goal: float, arm: str | None, action: str) -> floa
         environment_part=part.link,
         action=action,
     )
+
+
+def _holding(robot: KnownRobot) -> dict[str, str]:
+    """The object each arm's hand holds now (``attached/4``), arms holding nothing left out."""
+    kb = current_kb()
+    held = {}
+    for arm in robot.arms():
+        link = robot.end_effector_link(arm)
+        row = ATTACHED.first(kb, robot=robot.name, link=link) if link is not None else None
+        if row is not None:
+            held[arm] = row.object
+    return held
 
 
 def open_container(
