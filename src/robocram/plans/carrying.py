@@ -11,8 +11,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from robocram.knowledge.world_predicates import ATTACHED
-from robocram.logic import current_kb
 from robocram.plans.basic_actions import navigate, park_arms
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.known_robot import KnownRobot, current_robot
@@ -30,14 +28,7 @@ class Carried:
 
 def held_objects(robot: KnownRobot) -> dict[str, str]:
     """The object each arm of ``robot`` holds now (arms holding nothing left out)."""
-    kb = current_kb()
-    held = {}
-    for arm in robot.grasping_arms():
-        link = robot.end_effector_link(arm)
-        row = ATTACHED.first(kb, robot=robot.name, link=link) if link is not None else None
-        if row is not None:
-            held[arm] = row.object
-    return held
+    return robot.held_objects(robot.grasping_arms())
 
 
 def carry(target: object = None, arm: str | None = None) -> Carried:

@@ -15,10 +15,9 @@ from robocram.designators import a
 from robocram.execution import perform
 from robocram.execution.failures import EnvironmentManipulationImpossible, PlanFailure
 from robocram.knowledge.scene_predicates import CONTAINER, CONTAINER_OPENING
-from robocram.knowledge.world_predicates import ATTACHED
 from robocram.logic import current_kb
 from robocram.plans.errors import PlanSetupError
-from robocram.plans.known_robot import KnownRobot, current_robot
+from robocram.plans.known_robot import current_robot
 
 VERBS = {"opening": "open", "closing": "close"}  # an action and what its arm does
 
@@ -59,7 +58,7 @@ def move_container(name: str, goal: float, arm: str | None, action: str) -> floa
     """
     part = container(name)
     robot = current_robot()
-    holding = _holding(robot)
+    holding = robot.held_objects(robot.arms())
     if arm is not None and arm in holding:
         raise PlanSetupError(
             f"{robot.name}'s {arm} arm holds {holding[arm]!r} and cannot "
@@ -91,18 +90,6 @@ def move_container(name: str, goal: float, arm: str | None, action: str) -> floa
         environment_part=part.link,
         action=action,
     )
-
-
-def _holding(robot: KnownRobot) -> dict[str, str]:
-    """The object each arm's hand holds now (``attached/4``), arms holding nothing left out."""
-    kb = current_kb()
-    held = {}
-    for arm in robot.arms():
-        link = robot.end_effector_link(arm)
-        row = ATTACHED.first(kb, robot=robot.name, link=link) if link is not None else None
-        if row is not None:
-            held[arm] = row.object
-    return held
 
 
 def open_container(

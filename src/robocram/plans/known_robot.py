@@ -18,7 +18,7 @@ from typing import Literal
 
 from robocram.knowledge import grasp_predicates as gp
 from robocram.knowledge import robot_predicates as rp
-from robocram.knowledge.world_predicates import JOINT_STATE
+from robocram.knowledge.world_predicates import ATTACHED, JOINT_STATE
 from robocram.logic import UnknownPredicateError, current_kb
 from robocram.plans.errors import PlanSetupError
 
@@ -97,6 +97,18 @@ class KnownRobot:
         """The link ``arm`` holds objects with, or None when the KB does not say."""
         row = rp.END_EFFECTOR_LINK.first(current_kb(), robot=self.name, arm=arm)
         return None if row is None else row.link
+
+    def held_objects(self, arms: list[str]) -> dict[str, str]:
+        """The object each of ``arms``' hands holds now (``attached/4`` on its end
+        effector link); arms holding nothing left out."""
+        kb = current_kb()
+        held = {}
+        for arm in arms:
+            link = self.end_effector_link(arm)
+            row = ATTACHED.first(kb, robot=self.name, link=link) if link is not None else None
+            if row is not None:
+                held[arm] = row.object
+        return held
 
     def base_frame(self) -> str:
         """The robot's base frame."""
