@@ -166,7 +166,7 @@ class SetupCache:
         )
         groups: list[Sequence[Part]] = [geometry.named_parts(labels)]
         for obj, link in world.bodies.attachments(handle).items():
-            groups.append(self._held_parts(geometry, handle, obj, link))
+            groups.append(self.held_parts(geometry, handle, obj, link))
         key = tuple(id(group) for group in groups)
 
         def made() -> tuple[tuple[Sequence[Part], ...], PartArrays]:
@@ -174,7 +174,7 @@ class SetupCache:
 
         return self._arrays.get(key, made)[1]  # the groups kept: their ids are not reused
 
-    def _held_parts(
+    def held_parts(
         self, geometry: RobotGeometry, robot: WorldObject, name: str, link: str
     ) -> list[Part]:
         """The parts of ``name`` held by ``link`` of ``robot``: kept while it is the same

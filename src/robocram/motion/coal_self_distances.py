@@ -15,7 +15,7 @@ asks PyBullet itself then (:meth:`SelfDistances.touching`).
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Hashable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
@@ -94,13 +94,24 @@ class SelfParts:
     ) -> SelfParts:
         """The parts of ``pairs``; ``pybullet_link`` gives each link's index in the
         projection world's body (links folded into a host share the host's)."""
-        pieces: dict[int, list[Part]] = {}
+        pieces: dict[Hashable, list[Part]] = {}
         for link, own in geometry.parts.items():
             index = pybullet_link.get(link)
             if index is not None:
                 pieces.setdefault(index, []).extend(own)
+        return cls.grouped(pieces, pybullet_link, pairs)
+
+    @classmethod
+    def grouped(
+        cls,
+        pieces: Mapping[Hashable, Sequence[Part]],
+        group_of: Mapping[str, Hashable],
+        pairs: Sequence[LinkPair],
+    ) -> SelfParts:
+        """The parts of ``pairs`` whose names ``group_of`` maps to groups of ``pieces``
+        (a PyBullet link's parts; or a held object's, riding on its carrier's joint)."""
         parts: list[Part] = []
-        where: dict[int, list[int]] = {}
+        where: dict[Hashable, list[int]] = {}
         for index, found in pieces.items():
             where[index] = list(range(len(parts), len(parts) + len(found)))
             parts.extend(found)
@@ -109,7 +120,7 @@ class SelfParts:
         starts: list[int] = []
         empty: list[bool] = []
         for a, b in pairs:
-            one, two = where.get(pybullet_link[a], []), where.get(pybullet_link[b], [])
+            one, two = where.get(group_of[a], []), where.get(group_of[b], [])
             starts.append(len(first))
             empty.append(not one or not two)
             if empty[-1]:  # a placeholder part pair keeps reduceat's rows one per pair

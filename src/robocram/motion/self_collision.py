@@ -10,8 +10,11 @@ checked against the torso, the base, the head, the other arm and its own hand.
 
 from __future__ import annotations
 
-from collections.abc import Collection
+from collections.abc import Collection, Sequence
 
+import numpy as np
+
+from robocram.motion.joint_trajectory import FloatArray
 from robocram.robots import RobotModel
 
 
@@ -26,6 +29,21 @@ def active_joints(model: RobotModel, joints: Collection[str]) -> set[str]:
                 active.add(joint.name)
                 changed = True
     return active
+
+
+def follower_fold(model: RobotModel, active: Sequence[str], joints: Sequence[str]) -> FloatArray:
+    """(active, joints): each planned joint's column onto itself and, scaled by the size of
+    their multiplier, the mimic followers in ``active`` that follow it (levers per active
+    joint become levers per planned joint)."""
+    column = {j: i for i, j in enumerate(active)}
+    fold = np.zeros((len(active), len(joints)))
+    for i, name in enumerate(joints):
+        fold[column[name], i] = 1.0
+    for name in active:
+        mimic = model.joints[name].mimic
+        if mimic is not None and mimic.joint in joints:
+            fold[column[name], list(joints).index(mimic.joint)] = abs(mimic.multiplier)
+    return fold
 
 
 def moving_group(model: RobotModel, active: Collection[str]) -> dict[str, str]:

@@ -27,9 +27,10 @@ import numpy as np
 
 from robocram.motion.coal_self_distances import SELF_MARGIN, SelfDistances, SelfParts
 from robocram.motion.configuration_checker import LinkPair
+from robocram.motion.held_self_pairs import held_pairs
 from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.robot_geometry import RobotGeometry
-from robocram.motion.self_collision import active_joints
+from robocram.motion.self_collision import active_joints, follower_fold
 from robocram.motion.self_collision_matrix import SelfCollisionMatrix
 from robocram.motion.travel_bound import TravelBound
 from robocram.world import Derived, RobotHandle, Versions, World
@@ -50,10 +51,13 @@ class SelfPathCheck:
     levers: FloatArray  # (pairs, joints) [m per unit]: relative travel per joint change
     floors: FloatArray  # per pair [m]: nearer than this is a collision
     distances: SelfDistances  # lower bounds on the pairs' distances, from coal
+    held: SelfPathCheck | None = None  # what the hands hold against the robot's links
+    pybullet: bool = True  # a touching pair is measured by PyBullet (the links' own word)
 
     @classmethod
     def of(cls, robot: RobotHandle, joints: Sequence[str]) -> SelfPathCheck:
-        """The check of a motion of ``joints`` from where the robot is now."""
+        """The check of a motion of ``joints`` from where the robot is now, held things
+        included."""
         world = robot.world
         joints = tuple(joints)
         build = partial(_moved_pairs, robot, joints)
@@ -65,11 +69,30 @@ class SelfPathCheck:
         standing = {j: v for j, v in now.items() if model.joints[j].mimic is None}
         geometry = model.derived(RobotGeometry.of)
         distances = SelfDistances(geometry, parts, joints, standing, SELF_MARGIN)
-        floors = _floors(robot, pairs, distances, np.array([now[j] for j in joints]))
-        return cls(robot, joints, pairs, levers, floors, distances)
+        q = np.array([now[j] for j in joints])
+        floors = _floors(robot, pairs, distances, q)
+        held = _held_check(robot, joints, geometry, standing, q)
+        return cls(robot, joints, pairs, levers, floors, distances, held)
 
     def colliding(self, q: Sequence[float]) -> list[LinkPair]:
-        """The pairs colliding at ``q``."""
+        """The pairs colliding at ``q`` (held things' last)."""
+        held = self.held.colliding(q) if self.held is not None else []
+        return [*self._own_colliding(q), *held]
+
+    def first_collision(
+        self, waypoints: Sequence[Sequence[float]]
+    ) -> tuple[float, list[LinkPair]] | None:
+        """Where along the path through ``waypoints`` (a fraction of its segments) the
+        first self-collision is found, and its pairs, held things included; None when the
+        path keeps apart."""
+        found = self._walk(waypoints)
+        if self.held is not None:
+            other = self.held.first_collision(waypoints)
+            if other is not None and (found is None or other[0] < found[0]):
+                found = other
+        return found
+
+    def _own_colliding(self, q: Sequence[float]) -> list[LinkPair]:
         if not self.pairs:
             return []
         posing = _Posing(self.robot, self.joints)
@@ -79,11 +102,8 @@ class SelfPathCheck:
             posing.restore()
         return [self.pairs[k] for k in np.flatnonzero(gaps < 0.0).tolist()]
 
-    def first_collision(
-        self, waypoints: Sequence[Sequence[float]]
-    ) -> tuple[float, list[LinkPair]] | None:
-        """Where along the path through ``waypoints`` (a fraction of its segments) the
-        first self-collision is found, and its pairs; None when the path keeps apart."""
+    def _walk(self, waypoints: Sequence[Sequence[float]]) -> tuple[float, list[LinkPair]] | None:
+        """:meth:`first_collision` of this check's own pairs."""
         points = np.asarray(waypoints, dtype=float)
         if not self.pairs or len(points) < 2:
             return None
@@ -116,7 +136,7 @@ class SelfPathCheck:
 
         def measure(k: int) -> float:
             found = self.distances.distance(k)
-            if self.distances.touching(found):  # PyBullet's own word, on the posed robot
+            if self.pybullet and self.distances.touching(found):  # PyBullet's own word
                 posing.pose(q)
                 found = float(
                     self.robot.world.contacts.self_distances(
@@ -190,6 +210,28 @@ def _floors(
     return floors
 
 
+def _held_check(
+    robot: RobotHandle,
+    joints: tuple[str, ...],
+    geometry: RobotGeometry,
+    standing: dict[str, float],
+    q: FloatArray,
+) -> SelfPathCheck | None:
+    """The walk of the held things against the robot's links (:mod:`held_self_pairs`):
+    coal's word alone (a held thing is no link PyBullet measures the robot's pairs
+    between); a pair touching at ``q`` may stay as deep, as the robot's own pairs may."""
+    found = held_pairs(robot, joints)
+    if found is None:
+        return None
+    pairs, levers, parts = found
+    distances = SelfDistances(geometry, parts, joints, standing, SELF_MARGIN)
+    bounds = distances.bounds(q)
+    floors = np.full(len(pairs), -DEEPEN)
+    for k in np.flatnonzero(~(bounds > 0.0)).tolist():
+        floors[k] = min(distances.distance(k), 0.0) - DEEPEN
+    return SelfPathCheck(robot, joints, pairs, levers, floors, distances, pybullet=False)
+
+
 _MovedPairs = tuple[tuple[LinkPair, ...], FloatArray, SelfParts]  # pairs, levers, parts
 
 
@@ -212,14 +254,7 @@ def _moved_pairs(robot: RobotHandle, joints: tuple[str, ...]) -> _MovedPairs:
     matrix = SelfCollisionMatrix.of(robot)
     active = sorted(active_joints(model, joints))
     bound = TravelBound.of(robot, active, held=False)
-    column = {j: i for i, j in enumerate(active)}
-    fold = np.zeros((len(active), len(joints)))  # follower columns onto their masters
-    for i, name in enumerate(joints):
-        fold[column[name], i] = 1.0
-    for name in active:
-        mimic = model.joints[name].mimic
-        if mimic is not None and mimic.joint in joints:
-            fold[column[name], joints.index(mimic.joint)] = abs(mimic.multiplier)
+    fold = follower_fold(model, active, joints)
     every = list(matrix.checked)
     geometry = model.derived(RobotGeometry.of)
     link_index = robot.world.object(robot.name).link_index
