@@ -14,10 +14,11 @@ from pathlib import Path
 from types import MappingProxyType
 
 from robocram.scenes.errors import SceneError
-from robocram.tf import PoseLike
+from robocram.tf import Pose, PoseLike
 from robocram.world import ShapeSpec, UrdfSpec, World, WorldObject
 from robocram.world.body_spec import BodySpec
 
+REST_GAP = 0.0005  # [m] a resting object's bottom this far over its surface (no contact)
 TOOL_DATA = Path(__file__).resolve().parent / "tool_data"
 TOOL_SPECS: Mapping[str, BodySpec] = MappingProxyType(
     {
@@ -44,16 +45,30 @@ def tool_kinds() -> list[str]:
     return sorted([*TOOL_SPECS, "bowl"])
 
 
-def add_tool_object(world: World, name: str, kind: str, pose: PoseLike) -> WorldObject:
+def add_tool_object(
+    world: World, name: str, kind: str, pose: PoseLike, *, on: float | None = None
+) -> WorldObject:
     """Add a ``kind`` object called ``name`` at ``pose`` (map; the cup's, knife's and
     spoon's frames are as ``tools/make_tool_urdfs.py`` says, a box's at its middle).
+
+    ``on``: the height [m, map] of the surface it rests on: the pose's height is then
+    where its bottom touches that surface. A frame at the middle put at a table's height
+    is half in the table: a knife or a sponge put so could not be picked up (every grasp
+    had the fingers in the table).
 
     Raises:
         UnknownToolKind: ``kind`` is none of :func:`tool_kinds`.
     """
     if kind == "bowl":
-        return world.add_item(name, "bowl", pose)
-    spec = TOOL_SPECS.get(kind)
-    if spec is None:
-        raise UnknownToolKind(kind, tool_kinds())
-    return world.add_object(name, kind, spec, pose)
+        added = world.add_item(name, "bowl", pose)
+    else:
+        spec = TOOL_SPECS.get(kind)
+        if spec is None:
+            raise UnknownToolKind(kind, tool_kinds())
+        added = world.add_object(name, kind, spec, pose)
+    if on is not None:
+        placed = world.pose(name)
+        x, y, z = placed.position
+        bottom = world.aabb(name)[0][2]
+        world.set_pose(name, Pose((x, y, z + on - bottom + REST_GAP), placed.orientation))
+    return added
