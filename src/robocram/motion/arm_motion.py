@@ -39,6 +39,7 @@ from robocram.motion.collision_scene import CollisionScene
 from robocram.motion.configuration_checker import LinkPair
 from robocram.motion.corner_blend import blend_radii
 from robocram.motion.hand_contact import HandContact, hand_at_start
+from robocram.motion.held_start_contacts import split_start_contacts
 from robocram.motion.joint_goal import motion_goal
 from robocram.motion.joint_limits import joint_limits
 from robocram.motion.joint_path import PLANNING_BUDGET, JointPath, plan_joint_path
@@ -99,8 +100,7 @@ def _scene(
     scene = CoalClearance(judge)
     touching = _start_contacts(scene, start, hand)
     if touching:
-        judge = BulletScene(robot, joints, allowed, allowed_pairs={*pairs, *touching}, hand=hand)
-        scene = CoalClearance(judge)
+        scene = CoalClearance(_keeping(robot, joints, allowed, pairs, hand, touching))
     return scene
 
 
@@ -117,9 +117,24 @@ def _judge(
     judge = BulletScene(robot, joints, allowed, allowed_pairs=pairs, hand=hand)
     touching = _start_contacts(judge, start, hand)
     if touching:
-        pairs = {*pairs, *touching}
-        judge = BulletScene(robot, joints, allowed, allowed_pairs=pairs, hand=hand)
+        judge = _keeping(robot, joints, allowed, pairs, hand, touching)
     return judge
+
+
+def _keeping(
+    robot: RobotHandle,
+    joints: tuple[str, ...],
+    allowed: Collection[str],
+    pairs: Collection[LinkPair],
+    hand: HandContact | None,
+    touching: list[LinkPair],
+) -> BulletScene:
+    """The judge allowing ``pairs`` and the start's contacts ``touching``: the robot's
+    links' kept, a held thing's no deeper than it starts (:mod:`held_start_contacts`)."""
+    kept, bounded = split_start_contacts(robot, touching)
+    return BulletScene(
+        robot, joints, allowed, allowed_pairs={*pairs, *kept}, hand=hand, contacts=bounded
+    )
 
 
 def _start_contacts(
