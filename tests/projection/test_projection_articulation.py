@@ -126,11 +126,20 @@ FINGERS_IN_THE_HANDLE = pytest.mark.xfail(
 )
 
 
+ARM_AHEAD_OF_BASE = pytest.mark.xfail(
+    reason="the HSR opened the cupboard's door to 1.2 rad only with steps whose arm moved "
+    "ahead of its base, taking the tool 3-14.5 cm off the handle's arc while it held the "
+    "handle (not executable; now refused, projection/arm.py OFF_LINE): a door this wide "
+    "needs the base and the arm moving together along the arc (whole-body steps)",
+    strict=True,
+)
+
+
 @pytest.mark.parametrize(
     ("door", "robot", "arm", "aside"),  # aside: the arm's shoulder before the handle
     [
         pytest.param("cupboard", "pr2", "right", -0.19, marks=BESIDE_THE_WALL),
-        ("cupboard", "hsrb", "arm", -0.08),
+        pytest.param("cupboard", "hsrb", "arm", -0.08, marks=ARM_AHEAD_OF_BASE),
         pytest.param("fridge", "pr2", "right", -0.19, marks=FINGERS_IN_THE_HANDLE),
         ("fridge", "hsrb", "arm", -0.08),
     ],

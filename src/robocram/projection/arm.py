@@ -17,6 +17,8 @@ from __future__ import annotations
 
 from dataclasses import replace
 
+import numpy as np
+
 from robocram.execution import checkpoint
 from robocram.execution.failures import (
     ManipulationGoalNotReached,
@@ -29,6 +31,7 @@ from robocram.kinematics import (
     IKResult,
     PlanarBase,
     base_in_ik,
+    forward_kinematics,
     solve_ik,
 )
 from robocram.motion import ArmMotion, plan_arm_motion, plan_tool_line
@@ -55,6 +58,7 @@ from robocram.tf import Pose, PoseLike, PoseStamped
 
 IK_RESTARTS = 100  # descents after the first in each IK query of a move_tcp
 BASE_TRAVEL = PlanarBase()  # how far IK may move the base: +-0.5 m in x and y, +-pi in yaw
+OFF_LINE = 0.003  # [m] an arm moved ahead of its base keeps the tool this near a carried line
 IKQuery = tuple[bool, PlanarBase | None]  # use_torso, base travel (None: the base stays)
 
 
@@ -174,6 +178,11 @@ def _arm_then_base(
     (False: the arm moves after it); if the arm as it is does not fit there (over a table),
     the arm first, then the base (True: both done). Each motion is checked on its own
     (the drive lets the hand's links touch, the arm's motion bounds them by ``hand``).
+    While the hand carries a part (a door's step), only where the arm's move keeps the
+    tool near the step's line (:func:`_keeps_to_lines`): the part goes where the tool goes
+    along that line, and an arm moved to where it would be once the base has moved took
+    the tool off it, the fingers 12-15 mm into the handle (the drafted Fetch's fridge
+    door); such a step fails, and a shorter one is tried.
 
     Raises:
         NavigationLowLevelFailure: neither order works (the base's failure).
@@ -187,6 +196,8 @@ def _arm_then_base(
         return False
     except NavigationLowLevelFailure as failure:
         first = failure
+    if robot.carried and not _keeps_to_lines(robot, arm, result):
+        raise first  # the hand moves a part: the arm ahead of its base would leave it behind
     checked = planned_against(robot)
     try:
         settings = replace(robot.motion, check=mode.replace("-", "_") != "allow_all")
@@ -201,6 +212,27 @@ def _arm_then_base(
         drive(robot, base_goal, free, hand)
     except NavigationLowLevelFailure:
         raise first from None
+    return True
+
+
+def _keeps_to_lines(robot: ProjectedRobot, arm: str, result: IKResult) -> bool:
+    """Whether ``arm``'s tool, moved to ``result``'s joints with the base where it stands,
+    stays within :data:`OFF_LINE` of every carried part's line (the part follows the tool
+    along it: off it, the hand is no longer where the part's handle is)."""
+    model = robot.description.model
+    now = robot.world.joint_states(robot.name)
+    joints = {j: v for j, v in now.items() if model.joints[j].mimic is None}
+    joints.update(result.joint_positions)
+    tool = forward_kinematics(robot.description, joints, robot.arm(arm).tool_frame)
+    at = np.asarray((robot.base_pose() * tool).position)
+    for carried in robot.carried:
+        if carried.line is None:
+            continue
+        begin, end = np.asarray(carried.line[0]), np.asarray(carried.line[1])
+        way = end - begin
+        share = float(np.clip((at - begin) @ way / max(float(way @ way), 1e-12), 0.0, 1.0))
+        if float(np.linalg.norm(begin + way * share - at)) > OFF_LINE:
+            return False
     return True
 
 
