@@ -64,9 +64,14 @@ class SelfContacts:
         self._fresh_data()
 
     def _fresh_data(self) -> None:
-        self.geometry_data = pin.GeometryData(self.geometry)
-        for request in self.geometry_data.collisionRequests:
+        self.geometry_data = self._new_data()
+        self._apart: dict[frozenset[str], pin.GeometryData] = {}
+
+    def _new_data(self) -> pin.GeometryData:
+        data = pin.GeometryData(self.geometry)
+        for request in data.collisionRequests:
             request.security_margin = CLEARANCE
+        return data
 
     def _adjacent(self) -> set[frozenset[str]]:
         """Pairs of links joined by one joint, fixed joints merged."""
@@ -121,9 +126,23 @@ class SelfContacts:
             found.append((self.links[pair.first], self.links[pair.second]))
         return sorted(set(found))
 
-    def touches(self, values: Mapping[str, float]) -> bool:
-        """Whether any counted pair meets with ``values`` set."""
+    def touches(self, values: Mapping[str, float], within: frozenset[str] = frozenset()) -> bool:
+        """Whether any counted pair meets with ``values`` set, leaving out pairs of two links
+        ``within`` one group (a hand's fingers meeting one another at their limits say
+        nothing of where its arm parks)."""
         q = self._q(values)
         return pin.computeCollisions(
-            self.kinematics, self.data, self.geometry, self.geometry_data, q, True
+            self.kinematics, self.data, self.geometry, self._data_apart(within), q, True
         )
+
+    def _data_apart(self, within: frozenset[str]) -> pin.GeometryData:
+        """Collision data with the pairs inside ``within`` switched off, kept per group."""
+        if not within:
+            return self.geometry_data
+        if within not in self._apart:
+            data = self._new_data()
+            for index, pair in enumerate(self.geometry.collisionPairs):
+                if self.links[pair.first] in within and self.links[pair.second] in within:
+                    data.deactivateCollisionPair(index)
+            self._apart[within] = data
+        return self._apart[within]
