@@ -44,18 +44,16 @@ def description() -> RobotDescription:
                 # why: mimicked by 1 hand joint(s) (<mimic> in the URDF); fingers and hand links are
                 #   found at load
                 gripper_joints=("r_gripper_l_finger_joint",),
-                # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
-                # TODO doubt: its links touch (l_gripper_l_finger/l_gripper_r_finger,
-                #   left_upper_forearm/left_upper_elbow_visual) and no stowed pose was found: give
-                #   one
+                # why: stowed: within limits, the arm within 0.69 m of the base's middle (the
+                #   sampled pose: touching), 1 cm clear of its other links (meshes)
                 parking={
-                    "right_s0": -1.177,
-                    "right_s1": -0.397,
-                    "right_e0": 0.413,
-                    "right_e1": 2.618,
-                    "right_w0": 0.034,
-                    "right_w1": 2.015,
-                    "right_w2": -1.109,
+                    "right_s0": 0.076,
+                    "right_s1": -0.177,
+                    "right_e0": -0.892,
+                    "right_e1": 2.215,
+                    "right_w0": -0.675,
+                    "right_w1": 0.57,
+                    "right_w2": 3.059,
                 },
             ),
             "left": ArmDescription(
@@ -72,7 +70,8 @@ def description() -> RobotDescription:
                 gripper_joints=("l_gripper_l_finger_joint",),
                 # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
                 # TODO doubt: its links touch (collision_head_link_2/left_upper_elbow_visual,
-                #   l_gripper_l_finger/l_gripper_r_finger) and no stowed pose was found: give one
+                #   left_upper_forearm_visual/left_upper_elbow_visual) and no stowed pose was found:
+                #   give one
                 parking={
                     "left_s0": -1.195,
                     "left_s1": -1.972,

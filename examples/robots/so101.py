@@ -47,18 +47,18 @@ def description() -> RobotDescription:
                 # why: it carries the camera: the wrist 0.25 m ahead of and 0.2 m above the
                 #   shoulder, the hand below it, 1 cm clear of its other links (meshes)
                 parking={
-                    "shoulder_pan": -0.009,
-                    "shoulder_lift": -0.239,
-                    "elbow_flex": 0.059,
-                    "wrist_flex": 0.279,
-                    "wrist_roll": -1.254,
+                    "shoulder_pan": -0.006,
+                    "shoulder_lift": 0.203,
+                    "elbow_flex": -0.674,
+                    "wrist_flex": 0.924,
+                    "wrist_roll": 1.316,
                 },
             ),
         },
         # why: camera frame inferred: no link is named like a camera; the link off the arms named
-        #   like a head or sensor, else the highest, else a wrist; neither its z (x share -1.00) nor
-        #   its x (0.03) looks ahead, the arms parked: optical frame added looking ahead (the base's
-        #   x), 12 deg down
+        #   like a head or sensor, else the highest, else a wrist; neither its z (x share -0.90) nor
+        #   its x (0.13) looks ahead, the arms parked: optical frame added looking ahead (the base's
+        #   x), 13 deg down
         # TODO doubt: inferred, not read from the URDF: the camera is put on 'gripper_link'; if the
         #   robot's camera sits elsewhere, draft again with `robocram robot draft URDF --camera
         #   LINK`, or edit this frame
@@ -81,7 +81,7 @@ def description() -> RobotDescription:
             FrameSpec(
                 name="gripper_link_optical",
                 parent="gripper_link",
-                pose=Pose((0.0, 0.0, 0.0), (0.989262, -0.134128, -0.003327, 0.057965)),
+                pose=Pose((0.0, 0.0, 0.0), (-0.149142, 0.981878, -0.115978, 0.014864)),
             ),
         ),
     )

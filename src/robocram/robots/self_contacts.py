@@ -5,15 +5,14 @@ pose it proposes through pinocchio's geometry (coal underneath), meshes as their
 hulls as PyBullet collides them (a concave torso's hull reaches far past its mesh), as
 MoveIt's setup
 assistant does before it writes an SRDF: pairs of links joined by one joint (fixed
-joints merged), and pairs that already meet with every joint at zero (within limits)
-and in every one of a few seeded poses, are left out; every other pair counts.
+joints merged), and pairs that already meet with every joint at zero (within limits),
+are left out; every other pair counts.
 """
 
 from __future__ import annotations
 
 import itertools
 import math
-import random
 from collections.abc import Mapping
 from typing import TYPE_CHECKING
 
@@ -28,8 +27,6 @@ if TYPE_CHECKING:
 else:
     pin = LazyLibrary("pinocchio")
 
-SAMPLES = 16  # seeded poses a pair meeting at zero must meet in too, to be left out
-SEED = 0
 CLEARANCE = 0.01  # [m] links nearer than this on their meshes meet: a pose checked here is
 # checked again on PyBullet's convex hulls, which reach past the meshes (a Fetch's parked
 # finger 2.8 mm from its shoulder on the hulls), and a motion must reach it without touching
@@ -61,11 +58,8 @@ class SelfContacts:
                 self.geometry.addCollisionPair(pin.CollisionPair(i, j))
         self.data = self.kinematics.createData()
         self._fresh_data()
-        built = set(self._meeting(self._q({})))  # within the clearance: they are built so,
-        rng = random.Random(SEED)  # unless some pose parts them (Centauro's arm and pelvis,
-        for _ in range(SAMPLES):  # beside each other at zero, meet again as the waist turns)
-            built &= set(self._meeting(self._q(self._sample(rng))))
-        for index in sorted(built, reverse=True):
+        at_zero = self._meeting(self._q({}))  # within the clearance: they are built so
+        for index in sorted(at_zero, reverse=True):
             self.geometry.removeCollisionPair(self.geometry.collisionPairs[index])
         self._fresh_data()
 
@@ -78,16 +72,6 @@ class SelfContacts:
         for request in data.collisionRequests:
             request.security_margin = CLEARANCE
         return data
-
-    def _sample(self, rng: random.Random) -> dict[str, float]:
-        """Every movable joint at a seeded value within its limits (+-pi where unlimited)."""
-        values = {}
-        for name, spec in self.model.joints.items():
-            if spec.movable and spec.mimic is None:
-                lower = -math.pi if spec.lower is None else spec.lower
-                upper = math.pi if spec.upper is None else spec.upper
-                values[name] = rng.uniform(lower, upper)
-        return values
 
     def _adjacent(self) -> set[frozenset[str]]:
         """Pairs of links joined by one joint, fixed joints merged."""
