@@ -45,16 +45,17 @@ def description() -> RobotDescription:
                 # why: mimicked by 6 hand joint(s) (<mimic> in the URDF); fingers and hand links are
                 #   found at load
                 gripper_joints=("gripper_left_joint",),
-                # why: stowed: within limits, the arm within 0.52 m of the base's middle (the
-                #   sampled pose: touching), 1 cm clear of its other links (meshes)
+                # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
+                # TODO doubt: its links touch (arm_left_3_link/arm_left_5_link) and no stowed pose
+                #   was found: give one
                 parking={
-                    "arm_left_1_joint": -0.627,
-                    "arm_left_2_joint": 1.038,
-                    "arm_left_3_joint": -0.122,
-                    "arm_left_4_joint": -2.056,
-                    "arm_left_5_joint": 1.85,
-                    "arm_left_6_joint": -0.227,
-                    "arm_left_7_joint": 0.297,
+                    "arm_left_1_joint": 0.785,
+                    "arm_left_2_joint": 0.804,
+                    "arm_left_3_joint": -0.507,
+                    "arm_left_4_joint": -2.234,
+                    "arm_left_5_joint": -1.818,
+                    "arm_left_6_joint": 1.011,
+                    "arm_left_7_joint": 0.019,
                 },
             ),
             "right": ArmDescription(
@@ -70,16 +71,17 @@ def description() -> RobotDescription:
                 # why: mimicked by 6 hand joint(s) (<mimic> in the URDF); fingers and hand links are
                 #   found at load
                 gripper_joints=("gripper_right_joint",),
-                # why: stowed: within limits, the arm within 0.47 m of the base's middle (the
-                #   sampled pose: touching), 1 cm clear of its other links (meshes)
+                # why: sampled in limits (seed 0): wrist low beside the shoulder, out of view
+                # TODO doubt: its links touch (arm_right_3_link/arm_right_5_link) and no stowed pose
+                #   was found: give one
                 parking={
-                    "arm_right_1_joint": 0.396,
-                    "arm_right_2_joint": -0.704,
-                    "arm_right_3_joint": 0.268,
-                    "arm_right_4_joint": -2.2,
-                    "arm_right_5_joint": -0.816,
-                    "arm_right_6_joint": 0.933,
-                    "arm_right_7_joint": 0.016,
+                    "arm_right_1_joint": -0.785,
+                    "arm_right_2_joint": -0.777,
+                    "arm_right_3_joint": 0.422,
+                    "arm_right_4_joint": -2.234,
+                    "arm_right_5_joint": -1.771,
+                    "arm_right_6_joint": 0.457,
+                    "arm_right_7_joint": -0.181,
                 },
             ),
         },
