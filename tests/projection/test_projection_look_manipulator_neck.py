@@ -1,7 +1,8 @@
 """A neck arm that is the manipulator looks as an arm's camera does: the Donbot's.
 
-The Donbot's camera rides its UR5's wrist; the draft describes the UR5 twice, as its
-arm and as a neck arm carrying the camera. Looked as a neck, it turned the camera where
+The Donbot's camera rides its UR5's wrist; the draft described the UR5 twice, as its
+arm and as a neck arm carrying the camera (since zoo7, once: the arm carries the camera,
+``test_robots_draft_wrist_camera.py``). Looked as a neck, it turned the camera where
 the arm was parked, beside its base, whose body hid the tabletop mug: the pick-up failed
 at detecting. It looks from a viewing pose its body does not hide now. Judged in a raw
 PyBullet: rays from the camera to the mug's middle meet the mug first.

@@ -13,6 +13,7 @@ Maps are cached on disk under :func:`cache_dir`, keyed by the URDF's content.
 from __future__ import annotations
 
 import hashlib
+import itertools
 import math
 import os
 import tempfile
@@ -27,8 +28,10 @@ from robocram.costmaps.batch_fk import batch_frame_poses
 from robocram.costmaps.grasps import approach_axis
 from robocram.kinematics import arm_joints
 from robocram.kinematics.robot_kinematics import robot_kinematics
-from robocram.robots import RobotDescription, load_description
+from robocram.robots import RobotDescription, link_pose, load_description
 from robocram.robots.disk_cache import cache_dir
+from robocram.robots.link_centre import link_box
+from robocram.tf import Pose
 
 SAMPLES = 100_000  # FK samples per arm
 RADIUS_STEP = 0.05  # [m]
@@ -48,6 +51,7 @@ class ReachabilityMap:
     robot: str
     arm: str
     scores: NDArray[np.float64]
+    bottom: float = 0.0  # [m] the lowest bin's floor, base frame: below 0 for a base held up
 
     def score_at(self, point_in_base: tuple[float, float, float]) -> float:
         """Score of a tool position given in the robot's base frame [m]."""
@@ -56,7 +60,7 @@ class ReachabilityMap:
     def radius_at(self, z: float) -> float:
         """A distance [m] from the base's z axis beyond which every score at height ``z``
         (base frame) is 0: where a costmap need not ask."""
-        h = math.floor(z / HEIGHT_STEP)
+        h = math.floor((z - self.bottom) / HEIGHT_STEP)
         if not 0 <= h < self.scores.shape[2]:
             return 0.0
         reached = np.flatnonzero(self.scores[:, :, h].any(axis=1))
@@ -67,7 +71,7 @@ class ReachabilityMap:
         x, y, z = points_in_base[:, 0], points_in_base[:, 1], points_in_base[:, 2]
         r = (np.hypot(x, y) / RADIUS_STEP).astype(int)
         b = ((np.arctan2(y, x) + math.pi) / (2 * math.pi) * BEARINGS).astype(int) % BEARINGS
-        h = np.floor(z / HEIGHT_STEP).astype(int)
+        h = np.floor((z - self.bottom) / HEIGHT_STEP).astype(int)
         inside = (r < self.scores.shape[0]) & (h >= 0) & (h < self.scores.shape[2])
         out = np.zeros(len(points_in_base))
         out[inside] = self.scores[r[inside], b[inside], h[inside]]
@@ -100,17 +104,40 @@ def build_reachability_map(
     """Sample FK of ``arm`` into a fresh map (no cache): about a second per arm."""
     desc = load_description(robot)
     points = _sample_tool_points(desc, arm, samples)
-    shape = (round(RADIUS_MAX / RADIUS_STEP), BEARINGS, round(HEIGHT_MAX / HEIGHT_STEP))
+    bottom = base_bottom(desc)
+    heights = round((HEIGHT_MAX - bottom) / HEIGHT_STEP)
+    shape = (round(RADIUS_MAX / RADIUS_STEP), BEARINGS, heights)
     r = np.hypot(points[:, 0], points[:, 1]) / RADIUS_STEP
     b = (np.arctan2(points[:, 1], points[:, 0]) + math.pi) / (2 * math.pi) * BEARINGS
-    h = points[:, 2] / HEIGHT_STEP
+    h = (points[:, 2] - bottom) / HEIGHT_STEP
     index = np.stack([r, b, h], axis=1).astype(int)
     keep = np.all((index >= 0) & (index < np.array(shape)), axis=1)
     counts = np.zeros(shape)
     np.add.at(counts, tuple(index[keep].T), 1.0)
     counts = _smoothed(counts)
     peak = float(counts.max())
-    return ReachabilityMap(desc.name, arm, counts / peak if peak > 0 else counts)
+    return ReachabilityMap(desc.name, arm, counts / peak if peak > 0 else counts, bottom)
+
+
+def base_bottom(desc: RobotDescription) -> float:
+    """[m] Where the map's heights start, in the base frame: 0 for a base frame on the
+    floor; the robot's lowest point (a whole bin down) for a base frame held above its
+    feet or wheels, whose targets lie below it: Centauro's pelvis stands 1.03 m up, over
+    the counter's mug, which a map from 0 up scored 0 from every cell."""
+    model = load_description(desc).model
+    assert model is not None
+    lowest = 0.0
+    for name, link in model.links.items():
+        box = link_box(link)
+        if box is None:
+            continue
+        pose = link_pose(model, name)
+        (x0, y0, z0), (x1, y1, z1) = box
+        for corner in itertools.product((x0, x1), (y0, y1), (z0, z1)):
+            lowest = min(lowest, (pose * Pose(corner)).position[2])
+    return (
+        round(math.floor(lowest / HEIGHT_STEP) * HEIGHT_STEP, 3) if lowest < -HEIGHT_STEP else 0.0
+    )
 
 
 def _smoothed(counts: NDArray[np.float64]) -> NDArray[np.float64]:
@@ -130,6 +157,8 @@ def _smoothed(counts: NDArray[np.float64]) -> NDArray[np.float64]:
 def _cache_file(desc: RobotDescription, arm: str, samples: int) -> Path:
     assert desc.model is not None
     key = f"{FORMAT}|{samples}|{RADIUS_STEP}|{BEARINGS}|{HEIGHT_STEP}|{MAX_TILT}|{arm}|"
+    bottom = base_bottom(desc)
+    key += f"bottom {bottom}|" if bottom else ""  # maps of a base on the floor keep their key
     digest = hashlib.sha1((key + desc.model.to_urdf()).encode("utf-8")).hexdigest()[:16]
     return cache_dir() / "reachability" / f"{desc.name}-{arm}-{digest}.npz"
 
@@ -166,7 +195,8 @@ class ReachabilityMaps:
         path = _cache_file(robot, arm, self.samples)
         if path.is_file():
             with np.load(path) as data:
-                return ReachabilityMap(robot.name, arm, np.asarray(data["scores"], float))
+                scores = np.asarray(data["scores"], float)
+            return ReachabilityMap(robot.name, arm, scores, base_bottom(robot))
         start = time.perf_counter()
         built = build_reachability_map(robot, arm, self.samples)
         self.build_seconds += time.perf_counter() - start

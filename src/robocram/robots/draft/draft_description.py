@@ -248,6 +248,10 @@ def _with_camera(
     )
     looked_from = camera.added.parent if camera.added else camera.frame
     neck = find_neck(tree, looked_from, cut)
+    if carrier is None:  # a camera found on an arm's wrist (the Donbot's) rides on it too
+        carrier = _park_carrier(tree, desc, looked_from, why, doubts)
+        if carrier is not None:
+            desc = replace(desc, arms={**desc.arms, carrier.name: carrier})
     if carrier is not None:  # the arm's joints are not a neck too
         neck = Neck(None, (), f"the camera rides on arm {carrier.name!r}: its parking aims it")
     _note(why, doubts, "pan_tilt", neck.why, neck.doubt)

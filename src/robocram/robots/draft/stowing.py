@@ -112,6 +112,8 @@ class _Search:
         self.contacts = contacts
         tree, poses = ModelTree(model), link_poses(model)
         hand = [wrist, *tree.subtree_links(wrist)]
+        first = model.joints[self.joints[0]].child
+        self.arm_links = frozenset((first, *tree.subtree_links(first)))
         self.hand = [
             poses[wrist].inverse() * poses[n] * Pose(link_centre(model.links[n])) for n in hand
         ]
@@ -161,7 +163,7 @@ class _Search:
         """Whether the arm at ``values`` touches itself with the hand closed or open."""
         arm = dict(zip(self.joints, values, strict=True))
         return any(
-            self.contacts.touches({**above, **arm, **hand})
+            self.contacts.touches({**arm, **hand}, turned=above, parts=self.arm_links)
             for above in self.swept
             for hand in self.hand_states
         )
