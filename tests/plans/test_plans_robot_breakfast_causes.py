@@ -18,6 +18,7 @@ from robocram.plans.container_access import close_again
 from robocram.plans.deliver import deliver
 from robocram.plans.fetch import fetch
 from robocram.plans.table_arrangement import STANDARD_SETTING, spots, table_with_seats
+from robocram.plans.torso_up import navigate_torso_up
 from robocram.projection import simulated_robot
 from robocram.scenes.breakfast_scene import breakfast_scene
 from robocram.tf import Pose, PoseStamped
@@ -198,5 +199,41 @@ def test_the_stretch_takes_a_bowl_from_the_table_looking_ahead_to_reach() -> Non
         head = world.object(scene.robot)
         tilt = pybullet.getJointState(head.body_id, head.joint_index["joint_head_tilt"], cid)[0]
         assert tilt == pytest.approx(0.0, abs=0.05)  # it looked ahead: the lift passes the head
+    finally:
+        world.close()
+
+
+BOXY_TORSO = "triangle_base_joint"
+# in front of the opened bowls' drawer, the left arm 0.85 m from the far bowl
+BOXY_AT_DRAWER = Pose((-1.328, 0.91, 0.0), quat.from_euler(0.0, 0.0, math.pi / 2))
+
+
+def test_boxy_raises_its_lowered_torso_to_stand_at_the_opened_drawer() -> None:
+    scene = breakfast_scene("boxy")
+    world = scene.world
+    cid = world.physics.client()
+    try:
+        world.set_joint_states("kitchen", {f"{BOWLS}_joint": 0.4})
+        world.set_joint_states(scene.robot, {BOXY_TORSO: -0.586})  # lowered, as to look in
+        robot, kitchen = world.object(scene.robot), world.object("kitchen")
+        start = world.pose(scene.robot)
+        world.set_pose(scene.robot, BOXY_AT_DRAWER)
+        pybullet.performCollisionDetection(cid)
+        met = pybullet.getClosestPoints(robot.body_id, kitchen.body_id, 0.0, physicsClientId=cid)
+        # lowered, the arms' shoulders meet the drawer there; the base does not
+        links = {index: name for name, index in robot.link_index.items()}
+        assert met
+        assert all("arm" in links.get(p[3], "base") for p in met)
+        world.set_pose(scene.robot, start)
+        with simulated_robot(world, scene.robot):
+            navigate_torso_up(BOXY_AT_DRAWER)
+        position, _ = pybullet.getBasePositionAndOrientation(robot.body_id, cid)
+        assert position[0] == pytest.approx(-1.328, abs=0.01)
+        assert position[1] == pytest.approx(0.91, abs=0.01)
+        torso = pybullet.getJointState(robot.body_id, robot.joint_index[BOXY_TORSO], cid)[0]
+        assert torso > -0.586 + 0.1  # raised
+        assert not pybullet.getClosestPoints(
+            robot.body_id, kitchen.body_id, 0.0, physicsClientId=cid
+        )
     finally:
         world.close()
