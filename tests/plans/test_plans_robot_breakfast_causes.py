@@ -10,6 +10,7 @@ from pathlib import Path
 import pybullet
 import pytest
 
+import robocram.plans.two_armed_trips as trips
 from robocram.designators import a, an
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import park_arms
@@ -18,6 +19,7 @@ from robocram.plans.container_access import close_again
 from robocram.plans.deliver import deliver
 from robocram.plans.fetch import fetch
 from robocram.plans.table_arrangement import STANDARD_SETTING, spots, table_with_seats
+from robocram.plans.table_trips import TableSetting
 from robocram.plans.torso_up import navigate_torso_up
 from robocram.projection import simulated_robot
 from robocram.scenes.breakfast_scene import breakfast_scene
@@ -235,5 +237,36 @@ def test_boxy_raises_its_lowered_torso_to_stand_at_the_opened_drawer() -> None:
         assert not pybullet.getClosestPoints(
             robot.body_id, kitchen.body_id, 0.0, physicsClientId=cid
         )
+    finally:
+        world.close()
+
+
+def test_boxy_puts_the_tucked_bowl_down_after_the_other_hand_failed_in_the_drawer() -> None:
+    scene = breakfast_scene("boxy")
+    world = scene.world
+    cid = world.physics.client()
+    try:
+        with simulated_robot(world, scene.robot):
+            table = table_with_seats(None)
+            spot = next(s for s in spots(table, 2, STANDARD_SETTING, ()) if s.type == "bowl")
+            visit = Visit(usual_place("bowl"))
+            done = TableSetting(table)
+            seen, opened = find(an.object(type="bowl", name="bowl-2"), visit, done.log)
+            held = fetch(seen, log=done.log, opened=opened)
+            out = trips._tucked(held)
+            other = trips.other_arm(held.arm)
+            assert other is not None
+            # the other hand cannot take the second bowl and is left where it last tried
+            assert trips._second(spot, other, visit, done, skip={held.object_name}) is None
+            assert not trips._held_out_alone(held, out, spot, done)
+            visit.close(done.log)
+        body = world.object("bowl-2").body_id
+        low, _ = pybullet.getAABB(body, physicsClientId=cid)
+        assert low[2] == pytest.approx(TABLE_TOP, abs=0.01)  # on the table
+        x, y, _ = pybullet.getBasePositionAndOrientation(body, cid)[0]
+        assert math.hypot(x - spot.pose.position[0], y - spot.pose.position[1]) < 0.15
+        assert not pybullet.getClosestPoints(
+            world.object(scene.robot).body_id, body, 0.005, physicsClientId=cid
+        )  # let go
     finally:
         world.close()
