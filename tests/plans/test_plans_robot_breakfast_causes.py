@@ -15,7 +15,7 @@ from robocram.designators import a, an
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import park_arms
 from robocram.plans.bringing import Visit, find, find_in_place, usual_place
-from robocram.plans.container_access import close_again
+from robocram.plans.container_access import close_again, open_from_front
 from robocram.plans.deliver import deliver
 from robocram.plans.fetch import fetch
 from robocram.plans.table_arrangement import STANDARD_SETTING, spots, table_with_seats
@@ -268,5 +268,24 @@ def test_boxy_puts_the_tucked_bowl_down_after_the_other_hand_failed_in_the_drawe
         assert not pybullet.getClosestPoints(
             world.object(scene.robot).body_id, body, 0.005, physicsClientId=cid
         )  # let go
+    finally:
+        world.close()
+
+
+def test_the_stretch_opens_the_fridge_looking_ahead_after_looking_down_into_a_drawer() -> None:
+    scene = breakfast_scene(STRETCH)
+    world = scene.world
+    cid = world.physics.client()
+    try:
+        # the head as a look into the cutlery drawer left it: turned to the arm, down
+        world.set_joint_states(scene.robot, {"joint_head_pan": -1.754, "joint_head_tilt": -0.819})
+        with simulated_robot(world, scene.robot):
+            open_from_front("fridge_body")
+        kitchen = world.object("kitchen")
+        door = kitchen.joint_index["fridge_door_joint"]
+        assert pybullet.getJointState(kitchen.body_id, door, cid)[0] == pytest.approx(1.4, abs=0.01)
+        head = world.object(scene.robot)
+        tilt = pybullet.getJointState(head.body_id, head.joint_index["joint_head_tilt"], cid)[0]
+        assert tilt == pytest.approx(0.0, abs=0.05)  # it looked ahead
     finally:
         world.close()

@@ -82,6 +82,14 @@ class KnownRobot:
             return None
         return None if row is None else row.value
 
+    def joint_position(self, joint: str) -> float | None:
+        """The value [m | rad] of the robot's ``joint`` now; None without a world to ask."""
+        try:
+            row = JOINT_STATE.first(current_kb(), robot=self.name, joint=joint)
+        except UnknownPredicateError:
+            return None
+        return None if row is None else row.value
+
     def has_torso(self) -> bool:
         """Whether the robot has a torso joint."""
         return rp.ROBOT_TORSO_LINK_JOINT.holds(current_kb(), robot=self.name)
