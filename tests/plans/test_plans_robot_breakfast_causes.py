@@ -10,14 +10,17 @@ from pathlib import Path
 import pybullet
 import pytest
 
+import robocram.plans.two_armed_trips as trips
 from robocram.designators import a, an
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import park_arms
 from robocram.plans.bringing import Visit, find, find_in_place, usual_place
-from robocram.plans.container_access import close_again
+from robocram.plans.container_access import close_again, open_from_front
 from robocram.plans.deliver import deliver
 from robocram.plans.fetch import fetch
 from robocram.plans.table_arrangement import STANDARD_SETTING, spots, table_with_seats
+from robocram.plans.table_trips import TableSetting
+from robocram.plans.torso_up import navigate_torso_up
 from robocram.projection import simulated_robot
 from robocram.scenes.breakfast_scene import breakfast_scene
 from robocram.tf import Pose, PoseStamped
@@ -198,5 +201,91 @@ def test_the_stretch_takes_a_bowl_from_the_table_looking_ahead_to_reach() -> Non
         head = world.object(scene.robot)
         tilt = pybullet.getJointState(head.body_id, head.joint_index["joint_head_tilt"], cid)[0]
         assert tilt == pytest.approx(0.0, abs=0.05)  # it looked ahead: the lift passes the head
+    finally:
+        world.close()
+
+
+BOXY_TORSO = "triangle_base_joint"
+# in front of the opened bowls' drawer, the left arm 0.85 m from the far bowl
+BOXY_AT_DRAWER = Pose((-1.328, 0.91, 0.0), quat.from_euler(0.0, 0.0, math.pi / 2))
+
+
+def test_boxy_raises_its_lowered_torso_to_stand_at_the_opened_drawer() -> None:
+    scene = breakfast_scene("boxy")
+    world = scene.world
+    cid = world.physics.client()
+    try:
+        world.set_joint_states("kitchen", {f"{BOWLS}_joint": 0.4})
+        world.set_joint_states(scene.robot, {BOXY_TORSO: -0.586})  # lowered, as to look in
+        robot, kitchen = world.object(scene.robot), world.object("kitchen")
+        start = world.pose(scene.robot)
+        world.set_pose(scene.robot, BOXY_AT_DRAWER)
+        pybullet.performCollisionDetection(cid)
+        met = pybullet.getClosestPoints(robot.body_id, kitchen.body_id, 0.0, physicsClientId=cid)
+        # lowered, the arms' shoulders meet the drawer there; the base does not
+        links = {index: name for name, index in robot.link_index.items()}
+        assert met
+        assert all("arm" in links.get(p[3], "base") for p in met)
+        world.set_pose(scene.robot, start)
+        with simulated_robot(world, scene.robot):
+            navigate_torso_up(BOXY_AT_DRAWER)
+        position, _ = pybullet.getBasePositionAndOrientation(robot.body_id, cid)
+        assert position[0] == pytest.approx(-1.328, abs=0.01)
+        assert position[1] == pytest.approx(0.91, abs=0.01)
+        torso = pybullet.getJointState(robot.body_id, robot.joint_index[BOXY_TORSO], cid)[0]
+        assert torso > -0.586 + 0.1  # raised
+        assert not pybullet.getClosestPoints(
+            robot.body_id, kitchen.body_id, 0.0, physicsClientId=cid
+        )
+    finally:
+        world.close()
+
+
+def test_boxy_puts_the_tucked_bowl_down_after_the_other_hand_failed_in_the_drawer() -> None:
+    scene = breakfast_scene("boxy")
+    world = scene.world
+    cid = world.physics.client()
+    try:
+        with simulated_robot(world, scene.robot):
+            table = table_with_seats(None)
+            spot = next(s for s in spots(table, 2, STANDARD_SETTING, ()) if s.type == "bowl")
+            visit = Visit(usual_place("bowl"))
+            done = TableSetting(table)
+            seen, opened = find(an.object(type="bowl", name="bowl-2"), visit, done.log)
+            held = fetch(seen, log=done.log, opened=opened)
+            out = trips._tucked(held)
+            other = trips.other_arm(held.arm)
+            assert other is not None
+            # the other hand cannot take the second bowl and is left where it last tried
+            assert trips._second(spot, other, visit, done, skip={held.object_name}) is None
+            assert not trips._held_out_alone(held, out, spot, done)
+            visit.close(done.log)
+        body = world.object("bowl-2").body_id
+        low, _ = pybullet.getAABB(body, physicsClientId=cid)
+        assert low[2] == pytest.approx(TABLE_TOP, abs=0.01)  # on the table
+        x, y, _ = pybullet.getBasePositionAndOrientation(body, cid)[0]
+        assert math.hypot(x - spot.pose.position[0], y - spot.pose.position[1]) < 0.15
+        assert not pybullet.getClosestPoints(
+            world.object(scene.robot).body_id, body, 0.005, physicsClientId=cid
+        )  # let go
+    finally:
+        world.close()
+
+
+def test_the_stretch_opens_the_fridge_looking_ahead_after_looking_down_into_a_drawer() -> None:
+    scene = breakfast_scene(STRETCH)
+    world = scene.world
+    cid = world.physics.client()
+    try:
+        # the head as a look into the cutlery drawer left it: turned to the arm, down
+        world.set_joint_states(scene.robot, {"joint_head_pan": -1.754, "joint_head_tilt": -0.819})
+        with simulated_robot(world, scene.robot):
+            open_from_front("fridge_body")
+        kitchen = world.object("kitchen")
+        door = kitchen.joint_index["fridge_door_joint"]
+        assert pybullet.getJointState(kitchen.body_id, door, cid)[0] == pytest.approx(1.4, abs=0.01)
+        head = world.object(scene.robot)
+        tilt = pybullet.getJointState(head.body_id, head.joint_index["joint_head_tilt"], cid)[0]
+        assert tilt == pytest.approx(0.0, abs=0.05)  # it looked ahead
     finally:
         world.close()

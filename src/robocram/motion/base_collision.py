@@ -453,6 +453,15 @@ def blockers_at(
     """What the robot (and what it carries) touches standing at ``pose`` (map x, y, yaw),
     by the exact check, without the grid a path needs: a goal that is plainly blocked (a
     stand under a table's edge) costs a millisecond, not a checker. It is put back."""
+    return sorted({other for _, other in blocking_pairs_at(robot, pose, allowed_links)})
+
+
+def blocking_pairs_at(
+    robot: RobotHandle, pose: FloatArray, allowed_links: frozenset[str] = frozenset()
+) -> list[tuple[str, str]]:
+    """``(part of the robot, object/link it touches)`` pairs standing at ``pose``, as
+    :func:`blockers_at` finds them: which of its own links meet what (a torso lowered to
+    look into a drawer puts the arms' shoulders at the opened drawer's height)."""
     world = robot.world
     start = world.pose(robot.name)
     carried = robot.holding()
@@ -461,8 +470,7 @@ def blockers_at(
     x, y, yaw = (float(v) for v in pose)
     world.set_pose(robot.name, Pose((x, y, start.position[2]), quat.from_euler(0.0, 0.0, yaw)))
     try:
-        pairs = _contacts_now(robot, carried, allowed_links, obstacles)
-        return sorted({other for _, other in pairs})
+        return sorted(set(_contacts_now(robot, carried, allowed_links, obstacles)))
     finally:
         world.set_pose(robot.name, start)
 

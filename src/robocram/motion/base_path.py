@@ -19,7 +19,12 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from robocram.execution.failures import NavigationPathBlocked, NavigationPoseUnreachable
-from robocram.motion.base_collision import ESCAPE, BaseCollisionChecker, blockers_at, yaw_of
+from robocram.motion.base_collision import (
+    ESCAPE,
+    BaseCollisionChecker,
+    blocking_pairs_at,
+    yaw_of,
+)
 from robocram.motion.car_timing import time_car_path
 from robocram.motion.errors import MotionError, MotionInputError
 from robocram.motion.joint_limits import joint_limits
@@ -165,12 +170,15 @@ def _refuse_blocked_goal(robot: RobotHandle, goal: Pose, allowed: frozenset[str]
     end = np.array([goal.position[0], goal.position[1], yaw_of(goal)])
     if np.hypot(end[0] - here.position[0], end[1] - here.position[1]) <= ESCAPE:
         return False
-    colliding = blockers_at(robot, end, allowed)
-    if colliding:
+    pairs = blocking_pairs_at(robot, end, allowed)
+    if pairs:
+        colliding = sorted({other for _, other in pairs})
+        own = f"{robot.name}/"
         raise NavigationPoseUnreachable(
             f"{robot.name} at {_shown(end)} would collide with {colliding}",
             target=goal,
             colliding=colliding,
+            robot_links=sorted({p.removeprefix(own) for p, _ in pairs if p.startswith(own)}),
         )
     return True
 

@@ -17,11 +17,12 @@ from robocram.execution.failures import (
     NavigationLowLevelFailure,
     PlanFailure,
 )
+from robocram.knowledge import robot_predicates as rp
 from robocram.knowledge.scene_predicates import CONTAINER, CONTAINER_FRONT, CONTAINER_KIND
 from robocram.knowledge.world_predicates import OBJECT_POSE
 from robocram.logic import current_kb
 from robocram.plans.attempt_log import AttemptLog
-from robocram.plans.basic_actions import navigate, park_arms
+from robocram.plans.basic_actions import look_ahead, navigate, park_arms
 from robocram.plans.containers import Container, close_container, container, open_container
 from robocram.plans.environment_links import environment_link_pose
 from robocram.plans.errors import PlanSetupError
@@ -30,6 +31,7 @@ from robocram.plans.stands import HandleStand, handle_stands, map_pose, yaw_of
 from robocram.tf import Pose
 
 OPEN_RETRIES = 6  # stands tried before opening gives up
+TURNED = 0.05  # [rad | m] a neck joint moved this much by looking ahead was turned away
 NEAR = 0.05  # [m] a base this close to the opening stand after opening stood there
 # closing failures after which the next stand is tried: the arm could not take the handle,
 # or the base cannot stand where it opened the part (a Boxy's wide base meets the drawer
@@ -90,13 +92,26 @@ def opening_stands(part: Container) -> Iterator[HandleStand]:
 def open_from_front(
     name: str, log: AttemptLog | None = None, retries: int = OPEN_RETRIES
 ) -> OpenedContainer:
-    """Go in front of container ``name`` (link or handle) and open it fully.
+    """Go in front of container ``name`` (link or handle) and open it fully. When no stand
+    worked and the head was turned away (down at what the robot last looked at), it looks
+    ahead and the stands are tried once more: a Stretch's lift, rising to the fridge's
+    handle, met its head still turned down at a cutlery drawer.
 
     Raises:
         PlanFailure: the last failure, when no stand within ``retries`` worked.
     """
     log = log if log is not None else AttemptLog()
     part = container(name)
+    try:
+        return _open_from_stands(part, log, retries)
+    except EnvironmentManipulationImpossible:
+        if not _looked_ahead():
+            raise
+    return _open_from_stands(part, log, retries)
+
+
+def _open_from_stands(part: Container, log: AttemptLog, retries: int) -> OpenedContainer:
+    """Open ``part`` from the first of its stands (at most ``retries``) that works."""
     last: PlanFailure | None = None
     for _, stand in zip(range(retries), opening_stands(part), strict=False):
         try:
@@ -114,6 +129,22 @@ def open_from_front(
     if last is None:
         raise PlanSetupError(f"no stand to open {part.link!r} from (retries={retries})")
     raise last
+
+
+def _looked_ahead() -> bool:
+    """Look ahead; whether that moved the neck (it was turned away) by more than
+    :data:`TURNED` on some joint."""
+    robot = current_robot()
+    row = rp.ROBOT_NECK_JOINTS.first(current_kb(), robot=robot.name)
+    joints = tuple(row.joints) if row is not None else ()
+    before = [robot.joint_position(joint) for joint in joints]
+    if not joints or not look_ahead():
+        return False
+    after = [robot.joint_position(joint) for joint in joints]
+    return any(
+        b is not None and c is not None and abs(b - c) > TURNED
+        for b, c in zip(before, after, strict=True)
+    )
 
 
 def close_again(opened: OpenedContainer, log: AttemptLog | None = None) -> None:

@@ -39,6 +39,7 @@ from robocram.plans.stands import (
     planar_pose,
     yaw_of,
 )
+from robocram.plans.torso_up import navigate_torso_up, torso_in_the_way
 from robocram.tf import Pose, PoseStamped, transform_pose
 
 STAND_RETRIES = 3  # stands where picking up is tried before fetching gives up
@@ -64,15 +65,17 @@ def _pick_from(
     grasp: str | None,
     out_of: tuple[str, str] | None = None,
     in_container: bool = False,
+    torso_up: bool = False,
 ) -> Held:
     """Drive to ``stand``, look at the object (``where``, map), detect it again, pick it
     up (lifting it out of ``out_of``, the opened drawer it lies in, if any). A thing seen
     ``in_container`` (one opened for it) that this stand does not show is taken where it
     was seen, if it is still there: :func:`fetch` asks that only after every stand failed
     (a PR2 that took a bowl blind from a drawer of PyCRAM's apartment held it where no
-    stand could put it down; from a later stand that saw it, it delivers)."""
+    stand could put it down; from a later stand that saw it, it delivers). With
+    ``torso_up`` a stand refused for the lowered torso is driven to with it raised."""
     park_arms()
-    navigate(stand)
+    (navigate_torso_up if torso_up else navigate)(stand)
     look_lowering(where)
     wanted = an.object(type=seen.get("type"), name=seen.get("name"))
     try:
@@ -233,12 +236,16 @@ def fetch(
     stands = _stands(seen, where, arm, opened, causes)
     out_of = _drawer_of(opened)
     hidden: list[tuple[Pose, str | None]] = []  # stands that did not show it in its container
+    lowered: list[tuple[Pose, str | None]] = []  # stands refused for the lowered torso only
+    robot = current_robot()
     for pose, use_arm in itertools.islice(stands, stand_retries + MAX_BLOCKED):
         try:
             held = _pick_from(pose, seen, where, use_arm, grasp, out_of)
         except NavigationPoseUnreachable as failure:  # in the way: the next stand, no try
             causes.append(failure)
             log.record("fetch", pose, failure)
+            if torso_in_the_way(robot, failure):
+                lowered.append((pose, use_arm))
             continue
         except PlanFailure as failure:
             causes.append(failure)
@@ -248,6 +255,23 @@ def fetch(
             tries += 1
             if tries >= stand_retries:
                 break
+            continue
+        log.record("fetch", pose, None)
+        return held
+    raised = 0
+    for pose, use_arm in lowered:  # then the torso raised where it alone was in the way
+        if raised >= stand_retries:
+            break
+        try:
+            held = _pick_from(pose, seen, where, use_arm, grasp, out_of, torso_up=True)
+        except NavigationPoseUnreachable as failure:
+            causes.append(failure)
+            log.record("fetch", pose, failure)
+            continue
+        except PlanFailure as failure:
+            causes.append(failure)
+            log.record("fetch", pose, failure)
+            raised += 1
             continue
         log.record("fetch", pose, None)
         return held

@@ -82,9 +82,38 @@ class KnownRobot:
             return None
         return None if row is None else row.value
 
+    def joint_position(self, joint: str) -> float | None:
+        """The value [m | rad] of the robot's ``joint`` now; None without a world to ask."""
+        try:
+            row = JOINT_STATE.first(current_kb(), robot=self.name, joint=joint)
+        except UnknownPredicateError:
+            return None
+        return None if row is None else row.value
+
     def has_torso(self) -> bool:
         """Whether the robot has a torso joint."""
         return rp.ROBOT_TORSO_LINK_JOINT.holds(current_kb(), robot=self.name)
+
+    def torso_carried_links(self) -> set[str]:
+        """The links the torso joint moves (its child and every link below it); empty
+        without a torso. A Boxy's arms hang on its torso, its neck on the base."""
+        kb = current_kb()
+        torso = rp.ROBOT_TORSO_LINK_JOINT.first(kb, robot=self.name)
+        if torso is None:
+            return set()
+        below: dict[str, list[str]] = {}
+        for row in rp.JOINT_PARENT.answers(kb, robot=self.name):
+            child = rp.JOINT_CHILD.first(kb, robot=self.name, joint=row.joint)
+            if child is not None:
+                below.setdefault(row.link, []).append(child.link)
+        first = rp.JOINT_CHILD.first(kb, robot=self.name, joint=torso.joint)
+        carried, todo = set(), [first.link if first is not None else torso.link]
+        while todo:
+            link = todo.pop()
+            if link not in carried:
+                carried.add(link)
+                todo += below.get(link, [])
+        return carried
 
     def tool_frame(self, arm: str) -> str:
         """The tool frame of ``arm``."""

@@ -149,8 +149,12 @@ def _held_out_alone(
     """Bring the tucked ``held`` out and put it at ``spot``; record the trip (with the
     things in ``trip`` put before on it); the failures. An arm that cannot come out
     still tries the stands from which it reaches the spot by IK."""
-    with contextlib.suppress(PlanFailure):
+    try:
         _hold_out(held, out, spot)
+    except PlanFailure:  # the other arm, left out by a failed fetch, may be in the way
+        with contextlib.suppress(PlanFailure):
+            park_arms()
+            _hold_out(held, out, spot)
     try:
         _put(held, spot, done)
     except PlanFailure as failure:

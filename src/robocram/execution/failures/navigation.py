@@ -17,6 +17,7 @@ class NavigationPoseUnreachable(NavigationLowLevelFailure):
 
     target: object | None = None
     colliding: list[str] | None = None
+    robot_links: list[str] | None = None  # the robot's own links that would collide there
     summary = "the navigation target is unreachable"
     hint = "sample another base pose from the location designator"
 
