@@ -1,0 +1,88 @@
+"""Calls of small guard predicates compiled into their callers answer as the calls do.
+
+Each program runs twice: as written, and with the guards declared dynamic (never
+compiled in), which is the reference.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+
+from robocram.logic import KnowledgeBase, PrologInstantiationError
+
+PROGRAM = """
+split([], _, [], []).
+split([X|L], X, L1, L2) :- !, split(L, X, L1, L2).
+split([X|L], Y, [X|L1], L2) :- before(X, Y), !, split(L, Y, L1, L2).
+split([X|L], Y, L1, [X|L2]) :- before(Y, X), !, split(L, Y, L1, L2).
+before(pair(A, _), pair(B, _)) :- A < B.
+wrap(X, W) :- box(X, W), W = box(_, _).
+wrap(X, none(X)).
+box(X, box(X, Y)) :- Y = X.
+twice(X, Y) :- same(X, Y), X == Y.
+twice(_, no).
+same(Z, Z).
+first(X, R) :- guard(X), R = yes.
+first(_, no).
+guard(X) :- X > 0, !.
+"""
+GUARDS = ":- dynamic(before/2).\n:- dynamic(box/2).\n:- dynamic(same/2).\n:- dynamic(guard/1).\n"
+QUERIES = [
+    ("split([pair(1,b),pair(5,c),pair(3,x)], pair(3,x), A, B)", "A"),
+    ("split([pair(3,a),pair(1,b),pair(5,c)], pair(3,x), A, B)", "B"),
+    ("split([P, pair(1,b)], pair(3,x), A, B)", "A"),
+    ("wrap(1, W)", "W"),
+    ("wrap(W0, W), W0 = 2", "W"),
+    ("twice(a, Y)", "Y"),
+    ("twice(f(X), f(1))", "X"),
+    ("first(1, R)", "R"),
+    ("first(-1, R)", "R"),
+]
+
+
+def answers(kb: KnowledgeBase, text: str, key: str) -> list[str]:
+    """The answers for `key`, asked often enough for the procedures to be compiled."""
+    runs = [[repr(a[key]) for a in kb.query(text)] for _ in range(5)]
+    assert all(r == runs[0] for r in runs)
+    return runs[0]
+
+
+def pair() -> tuple[KnowledgeBase, KnowledgeBase]:
+    inlined, reference = KnowledgeBase(), KnowledgeBase()
+    inlined.consult(PROGRAM, group="p")
+    reference.consult(GUARDS + PROGRAM, group="p")
+    return inlined, reference
+
+
+def test_inlined_guards_answer_as_the_calls() -> None:
+    inlined, reference = pair()
+    for text, key in QUERIES:
+        assert answers(inlined, text, key) == answers(reference, text, key), text
+    assert answers(inlined, QUERIES[0][0], "A") == ["[pair(1,b)]"]
+    assert answers(inlined, "wrap(1, W)", "W") == ["box(1,1)", "none(1)"]
+    assert answers(inlined, "first(1, R)", "R") == ["'yes'", "'no'"]  # the guard's cut is its own
+    # The guards were compiled in: the callers' code reads the knowledge base's generation.
+    for name, arity in [("split", 4), ("wrap", 2), ("twice", 2)]:
+        proc: Any = inlined._preds[name, arity].proc
+        assert proc is not None and "_generation" in proc.__code__.co_names, name
+    proc = inlined._preds["first", 2].proc  # a guard with a cut stays a call
+    assert proc is not None and "_generation" not in proc.__code__.co_names
+
+
+def test_a_changed_guard_is_called_again() -> None:
+    inlined = KnowledgeBase()
+    inlined.consult(PROGRAM, group="p", extendable=["before/2"])
+    assert answers(inlined, QUERIES[0][0], "A") == ["[pair(1,b)]"]
+    proc = inlined._preds[("split", 4)].proc
+    inlined.consult("before(pair(A, _), pair(B, _)) :- A > B.", group="q")
+    assert inlined._preds[("split", 4)].proc is proc  # the caller's code is kept
+    assert answers(inlined, QUERIES[0][0], "A") == ["[pair(1,b), pair(5,c)]"]
+
+
+def test_an_error_in_an_inlined_guard_is_raised() -> None:
+    for kb in pair():
+        answers(kb, QUERIES[0][0], "A")
+        with pytest.raises(PrologInstantiationError):
+            list(kb.query("split([pair(_,a)], pair(3,x), A, B)"))
