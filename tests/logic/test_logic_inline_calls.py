@@ -12,7 +12,7 @@ import pytest
 
 from robocram.logic import KnowledgeBase, PrologInstantiationError
 
-PROGRAM = """
+PROGRAM = r"""
 split([], _, [], []).
 split([X|L], X, L1, L2) :- !, split(L, X, L1, L2).
 split([X|L], Y, [X|L1], L2) :- before(X, Y), !, split(L, Y, L1, L2).
@@ -27,6 +27,8 @@ same(Z, Z).
 first(X, R) :- guard(X), R = yes.
 first(_, no).
 guard(X) :- X > 0, !.
+nth(N, T, R) :- pick(N, T, R), R \== b.
+pick(N, T, A) :- arg(N, T, A), !.
 """
 GUARDS = ":- dynamic(before/2).\n:- dynamic(box/2).\n:- dynamic(same/2).\n:- dynamic(guard/1).\n"
 QUERIES = [
@@ -39,6 +41,7 @@ QUERIES = [
     ("twice(f(X), f(1))", "X"),
     ("first(1, R)", "R"),
     ("first(-1, R)", "R"),
+    ("nth(2, f(a, b, c), R)", "R"),
 ]
 
 
@@ -64,10 +67,10 @@ def test_inlined_guards_answer_as_the_calls() -> None:
     assert answers(inlined, "wrap(1, W)", "W") == ["box(1,1)", "none(1)"]
     assert answers(inlined, "first(1, R)", "R") == ["'yes'", "'no'"]  # the guard's cut is its own
     # The guards were compiled in: the callers' code reads the knowledge base's generation.
-    for name, arity in [("split", 4), ("wrap", 2), ("twice", 2)]:
+    for name, arity in [("split", 4), ("wrap", 2), ("twice", 2), ("first", 2)]:
         proc: Any = inlined._preds[name, arity].proc
         assert proc is not None and "_generation" in proc.__code__.co_names, name
-    proc = inlined._preds["first", 2].proc  # a guard with a cut stays a call
+    proc = inlined._preds["nth", 3].proc  # arg/3 may enumerate: its cut stays
     assert proc is not None and "_generation" not in proc.__code__.co_names
 
 

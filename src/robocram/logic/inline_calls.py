@@ -4,7 +4,7 @@
 costs a trip round the machine (a continuation cell, the goal dispatch, the callee's
 procedure frame) for what is one comparison. A call leading a clause body (after its
 inline goals) to a static predicate of one clause whose body is only inline goals
-(tests, comparisons, `is/2`, `=/2`; no cut, no call) is, renamed apart, the same as
+(tests, comparisons, `is/2`, `=/2`, cuts that do nothing; no call) is, renamed apart, the same as
 unifying the callee's head arguments with the call's and running that body: those goals
 are compiled in place, as a head and its leading tests are.
 
@@ -91,13 +91,30 @@ def expand_call(table: CalleeTable, goal: Value, base: int) -> Expansion | None:
     if len(clauses) != 1 or pred.erased:
         return None
     clause = clauses[0]
-    body = list(reversed(clause.body_rev))
-    if len(body) > _MAX_GOALS or not all(inlinable(g) for g in body):
+    body = _without_cuts(list(reversed(clause.body_rev)))
+    if body is None or len(body) > _MAX_GOALS or not all(inlinable(g) for g in body):
         return None
     head = [_rename(h, base) for h in clause.head]
     goals: list[Value] = [Tmpl("=", (h, a)) for h, a in zip(head, args, strict=True)]
     goals += [_rename(g, base) for g in body]
     return table._generation, goals, max_slot([*clause.head, *body])
+
+
+def _without_cuts(body: list[Value]) -> list[Value] | None:
+    """The body without its cuts, when they do nothing; else None.
+
+    The one clause leaves no alternative to cut, and the goals before a cut leave no
+    choicepoint: all are deterministic, except `arg/3` with N unbound, which
+    enumerates when it runs as a call (a goal that could not be compiled in).
+    """
+    out: list[Value] = []
+    for g in body:
+        if g == "!":
+            if any(term_parts(e) is not None and term_parts(e)[0] == "arg" for e in out):  # type: ignore[index]
+                return None
+            continue
+        out.append(g)
+    return out
 
 
 def _rename(t: Value, base: int) -> Value:
