@@ -29,8 +29,23 @@ first(_, no).
 guard(X) :- X > 0, !.
 nth(N, T, R) :- pick(N, T, R), R \== b.
 pick(N, T, A) :- arg(N, T, A), !.
+use_total(L, S) :- total(L, S0), S is S0 * 2.
+total(L, S) :- sum_acc(L, 0, S).
+sum_acc([], S, S).
+sum_acc([X|Xs], A, S) :- B is A + X, sum_acc(Xs, B, S).
+choose(X, R) :- once_p(X), R = one.
+choose(_, two).
+once_p(X) :- p(X), !.
+p(1).
+p(2).
+either(X, R) :- maybe(X), R = yes.
+either(_, no).
+maybe(X) :- ( X > 0, ! ; X < -5 ).
 """
-GUARDS = ":- dynamic(before/2).\n:- dynamic(box/2).\n:- dynamic(same/2).\n:- dynamic(guard/1).\n"
+GUARDS = "".join(
+    f":- dynamic({p}).\n"
+    for p in ["before/2", "box/2", "same/2", "guard/1", "pick/3", "total/2", "once_p/1", "maybe/1"]
+)
 QUERIES = [
     ("split([pair(1,b),pair(5,c),pair(3,x)], pair(3,x), A, B)", "A"),
     ("split([pair(3,a),pair(1,b),pair(5,c)], pair(3,x), A, B)", "B"),
@@ -42,6 +57,11 @@ QUERIES = [
     ("first(1, R)", "R"),
     ("first(-1, R)", "R"),
     ("nth(2, f(a, b, c), R)", "R"),
+    ("use_total([1, 2, 3], S)", "S"),
+    ("choose(X, R)", "R"),
+    ("either(3, R)", "R"),
+    ("either(-9, R)", "R"),
+    ("either(-1, R)", "R"),
 ]
 
 
@@ -67,11 +87,17 @@ def test_inlined_guards_answer_as_the_calls() -> None:
     assert answers(inlined, "wrap(1, W)", "W") == ["box(1,1)", "none(1)"]
     assert answers(inlined, "first(1, R)", "R") == ["'yes'", "'no'"]  # the guard's cut is its own
     # The guards were compiled in: the callers' code reads the knowledge base's generation.
-    for name, arity in [("split", 4), ("wrap", 2), ("twice", 2), ("first", 2)]:
+    assert answers(inlined, "use_total([1, 2, 3], S)", "S") == ["12"]
+    assert answers(inlined, "choose(X, R)", "R") == ["'one'", "'two'"]  # once_p's cut is its own
+    assert answers(inlined, "either(3, R)", "R") == ["'yes'", "'no'"]
+    for name, arity in [("split", 4), ("wrap", 2), ("twice", 2), ("first", 2), ("use_total", 2)]:
         proc: Any = inlined._preds[name, arity].proc
         assert proc is not None and "_generation" in proc.__code__.co_names, name
-    proc = inlined._preds["nth", 3].proc  # arg/3 may enumerate: its cut stays
-    assert proc is not None and "_generation" not in proc.__code__.co_names
+    # arg/3 may enumerate, a cut after a call or in a control construct is not a no-op:
+    # those stay calls.
+    for name, arity in [("nth", 3), ("choose", 2), ("either", 2)]:
+        proc = inlined._preds[name, arity].proc
+        assert proc is not None and "_generation" not in proc.__code__.co_names, name
 
 
 def test_a_changed_guard_is_called_again() -> None:

@@ -60,6 +60,7 @@ class ClauseCode(Protocol):
 
 ClauseFn = Callable[[tuple[Value, ...], list[Var], int, Cont, list[ChoicePoint]], Cont]
 
+_INLINE_DEPTH = 2  # calls compiled into calls compiled in: each doubles the rest's code
 _CONTROL = {(",", 2), (";", 2), ("->", 2), ("*->", 2), ("\\+", 1)}
 
 
@@ -98,6 +99,7 @@ class ClauseWriter(GoalWriter):
 
     callees: CalleeTable | None = None  # a procedure's: calls to inline (see inline_call)
     next_slot = 0  # the first slot number no goal of the clause uses
+    inlined = 0  # calls compiled in around the goal being written
 
     def clause_source(self, clause: ClauseCode) -> str:
         """Generate `make(k0, k1, ...)` returning the clause function."""
@@ -314,11 +316,12 @@ class ClauseWriter(GoalWriter):
         return True
 
     def inline_call(self, clause: ClauseCode, body: list[Value]) -> bool:
-        """A call of a small guard predicate first in `body`: its goals compiled in place
+        """A call of a small one-clause predicate first in `body`: its goals in its place
         (see inline_calls.py), while the knowledge base is as it was; else the call."""
-        if self.callees is None:
+        if self.callees is None or self.inlined >= _INLINE_DEPTH:
             return False
-        found = expand_call(self.callees, body[0], self.next_slot)
+        own = (clause.name, len(clause.head))
+        found = expand_call(self.callees, body[0], self.next_slot, own)
         if found is None:
             return False
         generation, goals, used = found
@@ -331,7 +334,9 @@ class ClauseWriter(GoalWriter):
                 self.emit("else:", 1)
             self.base += 1
             if branch == "inline":
+                self.inlined += 1
                 self.body_code(clause, [*goals, *body[1:]])
+                self.inlined -= 1
             else:
                 callees, self.callees = self.callees, None  # the call itself, not again
                 self.body_code(clause, body)

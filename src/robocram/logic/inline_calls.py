@@ -1,12 +1,13 @@
-"""Calls of small guard predicates compiled into their caller's procedure.
+"""Calls of small one-clause predicates compiled into their caller's procedure.
 
 `split(...) :- before(X, Y), !, ...` with `before(pair(A, _), pair(B, _)) :- A < B.`
 costs a trip round the machine (a continuation cell, the goal dispatch, the callee's
 procedure frame) for what is one comparison. A call leading a clause body (after its
-inline goals) to a static predicate of one clause whose body is only inline goals
-(tests, comparisons, `is/2`, `=/2`, cuts that do nothing; no call) is, renamed apart, the same as
-unifying the callee's head arguments with the call's and running that body: those goals
-are compiled in place, as a head and its leading tests are.
+inline goals) to a static predicate of one clause (no control construct in its body,
+no cut but those that do nothing) is, renamed apart, the same as unifying the callee's
+head arguments with the call's and running that body: its inline goals are compiled
+in place, as a head and its leading tests are, and its calls join the caller's
+continuation (a wrapper such as `mult(A, D, B) :- mult(A, D, 0, B).` costs no call).
 
 The callee can change after the caller is compiled (assert, consult, abolish): the
 inlined code runs only while the knowledge base's generation is the one it was compiled
@@ -26,6 +27,7 @@ __all__ = ["CalleeTable", "Expansion", "expand_call", "max_slot"]
 
 USER_KIND = 0  # predicate.USER (not imported: predicate imports the procedure compiler)
 _MAX_GOALS = 8  # a longer callee body stays a call
+_CONTROL = {(",", 2), (";", 2), ("->", 2), ("*->", 2), ("\\+", 1)}  # transparent to cut
 
 
 class _Clause(Protocol):
@@ -77,11 +79,13 @@ def max_slot(templates: list[Value]) -> int:
     return max(found) + 1 if found else 0
 
 
-def expand_call(table: CalleeTable, goal: Value, base: int) -> Expansion | None:
-    """The goals a call of a small guard predicate stands for, its slots renamed from
-    `base` on; None when `goal` is not such a call."""
+def expand_call(
+    table: CalleeTable, goal: Value, base: int, caller: tuple[str, int]
+) -> Expansion | None:
+    """The goals a call of a small predicate stands for, its slots renamed from `base`
+    on; None when `goal` is not such a call (or calls the `caller` itself)."""
     parts = term_parts(goal)
-    if parts is None or type(goal) is not Tmpl:
+    if parts is None or type(goal) is not Tmpl or (parts[0], len(parts[1])) == caller:
         return None
     name, args = parts
     pred = table._preds.get((name, len(args)))
@@ -92,7 +96,7 @@ def expand_call(table: CalleeTable, goal: Value, base: int) -> Expansion | None:
         return None
     clause = clauses[0]
     body = _without_cuts(list(reversed(clause.body_rev)))
-    if body is None or len(body) > _MAX_GOALS or not all(inlinable(g) for g in body):
+    if body is None or len(body) > _MAX_GOALS:
         return None
     head = [_rename(h, base) for h in clause.head]
     goals: list[Value] = [Tmpl("=", (h, a)) for h, a in zip(head, args, strict=True)]
@@ -101,20 +105,30 @@ def expand_call(table: CalleeTable, goal: Value, base: int) -> Expansion | None:
 
 
 def _without_cuts(body: list[Value]) -> list[Value] | None:
-    """The body without its cuts, when they do nothing; else None.
+    """The body without its cuts, when they do nothing; None when it has another cut or
+    a control construct (which a cut inside would make cut the caller's clause).
 
-    The one clause leaves no alternative to cut, and the goals before a cut leave no
-    choicepoint: all are deterministic, except `arg/3` with N unbound, which
-    enumerates when it runs as a call (a goal that could not be compiled in).
+    The one clause leaves no alternative to cut, and inline goals before a cut leave
+    no choicepoint, except `arg/3` with N unbound, which enumerates when it runs as a
+    call (a goal that could not be compiled in). Calls (after those goals) leave the
+    cut barrier alone: they are opaque to cut.
     """
     out: list[Value] = []
     for g in body:
+        parts = term_parts(g)
+        if parts is not None and (parts[0], len(parts[1])) in _CONTROL:
+            return None
         if g == "!":
-            if any(term_parts(e) is not None and term_parts(e)[0] == "arg" for e in out):  # type: ignore[index]
+            if not all(inlinable(e) and _name(e) != "arg" for e in out):
                 return None
             continue
         out.append(g)
     return out
+
+
+def _name(g: Value) -> str | None:
+    parts = term_parts(g)
+    return parts[0] if parts is not None else None
 
 
 def _rename(t: Value, base: int) -> Value:
