@@ -328,7 +328,8 @@ class ClauseWriter(GoalWriter):
         self.next_slot += used
         saved = (set(self.known), set(self.dereffed), self.fail, self.base, self.state())
         table = self.const(self.callees)
-        self.emit(f"if {table}._generation == {generation}:", 1)
+        # a constant, not a literal: the same source at every generation (one factory)
+        self.emit(f"if {table}._generation == {self.const(generation)}:", 1)
         for branch in ("inline", "call"):
             if branch == "call":
                 self.emit("else:", 1)
