@@ -73,7 +73,7 @@ class Pred:
     def warm_up(self, callees: CalleeTable | None = None) -> None:
         """Count a call; on the third, compile the switching procedure if it qualifies.
 
-        `callees`: the knowledge base whose small guard predicates the procedure may
+        `callees`: the knowledge base whose small one-clause predicates the procedure may
         compile in (see inline_calls.py); None for a predicate that several share.
         """
         self.warm += 1

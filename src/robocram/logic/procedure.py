@@ -73,7 +73,7 @@ def compile_procedure(
     With `owner` (the predicate), a call with the first argument unbound that would try
     more than SCAN_AFTER clauses is handed back to the machine, which resumes each clause
     in O(1) instead of re-entering the procedure. With `callees` (the knowledge base),
-    calls of small guard predicates are compiled in (see inline_calls.py).
+    calls of small one-clause predicates are compiled in (see inline_calls.py).
     """
     clauses = list(stored)
     if not 1 <= len(clauses) <= MAX_CLAUSES:
