@@ -76,8 +76,14 @@ def _power(a: Number, b: Number) -> Number:
     return float(a) ** float(b)
 
 
+def _trunc_div(a: int, b: int) -> int:
+    """`a // b` truncated toward zero, exact for big integers (no float on the way)."""
+    q = abs(a) // abs(b)
+    return q if (a < 0) == (b < 0) else -q
+
+
 def _rem(a: int, b: int) -> int:
-    return int(math.fmod(a, b))
+    return a - b * _trunc_div(a, b)
 
 
 def _round(x: Number) -> int:
@@ -95,7 +101,7 @@ _BINARY: dict[str, Callable[[Value, Value], Number]] = {
     "-": lambda a, b: a - b,
     "*": lambda a, b: a * b,
     "/": _divide,
-    "//": _int_only("//", lambda a, b: int(a / b) if (a < 0) != (b < 0) else a // b),
+    "//": _int_only("//", _trunc_div),
     "mod": _int_only("mod", lambda a, b: a % b),
     "rem": _int_only("rem", _rem),
     "div": _int_only("div", lambda a, b: a // b),

@@ -34,6 +34,7 @@ from robocram.logic.goal_writer import (
     slots_in,
     term_parts,
 )
+from robocram.logic.inline_calls import CalleeTable, expand_call, max_slot
 from robocram.logic.keys import pred_key
 from robocram.logic.template import Slot, Tmpl
 from robocram.logic.terms import Var
@@ -59,6 +60,7 @@ class ClauseCode(Protocol):
 
 ClauseFn = Callable[[tuple[Value, ...], list[Var], int, Cont, list[ChoicePoint]], Cont]
 
+_INLINE_DEPTH = 2  # calls compiled into calls compiled in: each doubles the rest's code
 _CONTROL = {(",", 2), (";", 2), ("->", 2), ("*->", 2), ("\\+", 1)}
 
 
@@ -95,6 +97,10 @@ def _is_true(g: Value) -> bool:
 class ClauseWriter(GoalWriter):
     """Emits the Python source of a clause: head, leading inline goals, continuation."""
 
+    callees: CalleeTable | None = None  # a procedure's: calls to inline (see inline_call)
+    next_slot = 0  # the first slot number no goal of the clause uses
+    inlined = 0  # calls compiled in around the goal being written
+
     def clause_source(self, clause: ClauseCode) -> str:
         """Generate `make(k0, k1, ...)` returning the clause function."""
         arity = len(clause.head)
@@ -117,6 +123,7 @@ class ClauseWriter(GoalWriter):
         self.known = set()
         self.dereffed = set()
         body = list(reversed(clause.body_rev))
+        self.next_slot = max_slot([*clause.head, *body])
         early = [r for r in map(rejection, guard_goals(body)) if r is not None]
         for i, p in enumerate(clause.head):
             if i == 0 and switched and type(p) is Tmpl:
@@ -149,6 +156,8 @@ class ClauseWriter(GoalWriter):
         while body and self.inline_goal(body[0]):
             body.pop(0)
         if body and self.inline_if(clause, body):
+            return
+        if body and self.inline_call(clause, body):
             return
         held = set(self.known)  # the slots that hold a value before the continuation
         self.fresh(body, 1)
@@ -303,6 +312,38 @@ class ClauseWriter(GoalWriter):
                 set(saved[1]),
                 *saved[2:4],
             )
+            self.restore(saved[4])
+        return True
+
+    def inline_call(self, clause: ClauseCode, body: list[Value]) -> bool:
+        """A call of a small one-clause predicate first in `body`: its goals in its place
+        (see inline_calls.py), while the knowledge base is as it was; else the call."""
+        if self.callees is None or self.inlined >= _INLINE_DEPTH:
+            return False
+        own = (clause.name, len(clause.head))
+        found = expand_call(self.callees, body[0], self.next_slot, own)
+        if found is None:
+            return False
+        generation, goals, used = found
+        self.next_slot += used
+        saved = (set(self.known), set(self.dereffed), self.fail, self.base, self.state())
+        table = self.const(self.callees)
+        # a constant, not a literal: the same source at every generation (one factory)
+        self.emit(f"if {table}._generation == {self.const(generation)}:", 1)
+        for branch in ("inline", "call"):
+            if branch == "call":
+                self.emit("else:", 1)
+            self.base += 1
+            if branch == "inline":
+                self.inlined += 1
+                self.body_code(clause, [*goals, *body[1:]])
+                self.inlined -= 1
+            else:
+                callees, self.callees = self.callees, None  # the call itself, not again
+                self.body_code(clause, body)
+                self.callees = callees
+            self.known, self.dereffed = set(saved[0]), set(saved[1])
+            self.fail, self.base = saved[2], saved[3]
             self.restore(saved[4])
         return True
 

@@ -29,6 +29,7 @@ class Database(Protocol):
     _functions: dict[str, Callable[..., object]]
     _lock: threading.RLock
     _flags: dict[str, Value]
+    _generation: int
 
     def assert_clause(self, clause: Value, front: bool = False) -> None: ...
 

@@ -18,6 +18,7 @@ from collections.abc import Callable
 from typing import Any
 
 from robocram.logic.arith import BINARY_FUNCTIONS, apply_binary, evaluate
+from robocram.logic.arith_inline import INT_FAST, int_fast
 from robocram.logic.code_cache import compiled
 from robocram.logic.function_factory import FunctionFactory
 from robocram.logic.functor_arg import arg_check, fresh_vars, functor_make
@@ -475,6 +476,8 @@ class GoalWriter:
                     return None
                 if name in _ARITH_OPS:
                     return f"({a} {_ARITH_OPS[name]} {b})"
+                if name in INT_FAST:
+                    return int_fast(name, a, b, self.temp(), self.temp(), self.const(name))
                 return f"ap2({self.const(name)}, {a}, {b})"
             if any(i not in self.known for i in slots_in(t, [])):
                 return None

@@ -35,6 +35,7 @@ from robocram.logic.errors import (
     PrologTypeError,
     UnknownPredicateError,
 )
+from robocram.logic.fact_groups import LIBRARY_OWNER
 from robocram.logic.inline_goal import CALL, DISJ, IFTHEN, INLINE, ITE, MARKS, NOT, SEQ
 from robocram.logic.limits import PROC_LOOPS, Budget
 from robocram.logic.occurs import unify_checked
@@ -235,7 +236,9 @@ class Machine:
                         cont = backtrack(cps)
                         continue
                     if p.warm < WARM_CALLS:
-                        p.warm_up()
+                        # a library or system predicate's code may serve other bases
+                        own = not p.system and p.owner != LIBRARY_OWNER
+                        p.warm_up(self.kb if own else None)
                     cont = self._call_clauses(p, args, nxt, cps)
                     if cont is False:
                         cont = backtrack(cps)

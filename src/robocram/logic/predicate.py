@@ -7,6 +7,7 @@ from typing import Any
 
 from robocram.logic.bulk import paused_gc
 from robocram.logic.clause import Clause
+from robocram.logic.inline_calls import CalleeTable
 from robocram.logic.procedure import Procedure, compile_procedure
 from robocram.logic.terms import Term, Var
 from robocram.logic.value import Value
@@ -69,11 +70,15 @@ class Pred:
         # clauses from lo may start at i (retracting the first clause again and again).
         self.skip: tuple[list[Clause], int, int] | None = None
 
-    def warm_up(self) -> None:
-        """Count a call; on the third, compile the switching procedure if it qualifies."""
+    def warm_up(self, callees: CalleeTable | None = None) -> None:
+        """Count a call; on the third, compile the switching procedure if it qualifies.
+
+        `callees`: the knowledge base whose small one-clause predicates the procedure may
+        compile in (see inline_calls.py); None for a predicate that several share.
+        """
         self.warm += 1
         if self.warm == WARM_CALLS and not self.dynamic and self.pyfn is None:
-            self.proc = compile_procedure(self.clauses, self)
+            self.proc = compile_procedure(self.clauses, self, callees)
 
     def copy(self) -> Pred:
         """A new predicate with the same definition (its own clause list and no code)."""

@@ -31,6 +31,7 @@ from robocram.logic.choicepoints import PROC, ChoicePoint, Cont
 from robocram.logic.codegen import ClauseCode, ClauseWriter
 from robocram.logic.exclusive_guards import excludes
 from robocram.logic.goal_writer import function_factory
+from robocram.logic.inline_calls import CalleeTable
 from robocram.logic.limits import PROC_LOOPS
 from robocram.logic.template import Slot, Tmpl
 from robocram.logic.terms import Term, Var
@@ -64,12 +65,15 @@ class Scan:
         self.pred = pred
 
 
-def compile_procedure(stored: Sequence[ClauseCode], owner: object = None) -> Procedure | None:
+def compile_procedure(
+    stored: Sequence[ClauseCode], owner: object = None, callees: CalleeTable | None = None
+) -> Procedure | None:
     """Return the procedure of a static predicate's clauses, or None when not worth it.
 
     With `owner` (the predicate), a call with the first argument unbound that would try
     more than SCAN_AFTER clauses is handed back to the machine, which resumes each clause
-    in O(1) instead of re-entering the procedure.
+    in O(1) instead of re-entering the procedure. With `callees` (the knowledge base),
+    calls of small one-clause predicates are compiled in (see inline_calls.py).
     """
     clauses = list(stored)
     if not 1 <= len(clauses) <= MAX_CLAUSES:
@@ -79,6 +83,7 @@ def compile_procedure(stored: Sequence[ClauseCode], owner: object = None) -> Pro
         return None
     try:
         writer = _ProcWriter(clauses, owner)
+        writer.callees = callees
         writer.procedure(branches)
         head = "def proc(args, trail, nxt, cps, start):"
         source = "\n".join([head, *writer.lines, ""])
