@@ -53,3 +53,25 @@ def test_a_container_that_stayed_shut_is_named_with_why() -> None:
     clause = _stayed_shut(log)
     assert clause.startswith(" (drawer_3 stayed shut: EnvironmentManipulationImpossible: ")
     assert "the palm meets the counter's top" in clause
+
+
+def test_a_camera_is_measured_over_the_floor_from_a_raised_base_frame() -> None:
+    """Centauro's base frame, its pelvis, stands 1.03 m up: its camera 0.55 m over it is
+    1.58 m over the floor, over every place, and was said to be below them all."""
+    desc = load_description("pr2")
+    cameras = tuple(replace(c, minimal_height=0.4, maximal_height=0.5) for c in desc.cameras)
+    scene = kitchen_scene(replace(desc, cameras=cameras))
+    try:
+        robot = scene.world.robot(scene.robot)
+        pose = scene.world.pose(robot)
+        x, y, _ = pose.position
+        with simulated_robot(scene.world, scene.robot):
+            assert "0.50 m up at most" in camera_below(current_robot(), PLACES)
+            scene.world.set_pose(robot, replace(pose, position=(x, y, 0.6)))
+            body = robot.body_id
+            client = scene.world.physics.client()
+            raised = pybullet.getBasePositionAndOrientation(body, physicsClientId=client)[0]
+            assert raised[2] == pytest.approx(0.6, abs=1e-6)
+            assert camera_below(current_robot(), PLACES) == ""  # 1.10 m: over the table
+    finally:
+        scene.world.close()

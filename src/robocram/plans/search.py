@@ -35,6 +35,7 @@ from robocram.plans.culprits import blamed, culprit_clause
 from robocram.plans.environment_links import environment_link_pose
 from robocram.plans.errors import SearchExhausted
 from robocram.plans.known_robot import KnownRobot, current_robot
+from robocram.plans.stands import map_pose
 from robocram.tf import PoseStamped
 
 POSES_PER_PLACE = 2  # CRAM retries a search location a couple of times
@@ -79,11 +80,14 @@ def camera_below(robot: KnownRobot, places: list[Place]) -> str:
     """A clause saying that the robot's camera, at its highest, is lower than every place in
     ``places`` (their link frames), so it cannot see onto them; empty otherwise, and for a
     camera a neck arm moves. Alex's head, 0.71 m up, searched counters 0.83 m high and
-    said only that it saw no mug."""
+    said only that it saw no mug. The heights are the base frame's (over the floor when it
+    lies on it); Centauro's pelvis, its base frame, stands 1.03 m up: its camera 1.58 m up
+    was said to be 0.55 m up, below the drawers it had failed to open."""
     kb = current_kb()
-    heights = [f.height for f in CAMERA_MAXIMAL_HEIGHT.answers(kb, robot=robot.name)]
+    base_z = map_pose(robot.base_frame()).position[2]
+    heights = [base_z + f.height for f in CAMERA_MAXIMAL_HEIGHT.answers(kb, robot=robot.name)]
     moved = {row.arm for row in ARM_JOINTS.answers(kb, robot=robot.name)} - set(robot.arms())
-    if not heights or not places or moved or min(heights) <= 0.0:
+    if not heights or not places or moved or min(heights) <= base_z:
         return ""  # none, or an arm carries the camera (the Donbot's wrist): it rises with it
     frames = [environment_link_pose(p.environment, p.link, "a place") for p in places]
     lowest = min(frame.position[2] for frame in frames)

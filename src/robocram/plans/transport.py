@@ -103,7 +103,11 @@ def transport(
         inside = _container_it_was_in(searched)
         held = fetch(seen, arm, grasp, stand_retries, log, opened=inside)
     with sub_task("delivering"):
-        spot = deliver(held, target, held.arm, placing_stands, place_retries, log)
+        # reach stands after the held ones: an arm holding the thing at the spot's side
+        # may not lower it there (its joint limits), and nearer stands meet the table
+        spot = deliver(
+            held, target, held.arm, placing_stands, place_retries, log, reach_stands=True
+        )
     with sub_task("closing"):
         for opened in reversed(searched.opened):
             close_again(opened, log)
