@@ -9,7 +9,9 @@ door is where the tool frame is along its line (``CarriedJoint.line``), across b
 The drafted Fetch's steps were once taken arm first where its base could not drive first:
 the arm went to where it would be once the base had moved, off the step's line, and the
 door stayed back with the fingers 12-15 mm in its handle (7 findings); a step whose base
-cannot move first now fails and a shorter one is tried.
+cannot move first now fails and a shorter one is tried. A gripper's motion that starts
+with its fingers on the handle stores those contacts bounded as the approach that put them
+there did (Boxy's fingers sat 4 mm in the handle, within the hand's 5 mm).
 """
 
 from __future__ import annotations
@@ -62,11 +64,12 @@ def test_the_whole_door_audit_is_clean(door_run: tuple[float, AuditReport]) -> N
     assert report.clean, report.summary_lines()
 
 
-def test_the_fetch_opens_and_closes_the_door_with_its_fingers_out_of_the_handle(
-    tmp_path: Path,
+@pytest.mark.parametrize("robot", ["boxy", FETCH], ids=["boxy", "fetch"])
+def test_other_robots_open_and_close_the_door_with_their_fingers_bounded(
+    robot: str, tmp_path: Path
 ) -> None:
     db_path = tmp_path / "runs.db"
-    scene = breakfast_scene(FETCH)
+    scene = breakfast_scene(robot)
     world = scene.world
     with trace_to(db_path, world=world), simulated_robot(world, scene.robot):
         opened = open_from_front("fridge_body")
@@ -79,4 +82,6 @@ def test_the_fetch_opens_and_closes_the_door_with_its_fingers_out_of_the_handle(
     with TraceDatabase(db_path, create=False) as db:
         report = audit_runs(db)
     assert report.trajectories > 100
-    assert report.clean, report.summary_lines()  # was 7 findings, 13.4 mm in the handle
+    assert report.clean, report.summary_lines()  # Fetch: was 7 findings, 13.4 mm in the
+    # handle; Boxy: 4, its gripper's motions at the handle held to 1 mm though the fingers
+    # were put there 4 mm deep within the hand's 5 mm bound (now they store that bound)

@@ -96,10 +96,11 @@ def _move_to(
         for j, v in gripper_of(robot, arm).at(fraction).items()
     }
     what = f"{robot.name}'s {arm} gripper"
+    bounded = squeezed or _start_contacts(robot, arm)
     try:
         hand = (
-            HandContact(frozenset(link for link, _ in squeezed), frozenset(o for _, o in squeezed))
-            if squeezed
+            HandContact(frozenset(link for link, _ in bounded), frozenset(o for _, o in bounded))
+            if bounded
             else None
         )
         return move_along_checked(
@@ -114,6 +115,18 @@ def _move_to(
             colliding_pairs=blocked.colliding_pairs,
             path_fraction=blocked.path_fraction,
         ) from blocked
+
+
+def _start_contacts(robot: ProjectedRobot, arm: str) -> set[LinkPair]:
+    """The (gripper link, object part) pairs touching where a motion of the fingers
+    begins (a hand round a handle it was put on, up to the hand's bound deep): the motion
+    keeps them, and its trajectory stores them bounded as the approach's did, so the
+    audit holds the fingers to the hand's bound, not to a stranger's 1 mm."""
+    links = _squeezing_links(robot, arm)
+    found: set[LinkPair] = set()
+    for name in sorted(_touched_now(robot, links)):
+        found |= _touching(robot, links, robot.world.object(name))
+    return found
 
 
 def _opening(robot: ProjectedRobot, arm: str) -> float:
@@ -165,6 +178,15 @@ def close_gripper(robot: ProjectedRobot, arm: str) -> dict[str, float]:
             raise
         fraction, _, touching = found
         return _move_to(robot, arm, fraction, touching)
+
+
+def _touched_now(robot: ProjectedRobot, links: set[str]) -> set[str]:
+    """The objects other than the robot that ``links`` touch as the gripper is now."""
+    return {
+        p.obj_b
+        for p in robot.world.contacts.contact_points(robot.name, None, None, None, TOUCH)
+        if p.link_a in links and p.distance <= TOUCH and p.obj_b != robot.name
+    }
 
 
 def set_gripper(robot: ProjectedRobot, arm: str, position: float) -> dict[str, float]:
