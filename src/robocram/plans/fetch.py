@@ -13,7 +13,7 @@ from __future__ import annotations
 import contextlib
 import itertools
 import math
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from typing import Any
 
 from robocram.designators import ObjectDesignator, a, an
@@ -211,6 +211,36 @@ def exhausted_message(name: str, tries: int, causes: list[Exception]) -> str:
     return text + joint + failure_line(type(last).__name__, str(last))
 
 
+def _first_held(
+    stands: list[tuple[Pose, str | None]],
+    pick: Callable[[Pose, str | None], Held],
+    causes: list[Exception],
+    log: AttemptLog,
+    limit: int,
+) -> Held | None:
+    """The thing held from the first of ``stands`` that ``pick`` works from (None: none
+    did); each failure goes to ``causes``; after ``limit`` stands that failed once there,
+    no more (a stand refused to the base costs no try)."""
+    tries = 0
+    for pose, use_arm in stands:
+        if tries >= limit:
+            break
+        try:
+            held = pick(pose, use_arm)
+        except NavigationPoseUnreachable as failure:  # refused: the next stand, no try
+            causes.append(failure)
+            log.record("fetch", pose, failure)
+            continue
+        except PlanFailure as failure:
+            causes.append(failure)
+            log.record("fetch", pose, failure)
+            tries += 1
+            continue
+        log.record("fetch", pose, None)
+        return held
+    return None
+
+
 def fetch(
     object: ObjectDesignator | str,  # noqa: A002 - CRAM's key
     arm: str | None = None,
@@ -258,32 +288,17 @@ def fetch(
             continue
         log.record("fetch", pose, None)
         return held
-    raised = 0
-    for pose, use_arm in lowered:  # then the torso raised where it alone was in the way
-        if raised >= stand_retries:
-            break
-        try:
-            held = _pick_from(pose, seen, where, use_arm, grasp, out_of, torso_up=True)
-        except NavigationPoseUnreachable as failure:
-            causes.append(failure)
-            log.record("fetch", pose, failure)
-            continue
-        except PlanFailure as failure:
-            causes.append(failure)
-            log.record("fetch", pose, failure)
-            raised += 1
-            continue
-        log.record("fetch", pose, None)
-        return held
-    for pose, use_arm in hidden:  # last: where it was seen, from a stand that did not see it
-        try:
-            held = _pick_from(pose, seen, where, use_arm, grasp, out_of, in_container=True)
-        except PlanFailure as failure:
-            causes.append(failure)
-            log.record("fetch", pose, failure)
-            continue
-        log.record("fetch", pose, None)
-        return held
+
+    def picking(**keys: bool) -> Callable[[Pose, str | None], Held]:
+        return lambda pose, use_arm: _pick_from(pose, seen, where, use_arm, grasp, out_of, **keys)
+
+    for stands_left, pick, limit in (  # then the torso raised where it alone was in the
+        (lowered, picking(torso_up=True), stand_retries),  # way; last: where it was seen,
+        (hidden, picking(in_container=True), len(hidden)),  # from a stand that did not see it
+    ):
+        found = _first_held(stands_left, pick, causes, log, limit)
+        if found is not None:
+            return found
     raise FetchExhausted(
         exhausted_message(str(seen.get("name")), tries, causes),
         object_designator=seen,
