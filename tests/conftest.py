@@ -19,8 +19,9 @@ the other worker idle at the end.
 from __future__ import annotations
 
 import json
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping, Sequence
 from pathlib import Path
+from typing import Protocol, TypeVar
 
 import pytest
 
@@ -60,7 +61,8 @@ def pytest_collection_modifyitems(items: list[pytest.Item]) -> Iterator[None]:
             "pyproject.toml names (make setup)"
         )
     if loadgroup:
-        items[:] = _longest_first(items)
+        known = json.loads(DURATIONS.read_text()) if DURATIONS.exists() else {}
+        items[:] = longest_first(items, known)
 
 
 def _group(items: list[pytest.Item]) -> None:
@@ -76,10 +78,20 @@ def _group(items: list[pytest.Item]) -> None:
             item.add_marker(pytest.mark.xdist_group(group))
 
 
-def _longest_first(items: list[pytest.Item]) -> list[pytest.Item]:
+class Node(Protocol):
+    """What ordering needs of a test: its id."""
+
+    @property
+    def nodeid(self) -> str: ...
+
+
+N = TypeVar("N", bound=Node)
+
+
+def longest_first(items: Sequence[N], known: Mapping[str, float]) -> list[N]:
     """``items`` with the units xdist deals out (a group, else a test) ordered by their
-    estimated time, longest first; a unit's tests keep their order."""
-    known: dict[str, float] = json.loads(DURATIONS.read_text()) if DURATIONS.exists() else {}
+    estimated time (``known`` seconds per node id, else ``UNMEASURED``), longest first;
+    a unit's tests keep their order."""
     unit_of: dict[int, str] = {}
     cost: dict[str, float] = {}
     first: dict[str, int] = {}
