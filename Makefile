@@ -57,8 +57,9 @@ unit: installed $(ROS_STAMP) $(ROS2_STAMP)
 	$(BIN)/pytest -n auto --dist loadgroup --no-loadscope-reorder --durations=15
 
 # mypy (one core, half a minute or more without its cache) runs beside the tests: they leave
-# a core idle while ROS and the viewer wait for messages and pages
-test: lint
+# a core idle while ROS and the viewer wait for messages and pages. The set-up is made first,
+# one step at a time: two installs into one venv at once could clash.
+test: lint $(ROS_STAMP) $(ROS2_STAMP)
 	$(MAKE) --no-print-directory -j2 typecheck unit
 
 bench: installed
