@@ -51,10 +51,16 @@ lint: installed
 typecheck: installed $(ROS_STAMP) $(ROS2_STAMP)
 	$(BIN)/mypy
 
+# --no-loadscope-reorder: xdist deals the groups and tests out in the order tests/conftest.py
+# gives them, longest first (tests/suite_durations.json), so no long one is left for the end
 unit: installed $(ROS_STAMP) $(ROS2_STAMP)
-	$(BIN)/pytest -n auto --dist loadgroup --durations=15
+	$(BIN)/pytest -n auto --dist loadgroup --no-loadscope-reorder --durations=15
 
-test: lint typecheck unit
+# mypy (one core, half a minute or more without its cache) runs beside the tests: they leave
+# a core idle while ROS and the viewer wait for messages and pages. The set-up is made first,
+# one step at a time: two installs into one venv at once could clash.
+test: lint $(ROS_STAMP) $(ROS2_STAMP)
+	$(MAKE) --no-print-directory -j2 typecheck unit
 
 bench: installed
 	for f in benchmarks/*_bench.py; do $(BIN)/python $$f || exit 1; done

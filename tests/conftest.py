@@ -2,22 +2,33 @@
 on one worker.
 
 ``--dist loadgroup`` sends the tests of one ``xdist_group`` to the same worker, in order:
-the ROS tests share a ``roscore`` and ROS 2 domain ids, the batch tests start worker pools
-and local Ray clusters that would fight over the cores, the viewer tests start servers and
-a headless Chromium. The tests of a module that share a module- or class-scoped fixture
-run on one worker too, so its set-up (a breakfast for two, a traced door) runs once, not once
-per worker. Everything else is spread by test.
+the batch tests start worker pools and local Ray clusters that would fight over the cores,
+the viewer tests start servers and a headless Chromium. The tests of a module that share a
+module- or class-scoped fixture run on one worker too, so its set-up (a breakfast for two, a
+traced door) runs once, not once per worker. The ROS tests are not one group (together
+they took more than half the suite's time on one worker): a module's ``roscore`` is on a
+free port, and each ROS 2 test holds a domain no other process holds (``free_domain``).
+Everything else is spread by test.
+
+Each worker takes the next unit (a group or a test) when it runs dry, so the units are
+queued longest first (``suite_durations.json``, made by ``tools/suite_durations.py``; with
+``--no-loadscope-reorder``, xdist keeps that order): a long group started last would leave
+the other worker idle at the end.
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+import json
+from collections.abc import Iterator, Mapping, Sequence
 from pathlib import Path
+from typing import Protocol, TypeVar
 
 import pytest
 
 TESTS = Path(__file__).resolve().parent
-GROUPS = {"ros": "ros", "batch": "batch", "viewer": "viewer"}  # folder -> group
+GROUPS = {"batch": "batch", "viewer": "viewer"}  # folder -> group
+DURATIONS = TESTS / "suite_durations.json"  # node id -> seconds (set-up, call, tear-down)
+UNMEASURED = 0.02  # [s] the estimate for a test not in DURATIONS (their mean)
 
 
 SHARED_SCOPES = ("module", "class")  # fixtures set up once for several tests of a module
@@ -49,6 +60,9 @@ def pytest_collection_modifyitems(items: list[pytest.Item]) -> Iterator[None]:
             "group xdist gives a test (pytest-xdist #1386); install the pytest "
             "pyproject.toml names (make setup)"
         )
+    if loadgroup:
+        known = json.loads(DURATIONS.read_text()) if DURATIONS.exists() else {}
+        items[:] = longest_first(items, known)
 
 
 def _group(items: list[pytest.Item]) -> None:
@@ -62,3 +76,37 @@ def _group(items: list[pytest.Item]) -> None:
             group = relative.as_posix()
         if group is not None:
             item.add_marker(pytest.mark.xdist_group(group))
+
+
+class Node(Protocol):
+    """What ordering needs of a test: its id."""
+
+    @property
+    def nodeid(self) -> str: ...
+
+
+N = TypeVar("N", bound=Node)
+
+
+def longest_first(items: Sequence[N], known: Mapping[str, float]) -> list[N]:
+    """``items`` with the units xdist deals out (a group, else a test) ordered by their
+    estimated time (``known`` seconds per node id, else ``UNMEASURED``), longest first;
+    a unit's tests keep their order."""
+    unit_of: dict[int, str] = {}
+    cost: dict[str, float] = {}
+    first: dict[str, int] = {}
+    for index, item in enumerate(items):
+        plain, unit = _split_group(item.nodeid)
+        unit_of[id(item)] = unit
+        cost[unit] = cost.get(unit, 0.0) + known.get(plain, UNMEASURED)
+        first.setdefault(unit, index)
+    return sorted(items, key=lambda i: (-cost[unit_of[id(i)]], first[unit_of[id(i)]]))
+
+
+def _split_group(nodeid: str) -> tuple[str, str]:
+    """The node id without the ``@group`` xdist appends, and the unit xdist deals out: the
+    group, else the test (an ``@`` inside a parameter's brackets is not a group's)."""
+    if nodeid.rfind("@") > nodeid.rfind("]"):
+        plain, _, group = nodeid.rpartition("@")
+        return plain, group
+    return nodeid, nodeid

@@ -11,31 +11,21 @@ from __future__ import annotations
 
 import contextlib
 import io
-import re
 import shutil
 import warnings
 from pathlib import Path
 
 import pytest
 
+from tests.doc_blocks import DOCS, runnable_blocks
+
 ROOT = Path(__file__).resolve().parents[1]
-DOCS = ROOT / "docs"
-NOT_RUN = "<!-- not run by tests/test_doc_blocks.py:"
 ELSEWHERE = {  # page -> the test that runs its blocks
     "queries.md": "tests/test_doc_queries.py",
     "new_robot.md": "tests/test_new_robot_doc.py",
+    "activities.md": "tests/plans/test_plans_activities.py",  # its breakfast, then judged
 }
 PYCRAM = ROOT / "tests" / "data" / "pycram"
-
-
-def runnable_blocks(text: str) -> list[str]:
-    """The ``python`` blocks of ``text`` in order, but those marked as not run."""
-    found = []
-    for match in re.finditer(r"^```python\n(.*?)^```", text, flags=re.S | re.M):
-        before = text[: match.start()].rstrip("\n").rsplit("\n", 1)[-1]
-        if not before.startswith(NOT_RUN):
-            found.append(match.group(1))
-    return found
 
 
 def _pages() -> list[str]:

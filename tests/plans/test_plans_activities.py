@@ -6,6 +6,8 @@ far it is tilted, which joint stands where, what touches what.
 
 from __future__ import annotations
 
+import contextlib
+import io
 import math
 from collections.abc import Iterator
 from dataclasses import dataclass
@@ -13,17 +15,22 @@ from dataclasses import dataclass
 import pybullet
 import pytest
 
-from robocram.designators import an
+import robocram.plans
+from robocram.designators import Designator
 from robocram.plans import ACTIONS, perform
 from robocram.plans.activity_failures import ActivityIncomplete
 from robocram.plans.setting_table import TableSetting
 from robocram.plans.table_arrangement import TOLERANCE
-from robocram.projection import simulated_robot
-from robocram.scenes.breakfast_scene import BREAKFAST_PLACES, breakfast_scene
+from robocram.scenes import EnvironmentScene
+from robocram.scenes.breakfast_scene import BREAKFAST_PLACES
 from robocram.world import World
+from tests.doc_blocks import DOCS, runnable_blocks
 
 UPRIGHT = 0.05  # [rad] how far a thing may lean and still stand
 TABLE_TOP = 0.75  # [m] the kitchen table's top (tools/make_kitchen_urdf.py)
+
+
+Placed = tuple[tuple[float, float, float], float, float]  # where, tilt [rad], bottom [m]
 
 
 @dataclass
@@ -31,8 +38,7 @@ class Breakfast:
     world: World
     robot: str
     setting: TableSetting
-    set_at: dict[str, tuple[tuple[float, float, float], float, float]]  # after setting:
-    # where, tilt [rad], bottom [m]
+    set_at: dict[str, Placed]  # after setting
     closed: dict[str, float]  # opened container joints after setting [m | rad]
     clearing: ActivityIncomplete | None  # what clearing left undone, if anything
     closed_after: dict[str, float]  # the same joints after clearing [m | rad]
@@ -94,24 +100,48 @@ def _touches_link(world: World, name: str, body: str, link: str) -> bool:
 
 @pytest.fixture(scope="module")
 def breakfast() -> Iterator[Breakfast]:
-    scene = breakfast_scene("pr2")
-    world = scene.world
+    """docs/activities.md's block run as written (it has no test of its own: the same
+    breakfast twice cost a minute of CPU), watched through the ``perform`` it imports:
+    where things stand and which containers are open once the table is set."""
+    (block,) = runnable_blocks((DOCS / "activities.md").read_text(encoding="utf-8"))
+    namespace: dict[str, object] = {"__name__": "__main__"}
+    set_table: list[tuple[TableSetting, dict[str, Placed], dict[str, float]]] = []
+
+    def watched(designator: Designator[object]) -> object:
+        result = perform(designator)
+        if isinstance(result, TableSetting):  # the table is set: see it before clearing
+            world = _scene(namespace).world
+            set_at = {n: _placed(world, n) for n in _scene(namespace).items}
+            joints = {
+                row["J"]: _joint(world, "kitchen", row["J"])
+                for link in result.opened
+                for row in world.kb.query("container(kitchen, L, J, _)", L=link)
+            }
+            set_table.append((result, set_at, joints))
+        return result
+
     clearing = None
-    with simulated_robot(world, scene.robot):
-        setting = perform(an.action(type="setting-table", people=2))
-        set_at = {n: (_position(world, n), _tilt(world, n), _bottom(world, n)) for n in scene.items}
-        joints = {
-            row["J"]: _joint(world, "kitchen", row["J"])
-            for link in setting.opened
-            for row in world.kb.query("container(kitchen, L, J, _)", L=link)
-        }
+    with pytest.MonkeyPatch.context() as patch, contextlib.redirect_stdout(io.StringIO()):
+        patch.setattr(robocram.plans, "perform", watched)
         try:
-            perform(an.action(type="clearing-table"))
-        except ActivityIncomplete as failure:
+            exec(compile(block, "activities.md block 1", "exec"), namespace)  # noqa: S102
+        except ActivityIncomplete as failure:  # clearing left something undone
             clearing = failure
-    after = {joint: _joint(world, "kitchen", joint) for joint in joints}
-    yield Breakfast(world, scene.robot, setting, set_at, joints, clearing, after)
-    world.close()
+    scene = _scene(namespace)
+    ((setting, set_at, joints),) = set_table
+    after = {joint: _joint(scene.world, "kitchen", joint) for joint in joints}
+    yield Breakfast(scene.world, scene.robot, setting, set_at, joints, clearing, after)
+    scene.world.close()
+
+
+def _scene(namespace: dict[str, object]) -> EnvironmentScene:
+    scene = namespace["scene"]
+    assert isinstance(scene, EnvironmentScene)
+    return scene
+
+
+def _placed(world: World, name: str) -> Placed:
+    return _position(world, name), _tilt(world, name), _bottom(world, name)
 
 
 def test_the_activities_are_action_types() -> None:
