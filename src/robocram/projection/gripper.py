@@ -104,7 +104,7 @@ def _move_to(
             else None
         )
         return move_along_checked(
-            robot, goal, kind="gripper", what=what, allowed_pairs=squeezed, hand=hand
+            robot, goal, kind="gripper", what=what, allowed_pairs=bounded, hand=hand
         )
     except ManipulationPathBlocked as blocked:
         master = gripper_of(robot, arm).names[0]
