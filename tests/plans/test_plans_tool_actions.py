@@ -38,7 +38,13 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from tool_setup import tool_scene  # noqa: E402
 
 FETCH = str(Path(__file__).resolve().parents[1] / "data" / "fetch" / "fetch.py")
+STRETCH = str(Path(__file__).resolve().parents[1] / "data" / "stretch" / "stretch.py")
 ROBOTS = ["pr2", "boxy", FETCH]
+# arms that reach with their base follow the paths with base and arm in one trajectory
+# (motion/whole_body_tool_path.py): the HSR (holonomic) and the Stretch (differential)
+WHOLE_BODY = ["hsrb", STRETCH]
+ALL = [*ROBOTS, *WHOLE_BODY]
+ALL_IDS = ["pr2", "boxy", "fetch", "hsrb", "stretch"]
 # Boxy's pour (14 s of particles) is left to the bench. Its stir carries the 16 cm spoon
 # round to the path's start: before held things joined the self walk
 # (motion/held_self_pairs.py), the audit found the spoon 27 mm in Boxy's base there
@@ -63,7 +69,7 @@ def _added_in_last_state(db_path: Path) -> tuple[set[str], set[str]]:
     return set(json.loads(added or "{}")), set(json.loads(poses))
 
 
-@pytest.mark.parametrize("robot", ["pr2", FETCH], ids=["pr2", "fetch"])
+@pytest.mark.parametrize("robot", ["pr2", FETCH, "hsrb"], ids=["pr2", "fetch", "hsrb"])
 def test_pouring_lands_the_particles_in_the_bowl(robot: str, tmp_path: Path) -> None:
     scene = tool_scene(robot, "cup")
     x, y, h = scene.spot
@@ -106,6 +112,18 @@ def test_pouring_into_a_covered_bowl_fails_naming_the_cover() -> None:
     assert world.joint_states(scene.robot) == before  # refused before anything moved
 
 
+def _put(world: World, robot: str, names: tuple[str, ...], values: object) -> None:
+    """The robot at a trajectory point: a whole-body point's ``x``, ``y``, ``yaw`` put as
+    its pose in map (what it holds rides along), the rest as joints."""
+    named = dict(zip(names, (float(v) for v in values), strict=True))  # type: ignore[attr-defined]
+    if "yaw" in named:
+        height = world.pose(robot).position[2]
+        turn = (0.0, 0.0, math.sin(named["yaw"] / 2), math.cos(named["yaw"] / 2))
+        world.set_pose(robot, Pose((named.pop("x"), named.pop("y"), height), turn))
+        named.pop("yaw")
+    world.set_joint_states(robot, named)
+
+
 def _replayed_cells(
     world: World,
     robot: str,
@@ -123,16 +141,14 @@ def _replayed_cells(
     body, cid = world.object("sponge-1").body_id, world.physics.client()
     for trajectory in trajectories:
         for point in trajectory.points:
-            world.set_joint_states(
-                robot, dict(zip(trajectory.joint_names, point.positions, strict=True))
-            )
+            _put(world, robot, trajectory.joint_names, point.positions)
             low, high = pybullet.getAABB(body, physicsClientId=cid)
             if low[2] <= top + 0.001:
                 marked |= (gx >= low[0]) & (gx <= high[0]) & (gy >= low[1]) & (gy <= high[1])
     return float(marked.mean())
 
 
-@pytest.mark.parametrize("robot", ROBOTS, ids=["pr2", "boxy", "fetch"])
+@pytest.mark.parametrize("robot", ALL, ids=ALL_IDS)
 def test_wiping_covers_the_region_and_touches_only_the_table(robot: str, tmp_path: Path) -> None:
     scene = tool_scene(robot, "sponge")
     x, y, h = scene.spot
@@ -154,7 +170,7 @@ def test_wiping_covers_the_region_and_touches_only_the_table(robot: str, tmp_pat
     assert not report.findings, report.summary_lines()
 
 
-@pytest.mark.parametrize("robot", ROBOTS, ids=["pr2", "boxy", "fetch"])
+@pytest.mark.parametrize("robot", ALL, ids=ALL_IDS)
 def test_cutting_gives_the_slices_of_even_widths(robot: str, tmp_path: Path) -> None:
     scene = tool_scene(robot, "knife")
     x, y, h = scene.spot
@@ -178,7 +194,7 @@ def test_cutting_gives_the_slices_of_even_widths(robot: str, tmp_path: Path) -> 
     assert report.clean, report.summary_lines()
 
 
-@pytest.mark.parametrize("robot", ROBOTS, ids=["pr2", "boxy", "fetch"])
+@pytest.mark.parametrize("robot", ALL, ids=ALL_IDS)
 def test_mixing_keeps_the_spoon_clear_of_the_rim(robot: str, tmp_path: Path) -> None:
     scene = tool_scene(robot, "spoon")
     x, y, h = scene.spot
@@ -200,8 +216,7 @@ def test_mixing_keeps_the_spoon_clear_of_the_rim(robot: str, tmp_path: Path) -> 
         for a, b in zip(points, points[1:], strict=False):
             for s in np.linspace(0.0, 1.0, 4, endpoint=False):  # between the points too
                 q = a + (b - a) * s
-                joints = dict(zip(trajectory.joint_names, q, strict=True))
-                world.set_joint_states(scene.robot, joints)
+                _put(world, scene.robot, trajectory.joint_names, q)
                 found = pybullet.getClosestPoints(spoon, bowl, 0.05, physicsClientId=cid)
                 nearest = min([nearest, *(p[8] for p in found)])
     assert nearest > 0.0

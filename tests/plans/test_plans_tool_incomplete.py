@@ -1,10 +1,10 @@
 """A tool action whose path stops short fails typed, never with a quiet partial result.
 
 The HSR holds its tools in the same grips as the PR2 (``tool_setup.py`` reads each hand's
-axes from its kinematics); its 5-joint arm cannot follow the tool paths from where it
-stands, so each path stops at its start. Judged by raw PyBullet: the spoon and the cup
-stay in the hand, the cup upright (the tilt's reached part, here none, is undone), no
-slice is made.
+axes from its kinematics) and follows tool paths with base and arm together; a thin post
+stands where each path goes, so each stops short, from every stand tried. Judged by raw
+PyBullet: the spoon and the cup stay in the hand, the cup upright (the tilt's reached
+part is undone), no slice is made; the failure names the post where it stopped there.
 """
 
 from __future__ import annotations
@@ -49,6 +49,7 @@ def test_a_stir_the_arm_cannot_follow_fails_naming_how_far_it_got() -> None:
     scene = tool_scene("hsrb", "spoon")
     x, y, h = scene.spot
     add_tool_object(scene.world, "bowl-1", "bowl", Pose((x, y, h)))
+    scene.world.add_box("post", (0.01, 0.01, 0.3), (x + 0.06, y, h + 0.15))  # in the spiral
     with (
         simulated_robot(scene.world, scene.robot),
         pytest.raises(ToolPathIncomplete) as failure,
@@ -57,7 +58,7 @@ def test_a_stir_the_arm_cannot_follow_fails_naming_how_far_it_got() -> None:
     assert failure.value.action == "mixing"
     assert failure.value.fraction is not None and failure.value.fraction < 0.9
     assert failure.value.needed == pytest.approx(0.9)
-    assert "IK" in str(failure.value.stopped_by)
+    assert "post" in str(failure.value.stopped_by)
     assert _held(scene, "spoon-1")
 
 
@@ -65,6 +66,7 @@ def test_a_pour_that_cannot_tilt_fails_and_leaves_the_cup_upright() -> None:
     scene = tool_scene("hsrb", "cup")
     x, y, h = scene.spot
     add_tool_object(scene.world, "bowl-1", "bowl", Pose((x + 0.05, y - 0.1, h)))
+    scene.world.add_box("post", (0.01, 0.01, 0.3), (x + 0.05, y - 0.1, h + 0.3))  # over it
     with (
         simulated_robot(scene.world, scene.robot),
         pytest.raises(ToolPathIncomplete) as failure,
@@ -80,6 +82,7 @@ def test_a_cut_that_makes_no_slice_fails() -> None:
     scene = tool_scene("hsrb", "knife")
     x, y, h = scene.spot
     add_tool_object(scene.world, "bread-1", "bread", Pose((x, y, h + 0.04)))
+    scene.world.add_box("post", (0.3, 0.015, 0.015), (x, y + 0.05, h + 0.12))  # on the saw line
     with (
         simulated_robot(scene.world, scene.robot),
         pytest.raises(ToolPathIncomplete) as failure,
@@ -87,5 +90,6 @@ def test_a_cut_that_makes_no_slice_fails() -> None:
         perform(an.action(type="cutting", object="bread-1", tool="knife-1", slices=4))
     assert failure.value.action == "cutting" and failure.value.needed == pytest.approx(0.9)
     assert failure.value.fraction is not None and failure.value.fraction < 0.9
+    assert "post" in str(failure.value.stopped_by)
     assert not scene.world.objects("bread_slice")
     assert "bread-1" in {o.name for o in scene.world.objects()}

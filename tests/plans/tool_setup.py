@@ -7,7 +7,7 @@ from dataclasses import dataclass
 
 from robocram.designators import a
 from robocram.execution import perform
-from robocram.execution.failures import GripperMetOneSide
+from robocram.execution.failures import GripperClosedCompletely, GripperMetOneSide
 from robocram.grasping.hand import hand_of, tool_orientation
 from robocram.projection import simulated_robot
 from robocram.scenes import tabletop_scene
@@ -86,6 +86,10 @@ def tool_scene(robot: str, tool: str, arm: str | None = None) -> ToolScene:
                 raise
             dx, dy, dz = one_side.shift  # the hand's way to centre it: the tool the other
             world.set_pose(name, Pose((at[0] - dx, at[1] - dy, at[2] - dz), upright))
+            gripped = perform(a.motion(type="gripping", gripper=arm))
+        except GripperClosedCompletely:  # short fingers (the HSR's) pass under it: at the frame
+            perform(a.motion(type="opening", gripper=arm))
+            world.set_pose(name, Pose(tcp, upright))
             gripped = perform(a.motion(type="gripping", gripper=arm))
     if gripped != name:
         raise AssertionError(f"{robot}'s {arm} hand gripped {gripped!r}, not {name!r}")

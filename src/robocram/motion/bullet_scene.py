@@ -152,6 +152,10 @@ class BulletScene:
         """:meth:`clearance` of the robot as it stands (no joints set and put back)."""
         return self._clearance_now(reach)
 
+    def clearances_now(self, reach: float = CLEARANCE_REACH) -> dict[str, float]:
+        """:meth:`clearances` of the robot as it stands (no joints set and put back)."""
+        return self._clearances_now(reach)
+
     def clearances(self, q: Configuration, reach: float = CLEARANCE_REACH) -> dict[str, float]:
         """Per moving link (or held object) nearer than ``reach`` [m] to something it may
         not touch, at ``q``: that distance [m] (0 or less: touching). Links not named are

@@ -107,7 +107,7 @@ def plan_tool_path(
     judge = _judge(robot, joints, start, tuple(contacts))
     bound = TravelBound.of(robot, joints)
     line = follow_poses(desc, arm, judge, current, targets, bound, random_seed=settings.seed)
-    path, fraction, stopped = _apart(robot, line.path, line.fraction, line.stopped_by)
+    path, fraction, stopped = cut_apart(robot, line.path, line.fraction, line.stopped_by)
     full = fraction >= 1.0
     radii = blend_radii(judge, bound, path.waypoints) if full else None
     limits = joint_limits(desc, joints)
@@ -134,13 +134,21 @@ def _judge(
     return judge
 
 
-def _apart(
-    robot: RobotHandle, path: JointPath, fraction: float, stopped: str
+def cut_apart(
+    robot: RobotHandle,
+    path: JointPath,
+    fraction: float,
+    stopped: str,
+    joints: tuple[str, ...] | None = None,
 ) -> tuple[JointPath, float, str]:
-    """The path cut where it would first run the robot into itself."""
+    """The path cut where it would first run the robot into itself. ``joints`` (default
+    the path's) are the path's last columns the self walk takes: a whole-body path's base
+    columns move the whole robot alike."""
     if len(path.waypoints) < 2:
         return path, fraction, stopped
-    blocked = SelfPathCheck.of(robot, path.joints).first_collision(path.waypoints)
+    joints = path.joints if joints is None else joints
+    walked = [w[len(w) - len(joints) :] for w in path.waypoints]
+    blocked = SelfPathCheck.of(robot, joints).first_collision(walked)
     if blocked is None:
         return path, fraction, stopped
     where, pairs = blocked

@@ -24,6 +24,7 @@ from robocram.execution.failures import (
 )
 from robocram.execution.failures.plan_failure import PlanFailure
 from robocram.motion import BASE_JOINTS, BODY_JOINTS, JointTrajectory
+from robocram.motion.whole_body_scene import is_whole_body, put_base_and_joints
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
@@ -90,6 +91,9 @@ class PathWatch:
         finally:
             if names in (BASE_JOINTS, BODY_JOINTS):
                 world.set_pose(self.robot.name, pose)
+            elif is_whole_body(names):
+                world.set_pose(self.robot.name, pose)
+                world.set_joint_states(self.robot.name, {n: joints[n] for n in names[3:]})
             else:
                 world.set_joint_states(self.robot.name, {n: joints[n] for n in names})
         return None
@@ -136,5 +140,7 @@ def _pose(robot: ProjectedRobot, names: tuple[str, ...], values: tuple[float, ..
         height = world.pose(name).position[2]
         turn = quat.from_euler(0.0, 0.0, named["yaw"])
         world.set_pose(name, Pose((named["x"], named["y"], height), turn))
+    elif is_whole_body(names):
+        put_base_and_joints(robot.handle, named)
     else:
         world.set_joint_states(name, named)

@@ -25,6 +25,7 @@ from robocram.designators.tool_answers import PouringAnswer
 from robocram.execution import checkpoint
 from robocram.grasping import shape_of
 from robocram.motion import JointTrajectory
+from robocram.motion.whole_body_scene import put_configuration
 from robocram.projection.errors import ProjectionError
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.projection.tool_motion import PathPose, answer, plan_from_start, tool_grip
@@ -164,7 +165,7 @@ def _follow_with_physics(robot: ProjectedRobot, trajectory: JointTrajectory) -> 
         checkpoint()
         t = min(k * world.time_step, trajectory.duration)
         values = [float(np.interp(t, times, positions[:, j])) for j in range(positions.shape[1])]
-        world.set_joint_states(robot.name, dict(zip(trajectory.joint_names, values, strict=True)))
+        put_configuration(robot.handle, trajectory.joint_names, values)  # base too, if whole-body
         world.physics.step()
     follow(robot, trajectory)
 

@@ -5,7 +5,9 @@ point's path (poses in ``map``) becomes poses of the arm's tool frame through th
 as the world holds it (the tool attached to the hand), the arm moves to the path's
 first pose avoiding everything (a joint-space motion, planned round what is in the way),
 then follows the rest as a tool path (:func:`~robocram.motion.tool_path.plan_tool_path`),
-the named contacts allowed within their depths. The answer says how far it got and
+the named contacts allowed within their depths. An arm that reaches with its base
+(``base_in_ik``) and cannot follow the whole path alone follows it with base and arm in
+one trajectory (:mod:`~robocram.motion.whole_body_tool_path`). The answer says how far it got and
 where the tool point went, read from the world at every executed trajectory point.
 """
 
@@ -16,8 +18,11 @@ from dataclasses import dataclass
 
 from robocram.designators.tool_answers import ToolPathAnswer
 from robocram.execution.failures import ToolPathUnreachable
+from robocram.kinematics import base_in_ik
 from robocram.motion import ContactAllowance, JointTrajectory
 from robocram.motion.tool_path import ToolPathMotion, plan_tool_path
+from robocram.motion.whole_body_scene import is_whole_body, put_configuration
+from robocram.motion.whole_body_tool_path import plan_whole_body_tool_path
 from robocram.projection.arm import move_tcp
 from robocram.projection.errors import ProjectionError
 from robocram.projection.path_watch import planned_against
@@ -107,10 +112,17 @@ def plan_from_start(
     in_map = [robot.in_map(p) for p in path]
     move_tcp(robot, grip.arm, in_map[0] * grip.point_in_tcp.inverse(), "avoid_all")
     base = robot.base_pose().inverse()
+    in_base = [base * p for p in in_map[1:]] or [base * in_map[0]]
     planned = plan_tool_path(
-        robot.handle, grip.arm, [base * p for p in in_map[1:]] or [base * in_map[0]],
+        robot.handle, grip.arm, in_base,
         point_in_tcp=grip.point_in_tcp, contacts=contacts, settings=robot.motion,
     )  # fmt: skip
+    if planned.fraction < 1.0 and base_in_ik(robot.description, grip.arm):
+        whole = plan_whole_body_tool_path(
+            robot.handle, grip.arm, in_base,
+            point_in_tcp=grip.point_in_tcp, contacts=contacts, settings=robot.motion,
+        )  # fmt: skip
+        planned = whole if whole.fraction > planned.fraction else planned
     if planned.fraction < needed:
         raise ToolPathUnreachable(
             f"{robot.name}'s {grip.arm} arm reaches {planned.fraction:.0%} of the tool path "
@@ -154,13 +166,14 @@ def tool_poses(
     back where it stands after)."""
     world, name = robot.world, robot.name
     frame = robot.arm(grip.arm).tool_frame
-    now = world.joint_states(name)
+    now, pose = world.joint_states(name), world.pose(name)
     found = []
     try:
         for point in trajectory.points:
-            world.set_joint_states(name, dict(zip(trajectory.joint_names, point.positions,
-                                                  strict=True)))  # fmt: skip
+            put_configuration(robot.handle, trajectory.joint_names, point.positions)
             found.append(world.link_pose(name, frame) * grip.point_in_tcp)
     finally:
-        world.set_joint_states(name, {j: now[j] for j in trajectory.joint_names})
+        if is_whole_body(trajectory.joint_names):
+            world.set_pose(name, pose)
+        world.set_joint_states(name, {j: now[j] for j in trajectory.joint_names if j in now})
     return tuple(found)

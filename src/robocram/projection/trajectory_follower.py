@@ -20,6 +20,7 @@ from robocram.motion import (
     TrajectoryPoint,
     report_executed,
 )
+from robocram.motion.whole_body_scene import is_whole_body, put_base_and_joints
 from robocram.projection.path_watch import PathWatch, planned_against
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.tf import Pose
@@ -84,5 +85,8 @@ def _apply(robot: ProjectedRobot, joints: tuple[str, ...], point: TrajectoryPoin
         height = robot.base_pose().position[2]
         yaw = quat.from_euler(0.0, 0.0, values["yaw"])
         robot.world.set_pose(robot.name, Pose((values["x"], values["y"], height), yaw))
+        return
+    if is_whole_body(joints):  # base and arm at once
+        put_base_and_joints(robot.handle, values)
         return
     robot.world.set_joint_states(robot.name, values)
