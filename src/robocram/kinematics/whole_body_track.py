@@ -67,6 +67,7 @@ def track_whole_body(
     targets: Iterable[Pose],
     seed: Mapping[str, float],
     base: PlanarBase,
+    goal: Mapping[str, float] | None = None,
 ) -> Iterator[IKResult]:
     """Lazily, the answer for each of ``targets`` (the root link where the base stands at
     the start, in order), base and arm solved together from the answer before.
@@ -74,14 +75,23 @@ def track_whole_body(
     ``seed`` holds the robot's joints now (the base's virtual joints, absent, start at
     zero). The answers' ``joint_positions`` hold the arm's joints and the virtual base
     joints of :func:`whole_body_base_joints`. Stop asking after a failure.
+
+    ``goal``: a solution for the last target (virtual base joints and the arm's, as a
+    collision-checked IK query found it). Each descent then starts from the answer before
+    moved its share of the way to it, so base and arm share the motion as that solution
+    does (a base kept off a wall) while the tool stays on the targets.
     """
     chain = whole_body_chain(description, arm, base)
     settings = IKSettings(max_restarts=0, max_iterations=WHOLE_BODY_ITERATIONS)
     values = dict(seed)
     b = chain.offsets(values)  # the other virtual joints and the torso stay where they are
     x = _start(chain, values)
-    for pose in targets:
+    poses = list(targets)
+    toward = None if goal is None else _start(chain, {**values, **goal})
+    for k, pose in enumerate(poses):
         t0 = time.perf_counter()
+        if toward is not None:
+            x = x + (toward - x) / (len(poses) - k)
         best = Best(x)
         run = descend(chain, x, pose_to_se3(pose), b, settings, best)
         if not run.converged:

@@ -16,8 +16,10 @@ from collections.abc import Collection, Iterator, Mapping, Sequence
 import numpy as np
 
 from robocram.motion.bullet_scene import CLEARANCE_REACH, BulletScene
+from robocram.motion.carried_joint import CarriedJoint
 from robocram.motion.configuration_checker import Configuration, LinkPair
 from robocram.motion.contact_allowance import ContactAllowance
+from robocram.motion.hand_contact import HandContact
 from robocram.motion.joint_trajectory import BASE_JOINTS, FloatArray
 from robocram.motion.travel_bound import TravelBound, link_radii
 from robocram.tf import Pose
@@ -58,11 +60,17 @@ class WholeBodyScene:
         arm_joints: Sequence[str],
         allowed_pairs: Collection[LinkPair] = (),
         contacts: Collection[ContactAllowance] = (),
+        allowed_links: Collection[str] = (),
+        hand: HandContact | None = None,
+        carried: Sequence[CarriedJoint] = (),
     ) -> None:
         self.handle = robot
         self.arm_joints = tuple(arm_joints)
+        self.carried = tuple(c for c in carried if c.line is not None)  # moved with the tool
         self._joints = (*BASE_JOINTS, *self.arm_joints)
-        self.scene = BulletScene(robot, (), allowed_pairs=allowed_pairs, contacts=contacts)
+        self.scene = BulletScene(
+            robot, (), allowed_links, allowed_pairs=allowed_pairs, hand=hand, contacts=contacts
+        )
         self._posed = False
 
     @property

@@ -18,7 +18,7 @@ body as in any tool path. As there, only the named contacts are allowed, each bo
 from __future__ import annotations
 
 import math
-from collections.abc import Collection, Iterator, Sequence
+from collections.abc import Collection, Iterator, Mapping, Sequence
 from dataclasses import replace
 
 import numpy as np
@@ -27,10 +27,14 @@ from robocram.kinematics import IKResult, PlanarBase
 from robocram.kinematics.planar_base import BASE_X_JOINT, BASE_Y_JOINT, BASE_YAW_JOINT
 from robocram.kinematics.whole_body_track import track_whole_body
 from robocram.motion.arm_motion import ArmMotion, MotionSettings
+from robocram.motion.carried_joint import CarriedJoint
 from robocram.motion.cartesian_path import JUMP_THRESHOLD, MAX_STEP
+from robocram.motion.configuration_checker import LinkPair
 from robocram.motion.contact_allowance import ContactAllowance
 from robocram.motion.corner_blend import blend_radii
 from robocram.motion.errors import MotionInputError
+from robocram.motion.hand_contact import HandContact, hand_at_start
+from robocram.motion.held_start_contacts import split_start_contacts
 from robocram.motion.joint_limits import joint_limits
 from robocram.motion.joint_path import JointPath
 from robocram.motion.joint_trajectory import FloatArray
@@ -60,11 +64,26 @@ def plan_whole_body_tool_path(
     contacts: Collection[ContactAllowance] = (),
     settings: MotionSettings = DEFAULT_SETTINGS,
     base: PlanarBase | None = None,
+    hand: HandContact | None = None,
+    allowed_links: Collection[str] = (),
+    kind: str = TOOL_PATH_KIND,
+    goal: Mapping[str, float] | None = None,
+    carried: Sequence[CarriedJoint] = (),
+    keep_touching: bool = True,
 ) -> ToolPathMotion:
     """Follow the tool point through ``path_in_base`` (poses in the robot's root link where
     it stands now) with base and arm, as far as it can be followed.
 
-    ``base`` bounds how far the base may go (default :class:`PlanarBase`'s travel).
+    ``base`` bounds how far the base may go (default :class:`PlanarBase`'s travel); the
+    ``hand`` may touch what it acts on within its bound (a door's handle it pulls round),
+    ``allowed_links`` anything; the trajectory is of ``kind`` and stores what it allows.
+    ``goal``: a solution at the path's end that base and arm should share the motion as
+    (:func:`~robocram.kinematics.whole_body_track.track_whole_body`). ``carried``: parts
+    the hand moves along (a door's joint), checked where the tool takes them.
+    A held thing touching something at the start may stay no deeper; the robot's own
+    links touching something (beyond the hand's bound) may move off it, or, with
+    ``keep_touching`` False, the path is refused where it starts (a door's step: a link
+    left in the door would be dragged deeper as base and arm pull it round).
 
     Raises:
         MotionInputError: the path is empty or has more steps than a trajectory holds.
@@ -87,10 +106,18 @@ def plan_whole_body_tool_path(
         )
     inverse = point_in_tcp.inverse()
     targets = [pose * inverse for pose in steps]
-    scene = _scene(robot, joints, tuple(contacts))
+    hand = hand_at_start(world, robot.name, hand)
+    scene, touching = _scene(
+        robot, joints, tuple(contacts), tuple(allowed_links), hand, tuple(carried)
+    )
     arm_bound = TravelBound.of(robot, joints)
-    answers = track_whole_body(desc, arm, targets, current, base or PlanarBase())
-    waypoints, levers, stopped = _follow(scene, arm_bound, start, joints, answers)
+    if touching and not keep_touching:
+        named = ", ".join(f"{a} touches {b}" for a, b in touching[:2])
+        waypoints, levers = [tuple(scene.now().tolist())], 0.0
+        stopped = f"the robot starts in contact ({named})"
+    else:
+        answers = track_whole_body(desc, arm, targets, current, base or PlanarBase(), goal)
+        waypoints, levers, stopped = _follow(scene, arm_bound, start, joints, answers)
     fraction = (len(waypoints) - 1) / len(targets)
     path = JointPath(scene.joints, tuple(waypoints), "whole-body", len(waypoints))
     path, fraction, stopped = cut_apart(robot, path, fraction, stopped, joints)
@@ -99,20 +126,33 @@ def plan_whole_body_tool_path(
     radii = blend_radii(scene, bound, path.waypoints) if full else None
     trajectory = time_parameterize(
         robot.name, scene.joints, path.waypoints, joint_limits(desc, scene.joints),
-        kind=TOOL_PATH_KIND, period=settings.period, corner_radii=radii,
+        kind=kind, period=settings.period, corner_radii=radii,
     )  # fmt: skip
-    stored = replace(trajectory, allowed_contacts=(*trajectory.allowed_contacts, *contacts))
+    held = hand.allowances() if hand is not None else ()
+    stored = replace(trajectory, allowed_contacts=(*trajectory.allowed_contacts, *contacts, *held))
     return ToolPathMotion(ArmMotion(path, stored, fraction), fraction, stopped)
 
 
 def _scene(
-    robot: RobotHandle, joints: tuple[str, ...], contacts: tuple[ContactAllowance, ...]
-) -> WholeBodyScene:
-    """The world as the checker, the named contacts bounded, and the contacts the robot
-    has at the start (beyond those bounds) allowed to end."""
-    scene = WholeBodyScene(robot, joints, contacts=contacts)
-    touching = scene.colliding(scene.now())
-    return WholeBodyScene(robot, joints, touching, contacts) if touching else scene
+    robot: RobotHandle,
+    joints: tuple[str, ...],
+    contacts: tuple[ContactAllowance, ...],
+    allowed_links: tuple[str, ...],
+    hand: HandContact | None,
+    carried: tuple[CarriedJoint, ...],
+) -> tuple[WholeBodyScene, list[LinkPair]]:
+    """The world as the checker, the named contacts and the hand bounded; the robot's own
+    links' contacts at the start (beyond those bounds) allowed to end, a held thing's no
+    deeper than it starts. Also those links' start contacts."""
+    scene = WholeBodyScene(robot, joints, (), contacts, allowed_links, hand, carried)
+    with scene.posed():
+        touching = scene.colliding(scene.now())
+        if not touching:
+            return scene, []
+        kept, bounded = split_start_contacts(robot, touching)
+    return WholeBodyScene(
+        robot, joints, kept, (*contacts, *bounded), allowed_links, hand, carried
+    ), kept
 
 
 def _follow(

@@ -34,6 +34,7 @@ from robocram.kinematics import (
     forward_kinematics,
     solve_ik,
 )
+from robocram.kinematics.planar_base import BASE_X_JOINT, BASE_Y_JOINT, BASE_YAW_JOINT
 from robocram.motion import ArmMotion, plan_arm_motion, plan_tool_line
 from robocram.motion.hand_contact import HandContact
 from robocram.motion.joint_goal import finite_goal
@@ -43,6 +44,7 @@ from robocram.motion.tool_goal import (
     ensure_reached,
     joint_values,
 )
+from robocram.motion.whole_body_tool_path import plan_whole_body_tool_path
 from robocram.projection.collision_mode import (
     allowed_links,
     collision_check,
@@ -156,7 +158,8 @@ def move_tcp(
     motion = result.base_motion
     hand = hand_contact(robot, arm, collision_mode, touching)
     if motion is not None and motion != BaseMotion():
-        if _arm_then_base(robot, arm, result, moved_base(robot, motion), collision_mode, hand):
+        goal = moved_base(robot, motion)
+        if _arm_then_base(robot, arm, result, goal, collision_mode, hand, target_in_base):
             reached = robot.world.link_pose(robot.name, spec.tool_frame)
             return ensure_reached(robot.name, arm, reached, target, target_in_map)
         target_in_base = robot.base_pose().inverse() * target_in_map
@@ -173,6 +176,7 @@ def _arm_then_base(
     base_goal: Pose,
     mode: str,
     hand: HandContact | None,
+    target_in_base: Pose,
 ) -> bool:
     """Move the base for a solution that needs it: first the base with the arm as it is
     (False: the arm moves after it); if the arm as it is does not fit there (over a table),
@@ -182,7 +186,8 @@ def _arm_then_base(
     tool near the step's line (:func:`_keeps_to_lines`): the part goes where the tool goes
     along that line, and an arm moved to where it would be once the base has moved took
     the tool off it, the fingers 12-15 mm into the handle (the drafted Fetch's fridge
-    door); such a step fails, and a shorter one is tried.
+    door). Where it would not, base and arm move together, the tool straight along the
+    step (:func:`_whole_body_step`); where that fails too, a shorter step is tried.
 
     Raises:
         NavigationLowLevelFailure: neither order works (the base's failure).
@@ -197,7 +202,10 @@ def _arm_then_base(
     except NavigationLowLevelFailure as failure:
         first = failure
     if robot.carried and not _keeps_to_lines(robot, arm, result):
-        raise first  # the hand moves a part: the arm ahead of its base would leave it behind
+        # the hand moves a part: the arm ahead of its base would leave it behind
+        if _whole_body_step(robot, arm, target_in_base, mode, hand, result):
+            return True
+        raise first
     checked = planned_against(robot)
     try:
         settings = replace(robot.motion, check=mode.replace("-", "_") != "allow_all")
@@ -213,6 +221,36 @@ def _arm_then_base(
     except NavigationLowLevelFailure:
         raise first from None
     return True
+
+
+def _whole_body_step(
+    robot: ProjectedRobot,
+    arm: str,
+    target_in_base: Pose,
+    mode: str,
+    hand: HandContact | None,
+    result: IKResult,
+) -> bool:
+    """Move base and arm at once, the tool straight to ``target_in_base`` (the root link
+    where the base stands): a part the hand carries stays on the tool's line all the way.
+    Base and arm share the motion as IK's checked solution ``result`` does (else as the
+    least motion of all joints gives). False (nothing moved) when the line cannot be
+    followed whole either way, or the base is fixed."""
+    motion = result.base_motion
+    if robot.description.drive == "fixed" or motion is None:
+        return False
+    checked = planned_against(robot)
+    goal = {BASE_X_JOINT: motion.x, BASE_Y_JOINT: motion.y, BASE_YAW_JOINT: motion.yaw}
+    for toward in ({**goal, **result.joint_positions}, None):
+        planned = plan_whole_body_tool_path(
+            robot.handle, arm, [target_in_base], settings=robot.motion, hand=hand,
+            allowed_links=allowed_links(robot, arm, mode), kind="arm", goal=toward,
+            carried=robot.carried, keep_touching=False,
+        )  # fmt: skip
+        if planned.fraction >= 1.0:
+            follow(robot, planned.motion.trajectory, checked)
+            return True
+    return False
 
 
 def _keeps_to_lines(robot: ProjectedRobot, arm: str, result: IKResult) -> bool:
