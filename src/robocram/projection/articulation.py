@@ -34,6 +34,7 @@ from robocram.kinematics import PlanarBase, forward_kinematics
 from robocram.motion import CarriedJoint
 from robocram.motion.part_path import (
     BACK_OFF,
+    PITCHES,
     PRE_GRASP,
     ROLLS,
     from_above,
@@ -276,7 +277,7 @@ def move_part(
         world.attach(name, part, moving_link(robot, part, joint))
     moved: _Held | None = None  # the last roll that moved the part
     try:
-        for above, pull in frames:
+        for pitch, pull in frames:
             for roll in rolls_for(robot, arm, part, handle):
                 checkpoint()
                 held = _Held(arm, part, joint, handle, _holding(axis, roll, palm), pull)
@@ -284,7 +285,7 @@ def move_part(
                 reached = _try_roll(robot, held, goal)
                 if abs(reached - goal) <= 1e-9:
                     robot.held_rolls[(part, handle)] = robot.held_rolls[("", arm)] = roll
-                    (robot.held_above.add if above else robot.held_above.discard)((part, handle))
+                    _remember_pitch(robot, part, handle, pitch)
                     return ArticulationResult(joint, start, reached, roll, tuple(riders))
                 if abs(reached - now) > 1e-9:  # part of the way: let go, the next roll goes on
                     opened = _released(robot, held, now)
@@ -308,16 +309,26 @@ def move_part(
 
 def _hold_frames(
     robot: ProjectedRobot, arm: str, part: str, joint: str, handle: str
-) -> list[tuple[bool, Pose]]:
-    """The frames to hold ``handle`` in (whether from above, the frame): from the front,
-    then from above (:func:`~robocram.motion.part_path.from_above`), the other way round
-    where the hand last held it from above. A suction hand's frame is on the face."""
+) -> list[tuple[float, Pose]]:
+    """The frames to hold ``handle`` in, each with its pitch down [rad]: from the front,
+    then from above (:data:`~robocram.motion.part_path.PITCHES`); the pitch that last held
+    it first. A suction hand's frame is on the face it touches."""
     pull = pull_frame(robot.world, part, joint, handle)
-    order = (True, False) if (part, handle) in robot.held_above else (False, True)
+    known = robot.held_pitches.get((part, handle))
+    pitches = list(dict.fromkeys([*(() if known is None else (known,)), 0.0, *PITCHES]))
     gripper = robot.arm(arm).gripper
     suction = gripper is not None and gripper.is_suction
-    frames = [(above, from_above(pull) if above else pull) for above in order]
-    return [(a, on_the_face(robot, part, handle, f) if suction else f) for a, f in frames]
+    frames = [(p, from_above(pull, p) if p else pull) for p in pitches]
+    return [(p, on_the_face(robot, part, handle, f) if suction else f) for p, f in frames]
+
+
+def _remember_pitch(robot: ProjectedRobot, part: str, handle: str, pitch: float) -> None:
+    """Keep the pitch from above that held ``handle`` (a grasp from the front is the first
+    tried anyway)."""
+    if pitch:
+        robot.held_pitches[(part, handle)] = pitch
+    else:
+        robot.held_pitches.pop((part, handle), None)
 
 
 def _holding(axis: np.ndarray, roll: float, palm: tuple[Vector3, Vector3] | None) -> Pose:
