@@ -59,5 +59,9 @@ def test_centauro_opens_the_bowls_drawer_pulling_its_handle_from_above() -> None
         tool = world.link_pose(scene.robot, desc.arms["left"].tool_frame).orientation
         down = quat.rotate(tool, tuple(approach_axis(robot, "left")))
         assert math.degrees(math.asin(-down[2])) == pytest.approx(45.0, abs=5.0)
+        # closing takes the handle as opening did, from above first
+        move_part(robot, "left", "kitchen", f"{DRAWER}_joint", f"{DRAWER}_handle", 0.0)
+        closed = pybullet.getJointState(kitchen.body_id, joint, cid)[0]
+        assert closed == pytest.approx(0.0, abs=0.01)
     finally:
         world.close()
