@@ -34,21 +34,18 @@ from robocram.kinematics import PlanarBase, forward_kinematics
 from robocram.motion import CarriedJoint
 from robocram.motion.part_path import (
     BACK_OFF,
-    PITCHES,
     PRE_GRASP,
     ROLLS,
-    from_above,
     grasp_in_handle,
     part_path,
-    pull_frame,
 )
 from robocram.projection.arm import move_tcp
 from robocram.projection.errors import ProjectionError
 from robocram.projection.gripper import close_gripper, open_gripper
+from robocram.projection.handle_holds import hold_frames, remember_pitch
 from robocram.projection.joint_motion import move_along_checked
 from robocram.projection.navigation import drive, place_base
 from robocram.projection.projected_robot import ProjectedRobot
-from robocram.projection.suction import on_the_face
 from robocram.tf import Pose, Vector3
 from robocram.tf import quaternion as quat
 
@@ -270,7 +267,7 @@ def move_part(
     start = world.joint_states(part)[joint]
     palm = palm_hold(robot.description, arm, HANDLE_HALF_WIDTH)
     axis = approach_axis(robot, arm) if palm is None else np.asarray(palm[0])
-    frames = _hold_frames(robot, arm, part, joint, handle)
+    frames = hold_frames(robot, arm, part, joint, handle)
     first = _RobotAt.now(robot)
     riders = resting_in(robot, part, moving_link(robot, part, joint))
     for name in riders:
@@ -285,7 +282,7 @@ def move_part(
                 reached = _try_roll(robot, held, goal)
                 if abs(reached - goal) <= 1e-9:
                     robot.held_rolls[(part, handle)] = robot.held_rolls[("", arm)] = roll
-                    _remember_pitch(robot, part, handle, pitch)
+                    remember_pitch(robot, part, handle, pitch)
                     return ArticulationResult(joint, start, reached, roll, tuple(riders))
                 if abs(reached - now) > 1e-9:  # part of the way: let go, the next roll goes on
                     opened = _released(robot, held, now)
@@ -305,30 +302,6 @@ def move_part(
         environment_part=joint,
         action="opening" if goal > start else "closing",
     )
-
-
-def _hold_frames(
-    robot: ProjectedRobot, arm: str, part: str, joint: str, handle: str
-) -> list[tuple[float, Pose]]:
-    """The frames to hold ``handle`` in, each with its pitch down [rad]: from the front,
-    then from above (:data:`~robocram.motion.part_path.PITCHES`); the pitch that last held
-    it first. A suction hand's frame is on the face it touches."""
-    pull = pull_frame(robot.world, part, joint, handle)
-    known = robot.held_pitches.get((part, handle))
-    pitches = list(dict.fromkeys([*(() if known is None else (known,)), 0.0, *PITCHES]))
-    gripper = robot.arm(arm).gripper
-    suction = gripper is not None and gripper.is_suction
-    frames = [(p, from_above(pull, p) if p else pull) for p in pitches]
-    return [(p, on_the_face(robot, part, handle, f) if suction else f) for p, f in frames]
-
-
-def _remember_pitch(robot: ProjectedRobot, part: str, handle: str, pitch: float) -> None:
-    """Keep the pitch from above that held ``handle`` (a grasp from the front is the first
-    tried anyway)."""
-    if pitch:
-        robot.held_pitches[(part, handle)] = pitch
-    else:
-        robot.held_pitches.pop((part, handle), None)
 
 
 def _holding(axis: np.ndarray, roll: float, palm: tuple[Vector3, Vector3] | None) -> Pose:
