@@ -4,8 +4,8 @@ Centauro's arms reach the kitchen drawer's handle, 0.58 m under its shoulders, o
 pointing down, and its ball hand fits between the handle and the counter's top over it
 only slanted: every grasp from the front failed and the bowl's drawer stayed shut. The
 hand now comes down onto the handle, 45 degrees first, and pulls it along the drawer's
-way out. The drawer's travel is read from PyBullet itself, the hand's slant from the
-tool frame's pose while it holds the handle.
+way out, and closes it so. The drawer's travel is read from PyBullet itself, the hand's
+slant from the tool frame's pose once it has backed off the handle along its approach.
 """
 
 from __future__ import annotations
