@@ -3,7 +3,8 @@ and the ROS arms, so both open drawers and doors the same way.
 
 The gripper takes the handle from the front: its approach axis along the handle frame's
 -x (which points out of the front), rolled about that axis by one of :data:`ROLLS` (a bar
-handle wants the fingers across it, and robots' hands differ). The joint then moves in
+handle wants the fingers across it, and robots' hands differ); when no roll from the
+front holds it, from above (:func:`from_above`, slanted first). The joint then moves in
 steps of at most :data:`LINEAR_STEP` of the handle's travel, the tool put on the handle
 at each.
 """
@@ -24,6 +25,7 @@ PROBE = 1e-3  # [m | rad] joint step over which the handle's way out is measured
 PRE_GRASP = 0.10  # [m] in front of the handle before and after holding it
 BACK_OFF = (PRE_GRASP, PRE_GRASP / 2)  # [m] tried in turn when letting go of the handle
 ROLLS = (math.pi / 2, -math.pi / 2, 0.0, math.pi)  # [rad] about the approach axis
+PITCHES = (math.radians(45.0), math.pi / 2)  # [rad] a hold frame turned down, from above
 
 
 def grasp_in_handle(axis_in_tool: np.ndarray, roll: float) -> Pose:
@@ -35,6 +37,16 @@ def grasp_in_handle(axis_in_tool: np.ndarray, roll: float) -> Pose:
         turn = np.array((0.0, 0.0, 1.0))
     aligned = quat.from_axis_angle(tuple(turn / np.linalg.norm(turn)), angle)
     return Pose(orientation=quat.multiply(quat.from_axis_angle((1.0, 0.0, 0.0), roll), aligned))
+
+
+def from_above(pull: Pose, pitch: float) -> Pose:
+    """The hold frame ``pull`` (x out of the front, z up) turned about its y so that its
+    x points ``pitch`` [rad] up: the hand comes down onto the handle, pointing down as
+    much, and pulls it along the part's way out. Tried (:data:`PITCHES`) after every grasp
+    from the front failed: Centauro's arms reach a drawer's handle, 0.58 m under its
+    shoulders, only pointing down, and its ball hand fits between the handle and the
+    counter's top over it only slanted."""
+    return pull * Pose(orientation=quat.from_axis_angle((0.0, 1.0, 0.0), -pitch))
 
 
 def handle_speed(world: World, part: str, joint: str, handle: str) -> float:

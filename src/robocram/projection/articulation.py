@@ -9,7 +9,8 @@ drawer) is attached to it for the motion, so it moves along.
 
 The grasp's roll about the approach axis is not known in advance (a bar handle wants the
 fingers across it, and robots' hands differ), so the rolls in ``motion.part_path.ROLLS``
-are tried in order, each with the whole path, from the same start.
+are tried in order, each with the whole path, from the same start; when none held it
+from the front, they are tried again from above.
 """
 
 from __future__ import annotations
@@ -37,15 +38,14 @@ from robocram.motion.part_path import (
     ROLLS,
     grasp_in_handle,
     part_path,
-    pull_frame,
 )
 from robocram.projection.arm import move_tcp
 from robocram.projection.errors import ProjectionError
 from robocram.projection.gripper import close_gripper, open_gripper
+from robocram.projection.handle_holds import hold_frames, remember_pitch
 from robocram.projection.joint_motion import move_along_checked
 from robocram.projection.navigation import drive, place_base
 from robocram.projection.projected_robot import ProjectedRobot
-from robocram.projection.suction import on_the_face
 from robocram.tf import Pose, Vector3
 from robocram.tf import quaternion as quat
 
@@ -267,30 +267,29 @@ def move_part(
     start = world.joint_states(part)[joint]
     palm = palm_hold(robot.description, arm, HANDLE_HALF_WIDTH)
     axis = approach_axis(robot, arm) if palm is None else np.asarray(palm[0])
-    pull = pull_frame(world, part, joint, handle)
-    gripper = robot.arm(arm).gripper
-    if gripper is not None and gripper.is_suction:
-        pull = on_the_face(robot, part, handle, pull)
+    frames = hold_frames(robot, arm, part, joint, handle)
     first = _RobotAt.now(robot)
     riders = resting_in(robot, part, moving_link(robot, part, joint))
     for name in riders:
         world.attach(name, part, moving_link(robot, part, joint))
     moved: _Held | None = None  # the last roll that moved the part
     try:
-        for roll in rolls_for(robot, arm, part, handle):
-            checkpoint()
-            held = _Held(arm, part, joint, handle, _holding(axis, roll, palm), pull)
-            here, now = _RobotAt.now(robot), world.joint_states(part)[joint]
-            reached = _try_roll(robot, held, goal)
-            if abs(reached - goal) <= 1e-9:
-                robot.held_rolls[(part, handle)] = robot.held_rolls[("", arm)] = roll
-                return ArticulationResult(joint, start, reached, roll, tuple(riders))
-            if abs(reached - now) > 1e-9:  # part of the way: let go, the next roll goes on
-                opened = _released(robot, held, now)
-                _let_go(_straight_only(robot), arm, part, handle, held.grasp, pull, opened)
-                moved = held
-            else:
-                _back_to_start(robot, held, now, here.base, here.joints)
+        for pitch, pull in frames:
+            for roll in rolls_for(robot, arm, part, handle):
+                checkpoint()
+                held = _Held(arm, part, joint, handle, _holding(axis, roll, palm), pull)
+                here, now = _RobotAt.now(robot), world.joint_states(part)[joint]
+                reached = _try_roll(robot, held, goal)
+                if abs(reached - goal) <= 1e-9:
+                    robot.held_rolls[(part, handle)] = robot.held_rolls[("", arm)] = roll
+                    remember_pitch(robot, part, handle, pitch)
+                    return ArticulationResult(joint, start, reached, roll, tuple(riders))
+                if abs(reached - now) > 1e-9:  # part of the way: let go, the next roll goes on
+                    opened = _released(robot, held, now)
+                    _let_go(_straight_only(robot), arm, part, handle, held.grasp, pull, opened)
+                    moved = held
+                else:
+                    _back_to_start(robot, held, now, here.base, here.joints)
         if moved is not None:
             _undo(robot, moved, start, first)
     finally:
@@ -298,7 +297,8 @@ def move_part(
             world.detach(name)
     raise EnvironmentManipulationImpossible(
         f"{robot.name}'s {arm} arm cannot hold {handle!r} while {joint!r} moves from "
-        f"{start:.3f} to {goal:.3f} with any grasp roll",
+        f"{start:.3f} to {goal:.3f} with any grasp roll, from the front or from above "
+        "(what to add: a wrist that turns the hand onto the bar, or a stand nearer it)",
         environment_part=joint,
         action="opening" if goal > start else "closing",
     )

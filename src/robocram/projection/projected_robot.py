@@ -36,6 +36,9 @@ class ProjectedRobot:
     """The grasp roll [rad] that last held each ``(part, handle)`` all the way, and
     ``("", arm)`` any handle with that arm: a drawer opened with one roll is closed with
     it first (:mod:`~robocram.projection.articulation`)."""
+    held_pitches: dict[tuple[str, str], float] = field(default_factory=dict, compare=False)
+    """The pitch [rad] from above with which each ``(part, handle)`` was last held, where
+    the front failed: closing takes it so first."""
     handle: RobotHandle = field(init=False, compare=False, repr=False)
     """The robot of the world, looked up once: what the motion layer takes."""
 

@@ -1,14 +1,15 @@
 """Opening and closing articulated parts (drawers, doors) with an arm of a robot behind ROS.
 
 As in projection (``projection/articulation.py``) the hand takes the handle from the front
-and the tool stays on the handle while the part's joint moves. Over ROS that is a series
-of goals: open the gripper, the tool before the handle and onto it (the arm's
-``move_tcp``), close the gripper, then *one* arm trajectory through the IK solutions that
-keep the tool on the handle at each step of the joint (planned in the world given to
-``ros_robot``, arm only: the base stays where the plan put it), open the gripper and back
-off. The robot side moves the part with the hand (a real drawer follows the hand pulling
-it; our driver does so kinematically); the part's joint is then read back from its joint
-states (``world_mirror.py``) and checked against the goal.
+(then, when no roll holds it so, from above) and the tool stays on the handle while the
+part's joint moves. Over ROS that is a series of goals: open the gripper, the tool before
+the handle and onto it (the arm's ``move_tcp``), close the gripper, then *one* arm
+trajectory through the IK solutions that keep the tool on the handle at each step of the
+joint (planned in the world given to ``ros_robot``, arm only: the base stays where the
+plan put it), open the gripper and back off. The robot side moves the part with the hand
+(a real drawer follows the hand pulling it; our driver does so kinematically); the part's
+joint is then read back from its joint states (``world_mirror.py``) and checked against
+the goal.
 
 It needs that world: the handle's pose and how it moves with the joint are read there.
 """
@@ -33,7 +34,15 @@ from robocram.execution.failures import (
 from robocram.grasping import approach_axis
 from robocram.kinematics import IKOptions, PlanarBase, base_in_ik, solve_ik
 from robocram.motion import JointTrajectory, joint_limits, time_parameterize
-from robocram.motion.part_path import BACK_OFF, PRE_GRASP, ROLLS, grasp_in_handle, part_path
+from robocram.motion.part_path import (
+    BACK_OFF,
+    PITCHES,
+    PRE_GRASP,
+    ROLLS,
+    from_above,
+    grasp_in_handle,
+    part_path,
+)
 from robocram.motion.tool_goal import IK_RANDOM_SEED
 from robocram.ros.errors import RosCommandError
 from robocram.ros.goal_runner import FailureFactory
@@ -91,10 +100,13 @@ def move_part(
     action = "opening" if goal > start else "closing"
     failures: list[str] = []
     follow = _with_base_steps if base_in_ik(client.desc, arm) else _with_grasp
-    for roll in ROLLS:
-        why = follow(client, tools, arm, (part, joint, handle), grasp_in_handle(axis, roll), goal)
+    for pitch, roll in ((p, r) for p in (0.0, *PITCHES) for r in ROLLS):
+        turn = from_above(Pose(), pitch) if pitch else None
+        grasp = grasp_in_handle(axis, roll)
+        why = follow(client, tools, arm, (part, joint, handle), grasp, goal, turn)
         if why is not None:
-            failures.append(f"roll {roll:.2f}: {why}")
+            above = f", from above {pitch:.2f} rad down" if pitch else ""
+            failures.append(f"roll {roll:.2f}{above}: {why}")
             continue
         reached = world.joint_states(part)[joint]  # as the robot side reports it
         if abs(reached - goal) > PART_TOLERANCE:
@@ -107,7 +119,8 @@ def move_part(
         return reached
     raise EnvironmentManipulationImpossible(
         f"{client.name}'s {arm} arm cannot hold {handle!r} while {joint!r} moves from "
-        f"{start:.3f} to {goal:.3f} with any grasp roll: " + "; ".join(failures),
+        f"{start:.3f} to {goal:.3f} with any grasp roll, from the front or from above: "
+        + "; ".join(failures),
         environment_part=joint,
         action=action,
     )
@@ -120,23 +133,25 @@ def _with_grasp(
     moving: tuple[str, str, str],
     grasp: Pose,
     goal: float,
+    turn: Pose | None = None,
 ) -> str | None:
-    """Move the part holding its handle with ``grasp``; None if done, else why not (the
-    hand then is open and off the handle)."""
+    """Move the part holding its handle with ``grasp`` (in the handle's frame ``turn``ed:
+    from above); None if done, else why not (the hand then is open and off the handle)."""
     part, _, handle = moving
     world = _world(client, part, moving[1], goal)
-    torso = _torso_for_path(client, world, arm, moving, grasp, goal)
+    held = grasp if turn is None else turn * grasp
+    torso = _torso_for_path(client, world, arm, moving, held, goal)
     if torso is None:
         return "no torso height lets the arm follow the handle"
     try:
         _raise_torso(client, torso)
-        _take_handle(client, tools, arm, world.link_pose(part, handle), grasp)
+        _take_handle(client, tools, arm, _frame(world, part, handle, turn), grasp)
     except REACHING as failure:
         return str(failure)
-    path = _follow_path(client, world, arm, moving, grasp, goal)
+    path = _follow_path(client, world, arm, moving, held, goal)
     if path is not None:
         client.follow_trajectory(f"arm({arm})", path, _failure(arm, handle))
-    _let_go(client, tools, arm, world.link_pose(part, handle), grasp)
+    _let_go(client, tools, arm, _frame(world, part, handle, turn), grasp)
     return None if path is not None else "the arm cannot keep the tool on the handle"
 
 
@@ -147,6 +162,7 @@ def _with_base_steps(
     moving: tuple[str, str, str],
     grasp: Pose,
     goal: float,
+    turn: Pose | None = None,
 ) -> str | None:
     """Move the part holding its handle with ``grasp`` a step of the joint at a time, the
     base moving with the arm at each step (an arm that reaches with its base: Stretch's
@@ -157,7 +173,7 @@ def _with_base_steps(
     world = _world(client, part, joint, goal)
     values = part_path(world, part, joint, handle, goal)
     try:
-        _take_handle(client, tools, arm, world.link_pose(part, handle), grasp)
+        _take_handle(client, tools, arm, _frame(world, part, handle, turn), grasp)
     except (*REACHING, *DRIVING) as failure:
         return str(failure)
     why = None
@@ -165,13 +181,19 @@ def _with_base_steps(
         for value in values:
             start = world.joint_states(part)[joint]
             world.set_joint_states(part, {joint: value})
-            target = world.link_pose(part, handle) * grasp
+            target = _frame(world, part, handle, turn) * grasp
             world.set_joint_states(part, {joint: start})
             tools.move_tcp(arm, target, "allow_hand", HANDLE, base_travel=STEP_TRAVEL)
     except (*REACHING, *DRIVING) as failure:
         why = f"the arm and base cannot keep the tool on the handle: {failure}"
-    _let_go(client, tools, arm, world.link_pose(part, handle), grasp)
+    _let_go(client, tools, arm, _frame(world, part, handle, turn), grasp)
     return why
+
+
+def _frame(world: World, part: str, handle: str, turn: Pose | None) -> Pose:
+    """The frame (map) the hand holds ``handle`` in: the handle's own, or ``turn``ed."""
+    pose = world.link_pose(part, handle)
+    return pose if turn is None else pose * turn
 
 
 def _world(client: RosRobotClient, part: str, joint: str, goal: float) -> World:
