@@ -4,16 +4,19 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
+from pathlib import Path
 
 import pytest
 
 from robocram.execution import Task, TaskStopped
 from robocram.execution.failures import EnvironmentManipulationImpossible
 from robocram.execution.task_context import binding_task
-from robocram.projection import ProjectedRobot, ProjectionError
+from robocram.projection import ProjectedRobot, ProjectionError, simulated_robot
 from robocram.projection.articulation import move_part
 from robocram.scenes import KitchenScene, kitchen_scene
 from robocram.tf import Pose
+from robocram.traces import TraceDatabase, trace_to
+from robocram.traces.trajectory_audit import audit_runs
 from robocram.tf import quaternion as quat
 
 DRAWER = "drawer_unit_drawer_3"  # the top drawer of the unit whose front is at y = 1.9 m
@@ -126,26 +129,17 @@ FINGERS_IN_THE_HANDLE = pytest.mark.xfail(
 )
 
 
-ARM_AHEAD_OF_BASE = pytest.mark.xfail(
-    reason="the HSR opened the cupboard's door to 1.2 rad only with steps whose arm moved "
-    "ahead of its base, taking the tool 3-14.5 cm off the handle's arc while it held the "
-    "handle (not executable; now refused, projection/arm.py OFF_LINE): a door this wide "
-    "needs the base and the arm moving together along the arc (whole-body steps)",
-    strict=True,
-)
-
-
 @pytest.mark.parametrize(
     ("door", "robot", "arm", "aside"),  # aside: the arm's shoulder before the handle
     [
         pytest.param("cupboard", "pr2", "right", -0.19, marks=BESIDE_THE_WALL),
-        pytest.param("cupboard", "hsrb", "arm", -0.08, marks=ARM_AHEAD_OF_BASE),
+        ("cupboard", "hsrb", "arm", -0.08),  # whole-body steps: before, arm ahead of base
         pytest.param("fridge", "pr2", "right", -0.19, marks=FINGERS_IN_THE_HANDLE),
         ("fridge", "hsrb", "arm", -0.08),
     ],
 )
 def test_doors_open_wide_with_the_base_following_the_arc(
-    door: str, robot: str, arm: str, aside: float
+    door: str, robot: str, arm: str, aside: float, tmp_path: Path
 ) -> None:
     scene = kitchen_scene(robot)
     world = scene.world
@@ -156,7 +150,8 @@ def test_doors_open_wide_with_the_base_following_the_arc(
     x, y, _ = world.link_pose("kitchen", handle).position
     standing = Pose((x + aside, y - 0.75, 0.0), FACING_NORTH)
     world.set_pose(scene.robot, standing)
-    result = move_part(ProjectedRobot.of(world, scene.robot), arm, "kitchen", joint, handle, 1.2)
+    with trace_to(tmp_path / "door.db", world=world), simulated_robot(world, scene.robot):
+        result = move_part(ProjectedRobot.of(world, scene.robot), arm, "kitchen", joint, handle, 1.2)
     assert result.reached == pytest.approx(1.2, abs=1e-9)
     assert world.joint_states("kitchen")[joint] == pytest.approx(1.2, abs=0.03)
     assert world.pose(scene.robot).distance_to(standing) > 0.05  # the arm alone stops early
@@ -164,3 +159,6 @@ def test_doors_open_wide_with_the_base_following_the_arc(
     hand = {*desc.arms[arm].hand_links, *desc.arms[arm].gripper_links}
     assert touching <= hand  # at most the open hand still at the handle of a wide door
     world.close()
+    with TraceDatabase(tmp_path / "door.db") as db:  # replayed densely, the door riding along
+        report = audit_runs(db)
+    assert report.trajectories > 10 and report.clean, report.summary_lines()

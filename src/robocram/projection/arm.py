@@ -178,16 +178,18 @@ def _arm_then_base(
     hand: HandContact | None,
     target_in_base: Pose,
 ) -> bool:
-    """Move the base for a solution that needs it: first the base with the arm as it is
-    (False: the arm moves after it); if the arm as it is does not fit there (over a table),
-    the arm first, then the base (True: both done). Each motion is checked on its own
-    (the drive lets the hand's links touch, the arm's motion bounds them by ``hand``).
-    While the hand carries a part (a door's step), only where the arm's move keeps the
-    tool near the step's line (:func:`_keeps_to_lines`): the part goes where the tool goes
-    along that line, and an arm moved to where it would be once the base has moved took
-    the tool off it, the fingers 12-15 mm into the handle (the drafted Fetch's fridge
-    door). Where it would not, base and arm move together, the tool straight along the
-    step (:func:`_whole_body_step`); where that fails too, a shorter step is tried.
+    """Move the base for a solution that needs it. An arm that reaches with its base
+    (``base_in_ik``: the HSR's) turning a part (a door's step) moves base and arm
+    together, the tool straight along the step (:func:`_whole_body_step`: the part goes
+    where the tool goes, on that line, all the way). Otherwise, or where that fails:
+    first the base with the arm as it is (False:
+    the arm moves after it); if the arm as it is does not fit there (over a table), the
+    arm first, then the base (True: both done). Each motion is checked on its own (the
+    drive lets the hand's links touch, the arm's motion bounds them by ``hand``). While
+    the hand carries a part, the arm goes first only where it keeps the tool near the
+    step's line (:func:`_keeps_to_lines`): an arm moved to where it would be once the base
+    has moved took the tool off it, the fingers 12-15 mm into the handle (the drafted
+    Fetch's fridge door); else base and arm together, then a shorter step.
 
     Raises:
         NavigationLowLevelFailure: neither order works (the base's failure).
@@ -195,6 +197,9 @@ def _arm_then_base(
     if mode.replace("-", "_") == "allow_all":  # nothing checked, the base neither
         follow(robot, unchecked_base_motion(robot, base_goal))
         return False
+    whole_first = base_in_ik(robot.description, arm) and _turning_part(robot)
+    if whole_first and _whole_body_step(robot, arm, target_in_base, mode, hand, result):
+        return True
     free = allowed_links(robot, arm, mode)
     try:
         drive(robot, base_goal, free, hand)
@@ -203,7 +208,7 @@ def _arm_then_base(
         first = failure
     if robot.carried and not _keeps_to_lines(robot, arm, result):
         # the hand moves a part: the arm ahead of its base would leave it behind
-        if _whole_body_step(robot, arm, target_in_base, mode, hand, result):
+        if not whole_first and _whole_body_step(robot, arm, target_in_base, mode, hand, result):
             return True
         raise first
     checked = planned_against(robot)
@@ -221,6 +226,26 @@ def _arm_then_base(
     except NavigationLowLevelFailure:
         raise first from None
     return True
+
+
+def _turning_part(robot: ProjectedRobot) -> bool:
+    """Whether the hand turns a part about a joint on this step (a door, not a drawer):
+    its link's orientation differs between the step's ends. Drawers keep their old order
+    (base first), which their stands and looks were tuned to: whole-body steps first let
+    the HSR's base back off further, where it no longer saw the bowl in the drawer."""
+    world = robot.world
+    for carried in robot.carried:
+        body = world.object(carried.obj)
+        index = body.joint_index[carried.joint]
+        link = next(name for name, i in body.link_index.items() if i == index)
+        now = world.joint_states(carried.obj)[carried.joint]
+        there = world.link_pose(carried.obj, link).orientation
+        world.set_joint_states(carried.obj, {carried.joint: carried.start})
+        here = world.link_pose(carried.obj, link).orientation
+        world.set_joint_states(carried.obj, {carried.joint: now})
+        if abs(abs(float(np.dot(here, there))) - 1.0) > 1e-12:
+            return True
+    return False
 
 
 def _whole_body_step(
