@@ -15,9 +15,9 @@ from robocram.projection import ProjectedRobot, ProjectionError, simulated_robot
 from robocram.projection.articulation import move_part
 from robocram.scenes import KitchenScene, kitchen_scene
 from robocram.tf import Pose
+from robocram.tf import quaternion as quat
 from robocram.traces import TraceDatabase, trace_to
 from robocram.traces.trajectory_audit import audit_runs
-from robocram.tf import quaternion as quat
 
 DRAWER = "drawer_unit_drawer_3"  # the top drawer of the unit whose front is at y = 1.9 m
 FACING_NORTH = quat.from_euler(0.0, 0.0, math.pi / 2)
@@ -151,7 +151,9 @@ def test_doors_open_wide_with_the_base_following_the_arc(
     standing = Pose((x + aside, y - 0.75, 0.0), FACING_NORTH)
     world.set_pose(scene.robot, standing)
     with trace_to(tmp_path / "door.db", world=world), simulated_robot(world, scene.robot):
-        result = move_part(ProjectedRobot.of(world, scene.robot), arm, "kitchen", joint, handle, 1.2)
+        result = move_part(
+            ProjectedRobot.of(world, scene.robot), arm, "kitchen", joint, handle, 1.2
+        )
     assert result.reached == pytest.approx(1.2, abs=1e-9)
     assert world.joint_states("kitchen")[joint] == pytest.approx(1.2, abs=0.03)
     assert world.pose(scene.robot).distance_to(standing) > 0.05  # the arm alone stops early
