@@ -12,9 +12,9 @@ import pytest
 from robocram.plans import pick_up
 from robocram.projection import simulated_robot
 from robocram.ros import Roscore, ros_robot
-from robocram.ros_driver.driver_process import DriverProcess
 from robocram.scenes import tabletop_scene
 from robocram.tf import Pose, PoseStamped, transform_pose
+from tests.ros.driver_pool import DriverPool
 
 AGREE = 0.01  # [m] ROS and direct projection agree this closely
 
@@ -46,13 +46,17 @@ def _direct(robot: str) -> tuple[Pose, Pose, Pose, str]:
     ids=["pr2-no_world", "pr2-world", "hsrb-no_world", "hsrb-world"],
 )
 def test_pick_up_through_ros_agrees_with_projection(
-    roscore: Roscore, master_nodes: Callable[[], set[str]], robot: str, with_world: bool
+    roscore: Roscore,
+    drivers: DriverPool,
+    master_nodes: Callable[[], set[str]],
+    robot: str,
+    with_world: bool,
 ) -> None:
     grasp, tool, mug, arm = _direct(robot)
     look = tabletop_scene(robot).look_target
     world = tabletop_scene(robot).world if with_world else None  # motions checked in it
     threads = set(threading.enumerate())
-    with DriverProcess(roscore.uri, robot), ros_robot(robot, roscore.uri, world=world) as run:
+    with drivers(robot), ros_robot(robot, roscore.uri, world=world) as run:
         result = pick_up(look)
         ros_tool = transform_pose(PoseStamped(result.tool_frame), "map").pose
         ros_mug = run.transforms.lookup("map", "mug-1")
