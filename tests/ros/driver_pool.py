@@ -114,6 +114,11 @@ class DriverPool:
         self.started += 1
         return driver
 
+    @property
+    def domain_id(self) -> int:
+        """ROS 2: the domain of the running driver."""
+        return self._domain_id
+
     @contextlib.contextmanager
     def _in_domain(self) -> Iterator[None]:
         """ROS 2: the driver's domain in the environment, as ``ros2_domain`` sets it."""

@@ -1,5 +1,6 @@
 """What a driver serves, read by a plain rospy or rclpy node of its own (not our client):
-one message of each joint state topic, one of ``/tf`` and the latched ``/tf_static``."""
+one message of each joint state topic, one of ``/tf`` and the latched ``/tf_static``;
+on ROS 2 also the topics and services of the driver's node (``publishes``, ``serves``)."""
 
 from __future__ import annotations
 
@@ -65,6 +66,10 @@ for _ in range(3000):
     if len(out) == want:
         break
     rclpy.spin_once(node, timeout_sec=0.01)
+graph = {"publishes": node.get_publisher_names_and_types_by_node,
+         "serves": node.get_service_names_and_types_by_node}
+for kind, names in graph.items():
+    out[kind] = {name: [] for name, _ in names("robocram_driver", "/")}
 print("SERVED" + json.dumps(out))
 node.destroy_node()
 rclpy.shutdown()
@@ -85,7 +90,8 @@ def served_state(
     done = subprocess.run(argv, env=env, capture_output=True, text=True, timeout=90, check=True)
     (line,) = [x for x in done.stdout.splitlines() if x.startswith("SERVED")]
     served: Served = json.loads(line.removeprefix("SERVED"))
-    assert set(served) == {*joint_topics, "/tf", "/tf_static"}, served.keys()
+    graph = set() if domain is None else {"publishes", "serves"}
+    assert set(served) == {*joint_topics, "/tf", "/tf_static", *graph}, served.keys()
     return served
 
 

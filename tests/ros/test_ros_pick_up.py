@@ -19,19 +19,37 @@ from tests.ros.driver_pool import DriverPool
 AGREE = 0.01  # [m] ROS and direct projection agree this closely
 
 
-def _direct(robot: str) -> tuple[Pose, Pose, Pose, str]:
+Direct = tuple[Pose, Pose, Pose, str]
+
+
+def _direct(robot: str) -> Direct:
     """Tool at grasp, tool lifted, lifted mug, arm: all in map, by direct projection."""
     scene = tabletop_scene(robot)
     world = scene.world
     with simulated_robot(world, robot):
         result = pick_up(scene.look_target)
     assert result.grasp.frame_id == "map"
-    return (
+    direct = (
         result.grasp.pose,
         world.link_pose(robot, result.tool_frame),
         world.pose("mug-1"),
         result.arm,
     )
+    world.close()
+    return direct
+
+
+@pytest.fixture(scope="module")
+def projected() -> Callable[[str], Direct]:
+    """``_direct`` of a robot, projected once for the module's tests of that robot."""
+    done: dict[str, Direct] = {}
+
+    def of(robot: str) -> Direct:
+        if robot not in done:
+            done[robot] = _direct(robot)
+        return done[robot]
+
+    return of
 
 
 @pytest.mark.parametrize(
@@ -48,13 +66,15 @@ def _direct(robot: str) -> tuple[Pose, Pose, Pose, str]:
 def test_pick_up_through_ros_agrees_with_projection(
     roscore: Roscore,
     drivers: DriverPool,
+    projected: Callable[[str], Direct],
     master_nodes: Callable[[], set[str]],
     robot: str,
     with_world: bool,
 ) -> None:
-    grasp, tool, mug, arm = _direct(robot)
-    look = tabletop_scene(robot).look_target
-    world = tabletop_scene(robot).world if with_world else None  # motions checked in it
+    grasp, tool, mug, arm = projected(robot)
+    scene = tabletop_scene(robot)
+    look = scene.look_target
+    world = scene.world if with_world else None  # motions checked in it
     threads = set(threading.enumerate())
     with drivers(robot), ros_robot(robot, roscore.uri, world=world) as run:
         result = pick_up(look)
@@ -67,7 +87,7 @@ def test_pick_up_through_ros_agrees_with_projection(
     assert result.arm == arm
     assert ros_tool.distance_to(tool) < AGREE
     assert ros_mug.distance_to(mug) < AGREE
-    assert ros_mug.position[2] > 0.09 + tabletop_scene(robot).look_target.position[2]  # lifted
+    assert ros_mug.position[2] > 0.09 + look.position[2]  # lifted
     assert ros_grasp.distance_to(grasp) < AGREE
     assert set(threading.enumerate()) == threads
     assert multiprocessing.active_children() == []
