@@ -50,14 +50,3 @@ def master_nodes(roscore: Roscore) -> Callable[[], set[str]]:
         return {node for kind in state for _, nodes in kind for node in nodes}
 
     return nodes
-
-
-@pytest.fixture
-def ros2_domain(monkeypatch: pytest.MonkeyPatch) -> Iterator[int]:
-    """A ROS 2 domain of this test's own, its traffic kept on this machine."""
-    from robocram.ros.ros2_domain import free_domain
-
-    with free_domain() as domain:
-        monkeypatch.setenv("ROS_DOMAIN_ID", str(domain))
-        monkeypatch.setenv("ROS_AUTOMATIC_DISCOVERY_RANGE", "LOCALHOST")
-        yield domain

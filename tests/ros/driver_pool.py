@@ -121,7 +121,7 @@ class DriverPool:
 
     @contextlib.contextmanager
     def _in_domain(self) -> Iterator[None]:
-        """ROS 2: the driver's domain in the environment, as ``ros2_domain`` sets it."""
+        """ROS 2: the driver's domain in the environment, its traffic kept on this machine."""
         if self.ros != 2:
             yield
             return

@@ -62,8 +62,8 @@ subs.append(node.create_subscription(TFMessage, "/tf", tf("/tf"), 10))
 static = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL)
 subs.append(node.create_subscription(TFMessage, "/tf_static", tf("/tf_static"), static))
 want = len(topics) + 2
-for _ in range(3000):
-    if len(out) == want:
+for _ in range(3000):  # every topic heard and the driver's node discovered
+    if len(out) == want and "robocram_driver" in node.get_node_names():
         break
     rclpy.spin_once(node, timeout_sec=0.01)
 graph = {"publishes": node.get_publisher_names_and_types_by_node,
@@ -87,7 +87,8 @@ def served_state(
     else:
         argv = [*child_argv(ROS2_READER), json.dumps(joint_topics)]
         env = ros2_prefix().environment(domain)
-    done = subprocess.run(argv, env=env, capture_output=True, text=True, timeout=90, check=True)
+    done = subprocess.run(argv, env=env, capture_output=True, text=True, timeout=90)
+    assert done.returncode == 0, done.stderr[-3000:]
     (line,) = [x for x in done.stdout.splitlines() if x.startswith("SERVED")]
     served: Served = json.loads(line.removeprefix("SERVED"))
     graph = set() if domain is None else {"publishes", "serves"}

@@ -22,7 +22,6 @@ from robocram.projection import simulated_robot
 from robocram.ros import RosCancelIgnored, RosConnectionLost, RosExtraMissing, ros_robot
 from robocram.ros.ros2_environment import child_argv, ros2_prefix
 from robocram.ros.ros_config import default_facts
-from robocram.ros_driver.driver_process import DriverProcess
 from robocram.scenes import tabletop_scene
 from robocram.tf import Pose, PoseStamped, pose_to_ros, transform_pose
 from tests.ros.driver_pool import DriverPool
@@ -165,12 +164,10 @@ def test_stopping_mid_navigation_cancels_the_nav2_goal_and_the_base_stops(
     assert 0.0 < cancel - stops[0] < 0.05  # [s] the stop reached the driver within 50 ms
 
 
-def test_a_reset_driver_serves_what_a_fresh_one_does(
-    drivers2: DriverPool, ros2_domain: int
-) -> None:
+def test_a_reset_driver_serves_what_a_fresh_one_does(drivers2: DriverPool) -> None:
     """The module's driver, its robot moved here (torso, gripper, base) and its clock
     shifted, is reset: it serves the robot's joints, every transform, its topics and its
-    services as a driver started fresh (on a domain of its own) does."""
+    services as a driver started fresh does."""
     with drivers2("pr2", clock_offset=10.0), ros_robot("pr2", ros=2) as run:
         perform(a.motion(type="moving-torso", joint_angle=0.2))
         perform(a.motion(type="opening", gripper="left"))
@@ -178,13 +175,38 @@ def test_a_reset_driver_serves_what_a_fresh_one_does(
         moved = run.environment.client.joint_states()["torso_lift_joint"]
     with drivers2("pr2"):
         reset = served_state(["/joint_states"], domain=drivers2.domain_id)
-    drivers2.close()
-    with DriverProcess("", "pr2", ros=2, domain_id=ros2_domain):
-        fresh = served_state(["/joint_states"], domain=ros2_domain)
+    drivers2.close()  # the next driver of the pool is started fresh (the test after uses it)
+    started = drivers2.started
+    with drivers2("pr2"):
+        fresh = served_state(["/joint_states"], domain=drivers2.domain_id)
+    assert drivers2.started == started + 1
     assert moved == pytest.approx(0.2, abs=0.005)
     assert fresh["/joint_states"]["torso_lift_joint"] != pytest.approx([0.2], abs=0.005)
     assert_same_state(reset, fresh, SAME)
     assert "/navigate_to_pose/_action/send_goal" in fresh["serves"]
+
+
+def test_a_cancel_the_server_refuses_raises_that_the_robot_may_still_move(
+    drivers2: DriverPool,
+) -> None:
+    facts = (
+        "ros_action_timeout(pr2, navigation, 1.0).\nros_cancel_timeout(pr2, 0.5).\n"
+        + default_facts("pr2", ros=2)
+    )
+    with (
+        drivers2("pr2", fault="ignore_cancel"),
+        ros_robot("pr2", ros=2, ros_facts=facts),
+    ):
+        start = time.monotonic()
+        with pytest.raises(RosCancelIgnored) as ignored:
+            perform(a.motion(type="going", target=Pose((-1.0, 0.0, 0.0))))
+        waited = time.monotonic() - start
+    # the action's timeout (1 s), then the cancel's (0.5 s), both waited out; the upper
+    # bound only says it did not hang (a loaded machine took 3.8 s with teardown)
+    assert 1.5 - 0.05 <= waited < 1.5 + 8.0
+    assert ignored.value.server == "/navigate_to_pose"
+    assert ignored.value.timeout == 0.5
+    assert ignored.value.stopping is False
 
 
 def test_a_parallel_gripper_takes_a_joint_state_command_and_reports_its_state(
@@ -272,29 +294,6 @@ def test_a_point_head_controller_aims_the_camera_at_the_target(
     axis = camera.matrix()[:3, 2]  # the optical axis: z
     to_target = np.subtract(target.position, camera.position)
     assert float(axis @ to_target) / float(np.linalg.norm(to_target)) > 0.99  # aimed
-
-
-def test_a_cancel_the_server_refuses_raises_that_the_robot_may_still_move(
-    drivers2: DriverPool,
-) -> None:
-    facts = (
-        "ros_action_timeout(pr2, navigation, 1.0).\nros_cancel_timeout(pr2, 0.5).\n"
-        + default_facts("pr2", ros=2)
-    )
-    with (
-        drivers2("pr2", fault="ignore_cancel"),
-        ros_robot("pr2", ros=2, ros_facts=facts),
-    ):
-        start = time.monotonic()
-        with pytest.raises(RosCancelIgnored) as ignored:
-            perform(a.motion(type="going", target=Pose((-1.0, 0.0, 0.0))))
-        waited = time.monotonic() - start
-    # the action's timeout (1 s), then the cancel's (0.5 s), both waited out; the upper
-    # bound only says it did not hang (a loaded machine took 3.8 s with teardown)
-    assert 1.5 - 0.05 <= waited < 1.5 + 8.0
-    assert ignored.value.server == "/navigate_to_pose"
-    assert ignored.value.timeout == 0.5
-    assert ignored.value.stopping is False
 
 
 def test_a_controller_killed_mid_goal_gives_a_typed_failure_in_bounded_time(

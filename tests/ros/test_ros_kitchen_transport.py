@@ -18,7 +18,6 @@ from robocram.plans import pick_up
 from robocram.plans.transport import TransportResult, transport
 from robocram.projection import simulated_robot
 from robocram.ros import Roscore, ros_robot
-from robocram.ros_driver.driver_process import DriverProcess
 from robocram.scenes import kitchen_scene, tabletop_scene
 from robocram.tf import Pose
 from robocram.world import World
@@ -143,10 +142,12 @@ def test_a_reset_driver_serves_what_a_fresh_one_does(roscore: Roscore, drivers: 
     with drivers(controllers="pr2", scene="kitchen"):
         reset = served_state(topics, roscore.uri)
         reset_topics = _driver_topics(roscore.uri)
-    drivers.close()
-    with DriverProcess(roscore.uri, controllers="pr2", scene="kitchen"):
+    drivers.close()  # the next driver of the pool is started fresh (the tests after use it)
+    started = drivers.started
+    with drivers(controllers="pr2", scene="kitchen"):
         fresh = served_state(topics, roscore.uri)
         fresh_topics = _driver_topics(roscore.uri)
+    assert drivers.started == started + 1
     assert moved == pytest.approx(0.2, abs=0.005)
     assert fresh["/joint_states"]["torso_lift_joint"] != pytest.approx([0.2], abs=0.005)
     assert_same_state(reset, fresh, SAME_STATE)
