@@ -11,15 +11,20 @@ from PIL import Image
 
 from robocram import demo
 
+GIF_SIZE = (160, 120)  # [px] the GIF's frames here: TinyRenderer took 3/4 of the demo's time
+# drawing its 97 frames at the demo's 480 x 360; the frames and their number stay the same
+
 
 def test_demo_transports_both_items_and_writes_two_pictures_and_a_gif(
-    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
 ) -> None:
+    monkeypatch.setattr(demo, "GIF_SIZE", GIF_SIZE)
     written = demo.main(tmp_path)
     pictures = [tmp_path / "demo_before.png", tmp_path / "demo_after.png"]
     assert written == [*pictures, tmp_path / "demo.gif"]
     with Image.open(tmp_path / "demo.gif") as gif:
         assert gif.format == "GIF" and getattr(gif, "n_frames", 1) > 10  # it moves
+        assert gif.size == GIF_SIZE
     for png in pictures:
         data = png.read_bytes()
         assert data[:8] == b"\x89PNG\r\n\x1a\n"

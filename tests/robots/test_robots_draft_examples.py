@@ -11,6 +11,7 @@ import difflib
 import importlib.util
 import math
 import warnings
+from collections.abc import Callable
 from pathlib import Path
 from types import ModuleType
 
@@ -23,7 +24,7 @@ from robocram.execution import perform
 from robocram.kinematics import IKOptions, solve_ik
 from robocram.plans import pick_up
 from robocram.projection import simulated_robot
-from robocram.robot_check import check_robot, description_from
+from robocram.robot_check import ReportCard, check_robot, description_from
 from robocram.robots import draft_description
 from robocram.scenes import UnfitRobotError, tabletop_placement, tabletop_scene
 from robocram.scenes.standing import PEDESTAL_GAP, PEDESTAL_TABLE
@@ -78,14 +79,27 @@ def test_example_is_a_draft_with_few_edits(name: str) -> None:
     assert edits == EDITS[name] <= MAX_EDITS
 
 
+@pytest.fixture(scope="module")
+def cards() -> Callable[[str], ReportCard]:
+    """The report card of an example, checked once for the module's tests of it."""
+    done: dict[str, ReportCard] = {}
+
+    def of(name: str) -> ReportCard:
+        if name not in done:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                done[name] = check_robot(description_from(str(EXAMPLES / f"{name}.py")))
+        return done[name]
+
+    return of
+
+
 @pytest.mark.parametrize("name", CHECKED_CLEAN)
-def test_example_checks_clean(name: str) -> None:
+def test_example_checks_clean(name: str, cards: Callable[[str], ReportCard]) -> None:
     """The one-sided jaws (z1, so101) passed only once their tool frames left the fixed
     jaw (issue 37): the mug is wider than they open, so they close on a probe that fits,
     centred on the tool frame, and the card says that plans cannot pick mugs with them."""
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        card = check_robot(description_from(str(EXAMPLES / f"{name}.py")))
+    card = cards(name)
     assert card.passed, card.render()
     assert len(card.results) >= 6
     grip = next(r for r in card.results if r.name.endswith(": grip"))
@@ -93,13 +107,13 @@ def test_example_checks_clean(name: str) -> None:
 
 
 @pytest.mark.parametrize("name", INFERRED_CAMERA)
-def test_an_example_naming_no_camera_gets_one_that_looks_and_detects(name: str) -> None:
+def test_an_example_naming_no_camera_gets_one_that_looks_and_detects(
+    name: str, cards: Callable[[str], ReportCard]
+) -> None:
     """Issue 37: they failed their checks for want of a camera, the fix naming the link the
     draft could have used itself; it now puts the camera on their wrists, and the arm
     carrying it turns it to look aside (no pan-tilt, no neck)."""
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        card = check_robot(description_from(str(EXAMPLES / f"{name}.py")))
+    card = cards(name)
     names = {r.name: r for r in card.results}
     assert "camera" not in names, card.render()  # part presence: a camera is described
     ahead = next(r for r in card.results if r.name.endswith(": looks ahead"))

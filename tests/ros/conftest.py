@@ -1,4 +1,5 @@
-"""A real roscore on a free port for the ROS tests, started and stopped (by PID) here."""
+"""A real roscore on a free port for the ROS tests, started and stopped (by PID) here, and
+the projection driver a module's tests share (``driver_pool.py``), reset between them."""
 
 from __future__ import annotations
 
@@ -8,6 +9,7 @@ from collections.abc import Callable, Iterator
 import pytest
 
 from robocram.ros import Roscore
+from tests.ros.driver_pool import DriverPool
 
 
 @pytest.fixture(scope="module")
@@ -15,6 +17,27 @@ def roscore() -> Iterator[Roscore]:
     """One ROS master per test module."""
     with Roscore() as core:
         yield core
+
+
+@pytest.fixture(scope="module")
+def drivers(roscore: Roscore) -> Iterator[DriverPool]:
+    """The module's ROS 1 driver on its roscore, reset for each test that asks for one."""
+    pool = DriverPool(roscore.uri)
+    try:
+        yield pool
+    finally:
+        pool.close()
+
+
+@pytest.fixture(scope="module")
+def drivers2() -> Iterator[DriverPool]:
+    """The module's ROS 2 driver, reset for each test that asks for one; each driver the
+    pool starts has a domain of its own, set while a test uses it."""
+    pool = DriverPool(ros=2)
+    try:
+        yield pool
+    finally:
+        pool.close()
 
 
 @pytest.fixture
@@ -27,14 +50,3 @@ def master_nodes(roscore: Roscore) -> Callable[[], set[str]]:
         return {node for kind in state for _, nodes in kind for node in nodes}
 
     return nodes
-
-
-@pytest.fixture
-def ros2_domain(monkeypatch: pytest.MonkeyPatch) -> Iterator[int]:
-    """A ROS 2 domain of this test's own, its traffic kept on this machine."""
-    from robocram.ros.ros2_domain import free_domain
-
-    with free_domain() as domain:
-        monkeypatch.setenv("ROS_DOMAIN_ID", str(domain))
-        monkeypatch.setenv("ROS_AUTOMATIC_DISCOVERY_RANGE", "LOCALHOST")
-        yield domain

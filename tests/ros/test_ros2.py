@@ -1,5 +1,6 @@
 """ROS 2: the same plans through rclpy, ros2_control's and Nav2's interfaces, against the
-projection driver serving them in another process, each test on a ROS 2 domain of its own."""
+projection driver serving them in another process: one at a time, on a ROS 2 domain of
+its own, shared by the tests that ask for the same robot and scene (``driver_pool.py``)."""
 
 from __future__ import annotations
 
@@ -8,7 +9,6 @@ import subprocess
 import threading
 import time
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 import pytest
@@ -18,48 +18,26 @@ from robocram.execution import perform, pursue, sleep
 from robocram.execution.failures import NavigationGoalNotReached
 from robocram.motion import JointTrajectory, trajectory_listener
 from robocram.plans import pick_up
-from robocram.plans.transport import TransportResult, transport
 from robocram.projection import simulated_robot
-from robocram.robots import RobotDescription, load_description
 from robocram.ros import RosCancelIgnored, RosConnectionLost, RosExtraMissing, ros_robot
 from robocram.ros.ros2_environment import child_argv, ros2_prefix
 from robocram.ros.ros_config import default_facts
-from robocram.ros_driver.driver_process import DriverProcess
-from robocram.scenes import kitchen_scene, tabletop_scene
+from robocram.scenes import tabletop_scene
 from robocram.tf import Pose, PoseStamped, pose_to_ros, transform_pose
-from robocram.world import World
+from tests.ros.driver_pool import DriverPool
+from tests.ros.received_goals import assert_same_goal, seconds
+from tests.ros.served_state import assert_same_state, served_state
 
 AGREE = 0.01  # [m] ROS 2 and direct projection agree this closely
-TABLE = ("kitchen", "table_top")
-DRAWER_JOINT = "drawer_unit_drawer_3_joint"
-RESTING = 0.015  # [m] the driver lets go without simulating: the bowl may stand this high
-DRAWN = 0.005  # [m] stands in a world whose drawer the driver's hand moved
 MOVED = 0.05  # [m] the base has started moving
 LEASE = 4.0  # [s] a dead process is gone from the ROS graph after it (fastdds_profile.xml)
 SAME = 1e-9  # [rad | s] what crosses ROS unchanged (float64; times to the nanosecond)
-STRETCH = Path(__file__).resolve().parents[1] / "data" / "stretch" / "stretch.py"
-STRETCH_FACTS = STRETCH.with_name("stretch_ros2.pl")
 TRAJECTORY_SERVERS = {
     "torso": "/torso_controller/follow_joint_trajectory",
     "head": "/head_controller/follow_joint_trajectory",
     "left": "/l_arm_controller/follow_joint_trajectory",
     "right": "/r_arm_controller/follow_joint_trajectory",
 }
-
-
-def _seconds(duration: dict[str, int]) -> float:
-    return duration["secs"] + duration["nsecs"] * 1e-9
-
-
-def _assert_same(received: dict[str, Any], sent: JointTrajectory) -> None:
-    """The goal the driver got is ``sent``: names, points, times, velocities, accelerations."""
-    trajectory = received["trajectory"]
-    assert trajectory["joint_names"] == list(sent.joint_names)
-    assert len(trajectory["points"]) == len(sent.points)
-    for got, want in zip(trajectory["points"], sent.points, strict=True):
-        assert _seconds(got["time_from_start"]) == pytest.approx(want.time_from_start, abs=SAME)
-        for key in ("positions", "velocities", "accelerations"):
-            assert got[key] == pytest.approx(list(getattr(want, key)), abs=SAME)
 
 
 def _server_of(trajectory: JointTrajectory) -> str:
@@ -69,7 +47,7 @@ def _server_of(trajectory: JointTrajectory) -> str:
 
 
 def test_pick_up_through_ros2_agrees_with_projection_goal_by_goal_with_the_clock_ahead(
-    ros2_domain: int, tmp_path: Path
+    drivers2: DriverPool, tmp_path: Path
 ) -> None:
     scene = tabletop_scene("pr2")
     with simulated_robot(scene.world, "pr2"):
@@ -79,9 +57,7 @@ def test_pick_up_through_ros2_agrees_with_projection_goal_by_goal_with_the_clock
     threads = set(threading.enumerate())
     sent: list[JointTrajectory] = []
     with (
-        DriverProcess(
-            "", "pr2", ros=2, domain_id=ros2_domain, goal_log=tmp_path / "g", clock_offset=10.0
-        ) as driver,
+        drivers2("pr2", goal_log=tmp_path / "g", clock_offset=10.0) as driver,
         ros_robot("pr2", ros=2, world=world) as run,
         trajectory_listener(sent.append),
     ):
@@ -102,7 +78,7 @@ def test_pick_up_through_ros2_agrees_with_projection_goal_by_goal_with_the_clock
     assert ros_mug.position[2] > 0.09 + scene.look_target.position[2]  # lifted
     assert len(sent) == sum(len(goals) for goals in by_server.values()) >= 4
     for trajectory in sent:  # every trajectory goal, in order per controller, as planned
-        _assert_same(by_server[_server_of(trajectory)].pop(0), trajectory)
+        assert_same_goal(by_server[_server_of(trajectory)].pop(0), trajectory)
     assert [g["command"]["position"] for g in grippers] == pytest.approx([0.085, 0.0])
     assert set(threading.enumerate()) == threads
     assert multiprocessing.active_children() == []
@@ -116,13 +92,13 @@ def test_without_the_set_up_ros2_names_the_command(
         ros_robot("pr2", ros=2).__enter__()
 
 
-def test_an_absent_controller_fails_typed_within_its_server_timeout(ros2_domain: int) -> None:
+def test_an_absent_controller_fails_typed_within_its_server_timeout(drivers2: DriverPool) -> None:
     facts = default_facts("pr2", ros=2).replace(
         "ros_server_timeout(pr2, 5.0)", "ros_server_timeout(pr2, 1.0)"
     )
     facts = facts.replace("/torso_controller/", "/no_torso_controller/")
     with (
-        DriverProcess("", "pr2", ros=2, domain_id=ros2_domain),
+        drivers2("pr2"),
         ros_robot("pr2", ros=2, ros_facts=facts),
     ):
         start = time.monotonic()
@@ -134,13 +110,13 @@ def test_an_absent_controller_fails_typed_within_its_server_timeout(ros2_domain:
 
 
 def test_nav2_failing_gives_the_typed_failure_with_its_error_code_and_feedback_is_read(
-    ros2_domain: int,
+    drivers2: DriverPool,
 ) -> None:
     x, y, _ = tabletop_scene("pr2").world.pose("table").position
     into_the_table = Pose((x, y, 0.0))  # the base inside the table
     back = Pose((-1.0, 0.0, 0.0))  # [m] 1 m behind the robot: 2 s at 0.5 m/s
-    driver = DriverProcess("", "pr2", base_speed=0.5, ros=2, domain_id=ros2_domain)
-    with driver, ros_robot("pr2", ros=2) as run:
+    serving = drivers2("pr2", base_speed=0.5)
+    with serving, ros_robot("pr2", ros=2) as run:
         client = run.environment.client
         before = client.base_pose()
         with pytest.raises(NavigationGoalNotReached, match="ABORTED") as failed:
@@ -157,147 +133,68 @@ def test_nav2_failing_gives_the_typed_failure_with_its_error_code_and_feedback_i
     assert handle.outcome is not None and handle.outcome.state.name == "SUCCEEDED"
     feedback = handle.outcome.feedback  # the last the server sent while driving
     assert feedback["distance_remaining"] < 0.2
-    assert _seconds(feedback["navigation_time"]) > 1.5
+    assert seconds(feedback["navigation_time"]) > 1.5
     assert feedback["current_pose"]["header"]["frame_id"] == "map"
 
 
-def _in_projection(
-    object_type: str, item: str, robot: str | RobotDescription = "pr2"
-) -> TransportResult:
-    scene = kitchen_scene(robot)
-    with simulated_robot(scene.world, scene.robot):
-        result = transport(object_type, a.location(on=TABLE, for_=item))
-    scene.world.close()
-    return result
-
-
-def _on_the_table_top(world: World, item: str, pose: Pose) -> None:
-    """``item`` (at ``pose`` in the driver's world) stands on the table top, inside it."""
-    low, _ = world.aabb(item)
-    table_low, table_high = world.contacts.link_aabb("kitchen", "table_top")
-    assert world.pose(item).distance_to(pose) < 1e-6  # the mirror shows it there too
-    assert low[2] == pytest.approx(table_high[2], abs=RESTING)
-    assert table_low[0] < pose.position[0] < table_high[0]
-    assert table_low[1] < pose.position[1] < table_high[1]
-
-
-def _same_stands(result: TransportResult, expected: TransportResult, within: float) -> None:
-    """The stages tried in the same order, from stands at most ``within`` [m] apart."""
-    stages = [(attempt.stage, attempt.stand) for attempt in result.log.attempts]
-    projected = [(attempt.stage, attempt.stand) for attempt in expected.log.attempts]
-    assert [stage for stage, _ in stages] == [stage for stage, _ in projected]
-    for (_, stand), (_, want) in zip(stages, projected, strict=True):
-        assert stand.distance_to(want) < within
-
-
-@pytest.mark.parametrize(
-    ("object_type", "item", "clock_offset"), [("mug", "mug-1", 0.0), ("bowl", "bowl-1", -10.0)]
-)
-def test_the_kitchen_transport_over_ros2_on_the_real_pr2s_controllers(
-    ros2_domain: int, object_type: str, item: str, clock_offset: float
+def test_stopping_mid_navigation_cancels_the_nav2_goal_and_the_base_stops(
+    drivers2: DriverPool, tmp_path: Path
 ) -> None:
-    expected = _in_projection(object_type, item)
-    scene = kitchen_scene("pr2")
-    driver = DriverProcess(
-        "", "pr2", ros=2, domain_id=ros2_domain, controllers="pr2", clock_offset=clock_offset,
-        scene="kitchen",
-    )  # fmt: skip
-    with driver, ros_robot("pr2", ros=2, world=scene.world) as run:
-        result = transport(object_type, a.location(on=TABLE, for_=item))
-        placed = run.transforms.lookup("map", item)
-        drawers = run.environment.client.transport.environment_joint_states()
-        skew = run.environment.client.clock_skew
-    assert run.tree.root.status.name == "SUCCEEDED"
-    assert skew == pytest.approx(clock_offset, abs=0.5)
-    _on_the_table_top(scene.world, item, placed)
-    assert scene.world.bodies.attachments("pr2") == {}  # let go in the mirror too
-    if object_type == "bowl":  # out of the drawer, which is shut again
-        assert [opened.container.joint for opened in result.opened] == [DRAWER_JOINT]
-        assert drawers["/kitchen/joint_states"][DRAWER_JOINT] == pytest.approx(0.0, abs=0.01)
-    else:
-        assert result.opened == []
-    _same_stands(result, expected, DRAWN)  # the same seeds, the same stands
-
-
-@pytest.mark.parametrize(("object_type", "item"), [("mug", "mug-1"), ("bowl", "bowl-1")])
-def test_the_stretch_transports_over_ros2_turning_its_base_for_its_sideways_arm(
-    ros2_domain: int, tmp_path: Path, object_type: str, item: str
-) -> None:
-    """A differential base with coupled joints: IK moves the base with the arm (Nav2
-    goals; the drawer is opened and shut a step at a time, base and arm), a finger meeting
-    the mug first pushes it into the grip (the robot side), and every trajectory goal is
-    the one the plan side planned."""
-    desc = load_description(STRETCH)
-    expected = _in_projection(object_type, item, desc)
-    scene = kitchen_scene(desc)
-    sent: list[JointTrajectory] = []
-    driver = DriverProcess(
-        "", str(STRETCH), ros=2, domain_id=ros2_domain, scene="kitchen",
-        ros_facts=STRETCH_FACTS, goal_log=tmp_path / "g",
-    )  # fmt: skip
-    facts = STRETCH_FACTS.read_text(encoding="utf-8")
-    with (
-        driver,
-        ros_robot(desc, ros=2, world=scene.world, ros_facts=facts) as run,
-        trajectory_listener(sent.append),
-    ):
-        result = transport(object_type, a.location(on=TABLE, for_=item))
-        placed = run.transforms.lookup("map", item)
-        drawers = run.environment.client.transport.environment_joint_states()
-        servers = ("/stretch_controller/follow_joint_trajectory",
-                   "/head_controller/follow_joint_trajectory")  # fmt: skip
-        received = {s: driver.received_goals(s) for s in servers}
-        drives = driver.received_goals("/navigate_to_pose")
-    assert run.tree.root.status.name == "SUCCEEDED"
-    _on_the_table_top(scene.world, item, placed)
-    _same_stands(result, expected, DRAWN)
-    assert drawers["/kitchen/joint_states"][DRAWER_JOINT] == pytest.approx(0.0, abs=0.01)
-    stands = [attempt.stand for attempt in result.log.attempts if attempt.stand is not None]
-    assert len(drives) > len(stands)  # IK's base moves went to Nav2 as goals of their own
-    assert len(sent) == sum(len(goals) for goals in received.values()) >= 6
-    for trajectory in sent:  # in order per controller, as planned
-        server = servers[trajectory.joint_names[0].startswith("joint_head")]
-        _assert_same(received[server].pop(0), trajectory)
-
-
-def test_a_controller_killed_mid_goal_gives_a_typed_failure_in_bounded_time(
-    ros2_domain: int,
-) -> None:
-    driver = DriverProcess("", "pr2", base_speed=0.3, ros=2, domain_id=ros2_domain)
-    with driver, ros_robot("pr2", ros=2) as run:
+    far = Pose((-4.0, 3.0, 0.0))  # free floor, far from the robot at the origin
+    log = tmp_path / "goals.jsonl"
+    with drivers2("pr2", base_speed=0.3, goal_log=log) as driver, ros_robot("pr2", ros=2) as run:
         client = run.environment.client
         start = client.base_pose()
-        killed: list[float] = []
+        stops: list[float] = []
 
-        def kill_once_moving() -> None:
+        def until_moving() -> None:
             while client.base_pose().distance_to(start) < MOVED:
-                time.sleep(0.02)
-            driver.kill()
-            killed.append(time.monotonic())
+                sleep(0.02)
+            stops.append(time.monotonic())
 
-        killer = threading.Thread(target=kill_once_moving)
-        killer.start()
-        try:
-            with pytest.raises(RosConnectionLost) as lost:
-                perform(a.motion(type="going", target=Pose((-2.0, 0.0, 0.0))))
-        finally:
-            killer.join()
-        noticed = time.monotonic() - killed[0]
-    assert lost.value.server == "/navigate_to_pose"
-    assert "left the ROS graph" in str(lost.value)
-    assert noticed < LEASE + 2.0 + 1.5  # the dead process's lease, ros_connection_timeout
-    assert multiprocessing.active_children() == []
+        pursue(lambda: perform(a.motion(type="going", target=far)), until_moving)
+        stopped = client.base_pose()
+        for _ in range(3):  # several state messages later the base is still there
+            assert client.transport.wait_for_state(None, 5.0)
+        later = client.base_pose()
+        (cancel,) = driver.cancels_seen("/navigate_to_pose")
+    assert stopped.distance_to(start) >= MOVED
+    assert stopped.distance_to(far) > 1.0
+    assert later.distance_to(stopped) < 1e-6
+    assert 0.0 < cancel - stops[0] < 0.05  # [s] the stop reached the driver within 50 ms
+
+
+def test_a_reset_driver_serves_what_a_fresh_one_does(drivers2: DriverPool) -> None:
+    """The module's driver, its robot moved here (torso, gripper, base) and its clock
+    shifted, is reset: it serves the robot's joints, every transform, its topics and its
+    services as a driver started fresh does."""
+    with drivers2("pr2", clock_offset=10.0), ros_robot("pr2", ros=2) as run:
+        perform(a.motion(type="moving-torso", joint_angle=0.2))
+        perform(a.motion(type="opening", gripper="left"))
+        perform(a.motion(type="going", target=a.location(pose=Pose((-0.4, 0.3, 0.0)))))
+        moved = run.environment.client.joint_states()["torso_lift_joint"]
+    with drivers2("pr2"):
+        reset = served_state(["/joint_states"], domain=drivers2.domain_id)
+    drivers2.close()  # the next driver of the pool is started fresh (the test after uses it)
+    started = drivers2.started
+    with drivers2("pr2"):
+        fresh = served_state(["/joint_states"], domain=drivers2.domain_id)
+    assert drivers2.started == started + 1
+    assert moved == pytest.approx(0.2, abs=0.005)
+    assert fresh["/joint_states"]["torso_lift_joint"] != pytest.approx([0.2], abs=0.005)
+    assert_same_state(reset, fresh, SAME)
+    assert "/navigate_to_pose/_action/send_goal" in fresh["serves"]
 
 
 def test_a_cancel_the_server_refuses_raises_that_the_robot_may_still_move(
-    ros2_domain: int,
+    drivers2: DriverPool,
 ) -> None:
     facts = (
         "ros_action_timeout(pr2, navigation, 1.0).\nros_cancel_timeout(pr2, 0.5).\n"
         + default_facts("pr2", ros=2)
     )
     with (
-        DriverProcess("", "pr2", fault="ignore_cancel", ros=2, domain_id=ros2_domain),
+        drivers2("pr2", fault="ignore_cancel"),
         ros_robot("pr2", ros=2, ros_facts=facts),
     ):
         start = time.monotonic()
@@ -313,7 +210,7 @@ def test_a_cancel_the_server_refuses_raises_that_the_robot_may_still_move(
 
 
 def test_a_parallel_gripper_takes_a_joint_state_command_and_reports_its_state(
-    ros2_domain: int, tmp_path: Path
+    drivers2: DriverPool, tmp_path: Path
 ) -> None:
     facts = default_facts("pr2", ros=2).replace(
         "'control_msgs/GripperCommand'", "'control_msgs/ParallelGripperCommand'"
@@ -321,10 +218,8 @@ def test_a_parallel_gripper_takes_a_joint_state_command_and_reports_its_state(
     facts_file = tmp_path / "pr2_parallel.pl"
     facts_file.write_text(facts)
     log = tmp_path / "goals.jsonl"
-    driver = DriverProcess(
-        "", "pr2", ros=2, domain_id=ros2_domain, ros_facts=facts_file, goal_log=log
-    )
-    with driver, ros_robot("pr2", ros=2, ros_facts=facts) as run:
+    serving = drivers2("pr2", ros_facts=facts_file, goal_log=log)
+    with serving as driver, ros_robot("pr2", ros=2, ros_facts=facts) as run:
         opened = perform(a.motion(type="opening", gripper="left"))
         closed = perform(a.motion(type="closing", gripper="left"))
         finger = run.environment.client.joint_states()["l_gripper_l_finger_joint"]
@@ -375,36 +270,8 @@ def test_tf_is_read_from_and_written_to_its_cdr_bytes_as_rclpy_does() -> None:
     subprocess.run(child_argv(CDR_CHECK), env=environment, check=True, timeout=60)
 
 
-def test_stopping_mid_navigation_cancels_the_nav2_goal_and_the_base_stops(
-    ros2_domain: int, tmp_path: Path
-) -> None:
-    far = Pose((-4.0, 3.0, 0.0))  # free floor, far from the robot at the origin
-    log = tmp_path / "goals.jsonl"
-    driver = DriverProcess("", "pr2", base_speed=0.3, ros=2, domain_id=ros2_domain, goal_log=log)
-    with driver, ros_robot("pr2", ros=2) as run:
-        client = run.environment.client
-        start = client.base_pose()
-        stops: list[float] = []
-
-        def until_moving() -> None:
-            while client.base_pose().distance_to(start) < MOVED:
-                sleep(0.02)
-            stops.append(time.monotonic())
-
-        pursue(lambda: perform(a.motion(type="going", target=far)), until_moving)
-        stopped = client.base_pose()
-        for _ in range(3):  # several state messages later the base is still there
-            assert client.transport.wait_for_state(None, 5.0)
-        later = client.base_pose()
-        (cancel,) = driver.cancels_seen("/navigate_to_pose")
-    assert stopped.distance_to(start) >= MOVED
-    assert stopped.distance_to(far) > 1.0
-    assert later.distance_to(stopped) < 1e-6
-    assert 0.0 < cancel - stops[0] < 0.05  # [s] the stop reached the driver within 50 ms
-
-
 def test_a_point_head_controller_aims_the_camera_at_the_target(
-    ros2_domain: int, tmp_path: Path
+    drivers2: DriverPool, tmp_path: Path
 ) -> None:
     facts = default_facts("pr2", ros=2).replace(
         "ros_action(pr2, head, '/head_controller/follow_joint_trajectory',\n"
@@ -416,10 +283,8 @@ def test_a_point_head_controller_aims_the_camera_at_the_target(
     facts_file.write_text(facts)
     target = Pose((1.5, 0.5, 0.6))  # [m] in map, ahead and to the left, low
     log = tmp_path / "goals.jsonl"
-    driver = DriverProcess(
-        "", "pr2", ros=2, domain_id=ros2_domain, ros_facts=facts_file, goal_log=log
-    )
-    with driver, ros_robot("pr2", ros=2, ros_facts=facts) as run:
+    serving = drivers2("pr2", ros_facts=facts_file, goal_log=log)
+    with serving as driver, ros_robot("pr2", ros=2, ros_facts=facts) as run:
         pan_tilt = perform(a.motion(type="looking", target=a.location(pose=target)))
         camera = run.transforms.lookup("map", "wide_stereo_optical_frame")
         (goal,) = driver.received_goals("/head_controller/point_head")
@@ -429,3 +294,31 @@ def test_a_point_head_controller_aims_the_camera_at_the_target(
     axis = camera.matrix()[:3, 2]  # the optical axis: z
     to_target = np.subtract(target.position, camera.position)
     assert float(axis @ to_target) / float(np.linalg.norm(to_target)) > 0.99  # aimed
+
+
+def test_a_controller_killed_mid_goal_gives_a_typed_failure_in_bounded_time(
+    drivers2: DriverPool,
+) -> None:
+    with drivers2("pr2", base_speed=0.3) as driver, ros_robot("pr2", ros=2) as run:
+        client = run.environment.client
+        start = client.base_pose()
+        killed: list[float] = []
+
+        def kill_once_moving() -> None:
+            while client.base_pose().distance_to(start) < MOVED:
+                time.sleep(0.02)
+            driver.kill()
+            killed.append(time.monotonic())
+
+        killer = threading.Thread(target=kill_once_moving)
+        killer.start()
+        try:
+            with pytest.raises(RosConnectionLost) as lost:
+                perform(a.motion(type="going", target=Pose((-2.0, 0.0, 0.0))))
+        finally:
+            killer.join()
+        noticed = time.monotonic() - killed[0]
+    assert lost.value.server == "/navigate_to_pose"
+    assert "left the ROS graph" in str(lost.value)
+    assert noticed < LEASE + 2.0 + 1.5  # the dead process's lease, ros_connection_timeout
+    assert multiprocessing.active_children() == []

@@ -8,6 +8,8 @@ with the hand) and closes again. Same seeds, same world: the same stands as proj
 
 from __future__ import annotations
 
+import xmlrpc.client
+
 import pytest
 
 from robocram.designators import a
@@ -16,10 +18,11 @@ from robocram.plans import pick_up
 from robocram.plans.transport import TransportResult, transport
 from robocram.projection import simulated_robot
 from robocram.ros import Roscore, ros_robot
-from robocram.ros_driver.driver_process import DriverProcess
 from robocram.scenes import kitchen_scene, tabletop_scene
 from robocram.tf import Pose
 from robocram.world import World
+from tests.ros.driver_pool import DriverPool
+from tests.ros.served_state import assert_same_state, served_state
 
 TABLE = ("kitchen", "table_top")
 DRAWER_JOINT = "drawer_unit_drawer_3_joint"
@@ -29,6 +32,8 @@ DRAWN = 0.005  # [m | rad] ... in a world whose drawer the driver's hand moved
 # [s] the driver's /tf this late, as our node's tf thread handles it on a loaded machine
 # (transforms from before a goal's end handled after its result: the stamps must decide)
 TF_LAG = 0.05
+SAME_STATE = 1e-9  # [m | rad] a reset driver's state is a fresh one's (float64 on the wire)
+DRIVER_NODE = "/robocram_driver"
 
 
 def _to_the_table(object_type: str, item: str) -> TransportResult:
@@ -69,11 +74,12 @@ def _same_stands(result: TransportResult, expected: TransportResult, within: flo
 
 def test_the_mug_goes_to_the_table_on_the_real_pr2_with_its_clock_ahead(
     roscore: Roscore,
+    drivers: DriverPool,
 ) -> None:
     expected = _in_projection("mug", "mug-1")
     scene = kitchen_scene("pr2")
     with (
-        DriverProcess(roscore.uri, controllers="pr2", clock_offset=10.0, scene="kitchen"),
+        drivers(controllers="pr2", clock_offset=10.0, scene="kitchen"),
         ros_robot("pr2", roscore.uri, world=scene.world) as run,
     ):
         result = _to_the_table("mug", "mug-1")
@@ -90,14 +96,12 @@ def test_the_mug_goes_to_the_table_on_the_real_pr2_with_its_clock_ahead(
 
 
 def test_the_bowl_comes_out_of_the_drawer_on_the_real_pr2_with_its_clock_behind(
-    roscore: Roscore,
+    roscore: Roscore, drivers: DriverPool
 ) -> None:
     expected = _in_projection("bowl", "bowl-1")
     scene = kitchen_scene("pr2")
     with (
-        DriverProcess(
-            roscore.uri, controllers="pr2", clock_offset=-10.0, scene="kitchen", tf_lag=TF_LAG
-        ),
+        drivers(controllers="pr2", clock_offset=-10.0, scene="kitchen", tf_lag=TF_LAG),
         ros_robot("pr2", roscore.uri, world=scene.world) as run,
     ):
         result = _to_the_table("bowl", "bowl-1")
@@ -113,8 +117,47 @@ def test_the_bowl_comes_out_of_the_drawer_on_the_real_pr2_with_its_clock_behind(
     _same_stands(result, expected, DRAWN)
 
 
+def _driver_topics(uri: str) -> dict[str, set[str]]:
+    """What the driver node publishes and serves, as the master lists them."""
+    code, _, (publishers, _, services) = xmlrpc.client.ServerProxy(uri).getSystemState("/t")
+    assert code == 1
+    return {
+        kind: {name for name, nodes in listed if DRIVER_NODE in nodes}
+        for kind, listed in (("publishes", publishers), ("serves", services))
+    }
+
+
+def test_a_reset_driver_serves_what_a_fresh_one_does(roscore: Roscore, drivers: DriverPool) -> None:
+    """The module's driver, moved by the test before (the bowl out of its drawer, the
+    drawer opened and shut) and here (torso, base, clock, lag), is reset: it serves the
+    joints of the robot and the kitchen, every transform and its topics as a fresh one."""
+    topics = ["/joint_states", "/kitchen/joint_states"]
+    with (
+        drivers(controllers="pr2", scene="kitchen", clock_offset=-10.0, tf_lag=TF_LAG),
+        ros_robot("pr2", roscore.uri) as run,
+    ):
+        perform(a.motion(type="moving-torso", joint_angle=0.2))
+        perform(a.motion(type="going", target=a.location(pose=Pose((-0.4, 0.3, 0.0)))))
+        moved = run.environment.client.joint_states()["torso_lift_joint"]
+    with drivers(controllers="pr2", scene="kitchen"):
+        reset = served_state(topics, roscore.uri)
+        reset_topics = _driver_topics(roscore.uri)
+    drivers.close()  # the next driver of the pool is started fresh (the tests after use it)
+    started = drivers.started
+    with drivers(controllers="pr2", scene="kitchen"):
+        fresh = served_state(topics, roscore.uri)
+        fresh_topics = _driver_topics(roscore.uri)
+    assert drivers.started == started + 1
+    assert moved == pytest.approx(0.2, abs=0.005)
+    assert fresh["/joint_states"]["torso_lift_joint"] != pytest.approx([0.2], abs=0.005)
+    assert_same_state(reset, fresh, SAME_STATE)
+    assert reset_topics == fresh_topics
+    assert "/kitchen/joint_states" in fresh_topics["publishes"]
+
+
 def test_the_mirror_takes_the_kitchen_joints_and_objects_from_the_robot_side(
     roscore: Roscore,
+    drivers: DriverPool,
 ) -> None:
     scene = kitchen_scene("pr2")
     world = scene.world
@@ -122,7 +165,7 @@ def test_the_mirror_takes_the_kitchen_joints_and_objects_from_the_robot_side(
     world.set_joint_states("kitchen", {DRAWER_JOINT: 0.3})  # what the caller got wrong
     world.set_pose("mug-1", Pose((0.0, 0.0, 2.0)))
     with (
-        DriverProcess(roscore.uri, controllers="pr2", scene="kitchen"),
+        drivers(controllers="pr2", scene="kitchen"),
         ros_robot("pr2", roscore.uri, world=world),
     ):
         perform(a.motion(type="moving-torso", joint_angle=0.1))
@@ -131,11 +174,13 @@ def test_the_mirror_takes_the_kitchen_joints_and_objects_from_the_robot_side(
     assert world.pose("mug-1").distance_to(believed) < 1e-6
 
 
-def test_what_the_gripper_holds_moves_with_the_hand_in_the_mirror(roscore: Roscore) -> None:
+def test_what_the_gripper_holds_moves_with_the_hand_in_the_mirror(
+    roscore: Roscore, drivers: DriverPool
+) -> None:
     scene = tabletop_scene("pr2")
     world = scene.world
     with (
-        DriverProcess(roscore.uri, controllers="pr2"),
+        drivers(controllers="pr2"),
         ros_robot("pr2", roscore.uri, world=world) as run,
     ):
         result = pick_up(scene.look_target)

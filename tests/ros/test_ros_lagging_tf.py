@@ -13,9 +13,9 @@ import pytest
 from robocram.designators import a
 from robocram.execution import perform
 from robocram.ros import Roscore, ros_robot
-from robocram.ros_driver.driver_process import DriverProcess
 from robocram.scenes import tabletop_scene
 from robocram.tf import Pose
+from tests.ros.driver_pool import DriverPool
 
 LAG = 0.3  # [s] ~10 publications of the driver's state: far more than a loaded machine's
 GOALS = (Pose((-0.3, 0.2, 0.0)), Pose((-0.6, -0.2, 0.0)), Pose((-0.2, 0.0, 0.0)))
@@ -24,12 +24,12 @@ THERE = 1e-3  # [m | rad] the driver jumps to a free base goal
 
 @pytest.mark.parametrize("offset", [-10.0, 0.0], ids=["clock_behind", "same_clock"])
 def test_the_mirror_shows_the_base_where_each_goal_left_it_though_tf_lags(
-    roscore: Roscore, offset: float
+    roscore: Roscore, drivers: DriverPool, offset: float
 ) -> None:
     world = tabletop_scene("pr2").world
     seen = []
     with (
-        DriverProcess(roscore.uri, controllers="pr2", clock_offset=offset, tf_lag=LAG),
+        drivers(controllers="pr2", clock_offset=offset, tf_lag=LAG),
         ros_robot("pr2", roscore.uri, world=world),
     ):
         for goal in GOALS:

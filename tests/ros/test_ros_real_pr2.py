@@ -21,9 +21,9 @@ from robocram.plans import pick_up
 from robocram.ros import RosCancelIgnored, Roscore, RosMasterUnreachable, ros_robot
 from robocram.ros.ros_config import default_facts
 from robocram.ros.roscore import free_port
-from robocram.ros_driver.driver_process import DriverProcess
 from robocram.scenes import tabletop_scene
 from robocram.tf import Pose
+from tests.ros.driver_pool import DriverPool
 
 RIGHT_GRIPPER = "/r_gripper_controller/gripper_action"
 OPEN_GAP = 0.085  # [m] what the PR2's facts send for opening
@@ -34,13 +34,17 @@ SKEW = 0.5  # [s] a measured clock offset is this close to the driver's
 
 @pytest.mark.parametrize("offset", [-10.0, 10.0], ids=["clock_behind", "clock_ahead"])
 def test_pick_up_succeeds_on_the_real_pr2_controllers_with_a_skewed_clock(
-    roscore: Roscore, tmp_path: Path, offset: float, caplog: pytest.LogCaptureFixture
+    roscore: Roscore,
+    drivers: DriverPool,
+    tmp_path: Path,
+    offset: float,
+    caplog: pytest.LogCaptureFixture,
 ) -> None:
     look = tabletop_scene("pr2").look_target
     log = tmp_path / "goals.jsonl"
     with (
         caplog.at_level(logging.WARNING, logger="robocram.ros"),
-        DriverProcess(roscore.uri, controllers="pr2", clock_offset=offset, goal_log=log) as driver,
+        drivers(controllers="pr2", clock_offset=offset, goal_log=log) as driver,
         ros_robot("pr2", roscore.uri) as run,
     ):
         result = pick_up(look)
@@ -56,17 +60,19 @@ def test_pick_up_succeeds_on_the_real_pr2_controllers_with_a_skewed_clock(
     assert any("robot's clock is" in r.getMessage() for r in caplog.records)
 
 
-def test_opening_sends_a_gap_in_metres_and_returns_the_finger_joint(roscore: Roscore) -> None:
-    with DriverProcess(roscore.uri, controllers="pr2"), ros_robot("pr2", roscore.uri) as run:
+def test_opening_sends_a_gap_in_metres_and_returns_the_finger_joint(
+    roscore: Roscore, drivers: DriverPool
+) -> None:
+    with drivers(controllers="pr2"), ros_robot("pr2", roscore.uri) as run:
         opened = perform(a.motion(type="opening", gripper="right"))
         finger = run.environment.client.joint_states()["r_gripper_l_finger_joint"]
     assert opened == pytest.approx(FINGER_UPPER, abs=1e-3)  # the description's open value
     assert finger == pytest.approx(OPEN_GAP * FINGER_UPPER / GAP_AT_UPPER, abs=1e-3)
 
 
-def test_gripping_nothing_closes_completely(roscore: Roscore) -> None:
+def test_gripping_nothing_closes_completely(roscore: Roscore, drivers: DriverPool) -> None:
     with (
-        DriverProcess(roscore.uri, controllers="pr2"),
+        drivers(controllers="pr2"),
         ros_robot("pr2", roscore.uri),
         pytest.raises(GripperClosedCompletely) as failure,
     ):
@@ -75,9 +81,11 @@ def test_gripping_nothing_closes_completely(roscore: Roscore) -> None:
     assert "SUCCEEDED, stalled=False" in str(failure.value)
 
 
-def test_a_bare_abort_carries_the_error_code_and_string(roscore: Roscore) -> None:
+def test_a_bare_abort_carries_the_error_code_and_string(
+    roscore: Roscore, drivers: DriverPool
+) -> None:
     with (
-        DriverProcess(roscore.uri, controllers="pr2", fault="abort"),
+        drivers(controllers="pr2", fault="abort"),
         ros_robot("pr2", roscore.uri),
         pytest.raises(TorsoGoalNotReached) as failure,
     ):
@@ -93,13 +101,14 @@ def test_a_bare_abort_carries_the_error_code_and_string(roscore: Roscore) -> Non
 
 def test_a_cancel_the_server_ignores_raises_that_the_robot_may_still_move(
     roscore: Roscore,
+    drivers: DriverPool,
 ) -> None:
     facts = (
         "ros_action_timeout(pr2, navigation, 1.0).\nros_cancel_timeout(pr2, 0.5).\n"
         + default_facts("pr2")
     )
     with (
-        DriverProcess(roscore.uri, fault="ignore_cancel"),
+        drivers(fault="ignore_cancel"),
         ros_robot("pr2", roscore.uri, facts),
         pytest.raises(RosCancelIgnored) as failure,
     ):
@@ -143,13 +152,15 @@ def _native_facts() -> str:
     return NATIVE + rest
 
 
-def test_pick_up_succeeds_on_the_pr2s_native_action_types(roscore: Roscore, tmp_path: Path) -> None:
+def test_pick_up_succeeds_on_the_pr2s_native_action_types(
+    roscore: Roscore, drivers: DriverPool, tmp_path: Path
+) -> None:
     facts = tmp_path / "pr2_native.pl"
     facts.write_text(_native_facts())
     log = tmp_path / "goals.jsonl"
     look = tabletop_scene("pr2").look_target
     with (
-        DriverProcess(roscore.uri, controllers="pr2", ros_facts=facts, goal_log=log) as driver,
+        drivers(controllers="pr2", ros_facts=facts, goal_log=log) as driver,
         ros_robot("pr2", roscore.uri, facts.read_text()) as run,
     ):
         result = pick_up(look)
@@ -165,11 +176,13 @@ def test_pick_up_succeeds_on_the_pr2s_native_action_types(roscore: Roscore, tmp_
     assert len(arm[0]["trajectory"]["points"]) > 2  # a timed trajectory, not one point
 
 
-def test_a_stopped_task_whose_cancel_is_ignored_does_not_end_silently(roscore: Roscore) -> None:
+def test_a_stopped_task_whose_cancel_is_ignored_does_not_end_silently(
+    roscore: Roscore, drivers: DriverPool
+) -> None:
     facts = "ros_cancel_timeout(pr2, 0.5).\n" + default_facts("pr2")
     far = a.location(pose=Pose((-1.0, 0.0, 0.0)))
     with (
-        DriverProcess(roscore.uri, fault="ignore_cancel"),
+        drivers(fault="ignore_cancel"),
         pytest.raises(RosCancelIgnored) as failure,
         ros_robot("pr2", roscore.uri, facts),
     ):

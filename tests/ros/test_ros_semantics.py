@@ -19,8 +19,8 @@ from robocram.execution.failures import (
 )
 from robocram.ros import RosConnectionLost, Roscore, RosJointStateInvalid, ros_robot
 from robocram.ros.ros_config import default_facts
-from robocram.ros_driver.driver_process import DriverProcess
 from robocram.tf import Pose
+from tests.ros.driver_pool import DriverPool
 
 FAR = Pose((-4.0, 3.0, 0.0))  # [m] free floor, far from the robot at the origin
 MOVED = 0.05  # [m] the base has clearly started moving
@@ -38,10 +38,10 @@ def _nothing_left(threads: set[threading.Thread], node: str, nodes: set[str]) ->
 
 
 def test_stopping_mid_navigation_cancels_the_goal_and_the_base_stops(
-    roscore: Roscore, master_nodes: Callable[[], set[str]]
+    roscore: Roscore, drivers: DriverPool, master_nodes: Callable[[], set[str]]
 ) -> None:
     threads = set(threading.enumerate())
-    with DriverProcess(roscore.uri, base_speed=0.3), ros_robot("pr2", roscore.uri) as run:
+    with drivers(base_speed=0.3), ros_robot("pr2", roscore.uri) as run:
         client = run.environment.client
         start = client.base_pose()
 
@@ -68,10 +68,11 @@ def _facts_with(line: str) -> str:
 
 def test_a_driver_that_never_answers_gives_a_timeout_naming_the_controller(
     roscore: Roscore,
+    drivers: DriverPool,
 ) -> None:
     facts = _facts_with("ros_action_timeout(pr2, navigation, 1.5).")
     with (
-        DriverProcess(roscore.uri, fault="silent"),
+        drivers(fault="silent"),
         ros_robot("pr2", roscore.uri, facts),
         pytest.raises(ActionlibActionTimedOut) as failure,
     ):
@@ -84,8 +85,9 @@ def test_a_driver_that_never_answers_gives_a_timeout_naming_the_controller(
 
 def test_a_driver_that_aborts_gives_the_typed_failure_with_the_status_text(
     roscore: Roscore,
+    drivers: DriverPool,
 ) -> None:
-    with DriverProcess(roscore.uri, fault="abort"), ros_robot("pr2", roscore.uri):
+    with drivers(fault="abort"), ros_robot("pr2", roscore.uri):
         with pytest.raises(NavigationGoalNotReached) as going:
             _going()
         with pytest.raises(TorsoGoalNotReached) as torso:
@@ -103,8 +105,9 @@ def test_a_driver_that_aborts_gives_the_typed_failure_with_the_status_text(
 
 def test_a_goal_out_of_limits_is_clamped_sent_and_fails_as_in_projection(
     roscore: Roscore,
+    drivers: DriverPool,
 ) -> None:
-    with DriverProcess(roscore.uri), ros_robot("pr2", roscore.uri) as run:
+    with drivers(), ros_robot("pr2", roscore.uri) as run:
         with pytest.raises(TorsoGoalNotReached) as failure:
             perform(a.motion(type="moving-torso", joint_angle=0.5))
         reached = run.environment.client.joint_states()["torso_lift_joint"]
@@ -116,18 +119,35 @@ def test_a_goal_out_of_limits_is_clamped_sent_and_fails_as_in_projection(
 
 def test_a_goal_between_the_soft_and_the_hard_limit_ends_at_the_soft_limit(
     roscore: Roscore,
+    drivers: DriverPool,
 ) -> None:
-    with DriverProcess(roscore.uri), ros_robot("pr2", roscore.uri) as run:
+    with drivers(), ros_robot("pr2", roscore.uri) as run:
         perform(a.motion(type="moving-torso", joint_angle=0.31))  # the hard upper limit
         reached = run.environment.client.joint_states()["torso_lift_joint"]
     assert reached == pytest.approx(0.305)  # the soft upper limit (pr2_description)
 
 
+def test_a_joint_state_that_is_not_a_number_names_the_topic_and_the_joint(
+    roscore: Roscore,
+    drivers: DriverPool,
+) -> None:
+    with (
+        drivers(fault="nan_joint_state"),
+        ros_robot("pr2", roscore.uri),
+        pytest.raises(RosJointStateInvalid) as failure,
+    ):
+        perform(a.motion(type="moving-torso", joint_angle=0.1))
+    assert (failure.value.topic, failure.value.joint) == ("/joint_states", "torso_lift_joint")
+    assert math.isnan(failure.value.value)  # type: ignore[arg-type]
+    assert "'torso_lift_joint' at nan on /joint_states" in str(failure.value)
+    assert "bug in the module" not in str(failure.value)
+
+
 def test_a_driver_dying_mid_goal_gives_a_typed_failure_not_a_hang(
-    roscore: Roscore, master_nodes: Callable[[], set[str]]
+    roscore: Roscore, drivers: DriverPool, master_nodes: Callable[[], set[str]]
 ) -> None:
     threads = set(threading.enumerate())
-    with DriverProcess(roscore.uri, base_speed=0.3) as driver, ros_robot("pr2", roscore.uri) as run:
+    with drivers(base_speed=0.3) as driver, ros_robot("pr2", roscore.uri) as run:
         client = run.environment.client
         start = client.base_pose()
 
@@ -148,18 +168,3 @@ def test_a_driver_dying_mid_goal_gives_a_typed_failure_not_a_hang(
     assert "no status from /move_base" in failure.value.reason
     assert math.isfinite(start.position[0])
     _nothing_left(threads, node, master_nodes())
-
-
-def test_a_joint_state_that_is_not_a_number_names_the_topic_and_the_joint(
-    roscore: Roscore,
-) -> None:
-    with (
-        DriverProcess(roscore.uri, fault="nan_joint_state"),
-        ros_robot("pr2", roscore.uri),
-        pytest.raises(RosJointStateInvalid) as failure,
-    ):
-        perform(a.motion(type="moving-torso", joint_angle=0.1))
-    assert (failure.value.topic, failure.value.joint) == ("/joint_states", "torso_lift_joint")
-    assert math.isnan(failure.value.value)  # type: ignore[arg-type]
-    assert "'torso_lift_joint' at nan on /joint_states" in str(failure.value)
-    assert "bug in the module" not in str(failure.value)

@@ -21,10 +21,10 @@ from robocram.execution.failures import (
 )
 from robocram.motion import JointTrajectory, trajectory_listener
 from robocram.ros import Roscore, ros_robot
-from robocram.ros_driver.driver_process import DriverProcess
 from robocram.scenes import tabletop_scene
 from robocram.tf import Pose, PoseStamped
 from robocram.world import World
+from tests.ros.driver_pool import DriverPool
 
 RIGHT_ARM = "/r_arm_controller/follow_joint_trajectory"
 TORSO = "/torso_controller/follow_joint_trajectory"
@@ -85,11 +85,11 @@ def _off_straight(trajectory: JointTrajectory) -> float:
 
 
 def test_a_path_round_a_shelf_is_sent_whole_timed_with_goal_tolerances(
-    roscore: Roscore, tmp_path: Path
+    roscore: Roscore, drivers: DriverPool, tmp_path: Path
 ) -> None:
     sent: list[JointTrajectory] = []
     with (
-        DriverProcess(roscore.uri, goal_log=tmp_path / "goals.jsonl") as driver,
+        drivers(goal_log=tmp_path / "goals.jsonl") as driver,
         ros_robot("pr2", roscore.uri, world=_world_with_shelf()) as run,
         trajectory_listener(sent.append),
     ):
@@ -110,11 +110,11 @@ def test_a_path_round_a_shelf_is_sent_whole_timed_with_goal_tolerances(
 
 
 def test_without_a_world_goals_are_straight_timed_trajectories(
-    roscore: Roscore, tmp_path: Path
+    roscore: Roscore, drivers: DriverPool, tmp_path: Path
 ) -> None:
     sent: list[JointTrajectory] = []
     with (
-        DriverProcess(roscore.uri, goal_log=tmp_path / "goals.jsonl") as driver,
+        drivers(goal_log=tmp_path / "goals.jsonl") as driver,
         ros_robot("pr2", roscore.uri),
         trajectory_listener(sent.append),
     ):
@@ -134,9 +134,11 @@ def test_without_a_world_goals_are_straight_timed_trajectories(
     assert _off_straight(arm) < 1e-6  # straight through where the shelf would be
 
 
-def test_a_blocked_arm_path_sends_nothing(roscore: Roscore, tmp_path: Path) -> None:
+def test_a_blocked_arm_path_sends_nothing(
+    roscore: Roscore, drivers: DriverPool, tmp_path: Path
+) -> None:
     with (
-        DriverProcess(roscore.uri, goal_log=tmp_path / "goals.jsonl") as driver,
+        drivers(goal_log=tmp_path / "goals.jsonl") as driver,
         ros_robot("pr2", roscore.uri, world=_world_with_shelf()) as run,
     ):
         before = run.environment.client.joint_states()
@@ -154,7 +156,7 @@ def test_a_blocked_arm_path_sends_nothing(roscore: Roscore, tmp_path: Path) -> N
 
 
 def test_a_base_goal_no_path_leads_to_in_the_world_is_not_sent(
-    roscore: Roscore, tmp_path: Path
+    roscore: Roscore, drivers: DriverPool, tmp_path: Path
 ) -> None:
     world = tabletop_scene("pr2").world
     x, y = -3.0, 2.0  # [m] the goal, walled in on all four sides
@@ -166,7 +168,7 @@ def test_a_base_goal_no_path_leads_to_in_the_world_is_not_sent(
     ):
         world.add_box(name, size, Pose((*centre, 0.5)))
     with (
-        DriverProcess(roscore.uri, goal_log=tmp_path / "goals.jsonl") as driver,
+        drivers(goal_log=tmp_path / "goals.jsonl") as driver,
         ros_robot("pr2", roscore.uri, world=world) as run,
         pytest.raises(NavigationPathBlocked) as failure,
     ):
@@ -180,11 +182,11 @@ def test_a_base_goal_no_path_leads_to_in_the_world_is_not_sent(
 
 
 def test_the_pr2_lifts_and_looks_by_checked_trajectories_of_their_kinds(
-    roscore: Roscore, tmp_path: Path
+    roscore: Roscore, drivers: DriverPool, tmp_path: Path
 ) -> None:
     sent: list[JointTrajectory] = []
     with (
-        DriverProcess(roscore.uri, goal_log=tmp_path / "goals.jsonl") as driver,
+        drivers(goal_log=tmp_path / "goals.jsonl") as driver,
         ros_robot("pr2", roscore.uri, world=tabletop_scene("pr2").world) as run,
         trajectory_listener(sent.append),
     ):
@@ -204,13 +206,13 @@ def test_the_pr2_lifts_and_looks_by_checked_trajectories_of_their_kinds(
 
 
 def test_a_torso_blocked_by_a_board_in_the_world_sends_nothing(
-    roscore: Roscore, tmp_path: Path
+    roscore: Roscore, drivers: DriverPool, tmp_path: Path
 ) -> None:
     world = tabletop_scene("pr2").world
     top = max(world.contacts.link_aabb("pr2", link)[1][2] for link in world.link_names("pr2"))
     world.add_box("board", (0.8, 0.8, 0.02), Pose((0.0, 0.0, top + 0.06)))  # 5 cm above
     with (
-        DriverProcess(roscore.uri, goal_log=tmp_path / "goals.jsonl") as driver,
+        drivers(goal_log=tmp_path / "goals.jsonl") as driver,
         ros_robot("pr2", roscore.uri, world=world) as run,
         pytest.raises(TorsoPathBlocked, match="board") as failure,
     ):

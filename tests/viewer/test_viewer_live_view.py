@@ -13,7 +13,7 @@ import pytest
 from robocram.cli import EXIT_INPUT, EXIT_OK, main
 from robocram.viewer.headless_browser import HeadlessChromium
 
-SPEED = 8.0  # motions play at 8 times their pace: the run lasts a few seconds
+SPEED = 128.0  # motions play at 128x their pace (fewer frames); each state is still paced
 STATES_SEEN = 5  # at least this many different world states reach the page
 SERVE_AFTER = 3.0  # [s] the page is served after the run (its last updates arrive)
 PAGE = (400, 250)  # [px] a small page: SwiftShader draws each frame in a quarter the time

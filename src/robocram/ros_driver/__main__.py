@@ -3,7 +3,8 @@
 ``python -m robocram.ros_driver --robot pr2 --master-uri http://127.0.0.1:11311
 [--scene kitchen]`` (or ``--ros 2 [--domain-id N]`` for ROS 2) prints
 ``ready <node name>`` on stdout once its action servers run, then serves until killed
-(SIGTERM or SIGINT) or the master goes away.
+(SIGTERM or SIGINT) or the master goes away. Its standard input takes resets
+(``driver_reset.py``).
 """
 
 from __future__ import annotations
@@ -14,6 +15,7 @@ from pathlib import Path
 
 from robocram.robots import RobotDescription, load_description
 from robocram.ros.ros_config import install_ros_facts, read_ros_config
+from robocram.ros_driver.driver_reset import serve_resets
 from robocram.ros_driver.motion import MotionOptions
 from robocram.ros_driver.projection_driver import CONTROLLERS, FAULTS, ProjectionDriver
 from robocram.scenes import kitchen_scene, tabletop_scene
@@ -84,6 +86,7 @@ def main() -> None:
     )
     driver.start()
     driver.publish_state()
+    serve_resets(driver.reset)
     print("ready", rospy.get_name(), flush=True)
     rospy.spin()
 

@@ -3,7 +3,8 @@
 ``with DriverProcess(master_uri, robot="pr2", time_scale=0.0) as driver:`` waits until
 the node printed ``ready``; ``driver.kill()`` ends it at once (a robot dying mid-goal);
 leaving the block stops it if it still runs. Its output goes to a log file, never a pipe
-that could fill up and block it.
+that could fill up and block it. ``driver.reset(...)`` puts the running driver back to the
+state it started in, with new per-run settings (``driver_reset.py``): tests share one.
 """
 
 from __future__ import annotations
@@ -19,8 +20,10 @@ from types import TracebackType
 from typing import Any
 
 from robocram.ros.errors import RosNodeError
+from robocram.ros_driver.driver_reset import GOALS_END_TIMEOUT, DriverSettings
 
 START_TIMEOUT = 60.0  # [s]
+RESET_TIMEOUT = GOALS_END_TIMEOUT + 10.0  # [s] for the driver to answer a reset
 STOP_TIMEOUT = 10.0  # [s]
 
 
@@ -61,6 +64,15 @@ class DriverProcess:
         if goal_log is not None:
             self.args += ["--goal-log", str(goal_log)]
         self.master_uri = master_uri
+        self.settings = DriverSettings(
+            None if goal_log is None else str(goal_log),
+            clock_offset,
+            base_speed,
+            time_scale,
+            fault,
+            tf_lag,
+        )
+        self._resets = 0
         self.process: subprocess.Popen[bytes] | None = None
         self._log = tempfile.NamedTemporaryFile(  # noqa: SIM115 - closed by stop()
             prefix="robocram-driver-", suffix=".log"
@@ -91,7 +103,7 @@ class DriverProcess:
         """Start the node and wait for its ``ready`` line."""
         env = dict(os.environ, ROS_MASTER_URI=self.master_uri) if self.master_uri else None
         self.process = subprocess.Popen(
-            self.args, stdout=self._log, stderr=subprocess.STDOUT, env=env
+            self.args, stdin=subprocess.PIPE, stdout=self._log, stderr=subprocess.STDOUT, env=env
         )
         deadline = time.monotonic() + START_TIMEOUT
         while "ready" not in self.log:
@@ -102,6 +114,50 @@ class DriverProcess:
             time.sleep(0.05)
         return self
 
+    def reset(
+        self,
+        goal_log: Path | None = None,
+        clock_offset: float = 0.0,
+        base_speed: float = 0.0,
+        time_scale: float = 0.0,
+        fault: str = "none",
+        tf_lag: float = 0.0,
+    ) -> DriverProcess:
+        """Put the running driver back to the world it started in, taking these settings
+        (as the constructor's) once its goals ended; return when it says it is done."""
+        process = self.process
+        if process is None or process.stdin is None or process.poll() is not None:
+            raise RosNodeError("the driver does not run: start it before resetting it")
+        settings = DriverSettings(
+            None if goal_log is None else str(goal_log),
+            clock_offset,
+            base_speed,
+            time_scale,
+            fault,
+            tf_lag,
+        )
+        self._resets += 1
+        number = self._resets
+        try:
+            process.stdin.write(f"reset {number} {settings.to_json()}\n".encode())
+            process.stdin.flush()
+        except OSError as err:  # it died just now
+            raise RosNodeError(f"the driver was not reset: {err}") from err
+        deadline = time.monotonic() + RESET_TIMEOUT
+        done, failed = f"reset {number} done", f"reset {number} failed"
+        while done not in (log := self.log):
+            if failed in log or process.poll() is not None or time.monotonic() > deadline:
+                raise RosNodeError(f"the driver was not reset:\n{log[-2000:]}")
+            time.sleep(0.01)
+        self.settings = settings
+        self.goal_log = goal_log
+        return self
+
+    @property
+    def running(self) -> bool:
+        """Whether the driver's process runs."""
+        return self.process is not None and self.process.poll() is None
+
     def kill(self) -> None:
         """End the driver at once (SIGKILL), as a crash would."""
         if self.process is not None and self.process.poll() is None:
@@ -111,6 +167,8 @@ class DriverProcess:
     def stop(self) -> None:
         """Ask the driver to end (SIGTERM), kill it if it does not, and wait for it."""
         process = self.process
+        if process is not None and process.stdin is not None:
+            process.stdin.close()
         if process is not None and process.poll() is None:
             process.terminate()
             try:

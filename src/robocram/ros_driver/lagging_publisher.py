@@ -19,7 +19,7 @@ class LaggingPublisher:
     """Publishes through ``publisher`` ``lag`` seconds after each :meth:`publish`."""
 
     def __init__(self, publisher: RosMessage, lag: float) -> None:
-        self._publisher = publisher
+        self.publisher = publisher
         self._lag = lag
         self._queue: deque[tuple[float, RosMessage]] = deque()
         self._ready = threading.Condition()
@@ -39,4 +39,4 @@ class LaggingPublisher:
             time.sleep(max(0.0, due - time.monotonic()))
             with self._ready:
                 self._queue.popleft()
-            self._publisher.publish(message)
+            self.publisher.publish(message)

@@ -18,6 +18,7 @@ of everything published (states, transforms, action results, feedback and status
 robot clock ahead (+) or behind (-) of ours. Each publication is one snapshot of the
 world stamped when it was taken, sent before the next is taken: the stamps on a topic
 rise with the state they show. ``tf_lag`` [s] sends the transforms that much late (tests).
+:meth:`ProjectionDriver.reset` puts the world back as it was built (``driver_reset.py``).
 """
 
 from __future__ import annotations
@@ -39,6 +40,7 @@ from robocram.ros.ros_config import RosConfig
 from robocram.ros.tf_cdr import Transform
 from robocram.ros.transport import RosDict
 from robocram.ros_driver import goals, pr2_controllers
+from robocram.ros_driver.driver_reset import GOALS_END_TIMEOUT, DriverBusy, DriverSettings
 from robocram.ros_driver.errors import DriverArgumentError
 from robocram.ros_driver.goals import RosMessage
 from robocram.ros_driver.held_handles import HeldHandles
@@ -144,6 +146,51 @@ class ProjectionDriver:
         self._published: tuple[object, ...] | None = None  # the state last published
         self._published_at = -math.inf  # [s] monotonic
         self._streaming_until = -math.inf  # [s] monotonic: AFTER_GOAL after the last goal
+        self._built = world.snapshots.capture()  # what a reset puts back
+        self._running = 0  # goals being executed
+        self._goals_ended = threading.Condition()
+
+    def reset(self, settings: DriverSettings, timeout: float = GOALS_END_TIMEOUT) -> None:
+        """Once no goal runs (else :class:`DriverBusy` after ``timeout`` [s]), put the
+        world back as it was built, let go of every handle, take ``settings`` and publish:
+        the driver then serves what one just started with ``settings`` would."""
+        if settings.fault not in FAULTS:
+            raise DriverArgumentError(f"driver fault {settings.fault!r} is none of {FAULTS}")
+        with self._goals_ended:
+            if not self._goals_ended.wait_for(lambda: self._running == 0, timeout):
+                raise DriverBusy(f"{self._running} goal(s) still running after {timeout} s")
+        with self.lock:
+            self.world.snapshots.restore(self._built)
+            self.robot = ProjectedRobot.of(self.world, self.config.robot)
+            self.handles = HeldHandles()
+            self.options = MotionOptions(
+                base_speed=settings.base_speed, time_scale=settings.time_scale
+            )
+            self.fault = settings.fault
+            self.goal_log = settings.goal_log_path
+            self.clock_offset = self.clock.offset = settings.clock_offset
+            self._lag_tf(settings.tf_lag)
+            self._published = None
+            self._streaming_until = -math.inf
+        self.publish_state()
+
+    def _lag_tf(self, lag: float) -> None:
+        """Send the transforms ``lag`` [s] late from now on (ROS 1's ``/tf``)."""
+        if lag == self.tf_lag:
+            return
+        tf = self._publishers["tf"]
+        plain = tf.publisher if isinstance(tf, LaggingPublisher) else tf
+        self._publishers["tf"] = LaggingPublisher(plain, lag) if lag > 0.0 else plain
+        self.tf_lag = lag
+
+    def _goal_started(self) -> None:
+        with self._goals_ended:
+            self._running += 1
+
+    def _goal_finished(self) -> None:
+        with self._goals_ended:
+            self._running -= 1
+            self._goals_ended.notify_all()
 
     def warm_up(self) -> None:
         """Build the robot's kinematics and collision geometry now, before serving, as a
@@ -191,9 +238,18 @@ class ProjectionDriver:
     def _on_goal(self, server: Any, name: str, action_type: str, handler: Handler) -> None:
         goal = server.accept_new_goal()
         self._record(name, action_type, goal)
+        self._goal_started()
         threading.Thread(
-            target=self._execute, args=(server, action_type, handler, goal), daemon=True
+            target=self._counted, args=(server, action_type, handler, goal), daemon=True
         ).start()
+
+    def _counted(
+        self, server: RosMessage, action_type: str, handler: Handler, goal: RosMessage
+    ) -> None:
+        try:
+            self._execute(server, action_type, handler, goal)
+        finally:
+            self._goal_finished()
 
     def _on_preempt(self, server: str) -> None:
         """Log when a cancel reached the server (``time.monotonic()``, for benchmarks)."""

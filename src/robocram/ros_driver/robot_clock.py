@@ -4,7 +4,7 @@ A robot whose clock is ``offset`` seconds off ours (``--clock-offset``) stamps i
 states, its transforms and its action servers' results, feedback and status by that one
 clock; the plan side compares a result's stamp with the states' (docs/ros.md "state after
 a goal"). actionlib stamps by ``rospy.Time.now()``, so its publishers are wrapped to
-shift what they send.
+shift what they send; they read the offset as they send, so a reset may change it.
 """
 
 from __future__ import annotations
@@ -28,24 +28,24 @@ class RobotClock:
 
     def stamp_actions(self, server: RosMessage) -> None:
         """Make a started ``SimpleActionServer`` stamp its messages by this clock."""
-        if self.offset == 0.0:
-            return
         inner = server.action_server
         for name in PUBLISHERS:
-            setattr(inner, name, _Shifted(getattr(inner, name), self.offset))
+            setattr(inner, name, _Shifted(getattr(inner, name), self))
 
 
 class _Shifted:
-    """A publisher whose messages' header stamps are moved by ``offset`` [s] on sending."""
+    """A publisher whose messages' header stamps are moved by the clock's offset [s] on
+    sending (none moved while it is 0)."""
 
-    def __init__(self, publisher: RosMessage, offset: float) -> None:
+    def __init__(self, publisher: RosMessage, clock: RobotClock) -> None:
         self._publisher = publisher
-        self._offset = offset
+        self._clock = clock
 
     def publish(self, message: RosMessage) -> None:
         import rospy
 
-        message.header.stamp += rospy.Duration.from_sec(self._offset)
+        if self._clock.offset != 0.0:
+            message.header.stamp += rospy.Duration.from_sec(self._clock.offset)
         self._publisher.publish(message)
 
     def unregister(self) -> None:

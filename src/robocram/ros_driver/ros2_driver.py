@@ -70,7 +70,6 @@ class Ros2ProjectionDriver(ProjectionDriver):
         served: dict[str, tuple[str, str]] = {}
         for interface in self.config.actions.values():
             served.setdefault(interface.server, (interface.resource, interface.action_type))
-        refuse = self.fault == "ignore_cancel"
         for server, (resource, action_type) in served.items():
             handler = _handler(resource, action_type, self.config, self.controllers)
             self._servers.append(
@@ -79,13 +78,16 @@ class Ros2ProjectionDriver(ProjectionDriver):
                     action_class(action_type),
                     server,
                     execute_callback=partial(self._execute2, server, action_type, handler),
-                    cancel_callback=partial(self._on_cancel, server, refuse, CancelResponse),
+                    cancel_callback=partial(self._on_cancel, server, CancelResponse),
                     callback_group=group,
                 )
             )
         self.warm_up()
         self._publish_static()
         threading.Thread(target=self._stream, daemon=True).start()
+
+    def _lag_tf(self, lag: float) -> None:
+        """The ROS 2 driver sends its transforms on time (``tf_lag`` is ROS 1's)."""
 
     def _stream(self) -> None:
         """Publish the state when it changed (a thread of its own: the executor's timers
@@ -94,10 +96,10 @@ class Ros2ProjectionDriver(ProjectionDriver):
             time.sleep(1.0 / PUBLISH_RATE)
             self._publish_if_running(changed_only=True)
 
-    def _on_cancel(
-        self, server: str, refuse: bool, response: RclpyObject, _: RclpyObject
-    ) -> RclpyObject:
-        """Log when a cancel reached the server; accept it unless told to ignore cancels."""
+    def _on_cancel(self, server: str, response: RclpyObject, _: RclpyObject) -> RclpyObject:
+        """Log when a cancel reached the server; accept it unless told to ignore cancels
+        (the fault as it is now: a reset may change it)."""
+        refuse = self.fault == "ignore_cancel"
         if self.goal_log is not None:
             line = json.dumps({"server": server, "cancel_seen": time.monotonic()})
             with self._log_lock, self.goal_log.open("a") as log:
@@ -116,6 +118,15 @@ class Ros2ProjectionDriver(ProjectionDriver):
         self, server: str, action_type: str, handler: Handler, handle: RclpyObject
     ) -> RclpyObject:
         """Run one goal to its end; returns the result message (rclpy's execute callback)."""
+        self._goal_started()
+        try:
+            return self._execute_counted(server, action_type, handler, handle)
+        finally:
+            self._goal_finished()
+
+    def _execute_counted(
+        self, server: str, action_type: str, handler: Handler, handle: RclpyObject
+    ) -> RclpyObject:
         result_type = action_class(action_type).Result
         self._record(server, action_type, handle.request)
         cancelled = lambda: bool(handle.is_cancel_requested)  # noqa: E731

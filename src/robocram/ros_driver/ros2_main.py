@@ -3,7 +3,7 @@
 Started from the venv (where ROS 1 is on the path and rclpy is not), it runs itself
 again in the ROS 2 prefix's environment (``ros2_environment.py``); there it builds the
 scene, serves it (``ros2_driver.py``) and prints ``ready <node name>`` once its action
-servers run, until SIGTERM or SIGINT.
+servers run, until SIGTERM or SIGINT, taking resets on its standard input (``driver_reset.py``).
 """
 
 from __future__ import annotations
@@ -14,12 +14,17 @@ import os
 import sys
 import threading
 from collections.abc import Callable
+from typing import TYPE_CHECKING
 
 from robocram.robots import RobotDescription, load_description
 from robocram.ros.ros2_environment import child_argv, require_ros2
 from robocram.ros.ros_config import install_ros_facts, read_ros_config
+from robocram.ros_driver.driver_reset import serve_resets
 from robocram.ros_driver.motion import MotionOptions
 from robocram.world import World
+
+if TYPE_CHECKING:
+    from robocram.ros_driver.ros2_driver import Ros2ProjectionDriver
 
 RUN_AGAIN = "import runpy; runpy.run_module('robocram.ros_driver', run_name='__main__')"
 
@@ -48,7 +53,7 @@ def ros2_main(
     rclpy.init()
     node = rclpy.create_node(args.node_name)
     ready = threading.Event()
-    announce = threading.Thread(target=_announce, args=(ready, node), daemon=True)
+    announce = threading.Thread(target=_announce, args=(ready, node, driver), daemon=True)
     announce.start()
     try:
         serve(driver, node, ready)
@@ -57,6 +62,8 @@ def ros2_main(
         rclpy.try_shutdown()
 
 
-def _announce(ready: threading.Event, node: object) -> None:
+def _announce(ready: threading.Event, node: object, driver: Ros2ProjectionDriver) -> None:
+    """Say the node is ready, then take resets (``driver_reset.py``)."""
     ready.wait()
     print("ready", node.get_fully_qualified_name(), flush=True)  # type: ignore[attr-defined]
+    serve_resets(driver.reset)
