@@ -89,5 +89,6 @@ def test_slow_inferences_make_the_clock_read_sooner() -> None:
     with pytest.raises(TimeLimitExceeded):
         kb.holds("spin", time_limit=0.1)
     # Checking every CHECK_EVERY inferences ran CHECK_EVERY slow calls (4 s); the clock
-    # is now read about every 5 ms, so 0.1 s holds at most ~50 calls of 2 ms.
-    assert 10 < done[0] < CHECK_EVERY // 8
+    # is now read about every 5 ms, so 0.1 s holds at most ~50 calls of 2 ms (fewer on a
+    # loaded machine, where a 2 ms sleep lasts longer: only the upper bound is the claim).
+    assert 0 < done[0] < CHECK_EVERY // 8
