@@ -30,6 +30,7 @@ from robocram.motion.cartesian_path import (
     follow_poses,
     line_poses,
 )
+from robocram.motion.configuration_checker import ConfigurationChecker
 from robocram.motion.contact_allowance import ContactAllowance
 from robocram.motion.corner_blend import blend_radii
 from robocram.motion.errors import MotionInputError
@@ -86,37 +87,65 @@ def plan_tool_path(
         MotionInputError: the path is empty or has more steps than a trajectory holds.
     """
     world = robot.world
-    if not path_in_base:
-        raise MotionInputError(
-            f"a tool path of {robot.name}'s {arm} arm needs at least one pose; got none"
-        )
+    targets = tool_targets(robot, arm, path_in_base, point_in_tcp, "a tool path")
     desc = robot.description
     joints = tuple(desc.arms[arm].joints)
     current = world.joint_states(robot.name)
     start = [current[j] for j in joints]
-    base = world.pose(robot.name)
-    tcp = base.inverse() * world.link_pose(robot.name, desc.arms[arm].tool_frame)
-    steps = densified([tcp * point_in_tcp, *path_in_base])[1:]
-    if len(steps) > MAX_WAYPOINTS:
-        raise MotionInputError(
-            f"a tool path of {robot.name}'s {arm} arm has {len(steps)} steps of "
-            f"{MAX_STEP} m; at most {MAX_WAYPOINTS}: give a shorter path"
-        )
-    point_inverse = point_in_tcp.inverse()
-    targets = [pose * point_inverse for pose in steps]
     judge = _judge(robot, joints, start, tuple(contacts))
     bound = TravelBound.of(robot, joints)
     line = follow_poses(desc, arm, judge, current, targets, bound, random_seed=settings.seed)
     path, fraction, stopped = cut_apart(robot, line.path, line.fraction, line.stopped_by)
-    full = fraction >= 1.0
-    radii = blend_radii(judge, bound, path.waypoints) if full else None
-    limits = joint_limits(desc, joints)
+    timed = timed_tool_path(robot, path, fraction, judge, bound, settings, TOOL_PATH_KIND, contacts)
+    return ToolPathMotion(timed, fraction, stopped)
+
+
+def tool_targets(
+    robot: RobotHandle, arm: str, path_in_base: Sequence[Pose], point_in_tcp: Pose, what: str
+) -> list[Pose]:
+    """The tool frame's poses that put the tool point on ``path_in_base`` (the root link),
+    in steps of at most :data:`MAX_STEP` and :data:`MAX_ROTATION` from where it is now.
+
+    Raises:
+        MotionInputError: the path is empty or has more steps than a trajectory holds.
+    """
+    world = robot.world
+    if not path_in_base:
+        raise MotionInputError(
+            f"{what} of {robot.name}'s {arm} arm needs at least one pose; got none"
+        )
+    frame = robot.description.arms[arm].tool_frame
+    tcp = world.pose(robot.name).inverse() * world.link_pose(robot.name, frame)
+    steps = densified([tcp * point_in_tcp, *path_in_base])[1:]
+    if len(steps) > MAX_WAYPOINTS:
+        raise MotionInputError(
+            f"{what} of {robot.name}'s {arm} arm has {len(steps)} steps of "
+            f"{MAX_STEP} m; at most {MAX_WAYPOINTS}: give a shorter path"
+        )
+    inverse = point_in_tcp.inverse()
+    return [pose * inverse for pose in steps]
+
+
+def timed_tool_path(
+    robot: RobotHandle,
+    path: JointPath,
+    fraction: float,
+    checker: ConfigurationChecker,
+    bound: TravelBound,
+    settings: MotionSettings,
+    kind: str,
+    allowances: Collection[ContactAllowance],
+) -> ArmMotion:
+    """``path`` timed under its joints' limits (its corners on checked blends when the
+    whole path was reached), storing ``allowances`` for whoever audits it."""
+    radii = blend_radii(checker, bound, path.waypoints) if fraction >= 1.0 else None
+    limits = joint_limits(robot.description, path.joints)
     trajectory = time_parameterize(
-        robot.name, joints, path.waypoints, limits, kind=TOOL_PATH_KIND, period=settings.period,
+        robot.name, path.joints, path.waypoints, limits, kind=kind, period=settings.period,
         corner_radii=radii,
     )  # fmt: skip
-    stored = replace(trajectory, allowed_contacts=(*trajectory.allowed_contacts, *contacts))
-    return ToolPathMotion(ArmMotion(path, stored, fraction), fraction, stopped)
+    stored = replace(trajectory, allowed_contacts=(*trajectory.allowed_contacts, *allowances))
+    return ArmMotion(path, stored, fraction)
 
 
 def _judge(

@@ -19,34 +19,30 @@ from __future__ import annotations
 
 import math
 from collections.abc import Collection, Iterator, Mapping, Sequence
-from dataclasses import replace
 
 import numpy as np
 
 from robocram.kinematics import IKResult, PlanarBase
 from robocram.kinematics.planar_base import BASE_X_JOINT, BASE_Y_JOINT, BASE_YAW_JOINT
 from robocram.kinematics.whole_body_track import track_whole_body
-from robocram.motion.arm_motion import ArmMotion, MotionSettings
+from robocram.motion.arm_motion import MotionSettings
 from robocram.motion.carried_joint import CarriedJoint
-from robocram.motion.cartesian_path import JUMP_THRESHOLD, MAX_STEP
+from robocram.motion.cartesian_path import JUMP_THRESHOLD
 from robocram.motion.configuration_checker import LinkPair
 from robocram.motion.contact_allowance import ContactAllowance
-from robocram.motion.corner_blend import blend_radii
-from robocram.motion.errors import MotionInputError
 from robocram.motion.hand_contact import HandContact, hand_at_start
 from robocram.motion.held_start_contacts import split_start_contacts
-from robocram.motion.joint_limits import joint_limits
 from robocram.motion.joint_path import JointPath
 from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.segment_check import CheckCounter, segment_free
-from robocram.motion.time_parameterization import MAX_WAYPOINTS, time_parameterize
 from robocram.motion.tool_path import (
     AT_TCP,
     DEFAULT_SETTINGS,
     TOOL_PATH_KIND,
     ToolPathMotion,
     cut_apart,
-    densified,
+    timed_tool_path,
+    tool_targets,
 )
 from robocram.motion.travel_bound import TravelBound
 from robocram.motion.whole_body_scene import WholeBodyScene
@@ -89,23 +85,11 @@ def plan_whole_body_tool_path(
         MotionInputError: the path is empty or has more steps than a trajectory holds.
     """
     world = robot.world
-    if not path_in_base:
-        raise MotionInputError(
-            f"a whole-body tool path of {robot.name}'s {arm} arm needs at least one pose; got none"
-        )
+    targets = tool_targets(robot, arm, path_in_base, point_in_tcp, "a whole-body tool path")
     desc = robot.description
     joints = tuple(desc.arms[arm].joints)
     current = world.joint_states(robot.name)
     start = world.pose(robot.name)
-    tcp = start.inverse() * world.link_pose(robot.name, desc.arms[arm].tool_frame)
-    steps = densified([tcp * point_in_tcp, *path_in_base])[1:]
-    if len(steps) > MAX_WAYPOINTS:
-        raise MotionInputError(
-            f"a whole-body tool path of {robot.name}'s {arm} arm has {len(steps)} steps of "
-            f"{MAX_STEP} m; at most {MAX_WAYPOINTS}: give a shorter path"
-        )
-    inverse = point_in_tcp.inverse()
-    targets = [pose * inverse for pose in steps]
     hand = hand_at_start(world, robot.name, hand)
     scene, touching = _scene(
         robot, joints, tuple(contacts), tuple(allowed_links), hand, tuple(carried)
@@ -121,16 +105,11 @@ def plan_whole_body_tool_path(
     fraction = (len(waypoints) - 1) / len(targets)
     path = JointPath(scene.joints, tuple(waypoints), "whole-body", len(waypoints))
     path, fraction, stopped = cut_apart(robot, path, fraction, stopped, joints)
-    full = fraction >= 1.0
     bound = TravelBound(scene.joints, np.concatenate(([1.0, 1.0, levers], arm_bound.lever)))
-    radii = blend_radii(scene, bound, path.waypoints) if full else None
-    trajectory = time_parameterize(
-        robot.name, scene.joints, path.waypoints, joint_limits(desc, scene.joints),
-        kind=kind, period=settings.period, corner_radii=radii,
-    )  # fmt: skip
     held = hand.allowances() if hand is not None else ()
-    stored = replace(trajectory, allowed_contacts=(*trajectory.allowed_contacts, *contacts, *held))
-    return ToolPathMotion(ArmMotion(path, stored, fraction), fraction, stopped)
+    allowed = (*contacts, *held)
+    timed = timed_tool_path(robot, path, fraction, scene, bound, settings, kind, allowed)
+    return ToolPathMotion(timed, fraction, stopped)
 
 
 def _scene(

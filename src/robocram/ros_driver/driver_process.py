@@ -64,14 +64,7 @@ class DriverProcess:
         if goal_log is not None:
             self.args += ["--goal-log", str(goal_log)]
         self.master_uri = master_uri
-        self.settings = DriverSettings(
-            None if goal_log is None else str(goal_log),
-            clock_offset,
-            base_speed,
-            time_scale,
-            fault,
-            tf_lag,
-        )
+        self.settings = _settings(goal_log, clock_offset, base_speed, time_scale, fault, tf_lag)
         self._resets = 0
         self.process: subprocess.Popen[bytes] | None = None
         self._log = tempfile.NamedTemporaryFile(  # noqa: SIM115 - closed by stop()
@@ -128,14 +121,7 @@ class DriverProcess:
         process = self.process
         if process is None or process.stdin is None or process.poll() is not None:
             raise RosNodeError("the driver does not run: start it before resetting it")
-        settings = DriverSettings(
-            None if goal_log is None else str(goal_log),
-            clock_offset,
-            base_speed,
-            time_scale,
-            fault,
-            tf_lag,
-        )
+        settings = _settings(goal_log, clock_offset, base_speed, time_scale, fault, tf_lag)
         self._resets += 1
         number = self._resets
         try:
@@ -188,3 +174,16 @@ class DriverProcess:
         traceback: TracebackType | None,
     ) -> None:
         self.stop()
+
+
+def _settings(
+    goal_log: Path | None,
+    clock_offset: float,
+    base_speed: float,
+    time_scale: float,
+    fault: str,
+    tf_lag: float,
+) -> DriverSettings:
+    """The per-run settings a driver starts with or is reset to."""
+    log = None if goal_log is None else str(goal_log)
+    return DriverSettings(log, clock_offset, base_speed, time_scale, fault, tf_lag)
