@@ -6,7 +6,7 @@ so the stored templates are never mutated and can be shared by concurrent querie
 
 from __future__ import annotations
 
-from robocram.logic.terms import Term, Var, new_term
+from robocram.logic.terms import Term, Var, make_var, new_term
 from robocram.logic.unify import unify
 from robocram.logic.value import Value
 
@@ -64,16 +64,13 @@ def compile_term(term: Value, slots: dict[Var, Slot]) -> Value:
     return new_term(Term, (term[0], args))
 
 
-_new = object.__new__
-
-
 def build(t: Value, regs: list[Value]) -> Value:
     """Instantiate a template against the registers, creating fresh Vars on first use."""
     tt = type(t)
     if tt is Slot:
         v = regs[t.i]
-        if v is None:  # object.__new__ and the slot set here: no __init__ frame to run
-            v = regs[t.i] = _new(Var)
+        if v is None:  # make_var and the slot set here: no Python frame to run
+            v = regs[t.i] = make_var()
             v.ref = None
         return v
     if tt is Tmpl:

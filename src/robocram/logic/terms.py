@@ -14,12 +14,35 @@ from robocram.logic.bigint import int_text
 from robocram.logic.operators import OperatorTable
 from robocram.logic.value import Value
 
-__all__ = ["NIL", "PString", "Term", "Var", "deref", "format_term", "make_list", "quote_atom"]
+__all__ = [
+    "NIL",
+    "PString",
+    "Term",
+    "Var",
+    "deref",
+    "format_term",
+    "make_list",
+    "make_var",
+    "quote_atom",
+]
 
 NIL = "[]"
 
 
-class Var:
+class _VarType(type):
+    """Var's metaclass: `Var()` makes an unbound variable (`ref` None).
+
+    Var itself has no `__init__`, so :data:`make_var` (type's own call, bound to Var)
+    allocates one without a Python frame; the caller then sets `ref`.
+    """
+
+    def __call__(cls) -> Var:
+        v: Var = type.__call__(cls)
+        v.ref = None
+        return v
+
+
+class Var(metaclass=_VarType):
     """An unbound logic variable; `ref` is None until the variable is bound.
 
     >>> v = Var(); v.ref is None
@@ -27,9 +50,7 @@ class Var:
     """
 
     __slots__ = ("ref",)
-
-    def __init__(self) -> None:
-        self.ref: Value = None
+    ref: Value
 
     def __repr__(self) -> str:
         return f"_G{id(self) % 100000}"
@@ -103,6 +124,8 @@ def deref(t: Value) -> Value:
 
 
 new_term = tuple.__new__
+# A Var with `ref` not yet set, for hot paths: `v = make_var(); v.ref = None`.
+make_var = type.__call__.__get__(Var)
 
 
 def make_list(items: Iterable[Value], tail: Value = NIL) -> Value:
