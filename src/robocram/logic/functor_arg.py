@@ -102,4 +102,4 @@ def functor_make(name: Value, arity: Value) -> Value:
         return name
     if type(name) is not str:
         raise PrologTypeError("atom", name, f"functor/3: {name!r} cannot name a compound")
-    return Term(name, [Var() for _ in range(n)])
+    return new_term(Term, (name, fresh_vars(n)))

@@ -14,6 +14,7 @@ from collections.abc import Callable, Iterable, Sequence
 from itertools import islice
 
 from robocram.logic.bulk import paused_gc
+from robocram.logic.functor_arg import fresh_vars
 from robocram.logic.limits import Budget
 from robocram.logic.terms import NIL, Term, Var, new_term
 from robocram.logic.value import Value
@@ -48,12 +49,12 @@ def checked_list(items: Sequence[Value], budget: Budget, tail: Value = NIL) -> V
 def fresh_variables(n: int, budget: Budget) -> list[Var]:
     """`n` new variables, checking the limits every CHUNK of them."""
     if n <= CHUNK:
-        return [Var() for _ in range(n)]
+        return list(fresh_vars(n))
     out: list[Var] = []
     with paused_gc():
         for start in range(0, n, CHUNK):
             budget.check()
-            out.extend([Var() for _ in range(min(CHUNK, n - start))])
+            out.extend(fresh_vars(min(CHUNK, n - start)))
     return out
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from robocram.logic.cycles import check_acyclic, cyclic_error, is_acyclic
-from robocram.logic.terms import PString, Term, Var, new_term
+from robocram.logic.terms import PString, Term, Var, make_var, new_term
 from robocram.logic.value import Value
 
 __all__ = [
@@ -176,7 +176,8 @@ def _copy(term: Value, mapping: dict[Var, Var]) -> Value:
         if term.ref is None:
             fresh = mapping.get(term)
             if fresh is None:
-                fresh = mapping[term] = Var()
+                fresh = mapping[term] = make_var()
+                fresh.ref = None
             return fresh
         term = term.ref
     if type(term) is not Term:
@@ -220,7 +221,8 @@ def _copy_deep(term: Value, mapping: dict[Var, Var]) -> Value:
         if type(t) is Var:
             fresh = mapping.get(t)
             if fresh is None:
-                fresh = mapping[t] = Var()
+                fresh = mapping[t] = make_var()
+                fresh.ref = None
             out.append(fresh)
         elif type(t) is Term:
             stack.append((True, t))
