@@ -12,7 +12,7 @@ from robocram.logic.errors import (
     PrologInstantiationError,
     PrologTypeError,
 )
-from robocram.logic.terms import Term, Var, make_var, new_term
+from robocram.logic.terms import Term, Var, make_term, make_var
 from robocram.logic.value import Value
 
 __all__ = ["arg_check", "fresh_vars", "functor_make"]
@@ -90,7 +90,7 @@ def functor_make(name: Value, arity: Value) -> Value:
     name = _deref(name)
     n = _deref(arity)
     if type(name) is str and type(n) is int and n > 0:  # the common case, checked below
-        return new_term(Term, (name, fresh_vars(n)))
+        return make_term((name, fresh_vars(n)))
     if type(name) is Var:
         raise PrologInstantiationError("functor/3: both the term and the name are unbound")
     n = need_int(n, "functor/3")
@@ -102,4 +102,4 @@ def functor_make(name: Value, arity: Value) -> Value:
         return name
     if type(name) is not str:
         raise PrologTypeError("atom", name, f"functor/3: {name!r} cannot name a compound")
-    return new_term(Term, (name, fresh_vars(n)))
+    return make_term((name, fresh_vars(n)))

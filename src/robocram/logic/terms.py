@@ -9,6 +9,7 @@ themselves as Prolog text (`format_term`), which `repr`, `write/1` and error mes
 from __future__ import annotations
 
 from collections.abc import Iterable
+from typing import TYPE_CHECKING
 
 from robocram.logic.bigint import int_text
 from robocram.logic.operators import OperatorTable
@@ -22,6 +23,7 @@ __all__ = [
     "deref",
     "format_term",
     "make_list",
+    "make_term",
     "make_var",
     "quote_atom",
 ]
@@ -56,7 +58,20 @@ class Var(metaclass=_VarType):
         return f"_G{id(self) % 100000}"
 
 
-class Term(tuple[str, tuple[Value, ...]]):
+class _TermType(type):
+    """Term's metaclass: `Term(name, args)` makes a compound term.
+
+    Term itself has no `__new__` (tuple's is used), so :data:`make_term` (type's own
+    call, bound to Term) builds one from a `(name, args)` pair without a Python frame or
+    the argument checks and copies of `tuple.__new__(Term, ...)`.
+    """
+
+    def __call__(cls, name: str, args: Iterable[Value] = ()) -> Term:
+        t: Term = type.__call__(cls, (name, tuple(args)))
+        return t
+
+
+class Term(tuple[str, tuple[Value, ...]], metaclass=_TermType):
     """An immutable compound term `name(args...)`.
 
     >>> t = Term("point", (1, 2)); t.name, t.args
@@ -65,8 +80,9 @@ class Term(tuple[str, tuple[Value, ...]]):
 
     __slots__ = ()
 
-    def __new__(cls, name: str, args: Iterable[Value] = ()) -> Term:
-        return tuple.__new__(cls, (name, tuple(args)))
+    if TYPE_CHECKING:  # the signature the metaclass's call gives `Term(...)`
+
+        def __new__(cls, name: str, args: Iterable[Value] = ()) -> Term: ...
 
     @property
     def name(self) -> str:
@@ -124,6 +140,8 @@ def deref(t: Value) -> Value:
 
 
 new_term = tuple.__new__
+# A Term from a `(name, args)` pair, for hot paths: `make_term((name, args))`.
+make_term = type.__call__.__get__(Term)
 # A Var with `ref` not yet set, for hot paths: `v = make_var(); v.ref = None`.
 make_var = type.__call__.__get__(Var)
 
