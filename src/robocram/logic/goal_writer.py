@@ -26,7 +26,7 @@ from robocram.logic.goal_terms import TERM_GOALS, emit_term_goal
 from robocram.logic.inline_goal import CALL, DISJ, IFTHEN, INLINE, ITE, NOT, SEQ
 from robocram.logic.lru import LRUCache
 from robocram.logic.template import Slot, Tmpl
-from robocram.logic.terms import Term, Var, make_term, make_var, new_term
+from robocram.logic.terms import Term, Var, make_term, make_var
 from robocram.logic.unify import identical, unify
 from robocram.logic.univ import univ_compose, univ_list
 from robocram.logic.value import Value
@@ -60,7 +60,6 @@ _NAMESPACE: dict[str, object] = {
     "NOT": NOT,
     "univ_list": univ_list,
     "univ_compose": univ_compose,
-    "new_term": new_term,
     "mkt": make_term,  # `mkt((name, args))`: a Term without tuple.__new__'s checks
     "unify": unify,
     "identical": identical,

@@ -139,7 +139,6 @@ def deref(t: Value) -> Value:
     return t
 
 
-new_term = tuple.__new__
 # A Term from a `(name, args)` pair, for hot paths: `make_term((name, args))`.
 make_term = type.__call__.__get__(Term)
 # A Var with `ref` not yet set, for hot paths: `v = make_var(); v.ref = None`.
@@ -154,7 +153,7 @@ def make_list(items: Iterable[Value], tail: Value = NIL) -> Value:
     """
     result = tail
     for item in reversed(list(items)):
-        result = new_term(Term, (".", (item, result)))
+        result = make_term((".", (item, result)))
     return result
 
 
