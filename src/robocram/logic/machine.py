@@ -197,7 +197,10 @@ class Machine:
                         continue
                     # A call's first item is its (name, arity) key; `name` stays that key
                     # until a path below needs the name itself.
-                    p = preds.get(name)
+                    try:
+                        p = preds[name]
+                    except KeyError:
+                        p = None
                 elif tg is Term:
                     name = goal[0]
                     args = goal[1]
