@@ -10,6 +10,7 @@ from robocram.logic.builtin_spec import Builtin, det, nondet
 from robocram.logic.builtin_terms import list_items, need_int
 from robocram.logic.cycles import list_prefix
 from robocram.logic.errors import PrologDomainError, PrologInstantiationError, PrologTypeError
+from robocram.logic.functor_arg import fresh_vars
 from robocram.logic.long_work import checked_keys, checked_list, checked_sort, fresh_variables
 from robocram.logic.terms import NIL, Term, Var, deref, make_list
 from robocram.logic.unify import order_key
@@ -43,7 +44,7 @@ def _length(m: Engine, a: Args) -> Iterator[bool]:
     extra = 0
     while True:
         mark = len(m.trail)
-        if m.unify(t, make_list([Var() for _ in range(extra)])) and m.unify(want, n + extra):
+        if m.unify(t, make_list(fresh_vars(extra))) and m.unify(want, n + extra):
             yield True
         m.undo_to(mark)
         extra += 1

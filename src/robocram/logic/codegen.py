@@ -200,7 +200,7 @@ class ClauseWriter(GoalWriter):
             if compiled is not None:
                 return compiled
             inner = "".join(f"{self.goal(a)}, " for a in args)
-            return f"new_term(Term, ({self.const(name)}, ({inner})))"
+            return f"mkt(({self.const(name)}, ({inner})))"
         if type(g) is Tmpl:  # a call: a plain tuple the machine recognises by CALL
             inner = "".join(f"{self.build(a)}, " for a in args)
             return f"({self.const(pred_key(name, len(args)))}, ({inner}), CALL)"

@@ -22,7 +22,7 @@ from robocram.logic.choicepoints import (
     Cont,
 )
 from robocram.logic.errors import PrologInstantiationError, PrologTypeError
-from robocram.logic.terms import Term, Var, new_term
+from robocram.logic.terms import Term, Var, make_term
 from robocram.logic.value import Value
 
 if TYPE_CHECKING:
@@ -62,9 +62,9 @@ def add_args(goal: Value, extra: tuple[Value, ...]) -> Value:
             )
         goal = goal.ref
     if type(goal) is str:
-        return new_term(Term, (goal, extra)) if extra else goal
+        return make_term((goal, extra)) if extra else goal
     if type(goal) is Term:
-        return new_term(Term, (goal[0], goal[1] + extra)) if extra else goal
+        return make_term((goal[0], goal[1] + extra)) if extra else goal
     raise PrologTypeError("callable", goal, f"call/N: {goal!r} is not a callable term")
 
 
@@ -94,7 +94,7 @@ def _deref(t: Value) -> Value:
 
 
 def _cut(b: int) -> Term:
-    return new_term(Term, ("$cut", (b,)))
+    return make_term(("$cut", (b,)))
 
 
 def run_control(
@@ -109,7 +109,7 @@ def run_control(
             cps.append([ALT, len(trail), (args[1], cutb, nxt)])
             cond, then = left[1]
             marker = "$cut" if left[0] == "->" else "$softcut"
-            return (cond, b + 1, (new_term(Term, (marker, (b,))), 0, (then, cutb, nxt)))
+            return (cond, b + 1, (make_term((marker, (b,))), 0, (then, cutb, nxt)))
         cps.append([ALT, len(trail), (args[1], cutb, nxt)])
         return (left, cutb, nxt)
     if name == "$cut":
@@ -141,7 +141,7 @@ def run_control(
     if name == "catch":
         b = len(cps)
         cps.append([CATCH, len(trail), args[1], args[2], nxt, cutb, True])
-        return (args[0], b + 1, (new_term(Term, ("$exitcatch", (b,))), 0, nxt))
+        return (args[0], b + 1, (make_term(("$exitcatch", (b,))), 0, nxt))
     if name == "$exitcatch":
         b = args[0]
         if b == len(cps) - 1:

@@ -11,7 +11,7 @@ from collections.abc import Sequence
 from typing import cast
 
 from robocram.logic.acyclic import is_acyclic
-from robocram.logic.terms import NIL, PString, Term, Var, new_term
+from robocram.logic.terms import NIL, PString, Term, Var, make_term
 from robocram.logic.value import Value
 
 __all__ = ["NONE", "SelfContainingValue", "to_prolog", "to_python"]
@@ -61,10 +61,10 @@ def _to_prolog(value: object) -> object:
     if isinstance(value, list) and t is list:
         result: object = NIL
         for item in reversed(value):
-            result = new_term(Term, (".", (_to_prolog(item), result)))
+            result = make_term((".", (_to_prolog(item), result)))
         return result
     if isinstance(value, Term) and t is Term:
-        return new_term(Term, (value[0], tuple([_to_prolog(a) for a in value[1]])))
+        return make_term((value[0], tuple([_to_prolog(a) for a in value[1]])))
     return _to_prolog_leaf(value)
 
 
@@ -119,10 +119,10 @@ def _items(value: object) -> Sequence[object] | None:
 def _assembled_prolog(value: object, args: list[object]) -> object:
     """The term of ``value`` (a list or Term) from its converted items ``args``."""
     if isinstance(value, Term) and type(value) is Term:
-        return new_term(Term, (value[0], tuple(args)))
+        return make_term((value[0], tuple(args)))
     result: object = NIL
     for item in reversed(args):
-        result = new_term(Term, (".", (item, result)))
+        result = make_term((".", (item, result)))
     return result
 
 

@@ -7,14 +7,12 @@ fail); `functor_make` builds the term of `functor(T, F, N)` with T unbound.
 
 from __future__ import annotations
 
-from itertools import repeat
-
 from robocram.logic.errors import (
     PrologDomainError,
     PrologInstantiationError,
     PrologTypeError,
 )
-from robocram.logic.terms import Term, Var, new_term
+from robocram.logic.terms import Term, Var, make_term, make_var
 from robocram.logic.value import Value
 
 __all__ = ["arg_check", "fresh_vars", "functor_make"]
@@ -55,28 +53,32 @@ def arg_check(n: Value, t: Value) -> int:
 
 def fresh_vars(n: int) -> tuple[Var, ...]:
     """`n` new unbound variables; small counts spelt out (no comprehension frame to run,
-    and no `__init__` frame per variable: `object.__new__` and the slot set here).
+    and no Python frame per variable: `make_var` and the slot set here).
 
     >>> len(fresh_vars(2)), len(fresh_vars(7))
     (2, 7)
     """
     if 0 < n <= 3:
-        a = _new(Var)
+        a = _new()
         a.ref = None
         if n == 1:
             return (a,)
-        b = _new(Var)
+        b = _new()
         b.ref = None
         if n == 2:
             return (a, b)
-        c = _new(Var)
+        c = _new()
         c.ref = None
         return (a, b, c)
-    return tuple(map(_make, repeat(Var, n)))
+    made = []
+    for _ in range(n):
+        v = _new()
+        v.ref = None
+        made.append(v)
+    return tuple(made)
 
 
-_new = object.__new__
-_make = type.__call__
+_new = make_var
 
 
 def functor_make(name: Value, arity: Value) -> Value:
@@ -88,7 +90,7 @@ def functor_make(name: Value, arity: Value) -> Value:
     name = _deref(name)
     n = _deref(arity)
     if type(name) is str and type(n) is int and n > 0:  # the common case, checked below
-        return new_term(Term, (name, fresh_vars(n)))
+        return make_term((name, fresh_vars(n)))
     if type(name) is Var:
         raise PrologInstantiationError("functor/3: both the term and the name are unbound")
     n = need_int(n, "functor/3")
@@ -100,4 +102,4 @@ def functor_make(name: Value, arity: Value) -> Value:
         return name
     if type(name) is not str:
         raise PrologTypeError("atom", name, f"functor/3: {name!r} cannot name a compound")
-    return Term(name, [Var() for _ in range(n)])
+    return make_term((name, fresh_vars(n)))

@@ -90,7 +90,7 @@ def _functor(w: GoalWriter, t: Value, f: Value, n: Value) -> bool:
         w.emit(_deref(tf), 1)
         w.emit(_deref(tn), 1)
         w.emit(f"if type({tf}) is str and type({tn}) is int and {tn} > 0:", 1)
-        w.emit(f"v{t.i} = new_term(Term, ({tf}, fresh_vars({tn})))", 2)
+        w.emit(f"v{t.i} = mkt(({tf}, fresh_vars({tn})))", 2)
         w.emit(f"else: v{t.i} = functor_make({tf}, {tn})", 1)
         w.known.add(t.i)
         return True

@@ -26,7 +26,7 @@ from robocram.logic.goal_terms import TERM_GOALS, emit_term_goal
 from robocram.logic.inline_goal import CALL, DISJ, IFTHEN, INLINE, ITE, NOT, SEQ
 from robocram.logic.lru import LRUCache
 from robocram.logic.template import Slot, Tmpl
-from robocram.logic.terms import Term, Var, new_term
+from robocram.logic.terms import Term, Var, make_term, make_var
 from robocram.logic.unify import identical, unify
 from robocram.logic.univ import univ_compose, univ_list
 from robocram.logic.value import Value
@@ -49,7 +49,7 @@ Factory = Callable[..., Any]
 
 _NAMESPACE: dict[str, object] = {
     "Var": Var,
-    "newv": object.__new__,  # `newv(Var)` then setting `ref`: no __init__ frame to run
+    "newv": make_var,  # `newv()` then setting `ref`: no Python frame to run
     "Term": Term,
     "INLINE": INLINE,
     "CALL": CALL,
@@ -60,7 +60,7 @@ _NAMESPACE: dict[str, object] = {
     "NOT": NOT,
     "univ_list": univ_list,
     "univ_compose": univ_compose,
-    "new_term": new_term,
+    "mkt": make_term,  # `mkt((name, args))`: a Term without tuple.__new__'s checks
     "unify": unify,
     "identical": identical,
     "ev": evaluate,
@@ -226,7 +226,7 @@ class GoalWriter:
             slots_in(t, found)
         for i in found:
             if i not in self.known:
-                self.emit(f"v{i} = newv(Var); v{i}.ref = None", depth)
+                self.emit(f"v{i} = newv(); v{i}.ref = None", depth)
                 self.known.add(i)
 
     def build(self, t: Value) -> str:
@@ -235,7 +235,7 @@ class GoalWriter:
             return f"v{t.i}"
         if type(t) is Tmpl:
             args = "".join(f"{self.build(a)}, " for a in t.args)
-            return f"new_term(Term, ({self.const(t.name)}, ({args})))"
+            return f"mkt(({self.const(t.name)}, ({args})))"
         return self.const(t)
 
     def cut(self) -> None:

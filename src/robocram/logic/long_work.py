@@ -14,8 +14,9 @@ from collections.abc import Callable, Iterable, Sequence
 from itertools import islice
 
 from robocram.logic.bulk import paused_gc
+from robocram.logic.functor_arg import fresh_vars
 from robocram.logic.limits import Budget
-from robocram.logic.terms import NIL, Term, Var, new_term
+from robocram.logic.terms import NIL, Var, make_term
 from robocram.logic.value import Value
 
 __all__ = ["CHUNK", "checked_keys", "checked_list", "checked_sort", "fresh_variables"]
@@ -35,25 +36,25 @@ def checked_list(items: Sequence[Value], budget: Budget, tail: Value = NIL) -> V
     result = tail
     if len(items) <= CHUNK:
         for item in reversed(items):
-            result = new_term(Term, (".", (item, result)))
+            result = make_term((".", (item, result)))
         return result
     with paused_gc():
         for end in range(len(items), 0, -CHUNK):
             budget.check()
             for i in range(end - 1, max(end - CHUNK, 0) - 1, -1):
-                result = new_term(Term, (".", (items[i], result)))
+                result = make_term((".", (items[i], result)))
     return result
 
 
 def fresh_variables(n: int, budget: Budget) -> list[Var]:
     """`n` new variables, checking the limits every CHUNK of them."""
     if n <= CHUNK:
-        return [Var() for _ in range(n)]
+        return list(fresh_vars(n))
     out: list[Var] = []
     with paused_gc():
         for start in range(0, n, CHUNK):
             budget.check()
-            out.extend([Var() for _ in range(min(CHUNK, n - start))])
+            out.extend(fresh_vars(min(CHUNK, n - start)))
     return out
 
 

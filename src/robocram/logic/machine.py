@@ -42,7 +42,7 @@ from robocram.logic.occurs import unify_checked
 from robocram.logic.predicate import DET, NONDET, USER, WARM_CALLS, Pred
 from robocram.logic.procedure import Procedure
 from robocram.logic.python_predicates import python_solutions
-from robocram.logic.terms import Term, Var, new_term
+from robocram.logic.terms import Term, Var, make_term
 from robocram.logic.unify import copy_resolved, undo, unify
 from robocram.logic.value import Value
 
@@ -197,7 +197,10 @@ class Machine:
                         continue
                     # A call's first item is its (name, arity) key; `name` stays that key
                     # until a path below needs the name itself.
-                    p = preds.get(name)
+                    try:
+                        p = preds[name]
+                    except KeyError:
+                        p = None
                 elif tg is Term:
                     name = goal[0]
                     args = goal[1]
@@ -396,7 +399,7 @@ class Machine:
             run = self.clause_runner(cl)
         cont = run(cp[2], self.trail, cb, cp[3], cps)
         if type(cont) is list:
-            return (new_term(Term, (cp[7].name, tuple(cont))), 0, cp[3])
+            return (make_term((cp[7].name, tuple(cont))), 0, cp[3])
         return cont
 
     def _call_other(self, goal: Value, cutb: int, nxt: Cont) -> Cont:

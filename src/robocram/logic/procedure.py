@@ -229,8 +229,9 @@ class _ProcWriter(ClauseWriter):
             # there (or there is none): every call runs every clause, so no switch.
             self.branch(b.every, 2, switched=False)
             return
-        self.emit("while type(a0) is Var and a0.ref is not None: a0 = a0.ref", 2)
+        # The type is taken once for a bound first argument (the common call), not twice.
         self.emit("t = type(a0)", 2)
+        self.emit("while t is Var and a0.ref is not None: a0 = a0.ref; t = type(a0)", 2)
         self.emit("if t is Term:", 2)
         if len(b.compound) > 1:
             self.emit("f = a0[0]; n = len(a0[1])", 3)

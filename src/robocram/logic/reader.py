@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from robocram.logic.lexer import Token, syntax_error, tokenize
 from robocram.logic.operators import OperatorTable
-from robocram.logic.terms import NIL, PString, Term, Var, make_list
+from robocram.logic.terms import NIL, PString, Term, Var, make_list, make_var
 from robocram.logic.value import Value
 
 __all__ = ["read_query", "read_terms"]
@@ -75,11 +75,12 @@ class _Parser:
         if kind == "num":
             return tok.value, 0
         if kind == "var":
-            if tok.value == "_":
-                return Var(), 0
-            var = self.varmap.get(tok.value)
+            var = self.varmap.get(tok.value) if tok.value != "_" else None
             if var is None:
-                var = self.varmap[tok.value] = Var()
+                var = make_var()
+                var.ref = None
+                if tok.value != "_":
+                    self.varmap[tok.value] = var
             return var, 0
         if kind == "str":
             return self.quoted_text(tok.value), 0

@@ -6,7 +6,7 @@ so the stored templates are never mutated and can be shared by concurrent querie
 
 from __future__ import annotations
 
-from robocram.logic.terms import Term, Var, new_term
+from robocram.logic.terms import Term, Var, make_term, make_var
 from robocram.logic.unify import unify
 from robocram.logic.value import Value
 
@@ -61,10 +61,7 @@ def compile_term(term: Value, slots: dict[Var, Slot]) -> Value:
     args = tuple([compile_term(a, slots) for a in term[1]])
     if any(type(a) is Slot or type(a) is Tmpl for a in args):
         return Tmpl(term[0], args)
-    return new_term(Term, (term[0], args))
-
-
-_new = object.__new__
+    return make_term((term[0], args))
 
 
 def build(t: Value, regs: list[Value]) -> Value:
@@ -72,12 +69,12 @@ def build(t: Value, regs: list[Value]) -> Value:
     tt = type(t)
     if tt is Slot:
         v = regs[t.i]
-        if v is None:  # object.__new__ and the slot set here: no __init__ frame to run
-            v = regs[t.i] = _new(Var)
+        if v is None:  # make_var and the slot set here: no Python frame to run
+            v = regs[t.i] = make_var()
             v.ref = None
         return v
     if tt is Tmpl:
-        return new_term(Term, (t.name, tuple([build(a, regs) for a in t.args])))
+        return make_term((t.name, tuple([build(a, regs) for a in t.args])))
     return t
 
 

@@ -9,17 +9,42 @@ themselves as Prolog text (`format_term`), which `repr`, `write/1` and error mes
 from __future__ import annotations
 
 from collections.abc import Iterable
+from typing import TYPE_CHECKING
 
 from robocram.logic.bigint import int_text
 from robocram.logic.operators import OperatorTable
 from robocram.logic.value import Value
 
-__all__ = ["NIL", "PString", "Term", "Var", "deref", "format_term", "make_list", "quote_atom"]
+__all__ = [
+    "NIL",
+    "PString",
+    "Term",
+    "Var",
+    "deref",
+    "format_term",
+    "make_list",
+    "make_term",
+    "make_var",
+    "quote_atom",
+]
 
 NIL = "[]"
 
 
-class Var:
+class _VarType(type):
+    """Var's metaclass: `Var()` makes an unbound variable (`ref` None).
+
+    Var itself has no `__init__`, so :data:`make_var` (type's own call, bound to Var)
+    allocates one without a Python frame; the caller then sets `ref`.
+    """
+
+    def __call__(cls) -> Var:
+        v: Var = type.__call__(cls)
+        v.ref = None
+        return v
+
+
+class Var(metaclass=_VarType):
     """An unbound logic variable; `ref` is None until the variable is bound.
 
     >>> v = Var(); v.ref is None
@@ -27,15 +52,26 @@ class Var:
     """
 
     __slots__ = ("ref",)
-
-    def __init__(self) -> None:
-        self.ref: Value = None
+    ref: Value
 
     def __repr__(self) -> str:
         return f"_G{id(self) % 100000}"
 
 
-class Term(tuple[str, tuple[Value, ...]]):
+class _TermType(type):
+    """Term's metaclass: `Term(name, args)` makes a compound term.
+
+    Term itself has no `__new__` (tuple's is used), so :data:`make_term` (type's own
+    call, bound to Term) builds one from a `(name, args)` pair without a Python frame or
+    the argument checks and copies of `tuple.__new__(Term, ...)`.
+    """
+
+    def __call__(cls, name: str, args: Iterable[Value] = ()) -> Term:
+        t: Term = type.__call__(cls, (name, tuple(args)))
+        return t
+
+
+class Term(tuple[str, tuple[Value, ...]], metaclass=_TermType):
     """An immutable compound term `name(args...)`.
 
     >>> t = Term("point", (1, 2)); t.name, t.args
@@ -44,8 +80,9 @@ class Term(tuple[str, tuple[Value, ...]]):
 
     __slots__ = ()
 
-    def __new__(cls, name: str, args: Iterable[Value] = ()) -> Term:
-        return tuple.__new__(cls, (name, tuple(args)))
+    if TYPE_CHECKING:  # the signature the metaclass's call gives `Term(...)`
+
+        def __new__(cls, name: str, args: Iterable[Value] = ()) -> Term: ...
 
     @property
     def name(self) -> str:
@@ -102,7 +139,10 @@ def deref(t: Value) -> Value:
     return t
 
 
-new_term = tuple.__new__
+# A Term from a `(name, args)` pair, for hot paths: `make_term((name, args))`.
+make_term = type.__call__.__get__(Term)
+# A Var with `ref` not yet set, for hot paths: `v = make_var(); v.ref = None`.
+make_var = type.__call__.__get__(Var)
 
 
 def make_list(items: Iterable[Value], tail: Value = NIL) -> Value:
@@ -113,7 +153,7 @@ def make_list(items: Iterable[Value], tail: Value = NIL) -> Value:
     """
     result = tail
     for item in reversed(list(items)):
-        result = new_term(Term, (".", (item, result)))
+        result = make_term((".", (item, result)))
     return result
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from robocram.logic.cycles import check_acyclic, cyclic_error, is_acyclic
-from robocram.logic.terms import PString, Term, Var, new_term
+from robocram.logic.terms import PString, Term, Var, make_term, make_var
 from robocram.logic.value import Value
 
 __all__ = [
@@ -176,7 +176,8 @@ def _copy(term: Value, mapping: dict[Var, Var]) -> Value:
         if term.ref is None:
             fresh = mapping.get(term)
             if fresh is None:
-                fresh = mapping[term] = Var()
+                fresh = mapping[term] = make_var()
+                fresh.ref = None
             return fresh
         term = term.ref
     if type(term) is not Term:
@@ -197,9 +198,9 @@ def _copy(term: Value, mapping: dict[Var, Var]) -> Value:
                 power <<= 1
         tail = _copy(term, mapping)
         for item in reversed(items):
-            tail = new_term(Term, (".", (item, tail)))
+            tail = make_term((".", (item, tail)))
         return tail
-    return new_term(Term, (term[0], tuple([_copy(a, mapping) for a in term[1]])))
+    return make_term((term[0], tuple([_copy(a, mapping) for a in term[1]])))
 
 
 def _copy_deep(term: Value, mapping: dict[Var, Var]) -> Value:
@@ -213,14 +214,15 @@ def _copy_deep(term: Value, mapping: dict[Var, Var]) -> Value:
             n = len(t[1])
             args = tuple(out[len(out) - n :])
             del out[len(out) - n :]
-            out.append(new_term(Term, (t[0], args)))
+            out.append(make_term((t[0], args)))
             continue
         while type(t) is Var and t.ref is not None:
             t = t.ref
         if type(t) is Var:
             fresh = mapping.get(t)
             if fresh is None:
-                fresh = mapping[t] = Var()
+                fresh = mapping[t] = make_var()
+                fresh.ref = None
             out.append(fresh)
         elif type(t) is Term:
             stack.append((True, t))

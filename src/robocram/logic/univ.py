@@ -9,7 +9,7 @@ f(a,1)
 from __future__ import annotations
 
 from robocram.logic.errors import PrologDomainError, PrologInstantiationError, PrologTypeError
-from robocram.logic.terms import NIL, Term, Var, new_term
+from robocram.logic.terms import NIL, Term, Var, make_term
 from robocram.logic.value import Value
 
 __all__ = ["univ_compose", "univ_list"]
@@ -23,12 +23,12 @@ def univ_list(t: Value) -> Value:
             return None
         t = r
     if type(t) is not Term:
-        return new_term(Term, (".", (t, NIL)))
+        return make_term((".", (t, NIL)))
     items: Value = NIL
     args = t[1]
     for i in range(len(args) - 1, -1, -1):
-        items = new_term(Term, (".", (args[i], items)))
-    return new_term(Term, (".", (t[0], items)))
+        items = make_term((".", (args[i], items)))
+    return make_term((".", (t[0], items)))
 
 
 def univ_compose(items: Value) -> Value:
@@ -55,4 +55,4 @@ def univ_compose(items: Value) -> Value:
         return head
     if type(head) is not str:
         raise PrologTypeError("atom", head, f"=../2: {head!r} cannot name a compound")
-    return new_term(Term, (head, tuple(parts[1:])))
+    return make_term((head, tuple(parts[1:])))
