@@ -36,7 +36,7 @@ from robocram.motion.bullet_scene import BulletScene
 from robocram.motion.cartesian_path import cartesian_path
 from robocram.motion.coal_clearance import CoalClearance
 from robocram.motion.collision_scene import CollisionScene
-from robocram.motion.configuration_checker import LinkPair
+from robocram.motion.configuration_checker import LinkPair, posed
 from robocram.motion.corner_blend import blend_radii
 from robocram.motion.hand_contact import HandContact, hand_at_start
 from robocram.motion.held_start_contacts import split_start_contacts
@@ -111,10 +111,13 @@ def _judge(
     start: list[float],
     pairs: Collection[LinkPair],
     hand: HandContact | None = None,
+    judge: BulletScene | None = None,
 ) -> BulletScene:
     """The world itself as the checker, allowing ``pairs``, the ``hand``'s bounded contact
-    and the start's contacts."""
-    judge = BulletScene(robot, joints, allowed, allowed_pairs=pairs, hand=hand)
+    and the start's contacts; ``judge`` is that checker without the start's contacts, when
+    the caller made it already (its rules are read once)."""
+    if judge is None:
+        judge = BulletScene(robot, joints, allowed, allowed_pairs=pairs, hand=hand)
     touching = _start_contacts(judge, start, hand)
     if touching:
         judge = _keeping(robot, joints, allowed, pairs, hand, touching)
@@ -222,7 +225,7 @@ def _straight_checker(
     judge = BulletScene(robot, joints, allowed, allowed_pairs=pairs, hand=hand)
     if judge.clearance_now(travel + FAST_MARGIN) > travel:
         return None
-    return _judge(robot, joints, allowed, start, pairs, hand)
+    return _judge(robot, joints, allowed, start, pairs, hand, judge)
 
 
 def _checked_path(
@@ -245,14 +248,15 @@ def _checked_path(
     travel = bound.travel(np.array(start), np.array(end))
     checker = _straight_checker(robot, joints, allowed, start, pairs, travel, hand)
     try:
-        straight = (
-            JointPath(joints, (tuple(start), tuple(end)), "straight", 1)
-            if checker is None  # nothing of the world near: free at once
-            else plan_joint_path(
-                checker, start, end, bound, box, plan=False, what=what,
-                explain=not settings.plan, start_free=True,
-            )  # planning explains a failure from its snapshot; the start's contacts allowed
-        )  # fmt: skip
+        if checker is None:  # nothing of the world near: free at once
+            straight = JointPath(joints, (tuple(start), tuple(end)), "straight", 1)
+        else:
+            with posed(checker):  # the goal and the walk in one block: put back once
+                straight = plan_joint_path(
+                    checker, start, end, bound, box, plan=False, what=what,
+                    explain=not settings.plan, start_free=True,
+                )  # fmt: skip
+                # planning explains a failure from its snapshot; the start's contacts allowed
         blocked = own.first_collision(straight.waypoints)
         if blocked is None:
             return straight
