@@ -51,6 +51,7 @@ else:
 # (tests/motion/test_motion_coal_clearance.py measures it near the kitchen counter).
 BULLET_MARGIN = 0.002
 POSED_KEPT = 8  # configurations a checker keeps posed: walks come back to a segment's ends
+JUDGED_KEPT = 256  # the judge's answers a checker keeps: a path's ends are walked again
 
 
 class CoalClearance:
@@ -91,6 +92,7 @@ class CoalClearance:
         self._kept: LRUCache[bytes, tuple[FloatArray, FloatArray, NearPairs]] = LRUCache(
             POSED_KEPT
         )  # q -> posed
+        self._judged: LRUCache[tuple[bytes, bool], list[LinkPair]] = LRUCache(JUDGED_KEPT)
 
     @property
     def joints(self) -> tuple[str, ...]:
@@ -148,7 +150,14 @@ class CoalClearance:
         judge's answer."""
         if self.clearance(q) > 0.0:  # the least of the clearances, to the bit
             return []
-        return self.judge.colliding(q, first_only)
+        # the judge's answers are kept: a walk starts where the check of its segment's
+        # end left off, and the world stands still while this checker lives
+        key = (np.asarray(q, dtype=float).tobytes(), first_only)
+        found = self._judged.get(key)
+        if found is None:
+            found = self.judge.colliding(q, first_only)
+            self._judged.put(key, found)
+        return list(found)
 
     def is_free(self, q: Configuration) -> bool:
         """Whether ``q`` collides with nothing (coal first, the judge when near)."""
