@@ -11,6 +11,7 @@ depths differ between the engines (EPA against Bullet's); only their sign is use
 from __future__ import annotations
 
 import numpy as np
+import pybullet
 import pytest
 
 from robocram.motion.bullet_scene import CLEARANCE_REACH, BulletScene
@@ -157,3 +158,39 @@ def test_obstacle_shapes_follow_what_moved_and_are_read_only_when_joints_move(
         world.set_joint_states("kitchen", {drawer: 0.1})
         cache.shapes(world, world.object("kitchen"))
         assert cache.builds == reads + 1  # a joint moved: the kitchen is read again
+
+
+def test_kept_judge_answers_match_pybullets_and_the_judge_is_asked_once(
+    world: World, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A configuration asked again is answered from what the judge said (issue 38); a
+    contact it reports is one PyBullet's raw closest points see too."""
+    judge = BulletScene(RobotHandle.of(world, "pr2"), JOINTS)
+    coal = CoalClearance(judge)
+    asked: list[bytes] = []
+    ask = judge.colliding
+
+    def counted(q: np.ndarray, first_only: bool = False) -> list[tuple[str, str]]:
+        asked.append(np.asarray(q, dtype=float).tobytes())
+        return ask(q, first_only)
+
+    monkeypatch.setattr(judge, "colliding", counted)
+    before = world.joint_states("pr2")
+    body = world.object("pr2").body_id
+    hits = 0
+    for q in _configurations(world, 7, 40):
+        first = coal.colliding(q)
+        assert coal.colliding(q) == first  # the same pairs, kept
+        if first:
+            hits += 1
+            world.set_joint_states("pr2", dict(zip(JOINTS, q, strict=True)))
+            cid = world.physics.client()
+            raw = [
+                o.name for o in world.objects() if o.name != "pr2"
+                and pybullet.getClosestPoints(body, o.body_id, 1e-4, physicsClientId=cid)
+            ]  # fmt: skip
+            world.set_joint_states("pr2", before)
+            assert raw, q
+    assert hits >= 2  # the arm reaches into the counter
+    assert len(asked) == len(set(asked))  # never the same configuration twice
+    assert world.joint_states("pr2") == before
