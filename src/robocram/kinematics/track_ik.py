@@ -15,6 +15,7 @@ from __future__ import annotations
 import time
 from collections.abc import Iterable, Iterator, Mapping
 
+from robocram.kinematics.arm_chain import ArmChain, FloatArray
 from robocram.kinematics.descent import Best, IKSettings, descend
 from robocram.kinematics.ik_result import IKResult
 from robocram.kinematics.ik_solver import IKSolver
@@ -51,16 +52,21 @@ def track_ik(
         run = descend(chain, x, pose_to_se3(pose), b, settings, best)
         if run.converged:
             x = chain.wrap_continuous(run.x, x)
-            result = IKResult(
-                success=True,
-                joint_positions=chain.joint_positions(x),
-                position_error=best.position_error,
-                orientation_error=best.orientation_error,
-                iterations=run.iterations,
-                elapsed=time.perf_counter() - t0,
-            )
+            result = descended(chain, x, best, run.iterations, t0)
         else:
             result = solver.solve(pose, values, settings, random_seed=random_seed)
             x = solver.start({**values, **result.joint_positions})
         values.update(result.joint_positions)
         yield result
+
+
+def descended(chain: ArmChain, x: FloatArray, best: Best, iterations: int, t0: float) -> IKResult:
+    """The answer of a descent that converged at ``x`` (started at ``t0``, perf counter)."""
+    return IKResult(
+        success=True,
+        joint_positions=chain.joint_positions(x),
+        position_error=best.position_error,
+        orientation_error=best.orientation_error,
+        iterations=iterations,
+        elapsed=time.perf_counter() - t0,
+    )

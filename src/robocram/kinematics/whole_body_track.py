@@ -31,6 +31,7 @@ from robocram.kinematics.planar_base import (
     for_robot,
 )
 from robocram.kinematics.robot_kinematics import pose_to_se3, robot_kinematics
+from robocram.kinematics.track_ik import descended
 from robocram.robots import RobotDescription
 from robocram.tf import Pose
 
@@ -104,14 +105,7 @@ def track_whole_body(
             )
             return
         x = chain.wrap_continuous(run.x, x)
-        yield IKResult(
-            success=True,
-            joint_positions=chain.joint_positions(x),
-            position_error=best.position_error,
-            orientation_error=best.orientation_error,
-            iterations=run.iterations,
-            elapsed=time.perf_counter() - t0,
-        )
+        yield descended(chain, x, best, run.iterations, t0)
 
 
 def _start(chain: ArmChain, values: Mapping[str, float]) -> FloatArray:
