@@ -1,0 +1,55 @@
+"""A compound in a clause head matches only a term of its own arity (checked by unpacking).
+
+Clause code reads a head compound's arguments by unpacking them, and that unpacking is
+the arity test: a same-named compound of another arity must fail that clause and fall
+through to the next one, as it does for the same clauses declared dynamic (interpreted).
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from robocram.logic import KnowledgeBase
+
+CLAUSES = """
+r(x, g(_, _), two).
+r(x, g(_), one).
+r(x, g, zero).
+s(h(g(A, B)), A-B).
+s(h(g(A)), A).
+t(k, f(a, b), long).
+t(k, f(a), short).
+u([g(A, B)|_], A+B).
+u([g(A)|_], A).
+"""
+
+QUERIES = [
+    ("r(x, g(1), W)", ["one"]),
+    ("r(x, g(1, 2), W)", ["two"]),
+    ("r(x, g(1, 2, 3), W)", []),
+    ("r(x, g, W)", ["zero"]),
+    ("s(h(g(1)), W)", ["1"]),
+    ("s(h(g(1, 2)), W)", ["1-2"]),
+    ("s(h(g), W)", []),
+    ("t(k, f(a), W)", ["short"]),
+    ("t(k, f(a, b), W)", ["long"]),
+    ("t(k, f(a, b, c), W)", []),
+    ("u([g(3)], W)", ["3"]),
+    ("u([g(3, 4)], W)", ["3+4"]),
+]
+
+
+def answers(kb: KnowledgeBase, query: str) -> list[object]:
+    """The W of every answer, written out by format/3."""
+    return [b["A"] for b in kb.query(f"{query}, format(atom(A), '~w', [W])")]
+
+
+@pytest.mark.parametrize(("query", "expected"), QUERIES)
+def test_head_compounds_of_another_arity_fall_through(query: str, expected: list[str]) -> None:
+    static = KnowledgeBase()
+    static.consult(CLAUSES)
+    dynamic = KnowledgeBase()
+    dynamic.consult(":- dynamic r/3, s/2, t/3, u/2.\n" + CLAUSES)
+    for _ in range(3):  # interpreted at first, compiled from the second call on
+        assert answers(static, query) == expected
+    assert answers(dynamic, query) == expected
