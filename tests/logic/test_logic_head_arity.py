@@ -21,6 +21,12 @@ t(k, f(a, b), long).
 t(k, f(a), short).
 u([g(A, B)|_], A+B).
 u([g(A)|_], A).
+m(g(_, _), 1).
+m(_, 2).
+m(g(_, _), 3).
+m(_, 4).
+n(g(_, _), 1).
+n(g(_, _), 2).
 """
 
 QUERIES = [
@@ -36,6 +42,12 @@ QUERIES = [
     ("t(k, f(a, b, c), W)", []),
     ("u([g(3)], W)", ["3"]),
     ("u([g(3, 4)], W)", ["3+4"]),
+    ("m(g(x), W)", ["2", "4"]),  # the first-argument switch: one functor, by name only
+    ("m(g(x, y), W)", ["1", "2", "3", "4"]),
+    ("m(g, W)", ["2", "4"]),
+    ("n(g(x), W)", []),
+    ("n(g(x, y, z), W)", []),
+    ("n(g(x, y), W)", ["1", "2"]),
 ]
 
 
@@ -49,7 +61,7 @@ def test_head_compounds_of_another_arity_fall_through(query: str, expected: list
     static = KnowledgeBase()
     static.consult(CLAUSES)
     dynamic = KnowledgeBase()
-    dynamic.consult(":- dynamic r/3, s/2, t/3, u/2.\n" + CLAUSES)
+    dynamic.consult(":- dynamic r/3, s/2, t/3, u/2, m/2, n/2.\n" + CLAUSES)
     for _ in range(3):  # interpreted at first, compiled from the second call on
         assert answers(static, query) == expected
     assert answers(dynamic, query) == expected

@@ -236,9 +236,10 @@ class _ProcWriter(ClauseWriter):
         if len(b.compound) > 1:
             self.emit("f = a0[0]; n = len(a0[1])", 3)
             tests = [f"f == {self.const(k[0])} and n == {k[1]}" for k in b.compound]
-        else:  # one functor: test it in place
-            tests = [f"a0[0] == {self.const(k[0])} and len(a0[1]) == {k[1]}" for k in b.compound]
-        self.dispatch(list(b.compound.items()), tests, "(f, n)", b.open_compound)
+        else:  # one functor: its name in place; its arity, by the clauses' unpacking
+            tests = [f"a0[0] == {self.const(k[0])}" for k in b.compound]
+        single = len(b.compound) == 1
+        self.dispatch(list(b.compound.items()), tests, "(f, n)", b.open_compound, single)
         self.emit("elif t is str or t is int:", 2)
         tests = [f"t is {type(k).__name__} and a0 == {self.const(k)}" for k in b.atomic]
         self.dispatch(list(b.atomic.items()), tests, "a0", b.open)
@@ -249,9 +250,18 @@ class _ProcWriter(ClauseWriter):
             self.branch(b.every, 3, switched=False)
 
     def dispatch(
-        self, entries: list[tuple[Value, list[int]]], tests: list[str], key: str, open_: list[int]
+        self,
+        entries: list[tuple[Value, list[int]]],
+        tests: list[str],
+        key: str,
+        open_: list[int],
+        name_only: bool = False,
     ) -> None:
         """Emit the branches of one kind of key: compared in turn, or by a dictionary.
+
+        `name_only`: the tests compare a functor's name, not its arity; a branch's clauses
+        holding the other arity then fail at their unpacking, leaving the clauses open to
+        any first argument in the branch, as in the branch of no key.
 
         Past `_CHAIN` keys, a dictionary gives the branch number and a binary tree of
         comparisons on it leads to the branch, so a call costs log2(keys) comparisons.
@@ -259,7 +269,7 @@ class _ProcWriter(ClauseWriter):
         if len(entries) <= _CHAIN:
             for j, (_, members) in enumerate(entries):
                 self.emit(f"{'el' if j else ''}if {tests[j]}:", 3)
-                self.branch(members, 4, switched=True)
+                self.branch(members, 4, switched=True, arity_known=not name_only)
             self.other(open_, 3, bool(entries))
             return
         table = self.const({k: j for j, (k, _) in enumerate(entries)})
@@ -287,7 +297,9 @@ class _ProcWriter(ClauseWriter):
             depth += 1
         self.branch(members, depth, switched=False)
 
-    def branch(self, members: list[int], depth: int, switched: bool) -> None:
+    def branch(
+        self, members: list[int], depth: int, switched: bool, arity_known: bool = True
+    ) -> None:
         """Emit the clauses `members` in order; all but the last fall through on failure."""
         if not members:
             self.emit("return False", depth)
@@ -307,13 +319,13 @@ class _ProcWriter(ClauseWriter):
             if last:
                 self.fail = "return False"
                 self.base = depth - 1
-                self.clause_code(self.clauses[i], switched)
+                self.clause_code(self.clauses[i], switched, arity_known)
                 continue
             self.fail = "break"
             self.emit(f"if start <= {i}:", depth)
             self.emit("while True:", depth + 1)
             self.base = depth + 1
-            self.clause_code(self.clauses[i], switched)
+            self.clause_code(self.clauses[i], switched, arity_known)
             self.base = 0
             self.emit("if start < 0: start = 0; continue", depth + 1)
             self.emit("while len(trail) > mark: trail.pop().ref = None", depth + 1)
