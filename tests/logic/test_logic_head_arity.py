@@ -27,6 +27,19 @@ m(g(_, _), 3).
 m(_, 4).
 n(g(_, _), 1).
 n(g(_, _), 2).
+e(g(_, _), 1).
+e(h(_), 2).
+e(_, 3).
+z(g(_, _), 1).
+z(g(_), 2).
+big(a1(_), 1).
+big(a2(_), 2).
+big(a3(_), 3).
+big(a4(_), 4).
+big(a5(_), 5).
+big(a6(_), 6).
+big(a7(_), 7).
+big(_, 0).
 """
 
 QUERIES = [
@@ -48,6 +61,15 @@ QUERIES = [
     ("n(g(x), W)", []),
     ("n(g(x, y, z), W)", []),
     ("n(g(x, y), W)", ["1", "2"]),
+    ("e(g(x), W)", ["3"]),  # several functors of distinct names: by name only
+    ("e(h(x, y), W)", ["3"]),
+    ("e(h(x), W)", ["2", "3"]),
+    ("e(g(x, y), W)", ["1", "3"]),
+    ("z(g(x), W)", ["2"]),  # one name, two arities: name and arity
+    ("z(g(x, y), W)", ["1"]),
+    ("big(a3(x, y), W)", ["0"]),  # past six functors, a table of names
+    ("big(a3(x), W)", ["3", "0"]),
+    ("big(a7(x), W)", ["7", "0"]),
 ]
 
 
@@ -61,7 +83,7 @@ def test_head_compounds_of_another_arity_fall_through(query: str, expected: list
     static = KnowledgeBase()
     static.consult(CLAUSES)
     dynamic = KnowledgeBase()
-    dynamic.consult(":- dynamic r/3, s/2, t/3, u/2, m/2, n/2.\n" + CLAUSES)
+    dynamic.consult(":- dynamic r/3, s/2, t/3, u/2, m/2, n/2, e/2, z/2, big/2.\n" + CLAUSES)
     for _ in range(3):  # interpreted at first, compiled from the second call on
         assert answers(static, query) == expected
     assert answers(dynamic, query) == expected

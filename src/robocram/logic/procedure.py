@@ -233,13 +233,19 @@ class _ProcWriter(ClauseWriter):
         self.emit("t = type(a0)", 2)
         self.emit("while t is Var and a0.ref is not None: a0 = a0.ref; t = type(a0)", 2)
         self.emit("if t is Term:", 2)
-        if len(b.compound) > 1:
+        if len({k[0] for k in b.compound}) == len(b.compound):
+            # No two keys share a name (the common case): the switch reads the name only;
+            # the arity is checked by the clauses' unpacking of the arguments.
+            named: list[tuple[Value, list[int]]] = [(k[0], m) for k, m in b.compound.items()]
+            if len(named) > 1:
+                self.emit("f = a0[0]", 3)
+            first = "f" if len(named) > 1 else "a0[0]"
+            tests = [f"{first} == {self.const(k)}" for k, _ in named]
+            self.dispatch(named, tests, "f", b.open_compound, name_only=True)
+        else:
             self.emit("f = a0[0]; n = len(a0[1])", 3)
             tests = [f"f == {self.const(k[0])} and n == {k[1]}" for k in b.compound]
-        else:  # one functor: its name in place; its arity, by the clauses' unpacking
-            tests = [f"a0[0] == {self.const(k[0])}" for k in b.compound]
-        single = len(b.compound) == 1
-        self.dispatch(list(b.compound.items()), tests, "(f, n)", b.open_compound, single)
+            self.dispatch(list(b.compound.items()), tests, "(f, n)", b.open_compound)
         self.emit("elif t is str or t is int:", 2)
         tests = [f"t is {type(k).__name__} and a0 == {self.const(k)}" for k in b.atomic]
         self.dispatch(list(b.atomic.items()), tests, "a0", b.open)
@@ -259,7 +265,8 @@ class _ProcWriter(ClauseWriter):
     ) -> None:
         """Emit the branches of one kind of key: compared in turn, or by a dictionary.
 
-        `name_only`: the tests compare a functor's name, not its arity; a branch's clauses
+        `name_only`: the tests (or the table) take a functor's name, not its arity (no two
+        keys share a name); a branch's clauses
         holding the other arity then fail at their unpacking, leaving the clauses open to
         any first argument in the branch, as in the branch of no key.
 
@@ -277,18 +284,20 @@ class _ProcWriter(ClauseWriter):
         self.emit("if bn < 0:", 3)
         self.branch(open_, 4, switched=False)
         self.emit("else:", 3)
-        self.tree([m for _, m in entries], 0, len(entries), 4)
+        self.tree([m for _, m in entries], 0, len(entries), 4, not name_only)
 
-    def tree(self, branches: list[list[int]], lo: int, hi: int, depth: int) -> None:
+    def tree(
+        self, branches: list[list[int]], lo: int, hi: int, depth: int, arity_known: bool
+    ) -> None:
         """Emit a binary search on `bn` over branches lo..hi-1."""
         if hi - lo == 1:
-            self.branch(branches[lo], depth, switched=True)
+            self.branch(branches[lo], depth, switched=True, arity_known=arity_known)
             return
         mid = (lo + hi) // 2
         self.emit(f"if bn < {mid}:", depth)
-        self.tree(branches, lo, mid, depth + 1)
+        self.tree(branches, lo, mid, depth + 1, arity_known)
         self.emit("else:", depth)
-        self.tree(branches, mid, hi, depth + 1)
+        self.tree(branches, mid, hi, depth + 1, arity_known)
 
     def other(self, members: list[int], depth: int, chained: bool) -> None:
         """The branch for a key no clause names: the clauses open to any argument."""
