@@ -113,12 +113,15 @@ class ClauseWriter(GoalWriter):
             + ["  return run", ""]
         )
 
-    def clause_code(self, clause: ClauseCode, switched: bool = False) -> None:
+    def clause_code(
+        self, clause: ClauseCode, switched: bool = False, arity_known: bool = True
+    ) -> None:
         """Emit head unification, the inline built-ins and the exit of one clause.
 
         `switched`: the first argument is dereferenced and already known to have the
         head's functor or constant (a procedure switched on it): only its subterms are
-        unified.
+        unified; unless `arity_known`, the unpacking of them checks the arity (the switch
+        compared the name only).
         """
         self.known = set()
         self.dereffed = set()
@@ -127,7 +130,7 @@ class ClauseWriter(GoalWriter):
         early = [r for r in map(rejection, guard_goals(body)) if r is not None]
         for i, p in enumerate(clause.head):
             if i == 0 and switched and type(p) is Tmpl:
-                self.read_args(p.args, "a0[1]", 1)
+                self.read_args(p.args, "a0[1]", 1, checked=arity_known)
             elif not (i == 0 and switched and type(p) in (str, int)):
                 self.unify_arg(p, self.arg_local(i, p), 1)
             if early and any(type(q) is Tmpl for q in clause.head[i + 1 :]):

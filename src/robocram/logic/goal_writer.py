@@ -270,9 +270,8 @@ class GoalWriter:
         self.emit(f"{x}.ref = {self.build(p)}; trail.append({x})", depth + 1)
         self.known = before
         name = self.const(p.name)
-        n = len(p.args)
-        self.emit(f"elif type({x}) is Term and {x}[0] == {name} and len({x}[1]) == {n}:", depth)
-        self.read_args(p.args, f"{x}[1]", depth + 1)
+        self.emit(f"elif type({x}) is Term and {x}[0] == {name}:", depth)
+        self.read_args(p.args, f"{x}[1]", depth + 1, checked=False)
         self.emit(f"else: {self.fail}", depth)
 
     def ground_term(self, p: Term, x: str, depth: int) -> None:
@@ -281,9 +280,8 @@ class GoalWriter:
         self.emit(deref_line(x), depth)
         self.emit(f"if type({x}) is Var: {x}.ref = {self.const(p)}; trail.append({x})", depth)
         name = self.const(p[0])
-        n = len(p[1])
-        self.emit(f"elif type({x}) is Term and {x}[0] == {name} and len({x}[1]) == {n}:", depth)
-        self.read_args(p[1], f"{x}[1]", depth + 1)
+        self.emit(f"elif type({x}) is Term and {x}[0] == {name}:", depth)
+        self.read_args(p[1], f"{x}[1]", depth + 1, checked=False)
         self.emit(f"else: {self.fail}", depth)
 
     def unify_locals(self, a: str, b: str, depth: int) -> None:
@@ -298,8 +296,15 @@ class GoalWriter:
         self.emit(f"elif type({b}) is Var: {b}.ref = {a}; trail.append({b})", depth + 1)
         self.emit(f"elif not unify({a}, {b}, trail): {self.fail}", depth + 1)
 
-    def read_args(self, pargs: tuple[Value, ...], src: str, depth: int) -> None:
-        """Read mode: unpack the call's subterms, then unify each with its template."""
+    def read_args(
+        self, pargs: tuple[Value, ...], src: str, depth: int, checked: bool = True
+    ) -> None:
+        """Read mode: unpack the call's subterms, then unify each with its template.
+
+        Unless `checked` (the arity is known to match), the unpacking itself checks it: a
+        tuple of another length raises ValueError, which fails. That costs nothing when it
+        matches, where `len(x[1]) == n` took a subscript, a call and a comparison.
+        """
         names: list[str] = []
         later: list[tuple[Value, str]] = []
         for a in pargs:
@@ -310,7 +315,15 @@ class GoalWriter:
                 t = self.temp()
                 names.append(t)
                 later.append((a, t))
-        self.emit(f"{''.join(n + ', ' for n in names)}= {src}", depth)
+        unpack = f"{''.join(n + ', ' for n in names)}= {src}"
+        if not names:  # no arguments (never read in Prolog text): only the length
+            if not checked:
+                self.emit(f"if {src}: {self.fail}", depth)
+        elif checked:
+            self.emit(unpack, depth)
+        else:
+            self.emit(f"try: {unpack}", depth)
+            self.emit(f"except ValueError: {self.fail}", depth)
         for a, t in later:
             self.unify_arg(a, t, depth)
 

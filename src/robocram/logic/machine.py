@@ -198,9 +198,21 @@ class Machine:
                     # A call's first item is its (name, arity) key; `name` stays that key
                     # until a path below needs the name itself.
                     try:
-                        p = preds[name]
+                        q = preds[name]
                     except KeyError:
                         p = None
+                    else:  # the commonest goal: a compiled procedure, called at once
+                        proc = q.proc
+                        if proc is not None and plain:
+                            cont = proc(args, trail, nxt, cps, 0)
+                            if cont is False:
+                                cont = backtrack(cps)
+                            elif type(cont) is list:
+                                cont = self._again(proc, cont, nxt, cps)
+                                if cont is False:
+                                    cont = backtrack(cps)
+                            continue
+                        p = q
                 elif tg is Term:
                     name = goal[0]
                     args = goal[1]

@@ -233,12 +233,19 @@ class _ProcWriter(ClauseWriter):
         self.emit("t = type(a0)", 2)
         self.emit("while t is Var and a0.ref is not None: a0 = a0.ref; t = type(a0)", 2)
         self.emit("if t is Term:", 2)
-        if len(b.compound) > 1:
+        if len({k[0] for k in b.compound}) == len(b.compound):
+            # No two keys share a name (the common case): the switch reads the name only;
+            # the arity is checked by the clauses' unpacking of the arguments.
+            named: list[tuple[Value, list[int]]] = [(k[0], m) for k, m in b.compound.items()]
+            if len(named) > 1:
+                self.emit("f = a0[0]", 3)
+            first = "f" if len(named) > 1 else "a0[0]"
+            tests = [f"{first} == {self.const(k)}" for k, _ in named]
+            self.dispatch(named, tests, "f", b.open_compound, name_only=True)
+        else:
             self.emit("f = a0[0]; n = len(a0[1])", 3)
             tests = [f"f == {self.const(k[0])} and n == {k[1]}" for k in b.compound]
-        else:  # one functor: test it in place
-            tests = [f"a0[0] == {self.const(k[0])} and len(a0[1]) == {k[1]}" for k in b.compound]
-        self.dispatch(list(b.compound.items()), tests, "(f, n)", b.open_compound)
+            self.dispatch(list(b.compound.items()), tests, "(f, n)", b.open_compound)
         self.emit("elif t is str or t is int:", 2)
         tests = [f"t is {type(k).__name__} and a0 == {self.const(k)}" for k in b.atomic]
         self.dispatch(list(b.atomic.items()), tests, "a0", b.open)
@@ -249,9 +256,19 @@ class _ProcWriter(ClauseWriter):
             self.branch(b.every, 3, switched=False)
 
     def dispatch(
-        self, entries: list[tuple[Value, list[int]]], tests: list[str], key: str, open_: list[int]
+        self,
+        entries: list[tuple[Value, list[int]]],
+        tests: list[str],
+        key: str,
+        open_: list[int],
+        name_only: bool = False,
     ) -> None:
         """Emit the branches of one kind of key: compared in turn, or by a dictionary.
+
+        `name_only`: the tests (or the table) take a functor's name, not its arity (no two
+        keys share a name); a branch's clauses
+        holding the other arity then fail at their unpacking, leaving the clauses open to
+        any first argument in the branch, as in the branch of no key.
 
         Past `_CHAIN` keys, a dictionary gives the branch number and a binary tree of
         comparisons on it leads to the branch, so a call costs log2(keys) comparisons.
@@ -259,7 +276,7 @@ class _ProcWriter(ClauseWriter):
         if len(entries) <= _CHAIN:
             for j, (_, members) in enumerate(entries):
                 self.emit(f"{'el' if j else ''}if {tests[j]}:", 3)
-                self.branch(members, 4, switched=True)
+                self.branch(members, 4, switched=True, arity_known=not name_only)
             self.other(open_, 3, bool(entries))
             return
         table = self.const({k: j for j, (k, _) in enumerate(entries)})
@@ -267,18 +284,20 @@ class _ProcWriter(ClauseWriter):
         self.emit("if bn < 0:", 3)
         self.branch(open_, 4, switched=False)
         self.emit("else:", 3)
-        self.tree([m for _, m in entries], 0, len(entries), 4)
+        self.tree([m for _, m in entries], 0, len(entries), 4, not name_only)
 
-    def tree(self, branches: list[list[int]], lo: int, hi: int, depth: int) -> None:
+    def tree(
+        self, branches: list[list[int]], lo: int, hi: int, depth: int, arity_known: bool
+    ) -> None:
         """Emit a binary search on `bn` over branches lo..hi-1."""
         if hi - lo == 1:
-            self.branch(branches[lo], depth, switched=True)
+            self.branch(branches[lo], depth, switched=True, arity_known=arity_known)
             return
         mid = (lo + hi) // 2
         self.emit(f"if bn < {mid}:", depth)
-        self.tree(branches, lo, mid, depth + 1)
+        self.tree(branches, lo, mid, depth + 1, arity_known)
         self.emit("else:", depth)
-        self.tree(branches, mid, hi, depth + 1)
+        self.tree(branches, mid, hi, depth + 1, arity_known)
 
     def other(self, members: list[int], depth: int, chained: bool) -> None:
         """The branch for a key no clause names: the clauses open to any argument."""
@@ -287,7 +306,9 @@ class _ProcWriter(ClauseWriter):
             depth += 1
         self.branch(members, depth, switched=False)
 
-    def branch(self, members: list[int], depth: int, switched: bool) -> None:
+    def branch(
+        self, members: list[int], depth: int, switched: bool, arity_known: bool = True
+    ) -> None:
         """Emit the clauses `members` in order; all but the last fall through on failure."""
         if not members:
             self.emit("return False", depth)
@@ -307,13 +328,13 @@ class _ProcWriter(ClauseWriter):
             if last:
                 self.fail = "return False"
                 self.base = depth - 1
-                self.clause_code(self.clauses[i], switched)
+                self.clause_code(self.clauses[i], switched, arity_known)
                 continue
             self.fail = "break"
             self.emit(f"if start <= {i}:", depth)
             self.emit("while True:", depth + 1)
             self.base = depth + 1
-            self.clause_code(self.clauses[i], switched)
+            self.clause_code(self.clauses[i], switched, arity_known)
             self.base = 0
             self.emit("if start < 0: start = 0; continue", depth + 1)
             self.emit("while len(trail) > mark: trail.pop().ref = None", depth + 1)

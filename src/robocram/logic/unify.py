@@ -71,26 +71,46 @@ def unify(a: Value, b: Value, trail: list[Var]) -> bool:
             if steps > _FAST_STEPS:
                 return unify_rational(a, b, trail)
             try:
-                for i in range(n):  # variables and constants here, compounds recursively
-                    x = aa[i]
-                    y = ab[i]
+                if n == 1:  # a list cell: its head, without a loop (the tail is next)
+                    x = aa[0]
+                    y = ab[0]
                     while type(x) is Var and x.ref is not None:
                         x = x.ref
                     while type(y) is Var and y.ref is not None:
                         y = y.ref
-                    if x is y:
-                        continue
-                    if type(x) is Var:
-                        x.ref = y
-                        trail.append(x)
-                    elif type(y) is Var:
-                        y.ref = x
-                        trail.append(y)
-                    elif type(x) is type(y) and type(x) is not Term:
-                        if x != y:
+                    if x is not y:
+                        if type(x) is Var:
+                            x.ref = y
+                            trail.append(x)
+                        elif type(y) is Var:
+                            y.ref = x
+                            trail.append(y)
+                        elif type(x) is type(y) and type(x) is not Term:
+                            if x != y:
+                                return False
+                        elif not unify(x, y, trail):
                             return False
-                    elif not unify(x, y, trail):
-                        return False
+                else:
+                    for i in range(n):  # variables and constants here, compounds recursively
+                        x = aa[i]
+                        y = ab[i]
+                        while type(x) is Var and x.ref is not None:
+                            x = x.ref
+                        while type(y) is Var and y.ref is not None:
+                            y = y.ref
+                        if x is y:
+                            continue
+                        if type(x) is Var:
+                            x.ref = y
+                            trail.append(x)
+                        elif type(y) is Var:
+                            y.ref = x
+                            trail.append(y)
+                        elif type(x) is type(y) and type(x) is not Term:
+                            if x != y:
+                                return False
+                        elif not unify(x, y, trail):
+                            return False
             except RecursionError:
                 return unify_rational(a, b, trail)
             a = aa[n]
