@@ -191,3 +191,40 @@ def test_a_way_round_far_beyond_the_start_and_goal_is_still_found() -> None:
     assert path.planner == "RRTConnect"
     assert min(y for _, y, _ in path.poses) < -2.6 < -NEAR_MARGIN
     assert path.poses[-1][:2] == pytest.approx((2.5, 0.0))
+
+
+def test_a_short_move_with_no_way_in_its_near_box_is_not_planned_again_everywhere(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """A goal walled in all round, 1.7 m away (within NEAR_MARGIN): no way exists. The
+    planner is asked once, near the start and goal, not a second time over the whole area
+    (a robot wedged where it stands spent the budget twice on each parking back-off)."""
+    import robocram.motion.base_path as base_path
+
+    areas: list[tuple[tuple[float, float], tuple[float, float]]] = []
+    plan = base_path.planned_waypoints
+
+    def counted(*args: object, **kwargs: object) -> object:
+        areas.append(kwargs["area"])  # type: ignore[arg-type]
+        return plan(*args, **kwargs)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(base_path, "planned_waypoints", counted)
+    with World() as world:
+        world.bodies.add_floor()
+        for name, size, at in (
+            ("west", (0.1, 1.9, 1.0), (0.0, 0.0, 0.5)),
+            ("east", (0.1, 1.9, 1.0), (1.8, 0.0, 0.5)),
+            ("north", (1.9, 0.1, 1.0), (0.9, 0.9, 0.5)),
+            ("south", (1.9, 0.1, 1.0), (0.9, -0.9, 0.5)),
+        ):
+            world.add_box(name, size, at)
+        world.add_box("marker", (0.2, 0.2, 0.2), (0.0, -6.0, 0.1))  # the area reaches y -6.1
+        world.add_robot("pr2", _pose(-0.8, 0.0, 0.0))
+        for arm in world.robot("pr2").description.arms.values():
+            world.set_joint_states("pr2", dict(arm.parking))
+        with pytest.raises(NavigationPathBlocked) as raised:
+            plan_base_path(RobotHandle.of(world, "pr2"), _pose(0.9, 0.0, 0.0), budget=500)
+    assert "west" in (raised.value.colliding or [])
+    assert len(areas) == 1
+    low, _ = areas[0]
+    assert low[1] > -6.0  # the near box, not the whole area down to the marker

@@ -225,7 +225,10 @@ def _planned(
 
 def _areas(checker: BaseCollisionChecker, start: np.ndarray, end: np.ndarray) -> list[Area]:
     """Where OMPL samples, in turn: near the start and goal (:data:`NEAR_MARGIN`), then
-    the checker's whole area, if that is larger."""
+    the checker's whole area, if that is larger and the move is longer than the margin.
+    A shorter move that finds no way within its near box (a detour up to the margin
+    beyond either end) finds none farther out either: a robot wedged where it stands (its
+    hand in an open drawer) spent the whole budget twice on each parking back-off."""
     (x0, y0), (x1, y1) = checker.bounds
     low = (
         max(x0, min(start[0], end[0]) - NEAR_MARGIN),
@@ -236,7 +239,8 @@ def _areas(checker: BaseCollisionChecker, start: np.ndarray, end: np.ndarray) ->
         min(y1, max(start[1], end[1]) + NEAR_MARGIN),
     )
     near = ((float(low[0]), float(low[1])), (float(high[0]), float(high[1])))
-    return [near] if near == checker.bounds else [near, checker.bounds]
+    short = float(np.hypot(end[0] - start[0], end[1] - start[1])) <= NEAR_MARGIN
+    return [near] if near == checker.bounds or short else [near, checker.bounds]
 
 
 def _dense_free(checker: BaseCollisionChecker, waypoints: list[np.ndarray]) -> bool:
