@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator, Sequence
+from dataclasses import replace
 
 import numpy as np
 
@@ -52,6 +53,7 @@ TOP_STRADDLE = 0.04  # [m] a top grasp's fingertips go at most this far below th
 # 0.7 mm, issue 35)
 PALM_FLOOR = 0.01  # [m] a palm hand held sideways keeps this far over the object's bottom
 RIM_DEPTH = 0.02  # [m] a rim grasp's tool frame below the rim
+RIM_TILTS = (0.3,)  # [rad] a palm hand's rim grasps tilted so, after the flat ones
 PRE_GRASP = 0.10  # [m] the tool starts this far back along its approach
 LIFT = 0.10  # [m] the object is lifted this far
 HANDLE_MARGIN = 0.005  # [m] the box sticking out this far past the body is a handle
@@ -143,10 +145,13 @@ def _side(shape: ObjectShape, hand: Hand, name: str) -> Iterator[Grasp]:
 
 
 def _rim(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
+    """On the wall from above, one place per side without a handle; a palm hand's then
+    again tilted (:data:`RIM_TILTS`, :func:`_tilted`)."""
     if shape.wall is None:
         return
     cx, cy = shape.centre
     r = shape.radius
+    flat: list[tuple[Vector3, Grasp]] = []
     for side in SIDES:
         if shape.reach(side) > r + HANDLE_MARGIN:
             continue  # a handle on this side
@@ -154,7 +159,30 @@ def _rim(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
         at = (cx + side[0] * d, cy + side[1] * d, shape.high[2] - RIM_DEPTH)
         for turn in (0.0, math.pi):
             opening = side if turn == 0.0 else (-side[0], -side[1], 0.0)
-            yield _grasp(hand, "rim", turn, at, DOWN, opening, shape.wall, shape)
+            flat.append((at, _grasp(hand, "rim", turn, at, DOWN, opening, shape.wall, shape)))
+    yield from (grasp for _, grasp in flat)
+    if hand.palm is not None:
+        yield from (_tilted(g, at, tilt, hand.palm) for tilt in RIM_TILTS for at, g in flat)
+
+
+def _tilted(grasp: Grasp, held: Vector3, tilt: float, palm: Palm) -> Grasp:
+    """``grasp`` turned by ``tilt`` [rad] about the wall's tangent through ``held`` (the
+    point its fingers hold), the way that raises the wrist. A palm hand lies flat over a
+    rim with its wrist at the rim's height: the TIAGo's wrist met the bowl's far side
+    (6 mm) and its forearm came into the drawer over its front; tilted, both come from
+    above. The approach stays straight down."""
+    q = grasp.tool.orientation
+    wrist = quat.rotate(q, (-palm.along[0], -palm.along[1], -palm.along[2]))
+    axis = (wrist[1], -wrist[0], 0.0)  # turning about wrist x up raises the wrist
+    if math.hypot(axis[0], axis[1]) < 1e-9:
+        return grasp
+    turn = quat.from_axis_angle(axis, tilt)
+    offset = np.subtract(grasp.tool.position, held)
+    moved = np.add(held, quat.rotate(turn, (offset[0], offset[1], offset[2])))
+    tool = Pose(
+        (float(moved[0]), float(moved[1]), float(moved[2])), quat.normalized(quat.multiply(turn, q))
+    )
+    return replace(grasp, tool=tool, tilt=tilt)
 
 
 def _handle_side(shape: ObjectShape) -> Vector3 | None:
