@@ -26,7 +26,7 @@ class Grasp:
         opening: [m] the opening the hand needs (object width plus clearance).
         across: unit direction [object frame] the fingers spread along.
         tilt: [rad] a palm hand's rim grasp turned this far about the held wall, its wrist
-            raised (0: flat); tried after the flat ones.
+            raised (0: flat); tried after the flat ones of its side.
     """
 
     name: str

@@ -106,7 +106,8 @@ def candidates_at(
     base_in_map: Pose,
     names: Sequence[str],
 ) -> list[GraspCandidate]:
-    """The grasps of ``shape`` at ``object_in_map`` that ``arm``'s hand fits, best first.
+    """The grasps of ``shape`` at ``object_in_map`` that ``arm``'s hand fits, best first
+    (a tilted rim grasp right after the flat ones of its side).
 
     Raises:
         ObjectUngraspable: no grasp fits the hand.
