@@ -25,6 +25,8 @@ class Grasp:
         lift: [m] the object is lifted this far up after gripping.
         opening: [m] the opening the hand needs (object width plus clearance).
         across: unit direction [object frame] the fingers spread along.
+        tilt: [rad] a palm hand's rim grasp turned this far about the held wall, its wrist
+            raised (0: flat); tried after the flat ones of its side.
     """
 
     name: str
@@ -35,6 +37,7 @@ class Grasp:
     lift: float
     opening: float
     across: Vector3
+    tilt: float = 0.0
 
     def pre_grasp_tool(self) -> Pose:
         """The tool's pose [object frame] before it moves in."""

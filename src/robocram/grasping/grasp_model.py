@@ -10,7 +10,9 @@ Grasps (CRAM's names), in the object's frame (x forward, z up):
   (not through a handle); the opening is horizontal, the width the object's size across.
 - ``rim`` (a hollow object, ``object_wall/2``): from above on the wall, the fingers
   straddling it ``RIM_DEPTH`` below the rim; one place per side the box shows no handle.
-  Width: the wall's thickness.
+  Width: the wall's thickness. A palm hand lies flat over the rim, its wrist at the rim's
+  height: its rim grasps come again tilted about the wall (:data:`RIM_TILTS`), the wrist
+  raised, for a bowl down in a drawer.
 - ``handle`` (``object_handle/2``): sideways onto the bar that sticks out of the body,
   at half height; width: the bar's. A hand that fits no grasp round the body (top,
   front, left, right: a Panda's 80 mm against the mug's 88) also gets it from above, as
@@ -30,6 +32,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator, Sequence
+from dataclasses import replace
 
 import numpy as np
 
@@ -52,6 +55,7 @@ TOP_STRADDLE = 0.04  # [m] a top grasp's fingertips go at most this far below th
 # 0.7 mm, issue 35)
 PALM_FLOOR = 0.01  # [m] a palm hand held sideways keeps this far over the object's bottom
 RIM_DEPTH = 0.02  # [m] a rim grasp's tool frame below the rim
+RIM_TILTS = (0.3,)  # [rad] a palm hand's rim grasps tilted so (each after the flat ones)
 PRE_GRASP = 0.10  # [m] the tool starts this far back along its approach
 LIFT = 0.10  # [m] the object is lifted this far
 HANDLE_MARGIN = 0.005  # [m] the box sticking out this far past the body is a handle
@@ -143,10 +147,13 @@ def _side(shape: ObjectShape, hand: Hand, name: str) -> Iterator[Grasp]:
 
 
 def _rim(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
+    """On the wall from above, one place per side without a handle; a palm hand's then
+    again tilted (:data:`RIM_TILTS`, :func:`_tilted`)."""
     if shape.wall is None:
         return
     cx, cy = shape.centre
     r = shape.radius
+    flat: list[tuple[Vector3, Grasp]] = []
     for side in SIDES:
         if shape.reach(side) > r + HANDLE_MARGIN:
             continue  # a handle on this side
@@ -154,7 +161,31 @@ def _rim(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
         at = (cx + side[0] * d, cy + side[1] * d, shape.high[2] - RIM_DEPTH)
         for turn in (0.0, math.pi):
             opening = side if turn == 0.0 else (-side[0], -side[1], 0.0)
-            yield _grasp(hand, "rim", turn, at, DOWN, opening, shape.wall, shape)
+            flat.append((at, _grasp(hand, "rim", turn, at, DOWN, opening, shape.wall, shape)))
+    yield from (grasp for _, grasp in flat)
+    if hand.palm is not None:
+        yield from (_tilted(g, at, tilt, hand.palm) for tilt in RIM_TILTS for at, g in flat)
+
+
+def _tilted(grasp: Grasp, held: Vector3, tilt: float, palm: Palm) -> Grasp:
+    """``grasp`` turned by ``tilt`` [rad] about the wall's tangent through ``held`` (the
+    point its fingers hold), the way that raises the wrist. A palm hand lies flat over a
+    rim with its wrist at the rim's height: the TIAGo's wrist housing met the bowl (6 mm)
+    and its forearm the open drawer's front; tilted, both come from above, and the fingers
+    still close on the wall (0.5 rad: they closed on nothing). The approach stays
+    straight down."""
+    q = grasp.tool.orientation
+    wrist = quat.rotate(q, (-palm.along[0], -palm.along[1], -palm.along[2]))
+    axis = (wrist[1], -wrist[0], 0.0)  # turning about wrist x up raises the wrist
+    if math.hypot(axis[0], axis[1]) < 1e-9:
+        return grasp
+    turn = quat.from_axis_angle(axis, tilt)
+    offset = np.subtract(grasp.tool.position, held)
+    moved = np.add(held, quat.rotate(turn, (offset[0], offset[1], offset[2])))
+    tool = Pose(
+        (float(moved[0]), float(moved[1]), float(moved[2])), quat.normalized(quat.multiply(turn, q))
+    )
+    return replace(grasp, tool=tool, tilt=tilt)
 
 
 def _handle_side(shape: ObjectShape) -> Vector3 | None:

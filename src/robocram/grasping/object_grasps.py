@@ -106,7 +106,8 @@ def candidates_at(
     base_in_map: Pose,
     names: Sequence[str],
 ) -> list[GraspCandidate]:
-    """The grasps of ``shape`` at ``object_in_map`` that ``arm``'s hand fits, best first.
+    """The grasps of ``shape`` at ``object_in_map`` that ``arm``'s hand fits, best first
+    (a tilted rim grasp right after the flat ones of its side).
 
     Raises:
         ObjectUngraspable: no grasp fits the hand.
@@ -114,7 +115,7 @@ def candidates_at(
     """
     found = grasps(shape, hand_of(desc, arm), names)
     order = _rank(names)
-    found.sort(key=lambda g: (order[g.name], _preference(base_in_map, object_in_map, g)))
+    found.sort(key=lambda g: (order[g.name], _preference(base_in_map, object_in_map, g), g.tilt))
     return [GraspCandidate(g, *g.in_map(object_in_map)) for g in found]
 
 
