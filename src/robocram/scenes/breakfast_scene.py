@@ -15,7 +15,7 @@ A separate builder, so the plain kitchen scene and every result on it stay as th
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from dataclasses import replace
 from functools import cache
 
@@ -73,24 +73,32 @@ def usual_spot_facts(environment: str, places: Iterable[ItemPlace]) -> str:
 
 
 @cache
-def breakfast_description() -> EnvironmentDescription:
-    """The kitchen's description with the breakfast items' usual places."""
-    usual = tuple(sorted({(p.kind, p.link) for p in BREAKFAST_PLACES}))
+def breakfast_description(kept: tuple[ItemPlace, ...] = BREAKFAST_PLACES) -> EnvironmentDescription:
+    """The kitchen's description with the breakfast items' usual places (where ``kept``
+    keeps them: a household's own arrangement)."""
+    usual = tuple(sorted({(p.kind, p.link) for p in kept}))
     return replace(kitchen_description(), usual_locations=usual)
 
 
 def breakfast_scene(
     robot: str | RobotDescription,
     world: World | None = None,
-    places: Iterable[ItemPlace] = BREAKFAST_PLACES,
+    places: Iterable[ItemPlace] | None = None,
+    kept: Sequence[ItemPlace] = BREAKFAST_PLACES,
 ) -> EnvironmentScene:
     """The kitchen with the breakfast items in ``places`` (default: where they are kept),
     ``robot`` (arms parked) in the middle, and the table's seats as facts.
 
-    Items moved from their usual place (a seeded variant) keep the usual place's and
-    spots' facts (:data:`BREAKFAST_PLACES`).
+    ``kept`` is the household's arrangement, which the knowledge holds: each kind's usual
+    place and each item's spot in it (``usual_spot/5``), where clearing brings it back.
+    Items moved from where they are kept (``places``: a seeded variant) leave those facts
+    as they are: a plan finds them by looking.
     """
-    scene = environment_scene(breakfast_description(), robot, places, ROBOT_START, world)
+    kept = tuple(kept)
+    scene = environment_scene(
+        breakfast_description(kept), robot, kept if places is None else places, ROBOT_START,
+        world,
+    )  # fmt: skip
     scene.world.kb.consult(seat_facts(KITCHEN, SEATS), group=f"{KITCHEN}_seats")
-    scene.world.kb.consult(usual_spot_facts(KITCHEN, BREAKFAST_PLACES), group=f"{KITCHEN}_spots")
+    scene.world.kb.consult(usual_spot_facts(KITCHEN, kept), group=f"{KITCHEN}_spots")
     return scene
