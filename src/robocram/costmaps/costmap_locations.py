@@ -109,7 +109,7 @@ class CostmapLocations:
         validators = [(name, self._validator(name)) for name in plan.validators]
         rejected: Counter[str] = Counter()
         accepted = in_a_row = 0
-        for pose in self._candidates(query, layers):
+        for pose in self._stands_or_candidates(query, plan, layers):
             with parked(self.world, query.robot) if query.robot else nullcontext():
                 culprit = next((n for n, check in validators if not check(query, pose)), None)
             if culprit is None:
@@ -127,6 +127,17 @@ class CostmapLocations:
             raise LocationNotFound(
                 designator, rejected, accepted, in_a_row, emptied_by, culprits, area
             )
+
+    def _stands_or_candidates(
+        self, query: LocationQuery, plan: LocationPlan, layers: _Layers
+    ) -> Iterator[Pose]:
+        """The costmap's candidates; for a stand of a robot whose base is fixed, only where
+        it stands: it cannot go anywhere else, and its validators still judge that one."""
+        robot = query.robot
+        if robot is not None and plan.robot_key is not None and robot.description.drive == "fixed":
+            yield self.world.pose(robot)
+            return
+        yield from self._candidates(query, layers)
 
     def _robot(self, designator: Any, plan: LocationPlan) -> RobotObject | None:
         if plan.robot_key is None:

@@ -123,9 +123,14 @@ def base_bottom(desc: RobotDescription) -> float:
     """[m] Where the map's heights start, in the base frame: 0 for a base frame on the
     floor; the robot's lowest point (a whole bin down) for a base frame held above its
     feet or wheels, whose targets lie below it: Centauro's pelvis stands 1.03 m up, over
-    the counter's mug, which a map from 0 up scored 0 from every cell."""
-    model = load_description(desc).model
+    the counter's mug, which a map from 0 up scored 0 from every cell. A base that is
+    fixed is mounted where it works, on a pedestal or a bench as often as on the floor:
+    its map starts as far down as an arm reaches (:data:`RADIUS_MAX`)."""
+    loaded = load_description(desc)
+    model = loaded.model
     assert model is not None
+    if loaded.drive == "fixed":
+        return -RADIUS_MAX
     lowest = 0.0
     for name, link in model.links.items():
         box = link_box(link)

@@ -16,6 +16,7 @@ from robocram.scenes.kitchen_scene import KitchenScene, kitchen_scene, kitchen_u
 from robocram.scenes.placement import TabletopPlacement, tabletop_placement
 from robocram.scenes.stand_in import StandIn
 from robocram.scenes.tabletop_scene import TabletopScene, tabletop_scene
+from robocram.scenes.workcell_scene import workcell_scene, workcell_spots
 
 __all__ = [
     "ContainerDescription",
@@ -36,4 +37,6 @@ __all__ = [
     "kitchen_urdf",
     "tabletop_placement",
     "tabletop_scene",
+    "workcell_scene",
+    "workcell_spots",
 ]

@@ -19,6 +19,13 @@ from robocram.logic import name_atom
 from robocram.scenes.stand_in import StandIn
 
 ContainerKind = Literal["drawer", "door"]
+# the facts of a container, declared (no facts) by an environment without any
+CONTAINER_PREDICATES = (
+    "container/4",
+    "container_kind/3",
+    "container_opening/3",
+    "container_front/3",
+)
 
 
 @dataclass(frozen=True)
@@ -76,6 +83,8 @@ class EnvironmentDescription:
         """The KB facts (Prolog text) for this environment, named ``environment``."""
         env = name_atom(environment or self.name)
         lines = [f"supporting_surface({env}, {name_atom(s.link)})." for s in self.surfaces]
+        if not self.containers:  # asked of every environment: none here is an answer
+            lines += [f":- dynamic({p})." for p in CONTAINER_PREDICATES]
         for c in self.containers:
             link = name_atom(c.link)
             lines.append(f"container({env}, {link}, {name_atom(c.joint)}, {name_atom(c.handle)}).")

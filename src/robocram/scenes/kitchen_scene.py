@@ -93,6 +93,7 @@ def kitchen_scene(robot: str | RobotDescription, world: World | None = None) -> 
         raise UnfitRobotError(
             desc.name,
             "its base is fixed (base_type='fixed') and a kitchen transport drives between "
-            "counters: mount it on a mobile base (base_type), or use the tabletop scene",
+            "counters: mount it on a mobile base (base_type), or carry things across its "
+            "table in the workcell scene (workcell_scene)",
         )
     return environment_scene(kitchen_description(), robot, PLACES, ROBOT_START, world)

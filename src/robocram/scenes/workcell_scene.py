@@ -1,0 +1,123 @@
+"""A workcell scene: a robot mounted where it works, a table in front of it, a mug and a bowl.
+
+A lone arm (``base_type="fixed"``) cannot drive a mug across a kitchen, but it can carry
+things from one spot of its table to another. The table, the robot's stand and the mug
+are placed as in the tabletop scene (:mod:`robocram.scenes.placement`: from the arm's
+reach, never by robot name); the table is an environment with one surface, so the same
+``transport`` plan (search, fetch, deliver) runs as in the kitchen, the robot standing
+where it is mounted.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+
+from robocram.robots import RobotDescription, load_description
+from robocram.scenes.environment_description import EnvironmentDescription, SurfaceDescription
+from robocram.scenes.environment_scene import (
+    EnvironmentScene,
+    ItemPlace,
+    place_item,
+    usual_location_facts,
+)
+from robocram.scenes.placement import (
+    MUG_INSET,
+    TABLE_DEPTH,
+    facing_yaw,
+    placement_arm,
+    table_height,
+    tabletop_placement,
+)
+from robocram.scenes.scene_robot import place_robot
+from robocram.scenes.standing import LOWEST_TABLE, PEDESTAL_TABLE, stand_on_a_pedestal
+from robocram.tf import Pose, PoseStamped
+from robocram.tf import quaternion as quat
+from robocram.world import World
+
+WORKCELL = "workcell"  # the table's object name, the Env of its facts
+TABLE_TOP = "table_top"  # its one link: the surface
+TABLE_WIDTH = 1.0  # [m] along y, at least: wider for a long arm's spots
+SPREAD = 0.25  # of the mug's distance ahead: the bowl lies this far right of the mug
+MIN_SPREAD = 0.15  # [m] at least: the bowl's rim (0.08 m) clear of the mug (0.044 m) and a hand
+FRAME_BELOW_TOP = 0.1  # [m] a search looks this far over a place's frame (search.LOOK_ABOVE):
+# so at the table's top, as the pick-up does; higher, a small arm's wrist camera hits its shoulder
+URDF_FOLDER = Path(tempfile.gettempdir()) / "robocram-workcells"
+
+
+def _table_urdf(height: float, width: float, ahead: float) -> Path:
+    """A URDF of one box ``height`` [m] high, its centre ``ahead`` [m] along x of its link
+    frame, which lies :data:`FRAME_BELOW_TOP` under its top, where the items are: plans
+    look at a place's frame to see what is on it, and a wrist camera close over a small
+    arm's table sees only a patch round the point it looks at; one file per size."""
+    size = f"{TABLE_DEPTH:.4f} {width:.4f} {height:.4f}"
+    centre = f"{ahead:.4f} 0 {FRAME_BELOW_TOP - height / 2:.4f}"
+    shape = f'<origin xyz="{centre}"/><geometry><box size="{size}"/></geometry>'
+    text = (
+        f'<?xml version="1.0"?>\n<robot name="{WORKCELL}"><link name="{TABLE_TOP}">'
+        f"<visual>{shape}</visual><collision>{shape}</collision></link></robot>\n"
+    )
+    URDF_FOLDER.mkdir(parents=True, exist_ok=True)
+    path = URDF_FOLDER / f"table_{height * 1000:.0f}_{width * 1000:.0f}_{ahead * 1000:.0f}mm.urdf"
+    if not path.is_file() or path.read_text("utf-8") != text:
+        written = path.with_suffix(f".{os.getpid()}.tmp")  # another process may read it
+        written.write_text(text, "utf-8")
+        written.replace(path)
+    return path
+
+
+def workcell_scene(robot: str | RobotDescription, world: World | None = None) -> EnvironmentScene:
+    """Floor, ``robot`` at the origin (on a pedestal if its arm is low), a table in front
+    of it where the tabletop scene puts one, the mug on it where that scene puts it (its
+    handle to the left) and the bowl to its right; the table's top is the KB's
+    ``supporting_surface`` and the items' usual place, its frame between the two (where
+    a search looks). The delivery spots are :func:`workcell_spots`.
+
+    Raises:
+        UnfitRobotError: the robot has no gripper arm, or it cannot reach past its base.
+    """
+    desc = load_description(robot)
+    world = world if world is not None else World()
+    world.bodies.add_floor()
+    turned = quat.from_euler(0.0, 0.0, facing_yaw(desc))
+    name = place_robot(world, desc, Pose((0.0, 0.0, 0.0), turned))
+    arm = placement_arm(world.robot(name).description)
+    if arm is not None and table_height(world, name, arm) < LOWEST_TABLE:
+        stand_on_a_pedestal(world, name, PEDESTAL_TABLE - table_height(world, name, arm))
+    place = tabletop_placement(world, name)
+    height, (mug_x, mug_y) = place.table_height, place.mug_xy
+    table_x = mug_x - MUG_INSET + TABLE_DEPTH / 2
+    side = max(SPREAD * mug_x, MIN_SPREAD)
+    width = max(TABLE_WIDTH, 2 * (abs(mug_y) + side + 0.2))
+    environment = EnvironmentDescription(
+        WORKCELL,
+        _table_urdf(height, width, table_x - mug_x),
+        (SurfaceDescription(TABLE_TOP, height),),
+    )
+    middle = Pose((mug_x, mug_y - side / 2, height - FRAME_BELOW_TOP))  # mug and bowl
+    world.add_urdf(WORKCELL, environment.urdf, middle, type="environment")
+    world.kb.consult(environment.facts(WORKCELL), group=f"{WORKCELL}_semantics")
+    items = (
+        ItemPlace("mug-1", "mug", TABLE_TOP, (0.0, side / 2)),
+        ItemPlace("bowl-1", "bowl", TABLE_TOP, (0.0, -side / 2)),
+    )
+    objects = {p.name: place_item(world, WORKCELL, p) for p in items}
+    world.kb.consult(
+        usual_location_facts(environment, items, WORKCELL), group=f"{WORKCELL}_contents"
+    )
+    return EnvironmentScene(world, name, WORKCELL, objects)
+
+
+def workcell_spots(scene: EnvironmentScene) -> dict[str, PoseStamped]:
+    """Where the items of a workcell scene go (map), each as far ahead as it lies and its
+    frame as high as it rests now: the mug as far to its left as the bowl lies to its
+    right, then the bowl where the mug stood. Both spots are in reach if the items are:
+    the tabletop pick-up's mug spot, and a step aside as far as the bowl lies."""
+    mug = scene.world.pose(scene.items["mug-1"]).position
+    bowl = scene.world.pose(scene.items["bowl-1"]).position
+    left = (mug[0], 2 * mug[1] - bowl[1], mug[2])
+    return {
+        "mug-1": PoseStamped("map", left),
+        "bowl-1": PoseStamped("map", (mug[0], mug[1], bowl[2])),
+    }
