@@ -2,10 +2,12 @@
 
 Run: ``.venv/bin/python benchmarks/activity_bench.py [variants] [robots...]`` (defaults 5
 and the PR2, the HSR and Boxy; a robot may be a description file, e.g. the drafted
-``tests/data/fetch/fetch.py`` and ``tests/data/stretch/stretch.py``). A variant moves
-every breakfast item up to :data:`JITTER` from where it is kept (seeded), deeper into or
-out of its drawer, shelf or counter (along its link's x: things kept side by side stay
-apart). Per robot
+``tests/data/fetch/fetch.py`` and ``tests/data/stretch/stretch.py``). A variant (seeded)
+is a household: which drawer holds the bowls, the cups and the cutlery (one of
+:data:`DRAWERS` each, the knowledge saying so: its usual places), and every item up to
+:data:`JITTER` from its spot, deeper into or out of its drawer, shelf or counter (along
+its link's x: things kept side by side stay apart). Seed 0 is the default kitchen's
+arrangement. Per robot
 it prints how often setting the table succeeded (every thing at its seat) and how often
 clearing a set table did (every thing back), and the wall time of each activity: cold is a fresh
 scene's first activity (the scene built before the clock starts), warm a second breakfast
@@ -15,6 +17,7 @@ caches are warm). Figures on a loaded machine drift by 15-50 %.
 
 from __future__ import annotations
 
+import math
 import random
 import statistics
 import sys
@@ -31,40 +34,67 @@ from robocram.scenes.environment_scene import EnvironmentScene, ItemPlace
 
 JITTER = 0.02  # [m] each item's shift from its usual spot, per axis, at most
 ROBOTS = ("pr2", "hsrb", "boxy")
+# the top drawers that may hold each group (the first: the default kitchen's), one group
+# per drawer; all are the same 0.6 m deep drawer model, so a spot in one fits the others
+LIE = math.pi / 2  # [rad] how things lie in the default kitchen's drawers, from the drawer's
+# axes (square to the map there): the same in a drawer facing another way (a knife along
+# the drawer's width, not through its front)
+DRAWERS = {
+    "drawer_unit_drawer_3": (
+        "drawer_unit_drawer_3",
+        "stove_unit_drawer_2",
+        "east_drawers_2_drawer_3",
+    ),
+    "cutlery_unit_drawer_4": ("cutlery_unit_drawer_4", "east_drawers_1_drawer_3"),
+    "cutlery_unit_drawer_3": ("cutlery_unit_drawer_3", "east_drawers_3_drawer_3"),
+}
 
 
-def variant(seed: int) -> list[ItemPlace]:
-    """The breakfast items, each moved up to :data:`JITTER` along its link's x (seeded)."""
+def variant(seed: int) -> tuple[list[ItemPlace], list[ItemPlace]]:
+    """Where the household keeps the items (seeded; seed 0: the default kitchen's
+    arrangement), and where they are: each moved up to :data:`JITTER` along its link's x
+    from its spot."""
     rng = random.Random(seed)
-    return [
-        replace(p, xy=(p.xy[0] + rng.uniform(-JITTER, JITTER), p.xy[1])) for p in BREAKFAST_PLACES
+    moved = {old: (old if seed == 0 else rng.choice(new)) for old, new in DRAWERS.items()}
+    kept = [
+        p if moved.get(p.link, p.link) == p.link else replace(p, link=moved[p.link], yaw=LIE)
+        for p in BREAKFAST_PLACES
     ]
+    places = [replace(p, xy=(p.xy[0] + rng.uniform(-JITTER, JITTER), p.xy[1])) for p in kept]
+    return kept, places
 
 
-def _timed(scene: EnvironmentScene, action: str, **keys: object) -> tuple[bool, float]:
-    """Whether ``action`` succeeded in ``scene`` and its wall time [s]."""
+def _timed(scene: EnvironmentScene, action: str, **keys: object) -> tuple[bool, float, str]:
+    """Whether ``action`` succeeded in ``scene``, its wall time [s], and why it failed."""
     start = time.perf_counter()
+    why = ""
     try:
         with simulated_robot(scene.world, scene.robot):
             perform(an.action(type=action, **keys))
-        ok = True
-    except PlanFailure:
-        ok = False
-    return ok, time.perf_counter() - start
+    except PlanFailure as failure:
+        why = f"{type(failure).__name__}: {str(failure)[:160]}"
+    return not why, time.perf_counter() - start, why
 
 
 def run_robot(robot: str, variants: int) -> None:
     """Print the figures of ``variants`` breakfasts and clearings by ``robot``."""
     set_ok, clear_ok, cold, clearing, warm = 0, 0, [], [], []
     for seed in range(variants):
-        scene = breakfast_scene(robot, places=variant(seed))
+        kept, places = variant(seed)
+        scene = breakfast_scene(robot, places=places, kept=kept)
         with scene.world.snapshots.stored_state():
-            ok, wall = _timed(scene, "setting-table", people=2)
+            ok, wall, why = _timed(scene, "setting-table", people=2)
             set_ok += ok
             cold.append(wall)
-            cleared, wall = _timed(scene, "clearing-table")
+            cleared, wall, why_not = _timed(scene, "clearing-table")
             clear_ok += ok and cleared  # clearing an empty table is no success
             clearing.append(wall)
+        drawers = sorted({p.link for p in kept if "drawer" in p.link})
+        print(
+            f"  seed {seed:2d} {' '.join(drawers)}: set {'ok' if ok else why}; "
+            f"cleared {'ok' if cleared else why_not}",
+            flush=True,
+        )
         if seed == 0:
             warm.append(_timed(scene, "setting-table", people=2)[1])
         scene.world.close()

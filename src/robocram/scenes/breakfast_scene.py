@@ -38,9 +38,10 @@ BREAKFAST_PLACES = (
     ItemPlace("spoon-2", "spoon", "cutlery_unit_drawer_3", (-0.24, -0.09)),
     ItemPlace("knife-1", "knife", "cutlery_unit_drawer_3", (-0.1, 0.0)),
     ItemPlace("milk-1", "milk", "fridge_body", (-0.2, 0.05), below=FRIDGE_UPPER_SHELF),
-    ItemPlace("cereal-1", "cereal_box", "counter_top_north", (0.4, -0.1)),
-    ItemPlace("bread-1", "bread", "counter_top_north", (0.85, -0.05)),
-    ItemPlace("sponge-1", "sponge", "counter_top_north", (-0.55, -0.15)),
+    # on the counter beside the stove and the sink, not on them (their 2 cm slabs)
+    ItemPlace("cereal-1", "cereal_box", "counter_top_north", (0.2, -0.1)),
+    ItemPlace("bread-1", "bread", "counter_top_north", (1.05, -0.05)),
+    ItemPlace("sponge-1", "sponge", "counter_top_north", (-0.9, -0.15)),
 )
 
 # seat(Env, Surface, Seat, X, Y, Yaw): where a person sits at a table, in the table top's

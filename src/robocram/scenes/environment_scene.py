@@ -19,9 +19,11 @@ from robocram.scenes.environment_model import check_urdf, loadable_urdf
 from robocram.scenes.errors import SceneError
 from robocram.scenes.scene_robot import place_robot
 from robocram.tf import Pose, PoseLike, PoseStamped
+from robocram.tf import quaternion as quat
 from robocram.world import World, WorldObject
 
 RESTING_GAP = 0.002  # [m] items are put this far above their support
+OVERLAP = 0.001  # [m] an item placed deeper than this into anything is refused
 ORIGIN = Pose()
 
 
@@ -30,7 +32,9 @@ class ItemPlace:
     """An item ``name`` of catalogue ``kind`` at ``xy`` [m] in ``link``'s frame, on its top.
 
     ``below`` [m], in the link's frame, puts it on the first face under that height instead
-    (a shelf inside a closed cabinet, whose top is the cabinet's roof).
+    (a shelf inside a closed cabinet, whose top is the cabinet's roof). ``yaw`` [rad] turns
+    it about the vertical from the link's axes (a knife laid along a drawer's width in any
+    drawer); None keeps it square to the map's.
     """
 
     name: str
@@ -38,6 +42,7 @@ class ItemPlace:
     link: str
     xy: tuple[float, float]
     below: float | None = None
+    yaw: float | None = None
 
 
 @dataclass(frozen=True)
@@ -113,14 +118,37 @@ def usual_location_facts(
 
 
 def place_item(world: World, environment: str, place: ItemPlace) -> WorldObject:
-    """Put the item on the top face of ``place.link`` (its floor, for a drawer)."""
-    spot = world.link_pose(environment, place.link) * Pose((*place.xy, 0.0))
+    """Put the item on the top face of ``place.link`` (its floor, for a drawer).
+
+    Raises:
+        SceneError: the item would start inside something (a knife 0.22 m long laid
+            square to the map across a drawer's front): named, with what to change.
+    """
+    link = world.link_pose(environment, place.link)
+    spot = link * Pose((*place.xy, 0.0))
     top = support_top(world, environment, place.link, spot, place.below)
-    item = world.add_item(place.name, place.kind, Pose((0.0, 0.0, 100.0)))
+    turn = Pose()
+    if place.yaw is not None:
+        turn = Pose(
+            orientation=quat.from_euler(0.0, 0.0, quat.to_euler(link.orientation)[2] + place.yaw)
+        )
+    item = world.add_item(place.name, place.kind, Pose((0.0, 0.0, 100.0), turn.orientation))
     below_origin = 100.0 - world.aabb(item)[0][2]  # [m] from the item's origin down
     x, y, _ = spot.position
-    world.set_pose(item, Pose((x, y, top + below_origin + RESTING_GAP)))
+    world.set_pose(item, Pose((x, y, top + below_origin + RESTING_GAP), turn.orientation))
+    _refuse_overlap(world, place)
     return item
+
+
+def _refuse_overlap(world: World, place: ItemPlace) -> None:
+    """Raise if the item just placed goes deeper than :data:`OVERLAP` into anything."""
+    for _, other, other_link, gap in world.contacts.link_distances(place.name, distance=0.0):
+        if gap < -OVERLAP:
+            where = f"{other.name}/{other_link}" if other_link != other.name else other.name
+            raise SceneError(
+                f"{place.name} at {place.xy} on {place.link!r} would start {-gap * 1000:.1f} mm "
+                f"inside {where}; move it (xy) or turn it (yaw)"
+            )
 
 
 def support_top(
