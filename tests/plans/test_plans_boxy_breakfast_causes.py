@@ -14,6 +14,8 @@ from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.bringing import Visit, find, usual_place
 from robocram.plans.fetch import fetch
 from robocram.plans.pick_object import pick_up_object
+from robocram.plans.table_arrangement import STANDARD_SETTING, spots, table_with_seats
+from robocram.plans.table_trips import TableSetting, deliver_to_spot
 from robocram.projection import simulated_robot
 from robocram.scenes.breakfast_scene import breakfast_scene
 from robocram.tf import Pose, PoseStamped
@@ -21,6 +23,7 @@ from robocram.tf import quaternion as quat
 from robocram.world import World
 
 BOWLS = "drawer_unit_drawer_3"
+TABLE_TOP = 0.75  # [m] the kitchen table's top
 # facing the opened bowls' drawer, the base's middle in line with bowl-1's rim nearer
 # the drawer's middle (the bowl 0.75 m ahead, the rim 8 cm to its left)
 BOXY_AT_RIM = Pose((-1.358, 1.01, 0.0), quat.from_euler(0.0, 0.0, math.pi / 2))
@@ -90,5 +93,33 @@ def test_boxy_takes_the_bowl_beside_the_drawers_wall_facing_its_far_rim() -> Non
         # with the bowl's (the arm lifts a rim in front of the base's middle only)
         assert x == pytest.approx(bx - 0.078, abs=0.01)
         assert 0.7 < by - y < 0.9
+    finally:
+        world.close()
+
+
+def test_boxy_puts_the_bowl_it_holds_before_its_chest_on_the_table_from_a_reach_stand() -> None:
+    scene = breakfast_scene("boxy")
+    world = scene.world
+    cid = world.physics.client()
+    try:
+        bowl = world.object("bowl-1").body_id
+        with simulated_robot(world, scene.robot):
+            done = TableSetting(table_with_seats(None))
+            bowls = [s for s in spots(done.table, 2, STANDARD_SETTING, ()) if s.type == "bowl"]
+            spot = bowls[1]  # the far setting's (the near one takes it held so)
+            seen, opened = find(
+                an.object(type="bowl", name="bowl-1"), Visit(usual_place("bowl")), done.log
+            )
+            held = fetch(seen, log=done.log, opened=opened)
+            # carried before its chest, every stand holding it so over the spot put the
+            # other, parked hand into the table; a stand the arm reaches the spot from does
+            deliver_to_spot(held, spot, done)
+        low, _ = pybullet.getAABB(bowl, physicsClientId=cid)
+        assert low[2] == pytest.approx(TABLE_TOP, abs=0.01)  # on the table
+        x, y, _ = pybullet.getBasePositionAndOrientation(bowl, cid)[0]
+        assert math.hypot(x - spot.pose.position[0], y - spot.pose.position[1]) < 0.15
+        assert not pybullet.getClosestPoints(
+            world.object(scene.robot).body_id, bowl, 0.005, physicsClientId=cid
+        )  # let go
     finally:
         world.close()
