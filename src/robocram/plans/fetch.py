@@ -13,7 +13,7 @@ from __future__ import annotations
 import contextlib
 import itertools
 import math
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from typing import Any
 
 from robocram.designators import ObjectDesignator, a, an
@@ -28,6 +28,7 @@ from robocram.plans.basic_actions import detect, look_lowering, navigate, park_a
 from robocram.plans.container_access import OpenedContainer, is_drawer
 from robocram.plans.culprits import blamed, culprit_clause
 from robocram.plans.errors import FetchExhausted, PlanArgumentError
+from robocram.plans.grasp_stands import grasp_point_stands
 from robocram.plans.known_robot import KnownRobot, current_robot
 from robocram.plans.location_poses import location_poses, next_pose
 from robocram.plans.peering import look_again
@@ -212,7 +213,7 @@ def exhausted_message(name: str, tries: int, causes: list[Exception]) -> str:
 
 
 def _first_held(
-    stands: list[tuple[Pose, str | None]],
+    stands: Iterable[tuple[Pose, str | None]],
     pick: Callable[[Pose, str | None], Held],
     causes: list[Exception],
     log: AttemptLog,
@@ -297,6 +298,12 @@ def fetch(
         (hidden, picking(in_container=True), len(hidden)),  # from a stand that did not see it
     ):
         found = _first_held(stands_left, pick, causes, log, limit)
+        if found is not None:
+            return found
+    if opened is not None:  # last: in line with a grasp's point aside of the middle
+        arms = [arm] if arm is not None else robot.arms()
+        aside = grasp_point_stands(robot, seen, where, arms, opened)
+        found = _first_held(aside, picking(torso_up=True), causes, log, stand_retries)
         if found is not None:
             return found
     raise FetchExhausted(

@@ -13,6 +13,7 @@ from robocram.designators import LocationDesignator, a
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.bringing import Visit, find, wanted_object
 from robocram.plans.deliver import deliver
+from robocram.plans.errors import DeliveryExhausted
 from robocram.plans.fetch import fetch
 from robocram.plans.pick_object import Held
 from robocram.plans.table_arrangement import Spot, Table
@@ -51,11 +52,24 @@ def spot_location(
     )
 
 
+def deliver_to_spot(held: Held, spot: Spot, done: TableSetting) -> None:
+    """Put ``held`` at ``spot`` from the stands that hold it over the spot as the arm
+    holds it now; where none did, again, then from those the arm reaches the spot from by
+    IK: Boxy's bowl, taken by its rim nearer its drawer's middle, hangs in front of its
+    chest when carried, and every stand holding it so over the table put the other,
+    parked hand into the table."""
+    where = spot_location(done.table, spot, held.object_name)
+    try:
+        deliver(held, where, held.arm, log=done.log)
+    except DeliveryExhausted:
+        deliver(held, where, held.arm, log=done.log, reach_stands=True)
+
+
 def bring_one(spot: Spot, visit: Visit, done: TableSetting) -> Held:
     """Find a thing of the spot's type not yet on the table, fetch it, put it at the spot."""
     seen, inside = find(wanted_object(spot.type), visit, done.log, skip=done.placed)
     held = fetch(seen, log=done.log, opened=inside)
-    deliver(held, spot_location(done.table, spot, held.object_name), held.arm, log=done.log)
+    deliver_to_spot(held, spot, done)
     done.placed[held.object_name] = spot
     done.trips.append((held.object_name,))
     return held

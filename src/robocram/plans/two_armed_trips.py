@@ -32,7 +32,7 @@ from robocram.plans.known_robot import current_robot
 from robocram.plans.pick_object import GRASPING, Held
 from robocram.plans.stands import map_pose, planar_pose, yaw_of
 from robocram.plans.table_arrangement import Spot
-from robocram.plans.table_trips import TableSetting, bring_one, spot_location
+from robocram.plans.table_trips import TableSetting, bring_one, deliver_to_spot, spot_location
 from robocram.tf import Pose, PoseStamped, transform_pose
 
 OVER_TABLE = 0.12  # [m] the first thing's frame comes out this far over its spot's height
@@ -178,7 +178,7 @@ def _put_alone(held: Held, spot: Spot, done: TableSetting) -> list[Exception]:
 def _deliver_alone(held: Held, spot: Spot, done: TableSetting) -> list[Exception]:
     """Put ``held`` (in the hand as picked up) at ``spot``; the failures."""
     try:
-        deliver(held, spot_location(done.table, spot, held.object_name), held.arm, log=done.log)
+        deliver_to_spot(held, spot, done)
     except PlanFailure as failure:
         return [failure]
     done.placed[held.object_name] = spot

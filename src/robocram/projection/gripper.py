@@ -382,6 +382,8 @@ def grip(robot: ProjectedRobot, arm: str) -> str:
         lambda obj: _squeezed(robot, links, obj)
         or _sunk(robot, links, obj, depths[obj.name]) is not None,
     )  # fmt: skip
+    if found is None:
+        found = _closed_round_thin(robot, arm, links, near)
     if found is None:  # closes as closing does: fully, or onto a handle's bar
         closed = close_gripper(robot, arm)[gripper_joints(robot, arm)[0]]
         raise GripperClosedCompletely(
@@ -395,6 +397,25 @@ def grip(robot: ProjectedRobot, arm: str) -> str:
     _move_to(robot, arm, fraction, touching)
     robot.world.attach(held, robot.name, robot.arm(arm).end_effector_link)
     return held.name
+
+
+def _closed_round_thin(
+    robot: ProjectedRobot, arm: str, links: set[str], candidates: list[WorldObject]
+) -> Stop | None:
+    """Closed fully on a wall thinner than the closed fingers' gap (a bowl's rim, 6 mm,
+    in a Boxy's hand, whose fingers stop 6.5 mm apart): the first of ``candidates`` one
+    finger touches and the other side comes within the hand's bound of, as
+    :func:`_held_between` holds an object the closing stopped on; None if none."""
+    states = robot.world.joint_states(robot.name)
+    start = {j: states[j] for j in gripper_joints(robot, arm)}
+    try:
+        _probe(robot, arm, 0.0)
+        for obj in candidates:
+            if _touching(robot, links, obj) and _squeezed(robot, links, obj, HAND_CONTACT_DEPTH):
+                return 0.0, obj, _touching(robot, links, obj)
+        return None
+    finally:
+        robot.world.set_joint_states(robot.name, start)
 
 
 def _closing_stop(
