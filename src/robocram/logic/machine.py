@@ -355,13 +355,15 @@ class Machine:
         while cps:
             cp = cps[-1]
             mark = cp[1]
-            if len(trail) - mark > 8:  # a long undo: one pass over a slice beats popping
+            n = len(trail) - mark  # taken once: a long trail's length is a new int each time
+            if n > 8:  # a long undo: one pass over a slice beats popping
                 for v in trail[mark:]:
                     v.ref = None
                 del trail[mark:]
             else:
-                while len(trail) > mark:
+                while n:
                     trail.pop().ref = None
+                    n -= 1
             kind = cp[0]
             if kind == PROC:  # the commonest: a compiled procedure's later clauses
                 cps.pop()
