@@ -74,3 +74,31 @@ def test_stop_hook_ends_a_looping_query_from_another_thread() -> None:
     thread.join(timeout=30)
     assert not thread.is_alive()
     assert len(outcome) == 1 and isinstance(outcome[0], Stop)
+
+
+def _least_limit(kb: KnowledgeBase, goal: str) -> int:
+    """The smallest max_inferences under which `goal` succeeds (a binary search)."""
+    lo, hi = 1, 1 << 14  # fails at lo - 1 (none), succeeds at hi
+    assert kb.holds(goal, max_inferences=hi)
+    while lo < hi:
+        mid = (lo + hi) // 2
+        try:
+            ok = kb.holds(goal, max_inferences=mid)
+        except InferenceLimitExceeded:
+            ok = False
+        if ok:
+            hi = mid
+        else:
+            lo = mid + 1
+    return lo
+
+
+@pytest.mark.parametrize("n", [300, 700, 2100])
+def test_every_loop_costs_the_same_inferences_past_the_machines_chunks(n: int) -> None:
+    # the machine counts goals in chunks of cached small ints: each iteration costs the
+    # same number of inferences wherever the chunks end
+    kb = KnowledgeBase()
+    kb.consult("a.\np(N) :- between(1, N, _), a, fail.\np(_).\n")
+    step = _least_limit(kb, "p(2)") - _least_limit(kb, "p(1)")
+    assert step > 0
+    assert _least_limit(kb, f"p({n})") == _least_limit(kb, "p(1)") + (n - 1) * step

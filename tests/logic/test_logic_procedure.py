@@ -292,3 +292,18 @@ def test_a_procedures_locals_do_not_grow_with_its_clauses() -> None:
     small, large = kb._preds[("small", 3)].proc, kb._preds[("large", 3)].proc
     assert small is not None and large is not None
     assert large.__code__.co_nlocals <= small.__code__.co_nlocals + 2  # 40 clauses, not 4
+
+
+@pytest.mark.parametrize("trail", [0, 400])
+def test_a_failed_clause_unbinds_the_callers_variables_before_the_next(trail: int) -> None:
+    # clause 1 binds X and Y (Y through a compound) and fails on its third argument; the
+    # next clause must see both unbound, also with a long trail below (a choicepoint keeps
+    # the trail of `length/2` and `maplist/2` alive); the dynamic twin runs no procedure
+    text = "q(a, g(b), 1).\nq(X, Y, 2) :- var(X), var(Y), X = c, Y = d.\n"
+    kb = KnowledgeBase()
+    kb.consult(text + ":- dynamic(r/3).\n" + text.replace("q(", "r("))
+    goal = f"between(1, 2, _), length(L, {trail}), maplist(=(z), L), P(X, Y, 2)"
+    for _ in range(4):  # compiled after a few calls
+        got = [(a["X"], a["Y"]) for a in kb.query(goal.replace("P(", "q("))]
+        assert got == [(a["X"], a["Y"]) for a in kb.query(goal.replace("P(", "r("))]
+        assert got == [("c", "d"), ("c", "d")]

@@ -48,6 +48,8 @@ from robocram.logic.value import Value
 
 __all__ = ["Machine"]
 
+TICK_CHUNK = 256  # the machine's inference count stays a cached small int (see _run)
+
 
 class Machine:
     """Per-query solver state: the trail shared by nested solves, and the knowledge base."""
@@ -137,10 +139,13 @@ class Machine:
         if fail:
             cont = backtrack(cps)
         goal: Value = None
-        ticks = 0
         budget = self.budget
         spend = budget.spend
-        every = budget.interval()
+        # Inferences are counted down in chunks of at most TICK_CHUNK: an int up to 256
+        # is CPython's cached object, so the count costs no allocation per goal. The
+        # budget is charged `every` inferences when `due` of them have run, as before.
+        every = due = budget.interval()
+        left = chunk = min(due, TICK_CHUNK)
         plain = self.occurs_check == "false"  # procedures skip the occurs check
         pacer = gc_pacing.current_pacer()  # paces only inside `with fast_queries():`
         pacer.enter()
@@ -153,17 +158,21 @@ class Machine:
                     yield None
                     pacer.enter()
                     running = True
-                    ticks += 1  # a redo: the loop of `between(1, N, X)` under findall/3
-                    if ticks >= every:
-                        every = spend(ticks)
-                        ticks = 0
+                    left -= 1  # a redo: the loop of `between(1, N, X)` under findall/3
+                    if not left:
+                        due -= chunk
+                        if not due:
+                            every = due = spend(every)
+                        left = chunk = min(due, TICK_CHUNK)
                     cont = backtrack(cps)
                 if cont is False:
                     return
-                ticks += 1
-                if ticks >= every:
-                    every = spend(ticks)
-                    ticks = 0
+                left -= 1
+                if not left:
+                    due -= chunk
+                    if not due:
+                        every = due = spend(every)
+                    left = chunk = min(due, TICK_CHUNK)
                 goal, cutb, nxt = cont
                 tg = type(goal)
                 if tg is tuple:  # built by clause code (see inline_goal.py)
@@ -205,12 +214,13 @@ class Machine:
                         proc = q.proc
                         if proc is not None and plain:
                             cont = proc(args, trail, nxt, cps, 0)
-                            if cont is False:
-                                cont = backtrack(cps)
-                            elif type(cont) is list:
-                                cont = self._again(proc, cont, nxt, cps)
+                            if type(cont) is not tuple:  # one test for the common return
                                 if cont is False:
                                     cont = backtrack(cps)
+                                elif cont is not None:  # handed back (see _again)
+                                    cont = self._again(proc, cont, nxt, cps)
+                                    if cont is False:
+                                        cont = backtrack(cps)
                             continue
                         p = q
                 elif tg is Term:
@@ -345,13 +355,15 @@ class Machine:
         while cps:
             cp = cps[-1]
             mark = cp[1]
-            if len(trail) - mark > 8:  # a long undo: one pass over a slice beats popping
+            n = len(trail) - mark  # taken once: a long trail's length is a new int each time
+            if n > 8:  # a long undo: one pass over a slice beats popping
                 for v in trail[mark:]:
                     v.ref = None
                 del trail[mark:]
             else:
-                while len(trail) > mark:
+                while n:
                     trail.pop().ref = None
+                    n -= 1
             kind = cp[0]
             if kind == PROC:  # the commonest: a compiled procedure's later clauses
                 cps.pop()

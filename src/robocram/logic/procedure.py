@@ -337,7 +337,9 @@ class _ProcWriter(ClauseWriter):
             self.clause_code(self.clauses[i], switched, arity_known)
             self.base = 0
             self.emit("if start < 0: start = 0; continue", depth + 1)
-            self.emit("while len(trail) > mark: trail.pop().ref = None", depth + 1)
+            # the length taken once: a long trail's length is a new int at each reading
+            self.emit("u = len(trail) - mark", depth + 1)
+            self.emit("while u: trail.pop().ref = None; u -= 1", depth + 1)
         self.base = 0
 
     def arg_local(self, i: int, p: Value) -> str:

@@ -169,13 +169,15 @@ def unify_iterative(a: Value, b: Value, trail: list[Var], may_bind: BindCheck | 
 
 def undo(trail: list[Var], mark: int) -> None:
     """Unbind every variable bound since the trail had length `mark`."""
-    if len(trail) - mark > 8:  # a long undo: one pass over a slice beats popping
+    n = len(trail) - mark  # taken once: a long trail's length is a new int each time
+    if n > 8:  # a long undo: one pass over a slice beats popping
         for v in trail[mark:]:
             v.ref = None
         del trail[mark:]
         return
-    while len(trail) > mark:
+    while n > 0:
         trail.pop().ref = None
+        n -= 1
 
 
 def copy_resolved(term: Value, mapping: dict[Var, Var] | None = None) -> Value:
