@@ -21,18 +21,21 @@ from robocram.execution.failures import (
     NavigationPoseUnreachable,
     PerceptionObjectNotFound,
     PlanFailure,
+    PtuGoalUnreachable,
     failure_line,
 )
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import detect, look_lowering, navigate, park_arms
 from robocram.plans.container_access import OpenedContainer, is_drawer
 from robocram.plans.culprits import blamed, culprit_clause
+from robocram.plans.detect_past_hand import detect_past_hand
 from robocram.plans.errors import FetchExhausted, PlanArgumentError
 from robocram.plans.grasp_stands import grasp_point_stands
 from robocram.plans.known_robot import KnownRobot, current_robot
 from robocram.plans.location_poses import location_poses, next_pose
 from robocram.plans.peering import look_again
 from robocram.plans.pick_object import Held, pick_up_object
+from robocram.plans.place_looks import detected_round
 from robocram.plans.stands import (
     REACH_DISTANCES,
     front_stands,
@@ -77,10 +80,15 @@ def _pick_from(
     ``torso_up`` a stand refused for the lowered torso is driven to with it raised."""
     park_arms()
     (navigate_torso_up if torso_up else navigate)(stand)
-    look_lowering(where)
     wanted = an.object(type=seen.get("type"), name=seen.get("name"))
     try:
-        again = detect(wanted)
+        look_lowering(where)
+    except PtuGoalUnreachable as failure:  # a wrist camera not turned there: round it
+        robot_frame = current_robot().base_frame()
+        again = detected_round(wanted, where, robot_frame, failure, detect_past_hand)
+        return pick_up_object(again, arm=arm, grasp=grasp, out_of=out_of)
+    try:
+        again = detect_past_hand(wanted)
     except PerceptionObjectNotFound as hidden:  # hidden at this height: another may show it
         found = look_again(where, lambda: _detected(wanted))
         if found is None and not (in_container and _still_there(seen, where)):

@@ -12,10 +12,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from robocram.designators import ObjectDesignator, a, an
-from robocram.execution import perform
-from robocram.execution.failures import PerceptionBlockedByRobot
 from robocram.plans.basic_actions import look_from_above, look_lowering, park_arms
-from robocram.plans.known_robot import current_robot
+from robocram.plans.detect_past_hand import detect_past_hand
 from robocram.plans.pick_object import Held, pick_up_object
 from robocram.tf import PoseStamped
 
@@ -46,16 +44,5 @@ def pick_up(look_target: PoseStamped, object_type: str = "mug") -> PickResult:
 
 
 def _detected(object_type: str) -> ObjectDesignator:
-    """Detect an ``object_type``; where an arm's own link hides it, open the grippers and
-    detect again: a wrist camera's jaw (the SO-101's moving jaw, closed before its camera)
-    swings out of the view, as the pick-up opens it next anyway."""
-    wanted = an.object(type=object_type)
-    try:
-        found: ObjectDesignator = perform(a.motion(type="detecting", object=wanted))
-    except PerceptionBlockedByRobot as blocked:
-        if blocked.arm_parked is None:  # a body link: no gripper moves it
-            raise
-        for arm in current_robot().grasping_arms():
-            perform(a.motion(type="opening", gripper=arm))
-        found = perform(a.motion(type="detecting", object=wanted))
-    return found
+    """Detect an ``object_type``, past the robot's own hand (:func:`detect_past_hand`)."""
+    return detect_past_hand(an.object(type=object_type))

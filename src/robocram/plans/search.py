@@ -35,6 +35,7 @@ from robocram.plans.culprits import blamed, culprit_clause
 from robocram.plans.environment_links import environment_link_pose
 from robocram.plans.errors import SearchExhausted
 from robocram.plans.known_robot import KnownRobot, current_robot
+from robocram.plans.place_looks import look_and_detect
 from robocram.plans.stands import map_pose
 from robocram.tf import PoseStamped
 
@@ -117,19 +118,22 @@ def _look_from_places(
     poses: int,
     log: SearchLog,
     near: Place | None = None,
+    place: Place | None = None,
 ) -> ObjectDesignator | None:
     """Look for ``wanted`` from up to ``poses`` stands that see ``target``; with ``near``,
     from stands near that place (an opened container is seen into over its rim from close
     by: from a metre away an HSR's camera grazed a drawer's side and saw 67 % of the bowl
     in it; from right beside a cabinet a PR2's camera, higher, missed a bowl under the
-    counter top's edge, so these come after the others)."""
+    counter top's edge, so these come after the others). With ``place``, a look the
+    camera cannot have at ``target`` is had round it on that place
+    (:func:`~robocram.plans.place_looks.look_and_detect`)."""
     keys = {"near": (near.environment, near.link)} if near is not None else {}
+    around = (place.environment, place.link) if place is not None else None
     stand = a.location(visible_for=robot.name, target=target.position, **keys)
     for _ in range(poses):
         try:
             perform(a.motion(type="going", target=stand))
-            perform(a.motion(type="looking", target=target))
-            return perform(a.motion(type="detecting", object=wanted))
+            return look_and_detect(wanted, target, around, robot.base_frame())
         except (PlanFailure, DesignatorError) as failure:
             log.failures.append(failure)
             if isinstance(failure, DesignatorError):
@@ -194,7 +198,9 @@ def search(
             seen, target = _look_into(place, wanted, log)
             if seen is not None:
                 return seen
-        seen = _look_from_places(robot, target, wanted, poses_per_place, log)
+        seen = _look_from_places(
+            robot, target, wanted, poses_per_place, log, place=None if opened else place
+        )
         if seen is None and opened:  # over its rim from close by
             seen = _look_from_places(robot, target, wanted, poses_per_place, log, place)
         if seen is not None:

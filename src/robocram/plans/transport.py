@@ -17,12 +17,14 @@ from robocram.designators import ObjectDesignator, an
 from robocram.execution import sub_task
 from robocram.execution.failures import PerceptionObjectNotFound
 from robocram.plans.attempt_log import AttemptLog
-from robocram.plans.basic_actions import detect, look, park_arms
+from robocram.plans.basic_actions import park_arms
 from robocram.plans.container_access import OpenedContainer, close_again, is_container
 from robocram.plans.deliver import PLACE_RETRIES, deliver
 from robocram.plans.deliver import STAND_RETRIES as PLACING_STANDS
 from robocram.plans.fetch import STAND_RETRIES, fetch
+from robocram.plans.known_robot import current_robot
 from robocram.plans.pick_object import Held
+from robocram.plans.place_looks import look_and_detect
 from robocram.plans.search import (
     POSES_PER_PLACE,
     SearchLog,
@@ -68,9 +70,9 @@ def seen_from_here(object: ObjectDesignator | str) -> ObjectDesignator | None:  
     places = candidate_places(str(wanted.get("type")))
     if not places or is_container(places[0].environment, places[0].link):
         return None
+    place = (places[0].environment, places[0].link)
     try:
-        look(place_point(places[0]))
-        return detect(wanted)
+        return look_and_detect(wanted, place_point(places[0]), place, current_robot().base_frame())
     except PerceptionObjectNotFound:
         return None
 

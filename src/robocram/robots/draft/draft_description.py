@@ -42,10 +42,12 @@ from robocram.robots.draft.srdf_arms import srdf_arms
 from robocram.robots.draft.stowing import (
     ABOVE,
     AHEAD,
+    TUCK_ABOVE,
     CameraView,
     looking_pose,
     parked_unclear,
     stowed_pose,
+    tucked_looking_pose,
 )
 from robocram.robots.draft.telescope import Telescope, find_telescopes
 from robocram.robots.draft.torso import find_torso
@@ -216,7 +218,9 @@ def _with_camera(
     ``given`` (or ``inferred``) is judged with the arms parked, as the check does."""
     hands = [arm.end_effector_link for arm in desc.arms.values()]
     sensors = camera_sensors(Path(desc.urdf))
-    carrier = None if given is None else _park_carrier(tree, desc, given, why, doubts)
+    carrier = (
+        None if given is None else _park_carrier(tree, desc, given, why, doubts, tuck=inferred)
+    )
     if carrier is not None:
         desc = replace(desc, arms={**desc.arms, carrier.name: carrier})
     parked = {j: v for arm in desc.arms.values() for j, v in arm.parking.items()}
@@ -361,20 +365,34 @@ def _park_carrier(
     camera: str,
     why: dict[str, str],
     doubts: dict[str, str],
+    tuck: bool = False,
 ) -> ArmDescription | None:
     """The arm carrying the given ``camera`` re-parked to look ahead over the robot (a
-    stowed hand camera sees the robot's own body), or None if no arm carries it."""
+    stowed hand camera sees the robot's own body), or None if no arm carries it. With
+    ``tuck`` (an inferred camera, whose optical frame is then aimed ahead from where the
+    arm parks it), a base that drives parks it tucked over its shoulder where it can:
+    a camera the URDF gives keeps its own axes, and the Donbot's, tucked, looked back."""
     joints = {key: arm.joints or tuple(arm.parking) for key, arm in desc.arms.items()}
     key = carrying_arm(tree, camera, joints)
     if key is None:
         return None
     arm = desc.arms[key]
-    looking = looking_pose(tree.model, tuple(arm.parking), arm.end_effector_link)
+    joints_, wrist = tuple(arm.parking), arm.end_effector_link
+    tucked = None
+    if tuck and desc.drive != "fixed":
+        tucked = tucked_looking_pose(tree.model, joints_, wrist)
+    looking = tucked or looking_pose(tree.model, joints_, wrist)
     if looking is None:
         return arm
+    where = (
+        f"{TUCK_ABOVE} m over the shoulder, no part of the arm ahead of it (a base that "
+        "drives stands close to what it reaches)"
+        if tucked is not None
+        else f"{AHEAD} m ahead of and {ABOVE} m above the shoulder"
+    )
     why[f"arms.{key}.parking"] = (
-        f"it carries the camera: the wrist {AHEAD} m ahead of and {ABOVE} m above the "
-        "shoulder, the hand below it, 1 cm clear of its other links (meshes)"
+        f"it carries the camera: the wrist {where}, the hand below it, 1 cm clear of its "
+        "other links (meshes)"
     )
     doubts.pop(f"arms.{key}.parking", None)
     return replace(arm, parking=looking.values)
