@@ -1,6 +1,6 @@
 """Breakfast for two, then clearing, over seeded variants per robot: success and wall time.
 
-Run: ``.venv/bin/python benchmarks/activity_bench.py [variants] [robots...]`` (defaults 5
+Run: ``.venv/bin/python benchmarks/activity_bench.py [N | A:B] [robots...]`` (defaults 5
 and the PR2, the HSR and Boxy; a robot may be a description file, e.g. the drafted
 ``tests/data/fetch/fetch.py`` and ``tests/data/stretch/stretch.py``). A variant (seeded)
 is a household: which drawer holds the bowls, the cups and the cutlery (one of
@@ -76,10 +76,11 @@ def _timed(scene: EnvironmentScene, action: str, **keys: object) -> tuple[bool, 
     return not why, time.perf_counter() - start, why
 
 
-def run_robot(robot: str, variants: int) -> None:
-    """Print the figures of ``variants`` breakfasts and clearings by ``robot``."""
+def run_robot(robot: str, seeds: range) -> None:
+    """Print the figures of the breakfasts and clearings by ``robot`` of ``seeds``."""
+    variants = len(seeds)
     set_ok, clear_ok, cold, clearing, warm = 0, 0, [], [], []
-    for seed in range(variants):
+    for seed in seeds:
         kept, places = variant(seed)
         scene = breakfast_scene(robot, places=places, kept=kept)
         with scene.world.snapshots.stored_state():
@@ -95,7 +96,7 @@ def run_robot(robot: str, variants: int) -> None:
             f"cleared {'ok' if cleared else why_not}",
             flush=True,
         )
-        if seed == 0:
+        if seed == seeds[0]:
             warm.append(_timed(scene, "setting-table", people=2)[1])
         scene.world.close()
     print(
@@ -107,11 +108,14 @@ def run_robot(robot: str, variants: int) -> None:
 
 
 def main() -> None:
-    variants = int(sys.argv[1]) if len(sys.argv) > 1 else 5
+    """``N`` runs seeds 0 to N - 1; ``A:B`` seeds A to B - 1 (a batch split by hand)."""
+    given = sys.argv[1] if len(sys.argv) > 1 else "5"
+    first, _, last = given.rpartition(":")
+    seeds = range(int(first or 0), int(last))
     robots = tuple(sys.argv[2:]) or ROBOTS
-    print(f"breakfast for two, then clearing: {variants} seeded variants per robot")
+    print(f"breakfast for two, then clearing: seeded variants {seeds.start}-{seeds.stop - 1}")
     for robot in robots:
-        run_robot(robot, variants)
+        run_robot(robot, seeds)
 
 
 if __name__ == "__main__":
