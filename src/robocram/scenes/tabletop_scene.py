@@ -9,22 +9,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from robocram.robots import RobotDescription, load_description
+from robocram.robots import RobotDescription
 from robocram.scenes.placement import (
     TABLE_DEPTH,
-    facing_yaw,
-    placement_arm,
-    table_height,
-    tabletop_placement,
 )
-from robocram.scenes.scene_robot import place_robot
-from robocram.scenes.standing import (
-    LOWEST_TABLE,
-    PEDESTAL_TABLE,
-    stand_on_a_pedestal,
-)
+from robocram.scenes.table_robot import robot_at_a_table
 from robocram.tf import Pose, PoseStamped
-from robocram.tf import quaternion as quat
 from robocram.world import World
 
 
@@ -47,15 +37,8 @@ def tabletop_scene(robot: str | RobotDescription, world: World | None = None) ->
     Raises:
         UnfitRobotError: the robot has no gripper arm, or it cannot reach past its base.
     """
-    desc = load_description(robot)
     world = world if world is not None else World()
-    world.bodies.add_floor()
-    turned = quat.from_euler(0.0, 0.0, facing_yaw(desc))
-    name = place_robot(world, desc, Pose((0.0, 0.0, 0.0), turned))
-    arm = placement_arm(world.robot(name).description)
-    if arm is not None and table_height(world, name, arm) < LOWEST_TABLE:
-        stand_on_a_pedestal(world, name, PEDESTAL_TABLE - table_height(world, name, arm))
-    place = tabletop_placement(world, name)
+    name, place = robot_at_a_table(world, robot)
     height, (mug_x, mug_y), table_x = place.table_height, place.mug_xy, place.table_x
     world.add_box("table", (TABLE_DEPTH, 1.0, height), pose=Pose((table_x, 0.0, height / 2)))
     world.add_item("mug-1", "mug", pose=Pose((mug_x, mug_y, height)))

@@ -14,7 +14,7 @@ import os
 import tempfile
 from pathlib import Path
 
-from robocram.robots import RobotDescription, load_description
+from robocram.robots import RobotDescription
 from robocram.scenes.environment_description import EnvironmentDescription, SurfaceDescription
 from robocram.scenes.environment_scene import (
     EnvironmentScene,
@@ -25,15 +25,9 @@ from robocram.scenes.environment_scene import (
 from robocram.scenes.placement import (
     MUG_INSET,
     TABLE_DEPTH,
-    facing_yaw,
-    placement_arm,
-    table_height,
-    tabletop_placement,
 )
-from robocram.scenes.scene_robot import place_robot
-from robocram.scenes.standing import LOWEST_TABLE, PEDESTAL_TABLE, stand_on_a_pedestal
+from robocram.scenes.table_robot import robot_at_a_table
 from robocram.tf import Pose, PoseStamped
-from robocram.tf import quaternion as quat
 from robocram.world import World
 
 WORKCELL = "workcell"  # the table's object name, the Env of its facts
@@ -77,15 +71,8 @@ def workcell_scene(robot: str | RobotDescription, world: World | None = None) ->
     Raises:
         UnfitRobotError: the robot has no gripper arm, or it cannot reach past its base.
     """
-    desc = load_description(robot)
     world = world if world is not None else World()
-    world.bodies.add_floor()
-    turned = quat.from_euler(0.0, 0.0, facing_yaw(desc))
-    name = place_robot(world, desc, Pose((0.0, 0.0, 0.0), turned))
-    arm = placement_arm(world.robot(name).description)
-    if arm is not None and table_height(world, name, arm) < LOWEST_TABLE:
-        stand_on_a_pedestal(world, name, PEDESTAL_TABLE - table_height(world, name, arm))
-    place = tabletop_placement(world, name)
+    name, place = robot_at_a_table(world, robot)
     height, (mug_x, mug_y) = place.table_height, place.mug_xy
     table_x = mug_x - MUG_INSET + TABLE_DEPTH / 2
     side = max(SPREAD * mug_x, MIN_SPREAD)
