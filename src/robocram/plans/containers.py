@@ -89,6 +89,7 @@ def move_container(name: str, goal: float, arm: str | None, action: str) -> floa
         + "; ".join(str(f) for f in failures),
         environment_part=part.link,
         action=action,
+        reached=failures[-1].reached,  # where the last arm left the part
     )
 
 
