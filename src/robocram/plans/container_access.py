@@ -123,8 +123,8 @@ def _open_from_stands(part: Container, log: AttemptLog, retries: int) -> OpenedC
             park_arms()
         except PlanFailure as failure:
             log.record("open", stand.pose, failure)
-            last = failure
-            if not _open_enough(part, failure):
+            last = _open_on_from_here(part, stand, log) if _moved(failure) else failure
+            if last is not None and not _open_enough(part, last):
                 continue
             with contextlib.suppress(PlanFailure):
                 park_arms()
@@ -135,6 +135,25 @@ def _open_from_stands(part: Container, log: AttemptLog, retries: int) -> OpenedC
     if last is None:
         raise PlanSetupError(f"no stand to open {part.link!r} from (retries={retries})")
     raise last
+
+
+def _moved(failure: PlanFailure) -> bool:
+    """Whether a failed opening left the part moved from closed."""
+    reached = getattr(failure, "reached", None)
+    return isinstance(failure, EnvironmentManipulationImpossible) and bool(reached)
+
+
+def _open_on_from_here(part: Container, stand: HandleStand, log: AttemptLog) -> PlanFailure | None:
+    """Open ``part`` on from where the last roll left the robot and the part, arms parked
+    first (the rolls went on with the arm out where they got); the failure, None if it
+    opened."""
+    try:
+        park_arms()
+        open_container(part.link, arm=stand.arm)
+    except PlanFailure as failure:
+        log.record("open", map_pose(current_robot().base_frame()), failure)
+        return failure
+    return None
 
 
 def _open_enough(part: Container, failure: PlanFailure) -> bool:
