@@ -9,6 +9,7 @@ hold the handle all the way gives the next one.
 
 from __future__ import annotations
 
+import contextlib
 from collections.abc import Iterator
 from dataclasses import dataclass
 
@@ -33,6 +34,7 @@ from robocram.tf import Pose
 OPEN_RETRIES = 6  # stands tried before opening gives up
 TURNED = 0.05  # [rad | m] a neck joint moved this much by looking ahead was turned away
 NEAR = 0.05  # [m] a base this close to the opening stand after opening stood there
+OPEN_ENOUGH = 0.8  # of a part's opening: a failed opening that left it this far open opened it
 # closing failures after which the next stand is tried: the arm could not take the handle,
 # or the base cannot stand where it opened the part (a Boxy's wide base meets the drawer
 # it pulled out, and backed off as it pulled)
@@ -121,14 +123,47 @@ def _open_from_stands(part: Container, log: AttemptLog, retries: int) -> OpenedC
             park_arms()
         except PlanFailure as failure:
             log.record("open", stand.pose, failure)
-            last = failure
-            continue
-        log.record("open", stand.pose, None)
+            last = _open_on_from_here(part, stand, log) if _moved(failure) else failure
+            if last is not None and not _open_enough(part, last):
+                continue
+            with contextlib.suppress(PlanFailure):
+                park_arms()
+        else:
+            log.record("open", stand.pose, None)
         log.opened.append(part.link)
         return OpenedContainer(part, stand, map_pose(current_robot().base_frame()))
     if last is None:
         raise PlanSetupError(f"no stand to open {part.link!r} from (retries={retries})")
     raise last
+
+
+def _moved(failure: PlanFailure) -> bool:
+    """Whether a failed opening left the part moved from closed."""
+    reached = getattr(failure, "reached", None)
+    return isinstance(failure, EnvironmentManipulationImpossible) and bool(reached)
+
+
+def _open_on_from_here(part: Container, stand: HandleStand, log: AttemptLog) -> PlanFailure | None:
+    """Open ``part`` on from where the last roll left the robot and the part, arms parked
+    first (the rolls went on with the arm out where they got); the failure, None if it
+    opened."""
+    try:
+        park_arms()
+        open_container(part.link, arm=stand.arm)
+    except PlanFailure as failure:
+        log.record("open", map_pose(current_robot().base_frame()), failure)
+        return failure
+    return None
+
+
+def _open_enough(part: Container, failure: PlanFailure) -> bool:
+    """Whether a failed opening left ``part`` open by :data:`OPEN_ENOUGH` of its opening:
+    it is open, and it is used (and closed again) as it is. The door stays where the rolls
+    left it (nothing sets it back), and the stands in front of its handle are in its arc
+    now: Boxy's left the fridge's door at 1.18 of 1.40 rad, and no stand opened it further."""
+    if not isinstance(failure, EnvironmentManipulationImpossible) or failure.reached is None:
+        return False
+    return abs(failure.reached) >= OPEN_ENOUGH * abs(part.opened) > 0.0
 
 
 def _looked_ahead() -> bool:

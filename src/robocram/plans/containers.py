@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 from robocram.designators import a
 from robocram.execution import perform
-from robocram.execution.failures import EnvironmentManipulationImpossible, PlanFailure
+from robocram.execution.failures import EnvironmentManipulationImpossible
 from robocram.knowledge.scene_predicates import CONTAINER, CONTAINER_OPENING
 from robocram.logic import current_kb
 from robocram.plans.errors import PlanSetupError
@@ -70,7 +70,7 @@ def move_container(name: str, goal: float, arm: str | None, action: str) -> floa
             f"every arm of {robot.name} holds something ({holding}); put a thing down "
             f"before you {VERBS.get(action, action)} {part.link!r}"
         )
-    failures: list[PlanFailure] = []
+    failures: list[EnvironmentManipulationImpossible] = []
     for choice in arms:
         motion = a.motion(
             type="moving-articulation",
@@ -89,6 +89,7 @@ def move_container(name: str, goal: float, arm: str | None, action: str) -> floa
         + "; ".join(str(f) for f in failures),
         environment_part=part.link,
         action=action,
+        reached=failures[-1].reached,  # where the last arm left the part
     )
 
 

@@ -302,6 +302,7 @@ def move_part(
         "(what to add: a wrist that turns the hand onto the bar, or a stand nearer it)",
         environment_part=joint,
         action="opening" if goal > start else "closing",
+        reached=world.joint_states(part)[joint],
     )
 
 

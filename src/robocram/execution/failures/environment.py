@@ -18,5 +18,6 @@ class EnvironmentManipulationImpossible(HighLevelFailure):
 
     environment_part: str | None = None
     action: str | None = None
+    reached: float | None = None  # [m | rad] where the part was left (a roll moved it part way)
     summary = "the environment manipulation is impossible"
     hint = "check the handle and the joint of the container"
