@@ -218,9 +218,7 @@ def _with_camera(
     ``given`` (or ``inferred``) is judged with the arms parked, as the check does."""
     hands = [arm.end_effector_link for arm in desc.arms.values()]
     sensors = camera_sensors(Path(desc.urdf))
-    carrier = (
-        None if given is None else _park_carrier(tree, desc, given, why, doubts, tuck=inferred)
-    )
+    carrier = None if given is None else _park_carrier(tree, desc, given, why, doubts)
     if carrier is not None:
         desc = replace(desc, arms={**desc.arms, carrier.name: carrier})
     parked = {j: v for arm in desc.arms.values() for j, v in arm.parking.items()}
@@ -365,22 +363,16 @@ def _park_carrier(
     camera: str,
     why: dict[str, str],
     doubts: dict[str, str],
-    tuck: bool = False,
 ) -> ArmDescription | None:
     """The arm carrying the given ``camera`` re-parked to look ahead over the robot (a
-    stowed hand camera sees the robot's own body), or None if no arm carries it. With
-    ``tuck`` (an inferred camera, whose optical frame is then aimed ahead from where the
-    arm parks it), a base that drives parks it tucked over its shoulder where it can:
-    a camera the URDF gives keeps its own axes, and the Donbot's, tucked, looked back."""
+    stowed hand camera sees the robot's own body), or None if no arm carries it."""
     joints = {key: arm.joints or tuple(arm.parking) for key, arm in desc.arms.items()}
     key = carrying_arm(tree, camera, joints)
     if key is None:
         return None
     arm = desc.arms[key]
     joints_, wrist = tuple(arm.parking), arm.end_effector_link
-    tucked = None
-    if tuck and desc.drive != "fixed":
-        tucked = tucked_looking_pose(tree.model, joints_, wrist)
+    tucked = None if desc.drive == "fixed" else tucked_looking_pose(tree.model, joints_, wrist)
     looking = tucked or looking_pose(tree.model, joints_, wrist)
     if looking is None:
         return arm
