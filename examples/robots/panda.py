@@ -44,16 +44,16 @@ def description() -> RobotDescription:
                 # why: mimicked by 1 hand joint(s) (<mimic> in the URDF); fingers and hand links are
                 #   found at load
                 gripper_joints=("panda_finger_joint1",),
-                # why: it carries the camera: the wrist 0.4 m over the shoulder, no part of the arm
-                #   ahead of it (a base that drives stands close to what it reaches), the hand below
-                #   it, 1 cm clear of its other links (meshes)
+                # why: it carries the camera: the wrist 0.2 m over the shoulder, the arm within 0.0
+                #   m ahead of it (a base that drives stands close to what it reaches), the hand
+                #   below it, 1 cm clear of its other links (meshes)
                 parking={
-                    "panda_joint1": 0.666,
-                    "panda_joint2": -1.421,
-                    "panda_joint3": -0.095,
-                    "panda_joint4": -2.275,
-                    "panda_joint5": 0.496,
-                    "panda_joint6": 0.24,
+                    "panda_joint1": 0.691,
+                    "panda_joint2": -1.471,
+                    "panda_joint3": -0.12,
+                    "panda_joint4": -2.425,
+                    "panda_joint5": 0.521,
+                    "panda_joint6": -0.017,
                     "panda_joint7": 0.921,
                 },
             ),

@@ -42,7 +42,7 @@ from robocram.robots.draft.srdf_arms import srdf_arms
 from robocram.robots.draft.stowing import (
     ABOVE,
     AHEAD,
-    TUCK_ABOVE,
+    TUCK_FRONT,
     CameraView,
     looking_pose,
     parked_unclear,
@@ -377,8 +377,8 @@ def _park_carrier(
     if looking is None:
         return arm
     where = (
-        f"{TUCK_ABOVE} m over the shoulder, no part of the arm ahead of it (a base that "
-        "drives stands close to what it reaches)"
+        f"{ABOVE} m over the shoulder, the arm within {TUCK_FRONT} m ahead of it (a base "
+        "that drives stands close to what it reaches)"
         if tucked is not None
         else f"{AHEAD} m ahead of and {ABOVE} m above the shoulder"
     )

@@ -305,8 +305,6 @@ AHEAD = 0.25  # [m] a camera-carrying arm parks its wrist this far ahead of its 
 ABOVE = 0.2  # [m] and this far above it, so that the camera looks over the robot's body
 TUCK_FRONT = 0.0  # [m] tucked, no point of such an arm is farther ahead of its shoulder
 TUCK_SLACK = 0.01  # [m] a tucked pose found may pass that front by this much
-TUCK_ABOVE = 0.4  # [m] tucked, the wrist this far over the shoulder: a camera 0.2 m over
-# it, looking ahead and down from the shoulder, saw the floor 1 m ahead, not a mug on it
 
 
 class _LookingSearch(_Search):
@@ -321,11 +319,10 @@ class _LookingSearch(_Search):
         contacts: SelfContacts,
         ahead: float = AHEAD,
         front: float | None = None,
-        above: float = ABOVE,
     ) -> None:
         super().__init__(model, joints, wrist, contacts)
         shoulder = (self.chain.base * self.chain.chain[0].origin).position
-        self.goal = np.asarray(shoulder) + (ahead, 0.0, above)
+        self.goal = np.asarray(shoulder) + (ahead, 0.0, ABOVE)
         self.front = None if front is None else float(shoulder[0]) + front
 
     def cost(self, values: Sequence[float]) -> float:
@@ -355,9 +352,7 @@ def tucked_looking_pose(
     mobile base's arm parked reaching ahead goes into what the base stands before (the
     Panda's fingers went 0.33 m ahead, into the kitchen's drawers, at every stand that
     reached the mug)."""
-    search = _LookingSearch(
-        model, joints, wrist, model.derived(SelfContacts), 0.0, TUCK_FRONT, TUCK_ABOVE
-    )
+    search = _LookingSearch(model, joints, wrist, model.derived(SelfContacts), 0.0, TUCK_FRONT)
     found = _best(search, seed)
     if found is None or search.front is None:
         return None
