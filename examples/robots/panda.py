@@ -44,17 +44,16 @@ def description() -> RobotDescription:
                 # why: mimicked by 1 hand joint(s) (<mimic> in the URDF); fingers and hand links are
                 #   found at load
                 gripper_joints=("panda_finger_joint1",),
-                # why: it carries the camera: the wrist 0.2 m over the shoulder, the arm within 0.0
-                #   m ahead of it (a base that drives stands close to what it reaches), the hand
-                #   below it, 1 cm clear of its other links (meshes)
+                # why: it carries the camera: the wrist 0.25 m ahead of and 0.2 m above the
+                #   shoulder, the hand below it, 1 cm clear of its other links (meshes)
                 parking={
-                    "panda_joint1": 0.691,
-                    "panda_joint2": -1.471,
-                    "panda_joint3": -0.12,
-                    "panda_joint4": -2.425,
-                    "panda_joint5": 0.521,
-                    "panda_joint6": -0.017,
-                    "panda_joint7": 0.921,
+                    "panda_joint1": -2.498,
+                    "panda_joint2": 0.997,
+                    "panda_joint3": 2.838,
+                    "panda_joint4": -2.847,
+                    "panda_joint5": 1.173,
+                    "panda_joint6": 2.514,
+                    "panda_joint7": 0.236,
                 },
             ),
         },

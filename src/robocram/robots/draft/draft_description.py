@@ -42,12 +42,10 @@ from robocram.robots.draft.srdf_arms import srdf_arms
 from robocram.robots.draft.stowing import (
     ABOVE,
     AHEAD,
-    TUCK_FRONT,
     CameraView,
     looking_pose,
     parked_unclear,
     stowed_pose,
-    tucked_looking_pose,
 )
 from robocram.robots.draft.telescope import Telescope, find_telescopes
 from robocram.robots.draft.torso import find_torso
@@ -371,20 +369,12 @@ def _park_carrier(
     if key is None:
         return None
     arm = desc.arms[key]
-    joints_, wrist = tuple(arm.parking), arm.end_effector_link
-    tucked = None if desc.drive == "fixed" else tucked_looking_pose(tree.model, joints_, wrist)
-    looking = tucked or looking_pose(tree.model, joints_, wrist)
+    looking = looking_pose(tree.model, tuple(arm.parking), arm.end_effector_link)
     if looking is None:
         return arm
-    where = (
-        f"{ABOVE} m over the shoulder, the arm within {TUCK_FRONT} m ahead of it (a base "
-        "that drives stands close to what it reaches)"
-        if tucked is not None
-        else f"{AHEAD} m ahead of and {ABOVE} m above the shoulder"
-    )
     why[f"arms.{key}.parking"] = (
-        f"it carries the camera: the wrist {where}, the hand below it, 1 cm clear of its "
-        "other links (meshes)"
+        f"it carries the camera: the wrist {AHEAD} m ahead of and {ABOVE} m above the "
+        "shoulder, the hand below it, 1 cm clear of its other links (meshes)"
     )
     doubts.pop(f"arms.{key}.parking", None)
     return replace(arm, parking=looking.values)

@@ -303,8 +303,6 @@ def drafted_parking(model: RobotModel, joints: Sequence[str], wrist: str) -> Dra
 
 AHEAD = 0.25  # [m] a camera-carrying arm parks its wrist this far ahead of its shoulder
 ABOVE = 0.2  # [m] and this far above it, so that the camera looks over the robot's body
-TUCK_FRONT = 0.0  # [m] tucked, no point of such an arm is farther ahead of its shoulder
-TUCK_SLACK = 0.01  # [m] a tucked pose found may pass that front by this much
 
 
 class _LookingSearch(_Search):
@@ -312,49 +310,23 @@ class _LookingSearch(_Search):
     hand hanging below the wrist (out of the camera's view), above the floor."""
 
     def __init__(
-        self,
-        model: RobotModel,
-        joints: Sequence[str],
-        wrist: str,
-        contacts: SelfContacts,
-        ahead: float = AHEAD,
-        front: float | None = None,
+        self, model: RobotModel, joints: Sequence[str], wrist: str, contacts: SelfContacts
     ) -> None:
         super().__init__(model, joints, wrist, contacts)
         shoulder = (self.chain.base * self.chain.chain[0].origin).position
-        self.goal = np.asarray(shoulder) + (ahead, 0.0, ABOVE)
-        self.front = None if front is None else float(shoulder[0]) + front
+        self.goal = np.asarray(shoulder) + (AHEAD, 0.0, ABOVE)
 
     def cost(self, values: Sequence[float]) -> float:
         points = self.points(values)
         wrist = self.chain.poses(values)[-1].position
         low = np.maximum(FLOOR_CLEARANCE - points[:, 2], 0.0).sum()
         hand = np.maximum(points[-len(self.hand) :, 2] - wrist[2], 0.0).sum()
-        out = 0.0 if self.front is None else np.maximum(points[:, 0] - self.front, 0.0).sum()
-        return float(np.linalg.norm(np.subtract(wrist, self.goal)) + 2.0 * low + hand + 2.0 * out)
+        return float(np.linalg.norm(np.subtract(wrist, self.goal)) + 2.0 * low + hand)
 
 
 def looking_pose(
-    model: RobotModel, joints: Sequence[str], wrist: str, seed: int = 0, ahead: float = AHEAD
-) -> Stowed | None:
-    """A parking pose for an arm whose wrist carries the camera (see
-    :class:`_LookingSearch`; its wrist ``ahead`` [m] of the shoulder), touching nothing, or
-    None; within limits, to 3 decimals."""
-    search = _LookingSearch(model, joints, wrist, model.derived(SelfContacts), ahead)
-    return _best(search, seed)
-
-
-def tucked_looking_pose(
     model: RobotModel, joints: Sequence[str], wrist: str, seed: int = 0
 ) -> Stowed | None:
-    """A looking pose (:func:`looking_pose`) with the wrist over the shoulder and no point
-    of the arm more than :data:`TUCK_FRONT` ahead of it, or None if there is none: a
-    mobile base's arm parked reaching ahead goes into what the base stands before (the
-    Panda's fingers went 0.33 m ahead, into the kitchen's drawers, at every stand that
-    reached the mug)."""
-    search = _LookingSearch(model, joints, wrist, model.derived(SelfContacts), 0.0, TUCK_FRONT)
-    found = _best(search, seed)
-    if found is None or search.front is None:
-        return None
-    ahead = float(search.points(list(found.values.values()))[:, 0].max())
-    return found if ahead <= search.front + TUCK_SLACK else None
+    """A parking pose for an arm whose wrist carries the camera (see
+    :class:`_LookingSearch`), touching nothing, or None; within limits, to 3 decimals."""
+    return _best(_LookingSearch(model, joints, wrist, model.derived(SelfContacts)), seed)
