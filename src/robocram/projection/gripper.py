@@ -25,6 +25,7 @@ releases, moves nothing and holds what its tool frame touches (``suction.py``).
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Collection
 
 from robocram.execution import checkpoint
@@ -46,6 +47,7 @@ from robocram.tf import Vector3
 from robocram.world import WorldObject
 
 TOUCH = 1e-3  # [m] a link this close to an object touches it
+CLOSED_GAP = 1e-3  # [m] fingers closer than this when closed meet: nothing is between them
 OPPOSED = -0.3  # cos: two contact normals over ~107 degrees apart squeeze the object (three
 # fingers spaced 120 degrees around an object do)
 CLOSING_STEPS = 20  # steps from the current opening to closed
@@ -405,17 +407,38 @@ def _closed_round_thin(
     """Closed fully on a wall thinner than the closed fingers' gap (a bowl's rim, 6 mm,
     in a Boxy's hand, whose fingers stop 6.5 mm apart): the first of ``candidates`` one
     finger touches and the other side comes within the hand's bound of, as
-    :func:`_held_between` holds an object the closing stopped on; None if none."""
+    :func:`_held_between` holds an object the closing stopped on; None if none, or if the
+    closed fingers meet (a Panda's, closed beside a mug's handle, held nothing)."""
     states = robot.world.joint_states(robot.name)
     start = {j: states[j] for j in gripper_joints(robot, arm)}
     try:
+        opposite = _opposite_fingers(robot, arm, links)
         _probe(robot, arm, 0.0)
+        if not opposite or robot.world.contacts.self_contacts(robot.name, opposite, CLOSED_GAP):
+            return None  # closed fingers that meet hold nothing thin between them (a Panda's)
         for obj in candidates:
             if _touching(robot, links, obj) and _squeezed(robot, links, obj, HAND_CONTACT_DEPTH):
                 return 0.0, obj, _touching(robot, links, obj)
         return None
     finally:
         robot.world.set_joint_states(robot.name, start)
+
+
+def _opposite_fingers(robot: ProjectedRobot, arm: str, links: set[str]) -> list[LinkPair]:
+    """The pairs of ``links`` that both move and move apart as the gripper opens (fingers
+    on opposite sides), by more than :data:`CLOSED_GAP`; the gripper is left open."""
+    world = robot.world
+    _probe(robot, arm, 0.0)
+    closed = {link: world.link_pose(robot.name, link).position for link in links}
+    _probe(robot, arm, 1.0)
+    opened = {link: world.link_pose(robot.name, link).position for link in links}
+    names = sorted(link for link in links if math.dist(opened[link], closed[link]) > CLOSED_GAP)
+    return [
+        (a, b)
+        for i, a in enumerate(names)
+        for b in names[i + 1 :]
+        if math.dist(opened[a], opened[b]) - math.dist(closed[a], closed[b]) > CLOSED_GAP
+    ]
 
 
 def _closing_stop(
