@@ -13,7 +13,7 @@ from robocram.designators import an
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.bringing import Visit, find, usual_place
 from robocram.plans.fetch import fetch
-from robocram.plans.pick_object import pick_up_object
+from robocram.plans.pick_object import Held, pick_up_object
 from robocram.plans.table_arrangement import STANDARD_SETTING, spots, table_with_seats
 from robocram.plans.table_trips import TableSetting, deliver_to_spot
 from robocram.projection import simulated_robot
@@ -34,6 +34,12 @@ def _drawer_top(world: World) -> float:
     kitchen = world.object("kitchen")
     cid = world.physics.client()
     return float(pybullet.getAABB(kitchen.body_id, kitchen.link_index[BOWLS], cid)[1][2])
+
+
+def _fetched_bowl(log: AttemptLog) -> Held:
+    """bowl-1 found where it is kept (its drawer opened) and fetched, as setting does."""
+    seen, opened = find(an.object(type="bowl", name="bowl-1"), Visit(usual_place("bowl")), log)
+    return fetch(seen, log=log, opened=opened)
 
 
 def test_boxys_hand_closed_round_a_bowls_thin_rim_holds_the_bowl() -> None:
@@ -77,11 +83,7 @@ def test_boxy_takes_the_bowl_beside_the_drawers_wall_facing_its_far_rim() -> Non
     try:
         bowl = world.object("bowl-1").body_id
         with simulated_robot(world, scene.robot):
-            log = AttemptLog()
-            seen, opened = find(
-                an.object(type="bowl", name="bowl-1"), Visit(usual_place("bowl")), log
-            )
-            held = fetch(seen, log=log, opened=opened)
+            held = _fetched_bowl(AttemptLog())
         assert held.object_name == "bowl-1"
         low, _ = pybullet.getAABB(bowl, physicsClientId=cid)
         assert low[2] > _drawer_top(world)  # out of the drawer
@@ -107,10 +109,7 @@ def test_boxy_puts_the_bowl_it_holds_before_its_chest_on_the_table_from_a_reach_
             done = TableSetting(table_with_seats(None))
             bowls = [s for s in spots(done.table, 2, STANDARD_SETTING, ()) if s.type == "bowl"]
             spot = bowls[1]  # the far setting's (the near one takes it held so)
-            seen, opened = find(
-                an.object(type="bowl", name="bowl-1"), Visit(usual_place("bowl")), done.log
-            )
-            held = fetch(seen, log=done.log, opened=opened)
+            held = _fetched_bowl(done.log)
             # carried before its chest, every stand holding it so over the spot put the
             # other, parked hand into the table; a stand the arm reaches the spot from does
             deliver_to_spot(held, spot, done)
