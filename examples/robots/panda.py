@@ -26,10 +26,10 @@ def description() -> RobotDescription:
         urdf=URDF,
         # why: the URDF's root link: the robot's base
         base_frame="panda_link0",
-        # why: no driven wheels in the URDF: the default
-        # TODO doubt: holonomic assumed; say 'differential' for two wheels on one axle, 'fixed' for
-        #   a base that stays
-        base_type="holonomic",
+        # why: one chain of 7 joints ending in a hand of 2 fingers, on a 0.23 m mount, no wheels,
+        #   legs, head or second arm: a lone arm
+        # TODO doubt: say 'holonomic' (or 'differential') if the arm rides on a mobile base
+        base_type="fixed",
         # why: one gripper-like end
         arms={
             "arm": ArmDescription(

@@ -6,8 +6,10 @@ Fetch, TIAGo). Wheels on steering joints (the PR2's casters, the HSR's turning d
 or four fixed wheels (mecanum, TIAGo Pro's) drive any way: holonomic. A lone arm is
 fixed: a root link called ``world`` (the URDF bolts it there; unless a link is named like
 a mobile base, as Armar6's platform), or one chain of joints with no wheels on a mount no
-wider than :data:`MOUNT` (a Kinova, an SO-100). Any other URDF with no wheels says
-nothing; the draft keeps the holonomic default and marks the doubt.
+wider than :data:`MOUNT` (a Kinova, an SO-100), the chain ending in one joint or in the
+fingers of one hand (a Panda's two fingers: no second arm, head or leg branches off it).
+Any other URDF with no wheels says nothing; the draft keeps the holonomic default and
+marks the doubt.
 """
 
 from __future__ import annotations
@@ -29,6 +31,7 @@ COAXIAL = 0.01  # [m] two wheel origins this close to one axis line share the ax
 MIN_TRACK = 0.1  # [m] between the wheels of one axle
 LOW = 0.3  # [m] a wheel's axle is at most this high over the lowest link (the floor)
 MOUNT = 0.3  # [m] a lone arm's root is no wider than this: an arm's mount, not a platform
+HAND = 0.25  # [m] a lone arm's fingers: every link they move starts this near its wrist
 MOBILE_WORDS = ("platform", "mobile", "omni", "wheel", "caster", "footprint")  # a link so
 # named is a mobile base, even under a root called 'world' (Armar6's platform)
 
@@ -130,21 +133,51 @@ def find_base_drive(tree: ModelTree) -> BaseDrive:
     return BaseDrive("holonomic", "no driven wheels in the URDF: the default", doubt)
 
 
+def _hand_chain(tree: ModelTree, movable: list[Joint]) -> tuple[list[Joint], int] | None:
+    """The movable joints every leaf joint hangs from, root first, and how many fingers
+    branch off the last of them; None unless the branches are one hand's fingers (each
+    link they move starts within :data:`HAND` of the chain's last link: a second arm or a
+    head branching off a torso reaches farther)."""
+    leaves = [j for j in movable if not any(k.movable for k in tree.subtree_joints(j.child))]
+    chains = [tree.movable_ancestors(leaf.child) for leaf in leaves]
+    common: list[Joint] = []
+    for joints in zip(*chains, strict=False):
+        if len({joint.name for joint in joints}) != 1:
+            break
+        common.append(joints[0])
+    if not common:
+        return None
+    names = {joint.name for joint in common}
+    fingers = [joint for joint in movable if joint.name not in names]
+    poses = link_poses(tree.model)
+    wrist = np.asarray(poses[common[-1].child].position)
+    for joint in fingers:
+        if np.linalg.norm(np.asarray(poses[joint.child].position) - wrist) > HAND:
+            return None
+    return common, len(leaves) if fingers else 0
+
+
 def _lone_arm(tree: ModelTree, body: set[str]) -> str | None:
     """Why the robot is an arm fixed where it stands, or None: its root link is called
     ``world`` (and no link is named like a mobile base), or its movable joints form one
-    chain from a mount no wider than :data:`MOUNT` (a platform under it would be a mobile
-    base the URDF does not drive)."""
+    chain, ending in one joint or in one hand's fingers, from a mount no wider than
+    :data:`MOUNT` (a platform under it would be a mobile base the URDF does not drive)."""
     model = tree.model
     mobile = [k for k in model.links if any(w in k.lower() for w in MOBILE_WORDS)]
     if model.root_link.lower() == "world" and not mobile:
         return "the URDF's root link is 'world': the robot is fixed to it"
     movable = [j for j in model.joints.values() if j.movable]
-    leaves = [j for j in movable if not any(k.movable for k in tree.subtree_joints(j.child))]
-    if len(leaves) != 1 or len(tree.movable_ancestors(leaves[0].child)) != len(movable):
+    found = _hand_chain(tree, movable)
+    if found is None:
         return None
+    chain, fingers = found
     boxes = [box for link in body if (box := link_box(model.link(link))) is not None]
     width = max((max(h[0] - l[0], h[1] - l[1]) for l, h in boxes), default=0.0)
     if width > MOUNT:
         return None
-    return f"one chain of {len(movable)} joints on a {width:.2f} m mount, no wheels: a lone arm"
+    if not fingers:
+        return f"one chain of {len(chain)} joints on a {width:.2f} m mount, no wheels: a lone arm"
+    return (
+        f"one chain of {len(chain)} joints ending in a hand of {fingers} fingers, on a "
+        f"{width:.2f} m mount, no wheels, legs, head or second arm: a lone arm"
+    )
