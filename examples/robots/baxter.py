@@ -26,10 +26,9 @@ def description() -> RobotDescription:
         urdf=URDF,
         # why: the URDF's root link: the robot's base
         base_frame="base",
-        # why: no driven wheels in the URDF: the default
-        # TODO doubt: holonomic assumed; say 'differential' for two wheels on one axle, 'fixed' for
-        #   a base that stays
-        base_type="holonomic",
+        # why: it stands on pedestal, rigid with its root, and has no driven wheels: fixed
+        # TODO doubt: say 'holonomic' (or 'differential') if the pedestal rolls on driven wheels
+        base_type="fixed",
         # why: two alike arms 1.824 m apart (left: larger y)
         arms={
             "right": ArmDescription(

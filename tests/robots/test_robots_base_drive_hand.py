@@ -63,3 +63,21 @@ def test_two_arms_or_a_wide_platform_stay_holonomic(branch_length: float, mount:
     kind, why = _drive(_urdf(branch_length, mount))
     assert kind == "holonomic"
     assert "the default" in why
+
+
+def _on_a_pedestal(stand: str) -> str:
+    """Two arms off a torso (no lone arm), the torso rigid on a link named ``stand``."""
+    urdf = _urdf(branch_length=0.5)
+    extra = (
+        f'<link name="{stand}">{BOX.format(s=0.6)}</link><joint name="stand_fixed" '
+        f'type="fixed"><parent link="mount"/><child link="{stand}"/></joint></robot>'
+    )
+    return urdf.replace("</robot>", extra)
+
+
+def test_a_robot_on_a_pedestal_is_fixed_unless_a_link_says_mobile_base() -> None:
+    """Baxter stands on its ``pedestal``; a link named like a mobile base overrides it."""
+    kind, why = _drive(_on_a_pedestal("pedestal"))
+    assert kind == "fixed"
+    assert "stands on pedestal" in why
+    assert _drive(_on_a_pedestal("pedestal_mobile_base"))[0] == "holonomic"

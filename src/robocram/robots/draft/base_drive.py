@@ -8,8 +8,9 @@ fixed: a root link called ``world`` (the URDF bolts it there; unless a link is n
 a mobile base, as Armar6's platform), or one chain of joints with no wheels on a mount no
 wider than :data:`MOUNT` (a Kinova, an SO-100), the chain ending in one joint or in the
 fingers of one hand (a Panda's two fingers: no second arm, head or leg branches off it).
-Any other URDF with no wheels says nothing; the draft keeps the holonomic default and
-marks the doubt.
+A body with no wheels standing on a link named a pedestal, rigid with its root, is fixed
+too (Baxter's; unless a link is named like a mobile base). Any other URDF with no wheels
+says nothing; the draft keeps the holonomic default and marks the doubt.
 """
 
 from __future__ import annotations
@@ -32,6 +33,7 @@ MIN_TRACK = 0.1  # [m] between the wheels of one axle
 LOW = 0.3  # [m] a wheel's axle is at most this high over the lowest link (the floor)
 MOUNT = 0.3  # [m] a lone arm's root is no wider than this: an arm's mount, not a platform
 HAND = 0.25  # [m] a lone arm's fingers: every link they move starts this near its wrist
+PEDESTAL_WORDS = ("pedestal",)  # a link so named, rigid with the root, is the robot's stand
 MOBILE_WORDS = ("platform", "mobile", "omni", "wheel", "caster", "footprint")  # a link so
 # named is a mobile base, even under a root called 'world' (Armar6's platform)
 
@@ -126,11 +128,27 @@ def find_base_drive(tree: ModelTree) -> BaseDrive:
         why = f"{len(fixed)} wheels on fixed axles ({names}): mecanum wheels drive any way"
         doubt = "skid-steered wheels would not: then say base_type='differential'"
         return BaseDrive("holonomic", why, doubt)
+    pedestal = _pedestal(tree, body)
+    if pedestal is not None:
+        doubt = "say 'holonomic' (or 'differential') if the pedestal rolls on driven wheels"
+        return BaseDrive("fixed", pedestal, doubt)
     doubt = (
         "holonomic assumed; say 'differential' for two wheels "
         "on one axle, 'fixed' for a base that stays"
     )
     return BaseDrive("holonomic", "no driven wheels in the URDF: the default", doubt)
+
+
+def _pedestal(tree: ModelTree, body: set[str]) -> str | None:
+    """Why the robot stands on a pedestal, or None: a link rigid with the root is named
+    like one and none is named like a mobile base (the caller found no driven wheels)."""
+    model = tree.model
+    if any(any(w in k.lower() for w in MOBILE_WORDS) for k in model.links):
+        return None
+    stands = sorted(k for k in body if any(w in k.lower() for w in PEDESTAL_WORDS))
+    if not stands:
+        return None
+    return f"it stands on {stands[0]}, rigid with its root, and has no driven wheels: fixed"
 
 
 def _hand_chain(tree: ModelTree, movable: list[Joint]) -> tuple[list[Joint], int] | None:
