@@ -1,7 +1,8 @@
 """A robot whose base is fixed carries things across its workcell with the kitchen's plan.
 
-The Z1 (a lone arm of ``examples/robots``) runs the same ``transport`` action the mobile
-robots run in the kitchen: no stand but where it is mounted. PyBullet judges: where the
+The Z1 and the Panda (lone arms of ``examples/robots``; the Panda's draft is fixed since
+zoo13: one chain ending in its hand's two fingers) run the same ``transport`` action the
+mobile robots run in the kitchen: no stand but where it is mounted. PyBullet judges: where the
 mug and the bowl end up, and that the robot's base, the pedestal and the table stayed.
 """
 
@@ -19,7 +20,7 @@ from robocram.projection import simulated_robot
 from robocram.robot_check import description_from
 from robocram.scenes import workcell_scene, workcell_spots
 
-Z1 = Path(__file__).resolve().parents[2] / "examples" / "robots" / "z1.py"
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "robots"
 PLACED = 0.02  # [m] an item put down lies this near its spot, across the table
 SETTLED = 0.01  # [m] and as high as it rested before, within this (it stands, not lies)
 STILL = 1e-6  # [m] what is not carried does not move
@@ -30,8 +31,9 @@ def _position(world_id: int, body: int) -> tuple[float, float, float]:
     return (float(position[0]), float(position[1]), float(position[2]))
 
 
-def test_a_lone_arm_carries_the_mug_then_the_bowl_across_its_table() -> None:
-    scene = workcell_scene(description_from(str(Z1)))
+@pytest.mark.parametrize("robot", ["z1", "panda"])
+def test_a_lone_arm_carries_the_mug_then_the_bowl_across_its_table(robot: str) -> None:
+    scene = workcell_scene(description_from(str(EXAMPLES / f"{robot}.py")))
     world = scene.world
     try:
         assert world.robot(scene.robot).description.drive == "fixed"
