@@ -126,8 +126,9 @@ def _start_contacts(robot: ProjectedRobot, arm: str) -> set[LinkPair]:
     audit holds the fingers to the hand's bound, not to a stranger's 1 mm."""
     links = _squeezing_links(robot, arm)
     found: set[LinkPair] = set()
-    for name in sorted(_touched_now(robot, links)):
-        found |= _touching(robot, links, robot.world.object(name))
+    for obj in robot.world:
+        if obj.name != robot.name:  # the hand's links alone: the whole robot costs ~10x
+            found |= _touching(robot, links, obj)
     return found
 
 
@@ -180,15 +181,6 @@ def close_gripper(robot: ProjectedRobot, arm: str) -> dict[str, float]:
             raise
         fraction, _, touching = found
         return _move_to(robot, arm, fraction, touching)
-
-
-def _touched_now(robot: ProjectedRobot, links: set[str]) -> set[str]:
-    """The objects other than the robot that ``links`` touch as the gripper is now."""
-    return {
-        p.obj_b
-        for p in robot.world.contacts.contact_points(robot.name, None, None, None, TOUCH)
-        if p.link_a in links and p.distance <= TOUCH and p.obj_b != robot.name
-    }
 
 
 def set_gripper(robot: ProjectedRobot, arm: str, position: float) -> dict[str, float]:
