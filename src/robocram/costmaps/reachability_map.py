@@ -28,7 +28,7 @@ from robocram.costmaps.batch_fk import batch_frame_poses
 from robocram.costmaps.grasps import approach_axis
 from robocram.kinematics import arm_joints
 from robocram.kinematics.robot_kinematics import robot_kinematics
-from robocram.robots import RobotDescription, link_pose, load_description
+from robocram.robots import RobotDescription, RobotModel, link_pose, load_description
 from robocram.robots.disk_cache import cache_dir
 from robocram.robots.link_centre import link_box
 from robocram.tf import Pose
@@ -131,6 +131,15 @@ def base_bottom(desc: RobotDescription) -> float:
     assert model is not None
     if loaded.drive == "fixed":
         return -RADIUS_MAX
+    lowest = model.derived(_lowest_point)
+    return (
+        round(math.floor(lowest / HEIGHT_STEP) * HEIGHT_STEP, 3) if lowest < -HEIGHT_STEP else 0.0
+    )
+
+
+def _lowest_point(model: RobotModel) -> float:
+    """[m] The lowest corner of any link's box in the base frame, at most 0 (kept with the
+    model: every map look-up keys on it, and it walks each link's chain)."""
     lowest = 0.0
     for name, link in model.links.items():
         box = link_box(link)
@@ -140,9 +149,7 @@ def base_bottom(desc: RobotDescription) -> float:
         (x0, y0, z0), (x1, y1, z1) = box
         for corner in itertools.product((x0, x1), (y0, y1), (z0, z1)):
             lowest = min(lowest, (pose * Pose(corner)).position[2])
-    return (
-        round(math.floor(lowest / HEIGHT_STEP) * HEIGHT_STEP, 3) if lowest < -HEIGHT_STEP else 0.0
-    )
+    return lowest
 
 
 def _smoothed(counts: NDArray[np.float64]) -> NDArray[np.float64]:
