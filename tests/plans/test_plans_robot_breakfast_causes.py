@@ -50,6 +50,24 @@ FETCH_ARM_IN_DRAWER = {
     "r_gripper_finger_joint": 0.05,
     "l_gripper_finger_joint": 0.05,
 }
+CUPS = "east_drawers_1_drawer_3"  # a household's cups drawer (activity_bench seeds 4 and 5)
+# the Fetch as it stood after putting the second cup back into that drawer, opened 0.4 m:
+# the base at the drawer's front corner, turned 41 degrees to it, the open hand in it
+FETCH_BESIDE_CUPS = Pose((1.81380, 1.29116, 0.041), (0.0, 0.0, 0.35968, 0.93308))
+FETCH_HAND_IN_CUPS = {
+    "torso_lift_joint": 0.17745,
+    "head_pan_joint": -0.03274,
+    "head_tilt_joint": 0.81499,
+    "shoulder_pan_joint": 0.53043,
+    "shoulder_lift_joint": -0.62294,
+    "upperarm_roll_joint": -7.31917,
+    "elbow_flex_joint": 1.69038,
+    "forearm_roll_joint": 4.06521,
+    "wrist_flex_joint": -1.06972,
+    "wrist_roll_joint": 6.15626,
+    "r_gripper_finger_joint": 0.05,
+    "l_gripper_finger_joint": 0.05,
+}
 FETCH_PARKED = {
     "shoulder_pan_joint": 0.105,
     "shoulder_lift_joint": 1.198,
@@ -296,5 +314,36 @@ def test_the_stretch_opens_the_fridge_looking_ahead_after_looking_down_into_a_dr
         head = world.object(scene.robot)
         tilt = pybullet.getJointState(head.body_id, head.joint_index["joint_head_tilt"], cid)[0]
         assert tilt == pytest.approx(0.0, abs=0.05)  # it looked ahead
+    finally:
+        world.close()
+
+
+def test_the_fetch_lifts_its_hand_out_of_a_drawer_when_backing_off_a_little_did_not_help() -> None:
+    scene = breakfast_scene(FETCH)
+    world = scene.world
+    cid = world.physics.client()
+    try:
+        world.set_joint_states("kitchen", {f"{CUPS}_joint": 0.4})
+        world.set_pose(scene.robot, FETCH_BESIDE_CUPS)
+        world.set_joint_states(scene.robot, FETCH_PARKED)
+        kitchen, robot = world.object("kitchen"), world.object(scene.robot)
+        drawer = kitchen.link_index[CUPS]
+        pybullet.performCollisionDetection(cid)
+        # parked where it stands, the elbow would be in the drawer
+        assert pybullet.getClosestPoints(
+            robot.body_id, kitchen.body_id, 0.0, linkIndexB=drawer, physicsClientId=cid
+        )
+        world.set_joint_states(scene.robot, FETCH_HAND_IN_CUPS)
+        with simulated_robot(world, scene.robot):
+            park_arms()
+        for joint, parked in FETCH_PARKED.items():
+            value = pybullet.getJointState(robot.body_id, robot.joint_index[joint], cid)[0]
+            off = math.remainder(value - parked, 2 * math.pi)
+            assert off == pytest.approx(0.0, abs=0.01), joint
+        opened = pybullet.getJointState(kitchen.body_id, kitchen.joint_index[f"{CUPS}_joint"], cid)
+        assert opened[0] == pytest.approx(0.4, abs=0.005)  # not pushed by the arm
+        assert not pybullet.getClosestPoints(
+            robot.body_id, kitchen.body_id, 0.0, physicsClientId=cid
+        )
     finally:
         world.close()

@@ -33,7 +33,7 @@ LOOK_HEIGHTS = (0.5, 0.25, 0.0)
 AHEAD = (1.0, 0.0, 0.0)  # the direction a robot looks in to drive, in its base frame
 PARKING_BACKOFFS = ((-0.15, 0.0), (-0.45, 0.0), (0.0, 0.2), (0.0, -0.2), (-0.2, 0.2), (-0.2, -0.2))
 PARKING_LIFTS = (0.3, 0.15)  # [m] the hand rises this far (the first it can) when no backoff
-# could be driven: an arm low over an open drawer drags through its wall
+# helped: an arm low over an open drawer drags through its wall
 
 
 def navigate(target: object) -> Any:
@@ -81,9 +81,11 @@ def _park(robot: KnownRobot, arm: str, states: list[list[object]]) -> None:
     hit what the robot stands at (a table the hand just put something on, a wall beside
     it), move the base away and try again: back first, then to either side
     (:data:`PARKING_BACKOFFS`); a move that cannot be driven is skipped. When no move
-    could be driven (the hand, low in an open drawer, would be dragged through its wall),
-    the hand rises first (:data:`PARKING_LIFTS`) and the moves are tried again. The
-    parking failure is raised when every move was tried."""
+    helped, the hand rises (:data:`PARKING_LIFTS`) and the moves are tried again: a hand
+    low in an open drawer is dragged through its wall by every move, or by all but a short
+    one that leaves the base too near the drawer (a Fetch beside a drawer it put a cup
+    into: 15 cm back, the parked elbow still met it). The parking failure is raised when
+    every move was tried."""
     try:
         perform(a.motion(type="moving-arm-joints", arm=arm, configuration=states))
         return
@@ -95,33 +97,31 @@ def _park(robot: KnownRobot, arm: str, states: list[list[object]]) -> None:
             return
         except ManipulationPathBlocked as failure:
             blocked = failure
-    still, driven = _park_backing_off(robot, arm, states, blocked)
-    if still is not None and not driven and _lift_hand(robot, arm):
-        still, _ = _park_backing_off(robot, arm, states, still)
+    still = _park_backing_off(robot, arm, states, blocked)
+    if still is not None and _lift_hand(robot, arm):
+        still = _park_backing_off(robot, arm, states, still)
     if still is not None:
         raise still
 
 
 def _park_backing_off(
     robot: KnownRobot, arm: str, states: list[list[object]], blocked: ManipulationPathBlocked
-) -> tuple[ManipulationPathBlocked | None, bool]:
+) -> ManipulationPathBlocked | None:
     """Try parking after each of :data:`PARKING_BACKOFFS` (from where the base stands now);
-    the last parking failure (None: parked) and whether any move could be driven."""
+    the last parking failure (None: parked)."""
     origin = transform_pose(PoseStamped(robot.base_frame()), "map").pose
-    driven = False
     for forward, left in PARKING_BACKOFFS:
         moved = origin * Pose((forward, left, 0.0))
         try:
             perform(a.motion(type="going", target=PoseStamped.from_pose("map", moved)))
         except NavigationLowLevelFailure:
             continue
-        driven = True
         try:
             perform(a.motion(type="moving-arm-joints", arm=arm, configuration=states))
-            return None, True
+            return None
         except ManipulationPathBlocked as failure:
             blocked = failure
-    return blocked, driven
+    return blocked
 
 
 def _lift_hand(robot: KnownRobot, arm: str) -> bool:
