@@ -14,6 +14,7 @@ it was put.
 
 from __future__ import annotations
 
+import contextlib
 import math
 
 from robocram.designators import LocationDesignator, ObjectDesignator, a
@@ -36,6 +37,7 @@ CARRY_HEIGHTS = (0.10, 0.05)  # [m] the object comes in from this far above, fir
 RETREATS = (0.10, 0.05)  # [m] the open hand backs off this far towards the wrist, or less
 SETTLE = 0.15  # [s] simulated at most after letting go: the 7 mm drop takes 0.04 s
 MAX_SETTLE_DROP = 0.03  # [m] it may sink this much (the gap, contact) and still rest
+MOVED = 1e-3  # [m] a hand moved less than this by a failed put is where it started
 TURNS = (0.0, math.pi / 2, -math.pi / 2, math.pi)  # [rad] object turns tried in order
 
 
@@ -105,6 +107,19 @@ def _retreat(robot: KnownRobot, held: Held) -> None:
     park_arms(held.arm)
 
 
+def _back_to(held: Held, start: Pose) -> None:
+    """Take the hand, still holding the object, back to ``start`` where a put failed in
+    every turn: each turn's approach may have got it over the spot, deep in an open drawer
+    under the counter's top, and the robot would then drive to its next stand with it
+    there (the PR2's every drive was blocked at its start). Best effort: where the way
+    back is blocked, the hand stays and the drive says so."""
+    here = transform_pose(PoseStamped(held.tool_frame), "map").pose
+    if math.dist(here.position, start.position) < MOVED:
+        return
+    with contextlib.suppress(ManipulationLowLevelFailure, NavigationLowLevelFailure):
+        _move(held.arm, start, **GRASPING, touching=held.object_name)
+
+
 def _settled(name: str, put: Pose, seconds: float) -> str | None:
     """Why the object does not rest where it was put within ``seconds`` [s], or None.
 
@@ -169,6 +184,7 @@ def place_object(
     """
     robot = current_robot()
     held = held_object(object, arm)
+    start = transform_pose(PoseStamped(held.tool_frame), "map").pose
     causes: list[Exception] = []
     for put in _object_targets(target):
         try:
@@ -185,6 +201,7 @@ def place_object(
                 causes=causes,
             )
         return transform_pose(PoseStamped(held.object_name), "map")
+    _back_to(held, start)
     raise PlacingFailed(
         f"{robot.name} could not put {held.object_name!r} down at {target} in any of "
         f"{len(TURNS)} turns (causes: "
