@@ -260,3 +260,26 @@ def test_placing_what_is_not_held_or_out_of_reach_fails(scene: KitchenScene) -> 
             place_object(held, PoseStamped("map", (*TARGET, TABLE_TOP)))  # the table is far
     assert info.value.causes is not None and len(info.value.causes) == 4  # every turn
     assert world.bodies.attached_to("mug-1") is not None  # still held
+
+
+def test_a_put_that_fails_in_every_turn_takes_the_hand_back_where_it_started(
+    scene: KitchenScene,
+) -> None:
+    """Each turn comes in over the spot (10 cm above it) before going down; a spot sunk
+    into the counter fails every turn at the last step. The hand, still holding the mug,
+    goes back where it was: left over the spot, in an open drawer under the counter's top,
+    it had blocked every drive after (the PR2's clearing, seed 9)."""
+    world = scene.world
+    with simulated_robot(world, scene.robot):
+        park_arms()
+        navigate(_before_the_counter(scene))
+        held = pick_up_object("mug-1")
+        start = world.link_pose(scene.robot, held.tool_frame).position
+        x, y, z = world.pose("mug-1").position
+        sunk = PoseStamped("map", (x + 0.15, y, z - 0.13))  # ~3 cm into the counter's top
+        with pytest.raises(PlacingFailed) as info:
+            place_object(held, sunk)
+    assert info.value.causes is not None and len(info.value.causes) == 4  # every turn
+    assert world.bodies.attached_to("mug-1") is not None  # still held
+    back = world.link_pose(scene.robot, held.tool_frame).position
+    assert math.dist(back, start) < 0.01
