@@ -133,7 +133,7 @@ def _camera_positions(robot: ProjectedRobot, frame: str) -> list[Vector3]:
 def _aim_neck_arm(robot: ProjectedRobot, neck: str, target_in_map: Vector3) -> dict[str, float]:
     """Aim the neck by IK from where it is; where every goal so found is blocked, turn it
     to its parking configuration (a checked motion) and aim it from there: a Boxy's neck,
-    wound up by the looks before (pan 2.88, lift 2.09 rad; parked 1.43, 0.39), found for
+    wound up by the looks before (pan 2.23, lift -2.27 rad; parked 1.43, 0.39), found for
     every look into a drawer only goals with its forearm against the torso. A neck that
     could not be aimed from its parking configuration either stays parked.
 
