@@ -7,7 +7,8 @@ from collections.abc import Iterator
 import pytest
 
 from robocram.costmaps import CostmapLocations
-from robocram.designators import using_location_resolver
+from robocram.designators import LocationDesignator, using_location_resolver
+from robocram.designators.errors import GroundingError
 from robocram.execution.failures import PerceptionObjectNotFound
 from robocram.plans.errors import SearchExhausted
 from robocram.plans.search import SearchLog, search
@@ -50,3 +51,25 @@ def test_an_absent_object_is_searched_for_everywhere_then_not_found(
     assert caught.value.searched == tuple(SURFACES)  # every supporting surface, in KB order
     assert 1 <= len(log.failures) <= poses * len(SURFACES)  # retries stay within the bound
     assert "table_top" in str(caught.value)
+
+
+def test_a_stand_stream_running_dry_ends_that_places_looks_not_the_search(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Boxy's breakfast (seeded household 1) stopped with a bare ``LocationNotFound``: the
+    next stand for a look at a counter, after a look that failed, ran the stream dry."""
+
+    def dry(self: LocationDesignator, kb: object = None, *, resolver: object = None) -> None:
+        raise GroundingError("no more stands (the stream ran dry)", self)
+
+    monkeypatch.setattr(LocationDesignator, "next_solution", dry)
+    scene = kitchen_scene("pr2")
+    log = SearchLog()
+    try:
+        with pytest.raises(SearchExhausted) as caught:
+            _search(scene, "pot", log, poses=2)
+    finally:
+        scene.world.close()
+    assert caught.value.searched == tuple(SURFACES)  # every place still looked at
+    dried = [f for f in log.failures if isinstance(f, GroundingError)]
+    assert len(dried) == len(SURFACES)  # one dry stream per place, each recorded

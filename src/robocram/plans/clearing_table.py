@@ -21,6 +21,7 @@ from robocram.designators import a, all_, an
 from robocram.designators.errors import DesignatorError
 from robocram.execution import perform, sub_task
 from robocram.execution.failures import PlanFailure
+from robocram.knowledge.grasp_predicates import OBJECT_GRASP
 from robocram.knowledge.scene_predicates import SEAT, USUAL_LOCATION, USUAL_SPOT
 from robocram.knowledge.world_predicates import OBJECT_TYPE
 from robocram.logic import current_kb
@@ -133,25 +134,32 @@ def _seen_of(kind: str, table: Table) -> dict[str, tuple[str, Point]]:
 
 
 def _fetch_again(
-    name: str, kind: str, point: Point, log: AttemptLog, arm: str | None = None
+    name: str,
+    kind: str,
+    point: Point,
+    log: AttemptLog,
+    arm: str | None = None,
+    grasp: str | None = None,
 ) -> Held:
-    """Fetch ``name`` (with ``arm``, or any) from where it was seen (``point``, map:
-    fetching looks there again from its stands); where it is gone from there, search for
-    it and fetch it."""
+    """Fetch ``name`` (with ``arm``, or any; by ``grasp``, or any) from where it was seen
+    (``point``, map: fetching looks there again from its stands); where it is gone from
+    there, search for it and fetch it."""
     remembered = an.object(type=kind, name=name, pose=PoseStamped("map", point))
     try:
-        return fetch(remembered, arm=arm, log=log)
+        return fetch(remembered, arm=arm, grasp=grasp, log=log)
     except PlanFailure:
-        return fetch(search(an.object(type=kind, name=name)), arm=arm, log=log)
+        return fetch(search(an.object(type=kind, name=name)), arm=arm, grasp=grasp, log=log)
 
 
 def _return_one(name: str, kind: str, point: Point, place: Place, done: TableClearing) -> None:
     """Fetch ``name`` from the table and put it back in ``place``. A hand that holds it so
     that no stand reaches its spot there (a carton past a fridge's open door, held from the
-    other side) puts it down again where it was, and the next hand takes it.
+    other side) puts it down again where it was, and the next hand takes it. When the last
+    hand could not put it back either, it is taken by the thing's other grasps
+    (:func:`_taken_otherwise`).
 
     Raises:
-        PlanFailure: fetching failed, or the last hand could not put it back either.
+        PlanFailure: fetching failed, or no hand and no grasp put it back.
     """
     arms = current_robot().arms()
     tried: list[str] = []
@@ -161,9 +169,67 @@ def _return_one(name: str, kind: str, point: Point, place: Place, done: TableCle
         held = _fetch_again(name, kind, point, done.log, untried[0] if tried else None)
         tried.append(held.arm)
         if len(tried) >= len(arms) or _reaches_back(held, place, kind):
-            _deliver_back(held, place, kind, done.log)
-            return
+            break
         deliver(held, was, held.arm, log=done.log)  # from where it stands: the pick undone
+    try:
+        _deliver_back(held, place, kind, done.log)
+    except DeliveryExhausted as failure:
+        if not _holds(held):
+            raise
+        _taken_otherwise(held, was, place, kind, done, failure)
+
+
+def _taken_otherwise(
+    held: Held, was: Pose, place: Place, kind: str, done: TableClearing, failure: PlanFailure
+) -> None:
+    """After every hand took ``held``'s thing by its first grasp and none put it back: put
+    it down where it was (``was``, map) and take it by each other grasp the KB has for it,
+    any hand, until one puts it back in ``place``. A carton taken from above on a table
+    has no room for the hand under a fridge's shelf; taken from the side, it slides in.
+
+    Raises:
+        PlanFailure: the last failure met (``failure``, the first grasp's delivery, if no
+            other grasp took it), the thing put down where it was.
+    """
+    name = held.object_name
+    tried = {held.grasp}
+    deliver(held, was, held.arm, log=done.log)  # from where it stands: the pick undone
+    for grasp in grasps_of(name):
+        if grasp in tried:
+            continue
+        tried.add(grasp)
+        was = map_pose(name)
+        seen = an.object(type=kind, name=name, pose=PoseStamped.from_pose("map", was))
+        try:
+            again = fetch(seen, grasp=grasp, log=done.log)
+        except PlanFailure as missed:  # not by this grasp from any stand: the next one
+            failure = missed
+            continue
+        try:
+            _deliver_back(again, place, kind, done.log)
+            return
+        except DeliveryExhausted as missed:
+            failure = missed
+            if _holds(again):
+                deliver(again, was, again.arm, log=done.log)
+    raise failure
+
+
+def _holds(held: Held) -> bool:
+    """Whether ``held``'s hand still holds its thing (the KB's ``attached/4``)."""
+    return current_robot().held_objects([held.arm]).get(held.arm) == held.object_name
+
+
+def grasps_of(name: str) -> list[str]:
+    """The names of the KB's grasps of the thing ``name`` by any arm of the robot, as the
+    arms rank them (each once)."""
+    robot = current_robot()
+    names: list[str] = []
+    for arm in robot.grasping_arms():
+        for row in OBJECT_GRASP.answers(current_kb(), object=name, robot=robot.name, arm=arm):
+            if row.grasp not in names:
+                names.append(row.grasp)
+    return names
 
 
 def _reaches_back(held: Held, place: Place, kind: str) -> bool:

@@ -138,7 +138,11 @@ def _look_from_places(
             log.failures.append(failure)
             if isinstance(failure, DesignatorError):
                 return None  # no (more) location to see the place from
-        following = stand.next_solution()
+        try:
+            following = stand.next_solution()
+        except DesignatorError as failure:  # the stream ran dry: no more stands
+            log.failures.append(failure)
+            return None
         if not isinstance(following, LocationDesignator):
             return None
         stand = following
