@@ -20,14 +20,6 @@ from robocram.scenes.breakfast_scene import breakfast_scene
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
 
-NECK = (
-    "neck_shoulder_pan_joint",
-    "neck_shoulder_lift_joint",
-    "neck_elbow_joint",
-    "neck_wrist_1_joint",
-    "neck_wrist_2_joint",
-    "neck_wrist_3_joint",
-)
 WOUND = (2.231, -2.274, -2.195, -2.438, 1.861, 2.932)  # [rad] as the looks before left it
 STAND = Pose((0.4005, 0.5545, 0.0), quat.from_euler(0.0, 0.0, 1.1205))  # by the cups' drawer
 INTO_DRAWER = (-0.2, 1.7, 0.7325)  # [m] the middle of the opened cups' drawer
@@ -40,8 +32,9 @@ def test_boxys_wound_up_neck_parks_and_looks_into_the_drawer() -> None:
     try:
         world.set_pose(scene.robot, STAND)
         world.set_joint_states(scene.robot, {"triangle_base_joint": -0.586})
-        world.set_joint_states(scene.robot, dict(zip(NECK, WOUND, strict=True)))
         robot = ProjectedRobot.of(world, scene.robot)
+        neck = robot.description.arms["neck"].joints
+        world.set_joint_states(scene.robot, dict(zip(neck, WOUND, strict=True)))
         look_at(robot, INTO_DRAWER)
         body = world.object(scene.robot)
         camera = body.link_index[robot.description.cameras[0].frame]
