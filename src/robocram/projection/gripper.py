@@ -55,6 +55,9 @@ BISECTION_STEPS = 8  # halvings of the step in which the object was first squeez
 SINK = HAND_CONTACT_DEPTH - 0.001  # [m] a finger this deep in what it grips stops the
 # closing: the other side must then be within the hand's bound (5 mm), else the grip fails
 CENTRING_REACH = 0.05  # [m] how far the other side of a one-sided grip is looked for
+PART_WAY = (0.75, 0.5, 0.35)  # of the full opening, tried in turn where opening fully is
+# blocked
+RELEASING = 0.15  # of the full opening: fingers opened this much wider let go of what they held
 NEAR = 0.02  # [m] margin around the hand's bounding box for objects worth testing
 Stop = tuple[float, WorldObject, set[LinkPair]]  # opening, what is squeezed, touching pairs
 
@@ -145,9 +148,33 @@ def open_gripper(robot: ProjectedRobot, arm: str) -> dict[str, float]:
     Raises:
         GripperPathBlocked: the fingers cannot open; they did not move and hold on.
     """
-    reached = {} if gripper_of(robot, arm).is_suction else _move_to(robot, arm, 1.0)
+    if gripper_of(robot, arm).is_suction:
+        reached: dict[str, float] = {}
+    else:
+        try:
+            reached = _move_to(robot, arm, 1.0)
+        except GripperPathBlocked as blocked:
+            reached = _opened_part_way(robot, arm, blocked)
     release(robot, arm)
     return reached
+
+
+def _opened_part_way(
+    robot: ProjectedRobot, arm: str, blocked: GripperPathBlocked
+) -> dict[str, float]:
+    """Open ``arm``'s fingers as far as :data:`PART_WAY` allows where opening fully is
+    blocked (a wrist flexed far back puts the PR2's fully open finger into its own
+    forearm as it lets a bowl's rim go); wider by :data:`RELEASING` than now, or
+    ``blocked`` is raised (the fingers did not move)."""
+    now = _opening(robot, arm)
+    for fraction in PART_WAY:
+        if fraction < now + RELEASING:
+            break
+        try:
+            return _move_to(robot, arm, fraction)
+        except GripperPathBlocked:
+            continue
+    raise blocked
 
 
 def close_gripper(robot: ProjectedRobot, arm: str) -> dict[str, float]:
