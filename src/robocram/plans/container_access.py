@@ -205,10 +205,15 @@ def close_again(opened: OpenedContainer, log: AttemptLog | None = None) -> None:
         stands.append(opened.reached)
     try:
         _close_from_stands(opened, stands, log)
+        return
     except ANOTHER_STAND_HELPS:
+        before = current_robot().torso_position()
         if not _torso_back(opened):
             raise
-        _close_from_stands(opened, stands, log)
+    _close_from_stands(opened, stands, log)
+    if before is not None:  # as the plan had it: what it does next is planned for that
+        with contextlib.suppress(PlanFailure):
+            move_torso(before)
 
 
 def _close_from_stands(opened: OpenedContainer, stands: list[Pose], log: AttemptLog) -> None:
