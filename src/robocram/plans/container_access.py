@@ -23,7 +23,7 @@ from robocram.knowledge.scene_predicates import CONTAINER, CONTAINER_FRONT, CONT
 from robocram.knowledge.world_predicates import OBJECT_POSE
 from robocram.logic import current_kb
 from robocram.plans.attempt_log import AttemptLog
-from robocram.plans.basic_actions import look_ahead, navigate, park_arms
+from robocram.plans.basic_actions import look_ahead, move_torso, navigate, park_arms
 from robocram.plans.containers import Container, close_container, container, open_container
 from robocram.plans.environment_links import environment_link_pose
 from robocram.plans.errors import PlanSetupError
@@ -34,6 +34,7 @@ from robocram.tf import Pose
 OPEN_RETRIES = 6  # stands tried before opening gives up
 TURNED = 0.05  # [rad | m] a neck joint moved this much by looking ahead was turned away
 NEAR = 0.05  # [m] a base this close to the opening stand after opening stood there
+TORSO_MOVED = 0.02  # [m | rad] a torso this far from where it was when a part was opened moved
 OPEN_ENOUGH = 0.8  # of a part's opening: a failed opening that left it this far open opened it
 # closing failures after which the next stand is tried: the arm could not take the handle,
 # or the base cannot stand where it opened the part (a Boxy's wide base meets the drawer
@@ -43,12 +44,14 @@ ANOTHER_STAND_HELPS = (EnvironmentManipulationImpossible, NavigationLowLevelFail
 
 @dataclass(frozen=True)
 class OpenedContainer:
-    """A container a plan opened, the stand and arm that opened it and where the base
-    stood when it was open (a door's arc can take the base a metre along)."""
+    """A container a plan opened, the stand and arm that opened it, where the base stood
+    when it was open (a door's arc can take the base a metre along) and the torso's
+    position then [m | rad] (None: no torso)."""
 
     container: Container
     stand: HandleStand
     reached: Pose | None = None
+    torso: float | None = None
 
 
 def is_container(environment: str, link: str) -> bool:
@@ -131,7 +134,8 @@ def _open_from_stands(part: Container, log: AttemptLog, retries: int) -> OpenedC
         else:
             log.record("open", stand.pose, None)
         log.opened.append(part.link)
-        return OpenedContainer(part, stand, map_pose(current_robot().base_frame()))
+        robot = current_robot()
+        return OpenedContainer(part, stand, map_pose(robot.base_frame()), robot.torso_position())
     if last is None:
         raise PlanSetupError(f"no stand to open {part.link!r} from (retries={retries})")
     raise last
@@ -187,15 +191,33 @@ def close_again(opened: OpenedContainer, log: AttemptLog | None = None) -> None:
     arm cannot take the handle from there (a door opened wide swung it out of reach: an
     HSR's arm follows the fridge door's arc only with its base, a metre along), or the
     base cannot stand there now, from where the base stood when it was open, by the
-    handle.
+    handle. When neither did and the torso has moved since the part was opened, the torso
+    goes back to where it was then and both stands are tried again: the parked arms hang
+    lower with the torso down, and a Boxy's left arm, lowered by fetching from the drawer,
+    met the open drawer at the very stand it had parked at beside it.
 
     Raises:
-        PlanFailure: the last failure, when neither stand closed it.
+        PlanFailure: the last failure, when no stand closed it.
     """
     log = log if log is not None else AttemptLog()
     stands = [opened.stand.pose]
     if opened.reached is not None and opened.reached.distance_to(opened.stand.pose) > NEAR:
         stands.append(opened.reached)
+    try:
+        _close_from_stands(opened, stands, log)
+        return
+    except ANOTHER_STAND_HELPS:
+        before = current_robot().torso_position()
+        if not _torso_back(opened):
+            raise
+    _close_from_stands(opened, stands, log)
+    if before is not None:  # as the plan had it: what it does next is planned for that
+        with contextlib.suppress(PlanFailure):
+            move_torso(before)
+
+
+def _close_from_stands(opened: OpenedContainer, stands: list[Pose], log: AttemptLog) -> None:
+    """Close ``opened`` from the first of ``stands`` that works; the last failure raised."""
     for k, stand in enumerate(stands):
         try:
             park_arms()
@@ -209,3 +231,16 @@ def close_again(opened: OpenedContainer, log: AttemptLog | None = None) -> None:
             continue
         log.record("close", stand, None)
         return
+
+
+def _torso_back(opened: OpenedContainer) -> bool:
+    """Move the torso back to where it was when ``opened`` was opened, if it moved by more
+    than :data:`TORSO_MOVED` since; whether it moved back."""
+    now = current_robot().torso_position()
+    if opened.torso is None or now is None or abs(now - opened.torso) <= TORSO_MOVED:
+        return False
+    try:
+        move_torso(opened.torso)
+    except PlanFailure:
+        return False
+    return True

@@ -314,6 +314,12 @@ def fetch(
         found = _first_held(aside, picking(torso_up=True), causes, log, stand_retries)
         if found is not None:
             return found
+        # then the stands the tries did not come to: a row in front of the drawer, from
+        # which the lift out of it is beyond reach, used them up (Boxy's left hand at its
+        # cups: a stand on the cups' other side took them)
+        found = _first_held(stands, picking(), causes, log, stand_retries)
+        if found is not None:
+            return found
     raise FetchExhausted(
         exhausted_message(str(seen.get("name")), tries, causes),
         object_designator=seen,
