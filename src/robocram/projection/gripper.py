@@ -154,6 +154,8 @@ def open_gripper(robot: ProjectedRobot, arm: str) -> dict[str, float]:
         try:
             reached = _move_to(robot, arm, 1.0)
         except GripperPathBlocked as blocked:
+            if not _holding(robot, arm):  # an empty hand opens for a grasp: fully or not
+                raise
             reached = _opened_part_way(robot, arm, blocked)
     release(robot, arm)
     return reached
@@ -162,10 +164,10 @@ def open_gripper(robot: ProjectedRobot, arm: str) -> dict[str, float]:
 def _opened_part_way(
     robot: ProjectedRobot, arm: str, blocked: GripperPathBlocked
 ) -> dict[str, float]:
-    """Open ``arm``'s fingers as far as :data:`PART_WAY` allows where opening fully is
-    blocked (a wrist flexed far back puts the PR2's fully open finger into its own
-    forearm as it lets a bowl's rim go); wider by :data:`RELEASING` than now, or
-    ``blocked`` is raised (the fingers did not move)."""
+    """Open ``arm``'s fingers, letting go of what they hold, as far as :data:`PART_WAY`
+    allows where opening fully is blocked (a wrist flexed far back puts the PR2's fully
+    open finger into its own forearm as it lets a bowl's rim go); wider by
+    :data:`RELEASING` than now, or ``blocked`` is raised (the fingers did not move)."""
     now = _opening(robot, arm)
     for fraction in PART_WAY:
         if fraction < now + RELEASING:
@@ -241,10 +243,15 @@ def _arm_links(spec: ArmDescription) -> set[str]:
     return {spec.end_effector_link, spec.tool_frame, *spec.gripper_links, *spec.hand_links}
 
 
+def _holding(robot: ProjectedRobot, arm: str) -> list[str]:
+    """The objects attached to ``arm``'s hand."""
+    links = _arm_links(robot.arm(arm))
+    return [o for o, link in robot.world.bodies.attachments(robot.name).items() if link in links]
+
+
 def release(robot: ProjectedRobot, arm: str) -> list[str]:
     """Detach every object held by ``arm``'s hand; return their names."""
-    links = _arm_links(robot.arm(arm))
-    held = [o for o, link in robot.world.bodies.attachments(robot.name).items() if link in links]
+    held = _holding(robot, arm)
     for name in held:
         robot.world.detach(name)
     return held
