@@ -266,8 +266,10 @@ def test_boxy_puts_the_tucked_bowl_down_after_the_other_hand_failed_in_the_drawe
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
     # the other hand fails as it did before session 23: no stands facing a bowl's rim,
-    # and a hand closed round its thin rim holds nothing
+    # no untried stands after them (session 24), and a hand closed round its thin rim
+    # holds nothing
     monkeypatch.setattr(fetch_plan, "grasp_point_stands", lambda *_args: iter(()))
+    monkeypatch.setattr(fetch_plan, "_untried", lambda _stands: iter(()))
     monkeypatch.setattr(gripper, "_closed_round_thin", lambda *_args: None)
     scene = breakfast_scene("boxy")
     world = scene.world

@@ -103,7 +103,9 @@ def test_browser_shows_tree_and_draws_the_robot(live_run: Any) -> None:
     viewer = live_run.viewer
     aim_camera(viewer)
     with HeadlessChromium(WIDTH, HEIGHT) as browser:
-        text = open_viewer(browser, viewer, "perform moving-tcp#3")
+        shown = [f"{task.name} {task.status.value}" for task in live_run.tree.walk()]
+        # the tree's rows are drawn one after another: wait for all of them, not the first
+        text = open_viewer(browser, viewer, "perform moving-tcp#3", *shown)
         for task in live_run.tree.walk():
             assert f"{task.name} {task.status.value}" in text, task.path
         assert "too-high failed" in text and "pick-mug succeeded" in text

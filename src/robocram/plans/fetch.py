@@ -220,6 +220,13 @@ def exhausted_message(name: str, tries: int, causes: list[Exception]) -> str:
     return text + joint + failure_line(type(last).__name__, str(last))
 
 
+def _untried(stands: Iterator[tuple[Pose, str | None]]) -> Iterator[tuple[Pose, str | None]]:
+    """The stands the tries did not come to, tried last from an opened container: a row
+    in front of the drawer, from which the lift out of it is beyond reach, used the tries
+    up (Boxy's left hand at its cups: a stand on the cups' other side took them)."""
+    return stands
+
+
 def _first_held(
     stands: Iterable[tuple[Pose, str | None]],
     pick: Callable[[Pose, str | None], Held],
@@ -314,10 +321,7 @@ def fetch(
         found = _first_held(aside, picking(torso_up=True), causes, log, stand_retries)
         if found is not None:
             return found
-        # then the stands the tries did not come to: a row in front of the drawer, from
-        # which the lift out of it is beyond reach, used them up (Boxy's left hand at its
-        # cups: a stand on the cups' other side took them)
-        found = _first_held(stands, picking(), causes, log, stand_retries)
+        found = _first_held(_untried(stands), picking(), causes, log, stand_retries)
         if found is not None:
             return found
     raise FetchExhausted(
