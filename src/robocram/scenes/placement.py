@@ -16,6 +16,9 @@ Nothing is keyed on robot names, so a new robot gets a scene too. The rules:
   telescope extended) ahead of the shoulder,
   or further if needed for the table's front edge to clear the robot's base footprint
   (its links fixed to the root) by :data:`TABLE_GAP`, the mug :data:`MUG_INSET` behind it;
+  but nearer where that share puts the grasping wrist beyond :data:`PAST_RISE_SHARE` of the
+  arm's reach from the top of the rise along its first joint's axis
+  (:mod:`robocram.robots.arm_rise`: the SO-100's second joint sits 0.10 m above its pan);
 - with a head that only pans (Baxter's), the mug lies at least as far out as the lower
   edge of the camera's view, panned towards the table;
 - with a pan-tilt head, the mug lies at least as far out as the camera's optical axis,
@@ -41,6 +44,7 @@ from dataclasses import dataclass
 from robocram.kinematics import forward_kinematics
 from robocram.robots import ArmDescription, LoadedDescription
 from robocram.robots.arm_envelope import arm_envelope, lift_joints
+from robocram.robots.arm_rise import arm_rise
 from robocram.robots.looking_means import looking_means
 from robocram.robots.model_pose import finite_limits
 from robocram.scenes.errors import UnfitRobotError
@@ -58,6 +62,9 @@ RAISED_REACH_SHARE = 0.85  # of the reach a raised table's mug may be from the s
 TABLE_GAP = 0.15  # [m] between the base footprint and the table's front edge
 MUG_INSET = 0.10  # [m] from the table's front edge to the mug
 REACH_SHARE = 0.65  # of the arm's stretched length: the mug's x distance from the shoulder
+PAST_RISE_SHARE = 0.9  # of the reach from the top of the rise at the shoulder: the grasping
+# wrist's distance from there at most (the corpus's complete arms: 0.88 at most; the SO-100's
+# 0.10 m rise over its pan put its wrist at 0.99 of it, its grasps 3-37 mm beyond its wrist)
 TABLE_DEPTH = 0.6  # [m] along x
 SIDE_SHARE = 0.8  # of the shoulder's y: the mug's y, a little inside the arm's line
 PAN_VERTICAL = 0.9  # |z| of a first joint's unit axis above which the arm can pan
@@ -312,7 +319,9 @@ def _placement_at(
     reach = arm_envelope(desc.model, arm, torso).reach
     past_base = _footprint_front(world, robot, height) + TABLE_GAP + MUG_INSET
     seen = _nearest_in_view(desc, height - root.position[2], yaw, low)
-    mug_x = max(past_base, shoulder[0] + REACH_SHARE * reach, seen)
+    side = SIDE_SHARE if _pans(desc, arm, torso) else 1.0
+    wrist = (shoulder[0] + REACH_SHARE * reach, side * shoulder[1], wrist_z)
+    mug_x = max(past_base, _past_rise_x(world, robot, arm, wrist), seen)
     needed = math.dist(shoulder, (mug_x, shoulder[1], wrist_z))
     if needed > share * reach:
         return None, (
@@ -320,5 +329,21 @@ def _placement_at(
             f"and in its camera's view (from x = {seen:.2f} m) is {needed:.2f} m from the "
             f"shoulder (table height {height:.2f} m){_view_note(desc)}"
         )
-    side = SIDE_SHARE if _pans(desc, arm, torso) else 1.0
-    return TabletopPlacement(arm.name, height, (mug_x, side * shoulder[1])), ""
+    return TabletopPlacement(arm.name, height, (mug_x, wrist[1])), ""
+
+
+def _past_rise_x(world: World, robot: str, arm: ArmDescription, wrist: Vector3) -> float:
+    """The x [m, map] of ``wrist``, or nearer where it lies beyond :data:`PAST_RISE_SHARE`
+    of the arm's reach from the top of the rise along its first joint's axis
+    (:mod:`robocram.robots.arm_rise`): as far out as that share reaches, the wrist's y and
+    z kept. Where no x fits, as before."""
+    desc = world.robot(robot).description
+    shape = arm_rise(desc.model, arm, _joints_for_torso(desc, arm))
+    turn = Pose(orientation=world.pose(robot).orientation)
+    shoulder, rise = _shoulder_in_map(world, robot, arm), (turn * Pose(shape.rise)).position
+    top = (shoulder[0] + rise[0], shoulder[1] + rise[1], shoulder[2] + rise[2])
+    room = PAST_RISE_SHARE * shape.reach
+    if math.dist(top, wrist) <= room:
+        return wrist[0]
+    left = room**2 - (wrist[1] - top[1]) ** 2 - (wrist[2] - top[2]) ** 2
+    return top[0] + math.sqrt(left) if left > 0.0 else wrist[0]
