@@ -18,7 +18,8 @@ Nothing is keyed on robot names, so a new robot gets a scene too. The rules:
   (its links fixed to the root) by :data:`TABLE_GAP`, the mug :data:`MUG_INSET` behind it;
   but nearer where that share puts the grasping wrist beyond :data:`PAST_RISE_SHARE` of the
   arm's reach from the top of the rise along its first joint's axis
-  (:mod:`robocram.robots.arm_rise`: the SO-100's second joint sits 0.10 m above its pan);
+  (:mod:`robocram.robots.arm_rise`: the SO-100's second joint sits 0.10 m above its pan),
+  the table's front edge then :data:`NEAR_TABLE_GAP` past the footprint at least;
 - with a head that only pans (Baxter's), the mug lies at least as far out as the lower
   edge of the camera's view, panned towards the table;
 - with a pan-tilt head, the mug lies at least as far out as the camera's optical axis,
@@ -60,6 +61,8 @@ WRISTS_BELOW_SHOULDER = (WRIST_BELOW_SHOULDER, 0.0, -0.1, -0.2, -0.3)  # [m] tri
 RAISED_REACH_SHARE = 0.85  # of the reach a raised table's mug may be from the shoulder at
 # most: the hand comes from above it, so the arm needs room past the grasp
 TABLE_GAP = 0.15  # [m] between the base footprint and the table's front edge
+NEAR_TABLE_GAP = 0.05  # [m] the same, where the wrist must come in to be in reach past the
+# rise at its shoulder (:data:`PAST_RISE_SHARE`)
 MUG_INSET = 0.10  # [m] from the table's front edge to the mug
 REACH_SHARE = 0.65  # of the arm's stretched length: the mug's x distance from the shoulder
 PAST_RISE_SHARE = 0.9  # of the reach from the top of the rise at the shoulder: the grasping
@@ -317,11 +320,13 @@ def _placement_at(
     wrist_z = shoulder[2] - below
     height = table_height(world, robot, arm, below)
     reach = arm_envelope(desc.model, arm, torso).reach
-    past_base = _footprint_front(world, robot, height) + TABLE_GAP + MUG_INSET
     seen = _nearest_in_view(desc, height - root.position[2], yaw, low)
     side = SIDE_SHARE if _pans(desc, arm, torso) else 1.0
     wrist = (shoulder[0] + REACH_SHARE * reach, side * shoulder[1], wrist_z)
-    mug_x = max(past_base, _past_rise_x(world, robot, arm, wrist), seen)
+    in_reach = _past_rise_x(world, robot, arm, wrist)
+    gap = TABLE_GAP if in_reach >= wrist[0] else NEAR_TABLE_GAP
+    past_base = _footprint_front(world, robot, height) + gap + MUG_INSET
+    mug_x = max(past_base, in_reach, seen)
     needed = math.dist(shoulder, (mug_x, shoulder[1], wrist_z))
     if needed > share * reach:
         return None, (
