@@ -147,10 +147,15 @@ def find_camera(
     return Camera(camera_frame, added, low, high, why, others, doubt, sensor)
 
 
-def _looking_axis(axes: np.ndarray) -> str | None:
+def _looking_axis(axes: np.ndarray, optical: bool = True) -> str | None:
     """Which axis of a frame (rotation ``axes`` in the root link) looks ahead: ``"z"`` (an
-    optical frame), ``"x"`` (ROS body convention), or None."""
+    optical frame), ``"x"`` (ROS body convention), or None. A frame not named ``optical``
+    whose x looks ahead and down while its z looks up is read by the body convention: a
+    camera tilted steeply down onto a workspace (Tracy's ``camera_link``, 72 degrees), not
+    an optical frame looking over it."""
     z_ahead, x_ahead = float(axes[0, 2]), float(axes[0, 0])
+    if not optical and x_ahead > 0.0 and float(axes[2, 0]) < 0.0 < float(axes[2, 2]):
+        return "x"
     if z_ahead >= FORWARD or (z_ahead >= LOOKS_AHEAD and z_ahead >= x_ahead):
         return "z"
     return "x" if x_ahead >= LOOKS_AHEAD else None
@@ -162,12 +167,18 @@ def _named_optics(
     """A named camera's optical frame (maybe added), why, and a doubt, at zero joints."""
     axes = link_poses(tree.model)[frame].matrix()[:3, :3]
     z_ahead, x_ahead = float(axes[0, 2]), float(axes[0, 0])
-    looking = _looking_axis(axes)
+    looking = _looking_axis(axes, "optical" in frame.lower())
     if looking == "z":
         return None, found + "; optical: z looks forward", None
     if looking == "x":
         added = FrameSpec(f"{frame}_optical", frame, OPTICAL_FROM_BODY)
         why = "; its x looks forward (body convention): optical frame added, z forward"
+        if x_ahead < LOOKS_AHEAD:  # tilted steeply down, its z looking up
+            down = math.degrees(math.asin(min(1.0, -float(axes[2, 0]))))
+            why = (
+                f"; not named optical, its x looks {down:.0f} deg down, its z up (body "
+                "convention): optical frame added, z along its x"
+            )
         return added, found + why, None
     doubt = (
         f"neither its z (x share {z_ahead:.2f}) nor its x ({x_ahead:.2f}) looks ahead "
@@ -194,7 +205,7 @@ def _given_optics(
     pose = link_poses(tree.model, parked)[frame]
     axes = pose.matrix()[:3, :3]
     z_ahead, x_ahead = float(axes[0, 2]), float(axes[0, 0])
-    looking = _looking_axis(axes)
+    looking = _looking_axis(axes, "optical" in frame.lower())
     if looking == "z":
         return None, found + "; optical: z looks forward, the arms parked", doubt
     if looking == "x":
