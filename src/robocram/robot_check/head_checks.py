@@ -1,8 +1,9 @@
 """Drive the torso and the head once: up and down, look ahead, look at a point, detect.
 
 The torso must lift the arms' bases and its range must match the camera heights the
-description gives; the camera's optical axis (z) must look forward with the neck parked,
-turn onto a point when looking at it, and see a mug put there.
+description gives; the camera's optical axis (z) must look forward with the neck parked
+(or down onto what lies ahead), turn onto a point when looking at it, and see a mug put
+there.
 """
 
 from __future__ import annotations
@@ -27,7 +28,10 @@ LIFT_SHARE = 0.5  # of the torso's range the arms' bases must rise at least
 LOOK_TOLERANCE = math.radians(5.0)  # [rad] between the optical axis and the look target
 FORWARD = LOOKS_AHEAD  # x share in the base frame of an optical axis that looks ahead (the
 # draft's threshold: a camera the draft doubts is one this check fails)
-LOOK_AHEAD = 1.0  # [m] ahead of the camera to look and detect at, at least
+LOOK_AHEAD = 1.0  # [m] ahead of the camera to look and detect at, at least (a fixed
+# camera's: nearer, on the robot's own body where its optical axis meets it first)
+DOWN_ONTO = math.radians(45.0)  # [rad] below the horizon: a fixed camera that looks down at
+# least this steeply onto what lies ahead looks ahead, whatever its x share
 LOOK_DOWN = math.radians(20.0)  # [rad] at most: a neck arm's own links hide steeper views
 LOOK_HEIGHT = 0.75  # [m] over the floor: a table top
 LOOK_ASIDE = math.radians(25.0)  # [rad] a camera on an arm or a pan-only head turns this far
@@ -110,6 +114,12 @@ def camera_forward(robot: ProjectedRobot) -> CheckResult:
         robot.world.set_joint_states(robot.name, dict(desc.neck_parking))
     axes = (robot.base_pose().inverse() * robot.world.link_pose(robot.name, camera.frame)).matrix()
     forward = float(axes[0, 2])
+    if forward < FORWARD and _looks_down_ahead(axes[:3, 2]):
+        down = math.degrees(math.asin(min(1.0, -float(axes[2, 2]))))
+        return CheckResult(
+            name, True, f"z looks down onto what lies ahead ({down:.0f} deg down, x share "
+            f"{forward:.2f})",
+        )  # fmt: skip
     if forward < FORWARD:
         seen = "backwards" if forward < -FORWARD else "sideways, up or down"
         return CheckResult(
@@ -119,6 +129,14 @@ def camera_forward(robot: ProjectedRobot) -> CheckResult:
             "use the optical frame (z forward, x right, y down), or add one with a FrameSpec",
         )
     return CheckResult(name, True, f"z looks ahead (x share {forward:.2f})")
+
+
+def _looks_down_ahead(axis: np.ndarray) -> bool:
+    """Whether an optical ``axis`` (base frame) looks at least :data:`DOWN_ONTO` below the
+    horizon, its horizontal part ahead (an x share of it of :data:`FORWARD` at least): a
+    fixed camera over a workspace in front of the robot (Tracy's, 72 degrees down)."""
+    across = math.hypot(float(axis[0]), float(axis[1]))
+    return -float(axis[2]) >= math.sin(DOWN_ONTO) and float(axis[0]) >= FORWARD * across > 0.0
 
 
 def look_and_detect(robot: ProjectedRobot) -> list[CheckResult]:
@@ -134,6 +152,9 @@ def look_and_detect(robot: ProjectedRobot) -> list[CheckResult]:
     means = looking_means(desc)
     if means is None:
         target = eye.transform_point((0.0, 0.0, LOOK_AHEAD))
+        hit = world.view.ray_cast(eye.position, target)
+        if hit is not None and hit.obj.name == robot.name:  # onto its own table: the mug on it
+            return [_detect(robot, hit.position, hit.distance)]
         return [_detect(robot, target, LOOK_AHEAD)]
     if means.kind in ("arm", "pan"):
         distance = LOOK_AHEAD
