@@ -33,6 +33,8 @@ Nothing is keyed on robot names, so a new robot gets a scene too. The rules:
   reach; where none fits, the same tables seen with the torso down (the look lowers it
   when the head cannot tilt down to the target: Armar6's tilts 46 degrees); else the
   robot is unfit;
+- a robot whose fixed camera looks onto its own top (:mod:`robocram.scenes.own_top`)
+  gets its mug there, where the optical axis meets it, and no table;
 - heights are the map's: a robot lifted onto the floor or a pedestal
   (:mod:`robocram.scenes.standing`) gets its table that much higher.
 """
@@ -49,6 +51,7 @@ from robocram.robots.arm_rise import arm_rise
 from robocram.robots.looking_means import looking_means
 from robocram.robots.model_pose import finite_limits
 from robocram.scenes.errors import UnfitRobotError
+from robocram.scenes.own_top import seen_on_own_top
 from robocram.scenes.standing import root_fixed_links
 from robocram.tf import Pose, Vector3
 from robocram.tf import quaternion as quat
@@ -82,6 +85,7 @@ class TabletopPlacement:
     arm: str
     table_height: float  # [m]
     mug_xy: tuple[float, float]  # [m] in map
+    on_robot: bool = False  # the mug lies on the robot's own top: no table to add
 
     @property
     def table_x(self) -> float:
@@ -280,6 +284,9 @@ def tabletop_placement(world: World, robot: str) -> TabletopPlacement:
             "it has no arm with joints and a gripper to pick the mug with; give an "
             "ArmDescription joints (or a base_link) and gripper_joints (or gripper=...)",
         )
+    own = seen_on_own_top(world, robot)
+    if own is not None:
+        return TabletopPlacement(arm.name, own[2], (own[0], own[1]), on_robot=True)
     shoulder = _shoulder_in_map(world, robot, arm)
     height = table_height(world, robot, arm)
     if height <= 0:

@@ -32,7 +32,8 @@ def tabletop_scene(robot: str | RobotDescription, world: World | None = None) ->
     parked, a table with a mug and a bottle in front of it: along the map's x, where the
     robot's arm works (it stands turned if its arm works sideways, as Stretch's does).
     A robot whose root is not at its feet stands on the floor; an arm too low for a table
-    stands on a pedestal (:mod:`robocram.scenes.standing`).
+    stands on a pedestal (:mod:`robocram.scenes.standing`). A robot whose fixed camera looks
+    onto its own top gets the mug there and no table or bottle (:mod:`~.own_top`).
 
     Raises:
         UnfitRobotError: the robot has no gripper arm, or it cannot reach past its base.
@@ -40,7 +41,9 @@ def tabletop_scene(robot: str | RobotDescription, world: World | None = None) ->
     world = world if world is not None else World()
     name, place = robot_at_a_table(world, robot)
     height, (mug_x, mug_y), table_x = place.table_height, place.mug_xy, place.table_x
-    world.add_box("table", (TABLE_DEPTH, 1.0, height), pose=Pose((table_x, 0.0, height / 2)))
+    if not place.on_robot:  # else the mug lies on the robot's own top (scenes/own_top.py)
+        world.add_box("table", (TABLE_DEPTH, 1.0, height), pose=Pose((table_x, 0.0, height / 2)))
     world.add_item("mug-1", "mug", pose=Pose((mug_x, mug_y, height)))
-    world.add_item("bottle-1", "bottle", pose=Pose((table_x + 0.15, 0.3, height + 0.125)))
+    if not place.on_robot:
+        world.add_item("bottle-1", "bottle", pose=Pose((table_x + 0.15, 0.3, height + 0.125)))
     return TabletopScene(world, name, PoseStamped("map", (mug_x, mug_y, height)))

@@ -22,6 +22,7 @@ from robocram.scenes.environment_scene import (
     place_item,
     usual_location_facts,
 )
+from robocram.scenes.errors import UnfitRobotError
 from robocram.scenes.placement import (
     MUG_INSET,
     TABLE_DEPTH,
@@ -69,10 +70,18 @@ def workcell_scene(robot: str | RobotDescription, world: World | None = None) ->
     a search looks). The delivery spots are :func:`workcell_spots`.
 
     Raises:
-        UnfitRobotError: the robot has no gripper arm, or it cannot reach past its base.
+        UnfitRobotError: the robot has no gripper arm, or it cannot reach past its base,
+            or its fixed camera looks onto its own top.
     """
     world = world if world is not None else World()
     name, place = robot_at_a_table(world, robot)
+    if place.on_robot:
+        raise UnfitRobotError(
+            name,
+            "its fixed camera looks onto its own top (scenes/own_top.py), where no workcell "
+            "table can stand: its items would lie on the robot itself; give its top as an "
+            "environment surface",
+        )
     height, (mug_x, mug_y) = place.table_height, place.mug_xy
     table_x = mug_x - MUG_INSET + TABLE_DEPTH / 2
     side = max(SPREAD * mug_x, MIN_SPREAD)
