@@ -2,14 +2,11 @@
 
 A candidate moves the links below its joints (the arm's, the torso's); the others stay
 where they start, so what they touch is the same at every candidate of the query and is
-asked once, as are their bounds; while only the robot moves, their contacts are the
-start's and no candidate is refused for them (a mug on a robot's own table top, as the
-motion planner allows contacts a motion starts with). Self pairs touching at the start
-stay allowed; the start is asked about a pair only when it touches at a candidate. What
-each candidate puts back is read once too. A check asks :meth:`IKStart.holds` before each
-candidate and reads the start again if anything but its own put-backs wrote to the robot
-since (the world's change counters say; no state is compared); nothing but the robot may
-move in between.
+asked once, as are their bounds. Self pairs touching at the start stay allowed; the start
+is asked about a pair only when it touches at a candidate. What each candidate puts back
+is read once too. A check asks :meth:`IKStart.holds` before each candidate and reads the
+start again if anything but its own put-backs wrote to the robot since (the world's change
+counters say; no state is compared); nothing but the robot may move in between.
 """
 
 from __future__ import annotations
@@ -165,9 +162,7 @@ class IKStart:
             self._kept.update((n, found[n]) for _, n in still if n in found)
             self._bounds = {i: bounds[i] for i, _ in still}
         hits: dict[LinkPair, None] = {}
-        for i, link in colliders.items():
-            if self.alone and not base_moves and i not in moved:
-                continue  # it touches what it touched at the start (its own top's mug)
+        for link in colliders.values():
             if link not in allowed:
                 hits.update(dict.fromkeys(found[link] if link in found else self._kept[link]))
         return hits, self_contacts(world, body, pairs, self.distance, bounds)
