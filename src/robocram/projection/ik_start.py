@@ -2,9 +2,10 @@
 
 A candidate moves the links below its joints (the arm's, the torso's); the others stay
 where they start, so what they touch is the same at every candidate of the query and is
-asked once, as are their bounds. Self pairs touching at the start stay allowed; the start
-is asked about a pair only when it touches at a candidate. What each candidate puts back
-is read once too. A check asks :meth:`IKStart.holds` before each candidate and reads the
+asked once, as are their bounds; an object resting on one of them (a mug on a robot's own
+table top) does not count. Self pairs touching at the start stay allowed; the start is
+asked about a pair only when it touches at a candidate. What each candidate puts back is
+read once too. A check asks :meth:`IKStart.holds` before each candidate and reads the
 start again if anything but its own put-backs wrote to the robot since (the world's change
 counters say; no state is compared); nothing but the robot may move in between.
 """
@@ -22,6 +23,7 @@ from robocram.world.link_contacts import Bounds, link_bounds, link_pairs_in_cont
 from robocram.world.versions import Stamp
 
 LinkPair = tuple[str, str]  # (robot link, object or object/link | robot link)
+RESTING = 0.9  # z of every contact normal out of a still link that an object rests on
 
 
 @dataclass
@@ -162,10 +164,24 @@ class IKStart:
             self._kept.update((n, found[n]) for _, n in still if n in found)
             self._bounds = {i: bounds[i] for i, _ in still}
         hits: dict[LinkPair, None] = {}
-        for link in colliders.values():
+        still = self.alone and not base_moves
+        for i, link in colliders.items():
             if link not in allowed:
-                hits.update(dict.fromkeys(found[link] if link in found else self._kept[link]))
+                touched = found[link] if link in found else self._kept[link]
+                if still and i not in moved:
+                    touched = [p for p in touched if not self._rests_on(body, link, p[1])]
+                hits.update(dict.fromkeys(touched))
         return hits, self_contacts(world, body, pairs, self.distance, bounds)
+
+    def _rests_on(self, body: WorldObject, link: str, other: str) -> bool:
+        """Whether the one-link object ``other`` rests on ``link`` of the robot, which the
+        candidate does not move (a mug on the robot's own table top): every contact's
+        normal points up out of the link. Such a contact is the start's, not a collision."""
+        world = self.robot.world
+        if "/" in other:
+            return False
+        points = world.contacts.contact_points(other, body, None, link, self.distance)
+        return bool(points) and all(p.normal_on_b[2] >= RESTING for p in points)
 
     def _touching_at_start(self, pairs: list[LinkPair]) -> bool:
         """Whether any of ``pairs`` touch at the start (the robot stands there now)."""
