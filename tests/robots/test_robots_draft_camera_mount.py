@@ -10,6 +10,7 @@ nothing of the robot within a metre.
 
 from __future__ import annotations
 
+import math
 import warnings
 from pathlib import Path
 
@@ -27,9 +28,12 @@ from robocram.world import World
 TRACY = Path(__file__).resolve().parents[1] / "data" / "zoo" / "tracy" / "tracy.urdf"
 
 
-def test_tracys_drafted_camera_is_the_one_on_the_pole_and_sees_past_the_robot(
+def test_tracys_drafted_camera_is_the_one_on_the_pole_and_looks_down_onto_its_table(
     tmp_path: Path,
 ) -> None:
+    """``camera_link`` is not named optical: its x, 72 degrees down, is its axis (the ROS
+    body convention), not its z, which looks 18 degrees up over everything. The optical
+    axis meets the robot's own table top from above, at its middle (0.59 m ahead)."""
     module = tmp_path / "tracy.py"
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
@@ -47,10 +51,15 @@ def test_tracys_drafted_camera_is_the_one_on_the_pole_and_sees_past_the_robot(
             )
             z = np.array(pybullet.getMatrixFromQuaternion(state[5])).reshape(3, 3)[:, 2]
             start = np.asarray(state[4])
-            hit = pybullet.rayTest(start, start + 1.0 * z, physicsClientId=client)[0]
-    assert camera in ("camera_link", "camera_link_optical")
+            hit = pybullet.rayTest(start, start + 1.5 * z, physicsClientId=client)[0]
+            names_by_index = {i: n for n, i in names.items()}
+            names_by_index[-1] = pybullet.getBodyInfo(body, physicsClientId=client)[0].decode()
+    assert camera == "camera_link_optical"
     assert start[2] > 0.8  # on top of the pole, not at its foot
-    assert hit[0] != body, (camera, hit)
+    assert math.degrees(math.asin(-z[2])) == pytest.approx(72.0, abs=1.0)
+    assert hit[0] == body and names_by_index[hit[1]] == "table", hit
+    assert hit[4][2] > 0.99  # its top, seen from above
+    assert hit[3][0] == pytest.approx(0.59, abs=0.02)
 
 
 def test_a_camera_nothing_turns_looks_only_at_what_is_in_its_view(tmp_path: Path) -> None:
