@@ -149,10 +149,10 @@ def find_camera(
 
 def _looking_axis(axes: np.ndarray, optical: bool = True) -> str | None:
     """Which axis of a frame (rotation ``axes`` in the root link) looks ahead: ``"z"`` (an
-    optical frame), ``"x"`` (ROS body convention), or None. A frame not named ``optical``
-    whose x looks ahead and down while its z looks up is read by the body convention: a
-    camera tilted steeply down onto a workspace (Tracy's ``camera_link``, 72 degrees), not
-    an optical frame looking over it."""
+    optical frame), ``"x"`` (ROS body convention), or None. A camera frame (named like
+    one) not named ``optical`` (``optical`` False) whose x looks ahead and down while its z
+    looks up is read by the body convention: a camera tilted steeply down onto a workspace
+    (Tracy's ``camera_link``, 72 degrees), not an optical frame looking over it."""
     z_ahead, x_ahead = float(axes[0, 2]), float(axes[0, 0])
     if not optical and x_ahead > 0.0 and float(axes[2, 0]) < 0.0 < float(axes[2, 2]):
         return "x"
@@ -205,7 +205,7 @@ def _given_optics(
     pose = link_poses(tree.model, parked)[frame]
     axes = pose.matrix()[:3, :3]
     z_ahead, x_ahead = float(axes[0, 2]), float(axes[0, 0])
-    looking = _looking_axis(axes, "optical" in frame.lower())
+    looking = _looking_axis(axes)  # a link given or inferred keeps no camera convention
     if looking == "z":
         return None, found + "; optical: z looks forward, the arms parked", doubt
     if looking == "x":
