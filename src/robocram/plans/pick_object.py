@@ -15,6 +15,7 @@ could not raise it over the drawer's front panel, and no delivery could start.
 
 from __future__ import annotations
 
+import contextlib
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -160,6 +161,15 @@ def _lifted_out(
     return replace(choice, lift=lift)
 
 
+@dataclass
+class _WayOut:
+    """The pre-grasp a hand came in from, while a failed try left it at its grasp (in a
+    drawer, round the object); ``arm`` None while every hand is out at a pre-grasp."""
+
+    arm: str | None = None
+    pre_grasp: PoseStamped | None = None
+
+
 def _try_grasp(
     robot: KnownRobot,
     name: str,
@@ -167,9 +177,13 @@ def _try_grasp(
     choice: ObjectGrasp,
     object_in_map: Pose | None,
     lift: bool = True,
+    way_out: _WayOut | None = None,
 ) -> Held:
+    way_out = way_out or _WayOut()
     _opened_at(arm, choice.pre_grasp)
+    way_out.arm = None
     _move(arm, choice.grasp_pose, **GRASPING, touching=name)
+    way_out.arm, way_out.pre_grasp = arm, choice.pre_grasp
     choice = _gripped(arm, name, choice)
     if lift:
         _lifted(arm, choice.lift, name)
@@ -265,6 +279,19 @@ def _shifted(choice: ObjectGrasp, shift: tuple[float, float, float]) -> ObjectGr
     return replace(choice, grasp_pose=moved(choice.grasp_pose), lift=moved(choice.lift))
 
 
+def _back_out(name: str, way_out: _WayOut) -> None:
+    """Take a hand that the last failed try left at its grasp back out to its pre-grasp,
+    open: parking or driving from a grasp deep in a drawer ran into the drawer above in
+    every plan (the Stretch's fingers round a cup its grip met on one side, every later
+    motion blocked). Best effort: what still fails is the next step's to name."""
+    if way_out.arm is None or way_out.pre_grasp is None:
+        return
+    with contextlib.suppress(GripperLowLevelFailure):
+        perform(a.motion(type="opening", gripper=way_out.arm))
+    with contextlib.suppress(ManipulationLowLevelFailure):
+        _move(way_out.arm, way_out.pre_grasp, **GRASPING, touching=name)
+
+
 def grasp_object(
     object: ObjectDesignator | str,  # noqa: A002 - CRAM's key
     arm: str | None = None,
@@ -295,6 +322,7 @@ def pick_up_object(
     robot = current_robot()
     name, spec, pose = object_spec(object)
     causes: list[Exception] = []
+    way_out = _WayOut()
     arms = arms_nearest_first(robot, pose, arm)
     for choice_arm in arms:
         try:
@@ -308,11 +336,12 @@ def pick_up_object(
             try:
                 if lift and out_of is not None:
                     choice = _lifted_out(robot, name, choice_arm, choice, out_of)
-                return _try_grasp(robot, name, choice_arm, choice, pose, lift)
+                return _try_grasp(robot, name, choice_arm, choice, pose, lift, way_out)
             except TRIES as failure:
                 causes.append(failure)
             except PickUpFailed as failure:
                 causes.append(failure)
+    _back_out(name, way_out)
     unreachable = bool(causes) and all(isinstance(c, ManipulationPoseUnreachable) for c in causes)
     raise (PickUpUnreachable if unreachable else PickUpFailed)(
         f"no arm of {arms} picked up {name!r}"
