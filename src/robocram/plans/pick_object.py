@@ -15,6 +15,7 @@ could not raise it over the drawer's front panel, and no delivery could start.
 
 from __future__ import annotations
 
+import contextlib
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -265,6 +266,17 @@ def _shifted(choice: ObjectGrasp, shift: tuple[float, float, float]) -> ObjectGr
     return replace(choice, grasp_pose=moved(choice.grasp_pose), lift=moved(choice.lift))
 
 
+def _let_go(robot: KnownRobot, name: str) -> None:
+    """Open each hand that still grips ``name`` after the last try failed: a try whose
+    lift failed leaves it gripped where it lies, and only the next try's opening let it
+    go (Boxy's right hand kept a spoon its lift could not raise out of an east drawer,
+    parked with it and drove on; no stand then saw it in the drawer). Best effort."""
+    for arm, held in robot.held_objects(robot.grasping_arms()).items():
+        if held == name:
+            with contextlib.suppress(GripperLowLevelFailure):
+                perform(a.motion(type="opening", gripper=arm))
+
+
 def grasp_object(
     object: ObjectDesignator | str,  # noqa: A002 - CRAM's key
     arm: str | None = None,
@@ -313,6 +325,7 @@ def pick_up_object(
                 causes.append(failure)
             except PickUpFailed as failure:
                 causes.append(failure)
+    _let_go(robot, name)
     unreachable = bool(causes) and all(isinstance(c, ManipulationPoseUnreachable) for c in causes)
     raise (PickUpUnreachable if unreachable else PickUpFailed)(
         f"no arm of {arms} picked up {name!r}"
