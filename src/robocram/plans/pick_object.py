@@ -279,6 +279,17 @@ def _shifted(choice: ObjectGrasp, shift: tuple[float, float, float]) -> ObjectGr
     return replace(choice, grasp_pose=moved(choice.grasp_pose), lift=moved(choice.lift))
 
 
+def _let_go(robot: KnownRobot, name: str) -> None:
+    """Open each hand that still grips ``name`` after the last try failed: a try whose
+    lift failed leaves it gripped where it lies, and only the next try's opening let it
+    go (Boxy's right hand kept a spoon its lift could not raise out of an east drawer,
+    parked with it and drove on; no stand then saw it in the drawer). Best effort."""
+    for arm, held in robot.held_objects(robot.grasping_arms()).items():
+        if held == name:
+            with contextlib.suppress(GripperLowLevelFailure):
+                perform(a.motion(type="opening", gripper=arm))
+
+
 def _back_out(name: str, way_out: _WayOut) -> None:
     """Take a hand that the last failed try left at its grasp back out to its pre-grasp,
     open: parking or driving from a grasp deep in a drawer ran into the drawer above in
@@ -341,6 +352,7 @@ def pick_up_object(
                 causes.append(failure)
             except PickUpFailed as failure:
                 causes.append(failure)
+    _let_go(robot, name)
     _back_out(name, way_out)
     unreachable = bool(causes) and all(isinstance(c, ManipulationPoseUnreachable) for c in causes)
     raise (PickUpUnreachable if unreachable else PickUpFailed)(

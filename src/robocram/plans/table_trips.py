@@ -10,6 +10,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 from robocram.designators import LocationDesignator, a
+from robocram.designators.errors import GroundingError
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.bringing import Visit, find, wanted_object
 from robocram.plans.deliver import deliver
@@ -20,6 +21,9 @@ from robocram.plans.table_arrangement import Spot, Table
 
 SPOT_AREA = 0.3  # [m] side of the square searched round a spot
 SPOT_RESOLUTION = 0.01  # [m] cells of that square: a spot is met within about a cell
+WIDE_SPOT_AREA = 0.5  # [m] the square, where the first had no cell at all: a thing held
+# turned has wider bounds, and their half diagonal plus the margin kept free round it no
+# longer fits in half of :data:`SPOT_AREA` (the square's edge counts as taken)
 
 
 @dataclass
@@ -37,19 +41,30 @@ class TableSetting:
 
 
 def spot_location(
-    table: Table, spot: Spot, name: str, see_through: Sequence[str] = ()
+    table: Table,
+    spot: Spot,
+    name: str,
+    see_through: Sequence[str] = (),
+    size: float = SPOT_AREA,
 ) -> LocationDesignator:
-    """Where ``name`` goes: on the table, at ``spot`` (a fine costmap round it); the rays
-    look past the bodies ``see_through`` names (the robot, when it holds a second thing)."""
+    """Where ``name`` goes: on the table, at ``spot`` (a fine costmap round it, ``size`` [m]
+    a side); the rays look past the bodies ``see_through`` names (the robot, when it holds
+    a second thing)."""
     keys: dict[str, object] = {"see_through": tuple(see_through)} if see_through else {}
     return a.location(
         on=(table.environment, table.link),
         for_=name,
         at=spot.pose.position,
-        size=SPOT_AREA,
+        size=size,
         resolution=SPOT_RESOLUTION,
         **keys,
     )
+
+
+def no_cell(failure: DeliveryExhausted) -> bool:
+    """Whether ``failure`` met nothing but spots the location could not find: its costmap
+    had no cell, and no stand was tried."""
+    return bool(failure.causes) and all(isinstance(c, GroundingError) for c in failure.causes)
 
 
 def deliver_to_spot(held: Held, spot: Spot, done: TableSetting) -> None:
