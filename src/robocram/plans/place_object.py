@@ -87,10 +87,8 @@ def _move(arm: str, pose: Pose, **mode: str) -> None:
     perform(a.motion(type="moving-tcp", arm=arm, target=a.location(pose=target), **mode))
 
 
-def _retreat(robot: KnownRobot, held: Held, way_in: list[Pose]) -> None:
-    """Back the open hand off towards the wrist; park the arm if it cannot; if it cannot
-    park either, take the hand back the way it came in (``way_in``, map tool poses from
-    where the put started to the last one before the spot: :func:`_way_back`)."""
+def _retreat(robot: KnownRobot, held: Held) -> None:
+    """Back the open hand off towards the wrist; park the arm if it cannot."""
     wrist_link = robot.end_effector_link(held.arm)
     tool = transform_pose(PoseStamped(held.tool_frame), "map").pose
     back = (0.0, 0.0, 1.0)
@@ -106,25 +104,7 @@ def _retreat(robot: KnownRobot, held: Held, way_in: list[Pose]) -> None:
             return
         except (ManipulationLowLevelFailure, NavigationLowLevelFailure):
             continue  # a planar arm backs off with its base: a drive may be blocked too
-    try:
-        park_arms(held.arm)
-    except ManipulationLowLevelFailure:
-        if not _way_back(held, way_in):
-            raise
-
-
-def _way_back(held: Held, way_in: list[Pose]) -> bool:
-    """Take the open hand back through ``way_in`` in reverse; whether it got out. A PR2
-    that let the milk go under the fridge's shelf, reaching slanting past the open door at
-    the edge of its reach, could neither back off towards its wrist nor park (the parked
-    forearm in the door, every backoff dragging the hand through the fridge); the way it
-    came in was free with the carton in the hand, so it is free without it."""
-    try:
-        for pose in reversed(way_in):
-            _move(held.arm, pose, **GRASPING, touching=held.object_name)
-    except (ManipulationLowLevelFailure, NavigationLowLevelFailure):
-        return False
-    return True
+    park_arms(held.arm)
 
 
 def _back_to(held: Held, start: Pose) -> None:
@@ -164,24 +144,18 @@ def _settled(name: str, put: Pose, seconds: float) -> str | None:
     return None
 
 
-def _put_down(robot: KnownRobot, held: Held, put: Pose, start: Pose) -> None:
-    """Bring the hand over ``put`` and down to it, let go and back off; ``start`` (map) is
-    the tool's pose where the put began (this turn's way in starts there)."""
+def _put_down(robot: KnownRobot, held: Held, put: Pose) -> None:
     tool = put * held.object_in_tool.inverse()
-    here = transform_pose(PoseStamped(held.tool_frame), "map").pose
-    way_in = [start] if math.dist(here.position, start.position) < MOVED else [start, here]
     for height in CARRY_HEIGHTS:
         try:
-            above = _shifted(tool, 0.0, 0.0, height)
-            _move(held.arm, above, **GRASPING, touching=held.object_name)
-            way_in.append(above)
+            _move(held.arm, _shifted(tool, 0.0, 0.0, height), **GRASPING, touching=held.object_name)
             break
         except ManipulationLowLevelFailure:
             continue  # at the edge of its reach the arm comes in lower
     _move(held.arm, tool, **GRASPING, touching=held.object_name)
     perform(a.motion(type="opening", gripper=held.arm))
     try:
-        _retreat(robot, held, way_in)
+        _retreat(robot, held)
     except ManipulationLowLevelFailure as failure:  # let go already: no other turn to try
         raise PlacingFailed(
             f"{held.object_name!r} was let go but the {held.arm} hand could not back off",
@@ -214,7 +188,7 @@ def place_object(
     causes: list[Exception] = []
     for put in _object_targets(target):
         try:
-            _put_down(robot, held, put, start)
+            _put_down(robot, held, put)
         except ManipulationLowLevelFailure as failure:
             causes.append(failure)
             continue
