@@ -6,6 +6,7 @@ from the interface predicates in the current knowledge base.
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 from robocram.designators import ObjectDesignator, a, an
@@ -34,6 +35,8 @@ AHEAD = (1.0, 0.0, 0.0)  # the direction a robot looks in to drive, in its base 
 PARKING_BACKOFFS = ((-0.15, 0.0), (-0.45, 0.0), (0.0, 0.2), (0.0, -0.2), (-0.2, 0.2), (-0.2, -0.2))
 PARKING_LIFTS = (0.3, 0.15)  # [m] the hand rises this far (the first it can) when no backoff
 # helped: an arm low over an open drawer drags through its wall
+PARKING_PULLS = (0.3, 0.15)  # [m] the hand comes in towards the base (level, the first it
+# can) when rising did not help either: a hand left deep in a fridge at the edge of its reach
 
 
 def navigate(target: object) -> Any:
@@ -85,7 +88,11 @@ def _park(robot: KnownRobot, arm: str, states: list[list[object]]) -> None:
     low in an open drawer is dragged through its wall by every move, or by all but a short
     one that leaves the base too near the drawer (a Fetch beside a drawer it put a cup
     into: 15 cm back, the parked elbow still met it). The parking failure is raised when
-    every move was tried."""
+    every move was tried. When rising did not help either, the hand comes in towards the
+    base, level (:data:`PARKING_PULLS`), and the moves are tried once more: a PR2 that put
+    the milk under the fridge's shelf from beside its open door could not raise its hand
+    there, the parked forearm met the door and every move dragged the hand through the
+    fridge."""
     try:
         perform(a.motion(type="moving-arm-joints", arm=arm, configuration=states))
         return
@@ -99,6 +106,8 @@ def _park(robot: KnownRobot, arm: str, states: list[list[object]]) -> None:
             blocked = failure
     still = _park_backing_off(robot, arm, states, blocked)
     if still is not None and _lift_hand(robot, arm):
+        still = _park_backing_off(robot, arm, states, still)
+    if still is not None and _pull_hand_in(robot, arm):
         still = _park_backing_off(robot, arm, states, still)
     if still is not None:
         raise still
@@ -133,6 +142,27 @@ def _lift_hand(robot: KnownRobot, arm: str) -> bool:
         up = PoseStamped.from_pose("map", Pose((x, y, z + rise), tool.orientation))
         try:
             perform(a.motion(type="moving-tcp", arm=arm, target=a.location(pose=up)))
+        except ManipulationLowLevelFailure:
+            continue
+        return True
+    return False
+
+
+def _pull_hand_in(robot: KnownRobot, arm: str) -> bool:
+    """Bring ``arm``'s hand level towards the base's middle, its orientation kept, by the
+    first of :data:`PARKING_PULLS` it can; whether it moved."""
+    tool = transform_pose(PoseStamped(robot.tool_frame(arm)), "map").pose
+    base = transform_pose(PoseStamped(robot.base_frame()), "map").pose
+    x, y, z = tool.position
+    dx, dy = base.position[0] - x, base.position[1] - y
+    reach = math.hypot(dx, dy)
+    if reach < 1e-6:
+        return False
+    for pull in PARKING_PULLS:
+        k = min(pull, reach) / reach
+        inward = PoseStamped.from_pose("map", Pose((x + k * dx, y + k * dy, z), tool.orientation))
+        try:
+            perform(a.motion(type="moving-tcp", arm=arm, target=a.location(pose=inward)))
         except ManipulationLowLevelFailure:
             continue
         return True
