@@ -7,6 +7,7 @@ from the interface predicates in the current knowledge base.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 from typing import Any
 
 from robocram.designators import ObjectDesignator, a, an
@@ -138,14 +139,7 @@ def _lift_hand(robot: KnownRobot, arm: str) -> bool:
     :data:`PARKING_LIFTS` it can; whether it rose."""
     tool = transform_pose(PoseStamped(robot.tool_frame(arm)), "map").pose
     x, y, z = tool.position
-    for rise in PARKING_LIFTS:
-        up = PoseStamped.from_pose("map", Pose((x, y, z + rise), tool.orientation))
-        try:
-            perform(a.motion(type="moving-tcp", arm=arm, target=a.location(pose=up)))
-        except ManipulationLowLevelFailure:
-            continue
-        return True
-    return False
+    return _first_hand_move(arm, (Pose((x, y, z + r), tool.orientation) for r in PARKING_LIFTS))
 
 
 def _pull_hand_in(robot: KnownRobot, arm: str) -> bool:
@@ -158,11 +152,18 @@ def _pull_hand_in(robot: KnownRobot, arm: str) -> bool:
     reach = math.hypot(dx, dy)
     if reach < 1e-6:
         return False
-    for pull in PARKING_PULLS:
-        k = min(pull, reach) / reach
-        inward = PoseStamped.from_pose("map", Pose((x + k * dx, y + k * dy, z), tool.orientation))
+    shares = (min(pull, reach) / reach for pull in PARKING_PULLS)
+    return _first_hand_move(
+        arm, (Pose((x + k * dx, y + k * dy, z), tool.orientation) for k in shares)
+    )
+
+
+def _first_hand_move(arm: str, poses: Iterable[Pose]) -> bool:
+    """Move ``arm``'s tool to the first of ``poses`` (map) it reaches; whether it moved."""
+    for pose in poses:
+        target = a.location(pose=PoseStamped.from_pose("map", pose))
         try:
-            perform(a.motion(type="moving-tcp", arm=arm, target=a.location(pose=inward)))
+            perform(a.motion(type="moving-tcp", arm=arm, target=target))
         except ManipulationLowLevelFailure:
             continue
         return True
