@@ -344,6 +344,16 @@ def _placement_at(
     return TabletopPlacement(arm.name, height, (mug_x, wrist[1])), ""
 
 
+def grasp_in_reach_x(world: World, robot: str, arm: ArmDescription, spot: Vector3) -> float:
+    """The x [m, map] of an item's ``spot`` on a table top ``spot[2]`` [m] high, or nearer
+    where the wrist grasping it from above lies beyond :data:`PAST_RISE_SHARE` of the arm's
+    reach from the top of the rise at its shoulder (:func:`_past_rise_x`): a spot aside of
+    the mug, as far out, lies farther from the shoulder's axis than the mug."""
+    desc = world.robot(robot).description
+    wrist_z = spot[2] + _hand_length(desc, arm) + GRASP_HEIGHT
+    return _past_rise_x(world, robot, arm, (spot[0], spot[1], wrist_z))
+
+
 def _past_rise_x(world: World, robot: str, arm: ArmDescription, wrist: Vector3) -> float:
     """The x [m, map] of ``wrist``, or nearer where it lies beyond :data:`PAST_RISE_SHARE`
     of the arm's reach from the top of the rise along its first joint's axis

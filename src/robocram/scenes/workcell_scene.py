@@ -26,9 +26,11 @@ from robocram.scenes.errors import UnfitRobotError
 from robocram.scenes.placement import (
     MUG_INSET,
     TABLE_DEPTH,
+    grasp_in_reach_x,
+    placement_arm,
 )
 from robocram.scenes.table_robot import robot_at_a_table
-from robocram.tf import Pose, PoseStamped
+from robocram.tf import Pose, PoseStamped, Vector3
 from robocram.world import World
 
 WORKCELL = "workcell"  # the table's object name, the Env of its facts
@@ -86,23 +88,36 @@ def workcell_scene(robot: str | RobotDescription, world: World | None = None) ->
     table_x = mug_x - MUG_INSET + TABLE_DEPTH / 2
     side = max(SPREAD * mug_x, MIN_SPREAD)
     width = max(TABLE_WIDTH, 2 * (abs(mug_y) + side + 0.2))
+    bowl_x = _aside_x(world, name, (mug_x, mug_y - side, height))
     environment = EnvironmentDescription(
         WORKCELL,
-        _table_urdf(height, width, table_x - mug_x),
+        _table_urdf(height, width, table_x - (mug_x + bowl_x) / 2),
         (SurfaceDescription(TABLE_TOP, height),),
     )
-    middle = Pose((mug_x, mug_y - side / 2, height - FRAME_BELOW_TOP))  # mug and bowl
+    middle = Pose(((mug_x + bowl_x) / 2, mug_y - side / 2, height - FRAME_BELOW_TOP))
     world.add_urdf(WORKCELL, environment.urdf, middle, type="environment")
     world.kb.consult(environment.facts(WORKCELL), group=f"{WORKCELL}_semantics")
     items = (
-        ItemPlace("mug-1", "mug", TABLE_TOP, (0.0, side / 2)),
-        ItemPlace("bowl-1", "bowl", TABLE_TOP, (0.0, -side / 2)),
+        ItemPlace("mug-1", "mug", TABLE_TOP, ((mug_x - bowl_x) / 2, side / 2)),
+        ItemPlace("bowl-1", "bowl", TABLE_TOP, ((bowl_x - mug_x) / 2, -side / 2)),
     )
     objects = {p.name: place_item(world, WORKCELL, p) for p in items}
     world.kb.consult(
         usual_location_facts(environment, items, WORKCELL), group=f"{WORKCELL}_contents"
     )
     return EnvironmentScene(world, name, WORKCELL, objects)
+
+
+def _aside_x(world: World, robot: str, spot: Vector3) -> float:
+    """The x [m, map] of an item's ``spot`` aside of the mug (as far out as it, on the
+    table's top): as far out, or nearer where the hand grasping it there lies beyond the
+    arm's reach past the rise at its shoulder (:func:`~robocram.scenes.placement.
+    grasp_in_reach_x`: the SO-100's, 0.10 m over its pan), on the arc it reaches; never
+    farther out than the mug."""
+    arm = placement_arm(world.robot(robot).description)
+    if arm is None:
+        return spot[0]
+    return min(spot[0], grasp_in_reach_x(world, robot, arm, spot))
 
 
 def workcell_spots(scene: EnvironmentScene) -> dict[str, PoseStamped]:
@@ -112,7 +127,9 @@ def workcell_spots(scene: EnvironmentScene) -> dict[str, PoseStamped]:
     the tabletop pick-up's mug spot, and a step aside as far as the bowl lies."""
     mug = scene.world.pose(scene.items["mug-1"]).position
     bowl = scene.world.pose(scene.items["bowl-1"]).position
-    left = (mug[0], 2 * mug[1] - bowl[1], mug[2])
+    top = scene.world.pose(scene.environment).position[2] + FRAME_BELOW_TOP
+    left_y = 2 * mug[1] - bowl[1]
+    left = (_aside_x(scene.world, scene.robot, (mug[0], left_y, top)), left_y, mug[2])
     return {
         "mug-1": PoseStamped("map", left),
         "bowl-1": PoseStamped("map", (mug[0], mug[1], bowl[2])),
