@@ -11,7 +11,8 @@ checked, timed trajectory (planned round obstacles); a pose from which the robot
 links hide the target (rays from the camera) is taken only if no other is found. An arm
 too short of joints to hold a whole camera pose (the SO-101's five) is aimed joint by
 joint instead, as a head is (``joint_aim.py``), the camera staying where its joints take
-it (and, where that fails, aimed again from the arm at rest). IK is counted and seeded: the same look gives the same joints on any machine.
+it (where every look failed, aimed again from the arm at rest). IK is counted and
+seeded: the same look gives the same joints on any machine.
 """
 
 from __future__ import annotations
