@@ -38,6 +38,9 @@ TABLE_TOP = "table_top"  # its one link: the surface
 TABLE_WIDTH = 1.0  # [m] along y, at least: wider for a long arm's spots
 SPREAD = 0.25  # of the mug's distance ahead: the bowl lies this far right of the mug
 MIN_SPREAD = 0.15  # [m] at least: the bowl's rim (0.08 m) clear of the mug (0.044 m) and a hand
+ASIDE_SHARE = 0.95  # of the arm's reach past the rise at its shoulder: a spot aside whose
+# grasping wrist lies beyond it comes in to where the mug's does (placement.PAST_RISE_SHARE):
+# the SO-101 carries its bowl 0.935 of it out; the SO-100's spots lay 0.99 and 1.01 out
 FRAME_BELOW_TOP = 0.1  # [m] a search looks this far over a place's frame (search.LOOK_ABOVE):
 # so at the table's top, as the pick-up does; higher, a small arm's wrist camera hits its shoulder
 URDF_FOLDER = Path(tempfile.gettempdir()) / "robocram-workcells"
@@ -110,21 +113,22 @@ def workcell_scene(robot: str | RobotDescription, world: World | None = None) ->
 
 def _aside_x(world: World, robot: str, spot: Vector3) -> float:
     """The x [m, map] of an item's ``spot`` aside of the mug (as far out as it, on the
-    table's top): as far out, or nearer where the hand grasping it there lies beyond the
-    arm's reach past the rise at its shoulder (:func:`~robocram.scenes.placement.
-    grasp_in_reach_x`: the SO-100's, 0.10 m over its pan), on the arc it reaches; never
-    farther out than the mug."""
+    table's top): as far out, or nearer where the hand grasping it there lies beyond
+    :data:`ASIDE_SHARE` of the arm's reach past the rise at its shoulder (the SO-100's,
+    0.10 m over its pan): then on the arc the mug's wrist lies on
+    (:func:`~robocram.scenes.placement.grasp_in_reach_x`); never farther out than the mug."""
     arm = placement_arm(world.robot(robot).description)
     if arm is None:
         return spot[0]
-    return min(spot[0], grasp_in_reach_x(world, robot, arm, spot))
+    return min(spot[0], grasp_in_reach_x(world, robot, arm, spot, ASIDE_SHARE))
 
 
 def workcell_spots(scene: EnvironmentScene) -> dict[str, PoseStamped]:
     """Where the items of a workcell scene go (map), each as far ahead as it lies and its
     frame as high as it rests now: the mug as far to its left as the bowl lies to its
-    right, then the bowl where the mug stood. Both spots are in reach if the items are:
-    the tabletop pick-up's mug spot, and a step aside as far as the bowl lies."""
+    right (nearer, on the arc the hand reaches, where that lies beyond it: :func:`_aside_x`),
+    then the bowl where the mug stood. Both spots are in reach if the items are: the
+    tabletop pick-up's mug spot, and a step aside as far as the bowl lies."""
     mug = scene.world.pose(scene.items["mug-1"]).position
     bowl = scene.world.pose(scene.items["bowl-1"]).position
     top = scene.world.pose(scene.environment).position[2] + FRAME_BELOW_TOP
