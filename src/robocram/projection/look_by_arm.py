@@ -11,7 +11,8 @@ checked, timed trajectory (planned round obstacles); a pose from which the robot
 links hide the target (rays from the camera) is taken only if no other is found. An arm
 too short of joints to hold a whole camera pose (the SO-101's five) is aimed joint by
 joint instead, as a head is (``joint_aim.py``), the camera staying where its joints take
-it. IK is counted and seeded: the same look gives the same joints on any machine.
+it (where every look failed, aimed again from the arm at rest). IK is counted and
+seeded: the same look gives the same joints on any machine.
 """
 
 from __future__ import annotations
@@ -136,6 +137,12 @@ def look_by_arm(robot: ProjectedRobot, arm: str, target_in_map: Vector3) -> dict
             return _turn_arm(robot, arm, goal)
         except ManipulationPathBlocked as failure:
             blocked.append(failure)
+    rested = _aimed_from_rest(robot, arm, target)  # only once all else failed
+    if rested is not None and rested not in hidden:
+        try:
+            return _turn_arm(robot, arm, rested)
+        except ManipulationPathBlocked as failure:
+            blocked.append(failure)
     if blocked:
         raise look_blocked(robot, target_in_map, blocked[0], f"{arm} arm") from blocked[0]
     frame = robot.description.cameras[0].frame
@@ -198,6 +205,28 @@ def _aimed_goal(robot: ProjectedRobot, arm: str, target: np.ndarray) -> dict[str
     wanted = aimed_joints(robot, axes, target)
     goal = {j: world.bodies.joint_limits(robot.name, j).clamp(v) for j, v in wanted.items()}
     return None if _off_axis(robot, goal, target) > AIM_TOLERANCE else goal
+
+
+def _aimed_from_rest(
+    robot: ProjectedRobot, arm: str, target: np.ndarray
+) -> dict[str, float] | None:
+    """:func:`_aimed_goal` with the arm's joints first at rest (0, within limits), or None:
+    aimed one by one, the joints keep what they start from, and the SO-100's, aimed from
+    its parked pose at its workcell's bowl 38 degrees aside, folded its forearm into its
+    base, while from rest it saw the whole bowl. Asked only after every other look failed;
+    the arm is where it was after."""
+    world = robot.world
+    joints = [j for j in robot.arm(arm).joints if j in world.joint_states(robot.name)]
+    before = {j: world.joint_states(robot.name)[j] for j in joints}
+    rest = {j: world.bodies.joint_limits(robot.name, j).clamp(0.0) for j in joints}
+    if rest == before:
+        return None  # already tried from there
+    world.set_joint_states(robot.name, rest)
+    try:
+        goal = _aimed_goal(robot, arm, target)
+    finally:
+        world.set_joint_states(robot.name, before)
+    return goal
 
 
 def _off_axis(robot: ProjectedRobot, goal: dict[str, float], target: np.ndarray) -> float:

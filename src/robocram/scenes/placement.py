@@ -344,18 +344,37 @@ def _placement_at(
     return TabletopPlacement(arm.name, height, (mug_x, wrist[1])), ""
 
 
-def _past_rise_x(world: World, robot: str, arm: ArmDescription, wrist: Vector3) -> float:
-    """The x [m, map] of ``wrist``, or nearer where it lies beyond :data:`PAST_RISE_SHARE`
-    of the arm's reach from the top of the rise along its first joint's axis
-    (:mod:`robocram.robots.arm_rise`): as far out as that share reaches, the wrist's y and
-    z kept. Where no x fits, as before."""
+def grasp_in_reach_x(
+    world: World, robot: str, arm: ArmDescription, spot: Vector3, beyond: float
+) -> float:
+    """The x [m, map] of an item's ``spot`` on a table top ``spot[2]`` [m] high, or nearer
+    where the wrist grasping it from above lies beyond ``beyond`` of the arm's reach from
+    the top of the rise at its shoulder: then as far out as :data:`PAST_RISE_SHARE` of it
+    (:func:`_past_rise_x`). A spot aside of the mug, as far out, lies farther from the
+    shoulder's axis than the mug."""
+    desc = world.robot(robot).description
+    wrist_z = spot[2] + _hand_length(desc, arm) + GRASP_HEIGHT
+    return _past_rise_x(world, robot, arm, (spot[0], spot[1], wrist_z), beyond)
+
+
+def _past_rise_x(
+    world: World,
+    robot: str,
+    arm: ArmDescription,
+    wrist: Vector3,
+    beyond: float = PAST_RISE_SHARE,
+) -> float:
+    """The x [m, map] of ``wrist``, or nearer where it lies beyond ``beyond`` of the arm's
+    reach from the top of the rise along its first joint's axis
+    (:mod:`robocram.robots.arm_rise`): then as far out as :data:`PAST_RISE_SHARE` of it
+    reaches, the wrist's y and z kept. Where no x fits, as before."""
     desc = world.robot(robot).description
     shape = arm_rise(desc.model, arm, _joints_for_torso(desc, arm))
     turn = Pose(orientation=world.pose(robot).orientation)
     shoulder, rise = _shoulder_in_map(world, robot, arm), (turn * Pose(shape.rise)).position
     top = (shoulder[0] + rise[0], shoulder[1] + rise[1], shoulder[2] + rise[2])
     room = PAST_RISE_SHARE * shape.reach
-    if math.dist(top, wrist) <= room:
+    if math.dist(top, wrist) <= max(beyond * shape.reach, room):
         return wrist[0]
     left = room**2 - (wrist[1] - top[1]) ** 2 - (wrist[2] - top[2]) ** 2
     return top[0] + math.sqrt(left) if left > 0.0 else wrist[0]

@@ -26,9 +26,11 @@ from robocram.scenes.errors import UnfitRobotError
 from robocram.scenes.placement import (
     MUG_INSET,
     TABLE_DEPTH,
+    grasp_in_reach_x,
+    placement_arm,
 )
 from robocram.scenes.table_robot import robot_at_a_table
-from robocram.tf import Pose, PoseStamped
+from robocram.tf import Pose, PoseStamped, Vector3
 from robocram.world import World
 
 WORKCELL = "workcell"  # the table's object name, the Env of its facts
@@ -36,6 +38,9 @@ TABLE_TOP = "table_top"  # its one link: the surface
 TABLE_WIDTH = 1.0  # [m] along y, at least: wider for a long arm's spots
 SPREAD = 0.25  # of the mug's distance ahead: the bowl lies this far right of the mug
 MIN_SPREAD = 0.15  # [m] at least: the bowl's rim (0.08 m) clear of the mug (0.044 m) and a hand
+ASIDE_SHARE = 0.95  # of the arm's reach past the rise at its shoulder: a spot aside whose
+# grasping wrist lies beyond it comes in to where the mug's does (placement.PAST_RISE_SHARE):
+# the SO-101 carries its bowl 0.935 of it out; the SO-100's spots lay 0.99 and 1.01 out
 FRAME_BELOW_TOP = 0.1  # [m] a search looks this far over a place's frame (search.LOOK_ABOVE):
 # so at the table's top, as the pick-up does; higher, a small arm's wrist camera hits its shoulder
 URDF_FOLDER = Path(tempfile.gettempdir()) / "robocram-workcells"
@@ -86,17 +91,18 @@ def workcell_scene(robot: str | RobotDescription, world: World | None = None) ->
     table_x = mug_x - MUG_INSET + TABLE_DEPTH / 2
     side = max(SPREAD * mug_x, MIN_SPREAD)
     width = max(TABLE_WIDTH, 2 * (abs(mug_y) + side + 0.2))
+    bowl_x = _aside_x(world, name, (mug_x, mug_y - side, height))
     environment = EnvironmentDescription(
         WORKCELL,
-        _table_urdf(height, width, table_x - mug_x),
+        _table_urdf(height, width, table_x - (mug_x + bowl_x) / 2),
         (SurfaceDescription(TABLE_TOP, height),),
     )
-    middle = Pose((mug_x, mug_y - side / 2, height - FRAME_BELOW_TOP))  # mug and bowl
+    middle = Pose(((mug_x + bowl_x) / 2, mug_y - side / 2, height - FRAME_BELOW_TOP))
     world.add_urdf(WORKCELL, environment.urdf, middle, type="environment")
     world.kb.consult(environment.facts(WORKCELL), group=f"{WORKCELL}_semantics")
     items = (
-        ItemPlace("mug-1", "mug", TABLE_TOP, (0.0, side / 2)),
-        ItemPlace("bowl-1", "bowl", TABLE_TOP, (0.0, -side / 2)),
+        ItemPlace("mug-1", "mug", TABLE_TOP, ((mug_x - bowl_x) / 2, side / 2)),
+        ItemPlace("bowl-1", "bowl", TABLE_TOP, ((bowl_x - mug_x) / 2, -side / 2)),
     )
     objects = {p.name: place_item(world, WORKCELL, p) for p in items}
     world.kb.consult(
@@ -105,14 +111,29 @@ def workcell_scene(robot: str | RobotDescription, world: World | None = None) ->
     return EnvironmentScene(world, name, WORKCELL, objects)
 
 
+def _aside_x(world: World, robot: str, spot: Vector3) -> float:
+    """The x [m, map] of an item's ``spot`` aside of the mug (as far out as it, on the
+    table's top): as far out, or nearer where the hand grasping it there lies beyond
+    :data:`ASIDE_SHARE` of the arm's reach past the rise at its shoulder (the SO-100's,
+    0.10 m over its pan): then on the arc the mug's wrist lies on
+    (:func:`~robocram.scenes.placement.grasp_in_reach_x`); never farther out than the mug."""
+    arm = placement_arm(world.robot(robot).description)
+    if arm is None:
+        return spot[0]
+    return min(spot[0], grasp_in_reach_x(world, robot, arm, spot, ASIDE_SHARE))
+
+
 def workcell_spots(scene: EnvironmentScene) -> dict[str, PoseStamped]:
     """Where the items of a workcell scene go (map), each as far ahead as it lies and its
     frame as high as it rests now: the mug as far to its left as the bowl lies to its
-    right, then the bowl where the mug stood. Both spots are in reach if the items are:
-    the tabletop pick-up's mug spot, and a step aside as far as the bowl lies."""
+    right (nearer, on the arc the hand reaches, where that lies beyond it: :func:`_aside_x`),
+    then the bowl where the mug stood. Both spots are in reach if the items are: the
+    tabletop pick-up's mug spot, and a step aside as far as the bowl lies."""
     mug = scene.world.pose(scene.items["mug-1"]).position
     bowl = scene.world.pose(scene.items["bowl-1"]).position
-    left = (mug[0], 2 * mug[1] - bowl[1], mug[2])
+    top = scene.world.pose(scene.environment).position[2] + FRAME_BELOW_TOP
+    left_y = 2 * mug[1] - bowl[1]
+    left = (_aside_x(scene.world, scene.robot, (mug[0], left_y, top)), left_y, mug[2])
     return {
         "mug-1": PoseStamped("map", left),
         "bowl-1": PoseStamped("map", (mug[0], mug[1], bowl[2])),
