@@ -21,8 +21,8 @@ MILK_14 = Pose((0.00064, -1.40278, 0.84961), (0.00015927, 0.0000093, 0.96228867,
 
 def test_the_pr2_lets_the_milk_go_under_the_fridge_shelf_and_takes_its_hand_back_out() -> None:
     """Its left hand, slanting past the open door at the edge of its reach, let the carton
-    go on the shelf and could neither back off towards its wrist nor park: it goes back the
-    way it came in, and the fridge is closed again."""
+    go on the shelf and could neither back off towards its wrist nor park, nor rise: the
+    hand comes in level towards the base, the arm parks, and the fridge is closed again."""
     scene = breakfast_scene("pr2")
     world = scene.world
     cid = world.physics.client()
