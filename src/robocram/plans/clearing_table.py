@@ -197,27 +197,29 @@ def _taken_otherwise(
     name = held.object_name
     first = held.grasp
     deliver(held, was, held.arm, log=done.log)  # from where it stands: the pick undone
-    failure = _by_other_grasps(name, kind, place, done, first, failure)
+    others = [grasp for grasp in grasps_of(name) if grasp != first]
+    failure = _by_grasps(name, kind, place, done, others, failure)
     if failure is None:
         return
     if not _squared(name, kind, first, done):
         raise failure
-    failure = _by_other_grasps(name, kind, place, done, first, failure)
+    failure = _by_grasps(name, kind, place, done, [*others, first], failure)  # turned now
     if failure is not None:
         raise failure
 
 
-def _by_other_grasps(
-    name: str, kind: str, place: Place, done: TableClearing, first: str, failure: PlanFailure
+def _by_grasps(
+    name: str,
+    kind: str,
+    place: Place,
+    done: TableClearing,
+    grasps: list[str],
+    failure: PlanFailure,
 ) -> PlanFailure | None:
-    """Take ``name`` by each grasp but ``first``, any hand, until one puts it back in
+    """Take ``name`` by each of ``grasps`` in turn, any hand, until one puts it back in
     ``place`` (None); else the last failure met (``failure`` if none was), the thing put
     down again where it lay."""
-    tried = {first}
-    for grasp in grasps_of(name):
-        if grasp in tried:
-            continue
-        tried.add(grasp)
+    for grasp in grasps:
         was = map_pose(name)
         seen = an.object(type=kind, name=name, pose=PoseStamped.from_pose("map", was))
         try:
