@@ -37,9 +37,10 @@ from robocram.plans.fetch import fetch
 from robocram.plans.known_robot import current_robot
 from robocram.plans.location_poses import location_poses
 from robocram.plans.pick_object import Held
+from robocram.plans.place_object import place_object
 from robocram.plans.search import LOOK_ABOVE, Place, search
 from robocram.plans.setting_table import SPOT_AREA, SPOT_RESOLUTION
-from robocram.plans.stands import map_pose
+from robocram.plans.stands import map_pose, yaw_of
 from robocram.plans.table_arrangement import Table, table_with_seats
 from robocram.tf import Pose, PoseStamped, transform_pose
 from robocram.tf import quaternion as quat
@@ -186,18 +187,39 @@ def _taken_otherwise(
     it down where it was (``was``, map) and take it by each other grasp the KB has for it,
     any hand, until one puts it back in ``place``. A carton taken from above on a table
     has no room for the hand under a fridge's shelf; taken from the side, it slides in.
+    When no other grasp did, it is put down square to the robot (:func:`_squared`) and
+    the other grasps are tried once more.
 
     Raises:
         PlanFailure: the last failure met (``failure``, the first grasp's delivery, if no
             other grasp took it), the thing put down where it was.
     """
     name = held.object_name
-    tried = {held.grasp}
+    first = held.grasp
     deliver(held, was, held.arm, log=done.log)  # from where it stands: the pick undone
-    for grasp in grasps_of(name):
-        if grasp in tried:
-            continue
-        tried.add(grasp)
+    others = [grasp for grasp in grasps_of(name) if grasp != first]
+    failure = _by_grasps(name, kind, place, done, others, failure)
+    if failure is None:
+        return
+    if not _squared(name, kind, first, done):
+        raise failure
+    failure = _by_grasps(name, kind, place, done, [*others, first], failure)  # turned now
+    if failure is not None:
+        raise failure
+
+
+def _by_grasps(
+    name: str,
+    kind: str,
+    place: Place,
+    done: TableClearing,
+    grasps: list[str],
+    failure: PlanFailure,
+) -> PlanFailure | None:
+    """Take ``name`` by each of ``grasps`` in turn, any hand, until one puts it back in
+    ``place`` (None); else the last failure met (``failure`` if none was), the thing put
+    down again where it lay."""
+    for grasp in grasps:
         was = map_pose(name)
         seen = an.object(type=kind, name=name, pose=PoseStamped.from_pose("map", was))
         try:
@@ -207,12 +229,35 @@ def _taken_otherwise(
             continue
         try:
             _deliver_back(again, place, kind, done.log)
-            return
+            return None
         except DeliveryExhausted as missed:
             failure = missed
             if _holds(again):
                 deliver(again, was, again.arm, log=done.log)
-    raise failure
+    return failure
+
+
+def _squared(name: str, kind: str, grasp: str, done: TableClearing) -> bool:
+    """Whether ``name``, taken again by ``grasp`` (the one that first took it), was put
+    down where it lies, square to the robot's base (its sides facing the stand, each
+    turn of :data:`place_object.TURNS` tried). A carton put down turned 50 degrees, as the
+    hand carried it back from a fridge, offered no stand its side grasps (Boxy, seeded
+    households 2, 5 and 9); square, one faces the robot. False: not taken, or not put
+    down square (then put down where it lay, as held)."""
+    lay = map_pose(name)
+    seen = an.object(type=kind, name=name, pose=PoseStamped.from_pose("map", lay))
+    try:
+        held = fetch(seen, grasp=grasp, log=done.log)
+    except PlanFailure:
+        return False
+    square = quat.from_euler(0.0, 0.0, yaw_of(map_pose(current_robot().base_frame())))
+    try:
+        place_object(held, PoseStamped.from_pose("map", Pose(lay.position, square)), held.arm)
+    except PlanFailure:
+        if _holds(held):
+            deliver(held, lay, held.arm, log=done.log)
+        return False
+    return True
 
 
 def _holds(held: Held) -> bool:
