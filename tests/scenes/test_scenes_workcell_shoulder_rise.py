@@ -21,12 +21,10 @@ import pytest
 from robocram.designators import an
 from robocram.plans import perform
 from robocram.projection import simulated_robot
-from robocram.robots import draft_description, example_robot_data_folder
 from robocram.scenes import workcell_scene, workcell_spots
-from robocram.scenes.placement import PAST_RISE_SHARE, WRIST_BELOW_SHOULDER
+from robocram.scenes.placement import WRIST_BELOW_SHOULDER
+from tests.so100_rise import drafted_so100, rise
 
-SO100 = "so_arm_description/urdf/so100.urdf"
-FOREARMS = 0.311  # [m] the lift joint to the wrist, stretched (the URDF's origins, by hand)
 ASIDE = 0.14  # [m] the bowl and the mug's spot lie at least this far aside of the mug
 PLACED = 0.02  # [m] an item put down lies this near its spot, across the table
 SETTLED = 0.01  # [m] and as high as it rested before
@@ -40,23 +38,13 @@ def _position(client: int, body: int) -> tuple[float, float, float]:
 def test_the_so100_carries_the_mug_then_the_bowl_within_reach_past_its_rise(
     tmp_path: Path,
 ) -> None:
-    module = tmp_path / "so100.py"
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        urdf = example_robot_data_folder() / SO100
-        module.write_text(draft_description(urdf).source(module), "utf-8")
-        scene = workcell_scene(str(module))
+        scene = workcell_scene(drafted_so100(tmp_path))
     world = scene.world
     try:
         client, body = world.physics.client(), world.object(scene.robot).body_id
-        links = {
-            pybullet.getJointInfo(body, i, physicsClientId=client)[12].decode(): i
-            for i in range(pybullet.getNumJoints(body, physicsClientId=client))
-        }
-        pan = pybullet.getLinkState(body, links["shoulder"], physicsClientId=client)[4]
-        lift = pybullet.getLinkState(body, links["upper_arm"], physicsClientId=client)[4]
-        top = (pan[0], pan[1], lift[2])  # the pan's axis is vertical: the top of the rise
-        room = PAST_RISE_SHARE * (FOREARMS + math.hypot(lift[0] - pan[0], lift[1] - pan[1]))
+        pan, top, room = rise(body, client)
         items = {n: world.object(n).body_id for n in ("mug-1", "bowl-1")}
         before = {n: _position(client, b) for n, b in items.items()}
         spots = workcell_spots(scene)
