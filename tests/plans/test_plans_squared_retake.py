@@ -8,13 +8,10 @@ import math
 import pybullet
 
 from robocram.plans.clearing_table import TableClearing, _squared
-from robocram.plans.table_arrangement import STANDARD_SETTING, spots, table_with_seats
 from robocram.projection import simulated_robot
 from robocram.scenes.breakfast_scene import breakfast_scene
-from robocram.tf import Pose
-from robocram.tf import quaternion as quat
+from tests.milk_checks import TABLE_TOP, milk_on_its_spot
 
-TABLE_TOP = 0.75  # [m] the kitchen table's top
 TURNED = math.radians(50.0)  # [rad] how Boxy's hand left the milk in households 2, 5, 9
 
 
@@ -28,13 +25,8 @@ def test_boxy_puts_a_turned_carton_down_square_to_its_base() -> None:
     cid = world.physics.client()
     try:
         with simulated_robot(world, scene.robot):
-            table = table_with_seats(None)
-            spot = next(s for s in spots(table, 2, STANDARD_SETTING, ("milk",)) if s.type == "milk")
-            x, y, _ = spot.pose.position
-            low, _ = world.aabb("milk-1")
-            lift = world.pose("milk-1").position[2] - low[2]
-            turned = quat.multiply(spot.pose.orientation, quat.from_euler(0.0, 0.0, TURNED))
-            world.set_pose("milk-1", Pose((x, y, TABLE_TOP + lift + 0.001), turned))
+            table, lay = milk_on_its_spot(world, TURNED)
+            x, y, _ = lay.position
             assert _squared("milk-1", "milk", "top", TableClearing(table))
         milk = world.object("milk-1").body_id
         robot = world.object(scene.robot).body_id
