@@ -198,14 +198,14 @@ def _taken_otherwise(
     first = held.grasp
     deliver(held, was, held.arm, log=done.log)  # from where it stands: the pick undone
     others = [grasp for grasp in grasps_of(name) if grasp != first]
-    failure = _by_grasps(name, kind, place, done, others, failure)
-    if failure is None:
+    last = _by_grasps(name, kind, place, done, others, failure)
+    if last is None:
         return
     if not _squared(name, kind, first, done):
-        raise failure
-    failure = _by_grasps(name, kind, place, done, [*others, first], failure)  # turned now
-    if failure is not None:
-        raise failure
+        raise last
+    last = _by_grasps(name, kind, place, done, [*others, first], last)  # turned now
+    if last is not None:
+        raise last
 
 
 def _by_grasps(

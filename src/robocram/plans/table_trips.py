@@ -64,7 +64,8 @@ def spot_location(
 def no_cell(failure: DeliveryExhausted) -> bool:
     """Whether ``failure`` met nothing but spots the location could not find: its costmap
     had no cell, and no stand was tried."""
-    return bool(failure.causes) and all(isinstance(c, GroundingError) for c in failure.causes)
+    causes = failure.causes or ()
+    return bool(causes) and all(isinstance(c, GroundingError) for c in causes)
 
 
 def deliver_to_spot(held: Held, spot: Spot, done: TableSetting) -> None:

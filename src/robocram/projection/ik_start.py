@@ -164,11 +164,11 @@ class IKStart:
             self._kept.update((n, found[n]) for _, n in still if n in found)
             self._bounds = {i: bounds[i] for i, _ in still}
         hits: dict[LinkPair, None] = {}
-        still = self.alone and not base_moves
+        resting = self.alone and not base_moves  # links it leaves where they were
         for i, link in colliders.items():
             if link not in allowed:
                 touched = found[link] if link in found else self._kept[link]
-                if still and i not in moved:
+                if resting and i not in moved:
                     touched = [p for p in touched if not self._rests_on(body, link, p[1])]
                 hits.update(dict.fromkeys(touched))
         return hits, self_contacts(world, body, pairs, self.distance, bounds)
