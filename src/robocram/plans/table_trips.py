@@ -68,17 +68,36 @@ def no_cell(failure: DeliveryExhausted) -> bool:
     return bool(causes) and all(isinstance(c, GroundingError) for c in causes)
 
 
+def deliver_at_spot(
+    held: Held,
+    spot: Spot,
+    done: TableSetting,
+    see_through: Sequence[str] = (),
+    reach_stands: bool = False,
+) -> None:
+    """Put ``held`` at ``spot`` (the table seen past ``see_through``), in the square of
+    :data:`WIDE_SPOT_AREA` where the first had no cell at all: a thing held turned needs
+    more room round its spot (Boxy's bowl held 16 degrees turned)."""
+    where = spot_location(done.table, spot, held.object_name, see_through)
+    try:
+        deliver(held, where, held.arm, log=done.log, reach_stands=reach_stands)
+    except DeliveryExhausted as failure:
+        if not no_cell(failure):
+            raise
+        wide = spot_location(done.table, spot, held.object_name, see_through, WIDE_SPOT_AREA)
+        deliver(held, wide, held.arm, log=done.log, reach_stands=reach_stands)
+
+
 def deliver_to_spot(held: Held, spot: Spot, done: TableSetting) -> None:
     """Put ``held`` at ``spot`` from the stands that hold it over the spot as the arm
     holds it now; where none did, again, then from those the arm reaches the spot from by
     IK: Boxy's bowl, taken by its rim nearer its drawer's middle, hangs in front of its
     chest when carried, and every stand holding it so over the table put the other,
     parked hand into the table."""
-    where = spot_location(done.table, spot, held.object_name)
     try:
-        deliver(held, where, held.arm, log=done.log)
+        deliver_at_spot(held, spot, done)
     except DeliveryExhausted:
-        deliver(held, where, held.arm, log=done.log, reach_stands=True)
+        deliver_at_spot(held, spot, done, reach_stands=True)
 
 
 def bring_one(spot: Spot, visit: Visit, done: TableSetting) -> Held:

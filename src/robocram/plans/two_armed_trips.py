@@ -26,20 +26,16 @@ from robocram.execution import perform
 from robocram.execution.failures import ManipulationLowLevelFailure, PlanFailure
 from robocram.plans.basic_actions import navigate, park_arms
 from robocram.plans.bringing import Visit, find, find_in_place, wanted_object
-from robocram.plans.deliver import deliver
-from robocram.plans.errors import DeliveryExhausted
 from robocram.plans.fetch import fetch
 from robocram.plans.known_robot import current_robot
 from robocram.plans.pick_object import GRASPING, Held
 from robocram.plans.stands import map_pose, planar_pose, yaw_of
 from robocram.plans.table_arrangement import Spot
 from robocram.plans.table_trips import (
-    WIDE_SPOT_AREA,
     TableSetting,
     bring_one,
+    deliver_at_spot,
     deliver_to_spot,
-    no_cell,
-    spot_location,
 )
 from robocram.tf import Pose, PoseStamped, transform_pose
 
@@ -105,17 +101,7 @@ def _put(held: Held, spot: Spot, done: TableSetting) -> None:
     After the stands that hold it over the spot as the arm holds it now come those from
     which the arm reaches the spot: a thing picked up close to the body (a cup from a
     drawer's back) would put the other shoulder into the table."""
-    robot = current_robot().name
-    where = spot_location(done.table, spot, held.object_name, see_through=(robot,))
-    try:
-        deliver(held, where, held.arm, log=done.log, reach_stands=True)
-    except DeliveryExhausted as failure:  # a thing held turned: its bounds need more room
-        if not no_cell(failure):
-            raise
-        wide = spot_location(
-            done.table, spot, held.object_name, see_through=(robot,), size=WIDE_SPOT_AREA
-        )
-        deliver(held, wide, held.arm, log=done.log, reach_stands=True)
+    deliver_at_spot(held, spot, done, see_through=(current_robot().name,), reach_stands=True)
     done.placed[held.object_name] = spot
 
 
