@@ -135,7 +135,12 @@ def _overlaps_in(
 ) -> Iterator[tuple[str, WorldObject, int, int, str]]:
     """:func:`_overlaps` against bounds read before (one comparison for all links)."""
     order = list(indices.items())
-    boxes = box_table([_bounds_of(obj, index, bounds, cid) for index, _ in order])
+    if bounds is None and not obj.parts:  # one body, nothing read before: ask it directly
+        body, aabb = obj.body_id, pybullet.getAABB
+        read = [aabb(body, index, physicsClientId=cid) for index, _ in order]
+    else:
+        read = [_bounds_of(obj, index, bounds, cid) for index, _ in order]
+    boxes = box_table(read)
     for box, row in obstacles.overlapping(boxes[:, 0] - distance, boxes[:, 1] + distance, skip):
         index, link = order[box]
         yield (
