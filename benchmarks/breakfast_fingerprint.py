@@ -51,13 +51,13 @@ def main() -> None:
         writes.joints += 1
         return set_joints(self, obj, values, carry)
 
-    def pose(self: WorldTables, obj: ObjectRef, where: PoseLike) -> None:
-        writes.add(obj, where)
+    def placed(self: WorldTables, obj: ObjectRef, pose: PoseLike) -> None:
+        writes.add(obj, pose)
         writes.poses += 1
-        set_pose(self, obj, where)
+        set_pose(self, obj, pose)
 
     WorldTables.set_joint_states = joints  # type: ignore[method-assign]
-    WorldTables.set_pose = pose  # type: ignore[method-assign]
+    WorldTables.set_pose = placed  # type: ignore[method-assign]
     try:
         ok, _, why = _timed(scene, "setting-table", people=2)
     finally:
