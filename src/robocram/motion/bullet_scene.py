@@ -71,6 +71,10 @@ class BulletScene:
         self._obstacles: ObstacleBoxes | None = None  # read once per posed block
         self._others: tuple[list[WorldObject], list[WorldObject]] | None = None  # too
         self._levers: LeverData | None = None  # what joint_levers needs, read once
+        # per (robot link, other's name, type and link, whether it has several links): the
+        # pair's verdict (:meth:`_verdict`); it follows from what the scene was made with
+        self._verdicts: dict[tuple[str, str, str, str, bool], tuple[bool, bool]] = {}
+        self._anywhere: dict[tuple[str, str], bool] = {}  # per (name, type): anywhere()'s
 
     @property
     def reach(self) -> float:
@@ -226,9 +230,10 @@ class BulletScene:
         for link, obj, other_link, gap in world.contacts.link_distances(
             self.robot, [*held, *anywhere], reach, links=links, obstacles=boxes
         ):
-            if self._counts(link, obj, other_link):
+            counts, bounded = self._verdict(link, obj, other_link)
+            if counts:
                 gaps[link] = min(gaps.get(link, reach), gap - self.distance)
-            elif self._bounded(link, obj, other_link):  # clear until deeper than the bound
+            elif bounded:  # clear until deeper than the bound
                 assert self.hand is not None
                 gap += self.hand.depth
                 gaps[link] = min(gaps.get(link, reach), gap - self.distance)
@@ -258,6 +263,19 @@ class BulletScene:
         points = self.world.contacts.contact_points(held, obj, None, other_link or None, 0.0)
         return max((-p.distance for p in points), default=0.0) > bound
 
+    def _verdict(self, link: str, obj: WorldObject, other_link: str) -> tuple[bool, bool]:
+        """(:meth:`_counts`, :meth:`_bounded`) of robot ``link`` touching ``other_link`` of
+        ``obj``: both follow from the scene's rules, allowed pairs and hand (fixed when it
+        was made) and the other's name, type and link, so each pair is judged once."""
+        key = (link, obj.name, obj.type, other_link, len(obj.link_index) > 1)
+        found = self._verdicts.get(key)
+        if found is None:
+            found = self._verdicts[key] = (
+                self._counts(link, obj, other_link),
+                self._bounded(link, obj, other_link),
+            )
+        return found
+
     def _counts(self, link: str, obj: WorldObject, other_link: str) -> bool:
         """Whether robot ``link`` touching ``obj`` is a collision (rules, start contacts,
         the hand on what it acts on: :meth:`_bounded`)."""
@@ -284,10 +302,15 @@ class BulletScene:
 
     def anywhere(self) -> list[WorldObject]:
         """Objects every link may touch by the description's rules (the floor)."""
-        return [
-            o for o in self.world.objects()
-            if o.name != self.robot and self.rules.allows_any_link(Other(o.name, o.type))
-        ]  # fmt: skip
+        return [o for o in self.world.objects() if o.name != self.robot and self._free_to(o)]
+
+    def _free_to(self, obj: WorldObject) -> bool:
+        """Whether the rules let every link touch ``obj``: asked once per name and type."""
+        key = (obj.name, obj.type)
+        found = self._anywhere.get(key)
+        if found is None:
+            found = self._anywhere[key] = self.rules.allows_any_link(Other(obj.name, obj.type))
+        return found
 
     def colliding_now(self, first_only: bool = False) -> list[LinkPair]:
         """The colliding pairs of the robot (and what it holds) as it is in the world now."""
@@ -299,9 +322,8 @@ class BulletScene:
             self.robot, [*held, *anywhere], self.distance, links=self.moving_links,
             obstacles=boxes,
         ):  # fmt: skip
-            if self._counts(link, obj, other_link) or (
-                self._bounded(link, obj, other_link) and self._too_deep(link, obj, other_link)
-            ):
+            counts, bounded = self._verdict(link, obj, other_link)
+            if counts or (bounded and self._too_deep(link, obj, other_link)):
                 hits[(link, _named(world, obj, other_link))] = None
                 if first_only:
                     return list(hits)

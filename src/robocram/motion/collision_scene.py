@@ -88,9 +88,7 @@ class CollisionScene:
         model = geo.kinematics.model
         self._data = model.createData()
         self._geometry_data = geo.geometry.createData()
-        for request in self._geometry_data.collisionRequests:
-            request.security_margin = self.snapshot.margin
-            request.enable_contact = False  # a yes/no answer: GJK only, no EPA
+        _set_requests(self._geometry_data, self.snapshot.margin)
         moving, fixed = geo.sides()
         self._moving = pin.BroadPhaseManager_DynamicAABBTreeCollisionManager(
             model, moving, self._geometry_data
@@ -145,9 +143,7 @@ class CollisionScene:
         for k in own:
             geometry.addCollisionPair(pin.CollisionPair(pairs[k].first, pairs[k].second))
         geometry_data = geometry.createData()
-        for request in geometry_data.collisionRequests:
-            request.security_margin = self.snapshot.margin
-            request.enable_contact = False
+        _set_requests(geometry_data, self.snapshot.margin)
         model = geo.kinematics.model
         data = model.createData()
         found: set[int] = set()
@@ -237,3 +233,18 @@ class CollisionScene:
 
     def __reduce__(self) -> tuple[type[CollisionScene], tuple[SceneSnapshot]]:
         return (CollisionScene, (self.snapshot,))
+
+
+def _set_requests(geometry_data: pin.GeometryData, margin: float) -> None:
+    """Every pair's request with ``margin`` [m] and no contact (a yes/no answer: GJK only,
+    no EPA). pinocchio makes all of a data's requests alike: when the first already is
+    so (no margin), so are the others, and the walk over thousands of them is spared."""
+    requests = geometry_data.collisionRequests
+    if not len(requests):
+        return
+    first = requests[0]
+    if first.security_margin == margin and not first.enable_contact:
+        return
+    for request in requests:
+        request.security_margin = margin
+        request.enable_contact = False

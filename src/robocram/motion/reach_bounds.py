@@ -9,7 +9,7 @@ misses that sphere can never be touched, so the scene never tests it.
 from __future__ import annotations
 
 import math
-from collections.abc import Collection
+from collections.abc import Collection, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -60,6 +60,20 @@ class Spheres:
             return bool(len(self.radii))
         gaps = np.linalg.norm(self.centres - other.centre, axis=1)
         return bool(np.any(np.isinf(self.radii) | (gaps <= self.radii + other.radius)))
+
+    def meet_each(self, others: Sequence[Sphere]) -> list[bool]:
+        """:meth:`meet` of each of ``others``, on arrays (the same operations per ball,
+        so the same answers)."""
+        if not others:
+            return []
+        centres = np.array([o.centre for o in others], dtype=float).reshape(-1, 3)
+        radii = np.array([o.radius for o in others], dtype=float)
+        gaps = np.linalg.norm(self.centres[None, :, :] - centres[:, None, :], axis=2)
+        met = (np.isinf(self.radii)[None, :] | (gaps <= self.radii[None, :] + radii[:, None])).any(
+            axis=1
+        )
+        met[np.isinf(radii)] = bool(len(self.radii))
+        return [bool(m) for m in met]
 
 
 def shape_sphere(geometry: coal.CollisionGeometry, placement: pin.SE3) -> Sphere:

@@ -19,6 +19,7 @@ from numpy.typing import NDArray
 from robocram.kinematics.robot_kinematics import RobotKinematics, pose_to_se3, robot_kinematics
 from robocram.motion.allowed_contacts import AllowedContacts, Other
 from robocram.motion.coal_shapes import coal_geometries
+from robocram.motion.hand_contact import HandContact
 from robocram.motion.reach_bounds import Sphere, Spheres, reach_sphere, shape_sphere
 from robocram.motion.scene_snapshot import PlacedShape, SceneSnapshot
 from robocram.motion.self_collision import (
@@ -149,20 +150,26 @@ def _add_static(
     ``spheres`` gets the bounding ball of each static geometry added.
     """
     moving = Spheres.of([s for s in spheres if s is not None])
+    shapes = [
+        (n, placed, placement, k, part)
+        for n, placed in enumerate(snap.static)
+        for placement in (pose_to_se3(placed.frame_T_shape),)
+        for k, part in enumerate(_parts(placed))
+    ]
+    bounds = [shape_sphere(part, placement) for _, _, placement, _, part in shapes]
+    reached = moving.meet_each(bounds)  # one comparison of all shapes with all balls
     skipped = 0
-    for n, placed in enumerate(snap.static):
-        placement = pose_to_se3(placed.frame_T_shape)
-        other = Other(placed.label.split("/")[0], placed.type)
-        for k, part in enumerate(_parts(placed)):
-            bound = shape_sphere(part, placement)
-            if not moving.meet(bound):
-                skipped += 1
-                continue
-            geometry.addGeometryObject(
-                pin.GeometryObject(f"static/{placed.label}/{n}/{k}", 0, 0, placement, part)
-            )
-            owners.append(Owner("static", placed.label, "", other))
-            spheres.append(bound)
+    for (n, placed, placement, k, part), bound, meets in zip(shapes, bounds, reached, strict=True):
+        if not meets:
+            skipped += 1
+            continue
+        geometry.addGeometryObject(
+            pin.GeometryObject(f"static/{placed.label}/{n}/{k}", 0, 0, placement, part)
+        )
+        owners.append(
+            Owner("static", placed.label, "", Other(placed.label.split("/")[0], placed.type))
+        )
+        spheres.append(bound)
     return skipped
 
 
@@ -174,38 +181,81 @@ def _add_pairs(
     group: dict[str, str],
     rules: AllowedContacts,
 ) -> list[tuple[str, str]]:
+    """Add the pairs a check tests, per moving geometry ``i`` its partners ``j`` in
+    ascending order; return their labels. Whether a pair is checked follows from who owns
+    the two geometries (:func:`_checked`), so it is decided once per kind of owner on each
+    side and spread over the geometries as masks (a kitchen scene has thousands of pairs)."""
     with_geometry = {o.link for o in owners if o.kind == "robot"}
     model = snap.description.model
     adjacent = adjacent_pairs(model, with_geometry) | set(snap.skipped_self)
     labels: list[tuple[str, str]] = []
     hand = snap.hand  # its links may touch what it acts on: not checked against it here
     near = _sphere_overlaps(spheres)
-    decided: dict[tuple[object, ...], bool] = {}  # geometries of one link share the answer
+    n = len(owners)
+    static = np.array([o.kind == "static" for o in owners], dtype=bool)
+    moving = np.array([bool(o.kind != "static" and group[o.link]) for o in owners], dtype=bool)
+    plain: dict[tuple[object, ...], int] = {}  # owner kinds as a partner: one per class
+    plain_of = np.array(
+        [plain.setdefault((o.kind, o.link, o.other), len(plain)) for o in owners], dtype=np.intp
+    )
+    labelled: dict[tuple[object, ...], int] = {}  # for a touching hand: statics by label
+    labelled_of = np.array(
+        [labelled.setdefault((o.kind, o.link, o.other, o.label), len(labelled)) for o in owners],
+        dtype=np.intp,
+    )
+    firsts = {k: j for j, k in reversed(list(enumerate(plain_of.tolist())))}
+    firsts_labelled = {k: j for j, k in reversed(list(enumerate(labelled_of.tolist())))}
+    masks: dict[tuple[object, ...], np.ndarray] = {}  # per moving owner kind: checked partners
+    index = np.arange(n)
     for i, a in enumerate(owners):
         if a.kind == "static" or not group[a.link]:
             continue  # pairs are made from the moving side
-        for j, b in enumerate(owners):
-            if i == j:
-                continue
-            touch = (
-                hand is not None and a.kind == "robot" and a.link in hand.links
-                and b.kind == "static"
+        touch = hand is not None and a.kind == "robot" and a.link in hand.links
+        side = (a.kind, a.link, a.other, touch)
+        checked = masks.get(side)
+        if checked is None:
+            checked = masks[side] = _checked_mask(
+                a, owners, touch, hand, group, adjacent, rules,
+                (plain_of, firsts), (labelled_of, firsts_labelled), static,
             )  # fmt: skip
-            key = (a.kind, a.link, a.other, b.kind, b.link, b.other, touch and b.label)
-            checked = decided.get(key)
-            if checked is None:
-                checked = decided[key] = _checked(a, b, group, adjacent, rules) and not (
-                    touch and hand is not None and hand.covers(a.link, b.label)
-                )
-            if not checked:
-                continue
-            if j < i and b.kind != "static" and group[b.link]:
-                continue  # two moving geometries: the pair was made from b's side
-            if b.kind == "static" and not near[i, j]:
-                continue
+        keep = checked & (index != i)
+        keep &= ~((index < i) & moving)  # two moving geometries: the pair was made from j's side
+        keep &= ~(static & ~near[i])
+        for j in np.flatnonzero(keep).tolist():
             geometry.addCollisionPair(pin.CollisionPair(i, j))
-            labels.append((a.label, b.label))
+            labels.append((a.label, owners[j].label))
     return labels
+
+
+def _checked_mask(
+    a: Owner,
+    owners: list[Owner],
+    touch: bool,
+    hand: HandContact | None,
+    group: dict[str, str],
+    adjacent: set[frozenset[str]],
+    rules: AllowedContacts,
+    plain: tuple[np.ndarray, dict[int, int]],
+    labelled: tuple[np.ndarray, dict[int, int]],
+    static: np.ndarray,
+) -> np.ndarray:
+    """Per geometry ``j``: whether moving geometry ``a`` is checked against it
+    (:func:`_checked`, and a touching hand not against what it acts on), decided once per
+    class of partners (the first geometry of each class stands for it)."""
+    classes, firsts = plain
+    answers = np.array(
+        [_checked(a, owners[firsts[k]], group, adjacent, rules) for k in range(len(firsts))],
+        dtype=bool,
+    )
+    mask = answers[classes]
+    if touch and hand is not None:
+        label_classes, label_firsts = labelled
+        covered = np.array(
+            [hand.covers(a.link, owners[label_firsts[k]].label) for k in range(len(label_firsts))],
+            dtype=bool,
+        )
+        mask &= ~(covered[label_classes] & static)
+    return mask
 
 
 def _sphere_overlaps(spheres: list[Sphere | None]) -> np.ndarray:

@@ -11,6 +11,7 @@ says: the body's carried objects and itself never do.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from itertools import chain
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -38,6 +39,13 @@ def link_bounds(world: WorldFacade, obj: WorldObject, indices: Iterable[int]) ->
     """
     cid = world.physics.client()
     return {i: pybullet.getAABB(*obj.locate(i), physicsClientId=cid) for i in indices}
+
+
+def box_table(boxes: Sequence[Bounds]) -> NDArray[np.float64]:
+    """``boxes`` as a (boxes, 2, 3) array of their low and high corners [m]: read flat
+    (the same floats; numpy's nested-sequence discovery cost more than the query)."""
+    flat = chain.from_iterable
+    return np.fromiter(flat(flat(boxes)), dtype=float, count=6 * len(boxes)).reshape(-1, 2, 3)
 
 
 def _bounds_of(
@@ -127,9 +135,12 @@ def _overlaps_in(
 ) -> Iterator[tuple[str, WorldObject, int, int, str]]:
     """:func:`_overlaps` against bounds read before (one comparison for all links)."""
     order = list(indices.items())
-    boxes = np.array(
-        [_bounds_of(obj, index, bounds, cid) for index, _ in order], dtype=float
-    ).reshape(-1, 2, 3)
+    if bounds is None and not obj.parts:  # one body, nothing read before: ask it directly
+        body, aabb = obj.body_id, pybullet.getAABB
+        read = [aabb(body, index, physicsClientId=cid) for index, _ in order]
+    else:
+        read = [_bounds_of(obj, index, bounds, cid) for index, _ in order]
+    boxes = box_table(read)
     for box, row in obstacles.overlapping(boxes[:, 0] - distance, boxes[:, 1] + distance, skip):
         index, link = order[box]
         yield (
@@ -250,7 +261,7 @@ def self_contacts(
     cid = world.physics.client()
     rows = obj.pair_rows(key)
     boxes = [_bounds_of(obj, i, bounds, cid) for i in rows.used]
-    table = np.array(boxes, dtype=float).reshape(-1, 2, 3)
+    table = box_table(boxes)
     low, high = table[:, 0] - distance, table[:, 1] + distance
     below = (low[:, None, :] <= high[None, :, :]).all(axis=2)  # [i, j]: i's low under j's
     found = []
@@ -283,7 +294,7 @@ def self_distances(
     cid = world.physics.client()
     rows = obj.pair_rows(tuple(pairs))
     boxes = [pybullet.getAABB(*obj.locate(i), physicsClientId=cid) for i in rows.used]
-    table = np.array(boxes, dtype=float).reshape(-1, 2, 3)
+    table = box_table(boxes)
     first = np.searchsorted(rows.used, rows.firsts)
     second = np.searchsorted(rows.used, rows.seconds)
     apart = np.maximum(
