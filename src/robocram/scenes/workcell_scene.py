@@ -5,7 +5,9 @@ things from one spot of its table to another. The table, the robot's stand and t
 are placed as in the tabletop scene (:mod:`robocram.scenes.placement`: from the arm's
 reach, never by robot name); the table is an environment with one surface, so the same
 ``transport`` plan (search, fetch, deliver) runs as in the kitchen, the robot standing
-where it is mounted.
+where it is mounted. A robot whose fixed camera looks onto its own top (Tracy: two arms on
+a table, :mod:`~robocram.scenes.own_top`) works there: its table is a thin plate a hair
+over that top, just round the items' spots, so the robot's own links never touch it.
 """
 
 from __future__ import annotations
@@ -77,11 +79,12 @@ def workcell_scene(robot: str | RobotDescription, world: World | None = None) ->
     of it where the tabletop scene puts one, the mug on it where that scene puts it (its
     handle to the left) and the bowl to its right; the table's top is the KB's
     ``supporting_surface`` and the items' usual place, its frame between the two (where
-    a search looks). The delivery spots are :func:`workcell_spots`.
+    a search looks). The delivery spots are :func:`workcell_spots`. Where the mug lies on
+    the robot's own top, the table is a plate a hair over it (:data:`PLATE_HAIR`).
 
     Raises:
         UnfitRobotError: the robot has no gripper arm, or it cannot reach past its base,
-            or its fixed camera looks onto its own top.
+            or a link of it stands on its own top where the plate would lie.
     """
     world = world if world is not None else World()
     name, place = robot_at_a_table(world, robot)
