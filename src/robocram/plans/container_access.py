@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from robocram.execution.failures import (
     EnvironmentManipulationImpossible,
     NavigationLowLevelFailure,
+    NavigationPoseUnreachable,
     PlanFailure,
 )
 from robocram.knowledge import robot_predicates as rp
@@ -100,7 +101,9 @@ def open_from_front(
     """Go in front of container ``name`` (link or handle) and open it fully. When no stand
     worked and the head was turned away (down at what the robot last looked at), it looks
     ahead and the stands are tried once more: a Stretch's lift, rising to the fridge's
-    handle, met its head still turned down at a cutlery drawer.
+    handle, met its head still turned down at a cutlery drawer; a Boxy's neck, still
+    turned to where it last looked, put its camera into the fridge at every stand in
+    front of it (:func:`_neck_in_the_way`).
 
     Raises:
         PlanFailure: the last failure, when no stand within ``retries`` worked.
@@ -109,10 +112,20 @@ def open_from_front(
     part = container(name)
     try:
         return _open_from_stands(part, log, retries)
-    except EnvironmentManipulationImpossible:
-        if not _looked_ahead():
+    except (EnvironmentManipulationImpossible, NavigationPoseUnreachable) as failure:
+        if not _neck_in_the_way(failure) or not _looked_ahead():
             raise
     return _open_from_stands(part, log, retries)
+
+
+def _neck_in_the_way(failure: PlanFailure) -> bool:
+    """Whether looking ahead may help after ``failure``, the last stand's: an opening that
+    failed, or a stand the base could not take with the neck among the robot's links that
+    would collide there."""
+    if not isinstance(failure, NavigationPoseUnreachable):
+        return True
+    neck = set(current_robot().neck_links())
+    return any(link in neck for link in failure.robot_links or ())
 
 
 def _open_from_stands(part: Container, log: AttemptLog, retries: int) -> OpenedContainer:
