@@ -52,9 +52,12 @@ typecheck: installed $(ROS_STAMP) $(ROS2_STAMP)
 	$(BIN)/mypy
 
 # --no-loadscope-reorder: xdist deals the groups and tests out in the order tests/conftest.py
-# gives them, longest first (tests/suite_durations.json), so no long one is left for the end
+# gives them, longest first (tests/suite_durations.json), so no long one is left for the end.
+# One worker more than cores: ROS tests wait on messages and the viewer's on a browser, and
+# two workers on two cores kept them busy ~1.6 cores of 2 (CI, twenty-fifth session).
+WORKERS ?= $(shell echo $$(( $$(nproc) + 1 )))
 unit: installed $(ROS_STAMP) $(ROS2_STAMP)
-	$(BIN)/pytest -n auto --dist loadgroup --no-loadscope-reorder --durations=15
+	$(BIN)/pytest -n $(WORKERS) --dist loadgroup --no-loadscope-reorder --durations=15
 
 # mypy (one core, half a minute or more without its cache) runs beside the tests: they leave
 # a core idle while ROS and the viewer wait for messages and pages. The set-up is made first,
