@@ -53,9 +53,8 @@ typecheck: installed $(ROS_STAMP) $(ROS2_STAMP)
 
 # --no-loadscope-reorder: xdist deals the groups and tests out in the order tests/conftest.py
 # gives them, longest first (tests/suite_durations.json), so no long one is left for the end.
-# One worker more than cores: ROS tests wait on messages and the viewer's on a browser, and
-# two workers on two cores kept them busy ~1.6 cores of 2 (CI, twenty-fifth session).
-WORKERS ?= $(shell echo $$(( $$(nproc) + 1 )))
+# WORKERS: xdist's -n (auto: one per core; three on two cores were no faster, session 26).
+WORKERS ?= auto
 unit: installed $(ROS_STAMP) $(ROS2_STAMP)
 	$(BIN)/pytest -n $(WORKERS) --dist loadgroup --no-loadscope-reorder --durations=15
 
