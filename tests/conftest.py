@@ -1,5 +1,5 @@
-"""The suite runs on every core (pytest-xdist, ``make unit``: one worker more than cores,
-since ROS and viewer tests wait); what shares a resource runs on one worker.
+"""The suite runs on every core (pytest-xdist, ``make unit``); what shares a resource runs
+on one worker.
 
 ``--dist loadgroup`` sends the tests of one ``xdist_group`` to the same worker, in order:
 the batch tests start worker pools and local Ray clusters that would fight over the cores,
