@@ -74,11 +74,14 @@ def deliver_at_spot(
     done: TableSetting,
     see_through: Sequence[str] = (),
     reach_stands: bool = False,
+    where: LocationDesignator | None = None,
 ) -> None:
-    """Put ``held`` at ``spot`` (the table seen past ``see_through``), in the square of
-    :data:`WIDE_SPOT_AREA` where the first had no cell at all: a thing held turned needs
-    more room round its spot (Boxy's bowl held 16 degrees turned)."""
-    where = spot_location(done.table, spot, held.object_name, see_through)
+    """Put ``held`` at ``spot`` (the table seen past ``see_through``; ``where``: a spot's
+    location already tried, whose stream goes on), in the square of :data:`WIDE_SPOT_AREA`
+    where the first had no cell at all: a thing held turned needs more room round its
+    spot (Boxy's bowl held 16 degrees turned)."""
+    if where is None:
+        where = spot_location(done.table, spot, held.object_name, see_through)
     try:
         deliver(held, where, held.arm, log=done.log, reach_stands=reach_stands)
     except DeliveryExhausted as failure:
@@ -94,10 +97,11 @@ def deliver_to_spot(held: Held, spot: Spot, done: TableSetting) -> None:
     IK: Boxy's bowl, taken by its rim nearer its drawer's middle, hangs in front of its
     chest when carried, and every stand holding it so over the table put the other,
     parked hand into the table."""
+    where = spot_location(done.table, spot, held.object_name)
     try:
-        deliver_at_spot(held, spot, done)
-    except DeliveryExhausted:
-        deliver_at_spot(held, spot, done, reach_stands=True)
+        deliver_at_spot(held, spot, done, where=where)
+    except DeliveryExhausted:  # the same location: its poses go on from the last tried
+        deliver_at_spot(held, spot, done, reach_stands=True, where=where)
 
 
 def bring_one(spot: Spot, visit: Visit, done: TableSetting) -> Held:
