@@ -61,7 +61,7 @@ RIM_DEEP_FLOOR = 0.015  # [m] a deep rim grasp's tool frame over the object's bo
 # after every other, for a hand whose pads end behind its tool frame (Tracy's Robotiq 85:
 # its pads 18-36 mm behind it closed on nothing over the bowl's 6 cm wall)
 PADS_BEHIND_DEEP = 0.01  # [m] a hand's pads end at least this far behind its tool frame:
-# it gets deep rim grasps (Tracy's 18 mm; Boxy's 6 mm, HSR's 4 mm, the PR2's and Fetch's
+# it gets deep rim grasps (Tracy's 18 mm; Boxy's 6 mm; the PR2's, HSR's and Fetch's reach
 # past it: none, which left their plans as they were)
 RIM_DEEPER_AT_LEAST = 0.01  # [m] deeper than the rim grasp by less: no deep one
 RIM_TILTS = (0.3,)  # [rad] a palm hand's rim grasps tilted so (each after the flat ones)
