@@ -7,7 +7,8 @@ follow from the grasp the object is held with (the object's pose in the tool fra
 any grasp places the same way. The object comes down from 10 cm above (5 cm, or straight
 to its place, at the edge of the arm's reach). If the arm cannot put it down turned as
 asked, the object is turned about the vertical by a quarter, a half and three quarters in
-turn. Let go, the hand backs off towards the wrist (10 cm, or 5), or else the arm parks.
+turn. Let go, the hand backs off towards the wrist (10 cm, or 5), or else the arm parks, or
+else it goes back out the way it came in.
 Then the world is simulated briefly (where the KB has one) and the object must rest where
 it was put.
 """
@@ -144,11 +145,32 @@ def _settled(name: str, put: Pose, seconds: float) -> str | None:
     return None
 
 
+def _out_the_way_in(held: Held, way_in: list[Pose]) -> bool:
+    """Whether the open hand went back out through ``way_in`` (map tool poses, the last
+    the nearest the put), as a last resort after backing off towards the wrist and parking
+    failed: Boxy let a bowl go by its rim low in an open drawer, its hand had come in on
+    another IK branch, and neither way out was free under the counter's top (seed 17).
+    The hand may brush anything on its way back (within the grasp's bound): the open
+    fingers touched the top's underside. False where it did not get out (or had not come
+    in from anywhere)."""
+    here = transform_pose(PoseStamped(held.tool_frame), "map").pose
+    back = [pose for pose in reversed(way_in) if math.dist(here.position, pose.position) >= MOVED]
+    for pose in back:
+        try:
+            _move(held.arm, pose, **GRASPING)
+        except (ManipulationLowLevelFailure, NavigationLowLevelFailure):
+            return False
+    return bool(back)
+
+
 def _put_down(robot: KnownRobot, held: Held, put: Pose) -> None:
     tool = put * held.object_in_tool.inverse()
+    way_in = [transform_pose(PoseStamped(held.tool_frame), "map").pose]
     for height in CARRY_HEIGHTS:
         try:
-            _move(held.arm, _shifted(tool, 0.0, 0.0, height), **GRASPING, touching=held.object_name)
+            above = _shifted(tool, 0.0, 0.0, height)
+            _move(held.arm, above, **GRASPING, touching=held.object_name)
+            way_in.append(above)
             break
         except ManipulationLowLevelFailure:
             continue  # at the edge of its reach the arm comes in lower
@@ -157,6 +179,8 @@ def _put_down(robot: KnownRobot, held: Held, put: Pose) -> None:
     try:
         _retreat(robot, held)
     except ManipulationLowLevelFailure as failure:  # let go already: no other turn to try
+        if _out_the_way_in(held, way_in):
+            return
         raise PlacingFailed(
             f"{held.object_name!r} was let go but the {held.arm} hand could not back off",
             object_name=held.object_name,
