@@ -1,12 +1,12 @@
 """Stands beside an opened drawer, facing across it: the arm reaches over a side wall.
 
 A drawer's front is its tallest wall and carries the handle; its side walls are low (the
-stove's lower drawer: front 0.35 m, sides 0.15 m). An HSR took neither side-rim grasp
-of a bowl lying by that drawer's left wall from in front: near the wall its fingers met
-the wall, and the grasp nearer the middle put the arm's column, left of its base's
-middle, against the handle. From beside the pulled-out drawer, facing across it, it
-takes the bowl over the side wall by its far rim. These stands are tried only after
-every stand in front of the drawer failed.
+stove's lower drawer: front 0.35 m, sides 0.15 m). An HSR took a bowl lying by that
+drawer's left wall with none of its eight rim grasps from any stand in front of the
+drawer (arm, wrist and finger links met the drawer; a stand with the shoulder in line
+with the rim nearer the middle met the handle). From beside the pulled-out drawer,
+facing across it, it takes the bowl over the side wall. These stands are tried only
+after every stand in front of the drawer failed.
 """
 
 from __future__ import annotations
