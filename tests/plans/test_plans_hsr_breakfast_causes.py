@@ -2,26 +2,33 @@
 
 An HSR (one arm, a head on a lift, a small base) did not see the bowls in their opened
 drawer from where it opened it, nor could it take the fridge door's handle again to close
-it; its clearing saw one place setting of two.
+it; its clearing saw one place setting of two. A bowl by the stove drawer's left wall it
+took from no stand in front of the drawer (the household of ``activity_bench`` seed 9).
 """
 
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import pybullet
 import pytest
 
 from robocram.designators import an
+from robocram.execution.failures import NavigationPoseUnreachable
 from robocram.plans.attempt_log import AttemptLog
+from robocram.plans.basic_actions import navigate, park_arms
 from robocram.plans.bringing import Visit, find_in_place, usual_place
 from robocram.plans.clearing_table import things_on
 from robocram.plans.container_access import close_again
+from robocram.plans.drawer_side_stands import side_stands
 from robocram.plans.fetch import fetch
+from robocram.plans.known_robot import current_robot
+from robocram.plans.pick_object import pick_up_object
 from robocram.plans.table_arrangement import STANDARD_SETTING, spots, table_with_seats
 from robocram.projection import simulated_robot
-from robocram.scenes.breakfast_scene import breakfast_scene
-from robocram.tf import Pose, PoseStamped, Quaternion
+from robocram.scenes.breakfast_scene import BREAKFAST_PLACES, breakfast_scene
+from robocram.tf import Pose, PoseStamped, Quaternion, transform_pose
 from robocram.world import World
 
 TABLE_TOP = 0.75  # [m] the kitchen table's top
@@ -148,5 +155,46 @@ def test_the_hsr_sees_both_place_settings_when_clearing() -> None:
             if low[2] == pytest.approx(TABLE_TOP, abs=0.01):
                 on_table.add(name)
         assert on_table == {"bowl-1", "bowl-2", "spoon-1", "spoon-2", "cup-1", "cup-2", "milk-1"}
+    finally:
+        world.close()
+
+
+STOVE_DRAWER = "stove_unit_drawer_2"  # front 0.35 m high with the handle, sides 0.15 m
+BY_THE_WALL = {"bowl-1": (-0.274, 0.12), "bowl-2": (-0.245, -0.12)}  # [m] in the drawer
+
+
+def test_the_hsr_takes_a_bowl_by_its_drawers_wall_from_beside_the_drawer() -> None:
+    kept = [
+        replace(p, link=STOVE_DRAWER, xy=BY_THE_WALL[p.name], yaw=math.pi / 2)
+        if p.kind == "bowl"
+        else p
+        for p in BREAKFAST_PLACES
+    ]
+    scene = breakfast_scene("hsrb", places=kept, kept=kept)
+    world = scene.world
+    cid = world.physics.client()
+    try:
+        with simulated_robot(world, scene.robot):
+            wanted = an.object(type="bowl", name="bowl-2")
+            found = find_in_place(wanted, Visit(usual_place("bowl")), AttemptLog())
+            assert found is not None
+            seen, opened = found
+            where = transform_pose(seen.get("pose"), "map")
+            for pose, _ in side_stands(current_robot(), where, ["arm"], opened):
+                try:
+                    park_arms()
+                    navigate(pose)
+                    break
+                except NavigationPoseUnreachable:  # the counter beside it: the next
+                    continue
+            # taken where it was seen, as fetch does from a stand that does not see it
+            seen_there = an.object(type="bowl", name="bowl-2", pose=where)
+            pick_up_object(seen_there, arm="arm", out_of=("kitchen", STOVE_DRAWER))
+        kitchen = world.object("kitchen")
+        low, high = pybullet.getAABB(kitchen.body_id, kitchen.link_index[STOVE_DRAWER], cid)
+        x, y = _base_xy(world)
+        assert x < low[0] and low[1] < y < high[1]  # beside the drawer, on its wall's side
+        bowl_low, _ = pybullet.getAABB(world.object("bowl-2").body_id, physicsClientId=cid)
+        assert bowl_low[2] > high[2]  # lifted out, over the drawer's front
     finally:
         world.close()

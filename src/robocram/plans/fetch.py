@@ -29,6 +29,7 @@ from robocram.plans.basic_actions import detect, look_lowering, navigate, park_a
 from robocram.plans.container_access import OpenedContainer, is_drawer
 from robocram.plans.culprits import blamed, culprit_clause
 from robocram.plans.detect_past_hand import detect_past_hand
+from robocram.plans.drawer_side_stands import side_stands
 from robocram.plans.errors import FetchExhausted, PlanArgumentError
 from robocram.plans.grasp_stands import grasp_point_stands
 from robocram.plans.known_robot import KnownRobot, current_robot
@@ -324,6 +325,11 @@ def fetch(
         found = _first_held(_untried(stands), picking(), causes, log, stand_retries)
         if found is not None:
             return found
+        if out_of is not None:  # last of all: beside the drawer, over its low side wall
+            beside = side_stands(robot, where, arms, opened)
+            found = _first_held(beside, picking(in_container=True), causes, log, stand_retries)
+            if found is not None:
+                return found
     raise FetchExhausted(
         exhausted_message(str(seen.get("name")), tries, causes),
         object_designator=seen,
