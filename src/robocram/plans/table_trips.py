@@ -12,9 +12,9 @@ from dataclasses import dataclass, field
 from robocram.designators import LocationDesignator, a
 from robocram.designators.errors import GroundingError
 from robocram.plans.attempt_log import AttemptLog
-from robocram.plans.bringing import Visit, find, find_in_place, wanted_object
+from robocram.plans.bringing import Visit, find, wanted_object
 from robocram.plans.deliver import deliver
-from robocram.plans.errors import DeliveryExhausted, FetchExhausted
+from robocram.plans.errors import DeliveryExhausted
 from robocram.plans.fetch import fetch
 from robocram.plans.pick_object import Held
 from robocram.plans.table_arrangement import Spot, Table
@@ -104,38 +104,10 @@ def deliver_to_spot(held: Held, spot: Spot, done: TableSetting) -> None:
         deliver_at_spot(held, spot, done, reach_stands=True, where=where)
 
 
-def fetch_another(
-    spot: Spot, visit: Visit, done: TableSetting, failed: str, failure: FetchExhausted
-) -> Held:
-    """Another thing of the spot's type where it is kept, fetched when ``failed`` (its
-    name) could not be: a drafted Stretch's rim grasp of bowl-2 met bowl-1 beside it from
-    every stand, and each seat's trip tried bowl-2 again; bowl-1, taken first, leaves
-    bowl-2 alone in its drawer. Only the visit's place is looked into again (a search
-    everywhere would find the same thing).
-
-    Raises:
-        FetchExhausted: ``failure``, when no other thing is seen there or it is not
-            fetched either.
-    """
-    skip = {*done.placed, failed}
-    found = find_in_place(wanted_object(spot.type), visit, done.log, skip, from_here=True)
-    if found is None:
-        raise failure
-    seen, inside = found
-    try:
-        return fetch(seen, log=done.log, opened=inside)
-    except FetchExhausted:
-        raise failure from None
-
-
 def bring_one(spot: Spot, visit: Visit, done: TableSetting) -> Held:
-    """Find a thing of the spot's type not yet on the table, fetch it (another of its
-    type where it is kept, if it cannot be: :func:`fetch_another`), put it at the spot."""
+    """Find a thing of the spot's type not yet on the table, fetch it, put it at the spot."""
     seen, inside = find(wanted_object(spot.type), visit, done.log, skip=done.placed)
-    try:
-        held = fetch(seen, log=done.log, opened=inside)
-    except FetchExhausted as failure:
-        held = fetch_another(spot, visit, done, str(seen.get("name")), failure)
+    held = fetch(seen, log=done.log, opened=inside)
     deliver_to_spot(held, spot, done)
     done.placed[held.object_name] = spot
     done.trips.append((held.object_name,))
