@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -15,7 +16,14 @@ from robocram.grasping import (
     UnknownGraspError,
     grasps,
 )
-from robocram.grasping.grasp_model import LIFT, PRE_GRASP, RIM_DEPTH, TOP_STRADDLE
+from robocram.grasping.grasp_model import (
+    LIFT,
+    PADS_BEHIND_DEEP,
+    PRE_GRASP,
+    RIM_DEEP_FLOOR,
+    RIM_DEPTH,
+    TOP_STRADDLE,
+)
 from robocram.tf import quaternion as quat
 
 PR2_HAND = Hand(max_opening=0.0937)  # x approach, y opening, as the PR2's tool frame
@@ -73,13 +81,17 @@ def test_side_grasps_come_in_level_from_their_side() -> None:
 
 
 def test_the_bowl_rim_grasp_straddles_its_wall() -> None:
-    rims = grasps(BOWL, PR2_HAND, ("rim",))
-    assert len(rims) == 8  # four places round the rim, two turns each
+    assert len(grasps(BOWL, PR2_HAND, ("rim",))) == 8  # four places, two turns: none deep
+    behind = replace(PR2_HAND, pads_behind=PADS_BEHIND_DEEP)  # pads end behind the tool
+    rims = grasps(BOWL, behind, ("rim",))
+    assert len(rims) == 16  # four places round the rim, two turns each; then each deep
     assert all(g.opening == pytest.approx(0.006 + CLEARANCE) for g in rims)
-    for g in rims:
+    for k, g in enumerate(rims):
         x, y, z = g.tool.position
         assert math.hypot(x, y) == pytest.approx(0.08 - 0.003)  # on the wall's middle
-        assert z == pytest.approx(0.06 - RIM_DEPTH)
+        deep = k >= 8  # after the others
+        assert z == pytest.approx(RIM_DEEP_FLOOR if deep else 0.06 - RIM_DEPTH)
+        assert g.deeper == pytest.approx(0.06 - RIM_DEPTH - RIM_DEEP_FLOOR if deep else 0.0)
         approach, opening = _axes(g.tool.orientation, PR2_HAND)
         assert approach == pytest.approx((0.0, 0.0, -1.0), abs=1e-9)
         radial = np.asarray((x, y, 0.0)) / math.hypot(x, y)

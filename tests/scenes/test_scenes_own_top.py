@@ -6,10 +6,12 @@ ahead) and puts its probe mug on the table where the optical axis meets it; the 
 scene lays its mug there and adds no table, and the pick-up lifts it, its IK not counting
 the mug resting on the robot's own top as a collision. Its workcell's table is a thin
 plate a hair above that top, round the items' spots, and it carries the mug to its spot
-(the bowl's transport is not run here: the suite is slow). Judged by PyBullet: a ray down
-onto the mug's spot meets the robot's own link, the mug rises; the plate lies a hair over
-the robot, touching it nowhere, the mug and its spot lie near the optical axis, and the
-mug ends at its spot, upright, nothing of the robot touching it or the plate.
+(and then the bowl). Judged by PyBullet: a ray down onto the mug's spot meets the
+robot's own link, the mug rises; the plate lies a hair over the robot, touching it
+nowhere, the mug and its spot lie near the optical axis, and the mug ends at its spot,
+upright, nothing of the robot touching it or the plate. Its bowl, carried next (its
+Robotiq's pads end behind its tool frame: deep rim grasps), ends at its spot as high as
+it lay, the robot not touching it.
 """
 
 from __future__ import annotations
@@ -84,9 +86,11 @@ def _optical_link(client: int, body: int) -> int:
     return names.index("camera_link_optical")
 
 
-def test_its_workcell_lies_on_its_own_top_in_view_and_it_carries_the_mug(tracy: str) -> None:
+def test_its_workcell_lies_on_its_own_top_in_view_and_it_carries_the_mug_and_bowl(
+    tracy: str,
+) -> None:
     scene = workcell_scene(description_from(tracy))
-    world = scene.world
+    world, spots = scene.world, workcell_spots(scene)  # the bowl's: where the mug lay
     try:
         client, body = world.physics.client(), world.object(scene.robot).body_id
         plate = world.object(scene.environment).body_id
@@ -103,7 +107,7 @@ def test_its_workcell_lies_on_its_own_top_in_view_and_it_carries_the_mug(tracy: 
             body, _optical_link(client, body), physicsClientId=client
         )[4:6]
         axis = pybullet.getMatrixFromQuaternion(turn)[2::3]  # the optical z, in the world
-        spot = workcell_spots(scene)["mug-1"].position
+        spot = spots["mug-1"].position
         for name, target in {"mug": _position(client, mug), "spot": spot}.items():
             to = [t - e for t, e in zip(target, eye, strict=True)]
             cos = sum(a * b for a, b in zip(axis, to, strict=True)) / math.dist(target, eye)
@@ -111,15 +115,21 @@ def test_its_workcell_lies_on_its_own_top_in_view_and_it_carries_the_mug(tracy: 
             assert low[0] < target[0] < high[0] and low[1] < target[1] < high[1], name
         start = _position(client, mug)
         with simulated_robot(world, scene.robot):
-            perform(
-                an.action(type="transporting", object="mug", target=workcell_spots(scene)["mug-1"])
-            )
+            perform(an.action(type="transporting", object="mug", target=spots["mug-1"]))
         x, y, z = _position(client, mug)
         assert math.hypot(x - spot[0], y - spot[1]) < PLACED and math.dist(start, spot) > 0.1
         assert z == pytest.approx(start[2], abs=SETTLED)
         for other in (plate, mug):  # nothing of the robot touches the plate or the mug
             assert not pybullet.getContactPoints(body, other, physicsClientId=client)
         assert not pybullet.getClosestPoints(plate, body, 0.0, physicsClientId=client)
+        bowl = world.object("bowl-1").body_id  # its Robotiq's pads end 18 mm behind its
+        start, spot = _position(client, bowl), spots["bowl-1"].position
+        with simulated_robot(world, scene.robot):  # tool frame: a deep rim grasp holds it
+            perform(an.action(type="transporting", object="bowl", target=spots["bowl-1"]))
+        x, y, z = _position(client, bowl)
+        assert math.hypot(x - spot[0], y - spot[1]) < PLACED and math.dist(start, spot) > 0.1
+        assert z == pytest.approx(start[2], abs=SETTLED)
+        assert not pybullet.getContactPoints(body, bowl, physicsClientId=client)
     finally:
         world.close()
 

@@ -27,6 +27,8 @@ class Grasp:
         across: unit direction [object frame] the fingers spread along.
         tilt: [rad] a palm hand's rim grasp turned this far about the held wall, its wrist
             raised (0: flat); tried after the flat ones of its side.
+        deeper: [m] a deep rim grasp's tool frame lies this far below the rim grasp's
+            (0: not deep); tried after every other grasp of its name.
     """
 
     name: str
@@ -38,6 +40,7 @@ class Grasp:
     opening: float
     across: Vector3
     tilt: float = 0.0
+    deeper: float = 0.0
 
     def pre_grasp_tool(self) -> Pose:
         """The tool's pose [object frame] before it moves in."""

@@ -9,7 +9,9 @@ Grasps (CRAM's names), in the object's frame (x forward, z up):
 - ``front``, ``left``, ``right``: sideways at half height, from the -x, +y and -y side
   (not through a handle); the opening is horizontal, the width the object's size across.
 - ``rim`` (a hollow object, ``object_wall/2``): from above on the wall, the fingers
-  straddling it ``RIM_DEPTH`` below the rim; one place per side the box shows no handle.
+  straddling it ``RIM_DEPTH`` below the rim; one place per side the box shows no handle;
+  a hand whose pads end behind its tool frame (``Hand.pads_behind`` at least
+  :data:`PADS_BEHIND_DEEP`) again, deep (:data:`RIM_DEEP_FLOOR`), after all the others.
   Width: the wall's thickness. A palm hand lies flat over the rim, its wrist at the rim's
   height: its rim grasps come again tilted about the wall (:data:`RIM_TILTS`), the wrist
   raised, for a bowl down in a drawer.
@@ -55,6 +57,13 @@ TOP_STRADDLE = 0.04  # [m] a top grasp's fingertips go at most this far below th
 # 0.7 mm, issue 35)
 PALM_FLOOR = 0.01  # [m] a palm hand held sideways keeps this far over the object's bottom
 RIM_DEPTH = 0.02  # [m] a rim grasp's tool frame below the rim
+RIM_DEEP_FLOOR = 0.015  # [m] a deep rim grasp's tool frame over the object's bottom: tried
+# after every other, for a hand whose pads end behind its tool frame (Tracy's Robotiq 85:
+# its pads 18-36 mm behind it closed on nothing over the bowl's 6 cm wall)
+PADS_BEHIND_DEEP = 0.01  # [m] a hand's pads end at least this far behind its tool frame:
+# it gets deep rim grasps (Tracy's 18 mm; Boxy's 6 mm; the PR2's, HSR's and Fetch's reach
+# past it: none, which left their plans as they were)
+RIM_DEEPER_AT_LEAST = 0.01  # [m] deeper than the rim grasp by less: no deep one
 RIM_TILTS = (0.3,)  # [rad] a palm hand's rim grasps tilted so (each after the flat ones)
 PRE_GRASP = 0.10  # [m] the tool starts this far back along its approach
 LIFT = 0.10  # [m] the object is lifted this far
@@ -148,7 +157,8 @@ def _side(shape: ObjectShape, hand: Hand, name: str) -> Iterator[Grasp]:
 
 def _rim(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
     """On the wall from above, one place per side without a handle; a palm hand's then
-    again tilted (:data:`RIM_TILTS`, :func:`_tilted`)."""
+    again tilted (:data:`RIM_TILTS`, :func:`_tilted`); a hand whose pads end behind its
+    tool frame's then again deep (:data:`RIM_DEEP_FLOOR`)."""
     if shape.wall is None:
         return
     cx, cy = shape.centre
@@ -165,6 +175,12 @@ def _rim(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
     yield from (grasp for _, grasp in flat)
     if hand.palm is not None:
         yield from (_tilted(g, at, tilt, hand.palm) for tilt in RIM_TILTS for at, g in flat)
+    deeper = shape.high[2] - RIM_DEPTH - (shape.low[2] + RIM_DEEP_FLOOR)
+    behind = hand.palm is None and hand.pads_behind >= PADS_BEHIND_DEEP
+    if behind and deeper >= RIM_DEEPER_AT_LEAST:
+        for at, grasp in flat:
+            low = (at[0], at[1], at[2] - deeper)
+            yield replace(grasp, tool=Pose(low, grasp.tool.orientation), deeper=deeper)
 
 
 def _tilted(grasp: Grasp, held: Vector3, tilt: float, palm: Palm) -> Grasp:

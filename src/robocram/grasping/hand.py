@@ -21,6 +21,7 @@ from itertools import combinations
 import numpy as np
 
 from robocram.grasping.errors import GraspingError
+from robocram.grasping.pad_reach import pads_behind
 from robocram.grasping.palm import Palm, palm_of
 from robocram.kinematics import forward_kinematics
 from robocram.logic.lru import LRUCache
@@ -37,7 +38,9 @@ class Hand:
     """Approach and opening axes (unit, tool frame), widest opening and finger depth [m];
     ``suction``: it holds by touching (no fingers; ``max_opening`` is then infinite);
     ``palm``: a palm hand's palm, which a grasp puts against the object's side (its
-    approach the way the fingers curl, its opening the way they point)."""
+    approach the way the fingers curl, its opening the way they point);
+    ``pads_behind``: [m] how far behind the tool frame the fingers end, over their stroke
+    (negative: past it; ``pad_reach.py``), read for a parallel gripper only."""
 
     approach: Axis = (1.0, 0.0, 0.0)
     opening: Axis = (0.0, 1.0, 0.0)
@@ -45,6 +48,7 @@ class Hand:
     finger_depth: float = FINGER_DEPTH
     suction: bool = False
     palm: Palm | None = None  # a palm hand's palm (``palm.py``)
+    pads_behind: float = 0.0
 
 
 def _unit(v: np.ndarray, fallback: Axis) -> Axis:
@@ -155,10 +159,12 @@ def _read_hand(desc: RobotDescription, arm: str) -> Hand:
     if palm is not None:
         return Hand(palm.curl, palm.along, float(spec.gripper.max_opening), palm=palm)
     approach = np.asarray(approach_axis(desc, arm))
+    axis = (float(approach[0]), float(approach[1]), float(approach[2]))
     return Hand(
-        (float(approach[0]), float(approach[1]), float(approach[2])),
+        axis,
         _opening_axis(desc, arm, approach),
         float(spec.gripper.max_opening),
+        pads_behind=pads_behind(desc, arm, axis),
     )
 
 

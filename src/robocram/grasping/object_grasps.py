@@ -115,7 +115,14 @@ def candidates_at(
     """
     found = grasps(shape, hand_of(desc, arm), names)
     order = _rank(names)
-    found.sort(key=lambda g: (order[g.name], _preference(base_in_map, object_in_map, g), g.tilt))
+    found.sort(
+        key=lambda g: (
+            order[g.name],
+            g.deeper > 0.0,
+            _preference(base_in_map, object_in_map, g),
+            g.tilt,
+        )
+    )
     return [GraspCandidate(g, *g.in_map(object_in_map)) for g in found]
 
 
