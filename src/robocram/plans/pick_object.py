@@ -28,12 +28,13 @@ from robocram.execution.failures import (
     ManipulationLowLevelFailure,
     ManipulationPoseUnreachable,
     NavigationLowLevelFailure,
+    PlanFailure,
 )
 from robocram.knowledge.grasp_predicates import OBJECT_GRASP, OBJECT_UNGRASPABLE, ObjectGrasp
 from robocram.knowledge.reasoning_predicates import ARM_POSE_REACHABLE, LIFT_CLEARANCE
 from robocram.knowledge.robot_predicates import GRIPPER_JOINT
 from robocram.logic import Term, UnknownPredicateError, current_kb
-from robocram.plans.basic_actions import look_ahead, neck_in_the_way
+from robocram.plans.basic_actions import look_ahead, neck_in_the_way, park_arms
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.grasp_failures import ObjectUngraspable, PickUpFailed, PickUpUnreachable
 from robocram.plans.known_robot import KnownRobot, current_robot
@@ -382,7 +383,12 @@ def pick_up_object(
                     caught.append((choice_arm, choice))
             except PickUpFailed as failure:
                 causes.append(failure)
-    for choice_arm, choice in caught:  # only after every try: the hand opened part way
+    for choice_arm, choice in caught:  # only after every try: the hand opened part way,
+        _let_go(robot, name)  # from parking (at the last try's grasp the fingers closing
+        _back_out(name, way_out)  # part way met the drawer)
+        way_out.arm = None
+        with contextlib.suppress(PlanFailure):
+            park_arms()
         try:
             return _try_grasp(robot, name, choice_arm, choice, pose, lift, way_out, True)
         except (*TRIES, PickUpFailed) as failure:
