@@ -372,15 +372,16 @@ def pick_up_object(
                 raise
             causes.append(failure)
             continue
-        for choice in choices:
+        for grasped in choices:
             try:
+                choice = grasped
                 if lift and out_of is not None:
-                    choice = _lifted_out(robot, name, choice_arm, choice, out_of)
+                    choice = _lifted_out(robot, name, choice_arm, grasped, out_of)
                 return _try_grasp(robot, name, choice_arm, choice, pose, lift, way_out)
             except TRIES as failure:
                 causes.append(failure)
-                if choice.grasp == "rim" and _finger_caught(robot, choice_arm, failure):
-                    caught.append((choice_arm, choice))
+                if grasped.grasp == "rim" and _finger_caught(robot, choice_arm, failure):
+                    caught.append((choice_arm, grasped))
             except PickUpFailed as failure:
                 causes.append(failure)
     for choice_arm, choice in caught:  # only after every try: the hand opened part way,
@@ -390,6 +391,8 @@ def pick_up_object(
         with contextlib.suppress(PlanFailure):
             park_arms()
         try:
+            if lift and out_of is not None:
+                choice = _lifted_out(robot, name, choice_arm, choice, out_of)
             return _try_grasp(robot, name, choice_arm, choice, pose, lift, way_out, True)
         except (*TRIES, PickUpFailed) as failure:
             causes.append(failure)
