@@ -45,7 +45,9 @@ GRASPING = {"collision_mode": "allow_hand"}  # the fingers may touch what they c
 # a motion names it too (``touching``), and the hand may touch nothing else, 5 mm at most
 PART_WAY = 1 / 3  # of the open master finger joint's value: a rim grasp tried again with
 # the hand opened so far only (the drafted Stretch's fingers, fully open, span 12 cm: at a
-# bowl's wall the outer one met the next bowl or the drawer's front; a third suffices)
+# bowl's wall the outer one met the next bowl or the drawer's front; a third suffices).
+# Taken from zero, where the fingers of the Stretch and the PR2 meet: a gripper closed
+# above zero gets a value nearer open or out of range, and its retry only fails again
 TRIES = (ManipulationLowLevelFailure, GripperLowLevelFailure, NavigationLowLevelFailure)
 
 
