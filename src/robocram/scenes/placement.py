@@ -26,8 +26,10 @@ Nothing is keyed on robot names, so a new robot gets a scene too. The rules:
   panned towards the table and tilted down as far as it goes with the torso up, meets
   it: looking aims that axis at the target, and a camera close above a low table cannot
   look that steeply;
-- the shoulder must reach the wrist's grasp position; where it cannot (a camera that
-  cannot look down steeply puts the mug beyond the arm: TALOS, TIAGo dual), the table
+- the shoulder must reach the wrist's grasp position; where it cannot, a pan-tilt camera
+  (no torso) may look farther out, tilted down to its limit, the mug nearer in the lower
+  part of its view (:data:`VIEW_EDGE_SHARE`), the table as high (TALOS); else (a camera
+  that cannot look down steeply puts the mug beyond the arm: TIAGo dual), the table
   rises in steps until the wrist is 0.3 m above the shoulder
   (:data:`WRISTS_BELOW_SHOULDER`), the mug then within :data:`RAISED_REACH_SHARE` of the
   reach; where none fits, the same tables seen with the torso down (the look lowers it
