@@ -26,8 +26,10 @@ Nothing is keyed on robot names, so a new robot gets a scene too. The rules:
   panned towards the table and tilted down as far as it goes with the torso up, meets
   it: looking aims that axis at the target, and a camera close above a low table cannot
   look that steeply;
-- the shoulder must reach the wrist's grasp position; where it cannot (a camera that
-  cannot look down steeply puts the mug beyond the arm: TALOS, TIAGo dual), the table
+- the shoulder must reach the wrist's grasp position; where it cannot, a pan-tilt camera
+  (no torso) may look farther out, tilted down to its limit, the mug nearer in the lower
+  part of its view (:data:`VIEW_EDGE_SHARE`), the table as high (TALOS); else (a camera
+  that cannot look down steeply puts the mug beyond the arm: TIAGo dual), the table
   rises in steps until the wrist is 0.3 m above the shoulder
   (:data:`WRISTS_BELOW_SHOULDER`), the mug then within :data:`RAISED_REACH_SHARE` of the
   reach; where none fits, the same tables seen with the torso down (the look lowers it
@@ -42,7 +44,7 @@ Nothing is keyed on robot names, so a new robot gets a scene too. The rules:
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from robocram.kinematics import forward_kinematics
 from robocram.robots import ArmDescription, LoadedDescription
@@ -76,6 +78,8 @@ SIDE_SHARE = 0.8  # of the shoulder's y: the mug's y, a little inside the arm's 
 PAN_VERTICAL = 0.9  # |z| of a first joint's unit axis above which the arm can pan
 PAN_STEPS = 72  # pan values tried to look along the arm's working direction
 LOOK_MARGIN = 0.05  # [rad] kept from the tilt's limit when looking down at the mug
+VIEW_EDGE_SHARE = 0.5  # of the camera's half field below its axis, down to which a mug
+# seen while the camera looks farther out may lie (TALOS: seen at 0.61, not at 0.8)
 
 
 @dataclass(frozen=True)
@@ -86,6 +90,8 @@ class TabletopPlacement:
     table_height: float  # [m]
     mug_xy: tuple[float, float]  # [m] in map
     on_robot: bool = False  # the mug lies on the robot's own top: no table to add
+    look_x: float | None = None  # [m] in map: where to aim the camera, farther out than the
+    # mug, which then lies in the lower part of the view (None: at the mug)
 
     @property
     def table_x(self) -> float:
@@ -302,6 +308,8 @@ def tabletop_placement(world: World, robot: str) -> TabletopPlacement:
         for below in WRISTS_BELOW_SHOULDER:
             share = 1.0 if below == WRIST_BELOW_SHOULDER else RAISED_REACH_SHARE
             placed, unfit = _placement_at(world, robot, arm, below, share, low)
+            if placed is None and below == WRIST_BELOW_SHOULDER and not low:
+                placed = _placement_in_view_edge(world, robot, arm)
             if placed is not None:
                 return placed
             reasons.append(unfit)
@@ -342,6 +350,52 @@ def _placement_at(
             f"shoulder (table height {height:.2f} m){_view_note(desc)}"
         )
     return TabletopPlacement(arm.name, height, (mug_x, wrist[1])), ""
+
+
+def _placement_in_view_edge(
+    world: World, robot: str, arm: ArmDescription
+) -> TabletopPlacement | None:
+    """The table at its usual height (:data:`WRIST_BELOW_SHOULDER`) for a pan-tilt camera
+    that cannot aim its optical axis that near: the camera looks farther out, tilted down
+    to its limit, and the mug lies nearer, in the lower part of its view
+    (:data:`VIEW_EDGE_SHARE` of the half field below the axis), within the arm's reach
+    (as the first step's mug at that height); None where that does not fit (or the head
+    is not pan-tilt, or a torso moves it).
+
+    A raised table (the next step) puts the hand's wrist above the shoulder for a grasp
+    from above: TALOS's arms missed its mug so by 3-6 cm at their joint limits."""
+    desc = world.robot(robot).description
+    pt = desc.pan_tilt
+    if pt is None or not desc.cameras or desc.torso_joint:
+        return None
+    tilt = finite_limits(desc.model.joints[pt.tilt_joint])
+    if tilt is None:
+        return None
+    torso = _joints_for_torso(desc, arm)
+    root = world.pose(robot)
+    yaw = quat.to_euler(root.orientation)[2]
+    shoulder = _shoulder_in_map(world, robot, arm)
+    wrist_z = shoulder[2] - WRIST_BELOW_SHOULDER
+    height = table_height(world, robot, arm)
+    reach = arm_envelope(desc.model, arm, torso).reach
+    look_x = _nearest_in_view(desc, height - root.position[2], yaw)
+    turn = Pose(orientation=quat.from_euler(0.0, 0.0, yaw))
+    joints = {pt.pan_joint: _pan_to(desc, yaw)}
+    frame = desc.cameras[0].frame
+    views = [turn * forward_kinematics(desc, {**joints, pt.tilt_joint: v}, frame) for v in tilt]
+    view = max(views, key=_look_down)
+    axis = math.asin(min(_look_down(view), 1.0)) - LOOK_MARGIN
+    edge = axis + VIEW_EDGE_SHARE * desc.cameras[0].vertical_fov / 2
+    seen = _seen_from(view, min(edge, math.pi / 2 - 1e-6), height - root.position[2])
+    side = SIDE_SHARE if _pans(desc, arm, torso) else 1.0
+    past_base = _footprint_front(world, robot, height) + TABLE_GAP + MUG_INSET
+    mug_x = max(past_base, seen)
+    far_edge = mug_x - MUG_INSET + TABLE_DEPTH
+    needed = math.dist(shoulder, (mug_x, shoulder[1], wrist_z))
+    if not math.isfinite(look_x) or look_x > far_edge or needed > reach:
+        return None
+    place = TabletopPlacement(arm.name, height, (mug_x, side * shoulder[1]))
+    return place if look_x <= mug_x else replace(place, look_x=look_x)
 
 
 def grasp_in_reach_x(

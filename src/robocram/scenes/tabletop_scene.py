@@ -46,4 +46,5 @@ def tabletop_scene(robot: str | RobotDescription, world: World | None = None) ->
     world.add_item("mug-1", "mug", pose=Pose((mug_x, mug_y, height)))
     if not place.on_robot:
         world.add_item("bottle-1", "bottle", pose=Pose((table_x + 0.15, 0.3, height + 0.125)))
-    return TabletopScene(world, name, PoseStamped("map", (mug_x, mug_y, height)))
+    look_x = place.look_x if place.look_x is not None else mug_x
+    return TabletopScene(world, name, PoseStamped("map", (look_x, mug_y, height)))
