@@ -15,6 +15,7 @@ from robocram.plans.deliver import deliver
 from robocram.plans.errors import (
     DeliveryExhausted,
     FetchExhausted,
+    ObjectLetGo,
     PlanArgumentError,
     PlanSetupError,
     SearchExhausted,
@@ -42,6 +43,7 @@ __all__ = [
     "DeliveryExhausted",
     "FetchExhausted",
     "Held",
+    "ObjectLetGo",
     "ObjectUngraspable",
     "PickResult",
     "PickUpFailed",

@@ -101,12 +101,17 @@ def inside_point(opened: OpenedContainer) -> PoseStamped:
 
 
 def _look_into(
-    opened: OpenedContainer, wanted: ObjectDesignator, skip: Collection[str], move: bool = True
+    opened: OpenedContainer,
+    wanted: ObjectDesignator,
+    skip: Collection[str],
+    move: bool = True,
+    later: Collection[str] = (),
 ) -> ObjectDesignator | None:
     """Stand where ``opened`` was opened from (unless not ``move``: from where the robot
     stands), look into it, detect ``wanted`` there (the first seen that is not in
-    ``skip``: a spoon already on the table may be in view). Not seen from the opening
-    stand, the robot peers in, lower, closer and farther back (:func:`peer_into`)."""
+    ``skip``: a spoon already on the table may be in view; those in ``later`` last). Not
+    seen from the opening stand, the robot peers in, lower, closer and farther back
+    (:func:`peer_into`)."""
     point = inside_point(opened)
     try:
         park_arms()
@@ -115,9 +120,9 @@ def _look_into(
         look_from_above(point)
     except PlanFailure:
         return None
-    seen = _seen(wanted, skip)
+    seen = _seen(wanted, skip, later)
     if seen is None and move:
-        seen = peer_into(opened, point, lambda: _seen(wanted, skip))
+        seen = peer_into(opened, point, lambda: _seen(wanted, skip, later))
     return seen
 
 
@@ -137,15 +142,20 @@ def _to_opening_stand(opened: OpenedContainer) -> None:
         navigate(opened.reached)
 
 
-def _seen(wanted: ObjectDesignator, skip: Collection[str]) -> ObjectDesignator | None:
-    """``wanted`` as the robot sees it now, the first not in ``skip``; None if not seen."""
+def _seen(
+    wanted: ObjectDesignator, skip: Collection[str], later: Collection[str] = ()
+) -> ObjectDesignator | None:
+    """``wanted`` as the robot sees it now, the first not in ``skip``, those in ``later``
+    only where no other is seen; None if not seen."""
     try:
         if wanted.get("name") is not None:
             return detect(wanted)
         seen = perform(a.motion(type="detecting", object=all_.objects(type=wanted.get("type"))))
     except PlanFailure:
         return None
-    return next((thing for thing in seen if str(thing.get("name")) not in skip), None)
+    takes = [thing for thing in seen if str(thing.get("name")) not in skip]
+    first = [thing for thing in takes if str(thing.get("name")) not in later]
+    return next(iter(first or takes), None)
 
 
 def find_in_place(
@@ -154,31 +164,37 @@ def find_in_place(
     log: AttemptLog,
     skip: Collection[str] = (),
     from_here: bool = False,
+    later: Collection[str] = (),
 ) -> tuple[ObjectDesignator, OpenedContainer] | None:
     """``wanted`` seen in the visit's place, a container opened once, and the container;
     None when it is not a container, cannot be opened or ``wanted`` is not seen there.
-    ``from_here``: look from where the robot stands first (it just took a thing there)."""
+    ``from_here``: look from where the robot stands first (it just took a thing there).
+    ``later``: things taken only where no other is seen (a fetch ran dry on them)."""
     with contextlib.suppress(PlanFailure):
         inside = visit.open(log)
         if inside is not None:
-            seen = _look_into(inside, wanted, skip, move=False) if from_here else None
-            seen = seen or _look_into(inside, wanted, skip)
+            seen = _look_into(inside, wanted, skip, False, later) if from_here else None
+            seen = seen or _look_into(inside, wanted, skip, later=later)
             if seen is not None:
                 return seen, inside
     return None
 
 
 def find(
-    wanted: ObjectDesignator, visit: Visit, log: AttemptLog, skip: Collection[str] = ()
+    wanted: ObjectDesignator,
+    visit: Visit,
+    log: AttemptLog,
+    skip: Collection[str] = (),
+    later: Collection[str] = (),
 ) -> tuple[ObjectDesignator, OpenedContainer | None]:
     """Find ``wanted`` at its place (opening it once), else anywhere; the perceived object
     and the opened container it lies in. Things named in ``skip`` (already brought) are
-    not taken for it where it is kept.
+    not taken for it where it is kept, those in ``later`` only where no other is seen.
 
     Raises:
         SearchExhausted: it is nowhere the search looked.
     """
-    found = find_in_place(wanted, visit, log, skip)
+    found = find_in_place(wanted, visit, log, skip, later=later)
     if found is not None:
         return found
     searched = SearchLog(attempts=log)

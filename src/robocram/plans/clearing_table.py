@@ -30,7 +30,7 @@ from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import look_from_above, navigate, park_arms
 from robocram.plans.bringing import Visit, usual_place
 from robocram.plans.container_access import is_container
-from robocram.plans.deliver import deliver
+from robocram.plans.deliver import deliver, holds
 from robocram.plans.environment_links import environment_link_pose
 from robocram.plans.errors import DeliveryExhausted, PlanSetupError
 from robocram.plans.fetch import fetch
@@ -175,7 +175,7 @@ def _return_one(name: str, kind: str, point: Point, place: Place, done: TableCle
     try:
         _deliver_back(held, place, kind, done.log)
     except DeliveryExhausted as failure:
-        if not _holds(held):
+        if not holds(held):
             raise
         _taken_otherwise(held, was, place, kind, done, failure)
 
@@ -232,7 +232,7 @@ def _by_grasps(
             return None
         except DeliveryExhausted as missed:
             failure = missed
-            if _holds(again):
+            if holds(again):
                 deliver(again, was, again.arm, log=done.log)
     return failure
 
@@ -254,15 +254,10 @@ def _squared(name: str, kind: str, grasp: str, done: TableClearing) -> bool:
     try:
         place_object(held, PoseStamped.from_pose("map", Pose(lay.position, square)), held.arm)
     except PlanFailure:
-        if _holds(held):
+        if holds(held):
             deliver(held, lay, held.arm, log=done.log)
         return False
     return True
-
-
-def _holds(held: Held) -> bool:
-    """Whether ``held``'s hand still holds its thing (the KB's ``attached/4``)."""
-    return current_robot().held_objects([held.arm]).get(held.arm) == held.object_name
 
 
 def grasps_of(name: str) -> list[str]:

@@ -8,6 +8,8 @@ would collide is skipped at once; a stand where placing fails gives the next one
 spot by IK (a ``reachable_for`` location) come after those: a spot deep in a fridge is
 reached slanting past its open door, not with the arm as it holds the thing now. When all
 fail, :class:`DeliveryExhausted` (an ``ObjectUndeliverable``) carries every cause in order.
+A put that let the object go and then failed ends the delivery (:class:`ObjectLetGo`): the
+next stands would only move an empty hand, maybe one still inside a drawer.
 """
 
 from __future__ import annotations
@@ -27,7 +29,7 @@ from robocram.execution.failures import (
 )
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import look_ahead, navigate, neck_in_the_way
-from robocram.plans.errors import DeliveryExhausted, PlanArgumentError
+from robocram.plans.errors import DeliveryExhausted, ObjectLetGo, PlanArgumentError
 from robocram.plans.known_robot import current_robot
 from robocram.plans.location_poses import location_poses, next_pose
 from robocram.plans.pick_object import GRASPING, Held
@@ -108,6 +110,21 @@ def _stands(held: Held, spot: Pose, arm: str | None, reach_stands: bool) -> Iter
         )
 
 
+def holds(held: Held) -> bool:
+    """Whether ``held``'s hand still holds its thing (the KB's ``attached/4``)."""
+    return current_robot().held_objects([held.arm]).get(held.arm) == held.object_name
+
+
+def _let_go(held: Held, causes: list[Exception]) -> ObjectLetGo:
+    """The failure of a delivery whose hand no longer holds its thing."""
+    last = f": {causes[-1]}" if causes else ""
+    return ObjectLetGo(
+        f"{held.object_name} is no longer in the {held.arm} hand{last}",
+        object_name=held.object_name,
+        causes=tuple(causes),
+    )
+
+
 def _try_spot(
     held: Held,
     spot: Pose,
@@ -116,7 +133,11 @@ def _try_spot(
     log: AttemptLog,
     reach_stands: bool = False,
 ) -> list[Exception]:
-    """Try the stands of one spot; the failures met (empty: the object was placed)."""
+    """Try the stands of one spot; the failures met (empty: the object was placed).
+
+    Raises:
+        ObjectLetGo: a put let the object go and failed.
+    """
     causes: list[Exception] = []
     try:
         _carry_above(held, spot)
@@ -136,6 +157,8 @@ def _try_spot(
         except PlanFailure as failure:
             log.record("deliver", stand, failure)
             causes.append(failure)
+            if not holds(held):
+                raise _let_go(held, causes) from failure
             if tried >= stand_retries:
                 return causes
             continue
@@ -162,6 +185,8 @@ def deliver(
     Raises:
         DeliveryExhausted: no spot within ``place_retries`` and no stand within
             ``stand_retries`` per spot let the robot put the object down.
+        ObjectLetGo: the hand holds the object no longer (a put let it go and failed,
+            or it was let go before).
     """
     if stand_retries < 1 or place_retries < 1:
         raise PlanArgumentError(
@@ -170,6 +195,8 @@ def deliver(
         )
     log = log if log is not None else AttemptLog()
     held = held_object(object, arm)
+    if not holds(held):
+        raise _let_go(held, [])
     causes: list[Exception] = []
     spots = location_poses(target)
     for _ in range(place_retries):

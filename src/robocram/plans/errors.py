@@ -40,6 +40,15 @@ class DeliveryExhausted(ObjectUndeliverable):
     hint = "give a target the robot can stand beside, or raise place_retries / stand_retries"
 
 
+class ObjectLetGo(ObjectUndeliverable):
+    """The hand let the object go before it was delivered (a put let it go, then failed):
+    no other stand or spot can put down what the hand no longer holds."""
+
+    object_name: str | None = None
+    causes: tuple[Exception, ...] | None = None  # the failures met, the let-go's last
+    hint = "fetch it again from where it lies"
+
+
 class PlanArgumentError(ValueError):
     """A value given to a plan is outside what it accepts."""
 

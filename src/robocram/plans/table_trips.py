@@ -11,6 +11,7 @@ from dataclasses import dataclass, field
 
 from robocram.designators import LocationDesignator, a
 from robocram.designators.errors import GroundingError
+from robocram.execution.failures import PlanFailure
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.bringing import Visit, find, wanted_object
 from robocram.plans.deliver import deliver
@@ -38,6 +39,8 @@ class TableSetting:
     searched: list[str] = field(default_factory=list)  # objects found by a search elsewhere
     log: AttemptLog = field(default_factory=AttemptLog)
     trips: list[tuple[str, ...]] = field(default_factory=list)  # things put, per trip
+    unfetched: list[str] = field(default_factory=list)  # things a free hand's fetch ran
+    # dry on: seen again, they are taken only where no other of their kind is seen
 
 
 def spot_location(
@@ -104,10 +107,29 @@ def deliver_to_spot(held: Held, spot: Spot, done: TableSetting) -> None:
         deliver_at_spot(held, spot, done, reach_stands=True, where=where)
 
 
+def fetch_one(kind: str, visit: Visit, done: TableSetting) -> Held:
+    """Find a thing of ``kind`` not yet on the table and fetch it, a free hand; one that
+    could not be fetched is remembered, and the next trip takes another of its kind
+    where one is seen (the HSR's seed 9 tried bowl-2 twice and never bowl-1).
+
+    Raises:
+        PlanFailure: none was found, or fetching failed.
+    """
+    seen, inside = find(
+        wanted_object(kind), visit, done.log, skip=done.placed, later=done.unfetched
+    )
+    try:
+        return fetch(seen, log=done.log, opened=inside)
+    except PlanFailure:
+        name = str(seen.get("name"))
+        if name not in done.unfetched:
+            done.unfetched.append(name)
+        raise
+
+
 def bring_one(spot: Spot, visit: Visit, done: TableSetting) -> Held:
     """Find a thing of the spot's type not yet on the table, fetch it, put it at the spot."""
-    seen, inside = find(wanted_object(spot.type), visit, done.log, skip=done.placed)
-    held = fetch(seen, log=done.log, opened=inside)
+    held = fetch_one(spot.type, visit, done)
     deliver_to_spot(held, spot, done)
     done.placed[held.object_name] = spot
     done.trips.append((held.object_name,))

@@ -25,7 +25,7 @@ from robocram.designators.errors import GroundingError
 from robocram.execution import perform
 from robocram.execution.failures import ManipulationLowLevelFailure, PlanFailure
 from robocram.plans.basic_actions import navigate, park_arms
-from robocram.plans.bringing import Visit, find, find_in_place, wanted_object
+from robocram.plans.bringing import Visit, find_in_place, wanted_object
 from robocram.plans.fetch import fetch
 from robocram.plans.known_robot import current_robot
 from robocram.plans.pick_object import GRASPING, Held
@@ -36,6 +36,7 @@ from robocram.plans.table_trips import (
     bring_one,
     deliver_at_spot,
     deliver_to_spot,
+    fetch_one,
 )
 from robocram.tf import Pose, PoseStamped, transform_pose
 
@@ -109,8 +110,7 @@ def bring_two(first: Spot, second: Spot, visit: Visit, done: TableSetting) -> li
     """Bring the things of ``first`` and ``second`` in one trip if the robot can, else one
     by one; the failures (an empty list: both are set)."""
     try:
-        seen, inside = find(wanted_object(first.type), visit, done.log, skip=done.placed)
-        held = fetch(seen, log=done.log, opened=inside)
+        held = fetch_one(first.type, visit, done)
     except PlanFailure as failure:  # no first thing: the second alone, as one-armed
         return [failure, *_alone(second, visit, done)]
     other = other_arm(held.arm)
