@@ -109,7 +109,8 @@ def view_share(robot: ProjectedRobot, target_in_map: Vector3) -> tuple[float, fl
     limit may still see a target a little under its axis (TALOS's, 45 degrees down)."""
     camera = robot.description.cameras[0]
     view = robot.world.link_pose(robot.name, camera.frame)
-    x, y, z = (view.inverse() * Pose(tuple(target_in_map))).position
+    tx, ty, tz = target_in_map
+    x, y, z = (view.inverse() * Pose((tx, ty, tz))).position
     aside = math.atan2(x, z) / (camera.horizontal_fov / 2)
     below = math.atan2(y, z) / (camera.vertical_fov / 2)
     return aside, below
