@@ -24,6 +24,7 @@ from robocram.execution.failures import (
 )
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.known_robot import KnownRobot, current_robot
+from robocram.plans.tilt_limit_look import seen_at_tilt_limit
 from robocram.tf import Pose, PoseStamped, transform_pose
 
 # [m] (forward, left) base moves, in its frame where parking first failed, before each
@@ -221,7 +222,44 @@ def _lowering_helps(failure: PlanFailure) -> bool:
     )
 
 
+def look_to_tilt_limit(target: object) -> Any:
+    """Point the camera at ``target``; a head that stops at its tilt limit above it but
+    has it in the lower part of its view (:func:`seen_at_tilt_limit`) has looked: the
+    joints it turned to.
+
+    Raises:
+        PtuGoalNotReached: the head could not turn to the target, and the target is not
+            so in view.
+    """
+    try:
+        return look(target)
+    except PtuGoalNotReached as failure:
+        if seen_at_tilt_limit(failure):
+            return failure.reached
+        raise
+
+
 def look_lowering(target: object) -> Any:
+    """Point the camera at ``target``, lowering the torso where that helps
+    (:func:`_look_lowering`); where the head still stops at its tilt limit above the
+    target (TALOS has no torso to lower), the look counts as had if the target lies in
+    the lower part of the view (:func:`seen_at_tilt_limit`): the joints it turned to.
+
+    Raises:
+        PtuPathBlocked: the head is blocked at the lowest step too, or there is no torso
+            to lower.
+        PtuGoalNotReached: the head cannot tilt down to the target at the lowest step,
+            and the target is not in the lower part of its view.
+    """
+    try:
+        return _look_lowering(target)
+    except PtuGoalNotReached as failure:
+        if seen_at_tilt_limit(failure):
+            return failure.reached
+        raise
+
+
+def _look_lowering(target: object) -> Any:
     """Point the camera at ``target``; where the head is blocked (an HSR whose lift an
     earlier reach left up carries its parked hand into the head turned down: 8 of 50
     kitchen mug fetches failed so), or cannot tilt down to it, lower the torso in steps

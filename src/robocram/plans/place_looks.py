@@ -16,7 +16,7 @@ from collections.abc import Callable
 
 from robocram.designators import ObjectDesignator
 from robocram.execution.failures import PerceptionObjectNotFound, PtuGoalUnreachable
-from robocram.plans.basic_actions import detect, look
+from robocram.plans.basic_actions import detect, look, look_to_tilt_limit
 from robocram.plans.environment_links import environment_link_pose
 from robocram.plans.stands import map_pose
 from robocram.tf import Pose, PoseStamped
@@ -63,6 +63,8 @@ def look_and_detect(
 ) -> ObjectDesignator:
     """Look at ``target`` and detect ``wanted``; with ``place`` (environment, link) and
     ``robot_frame``, a look that cannot be had there is tried at :func:`points_around`.
+    A head stopped at its tilt limit above ``target`` but with it in the lower part of its
+    view has looked (:func:`~robocram.plans.basic_actions.look_to_tilt_limit`).
 
     Raises:
         PtuGoalUnreachable: the camera can be turned to none of the points (the first
@@ -70,7 +72,7 @@ def look_and_detect(
         PerceptionObjectNotFound: the object is not seen.
     """
     try:
-        look(target)
+        look_to_tilt_limit(target)
     except PtuGoalUnreachable as failure:
         if place is None or robot_frame is None:
             raise

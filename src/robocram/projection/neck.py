@@ -18,6 +18,8 @@ solution for any of them. A robot with neither looks with what turns its camera
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from robocram.execution.failures import (
@@ -73,13 +75,20 @@ def _aim_pan_tilt(
     if inside != wanted:
         limits = {j: (b.lower, b.upper) for j, b in bounds.items() if inside[j] != wanted[j]}
         below = pt.tilt_joint in limits and _below_axis(robot, target_in_map)
-        lower = "; the target lies below what it tilts down to: lower the camera" if below else ""
+        share = view_share(robot, target_in_map) if below else None
+        lower = (
+            f"; the target lies below what it tilts down to, {share[1]:.2f} of the half "
+            "field under the axis: lower the camera"
+            if share is not None
+            else ""
+        )
         raise PtuGoalNotReached(
             f"looking at {tuple(target_in_map)} needs {wanted}, outside the limits {limits} "
             f"of {robot.name}'s head; turned to {reached} instead{lower}",
             target=tuple(target_in_map),
             reached=reached,
             below_tilt=below,
+            view_share=share,
         )
     return reached
 
@@ -91,6 +100,20 @@ def _below_axis(robot: ProjectedRobot, target_in_map: Vector3) -> bool:
     axis = (Pose(orientation=view.orientation) * Pose((0.0, 0.0, 1.0))).position
     to = np.subtract(target_in_map, view.position)
     return bool(to[2] / np.linalg.norm(to) < axis[2] - 1e-6)
+
+
+def view_share(robot: ProjectedRobot, target_in_map: Vector3) -> tuple[float, float]:
+    """Where ``target_in_map`` lies in the first camera's view as the head is turned: its
+    angles off the optical axis (aside: + right, below: + down) as shares of the half
+    fields of the robot's description (1 at the view's edge): a head stopped at its tilt
+    limit may still see a target a little under its axis (TALOS's, 45 degrees down)."""
+    camera = robot.description.cameras[0]
+    view = robot.world.link_pose(robot.name, camera.frame)
+    tx, ty, tz = target_in_map
+    x, y, z = (view.inverse() * Pose((tx, ty, tz))).position
+    aside = math.atan2(x, z) / (camera.horizontal_fov / 2)
+    below = math.atan2(y, z) / (camera.vertical_fov / 2)
+    return aside, below
 
 
 def _turn_head(

@@ -62,6 +62,9 @@ class PtuGoalNotReached(PtuLowLevelFailure):
     target: object | None = None
     reached: object | None = None
     below_tilt: bool = False  # the target lies below the axis tilted down to its limit
+    # the target's angles off the optical axis as turned, as shares of the camera's half
+    # fields (aside: + right; below: + down; 1 at the view's edge); None: not measured
+    view_share: tuple[float, float] | None = None
     summary = "the pan-tilt unit did not reach its goal"
     hint = "retry the look"
 
