@@ -8,7 +8,8 @@ module- or class-scoped fixture run on one worker too, so its set-up (a breakfas
 traced door) runs once, not once per worker. The ROS tests are not one group (together
 they took more than half the suite's time on one worker): a module's ``roscore`` is on a
 free port, and each ROS 2 test holds a domain no other process holds (``free_domain``).
-Everything else is spread by test.
+Modules that share a session-scoped fixture name their ``xdist_group`` themselves
+(``pytestmark``); it is kept. Everything else is spread by test.
 
 Each worker takes the next unit (a group or a test) when it runs dry, so the units are
 queued longest first (``suite_durations.json``, made by ``tools/suite_durations.py``; with
@@ -67,6 +68,8 @@ def pytest_collection_modifyitems(items: list[pytest.Item]) -> Iterator[None]:
 
 def _group(items: list[pytest.Item]) -> None:
     for item in items:
+        if item.get_closest_marker("xdist_group") is not None:
+            continue  # a group its module names: files sharing a session's fixture
         try:
             relative = Path(str(item.path)).resolve().relative_to(TESTS)
         except ValueError:

@@ -11,13 +11,13 @@ import pytest
 from robocram.designators import a
 from robocram.motion import JointTrajectory, trajectory_listener
 from robocram.plans.transport import TransportResult, transport
-from robocram.projection import simulated_robot
-from robocram.robots import RobotDescription, load_description
+from robocram.robots import load_description
 from robocram.ros import ros_robot
 from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
 from robocram.world import World
 from tests.ros.driver_pool import DriverPool
+from tests.ros.projected_transports import SHARED, Projected
 from tests.ros.received_goals import assert_same_goal
 
 TABLE = ("kitchen", "table_top")
@@ -26,16 +26,7 @@ RESTING = 0.015  # [m] the driver lets go without simulating: the bowl may stand
 DRAWN = 0.005  # [m] stands in a world whose drawer the driver's hand moved
 STRETCH = Path(__file__).resolve().parents[1] / "data" / "stretch" / "stretch.py"
 STRETCH_FACTS = STRETCH.with_name("stretch_ros2.pl")
-
-
-def _in_projection(
-    object_type: str, item: str, robot: str | RobotDescription = "pr2"
-) -> TransportResult:
-    scene = kitchen_scene(robot)
-    with simulated_robot(scene.world, scene.robot):
-        result = transport(object_type, a.location(on=TABLE, for_=item))
-    scene.world.close()
-    return result
+pytestmark = SHARED  # the PR2's projected transports are test_ros_kitchen_transport's too
 
 
 def _on_the_table_top(world: World, item: str, pose: Pose) -> None:
@@ -61,9 +52,13 @@ def _same_stands(result: TransportResult, expected: TransportResult, within: flo
     ("object_type", "item", "clock_offset"), [("mug", "mug-1", 0.0), ("bowl", "bowl-1", -10.0)]
 )
 def test_the_kitchen_transport_over_ros2_on_the_real_pr2s_controllers(
-    drivers2: DriverPool, object_type: str, item: str, clock_offset: float
+    drivers2: DriverPool,
+    projected_transports: Projected,
+    object_type: str,
+    item: str,
+    clock_offset: float,
 ) -> None:
-    expected = _in_projection(object_type, item)
+    expected = projected_transports("pr2", object_type, item)
     scene = kitchen_scene("pr2")
     serving = drivers2("pr2", controllers="pr2", clock_offset=clock_offset, scene="kitchen")
     with serving, ros_robot("pr2", ros=2, world=scene.world) as run:
@@ -85,14 +80,18 @@ def test_the_kitchen_transport_over_ros2_on_the_real_pr2s_controllers(
 
 @pytest.mark.parametrize(("object_type", "item"), [("mug", "mug-1"), ("bowl", "bowl-1")])
 def test_the_stretch_transports_over_ros2_turning_its_base_for_its_sideways_arm(
-    drivers2: DriverPool, tmp_path: Path, object_type: str, item: str
+    drivers2: DriverPool,
+    projected_transports: Projected,
+    tmp_path: Path,
+    object_type: str,
+    item: str,
 ) -> None:
     """A differential base with coupled joints: IK moves the base with the arm (Nav2
     goals; the drawer is opened and shut a step at a time, base and arm), a finger meeting
     the mug first pushes it into the grip (the robot side), and every trajectory goal is
     the one the plan side planned."""
     desc = load_description(STRETCH)
-    expected = _in_projection(object_type, item, desc)
+    expected = projected_transports(desc, object_type, item)
     scene = kitchen_scene(desc)
     sent: list[JointTrajectory] = []
     serving = drivers2(

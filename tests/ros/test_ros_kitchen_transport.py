@@ -16,15 +16,16 @@ from robocram.designators import a
 from robocram.execution import perform
 from robocram.plans import pick_up
 from robocram.plans.transport import TransportResult, transport
-from robocram.projection import simulated_robot
 from robocram.ros import Roscore, ros_robot
 from robocram.scenes import kitchen_scene, tabletop_scene
 from robocram.tf import Pose
 from robocram.world import World
 from tests.ros.driver_pool import DriverPool
+from tests.ros.projected_transports import SHARED, Projected
 from tests.ros.served_state import assert_same_state, served_state
 
 TABLE = ("kitchen", "table_top")
+pytestmark = SHARED  # its projected transports are test_ros2_kitchen's too
 DRAWER_JOINT = "drawer_unit_drawer_3_joint"
 RESTING = 0.015  # [m] the driver lets go without simulating: the mug may stand this high
 SAME = 1e-6  # [m | rad] stands chosen by the same seeds in the same world
@@ -56,14 +57,6 @@ def _on_the_table_top(world: World, item: str, pose: Pose) -> None:
     assert abs(pose.orientation[0]) < 1e-3 and abs(pose.orientation[1]) < 1e-3  # upright
 
 
-def _in_projection(object_type: str, item: str) -> TransportResult:
-    scene = kitchen_scene("pr2")
-    with simulated_robot(scene.world, scene.robot):
-        result = _to_the_table(object_type, item)
-    scene.world.close()
-    return result
-
-
 def _same_stands(result: TransportResult, expected: TransportResult, within: float) -> None:
     """The stages tried in the same order, from stands at most ``within`` [m | rad] apart."""
     assert [stage for stage, _ in _stands(result)] == [stage for stage, _ in _stands(expected)]
@@ -73,10 +66,9 @@ def _same_stands(result: TransportResult, expected: TransportResult, within: flo
 
 
 def test_the_mug_goes_to_the_table_on_the_real_pr2_with_its_clock_ahead(
-    roscore: Roscore,
-    drivers: DriverPool,
+    roscore: Roscore, drivers: DriverPool, projected_transports: Projected
 ) -> None:
-    expected = _in_projection("mug", "mug-1")
+    expected = projected_transports("pr2", "mug", "mug-1")
     scene = kitchen_scene("pr2")
     with (
         drivers(controllers="pr2", clock_offset=10.0, scene="kitchen"),
@@ -96,9 +88,9 @@ def test_the_mug_goes_to_the_table_on_the_real_pr2_with_its_clock_ahead(
 
 
 def test_the_bowl_comes_out_of_the_drawer_on_the_real_pr2_with_its_clock_behind(
-    roscore: Roscore, drivers: DriverPool
+    roscore: Roscore, drivers: DriverPool, projected_transports: Projected
 ) -> None:
-    expected = _in_projection("bowl", "bowl-1")
+    expected = projected_transports("pr2", "bowl", "bowl-1")
     scene = kitchen_scene("pr2")
     with (
         drivers(controllers="pr2", clock_offset=-10.0, scene="kitchen", tf_lag=TF_LAG),

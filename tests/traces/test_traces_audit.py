@@ -12,7 +12,7 @@ today.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator
+from collections.abc import Callable
 from dataclasses import dataclass, replace
 from pathlib import Path
 
@@ -30,9 +30,7 @@ from robocram.motion import (
     report_executed,
     time_parameterize,
 )
-from robocram.plans.transport import transport
 from robocram.projection import simulated_robot
-from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
 from robocram.tf.quaternion import from_euler
 from robocram.traces import TraceDatabase, trace_to
@@ -40,6 +38,7 @@ from robocram.traces.audit_bounds import AuditBounds, adjacent_pairs_of
 from robocram.traces.audit_findings import AuditFinding, AuditReport, FindingKind
 from robocram.traces.trajectory_audit import audit_runs
 from robocram.world import World
+from tests.traces.traced_transports import SHARED, TracedTransport
 
 WALL_X = 0.5  # [m] the low wall's centre in map, in front of the PR2
 DRIVE = 0.1  # [m] how far the base drives into it
@@ -47,6 +46,8 @@ ELBOW = "r_elbow_flex_joint"
 ELBOW_ACCELERATION = 3.0  # [rad/s^2] twice the PR2 elbow's default limit of 1.5
 SWING_PAN = 0.3  # [rad] the right shoulder's pan that puts the right hand in the left shoulder
 DEPTH_TOLERANCE = 0.001  # [m]
+pytestmark = SHARED  # its PR2 and HSR kitchen transports are test_traces_audit_hand's too
+Transports = Callable[[str, str], TracedTransport]
 
 
 @dataclass
@@ -342,14 +343,9 @@ def test_a_missing_database_or_run_is_one_line_of_bad_input(
 
 
 @pytest.fixture(scope="module")
-def kitchen_report(tmp_path_factory: pytest.TempPathFactory) -> Iterator[AuditReport]:
-    db_path = tmp_path_factory.mktemp("kitchen") / "runs.db"
-    scene = kitchen_scene("pr2")
-    with trace_to(db_path, world=scene.world), simulated_robot(scene.world, "pr2"):
-        transport("mug", a.location(on=("kitchen", "table_top"), for_="mug-1"))
-    scene.world.close()
-    with TraceDatabase(db_path, create=False) as db:
-        yield audit_runs(db)
+def kitchen_report(traced_transports: Transports) -> AuditReport:
+    """The audit of a PR2 kitchen mug transport (test_traces_audit_hand.py's too)."""
+    return traced_transports("pr2", "mug").report
 
 
 def test_a_pr2_kitchen_transport_moves_its_head_and_grippers_only_along_trajectories(
@@ -380,14 +376,7 @@ def test_a_pr2_kitchen_transport_keeps_every_limit(kitchen_report: AuditReport) 
         assert kitchen_report.of(kind) == []
 
 
-def test_an_hsr_kitchen_transport_is_clean(
-    tmp_path: Path,
-) -> None:
-    scene = kitchen_scene("hsrb")
-    with trace_to(tmp_path / "hsr.db", world=scene.world), simulated_robot(scene.world, "hsrb"):
-        transport("mug", a.location(on=("kitchen", "table_top"), for_="mug-1"))
-    scene.world.close()
-    with TraceDatabase(tmp_path / "hsr.db", create=False) as db:
-        report = audit_runs(db)
+def test_an_hsr_kitchen_transport_is_clean(traced_transports: Transports) -> None:
+    report = traced_transports("hsrb", "mug").report  # test_traces_audit_hand.py's too
     # it used to jump its head and hand, and open its hand into its base (6.6 mm) parked
     assert report.clean, report.summary_lines()

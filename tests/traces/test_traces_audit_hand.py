@@ -4,77 +4,24 @@ Each ``allow_hand`` motion (approach, lift, put down, back off) stores its allow
 the hand's links on the object moved, 5 mm. The audit replays every trajectory on raw
 PyBullet and holds it to that bound (clean). Where each such motion ends, PyBullet's raw
 closest points say how deep the hand is in the named object (within the bound) and that
-it touches no other body.
+it touches no other body (``traced_transports.HandEnds``).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
 
 from robocram.costmaps.reach_reasoning import LIFT_MARGIN
-from robocram.designators import a
-from robocram.motion import JointTrajectory, trajectory_listener
 from robocram.motion.hand_contact import HAND_CONTACT_DEPTH
-from robocram.plans.transport import TransportResult, transport
-from robocram.projection import simulated_robot
 from robocram.scenes import kitchen_scene
-from robocram.traces import TraceDatabase, trace_to
-from robocram.traces.audit_findings import AuditReport, FindingKind
-from robocram.traces.trajectory_audit import audit_runs
-from robocram.world import RawDistances, World
+from robocram.traces.audit_findings import FindingKind
+from tests.traces.traced_transports import SHARED, TracedTransport
 
-
-@dataclass
-class HandEnds:
-    """At the end of each motion allowing the hand a contact: what it allowed, how deep
-    the hand is in it, and what else the hand touches (PyBullet's raw closest points)."""
-
-    world: World
-    robot: str
-    named: list[set[str]] = field(default_factory=list)  # per motion: the objects allowed
-    depths: list[float] = field(default_factory=list)  # [m] per motion: deepest in them
-    others: set[str] = field(default_factory=set)  # bodies touched that were not allowed
-
-    def __call__(self, trajectory: JointTrajectory) -> None:
-        if not trajectory.allowed_contacts:
-            return
-        raw = RawDistances(self.world)
-        links = {c.robot_side for c in trajectory.allowed_contacts}
-        named = {c.other for c in trajectory.allowed_contacts}
-        shaped = [link for link in raw.collision_links(self.robot) if link in links]
-        deepest = 0.0
-        for obj in self.world.objects():
-            if obj.name == self.robot or obj.type == "floor":
-                continue
-            for link in shaped:
-                for other in raw.collision_links(obj):
-                    gap = raw.closest(self.robot, link, obj, other)
-                    if gap is None:
-                        continue
-                    if obj.name in named:
-                        deepest = max(deepest, -gap.distance)
-                    else:
-                        self.others.add(f"{link} / {obj.name}/{other}")
-        self.named.append(named)
-        self.depths.append(deepest)
-
-
-def _traced(tmp_path: Path, robot: str, kind: str) -> tuple[AuditReport, HandEnds, TransportResult]:
-    scene = kitchen_scene(robot)
-    ends = HandEnds(scene.world, scene.robot)
-    db_path = tmp_path / f"{Path(robot).stem}-{kind}.db"
-    with (
-        trace_to(db_path, world=scene.world),
-        trajectory_listener(ends),
-        simulated_robot(scene.world, scene.robot),
-    ):
-        done = transport(kind, a.location(on=("kitchen", "table_top"), for_=f"{kind}-1"))
-    scene.world.close()
-    with TraceDatabase(db_path, create=False) as db:
-        return audit_runs(db), ends, done
+pytestmark = SHARED  # the PR2's and the HSR's mug transports are test_traces_audit's too
+Transports = Callable[[str, str], TracedTransport]
 
 
 def _bottom_and_drawer_top(robot: str) -> tuple[float, float]:
@@ -104,9 +51,10 @@ STRETCH = str(Path(__file__).resolve().parents[1] / "data" / "stretch" / "stretc
     ],
 )
 def test_a_kitchen_mug_transport_is_clean_with_the_hand_bounded_on_the_mug(
-    tmp_path: Path, robot: str
+    traced_transports: Transports, robot: str
 ) -> None:
-    report, ends, _ = _traced(tmp_path, robot, "mug")
+    traced = traced_transports(robot, "mug")
+    report, ends = traced.report, traced.ends
     assert report.clean, report.summary_lines()
     assert len(ends.named) >= 3  # approach, lift, put down (and back off)
     assert all(named == {"mug-1"} for named in ends.named)  # only the mug, by name
@@ -115,7 +63,9 @@ def test_a_kitchen_mug_transport_is_clean_with_the_hand_bounded_on_the_mug(
 
 
 @pytest.mark.parametrize("robot", ["pr2", "boxy"])
-def test_the_bowl_comes_from_its_drawer_with_the_hand_bounded(tmp_path: Path, robot: str) -> None:
+def test_the_bowl_comes_from_its_drawer_with_the_hand_bounded(
+    traced_transports: Transports, robot: str
+) -> None:
     """The drawer's handle and the bowl are named in turn. The audit moves the drawer
     with the hand (each step's trajectory carries its joint), and a grasp roll that did
     not hold goes back by trajectories: the whole run is clean, the drawer's opening and
@@ -123,7 +73,8 @@ def test_the_bowl_comes_from_its_drawer_with_the_hand_bounded(tmp_path: Path, ro
     stand could not: its delivery then failed, every table stand blocked by the bowl
     hanging in the drawer)."""
     bottom, top = _bottom_and_drawer_top(robot)
-    report, ends, done = _traced(tmp_path, robot, "bowl")
+    traced = traced_transports(robot, "bowl")
+    report, ends, done = traced.report, traced.ends, traced.done
     rise = done.held.lifted.position[2] - done.held.grasp_pose.position[2]  # [m]
     assert bottom + rise >= top + LIFT_MARGIN - 1e-6
     assert report.clean, [f.line() for f in report.findings]

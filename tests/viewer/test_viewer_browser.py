@@ -1,15 +1,20 @@
-"""The viewer in a real browser: headless Chromium shows the task tree and draws the robot."""
+"""The viewer in a real browser: headless Chromium shows the task tree and draws the robot.
+
+One Chromium for the module (starting it and loading the page's scripts take seconds of
+both cores): each test starts from a blank page, so it sees only the page it opens.
+"""
 
 from __future__ import annotations
 
 import io
 import math
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any
 
 import numpy as np
+import pytest
 from PIL import Image
 
 from robocram.viewer.headless_browser import HeadlessChromium
@@ -31,6 +36,24 @@ OVERHEAD_FROM, OVERHEAD_AT = (0.6, -2.6, 3.4), (0.6, 0.0, 0.0)  # [m] in map: se
 PAIRS = 4  # picture pairs taken until one shows the change alone
 POLLS, POLL = 600, 0.1  # looks at the page for a new frame [s apart]: a guard against hanging
 ONLY_THERE = 0.97  # share of the changed pixels that must lie in the expected box
+
+
+@pytest.fixture(scope="module")
+def chromium() -> Iterator[HeadlessChromium]:
+    """The module's headless Chromium, the page size the projection assumes."""
+    with HeadlessChromium(WIDTH, HEIGHT) as browser:
+        yield browser
+
+
+@pytest.fixture
+def browser(chromium: HeadlessChromium) -> HeadlessChromium:
+    """The module's Chromium on a blank page: no earlier test's page is left to be read."""
+    chromium.open("about:blank")
+    for _ in range(POLLS):
+        if chromium.evaluate("location.href") == "about:blank":
+            return chromium
+        time.sleep(POLL)
+    raise AssertionError(f"the browser did not leave the last page in {POLLS} looks")
 
 
 def _pixels(png: bytes) -> np.ndarray:
@@ -99,30 +122,29 @@ def _robot_box_on_screen(world: Any) -> tuple[float, float, float, float]:
     return px[:, 0].min(), px[:, 1].min(), px[:, 0].max(), px[:, 1].max()
 
 
-def test_browser_shows_tree_and_draws_the_robot(live_run: Any) -> None:
+def test_browser_shows_tree_and_draws_the_robot(live_run: Any, browser: HeadlessChromium) -> None:
     viewer = live_run.viewer
     aim_camera(viewer)
-    with HeadlessChromium(WIDTH, HEIGHT) as browser:
-        shown = [f"{task.name} {task.status.value}" for task in live_run.tree.walk()]
-        # the tree's rows are drawn one after another: wait for all of them, not the first
-        text = open_viewer(browser, viewer, "perform moving-tcp#3", *shown)
-        for task in live_run.tree.walk():
-            assert f"{task.name} {task.status.value}" in text, task.path
-        assert "too-high failed" in text and "pick-mug succeeded" in text
-        left, top, right, bottom = _robot_box_on_screen(live_run.world)
+    shown = [f"{task.name} {task.status.value}" for task in live_run.tree.walk()]
+    # the tree's rows are drawn one after another: wait for all of them, not the first
+    text = open_viewer(browser, viewer, "perform moving-tcp#3", *shown)
+    for task in live_run.tree.walk():
+        assert f"{task.name} {task.status.value}" in text, task.path
+    assert "too-high failed" in text and "pick-mug succeeded" in text
+    left, top, right, bottom = _robot_box_on_screen(live_run.world)
 
-        def in_box(rows: np.ndarray, cols: np.ndarray) -> np.ndarray:
-            return (
-                (cols >= left - MARGIN)
-                & (cols <= right + MARGIN)
-                & (rows >= top - MARGIN)
-                & (rows <= bottom + MARGIN)
-            )
+    def in_box(rows: np.ndarray, cols: np.ndarray) -> np.ndarray:
+        return (
+            (cols >= left - MARGIN)
+            & (cols <= right + MARGIN)
+            & (rows >= top - MARGIN)
+            & (rows <= bottom + MARGIN)
+        )
 
-        def show(visible: bool) -> None:
-            viewer.view.set_visible("pr2", visible)
+    def show(visible: bool) -> None:
+        viewer.view.set_visible("pr2", visible)
 
-        with_robot, without_robot, rows, cols = _with_and_without(browser, show, in_box)
+    with_robot, without_robot, rows, cols = _with_and_without(browser, show, in_box)
     OUT.mkdir(exist_ok=True)
     (OUT / "viewer.png").write_bytes(with_robot)
     (OUT / "viewer_without_robot.png").write_bytes(without_robot)
@@ -131,7 +153,9 @@ def test_browser_shows_tree_and_draws_the_robot(live_run: Any) -> None:
     assert in_box(rows, cols).mean() > ONLY_THERE  # and nothing changed elsewhere
 
 
-def test_browser_draws_the_costmap_where_its_cells_are(live_run: Any) -> None:
+def test_browser_draws_the_costmap_where_its_cells_are(
+    live_run: Any, browser: HeadlessChromium
+) -> None:
     viewer = live_run.viewer
     (costmap,) = viewer.costmaps  # where to stand to reach the mug, from the live feed
     viewer.show(len(viewer.timeline) - 1)
@@ -149,9 +173,8 @@ def test_browser_draws_the_costmap_where_its_cells_are(live_run: Any) -> None:
         return (cols >= left) & (cols <= right) & (rows >= top) & (rows <= bottom)
 
     try:
-        with HeadlessChromium(WIDTH, HEIGHT) as browser:
-            open_viewer(browser, viewer)
-            pictures = _with_and_without(browser, viewer.overlay.set_visible, in_box)
+        open_viewer(browser, viewer)
+        pictures = _with_and_without(browser, viewer.overlay.set_visible, in_box)
     finally:
         viewer.overlay.set_visible(True)
         aim_camera(viewer)
