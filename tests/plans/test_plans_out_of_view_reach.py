@@ -22,10 +22,11 @@ import pytest
 
 from robocram.designators import an
 from robocram.execution.failures import PtuGoalNotReached
+from robocram.knowledge.grasp_predicates import ObjectGrasp
 from robocram.plans.basic_actions import look_lowering
 from robocram.plans.grasp_failures import PickUpUnreachable
 from robocram.plans.known_robot import current_robot
-from robocram.plans.nearer_pre_grasp import NEARER_LIFT_SHARE
+from robocram.plans.nearer_pre_grasp import NEARER_LIFT_SHARE, NEARER_SHARE, nearer_pre_grasp
 from robocram.plans.out_of_view_reach import NEAR_DISTANCES, near_stands, out_of_view
 from robocram.plans.pick_object import pick_up_object
 from robocram.projection import simulated_robot
@@ -93,3 +94,25 @@ def test_near_stand_has_the_mug_out_of_view_and_takes_it_from_nearer(
     assert not pybullet.getClosestPoints(body, kitchen, 0.0, physicsClientId=cid)
     fingers = pybullet.getClosestPoints(body, mug_body, 0.005, physicsClientId=cid)
     assert fingers  # the hand holds it
+
+
+def test_nearer_pre_grasp_keeps_the_approach_and_a_drawers_lift() -> None:
+    turned = quat.from_euler(0.0, math.pi / 2, 0.0)
+    grasp = PoseStamped("map", (1.0, 2.0, 0.9), turned)
+    choice = ObjectGrasp(
+        "mug-1",
+        "talos",
+        "right",
+        "handle",
+        grasp,
+        PoseStamped("map", (1.0, 2.1, 1.0), turned),  # 0.1 m back and over
+        PoseStamped("map", (1.0, 2.0, 1.0), turned),
+    )
+    near = nearer_pre_grasp(choice)
+    assert near.pre_grasp.position == pytest.approx(
+        (1.0, 2.0 + 0.1 * NEARER_SHARE, 0.9 + 0.1 * NEARER_SHARE)
+    )
+    assert near.lift.position == pytest.approx((1.0, 2.0, 0.9 + 0.1 * NEARER_LIFT_SHARE))
+    assert near.pre_grasp.orientation == turned and near.grasp_pose == grasp
+    kept = nearer_pre_grasp(choice, lift_share=1.0)
+    assert kept.lift.position == pytest.approx(choice.lift.position)

@@ -84,8 +84,8 @@ def _pick_from(
     stand could put it down; from a later stand that saw it, it delivers). With
     ``torso_up`` a stand refused for the lowered torso is driven to with it raised. With
     ``unseen``, a thing whose look stopped at the tilt limit with it outside the view is
-    taken where it was seen, if it is still there, with nearer pre-grasps after the usual
-    (``plans/out_of_view_reach.py``)."""
+    taken where it was seen, if it is still there, and every pick tries nearer pre-grasps
+    after the usual (``plans/out_of_view_reach.py``)."""
     park_arms()
     (navigate_torso_up if torso_up else navigate)(stand)
     wanted = an.object(type=seen.get("type"), name=seen.get("name"))
@@ -99,7 +99,7 @@ def _pick_from(
     except PtuGoalUnreachable as failure:  # a wrist camera not turned there: round it
         robot_frame = current_robot().base_frame()
         again = detected_round(wanted, where, robot_frame, failure, detect_past_hand)
-        return pick_up_object(again, arm=arm, grasp=grasp, out_of=out_of)
+        return pick_up_object(again, arm=arm, grasp=grasp, out_of=out_of, nearer=unseen)
     try:
         again = detect_past_hand(wanted)
     except PerceptionObjectNotFound as hidden:  # hidden at this height: another may show it
@@ -107,7 +107,7 @@ def _pick_from(
         if found is None and not (in_container and _still_there(seen, where)):
             raise hidden
         again = found or an.object(type=seen.get("type"), name=seen.get("name"), pose=where)
-    return pick_up_object(again, arm=arm, grasp=grasp, out_of=out_of)
+    return pick_up_object(again, arm=arm, grasp=grasp, out_of=out_of, nearer=unseen)
 
 
 def _still_there(seen: ObjectDesignator, where: PoseStamped) -> bool:

@@ -1,10 +1,12 @@
-"""A pre-grasp nearer the grasp, tried after the usual one failed.
+"""A pre-grasp and a lift nearer the grasp, tried after the usual ones failed.
 
 The usual pre-grasp stands 0.1 m off the grasp along the approach (over it, for a grasp
-from above or a handle's). Under a wall cupboard, a hand 0.1 m over the counter's mug
-raises TALOS's elbow into the cupboard's bottom (1.40 m; its upper arm at 1.43 m), while
-half as far over (5 cm) it stays clear for some grasps: the hand then comes in along the
-shorter half of the same approach.
+from above or a handle's), and the lift raises the object 0.1 m. Under a wall cupboard,
+a hand 0.1 m over the counter's mug raises TALOS's elbow into the cupboard's bottom
+(1.40 m; its upper arm at 1.43 m), and 5 cm over or a lift of 3.5 cm do so too; 3.5 cm
+over and a lift of 1.5 cm keep it clear (measured: docs/new_robot.md, zoo20). The hand
+then comes in along the last part of the same approach, and the object leaves the
+surface it stood on all the same.
 """
 
 from __future__ import annotations

@@ -36,7 +36,7 @@ from robocram.plans.basic_actions import look_ahead, neck_in_the_way
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.grasp_failures import ObjectUngraspable, PickUpFailed, PickUpUnreachable
 from robocram.plans.known_robot import KnownRobot, current_robot
-from robocram.plans.nearer_pre_grasp import nearer_pre_grasp
+from robocram.plans.nearer_pre_grasp import NEARER_LIFT_SHARE, nearer_pre_grasp
 from robocram.tf import Pose, PoseStamped, TfError, transform_pose
 
 CENTRINGS = 2  # a grip meeting the object on one side moves the hand this often at most
@@ -327,7 +327,8 @@ def pick_up_object(
     """Pick up the (detected) object with ``arm`` and ``grasp``, or the first that works
     (``lift`` False: grasp it where it stands; ``out_of``: the opened drawer, environment
     and link, it lies in, which the lift must clear; ``nearer``: after every usual try
-    failed, each again from a pre-grasp nearer the grasp, ``plans/nearer_pre_grasp.py``).
+    failed, each again from a pre-grasp and a lift nearer the grasp (a lift out of a drawer
+    kept), ``plans/nearer_pre_grasp.py``).
 
     Raises:
         ObjectUngraspable: the only arm asked for is too narrow for every grasp.
@@ -361,7 +362,8 @@ def pick_up_object(
                 causes.append(failure)
     for choice_arm, choice in tried if nearer else []:  # then each from nearer the grasp
         try:
-            nearer_choice = nearer_pre_grasp(choice)
+            keep = 1.0 if out_of is not None else NEARER_LIFT_SHARE  # a drawer's lift clears it
+            nearer_choice = nearer_pre_grasp(choice, lift_share=keep)
             return _try_grasp(robot, name, choice_arm, nearer_choice, pose, lift, way_out, True)
         except TRIES as failure:
             causes.append(failure)
