@@ -18,9 +18,11 @@ from typing import Any
 
 from robocram.designators import ObjectDesignator, a, an
 from robocram.execution.failures import (
+    ManipulationPoseUnreachable,
     NavigationPoseUnreachable,
     PerceptionObjectNotFound,
     PlanFailure,
+    PtuGoalNotReached,
     PtuGoalUnreachable,
     failure_line,
 )
@@ -34,6 +36,7 @@ from robocram.plans.errors import FetchExhausted, PlanArgumentError
 from robocram.plans.grasp_stands import grasp_point_stands
 from robocram.plans.known_robot import KnownRobot, current_robot
 from robocram.plans.location_poses import location_poses, next_pose
+from robocram.plans.out_of_view_reach import near_stands, out_of_view
 from robocram.plans.peering import look_again
 from robocram.plans.pick_object import Held, pick_up_object
 from robocram.plans.place_looks import detected_round
@@ -71,6 +74,7 @@ def _pick_from(
     out_of: tuple[str, str] | None = None,
     in_container: bool = False,
     torso_up: bool = False,
+    unseen: bool = False,
 ) -> Held:
     """Drive to ``stand``, look at the object (``where``, map), detect it again, pick it
     up (lifting it out of ``out_of``, the opened drawer it lies in, if any). A thing seen
@@ -78,16 +82,24 @@ def _pick_from(
     was seen, if it is still there: :func:`fetch` asks that only after every stand failed
     (a PR2 that took a bowl blind from a drawer of PyCRAM's apartment held it where no
     stand could put it down; from a later stand that saw it, it delivers). With
-    ``torso_up`` a stand refused for the lowered torso is driven to with it raised."""
+    ``torso_up`` a stand refused for the lowered torso is driven to with it raised. With
+    ``unseen``, a thing whose look stopped at the tilt limit with it outside the view is
+    taken where it was seen, if it is still there, and every pick tries nearer pre-grasps
+    after the usual (``plans/out_of_view_reach.py``)."""
     park_arms()
     (navigate_torso_up if torso_up else navigate)(stand)
     wanted = an.object(type=seen.get("type"), name=seen.get("name"))
     try:
         look_lowering(where)
+    except PtuGoalNotReached as failure:
+        if not (unseen and out_of_view(failure) and _still_there(seen, where)):
+            raise
+        blind = an.object(type=seen.get("type"), name=seen.get("name"), pose=where)
+        return pick_up_object(blind, arm=arm, grasp=grasp, out_of=out_of, nearer=True)
     except PtuGoalUnreachable as failure:  # a wrist camera not turned there: round it
         robot_frame = current_robot().base_frame()
         again = detected_round(wanted, where, robot_frame, failure, detect_past_hand)
-        return pick_up_object(again, arm=arm, grasp=grasp, out_of=out_of)
+        return pick_up_object(again, arm=arm, grasp=grasp, out_of=out_of, nearer=unseen)
     try:
         again = detect_past_hand(wanted)
     except PerceptionObjectNotFound as hidden:  # hidden at this height: another may show it
@@ -95,7 +107,7 @@ def _pick_from(
         if found is None and not (in_container and _still_there(seen, where)):
             raise hidden
         again = found or an.object(type=seen.get("type"), name=seen.get("name"), pose=where)
-    return pick_up_object(again, arm=arm, grasp=grasp, out_of=out_of)
+    return pick_up_object(again, arm=arm, grasp=grasp, out_of=out_of, nearer=unseen)
 
 
 def _still_there(seen: ObjectDesignator, where: PoseStamped) -> bool:
@@ -107,6 +119,14 @@ def _still_there(seen: ObjectDesignator, where: PoseStamped) -> bool:
     if name is None:
         return False
     return map_pose(str(name)).distance_to(where.pose) <= STILL_THERE
+
+
+def _out_of_reach(causes: list[Exception]) -> bool:
+    """Whether every try that came to the object failed for its reach (the stands refused
+    to the base, and the designator's end, aside): the stands stood too far from it."""
+    tried = [c for c in causes if isinstance(c, PlanFailure)]
+    tried = [c for c in tried if not isinstance(c, NavigationPoseUnreachable)]
+    return bool(tried) and all(isinstance(c, ManipulationPoseUnreachable) for c in tried)
 
 
 def _detected(wanted: ObjectDesignator) -> ObjectDesignator | None:
@@ -330,6 +350,11 @@ def fetch(
             found = _first_held(beside, picking(in_container=True), causes, log, stand_retries)
             if found is not None:
                 return found
+    if tries and _out_of_reach(causes):  # last: nearer, where the camera may not see it
+        near = near_stands(robot, where, arm)
+        found = _first_held(near, picking(unseen=True), causes, log, stand_retries)
+        if found is not None:
+            return found
     raise FetchExhausted(
         exhausted_message(str(seen.get("name")), tries, causes),
         object_designator=seen,

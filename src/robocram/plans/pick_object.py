@@ -36,6 +36,7 @@ from robocram.plans.basic_actions import look_ahead, neck_in_the_way
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.grasp_failures import ObjectUngraspable, PickUpFailed, PickUpUnreachable
 from robocram.plans.known_robot import KnownRobot, current_robot
+from robocram.plans.nearer_pre_grasp import NEARER_LIFT_SHARE, nearer_pre_grasp
 from robocram.tf import Pose, PoseStamped, TfError, transform_pose
 
 CENTRINGS = 2  # a grip meeting the object on one side moves the hand this often at most
@@ -178,9 +179,10 @@ def _try_grasp(
     object_in_map: Pose | None,
     lift: bool = True,
     way_out: _WayOut | None = None,
+    near: bool = False,
 ) -> Held:
     way_out = way_out or _WayOut()
-    _opened_at(arm, choice.pre_grasp)
+    _opened_at(arm, choice.pre_grasp, **({**GRASPING, "touching": name} if near else {}))
     way_out.arm = None
     _move(arm, choice.grasp_pose, **GRASPING, touching=name)
     way_out.arm, way_out.pre_grasp = arm, choice.pre_grasp
@@ -195,8 +197,9 @@ def _try_grasp(
     return Held(arm, choice.grasp, name, frame, choice.grasp_pose, raised, held)
 
 
-def _opened_at(arm: str, pre_grasp: PoseStamped) -> None:
-    """Open the gripper and move to the pre-grasp; where the fingers opening would meet the
+def _opened_at(arm: str, pre_grasp: PoseStamped, **mode: str) -> None:
+    """Open the gripper and move to the pre-grasp (in the motion's ``mode``: a pre-grasp
+    near the grasp may touch the object); where the fingers opening would meet the
     robot's body (the Z1 on a B1 looked with its jaw beside a leg), move there first and
     open there."""
     try:
@@ -204,22 +207,22 @@ def _opened_at(arm: str, pre_grasp: PoseStamped) -> None:
     except GripperPathBlocked as blocked:
         if not _fingers_meet_body(arm, blocked):
             raise
-        _to_pre_grasp(arm, pre_grasp)
+        _to_pre_grasp(arm, pre_grasp, **mode)
         perform(a.motion(type="opening", gripper=arm))
         return
-    _to_pre_grasp(arm, pre_grasp)
+    _to_pre_grasp(arm, pre_grasp, **mode)
 
 
-def _to_pre_grasp(arm: str, pre_grasp: PoseStamped) -> None:
+def _to_pre_grasp(arm: str, pre_grasp: PoseStamped, **mode: str) -> None:
     """Move the open hand to ``pre_grasp``; where the head, turned down at the object, is
     in the way (a Stretch's lift carriage, raised to a table's height, meets its tilted
     head), look ahead and move again."""
     try:
-        _move(arm, pre_grasp)
+        _move(arm, pre_grasp, **mode)
     except ManipulationLowLevelFailure as failure:
         if not (neck_in_the_way(failure) and look_ahead()):
             raise
-        _move(arm, pre_grasp)
+        _move(arm, pre_grasp, **mode)
 
 
 def _fingers_meet_body(arm: str, blocked: GripperPathBlocked) -> bool:
@@ -319,10 +322,13 @@ def pick_up_object(
     grasp: str | None = None,
     lift: bool = True,
     out_of: tuple[str, str] | None = None,
+    nearer: bool = False,
 ) -> Held:
     """Pick up the (detected) object with ``arm`` and ``grasp``, or the first that works
     (``lift`` False: grasp it where it stands; ``out_of``: the opened drawer, environment
-    and link, it lies in, which the lift must clear).
+    and link, it lies in, which the lift must clear; ``nearer``: after every usual try
+    failed, each again from a pre-grasp and a lift nearer the grasp (a lift out of a drawer
+    kept), ``plans/nearer_pre_grasp.py``).
 
     Raises:
         ObjectUngraspable: the only arm asked for is too narrow for every grasp.
@@ -335,6 +341,7 @@ def pick_up_object(
     causes: list[Exception] = []
     way_out = _WayOut()
     arms = arms_nearest_first(robot, pose, arm)
+    tried: list[tuple[str, ObjectGrasp]] = []
     for choice_arm in arms:
         try:
             choices = grasp_choices(robot, spec, choice_arm, grasp)
@@ -347,11 +354,21 @@ def pick_up_object(
             try:
                 if lift and out_of is not None:
                     choice = _lifted_out(robot, name, choice_arm, choice, out_of)
+                tried.append((choice_arm, choice))
                 return _try_grasp(robot, name, choice_arm, choice, pose, lift, way_out)
             except TRIES as failure:
                 causes.append(failure)
             except PickUpFailed as failure:
                 causes.append(failure)
+    for choice_arm, choice in tried if nearer else []:  # then each from nearer the grasp
+        try:
+            keep = 1.0 if out_of is not None else NEARER_LIFT_SHARE  # a drawer's lift clears it
+            nearer_choice = nearer_pre_grasp(choice, lift_share=keep)
+            return _try_grasp(robot, name, choice_arm, nearer_choice, pose, lift, way_out, True)
+        except TRIES as failure:
+            causes.append(failure)
+        except PickUpFailed as failure:
+            causes.append(failure)
     _let_go(robot, name)
     _back_out(name, way_out)
     unreachable = bool(causes) and all(isinstance(c, ManipulationPoseUnreachable) for c in causes)
