@@ -28,11 +28,13 @@ from robocram.execution.failures import (
     ManipulationLowLevelFailure,
     ManipulationPoseUnreachable,
     NavigationLowLevelFailure,
+    PlanFailure,
 )
 from robocram.knowledge.grasp_predicates import OBJECT_GRASP, OBJECT_UNGRASPABLE, ObjectGrasp
 from robocram.knowledge.reasoning_predicates import ARM_POSE_REACHABLE, LIFT_CLEARANCE
+from robocram.knowledge.robot_predicates import GRIPPER_JOINT
 from robocram.logic import Term, UnknownPredicateError, current_kb
-from robocram.plans.basic_actions import look_ahead, neck_in_the_way
+from robocram.plans.basic_actions import look_ahead, neck_in_the_way, park_arms
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.grasp_failures import ObjectUngraspable, PickUpFailed, PickUpUnreachable
 from robocram.plans.known_robot import KnownRobot, current_robot
@@ -41,6 +43,11 @@ from robocram.tf import Pose, PoseStamped, TfError, transform_pose
 CENTRINGS = 2  # a grip meeting the object on one side moves the hand this often at most
 GRASPING = {"collision_mode": "allow_hand"}  # the fingers may touch what they close on:
 # a motion names it too (``touching``), and the hand may touch nothing else, 5 mm at most
+PART_WAY = 1 / 3  # of the open master finger joint's value: a rim grasp tried again with
+# the hand opened so far only (the drafted Stretch's fingers, fully open, span 12 cm: at a
+# bowl's wall the outer one met the next bowl or the drawer's front; a third suffices).
+# Taken from zero, where the fingers of the Stretch and the PR2 meet: a gripper closed
+# above zero gets a value nearer open or out of range, and its retry only fails again
 TRIES = (ManipulationLowLevelFailure, GripperLowLevelFailure, NavigationLowLevelFailure)
 
 
@@ -178,9 +185,10 @@ def _try_grasp(
     object_in_map: Pose | None,
     lift: bool = True,
     way_out: _WayOut | None = None,
+    part_way: bool = False,
 ) -> Held:
     way_out = way_out or _WayOut()
-    _opened_at(arm, choice.pre_grasp)
+    _opened_at(arm, choice.pre_grasp, part_way)
     way_out.arm = None
     _move(arm, choice.grasp_pose, **GRASPING, touching=name)
     way_out.arm, way_out.pre_grasp = arm, choice.pre_grasp
@@ -195,12 +203,14 @@ def _try_grasp(
     return Held(arm, choice.grasp, name, frame, choice.grasp_pose, raised, held)
 
 
-def _opened_at(arm: str, pre_grasp: PoseStamped) -> None:
+def _opened_at(arm: str, pre_grasp: PoseStamped, part_way: bool = False) -> None:
     """Open the gripper and move to the pre-grasp; where the fingers opening would meet the
     robot's body (the Z1 on a B1 looked with its jaw beside a leg), move there first and
-    open there."""
+    open there. ``part_way``: opened fully, then closed to :data:`PART_WAY` of it."""
     try:
         perform(a.motion(type="opening", gripper=arm))
+        if part_way:
+            _close_part_way(arm)
     except GripperPathBlocked as blocked:
         if not _fingers_meet_body(arm, blocked):
             raise
@@ -208,6 +218,26 @@ def _opened_at(arm: str, pre_grasp: PoseStamped) -> None:
         perform(a.motion(type="opening", gripper=arm))
         return
     _to_pre_grasp(arm, pre_grasp)
+
+
+def _close_part_way(arm: str) -> None:
+    """Close ``arm``'s open gripper to :data:`PART_WAY` of its open master joint value."""
+    robot = current_robot()
+    row = GRIPPER_JOINT.first(current_kb(), robot=robot.name, arm=arm)
+    opened = robot.joint_position(row.joint) if row is not None else None
+    if opened is not None:
+        angle = opened * PART_WAY
+        perform(a.motion(type="moving-gripper-joint", gripper=arm, joint_angle=angle))
+
+
+def _finger_caught(robot: KnownRobot, arm: str, failure: Exception) -> bool:
+    """Whether ``failure`` blames a finger of ``arm`` meeting something (IK solutions or a
+    path refused for it, or a grip that met another thing on one side only)."""
+    if isinstance(failure, GripperMetOneSide):
+        return True
+    fingers = robot.gripper_links(arm)
+    pairs = getattr(failure, "colliding_pairs", None) or ()
+    return any(link in fingers for link, _ in pairs)
 
 
 def _to_pre_grasp(arm: str, pre_grasp: PoseStamped) -> None:
@@ -334,6 +364,7 @@ def pick_up_object(
     name, spec, pose = object_spec(object)
     causes: list[Exception] = []
     way_out = _WayOut()
+    caught: list[tuple[str, ObjectGrasp]] = []  # rim grasps a finger was caught at
     arms = arms_nearest_first(robot, pose, arm)
     for choice_arm in arms:
         try:
@@ -343,15 +374,30 @@ def pick_up_object(
                 raise
             causes.append(failure)
             continue
-        for choice in choices:
+        for grasped in choices:
             try:
+                choice = grasped
                 if lift and out_of is not None:
-                    choice = _lifted_out(robot, name, choice_arm, choice, out_of)
+                    choice = _lifted_out(robot, name, choice_arm, grasped, out_of)
                 return _try_grasp(robot, name, choice_arm, choice, pose, lift, way_out)
             except TRIES as failure:
                 causes.append(failure)
+                if grasped.grasp == "rim" and _finger_caught(robot, choice_arm, failure):
+                    caught.append((choice_arm, grasped))
             except PickUpFailed as failure:
                 causes.append(failure)
+    for choice_arm, choice in caught:  # only after every try: the hand opened part way,
+        _let_go(robot, name)  # from parking (at the last try's grasp the fingers closing
+        _back_out(name, way_out)  # part way met the drawer)
+        way_out.arm = None
+        with contextlib.suppress(PlanFailure):
+            park_arms()
+        try:
+            if lift and out_of is not None:
+                choice = _lifted_out(robot, name, choice_arm, choice, out_of)
+            return _try_grasp(robot, name, choice_arm, choice, pose, lift, way_out, True)
+        except (*TRIES, PickUpFailed) as failure:
+            causes.append(failure)
     _let_go(robot, name)
     _back_out(name, way_out)
     unreachable = bool(causes) and all(isinstance(c, ManipulationPoseUnreachable) for c in causes)
