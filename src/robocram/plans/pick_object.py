@@ -48,6 +48,10 @@ PART_WAY = 1 / 3  # of the open master finger joint's value: a rim grasp tried a
 # bowl's wall the outer one met the next bowl or the drawer's front; a third suffices).
 # Taken from zero, where the fingers of the Stretch and the PR2 meet: a gripper closed
 # above zero gets a value nearer open or out of range, and its retry only fails again
+HALF_WAY = 1 / 2  # of the same value: any other grasp a finger was caught at tried again
+# so (the fingers go round the whole object, so a third may be narrower than it: the
+# drafted Stretch's fingers close on a cup at 0.22 of their 0.60 rad; fully open, one met
+# the counter top over the drawer or slid outside the drawer's side wall)
 TRIES = (ManipulationLowLevelFailure, GripperLowLevelFailure, NavigationLowLevelFailure)
 
 
@@ -185,7 +189,7 @@ def _try_grasp(
     object_in_map: Pose | None,
     lift: bool = True,
     way_out: _WayOut | None = None,
-    part_way: bool = False,
+    part_way: float | None = None,
 ) -> Held:
     way_out = way_out or _WayOut()
     _opened_at(arm, choice.pre_grasp, part_way)
@@ -203,14 +207,14 @@ def _try_grasp(
     return Held(arm, choice.grasp, name, frame, choice.grasp_pose, raised, held)
 
 
-def _opened_at(arm: str, pre_grasp: PoseStamped, part_way: bool = False) -> None:
+def _opened_at(arm: str, pre_grasp: PoseStamped, part_way: float | None = None) -> None:
     """Open the gripper and move to the pre-grasp; where the fingers opening would meet the
     robot's body (the Z1 on a B1 looked with its jaw beside a leg), move there first and
-    open there. ``part_way``: opened fully, then closed to :data:`PART_WAY` of it."""
+    open there. ``part_way``: opened fully, then closed to that fraction of it."""
     try:
         perform(a.motion(type="opening", gripper=arm))
-        if part_way:
-            _close_part_way(arm)
+        if part_way is not None:
+            _close_part_way(arm, part_way)
     except GripperPathBlocked as blocked:
         if not _fingers_meet_body(arm, blocked):
             raise
@@ -220,13 +224,13 @@ def _opened_at(arm: str, pre_grasp: PoseStamped, part_way: bool = False) -> None
     _to_pre_grasp(arm, pre_grasp)
 
 
-def _close_part_way(arm: str) -> None:
-    """Close ``arm``'s open gripper to :data:`PART_WAY` of its open master joint value."""
+def _close_part_way(arm: str, fraction: float) -> None:
+    """Close ``arm``'s open gripper to ``fraction`` of its open master joint value."""
     robot = current_robot()
     row = GRIPPER_JOINT.first(current_kb(), robot=robot.name, arm=arm)
     opened = robot.joint_position(row.joint) if row is not None else None
     if opened is not None:
-        angle = opened * PART_WAY
+        angle = opened * fraction
         perform(a.motion(type="moving-gripper-joint", gripper=arm, joint_angle=angle))
 
 
@@ -364,7 +368,7 @@ def pick_up_object(
     name, spec, pose = object_spec(object)
     causes: list[Exception] = []
     way_out = _WayOut()
-    caught: list[tuple[str, ObjectGrasp]] = []  # rim grasps a finger was caught at
+    caught: list[tuple[str, ObjectGrasp]] = []  # grasps a finger was caught at
     arms = arms_nearest_first(robot, pose, arm)
     for choice_arm in arms:
         try:
@@ -382,7 +386,7 @@ def pick_up_object(
                 return _try_grasp(robot, name, choice_arm, choice, pose, lift, way_out)
             except TRIES as failure:
                 causes.append(failure)
-                if grasped.grasp == "rim" and _finger_caught(robot, choice_arm, failure):
+                if _finger_caught(robot, choice_arm, failure):
                     caught.append((choice_arm, grasped))
             except PickUpFailed as failure:
                 causes.append(failure)
@@ -395,7 +399,8 @@ def pick_up_object(
         try:
             if lift and out_of is not None:
                 choice = _lifted_out(robot, name, choice_arm, choice, out_of)
-            return _try_grasp(robot, name, choice_arm, choice, pose, lift, way_out, True)
+            fraction = PART_WAY if choice.grasp == "rim" else HALF_WAY
+            return _try_grasp(robot, name, choice_arm, choice, pose, lift, way_out, fraction)
         except (*TRIES, PickUpFailed) as failure:
             causes.append(failure)
     _let_go(robot, name)
