@@ -179,6 +179,7 @@ class _WayOut:
 
     arm: str | None = None
     pre_grasp: PoseStamped | None = None
+    opened: bool = False  # the last try's hand opened where it stood (before its pre-grasp)
 
 
 def _try_grasp(
@@ -192,7 +193,8 @@ def _try_grasp(
     part_way: float | None = None,
 ) -> Held:
     way_out = way_out or _WayOut()
-    _opened_at(arm, choice.pre_grasp, part_way)
+    way_out.opened = False
+    _opened_at(arm, choice.pre_grasp, part_way, way_out)
     way_out.arm = None
     _move(arm, choice.grasp_pose, **GRASPING, touching=name)
     way_out.arm, way_out.pre_grasp = arm, choice.pre_grasp
@@ -207,12 +209,17 @@ def _try_grasp(
     return Held(arm, choice.grasp, name, frame, choice.grasp_pose, raised, held)
 
 
-def _opened_at(arm: str, pre_grasp: PoseStamped, part_way: float | None = None) -> None:
+def _opened_at(
+    arm: str, pre_grasp: PoseStamped, part_way: float | None = None, way_out: _WayOut | None = None
+) -> None:
     """Open the gripper and move to the pre-grasp; where the fingers opening would meet the
     robot's body (the Z1 on a B1 looked with its jaw beside a leg), move there first and
-    open there. ``part_way``: opened fully, then closed to that fraction of it."""
+    open there. ``part_way``: opened fully, then closed to that fraction of it. Once the
+    hand is open, ``way_out.opened`` says so."""
     try:
         perform(a.motion(type="opening", gripper=arm))
+        if way_out is not None:
+            way_out.opened = True
         if part_way is not None:
             _close_part_way(arm, part_way)
     except GripperPathBlocked as blocked:
@@ -220,6 +227,8 @@ def _opened_at(arm: str, pre_grasp: PoseStamped, part_way: float | None = None) 
             raise
         _to_pre_grasp(arm, pre_grasp)
         perform(a.motion(type="opening", gripper=arm))
+        if way_out is not None:
+            way_out.opened = True
         return
     _to_pre_grasp(arm, pre_grasp)
 
@@ -234,14 +243,19 @@ def _close_part_way(arm: str, fraction: float) -> None:
         perform(a.motion(type="moving-gripper-joint", gripper=arm, joint_angle=angle))
 
 
-def _finger_caught(robot: KnownRobot, arm: str, failure: Exception) -> bool:
-    """Whether ``failure`` blames a finger of ``arm`` meeting something (IK solutions or a
-    path refused for it, or a grip that met another thing on one side only)."""
+def _finger_caught(robot: KnownRobot, arm: str, failure: Exception, opened: bool) -> bool:
+    """Whether ``failure`` blames a finger of ``arm`` meeting something, which a hand opened
+    part way may miss: IK solutions or a path refused for a finger and for no other link of
+    the hand (a palm or wrist in the way stays there however far the fingers open), or a
+    grip that met the object on one side only. Not where the hand did not open (``opened``
+    false: the retry opens it fully first, where it failed, and would only fail again)."""
+    if not opened:
+        return False
     if isinstance(failure, GripperMetOneSide):
         return True
     fingers = robot.gripper_links(arm)
-    pairs = getattr(failure, "colliding_pairs", None) or ()
-    return any(link in fingers for link, _ in pairs)
+    links = {link for link, _ in getattr(failure, "colliding_pairs", None) or ()}
+    return bool(links & fingers) and not links & (robot.hand_links(arm) - fingers)
 
 
 def _to_pre_grasp(arm: str, pre_grasp: PoseStamped) -> None:
@@ -379,6 +393,7 @@ def pick_up_object(
             causes.append(failure)
             continue
         for grasped in choices:
+            way_out.opened = False  # until this try's hand opens
             try:
                 choice = grasped
                 if lift and out_of is not None:
@@ -386,7 +401,7 @@ def pick_up_object(
                 return _try_grasp(robot, name, choice_arm, choice, pose, lift, way_out)
             except TRIES as failure:
                 causes.append(failure)
-                if _finger_caught(robot, choice_arm, failure):
+                if _finger_caught(robot, choice_arm, failure, way_out.opened):
                     caught.append((choice_arm, grasped))
             except PickUpFailed as failure:
                 causes.append(failure)
