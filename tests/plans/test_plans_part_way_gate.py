@@ -5,8 +5,10 @@ kitchen were refused for its palm (``left_gripper_base_link``) as well as a fing
 retry, offered them, took bowl-1 from a stand Boxy used to leave
 (``test_plans_boxy_breakfast_causes.py``). In the kitchen batch's variant 27 the PR2's
 right hand could not open where it stood (a finger met the stove): the retry opens the
-hand fully first, and failed so 6 times. The pairs below are those the runs refused, on
-the robots' own link lists.
+hand fully first, and failed so 6 times. Clearing household 0's table, the Stretch's
+fingertips closing on a spoon ended in the table top (the closing's goal in collision):
+from any opening they end there, and 24 retries failed so. The pairs below are those the
+runs refused, on the robots' own link lists.
 """
 
 from __future__ import annotations
@@ -72,5 +74,28 @@ def test_a_hand_that_could_not_open_where_it_stood_is_not_retried() -> None:
             )
             assert not _finger_caught(known, "right", blocked, opened=False)
             assert _finger_caught(known, "right", blocked, opened=True)  # closing, say
+    finally:
+        scene.world.close()
+
+
+def test_a_closing_whose_end_is_in_collision_is_not_retried_one_blocked_on_its_way_is() -> None:
+    scene = kitchen_scene(STRETCH)
+    try:
+        with simulated_robot(scene.world, scene.robot):
+            known = current_robot()
+            tips = (
+                ("link_gripper_fingertip_right", "kitchen/table_top"),
+                ("link_gripper_fingertip_left", "kitchen/table_top"),
+            )
+            on_the_table = GripperPathBlocked(
+                "goal configuration in collision", gripper="arm", goal=0.087,
+                colliding_pairs=tips, path_fraction=1.0,
+            )  # fmt: skip
+            at_the_bowl = GripperPathBlocked(
+                "straight path blocked 3% of the way", gripper="arm", goal=0.017,
+                colliding_pairs=(("link_gripper_fingertip_right", "bowl-2"),), path_fraction=0.03,
+            )  # fmt: skip
+            assert not _finger_caught(known, "arm", on_the_table, opened=True)
+            assert _finger_caught(known, "arm", at_the_bowl, opened=True)
     finally:
         scene.world.close()

@@ -248,8 +248,10 @@ def _finger_caught(robot: KnownRobot, arm: str, failure: Exception, opened: bool
     part way may miss: IK solutions or a path refused for a finger and for no other link of
     the hand (a palm or wrist in the way stays there however far the fingers open), or a
     grip that met the object on one side only. Not where the hand did not open (``opened``
-    false: the retry opens it fully first, where it failed, and would only fail again)."""
-    if not opened:
+    false: the retry opens it fully first, where it failed, and would only fail again),
+    nor where the fingers' goal itself was in collision (a closing that ends in the table
+    under a spoon ends there from any opening)."""
+    if not opened or (isinstance(failure, GripperPathBlocked) and failure.path_fraction == 1.0):
         return False
     if isinstance(failure, GripperMetOneSide):
         return True
