@@ -7,6 +7,8 @@ this stand. The hand used to stay at the grasp, its fingers 4 mm under the drawe
 in the household's whole setting, parking and every drive after it then ran into that
 drawer and the cups and the milk were never brought. Judged on raw
 PyBullet: the hand is back at its pre-grasp, clear of the drawer, and the arms park.
+The retry with the hand opened part way, which now takes cup-2 from here
+(``test_plans_cup_half_way.py``), is left out: this is the pick whose every try failed.
 """
 
 from __future__ import annotations
@@ -17,6 +19,7 @@ from pathlib import Path
 import pybullet
 import pytest
 
+from robocram.plans import pick_object
 from robocram.plans.basic_actions import park_arms
 from robocram.plans.grasp_failures import PickUpFailed
 from robocram.plans.pick_object import pick_up_object
@@ -47,7 +50,10 @@ OVER_THE_CUP = {  # the open hand at its first pre-grasp, over cup-2, looking do
 }
 
 
-def test_a_failed_pick_takes_the_hand_out_of_the_drawer_and_the_arm_parks() -> None:
+def test_a_failed_pick_takes_the_hand_out_of_the_drawer_and_the_arm_parks(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    monkeypatch.setattr(pick_object, "_finger_caught", lambda *_: False)  # no part-way retry
     places = [replace(p, xy=CUP_2_AT) if p.name == "cup-2" else p for p in BREAKFAST_PLACES]
     scene = breakfast_scene(STRETCH, places=places)
     world = scene.world

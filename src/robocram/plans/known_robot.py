@@ -178,6 +178,11 @@ class KnownRobot:
                 links.update(row.links if row is not None else ())
         return links
 
+    def hand_links(self, arm: str) -> set[str]:
+        """The wrist of ``arm`` and every link below it (its palm and fingers)."""
+        row = rp.HAND_LINKS.first(current_kb(), robot=self.name, arm=arm)
+        return set(row.links) if row is not None else set()
+
     def gripper_links(self, arm: str) -> set[str]:
         """The links ``arm``'s gripper joints move (its fingers, jaws)."""
         return {row.link for row in rp.GRIPPER_LINK.answers(current_kb(), robot=self.name, arm=arm)}

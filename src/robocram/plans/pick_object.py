@@ -28,11 +28,13 @@ from robocram.execution.failures import (
     ManipulationLowLevelFailure,
     ManipulationPoseUnreachable,
     NavigationLowLevelFailure,
+    PlanFailure,
 )
 from robocram.knowledge.grasp_predicates import OBJECT_GRASP, OBJECT_UNGRASPABLE, ObjectGrasp
 from robocram.knowledge.reasoning_predicates import ARM_POSE_REACHABLE, LIFT_CLEARANCE
+from robocram.knowledge.robot_predicates import GRIPPER_JOINT
 from robocram.logic import Term, UnknownPredicateError, current_kb
-from robocram.plans.basic_actions import look_ahead, neck_in_the_way
+from robocram.plans.basic_actions import look_ahead, neck_in_the_way, park_arms
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.grasp_failures import ObjectUngraspable, PickUpFailed, PickUpUnreachable
 from robocram.plans.known_robot import KnownRobot, current_robot
@@ -42,6 +44,15 @@ from robocram.tf import Pose, PoseStamped, TfError, transform_pose
 CENTRINGS = 2  # a grip meeting the object on one side moves the hand this often at most
 GRASPING = {"collision_mode": "allow_hand"}  # the fingers may touch what they close on:
 # a motion names it too (``touching``), and the hand may touch nothing else, 5 mm at most
+PART_WAY = 1 / 3  # of the open master finger joint's value: a rim grasp tried again with
+# the hand opened so far only (the drafted Stretch's fingers, fully open, span 12 cm: at a
+# bowl's wall the outer one met the next bowl or the drawer's front; a third suffices).
+# Taken from zero, where the fingers of the Stretch and the PR2 meet: a gripper closed
+# above zero gets a value nearer open or out of range, and its retry only fails again
+HALF_WAY = 1 / 2  # of the same value: any other grasp a finger was caught at tried again
+# so (the fingers go round the whole object, so a third may be narrower than it: the
+# drafted Stretch's fingers close on a cup at 0.22 of their 0.60 rad; fully open, one met
+# the counter top over the drawer or slid outside the drawer's side wall)
 TRIES = (ManipulationLowLevelFailure, GripperLowLevelFailure, NavigationLowLevelFailure)
 
 
@@ -169,6 +180,7 @@ class _WayOut:
 
     arm: str | None = None
     pre_grasp: PoseStamped | None = None
+    opened: bool = False  # the last try's hand opened where it stood (before its pre-grasp)
 
 
 def _try_grasp(
@@ -179,10 +191,13 @@ def _try_grasp(
     object_in_map: Pose | None,
     lift: bool = True,
     way_out: _WayOut | None = None,
+    part_way: float | None = None,
     near: bool = False,
 ) -> Held:
     way_out = way_out or _WayOut()
-    _opened_at(arm, choice.pre_grasp, **({**GRASPING, "touching": name} if near else {}))
+    way_out.opened = False
+    mode = {**GRASPING, "touching": name} if near else {}
+    _opened_at(arm, choice.pre_grasp, part_way, way_out, **mode)
     way_out.arm = None
     _move(arm, choice.grasp_pose, **GRASPING, touching=name)
     way_out.arm, way_out.pre_grasp = arm, choice.pre_grasp
@@ -197,20 +212,60 @@ def _try_grasp(
     return Held(arm, choice.grasp, name, frame, choice.grasp_pose, raised, held)
 
 
-def _opened_at(arm: str, pre_grasp: PoseStamped, **mode: str) -> None:
+def _opened_at(
+    arm: str,
+    pre_grasp: PoseStamped,
+    part_way: float | None = None,
+    way_out: _WayOut | None = None,
+    **mode: str,
+) -> None:
     """Open the gripper and move to the pre-grasp (in the motion's ``mode``: a pre-grasp
     near the grasp may touch the object); where the fingers opening would meet the
     robot's body (the Z1 on a B1 looked with its jaw beside a leg), move there first and
-    open there."""
+    open there. ``part_way``: opened fully, then closed to that fraction of it. Once the
+    hand is open, ``way_out.opened`` says so."""
     try:
         perform(a.motion(type="opening", gripper=arm))
+        if way_out is not None:
+            way_out.opened = True
+        if part_way is not None:
+            _close_part_way(arm, part_way)
     except GripperPathBlocked as blocked:
         if not _fingers_meet_body(arm, blocked):
             raise
         _to_pre_grasp(arm, pre_grasp, **mode)
         perform(a.motion(type="opening", gripper=arm))
+        if way_out is not None:
+            way_out.opened = True
         return
     _to_pre_grasp(arm, pre_grasp, **mode)
+
+
+def _close_part_way(arm: str, fraction: float) -> None:
+    """Close ``arm``'s open gripper to ``fraction`` of its open master joint value."""
+    robot = current_robot()
+    row = GRIPPER_JOINT.first(current_kb(), robot=robot.name, arm=arm)
+    opened = robot.joint_position(row.joint) if row is not None else None
+    if opened is not None:
+        angle = opened * fraction
+        perform(a.motion(type="moving-gripper-joint", gripper=arm, joint_angle=angle))
+
+
+def _finger_caught(robot: KnownRobot, arm: str, failure: Exception, opened: bool) -> bool:
+    """Whether ``failure`` blames a finger of ``arm`` meeting something, which a hand opened
+    part way may miss: IK solutions or a path refused for a finger and for no other link of
+    the hand (a palm or wrist in the way stays there however far the fingers open), or a
+    grip that met the object on one side only. Not where the hand did not open (``opened``
+    false: the retry opens it fully first, where it failed, and would only fail again),
+    nor where the fingers' goal itself was in collision (a closing that ends in the table
+    under a spoon ends there from any opening)."""
+    if not opened or (isinstance(failure, GripperPathBlocked) and failure.path_fraction == 1.0):
+        return False
+    if isinstance(failure, GripperMetOneSide):
+        return True
+    fingers = robot.gripper_links(arm)
+    links = {link for link, _ in getattr(failure, "colliding_pairs", None) or ()}
+    return bool(links & fingers) and not links & (robot.hand_links(arm) - fingers)
 
 
 def _to_pre_grasp(arm: str, pre_grasp: PoseStamped, **mode: str) -> None:
@@ -340,6 +395,7 @@ def pick_up_object(
     name, spec, pose = object_spec(object)
     causes: list[Exception] = []
     way_out = _WayOut()
+    caught: list[tuple[str, ObjectGrasp]] = []  # grasps a finger was caught at
     arms = arms_nearest_first(robot, pose, arm)
     tried: list[tuple[str, ObjectGrasp]] = []
     for choice_arm in arms:
@@ -350,21 +406,40 @@ def pick_up_object(
                 raise
             causes.append(failure)
             continue
-        for choice in choices:
+        for grasped in choices:
+            way_out.opened = False  # until this try's hand opens
             try:
+                choice = grasped
                 if lift and out_of is not None:
-                    choice = _lifted_out(robot, name, choice_arm, choice, out_of)
+                    choice = _lifted_out(robot, name, choice_arm, grasped, out_of)
                 tried.append((choice_arm, choice))
                 return _try_grasp(robot, name, choice_arm, choice, pose, lift, way_out)
             except TRIES as failure:
                 causes.append(failure)
+                if _finger_caught(robot, choice_arm, failure, way_out.opened):
+                    caught.append((choice_arm, grasped))
             except PickUpFailed as failure:
                 causes.append(failure)
+    for choice_arm, choice in caught:  # only after every try: the hand opened part way,
+        _let_go(robot, name)  # from parking (at the last try's grasp the fingers closing
+        _back_out(name, way_out)  # part way met the drawer)
+        way_out.arm = None
+        with contextlib.suppress(PlanFailure):
+            park_arms()
+        try:
+            if lift and out_of is not None:
+                choice = _lifted_out(robot, name, choice_arm, choice, out_of)
+            fraction = PART_WAY if choice.grasp == "rim" else HALF_WAY
+            return _try_grasp(robot, name, choice_arm, choice, pose, lift, way_out, fraction)
+        except (*TRIES, PickUpFailed) as failure:
+            causes.append(failure)
     for choice_arm, choice in tried if nearer else []:  # then each from nearer the grasp
         try:
             keep = 1.0 if out_of is not None else NEARER_LIFT_SHARE  # a drawer's lift clears it
             nearer_choice = nearer_pre_grasp(choice, lift_share=keep)
-            return _try_grasp(robot, name, choice_arm, nearer_choice, pose, lift, way_out, True)
+            return _try_grasp(
+                robot, name, choice_arm, nearer_choice, pose, lift, way_out, near=True
+            )
         except TRIES as failure:
             causes.append(failure)
         except PickUpFailed as failure:
