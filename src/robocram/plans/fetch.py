@@ -177,7 +177,9 @@ def _stands(
         if _stepped_in(here, opened.stand.pose, where.pose):
             yield here, arm  # where it peered in from: it sees the object there
         arms = [arm] if arm is not None else robot.arms()
-        out = yaw_of(opened.stand.pose) + math.pi  # the container's front faces the stand
+        # the container's front faces the arm that opened it: a sideways arm's (the
+        # Stretch's) base stood turned from it by its working direction
+        out = yaw_of(opened.stand.pose) + robot.working_yaw(opened.stand.arm) + math.pi
         for stand in front_stands(robot, arms, where.pose, out, REACH_DISTANCES):
             yield stand.pose, stand.arm
     square_up(robot)
