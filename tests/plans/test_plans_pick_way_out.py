@@ -8,7 +8,7 @@ in the household's whole setting, parking and every drive after it then ran into
 drawer and the cups and the milk were never brought. Judged on raw
 PyBullet: the hand is back at its pre-grasp, clear of the drawer, and the arms park.
 The retry with the hand opened part way, which now takes cup-2 from here
-(``test_plans_cup_half_way.py``), is left out: this is the pick whose every try failed.
+(``test_plans_part_way_retries.py``), is left out: this is the pick whose every try failed.
 """
 
 from __future__ import annotations

@@ -7,7 +7,7 @@ from the interface predicates in the current knowledge base.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from typing import Any
 
 from robocram.designators import ObjectDesignator, a, an
@@ -231,8 +231,14 @@ def look_to_tilt_limit(target: object) -> Any:
         PtuGoalNotReached: the head could not turn to the target, and the target is not
             so in view.
     """
+    return _or_at_tilt_limit(look, target)
+
+
+def _or_at_tilt_limit(looking: Callable[[object], Any], target: object) -> Any:
+    """``looking(target)``; where it stopped at the tilt limit with the target in the
+    lower part of the view (:func:`seen_at_tilt_limit`), the joints the head turned to."""
     try:
-        return look(target)
+        return looking(target)
     except PtuGoalNotReached as failure:
         if seen_at_tilt_limit(failure):
             return failure.reached
@@ -251,12 +257,7 @@ def look_lowering(target: object) -> Any:
         PtuGoalNotReached: the head cannot tilt down to the target at the lowest step,
             and the target is not in the lower part of its view.
     """
-    try:
-        return _look_lowering(target)
-    except PtuGoalNotReached as failure:
-        if seen_at_tilt_limit(failure):
-            return failure.reached
-        raise
+    return _or_at_tilt_limit(_look_lowering, target)
 
 
 def _look_lowering(target: object) -> Any:
