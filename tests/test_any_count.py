@@ -7,7 +7,7 @@ from pathlib import Path
 from types import ModuleType
 
 TOOL = Path(__file__).resolve().parents[1] / "tools" / "any_count.py"
-OUTSIDE_LOGIC = 204  # issue 22 asks for at most 220; lower this as uses go, never raise it
+OUTSIDE_LOGIC = 203  # issue 22 asks for at most 220; lower this as uses go, never raise it
 LOGIC = 7
 
 

@@ -222,7 +222,7 @@ def _lowering_helps(failure: PlanFailure) -> bool:
     )
 
 
-def look_to_tilt_limit(target: object) -> Any:
+def look_to_tilt_limit(target: object) -> object:
     """Point the camera at ``target``; a head that stops at its tilt limit above it but
     has it in the lower part of its view (:func:`seen_at_tilt_limit`) has looked: the
     joints it turned to.
@@ -234,7 +234,7 @@ def look_to_tilt_limit(target: object) -> Any:
     return _or_at_tilt_limit(look, target)
 
 
-def _or_at_tilt_limit(looking: Callable[[object], Any], target: object) -> Any:
+def _or_at_tilt_limit(looking: Callable[[object], object], target: object) -> object:
     """``looking(target)``; where it stopped at the tilt limit with the target in the
     lower part of the view (:func:`seen_at_tilt_limit`), the joints the head turned to."""
     try:
@@ -245,7 +245,7 @@ def _or_at_tilt_limit(looking: Callable[[object], Any], target: object) -> Any:
         raise
 
 
-def look_lowering(target: object) -> Any:
+def look_lowering(target: object) -> object:
     """Point the camera at ``target``, lowering the torso where that helps
     (:func:`_look_lowering`); where the head still stops at its tilt limit above the
     target (TALOS has no torso to lower), the look counts as had if the target lies in
@@ -260,7 +260,7 @@ def look_lowering(target: object) -> Any:
     return _or_at_tilt_limit(_look_lowering, target)
 
 
-def _look_lowering(target: object) -> Any:
+def _look_lowering(target: object) -> object:
     """Point the camera at ``target``; where the head is blocked (an HSR whose lift an
     earlier reach left up carries its parked hand into the head turned down: 8 of 50
     kitchen mug fetches failed so), or cannot tilt down to it, lower the torso in steps
