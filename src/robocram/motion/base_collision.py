@@ -359,11 +359,17 @@ class BaseCollisionChecker:
 
     def blockers(self, pose: FloatArray) -> list[str]:
         """What the robot touches at ``pose`` by the exact check (``object/link`` names)."""
+        return sorted({other for _, other in self.blocking_pairs(pose)})
+
+    def blocking_pairs(self, pose: FloatArray) -> list[tuple[str, str]]:
+        """``(part of the robot or what it carries, object/link it touches)`` at ``pose``
+        by the exact check, as :meth:`blockers` names them: which link of the robot meets
+        what (an open hand still round the thing it just let go)."""
         self.exact_checks += 1
         start = np.array([*self.start.position[:2], yaw_of(self.start)])
         tolerated = self.tolerated if self._travel(start, pose) <= ESCAPE else {}
         self._place(pose)
-        return sorted({other for _, other in self._deepened(tolerated)})
+        return sorted(set(self._deepened(tolerated)))
 
     def _contact_depths(self) -> dict[_Pair, float]:
         """``(part of the robot, object/link it touches)`` pairs where the robot is now,

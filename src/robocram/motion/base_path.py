@@ -8,7 +8,8 @@ arrive straight ahead along the goal's (the direct motion of a long drive mostly
 by turning while close to the furniture it leaves or reaches). Only when those are
 blocked too does OMPL plan around (:mod:`robocram.motion.ompl_base_planner`). A goal in collision is
 ``NavigationPoseUnreachable``; a goal no path reaches within the budget is
-``NavigationPathBlocked``, naming what the direct motion runs into first and where.
+``NavigationPathBlocked``, naming what the direct motion runs into first, where, and
+which of the robot's links meet it there.
 """
 
 from __future__ import annotations
@@ -137,13 +138,15 @@ def plan_base_path(
                 found = _planned(checker, start, end, radius, seed, budget)
                 planner = "RRTConnect/ReedsShepp" if car else "RRTConnect"
             if found is None:
-                names = checker.blockers(direct[blocked])
+                pairs = checker.blocking_pairs(direct[blocked])
+                names = sorted({other for _, other in pairs})
                 fraction = blocked / max(len(direct) - 1, 1)
                 raise NavigationPathBlocked(
                     f"no path of {robot.name} to {_shown(end)} within {budget} checks; the "
                     f"direct way runs into {names} {fraction:.0%} of the way",
                     target=goal,
                     colliding=names,
+                    robot_links=_own_links(robot.name, pairs),
                     path_fraction=fraction,
                 )
             waypoints = found
@@ -173,14 +176,20 @@ def _refuse_blocked_goal(robot: RobotHandle, goal: Pose, allowed: frozenset[str]
     pairs = blocking_pairs_at(robot, end, allowed)
     if pairs:
         colliding = sorted({other for _, other in pairs})
-        own = f"{robot.name}/"
         raise NavigationPoseUnreachable(
             f"{robot.name} at {_shown(end)} would collide with {colliding}",
             target=goal,
             colliding=colliding,
-            robot_links=sorted({p.removeprefix(own) for p, _ in pairs if p.startswith(own)}),
+            robot_links=_own_links(robot.name, pairs),
         )
     return True
+
+
+def _own_links(robot_name: str, pairs: Collection[tuple[str, str]]) -> list[str]:
+    """The robot's own links among the ``(body/link, other)`` pairs (what it carries left
+    out): which part of it met something, for a plan to judge what would clear it."""
+    own = f"{robot_name}/"
+    return sorted({p.removeprefix(own) for p, _ in pairs if p.startswith(own)})
 
 
 def _detour(

@@ -107,7 +107,7 @@ def _park(robot: KnownRobot, arm: str, states: list[list[object]]) -> None:
         except ManipulationPathBlocked as failure:
             blocked = failure
     still = _park_backing_off(robot, arm, states, blocked)
-    if still is not None and _lift_hand(robot, arm):
+    if still is not None and lift_hand(robot, arm):
         still = _park_backing_off(robot, arm, states, still)
     if still is not None and _pull_hand_in(robot, arm):
         still = _park_backing_off(robot, arm, states, still)
@@ -135,7 +135,7 @@ def _park_backing_off(
     return blocked
 
 
-def _lift_hand(robot: KnownRobot, arm: str) -> bool:
+def lift_hand(robot: KnownRobot, arm: str) -> bool:
     """Raise ``arm``'s hand straight up, its orientation kept, by the first of
     :data:`PARKING_LIFTS` it can; whether it rose."""
     tool = transform_pose(PoseStamped(robot.tool_frame(arm)), "map").pose

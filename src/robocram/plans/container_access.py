@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from robocram.execution.failures import (
     EnvironmentManipulationImpossible,
     NavigationLowLevelFailure,
+    NavigationPathBlocked,
     NavigationPoseUnreachable,
     PlanFailure,
 )
@@ -121,9 +122,11 @@ def open_from_front(
 def _neck_in_the_way(failure: PlanFailure) -> bool:
     """Whether looking ahead may help after ``failure``, the last stand's: an opening that
     failed, or a stand the base could not take with the neck among the robot's links that
-    would collide there."""
+    would collide there (at the stand: a way there blocked on the way is not judged)."""
     if not isinstance(failure, NavigationPoseUnreachable):
         return True
+    if isinstance(failure, NavigationPathBlocked):
+        return False
     neck = set(current_robot().neck_links())
     return any(link in neck for link in failure.robot_links or ())
 

@@ -4,12 +4,14 @@ The target is a location designator (``a.location(on=..., for_=...)``) or a pose
 each placing spot (bounded by ``place_retries``) the robot tries stands that hold the
 object over the spot as the arm holds it now (:func:`placing_stands`): a stand where it
 would collide is skipped at once; a stand where placing fails gives the next one, at most
-``stand_retries`` per spot. With ``reach_stands`` the stands from which the arm reaches the
-spot by IK (a ``reachable_for`` location) come after those: a spot deep in a fridge is
-reached slanting past its open door, not with the arm as it holds the thing now. When all
-fail, :class:`DeliveryExhausted` (an ``ObjectUndeliverable``) carries every cause in order.
-A put that let the object go and then failed ends the delivery (:class:`ObjectLetGo`): the
-next stands would only move an empty hand, maybe one still inside a drawer.
+``stand_retries`` per spot (a way there blocked only by the empty other hand, still round
+what it just put down, is driven again with that hand lifted). With ``reach_stands`` the
+stands from which the arm reaches the spot by IK (a ``reachable_for`` location) come after
+those: a spot deep in a fridge is reached slanting past its open door, not with the arm as
+it holds the thing now. When all fail, :class:`DeliveryExhausted` (an
+``ObjectUndeliverable``) carries every cause in order. A put that let the object go and
+then failed ends the delivery (:class:`ObjectLetGo`): the next stands would only move an
+empty hand, maybe one still inside a drawer.
 """
 
 from __future__ import annotations
@@ -28,7 +30,8 @@ from robocram.execution.failures import (
     PlanFailure,
 )
 from robocram.plans.attempt_log import AttemptLog
-from robocram.plans.basic_actions import look_ahead, navigate, neck_in_the_way
+from robocram.plans.basic_actions import look_ahead, neck_in_the_way
+from robocram.plans.empty_hand_up import navigate_empty_hand_up
 from robocram.plans.errors import DeliveryExhausted, ObjectLetGo, PlanArgumentError
 from robocram.plans.known_robot import current_robot
 from robocram.plans.location_poses import location_poses, next_pose
@@ -146,7 +149,7 @@ def _try_spot(
     tried = 0
     for stand in _stands(held, spot, arm, reach_stands):
         try:
-            navigate(stand)
+            navigate_empty_hand_up(stand)
         except NavigationPoseUnreachable as failure:  # a stand in the way: the next turn
             log.record("deliver", stand, failure)
             causes.append(failure)
