@@ -176,7 +176,10 @@ def _out_the_way_in(
         return False
     for states in reversed(joints_in):
         try:
-            perform(a.motion(type="moving-arm-joints", arm=held.arm, configuration=states))
+            retrace = a.motion(
+                type="moving-arm-joints", arm=held.arm, configuration=states, **GRASPING
+            )  # the fingers came in brushing the top: they go out as they came
+            perform(retrace)
         except (ManipulationLowLevelFailure, NavigationLowLevelFailure):
             return False
     return True

@@ -49,6 +49,7 @@ from robocram.projection.collision_mode import (
     allowed_links,
     collision_check,
     hand_contact,
+    known_mode,
     putting_back_once,
 )
 from robocram.projection.errors import unknown_name
@@ -329,14 +330,29 @@ def _arm_motion(
         raise
 
 
-def move_joints(robot: ProjectedRobot, arm: str, configuration: object) -> dict[str, float]:
+def move_joints(
+    robot: ProjectedRobot,
+    arm: str,
+    configuration: object,
+    collision_mode: str = "avoid_all",
+    touching: str | None = None,
+) -> dict[str, float]:
     """Set ``arm``'s joints from a mapping or ``[[joint, value], ...]``; return what was set.
 
+    The way there is checked in ``collision_mode`` as :func:`move_tcp`'s is: under
+    ``allow_hand`` the hand may touch ``touching`` (None: any object) no deeper than
+    :data:`~robocram.motion.hand_contact.HAND_CONTACT_DEPTH`, as a hand that let go low
+    in a drawer, its fingers at the counter's top, goes back through the joints it came
+    in by; ``allow_all`` checks nothing.
+
     Raises:
+        ProjectionError: ``collision_mode`` is none of CRAM's modes, or a joint is not
+            the arm's; nothing moved.
         ManipulationGoalNotReached: a value was outside its limits (the arm moves to the
             clamped one).
         ManipulationPathBlocked: no collision-free way there was found; the arm did not move.
     """
+    mode = known_mode(arm, collision_mode)
     spec = robot.arm(arm)
     values = joint_values(configuration)
     allowed = set(spec.joints)
@@ -348,7 +364,9 @@ def move_joints(robot: ProjectedRobot, arm: str, configuration: object) -> dict[
     inside = {j: limits[j].clamp(v) for j, v in values.items()}  # moved to, then failed
     what = f"{robot.name}'s {arm} arm"
     checked = planned_against(robot)
-    motion = plan_arm_motion(robot.handle, inside, settings=robot.motion, what=what)
+    settings = replace(robot.motion, check=False) if mode == "allow_all" else robot.motion
+    hand = hand_contact(robot, arm, mode, touching)
+    motion = plan_arm_motion(robot.handle, inside, settings=settings, what=what, hand=hand)
     follow(robot, motion.trajectory, checked)
     now = robot.world.joint_states(robot.name)
     reached = {j: now[j] for j in values}
