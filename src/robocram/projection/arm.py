@@ -35,7 +35,7 @@ from robocram.kinematics import (
     solve_ik,
 )
 from robocram.kinematics.planar_base import BASE_X_JOINT, BASE_Y_JOINT, BASE_YAW_JOINT
-from robocram.motion import ArmMotion, plan_arm_motion, plan_tool_line
+from robocram.motion import ArmMotion, MotionSettings, plan_arm_motion, plan_tool_line
 from robocram.motion.hand_contact import HandContact
 from robocram.motion.joint_goal import finite_goal
 from robocram.motion.reach_failure import unreachable
@@ -45,6 +45,7 @@ from robocram.motion.tool_goal import (
     joint_values,
 )
 from robocram.motion.whole_body_tool_path import plan_whole_body_tool_path
+from robocram.projection.arm_ways import ArmWay, remember, way_back
 from robocram.projection.collision_mode import (
     allowed_links,
     collision_check,
@@ -166,6 +167,7 @@ def move_tcp(
         target_in_base = robot.base_pose().inverse() * target_in_map
     arm_motion = _arm_motion(robot, arm, result, target_in_base, collision_mode, hand)
     follow(robot, arm_motion.trajectory, checked)
+    remember(robot, arm, arm_motion.path)
     reached = robot.world.link_pose(robot.name, spec.tool_frame)
     return ensure_reached(robot.name, arm, reached, target, target_in_map)
 
@@ -345,6 +347,11 @@ def move_joints(
     in a drawer, its fingers at the counter's top, goes back through the joints it came
     in by; ``allow_all`` checks nothing.
 
+    Where the way there is blocked under ``allow_hand`` and the arm's newest kept way
+    ran from the goal to here (:mod:`~robocram.projection.arm_ways`), the arm goes back
+    along it, each straight segment checked in the mode as it comes (a blocked one
+    leaves the arm at the waypoint before it).
+
     Raises:
         ProjectionError: ``collision_mode`` is none of CRAM's modes, or a joint is not
             the arm's; nothing moved.
@@ -366,8 +373,16 @@ def move_joints(
     checked = planned_against(robot)
     settings = replace(robot.motion, check=False) if mode == "allow_all" else robot.motion
     hand = hand_contact(robot, arm, mode, touching)
-    motion = plan_arm_motion(robot.handle, inside, settings=settings, what=what, hand=hand)
-    follow(robot, motion.trajectory, checked)
+    try:
+        motion = plan_arm_motion(robot.handle, inside, settings=settings, what=what, hand=hand)
+    except ManipulationPathBlocked:
+        way = way_back(robot, arm, inside) if mode == "allow_hand" else None
+        if way is None:
+            raise
+        _go_back(robot, way, settings, what, hand)
+    else:
+        follow(robot, motion.trajectory, checked)
+        remember(robot, arm, motion.path)
     now = robot.world.joint_states(robot.name)
     reached = {j: now[j] for j in values}
     if inside != values:
@@ -384,3 +399,24 @@ def move_joints(
             reached=reached,
         )
     return reached
+
+
+def _go_back(
+    robot: ProjectedRobot,
+    way: ArmWay,
+    settings: MotionSettings,
+    what: str,
+    hand: HandContact | None,
+) -> None:
+    """Move the arm back along ``way``, waypoint by waypoint: each straight segment
+    checked on the world as it stands when the arm gets there (the hand within its bound).
+
+    Raises:
+        ManipulationPathBlocked: a segment is blocked; the arm stays at the waypoint before.
+    """
+    straight = replace(settings, plan=False)
+    for waypoint in way.back():
+        checked = planned_against(robot)
+        goal = dict(zip(way.joints, waypoint, strict=True))
+        motion = plan_arm_motion(robot.handle, goal, settings=straight, what=what, hand=hand)
+        follow(robot, motion.trajectory, checked)
