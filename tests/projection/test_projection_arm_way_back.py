@@ -23,7 +23,6 @@ from robocram.motion.joint_path import JointPath
 from robocram.motion.trajectory_log import trajectory_listener
 from robocram.projection import ProjectedRobot
 from robocram.projection.arm import move_joints
-from robocram.projection.arm_ways import remember
 from robocram.tf import Pose
 from robocram.world import World
 
@@ -84,7 +83,7 @@ def _came_low(world: World, robot: ProjectedRobot) -> dict[str, float]:
     world.set_joint_states("pr2", low)
     joints = tuple(robot.arm("right").joints)
     way = tuple(tuple(c[j] for j in joints) for c in (parked, aside, low))
-    remember(robot, "right", JointPath(joints, way, "rrt_connect", 0))
+    robot.arm_ways.remember("right", robot.base_pose(), JointPath(joints, way, "rrt_connect", 0))
     return {j: parked[j] for j in joints}
 
 

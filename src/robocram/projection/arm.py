@@ -45,7 +45,7 @@ from robocram.motion.tool_goal import (
     joint_values,
 )
 from robocram.motion.whole_body_tool_path import plan_whole_body_tool_path
-from robocram.projection.arm_ways import ArmWay, remember, way_back
+from robocram.projection.arm_ways import ArmWay
 from robocram.projection.collision_mode import (
     allowed_links,
     collision_check,
@@ -167,7 +167,7 @@ def move_tcp(
         target_in_base = robot.base_pose().inverse() * target_in_map
     arm_motion = _arm_motion(robot, arm, result, target_in_base, collision_mode, hand)
     follow(robot, arm_motion.trajectory, checked)
-    remember(robot, arm, arm_motion.path)
+    robot.arm_ways.remember(arm, robot.base_pose(), arm_motion.path)
     reached = robot.world.link_pose(robot.name, spec.tool_frame)
     return ensure_reached(robot.name, arm, reached, target, target_in_map)
 
@@ -376,13 +376,14 @@ def move_joints(
     try:
         motion = plan_arm_motion(robot.handle, inside, settings=settings, what=what, hand=hand)
     except ManipulationPathBlocked:
-        way = way_back(robot, arm, inside) if mode == "allow_hand" else None
+        now, base = robot.world.joint_states(robot.name), robot.base_pose()
+        way = robot.arm_ways.back(arm, inside, now, base) if mode == "allow_hand" else None
         if way is None:
             raise
         _go_back(robot, way, settings, what, hand)
     else:
         follow(robot, motion.trajectory, checked)
-        remember(robot, arm, motion.path)
+        robot.arm_ways.remember(arm, robot.base_pose(), motion.path)
     now = robot.world.joint_states(robot.name)
     reached = {j: now[j] for j in values}
     if inside != values:

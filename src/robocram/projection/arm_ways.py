@@ -12,14 +12,10 @@ joint goal at the start of one, asked for from its end, may go back along it
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from dataclasses import dataclass, field
 
 from robocram.motion.joint_path import JointPath
 from robocram.tf import Pose
-
-if TYPE_CHECKING:
-    from robocram.projection.projected_robot import ProjectedRobot
 
 WAYS_KEPT = 4  # per arm: a put's way in has at most two legs (carry, above, put)
 AT = 1e-4  # [rad | m] a joint this near a waypoint's value is there
@@ -39,34 +35,42 @@ class ArmWay:
         """The waypoints from the end back to the start, the end left out (it is there)."""
         return tuple(reversed(self.waypoints[:-1]))
 
-
-def remember(robot: ProjectedRobot, arm: str, path: JointPath) -> None:
-    """Keep ``path``, just followed by ``arm``, as the arm's newest way."""
-    if len(path.waypoints) < 2:
-        return
-    ways = robot.arm_ways.setdefault(arm, [])
-    ways.append(ArmWay(robot.world.pose(robot.name), path.joints, path.waypoints))
-    del ways[:-WAYS_KEPT]
-
-
-def way_back(robot: ProjectedRobot, arm: str, goal: Mapping[str, float]) -> ArmWay | None:
-    """``arm``'s newest way that ran from ``goal`` (the same joints) to where the arm is
-    now, the base standing where it did; None if no kept way did."""
-    base = robot.world.pose(robot.name)
-    now = robot.world.joint_states(robot.name)
-    for way in reversed(robot.arm_ways.get(arm, [])):
-        if set(way.joints) != set(goal) or not _same_base(way.base, base):
-            continue
-        first, last = way.waypoints[0], way.waypoints[-1]
-        if all(
+    def runs(self, goal: Mapping[str, float], now: Mapping[str, float], base: Pose) -> bool:
+        """Whether this way ran from ``goal`` (the same joints) to ``now`` with the base
+        at ``base``."""
+        if set(self.joints) != set(goal) or not _same_pose(self.base, base):
+            return False
+        first, last = self.waypoints[0], self.waypoints[-1]
+        return all(
             abs(first[k] - goal[j]) <= AT and abs(last[k] - now[j]) <= AT
-            for k, j in enumerate(way.joints)
-        ):
-            return way
-    return None
+            for k, j in enumerate(self.joints)
+        )
 
 
-def _same_base(a: Pose, b: Pose) -> bool:
-    return all(abs(x - y) <= BASE_AT for x, y in zip(a.position, b.position, strict=True)) and all(
-        abs(x - y) <= BASE_AT for x, y in zip(a.orientation, b.orientation, strict=True)
+@dataclass
+class ArmWays:
+    """Per arm, the ways it came along, newest last."""
+
+    kept: dict[str, list[ArmWay]] = field(default_factory=dict)
+
+    def remember(self, arm: str, base: Pose, path: JointPath) -> None:
+        """Keep ``path``, just followed by ``arm`` with the base at ``base``."""
+        if len(path.waypoints) < 2:
+            return
+        ways = self.kept.setdefault(arm, [])
+        ways.append(ArmWay(base, path.joints, path.waypoints))
+        del ways[:-WAYS_KEPT]
+
+    def back(
+        self, arm: str, goal: Mapping[str, float], now: Mapping[str, float], base: Pose
+    ) -> ArmWay | None:
+        """``arm``'s newest way that ran from ``goal`` to ``now``, the base standing at
+        ``base``; None if no kept way did."""
+        return next((w for w in reversed(self.kept.get(arm, [])) if w.runs(goal, now, base)), None)
+
+
+def _same_pose(a: Pose, b: Pose) -> bool:
+    return all(
+        abs(x - y) <= BASE_AT
+        for x, y in zip((*a.position, *a.orientation), (*b.position, *b.orientation), strict=True)
     )
