@@ -82,7 +82,17 @@ def test_interface_predicates_fail_until_extended() -> None:
         ),
         (
             a.motion(type="moving-arm-joints", right_configuration=[0.1, 0.2]),
-            Term("move_joints", ("right", [0.1, 0.2])),
+            Term("move_joints", ("right", [0.1, 0.2], "avoid_all", "none")),
+        ),
+        (
+            a.motion(
+                type="moving-arm-joints",
+                arm="right",
+                configuration=[0.1, 0.2],
+                collision_mode="allow_hand",
+                touching="kitchen",
+            ),  # fmt: skip
+            Term("move_joints", ("right", [0.1, 0.2], "allow_hand", "kitchen")),
         ),
     ],
 )

@@ -75,8 +75,8 @@ def test_the_table_has_one_entry_per_type_and_flying_is_its_own_family() -> None
     assert set(commands_of(MOTION_TYPES, "arms")) == {
         ("move_tcp", 4),
         ("move_tcp_both", 3),
-        ("move_joints", 2),
-        ("move_joints_both", 2),
+        ("move_joints", 4),
+        ("move_joints_both", 3),
         ("move_part", 5),
     }
     assert set(commands_of(MOTION_TYPES, "perception")) == {("detect", 1), ("inspect", 1)}

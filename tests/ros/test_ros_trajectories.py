@@ -17,9 +17,11 @@ from robocram.execution import perform
 from robocram.execution.failures import (
     ManipulationPathBlocked,
     NavigationPathBlocked,
+    ProcessModuleInputError,
     TorsoPathBlocked,
 )
 from robocram.motion import JointTrajectory, trajectory_listener
+from robocram.motion.hand_contact import HAND_CONTACT_DEPTH
 from robocram.ros import Roscore, ros_robot
 from robocram.scenes import tabletop_scene
 from robocram.tf import Pose, PoseStamped
@@ -107,6 +109,38 @@ def test_a_path_round_a_shelf_is_sent_whole_timed_with_goal_tolerances(
     _assert_tolerances(goal, {j: 0.02 for j in trajectory.joint_names} | wrist_roll)
     for joint, value in expected.items():
         assert reached[joint] == pytest.approx(value, abs=1e-6)
+
+
+def test_arm_joints_take_projection_collision_modes_and_refuse_an_unknown_one(
+    roscore: Roscore, drivers: DriverPool, tmp_path: Path
+) -> None:
+    sent: list[JointTrajectory] = []
+    with (
+        drivers(goal_log=tmp_path / "goals.jsonl") as driver,
+        ros_robot("pr2", roscore.uri, world=tabletop_scene("pr2").world),
+        trajectory_listener(sent.append),
+    ):
+        stretched = a.motion(
+            type="moving-arm-joints", arm="right", configuration=_right_arm({}),
+            collision_mode="allow_elbow",
+        )  # fmt: skip
+        with pytest.raises(ProcessModuleInputError, match="unknown collision mode 'allow_elbow'"):
+            perform(stretched)
+        assert not sent  # refused before anything was planned or sent
+        perform(
+            a.motion(
+                type="moving-arm-joints",
+                arm="right",
+                configuration=_right_arm({}),
+                collision_mode="allow_hand",
+                touching="mug-1",
+            )
+        )
+    (trajectory,) = sent
+    (goal,) = driver.received_goals(RIGHT_ARM)
+    _assert_same(goal, trajectory)
+    assert {c.other for c in trajectory.allowed_contacts} == {"mug-1"}  # the hand bounded
+    assert {c.depth for c in trajectory.allowed_contacts} == {HAND_CONTACT_DEPTH}
 
 
 def test_without_a_world_goals_are_straight_timed_trajectories(

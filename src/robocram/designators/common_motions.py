@@ -20,8 +20,9 @@ Motion ``type`` (properties) -> command, resource:
 - moving-tcp (left_target / right_target / arm + target[, collision_mode, touching]) ->
   ``move_tcp(Arm, Pose, Mode, Touching)``; with both side targets
   ``move_tcp_both(Left, Right, Mode)``
-- moving-arm-joints (left_configuration / right_configuration / arm + configuration) ->
-  ``move_joints(Arm, Config)``; with both ``move_joints_both(Left, Right)``, arms
+- moving-arm-joints (left_configuration / right_configuration / arm + configuration
+  [, collision_mode, touching]) -> ``move_joints(Arm, Config, Mode, Touching)``; with both
+  ``move_joints_both(Left, Right, Mode)``, arms
 - flying (target) -> ``fly(Pose)``, flying; distance-sensing (direction) ->
   ``sense_distance(Direction)``, distance_sensor (family ``flying``)
 

@@ -82,16 +82,22 @@ def _moving_tcp() -> MotionType:
 
 
 def _moving_arm_joints() -> MotionType:
+    """Joint goals, checked as ``moving-tcp`` is: ``collision_mode`` (``avoid_all`` unless
+    given; ``allow_hand`` lets the hand touch ``touching`` within its bound, as a hand
+    that let go low in a drawer retraces the joints it came in by)."""
     both = ("left_configuration", "right_configuration")
     configs = [_configuration(k) for k in (*both, "configuration")]
-    one = [Command("move_joints", (Atom(s), f"{s}_configuration"), (1,), both) for s in SIDES]
+    mode = ("collision_mode", "touching")
+    one = [
+        Command("move_joints", (Atom(s), f"{s}_configuration", *mode), (1,), both) for s in SIDES
+    ]
     return MotionType(
         "moving-arm-joints",
-        (configs[0], configs[1], _atom("arm"), configs[2]),
+        (configs[0], configs[1], _atom("arm"), configs[2], _MODE, _TOUCHING),
         (
-            Command("move_joints_both", both, (0, 1)),
+            Command("move_joints_both", (*both, "collision_mode"), (0, 1)),
             *one,
-            Command("move_joints", ("arm", "configuration"), (1,), both),
+            Command("move_joints", ("arm", "configuration", *mode), (1,), both),
         ),
         "arms",
         Answer.JOINTS,

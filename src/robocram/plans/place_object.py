@@ -17,10 +17,16 @@ from __future__ import annotations
 
 import contextlib
 import math
+from collections.abc import Sequence
 
 from robocram.designators import LocationDesignator, ObjectDesignator, a
 from robocram.execution import perform
-from robocram.execution.failures import ManipulationLowLevelFailure, NavigationLowLevelFailure
+from robocram.execution.failures import (
+    ManipulationLowLevelFailure,
+    NavigationLowLevelFailure,
+    PlanFailure,
+)
+from robocram.knowledge.robot_predicates import ARM_JOINTS, GRIPPER_JOINT
 from robocram.knowledge.world_predicates import ATTACHED, SETTLING
 from robocram.logic import UnknownPredicateError, current_kb
 from robocram.plans.basic_actions import park_arms
@@ -36,6 +42,8 @@ PLACE_GAP = 0.005  # [m] the object is let go this far above its target (a locat
 # 2 mm the HSR's hand, backing off, knocked 2 of 50 mugs off the table)
 CARRY_HEIGHTS = (0.10, 0.05)  # [m] the object comes in from this far above, first that works
 RETREATS = (0.10, 0.05)  # [m] the open hand backs off this far towards the wrist, or less
+OUT_OPENING = 0.25  # of the way from the grip to open: the hand goes out the way it came in
+# so narrowed where its open fingers met the counter's top (Boxy's bowl rim, seed 33)
 SETTLE = 0.15  # [s] simulated at most after letting go: the 7 mm drop takes 0.04 s
 MAX_SETTLE_DROP = 0.03  # [m] it may sink this much (the gap, contact) and still rest
 MOVED = 1e-3  # [m] a hand moved less than this by a failed put is where it started
@@ -145,41 +153,106 @@ def _settled(name: str, put: Pose, seconds: float) -> str | None:
     return None
 
 
-def _out_the_way_in(held: Held, way_in: list[Pose]) -> bool:
+def _out_the_way_in(
+    held: Held,
+    way_in: list[Pose],
+    grip: float | None = None,
+    joints_in: Sequence[list[list[object]]] = (),
+) -> bool:
     """Whether the open hand went back out through ``way_in`` (map tool poses, the last
     the nearest the put), as a last resort after backing off towards the wrist and parking
     failed: Boxy let a bowl go by its rim low in an open drawer, its hand had come in on
     another IK branch, and neither way out was free under the counter's top (seed 17).
     The hand may brush anything on its way back (within the grasp's bound): the open
-    fingers touched the top's underside. False where it did not get out (or had not come
-    in from anywhere)."""
+    fingers touched the top's underside. Where that way is blocked too (seed 33: a new IK
+    solution for a pose it came in from swings the hand into the top), the hand narrows
+    to :data:`OUT_OPENING` of the way from ``grip`` (its master finger joint as it held
+    the thing) to open, a little wider than it came in, and the arm goes back through
+    the joint values it came in by (``joints_in``, the first where it started), last
+    first, under ``allow_hand`` (the fingers came in brushing the top). Projection takes
+    each leg back along the way the arm came (``projection/arm_ways.py``): seed 33's came
+    round the top's edge 0.5 mm clear, the straight joint way back dips 18 mm into it.
+    False where it did not get out (or had not come in from anywhere)."""
+    if _back_through(held, way_in, **GRASPING):
+        return True
+    if grip is None or not joints_in or not _narrowed(held.arm, grip):
+        return False
+    for states in reversed(joints_in):
+        try:
+            perform(
+                a.motion(type="moving-arm-joints", arm=held.arm, configuration=states, **GRASPING)
+            )
+        except (ManipulationLowLevelFailure, NavigationLowLevelFailure):
+            return False
+    return True
+
+
+def _arm_now(arm: str) -> list[list[object]]:
+    """``arm``'s joint values now, as a configuration to move to (empty: none known)."""
+    robot = current_robot()
+    row = ARM_JOINTS.first(current_kb(), robot=robot.name, arm=arm)
+    if row is None:
+        return []
+    values = [(joint, robot.joint_position(joint)) for joint in row.joints]
+    if any(value is None for _, value in values):
+        return []
+    return [[joint, value] for joint, value in values]
+
+
+def _back_through(held: Held, way_in: list[Pose], **mode: str) -> bool:
+    """Whether the hand went back through ``way_in``'s poses, the nearest first, those
+    it is not at already."""
     here = transform_pose(PoseStamped(held.tool_frame), "map").pose
     back = [pose for pose in reversed(way_in) if math.dist(here.position, pose.position) >= MOVED]
     for pose in back:
         try:
-            _move(held.arm, pose, **GRASPING)
+            _move(held.arm, pose, **mode)
         except (ManipulationLowLevelFailure, NavigationLowLevelFailure):
             return False
     return bool(back)
 
 
+def _grip(arm: str) -> float | None:
+    """The value of ``arm``'s master finger joint now (None: no finger joint)."""
+    robot = current_robot()
+    row = GRIPPER_JOINT.first(current_kb(), robot=robot.name, arm=arm)
+    return robot.joint_position(row.joint) if row is not None else None
+
+
+def _narrowed(arm: str, grip: float) -> bool:
+    """Whether ``arm``'s open hand closed to :data:`OUT_OPENING` of the way from ``grip``
+    back to where it is open now."""
+    opened = _grip(arm)
+    if opened is None or abs(opened - grip) < 1e-6:
+        return False
+    angle = grip + OUT_OPENING * (opened - grip)
+    try:
+        perform(a.motion(type="moving-gripper-joint", gripper=arm, joint_angle=angle))
+    except PlanFailure:
+        return False
+    return True
+
+
 def _put_down(robot: KnownRobot, held: Held, put: Pose) -> None:
     tool = put * held.object_in_tool.inverse()
     way_in = [transform_pose(PoseStamped(held.tool_frame), "map").pose]
+    joints_in = [_arm_now(held.arm)]
     for height in CARRY_HEIGHTS:
         try:
             above = _shifted(tool, 0.0, 0.0, height)
             _move(held.arm, above, **GRASPING, touching=held.object_name)
             way_in.append(above)
+            joints_in.append(_arm_now(held.arm))
             break
         except ManipulationLowLevelFailure:
             continue  # at the edge of its reach the arm comes in lower
     _move(held.arm, tool, **GRASPING, touching=held.object_name)
+    grip = _grip(held.arm)
     perform(a.motion(type="opening", gripper=held.arm))
     try:
         _retreat(robot, held)
     except ManipulationLowLevelFailure as failure:  # let go already: no other turn to try
-        if _out_the_way_in(held, way_in):
+        if _out_the_way_in(held, way_in, grip, [c for c in joints_in if c]):
             return
         raise PlacingFailed(
             f"{held.object_name!r} was let go but the {held.arm} hand could not back off",

@@ -35,7 +35,7 @@ from robocram.kinematics import (
     solve_ik,
 )
 from robocram.kinematics.planar_base import BASE_X_JOINT, BASE_Y_JOINT, BASE_YAW_JOINT
-from robocram.motion import ArmMotion, plan_arm_motion, plan_tool_line
+from robocram.motion import ArmMotion, MotionSettings, plan_arm_motion, plan_tool_line
 from robocram.motion.hand_contact import HandContact
 from robocram.motion.joint_goal import finite_goal
 from robocram.motion.reach_failure import unreachable
@@ -45,10 +45,12 @@ from robocram.motion.tool_goal import (
     joint_values,
 )
 from robocram.motion.whole_body_tool_path import plan_whole_body_tool_path
+from robocram.projection.arm_ways import ArmWay
 from robocram.projection.collision_mode import (
     allowed_links,
     collision_check,
     hand_contact,
+    known_mode,
     putting_back_once,
 )
 from robocram.projection.errors import unknown_name
@@ -165,6 +167,7 @@ def move_tcp(
         target_in_base = robot.base_pose().inverse() * target_in_map
     arm_motion = _arm_motion(robot, arm, result, target_in_base, collision_mode, hand)
     follow(robot, arm_motion.trajectory, checked)
+    robot.arm_ways.remember(arm, robot.base_pose(), arm_motion.path)
     reached = robot.world.link_pose(robot.name, spec.tool_frame)
     return ensure_reached(robot.name, arm, reached, target, target_in_map)
 
@@ -329,14 +332,34 @@ def _arm_motion(
         raise
 
 
-def move_joints(robot: ProjectedRobot, arm: str, configuration: object) -> dict[str, float]:
+def move_joints(
+    robot: ProjectedRobot,
+    arm: str,
+    configuration: object,
+    collision_mode: str = "avoid_all",
+    touching: str | None = None,
+) -> dict[str, float]:
     """Set ``arm``'s joints from a mapping or ``[[joint, value], ...]``; return what was set.
 
+    The way there is checked in ``collision_mode`` as :func:`move_tcp`'s is: under
+    ``allow_hand`` the hand may touch ``touching`` (None: any object) no deeper than
+    :data:`~robocram.motion.hand_contact.HAND_CONTACT_DEPTH`, as a hand that let go low
+    in a drawer, its fingers at the counter's top, goes back through the joints it came
+    in by; ``allow_all`` checks nothing.
+
+    Where the way there is blocked under ``allow_hand`` and the arm's newest kept way
+    ran from the goal to here (:mod:`~robocram.projection.arm_ways`), the arm goes back
+    along it, each straight segment checked in the mode as it comes (a blocked one
+    leaves the arm at the waypoint before it).
+
     Raises:
+        ProjectionError: ``collision_mode`` is none of CRAM's modes, or a joint is not
+            the arm's; nothing moved.
         ManipulationGoalNotReached: a value was outside its limits (the arm moves to the
             clamped one).
         ManipulationPathBlocked: no collision-free way there was found; the arm did not move.
     """
+    mode = known_mode(arm, collision_mode)
     spec = robot.arm(arm)
     values = joint_values(configuration)
     allowed = set(spec.joints)
@@ -348,8 +371,19 @@ def move_joints(robot: ProjectedRobot, arm: str, configuration: object) -> dict[
     inside = {j: limits[j].clamp(v) for j, v in values.items()}  # moved to, then failed
     what = f"{robot.name}'s {arm} arm"
     checked = planned_against(robot)
-    motion = plan_arm_motion(robot.handle, inside, settings=robot.motion, what=what)
-    follow(robot, motion.trajectory, checked)
+    settings = replace(robot.motion, check=False) if mode == "allow_all" else robot.motion
+    hand = hand_contact(robot, arm, mode, touching)
+    try:
+        motion = plan_arm_motion(robot.handle, inside, settings=settings, what=what, hand=hand)
+    except ManipulationPathBlocked:
+        now, base = robot.world.joint_states(robot.name), robot.base_pose()
+        way = robot.arm_ways.back(arm, inside, now, base) if mode == "allow_hand" else None
+        if way is None:
+            raise
+        _go_back(robot, way, settings, what, hand)
+    else:
+        follow(robot, motion.trajectory, checked)
+        robot.arm_ways.remember(arm, robot.base_pose(), motion.path)
     now = robot.world.joint_states(robot.name)
     reached = {j: now[j] for j in values}
     if inside != values:
@@ -366,3 +400,24 @@ def move_joints(robot: ProjectedRobot, arm: str, configuration: object) -> dict[
             reached=reached,
         )
     return reached
+
+
+def _go_back(
+    robot: ProjectedRobot,
+    way: ArmWay,
+    settings: MotionSettings,
+    what: str,
+    hand: HandContact | None,
+) -> None:
+    """Move the arm back along ``way``, waypoint by waypoint: each straight segment
+    checked on the world as it stands when the arm gets there (the hand within its bound).
+
+    Raises:
+        ManipulationPathBlocked: a segment is blocked; the arm stays at the waypoint before.
+    """
+    straight = replace(settings, plan=False)
+    for waypoint in way.back():
+        checked = planned_against(robot)
+        goal = dict(zip(way.joints, waypoint, strict=True))
+        motion = plan_arm_motion(robot.handle, goal, settings=straight, what=what, hand=hand)
+        follow(robot, motion.trajectory, checked)

@@ -40,14 +40,21 @@ def collision_check(
 
     It returns the colliding ``(robot link, object)`` pairs, so a failure can name them.
     """
-    mode = mode.replace("-", "_")
-    if mode not in COLLISION_MODES:
-        raise ProjectionError(
-            f"unknown collision mode {mode!r} for the {arm} arm; use one of {COLLISION_MODES}"
-        )
+    mode = known_mode(arm, mode)
     if mode == "allow_all":
         return None
     return _Check(robot, arm, set(), hand_contact(robot, arm, mode, touching))
+
+
+def known_mode(arm: str, mode: str) -> str:
+    """``mode`` with dashes as underscores; a ProjectionError naming it and the modes
+    there are if it is none of them."""
+    normal = mode.replace("-", "_")
+    if normal not in COLLISION_MODES:
+        raise ProjectionError(
+            f"unknown collision mode {normal!r} for the {arm} arm; use one of {COLLISION_MODES}"
+        )
+    return normal
 
 
 @dataclass

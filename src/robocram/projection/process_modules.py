@@ -12,7 +12,7 @@ grounds for its resource, one method per command, dispatched by
   inspecting answers what detecting does)
 - grippers: ``move_gripper_joint(Arm, open | close | grip | Position, Effort)``
 - arms: ``move_tcp(Arm, Pose, Mode, Touching)``, ``move_tcp_both(Left, Right, Mode)``,
-  ``move_joints(Arm, Config)``, ``move_joints_both(Left, Right)``,
+  ``move_joints(Arm, Config, Mode, Touching)``, ``move_joints_both(Left, Right, Mode)``,
   ``move_part(Arm, Part, Joint, Handle, Goal)`` (open or close a drawer or door)
 - tools: ``move_tool_path(Arm, Path, Tool, Point, Contacts, Needed)``,
   ``pour(Arm, Path, Source, Point, Target, Amount, Needed)``,
@@ -178,14 +178,21 @@ class ArmPM(ProjectionProcessModule):
         goals = zip(SIDES, (left, right), strict=True)
         return tuple(move_tcp(self.robot, self._arm(side), pose, mode) for side, pose in goals)
 
-    def move_joints(self, arm: str, configuration: object) -> dict[str, float]:
-        """Set ``arm``'s joints."""
-        return move_joints(self.robot, self._arm(arm), configuration)
+    def move_joints(
+        self, arm: str, configuration: object, mode: str = "avoid_all", touching: str = "none"
+    ) -> dict[str, float]:
+        """Set ``arm``'s joints, the way there checked as ``mode`` says (an ``allow_hand``
+        hand may touch ``touching`` only; ``none``: any object)."""
+        return move_joints(self.robot, self._arm(arm), configuration, mode, _named(touching))
 
-    def move_joints_both(self, left: object, right: object) -> tuple[dict[str, float], ...]:
+    def move_joints_both(
+        self, left: object, right: object, mode: str = "avoid_all"
+    ) -> tuple[dict[str, float], ...]:
         """Set the joints of the arms on the left and the right side."""
         goals = zip(SIDES, (left, right), strict=True)
-        return tuple(move_joints(self.robot, self._arm(side), config) for side, config in goals)
+        return tuple(
+            move_joints(self.robot, self._arm(side), config, mode) for side, config in goals
+        )
 
     def move_part(self, arm: str, part: str, joint: str, handle: str, goal: float) -> float:
         """Hold ``handle`` of ``part`` and move its ``joint`` to ``goal`` (a drawer, a door)."""

@@ -12,6 +12,7 @@ import threading
 from dataclasses import dataclass, field
 
 from robocram.motion import CarriedJoint, MotionSettings
+from robocram.projection.arm_ways import ArmWays
 from robocram.projection.errors import ProjectionError, unknown_name
 from robocram.robots import ArmDescription, LoadedDescription
 from robocram.tf import Pose, PoseLike, PoseStamped
@@ -39,6 +40,9 @@ class ProjectedRobot:
     held_pitches: dict[tuple[str, str], float] = field(default_factory=dict, compare=False)
     """The pitch [rad] from above with which each ``(part, handle)`` was last held, where
     the front failed: closing takes it so first."""
+    arm_ways: ArmWays = field(default_factory=ArmWays, compare=False)
+    """The last ways each arm came along, newest last (:mod:`~robocram.projection.arm_ways`):
+    a hand let go where no new way out is free goes back along the one it came by."""
     handle: RobotHandle = field(init=False, compare=False, repr=False)
     """The robot of the world, looked up once: what the motion layer takes."""
 

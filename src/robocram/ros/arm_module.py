@@ -30,7 +30,7 @@ from robocram.kinematics import (
     base_in_ik,
     solve_ik,
 )
-from robocram.motion.collision_modes import hand_links
+from robocram.motion.collision_modes import COLLISION_MODES, hand_links
 from robocram.motion.reach_failure import unreachable
 from robocram.motion.tool_goal import IK_RANDOM_SEED, ensure_reached, joint_values
 from robocram.robots import RobotDescription
@@ -57,9 +57,12 @@ class ArmPM(RosProcessModule):
             self.move_tcp(side, pose, mode) for side, pose in zip(SIDES, (left, right), strict=True)
         )
 
-    def move_joints_both(self, left: object, right: object) -> tuple[dict[str, float], ...]:
+    def move_joints_both(
+        self, left: object, right: object, mode: str = "avoid_all"
+    ) -> tuple[dict[str, float], ...]:
         """Move the joints of the arms on the left and the right side."""
-        return tuple(self.move_joints(s, c) for s, c in zip(SIDES, (left, right), strict=True))
+        sides = zip(SIDES, (left, right), strict=True)
+        return tuple(self.move_joints(s, c, mode) for s, c in sides)
 
     def move_part(self, arm: str, part: str, joint: str, handle: str, goal: float) -> float:
         """Open or close a drawer or door: hold ``handle`` and move ``joint`` of ``part``
@@ -181,8 +184,30 @@ class ArmPM(RosProcessModule):
         reached = client.frame_pose(spec.tool_frame)
         return ensure_reached(client.name, arm, reached, target, target_in_map)
 
-    def move_joints(self, arm: str, configuration: object) -> dict[str, float]:
-        """Move ``arm``'s joints to a ``{joint: value}`` or ``[[joint, value], ...]`` config."""
+    def move_joints(
+        self,
+        arm: str,
+        configuration: object,
+        collision_mode: str = "avoid_all",
+        touching: str | None = "none",
+    ) -> dict[str, float]:
+        """Move ``arm``'s joints to a ``{joint: value}`` or ``[[joint, value], ...]`` config.
+
+        The keys are projection's: with a world given to ``ros_robot`` the path is checked
+        in ``collision_mode`` and an ``allow_hand`` hand may touch ``touching`` (``"none"``:
+        any object) no deeper than projection's bound. Without a world ROS cannot bound
+        the hand (nor check anything): the path is the straight joint segment whatever
+        the mode.
+
+        Raises:
+            RosCommandError: ``collision_mode`` is none of CRAM's modes, or a joint is not
+                the arm's; nothing was sent.
+        """
+        if collision_mode.replace("-", "_") not in COLLISION_MODES:
+            raise RosCommandError(
+                f"unknown collision mode {collision_mode!r} for moving {self.client.name}'s "
+                f"{arm} arm's joints; use one of {COLLISION_MODES}"
+            )
         arm = self.client.desc.arm_called(arm)
         values = joint_values(configuration)
         allowed = set(self.client.arm(arm).joints)
@@ -191,7 +216,7 @@ class ArmPM(RosProcessModule):
             raise RosCommandError(
                 f"joints {unknown} are not in {self.client.name}'s {arm} arm {sorted(allowed)}"
             )
-        self._move(f"arm({arm})", values, arm, values, "avoid_all")
+        self._move(f"arm({arm})", values, arm, values, collision_mode, touching)
         joints = self.client.joint_states()
         return {j: joints[j] for j in values}
 
