@@ -35,6 +35,9 @@ FloatArray = NDArray[np.float64]
 # [m] how far apart pairs are asked for: asked for exactly 0, Bullet sometimes reports no
 # points for two penetrating links of one body, so the question reaches a hair farther
 QUERY_REACH = 1e-4
+# [m] how far round the moving parts' bounds the others near them are gathered: a smaller
+# box the parts stay within needs no new gathering (the pairs asked about are the same)
+NEAR_MARGIN = 0.05
 
 
 @dataclass(frozen=True)
@@ -92,6 +95,8 @@ class PenetrationProbe:
         self._other_slots = self._slots_of(self.others)
         self._other_boxes = self.raw.slot_bounds(self._other_slots)
         self._moved_rows: dict[tuple[tuple[str, str], ...], NDArray[np.intp]] = {}
+        self._near: NDArray[np.intp] | None = None  # others whose bounds meet _near_box
+        self._near_box = np.zeros((2, 3))
         self._hand_of = _hands(robot.description, held)
         self._world_mask = np.array(
             [
@@ -102,6 +107,7 @@ class PenetrationProbe:
         ).reshape(len(self.parts), len(self.others))
         pairs = self._judged_pairs(skipped)
         self._self_pairs = pairs[labels[pairs[:, 0]] != labels[pairs[:, 1]]]
+        self._self_a, self._self_b = self._self_pairs[:, 0].copy(), self._self_pairs[:, 1].copy()
         self._boxes_now = self.raw.slot_bounds(self._slots)
 
     def _judged_pairs(self, skipped: Collection[LinkPair]) -> NDArray[np.intp]:
@@ -138,6 +144,7 @@ class PenetrationProbe:
             self._moved_rows[key] = rows
         if len(rows):
             self._other_boxes[rows] = self.raw.slot_bounds([self._other_slots[i] for i in rows])
+            self._near = None  # gathered from bounds that moved
 
     def check(self, first: bool) -> Iterator[Penetration]:
         """Penetrations now: at the ``first`` configuration of all parts, later only of
@@ -153,30 +160,40 @@ class PenetrationProbe:
     def _world(self, rows: NDArray[np.intp]) -> Iterator[Penetration]:
         if not len(rows) or not self.others:
             return
-        mine = self._boxes_now[rows]
-        overlap = (
-            np.all(
-                (mine[:, None, 0, :] <= self._other_boxes[None, :, 1, :])
-                & (self._other_boxes[None, :, 0, :] <= mine[:, None, 1, :]),
-                axis=2,
-            )
-            & self._world_mask[rows]
+        low, high = self._boxes_now[rows, 0], self._boxes_now[rows, 1]
+        near = self._near_others(low.min(axis=0), high.max(axis=0))
+        if not len(near):
+            return
+        other_low, other_high = self._other_boxes[near, 0], self._other_boxes[near, 1]
+        overlap = (low[:, None, :] <= other_high[None, :, :]) & (
+            other_low[None, :, :] <= high[:, None, :]
         )
-        for r, o in zip(*np.nonzero(overlap), strict=True):
-            i = int(rows[r])
+        overlap = overlap.all(axis=2) & self._world_mask[np.ix_(rows, near)]
+        for r, k in zip(*np.nonzero(overlap), strict=True):
+            i, o = int(rows[r]), int(near[k])
             found = self._judged(
                 self.parts[i], self.others[o], self._slots[i], self._other_slots[o]
             )
             if found is not None:
                 yield found
 
+    def _near_others(self, low: FloatArray, high: FloatArray) -> NDArray[np.intp]:
+        """The others (ascending) whose bounds meet a box holding ``low``..``high``, the
+        moving parts' bounds: any other whose bounds meet a part's is among them."""
+        box = self._near_box
+        if self._near is None or (low < box[0]).any() or (high > box[1]).any():
+            box[0], box[1] = low - NEAR_MARGIN, high + NEAR_MARGIN
+            meets = (self._other_boxes[:, 0] <= box[1]) & (box[0] <= self._other_boxes[:, 1])
+            self._near = np.flatnonzero(meets.all(axis=1))
+        return self._near
+
     def _self(self) -> Iterator[Penetration]:
         """The pairs moving relative to each other (all of them when no groups are given)."""
         pairs = self._self_pairs
         if not len(pairs):
             return
-        a, b = self._boxes_now[pairs[:, 0]], self._boxes_now[pairs[:, 1]]
-        overlap = np.all((a[:, 0] <= b[:, 1]) & (b[:, 0] <= a[:, 1]), axis=1)
+        a, b = self._boxes_now[self._self_a], self._boxes_now[self._self_b]
+        overlap = ((a[:, 0] <= b[:, 1]) & (b[:, 0] <= a[:, 1])).all(axis=1)
         for i, j in pairs[overlap]:
             found = self._judged(self.parts[i], self.parts[j], self._slots[i], self._slots[j])
             if found is not None:
