@@ -88,15 +88,19 @@ class PenetrationProbe:
         self.parts = robot_side_parts(robot, held)
         labels = np.array(groups if groups is not None else range(len(self.parts)), dtype=object)
         self._moving = np.flatnonzero(labels != "") if groups is not None else None
+        self._moving_slots: list[LinkSlot] = []
         floors = {o.name for o in world.objects(type="floor")}
         others = [o.name for o in world.objects() if o.name != robot.name and o.name not in held]
         self.others = [part for o in others for part in _parts_of(self.raw, o)]
         self._slots = self._slots_of(self.parts)
+        if self._moving is not None:
+            self._moving_slots = [self._slots[i] for i in self._moving]
         self._other_slots = self._slots_of(self.others)
         self._other_boxes = self.raw.slot_bounds(self._other_slots)
         self._moved_rows: dict[tuple[tuple[str, str], ...], NDArray[np.intp]] = {}
         self._near: NDArray[np.intp] | None = None  # others whose bounds meet _near_box
         self._near_box = np.zeros((2, 3))
+        self._near_mask = np.zeros((0, 0), dtype=bool)  # _world_mask of the near others
         self._hand_of = _hands(robot.description, held)
         self._world_mask = np.array(
             [
@@ -153,7 +157,9 @@ class PenetrationProbe:
         if rows is None:
             rows = np.arange(len(self.parts))
         if len(rows):
-            self._boxes_now[rows] = self.raw.slot_bounds([self._slots[i] for i in rows])
+            self._boxes_now[rows] = self.raw.slot_bounds(
+                self._moving_slots if rows is self._moving else self._slots
+            )
         yield from self._world(rows)
         yield from self._self()
 
@@ -168,7 +174,7 @@ class PenetrationProbe:
         overlap = (low[:, None, :] <= other_high[None, :, :]) & (
             other_low[None, :, :] <= high[:, None, :]
         )
-        overlap = overlap.all(axis=2) & self._world_mask[np.ix_(rows, near)]
+        overlap = overlap.all(axis=2) & self._near_mask[rows]
         for r, k in zip(*np.nonzero(overlap), strict=True):
             i, o = int(rows[r]), int(near[k])
             found = self._judged(
@@ -185,6 +191,7 @@ class PenetrationProbe:
             box[0], box[1] = low - NEAR_MARGIN, high + NEAR_MARGIN
             meets = (self._other_boxes[:, 0] <= box[1]) & (box[0] <= self._other_boxes[:, 1])
             self._near = np.flatnonzero(meets.all(axis=1))
+            self._near_mask = self._world_mask[:, self._near]
         return self._near
 
     def _self(self) -> Iterator[Penetration]:

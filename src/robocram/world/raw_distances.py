@@ -73,8 +73,12 @@ class RawDistances:
         """(links, 2, 3): :meth:`link_bounds` of the links at ``slots``, low then high."""
         cid = self.world.physics.client()
         aabb = pybullet.getAABB
-        found = [aabb(body, index, physicsClientId=cid) for body, index in slots]
-        return np.array(found, dtype=float).reshape(len(slots), 2, 3)
+        flat: list[float] = []
+        for body, index in slots:
+            low, high = aabb(body, index, physicsClientId=cid)
+            flat += low
+            flat += high
+        return np.array(flat, dtype=float).reshape(len(slots), 2, 3)
 
     def slot_closest(self, a: LinkSlot, b: LinkSlot, reach: float = 0.0) -> LinkGap | None:
         """:meth:`closest` of the links at slots ``a`` and ``b``."""
