@@ -17,6 +17,7 @@ A contact allowed but deeper than its bound is its own kind of finding.
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Collection, Iterable, Iterator, Sequence
 from dataclasses import dataclass
 
@@ -28,12 +29,15 @@ from robocram.robots import LoadedDescription
 from robocram.traces.audit_bounds import AuditBounds
 from robocram.traces.audit_findings import FindingKind
 from robocram.traces.link_adjacency import LinkPair
-from robocram.world import RawDistances, RobotHandle
+from robocram.world import LinkSlot, RawDistances, RobotHandle
 
 FloatArray = NDArray[np.float64]
 # [m] how far apart pairs are asked for: asked for exactly 0, Bullet sometimes reports no
 # points for two penetrating links of one body, so the question reaches a hair farther
 QUERY_REACH = 1e-4
+# [m] how far round the moving parts' bounds the others near them are gathered: a smaller
+# box the parts stay within needs no new gathering (the pairs asked about are the same)
+NEAR_MARGIN = 0.05
 
 
 @dataclass(frozen=True)
@@ -84,10 +88,19 @@ class PenetrationProbe:
         self.parts = robot_side_parts(robot, held)
         labels = np.array(groups if groups is not None else range(len(self.parts)), dtype=object)
         self._moving = np.flatnonzero(labels != "") if groups is not None else None
+        self._moving_slots: list[LinkSlot] = []
         floors = {o.name for o in world.objects(type="floor")}
         others = [o.name for o in world.objects() if o.name != robot.name and o.name not in held]
         self.others = [part for o in others for part in _parts_of(self.raw, o)]
-        self._other_boxes = self._boxes(self.others)
+        self._slots = self._slots_of(self.parts)
+        if self._moving is not None:
+            self._moving_slots = [self._slots[i] for i in self._moving]
+        self._other_slots = self._slots_of(self.others)
+        self._other_boxes = self.raw.slot_bounds(self._other_slots)
+        self._moved_rows: dict[tuple[tuple[str, str], ...], NDArray[np.intp]] = {}
+        self._near: NDArray[np.intp] | None = None  # others whose bounds meet _near_box
+        self._near_box = np.zeros((2, 3))
+        self._near_mask = np.zeros((0, 0), dtype=bool)  # _world_mask of the near others
         self._hand_of = _hands(robot.description, held)
         self._world_mask = np.array(
             [
@@ -98,7 +111,8 @@ class PenetrationProbe:
         ).reshape(len(self.parts), len(self.others))
         pairs = self._judged_pairs(skipped)
         self._self_pairs = pairs[labels[pairs[:, 0]] != labels[pairs[:, 1]]]
-        self._boxes_now = self._boxes(self.parts)
+        self._self_a, self._self_b = self._self_pairs[:, 0].copy(), self._self_pairs[:, 1].copy()
+        self._boxes_now = self.raw.slot_bounds(self._slots)
 
     def _judged_pairs(self, skipped: Collection[LinkPair]) -> NDArray[np.intp]:
         """Pairs of parts (robot links, held objects) judged against each other."""
@@ -113,23 +127,28 @@ class PenetrationProbe:
                 pairs.append((i, j))
         return np.array(pairs, dtype=np.intp).reshape(-1, 2)
 
-    def _boxes(self, parts: Sequence[Part]) -> FloatArray:
-        """(parts, 2, 3): each part's PyBullet bounds, low and high."""
-        boxes = np.zeros((len(parts), 2, 3))
-        by_body: dict[str, list[int]] = {}
-        for i, part in enumerate(parts):
-            by_body.setdefault(part.body, []).append(i)
-        for body, rows in by_body.items():
-            read = self.raw.link_bounds(body, [parts[i].link for i in rows])
-            boxes[rows] = np.array(read, dtype=float)
-        return boxes
+    def _slots_of(self, parts: Sequence[Part]) -> list[LinkSlot]:
+        """Each part's PyBullet address, looked up once for the probe's life."""
+        slots: list[LinkSlot] = []
+        for body, links in itertools.groupby(parts, key=lambda p: p.body):
+            slots += self.raw.slots(body, [p.link for p in links])
+        return slots
 
-    def others_moved(self, bodies: Collection[str]) -> None:
-        """Read again the bounds of ``bodies``' parts: they moved with the robot (a drawer
-        its hand pulls, :class:`~robocram.motion.CarriedJoint`)."""
-        rows = [i for i, part in enumerate(self.others) if part.body in bodies]
-        if rows:
-            self._other_boxes[rows] = self._boxes([self.others[i] for i in rows])
+    def others_moved(self, joints: Collection[tuple[str, str]]) -> None:
+        """Read again the bounds of the parts that ``joints`` (object, joint) move: they
+        moved with the robot (a drawer its hand pulls, :class:`~robocram.motion.CarriedJoint`);
+        the object's other links stay where they were."""
+        key = tuple(sorted(joints))
+        rows = self._moved_rows.get(key)
+        if rows is None:
+            moved = {(o, link) for o, j in key for link in self.raw.links_moved_by(o, j)}
+            rows = np.array(
+                [i for i, p in enumerate(self.others) if (p.body, p.link) in moved], dtype=np.intp
+            )
+            self._moved_rows[key] = rows
+        if len(rows):
+            self._other_boxes[rows] = self.raw.slot_bounds([self._other_slots[i] for i in rows])
+            self._near = None  # gathered from bounds that moved
 
     def check(self, first: bool) -> Iterator[Penetration]:
         """Penetrations now: at the ``first`` configuration of all parts, later only of
@@ -138,42 +157,60 @@ class PenetrationProbe:
         if rows is None:
             rows = np.arange(len(self.parts))
         if len(rows):
-            self._boxes_now[rows] = self._boxes([self.parts[i] for i in rows])
+            self._boxes_now[rows] = self.raw.slot_bounds(
+                self._moving_slots if rows is self._moving else self._slots
+            )
         yield from self._world(rows)
         yield from self._self()
 
     def _world(self, rows: NDArray[np.intp]) -> Iterator[Penetration]:
         if not len(rows) or not self.others:
             return
-        mine = self._boxes_now[rows]
-        overlap = (
-            np.all(
-                (mine[:, None, 0, :] <= self._other_boxes[None, :, 1, :])
-                & (self._other_boxes[None, :, 0, :] <= mine[:, None, 1, :]),
-                axis=2,
-            )
-            & self._world_mask[rows]
+        low, high = self._boxes_now[rows, 0], self._boxes_now[rows, 1]
+        near = self._near_others(low.min(axis=0), high.max(axis=0))
+        if not len(near):
+            return
+        other_low, other_high = self._other_boxes[near, 0], self._other_boxes[near, 1]
+        overlap = (low[:, None, :] <= other_high[None, :, :]) & (
+            other_low[None, :, :] <= high[:, None, :]
         )
-        for r, o in zip(*np.nonzero(overlap), strict=True):
-            found = self._judged(self.parts[rows[r]], self.others[o])
+        overlap = overlap.all(axis=2) & self._near_mask[rows]
+        for r, k in zip(*np.nonzero(overlap), strict=True):
+            i, o = int(rows[r]), int(near[k])
+            found = self._judged(
+                self.parts[i], self.others[o], self._slots[i], self._other_slots[o]
+            )
             if found is not None:
                 yield found
+
+    def _near_others(self, low: FloatArray, high: FloatArray) -> NDArray[np.intp]:
+        """The others (ascending) whose bounds meet a box holding ``low``..``high``, the
+        moving parts' bounds: any other whose bounds meet a part's is among them."""
+        box = self._near_box
+        if self._near is None or (low < box[0]).any() or (high > box[1]).any():
+            box[0], box[1] = low - NEAR_MARGIN, high + NEAR_MARGIN
+            meets = (self._other_boxes[:, 0] <= box[1]) & (box[0] <= self._other_boxes[:, 1])
+            self._near = np.flatnonzero(meets.all(axis=1))
+            self._near_mask = self._world_mask[:, self._near]
+        return self._near
 
     def _self(self) -> Iterator[Penetration]:
         """The pairs moving relative to each other (all of them when no groups are given)."""
         pairs = self._self_pairs
         if not len(pairs):
             return
-        a, b = self._boxes_now[pairs[:, 0]], self._boxes_now[pairs[:, 1]]
-        overlap = np.all((a[:, 0] <= b[:, 1]) & (b[:, 0] <= a[:, 1]), axis=1)
+        a, b = self._boxes_now[self._self_a], self._boxes_now[self._self_b]
+        overlap = ((a[:, 0] <= b[:, 1]) & (b[:, 0] <= a[:, 1])).all(axis=1)
         for i, j in pairs[overlap]:
-            found = self._judged(self.parts[i], self.parts[j])
+            found = self._judged(self.parts[i], self.parts[j], self._slots[i], self._slots[j])
             if found is not None:
                 yield found
 
-    def _judged(self, mine: Part, other: Part) -> Penetration | None:
-        """The pair's penetration if deeper than it may be."""
-        gap = self.raw.closest(mine.body, mine.link, other.body, other.link, QUERY_REACH)
+    def _judged(
+        self, mine: Part, other: Part, mine_at: LinkSlot, other_at: LinkSlot
+    ) -> Penetration | None:
+        """The pair's penetration if deeper than it may be (``*_at``: their slots)."""
+        gap = self.raw.slot_closest(mine_at, other_at, QUERY_REACH)
         if gap is None or -gap.distance <= self.bounds.penetration:
             return None  # within the general bound: never a finding, allowed or not
         depth = -gap.distance

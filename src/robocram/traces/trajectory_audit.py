@@ -251,7 +251,7 @@ class _RunAudit:
         probe = PenetrationProbe(
             handle, held, allowances, self.bounds, self.skipped[robot], groups
         )  # fmt: skip
-        bodies = {c.obj for c in carried}
+        joints = {(c.obj, c.joint) for c in carried}
         for k, (t, positions) in enumerate(samples):
             if positions is not None:
                 set_robot_joints(handle, positions)
@@ -260,7 +260,7 @@ class _RunAudit:
                 for joint in carried:
                     value = joint.at(_hand_share(handle, joint, share))
                     self.world.set_joint_states(joint.obj, {joint.joint: value})
-                probe.others_moved(bodies)
+                probe.others_moved(joints)
             self.configurations += 1
             for p in probe.check(first=k == 0):
                 self.findings.append(place.finding(p.kind, t, p.what, p.depth, p.bound))

@@ -26,7 +26,7 @@ from robocram.world.errors import (
 from robocram.world.joint_state import ClampedJoint, JointLimits
 from robocram.world.obstacle_boxes import ObstacleBoxes
 from robocram.world.planning_area import AREA_MARGIN, PlanningArea
-from robocram.world.raw_distances import LinkGap, RawDistances
+from robocram.world.raw_distances import LinkGap, LinkSlot, RawDistances
 from robocram.world.ray_hit import RayHit
 from robocram.world.robot_handle import RobotHandle
 from robocram.world.versions import BodyStamps, Stamp, Versions, body_stamps, changed_bodies
@@ -49,6 +49,7 @@ __all__ = [
     "DuplicateObjectError",
     "JointLimits",
     "LinkGap",
+    "LinkSlot",
     "MeshSpec",
     "NoCameraError",
     "NotARobotError",
