@@ -257,3 +257,23 @@ def test_a_torso_blocked_by_a_board_in_the_world_sends_nothing(
     assert driver.received_goals() == []
     assert any(other == "board" for _, other in failure.value.colliding_pairs or ())
     assert reached == pytest.approx(0.0, abs=1e-9)
+
+
+def test_the_pr2_turns_its_head_to_a_configuration_by_a_checked_trajectory(
+    roscore: Roscore, drivers: DriverPool, tmp_path: Path
+) -> None:
+    sent: list[JointTrajectory] = []
+    goal = {"head_pan_joint": 0.4, "head_tilt_joint": 0.3}
+    with (
+        drivers(goal_log=tmp_path / "goals.jsonl") as driver,
+        ros_robot("pr2", roscore.uri, world=tabletop_scene("pr2").world) as run,
+        trajectory_listener(sent.append),
+    ):
+        perform(a.motion(type="looking", configuration=goal))
+        reached = run.environment.client.joint_states()
+    (head,) = sent
+    assert head.kind == "head"
+    (head_goal,) = driver.received_goals(HEAD)
+    _assert_same(head_goal, head)
+    for joint, value in goal.items():
+        assert reached[joint] == pytest.approx(value, abs=0.02)  # the goal tolerance

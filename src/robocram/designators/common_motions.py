@@ -10,7 +10,9 @@ Motion ``type`` (properties) -> command, resource:
 
 - going (target) -> ``move_base(Pose)``, navigation
 - moving-torso (joint_angle) -> ``move_torso(Angle)``, torso
-- looking (target / frame / direction) -> ``move_head(pose | frame | direction, X)``, ptu
+- looking (target / frame / direction / configuration) ->
+  ``move_head(pose | frame | direction | joints, X)``, ptu (``joints``: the head's
+  ``{joint: value}`` or ``[[joint, value], ...]``, e.g. the neck's parking configuration)
 - detecting (object) -> ``detect(ObjectDesig)``; inspecting (object) ->
   ``inspect(ObjectDesig)``, perception (inspecting looks at one object for all it shows)
 - opening / closing / gripping (gripper[, effort]) ->

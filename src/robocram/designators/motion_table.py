@@ -105,12 +105,19 @@ def _moving_arm_joints() -> MotionType:
 
 
 def _looking() -> MotionType:
+    """Looking at a target, a frame or along a direction; or turning the head's joints to a
+    configuration (its parking one, where the neck would be in the way of the base)."""
     return MotionType(
         "looking",
-        (_target("target"), _atom("frame"), _DIRECTION),
+        (_target("target"), _atom("frame"), _DIRECTION, _configuration("configuration")),
         tuple(
             Command("move_head", (Atom(mode), key), goal=(1,))
-            for mode, key in (("pose", "target"), ("frame", "frame"), ("direction", "direction"))
+            for mode, key in (
+                ("pose", "target"),
+                ("frame", "frame"),
+                ("direction", "direction"),
+                ("joints", "configuration"),
+            )
         ),
         "ptu",
         Answer.GOAL,

@@ -80,6 +80,20 @@ def look_ahead() -> bool:
     return True
 
 
+def park_neck() -> bool:
+    """Turn the neck (a pan-tilt head or a neck arm) to its parking configuration from the
+    KB, as the arms are parked; whether it turned (False: it has none, or the turn failed)."""
+    parking = current_robot().neck_parking()
+    if parking is None or not parking.joint_states:
+        return False
+    states = [[joint, value] for joint, value in parking.joint_states]
+    try:
+        perform(a.motion(type="looking", configuration=states))
+    except PlanFailure:
+        return False
+    return True
+
+
 def _park(robot: KnownRobot, arm: str, states: list[list[object]]) -> None:
     """Park ``arm``; when its parking pose would hit the head, still turned down at what the
     robot looked at (an HSR's, with its lift up), look ahead and try again; when it would

@@ -10,7 +10,7 @@ hold the handle all the way gives the next one.
 from __future__ import annotations
 
 import contextlib
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
 from robocram.execution.failures import (
@@ -25,7 +25,7 @@ from robocram.knowledge.scene_predicates import CONTAINER, CONTAINER_FRONT, CONT
 from robocram.knowledge.world_predicates import OBJECT_POSE
 from robocram.logic import current_kb
 from robocram.plans.attempt_log import AttemptLog
-from robocram.plans.basic_actions import look_ahead, move_torso, navigate, park_arms
+from robocram.plans.basic_actions import look_ahead, move_torso, navigate, park_arms, park_neck
 from robocram.plans.containers import Container, close_container, container, open_container
 from robocram.plans.environment_links import environment_link_pose
 from robocram.plans.errors import PlanSetupError
@@ -104,7 +104,11 @@ def open_from_front(
     ahead and the stands are tried once more: a Stretch's lift, rising to the fridge's
     handle, met its head still turned down at a cutlery drawer; a Boxy's neck, still
     turned to where it last looked, put its camera into the fridge at every stand in
-    front of it (:func:`_neck_in_the_way`).
+    front of it (:func:`_neck_in_the_way`). When that did not help either, the neck is
+    parked (its parking configuration from the KB) and the stands are tried once more:
+    a Boxy's neck, looking ahead from where clearing the table left it, still put its
+    links into the fridge, the counter or the cutlery unit at every stand; parked, two
+    stands were free.
 
     Raises:
         PlanFailure: the last failure, when no stand within ``retries`` worked.
@@ -114,8 +118,18 @@ def open_from_front(
     try:
         return _open_from_stands(part, log, retries)
     except (EnvironmentManipulationImpossible, NavigationPoseUnreachable) as failure:
-        if not _neck_in_the_way(failure) or not _looked_ahead():
+        if not _neck_in_the_way(failure):
             raise
+        last: PlanFailure = failure
+    if _neck_turned(look_ahead):
+        try:
+            return _open_from_stands(part, log, retries)
+        except (EnvironmentManipulationImpossible, NavigationPoseUnreachable) as failure:
+            if not _neck_in_the_way(failure):
+                raise
+            last = failure
+    if not _neck_turned(park_neck):
+        raise last
     return _open_from_stands(part, log, retries)
 
 
@@ -186,14 +200,14 @@ def _open_enough(part: Container, failure: PlanFailure) -> bool:
     return abs(failure.reached) >= OPEN_ENOUGH * abs(part.opened) > 0.0
 
 
-def _looked_ahead() -> bool:
-    """Look ahead; whether that moved the neck (it was turned away) by more than
-    :data:`TURNED` on some joint."""
+def _neck_turned(turn: Callable[[], bool]) -> bool:
+    """Run ``turn`` (look ahead, park the neck); whether it turned the neck by more than
+    :data:`TURNED` on some joint (it was turned away)."""
     robot = current_robot()
     row = rp.ROBOT_NECK_JOINTS.first(current_kb(), robot=robot.name)
     joints = tuple(row.joints) if row is not None else ()
     before = [robot.joint_position(joint) for joint in joints]
-    if not joints or not look_ahead():
+    if not joints or not turn():
         return False
     after = [robot.joint_position(joint) for joint in joints]
     return any(

@@ -60,6 +60,10 @@ class KnownRobot:
         """The parking configuration of ``arm``, or None when the KB has none."""
         return rp.ROBOT_ARMS_PARKING_JOINT_STATES.first(current_kb(), robot=self.name, arm=arm)
 
+    def neck_parking(self) -> rp.NeckParkingPose | None:
+        """The neck's parking configuration, or None when the KB has none."""
+        return rp.ROBOT_NECK_PARKING_JOINT_STATES.first(current_kb(), robot=self.name)
+
     def torso_limit(self, which: Literal["upper", "lower"]) -> float | None:
         """The ``upper`` or ``lower`` limit [m | rad] of the torso joint; None without a torso."""
         kb = current_kb()

@@ -6,7 +6,8 @@ grounds for its resource, one method per command, dispatched by
 
 - navigation: ``move_base(Pose)``; torso: ``move_torso(Value)``
 - ptu: ``move_head(pose, P)``, ``move_head(frame, F)``, ``move_head(direction, D)`` where
-  ``D`` is a vector in the robot's base frame (or a PoseStamped whose position is one)
+  ``D`` is a vector in the robot's base frame (or a PoseStamped whose position is one),
+  ``move_head(joints, C)``: the head's joints to ``C`` (its parking configuration)
 - perception: ``detect(ObjectDesig)`` and ``inspect(ObjectDesig)`` -> the perceived
   designator (the simulated camera reports all it knows of an object at once, so
   inspecting answers what detecting does)
@@ -26,8 +27,8 @@ Arm and gripper words are the robot's arm names or the sides ``left``/``right``
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-from typing import ClassVar
+from collections.abc import Mapping, Sequence
+from typing import ClassVar, cast
 
 import numpy as np
 
@@ -40,6 +41,7 @@ from robocram.projection.cutting import cut
 from robocram.projection.errors import ProjectionError
 from robocram.projection.flying import fly, sense_distance
 from robocram.projection.gripper import close_gripper, grip, open_gripper, set_gripper
+from robocram.projection.head_joints import turn_head_joints
 from robocram.projection.navigation import drive
 from robocram.projection.neck import look_at
 from robocram.projection.perception import detect
@@ -87,24 +89,29 @@ class TorsoPM(ProjectionProcessModule):
 
 
 class PtuPM(ProjectionProcessModule):
-    """The head (pan-tilt unit or neck arm): ``move_head(pose | frame | direction, X)``."""
+    """The head (pan-tilt unit or neck arm): ``move_head(pose | frame | direction | joints, X)``."""
 
     name = "projection_ptu"
     resource = "ptu"
 
-    def move_head(self, mode: str, goal: Target | str) -> dict[str, float]:
-        """Point the camera at a pose, a frame, or along a direction."""
+    def move_head(self, mode: str, goal: object) -> dict[str, float]:
+        """Point the camera at a pose, a frame, or along a direction; or turn the head's
+        joints to a configuration (``joints``)."""
         robot = self.robot
+        if mode == "joints":
+            return turn_head_joints(robot, goal)
         if mode == "pose":
-            if isinstance(goal, str):
+            if isinstance(goal, str | Mapping):
                 raise ProjectionError(f"looking at a pose needs a pose, got {goal!r}")
-            point = robot.in_map(goal).position
+            point = robot.in_map(cast(Target, goal)).position
         elif mode == "frame":
             point = robot.frame_pose(str(goal)).position
         elif mode == "direction":
             point = self._along(goal)
         else:
-            raise ProjectionError(f"move_head mode {mode!r} is none of pose, frame, direction")
+            raise ProjectionError(
+                f"move_head mode {mode!r} is none of pose, frame, direction, joints"
+            )
         return look_at(robot, point)
 
     def _along(self, direction: object) -> Vector3:

@@ -77,3 +77,15 @@ def with_looking(desc: RobotDescription, resources: tuple[str, ...]) -> tuple[st
         return resources  # a flying robot turns itself to look
     at = resources.index("perception") + 1
     return (*resources[:at], "ptu", *resources[at:])
+
+
+def head_joints(desc: RobotDescription) -> set[str]:
+    """The joints a ``looking`` motion may set by value (its ``configuration``): a pan-tilt
+    head's, a neck arm's and those of the neck's parking configuration."""
+    joints = set(desc.neck_parking)
+    if desc.pan_tilt is not None:
+        joints |= {desc.pan_tilt.pan_joint, desc.pan_tilt.tilt_joint}
+    neck = desc.arms.get(desc.neck_arm) if desc.neck_arm is not None else None
+    if neck is not None:
+        joints |= set(neck.joints)
+    return joints

@@ -23,6 +23,8 @@ from robocram.execution.failures import (
     TorsoPathBlocked,
 )
 from robocram.logic import Value
+from robocram.motion.tool_goal import joint_values
+from robocram.robots.looking_means import head_joints
 from robocram.ros.errors import RosCommandError, RosUsageError
 from robocram.ros.gripper_goal import move_gripper
 from robocram.ros.head_aim import pan_tilt_towards
@@ -101,7 +103,8 @@ class TorsoPM(RosProcessModule):
 
 
 class PtuPM(RosProcessModule):
-    """The head: ``move_head(pose | frame | direction, X)`` over PointHead or pan/tilt joints."""
+    """The head: ``move_head(pose | frame | direction, X)`` over PointHead or pan/tilt joints;
+    ``move_head(joints, C)``: the head's joints to ``C`` by a timed trajectory."""
 
     name = "ros_ptu"
     resource = "ptu"
@@ -126,8 +129,11 @@ class PtuPM(RosProcessModule):
         raise RosCommandError(f"move_head mode {mode!r} is none of pose, frame, direction")
 
     def move_head(self, mode: str, goal: Value) -> dict[str, float]:
-        """Point the camera at a pose, a frame or along a direction; return pan and tilt."""
+        """Point the camera at a pose, a frame or along a direction; return pan and tilt.
+        ``joints``: turn the head's joints to ``goal``; return their values reached."""
         client = self.client
+        if mode == "joints":
+            return self._turn_joints(goal)
         target = self._target(mode, goal)
         failure = lambda text: PtuGoalNotReached(text, target=target)  # noqa: E731
         interface = client.config.action("head")
@@ -159,6 +165,29 @@ class PtuPM(RosProcessModule):
         pt = client.desc.pan_tilt
         joints = client.joint_states()
         return {j: joints[j] for j in ((pt.pan_joint, pt.tilt_joint) if pt else ())}
+
+    def _turn_joints(self, configuration: object) -> dict[str, float]:
+        """Send the head's joints to ``configuration`` (the neck's parking configuration)."""
+        client = self.client
+        values = joint_values(configuration)
+        allowed = head_joints(client.desc)
+        unknown = sorted(set(values) - allowed)
+        if unknown:
+            raise RosCommandError(
+                f"joints {unknown} do not turn {client.name}'s head; give the head's joints "
+                f"{sorted(allowed)}"
+            )
+        failure = lambda text: PtuGoalNotReached(text)  # noqa: E731
+        try:
+            client.move_joints("head", values, failure)
+        except ManipulationPathBlocked as blocked:  # the world given to ros_robot
+            raise PtuPathBlocked(
+                f"{client.name} cannot turn its head to {values}: {blocked}; nothing was sent",
+                colliding_pairs=blocked.colliding_pairs,
+                path_fraction=blocked.path_fraction,
+            ) from blocked
+        joints = client.joint_states()
+        return {j: joints[j] for j in values}
 
 
 class PerceptionPM(RosProcessModule):
