@@ -5,9 +5,6 @@ the household left (tests/data/boxy_cup_put.json); the outcome is judged by raw 
 
 from __future__ import annotations
 
-import json
-from pathlib import Path
-
 import pybullet
 import pytest
 
@@ -15,32 +12,18 @@ from robocram.execution.failures import NavigationPathBlocked
 from robocram.plans.basic_actions import navigate
 from robocram.plans.empty_hand_up import navigate_empty_hand_up
 from robocram.projection import simulated_robot
-from robocram.scenes.breakfast_scene import breakfast_scene
 from robocram.tf import Pose, PoseStamped
 from robocram.world import World
+from tests.plans.household_state import rebuilt, saved_pose
 
-STATE = Path(__file__).resolve().parents[1] / "data" / "boxy_cup_put.json"
 LEFT_FINGERS = ("left_gripper_finger_left_link", "left_gripper_finger_right_link")
-
-
-def _pose(entry: list[list[float]]) -> Pose:
-    return Pose(tuple(entry[0]), tuple(entry[1]))
 
 
 def _scene() -> tuple[World, str, Pose]:
     """The breakfast kitchen with Boxy, the table and its hands as the household had them;
     the stand the drives went to."""
-    state = json.loads(STATE.read_text())
-    scene = breakfast_scene("boxy")
-    world = scene.world
-    world.set_joint_states("kitchen", state["kitchen_joints"])
-    world.set_pose(scene.robot, _pose(state["base"]))
-    world.set_joint_states(scene.robot, state["joints"])
-    for name, entry in state["things"].items():
-        world.set_pose(name, _pose(entry))
-    for name, link in state["held"].items():
-        world.attach(name, scene.robot, link)
-    return world, scene.robot, _pose(state["stand"])
+    household = rebuilt("boxy", "boxy_cup_put.json")
+    return household.world, household.robot, saved_pose(household.state["stand"])
 
 
 def _bullet_pose(world: World, body: str) -> tuple[tuple[float, ...], tuple[float, ...]]:

@@ -7,9 +7,6 @@ the outcome is judged by raw PyBullet."""
 
 from __future__ import annotations
 
-import json
-from pathlib import Path
-
 import pybullet
 import pytest
 
@@ -20,28 +17,14 @@ from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.container_access import open_from_front
 from robocram.projection import simulated_robot
 from robocram.robots.builtin import boxy
-from robocram.scenes.breakfast_scene import breakfast_scene
-from robocram.tf import Pose
 from robocram.world import World
-
-STATE = Path(__file__).resolve().parents[1] / "data" / "boxy_fridge_neck.json"
-
-
-def _pose(entry: list[list[float]]) -> Pose:
-    return Pose(tuple(entry[0]), tuple(entry[1]))
+from tests.plans.household_state import rebuilt
 
 
 def _scene() -> tuple[World, str]:
     """The breakfast kitchen with Boxy, its neck and the things as the household had them."""
-    state = json.loads(STATE.read_text())
-    scene = breakfast_scene("boxy")
-    world = scene.world
-    world.set_joint_states("kitchen", state["kitchen_joints"])
-    world.set_pose(scene.robot, _pose(state["base"]))
-    world.set_joint_states(scene.robot, state["joints"])
-    for name, entry in state["things"].items():
-        world.set_pose(name, _pose(entry))
-    return world, scene.robot
+    household = rebuilt("boxy", "boxy_fridge_neck.json")
+    return household.world, household.robot
 
 
 def _bullet_joints(world: World, body: str) -> dict[str, float]:
