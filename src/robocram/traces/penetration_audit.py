@@ -29,7 +29,7 @@ from robocram.robots import LoadedDescription
 from robocram.traces.audit_bounds import AuditBounds
 from robocram.traces.audit_findings import FindingKind
 from robocram.traces.link_adjacency import LinkPair
-from robocram.world import LinkSlot, RawDistances, RobotHandle
+from robocram.world import Attachment, LinkSlot, RawDistances, RobotHandle
 
 FloatArray = NDArray[np.float64]
 # [m] how far apart pairs are asked for: asked for exactly 0, Bullet sometimes reports no
@@ -98,6 +98,8 @@ class PenetrationProbe:
         self._other_slots = self._slots_of(self.others)
         self._other_boxes = self.raw.slot_bounds(self._other_slots)
         self._moved_rows: dict[tuple[tuple[str, str], ...], NDArray[np.intp]] = {}
+        # what hangs from what: nothing is attached or let go during one trajectory
+        self._attachments = tuple(world.bodies.all_attachments())
         self._near: NDArray[np.intp] | None = None  # others whose bounds meet _near_box
         self._near_box = np.zeros((2, 3))
         self._near_mask = np.zeros((0, 0), dtype=bool)  # _world_mask of the near others
@@ -136,14 +138,22 @@ class PenetrationProbe:
 
     def others_moved(self, joints: Collection[tuple[str, str]]) -> None:
         """Read again the bounds of the parts that ``joints`` (object, joint) move: they
-        moved with the robot (a drawer its hand pulls, :class:`~robocram.motion.CarriedJoint`);
-        the object's other links stay where they were."""
+        moved with the robot (a drawer its hand pulls, :class:`~robocram.motion.CarriedJoint`),
+        and so did the bodies riding on them (spoons in the drawer, attached to it); the
+        object's other links stay where they were."""
         key = tuple(sorted(joints))
         rows = self._moved_rows.get(key)
         if rows is None:
             moved = {(o, link) for o, j in key for link in self.raw.links_moved_by(o, j)}
+            moved |= {(o, link) for o, j in key for link in _child_link(self.raw, o, j)}
+            riders = _riders(self._attachments, moved)
             rows = np.array(
-                [i for i, p in enumerate(self.others) if (p.body, p.link) in moved], dtype=np.intp
+                [
+                    i
+                    for i, p in enumerate(self.others)
+                    if (p.body, p.link) in moved or p.body in riders
+                ],
+                dtype=np.intp,
             )
             self._moved_rows[key] = rows
         if len(rows):
@@ -254,6 +264,27 @@ def robot_side_parts(robot: RobotHandle, held: Iterable[str]) -> list[Part]:
 def _parts_of(raw: RawDistances, body: str) -> list[Part]:
     links = raw.collision_links(body)
     return [Part(body, link, only=len(links) == 1) for link in links]
+
+
+def _child_link(raw: RawDistances, obj: str, joint: str) -> list[str]:
+    """The link ``joint`` of ``obj`` moves directly (none if no such joint): what rides on
+    a drawer is attached to it, shapes or not (``trajectory_audit.riding``)."""
+    handle = raw.world.object(obj)
+    index = handle.joint_index.get(joint)
+    return [name for name, i in handle.link_index.items() if index is not None and i == index]
+
+
+def _riders(attachments: Collection[Attachment], moved: Collection[tuple[str, str]]) -> set[str]:
+    """The bodies hanging from a ``moved`` (body, link), or from a body that does."""
+    riders: set[str] = set()
+    grew = True
+    while grew:
+        grew = False
+        for a in attachments:
+            if a.obj not in riders and (a.robot in riders or (a.robot, a.link) in moved):
+                riders.add(a.obj)
+                grew = True
+    return riders
 
 
 def _side(part: Part, robot_name: str) -> str:
