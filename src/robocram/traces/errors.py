@@ -159,3 +159,16 @@ class TraceStateError(TraceError, RuntimeError):
 
     summary = "the trace store was used out of order"
     hint = "the message says what must happen first"
+
+
+class SceneFileMissing(TraceError):  # noqa: N818 - reads as what is missing
+    """A stored scene's body was loaded from a mesh or URDF file that is not on this
+    machine, neither in the installed robocram nor at the path it ran with."""
+
+    def __init__(self, body: str, path: Path) -> None:
+        super().__init__(
+            f"body {body!r} of this trace was loaded from {path}, which is not there (nor in "
+            "the installed robocram's package): put the file back at that path, or trace "
+            "the run again"
+        )
+        self.body, self.path = body, path

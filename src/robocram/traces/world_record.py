@@ -13,12 +13,12 @@ from __future__ import annotations
 import json
 from collections.abc import Collection, Mapping
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Any
 
 from sqlalchemy.orm import Session
 
 from robocram.tf import Pose
+from robocram.traces.body_files import found_file, stored_file
 from robocram.traces.database import TraceDatabase
 from robocram.traces.errors import TraceError
 from robocram.traces.robot_model_record import description_row, urdf_digest
@@ -175,10 +175,10 @@ def body_recipe(obj: Any) -> BodyRecipe:
         recipe["shape"] = {"shape": spec.shape, "size": spec.size, "mass": spec.mass}
         recipe["shape"]["color"] = spec.color
     elif isinstance(spec, MeshSpec):
-        recipe["mesh"] = {"path": str(spec.path), "scale": spec.scale, "mass": spec.mass}
+        recipe["mesh"] = stored_file(spec.path) | {"scale": spec.scale, "mass": spec.mass}
         recipe["mesh"]["color"] = spec.color
     elif isinstance(spec, UrdfSpec):
-        recipe["urdf"] = {"path": str(spec.path), "fixed_base": spec.fixed_base}
+        recipe["urdf"] = stored_file(spec.path) | {"fixed_base": spec.fixed_base}
         recipe["urdf"] |= {"scale": spec.scale, "mass": spec.mass}
     return recipe
 
@@ -223,9 +223,9 @@ def add_body(
     elif "mesh" in recipe:
         m = recipe["mesh"]
         world.add_object(
-            name, kind, MeshSpec(Path(m["path"]), m["scale"], m["mass"], tuple(m["color"]))
+            name, kind, MeshSpec(found_file(name, m), m["scale"], m["mass"], tuple(m["color"]))
         )
     elif "urdf" in recipe:
         u = recipe["urdf"]
-        urdf = UrdfSpec(Path(u["path"]), u["fixed_base"], u["scale"], u["mass"])
+        urdf = UrdfSpec(found_file(name, u), u["fixed_base"], u["scale"], u["mass"])
         world.add_object(name, kind, urdf)
