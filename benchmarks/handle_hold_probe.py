@@ -1,12 +1,13 @@
 """Where a zoo robot's hold of the kitchen bowl drawer's handle fails: reach or collision.
 
 Run: ``.venv/bin/python benchmarks/handle_hold_probe.py NAME [--arm right] [--back 0.6 0.45]
-[--pitch 0 45 90] [--along -0.035 0 0.035] [--travel 0.15] [--restarts 30]``.
+[--pitch 0 45 90] [--along -0.035 0 0.035] [--out 0] [--travel 0.15] [--restarts 30]``.
 
 The robot (a name of ``robot_zoo.CORPUS``, drafted as there) stands facing the drawer,
 ``back`` [m] from its handle, the arm's shoulder in line with it, its arms parked, the
 fingers open. Each hold frame (``along`` [m] along the bar from its middle, turned down by
-``pitch`` [degrees] as ``motion.part_path.from_above`` does) is asked of IK with each grasp
+``pitch`` [degrees] as ``motion.part_path.from_above`` does, the tool ``out`` [m] back
+along the approach: a shallower hold) is asked of IK with each grasp
 roll as opening the drawer asks it: the hand may touch the handle only, the base free
 within ``travel`` [m] (rad: 3x). A line says whether IK held it, how far its best missed,
 how many solutions met something and the first pair. Then IK without the collision check:
@@ -23,15 +24,17 @@ import math
 import warnings
 from pathlib import Path
 
+import numpy as np
 from robot_zoo import CORPUS, _draft
 
 from robocram.costmaps.grasps import shoulder_offset
+from robocram.grasping import palm_hold
 from robocram.kinematics import IKResult, PlanarBase, solve_ik
 from robocram.kinematics.ik_options import IKOptions
 from robocram.motion.part_path import ROLLS, from_above, pull_frame
 from robocram.projection import ProjectedRobot
 from robocram.projection.arm import collision_check
-from robocram.projection.articulation import _holding, approach_axis
+from robocram.projection.articulation import HANDLE_HALF_WIDTH, _holding, approach_axis
 from robocram.projection.gripper import open_gripper
 from robocram.projection.navigation import moved_base
 from robocram.scenes import kitchen_scene
@@ -49,6 +52,7 @@ def main() -> None:
     parser.add_argument("--back", type=float, nargs="+", default=[0.6, 0.45])
     parser.add_argument("--pitch", type=float, nargs="+", default=[0.0, 45.0, 90.0])
     parser.add_argument("--along", type=float, nargs="+", default=[-0.035, 0.0, 0.035])
+    parser.add_argument("--out", type=float, nargs="+", default=[0.0])
     parser.add_argument("--travel", type=float, default=0.15)
     parser.add_argument("--restarts", type=int, default=30)
     args = parser.parse_args()
@@ -83,23 +87,26 @@ def _probe(
     robot: ProjectedRobot, args: argparse.Namespace, back: float, travel: PlanarBase
 ) -> None:
     world, arm, handle = robot.world, args.arm, f"{DRAWER}_handle"
-    axis = approach_axis(robot, arm)
+    palm = palm_hold(robot.description, arm, HANDLE_HALF_WIDTH)  # as move_part holds it
+    axis = approach_axis(robot, arm) if palm is None else np.asarray(palm[0])
     pull = pull_frame(world, "kitchen", f"{DRAWER}_joint", handle)
     check = collision_check(robot, arm, "allow_hand", f"kitchen/{handle}")
     seed = world.joint_states(robot.name)
     for degrees in args.pitch:
         frame = from_above(pull, math.radians(degrees)) if degrees else pull
-        for along in args.along:
+        for along, out in ((a, o) for a in args.along for o in args.out):
             for roll in ROLLS:
-                target = world.link_pose("kitchen", handle) * Pose((0.0, along, 0.0)) * frame
-                in_base = robot.base_pose().inverse() * target * _holding(axis, roll, None)
+                on_bar = world.link_pose("kitchen", handle) * Pose((0.0, along, 0.0))
+                target = on_bar * frame * Pose((out, 0.0, 0.0))
+                in_base = robot.base_pose().inverse() * target * _holding(axis, roll, palm)
                 options = IKOptions(base=travel, max_restarts=args.restarts)
                 held = solve_ik(robot.description, arm, in_base, seed=seed, options=options,
                                 collision_check=check)  # fmt: skip
                 free = solve_ik(robot.description, arm, in_base, seed=seed, options=options)
                 pair = held.colliding_pairs[0] if held.colliding_pairs else ("", "")
                 print(
-                    f"back {back:.2f} pitch {degrees:4.0f} along {along:+.3f} roll {roll:+.2f}: "
+                    f"back {back:.2f} pitch {degrees:4.0f} along {along:+.3f} out {out:.3f} "
+                    f"roll {roll:+.2f}: "
                     f"held {int(held.success)} miss {held.position_error * 1000:5.1f} mm "
                     f"met {held.rejected_in_collision:3d} {pair[0]}/{pair[1]}; "
                     f"unchecked: {_deepest(robot, free)}",
