@@ -9,7 +9,7 @@ fingers open. Each hold frame (``along`` [m] along the bar from its middle, turn
 ``pitch`` [degrees] as ``motion.part_path.from_above`` does, the tool ``out`` [m] back
 along the approach: a shallower hold) is asked of IK with each grasp
 roll as opening the drawer asks it: the hand may touch the handle only, the base free
-within ``travel`` [m] (rad: 3x). A line says whether IK held it, how far its best missed,
+within ``travel`` [m] (rad: 3x). A line says whether IK held it, how far its best missed (mm, rad),
 how many solutions met something and the first pair. Then IK without the collision check:
 how deep the robot's links then go into the kitchen other than the handle, so a hold
 refused only by a collision shows as such. Why it is kept: TALOS's miss of 2-4 mm looked
@@ -37,6 +37,7 @@ from robocram.projection.arm import collision_check
 from robocram.projection.articulation import HANDLE_HALF_WIDTH, _holding, approach_axis
 from robocram.projection.gripper import open_gripper
 from robocram.projection.navigation import moved_base
+from robocram.projection.suction import on_the_face
 from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
@@ -92,8 +93,12 @@ def _probe(
     pull = pull_frame(world, "kitchen", f"{DRAWER}_joint", handle)
     check = collision_check(robot, arm, "allow_hand", f"kitchen/{handle}")
     seed = world.joint_states(robot.name)
+    gripper = robot.arm(arm).gripper
+    suction = gripper is not None and gripper.is_suction
     for degrees in args.pitch:
         frame = from_above(pull, math.radians(degrees)) if degrees else pull
+        if suction:  # its frame on the face it touches, as handle_holds puts it
+            frame = on_the_face(robot, "kitchen", handle, frame)
         for along, out in ((a, o) for a in args.along for o in args.out):
             for roll in ROLLS:
                 on_bar = world.link_pose("kitchen", handle) * Pose((0.0, along, 0.0))
@@ -108,6 +113,7 @@ def _probe(
                     f"back {back:.2f} pitch {degrees:4.0f} along {along:+.3f} out {out:.3f} "
                     f"roll {roll:+.2f}: "
                     f"held {int(held.success)} miss {held.position_error * 1000:5.1f} mm "
+                    f"{held.orientation_error:.2f} rad "
                     f"met {held.rejected_in_collision:3d} {pair[0]}/{pair[1]}; "
                     f"unchecked: {_deepest(robot, free)}",
                     flush=True,
@@ -118,7 +124,8 @@ def _deepest(robot: ProjectedRobot, result: IKResult) -> str:
     """How deep [mm] the robot, put where ``result`` says, goes into the kitchen other than
     the handle, and between which links; then put back."""
     if not result.success:
-        return f"no solution ({result.position_error * 1000:.1f} mm)"
+        miss = result.position_error * 1000
+        return f"no solution ({miss:.1f} mm, {result.orientation_error:.2f} rad)"
     world = robot.world
     base, joints = robot.base_pose(), world.joint_states(robot.name)
     try:
