@@ -1,0 +1,152 @@
+"""Where a zoo robot's hold of the kitchen bowl drawer's handle fails: reach or collision.
+
+Run: ``.venv/bin/python benchmarks/handle_hold_probe.py NAME [--arm right] [--back 0.6 0.45]
+[--pitch 0 45 90] [--along -0.035 0 0.035] [--out 0] [--travel 0.15] [--restarts 30]``.
+
+The robot (a name of ``robot_zoo.CORPUS``, drafted as there) stands facing the drawer,
+``back`` [m] from its handle, the arm's shoulder in line with it, its arms parked, the
+fingers open. Each hold frame (``along`` [m] along the bar from its middle, turned down by
+``pitch`` [degrees] as ``motion.part_path.from_above`` does, the tool ``out`` [m] back
+along the approach: a shallower hold) is asked of IK with each grasp
+roll as opening the drawer asks it: the hand may touch the handle only, the base free
+within ``travel`` [m] (rad: 3x). A line says whether IK held it, how far its best missed (mm, rad),
+how many solutions met something and the first pair. Then IK without the collision check:
+how deep the robot's links then go into the kitchen other than the handle, so a hold
+refused only by a collision shows as such. Why it is kept: TALOS's miss of 2-4 mm looked
+like reach (session 30, issue 37); this shows which holds a nearer base reaches and what
+they meet.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import warnings
+from pathlib import Path
+
+import numpy as np
+from robot_zoo import CORPUS, _draft
+
+from robocram.costmaps.grasps import shoulder_offset
+from robocram.grasping import palm_hold
+from robocram.kinematics import IKResult, PlanarBase, solve_ik
+from robocram.kinematics.ik_options import IKOptions
+from robocram.motion.part_path import ROLLS, from_above, pull_frame
+from robocram.projection import ProjectedRobot
+from robocram.projection.arm import collision_check
+from robocram.projection.articulation import HANDLE_HALF_WIDTH, _holding, approach_axis
+from robocram.projection.gripper import open_gripper
+from robocram.projection.navigation import moved_base
+from robocram.projection.suction import on_the_face
+from robocram.scenes import kitchen_scene
+from robocram.tf import Pose
+from robocram.tf import quaternion as quat
+
+DRAWER = "drawer_unit_drawer_3"  # the bowl's drawer, its handle 0.75 m up
+OUT = Path("/tmp/handle_hold_probe_drafts")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("name")
+    parser.add_argument("--arm", default="right")
+    parser.add_argument("--back", type=float, nargs="+", default=[0.6, 0.45])
+    parser.add_argument("--pitch", type=float, nargs="+", default=[0.0, 45.0, 90.0])
+    parser.add_argument("--along", type=float, nargs="+", default=[-0.035, 0.0, 0.035])
+    parser.add_argument("--out", type=float, nargs="+", default=[0.0])
+    parser.add_argument("--travel", type=float, default=0.15)
+    parser.add_argument("--restarts", type=int, default=30)
+    args = parser.parse_args()
+    warnings.simplefilter("ignore")
+    entry = next(r for r in CORPUS if r.name == args.name)
+    scene = kitchen_scene(_draft(entry, OUT))
+    world = scene.world
+    try:
+        desc = world.robot(scene.robot).description
+        for spec in desc.arms.values():
+            world.set_joint_states(scene.robot, dict(spec.parking))
+        handle = f"{DRAWER}_handle"
+        at = world.link_pose("kitchen", handle)
+        out = quat.rotate(at.orientation, (1.0, 0.0, 0.0))  # the kitchen's handle x: its front
+        facing = quat.from_euler(0.0, 0.0, math.atan2(-out[1], -out[0]))
+        z = world.pose(scene.robot).position[2]
+        side = shoulder_offset(desc, args.arm)  # [m] across the base, left positive
+        travel = PlanarBase(args.travel, args.travel, 3 * args.travel)
+        for back in args.back:
+            across = quat.rotate(facing, (0.0, side, 0.0))
+            x = at.position[0] + out[0] * back - across[0]
+            y = at.position[1] + out[1] * back - across[1]
+            world.set_pose(scene.robot, Pose((x, y, z), facing))
+            robot = ProjectedRobot.of(world, scene.robot)
+            open_gripper(robot, args.arm)  # as the hand comes to the handle: open
+            _probe(robot, args, back, travel)
+    finally:
+        world.close()
+
+
+def _probe(
+    robot: ProjectedRobot, args: argparse.Namespace, back: float, travel: PlanarBase
+) -> None:
+    world, arm, handle = robot.world, args.arm, f"{DRAWER}_handle"
+    palm = palm_hold(robot.description, arm, HANDLE_HALF_WIDTH)  # as move_part holds it
+    axis = approach_axis(robot, arm) if palm is None else np.asarray(palm[0])
+    pull = pull_frame(world, "kitchen", f"{DRAWER}_joint", handle)
+    check = collision_check(robot, arm, "allow_hand", f"kitchen/{handle}")
+    seed = world.joint_states(robot.name)
+    gripper = robot.arm(arm).gripper
+    suction = gripper is not None and gripper.is_suction
+    for degrees in args.pitch:
+        frame = from_above(pull, math.radians(degrees)) if degrees else pull
+        if suction:  # its frame on the face it touches, as handle_holds puts it
+            frame = on_the_face(robot, "kitchen", handle, frame)
+        for along, out in ((a, o) for a in args.along for o in args.out):
+            for roll in ROLLS:
+                on_bar = world.link_pose("kitchen", handle) * Pose((0.0, along, 0.0))
+                target = on_bar * frame * Pose((out, 0.0, 0.0))
+                in_base = robot.base_pose().inverse() * target * _holding(axis, roll, palm)
+                options = IKOptions(base=travel, max_restarts=args.restarts)
+                held = solve_ik(robot.description, arm, in_base, seed=seed, options=options,
+                                collision_check=check)  # fmt: skip
+                free = solve_ik(robot.description, arm, in_base, seed=seed, options=options)
+                pair = held.colliding_pairs[0] if held.colliding_pairs else ("", "")
+                print(
+                    f"back {back:.2f} pitch {degrees:4.0f} along {along:+.3f} out {out:.3f} "
+                    f"roll {roll:+.2f}: "
+                    f"held {int(held.success)} miss {held.position_error * 1000:5.1f} mm "
+                    f"{held.orientation_error:.2f} rad "
+                    f"met {held.rejected_in_collision:3d} {pair[0]}/{pair[1]}; "
+                    f"unchecked: {_deepest(robot, free)}",
+                    flush=True,
+                )
+
+
+def _deepest(robot: ProjectedRobot, result: IKResult) -> str:
+    """How deep [mm] the robot, put where ``result`` says, goes into the kitchen other than
+    the handle, and between which links; then put back."""
+    if not result.success:
+        miss = result.position_error * 1000
+        return f"no solution ({miss:.1f} mm, {result.orientation_error:.2f} rad)"
+    world = robot.world
+    base, joints = robot.base_pose(), world.joint_states(robot.name)
+    try:
+        if result.base_motion is not None:
+            world.set_pose(robot.name, moved_base(robot, result.base_motion))
+        world.set_joint_states(robot.name, dict(result.joint_positions))
+        points = [
+            p for p in world.contacts.contact_points(robot.name, "kitchen")
+            if p.link_b != f"{DRAWER}_handle"
+        ]  # fmt: skip
+        moved = math.dist(base.position, world.pose(robot.name).position)
+    finally:
+        world.set_pose(robot.name, base)
+        world.set_joint_states(robot.name, joints)
+    if not points:
+        return f"clear, the base moved {moved:.2f} m"
+    worst = min(points, key=lambda p: p.distance)
+    return (
+        f"{-worst.distance * 1000:.1f} mm {worst.link_a}/{worst.link_b}, base moved {moved:.2f} m"
+    )
+
+
+if __name__ == "__main__":
+    main()
