@@ -348,17 +348,25 @@ def _let_go(robot: KnownRobot, name: str) -> None:
                 perform(a.motion(type="opening", gripper=arm))
 
 
-def _back_out(name: str, way_out: _WayOut) -> None:
+def _back_out(name: str, way_out: _WayOut) -> PlanFailure | None:
     """Take a hand that the last failed try left at its grasp back out to its pre-grasp,
     open: parking or driving from a grasp deep in a drawer ran into the drawer above in
     every plan (the Stretch's fingers round a cup its grip met on one side, every later
-    motion blocked). Best effort: what still fails is the next step's to name."""
+    motion blocked). Best effort: a way out that fails is returned, not raised, so that
+    the pick's own failure, with every try's cause, is what the caller sees (an arm that
+    reaches with its base backs out by a drive, whose failure had replaced it: the
+    drafted Stretch at the fridge's milk); None where it went or nothing was to do."""
     if way_out.arm is None or way_out.pre_grasp is None:
-        return
+        return None
     with contextlib.suppress(GripperLowLevelFailure):
         perform(a.motion(type="opening", gripper=way_out.arm))
-    with contextlib.suppress(ManipulationLowLevelFailure):
+    try:
         _move(way_out.arm, way_out.pre_grasp, **GRASPING, touching=name)
+    except ManipulationLowLevelFailure:
+        return None  # as before: the next step names what still fails
+    except NavigationLowLevelFailure as failure:
+        return failure
+    return None
 
 
 def grasp_object(
@@ -422,7 +430,9 @@ def pick_up_object(
                 causes.append(failure)
     for choice_arm, choice in caught:  # only after every try: the hand opened part way,
         _let_go(robot, name)  # from parking (at the last try's grasp the fingers closing
-        _back_out(name, way_out)  # part way met the drawer)
+        stuck = _back_out(name, way_out)  # part way met the drawer)
+        if stuck is not None:
+            causes.append(stuck)
         way_out.arm = None
         with contextlib.suppress(PlanFailure):
             park_arms()
@@ -445,14 +455,15 @@ def pick_up_object(
         except PickUpFailed as failure:
             causes.append(failure)
     _let_go(robot, name)
-    _back_out(name, way_out)
+    stuck = _back_out(name, way_out)
     unreachable = bool(causes) and all(isinstance(c, ManipulationPoseUnreachable) for c in causes)
     raise (PickUpUnreachable if unreachable else PickUpFailed)(
         f"no arm of {arms} picked up {name!r}"
         + (f" with grasp {grasp!r}" if grasp else "")
         + f" in {len(causes)} tries (causes: "
         + ", ".join(sorted({type(c).__name__ for c in causes}))
-        + ")",
+        + ")"
+        + ("" if stuck is None else f"; the hand then stayed at its grasp: {stuck}"),
         object_name=name,
-        causes=causes,
-    )
+        causes=causes if stuck is None else [*causes, stuck],
+    ) from stuck
