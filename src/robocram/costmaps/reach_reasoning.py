@@ -5,7 +5,9 @@ In Python and as predicates of the world's knowledge base. Robots stay where the
 IK decides (torso free, grasps from above), and ``blocking`` puts the arm at the grasp to
 see what it would hit, then restores the joints. ``pose_reachable/3`` asks of one arm;
 ``lift_clearance/4`` says how far an object must rise to clear a link (a bowl out of its
-drawer), so a pick can ask, before it grips, whether that lift is in reach.
+drawer), so a pick can ask, before it grips, whether that lift is in reach;
+``line_stand/5`` where an arm reaching along a telescope takes its hand in and out along
+the approach line by the telescope alone (``line_stand.py``).
 """
 
 from __future__ import annotations
@@ -13,6 +15,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from robocram.costmaps.errors import CostmapInputError
+from robocram.costmaps.line_stand import line_stand
 from robocram.costmaps.validators import (
     IK_RESTARTS,
     STAND_TRAVEL,
@@ -152,10 +155,25 @@ def install_reach_predicates(kb: KnowledgeBase, world: World) -> None:
         if link in world.contacts.link_aabbs(body):
             yield from ((o, body, link, lift_clearance(world, o, body, link)) for o in names)
 
+    def line_stand_(rob: object, arm: object, out: Value, grasp: Value, stand: Value) -> Solutions:
+        if not (isinstance(arm, str) and isinstance(out, PoseStamped)):
+            return
+        if not isinstance(grasp, PoseStamped):
+            return
+        for r in _names(world, rob, True):
+            if arm in robot_arms(world.robot(r), None):
+                found = line_stand(world, r, arm, _pose_in_map(out), _pose_in_map(grasp))
+                if found is not None:
+                    yield (r, arm, out, grasp, PoseStamped.from_pose("map", found))
+
     register_predicates(
         kb,
         Source.REASONING,
-        {"pose_reachable/3": pose_reachable_arm, "lift_clearance/4": lift_clearance_},
+        {
+            "pose_reachable/3": pose_reachable_arm,
+            "lift_clearance/4": lift_clearance_,
+            "line_stand/5": line_stand_,
+        },
     )
 
     @kb.predicate("blocking", 4)

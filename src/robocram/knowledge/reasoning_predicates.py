@@ -2,7 +2,8 @@
 
 ``pose_reachable/3`` and ``lift_clearance/4`` are what a pick from an opened drawer asks
 before the hand moves: how far the object must rise to clear the drawer's top, and
-whether the arm reaches that lift from where the robot stands. CRAM's untyped
+whether the arm reaches that lift from where the robot stands. ``line_stand/5`` is where
+a pick whose every try failed stands again when its arm reaches along a telescope. CRAM's untyped
 ``reachable/2``, ``pose_reachable/2`` and ``blocking/4`` sit beside them
 (docs/locations.md).
 """
@@ -36,6 +37,18 @@ class LiftClearance:
     rise: float = unit("m")
 
 
+@dataclass(frozen=True)
+class LineStand:
+    """Where a robot stands for an arm to take its tool from a pose back on an approach
+    line (``out``) to a grasp and back along that line by its level telescope alone."""
+
+    robot: str
+    arm: str
+    out: PoseStamped = unit("m, map")
+    grasp: PoseStamped = unit("m, map")
+    stand: PoseStamped = unit("m, map")
+
+
 _R = Source.REASONING
 ARM_POSE_REACHABLE = Predicate(
     "pose_reachable", ArmPoseReach, _R, "the arm brings its tool to the map pose from here"
@@ -44,4 +57,12 @@ LIFT_CLEARANCE = Predicate(
     "lift_clearance", LiftClearance, _R, "the rise that lifts an object over a link's top"
 )
 
-REASONING_PREDICATES: tuple[Predicate[Any], ...] = (ARM_POSE_REACHABLE, LIFT_CLEARANCE)
+LINE_STAND = Predicate(
+    "line_stand", LineStand, _R, "the stand whose telescope takes the tool along the approach"
+)
+
+REASONING_PREDICATES: tuple[Predicate[Any], ...] = (
+    ARM_POSE_REACHABLE,
+    LIFT_CLEARANCE,
+    LINE_STAND,
+)

@@ -28,12 +28,12 @@ def nearer_pre_grasp(
     elbow as far."""
     return replace(
         choice,
-        pre_grasp=_towards(choice.pre_grasp, choice.grasp_pose, share),
-        lift=_towards(choice.lift, choice.grasp_pose, lift_share),
+        pre_grasp=towards(choice.pre_grasp, choice.grasp_pose, share),
+        lift=towards(choice.lift, choice.grasp_pose, lift_share),
     )
 
 
-def _towards(pose: PoseStamped, grasp: PoseStamped, share: float) -> PoseStamped:
+def towards(pose: PoseStamped, grasp: PoseStamped, share: float) -> PoseStamped:
     """``pose`` moved to ``share`` of its way off ``grasp`` (both ``map``)."""
     gx, gy, gz = grasp.position
     px, py, pz = pose.position

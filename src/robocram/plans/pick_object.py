@@ -19,6 +19,8 @@ import contextlib
 from dataclasses import dataclass, replace
 from typing import Any
 
+import numpy as np
+
 from robocram.designators import ObjectDesignator, a
 from robocram.execution import perform
 from robocram.execution.failures import (
@@ -31,14 +33,19 @@ from robocram.execution.failures import (
     PlanFailure,
 )
 from robocram.knowledge.grasp_predicates import OBJECT_GRASP, OBJECT_UNGRASPABLE, ObjectGrasp
-from robocram.knowledge.reasoning_predicates import ARM_POSE_REACHABLE, LIFT_CLEARANCE
+from robocram.knowledge.reasoning_predicates import (
+    ARM_POSE_REACHABLE,
+    LIFT_CLEARANCE,
+    LINE_STAND,
+)
 from robocram.knowledge.robot_predicates import GRIPPER_JOINT
 from robocram.logic import Term, UnknownPredicateError, current_kb
 from robocram.plans.basic_actions import look_ahead, neck_in_the_way, park_arms
+from robocram.plans.empty_hand_up import navigate_empty_hand_up
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.grasp_failures import ObjectUngraspable, PickUpFailed, PickUpUnreachable
 from robocram.plans.known_robot import KnownRobot, current_robot
-from robocram.plans.nearer_pre_grasp import NEARER_LIFT_SHARE, nearer_pre_grasp
+from robocram.plans.nearer_pre_grasp import NEARER_LIFT_SHARE, nearer_pre_grasp, towards
 from robocram.tf import Pose, PoseStamped, TfError, transform_pose
 
 CENTRINGS = 2  # a grip meeting the object on one side moves the hand this often at most
@@ -54,6 +61,12 @@ HALF_WAY = 1 / 2  # of the same value: any other grasp a finger was caught at tr
 # drafted Stretch's fingers close on a cup at 0.22 of their 0.60 rad; fully open, one met
 # the counter top over the drawer or slid outside the drawer's side wall)
 TRIES = (ManipulationLowLevelFailure, GripperLowLevelFailure, NavigationLowLevelFailure)
+DRAW_BACK = 0.2  # [m] past the pre-grasp a hand that took a thing from a line stand draws it
+# back (the fridge's milk, gripped 21 cm behind the fridge's front, 10 cm past the pre-grasp:
+# a drive with it still in the shelf turned it into the shelf)
+LOWER_LIFTS = (0.5, 0.25)  # of a lift's rise over the grasp, tried in turn from a line stand
+# where the whole rise is out of the arm's reach (the drafted Stretch's lift at the fridge's
+# milk: the tool rises 5.7 cm at most there, the usual lift is 10 cm)
 
 
 @dataclass(frozen=True)
@@ -193,6 +206,7 @@ def _try_grasp(
     way_out: _WayOut | None = None,
     part_way: float | None = None,
     near: bool = False,
+    lower_lifts: bool = False,
 ) -> Held:
     way_out = way_out or _WayOut()
     way_out.opened = False
@@ -203,7 +217,8 @@ def _try_grasp(
     way_out.arm, way_out.pre_grasp = arm, choice.pre_grasp
     choice = _gripped(arm, name, choice)
     if lift:
-        _lifted(arm, choice.lift, name)
+        lifted = _lifted(arm, choice.lift, name, choice.grasp_pose if lower_lifts else None)
+        choice = replace(choice, lift=lifted)
     frame = robot.tool_frame(arm)
     if object_in_map is None:
         object_in_map = transform_pose(PoseStamped(name), "map").pose
@@ -291,16 +306,29 @@ def _fingers_meet_body(arm: str, blocked: GripperPathBlocked) -> bool:
     )  # (robot link, what it meets): a robot meeting itself names its own link second
 
 
-def _lifted(arm: str, lift: PoseStamped, name: str) -> None:
+def _lifted(
+    arm: str, lift: PoseStamped, name: str, grasp: PoseStamped | None = None
+) -> PoseStamped:
     """Lift the gripped ``name`` to ``lift``; where the head, still turned down at it, is
     in the way (a Stretch's lift carriage meets its tilted head on a lift out of a drawer),
-    look ahead and lift again."""
+    look ahead and lift again. With ``grasp`` (a try from a line stand), a lift out of the
+    arm's reach is tried lower (:data:`LOWER_LIFTS` of its rise over ``grasp``): a shelf
+    near the top of the arm's range leaves less room. Where the hand went."""
     try:
         _move(arm, lift, **GRASPING, touching=name)
+        return lift
     except ManipulationLowLevelFailure as failure:
-        if not (neck_in_the_way(failure) and look_ahead()):
+        if neck_in_the_way(failure) and look_ahead():
+            _move(arm, lift, **GRASPING, touching=name)
+            return lift
+        if grasp is None or not isinstance(failure, ManipulationPoseUnreachable):
             raise
-        _move(arm, lift, **GRASPING, touching=name)
+        for share in LOWER_LIFTS:
+            lower = towards(lift, grasp, share)
+            with contextlib.suppress(ManipulationPoseUnreachable):
+                _move(arm, lower, **GRASPING, touching=name)
+                return lower
+        raise
 
 
 def _gripped(arm: str, name: str, choice: ObjectGrasp) -> ObjectGrasp:
@@ -348,17 +376,65 @@ def _let_go(robot: KnownRobot, name: str) -> None:
                 perform(a.motion(type="opening", gripper=arm))
 
 
-def _back_out(name: str, way_out: _WayOut) -> None:
+def _back_out(name: str, way_out: _WayOut) -> PlanFailure | None:
     """Take a hand that the last failed try left at its grasp back out to its pre-grasp,
     open: parking or driving from a grasp deep in a drawer ran into the drawer above in
     every plan (the Stretch's fingers round a cup its grip met on one side, every later
-    motion blocked). Best effort: what still fails is the next step's to name."""
+    motion blocked). Best effort: a way out that fails is returned, not raised, so that
+    the pick's own failure, with every try's cause, is what the caller sees (an arm that
+    reaches with its base backs out by a drive, whose failure had replaced it: the
+    drafted Stretch at the fridge's milk); None where it went or nothing was to do."""
     if way_out.arm is None or way_out.pre_grasp is None:
-        return
+        return None
     with contextlib.suppress(GripperLowLevelFailure):
         perform(a.motion(type="opening", gripper=way_out.arm))
-    with contextlib.suppress(ManipulationLowLevelFailure):
+    try:
         _move(way_out.arm, way_out.pre_grasp, **GRASPING, touching=name)
+    except ManipulationLowLevelFailure:
+        return None  # as before: the next step names what still fails
+    except NavigationLowLevelFailure as failure:
+        return failure
+    return None
+
+
+def _drawn_back(held: Held, choice: ObjectGrasp) -> Held:
+    """Draw the lifted hand back along its approach line, as high as it was lifted, to
+    :data:`DRAW_BACK` past its pre-grasp: from a line stand the telescope does it, and a
+    drive with the hand still in the shelf (the fridge's milk held over its shelf) ran into
+    the shelf.
+
+    Raises:
+        ManipulationLowLevelFailure: the way back is blocked or out of reach.
+    """
+    x, y, z = _way_back(choice).position
+    rise = held.lifted.position[2] - held.grasp_pose.position[2]
+    back = replace(held.lifted, position=(x, y, z + rise))
+    _move(held.arm, back, **GRASPING, touching=held.object_name)
+    return replace(held, lifted=back)
+
+
+def _way_back(choice: ObjectGrasp) -> PoseStamped:
+    """``choice``'s pre-grasp moved :data:`DRAW_BACK` further off its grasp (``map``)."""
+    pre, grasp = np.asarray(choice.pre_grasp.position), np.asarray(choice.grasp_pose.position)
+    depth = float(np.linalg.norm(pre - grasp))
+    share = (depth + DRAW_BACK) / max(depth, 1e-9)
+    return towards(choice.pre_grasp, choice.grasp_pose, share)
+
+
+def _line_stand(robot: KnownRobot, arm: str, choice: ObjectGrasp) -> PoseStamped | None:
+    """Where ``arm`` takes its hand from ``choice``'s pre-grasp (and :data:`DRAW_BACK` past
+    it) to its grasp and back by its level telescope alone (``line_stand/5``): the drafted
+    Stretch's base, turned a little at the fridge's milk with its telescope drawn in,
+    backed its hand out only by a drive that turned the fingers into the fridge. None
+    where there is none (no such telescope, an approach not level, or no world to ask)."""
+    try:
+        row = LINE_STAND.first(
+            current_kb(), robot=robot.name, arm=arm, out=_way_back(choice),
+            grasp=choice.grasp_pose,
+        )  # fmt: skip
+    except UnknownPredicateError:
+        return None
+    return None if row is None else row.stand
 
 
 def grasp_object(
@@ -422,7 +498,9 @@ def pick_up_object(
                 causes.append(failure)
     for choice_arm, choice in caught:  # only after every try: the hand opened part way,
         _let_go(robot, name)  # from parking (at the last try's grasp the fingers closing
-        _back_out(name, way_out)  # part way met the drawer)
+        stuck = _back_out(name, way_out)  # part way met the drawer)
+        if stuck is not None:
+            causes.append(stuck)
         way_out.arm = None
         with contextlib.suppress(PlanFailure):
             park_arms()
@@ -444,15 +522,37 @@ def pick_up_object(
             causes.append(failure)
         except PickUpFailed as failure:
             causes.append(failure)
+    for choice_arm, choice in tried:  # then each from a stand on its approach line
+        stand = _line_stand(robot, choice_arm, choice)
+        if stand is None:
+            continue
+        _let_go(robot, name)
+        stuck = _back_out(name, way_out)
+        if stuck is not None:
+            causes.append(stuck)
+        way_out.arm = None
+        with contextlib.suppress(PlanFailure):
+            park_arms()
+        try:
+            navigate_empty_hand_up(stand)
+            held = _try_grasp(
+                robot, name, choice_arm, choice, pose, lift, way_out, lower_lifts=True
+            )
+            return _drawn_back(held, choice) if lift else held
+        except TRIES as failure:
+            causes.append(failure)
+        except PickUpFailed as failure:
+            causes.append(failure)
     _let_go(robot, name)
-    _back_out(name, way_out)
+    stuck = _back_out(name, way_out)
     unreachable = bool(causes) and all(isinstance(c, ManipulationPoseUnreachable) for c in causes)
     raise (PickUpUnreachable if unreachable else PickUpFailed)(
         f"no arm of {arms} picked up {name!r}"
         + (f" with grasp {grasp!r}" if grasp else "")
         + f" in {len(causes)} tries (causes: "
         + ", ".join(sorted({type(c).__name__ for c in causes}))
-        + ")",
+        + ")"
+        + ("" if stuck is None else f"; the hand then stayed at its grasp: {stuck}"),
         object_name=name,
-        causes=causes,
-    )
+        causes=causes if stuck is None else [*causes, stuck],
+    ) from stuck
