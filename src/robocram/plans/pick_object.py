@@ -397,6 +397,18 @@ def _back_out(name: str, way_out: _WayOut) -> PlanFailure | None:
     return None
 
 
+def _hand_out(robot: KnownRobot, name: str, way_out: _WayOut, causes: list[Exception]) -> None:
+    """Let go, take the hand out to its pre-grasp and park, before a try from elsewhere; a
+    way out that failed is added to ``causes``."""
+    _let_go(robot, name)
+    stuck = _back_out(name, way_out)
+    if stuck is not None:
+        causes.append(stuck)
+    way_out.arm = None
+    with contextlib.suppress(PlanFailure):
+        park_arms()
+
+
 def _drawn_back(held: Held, choice: ObjectGrasp) -> Held:
     """Draw the lifted hand back along its approach line, as high as it was lifted, to
     :data:`DRAW_BACK` past its pre-grasp: from a line stand the telescope does it, and a
@@ -497,13 +509,8 @@ def pick_up_object(
             except PickUpFailed as failure:
                 causes.append(failure)
     for choice_arm, choice in caught:  # only after every try: the hand opened part way,
-        _let_go(robot, name)  # from parking (at the last try's grasp the fingers closing
-        stuck = _back_out(name, way_out)  # part way met the drawer)
-        if stuck is not None:
-            causes.append(stuck)
-        way_out.arm = None
-        with contextlib.suppress(PlanFailure):
-            park_arms()
+        _hand_out(robot, name, way_out, causes)  # from parking (at the last try's grasp the
+        # fingers closing part way met the drawer)
         try:
             if lift and out_of is not None:
                 choice = _lifted_out(robot, name, choice_arm, choice, out_of)
@@ -526,13 +533,7 @@ def pick_up_object(
         stand = _line_stand(robot, choice_arm, choice)
         if stand is None:
             continue
-        _let_go(robot, name)
-        stuck = _back_out(name, way_out)
-        if stuck is not None:
-            causes.append(stuck)
-        way_out.arm = None
-        with contextlib.suppress(PlanFailure):
-            park_arms()
+        _hand_out(robot, name, way_out, causes)
         try:
             navigate_empty_hand_up(stand)
             held = _try_grasp(
