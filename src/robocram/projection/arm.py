@@ -222,13 +222,36 @@ def _arm_then_base(
             settings=settings, hand=hand,
         )  # fmt: skip
     except ManipulationPathBlocked:
+        if _straight_together(robot, arm, target_in_base, mode, hand, result, whole_first):
+            return True
         raise first from None
     follow(robot, motion.trajectory, checked)
     try:
         drive(robot, base_goal, free, hand)
     except NavigationLowLevelFailure:
+        if _straight_together(robot, arm, target_in_base, mode, hand, result, whole_first):
+            return True
         raise first from None
     return True
+
+
+def _straight_together(
+    robot: ProjectedRobot,
+    arm: str,
+    target_in_base: Pose,
+    mode: str,
+    hand: HandContact | None,
+    result: IKResult,
+    tried: bool,
+) -> bool:
+    """After base first and arm first both failed, a hand motion (``allow_hand``) by base
+    and arm together, the tool straight to its target (:func:`_whole_body_step`; not again
+    where it was ``tried``): the drafted Stretch, its base turned at the fridge's milk,
+    backed its open hand out by a drive that swept a finger 5.1 mm into the milk, while
+    telescope and drive together take the fingers straight back the way they came."""
+    if tried or mode.replace("-", "_") != "allow_hand":
+        return False
+    return _whole_body_step(robot, arm, target_in_base, mode, hand, result)
 
 
 def _turning_part(robot: ProjectedRobot) -> bool:
