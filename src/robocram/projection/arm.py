@@ -251,7 +251,8 @@ def _straight_together(
     telescope and drive together take the fingers straight back the way they came."""
     if tried or mode.replace("-", "_") != "allow_hand":
         return False
-    return _whole_body_step(robot, arm, target_in_base, mode, hand, result)
+    free = not robot.carried  # no part dragged deeper: a finger at the thing may leave it
+    return _whole_body_step(robot, arm, target_in_base, mode, hand, result, free)
 
 
 def _turning_part(robot: ProjectedRobot) -> bool:
@@ -281,12 +282,14 @@ def _whole_body_step(
     mode: str,
     hand: HandContact | None,
     result: IKResult,
+    keep_touching: bool = False,
 ) -> bool:
     """Move base and arm at once, the tool straight to ``target_in_base`` (the root link
     where the base stands): a part the hand carries stays on the tool's line all the way.
     Base and arm share the motion as IK's checked solution ``result`` does (else as the
     least motion of all joints gives). False (nothing moved) when the line cannot be
-    followed whole either way, or the base is fixed."""
+    followed whole either way, or the base is fixed. ``keep_touching``: a link touching
+    something where it starts may move off it (no part is dragged along)."""
     motion = result.base_motion
     if robot.description.drive == "fixed" or motion is None:
         return False
@@ -296,7 +299,7 @@ def _whole_body_step(
         planned = plan_whole_body_tool_path(
             robot.handle, arm, [target_in_base], settings=robot.motion, hand=hand,
             allowed_links=allowed_links(robot, arm, mode), kind="arm", goal=toward,
-            carried=robot.carried, keep_touching=False,
+            carried=robot.carried, keep_touching=keep_touching,
         )  # fmt: skip
         if planned.fraction >= 1.0:
             follow(robot, planned.motion.trajectory, checked)
