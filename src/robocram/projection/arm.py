@@ -222,37 +222,13 @@ def _arm_then_base(
             settings=settings, hand=hand,
         )  # fmt: skip
     except ManipulationPathBlocked:
-        if _straight_together(robot, arm, target_in_base, mode, hand, result, whole_first):
-            return True
         raise first from None
     follow(robot, motion.trajectory, checked)
     try:
         drive(robot, base_goal, free, hand)
     except NavigationLowLevelFailure:
-        if _straight_together(robot, arm, target_in_base, mode, hand, result, whole_first):
-            return True
         raise first from None
     return True
-
-
-def _straight_together(
-    robot: ProjectedRobot,
-    arm: str,
-    target_in_base: Pose,
-    mode: str,
-    hand: HandContact | None,
-    result: IKResult,
-    tried: bool,
-) -> bool:
-    """After base first and arm first both failed, a hand motion (``allow_hand``) by base
-    and arm together, the tool straight to its target (:func:`_whole_body_step`; not again
-    where it was ``tried``): the drafted Stretch, its base turned at the fridge's milk,
-    backed its open hand out by a drive that swept a finger 5.1 mm into the milk, while
-    telescope and drive together take the fingers straight back the way they came."""
-    if tried or mode.replace("-", "_") != "allow_hand":
-        return False
-    free = not robot.carried  # no part dragged deeper: a finger at the thing may leave it
-    return _whole_body_step(robot, arm, target_in_base, mode, hand, result, free)
 
 
 def _turning_part(robot: ProjectedRobot) -> bool:
@@ -282,14 +258,12 @@ def _whole_body_step(
     mode: str,
     hand: HandContact | None,
     result: IKResult,
-    keep_touching: bool = False,
 ) -> bool:
     """Move base and arm at once, the tool straight to ``target_in_base`` (the root link
     where the base stands): a part the hand carries stays on the tool's line all the way.
     Base and arm share the motion as IK's checked solution ``result`` does (else as the
     least motion of all joints gives). False (nothing moved) when the line cannot be
-    followed whole either way, or the base is fixed. ``keep_touching``: a link touching
-    something where it starts may move off it (no part is dragged along)."""
+    followed whole either way, or the base is fixed."""
     motion = result.base_motion
     if robot.description.drive == "fixed" or motion is None:
         return False
@@ -299,7 +273,7 @@ def _whole_body_step(
         planned = plan_whole_body_tool_path(
             robot.handle, arm, [target_in_base], settings=robot.motion, hand=hand,
             allowed_links=allowed_links(robot, arm, mode), kind="arm", goal=toward,
-            carried=robot.carried, keep_touching=keep_touching,
+            carried=robot.carried, keep_touching=False,
         )  # fmt: skip
         if planned.fraction >= 1.0:
             follow(robot, planned.motion.trajectory, checked)
