@@ -85,12 +85,14 @@ def _retract(m: Engine, a: Args) -> Iterator[bool]:
                     Term("/", (pred.name, pred.arity)),
                     f"retract/1: {pred.indicator} is static; declare it dynamic",
                 )
-            with m.kb._lock:
-                if not clause.erased:
+            with m.kb._lock:  # released before the answer: a suspended query holds no lock
+                won = not clause.erased
+                if won:
                     pred.erase(clause)
                     m.kb.mark_changed()
-                    yield True
-                    continue
+            if won:
+                yield True
+                continue
         m.undo_to(mark)
 
 
