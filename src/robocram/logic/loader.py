@@ -67,7 +67,12 @@ def compile_clause(
         )
     slots: dict[Var, Slot] = {}
     head_t = tuple([compile_term(a, slots) for a in args])
-    body_t = [compile_term(g, slots) for g in conjuncts(body)]
+    # a fact (asserted facts by the thousand: sieve) has no goals to flatten
+    body_t = (
+        []
+        if type(body) is str and body == "true"
+        else [compile_term(g, slots) for g in conjuncts(body)]
+    )
     clause = Clause(head_t, tuple(reversed(body_t)), len(slots), group, term, name)
     return (pred_key(name, len(args)) if shared_key else (name, len(args))), clause
 
