@@ -40,3 +40,20 @@ def test_retracting_the_first_clause_again_and_again_keeps_the_order() -> None:
         " once(retract(q(Y))), once(retract(q(Z))), findall(_W, q(_W), Rest), length(Rest, N)"
     )
     assert answer == {"A": [1, 2, 3, 4, 5], "Y": 0, "Z": 6, "Rest": list(range(7, 41)), "N": 34}
+
+
+def test_a_query_suspended_at_a_retract_answer_holds_no_lock() -> None:
+    # Another thread's assert must not wait for a query left at retract/1's answer.
+    import threading
+
+    kb = KnowledgeBase()
+    kb.consult(":- dynamic f/1.\nf(1).\nf(2).")
+    answers = kb.query("retract(f(X))")
+    assert next(answers) == {"X": 1}  # suspended inside retract/1, a later clause open
+    done = threading.Event()
+    writer = threading.Thread(target=lambda: (kb.assertz("f(3)"), done.set()), daemon=True)
+    writer.start()
+    writer.join(timeout=10)
+    assert done.is_set(), "assertz/1 in another thread waited for the suspended retract/1"
+    assert next(answers) == {"X": 2}
+    assert kb.first("findall(_Y, f(_Y), L)") == {"L": [3]}

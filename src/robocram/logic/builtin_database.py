@@ -70,7 +70,9 @@ def _retract(m: Engine, a: Args) -> Iterator[bool]:
     pred = _pred_of(m, head, "retract/1", modify=True)
     if pred is None:
         return
-    for clause in _snapshot(pred, head):
+    cands, lo = _snapshot(pred, head)
+    for i in range(lo, len(cands)):  # the list as the call found it (see _snapshot)
+        clause = cands[i]
         if clause.erased:
             continue  # retracted meanwhile (by this or another query)
         h, b = _stored(clause)
@@ -83,28 +85,28 @@ def _retract(m: Engine, a: Args) -> Iterator[bool]:
                     Term("/", (pred.name, pred.arity)),
                     f"retract/1: {pred.indicator} is static; declare it dynamic",
                 )
-            with m.kb._lock:
-                if not clause.erased:
+            with m.kb._lock:  # released before the answer: a suspended query holds no lock
+                won = not clause.erased
+                if won:
                     pred.erase(clause)
                     m.kb.mark_changed()
-                    yield True
-                    continue
+            if won:
+                yield True
+                continue
         m.undo_to(mark)
 
 
-def _snapshot(pred: Pred, head: Value) -> Iterator[Clause]:
-    """The clauses that can match `head`, as they were at the call, read without a copy.
+def _snapshot(pred: Pred, head: Value) -> tuple[list[Clause], int]:
+    """The clauses that can match `head`, as they were at the call, read without a copy:
+    a list and where to start in it; the caller reads up to the list's length at the call.
 
     Clauses are only ever added after the end of a list, or before its start (asserta),
     or the list is replaced: its first `n` entries from `lo` on stay the call's view.
     """
     first = deref(head[1][0]) if type(head) is Term and head[1] else None
     if first is None or type(first) is Var:
-        cands, lo = pred.store, pred.first_live()
-    else:
-        cands, lo = pred.candidates(first), 0
-    for i in range(lo, len(cands)):
-        yield cands[i]
+        return pred.store, pred.first_live()
+    return pred.candidates(first), 0
 
 
 def _candidates(pred: Pred, head: Value) -> list[Value]:

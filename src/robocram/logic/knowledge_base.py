@@ -22,6 +22,7 @@ from robocram.logic.errors import (
     PrologResourceError,
 )
 from robocram.logic.fact_groups import LIBRARY_OWNER, GroupEdit, Groups, refuse_system
+from robocram.logic.keys import pred_key
 from robocram.logic.limits import Budget, QueryStopped
 from robocram.logic.loader import compile_clause, parse_indicator
 from robocram.logic.lru import LRUCache
@@ -210,7 +211,8 @@ class KnowledgeBase:
         """The user predicate `key` in place (created, or taken over from the library)."""
         pred = self._preds.get(key)
         if pred is None or pred.owner == LIBRARY_OWNER:
-            pred = self._preds[key] = Pred(key[0], key[1])
+            # stored under the shared key, which clause code's calls hold (keys.py)
+            pred = self._preds[pred_key(key[0], key[1])] = Pred(key[0], key[1])
         elif pred.system or pred.kind != USER:
             raise refuse_system(pred)
         return pred
@@ -221,7 +223,7 @@ class KnowledgeBase:
 
     def assert_term(self, clause: Value, front: bool = False) -> None:
         """`assert_clause` for a clause already in engine form (compiling copies it)."""
-        key, compiled = compile_clause(clause, None)
+        key, compiled = compile_clause(clause, None, shared_key=False)
         with self._lock:
             pred = self._preds.get(key)
             if (

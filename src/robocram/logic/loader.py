@@ -32,8 +32,13 @@ def conjuncts(body: Value) -> list[Value]:
     return goals
 
 
-def compile_clause(term: Value, group: str | None) -> tuple[tuple[str, int], Clause]:
+def compile_clause(
+    term: Value, group: str | None, shared_key: bool = True
+) -> tuple[tuple[str, int], Clause]:
     """Compile `Head :- Body` (or a fact) into a Clause; return its name/arity key too.
+
+    The key is the shared object (keys.py) unless `shared_key` is false: assert/1 looks
+    its predicate up with a plain tuple and takes the shared key only when it creates one.
 
     >>> from robocram.logic.reader import read_query
     >>> key, clause = compile_clause(read_query("p(X, Y) :- q(X), r(Y)")[0], "g")
@@ -62,9 +67,14 @@ def compile_clause(term: Value, group: str | None) -> tuple[tuple[str, int], Cla
         )
     slots: dict[Var, Slot] = {}
     head_t = tuple([compile_term(a, slots) for a in args])
-    body_t = [compile_term(g, slots) for g in conjuncts(body)]
+    # a fact (asserted facts by the thousand: sieve) has no goals to flatten
+    body_t = (
+        []
+        if type(body) is str and body == "true"
+        else [compile_term(g, slots) for g in conjuncts(body)]
+    )
     clause = Clause(head_t, tuple(reversed(body_t)), len(slots), group, term, name)
-    return pred_key(name, len(args)), clause
+    return (pred_key(name, len(args)) if shared_key else (name, len(args))), clause
 
 
 def parse_indicator(spec: Value) -> tuple[str, int]:

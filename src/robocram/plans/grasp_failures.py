@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from robocram.execution.failures import (
     HighLevelFailure,
+    ManipulationLowLevelFailure,
     ManipulationPoseUnreachable,
     ObjectUnreachable,
 )
@@ -47,3 +48,15 @@ class PlacingFailed(HighLevelFailure):
     causes: list[Exception] | None = None
     summary = "the object could not be placed"
     hint = "pick a target nearer the robot, or on a free, level part of the surface"
+
+
+class ObjectMovedSinceSeen(ManipulationLowLevelFailure):
+    """The object no longer lies where the pick's grasps were computed from: an earlier
+    try of the pick moved it (the HSR's first rim grasp of a bowl in a drawer pushed it
+    5.4 cm, and the next grasp, aimed at where it had been, caught the rim off its middle,
+    so the bowl was put down 5.5 cm off its seat)."""
+
+    object_name: str | None = None
+    moved: float | None = None  # [m] from where it was seen to where it lies now
+    summary = "the object moved since it was seen"
+    hint = "perceive it again and pick it where it lies now"

@@ -46,6 +46,7 @@ from robocram.plans.errors import PlanSetupError
 from robocram.plans.grasp_failures import ObjectUngraspable, PickUpFailed, PickUpUnreachable
 from robocram.plans.known_robot import KnownRobot, current_robot
 from robocram.plans.nearer_pre_grasp import NEARER_LIFT_SHARE, nearer_pre_grasp, towards
+from robocram.plans.still_where_seen import still_where_seen
 from robocram.tf import Pose, PoseStamped, TfError, transform_pose
 
 CENTRINGS = 2  # a grip meeting the object on one side moves the hand this often at most
@@ -210,6 +211,7 @@ def _try_grasp(
     near: bool = False,
     lower_lifts: bool = False,
 ) -> Held:
+    still_where_seen(name, object_in_map)
     way_out = way_out or _WayOut()
     way_out.opened = False
     mode = {**GRASPING, "touching": name} if near else {}
