@@ -1,4 +1,5 @@
-"""A pick whose way out needs a drive that fails still fails as a pick, with every try.
+"""A pick whose way out needs a drive that fails still fails as a pick, with every try,
+and takes the hand out by way of the point halfway.
 
 The drafted Stretch stands beside the opened fridge, its arm across the shelf (household
 seed 0's second stand for the milk, ``benchmarks/activity_bench.py``). Its hand reaches
@@ -6,9 +7,12 @@ the milk from the front by driving back along its heading, but the lift, 10 cm o
 grasp, is 4.3 cm over the lift's top, and no other grasp is in reach. The hand, left at the
 grasp, backs out only by a drive (its arm reaches with its base), and that drive turns the
 arm's tip into the fridge. That drive's ``NavigationPathBlocked`` used to leave the pick
-in place of ``PickUpFailed``, and the tries' causes were lost. Judged on raw PyBullet:
-the hand that could not back out is still at the milk. The stand on the approach line that
-a pick tries after these (``test_plans_pick_line_stand.py``) is left out here.
+in place of ``PickUpFailed``, and the tries' causes were lost; then the hand stayed at the
+milk, and in household 0 no drive to the stand on the approach line got past the fridge.
+The hand now goes halfway back first, and from there the drive's turn clears the milk.
+Judged on raw PyBullet: the tool is back at the pre-grasp, 10 cm before the milk, and no
+link of the robot is in the milk. The stand on the approach line that a pick tries after
+these (``test_plans_pick_line_stand.py``) is left out here.
 """
 
 from __future__ import annotations
@@ -18,13 +22,13 @@ from pathlib import Path
 import pybullet
 import pytest
 
-from robocram.execution.failures import ManipulationPoseUnreachable, NavigationLowLevelFailure
+from robocram.execution.failures import ManipulationPoseUnreachable
 from robocram.plans import pick_object
 from robocram.plans.grasp_failures import PickUpFailed
 from robocram.plans.pick_object import pick_up_object
 from robocram.projection import simulated_robot
 from robocram.scenes.breakfast_scene import breakfast_scene
-from robocram.tf import Pose
+from robocram.tf import Pose, PoseStamped
 from robocram.tf import quaternion as quat
 
 STRETCH = str(Path(__file__).resolve().parents[1] / "data" / "stretch" / "stretch.py")
@@ -32,13 +36,23 @@ DOOR_OPEN = {"fridge_door_joint": 1.4}  # [rad] as the household's opening left 
 STAND = Pose((1.326, 1.843, 0.0), quat.from_euler(0.0, 0.0, -1.720))  # beside the fridge
 MILK_Y = 2.0579  # [m] seed 0's milk, 8 mm deeper than its spot (map)
 LOOKING = {"joint_head_pan": -1.805, "joint_head_tilt": -0.334}  # at the milk, as it found it
-NEAR = 0.02  # [m] a hand left at its grasp has its tool this near the milk's depth
+NEAR = 0.02  # [m] the tool this near where it is meant to be (map y)
+PRE_GRASP = 0.10  # [m] the front grasp's pre-grasp before its grasp
 
 
-def test_a_pick_whose_drive_out_fails_keeps_its_own_failure_and_every_cause(
+def test_a_pick_whose_drive_out_fails_keeps_its_failure_and_goes_out_by_halves(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
     monkeypatch.setattr(pick_object, "_line_stand", lambda *_: None)  # the usual tries only
+    halves: list[bool] = []
+    by_halves = pick_object._out_by_halves
+
+    def spied(name: str, arm: str, pre_grasp: PoseStamped) -> bool:
+        went = by_halves(name, arm, pre_grasp)
+        halves.append(went)
+        return went
+
+    monkeypatch.setattr(pick_object, "_out_by_halves", spied)
     scene = breakfast_scene(STRETCH)
     world = scene.world
     cid = world.physics.client()
@@ -52,12 +66,10 @@ def test_a_pick_whose_drive_out_fails_keeps_its_own_failure_and_every_cause(
         with simulated_robot(world, scene.robot), pytest.raises(PickUpFailed) as raised:
             pick_up_object("milk-1")
         failure = raised.value
-        causes = failure.causes or []
-        drive = causes[-1]
-        assert isinstance(drive, NavigationLowLevelFailure)  # the way out, named last
-        assert failure.__cause__ is drive
-        tries = causes[:-1]
-        assert len(tries) >= 4  # every grasp tried is there, not only the drive
+        assert halves == [True]  # the whole way out failed, by halves it went
+        assert failure.__cause__ is None  # no way out that failed is left to name
+        tries = failure.causes or []
+        assert len(tries) >= 4  # every grasp tried is there
         assert any(
             isinstance(c, ManipulationPoseUnreachable) and "joint limits" in str(c) for c in tries
         )  # the lift over the lift's top
@@ -66,9 +78,11 @@ def test_a_pick_whose_drive_out_fails_keeps_its_own_failure_and_every_cause(
         state = pybullet.getLinkState(
             robot.body_id, robot.link_index[tool], computeForwardKinematics=1, physicsClientId=cid
         )
-        milk = world.pose("milk-1").position
-        # the hand could not back out: its tool is as deep in the fridge as the milk, not
-        # 10 cm before it at the pre-grasp (its arm drew in 5 cm before the drive failed)
-        assert state[4][1] == pytest.approx(milk[1], abs=NEAR)
+        milk = world.object("milk-1")
+        # the hand is out at the front grasp's pre-grasp, 10 cm before the milk's depth
+        assert state[4][1] == pytest.approx(MILK_Y - PRE_GRASP, abs=NEAR)
+        pybullet.performCollisionDetection(cid)
+        inside = pybullet.getClosestPoints(robot.body_id, milk.body_id, 0.0, physicsClientId=cid)
+        assert not inside
     finally:
         world.close()

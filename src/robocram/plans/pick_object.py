@@ -65,6 +65,8 @@ TRIES = (ManipulationLowLevelFailure, GripperLowLevelFailure, NavigationLowLevel
 DRAW_BACK = 0.2  # [m] past the pre-grasp a hand that took a thing from a line stand draws it
 # back (the fridge's milk, gripped 21 cm behind the fridge's front, 10 cm past the pre-grasp:
 # a drive with it still in the shelf turned it into the shelf)
+BACK_OUT_SHARE = 0.5  # of the way from the grasp to the pre-grasp, where a hand whose
+# whole way out failed goes first
 LOWER_LIFTS = (0.5, 0.25)  # of a lift's rise over the grasp, tried in turn from a line stand
 # where the whole rise is out of the arm's reach (the drafted Stretch's lift at the fridge's
 # milk: the tool rises 5.7 cm at most there, the usual lift is 10 cm)
@@ -395,8 +397,23 @@ def _back_out(name: str, way_out: _WayOut) -> PlanFailure | None:
     except ManipulationLowLevelFailure:
         return None  # as before: the next step names what still fails
     except NavigationLowLevelFailure as failure:
-        return failure
+        return None if _out_by_halves(name, way_out.arm, way_out.pre_grasp) else failure
     return None
+
+
+def _out_by_halves(name: str, arm: str, pre_grasp: PoseStamped) -> bool:
+    """Whether the open hand went out to ``pre_grasp`` by way of the point halfway there
+    (:data:`BACK_OUT_SHARE`), after the whole way failed: the drafted Stretch, its base
+    turned at the fridge's milk, could not take the fingers straight back all 10 cm (its
+    telescope drawn in, the base only drives along its heading), and the drive that turns
+    it swept a finger 5.1 mm into the milk; from halfway the turn clears it. Best effort."""
+    here = transform_pose(PoseStamped(current_robot().tool_frame(arm)), "map")
+    try:
+        _move(arm, towards(pre_grasp, here, BACK_OUT_SHARE), **GRASPING, touching=name)
+        _move(arm, pre_grasp, **GRASPING, touching=name)
+    except (ManipulationLowLevelFailure, NavigationLowLevelFailure):
+        return False
+    return True
 
 
 def _hand_out(robot: KnownRobot, name: str, way_out: _WayOut, causes: list[Exception]) -> None:
