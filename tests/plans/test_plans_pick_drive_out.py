@@ -17,8 +17,6 @@ these (``test_plans_pick_line_stand.py``) is left out here.
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import pybullet
 import pytest
 
@@ -27,15 +25,9 @@ from robocram.plans import pick_object
 from robocram.plans.grasp_failures import PickUpFailed
 from robocram.plans.pick_object import pick_up_object
 from robocram.projection import simulated_robot
-from robocram.scenes.breakfast_scene import breakfast_scene
-from robocram.tf import Pose, PoseStamped
-from robocram.tf import quaternion as quat
+from robocram.tf import PoseStamped
+from tests.plans.stretch_at_the_milk import MILK_Y, stretch_at_the_milk
 
-STRETCH = str(Path(__file__).resolve().parents[1] / "data" / "stretch" / "stretch.py")
-DOOR_OPEN = {"fridge_door_joint": 1.4}  # [rad] as the household's opening left it
-STAND = Pose((1.326, 1.843, 0.0), quat.from_euler(0.0, 0.0, -1.720))  # beside the fridge
-MILK_Y = 2.0579  # [m] seed 0's milk, 8 mm deeper than its spot (map)
-LOOKING = {"joint_head_pan": -1.805, "joint_head_tilt": -0.334}  # at the milk, as it found it
 NEAR = 0.02  # [m] the tool this near where it is meant to be (map y)
 PRE_GRASP = 0.10  # [m] the front grasp's pre-grasp before its grasp
 
@@ -53,16 +45,10 @@ def test_a_pick_whose_drive_out_fails_keeps_its_failure_and_goes_out_by_halves(
         return went
 
     monkeypatch.setattr(pick_object, "_out_by_halves", spied)
-    scene = breakfast_scene(STRETCH)
+    scene = stretch_at_the_milk()
     world = scene.world
     cid = world.physics.client()
     try:
-        world.set_joint_states("kitchen", DOOR_OPEN)
-        milk_at = world.pose("milk-1")
-        x, _, z = milk_at.position
-        world.set_pose("milk-1", Pose((x, MILK_Y, z), milk_at.orientation))
-        world.set_pose(scene.robot, STAND)
-        world.set_joint_states(scene.robot, LOOKING)
         with simulated_robot(world, scene.robot), pytest.raises(PickUpFailed) as raised:
             pick_up_object("milk-1")
         failure = raised.value

@@ -15,7 +15,6 @@ robot nor the milk touches the kitchen.
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import pybullet
 import pytest
@@ -23,35 +22,17 @@ import pytest
 from robocram.costmaps.line_stand import LINE_MARGIN, line_stand
 from robocram.plans.pick_object import pick_up_object
 from robocram.projection import simulated_robot
-from robocram.scenes.breakfast_scene import breakfast_scene
-from robocram.scenes.environment_scene import EnvironmentScene
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
+from tests.plans.stretch_at_the_milk import stretch_at_the_milk
 
-STRETCH = str(Path(__file__).resolve().parents[1] / "data" / "stretch" / "stretch.py")
-DOOR_OPEN = {"fridge_door_joint": 1.4}  # [rad] as the household's opening left it
-STAND = Pose((1.326, 1.843, 0.0), quat.from_euler(0.0, 0.0, -1.720))  # beside the fridge
-MILK_Y = 2.0579  # [m] seed 0's milk, 8 mm deeper than its spot (map)
-LOOKING = {"joint_head_pan": -1.805, "joint_head_tilt": -0.334}  # at the milk, as it found it
 RISE = 0.05  # [m] the milk lifted over where it stood (half the usual 10 cm)
 FRONT = ((0.6, 1.9579, 1.162), (0.6, 2.0579, 1.162))  # the front grasp's pre-grasp, grasp
 LEVEL_HAND = (0.707107, 0.707107, 0.0, 0.0)  # its orientation (map)
 
 
-def _scene() -> EnvironmentScene:
-    scene = breakfast_scene(STRETCH)
-    world = scene.world
-    world.set_joint_states("kitchen", DOOR_OPEN)
-    milk_at = world.pose("milk-1")
-    x, _, z = milk_at.position
-    world.set_pose("milk-1", Pose((x, MILK_Y, z), milk_at.orientation))
-    world.set_pose(scene.robot, STAND)
-    world.set_joint_states(scene.robot, LOOKING)
-    return scene
-
-
 def test_the_line_stand_lays_the_telescope_on_the_approach() -> None:
-    scene = _scene()
+    scene = stretch_at_the_milk()
     world = scene.world
     try:
         out, grasp = (Pose(p, LEVEL_HAND) for p in FRONT)
@@ -69,7 +50,7 @@ def test_the_line_stand_lays_the_telescope_on_the_approach() -> None:
 
 
 def test_the_stretch_takes_the_milk_out_of_the_fridge_from_a_line_stand() -> None:
-    scene = _scene()
+    scene = stretch_at_the_milk()
     world = scene.world
     cid = world.physics.client()
     try:
