@@ -14,15 +14,14 @@ from __future__ import annotations
 from collections.abc import Mapping
 from pathlib import Path
 
-import pybullet_data
-
 import robocram
 from robocram.traces.errors import SceneFileMissing
+from robocram.world.catalogue import PYBULLET_DATA
 
 # the packages whose files a scene names relative to them, by their directory's name
 PACKAGES = {
     "robocram": Path(robocram.__file__).resolve().parent,
-    "pybullet_data": Path(pybullet_data.getDataPath()).resolve(),
+    "pybullet_data": PYBULLET_DATA.resolve(),
 }
 
 

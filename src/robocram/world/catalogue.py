@@ -16,7 +16,8 @@ import pybullet_data
 from robocram.world.body_spec import BodySpec, ShapeSpec, UrdfSpec
 from robocram.world.errors import UnknownItemError
 
-MUG_URDF = Path(pybullet_data.getDataPath()) / "objects" / "mug.urdf"
+PYBULLET_DATA = Path(pybullet_data.getDataPath())  # pybullet's own models
+MUG_URDF = PYBULLET_DATA / "objects" / "mug.urdf"
 BOWL_URDF = Path(__file__).resolve().parent / "data" / "bowl.urdf"
 
 _ITEMS: Mapping[str, BodySpec] = MappingProxyType(
