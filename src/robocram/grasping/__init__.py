@@ -1,6 +1,7 @@
 """Grasps from an object's geometry and a hand's size, the same for every robot.
 
-:func:`grasps` lists the grasps (top, front, left, right, rim, handle) a hand can take of
+:func:`grasps` lists the grasps (top, front, left, right, rim, handle; a suction hand's
+side) a hand can take of
 an object's shape; :func:`grasp_candidates` does so for an object in a world, with the
 type's knowledge-base facts, best first and in the map; :func:`install_grasp_predicates`
 opens them to plans as ``object_grasp/7`` (docs/grasping.md).

@@ -39,7 +39,7 @@ class UnknownGraspError(GraspingError, ValueError):
 
 
 class ObjectUntouchable(ObjectUngraspable):
-    """No face of the object a suction hand may touch from above among the grasps allowed."""
+    """No face of the object a suction hand may touch among the grasps allowed."""
 
     def __init__(self, object: str, allowed: tuple[str, ...]) -> None:  # noqa: A002
         self.object = object
@@ -48,7 +48,7 @@ class ObjectUntouchable(ObjectUngraspable):
         self.allowed = allowed
         GraspingError.__init__(
             self,
-            f"a suction hand holds {object!r} only from above (top, or rim if hollow), and "
-            f"its grasps allow {', '.join(allowed) or 'none'}: allow 'top' or 'rim' "
+            f"a suction hand holds {object!r} only by a face (top, rim if hollow, side), and "
+            f"its grasps allow {', '.join(allowed) or 'none'}: allow 'top', 'rim' or 'side' "
             "(object_grasps/2), or use a hand with fingers",
         )

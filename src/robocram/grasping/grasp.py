@@ -10,6 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from robocram.tf import Pose, Vector3
+from robocram.tf import quaternion as quat
 
 
 @dataclass(frozen=True)
@@ -17,7 +18,8 @@ class Grasp:
     """A grasp of an object by one hand, in the object's frame.
 
     Attributes:
-        name: CRAM's name of the side it grasps from: top, front, left, right, rim, handle.
+        name: CRAM's name of the side it grasps from: top, front, left, right, rim, handle
+            (and a suction hand's side).
         turn: [rad] the hand's turn about its approach axis (candidates of one grasp).
         tool: the tool frame's pose in the object's frame when grasping.
         approach: unit direction [object frame] the tool moves in to grasp.
@@ -29,6 +31,9 @@ class Grasp:
             raised (0: flat); tried after the flat ones of its side.
         deeper: [m] a deep rim grasp's tool frame lies this far below the rim grasp's
             (0: not deep); tried after every other grasp of its name.
+        lift_back: [m] the lift also draws the tool this far back along ``approach`` (0:
+            straight up): a suction hand's side touch slides the object out towards the
+            arm as it rises, where an arm reaching over a counter has no room to rise.
     """
 
     name: str
@@ -41,6 +46,7 @@ class Grasp:
     across: Vector3
     tilt: float = 0.0
     deeper: float = 0.0
+    lift_back: float = 0.0
 
     def pre_grasp_tool(self) -> Pose:
         """The tool's pose [object frame] before it moves in."""
@@ -53,5 +59,8 @@ class Grasp:
         """Grasp, pre-grasp and lifted tool poses in the map for the object there."""
         grasp = object_in_map * self.tool
         x, y, z = grasp.position
+        if self.lift_back:
+            ax, ay, _ = quat.rotate(object_in_map.orientation, self.approach)
+            x, y = x - ax * self.lift_back, y - ay * self.lift_back
         lifted = Pose((x, y, z + self.lift), grasp.orientation)
         return grasp, object_in_map * self.pre_grasp_tool(), lifted

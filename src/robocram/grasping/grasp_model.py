@@ -25,9 +25,11 @@ Grasps (CRAM's names), in the object's frame (x forward, z up):
 Each needs its width plus :data:`CLEARANCE`; a grasp needing more than the hand opens is
 not offered, and when none is left :class:`ObjectUngraspable` names both widths.
 
-A suction hand (``Hand.suction``) closes on nothing: it touches. Its grasps come from above
-onto a face (``suction_grasps.py``): ``top`` puts the tool frame on the top face over the
-body's axis, ``rim`` on a hollow object's rim; it needs no opening.
+A suction hand (``Hand.suction``) closes on nothing: it touches. Its grasps put the tool
+frame onto a face (``suction_grasps.py``): ``top`` on the top face over the body's axis,
+``rim`` on a hollow object's rim, ``side`` on a side face at half height, coming in level
+(last: a suction hand's only grasp from the side, where fingers have ``front``, ``left``
+and ``right``; a hand with fingers has none of that name); it needs no opening.
 """
 
 from __future__ import annotations
@@ -48,7 +50,7 @@ from robocram.tf import Pose, Vector3
 from robocram.tf import quaternion as quat
 from robocram.tf.quaternion import Quaternion
 
-GRASP_NAMES = ("top", "front", "left", "right", "rim", "handle")
+GRASP_NAMES = ("top", "front", "left", "right", "rim", "handle", "side")
 BODY_GRASPS = ("top", "front", "left", "right")  # around the body: a hand as wide as it
 CLEARANCE = 0.002  # [m] added to an object's width: the hand must open this much wider
 TOP_STRADDLE = 0.04  # [m] a top grasp's fingertips go at most this far below the top: a
@@ -272,6 +274,8 @@ def _of_name(shape: ObjectShape, hand: Hand, name: str) -> Iterator[Grasp]:
         return _rim(shape, hand)
     if name == "handle":
         return _handle(shape, hand)
+    if name == "side":
+        return iter(())  # a suction hand's touch (suction_grasps.py); fingers: front, left, right
     raise UnknownGraspError(name, GRASP_NAMES)
 
 

@@ -33,6 +33,7 @@ from robocram.plans.culprits import blamed, culprit_clause
 from robocram.plans.detect_past_hand import detect_past_hand
 from robocram.plans.drawer_side_stands import side_stands
 from robocram.plans.errors import FetchExhausted, PlanArgumentError
+from robocram.plans.flank_stands import flank_stands
 from robocram.plans.grasp_stands import grasp_point_stands
 from robocram.plans.known_robot import KnownRobot, current_robot
 from robocram.plans.location_poses import location_poses, next_pose
@@ -355,6 +356,11 @@ def fetch(
     if tries and _out_of_reach(causes):  # last: nearer, where the camera may not see it
         near = near_stands(robot, where, arm)
         found = _first_held(near, picking(unseen=True), causes, log, stand_retries)
+        if found is not None:
+            return found
+    if tries and opened is None:  # last: the base turned a quarter, its flank nearer
+        flank = flank_stands(robot, where, arm)
+        found = _first_held(flank, picking(), causes, log, stand_retries)
         if found is not None:
             return found
     raise FetchExhausted(
