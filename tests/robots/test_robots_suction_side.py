@@ -4,6 +4,7 @@ it; its grasp list starts with the top grasps it had before the side grasp came.
 
 from __future__ import annotations
 
+import math
 import warnings
 from pathlib import Path
 
@@ -12,10 +13,15 @@ import pytest
 
 from robocram.grasping import grasp_candidates
 from robocram.plans.basic_actions import park_arms
+from robocram.plans.fetch import _suction
+from robocram.plans.flank_stands import FLANK_DISTANCES, flank_stands
+from robocram.plans.known_robot import current_robot
 from robocram.plans.pick_object import pick_up_object
+from robocram.plans.stands import yaw_of
 from robocram.projection import simulated_robot
 from robocram.robots import draft_description, example_robot_data_folder
 from robocram.scenes import tabletop_scene
+from robocram.tf import PoseStamped
 
 pytestmark = pytest.mark.filterwarnings("ignore::robocram.robots.DescriptionWarning")
 
@@ -79,3 +85,35 @@ def test_the_side_grasp_holds_the_mug_by_its_side(module: Path) -> None:
     on_mug = touch[6][2] - rise  # the touch on the mug, where the mug stood
     height = high[2] - low[2]
     assert low[2] + 0.3 * height < on_mug < low[2] + 0.7 * height  # its side, half-way up
+
+
+def test_only_a_suction_hand_gets_flank_stands_on_its_side_of_the_object(module: Path) -> None:
+    """The fetch's last flank stands are a suction hand's (the PR2's fingers have side
+    grasps of their own); they stand at the flank distances from the object, on the
+    robot's side of it, the base turned a quarter from facing it."""
+    for robot_name, suction in ((str(module), True), ("pr2", False)):
+        scene = tabletop_scene(robot_name)
+        world = scene.world
+        try:
+            with simulated_robot(world, scene.robot):
+                robot = current_robot()
+                assert _suction(robot, None) is suction
+                mug = world.pose("mug-1")
+                where = PoseStamped("map", mug.position, mug.orientation)
+                stands = list(flank_stands(robot, where, None))
+                base = world.pose(scene.robot).position
+        finally:
+            world.close()
+        assert len(stands) == len(FLANK_DISTANCES) * 2
+        mx, my, _ = where.pose.position
+        distances = [d for d in FLANK_DISTANCES for _ in (0, 1)]
+        for (pose, _), distance in zip(stands, distances, strict=True):
+            sx, sy, _ = pose.position
+            assert math.hypot(sx - mx, sy - my) == pytest.approx(distance, abs=1e-9)
+            facing = math.atan2(my - sy, mx - sx)
+            turn = (yaw_of(pose) - facing + math.pi) % (2 * math.pi) - math.pi
+            assert abs(turn) == pytest.approx(math.pi / 2, abs=1e-9)
+            # on the robot's side of the object (a bare table: no axes to square it to)
+            assert math.atan2(sy - my, sx - mx) == pytest.approx(
+                math.atan2(base[1] - my, base[0] - mx), abs=1e-9
+            )

@@ -281,6 +281,13 @@ def _first_held(
     return None
 
 
+def _suction(robot: KnownRobot, arm: str | None) -> bool:
+    """Whether ``arm`` (or, for None, any arm) is a suction hand: only a suction hand's level
+    side touch gains from a flank stand; fingered hands have their own side grasps from
+    the usual stands."""
+    return any(robot.is_suction(a) for a in ([arm] if arm is not None else robot.arms()))
+
+
 def fetch(
     object: ObjectDesignator | str,  # noqa: A002 - CRAM's key
     arm: str | None = None,
@@ -358,8 +365,8 @@ def fetch(
         found = _first_held(near, picking(unseen=True), causes, log, stand_retries)
         if found is not None:
             return found
-    if tries and opened is None:  # last: the base turned a quarter, its flank nearer
-        flank = flank_stands(robot, where, arm)
+    if tries and opened is None and _suction(robot, arm):  # last: the base turned a
+        flank = flank_stands(robot, where, arm)  # quarter, its flank nearer (side touches)
         found = _first_held(flank, picking(), causes, log, stand_retries)
         if found is not None:
             return found

@@ -6,7 +6,8 @@ its flanks 0.40 m: facing the kitchen counter, its base stands 0.74 m from the m
 and its arm's forearm meets the counter's top taking the mug's side (49 mm deep at best of
 75 IK solutions); turned a quarter, its middle stands 0.67 m from the mug, the forearm
 clears the top by 13 mm, and it lifts the mug by its side. After every usual stand failed,
-the fetch tries these: the base's middle :data:`FLANK_DISTANCES` from the object on the
+the fetch of a suction hand (no gripper joints; fingered hands have their own side grasps)
+tries these: the base's middle :data:`FLANK_DISTANCES` from the object on the
 robot's side of it, turned a quarter either way (a stand whose base meets the counter is
 refused to the drive, which costs no try). The side is the robot's bearing from the
 object snapped to the axes of the environment whose surfaces things stand on
@@ -21,7 +22,7 @@ from collections.abc import Iterator
 
 from robocram.knowledge.scene_predicates import SUPPORTING_SURFACE
 from robocram.knowledge.world_predicates import OBJECT_POSE
-from robocram.logic import current_kb
+from robocram.logic import UnknownPredicateError, current_kb
 from robocram.plans.known_robot import KnownRobot
 from robocram.plans.stands import map_pose, planar_pose, yaw_of
 from robocram.tf import Pose, PoseStamped
@@ -35,7 +36,10 @@ def squared(bearing: float) -> float:
     """``bearing`` [rad, map] snapped to the nearest axis of the environment with
     supporting surfaces; as it is when the KB names none (or not its pose)."""
     kb = current_kb()
-    surface = SUPPORTING_SURFACE.first(kb)
+    try:
+        surface = SUPPORTING_SURFACE.first(kb)
+    except UnknownPredicateError:  # no environment's semantics (a bare table)
+        return bearing
     row = None if surface is None else OBJECT_POSE.first(kb, object=surface.environment)
     if row is None:
         return bearing

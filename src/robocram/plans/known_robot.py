@@ -187,6 +187,11 @@ class KnownRobot:
         row = rp.HAND_LINKS.first(current_kb(), robot=self.name, arm=arm)
         return set(row.links) if row is not None else set()
 
+    def is_suction(self, arm: str) -> bool:
+        """Whether ``arm``'s hand is a suction hand: no gripper joint (it holds what its tool
+        frame touches)."""
+        return rp.GRIPPER_JOINT.first(current_kb(), robot=self.name, arm=arm) is None
+
     def gripper_links(self, arm: str) -> set[str]:
         """The links ``arm``'s gripper joints move (its fingers, jaws)."""
         return {row.link for row in rp.GRIPPER_LINK.answers(current_kb(), robot=self.name, arm=arm)}
