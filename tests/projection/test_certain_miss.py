@@ -119,7 +119,9 @@ def test_every_solution_has_the_tip_in_the_cube_within_the_bound(world: World) -
     assert max(depths) - min(depths) < bound  # the premise: within the bound of each other
 
 
-def _fail(world: World, target: Pose) -> tuple[ManipulationPoseUnreachable, int]:
+def _fail(
+    world: World, target: Pose, explain: bool = True
+) -> tuple[ManipulationPoseUnreachable, int]:
     """move_tcp's failure to ``target`` and how many candidates its checks were asked."""
     robot = ProjectedRobot.of(world, "pr2")
     before = world.joint_states("pr2")
@@ -134,7 +136,7 @@ def _fail(world: World, target: Pose) -> tuple[ManipulationPoseUnreachable, int]
     _Check.__call__ = counted  # type: ignore[method-assign]
     try:
         with pytest.raises(ManipulationPoseUnreachable) as failed:
-            arm.move_tcp(robot, "right", target)
+            arm.move_tcp(robot, "right", target, explain=explain)
     finally:
         _Check.__call__ = check  # type: ignore[method-assign]
     assert world.joint_states("pr2") == before  # every candidate put back
@@ -153,6 +155,15 @@ def test_move_tcp_fails_as_with_the_whole_search(
     assert judged.colliding_pairs == whole.colliding_pairs
     assert (TIP, "cube") in (whole.colliding_pairs or ())
     assert whole_asked - judged_asked > 50  # the torso-held try: one check, not ~100
+
+
+def test_a_move_whose_failure_is_not_read_stops_at_once(world: World) -> None:
+    target = _tip_in_cube(world)
+    whole, _ = _fail(world, target)
+    stopped, asked = _fail(world, target, explain=False)
+    assert isinstance(stopped, CertainMiss) and asked == 2  # one per query, torso held, free
+    assert stopped.colliding_pairs is not None and len(stopped.colliding_pairs) == 1
+    assert set(stopped.colliding_pairs) <= set(whole.colliding_pairs or ())
 
 
 def test_the_judge_stops_only_a_deep_contact(world: World) -> None:

@@ -95,6 +95,7 @@ def _solve(
     max_restarts: int = IK_RESTARTS,
     base_travel: PlanarBase = BASE_TRAVEL,
     touching: str | None = None,
+    explain: bool = True,
 ) -> IKResult:
     check = collision_check(robot, arm, mode, touching)
     seed = robot.world.joint_states(robot.name)
@@ -105,8 +106,9 @@ def _solve(
             options = IKOptions(
                 use_torso=use_torso, base=base, max_restarts=max_restarts, random_seed=random_seed
             )
-            # only the last query's failure is read: an earlier one may stop once it is sure
-            judge = None if k == len(attempts) - 1 else _judge(robot, arm, mode, touching, options)
+            # only the last query's failure is read (if at all): another may stop once sure
+            last = k == len(attempts) - 1
+            judge = None if last and explain else _judge(robot, arm, mode, touching, options)
             try:
                 with contextlib.nullcontext() if judge is None else judged(check, judge):
                     result = solve_ik(
@@ -119,6 +121,8 @@ def _solve(
                         stop_check=checkpoint,  # a stopped task ends the search within a descent
                     )
             except CertainMiss:
+                if last:
+                    raise
                 continue
             if result.success:
                 break
@@ -149,6 +153,7 @@ def move_tcp(
     max_restarts: int = IK_RESTARTS,
     base_travel: PlanarBase = BASE_TRAVEL,
     touching: str | None = None,
+    explain: bool = True,
 ) -> Pose:
     """Put ``arm``'s tool frame at ``target`` (map unless stamped); return it in ``map``.
 
@@ -162,11 +167,14 @@ def move_tcp(
     solution with a base part drives the base first, then moves the arm. ``max_restarts``
     bounds each IK query (a best-effort motion may ask for fewer); ``base_travel`` how
     far IK may move the base (a door's arc followed step by step needs little).
+    ``explain`` False: the caller reads only that the move failed, not why, so a query
+    sure to fail (:mod:`~robocram.projection.certain_miss`) stops at its first refused
+    solution and the failure names that solution's one pair.
 
     Raises:
         ManipulationPoseUnreachable: IK found no collision-free solution; the arm stays.
             The message names the colliding link pairs and advises what applies
-            (``reach_failure``).
+            (``reach_failure``); with ``explain`` False it may be a ``CertainMiss``.
         ManipulationGoalNotReached: the applied joints miss the target (limits clamped).
     """
     spec = robot.arm(arm)
@@ -175,7 +183,7 @@ def move_tcp(
     checked = planned_against(robot)  # what IK and the motion are planned against
     result = _solve(
         robot, arm, target_in_base, collision_mode, random_seed, move_base, max_restarts,
-        base_travel, touching,
+        base_travel, touching, explain,
     )  # fmt: skip
     if not result.success:
         desc = robot.description
