@@ -15,6 +15,7 @@ one), so a projection gives bit-identical joints on an idle and a loaded machine
 
 from __future__ import annotations
 
+import contextlib
 from dataclasses import replace
 
 import numpy as np
@@ -30,6 +31,7 @@ from robocram.kinematics import (
     IKOptions,
     IKResult,
     PlanarBase,
+    arm_joints,
     base_in_ik,
     forward_kinematics,
     solve_ik,
@@ -46,10 +48,12 @@ from robocram.motion.tool_goal import (
 )
 from robocram.motion.whole_body_tool_path import plan_whole_body_tool_path
 from robocram.projection.arm_ways import ArmWay
+from robocram.projection.certain_miss import CertainMiss, CertainMissJudge, rigid_links
 from robocram.projection.collision_mode import (
     allowed_links,
     collision_check,
     hand_contact,
+    judged,
     known_mode,
     putting_back_once,
 )
@@ -91,29 +95,52 @@ def _solve(
     max_restarts: int = IK_RESTARTS,
     base_travel: PlanarBase = BASE_TRAVEL,
     touching: str | None = None,
+    explain: bool = True,
 ) -> IKResult:
     check = collision_check(robot, arm, mode, touching)
     seed = robot.world.joint_states(robot.name)
     result = IKResult(False)
+    attempts = _attempts(robot, arm, move_base, base_travel)
     with robot.ik_lock, putting_back_once(check):  # the robot stands as before after
-        for use_torso, base in _attempts(robot, arm, move_base, base_travel):
-            result = solve_ik(
-                robot.description,
-                arm,
-                target_in_base,
-                seed=seed,
-                options=IKOptions(
-                    use_torso=use_torso,
-                    base=base,
-                    max_restarts=max_restarts,
-                    random_seed=random_seed,
-                ),
-                collision_check=check,
-                stop_check=checkpoint,  # a stopped task ends the search within one descent
+        for k, (use_torso, base) in enumerate(attempts):
+            options = IKOptions(
+                use_torso=use_torso, base=base, max_restarts=max_restarts, random_seed=random_seed
             )
+            # only the last query's failure is read (if at all): another may stop once sure
+            last = k == len(attempts) - 1
+            judge = None if last and explain else _judge(robot, arm, mode, touching, options)
+            try:
+                with contextlib.nullcontext() if judge is None else judged(check, judge):
+                    result = solve_ik(
+                        robot.description,
+                        arm,
+                        target_in_base,
+                        seed=seed,
+                        options=options,
+                        collision_check=check,
+                        stop_check=checkpoint,  # a stopped task ends the search within a descent
+                    )
+            except CertainMiss:
+                if last:
+                    raise
+                continue
             if result.success:
                 break
     return result
+
+
+def _judge(
+    robot: ProjectedRobot, arm: str, mode: str, touching: str | None, options: IKOptions
+) -> CertainMissJudge:
+    """What stops the query of ``options`` once a refused solution shows none can be free."""
+    desc = robot.description
+    tool = options.frame or robot.arm(arm).tool_frame
+    moving = arm_joints(desc, arm, options.use_torso)
+    hand = hand_contact(robot, arm, mode, touching)
+    return CertainMissJudge(
+        robot, tool, rigid_links(desc.model, tool, moving), hand,
+        options.position_tolerance, options.orientation_tolerance,
+    )  # fmt: skip
 
 
 def move_tcp(
@@ -126,6 +153,7 @@ def move_tcp(
     max_restarts: int = IK_RESTARTS,
     base_travel: PlanarBase = BASE_TRAVEL,
     touching: str | None = None,
+    explain: bool = True,
 ) -> Pose:
     """Put ``arm``'s tool frame at ``target`` (map unless stamped); return it in ``map``.
 
@@ -139,11 +167,14 @@ def move_tcp(
     solution with a base part drives the base first, then moves the arm. ``max_restarts``
     bounds each IK query (a best-effort motion may ask for fewer); ``base_travel`` how
     far IK may move the base (a door's arc followed step by step needs little).
+    ``explain`` False: the caller reads only that the move failed, not why, so a query
+    sure to fail (:mod:`~robocram.projection.certain_miss`) stops at its first refused
+    solution and the failure names that solution's one pair.
 
     Raises:
         ManipulationPoseUnreachable: IK found no collision-free solution; the arm stays.
             The message names the colliding link pairs and advises what applies
-            (``reach_failure``).
+            (``reach_failure``); with ``explain`` False it may be a ``CertainMiss``.
         ManipulationGoalNotReached: the applied joints miss the target (limits clamped).
     """
     spec = robot.arm(arm)
@@ -152,7 +183,7 @@ def move_tcp(
     checked = planned_against(robot)  # what IK and the motion are planned against
     result = _solve(
         robot, arm, target_in_base, collision_mode, random_seed, move_base, max_restarts,
-        base_travel, touching,
+        base_travel, touching, explain,
     )  # fmt: skip
     if not result.success:
         desc = robot.description

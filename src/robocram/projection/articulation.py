@@ -172,7 +172,7 @@ def _step(robot: ProjectedRobot, arm: str, hold: _Hold, held: float, value: floa
     try:
         move_tcp(
             robot, arm, goal, HOLD_MODE, move_base=True, base_travel=STEP_TRAVEL,
-            touching=f"{part}/{handle}",
+            touching=f"{part}/{handle}", explain=False,
         )  # fmt: skip
     except (ManipulationPoseUnreachable, ManipulationGoalNotReached, NavigationLowLevelFailure):
         world.set_joint_states(part, {joint: held})
@@ -206,13 +206,13 @@ def _take_handle(
     in_front = held * Pose((PRE_GRASP, 0.0, 0.0)) * grasp
     try:
         opened = _opened(robot, arm)
-        move_tcp(robot, arm, in_front, move_base=True, base_travel=REACH_TRAVEL)
+        move_tcp(robot, arm, in_front, move_base=True, base_travel=REACH_TRAVEL, explain=False)
         if not opened:
             open_gripper(robot, arm)
         checkpoint()
         move_tcp(
             robot, arm, at_handle, HOLD_MODE, move_base=True, base_travel=STEP_TRAVEL,
-            touching=f"{part}/{handle}",
+            touching=f"{part}/{handle}", explain=False,
         )  # fmt: skip
     except (
         ManipulationPoseUnreachable,
@@ -454,7 +454,7 @@ def _let_go(
         try:
             move_tcp(
                 robot, arm, back, HOLD_MODE, move_base=True, max_restarts=LET_GO_RESTARTS,
-                touching=f"{part}/{handle}",
+                touching=f"{part}/{handle}", explain=False,
             )  # fmt: skip
         except (ManipulationPoseUnreachable, ManipulationGoalNotReached, NavigationLowLevelFailure):
             continue  # a door wide open can leave the base no room to back off either

@@ -23,6 +23,7 @@ from robocram.kinematics import split_base_motion
 from robocram.motion.collision_modes import COLLISION_MODES, hand_bound, hand_links
 from robocram.motion.hand_contact import HandContact
 from robocram.motion.self_collision_matrix import SelfCollisionMatrix
+from robocram.projection.certain_miss import CertainMissJudge
 from robocram.projection.errors import ProjectionError
 from robocram.projection.ik_start import IKStart
 from robocram.projection.navigation import base_moved_by
@@ -69,6 +70,7 @@ class _Check:
     hand: HandContact | None = None  # the hand's bounded contact (allow_hand)
     _start: IKStart | None = field(default=None, repr=False)
     _once: bool = field(default=False, repr=False)  # put back after the query only
+    _judge: CertainMissJudge | None = field(default=None, repr=False)  # may stop a query
 
     def __call__(self, candidate: Mapping[str, float]) -> list[tuple[str, str]]:
         joints, motion = split_base_motion(candidate)  # IK that moves the base too
@@ -78,7 +80,9 @@ class _Check:
             start = self._start = IKStart.read(self.robot, CONTACT_DISTANCE, pairs)
         defer = self._once and motion is None  # a moved base goes back at every candidate
         with base_moved_by(self.robot, motion):
-            hits = start.colliding(joints, self.allowed, motion is not None, defer, self.hand)
+            hits = start.colliding(
+                joints, self.allowed, motion is not None, defer, self.hand, self._judge
+            )
         if motion is not None:
             start.settled()  # the base is back where the start stood
         return hits
@@ -94,6 +98,24 @@ class _Check:
             self._once = False
             if self._start is not None:
                 self._start.put_back()
+
+    @contextlib.contextmanager
+    def judged(self, judge: CertainMissJudge) -> Iterator[None]:
+        """Inside, a refused candidate is shown to ``judge``, which stops the query
+        (raising :class:`~robocram.projection.certain_miss.CertainMiss`) when no
+        solution of it can be free."""
+        self._judge = judge
+        try:
+            yield
+        finally:
+            self._judge = None
+
+
+def judged(check: object, judge: CertainMissJudge) -> contextlib.AbstractContextManager[None]:
+    """:meth:`_Check.judged` of a check made here; nothing for another one (or none)."""
+    if isinstance(check, _Check):
+        return check.judged(judge)
+    return contextlib.nullcontext()
 
 
 def putting_back_once(check: object) -> contextlib.AbstractContextManager[None]:

@@ -12,7 +12,7 @@ counters say; no state is compared); nothing but the robot may move in between.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 
 from robocram.motion.hand_contact import HandContact, contact_depth
@@ -94,11 +94,13 @@ class IKStart:
         base_moves: bool,
         defer: bool = False,
         hand: HandContact | None = None,
+        judge: Callable[[list[LinkPair]], None] | None = None,
     ) -> list[LinkPair]:
         """The ``(robot link, object)`` and self pairs in contact at ``joints``, links in
         ``allowed`` and the ``hand`` on what it acts on within its bound excepted;
         ``base_moves``: every link moved. The robot is put back after, or with ``defer``
-        left there until the next candidate or :meth:`put_back`."""
+        left there until the next candidate or :meth:`put_back`. ``judge`` is shown the
+        object pairs, if any, while the robot stands at the candidate (it may raise)."""
         world = self.robot.world
         body = world.object(self.robot.name)
         moved, pairs = self._moved(body, tuple(joints), base_moves or not self.alone)
@@ -120,6 +122,8 @@ class IKStart:
                 for link, named in [p for p in hits if hand.covers(*p)]:
                     if contact_depth(world, body, link, named) <= hand.depth:
                         del hits[(link, named)]
+            if judge is not None and hits:
+                judge(list(hits))
         finally:
             if not defer:
                 world.set_joint_states(body, before, carry)
