@@ -37,7 +37,7 @@ from types import CodeType
 
 __all__ = ["MAX_ENTRIES", "CodeTable", "install"]
 
-MAX_ENTRIES = 20_000  # sources kept in the file before it drops what this process left unused
+MAX_ENTRIES = 5_000  # sources kept before the file drops what this process left unused
 _KIND = "dataclass-code"
 _DIGEST = 32  # bytes of SHA-256 in front of the file
 
