@@ -19,3 +19,11 @@ def test_a_scene_built_while_another_lives_shares_its_parses() -> None:
     finally:
         first.world.close()
         second.world.close()
+
+
+def test_a_scene_parses_its_environment_once() -> None:
+    scene = kitchen_scene("pr2")
+    try:  # the check read the file as the world's load does: the load shares that model
+        assert scene.world.object(scene.kitchen).urdf_model is scene.checked
+    finally:
+        scene.world.close()

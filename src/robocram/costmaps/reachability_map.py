@@ -28,9 +28,10 @@ from robocram.costmaps.batch_fk import batch_frame_poses
 from robocram.costmaps.grasps import approach_axis
 from robocram.kinematics import arm_joints
 from robocram.kinematics.robot_kinematics import robot_kinematics
-from robocram.robots import RobotDescription, RobotModel, link_pose, load_description
+from robocram.robots import RobotDescription, RobotModel, load_description
 from robocram.robots.disk_cache import cache_dir
 from robocram.robots.link_centre import link_box
+from robocram.robots.model_pose import resting_link_poses
 from robocram.tf import Pose
 
 SAMPLES = 100_000  # FK samples per arm
@@ -141,11 +142,12 @@ def _lowest_point(model: RobotModel) -> float:
     """[m] The lowest corner of any link's box in the base frame, at most 0 (kept with the
     model: every map look-up keys on it, and it walks each link's chain)."""
     lowest = 0.0
+    poses = resting_link_poses(model)
     for name, link in model.links.items():
         box = link_box(link)
         if box is None:
             continue
-        pose = link_pose(model, name)
+        pose = poses[name]
         (x0, y0, z0), (x1, y1, z1) = box
         for corner in itertools.product((x0, x1), (y0, y1), (z0, z1)):
             lowest = min(lowest, (pose * Pose(corner)).position[2])

@@ -26,7 +26,7 @@ from robocram.robots.description_check import check_values
 from robocram.robots.errors import GripperDescriptionError
 from robocram.robots.gripper import GripperDescription, GripperJoint
 from robocram.robots.link_centre import link_centre, link_points
-from robocram.robots.model_pose import finite_limits, link_pose, subtree_links
+from robocram.robots.model_pose import finite_limits, link_pose, link_poses, subtree_links
 from robocram.robots.robot_model import RobotModel
 from robocram.tf import Pose
 
@@ -185,8 +185,10 @@ def widest_opening(
     growth beyond that gap; a smaller closed gap is finger pads or the bounds of meshes
     (Boxy 6.5 mm, Baxter 16 mm) and is not added.
     """
-    closed = [link_pose(model, f, gripper.at(0.0)).position for f in fingers]
-    opened = [link_pose(model, f, gripper.at(1.0)).position for f in fingers]
+    at_closed = link_poses(model, fingers, gripper.at(0.0))
+    at_open = link_poses(model, fingers, gripper.at(1.0))
+    closed = [at_closed[f].position for f in fingers]
+    opened = [at_open[f].position for f in fingers]
     pairs = itertools.combinations(range(len(fingers)), 2)
     growth, i, j = max(
         (

@@ -23,7 +23,7 @@ from dataclasses import replace
 import numpy as np
 
 from robocram.robots.description import ArmDescription
-from robocram.robots.model_pose import link_pose
+from robocram.robots.model_pose import link_pose, link_poses
 from robocram.robots.robot_model import RobotModel
 from robocram.robots.stand_in_size import is_stand_in
 from robocram.robots.urdf_elements import Geometry, Link
@@ -90,15 +90,17 @@ def _cleared(model: RobotModel, arms: Mapping[str, ArmDescription]) -> RobotMode
         if approach is None:
             continue
         fingers = set(arm.gripper_links)
-        for name in _rigid_with(model, arm.tool_frame):
-            if name not in fingers:
-                links[name] = _cut(links[name], link_pose(model, name), tool, approach, opening)
-        closed = gripper.at(0.0)
-        tool_closed = link_pose(model, arm.tool_frame, closed)
-        for name in fingers if _finger_count(model, fingers) < MANY_FINGERS else ():
-            at = link_pose(model, name, closed)
+        rigid = [name for name in _rigid_with(model, arm.tool_frame) if name not in fingers]
+        at_rest = link_poses(model, rigid)
+        for name in rigid:
+            links[name] = _cut(links[name], at_rest[name], tool, approach, opening)
+        moved = fingers if _finger_count(model, fingers) < MANY_FINGERS else set()
+        closed = link_poses(model, [arm.tool_frame, *moved], gripper.at(0.0))
+        for name in moved:
             tip = _sliding_tip(model, name)
-            links[name] = _to_middle(links[name], at, tool_closed, approach, tip)
+            links[name] = _to_middle(
+                links[name], closed[name], closed[arm.tool_frame], approach, tip
+            )
     if all(links[name] is model.links[name] for name in links):
         return model
     return RobotModel(model.name, links, model.joints, model.source)

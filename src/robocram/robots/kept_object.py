@@ -39,10 +39,19 @@ class _OwnClasses(pickle.Unpickler):
 
 
 def kept_object(
-    kind: str, key: str, built_by: Sequence[str], build: Callable[[], T], of: type[T]
+    kind: str,
+    key: str,
+    built_by: Sequence[str],
+    build: Callable[[], T],
+    of: type[T],
+    accept: Callable[[T], bool] | None = None,
 ) -> T:
     """The ``of`` that ``build()`` returns for ``key``: read from disk, else built and
-    written (``kind``, ``key``, ``built_by`` as :func:`kept_arrays` takes them)."""
+    written (``kind``, ``key``, ``built_by`` as :func:`kept_arrays` takes them).
+
+    ``accept``: whether a value read is still right (one it refuses is rebuilt and
+    replaced), for values that depend on more than ``key`` can say.
+    """
     made: list[T] = []
 
     def pickled() -> Arrays:
@@ -52,9 +61,10 @@ def kept_object(
 
     def readable(arrays: Arrays) -> bool:
         value = _unpickled(arrays, of)
-        if value is not None:
-            made.append(value)
-        return value is not None
+        if value is None or (accept is not None and not accept(value)):
+            return False
+        made.append(value)
+        return True
 
     kept_arrays(kind, key, (__name__, *built_by), pickled, accept=readable)
     return made[-1]

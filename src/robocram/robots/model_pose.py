@@ -9,7 +9,7 @@ fast pinocchio version for IK; this one is for a few poses at load time.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 
 from robocram.robots.mimic import mimic_followers
 from robocram.robots.robot_model import RobotModel
@@ -62,6 +62,35 @@ def link_pose(model: RobotModel, link: str, joints: Mapping[str, float] | None =
         value = values.get(joint.name, resting_value(joint))
         pose = pose * joint_transform(joint, value)
     return pose
+
+
+def link_poses(
+    model: RobotModel, links: Iterable[str], joints: Mapping[str, float] | None = None
+) -> dict[str, Pose]:
+    """:func:`link_pose` of each of ``links`` for ``joints``, the same poses bit for bit.
+
+    A joint's transform is composed once for all the links below it, not once per link
+    (the PR2's 82 links at rest: 82 transforms instead of 760); products are taken in
+    :func:`link_pose`'s order, from the root down.
+    """
+    values = mimic_followers(model, dict(joints or {}))
+    below: dict[str, Pose] = {}  # a link's pose, by the link (one chain reaches each)
+    poses = {}
+    for name in links:
+        pose = Pose()
+        for joint in model.chain(model.root_link, name):
+            found = below.get(joint.child)
+            if found is None:
+                value = values.get(joint.name, resting_value(joint))
+                found = below[joint.child] = pose * joint_transform(joint, value)
+            pose = found
+        poses[name] = pose
+    return poses
+
+
+def resting_link_poses(model: RobotModel) -> dict[str, Pose]:
+    """Every link's :func:`link_pose` at rest (no joints given)."""
+    return link_poses(model, model.links)
 
 
 def subtree_links(model: RobotModel, link: str) -> tuple[str, ...]:

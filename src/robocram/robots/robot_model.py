@@ -20,12 +20,13 @@ from robocram.robots.errors import (
     UrdfError,
     closest_names,
 )
+from robocram.robots.kept_urdf import kept_urdf_parts
 from robocram.robots.model_additions import BoxSpec, FrameSpec, JointCoupling
 from robocram.robots.model_memo import ModelMemo
 from robocram.robots.package_resolver import PackageResolver
 from robocram.robots.safe_xml import decode_xml, parse_xml
 from robocram.robots.urdf_elements import Collision, Geometry, Inertial, Joint, Link, Mimic
-from robocram.robots.urdf_reader import read_urdf
+from robocram.robots.urdf_reader import UrdfParts, read_urdf
 from robocram.robots.urdf_writer import write_urdf
 
 # A frame added in code weighs 1 g: PyBullet would otherwise give it 1 kg and unit inertia.
@@ -313,9 +314,11 @@ class RobotModel:
             except OSError as err:
                 raise UrdfError(file, f"cannot read the URDF: {err.strerror}") from err
             text = decode_xml(data, file)
-            return cls.from_string(
-                text, file.resolve().parent, paths, str(file), missing_packages_as_boxes
-            )
+            resolver = PackageResolver.default(paths)
+            source = str(file)
+            base = file.resolve().parent
+            parts = kept_urdf_parts(text, source, base, resolver, missing_packages_as_boxes)
+            return cls._from_parts(parts, source, stacklevel=2)  # warned from here
 
         return MODELS.model(file, paths, (), (), parse, missing_packages_as_boxes)
 
@@ -332,13 +335,19 @@ class RobotModel:
         resolver = PackageResolver.default(package_paths)
         base = None if base_dir is None else Path(base_dir)
         parts = read_urdf(parse_xml(xml, source), source, base, resolver, missing_packages_as_boxes)
+        return cls._from_parts(parts, source)
+
+    @classmethod
+    def _from_parts(cls, parts: UrdfParts, source: str, stacklevel: int = 3) -> RobotModel:
+        """The model of a URDF's parts, warning of what stands in for what is missing (as
+        from ``stacklevel`` frames up: :meth:`from_string`'s caller by default)."""
         if parts.missing_packages:
             names = ", ".join(repr(p) for p in sorted(set(parts.missing_packages)))
             warnings.warn(
                 f"{source}: package(s) {names} not found, boxes stand in for their meshes; "
                 "pass `--package-path DIR` (package_paths=[DIR]) with the folder holding them",
                 MissingMeshWarning,
-                stacklevel=2,
+                stacklevel=stacklevel,
             )
         if parts.dangling_mimics:
             listed = ", ".join(
@@ -348,7 +357,7 @@ class RobotModel:
                 f"{source}: a <mimic> names a joint the URDF lacks, read as moving on its own: "
                 f"{listed}; name the joint it follows to couple them",
                 DanglingMimicWarning,
-                stacklevel=2,
+                stacklevel=stacklevel,
             )
         if parts.missing_meshes:
             listed = ", ".join(sorted(set(parts.missing_meshes)))
@@ -356,7 +365,7 @@ class RobotModel:
                 f"{source}: {len(set(parts.missing_meshes))} mesh file(s) missing, boxes stand in: "
                 f"{listed}",
                 MissingMeshWarning,
-                stacklevel=2,
+                stacklevel=stacklevel,
             )
         return cls(
             parts.name,

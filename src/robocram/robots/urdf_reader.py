@@ -44,6 +44,9 @@ class UrdfParts:
     missing_meshes: list[str] = field(default_factory=list)
     missing_packages: list[str] = field(default_factory=list)
     dangling_mimics: list[tuple[str, str]] = field(default_factory=list)  # (joint, its target)
+    # what each mesh reference was found to be: (uri, the path it resolved to or None for
+    # a package found nowhere, whether a file is there); the parts hold while these do
+    mesh_checks: list[tuple[str, str | None, bool]] = field(default_factory=list)
 
 
 @dataclass
@@ -56,6 +59,7 @@ class _Reader:
     missing_packages: list[str] = field(default_factory=list)
     colors: dict[str, tuple[float, ...]] = field(default_factory=dict)  # named materials
     stand_in_boxes: dict[str, StandInBox] = field(default_factory=dict)  # by link
+    mesh_checks: list[tuple[str, str | None, bool]] = field(default_factory=list)
 
     def fail(self, node: XmlNode, problem: str) -> UrdfError:
         return UrdfError(self.source, problem, node.line)
@@ -132,13 +136,16 @@ class _Reader:
             if not self.missing_packages_as_boxes:
                 raise
             self.missing_packages.append(err.package)
+            self.mesh_checks.append((uri, None, False))
             return stand_in(uri)
         if path.suffix.lower() not in MESH_SUFFIXES:
             raise self.fail(
                 shape,
                 f"mesh {uri!r} is no mesh file; give one of {', '.join(sorted(MESH_SUFFIXES))}",
             )
-        if not path.is_file():
+        is_file = path.is_file()
+        self.mesh_checks.append((uri, str(path), is_file))
+        if not is_file:
             self.missing_meshes.append(uri)
             return stand_in(uri)
         scale = self.floats(shape, "scale", (1.0, 1.0, 1.0))
@@ -351,7 +358,15 @@ def read_urdf(
                     f"which the URDF does not define{hint}",
                 )
     name = reader.attr(root, "name")
-    return UrdfParts(name, links, joints, reader.missing_meshes, reader.missing_packages, dangling)
+    return UrdfParts(
+        name,
+        links,
+        joints,
+        reader.missing_meshes,
+        reader.missing_packages,
+        dangling,
+        reader.mesh_checks,
+    )
 
 
 def _did_you_mean(name: str, candidates: dict[str, Link]) -> str:

@@ -172,10 +172,16 @@ def check_urdf(file: Path, package_paths: Iterable[str | Path] = ()) -> RobotMod
     about here. A file with more links than PyBullet holds is refused before the draft's
     walks (quadratic in the links) start, unless it loads as several bodies (cut at
     subtrees hung on fixed joints from the root): it could not be loaded anyway.
+    Read as loading reads it first: a file whose packages are all found gives the same
+    model either way, and the world's load of it then shares this one, parsed once.
     """
+    paths = tuple(package_paths)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", MissingMeshWarning)
-        model = RobotModel.from_file(file, package_paths, missing_packages_as_boxes=True)
+        try:
+            model = RobotModel.from_file(file, paths)
+        except PackageNotFoundError:
+            model = RobotModel.from_file(file, paths, missing_packages_as_boxes=True)
     check_loadable(model.name, str(file), model)
     return model
 

@@ -30,6 +30,9 @@ KITCHEN = "kitchen"  # the kitchen's object name, the Env of its facts
 KitchenScene = EnvironmentScene  # the kitchen scene is an environment scene
 # the modules whose code drafts an environment (tests/scenes check the draft runs no other)
 DRAFTED_BY = (
+    "robocram.robots.disk_cache",
+    "robocram.robots.kept_object",
+    "robocram.robots.kept_urdf",
     "robocram.robots.model_memo",
     "robocram.robots.model_split",
     "robocram.robots.package_resolver",
