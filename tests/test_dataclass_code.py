@@ -17,13 +17,25 @@ from pathlib import Path
 from robocram.dataclass_code import CodeTable
 
 SRC = Path(__file__).resolve().parents[1] / "src"
+_SPOT = (
+    "import dataclasses\n"
+    "@dataclasses.dataclass(frozen=True, order=True)\n"
+    "class Spot:\n"
+    "    x: float\n"
+    "    name: str = 'a'\n"
+)
 _PROBE = """
-import dataclasses, json, robocram
+import dataclasses, json, sys, types, robocram
 table = dataclasses.exec.__self__
-@dataclasses.dataclass(frozen=True, order=True)
-class Spot:
+added = table._added  # robocram's own classes, compiled at its import
+@dataclasses.dataclass
+class Users:  # a user's class (module __main__): compiled by exec itself, never kept
     x: float
-    name: str = "a"
+assert table._added == added and not any("Users" in s for s in table._kept or {})
+ours = types.ModuleType("robocram.probe_spot")  # a robocram module's class: kept
+sys.modules[ours.__name__] = ours
+exec(SPOT, ours.__dict__)
+Spot = ours.Spot
 s = Spot(1.0)
 try:
     s.x = 2.0
@@ -38,7 +50,11 @@ def _run(cache: Path) -> list[object]:
     """What the probe prints, run in a fresh interpreter with ``cache`` as its cache."""
     env = {**os.environ, "ROBOCRAM_CACHE_DIR": str(cache), "PYTHONPATH": str(SRC)}
     done = subprocess.run(
-        [sys.executable, "-c", _PROBE], capture_output=True, text=True, check=True, env=env
+        [sys.executable, "-c", f"SPOT = {_SPOT!r}\n{_PROBE}"],
+        capture_output=True,
+        text=True,
+        check=True,
+        env=env,
     )
     found: list[object] = json.loads(done.stdout.strip().splitlines()[-1])
     return found
@@ -73,7 +89,10 @@ def test_a_damaged_table_is_compiled_again_and_replaced(tmp_path: Path) -> None:
 def test_the_table_s_exec_runs_code_objects_and_keeps_no_future_flags(tmp_path: Path) -> None:
     table = CodeTable(tmp_path / "t.code")
     space: dict[str, object] = {}
-    table.exec("def f(x: int) -> int:\n    return x + 1\n", {}, space)
+    ours = {"__name__": "robocram.probe"}  # a robocram module's globals: kept
+    table.exec("def f(x: int) -> int:\n    return x + 1\n", ours, space)
+    table.exec("def g() -> int:\n    return 2\n", {"__name__": "__main__"}, space)
+    assert space["g"]() == 2  # type: ignore[operator]
     f = space["f"]
     assert callable(f) and f(1) == 2
     assert f.__annotations__ == {"x": int, "return": int}  # not strings: no __future__
@@ -81,4 +100,6 @@ def test_the_table_s_exec_runs_code_objects_and_keeps_no_future_flags(tmp_path: 
     assert space["y"] == 3
     table.save()
     assert CodeTable(tmp_path / "t.code").code("def f(x: int) -> int:\n    return x + 1\n")
+    kept = marshal.loads((tmp_path / "t.code").read_bytes()[32:])
+    assert list(kept) == ["def f(x: int) -> int:\n    return x + 1\n"]  # not a user's g
     assert dataclasses.exec.__self__.__class__ is CodeTable  # type: ignore[attr-defined]

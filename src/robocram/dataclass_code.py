@@ -4,9 +4,11 @@
 source and compiles it: importing robocram's plans, projection and scenes built 282
 dataclasses whose 1,559 sources took 46 % of the import's instructions to parse and
 compile (callgrind), the same sources in every process. :func:`install` gives
-:mod:`dataclasses` an ``exec`` that looks the source up in a table of code objects kept
-on disk and compiles only a source it has not seen, exactly as ``exec`` would (file name
-``<string>``, no inherited ``__future__`` flags): the same code, so the same classes.
+:mod:`dataclasses` an ``exec`` that, for a class of a robocram module only, looks the
+source up in a table of code objects kept on disk and compiles only a source it has not
+seen, exactly as ``exec`` would (file name ``<string>``, no inherited ``__future__``
+flags): the same code, so the same classes. Any other class (a user's) is compiled by
+``exec`` itself, as without robocram.
 
 The table is one file per Python bytecode version under the user's cache folder
 (``$ROBOCRAM_CACHE_DIR``, else ``$XDG_CACHE_HOME/robocram``, else ``~/.cache/robocram``),
@@ -72,9 +74,13 @@ class CodeTable:
         globals: dict[str, object] | None = None,  # noqa: A002  (exec's own names)
         locals: Mapping[str, object] | None = None,  # noqa: A002
     ) -> None:
-        """``exec(source, globals, locals)``, with a string's code from the table."""
-        code = self.code(source) if type(source) is str else source
-        builtins.exec(code, globals, locals)
+        """``exec(source, globals, locals)``, with a string's code from the table for
+        robocram's own classes (their module's globals); any other class is compiled as
+        before, so a user's dataclasses neither enter the table nor come from it."""
+        if type(source) is str and _ours(globals):
+            builtins.exec(self.code(source), globals, locals)
+        else:
+            builtins.exec(source, globals, locals)
 
     def save(self) -> None:
         """Write the table with this process's additions, if it made any."""
@@ -99,6 +105,13 @@ def install() -> CodeTable | None:
     dataclasses.exec = table.exec  # type: ignore[attr-defined]
     atexit.register(table.save)
     return table
+
+
+def _ours(space: Mapping[str, object] | None) -> bool:
+    """Whether ``space`` are a robocram module's globals (dataclasses pass the class's
+    module's)."""
+    name = space.get("__name__") if space is not None else None
+    return isinstance(name, str) and (name == "robocram" or name.startswith("robocram."))
 
 
 def _file() -> Path:
