@@ -12,8 +12,8 @@ import pybullet
 
 from robocram.designators import a
 from robocram.execution import perform
-from robocram.projection import simulated_robot
 from robocram.plans.container_access import close_again, open_from_front
+from robocram.projection import simulated_robot
 from robocram.world import World
 from tests.plans.household_state import rebuilt
 
