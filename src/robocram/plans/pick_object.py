@@ -290,6 +290,20 @@ def _finger_caught(robot: KnownRobot, arm: str, failure: Exception, opened: bool
     return bool(links & fingers) and not links & (robot.hand_links(arm) - fingers)
 
 
+def closed_into_surface(failure: Exception) -> bool:
+    """Whether ``failure`` (a pick's, with its tries as ``causes``) holds a try whose
+    fingers closed into the surface under the thing (:func:`_closed_into_surface`): the
+    thing's stands may take it grasped higher (``pick_up_object``'s ``raised``)."""
+    if not isinstance(failure, PickUpFailed) or failure.object_name is None:
+        return False
+    robot = current_robot()
+    return any(
+        _closed_into_surface(robot, arm, cause, failure.object_name)
+        for cause in failure.causes or ()
+        for arm in robot.grasping_arms()
+    )
+
+
 def _closed_into_surface(robot: KnownRobot, arm: str, failure: Exception, name: str) -> bool:
     """Whether ``failure`` is a grip whose closed goal itself lay in collision, each pair a
     finger of ``arm`` and something other than ``name`` (the table under a spoon): from a
@@ -499,6 +513,7 @@ def pick_up_object(
     lift: bool = True,
     out_of: tuple[str, str] | None = None,
     nearer: bool = False,
+    raised: bool = False,
 ) -> Held:
     """Pick up the (detected) object with ``arm`` and ``grasp``, or the first that works
     (``lift`` False: grasp it where it stands; ``out_of``: the opened drawer, environment
@@ -544,12 +559,13 @@ def pick_up_object(
                     dipped.append((choice_arm, choice))
             except PickUpFailed as failure:
                 causes.append(failure)
-    for choice_arm, choice in dipped:  # then higher, where the fingers closed into a surface
+    for choice_arm, choice in dipped if raised else []:  # then higher, where the fingers
+        # closed into the surface under the thing
         for rise in RAISES:
             _hand_out(robot, name, way_out, causes)
             try:
-                raised = _shifted(choice, (0.0, 0.0, rise))
-                return _try_grasp(robot, name, choice_arm, raised, pose, lift, way_out)
+                higher = _shifted(choice, (0.0, 0.0, rise))
+                return _try_grasp(robot, name, choice_arm, higher, pose, lift, way_out)
             except (*TRIES, PickUpFailed) as failure:
                 causes.append(failure)
     for choice_arm, choice in caught:  # only after every try: the hand opened part way,
