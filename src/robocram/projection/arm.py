@@ -184,7 +184,7 @@ def _drive_back(
     robot: ProjectedRobot, arm: str, start: Pose, mode: str, hand: HandContact | None
 ) -> None:
     """Drive a differential base back to ``start`` after it drove for an arm motion that
-    then found no path: the drafted Stretch, driven 0.2 m and turned 36 degrees towards
+    then found no path: the drafted Stretch, driven 0.13 m and turned 31 degrees towards
     the table's milk, its arm then blocked by the table's top, stood turned in the 0.65 m
     between the table and the kitchen's south wall, where no later drive found a way out
     (the fridge left open, both spoons on the table). It came from there, so the way back
