@@ -234,6 +234,21 @@ def close_again(opened: OpenedContainer, log: AttemptLog | None = None) -> None:
     if opened.reached is not None and opened.reached.distance_to(opened.stand.pose) > NEAR:
         stands.append(opened.reached)
     try:
+        _closed_torso_back(opened, stands, log)
+    except EnvironmentManipulationImpossible:
+        if not park_neck():
+            raise
+        _close_from_stands(opened, stands, log)
+
+
+def _closed_torso_back(opened: OpenedContainer, stands: list[Pose], log: AttemptLog) -> None:
+    """Close ``opened`` from ``stands``; where that failed and the torso has moved since the
+    part was opened, again with the torso back (:func:`close_again`). Last, where the arm
+    could not hold the handle from any stand, :func:`close_again` parks the neck and tries
+    the stands once more: the drafted Stretch, its head still turned down at the table's
+    milk (pan -1.74, tilt -0.64 rad), closed the fridge it had opened from the same stand
+    with the head parked only (household 0's clearing)."""
+    try:
         _close_from_stands(opened, stands, log)
         return
     except ANOTHER_STAND_HELPS:

@@ -39,7 +39,7 @@ from robocram.plans.known_robot import KnownRobot, current_robot
 from robocram.plans.location_poses import location_poses, next_pose
 from robocram.plans.out_of_view_reach import near_stands, out_of_view
 from robocram.plans.peering import look_again
-from robocram.plans.pick_object import Held, pick_up_object
+from robocram.plans.pick_object import Held, closed_into_surface, pick_up_object
 from robocram.plans.place_looks import detected_round
 from robocram.plans.stands import (
     REACH_DISTANCES,
@@ -76,6 +76,7 @@ def _pick_from(
     in_container: bool = False,
     torso_up: bool = False,
     unseen: bool = False,
+    raised: bool = False,
 ) -> Held:
     """Drive to ``stand``, look at the object (``where``, map), detect it again, pick it
     up (lifting it out of ``out_of``, the opened drawer it lies in, if any). A thing seen
@@ -86,7 +87,8 @@ def _pick_from(
     ``torso_up`` a stand refused for the lowered torso is driven to with it raised. With
     ``unseen``, a thing whose look stopped at the tilt limit with it outside the view is
     taken where it was seen, if it is still there, and every pick tries nearer pre-grasps
-    after the usual (``plans/out_of_view_reach.py``)."""
+    after the usual (``plans/out_of_view_reach.py``). With ``raised``, a grasp whose closed
+    fingers lay in the surface under the thing is tried again higher (``pick_object``)."""
     park_arms()
     (navigate_torso_up if torso_up else navigate)(stand)
     wanted = an.object(type=seen.get("type"), name=seen.get("name"))
@@ -96,11 +98,15 @@ def _pick_from(
         if not (unseen and out_of_view(failure) and _still_there(seen, where)):
             raise
         blind = an.object(type=seen.get("type"), name=seen.get("name"), pose=where)
-        return pick_up_object(blind, arm=arm, grasp=grasp, out_of=out_of, nearer=True)
+        return pick_up_object(
+            blind, arm=arm, grasp=grasp, out_of=out_of, nearer=True, raised=raised
+        )
     except PtuGoalUnreachable as failure:  # a wrist camera not turned there: round it
         robot_frame = current_robot().base_frame()
         again = detected_round(wanted, where, robot_frame, failure, detect_past_hand)
-        return pick_up_object(again, arm=arm, grasp=grasp, out_of=out_of, nearer=unseen)
+        return pick_up_object(
+            again, arm=arm, grasp=grasp, out_of=out_of, nearer=unseen, raised=raised
+        )
     try:
         again = detect_past_hand(wanted)
     except PerceptionObjectNotFound as hidden:  # hidden at this height: another may show it
@@ -108,7 +114,7 @@ def _pick_from(
         if found is None and not (in_container and _still_there(seen, where)):
             raise hidden
         again = found or an.object(type=seen.get("type"), name=seen.get("name"), pose=where)
-    return pick_up_object(again, arm=arm, grasp=grasp, out_of=out_of, nearer=unseen)
+    return pick_up_object(again, arm=arm, grasp=grasp, out_of=out_of, nearer=unseen, raised=raised)
 
 
 def _still_there(seen: ObjectDesignator, where: PoseStamped) -> bool:
@@ -314,6 +320,7 @@ def fetch(
     out_of = _drawer_of(opened)
     hidden: list[tuple[Pose, str | None]] = []  # stands that did not show it in its container
     lowered: list[tuple[Pose, str | None]] = []  # stands refused for the lowered torso only
+    tried: list[tuple[Pose, str | None]] = []  # stands whose pick failed
     robot = current_robot()
     for pose, use_arm in itertools.islice(stands, stand_retries + MAX_BLOCKED):
         try:
@@ -329,6 +336,7 @@ def fetch(
             log.record("fetch", pose, failure)
             if isinstance(failure, PerceptionObjectNotFound) and opened is not None:
                 hidden.append((pose, use_arm))
+            tried.append((pose, use_arm))
             tries += 1
             if tries >= stand_retries:
                 break
@@ -363,6 +371,10 @@ def fetch(
     if tries and _out_of_reach(causes):  # last: nearer, where the camera may not see it
         near = near_stands(robot, where, arm)
         found = _first_held(near, picking(unseen=True), causes, log, stand_retries)
+        if found is not None:
+            return found
+    if any(closed_into_surface(c) for c in causes):  # last: the stands again, grasping higher
+        found = _first_held(tried, picking(raised=True), causes, log, stand_retries)
         if found is not None:
             return found
     if tries and opened is None and _suction(robot, arm):  # last: the base turned a

@@ -67,6 +67,9 @@ DRAW_BACK = 0.2  # [m] past the pre-grasp a hand that took a thing from a line s
 # a drive with it still in the shelf turned it into the shelf)
 BACK_OUT_SHARE = 0.5  # of the way from the grasp to the pre-grasp, where a hand whose
 # whole way out failed goes first
+RAISES = (0.005, 0.01)  # [m] a grasp whose closed fingers' goal lay in the surface under the
+# thing, tried again this much higher (the drafted Stretch's curved fingertips, closing on a
+# spoon flat on the table at 0.087 rad, dipped into the table's top from every stand)
 LOWER_LIFTS = (0.5, 0.25)  # of a lift's rise over the grasp, tried in turn from a line stand
 # where the whole rise is out of the arm's reach (the drafted Stretch's lift at the fridge's
 # milk: the tool rises 5.7 cm at most there, the usual lift is 10 cm)
@@ -287,6 +290,31 @@ def _finger_caught(robot: KnownRobot, arm: str, failure: Exception, opened: bool
     return bool(links & fingers) and not links & (robot.hand_links(arm) - fingers)
 
 
+def closed_into_surface(failure: Exception) -> bool:
+    """Whether ``failure`` (a pick's, with its tries as ``causes``) holds a try whose
+    fingers closed into the surface under the thing (:func:`_closed_into_surface`): the
+    thing's stands may take it grasped higher (``pick_up_object``'s ``raised``)."""
+    if not isinstance(failure, PickUpFailed) or failure.object_name is None:
+        return False
+    robot = current_robot()
+    return any(
+        _closed_into_surface(robot, arm, cause, failure.object_name)
+        for cause in failure.causes or ()
+        for arm in robot.grasping_arms()
+    )
+
+
+def _closed_into_surface(robot: KnownRobot, arm: str, failure: Exception, name: str) -> bool:
+    """Whether ``failure`` is a grip whose closed goal itself lay in collision, each pair a
+    finger of ``arm`` and something other than ``name`` (the table under a spoon): from a
+    little higher the fingers close on the thing above the surface."""
+    if not isinstance(failure, GripperPathBlocked) or failure.path_fraction != 1.0:
+        return False
+    fingers = robot.gripper_links(arm)
+    pairs = failure.colliding_pairs or ()
+    return bool(pairs) and all(link in fingers and other != name for link, other in pairs)
+
+
 def _to_pre_grasp(arm: str, pre_grasp: PoseStamped, **mode: str) -> None:
     """Move the open hand to ``pre_grasp``; where the head, turned down at the object, is
     in the way (a Stretch's lift carriage, raised to a table's height, meets its tilted
@@ -485,6 +513,7 @@ def pick_up_object(
     lift: bool = True,
     out_of: tuple[str, str] | None = None,
     nearer: bool = False,
+    raised: bool = False,
 ) -> Held:
     """Pick up the (detected) object with ``arm`` and ``grasp``, or the first that works
     (``lift`` False: grasp it where it stands; ``out_of``: the opened drawer, environment
@@ -503,6 +532,7 @@ def pick_up_object(
     causes: list[Exception] = []
     way_out = _WayOut()
     caught: list[tuple[str, ObjectGrasp]] = []  # grasps a finger was caught at
+    dipped: list[tuple[str, ObjectGrasp]] = []  # grasps whose fingers closed into a surface
     arms = arms_nearest_first(robot, pose, arm)
     tried: list[tuple[str, ObjectGrasp]] = []
     for choice_arm in arms:
@@ -525,7 +555,18 @@ def pick_up_object(
                 causes.append(failure)
                 if _finger_caught(robot, choice_arm, failure, way_out.opened):
                     caught.append((choice_arm, grasped))
+                if _closed_into_surface(robot, choice_arm, failure, name):
+                    dipped.append((choice_arm, choice))
             except PickUpFailed as failure:
+                causes.append(failure)
+    for choice_arm, choice in dipped if raised else []:  # then higher, where the fingers
+        # closed into the surface under the thing
+        for rise in RAISES:
+            _hand_out(robot, name, way_out, causes)
+            try:
+                higher = _shifted(choice, (0.0, 0.0, rise))
+                return _try_grasp(robot, name, choice_arm, higher, pose, lift, way_out)
+            except (*TRIES, PickUpFailed) as failure:
                 causes.append(failure)
     for choice_arm, choice in caught:  # only after every try: the hand opened part way,
         _hand_out(robot, name, way_out, causes)  # from parking (at the last try's grasp the

@@ -190,17 +190,41 @@ def move_tcp(
         raise unreachable(desc, arm, target, target_in_map, collision_mode, result)
     motion = result.base_motion
     hand = hand_contact(robot, arm, collision_mode, touching)
+    drove_from: Pose | None = None  # where the base stood before it drove for the arm
     if motion is not None and motion != BaseMotion():
         goal = moved_base(robot, motion)
+        start = robot.base_pose()
         if _arm_then_base(robot, arm, result, goal, collision_mode, hand, target_in_base):
             reached = robot.world.link_pose(robot.name, spec.tool_frame)
             return ensure_reached(robot.name, arm, reached, target, target_in_map)
         target_in_base = robot.base_pose().inverse() * target_in_map
-    arm_motion = _arm_motion(robot, arm, result, target_in_base, collision_mode, hand)
+        drove_from = start
+    try:
+        arm_motion = _arm_motion(robot, arm, result, target_in_base, collision_mode, hand)
+    except ManipulationPathBlocked:
+        if drove_from is not None and robot.description.drive == "differential":
+            _drive_back(robot, arm, drove_from, collision_mode, hand)
+        raise
     follow(robot, arm_motion.trajectory, checked)
     robot.arm_ways.remember(arm, robot.base_pose(), arm_motion.path)
     reached = robot.world.link_pose(robot.name, spec.tool_frame)
     return ensure_reached(robot.name, arm, reached, target, target_in_map)
+
+
+def _drive_back(
+    robot: ProjectedRobot, arm: str, start: Pose, mode: str, hand: HandContact | None
+) -> None:
+    """Drive a differential base back to ``start`` after it drove for an arm motion that
+    then found no path: the drafted Stretch, driven 0.13 m and turned 31 degrees towards
+    the table's milk, its arm then blocked by the table's top, stood turned in the 0.65 m
+    between the table and the kitchen's south wall, where no later drive found a way out
+    (the fridge left open, both spoons on the table). It came from there, so the way back
+    is short and checked as any drive; where it fails the base stays. A holonomic base
+    (PR2, HSR, Boxy) slides out of such a place and stays as before."""
+    try:
+        drive(robot, start, allowed_links(robot, arm, mode), hand)
+    except NavigationLowLevelFailure:
+        return
 
 
 def _arm_then_base(
