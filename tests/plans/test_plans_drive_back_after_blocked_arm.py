@@ -1,5 +1,6 @@
-"""A differential base that drove for an arm motion whose path then was blocked drives back
-to where it stood (``projection/arm.py`` ``_drive_back``). The drafted Stretch's household 0
+"""A differential base that drove for an arm motion whose path then was blocked goes back to
+where it stood when a later drive finds no way from where it was left
+(``projection/navigation.py`` ``_back_the_way_out``). The drafted Stretch's household 0
 (session 31): clearing, at a stand south of the table for the milk's front grasp, IK moved
 the base 0.13 m and turned it 31 degrees towards the table, the arm's path then met the
 table's top, and the base stayed turned in the 0.65 m between the table and the south wall,
@@ -37,7 +38,7 @@ def _base(world: World, robot: str) -> tuple[float, float, float]:
     return x, y, pybullet.getEulerFromQuaternion(orientation)[2]
 
 
-def test_the_stretch_drives_back_after_its_arm_met_the_table_and_can_leave() -> None:
+def test_the_stretch_goes_back_the_way_out_after_its_arm_met_the_table_and_can_leave() -> None:
     household = rebuilt(STRETCH, "stretch_table_set.json")
     world, robot = household.world, household.robot
     try:
@@ -48,9 +49,8 @@ def test_the_stretch_drives_back_after_its_arm_met_the_table_and_can_leave() -> 
                 perform(a.motion(type="moving-tcp", arm="arm", target=a.location(pose=target)))
             assert "kitchen/table_top" in str(blocked.value)
             x, y, yaw = _base(world, robot)
-            assert math.hypot(x - start[0], y - start[1]) < 0.01  # was 0.13 m off
-            assert abs(math.remainder(yaw - start[2], math.tau)) < 0.02  # was 0.54 rad
-            navigate(PoseStamped.from_pose("map", FRIDGE_STAND))  # the next drive goes
+            assert math.hypot(x - start[0], y - start[1]) > 0.05  # left where IK drove it
+            navigate(PoseStamped.from_pose("map", FRIDGE_STAND))  # no way from there: back
         x, y, _ = _base(world, robot)
         assert math.hypot(x - 0.686, y - 1.0) < 0.01
     finally:

@@ -203,28 +203,12 @@ def move_tcp(
         arm_motion = _arm_motion(robot, arm, result, target_in_base, collision_mode, hand)
     except ManipulationPathBlocked:
         if drove_from is not None and robot.description.drive == "differential":
-            _drive_back(robot, arm, drove_from, collision_mode, hand)
+            robot.ways_out[:] = [drove_from]  # a drive stuck from here goes back first
         raise
     follow(robot, arm_motion.trajectory, checked)
     robot.arm_ways.remember(arm, robot.base_pose(), arm_motion.path)
     reached = robot.world.link_pose(robot.name, spec.tool_frame)
     return ensure_reached(robot.name, arm, reached, target, target_in_map)
-
-
-def _drive_back(
-    robot: ProjectedRobot, arm: str, start: Pose, mode: str, hand: HandContact | None
-) -> None:
-    """Drive a differential base back to ``start`` after it drove for an arm motion that
-    then found no path: the drafted Stretch, driven 0.13 m and turned 31 degrees towards
-    the table's milk, its arm then blocked by the table's top, stood turned in the 0.65 m
-    between the table and the kitchen's south wall, where no later drive found a way out
-    (the fridge left open, both spoons on the table). It came from there, so the way back
-    is short and checked as any drive; where it fails the base stays. A holonomic base
-    (PR2, HSR, Boxy) slides out of such a place and stays as before."""
-    try:
-        drive(robot, start, allowed_links(robot, arm, mode), hand)
-    except NavigationLowLevelFailure:
-        return
 
 
 def _arm_then_base(

@@ -76,12 +76,22 @@ def drive(
         )
     checked = planned_against(robot)  # what the path is planned against
     try:
-        path = plan_base_path(
-            robot.handle, goal, seed=robot.motion.seed, allowed_links=allowed_links
-        )
+        try:
+            path = plan_base_path(
+                robot.handle, goal, seed=robot.motion.seed, allowed_links=allowed_links
+            )
+        except NavigationPathBlocked:
+            if not robot.ways_out:
+                raise
+            _back_the_way_out(robot, allowed_links)
+            checked = planned_against(robot)
+            path = plan_base_path(
+                robot.handle, goal, seed=robot.motion.seed, allowed_links=allowed_links
+            )
     except NavigationPoseUnreachable as failure:
         failure.target = target
         raise
+    robot.ways_out.clear()
     trajectory = path.trajectory
     if hand is not None and allowed_links:
         _hand_kept(robot, trajectory, hand, target)
@@ -89,6 +99,27 @@ def drive(
         trajectory = replace(trajectory, allowed_contacts=allowances)
     follow(robot, trajectory, checked)
     return goal
+
+
+def _back_the_way_out(robot: ProjectedRobot, allowed_links: Collection[str]) -> None:
+    """Drive back to where the base stood before an arm motion's drive that then found no
+    path (``robot.ways_out``): the drafted Stretch, driven 0.13 m and turned 31 degrees
+    towards the table's milk, its arm then blocked by the table's top, stood turned in the
+    0.65 m between the table and the kitchen's south wall, where no drive found a way out
+    (the fridge left open, both spoons on the table). It came from there, so the way back is
+    short; asked only when a drive from here found no path, so a base that goes on from
+    where it was left (the Stretch's next grasp of a bowl from there) does as before.
+
+    Raises:
+        NavigationPathBlocked: no way back either (the base stays).
+    """
+    (way_out,) = robot.ways_out
+    robot.ways_out.clear()
+    checked = planned_against(robot)
+    back = plan_base_path(
+        robot.handle, way_out, seed=robot.motion.seed, allowed_links=allowed_links
+    )
+    follow(robot, back.trajectory, checked)
 
 
 def _hand_kept(

@@ -43,6 +43,11 @@ class ProjectedRobot:
     arm_ways: ArmWays = field(default_factory=ArmWays, compare=False)
     """The last ways each arm came along, newest last (:mod:`~robocram.projection.arm_ways`):
     a hand let go where no new way out is free goes back along the one it came by."""
+    ways_out: list[Pose] = field(default_factory=list, compare=False)
+    """Where a differential base stood before it drove for an arm motion that then found
+    no path (at most one, :func:`~robocram.projection.arm.move_tcp`): a later drive that
+    finds no way from where it was left goes back there first
+    (:func:`~robocram.projection.navigation.drive`)."""
     handle: RobotHandle = field(init=False, compare=False, repr=False)
     """The robot of the world, looked up once: what the motion layer takes."""
 
