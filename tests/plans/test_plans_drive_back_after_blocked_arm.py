@@ -27,7 +27,8 @@ from robocram.world import World
 from tests.plans.household_state import rebuilt, saved_pose
 
 STRETCH = str(Path(__file__).resolve().parents[1] / "data" / "stretch" / "stretch.py")
-FRIDGE_STAND = Pose((0.686, 1.0, 0.0), quat.from_euler(0.0, 0.0, math.pi))  # opening it
+EAST = Pose((0.9, -0.5, 0.0), quat.from_euler(0.0, 0.0, math.pi))  # by the east counter:
+# no path of 20,000 checks from where the arm motion's drive left the base, one from before
 
 
 def _base(world: World, robot: str) -> tuple[float, float, float]:
@@ -50,8 +51,8 @@ def test_the_stretch_goes_back_the_way_out_after_its_arm_met_the_table_and_can_l
             assert "kitchen/table_top" in str(blocked.value)
             x, y, yaw = _base(world, robot)
             assert math.hypot(x - start[0], y - start[1]) > 0.05  # left where IK drove it
-            navigate(PoseStamped.from_pose("map", FRIDGE_STAND))  # no way from there: back
+            navigate(PoseStamped.from_pose("map", EAST))  # no way from there: back first
         x, y, _ = _base(world, robot)
-        assert math.hypot(x - 0.686, y - 1.0) < 0.01
+        assert math.hypot(x - 0.9, y + 0.5) < 0.01
     finally:
         world.close()
