@@ -275,6 +275,7 @@ def test_a_put_that_fails_in_every_turn_takes_the_hand_back_where_it_started(
         navigate(_before_the_counter(scene))
         held = pick_up_object("mug-1")
         start = world.link_pose(scene.robot, held.tool_frame).position
+        joints = world.joint_states(scene.robot)
         x, y, z = world.pose("mug-1").position
         sunk = PoseStamped("map", (x + 0.15, y, z - 0.13))  # ~3 cm into the counter's top
         with pytest.raises(PlacingFailed) as info:
@@ -283,3 +284,6 @@ def test_a_put_that_fails_in_every_turn_takes_the_hand_back_where_it_started(
     assert world.bodies.attached_to("mug-1") is not None  # still held
     back = world.link_pose(scene.robot, held.tool_frame).position
     assert math.dist(back, start) < 0.01
+    now = world.joint_states(scene.robot)  # the arm's own joints, not another IK branch
+    arm = [j for j in joints if j.startswith(f"{held.arm[0]}_") and "gripper" not in j]
+    assert arm and all(abs(now[j] - joints[j]) < 1e-3 for j in arm)

@@ -116,15 +116,27 @@ def _retreat(robot: KnownRobot, held: Held) -> None:
     park_arms(held.arm)
 
 
-def _back_to(held: Held, start: Pose) -> None:
+def _back_to(held: Held, start: Pose, joints: list[list[object]]) -> None:
     """Take the hand, still holding the object, back to ``start`` where a put failed in
     every turn: each turn's approach may have got it over the spot, deep in an open drawer
     under the counter's top, and the robot would then drive to its next stand with it
-    there (the PR2's every drive was blocked at its start). Best effort: where the way
-    back is blocked, the hand stays and the drive says so."""
+    there (the PR2's every drive was blocked at its start). The arm goes back to the
+    ``joints`` it had there, not just the tool pose: IK may reach that pose on another
+    branch (the Donbot's UR5 came back with its wrist low over the table's top, and every
+    motion from its next stand started blocked). Best effort: where the way back is
+    blocked, the hand stays and the drive says so."""
     here = transform_pose(PoseStamped(held.tool_frame), "map").pose
     if math.dist(here.position, start.position) < MOVED:
         return
+    with contextlib.suppress(ManipulationLowLevelFailure, NavigationLowLevelFailure):
+        if joints:
+            perform(
+                a.motion(
+                    type="moving-arm-joints", arm=held.arm, configuration=joints,
+                    **GRASPING, touching=held.object_name,
+                )
+            )  # fmt: skip
+            return
     with contextlib.suppress(ManipulationLowLevelFailure, NavigationLowLevelFailure):
         _move(held.arm, start, **GRASPING, touching=held.object_name)
 
@@ -282,6 +294,7 @@ def place_object(
     robot = current_robot()
     held = held_object(object, arm)
     start = transform_pose(PoseStamped(held.tool_frame), "map").pose
+    start_joints = _arm_now(held.arm)
     causes: list[Exception] = []
     for put in _object_targets(target):
         try:
@@ -298,7 +311,7 @@ def place_object(
                 causes=causes,
             )
         return transform_pose(PoseStamped(held.object_name), "map")
-    _back_to(held, start)
+    _back_to(held, start, start_joints)
     raise PlacingFailed(
         f"{robot.name} could not put {held.object_name!r} down at {target} in any of "
         f"{len(TURNS)} turns (causes: "
