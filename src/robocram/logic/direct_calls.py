@@ -1,0 +1,49 @@
+"""A clause's first body call made from its own code: the callee's procedure called directly.
+
+`p(X) :- q(X, Y), r(Y).` returns the continuation `q(X, Y), r(Y)` to the machine, which
+unpacks it, looks `q/2` up and calls its procedure: a goal tuple, a continuation cell and
+a trip round the dispatch for one call. The caller's procedure can instead call `q`'s
+procedure itself with the continuation `r(Y)` and return what it returns (a failure is
+the machine's to backtrack, as before: the caller's choicepoint is pushed first).
+
+Only a leaf procedure is called so (one compiled without direct calls of its own), so
+the Python stack grows by one frame at most, whatever the program's recursion; and only
+while the knowledge base's generation is the one the caller was compiled at (the callee's
+procedure is then the one its predicate holds), else the caller returns the call as
+before (see codegen.direct_call). A callee not yet compiled is compiled then, as a leaf.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from weakref import WeakSet
+
+from robocram.logic.goal_writer import term_parts
+from robocram.logic.inline_calls import CalleeTable
+from robocram.logic.template import Tmpl
+from robocram.logic.value import Value
+
+__all__ = ["LEAVES", "leaf_callee"]
+
+# The procedures compiled without a direct call (codegen reads it; procedure fills it).
+LEAVES: WeakSet[Callable[..., object]] = WeakSet()
+
+
+def leaf_callee(
+    table: CalleeTable, goal: Value, caller: tuple[str, int]
+) -> tuple[int, Callable[..., object]] | None:
+    """(generation, leaf procedure) of the predicate `goal` calls; None when `goal` is no
+    call, calls the `caller`, or its predicate has no leaf procedure."""
+    parts = term_parts(goal)
+    if parts is None or type(goal) is not Tmpl:
+        return None
+    key = (parts[0], len(parts[1]))
+    if key == caller:
+        return None
+    pred = table._preds.get(key)
+    if pred is None:
+        return None
+    proc = pred.leaf_procedure(table)
+    if proc is None or proc not in LEAVES:
+        return None
+    return table._generation, proc
