@@ -1,4 +1,4 @@
-"""A leading call of a leaf procedure, made from the caller's code, answers as the call.
+"""A leading call of a compiled procedure, made from the caller's code, answers as the call.
 
 Each program runs twice: as written, and with the callees declared dynamic (never
 compiled, so never called directly), which is the reference.
@@ -9,6 +9,7 @@ from __future__ import annotations
 from typing import Any
 
 from robocram.logic import KnowledgeBase
+from robocram.logic.direct_calls import LEVELS, MAX_LEVEL
 
 PROGRAM = r"""
 pairs(X, Y) :- digit(X), digit(Y), X < Y.
@@ -61,7 +62,21 @@ def test_direct_calls_answer_as_the_calls() -> None:
     for name, arity in [("pairs", 2), ("sum", 2), ("color_of", 2), ("deep", 1)]:
         assert direct(made, name, arity), name
         assert not direct(reference, name, arity), name
-    assert not direct(made, "either", 1)  # pairs/2 makes a direct call: it is no leaf
+    assert direct(made, "either", 1)  # pairs/2, itself making one, is low enough
+
+
+def test_direct_calls_nest_no_deeper_than_max_level() -> None:
+    """A chain of callers compiled callee first: the Python stack stays shallow."""
+    chain = "".join(f"c{i}(X) :- c{i - 1}(X), X > 0.\nc{i}(0).\n" for i in range(1, 9))
+    kb = KnowledgeBase()
+    kb.consult(chain + "c0(1).\nc0(2).\n", group="p")
+    for i in range(9):
+        assert answers(kb, f"c{i}(X)", "X") == ["1", "2"] + ["0"] * (i > 0)
+    # c5 would be at MAX_LEVEL + 1: it makes the call through the machine, and is at 0
+    made = [i for i in range(1, 9) if direct(kb, f"c{i}", 1)]
+    assert made == [i for i in range(1, 9) if i != MAX_LEVEL + 1]
+    levels = [LEVELS[kb._preds[f"c{i}", 1].proc] for i in range(9)]  # type: ignore[index]
+    assert levels == [0, 1, 2, 3, 4, 0, 1, 2, 3]
 
 
 def test_a_changed_callee_is_called_again() -> None:

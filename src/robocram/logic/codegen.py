@@ -23,7 +23,7 @@ from collections.abc import Callable
 from typing import Protocol
 
 from robocram.logic.choicepoints import ChoicePoint, Cont
-from robocram.logic.direct_calls import leaf_callee
+from robocram.logic.direct_calls import direct_callee
 from robocram.logic.early_guards import guard_goals, rejection
 from robocram.logic.goal_writer import (
     FACTORY_CACHE_SIZE,
@@ -101,8 +101,8 @@ class ClauseWriter(GoalWriter):
     callees: CalleeTable | None = None  # a procedure's: calls to inline (see inline_call)
     next_slot = 0  # the first slot number no goal of the clause uses
     inlined = 0  # calls compiled in around the goal being written
-    direct = False  # a leading call of a leaf procedure made directly (see direct_call)
-    direct_calls = 0  # how many the code makes
+    direct = False  # a leading call of a compiled procedure made here (see direct_call)
+    level = 0  # 0 without direct calls, else one more than the callees' highest level
 
     def clause_source(self, clause: ClauseCode) -> str:
         """Generate `make(k0, k1, ...)` returning the clause function."""
@@ -178,14 +178,16 @@ class ClauseWriter(GoalWriter):
         self.exit(cont)
 
     def direct_call(self, clause: ClauseCode, body: list[Value], held: set[int]) -> None:
-        """A leading call of a leaf procedure: while the knowledge base is as it was, call
-        it here with the rest of the body as its continuation (see direct_calls.py)."""
+        """A leading call of a compiled procedure of a low level: while the knowledge base
+        is as it was, call it here with the rest of the body as its continuation (see
+        direct_calls.py)."""
         if not body or not self.direct or self.callees is None or inlinable(body[0]):
             return
-        found = leaf_callee(self.callees, body[0], (clause.name, len(clause.head)))
+        found = direct_callee(self.callees, body[0], (clause.name, len(clause.head)))
         if found is None:
             return
-        generation, proc = found
+        generation, proc, level = found
+        self.level = max(self.level, level + 1)
         name, args = term_parts(body[0])  # type: ignore[misc]
         inner = "".join(f"{self.build(a)}, " for a in args)
         held = held | set(slots_in(body[0], []))
@@ -203,7 +205,6 @@ class ClauseWriter(GoalWriter):
         self.emit(f"if type(dr) is list: dr = (({key}, tuple(dr[:-1]), CALL), cb, dn)", 1)
         self.emit("return dr", 1)
         self.base -= 1
-        self.direct_calls += 1
 
     def alternatives(self) -> None:
         """Emit what must precede leaving the clause (a procedure's choicepoint)."""

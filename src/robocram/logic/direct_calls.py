@@ -6,34 +6,37 @@ a trip round the dispatch for one call. The caller's procedure can instead call 
 procedure itself with the continuation `r(Y)` and return what it returns (a failure is
 the machine's to backtrack, as before: the caller's choicepoint is pushed first).
 
-Only a leaf procedure is called so (one compiled without direct calls of its own), so
-the Python stack grows by one frame at most, whatever the program's recursion; and only
-while the knowledge base's generation is the one the caller was compiled at (the callee's
-procedure is then the one its predicate holds), else the caller returns the call as
-before (see codegen.direct_call). A callee not yet compiled is compiled then, as a leaf.
+A procedure's level is 0 without direct calls, else one more than its callees' highest;
+only a callee below MAX_LEVEL is called so, so the Python stack grows by MAX_LEVEL frames
+at most, whatever the program's recursion (a callee exists before its caller is
+compiled: no cycle). And only while the knowledge base's generation is the one the
+caller was compiled at (the callee's procedure is then the one its predicate holds);
+else the caller returns the call as before (see codegen.direct_call). A callee not yet
+compiled is compiled then, at level 0.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
-from weakref import WeakSet
+from weakref import WeakKeyDictionary
 
 from robocram.logic.goal_writer import term_parts
 from robocram.logic.inline_calls import CalleeTable
 from robocram.logic.template import Tmpl
 from robocram.logic.value import Value
 
-__all__ = ["LEAVES", "leaf_callee"]
+__all__ = ["LEVELS", "MAX_LEVEL", "direct_callee"]
 
-# The procedures compiled without a direct call (codegen reads it; procedure fills it).
-LEAVES: WeakSet[Callable[..., object]] = WeakSet()
+MAX_LEVEL = 4
+# Each compiled procedure's level (codegen reads it; procedure fills it).
+LEVELS: WeakKeyDictionary[Callable[..., object], int] = WeakKeyDictionary()
 
 
-def leaf_callee(
+def direct_callee(
     table: CalleeTable, goal: Value, caller: tuple[str, int]
-) -> tuple[int, Callable[..., object]] | None:
-    """(generation, leaf procedure) of the predicate `goal` calls; None when `goal` is no
-    call, calls the `caller`, or its predicate has no leaf procedure."""
+) -> tuple[int, Callable[..., object], int] | None:
+    """(generation, procedure, its level) of the predicate `goal` calls; None when `goal`
+    is no call, calls the `caller`, or its predicate has no procedure below MAX_LEVEL."""
     parts = term_parts(goal)
     if parts is None or type(goal) is not Tmpl:
         return None
@@ -43,7 +46,8 @@ def leaf_callee(
     pred = table._preds.get(key)
     if pred is None:
         return None
-    proc = pred.leaf_procedure(table)
-    if proc is None or proc not in LEAVES:
+    proc = pred.callee_procedure(table)
+    level = LEVELS.get(proc, MAX_LEVEL) if proc is not None else MAX_LEVEL
+    if proc is None or level >= MAX_LEVEL:
         return None
-    return table._generation, proc
+    return table._generation, proc, level

@@ -80,7 +80,7 @@ class Pred:
         if self.warm == WARM_CALLS and not self.dynamic and self.pyfn is None:
             self.proc = compile_procedure(self.clauses, self, callees)
 
-    def leaf_procedure(self, callees: CalleeTable | None) -> Procedure | None:
+    def callee_procedure(self, callees: CalleeTable | None) -> Procedure | None:
         """The procedure a caller may call directly (see direct_calls.py): the compiled
         one, or, for a static user predicate of the caller's knowledge base not compiled
         yet, one compiled now without direct calls of its own; None for the others."""

@@ -29,7 +29,7 @@ from collections.abc import Callable, Sequence
 
 from robocram.logic.choicepoints import PROC, ChoicePoint, Cont
 from robocram.logic.codegen import ClauseCode, ClauseWriter
-from robocram.logic.direct_calls import LEAVES
+from robocram.logic.direct_calls import LEVELS
 from robocram.logic.exclusive_guards import excludes
 from robocram.logic.goal_writer import function_factory
 from robocram.logic.inline_calls import CalleeTable
@@ -78,8 +78,8 @@ def compile_procedure(
     more than SCAN_AFTER clauses is handed back to the machine, which resumes each clause
     in O(1) instead of re-entering the procedure. With `callees` (the knowledge base),
     calls of small one-clause predicates are compiled in (see inline_calls.py), and,
-    unless not `direct`, a leading call of a leaf procedure is made directly (see
-    direct_calls.py); a procedure that makes none is a leaf itself.
+    unless not `direct`, a leading call of a compiled procedure is made directly (see
+    direct_calls.py).
     """
     clauses = list(stored)
     if not 1 <= len(clauses) <= MAX_CLAUSES:
@@ -95,8 +95,7 @@ def compile_procedure(
         head = "def proc(args, trail, nxt, cps, start):"
         source = "\n".join([head, *writer.lines, ""])
         proc: Procedure = function_factory(source, "proc")(*writer.consts)
-        if not writer.direct_calls:
-            LEAVES.add(proc)
+        LEVELS[proc] = writer.level
     except (SyntaxError, RecursionError, MemoryError):
         return None  # too deeply nested to compile; the clauses run one by one instead
     return proc
