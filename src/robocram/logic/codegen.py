@@ -23,6 +23,7 @@ from collections.abc import Callable
 from typing import Protocol
 
 from robocram.logic.choicepoints import ChoicePoint, Cont
+from robocram.logic.direct_calls import direct_callee
 from robocram.logic.early_guards import guard_goals, rejection
 from robocram.logic.goal_writer import (
     FACTORY_CACHE_SIZE,
@@ -100,6 +101,8 @@ class ClauseWriter(GoalWriter):
     callees: CalleeTable | None = None  # a procedure's: calls to inline (see inline_call)
     next_slot = 0  # the first slot number no goal of the clause uses
     inlined = 0  # calls compiled in around the goal being written
+    direct = False  # a leading call of a compiled procedure made here (see direct_call)
+    level = 0  # 0 without direct calls, else one more than the callees' highest level
 
     def clause_source(self, clause: ClauseCode) -> str:
         """Generate `make(k0, k1, ...)` returning the clause function."""
@@ -168,10 +171,43 @@ class ClauseWriter(GoalWriter):
             args = "".join(f"{self.build(a)}, " for a in term_parts(body[0])[1])  # type: ignore[index]
             self.self_call(args)
             return
+        self.direct_call(clause, body, held)
         cont = "nxt"
         for g in reversed(self.goals(body, held)):
             cont = f"({g}, cb, {cont})"
         self.exit(cont)
+
+    def direct_call(self, clause: ClauseCode, body: list[Value], held: set[int]) -> None:
+        """A leading call of a compiled procedure of a low level: while the knowledge base
+        is as it was, call it here with the rest of the body as its continuation (see
+        direct_calls.py)."""
+        if not body or not self.direct or self.callees is None or inlinable(body[0]):
+            return
+        found = direct_callee(self.callees, body[0], (clause.name, len(clause.head)))
+        if found is None:
+            return
+        generation, proc, level = found
+        self.level = max(self.level, level + 1)
+        name, args = term_parts(body[0])  # type: ignore[misc]
+        inner = "".join(f"{self.build(a)}, " for a in args)
+        held = held | set(slots_in(body[0], []))
+        rest = "nxt"
+        for g in reversed(self.goals(body[1:], held)):
+            rest = f"({g}, cb, {rest})"
+        table = self.const(self.callees)
+        self.emit(f"if {table}._generation == {self.const(generation)}:", 1)
+        self.base += 1
+        self.alternatives()
+        self.emit(f"dn = {rest}", 1)
+        self.emit(f"dr = {self.const(proc)}(({inner}), trail, dn, cps, 0)", 1)
+        # handed back (see procedure.py): the call goes to the machine, as it would have
+        key = self.const(pred_key(name, len(args)))
+        self.emit(f"if type(dr) is list: dr = (({key}, tuple(dr[:-1]), CALL), cb, dn)", 1)
+        self.emit("return dr", 1)
+        self.base -= 1
+
+    def alternatives(self) -> None:
+        """Emit what must precede leaving the clause (a procedure's choicepoint)."""
 
     def self_call(self, args: str) -> None:
         """Exit by a call to the clause's own predicate: return its argument list.

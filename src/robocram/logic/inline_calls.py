@@ -16,7 +16,7 @@ at, and otherwise the caller makes the call as before (see codegen.inline_call).
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from typing import Protocol
 
 from robocram.logic.goal_writer import inlinable, slots_in, term_parts
@@ -39,7 +39,8 @@ class _Clause(Protocol):
 
 
 class _Pred(Protocol):
-    """What inlining reads of a predicate (predicate.Pred, not imported: it imports us)."""
+    """What inlining and direct calls (see direct_calls.py) read of a predicate
+    (predicate.Pred, not imported: it imports us)."""
 
     @property
     def kind(self) -> int: ...
@@ -55,6 +56,8 @@ class _Pred(Protocol):
 
     @property
     def clauses(self) -> Sequence[_Clause]: ...
+
+    def callee_procedure(self, callees: CalleeTable | None) -> Callable[..., object] | None: ...
 
 
 class CalleeTable(Protocol):

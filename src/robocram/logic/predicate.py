@@ -80,6 +80,18 @@ class Pred:
         if self.warm == WARM_CALLS and not self.dynamic and self.pyfn is None:
             self.proc = compile_procedure(self.clauses, self, callees)
 
+    def callee_procedure(self, callees: CalleeTable | None) -> Procedure | None:
+        """The procedure a caller may call directly (see direct_calls.py): the compiled
+        one, or, for a static user predicate of the caller's knowledge base not compiled
+        yet, one compiled now without direct calls of its own; None for the others."""
+        if self.proc is not None or self.kind != USER or self.dynamic or self.pyfn is not None:
+            return self.proc if self.kind == USER and self.pyfn is None else None
+        if self.system or self.owner == "library":  # fact_groups.LIBRARY_OWNER: shared code
+            return None
+        self.proc = compile_procedure(self.clauses, self, callees, direct=False)
+        self.warm = max(self.warm, WARM_CALLS)
+        return self.proc
+
     def copy(self) -> Pred:
         """A new predicate with the same definition (its own clause list and no code)."""
         twin = Pred(self.name, self.arity, self.kind, self.fn)

@@ -29,6 +29,7 @@ from collections.abc import Callable, Sequence
 
 from robocram.logic.choicepoints import PROC, ChoicePoint, Cont
 from robocram.logic.codegen import ClauseCode, ClauseWriter
+from robocram.logic.direct_calls import LEVELS
 from robocram.logic.exclusive_guards import excludes
 from robocram.logic.goal_writer import function_factory
 from robocram.logic.inline_calls import CalleeTable
@@ -66,14 +67,19 @@ class Scan:
 
 
 def compile_procedure(
-    stored: Sequence[ClauseCode], owner: object = None, callees: CalleeTable | None = None
+    stored: Sequence[ClauseCode],
+    owner: object = None,
+    callees: CalleeTable | None = None,
+    direct: bool = True,
 ) -> Procedure | None:
     """Return the procedure of a static predicate's clauses, or None when not worth it.
 
     With `owner` (the predicate), a call with the first argument unbound that would try
     more than SCAN_AFTER clauses is handed back to the machine, which resumes each clause
     in O(1) instead of re-entering the procedure. With `callees` (the knowledge base),
-    calls of small one-clause predicates are compiled in (see inline_calls.py).
+    calls of small one-clause predicates are compiled in (see inline_calls.py), and,
+    unless not `direct`, a leading call of a compiled procedure is made directly (see
+    direct_calls.py).
     """
     clauses = list(stored)
     if not 1 <= len(clauses) <= MAX_CLAUSES:
@@ -84,10 +90,12 @@ def compile_procedure(
     try:
         writer = _ProcWriter(clauses, owner)
         writer.callees = callees
+        writer.direct = direct
         writer.procedure(branches)
         head = "def proc(args, trail, nxt, cps, start):"
         source = "\n".join([head, *writer.lines, ""])
         proc: Procedure = function_factory(source, "proc")(*writer.consts)
+        LEVELS[proc] = writer.level
     except (SyntaxError, RecursionError, MemoryError):
         return None  # too deeply nested to compile; the clauses run one by one instead
     return proc
