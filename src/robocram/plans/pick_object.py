@@ -496,6 +496,29 @@ def _line_stand(robot: KnownRobot, arm: str, choice: ObjectGrasp) -> PoseStamped
     return None if row is None else row.stand
 
 
+def _part_way_nearer(
+    robot: KnownRobot,
+    name: str,
+    arm: str,
+    choice: ObjectGrasp,
+    object_in_map: Pose | None,
+    lift: bool,
+    way_out: _WayOut,
+    out_of: tuple[str, str] | None,
+) -> Held:
+    """Try ``choice`` with the hand opened :data:`PART_WAY` (for any grasp: half way, the
+    Stretch's right fingertip still lay 1.2 cm over the knife's edge, 8.2 cm beside the
+    spoon; a third clears it by 5 mm) from a pre-grasp nearer the grasp (a drawer's lift
+    kept): the nearer pre-grasp keeps the parked hand's wrist out of the drawer's front."""
+    if lift and out_of is not None:
+        choice = _lifted_out(robot, name, arm, choice, out_of)
+    keep = 1.0 if out_of is not None else NEARER_LIFT_SHARE
+    nearer_choice = nearer_pre_grasp(choice, lift_share=keep)
+    return _try_grasp(
+        robot, name, arm, nearer_choice, object_in_map, lift, way_out, PART_WAY, near=True
+    )
+
+
 def grasp_object(
     object: ObjectDesignator | str,  # noqa: A002 - CRAM's key
     arm: str | None = None,
@@ -603,6 +626,16 @@ def pick_up_object(
         except TRIES as failure:
             causes.append(failure)
         except PickUpFailed as failure:
+            causes.append(failure)
+    for choice_arm, choice in caught:  # last: opened part way from
+        # nearer the grasp (the drafted Stretch's spoon beside the knife in an east drawer:
+        # fully open, a finger met the knife; parked, the part-way hand's usual pre-grasp put
+        # its wrist in the drawer, the nearer one a fully open finger in the knife)
+        _hand_out(robot, name, way_out, causes)
+        try:
+            held = _part_way_nearer(robot, name, choice_arm, choice, pose, lift, way_out, out_of)
+            return held
+        except (*TRIES, PickUpFailed) as failure:
             causes.append(failure)
     _let_go(robot, name)
     stuck = _back_out(name, way_out)
