@@ -61,6 +61,11 @@ HALF_WAY = 1 / 2  # of the same value: any other grasp a finger was caught at tr
 # so (the fingers go round the whole object, so a third may be narrower than it: the
 # drafted Stretch's fingers close on a cup at 0.22 of their 0.60 rad; fully open, one met
 # the counter top over the drawer or slid outside the drawer's side wall)
+NARROW = PART_WAY  # of the same value: last, any grasp a finger was caught at, opened so
+# (the drafted Stretch's spoon in an east drawer, the knife 8.2 cm beside it: fully open,
+# 21 cm between the fingertips, the right one came down on the knife; half open it still
+# lay 1.2 cm over the knife's edge; a third leaves 7.6 cm for the 3.5 cm spoon and clears
+# the knife by 5 mm)
 TRIES = (ManipulationLowLevelFailure, GripperLowLevelFailure, NavigationLowLevelFailure)
 DRAW_BACK = 0.2  # [m] past the pre-grasp a hand that took a thing from a line stand draws it
 # back (the fridge's milk, gripped 21 cm behind the fridge's front, 10 cm past the pre-grasp:
@@ -496,29 +501,6 @@ def _line_stand(robot: KnownRobot, arm: str, choice: ObjectGrasp) -> PoseStamped
     return None if row is None else row.stand
 
 
-def _part_way_nearer(
-    robot: KnownRobot,
-    name: str,
-    arm: str,
-    choice: ObjectGrasp,
-    object_in_map: Pose | None,
-    lift: bool,
-    way_out: _WayOut,
-    out_of: tuple[str, str] | None,
-) -> Held:
-    """Try ``choice`` with the hand opened :data:`PART_WAY` (for any grasp: half way, the
-    Stretch's right fingertip still lay 1.2 cm over the knife's edge, 8.2 cm beside the
-    spoon; a third clears it by 5 mm) from a pre-grasp nearer the grasp (a drawer's lift
-    kept): the nearer pre-grasp keeps the parked hand's wrist out of the drawer's front."""
-    if lift and out_of is not None:
-        choice = _lifted_out(robot, name, arm, choice, out_of)
-    keep = 1.0 if out_of is not None else NEARER_LIFT_SHARE
-    nearer_choice = nearer_pre_grasp(choice, lift_share=keep)
-    return _try_grasp(
-        robot, name, arm, nearer_choice, object_in_map, lift, way_out, PART_WAY, near=True
-    )
-
-
 def grasp_object(
     object: ObjectDesignator | str,  # noqa: A002 - CRAM's key
     arm: str | None = None,
@@ -627,14 +609,14 @@ def pick_up_object(
             causes.append(failure)
         except PickUpFailed as failure:
             causes.append(failure)
-    for choice_arm, choice in caught:  # last: opened part way from
-        # nearer the grasp (the drafted Stretch's spoon beside the knife in an east drawer:
-        # fully open, a finger met the knife; parked, the part-way hand's usual pre-grasp put
-        # its wrist in the drawer, the nearer one a fully open finger in the knife)
+    for choice_arm, choice in caught:  # last: a grasp the half-open hand was caught at
+        if choice.grasp == "rim":  # too (a rim grasp's retry opened a third already)
+            continue
         _hand_out(robot, name, way_out, causes)
         try:
-            held = _part_way_nearer(robot, name, choice_arm, choice, pose, lift, way_out, out_of)
-            return held
+            if lift and out_of is not None:
+                choice = _lifted_out(robot, name, choice_arm, choice, out_of)
+            return _try_grasp(robot, name, choice_arm, choice, pose, lift, way_out, NARROW)
         except (*TRIES, PickUpFailed) as failure:
             causes.append(failure)
     _let_go(robot, name)
