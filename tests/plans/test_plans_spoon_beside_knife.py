@@ -1,14 +1,14 @@
-"""A grasp a finger was caught at is tried last with the hand opened a third, from nearer
-its grasp: the drafted Stretch takes the spoon lying beside the knife.
+"""A grasp in a drawer that a finger was caught at is tried last with the hand opened a
+third: the drafted Stretch takes the spoon lying beside the knife.
 
 Household 6 (``benchmarks/activity_bench.py``) keeps the cutlery in ``east_drawers_3_drawer_3``;
 the knife lies 8.2 cm beside spoon-1. Fully open (21 cm between the fingertips), the
 Stretch's right fingertip came down on the knife and the closing met it on one side only;
-half open it still lay over the knife's edge; from its parked arm the usual pre-grasp put
-the wrist in the drawer's front. The situation is rebuilt from the state saved at the
-household's first pick of spoon-1 (tests/data/stretch_spoon_knife.json). Judged on raw
-PyBullet: the spoon leaves the drawer's bottom in the hand, no finger was ever more than the
-hand's 5 mm bound in the knife when the fingers closed, and the knife did not move.
+half open (the usual retry) the fingertip still lay 1.2 cm over the knife's edge at the
+grasp. The situation is rebuilt from the state saved at the household's first pick of
+spoon-1 (tests/data/stretch_spoon_knife.json). Judged on raw PyBullet: the spoon leaves
+the drawer's bottom in the hand, no finger was more than the hand's 5 mm bound in the knife
+when the fingers closed on it, and the knife did not move.
 """
 
 from __future__ import annotations
