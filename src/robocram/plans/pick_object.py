@@ -61,6 +61,11 @@ HALF_WAY = 1 / 2  # of the same value: any other grasp a finger was caught at tr
 # so (the fingers go round the whole object, so a third may be narrower than it: the
 # drafted Stretch's fingers close on a cup at 0.22 of their 0.60 rad; fully open, one met
 # the counter top over the drawer or slid outside the drawer's side wall)
+NARROW = PART_WAY  # of the same value: last, any grasp in a drawer a finger was caught
+# at, opened so (the drafted Stretch's spoon in an east drawer, the knife 8.2 cm beside it:
+# fully open, 21 cm between the fingertips, the right one came down on the knife; half open
+# it still lay 1.2 cm over the knife's edge; a third leaves 7.6 cm for the 3.5 cm spoon and
+# clears the knife by 5 mm)
 TRIES = (ManipulationLowLevelFailure, GripperLowLevelFailure, NavigationLowLevelFailure)
 DRAW_BACK = 0.2  # [m] past the pre-grasp a hand that took a thing from a line stand draws it
 # back (the fridge's milk, gripped 21 cm behind the fridge's front, 10 cm past the pre-grasp:
@@ -603,6 +608,19 @@ def pick_up_object(
         except TRIES as failure:
             causes.append(failure)
         except PickUpFailed as failure:
+            causes.append(failure)
+    for choice_arm, choice in caught if out_of is not None else []:  # last, in a drawer,
+        # a grasp the half-open hand was caught at too (a rim grasp's retry opened a third
+        # already); not on a table, where the milk's narrow tries, parked from, left the
+        # drafted Stretch no later stand that took it (household 0's clearing)
+        if choice.grasp == "rim":
+            continue
+        _hand_out(robot, name, way_out, causes)
+        try:
+            if lift and out_of is not None:
+                choice = _lifted_out(robot, name, choice_arm, choice, out_of)
+            return _try_grasp(robot, name, choice_arm, choice, pose, lift, way_out, NARROW)
+        except (*TRIES, PickUpFailed) as failure:
             causes.append(failure)
     _let_go(robot, name)
     stuck = _back_out(name, way_out)
