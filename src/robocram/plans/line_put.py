@@ -29,7 +29,7 @@ from robocram.plans.basic_actions import look_ahead, navigate
 from robocram.plans.grasp_failures import PlacingFailed
 from robocram.plans.known_robot import current_robot
 from robocram.plans.pick_object import GRASPING, Held
-from robocram.plans.place_object import PLACE_GAP, TURNS, _settled
+from robocram.plans.place_object import PLACE_GAP, SETTLE, TURNS, settled
 from robocram.tf import Pose, PoseStamped, transform_pose
 from robocram.tf import quaternion as quat
 
@@ -39,7 +39,6 @@ FREE = 0.15  # [m] of telescope out (past its margin) with the thing at ``out``:
 # in, the hand met the mast
 RISE = 0.02  # [m] over its put the thing is carried in (a shelf's edge lies lower)
 LEAD = 0.6  # [m] ahead of or behind a line stand, on its heading, the thing is readied
-SETTLE = 0.15  # [s] simulated after letting go, as :mod:`place_object` does
 
 
 def _move(arm: str, pose: Pose, **mode: str) -> None:
@@ -159,6 +158,9 @@ def _put_from(
     try:
         _ready(held, stand, out, mode)
         navigate(stand)
+    except (ManipulationLowLevelFailure, NavigationLowLevelFailure):
+        return False  # the hand never went in
+    try:
         _move(held.arm, out, **mode)
         _move(held.arm, high, **mode)
         _move(held.arm, tool, **mode)
@@ -176,7 +178,7 @@ def _put_from(
             target=put,
             causes=[failure],
         ) from failure
-    problem = _settled(held.object_name, put, SETTLE)
+    problem = settled(held.object_name, put, SETTLE)
     if problem is not None:
         raise PlacingFailed(
             f"{held.object_name!r} was let go at {put} but {problem}",

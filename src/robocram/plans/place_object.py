@@ -129,7 +129,7 @@ def _back_to(held: Held, start: Pose) -> None:
         _move(held.arm, start, **GRASPING, touching=held.object_name)
 
 
-def _settled(name: str, put: Pose, seconds: float) -> str | None:
+def settled(name: str, put: Pose, seconds: float) -> str | None:
     """Why the object does not rest where it was put within ``seconds`` [s], or None.
 
     The world is simulated until the object rests (``settle/3``: it stopped moving between
@@ -289,7 +289,7 @@ def place_object(
         except ManipulationLowLevelFailure as failure:
             causes.append(failure)
             continue
-        problem = _settled(held.object_name, put, settle)
+        problem = settled(held.object_name, put, settle)
         if problem is not None:
             raise PlacingFailed(
                 f"{held.object_name!r} was let go at {target} but {problem}",
