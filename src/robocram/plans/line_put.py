@@ -29,7 +29,7 @@ from robocram.plans.basic_actions import look_ahead, navigate
 from robocram.plans.grasp_failures import PlacingFailed
 from robocram.plans.known_robot import current_robot
 from robocram.plans.pick_object import GRASPING, Held
-from robocram.plans.place_object import PLACE_GAP, SETTLE, TURNS, settled
+from robocram.plans.place_object import PLACE_GAP, SETTLE, TURNS, arm_now, settled
 from robocram.tf import Pose, PoseStamped, transform_pose
 from robocram.tf import quaternion as quat
 
@@ -101,6 +101,7 @@ def line_put(held: Held, spots: Iterable[Pose]) -> Pose | None:
     if wrist is None or not _telescopic(held, wrist):
         return None
     heading = transform_pose(PoseStamped(held.object_name), "map").pose.orientation
+    start = arm_now(held.arm)
     for spot in spots:
         x, y, z = spot.position
         for turn in TURNS:
@@ -113,7 +114,18 @@ def line_put(held: Held, spots: Iterable[Pose]) -> Pose | None:
                 continue
             if _put_from(held, stand, (out, high, tool), put, wrist):
                 return spot
+    _restore(held.arm, start)
     return None
+
+
+def _restore(arm: str, joints: list[list[object]]) -> None:
+    """Take ``arm`` back to ``joints`` (as it held the thing before the first try), best
+    effort: readied for a line stand, the thing held out to the side blocked every drive
+    back to the table."""
+    if not joints:
+        return
+    with contextlib.suppress(ManipulationLowLevelFailure, NavigationLowLevelFailure):
+        perform(a.motion(type="moving-arm-joints", arm=arm, configuration=joints, **GRASPING))
 
 
 def _ready(held: Held, stand: PoseStamped, out: Pose, mode: dict[str, str]) -> None:

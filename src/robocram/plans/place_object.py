@@ -187,7 +187,7 @@ def _out_the_way_in(
     return True
 
 
-def _arm_now(arm: str) -> list[list[object]]:
+def arm_now(arm: str) -> list[list[object]]:
     """``arm``'s joint values now, as a configuration to move to (empty: none known)."""
     robot = current_robot()
     row = ARM_JOINTS.first(current_kb(), robot=robot.name, arm=arm)
@@ -236,13 +236,13 @@ def _narrowed(arm: str, grip: float) -> bool:
 def _put_down(robot: KnownRobot, held: Held, put: Pose) -> None:
     tool = put * held.object_in_tool.inverse()
     way_in = [transform_pose(PoseStamped(held.tool_frame), "map").pose]
-    joints_in = [_arm_now(held.arm)]
+    joints_in = [arm_now(held.arm)]
     for height in CARRY_HEIGHTS:
         try:
             above = _shifted(tool, 0.0, 0.0, height)
             _move(held.arm, above, **GRASPING, touching=held.object_name)
             way_in.append(above)
-            joints_in.append(_arm_now(held.arm))
+            joints_in.append(arm_now(held.arm))
             break
         except ManipulationLowLevelFailure:
             continue  # at the edge of its reach the arm comes in lower
