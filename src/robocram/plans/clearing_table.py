@@ -336,7 +336,9 @@ def _deliver_back(held: Held, place: Place, kind: str, log: AttemptLog) -> None:
     except DeliveryExhausted:
         if not holds(held) or not is_container(place.environment, place.link):
             raise
-        if line_put(held, _shelf_spots(place, kind, name)) is None:
+        frame = environment_link_pose(place.environment, place.link, "a usual place")
+        depths = [yaw_of(frame) + k * math.pi / 2 for k in range(4)]  # its level axes
+        if line_put(held, _shelf_spots(place, kind, name), depths) is None:
             raise
 
 

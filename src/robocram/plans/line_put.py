@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import contextlib
 import math
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 
 from robocram.designators import a
 from robocram.execution import perform
@@ -29,7 +29,7 @@ from robocram.plans.basic_actions import look_ahead, navigate
 from robocram.plans.grasp_failures import PlacingFailed
 from robocram.plans.known_robot import current_robot
 from robocram.plans.pick_object import GRASPING, Held
-from robocram.plans.place_object import PLACE_GAP, SETTLE, TURNS, arm_now, settled
+from robocram.plans.place_object import PLACE_GAP, SETTLE, arm_now, settled
 from robocram.tf import Pose, PoseStamped, transform_pose
 from robocram.tf import quaternion as quat
 
@@ -88,11 +88,12 @@ def _telescopic(held: Held, wrist: tuple[float, float, float]) -> bool:
     return _stand(held, _back(tool, wrist, 0.1), tool) is not None
 
 
-def line_put(held: Held, spots: Iterable[Pose]) -> Pose | None:
+def line_put(held: Held, spots: Iterable[Pose], depths: Sequence[float]) -> Pose | None:
     """Put ``held`` at the first of ``spots`` (map poses of the thing's frame on a shelf)
-    reached from a line stand, in any of :data:`TURNS` of its heading now; the spot, or
-    None where no arm has a level telescope, no line stand was found, or every try
-    failed with the thing still held (the hand then back out on its line).
+    reached from a line stand, the hand coming in level along one of ``depths`` (map
+    headings [rad], the shelf's depth first), the thing turned about the vertical to
+    suit; the spot, or None where no arm has a level telescope, no line stand was found,
+    or every try failed with the thing still held (the arm then back as it held it).
 
     Raises:
         PlacingFailed: the thing was let go but did not rest where it was put.
@@ -102,9 +103,13 @@ def line_put(held: Held, spots: Iterable[Pose]) -> Pose | None:
         return None
     heading = transform_pose(PoseStamped(held.object_name), "map").pose.orientation
     start = arm_now(held.arm)
+    tool_now = transform_pose(PoseStamped(held.tool_frame), "map").pose
+    ahead = quat.rotate(tool_now.orientation, wrist)  # towards the wrist: back
+    coming = math.atan2(-ahead[1], -ahead[0])  # the heading the hand comes in along now
     for spot in spots:
         x, y, z = spot.position
-        for turn in TURNS:
+        for depth in depths:
+            turn = depth - coming
             put = Pose((x, y, z + PLACE_GAP), quat.multiply(quat.from_euler(0, 0, turn), heading))
             tool = put * held.object_in_tool.inverse()
             high = _up(tool, RISE)
