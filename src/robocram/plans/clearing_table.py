@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import contextlib
 import math
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field
 
 from robocram.designators import a, all_, an
@@ -35,6 +35,7 @@ from robocram.plans.environment_links import environment_link_pose
 from robocram.plans.errors import DeliveryExhausted, PlanSetupError
 from robocram.plans.fetch import fetch
 from robocram.plans.known_robot import current_robot
+from robocram.plans.line_put import line_put
 from robocram.plans.location_poses import location_poses
 from robocram.plans.pick_object import Held
 from robocram.plans.place_object import place_object
@@ -330,7 +331,23 @@ def _deliver_back(held: Held, place: Place, kind: str, log: AttemptLog) -> None:
                 place_retries=SPOT_TRIES, log=log, reach_stands=True,
             )  # fmt: skip
             return
-    deliver(held, back_to(place, name), held.arm, log=log, reach_stands=True)
+    try:
+        deliver(held, back_to(place, name), held.arm, log=log, reach_stands=True)
+    except DeliveryExhausted:
+        if not holds(held) or not is_container(place.environment, place.link):
+            raise
+        frame = environment_link_pose(place.environment, place.link, "a usual place")
+        depths = [yaw_of(frame) + k * math.pi / 2 for k in range(4)]  # its level axes
+        if line_put(held, _shelf_spots(place, kind, name), depths) is None:
+            raise
+
+
+def _shelf_spots(place: Place, kind: str, name: str) -> Iterator[Pose]:
+    """The first pose of each usual spot of ``kind`` in ``place``, then of anywhere in it
+    (what the usual puts tried), for a put from a line stand (:func:`line_put`)."""
+    for spot in [*usual_spots(kind, place), None]:
+        with contextlib.suppress(DesignatorError, StopIteration):
+            yield next(location_poses(back_to(place, name, spot)))
 
 
 def _return_group(

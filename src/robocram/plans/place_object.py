@@ -141,7 +141,7 @@ def _back_to(held: Held, start: Pose, joints: list[list[object]]) -> None:
         _move(held.arm, start, **GRASPING, touching=held.object_name)
 
 
-def _settled(name: str, put: Pose, seconds: float) -> str | None:
+def settled(name: str, put: Pose, seconds: float) -> str | None:
     """Why the object does not rest where it was put within ``seconds`` [s], or None.
 
     The world is simulated until the object rests (``settle/3``: it stopped moving between
@@ -199,7 +199,7 @@ def _out_the_way_in(
     return True
 
 
-def _arm_now(arm: str) -> list[list[object]]:
+def arm_now(arm: str) -> list[list[object]]:
     """``arm``'s joint values now, as a configuration to move to (empty: none known)."""
     robot = current_robot()
     row = ARM_JOINTS.first(current_kb(), robot=robot.name, arm=arm)
@@ -248,13 +248,13 @@ def _narrowed(arm: str, grip: float) -> bool:
 def _put_down(robot: KnownRobot, held: Held, put: Pose) -> None:
     tool = put * held.object_in_tool.inverse()
     way_in = [transform_pose(PoseStamped(held.tool_frame), "map").pose]
-    joints_in = [_arm_now(held.arm)]
+    joints_in = [arm_now(held.arm)]
     for height in CARRY_HEIGHTS:
         try:
             above = _shifted(tool, 0.0, 0.0, height)
             _move(held.arm, above, **GRASPING, touching=held.object_name)
             way_in.append(above)
-            joints_in.append(_arm_now(held.arm))
+            joints_in.append(arm_now(held.arm))
             break
         except ManipulationLowLevelFailure:
             continue  # at the edge of its reach the arm comes in lower
@@ -302,7 +302,7 @@ def place_object(
         except ManipulationLowLevelFailure as failure:
             causes.append(failure)
             continue
-        problem = _settled(held.object_name, put, settle)
+        problem = settled(held.object_name, put, settle)
         if problem is not None:
             raise PlacingFailed(
                 f"{held.object_name!r} was let go at {target} but {problem}",
