@@ -294,7 +294,7 @@ def place_object(
     robot = current_robot()
     held = held_object(object, arm)
     start = transform_pose(PoseStamped(held.tool_frame), "map").pose
-    start_joints = _arm_now(held.arm)
+    start_joints = arm_now(held.arm)
     causes: list[Exception] = []
     for put in _object_targets(target):
         try:
