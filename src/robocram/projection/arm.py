@@ -202,8 +202,9 @@ def move_tcp(
     try:
         arm_motion = _arm_motion(robot, arm, result, target_in_base, collision_mode, hand)
     except ManipulationPathBlocked:
-        if drove_from is not None and robot.description.drive == "differential":
-            robot.ways_out[:] = [drove_from]  # a drive stuck from here goes back first
+        differential = robot.description.drive == "differential"
+        if drove_from is not None and differential and not robot.ways_out:  # the first:
+            robot.ways_out.append(drove_from)  # where the plan's own drive left it
         raise
     follow(robot, arm_motion.trajectory, checked)
     robot.arm_ways.remember(arm, robot.base_pose(), arm_motion.path)
@@ -244,7 +245,7 @@ def _arm_then_base(
         return True
     free = allowed_links(robot, arm, mode)
     try:
-        drive(robot, base_goal, free, hand)
+        drive(robot, base_goal, free, hand, for_arm=True)
         return False
     except NavigationLowLevelFailure as failure:
         first = failure
@@ -264,7 +265,7 @@ def _arm_then_base(
         raise first from None
     follow(robot, motion.trajectory, checked)
     try:
-        drive(robot, base_goal, free, hand)
+        drive(robot, base_goal, free, hand, for_arm=True)
     except NavigationLowLevelFailure:
         raise first from None
     return True

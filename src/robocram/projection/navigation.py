@@ -49,8 +49,12 @@ def drive(
     target: PoseStamped | PoseLike,
     allowed_links: Collection[str] = (),
     hand: HandContact | None = None,
+    for_arm: bool = False,
 ) -> Pose:
     """Put the robot's base at ``target`` (map unless stamped); return the reached pose.
+
+    ``for_arm``: the drive is an arm motion's (``move_tcp``'s base part), not the plan's
+    own: it neither goes back the way out (``robot.ways_out``) nor clears it.
 
     ``allowed_links`` may touch things on the way (the hand holding a door's handle);
     ``hand`` bounds what they touch and how deep (a drive inside ``move_tcp``): the
@@ -81,7 +85,7 @@ def drive(
                 robot.handle, goal, seed=robot.motion.seed, allowed_links=allowed_links
             )
         except NavigationPathBlocked:
-            if not robot.ways_out:
+            if not robot.ways_out or for_arm:  # only the plan's own drives go back
                 raise
             _back_the_way_out(robot, allowed_links)
             checked = planned_against(robot)
@@ -91,7 +95,8 @@ def drive(
     except NavigationPoseUnreachable as failure:
         failure.target = target
         raise
-    robot.ways_out.clear()
+    if not for_arm:  # a drive of the plan's own reached its goal: no way out kept
+        robot.ways_out.clear()
     trajectory = path.trajectory
     if hand is not None and allowed_links:
         _hand_kept(robot, trajectory, hand, target)
