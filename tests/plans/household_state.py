@@ -8,6 +8,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+import pybullet
+
 from robocram.scenes.breakfast_scene import breakfast_scene
 from robocram.tf import Pose
 from robocram.world import World
@@ -44,3 +46,18 @@ def rebuilt(robot: str, file: str) -> Household:
     for name, link in state.get("held", {}).items():
         world.attach(name, scene.robot, link)
     return Household(world, scene.robot, state)
+
+
+def inside(world: World, thing: str, link: str) -> bool:
+    """Whether ``thing``'s origin lies in the bounding box of the kitchen's ``link``, by raw
+    PyBullet (the judge of where a plan left a thing)."""
+    cid = world.physics.client()
+    kitchen = world.object("kitchen").body_id
+    index = next(
+        j
+        for j in range(pybullet.getNumJoints(kitchen, physicsClientId=cid))
+        if pybullet.getJointInfo(kitchen, j, physicsClientId=cid)[12].decode() == link
+    )
+    low, high = pybullet.getAABB(kitchen, index, physicsClientId=cid)
+    at, _ = pybullet.getBasePositionAndOrientation(world.object(thing).body_id, physicsClientId=cid)
+    return all(lo <= v <= hi for lo, v, hi in zip(low, at, high, strict=True))

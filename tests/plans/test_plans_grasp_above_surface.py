@@ -9,40 +9,23 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import pybullet
-
 from robocram.designators import an
 from robocram.plans import perform
 from robocram.projection import simulated_robot
-from robocram.world import World
-from tests.plans.household_state import rebuilt
+from tests.plans.household_state import inside, rebuilt
 
 STRETCH = str(Path(__file__).resolve().parents[1] / "data" / "stretch" / "stretch.py")
 DRAWER = "cutlery_unit_drawer_3"  # where the kitchen keeps spoons
-
-
-def _inside(world: World, thing: str, link: str) -> bool:
-    """Whether ``thing``'s origin lies in the bounding box of the kitchen's ``link``."""
-    cid = world.physics.client()
-    kitchen = world.object("kitchen").body_id
-    index = next(
-        j
-        for j in range(pybullet.getNumJoints(kitchen, physicsClientId=cid))
-        if pybullet.getJointInfo(kitchen, j, physicsClientId=cid)[12].decode() == link
-    )
-    low, high = pybullet.getAABB(kitchen, index, physicsClientId=cid)
-    at, _ = pybullet.getBasePositionAndOrientation(world.object(thing).body_id, physicsClientId=cid)
-    return all(lo <= v <= hi for lo, v, hi in zip(low, at, high, strict=True))
 
 
 def test_the_stretch_takes_the_spoon_from_the_table_to_its_drawer() -> None:
     household = rebuilt(STRETCH, "stretch_table_set.json")
     world, robot = household.world, household.robot
     try:
-        assert not _inside(world, "spoon-1", DRAWER)
+        assert not inside(world, "spoon-1", DRAWER)
         with simulated_robot(world, robot):
             perform(an.action(type="clearing-table", objects=["spoon-1"]))
-        assert _inside(world, "spoon-1", DRAWER)
+        assert inside(world, "spoon-1", DRAWER)
         assert world.bodies.attachments(robot) == {}
     finally:
         world.close()

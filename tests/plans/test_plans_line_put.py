@@ -16,8 +16,7 @@ from robocram.designators import an
 from robocram.plans import perform
 from robocram.projection import simulated_robot
 from robocram.tf import Pose
-from robocram.world import World
-from tests.plans.household_state import rebuilt
+from tests.plans.household_state import inside, rebuilt
 
 STRETCH = str(Path(__file__).resolve().parents[1] / "data" / "stretch" / "stretch.py")
 FRIDGE = "fridge_body"
@@ -25,30 +24,16 @@ LET_GO = 0.05  # [m] the robot's nearest link is at least this far from the milk
 OTHERS = ("bowl-1", "bowl-2", "cup-1", "cup-2", "spoon-1", "spoon-2")  # on the table too
 
 
-def _inside(world: World, thing: str, link: str) -> bool:
-    """Whether ``thing``'s origin lies in the bounding box of the kitchen's ``link``."""
-    cid = world.physics.client()
-    kitchen = world.object("kitchen").body_id
-    index = next(
-        j
-        for j in range(pybullet.getNumJoints(kitchen, physicsClientId=cid))
-        if pybullet.getJointInfo(kitchen, j, physicsClientId=cid)[12].decode() == link
-    )
-    low, high = pybullet.getAABB(kitchen, index, physicsClientId=cid)
-    at, _ = pybullet.getBasePositionAndOrientation(world.object(thing).body_id, physicsClientId=cid)
-    return all(lo <= v <= hi for lo, v, hi in zip(low, at, high, strict=True))
-
-
 def test_the_stretch_puts_the_milk_back_into_the_fridge() -> None:
     household = rebuilt(STRETCH, "stretch_table_set.json")
     world, robot = household.world, household.robot
     try:
-        assert not _inside(world, "milk-1", FRIDGE)
+        assert not inside(world, "milk-1", FRIDGE)
         for i, thing in enumerate(OTHERS):  # cleared before the milk, as in the household
             world.set_pose(thing, Pose((10.0 + i, 10.0, 0.05)))
         with simulated_robot(world, robot):
             perform(an.action(type="clearing-table", objects=["milk-1"]))
-        assert _inside(world, "milk-1", FRIDGE)
+        assert inside(world, "milk-1", FRIDGE)
         cid = world.physics.client()
         milk, body = world.object("milk-1").body_id, world.object(robot).body_id
         assert pybullet.getClosestPoints(body, milk, LET_GO, physicsClientId=cid) == ()
