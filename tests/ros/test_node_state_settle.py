@@ -28,7 +28,7 @@ class FedState(NodeState):
     def op_frames(self) -> list[str]:
         return [BASE, "mug-1"]
 
-    def op_lookups(
+    def _lookups(
         self, target: str, sources: list[str]
     ) -> dict[str, tuple[tuple[float, ...], tuple[float, ...]]]:
         return {s: ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0)) for s in sources}
@@ -142,3 +142,16 @@ def test_a_frame_not_published_along_and_an_unheard_environment_hold_no_wait() -
         node._frames_stamped([(BASE, 500.02)])
     node._joints_arrived(list(END), list(END.values()), 500.02)
     assert node.op_wait_for_state(mark, WAIT)
+
+
+def test_a_lookup_before_the_robots_first_state_waits_for_it_once() -> None:
+    node = fed()
+    answers: list[object] = []
+    asking = threading.Thread(target=lambda: answers.append(node.op_lookups("map", [BASE])))
+    asking.start()
+    asking.join(WAIT)
+    assert asking.is_alive() and not answers  # tf is still empty: the lookup waits
+    node.publish(100.0, {"torso_lift_joint": 0.1})
+    asking.join(SETTLES)
+    assert answers == [{BASE: ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0))}]
+    assert node.op_lookup("map", BASE) == ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0))

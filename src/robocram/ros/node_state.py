@@ -43,7 +43,7 @@ class NodeState(ABC):
         self._joints: dict[str, float] = {}
         self._joint_arrivals = 0  # joint-state messages received so far
         self._base_arrivals = 0  # transforms of the base frame received so far
-        self._first_snapshot_waited = False  # the first snapshot waited for a first state
+        self._first_snapshot_waited = False  # a snapshot or lookup waited for a first state
         self._environment: dict[str, dict[str, float]] = {t: {} for t in config.environment_topics}
         self._joint_stamp = 0.0  # [s] of the robot's clock; 0: unstamped or none yet
         self._environment_stamps: dict[str, float] = {}  # by topic
@@ -114,13 +114,7 @@ class NodeState(ABC):
         Asked before the robot's first joint state and base transform came, it waits up to
         :data:`FIRST_STATE_TIMEOUT` for them, once: a robot that publishes when its state
         changes (and a lagging tf) may not have sent since our node joined."""
-        with self._state:
-            if not self._first_snapshot_waited:
-                self._first_snapshot_waited = True
-                self._state.wait_for(
-                    lambda: self._joint_arrivals > 0 and self._base_arrivals > 0,
-                    FIRST_STATE_TIMEOUT,
-                )
+        self._await_first_state()
         known = {frame.lstrip("/") for frame in self.op_frames()}
         sources = [base, *(o for o in objects if o in known and o != base)]
         return (
@@ -133,8 +127,33 @@ class NodeState(ABC):
     def op_frames(self) -> list[str]:
         """Every frame the transforms name (each node's own)."""
 
-    @abstractmethod
+    def _await_first_state(self) -> None:
+        """Before the robot's first joint state and base transform came, wait up to
+        :data:`FIRST_STATE_TIMEOUT` for them, once: a robot that publishes when its state
+        changes (and a lagging tf) may not have sent since our node joined."""
+        with self._state:
+            if not self._first_snapshot_waited:
+                self._first_snapshot_waited = True
+                self._state.wait_for(
+                    lambda: self._joint_arrivals > 0 and self._base_arrivals > 0,
+                    FIRST_STATE_TIMEOUT,
+                )
+
+    def op_lookup(self, target: str, source: str) -> tuple[tuple[float, ...], tuple[float, ...]]:
+        """The latest pose of ``source`` in ``target`` as (position, quaternion)."""
+        return self.op_lookups(target, [source])[source]
+
     def op_lookups(
+        self, target: str, sources: list[str]
+    ) -> dict[str, tuple[tuple[float, ...], tuple[float, ...]]]:
+        """The poses of ``sources`` in ``target``; asked before the first state came, once
+        after it (see :meth:`_await_first_state`: a lookup right after our node started
+        must not find tf still empty)."""
+        self._await_first_state()
+        return self._lookups(target, sources)
+
+    @abstractmethod
+    def _lookups(
         self, target: str, sources: list[str]
     ) -> dict[str, tuple[tuple[float, ...], tuple[float, ...]]]:
         """The poses of ``sources`` in ``target`` (each node's own)."""

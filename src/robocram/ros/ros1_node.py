@@ -166,7 +166,7 @@ class RosNode(NodeState):
             if entry.goal_id == goal_id and handle is not None:
                 handle.cancel()
 
-    def op_lookup(self, target: str, source: str) -> tuple[tuple[float, ...], tuple[float, ...]]:
+    def _lookup(self, target: str, source: str) -> tuple[tuple[float, ...], tuple[float, ...]]:
         """The latest pose of ``source`` in ``target`` as (position, quaternion)."""
         import rospy
 
@@ -176,11 +176,11 @@ class RosNode(NodeState):
             (t.rotation.x, t.rotation.y, t.rotation.z, t.rotation.w),
         )
 
-    def op_lookups(
+    def _lookups(
         self, target: str, sources: list[str]
     ) -> dict[str, tuple[tuple[float, ...], tuple[float, ...]]]:
-        """``op_lookup`` of each of ``sources``, in one reply."""
-        return {source: self.op_lookup(target, source) for source in sources}
+        """``_lookup`` of each of ``sources``, in one reply."""
+        return {source: self._lookup(target, source) for source in sources}
 
     def op_frames(self) -> list[str]:
         """Every frame in the tf buffer."""

@@ -214,14 +214,10 @@ class Ros2Node(NodeState):
             if handle is not None:
                 handle.cancel_goal_async()
 
-    def op_lookup(self, target: str, source: str) -> tuple[tuple[float, ...], tuple[float, ...]]:
-        """The latest pose of ``source`` in ``target`` as (position, quaternion)."""
-        return self.op_lookups(target, [source])[source]
-
-    def op_lookups(
+    def _lookups(
         self, target: str, sources: list[str]
     ) -> dict[str, tuple[tuple[float, ...], tuple[float, ...]]]:
-        """``op_lookup`` of each of ``sources``, in one reply."""
+        """The poses of ``sources`` in ``target``, in one reply."""
         with self._state:
             poses = self._transforms.lookups(target, sources)
         return {s: (tuple(p.position), tuple(p.orientation)) for s, p in poses.items()}
