@@ -391,7 +391,7 @@ def _put_down(name: str, done: TableClearing) -> None:
     table = done.table
     on_table = a.location(on=(table.environment, table.link), for_=name)
     with contextlib.suppress(PlanFailure, DesignatorError):
-        deliver(name, on_table, arm, log=done.log)
+        deliver(name, on_table, arm, log=done.log, reach_stands=True)
 
 
 def _still_on_table(name: str, table: Table) -> Point | None:
