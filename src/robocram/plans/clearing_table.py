@@ -7,7 +7,10 @@ grouped by their usual place; a container is opened before the first thing of it
 is brought back (hands free), each thing is looked at again, fetched from the table and
 delivered ``on`` its surface or ``in_`` its container, and the container is closed once
 the group is done. A thing that cannot be brought back is recorded and the rest still
-are; then :class:`ActivityIncomplete` names what is left, every container closed.
+are; one left in the hand is put down on the table first, so the hand is free for them.
+What is left on the table is tried again, regrouped by place, once the rest is back (the
+milk gone, the cup beside it is free), round after round while a round brings something
+back; then :class:`ActivityIncomplete` names what is left, every container closed.
 """
 
 from __future__ import annotations
@@ -441,7 +444,8 @@ def _round(
 def clear_table(
     table: Table | tuple[str, str] | None = None, objects: Sequence[str] | None = None
 ) -> TableClearing:
-    """Bring every thing on ``table`` (or the ``objects`` named) back to its usual place.
+    """Bring every thing on ``table`` (or the ``objects`` named) back to its usual place;
+    what failed and still lies on the table, again after the rest (:func:`_round`).
 
     Raises:
         ActivityIncomplete: some things could not be brought back (the rest are, and every
