@@ -7,7 +7,10 @@ grouped by their usual place; a container is opened before the first thing of it
 is brought back (hands free), each thing is looked at again, fetched from the table and
 delivered ``on`` its surface or ``in_`` its container, and the container is closed once
 the group is done. A thing that cannot be brought back is recorded and the rest still
-are; then :class:`ActivityIncomplete` names what is left, every container closed.
+are; one left in the hand is put down on the table first, so the hand is free for them.
+What is left on the table is tried again, regrouped by place, once the rest is back (the
+milk gone, the cup beside it is free), round after round while a round brings something
+back; then :class:`ActivityIncomplete` names what is left, every container closed.
 """
 
 from __future__ import annotations
@@ -352,8 +355,13 @@ def _shelf_spots(place: Place, kind: str, name: str) -> Iterator[Pose]:
 
 def _return_group(
     place: Place, things: list[tuple[str, str, Point]], done: TableClearing
-) -> list[Exception]:
+) -> tuple[dict[str, Exception], list[Exception]]:
+    """Bring ``things`` back into ``place``, opening it first and closing it after; the
+    failure of each thing not brought back (by name), and the container's own failures.
+    A thing still in the hand after its failure is put down on the table
+    (:func:`_put_down`): the hand is free for the rest, and a later round may take it."""
     visit = Visit(place)
+    missed: dict[str, Exception] = {}
     failures: list[Exception] = []
     try:
         visit.open(done.log)
@@ -363,29 +371,47 @@ def _return_group(
                     _return_one(name, kind, point, place, done)
                     done.returned[name] = place
                 except PlanFailure as failure:
-                    failures.append(failure)
+                    missed[name] = failure
+                    _put_down(name, done)
     except PlanFailure as failure:  # the container would not open
         failures.append(failure)
     finally:
         done.opened += [o.container.link for o in visit.opened]
         failures += visit.close(done.log)
-    return failures
+    return missed, failures
 
 
-def clear_table(
-    table: Table | tuple[str, str] | None = None, objects: Sequence[str] | None = None
-) -> TableClearing:
-    """Bring every thing on ``table`` (or the ``objects`` named) back to its usual place.
+def _put_down(name: str, done: TableClearing) -> None:
+    """Put ``name`` down on the table if a hand still holds it after its return failed
+    (the drafted Stretch's cup, whose fingers would open into the milk beside the spot it
+    was taken from, stayed in the hand, and every container after it could not be opened:
+    seeded household 16). Anywhere on the table that takes it; held still if none does."""
+    robot = current_robot()
+    holding = robot.held_objects(robot.grasping_arms()).items()
+    arm = next((hand for hand, thing in holding if thing == name), None)
+    if arm is None:
+        return
+    table = done.table
+    on_table = a.location(on=(table.environment, table.link), for_=name)
+    with contextlib.suppress(PlanFailure, DesignatorError):
+        deliver(name, on_table, arm, log=done.log, reach_stands=True)
 
-    Raises:
-        ActivityIncomplete: some things could not be brought back (the rest are, and every
-            container opened is closed).
-    """
-    chosen = table_with_seats(table)
-    done = TableClearing(chosen)
-    seen = things_on(chosen) if objects is None else {n: _named(n) for n in objects}
+
+def _still_on_table(name: str, table: Table) -> Point | None:
+    """Where ``name`` lies (map) if it lies on ``table`` and no hand holds it."""
+    robot = current_robot()
+    if name in robot.held_objects(robot.grasping_arms()).values():
+        return None
+    point = map_pose(name).position
+    return point if _on_table(table, point) else None
+
+
+def _grouped(
+    seen: dict[str, tuple[str, Point]], failures: list[Exception]
+) -> dict[Place, list[tuple[str, str, Point]]]:
+    """``seen`` grouped by each thing's usual place; a thing whose type has none adds a
+    failure naming the fix."""
     groups: dict[Place, list[tuple[str, str, Point]]] = {}
-    failures: list[Exception] = []
     for name, (kind, point) in seen.items():
         place = usual_place(kind)
         if place is None:
@@ -397,9 +423,51 @@ def clear_table(
             )
             continue
         groups.setdefault(place, []).append((name, kind, point))
+    return groups
+
+
+def _round(
+    groups: dict[Place, list[tuple[str, str, Point]]], done: TableClearing
+) -> tuple[dict[str, Exception], list[Exception]]:
+    """One round over ``groups``, place by place; each failed thing's failure (by name)
+    and the containers' failures."""
+    missed: dict[str, Exception] = {}
+    failures: list[Exception] = []
     for place, things in groups.items():
         with sub_task(f"clearing into {place.link}"):
-            failures += _return_group(place, things, done)
+            group_missed, group_failures = _return_group(place, things, done)
+        missed.update(group_missed)
+        failures += group_failures
+    return missed, failures
+
+
+def clear_table(
+    table: Table | tuple[str, str] | None = None, objects: Sequence[str] | None = None
+) -> TableClearing:
+    """Bring every thing on ``table`` (or the ``objects`` named) back to its usual place;
+    what failed and still lies on the table, again after the rest (:func:`_round`).
+
+    Raises:
+        ActivityIncomplete: some things could not be brought back (the rest are, and every
+            container opened is closed).
+    """
+    chosen = table_with_seats(table)
+    done = TableClearing(chosen)
+    seen = things_on(chosen) if objects is None else {n: _named(n) for n in objects}
+    failures: list[Exception] = []
+    missed, round_failures = _round(_grouped(seen, failures), done)
+    failures += round_failures
+    while missed:  # what is left, once more while a round brings something back
+        again = {n: (seen[n][0], p) for n in missed if (p := _still_on_table(n, chosen))}
+        if not again:
+            break
+        with sub_task("clearing what was left"):
+            missed_again, round_failures = _round(_grouped(again, []), done)
+        failures += round_failures
+        missed = {n: missed_again.get(n, f) for n, f in missed.items() if n not in done.returned}
+        if len(missed_again) == len(again):  # nothing came back: no round will do better
+            break
+    failures += missed.values()
     with contextlib.suppress(PlanFailure):
         park_arms()
     if failures:
