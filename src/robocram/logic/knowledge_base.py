@@ -30,6 +30,7 @@ from robocram.logic.machine import Machine
 from robocram.logic.operators import OperatorTable
 from robocram.logic.predicate import USER, Key, Pred
 from robocram.logic.reader import read_query, read_terms
+from robocram.logic.shared_reads import STANDARD_SYNTAX
 from robocram.logic.system import PRIVATE_PREFIX, library_predicates, system_predicates
 from robocram.logic.template import Slot, build, compile_term
 from robocram.logic.terms import Term, Var, deref
@@ -123,15 +124,26 @@ class KnowledgeBase:
     def _read_clauses(
         self, text: str, name: str, directives: list[Value], dynamic: list[Key]
     ) -> Compiled:
-        """Read and compile the clauses of ``text``; collect its directives and dynamics."""
-        terms: list[Value] = []
+        """Read and compile the clauses of ``text``; collect its directives and dynamics.
+
+        In the standard syntax (``_syntax`` 0) a text without directives is read once per
+        process (:mod:`~robocram.logic.shared_reads`)."""
+        standard = self._syntax == 0
+        kept = STANDARD_SYNTAX.get(text) if standard else None
         with paused_gc():
+            if kept is not None:
+                return [compile_clause(t, name) for t in kept]
+            terms: list[Value] = []
+            plain = True
             for term, _ in read_terms(text, self._ops, self._flags):
                 if type(term) is Term and term[0] == ":-" and len(term[1]) == 1:
+                    plain = False
                     if not self._declaration(deref(term[1][0]), dynamic):
                         directives.append(term[1][0])
                 else:
                     terms.append(term)
+            if standard and plain:
+                STANDARD_SYNTAX.put(text, tuple(terms))
             return [compile_clause(t, name) for t in terms]
 
     def _consulted_before(self, name: str, text: str) -> Compiled | None:
@@ -321,6 +333,11 @@ class KnowledgeBase:
             and pred.kind == USER
             and pred.owner != LIBRARY_OWNER
         )
+
+    def known(self, name: str, arity: int) -> bool:
+        """Whether a call of ``name/arity`` finds a predicate (of any kind) rather than
+        raising an unknown-predicate error, without building that error's suggestions."""
+        return (name, arity) in self._preds
 
     def similar_predicates(self, name: str, arity: int) -> list[str]:
         """Defined predicates whose name or arity is close to name/arity."""
