@@ -87,9 +87,7 @@ class TravelBound:
             tuple(sorted(carriers.items())),
             tuple((link, radius.get(link)) for link in sorted(set(carriers.values()))),
         )  # fmt: skip
-        made = partial(
-            _made_once, robot, key[1], radius, carriers, max_link_travel, max_joint_step
-        )
+        made = partial(_made_once, robot, key[1], radius, carriers, max_link_travel, max_joint_step)
         return world.derived(_kept_bounds).get(key, made, world.versions)
 
 
@@ -104,9 +102,7 @@ def _made_once(
     """:func:`_made`, or the bound made from the same inputs in any world: kept with the
     model (a new scene's robot asks again for bounds that follow from its model and the
     same radii)."""
-    key = (
-        joints, tuple(radius.items()), tuple(carriers.items()), max_link_travel, max_joint_step
-    )
+    key = (joints, tuple(radius.items()), tuple(carriers.items()), max_link_travel, max_joint_step)
     kept = robot.description.model.derived(_bounds_of_model)
     found = kept.get(key)
     if found is None:
