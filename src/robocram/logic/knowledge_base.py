@@ -129,10 +129,10 @@ class KnowledgeBase:
         In the standard syntax (``_syntax`` 0) a text without directives is read once per
         process (:mod:`~robocram.logic.shared_reads`)."""
         standard = self._syntax == 0
-        kept = STANDARD_SYNTAX.get(text) if standard else None
+        kept = STANDARD_SYNTAX.clauses(text, name) if standard else None
+        if kept is not None:
+            return kept
         with paused_gc():
-            if kept is not None:
-                return [compile_clause(t, name) for t in kept]
             terms: list[Value] = []
             plain = True
             for term, _ in read_terms(text, self._ops, self._flags):
@@ -142,9 +142,10 @@ class KnowledgeBase:
                         directives.append(term[1][0])
                 else:
                     terms.append(term)
+            compiled = [compile_clause(t, name) for t in terms]
             if standard and plain:
-                STANDARD_SYNTAX.put(text, tuple(terms))
-            return [compile_clause(t, name) for t in terms]
+                STANDARD_SYNTAX.keep_clauses(text, compiled)
+            return compiled
 
     def _consulted_before(self, name: str, text: str) -> Compiled | None:
         """The clauses ``text`` compiled to when group ``name`` last loaded it, if reusable.
@@ -412,12 +413,17 @@ class KnowledgeBase:
         key = (self._flags["double_quotes"], text)  # the flag changes what "..." reads as
         cached = self._queries.get(key)
         if cached is None:
-            term, varmap = read_query(text, self._ops, self._flags)
-            slots: dict[Var, Slot] = {}
-            for var in varmap.values():
-                slots[var] = Slot(len(slots))
-            template = compile_term(term, slots)
-            cached = (template, {name: slots[v].i for name, v in varmap.items()}, len(slots))
+            standard = self._syntax == 0  # the standard syntax: read once per process
+            cached = STANDARD_SYNTAX.query(text) if standard else None
+            if cached is None:
+                term, varmap = read_query(text, self._ops, self._flags)
+                slots: dict[Var, Slot] = {}
+                for var in varmap.values():
+                    slots[var] = Slot(len(slots))
+                template = compile_term(term, slots)
+                cached = (template, {name: slots[v].i for name, v in varmap.items()}, len(slots))
+                if standard:
+                    STANDARD_SYNTAX.keep_query(text, cached)
             self._queries.put(key, cached)
         return cached
 
