@@ -25,7 +25,6 @@ from functools import partial
 import numpy as np
 
 from robocram.execution.failures import NavigationGoalOutsideArea
-from robocram.logic.lru import LRUCache
 from robocram.motion.cleared_poses import ClearedPoses
 from robocram.motion.contact_allowance import ContactAllowance
 from robocram.motion.hand_contact import KEEP_DEPTH
@@ -497,30 +496,8 @@ def _footprint(
         base_z,
         tuple((name, _in_base(start, world.pose(name))) for name in carried),
     )
-    build = partial(_footprint_once, robot, carried, start, key)
+    build = partial(_built_footprint, robot, carried, start)
     return world.derived(_kept_footprints).get(key, build, world.versions)
-
-
-def _footprint_once(
-    robot: RobotHandle, carried: tuple[str, ...], start: Pose, key: _PostureKey
-) -> tuple[HeightBins, RobotFootprint]:
-    """:func:`_built_footprint`, or, when the robot carries nothing, the one built in any
-    world for the same posture at the same exact spot: kept with the model (the body's
-    boxes follow from its model, its spec and its posture; a new scene asks again)."""
-    if carried:
-        return _built_footprint(robot, carried, start)
-    kept = robot.description.model.derived(_footprints_of_model)
-    full = (*key, start.position, robot.world.object(robot.name).spec)
-    found = kept.get(full)
-    if found is None:
-        found = _built_footprint(robot, carried, start)
-        kept.put(full, found)
-    return found
-
-
-def _footprints_of_model(model: object) -> LRUCache[_PostureKey, tuple[HeightBins, RobotFootprint]]:
-    """The footprints a model keeps of its bodies' postures (never changed once built)."""
-    return LRUCache(FOOTPRINTS_KEPT)
 
 
 def _built_footprint(
