@@ -22,6 +22,7 @@ from robocram.logic.errors import (
     PrologResourceError,
 )
 from robocram.logic.fact_groups import LIBRARY_OWNER, GroupEdit, Groups, refuse_system
+from robocram.logic.kept_reads import keep_terms, kept_terms
 from robocram.logic.keys import pred_key
 from robocram.logic.limits import Budget, QueryStopped
 from robocram.logic.loader import compile_clause, parse_indicator
@@ -127,12 +128,18 @@ class KnowledgeBase:
         """Read and compile the clauses of ``text``; collect its directives and dynamics.
 
         In the standard syntax (``_syntax`` 0) a text without directives is read once per
-        process (:mod:`~robocram.logic.shared_reads`)."""
+        process (:mod:`~robocram.logic.shared_reads`) and once per machine
+        (:mod:`~robocram.logic.kept_reads`)."""
         standard = self._syntax == 0
         kept = STANDARD_SYNTAX.clauses(text, name) if standard else None
         if kept is not None:
             return kept
         with paused_gc():
+            stored = kept_terms(text) if standard else None
+            if stored is not None:
+                compiled = [compile_clause(t, name) for t in stored]
+                STANDARD_SYNTAX.keep_clauses(text, compiled)
+                return compiled
             terms: list[Value] = []
             plain = True
             for term, _ in read_terms(text, self._ops, self._flags):
@@ -145,6 +152,7 @@ class KnowledgeBase:
             compiled = [compile_clause(t, name) for t in terms]
             if standard and plain:
                 STANDARD_SYNTAX.keep_clauses(text, compiled)
+                keep_terms(text, terms)
             return compiled
 
     def _consulted_before(self, name: str, text: str) -> Compiled | None:
