@@ -132,7 +132,8 @@ class HandCache:
     def _of_equal(self, desc: RobotDescription, arm: str) -> Hand | None:
         """The hand kept for a description equal to ``desc`` (each scene loads its robot's
         description anew, on the same model: its hands are read once, not per scene)."""
-        for key in self.entries.keys():
+        kept = self.entries.keys()  # a snapshot: get() below reorders the entries
+        for key in kept:
             entry = self.entries.get(key) if key[1] == arm else None
             if entry is not None and entry[0] == desc:
                 return entry[1]
