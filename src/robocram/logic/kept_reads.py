@@ -48,6 +48,11 @@ READ_BY = (
 Encoded = str | int | float | tuple["Encoded", ...] | list[int]
 
 
+class _NotKept(Exception):  # noqa: N818 - reads as what happened
+    """A term plain values cannot hold, or a kept one not of this module's making: it is
+    not kept, or not used (never seen outside this module)."""
+
+
 def kept_terms(text: str) -> list[Value] | None:
     """The clause terms kept for ``text``, or None (none kept, or not to be trusted)."""
     key = _key(text)
@@ -63,7 +68,7 @@ def kept_terms(text: str) -> list[Value] | None:
         if not (isinstance(stored, tuple) and len(stored) == 2 and stored[0] == key):
             return None
         return [_decoded(term, []) for term in stored[1]]
-    except (ValueError, EOFError, TypeError, IndexError, RecursionError):
+    except (_NotKept, ValueError, EOFError, TypeError, IndexError, RecursionError):
         return None
 
 
@@ -73,7 +78,7 @@ def keep_terms(text: str, terms: Sequence[Value]) -> None:
     key = _key(text)
     try:
         body = marshal.dumps((key, tuple(_encoded(term, {}) for term in terms)))
-    except (ValueError, RecursionError):
+    except (_NotKept, ValueError, RecursionError):
         return
     path = _path(key)
     with contextlib.suppress(OSError):
@@ -97,11 +102,11 @@ def _encoded(term: Value, numbers: dict[Var, int]) -> Encoded:
         return (term[0], tuple(_encoded(a, numbers) for a in term[1]))
     if isinstance(term, Var):
         if term.ref is not None:
-            raise ValueError("a bound variable in a read term")
+            raise _NotKept("a bound variable in a read term")
         return [numbers.setdefault(term, len(numbers))]
     if isinstance(term, PString):
         return (term.text,)
-    raise ValueError(f"a read term holds a {kind.__name__}")
+    raise _NotKept(f"a read term holds a {kind.__name__}")
 
 
 def _decoded(value: object, variables: list[Var]) -> Value:
@@ -112,20 +117,20 @@ def _decoded(value: object, variables: list[Var]) -> Value:
     if isinstance(value, tuple) and len(value) == 2 and isinstance(value[1], tuple):
         name, args = value
         if not isinstance(name, str):
-            raise TypeError("a compound's name is no atom")
+            raise _NotKept("a compound's name is no atom")
         return Term(name, tuple(_decoded(a, variables) for a in args))
     if isinstance(value, tuple) and len(value) == 1 and isinstance(value[0], str):
         return PString(value[0])
     if isinstance(value, list) and len(value) == 1 and isinstance(value[0], int):
         number = value[0]
         if not 0 <= number <= len(variables):  # numbered in order of first appearance
-            raise ValueError("a variable out of order")
+            raise _NotKept("a variable out of order")
         if number == len(variables):
             fresh = make_var()
             fresh.ref = None
             variables.append(fresh)
         return variables[number]
-    raise TypeError(f"a kept term holds a {type(value).__name__}")
+    raise _NotKept(f"a kept term holds a {type(value).__name__}")
 
 
 def _key(text: str) -> str:
