@@ -10,6 +10,7 @@ import numpy as np
 import pybullet
 import pytest
 
+from robocram.grasping.hand import _read_hand, hand_of
 from robocram.motion.obstacle_shapes import ObstacleShapes, obstacle_cache
 from robocram.motion.travel_bound import TravelBound, _made, link_radii
 from robocram.scenes import KitchenScene, kitchen_scene
@@ -77,3 +78,13 @@ def test_a_travel_bound_of_a_new_scene_is_made_from_its_own_radii(
     assert bound is TravelBound.of(first, ARM)  # one bound for equal inputs
     fresh = _made(second, ARM, link_radii(second), {}, bound.max_link_travel, bound.max_joint_step)
     assert np.array_equal(bound.lever, fresh.lever) and bound.lever[0] > 0.5
+
+
+def test_a_new_scenes_robot_takes_the_hands_read_for_an_equal_description(
+    scenes: tuple[KitchenScene, ...],
+) -> None:
+    first, second = (s.world.robot("pr2").description for s in scenes[:2])
+    assert first is not second and first == second  # each scene loads it anew
+    kept = hand_of(second, "right")
+    assert kept is hand_of(first, "right")
+    assert kept == _read_hand(second, "right")  # what reading it for this one gives
