@@ -13,7 +13,6 @@ Maps are cached on disk under :func:`cache_dir`, keyed by the URDF's content.
 from __future__ import annotations
 
 import hashlib
-import itertools
 import math
 import os
 import tempfile
@@ -26,13 +25,11 @@ from numpy.typing import NDArray
 
 from robocram.costmaps.batch_fk import batch_frame_poses
 from robocram.costmaps.grasps import approach_axis
+from robocram.costmaps.lowest_point import lowest_point
 from robocram.kinematics import arm_joints
 from robocram.kinematics.robot_kinematics import robot_kinematics
-from robocram.robots import RobotDescription, RobotModel, load_description
+from robocram.robots import LoadedDescription, RobotDescription, load_description
 from robocram.robots.disk_cache import cache_dir
-from robocram.robots.link_centre import link_box
-from robocram.robots.model_pose import resting_link_poses
-from robocram.tf import Pose
 
 SAMPLES = 100_000  # FK samples per arm
 RADIUS_STEP = 0.05  # [m]
@@ -127,31 +124,16 @@ def base_bottom(desc: RobotDescription) -> float:
     the counter's mug, which a map from 0 up scored 0 from every cell. A base that is
     fixed is mounted where it works, on a pedestal or a bench as often as on the floor:
     its map starts as far down as an arm reaches (:data:`RADIUS_MAX`)."""
-    loaded = load_description(desc)
+    # a loaded description is not checked again (every map's key asks)
+    loaded = desc if isinstance(desc, LoadedDescription) else load_description(desc)
     model = loaded.model
     assert model is not None
     if loaded.drive == "fixed":
         return -RADIUS_MAX
-    lowest = model.derived(_lowest_point)
+    lowest = model.derived(lowest_point)
     return (
         round(math.floor(lowest / HEIGHT_STEP) * HEIGHT_STEP, 3) if lowest < -HEIGHT_STEP else 0.0
     )
-
-
-def _lowest_point(model: RobotModel) -> float:
-    """[m] The lowest corner of any link's box in the base frame, at most 0 (kept with the
-    model: every map look-up keys on it, and it walks each link's chain)."""
-    lowest = 0.0
-    poses = resting_link_poses(model)
-    for name, link in model.links.items():
-        box = link_box(link)
-        if box is None:
-            continue
-        pose = poses[name]
-        (x0, y0, z0), (x1, y1, z1) = box
-        for corner in itertools.product((x0, x1), (y0, y1), (z0, z1)):
-            lowest = min(lowest, (pose * Pose(corner)).position[2])
-    return lowest
 
 
 def _smoothed(counts: NDArray[np.float64]) -> NDArray[np.float64]:

@@ -125,9 +125,19 @@ class HandCache:
         entry = self.entries.get((id(desc), arm))
         if entry is not None and entry[0] is desc:
             return entry[1]
-        hand = _read_hand(desc, arm)
+        hand = self._of_equal(desc, arm) or _read_hand(desc, arm)
         self.entries.put((id(desc), arm), (desc, hand))
         return hand
+
+    def _of_equal(self, desc: RobotDescription, arm: str) -> Hand | None:
+        """The hand kept for a description equal to ``desc`` (each scene loads its robot's
+        description anew, on the same model: its hands are read once, not per scene)."""
+        kept = self.entries.keys()  # a snapshot: get() below reorders the entries
+        for key in kept:
+            entry = self.entries.get(key) if key[1] == arm else None
+            if entry is not None and entry[0] == desc:
+                return entry[1]
+        return None
 
 
 def hand_of(desc: RobotDescription, arm: str) -> Hand:

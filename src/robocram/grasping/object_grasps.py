@@ -20,7 +20,7 @@ from robocram.grasping.grasp import Grasp
 from robocram.grasping.grasp_model import GRASP_NAMES, grasps
 from robocram.grasping.hand import hand_of
 from robocram.grasping.object_shape import ObjectShape, shape_of
-from robocram.logic import KnowledgeBase, UnknownPredicateError
+from robocram.logic import KnowledgeBase
 from robocram.robots import RobotDescription
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
@@ -48,9 +48,7 @@ class GraspCandidate:
 
 def install_grasp_facts(kb: KnowledgeBase) -> None:
     """Add the default per-type grasp facts (hollow bowl, mug handle) to ``kb``, once."""
-    try:
-        kb.holds("object_wall(_, _)")
-    except UnknownPredicateError:
+    if not kb.known("object_wall", 2):  # asked once per world: no error built to catch
         kb.consult(DEFAULT_FACTS, group=FACTS_GROUP, extendable=EXTENDABLE)
 
 

@@ -22,6 +22,7 @@ from robocram.logic.errors import (
     PrologResourceError,
 )
 from robocram.logic.fact_groups import LIBRARY_OWNER, GroupEdit, Groups, refuse_system
+from robocram.logic.kept_reads import keep_terms, kept_terms
 from robocram.logic.keys import pred_key
 from robocram.logic.limits import Budget, QueryStopped
 from robocram.logic.loader import compile_clause, parse_indicator
@@ -30,6 +31,7 @@ from robocram.logic.machine import Machine
 from robocram.logic.operators import OperatorTable
 from robocram.logic.predicate import USER, Key, Pred
 from robocram.logic.reader import read_query, read_terms
+from robocram.logic.shared_reads import STANDARD_SYNTAX
 from robocram.logic.system import PRIVATE_PREFIX, library_predicates, system_predicates
 from robocram.logic.template import Slot, build, compile_term
 from robocram.logic.terms import Term, Var, deref
@@ -123,16 +125,35 @@ class KnowledgeBase:
     def _read_clauses(
         self, text: str, name: str, directives: list[Value], dynamic: list[Key]
     ) -> Compiled:
-        """Read and compile the clauses of ``text``; collect its directives and dynamics."""
-        terms: list[Value] = []
+        """Read and compile the clauses of ``text``; collect its directives and dynamics.
+
+        In the standard syntax (``_syntax`` 0) a text without directives is read once per
+        process (:mod:`~robocram.logic.shared_reads`) and once per machine
+        (:mod:`~robocram.logic.kept_reads`)."""
+        standard = self._syntax == 0
+        kept = STANDARD_SYNTAX.clauses(text, name) if standard else None
+        if kept is not None:
+            return kept
         with paused_gc():
+            stored = kept_terms(text) if standard else None
+            if stored is not None:
+                compiled = [compile_clause(t, name) for t in stored]
+                STANDARD_SYNTAX.keep_clauses(text, compiled)
+                return compiled
+            terms: list[Value] = []
+            plain = True
             for term, _ in read_terms(text, self._ops, self._flags):
                 if type(term) is Term and term[0] == ":-" and len(term[1]) == 1:
+                    plain = False
                     if not self._declaration(deref(term[1][0]), dynamic):
                         directives.append(term[1][0])
                 else:
                     terms.append(term)
-            return [compile_clause(t, name) for t in terms]
+            compiled = [compile_clause(t, name) for t in terms]
+            if standard and plain:
+                STANDARD_SYNTAX.keep_clauses(text, compiled)
+                keep_terms(text, terms)
+            return compiled
 
     def _consulted_before(self, name: str, text: str) -> Compiled | None:
         """The clauses ``text`` compiled to when group ``name`` last loaded it, if reusable.
@@ -322,6 +343,11 @@ class KnowledgeBase:
             and pred.owner != LIBRARY_OWNER
         )
 
+    def known(self, name: str, arity: int) -> bool:
+        """Whether a call of ``name/arity`` finds a predicate (of any kind) rather than
+        raising an unknown-predicate error, without building that error's suggestions."""
+        return (name, arity) in self._preds
+
     def similar_predicates(self, name: str, arity: int) -> list[str]:
         """Defined predicates whose name or arity is close to name/arity."""
         preds = list(self._preds.values())
@@ -395,12 +421,17 @@ class KnowledgeBase:
         key = (self._flags["double_quotes"], text)  # the flag changes what "..." reads as
         cached = self._queries.get(key)
         if cached is None:
-            term, varmap = read_query(text, self._ops, self._flags)
-            slots: dict[Var, Slot] = {}
-            for var in varmap.values():
-                slots[var] = Slot(len(slots))
-            template = compile_term(term, slots)
-            cached = (template, {name: slots[v].i for name, v in varmap.items()}, len(slots))
+            standard = self._syntax == 0  # the standard syntax: read once per process
+            cached = STANDARD_SYNTAX.query(text) if standard else None
+            if cached is None:
+                term, varmap = read_query(text, self._ops, self._flags)
+                slots: dict[Var, Slot] = {}
+                for var in varmap.values():
+                    slots[var] = Slot(len(slots))
+                template = compile_term(term, slots)
+                cached = (template, {name: slots[v].i for name, v in varmap.items()}, len(slots))
+                if standard:
+                    STANDARD_SYNTAX.keep_query(text, cached)
             self._queries.put(key, cached)
         return cached
 

@@ -22,6 +22,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from robocram.kinematics.robot_kinematics import pose_to_se3
+from robocram.logic.lru import LRUCache
 from robocram.motion.coal_shapes import coal_geometries
 from robocram.motion.joint_trajectory import FloatArray
 from robocram.robots.lazy_library import LazyLibrary
@@ -42,6 +43,7 @@ HUGE = 1e9  # [m] the half extents of a half-space's box
 # through joints of up to 10 m of lever): clearances are lowered by it.
 DRIFT = 1e-4
 KEPT_STACKS = 4  # obstacle tables kept per world
+KEPT_STATES = 8  # per parsed URDF: the shapes of its bodies in the last states read
 
 
 @dataclass(frozen=True)
@@ -181,11 +183,37 @@ class ObstacleCache:
         if entry is not None and entry[0] is obj and _rigidly_moved(entry[1], state):
             shapes = entry[2].moved(base * entry[3].inverse())
         else:
-            shapes = ObstacleShapes.of(world, obj)
+            shapes = _shapes_in_state(world, obj, state)
             self.builds += 1
         self._entries[obj.name] = (obj, state, shapes, base)
         self._read[obj.name] = stamp
         return shapes
+
+
+def _shapes_in_state(world: World, obj: WorldObject, state: NDArray[np.float64]) -> ObstacleShapes:
+    """``obj``'s shapes read now, or those a body of the same model read in the same state
+    in any world (kept on the parsed URDF the bodies share: each new kitchen scene read its
+    268 pieces again). The key holds all the reading depends on: the body's spec, its
+    exact state (body id, base pose, joint values), its links' indices and offsets."""
+    model = obj.urdf_model
+    if model is None:
+        return ObstacleShapes.of(world, obj)
+    key = (
+        obj.name, obj.type, obj.spec, state.tobytes(), tuple(obj.link_index.items()),
+        tuple(obj.link_offset.items()), obj.parts, obj.part_offsets,
+    )  # fmt: skip
+    kept = model.derived(_kept_in_states)
+    found = kept.get(key)
+    if found is None:
+        found = ObstacleShapes.of(world, obj)
+        kept.put(key, found)
+        return found
+    return dataclasses.replace(found, obj=obj)  # the geometry is read-only: shared
+
+
+def _kept_in_states(model: object) -> LRUCache[tuple[object, ...], ObstacleShapes]:
+    """The shapes a parsed URDF keeps, per body and state (a few: doors open or shut)."""
+    return LRUCache(KEPT_STATES)
 
 
 def _near(kept: NDArray[np.float64], now: NDArray[np.float64]) -> bool:

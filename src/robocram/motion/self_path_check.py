@@ -25,6 +25,7 @@ from functools import partial
 
 import numpy as np
 
+from robocram.logic.lru import LRUCache
 from robocram.motion.coal_self_distances import SELF_MARGIN, SelfDistances, SelfParts
 from robocram.motion.configuration_checker import LinkPair
 from robocram.motion.held_self_pairs import held_pairs
@@ -60,7 +61,7 @@ class SelfPathCheck:
         included."""
         world = robot.world
         joints = tuple(joints)
-        build = partial(_moved_pairs, robot, joints)
+        build = partial(_moved_pairs_once, robot, joints)
         pairs, levers, parts = world.derived(_kept_pairs).get(
             (robot.name, joints), build, world.versions
         )
@@ -244,6 +245,29 @@ def _kept_pairs(world: World) -> Derived[tuple[str, tuple[str, ...]], _MovedPair
 
 def _robot_created(versions: Versions, key: tuple[str, tuple[str, ...]]) -> int:
     return versions.created(key[0])
+
+
+def _moved_pairs_once(robot: RobotHandle, joints: tuple[str, ...]) -> _MovedPairs:
+    """:func:`_moved_pairs`, or those worked out from the same inputs in any world: kept
+    with the model by all they follow from besides it (the matrix's pairs, the links'
+    radii and PyBullet indices), so a new scene's robot does not work them out again."""
+    world = robot.world
+    key = (
+        joints, SelfCollisionMatrix.of(robot).checked,
+        tuple(world.contacts.link_radii(robot.name).items()),
+        tuple(world.object(robot.name).link_index.items()),
+    )  # fmt: skip
+    kept = robot.description.model.derived(_pairs_of_model)
+    found = kept.get(key)
+    if found is None:
+        found = _moved_pairs(robot, joints)
+        kept.put(key, found)
+    return found
+
+
+def _pairs_of_model(model: object) -> LRUCache[tuple[object, ...], _MovedPairs]:
+    """The moved pairs a model keeps (never changed once worked out)."""
+    return LRUCache(KEPT)
 
 
 def _moved_pairs(robot: RobotHandle, joints: tuple[str, ...]) -> _MovedPairs:

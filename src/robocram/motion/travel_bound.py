@@ -19,6 +19,7 @@ from functools import partial
 
 import numpy as np
 
+from robocram.logic.lru import LRUCache
 from robocram.motion.errors import MotionError
 from robocram.motion.joint_trajectory import FloatArray
 from robocram.motion.mimic_family import mimic_family
@@ -86,8 +87,33 @@ class TravelBound:
             tuple(sorted(carriers.items())),
             tuple((link, radius.get(link)) for link in sorted(set(carriers.values()))),
         )  # fmt: skip
-        made = partial(_made, robot, key[1], radius, carriers, max_link_travel, max_joint_step)
+        made = partial(_made_once, robot, key[1], radius, carriers, max_link_travel, max_joint_step)
         return world.derived(_kept_bounds).get(key, made, world.versions)
+
+
+def _made_once(
+    robot: RobotHandle,
+    joints: tuple[str, ...],
+    radius: dict[str, float],
+    carriers: dict[str, str],
+    max_link_travel: float,
+    max_joint_step: float,
+) -> TravelBound:
+    """:func:`_made`, or the bound made from the same inputs in any world: kept with the
+    model (a new scene's robot asks again for bounds that follow from its model and the
+    same radii)."""
+    key = (joints, tuple(radius.items()), tuple(carriers.items()), max_link_travel, max_joint_step)
+    kept = robot.description.model.derived(_bounds_of_model)
+    found = kept.get(key)
+    if found is None:
+        found = _made(robot, joints, radius, carriers, max_link_travel, max_joint_step)
+        kept.put(key, found)
+    return found
+
+
+def _bounds_of_model(model: RobotModel) -> LRUCache[tuple[object, ...], TravelBound]:
+    """The bounds a model keeps by all they are made from (bounds are never changed)."""
+    return LRUCache(KEPT_BOUNDS)
 
 
 def _made(

@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import NDArray
 
+from robocram.logic.lru import LRUCache
 from robocram.tf import Vector3
 from robocram.world import closest_points, link_contacts, visibility
 from robocram.world.body_slots import link_slot
@@ -22,7 +23,7 @@ from robocram.world.contact_point import ContactPoint
 from robocram.world.derived import Derived
 from robocram.world.obstacle_boxes import KeptObstacleBoxes, ObstacleBoxes
 from robocram.world.versions import Versions
-from robocram.world.world_object import WorldObject
+from robocram.world.world_object import RobotObject, WorldObject
 from robocram.world.world_part import WorldPart
 from robocram.world.world_tables import ObjectRef, WorldTables
 
@@ -129,6 +130,25 @@ class Contacts(WorldPart):
         return dict(self._radii.get(handle.name, made, self._world.versions))
 
     def _link_radii(self, handle: WorldObject) -> dict[str, float]:
+        """The radii read now, or those read of a body of the same model in the same
+        state in any world (kept on the model: a new scene's robot asks again). The key
+        holds all they follow from: the body's spec, links, pose and joint values."""
+        w = self._world
+        model = handle.description.model if isinstance(handle, RobotObject) else handle.urdf_model
+        if model is None:
+            return self._read_radii(handle)
+        key = (
+            handle.name, handle.spec, tuple(w.link_names(handle)), w.pose(handle),
+            tuple(w.joint_states(handle).items()), tuple(handle.link_offset.items()),
+        )  # fmt: skip
+        kept = model.derived(_radii_of_model)
+        found = kept.get(key)
+        if found is None:
+            found = self._read_radii(handle)
+            kept.put(key, found)
+        return found  # never handed out itself: link_radii copies it
+
+    def _read_radii(self, handle: WorldObject) -> dict[str, float]:
         radii = {}
         for link in self._world.link_names(handle):
             origin = np.array(self._world.link_pose(handle, link).position)
@@ -210,3 +230,11 @@ class Contacts(WorldPart):
         """Whether ``a`` and ``b`` touch (within 2 mm)."""
         w = self._world
         return closest_points.contact(w, w.object(a), w.object(b))
+
+
+KEPT_RADII = 8  # per model: the radii of its bodies in the last states read
+
+
+def _radii_of_model(model: object) -> LRUCache[tuple[object, ...], dict[str, float]]:
+    """The link radii a model keeps per body and state (never changed once read)."""
+    return LRUCache(KEPT_RADII)
