@@ -14,26 +14,24 @@ cache that cannot be written only makes compiling cost what it did.
 
 from __future__ import annotations
 
-import contextlib
 import hashlib
 import importlib.util
 import marshal
-import os
-import tempfile
 from pathlib import Path
 from types import CodeType
+
+from robocram.logic.sealed_files import cache_folder, read_sealed, write_sealed
 
 __all__ = ["compiled"]
 
 FILENAME = "<robocram clause>"  # what tracebacks show for generated code
 _KIND = "prolog-code"
-_DIGEST = 32  # bytes of SHA-256 in front of each file
 
 
 def compiled(source: str) -> CodeType:
     """``compile(source)`` for ``exec``: read from disk, else compiled and written."""
     key = hashlib.sha256(importlib.util.MAGIC_NUMBER + source.encode("utf-8")).hexdigest()
-    path = _folder() / f"{key[:32]}.code"
+    path = cache_folder(_KIND) / f"{key[:32]}.code"
     code = _read(path, key)
     if code is None:
         code = compile(source, FILENAME, "exec")
@@ -41,22 +39,10 @@ def compiled(source: str) -> CodeType:
     return code
 
 
-def _folder() -> Path:
-    explicit = os.environ.get("ROBOCRAM_CACHE_DIR")
-    if explicit:
-        return Path(explicit) / _KIND
-    xdg = os.environ.get("XDG_CACHE_HOME")
-    return (Path(xdg) if xdg else Path.home() / ".cache") / "robocram" / _KIND
-
-
 def _read(path: Path, key: str) -> CodeType | None:
     """The code kept at ``path`` for ``key``, or None when missing or not to be trusted."""
-    try:
-        data = path.read_bytes()
-    except OSError:
-        return None
-    body = data[_DIGEST:]
-    if len(data) <= _DIGEST or hashlib.sha256(body).digest() != data[:_DIGEST]:
+    body = read_sealed(path)
+    if body is None:
         return None
     try:
         stored = marshal.loads(body)
@@ -68,14 +54,4 @@ def _read(path: Path, key: str) -> CodeType | None:
 
 
 def _write(path: Path, key: str, code: CodeType) -> None:
-    body = marshal.dumps((key, code))
-    with contextlib.suppress(OSError):
-        path.parent.mkdir(parents=True, exist_ok=True)
-        fd, temporary = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
-        try:
-            with os.fdopen(fd, "wb") as out:
-                out.write(hashlib.sha256(body).digest() + body)
-            os.replace(temporary, path)
-        finally:
-            with contextlib.suppress(FileNotFoundError):
-                os.unlink(temporary)
+    write_sealed(path, marshal.dumps((key, code)))

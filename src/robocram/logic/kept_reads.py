@@ -17,23 +17,20 @@ written only makes reading cost what it did.
 
 from __future__ import annotations
 
-import contextlib
 import functools
 import hashlib
 import importlib
 import marshal
-import os
-import tempfile
 from collections.abc import Sequence
 from pathlib import Path
 
+from robocram.logic.sealed_files import cache_folder, read_sealed, write_sealed
 from robocram.logic.terms import PString, Term, Var, make_var
 from robocram.logic.value import Value
 
 __all__ = ["keep_terms", "kept_terms"]
 
 _KIND = "prolog-terms"
-_DIGEST = 32  # bytes of SHA-256 in front of each file
 _FORMAT = "1"
 # the modules whose code decides what a text reads to in the standard syntax
 READ_BY = (
@@ -56,12 +53,8 @@ class _NotKept(Exception):  # noqa: N818 - reads as what happened
 def kept_terms(text: str) -> list[Value] | None:
     """The clause terms kept for ``text``, or None (none kept, or not to be trusted)."""
     key = _key(text)
-    try:
-        data = _path(key).read_bytes()
-    except OSError:
-        return None
-    body = data[_DIGEST:]
-    if len(data) <= _DIGEST or hashlib.sha256(body).digest() != data[:_DIGEST]:
+    body = read_sealed(_path(key))
+    if body is None:
         return None
     try:
         stored = marshal.loads(body)
@@ -80,17 +73,7 @@ def keep_terms(text: str, terms: Sequence[Value]) -> None:
         body = marshal.dumps((key, tuple(_encoded(term, {}) for term in terms)))
     except (_NotKept, ValueError, RecursionError):
         return
-    path = _path(key)
-    with contextlib.suppress(OSError):
-        path.parent.mkdir(parents=True, exist_ok=True)
-        fd, temporary = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
-        try:
-            with os.fdopen(fd, "wb") as out:
-                out.write(hashlib.sha256(body).digest() + body)
-            os.replace(temporary, path)
-        finally:
-            with contextlib.suppress(FileNotFoundError):
-                os.unlink(temporary)
+    write_sealed(_path(key), body)
 
 
 def _encoded(term: Value, numbers: dict[Var, int]) -> Encoded:
@@ -146,8 +129,4 @@ def _source_digest(module: str) -> str:
 
 
 def _path(key: str) -> Path:
-    explicit = os.environ.get("ROBOCRAM_CACHE_DIR")
-    if explicit:
-        return Path(explicit) / _KIND / f"{key[:32]}.terms"
-    xdg = os.environ.get("XDG_CACHE_HOME")
-    return (Path(xdg) if xdg else Path.home() / ".cache") / "robocram" / _KIND / f"{key[:32]}.terms"
+    return cache_folder(_KIND) / f"{key[:32]}.terms"
