@@ -25,7 +25,7 @@ import warnings
 from pathlib import Path
 
 import numpy as np
-from robot_zoo import CORPUS, _draft
+from robot_zoo import parked_in_kitchen
 
 from robocram.costmaps.grasps import shoulder_offset
 from robocram.grasping import palm_hold
@@ -38,7 +38,6 @@ from robocram.projection.articulation import HANDLE_HALF_WIDTH, _holding, approa
 from robocram.projection.gripper import open_gripper
 from robocram.projection.navigation import moved_base
 from robocram.projection.suction import on_the_face
-from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
 
@@ -58,13 +57,10 @@ def main() -> None:
     parser.add_argument("--restarts", type=int, default=30)
     args = parser.parse_args()
     warnings.simplefilter("ignore")
-    entry = next(r for r in CORPUS if r.name == args.name)
-    scene = kitchen_scene(_draft(entry, OUT))
+    scene = parked_in_kitchen(args.name, OUT)
     world = scene.world
     try:
         desc = world.robot(scene.robot).description
-        for spec in desc.arms.values():
-            world.set_joint_states(scene.robot, dict(spec.parking))
         handle = f"{DRAWER}_handle"
         at = world.link_pose("kitchen", handle)
         out = quat.rotate(at.orientation, (1.0, 0.0, 0.0))  # the kitchen's handle x: its front

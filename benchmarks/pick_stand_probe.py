@@ -25,14 +25,14 @@ from __future__ import annotations
 import argparse
 import math
 import warnings
+from collections.abc import Mapping
 from pathlib import Path
 
-from robot_zoo import CORPUS, _draft
+from robot_zoo import parked_in_kitchen
 
 from robocram.costmaps.pick_reach import PickTarget, pick_targets
 from robocram.kinematics import solve_ik
 from robocram.kinematics.ik_options import IKOptions
-from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
 from robocram.world import World
@@ -58,13 +58,9 @@ def main() -> None:
     parser.add_argument("--legs", type=float, default=None)
     args = parser.parse_args()
     warnings.simplefilter("ignore")
-    entry = next(r for r in CORPUS if r.name == args.name)
-    scene = kitchen_scene(_draft(entry, OUT))
+    scene = parked_in_kitchen(args.name, OUT)
     world = scene.world
     try:
-        desc = world.robot(scene.robot).description
-        for spec in desc.arms.values():
-            world.set_joint_states(scene.robot, dict(spec.parking))
         if args.legs is not None:
             legs = [j for j in world.joint_states(scene.robot) if j.endswith("_thigh_joint")]
             world.set_joint_states(scene.robot, dict.fromkeys(legs, args.legs))
@@ -157,7 +153,7 @@ def _best(world: World, robot: str, arm: str, pose: Pose, item: str, seeds: int)
     return "clear" if best[0] <= 0.0 else f"{best[0] * 1000:.0f} mm into {best[1]}"
 
 
-def _depth(world: World, robot: str, joints: dict[str, float], item: str) -> tuple[float, str]:
+def _depth(world: World, robot: str, joints: Mapping[str, float], item: str) -> tuple[float, str]:
     """How deep [m] the robot at ``joints`` goes into the kitchen (the item aside), and
     between which links; the joints put back."""
     before = world.joint_states(robot)

@@ -34,6 +34,10 @@ import traceback
 import warnings
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from robocram.scenes.kitchen_scene import KitchenScene
 
 ROOT = Path(__file__).resolve().parents[1]
 STEPS = ("draft", "check", "pick-up", "mug", "bowl")
@@ -138,6 +142,19 @@ def _draft(robot: ZooRobot, out: Path) -> str:
     module = out / f"{robot.name}.py"
     module.write_text(draft_description(_urdf_path(robot.source)).source(module), "utf-8")
     return str(module)
+
+
+def parked_in_kitchen(name: str, out: Path) -> KitchenScene:
+    """The kitchen scene of the corpus robot ``name`` (drafted into ``out`` as the zoo does),
+    every arm at its parking pose: where the probes start."""
+    from robocram.scenes import kitchen_scene
+
+    entry = next(r for r in CORPUS if r.name == name)
+    scene = kitchen_scene(_draft(entry, out))
+    desc = scene.world.robot(scene.robot).description
+    for spec in desc.arms.values():
+        scene.world.set_joint_states(scene.robot, dict(spec.parking))
+    return scene
 
 
 def _check(spec: str) -> str:
