@@ -12,6 +12,8 @@ import sys
 from dataclasses import replace
 from pathlib import Path
 
+from robocram.package_path_option import add_package_path_option
+
 EXIT_OK, EXIT_FAILED = 0, 1
 
 
@@ -25,23 +27,12 @@ def add_environment_commands(
     draft.add_argument("urdf", type=Path, help="the environment's URDF file")
     draft.add_argument("-o", "--output", type=Path, help="write the Python module here")
     draft.add_argument("--name", help="the environment's name (default: the URDF's)")
-    _package_path_option(draft)
+    add_package_path_option(draft)
     draft.set_defaults(handler=_draft)
     check = sub.add_parser("check", help="drive every container and surface once: report card")
     check.add_argument("description", type=Path, help="a .py file defining description()")
-    _package_path_option(check)
+    add_package_path_option(check)
     check.set_defaults(handler=_check)
-
-
-def _package_path_option(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument(
-        "--package-path",
-        type=Path,
-        action="append",
-        default=[],
-        metavar="DIR",
-        help="a folder holding ROS packages for package:// mesh URIs (repeatable)",
-    )
 
 
 def _draft(args: argparse.Namespace) -> int:

@@ -13,6 +13,8 @@ import sys
 from dataclasses import replace
 from pathlib import Path
 
+from robocram.package_path_option import add_package_path_option
+
 EXIT_OK, EXIT_FAILED = 0, 1
 
 
@@ -33,25 +35,14 @@ def add_robot_commands(commands: argparse._SubParsersAction[argparse.ArgumentPar
         help="the camera's link, where none is named like one (an optical frame is added "
         "if its x looks ahead)",
     )
-    _package_path_option(draft)
+    add_package_path_option(draft)
     draft.set_defaults(handler=_draft)
     check = sub.add_parser("check", help="drive every part of a description once: report card")
     check.add_argument(
         "description", help="pkg.module:NAME, a .py file defining description(), or a built-in"
     )
-    _package_path_option(check)
+    add_package_path_option(check)
     check.set_defaults(handler=_check)
-
-
-def _package_path_option(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument(
-        "--package-path",
-        type=Path,
-        action="append",
-        default=[],
-        metavar="DIR",
-        help="a folder holding ROS packages for package:// URIs (repeatable)",
-    )
 
 
 def _draft(args: argparse.Namespace) -> int:
