@@ -27,12 +27,13 @@ import sys
 import threading
 import time
 from multiprocessing.connection import Connection
-from typing import Any, Protocol
+from typing import Any
 
 from robocram.ros.errors import RosUnknownKey
 from robocram.ros.message_dicts import message_class, to_dict, to_message
 from robocram.ros.node_config import NodeConfig
 from robocram.ros.node_state import NodeState
+from robocram.ros.request_serving import serve_requests
 from robocram.ros.transport import GoalState
 
 MONITOR_PERIOD = 0.05  # [s] how often running goals are checked for a silent server
@@ -214,27 +215,6 @@ def _result_stamp(handle: object) -> float:
     return float(to_sec()) if callable(to_sec) else 0.0
 
 
-class Serving(Protocol):
-    """A node that answers the pipe's requests (``op_<name>`` methods): ROS 1's or ROS 2's."""
-
-    def send(self, message: tuple[object, ...]) -> None:
-        """Write one message to the plan process."""
-        ...
-
-
-def handle_request(node: Serving, request_id: int, op: str, args: tuple[object, ...]) -> None:
-    """Run ``node.op_<op>(*args)`` and send its reply (an error is a failed reply)."""
-    try:
-        payload = getattr(node, f"op_{op}")(*args)
-    except Exception as err:  # the reply carries it to the plan process
-        node.send(("reply", request_id, False, f"{type(err).__name__}: {err}"))
-    else:
-        node.send(("reply", request_id, True, payload))
-
-
-BLOCKING_OPS = frozenset({"send_goal", "wait_for_state", "settle"})
-
-
 def node_main(conn: Connection, config: NodeConfig) -> None:
     """The child process: join ROS, report ready, serve requests until shutdown."""
     os.environ["ROS_MASTER_URI"] = config.master_uri
@@ -248,17 +228,7 @@ def node_main(conn: Connection, config: NodeConfig) -> None:
         return
     conn.send(("ready", rospy.get_name()))
     threading.Thread(target=node.monitor, daemon=True).start()
-    while node.running:
-        try:
-            request_id, op, args = conn.recv()
-        except (EOFError, OSError):
-            break
-        if op in BLOCKING_OPS:
-            threading.Thread(
-                target=handle_request, args=(node, request_id, op, args), daemon=True
-            ).start()
-        else:
-            handle_request(node, request_id, op, args)
+    serve_requests(conn, node)
     rospy.signal_shutdown("robocram environment exited")
 
 

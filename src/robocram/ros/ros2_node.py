@@ -25,7 +25,7 @@ from robocram.ros.errors import RosUnknownKey
 from robocram.ros.latest_transforms import LatestTransforms
 from robocram.ros.node_config import NodeConfig
 from robocram.ros.node_state import NodeState
-from robocram.ros.ros1_node import BLOCKING_OPS, handle_request
+from robocram.ros.request_serving import serve_requests
 from robocram.ros.ros2_messages import RclpyObject, RosDict, action_class, fill, to_dict
 from robocram.ros.tf_cdr import read_stamped_tf_message
 from robocram.ros.transport import GoalState
@@ -266,17 +266,7 @@ def node_main(conn: Connection, config: NodeConfig) -> None:
     spinning.start()
     conn.send(("ready", node.get_fully_qualified_name()))
     threading.Thread(target=serving.monitor, daemon=True).start()
-    while serving.running:
-        try:
-            request_id, op, args = conn.recv()
-        except (EOFError, OSError):
-            break
-        if op in BLOCKING_OPS:
-            threading.Thread(
-                target=handle_request, args=(serving, request_id, op, args), daemon=True
-            ).start()
-        else:
-            handle_request(serving, request_id, op, args)
+    serve_requests(conn, serving)
     serving.running = False
     executor.shutdown(timeout_sec=1.0)  # ends spin; rclpy's threads end before the process
     spinning.join(timeout=1.0)
