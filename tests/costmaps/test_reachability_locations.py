@@ -83,7 +83,7 @@ def test_reachability_maps_are_cached_on_disk(tmp_path, monkeypatch) -> None:
     first = ReachabilityMaps(samples=20_000)
     built = first.get(desc, "arm")
     assert first.build_seconds > 0
-    assert list(tmp_path.glob("reachability/hsrb-arm-*.npz"))
+    assert list(tmp_path.glob("reachability/*.arrays"))
     second = ReachabilityMaps(samples=20_000)
     loaded = second.get(desc, "arm")
     assert second.build_seconds == 0  # read from disk, not built
@@ -97,8 +97,8 @@ def test_a_new_resolver_reads_no_file_for_a_map_already_read(tmp_path, monkeypat
     monkeypatch.setenv("ROBOCRAM_CACHE_DIR", str(tmp_path))
     desc = load_description("hsrb")
     built = ReachabilityMaps(samples=20_000).get(desc, "arm")
-    for path in tmp_path.glob("reachability/*.npz"):
+    for path in tmp_path.glob("reachability/*.arrays"):
         path.unlink()  # a read would now have to build again
     again = ReachabilityMaps(samples=20_000)
     assert again.get(desc, "arm") is built and again.build_seconds == 0
-    assert not list(tmp_path.glob("reachability/*.npz"))
+    assert not list(tmp_path.glob("reachability/*.arrays"))

@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from robocram.logic import KnowledgeBase
-from robocram.logic.kept_reads import keep_terms, kept_terms
+from robocram.logic.kept_reads import _decoded, _NotKept, keep_terms, kept_terms
 from robocram.logic.reader import read_terms
 from robocram.logic.shared_reads import STANDARD_SYNTAX
 from robocram.logic.terms import PString, Term, Var
@@ -67,3 +67,20 @@ def test_a_damaged_entry_is_read_again_and_replaced(cache: Path) -> None:
 def test_a_text_with_directives_is_not_kept(cache: Path) -> None:
     KnowledgeBase().consult(":- dynamic(c/1). c(1).", group="g")
     assert not list(cache.glob("*.terms"))
+
+
+@pytest.mark.parametrize(
+    "stored",
+    [
+        True,  # a bool: marshal keeps it, the encoder never writes one
+        ("f", ["a"]),  # a compound's arguments as a list
+        (1, ("a",)),  # a compound named by a number
+        [1],  # a variable numbered 1 before any numbered 0
+        {"a": 1},
+    ],
+)
+def test_a_kept_value_the_encoder_never_writes_is_refused(stored: object) -> None:
+    """Decoding tests exact types: what no clause encodes to is no term (the entry is then
+    read again from its text)."""
+    with pytest.raises(_NotKept):
+        _decoded(("p", (stored,)), [])

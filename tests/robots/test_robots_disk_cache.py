@@ -17,7 +17,7 @@ from robocram.kinematics.seed_table import SeedTable
 from robocram.robots import load_description
 from robocram.robots.arm_envelope import _working_yaw, working_yaw
 from robocram.robots.arm_slice import _flatness, _sampled
-from robocram.robots.disk_cache import kept_arrays
+from robocram.robots.disk_cache import _MAP_FROM, kept_arrays
 
 KIND = "test-arrays"
 BUILT_BY = ("robocram.robots.disk_cache",)
@@ -106,6 +106,22 @@ def test_a_read_entry_is_writable_and_owns_no_object(cache: Path) -> None:
     assert build.count == 1 and all(a.flags.writeable and a.dtype != object for a in read.values())
     read["values"][0, 0] = -1.0  # changed in place, as an array np.load read could be
     assert _same(kept_arrays(KIND, "key", BUILT_BY, build), build())
+
+
+def test_a_large_entry_is_mapped_read_bit_for_bit_and_written_to_no_file(cache: Path) -> None:
+    def build() -> dict[str, np.ndarray]:  # 2.4 MB: above the size from which files are mapped
+        return {"table": np.random.default_rng(5).uniform(size=(100_000, 3))}
+
+    kept_arrays(KIND, "large", BUILT_BY, build)
+    (entry,) = cache.glob("*.arrays")
+    assert entry.stat().st_size > _MAP_FROM
+    on_disk = entry.read_bytes()
+    read = kept_arrays(KIND, "large", BUILT_BY, build)
+    assert _same(read, build()) and read["table"].flags.writeable
+    read["table"][0, 0] = -1.0  # copy on write: the process's pages change, not the file
+    assert entry.read_bytes() == on_disk
+    again = kept_arrays(KIND, "large", BUILT_BY, build)
+    assert _same(again, build()) and again["table"][0, 0] != -1.0
 
 
 def test_writers_at_once_leave_a_whole_file(cache: Path) -> None:

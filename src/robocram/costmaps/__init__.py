@@ -31,10 +31,10 @@ from robocram.costmaps.reachability_map import (
     ReachabilityMap,
     ReachabilityMaps,
     build_reachability_map,
-    cache_dir,
 )
 from robocram.costmaps.stand_reach import reach_to_pick, reach_to_place
 from robocram.costmaps.validators import Reach, reach_object
+from robocram.robots.disk_cache import cache_dir
 
 __all__ = [
     "CostFunction",
