@@ -1,12 +1,14 @@
 """Issue 37: legged robots in the kitchen. ANYmal's and B1's root link is their trunk,
-0.58 and 0.68 m over their feet: the kitchen stands them on the floor (not with their legs
-in it), their stands are at that height, and they face a counter no nearer than their feet
-reach ahead (B1's, at its URDF's zero stance, 0.58 m ahead of its origin; its trunk's front
-0.39 m). Judged with raw PyBullet: the links' bounds, the mug's place on the table.
+0.58 and 0.71 m over their feet: the kitchen stands them on the floor (not with their legs
+in it), their stands are at that height, and they face a counter no nearer than their legs
+reach ahead. The B1's drafted stance puts its feet under its hips (at its URDF's rest they
+stood 0.20 m ahead of them, 0.58 m ahead of its origin). Judged with raw PyBullet: the
+links' bounds and frames, the mug's place on the table.
 """
 
 from __future__ import annotations
 
+import math
 import warnings
 from pathlib import Path
 
@@ -26,6 +28,7 @@ ROBOTS = example_robot_data_folder()
 ANYMAL = ROBOTS / "anymal_b_simple_description" / "robots" / "anymal-kinova.urdf"
 B1 = ROBOTS / "b1_description" / "urdf" / "b1-z1.urdf"
 ON_THE_FLOOR = 0.01  # [m] the lowest point's height, Bullet's margin allowed
+LEGS = ("FR_", "FL_", "RR_", "RL_")  # the B1's legs' link name prefixes
 
 pytestmark = pytest.mark.filterwarnings("ignore::robocram.robots.DescriptionWarning")
 
@@ -78,9 +81,9 @@ def test_anymal_stands_on_the_floor_and_brings_the_mug_to_the_table(folder: Path
     assert mug_low[2] == pytest.approx(high[2], abs=0.01)  # standing on it
 
 
-def test_b1_faces_a_counter_no_nearer_than_its_feet_reach(folder: Path) -> None:
+def test_b1_faces_a_counter_no_nearer_than_its_legs_reach(folder: Path) -> None:
     """Its facing radius covers its legs' reach ahead (PyBullet, the robot turned to the
-    map's x), which lies 0.19 m beyond its trunk's front."""
+    map's x), which lies beyond its trunk's front: its hips, its feet under them."""
     scene = kitchen_scene(_drafted(B1, folder))
     world = scene.world
     try:
@@ -89,10 +92,38 @@ def test_b1_faces_a_counter_no_nearer_than_its_feet_reach(folder: Path) -> None:
         x, y, z = world.pose(robot).position
         world.set_pose(robot, Pose((x, y, z)))
         bounds = _bounds(robot.body_id, client)
-        feet = max(high[0] for name, _, high in bounds if "foot" in name) - x
+        legs = max(high[0] for name, _, high in bounds if name[:3] in LEGS) - x
         trunk = next(high[0] for name, _, high in bounds if name == "trunk") - x
         radius = facing_radius(world, robot)
     finally:
         world.close()
-    assert feet > trunk + 0.15
-    assert radius == pytest.approx(feet, abs=0.02)
+    assert legs > trunk + 0.03
+    assert radius == pytest.approx(legs, abs=0.02)
+
+
+def test_b1_drafted_stands_with_its_feet_under_its_hips(folder: Path) -> None:
+    """Each foot's frame stands within 3 cm (horizontally) of its thigh joint's (PyBullet
+    link frames in the kitchen), the lowest part on the floor, the trunk 0.71 m up."""
+    scene = kitchen_scene(_drafted(B1, folder))
+    world = scene.world
+    try:
+        client = world.physics.client()
+        body = world.object(scene.robot).body_id
+        index = {
+            pybullet.getJointInfo(body, i, physicsClientId=client)[12].decode(): i
+            for i in range(pybullet.getNumJoints(body, physicsClientId=client))
+        }
+
+        def frame(link: str) -> tuple[float, ...]:
+            state = pybullet.getLinkState(
+                body, index[link], computeForwardKinematics=True, physicsClientId=client
+            )
+            return tuple(state[4])
+
+        offsets = [math.dist(frame(f"{leg}foot")[:2], frame(f"{leg}thigh")[:2]) for leg in LEGS]
+        lowest = min(low[2] for _, low, _ in _bounds(body, client))
+        trunk = pybullet.getBasePositionAndOrientation(body, physicsClientId=client)[0][2]
+    finally:
+        world.close()
+    assert max(offsets) < 0.03
+    assert abs(lowest) <= ON_THE_FLOOR and trunk == pytest.approx(0.71, abs=0.02)
