@@ -56,7 +56,7 @@ def legs(model: RobotModel, hands: Collection[str]) -> list[Leg]:
     holding none of the ``hands`` (end-effector links), whose lowest link (the foot) stands
     below a joint swinging it fore and aft (the hip)."""
     tree = ModelTree(model)
-    rest = {j.name: resting_value(j) for j in model.joints.values() if j.movable}
+    rest = _rest(model)
     poses = link_poses(model, rest)
     body = tree.rigid_group(model.root_link)
     found = []
@@ -88,7 +88,7 @@ def drafted_stance(model: RobotModel, hands: Collection[str]) -> Stance | None:
     off = float(np.mean([leg.ahead for leg in found]))
     if abs(off) <= OFF_CENTRE:
         return None
-    rest = {j.name: resting_value(j) for j in model.joints.values() if j.movable}
+    rest = _rest(model)
     values, missed = {}, []
     for leg in found:
         value = _under_hip(model, leg, rest)
@@ -138,3 +138,11 @@ def _under_hip(model: RobotModel, leg: Leg, rest: dict[str, float]) -> float | N
         if abs(foot[0] - origin[0]) <= UNDER and foot[2] < origin[2]:
             candidates.append(value)
     return min(candidates, key=lambda v: abs(v - start), default=None)
+
+
+def _rest(model: RobotModel) -> dict[str, float]:
+    """Every joint a mimic does not move at its value nearest 0 (where the world starts it);
+    mimic joints follow their masters."""
+    return {
+        j.name: resting_value(j) for j in model.joints.values() if j.movable and j.mimic is None
+    }
