@@ -14,7 +14,7 @@ After those, stands squared to the counter (:func:`~robocram.plans.flank_stands.
 along the counter: a body reaching far ahead of its base's origin stands clear only
 farther out, turned off square its corners meet the counter's drawers, and aside its front
 may pass between two handles. The B1's hips stand 0.44 m ahead of its trunk's origin: from
-the costmap's stands (0.81 m, 13 degrees off square) its Z1 falls 8 cm short of the mug's
+the costmap's stands (0.75 m, 13 degrees off square) its Z1 falls 8 cm short of the mug's
 handle; squared, 0.70 m out is the nearest it stands clear in line with the mug (0.68 m:
 a hip meets the bowl drawer's handle), 0.65 m with its hips 0.15 m aside, between that
 handle and the stove unit's, from where it takes the handle (docs/new_robot.md, zoo24).
