@@ -18,17 +18,24 @@ import pytest
 from robocram.costmaps.occupancy import facing_radius
 from robocram.designators import a, an
 from robocram.plans import perform
+from robocram.plans.attempt_log import AttemptLog
+from robocram.plans.container_access import OpenedContainer, close_again
+from robocram.plans.containers import container
+from robocram.plans.stands import HandleStand
 from robocram.projection import simulated_robot
 from robocram.robots import draft_description
 from robocram.robots.example_robot_data import example_robot_data_folder
 from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
+from robocram.tf import quaternion as quat
 
 ROBOTS = example_robot_data_folder()
 ANYMAL = ROBOTS / "anymal_b_simple_description" / "robots" / "anymal-kinova.urdf"
 B1 = ROBOTS / "b1_description" / "urdf" / "b1-z1.urdf"
 ON_THE_FLOOR = 0.01  # [m] the lowest point's height, Bullet's margin allowed
 LEGS = ("FR_", "FL_", "RR_", "RL_")  # the B1's legs' link name prefixes
+DRAWER = "drawer_unit_drawer_3"  # the bowl's
+OPENED_FROM = (-1.4, 0.96)  # [m] map: where the B1's transport opens it from, facing it
 
 pytestmark = pytest.mark.filterwarnings("ignore::robocram.robots.DescriptionWarning")
 
@@ -127,3 +134,30 @@ def test_b1_drafted_stands_with_its_feet_under_its_hips(folder: Path) -> None:
         world.close()
     assert max(offsets) < 0.03
     assert abs(lowest) <= ON_THE_FLOOR and trunk == pytest.approx(0.71, abs=0.02)
+
+
+def test_b1_closes_the_open_drawer_from_beside_its_handle(folder: Path) -> None:
+    """From where it opened the bowl's drawer the B1 does not take the open handle; from a
+    stand aside of it, it pushes the drawer shut (the drawer's joint read from PyBullet)."""
+    scene = kitchen_scene(_drafted(B1, folder))
+    world = scene.world
+    try:
+        client = world.physics.client()
+        kitchen = world.object("kitchen")
+        joint = kitchen.joint_index[f"{DRAWER}_joint"]
+        world.set_joint_states("kitchen", {f"{DRAWER}_joint": 0.4})
+        height = world.pose(scene.robot).position[2]
+        stand = Pose((*OPENED_FROM, height), quat.from_euler(0.0, 0.0, math.pi / 2))
+        world.set_pose(scene.robot, stand)
+        log = AttemptLog()
+        with simulated_robot(world, scene.robot):
+            close_again(OpenedContainer(container(DRAWER), HandleStand(stand, "arm")), log)
+        shut = pybullet.getJointState(kitchen.body_id, joint, physicsClientId=client)[0]
+    finally:
+        world.close()
+    assert shut == pytest.approx(0.0, abs=0.005)
+    tries = log.of("close")
+    assert tries[0].failure is not None and tries[-1].failure is None
+    closed_from = tries[-1].stand
+    assert closed_from is not None
+    assert abs(closed_from.position[0] - OPENED_FROM[0]) == pytest.approx(0.2, abs=1e-3)
