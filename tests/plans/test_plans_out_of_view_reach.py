@@ -27,7 +27,13 @@ from robocram.plans.basic_actions import look_lowering
 from robocram.plans.grasp_failures import PickUpUnreachable
 from robocram.plans.known_robot import current_robot
 from robocram.plans.nearer_pre_grasp import NEARER_LIFT_SHARE, NEARER_SHARE, nearer_pre_grasp
-from robocram.plans.out_of_view_reach import NEAR_DISTANCES, near_stands, out_of_view
+from robocram.plans.out_of_view_reach import (
+    ASIDE,
+    NEAR_DISTANCES,
+    SQUARED_DISTANCES,
+    near_stands,
+    out_of_view,
+)
 from robocram.plans.pick_object import pick_up_object
 from robocram.projection import simulated_robot
 from robocram.scenes import KitchenScene, kitchen_scene
@@ -94,6 +100,27 @@ def test_near_stand_has_the_mug_out_of_view_and_takes_it_from_nearer(
     assert not pybullet.getClosestPoints(body, kitchen, 0.0, physicsClientId=cid)
     fingers = pybullet.getClosestPoints(body, mug_body, 0.005, physicsClientId=cid)
     assert fingers  # the hand holds it
+
+
+def test_after_the_near_stands_come_stands_squared_to_the_counter(scene: KitchenScene) -> None:
+    """From the fetch's last stand (off square), the right arm's stands after the near ones
+    face the north counter squarely (map yaw 90 degrees), each distance out of the counter
+    in line with the mug's and 0.15 m to either side (a B1's hips pass between handles)."""
+    world, robot = scene.world, scene.robot
+    mug = world.pose("mug-1")
+    where = PoseStamped("map", mug.position, mug.orientation)
+    height = world.pose(robot).position[2]
+    world.set_pose(robot, Pose((*FETCH_STAND, height), quat.from_euler(0.0, 0.0, math.pi / 2)))
+    with simulated_robot(world, robot):
+        stands = [pose for pose, arm in near_stands(current_robot(), where, None) if arm == "right"]
+    squared = stands[len(NEAR_DISTANCES) :]
+    assert len(squared) == len(SQUARED_DISTANCES) * len(ASIDE)
+    first = squared[0].position
+    for k, pose in enumerate(squared):
+        assert quat.to_euler(pose.orientation)[2] == pytest.approx(math.pi / 2, abs=1e-6)
+        distance, aside = SQUARED_DISTANCES[k // len(ASIDE)], ASIDE[k % len(ASIDE)]
+        assert mug.position[1] - pose.position[1] == pytest.approx(distance, abs=1e-6)
+        assert pose.position[0] - first[0] == pytest.approx(aside, abs=1e-6)
 
 
 def test_nearer_pre_grasp_keeps_the_approach_and_a_drawers_lift() -> None:

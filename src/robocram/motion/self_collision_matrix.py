@@ -123,14 +123,16 @@ class _Kept:
 
 def _description_key(desc: LoadedDescription) -> tuple[object, ...]:
     """What of a description, beyond its model, the matrix depends on: its allowed
-    contacts, its arms' parking poses and fingers and its neck's parking (a scene loads the
-    description anew, the model is kept per process: the matrix is worked out once)."""
+    contacts, its arms' parking poses and fingers, its neck's parking and its legs' stance
+    (a scene loads the description anew, the model is kept per process: the matrix is
+    worked out once)."""
     arms = tuple(
         (name, tuple(sorted(arm.parking.items())), tuple(arm.gripper_joints),
          tuple(arm.gripper_links))
         for name, arm in sorted(desc.arms.items())
     )  # fmt: skip
-    return (tuple(desc.allowed_contacts), arms, tuple(sorted(desc.neck_parking.items())))
+    key = (tuple(desc.allowed_contacts), arms, tuple(sorted(desc.neck_parking.items())))
+    return (*key, tuple(sorted(desc.stance.items()))) if desc.stance else key
 
 
 def _work_out(robot: RobotHandle) -> SelfCollisionMatrix:
@@ -222,7 +224,8 @@ def _touching_at_rest(
     robot: RobotHandle, candidates: list[tuple[str, str]]
 ) -> dict[tuple[str, str], float]:
     """The pairs among ``candidates`` touching with every arm and the neck parked, the
-    grippers closed or open, the other joints at zero (within their limits), each with
+    legs in their stance, the grippers closed or open, the other joints at zero (within
+    their limits), each with
     its deepest penetration [m] there (>= 0)."""
     world = robot.world
     desc = robot.description
@@ -233,6 +236,7 @@ def _touching_at_rest(
     for arm in desc.arms.values():
         rest.update({j: v for j, v in arm.parking.items() if j in rest})
     rest.update({j: v for j, v in desc.neck_parking.items() if j in rest})
+    rest.update({j: v for j, v in desc.stance.items() if j in rest})
     grippers = [j for arm in desc.arms.values() for j in arm.gripper_joints if j in rest]
     found: dict[tuple[str, str], float] = {}
     try:

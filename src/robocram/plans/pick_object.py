@@ -45,7 +45,13 @@ from robocram.plans.empty_hand_up import navigate_empty_hand_up
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.grasp_failures import ObjectUngraspable, PickUpFailed, PickUpUnreachable
 from robocram.plans.known_robot import KnownRobot, current_robot
-from robocram.plans.nearer_pre_grasp import NEARER_LIFT_SHARE, nearer_pre_grasp, towards
+from robocram.plans.nearer_pre_grasp import (
+    NEARER_LIFT_SHARE,
+    NEARER_SHARE,
+    NEAREST_SHARE,
+    nearer_pre_grasp,
+    towards,
+)
 from robocram.plans.still_where_seen import still_where_seen
 from robocram.tf import Pose, PoseStamped, TfError, transform_pose
 
@@ -524,7 +530,7 @@ def pick_up_object(
     (``lift`` False: grasp it where it stands; ``out_of``: the opened drawer, environment
     and link, it lies in, which the lift must clear; ``nearer``: after every usual try
     failed, each again from a pre-grasp and a lift nearer the grasp (a lift out of a drawer
-    kept), ``plans/nearer_pre_grasp.py``).
+    kept), then from a pre-grasp nearer still, ``plans/nearer_pre_grasp.py``).
 
     Raises:
         ObjectUngraspable: the only arm asked for is too narrow for every grasp.
@@ -583,10 +589,12 @@ def pick_up_object(
             return _try_grasp(robot, name, choice_arm, choice, pose, lift, way_out, fraction)
         except (*TRIES, PickUpFailed) as failure:
             causes.append(failure)
-    for choice_arm, choice in tried if nearer else []:  # then each from nearer the grasp
+    nearer_tries = [(s, a, c) for s in (NEARER_SHARE, NEAREST_SHARE) for a, c in tried]
+    for share, choice_arm, choice in nearer_tries if nearer else []:  # then each from
+        # nearer the grasp, then from nearer still
         try:
             keep = 1.0 if out_of is not None else NEARER_LIFT_SHARE  # a drawer's lift clears it
-            nearer_choice = nearer_pre_grasp(choice, lift_share=keep)
+            nearer_choice = nearer_pre_grasp(choice, share, lift_share=keep)
             return _try_grasp(
                 robot, name, choice_arm, nearer_choice, pose, lift, way_out, near=True
             )

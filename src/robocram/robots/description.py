@@ -130,6 +130,8 @@ class RobotDescription:
     folders searched for ``package://`` URIs. ``model`` is ``None`` (or a model to use
     instead of reading ``urdf``) until ``load_description`` has parsed the URDF and
     checked every name against it, which gives a :class:`LoadedDescription`.
+    ``stance`` holds joints no arm moves where the robot stands (a legged robot's hips:
+    the world starts them there, the others at their value nearest 0).
     """
 
     name: str
@@ -143,6 +145,7 @@ class RobotDescription:
     pan_tilt: PanTiltDescription | None = None
     neck_arm: str | None = None
     neck_parking: Mapping[str, float] = field(default_factory=dict)
+    stance: Mapping[str, float] = field(default_factory=dict)  # legs: how it stands [rad | m]
     extra_frames: tuple[FrameSpec, ...] = ()
     extra_boxes: tuple[BoxSpec, ...] = ()
     coupled_joints: tuple[JointCoupling, ...] = ()  # joints one actuator moves (a telescope)

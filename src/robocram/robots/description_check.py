@@ -87,6 +87,7 @@ def check_names(desc: RobotDescription, model: RobotModel) -> None:
         check.links([pt.pan_link, pt.tilt_link], "pan_tilt links")
         check.joints([pt.pan_joint, pt.tilt_joint], "pan_tilt joints")
     check.joints(desc.neck_parking, "neck_parking")
+    check.joints(desc.stance, "stance")
     check.joints(desc.acceleration_limits, "acceleration_limits")
     if desc.neck_arm is not None and desc.neck_arm not in desc.arms:
         close = closest_names(desc.neck_arm, desc.arms)

@@ -71,6 +71,7 @@ def load_description(
         check_values(desc.name, model, arm.parking)
         check_values(desc.name, model, arm.carrying)
     check_values(desc.name, model, desc.neck_parking)
+    check_values(desc.name, model, desc.stance)
     cameras = tuple(derive_camera(desc, model, camera) for camera in desc.cameras)
     loaded = LoadedDescription.checked(
         desc, model, arms=arms, cameras=cameras, package_paths=paths, **derive_links(desc, model)

@@ -129,7 +129,8 @@ class World:
         return handle
 
     def _start_within_limits(self, robot: RobotObject) -> None:
-        """Put every joint at its in-limit value nearest 0 (some grippers exclude 0), and
+        """Put every joint at its in-limit value nearest 0 (some grippers exclude 0), the
+        legs as the description's ``stance`` has them (a B1's feet under its hips), and
         mimic joints where their masters put them (the HSR's finger tips follow its hand
         motor with an offset: left at 0, the first motion would snap them there)."""
         model = robot.description.model
@@ -139,6 +140,7 @@ class World:
             for name in self.joint_states(robot)
             if model.joints[name].mimic is None
         }
+        start.update({j: v for j, v in robot.description.stance.items() if j in start})
         self.set_joint_states(
             robot, {name: v for name, v in start.items() if v != 0.0 or name in masters}
         )

@@ -39,6 +39,7 @@ from robocram.robots.draft.link_poses import link_poses, within_limits
 from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.draft.parking import neck_pose
 from robocram.robots.draft.srdf_arms import srdf_arms
+from robocram.robots.draft.stance import drafted_stance
 from robocram.robots.draft.stowing import (
     ABOVE,
     AHEAD,
@@ -166,6 +167,10 @@ def draft_description(
         extra_frames=tuple(frames),
         coupled_joints=tuple(t.coupling for t in telescopes),
     )
+    stance = drafted_stance(model, [h.end_effector_link for h in hands])
+    if stance is not None:
+        desc = replace(desc, stance=stance.values)
+        _note(why, doubts, "stance", stance.why, stance.doubt)
     desc = _with_camera(tree, desc, why, doubts, cut, camera, guessed)
     desc = _parked_clear(tree, desc, why, doubts)
     if semantics is not None:

@@ -170,6 +170,8 @@ def _body(desc: RobotDescription, notes: _Notes) -> object:
         fields.append(notes.item("pan_tilt", "neck_arm", desc.neck_arm))
     if desc.neck_parking:
         fields.append(notes.item("neck_parking", "neck_parking", dict(desc.neck_parking)))
+    if desc.stance:
+        fields.append(notes.item("stance", "stance", dict(desc.stance)))
     if desc.extra_frames:
         fields.append(Item("extra_frames", tuple(_frame(f) for f in desc.extra_frames)))
     if desc.coupled_joints:
