@@ -3,8 +3,8 @@
 Every PyBullet joint write costs a broadphase update of each of the body's links. A
 checker posed at a configuration it already stands at (a straight motion's start, checked
 for the contacts it begins with, then put back) would write the same values twice. The
-values are known only while the world's change counters say nothing else wrote to the
-robot or what it carries since they were read or written (``world.versions``), and only
+values are known only while the world's clock says nothing at all was written since they
+were read or written (``world.versions.tick``), and only
 where a write would set nothing new: a joint simulation holds at its value (a write of
 another would also hold it), a mimic joint's master only while its followers stand where
 it puts them. Such a write is left out.
@@ -18,7 +18,6 @@ from dataclasses import dataclass, field
 from robocram.robots import RobotModel
 from robocram.robots.mimic import mimic_followers
 from robocram.world import World
-from robocram.world.versions import Stamp
 
 KEPT_FOLLOWERS = 64  # masters' values whose followers' values are kept per model
 
@@ -30,7 +29,7 @@ class KnownJoints:
         self.world = world
         self.robot = robot
         self.followers = model.derived(_Followers)
-        self._stamp: Stamp | None = None
+        self._tick: int | None = None  # the world's clock when they were read or written
         self._values: dict[str, float] = {}
 
     def read(self, now: Mapping[str, float]) -> None:
@@ -44,19 +43,19 @@ class KnownJoints:
         if given and all(now.get(f) == self._clamped(f, v) for f, v in followers.items()):
             known.update((m, v) for m, v in given.items() if held.get(m) == v)
         self._values = known
-        self._stamp = self._now()
+        self._tick = self.world.versions.tick
 
     def write(self, values: Mapping[str, float]) -> None:
         """Set ``values`` as ``world.set_joint_states`` does, unless the robot stands so."""
         known = self._values
-        fresh = self._stamp is not None and self._stamp == self._now()
+        fresh = self._tick is not None and self._tick == self.world.versions.tick
         if fresh and all(known.get(j) == v for j, v in values.items()):
             return
         self.world.set_joint_states(self.robot, values)
-        if not fresh:  # another wrote since: what else stands as known is not
+        if not fresh:  # something was written since: what else stands as known is not
             self._values = {}
         self._values.update(values)  # a write of these again (clamped alike) is the same
-        self._stamp = self._now()
+        self._tick = self.world.versions.tick
 
     def _clamped(self, joint: str, value: float) -> float | None:
         """``value`` within ``joint``'s limits, as a write puts a follower (None: the
@@ -67,13 +66,8 @@ class KnownJoints:
 
     def forget(self) -> None:
         """Know nothing (the checker's block ended: others may write from now on)."""
-        self._stamp = None
+        self._tick = None
         self._values = {}
-
-    def _now(self) -> Stamp:
-        """The change counters of the robot and of what it carries (a write moves them)."""
-        world = self.world
-        return world.versions.bodies([self.robot, *world.bodies.attachments(self.robot)])
 
 
 @dataclass
