@@ -28,7 +28,8 @@ def _arm(world: World) -> list[float]:
 
 def _moved(world: World, start: list[float]) -> list[float]:
     """``start`` 0.1 rad on in every joint, within the joints' limits (as a write clamps)."""
-    return [world.bodies.joint_limits("pr2", j).clamp(v + 0.1) for j, v in zip(ARM, start)]
+    limits = [world.bodies.joint_limits("pr2", j) for j in ARM]
+    return [lim.clamp(v + 0.1) for lim, v in zip(limits, start, strict=True)]
 
 
 def test_a_check_where_the_robot_stands_writes_nothing(kitchen: World) -> None:
