@@ -28,7 +28,6 @@ from robocram.motion.errors import MotionError
 from robocram.motion.hand_contact import HandContact, contact_depth
 from robocram.motion.joint_levers import LeverData, cross, links_below
 from robocram.motion.joint_trajectory import FloatArray
-from robocram.motion.known_joints import KnownJoints
 from robocram.world import Derived, ObstacleBoxes, RobotHandle, Versions, World, WorldObject
 
 CLEARANCE_REACH = 0.1  # [m] distances asked for: a free configuration clears this much
@@ -72,7 +71,6 @@ class BulletScene:
             link for link in self.moving_links if link not in self.allowed_links
         )  # fmt: skip
         self._posed = False
-        self._known = KnownJoints(world, robot.name, robot.model)  # inside a posed block
         self._obstacles: ObstacleBoxes | None = None  # read once per posed block
         self._others: tuple[list[WorldObject], list[WorldObject]] | None = None  # too
         self._levers: LeverData | None = None  # what joint_levers needs, read once
@@ -103,9 +101,7 @@ class BulletScene:
         if self._posed:
             yield
             return
-        now = self.world.joint_states(self.robot)
-        before = self._current(now)
-        self._known.read(now)
+        before = self._current()
         self._posed = True
         try:
             yield
@@ -113,8 +109,7 @@ class BulletScene:
             self._posed = False
             self._obstacles = None
             self._others = None
-            self._known.write(before)  # nothing written if the block left it so
-            self._known.forget()
+            self.world.set_joint_states(self.robot, before)
 
     def _others_now(self) -> tuple[list[WorldObject], list[WorldObject]]:
         """What the robot holds and what it may touch anywhere: inside a posed block only
@@ -135,15 +130,17 @@ class BulletScene:
             self._obstacles = self.world.contacts.obstacle_boxes([self.robot, *held, *anywhere])
         return self._obstacles
 
-    def _current(self, now: Mapping[str, float]) -> dict[str, float]:
-        """``now`` (the robot's joints) without the mimic joints: they follow their masters."""
+    def _current(self) -> dict[str, float]:
+        world = self.world
         model = self.handle.model
-        return {j: v for j, v in now.items() if model.joints[j].mimic is None}
+        return {
+            j: v for j, v in world.joint_states(self.robot).items() if model.joints[j].mimic is None
+        }
 
     def colliding_at(self, values: Mapping[str, float], first_only: bool = False) -> list[LinkPair]:
         """The colliding pairs with the joints in ``values`` set (the others unchanged)."""
         with self.posed():
-            self._known.write(values)
+            self.world.set_joint_states(self.robot, values)
             return self.colliding_now(first_only)
 
     def is_free(self, q: Configuration) -> bool:
@@ -155,7 +152,7 @@ class BulletScene:
         touch, at ``q``; ``reach`` when nothing is nearer, 0 or less when they touch."""
         values = dict(zip(self._joints, (float(v) for v in q), strict=True))
         with self.posed():
-            self._known.write(values)
+            self.world.set_joint_states(self.robot, values)
             return self._clearance_now(reach)
 
     def clearance_now(self, reach: float = CLEARANCE_REACH) -> float:
@@ -172,7 +169,7 @@ class BulletScene:
         clear by ``reach`` at least."""
         values = dict(zip(self._joints, (float(v) for v in q), strict=True))
         with self.posed():
-            self._known.write(values)
+            self.world.set_joint_states(self.robot, values)
             return self._clearances_now(reach)
 
     def lever_links(self) -> tuple[str, ...]:
