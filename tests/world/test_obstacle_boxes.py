@@ -72,3 +72,18 @@ def test_bounds_after_a_joint_moved_are_read_again_below_it_only() -> None:
     world.set_pose("kitchen", Pose((base.position[0] + 0.5, *base.position[1:]), base.orientation))
     world.set_joint_states("kitchen", {joint: 0.1})  # the base moved too: read whole
     assert _same(world.contacts.obstacle_boxes(skip), ObstacleBoxes.of(world, skip))
+
+
+def test_the_colliders_of_a_link_set_follow_the_body_indexed() -> None:
+    """The colliders kept per tuple of links are the ones read afresh, and are read again
+    once the body is indexed anew (a restored body's shapes may differ)."""
+    world = kitchen_scene("pr2").world
+    pr2 = world.object("pr2")
+    links = ("l_forearm_link", "l_gripper_palm_link", "l_gripper_tool_frame", "base_link")
+    expected = {pr2.link_index[n]: n for n in links if pr2.link_index[n] in pr2.colliders}
+    assert pr2.colliders_among(links) == expected
+    assert "l_gripper_tool_frame" not in expected.values()  # a frame: no shape
+    palm = pr2.link_index["l_gripper_palm_link"]
+    pr2.forget_indices()  # as when the body is loaded again
+    pr2.colliders = frozenset({palm})
+    assert pr2.colliders_among(links) == {palm: "l_gripper_palm_link"}
