@@ -34,6 +34,7 @@ from robocram.logic.exclusive_guards import excludes
 from robocram.logic.goal_writer import function_factory
 from robocram.logic.inline_calls import CalleeTable
 from robocram.logic.limits import PROC_LOOPS
+from robocram.logic.shared_code import SHARED_PROCEDURES
 from robocram.logic.template import Slot, Tmpl
 from robocram.logic.terms import Term, Var
 from robocram.logic.value import Value
@@ -84,6 +85,12 @@ def compile_procedure(
     clauses = list(stored)
     if not 1 <= len(clauses) <= MAX_CLAUSES:
         return None
+    key = SHARED_PROCEDURES.key(clauses, owner, callees, direct)
+    shared = SHARED_PROCEDURES.get(key)
+    if shared is not None:
+        proc = shared.bind(callees, Scan(owner))
+        if proc is not None:
+            return proc
     branches = _branches(clauses)
     if branches is None:
         return None
@@ -94,10 +101,11 @@ def compile_procedure(
         writer.procedure(branches)
         head = "def proc(args, trail, nxt, cps, start):"
         source = "\n".join([head, *writer.lines, ""])
-        proc: Procedure = function_factory(source, "proc")(*writer.consts)
+        proc = function_factory(source, "proc")(*writer.consts)
         LEVELS[proc] = writer.level
     except (SyntaxError, RecursionError, MemoryError):
         return None  # too deeply nested to compile; the clauses run one by one instead
+    SHARED_PROCEDURES.keep(key, clauses, source, writer)
     return proc
 
 
@@ -209,6 +217,8 @@ class _ProcWriter(ClauseWriter):
         self.committed: bool | None = False
         self.next_start: int | None = None
         self.alt_start: int | None = None  # the clause a choicepoint resumes at
+        self.seen = []
+        self.bound = []
 
     def procedure(self, b: _Branches) -> None:
         self.switch(b)
@@ -259,7 +269,7 @@ class _ProcWriter(ClauseWriter):
         self.dispatch(list(b.atomic.items()), tests, "a0", b.open)
         self.emit("else:", 2)
         if scan:
-            self.emit(f"return [{self.names}{self.const(Scan(self.owner))}]", 3)
+            self.emit(f"return [{self.names}{self.bound_const(Scan(self.owner), 'scan')}]", 3)
         else:
             self.branch(b.every, 3, switched=False)
 

@@ -1,0 +1,134 @@
+"""Generated code shared by knowledge bases that read the same texts.
+
+Every new world's knowledge base consults the same texts (motion groundings, the process
+module interface, the robot's facts), and their clause templates are read once per
+process (see shared_reads.py): yet each knowledge base generated its procedures and
+clause functions again, about 18 procedures and 45 clauses in a cold PR2 transport
+(~6 ms). Generated code is a function of the clause templates and of what code
+generation asked of the knowledge base: the one clause of a small callee compiled in
+(inline_calls.py) and whether a callee's procedure is called directly (direct_calls.py).
+
+So a procedure is kept by its clauses' templates (by identity: an entry holds them, so
+their ids stay theirs) and reused by another knowledge base when each of those lookups
+finds the same there, asked again in the same order (a direct callee not compiled yet
+is compiled then, as generating the code would have). Its knowledge-base-specific
+constants are bound afresh: the knowledge base, its generation (the guard of what was
+compiled in), the predicate's Scan and the callees' procedures, and its level is
+recomputed from theirs. When a lookup finds something else (a clause asserted,
+retracted or consulted differently, a predicate made dynamic) the code is generated as
+before. A clause function holds nothing of its knowledge base and is shared as it is.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+
+from robocram.logic.codegen import Bound, ClauseCode, ClauseFn, ClauseWriter, compile_clause_fn
+from robocram.logic.direct_calls import LEVELS, callee_at
+from robocram.logic.goal_writer import function_factory
+from robocram.logic.inline_calls import CalleeTable, Lookup, inline_clause
+from robocram.logic.lru import LRUCache
+from robocram.logic.value import Value
+
+__all__ = ["SHARED_PROCEDURES", "SharedProcedure", "SharedProcedures", "shared_clause_fn"]
+
+KEPT = 1024  # procedures and clause functions kept (a transport compiles ~18 and ~45)
+ProcKey = tuple[tuple[tuple[int, int, str], ...], bool, bool, bool]
+Templates = tuple[tuple[tuple[Value, ...], tuple[Value, ...]], ...]
+
+
+@dataclass(frozen=True)
+class SharedProcedure:
+    """A procedure's generated source and constants, less what is bound per knowledge base."""
+
+    templates: Templates  # held so that the key's ids stay these templates'
+    source: str
+    consts: tuple[Value, ...]  # None at the bound positions
+    bound: tuple[tuple[int, Bound], ...]
+    seen: tuple[Lookup, ...]
+
+    def bind(self, callees: CalleeTable | None, scan: object) -> Callable[..., object] | None:
+        """The procedure for knowledge base `callees`, or None when a lookup finds
+        something else there (the code must be generated again)."""
+        procs: list[Callable[..., object]] = []
+        level = 0
+        for kind, key, found in self.seen:
+            if callees is None:
+                return None
+            if kind == "inline":
+                now = inline_clause(callees, key)
+                if not _same_clause(now, found):
+                    return None
+                continue
+            callee = callee_at(callees, key)
+            if (callee is not None) != found:
+                return None
+            if callee is not None:
+                procs.append(callee[0])
+                level = max(level, callee[1] + 1)
+        consts = list(self.consts)
+        for i, mark in self.bound:
+            if mark == "table":
+                consts[i] = callees
+            elif mark == "generation":
+                consts[i] = callees._generation if callees is not None else None
+            elif mark == "scan":
+                consts[i] = scan
+            else:
+                consts[i] = procs[int(mark)]
+        proc: Callable[..., object] = function_factory(self.source, "proc")(*consts)
+        LEVELS[proc] = level
+        return proc
+
+
+def _same_clause(now: tuple[object, object] | None, found: object) -> bool:
+    """Whether two inline lookups found the same clause templates (or both none)."""
+    if now is None or not isinstance(found, tuple):
+        return now is None and found is None
+    return now[0] is found[0] and now[1] is found[1]
+
+
+class SharedProcedures:
+    """Procedures kept by their clauses' templates, for any knowledge base to bind."""
+
+    def __init__(self, size: int = KEPT) -> None:
+        self._kept: LRUCache[ProcKey, SharedProcedure] = LRUCache(size)
+
+    @staticmethod
+    def key(clauses: Sequence[ClauseCode], owner: object, callees: object, direct: bool) -> ProcKey:
+        """The key of a compilation: its clauses' templates and how it was asked for."""
+        ids = tuple((id(c.head), id(c.body_rev), c.name) for c in clauses)
+        return ids, owner is not None, callees is not None, direct
+
+    def get(self, key: ProcKey) -> SharedProcedure | None:
+        """The procedure kept for `key`, if any."""
+        return self._kept.get(key)
+
+    def keep(
+        self, key: ProcKey, clauses: Sequence[ClauseCode], source: str, writer: ClauseWriter
+    ) -> None:
+        """Keep what `writer` generated from `clauses` (its source) for `key`."""
+        bound = tuple(writer.bound or ())
+        consts = list(writer.consts)
+        for i, _ in bound:
+            consts[i] = None
+        templates = tuple((c.head, c.body_rev) for c in clauses)
+        seen = tuple(writer.seen or ())
+        self._kept.put(key, SharedProcedure(templates, source, tuple(consts), bound, seen))
+
+
+SHARED_PROCEDURES = SharedProcedures()
+_CLAUSE_FNS: LRUCache[tuple[int, int, str], tuple[Templates, ClauseFn]] = LRUCache(KEPT)
+
+
+def shared_clause_fn(clause: ClauseCode) -> ClauseFn:
+    """`compile_clause_fn(clause)`, made once per clause templates (they key it by
+    identity; the entry holds them)."""
+    key = (id(clause.head), id(clause.body_rev), clause.name)
+    kept = _CLAUSE_FNS.get(key)
+    if kept is not None:
+        return kept[1]
+    fn = compile_clause_fn(clause)
+    _CLAUSE_FNS.put(key, (((clause.head, clause.body_rev),), fn))
+    return fn
