@@ -86,11 +86,9 @@ def compile_procedure(
     if not 1 <= len(clauses) <= MAX_CLAUSES:
         return None
     key = SHARED_PROCEDURES.key(clauses, owner, callees, direct)
-    shared = SHARED_PROCEDURES.get(key)
-    if shared is not None:
-        proc = shared.bind(callees, Scan(owner))
-        if proc is not None:
-            return proc
+    proc = SHARED_PROCEDURES.bind(key, clauses, callees, Scan(owner))
+    if proc is not None:
+        return proc
     branches = _branches(clauses)
     if branches is None:
         return None

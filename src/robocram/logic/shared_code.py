@@ -21,7 +21,7 @@ before. A clause function holds nothing of its knowledge base and is shared as i
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Hashable, Sequence
 from dataclasses import dataclass
 
 from robocram.logic.codegen import Bound, ClauseCode, ClauseFn, ClauseWriter, compile_clause_fn
@@ -29,12 +29,15 @@ from robocram.logic.direct_calls import LEVELS, callee_at
 from robocram.logic.goal_writer import function_factory
 from robocram.logic.inline_calls import CalleeTable, Lookup, inline_clause
 from robocram.logic.lru import LRUCache
+from robocram.logic.template import Slot, Tmpl
+from robocram.logic.terms import Term
 from robocram.logic.value import Value
 
 __all__ = ["SHARED_PROCEDURES", "SharedProcedure", "SharedProcedures", "shared_clause_fn"]
 
 KEPT = 1024  # procedures and clause functions kept (a transport compiles ~18 and ~45)
-ProcKey = tuple[tuple[tuple[int, int, str], ...], bool, bool, bool]
+VARIANTS = 4  # procedures kept per clause templates (see SharedProcedures)
+ProcKey = tuple[Hashable, bool, bool, bool]  # the clauses' templates, then the flags
 Templates = tuple[tuple[tuple[Value, ...], tuple[Value, ...]], ...]
 
 
@@ -90,10 +93,14 @@ def _same_clause(now: tuple[object, object] | None, found: object) -> bool:
 
 
 class SharedProcedures:
-    """Procedures kept by their clauses' templates, for any knowledge base to bind."""
+    """Procedures kept by their clauses' templates, for any knowledge base to bind.
+
+    A key keeps up to VARIANTS procedures, the last generated first: knowledge bases
+    that load the same caller over different callees take turns.
+    """
 
     def __init__(self, size: int = KEPT) -> None:
-        self._kept: LRUCache[ProcKey, SharedProcedure] = LRUCache(size)
+        self._kept: LRUCache[ProcKey, tuple[SharedProcedure, ...]] = LRUCache(size)
 
     @staticmethod
     def key(clauses: Sequence[ClauseCode], owner: object, callees: object, direct: bool) -> ProcKey:
@@ -101,9 +108,25 @@ class SharedProcedures:
         ids = tuple((id(c.head), id(c.body_rev), c.name) for c in clauses)
         return ids, owner is not None, callees is not None, direct
 
-    def get(self, key: ProcKey) -> SharedProcedure | None:
-        """The procedure kept for `key`, if any."""
-        return self._kept.get(key)
+    def bind(
+        self,
+        key: ProcKey,
+        clauses: Sequence[ClauseCode],
+        callees: CalleeTable | None,
+        scan: object,
+    ) -> Callable[..., object] | None:
+        """A procedure kept for `key` (else for clauses of the same content) bound to
+        `callees` (see SharedProcedure.bind); None when there is none to reuse."""
+        found = self._kept.get(key)
+        if found is None:
+            found = self._kept.get(_content_key(clauses, key))
+            if found is not None:
+                self._kept.put(key, found)
+        for shared in found or ():
+            proc = shared.bind(callees, scan)
+            if proc is not None:
+                return proc
+        return None
 
     def keep(
         self, key: ProcKey, clauses: Sequence[ClauseCode], source: str, writer: ClauseWriter
@@ -115,7 +138,42 @@ class SharedProcedures:
             consts[i] = None
         templates = tuple((c.head, c.body_rev) for c in clauses)
         seen = tuple(writer.seen or ())
-        self._kept.put(key, SharedProcedure(templates, source, tuple(consts), bound, seen))
+        shared = SharedProcedure(templates, source, tuple(consts), bound, seen)
+        for k in (key, _content_key(clauses, key)):
+            before = self._kept.get(k) or ()
+            self._kept.put(k, (shared, *before[: VARIANTS - 1]))
+
+
+def _content_key(clauses: Sequence[ClauseCode], key: ProcKey) -> ProcKey:
+    """`key` with each clause's templates by what they hold, not by identity.
+
+    Facts made afresh for each world (a robot's description) hold the same atoms,
+    numbers and compounds each time. The types are part of the key (1, 1.0 and True are
+    equal in Python, not in Prolog); anything else (a Python object, a NaN, a string)
+    stands for itself, and an entry holds the templates, so its id stays its own.
+    """
+    parts = tuple((_content(c.head), _content(c.body_rev), c.name) for c in clauses)
+    return ("content", parts), *key[1:]
+
+
+def _content(t: Value) -> Hashable:
+    """What template `t` holds, as a hashable value (see _content_key)."""
+    kind = type(t)
+    if kind is str:
+        return t
+    if kind is Term:
+        return ("term", t[0], tuple([_content(a) for a in t[1]]))
+    if kind is Tmpl:
+        return ("tmpl", t.name, tuple([_content(a) for a in t.args]))
+    if kind is tuple:  # a head's arguments, a body's goals
+        return ("tuple", tuple([_content(a) for a in t]))
+    if kind is Slot:
+        return ("slot", t.i)
+    if kind is int:
+        return ("int", t)
+    if kind is float and t == t:
+        return ("float", t.hex())
+    return ("object", id(t))
 
 
 SHARED_PROCEDURES = SharedProcedures()
