@@ -8,6 +8,7 @@ from robocram.logic import KnowledgeBase
 from robocram.logic import procedure as procedure_module
 from robocram.logic.direct_calls import LEVELS
 from robocram.logic.predicate import WARM_CALLS
+from robocram.logic.procedure import MAX_CLAUSES
 from robocram.logic.shared_code import SharedProcedures
 from robocram.logic.terms import Term
 
@@ -127,3 +128,20 @@ def test_facts_made_afresh_share_code_by_content_with_types_kept(generated: list
     assert _answers(facts_kb(1.0), "f(1.0, X)") == ["a"]
     assert _answers(facts_kb(True), "f(1, X)") == []  # a Python object stands for itself
     assert generated.count("f") == 3
+
+
+def test_clause_functions_of_facts_made_afresh_are_shared_by_content() -> None:
+    many = MAX_CLAUSES + 6  # run clause by clause: each clause's own function
+
+    def facts_kb(scale: object) -> KnowledgeBase:
+        kb = KnowledgeBase()
+        kb.add_fact_group("facts", [Term("g", (i, Term("v", (i, scale)))) for i in range(many)])
+        return kb
+
+    kbs = [facts_kb(1), facts_kb(1), facts_kb(1.0)]
+    for kb in kbs:
+        for _ in range(WARM_CALLS + 2):
+            assert [a["X"] for a in kb.query("g(I, v(I, X)), I >= 68")] in ([1, 1], [1.0, 1.0])
+    assert [a["I"] for a in kbs[2].query("g(I, v(I, 1))")] == []  # 1.0 kept apart from 1
+    runs = [kb._preds[("g", 2)].clauses[69].run for kb in kbs]
+    assert runs[0] is not None and runs[0] is runs[1] and runs[2] is not runs[0]

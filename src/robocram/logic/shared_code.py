@@ -117,11 +117,7 @@ class SharedProcedures:
     ) -> Callable[..., object] | None:
         """A procedure kept for `key` (else for clauses of the same content) bound to
         `callees` (see SharedProcedure.bind); None when there is none to reuse."""
-        found = self._kept.get(key)
-        if found is None:
-            found = self._kept.get(_content_key(clauses, key))
-            if found is not None:
-                self._kept.put(key, found)
+        found = self._kept.get(key) or self._kept.get(_content_key(clauses, key))
         for shared in found or ():
             proc = shared.bind(callees, scan)
             if proc is not None:
@@ -177,16 +173,20 @@ def _content(t: Value) -> Hashable:
 
 
 SHARED_PROCEDURES = SharedProcedures()
-_CLAUSE_FNS: LRUCache[tuple[int, int, str], tuple[Templates, ClauseFn]] = LRUCache(KEPT)
+_CLAUSE_FNS: LRUCache[Hashable, tuple[Templates, ClauseFn]] = LRUCache(KEPT)
 
 
 def shared_clause_fn(clause: ClauseCode) -> ClauseFn:
-    """`compile_clause_fn(clause)`, made once per clause templates (they key it by
-    identity; the entry holds them)."""
+    """`compile_clause_fn(clause)`, made once per clause templates (by identity, else by
+    content: see _content_key; an entry holds the templates)."""
     key = (id(clause.head), id(clause.body_rev), clause.name)
     kept = _CLAUSE_FNS.get(key)
-    if kept is not None:
-        return kept[1]
-    fn = compile_clause_fn(clause)
-    _CLAUSE_FNS.put(key, (((clause.head, clause.body_rev),), fn))
-    return fn
+    if kept is None:
+        content = ("content", _content(clause.head), _content(clause.body_rev), clause.name)
+        by_content = _CLAUSE_FNS.get(content)
+        fn = compile_clause_fn(clause) if by_content is None else by_content[1]
+        kept = ((clause.head, clause.body_rev),), fn  # held: `key` stays these templates'
+        if by_content is None:
+            _CLAUSE_FNS.put(content, kept)
+        _CLAUSE_FNS.put(key, kept)
+    return kept[1]
