@@ -80,7 +80,8 @@ def compile_procedure(
     in O(1) instead of re-entering the procedure. With `callees` (the knowledge base),
     calls of small one-clause predicates are compiled in (see inline_calls.py), and,
     unless not `direct`, a leading call of a compiled procedure is made directly (see
-    direct_calls.py).
+    direct_calls.py). Code generated for the same clauses before (for any knowledge
+    base) is bound to this one instead of generated again (see shared_code.py).
     """
     clauses = list(stored)
     if not 1 <= len(clauses) <= MAX_CLAUSES:

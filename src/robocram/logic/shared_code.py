@@ -9,7 +9,8 @@ generation asked of the knowledge base: the one clause of a small callee compile
 (inline_calls.py) and whether a callee's procedure is called directly (direct_calls.py).
 
 So a procedure is kept by its clauses' templates (by identity: an entry holds them, so
-their ids stay theirs) and reused by another knowledge base when each of those lookups
+their ids stay theirs; and by content, for facts made afresh for each world, such as a
+robot's description) and reused by another knowledge base when each of those lookups
 finds the same there, asked again in the same order (a direct callee not compiled yet
 is compiled then, as generating the code would have). Its knowledge-base-specific
 constants are bound afresh: the knowledge base, its generation (the guard of what was
@@ -17,6 +18,7 @@ compiled in), the predicate's Scan and the callees' procedures, and its level is
 recomputed from theirs. When a lookup finds something else (a clause asserted,
 retracted or consulted differently, a predicate made dynamic) the code is generated as
 before. A clause function holds nothing of its knowledge base and is shared as it is.
+Code generation reads no flag: the same clauses make the same code in any knowledge base.
 """
 
 from __future__ import annotations
@@ -148,8 +150,13 @@ def _content_key(clauses: Sequence[ClauseCode], key: ProcKey) -> ProcKey:
     equal in Python, not in Prolog); anything else (a Python object, a NaN, a string)
     stands for itself, and an entry holds the templates, so its id stays its own.
     """
-    parts = tuple((_content(c.head), _content(c.body_rev), c.name) for c in clauses)
+    parts = tuple((_contents(c.head), _contents(c.body_rev), c.name) for c in clauses)
     return ("content", parts), *key[1:]
+
+
+def _contents(templates: tuple[Value, ...]) -> Hashable:
+    """What a head's arguments or a body's goals hold (see _content)."""
+    return tuple([_content(t) for t in templates])
 
 
 def _content(t: Value) -> Hashable:
@@ -161,8 +168,6 @@ def _content(t: Value) -> Hashable:
         return ("term", t[0], tuple([_content(a) for a in t[1]]))
     if kind is Tmpl:
         return ("tmpl", t.name, tuple([_content(a) for a in t.args]))
-    if kind is tuple:  # a head's arguments, a body's goals
-        return ("tuple", tuple([_content(a) for a in t]))
     if kind is Slot:
         return ("slot", t.i)
     if kind is int:
@@ -182,7 +187,7 @@ def shared_clause_fn(clause: ClauseCode) -> ClauseFn:
     key = (id(clause.head), id(clause.body_rev), clause.name)
     kept = _CLAUSE_FNS.get(key)
     if kept is None:
-        content = ("content", _content(clause.head), _content(clause.body_rev), clause.name)
+        content = ("content", _contents(clause.head), _contents(clause.body_rev), clause.name)
         by_content = _CLAUSE_FNS.get(content)
         fn = compile_clause_fn(clause) if by_content is None else by_content[1]
         kept = ((clause.head, clause.body_rev),), fn  # held: `key` stays these templates'
