@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import gc
+import weakref
+
 import pytest
 
 from robocram.logic import KnowledgeBase
@@ -145,3 +148,13 @@ def test_clause_functions_of_facts_made_afresh_are_shared_by_content() -> None:
     assert [a["I"] for a in kbs[2].query("g(I, v(I, 1))")] == []  # 1.0 kept apart from 1
     runs = [kb._preds[("g", 2)].clauses[69].run for kb in kbs]
     assert runs[0] is not None and runs[0] is runs[1] and runs[2] is not runs[0]
+
+
+def test_kept_code_holds_no_knowledge_base(generated: list[str]) -> None:
+    kb = _kb("q(a, 1). q(b, 2).")
+    assert _answers(kb) == ["a", "b"]
+    assert sorted(generated) == ["p", "q", "r"]  # kept from this knowledge base
+    gone = weakref.ref(kb)
+    del kb
+    gc.collect()
+    assert gone() is None  # only its procedures held it; the kept code binds it per use
