@@ -12,6 +12,7 @@ import dataclasses
 import typing
 from collections.abc import Callable
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Any
 
 from robocram.knowledge.errors import KnowledgeUsageError
@@ -78,7 +79,7 @@ class Argument:
     unit: str
     convert: Callable[[Value], object]
 
-    @property
+    @cached_property  # read for every answer of a typed query
     def variable(self) -> str:
         """The Prolog variable a query uses for it: ``joint_states`` -> ``JointStates``."""
         return "".join(part.capitalize() for part in self.name.split("_"))

@@ -87,8 +87,13 @@ class Predicate(Generic[Row]):
             return f"world({self.arguments[0].variable}), {goal}"
         return goal
 
+    @cached_property
+    def _variables(self) -> dict[str, str]:
+        """Each argument's Prolog variable by its name (typed queries read it per answer)."""
+        return {a.name: a.variable for a in self.arguments}
+
     def _bindings(self, bound: dict[str, Any]) -> dict[str, Any]:
-        names = {a.name: a.variable for a in self.arguments}
+        names = self._variables
         for key in bound:
             if key not in names:
                 raise UnknownArgumentError(self.indicator, key, tuple(names))
@@ -96,9 +101,14 @@ class Predicate(Generic[Row]):
 
     def answers(self, kb: Answers, **bound: object) -> Iterator[Row]:
         """Every answer as a row, arguments bound by name (``robot="pr2"``)."""
+        names = self._variables
         for answer in kb.query(self._goal, **self._bindings(bound)):
-            values = {a.name: answer.get(a.variable, bound.get(a.name)) for a in self.arguments}
-            yield self.row(**{a.name: a.convert(values[a.name]) for a in self.arguments})
+            yield self.row(
+                **{
+                    a.name: a.convert(answer.get(names[a.name], bound.get(a.name)))
+                    for a in self.arguments
+                }
+            )
 
     def first(self, kb: Answers, **bound: object) -> Row | None:
         """The first answer, or None when there is none."""

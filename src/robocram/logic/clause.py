@@ -9,6 +9,7 @@ from __future__ import annotations
 from robocram.logic.choicepoints import ChoicePoint, Cont
 from robocram.logic.codegen import ClauseFn, compile_clause_fn
 from robocram.logic.occurs import unify_checked
+from robocram.logic.shared_code import shared_clause_fn
 from robocram.logic.template import build, index_key_of_template, unify_head
 from robocram.logic.terms import Var
 from robocram.logic.value import Value
@@ -64,7 +65,8 @@ class Clause:
         if self.calls < _COMPILE_AFTER:
             return self.interpret
         try:
-            self.run = compile_clause_fn(self)
+            # a loaded clause's templates may be another knowledge base's too (shared_reads)
+            self.run = compile_clause_fn(self) if self.group is None else shared_clause_fn(self)
         except (SyntaxError, RecursionError, MemoryError):
             # Too deeply nested for Python's compiler (e.g. a head with a 150-element
             # list): interpreting it is correct, only slower.

@@ -35,7 +35,7 @@ from robocram.logic.goal_writer import (
     slots_in,
     term_parts,
 )
-from robocram.logic.inline_calls import CalleeTable, expand_call, max_slot
+from robocram.logic.inline_calls import CalleeTable, Lookup, expand_call, max_slot
 from robocram.logic.keys import pred_key
 from robocram.logic.template import Slot, Tmpl
 from robocram.logic.terms import Var
@@ -43,6 +43,7 @@ from robocram.logic.value import Value
 
 __all__ = [
     "FACTORY_CACHE_SIZE",
+    "Bound",
     "ClauseCode",
     "ClauseFn",
     "ClauseWriter",
@@ -59,6 +60,9 @@ class ClauseCode(Protocol):
     name: str
 
 
+# A constant bound per knowledge base: "table" (it), "generation" (its generation when
+# compiled), "scan" (the predicate's Scan) or the number of a directly called procedure.
+Bound = str | int
 ClauseFn = Callable[[tuple[Value, ...], list[Var], int, Cont, list[ChoicePoint]], Cont]
 
 _INLINE_DEPTH = 2  # calls compiled into calls compiled in: each doubles the rest's code
@@ -103,6 +107,18 @@ class ClauseWriter(GoalWriter):
     inlined = 0  # calls compiled in around the goal being written
     direct = False  # a leading call of a compiled procedure made here (see direct_call)
     level = 0  # 0 without direct calls, else one more than the callees' highest level
+    # What the code asked of `callees` and which constants are the knowledge base's own
+    # (see shared_code.py); None when not recorded.
+    seen: list[Lookup] | None = None
+    bound: list[tuple[int, Bound]] | None = None
+    directs = 0  # procedures called directly so far
+
+    def bound_const(self, value: Value, mark: Bound) -> str:
+        """A constant that is the knowledge base's own (see `Bound`); noted in `bound`."""
+        name = self.const(value)
+        if self.bound is not None:
+            self.bound.append((len(self.consts) - 1, mark))
+        return name
 
     def clause_source(self, clause: ClauseCode) -> str:
         """Generate `make(k0, k1, ...)` returning the clause function."""
@@ -183,7 +199,7 @@ class ClauseWriter(GoalWriter):
         direct_calls.py)."""
         if not body or not self.direct or self.callees is None or inlinable(body[0]):
             return
-        found = direct_callee(self.callees, body[0], (clause.name, len(clause.head)))
+        found = direct_callee(self.callees, body[0], (clause.name, len(clause.head)), self.seen)
         if found is None:
             return
         generation, proc, level = found
@@ -194,12 +210,14 @@ class ClauseWriter(GoalWriter):
         rest = "nxt"
         for g in reversed(self.goals(body[1:], held)):
             rest = f"({g}, cb, {rest})"
-        table = self.const(self.callees)
-        self.emit(f"if {table}._generation == {self.const(generation)}:", 1)
+        table = self.bound_const(self.callees, "table")
+        self.emit(f"if {table}._generation == {self.bound_const(generation, 'generation')}:", 1)
         self.base += 1
         self.alternatives()
         self.emit(f"dn = {rest}", 1)
-        self.emit(f"dr = {self.const(proc)}(({inner}), trail, dn, cps, 0)", 1)
+        callee = self.bound_const(proc, self.directs)  # the knowledge base's: bound per KB
+        self.directs += 1
+        self.emit(f"dr = {callee}(({inner}), trail, dn, cps, 0)", 1)
         # handed back (see procedure.py): the call goes to the machine, as it would have
         key = self.const(pred_key(name, len(args)))
         self.emit(f"if type(dr) is list: dr = (({key}, tuple(dr[:-1]), CALL), cb, dn)", 1)
@@ -360,15 +378,15 @@ class ClauseWriter(GoalWriter):
         if self.callees is None or self.inlined >= _INLINE_DEPTH:
             return False
         own = (clause.name, len(clause.head))
-        found = expand_call(self.callees, body[0], self.next_slot, own)
+        found = expand_call(self.callees, body[0], self.next_slot, own, self.seen)
         if found is None:
             return False
         generation, goals, used = found
         self.next_slot += used
         saved = (set(self.known), set(self.dereffed), self.fail, self.base, self.state())
-        table = self.const(self.callees)
+        table = self.bound_const(self.callees, "table")
         # a constant, not a literal: the same source at every generation (one factory)
-        self.emit(f"if {table}._generation == {self.const(generation)}:", 1)
+        self.emit(f"if {table}._generation == {self.bound_const(generation, 'generation')}:", 1)
         for branch in ("inline", "call"):
             if branch == "call":
                 self.emit("else:", 1)

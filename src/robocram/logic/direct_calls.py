@@ -21,11 +21,11 @@ from collections.abc import Callable
 from weakref import WeakKeyDictionary
 
 from robocram.logic.goal_writer import term_parts
-from robocram.logic.inline_calls import CalleeTable
+from robocram.logic.inline_calls import CalleeTable, Lookup
 from robocram.logic.template import Tmpl
 from robocram.logic.value import Value
 
-__all__ = ["LEVELS", "MAX_LEVEL", "direct_callee"]
+__all__ = ["LEVELS", "MAX_LEVEL", "callee_at", "direct_callee"]
 
 MAX_LEVEL = 4
 # Each compiled procedure's level (codegen reads it; procedure fills it).
@@ -33,16 +33,29 @@ LEVELS: WeakKeyDictionary[Callable[..., object], int] = WeakKeyDictionary()
 
 
 def direct_callee(
-    table: CalleeTable, goal: Value, caller: tuple[str, int]
+    table: CalleeTable,
+    goal: Value,
+    caller: tuple[str, int],
+    seen: list[Lookup] | None = None,
 ) -> tuple[int, Callable[..., object], int] | None:
     """(generation, procedure, its level) of the predicate `goal` calls; None when `goal`
-    is no call, calls the `caller`, or its predicate has no procedure below MAX_LEVEL."""
+    is no call, calls the `caller`, or its predicate has no procedure below MAX_LEVEL.
+    `seen` gets the lookup made, if any."""
     parts = term_parts(goal)
     if parts is None or type(goal) is not Tmpl:
         return None
     key = (parts[0], len(parts[1]))
     if key == caller:
         return None
+    found = callee_at(table, key)
+    if seen is not None:
+        seen.append(("direct", key, found is not None))
+    return None if found is None else (table._generation, *found)
+
+
+def callee_at(table: CalleeTable, key: tuple[str, int]) -> tuple[Callable[..., object], int] | None:
+    """The procedure of predicate `key` a caller may call directly, and its level; None
+    when it has none below MAX_LEVEL (one not compiled yet is compiled now)."""
     pred = table._preds.get(key)
     if pred is None:
         return None
@@ -50,4 +63,4 @@ def direct_callee(
     level = LEVELS.get(proc, MAX_LEVEL) if proc is not None else MAX_LEVEL
     if proc is None or level >= MAX_LEVEL:
         return None
-    return table._generation, proc, level
+    return proc, level

@@ -23,7 +23,7 @@ from robocram.logic.goal_writer import inlinable, slots_in, term_parts
 from robocram.logic.template import Slot, Tmpl
 from robocram.logic.value import Value
 
-__all__ = ["CalleeTable", "Expansion", "expand_call", "max_slot"]
+__all__ = ["CalleeTable", "Expansion", "Lookup", "expand_call", "inline_clause", "max_slot"]
 
 USER_KIND = 0  # predicate.USER (not imported: predicate imports the procedure compiler)
 _MAX_GOALS = 8  # a longer callee body stays a call
@@ -72,6 +72,10 @@ class CalleeTable(Protocol):
 
 # (the guard's generation, the goals that replace the call, slots they use past `base`)
 Expansion = tuple[int, list[Value], int]
+# What code generation asked of the knowledge base and found (see shared_code.py):
+# ("inline", key, the one clause's head and body templates or None) or
+# ("direct", key, whether a procedure is called directly).
+Lookup = tuple[str, tuple[str, int], tuple[tuple[Value, ...], tuple[Value, ...]] | bool | None]
 
 
 def max_slot(templates: list[Value]) -> int:
@@ -83,15 +87,40 @@ def max_slot(templates: list[Value]) -> int:
 
 
 def expand_call(
-    table: CalleeTable, goal: Value, base: int, caller: tuple[str, int]
+    table: CalleeTable,
+    goal: Value,
+    base: int,
+    caller: tuple[str, int],
+    seen: list[Lookup] | None = None,
 ) -> Expansion | None:
     """The goals a call of a small predicate stands for, its slots renamed from `base`
-    on; None when `goal` is not such a call (or calls the `caller` itself)."""
+    on; None when `goal` is not such a call (or calls the `caller` itself). `seen`
+    gets the lookup made, if any."""
     parts = term_parts(goal)
     if parts is None or type(goal) is not Tmpl or (parts[0], len(parts[1])) == caller:
         return None
     name, args = parts
-    pred = table._preds.get((name, len(args)))
+    found = inline_clause(table, (name, len(args)))
+    if seen is not None:
+        seen.append(("inline", (name, len(args)), found))
+    if found is None:
+        return None
+    clause_head, clause_body = found
+    body = _without_cuts(list(reversed(clause_body)))
+    if body is None:  # not reached: inline_clause checked it
+        return None
+    head = [_rename(h, base) for h in clause_head]
+    goals: list[Value] = [Tmpl("=", (h, a)) for h, a in zip(head, args, strict=True)]
+    goals += [_rename(g, base) for g in body]
+    return table._generation, goals, max_slot([*clause_head, *body])
+
+
+def inline_clause(
+    table: CalleeTable, key: tuple[str, int]
+) -> tuple[tuple[Value, ...], tuple[Value, ...]] | None:
+    """The head and reversed body templates of the one clause a call of `key` may be
+    replaced by; None when `key` is no small static one-clause predicate."""
+    pred = table._preds.get(key)
     if pred is None or pred.kind != USER_KIND or pred.dynamic or pred.pyfn is not None:
         return None
     clauses = pred.clauses
@@ -101,10 +130,7 @@ def expand_call(
     body = _without_cuts(list(reversed(clause.body_rev)))
     if body is None or len(body) > _MAX_GOALS:
         return None
-    head = [_rename(h, base) for h in clause.head]
-    goals: list[Value] = [Tmpl("=", (h, a)) for h, a in zip(head, args, strict=True)]
-    goals += [_rename(g, base) for g in body]
-    return table._generation, goals, max_slot([*clause.head, *body])
+    return clause.head, clause.body_rev
 
 
 def _without_cuts(body: list[Value]) -> list[Value] | None:

@@ -375,7 +375,8 @@ class KnowledgeBase:
         query as resource_error(inferences) / resource_error(time)).
         """
         limits = (max_inferences, time_limit)
-        Budget(*limits)  # check the limits now, not at the first answer
+        if max_inferences is not None or time_limit is not None:
+            Budget(*limits)  # check the limits now, not at the first answer
         template, names, nslots = self._compile_query(text)
         regs: list[Value] = [None] * nslots
         for name, value in bindings.items():

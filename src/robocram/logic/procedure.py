@@ -34,6 +34,7 @@ from robocram.logic.exclusive_guards import excludes
 from robocram.logic.goal_writer import function_factory
 from robocram.logic.inline_calls import CalleeTable
 from robocram.logic.limits import PROC_LOOPS
+from robocram.logic.shared_code import SHARED_PROCEDURES
 from robocram.logic.template import Slot, Tmpl
 from robocram.logic.terms import Term, Var
 from robocram.logic.value import Value
@@ -79,11 +80,16 @@ def compile_procedure(
     in O(1) instead of re-entering the procedure. With `callees` (the knowledge base),
     calls of small one-clause predicates are compiled in (see inline_calls.py), and,
     unless not `direct`, a leading call of a compiled procedure is made directly (see
-    direct_calls.py).
+    direct_calls.py). Code generated for the same clauses before (for any knowledge
+    base) is bound to this one instead of generated again (see shared_code.py).
     """
     clauses = list(stored)
     if not 1 <= len(clauses) <= MAX_CLAUSES:
         return None
+    key = SHARED_PROCEDURES.key(clauses, owner, callees, direct)
+    proc = SHARED_PROCEDURES.bind(key, clauses, callees, Scan(owner))
+    if proc is not None:
+        return proc
     branches = _branches(clauses)
     if branches is None:
         return None
@@ -94,10 +100,11 @@ def compile_procedure(
         writer.procedure(branches)
         head = "def proc(args, trail, nxt, cps, start):"
         source = "\n".join([head, *writer.lines, ""])
-        proc: Procedure = function_factory(source, "proc")(*writer.consts)
+        proc = function_factory(source, "proc")(*writer.consts)
         LEVELS[proc] = writer.level
     except (SyntaxError, RecursionError, MemoryError):
         return None  # too deeply nested to compile; the clauses run one by one instead
+    SHARED_PROCEDURES.keep(key, clauses, source, writer)
     return proc
 
 
@@ -209,6 +216,8 @@ class _ProcWriter(ClauseWriter):
         self.committed: bool | None = False
         self.next_start: int | None = None
         self.alt_start: int | None = None  # the clause a choicepoint resumes at
+        self.seen = []
+        self.bound = []
 
     def procedure(self, b: _Branches) -> None:
         self.switch(b)
@@ -259,7 +268,7 @@ class _ProcWriter(ClauseWriter):
         self.dispatch(list(b.atomic.items()), tests, "a0", b.open)
         self.emit("else:", 2)
         if scan:
-            self.emit(f"return [{self.names}{self.const(Scan(self.owner))}]", 3)
+            self.emit(f"return [{self.names}{self.bound_const(Scan(self.owner), 'scan')}]", 3)
         else:
             self.branch(b.every, 3, switched=False)
 

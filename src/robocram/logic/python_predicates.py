@@ -24,11 +24,31 @@ __all__ = ["python_solutions"]
 
 
 def python_solutions(m: Engine, p: Pred, args: tuple[Value, ...]) -> Iterator[bool]:
-    """Run a Python predicate; unify each yielded tuple with the call's arguments."""
-    assert p.pyfn is not None
+    """Run a Python predicate; unify each yielded tuple with the call's arguments.
+
+    A Python exception becomes a `PrologHostError` naming the predicate (one generator
+    per call, not two: a transport makes some 400 such calls).
+    """
+    fn = p.pyfn
+    assert fn is not None
     py_args = [to_python(a) for a in args]
     trail = m.trail
-    for solution in _guarded(p.pyfn, py_args, p.indicator):
+    try:
+        result = fn(*py_args)
+    except PrologError:
+        raise
+    except Exception as err:
+        raise PrologHostError(err, p.indicator) from err
+    solutions = iter(result)
+    while True:
+        try:
+            solution = next(solutions)
+        except StopIteration:
+            return
+        except PrologError:
+            raise
+        except Exception as err:
+            raise PrologHostError(err, p.indicator) from err
         if solution is None:
             yield True
             continue
@@ -42,21 +62,6 @@ def python_solutions(m: Engine, p: Pred, args: tuple[Value, ...]) -> Iterator[bo
             yield True
         else:
             m.undo_to(mark)
-
-
-def _guarded(fn: Callable[..., object], args: list[Value], where: str) -> Iterator[object]:
-    """Yield `fn(*args)`'s solutions; a Python exception becomes a `PrologHostError`."""
-    solutions = iter(_host_call(fn, args, where))
-    while True:
-        try:
-            solution = next(solutions)
-        except StopIteration:
-            return
-        except PrologError:
-            raise
-        except Exception as err:
-            raise PrologHostError(err, where) from err
-        yield solution
 
 
 def _host_call(fn: Callable[..., object], args: list[Value], where: str) -> Value:
