@@ -1,0 +1,114 @@
+"""A hand opened only as wide as a handle's bar needs, for taking it when fully open fails.
+
+A fully open many-fingered hand (TALOS's, Armar6's) spreads its fingers far beyond a 2 cm
+bar: from above or from the front they go into the drawer's front or the counter's top
+before the palm reaches the bar. Opened just wider than the bar, the fingers stay near
+it. The opening is the bar's thickness (the smallest extent of the handle link's bounds)
+plus :data:`BAR_MARGIN`, as the gripper description measures its widest gap
+(``robots.derived_values.widest_opening``) at each fraction of the way open; the fraction
+is found by bisection.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator
+from dataclasses import replace
+
+from robocram.execution.failures import GripperPathBlocked
+from robocram.projection.gripper import gripper_of, set_gripper
+from robocram.projection.projected_robot import ProjectedRobot
+from robocram.robots.derived_values import widest_opening
+from robocram.robots.gripper import GripperJoint
+from robocram.tf import Pose
+
+BAR_MARGIN = 0.01  # [m] wider than the bar: room for the fingers' aim (5 mm either side)
+BISECTIONS = 12  # halvings of the fraction: 1/4096 of the full opening
+
+
+def bar_thickness(robot: ProjectedRobot, part: str, handle: str) -> float:
+    """[m] the handle's thinnest extent: the bar's thickness the fingers close across."""
+    low, high = robot.world.contacts.link_aabb(part, handle)
+    return min(h - lo for lo, h in zip(low, high, strict=True))
+
+
+def gap_at(robot: ProjectedRobot, arm: str, fraction: float) -> float:
+    """[m] the widest gap between ``arm``'s fingers ``fraction`` of the way open (0 closed,
+    1 open), measured as the description's ``max_opening`` is; 0 where none opens."""
+    gripper = gripper_of(robot, arm)
+    part_way = tuple(
+        GripperJoint(j.name, open=j.closed + fraction * (j.open - j.closed), closed=j.closed)
+        for j in gripper.joints
+    )
+    spec = robot.arm(arm)
+    fingers = tuple(spec.gripper_links)
+    model = robot.description.model
+    gap = widest_opening(model, replace(gripper, joints=part_way), fingers)
+    return 0.0 if gap is None else gap
+
+
+def bar_fraction(robot: ProjectedRobot, arm: str, width: float) -> float | None:
+    """The fraction of the way open (0 closed, 1 open) at which ``arm``'s fingers are
+    ``width`` [m] apart; None when fully open is no wider (nothing to narrow) or the hand
+    holds by suction."""
+    gripper = gripper_of(robot, arm)
+    if gripper.is_suction or gap_at(robot, arm, 1.0) <= width:
+        return None
+    narrow, wide = 0.0, 1.0
+    for _ in range(BISECTIONS):
+        middle = (narrow + wide) / 2
+        if gap_at(robot, arm, middle) >= width:
+            wide = middle
+        else:
+            narrow = middle
+    return wide
+
+
+def bar_opening(robot: ProjectedRobot, arm: str, part: str, handle: str) -> float | None:
+    """The fraction to open ``arm``'s hand to for ``handle``'s bar: its thickness plus
+    :data:`BAR_MARGIN`; None when the full opening is no wider."""
+    return bar_fraction(robot, arm, bar_thickness(robot, part, handle) + BAR_MARGIN)
+
+
+def set_open(robot: ProjectedRobot, arm: str, fraction: float) -> None:
+    """Open (or close) ``arm``'s fingers to ``fraction`` of the way open.
+
+    Raises:
+        GripperPathBlocked: the fingers' way runs into something; they did not move.
+    """
+    gripper = gripper_of(robot, arm)
+    set_gripper(robot, arm, gripper.at(fraction)[gripper.names[0]])
+
+
+def open_to(robot: ProjectedRobot, arm: str, fraction: float) -> bool:
+    """:func:`set_open` where the hand is; False if the fingers are blocked there."""
+    try:
+        set_open(robot, arm, fraction)
+    except GripperPathBlocked:
+        return False
+    return True
+
+
+def hold_tries(
+    robot: ProjectedRobot,
+    arm: str,
+    handle: tuple[str, str],
+    frames: list[tuple[float, Pose]],
+    rolls: Callable[[], list[float]],
+    untouched: Callable[[], bool],
+) -> Iterator[tuple[float, Pose, float, float | None]]:
+    """The holds to try on ``handle`` (part, link), as (pitch, frame, roll, opening): each
+    frame (``frames``: pitch, frame) with each of ``rolls()`` and the hand fully open
+    (opening None), as ever; then, only if ``untouched()`` (no hold moved the part) and the
+    hand opens wider than the bar needs, each again with the hand opened just that wide
+    (:func:`bar_opening`)."""
+    for pitch, frame in frames:
+        for roll in rolls():
+            yield pitch, frame, roll, None
+    if not untouched():
+        return
+    opening = bar_opening(robot, arm, *handle)
+    if opening is None:
+        return
+    for pitch, frame in frames:
+        for roll in rolls():
+            yield pitch, frame, roll, opening
