@@ -146,19 +146,20 @@ def _deepest(robot: ProjectedRobot, result: IKResult) -> str:
         if result.base_motion is not None:
             world.set_pose(robot.name, moved_base(robot, result.base_motion))
         world.set_joint_states(robot.name, dict(result.joint_positions))
-        points = [
-            p for p in world.contacts.contact_points(robot.name, "kitchen")
-            if p.link_b != f"{DRAWER}_handle"
-        ]  # fmt: skip
+        every = world.contacts.contact_points(robot.name, "kitchen")
+        points = [p for p in every if p.link_b != f"{DRAWER}_handle"]
+        bar = min((p for p in every if p not in points), key=lambda p: p.distance, default=None)
         moved = math.dist(base.position, world.pose(robot.name).position)
     finally:
         world.set_pose(robot.name, base)
         world.set_joint_states(robot.name, joints)
+    in_bar = "" if bar is None else f" (the bar: {-bar.distance * 1000:.1f} mm {bar.link_a})"
     if not points:
-        return f"clear, the base moved {moved:.2f} m"
+        return f"clear{in_bar}, the base moved {moved:.2f} m"
     worst = min(points, key=lambda p: p.distance)
     return (
-        f"{-worst.distance * 1000:.1f} mm {worst.link_a}/{worst.link_b}, base moved {moved:.2f} m"
+        f"{-worst.distance * 1000:.1f} mm {worst.link_a}/{worst.link_b}{in_bar}, "
+        f"base moved {moved:.2f} m"
     )
 
 

@@ -22,6 +22,7 @@ from robocram.robots.gripper import GripperJoint
 from robocram.tf import Pose
 
 BAR_MARGIN = 0.01  # [m] wider than the bar: room for the fingers' aim (5 mm either side)
+NARROWEST_SLACK = 0.005  # [m] a hand that opens no narrower than this beyond the width has none
 BISECTIONS = 12  # halvings of the fraction: 1/4096 of the full opening
 
 
@@ -48,8 +49,8 @@ def gap_at(robot: ProjectedRobot, arm: str, fraction: float) -> float:
 
 def bar_fraction(robot: ProjectedRobot, arm: str, width: float) -> float | None:
     """The fraction of the way open (0 closed, 1 open) at which ``arm``'s fingers are
-    ``width`` [m] apart; None when fully open is no wider (nothing to narrow) or the hand
-    holds by suction."""
+    ``width`` [m] apart; None when fully open is no wider (nothing to narrow), when the
+    fingers open no narrower than well beyond it, or the hand holds by suction."""
     gripper = gripper_of(robot, arm)
     if gripper.is_suction or gap_at(robot, arm, 1.0) <= width:
         return None
@@ -60,6 +61,8 @@ def bar_fraction(robot: ProjectedRobot, arm: str, width: float) -> float | None:
             wide = middle
         else:
             narrow = middle
+    if gap_at(robot, arm, wide) > width + NARROWEST_SLACK:
+        return None  # its fingers stop farther apart (Kevin's 59 mm): no narrower hand
     return wide
 
 
