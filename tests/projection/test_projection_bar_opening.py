@@ -98,12 +98,12 @@ def test_a_hand_fully_open_that_holds_the_handle_never_narrows(
     assert asked == []
 
 
-def test_the_narrower_hand_is_tried_after_every_fully_open_hold_failed(
-    pr2_at_drawer: tuple[KitchenScene, ProjectedRobot], monkeypatch: pytest.MonkeyPatch
-) -> None:
-    scene, robot = pr2_at_drawer
-    world = scene.world
-    world.set_pose(robot.name, Pose((-1.6, -0.5, 0.0), FACING_NORTH))  # 2.4 m away
+def _far_and_spied(
+    scene: KitchenScene, robot: ProjectedRobot, monkeypatch: pytest.MonkeyPatch
+) -> tuple[list[str], list[float]]:
+    """The PR2 2.4 m from the drawer (no hold reaches it); the handles the bar opening is
+    asked for (it says 0.4) and the fractions the fingers are set to."""
+    scene.world.set_pose(robot.name, Pose((-1.6, -0.5, 0.0), FACING_NORTH))
     asked: list[str] = []
     opened: list[float] = []
     monkeypatch.setattr(bar_opening, "bar_opening", lambda *a: asked.append(a[3]) or 0.4)
@@ -114,8 +114,28 @@ def test_the_narrower_hand_is_tried_after_every_fully_open_hold_failed(
         real(robot, arm, fraction)
 
     monkeypatch.setattr(bar_opening, "set_open", set_open)
+    return asked, opened
+
+
+def test_a_narrower_hand_ik_puts_nowhere_moves_nothing(
+    pr2_at_drawer: tuple[KitchenScene, ProjectedRobot], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    scene, robot = pr2_at_drawer
+    asked, opened = _far_and_spied(scene, robot, monkeypatch)
     with pytest.raises(EnvironmentManipulationImpossible):
         move_part(robot, "right", "kitchen", f"{DRAWER}_joint", f"{DRAWER}_handle", 0.3)
     assert asked == [f"{DRAWER}_handle"]  # once, after the fully open holds
+    assert opened == []  # IK put the narrower hand nowhere: no finger moved for it
+
+
+def test_the_narrower_hand_is_tried_where_ik_holds_it(
+    pr2_at_drawer: tuple[KitchenScene, ProjectedRobot], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    scene, robot = pr2_at_drawer
+    asked, opened = _far_and_spied(scene, robot, monkeypatch)
+    monkeypatch.setattr(bar_opening, "reaches_narrowed", lambda *a: True)
+    with pytest.raises(EnvironmentManipulationImpossible):
+        move_part(robot, "right", "kitchen", f"{DRAWER}_joint", f"{DRAWER}_handle", 0.3)
+    assert asked == [f"{DRAWER}_handle"]
     assert opened and set(opened) == {0.4}  # each hold again, the hand opened that far
-    assert world.joint_states("kitchen")[f"{DRAWER}_joint"] == pytest.approx(0.0, abs=1e-9)
+    assert scene.world.joint_states("kitchen")[f"{DRAWER}_joint"] == pytest.approx(0.0)

@@ -294,6 +294,7 @@ def move_part(
             frames,
             rolls,
             lambda: moved is None,  # noqa: B023
+            lambda roll: _holding(axis, roll, palm),
         ):  # ``moved`` read as the tries go: the narrower hand only if nothing moved it
             checkpoint()
             grasp = _holding(axis, roll, palm)

@@ -15,6 +15,9 @@ from collections.abc import Callable, Iterator
 from dataclasses import replace
 
 from robocram.execution.failures import GripperPathBlocked
+from robocram.kinematics import PlanarBase, solve_ik
+from robocram.kinematics.ik_options import IKOptions
+from robocram.projection.collision_mode import collision_check, putting_back_once
 from robocram.projection.gripper import gripper_of, set_gripper
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robots.derived_values import widest_opening
@@ -24,6 +27,8 @@ from robocram.tf import Pose
 BAR_MARGIN = 0.01  # [m] wider than the bar: room for the fingers' aim (5 mm either side)
 NARROWEST_SLACK = 0.005  # [m] a hand that opens no narrower than this beyond the width has none
 BISECTIONS = 12  # halvings of the fraction: 1/4096 of the full opening
+REACH = PlanarBase(0.5, 0.5, 1.0)  # [m, m, rad] the base's move to get the hand to the handle
+REACH_RESTARTS = 30  # IK restarts of the look before a narrower hand moves
 
 
 def bar_thickness(robot: ProjectedRobot, part: str, handle: str) -> float:
@@ -91,6 +96,32 @@ def open_to(robot: ProjectedRobot, arm: str, fraction: float) -> bool:
     return True
 
 
+def reaches_narrowed(
+    robot: ProjectedRobot, arm: str, at_handle: Pose, touching: str, fraction: float
+) -> bool:
+    """Whether IK puts ``arm``'s tool at ``at_handle`` (map) with its fingers ``fraction``
+    open, the hand touching ``touching`` only, the base free within :data:`REACH`: asked
+    before any motion, so a narrower hand that fits nowhere moves nothing (the fingers are
+    set to look, and put back)."""
+    world = robot.world
+    gripper = gripper_of(robot, arm)
+    states = world.joint_states(robot.name)
+    before = {j: states[j] for j in gripper.names}
+    check = collision_check(robot, arm, "allow_hand", touching)
+    try:
+        world.set_joint_states(robot.name, gripper.at(fraction))
+        in_base = robot.base_pose().inverse() * at_handle
+        options = IKOptions(base=REACH, max_restarts=REACH_RESTARTS)
+        with robot.ik_lock, putting_back_once(check):
+            seed = world.joint_states(robot.name)
+            result = solve_ik(
+                robot.description, arm, in_base, seed=seed, options=options, collision_check=check
+            )
+    finally:
+        world.set_joint_states(robot.name, before)
+    return result.success
+
+
 def hold_tries(
     robot: ProjectedRobot,
     arm: str,
@@ -98,20 +129,25 @@ def hold_tries(
     frames: list[tuple[float, Pose]],
     rolls: Callable[[], list[float]],
     untouched: Callable[[], bool],
+    grasp: Callable[[float], Pose],
 ) -> Iterator[tuple[float, Pose, float, float | None]]:
     """The holds to try on ``handle`` (part, link), as (pitch, frame, roll, opening): each
     frame (``frames``: pitch, frame) with each of ``rolls()`` and the hand fully open
     (opening None), as ever; then, only if ``untouched()`` (no hold moved the part) and the
     hand opens wider than the bar needs, each again with the hand opened just that wide
-    (:func:`bar_opening`)."""
+    (:func:`bar_opening`), where IK holds it so (:func:`reaches_narrowed`; ``grasp(roll)``:
+    the tool in the frame)."""
     for pitch, frame in frames:
         for roll in rolls():
             yield pitch, frame, roll, None
     if not untouched():
         return
-    opening = bar_opening(robot, arm, *handle)
+    part, link = handle
+    opening = bar_opening(robot, arm, part, link)
     if opening is None:
         return
     for pitch, frame in frames:
         for roll in rolls():
-            yield pitch, frame, roll, opening
+            at_handle = robot.world.link_pose(part, link) * frame * grasp(roll)
+            if reaches_narrowed(robot, arm, at_handle, f"{part}/{link}", opening):
+                yield pitch, frame, roll, opening
