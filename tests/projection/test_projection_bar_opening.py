@@ -117,7 +117,7 @@ def _far_and_spied(
     return asked, opened
 
 
-def test_a_narrower_hand_ik_puts_nowhere_moves_nothing(
+def test_a_narrower_hand_that_frees_no_hold_moves_nothing(
     pr2_at_drawer: tuple[KitchenScene, ProjectedRobot], monkeypatch: pytest.MonkeyPatch
 ) -> None:
     scene, robot = pr2_at_drawer
@@ -125,15 +125,15 @@ def test_a_narrower_hand_ik_puts_nowhere_moves_nothing(
     with pytest.raises(EnvironmentManipulationImpossible):
         move_part(robot, "right", "kitchen", f"{DRAWER}_joint", f"{DRAWER}_handle", 0.3)
     assert asked == [f"{DRAWER}_handle"]  # once, after the fully open holds
-    assert opened == []  # IK put the narrower hand nowhere: no finger moved for it
+    assert opened == []  # narrowing freed no hold (IK puts the hand nowhere): no finger moved
 
 
-def test_the_narrower_hand_is_tried_where_ik_holds_it(
+def test_the_narrower_hand_is_tried_where_it_frees_the_hold(
     pr2_at_drawer: tuple[KitchenScene, ProjectedRobot], monkeypatch: pytest.MonkeyPatch
 ) -> None:
     scene, robot = pr2_at_drawer
     asked, opened = _far_and_spied(scene, robot, monkeypatch)
-    monkeypatch.setattr(bar_opening, "reaches_narrowed", lambda *a: True)
+    monkeypatch.setattr(bar_opening, "narrowing_frees", lambda *a: True)
     with pytest.raises(EnvironmentManipulationImpossible):
         move_part(robot, "right", "kitchen", f"{DRAWER}_joint", f"{DRAWER}_handle", 0.3)
     assert asked == [f"{DRAWER}_handle"]

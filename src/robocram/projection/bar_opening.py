@@ -96,13 +96,24 @@ def open_to(robot: ProjectedRobot, arm: str, fraction: float) -> bool:
     return True
 
 
-def reaches_narrowed(
+def narrowing_frees(
     robot: ProjectedRobot, arm: str, at_handle: Pose, touching: str, fraction: float
 ) -> bool:
-    """Whether IK puts ``arm``'s tool at ``at_handle`` (map) with its fingers ``fraction``
-    open, the hand touching ``touching`` only, the base free within :data:`REACH`: asked
-    before any motion, so a narrower hand that fits nowhere moves nothing (the fingers are
-    set to look, and put back)."""
+    """Whether IK holds ``arm``'s tool at ``at_handle`` (map) with its fingers ``fraction``
+    open and not with them fully open: the open fingers were what refused the hold. Asked
+    before any motion, so a narrower hand moves only where it makes the difference (a hold
+    refused for another cause moves nothing more)."""
+    return _reaches(robot, arm, at_handle, touching, fraction) and not _reaches(
+        robot, arm, at_handle, touching, 1.0
+    )
+
+
+def _reaches(
+    robot: ProjectedRobot, arm: str, at_handle: Pose, touching: str, fraction: float
+) -> bool:
+    """Whether IK puts the tool at ``at_handle``, the fingers ``fraction`` open, the hand
+    touching ``touching`` only, the base free within :data:`REACH` (the fingers are set to
+    look, and put back)."""
     world = robot.world
     gripper = gripper_of(robot, arm)
     states = world.joint_states(robot.name)
@@ -135,8 +146,8 @@ def hold_tries(
     frame (``frames``: pitch, frame) with each of ``rolls()`` and the hand fully open
     (opening None), as ever; then, only if ``untouched()`` (no hold moved the part) and the
     hand opens wider than the bar needs, each again with the hand opened just that wide
-    (:func:`bar_opening`), where IK holds it so (:func:`reaches_narrowed`; ``grasp(roll)``:
-    the tool in the frame)."""
+    (:func:`bar_opening`), where that frees the hold (:func:`narrowing_frees`;
+    ``grasp(roll)``: the tool in the frame)."""
     for pitch, frame in frames:
         for roll in rolls():
             yield pitch, frame, roll, None
@@ -149,5 +160,5 @@ def hold_tries(
     for pitch, frame in frames:
         for roll in rolls():
             at_handle = robot.world.link_pose(part, link) * frame * grasp(roll)
-            if reaches_narrowed(robot, arm, at_handle, f"{part}/{link}", opening):
+            if narrowing_frees(robot, arm, at_handle, f"{part}/{link}", opening):
                 yield pitch, frame, roll, opening
