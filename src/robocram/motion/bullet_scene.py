@@ -67,6 +67,9 @@ class BulletScene:
         self.allowed_pairs = frozenset(allowed_pairs)  # (robot link | held object, other)
         self.distance = distance  # [m] nearer than this counts as touching
         self.moving_links = found[1]
+        self._measured = tuple(  # the links clearances are measured of
+            link for link in self.moving_links if link not in self.allowed_links
+        )  # fmt: skip
         self._posed = False
         self._obstacles: ObstacleBoxes | None = None  # read once per posed block
         self._others: tuple[list[WorldObject], list[WorldObject]] | None = None  # too
@@ -225,7 +228,7 @@ class BulletScene:
         world = self.world
         held, anywhere = self._others_now()
         gaps: dict[str, float] = {}
-        links = [link for link in self.moving_links if link not in self.allowed_links]
+        links = self._measured
         boxes = self._obstacles_now(held, anywhere)
         for link, obj, other_link, gap in world.contacts.link_distances(
             self.robot, [*held, *anywhere], reach, links=links, obstacles=boxes

@@ -78,6 +78,8 @@ def _overlaps(
     names = _link_names(obj)
     if links is None:
         indices = obj.collider_names()  # no shape, no hit
+    elif isinstance(links, tuple):  # asked again and again by a motion's checks: kept
+        indices = obj.colliders_among(links)
     else:
         asked = {obj.link_index[name]: name for name in links}
         indices = {i: name for i, name in asked.items() if i in obj.colliders}

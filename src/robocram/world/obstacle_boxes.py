@@ -116,13 +116,14 @@ class ObstacleBoxes:
 
 @dataclass(frozen=True)
 class _BodyBoxes:
-    """The bounds of one body's links with shapes."""
+    """The bounds of one body's links with shapes, and its movable joints' values then."""
 
     obj: WorldObject
     indices: tuple[int, ...]
     names: tuple[str, ...]
     low: FloatArray  # (links, 3)
     high: FloatArray  # (links, 3)
+    joints: tuple[float, ...] = ()  # [rad | m] per movable joint (empty: not read)
 
     @classmethod
     def read(cls, world: BoxWorld, obj: WorldObject) -> _BodyBoxes:
@@ -135,8 +136,56 @@ class _BodyBoxes:
         ).reshape(-1, 6)
         return cls(
             obj, tuple(i for i, _ in links), tuple(n for _, n in links),
-            table[:, :3], table[:, 3:],
+            table[:, :3], table[:, 3:], _joint_values(obj, cid),
         )  # fmt: skip
+
+    def moved(self, world: BoxWorld, below: tuple[frozenset[int], ...]) -> _BodyBoxes:
+        """These bounds after the body's joints moved (its pose did not): only the rows
+        ``below`` a joint whose value changed (per movable joint: the rows of the links it
+        moves) are read again. The others' links stand where they stood: the same bounds."""
+        cid = world.physics.client()
+        joints = _joint_values(self.obj, cid)
+        changed = [k for k, (a, b) in enumerate(zip(joints, self.joints, strict=True)) if a != b]
+        rows = sorted(set().union(*(below[k] for k in changed)))
+        low, high = self.low, self.high
+        if rows:
+            low, high = low.copy(), high.copy()
+            for row in rows:
+                low[row], high[row] = pybullet.getAABB(
+                    self.obj.body_id, self.indices[row], physicsClientId=cid
+                )
+        return _BodyBoxes(self.obj, self.indices, self.names, low, high, joints)
+
+
+def _joint_values(obj: WorldObject, cid: int) -> tuple[float, ...]:
+    """The values of a one-body object's movable joints, in their order (empty for an
+    object of several bodies: its bounds are read whole)."""
+    if obj.parts or not obj.movable_joints:
+        return ()
+    slots = [obj.joint_index[name] for name in obj.movable_joints]
+    states = pybullet.getJointStates(obj.body_id, slots, physicsClientId=cid) or ()
+    return tuple(float(state[0]) for state in states)
+
+
+def _rows_below(obj: WorldObject, boxes: _BodyBoxes, cid: int) -> tuple[frozenset[int], ...]:
+    """Per movable joint of a one-body object: the rows of ``boxes`` whose links it moves
+    (its child link and everything below it)."""
+    parent = {
+        i: pybullet.getJointInfo(obj.body_id, i, physicsClientId=cid)[16]
+        for i in range(pybullet.getNumJoints(obj.body_id, physicsClientId=cid))
+    }
+
+    def moves(joint: int, link: int) -> bool:
+        while link >= 0:
+            if link == joint:
+                return True
+            link = parent[link]
+        return False
+
+    return tuple(
+        frozenset(row for row, link in enumerate(boxes.indices) if moves(obj.joint_index[j], link))
+        for j in obj.movable_joints
+    )
 
 
 def _table_stamp(versions: Versions, key: tuple[frozenset[str], tuple[str, ...]]) -> Stamp:
@@ -151,7 +200,11 @@ class KeptObstacleBoxes:
     motion checks and base drives ask for them many times per plan while only the robot
     and what it holds move."""
 
-    _bodies: Derived[str, _BodyBoxes] = field(default_factory=lambda: Derived(Versions.body))
+    _bodies: dict[str, tuple[Stamp, _BodyBoxes]] = field(default_factory=dict)  # per body:
+    # its bounds and the counters they were read at (:meth:`Versions.body`)
+    _below: Derived[str, tuple[frozenset[int], ...]] = field(
+        default_factory=lambda: Derived(Versions.created)
+    )  # per one-body object: per movable joint, the rows of the links it moves
     _tables: Derived[tuple[frozenset[str], tuple[str, ...]], ObstacleBoxes] = field(
         default_factory=lambda: Derived(_table_stamp, size=4)
     )  # the tables last asked for (a motion's checks and IK's skip different bodies)
@@ -163,9 +216,23 @@ class KeptObstacleBoxes:
         objects = [obj for obj in world.objects() if obj.name not in skipped]
 
         def joined() -> ObstacleBoxes:
-            kept = self._bodies
-            rows = [kept.get(o.name, partial(_BodyBoxes.read, world, o), versions) for o in objects]
-            return ObstacleBoxes.joined(skipped, rows)
+            return ObstacleBoxes.joined(skipped, [self._body(world, o) for o in objects])
 
         key = (skipped, tuple(o.name for o in objects))
         return self._tables.get(key, joined, versions)
+
+    def _body(self, world: BoxWorld, obj: WorldObject) -> _BodyBoxes:
+        """``obj``'s bounds: kept while it stays put; after only its joints moved (a
+        drawer opened a step), read again below the joints that changed; else read whole."""
+        stamp = world.versions.body(obj.name)
+        kept = self._bodies.get(obj.name)
+        if kept is not None and kept[0] == stamp:
+            return kept[1]
+        if kept is not None and kept[0][:2] == stamp[:2] and kept[1].joints:
+            cid = world.physics.client()
+            read = partial(_rows_below, obj, kept[1], cid)
+            boxes = kept[1].moved(world, self._below.get(obj.name, read, world.versions))
+        else:
+            boxes = _BodyBoxes.read(world, obj)
+        self._bodies[obj.name] = (stamp, boxes)
+        return boxes

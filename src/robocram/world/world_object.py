@@ -14,6 +14,7 @@ from robocram.world.body_spec import BodySpec
 from robocram.world.link_pair_rows import LinkPairRows
 
 PAIR_ROWS_KEPT = 8  # sets of link pairs whose rows a handle keeps (one per arm and mode)
+ASKED_KEPT = 16  # sets of links whose colliders a handle keeps (per joints, allowed links)
 PART_STRIDE = 1024  # link slots per part: part p's link i (pybullet's index) is p * 1024 + i
 
 
@@ -57,6 +58,9 @@ class WorldObject:
     _pair_rows: dict[tuple[tuple[str, str], ...], LinkPairRows] = field(
         default_factory=dict, init=False, repr=False
     )
+    _asked: dict[tuple[str, ...], dict[int, str]] = field(
+        default_factory=dict, init=False, repr=False
+    )
 
     @property
     def bodies(self) -> tuple[int, ...]:
@@ -86,6 +90,7 @@ class WorldObject:
         self._collider_names = None
         self.colliders = frozenset()
         self._pair_rows.clear()
+        self._asked.clear()
 
     def pair_rows(self, pairs: tuple[tuple[str, str], ...]) -> LinkPairRows:
         """``pairs`` of this body's link names as bounds-table rows, kept per set of pairs."""
@@ -94,6 +99,18 @@ class WorldObject:
             if len(self._pair_rows) >= PAIR_ROWS_KEPT:
                 self._pair_rows.clear()
             found = self._pair_rows[pairs] = LinkPairRows.of(self.link_index, pairs)
+        return found
+
+    def colliders_among(self, links: tuple[str, ...]) -> dict[int, str]:
+        """Index -> name of those of ``links`` that have collision shapes, in their order
+        (the last name of an index given twice): kept per tuple of links, as a motion's
+        checks ask the same ones each time. Do not change the dict returned."""
+        found = self._asked.get(links)
+        if found is None:
+            if len(self._asked) >= ASKED_KEPT:
+                self._asked.clear()
+            asked = {self.link_index[name]: name for name in links}
+            found = self._asked[links] = {i: n for i, n in asked.items() if i in self.colliders}
         return found
 
     def collider_names(self) -> dict[int, str]:

@@ -42,6 +42,7 @@ from robocram.world.joint_state import ClampedJoint, JointLimits, clamp_values
 from robocram.world.pybullet_backend import pybullet
 from robocram.world.versions import Versions
 from robocram.world.world_object import RobotObject, WorldObject
+from robocram.world.written_joints import WrittenJoints
 
 ObjectRef = WorldObject | str
 
@@ -95,6 +96,7 @@ class WorldTables:
         self._owners: dict[int, WorldObject] = {}  # every body id (parts too) -> its object
         self._attachments: dict[str, Attachment] = {}  # by attached object name
         self._holds: dict[str, dict[int, float]] = {}  # robot -> joint index -> held value
+        self._written = WrittenJoints()  # bodies whose joints stand as last written
         self._motors = HeldMotors()  # a robot's held joints need no motor
         self._versions = Versions()  # stamped by every write below
         self._stepping: Derived[None, tuple[list[str], list[str]]] = Derived(_structure)
@@ -226,6 +228,7 @@ class WorldTables:
         self._inertial.pop(handle.name, None)
         self._part_bases.pop(handle.name, None)
         self._holds.pop(handle.name, None)
+        self._written.forget(handle.name)
         self._versions.removed(handle.name)
         if self._hook is not None:
             self._hook.removed(handle, self.robots())
@@ -351,9 +354,12 @@ class WorldTables:
         applied, clamped = clamp_values(values, limits)
         applied.update(self._mimic_values(handle, applied))
         by_index = {handle.joint_index[name]: value for name, value in applied.items()}
-        reset_slots(handle, by_index, self.physics_client())
+        held = self._holds.get(handle.name)
+        if not self._written.already(handle.name, self._versions, held, by_index):
+            reset_slots(handle, by_index, self.physics_client())
         self._versions.jointed(handle.name)
         self._holds.setdefault(handle.name, {}).update(by_index)
+        self._written.wrote(handle.name, self._versions)
         if carry:
             self._follow(handle.name)
         return clamped
@@ -419,6 +425,7 @@ class WorldTables:
             if name not in movable:
                 self._movable_index(handle, name)  # raises the typed error naming it
         self._holds[handle.name] = {handle.joint_index[n]: float(v) for n, v in values.items()}
+        self._written.forget(handle.name)  # the holds are not what PyBullet stands at
 
     def _follow(self, carrier: str) -> None:
         """Re-place the objects attached to ``carrier`` (and theirs, recursively)."""
