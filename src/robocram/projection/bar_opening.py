@@ -15,8 +15,10 @@ from collections.abc import Callable, Iterator
 from dataclasses import replace
 
 from robocram.execution.failures import GripperPathBlocked
+from robocram.grasping.palm import palm_of
 from robocram.kinematics import PlanarBase, solve_ik
 from robocram.kinematics.ik_options import IKOptions
+from robocram.projection.bar_room import curled_fraction
 from robocram.projection.collision_mode import collision_check, putting_back_once
 from robocram.projection.gripper import gripper_of, set_gripper
 from robocram.projection.projected_robot import ProjectedRobot
@@ -33,8 +35,14 @@ REACH_RESTARTS = 30  # IK restarts of the look before a narrower hand moves
 
 def bar_thickness(robot: ProjectedRobot, part: str, handle: str) -> float:
     """[m] the handle's thinnest extent: the bar's thickness the fingers close across."""
+    return bar_extents(robot, part, handle)[0]
+
+
+def bar_extents(robot: ProjectedRobot, part: str, handle: str) -> tuple[float, float]:
+    """[m] the handle's thinnest and longest extents: the bar's thickness and length."""
     low, high = robot.world.contacts.link_aabb(part, handle)
-    return min(h - lo for lo, h in zip(low, high, strict=True))
+    extents = [h - lo for lo, h in zip(low, high, strict=True)]
+    return min(extents), max(extents)
 
 
 def gap_at(robot: ProjectedRobot, arm: str, fraction: float) -> float:
@@ -73,8 +81,13 @@ def bar_fraction(robot: ProjectedRobot, arm: str, width: float) -> float | None:
 
 def bar_opening(robot: ProjectedRobot, arm: str, part: str, handle: str) -> float | None:
     """The fraction to open ``arm``'s hand to for ``handle``'s bar: its thickness plus
-    :data:`BAR_MARGIN`; None when the full opening is no wider."""
-    return bar_fraction(robot, arm, bar_thickness(robot, part, handle) + BAR_MARGIN)
+    :data:`BAR_MARGIN`; None when the full opening is no wider. A palm hand's is measured
+    on its fingers' surfaces round the bar held on its palm (:mod:`bar_room`): the widest
+    opening at which its curled fingers still clear the bar with the margin."""
+    thickness, length = bar_extents(robot, part, handle)
+    if palm_of(robot.description, arm) is not None:
+        return curled_fraction(robot, arm, thickness + BAR_MARGIN, length)
+    return bar_fraction(robot, arm, thickness + BAR_MARGIN)
 
 
 def set_open(robot: ProjectedRobot, arm: str, fraction: float) -> None:
