@@ -5,20 +5,26 @@ from __future__ import annotations
 
 import itertools
 import math
+import warnings
 from collections.abc import Iterator
+from pathlib import Path
 
+import numpy as np
 import pybullet
 import pytest
 
 from robocram.execution.failures import EnvironmentManipulationImpossible
+from robocram.grasping.palm import palm_of
 from robocram.projection import ProjectedRobot, bar_opening
 from robocram.projection.articulation import move_part
+from robocram.robots import draft_description
 from robocram.scenes import KitchenScene, kitchen_scene
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
 
 DRAWER = "drawer_unit_drawer_3"  # the bowl's drawer, its bar handle 2 cm thick
 FACING_NORTH = quat.from_euler(0.0, 0.0, math.pi / 2)
+ARMAR6 = Path(__file__).resolve().parents[1] / "data" / "zoo" / "armar6" / "armar6.urdf"
 
 
 @pytest.fixture()
@@ -139,3 +145,69 @@ def test_the_narrower_hand_is_tried_where_it_frees_the_hold(
     assert asked == [f"{DRAWER}_handle"]
     assert opened and set(opened) == {0.4}  # each hold again, the hand opened that far
     assert scene.world.joint_states("kitchen")[f"{DRAWER}_joint"] == pytest.approx(0.0)
+
+
+def _probe_clearance(robot: ProjectedRobot, fraction: float, width: float, length: float) -> float:
+    """[m] how far the right hand's fingers ``fraction`` open clear a box ``width`` square
+    and ``length`` long, across the fingers at the palm hold of a bar ``width`` thick: raw
+    PyBullet's closest points between the box and each finger link's collision shapes."""
+    world = robot.world
+    cid = world.physics.client()
+    body = world.object(robot.name)
+    palm = palm_of(robot.description, "right")
+    assert palm is not None
+    gripper = robot.arm("right").gripper
+    assert gripper is not None
+    world.set_joint_states(robot.name, gripper.at(fraction))
+    tool = world.link_pose(robot.name, robot.arm("right").tool_frame)
+    axes = quat.from_matrix(np.column_stack([palm.curl, palm.along, palm.across]))
+    at = tool * Pose(palm.holding(width / 2, width / 2, flat=False), axes)
+    shape = pybullet.createCollisionShape(
+        pybullet.GEOM_BOX, halfExtents=[width / 2, width / 2, length / 2], physicsClientId=cid
+    )
+    box = pybullet.createMultiBody(
+        0.0, shape, basePosition=at.position, baseOrientation=at.orientation, physicsClientId=cid
+    )
+    try:
+        return min(
+            p[8]
+            for finger in robot.arm("right").gripper_links
+            for p in pybullet.getClosestPoints(
+                body.body_id, box, 0.05, linkIndexA=body.link_index[finger], physicsClientId=cid
+            )
+        )
+    finally:
+        pybullet.removeBody(box, physicsClientId=cid)
+
+
+def test_a_palm_hands_bar_opening_leaves_the_bar_and_margin_between_its_finger_surfaces(
+    tmp_path: Path,
+) -> None:
+    """Armar6's fingers opened as the bar needs clear it with the margin, measured on their
+    shapes: the widest such opening (a little wider, they enter it); its joint frames'
+    3.2 cm (0.231 of the way) put the first phalanges in the bar itself."""
+    module = tmp_path / "armar6.py"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        module.write_text(draft_description(ARMAR6).source(module), "utf-8")
+        scene = kitchen_scene(str(module))
+    world = scene.world
+    try:
+        robot = ProjectedRobot.of(world, scene.robot)
+        handle = f"{DRAWER}_handle"
+        low, high = pybullet.getAABB(
+            world.object("kitchen").body_id,
+            world.object("kitchen").link_index[handle],
+            physicsClientId=world.physics.client(),
+        )
+        extents = sorted(h - lo for lo, h in zip(low, high, strict=True))
+        thickness, length = extents[0], extents[-1]
+        fraction = bar_opening.bar_opening(robot, "right", "kitchen", handle)
+        assert fraction is not None
+        assert 0.02 < fraction < 0.1  # a nearly closed hand
+        width = thickness + bar_opening.BAR_MARGIN
+        assert _probe_clearance(robot, fraction, width, length) == pytest.approx(0.0, abs=0.001)
+        assert _probe_clearance(robot, fraction + 0.03, width, length) < -0.001
+        assert _probe_clearance(robot, 0.231, thickness, length) < -0.005
+    finally:
+        world.close()
