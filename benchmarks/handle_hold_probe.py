@@ -1,7 +1,8 @@
 """Where a zoo robot's hold of the kitchen bowl drawer's handle fails: reach or collision.
 
 Run: ``.venv/bin/python benchmarks/handle_hold_probe.py NAME [--arm right] [--back 0.6 0.45]
-[--pitch 0 45 90] [--along -0.035 0 0.035] [--out 0] [--travel 0.15] [--restarts 30]``.
+[--pitch 0 45 90] [--along -0.035 0 0.035] [--out 0] [--travel 0.15] [--restarts 30]
+[--opening bar | FRACTION]``.
 
 The robot (a name of ``robot_zoo.CORPUS``, drafted as there) stands facing the drawer,
 ``back`` [m] from its handle, the arm's shoulder in line with it, its arms parked, the
@@ -12,7 +13,9 @@ roll as opening the drawer asks it: the hand may touch the handle only, the base
 within ``travel`` [m] (rad: 3x). A line says whether IK held it, how far its best missed (mm, rad),
 how many solutions met something and the first pair. Then IK without the collision check:
 how deep the robot's links then go into the kitchen other than the handle, so a hold
-refused only by a collision shows as such. Why it is kept: TALOS's miss of 2-4 mm looked
+refused only by a collision shows as such. ``--opening`` opens the fingers only part of
+the way (``bar``: as wide as the bar needs, ``projection.bar_opening``), to see whether a
+narrower hand clears what a fully open one meets. Why it is kept: TALOS's miss of 2-4 mm looked
 like reach (session 30, issue 37); this shows which holds a nearer base reaches and what
 they meet.
 """
@@ -35,6 +38,7 @@ from robocram.motion.part_path import ROLLS, from_above, pull_frame
 from robocram.projection import ProjectedRobot
 from robocram.projection.arm import collision_check
 from robocram.projection.articulation import HANDLE_HALF_WIDTH, _holding, approach_axis
+from robocram.projection.bar_opening import bar_opening, gap_at
 from robocram.projection.gripper import open_gripper
 from robocram.projection.navigation import moved_base
 from robocram.projection.suction import on_the_face
@@ -55,6 +59,7 @@ def main() -> None:
     parser.add_argument("--out", type=float, nargs="+", default=[0.0])
     parser.add_argument("--travel", type=float, default=0.15)
     parser.add_argument("--restarts", type=int, default=30)
+    parser.add_argument("--opening", default="1", help="fraction open, or 'bar'")
     args = parser.parse_args()
     warnings.simplefilter("ignore")
     scene = parked_in_kitchen(args.name, OUT)
@@ -75,9 +80,22 @@ def main() -> None:
             world.set_pose(scene.robot, Pose((x, y, z), facing))
             robot = ProjectedRobot.of(world, scene.robot)
             open_gripper(robot, args.arm)  # as the hand comes to the handle: open
+            _part_way(robot, args.arm, args.opening)
             _probe(robot, args, back, travel)
     finally:
         world.close()
+
+
+def _part_way(robot: ProjectedRobot, arm: str, opening: str) -> None:
+    """Put the fingers ``opening`` of the way open (``bar``: as wide as the bar needs)."""
+    handle = f"{DRAWER}_handle"
+    fraction = bar_opening(robot, arm, "kitchen", handle) if opening == "bar" else float(opening)
+    gripper = robot.arm(arm).gripper
+    if fraction is None or gripper is None:
+        return
+    robot.world.set_joint_states(robot.name, gripper.at(fraction))
+    width = gap_at(robot, arm, fraction) * 1000
+    print(f"opening {fraction:.3f} of full: {width:.1f} mm between the fingers", flush=True)
 
 
 def _probe(
@@ -128,19 +146,20 @@ def _deepest(robot: ProjectedRobot, result: IKResult) -> str:
         if result.base_motion is not None:
             world.set_pose(robot.name, moved_base(robot, result.base_motion))
         world.set_joint_states(robot.name, dict(result.joint_positions))
-        points = [
-            p for p in world.contacts.contact_points(robot.name, "kitchen")
-            if p.link_b != f"{DRAWER}_handle"
-        ]  # fmt: skip
+        every = world.contacts.contact_points(robot.name, "kitchen")
+        points = [p for p in every if p.link_b != f"{DRAWER}_handle"]
+        bar = min((p for p in every if p not in points), key=lambda p: p.distance, default=None)
         moved = math.dist(base.position, world.pose(robot.name).position)
     finally:
         world.set_pose(robot.name, base)
         world.set_joint_states(robot.name, joints)
+    in_bar = "" if bar is None else f" (the bar: {-bar.distance * 1000:.1f} mm {bar.link_a})"
     if not points:
-        return f"clear, the base moved {moved:.2f} m"
+        return f"clear{in_bar}, the base moved {moved:.2f} m"
     worst = min(points, key=lambda p: p.distance)
     return (
-        f"{-worst.distance * 1000:.1f} mm {worst.link_a}/{worst.link_b}, base moved {moved:.2f} m"
+        f"{-worst.distance * 1000:.1f} mm {worst.link_a}/{worst.link_b}{in_bar}, "
+        f"base moved {moved:.2f} m"
     )
 
 

@@ -40,6 +40,7 @@ from robocram.motion.part_path import (
     part_path,
 )
 from robocram.projection.arm import move_tcp
+from robocram.projection.bar_opening import hold_tries, open_to, set_open
 from robocram.projection.errors import ProjectionError
 from robocram.projection.gripper import close_gripper, open_gripper
 from robocram.projection.handle_holds import hold_frames, remember_pitch
@@ -193,9 +194,16 @@ def moving_link(robot: ProjectedRobot, part: str, joint: str) -> str:
 
 
 def _take_handle(
-    robot: ProjectedRobot, arm: str, part: str, handle: str, grasp: Pose, pull: Pose
+    robot: ProjectedRobot,
+    arm: str,
+    part: str,
+    handle: str,
+    grasp: Pose,
+    pull: Pose,
+    opening: float | None = None,
 ) -> bool:
-    """Open the gripper, come from the front, close it on the handle; False if unreachable.
+    """Open the gripper (fully, or ``opening`` of the way: :mod:`bar_opening`), come from
+    the front, close it on the handle; False if unreachable.
 
     Fingers that cannot open where the hand is (under a counter's top) open in front of
     the handle.
@@ -205,10 +213,13 @@ def _take_handle(
     at_handle = held * grasp
     in_front = held * Pose((PRE_GRASP, 0.0, 0.0)) * grasp
     try:
-        opened = _opened(robot, arm)
+        opened = _opened(robot, arm) if opening is None else open_to(robot, arm, opening)
         move_tcp(robot, arm, in_front, move_base=True, base_travel=REACH_TRAVEL, explain=False)
         if not opened:
-            open_gripper(robot, arm)
+            if opening is None:
+                open_gripper(robot, arm)
+            else:
+                set_open(robot, arm, opening)
         checkpoint()
         move_tcp(
             robot, arm, at_handle, HOLD_MODE, move_base=True, base_travel=STEP_TRAVEL,
@@ -275,22 +286,31 @@ def move_part(
         world.attach(name, part, moving_link(robot, part, joint))
     moved: _Held | None = None  # the last roll that moved the part
     try:
-        for pitch, pull in frames:
-            for roll in rolls_for(robot, arm, part, handle):
-                checkpoint()
-                held = _Held(arm, part, joint, handle, _holding(axis, roll, palm), pull)
-                here, now = _RobotAt.now(robot), world.joint_states(part)[joint]
-                reached = _try_roll(robot, held, goal)
-                if abs(reached - goal) <= 1e-9:
-                    robot.held_rolls[(part, handle)] = robot.held_rolls[("", arm)] = roll
-                    remember_pitch(robot, part, handle, pitch)
-                    return ArticulationResult(joint, start, reached, roll, tuple(riders))
-                if abs(reached - now) > 1e-9:  # part of the way: let go, the next roll goes on
-                    opened = _released(robot, held, now)
-                    _let_go(_straight_only(robot), arm, part, handle, held.grasp, pull, opened)
-                    moved = held
-                else:
-                    _back_to_start(robot, held, now, here.base, here.joints)
+        rolls = lambda: rolls_for(robot, arm, part, handle)  # noqa: E731 - read per pitch
+        for pitch, pull, roll, opening in hold_tries(
+            robot,
+            arm,
+            (part, handle),
+            frames,
+            rolls,
+            lambda: moved is None,  # noqa: B023
+            lambda roll: _holding(axis, roll, palm),
+        ):  # ``moved`` read as the tries go: the narrower hand only if nothing moved it
+            checkpoint()
+            grasp = _holding(axis, roll, palm)
+            held = _Held(arm, part, joint, handle, grasp, pull, opening)
+            here, now = _RobotAt.now(robot), world.joint_states(part)[joint]
+            reached = _try_roll(robot, held, goal)
+            if abs(reached - goal) <= 1e-9:
+                robot.held_rolls[(part, handle)] = robot.held_rolls[("", arm)] = roll
+                remember_pitch(robot, part, handle, pitch)
+                return ArticulationResult(joint, start, reached, roll, tuple(riders))
+            if abs(reached - now) > 1e-9:  # part of the way: let go, the next roll goes on
+                opened = _released(robot, held, now)
+                _let_go(_straight_only(robot), arm, part, handle, held.grasp, pull, opened)
+                moved = held
+            else:
+                _back_to_start(robot, held, now, here.base, here.joints)
         if moved is not None:
             _undo(robot, moved, start, first)
     finally:
@@ -321,7 +341,9 @@ def _try_roll(robot: ProjectedRobot, held: _Held, goal: float) -> float:
     value reached (let go of when it is the goal, still held otherwise)."""
     world = robot.world
     start = world.joint_states(held.part)[held.joint]
-    if not _take_handle(robot, held.arm, held.part, held.handle, held.grasp, held.pull):
+    if not _take_handle(
+        robot, held.arm, held.part, held.handle, held.grasp, held.pull, held.opening
+    ):
         return start
     path = part_path(world, held.part, held.joint, held.handle, goal)
     reached = _follow(
@@ -373,7 +395,9 @@ def _undo(robot: ProjectedRobot, moved: _Held, start: float, first: _RobotAt) ->
     """After every roll failed: take the handle again with the last roll that moved the
     part, take it back to ``start`` and the robot to ``first``, as far as motions get
     (where the hand cannot take the handle again, the part stays where it was left)."""
-    if _take_handle(robot, moved.arm, moved.part, moved.handle, moved.grasp, moved.pull):
+    if _take_handle(
+        robot, moved.arm, moved.part, moved.handle, moved.grasp, moved.pull, moved.opening
+    ):
         _back_to_start(robot, moved, start, first.base, first.joints)
 
 
@@ -387,6 +411,7 @@ class _Held:
     handle: str
     grasp: Pose
     pull: Pose
+    opening: float | None = None  # [0-1] the hand opened only this far (a bar's width)
 
 
 def _back_to_start(
