@@ -16,6 +16,7 @@ from the front, they are tried again from above.
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from functools import partial
 
 import numpy as np
 
@@ -286,13 +287,12 @@ def move_part(
         world.attach(name, part, moving_link(robot, part, joint))
     moved: _Held | None = None  # the last roll that moved the part
     try:
-        rolls = lambda: rolls_for(robot, arm, part, handle)  # noqa: E731 - read per pitch
         for pitch, pull, roll, opening in hold_tries(
             robot,
             arm,
             (part, handle),
             frames,
-            rolls,
+            partial(rolls_for, robot, arm, part, handle),  # read per pitch
             lambda: moved is None,  # noqa: B023
             lambda roll: _holding(axis, roll, palm),
         ):  # ``moved`` read as the tries go: the narrower hand only if nothing moved it
