@@ -142,8 +142,8 @@ def _out_of_reach(causes: list[Exception]) -> bool:
 
 
 def _looked_over(failure: PlanFailure, out_of: tuple[str, str] | None) -> bool:
-    """Whether ``failure`` is a look that stopped at the head's tilt limit with the object
-    under the view, at an object in an opened drawer (``out_of``): Armar6's head tilts
+    """Whether ``failure`` is a look that stopped at the head's tilt limit above an object
+    in an opened drawer (``out_of``), in the view's lower edge or under it: Armar6's head tilts
     0.8 rad down at most, and from 0.55 m in front of the bowl's open drawer, the stand
     its arms lift the bowl out from, it needs 1.09 (the bowl in the view's lower edge, not
     within the half that counts as seen); from 0.65 m, where it looks, no lift clears the
