@@ -77,6 +77,7 @@ def _pick_from(
     torso_up: bool = False,
     unseen: bool = False,
     raised: bool = False,
+    over: bool = False,
 ) -> Held:
     """Drive to ``stand``, look at the object (``where``, map), detect it again, pick it
     up (lifting it out of ``out_of``, the opened drawer it lies in, if any). A thing seen
@@ -88,14 +89,18 @@ def _pick_from(
     ``unseen``, a thing whose look stopped at the tilt limit with it outside the view is
     taken where it was seen, if it is still there, and every pick tries nearer pre-grasps
     after the usual (``plans/out_of_view_reach.py``). With ``raised``, a grasp whose closed
-    fingers lay in the surface under the thing is tried again higher (``pick_object``)."""
+    fingers lay in the surface under the thing is tried again higher (``pick_object``).
+    With ``over``, a look that stopped at the tilt limit above a thing in an opened drawer
+    (``out_of``) takes it where it was seen as ``unseen`` does, in the view's lower edge
+    or under it (:func:`_looked_over`)."""
     park_arms()
     (navigate_torso_up if torso_up else navigate)(stand)
     wanted = an.object(type=seen.get("type"), name=seen.get("name"))
     try:
         look_lowering(where)
     except PtuGoalNotReached as failure:
-        if not (unseen and out_of_view(failure) and _still_there(seen, where)):
+        as_seen = (unseen and out_of_view(failure)) or (over and _looked_over(failure, out_of))
+        if not (as_seen and _still_there(seen, where)):
             raise
         blind = an.object(type=seen.get("type"), name=seen.get("name"), pose=where)
         return pick_up_object(
@@ -134,6 +139,16 @@ def _out_of_reach(causes: list[Exception]) -> bool:
     tried = [c for c in causes if isinstance(c, PlanFailure)]
     tried = [c for c in tried if not isinstance(c, NavigationPoseUnreachable)]
     return bool(tried) and all(isinstance(c, ManipulationPoseUnreachable) for c in tried)
+
+
+def _looked_over(failure: PlanFailure, out_of: tuple[str, str] | None) -> bool:
+    """Whether ``failure`` is a look that stopped at the head's tilt limit above an object
+    in an opened drawer (``out_of``), in the view's lower edge or under it: Armar6's head tilts
+    0.8 rad down at most, and from 0.55 m in front of the bowl's open drawer, the stand
+    its arms lift the bowl out from, it needs 1.09 (the bowl in the view's lower edge, not
+    within the half that counts as seen); from 0.65 m, where it looks, no lift clears the
+    drawer. Such a stand is tried last, the thing taken where it was seen."""
+    return out_of is not None and isinstance(failure, PtuGoalNotReached) and failure.below_tilt
 
 
 def _detected(wanted: ObjectDesignator) -> ObjectDesignator | None:
@@ -321,6 +336,7 @@ def fetch(
     hidden: list[tuple[Pose, str | None]] = []  # stands that did not show it in its container
     lowered: list[tuple[Pose, str | None]] = []  # stands refused for the lowered torso only
     tried: list[tuple[Pose, str | None]] = []  # stands whose pick failed
+    below: list[tuple[Pose, str | None]] = []  # stands whose look stopped above it, in a drawer
     robot = current_robot()
     for pose, use_arm in itertools.islice(stands, stand_retries + MAX_BLOCKED):
         try:
@@ -336,6 +352,8 @@ def fetch(
             log.record("fetch", pose, failure)
             if isinstance(failure, PerceptionObjectNotFound) and opened is not None:
                 hidden.append((pose, use_arm))
+            if _looked_over(failure, out_of):
+                below.append((pose, use_arm))
             tried.append((pose, use_arm))
             tries += 1
             if tries >= stand_retries:
@@ -380,6 +398,10 @@ def fetch(
     if tries and opened is None and _suction(robot, arm):  # last: the base turned a
         flank = flank_stands(robot, where, arm)  # quarter, its flank nearer (side touches)
         found = _first_held(flank, picking(), causes, log, stand_retries)
+        if found is not None:
+            return found
+    if below:  # last: a drawer's stands whose look stopped above it, taken where seen
+        found = _first_held(below, picking(unseen=True, over=True), causes, log, len(below))
         if found is not None:
             return found
     raise FetchExhausted(
