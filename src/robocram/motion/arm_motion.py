@@ -44,7 +44,12 @@ from robocram.motion.joint_goal import motion_goal
 from robocram.motion.joint_limits import joint_limits
 from robocram.motion.joint_path import PLANNING_BUDGET, JointPath, plan_joint_path
 from robocram.motion.joint_trajectory import FloatArray, JointTrajectory
-from robocram.motion.segment_check import CheckCounter, first_collision, segment_free
+from robocram.motion.segment_check import (
+    CheckCounter,
+    first_collision,
+    segment_free,
+    start_travel,
+)
 from robocram.motion.self_path_check import SelfPathCheck
 from robocram.motion.time_parameterization import time_parameterize
 from robocram.motion.travel_bound import TravelBound
@@ -214,16 +219,24 @@ def _straight_checker(
     allowed: Collection[str],
     start: list[float],
     pairs: Collection[LinkPair],
-    travel: float,
+    end: list[float],
+    bound: TravelBound,
     hand: HandContact | None = None,
 ) -> BulletScene | CoalClearance | None:
-    """What checks the straight segment from ``start`` (where the robot stands) on which
-    no point moves farther than ``travel`` [m]: None when nothing it may not touch is that
-    near (it is free); the world itself for a short one; else coal's clearances."""
+    """What checks the straight segment from ``start`` (where the robot stands) to
+    ``end``: None when nothing it may not touch is as near as a point of it moves (it is
+    free); the world itself for a short one; else coal's clearances."""
+    travel = bound.travel(np.array(start), np.array(end))
     if travel > LIGHT_TRAVEL:
         return _scene(robot, joints, allowed, start, pairs, hand)
     judge = BulletScene(robot, joints, allowed, allowed_pairs=pairs, hand=hand)
-    if judge.clearance_now(travel + FAST_MARGIN) > travel:
+    clearance = judge.clearance_now(travel + FAST_MARGIN)
+    if clearance > travel:
+        return None
+    # the robot stands at the start: its levers bound the travel tighter (a small step's
+    # joints partly undo each other)
+    tight = clearance > 0.0 and not bound.mimicked
+    if tight and clearance > start_travel(judge, np.array(start), np.array(end), bound):
         return None
     return _judge(robot, joints, allowed, start, pairs, hand, judge)
 
@@ -245,8 +258,7 @@ def _checked_path(
     box = ([lim.lower for lim in limits], [lim.upper for lim in limits])
     own = SelfPathCheck.of(robot, joints)
     _goal_apart(own, end, what)
-    travel = bound.travel(np.array(start), np.array(end))
-    checker = _straight_checker(robot, joints, allowed, start, pairs, travel, hand)
+    checker = _straight_checker(robot, joints, allowed, start, pairs, end, bound, hand)
     try:
         if checker is None:  # nothing of the world near: free at once
             straight = JointPath(joints, (tuple(start), tuple(end)), "straight", 1)

@@ -59,16 +59,21 @@ def _advance_free(
     counter: CheckCounter,
 ) -> bool:
     """Conservative advancement: from each checked configuration, step as far as its
-    clearance allows (no point can travel further than that), at least 1 cm of travel."""
+    clearance allows (no point can travel further than that), at least 1 cm of travel.
+
+    Rigid steps take each link's travel over the whole segment: the rigid bound, or,
+    when the first check's step would not end the walk, the least of it and the bound
+    from the start's levers (:func:`start_travel`: a small hand step's joints partly
+    undo each other, which the rigid levers' sum cannot see)."""
     travel = bound.travel(qa, qb)  # [m] the most any point moves from qa to qb
     if travel <= 0.0:
         return True
-    floor = bound.max_link_travel / travel
     local = (  # reading levers costs a sixth of a check: worth it on long sweeps only
         _LocalSteps.of(checker, qa, qb)
         if travel > LOCAL_LEVERS_FROM and not bound.mimicked and can_tell_levers(checker)
         else None
     )
+    tighten = local is None and not bound.mimicked and can_tell_levers(checker)
     by_link: dict[str, float] = {}  # [m] per link: the most a point of it moves from qa to qb
     reach = checker.reach
     nearby = can_tell_near(checker)
@@ -81,13 +86,16 @@ def _advance_free(
             if local is not None:
                 step, touching = local.bounded_step(near, reach, bound.max_link_travel)
             else:  # rigid steps
-                step, touching = rigid_step(
-                    near, reach, reach / travel,
-                    lambda link: _link_travel(by_link, bound, link, qa, qb),
-                )  # fmt: skip
+                step, touching = _near_step(near, reach, travel, by_link, bound, qa, qb)
+                if tighten and max(step, bound.max_link_travel / travel) < 1.0:
+                    tighten = False  # posed at qa: its levers bound the whole segment
+                    travel = start_travel(checker, qa, qb, bound, by_link)  # type: ignore[arg-type]
+                    if travel <= 0.0:
+                        return not touching or checker.is_free(q)  # nothing that collides moves
+                    step, touching = _near_step(near, reach, travel, by_link, bound, qa, qb)
             if touching and not checker.is_free(q):
                 return False  # the contact check decides, as everywhere
-            s += max(step, floor)
+            s += max(step, bound.max_link_travel / travel)
             if s >= 1.0:
                 return True
             continue
@@ -97,15 +105,81 @@ def _advance_free(
         if local is not None:
             step = local.step(gaps, reach, bound.max_link_travel)
         else:
-            step = reach / travel  # links not named are clear by the reach
-            for link, gap in gaps.items():
-                if link not in by_link:
-                    by_link[link] = bound.link_travel(link, qa, qb)
-                if by_link[link] > 0.0:
-                    step = min(step, gap / by_link[link])
-        s += max(step, floor)
+            step = _gaps_step(gaps, reach, travel, by_link, bound, qa, qb)
+            if tighten and max(step, bound.max_link_travel / travel) < 1.0:
+                tighten = False  # posed at qa: its levers bound the whole segment
+                travel = start_travel(checker, qa, qb, bound, by_link)  # type: ignore[arg-type]
+                if travel <= 0.0:
+                    return True  # nothing that can collide moves
+                step = _gaps_step(gaps, reach, travel, by_link, bound, qa, qb)
+        s += max(step, bound.max_link_travel / travel)
         if s >= 1.0:
             return True
+
+
+def _near_step(
+    near: LabelGaps,
+    reach: float,
+    travel: float,
+    by_link: dict[str, float],
+    bound: TravelBound,
+    qa: FloatArray,
+    qb: FloatArray,
+) -> tuple[float, bool]:
+    """:func:`rigid_step` with each link's travel from ``by_link`` (the rigid bound where
+    it has none)."""
+    return rigid_step(
+        near, reach, reach / travel, lambda link: _link_travel(by_link, bound, link, qa, qb)
+    )
+
+
+def _gaps_step(
+    gaps: dict[str, float],
+    reach: float,
+    travel: float,
+    by_link: dict[str, float],
+    bound: TravelBound,
+    qa: FloatArray,
+    qb: FloatArray,
+) -> float:
+    """The rigid step from every near link's gap over its travel (``by_link``, the rigid
+    bound where it has none); links not named are clear by the reach."""
+    step = reach / travel
+    for link, gap in gaps.items():
+        moved = _link_travel(by_link, bound, link, qa, qb)
+        if moved > 0.0:
+            step = min(step, gap / moved)
+    return step
+
+
+def start_travel(
+    checker: LeverChecker,
+    qa: FloatArray,
+    qb: FloatArray,
+    bound: TravelBound,
+    by_link: dict[str, float] | None = None,
+) -> float:
+    """The most [m] a point of a link that can collide (or of what it holds) moves on the
+    straight segment ``qa`` -> ``qb``, with ``checker`` posed at ``qa``; per link (kept
+    in ``by_link``) the least of two upper bounds of its travel: the rigid one
+    (``bound.link_travel``) and ``V + G / 2`` from the start's levers.
+
+    Why the second is one: a point of the link moves at most ``V(s)`` per unit of the
+    walk at fraction ``s`` (its frame's speed plus its angular speed times its radius,
+    the joints' motions added as vectors), and ``V(s) <= V(0) + G s`` along the whole
+    segment (:class:`_LocalSteps`), so its path is at most ``V(0) + G / 2`` long. Not for
+    joints with mimic followers (the levers do not see them)."""
+    kept = {} if by_link is None else by_link
+    links = checker.lever_links()
+    if not links:
+        return 0.0
+    speeds = checker.link_speeds(links, qb - qa)
+    ends = (speeds + _LocalSteps.of(checker, qa, qb).turn / 2).tolist()
+    most = 0.0
+    for link, end in zip(links, ends, strict=True):
+        found = kept[link] = min(bound.link_travel(link, qa, qb), end)
+        most = max(most, found)
+    return most
 
 
 def _link_travel(

@@ -7,7 +7,10 @@ from the joint's origin to a point below it; that distance is bounded, whatever 
 joints do, by the lengths of the rigid links between (joint origin to joint origin, fixed)
 plus the radius of the far link's geometry about its own frame. A prismatic joint moves
 every point below it by its change. The sum over the joints bounds the travel, so checks
-``resolution`` apart never skip more than ``resolution`` of any link's path.
+``resolution`` apart never skip more than ``resolution`` of any link's path. The sum
+cannot see joints undoing each other (a hand's 2 cm step turns the elbow and the wrist
+opposite ways: 0.13 m by the sum); a walk posed at a segment's start bounds it from the
+levers there too (:func:`~robocram.motion.segment_check.start_travel`, ~3.5x tighter).
 """
 
 from __future__ import annotations
