@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import math
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -15,26 +14,16 @@ from robocram.projection import ProjectedRobot, ProjectionError, simulated_robot
 from robocram.projection.articulation import move_part
 from robocram.scenes import KitchenScene, kitchen_scene
 from robocram.tf import Pose
-from robocram.tf import quaternion as quat
 from robocram.traces import TraceDatabase, trace_to
 from robocram.traces.trajectory_audit import audit_runs
-
-DRAWER = "drawer_unit_drawer_3"  # the top drawer of the unit whose front is at y = 1.9 m
-FACING_NORTH = quat.from_euler(0.0, 0.0, math.pi / 2)
+from tests.projection.drawer_stand import DRAWER, FACING_NORTH, pr2_before_drawer
 
 
 @pytest.fixture()
 def pr2_at_drawer() -> Iterator[tuple[KitchenScene, ProjectedRobot]]:
-    scene = kitchen_scene("pr2")
-    world = scene.world
-    desc = world.robot(scene.robot).description
-    world.set_joint_states(
-        scene.robot, {j: v for a in desc.arms.values() for j, v in a.parking.items()}
-    )
-    handle_x = world.link_pose("kitchen", f"{DRAWER}_handle").position[0]
-    world.set_pose(scene.robot, Pose((handle_x - 0.19, 0.95, 0.0), FACING_NORTH))  # right arm
-    yield scene, ProjectedRobot.of(world, scene.robot)
-    world.close()
+    scene, robot = pr2_before_drawer(0.19, 0.95)
+    yield scene, robot
+    scene.world.close()
 
 
 def test_opening_moves_the_drawer_and_the_bowl_in_it(

@@ -21,24 +21,16 @@ from robocram.robots import draft_description
 from robocram.scenes import KitchenScene, kitchen_scene
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
+from tests.projection.drawer_stand import DRAWER, FACING_NORTH, pr2_before_drawer
 
-DRAWER = "drawer_unit_drawer_3"  # the bowl's drawer, its bar handle 2 cm thick
-FACING_NORTH = quat.from_euler(0.0, 0.0, math.pi / 2)
 ARMAR6 = Path(__file__).resolve().parents[1] / "data" / "zoo" / "armar6" / "armar6.urdf"
 
 
 @pytest.fixture()
 def pr2_at_drawer() -> Iterator[tuple[KitchenScene, ProjectedRobot]]:
-    scene = kitchen_scene("pr2")
-    world = scene.world
-    desc = world.robot(scene.robot).description
-    world.set_joint_states(
-        scene.robot, {j: v for a in desc.arms.values() for j, v in a.parking.items()}
-    )
-    handle_x = world.link_pose("kitchen", f"{DRAWER}_handle").position[0]
-    world.set_pose(scene.robot, Pose((handle_x - 0.19, 0.95, 0.0), FACING_NORTH))  # right arm
-    yield scene, ProjectedRobot.of(world, scene.robot)
-    world.close()
+    scene, robot = pr2_before_drawer(0.19, 0.95)
+    yield scene, robot
+    scene.world.close()
 
 
 def _finger_growth(robot: ProjectedRobot, fraction: float) -> float:

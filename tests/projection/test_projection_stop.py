@@ -32,9 +32,8 @@ from robocram.projection.articulation import move_part
 from robocram.scenes import KitchenScene, kitchen_scene
 from robocram.tf import Pose, PoseStamped
 from robocram.tf import quaternion as quat
+from tests.projection.drawer_stand import DRAWER, pr2_before_drawer
 
-DRAWER = "drawer_unit_drawer_3"
-FACING_NORTH = quat.from_euler(0.0, 0.0, math.pi / 2)
 INSIDE_TORSO = Pose((0.0, 0.0, 0.8), quat.from_euler(0.0, math.pi / 2, 0.0))  # IK fails here
 
 
@@ -56,16 +55,9 @@ class StopAtPoint(Task):
 @pytest.fixture(scope="module")
 def kitchen() -> Iterator[tuple[KitchenScene, ProjectedRobot]]:
     """The PR2 with parked arms in front of the drawer that holds the bowl."""
-    scene = kitchen_scene("pr2")
-    world = scene.world
-    desc = world.robot(scene.robot).description
-    world.set_joint_states(
-        scene.robot, {j: v for a in desc.arms.values() for j, v in a.parking.items()}
-    )
-    handle_x = world.link_pose("kitchen", f"{DRAWER}_handle").position[0]
-    world.set_pose(scene.robot, Pose((handle_x - 0.3, 1.0, 0.0), FACING_NORTH))
-    yield scene, ProjectedRobot.of(world, scene.robot)
-    world.close()
+    scene, robot = pr2_before_drawer(0.3, 1.0)
+    yield scene, robot
+    scene.world.close()
 
 
 def test_a_stop_ends_a_failing_ik_search_between_descents_and_the_arm_stays(
