@@ -56,7 +56,7 @@ typecheck: installed $(ROS_STAMP) $(ROS2_STAMP)
 # WORKERS: xdist's -n (auto: one per core; three on two cores were no faster, session 26).
 # Bytecode is written and read (PYTHONDONTWRITEBYTECODE emptied, if the environment set it):
 # the suite starts many interpreters (xdist's workers, the batch's processes and Ray actors,
-# ROS drivers, CLI runs), and without it each compiled robocram from source (0.6 s each) and
+# ROS drivers, CLI runs), and without it each compiled robocram from source (up to 0.6 s) and
 # each worker rewrote every test module's asserts again (8 s of its 13 s collection).
 # compileall writes src's bytecode on both cores first; the tests' is written by the first run.
 WORKERS ?= auto
