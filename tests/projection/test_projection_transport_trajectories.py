@@ -4,11 +4,13 @@ Each trajectory is judged the moment projection reports it, in the world as it i
 (drawers as the search left them, the mug in the hand), by PyBullet, independently of the
 planner (``trajectory_judge.py``), held objects included. The going test leaves the top
 drawer open between the robot and its goal: the base goes round it or fails naming it.
+The judge and the limits test read the same mug transport of each robot, run once.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -21,40 +23,56 @@ from robocram.motion import JointTrajectory, joint_limits, trajectory_listener
 from robocram.plans.basic_actions import park_arms
 from robocram.plans.transport import transport
 from robocram.projection import simulated_robot
-from robocram.scenes import KitchenScene, kitchen_scene
+from robocram.scenes import kitchen_scene
 from robocram.tf import Pose, PoseStamped
+from robocram.world import World
 
 TABLE = ("kitchen", "table_top")
 
 
-@pytest.fixture(params=["pr2", "hsrb", "boxy"])
-def kitchen(request: pytest.FixtureRequest) -> Iterator[KitchenScene]:
+@dataclass
+class MugTransport:
+    """A robot's kitchen mug transport: the world after it, each trajectory as judged the
+    moment it ran, and every executed trajectory."""
+
+    world: World
+    robot: str
+    judged: list[tuple[str, int]]
+    executed: list[JointTrajectory]
+
+
+@pytest.fixture(scope="module", params=["pr2", "hsrb", "boxy"])
+def mug_transport(
+    request: pytest.FixtureRequest, make_judge: Callable[..., Any]
+) -> Iterator[MugTransport]:
+    """The mug taken to the table, run once for the tests that judge it differently."""
     scene = kitchen_scene(request.param)
-    yield scene
-    scene.world.close()
-
-
-def test_every_motion_of_the_transport_is_collision_free(
-    kitchen: KitchenScene, make_judge: Callable[..., Any]
-) -> None:
-    world = kitchen.world
-    judge = make_judge(world, kitchen.robot)
-    with trajectory_listener(judge), simulated_robot(world, kitchen.robot):
+    world = scene.world
+    judge = make_judge(world, scene.robot)
+    executed: list[JointTrajectory] = []
+    with (
+        trajectory_listener(judge),
+        trajectory_listener(executed.append),
+        simulated_robot(world, scene.robot),
+    ):
         transport("mug", a.location(on=TABLE, for_="mug-1"))
-    kinds = {kind for kind, _ in judge.judged}
+    yield MugTransport(world, scene.robot, judge.judged, executed)
+    world.close()
+
+
+def test_every_motion_of_the_transport_is_collision_free(mug_transport: MugTransport) -> None:
+    world = mug_transport.world
+    kinds = {kind for kind, _ in mug_transport.judged}
     assert {"base", "arm"} <= kinds
-    assert sum(n for _, n in judge.judged) > 100
+    assert sum(n for _, n in mug_transport.judged) > 100
     assert world.bodies.attached_to("mug-1") is None
     low, _ = world.aabb("mug-1")
     assert low[2] == pytest.approx(world.contacts.link_aabb("kitchen", "table_top")[1][2], abs=0.01)
 
 
-def test_trajectories_respect_limits_and_time_runs_forward(kitchen: KitchenScene) -> None:
-    world = kitchen.world
-    executed: list[JointTrajectory] = []
-    with trajectory_listener(executed.append), simulated_robot(world, kitchen.robot):
-        transport("mug", a.location(on=TABLE, for_="mug-1"))
-    desc = world.robot(kitchen.robot).description
+def test_trajectories_respect_limits_and_time_runs_forward(mug_transport: MugTransport) -> None:
+    executed = mug_transport.executed
+    desc = mug_transport.world.robot(mug_transport.robot).description
     assert executed
     for trajectory in executed:
         times = trajectory.times()
