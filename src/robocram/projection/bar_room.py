@@ -41,10 +41,10 @@ SHIFT_STEP = 0.005  # [m] steps out along the fingers for a bar the fist has no 
 
 
 class _Fractions:
-    """The fractions found per (arm, width, length) for one robot model."""
+    """The fractions found per (arm, width, length, shift) for one robot model."""
 
     def __init__(self, model: RobotModel) -> None:
-        self.found: dict[tuple[str, float, float], float | None] = {}
+        self.found: dict[tuple[str, float, float, float], float | None] = {}
 
 
 def room_at(
@@ -72,9 +72,7 @@ def curled_fraction(
     if palm_of(robot.description, arm) is None:
         return None
     model = robot.description.model
-    key = (arm, round(width, 4), round(length, 4))
-    if shift:
-        key = (*key, round(shift, 4))
+    key = (arm, round(width, 4), round(length, 4), round(shift, 4))
     kept = model.derived(_Fractions).found if model is not None else {}
     if key not in kept:
         kept[key] = _search(robot, arm, width, length, shift)
@@ -136,10 +134,11 @@ def _probe(
     gripper = gripper_of(robot, arm)
     states = world.joint_states(robot.name)
     before = {j: states[j] for j in gripper.names}
-    held = tuple(
+    x, y, z = (
         h + shift * a
         for h, a in zip(palm.holding(width / 2, width / 2, flat=False), palm.along, strict=True)
     )
+    held = (x, y, z)
     axes = quat.from_matrix(np.column_stack([palm.curl, palm.along, palm.across]))
     tool = world.link_pose(robot.name, robot.arm(arm).tool_frame)
     world.add_box(PROBE, (width, width, length), tool * Pose(held, axes))
