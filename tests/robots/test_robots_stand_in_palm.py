@@ -51,10 +51,10 @@ def _turned(xyz: tuple[float, float, float], turn: float) -> tuple[float, float,
     return (c * xyz[0] - s * xyz[1], s * xyz[0] + c * xyz[1], xyz[2])
 
 
-def _hand_urdf(thumb: bool = True, turn: float = 0.0) -> str:
-    """An arm, a palm on a wrist joint, four two-link fingers in a row, a two-link thumb
-    (``thumb``) and a bare tool frame, the palm's children turned ``turn`` [rad] about its
-    z; no mesh file exists."""
+def _hand_urdf(thumb: bool = True, turn: float = 0.0, links: int = 2) -> str:
+    """An arm, a palm on a wrist joint, four fingers in a row, a thumb (``thumb``), each of
+    ``links`` links, and a bare tool frame, the palm's children turned ``turn`` [rad] about
+    its z; no mesh file exists."""
     tool = _joint("tool_joint", "palm", "tool", _turned(TOOL, turn), "fixed")
     parts = ['<robot name="hand">', '<link name="arm"><visual><geometry>',
              '<box size="0.05 0.05 0.05"/></geometry></visual></link>', _mesh_link("palm"),
@@ -64,9 +64,11 @@ def _hand_urdf(thumb: bool = True, turn: float = 0.0) -> str:
     if thumb:
         chains.append(("thumb", THUMB))
     for name, at in chains:
-        parts += [_mesh_link(f"{name}_1"), _mesh_link(f"{name}_2")]
+        parts.append(_mesh_link(f"{name}_1"))
         parts.append(_joint(f"{name}_base", "palm", f"{name}_1", _turned(at, turn), "revolute"))
-        parts.append(_joint(f"{name}_mid", f"{name}_1", f"{name}_2", (0.04, 0, 0), "revolute"))
+        if links > 1:
+            parts.append(_mesh_link(f"{name}_2"))
+            parts.append(_joint(f"{name}_mid", f"{name}_1", f"{name}_2", (0.04, 0, 0), "revolute"))
     return "\n".join([*parts, "</robot>"])
 
 
@@ -134,12 +136,14 @@ def test_a_palms_box_is_a_plate_over_its_finger_row_and_thumb(tmp_path: Path) ->
     assert low[1] > children["tool"][1] + 0.04  # the tool frame lies well outside it
 
 
-def test_fingers_in_a_row_without_a_thumb_keep_the_box_over_their_joints(
-    tmp_path: Path,
+@pytest.mark.parametrize(("thumb", "links"), [(False, 2), (True, 1)])
+def test_no_thumb_or_no_finger_chains_keep_the_box_over_the_joints(
+    tmp_path: Path, thumb: bool, links: int
 ) -> None:
-    """No thumb off the row (a parallel gripper's knuckles lie in one): no plate, the box
-    spans the link's frame and its children with a body, the bare frame left out."""
-    urdf = _hand_urdf(thumb=False)
+    """No thumb off the row (a parallel gripper's knuckles lie in one), or children of one
+    link each (a base's wheels and a mast): no plate, the box spans the link's frame and
+    its children with a body, the bare frame left out."""
+    urdf = _hand_urdf(thumb=thumb, links=links)
     children = _origins(urdf, "palm")
     spanned = [(0.0, 0.0, 0.0), *(o for c, o in children.items() if c != "tool")]
     thickness = THICKNESS_SHARE * WRIST

@@ -5,7 +5,8 @@ their joints fills the room before the palm where a held thing lies: Armar6's pa
 reached its thumb's base 4.7 cm off the palm, and the rim of the bowl the palm held was
 28 mm inside it (5 mm allowed). The palm's body is the plate through the link's own frame
 (the wrist) and the finger row; the thumb's base counts where it lies on that plate (the
-thumb's own links reach out from it). A link is a palm when at least
+thumb's own links reach out from it). A link whose children with a body each start a
+chain of links (``stand_in_size.py`` asks) is a palm when at least
 :data:`MIN_ROW_FINGERS` of its children with a body lie on a line (within
 :data:`ROW_STRAIGHTNESS` of the row's length) and one more, the thumb, lies at least
 :data:`THUMB_OFFSET` of that length off it.

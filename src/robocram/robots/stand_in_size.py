@@ -9,7 +9,8 @@ does not sink it into a box of the column below (Armar6's platform reached its n
 A child with no body (a frame: no shape on it or below it) is left out of the span when
 a child with a body is there: Armar6's palm box reached its tool frame 7 cm before the
 palm, where a held thing lies (a head whose children are all camera frames still spans
-them). A palm, a finger row and a thumb, is a plate (``robots/stand_in_palm.py``).
+them). A palm, a finger row and a thumb (each a chain of links: a base's row of wheels is
+none), is a plate (``robots/stand_in_palm.py``).
 Placeholder inertias (``ixx = 1``) gave boxes of several metres that made every check fail
 far from the cause; nothing here reads the inertia, and no box is longer than the robot's
 own span.
@@ -70,7 +71,8 @@ def stand_in_boxes(
         if length <= 0.0:
             thickness = LONE_THICKNESS
         bases = [_nearest(j) for j in spanned.get(link, [])]
-        plate = palm_plate(bases)
+        fingers = all(j.child in children for j in spanned.get(link, []))  # chains, no wheels
+        plate = palm_plate(bases) if fingers else None
         if plate is not None:
             boxes[link] = _plate_box(plate.points, plate.axes, thickness, span)
             continue
