@@ -139,10 +139,13 @@ def test_the_narrower_hand_is_tried_where_it_frees_the_hold(
     assert scene.world.joint_states("kitchen")[f"{DRAWER}_joint"] == pytest.approx(0.0)
 
 
-def _probe_clearance(robot: ProjectedRobot, fraction: float, width: float, length: float) -> float:
+def _probe_clearance(
+    robot: ProjectedRobot, fraction: float, width: float, length: float, shift: float = 0.0
+) -> float:
     """[m] how far the right hand's fingers ``fraction`` open clear a box ``width`` square
-    and ``length`` long, across the fingers at the palm hold of a bar ``width`` thick: raw
-    PyBullet's closest points between the box and each finger link's collision shapes."""
+    and ``length`` long, across the fingers at the palm hold of a bar ``width`` thick
+    (``shift`` [m] further out along the fingers): raw PyBullet's closest points between
+    the box and each finger link's collision shapes."""
     world = robot.world
     cid = world.physics.client()
     body = world.object(robot.name)
@@ -153,7 +156,8 @@ def _probe_clearance(robot: ProjectedRobot, fraction: float, width: float, lengt
     world.set_joint_states(robot.name, gripper.at(fraction))
     tool = world.link_pose(robot.name, robot.arm("right").tool_frame)
     axes = quat.from_matrix(np.column_stack([palm.curl, palm.along, palm.across]))
-    at = tool * Pose(palm.holding(width / 2, width / 2, flat=False), axes)
+    held = np.add(palm.holding(width / 2, width / 2, flat=False), np.multiply(shift, palm.along))
+    at = tool * Pose((float(held[0]), float(held[1]), float(held[2])), axes)
     shape = pybullet.createCollisionShape(
         pybullet.GEOM_BOX, halfExtents=[width / 2, width / 2, length / 2], physicsClientId=cid
     )
@@ -176,8 +180,10 @@ def test_a_palm_hands_bar_opening_leaves_the_bar_and_margin_between_its_finger_s
     tmp_path: Path,
 ) -> None:
     """Armar6's fingers opened as the bar needs clear it with the margin, measured on their
-    shapes: the widest such opening (a little wider, they enter it); its joint frames'
-    3.2 cm (0.231 of the way) put the first phalanges in the bar itself."""
+    shapes: the widest such opening (a little wider, they enter it). Its palm's stand-in is
+    a plate (``robots/stand_in_palm.py``), which puts the bar at the knuckles, where even
+    the fist's phalanges lie in it: the bar is held out along the fingers, at the nearest
+    place the fist clears it (zoo28; the palm box, 7 cm out, had held it there)."""
     module = tmp_path / "armar6.py"
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
@@ -194,12 +200,18 @@ def test_a_palm_hands_bar_opening_leaves_the_bar_and_margin_between_its_finger_s
         )
         extents = sorted(h - lo for lo, h in zip(low, high, strict=True))
         thickness, length = extents[0], extents[-1]
-        fraction = bar_opening.bar_opening(robot, "right", "kitchen", handle)
-        assert fraction is not None
-        assert 0.02 < fraction < 0.1  # a nearly closed hand
         width = thickness + bar_opening.BAR_MARGIN
-        assert _probe_clearance(robot, fraction, width, length) == pytest.approx(0.0, abs=0.001)
-        assert _probe_clearance(robot, fraction + 0.03, width, length) < -0.001
-        assert _probe_clearance(robot, 0.231, thickness, length) < -0.005
+        assert bar_opening.bar_opening(robot, "right", "kitchen", handle) is None
+        assert _probe_clearance(robot, 0.0, width, length) < 0.0  # the fist in the bar
+        found = bar_opening.fingers_hold(robot, "right", "kitchen", handle)
+        assert found is not None
+        back, fraction = found
+        shift = math.dist(back.position, (0.0, 0.0, 0.0))
+        assert 0.0 < shift < 0.08  # on the first phalanges
+        assert _probe_clearance(robot, 0.0, width, length, shift - 0.005) < 0.0  # the nearest
+        assert 0.0 <= fraction < 0.3  # a curled hand
+        clear = _probe_clearance(robot, fraction, width, length, shift)
+        assert clear == pytest.approx(0.0, abs=0.001)
+        assert _probe_clearance(robot, fraction + 0.03, width, length, shift) < -0.001
     finally:
         world.close()

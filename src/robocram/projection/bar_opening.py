@@ -7,6 +7,11 @@ it. The opening is the bar's thickness (the smallest extent of the handle link's
 plus :data:`BAR_MARGIN`, as the gripper description measures its widest gap
 (``robots.derived_values.widest_opening``) at each fraction of the way open; the fraction
 is found by bisection.
+
+Last of all, a palm hand whose fist has no room round the bar held on its palm (a thin
+palm plate puts the bar at the knuckles) takes it further out along its fingers, curled
+round it (:func:`fingers_hold`): after every other hold, so a hand that holds today
+holds as before.
 """
 
 from __future__ import annotations
@@ -18,7 +23,7 @@ from robocram.execution.failures import GripperPathBlocked
 from robocram.grasping.palm import palm_of
 from robocram.kinematics import PlanarBase, solve_ik
 from robocram.kinematics.ik_options import IKOptions
-from robocram.projection.bar_room import curled_fraction
+from robocram.projection.bar_room import curled_fraction, fingers_shift
 from robocram.projection.collision_mode import collision_check, putting_back_once
 from robocram.projection.gripper import gripper_of, set_gripper
 from robocram.projection.projected_robot import ProjectedRobot
@@ -91,6 +96,27 @@ def bar_opening(robot: ProjectedRobot, arm: str, part: str, handle: str) -> floa
     return bar_fraction(robot, arm, thickness + BAR_MARGIN)
 
 
+def fingers_hold(
+    robot: ProjectedRobot, arm: str, part: str, handle: str
+) -> tuple[Pose, float] | None:
+    """Where a palm hand whose fist has no room round ``handle``'s bar on its palm holds it
+    in its fingers: the tool's shift (tool frame) from the palm hold and the fraction
+    open; None for any other hand, or where no place along the fingers has room."""
+    palm = palm_of(robot.description, arm)
+    if palm is None:
+        return None
+    thickness, length = bar_extents(robot, part, handle)
+    width = thickness + BAR_MARGIN
+    shift = fingers_shift(robot, arm, width, length)
+    if shift is None:
+        return None
+    fraction = curled_fraction(robot, arm, width, length, shift)
+    if fraction is None:
+        return None
+    x, y, z = (-shift * a for a in palm.along)  # the tool back: the bar further out
+    return Pose((x, y, z)), fraction
+
+
 def set_open(robot: ProjectedRobot, arm: str, fraction: float) -> None:
     """Open (or close) ``arm``'s fingers to ``fraction`` of the way open.
 
@@ -161,7 +187,9 @@ def hold_tries(
     (opening None), as ever; then, only if ``untouched()`` (no hold moved the part) and the
     hand opens wider than the bar needs, each again with the hand opened just that wide
     (:func:`bar_opening`), where that frees the hold (:func:`narrowing_frees`;
-    ``grasp(roll)``: the tool in the frame)."""
+    ``grasp(roll)``: the tool in the frame); then, still untouched, a palm hand with no
+    room round the bar on its palm holds it in its fingers (:func:`fingers_hold`: the
+    frame moved so), where IK reaches that."""
     for pitch, frame in frames:
         for roll in rolls():
             yield pitch, frame, roll, None
@@ -169,10 +197,23 @@ def hold_tries(
         return
     part, link = handle
     opening = bar_opening(robot, arm, part, link)
-    if opening is None:
+    if opening is not None:
+        for pitch, frame in frames:
+            for roll in rolls():
+                at_handle = robot.world.link_pose(part, link) * frame * grasp(roll)
+                if narrowing_frees(robot, arm, at_handle, f"{part}/{link}", opening):
+                    yield pitch, frame, roll, opening
         return
+    if not untouched():
+        return
+    found = fingers_hold(robot, arm, part, link)
+    if found is None:
+        return
+    shift, fraction = found
     for pitch, frame in frames:
         for roll in rolls():
-            at_handle = robot.world.link_pose(part, link) * frame * grasp(roll)
-            if narrowing_frees(robot, arm, at_handle, f"{part}/{link}", opening):
-                yield pitch, frame, roll, opening
+            held = grasp(roll)
+            moved = frame * held * shift * held.inverse()  # the frame's axes kept
+            at_handle = robot.world.link_pose(part, link) * moved * held
+            if _reaches(robot, arm, at_handle, f"{part}/{link}", fraction):
+                yield pitch, moved, roll, fraction

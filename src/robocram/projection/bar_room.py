@@ -11,6 +11,11 @@ the handle, across the fingers where the hold puts the bar's middle) is put at t
 the fingers are set part of the way open, and the probe's closest points to the fingers'
 links give how far it clears them. The probe and the fingers are put back: the world is
 as it was. A hand and a bar give one answer, kept on the robot's model.
+
+A palm that is a thin plate (Armar6's stand-in, shaped from its finger row) puts the bar
+against the knuckles, where the fist's stand-in phalanges lie in it: no curl clears it.
+Then the bar may be held further out along the fingers (:func:`fingers_shift`), in the
+curl, where the hand held it while its palm box reached 7 cm out.
 """
 
 from __future__ import annotations
@@ -32,13 +37,14 @@ SCAN = 16  # steps from the fist to the open hand, searched for where the bar fi
 # the fingers (they may clear it again nearly straight: Armar6's)
 BISECTIONS = 10  # halvings of a step: 1/16384 of the full opening
 REACH = 0.05  # [m] the farthest clearance read: more is room enough for any bar
+SHIFT_STEP = 0.005  # [m] steps out along the fingers for a bar the fist has no room round
 
 
 class _Fractions:
-    """The fractions found per (arm, width, length) for one robot model."""
+    """The fractions found per (arm, width, length, shift) for one robot model."""
 
     def __init__(self, model: RobotModel) -> None:
-        self.found: dict[tuple[str, float, float], float | None] = {}
+        self.found: dict[tuple[str, float, float, float], float | None] = {}
 
 
 def room_at(
@@ -55,27 +61,50 @@ def room_at(
         return width + 2 * _clearance(robot, arm, fraction)
 
 
-def curled_fraction(robot: ProjectedRobot, arm: str, width: float, length: float) -> float | None:
+def curled_fraction(
+    robot: ProjectedRobot, arm: str, width: float, length: float, shift: float = 0.0
+) -> float | None:
     """The widest fraction open (0 a fist) up to which ``arm``'s curled fingers clear a bar
-    ``width`` [m] thick and ``length`` [m] long held on its palm; None when no palm hand,
-    when even the fist leaves it no room, or when the fingers clear it all the way open
-    (nothing to narrow). Kept per model, arm and bar."""
+    ``width`` [m] thick and ``length`` [m] long held on its palm (``shift`` [m] further out
+    along the fingers); None when no palm hand, when even the fist leaves it no room, or
+    when the fingers clear it all the way open (nothing to narrow). Kept per model, arm
+    and bar."""
     if palm_of(robot.description, arm) is None:
         return None
     model = robot.description.model
-    key = (arm, round(width, 4), round(length, 4))
+    key = (arm, round(width, 4), round(length, 4), round(shift, 4))
     kept = model.derived(_Fractions).found if model is not None else {}
     if key not in kept:
-        kept[key] = _search(robot, arm, width, length)
+        kept[key] = _search(robot, arm, width, length, shift)
     return kept[key]
 
 
-def _search(robot: ProjectedRobot, arm: str, width: float, length: float) -> float | None:
+def fingers_shift(robot: ProjectedRobot, arm: str, width: float, length: float) -> float | None:
+    """[m] how far out along ``arm``'s fingers from its palm hold a bar ``width`` thick is
+    held where the palm hold leaves a fist no room round it: the nearest of
+    :data:`SHIFT_STEP` steps, up to the fingers' reach, at which the curled fingers clear
+    it (:func:`curled_fraction` there); None when the palm hold has room, or none has."""
+    palm = palm_of(robot.description, arm)
+    if palm is None:
+        return None
+    with _probe(robot, arm, palm, width, length):
+        if _clearance(robot, arm, 0.0) >= 0.0:
+            return None  # the palm hold has room: :func:`curled_fraction` says how much
+    for step in range(1, int(palm.reach / SHIFT_STEP) + 1):
+        shift = step * SHIFT_STEP
+        if curled_fraction(robot, arm, width, length, shift) is not None:
+            return shift
+    return None
+
+
+def _search(
+    robot: ProjectedRobot, arm: str, width: float, length: float, shift: float = 0.0
+) -> float | None:
     """:func:`curled_fraction` measured: the first of :data:`SCAN` steps from the fist at
     which the fingers meet the probe, then bisection back to where they just clear it."""
     palm = palm_of(robot.description, arm)
     assert palm is not None  # asked by curled_fraction only
-    with _probe(robot, arm, palm, width, length):
+    with _probe(robot, arm, palm, width, length, shift):
         if _clearance(robot, arm, 0.0) < 0.0:
             return None
         fits = 0.0
@@ -97,14 +126,19 @@ def _search(robot: ProjectedRobot, arm: str, width: float, length: float) -> flo
 
 @contextmanager
 def _probe(
-    robot: ProjectedRobot, arm: str, palm: Palm, width: float, length: float
+    robot: ProjectedRobot, arm: str, palm: Palm, width: float, length: float, shift: float = 0.0
 ) -> Iterator[None]:
-    """The probe bar at ``arm``'s hand for the block, the fingers put back after it."""
+    """The probe bar at ``arm``'s hand (``shift`` [m] out along the fingers from the palm
+    hold) for the block, the fingers put back after it."""
     world = robot.world
     gripper = gripper_of(robot, arm)
     states = world.joint_states(robot.name)
     before = {j: states[j] for j in gripper.names}
-    held = palm.holding(width / 2, width / 2, flat=False)
+    x, y, z = (
+        h + shift * a
+        for h, a in zip(palm.holding(width / 2, width / 2, flat=False), palm.along, strict=True)
+    )
+    held = (x, y, z)
     axes = quat.from_matrix(np.column_stack([palm.curl, palm.along, palm.across]))
     tool = world.link_pose(robot.name, robot.arm(arm).tool_frame)
     world.add_box(PROBE, (width, width, length), tool * Pose(held, axes))

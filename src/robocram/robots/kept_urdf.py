@@ -28,6 +28,7 @@ _BUILT_BY = (
     "robocram.robots.urdf_reader",
     "robocram.robots.safe_xml",
     "robocram.robots.urdf_elements",
+    "robocram.robots.stand_in_palm",
     "robocram.robots.stand_in_size",
     "robocram.robots.package_resolver",
     "robocram.tf.pose",

@@ -6,6 +6,11 @@ the chain (a palm is thinner than an upper arm). A child that slides (a prismati
 counts where its travel comes nearest the link's frame, if nearer than its origin: the
 link's body ends where the child's begins at that end of the travel, so lowering a torso
 does not sink it into a box of the column below (Armar6's platform reached its neck).
+A child with no body (a frame: no shape on it or below it) is left out of the span when
+a child with a body is there: Armar6's palm box reached its tool frame 7 cm before the
+palm, where a held thing lies (a head whose children are all camera frames still spans
+them). A palm, a finger row and a thumb (each a chain of links: a base's row of wheels is
+none), is a plate (``robots/stand_in_palm.py``).
 Placeholder inertias (``ixx = 1``) gave boxes of several metres that made every check fail
 far from the cause; nothing here reads the inertia, and no box is longer than the robot's
 own span.
@@ -14,11 +19,13 @@ own span.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
+from numpy.typing import NDArray
 
+from robocram.robots.stand_in_palm import palm_plate
 from robocram.robots.urdf_elements import Geometry, Joint
 from robocram.tf import Pose
 
@@ -45,27 +52,74 @@ def is_stand_in(geometry: Geometry) -> bool:
     return geometry.kind == "box" and bool(geometry.filename)
 
 
-def stand_in_boxes(joints: Mapping[str, Joint]) -> dict[str, StandInBox]:
-    """Per link named by a joint: the box that stands in for its missing mesh."""
+def stand_in_boxes(
+    joints: Mapping[str, Joint], bodied: Collection[str] | None = None
+) -> dict[str, StandInBox]:
+    """Per link named by a joint: the box that stands in for its missing mesh. ``bodied``:
+    the links with a shape (None: every link), so frames are told from bodies."""
     children: dict[str, list[Joint]] = {}
     parent_of: dict[str, Joint] = {}
     for joint in joints.values():
         children.setdefault(joint.parent, []).append(joint)
         parent_of[joint.child] = joint
+    spanned = children if bodied is None else _without_frames(children, set(bodied))
     span = _span(joints, parent_of)
     boxes: dict[str, StandInBox] = {}
     for link in {*children, *parent_of}:
-        points = [(0.0, 0.0, 0.0), *(_nearest(j) for j in children.get(link, []))]
-        length = _length(link, parent_of, children)
+        length = _length(link, parent_of, children)  # a tool frame tells a hand's scale too
         thickness = min(max(THICKNESS_SHARE * length, MIN_THICKNESS), MAX_THICKNESS)
         if length <= 0.0:
             thickness = LONE_THICKNESS
+        bases = [_nearest(j) for j in spanned.get(link, [])]
+        fingers = all(j.child in children for j in spanned.get(link, []))  # chains, no wheels
+        plate = palm_plate(bases) if fingers else None
+        if plate is not None:
+            boxes[link] = _plate_box(plate.points, plate.axes, thickness, span)
+            continue
+        points = [(0.0, 0.0, 0.0), *bases]
         low = [min(p[i] for p in points) for i in range(3)]
         high = [max(p[i] for p in points) for i in range(3)]
         size = tuple(min(high[i] - low[i] + thickness, span) for i in range(3))
         centre = Pose(tuple((low[i] + high[i]) / 2 for i in range(3)))  # type: ignore[arg-type]
         boxes[link] = StandInBox(centre, size)  # type: ignore[arg-type]
     return boxes
+
+
+def _without_frames(
+    children: Mapping[str, list[Joint]], bodied: set[str]
+) -> dict[str, list[Joint]]:
+    """``children`` less the frames (no shape on the child or below it) of each link that
+    has a child with a body; a link whose children are all frames keeps them."""
+
+    def has_body(link: str, seen: frozenset[str] = frozenset()) -> bool:
+        if link in bodied:
+            return True
+        below = [j.child for j in children.get(link, []) if j.child not in seen]
+        return any(has_body(child, seen | {link}) for child in below)
+
+    kept: dict[str, list[Joint]] = {}
+    for link, joints in children.items():
+        bodies = [j for j in joints if has_body(j.child)]
+        kept[link] = bodies if bodies else list(joints)
+    return kept
+
+
+def _plate_box(
+    points: Sequence[tuple[float, float, float]],
+    axes: NDArray[np.float64],
+    thickness: float,
+    span: float,
+) -> StandInBox:
+    """The box spanning ``points`` [m, link frame] in the plate's ``axes`` (rows), as thick
+    as ``thickness`` past them on every side, no longer than ``span``."""
+    local = np.asarray(points, float) @ axes.T
+    low, high = local.min(axis=0), local.max(axis=0)
+    size = tuple(min(float(high[i] - low[i]) + thickness, span) for i in range(3))
+    middle = axes.T @ ((low + high) / 2)
+    frame = np.eye(4)
+    frame[:3, :3] = axes.T
+    frame[:3, 3] = middle
+    return StandInBox(Pose.from_matrix(frame), size)  # type: ignore[arg-type]
 
 
 def _length(

@@ -341,7 +341,12 @@ def read_urdf(
     ]
     for joint_name, _ in dangling:
         joints[joint_name] = replace(joints[joint_name], mimic=None)
-    reader.stand_in_boxes = stand_in_boxes(joints)
+    bodied = {
+        node.attrib.get("name", "")
+        for node in root.findall("link")
+        if node.findall("visual") or node.findall("collision")
+    }
+    reader.stand_in_boxes = stand_in_boxes(joints, bodied)
     for node in root.findall("link"):
         link = reader.link(node)
         if link.name in links:

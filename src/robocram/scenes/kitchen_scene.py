@@ -38,6 +38,7 @@ DRAFTED_BY = (
     "robocram.robots.package_resolver",
     "robocram.robots.robot_model",
     "robocram.robots.safe_xml",
+    "robocram.robots.stand_in_palm",
     "robocram.robots.stand_in_size",
     "robocram.robots.urdf_elements",
     "robocram.robots.urdf_reader",
