@@ -22,9 +22,13 @@ from __future__ import annotations
 import json
 from collections.abc import Iterator, Mapping, Sequence
 from pathlib import Path
-from typing import Protocol, TypeVar
+from typing import TYPE_CHECKING, Protocol, TypeVar
 
 import pytest
+
+if TYPE_CHECKING:  # imported when first asked for: a plain test run loads no robocram here
+    from robocram.robots import RobotDescription
+    from tests.kitchen_transports import KitchenTransport, Transports
 
 TESTS = Path(__file__).resolve().parent
 GROUPS = {"batch": "batch", "viewer": "viewer"}  # folder -> group
@@ -113,3 +117,24 @@ def _split_group(nodeid: str) -> tuple[str, str]:
         plain, _, group = nodeid.rpartition("@")
         return plain, group
     return nodeid, nodeid
+
+
+@pytest.fixture(scope="session")
+def kitchen_transports(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Transports]:
+    """``(robot, kind)`` -> its kitchen transport, run once for the session and kept open
+    till its end (the modules using it carry ``kitchen_transports.SHARED``: one worker
+    runs them)."""
+    from tests.kitchen_transports import kitchen_transport, transport_key
+
+    folder = tmp_path_factory.mktemp("kitchen_transports")
+    done: dict[tuple[str, str], KitchenTransport] = {}
+
+    def of(robot: str | RobotDescription, kind: str) -> KitchenTransport:
+        key = transport_key(robot, kind)
+        if key not in done:
+            done[key] = kitchen_transport(folder, robot, kind)
+        return done[key]
+
+    yield of
+    for run in done.values():
+        run.world.close()

@@ -3,36 +3,22 @@
 The mug goes from the north counter to the table; afterwards the KB says it rests on the
 kitchen's table top and stays put when simulated, the arms are parked and any drawer the
 search opened is closed again. On the PR2 and the HSR the bowl comes out of the top drawer
-too.
+too. Each transport is the session's run, judged by other modules too
+(``tests/kitchen_transports.py``).
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator
 
 import pytest
 
-from robocram.designators import a
-from robocram.plans.transport import TransportResult, transport
-from robocram.projection import simulated_robot
-from robocram.scenes import KitchenScene, kitchen_scene
 from robocram.world import World
+from tests.kitchen_transports import SHARED, Transports
 
 TABLE = ("kitchen", "table_top")
 DRAWER_JOINT = "drawer_unit_drawer_3_joint"
-
-
-@pytest.fixture(params=["pr2", "hsrb", "boxy"])
-def kitchen(request: pytest.FixtureRequest) -> Iterator[KitchenScene]:
-    scene = kitchen_scene(request.param)
-    yield scene
-    scene.world.close()
-
-
-def _transport(scene: KitchenScene, object_type: str, item: str) -> TransportResult:
-    with simulated_robot(scene.world, scene.robot):
-        return transport(object_type, a.location(on=TABLE, for_=item))
+pytestmark = SHARED  # its transports are other modules' too
 
 
 def _on_the_table(world: World, item: str) -> None:
@@ -68,26 +54,30 @@ def _arms_parked(world: World, robot: str) -> None:
             assert off == pytest.approx(0.0, abs=0.01), (name, joint, joints[joint], value)
 
 
-def test_the_mug_goes_from_the_counter_to_the_table(kitchen: KitchenScene) -> None:
-    world = kitchen.world
-    result = _transport(kitchen, "mug", "mug-1")
+@pytest.mark.parametrize("robot", ["pr2", "hsrb", "boxy"])
+def test_the_mug_goes_from_the_counter_to_the_table(
+    kitchen_transports: Transports, robot: str
+) -> None:
+    run = kitchen_transports(robot, "mug")
+    world, result = run.world, run.done
     assert result.object_name == "mug-1"
     _on_the_table(world, "mug-1")
     assert world.pose("mug-1").position[:2] == pytest.approx(result.spot.position[:2], abs=0.03)
-    _arms_parked(world, kitchen.robot)
+    _arms_parked(world, run.robot)
     assert result.opened == []  # the mug stands on a counter: nothing to open
     assert world.joint_states("kitchen")[DRAWER_JOINT] == pytest.approx(0.0, abs=0.01)
 
 
 @pytest.mark.parametrize("robot", ["pr2", "hsrb"])
-def test_the_bowl_comes_out_of_the_drawer_to_the_table(robot: str) -> None:
+def test_the_bowl_comes_out_of_the_drawer_to_the_table(
+    kitchen_transports: Transports, robot: str
+) -> None:
     """The HSR sees into the opened drawer from beside it, not from the handle stand (its
     camera too low over the drawer's front) nor from a metre away (over the drawer's side
     it saw 67 % of the bowl); its parking pose, hitting the head still turned down at the
     drawer with the lift up, is taken after it looks ahead."""
-    scene = kitchen_scene(robot)
-    world = scene.world
-    result = _transport(scene, "bowl", "bowl-1")
+    run = kitchen_transports(robot, "bowl")
+    world, result = run.world, run.done
     assert [o.container.link for o in result.opened] == ["drawer_unit_drawer_3"]
     assert [a.stage for a in result.log.attempts if a.succeeded] == [
         "open",
@@ -97,5 +87,4 @@ def test_the_bowl_comes_out_of_the_drawer_to_the_table(robot: str) -> None:
     ]
     _on_the_table(world, "bowl-1")
     assert world.joint_states("kitchen")[DRAWER_JOINT] == pytest.approx(0.0, abs=0.01)
-    _arms_parked(world, scene.robot)
-    world.close()
+    _arms_parked(world, run.robot)

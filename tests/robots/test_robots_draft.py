@@ -11,6 +11,7 @@ import shutil
 import subprocess
 import sys
 import warnings
+from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
@@ -51,10 +52,28 @@ def _draft(urdf: Path) -> DraftDescription:
         return draft_description(urdf)
 
 
-def _builtin(name: str) -> tuple[LoadedDescription, LoadedDescription]:
+Drafts = Callable[[Path], DraftDescription]
+
+
+@pytest.fixture(scope="module")
+def drafts() -> Drafts:
+    """A URDF's draft, made once for the module's tests: two or three of them drafted each
+    built-in robot's URDF again (a draft is frozen)."""
+    done: dict[Path, DraftDescription] = {}
+
+    def of(urdf: Path) -> DraftDescription:
+        key = urdf.resolve()
+        if key not in done:
+            done[key] = _draft(urdf)
+        return done[key]
+
+    return of
+
+
+def _builtin(name: str, drafts: Drafts) -> tuple[LoadedDescription, LoadedDescription]:
     """The built-in robot and the draft of its URDF, both loaded."""
     builtin = load_description(name)
-    return builtin, load_description(_draft(Path(builtin_description(name).urdf)).description)
+    return builtin, load_description(drafts(Path(builtin_description(name).urdf)).description)
 
 
 def _axes(desc: LoadedDescription, frame: str) -> np.ndarray:
@@ -110,7 +129,7 @@ def test_every_guess_says_why_and_doubts_are_marked() -> None:
     assert "# TODO doubt: 7 more hand joint(s)" in text
 
 
-def test_draft_is_laid_out_as_ruff_formats_it(tmp_path: Path) -> None:
+def test_draft_is_laid_out_as_ruff_formats_it(tmp_path: Path, drafts: Drafts) -> None:
     ruff = shutil.which("ruff", path=str(Path(sys.executable).parent))
     assert ruff is not None, "ruff comes with the dev extra"
     for urdf in (
@@ -118,15 +137,15 @@ def test_draft_is_laid_out_as_ruff_formats_it(tmp_path: Path) -> None:
         ROBOTS / "baxter_description" / "urdf" / "baxter.urdf",
     ):
         file = tmp_path / f"{urdf.stem}.py"
-        file.write_text(_draft(urdf).source(file), encoding="utf-8")
+        file.write_text(drafts(urdf).source(file), encoding="utf-8")
         result = subprocess.run(
             [ruff, "format", "--diff", str(file)], capture_output=True, text=True
         )
         assert result.returncode == 0, result.stdout
 
 
-def test_pr2_draft_is_the_builtin_description() -> None:
-    builtin, drafted = _builtin("pr2")
+def test_pr2_draft_is_the_builtin_description(drafts: Drafts) -> None:
+    builtin, drafted = _builtin("pr2", drafts)
     assert drafted.torso_joint == builtin.torso_joint == "torso_lift_joint"
     assert drafted.pan_tilt == builtin.pan_tilt
     assert drafted.cameras[0].frame == builtin.cameras[0].frame == "wide_stereo_optical_frame"
@@ -158,8 +177,8 @@ def test_pr2_draft_is_the_builtin_description() -> None:
         assert set(arm.gripper_links) - {f"{side[0]}_gripper_palm_link"} <= set(got.gripper_links)
 
 
-def test_hsr_draft_differs_from_the_builtin_only_where_explained() -> None:
-    builtin, drafted = _builtin("hsrb")
+def test_hsr_draft_differs_from_the_builtin_only_where_explained(drafts: Drafts) -> None:
+    builtin, drafted = _builtin("hsrb", drafts)
     assert drafted.torso_joint == builtin.torso_joint == "arm_lift_joint"
     assert drafted.pan_tilt == builtin.pan_tilt
     assert drafted.cameras[0].frame == builtin.cameras[0].frame
@@ -185,8 +204,8 @@ def test_hsr_draft_differs_from_the_builtin_only_where_explained() -> None:
     assert np.linalg.norm(np.subtract(here, there)) < 0.02
 
 
-def test_boxy_draft_differs_from_the_builtin_only_where_explained() -> None:
-    builtin, drafted = _builtin("boxy")
+def test_boxy_draft_differs_from_the_builtin_only_where_explained(drafts: Drafts) -> None:
+    builtin, drafted = _builtin("boxy", drafts)
     assert drafted.torso_joint == builtin.torso_joint == "triangle_base_joint"
     assert drafted.cameras[0].frame == builtin.cameras[0].frame
     assert drafted.neck_arm == builtin.neck_arm == "neck"
@@ -238,9 +257,9 @@ BOXY_TORSO = (
     "robot",
     ["pr2", "hsrb", pytest.param("boxy", marks=pytest.mark.xfail(strict=True, reason=BOXY_TORSO))],
 )
-def test_builtin_robots_drafts_check_clean(robot: str) -> None:
+def test_builtin_robots_drafts_check_clean(robot: str, drafts: Drafts) -> None:
     """The drafts work as they are: every part drives, nothing was edited."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        card = check_robot(_draft(Path(builtin_description(robot).urdf)).description)
+        card = check_robot(drafts(Path(builtin_description(robot).urdf)).description)
     assert card.passed, card.render()

@@ -11,13 +11,14 @@ from __future__ import annotations
 
 import math
 import warnings
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 from robocram.robot_check import check_robot, description_from
-from robocram.robots import RobotModel, draft_description
+from robocram.robots import DraftDescription, RobotModel, draft_description
 from robocram.robots.draft.cameras import AIM_DOWN, LOOKS_AHEAD, aimed_optics, likely_camera_link
 from robocram.robots.draft.hands import find_hands
 from robocram.robots.draft.model_tree import ModelTree
@@ -26,19 +27,29 @@ DATA = Path(__file__).resolve().parents[1] / "data"
 JUSTIN = DATA / "zoo" / "rollin_justin" / "rollin_justin.urdf"
 
 
-def _draft_justin(tmp_path: Path) -> tuple[str, Path]:
-    module = tmp_path / "rollin_justin.py"
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        text = draft_description(JUSTIN).source(module)
-    module.write_text(text, "utf-8")
-    return text, module
+@dataclass(frozen=True)
+class Justin:
+    """Rollin' Justin's draft, its text and the module written from it."""
+
+    drafted: DraftDescription
+    text: str
+    module: Path
 
 
-def test_a_urdf_naming_no_camera_gets_one_on_the_likely_link() -> None:
+@pytest.fixture(scope="module")
+def justin(tmp_path_factory: pytest.TempPathFactory) -> Justin:
+    """Drafted once for the module's tests (each drafted it again, ~0.7 s CPU)."""
+    module = tmp_path_factory.mktemp("justin") / "rollin_justin.py"
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         drafted = draft_description(JUSTIN)
+    text = drafted.source(module)
+    module.write_text(text, "utf-8")
+    return Justin(drafted, text, module)
+
+
+def test_a_urdf_naming_no_camera_gets_one_on_the_likely_link(justin: Justin) -> None:
+    drafted = justin.drafted
     desc = drafted.description
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
@@ -55,14 +66,14 @@ def test_a_urdf_naming_no_camera_gets_one_on_the_likely_link() -> None:
     assert "--camera LINK" in drafted.doubts["cameras.0"]
 
 
-def test_the_drafted_text_says_the_camera_was_inferred(tmp_path: Path) -> None:
-    text, _ = _draft_justin(tmp_path)
+def test_the_drafted_text_says_the_camera_was_inferred(justin: Justin) -> None:
+    text = justin.text
     assert "# TODO doubt: inferred, not read from the URDF: the camera is put on 'head2'" in text
     assert 'frame="head2_optical"' in text
 
 
-def test_the_inferred_camera_passes_the_camera_checks(tmp_path: Path) -> None:
-    _, module = _draft_justin(tmp_path)
+def test_the_inferred_camera_passes_the_camera_checks(justin: Justin) -> None:
+    module = justin.module
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         card = check_robot(description_from(str(module)))

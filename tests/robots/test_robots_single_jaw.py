@@ -22,7 +22,7 @@ from robocram.projection.arm import move_tcp
 from robocram.projection.gripper import grip, open_gripper
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robot_check import description_from
-from robocram.robots import draft_description, link_pose, load_description
+from robocram.robots import DraftDescription, draft_description, link_pose, load_description
 from robocram.robots.example_robot_data import example_robot_data_folder
 from robocram.robots.link_centre import link_centre, mesh_box
 from robocram.robots.urdf_elements import Collision, Geometry, Link
@@ -94,8 +94,16 @@ def test_link_centre_of_shapes_and_of_a_bare_frame() -> None:
     assert link_centre(Link("frame")) == (0.0, 0.0, 0.0)
 
 
-def test_z1_draft_opens_its_jaw_at_the_lower_limit_and_turns_the_tool_frame() -> None:
-    draft = _draft(Z1)
+@pytest.fixture(scope="module")
+def z1() -> DraftDescription:
+    """The Z1's draft, made once for the tests that read it (each drafted it again)."""
+    return _draft(Z1)
+
+
+def test_z1_draft_opens_its_jaw_at_the_lower_limit_and_turns_the_tool_frame(
+    z1: DraftDescription,
+) -> None:
+    draft = z1
     arm = draft.description.arms["arm"]
     assert arm.gripper is not None
     (jaw,) = arm.gripper.joints
@@ -114,8 +122,8 @@ def test_z1_draft_opens_its_jaw_at_the_lower_limit_and_turns_the_tool_frame() ->
     assert "tool_frame" not in {k.split(".")[-1] for k in draft.doubts}
 
 
-def test_z1_widest_opening_is_how_far_the_jaw_middle_rises() -> None:
-    desc = load_description(_draft(Z1).description)
+def test_z1_widest_opening_is_how_far_the_jaw_middle_rises(z1: DraftDescription) -> None:
+    desc = load_description(z1.description)
     gripper = desc.arms["arm"].gripper
     assert gripper is not None and gripper.max_opening is not None
     # turned 90 degrees about y, the middle (0.0395, 0, 0.0026) goes to (-0.0026, 0, 0.0395)

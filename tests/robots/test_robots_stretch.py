@@ -20,7 +20,6 @@ import pytest
 
 from robocram.costmaps.batch_fk import batch_frame_poses
 from robocram.costmaps.occupancy import facing_radius, footprint_radii
-from robocram.designators import a
 from robocram.kinematics import IKOptions, solve_ik
 from robocram.kinematics.robot_kinematics import robot_kinematics
 from robocram.motion import JointTrajectory
@@ -28,7 +27,6 @@ from robocram.motion.joint_trajectory import TrajectoryPoint
 from robocram.plans import pick_up
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.container_access import open_from_front
-from robocram.plans.transport import transport
 from robocram.projection import simulated_robot
 from robocram.robot_check import check_robot, description_from
 from robocram.robots import (
@@ -48,6 +46,7 @@ from robocram.scenes import kitchen_scene, tabletop_scene
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
 from robocram.world import World
+from tests.kitchen_transports import SHARED, Transports
 
 STRETCH = Path(__file__).resolve().parents[1] / "data" / "stretch"
 URDF = STRETCH / "stretch_description" / "urdf" / "stretch_description.urdf"
@@ -56,6 +55,7 @@ TELESCOPE = ("joint_arm_l3", "joint_arm_l2", "joint_arm_l1", "joint_arm_l0")
 WRIST = ("joint_wrist_yaw", "joint_wrist_pitch", "joint_wrist_roll")
 FINGERS = ("joint_gripper_finger_right", "joint_gripper_finger_left")
 EXTENSION = 4 * 0.13  # [m] the telescope's travel: four segments of 0.13 m each
+pytestmark = SHARED  # its kitchen transports are other modules' too (tests/kitchen_transports.py)
 
 
 @pytest.fixture(scope="module")
@@ -167,28 +167,23 @@ def test_the_unchanged_pick_up_runs_in_the_tabletop_scene(stretch: LoadedDescrip
 
 
 def test_the_unchanged_transport_carries_the_mug_to_the_kitchen_table(
-    stretch: LoadedDescription,
+    stretch: LoadedDescription, kitchen_transports: Transports
 ) -> None:
-    scene = kitchen_scene(stretch)
-    world = scene.world
-    try:
-        with simulated_robot(world, scene.robot):
-            result = transport("mug", a.location(on=("kitchen", "table_top"), for_="mug-1"))
-        assert result.object_name == "mug-1"
-        assert world.bodies.attached_to("mug-1") is None
-        touching = {p.link_b for p in world.contacts.contact_points("mug-1", "kitchen")}
-        assert touching == {"table_top"}
-        assert world.pose("mug-1").position[:2] == pytest.approx(result.spot.position[:2], abs=0.03)
-        joints = world.joint_states(scene.robot)
-        for joint, value in stretch.arms["arm"].parking.items():
-            assert joints[joint] == pytest.approx(value, abs=0.01), joint
-        assert [joints[j] for j in TELESCOPE] == pytest.approx([joints[TELESCOPE[0]]] * 4)
-    finally:
-        world.close()
+    run = kitchen_transports(stretch, "mug")
+    world, result = run.world, run.done
+    assert result.object_name == "mug-1"
+    assert world.bodies.attached_to("mug-1") is None
+    touching = {p.link_b for p in world.contacts.contact_points("mug-1", "kitchen")}
+    assert touching == {"table_top"}
+    assert world.pose("mug-1").position[:2] == pytest.approx(result.spot.position[:2], abs=0.03)
+    joints = world.joint_states(run.robot)
+    for joint, value in stretch.arms["arm"].parking.items():
+        assert joints[joint] == pytest.approx(value, abs=0.01), joint
+    assert [joints[j] for j in TELESCOPE] == pytest.approx([joints[TELESCOPE[0]]] * 4)
 
 
 def test_the_unchanged_transport_takes_the_bowl_out_of_the_drawer(
-    stretch: LoadedDescription,
+    stretch: LoadedDescription, kitchen_transports: Transports
 ) -> None:
     """Stretch has no torso to raise: from the handle stand its camera, at 1.29 m, sees the
     bowl only when it looks at the middle of what the drawer pulled out, not its front.
@@ -196,27 +191,20 @@ def test_the_unchanged_transport_takes_the_bowl_out_of_the_drawer(
     Its head, still turned down at the drawer, stood in its lift's way when the bowl was
     raised over the table's height (``link_lift`` hit ``link_head_tilt``: every stand at
     the table was then refused); the lift now looks ahead and is tried again."""
-    scene = kitchen_scene(stretch)
-    world = scene.world
-    try:
-        with simulated_robot(world, scene.robot):
-            result = transport("bowl", a.location(on=("kitchen", "table_top"), for_="bowl-1"))
-        assert result.object_name == "bowl-1"
-        assert [o.container.link for o in result.opened] == ["drawer_unit_drawer_3"]
-        assert [a.stage for a in result.log.attempts if a.succeeded] == [
-            "open",
-            "fetch",
-            "deliver",
-            "close",
-        ]
-        assert world.bodies.attached_to("bowl-1") is None
-        assert {p.link_b for p in world.contacts.contact_points("bowl-1", "kitchen")} == {
-            "table_top"
-        }
-        drawer = world.joint_states("kitchen")[result.opened[0].container.joint]
-        assert drawer == pytest.approx(0.0, abs=0.01)  # closed again
-    finally:
-        world.close()
+    run = kitchen_transports(stretch, "bowl")
+    world, result = run.world, run.done
+    assert result.object_name == "bowl-1"
+    assert [o.container.link for o in result.opened] == ["drawer_unit_drawer_3"]
+    assert [a.stage for a in result.log.attempts if a.succeeded] == [
+        "open",
+        "fetch",
+        "deliver",
+        "close",
+    ]
+    assert world.bodies.attached_to("bowl-1") is None
+    assert {p.link_b for p in world.contacts.contact_points("bowl-1", "kitchen")} == {"table_top"}
+    drawer = world.joint_states("kitchen")[result.opened[0].container.joint]
+    assert drawer == pytest.approx(0.0, abs=0.01)  # closed again
 
 
 def test_batched_fk_extends_the_coupled_telescope(stretch: LoadedDescription) -> None:

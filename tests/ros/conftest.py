@@ -1,6 +1,6 @@
 """A real roscore on a free port for the ROS tests, started and stopped (by PID) here, the
-projection driver a module's tests share (``driver_pool.py``), reset between them, and the
-projected kitchen transports the ROS runs are compared with, run once a session."""
+projection driver a module's tests share (``driver_pool.py``), reset between them (the
+projected kitchen transports the ROS runs are compared with: ``tests/kitchen_transports.py``)."""
 
 from __future__ import annotations
 
@@ -9,11 +9,8 @@ from collections.abc import Callable, Iterator
 
 import pytest
 
-from robocram.plans.transport import TransportResult
-from robocram.robots import RobotDescription
 from robocram.ros import Roscore
 from tests.ros.driver_pool import DriverPool
-from tests.ros.projected_transports import Projected, projected_transport
 
 
 @pytest.fixture(scope="module")
@@ -54,19 +51,3 @@ def master_nodes(roscore: Roscore) -> Callable[[], set[str]]:
         return {node for kind in state for _, nodes in kind for node in nodes}
 
     return nodes
-
-
-@pytest.fixture(scope="session")
-def projected_transports() -> Projected:
-    """``(robot, object_type, item)`` -> its kitchen transport in projection, run once for
-    the session (the modules using it carry ``projected_transports.SHARED``: one worker
-    runs them)."""
-    done: dict[tuple[str, str, str], TransportResult] = {}
-
-    def of(robot: str | RobotDescription, object_type: str, item: str) -> TransportResult:
-        key = (robot if isinstance(robot, str) else robot.name, object_type, item)
-        if key not in done:
-            done[key] = projected_transport(robot, object_type, item)
-        return done[key]
-
-    return of

@@ -16,8 +16,8 @@ from robocram.ros import ros_robot
 from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
 from robocram.world import World
+from tests.kitchen_transports import SHARED, Transports
 from tests.ros.driver_pool import DriverPool
-from tests.ros.projected_transports import SHARED, Projected
 from tests.ros.received_goals import assert_same_goal
 
 TABLE = ("kitchen", "table_top")
@@ -26,7 +26,7 @@ RESTING = 0.015  # [m] the driver lets go without simulating: the bowl may stand
 DRAWN = 0.005  # [m] stands in a world whose drawer the driver's hand moved
 STRETCH = Path(__file__).resolve().parents[1] / "data" / "stretch" / "stretch.py"
 STRETCH_FACTS = STRETCH.with_name("stretch_ros2.pl")
-pytestmark = SHARED  # the PR2's projected transports are test_ros_kitchen_transport's too
+pytestmark = SHARED  # its projected transports are other modules' too
 
 
 def _on_the_table_top(world: World, item: str, pose: Pose) -> None:
@@ -53,12 +53,12 @@ def _same_stands(result: TransportResult, expected: TransportResult, within: flo
 )
 def test_the_kitchen_transport_over_ros2_on_the_real_pr2s_controllers(
     drivers2: DriverPool,
-    projected_transports: Projected,
+    kitchen_transports: Transports,
     object_type: str,
     item: str,
     clock_offset: float,
 ) -> None:
-    expected = projected_transports("pr2", object_type, item)
+    expected = kitchen_transports("pr2", object_type).done
     scene = kitchen_scene("pr2")
     serving = drivers2("pr2", controllers="pr2", clock_offset=clock_offset, scene="kitchen")
     with serving, ros_robot("pr2", ros=2, world=scene.world) as run:
@@ -81,7 +81,7 @@ def test_the_kitchen_transport_over_ros2_on_the_real_pr2s_controllers(
 @pytest.mark.parametrize(("object_type", "item"), [("mug", "mug-1"), ("bowl", "bowl-1")])
 def test_the_stretch_transports_over_ros2_turning_its_base_for_its_sideways_arm(
     drivers2: DriverPool,
-    projected_transports: Projected,
+    kitchen_transports: Transports,
     tmp_path: Path,
     object_type: str,
     item: str,
@@ -91,7 +91,7 @@ def test_the_stretch_transports_over_ros2_turning_its_base_for_its_sideways_arm(
     the mug first pushes it into the grip (the robot side), and every trajectory goal is
     the one the plan side planned."""
     desc = load_description(STRETCH)
-    expected = projected_transports(desc, object_type, item)
+    expected = kitchen_transports(desc, object_type).done
     scene = kitchen_scene(desc)
     sent: list[JointTrajectory] = []
     serving = drivers2(

@@ -20,12 +20,12 @@ from robocram.ros import Roscore, ros_robot
 from robocram.scenes import kitchen_scene, tabletop_scene
 from robocram.tf import Pose
 from robocram.world import World
+from tests.kitchen_transports import SHARED, Transports
 from tests.ros.driver_pool import DriverPool
-from tests.ros.projected_transports import SHARED, Projected
 from tests.ros.served_state import assert_same_state, served_state
 
 TABLE = ("kitchen", "table_top")
-pytestmark = SHARED  # its projected transports are test_ros2_kitchen's too
+pytestmark = SHARED  # its projected transports are other modules' too
 DRAWER_JOINT = "drawer_unit_drawer_3_joint"
 RESTING = 0.015  # [m] the driver lets go without simulating: the mug may stand this high
 SAME = 1e-6  # [m | rad] stands chosen by the same seeds in the same world
@@ -66,9 +66,9 @@ def _same_stands(result: TransportResult, expected: TransportResult, within: flo
 
 
 def test_the_mug_goes_to_the_table_on_the_real_pr2_with_its_clock_ahead(
-    roscore: Roscore, drivers: DriverPool, projected_transports: Projected
+    roscore: Roscore, drivers: DriverPool, kitchen_transports: Transports
 ) -> None:
-    expected = projected_transports("pr2", "mug", "mug-1")
+    expected = kitchen_transports("pr2", "mug").done
     scene = kitchen_scene("pr2")
     with (
         drivers(controllers="pr2", clock_offset=10.0, scene="kitchen"),
@@ -88,9 +88,9 @@ def test_the_mug_goes_to_the_table_on_the_real_pr2_with_its_clock_ahead(
 
 
 def test_the_bowl_comes_out_of_the_drawer_on_the_real_pr2_with_its_clock_behind(
-    roscore: Roscore, drivers: DriverPool, projected_transports: Projected
+    roscore: Roscore, drivers: DriverPool, kitchen_transports: Transports
 ) -> None:
-    expected = projected_transports("pr2", "bowl", "bowl-1")
+    expected = kitchen_transports("pr2", "bowl").done
     scene = kitchen_scene("pr2")
     with (
         drivers(controllers="pr2", clock_offset=-10.0, scene="kitchen", tf_lag=TF_LAG),

@@ -1,11 +1,12 @@
 """A traced pick-up with a failing first branch, and a traced run of trajectories, shared by
-the trace and export tests; traced kitchen transports, shared by the audit tests."""
+the trace and export tests (the audit tests' traced kitchen transports are every module's:
+``tests/kitchen_transports.py``)."""
 
 from __future__ import annotations
 
 import importlib.util
 import sys
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 from types import ModuleType
@@ -20,7 +21,6 @@ from robocram.projection import simulated_robot
 from robocram.scenes import tabletop_scene
 from robocram.traces import StoredWorldState, trace_to
 from robocram.world import World
-from tests.traces.traced_transports import TracedTransport, traced_transport
 
 TORSO_TOO_HIGH = 5.0  # [m] far above the PR2's torso limit: the first branch fails
 
@@ -79,20 +79,3 @@ def trajectory_run(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Any]:
     )
     yield traced
     traced.world.close()
-
-
-@pytest.fixture(scope="session")
-def traced_transports(
-    tmp_path_factory: pytest.TempPathFactory,
-) -> Callable[[str, str], TracedTransport]:
-    """``(robot, kind)`` -> its traced kitchen transport, run once for the session (the
-    modules using it carry ``traced_transports.SHARED``: one worker runs them)."""
-    folder = tmp_path_factory.mktemp("transports")
-    done: dict[tuple[str, str], TracedTransport] = {}
-
-    def of(robot: str, kind: str) -> TracedTransport:
-        if (robot, kind) not in done:
-            done[robot, kind] = traced_transport(folder, robot, kind)
-        return done[robot, kind]
-
-    return of

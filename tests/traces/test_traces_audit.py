@@ -12,7 +12,6 @@ today.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 from dataclasses import dataclass, replace
 from pathlib import Path
 
@@ -38,7 +37,7 @@ from robocram.traces.audit_bounds import AuditBounds, adjacent_pairs_of
 from robocram.traces.audit_findings import AuditFinding, AuditReport, FindingKind
 from robocram.traces.trajectory_audit import audit_runs
 from robocram.world import World
-from tests.traces.traced_transports import SHARED, TracedTransport
+from tests.kitchen_transports import SHARED, Transports
 
 WALL_X = 0.5  # [m] the low wall's centre in map, in front of the PR2
 DRIVE = 0.1  # [m] how far the base drives into it
@@ -46,8 +45,7 @@ ELBOW = "r_elbow_flex_joint"
 ELBOW_ACCELERATION = 3.0  # [rad/s^2] twice the PR2 elbow's default limit of 1.5
 SWING_PAN = 0.3  # [rad] the right shoulder's pan that puts the right hand in the left shoulder
 DEPTH_TOLERANCE = 0.001  # [m]
-pytestmark = SHARED  # its PR2 and HSR kitchen transports are test_traces_audit_hand's too
-Transports = Callable[[str, str], TracedTransport]
+pytestmark = SHARED  # its PR2 and HSR kitchen transports: tests/kitchen_transports.py
 
 
 @dataclass
@@ -343,9 +341,9 @@ def test_a_missing_database_or_run_is_one_line_of_bad_input(
 
 
 @pytest.fixture(scope="module")
-def kitchen_report(traced_transports: Transports) -> AuditReport:
+def kitchen_report(kitchen_transports: Transports) -> AuditReport:
     """The audit of a PR2 kitchen mug transport (test_traces_audit_hand.py's too)."""
-    return traced_transports("pr2", "mug").report
+    return kitchen_transports("pr2", "mug").report
 
 
 def test_a_pr2_kitchen_transport_moves_its_head_and_grippers_only_along_trajectories(
@@ -376,7 +374,7 @@ def test_a_pr2_kitchen_transport_keeps_every_limit(kitchen_report: AuditReport) 
         assert kitchen_report.of(kind) == []
 
 
-def test_an_hsr_kitchen_transport_is_clean(traced_transports: Transports) -> None:
-    report = traced_transports("hsrb", "mug").report  # test_traces_audit_hand.py's too
+def test_an_hsr_kitchen_transport_is_clean(kitchen_transports: Transports) -> None:
+    report = kitchen_transports("hsrb", "mug").report  # test_traces_audit_hand.py's too
     # it used to jump its head and hand, and open its hand into its base (6.6 mm) parked
     assert report.clean, report.summary_lines()

@@ -4,12 +4,11 @@ Each ``allow_hand`` motion (approach, lift, put down, back off) stores its allow
 the hand's links on the object moved, 5 mm. The audit replays every trajectory on raw
 PyBullet and holds it to that bound (clean). Where each such motion ends, PyBullet's raw
 closest points say how deep the hand is in the named object (within the bound) and that
-it touches no other body (``traced_transports.HandEnds``).
+it touches no other body (``kitchen_transports.HandEnds``).
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from pathlib import Path
 
 import pytest
@@ -18,10 +17,9 @@ from robocram.costmaps.reach_reasoning import LIFT_MARGIN
 from robocram.motion.hand_contact import HAND_CONTACT_DEPTH
 from robocram.scenes import kitchen_scene
 from robocram.traces.audit_findings import FindingKind
-from tests.traces.traced_transports import SHARED, TracedTransport
+from tests.kitchen_transports import SHARED, Transports
 
-pytestmark = SHARED  # the PR2's and the HSR's mug transports are test_traces_audit's too
-Transports = Callable[[str, str], TracedTransport]
+pytestmark = SHARED  # its kitchen transports are other modules' too (tests/kitchen_transports.py)
 
 
 def _bottom_and_drawer_top(robot: str) -> tuple[float, float]:
@@ -51,9 +49,9 @@ STRETCH = str(Path(__file__).resolve().parents[1] / "data" / "stretch" / "stretc
     ],
 )
 def test_a_kitchen_mug_transport_is_clean_with_the_hand_bounded_on_the_mug(
-    traced_transports: Transports, robot: str
+    kitchen_transports: Transports, robot: str
 ) -> None:
-    traced = traced_transports(robot, "mug")
+    traced = kitchen_transports(robot, "mug")
     report, ends = traced.report, traced.ends
     assert report.clean, report.summary_lines()
     assert len(ends.named) >= 3  # approach, lift, put down (and back off)
@@ -64,7 +62,7 @@ def test_a_kitchen_mug_transport_is_clean_with_the_hand_bounded_on_the_mug(
 
 @pytest.mark.parametrize("robot", ["pr2", "boxy"])
 def test_the_bowl_comes_from_its_drawer_with_the_hand_bounded(
-    traced_transports: Transports, robot: str
+    kitchen_transports: Transports, robot: str
 ) -> None:
     """The drawer's handle and the bowl are named in turn. The audit moves the drawer
     with the hand (each step's trajectory carries its joint), and a grasp roll that did
@@ -73,7 +71,7 @@ def test_the_bowl_comes_from_its_drawer_with_the_hand_bounded(
     stand could not: its delivery then failed, every table stand blocked by the bowl
     hanging in the drawer)."""
     bottom, top = _bottom_and_drawer_top(robot)
-    traced = traced_transports(robot, "bowl")
+    traced = kitchen_transports(robot, "bowl")
     report, ends, done = traced.report, traced.ends, traced.done
     rise = done.held.lifted.position[2] - done.held.grasp_pose.position[2]  # [m]
     assert bottom + rise >= top + LIFT_MARGIN - 1e-6

@@ -1,0 +1,134 @@
+"""Kitchen transports, each run once for the session and judged by every test that asks.
+
+The same transport (a robot, the mug or the bowl taken to the table top) was run by up to
+four modules, each to judge it its own way: the trace audit and the hand's bounds
+(``tests/traces``), the world it leaves (``tests/plans``, ``tests/robots``) and the stands
+a ROS run must match (``tests/ros``). Now the conftest's ``kitchen_transports`` runs each
+once, with the watchers its judges need, and keeps its world open for the session: the
+modules asking for one carry ``SHARED`` (one xdist worker runs them all).
+
+A traced run plans what a plain one does (the trace and the hand's watcher only read the
+world; the attempts, final joints and poses compared bit for bit): the runs ``TRACED``
+names are traced. The projection tests' judged runs stay their own: the judge does not
+leave the world bit for bit as it found it (the base pose it puts back is the one read,
+which PyBullet normalises again), and a judged HSR mug transport took other stands.
+"""
+
+from __future__ import annotations
+
+import warnings
+from collections.abc import Callable
+from contextlib import ExitStack
+from dataclasses import dataclass, field
+from functools import cached_property
+from pathlib import Path
+
+import pytest
+
+from robocram.designators import a
+from robocram.motion import JointTrajectory, trajectory_listener
+from robocram.plans.transport import TransportResult, transport
+from robocram.projection import simulated_robot
+from robocram.robots import MissingMeshWarning, RobotDescription, load_description
+from robocram.scenes import kitchen_scene
+from robocram.traces import TraceDatabase, trace_to
+from robocram.traces.audit_findings import AuditReport
+from robocram.traces.trajectory_audit import audit_runs
+from robocram.world import RawDistances, World
+
+SHARED = pytest.mark.xdist_group("kitchen_transports")
+TABLE = ("kitchen", "table_top")
+STRETCH = "stretch_description"  # the drafted Stretch's name (tests/data/stretch)
+# (robot, kind) traced for the audit tests (their plain runs)
+TRACED = frozenset(
+    {("pr2", "mug"), ("hsrb", "mug"), ("boxy", "mug"), (STRETCH, "mug")}
+    | {("pr2", "bowl"), ("boxy", "bowl")}
+)
+
+
+@dataclass
+class HandEnds:
+    """At the end of each motion allowing the hand a contact: what it allowed, how deep
+    the hand is in it, and what else the hand touches (PyBullet's raw closest points)."""
+
+    world: World
+    robot: str
+    named: list[set[str]] = field(default_factory=list)  # per motion: the objects allowed
+    depths: list[float] = field(default_factory=list)  # [m] per motion: deepest in them
+    others: set[str] = field(default_factory=set)  # bodies touched that were not allowed
+
+    def __call__(self, trajectory: JointTrajectory) -> None:
+        if not trajectory.allowed_contacts:
+            return
+        raw = RawDistances(self.world)
+        links = {c.robot_side for c in trajectory.allowed_contacts}
+        named = {c.other for c in trajectory.allowed_contacts}
+        shaped = [link for link in raw.collision_links(self.robot) if link in links]
+        deepest = 0.0
+        for obj in self.world.objects():
+            if obj.name == self.robot or obj.type == "floor":
+                continue
+            for link in shaped:
+                for other in raw.collision_links(obj):
+                    gap = raw.closest(self.robot, link, obj, other)
+                    if gap is None:
+                        continue
+                    if obj.name in named:
+                        deepest = max(deepest, -gap.distance)
+                    else:
+                        self.others.add(f"{link} / {obj.name}/{other}")
+        self.named.append(named)
+        self.depths.append(deepest)
+
+
+@dataclass
+class KitchenTransport:
+    """A kitchen transport as it ran: its result, the world it left (open for the
+    session: do not change it), and what its watchers saw."""
+
+    world: World
+    robot: str
+    done: TransportResult
+    store: Path | None  # the trace (TRACED runs)
+    hand_ends: HandEnds | None  # (TRACED runs)
+
+    @property
+    def ends(self) -> HandEnds:
+        assert self.hand_ends is not None, f"{self.robot}'s run is not in TRACED"
+        return self.hand_ends
+
+    @cached_property
+    def report(self) -> AuditReport:
+        """The trace's audit (every trajectory replayed densely), made when first asked."""
+        assert self.store is not None, f"{self.robot}'s run is not in TRACED"
+        with TraceDatabase(self.store, create=False) as db:
+            return audit_runs(db)
+
+
+# what the conftest's ``kitchen_transports`` gives: (robot, kind) -> its run
+Transports = Callable[[str | RobotDescription, str], KitchenTransport]
+
+
+def transport_key(robot: str | RobotDescription, kind: str) -> tuple[str, str]:
+    """``(robot's name, kind)``: a robot given by name, file or description is one robot
+    (loaded again quietly: its scene has warned of what its meshes miss)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", MissingMeshWarning)
+        return load_description(robot).name, kind
+
+
+def kitchen_transport(folder: Path, robot: str | RobotDescription, kind: str) -> KitchenTransport:
+    """``kind-1`` taken to the kitchen's table top on ``robot``, projected, traced into
+    ``folder`` with the hand's ends watched if ``TRACED`` names it."""
+    key = transport_key(robot, kind)
+    scene = kitchen_scene(robot)
+    world = scene.world
+    store = folder / f"{key[0]}-{kind}.db" if key in TRACED else None
+    ends = HandEnds(world, scene.robot) if key in TRACED else None
+    with ExitStack() as watching:
+        if store is not None:
+            watching.enter_context(trace_to(store, world=world))
+            watching.enter_context(trajectory_listener(ends))
+        watching.enter_context(simulated_robot(world, scene.robot))
+        done = transport(kind, a.location(on=TABLE, for_=f"{kind}-1"))
+    return KitchenTransport(world, scene.robot, done, store, ends)
