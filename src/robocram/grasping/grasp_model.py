@@ -14,7 +14,10 @@ Grasps (CRAM's names), in the object's frame (x forward, z up):
   :data:`PADS_BEHIND_DEEP`) again, deep (:data:`RIM_DEEP_FLOOR`), after all the others.
   Width: the wall's thickness. A palm hand lies flat over the rim, its wrist at the rim's
   height: its rim grasps come again tilted about the wall (:data:`RIM_TILTS`), the wrist
-  raised, for a bowl down in a drawer.
+  raised, for a bowl down in a drawer; last of all, each whose hand, closing, goes below
+  the object's bottom again raised until it keeps :data:`PALM_FLOOR` over it
+  (:func:`_over_support`: Armar6's open thumb stood through the bowl's floor, its 11.6 cm
+  fingers curled past the 6.4 cm bowl into the drawer's).
 - ``handle`` (``object_handle/2``): sideways onto the bar that sticks out of the body,
   at half height; width: the bar's. A hand that fits no grasp round the body (top,
   front, left, right: a Panda's 80 mm against the mug's 88) also gets it from above, as
@@ -160,7 +163,8 @@ def _side(shape: ObjectShape, hand: Hand, name: str) -> Iterator[Grasp]:
 def _rim(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
     """On the wall from above, one place per side without a handle; a palm hand's then
     again tilted (:data:`RIM_TILTS`, :func:`_tilted`); a hand whose pads end behind its
-    tool frame's then again deep (:data:`RIM_DEEP_FLOOR`)."""
+    tool frame's then again deep (:data:`RIM_DEEP_FLOOR`); a palm hand's, last, each
+    again raised over the support (:func:`_over_support`)."""
     if shape.wall is None:
         return
     cx, cy = shape.centre
@@ -175,14 +179,40 @@ def _rim(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
             opening = side if turn == 0.0 else (-side[0], -side[1], 0.0)
             flat.append((at, _grasp(hand, "rim", turn, at, DOWN, opening, shape.wall, shape)))
     yield from (grasp for _, grasp in flat)
-    if hand.palm is not None:
-        yield from (_tilted(g, at, tilt, hand.palm) for tilt in RIM_TILTS for at, g in flat)
+    palm = hand.palm
+    tilted = [] if palm is None else [_tilted(g, at, t, palm) for t in RIM_TILTS for at, g in flat]
+    yield from tilted
     deeper = shape.high[2] - RIM_DEPTH - (shape.low[2] + RIM_DEEP_FLOOR)
     behind = hand.palm is None and hand.pads_behind >= PADS_BEHIND_DEEP
     if behind and deeper >= RIM_DEEPER_AT_LEAST:
         for at, grasp in flat:
             low = (at[0], at[1], at[2] - deeper)
             yield replace(grasp, tool=Pose(low, grasp.tool.orientation), deeper=deeper)
+    if palm is not None:
+        for grasp in [*(g for _, g in flat), *tilted]:
+            raised = _over_support(grasp, palm, shape)
+            if raised is not None:
+                yield raised
+
+
+def _over_support(grasp: Grasp, palm: Palm, shape: ObjectShape) -> Grasp | None:
+    """``grasp`` raised until the hand, at every opening as it closes (:attr:`Palm.swept`,
+    thumb too), keeps :data:`PALM_FLOOR` over the object's bottom; None when it keeps
+    over the bottom as it is (it does not go into what the object stands on: the TIAGo's
+    Hey5 keeps 4.6 mm over the bowl's, and its rim grasps stay as they are). Armar6's open
+    thumb stood 10.5 cm out of its palm, through the bowl's floor, and its 11.6 cm fingers,
+    curling round the wall of a bowl 6.4 cm tall, met the drawer's floor, 24 mm below the
+    bowl's bottom, before the bowl: 34 mm higher (tilted) they close on the wall against
+    the thumb."""
+    if not len(palm.swept):
+        return None
+    up = grasp.tool.matrix()[2, :3]  # each tool axis's share of the object's z
+    lowest = grasp.tool.position[2] + float((palm.swept @ up).min())
+    if lowest >= shape.low[2]:
+        return None
+    rise = shape.low[2] + PALM_FLOOR - lowest
+    x, y, z = grasp.tool.position
+    return replace(grasp, tool=Pose((x, y, z + rise), grasp.tool.orientation), raised=rise)
 
 
 def _tilted(grasp: Grasp, held: Vector3, tilt: float, palm: Palm) -> Grasp:

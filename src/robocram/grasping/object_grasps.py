@@ -105,7 +105,7 @@ def candidates_at(
     names: Sequence[str],
 ) -> list[GraspCandidate]:
     """The grasps of ``shape`` at ``object_in_map`` that ``arm``'s hand fits, best first
-    (a tilted rim grasp right after the flat ones of its side).
+    (a tilted rim grasp right after the flat ones of its side; a raised one after all).
 
     Raises:
         ObjectUngraspable: no grasp fits the hand.
@@ -115,6 +115,7 @@ def candidates_at(
     order = _rank(names)
     found.sort(
         key=lambda g: (
+            g.raised > 0.0,
             order[g.name],
             g.deeper > 0.0,
             _preference(base_in_map, object_in_map, g),

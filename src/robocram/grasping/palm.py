@@ -44,6 +44,7 @@ BOX_CORNERS = 8  # a box's points: too few to fill a profile's steps
 MIN_ROW = 3  # fingers besides the thumb: fewer are a gripper's jaws
 CURL_PROBE = 0.95  # the hand this far open: where the tips start to curl
 SAME_WAY = 0.5  # cos: each finger's curl this close to the row's
+SWEEP = 11  # openings from closed to open the hand's sweep is read at (every 0.1)
 Axis = tuple[float, float, float]
 
 
@@ -64,6 +65,8 @@ class Palm:
             the lower end off the table.
         points: [m] the open hand's shapes' points (tool frame, thumb too): a handle
             taken from above must leave the body clear of them.
+        swept: [m] the same shapes' points at :data:`SWEEP` openings from closed to open:
+            where the hand passes as it closes (a rim grasp keeps them over the support).
     """
 
     curl: Axis
@@ -73,6 +76,7 @@ class Palm:
     profile: tuple[tuple[float, float, float], ...]
     span: tuple[float, float]
     points: NDArray[np.float64] = field(default_factory=lambda: np.zeros((0, 3)), compare=False)
+    swept: NDArray[np.float64] = field(default_factory=lambda: np.zeros((0, 3)), compare=False)
 
     def holding(self, half_width: float, depth: float, flat: bool) -> Axis:
         """The point [m, tool frame] a body ``half_width`` across the fingers is held at,
@@ -172,16 +176,16 @@ class _PosedHand:
         tip = max(chain, key=lambda link: float(np.linalg.norm(self.at(link) - root)))
         return root, tip, self.at(tip)
 
-    def shapes(self, leave: set[str]) -> list[np.ndarray]:
+    def shapes(self, leave: set[str], fraction: float = 1.0) -> list[np.ndarray]:
         """Per link of the hand but those in ``leave``, its shapes' points [m, tool
-        frame], the hand open."""
+        frame], the hand ``fraction`` open."""
         model = self.desc.model
         found = []
         for link in self.spec.hand_links:
             points = None if model is None or link in leave else link_points(model.link(link))
             if points is not None:
                 pose = (
-                    self.tool * forward_kinematics(self.desc, self.gripper.at(1.0), link)
+                    self.tool * forward_kinematics(self.desc, self.gripper.at(fraction), link)
                 ).matrix()
                 found.append(points @ pose[:3, :3].T + pose[:3, 3])
         return found
@@ -219,7 +223,8 @@ def palm_of(desc: RobotDescription, arm: str) -> Palm | None:
     sideways = (shapes - knuckles) @ np.cross(curl, along)
     span = (float(sideways.min()), float(sideways.max()))
     reach = max(end for _, end, _ in profile)
-    return Palm(_axis(curl), _axis(along), _axis(knuckles), reach, profile, span, shapes)
+    swept = np.vstack([p for f in np.linspace(0.0, 1.0, SWEEP) for p in hand.shapes(set(), f)])
+    return Palm(_axis(curl), _axis(along), _axis(knuckles), reach, profile, span, shapes, swept)
 
 
 def _curl(

@@ -187,24 +187,27 @@ def hold_tries(
     (opening None), as ever; then, only if ``untouched()`` (no hold moved the part) and the
     hand opens wider than the bar needs, each again with the hand opened just that wide
     (:func:`bar_opening`), where that frees the hold (:func:`narrowing_frees`;
-    ``grasp(roll)``: the tool in the frame); then, still untouched, a palm hand with no
-    room round the bar on its palm holds it in its fingers (:func:`fingers_hold`: the
-    frame moved so), where IK reaches that."""
+    ``grasp(roll)``: the tool in the frame); then a palm hand with no room round the bar
+    on its palm holds it in its fingers (:func:`fingers_hold`: the frame moved so), where
+    IK reaches that: untouched, or where the open hand's holds moved the part only part
+    of the way (Armar6's open hand pushed its drawer from 0.4 m open to 0.038 m, and none
+    took it further: the hold out along its fingers opened it from shut)."""
     for pitch, frame in frames:
         for roll in rolls():
             yield pitch, frame, roll, None
-    if not untouched():
+    part_way = not untouched()
+    if part_way and palm_of(robot.description, arm) is None:
         return
     part, link = handle
     opening = bar_opening(robot, arm, part, link)
     if opening is not None:
+        if part_way:
+            return
         for pitch, frame in frames:
             for roll in rolls():
                 at_handle = robot.world.link_pose(part, link) * frame * grasp(roll)
                 if narrowing_frees(robot, arm, at_handle, f"{part}/{link}", opening):
                     yield pitch, frame, roll, opening
-        return
-    if not untouched():
         return
     found = fingers_hold(robot, arm, part, link)
     if found is None:
