@@ -76,13 +76,7 @@ def _overlaps(
     the others are asked as before, so the pairs come in the broadphase's order."""
     cid = world.physics.client()
     names = _link_names(obj)
-    if links is None:
-        indices = obj.collider_names()  # no shape, no hit
-    elif isinstance(links, tuple):  # asked again and again by a motion's checks: kept
-        indices = obj.colliders_among(links)
-    else:
-        asked = {obj.link_index[name]: name for name in links}
-        indices = {i: name for i, name in asked.items() if i in obj.colliders}
+    indices = _asked(obj, links)
     if obstacles is not None and obstacles.covers(obj, skip):
         yield from _overlaps_in(obstacles, obj, indices, names, skip, distance, bounds, cid)
         return
@@ -106,6 +100,17 @@ def _overlaps(
                 other_slot = other.slot(body, other_link)
                 other_name = other_names[other.body_id].get(other_slot, other.name)
                 yield names.get(index, link), other, other_slot, index, other_name
+
+
+def _asked(obj: WorldObject, links: Iterable[str] | None) -> dict[int, str]:
+    """Index -> name of the links of ``obj`` a query asks about that have shapes (all
+    of them for None: no shape, no hit)."""
+    if links is None:
+        return obj.collider_names()
+    if isinstance(links, tuple):  # asked again and again by a motion's checks: kept
+        return obj.colliders_among(links)
+    asked = {obj.link_index[name]: name for name in links}
+    return {i: name for i, name in asked.items() if i in obj.colliders}
 
 
 def _near_somewhere(
@@ -231,6 +236,8 @@ def link_distances(
     nearer than ``distance``, with the smallest distance between them (negative when they
     penetrate). ``links`` limits the links of ``obj`` asked about (default: all)."""
     skip = {obj.name} | {o.name for o in ignore}
+    if obstacles is not None and obstacles.covers(obj, skip):
+        return _table_distances(world, obj, _asked(obj, links), skip, distance, obstacles)
     found: dict[tuple[str, str, str], tuple[str, WorldObject, str, float]] = {}
     overlaps = _overlaps(world, obj, links, skip, distance, obstacles)
     for link, other, other_link, index, other_name in overlaps:
@@ -241,6 +248,49 @@ def link_distances(
         key = (link, other.name, other_name)
         if key not in found or nearest < found[key][3]:
             found[key] = (link, other, other_name, nearest)
+    return list(found.values())
+
+
+def _table_distances(
+    world: WorldFacade,
+    obj: WorldObject,
+    indices: dict[int, str],
+    skip: set[str],
+    distance: float,
+    obstacles: ObstacleBoxes,
+) -> list[tuple[str, WorldObject, str, float]]:
+    """:func:`link_distances` where ``obstacles`` covers the query: the same pairs asked
+    in the same order with the same arguments (:func:`_overlaps_in`'s), in one loop.
+    A motion's walk asks this at every check; the generators and the per-pair calls of
+    the general path cost about as much as Bullet's answers."""
+    cid = world.physics.client()
+    names = _link_names(obj)
+    order = list(indices.items())
+    if not obj.parts:  # one body: ask it directly
+        body, aabb = obj.body_id, pybullet.getAABB
+        read = [aabb(body, index, physicsClientId=cid) for index, _ in order]
+    else:
+        read = [_bounds_of(obj, index, None, cid) for index, _ in order]
+    boxes = box_table(read)
+    closest = pybullet.getClosestPoints
+    objects, others, other_names = obstacles.objects, obstacles.indices, obstacles.names
+    found: dict[tuple[str, str, str], tuple[str, WorldObject, str, float]] = {}
+    for box, row in obstacles.overlapping(boxes[:, 0] - distance, boxes[:, 1] + distance, skip):
+        index, link = order[box]
+        other = objects[row]
+        (body_a, index_a), (body_b, index_b) = obj.locate(index), other.locate(others[row])
+        points = closest(
+            body_a, body_b, distance, linkIndexA=index_a, linkIndexB=index_b,
+            physicsClientId=cid,
+        )  # fmt: skip
+        if not points:
+            continue
+        nearest = min([float(p[8]) for p in points])
+        name, other_name = names.get(index, link), other_names[row]
+        key = (name, other.name, other_name)
+        kept = found.get(key)
+        if kept is None or nearest < kept[3]:
+            found[key] = (name, other, other_name, nearest)
     return list(found.values())
 
 
