@@ -1,5 +1,5 @@
-"""Link distances on a kept obstacle table (the walk's query, one loop) equal raw
-PyBullet's closest points, pair for pair, and follow what moves.
+"""Link distances and contacts on a kept obstacle table (a walk's queries, one loop)
+equal raw PyBullet's closest points, pair for pair, and follow what moves.
 
 :func:`robocram.world.link_contacts.link_distances` answers a query the table covers in
 one loop instead of the general generators. Here its answers are compared with raw
@@ -15,6 +15,7 @@ import pybullet
 from robocram.scenes import tabletop_scene
 from robocram.tf import Pose
 from robocram.world import World
+from robocram.world.link_contacts import link_pairs_in_contact
 
 REACH = 0.1  # [m] as a walk's clearance queries ask
 HAND = (
@@ -91,4 +92,27 @@ def test_a_moved_mug_is_seen_at_its_new_distance() -> None:
     mug = {k: v for k, v in after.items() if k[1] == "mug-1"}
     assert mug and mug == {k: v for k, v in _raw(world, HAND).items() if k[1] == "mug-1"}
     assert after == _asked(world, table=False)
+    world.close()
+
+
+def test_pairs_in_contact_on_a_table_are_the_general_paths_and_raw_pybullets() -> None:
+    """``link_pairs_in_contact`` on a kept table: the general path's triples in its order,
+    and raw PyBullet's pairs nearer than the distance; the mug moved away is gone."""
+    world = tabletop_scene("pr2").world
+    _gripper_at_table(world)
+    _mug_ahead(world, 0.1)  # the fingers in the mug
+    robot, floor = world.object("pr2"), world.object("floor")
+    for distance in (0.0, 0.03):
+        table = world.contacts.obstacle_boxes(["pr2", "floor"])
+        kept = link_pairs_in_contact(world, robot, [floor], distance, HAND, table)
+        general = link_pairs_in_contact(world, robot, [floor], distance, HAND)
+        assert [(a, o.name, b) for a, o, b in kept] == [(a, o.name, b) for a, o, b in general]
+        raw = {k for k, gap in _raw(world, HAND).items() if gap <= distance}
+        assert {(a, o.name, b) for a, o, b in kept} == raw and raw
+    _mug_ahead(world, 0.6)
+    table = world.contacts.obstacle_boxes(["pr2", "floor"])
+    assert not any(
+        o.name == "mug-1"
+        for _, o, _ in link_pairs_in_contact(world, robot, [floor], 0.0, HAND, table)
+    )
     world.close()

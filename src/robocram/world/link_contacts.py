@@ -11,7 +11,6 @@ says: the body's carried objects and itself never do.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
-from itertools import chain
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -20,12 +19,18 @@ from numpy.typing import NDArray
 from robocram.world.closest_points import CONTACT_DISTANCE, _carried_with, _link_names
 from robocram.world.obstacle_boxes import ObstacleBoxes
 from robocram.world.pybullet_backend import pybullet
+from robocram.world.table_contacts import (
+    Bounds,
+    bounds_of,
+    box_table,
+    table_contacts,
+    table_distances,
+)
 from robocram.world.world_object import WorldObject
 
 if TYPE_CHECKING:
     from robocram.world.world_facade import WorldFacade
 
-Bounds = tuple[Sequence[float], Sequence[float]]  # a link's (low, high) corners [m]
 SELF_QUERY = 1e-6  # [m] least distance asked of two links of one body: asked for 0, Bullet
 # reports no points for links of one body that penetrate (a 6.6 mm deep HSR finger in its
 # base), so touching is asked a hair farther and the distance compared
@@ -39,23 +44,6 @@ def link_bounds(world: WorldFacade, obj: WorldObject, indices: Iterable[int]) ->
     """
     cid = world.physics.client()
     return {i: pybullet.getAABB(*obj.locate(i), physicsClientId=cid) for i in indices}
-
-
-def box_table(boxes: Sequence[Bounds]) -> NDArray[np.float64]:
-    """``boxes`` as a (boxes, 2, 3) array of their low and high corners [m]: read flat
-    (the same floats; numpy's nested-sequence discovery cost more than the query)."""
-    flat = chain.from_iterable
-    return np.fromiter(flat(flat(boxes)), dtype=float, count=6 * len(boxes)).reshape(-1, 2, 3)
-
-
-def _bounds_of(
-    obj: WorldObject, index: int, bounds: Mapping[int, Bounds] | None, cid: int
-) -> Bounds:
-    if bounds is not None:
-        found = bounds.get(index)
-        if found is not None:
-            return found
-    return pybullet.getAABB(*obj.locate(index), physicsClientId=cid)
 
 
 def _overlaps(
@@ -86,7 +74,7 @@ def _overlaps(
     for index, link in indices.items():
         if near is not None and index not in near:
             continue  # its bounds meet no other's: the broadphase would find nothing near
-        low, high = _bounds_of(obj, index, bounds, cid)
+        low, high = bounds_of(obj, index, bounds, cid)
         if distance:  # IK checks ask for touching: their bounds as read
             low = [v - distance for v in low]
             high = [v + distance for v in high]
@@ -146,7 +134,7 @@ def _overlaps_in(
         body, aabb = obj.body_id, pybullet.getAABB
         read = [aabb(body, index, physicsClientId=cid) for index, _ in order]
     else:
-        read = [_bounds_of(obj, index, bounds, cid) for index, _ in order]
+        read = [bounds_of(obj, index, bounds, cid) for index, _ in order]
     boxes = box_table(read)
     for box, row in obstacles.overlapping(boxes[:, 0] - distance, boxes[:, 1] + distance, skip):
         index, link = order[box]
@@ -215,6 +203,8 @@ def link_pairs_in_contact(
     nothing (the answer and its order as without).
     """
     skip = {obj.name} | {o.name for o in ignore}
+    if obstacles is not None and obstacles.covers(obj, skip):
+        return table_contacts(world, obj, _asked(obj, links), skip, distance, obstacles, bounds)
     found: dict[tuple[str, str, str], tuple[str, WorldObject, str]] = {}
     overlaps = _overlaps(world, obj, links, skip, distance, obstacles, bounds, kept)
     for link, other, other_link, index, other_name in overlaps:
@@ -237,7 +227,7 @@ def link_distances(
     penetrate). ``links`` limits the links of ``obj`` asked about (default: all)."""
     skip = {obj.name} | {o.name for o in ignore}
     if obstacles is not None and obstacles.covers(obj, skip):
-        return _table_distances(world, obj, _asked(obj, links), skip, distance, obstacles)
+        return table_distances(world, obj, _asked(obj, links), skip, distance, obstacles)
     found: dict[tuple[str, str, str], tuple[str, WorldObject, str, float]] = {}
     overlaps = _overlaps(world, obj, links, skip, distance, obstacles)
     for link, other, other_link, index, other_name in overlaps:
@@ -248,49 +238,6 @@ def link_distances(
         key = (link, other.name, other_name)
         if key not in found or nearest < found[key][3]:
             found[key] = (link, other, other_name, nearest)
-    return list(found.values())
-
-
-def _table_distances(
-    world: WorldFacade,
-    obj: WorldObject,
-    indices: dict[int, str],
-    skip: set[str],
-    distance: float,
-    obstacles: ObstacleBoxes,
-) -> list[tuple[str, WorldObject, str, float]]:
-    """:func:`link_distances` where ``obstacles`` covers the query: the same pairs asked
-    in the same order with the same arguments (:func:`_overlaps_in`'s), in one loop.
-    A motion's walk asks this at every check; the generators and the per-pair calls of
-    the general path cost about as much as Bullet's answers."""
-    cid = world.physics.client()
-    names = _link_names(obj)
-    order = list(indices.items())
-    if not obj.parts:  # one body: ask it directly
-        body, aabb = obj.body_id, pybullet.getAABB
-        read = [aabb(body, index, physicsClientId=cid) for index, _ in order]
-    else:
-        read = [_bounds_of(obj, index, None, cid) for index, _ in order]
-    boxes = box_table(read)
-    closest = pybullet.getClosestPoints
-    objects, others, other_names = obstacles.objects, obstacles.indices, obstacles.names
-    found: dict[tuple[str, str, str], tuple[str, WorldObject, str, float]] = {}
-    for box, row in obstacles.overlapping(boxes[:, 0] - distance, boxes[:, 1] + distance, skip):
-        index, link = order[box]
-        other = objects[row]
-        (body_a, index_a), (body_b, index_b) = obj.locate(index), other.locate(others[row])
-        points = closest(
-            body_a, body_b, distance, linkIndexA=index_a, linkIndexB=index_b,
-            physicsClientId=cid,
-        )  # fmt: skip
-        if not points:
-            continue
-        nearest = min([float(p[8]) for p in points])
-        name, other_name = names.get(index, link), other_names[row]
-        key = (name, other.name, other_name)
-        kept = found.get(key)
-        if kept is None or nearest < kept[3]:
-            found[key] = (name, other, other_name, nearest)
     return list(found.values())
 
 
@@ -312,7 +259,7 @@ def self_contacts(
         return []
     cid = world.physics.client()
     rows = obj.pair_rows(key)
-    boxes = [_bounds_of(obj, i, bounds, cid) for i in rows.used]
+    boxes = [bounds_of(obj, i, bounds, cid) for i in rows.used]
     table = box_table(boxes)
     low, high = table[:, 0] - distance, table[:, 1] + distance
     below = (low[:, None, :] <= high[None, :, :]).all(axis=2)  # [i, j]: i's low under j's
