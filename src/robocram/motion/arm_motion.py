@@ -222,23 +222,27 @@ def _straight_checker(
     end: list[float],
     bound: TravelBound,
     hand: HandContact | None = None,
-) -> BulletScene | CoalClearance | None:
+) -> tuple[BulletScene | CoalClearance | None, dict[str, float] | None]:
     """What checks the straight segment from ``start`` (where the robot stands) to
     ``end``: None when nothing it may not touch is as near as a point of it moves (it is
-    free); the world itself for a short one; else coal's clearances."""
+    free); the world itself for a short one; else coal's clearances. With it, per link,
+    :func:`start_travel` of the segment when it was worked out here (the walk's own, the
+    robot standing where it does: its judge has the same links and levers), else None."""
     travel = bound.travel(np.array(start), np.array(end))
     if travel > LIGHT_TRAVEL:
-        return _scene(robot, joints, allowed, start, pairs, hand)
+        return _scene(robot, joints, allowed, start, pairs, hand), None
     judge = BulletScene(robot, joints, allowed, allowed_pairs=pairs, hand=hand)
     clearance = judge.clearance_now(travel + FAST_MARGIN)
     if clearance > travel:
-        return None
+        return None, None
     # the robot stands at the start: its levers bound the travel tighter (a small step's
     # joints partly undo each other)
-    tight = clearance > 0.0 and not bound.mimicked
-    if tight and clearance > start_travel(judge, np.array(start), np.array(end), bound):
-        return None
-    return _judge(robot, joints, allowed, start, pairs, hand, judge)
+    travels: dict[str, float] | None = None
+    if clearance > 0.0 and not bound.mimicked:
+        travels = {}
+        if clearance > start_travel(judge, np.array(start), np.array(end), bound, travels):
+            return None, None
+    return _judge(robot, joints, allowed, start, pairs, hand, judge), travels
 
 
 def _checked_path(
@@ -258,7 +262,7 @@ def _checked_path(
     box = ([lim.lower for lim in limits], [lim.upper for lim in limits])
     own = SelfPathCheck.of(robot, joints)
     _goal_apart(own, end, what)
-    checker = _straight_checker(robot, joints, allowed, start, pairs, end, bound, hand)
+    checker, travels = _straight_checker(robot, joints, allowed, start, pairs, end, bound, hand)
     try:
         if checker is None:  # nothing of the world near: free at once
             straight = JointPath(joints, (tuple(start), tuple(end)), "straight", 1)
@@ -266,7 +270,7 @@ def _checked_path(
             with posed(checker):  # the goal and the walk in one block: put back once
                 straight = plan_joint_path(
                     checker, start, end, bound, box, plan=False, what=what,
-                    explain=not settings.plan, start_free=True,
+                    explain=not settings.plan, start_free=True, start_travels=travels,
                 )  # fmt: skip
                 # planning explains a failure from its snapshot; the start's contacts allowed
         blocked = own.first_collision(straight.waypoints)

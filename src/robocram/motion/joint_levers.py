@@ -43,33 +43,15 @@ class LeverData:
 
     @classmethod
     def of(cls, robot: RobotHandle, joints: Sequence[str], moving: Sequence[str]) -> LeverData:
-        world, model = robot.world, robot.description.model
-        children = [model.joints[j].child for j in joints]
-        frame_links = tuple(dict.fromkeys([*moving, *children]))
-        at = {link: k for k, link in enumerate(frame_links)}
+        """The data of ``joints`` moving the links ``moving``, as the robot holds things now
+        (what follows from the model alone is kept with it: :func:`_model_levers`)."""
+        fixed = _model_levers(robot.description.model, tuple(joints), tuple(moving))
         radii = link_radii(robot)
-        tree = model.derived(_tree)
-        chains = [_chains(tree, child) for child in children]  # per joint: link -> length
         return cls(
-            frame_links,
-            {link: k for k, link in enumerate(moving)},
-            dict(world.bodies.attachments(robot.name)),
-            np.array([at[link] for link in moving], dtype=np.intp),
-            np.array([at[c] for c in children], dtype=np.intp),
-            np.array([model.joints[j].axis for j in joints], dtype=float).reshape(-1, 3),
-            np.array([model.joints[j].type == "prismatic" for j in joints], dtype=bool),
+            fixed.frame_links, fixed.row, dict(robot.world.bodies.attachments(robot.name)),
+            fixed.centre_rows, fixed.joint_rows, fixed.local_axes, fixed.prismatic,
             np.array([radii.get(link, 0.0) for link in moving], dtype=float),
-            np.array(
-                [[link in found for found in chains] for link in moving], dtype=bool
-            ).reshape(len(moving), len(joints)),
-            np.array(
-                [[c in found and c != model.joints[j].child for c in children]
-                 for j, found in zip(joints, chains, strict=True)],
-                dtype=bool,
-            ).reshape(len(joints), len(joints)),
-            np.array(
-                [[found.get(link, 0.0) for found in chains] for link in moving], dtype=float
-            ).reshape(len(moving), len(joints)),
+            fixed.below, fixed.after, fixed.chains,
         )  # fmt: skip
 
     def link_rows(self, links: Sequence[str]) -> NDArray[np.intp]:
@@ -126,6 +108,68 @@ class LeverData:
         levers[:, self.prismatic] = 1.0
         levers[~self.below[rows]] = 0.0
         return levers
+
+
+@dataclass(frozen=True)
+class _ModelLevers:
+    """What :class:`LeverData` takes from the model alone (see its fields)."""
+
+    frame_links: tuple[str, ...]
+    row: dict[str, int]
+    centre_rows: NDArray[np.intp]
+    joint_rows: NDArray[np.intp]
+    local_axes: FloatArray
+    prismatic: NDArray[np.bool_]
+    below: NDArray[np.bool_]
+    after: NDArray[np.bool_]
+    chains: FloatArray
+
+
+def _model_levers(
+    model: RobotModel, joints: tuple[str, ...], moving: tuple[str, ...]
+) -> _ModelLevers:
+    """The rows, axes, masks and chain lengths of ``joints`` moving ``moving``: they follow
+    from the model (never changed) and the two names' tuples, so they are kept with it per
+    tuples (every motion's checker asks; the arrays are only read)."""
+    kept = model.derived(_lever_tables)
+    found = kept.get((joints, moving))
+    if found is None:
+        found = kept.setdefault((joints, moving), _worked_out(model, joints, moving))
+    return found
+
+
+def _lever_tables(model: RobotModel) -> dict[tuple[tuple[str, ...], tuple[str, ...]], _ModelLevers]:
+    return {}
+
+
+def _worked_out(
+    model: RobotModel, joints: tuple[str, ...], moving: tuple[str, ...]
+) -> _ModelLevers:
+    children = [model.joints[j].child for j in joints]
+    frame_links = tuple(dict.fromkeys([*moving, *children]))
+    at = {link: k for k, link in enumerate(frame_links)}
+    tree = model.derived(_tree)
+    chains = [_chains(tree, child) for child in children]  # per joint: link -> length
+    arrays = (
+        np.array([at[link] for link in moving], dtype=np.intp),
+        np.array([at[c] for c in children], dtype=np.intp),
+        np.array([model.joints[j].axis for j in joints], dtype=float).reshape(-1, 3),
+        np.array([model.joints[j].type == "prismatic" for j in joints], dtype=bool),
+        np.array(
+            [[link in found for found in chains] for link in moving], dtype=bool
+        ).reshape(len(moving), len(joints)),
+        np.array(
+            [[c in found and c != model.joints[j].child for c in children]
+             for j, found in zip(joints, chains, strict=True)],
+            dtype=bool,
+        ).reshape(len(joints), len(joints)),
+        np.array(
+            [[found.get(link, 0.0) for found in chains] for link in moving], dtype=float
+        ).reshape(len(moving), len(joints)),
+    )  # fmt: skip
+    for array in arrays:
+        array.flags.writeable = False  # shared by every checker of these joints
+    return _ModelLevers(frame_links, {link: k for k, link in enumerate(moving)}, *arrays)
 
 
 def cross(a: FloatArray, b: FloatArray) -> FloatArray:

@@ -10,7 +10,7 @@ its budget raises ``ManipulationPathBlocked`` naming what the straight segment r
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -52,6 +52,7 @@ def plan_joint_path(
     explain: bool = True,
     judge: SegmentJudge | None = None,
     start_free: bool = False,
+    start_travels: Mapping[str, float] | None = None,
 ) -> JointPath:
     """A free path from ``start`` to ``goal`` (both free); ``plan=False``: straight only.
 
@@ -61,7 +62,9 @@ def plan_joint_path(
     a second check every segment of a planned path must pass (the world, when ``checker``
     is a snapshot of it), while it is simplified and after. ``start_free``: the caller
     made ``checker`` allowing the contacts it found at ``start`` (the world stands there
-    still), so the start is not asked again.
+    still), so the start is not asked again. ``start_travels``: per link,
+    :func:`~robocram.motion.segment_check.start_travel` of the straight segment, worked
+    out by the caller as the robot stands at ``start`` (the walk takes it as it is).
 
     Raises:
         ManipulationPathBlocked: neither the straight segment nor the planner found a way;
@@ -79,7 +82,7 @@ def plan_joint_path(
                 colliding_pairs=tuple(pairs),
                 path_fraction=fraction,
             )
-    if segment_free(checker, a, b, bound, counter):
+    if segment_free(checker, a, b, bound, counter, start_travels):
         return JointPath(joints, (tuple(a), tuple(b)), "straight", counter.checks)
     if plan:
         lower, upper = planning_box(a, b, limits)

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 from collections import deque
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
 
 import numpy as np
@@ -57,6 +57,7 @@ def _advance_free(
     qb: FloatArray,
     bound: TravelBound,
     counter: CheckCounter,
+    known: Mapping[str, float] | None = None,
 ) -> bool:
     """Conservative advancement: from each checked configuration, step as far as its
     clearance allows (no point can travel further than that), at least 1 cm of travel.
@@ -64,7 +65,8 @@ def _advance_free(
     Rigid steps take each link's travel over the whole segment: the rigid bound, or,
     when the first check's step would not end the walk, the least of it and the bound
     from the start's levers (:func:`start_travel`: a small hand step's joints partly
-    undo each other, which the rigid levers' sum cannot see)."""
+    undo each other, which the rigid levers' sum cannot see; ``known``: what it gave
+    for this segment, the robot standing at ``qa`` as it does now)."""
     travel = bound.travel(qa, qb)  # [m] the most any point moves from qa to qb
     if travel <= 0.0:
         return True
@@ -89,7 +91,7 @@ def _advance_free(
                 step, touching = _near_step(near, reach, travel, by_link, bound, qa, qb)
                 if tighten and max(step, bound.max_link_travel / travel) < 1.0:
                     tighten = False  # posed at qa: its levers bound the whole segment
-                    travel = start_travel(checker, qa, qb, bound, by_link)  # type: ignore[arg-type]
+                    travel = _start_travel(checker, qa, qb, bound, by_link, known)
                     if travel <= 0.0:
                         return not touching or checker.is_free(q)  # nothing that collides moves
                     step, touching = _near_step(near, reach, travel, by_link, bound, qa, qb)
@@ -108,7 +110,7 @@ def _advance_free(
             step = _gaps_step(gaps, reach, travel, by_link, bound, qa, qb)
             if tighten and max(step, bound.max_link_travel / travel) < 1.0:
                 tighten = False  # posed at qa: its levers bound the whole segment
-                travel = start_travel(checker, qa, qb, bound, by_link)  # type: ignore[arg-type]
+                travel = _start_travel(checker, qa, qb, bound, by_link, known)
                 if travel <= 0.0:
                     return True  # nothing that can collide moves
                 step = _gaps_step(gaps, reach, travel, by_link, bound, qa, qb)
@@ -178,6 +180,25 @@ def start_travel(
     most = 0.0
     for link, end in zip(links, ends, strict=True):
         found = kept[link] = min(bound.link_travel(link, qa, qb), end)
+        most = max(most, found)
+    return most
+
+
+def _start_travel(
+    checker: ClearanceChecker,
+    qa: FloatArray,
+    qb: FloatArray,
+    bound: TravelBound,
+    by_link: dict[str, float],
+    known: Mapping[str, float] | None,
+) -> float:
+    """:func:`start_travel` into ``by_link``, or, ``known`` (its per-link travels for
+    this segment and pose, worked out by the caller), the same from those."""
+    if known is None:
+        return start_travel(checker, qa, qb, bound, by_link)  # type: ignore[arg-type]
+    by_link.update(known)
+    most = 0.0
+    for found in known.values():  # as start_travel takes its largest
         most = max(most, found)
     return most
 
@@ -350,16 +371,20 @@ def segment_free(
     qb: FloatArray,
     bound: TravelBound,
     counter: CheckCounter,
+    known: Mapping[str, float] | None = None,
 ) -> bool:
     """Whether every checked configuration strictly between ``qa`` and ``qb`` is free.
 
     The ends are not checked: a planner checks its states once, on their own. A checker
-    that can tell its clearance is walked by conservative advancement instead.
+    that can tell its clearance is walked by conservative advancement instead; ``known``:
+    :func:`start_travel`'s per-link travels of this segment, worked out by the caller
+    with the robot standing at ``qa`` as it does now (the walk does not work them out
+    again).
     """
     qa, qb = np.asarray(qa, dtype=float), np.asarray(qb, dtype=float)
     with posed(checker):
         if can_tell_clearance(checker):
-            return _advance_free(checker, qa, qb, bound, counter)
+            return _advance_free(checker, qa, qb, bound, counter, known)
         n = bound.steps(qa, qb)
         for k in interior(n):
             counter.checks += 1

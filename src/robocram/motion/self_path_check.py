@@ -69,7 +69,7 @@ class SelfPathCheck:
         now = world.joint_states(robot.name)
         standing = {j: v for j, v in now.items() if model.joints[j].mimic is None}
         geometry = model.derived(RobotGeometry.of)
-        distances = SelfDistances(geometry, parts, joints, standing, SELF_MARGIN)
+        distances = _self_distances(robot, geometry, parts, joints, standing)
         q = np.array([now[j] for j in joints])
         floors = _floors(robot, pairs, distances, q)
         held = _held_check(robot, joints, geometry, standing, q)
@@ -234,6 +234,38 @@ def _held_check(
 
 
 _MovedPairs = tuple[tuple[LinkPair, ...], FloatArray, SelfParts]  # pairs, levers, parts
+_StillKey = tuple[str, tuple[str, ...], tuple[tuple[str, float], ...]]  # robot, planned, still
+
+
+def _self_distances(
+    robot: RobotHandle,
+    geometry: RobotGeometry,
+    parts: SelfParts,
+    joints: tuple[str, ...],
+    standing: dict[str, float],
+) -> SelfDistances:
+    """The self distances of a motion of ``joints``, kept with the world per robot,
+    planned joints and the values of the joints they do not set. A check sets the planned
+    joints (and their followers) at every configuration and places only the parts below
+    them: the other parts stand where those values put them, so a motion whose other
+    joints stand as an earlier one's (a handle's next step) asks the same distances, and
+    the configurations that motion measured last (the step's end: the next one's start)
+    are answered as kept."""
+    world = robot.world
+    still = tuple((j, v) for j, v in standing.items() if j not in joints)
+    build = partial(SelfDistances, geometry, parts, joints, standing, SELF_MARGIN)
+    kept = world.derived(_kept_distances)
+    return kept.get((robot.name, joints, still), build, world.versions)
+
+
+def _kept_distances(world: World) -> Derived[_StillKey, SelfDistances]:
+    """Per robot, planned joints and the other joints' values: a motion's self distances,
+    kept while the robot's body is the same (its parts are the pairs' kept with it)."""
+    return Derived(_still_created, size=KEPT)
+
+
+def _still_created(versions: Versions, key: _StillKey) -> int:
+    return versions.created(key[0])
 
 
 def _kept_pairs(world: World) -> Derived[tuple[str, tuple[str, ...]], _MovedPairs]:

@@ -10,6 +10,7 @@ from collections.abc import Mapping
 
 from robocram.robots.errors import DescriptionError
 from robocram.robots.robot_model import RobotModel
+from robocram.robots.urdf_elements import Joint, Mimic
 
 _CONSISTENT = 1e-9  # [rad | m] a follower given with its master must match within this
 
@@ -23,12 +24,12 @@ def mimic_followers(model: RobotModel, values: Mapping[str, float]) -> dict[str,
     for name in values:
         model.joint(name)
     result = dict(values)
-    changed = True
+    followers = model.derived(_mimic_joints)
+    changed = bool(followers)
     while changed:
         changed = False
-        for joint in model.joints.values():
-            mimic = joint.mimic
-            if mimic is None or mimic.joint not in result:
+        for joint, mimic in followers:
+            if mimic.joint not in result:
                 continue
             value = mimic.multiplier * result[mimic.joint] + mimic.offset
             if joint.name in values and abs(values[joint.name] - value) > _CONSISTENT:
@@ -40,3 +41,11 @@ def mimic_followers(model: RobotModel, values: Mapping[str, float]) -> dict[str,
                 result[joint.name] = value
                 changed = True
     return result
+
+
+def _mimic_joints(model: RobotModel) -> tuple[tuple[Joint, Mimic], ...]:
+    """The model's mimic joints with their mimic, in the model's joint order: the walk
+    above visits only these (the others never follow anything), in the order it would
+    visit them among all joints, so the result and its order are the same. Kept with the
+    model (``RobotModel.derived``): models never change."""
+    return tuple((j, j.mimic) for j in model.joints.values() if j.mimic is not None)

@@ -11,7 +11,6 @@ says: the body's carried objects and itself never do.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
-from itertools import chain
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -20,12 +19,18 @@ from numpy.typing import NDArray
 from robocram.world.closest_points import CONTACT_DISTANCE, _carried_with, _link_names
 from robocram.world.obstacle_boxes import ObstacleBoxes
 from robocram.world.pybullet_backend import pybullet
+from robocram.world.table_contacts import (
+    Bounds,
+    bounds_of,
+    box_table,
+    table_contacts,
+    table_distances,
+)
 from robocram.world.world_object import WorldObject
 
 if TYPE_CHECKING:
     from robocram.world.world_facade import WorldFacade
 
-Bounds = tuple[Sequence[float], Sequence[float]]  # a link's (low, high) corners [m]
 SELF_QUERY = 1e-6  # [m] least distance asked of two links of one body: asked for 0, Bullet
 # reports no points for links of one body that penetrate (a 6.6 mm deep HSR finger in its
 # base), so touching is asked a hair farther and the distance compared
@@ -39,23 +44,6 @@ def link_bounds(world: WorldFacade, obj: WorldObject, indices: Iterable[int]) ->
     """
     cid = world.physics.client()
     return {i: pybullet.getAABB(*obj.locate(i), physicsClientId=cid) for i in indices}
-
-
-def box_table(boxes: Sequence[Bounds]) -> NDArray[np.float64]:
-    """``boxes`` as a (boxes, 2, 3) array of their low and high corners [m]: read flat
-    (the same floats; numpy's nested-sequence discovery cost more than the query)."""
-    flat = chain.from_iterable
-    return np.fromiter(flat(flat(boxes)), dtype=float, count=6 * len(boxes)).reshape(-1, 2, 3)
-
-
-def _bounds_of(
-    obj: WorldObject, index: int, bounds: Mapping[int, Bounds] | None, cid: int
-) -> Bounds:
-    if bounds is not None:
-        found = bounds.get(index)
-        if found is not None:
-            return found
-    return pybullet.getAABB(*obj.locate(index), physicsClientId=cid)
 
 
 def _overlaps(
@@ -76,13 +64,7 @@ def _overlaps(
     the others are asked as before, so the pairs come in the broadphase's order."""
     cid = world.physics.client()
     names = _link_names(obj)
-    if links is None:
-        indices = obj.collider_names()  # no shape, no hit
-    elif isinstance(links, tuple):  # asked again and again by a motion's checks: kept
-        indices = obj.colliders_among(links)
-    else:
-        asked = {obj.link_index[name]: name for name in links}
-        indices = {i: name for i, name in asked.items() if i in obj.colliders}
+    indices = _asked(obj, links)
     if obstacles is not None and obstacles.covers(obj, skip):
         yield from _overlaps_in(obstacles, obj, indices, names, skip, distance, bounds, cid)
         return
@@ -92,7 +74,7 @@ def _overlaps(
     for index, link in indices.items():
         if near is not None and index not in near:
             continue  # its bounds meet no other's: the broadphase would find nothing near
-        low, high = _bounds_of(obj, index, bounds, cid)
+        low, high = bounds_of(obj, index, bounds, cid)
         if distance:  # IK checks ask for touching: their bounds as read
             low = [v - distance for v in low]
             high = [v + distance for v in high]
@@ -106,6 +88,17 @@ def _overlaps(
                 other_slot = other.slot(body, other_link)
                 other_name = other_names[other.body_id].get(other_slot, other.name)
                 yield names.get(index, link), other, other_slot, index, other_name
+
+
+def _asked(obj: WorldObject, links: Iterable[str] | None) -> dict[int, str]:
+    """Index -> name of the links of ``obj`` a query asks about that have shapes (all
+    of them for None: no shape, no hit)."""
+    if links is None:
+        return obj.collider_names()
+    if isinstance(links, tuple):  # asked again and again by a motion's checks: kept
+        return obj.colliders_among(links)
+    asked = {obj.link_index[name]: name for name in links}
+    return {i: name for i, name in asked.items() if i in obj.colliders}
 
 
 def _near_somewhere(
@@ -141,7 +134,7 @@ def _overlaps_in(
         body, aabb = obj.body_id, pybullet.getAABB
         read = [aabb(body, index, physicsClientId=cid) for index, _ in order]
     else:
-        read = [_bounds_of(obj, index, bounds, cid) for index, _ in order]
+        read = [bounds_of(obj, index, bounds, cid) for index, _ in order]
     boxes = box_table(read)
     for box, row in obstacles.overlapping(boxes[:, 0] - distance, boxes[:, 1] + distance, skip):
         index, link = order[box]
@@ -210,6 +203,8 @@ def link_pairs_in_contact(
     nothing (the answer and its order as without).
     """
     skip = {obj.name} | {o.name for o in ignore}
+    if obstacles is not None and obstacles.covers(obj, skip):
+        return table_contacts(world, obj, _asked(obj, links), skip, distance, obstacles, bounds)
     found: dict[tuple[str, str, str], tuple[str, WorldObject, str]] = {}
     overlaps = _overlaps(world, obj, links, skip, distance, obstacles, bounds, kept)
     for link, other, other_link, index, other_name in overlaps:
@@ -231,6 +226,8 @@ def link_distances(
     nearer than ``distance``, with the smallest distance between them (negative when they
     penetrate). ``links`` limits the links of ``obj`` asked about (default: all)."""
     skip = {obj.name} | {o.name for o in ignore}
+    if obstacles is not None and obstacles.covers(obj, skip):
+        return table_distances(world, obj, _asked(obj, links), skip, distance, obstacles)
     found: dict[tuple[str, str, str], tuple[str, WorldObject, str, float]] = {}
     overlaps = _overlaps(world, obj, links, skip, distance, obstacles)
     for link, other, other_link, index, other_name in overlaps:
@@ -262,7 +259,7 @@ def self_contacts(
         return []
     cid = world.physics.client()
     rows = obj.pair_rows(key)
-    boxes = [_bounds_of(obj, i, bounds, cid) for i in rows.used]
+    boxes = [bounds_of(obj, i, bounds, cid) for i in rows.used]
     table = box_table(boxes)
     low, high = table[:, 0] - distance, table[:, 1] + distance
     below = (low[:, None, :] <= high[None, :, :]).all(axis=2)  # [i, j]: i's low under j's

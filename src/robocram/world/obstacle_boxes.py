@@ -12,6 +12,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from functools import cached_property, partial
+from itertools import chain
 from typing import Protocol
 
 import numpy as np
@@ -71,11 +72,12 @@ class ObstacleBoxes:
         low = np.concatenate([r.low for r in rows]) if rows else np.zeros((0, 3))
         high = np.concatenate([r.high for r in rows]) if rows else np.zeros((0, 3))
         low.flags.writeable = high.flags.writeable = False  # a kept table is shared
+        flat = chain.from_iterable  # the same tuples as nested loops, built in C
         return cls(
             skipped,
-            tuple(o for r in rows for o in (r.obj,) * len(r.indices)),
-            tuple(i for r in rows for i in r.indices),
-            tuple(n for r in rows for n in r.names),
+            tuple(flat((r.obj,) * len(r.indices) for r in rows)),
+            tuple(flat(r.indices for r in rows)),
+            tuple(flat(r.names for r in rows)),
             low,
             high,
         )
