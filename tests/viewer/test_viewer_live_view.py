@@ -64,16 +64,16 @@ def test_view_waits_for_the_browser_then_the_page_sees_the_run(
     argv = ["view", "--port", str(port), "--speed", str(SPEED), "--seconds", str(SERVE_AFTER)]
     argv += PACING
     thread = _run_view(argv, codes)
-    said = ""
-    for _ in range(SERVER_POLLS):  # the server listens, then says it waits
-        said += capsys.readouterr().out
-        if "waiting for a browser" in said or not thread.is_alive():
-            break
-        time.sleep(POLL)
-    assert "waiting for a browser" in said
-    with HeadlessChromium(*PAGE) as browser:
+    with HeadlessChromium(*PAGE) as browser:  # starts while the view builds its scene
         browser.call("Page.enable")
         browser.call("Page.addScriptToEvaluateOnNewDocument", source=WATCHER)
+        said = ""
+        for _ in range(SERVER_POLLS):  # the server listens, then says it waits
+            said += capsys.readouterr().out
+            if "waiting for a browser" in said or not thread.is_alive():
+                break
+            time.sleep(POLL)
+        assert "waiting for a browser" in said
         browser.open(f"http://127.0.0.1:{port}")
         thread.join(timeout=600)  # the run, then SERVE_AFTER of serving
         text = browser.wait_for_text("pick-mug succeeded", "perform going succeeded")
