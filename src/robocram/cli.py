@@ -95,6 +95,18 @@ def _add_viewer_commands(commands: argparse._SubParsersAction[argparse.ArgumentP
     view.add_argument(
         "--speed", type=float, default=1.0, help="motions play at this many times their pace"
     )
+    view.add_argument(
+        "--dwell",
+        type=float,
+        help="each state stays on the page this long [s] before the plan goes on "
+        "(default: the viewer's DWELL, 0.3)",
+    )
+    view.add_argument(
+        "--push-rate",
+        type=float,
+        help="at most this many pushes to the page a second [Hz] (default: the viewer's "
+        "MAX_PUSH_RATE, 5)",
+    )
     replay = commands.add_parser("replay", help="a stored run in the browser viewer")
     replay.add_argument("db", type=Path, help="trace database (SQLite)")
     replay.add_argument("--run", type=int, help="run id (default: the last run)")
@@ -137,6 +149,11 @@ def _view(args: argparse.Namespace) -> int:
     _check_address(args.host, args.port)
     if not args.speed > 0.0:
         raise CliInputError(f"--speed {args.speed} must be positive, e.g. 1 (the robot's pace)")
+    if args.dwell is not None and not args.dwell >= 0.0:
+        raise CliInputError(f"--dwell {args.dwell} must be 0 or more seconds, e.g. 0.3")
+    if args.push_rate is not None and not args.push_rate > 0.0:
+        raise CliInputError(f"--push-rate {args.push_rate} must be positive, e.g. 5 [Hz]")
+    pacing = {"dwell": args.dwell, "push_rate": args.push_rate}
     viewer_module = _viewer_module()
     scene = tabletop_scene(args.robot)
     try:
@@ -155,7 +172,12 @@ def _view(args: argparse.Namespace) -> int:
                 viewer.wait_for_browser()
             try:
                 with (
-                    viewer_module.LiveFeed(viewer, scene.world, args.speed) as feed,
+                    viewer_module.LiveFeed(
+                        viewer,
+                        scene.world,
+                        args.speed,
+                        **{name: value for name, value in pacing.items() if value is not None},
+                    ) as feed,
                     listening(feed),
                     simulated_robot(scene.world, scene.robot, name="pick-mug"),
                 ):

@@ -22,6 +22,11 @@ import psutil
 
 RAY = str(Path(sys.executable).with_name("ray"))
 START_LIMIT = 90.0  # [s] for one `ray start`; a guard against a hang, not a measure
+# the head's GCS checks each node from its start and every 0.2 s (Ray's defaults: after
+# 5 s, every 3 s), so a killed raylet, which refuses at once, is declared dead within a
+# second, not ~3.5 s; the timeout of a check and the failures needed stay Ray's (a slow
+# but live raylet is not declared dead any sooner)
+HEALTH_CHECKS = {"RAY_health_check_initial_delay_ms": "0", "RAY_health_check_period_ms": "200"}
 
 
 # ports Ray's components take by default (the dashboard agent's HTTP 52365, GCS 6379, the
@@ -47,7 +52,12 @@ class LocalCluster:
         # the nodes authenticate as this process will: Ray reads the mode once per process,
         # and a local `ray.init()` turns tokens on in it (its token in ~/.ray/auth_token)
         mode = os.environ.get("RAY_AUTH_MODE", "disabled")
-        self.env = {**os.environ, "RAY_AUTH_MODE": mode, "RAY_USAGE_STATS_ENABLED": "0"}
+        self.env = {
+            **os.environ,
+            "RAY_AUTH_MODE": mode,
+            "RAY_USAGE_STATS_ENABLED": "0",
+            **HEALTH_CHECKS,
+        }
         self.address = f"127.0.0.1:{_free_port()}"
         self._dirs: list[str] = []  # short: Ray's socket paths must stay under 108 bytes
         self._killed: list[psutil.Process] = []  # a killed node's processes, orphaned now

@@ -31,6 +31,7 @@ from tests.ros.served_state import assert_same_state, served_state
 AGREE = 0.01  # [m] ROS 2 and direct projection agree this closely
 MOVED = 0.05  # [m] the base has started moving
 LEASE = 4.0  # [s] a dead process is gone from the ROS graph after it (fastdds_profile.xml)
+LOST_AFTER = 0.5  # [s] a server gone from the graph this long has lost its goals (here)
 SAME = 1e-9  # [rad | s] what crosses ROS unchanged (float64; times to the nanosecond)
 TRAJECTORY_SERVERS = {
     "torso": "/torso_controller/follow_joint_trajectory",
@@ -299,7 +300,12 @@ def test_a_point_head_controller_aims_the_camera_at_the_target(
 def test_a_controller_killed_mid_goal_gives_a_typed_failure_in_bounded_time(
     drivers2: DriverPool,
 ) -> None:
-    with drivers2("pr2", base_speed=0.3) as driver, ros_robot("pr2", ros=2) as run:
+    # gone from the graph after its lease, then LOST_AFTER more (the packaged facts: 2 s)
+    facts = f"ros_connection_timeout(pr2, {LOST_AFTER}).\n" + default_facts("pr2", ros=2)
+    with (
+        drivers2("pr2", base_speed=0.3) as driver,
+        ros_robot("pr2", ros=2, ros_facts=facts) as run,
+    ):
         client = run.environment.client
         start = client.base_pose()
         killed: list[float] = []
@@ -320,5 +326,5 @@ def test_a_controller_killed_mid_goal_gives_a_typed_failure_in_bounded_time(
         noticed = time.monotonic() - killed[0]
     assert lost.value.server == "/navigate_to_pose"
     assert "left the ROS graph" in str(lost.value)
-    assert noticed < LEASE + 2.0 + 1.5  # the dead process's lease, ros_connection_timeout
+    assert noticed < LEASE + LOST_AFTER + 1.5  # the dead process's lease, then LOST_AFTER
     assert multiprocessing.active_children() == []

@@ -147,7 +147,9 @@ def test_a_driver_dying_mid_goal_gives_a_typed_failure_not_a_hang(
     roscore: Roscore, drivers: DriverPool, master_nodes: Callable[[], set[str]]
 ) -> None:
     threads = set(threading.enumerate())
-    with drivers(base_speed=0.3) as driver, ros_robot("pr2", roscore.uri) as run:
+    # LOST after 1 s without status (the packaged facts: 2 s); a live driver's comes at 5 Hz
+    facts = _facts_with("ros_connection_timeout(pr2, 1.0).")
+    with drivers(base_speed=0.3) as driver, ros_robot("pr2", roscore.uri, facts) as run:
         client = run.environment.client
         start = client.base_pose()
 

@@ -1,5 +1,9 @@
 """``robocram view`` watched live in headless Chromium: it waits for the browser, then the
-page sees the world change state by state while the plan runs."""
+page sees the world change state by state while the plan runs.
+
+The claims are which states reach the page and in what order, not how long each stays:
+the runs here pace states briefly (``--dwell``, ``--push-rate``); the feed still waits for
+the page to draw each one."""
 
 from __future__ import annotations
 
@@ -7,15 +11,20 @@ import re
 import socket
 import threading
 import time
+from typing import cast
 
 import pytest
 
 from robocram.cli import EXIT_INPUT, EXIT_OK, main
+from robocram.viewer import LiveFeed, Viewer
+from robocram.viewer.errors import ViewerArgumentError
 from robocram.viewer.headless_browser import HeadlessChromium
+from robocram.world import World
 
 SPEED = 128.0  # motions play at 128x their pace (fewer frames); each state is still paced
 STATES_SEEN = 5  # at least this many different world states reach the page
-SERVE_AFTER = 3.0  # [s] the page is served after the run (its last updates arrive)
+SERVE_AFTER = 1.0  # [s] the page is served after the run (its last updates arrive)
+PACING = ["--dwell", "0.05", "--push-rate", "50"]  # [s], [Hz]: each state drawn, then on
 PAGE = (400, 250)  # [px] a small page: SwiftShader draws each frame in a quarter the time
 SERVER_POLLS, POLL = 1200, 0.1  # looks for the server to wait [s apart]: a hang guard
 
@@ -53,22 +62,23 @@ def test_view_waits_for_the_browser_then_the_page_sees_the_run(
     port = _free_port()
     codes: list[int] = []
     argv = ["view", "--port", str(port), "--speed", str(SPEED), "--seconds", str(SERVE_AFTER)]
+    argv += PACING
     thread = _run_view(argv, codes)
-    said = ""
-    for _ in range(SERVER_POLLS):  # the server listens, then says it waits
-        said += capsys.readouterr().out
-        if "waiting for a browser" in said or not thread.is_alive():
-            break
-        time.sleep(POLL)
-    assert "waiting for a browser" in said
-    with HeadlessChromium(*PAGE) as browser:
+    with HeadlessChromium(*PAGE) as browser:  # starts while the view builds its scene
         browser.call("Page.enable")
         browser.call("Page.addScriptToEvaluateOnNewDocument", source=WATCHER)
+        said = ""
+        for _ in range(SERVER_POLLS):  # the server listens, then says it waits
+            said += capsys.readouterr().out
+            if "waiting for a browser" in said or not thread.is_alive():
+                break
+            time.sleep(POLL)
+        assert "waiting for a browser" in said
         browser.open(f"http://127.0.0.1:{port}")
         thread.join(timeout=600)  # the run, then SERVE_AFTER of serving
+        text = browser.wait_for_text("pick-mug succeeded", "perform going succeeded")
         seen = browser.evaluate("window.__states")
         waited = browser.evaluate("window.__waited")
-        text = browser.evaluate("document.body.innerText")
     assert codes == [EXIT_OK]
     assert waited  # the page showed the viewer before any state: the plan waited for it
     assert len(seen) >= STATES_SEEN, seen
@@ -80,6 +90,7 @@ def test_view_waits_for_the_browser_then_the_page_sees_the_run(
 
 def test_view_no_wait_runs_without_a_browser(capsys: pytest.CaptureFixture[str]) -> None:
     argv = ["view", "--no-wait", "--port", str(_free_port()), "--speed", "50", "--seconds", "0"]
+    argv += PACING
     assert main(argv) == EXIT_OK
     out = capsys.readouterr()
     assert "waiting for a browser" not in out.out and "the plan failed" not in out.err
@@ -88,3 +99,28 @@ def test_view_no_wait_runs_without_a_browser(capsys: pytest.CaptureFixture[str])
 def test_view_refuses_a_speed_that_is_not_positive(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["view", "--no-wait", "--speed", "0", "--port", str(_free_port())]) == EXIT_INPUT
     assert "--speed 0.0 must be positive" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize(
+    ("flag", "value", "says"),
+    [
+        ("--dwell", "-0.1", "--dwell -0.1 must be 0 or more"),
+        ("--push-rate", "0", "--push-rate 0.0"),
+    ],
+)
+def test_view_refuses_pacing_out_of_range(
+    flag: str, value: str, says: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    argv = ["view", "--no-wait", flag, value, "--port", str(_free_port())]
+    assert main(argv) == EXIT_INPUT
+    assert says in capsys.readouterr().err
+
+
+@pytest.mark.parametrize(
+    ("pacing", "says"),
+    [({"dwell": -0.1}, "dwell must be 0 or more"), ({"push_rate": 0.0}, "push rate must be")],
+)
+def test_a_live_feed_refuses_pacing_out_of_range(pacing: dict[str, float], says: str) -> None:
+    nothing_drawn = cast(Viewer, None)  # the pacing is checked before the viewer is used
+    with pytest.raises(ViewerArgumentError, match=says):
+        LiveFeed(nothing_drawn, cast(World, None), 1.0, **pacing)

@@ -10,8 +10,10 @@ would otherwise take the plan's turns at the interpreter). Use it as
 Projection runs far faster than the robot would move. To be watched, a feed given a
 ``speed`` paces the plan instead: after each motion the plan waits until the page has
 played the motion's trajectories (at ``speed`` times their own pace), every open page
-has drawn the state after it, and :data:`DWELL` seconds have passed, so every state
-reaches the page and stays long enough to be seen.
+has drawn the state after it, and ``dwell`` seconds (:data:`DWELL` unless told) have
+passed, so every state reaches the page and stays long enough to be seen. ``dwell`` and
+``push_rate`` are the pacing: a caller that only checks which states arrive (a test) may
+make them short; people watching want the defaults.
 """
 
 from __future__ import annotations
@@ -42,12 +44,30 @@ Step = tuple[Moment, tuple[JointTrajectory, ...]]  # a state, the trajectories t
 class LiveFeed(TaskListener):
     """Sends ``viewer`` each top level's tree and ``world``'s state after every motion."""
 
-    def __init__(self, viewer: Viewer, world: World, speed: float | None = None) -> None:
+    def __init__(
+        self,
+        viewer: Viewer,
+        world: World,
+        speed: float | None = None,
+        *,
+        dwell: float = DWELL,
+        push_rate: float = MAX_PUSH_RATE,
+    ) -> None:
         if speed is not None and not speed > 0.0:
             raise ViewerArgumentError(f"the viewing speed must be positive, got {speed}")
+        if not dwell >= 0.0:
+            raise ViewerArgumentError(
+                f"the dwell must be 0 or more seconds, got {dwell}; e.g. {DWELL} (the default)"
+            )
+        if not push_rate > 0.0:
+            raise ViewerArgumentError(
+                f"the push rate must be positive, got {push_rate} Hz; e.g. {MAX_PUSH_RATE}"
+            )
         self.viewer = viewer
         self.world = world
         self.speed = speed  # None: the plan runs at full speed, the page skips states
+        self.dwell = dwell  # [s] a paced feed shows each drawn state this long
+        self.push_rate = push_rate  # [Hz] at most this many pushes to the browsers a second
         self._root: Task | None = None
         self._motions: set[int] = set()
         self._queued: list[Step] = []
@@ -139,7 +159,7 @@ class LiveFeed(TaskListener):
             self._wake.notify_all()
 
     def _feed(self) -> None:
-        pause = 1.0 / MAX_PUSH_RATE
+        pause = 1.0 / self.push_rate
         while True:
             with self._wake:
                 self._wake.wait_for(self._has_work)
@@ -172,7 +192,7 @@ class LiveFeed(TaskListener):
                 self.viewer.play(trajectory, self.speed)
             self.viewer.add_moments([moment])
             self.viewer.wait_until_drawn()
-            time.sleep(DWELL)
+            time.sleep(self.dwell)
 
     def _has_work(self, stopping: bool = True) -> bool:
         queued = self._queued or self._costmaps or self._tree_changed
