@@ -70,6 +70,10 @@ def _advance_free(
     travel = bound.travel(qa, qb)  # [m] the most any point moves from qa to qb
     if travel <= 0.0:
         return True
+    # the least step: the dense check's spacing on the rigid bound (``bound.steps``, as
+    # :func:`first_collision` walks), kept when the travel is tightened, so a walk near a
+    # contact is never coarser than that check (a tighter travel would stretch it)
+    least = bound.max_link_travel / travel
     local = (  # reading levers costs a sixth of a check: worth it on long sweeps only
         _LocalSteps.of(checker, qa, qb)
         if travel > LOCAL_LEVERS_FROM and not bound.mimicked and can_tell_levers(checker)
@@ -89,7 +93,7 @@ def _advance_free(
                 step, touching = local.bounded_step(near, reach, bound.max_link_travel)
             else:  # rigid steps
                 step, touching = _near_step(near, reach, travel, by_link, bound, qa, qb)
-                if tighten and max(step, bound.max_link_travel / travel) < 1.0:
+                if tighten and max(step, least) < 1.0:
                     tighten = False  # posed at qa: its levers bound the whole segment
                     travel = _start_travel(checker, qa, qb, bound, by_link, known)
                     if travel <= 0.0:
@@ -97,7 +101,7 @@ def _advance_free(
                     step, touching = _near_step(near, reach, travel, by_link, bound, qa, qb)
             if touching and not checker.is_free(q):
                 return False  # the contact check decides, as everywhere
-            s += max(step, bound.max_link_travel / travel)
+            s += max(step, least)
             if s >= 1.0:
                 return True
             continue
@@ -108,13 +112,13 @@ def _advance_free(
             step = local.step(gaps, reach, bound.max_link_travel)
         else:
             step = _gaps_step(gaps, reach, travel, by_link, bound, qa, qb)
-            if tighten and max(step, bound.max_link_travel / travel) < 1.0:
+            if tighten and max(step, least) < 1.0:
                 tighten = False  # posed at qa: its levers bound the whole segment
                 travel = _start_travel(checker, qa, qb, bound, by_link, known)
                 if travel <= 0.0:
                     return True  # nothing that can collide moves
                 step = _gaps_step(gaps, reach, travel, by_link, bound, qa, qb)
-        s += max(step, bound.max_link_travel / travel)
+        s += max(step, least)
         if s >= 1.0:
             return True
 
