@@ -7,6 +7,7 @@ seeds a copy of the world in another physics client.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 from robocram.world.attachment import Attachment
@@ -14,6 +15,7 @@ from robocram.world.errors import WorldClosedError
 from robocram.world.pybullet_backend import pybullet
 from robocram.world.world_object import RobotObject, WorldObject
 from robocram.world.world_tables import WorldTables
+from robocram.world.written_bases import Vector
 
 
 @dataclass(frozen=True)
@@ -44,7 +46,10 @@ class WorldState:
         return cls(
             handles=handles,
             bodies=tuple(
-                tuple(_body_state(world.physics_client(), b) for b in h.bodies) for h in handles
+                tuple(
+                    _body_state(world.physics_client(), b, world.base_inputs(h)) for b in h.bodies
+                )
+                for h in handles
             ),
             attachments=tuple(world.all_attachments()),
             holds=tuple((h.name, tuple(world.held_joints(h).items())) for h in handles),
@@ -83,14 +88,20 @@ class WorldState:
                     pybullet.resetJointState(target, index, position, velocity, physicsClientId=cid)
             world.versions.moved(handle.name)
             world.versions.jointed(handle.name)
+            bases = [(t, *b.base) for t, b in zip(targets, states, strict=True)]
+            world.wrote_bases(world.object(handle.name), bases)
         world.set_attachments(self.attachments)
         for name, held in self.holds:
             world.set_held_joints(name, dict(held))
         world.time = self.time
 
 
-def _body_state(cid: int, body: int) -> BodyState:
-    pos, orn = pybullet.getBasePositionAndOrientation(body, physicsClientId=cid)
+def _body_state(cid: int, body: int, written: Mapping[int, tuple[Vector, Vector]]) -> BodyState:
+    """``body``'s state; its base as last written where it still stands so (PyBullet reads
+    a base a last bit off what was written: see :mod:`~robocram.world.written_bases`)."""
+    pos, orn = written.get(body) or pybullet.getBasePositionAndOrientation(
+        body, physicsClientId=cid
+    )
     lin, ang = pybullet.getBaseVelocity(body, physicsClientId=cid)
     indices = [
         i
