@@ -12,7 +12,7 @@ given it and use its public methods.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Iterator, Mapping
+from collections.abc import Iterable, Iterator, Mapping, Sequence
 from typing import Protocol
 
 from robocram.robots import RobotModel, mimic_followers
@@ -269,7 +269,7 @@ class WorldTables:
             written.append((body, base.position, base.orientation))
         self.put_bases(handle, written)
 
-    def put_bases(self, handle: WorldObject, bases: list[BaseInput]) -> None:
+    def put_bases(self, handle: WorldObject, bases: Sequence[BaseInput]) -> None:
         """Write ``handle``'s bodies' bases (body id, COM position, orientation), at rest."""
         cid = self.physics_client()
         for body, position, orientation in bases:
@@ -280,7 +280,7 @@ class WorldTables:
         self._versions.moved(handle.name)
         self.wrote_bases(handle, bases)
 
-    def wrote_bases(self, handle: WorldObject, bases: list[BaseInput]) -> None:
+    def wrote_bases(self, handle: WorldObject, bases: Sequence[BaseInput]) -> None:
         """``handle``'s bases were just written with ``bases`` (its pose counter moved):
         keep the inputs, which a snapshot writes again to stand exactly here."""
         self._bases.wrote(handle.name, self._versions, bases)
