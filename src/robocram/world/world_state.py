@@ -8,11 +8,12 @@ seeds a copy of the world in another physics client.
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from robocram.world.attachment import Attachment
 from robocram.world.errors import WorldClosedError
 from robocram.world.pybullet_backend import pybullet
+from robocram.world.versions import Stamp, Versions
 from robocram.world.world_object import RobotObject, WorldObject
 from robocram.world.world_tables import WorldTables
 from robocram.world.written_bases import Vector
@@ -36,6 +37,8 @@ class WorldState:
     attachments: tuple[Attachment, ...]
     holds: tuple[tuple[str, tuple[tuple[str, float], ...]], ...]  # object -> held joints
     time: float
+    stamps: tuple[Stamp, ...] = ()  # per handle, its change counters when captured
+    clock: Versions | None = field(default=None, compare=False, repr=False)  # whose counters
 
     @classmethod
     def capture(cls, world: WorldTables) -> WorldState:
@@ -43,17 +46,15 @@ class WorldState:
         if world.closed:
             raise WorldClosedError()
         handles = tuple(world.objects())
+        cid = world.physics_client()
         return cls(
             handles=handles,
-            bodies=tuple(
-                tuple(
-                    _body_state(world.physics_client(), b, world.base_inputs(h)) for b in h.bodies
-                )
-                for h in handles
-            ),
+            bodies=tuple(_object_state(cid, h, world.base_inputs(h)) for h in handles),
             attachments=tuple(world.all_attachments()),
             holds=tuple((h.name, tuple(world.held_joints(h).items())) for h in handles),
             time=world.time,
+            stamps=tuple(world.versions.body(h) for h in handles),
+            clock=world.versions,
         )
 
     def restore(self, world: WorldTables) -> None:
@@ -69,17 +70,32 @@ class WorldState:
         for handle in self.handles:
             if handle.name not in world:
                 world.insert(handle)
-        self._apply(world)
+        self._apply(world, self._unchanged(world))
+
+    def _unchanged(self, world: WorldTables) -> set[str]:
+        """The objects nothing moved since the capture: left as they stand, since writing
+        a base read from PyBullet back would move it a last bit (after physics moved it,
+        the inputs that put it there are unknown)."""
+        if self.clock is not world.versions:
+            return set()
+        versions = world.versions
+        return {
+            handle.name
+            for handle, stamp in zip(self.handles, self.stamps, strict=True)
+            if world.object(handle.name) is handle and versions.body(handle) == stamp
+        }
 
     def recreate(self, world: WorldTables) -> None:
         """Fill an empty ``world`` (another client) with new handles in this state."""
         for handle in self.handles:
             world.insert(_clone(handle))
-        self._apply(world)
+        self._apply(world, set())
 
-    def _apply(self, world: WorldTables) -> None:
+    def _apply(self, world: WorldTables, unchanged: set[str]) -> None:
         cid = world.physics_client()
         for handle, states in zip(self.handles, self.bodies, strict=True):
+            if handle.name in unchanged:
+                continue
             targets = world.object(handle.name).bodies
             for target, body in zip(targets, states, strict=True):
                 pybullet.resetBasePositionAndOrientation(target, *body.base, physicsClientId=cid)
@@ -94,6 +110,12 @@ class WorldState:
         for name, held in self.holds:
             world.set_held_joints(name, dict(held))
         world.time = self.time
+
+
+def _object_state(
+    cid: int, handle: WorldObject, written: Mapping[int, tuple[Vector, Vector]]
+) -> tuple[BodyState, ...]:
+    return tuple(_body_state(cid, b, written) for b in handle.bodies)
 
 
 def _body_state(cid: int, body: int, written: Mapping[int, tuple[Vector, Vector]]) -> BodyState:
