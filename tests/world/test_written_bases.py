@@ -4,6 +4,7 @@ last wrote (read back raw from PyBullet here, not through the world)."""
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator
 
 import pybullet
@@ -11,7 +12,7 @@ import pytest
 
 from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
-from robocram.world import World
+from robocram.world import Camera, World
 
 # A stand of the HSR's kitchen mug transport: PyBullet reads its yaw a last bit off.
 STAND = Pose(
@@ -53,3 +54,12 @@ def test_a_snapshot_puts_a_written_base_back_to_the_bit(kitchen: World) -> None:
     kitchen.snapshots.restore(state)
     kitchen.snapshots.restore(state)
     assert _raw(kitchen, "hsrb") == before
+
+
+def test_a_visibility_check_leaves_the_body_it_isolates_to_the_bit(kitchen: World) -> None:
+    kitchen.set_pose("hsrb", STAND)
+    before = _raw(kitchen, "hsrb")
+    look = Pose.from_xyz_rpy((0.0, 1.6, 1.0), (-math.pi / 2, 0.0, -math.pi / 2))  # along +x
+    for method in ("ray", "render"):
+        kitchen.view.visibility_from(Camera(look, 1.0, 0.8), "hsrb", method)
+        assert _raw(kitchen, "hsrb") == before, method
