@@ -4,7 +4,8 @@ Each trajectory is judged the moment projection reports it, in the world as it i
 Every configuration 1 cm of link travel / 0.02 rad apart along an arm, torso, head or
 gripper trajectory, and every pose 1 cm / 0.02 rad apart along a base trajectory, must be
 free, held objects included; contacts the motion starts with, the moving hand's own links
-(grasping) and the fingers on a movable object a gripper closes on do not count.
+(grasping) and the fingers on a movable object a gripper closes on do not count. The world
+is put back through a snapshot, to the bit: a judged run plans what a plain one does.
 """
 
 from __future__ import annotations
