@@ -63,3 +63,29 @@ def test_a_visibility_check_leaves_the_body_it_isolates_to_the_bit(kitchen: Worl
     for method in ("ray", "render"):
         kitchen.view.visibility_from(Camera(look, 1.0, 0.8), "hsrb", method)
         assert _raw(kitchen, "hsrb") == before, method
+
+
+def _settled(world: World, yaw: float) -> tuple[tuple[float, ...], tuple[float, ...]]:
+    """The mug's base as PyBullet reads it after physics settled it from ``yaw``."""
+    x, y, z = world.pose("mug-1").position
+    world.set_pose("mug-1", Pose.from_xyz_rpy((x, y, z + 0.002), (0.0, 0.0, yaw)))
+    world.physics.simulate(0.1)  # physics moved it: what would put it here is unknown
+    return _raw(world, "mug-1")
+
+
+def _moves_when_written_back(world: World, yaw: float) -> bool:
+    read = _settled(world, yaw)
+    pybullet.resetBasePositionAndOrientation(
+        world.object("mug-1").body_id, *read, physicsClientId=world.physics.client()
+    )
+    return _raw(world, "mug-1") != read
+
+
+def test_a_snapshot_leaves_a_body_physics_moved_as_it_stands_when_the_block_left_it(
+    kitchen: World,
+) -> None:
+    yaw = next(y for y in (0.1 * k for k in range(1, 60)) if _moves_when_written_back(kitchen, y))
+    before = _settled(kitchen, yaw)
+    with kitchen.snapshots.stored_state():
+        kitchen.set_pose("hsrb", Pose((1.0, 0.5, 0.0)))
+    assert _raw(kitchen, "mug-1") == before
