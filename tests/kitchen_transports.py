@@ -9,9 +9,10 @@ modules asking for one carry ``SHARED`` (one xdist worker runs them all).
 
 A traced run plans what a plain one does (the trace and the hand's watcher only read the
 world; the attempts, final joints and poses compared bit for bit): the runs ``TRACED``
-names are traced. The projection tests' judged runs stay their own: the judge does not
-leave the world bit for bit as it found it (the base pose it puts back is the one read,
-which PyBullet normalises again), and a judged HSR mug transport took other stands.
+names are traced. The projection tests' judged runs are their own: the judge once left
+the world a last bit off (a base read and written back moves: PyBullet reads it through a
+rotation matrix), and a judged HSR mug transport took other stands; it now puts the world
+back through a snapshot, to the bit (tests/projection/test_judged_transport_plans_as_plain.py).
 """
 
 from __future__ import annotations

@@ -4,7 +4,8 @@ Each trajectory is judged the moment projection reports it, in the world as it i
 Every configuration 1 cm of link travel / 0.02 rad apart along an arm, torso, head or
 gripper trajectory, and every pose 1 cm / 0.02 rad apart along a base trajectory, must be
 free, held objects included; contacts the motion starts with, the moving hand's own links
-(grasping) and the fingers on a movable object a gripper closes on do not count.
+(grasping) and the fingers on a movable object a gripper closes on do not count. The world
+is put back through a snapshot, to the bit: a judged run plans what a plain one does.
 """
 
 from __future__ import annotations
@@ -28,10 +29,13 @@ class Judge:
         self.judged: list[tuple[str, int]] = []  # (kind, configurations checked)
 
     def __call__(self, trajectory: JointTrajectory) -> None:
-        if trajectory.joint_names == BASE_JOINTS:
-            self.judged.append(("base", self._base(trajectory)))
-        else:
-            self.judged.append((trajectory.kind, self._arm(trajectory)))
+        # Put back through a snapshot: a pose read and set again is a last bit off (PyBullet
+        # reads a base through a rotation matrix), and a judged run must plan as a plain one.
+        with self.world.snapshots.stored_state():
+            if trajectory.joint_names == BASE_JOINTS:
+                self.judged.append(("base", self._base(trajectory)))
+            else:
+                self.judged.append((trajectory.kind, self._arm(trajectory)))
 
     def _hand_links(self, joints: tuple[str, ...]) -> set[str]:
         desc = self.world.robot(self.robot).description
@@ -44,7 +48,6 @@ class Judge:
 
     def _arm(self, trajectory: JointTrajectory) -> int:
         world, joints = self.world, trajectory.joint_names
-        end = world.joint_states(self.robot)
         points = trajectory.positions()
         start = dict(zip(joints, points[0], strict=True))
         judge = BulletScene(RobotHandle.of(world, self.robot), joints, self._hand_links(joints))
@@ -60,7 +63,6 @@ class Judge:
                 hits = set(judge.colliding(q)) - allowed
                 assert not hits, f"{trajectory.kind} trajectory of {joints} hits {hits} at {q}"
                 checked += 1
-        world.set_joint_states(self.robot, {j: end[j] for j in joints})
         return checked
 
     def _squeezed(self, judge: BulletScene, trajectory: JointTrajectory) -> set[tuple[str, str]]:
@@ -75,8 +77,7 @@ class Judge:
 
     def _base(self, trajectory: JointTrajectory) -> int:
         world, robot = self.world, self.robot
-        end = world.pose(robot)
-        height = end.position[2]
+        height = world.pose(robot).position[2]
         points = trajectory.positions()
         judge = BulletScene(RobotHandle.of(world, robot), ())
 
@@ -94,5 +95,4 @@ class Judge:
                 hits = set(judge.colliding_now()) - allowed
                 assert not hits, f"base path hits {hits} at {qa + (qb - qa) * (k / n)}"
                 checked += 1
-        world.set_pose(robot, end)
         return checked

@@ -8,13 +8,14 @@ written here (and the holds read), with the block that restores everything on le
 from __future__ import annotations
 
 import contextlib
-from collections.abc import Iterable, Iterator, Mapping
+from collections.abc import Iterable, Iterator, Mapping, Sequence
 
 from robocram.world.attachment import Attachment
 from robocram.world.pybullet_backend import pybullet
 from robocram.world.world_part import WorldPart
 from robocram.world.world_state import WorldState
 from robocram.world.world_tables import ObjectRef
+from robocram.world.written_bases import BaseInput
 
 
 class Snapshots(WorldPart):
@@ -28,6 +29,24 @@ class Snapshots(WorldPart):
             yield state
         finally:
             state.restore(self._tables)
+
+    def bases(self, obj: ObjectRef) -> list[BaseInput]:
+        """Per body of ``obj``: its id and the base (COM position, orientation) that puts
+        it exactly where it stands: as last written while it stands so, else as read."""
+        handle = self._world.object(obj)
+        written = self._tables.base_inputs(handle)
+        cid = self._tables.physics_client()
+        found: list[BaseInput] = []
+        for body in handle.bodies:
+            pos, orn = written.get(body) or pybullet.getBasePositionAndOrientation(
+                body, physicsClientId=cid
+            )
+            found.append((body, tuple(pos), tuple(orn)))
+        return found
+
+    def put_bases(self, obj: ObjectRef, bases: Sequence[BaseInput]) -> None:
+        """Write ``obj``'s bodies' bases (as :meth:`bases` gives them), at rest."""
+        self._tables.put_bases(self._world.object(obj), bases)
 
     def body_state(self, obj: ObjectRef) -> tuple[float, ...]:
         """Numbers that change whenever ``obj``'s shapes move: its body id, base pose and

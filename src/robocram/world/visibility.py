@@ -69,23 +69,22 @@ def link_aabb(world: WorldFacade, obj: WorldObject, index: int) -> tuple[Vector3
 
 @contextmanager
 def isolated(world: WorldFacade, obj: WorldObject) -> Iterator[None]:
-    """Shift ``obj`` by :data:`ISOLATION_OFFSET`; put it back exactly afterwards."""
+    """Shift ``obj`` by :data:`ISOLATION_OFFSET`; put it back exactly afterwards (with the
+    bases it was written with: a base read from PyBullet and written back moves a bit)."""
     cid = world.physics.client()
-    kept = []
-    for body in obj.bodies:
-        pos, orn = pybullet.getBasePositionAndOrientation(body, physicsClientId=cid)
-        lin, ang = pybullet.getBaseVelocity(body, physicsClientId=cid)
-        kept.append((body, pos, orn, lin, ang))
-        moved = [p + o for p, o in zip(pos, ISOLATION_OFFSET, strict=True)]
-        pybullet.resetBasePositionAndOrientation(body, moved, orn, physicsClientId=cid)
-    world.versions.moved(obj.name)
+    kept = world.snapshots.bases(obj)
+    speeds = [pybullet.getBaseVelocity(body, physicsClientId=cid) for body, _, _ in kept]
+    shifted = [
+        (body, tuple(p + o for p, o in zip(pos, ISOLATION_OFFSET, strict=True)), orn)
+        for body, pos, orn in kept
+    ]
+    world.snapshots.put_bases(obj, shifted)
     try:
         yield
     finally:
-        for body, pos, orn, lin, ang in kept:
-            pybullet.resetBasePositionAndOrientation(body, pos, orn, physicsClientId=cid)
+        world.snapshots.put_bases(obj, kept)
+        for (body, _, _), (lin, ang) in zip(kept, speeds, strict=True):
             pybullet.resetBaseVelocity(body, lin, ang, physicsClientId=cid)
-        world.versions.moved(obj.name)  # back, maybe not to the bit: a new stamp
 
 
 def _tangent_grid(

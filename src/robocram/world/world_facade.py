@@ -7,7 +7,7 @@ A protocol, so that the parts and helpers, which ``world.py`` imports, need not 
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterable, Iterator, Sequence
 from contextlib import AbstractContextManager
 from typing import Protocol
 
@@ -18,6 +18,7 @@ from robocram.world.obstacle_boxes import ObstacleBoxes
 from robocram.world.versions import Versions
 from robocram.world.world_object import RobotObject, WorldObject
 from robocram.world.world_tables import ObjectRef
+from robocram.world.written_bases import BaseInput
 
 
 class ClientPart(Protocol):
@@ -37,6 +38,8 @@ class StatePart(Protocol):
     """The snapshots part, as the helpers use it: run something and put the world back."""
 
     def stored_state(self) -> AbstractContextManager[object]: ...
+    def bases(self, obj: ObjectRef) -> list[BaseInput]: ...
+    def put_bases(self, obj: ObjectRef, bases: Sequence[BaseInput]) -> None: ...
 
 
 class BoundsPart(Protocol):

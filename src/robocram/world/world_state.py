@@ -7,13 +7,16 @@ seeds a copy of the world in another physics client.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from collections.abc import Mapping
+from dataclasses import dataclass, field
 
 from robocram.world.attachment import Attachment
 from robocram.world.errors import WorldClosedError
 from robocram.world.pybullet_backend import pybullet
+from robocram.world.versions import Stamp, Versions
 from robocram.world.world_object import RobotObject, WorldObject
 from robocram.world.world_tables import WorldTables
+from robocram.world.written_bases import Vector
 
 
 @dataclass(frozen=True)
@@ -34,6 +37,8 @@ class WorldState:
     attachments: tuple[Attachment, ...]
     holds: tuple[tuple[str, tuple[tuple[str, float], ...]], ...]  # object -> held joints
     time: float
+    stamps: tuple[Stamp, ...] = ()  # per handle, its change counters when captured
+    clock: Versions | None = field(default=None, compare=False, repr=False)  # whose counters
 
     @classmethod
     def capture(cls, world: WorldTables) -> WorldState:
@@ -41,14 +46,15 @@ class WorldState:
         if world.closed:
             raise WorldClosedError()
         handles = tuple(world.objects())
+        cid = world.physics_client()
         return cls(
             handles=handles,
-            bodies=tuple(
-                tuple(_body_state(world.physics_client(), b) for b in h.bodies) for h in handles
-            ),
+            bodies=tuple(_object_state(cid, h, world.base_inputs(h)) for h in handles),
             attachments=tuple(world.all_attachments()),
             holds=tuple((h.name, tuple(world.held_joints(h).items())) for h in handles),
             time=world.time,
+            stamps=tuple(world.versions.body(h) for h in handles),
+            clock=world.versions,
         )
 
     def restore(self, world: WorldTables) -> None:
@@ -64,17 +70,32 @@ class WorldState:
         for handle in self.handles:
             if handle.name not in world:
                 world.insert(handle)
-        self._apply(world)
+        self._apply(world, self._unchanged(world))
+
+    def _unchanged(self, world: WorldTables) -> set[str]:
+        """The objects nothing moved since the capture: left as they stand, since writing
+        a base read from PyBullet back would move it a last bit (after physics moved it,
+        the inputs that put it there are unknown)."""
+        if self.clock is not world.versions:
+            return set()
+        versions = world.versions
+        return {
+            handle.name
+            for handle, stamp in zip(self.handles, self.stamps, strict=True)
+            if world.object(handle.name) is handle and versions.body(handle) == stamp
+        }
 
     def recreate(self, world: WorldTables) -> None:
         """Fill an empty ``world`` (another client) with new handles in this state."""
         for handle in self.handles:
             world.insert(_clone(handle))
-        self._apply(world)
+        self._apply(world, set())
 
-    def _apply(self, world: WorldTables) -> None:
+    def _apply(self, world: WorldTables, unchanged: set[str]) -> None:
         cid = world.physics_client()
         for handle, states in zip(self.handles, self.bodies, strict=True):
+            if handle.name in unchanged:
+                continue
             targets = world.object(handle.name).bodies
             for target, body in zip(targets, states, strict=True):
                 pybullet.resetBasePositionAndOrientation(target, *body.base, physicsClientId=cid)
@@ -83,14 +104,26 @@ class WorldState:
                     pybullet.resetJointState(target, index, position, velocity, physicsClientId=cid)
             world.versions.moved(handle.name)
             world.versions.jointed(handle.name)
+            bases = [(t, *b.base) for t, b in zip(targets, states, strict=True)]
+            world.wrote_bases(world.object(handle.name), bases)
         world.set_attachments(self.attachments)
         for name, held in self.holds:
             world.set_held_joints(name, dict(held))
         world.time = self.time
 
 
-def _body_state(cid: int, body: int) -> BodyState:
-    pos, orn = pybullet.getBasePositionAndOrientation(body, physicsClientId=cid)
+def _object_state(
+    cid: int, handle: WorldObject, written: Mapping[int, tuple[Vector, Vector]]
+) -> tuple[BodyState, ...]:
+    return tuple(_body_state(cid, b, written) for b in handle.bodies)
+
+
+def _body_state(cid: int, body: int, written: Mapping[int, tuple[Vector, Vector]]) -> BodyState:
+    """``body``'s state; its base as last written where it still stands so (PyBullet reads
+    a base a last bit off what was written: see :mod:`~robocram.world.written_bases`)."""
+    pos, orn = written.get(body) or pybullet.getBasePositionAndOrientation(
+        body, physicsClientId=cid
+    )
     lin, ang = pybullet.getBaseVelocity(body, physicsClientId=cid)
     indices = [
         i

@@ -12,7 +12,7 @@ given it and use its public methods.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Iterator, Mapping
+from collections.abc import Iterable, Iterator, Mapping, Sequence
 from typing import Protocol
 
 from robocram.robots import RobotModel, mimic_followers
@@ -42,6 +42,7 @@ from robocram.world.joint_state import ClampedJoint, JointLimits, clamp_values
 from robocram.world.pybullet_backend import pybullet
 from robocram.world.versions import Versions
 from robocram.world.world_object import RobotObject, WorldObject
+from robocram.world.written_bases import BaseInput, Vector, WrittenBases
 from robocram.world.written_joints import WrittenJoints
 
 ObjectRef = WorldObject | str
@@ -97,6 +98,7 @@ class WorldTables:
         self._attachments: dict[str, Attachment] = {}  # by attached object name
         self._holds: dict[str, dict[int, float]] = {}  # robot -> joint index -> held value
         self._written = WrittenJoints()  # bodies whose joints stand as last written
+        self._bases = WrittenBases()  # objects whose bases stand as last written
         self._motors = HeldMotors()  # a robot's held joints need no motor
         self._versions = Versions()  # stamped by every write below
         self._stepping: Derived[None, tuple[list[str], list[str]]] = Derived(_structure)
@@ -229,6 +231,7 @@ class WorldTables:
         self._part_bases.pop(handle.name, None)
         self._holds.pop(handle.name, None)
         self._written.forget(handle.name)
+        self._bases.forget(handle.name)
         self._versions.removed(handle.name)
         if self._hook is not None:
             self._hook.removed(handle, self.robots())
@@ -259,15 +262,33 @@ class WorldTables:
 
     def _place(self, handle: WorldObject, pose: Pose) -> None:
         """Put every body of ``handle`` at rest with its root link frame at ``pose``."""
-        cid = self.physics_client()
         bases = self._part_bases.get(handle.name) or (self._inertial[handle.name],)
+        written = []
         for body, base_in_root in zip(handle.bodies, bases, strict=True):
             base = pose * base_in_root
+            written.append((body, base.position, base.orientation))
+        self.put_bases(handle, written)
+
+    def put_bases(self, handle: WorldObject, bases: Sequence[BaseInput]) -> None:
+        """Write ``handle``'s bodies' bases (body id, COM position, orientation), at rest."""
+        cid = self.physics_client()
+        for body, position, orientation in bases:
             pybullet.resetBasePositionAndOrientation(
-                body, base.position, base.orientation, physicsClientId=cid
+                body, position, orientation, physicsClientId=cid
             )
             pybullet.resetBaseVelocity(body, (0, 0, 0), (0, 0, 0), physicsClientId=cid)
         self._versions.moved(handle.name)
+        self.wrote_bases(handle, bases)
+
+    def wrote_bases(self, handle: WorldObject, bases: Sequence[BaseInput]) -> None:
+        """``handle``'s bases were just written with ``bases`` (its pose counter moved):
+        keep the inputs, which a snapshot writes again to stand exactly here."""
+        self._bases.wrote(handle.name, self._versions, bases)
+
+    def base_inputs(self, handle: WorldObject) -> dict[int, tuple[Vector, Vector]]:
+        """The inputs the tables last wrote ``handle``'s bases with, by body id, while it
+        stands so; empty once physics moved it (see :mod:`~robocram.world.written_bases`)."""
+        return self._bases.inputs(handle.name, self._versions)
 
     def link_pose(self, obj: ObjectRef, link: str) -> Pose:
         """Pose of ``link`` (a URDF link or a frame added in code) in the world."""
