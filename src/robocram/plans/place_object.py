@@ -47,6 +47,7 @@ OUT_OPENING = 0.25  # of the way from the grip to open: the hand goes out the wa
 SETTLE = 0.15  # [s] simulated at most after letting go: the 7 mm drop takes 0.04 s
 MAX_SETTLE_DROP = 0.03  # [m] it may sink this much (the gap, contact) and still rest
 MOVED = 1e-3  # [m] a hand moved less than this by a failed put is where it started
+BASE_TURNED = 1e-3  # [rad] a base turned less than this still stands where it stood
 TURNS = (0.0, math.pi / 2, -math.pi / 2, math.pi)  # [rad] object turns tried in order
 
 
@@ -116,27 +117,36 @@ def _retreat(robot: KnownRobot, held: Held) -> None:
     park_arms(held.arm)
 
 
-def _back_to(held: Held, start: Pose, joints: list[list[object]]) -> None:
+def _back_to(held: Held, start: Pose, joints: list[list[object]], base: Pose) -> None:
     """Take the hand, still holding the object, back to ``start`` where a put failed in
     every turn: each turn's approach may have got it over the spot, deep in an open drawer
     under the counter's top, and the robot would then drive to its next stand with it
     there (the PR2's every drive was blocked at its start). The arm goes back to the
     ``joints`` it had there, not just the tool pose: IK may reach that pose on another
     branch (the Donbot's UR5 came back with its wrist low over the table's top, and every
-    motion from its next stand started blocked). Best effort: where the way back is
-    blocked, the hand stays and the drive says so."""
+    motion from its next stand started blocked). Only while the base stands where it stood
+    (``base``): after a turn moved it, those joints put the hand elsewhere (the PR2's,
+    0.2 m off in the stove's drawer, and the clearing then left a bowl on the table), so
+    the hand goes back to ``start`` itself. Best effort: where the way back is blocked,
+    the hand stays and the drive says so."""
     here = transform_pose(PoseStamped(held.tool_frame), "map").pose
     if math.dist(here.position, start.position) < MOVED:
         return
+    now = transform_pose(PoseStamped(current_robot().base_frame()), "map").pose
+    stood = math.dist(now.position, base.position) < MOVED and (
+        quat.angle_between(now.orientation, base.orientation) < BASE_TURNED
+    )
     with contextlib.suppress(ManipulationLowLevelFailure, NavigationLowLevelFailure):
-        if joints:
+        if joints and stood:
             perform(
                 a.motion(
                     type="moving-arm-joints", arm=held.arm, configuration=joints,
                     **GRASPING, touching=held.object_name,
                 )
             )  # fmt: skip
-            return
+            here = transform_pose(PoseStamped(held.tool_frame), "map").pose
+            if math.dist(here.position, start.position) < MOVED:
+                return
     with contextlib.suppress(ManipulationLowLevelFailure, NavigationLowLevelFailure):
         _move(held.arm, start, **GRASPING, touching=held.object_name)
 
@@ -295,6 +305,7 @@ def place_object(
     held = held_object(object, arm)
     start = transform_pose(PoseStamped(held.tool_frame), "map").pose
     start_joints = arm_now(held.arm)
+    start_base = transform_pose(PoseStamped(robot.base_frame()), "map").pose
     causes: list[Exception] = []
     for put in _object_targets(target):
         try:
@@ -311,7 +322,7 @@ def place_object(
                 causes=causes,
             )
         return transform_pose(PoseStamped(held.object_name), "map")
-    _back_to(held, start, start_joints)
+    _back_to(held, start, start_joints, start_base)
     raise PlacingFailed(
         f"{robot.name} could not put {held.object_name!r} down at {target} in any of "
         f"{len(TURNS)} turns (causes: "
