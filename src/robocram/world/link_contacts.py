@@ -23,6 +23,7 @@ from robocram.world.table_contacts import (
     Bounds,
     bounds_of,
     box_table,
+    read_boxes,
     table_contacts,
     table_distances,
 )
@@ -130,12 +131,7 @@ def _overlaps_in(
 ) -> Iterator[tuple[str, WorldObject, int, int, str]]:
     """:func:`_overlaps` against bounds read before (one comparison for all links)."""
     order = list(indices.items())
-    if bounds is None and not obj.parts:  # one body, nothing read before: ask it directly
-        body, aabb = obj.body_id, pybullet.getAABB
-        read = [aabb(body, index, physicsClientId=cid) for index, _ in order]
-    else:
-        read = [bounds_of(obj, index, bounds, cid) for index, _ in order]
-    boxes = box_table(read)
+    boxes = read_boxes(obj, order, bounds, cid)
     for box, row in obstacles.overlapping(boxes[:, 0] - distance, boxes[:, 1] + distance, skip):
         index, link = order[box]
         yield (

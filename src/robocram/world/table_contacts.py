@@ -47,6 +47,20 @@ def bounds_of(
     return pybullet.getAABB(*obj.locate(index), physicsClientId=cid)
 
 
+def read_boxes(
+    obj: WorldObject,
+    order: Sequence[tuple[int, str]],
+    bounds: Mapping[int, Bounds] | None,
+    cid: int,
+) -> NDArray[np.float64]:
+    """The bounds of ``order``'s link slots as a :func:`box_table`: from ``bounds`` where
+    read before, else from Bullet (one body, nothing read before: asked directly)."""
+    if bounds is None and not obj.parts:
+        body, aabb = obj.body_id, pybullet.getAABB
+        return box_table([aabb(body, index, physicsClientId=cid) for index, _ in order])
+    return box_table([bounds_of(obj, index, bounds, cid) for index, _ in order])
+
+
 def _table_hits(
     obj: WorldObject,
     indices: dict[int, str],
@@ -59,12 +73,7 @@ def _table_hits(
     """``(link index, link name asked, table row)`` per overlapping pair, in the general
     path's order, the links' bounds read as it reads them."""
     order = list(indices.items())
-    if bounds is None and not obj.parts:  # one body, nothing read before: ask it directly
-        body, aabb = obj.body_id, pybullet.getAABB
-        read = [aabb(body, index, physicsClientId=cid) for index, _ in order]
-    else:
-        read = [bounds_of(obj, index, bounds, cid) for index, _ in order]
-    boxes = box_table(read)
+    boxes = read_boxes(obj, order, bounds, cid)
     low, high = boxes[:, 0] - distance, boxes[:, 1] + distance
     return [(*order[box], row) for box, row in obstacles.overlapping(low, high, skip)]
 
