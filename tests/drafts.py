@@ -1,7 +1,8 @@
 """Robot drafts, each URDF drafted once per test process.
 
-Several modules draft the same robot: ARMAR-6 in five, Centauro and the DoNBot in three
-each, at 0.5-1.5 s of CPU a draft. A draft is a value (a frozen description with its
+Several modules draft the same robot: ARMAR-6 in six, Centauro, the DoNBot and the
+Stretch in three, the Fetch, the UR5, Kevin, the MABI, the Z1, the SO-101 and TALOS in
+two each, at 0.3-1.5 s of CPU a draft. A draft is a value (a frozen description with its
 reasons and doubts), the same on every call, so one per process serves them all. It is
 drafted quietly (its doubts and missing meshes): a test that judges those warnings
 drafts for itself.
