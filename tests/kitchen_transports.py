@@ -81,6 +81,11 @@ class Kept:
         except AssertionError as failure:
             self.failures.append(f"at the end: {failure}")
 
+    def found_nothing(self) -> Callable[[JointTrajectory], object]:
+        """The watcher, asserting first that none of its assertions failed."""
+        assert not self.failures, "\n".join(self.failures)
+        return self.watcher
+
 
 @dataclass
 class HandEnds:
@@ -142,18 +147,18 @@ class KitchenTransport:
         """The judge (its ``judged``: kind and configurations checked per trajectory),
         asserting first that it found nothing."""
         assert self.judged is not None, f"{self.robot}'s run is not in JUDGED"
-        assert not self.judged.failures, self.judged.failures
-        assert isinstance(self.judged.watcher, Judge)
-        return self.judged.watcher
+        judge = self.judged.found_nothing()
+        assert isinstance(judge, Judge)
+        return judge
 
     @property
     def ledgered(self) -> Ledger:
         """The joint ledger (its ``seen`` trajectories), asserting first that it found
         nothing: no joint or base moved off a trajectory, nothing after the last."""
         assert self.ledger is not None, f"{self.robot}'s run is not in LEDGERED"
-        assert not self.ledger.failures, self.ledger.failures
-        assert isinstance(self.ledger.watcher, Ledger)
-        return self.ledger.watcher
+        ledger = self.ledger.found_nothing()
+        assert isinstance(ledger, Ledger)
+        return ledger
 
     @cached_property
     def report(self) -> AuditReport:

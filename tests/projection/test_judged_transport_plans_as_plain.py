@@ -12,12 +12,14 @@ judge what a plain run does.
 
 from __future__ import annotations
 
+import pytest
+
 from robocram.designators import a
-from robocram.motion import trajectory_listener
+from robocram.motion import JointTrajectory, TrajectoryPoint, trajectory_listener
 from robocram.plans.transport import transport
 from robocram.projection import simulated_robot
 from robocram.scenes import kitchen_scene
-from tests.kitchen_transports import SHARED, TABLE, Transports
+from tests.kitchen_transports import SHARED, TABLE, Kept, Transports
 from tests.projection.raw_world import RawRecord, Seen
 
 pytestmark = SHARED  # the session's kitchen transports: one worker runs their modules
@@ -49,3 +51,20 @@ def test_the_hsr_judged_mug_transport_plans_as_its_plain_run(
     for i, (p, j) in enumerate(zip(plain, judged, strict=True)):
         assert j[2] == p[2], f"trajectory {i} ({p[0]}) differs"
         assert j[3] == p[3], f"the world differs when trajectory {i} ({p[0]}) is reported"
+
+
+def test_a_watchers_failure_in_a_shared_run_is_kept_and_fails_the_test_asking() -> None:
+    """A shared run's judge does not stop the run at its first finding (the run is other
+    modules' too): it keeps it, and a test asking for the judge fails naming it."""
+    up = TrajectoryPoint((0.1,), (0.0,), (0.0,), 0.0)  # [m]
+    lift = JointTrajectory("pr2", ("torso_lift_joint",), (up,), kind="torso")
+
+    def judge(trajectory: JointTrajectory) -> None:
+        assert trajectory.end["torso_lift_joint"] < 0.05, "the torso hits the shelf"
+
+    kept = Kept(judge)
+    kept(lift)  # the run goes on
+    assert len(kept.failures) == 1 and "the torso hits the shelf" in kept.failures[0]
+    with pytest.raises(AssertionError, match="the torso hits the shelf"):
+        kept.found_nothing()
+    assert Kept(judge).found_nothing() is judge  # nothing found: the judge itself
