@@ -1,12 +1,14 @@
 """No joint jumps: the torso, the head and the grippers move along checked, timed
 trajectories, reported to listeners (issue 35, item 2; issue 42, item 5).
 
-The ledger below is independent of the planner: it reads the world's joint states and the
-base pose before the first motion and at each reported trajectory. Between two of them
-only the joints the trajectory names (and their mimic followers), or for a base trajectory
-only the base, may change; a joint trajectory starts where its joints were and ends where
-they are; and after a motion nothing has changed since its last trajectory. A joint set or
-a base placed directly by a motion breaks one of these (``joint_ledger.py``).
+The ledger (``joint_ledger.py``) is independent of the planner: it reads the world's
+joint states and the base pose before the first motion and at each reported trajectory.
+Between two of them only the joints the trajectory names (and their mimic followers), or
+for a base trajectory only the base, may change; a joint trajectory starts where its
+joints were and ends where they are; and after a motion nothing has changed since its
+last trajectory. A joint set or a base placed directly by a motion breaks one of these.
+The kitchen transports are the session's runs, the ledger watching them as they ran
+(``tests/kitchen_transports.py``).
 """
 
 from __future__ import annotations
