@@ -9,10 +9,12 @@ modules asking for one carry ``SHARED`` (one xdist worker runs them all).
 
 A traced run plans what a plain one does (the trace and the hand's watcher only read the
 world; the attempts, final joints and poses compared bit for bit): the runs ``TRACED``
-names are traced. The projection tests' judged runs are their own: the judge once left
-the world a last bit off (a base read and written back moves: PyBullet reads it through a
-rotation matrix), and a judged HSR mug transport took other stands; it now puts the world
-back through a snapshot, to the bit (tests/projection/test_judged_transport_plans_as_plain.py).
+names are traced. The projection tests judge the same runs: the trajectory judge puts the
+world back through a snapshot, to the bit, and the joint ledger only reads it (the HSR's
+mug run, every watcher on, plans what a plain one does:
+tests/projection/test_judged_transport_plans_as_plain.py). A watcher's failed assertion
+is kept, not raised, so that the run goes on to its end; the test judging it asserts that
+none was kept. Every run keeps the trajectories it executed.
 """
 
 from __future__ import annotations
@@ -36,6 +38,9 @@ from robocram.traces import TraceDatabase, trace_to
 from robocram.traces.audit_findings import AuditReport
 from robocram.traces.trajectory_audit import audit_runs
 from robocram.world import RawDistances, World
+from tests.projection.joint_ledger import Ledger
+from tests.projection.raw_world import RawRecord
+from tests.projection.trajectory_judge import Judge
 
 SHARED = pytest.mark.xdist_group("kitchen_transports")
 TABLE = ("kitchen", "table_top")
@@ -45,6 +50,41 @@ TRACED = frozenset(
     {("pr2", "mug"), ("hsrb", "mug"), ("boxy", "mug"), (STRETCH, "mug")}
     | {("pr2", "bowl"), ("boxy", "bowl")}
 )
+# (robot, kind) judged at each trajectory (tests/projection: transport_trajectories)
+JUDGED = frozenset({("pr2", "mug"), ("hsrb", "mug"), ("boxy", "mug"), ("pr2", "bowl")})
+# (robot, kind) whose joints are kept at each trajectory (tests/projection: no_teleports)
+LEDGERED = frozenset({("pr2", "bowl"), ("hsrb", "mug")})
+# (robot, kind) whose raw world is recorded at each trajectory, to be compared with a plain
+# run's (tests/projection/test_judged_transport_plans_as_plain.py): every watcher is on it
+RECORDED = frozenset({("hsrb", "mug")})
+
+
+@dataclass
+class Kept:
+    """A watcher whose failed assertions are kept, not raised: the shared run goes on to
+    its end, and each test judging it asserts that none was kept."""
+
+    watcher: Callable[[JointTrajectory], object]
+    failures: list[str] = field(default_factory=list)
+
+    def __call__(self, trajectory: JointTrajectory) -> None:
+        try:
+            self.watcher(trajectory)
+        except AssertionError as failure:
+            named = f"{trajectory.kind} trajectory {trajectory.joint_names}"
+            self.failures.append(f"{named}: {failure}")
+
+    def finally_(self, check: Callable[[], object]) -> None:
+        """Run ``check`` (the watcher's own at the run's end), keeping its failure."""
+        try:
+            check()
+        except AssertionError as failure:
+            self.failures.append(f"at the end: {failure}")
+
+    def found_nothing(self) -> Callable[[JointTrajectory], object]:
+        """The watcher, asserting first that none of its assertions failed."""
+        assert not self.failures, "\n".join(self.failures)
+        return self.watcher
 
 
 @dataclass
@@ -92,11 +132,33 @@ class KitchenTransport:
     done: TransportResult
     store: Path | None  # the trace (TRACED runs)
     hand_ends: HandEnds | None  # (TRACED runs)
+    executed: list[JointTrajectory] = field(default_factory=list)  # every run
+    judged: Kept | None = None  # the judge, its failures kept (JUDGED runs)
+    ledger: Kept | None = None  # the joint ledger, its failures kept (LEDGERED runs)
+    raw: RawRecord | None = None  # the raw world at each trajectory (RECORDED runs)
 
     @property
     def ends(self) -> HandEnds:
         assert self.hand_ends is not None, f"{self.robot}'s run is not in TRACED"
         return self.hand_ends
+
+    @property
+    def judge(self) -> Judge:
+        """The judge (its ``judged``: kind and configurations checked per trajectory),
+        asserting first that it found nothing."""
+        assert self.judged is not None, f"{self.robot}'s run is not in JUDGED"
+        judge = self.judged.found_nothing()
+        assert isinstance(judge, Judge)
+        return judge
+
+    @property
+    def ledgered(self) -> Ledger:
+        """The joint ledger (its ``seen`` trajectories), asserting first that it found
+        nothing: no joint or base moved off a trajectory, nothing after the last."""
+        assert self.ledger is not None, f"{self.robot}'s run is not in LEDGERED"
+        ledger = self.ledger.found_nothing()
+        assert isinstance(ledger, Ledger)
+        return ledger
 
     @cached_property
     def report(self) -> AuditReport:
@@ -119,17 +181,35 @@ def transport_key(robot: str | RobotDescription, kind: str) -> tuple[str, str]:
 
 
 def kitchen_transport(folder: Path, robot: str | RobotDescription, kind: str) -> KitchenTransport:
-    """``kind-1`` taken to the kitchen's table top on ``robot``, projected, traced into
-    ``folder`` with the hand's ends watched if ``TRACED`` names it."""
+    """``kind-1`` taken to the kitchen's table top on ``robot``, projected, with the
+    watchers ``TRACED``, ``JUDGED``, ``LEDGERED`` and ``RECORDED`` name for it (traced
+    into ``folder``)."""
     key = transport_key(robot, kind)
     scene = kitchen_scene(robot)
     world = scene.world
-    store = folder / f"{key[0]}-{kind}.db" if key in TRACED else None
-    ends = HandEnds(world, scene.robot) if key in TRACED else None
+    traced = key in TRACED
+    store = folder / f"{key[0]}-{kind}.db" if traced else None
+    ends = HandEnds(world, scene.robot) if traced else None
+    raw = RawRecord(world) if key in RECORDED else None
+    judged = Kept(Judge(world, scene.robot)) if key in JUDGED else None
+    ledger = Ledger(world, scene.robot) if key in LEDGERED else None
+    kept_ledger = Kept(ledger) if ledger is not None else None
+    executed: list[JointTrajectory] = []
+    # the trace and the watchers that only read the world first; the judge, which sets it
+    # and puts it back, last
+    listeners = [raw, ends, executed.append, kept_ledger, judged]
     with ExitStack() as watching:
         if store is not None:
             watching.enter_context(trace_to(store, world=world))
-            watching.enter_context(trajectory_listener(ends))
+        for listener in listeners:
+            if listener is not None:
+                watching.enter_context(trajectory_listener(listener))
         watching.enter_context(simulated_robot(world, scene.robot))
         done = transport(kind, a.location(on=TABLE, for_=f"{kind}-1"))
-    return KitchenTransport(world, scene.robot, done, store, ends)
+    if ledger is not None and kept_ledger is not None:
+        kept_ledger.finally_(ledger.assert_still)  # nothing moved after the last trajectory
+    if raw is not None:
+        raw.end()
+    return KitchenTransport(
+        world, scene.robot, done, store, ends, executed, judged, kept_ledger, raw
+    )

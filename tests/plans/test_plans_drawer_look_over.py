@@ -24,10 +24,10 @@ from robocram.plans.basic_actions import look_lowering
 from robocram.plans.out_of_view_reach import out_of_view
 from robocram.plans.tilt_limit_look import seen_at_tilt_limit
 from robocram.projection import simulated_robot
-from robocram.robots import draft_description
 from robocram.scenes import kitchen_scene
 from robocram.tf import Pose, PoseStamped
 from robocram.tf import quaternion as quat
+from tests.drafts import drafted_module
 
 fetch = importlib.import_module("robocram.plans.fetch")  # the package exports fetch()
 
@@ -43,7 +43,7 @@ def test_a_look_stopped_above_the_bowl_in_its_open_drawer_takes_it_where_seen(
     module = tmp_path / "armar6.py"
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # the draft's doubts
-        module.write_text(draft_description(ARMAR6).source(module), "utf-8")
+        drafted_module(ARMAR6, module)
         scene = kitchen_scene(str(module))
     world, robot = scene.world, scene.robot
     try:

@@ -20,11 +20,11 @@ import pytest
 from robocram.execution.failures import PtuGoalNotReached
 from robocram.plans.basic_actions import look, look_from_above
 from robocram.projection import simulated_robot
-from robocram.robots import draft_description
 from robocram.scenes import TabletopScene, tabletop_scene
 from robocram.tf import PoseStamped
 from robocram.world import World
 from tests.bullet_links import link_frame
+from tests.drafts import drafted
 
 ARMAR6 = Path(__file__).parents[1] / "data" / "zoo" / "armar6" / "armar6.urdf"
 
@@ -33,7 +33,7 @@ ARMAR6 = Path(__file__).parents[1] / "data" / "zoo" / "armar6" / "armar6.urdf"
 def scene() -> Iterator[TabletopScene]:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # the draft's doubts and the missing meshes
-        made = tabletop_scene(draft_description(ARMAR6).description)
+        made = tabletop_scene(drafted(ARMAR6).description)
     yield made
     made.world.close()
 

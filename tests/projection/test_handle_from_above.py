@@ -19,10 +19,11 @@ import pytest
 from robocram.motion.part_path import PITCHES, from_above
 from robocram.projection import ProjectedRobot
 from robocram.projection.articulation import approach_axis, move_part
-from robocram.robots import draft_description, example_robot_data_folder, load_description
+from robocram.robots import example_robot_data_folder, load_description
 from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
+from tests.drafts import drafted
 
 URDF = example_robot_data_folder() / "centauro_description" / "urdf" / "centauro.urdf"
 DRAWER = "drawer_unit_drawer_3"  # the bowl's drawer, its handle 0.75 m up
@@ -38,7 +39,7 @@ def test_the_turned_frame_points_up_and_keeps_the_bar_across() -> None:
 def test_centauro_opens_the_bowls_drawer_pulling_its_handle_from_above() -> None:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        scene = kitchen_scene(load_description(draft_description(URDF).description))
+        scene = kitchen_scene(load_description(drafted(URDF).description))
     world = scene.world
     try:
         desc = world.robot(scene.robot).description

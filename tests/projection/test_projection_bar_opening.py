@@ -17,10 +17,10 @@ from robocram.execution.failures import EnvironmentManipulationImpossible
 from robocram.grasping.palm import palm_of
 from robocram.projection import ProjectedRobot, bar_opening
 from robocram.projection.articulation import move_part
-from robocram.robots import draft_description
 from robocram.scenes import KitchenScene, kitchen_scene
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
+from tests.drafts import drafted_module
 from tests.projection.drawer_stand import DRAWER, FACING_NORTH, pr2_before_drawer
 
 ARMAR6 = Path(__file__).resolve().parents[1] / "data" / "zoo" / "armar6" / "armar6.urdf"
@@ -187,7 +187,7 @@ def test_a_palm_hands_bar_opening_leaves_the_bar_and_margin_between_its_finger_s
     module = tmp_path / "armar6.py"
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        module.write_text(draft_description(ARMAR6).source(module), "utf-8")
+        drafted_module(ARMAR6, module)
         scene = kitchen_scene(str(module))
     world = scene.world
     try:

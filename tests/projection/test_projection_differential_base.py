@@ -16,20 +16,19 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from robocram.designators import a
 from robocram.execution.failures import NavigationPoseUnreachable
 from robocram.kinematics import IKOptions, PlanarBase, forward_kinematics, solve_ik
 from robocram.motion import JointTrajectory, plan_base_path, trajectory_listener
 from robocram.plans import pick_up
-from robocram.plans.transport import transport
 from robocram.projection import ProjectedRobot, simulated_robot
 from robocram.projection.navigation import drive
 from robocram.robots import LoadedDescription, load_description
-from robocram.scenes import kitchen_scene, tabletop_scene
+from robocram.scenes import tabletop_scene
 from robocram.scenes.placement import TABLE_DEPTH
 from robocram.tf import Pose, PoseStamped
 from robocram.tf import quaternion as quat
 from robocram.world import RobotHandle, World
+from tests.kitchen_transports import SHARED, Transports
 
 DATA = Path(__file__).resolve().parents[1] / "data"
 QUERIES = 40  # seeded IK queries per robot
@@ -131,22 +130,19 @@ def _base_steps(trajectories: list[JointTrajectory]) -> list[np.ndarray]:
     return [sideways(t.positions()) for t in trajectories if t.kind == "base"]
 
 
+@SHARED  # the session's kitchen transports: one worker runs their modules
 @pytest.mark.parametrize("robot", ["stretch", "fetch"])
 def test_the_kitchen_transport_drives_without_sliding(
-    robot: str, request: pytest.FixtureRequest
+    robot: str, request: pytest.FixtureRequest, kitchen_transports: Transports
 ) -> None:
+    """The session's mug transport (``tests/kitchen_transports.py``), every trajectory it
+    executed kept."""
     desc: LoadedDescription = request.getfixturevalue(robot)
     assert desc.drive == "differential"
-    scene = kitchen_scene(desc)
-    executed: list[JointTrajectory] = []
-    try:
-        with trajectory_listener(executed.append), simulated_robot(scene.world, scene.robot):
-            result = transport("mug", a.location(on=("kitchen", "table_top"), for_="mug-1"))
-        assert result.object_name == "mug-1"
-        assert scene.world.bodies.attached_to("mug-1") is None
-    finally:
-        scene.world.close()
-    steps = _base_steps(executed)
+    run = kitchen_transports(desc, "mug")
+    assert run.done.object_name == "mug-1"
+    assert run.world.bodies.attached_to("mug-1") is None
+    steps = _base_steps(run.executed)
     assert len(steps) >= 2  # to the counter, to the table
     assert all((s <= SIDEWAYS).all() for s in steps)
 

@@ -17,10 +17,10 @@ import pytest
 
 from robocram.projection import ProjectedRobot, bar_opening
 from robocram.projection.articulation import move_part
-from robocram.robots import draft_description
 from robocram.scenes import kitchen_scene
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
+from tests.drafts import drafted_module
 from tests.projection.drawer_stand import DRAWER
 
 ARMAR6 = Path(__file__).resolve().parents[1] / "data" / "zoo" / "armar6" / "armar6.urdf"
@@ -34,7 +34,7 @@ def test_armar6_closes_with_its_fingers_hold_what_its_open_hand_pushed_part_way(
     module = tmp_path / "armar6.py"
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        module.write_text(draft_description(ARMAR6).source(module), "utf-8")
+        drafted_module(ARMAR6, module)
         scene = kitchen_scene(str(module))
     world = scene.world
     try:

@@ -17,9 +17,9 @@ import pybullet
 
 from robocram.projection.neck import look_at
 from robocram.projection.projected_robot import ProjectedRobot
-from robocram.robots import draft_description
 from robocram.robots.looking_means import looking_means
 from robocram.scenes import tabletop_scene
+from tests.drafts import drafted_module
 
 DONBOT = Path(__file__).resolve().parents[1] / "data" / "zoo" / "iai_donbot" / "iai_donbot.urdf"
 
@@ -28,7 +28,7 @@ def test_the_donbots_wrist_camera_looks_at_the_mug_past_its_own_base(tmp_path: P
     module = tmp_path / "iai_donbot.py"
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        module.write_text(draft_description(DONBOT).source(module), "utf-8")
+        drafted_module(DONBOT, module)
         scene = tabletop_scene(str(module))
     world = scene.world
     try:

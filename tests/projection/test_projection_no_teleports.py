@@ -1,90 +1,37 @@
 """No joint jumps: the torso, the head and the grippers move along checked, timed
 trajectories, reported to listeners (issue 35, item 2; issue 42, item 5).
 
-The ledger below is independent of the planner: it reads the world's joint states and the
-base pose before the first motion and at each reported trajectory. Between two of them
-only the joints the trajectory names (and their mimic followers), or for a base trajectory
-only the base, may change; a joint trajectory starts where its joints were and ends where
-they are; and after a motion nothing has changed since its last trajectory. A joint set or
-a base placed directly by a motion breaks one of these.
+The ledger (``joint_ledger.py``) is independent of the planner: it reads the world's
+joint states and the base pose before the first motion and at each reported trajectory.
+Between two of them only the joints the trajectory names (and their mimic followers), or
+for a base trajectory only the base, may change; a joint trajectory starts where its
+joints were and ends where they are; and after a motion nothing has changed since its
+last trajectory. A joint set or a base placed directly by a motion breaks one of these.
+The kitchen transports are the session's runs, the ledger watching them as they ran
+(``tests/kitchen_transports.py``).
 """
 
 from __future__ import annotations
 
 from collections.abc import Iterator
-from typing import Any
 
 import numpy as np
 import pytest
 
 from robocram.designators import a
-from robocram.execution import perform
 from robocram.execution.failures import PtuPathBlocked, TorsoGoalNotReached, TorsoPathBlocked
-from robocram.motion import BASE_JOINTS, JointTrajectory, joint_limits, trajectory_listener
-from robocram.plans.transport import transport
+from robocram.motion import JointTrajectory, joint_limits, trajectory_listener
 from robocram.projection import simulated_robot
-from robocram.scenes import TabletopScene, kitchen_scene, tabletop_scene
+from robocram.scenes import TabletopScene, tabletop_scene
 from robocram.tf import PoseStamped
 from robocram.world import World
+from tests.kitchen_transports import SHARED, Transports
+from tests.projection.joint_ledger import Ledger
 
 PERIOD = 0.05  # [s] the trajectories' sampling period
 TORSO_GOAL = {"pr2": 0.2, "hsrb": 0.1}  # [m] within the lift's limits; the HSR looks down to
 # the mug past its parked hand only this low (higher, the hand meets the turning head)
 TOL = 1e-9
-
-
-class Ledger:
-    """A trajectory listener keeping the robot's joint states at each trajectory."""
-
-    def __init__(self, world: World, robot: str) -> None:
-        self.world, self.robot = world, robot
-        self.model = world.robot(robot).description.model
-        self.last = dict(world.joint_states(robot))
-        self.pose = world.pose(robot)
-        self.seen: list[JointTrajectory] = []
-
-    def followers(self, joints: tuple[str, ...]) -> set[str]:
-        """``joints`` and every joint that mimics one of them, transitively."""
-        found = set(joints)
-        grew = True
-        while grew:
-            more = {
-                j.name for j in self.model.joints.values() if j.mimic and j.mimic.joint in found
-            }
-            grew = not more <= found
-            found |= more
-        return found
-
-    def __call__(self, trajectory: JointTrajectory) -> None:
-        now, pose = dict(self.world.joint_states(self.robot)), self.world.pose(self.robot)
-        base = trajectory.joint_names == BASE_JOINTS
-        assert base or pose.distance_to(self.pose) == 0.0, "the base moved off its trajectory"
-        self.pose = pose
-        moving = set() if base else self.followers(trajectory.joint_names)
-        jumped = {
-            j: (self.last[j], v) for j, v in now.items() if j not in moving and v != self.last[j]
-        }
-        assert not jumped, f"joints {jumped} changed outside the {trajectory.kind} trajectory"
-        for joint in () if base else trajectory.joint_names:
-            assert trajectory.start[joint] == pytest.approx(self.last[joint], abs=TOL)
-            assert trajectory.end[joint] == pytest.approx(now[joint], abs=TOL)
-        self.seen.append(trajectory)
-        self.last = now
-
-    def assert_still(self) -> None:
-        """Nothing moved since the last trajectory."""
-        now = dict(self.world.joint_states(self.robot))
-        changed = {j for j, v in now.items() if v != self.last[j]}
-        assert not changed, f"joints {changed} changed after the last trajectory"
-        assert self.world.pose(self.robot).distance_to(self.pose) == 0.0
-
-    def perform(self, motion: Any) -> tuple[Any, list[JointTrajectory]]:
-        """Perform ``motion``; its answer and the trajectories it reported."""
-        first = len(self.seen)
-        try:
-            return perform(motion), self.seen[first:]
-        finally:
-            self.assert_still()
 
 
 def assert_timed(world: World, robot: str, trajectory: JointTrajectory) -> None:
@@ -213,15 +160,12 @@ def test_a_head_turned_into_a_post_beside_it_fails_naming_it_and_nothing_moves()
     world.close()
 
 
+@SHARED  # the session's kitchen transports: one worker runs their modules
 @pytest.mark.parametrize(("robot", "kind"), [("pr2", "bowl"), ("hsrb", "mug")])
 def test_a_kitchen_transport_moves_the_robot_only_along_its_trajectories(
-    robot: str, kind: str
+    robot: str, kind: str, kitchen_transports: Transports
 ) -> None:
-    scene = kitchen_scene(robot)  # the PR2's bowl is in a drawer: opened and closed again
-    world = scene.world
-    ledger = Ledger(world, robot)
-    with trajectory_listener(ledger), simulated_robot(world, robot):
-        transport(kind, a.location(on=("kitchen", "table_top"), for_=f"{kind}-1"))
-    ledger.assert_still()
+    """The session's run (``tests/kitchen_transports.py``), the ledger watching it: the
+    PR2's bowl is in a drawer, opened and closed again."""
+    ledger = kitchen_transports(robot, kind).ledgered  # it found nothing, after the run too
     assert {"base", "arm", "head", "gripper"} <= {t.kind for t in ledger.seen}
-    world.close()

@@ -4,13 +4,14 @@ Each trajectory is judged the moment projection reports it, in the world as it i
 (drawers as the search left them, the mug in the hand), by PyBullet, independently of the
 planner (``trajectory_judge.py``), held objects included. The going test leaves the top
 drawer open between the robot and its goal: the base goes round it or fails naming it.
-The judge and the limits test read the same mug transport of each robot, run once.
+The judge and the limits test read the same mug transport of each robot, and the bowl's
+test the PR2's bowl transport: the session's runs (``tests/kitchen_transports.py``),
+judged as they ran.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator
-from dataclasses import dataclass
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -19,58 +20,38 @@ import pytest
 from robocram.designators import a
 from robocram.execution import perform
 from robocram.execution.failures import NavigationPathBlocked
-from robocram.motion import JointTrajectory, joint_limits, trajectory_listener
+from robocram.motion import joint_limits, trajectory_listener
 from robocram.plans.basic_actions import park_arms
-from robocram.plans.transport import transport
 from robocram.projection import simulated_robot
 from robocram.scenes import kitchen_scene
 from robocram.tf import Pose, PoseStamped
-from robocram.world import World
+from tests.kitchen_transports import SHARED, KitchenTransport, Transports
 
-TABLE = ("kitchen", "table_top")
-
-
-@dataclass
-class MugTransport:
-    """A robot's kitchen mug transport: the world after it, each trajectory as judged the
-    moment it ran, and every executed trajectory."""
-
-    world: World
-    robot: str
-    judged: list[tuple[str, int]]
-    executed: list[JointTrajectory]
+pytestmark = SHARED  # its transports are other modules' too
 
 
-@pytest.fixture(scope="module", params=["pr2", "hsrb", "boxy"])
+@pytest.fixture(params=["pr2", "hsrb", "boxy"])
 def mug_transport(
-    request: pytest.FixtureRequest, make_judge: Callable[..., Any]
-) -> Iterator[MugTransport]:
-    """The mug taken to the table, run once for the tests that judge it differently."""
-    scene = kitchen_scene(request.param)
-    world = scene.world
-    judge = make_judge(world, scene.robot)
-    executed: list[JointTrajectory] = []
-    with (
-        trajectory_listener(judge),
-        trajectory_listener(executed.append),
-        simulated_robot(world, scene.robot),
-    ):
-        transport("mug", a.location(on=TABLE, for_="mug-1"))
-    yield MugTransport(world, scene.robot, judge.judged, executed)
-    world.close()
+    request: pytest.FixtureRequest, kitchen_transports: Transports
+) -> KitchenTransport:
+    """The mug taken to the table, judged as it ran: the session's run."""
+    return kitchen_transports(request.param, "mug")
 
 
-def test_every_motion_of_the_transport_is_collision_free(mug_transport: MugTransport) -> None:
+def test_every_motion_of_the_transport_is_collision_free(mug_transport: KitchenTransport) -> None:
     world = mug_transport.world
-    kinds = {kind for kind, _ in mug_transport.judged}
+    judged = mug_transport.judge.judged  # the judge found nothing
+    kinds = {kind for kind, _ in judged}
     assert {"base", "arm"} <= kinds
-    assert sum(n for _, n in mug_transport.judged) > 100
+    assert sum(n for _, n in judged) > 100
     assert world.bodies.attached_to("mug-1") is None
     low, _ = world.aabb("mug-1")
     assert low[2] == pytest.approx(world.contacts.link_aabb("kitchen", "table_top")[1][2], abs=0.01)
 
 
-def test_trajectories_respect_limits_and_time_runs_forward(mug_transport: MugTransport) -> None:
+def test_trajectories_respect_limits_and_time_runs_forward(
+    mug_transport: KitchenTransport,
+) -> None:
     executed = mug_transport.executed
     desc = mug_transport.world.robot(mug_transport.robot).description
     assert executed
@@ -109,18 +90,15 @@ def test_going_past_an_open_drawer_goes_round_it_or_names_it(
 
 
 def test_the_pr2_takes_the_bowl_out_of_the_drawer_along_free_paths(
-    make_judge: Callable[..., Any],
+    kitchen_transports: Transports,
 ) -> None:
-    scene = kitchen_scene("pr2")
-    world = scene.world
-    judge = make_judge(world, "pr2")
-    with trajectory_listener(judge), simulated_robot(world, "pr2"):
-        result = transport("bowl", a.location(on=TABLE, for_="bowl-1"))
+    run = kitchen_transports("pr2", "bowl")
+    world, result = run.world, run.done
+    judged = run.judge.judged  # the judge found nothing
     assert result.object_name == "bowl-1" and result.opened  # it came out of a drawer
-    assert sum(n for _, n in judge.judged) > 100
+    assert sum(n for _, n in judged) > 100
     low, _ = world.aabb("bowl-1")
     assert low[2] == pytest.approx(world.contacts.link_aabb("kitchen", "table_top")[1][2], abs=0.01)
     assert world.joint_states("kitchen")["drawer_unit_drawer_3_joint"] == pytest.approx(
         0.0, abs=0.01
     )  # closed again
-    world.close()

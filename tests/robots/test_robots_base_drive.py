@@ -8,9 +8,10 @@ from pathlib import Path
 
 import pytest
 
-from robocram.robots import DescriptionError, RobotDescription, draft_description, load_description
+from robocram.robots import DescriptionError, RobotDescription, load_description
 from robocram.robots.draft.base_drive import find_base_drive
 from robocram.robots.draft.model_tree import ModelTree
+from tests.drafts import drafted
 
 ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT / "tests" / "data"
@@ -20,7 +21,7 @@ EXAMPLES = ROOT / "examples" / "robots"
 def _drafted(urdf: Path) -> tuple[str | None, str, str | None]:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        draft = draft_description(urdf)
+        draft = drafted(urdf)
     return draft.description.base_type, draft.why["base_type"], draft.doubts.get("base_type")
 
 

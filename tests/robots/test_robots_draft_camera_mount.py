@@ -22,8 +22,8 @@ from robocram.execution.failures import PtuGoalNotReached
 from robocram.projection.neck import look_at
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robot_check import description_from
-from robocram.robots import draft_description
 from robocram.world import World
+from tests.drafts import drafted_module
 
 TRACY = Path(__file__).resolve().parents[1] / "data" / "zoo" / "tracy" / "tracy.urdf"
 
@@ -34,7 +34,7 @@ def tracy(tmp_path_factory: pytest.TempPathFactory) -> Path:
     module = tmp_path_factory.mktemp("tracy") / "tracy.py"
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        module.write_text(draft_description(TRACY).source(module), "utf-8")
+        drafted_module(TRACY, module)
     return module
 
 

@@ -25,12 +25,12 @@ from robocram.kinematics import IKOptions, solve_ik
 from robocram.plans import pick_up
 from robocram.projection import simulated_robot
 from robocram.robot_check import ReportCard, check_robot, description_from
-from robocram.robots import draft_description
 from robocram.scenes import UnfitRobotError, tabletop_placement, tabletop_scene
 from robocram.scenes.standing import PEDESTAL_GAP, PEDESTAL_TABLE
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
 from robocram.world import World
+from tests.drafts import drafted
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "robots"
 MAX_EDITS = 10  # lines a user may change in a draft (the promise)
@@ -74,7 +74,7 @@ def test_example_is_a_draft_with_few_edits(name: str) -> None:
     path = EXAMPLES / f"{name}.py"
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        draft = draft_description(_module(path).URDF).source(path)
+        draft = drafted(_module(path).URDF).source(path)
     edits = edited_lines(draft, path.read_text(encoding="utf-8"))
     assert edits == EDITS[name] <= MAX_EDITS
 

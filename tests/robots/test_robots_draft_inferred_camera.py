@@ -22,6 +22,7 @@ from robocram.robots import DraftDescription, RobotModel, draft_description
 from robocram.robots.draft.cameras import AIM_DOWN, LOOKS_AHEAD, aimed_optics, likely_camera_link
 from robocram.robots.draft.hands import find_hands
 from robocram.robots.draft.model_tree import ModelTree
+from tests import drafts
 
 DATA = Path(__file__).resolve().parents[1] / "data"
 JUSTIN = DATA / "zoo" / "rollin_justin" / "rollin_justin.urdf"
@@ -114,5 +115,5 @@ def test_a_urdf_naming_a_camera_is_drafted_as_before(name: str) -> None:
     module = DATA / "drafts" / f"{name}.py"
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        text = draft_description(DATA / "zoo" / name / f"{name}.urdf").source(module)
+        text = drafts.drafted(DATA / "zoo" / name / f"{name}.urdf").source(module)
     assert text == (DATA / "drafts" / f"{name}.py.txt").read_text("utf-8")

@@ -15,8 +15,9 @@ import pybullet
 import pytest
 
 from robocram.kinematics import forward_kinematics
-from robocram.robots import draft_description, example_robot_data_folder, load_description
+from robocram.robots import example_robot_data_folder, load_description
 from robocram.robots.description import RobotDescription
+from tests.drafts import drafted
 
 URDF = example_robot_data_folder() / "centauro_description" / "urdf" / "centauro.urdf"
 RAYS = 9  # per side of the field of view
@@ -27,7 +28,7 @@ REACH = 1.5  # [m] rays this long: the table in front and the arms beside it
 def centauro() -> RobotDescription:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        return draft_description(URDF).description
+        return drafted(URDF).description
 
 
 def test_the_parked_arms_leave_the_head_cameras_view_clear(centauro: RobotDescription) -> None:

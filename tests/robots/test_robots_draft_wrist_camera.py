@@ -18,8 +18,8 @@ import pytest
 
 from robocram.plans import pick_up
 from robocram.projection import simulated_robot
-from robocram.robots import draft_description
 from robocram.scenes import tabletop_scene
+from tests.drafts import drafted_module
 
 DONBOT = Path(__file__).resolve().parents[1] / "data" / "zoo" / "iai_donbot" / "iai_donbot.urdf"
 
@@ -29,7 +29,7 @@ def donbot(tmp_path_factory: pytest.TempPathFactory) -> Path:
     module = tmp_path_factory.mktemp("donbot") / "iai_donbot.py"
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        module.write_text(draft_description(DONBOT).source(module), "utf-8")
+        drafted_module(DONBOT, module)
     return module
 
 

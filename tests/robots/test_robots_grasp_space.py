@@ -17,9 +17,10 @@ import numpy as np
 import pybullet
 import pytest
 
-from robocram.robots import LoadedDescription, RobotModel, draft_description, load_description
+from robocram.robots import LoadedDescription, RobotModel, load_description
 from robocram.robots.grasp_space import clear_grasp_space
 from robocram.world import World
+from tests.drafts import drafted_module
 
 FETCH = Path(__file__).resolve().parents[1] / "data" / "fetch" / "fetch.py"
 
@@ -105,7 +106,7 @@ def test_a_five_fingered_hands_stand_in_fingers_keep_their_size(tmp_path: Path) 
     module = tmp_path / "armar6.py"
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        module.write_text(draft_description(urdf).source(module), "utf-8")
+        drafted_module(urdf, module)
         desc = load_description(module)
         raw = RobotModel.from_file(urdf, missing_packages_as_boxes=True)
     for arm in desc.arms.values():

@@ -62,8 +62,8 @@ def b1(folder: Path) -> str:
 
 @pytest.fixture(scope="module")
 def b1_kitchen(b1: str) -> Iterator[KitchenScene]:
-    """The B1's kitchen as built (~2.3 s), for the tests that only look at it: what one
-    turns it puts back exactly (``stored_state``)."""
+    """The B1's kitchen as built (~2.3 s), for the module's B1 tests: what one turns or
+    runs it puts back exactly (``stored_state``)."""
     scene = kitchen_scene(b1)
     yield scene
     scene.world.close()
@@ -145,12 +145,13 @@ def test_b1_drafted_stands_with_its_feet_under_its_hips(b1_kitchen: KitchenScene
     assert abs(lowest) <= ON_THE_FLOOR and trunk == pytest.approx(0.71, abs=0.02)
 
 
-def test_b1_closes_the_open_drawer_from_beside_its_handle(b1: str) -> None:
+def test_b1_closes_the_open_drawer_from_beside_its_handle(b1_kitchen: KitchenScene) -> None:
     """From where it opened the bowl's drawer the B1 does not take the open handle; from a
-    stand aside of it, it pushes the drawer shut (the drawer's joint read from PyBullet)."""
-    scene = kitchen_scene(b1)
+    stand aside of it, it pushes the drawer shut (the drawer's joint read from PyBullet).
+    In the module's kitchen, put back exactly after (``stored_state``)."""
+    scene = b1_kitchen
     world = scene.world
-    try:
+    with world.snapshots.stored_state():
         client = world.physics.client()
         kitchen = world.object("kitchen")
         joint = kitchen.joint_index[f"{DRAWER}_joint"]
@@ -162,8 +163,6 @@ def test_b1_closes_the_open_drawer_from_beside_its_handle(b1: str) -> None:
         with simulated_robot(world, scene.robot):
             close_again(OpenedContainer(container(DRAWER), HandleStand(stand, "arm")), log)
         shut = pybullet.getJointState(kitchen.body_id, joint, physicsClientId=client)[0]
-    finally:
-        world.close()
     assert shut == pytest.approx(0.0, abs=0.005)
     tries = log.of("close")
     assert tries[0].failure is not None and tries[-1].failure is None

@@ -8,10 +8,11 @@ from pathlib import Path
 
 import pytest
 
-from robocram.robots import GripperDescription, RobotModel, draft_description
+from robocram.robots import GripperDescription, RobotModel
 from robocram.robots import example_robot_data_folder as erd
 from robocram.robots.draft.base_drive import find_base_drive
 from robocram.robots.draft.model_tree import ModelTree
+from tests.drafts import drafted
 
 ZOO = Path(__file__).resolve().parents[1] / "data" / "zoo"
 
@@ -40,7 +41,7 @@ def test_a_lone_arm_is_fixed_and_a_platform_is_not(urdf: Path, drive: str) -> No
 def test_centauro_gets_two_suction_arms_below_its_waist() -> None:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        draft = draft_description(erd() / "centauro_description" / "urdf" / "centauro.urdf")
+        draft = drafted(erd() / "centauro_description" / "urdf" / "centauro.urdf")
     desc = draft.description
     assert set(desc.arms) == {"left", "right"}
     for arm in desc.arms.values():

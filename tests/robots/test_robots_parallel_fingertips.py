@@ -19,8 +19,8 @@ import pybullet
 import pytest
 
 from robocram.robot_check import description_from
-from robocram.robots import draft_description
 from robocram.world import World
+from tests.drafts import drafted_module
 
 DONBOT = Path(__file__).resolve().parents[1] / "data" / "zoo" / "iai_donbot" / "iai_donbot.urdf"
 TIPS = ("gripper_finger_left_link", "gripper_finger_right_link")
@@ -31,7 +31,7 @@ def donbot(tmp_path_factory: pytest.TempPathFactory) -> Iterator[tuple[World, st
     module = tmp_path_factory.mktemp("donbot") / "iai_donbot.py"
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        module.write_text(draft_description(DONBOT).source(module), "utf-8")
+        drafted_module(DONBOT, module)
         with World() as world:
             yield world, world.add_robot(description_from(str(module))).name
 

@@ -25,9 +25,10 @@ from robocram.designators import a, an
 from robocram.plans import perform, pick_up
 from robocram.projection import simulated_robot
 from robocram.robot_check import check_robot, description_from
-from robocram.robots import draft_description, load_description
+from robocram.robots import load_description
 from robocram.scenes import kitchen_scene, tabletop_scene
 from tests.bullet_links import link_indices
+from tests.drafts import drafted_module
 
 URDF = Path(__file__).resolve().parents[1] / "data" / "zoo" / "kevin" / "kevin.urdf"
 LIFTED = 0.05  # [m] the mug rises at least this much
@@ -41,7 +42,7 @@ def module(tmp_path_factory: pytest.TempPathFactory) -> Path:
     path = tmp_path_factory.mktemp("kevin") / "kevin.py"
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        path.write_text(draft_description(URDF).source(path), encoding="utf-8")
+        drafted_module(URDF, path)
     return path
 
 

@@ -22,12 +22,13 @@ from robocram.projection.arm import move_tcp
 from robocram.projection.gripper import grip, open_gripper
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.robot_check import description_from
-from robocram.robots import DraftDescription, draft_description, link_pose, load_description
+from robocram.robots import DraftDescription, link_pose, load_description
 from robocram.robots.example_robot_data import example_robot_data_folder
 from robocram.robots.link_centre import link_centre, mesh_box
 from robocram.robots.urdf_elements import Collision, Geometry, Link
 from robocram.tf import Pose, quaternion
 from robocram.world import World
+from tests.drafts import drafted
 
 pytestmark = pytest.mark.filterwarnings("ignore::robocram.robots.DescriptionWarning")
 Z1 = example_robot_data_folder() / "z1_description" / "urdf" / "z1.urdf"
@@ -41,7 +42,7 @@ MOVER_MIDDLE = (0.0395, 0.0, 0.0026)
 def _draft(urdf: Path):  # type: ignore[no-untyped-def]
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        return draft_description(urdf)
+        return drafted(urdf)
 
 
 def test_binary_stl_box_is_the_meshs_extent() -> None:

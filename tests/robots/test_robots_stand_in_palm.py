@@ -19,7 +19,8 @@ import pybullet as p
 import pytest
 
 from robocram.robot_check import check_robot, description_from
-from robocram.robots import RobotModel, draft_description
+from robocram.robots import RobotModel
+from tests.drafts import drafted_module
 
 ARMAR6 = Path(__file__).resolve().parents[1] / "data" / "zoo" / "armar6" / "armar6.urdf"
 TOLERANCE = 0.001  # [m]
@@ -182,7 +183,7 @@ def test_armar6s_palm_is_a_plate_and_its_robot_check_still_passes(tmp_path: Path
         warnings.simplefilter("ignore")
         model = RobotModel.from_file(ARMAR6, missing_packages_as_boxes=True)
         module = tmp_path / "armar6.py"
-        module.write_text(draft_description(ARMAR6).source(module), "utf-8")
+        drafted_module(ARMAR6, module)
         card = check_robot(description_from(str(module)))
     low, high = _box_in_pybullet(model, "Hand R Palm", tmp_path)
     wrist = _origins(urdf, "arm_t8_r1")["Hand R Palm"]

@@ -10,10 +10,11 @@ from __future__ import annotations
 import warnings
 from pathlib import Path
 
-from robocram.robots import RobotModel, draft_description, load_description
+from robocram.robots import RobotModel, load_description
 from robocram.robots.draft.parking import parking_pose
 from robocram.robots.draft.stowing import SLACK, better_parking, judged_parking, stowed_pose
 from robocram.robots.self_contacts import SelfContacts
+from tests.drafts import drafted
 
 DATA = Path(__file__).resolve().parents[1] / "data"
 STRETCH = DATA / "stretch" / "stretch_description" / "urdf" / "stretch_description.urdf"
@@ -22,7 +23,7 @@ STRETCH = DATA / "stretch" / "stretch_description" / "urdf" / "stretch_descripti
 def _draft(urdf: Path) -> tuple[RobotModel, dict[str, dict[str, float]], dict[str, str]]:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        draft = draft_description(urdf)
+        draft = drafted(urdf)
         desc = load_description(draft.description)
     parkings = {k: dict(a.parking) for k, a in draft.description.arms.items()}
     return desc.model, parkings, dict(draft.why)

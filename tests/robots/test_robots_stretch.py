@@ -33,7 +33,6 @@ from robocram.robots import (
     JointCoupling,
     LoadedDescription,
     MissingMeshWarning,
-    draft_description,
     load_description,
 )
 from robocram.robots.arm_envelope import arm_envelope
@@ -46,6 +45,7 @@ from robocram.scenes import kitchen_scene, tabletop_scene
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
 from robocram.world import World
+from tests.drafts import drafted
 from tests.kitchen_transports import SHARED, Transports
 
 STRETCH = Path(__file__).resolve().parents[1] / "data" / "stretch"
@@ -68,7 +68,7 @@ def stretch() -> Iterator[LoadedDescription]:
 def test_the_description_is_the_draft_unedited() -> None:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", MissingMeshWarning)
-        draft = draft_description(URDF)
+        draft = drafted(URDF)
     assert draft.source(DESCRIPTION) == DESCRIPTION.read_text(encoding="utf-8")
 
 

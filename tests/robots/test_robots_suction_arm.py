@@ -20,7 +20,6 @@ from robocram.robots import (
     GripperDescription,
     GripperJoint,
     RobotDescription,
-    draft_description,
     example_robot_data_folder,
     load_description,
 )
@@ -28,6 +27,7 @@ from robocram.robots.description_json import description_from_json, description_
 from robocram.scenes import UnfitRobotError, kitchen_scene, tabletop_scene
 from robocram.tf import Pose
 from robocram.traces import TraceDatabase, audit_runs, trace_to
+from tests.drafts import drafted_module
 
 pytestmark = pytest.mark.filterwarnings("ignore::robocram.robots.DescriptionWarning")
 
@@ -39,7 +39,7 @@ def module(tmp_path_factory: pytest.TempPathFactory) -> Path:
     path = tmp_path_factory.mktemp("ur5") / "ur5_robot.py"
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        path.write_text(draft_description(urdf).source(path), encoding="utf-8")
+        drafted_module(urdf, path)
     return path
 
 

@@ -12,9 +12,10 @@ import pytest
 from robocram.plans.basic_actions import park_arms
 from robocram.plans.container_access import open_from_front
 from robocram.projection import simulated_robot
-from robocram.robots import GripperDescription, draft_description
+from robocram.robots import GripperDescription
 from robocram.scenes import kitchen_scene
 from robocram.traces import TraceDatabase, audit_runs, trace_to
+from tests.drafts import drafted
 
 MABI = Path(__file__).resolve().parents[1] / "data" / "zoo" / "mabi_mobile" / "mabi_mobile.urdf"
 DRAWER = "drawer_unit_drawer_3"
@@ -26,7 +27,7 @@ def test_a_suction_hand_opens_a_drawer_by_its_handles_face(tmp_path: Path) -> No
     module = tmp_path / "mabi_mobile.py"
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        draft = draft_description(MABI)
+        draft = drafted(MABI)
     assert draft.description.arms["arm"].gripper == GripperDescription.suction()
     module.write_text(draft.source(module), encoding="utf-8")
     scene = kitchen_scene(str(module))

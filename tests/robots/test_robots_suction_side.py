@@ -19,9 +19,10 @@ from robocram.plans.known_robot import current_robot
 from robocram.plans.pick_object import pick_up_object
 from robocram.plans.stands import yaw_of
 from robocram.projection import simulated_robot
-from robocram.robots import draft_description, example_robot_data_folder
+from robocram.robots import example_robot_data_folder
 from robocram.scenes import tabletop_scene
 from robocram.tf import PoseStamped
+from tests.drafts import drafted_module
 
 pytestmark = pytest.mark.filterwarnings("ignore::robocram.robots.DescriptionWarning")
 
@@ -35,7 +36,7 @@ def module(tmp_path_factory: pytest.TempPathFactory) -> Path:
     path = tmp_path_factory.mktemp("ur5_side") / "ur5_robot.py"
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        path.write_text(draft_description(urdf).source(path), encoding="utf-8")
+        drafted_module(urdf, path)
     return path
 
 

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import warnings
 
-from robocram.robots import draft_description
 from robocram.robots.example_robot_data import example_robot_data_folder
+from tests.drafts import drafted
 
 TALOS = example_robot_data_folder() / "talos_data" / "robots" / "talos_full_v2.urdf"
 
@@ -17,7 +17,7 @@ def test_talos_waist_is_a_trunk_not_part_of_the_arms_or_neck() -> None:
     """
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        draft = draft_description(TALOS)
+        draft = drafted(TALOS)
     desc = draft.description
     assert desc.torso_joint is None and desc.neck_arm is None
     assert desc.pan_tilt is not None

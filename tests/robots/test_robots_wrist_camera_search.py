@@ -18,8 +18,8 @@ import pytest
 from robocram.designators import an
 from robocram.plans.search import search
 from robocram.projection import simulated_robot
-from robocram.robots import draft_description
 from robocram.scenes import kitchen_scene
+from tests.drafts import drafted
 
 MABI = Path(__file__).resolve().parents[1] / "data" / "zoo" / "mabi_mobile" / "mabi_mobile.urdf"
 COUNTER_TOP = 0.855  # [m] the mug's bottom on the kitchen's north counter
@@ -31,7 +31,7 @@ def test_a_wrist_camera_under_the_counter_finds_the_mug_on_it(tmp_path: Path) ->
     module = tmp_path / "mabi_mobile.py"
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        draft = draft_description(MABI)
+        draft = drafted(MABI)
     module.write_text(draft.source(module), encoding="utf-8")
     scene = kitchen_scene(str(module))
     world = scene.world
