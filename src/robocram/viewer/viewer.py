@@ -130,8 +130,11 @@ class Viewer:
         for browser in list(self.server.get_clients().values()):
             _drawn(browser, timeout)
 
-    def play(self, trajectory: JointTrajectory, speed: float = 1.0) -> None:
-        """Move the robot along ``trajectory`` on screen, at ``speed`` times its own pace.
+    def play(
+        self, trajectory: JointTrajectory, speed: float = 1.0, period: float = REPLAY_PERIOD
+    ) -> None:
+        """Move the robot along ``trajectory`` on screen, at ``speed`` times its own pace,
+        one frame every ``period`` [s] of the trajectory's time.
 
         Starts from the moment shown (the state the motion started from, when following a
         live run); scrubbed back (not following), nothing is played.
@@ -141,12 +144,12 @@ class Viewer:
         with self._lock:
             robot = robot_in(self.display, trajectory.robot)
         where = f"**state {self.shown}**, then moving ({trajectory.kind})"
-        for t, positions in trajectory.sampled(REPLAY_PERIOD):
+        for t, positions in trajectory.sampled(period):
             with self._lock:
                 set_robot_joints(RobotHandle.of(self.display, robot), positions)
                 self.view.show(self.display)
             self.caption.content = f"{where}: {t:.1f} of {trajectory.duration:.1f} s"
-            time.sleep(REPLAY_PERIOD / speed)
+            time.sleep(period / speed)
 
     def add_moments(self, moments: list[Moment]) -> None:
         """Add world states; when following, show the newest at once."""
