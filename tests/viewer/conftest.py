@@ -1,5 +1,7 @@
 """A PR2 pick-up (first branch failing, after asking a costmap where to stand) shown live
-in a viewer and traced to a database."""
+in a viewer and traced to a database: run once for the viewer tests (one worker runs them,
+the ``viewer`` group); a test that changes the viewer (its caption, camera, overlay) puts
+it back."""
 
 from __future__ import annotations
 
@@ -38,7 +40,7 @@ class LiveRun:
     run: int
 
 
-@pytest.fixture(scope="module")
+@pytest.fixture(scope="session")
 def live_run(tmp_path_factory: pytest.TempPathFactory) -> Iterator[LiveRun]:
     db_path = tmp_path_factory.mktemp("viewer") / "runs.db"
     scene = tabletop_scene("pr2")
