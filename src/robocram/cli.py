@@ -113,6 +113,12 @@ def _add_viewer_commands(commands: argparse._SubParsersAction[argparse.ArgumentP
         help="a motion is played one frame every this much of its time [s] (default: the "
         "viewer's REPLAY_PERIOD, 0.1)",
     )
+    view.add_argument(
+        "--no-environment-map",
+        action="store_true",
+        help="light the scene without its environment map: a page drawn without a GPU "
+        "(software WebGL) loads seconds sooner",
+    )
     replay = commands.add_parser("replay", help="a stored run in the browser viewer")
     replay.add_argument("db", type=Path, help="trace database (SQLite)")
     replay.add_argument("--run", type=int, help="run id (default: the last run)")
@@ -166,7 +172,13 @@ def _view(args: argparse.Namespace) -> int:
     scene = tabletop_scene(args.robot)
     try:
         with (
-            viewer_module.Viewer(scene.world, args.host, args.port, "robocram view") as viewer,
+            viewer_module.Viewer(
+                scene.world,
+                args.host,
+                args.port,
+                "robocram view",
+                environment_map=not args.no_environment_map,
+            ) as viewer,
             contextlib.ExitStack() as page,
         ):
             print(f"viewer at {viewer.url}", flush=True)

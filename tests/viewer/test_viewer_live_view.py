@@ -3,8 +3,9 @@ page sees the world change state by state while the plan runs.
 
 The claims are which states reach the page and in what order, not how long each stays:
 the runs here pace states briefly (``--dwell``, ``--push-rate``) and play each motion in a
-few frames (``--play-period``: each frame is one more the page's software WebGL draws);
-the feed still waits for the page to draw each state."""
+few frames (``--play-period``: each frame is one more the page's software WebGL draws),
+lit without the environment map (``--no-environment-map``: software WebGL builds it for
+seconds); the feed still waits for the page to draw each state."""
 
 from __future__ import annotations
 
@@ -63,7 +64,7 @@ def test_view_waits_for_the_browser_then_the_page_sees_the_run(
     port = _free_port()
     codes: list[int] = []
     argv = ["view", "--port", str(port), "--speed", str(SPEED), "--seconds", str(SERVE_AFTER)]
-    argv += PACING
+    argv += [*PACING, "--no-environment-map"]
     thread = _run_view(argv, codes)
     with HeadlessChromium(*PAGE) as browser:  # starts while the view builds its scene
         browser.call("Page.enable")

@@ -58,7 +58,12 @@ def check_port(host: str, port: int) -> None:
 
 
 class Viewer:
-    """A viser server showing ``world`` (drawn from a private copy) and a task tree."""
+    """A viser server showing ``world`` (drawn from a private copy) and a task tree.
+
+    ``environment_map=False`` lights the scene with viser's default lights only, without its
+    environment map (image-based lighting): software WebGL (no GPU: headless, Docker) spends
+    seconds of CPU building that map on each page load.
+    """
 
     def __init__(
         self,
@@ -66,12 +71,16 @@ class Viewer:
         host: str = DEFAULT_HOST,
         port: int = DEFAULT_PORT,
         title: str = "robocram",
+        *,
+        environment_map: bool = True,
     ) -> None:
         if world is None:
             raise NoWorld()
         check_port(host, port)
         self.server = viser.ViserServer(host=host, port=port, label=title, verbose=False)
         self.server.scene.set_up_direction("+z")
+        if not environment_map:
+            self.server.scene.configure_environment_map(None)
         self.display = world.copy()
         self.view = WorldView(self.server, self.display)
         self.timeline = Timeline()
