@@ -107,6 +107,18 @@ def _add_viewer_commands(commands: argparse._SubParsersAction[argparse.ArgumentP
         help="at most this many pushes to the page a second [Hz] (default: the viewer's "
         "MAX_PUSH_RATE, 5)",
     )
+    view.add_argument(
+        "--play-period",
+        type=float,
+        help="a motion is played one frame every this much of its time [s] (default: the "
+        "viewer's REPLAY_PERIOD, 0.1)",
+    )
+    view.add_argument(
+        "--no-environment-map",
+        action="store_true",
+        help="light the scene without its environment map: a page drawn without a GPU "
+        "(software WebGL) loads seconds sooner",
+    )
     replay = commands.add_parser("replay", help="a stored run in the browser viewer")
     replay.add_argument("db", type=Path, help="trace database (SQLite)")
     replay.add_argument("--run", type=int, help="run id (default: the last run)")
@@ -153,12 +165,20 @@ def _view(args: argparse.Namespace) -> int:
         raise CliInputError(f"--dwell {args.dwell} must be 0 or more seconds, e.g. 0.3")
     if args.push_rate is not None and not args.push_rate > 0.0:
         raise CliInputError(f"--push-rate {args.push_rate} must be positive, e.g. 5 [Hz]")
-    pacing = {"dwell": args.dwell, "push_rate": args.push_rate}
+    if args.play_period is not None and not args.play_period > 0.0:
+        raise CliInputError(f"--play-period {args.play_period} must be positive, e.g. 0.1 [s]")
+    pacing = {"dwell": args.dwell, "push_rate": args.push_rate, "play_period": args.play_period}
     viewer_module = _viewer_module()
     scene = tabletop_scene(args.robot)
     try:
         with (
-            viewer_module.Viewer(scene.world, args.host, args.port, "robocram view") as viewer,
+            viewer_module.Viewer(
+                scene.world,
+                args.host,
+                args.port,
+                "robocram view",
+                environment_map=not args.no_environment_map,
+            ) as viewer,
             contextlib.ExitStack() as page,
         ):
             print(f"viewer at {viewer.url}", flush=True)

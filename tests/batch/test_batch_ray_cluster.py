@@ -3,7 +3,9 @@ start --address``, separate raylets of one CPU each), losing a node mid-batch: i
 runs again on the node that remains and the batch finishes; with no node left, the command
 prints what finished and exits 1.
 
-The doomed node's raylet is SIGKILLed while one of its actors runs a variant.
+The doomed node's raylet is SIGKILLed while one of its actors runs a variant. The module's
+tests share one head, which runs no actor (starting one takes seconds); each test adds its
+worker nodes, and the next test starts once the head has declared them dead.
 """
 
 from __future__ import annotations
@@ -28,19 +30,43 @@ if TYPE_CHECKING:
     from ray_cluster import LocalCluster
 
 
-@pytest.fixture
-def cluster(batch_plans: ModuleType, monkeypatch: pytest.MonkeyPatch) -> Iterator[LocalCluster]:
-    """A cluster with no node yet, its address in ``RAY_ADDRESS``; every node killed after."""
+@pytest.fixture(scope="module")
+def head() -> Iterator[LocalCluster]:
+    """The module's cluster: a head with no CPU for actors; every node killed after."""
     if ray.is_initialized():  # a Ray left running would be used instead of RAY_ADDRESS's
         ray.shutdown()
-    made: LocalCluster = importlib.import_module("ray_cluster").LocalCluster()
-    monkeypatch.setenv("RAY_ADDRESS", made.address)
+    sys.path.insert(0, str(Path(__file__).resolve().parent))  # ray_cluster.py, beside this
     try:
+        made: LocalCluster = importlib.import_module("ray_cluster").LocalCluster()
+    finally:
+        sys.path.pop(0)
+    try:
+        made.start_head(cpus=0)
         yield made
     finally:
         if ray.is_initialized():
             ray.shutdown()
         made.stop()
+
+
+@pytest.fixture
+def cluster(
+    head: LocalCluster, batch_plans: ModuleType, monkeypatch: pytest.MonkeyPatch
+) -> Iterator[LocalCluster]:
+    """The head with no worker node (an earlier test's removed, and declared dead by the
+    head), its address in ``RAY_ADDRESS``."""
+    if head.has_nodes:
+        ray.init(address=head.address, log_to_driver=False)
+        try:
+            head.remove_nodes(lambda: sum(bool(node["Alive"]) for node in ray.nodes()))
+        finally:
+            ray.shutdown()
+    monkeypatch.setenv("RAY_ADDRESS", head.address)
+    try:
+        yield head
+    finally:
+        if ray.is_initialized():
+            ray.shutdown()
 
 
 def _kill_when_blocked(cluster: LocalCluster, node: str, block_dir: Path) -> threading.Thread:
@@ -61,8 +87,7 @@ def _kill_when_blocked(cluster: LocalCluster, node: str, block_dir: Path) -> thr
 def test_a_lost_node_s_variant_runs_again_and_the_batch_finishes(
     cluster: LocalCluster, batch_plans: ModuleType, tmp_path: Path
 ) -> None:
-    cluster.start_head(cpus=1)
-    doomed = cluster.add_node(**{batch_plans.DOOMED_ENV: "doomed"})
+    _, doomed = cluster.add_nodes([{}, {batch_plans.DOOMED_ENV: "doomed"}])  # one survives
     variants = [
         Variant(
             f"mug{i}",
@@ -91,8 +116,9 @@ def test_a_lost_cluster_ends_the_command_with_what_finished(
     tmp_path: Path,
     capsys: pytest.CaptureFixture[str],
 ) -> None:
-    cluster.start_head(cpus=0)  # the head runs no actor: the doomed node is the only one
-    doomed = cluster.add_node(**{batch_plans.DOOMED_ENV: "doomed"})
+    doomed = cluster.add_node(  # the head runs no actor: the doomed node is the only one
+        **{batch_plans.DOOMED_ENV: "doomed"}
+    )
     block_dir = tmp_path / "blocks"
     block_dir.mkdir()
     spec = tmp_path / "spec.json"

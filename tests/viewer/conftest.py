@@ -1,5 +1,8 @@
 """A PR2 pick-up (first branch failing, after asking a costmap where to stand) shown live
-in a viewer and traced to a database."""
+in a viewer and traced to a database: run once for the viewer tests (one worker runs them,
+the ``viewer`` group); a test that changes the viewer (its caption, camera, overlay) puts
+it back. Its pages are lit without the environment map: software WebGL took ~8 s of CPU to
+build it on each page load, and no test here is about the lighting."""
 
 from __future__ import annotations
 
@@ -38,11 +41,11 @@ class LiveRun:
     run: int
 
 
-@pytest.fixture(scope="module")
+@pytest.fixture(scope="session")
 def live_run(tmp_path_factory: pytest.TempPathFactory) -> Iterator[LiveRun]:
     db_path = tmp_path_factory.mktemp("viewer") / "runs.db"
     scene = tabletop_scene("pr2")
-    viewer = Viewer(scene.world, port=free_port())
+    viewer = Viewer(scene.world, port=free_port(), environment_map=False)
     with (
         trace_to(db_path, world=scene.world) as tracer,
         LiveFeed(viewer, scene.world) as feed,

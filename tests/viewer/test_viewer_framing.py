@@ -81,12 +81,16 @@ def _settled_top(browser: HeadlessChromium) -> float:
 
 def test_a_long_caption_leaves_the_slider_where_it_was(live_run: Any) -> None:
     viewer = live_run.viewer
-    with HeadlessChromium(1024, 640) as browser:
-        open_viewer(browser, viewer, "World state")
-        viewer.caption.content = "one line"
-        browser.wait_for_text("one line")
-        before = _settled_top(browser)
-        viewer.caption.content = LONG
-        browser.wait_for_text("several lines")
-        after = _settled_top(browser)
+    caption = viewer.caption.content  # put back: the other viewer tests share the viewer
+    try:
+        with HeadlessChromium(1024, 640) as browser:
+            open_viewer(browser, viewer, "World state")
+            viewer.caption.content = "one line"
+            browser.wait_for_text("one line")
+            before = _settled_top(browser)
+            viewer.caption.content = LONG
+            browser.wait_for_text("several lines")
+            after = _settled_top(browser)
+    finally:
+        viewer.caption.content = caption
     assert after == before

@@ -2,8 +2,10 @@
 page sees the world change state by state while the plan runs.
 
 The claims are which states reach the page and in what order, not how long each stays:
-the runs here pace states briefly (``--dwell``, ``--push-rate``); the feed still waits for
-the page to draw each one."""
+the runs here pace states briefly (``--dwell``, ``--push-rate``) and play each motion in a
+few frames (``--play-period``: each frame is one more the page's software WebGL draws),
+lit without the environment map (``--no-environment-map``: software WebGL builds it for
+seconds); the feed still waits for the page to draw each state."""
 
 from __future__ import annotations
 
@@ -24,7 +26,7 @@ from robocram.world import World
 SPEED = 128.0  # motions play at 128x their pace (fewer frames); each state is still paced
 STATES_SEEN = 5  # at least this many different world states reach the page
 SERVE_AFTER = 1.0  # [s] the page is served after the run (its last updates arrive)
-PACING = ["--dwell", "0.05", "--push-rate", "50"]  # [s], [Hz]: each state drawn, then on
+PACING = ["--dwell", "0.05", "--push-rate", "50", "--play-period", "1.0"]  # [s], [Hz], [s]
 PAGE = (400, 250)  # [px] a small page: SwiftShader draws each frame in a quarter the time
 SERVER_POLLS, POLL = 1200, 0.1  # looks for the server to wait [s apart]: a hang guard
 
@@ -62,7 +64,7 @@ def test_view_waits_for_the_browser_then_the_page_sees_the_run(
     port = _free_port()
     codes: list[int] = []
     argv = ["view", "--port", str(port), "--speed", str(SPEED), "--seconds", str(SERVE_AFTER)]
-    argv += PACING
+    argv += [*PACING, "--no-environment-map"]
     thread = _run_view(argv, codes)
     with HeadlessChromium(*PAGE) as browser:  # starts while the view builds its scene
         browser.call("Page.enable")
@@ -106,6 +108,7 @@ def test_view_refuses_a_speed_that_is_not_positive(capsys: pytest.CaptureFixture
     [
         ("--dwell", "-0.1", "--dwell -0.1 must be 0 or more"),
         ("--push-rate", "0", "--push-rate 0.0"),
+        ("--play-period", "0", "--play-period 0.0 must be positive"),
     ],
 )
 def test_view_refuses_pacing_out_of_range(
@@ -118,7 +121,11 @@ def test_view_refuses_pacing_out_of_range(
 
 @pytest.mark.parametrize(
     ("pacing", "says"),
-    [({"dwell": -0.1}, "dwell must be 0 or more"), ({"push_rate": 0.0}, "push rate must be")],
+    [
+        ({"dwell": -0.1}, "dwell must be 0 or more"),
+        ({"push_rate": 0.0}, "push rate must be"),
+        ({"play_period": 0.0}, "play period must be positive"),
+    ],
 )
 def test_a_live_feed_refuses_pacing_out_of_range(pacing: dict[str, float], says: str) -> None:
     nothing_drawn = cast(Viewer, None)  # the pacing is checked before the viewer is used

@@ -11,9 +11,10 @@ Projection runs far faster than the robot would move. To be watched, a feed give
 ``speed`` paces the plan instead: after each motion the plan waits until the page has
 played the motion's trajectories (at ``speed`` times their own pace), every open page
 has drawn the state after it, and ``dwell`` seconds (:data:`DWELL` unless told) have
-passed, so every state reaches the page and stays long enough to be seen. ``dwell`` and
-``push_rate`` are the pacing: a caller that only checks which states arrive (a test) may
-make them short; people watching want the defaults.
+passed, so every state reaches the page and stays long enough to be seen. ``dwell``,
+``push_rate`` and ``play_period`` (motion time between two played frames) are the pacing:
+a caller that only checks which states arrive (a test) may make them short, or few;
+people watching want the defaults.
 """
 
 from __future__ import annotations
@@ -30,7 +31,7 @@ from robocram.execution import Task, TaskListener, TaskSnapshot, current_task
 from robocram.motion import JointTrajectory, trajectory_listener
 from robocram.traces import StoredCostmap, StoredWorldState
 from robocram.viewer.errors import ViewerArgumentError
-from robocram.viewer.timeline import Moment
+from robocram.viewer.timeline import REPLAY_PERIOD, Moment
 from robocram.viewer.viewer import Viewer
 from robocram.world import World
 
@@ -52,6 +53,7 @@ class LiveFeed(TaskListener):
         *,
         dwell: float = DWELL,
         push_rate: float = MAX_PUSH_RATE,
+        play_period: float = REPLAY_PERIOD,
     ) -> None:
         if speed is not None and not speed > 0.0:
             raise ViewerArgumentError(f"the viewing speed must be positive, got {speed}")
@@ -63,11 +65,16 @@ class LiveFeed(TaskListener):
             raise ViewerArgumentError(
                 f"the push rate must be positive, got {push_rate} Hz; e.g. {MAX_PUSH_RATE}"
             )
+        if not play_period > 0.0:
+            raise ViewerArgumentError(
+                f"the play period must be positive, got {play_period} s; e.g. {REPLAY_PERIOD}"
+            )
         self.viewer = viewer
         self.world = world
         self.speed = speed  # None: the plan runs at full speed, the page skips states
         self.dwell = dwell  # [s] a paced feed shows each drawn state this long
         self.push_rate = push_rate  # [Hz] at most this many pushes to the browsers a second
+        self.play_period = play_period  # [s] of motion time between two played frames
         self._root: Task | None = None
         self._motions: set[int] = set()
         self._queued: list[Step] = []
@@ -189,7 +196,7 @@ class LiveFeed(TaskListener):
             return
         for moment, trajectories in steps:
             for trajectory in trajectories:
-                self.viewer.play(trajectory, self.speed)
+                self.viewer.play(trajectory, self.speed, self.play_period)
             self.viewer.add_moments([moment])
             self.viewer.wait_until_drawn()
             time.sleep(self.dwell)

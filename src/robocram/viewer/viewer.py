@@ -58,7 +58,12 @@ def check_port(host: str, port: int) -> None:
 
 
 class Viewer:
-    """A viser server showing ``world`` (drawn from a private copy) and a task tree."""
+    """A viser server showing ``world`` (drawn from a private copy) and a task tree.
+
+    ``environment_map=False`` lights the scene with viser's default lights only, without its
+    environment map (image-based lighting): software WebGL (no GPU: headless, Docker) spends
+    seconds of CPU building that map on each page load.
+    """
 
     def __init__(
         self,
@@ -66,12 +71,16 @@ class Viewer:
         host: str = DEFAULT_HOST,
         port: int = DEFAULT_PORT,
         title: str = "robocram",
+        *,
+        environment_map: bool = True,
     ) -> None:
         if world is None:
             raise NoWorld()
         check_port(host, port)
         self.server = viser.ViserServer(host=host, port=port, label=title, verbose=False)
         self.server.scene.set_up_direction("+z")
+        if not environment_map:
+            self.server.scene.configure_environment_map(None)
         self.display = world.copy()
         self.view = WorldView(self.server, self.display)
         self.timeline = Timeline()
@@ -130,8 +139,11 @@ class Viewer:
         for browser in list(self.server.get_clients().values()):
             _drawn(browser, timeout)
 
-    def play(self, trajectory: JointTrajectory, speed: float = 1.0) -> None:
-        """Move the robot along ``trajectory`` on screen, at ``speed`` times its own pace.
+    def play(
+        self, trajectory: JointTrajectory, speed: float = 1.0, period: float = REPLAY_PERIOD
+    ) -> None:
+        """Move the robot along ``trajectory`` on screen, at ``speed`` times its own pace,
+        one frame every ``period`` [s] of the trajectory's time.
 
         Starts from the moment shown (the state the motion started from, when following a
         live run); scrubbed back (not following), nothing is played.
@@ -141,12 +153,12 @@ class Viewer:
         with self._lock:
             robot = robot_in(self.display, trajectory.robot)
         where = f"**state {self.shown}**, then moving ({trajectory.kind})"
-        for t, positions in trajectory.sampled(REPLAY_PERIOD):
+        for t, positions in trajectory.sampled(period):
             with self._lock:
                 set_robot_joints(RobotHandle.of(self.display, robot), positions)
                 self.view.show(self.display)
             self.caption.content = f"{where}: {t:.1f} of {trajectory.duration:.1f} s"
-            time.sleep(REPLAY_PERIOD / speed)
+            time.sleep(period / speed)
 
     def add_moments(self, moments: list[Moment]) -> None:
         """Add world states; when following, show the newest at once."""
