@@ -10,9 +10,10 @@ from pathlib import Path
 
 import pybullet
 
-from robocram.robots import draft_description, example_robot_data_folder
+from robocram.robots import example_robot_data_folder
 from robocram.scenes.placement import PAST_RISE_SHARE
 from tests.bullet_links import link_indices
+from tests.drafts import drafted_module
 
 SO100 = "so_arm_description/urdf/so100.urdf"
 FOREARMS = 0.311  # [m] the lift joint to the wrist, stretched (the URDF's origins, by hand)
@@ -25,7 +26,7 @@ def drafted_so100(folder: Path) -> str:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         urdf = example_robot_data_folder() / SO100
-        module.write_text(draft_description(urdf).source(module), "utf-8")
+        drafted_module(urdf, module)
     return str(module)
 
 

@@ -17,10 +17,10 @@ import pytest
 from robocram.costmaps.reachability_map import HEIGHT_STEP, base_bottom, build_reachability_map
 from robocram.robots import (
     RobotDescription,
-    draft_description,
     example_robot_data_folder,
     load_description,
 )
+from tests.drafts import drafted
 
 URDF = example_robot_data_folder() / "centauro_description" / "urdf" / "centauro.urdf"
 
@@ -29,7 +29,7 @@ URDF = example_robot_data_folder() / "centauro_description" / "urdf" / "centauro
 def centauro() -> RobotDescription:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        return load_description(draft_description(URDF).description)
+        return load_description(drafted(URDF).description)
 
 
 def test_the_map_starts_at_the_robots_lowest_point(centauro: RobotDescription) -> None:

@@ -19,9 +19,10 @@ import pytest
 from robocram.grasping import grasps, hand_of
 from robocram.grasping.grasp_model import PADS_BEHIND_DEEP
 from robocram.grasping.object_shape import ObjectShape
-from robocram.robots import RobotDescription, draft_description, load_description
+from robocram.robots import RobotDescription, load_description
 from robocram.tf import quaternion as quat
 from robocram.world import World
+from tests.drafts import drafted_module
 
 TRACY = Path(__file__).resolve().parents[1] / "data" / "zoo" / "tracy" / "tracy.urdf"
 TRACY_BEHIND = 0.018  # [m] its pads' farthest reach, behind the tool frame (closed)
@@ -38,7 +39,7 @@ def tracy(tmp_path_factory: pytest.TempPathFactory) -> RobotDescription:
     module = tmp_path_factory.mktemp("tracy") / "tracy.py"
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        module.write_text(draft_description(TRACY).source(module), "utf-8")
+        drafted_module(TRACY, module)
         return load_description(str(module))
 
 

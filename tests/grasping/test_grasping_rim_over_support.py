@@ -22,10 +22,10 @@ from robocram.grasping import hand_of, object_shape
 from robocram.grasping.grasp import Grasp
 from robocram.grasping.grasp_model import grasps
 from robocram.grasping.object_grasps import candidates_at
-from robocram.robots import draft_description
 from robocram.tf import Pose
 from robocram.world import World
 from tests.bullet_links import link_indices
+from tests.drafts import drafted_module
 
 ARMAR6 = Path(__file__).resolve().parents[1] / "data" / "zoo" / "armar6" / "armar6.urdf"
 ARM = "right"
@@ -40,7 +40,7 @@ def armar6(tmp_path_factory: pytest.TempPathFactory) -> Iterator[tuple[World, st
     module = tmp_path_factory.mktemp("armar6") / "armar6.py"
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        module.write_text(draft_description(ARMAR6).source(module), "utf-8")
+        drafted_module(ARMAR6, module)
         world = World()
         robot = world.add_robot(str(module)).name
     world.add_item("bowl-1", "bowl", FAR)

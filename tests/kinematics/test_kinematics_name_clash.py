@@ -13,8 +13,9 @@ import pybullet
 import pytest
 
 from robocram.kinematics import solve_ik
-from robocram.robots import draft_description, example_robot_data_folder, load_description
+from robocram.robots import example_robot_data_folder, load_description
 from robocram.tf import Pose
+from tests.drafts import drafted
 
 SO100 = example_robot_data_folder() / "so_arm_description" / "urdf" / "so100.urdf"
 GOAL = {"shoulder_pan": 0.3, "shoulder_lift": 0.4, "elbow_flex": -0.6, "wrist_flex": 0.5,
@@ -24,7 +25,7 @@ GOAL = {"shoulder_pan": 0.3, "shoulder_lift": 0.4, "elbow_flex": -0.6, "wrist_fl
 def test_ik_solves_on_an_arm_whose_gripper_joint_is_named_like_its_link(tmp_path: Path) -> None:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        desc = load_description(draft_description(SO100).description)
+        desc = load_description(drafted(SO100).description)
     model = desc.model
     assert "gripper" in model.links and "gripper" in model.joints  # the clash
     tool = desc.arms["arm"].tool_frame

@@ -27,8 +27,8 @@ from robocram.designators import an
 from robocram.plans import perform, pick_up
 from robocram.projection import simulated_robot
 from robocram.robot_check import check_robot, description_from
-from robocram.robots import draft_description
 from robocram.scenes import tabletop_scene, workcell_scene, workcell_spots
+from tests.drafts import drafted_module
 
 TRACY = Path(__file__).resolve().parents[1] / "data" / "zoo" / "tracy" / "tracy.urdf"
 LIFTED = 0.03  # [m] the mug rises at least this much
@@ -43,7 +43,7 @@ def tracy(tmp_path_factory: pytest.TempPathFactory) -> str:
     module = tmp_path_factory.mktemp("tracy") / "tracy.py"
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        module.write_text(draft_description(TRACY).source(module), "utf-8")
+        drafted_module(TRACY, module)
     return str(module)
 
 
