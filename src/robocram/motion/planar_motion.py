@@ -1,9 +1,10 @@
 """Base motions between two poses ``(x, y, yaw)``, as densely spaced poses to check.
 
 A holonomic base goes straight: x and y linearly, the heading the short way round. A car
-(Reeds-Shepp) follows OMPL's shortest Reeds-Shepp curve (:mod:`reeds_shepp_sampler`). Either is cut into steps in which
-no point of the robot (within ``reach`` of the base origin) moves more than 1 cm and the
-heading no more than 0.02 rad. Headings come out unwrapped (continuous along the poses).
+(Reeds-Shepp) follows OMPL's shortest Reeds-Shepp curve (:mod:`reeds_shepp_sampler`).
+Either is cut into steps in which no point of the robot (within ``reach`` of the base
+origin) moves more than 1 cm and the heading no more than 0.02 rad. Headings come out
+unwrapped (continuous along the poses).
 """
 
 from __future__ import annotations
