@@ -50,7 +50,7 @@ class ReedsSheppSampler:
         space.setBounds(bounds)
         space.setLongestValidSegmentFraction(SEGMENT_FRACTION)
         info = ob.SpaceInformation(space)
-        self._seen: list[tuple[float, float, float]] = []
+        self._seen: list[float] = []  # x, y, yaw of each state shown, flat
         info.setStateValidityChecker(_recorder(self._seen))  # no cycle through OMPL's C++
         info.setup()
         self._space, self._info = space, info  # the validator holds on to neither
@@ -76,9 +76,9 @@ class ReedsSheppSampler:
                 return self._one_by_one(n)  # the validator would not cut it in n
             self._seen.clear()
             self._validator.checkMotion(self._a, self._b)
-            if len(self._seen) != n:
+            if len(self._seen) != 3 * n:
                 return self._one_by_one(n)
-            return np.array(self._seen)[order]
+            return np.array(self._seen).reshape(n, 3)[order]
 
     def _set(self, start: FloatArray, end: FloatArray) -> None:
         for state, pose in ((self._a, start), (self._b, end)):
@@ -115,7 +115,7 @@ class ReedsSheppSampler:
             if self._segments(n) == n:
                 self._seen.clear()
                 self._validator.checkMotion(self._a, self._b)
-                xs = np.array([x for x, _, _ in self._seen])
+                xs = np.array(self._seen[0::3])
                 order = np.argsort(xs, kind="stable")
                 if len(xs) == n and bool(np.all(np.diff(xs[order]) > 0.0)):
                     found = order
@@ -123,11 +123,11 @@ class ReedsSheppSampler:
         return self._orders[n]
 
 
-def _recorder(seen: list[tuple[float, float, float]]) -> Callable[[object], bool]:
+def _recorder(seen: list[float]) -> Callable[[object], bool]:
     """OMPL's validity question, answered "valid" after keeping the state in ``seen``."""
 
     def record(state: object) -> bool:
-        seen.append((state.getX(), state.getY(), state.getYaw()))  # type: ignore[attr-defined]
+        seen.extend((state.getX(), state.getY(), state.getYaw()))  # type: ignore[attr-defined]
         return True
 
     return record
