@@ -90,6 +90,29 @@ def test_a_motion_asked_again_needs_no_exact_check(kitchen: World) -> None:
             assert checker.exact_checks == exact
 
 
+def test_a_poses_kept_fast_answer_is_the_grids_counted_and_dropped_when_it_widens(
+    kitchen: World,
+) -> None:
+    """A pose asked again (a tree node starting another edge) is answered from what the
+    grid said, counted as a check all the same; a widened grid is asked anew."""
+    with kitchen.snapshots.stored_state():
+        kitchen.set_pose("pr2", _pose(-0.8, 0.2, 1.5708))
+        with BaseCollisionChecker.build(RobotHandle.of(kitchen, "pr2"), (-0.8, 1.6)) as checker:
+            fp = checker.footprint
+            poses = straight_poses(
+                np.array([-0.8, 0.2, 1.5708]), np.array([-0.8, 1.6, 1.5708]), 1.0
+            )
+            grid = [bool(h) for h in checker.grid.hits(poses, fp.points, fp.masks, False)]
+            assert any(grid) and not all(grid)  # near the counter and away from it
+            for _ in range(2):
+                before = checker.fast_checks
+                assert [checker._full_hit(p) for p in poses] == grid  # noqa: SLF001
+                assert checker.fast_checks == before + len(poses)
+            checker._widen()  # noqa: SLF001
+            assert not checker._full_answers  # noqa: SLF001 - the old grid's answers
+            assert [checker._full_hit(p) for p in poses] == grid  # noqa: SLF001
+
+
 def _pose(x: float, y: float, yaw: float) -> Pose:
     return Pose((x, y, 0.0), quat.from_euler(0.0, 0.0, yaw))
 

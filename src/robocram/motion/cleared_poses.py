@@ -23,15 +23,22 @@ class ClearedPoses:
 
     reach: float  # [m] farthest any point of the robot is from the base origin
     _answers: dict[bytes, float | None] = field(default_factory=dict)
-    _poses: list[FloatArray] = field(default_factory=list)  # cleared with a gap > 0
-    _gaps: list[float] = field(default_factory=list)
+    # cleared with a gap > 0: the first ``_count`` rows, grown by doubling (a planning query
+    # asks thousands of times; stacking a list of poses each time cost more than the test)
+    _poses: FloatArray = field(default_factory=lambda: np.empty((8, 3)))
+    _gaps: FloatArray = field(default_factory=lambda: np.empty(8))
+    _count: int = 0
 
     def add(self, pose: FloatArray, gap: float | None) -> None:
         """Keep the exact check's answer at ``pose``."""
         self._answers[pose.tobytes()] = gap
         if gap is not None and gap > 0.0:
-            self._poses.append(pose.copy())
-            self._gaps.append(gap)
+            if self._count == len(self._gaps):
+                self._poses = np.concatenate([self._poses, np.empty_like(self._poses)])
+                self._gaps = np.concatenate([self._gaps, np.empty_like(self._gaps)])
+            self._poses[self._count] = pose
+            self._gaps[self._count] = gap
+            self._count += 1
 
     def known(self, pose: FloatArray) -> tuple[bool, float | None]:
         """``(True, answer)`` when the answer at ``pose`` follows from those kept (the
@@ -39,11 +46,10 @@ class ClearedPoses:
         key = pose.tobytes()
         if key in self._answers:
             return True, self._answers[key]
-        if not self._poses:
+        if not self._count:
             return False, None
-        kept = np.asarray(self._poses)
-        step = pose[None, :] - kept
+        step = pose[None, :] - self._poses[: self._count]
         turn = np.abs((step[:, 2] + np.pi) % (2.0 * np.pi) - np.pi)
-        left = np.asarray(self._gaps) - (np.hypot(step[:, 0], step[:, 1]) + self.reach * turn)
+        left = self._gaps[: self._count] - (np.hypot(step[:, 0], step[:, 1]) + self.reach * turn)
         best = float(left.max())
         return (True, best) if best > 0.0 else (False, None)

@@ -22,6 +22,7 @@ from robocram.motion.base_collision import BaseCollisionChecker
 from robocram.motion.ompl_query import POLLS_PER_CHECK, OmplQuery
 from robocram.motion.path_simplification import SegmentTest, simplify_with
 from robocram.motion.planar_motion import reeds_shepp_poses, straight_poses, wrapped
+from robocram.motion.reeds_shepp_sampler import sampler_for
 from robocram.motion.robot_footprint import FloatArray
 from robocram.robots.lazy_library import LazyLibrary
 
@@ -64,14 +65,12 @@ def motion_poses(
     start: FloatArray,
     end: FloatArray,
     turning_radius: float | None,
-    space: ob.StateSpace | None = None,
 ) -> FloatArray:
     """Dense poses of the base's motion ``start`` -> ``end`` (a car's if ``turning_radius``)."""
     reach = checker.footprint.reach
     if turning_radius is None:
         return straight_poses(start, end, reach)
-    rs = space if space is not None else ob.ReedsSheppStateSpace(turning_radius)
-    return reeds_shepp_poses(rs, start, end, reach, turning_radius)
+    return reeds_shepp_poses(sampler_for(turning_radius), start, end, reach)
 
 
 def planned_waypoints(
@@ -107,7 +106,7 @@ def planned_waypoints(
     info = setup.getSpaceInformation()
 
     def free(s1: object, s2: object) -> bool:
-        poses = motion_poses(checker, _pose(s1), _pose(s2), turning_radius, space)
+        poses = motion_poses(checker, _pose(s1), _pose(s2), turning_radius)
         if coarse > 1:
             poses = np.concatenate([poses[::coarse], poses[-1:]])
         return checker.first_blocked(poses) is None
@@ -139,7 +138,7 @@ def planned_waypoints(
             states = [_pose(s) for s in setup.getSolutionPath().getStates()]
     finally:
         checker.confirm_everywhere = True
-    path = _unwrapped(checker, states, turning_radius, space)
+    path = _unwrapped(checker, states, turning_radius)
     if turning_radius is not None:
         return path
     checker.confirm_everywhere = False
@@ -168,7 +167,6 @@ def _unwrapped(
     checker: BaseCollisionChecker,
     states: list[FloatArray],
     turning_radius: float | None,
-    space: ob.StateSpace,
 ) -> list[FloatArray]:
     """The path's poses with continuous headings (a car's: dense along its curves)."""
     out = [states[0]]
@@ -177,7 +175,7 @@ def _unwrapped(
             yaw = out[-1][2] + wrapped(state[2] - out[-1][2])
             out.append(np.array([state[0], state[1], yaw]))
         else:
-            dense = motion_poses(checker, out[-1], state, turning_radius, space)
+            dense = motion_poses(checker, out[-1], state, turning_radius)
             out += list(dense[1:])
     return out
 

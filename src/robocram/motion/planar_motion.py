@@ -1,9 +1,10 @@
 """Base motions between two poses ``(x, y, yaw)``, as densely spaced poses to check.
 
 A holonomic base goes straight: x and y linearly, the heading the short way round. A car
-(Reeds-Shepp) follows OMPL's shortest Reeds-Shepp curve. Either is cut into steps in which
-no point of the robot (within ``reach`` of the base origin) moves more than 1 cm and the
-heading no more than 0.02 rad. Headings come out unwrapped (continuous along the poses).
+(Reeds-Shepp) follows OMPL's shortest Reeds-Shepp curve (:mod:`reeds_shepp_sampler`).
+Either is cut into steps in which no point of the robot (within ``reach`` of the base
+origin) moves more than 1 cm and the heading no more than 0.02 rad. Headings come out
+unwrapped (continuous along the poses).
 """
 
 from __future__ import annotations
@@ -15,12 +16,9 @@ import numpy as np
 
 from robocram.motion.base_collision import planar_steps
 from robocram.motion.robot_footprint import FloatArray
-from robocram.robots.lazy_library import LazyLibrary
 
 if TYPE_CHECKING:
-    from ompl import base as ob
-else:
-    ob = LazyLibrary("ompl.base")
+    from robocram.motion.reeds_shepp_sampler import ReedsSheppSampler
 
 
 def wrapped(angle: float) -> float:
@@ -42,20 +40,20 @@ def straight_poses(start: FloatArray, end: FloatArray, reach: float) -> FloatArr
 
 
 def reeds_shepp_poses(
-    space: ob.ReedsSheppStateSpace, start: FloatArray, end: FloatArray, reach: float,
-    turning_radius: float,
-) -> FloatArray:  # fmt: skip
+    sampler: ReedsSheppSampler, start: FloatArray, end: FloatArray, reach: float
+) -> FloatArray:
     """Dense poses along the shortest Reeds-Shepp curve from ``start`` to ``end``."""
-    a, b, out = space.allocState(), space.allocState(), space.allocState()
-    for state, pose in ((a, start), (b, end)):
-        state.setX(float(pose[0]))
-        state.setY(float(pose[1]))
-        state.setYaw(wrapped(float(pose[2])))
-    length = float(space.distance(a, b))
-    steps = planar_steps(length, length / turning_radius, reach)
-    poses = [np.asarray(start, dtype=float)]
-    for k in range(1, steps + 1):
-        space.interpolate(a, b, k / steps, out)
-        yaw = poses[-1][2] + wrapped(out.getYaw() - poses[-1][2])
-        poses.append(np.array([out.getX(), out.getY(), yaw]))
-    return np.array(poses)
+    ends = [np.array([pose[0], pose[1], wrapped(float(pose[2]))], dtype=float)
+            for pose in (start, end)]  # fmt: skip
+    length = sampler.length(ends[0], ends[1])
+    steps = planar_steps(length, length / sampler.turning_radius, reach)
+    states = sampler.states(ends[0], ends[1], steps)
+    poses = np.empty((steps + 1, 3))
+    poses[0] = start
+    poses[1:, :2] = states[:, :2]
+    yaw, yaws = float(poses[0, 2]), []
+    for heading in states[:, 2].tolist():  # unwrapped: each the short way from the last
+        yaw += wrapped(heading - yaw)
+        yaws.append(yaw)
+    poses[1:, 2] = yaws
+    return poses
