@@ -113,12 +113,6 @@ def _add_viewer_commands(commands: argparse._SubParsersAction[argparse.ArgumentP
         help="a motion is played one frame every this much of its time [s] (default: the "
         "viewer's REPLAY_PERIOD, 0.1)",
     )
-    view.add_argument(
-        "--no-environment-map",
-        action="store_true",
-        help="light the scene without its environment map: a page drawn without a GPU "
-        "(software WebGL) loads seconds sooner",
-    )
     replay = commands.add_parser("replay", help="a stored run in the browser viewer")
     replay.add_argument("db", type=Path, help="trace database (SQLite)")
     replay.add_argument("--run", type=int, help="run id (default: the last run)")
@@ -131,6 +125,12 @@ def _add_viewer_commands(commands: argparse._SubParsersAction[argparse.ArgumentP
             "--screenshot", type=Path, help="save a PNG from headless Chromium, exit"
         )
         command.add_argument("--seconds", type=float, help="serve this long [s], then exit")
+        command.add_argument(
+            "--no-environment-map",
+            action="store_true",
+            help="light the scene without its environment map: a page drawn without a GPU "
+            "(software WebGL) loads seconds sooner",
+        )
         command.set_defaults(handler=handler)
 
 
@@ -221,7 +221,9 @@ def _replay(args: argparse.Namespace) -> int:
     viewer_module = _viewer_module()
     with open_database(args.db) as db:
         run = last_run(db, args.run)
-        viewer = viewer_module.replay_viewer(db, run, args.host, args.port)
+        viewer = viewer_module.replay_viewer(
+            db, run, args.host, args.port, environment_map=not args.no_environment_map
+        )
     with viewer:
         print(f"run {run} at {viewer.url}", flush=True)
         return _serve(viewer, args)

@@ -87,3 +87,12 @@ def test_cli_replay_bad_input(
     port = str(live_run.viewer.server.get_port())
     assert main(["replay", db, "--port", port, "--seconds", "0"]) == EXIT_INPUT
     assert f"port {port} on 127.0.0.1 is in use" in capsys.readouterr().err
+
+
+def test_cli_replay_lit_without_the_environment_map_serves_the_run(
+    live_run: Any, capsys: pytest.CaptureFixture[str]
+) -> None:
+    port = _free_port()
+    argv = ["replay", str(live_run.db_path), "--no-environment-map", "--port", str(port)]
+    assert main([*argv, "--seconds", "0"]) == 0
+    assert f"run {live_run.run} at http://127.0.0.1:{port}" in capsys.readouterr().out

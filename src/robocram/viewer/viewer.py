@@ -294,16 +294,21 @@ def replay_viewer(
     host: str = DEFAULT_HOST,
     port: int = DEFAULT_PORT,
     period: float = REPLAY_PERIOD,
+    *,
+    environment_map: bool = True,
 ) -> Viewer:
     """A viewer showing stored run ``run``, its world rebuilt from the stored scene.
 
     Its slider runs over the stored states and the trajectories' samples every ``period``
     [s] between them; the play button steps through them at the replay clock's pace.
+    ``environment_map`` as for :class:`Viewer`.
     """
     row = require_run(db, run)
     if row.scene is None:
         raise NoWorld()
     with build_scene(row.scene, db=db) as world:
-        viewer = Viewer(world, host, port, title=f"run {run}: {row.name}")
+        viewer = Viewer(
+            world, host, port, title=f"run {run}: {row.name}", environment_map=environment_map
+        )
     viewer.load_run(db, run, period)
     return viewer
