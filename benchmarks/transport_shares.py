@@ -44,7 +44,11 @@ PURPOSES = (
     ),
     ("trajectory timing", r"motion/(time_parameterization|corner_blend|jerk_profile)\.py"),
     ("Prolog", r"<robocram clause>|robocram/logic/"),
-    ("base planning and driving", r"motion/base_path\.py|projection/navigation\.py"),
+    ("looking and perceiving", r"projection/(perception|neck)\.py|world/(view|visibility)\.py"),
+    (
+        "base planning and driving",
+        r"motion/(base_path|base_collision)\.py|projection/navigation\.py",
+    ),
     ("stand search (costmaps)", r"robocram/costmaps/"),
     ("designators", r"robocram/designators/"),
     ("world queries and writes", r"robocram/world/"),
