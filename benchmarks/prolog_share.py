@@ -16,27 +16,31 @@ milliseconds. Usage: python benchmarks/prolog_share.py [RUNS] [--second]
 
 from __future__ import annotations
 
-import signal
 import statistics
 import sys
 from collections import Counter
 from types import FrameType
 
 from cold_transport import _timed_transport
+from sampled_transports import sampled_transports
 from transport_timing import _mug_spot
 
-from robocram.scenes import kitchen_scene
-
-INTERVAL = 0.0005  # [s] of process CPU between samples
+from robocram.scenes import KitchenScene
 
 
 class Sampler:
-    """Counts the samples of each kind while `on`."""
+    """Counts the samples of each kind while on (:meth:`start` to :meth:`stop`)."""
 
     def __init__(self) -> None:
         self.on = False
         self.kinds: Counter[str] = Counter()
         self.places: Counter[str] = Counter()  # innermost logic function of prolog samples
+
+    def start(self) -> None:
+        self.on = True
+
+    def stop(self) -> None:
+        self.on = False
 
     def sample(self, signum: int, frame: FrameType | None) -> None:
         if not self.on:
@@ -68,24 +72,15 @@ def _kind(frame: FrameType) -> str | None:
     return "logic" if name.startswith("logic/", at + len("/robocram/")) else "other"
 
 
+def _second_transport(scene: KitchenScene, run: int) -> None:
+    """The transport before the sampled one in the same scene (``--second``)."""
+    _timed_transport(scene, _mug_spot(run % 10))
+
+
 def main(runs: int, second: bool) -> None:
     sampler = Sampler()
-    signal.signal(signal.SIGPROF, sampler.sample)
-    signal.setitimer(signal.ITIMER_PROF, INTERVAL, INTERVAL)
-    scene = kitchen_scene("pr2")
-    _timed_transport(scene, _mug_spot(0))  # the process's first: builds what is kept
-    scene.world.close()
-    cpu = []
-    for run in range(runs):
-        scene = kitchen_scene("pr2")
-        if second:
-            _timed_transport(scene, _mug_spot(run % 10))
-        sampler.on = True
-        _, used, _ = _timed_transport(scene, _mug_spot(run % 10))
-        sampler.on = False
-        cpu.append(used)
-        scene.world.close()
-    signal.setitimer(signal.ITIMER_PROF, 0, 0)
+    before = _second_transport if second else None
+    cpu = sampled_transports(sampler, runs, before)
     total = sum(sampler.kinds.values())
     mean = statistics.mean(cpu)
     shares = "  ".join(

@@ -16,19 +16,13 @@ Usage: python benchmarks/transport_shares.py [RUNS]
 from __future__ import annotations
 
 import re
-import signal
 import statistics
 import sys
 import time
 from collections import Counter
 from types import FrameType
 
-from cold_transport import _timed_transport
-from transport_timing import _mug_spot
-
-from robocram.scenes import kitchen_scene
-
-INTERVAL = 0.0005  # [s] of process CPU between samples
+from sampled_transports import sampled_transports
 
 # (purpose, pattern over the stack's "folder/file.py:qualname" frames), first match wins
 PURPOSES = (
@@ -66,6 +60,12 @@ class Sampler:
         self.last = 0.0  # process CPU at the last sample (or at `on`)
         self._patterns = [(name, re.compile(rx)) for name, rx in PURPOSES]
 
+    def start(self) -> None:
+        self.on, self.last = True, time.process_time()
+
+    def stop(self) -> None:
+        self.on = False
+
     def sample(self, signum: int, frame: FrameType | None) -> None:
         if not self.on:
             return
@@ -101,20 +101,7 @@ def _table(title: str, counts: Counter[str], mean: float) -> None:
 
 def main(runs: int) -> None:
     sampler = Sampler()
-    signal.signal(signal.SIGPROF, sampler.sample)
-    signal.setitimer(signal.ITIMER_PROF, INTERVAL, INTERVAL)
-    scene = kitchen_scene("pr2")
-    _timed_transport(scene, _mug_spot(0))  # the process's first: builds what is kept
-    scene.world.close()
-    cpu = []
-    for run in range(runs):
-        scene = kitchen_scene("pr2")
-        sampler.on, sampler.last = True, time.process_time()
-        _, used, _ = _timed_transport(scene, _mug_spot(run % 10))
-        sampler.on = False
-        cpu.append(used)
-        scene.world.close()
-    signal.setitimer(signal.ITIMER_PROF, 0, 0)
+    cpu = sampled_transports(sampler, runs)
     mean = statistics.mean(cpu)
     print(f"pr2 cold transport: CPU mean {mean:.1f} ms, median {statistics.median(cpu):.1f} ms")
     print(f"  {sum(sampler.purposes.values()):.2f} s of CPU sampled over {runs} transports")
