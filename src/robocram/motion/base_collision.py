@@ -211,6 +211,9 @@ class BaseCollisionChecker:
         """Whether the grid holds every base position of ``poses`` (its cells reach past
         them by the robot's reach, so every sample point falls on the grid)."""
         (x0, y0), (x1, y1) = self.covered
+        if len(poses) == 1:  # a tree node's check: plain floats, not four reductions
+            x, y = poses[0, :2].tolist()
+            return bool(x0 <= x <= x1 and y0 <= y <= y1)
         xs, ys = poses[:, 0], poses[:, 1]
         return bool(xs.min() >= x0 and xs.max() <= x1 and ys.min() >= y0 and ys.max() <= y1)
 
