@@ -27,6 +27,7 @@ import numpy as np
 from robocram.execution.failures import NavigationGoalOutsideArea
 from robocram.motion.cleared_poses import ClearedPoses
 from robocram.motion.contact_allowance import ContactAllowance
+from robocram.motion.grid_hits_on_demand import GridHitsOnDemand
 from robocram.motion.hand_contact import KEEP_DEPTH
 from robocram.motion.height_bins import HeightBins
 from robocram.motion.obstacle_grid import Box, ObstacleGrid
@@ -195,16 +196,24 @@ class BaseCollisionChecker:
     def _grid_hits(self, poses: FloatArray, points: FloatArray, masks: np.ndarray) -> np.ndarray:
         """Per pose, whether any of ``points`` (base frame) lies in a cell sharing bits with
         its ``masks``; the grid widens first when a pose lies beyond it."""
+        return self.grid.hits(poses, points, masks, self._on_grid(poses))
+
+    def _on_grid(self, poses: FloatArray) -> bool:
+        """Whether the grid holds every pose of ``poses``, widened first when one lies
+        beyond it (:meth:`_covers`)."""
         inside = self._covers(poses)
         if not inside and self.covered != self.bounds:
             self._widen()
             inside = self._covers(poses)
-        return self.grid.hits(poses, points, masks, inside)
+        return inside
 
     def _covers(self, poses: FloatArray) -> bool:
         """Whether the grid holds every base position of ``poses`` (its cells reach past
         them by the robot's reach, so every sample point falls on the grid)."""
         (x0, y0), (x1, y1) = self.covered
+        if len(poses) == 1:  # a tree node's check: plain floats, not four reductions
+            x, y = poses[0, :2].tolist()
+            return bool(x0 <= x <= x1 and y0 <= y <= y1)
         xs, ys = poses[:, 0], poses[:, 1]
         return bool(xs.min() >= x0 and xs.max() <= x1 and ys.min() >= y0 and ys.max() <= y1)
 
@@ -259,7 +268,7 @@ class BaseCollisionChecker:
         full_next = True
         for begin in range(0, len(poses), CHUNK):
             chunk = poses[begin : begin + CHUNK]
-            edge = self.fast_hits(chunk, boundary=True)
+            edge = self._boundary_hits(chunk)
             for k, pose in enumerate(chunk):
                 if cleared is not None and self._travel(cleared[0], pose) < cleared[1]:
                     continue  # within the cleared pose's gap; the next checked one is full
@@ -273,6 +282,14 @@ class BaseCollisionChecker:
                     cleared = (pose, gap) if gap > 0.0 else None
                     full_next = True
         return None, cleared
+
+    def _boundary_hits(self, poses: FloatArray) -> GridHitsOnDemand:
+        """:meth:`fast_hits` of ``poses`` with the boundary, counted (and the grid widened)
+        now, each looked up when asked: a motion stops at its first blocked pose."""
+        self.fast_checks += len(poses)
+        fp = self.footprint
+        inside = self._on_grid(poses)
+        return GridHitsOnDemand(self.grid, poses, fp.boundary_points, fp.boundary_masks, inside)
 
     def _unproven(self, poses: FloatArray) -> list[tuple[int, int]]:
         """Ranges ``[first, stop)`` of ``poses`` (a dense motion) that the grown footprint

@@ -87,7 +87,7 @@ class ObstacleGrid:
             y = poses[:, 1:2] + sin * points[:, 0] + cos * points[:, 1]
             cells = np.take(self.masks.ravel(), self.flat_indices(x, y))
             return np.asarray(np.any(cells & masks, axis=1))
-        block = max(1, LOOKUPS_PER_BLOCK // max(len(points), 1))
+        block = self.block(points)
         if len(poses) <= block:
             return self._hits_on_grid(poses, points, masks)
         return np.concatenate([
@@ -100,22 +100,51 @@ class ObstacleGrid:
     ) -> npt.NDArray[np.bool_]:
         """:meth:`hits` of points known to fall on the grid: the cells' rows and columns
         come from one product of the poses' rotations (in cell units) with the points."""
+        return self.hits_of_units(self.units(poses, points), poses, masks, 0, len(poses))
+
+    def units(
+        self, poses: npt.NDArray[np.float64], points: npt.NDArray[np.float64]
+    ) -> npt.NDArray[np.float64]:
+        """The rotated ``points`` of every pose in cell units, before the poses' offsets:
+        rows the x of every pose, then the y of every pose. One product for all the poses:
+        BLAS's rows differ in their last bits with how many poses it is given, so callers
+        keep :meth:`hits`' blocks."""
         per_cell = 1.0 / self.cell
         count = len(poses)
         cos, sin = np.cos(poses[:, 2]) * per_cell, np.sin(poses[:, 2]) * per_cell
         rotations = np.empty((2 * count, 2))
         rotations[:count, 0], rotations[:count, 1] = cos, -sin
         rotations[count:, 0], rotations[count:, 1] = sin, cos
-        ij = rotations @ points.T  # rows: i of every pose, then j of every pose
-        ij[:count] += ((poses[:, 0] - self.origin[0]) * per_cell)[:, None]
-        ij[count:] += ((poses[:, 1] - self.origin[1]) * per_cell)[:, None]
-        cells = ij.astype(np.intp)
-        flat = cells[:count]
+        return np.asarray(rotations @ points.T)
+
+    def hits_of_units(
+        self,
+        units: npt.NDArray[np.float64],
+        poses: npt.NDArray[np.float64],
+        masks: IntArray,
+        first: int,
+        stop: int,
+    ) -> npt.NDArray[np.bool_]:
+        """:meth:`hits` of ``poses[first:stop]`` from their :meth:`units` (of all ``poses``):
+        each pose's answer is its row's alone, whichever rows are asked together."""
+        per_cell = 1.0 / self.cell
+        count = len(poses)
+        rows = poses[first:stop]
+        i = units[first:stop] + ((rows[:, 0] - self.origin[0]) * per_cell)[:, None]
+        j = (
+            units[count + first : count + stop]
+            + ((rows[:, 1] - self.origin[1]) * per_cell)[:, None]
+        )
+        flat = i.astype(np.intp)
         flat *= self.masks.shape[1]
-        flat += cells[count:]
+        flat += j.astype(np.intp)
         found = np.take(self.masks.ravel(), flat, mode="clip")
         found &= masks
         return np.asarray(found.any(axis=1))
+
+    def block(self, points: npt.NDArray[np.float64]) -> int:
+        """How many poses :meth:`hits` looks up at once on the grid with ``points``."""
+        return max(1, LOOKUPS_PER_BLOCK // max(len(points), 1))
 
     def flat_indices(
         self, x: npt.NDArray[np.float64], y: npt.NDArray[np.float64]
