@@ -10,6 +10,7 @@ With planning off, the same motion fails with ``ManipulationPathBlocked`` naming
 
 from __future__ import annotations
 
+import gc
 import importlib.util
 import math
 from collections.abc import Iterator
@@ -20,8 +21,9 @@ import pytest
 from PIL import Image
 
 from robocram.designators import a
-from robocram.execution import Task, TaskStopped, perform
-from robocram.execution.failures import ManipulationPathBlocked
+from robocram.execution import Task, TaskStopped, perform, run_top_level
+from robocram.execution.failures import ManipulationPathBlocked, PlanFailure
+from robocram.execution.task import WHOLE_FAILURES
 from robocram.execution.task_context import binding_task
 from robocram.kinematics import solve_ik
 from robocram.motion import (
@@ -181,3 +183,32 @@ def test_a_stopped_task_ends_the_planner_at_once_and_nothing_moves(scene: Kitche
     # and the same query, not stopped, plans: the stop was what ended it
     assert rrt_connect(snapshot, np.array(start), np.array(end), *box, bound, CheckCounter(),
                        20_000, 0) is not None  # fmt: skip
+
+
+def test_failed_motions_let_go_of_their_collision_scenes(scene: KitchenScene) -> None:
+    """A plan that recovers from many failed motions keeps only the task tree's latest
+    failures whole: older ones no longer hold their planning snapshots (native memory a
+    long clearing once grew past 20 GB with). Counted on the garbage collector's objects."""
+    target = _stand(scene)
+    scene.world.add_box("wall", (0.12, 0.12, 1.2), (-0.97, 2.02, 1.46))  # too tall to go over
+
+    def tries() -> list[PlanFailure]:
+        failures = []
+        for _ in range(3 * WHOLE_FAILURES):
+            try:
+                perform(a.motion(type="moving-tcp", arm="right", target=a.location(pose=target)))
+            except ManipulationPathBlocked as failure:
+                failures.append(failure)
+        return failures
+
+    before = _scenes_alive()
+    with simulated_robot(scene.world, "pr2", motion=MotionSettings(budget=1)):
+        failures = run_top_level(tries)
+    assert len(failures) == 3 * WHOLE_FAILURES
+    assert all("RRTConnect found no way round" in str(f) for f in failures)  # each planned
+    assert _scenes_alive() - before <= WHOLE_FAILURES  # without the release: all 12
+
+
+def _scenes_alive() -> int:
+    gc.collect()
+    return sum(isinstance(o, CollisionScene) for o in gc.get_objects())

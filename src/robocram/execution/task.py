@@ -17,6 +17,10 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import Any, Protocol
 
+from robocram.execution.released_frames import release_frames
+
+WHOLE_FAILURES = 4  # a task tree's latest failures keep their frames' locals
+
 
 class TaskObserver(Protocol):
     """Told when a task starts and ends (a :class:`TaskListener` is one)."""
@@ -74,7 +78,26 @@ class Task:
         self._stop = False
         self._suspended = False
         self._wakers: list[threading.Condition] = []
+        self._whole: list[BaseException] = []  # the root's latest failures, frames intact
         self.name = parent._add_child(self, name) if parent is not None else name
+
+    def _keep_whole(self, failure: BaseException) -> None:
+        """Keep ``failure`` whole among its tree's latest :data:`WHOLE_FAILURES`; an older
+        one loses its frames' locals (:func:`release_frames`).
+
+        The tree outlives its failures' frames, and a long activity recovers from hundreds:
+        kept whole, they held every failed motion's collision scene (gigabytes). The latest
+        stay whole, so that a debugger's post-mortem of a plan's failure sees its locals.
+        """
+        root = self
+        while root.parent is not None:
+            root = root.parent
+        with root._lock:
+            kept = [f for f in root._whole if f is not failure]
+            kept.append(failure)
+            old, root._whole = kept[:-WHOLE_FAILURES], kept[-WHOLE_FAILURES:]
+        for done in old:
+            release_frames(done)
 
     def _add_child(self, child: Task, name: str) -> str:
         with self._lock:
@@ -230,6 +253,8 @@ class Task:
         self, status: TaskStatus, result: object = None, failure: BaseException | None = None
     ) -> None:
         """Record the outcome and end time."""
+        if failure is not None:
+            self._keep_whole(failure)
         self.result, self.failure = result, failure
         self.end_time = time.time()
         self.status = status
