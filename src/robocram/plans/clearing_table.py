@@ -357,7 +357,8 @@ def _return_group(
     place: Place, things: list[tuple[str, str, Point]], done: TableClearing
 ) -> tuple[dict[str, Exception], list[Exception]]:
     """Bring ``things`` back into ``place``, opening it first and closing it after; the
-    failure of each thing not brought back (by name), and the container's own failures.
+    failure of each thing not brought back (by name: the container's, when it would not
+    open), and the container's failures to close.
     A thing still in the hand after its failure is put down on the table
     (:func:`_put_down`): the hand is free for the rest, and a later round may take it."""
     visit = Visit(place)
@@ -373,8 +374,10 @@ def _return_group(
                 except PlanFailure as failure:
                     missed[name] = failure
                     _put_down(name, done)
-    except PlanFailure as failure:  # the container would not open
-        failures.append(failure)
+    except PlanFailure as failure:  # the container would not open: what is left is missed
+        for name, _, _ in things:  # by it (a round that brought nothing back ends clearing)
+            if name not in done.returned:
+                missed.setdefault(name, failure)
     finally:
         done.opened += [o.container.link for o in visit.opened]
         failures += visit.close(done.log)
