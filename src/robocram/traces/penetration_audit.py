@@ -38,15 +38,16 @@ QUERY_REACH = 1e-4
 # [m] how far round the moving parts' bounds the others near them are gathered: a smaller
 # box the parts stay within needs no new gathering (the pairs asked about are the same)
 NEAR_MARGIN = 0.05
-_SIGN = np.array([[1.0], [-1.0]])  # (low, high) -> (low, -high): negation is exact
+_SIGN = np.array([1.0, 1.0, 1.0, -1.0, -1.0, -1.0])  # (low, high) -> (low, -high): exact
+_HALVES = np.array([3, 4, 5, 0, 1, 2])  # (a, b) -> (b, a)
 
 
 def _signed(boxes: FloatArray) -> tuple[FloatArray, FloatArray]:
     """Bounds (k, 2, 3) as ``(low, -high)`` and ``(high, -low)`` rows (k, 6): boxes A and
     B overlap exactly when every entry of A's first is <= B's second (``low_A <= high_B``
     and ``low_B <= high_A``), one comparison instead of two (negation is exact)."""
-    k = len(boxes)
-    return (boxes * _SIGN).reshape(k, 6), (boxes[:, ::-1] * _SIGN).reshape(k, 6)
+    low = boxes.reshape(len(boxes), 6) * _SIGN
+    return low, -low[:, _HALVES]
 
 
 @dataclass(frozen=True)
@@ -237,10 +238,10 @@ class PenetrationProbe:
         self, mine: Part, other: Part, mine_at: LinkSlot, other_at: LinkSlot
     ) -> Penetration | None:
         """The pair's penetration if deeper than it may be (``*_at``: their slots)."""
-        gap = self.raw.slot_closest(mine_at, other_at, QUERY_REACH)
-        if gap is None or -gap.distance <= self.bounds.penetration:
+        gap = self.raw.slot_distance(mine_at, other_at, QUERY_REACH)
+        if gap is None or -gap <= self.bounds.penetration:
             return None  # within the general bound: never a finding, allowed or not
-        depth = -gap.distance
+        depth = -gap
         bound = self._allowed_depth(mine, other)
         if bound is not None:
             if depth <= bound:
