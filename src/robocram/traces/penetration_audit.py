@@ -98,6 +98,7 @@ class PenetrationProbe:
         self.parts = robot_side_parts(robot, held)
         labels = np.array(groups if groups is not None else range(len(self.parts)), dtype=object)
         self._moving = np.flatnonzero(labels != "") if groups is not None else None
+        self._all_rows = np.arange(len(self.parts))
         self._moving_slots: list[LinkSlot] = []
         floors = {o.name for o in world.objects(type="floor")}
         others = [o.name for o in world.objects() if o.name != robot.name and o.name not in held]
@@ -178,8 +179,8 @@ class PenetrationProbe:
     def check(self, first: bool) -> Iterator[Penetration]:
         """Penetrations now: at the ``first`` configuration of all parts, later only of
         the parts that move and the pairs that move relative to each other."""
-        moving = self._moving is not None and not first
-        rows = self._moving if moving else np.arange(len(self.parts))
+        rows = self._moving if self._moving is not None and not first else self._all_rows
+        moving = rows is self._moving
         low = self._low_now[:0]
         if len(rows):
             low, high = _signed(self.raw.slot_bounds(self._moving_slots if moving else self._slots))
@@ -273,7 +274,7 @@ class PenetrationProbe:
 
 def _all(values: NDArray[np.bool_], axis: int) -> NDArray[np.bool_]:
     """``values.all(axis)`` without the method's Python wrapper (called per configuration)."""
-    return np.logical_and.reduce(values, axis=axis)  # type: ignore[no-any-return]
+    return np.logical_and.reduce(values, axis=axis)
 
 
 def robot_side_parts(robot: RobotHandle, held: Iterable[str]) -> list[Part]:
