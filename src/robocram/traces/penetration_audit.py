@@ -118,13 +118,9 @@ class PenetrationProbe:
         self._near_mask = np.zeros((0, 0), dtype=bool)  # _world_mask of the near others
         self._near_mask_moving = self._near_mask  # its rows of the moving parts
         self._hand_of = _hands(robot.description, held)
-        self._world_mask = np.array(
-            [
-                [not (p.body == robot.name and o.body in floors) for o in self.others]
-                for p in self.parts
-            ],
-            dtype=bool,
-        ).reshape(len(self.parts), len(self.others))
+        mine = np.array([p.body == robot.name for p in self.parts], dtype=bool)
+        floor = np.array([o.body in floors for o in self.others], dtype=bool)
+        self._world_mask = ~(mine[:, None] & floor[None, :])  # robot links on floors: any depth
         pairs = self._judged_pairs(skipped)
         self._self_pairs = pairs[labels[pairs[:, 0]] != labels[pairs[:, 1]]]
         self._self_a, self._self_b = self._self_pairs[:, 0].copy(), self._self_pairs[:, 1].copy()
