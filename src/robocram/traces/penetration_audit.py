@@ -40,6 +40,7 @@ QUERY_REACH = 1e-4
 NEAR_MARGIN = 0.05
 _SIGN = np.array([1.0, 1.0, 1.0, -1.0, -1.0, -1.0])  # (low, high) -> (low, -high): exact
 _HALVES = np.array([3, 4, 5, 0, 1, 2])  # (a, b) -> (b, a)
+_ALL_BELOW = np.uint64(0x0101010101010101)  # 8 booleans, all True, read as one word
 
 
 def _signed(boxes: FloatArray) -> tuple[FloatArray, FloatArray]:
@@ -125,7 +126,10 @@ class PenetrationProbe:
         self._self_pairs = pairs[labels[pairs[:, 0]] != labels[pairs[:, 1]]]
         self._self_a, self._self_b = self._self_pairs[:, 0].copy(), self._self_pairs[:, 1].copy()
         # each part's bounds now, as _signed rows
-        self._low_now, self._high_now = _signed(self.raw.slot_bounds(self._slots))
+        # (each padded with two zeros: 8 comparisons of a pair read as one 8-byte word)
+        low, high = _signed(self.raw.slot_bounds(self._slots))
+        self._low_now, self._high_now = np.zeros((len(low), 8)), np.zeros((len(low), 8))
+        self._low_now[:, :6], self._high_now[:, :6] = low, high
 
     def _judged_pairs(self, skipped: Collection[LinkPair]) -> NDArray[np.intp]:
         """Pairs of parts (robot links, held objects) judged against each other."""
@@ -177,10 +181,10 @@ class PenetrationProbe:
         the parts that move and the pairs that move relative to each other."""
         rows = self._moving if self._moving is not None and not first else self._all_rows
         moving = rows is self._moving
-        low = self._low_now[:0]
+        low = self._low_now[:0, :6]
         if len(rows):
             low, high = _signed(self.raw.slot_bounds(self._moving_slots if moving else self._slots))
-            self._low_now[rows], self._high_now[rows] = low, high
+            self._low_now[rows, :6], self._high_now[rows, :6] = low, high
         yield from self._world(rows, low, moving)
         yield from self._self()
 
@@ -225,7 +229,8 @@ class PenetrationProbe:
         pairs = self._self_pairs
         if not len(pairs):
             return
-        overlap = _all(self._low_now[self._self_a] <= self._high_now[self._self_b], 1)
+        below = self._low_now[self._self_a] <= self._high_now[self._self_b]  # (pairs, 8)
+        overlap = below.view(np.uint64)[:, 0] == _ALL_BELOW  # every byte True (1)
         for i, j in pairs[overlap]:
             found = self._judged(self.parts[i], self.parts[j], self._slots[i], self._slots[j])
             if found is not None:
