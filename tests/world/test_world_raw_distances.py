@@ -101,4 +101,9 @@ def test_asked_by_slot_the_answers_are_those_asked_by_name(world: World) -> None
     assert read.shape == (len(links), 2, 3)
     assert read.tolist() == [[list(low), list(high)] for low, high in raw.link_bounds("pr2", links)]
     (a,), (b,) = raw.slots("a", raw.collision_links("a")), raw.slots("b", raw.collision_links("b"))
-    assert raw.slot_closest(a, b, 1e-4) == raw.closest("a", "a", "b", "b", 1e-4)
+    gap = raw.closest("a", "a", "b", "b", 1e-4)
+    assert raw.slot_closest(a, b, 1e-4) == gap
+    assert gap is not None and raw.slot_distance(a, b, 1e-4) == gap.distance  # 3 cm deep
+    assert gap.distance == pytest.approx(-0.03, abs=1e-6)
+    world.set_pose("b", (0.5, 0.0, 0.5))  # 30 cm apart: nothing within reach
+    assert raw.slot_distance(a, b, 1e-4) is None

@@ -67,16 +67,16 @@ def dense_configurations(
     names: Sequence[str], times: FloatArray, positions: FloatArray, levers: Levers,
     joint_step: float, point_step: float,
 ) -> Iterator[tuple[float, FloatArray]]:  # fmt: skip
-    """``(t, positions)`` from the first stored point to the last, within both steps."""
+    """``(t, positions)`` from the first stored point to the last, within both steps; the
+    ``k``-th of ``n`` steps at share ``s = k / n`` is ``(1 - s) * start + s * end`` (one
+    segment's steps computed at once, each entry by the same operations)."""
     yield float(times[0]), positions[0]
     for i in range(len(times) - 1):
         n = levers.steps(names, positions[i + 1] - positions[i], joint_step, point_step)
-        for k in range(1, n + 1):
-            s = k / n
-            yield (
-                float((1.0 - s) * times[i] + s * times[i + 1]),
-                (1.0 - s) * positions[i] + s * positions[i + 1],
-            )
+        s = np.arange(1, n + 1) / n
+        rest = 1.0 - s
+        steps = rest[:, None] * positions[i] + s[:, None] * positions[i + 1]
+        yield from zip((rest * times[i] + s * times[i + 1]).tolist(), steps, strict=True)
 
 
 def _radii(robot: RobotHandle, held: Mapping[str, str]) -> dict[str, float]:

@@ -38,6 +38,17 @@ QUERY_REACH = 1e-4
 # [m] how far round the moving parts' bounds the others near them are gathered: a smaller
 # box the parts stay within needs no new gathering (the pairs asked about are the same)
 NEAR_MARGIN = 0.05
+_SIGN = np.array([1.0, 1.0, 1.0, -1.0, -1.0, -1.0])  # (low, high) -> (low, -high): exact
+_HALVES = np.array([3, 4, 5, 0, 1, 2])  # (a, b) -> (b, a)
+_ALL_BELOW = np.uint64(0x0101010101010101)  # 8 booleans, all True, read as one word
+
+
+def _signed(boxes: FloatArray) -> tuple[FloatArray, FloatArray]:
+    """Bounds (k, 2, 3) as ``(low, -high)`` and ``(high, -low)`` rows (k, 6): boxes A and
+    B overlap exactly when every entry of A's first is <= B's second (``low_A <= high_B``
+    and ``low_B <= high_A``), one comparison instead of two (negation is exact)."""
+    low = boxes.reshape(len(boxes), 6) * _SIGN
+    return low, -low[:, _HALVES]
 
 
 @dataclass(frozen=True)
@@ -88,6 +99,7 @@ class PenetrationProbe:
         self.parts = robot_side_parts(robot, held)
         labels = np.array(groups if groups is not None else range(len(self.parts)), dtype=object)
         self._moving = np.flatnonzero(labels != "") if groups is not None else None
+        self._all_rows = np.arange(len(self.parts))
         self._moving_slots: list[LinkSlot] = []
         floors = {o.name for o in world.objects(type="floor")}
         others = [o.name for o in world.objects() if o.name != robot.name and o.name not in held]
@@ -97,24 +109,27 @@ class PenetrationProbe:
             self._moving_slots = [self._slots[i] for i in self._moving]
         self._other_slots = self._slots_of(self.others)
         self._other_boxes = self.raw.slot_bounds(self._other_slots)
+        self._other_high = _signed(self._other_boxes)[1]  # (high, -low) of each other
         self._moved_rows: dict[tuple[tuple[str, str], ...], NDArray[np.intp]] = {}
         # what hangs from what: nothing is attached or let go during one trajectory
         self._attachments = tuple(world.bodies.all_attachments())
         self._near: NDArray[np.intp] | None = None  # others whose bounds meet _near_box
-        self._near_box = np.zeros((2, 3))
+        self._near_box = np.zeros(6)  # (low, -high) of the box the near others meet
+        self._near_high = np.zeros((0, 6))  # _other_high of the near others
         self._near_mask = np.zeros((0, 0), dtype=bool)  # _world_mask of the near others
+        self._near_mask_moving = self._near_mask  # its rows of the moving parts
         self._hand_of = _hands(robot.description, held)
-        self._world_mask = np.array(
-            [
-                [not (p.body == robot.name and o.body in floors) for o in self.others]
-                for p in self.parts
-            ],
-            dtype=bool,
-        ).reshape(len(self.parts), len(self.others))
+        mine = np.array([p.body == robot.name for p in self.parts], dtype=bool)
+        floor = np.array([o.body in floors for o in self.others], dtype=bool)
+        self._world_mask = ~(mine[:, None] & floor[None, :])  # robot links on floors: any depth
         pairs = self._judged_pairs(skipped)
         self._self_pairs = pairs[labels[pairs[:, 0]] != labels[pairs[:, 1]]]
         self._self_a, self._self_b = self._self_pairs[:, 0].copy(), self._self_pairs[:, 1].copy()
-        self._boxes_now = self.raw.slot_bounds(self._slots)
+        # each part's bounds now, as _signed rows
+        # (each padded with two zeros: 8 comparisons of a pair read as one 8-byte word)
+        low, high = _signed(self.raw.slot_bounds(self._slots))
+        self._low_now, self._high_now = np.zeros((len(low), 8)), np.zeros((len(low), 8))
+        self._low_now[:, :6], self._high_now[:, :6] = low, high
 
     def _judged_pairs(self, skipped: Collection[LinkPair]) -> NDArray[np.intp]:
         """Pairs of parts (robot links, held objects) judged against each other."""
@@ -158,33 +173,33 @@ class PenetrationProbe:
             self._moved_rows[key] = rows
         if len(rows):
             self._other_boxes[rows] = self.raw.slot_bounds([self._other_slots[i] for i in rows])
+            self._other_high[rows] = _signed(self._other_boxes[rows])[1]
             self._near = None  # gathered from bounds that moved
 
     def check(self, first: bool) -> Iterator[Penetration]:
         """Penetrations now: at the ``first`` configuration of all parts, later only of
         the parts that move and the pairs that move relative to each other."""
-        rows = self._moving if self._moving is not None and not first else None
-        if rows is None:
-            rows = np.arange(len(self.parts))
+        rows = self._moving if self._moving is not None and not first else self._all_rows
+        moving = rows is self._moving
+        low = self._low_now[:0, :6]
         if len(rows):
-            self._boxes_now[rows] = self.raw.slot_bounds(
-                self._moving_slots if rows is self._moving else self._slots
-            )
-        yield from self._world(rows)
+            low, high = _signed(self.raw.slot_bounds(self._moving_slots if moving else self._slots))
+            self._low_now[rows, :6], self._high_now[rows, :6] = low, high
+        yield from self._world(rows, low, moving)
         yield from self._self()
 
-    def _world(self, rows: NDArray[np.intp]) -> Iterator[Penetration]:
+    def _world(
+        self, rows: NDArray[np.intp], low: FloatArray, moving: bool
+    ) -> Iterator[Penetration]:
+        """``low``: the (low, -high) rows of the parts ``rows`` (the moving ones if
+        ``moving``)."""
         if not len(rows) or not self.others:
             return
-        low, high = self._boxes_now[rows, 0], self._boxes_now[rows, 1]
-        near = self._near_others(low.min(axis=0), high.max(axis=0))
+        near = self._near_others(low)
         if not len(near):
             return
-        other_low, other_high = self._other_boxes[near, 0], self._other_boxes[near, 1]
-        overlap = (low[:, None, :] <= other_high[None, :, :]) & (
-            other_low[None, :, :] <= high[:, None, :]
-        )
-        overlap = overlap.all(axis=2) & self._near_mask[rows]
+        mask = self._near_mask_moving if moving else self._near_mask  # rows: all parts
+        overlap = _all(low[:, None, :] <= self._near_high[None, :, :], 2) & mask
         for r, k in zip(*np.nonzero(overlap), strict=True):
             i, o = int(rows[r]), int(near[k])
             found = self._judged(
@@ -193,15 +208,20 @@ class PenetrationProbe:
             if found is not None:
                 yield found
 
-    def _near_others(self, low: FloatArray, high: FloatArray) -> NDArray[np.intp]:
-        """The others (ascending) whose bounds meet a box holding ``low``..``high``, the
-        moving parts' bounds: any other whose bounds meet a part's is among them."""
-        box = self._near_box
-        if self._near is None or (low < box[0]).any() or (high > box[1]).any():
-            box[0], box[1] = low - NEAR_MARGIN, high + NEAR_MARGIN
-            meets = (self._other_boxes[:, 0] <= box[1]) & (box[0] <= self._other_boxes[:, 1])
+    def _near_others(self, low: FloatArray) -> NDArray[np.intp]:
+        """The others (ascending) whose bounds meet a box holding the moving parts' bounds
+        (``low``: their (low, -high) rows): any other whose bounds meet a part's is among
+        them."""
+        least = np.minimum.reduce(low, axis=0)  # (least low, -greatest high)
+        if self._near is None or np.logical_or.reduce(least < self._near_box):
+            box_low, box_high = least[:3] - NEAR_MARGIN, -least[3:] + NEAR_MARGIN
+            self._near_box = np.concatenate((box_low, -box_high))
+            meets = (self._other_boxes[:, 0] <= box_high) & (box_low <= self._other_boxes[:, 1])
             self._near = np.flatnonzero(meets.all(axis=1))
+            self._near_high = self._other_high[self._near]
             self._near_mask = self._world_mask[:, self._near]
+            if self._moving is not None:
+                self._near_mask_moving = self._near_mask[self._moving]
         return self._near
 
     def _self(self) -> Iterator[Penetration]:
@@ -209,8 +229,8 @@ class PenetrationProbe:
         pairs = self._self_pairs
         if not len(pairs):
             return
-        a, b = self._boxes_now[self._self_a], self._boxes_now[self._self_b]
-        overlap = ((a[:, 0] <= b[:, 1]) & (b[:, 0] <= a[:, 1])).all(axis=1)
+        below = self._low_now[self._self_a] <= self._high_now[self._self_b]  # (pairs, 8)
+        overlap = below.view(np.uint64)[:, 0] == _ALL_BELOW  # every byte True (1)
         for i, j in pairs[overlap]:
             found = self._judged(self.parts[i], self.parts[j], self._slots[i], self._slots[j])
             if found is not None:
@@ -220,10 +240,10 @@ class PenetrationProbe:
         self, mine: Part, other: Part, mine_at: LinkSlot, other_at: LinkSlot
     ) -> Penetration | None:
         """The pair's penetration if deeper than it may be (``*_at``: their slots)."""
-        gap = self.raw.slot_closest(mine_at, other_at, QUERY_REACH)
-        if gap is None or -gap.distance <= self.bounds.penetration:
+        gap = self.raw.slot_distance(mine_at, other_at, QUERY_REACH)
+        if gap is None or -gap <= self.bounds.penetration:
             return None  # within the general bound: never a finding, allowed or not
-        depth = -gap.distance
+        depth = -gap
         bound = self._allowed_depth(mine, other)
         if bound is not None:
             if depth <= bound:
@@ -251,6 +271,11 @@ class PenetrationProbe:
             ):
                 found.append(self.bounds.held_depth)
         return max(found) if found else None
+
+
+def _all(values: NDArray[np.bool_], axis: int) -> NDArray[np.bool_]:
+    """``values.all(axis)`` without the method's Python wrapper (called per configuration)."""
+    return np.logical_and.reduce(values, axis=axis)
 
 
 def robot_side_parts(robot: RobotHandle, held: Iterable[str]) -> list[Part]:

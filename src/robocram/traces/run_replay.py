@@ -113,14 +113,16 @@ def robot_in(world: World, name: str) -> str:
 
 def set_robot_joints(robot: RobotHandle, positions: dict[str, float]) -> None:
     """Set ``robot``'s joints; the base joints ``x``, ``y``, ``yaw`` (and a flight's ``z``,
-    ``roll``, ``pitch``) move its pose in map."""
+    ``roll``, ``pitch``) move its pose in map. What it holds is placed once, after both
+    (where the joints and the base put its links: the order of the two writes does not
+    change that)."""
     world = robot.world
     base = {name: positions[name] for name in BODY_JOINTS if name in positions}
     joints = {name: value for name, value in positions.items() if name not in base}
+    if joints:
+        world.set_joint_states(robot.name, joints, carry=not base)
     if base:
         world.set_pose(robot.name, _moved_base(world.pose(robot.name), base))
-    if joints:
-        world.set_joint_states(robot.name, joints)
 
 
 def _moved_base(pose: Pose, base: dict[str, float]) -> Pose:

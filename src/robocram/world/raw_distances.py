@@ -7,9 +7,9 @@ skipped here: attachments, allowed contacts and adjacency are the caller's to de
 
 A caller asking about the same links many times (the audit, per configuration) looks
 their PyBullet addresses up once (:meth:`RawDistances.slots`) and asks by address
-(:meth:`RawDistances.slot_bounds`, :meth:`RawDistances.slot_closest`): the same calls with
-the same arguments, without the name look-ups in between. An address holds while its
-body is not rebuilt.
+(:meth:`RawDistances.slot_bounds`, :meth:`RawDistances.slot_closest`,
+:meth:`RawDistances.slot_distance`): the same calls with the same arguments, without the
+name look-ups in between. An address holds while its body is not rebuilt.
 """
 
 from __future__ import annotations
@@ -90,6 +90,16 @@ class RawDistances:
             return None
         nearest = min(points, key=lambda p: p[8])
         return LinkGap(float(nearest[8]), tuple(nearest[5]), tuple(nearest[6]))
+
+    def slot_distance(self, a: LinkSlot, b: LinkSlot, reach: float = 0.0) -> float | None:
+        """:meth:`slot_closest`'s distance alone (the same call, without building where)."""
+        points = pybullet.getClosestPoints(
+            a[0], b[0], reach, linkIndexA=a[1], linkIndexB=b[1],
+            physicsClientId=self.world.physics.client(),
+        )  # fmt: skip
+        if not points:
+            return None
+        return float(min(p[8] for p in points))
 
     def links_moved_by(self, obj: ObjectRef, joint: str) -> list[str]:
         """The links of ``obj`` with collision shapes that setting ``joint`` moves: its
