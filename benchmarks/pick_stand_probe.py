@@ -2,7 +2,7 @@
 
 Run: ``.venv/bin/python benchmarks/pick_stand_probe.py NAME [--item mug-1] [--open 0.4]
 [--back 0.8 0.7] [--across 0] [--turn 0] [--out-yaw -90] [--lift 0.89] [--seeds 15]
-[--legs THIGH]``.
+[--legs THIGH] [--trunk JOINT=RAD ...] [--scene tabletop]``.
 
 The robot (a name of ``robot_zoo.CORPUS``, drafted as there) stands in the kitchen with its
 arms parked, its base's middle ``back`` [m] out of the counters' front from the item
@@ -15,7 +15,10 @@ touching anything there (parked), then each grasp the pick would try (the valida
 lift), how far the best of ``seeds`` IK queries misses without a collision check (mm),
 and, where it reaches, how deep the least deep solution goes into the kitchen and with
 which links. ``--legs`` puts every ``*_thigh_joint`` there [rad] (a stance tried by hand,
-the robot put back on the floor). Why it is kept: it says whether a stand nearer the item
+the robot put back on the floor); ``--trunk`` sets joints by hand the same way (a
+humanoid's trunk leaned: Rollin' Justin's ``torso2_joint=0.3``), and ``--scene tabletop``
+puts it in the tabletop scene instead, the table standing for the counters (out-yaw 180:
+the table lies along the map's x). Why it is kept: it says whether a stand nearer the item
 would help (reach) or not (the arm meets the kitchen), as for the B1-Z1 and the
 Ridgeback-UR5 (issue 37, session 32).
 """
@@ -55,18 +58,25 @@ def main() -> None:
     parser.add_argument("--out-yaw", type=float, default=-90.0)
     parser.add_argument("--lift", type=float, default=0.0)
     parser.add_argument("--seeds", type=int, default=15)
+    parser.add_argument("--restarts", type=int, default=RESTARTS, help="per seeded query")
     parser.add_argument("--legs", type=float, default=None)
+    parser.add_argument("--trunk", nargs="*", default=[], help="JOINT=RAD set by hand")
+    parser.add_argument("--scene", choices=("kitchen", "tabletop"), default="kitchen")
     args = parser.parse_args()
     warnings.simplefilter("ignore")
-    scene = parked_in_kitchen(args.name, OUT)
-    world = scene.world
+    world, robot = _scene(args.name, args.scene)
     try:
         if args.legs is not None:
-            legs = [j for j in world.joint_states(scene.robot) if j.endswith("_thigh_joint")]
-            world.set_joint_states(scene.robot, dict.fromkeys(legs, args.legs))
+            legs = [j for j in world.joint_states(robot) if j.endswith("_thigh_joint")]
+            world.set_joint_states(robot, dict.fromkeys(legs, args.legs))
+        if args.trunk:
+            by_hand = dict(_joint_value(word) for word in args.trunk)
+            world.set_joint_states(robot, by_hand)
+            set_now = world.joint_states(robot)
+            print("trunk: " + ", ".join(f"{j} {set_now[j]:.3f}" for j in by_hand))
         if args.open:
             _open(world, args.item, args.open)
-        z = _on_the_floor(world, scene.robot)
+        z = _on_the_floor(world, robot)
         item = world.pose(args.item).position
         out = math.radians(args.out_yaw)
         for back in args.back:
@@ -77,9 +87,34 @@ def main() -> None:
                     yaw = out + math.pi + math.radians(turn)
                     stand = Pose((x, y, z), quat.from_euler(0.0, 0.0, yaw))
                     print(f"back {back:.2f} across {across:+.2f} turn {turn:+.0f}:", flush=True)
-                    _probe(world, scene.robot, stand, args)
+                    _probe(world, robot, stand, args)
     finally:
         world.close()
+
+
+def _scene(name: str, scene: str) -> tuple[World, str]:
+    """The world and robot of the kitchen (arms parked) or of the tabletop scene."""
+    if scene == "kitchen":
+        kitchen = parked_in_kitchen(name, OUT)
+        return kitchen.world, kitchen.robot
+    from robot_zoo import CORPUS, _draft
+
+    from robocram.scenes import tabletop_scene
+
+    entry = next(r for r in CORPUS if r.name == name)
+    table = tabletop_scene(_draft(entry, OUT))
+    return table.world, table.robot
+
+
+def _joint_value(word: str) -> tuple[str, float]:
+    """``JOINT=RAD`` as a pair."""
+    joint, _, value = word.partition("=")
+    return joint, float(value)
+
+
+def _obstacle(world: World) -> str:
+    """What the arm must keep out of: the kitchen, else the table."""
+    return "kitchen" if any(o.name == "kitchen" for o in world.objects()) else "table"
 
 
 def _open(world: World, item: str, opening: float) -> None:
@@ -131,41 +166,64 @@ def _targets_line(
     at = stand * grasp
     words = [f"at ({at.position[0]:+.3f}, {at.position[1]:+.3f}, {at.position[2]:.3f})"]
     for name, pose in poses:
-        words.append(f"{name} {_best(world, robot, arm, pose, args.item, args.seeds)}")
+        words.append(f"{name} {_best(world, robot, arm, pose, args.seeds, args.restarts)}")
     return "; ".join(words)
 
 
-def _best(world: World, robot: str, arm: str, pose: Pose, item: str, seeds: int) -> str:
-    """The least deep of ``seeds`` IK solutions for ``pose`` (base frame), or the miss."""
+def _best(world: World, robot: str, arm: str, pose: Pose, seeds: int, restarts: int) -> str:
+    """The least deep of ``seeds`` IK solutions for ``pose`` (base frame), or the miss
+    (how far it lies beyond the arm's reach bound, if it does)."""
     desc = world.robot(robot).description
     seed = world.joint_states(robot)
     miss, best = math.inf, (math.inf, "")
     for k in range(seeds):
         result = solve_ik(
-            desc, arm, pose, seed=seed, options=IKOptions(max_restarts=RESTARTS, random_seed=k)
+            desc, arm, pose, seed=seed, options=IKOptions(max_restarts=restarts, random_seed=k)
         )
-        if not result.success:
-            miss = min(miss, result.position_error)
+        if not result.success:  # beyond the reach bound: no descent ran, the seed's error
+            miss = min(miss, result.beyond_reach or result.position_error)
             continue
-        best = min(best, _depth(world, robot, result.joint_positions, item))
+        best = min(best, _depth(world, robot, arm, result.joint_positions))
     if math.isinf(best[0]):
         return f"misses {miss * 1000:.0f} mm"
     return "clear" if best[0] <= 0.0 else f"{best[0] * 1000:.0f} mm into {best[1]}"
 
 
-def _depth(world: World, robot: str, joints: Mapping[str, float], item: str) -> tuple[float, str]:
-    """How deep [m] the robot at ``joints`` goes into the kitchen (the item aside), and
-    between which links; the joints put back."""
+def _depth(world: World, robot: str, arm: str, joints: Mapping[str, float]) -> tuple[float, str]:
+    """How deep [m] the robot at ``joints`` goes into the kitchen or table (the item aside),
+    and between which links, or, 1 mm for any, which of its own links the arm then
+    touches (its base link aside); the joints put back."""
     before = world.joint_states(robot)
     world.set_joint_states(robot, dict(joints))
     try:
-        points = world.contacts.contact_points(robot, "kitchen")
+        points = world.contacts.contact_points(robot, _obstacle(world))
+        own = world.contacts.self_contacts(robot, _arm_pairs(world, robot, arm))
     finally:
         world.set_joint_states(robot, before)
-    if not points:
-        return 0.0, ""
-    worst = min(points, key=lambda p: p.distance)
-    return -worst.distance, f"{worst.link_b} ({worst.link_a})"
+    if points:
+        worst = min(points, key=lambda p: p.distance)
+        return -worst.distance, f"{worst.link_b} ({worst.link_a})"
+    if own:
+        return 0.001, "itself (" + ", ".join(sorted({f"{a}-{b}" for a, b in own})[:3]) + ")"
+    return 0.0, ""
+
+
+def _arm_pairs(world: World, robot: str, arm: str) -> list[tuple[str, str]]:
+    """The arm's links (below its first joint) paired with every other link but its base's."""
+    desc = world.robot(robot).description
+    model = desc.model
+    spec = desc.arms[arm]
+    children: dict[str, list[str]] = {}
+    for joint in model.joints.values():
+        children.setdefault(joint.parent, []).append(joint.child)
+    moved, todo = set(), [model.joints[spec.joints[0]].child]
+    while todo:
+        link = todo.pop()
+        moved.add(link)
+        todo.extend(children.get(link, []))
+    links = {j.child for j in model.joints.values()} | {j.parent for j in model.joints.values()}
+    others = sorted(links - moved - {spec.base_link})
+    return [(a, b) for a in sorted(moved) for b in others]
 
 
 if __name__ == "__main__":
