@@ -51,6 +51,7 @@ from robocram.robots.draft.stowing import (
 from robocram.robots.draft.telescope import Telescope, find_telescopes
 from robocram.robots.draft.torso import find_torso
 from robocram.robots.draft.trunk import find_trunk
+from robocram.robots.draft.trunk_stance import upright_trunk
 from robocram.robots.hand_shapes import with_hand_shapes
 from robocram.robots.robot_model import RobotModel
 from robocram.robots.self_contacts import SelfContacts
@@ -168,9 +169,13 @@ def draft_description(
         coupled_joints=tuple(t.coupling for t in telescopes),
     )
     stance = drafted_stance(model, [h.end_effector_link for h in hands])
-    if stance is not None:
-        desc = replace(desc, stance=stance.values)
-        _note(why, doubts, "stance", stance.why, stance.doubt)
+    upright = upright_trunk(model, (trunk if trunk.joint is not None else waist).joints)
+    if stance is not None or upright is not None:
+        parts = [s for s in (stance, upright) if s is not None]
+        values = {k: v for s in parts for k, v in s.values.items()}
+        desc = replace(desc, stance=values)
+        doubt = "; ".join(s.doubt for s in parts if s.doubt) or None
+        _note(why, doubts, "stance", "; ".join(s.why for s in parts), doubt)
     desc = _with_camera(tree, desc, why, doubts, cut, camera, guessed)
     desc = _parked_clear(tree, desc, why, doubts)
     if semantics is not None:
