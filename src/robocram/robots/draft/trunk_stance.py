@@ -7,9 +7,12 @@ upper trunk, both shoulders and the head 10 degrees forward of the URDF's uprigh
 pose; the arms' reach and the room between them and the other parked hand are then not
 the ones its URDF was drawn with (the tabletop mug: every handle grasp out of reach, or
 the left hand into the parked right one). Turning ``torso2_joint`` back by as much puts
-every link from ``torso3`` up as at zero. The trunk's joints are cut out of the arms'
-chains (:mod:`~robocram.robots.draft.trunk`), so nothing moves them afterwards: this is
-where the trunk stays, like a legged robot's ``stance`` (:mod:`~.stance`).
+every link from ``torso3`` up as at zero; the joint before the clamped one is taken first,
+so the clamp's own link and all above it stand as drawn (``torso4_joint`` instead would
+stand the shoulders 5 cm forward, and Justin missed the mug so). The trunk's joints are
+cut out of the arms' chains (:mod:`~robocram.robots.draft.trunk`), so nothing moves them
+afterwards: this is where the trunk stays, like a legged robot's ``stance``
+(:mod:`~.stance`).
 """
 
 from __future__ import annotations
@@ -64,6 +67,7 @@ def upright_trunk(model: RobotModel, trunk: Sequence[str]) -> Stance | None:
 
 
 def _axis(model: RobotModel, joint: Joint, zero: Mapping[str, Pose]) -> np.ndarray:
+    """``joint``'s unit axis in the root link at the zero pose."""
     return axis_in_root(model, joint.name, zero)
 
 
