@@ -5,14 +5,14 @@ The world starts each joint at its value nearest 0. Rollin' Justin's ``torso3_jo
 not go below 0.1745 rad, so it starts there and, with ``torso2_joint`` at 0, leans the
 upper trunk, both shoulders and the head 10 degrees forward of the URDF's upright zero
 pose; the arms' reach and the room between them and the other parked hand are then not
-the ones its URDF was drawn with (the tabletop mug: every handle grasp out of reach, or
-the left hand into the parked right one). Turning ``torso2_joint`` back by as much puts
-every link from ``torso3`` up as at zero; the joint before the clamped one is taken first,
-so the clamp's own link and all above it stand as drawn (``torso4_joint`` instead would
-stand the shoulders 5 cm forward, and Justin missed the mug so). The trunk's joints are
-cut out of the arms' chains (:mod:`~robocram.robots.draft.trunk`), so nothing moves them
-afterwards: this is where the trunk stays, like a legged robot's ``stance``
-(:mod:`~.stance`).
+the ones its URDF was drawn with (the tabletop mug: its handle grasps out of reach, the
+one reached blocked by the mug, or the left hand into the parked right one). Turning
+``torso2_joint`` back by as much puts every link from ``torso3`` up as at zero; the joint
+before the clamped one is taken first, so the clamp's own link and all above it stand as
+drawn (``torso4_joint`` instead would stand the shoulders 5 cm forward, and Justin missed
+the mug so). The trunk's joints are cut out of the arms' chains
+(:mod:`~robocram.robots.draft.trunk`), so nothing moves them afterwards: this is where
+the trunk stays, like a legged robot's ``stance`` (:mod:`~.stance`).
 """
 
 from __future__ import annotations
