@@ -29,14 +29,14 @@ from robot_zoo import CORPUS, _draft
 
 import robocram.plans.bringing as bringing
 import robocram.plans.search as search
-from robocram.designators import a, an
+from robocram.designators import ObjectDesignator, a, an
 from robocram.kinematics.crouch import crouched
 from robocram.plans import perform
 from robocram.plans.container_access import OpenedContainer, open_from_front
 from robocram.projection import simulated_robot
 from robocram.robots.draft.stance import legs
 from robocram.scenes import kitchen_scene
-from robocram.tf import Pose
+from robocram.tf import Pose, transform_pose
 from robocram.world import World
 
 transport = importlib.import_module("robocram.plans.transport")  # the package exports a
@@ -96,11 +96,22 @@ def _fetching_crouched(world: World, robot: str, depth: float) -> Callable[..., 
     """``transport``'s ``fetch`` crouched ``depth`` [m] while it runs."""
     plain = transport.fetch
 
-    def fetching(*args: object, **kwargs: object) -> object:
+    def fetching(seen: object, *args: object, **kwargs: object) -> object:
+        seen = _in_map(seen)  # before the crouch: a pose in the base's frame would sink with it
         with _crouched(world, robot, depth):
-            return plain(*args, **kwargs)
+            return plain(seen, *args, **kwargs)
 
     return fetching
+
+
+def _in_map(seen: object) -> object:
+    """``seen`` with its pose in the map: the search leaves it in the base's frame, which
+    a teleported crouch lowers, and ``fetch`` reads it only once it runs, crouched (it
+    then looked for the bowl 0.15 m under where it lies, the tilt needed the same)."""
+    pose = seen.get("pose") if isinstance(seen, ObjectDesignator) else None
+    if not isinstance(seen, ObjectDesignator) or pose is None:
+        return seen
+    return seen.make_effective(seen.data or pose, pose=transform_pose(pose, "map"))
 
 
 @contextlib.contextmanager
