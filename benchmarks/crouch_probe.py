@@ -86,7 +86,11 @@ def _opening_crouched(
     def opening(name: str, log: object = None) -> OpenedContainer:
         with _crouched(world, robot, depth):
             opened = open_from_front(name, log) if log is not None else open_from_front(name)
-        print(f"opened {name} crouched {depth:.2f} m, stood up again", flush=True)
+        print(
+            f"opened {name} crouched {depth:.2f} m from {opened.stand.pose} "
+            f"({opened.stand.arm} arm), stood up again",
+            flush=True,
+        )
         return opened
 
     return opening
