@@ -5,8 +5,9 @@ The candidate places come from the knowledge base: first the object type's usual
 (``supporting_surface(Env, Link)``). A place the KB names a container (a drawer, a door)
 is opened first, as CRAM does, and looked into from where it was opened, at the middle of
 what opening pulled out (a drawer's frame sits at its front: looking there cut the inside
-off; a head stopped at its tilt limit with that middle still in view has looked); if the object is not seen from there (a camera too low to see over the drawer's
-front, as Stretch's without a torso), from where that middle is visible, and then from
+off; a head stopped at its tilt limit with that middle still in view has looked); if
+the object is not seen from there (a camera too low to see over the drawer's front, as
+Stretch's without a torso), from where that middle is visible, and then from
 such stands near the container (``near``: over its rim from close by, not grazing it from
 afar). The containers opened are in the log, so a caller closes them again. For each
 place the plan asks for a
