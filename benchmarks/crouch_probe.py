@@ -9,8 +9,9 @@ its base's z and leg joints: a teleport, not the checked, timed motion a plan wo
 so this says only whether a crouch is worth building for a step. ``open``: crouched from
 the start, it opens the bowl's drawer (``open_from_front``). ``bowl``: the kitchen's bowl
 transport, crouched only while each container is opened and standing up again after (so
-its camera looks from its usual height); ``--fetch``: crouched while it fetches the bowl
-too (``transport``'s ``fetch``: its looks, stands and grasp). Why it is kept: TALOS cannot
+its camera looks from its usual height), and again while it closes them; ``--fetch``:
+crouched while it fetches the bowl too (``transport``'s ``fetch``: its looks, stands and
+grasp). Why it is kept: TALOS cannot
 open the bowl's drawer standing (issue 37); a crouch of 0.15 m frees a hold of its handle
 (``handle_hold_probe.py --lower``), and this shows which later steps need it too.
 """
@@ -30,9 +31,11 @@ from robot_zoo import CORPUS, _draft
 import robocram.plans.bringing as bringing
 import robocram.plans.search as search
 from robocram.designators import ObjectDesignator, a, an
+from robocram.execution.failures import PlanFailure
 from robocram.kinematics.crouch import crouched
 from robocram.plans import perform
-from robocram.plans.container_access import OpenedContainer, open_from_front
+from robocram.plans.basic_actions import navigate, park_arms
+from robocram.plans.container_access import OpenedContainer, close_again, open_from_front
 from robocram.projection import simulated_robot
 from robocram.robots.draft.stance import legs
 from robocram.scenes import kitchen_scene
@@ -66,11 +69,16 @@ def main() -> None:
                 search.open_from_front = bringing.open_from_front = _opening_crouched(
                     world, robot, args.depth
                 )
+                transport.close_again = bringing.close_again = _closing_crouched(
+                    world, robot, args.depth
+                )
                 if args.fetch:
                     transport.fetch = _fetching_crouched(world, robot, args.depth)
                 target = a.location(on=("kitchen", "table_top"), for_="bowl-1")
                 perform(an.action(type="transporting", object="bowl", target=target))
-                print("brought the bowl")
+                x, y, z = world.pose("bowl-1").position
+                shut = world.joint_states("kitchen")[f"{DRAWER}_joint"]
+                print(f"brought the bowl: at ({x:.3f}, {y:.3f}, {z:.3f}), {DRAWER} at {shut:.3f}")
     except Exception as failure:  # noqa: BLE001 - a probe reports whatever stopped it
         print(f"stopped: {type(failure).__name__}: {str(failure)[:2000]}")
     finally:
@@ -94,6 +102,24 @@ def _opening_crouched(
         return opened
 
     return opening
+
+
+def _closing_crouched(
+    world: World, robot: str, depth: float
+) -> Callable[[OpenedContainer, object], None]:
+    """``close_again`` crouched ``depth`` [m] while it runs (the handle as low as when it
+    was opened), crouched once back where it was opened from: crouched at the table, a
+    hand that has just let the bowl go goes into the table's top."""
+
+    def closing(opened: OpenedContainer, log: object = None) -> None:
+        with contextlib.suppress(PlanFailure):
+            park_arms()
+            navigate(opened.stand.pose)
+        with _crouched(world, robot, depth):
+            close_again(opened, log) if log is not None else close_again(opened)
+        print(f"closed {opened.container.link} crouched {depth:.2f} m", flush=True)
+
+    return closing
 
 
 def _fetching_crouched(world: World, robot: str, depth: float) -> Callable[..., object]:
