@@ -11,9 +11,9 @@ the start, it opens the bowl's drawer (``open_from_front``). ``bowl``: the kitch
 transport, crouched only while each container is opened and standing up again after (so
 its camera looks from its usual height), and again while it closes them; ``--fetch``:
 crouched while it fetches the bowl too (``transport``'s ``fetch``: its looks, stands and
-grasp). Why it is kept: TALOS cannot
-open the bowl's drawer standing (issue 37); a crouch of 0.15 m frees a hold of its handle
-(``handle_hold_probe.py --lower``), and this shows which later steps need it too.
+grasp). Why it is kept: TALOS cannot open the bowl's drawer standing (issue 37); a crouch
+of 0.15 m frees a hold of its handle (``handle_hold_probe.py --lower``), and this shows
+which later steps need it too (0.25 m: it brings the bowl, zoo32).
 """
 
 from __future__ import annotations
