@@ -31,8 +31,9 @@ class Grasp:
             raised (0: flat); tried after the flat ones of its side.
         deeper: [m] a deep rim grasp's tool frame lies this far below the rim grasp's
             (0: not deep); tried after every other grasp of its name.
-        raised: [m] a palm hand's rim grasp raised this far so the hand, closing, keeps
-            over the object's bottom (0: not raised); tried after every other grasp.
+        raised: [m] a rim grasp raised this far so the hand, closing, keeps over the
+            object's bottom (a palm hand's) or floor (fingers reaching past the tool
+            frame) (0: not raised); tried after every other grasp.
         lift_back: [m] the lift also draws the tool this far back along ``approach`` (0:
             straight up): a suction hand's side touch slides the object out towards the
             arm as it rises, where an arm reaching over a counter has no room to rise.

@@ -17,7 +17,9 @@ Grasps (CRAM's names), in the object's frame (x forward, z up):
   raised, for a bowl down in a drawer; last of all, each whose hand, closing, goes below
   the object's bottom again raised until it keeps :data:`PALM_FLOOR` over it
   (:func:`_over_support`: Armar6's open thumb stood through the bowl's floor, its 11.6 cm
-  fingers curled past the 6.4 cm bowl into the drawer's).
+  fingers curled past the 6.4 cm bowl into the drawer's). A hand with fingers whose tips
+  reach past its tool frame gets its flat rim grasps again last, raised until the tips
+  keep over the object's floor (:func:`_fingers_over_floor`: TALOS's).
 - ``handle`` (``object_handle/2``): sideways onto the bar that sticks out of the body,
   at half height; width: the bar's. A hand that fits no grasp round the body (top,
   front, left, right: a Panda's 80 mm against the mug's 88) also gets it from above, as
@@ -164,7 +166,9 @@ def _rim(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
     """On the wall from above, one place per side without a handle; a palm hand's then
     again tilted (:data:`RIM_TILTS`, :func:`_tilted`); a hand whose pads end behind its
     tool frame's then again deep (:data:`RIM_DEEP_FLOOR`); a palm hand's, last, each
-    again raised over the support (:func:`_over_support`)."""
+    again raised over the support (:func:`_over_support`); another hand's whose fingers
+    reach past its tool frame, last, each again raised over the floor
+    (:func:`_fingers_over_floor`)."""
     if shape.wall is None:
         return
     cx, cy = shape.centre
@@ -193,6 +197,30 @@ def _rim(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
             raised = _over_support(grasp, palm, shape)
             if raised is not None:
                 yield raised
+    else:
+        for _, grasp in flat:
+            raised = _fingers_over_floor(grasp, hand, shape)
+            if raised is not None:
+                yield raised
+
+
+def _fingers_over_floor(grasp: Grasp, hand: Hand, shape: ObjectShape) -> Grasp | None:
+    """``grasp`` (a flat rim grasp, from above) raised until fingers that reach past the
+    tool frame (``-hand.pads_behind``, the farthest over their stroke) keep
+    :data:`PALM_FLOOR` over the object's floor, taken as thick as its wall; None when they
+    keep over it as it is, or when raised so the tool frame would be over the rim. TALOS's
+    curling fingers reach 42.8 mm past its tool frame: from 2 cm under a bowl's rim the
+    inner one met the bowl's floor (2 mm under it open) while the outer two were still 29
+    mm or more off the wall; 15 mm higher they close on the wall."""
+    reach = -hand.pads_behind
+    if reach <= 0.0 or shape.wall is None:
+        return None
+    x, y, z = grasp.tool.position
+    floor = shape.low[2] + shape.wall + PALM_FLOOR
+    rise = floor - (z - reach)
+    if rise <= 0.0 or z + rise > shape.high[2]:
+        return None
+    return replace(grasp, tool=Pose((x, y, z + rise), grasp.tool.orientation), raised=rise)
 
 
 def _over_support(grasp: Grasp, palm: Palm, shape: ObjectShape) -> Grasp | None:

@@ -5,8 +5,9 @@ The candidate places come from the knowledge base: first the object type's usual
 (``supporting_surface(Env, Link)``). A place the KB names a container (a drawer, a door)
 is opened first, as CRAM does, and looked into from where it was opened, at the middle of
 what opening pulled out (a drawer's frame sits at its front: looking there cut the inside
-off); if the object is not seen from there (a camera too low to see over the drawer's
-front, as Stretch's without a torso), from where that middle is visible, and then from
+off; a head stopped at its tilt limit with that middle still in view has looked); if
+the object is not seen from there (a camera too low to see over the drawer's front, as
+Stretch's without a torso), from where that middle is visible, and then from
 such stands near the container (``near``: over its rim from close by, not grazing it from
 afar). The containers opened are in the log, so a caller closes them again. For each
 place the plan asks for a
@@ -24,7 +25,7 @@ from dataclasses import dataclass, field
 from robocram.designators import LocationDesignator, ObjectDesignator, a, an
 from robocram.designators.errors import DesignatorError
 from robocram.execution import perform
-from robocram.execution.failures import PlanFailure, failure_line
+from robocram.execution.failures import PlanFailure, PtuGoalNotReached, failure_line
 from robocram.knowledge.robot_predicates import ARM_JOINTS, CAMERA_MAXIMAL_HEIGHT
 from robocram.knowledge.scene_predicates import SUPPORTING_SURFACE, USUAL_LOCATION
 from robocram.logic import current_kb
@@ -37,6 +38,7 @@ from robocram.plans.errors import SearchExhausted
 from robocram.plans.known_robot import KnownRobot, current_robot
 from robocram.plans.place_looks import look_and_detect
 from robocram.plans.stands import map_pose
+from robocram.plans.tilt_limit_look import in_view_at_tilt_limit
 from robocram.tf import PoseStamped
 
 POSES_PER_PLACE = 2  # CRAM retries a search location a couple of times
@@ -165,11 +167,28 @@ def _look_into(
     try:
         log.opened.append(opened)
         inside = _pulled_out_middle(closed, place_point(place))
-        look_from_above(inside)  # over the drawer's front, into it
+        look_into_opened(inside)  # over the drawer's front, into it
         return detect(wanted), inside
     except PlanFailure as failure:
         log.failures.append(failure)
         return None, inside
+
+
+def look_into_opened(point: PoseStamped) -> None:
+    """Look at ``point``, in a container just opened, from above (``look_from_above``); a
+    head stopped at its tilt limit with ``point`` still in the view has looked into it
+    (:func:`in_view_at_tilt_limit`): TALOS, from where it opened the bowl's drawer, needs
+    1.12 rad of its 0.785 and, not looking, sought the bowl elsewhere, saw it in the drawer
+    from 1.7 m away and fetched it as if it lay on the counter it had looked at.
+
+    Raises:
+        PtuGoalNotReached: the head stopped short of the point with it out of the view.
+    """
+    try:
+        look_from_above(point)
+    except PtuGoalNotReached as failure:
+        if not in_view_at_tilt_limit(failure):
+            raise
 
 
 def _pulled_out_middle(closed: PoseStamped, opened: PoseStamped) -> PoseStamped:

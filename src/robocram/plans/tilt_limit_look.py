@@ -17,6 +17,7 @@ from robocram.execution.failures import PtuGoalNotReached
 
 TILT_EDGE_SHARE = 0.5  # of the camera's half fields, off its axis, within which a target
 # a head tilted down to its limit stopped above counts as looked at
+VIEW_EDGE = 1.0  # of the same half fields: the view's edge
 
 
 def seen_at_tilt_limit(failure: PtuGoalNotReached) -> bool:
@@ -27,3 +28,15 @@ def seen_at_tilt_limit(failure: PtuGoalNotReached) -> bool:
         return False
     aside, below = failure.view_share
     return 0.0 <= below <= TILT_EDGE_SHARE and abs(aside) <= TILT_EDGE_SHARE
+
+
+def in_view_at_tilt_limit(failure: PtuGoalNotReached) -> bool:
+    """Whether ``failure``'s head, stopped at its tilt limit above the target, has it in
+    the view at all (within :data:`VIEW_EDGE` of the half fields): a look into an opened
+    container at its middle then shows perception what lies in it, and perception judges
+    that (TALOS, from where it opened the bowl's drawer, has the drawer's middle 0.81 of
+    the half field under its axis, and sees the bowl)."""
+    if not failure.below_tilt or failure.view_share is None:
+        return False
+    aside, below = failure.view_share
+    return 0.0 <= below <= VIEW_EDGE and abs(aside) <= VIEW_EDGE
