@@ -6,8 +6,9 @@ adds the motion groundings of the motion table (common ones, flying ones for fly
 robots, legged ones for robots on legs they bend) and one process module per resource the
 robot has (``RobotDescription.resources()``, ``ptu`` where an arm or a pan joint turns the
 camera: ``looking_means.py``, and ``legs`` for a legged robot: ``crouching.py``), with
-the ``matching_process_module/2`` facts the table gives for those resources. The grasp model answers ``object_grasp/7`` and its
-siblings (``robocram.grasping``, docs/grasping.md) so plans reach grasps through the KB.
+the ``matching_process_module/2`` facts the table gives for those resources. The grasp
+model answers ``object_grasp/7`` and its siblings (``robocram.grasping``,
+docs/grasping.md) so plans reach grasps through the KB.
 Location designators resolve through costmaps
 (:class:`~robocram.costmaps.CostmapLocations` on the same world), so ``visible_for``,
 ``reachable_for``, ``on`` and the other keys work in any projected plan.
