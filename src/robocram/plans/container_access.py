@@ -22,6 +22,7 @@ from robocram.execution.failures import (
     NavigationPathBlocked,
     NavigationPoseUnreachable,
     PlanFailure,
+    TorsoLowLevelFailure,
 )
 from robocram.knowledge import robot_predicates as rp
 from robocram.knowledge.scene_predicates import CONTAINER, CONTAINER_FRONT, CONTAINER_KIND
@@ -132,8 +133,8 @@ def open_from_front(
         try:
             return _open_from_stands(part, log, retries, depth)
         except PlanFailure as failure:
-            last = failure
-    raise last
+            last = failure if not isinstance(failure, TorsoLowLevelFailure) else last
+    raise last  # a crouch that could not even bend says less than the standing failure
 
 
 def _open_standing(part: Container, log: AttemptLog, retries: int) -> OpenedContainer:

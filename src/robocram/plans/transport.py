@@ -17,7 +17,11 @@ from dataclasses import dataclass, field
 
 from robocram.designators import ObjectDesignator, an
 from robocram.execution import sub_task
-from robocram.execution.failures import PerceptionObjectNotFound, PlanFailure
+from robocram.execution.failures import (
+    PerceptionObjectNotFound,
+    PlanFailure,
+    TorsoLowLevelFailure,
+)
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import park_arms
 from robocram.plans.container_access import OpenedContainer, close_again, is_container
@@ -75,7 +79,7 @@ def _fetch_crouched(
 ) -> Held:
     """Fetch ``seen`` (its pose in the map: kept in the base's frame, it would sink with
     the body) from ``inside`` crouched, at each of the depths in turn, standing up after;
-    the last failure raised."""
+    the last failure raised (``standing`` where no crouch bent)."""
     last: PlanFailure = standing
     for depth in DEPTHS:
         try:
@@ -83,7 +87,7 @@ def _fetch_crouched(
             with crouched(depth):
                 return fetch(seen, arm, grasp, stand_retries, log, opened=inside)
         except PlanFailure as failure:  # no fetch, or the way down blocked where it stood
-            last = failure
+            last = failure if not isinstance(failure, TorsoLowLevelFailure) else last
     raise last
 
 
