@@ -26,8 +26,7 @@ from robocram.projection.errors import ProjectionError
 from robocram.projection.path_watch import planned_against
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.projection.trajectory_follower import follow
-from robocram.robots import LoadedDescription
-from robocram.robots.draft.stance import legs
+from robocram.robots import LoadedDescription, RobotModel
 from robocram.robots.model_pose import resting_value
 from robocram.tf import Pose
 
@@ -36,8 +35,25 @@ SAME_DEPTH = 1e-4  # [m] a crouch asked this near where the body is moves nothin
 
 def crouch_feet(description: LoadedDescription) -> list[str]:
     """The feet (links) of the robot's legs: empty for a robot that cannot crouch."""
-    hands = [arm.end_effector_link for arm in description.arms.values()]
-    return [leg.foot for leg in legs(description.model, hands)]
+    hands = tuple(arm.end_effector_link for arm in description.arms.values())
+    return list(description.model.derived(_Feet).of(hands))
+
+
+class _Feet:
+    """A model's feet per set of hands (end-effector links), found once: every projection
+    environment asks."""
+
+    def __init__(self, model: RobotModel) -> None:
+        self.model = model
+        self.found: dict[tuple[str, ...], tuple[str, ...]] = {}
+
+    def of(self, hands: tuple[str, ...]) -> tuple[str, ...]:
+        from robocram.robots.draft.stance import legs  # noqa: PLC0415 - the draft package
+        # loads pinocchio and coal, which importing projection must not (test_import_cost)
+
+        if hands not in self.found:
+            self.found[hands] = tuple(leg.foot for leg in legs(self.model, hands))
+        return self.found[hands]
 
 
 def can_crouch(description: LoadedDescription) -> bool:
