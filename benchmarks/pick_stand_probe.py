@@ -2,7 +2,7 @@
 
 Run: ``.venv/bin/python benchmarks/pick_stand_probe.py NAME [--item mug-1] [--open 0.4]
 [--back 0.8 0.7] [--across 0] [--turn 0] [--out-yaw -90] [--lift 0.89] [--seeds 15]
-[--legs THIGH] [--trunk JOINT=RAD ...] [--scene tabletop]``.
+[--legs THIGH] [--trunk JOINT=RAD ...] [--crouch 0 0.1 ...] [--scene tabletop]``.
 
 The robot (a name of ``robot_zoo.CORPUS``, drafted as there) stands in the kitchen with its
 arms parked, its base's middle ``back`` [m] out of the counters' front from the item
@@ -16,7 +16,9 @@ lift), how far the best of ``seeds`` IK queries misses without a collision check
 and, where it reaches, how deep the least deep solution goes into the kitchen and with
 which links. ``--legs`` puts every ``*_thigh_joint`` there [rad] (a stance tried by hand,
 the robot put back on the floor); ``--trunk`` sets joints by hand the same way (a
-humanoid's trunk leaned: Rollin' Justin's ``torso2_joint=0.3``), and ``--scene tabletop``
+humanoid's trunk leaned: Rollin' Justin's ``torso2_joint=0.3``), ``--crouch`` probes every
+stand again with the legged robot crouched each depth [m] (``kinematics.crouch``: the base
+lowered, the soles kept; Centauro at the bowl's drawer, zoo37), and ``--scene tabletop``
 puts it in the tabletop scene instead, the table standing for the counters (out-yaw 180:
 the table lies along the map's x). Why it is kept: it says whether a stand nearer the item
 would help (reach) or not (the arm meets the kitchen), as for the B1-Z1 and the
@@ -35,7 +37,9 @@ from robot_zoo import parked_in_kitchen
 
 from robocram.costmaps.pick_reach import PickTarget, pick_targets
 from robocram.kinematics import solve_ik
+from robocram.kinematics.crouch import crouched
 from robocram.kinematics.ik_options import IKOptions
+from robocram.robots.draft.stance import legs
 from robocram.tf import Pose
 from robocram.tf import quaternion as quat
 from robocram.world import World
@@ -61,6 +65,7 @@ def main() -> None:
     parser.add_argument("--restarts", type=int, default=RESTARTS, help="per seeded query")
     parser.add_argument("--legs", type=float, default=None)
     parser.add_argument("--trunk", nargs="*", default=[], help="JOINT=RAD set by hand")
+    parser.add_argument("--crouch", type=float, nargs="+", default=[0.0], help="[m] depths")
     parser.add_argument("--scene", choices=("kitchen", "tabletop"), default="kitchen")
     args = parser.parse_args()
     warnings.simplefilter("ignore")
@@ -79,15 +84,24 @@ def main() -> None:
         z = _on_the_floor(world, robot)
         item = world.pose(args.item).position
         out = math.radians(args.out_yaw)
-        for back in args.back:
-            for across in args.across:
-                for turn in args.turn:
-                    x = item[0] + back * math.cos(out) - across * math.sin(out)
-                    y = item[1] + back * math.sin(out) + across * math.cos(out)
-                    yaw = out + math.pi + math.radians(turn)
-                    stand = Pose((x, y, z), quat.from_euler(0.0, 0.0, yaw))
-                    print(f"back {back:.2f} across {across:+.2f} turn {turn:+.0f}:", flush=True)
-                    _probe(world, robot, stand, args)
+        standing = world.joint_states(robot)
+        for depth in args.crouch:
+            if depth:
+                world.set_joint_states(robot, _crouch(world, robot, standing, depth))
+            for back in args.back:
+                for across in args.across:
+                    for turn in args.turn:
+                        x = item[0] + back * math.cos(out) - across * math.sin(out)
+                        y = item[1] + back * math.sin(out) + across * math.cos(out)
+                        yaw = out + math.pi + math.radians(turn)
+                        stand = Pose((x, y, z - depth), quat.from_euler(0.0, 0.0, yaw))
+                        print(
+                            f"crouch {depth:.2f} back {back:.2f} across {across:+.2f} "
+                            f"turn {turn:+.0f}:",
+                            flush=True,
+                        )
+                        _probe(world, robot, stand, args)
+            world.set_joint_states(robot, standing)
     finally:
         world.close()
 
@@ -104,6 +118,15 @@ def _scene(name: str, scene: str) -> tuple[World, str]:
     entry = next(r for r in CORPUS if r.name == name)
     table = tabletop_scene(_draft(entry, OUT))
     return table.world, table.robot
+
+
+def _crouch(
+    world: World, robot: str, standing: Mapping[str, float], depth: float
+) -> dict[str, float]:
+    """The leg joints that lower the base ``depth`` [m] with the soles kept."""
+    desc = world.robot(robot).description
+    feet = [leg.foot for leg in legs(desc.model, [x.end_effector_link for x in desc.arms.values()])]
+    return crouched(desc.model, feet, standing, depth)
 
 
 def _joint_value(word: str) -> tuple[str, float]:
@@ -144,10 +167,10 @@ def _probe(world: World, robot: str, stand: Pose, args: argparse.Namespace) -> N
     print(f"  parked, touches: {', '.join(touched) or 'nothing'}")
     desc = world.robot(robot).description
     arms = [args.arm] if args.arm else list(desc.arms)
-    seen: set[tuple[str, tuple[float, ...]]] = set()
+    seen: set[tuple[str, str, tuple[float, ...]]] = set()  # arm, grasp, where
     for arm in arms:
         for target in pick_targets(world, world.robot(robot), world.object(args.item), arm, stand):
-            key = (target.grasp, tuple(round(v, 3) for v in target.grasp_in_base.position))
+            key = (arm, target.grasp, tuple(round(v, 3) for v in target.grasp_in_base.position))
             if key in seen:
                 continue
             seen.add(key)
