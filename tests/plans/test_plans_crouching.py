@@ -15,8 +15,8 @@ import numpy as np
 import pybullet
 import pytest
 
-from robocram.execution.failures import TorsoGoalUnreachable
-from robocram.plans.crouching import can_crouch, crouched
+from robocram.execution.failures import ManipulationPoseUnreachable, TorsoGoalUnreachable
+from robocram.plans.crouching import can_crouch, crouched, crouched_at_stand
 from robocram.projection import simulated_robot
 from robocram.scenes import tabletop_scene
 from tests.bullet_links import link_frame
@@ -56,3 +56,45 @@ def test_talos_crouches_inside_and_stands_up_after_the_pr2_cannot() -> None:
             assert not can_crouch()
     finally:
         pr2.world.close()
+
+
+def test_a_pick_crouched_at_its_stand_stands_up_after_its_arms_parked_if_it_failed() -> None:
+    """A fetch crouches at each stand (``fetch(depth=...)``): a pick that failed there may
+    leave a hand out over the thing, so the arms are parked before it stands up; one that
+    held the thing stands up holding it, the arm where it is (Centauro, zoo37)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        scene = tabletop_scene(str(TALOS))
+    world, robot = scene.world, scene.robot
+    client, body = world.physics.client(), world.object(robot).body_id
+    indices = {
+        pybullet.getJointInfo(body, i, physicsClientId=client)[1].decode(): i
+        for i in range(pybullet.getNumJoints(body, physicsClientId=client))
+    }
+    parking = dict(world.robot(robot).description.arms["left"].parking)
+    out = {joint: value + 0.3 for joint, value in parking.items()}  # a hand held out
+
+    def root_z() -> float:
+        return float(pybullet.getBasePositionAndOrientation(body, physicsClientId=client)[0][2])
+
+    def arm() -> list[float]:
+        return [pybullet.getJointState(body, indices[j], physicsClientId=client)[0] for j in out]
+
+    try:
+        with simulated_robot(world, robot):
+            world.set_joint_states(robot, parking)
+            standing = root_z()
+            with pytest.raises(ManipulationPoseUnreachable), crouched_at_stand(0.2):
+                assert root_z() == pytest.approx(standing - 0.2, abs=1e-6)
+                world.set_joint_states(robot, out)
+                raise ManipulationPoseUnreachable("no pick here")
+            assert root_z() == pytest.approx(standing, abs=1e-6)
+            assert arm() == pytest.approx(list(parking.values()), abs=1e-3)
+            with crouched_at_stand(0.2):
+                world.set_joint_states(robot, out)
+                held_out = arm()  # within its limits
+            assert root_z() == pytest.approx(standing, abs=1e-6)
+            assert arm() == pytest.approx(held_out, abs=1e-6)
+            assert max(abs(a - b) for a, b in zip(held_out, parking.values(), strict=True)) > 0.2
+    finally:
+        world.close()

@@ -53,10 +53,16 @@ class CrouchUnreachable(KinematicsError):
 
 
 def crouched(
-    model: RobotModel, feet: Sequence[str], standing: Mapping[str, float], depth: float
+    model: RobotModel,
+    feet: Sequence[str],
+    standing: Mapping[str, float],
+    depth: float,
+    seed: Mapping[str, float] | None = None,
 ) -> dict[str, float]:
     """The leg joints' values [rad | m] that keep each of ``feet`` (links) where it stands
     (the joints at ``standing``; others at their defaults) with the root ``depth`` [m] lower.
+    ``seed``: leg joints each leg's search starts from, unnudged (a neighbouring depth's
+    solution), instead of ``standing`` nudged.
 
     Raises:
         CrouchUnreachable: a leg cannot keep its foot in place within its limits.
@@ -64,10 +70,11 @@ def crouched(
     """
     kin = robot_kinematics(model)
     q = kin.configuration(standing)
+    start = q if seed is None else kin.configuration(dict(standing) | dict(seed))
     values: dict[str, float] = {}
     for foot in feet:
         goal = Pose((0.0, 0.0, depth)) * kin.frame_pose(foot, standing)
-        values.update(_leg(kin, model, foot, pose_to_se3(goal), q, depth))
+        values.update(_leg(kin, model, foot, pose_to_se3(goal), start, depth, seed is None))
     return values
 
 
@@ -78,8 +85,10 @@ def _leg(
     goal: pin.SE3,
     q: np.ndarray,
     depth: float,
+    nudge: bool = True,
 ) -> dict[str, float]:
-    """One leg's joints putting ``foot`` at ``goal`` (in the root link), from ``q``."""
+    """One leg's joints putting ``foot`` at ``goal`` (in the root link), from ``q``
+    (``nudge``: each joint first turned towards the middle of its range)."""
     joints = [kin.joint(j.name) for j in model.chain(model.root_link, foot) if j.movable]
     turning = [info.name for info in joints if info.continuous]
     if turning:
@@ -89,7 +98,7 @@ def _leg(
         )
     q = q.copy()
     for info in joints:
-        if depth > 0.0 and math.isfinite(info.lower) and math.isfinite(info.upper):
+        if nudge and depth > 0.0 and math.isfinite(info.lower) and math.isfinite(info.upper):
             middle = 0.5 * (info.lower + info.upper)
             now = q[info.idx_q]
             q[info.idx_q] = now + math.copysign(min(NUDGE, abs(middle - now)), middle - now)

@@ -22,7 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from robocram.kinematics.crouch import crouched
+from robocram.kinematics.crouch import CrouchUnreachable, crouched
 from robocram.motion.errors import MotionError
 from robocram.motion.joint_limits import JointLimits
 from robocram.motion.joint_trajectory import FloatArray, JointTrajectory, PointTable
@@ -64,9 +64,10 @@ def crouch_curve(
         CrouchUnreachable: a leg cannot keep its foot at some depth on the way.
     """
     count = max(2, math.ceil(abs(goal - start) / DEPTH_STEP) + 1)
-    solved = {
-        d: crouched(model, feet, standing, d) for d in np.linspace(start, goal, count).tolist()
-    }
+    solved: dict[float, dict[str, float]] = {}
+    near: dict[str, float] | None = None
+    for d in np.linspace(start, goal, count).tolist():
+        solved[d] = near = _solved(model, feet, standing, d, near)
     joints = tuple(solved[start])
     depths = list(solved)
     k = 0
@@ -74,12 +75,31 @@ def crouch_curve(
         a, b = solved[depths[k]], solved[depths[k + 1]]
         middle = 0.5 * (depths[k] + depths[k + 1])
         if max(abs(a[j] - b[j]) for j in joints) > TURN and abs(depths[k + 1] - middle) > 1e-6:
-            solved[middle] = crouched(model, feet, standing, middle)
+            solved[middle] = _solved(model, feet, standing, middle, a)
             depths.insert(k + 1, middle)
             continue
         k += 1
     rows = [[solved[d][name] for name in joints] for d in depths]
     return CrouchCurve(joints, np.array(depths), np.array(rows))
+
+
+def _solved(
+    model: RobotModel,
+    feet: Sequence[str],
+    standing: Mapping[str, float],
+    depth: float,
+    near: Mapping[str, float] | None,
+) -> dict[str, float]:
+    """The legs at ``depth`` solved from standing; where that search strays, from
+    ``near`` (a neighbouring depth's legs, None: none yet). Centauro's hip and ankle
+    yaws turn nearly alike, and from standing its rear leg's search stopped short or
+    astray at some depths (0.109, 0.139 m) between ones it solved (zoo37)."""
+    try:
+        return crouched(model, feet, standing, depth)
+    except CrouchUnreachable:
+        if near is None:
+            raise
+        return crouched(model, feet, standing, depth, seed=near)
 
 
 def time_crouch(

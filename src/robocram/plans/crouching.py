@@ -6,6 +6,10 @@ only 0.20-0.25 m lower (issue 37). A robot whose knowledge base grounds ``crouch
 motions (it stands on legs it bends) opens, closes and fetches from a container crouched
 when standing failed, at each of :data:`DEPTHS` in turn, and stands up again before it
 drives elsewhere: its camera looks, and its reach costmaps hold, from its standing height.
+A fetch crouches at each of its stands after the drive (:func:`crouched_at_stand`):
+Centauro, crouched where the standing fetch left it, met the open drawer with its hips on
+the way down, and lifts the bowl out of it from its right arm's stand 0.75 m back only
+0.20-0.28 m down (zoo37).
 """
 
 from __future__ import annotations
@@ -17,6 +21,7 @@ from robocram.designators import a
 from robocram.execution import perform
 from robocram.execution.failures import PlanFailure
 from robocram.logic import current_kb
+from robocram.plans.basic_actions import park_arms
 
 DEPTHS = (0.20, 0.25)  # [m] below standing, tried in turn (0.15: the drawer opens, but the
 # open handle is not held again to close it; 0.30: the bowl is not put down: zoo32)
@@ -52,3 +57,21 @@ def crouched(depth: float) -> Iterator[None]:
         yield
     finally:
         stand_up(depth)
+
+
+@contextlib.contextmanager
+def crouched_at_stand(depth: float) -> Iterator[None]:
+    """Inside, the robot crouches ``depth`` [m] where it stands (0: it stands); it stands up
+    after, holding what it picked; after a failure inside, the arms parked first (a hand
+    left out over the thing would meet it on the way up)."""
+    if depth > 0.0:
+        crouch(depth)
+    try:
+        yield
+    except PlanFailure:
+        if depth > 0.0:
+            with contextlib.suppress(PlanFailure):
+                park_arms()
+        stand_up(depth)
+        raise
+    stand_up(depth)

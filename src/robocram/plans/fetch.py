@@ -29,6 +29,7 @@ from robocram.execution.failures import (
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import detect, look_lowering, navigate, park_arms
 from robocram.plans.container_access import OpenedContainer, is_drawer
+from robocram.plans.crouching import crouched_at_stand
 from robocram.plans.culprits import blamed, culprit_clause
 from robocram.plans.detect_past_hand import detect_past_hand
 from robocram.plans.drawer_side_stands import side_stands
@@ -78,6 +79,7 @@ def _pick_from(
     unseen: bool = False,
     raised: bool = False,
     over: bool = False,
+    depth: float = 0.0,
 ) -> Held:
     """Drive to ``stand``, look at the object (``where``, map), detect it again, pick it
     up (lifting it out of ``out_of``, the opened drawer it lies in, if any). A thing seen
@@ -92,9 +94,26 @@ def _pick_from(
     fingers lay in the surface under the thing is tried again higher (``pick_object``).
     With ``over``, a look that stopped at the tilt limit above a thing in an opened drawer
     (``out_of``) takes it where it was seen as ``unseen`` does, in the view's lower edge
-    or under it (:func:`_looked_over`)."""
+    or under it (:func:`_looked_over`). With ``depth`` > 0 a legged robot crouches that
+    deep [m] once there, and stands up again after (``plans/crouching.py``)."""
     park_arms()
     (navigate_torso_up if torso_up else navigate)(stand)
+    with crouched_at_stand(depth):
+        return _look_and_pick(seen, where, arm, grasp, out_of, in_container, unseen, raised, over)
+
+
+def _look_and_pick(
+    seen: ObjectDesignator,
+    where: PoseStamped,
+    arm: str | None,
+    grasp: str | None,
+    out_of: tuple[str, str] | None,
+    in_container: bool,
+    unseen: bool,
+    raised: bool,
+    over: bool,
+) -> Held:
+    """:func:`_pick_from` once at the stand: look, detect again, pick up."""
     wanted = an.object(type=seen.get("type"), name=seen.get("name"))
     try:
         look_lowering(where)
@@ -316,10 +335,12 @@ def fetch(
     stand_retries: int = STAND_RETRIES,
     log: AttemptLog | None = None,
     opened: OpenedContainer | None = None,
+    depth: float = 0.0,
 ) -> Held:
     """Pick up the (perceived) object from a stand that reaches it; what the hand holds.
 
-    ``opened`` is the container the object lies in, if a search opened one.
+    ``opened`` is the container the object lies in, if a search opened one; ``depth`` [m]:
+    a legged robot crouches that deep at each stand after the drive (0: it stands).
 
     Raises:
         FetchExhausted: no stand within ``stand_retries`` led to the object being held.
@@ -340,7 +361,7 @@ def fetch(
     robot = current_robot()
     for pose, use_arm in itertools.islice(stands, stand_retries + MAX_BLOCKED):
         try:
-            held = _pick_from(pose, seen, where, use_arm, grasp, out_of)
+            held = _pick_from(pose, seen, where, use_arm, grasp, out_of, depth=depth)
         except NavigationPoseUnreachable as failure:  # in the way: the next stand, no try
             causes.append(failure)
             log.record("fetch", pose, failure)
@@ -363,7 +384,9 @@ def fetch(
         return held
 
     def picking(**keys: bool) -> Callable[[Pose, str | None], Held]:
-        return lambda pose, use_arm: _pick_from(pose, seen, where, use_arm, grasp, out_of, **keys)
+        return lambda pose, use_arm: _pick_from(
+            pose, seen, where, use_arm, grasp, out_of, depth=depth, **keys
+        )
 
     for stands_left, pick, limit in (  # then the torso raised where it alone was in the
         (lowered, picking(torso_up=True), stand_retries),  # way; last: where it was seen,

@@ -25,7 +25,7 @@ from robocram.execution.failures import (
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import park_arms
 from robocram.plans.container_access import OpenedContainer, close_again, is_container
-from robocram.plans.crouching import DEPTHS, can_crouch, crouched
+from robocram.plans.crouching import DEPTHS, can_crouch
 from robocram.plans.deliver import PLACE_RETRIES, deliver
 from robocram.plans.deliver import STAND_RETRIES as PLACING_STANDS
 from robocram.plans.errors import FetchExhausted
@@ -78,14 +78,14 @@ def _fetch_crouched(
     standing: FetchExhausted,
 ) -> Held:
     """Fetch ``seen`` (its pose in the map: kept in the base's frame, it would sink with
-    the body) from ``inside`` crouched, at each of the depths in turn, standing up after;
-    the last failure raised (``standing`` where no crouch bent)."""
+    the body) from ``inside`` crouched at each stand (down after the drive, up before the
+    next), at each of the depths in turn; the last failure raised (``standing`` where no
+    crouch bent)."""
     last: PlanFailure = standing
     for depth in DEPTHS:
         try:
             park_arms()  # a failed pick may leave a hand out over the thing
-            with crouched(depth):
-                return fetch(seen, arm, grasp, stand_retries, log, opened=inside)
+            return fetch(seen, arm, grasp, stand_retries, log, opened=inside, depth=depth)
         except PlanFailure as failure:  # no fetch, or the way down blocked where it stood
             last = failure if not isinstance(failure, TorsoLowLevelFailure) else last
     raise last
