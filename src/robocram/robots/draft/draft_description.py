@@ -45,7 +45,6 @@ from robocram.robots.draft.stowing import (
     ABOVE,
     AHEAD,
     looking_pose,
-    nudged_pose,
     parked_unclear,
     stowed_pose,
 )
@@ -332,10 +331,6 @@ def _parked_clear(
             tree.model, tuple(arm.parking), wrist, tree.model.derived(SelfContacts),
             view=view, swept=swept,
         )  # fmt: skip
-        how = "stowed"
-        if stowed is None:  # every stowed candidate touches: the parking moved the least
-            stowed = nudged_pose(tree.model, arm.parking, wrist, view, swept)
-            how = "moved the least from its parking (its fingers meeting one another aside)"
         if stowed is None:
             doubts[f"arms.{key}.parking"] = (
                 "parked, the arm hangs in the camera's view (or meets the robot as the head "
@@ -345,7 +340,7 @@ def _parked_clear(
         arms[key] = replace(arm, parking=stowed.values)
         turning = " and clear as the head pans" if len(swept) > 1 else ""
         why[f"arms.{key}.parking"] = (
-            f"{how} out of the camera's view{turning}: within limits, the arm within "
+            f"stowed out of the camera's view{turning}: within limits, the arm within "
             f"{stowed.extent:.2f} m of the base's middle, 1 cm clear of its other links (meshes)"
         )
         doubts.pop(f"arms.{key}.parking", None)

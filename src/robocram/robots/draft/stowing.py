@@ -20,10 +20,9 @@ parked arm must touch nothing with the waist turned either way as well (``swept`
 
 from __future__ import annotations
 
-import math
 import random
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -108,10 +107,8 @@ class _Search:
         contacts: SelfContacts,
         view: CameraView | None = None,
         swept: Sequence[Mapping[str, float]] = ({},),
-        own_hand: bool = True,
     ) -> None:
         self.joints = tuple(joints)
-        self.own_hand = own_hand  # whether the hand's links meeting one another count
         self.view = view
         self.swept = tuple(swept)
         self.chain = ChainPoses(model, joints, wrist)
@@ -132,11 +129,10 @@ class _Search:
         ]
         self.middle = np.mean(np.asarray(base)[:, :2], axis=0)
         below = set(tree.subtree_links(wrist))
-        fingers = [
+        self.hand_states = _hand_states(model, [
             j.name for j in model.joints.values()
             if j.movable and j.mimic is None and j.child in below
-        ]  # fmt: skip
-        self.hand_states = _hand_states(model, fingers, (0.0, 1.0) if own_hand else HAND_STEPS)
+        ])  # fmt: skip
         shoulder = (self.chain.base * self.chain.chain[0].origin).position
         self.shoulder = float(shoulder[2])
         across = shoulder[1] - self.middle[1]  # an arm on one side stays on it
@@ -157,11 +153,6 @@ class _Search:
         middles = (chain[1:] + chain[:-1]) / 2
         return self.view.sees_any(np.vstack((points, middles)))
 
-    def hand_reach(self, values: Sequence[float]) -> float:
-        """How far [m] the hand's nearest shape lies from the base's middle, horizontally."""
-        hand = self.points(values)[-len(self.hand) :, :2] if self.hand else np.zeros((0, 2))
-        return float(np.linalg.norm(hand - self.middle, axis=1).min()) if len(hand) else 0.0
-
     def extent(self, values: Sequence[float]) -> float:
         return float(np.linalg.norm(self.points(values)[:, :2] - self.middle, axis=1).max())
 
@@ -175,10 +166,9 @@ class _Search:
         return float(spread.max() + 0.1 * spread.mean() + 2.0 * low + high + crossed)
 
     def touches(self, values: Sequence[float]) -> bool:
-        """Whether the arm at ``values`` touches itself with the hand closed or open; but
-        for ``own_hand``, a hand's links meeting one another are its own closing, not the
-        parking's (Rollin' Justin's fingers meet their palm and thumb at their limits,
-        wherever the arm is)."""
+        """Whether the arm at ``values`` touches itself with the hand closed or open; a
+        hand's links meeting one another are its own closing, not the parking's (Rollin'
+        Justin's fingers meet their palm and thumb at their limits, wherever the arm is)."""
         arm = dict(zip(self.joints, values, strict=True))
         return any(
             self._touches({**arm, **hand}, above)
@@ -189,8 +179,6 @@ class _Search:
     def _touches(self, values: Mapping[str, float], above: Mapping[str, float]) -> bool:
         if not self.contacts.touches(values, turned=above, parts=self.arm_links):
             return False
-        if self.own_hand:
-            return True
         pairs = self.contacts.meeting(values, turned=above, parts=self.arm_links)
         return any(not self.hand_links.issuperset(pair) for pair in pairs)
 
@@ -221,78 +209,15 @@ class _Search:
         return Stowed(named, self.extent(values), self.touches(values))
 
 
-HAND_STEPS = (0.0, 0.25, 0.5, 0.75, 1.0)  # shares of the fingers' ranges, swept
-
-
-def _hand_states(
-    model: RobotModel, joints: Sequence[str], shares: Sequence[float]
-) -> list[dict[str, float]]:
-    """The hand's joints (fingers) at zero and at these ``shares`` of the way from their
-    lower to their upper limits: a parked arm's gripper opens and closes where it is (and
-    its fingers sweep between: Alex's pinky, curling, met its torso a tenth of the way)."""
+def _hand_states(model: RobotModel, joints: Sequence[str]) -> list[dict[str, float]]:
+    """The hand's joints (fingers) at zero, at their lower and at their upper limits: a
+    parked arm's gripper opens and closes where it is."""
     states: list[dict[str, float]] = [{}]
-    for share in shares if joints else ():
-        states.append({j: _share_of(joint_range(model, j), share) for j in joints})
+    for end in (0, 1):
+        state = {j: joint_range(model, j)[end] for j in joints}
+        if state:
+            states.append(state)
     return states
-
-
-def _share_of(limits: tuple[float, float], share: float) -> float:
-    """The value ``share`` of the way from the lower limit to the upper (the limits exact)."""
-    lower, upper = limits
-    return lower if share == 0.0 else upper if share == 1.0 else lower + share * (upper - lower)
-
-
-NUDGES = 200  # seeded samples per spread, around the parking
-SPREADS = (0.1, 0.2, 0.4, 0.8, 1.6)  # [rad | m] standard deviations tried in turn
-WRIST_JOINTS = 3  # the arm's last joints, turned first
-VIEW_MARGIN = math.radians(10.0)  # [rad] the view widened by this each way, for the nudge
-
-
-def nudged_pose(
-    model: RobotModel,
-    parking: Mapping[str, float],
-    wrist: str,
-    view: CameraView | None,
-    swept: Sequence[Mapping[str, float]] = ({},),
-    seed: int = 0,
-) -> Stowed | None:
-    """The arm's pose nearest ``parking`` (joint space) out of ``view`` and touching
-    nothing, or None: samples around it, spread wider in turn. Moved as little as it must,
-    the arm keeps its parking's bends, which the plans' IK starts from (Rollin' Justin's
-    right elbow, bent the other way, left it no tabletop grasp). A hand's links meeting
-    one another do not count; its fingers are swept through their range."""
-    wide = (
-        None
-        if view is None
-        else replace(
-            view,
-            horizontal_fov=view.horizontal_fov + 2 * VIEW_MARGIN,
-            vertical_fov=view.vertical_fov + 2 * VIEW_MARGIN,
-        )
-    )  # the arm's points stand for its shapes, which reach past them: moved the least,
-    # the arm would keep its shapes' edges in the view
-    search = _Search(
-        model, list(parking), wrist, model.derived(SelfContacts), wide, swept, own_hand=False
-    )
-    start = [float(v) for v in parking.values()]
-    room = search.hand_reach(start)  # the hand kept as far out from the body's middle
-    rng = random.Random(seed)
-    firsts = (max(0, len(start) - WRIST_JOINTS), 0)  # the wrist first: shoulder, elbow kept
-    for first, spread in [(first, s) for first in firsts for s in SPREADS]:
-        nearby = [
-            [
-                rounded_inside(v + (rng.gauss(0.0, spread) if k >= first else 0.0), lim)
-                for k, (v, lim) in enumerate(zip(start, search.limits, strict=True))
-            ]
-            for _ in range(NUDGES)
-        ]
-        nearby.sort(key=lambda values: float(np.linalg.norm(np.subtract(values, start))))
-        for values in nearby:
-            if search.in_view(values) or search.hand_reach(values) < room:
-                continue
-            if not search.touches(values):
-                return search.judged(values)
-    return None
 
 
 def stowed_pose(
