@@ -175,24 +175,16 @@ class SelfContacts:
                 q[joint.idx_q] = value
         return q
 
-    def _meeting(self, q: np.ndarray, data: pin.GeometryData | None = None) -> list[int]:
-        data = self.geometry_data if data is None else data
+    def _meeting(self, q: np.ndarray) -> list[int]:
+        data = self.geometry_data
         pin.computeCollisions(self.kinematics, self.data, self.geometry, data, q, False)
         active = data.activeCollisionPairs
         return [i for i, r in enumerate(data.collisionResults) if active[i] and r.isCollision()]
 
-    def meeting(
-        self,
-        values: Mapping[str, float],
-        turned: Mapping[str, float] | None = None,
-        parts: frozenset[str] = frozenset(),
-    ) -> list[tuple[str, str]]:
-        """The pairs of links that meet with ``values`` (and ``turned``) set, other joints
-        at zero; counted as :meth:`touches` counts them."""
-        q = self._q({**values, **(turned or {})})
-        data = self._data(self._turned_against(turned or {}, parts))
+    def meeting(self, values: Mapping[str, float]) -> list[tuple[str, str]]:
+        """The pairs of links that meet with ``values`` set (other joints at zero)."""
         pairs = self.geometry.collisionPairs
-        return sorted({self._names(pairs[i]) for i in self._meeting(q, data)})
+        return sorted({self._names(pairs[i]) for i in self._meeting(self._q(values))})
 
     def touches(
         self,

@@ -22,7 +22,6 @@ from robocram.robots.description import (
 from robocram.robots.description_check import infer_arm
 from robocram.robots.draft.arms import arm_names, draft_arm
 from robocram.robots.draft.base_drive import find_base_drive
-from robocram.robots.draft.camera_looks import camera_view
 from robocram.robots.draft.camera_sensors import camera_sensors
 from robocram.robots.draft.cameras import (
     DEFAULT_HFOV,
@@ -36,7 +35,7 @@ from robocram.robots.draft.cameras import (
 )
 from robocram.robots.draft.draft_source import draft_source
 from robocram.robots.draft.hands import find_fixed_hands, find_hands
-from robocram.robots.draft.link_poses import within_limits
+from robocram.robots.draft.link_poses import link_poses, within_limits
 from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.draft.parking import neck_pose
 from robocram.robots.draft.srdf_arms import srdf_arms
@@ -44,6 +43,7 @@ from robocram.robots.draft.stance import drafted_stance
 from robocram.robots.draft.stowing import (
     ABOVE,
     AHEAD,
+    CameraView,
     looking_pose,
     parked_unclear,
     stowed_pose,
@@ -294,6 +294,26 @@ def _with_camera(
     )
 
 
+def _camera_view(tree: ModelTree, desc: RobotDescription) -> CameraView | None:
+    """The first camera's view in the root link with the neck parked, or None (no camera,
+    or one an arm carries: its parking aims it)."""
+    if not desc.cameras:
+        return None
+    camera = desc.cameras[0]
+    added = {f.name: f for f in desc.extra_frames}
+    spec = added.get(camera.frame)
+    link = spec.parent if spec is not None else camera.frame
+    if link not in tree.model.links or any(
+        link in tree.subtree_links(arm.end_effector_link) or link == arm.end_effector_link
+        for key, arm in desc.arms.items()
+        if key != desc.neck_arm
+    ):
+        return None
+    pose = link_poses(tree.model, dict(desc.neck_parking))[link]
+    pose = pose * spec.pose if spec is not None else pose
+    return CameraView(pose, camera.horizontal_fov, camera.vertical_fov)
+
+
 def _pan_sweep(tree: ModelTree, desc: RobotDescription, arm: str) -> list[dict[str, float]]:
     """States of the head's pan joint a parked ``arm`` must stay clear in: at zero and
     every 15 degrees to :data:`PAN_SWEEP` each way (within limits), where the pan turns
@@ -313,16 +333,14 @@ def _pan_sweep(tree: ModelTree, desc: RobotDescription, arm: str) -> list[dict[s
 def _parked_clear(
     tree: ModelTree, desc: RobotDescription, why: dict[str, str], doubts: dict[str, str]
 ) -> RobotDescription:
-    """``desc`` with each arm parked in the body camera's view (as the plans look:
-    :mod:`~robocram.robots.draft.camera_looks`), or into the robot when the head pans with
-    it, stowed again clear of both (Centauro's elbow hung before its head camera; its waist
-    pans the head and swung the parked hand into the pelvis; Rollin' Justin's right thumb
-    hung before its camera looking down at the counter)."""
+    """``desc`` with each arm parked in the body camera's view, or into the robot when the
+    head pans with it, stowed again clear of both (Centauro's elbow hung before its head
+    camera; its waist pans the head and swung the parked hand into the pelvis)."""
+    view = _camera_view(tree, desc)
     arms = dict(desc.arms)
     for key, arm in desc.arms.items():
         if key == desc.neck_arm or not arm.parking:
             continue
-        view = camera_view(tree, desc, key)
         swept = _pan_sweep(tree, desc, key)
         wrist = arm.end_effector_link
         if not parked_unclear(tree.model, arm.parking, wrist, view, swept):

@@ -52,21 +52,16 @@ NEAR = 0.05  # [m] points nearer the camera than this are its own housing, not i
 @dataclass(frozen=True)
 class CameraView:
     """A camera's view in the root link: its optical frame (z forward) and fields of view
-    [rad]; what lies within ``depth`` [m] in front of it, inside both, is in view, from
-    ``pose`` or from any of the ``looks`` (the optical frame as the head turns)."""
+    [rad]; what lies within ``depth`` [m] in front of it, inside both, is in view."""
 
     pose: Pose
     horizontal_fov: float
     vertical_fov: float
     depth: float = 2.0
-    looks: tuple[Pose, ...] = ()
 
     def sees_any(self, points: np.ndarray) -> bool:
         """Whether any of ``points`` (N x 3, root link) lies in the view."""
-        return any(self._seen_from(pose, points) for pose in (self.pose, *self.looks))
-
-    def _seen_from(self, pose: Pose, points: np.ndarray) -> bool:
-        inverse = pose.inverse().matrix()
+        inverse = self.pose.inverse().matrix()
         local = points @ inverse[:3, :3].T + inverse[:3, 3]
         x, y, z = local[:, 0], local[:, 1], local[:, 2]
         ahead = (z > NEAR) & (z < self.depth)
@@ -117,7 +112,6 @@ class _Search:
         self.contacts = contacts
         tree, poses = ModelTree(model), link_poses(model)
         hand = [wrist, *tree.subtree_links(wrist)]
-        self.hand_links = frozenset(hand)
         first = model.joints[self.joints[0]].child
         self.arm_links = frozenset((first, *tree.subtree_links(first)))
         self.hand = [
@@ -166,21 +160,13 @@ class _Search:
         return float(spread.max() + 0.1 * spread.mean() + 2.0 * low + high + crossed)
 
     def touches(self, values: Sequence[float]) -> bool:
-        """Whether the arm at ``values`` touches itself with the hand closed or open; a
-        hand's links meeting one another are its own closing, not the parking's (Rollin'
-        Justin's fingers meet their palm and thumb at their limits, wherever the arm is)."""
+        """Whether the arm at ``values`` touches itself with the hand closed or open."""
         arm = dict(zip(self.joints, values, strict=True))
         return any(
-            self._touches({**arm, **hand}, above)
+            self.contacts.touches({**arm, **hand}, turned=above, parts=self.arm_links)
             for above in self.swept
             for hand in self.hand_states
         )
-
-    def _touches(self, values: Mapping[str, float], above: Mapping[str, float]) -> bool:
-        if not self.contacts.touches(values, turned=above, parts=self.arm_links):
-            return False
-        pairs = self.contacts.meeting(values, turned=above, parts=self.arm_links)
-        return any(not self.hand_links.issuperset(pair) for pair in pairs)
 
     def sample(self, rng: random.Random) -> list[float]:
         return [
