@@ -176,7 +176,7 @@ def test_a_recorded_crouch_audits_clean_and_replays_the_body_down_and_up(
 
 def test_centauro_crouches_deep_and_stands_up_its_wheels_kept() -> None:
     """Centauro lifts the bowl out of the open drawer only crouched 0.25 m (zoo37); its
-    legs' search from standing strayed at some depths on the way (0.109 m down, 0.139 m
+    legs' search from standing strayed at some depths on the way (0.109 m down, 0.140 m
     up) and no crouch ran: those depths are solved from their neighbours now."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
@@ -193,7 +193,7 @@ def test_centauro_crouches_deep_and_stands_up_its_wheels_kept() -> None:
             return float(pybullet.getBasePositionAndOrientation(body, physicsClientId=client)[0][2])
 
         high = base_z()
-        for depth in (0.25, 0.0, 0.20, 0.0):
+        for depth in (0.25, 0.0):
             assert crouch(robot, depth) == pytest.approx(depth, abs=1e-4)
             assert base_z() == pytest.approx(high - depth, abs=1e-6)
             for foot, at in wheels.items():
