@@ -8,8 +8,7 @@ when standing failed, at each of :data:`DEPTHS` in turn, and stands up again bef
 drives elsewhere: its camera looks, and its reach costmaps hold, from its standing height.
 A fetch crouches at each of its stands after the drive (:func:`crouched_at_stand`):
 Centauro, crouched where the standing fetch left it, met the open drawer with its hips on
-the way down, and lifts the bowl out of it from its right arm's stand 0.75 m back only
-0.20-0.28 m down (zoo37).
+the way down; it lifts the bowl out of it only from a stand 0.75 m back, 0.25 m down (zoo37).
 """
 
 from __future__ import annotations
