@@ -6,7 +6,9 @@ the picking arm's shoulder, that edge lies beyond :data:`SEEN_REACH_SHARE` of th
 reach, no table in its view is in reach (a table lies lower, so farther out still): the
 scenes put a mug nowhere both seen and reachable (Baxter's head camera, 33 degrees down at
 most, sees 1.12 m from the shoulder there, its arm reaching 1.14 m). A camera named so on
-that arm (its wrist camera) is drafted instead: the arm aims it where it reaches.
+that arm (its wrist camera) is drafted instead: the arm aims it where it reaches. Asked of
+a fixed robot only: one that moves stands back to see (Kevin's level head camera sees its
+mug from where its pick-up stands).
 """
 
 from __future__ import annotations

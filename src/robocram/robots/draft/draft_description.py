@@ -178,7 +178,8 @@ def draft_description(
         doubt = "; ".join(s.doubt for s in parts if s.doubt) or None
         _note(why, doubts, "stance", "; ".join(s.why for s in parts), doubt)
     chosen = None
-    if camera is None:  # a camera that cannot see the arms' reach: the picking arm's
+    if camera is None and drive.base_type == "fixed":  # one that cannot see the arms'
+        # reach (a fixed robot cannot step back to see its table): the picking arm's
         instead = arm_camera_instead(tree, desc.arms, camera_sensors(path))
         camera, chosen = instead if instead is not None else (None, None)
     desc = _with_camera(tree, desc, why, doubts, cut, camera, guessed, chosen)
