@@ -36,6 +36,7 @@ from robocram.robots.draft.cameras import (
 )
 from robocram.robots.draft.draft_source import draft_source
 from robocram.robots.draft.hands import find_fixed_hands, find_hands
+from robocram.robots.draft.hull_overreach import overreaching_links
 from robocram.robots.draft.link_poses import link_poses, within_limits
 from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.draft.parking import neck_pose
@@ -177,6 +178,10 @@ def draft_description(
         desc = replace(desc, stance=values)
         doubt = "; ".join(s.doubt for s in parts if s.doubt) or None
         _note(why, doubts, "stance", "; ".join(s.why for s in parts), doubt)
+    overreach = overreaching_links(tree, drive.base_type == "fixed")
+    if overreach.links:  # a hull filling a hollow its arms reach into: collided as parts
+        desc = replace(desc, decomposed_links=overreach.links)
+        why["decomposed_links"] = overreach.why
     chosen = None
     if camera is None and drive.base_type == "fixed":  # one that cannot see the arms'
         # reach (a fixed robot cannot step back to see its table): the picking arm's
