@@ -81,7 +81,7 @@ def hull_overreach(mesh: Path, scale: tuple[float, float, float]) -> float:
         hull = coal.Convex.convexHull(vertices, True, "Qt")
     except Exception:  # noqa: BLE001 - a vertex with too many neighbours: joggled
         hull = coal.Convex.convexHull(vertices, True, "QJ")
-    corners = np.array([hull.points(i) for i in range(hull.num_points)], dtype=float)
+    corners = np.array([hull.point(i) for i in range(hull.num_points)], dtype=float)
     probe = coal.Sphere(1e-9)
     request = coal.DistanceRequest()
     origin = coal.Transform3s()
