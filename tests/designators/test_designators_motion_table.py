@@ -43,12 +43,13 @@ SAMPLES: dict[str, object] = {
     "amount": 50.0,
     "item": "bread-1",
     "cuts": [0.0],
+    "depth": 0.25,
 }
 
 
 @pytest.fixture(scope="module")
 def kb() -> KnowledgeBase:
-    return install_motion_family(KnowledgeBase(), "flying")
+    return install_motion_family(install_motion_family(KnowledgeBase(), "flying"), "legged")
 
 
 def _cases() -> list[tuple[MotionType, int]]:
@@ -71,7 +72,8 @@ def test_every_table_command_is_grounded_from_its_required_properties(
 
 def test_the_table_has_one_entry_per_type_and_flying_is_its_own_family() -> None:
     assert [m.type for m in motion_types("flying")] == ["flying", "distance-sensing"]
-    assert len(motion_types()) == len(MOTION_TYPES) == 17
+    assert [m.type for m in motion_types("legged")] == ["crouching"]
+    assert len(motion_types()) == len(MOTION_TYPES) == 18
     assert set(commands_of(MOTION_TYPES, "arms")) == {
         ("move_tcp", 4),
         ("move_tcp_both", 3),

@@ -4,7 +4,8 @@
 their types, the command terms it grounds to, the process module resource executing them
 and what a recording module answers. ``install_common_motions(kb)`` loads the
 ``motion_grounding/2`` rules generated from it (fact group ``common_motions``);
-``install_motion_family(kb, "flying")`` adds the motions of flying robots.
+``install_motion_family(kb, "flying")`` adds the motions of flying robots,
+``install_motion_family(kb, "legged")`` those of robots standing on legs they bend.
 
 Motion ``type`` (properties) -> command, resource:
 
@@ -27,6 +28,8 @@ Motion ``type`` (properties) -> command, resource:
   ``move_joints_both(Left, Right, Mode)``, arms
 - flying (target) -> ``fly(Pose)``, flying; distance-sensing (direction) ->
   ``sense_distance(Direction)``, distance_sensor (family ``flying``)
+- crouching (depth) -> ``crouch(Depth)``, legs (family ``legged``): the body ``depth``
+  [m] below standing, the soles kept; 0 stands up
 
 A ``target`` is a pose, a ``PoseStamped`` or a location designator (one command per
 solution). ``Effort`` is the ``effort`` property [N] or ``none``; ``Mode`` the
@@ -47,7 +50,11 @@ from robocram.designators.prolog_access import install_designator_predicates
 from robocram.logic import KnowledgeBase
 
 COMMON_MOTIONS_GROUP = "common_motions"
-FAMILY_GROUPS = {"common": COMMON_MOTIONS_GROUP, "flying": "flying_motions"}
+FAMILY_GROUPS = {
+    "common": COMMON_MOTIONS_GROUP,
+    "flying": "flying_motions",
+    "legged": "legged_motions",
+}
 
 _HELPERS = """
 common_target_pose(Target, Pose) :- loc_desig(Target), !, designator_grounding(Target, Pose).

@@ -246,6 +246,14 @@ def _table() -> tuple[MotionType, ...]:
             family="flying",
         ),
         MotionType(
+            "crouching",
+            (_number("depth", "[m] below standing; 0: stand up"),),
+            (Command("crouch", ("depth",)),),
+            "legs",
+            Answer.GOAL,
+            family="legged",
+        ),
+        MotionType(
             "distance-sensing",
             (_DIRECTION,),
             (Command("sense_distance", ("direction",)),),

@@ -112,16 +112,52 @@ def _palm_on_side(
     across its fingers (:meth:`Palm.holding`); raised until the hand's lower
     end (its row standing up, in a grasp from the side) is :data:`PALM_FLOOR` over the
     object's bottom: the TIAGo's little finger went into the table."""
+    offset = quat.rotate(orientation, _held(shape, at, approach, palm, half_width))
+    rise = _palm_rise(shape, at, approach, orientation, palm, half_width)
+    return (at[0] - offset[0], at[1] - offset[1], at[2] - offset[2] + rise)
+
+
+def _held(
+    shape: ObjectShape, at: Vector3, approach: Vector3, palm: Palm, half_width: float
+) -> Vector3:
+    """Where [m, tool frame] the palm hand holds the body entered at ``at``."""
     depth = sum(
         a * (p - low) if a > 0 else -a * (high - p)
         for a, p, low, high in zip(approach, at, shape.low, shape.high, strict=True)
     )
-    offset = quat.rotate(orientation, palm.holding(half_width, depth, flat=approach == DOWN))
+    return palm.holding(half_width, depth, flat=approach == DOWN)
+
+
+def _palm_rise(
+    shape: ObjectShape,
+    at: Vector3,
+    approach: Vector3,
+    orientation: Quaternion,
+    palm: Palm,
+    half_width: float,
+) -> float:
+    """How far [m] the palm hand holding at ``at`` is raised to keep its lower end
+    :data:`PALM_FLOOR` over the object's bottom (0 where it is already)."""
+    offset = quat.rotate(orientation, _held(shape, at, approach, palm, half_width))
     knuckles = quat.rotate(orientation, palm.knuckles)
     across = quat.rotate(orientation, palm.across)
     lowest = at[2] - offset[2] + knuckles[2] + min(s * across[2] for s in palm.span)
-    rise = max(0.0, shape.low[2] + PALM_FLOOR - lowest)
-    return (at[0] - offset[0], at[1] - offset[1], at[2] - offset[2] + rise)
+    return max(0.0, shape.low[2] + PALM_FLOOR - lowest)
+
+
+def _closes_over_top(
+    hand: Hand, shape: ObjectShape, at: Vector3, approach: Vector3, opening: Vector3, width: float
+) -> bool:
+    """Whether a palm hand held sideways is raised so far (:func:`_palm_rise`) that the
+    place it holds lies over the body's top: its fingers close on nothing. Rollin'
+    Justin's open hand reaches 106 mm across its row on the thumb's side, 91 on the
+    other: turned thumb down, its handle grasp rose 63 mm and held 10 mm over the 106 mm
+    mug's top (the left hand closed on nothing); turned the other way, 48 mm (5 under)."""
+    if hand.palm is None or approach[2] != 0.0:
+        return False
+    orientation = tool_orientation(hand, approach, opening)
+    rise = _palm_rise(shape, at, approach, orientation, hand.palm, width / 2)
+    return at[2] + rise > shape.high[2]
 
 
 def _top(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
@@ -159,7 +195,8 @@ def _side(shape: ObjectShape, hand: Hand, name: str) -> Iterator[Grasp]:
         across, width = (1.0, 0.0, 0.0), sx
     for turn in (0.0, math.pi):
         opening = across if turn == 0.0 else (-across[0], -across[1], 0.0)
-        yield _grasp(hand, name, turn, at, approach, opening, width, shape)
+        if not _closes_over_top(hand, shape, at, approach, opening, width):
+            yield _grasp(hand, name, turn, at, approach, opening, width, shape)
 
 
 def _rim(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
@@ -285,7 +322,8 @@ def _handle(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:
     across = (-side[1], side[0], 0.0)
     for turn in (0.0, math.pi):
         opening = across if turn == 0.0 else (-across[0], -across[1], 0.0)
-        yield _grasp(hand, "handle", turn, at, approach, opening, shape.handle, shape)
+        if not _closes_over_top(hand, shape, at, approach, opening, shape.handle):
+            yield _grasp(hand, "handle", turn, at, approach, opening, shape.handle, shape)
 
 
 def _handle_from_above(shape: ObjectShape, hand: Hand) -> Iterator[Grasp]:

@@ -4,7 +4,9 @@ CRAM opens a drawer when the object is known to be inside it and closes it once 
 is delivered. The stand comes from :func:`handle_stands` (in front of the handle on the
 side the KB's ``container_front/3`` names, the arm's shoulder in line with it); each stand
 is tried in turn, bounded, and a stand where the robot would collide or the arm cannot
-hold the handle all the way gives the next one.
+hold the handle all the way gives the next one. A legged robot for which no stand worked
+tries them again crouched (:mod:`~robocram.plans.crouching`), and closes what it opened
+crouched as deep, both down at the stand and up again before it drives on.
 """
 
 from __future__ import annotations
@@ -20,6 +22,7 @@ from robocram.execution.failures import (
     NavigationPathBlocked,
     NavigationPoseUnreachable,
     PlanFailure,
+    TorsoLowLevelFailure,
 )
 from robocram.knowledge import robot_predicates as rp
 from robocram.knowledge.scene_predicates import CONTAINER, CONTAINER_FRONT, CONTAINER_KIND
@@ -28,6 +31,7 @@ from robocram.logic import current_kb
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import look_ahead, move_torso, navigate, park_arms, park_neck
 from robocram.plans.containers import Container, close_container, container, open_container
+from robocram.plans.crouching import DEPTHS, can_crouch, crouch, crouched, stand_up
 from robocram.plans.environment_links import environment_link_pose
 from robocram.plans.errors import PlanSetupError
 from robocram.plans.known_robot import current_robot
@@ -50,12 +54,14 @@ ANOTHER_STAND_HELPS = (EnvironmentManipulationImpossible, NavigationLowLevelFail
 class OpenedContainer:
     """A container a plan opened, the stand and arm that opened it, where the base stood
     when it was open (a door's arc can take the base a metre along) and the torso's
-    position then [m | rad] (None: no torso)."""
+    position then [m | rad] (None: no torso), and how deep [m] the robot crouched to open
+    it (0: standing; it is closed as deep)."""
 
     container: Container
     stand: HandleStand
     reached: Pose | None = None
     torso: float | None = None
+    crouch: float = 0.0
 
 
 def is_container(environment: str, link: str) -> bool:
@@ -118,6 +124,23 @@ def open_from_front(
     log = log if log is not None else AttemptLog()
     part = container(name)
     try:
+        return _open_standing(part, log, retries)
+    except EnvironmentManipulationImpossible as failure:
+        if not can_crouch():
+            raise
+        last: PlanFailure = failure
+    for depth in DEPTHS:  # a legged robot's holds out of reach standing: crouched
+        try:
+            return _open_from_stands(part, log, retries, depth)
+        except PlanFailure as failure:
+            last = failure if not isinstance(failure, TorsoLowLevelFailure) else last
+    raise last  # a crouch that could not even bend says less than the standing failure
+
+
+def _open_standing(part: Container, log: AttemptLog, retries: int) -> OpenedContainer:
+    """:func:`open_from_front` standing: its stands, then looking ahead, then the neck
+    parked."""
+    try:
         return _open_from_stands(part, log, retries)
     except (EnvironmentManipulationImpossible, NavigationPoseUnreachable) as failure:
         if not _neck_in_the_way(failure):
@@ -147,27 +170,35 @@ def _neck_in_the_way(failure: PlanFailure) -> bool:
     return any(link in neck for link in failure.robot_links or ())
 
 
-def _open_from_stands(part: Container, log: AttemptLog, retries: int) -> OpenedContainer:
-    """Open ``part`` from the first of its stands (at most ``retries``) that works."""
+def _open_from_stands(
+    part: Container, log: AttemptLog, retries: int, depth: float = 0.0
+) -> OpenedContainer:
+    """Open ``part`` from the first of its stands (at most ``retries``) that works,
+    crouched ``depth`` [m] at each (0: standing), standing up after."""
     last: PlanFailure | None = None
     for _, stand in zip(range(retries), opening_stands(part), strict=False):
         try:
             park_arms()
             navigate(stand.pose)
+            if depth > 0.0:
+                crouch(depth)
             open_container(part.link, arm=stand.arm)
             park_arms()
         except PlanFailure as failure:
             log.record("open", stand.pose, failure)
             last = _open_on_from_here(part, stand, log) if _moved(failure) else failure
             if last is not None and not _open_enough(part, last):
+                stand_up(depth)
                 continue
             with contextlib.suppress(PlanFailure):
                 park_arms()
         else:
             log.record("open", stand.pose, None)
+        stand_up(depth)
         log.opened.append(part.link)
         robot = current_robot()
-        return OpenedContainer(part, stand, map_pose(robot.base_frame()), robot.torso_position())
+        reached = map_pose(robot.base_frame())
+        return OpenedContainer(part, stand, reached, robot.torso_position(), depth)
     if last is None:
         raise PlanSetupError(f"no stand to open {part.link!r} from (retries={retries})")
     raise last
@@ -272,8 +303,9 @@ def _closed_from_its_front(opened: OpenedContainer, log: AttemptLog) -> bool:
             try:
                 park_arms()
                 navigate(stand.pose)
-                close_container(part.link, arm=stand.arm)
-                park_arms()
+                with crouched(opened.crouch):
+                    close_container(part.link, arm=stand.arm)
+                    park_arms()
             except PlanFailure as failure:
                 log.record("close", stand.pose, failure)
                 continue
@@ -308,8 +340,9 @@ def _close_from_stands(opened: OpenedContainer, stands: list[Pose], log: Attempt
         try:
             park_arms()
             navigate(stand)
-            close_container(opened.container.link, arm=opened.stand.arm)
-            park_arms()
+            with crouched(opened.crouch):
+                close_container(opened.container.link, arm=opened.stand.arm)
+                park_arms()
         except PlanFailure as failure:
             log.record("close", stand, failure)
             if k == len(stands) - 1 or not isinstance(failure, ANOTHER_STAND_HELPS):

@@ -6,7 +6,9 @@ CRAM's transport plan, robot-independently: the search opens a container when th
 says the object is usually inside one; fetching and delivering each retry with the next
 solution of their location designators, within their bounds; the containers opened are
 closed again once the object is delivered, and the arms are parked. Every attempt is in
-the :class:`AttemptLog`, so callers (and tests) see what it took.
+the :class:`AttemptLog`, so callers (and tests) see what it took. A legged robot that
+fetches nothing standing from the container the search opened fetches it again crouched
+(:mod:`~robocram.plans.crouching`), standing up before it drives to deliver it.
 """
 
 from __future__ import annotations
@@ -15,12 +17,18 @@ from dataclasses import dataclass, field
 
 from robocram.designators import ObjectDesignator, an
 from robocram.execution import sub_task
-from robocram.execution.failures import PerceptionObjectNotFound
+from robocram.execution.failures import (
+    PerceptionObjectNotFound,
+    PlanFailure,
+    TorsoLowLevelFailure,
+)
 from robocram.plans.attempt_log import AttemptLog
 from robocram.plans.basic_actions import park_arms
 from robocram.plans.container_access import OpenedContainer, close_again, is_container
+from robocram.plans.crouching import DEPTHS, can_crouch, crouched
 from robocram.plans.deliver import PLACE_RETRIES, deliver
 from robocram.plans.deliver import STAND_RETRIES as PLACING_STANDS
+from robocram.plans.errors import FetchExhausted
 from robocram.plans.fetch import STAND_RETRIES, fetch
 from robocram.plans.known_robot import current_robot
 from robocram.plans.pick_object import Held
@@ -32,7 +40,7 @@ from robocram.plans.search import (
     place_point,
     search,
 )
-from robocram.tf import Pose
+from robocram.tf import Pose, transform_pose
 
 
 @dataclass
@@ -58,6 +66,37 @@ def _container_it_was_in(searched: SearchLog) -> OpenedContainer | None:
         if last.container.link == searched.searched[-1].link:
             return last
     return None
+
+
+def _fetch_crouched(
+    seen: ObjectDesignator,
+    arm: str | None,
+    grasp: str | None,
+    stand_retries: int,
+    log: AttemptLog,
+    inside: OpenedContainer,
+    standing: FetchExhausted,
+) -> Held:
+    """Fetch ``seen`` (its pose in the map: kept in the base's frame, it would sink with
+    the body) from ``inside`` crouched, at each of the depths in turn, standing up after;
+    the last failure raised (``standing`` where no crouch bent)."""
+    last: PlanFailure = standing
+    for depth in DEPTHS:
+        try:
+            park_arms()  # a failed pick may leave a hand out over the thing
+            with crouched(depth):
+                return fetch(seen, arm, grasp, stand_retries, log, opened=inside)
+        except PlanFailure as failure:  # no fetch, or the way down blocked where it stood
+            last = failure if not isinstance(failure, TorsoLowLevelFailure) else last
+    raise last
+
+
+def _in_map(seen: ObjectDesignator) -> ObjectDesignator:
+    """``seen`` with its pose in the map (as it is now), if it has one."""
+    pose = seen.get("pose")
+    if pose is None:
+        return seen
+    return seen.make_effective(seen.data or pose, pose=transform_pose(pose, "map"))
 
 
 def seen_from_here(object: ObjectDesignator | str) -> ObjectDesignator | None:  # noqa: A002
@@ -103,7 +142,13 @@ def transport(
         )
     with sub_task("fetching"):
         inside = _container_it_was_in(searched)
-        held = fetch(seen, arm, grasp, stand_retries, log, opened=inside)
+        in_map = _in_map(seen)  # before the base moves: the pose is in its frame
+        try:
+            held = fetch(seen, arm, grasp, stand_retries, log, opened=inside)
+        except FetchExhausted as failure:
+            if inside is None or not can_crouch():
+                raise
+            held = _fetch_crouched(in_map, arm, grasp, stand_retries, log, inside, failure)
     with sub_task("delivering"):
         # reach stands after the held ones: an arm holding the thing at the spot's side
         # may not lower it there (its joint limits), and nearer stands meet the table

@@ -24,6 +24,7 @@ from robocram.execution.failures import (
 )
 from robocram.execution.failures.plan_failure import PlanFailure
 from robocram.motion import BASE_JOINTS, BODY_JOINTS, JointTrajectory
+from robocram.motion.crouch_path import CROUCH_KIND, is_height_and_joints, put_height_and_joints
 from robocram.motion.whole_body_scene import is_whole_body, put_base_and_joints
 from robocram.projection.projected_robot import ProjectedRobot
 from robocram.tf import Pose
@@ -35,6 +36,7 @@ BLOCKED_BY_KIND: dict[str, type[PlanFailure]] = {
     "torso": TorsoPathBlocked,
     "head": PtuPathBlocked,
     "gripper": GripperPathBlocked,
+    CROUCH_KIND: TorsoPathBlocked,  # the body's way down or up
 }
 
 
@@ -94,6 +96,9 @@ class PathWatch:
             elif is_whole_body(names):
                 world.set_pose(self.robot.name, pose)
                 world.set_joint_states(self.robot.name, {n: joints[n] for n in names[3:]})
+            elif is_height_and_joints(names):
+                world.set_pose(self.robot.name, pose)
+                world.set_joint_states(self.robot.name, {n: joints[n] for n in names[1:]})
             else:
                 world.set_joint_states(self.robot.name, {n: joints[n] for n in names})
         return None
@@ -142,5 +147,7 @@ def _pose(robot: ProjectedRobot, names: tuple[str, ...], values: tuple[float, ..
         world.set_pose(name, Pose((named["x"], named["y"], height), turn))
     elif is_whole_body(names):
         put_base_and_joints(robot.handle, named)
+    elif is_height_and_joints(names):
+        put_height_and_joints(robot.handle, named)
     else:
         world.set_joint_states(name, named)

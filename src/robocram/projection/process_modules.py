@@ -20,6 +20,7 @@ grounds for its resource, one method per command, dispatched by
   ``cut(Arm, Path, Tool, Point, Contacts, Object, Cuts, Needed)`` (docs/tool_actions.md;
   a path planned to less than the ``Needed`` share is refused before it is followed)
 - flying: ``fly(Pose)``; distance sensor: ``sense_distance(Direction)`` [body frame]
+- legs: ``crouch(Depth)``: the body ``Depth`` [m] below standing (0: standing up)
 
 Arm and gripper words are the robot's arm names or the sides ``left``/``right``
 (``RobotDescription.arm_called``), so the modules serve any robot's arms.
@@ -37,6 +38,7 @@ from robocram.designators.tool_answers import CuttingAnswer, PouringAnswer, Tool
 from robocram.execution import MotionProcessModule
 from robocram.projection.arm import move_joints, move_tcp
 from robocram.projection.articulation import move_part
+from robocram.projection.crouching import crouch
 from robocram.projection.cutting import cut
 from robocram.projection.errors import ProjectionError
 from robocram.projection.flying import fly, sense_distance
@@ -289,6 +291,17 @@ class FlyingPM(ProjectionProcessModule):
         return fly(self.robot, pose)
 
 
+class LegsPM(ProjectionProcessModule):
+    """The legs of a legged robot: ``crouch(Depth)``."""
+
+    name = "projection_legs"
+    resource = "legs"
+
+    def crouch(self, depth: float) -> float:
+        """Bend the legs until the body stands ``depth`` [m] below standing (0: stand up)."""
+        return crouch(self.robot, float(depth))
+
+
 class DistanceSensorPM(ProjectionProcessModule):
     """The range sensor of a flying robot: ``sense_distance(Direction)``."""
 
@@ -311,6 +324,7 @@ PROJECTION_MODULES: dict[str, type[ProjectionProcessModule]] = {
         ArmPM,
         ToolPM,
         FlyingPM,
+        LegsPM,
         DistanceSensorPM,
     )
 }

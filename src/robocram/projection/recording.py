@@ -6,7 +6,7 @@ only append ``(module, command)`` to a log and answer with plausible values, as 
 motion table's ``answer`` of each motion type says:
 
 - going, flying, moving-tcp, looking: the target they were given
-- moving-torso: the value asked; opening/closing/gripping: the gripper action (``grip``
+- moving-torso, crouching: the value asked; opening/closing/gripping: the gripper action (``grip``
   answers the name of the object detected last, or None)
 - moving-arm-joints: the configuration, which also moves the robot's joints in the
   recorded kinematic state, so ``transform_pose`` in plans sees the arms where they went
@@ -43,7 +43,7 @@ from robocram.logic import KnowledgeBase, Term
 from robocram.projection.arm import joint_values
 from robocram.projection.errors import ProjectionError
 from robocram.projection.perception import PerceivedObject
-from robocram.projection.robot_environment import install_motions
+from robocram.projection.robot_environment import install_motions, with_legs
 from robocram.projection.world_frames import LiveTransformTree
 from robocram.robots import (
     LoadedDescription,
@@ -178,7 +178,7 @@ def recording_environment(
     install_description(kb, desc)
     install_motions(kb, desc)
     install_grasp_predicates(kb, description=desc)  # objects by type and pose
-    resources = with_looking(desc, desc.resources())
+    resources = with_legs(desc, with_looking(desc, desc.resources()))
     modules = [RecordingPM(resource, state) for resource in resources]
     facts = matching_facts(PREFIX, resources)
     env = Environment(f"recording_{desc.name}", modules, facts=facts, kb=kb)

@@ -2,12 +2,13 @@
 
 ``projection_environment(world, robot)`` builds an :class:`Environment` on the world's
 knowledge base (world predicates and the robot's description facts are already there),
-adds the motion groundings of the motion table (common ones, and flying ones for flying
-robots) and one process module per resource the robot has
-(``RobotDescription.resources()``, and ``ptu`` where an arm or a pan joint turns the camera:
-``looking_means.py``), with the ``matching_process_module/2`` facts the
-table gives for those resources. The grasp model answers ``object_grasp/7`` and its
-siblings (``robocram.grasping``, docs/grasping.md) so plans reach grasps through the KB.
+adds the motion groundings of the motion table (common ones, flying ones for flying
+robots, legged ones for robots on legs they bend) and one process module per resource the
+robot has (``RobotDescription.resources()``, ``ptu`` where an arm or a pan joint turns the
+camera: ``looking_means.py``, and ``legs`` for a legged robot: ``crouching.py``), with
+the ``matching_process_module/2`` facts the table gives for those resources. The grasp
+model answers ``object_grasp/7`` and its siblings (``robocram.grasping``,
+docs/grasping.md) so plans reach grasps through the KB.
 Location designators resolve through costmaps
 (:class:`~robocram.costmaps.CostmapLocations` on the same world), so ``visible_for``,
 ``reachable_for``, ``on`` and the other keys work in any projected plan.
@@ -21,9 +22,10 @@ from robocram.execution import Environment, matching_facts
 from robocram.grasping import install_grasp_predicates
 from robocram.logic import KnowledgeBase
 from robocram.motion import MotionSettings
+from robocram.projection.crouching import can_crouch
 from robocram.projection.process_modules import PROJECTION_MODULES
 from robocram.projection.projected_robot import ProjectedRobot
-from robocram.robots import RobotDescription
+from robocram.robots import LoadedDescription, RobotDescription
 from robocram.robots.looking_means import with_looking
 from robocram.world import RobotObject, World
 
@@ -35,7 +37,15 @@ def install_motions(kb: KnowledgeBase, desc: RobotDescription) -> KnowledgeBase:
     install_motion_family(kb, "common")
     if desc.flying:
         install_motion_family(kb, "flying")
+    if isinstance(desc, LoadedDescription) and can_crouch(desc):
+        install_motion_family(kb, "legged")
     return kb
+
+
+def with_legs(desc: RobotDescription, resources: tuple[str, ...]) -> tuple[str, ...]:
+    """``resources`` and, for a robot on legs it bends, ``legs`` (crouching)."""
+    legged = isinstance(desc, LoadedDescription) and can_crouch(desc)
+    return (*resources, "legs") if legged else resources
 
 
 def with_tools(resources: tuple[str, ...]) -> tuple[str, ...]:
@@ -56,7 +66,7 @@ def projection_environment(
     """
     projected = ProjectedRobot.of(world, robot, motion)
     desc = projected.description
-    resources = with_tools(with_looking(desc, desc.resources()))
+    resources = with_legs(desc, with_tools(with_looking(desc, desc.resources())))
     kb = install_motions(world.kb, desc)
     install_grasp_predicates(kb, world)
     return Environment(

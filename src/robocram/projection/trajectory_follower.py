@@ -20,6 +20,7 @@ from robocram.motion import (
     TrajectoryPoint,
     report_executed,
 )
+from robocram.motion.crouch_path import is_height_and_joints, put_height_and_joints
 from robocram.motion.whole_body_scene import is_whole_body, put_base_and_joints
 from robocram.projection.path_watch import PathWatch, planned_against
 from robocram.projection.projected_robot import ProjectedRobot
@@ -88,5 +89,8 @@ def _apply(robot: ProjectedRobot, joints: tuple[str, ...], point: TrajectoryPoin
         return
     if is_whole_body(joints):  # base and arm at once
         put_base_and_joints(robot.handle, values)
+        return
+    if is_height_and_joints(joints):  # a crouch: the base's height and the legs
+        put_height_and_joints(robot.handle, values)
         return
     robot.world.set_joint_states(robot.name, values)
