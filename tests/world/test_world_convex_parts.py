@@ -24,7 +24,7 @@ from robocram.world import World
 from robocram.world.convex_parts import convex_parts_file, decomposed
 from tests.bullet_links import link_frame, link_indices
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 BAXTER = str(ROOT / "examples" / "robots" / "baxter.py")
 # [m] in the torso's frame: 0.38 m up, 0.1 m ahead, 0.2 m to the left: the hull fills it
 # (it spans the base's front and the chest's), the mesh does not (0.11 m from its surface)
