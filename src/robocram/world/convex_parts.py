@@ -66,8 +66,16 @@ def convex_parts_file(mesh: Path, scale: tuple[float, float, float]) -> Path:
         versions=(str(pybullet.getAPIVersion()),),
     )  # fmt: skip
     text = _obj_text(arrays)
-    digest = hashlib.sha256(text.encode("utf-8")).hexdigest()[:32]
-    path = cache_dir() / KIND / f"{mesh.stem}-{digest}.obj"
+    name = f"{mesh.stem}-{hashlib.sha256(text.encode('utf-8')).hexdigest()[:32]}.obj"
+    try:
+        return _written(cache_dir() / KIND / name, text)
+    except OSError:  # a cache that cannot be written (a read-only home): the temp folder
+        return _written(Path(tempfile.gettempdir()) / f"robocram-{KIND}" / name, text)
+
+
+def _written(path: Path, text: str) -> Path:
+    """``path`` holding ``text``: written under a temporary name and renamed into place, so
+    processes writing it at once each leave a whole file."""
     if not path.is_file():
         path.parent.mkdir(parents=True, exist_ok=True)
         fd, temporary = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
