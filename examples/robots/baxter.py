@@ -43,16 +43,16 @@ def description() -> RobotDescription:
                 # why: mimicked by 1 hand joint(s) (<mimic> in the URDF); fingers and hand links are
                 #   found at load
                 gripper_joints=("r_gripper_l_finger_joint",),
-                # why: stowed: within limits, the arm within 0.69 m of the base's middle (the
-                #   sampled pose: touching), 1 cm clear of its other links (meshes)
+                # why: it carries the camera: the wrist 0.25 m ahead of and 0.2 m above the
+                #   shoulder, the hand below it, 1 cm clear of its other links (meshes)
                 parking={
-                    "right_s0": 0.076,
-                    "right_s1": -0.177,
-                    "right_e0": -0.892,
-                    "right_e1": 2.215,
-                    "right_w0": -0.675,
-                    "right_w1": 0.57,
-                    "right_w2": 3.059,
+                    "right_s0": -1.05,
+                    "right_s1": -1.316,
+                    "right_e0": 1.962,
+                    "right_e1": 2.523,
+                    "right_w0": -2.704,
+                    "right_w1": -0.448,
+                    "right_w2": 2.702,
                 },
             ),
             "left": ArmDescription(
@@ -82,13 +82,15 @@ def description() -> RobotDescription:
                 },
             ),
         },
-        # why: camera frame by name (5 found, best first); optical: z looks forward; others:
-        #   left_hand_camera_link, right_hand_camera_link, left_hand_camera_axis_link
+        # why: camera frame on the right arm: head_camera_link cannot tilt and sees, at the
+        #   shoulder's height, no nearer than 0.85 of the arm's reach; named like a camera on an
+        #   arm, which aims it: its own z is its optical axis (x share 0.24, the arms parked);
+        #   others: head_camera_link, left_hand_camera_link, left_hand_camera_axis_link
         cameras=(
             CameraDescription(
-                # why: heights 0.750 to 0.750 m over the base (torso at its limits) are derived at
+                # why: heights 0.283 to 0.283 m over the base (torso at its limits) are derived at
                 #   load; give minimal_height and maximal_height to override
-                frame="head_camera_link",
+                frame="right_hand_camera_link",
                 # TODO doubt: the URDF gives no field of view: take the sensor's
                 horizontal_fov=math.radians(60),
                 vertical_fov=math.radians(45),
@@ -106,4 +108,7 @@ def description() -> RobotDescription:
                 pose=Pose((0.0, 0.0, 0.0), (0.707107, 0.0, 0.707107, 0.0)),
             ),
         ),
+        # why: their collision meshes' convex hulls reach past the meshes (torso's 0.17 m,
+        #   pedestal's 0.27 m; over 0.10 m): they collide as their convex parts, not as one hull
+        decomposed_links=("torso", "pedestal"),
     )

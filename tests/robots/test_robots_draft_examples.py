@@ -7,6 +7,7 @@ it. The test drafts the same URDF again, counts the lines the user changed (at m
 
 from __future__ import annotations
 
+import dataclasses
 import difflib
 import importlib.util
 import math
@@ -25,6 +26,7 @@ from robocram.kinematics import IKOptions, solve_ik
 from robocram.plans import pick_up
 from robocram.projection import simulated_robot
 from robocram.robot_check import ReportCard, check_robot, description_from
+from robocram.robots import CameraDescription
 from robocram.scenes import UnfitRobotError, tabletop_placement, tabletop_scene
 from robocram.scenes.standing import PEDESTAL_GAP, PEDESTAL_TABLE
 from robocram.tf import Pose
@@ -258,8 +260,12 @@ def test_a_robot_whose_root_is_not_at_its_feet_stands_on_the_floor() -> None:
 def test_a_head_that_only_pans_puts_the_mug_where_its_view_reaches() -> None:
     """Baxter's head only pans: its camera's tilt stays, so the scene puts the mug no
     nearer than the lower edge of its view, and here that is beyond its arm's reach; the
-    message says so. The edge is judged on PyBullet's link state of the camera."""
-    desc = description_from(str(EXAMPLES / "baxter.py"))
+    message says so (its draft takes its wrist camera since zoo33). The edge is judged on
+    PyBullet's link state of the camera."""
+    head = CameraDescription(
+        "head_camera_link", horizontal_fov=math.radians(60), vertical_fov=math.radians(45)
+    )
+    desc = dataclasses.replace(description_from(str(EXAMPLES / "baxter.py")), cameras=(head,))
     with World() as world:
         with pytest.raises(UnfitRobotError, match=r"head only pans \(head_pan\)") as info:
             tabletop_scene(desc, world)

@@ -155,6 +155,8 @@ class RobotDescription:
     holonomic: bool = True  # the base drives sideways; False: differential (kept for old files)
     base_type: BaseType | None = None  # None: from ``holonomic``; set, it wins over it
     allowed_contacts: tuple[tuple[str, str], ...] = DEFAULT_ALLOWED_CONTACTS
+    # links whose mesh collides as its convex parts, not its hull (``robots/convex_parts.py``)
+    decomposed_links: tuple[str, ...] = ()
     model: RobotModel | None = None
     source: str = field(default="", compare=False, kw_only=True)
     """Where the description was read: ``FILE.py:NAME`` (absolute) or ``module:NAME``, as

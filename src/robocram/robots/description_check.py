@@ -89,6 +89,7 @@ def check_names(desc: RobotDescription, model: RobotModel) -> None:
     check.joints(desc.neck_parking, "neck_parking")
     check.joints(desc.stance, "stance")
     check.joints(desc.acceleration_limits, "acceleration_limits")
+    check.links(desc.decomposed_links, "decomposed_links")
     if desc.neck_arm is not None and desc.neck_arm not in desc.arms:
         close = closest_names(desc.neck_arm, desc.arms)
         check.problems.append(NameProblem("arm", desc.neck_arm, "neck_arm", close))

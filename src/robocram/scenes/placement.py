@@ -261,7 +261,7 @@ def _footprint_front(world: World, robot: str, below: float) -> float:
     return front
 
 
-def _shoulder_in_map(world: World, robot: str, arm: ArmDescription) -> Vector3:
+def shoulder_in_map(world: World, robot: str, arm: ArmDescription) -> Vector3:
     """The arm's shoulder (torso half raised) in the map, the robot as it stands now."""
     desc = world.robot(robot).description
     local = _shoulder(desc, arm, _joints_for_torso(desc, arm))
@@ -275,7 +275,7 @@ def table_height(
     wrist ``below`` [m] under the shoulder, the robot as it stands now (at most 0: its
     shoulder is too low for any table)."""
     desc = world.robot(robot).description
-    wrist_z = _shoulder_in_map(world, robot, arm)[2] - below
+    wrist_z = shoulder_in_map(world, robot, arm)[2] - below
     return wrist_z - _hand_length(desc, arm) - GRASP_HEIGHT
 
 
@@ -293,7 +293,7 @@ def tabletop_placement(world: World, robot: str) -> TabletopPlacement:
     own = seen_on_own_top(world, robot)
     if own is not None:
         return TabletopPlacement(arm.name, own[2], (own[0], own[1]), on_robot=True)
-    shoulder = _shoulder_in_map(world, robot, arm)
+    shoulder = shoulder_in_map(world, robot, arm)
     height = table_height(world, robot, arm)
     if height <= 0:
         raise UnfitRobotError(
@@ -331,7 +331,7 @@ def _placement_at(
     torso = _joints_for_torso(desc, arm)
     root = world.pose(robot)
     yaw = quat.to_euler(root.orientation)[2]
-    shoulder = _shoulder_in_map(world, robot, arm)
+    shoulder = shoulder_in_map(world, robot, arm)
     wrist_z = shoulder[2] - below
     height = table_height(world, robot, arm, below)
     reach = arm_envelope(desc.model, arm, torso).reach
@@ -374,7 +374,7 @@ def _placement_in_view_edge(
     torso = _joints_for_torso(desc, arm)
     root = world.pose(robot)
     yaw = quat.to_euler(root.orientation)[2]
-    shoulder = _shoulder_in_map(world, robot, arm)
+    shoulder = shoulder_in_map(world, robot, arm)
     wrist_z = shoulder[2] - WRIST_BELOW_SHOULDER
     height = table_height(world, robot, arm)
     reach = arm_envelope(desc.model, arm, torso).reach
@@ -425,7 +425,7 @@ def _past_rise_x(
     desc = world.robot(robot).description
     shape = arm_rise(desc.model, arm, _joints_for_torso(desc, arm))
     turn = Pose(orientation=world.pose(robot).orientation)
-    shoulder, rise = _shoulder_in_map(world, robot, arm), (turn * Pose(shape.rise)).position
+    shoulder, rise = shoulder_in_map(world, robot, arm), (turn * Pose(shape.rise)).position
     top = (shoulder[0] + rise[0], shoulder[1] + rise[1], shoulder[2] + rise[2])
     room = PAST_RISE_SHARE * shape.reach
     if math.dist(top, wrist) <= max(beyond * shape.reach, room):

@@ -10,6 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from robocram.robots import RobotDescription
+from robocram.scenes.handle_turn import turn_handle_to_arm
 from robocram.scenes.placement import (
     TABLE_DEPTH,
 )
@@ -30,7 +31,8 @@ class TabletopScene:
 def tabletop_scene(robot: str | RobotDescription, world: World | None = None) -> TabletopScene:
     """Floor, ``robot`` (a name, a description file or a description) at the origin, arms
     parked, a table with a mug and a bottle in front of it: along the map's x, where the
-    robot's arm works (it stands turned if its arm works sideways, as Stretch's does).
+    robot's arm works (it stands turned if its arm works sideways, as Stretch's does); the
+    mug's handle faces the arm where its hand takes the handle only (``handle_turn.py``).
     A robot whose root is not at its feet stands on the floor; an arm too low for a table
     stands on a pedestal (:mod:`robocram.scenes.standing`). A robot whose fixed camera looks
     onto its own top gets the mug there and no table or bottle (:mod:`~.own_top`).
@@ -43,7 +45,8 @@ def tabletop_scene(robot: str | RobotDescription, world: World | None = None) ->
     height, (mug_x, mug_y), table_x = place.table_height, place.mug_xy, place.table_x
     if not place.on_robot:  # else the mug lies on the robot's own top (scenes/own_top.py)
         world.add_box("table", (TABLE_DEPTH, 1.0, height), pose=Pose((table_x, 0.0, height / 2)))
-    world.add_item("mug-1", "mug", pose=Pose((mug_x, mug_y, height)))
+    mug = world.add_item("mug-1", "mug", pose=Pose((mug_x, mug_y, height)))
+    turn_handle_to_arm(world, name, mug)
     if not place.on_robot:
         world.add_item("bottle-1", "bottle", pose=Pose((table_x + 0.15, 0.3, height + 0.125)))
     look_x = place.look_x if place.look_x is not None else mug_x

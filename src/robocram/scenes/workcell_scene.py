@@ -25,6 +25,7 @@ from robocram.scenes.environment_scene import (
     usual_location_facts,
 )
 from robocram.scenes.errors import UnfitRobotError
+from robocram.scenes.handle_turn import turn_handle_to_arm
 from robocram.scenes.placement import (
     MUG_INSET,
     TABLE_DEPTH,
@@ -77,7 +78,8 @@ def _table_urdf(height: float, width: float, ahead: float, depth: float = TABLE_
 def workcell_scene(robot: str | RobotDescription, world: World | None = None) -> EnvironmentScene:
     """Floor, ``robot`` at the origin (on a pedestal if its arm is low), a table in front
     of it where the tabletop scene puts one, the mug on it where that scene puts it (its
-    handle to the left) and the bowl to its right; the table's top is the KB's
+    handle to the left, or facing the arm as there: ``handle_turn.py``) and the bowl to its
+    right; the table's top is the KB's
     ``supporting_surface`` and the items' usual place, its frame between the two (where
     a search looks). The delivery spots are :func:`workcell_spots`. Where the mug lies on
     the robot's own top, the table is a plate a hair over it (:data:`PLATE_HAIR`).
@@ -111,6 +113,7 @@ def workcell_scene(robot: str | RobotDescription, world: World | None = None) ->
         ItemPlace("bowl-1", "bowl", TABLE_TOP, ((bowl_x - mug_x) / 2, -side / 2)),
     )
     objects = {p.name: place_item(world, WORKCELL, p) for p in items}
+    turn_handle_to_arm(world, name, objects["mug-1"])
     world.kb.consult(
         usual_location_facts(environment, items, WORKCELL), group=f"{WORKCELL}_contents"
     )

@@ -21,11 +21,11 @@ from typing import TYPE_CHECKING
 
 from robocram.robots.lazy_library import LazyLibrary
 
-__all__ = ["pybullet"]
+__all__ = ["pybullet", "silenced"]
 
 
 @contextlib.contextmanager
-def _silenced(descriptors: tuple[int, ...] = (1, 2)) -> Iterator[None]:
+def silenced(descriptors: tuple[int, ...] = (1, 2)) -> Iterator[None]:
     """Send what C code writes to ``descriptors`` to the null device, then restore them."""
     sys.stdout.flush()
     sys.stderr.flush()
@@ -48,7 +48,7 @@ def _silenced(descriptors: tuple[int, ...] = (1, 2)) -> Iterator[None]:
 
 def _silenced_import(name: str) -> ModuleType:
     """Import ``name`` with its banner sent to the null device."""
-    with _silenced():
+    with silenced():
         return importlib.import_module(name)
 
 

@@ -22,6 +22,7 @@ from robocram.world.bodies import Bodies
 from robocram.world.body_spec import GREY, BodySpec, Rgba, ShapeSpec, UrdfSpec
 from robocram.world.catalogue import catalogue_item
 from robocram.world.contacts import Contacts
+from robocram.world.convex_parts import decomposed
 from robocram.world.joint_state import ClampedJoint
 from robocram.world.physics import Physics
 from robocram.world.robot_facts import RobotFacts
@@ -120,7 +121,7 @@ class World:
         Raises:
             TooManyLinksError: even folded, the model has too many links (before loading).
         """
-        desc = load_description(robot)
+        desc = decomposed(load_description(robot))  # its decomposed_links as convex parts
         spec = robot_body_spec(name or desc.name, desc)
         handle = RobotObject(name or desc.name, "robot", -1, spec, description=desc)
         self._tables.insert(handle, pose)

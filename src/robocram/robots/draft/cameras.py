@@ -121,13 +121,15 @@ def find_camera(
     given: str | None = None,
     parked: Mapping[str, float] | None = None,
     inferred: bool = False,
+    chosen: str | None = None,
 ) -> Camera | None:
     """The robot's main camera with heights at the torso's limits, or None.
 
     ``sensors`` (the URDF's Gazebo cameras) give its fields of view where one images it;
     ``given``: the link the user named (``--camera LINK``), first whatever its name, its
     axes judged with the arms at ``parked`` (as ``robot check`` judges them); ``inferred``:
-    ``given`` is :func:`likely_camera_link`'s guess, not the user's, and says so in a doubt.
+    ``given`` is :func:`likely_camera_link`'s guess, not the user's, and says so in a doubt;
+    ``chosen``: why the draft took ``given`` itself (``camera_reach.py``: an arm's camera).
     """
     frames = camera_frames(tree, hands)
     if given is not None:
@@ -140,14 +142,14 @@ def find_camera(
         found = f"camera frame by name ({len(frames)} found, best first)"
         added, why, doubt = _named_optics(tree, frame, found)
     else:
-        added, why, doubt = _given_optics(tree, frame, parked or {}, inferred)
+        added, why, doubt = _given_optics(tree, frame, parked or {}, inferred, chosen)
     low, high = _heights(tree, frame, torso)
     camera_frame = added.name if added is not None else frame
     sensor = sensor_for(frame, tree.rigid_group(frame), sensors)
     return Camera(camera_frame, added, low, high, why, others, doubt, sensor)
 
 
-def _looking_axis(axes: np.ndarray, optical: bool = True) -> str | None:
+def looking_axis(axes: np.ndarray, optical: bool = True) -> str | None:
     """Which axis of a frame (rotation ``axes`` in the root link) looks ahead: ``"z"`` (an
     optical frame), ``"x"`` (ROS body convention), or None. A camera frame (named like
     one) not named ``optical`` (``optical`` False) whose x looks ahead and down while its z
@@ -167,7 +169,7 @@ def _named_optics(
     """A named camera's optical frame (maybe added), why, and a doubt, at zero joints."""
     axes = link_poses(tree.model)[frame].matrix()[:3, :3]
     z_ahead, x_ahead = float(axes[0, 2]), float(axes[0, 0])
-    looking = _looking_axis(axes, "optical" in frame.lower())
+    looking = looking_axis(axes, "optical" in frame.lower())
     if looking == "z":
         return None, found + "; optical: z looks forward", None
     if looking == "x":
@@ -189,11 +191,17 @@ def _named_optics(
 
 
 def _given_optics(
-    tree: ModelTree, frame: str, parked: Mapping[str, float], inferred: bool
+    tree: ModelTree,
+    frame: str,
+    parked: Mapping[str, float],
+    inferred: bool,
+    chosen: str | None = None,
 ) -> tuple[FrameSpec | None, str, str | None]:
     """A given or inferred camera link's optical frame: its own axes where they look ahead
-    with the arms parked, else an added frame aimed ahead and down (:func:`aim_down`)."""
-    found = "camera frame as given (--camera)"
+    with the arms parked, or where it is named like a camera and an arm carries it (the
+    arm aims it: its z is its optical axis, Baxter's ``right_hand_camera_link`` looking
+    along its hand); else an added frame aimed ahead and down (:func:`aim_down`)."""
+    found = chosen if chosen is not None else "camera frame as given (--camera)"
     doubt = None
     if inferred:
         found = "camera frame inferred: no link is named like a camera; " + LIKELY_RULE
@@ -205,13 +213,19 @@ def _given_optics(
     pose = link_poses(tree.model, parked)[frame]
     axes = pose.matrix()[:3, :3]
     z_ahead, x_ahead = float(axes[0, 2]), float(axes[0, 0])
-    looking = _looking_axis(axes)  # a link given or inferred keeps no camera convention
+    looking = looking_axis(axes)  # a link given or inferred keeps no camera convention
     if looking == "z":
         return None, found + "; optical: z looks forward, the arms parked", doubt
     if looking == "x":
         added = FrameSpec(f"{frame}_optical", frame, OPTICAL_FROM_BODY)
         why = "; its x looks forward (body convention), the arms parked: optical frame added"
         return added, found + why, doubt
+    if _named_camera(frame) and _on_an_arm(tree, frame, parked):
+        why = (
+            f"; named like a camera on an arm, which aims it: its own z is its optical axis "
+            f"(x share {z_ahead:.2f}, the arms parked)"
+        )
+        return None, found + why, doubt
     down = aim_down(pose.position[2])
     added = FrameSpec(f"{frame}_optical", frame, aimed_optics(axes, down))
     why = (
@@ -220,6 +234,16 @@ def _given_optics(
         f"{math.degrees(down):.0f} deg down"
     )
     return added, found + why, doubt
+
+
+def _named_camera(frame: str) -> bool:
+    low = frame.lower()
+    return any(w in low for w in CAMERA_WORDS) and not any(w in low for w in NOT_CAMERAS)
+
+
+def _on_an_arm(tree: ModelTree, frame: str, parked: Mapping[str, float]) -> bool:
+    """Whether a joint an arm's parking sets moves ``frame``: an arm carries it."""
+    return any(j.name in parked for j in tree.movable_ancestors(frame))
 
 
 def aim_down(height: float) -> float:

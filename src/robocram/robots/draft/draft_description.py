@@ -22,6 +22,7 @@ from robocram.robots.description import (
 from robocram.robots.description_check import infer_arm
 from robocram.robots.draft.arms import arm_names, draft_arm
 from robocram.robots.draft.base_drive import find_base_drive
+from robocram.robots.draft.camera_reach import arm_camera_instead
 from robocram.robots.draft.camera_sensors import camera_sensors
 from robocram.robots.draft.cameras import (
     DEFAULT_HFOV,
@@ -35,6 +36,7 @@ from robocram.robots.draft.cameras import (
 )
 from robocram.robots.draft.draft_source import draft_source
 from robocram.robots.draft.hands import find_fixed_hands, find_hands
+from robocram.robots.draft.hull_overreach import overreaching_links
 from robocram.robots.draft.link_poses import link_poses, within_limits
 from robocram.robots.draft.model_tree import ModelTree
 from robocram.robots.draft.parking import neck_pose
@@ -176,7 +178,16 @@ def draft_description(
         desc = replace(desc, stance=values)
         doubt = "; ".join(s.doubt for s in parts if s.doubt) or None
         _note(why, doubts, "stance", "; ".join(s.why for s in parts), doubt)
-    desc = _with_camera(tree, desc, why, doubts, cut, camera, guessed)
+    overreach = overreaching_links(tree, drive.base_type == "fixed")
+    if overreach.links:  # a hull filling a hollow its arms reach into: collided as parts
+        desc = replace(desc, decomposed_links=overreach.links)
+        why["decomposed_links"] = overreach.why
+    chosen = None
+    if camera is None and drive.base_type == "fixed":  # one that cannot see the arms'
+        # reach (a fixed robot cannot step back to see its table): the picking arm's
+        instead = arm_camera_instead(tree, desc.arms, camera_sensors(path))
+        camera, chosen = instead if instead is not None else (None, None)
+    desc = _with_camera(tree, desc, why, doubts, cut, camera, guessed, chosen)
     desc = _parked_clear(tree, desc, why, doubts)
     if semantics is not None:
         desc = srdf_arms(model, desc, semantics, why, doubts)
@@ -221,16 +232,18 @@ def _with_camera(
     cut: str | None,
     given: str | None = None,
     inferred: bool = False,
+    chosen: str | None = None,
 ) -> RobotDescription:
     """``desc`` with its camera, heights at the torso limits, and pan-tilt or neck arm;
-    ``given`` (or ``inferred``) is judged with the arms parked, as the check does."""
+    ``given`` (or ``inferred``, or ``chosen``: why the draft took it) is judged with the
+    arms parked, as the check does."""
     hands = [arm.end_effector_link for arm in desc.arms.values()]
     sensors = camera_sensors(Path(desc.urdf))
     carrier = None if given is None else _park_carrier(tree, desc, given, why, doubts)
     if carrier is not None:
         desc = replace(desc, arms={**desc.arms, carrier.name: carrier})
     parked = {j: v for arm in desc.arms.values() for j, v in arm.parking.items()}
-    camera = find_camera(tree, hands, desc.torso_joint, sensors, given, parked, inferred)
+    camera = find_camera(tree, hands, desc.torso_joint, sensors, given, parked, inferred, chosen)
     if camera is None:
         likely = likely_camera_link(tree, hands)
         doubts["cameras"] = (

@@ -177,6 +177,8 @@ def _body(desc: RobotDescription, notes: _Notes) -> object:
     if desc.coupled_joints:
         couplings = tuple(_coupling(c) for c in desc.coupled_joints)
         fields.append(notes.item("coupled_joints", "coupled_joints", couplings))
+    if desc.decomposed_links:
+        fields.append(notes.item("decomposed_links", "decomposed_links", desc.decomposed_links))
     if desc.allowed_contacts != DEFAULT_ALLOWED_CONTACTS:
         fields.append(notes.item("allowed_contacts", "allowed_contacts", _contacts(desc)))
     return call("RobotDescription", *fields)
