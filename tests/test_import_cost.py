@@ -85,3 +85,20 @@ def test_a_scene_builds_its_robot_s_kinematics_so_the_first_plan_does_not() -> N
         "print(sorted(m for m in ('pinocchio', 'coal') if m in sys.modules))"
     )
     assert _fresh(code) == "['coal', 'pinocchio']"
+
+
+def test_setting_up_a_robot_s_projection_loads_no_drafter() -> None:
+    """Every projection asks whether its robot stands on legs it can bend (the draft's
+    ``stance.legs``); that must not load the whole drafter (28 modules) into a plan."""
+    code = (
+        "import sys; from robocram.scenes import tabletop_scene; "
+        "from robocram.projection import simulated_robot; "
+        "scene = tabletop_scene('pr2'); "
+        "ctx = simulated_robot(scene.world, scene.robot); ctx.__enter__(); "
+        "print(sorted(m for m in sys.modules if m.startswith('robocram.robots.draft')))"
+    )
+    assert _fresh(code) == (
+        "['robocram.robots.draft', 'robocram.robots.draft.hands', "
+        "'robocram.robots.draft.link_poses', 'robocram.robots.draft.model_tree', "
+        "'robocram.robots.draft.stance']"
+    )

@@ -15,8 +15,6 @@ their tool frames at most) are read from the grasp model.
 from __future__ import annotations
 
 import math
-import warnings
-from pathlib import Path
 
 import pybullet
 import pytest
@@ -29,28 +27,19 @@ from robocram.kinematics.crouch import crouched
 from robocram.plans.pick_object import pick_up_object
 from robocram.projection import simulated_robot
 from robocram.robots.draft.stance import legs
-from robocram.scenes import kitchen_scene
 from robocram.tf import Pose, PoseStamped
 from robocram.tf import quaternion as quat
+from tests.talos_open_drawer import DRAWER, talos_kitchen_drawer_open
 
-TALOS = Path(__file__).parents[2] / "examples" / "robots" / "talos.py"
-DRAWER = "drawer_unit_drawer_3"  # the bowl's
-OPENING = 0.4  # [m] as the search opens it
 DEPTH = 0.25  # [m] the crouch
 BACK = 0.45  # [m] the stand before the bowl (stands.REACH_DISTANCES)
 SHOULDER = 0.1575  # [m] TALOS's left shoulder, left of its base's middle
 
 
 def test_talos_lifts_the_bowl_out_of_its_drawer_by_the_rim_raised_over_its_floor() -> None:
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")  # the draft's doubts
-        scene = kitchen_scene(str(TALOS))
+    scene, _, _ = talos_kitchen_drawer_open()
     world, robot = scene.world, scene.robot
     try:
-        before = world.link_pose("kitchen", DRAWER)
-        world.set_joint_states("kitchen", {f"{DRAWER}_joint": OPENING})
-        after = world.link_pose("kitchen", DRAWER)
-        world.set_pose("bowl-1", after * before.inverse() * world.pose("bowl-1"))
         bowl = world.pose("bowl-1")
         desc = world.robot(robot).description
         hand = hand_of(desc, "left")

@@ -13,8 +13,6 @@ it, against its limit in the URDF, and the camera frame's pose.
 from __future__ import annotations
 
 import math
-import warnings
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -23,27 +21,18 @@ from robocram.execution.failures import PtuGoalNotReached
 from robocram.plans.basic_actions import detect, look_from_above
 from robocram.plans.search import LOOK_ABOVE, look_into_opened
 from robocram.projection import simulated_robot
-from robocram.scenes import kitchen_scene
 from robocram.tf import Pose, PoseStamped
 from robocram.tf import quaternion as quat
 from tests.bullet_links import link_frame
+from tests.talos_open_drawer import talos_kitchen_drawer_open
 
-TALOS = Path(__file__).parents[2] / "examples" / "robots" / "talos.py"
-DRAWER = "drawer_unit_drawer_3"  # the bowl's
-OPENING = 0.4  # [m] as the search opens it
 STAND = (-1.688, 1.109, math.radians(74.9))  # [m, m, rad] map: where it looked from
 
 
 def test_a_look_into_an_opened_drawer_stopped_at_the_tilt_limit_sees_the_bowl() -> None:
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")  # the draft's doubts
-        scene = kitchen_scene(str(TALOS))
+    scene, before, after = talos_kitchen_drawer_open()
     world, robot = scene.world, scene.robot
     try:
-        before = world.link_pose("kitchen", DRAWER)
-        world.set_joint_states("kitchen", {f"{DRAWER}_joint": OPENING})
-        after = world.link_pose("kitchen", DRAWER)
-        world.set_pose("bowl-1", after * before.inverse() * world.pose("bowl-1"))
         # the middle of what opening pulled out, a little over the link's frame
         middle = tuple(
             (a + b) / 2 + (LOOK_ABOVE if k == 2 else 0.0)

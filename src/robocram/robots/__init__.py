@@ -44,7 +44,7 @@ from robocram.robots.robot_model import RobotModel
 from robocram.robots.urdf_elements import Geometry, Inertial, Joint, Link, Mimic
 
 if TYPE_CHECKING:
-    from robocram.robots.draft import DraftDescription, draft_description
+    from robocram.robots.draft.draft_description import DraftDescription, draft_description
 
 __all__ = [
     "ArmDescription",
@@ -97,7 +97,7 @@ __all__ = [
 def __getattr__(name: str) -> object:
     """The drafter's names, imported on first use (see the module's docstring)."""
     if name in ("DraftDescription", "draft_description"):
-        from robocram.robots import draft
+        import robocram.robots.draft.draft_description as drafting
 
-        return getattr(draft, name)
+        return getattr(drafting, name)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
