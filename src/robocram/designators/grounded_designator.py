@@ -145,6 +145,15 @@ def grounded_types(kb: KnowledgeBase, kind: Kind) -> tuple[str, ...]:
     return tuple(sorted({*probe.asked_types, *listed}))
 
 
+def lists_motion_type(kb: KnowledgeBase, motion_type: str) -> bool:
+    """Whether ``kb``'s grounding rules list ``motion_type`` in ``grounded_motion_type/1``:
+    a family of motions installed for the robot only (``crouching`` for one on legs it
+    bends), asked by plans that try it where it exists."""
+    if not kb.defines("grounded_motion_type/1"):
+        return False
+    return any(a["T"] == motion_type for a in kb.query("grounded_motion_type(T)"))
+
+
 class TypeProbe(Designator[None]):
     """A designator without properties that notes the types grounding rules ask for.
 

@@ -17,6 +17,7 @@ import contextlib
 from collections.abc import Iterator
 
 from robocram.designators import a
+from robocram.designators.grounded_designator import lists_motion_type
 from robocram.execution import perform
 from robocram.execution.failures import PlanFailure
 from robocram.logic import current_kb
@@ -28,10 +29,7 @@ DEPTHS = (0.20, 0.25)  # [m] below standing, tried in turn (0.15: the drawer ope
 
 def can_crouch() -> bool:
     """Whether the current robot crouches: its knowledge base grounds ``crouching``."""
-    kb = current_kb()
-    if not kb.defines("grounded_motion_type/1"):
-        return False
-    return any(True for _ in kb.query("grounded_motion_type(crouching)"))
+    return lists_motion_type(current_kb(), "crouching")
 
 
 def crouch(depth: float) -> object:
